@@ -26,7 +26,7 @@ import {
   seedParam,
 } from '@bitphysics/game-kit';
 import { ORBIT_CONTROLS_RIGHT, startThreeGame } from '@bitphysics/game-kit/three';
-import { createPhysicsWorld, isAlive, type PhysicsWorld, step as physicsStep } from '@bitphysics/physics';
+import { contactEvents3D, createPhysicsWorld, isAlive, type PhysicsWorld, step as physicsStep } from '@bitphysics/physics';
 import { BodyDrag3D } from '@bitphysics/render-three';
 import {
   BoxGeometry,
@@ -42,15 +42,19 @@ import {
   MeshBasicMaterial,
   MeshStandardMaterial,
   Plane,
+  PlaneGeometry,
   Quaternion,
   Raycaster,
   RepeatWrapping,
   RingGeometry,
+  SphereGeometry,
   SRGBColorSpace,
   TorusGeometry,
   Vector2,
   Vector3,
 } from 'three';
+import { SiteEffects } from './effects';
+import { bodyHalfExtents, dirtTexture, pieceGeometry, pieceMaterials } from './look';
 import {
   aimAt,
   BALL_RADIUS,
@@ -71,8 +75,12 @@ import {
 
 /** Whether the page is taller than wide (a phone held upright): the camera frames a nearer view. */
 const PORTRAIT = window.innerHeight > window.innerWidth;
-/** Sky gradient, top to horizon. */
-const SKY = ['#0f1c30', '#22406a', '#5b7ea6', '#b69a82'];
+/** Sky gradient, top to horizon: a clear day. */
+const SKY = ['#2f6db5', '#5b9bd5', '#a9d0ef', '#e4f1f8'];
+/** Whether the main pointer is a finger: touch wording, no key hints. */
+const touch = isTouchDevice();
+/** A panel label with its key (a phone has no keys: the label alone). */
+const withKey = (label: string, key: string): string => (touch ? label : `${label} (${key})`);
 
 const params = {
   level: numberParam('level', { default: 1, min: 1, max: 20, integer: true }),
@@ -134,6 +142,7 @@ function gameStep(world: PhysicsWorld): void {
     },
     3,
   );
+  stirUp(world);
   stepMs = stepMs === 0 ? ms : stepMs + (ms - stepMs) / 30;
   if (ms > worstMs || ++worstAge > 60) {
     worstMs = ms;
@@ -143,7 +152,7 @@ function gameStep(world: PhysicsWorld): void {
   if (gained > 0) {
     levelScore += gained;
     // A fallen piece keeps its material, darkened (grey read as a different material).
-    for (const p of handles.pieces) if (p.fallen && isAlive(world, p.body)) renderer.setColor(p.body, darken(COLORS[p.kind], 0.62));
+    for (const p of handles.pieces) if (p.fallen && isAlive(world, p.body) && p.body !== lit) tint(p.body, FALLEN_TINT);
   }
   if (!cleared && fallenCount(handles.pieces) >= clearTarget(handles.pieces)) {
     cleared = true;
@@ -154,6 +163,36 @@ function gameStep(world: PhysicsWorld): void {
 }
 
 const sound = getSound();
+
+/** Most impacts a step that raise dust (a collapse makes hundreds of contacts). */
+const BURSTS_PER_STEP = 4;
+/**
+ * What the last step's impacts throw up where the bodies met (the 3D contact begin events): dust
+ * and chips of the piece where the ball strikes it, dust where a piece lands on the ground, chips
+ * where pieces knock together hard. As many as the approach speed is fast.
+ */
+function stirUp(world: PhysicsWorld): void {
+  const ev = contactEvents3D(world).begin;
+  let made = 0;
+  for (let i = 0; i < ev.count && made < BURSTS_PER_STEP; i++) {
+    const a = ev.bodyA[i]!,
+      b = ev.bodyB[i]!,
+      v = ev.approachSpeed[i]!;
+    if (v < 1.5) continue;
+    const ball = a === handles.ball || b === handles.ball;
+    const other = a === handles.ball ? b : a;
+    const piece = handles.pieces.find((p) => p.body === other) ?? handles.pieces.find((p) => p.body === b);
+    const x = ev.px[i]!,
+      y = ev.py[i]!,
+      z = ev.pz[i]!;
+    if (ball && piece)
+      effects.burst(x, y, z, Math.min(8, Math.round(2 + v)), 1 + 0.4 * v, 0xd8c8aa, Math.min(10, Math.round(2 * v)), COLORS[piece.kind]);
+    else if ((a === 0 || b === 0) && piece) effects.burst(x, Math.max(0.1, y), z, Math.min(6, Math.round(1 + v)), 0.8 + 0.3 * v);
+    else if (piece && v > 3) effects.burst(x, y, z, 1, 1, 0xd8c8aa, 3, COLORS[piece.kind]);
+    else continue;
+    made++;
+  }
+}
 
 const game = await startThreeGame({
   title: 'Wrecking ball',
@@ -186,21 +225,27 @@ const game = await startThreeGame({
     boundary: 'none',
     // Wide enough that its edges stay out of the steeper phone view.
     planeSize: 90,
-    // A building site: packed earth under a dusk sky (see SKY).
-    floorColor: 0x6b5d48,
+    // Grass around the site (the site's packed dirt is its own textured square, see `site`).
+    floorColor: 0x6f9a4a,
     debug: params.debug ? debugOptions() : false,
     initialInstances: 128,
     shadowBounds: { min: [-13, 0, -13], max: [13, 12, 13] },
   },
-  // A wide screen frames the whole site from the side. A tall phone screen frames the site and the
-  // jib's whole reach at its height from higher up, so the jib stays on screen whichever way it
-  // points (the nearer view it had cut the jib off at the screen's edge; 1.31 x the half-width out
-  // at worst, now 0.92) and the site fills more of the screen's height.
-  view: PORTRAIT ? { min: [-9, 0, -9], max: [9, JIB_HEIGHT, 9] } : { min: [-9, 0, -9], max: [9, 5, 9] },
-  viewDirection: PORTRAIT ? [0.55, 1, 0.7] : [0.8, 0.75, 1],
+  // The camera frames the level's pieces (frameSite, below).
+  view: null,
   onFrame: () => frame(),
 });
 const { shell, renderer, app } = game;
+/** Dust, chips and popups of the hits. */
+const effects = new SiteEffects(app.scene);
+/** Pieces whose fall has been shown (a popup and a puff), by body handle. */
+const popped = new Set<number>();
+// The site: a square of packed dirt around the crane (the grass beyond is the renderer's floor).
+const site = new Mesh(new PlaneGeometry(30, 30), new MeshStandardMaterial({ map: dirtTexture(7), roughness: 0.95 }));
+site.rotation.x = -Math.PI / 2;
+site.position.y = 0.005;
+site.receiveShadow = true;
+app.scene.add(site);
 // The run-state line under the step count ('paused' or empty) keeps its line's height while empty,
 // so pausing does not push the left column down and shrink the site plan at its foot.
 const runState = document.querySelector<HTMLElement>('[data-hud="status"]');
@@ -238,11 +283,48 @@ function setDebug(on: boolean): void {
 /** The drawn chain's unit cylinder (see drawChain), also the links' own, hidden, shape. */
 const chainGeometry = new CylinderGeometry(1, 1, 1, 10);
 
-/** Colours every body of the level (after each reset). */
+/** The pieces' textured materials (brick, plank, painted crate) and the ball's steel. */
+const materials = pieceMaterials();
+const ballMaterial = new MeshStandardMaterial({ color: 0xa3abb5, metalness: 0.15, roughness: 0.4 });
+const ballGeometry = new SphereGeometry(1, 32, 20);
+/** Instance tints: a standing piece as painted, a fallen one darker, the target of a swing lit. */
+const STANDING_TINT = 0xffffff,
+  FALLEN_TINT = 0x8c8c8c,
+  LIT_TINT = 0xffe08a;
+/** Each piece's half extents along its body's axes (for its box geometry), by body handle. */
+const bodyHalf = new Map<number, [number, number, number]>();
+/** Draws piece `body` in its textured material with tint `color` (0xRRGGBB). */
+function tint(body: number, color: number): void {
+  const p = handles.pieces.find((q) => q.body === body);
+  const half = bodyHalf.get(body);
+  if (!p || !half || !isAlive(shell.world, body)) return;
+  renderer.setShape(body, { geometry: pieceGeometry(half), material: materials[p.kind], scale: 1, color });
+}
+
+/** Dresses every body of the level (after each reset): textured pieces, a steel ball, the crane's parts. */
 function dress(): void {
   const h = handles;
-  for (const p of h.pieces) renderer.setColor(p.body, COLORS[p.kind]);
-  renderer.setColor(h.ball, COLORS.ball);
+  const O = shell.world.components.Orientation;
+  bodyHalf.clear();
+  for (const p of h.pieces) {
+    const e = p.body;
+    const x = O.x[e]!,
+      y = O.y[e]!,
+      z = O.z[e]!,
+      w = O.w[e]!;
+    // Column i of the body's rotation matrix: body axis i in the world.
+    const axis = (i: number): [number, number, number] =>
+      i === 0
+        ? [1 - 2 * (y * y + z * z), 2 * (x * y + w * z), 2 * (x * z - w * y)]
+        : i === 1
+          ? [2 * (x * y - w * z), 1 - 2 * (x * x + z * z), 2 * (y * z + w * x)]
+          : [2 * (x * z + w * y), 2 * (y * z - w * x), 1 - 2 * (x * x + y * y)];
+    bodyHalf.set(e, bodyHalfExtents(p.half, p.yaw, axis));
+    tint(e, STANDING_TINT);
+  }
+  renderer.setShape(h.ball, { geometry: ballGeometry, material: ballMaterial, scale: 'radius' });
+  effects.clear();
+  popped.clear();
   // The capsule links are drawn by the chain rod (drawChain), not one by one.
   for (const l of h.links) renderer.setShape(l, { geometry: chainGeometry, scale: 1e-4 });
   // The mast's box is drawn as a lattice (mastLattice below), not as the solid box.
@@ -251,9 +333,40 @@ function dress(): void {
 }
 const hookGeometry = new BoxGeometry(1, 1, 1);
 dress();
+
+/** The level the camera was last framed for (a reset of the same level keeps the player's view). */
+let framedLevel = 0;
+/**
+ * Frames the site: the level's pieces and the mast (a metre to spare on a phone, half a metre in on a
+ * wide screen, whose view has room to the sides), the camera's orbit target
+ * at their middle. A wide screen looks from the side, over the site; a tall phone screen from higher
+ * up and square to the site's side (so the site's width, not its diagonal, spans the screen), low
+ * enough that the site fills the width: the jib's far end may leave the screen, the hook and the
+ * ball do not (the camera follows the ball, see followAction).
+ */
+function frameSite(): void {
+  framedLevel = handles.level;
+  const P = shell.world.components.Position;
+  let x0 = -1.5,
+    x1 = 1.5,
+    z0 = -1.5,
+    z1 = 1.5;
+  for (const p of handles.pieces) {
+    const r = Math.max(...p.half);
+    x0 = Math.min(x0, P.x[p.body]! - r);
+    x1 = Math.max(x1, P.x[p.body]! + r);
+    z0 = Math.min(z0, P.z[p.body]! - r);
+    z1 = Math.max(z1, P.z[p.body]! + r);
+  }
+  if (PORTRAIT) app.frame([x0 - 1, 0, z0 - 1], [x1 + 1, 2, z1 + 1], [0, 1.25, 1]);
+  else app.frame([x0 + 0.5, 0, z0 + 0.5], [x1 - 0.5, 7, z1 - 0.5], [0.85, 0.6, 1]);
+}
+frameSite();
 shell.onWorldChange(() => {
   drag.release();
+  lastFrameTime = 0;
   dress();
+  if (handles.level !== framedLevel) frameSite();
   aimed = 0;
   lit = 0;
   runEndedAt = -1;
@@ -483,7 +596,6 @@ createButtonBar(
 const showNext = createActionButton('Next level ▶', () => {
   if (cleared) nextLevel();
 });
-const touch = isTouchDevice();
 
 function updateControls(): void {
   const c = handles.controls;
@@ -563,10 +675,9 @@ let lit = 0;
 /** Lights piece `piece` (0: none) as the swing's target; the one lit before gets its own colour back. */
 function light(piece: number): void {
   const before = handles.pieces.find((p) => p.body === lit);
-  if (before && isAlive(shell.world, before.body))
-    renderer.setColor(before.body, before.fallen ? darken(COLORS[before.kind], 0.62) : COLORS[before.kind]);
   lit = piece;
-  if (piece !== 0) renderer.setColor(piece, 0xffe08a);
+  if (before && isAlive(shell.world, before.body)) tint(before.body, before.fallen ? FALLEN_TINT : STANDING_TINT);
+  if (piece !== 0) tint(piece, LIT_TINT);
 }
 /** Whether the level's swings are all used and it is not cleared (a swing is refused). */
 function outOfSwings(): boolean {
@@ -626,7 +737,7 @@ const panel = createPanel(
       onRelease: true,
       onChange: () => shell.reset(),
     },
-    { type: 'checkbox', key: 'debug', label: 'debug layer (G)', onChange: (v) => setDebug(v === true) },
+    { type: 'checkbox', key: 'debug', label: withKey('debug layer', 'G'), onChange: (v) => setDebug(v === true) },
     {
       type: 'checkbox',
       key: 'shadows',
@@ -635,10 +746,12 @@ const panel = createPanel(
         if (renderer.lights) renderer.lights.sun.castShadow = v === true;
       },
     },
-    { type: 'button', key: 'nextLevel', label: 'next level (L)' },
-    { type: 'button', key: 'reset', label: 'reset level (R)' },
+    { type: 'button', key: 'nextLevel', label: withKey('next level', 'L') },
+    { type: 'button', key: 'reset', label: withKey('reset level', 'R') },
   ],
-  { title: 'Wrecking ball' },
+  // In the left column under the controls, closed, so the scene has the rest of the width; on a
+  // phone in the menu drawer.
+  { title: 'Settings', container: pageLayout().info, closed: !pageLayout().compact() },
 );
 
 const status = document.createElement('div');
@@ -738,8 +851,20 @@ let runEndedAt = -1;
 /** How long a swing's result stays in the status line, s. */
 const RESULT_SHOWN = 3;
 const hookAt = new Float64Array(3);
+/** World time of the last frame, s (effects advance by the world's time, so a pause stops them). */
+let lastFrameTime = 0;
 function frame(): void {
   updateControls();
+  const dt = Math.min(0.1, Math.max(0, shell.world.time - lastFrameTime));
+  lastFrameTime = shell.world.time;
+  // A piece that has just fallen: its points rise over it, and a puff where it was.
+  const P = shell.world.components.Position;
+  for (const p of handles.pieces) {
+    if (!p.fallen || popped.has(p.body) || !isAlive(shell.world, p.body)) continue;
+    popped.add(p.body);
+    effects.popup(P.x[p.body]!, P.y[p.body]! + 0.9, P.z[p.body]!, `+${p.points}`);
+  }
+  effects.update(dt);
   const c = handles.crane;
   // Jib: along the slew direction through the mast top, reaching RADIUS_RANGE[1] + 2 out and 2 back.
   const ca = Math.cos(c.angle),
@@ -851,6 +976,8 @@ shell.expose({
   aimed: (): { piece: number; arrow: boolean } => ({ piece: aimed, arrow: aimArrow.visible }),
   /** What the last swing did, once counted ('Hit! N down' or 'Missed: tap it again'; '' before). */
   swingResult: (): string => swing.result,
+  /** The effects showing now: dust and chips in the air, score popups. */
+  effects: () => effects.counts(),
   /** Goes to the next level (banks the score). */
   nextLevel,
 });

@@ -47,10 +47,24 @@ describe('3D rigid-body games in headless Chromium', () => {
       score(): number;
     };
     const drawn = await g.page.evaluate(() => {
-      const game = window.game as unknown as WB;
-      return { pieces: game.handles().pieces.length, ...game.renderer.stats.shapes, shaped: game.renderer.stats.shaped };
+      const game = window.game as unknown as Omit<WB, 'handles'> & {
+        handles(): { links: number[]; pieces: unknown[] };
+        renderer: { stats: { custom: number } };
+      };
+      const stats = game.renderer.stats;
+      return {
+        pieces: game.handles().pieces.length,
+        links: game.handles().links.length,
+        ...stats.shapes,
+        shaped: stats.shaped,
+        custom: stats.custom,
+      };
     });
-    expect(drawn.boxes).toBe(drawn.pieces); // the pieces (the mast's box is drawn as a lattice of its own)
+    // Every body has a look of its own: the pieces in textured brick, plank and crate, the ball in
+    // steel, the links hidden under the drawn chain, the mast's box under its lattice, the trolley a
+    // hook block; none is drawn by its plain 3D shapes.
+    expect(drawn.custom).toBe(drawn.pieces + drawn.links + 3);
+    expect(drawn.shaped).toBe(0);
     // The chain is drawn as one rod from the hook through the links to the ball's surface (the capsule
     // links were drawn apart, with gaps, when their joints gave): 9 segments, ending on the ball within 1 mm.
     const chain = await g.page.evaluate(() =>
@@ -60,7 +74,6 @@ describe('3D rigid-body games in headless Chromium', () => {
     expect(chain.rings).toBe(18); // two links drawn on each segment, so it reads as a chain, not a rod
     expect(chain.gap).toBeLessThan(1e-3);
     expect(drawn.capsules).toBe(0); // the chain's links: drawn as the rod (drawChain), their own meshes hidden
-    expect(drawn.spheres).toBe(1); // the ball
     const a0 = await g.page.evaluate(() => (window.game as unknown as WB).handles().crane.angle);
     const t0 = await g.page.evaluate(() => (window.game as unknown as { cameraTarget(): number[] }).cameraTarget());
     await g.page.keyboard.down('a');
@@ -161,6 +174,10 @@ describe('3D rigid-body games in headless Chromium', () => {
     expect(column.plan).toBe(true);
     expect(column.gap).toBeLessThan(60);
     expect(column.overflow).toBeLessThanOrEqual(0);
+    // The settings panel is in that column too, so the scene has the rest of the width (a right-hand
+    // panel column left it 735 px).
+    expect(await g.page.locator('.bp-info .lil-gui').count()).toBe(1);
+    expect(await g.page.evaluate(() => document.querySelector('canvas')!.getBoundingClientRect().width)).toBe(1280 - 220);
     // Pausing does not move the layout: the site plan keeps its place and size (the 'paused' line
     // pushed the column down and shrank it). Paused since the click above; resumed here.
     const planBox = () =>

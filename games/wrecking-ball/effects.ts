@@ -1,0 +1,189 @@
+/**
+ * Wrecking ball, the effects of a hit (drawing only, no physics): dust that billows where something
+ * strikes the ground or the ball strikes a piece, chips in the piece's colour that fly and fall, and
+ * score popups that rise over a piece as it falls. Sprites in the scene's metres, from fixed pools.
+ */
+import { CanvasTexture, type Object3D, Sprite, SpriteMaterial, SRGBColorSpace } from 'three';
+
+/** Sprites in each pool: dust puffs and chips share one, popups have their own. */
+const BITS = 160,
+  POPUPS = 24;
+
+/** Seconds a dust puff lives; a chip lives CHIP_LIFE; a popup POPUP_LIFE. */
+const DUST_LIFE = 1.4,
+  CHIP_LIFE = 1.2,
+  POPUP_LIFE = 1.2;
+
+/** A soft round puff, white (tinted per sprite). */
+function puffTexture(): CanvasTexture {
+  const c = document.createElement('canvas');
+  c.width = c.height = 64;
+  const g = c.getContext('2d')!;
+  const grad = g.createRadialGradient(32, 32, 0, 32, 32, 32);
+  grad.addColorStop(0, 'rgba(255,255,255,1)');
+  grad.addColorStop(0.5, 'rgba(255,255,255,0.55)');
+  grad.addColorStop(1, 'rgba(255,255,255,0)');
+  g.fillStyle = grad;
+  g.fillRect(0, 0, 64, 64);
+  const t = new CanvasTexture(c);
+  t.colorSpace = SRGBColorSpace;
+  return t;
+}
+
+/** A popup's label drawn in bold yellow with a dark outline, on a clear canvas. */
+function labelTexture(text: string): CanvasTexture {
+  const c = document.createElement('canvas');
+  c.width = 128;
+  c.height = 64;
+  const g = c.getContext('2d')!;
+  g.font = 'bold 40px sans-serif';
+  g.textAlign = 'center';
+  g.textBaseline = 'middle';
+  g.lineWidth = 8;
+  g.strokeStyle = '#1a1208';
+  g.strokeText(text, 64, 34);
+  g.fillStyle = '#ffe066';
+  g.fillText(text, 64, 34);
+  const t = new CanvasTexture(c);
+  t.colorSpace = SRGBColorSpace;
+  return t;
+}
+
+/** One bit in flight: its sprite, velocity (m/s), age and life (s), size (m) and whether it is dust. */
+interface Bit {
+  sprite: Sprite;
+  vx: number;
+  vy: number;
+  vz: number;
+  age: number;
+  life: number;
+  size: number;
+  dust: boolean;
+}
+
+/** The effects layer: add `root` to the scene, call `update` once a frame. */
+export class SiteEffects {
+  private readonly bits: Bit[] = [];
+  private readonly popups: Array<{ sprite: Sprite; age: number; y0: number }> = [];
+  private readonly labels = new Map<string, CanvasTexture>();
+  private next = 0;
+  private nextPopup = 0;
+  private seed = 9;
+
+  /** `root` is the object the sprites are added to (the scene). */
+  constructor(root: Object3D) {
+    const puff = puffTexture();
+    for (let i = 0; i < BITS; i++) {
+      const sprite = new Sprite(new SpriteMaterial({ map: puff, transparent: true, depthWrite: false }));
+      sprite.visible = false;
+      root.add(sprite);
+      this.bits.push({ sprite, vx: 0, vy: 0, vz: 0, age: 0, life: 0, size: 0, dust: true });
+    }
+    for (let i = 0; i < POPUPS; i++) {
+      const sprite = new Sprite(new SpriteMaterial({ transparent: true, depthTest: false, depthWrite: false }));
+      sprite.visible = false;
+      sprite.renderOrder = 10;
+      root.add(sprite);
+      this.popups.push({ sprite, age: 0, y0: 0 });
+    }
+  }
+
+  private rand(): number {
+    this.seed = (this.seed * 1103515245 + 12345) >>> 0;
+    return this.seed / 2 ** 32;
+  }
+
+  /**
+   * Dust: `count` puffs at (x, y, z), m, spreading at up to `speed` m/s, in `color` (0xRRGGBB);
+   * and `chips` chips of `chipColor` thrown up and out, falling under gravity.
+   */
+  burst(x: number, y: number, z: number, count: number, speed: number, color = 0xc9b393, chips = 0, chipColor = 0x888888): void {
+    for (let i = 0; i < count + chips; i++) {
+      const b = this.bits[this.next]!;
+      this.next = (this.next + 1) % BITS;
+      const dust = i < count;
+      const a = this.rand() * 2 * Math.PI;
+      const v = speed * (dust ? 0.3 + 0.5 * this.rand() : 0.5 + 0.8 * this.rand());
+      b.vx = v * Math.cos(a);
+      b.vz = v * Math.sin(a);
+      b.vy = dust ? 0.3 + 0.6 * this.rand() : 2 + 3 * this.rand();
+      b.age = 0;
+      b.life = dust ? DUST_LIFE * (0.6 + 0.4 * this.rand()) : CHIP_LIFE * (0.6 + 0.4 * this.rand());
+      b.size = dust ? 0.5 + 0.5 * this.rand() : 0.1 + 0.1 * this.rand();
+      b.dust = dust;
+      b.sprite.position.set(x + (this.rand() - 0.5) * 0.4, y + (this.rand() - 0.5) * 0.3, z + (this.rand() - 0.5) * 0.4);
+      b.sprite.material.color.setHex(dust ? color : chipColor);
+      b.sprite.visible = true;
+    }
+  }
+
+  /** A popup (e.g. "+40") rising from (x, y, z), m. */
+  popup(x: number, y: number, z: number, text: string): void {
+    let map = this.labels.get(text);
+    if (!map) {
+      map = labelTexture(text);
+      this.labels.set(text, map);
+    }
+    const p = this.popups[this.nextPopup]!;
+    this.nextPopup = (this.nextPopup + 1) % POPUPS;
+    p.sprite.material.map = map;
+    p.sprite.material.needsUpdate = true;
+    p.sprite.position.set(x, y, z);
+    p.y0 = y;
+    p.age = 0;
+    p.sprite.visible = true;
+  }
+
+  /** Advances every bit and popup by `dt` s. */
+  update(dt: number): void {
+    for (const b of this.bits) {
+      if (!b.sprite.visible) continue;
+      b.age += dt;
+      if (b.age >= b.life) {
+        b.sprite.visible = false;
+        continue;
+      }
+      const t = b.age / b.life;
+      const s = b.sprite;
+      if (b.dust) {
+        const damp = Math.exp(-2.5 * dt);
+        b.vx *= damp;
+        b.vz *= damp;
+        b.vy = b.vy * damp + 0.2 * dt;
+        s.scale.setScalar(b.size * (0.7 + 1.8 * t));
+        s.material.opacity = 0.6 * (1 - t);
+      } else {
+        b.vy -= 9.81 * dt;
+        if (s.position.y + b.vy * dt < 0.05) b.vx = b.vy = b.vz = 0;
+        s.scale.setScalar(b.size);
+        s.material.opacity = Math.min(1, 3 * (1 - t));
+      }
+      s.position.x += b.vx * dt;
+      s.position.y += b.vy * dt;
+      s.position.z += b.vz * dt;
+    }
+    for (const p of this.popups) {
+      if (!p.sprite.visible) continue;
+      p.age += dt;
+      if (p.age >= POPUP_LIFE) {
+        p.sprite.visible = false;
+        continue;
+      }
+      const t = p.age / POPUP_LIFE;
+      p.sprite.position.y = p.y0 + 1.6 * (1 - (1 - t) * (1 - t));
+      p.sprite.scale.set(2.4, 1.2, 1).multiplyScalar(t < 0.15 ? 0.6 + (0.4 * t) / 0.15 : 1);
+      p.sprite.material.opacity = t < 0.7 ? 1 : (1 - t) / 0.3;
+    }
+  }
+
+  /** Bits and popups showing now (tests). */
+  counts(): { bits: number; popups: number } {
+    return { bits: this.bits.filter((b) => b.sprite.visible).length, popups: this.popups.filter((p) => p.sprite.visible).length };
+  }
+
+  /** Hides everything (a new level). */
+  clear(): void {
+    for (const b of this.bits) b.sprite.visible = false;
+    for (const p of this.popups) p.sprite.visible = false;
+  }
+}

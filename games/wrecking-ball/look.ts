@@ -1,0 +1,209 @@
+/**
+ * Wrecking ball, how the site looks (drawing only, no physics): textures painted once into small
+ * canvases (a brick, a plank's grain, a painted crate, packed dirt) and box geometries that carry
+ * them on each piece the right way round. Lengths are in metres.
+ */
+import { BoxGeometry, type BufferGeometry, CanvasTexture, MeshStandardMaterial, RepeatWrapping, SRGBColorSpace } from 'three';
+
+/** A seeded generator (a fixed sequence, so the textures look the same on every load): numbers in [0, 1). */
+function random(seed: number): () => number {
+  let a = seed >>> 0;
+  return () => {
+    a = (a * 1664525 + 1013904223) >>> 0;
+    return a / 2 ** 32;
+  };
+}
+
+/** A canvas of w x h px and its 2D context. */
+function canvas(w: number, h: number): [HTMLCanvasElement, CanvasRenderingContext2D] {
+  const c = document.createElement('canvas');
+  c.width = w;
+  c.height = h;
+  return [c, c.getContext('2d')!];
+}
+
+/** Speckles: `n` dots of up to `size` px in `colors`, over the whole canvas. */
+function speckle(g: CanvasRenderingContext2D, w: number, h: number, n: number, size: number, colors: string[], rand: () => number): void {
+  for (let i = 0; i < n; i++) {
+    g.fillStyle = colors[i % colors.length]!;
+    g.globalAlpha = 0.25 + 0.5 * rand();
+    const s = 1 + rand() * size;
+    g.fillRect(rand() * w, rand() * h, s, s);
+  }
+  g.globalAlpha = 1;
+}
+
+function texture(c: HTMLCanvasElement): CanvasTexture {
+  const t = new CanvasTexture(c);
+  t.colorSpace = SRGBColorSpace;
+  t.anisotropy = 4;
+  return t;
+}
+
+/** One brick's face: fired clay, uneven in tone, with a pale mortar edge. */
+export function brickTexture(): CanvasTexture {
+  const [c, g] = canvas(128, 64);
+  const rand = random(7);
+  g.fillStyle = '#d9d2c5';
+  g.fillRect(0, 0, 128, 64);
+  const grad = g.createLinearGradient(0, 0, 128, 64);
+  grad.addColorStop(0, '#b9583c');
+  grad.addColorStop(1, '#9c432d');
+  g.fillStyle = grad;
+  g.fillRect(4, 4, 120, 56);
+  speckle(g, 128, 64, 220, 3, ['#7a2f1f', '#c97a55', '#5e2417'], rand);
+  g.strokeStyle = 'rgba(255, 255, 255, 0.25)';
+  g.lineWidth = 2;
+  g.strokeRect(5, 5, 118, 54);
+  return texture(c);
+}
+
+/** A plank's face: wood with its grain running along (u) and a knot or two. */
+export function plankTexture(): CanvasTexture {
+  const [c, g] = canvas(256, 48);
+  const rand = random(11);
+  g.fillStyle = '#d7a867';
+  g.fillRect(0, 0, 256, 48);
+  for (let i = 0; i < 14; i++) {
+    const y = 2 + rand() * 44;
+    g.strokeStyle = rand() < 0.5 ? 'rgba(120, 74, 32, 0.45)' : 'rgba(240, 200, 140, 0.5)';
+    g.lineWidth = 1 + rand() * 2;
+    g.beginPath();
+    g.moveTo(0, y);
+    for (let x = 0; x <= 256; x += 32) g.lineTo(x, y + Math.sin(x / 40 + i) * 2 * rand());
+    g.stroke();
+  }
+  for (const [kx, ky] of [
+    [70, 20],
+    [190, 30],
+  ] as const) {
+    g.fillStyle = 'rgba(110, 62, 24, 0.8)';
+    g.beginPath();
+    g.ellipse(kx, ky, 7, 4, 0, 0, 2 * Math.PI);
+    g.fill();
+  }
+  g.strokeStyle = 'rgba(80, 48, 20, 0.8)';
+  g.lineWidth = 3;
+  g.strokeRect(1.5, 1.5, 253, 45);
+  return texture(c);
+}
+
+/** A crate's face, painted red: slats, a darker frame and a diagonal brace. */
+export function crateTexture(): CanvasTexture {
+  const [c, g] = canvas(128, 128);
+  const rand = random(5);
+  g.fillStyle = '#d9583f';
+  g.fillRect(0, 0, 128, 128);
+  g.strokeStyle = 'rgba(90, 20, 16, 0.55)';
+  g.lineWidth = 2;
+  for (let y = 14; y < 128; y += 25) {
+    g.beginPath();
+    g.moveTo(0, y);
+    g.lineTo(128, y);
+    g.stroke();
+  }
+  g.strokeStyle = '#a83a2c';
+  g.lineWidth = 14;
+  g.strokeRect(7, 7, 114, 114);
+  g.beginPath();
+  g.moveTo(12, 116);
+  g.lineTo(116, 12);
+  g.stroke();
+  speckle(g, 128, 128, 120, 3, ['#e7b8a0', '#6e1d18'], rand);
+  return texture(c);
+}
+
+/** Packed dirt of a building site: brown, blotched, with gravel; repeats `repeat` times across. */
+export function dirtTexture(repeat: number): CanvasTexture {
+  const [c, g] = canvas(256, 256);
+  const rand = random(3);
+  g.fillStyle = '#8b7556';
+  g.fillRect(0, 0, 256, 256);
+  for (let i = 0; i < 60; i++) {
+    g.fillStyle = rand() < 0.5 ? 'rgba(110, 90, 62, 0.35)' : 'rgba(160, 138, 104, 0.3)';
+    g.beginPath();
+    g.ellipse(rand() * 256, rand() * 256, 8 + rand() * 30, 6 + rand() * 20, rand() * Math.PI, 0, 2 * Math.PI);
+    g.fill();
+  }
+  speckle(g, 256, 256, 900, 3, ['#5c4a33', '#b8a585', '#d3c7b0', '#6e6255'], rand);
+  const t = texture(c);
+  t.wrapS = t.wrapT = RepeatWrapping;
+  t.repeat.set(repeat, repeat);
+  return t;
+}
+
+/** The materials of the pieces, by kind (textured, tinted per instance). */
+export function pieceMaterials(): Record<'tower' | 'wall' | 'planks', MeshStandardMaterial> {
+  return {
+    tower: new MeshStandardMaterial({ map: crateTexture(), roughness: 0.8 }),
+    wall: new MeshStandardMaterial({ map: brickTexture(), roughness: 0.9 }),
+    planks: new MeshStandardMaterial({ map: plankTexture(), roughness: 0.75 }),
+  };
+}
+
+/** Box geometries by size (half extents in the body's frame), shared by pieces of one size. */
+const boxes = new Map<string, BufferGeometry>();
+
+/**
+ * A box of half extents `half` (m, along the body's x, y, z) whose every face carries its texture
+ * with u along the face's longer side (a brick's length, a plank's grain).
+ */
+export function pieceGeometry(half: readonly [number, number, number]): BufferGeometry {
+  const key = half.map((h) => h.toFixed(4)).join(',');
+  const known = boxes.get(key);
+  if (known) return known;
+  const geometry = new BoxGeometry(2 * half[0], 2 * half[1], 2 * half[2]);
+  // BoxGeometry's faces, in order +x, -x, +y, -y, +z, -z, four vertices each: the axes its u and v run along.
+  const faceAxes: ReadonlyArray<readonly [number, number]> = [
+    [2, 1],
+    [2, 1],
+    [0, 2],
+    [0, 2],
+    [0, 1],
+    [0, 1],
+  ];
+  const uv = geometry.getAttribute('uv');
+  faceAxes.forEach(([u, v], f) => {
+    if (half[v]! <= half[u]!) return;
+    for (let k = 4 * f; k < 4 * f + 4; k++) {
+      const a = uv.getX(k),
+        b = uv.getY(k);
+      uv.setXY(k, b, a);
+    }
+  });
+  uv.needsUpdate = true;
+  boxes.set(key, geometry);
+  return geometry;
+}
+
+/**
+ * The half extents of a box along its body's axes: the body frame is its inertia's principal frame,
+ * which may list the box's own axes in another order. `axis(i)` gives body axis i as a world
+ * direction (x, y, z); the box's own axes are its x and z turned by `yaw` about the vertical and y.
+ */
+export function bodyHalfExtents(
+  half: readonly [number, number, number],
+  yaw: number,
+  axis: (i: number) => readonly [number, number, number],
+): [number, number, number] {
+  const own = [
+    [Math.cos(yaw), 0, -Math.sin(yaw)],
+    [0, 1, 0],
+    [Math.sin(yaw), 0, Math.cos(yaw)],
+  ];
+  const out: [number, number, number] = [0, 0, 0];
+  for (let i = 0; i < 3; i++) {
+    const d = axis(i);
+    let best = 0,
+      bestDot = -1;
+    for (let j = 0; j < 3; j++) {
+      const dot = Math.abs(d[0] * own[j]![0]! + d[1] * own[j]![1]! + d[2] * own[j]![2]!);
+      if (dot > bestDot) {
+        bestDot = dot;
+        best = j;
+      }
+    }
+    out[i] = half[best]!;
+  }
+  return out;
+}
