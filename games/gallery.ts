@@ -1,14 +1,40 @@
 /**
  * The gallery page: reads registry.json (written by the build from each game's game.json) and lists
- * the games, the Games category first. A summary's first line says what a player does; a second
- * line, if any (after a newline), names the physics and is shown smaller beneath it.
+ * the pages by category, the games first, each as a card with a screenshot of it in play, its title
+ * and one sentence of what you can do there (./gallery-cards; else the first line of its summary).
+ * The first games are shown larger. DOM only.
  */
+import { CARD_LINES, SECTIONS } from './gallery-cards';
 
 interface Entry {
   folder: string;
   title: string;
   summary: string;
   category: string;
+}
+
+/** Games shown as large cards at the top of their section. */
+const FEATURED = 3;
+
+/** A card linking to `e`: screenshot, title, one line. */
+function card(e: Entry, featured: boolean): HTMLAnchorElement {
+  const a = document.createElement('a');
+  a.className = featured ? 'card featured' : 'card';
+  a.href = `./${e.folder}/`;
+  a.dataset.folder = e.folder;
+  const img = document.createElement('img');
+  img.src = `./${e.folder}/thumbnail.png`;
+  img.alt = `${e.title}: screenshot`;
+  img.loading = featured ? 'eager' : 'lazy';
+  const text = document.createElement('div');
+  text.className = 'text';
+  const title = document.createElement('h3');
+  title.textContent = e.title;
+  const line = document.createElement('p');
+  line.textContent = CARD_LINES[e.folder] ?? e.summary.split('\n')[0] ?? '';
+  text.append(title, line);
+  a.append(img, text);
+  return a;
 }
 
 async function main(): Promise<void> {
@@ -24,37 +50,30 @@ async function main(): Promise<void> {
     byCategory.set(e.category, list);
   }
   for (const [category, list] of byCategory) {
+    const section = document.createElement('section');
+    section.dataset.category = category;
     const heading = document.createElement('h2');
-    heading.textContent = category;
+    const about = SECTIONS[category];
+    heading.textContent = about?.title ?? category;
+    section.append(heading);
+    if (about) {
+      const line = document.createElement('p');
+      line.className = 'section-line';
+      line.textContent = about.line;
+      section.append(line);
+    }
+    const games = category === 'Games';
+    if (games) {
+      const top = document.createElement('div');
+      top.className = 'grid featured-grid';
+      for (const e of list.slice(0, FEATURED)) top.append(card(e, true));
+      section.append(top);
+    }
     const grid = document.createElement('div');
     grid.className = 'grid';
-    for (const e of list) {
-      const card = document.createElement('a');
-      card.className = 'card';
-      card.href = `./${e.folder}/`;
-      card.dataset.folder = e.folder;
-      const img = document.createElement('img');
-      img.src = `./${e.folder}/thumbnail.png`;
-      img.alt = `${e.title}: screenshot`;
-      img.loading = 'lazy';
-      const text = document.createElement('div');
-      text.className = 'text';
-      const title = document.createElement('h3');
-      title.textContent = e.title;
-      const [play, ...physics] = e.summary.split('\n');
-      const summary = document.createElement('p');
-      summary.textContent = play ?? '';
-      text.append(title, summary);
-      if (physics.length > 0) {
-        const more = document.createElement('p');
-        more.className = 'physics';
-        more.textContent = physics.join(' ');
-        text.append(more);
-      }
-      card.append(img, text);
-      grid.append(card);
-    }
-    root.append(heading, grid);
+    for (const e of games ? list.slice(FEATURED) : list) grid.append(card(e, false));
+    section.append(grid);
+    root.append(section);
   }
   document.body.dataset.ready = 'true';
 }
