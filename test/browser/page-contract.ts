@@ -83,6 +83,26 @@ export function describePages(shard: number, shards: number): void {
         await g.close();
       });
 
+      it('the gallery leads with the games, says what each page lets you do without formulas, and lists two cards a row on a phone', async () => {
+        const g = await h.open('', { viewport: { width: 390, height: 844 }, touch: true });
+        await g.page.waitForFunction(() => document.body.dataset.ready === 'true');
+        const page = await g.page.evaluate(() => {
+          const sections = Array.from(document.querySelectorAll('#gallery section')).map((s) => (s as HTMLElement).dataset.category);
+          const lines = Array.from(document.querySelectorAll('#gallery a.card p')).map((p) => p.textContent ?? '');
+          // Rows of the second grid of games: cards whose tops are level share a row.
+          const cards = Array.from(document.querySelectorAll('#gallery section .grid:not(.featured-grid) a.card')).slice(0, 6);
+          const tops = new Set(cards.map((c) => Math.round(c.getBoundingClientRect().top)));
+          return { sections, lines, cards: cards.length, rows: tops.size, text: document.body.innerText };
+        });
+        expect(page.sections[0]).toBe('Games');
+        // No equations (=, roots, powers, Greek letters, ln) on any card, no developer's note up top.
+        expect(page.lines.filter((l) => /[=√²³πθωτμ]|\bln\s*\(/.test(l))).toEqual([]);
+        expect(page.text).not.toMatch(/npm run|built from components/);
+        expect(page.rows).toBe(Math.ceil(page.cards / 2));
+        expect(g.errors).toEqual([]);
+        await g.close();
+      });
+
       it('on a phone the toolbar opens the info and settings drawers, the help shows touch gestures, and its buttons pause and step', async () => {
         const g = await h.openGame('bouncing-balls', { viewport: { width: 390, height: 844 }, touch: true });
         const info = g.page.locator('.bp-info');
