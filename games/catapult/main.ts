@@ -7,12 +7,14 @@
  * A "Next level" button under the scene when the level is over (touch and mouse).
  * Sound: a whoosh per throw; impacts as loud as their impulse, wood for posts and planks, stone for
  * blocks, stones and the projectile.
- * URL: ?level=1..5, ?seed=S.
+ * URL: ?level=1..5, ?seed=S, ?demo (the catapult throws one stone at the castle by itself, at 0.3 s:
+ * the gallery's thumbnail shows a hit).
  */
 
 import {
   createActionButton,
   createPanel,
+  flagParam,
   forEachImpact,
   getSound,
   isTouchDevice,
@@ -29,6 +31,7 @@ import { Container, Graphics, Text } from 'pixi.js';
 import { type DebrisKind, Effects } from './effects';
 import { CATAPULT, cupAt, drawCatapult, drawGlass, drawMound, drawStone, drawWood, mixColor } from './look';
 import {
+  angleForRange,
   buildLevel,
   FALL_POINTS,
   LAUNCH,
@@ -141,6 +144,8 @@ const RELOAD = 0.8;
 /** World time of the last frame drawn, s (effects and the arm advance by the world's time, so a pause stops them). */
 let lastDrawTime = 0;
 
+/** Whether the catapult throws one stone by itself (?demo). */
+const DEMO = flagParam('demo');
 /** Sound material of each piece's body; the projectiles and the ground sound as stone. */
 const materials = new Map<number, SoundMaterial>();
 const sound = getSound();
@@ -159,6 +164,11 @@ const DEBRIS: Record<SoundMaterial, DebrisKind> = { wood: 'wood', glass: 'glass'
  */
 function stepWorld(world: PhysicsWorld): void {
   step(world);
+  if (DEMO && shots.length === 0 && world.time > 0.3) {
+    // At the castle's front at 19 m/s, the low angle.
+    const th = angleForRange(lv.castleMinX + 0.6 - LAUNCH.x, 19, -world.gravity[1]!);
+    fire(-(19 / PULL.gain) * Math.cos(th), -(19 / PULL.gain) * Math.sin(th));
+  }
   const material = (b: number): SoundMaterial => materials.get(b) ?? 'stone';
   forEachImpact(world, (a, b, impulse) => {
     const ma = material(a),
@@ -787,7 +797,8 @@ function drawPower(power: number): void {
   const cam = renderer.camera;
   const w = Math.max(60, cam.toScreenLength(1.6)),
     h = 8;
-  const x = cam.toScreenX(-0.5) - w / 2,
+  // Over the catapult, kept on the screen (a phone's view starts just behind the catapult).
+  const x = Math.min(Math.max(6, cam.toScreenX(-0.3) - w / 2), cam.width - w - 6),
     y = cam.toScreenY(2.9);
   overlay.roundRect(x - 2, y - 2, w + 4, h + 4, 4).fill({ color: 0x000000, alpha: 0.55 });
   overlay.roundRect(x, y, Math.max(2, w * power), h, 3).fill(mixColor(0x5cd65c, 0xff5040, power));
@@ -945,6 +956,8 @@ function draw(world: PhysicsWorld, alpha: number): void {
   showBreaks(world);
   drawPieces(world, alpha);
   followThrow(world, t);
+  // A good throw's points keep counting what falls after it was decided.
+  if (lastThrow.good && lastThrow.verdict) lastThrow.verdict = `+${t.score - lastThrow.scoreBefore}`;
   drawThrow(world);
   if (aim.active) {
     const [vx, vy] = launchVelocity(aim.dx, aim.dy);
