@@ -10,7 +10,8 @@
  * G debug layer (joints, contacts), P pause, N step, R reset. Mouse: click a target to swing the ball
  * at it (the crane winds up and runs through); click the ground to send the hook there; drag the
  * ball to pull it; right-drag orbits, wheel zooms.
- * URL: ?level=N, ?seed=S, ?debug.
+ * URL: ?level=N, ?seed=S, ?debug, ?demo (the crane swings at the level's first tower by itself: the
+ * gallery's thumbnail shows a hit).
  */
 
 import {
@@ -362,6 +363,12 @@ function frameSite(): void {
   else app.frame([x0 + 0.5, 0, z0 + 0.5], [x1 - 0.5, 7, z1 - 0.5], [0.85, 0.6, 1]);
 }
 frameSite();
+// ?demo: one swing at the middle of the first tower, as a tap would.
+if (flagParam('demo'))
+  setTimeout(() => {
+    const tower = handles.pieces.filter((p) => p.kind === 'tower');
+    if (tower.length > 0) swingAt(tower[Math.floor(tower.length / 2)]!.body);
+  }, 0);
 shell.onWorldChange(() => {
   drag.release();
   lastFrameTime = 0;
