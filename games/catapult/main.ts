@@ -26,7 +26,7 @@ import {
 } from '@bitphysics/game-kit';
 import { createReadout } from '@bitphysics/game-kit/lab-kit';
 import { startPixiGame } from '@bitphysics/game-kit/pixi';
-import { createPhysicsWorld, isAlive, type PhysicsWorld, Rng, setGravity, slotOf, step } from '@bitphysics/physics';
+import { contactEvents, createPhysicsWorld, isAlive, type PhysicsWorld, Rng, setGravity, slotOf, step } from '@bitphysics/physics';
 import { Container, Graphics, Text } from 'pixi.js';
 import { type DebrisKind, Effects } from './effects';
 import { CATAPULT, cupAt, drawCatapult, drawGlass, drawMound, drawStone, drawWood, mixColor } from './look';
@@ -160,7 +160,7 @@ const DEBRIS: Record<SoundMaterial, DebrisKind> = { wood: 'wood', glass: 'glass'
  * One step, then for each impact a sound (wood over glass over stone, the louder material of the two
  * bodies, as loud as the impulse) and what it throws up where the bodies met: dust where something
  * lands on the grass, splinters, shards or chips of what a stone hits, and a shake of the camera
- * for a hard hit by a thrown stone (its size from the impulse).
+ * for a hard hit by a thrown stone (its size from the approach speed).
  */
 function stepWorld(world: PhysicsWorld): void {
   step(world);
@@ -177,7 +177,7 @@ function stepWorld(world: PhysicsWorld): void {
     sound.impact(impulse, m, { threshold: 2, loud: 60 });
   });
   if (!effects) return;
-  const ev = world.collision.shapes.events.begin;
+  const ev = contactEvents(world).begin;
   for (let i = 0; i < ev.count; i++) {
     const a = ev.bodyA[i]!,
       b = ev.bodyB[i]!,

@@ -27,7 +27,7 @@ import {
   seedParam,
 } from '@bitphysics/game-kit';
 import { ORBIT_CONTROLS_RIGHT, startThreeGame } from '@bitphysics/game-kit/three';
-import { contactEvents3D, createPhysicsWorld, isAlive, type PhysicsWorld, step as physicsStep } from '@bitphysics/physics';
+import { contactEvents, createPhysicsWorld, isAlive, type PhysicsWorld, step as physicsStep } from '@bitphysics/physics';
 import { BodyDrag3D } from '@bitphysics/render-three';
 import {
   BoxGeometry,
@@ -173,7 +173,7 @@ const BURSTS_PER_STEP = 4;
  * where pieces knock together hard. As many as the approach speed is fast.
  */
 function stirUp(world: PhysicsWorld): void {
-  const ev = contactEvents3D(world).begin;
+  const ev = contactEvents(world).begin;
   let made = 0;
   for (let i = 0; i < ev.count && made < BURSTS_PER_STEP; i++) {
     const a = ev.bodyA[i]!,
