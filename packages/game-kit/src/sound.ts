@@ -38,6 +38,10 @@ export interface Sound {
   crackle(count?: number, duration?: number): void;
   /** A short tone (a beacon, a ring passed, a level cleared): `pitch` Hz, `duration` s. */
   chime(pitch?: number, duration?: number): void;
+  /** Cloth tearing: a run of short bursts of hiss, `strength` in [0, 1] (longer and louder the larger). */
+  rip(strength?: number): void;
+  /** A rope or a thread snapping (or cut): a sharp crack and a low thump, `strength` in [0, 1]. */
+  snap(strength?: number): void;
   /** A continuous engine hum: `kind` 'propeller' (plane) or 'screw' (submarine). */
   engine(kind: 'propeller' | 'screw'): EngineSound;
 }
@@ -244,6 +248,27 @@ export function getSound(): Sound {
       if (!c) return;
       tone(c, pitch, 0.22, duration, 1, 'triangle');
       tone(c, pitch * 1.5, 0.1, duration * 0.8, 1, 'sine', 0.06);
+      played++;
+    },
+    rip(strength = 0.5) {
+      const c = live();
+      if (!c) return;
+      const s = Math.min(1, Math.max(0, strength));
+      // Fibres parting one after another: 5 to 19 grains of band-passed noise 5 to 19 ms apart.
+      const grains = Math.round(5 + 14 * s);
+      let t = 0;
+      for (let i = 0; i < grains; i++) {
+        noiseBurst(c, 1600 + Math.random() * 2800, 1.2, (0.06 + 0.1 * Math.random()) * (0.5 + s), 0.02 + 0.025 * Math.random(), t);
+        t += 0.005 + 0.014 * Math.random();
+      }
+      played++;
+    },
+    snap(strength = 0.6) {
+      const c = live();
+      if (!c) return;
+      const s = Math.min(1, Math.max(0, strength));
+      noiseBurst(c, 2500, 0.8, 0.25 + 0.3 * s, 0.05, 0, 'highpass');
+      tone(c, 240, 0.18 + 0.2 * s, 0.14, 0.3, 'triangle');
       played++;
     },
     engine(kind) {
