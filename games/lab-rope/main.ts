@@ -1,123 +1,157 @@
 /**
- * Lab: a rope (Ramtal and Dobre ch. 13). A chain of point masses joined by distance joints that only
- * pull (createRope), pinned at the top, with a ball as its bob. The joints are solved in the contact
- * solver's soft substeps; the rope is drawn as one smooth line (RopeLayer).
+ * Lab: ropes (Ramtal and Dobre ch. 13), as a game: a ball hangs from one to three ropes; cut them so
+ * that it falls into the basket, catching the stars on its way (scene.ts: five levels). Each rope is a
+ * chain of point masses joined by distance joints that only pull (createRope), solved in the contact
+ * solver's soft substeps; a cut removes one link, and the two pieces hang and fall as two ropes
+ * (view.ts draws each piece as its own cord).
  *
- * Input: drag the bob (or any rope point) to swing it (a mouse joint); click the rope to cut the link
- * there; the pieces fall to the floor. Keys: P pause, N step, R reset. URL: ?segments (2-200), ?length (1-20 m), ?mass (0.1-20 kg).
+ * Input: swipe across a rope to cut it (cut.ts: every rope the stroke crosses), or tap on it; drag the
+ * ball to push it while a rope still holds it (a mouse joint of limited force). Keys: P pause, N step,
+ * R retry, L next level. URL: ?level (1-5), ?links (links a metre, 2-40), ?gravity (0-30 m/s^2).
  */
 
-import { createPanel, numberParam, pointerOnCanvas } from '@bitphysics/game-kit';
-import { enableMouseDrag } from '@bitphysics/game-kit/drag';
-import { createLabDock, createReadout, fmt, followView, readUrlParams } from '@bitphysics/game-kit/lab-kit';
+import { createActionButton, createPanel, getSound, numberParam, pointerOnCanvas } from '@bitphysics/game-kit';
+import { createLabDock, createReadout, createStatusLine, fmt, followView, readUrlParams } from '@bitphysics/game-kit/lab-kit';
 import { startPixiGame } from '@bitphysics/game-kit/pixi';
 import { createPlot } from '@bitphysics/game-kit/plot';
-import {
-  addBody,
-  addBox,
-  addDistanceJoint,
-  createPhysicsWorld,
-  createRope,
-  isAlive,
-  type PhysicsWorld,
-  step as physicsStep,
-  type Rope,
-  removeJoint,
-  slotOf,
-} from '@bitphysics/physics';
-import { RopeLayer, type WorldRect } from '@bitphysics/render-pixi';
-import { Graphics } from 'pixi.js';
+import { addMouseJoint, isAlive, type PhysicsWorld, step as physicsStep, removeJoint, setMouseTarget, slotOf } from '@bitphysics/physics';
+import type { WorldRect } from '@bitphysics/render-pixi';
+import { Graphics, Text } from 'pixi.js';
+import { cutRopes } from './cut';
+import { BALL_RADIUS, createRopeScene, DEFAULTS, LEVELS, RopeGame, type RopeScene } from './scene';
+import { RopeView } from './view';
 
-const USAGE = 'Accepted: segments 2-200; length 1-20 m; mass 0.1-20 kg.';
+const USAGE = `Accepted: level 1-${LEVELS.length}; links 2-40 (a metre); gravity 0-30 m/s².`;
 const url = readUrlParams(
   () => ({
-    segments: numberParam('segments', { default: 30, min: 2, max: 200, integer: true }),
-    length: numberParam('length', { default: 5, min: 1, max: 20 }),
-    mass: numberParam('mass', { default: 1, min: 0.1, max: 20 }),
+    level: numberParam('level', { default: 1, min: 1, max: LEVELS.length, integer: true }),
+    linksPerMetre: numberParam('links', { default: DEFAULTS.linksPerMetre, min: 2, max: 40 }),
+    gravity: numberParam('gravity', { default: DEFAULTS.gravity, min: 0, max: 30 }),
   }),
   USAGE,
 );
-const params = { ...url, bobMass: 2, slack: true, gravity: 9.81, reset: () => shell.reset() };
+const params = {
+  ...DEFAULTS,
+  linksPerMetre: url.linksPerMetre,
+  gravity: url.gravity,
+  level: url.level,
+  retry: () => shell.reset(),
+  next: () => nextLevel(),
+};
 
-const PIN: [number, number] = [0, 3];
-/** The floor's top, m: a cut rope and its bob land on it (they fell for ever). */
-const FLOOR_Y = -2.9;
-/** What the camera shows: 12 m wide, or 10 m on a tall screen (a phone upright), where the rope is then drawn larger. */
-const WIDE_VIEW: WorldRect = { minX: -6, minY: -3.2, maxX: 6, maxY: 3.6 };
-const TALL_VIEW: WorldRect = { minX: -5, minY: -3.2, maxX: 5, maxY: 3.6 };
-const view = (): WorldRect => (app.canvas.clientHeight > app.canvas.clientWidth ? TALL_VIEW : WIDE_VIEW);
-/** The rope's colour (RopeLayer's default). */
-const ROPE_COLOR = 0xd9b38c;
-let rope: Rope;
-let bob = 0;
-let bobLink = 0;
+/** Best stars won on each level (-1: not cleared yet). */
+const best = LEVELS.map(() => -1);
+let scene: RopeScene;
+let game: RopeGame;
 let cuts = 0;
-
-/** Builds the rope: pinned at PIN, laid out 60 degrees from the vertical so it swings at once. */
-function createWorld(): PhysicsWorld {
-  const world = createPhysicsWorld({ gravity: [0, -params.gravity], capacity: 1000 });
-  const L = params.length,
-    a = Math.PI / 3;
-  const end: [number, number] = [PIN[0] + L * Math.sin(a), PIN[1] - L * Math.cos(a)];
-  // The links have a radius so the rope lies on the floor; a rope 8 m long reaches it.
-  rope = createRope(world, {
-    start: PIN,
-    end,
-    segments: params.segments,
-    mass: params.mass,
-    slack: params.slack,
-    drag: 0.01,
-    radius: 0.03,
-  });
-  addBox(world, { position: [0, FLOOR_Y - 0.2], halfExtents: [30, 0.2], static: true, friction: 0.6 });
-  const last = rope.bodies[rope.bodies.length - 1]!;
-  bob = addBody(world, {
-    position: [end[0] + 0.3 * Math.sin(a), end[1] - 0.3 * Math.cos(a)],
-    mass: params.bobMass,
-    radius: 0.25,
-    restitution: 0.3,
-  });
-  bobLink = addDistanceJoint(world, { a: last, b: bob, ...(params.slack ? { minLength: 0 } : {}) });
-  cuts = 0;
-  plot?.clear();
-  return world;
-}
-
+/** Real time (s) at which the level was lost, for the automatic retry; NaN while playing. */
+let lostAt = Number.NaN;
+/** The push: a mouse joint on the ball while the pointer drags it. */
+let push = 0;
+/** Sparkles: where (m), when (s), colour. */
+const sparkles: { x: number; y: number; vx: number; vy: number; born: number; color: number }[] = [];
 let plot: ReturnType<typeof createPlot> | null = null;
+const sound = getSound();
+
+function createWorld(): PhysicsWorld {
+  scene = createRopeScene(params.level - 1, params);
+  game = new RopeGame(scene);
+  cuts = 0;
+  lostAt = Number.NaN;
+  push = 0;
+  plot?.clear();
+  return scene.world;
+}
 
 function labStep(world: PhysicsWorld): void {
   physicsStep(world);
-  const b = slotOf(bob);
-  plot?.push(world.time, world.components.Position.y[b]!, world.joints.stats.maxError * 1000);
+  const before = game.outcome;
+  for (const i of game.update()) {
+    const [x, y] = scene.level.stars[i]!;
+    burst(x, y, 0xffd23f, 14);
+    sound.chime(1175 + 220 * game.stars(), 0.3);
+  }
+  if (before === 'playing' && game.outcome === 'won') {
+    best[params.level - 1] = Math.max(best[params.level - 1]!, game.stars());
+    sound.chime(784, 0.25);
+    setTimeout(() => sound.chime(1046, 0.5), 160);
+    const e = slotOf(scene.ball);
+    burst(world.components.Position.x[e]!, world.components.Position.y[e]! + 0.3, 0x7ee2a0, 24);
+  }
+  if (before === 'playing' && game.outcome === 'lost') {
+    lostAt = performance.now() / 1000;
+    sound.impact(2, 'soft', { threshold: 0.1, loud: 10 });
+  }
+  const e = slotOf(scene.ball);
+  const V = world.components.Velocity;
+  plot?.push(world.time, world.components.Position.y[e]!, Math.hypot(V.x[e]!, V.y[e]!));
 }
 
-const game = await startPixiGame({
+const started = await startPixiGame({
   title: 'Rope',
   createWorld,
   step: labStep,
   controls: [
-    { keys: 'Drag', action: 'swing the bob or rope' },
-    { keys: 'Click', action: 'cut the rope there' },
+    { keys: 'Swipe', action: 'across a rope to cut it (or tap it)' },
+    { keys: 'Drag ball', action: 'push the ball' },
+    { keys: 'L', action: 'next level (once cleared)', touch: '' },
   ],
-  renderer: { view: WIDE_VIEW, balls: 'sprites' },
+  keys: [{ key: 'l', label: 'next level', action: () => nextLevel() }],
+  renderer: { view: LEVELS[0]!.view },
   onFrame: (alpha, world) => draw(alpha, world),
 });
-const { shell, renderer, app } = game;
+const { shell, renderer, app } = started;
 const dock = createLabDock();
-followView(app, renderer.camera, dock, view);
+const refit = followView(app, renderer.camera, dock, () => scene.level.view as WorldRect);
+
+/** Goes to the next level (after the last, back to the first). */
+function nextLevel(): void {
+  params.level = (params.level % LEVELS.length) + 1;
+  shell.reset();
+  refit();
+}
 
 createPanel(
   params,
   [
-    { type: 'slider', key: 'segments', label: 'segments', min: 2, max: 200, step: 1, onRelease: true, onChange: () => shell.reset() },
-    { type: 'slider', key: 'length', label: 'length (m)', min: 1, max: 8, step: 0.1, onRelease: true, onChange: () => shell.reset() },
-    { type: 'slider', key: 'mass', label: 'rope mass (kg)', min: 0.1, max: 20, step: 0.1, onRelease: true, onChange: () => shell.reset() },
     {
       type: 'slider',
-      key: 'bobMass',
-      label: 'bob mass (kg)',
+      key: 'level',
+      label: 'level',
+      min: 1,
+      max: LEVELS.length,
+      step: 1,
+      onChange: () => {
+        shell.reset();
+        refit();
+      },
+    },
+    {
+      type: 'slider',
+      key: 'linksPerMetre',
+      label: 'links a metre',
+      min: 2,
+      max: 40,
+      step: 1,
+      onRelease: true,
+      onChange: () => shell.reset(),
+    },
+    {
+      type: 'slider',
+      key: 'ropeMass',
+      label: 'rope mass (kg/m)',
+      min: 0.01,
+      max: 1,
+      step: 0.01,
+      onRelease: true,
+      onChange: () => shell.reset(),
+    },
+    {
+      type: 'slider',
+      key: 'ballMass',
+      label: 'ball mass (kg)',
       min: 0.1,
-      max: 50,
+      max: 10,
       step: 0.1,
       onRelease: true,
       onChange: () => shell.reset(),
@@ -134,132 +168,257 @@ createPanel(
         shell.world.gravity[1] = -(g as number);
       },
     },
-    { type: 'button', key: 'reset', label: 'new rope (R)' },
+    { type: 'button', key: 'retry', label: 'retry (R)' },
+    { type: 'button', key: 'next', label: 'next level (L)' },
   ],
   { title: 'Rope', container: dock.panelSlot },
 );
-const readout = createReadout(shell.hud.readout, ['links', 'cuts', 'largest link error', 'bob speed', 'tension at the pin']);
+const readout = createReadout(shell.hud.readout, ['ropes holding', 'cuts', 'stars', 'ball speed', 'largest link error']);
 plot = createPlot({
   parent: dock.charts,
-  title: 'Bob height and link error',
-  yLabel: 'y (m) / error (mm)',
+  title: 'The ball',
+  yLabel: 'm / m/s',
   width: dock.chartWidth,
   height: 200,
   capacity: 1200,
   series: [
-    { label: 'bob height (m)', color: '#4cc9f0' },
-    { label: 'largest link error (mm)', color: '#f4a261' },
+    { label: 'height (m)', color: '#4cc9f0' },
+    { label: 'speed (m/s)', color: '#f4a261' },
   ],
 });
 
-// Cut: a click near the rope (not on the bob) removes the nearest link; otherwise the press drags.
+const status = createStatusLine();
+const showNext = createActionButton('Next level ▶', () => nextLevel());
+
+// Input: a press on (or near) the ball pushes it; elsewhere a swipe cuts the ropes it crosses, and a
+// tap cuts the rope nearest to it.
 const canvas = app.canvas;
 const at = { x: 0, y: 0 };
+const toWorld = (e: PointerEvent): [number, number] => {
+  pointerOnCanvas(canvas, e, at);
+  return [renderer.camera.toWorldX(at.x), renderer.camera.toWorldY(at.y)];
+};
+let stroke: { x: number; y: number; sx: number; sy: number; moved: number; id: number } | null = null;
+const slash: { x: number; y: number; t: number }[] = [];
+/** How far from a rope a tap still cuts it, CSS px. */
+const TAP_REACH_PX = 26;
+
+function cutBetween(x0: number, y0: number, x1: number, y1: number, reach: number): void {
+  if (game.outcome !== 'playing') return;
+  const made = cutRopes(shell.world, scene.ropes, scene.ball, x0, y0, x1, y1, reach);
+  for (const c of made) {
+    cuts++;
+    burst(c.x, c.y, 0xd9b67c, 8);
+    sound.snap(0.7);
+  }
+}
+
 canvas.addEventListener('pointerdown', (e) => {
   if (e.button !== 0) return;
-  pointerOnCanvas(canvas, e, at);
-  const x = renderer.camera.toWorldX(at.x),
-    y = renderer.camera.toWorldY(at.y);
-  if (cutAt(x, y)) e.stopImmediatePropagation();
+  const [x, y] = toWorld(e);
+  releasePush();
+  const w = shell.world,
+    b = slotOf(scene.ball),
+    P = w.components.Position;
+  const near = Math.hypot(P.x[b]! - x, P.y[b]! - y) < BALL_RADIUS + 22 / renderer.camera.toScreenLength(1);
+  if (near && game.holding() > 0 && game.outcome === 'playing') {
+    // A push of at most 1.2 times the ball's weight: enough to swing it, not to carry it.
+    push = addMouseJoint(w, {
+      b: scene.ball,
+      anchor: [x, y],
+      target: [x, y],
+      hertz: 3,
+      dampingRatio: 0.7,
+      maxForce: 1.2 * w.components.Mass.value[b]! * Math.max(1, params.gravity),
+    });
+  } else {
+    stroke = { x, y, sx: at.x, sy: at.y, moved: 0, id: e.pointerId };
+    slash.length = 0;
+    slash.push({ x: at.x, y: at.y, t: performance.now() / 1000 });
+  }
+  canvas.setPointerCapture(e.pointerId);
 });
-const drag = enableMouseDrag(
-  canvas,
-  () => shell.world,
-  () => renderer.camera,
-  { reach: 0.4 },
-);
-
-/**
- * Removes the rope link nearest to world point (x, y) if it is within 0.15 m and the point is not on
- * the bob. @returns whether a link was cut.
- */
-function cutAt(x: number, y: number): boolean {
-  const world = shell.world,
-    P = world.components.Position;
-  const b = slotOf(bob);
-  if (Math.hypot(P.x[b]! - x, P.y[b]! - y) < 0.4) return false;
-  const J = world.components.Joint;
-  let best = 0,
-    bestD = 0.15;
-  for (const h of [...rope.joints, bobLink]) {
-    if (!isAlive(world, h)) continue;
-    const j = slotOf(h);
-    const a = J.a[j]!,
-      bb = J.b[j]!;
-    const ax = a === 0 ? J.localAx[j]! : P.x[a]!,
-      ay = a === 0 ? J.localAy[j]! : P.y[a]!;
-    const d = segmentDistance(x, y, ax, ay, P.x[bb]!, P.y[bb]!);
-    if (d < bestD) {
-      bestD = d;
-      best = h;
-    }
+canvas.addEventListener('pointermove', (e) => {
+  const [x, y] = toWorld(e);
+  if (push && isAlive(shell.world, push)) {
+    setMouseTarget(shell.world, push, [x, y]);
+    return;
   }
-  if (!best) return false;
-  removeJoint(world, best);
-  cuts++;
-  return true;
+  if (!stroke || e.pointerId !== stroke.id) return;
+  stroke.moved += Math.hypot(at.x - stroke.sx, at.y - stroke.sy);
+  stroke.sx = at.x;
+  stroke.sy = at.y;
+  cutBetween(stroke.x, stroke.y, x, y, 0);
+  stroke.x = x;
+  stroke.y = y;
+  slash.push({ x: at.x, y: at.y, t: performance.now() / 1000 });
+});
+function releasePush(): void {
+  if (push && isAlive(shell.world, push)) removeJoint(shell.world, push);
+  push = 0;
+}
+const release = (e: PointerEvent): void => {
+  releasePush();
+  // A tap (a press that hardly moved): cut the rope nearest to it, if close enough.
+  if (stroke && e.pointerId === stroke.id && stroke.moved < 8)
+    cutBetween(stroke.x, stroke.y, stroke.x, stroke.y, TAP_REACH_PX / renderer.camera.toScreenLength(1));
+  stroke = null;
+};
+canvas.addEventListener('pointerup', release);
+canvas.addEventListener('pointercancel', release);
+shell.onWorldChange(() => {
+  push = 0;
+  stroke = null;
+  sparkles.length = 0;
+});
+
+/** Sparkles flying out from (x, y), m. */
+function burst(x: number, y: number, color: number, n: number): void {
+  const now = performance.now() / 1000;
+  for (let i = 0; i < n; i++) {
+    const a = (2 * Math.PI * i) / n + Math.random() * 0.5,
+      s = 1 + Math.random() * 2;
+    sparkles.push({ x, y, vx: s * Math.cos(a), vy: s * Math.sin(a) + 1, born: now, color });
+  }
 }
 
-function segmentDistance(px: number, py: number, ax: number, ay: number, bx: number, by: number): number {
-  const dx = bx - ax,
-    dy = by - ay,
-    l2 = dx * dx + dy * dy;
-  const t = l2 > 0 ? Math.max(0, Math.min(1, ((px - ax) * dx + (py - ay) * dy) / l2)) : 0;
-  return Math.hypot(px - ax - t * dx, py - ay - t * dy);
-}
+// Drawing.
+const view = new RopeView();
+for (const child of renderer.root.children) child.visible = false;
+renderer.root.addChild(view.container);
+const overlay = new Graphics({ label: 'overlay' });
+renderer.root.addChild(overlay);
+const banner = new Text({
+  text: '',
+  style: {
+    fill: 0xffffff,
+    fontSize: 30,
+    fontFamily: 'sans-serif',
+    fontWeight: 'bold',
+    align: 'center',
+    stroke: { color: 0x101828, width: 6 },
+    wordWrap: true,
+    wordWrapWidth: 360,
+  },
+});
+banner.anchor.set(0.5);
+renderer.root.addChild(banner);
 
-/** The support the rope hangs from: a short beam at PIN, hatched on top as a fixed support is drawn. */
-const support = new Graphics({ label: 'support' });
-renderer.root.addChild(support);
-function drawSupport(): void {
-  const cam = renderer.camera;
-  const x = cam.toScreenX(PIN[0]),
-    y = cam.toScreenY(PIN[1]),
-    half = Math.max(18, cam.toScreenLength(0.45)),
-    h = Math.max(6, cam.toScreenLength(0.12));
-  support.clear();
-  support.rect(x - half, y - h, 2 * half, h).fill(0x8a94a6);
-  for (let i = -half; i < half; i += 8) support.moveTo(x + i, y - h).lineTo(x + i + 8, y - h - 8);
-  support.stroke({ width: 2, color: 0x8a94a6 });
-  support.circle(x, y, Math.max(3, cam.toScreenLength(0.06))).fill(0xe8ecf1);
-}
-
-const line = new RopeLayer(shell.world, [], { width: 0.06 });
-let layer = line;
-let layerWorld: PhysicsWorld | null = null;
+let lastFrame = performance.now() / 1000;
 function draw(alpha: number, world: PhysicsWorld): void {
-  if (layerWorld !== world) {
-    layer.destroy();
-    layer = new RopeLayer(world, [...rope.bodies, bob], { start: PIN, width: 0.06, links: [...rope.joints, bobLink], color: ROPE_COLOR });
-    // The links' colliders are drawn in the rope's colour, so the rope reads as one line.
-    for (const b of rope.bodies) renderer.setColor(b, ROPE_COLOR);
-    renderer.root.addChildAt(layer.graphics, 0);
-    layerWorld = world;
+  const now = performance.now() / 1000;
+  const dt = Math.min(0.05, now - lastFrame);
+  lastFrame = now;
+  const cam = renderer.camera;
+  view.update(world, scene.level, scene.ropes, scene.ball, game.caught, cam, alpha, now, app.screen.width, app.screen.height);
+  overlay.clear();
+  // The swipe: the last 0.25 s of the stroke, fading.
+  while (slash.length > 0 && now - slash[0]!.t > 0.25) slash.shift();
+  for (let i = 1; i < slash.length; i++) {
+    const a = slash[i - 1]!,
+      b = slash[i]!;
+    const fade = 1 - (now - b.t) / 0.25;
+    overlay
+      .moveTo(a.x, a.y)
+      .lineTo(b.x, b.y)
+      .stroke({ width: 8 * fade + 1, color: 0xffffff, alpha: 0.2 * fade, cap: 'round' });
+    overlay
+      .moveTo(a.x, a.y)
+      .lineTo(b.x, b.y)
+      .stroke({ width: 2.5, color: 0xffffff, alpha: 0.9 * fade, cap: 'round' });
   }
-  layer.update(renderer.camera, alpha);
-  drawSupport();
-  const links = [...rope.joints, bobLink].filter((h) => isAlive(world, h)).length;
-  const V = world.components.Velocity,
-    b = slotOf(bob);
-  readout.set(0, String(links));
+  // The push: a band from the ball to the pointer.
+  if (push && isAlive(world, push)) {
+    const e = slotOf(scene.ball);
+    const P = world.components.Position;
+    overlay.moveTo(cam.toScreenX(P.x[e]!), cam.toScreenY(P.y[e]!)).lineTo(at.x, at.y).stroke({ width: 3, color: 0xffd166, alpha: 0.8 });
+    overlay.circle(at.x, at.y, 10).stroke({ width: 2, color: 0xffd166 });
+  }
+  for (let i = sparkles.length - 1; i >= 0; i--) {
+    const s = sparkles[i]!;
+    const age = now - s.born;
+    if (age > 0.8) {
+      sparkles.splice(i, 1);
+      continue;
+    }
+    s.x += s.vx * dt;
+    s.y += s.vy * dt;
+    s.vy -= 6 * dt;
+    overlay
+      .circle(cam.toScreenX(s.x), cam.toScreenY(s.y), Math.max(2, cam.toScreenLength(0.05)) * (1 - age))
+      .fill({ color: s.color, alpha: 1 - age / 0.8 });
+  }
+  drawBanner(now);
+  updateStatus();
+  const e = slotOf(scene.ball),
+    V = world.components.Velocity;
+  readout.set(0, String(game.holding()));
   readout.set(1, String(cuts));
-  readout.set(2, `${fmt(world.joints.stats.maxError * 1000)} mm`);
-  readout.set(3, `${fmt(Math.hypot(V.x[b]!, V.y[b]!))} m/s`);
-  const pin = rope.joints[0]!;
-  readout.set(4, isAlive(world, pin) ? `${fmt(world.components.Joint.force[slotOf(pin)]!)} N` : 'cut');
+  readout.set(2, `${game.stars()} of 3`);
+  readout.set(3, `${fmt(Math.hypot(V.x[e]!, V.y[e]!), 3)} m/s`);
+  readout.set(4, `${fmt(world.joints.stats.maxError * 1000, 3)} mm`);
+}
+
+/** The banner in the middle of the scene: the level's name at its start, then the outcome. */
+function drawBanner(now: number): void {
+  const cam = renderer.camera;
+  banner.style.wordWrapWidth = Math.max(200, cam.width - 40);
+  banner.x = cam.width / 2;
+  banner.y = cam.toScreenY(3.4);
+  if (game.outcome === 'won') {
+    const s = game.stars();
+    const last = params.level === LEVELS.length;
+    setBanner(`${last ? 'All levels done!' : 'In the basket!'}\n${'★'.repeat(s)}${'☆'.repeat(3 - s)}`, 0x9ff0b8, 1);
+    showNext(true, last ? 'Play again ▶' : 'Next level ▶');
+    return;
+  }
+  showNext(false);
+  if (game.outcome === 'lost') {
+    setBanner('Missed! Again…', 0xffb4a2, 1);
+    if (now - lostAt > 1.4) shell.reset();
+    return;
+  }
+  const t = shell.world.time;
+  setBanner(`Level ${params.level}: ${scene.level.name}`, 0xffffff, t < 2 ? 1 : Math.max(0, 1 - (t - 2) * 2));
+}
+function setBanner(text: string, color: number, alpha: number): void {
+  if (banner.text !== text) banner.text = text;
+  banner.style.fill = color;
+  banner.alpha = alpha;
+  banner.visible = alpha > 0;
+}
+
+function updateStatus(): void {
+  const total = best.reduce((s, b) => s + Math.max(0, b), 0);
+  const cleared = best.filter((b) => b >= 0).length;
+  const tail = cleared > 0 ? ` · cleared ${cleared} of ${LEVELS.length}, ★ ${total}` : '';
+  status.set(`Level ${params.level} of ${LEVELS.length}: ${scene.level.hint}${tail}`);
 }
 
 shell.expose({
   params,
   plot,
-  drag,
-  /** The rope's body and joint handles, and the bob's. */
-  ids: () => ({ bodies: Array.from(rope.bodies), joints: Array.from(rope.joints), bob, bobLink }),
-  /** Live links of the rope (joints still alive). */
-  links: () => [...rope.joints, bobLink].filter((h) => isAlive(shell.world, h)).length,
+  /** The level's handles: the ball, and per rope its bodies and links (anchor to ball). */
+  ids: () => ({
+    ball: scene.ball,
+    ropes: scene.ropes.map((r) => ({ anchor: [...r.anchor], bodies: [...r.bodies], links: [...r.links] })),
+  }),
+  /** Ropes that still hold the ball, cuts made, stars caught, and the level's outcome. */
+  holding: () => game.holding(),
   cuts: () => cuts,
-  /** Pieces the rope was drawn in at the last frame (1 whole, 2 after a cut). */
-  ropePieces: () => layer.pieces,
+  stars: () => game.stars(),
+  outcome: () => game.outcome,
+  /** The level shown (1-based), and the best stars of each level (-1: not cleared). */
+  level: () => params.level,
+  best: () => [...best],
+  /** Rope pieces drawn in the last frame (one a whole rope; each cut adds one). */
+  ropePieces: () => view.pieces,
+  /** Goes to level n (1-based). */
+  goTo: (n: number) => {
+    params.level = Math.min(LEVELS.length, Math.max(1, Math.round(n)));
+    shell.reset();
+    refit();
+  },
   /** Runs the lab's step n times (tests). */
   advance: (n: number) => {
     for (let i = 0; i < n; i++) labStep(shell.world);

@@ -1,0 +1,311 @@
+/**
+ * The rope lab's levels and world, headless (no DOM, no Pixi), shared by the page and its tests.
+ *
+ * A level: a ball hangs from one to three ropes pinned to a beam; a basket stands on the floor; three
+ * stars float in the air. Cut the ropes (cut.ts) so that the ball falls into the basket, catching the
+ * stars on its way. Each rope is createRope's chain of point masses joined by distance joints that only
+ * pull (rope links), pinned at its top; the ball (a dynamic ball body) hangs from its last point by one
+ * more rope link. The links have a small radius, so a cut rope drapes over the basket and the floor.
+ *
+ * The ball is in the basket once its centre is inside the basket's walls and below their tops while it
+ * is almost still (RopeGame.update); it is lost once it rests anywhere else, or leaves the level.
+ */
+import {
+  addBody,
+  addBox,
+  addDistanceJoint,
+  createPhysicsWorld,
+  createRope,
+  isAlive,
+  type PhysicsWorld,
+  type Rope,
+  slotOf,
+} from '@bitphysics/physics';
+
+/** One level. Lengths in m, y up, the floor's top at y = 0. */
+export interface Level {
+  /** A name for the level's banner. */
+  readonly name: string;
+  /** The hint shown at the level's start. */
+  readonly hint: string;
+  /** Where each rope is pinned, m. */
+  readonly anchors: readonly (readonly [number, number])[];
+  /** Where the ball starts, m (the ropes are laid straight from their anchors to it). */
+  readonly ball: readonly [number, number];
+  /** Centre of the basket's floor, m (x, and y of its bottom's top). */
+  readonly basket: readonly [number, number];
+  /** Inner width of the basket, m. */
+  readonly basketWidth: number;
+  /** Height of the basket's walls, m. */
+  readonly basketDepth: number;
+  /** The three stars, m. */
+  readonly stars: readonly (readonly [number, number])[];
+  /** Walls in the way: centre and half extents, m. */
+  readonly blocks?: readonly { readonly at: readonly [number, number]; readonly half: readonly [number, number] }[];
+  /** What the camera frames, m (the same for every screen: the level is drawn as large as it fits). */
+  readonly view: { readonly minX: number; readonly minY: number; readonly maxX: number; readonly maxY: number };
+}
+
+/** Radius of the ball, m. */
+export const BALL_RADIUS = 0.28;
+/** Mass of the ball, kg. */
+export const BALL_MASS = 1;
+/** Thickness of the basket's walls and floor, m. */
+export const WALL = 0.1;
+/** Half the room's width, m: its side walls' inner faces are this far from x = 0. */
+export const ROOM_HALF_WIDTH = 2.7;
+/** How close the ball's centre must come to a star to catch it, m. */
+export const STAR_REACH = BALL_RADIUS + 0.22;
+
+const VIEW = { minX: -2.9, minY: -0.35, maxX: 2.9, maxY: 9.1 } as const;
+
+/** The levels, in order: each adds one idea. */
+export const LEVELS: readonly Level[] = Object.freeze([
+  {
+    name: 'Let go',
+    hint: 'Swipe across the rope to cut it when the ball is over the basket.',
+    anchors: [[0, 8.4]],
+    ball: [-2, 6.7],
+    basket: [1.85, 0],
+    basketWidth: 1.2,
+    basketDepth: 0.75,
+    stars: [
+      [0, 5.75],
+      [1.6, 6.3],
+      [1.85, 3.2],
+    ],
+    view: VIEW,
+  },
+  {
+    name: 'Two ropes',
+    hint: 'Two ropes hold the ball. Which one goes first?',
+    anchors: [
+      [-2.2, 8.4],
+      [1, 8.4],
+    ],
+    ball: [-0.6, 6.3],
+    basket: [1.9, 0],
+    basketWidth: 1.1,
+    basketDepth: 0.75,
+    stars: [
+      [0.5, 5.3],
+      [2.25, 4.3],
+      [1.95, 2.2],
+    ],
+    view: VIEW,
+  },
+  {
+    name: 'Over the wall',
+    hint: 'Cut on the upswing to throw the ball over the wall.',
+    anchors: [[-1.1, 8.6]],
+    ball: [-2.6, 6.9],
+    basket: [2.05, 0],
+    basketWidth: 1.1,
+    basketDepth: 0.7,
+    stars: [
+      [-1.1, 5.95],
+      [0.7, 6.7],
+      [1.75, 4.9],
+    ],
+    blocks: [{ at: [0.75, 1.5], half: [0.12, 1.5] }],
+    view: VIEW,
+  },
+  {
+    name: 'Three ropes',
+    hint: 'Three ropes: cut them in the right order, at the right time.',
+    anchors: [
+      [-2.3, 8.5],
+      [0, 8.8],
+      [2.3, 8.5],
+    ],
+    ball: [0.2, 6.4],
+    basket: [-1.9, 0],
+    basketWidth: 1.1,
+    basketDepth: 0.75,
+    stars: [
+      [-0.6, 5.15],
+      [-2.25, 5.05],
+      [-2.05, 2.6],
+    ],
+    view: VIEW,
+  },
+  {
+    name: 'Push',
+    hint: 'Drag the ball to push it into a swing, then cut.',
+    anchors: [[-0.6, 8.6]],
+    ball: [-0.6, 5.8],
+    basket: [2.1, 2.6],
+    basketWidth: 1,
+    basketDepth: 0.6,
+    stars: [
+      [-0.6, 5.2],
+      [1.2, 6.9],
+      [2.1, 4.6],
+    ],
+    blocks: [{ at: [2.1, 1.2], half: [0.55, 1.3] }],
+    view: VIEW,
+  },
+]);
+
+/** The lab's settings that shape its world. */
+export interface RopeSceneParams {
+  /** Rope links a metre of rope, in [2, 40]. */
+  linksPerMetre: number;
+  /** Mass of a metre of rope, kg, > 0. */
+  ropeMass: number;
+  /** Mass of the ball, kg, > 0. */
+  ballMass: number;
+  /** Gravity, m/s^2, >= 0. */
+  gravity: number;
+  /** Whether the links only pull (rope) or also push (rods). */
+  slack: boolean;
+}
+
+/** The lab's defaults. */
+export const DEFAULTS: Readonly<RopeSceneParams> = Object.freeze({
+  linksPerMetre: 8,
+  ropeMass: 0.08,
+  ballMass: BALL_MASS,
+  gravity: 9.81,
+  slack: true,
+});
+
+/** One rope of the level: its bodies and links in order from the anchor to the ball. */
+export interface RopePiece {
+  /** Where it is pinned, m. */
+  readonly anchor: readonly [number, number];
+  /** createRope's rope. */
+  readonly rope: Rope;
+  /** The link from its last body to the ball. */
+  readonly ballLink: number;
+  /** Its links in order: rope.joints then ballLink. */
+  readonly links: readonly number[];
+  /** Its bodies in order (rope.bodies). */
+  readonly bodies: readonly number[];
+}
+
+/** What `createRopeScene` made. */
+export interface RopeScene {
+  world: PhysicsWorld;
+  level: Level;
+  ball: number;
+  ropes: RopePiece[];
+}
+
+/**
+ * Builds level `index` (0-based) of LEVELS: the floor, the basket, the blocks, the ball and its ropes.
+ * @throws RangeError on a level index outside LEVELS.
+ */
+export function createRopeScene(index: number, p: RopeSceneParams): RopeScene {
+  const level = LEVELS[index];
+  if (!level) throw new RangeError(`createRopeScene: level must be an integer in [0, ${LEVELS.length - 1}], got ${index}`);
+  const world = createPhysicsWorld({ gravity: [0, -p.gravity], capacity: 2000 });
+  addBox(world, { position: [0, -0.25], halfExtents: [20, 0.25], static: true, friction: 0.6 });
+  // The room's side walls: their inner faces at x = -ROOM_HALF_WIDTH and +ROOM_HALF_WIDTH.
+  for (const side of [-1, 1])
+    addBox(world, { position: [side * (ROOM_HALF_WIDTH + 1), 10], halfExtents: [1, 10], static: true, friction: 0.3, restitution: 0.3 });
+  const [bx, by] = level.basket,
+    half = level.basketWidth / 2;
+  // The basket: a floor and two walls, static, of soft wicker (little bounce).
+  addBox(world, { position: [bx, by + WALL / 2], halfExtents: [half + WALL, WALL / 2], static: true, friction: 0.8, restitution: 0.05 });
+  for (const side of [-1, 1])
+    addBox(world, {
+      position: [bx + side * (half + WALL / 2), by + level.basketDepth / 2],
+      halfExtents: [WALL / 2, level.basketDepth / 2],
+      static: true,
+      friction: 0.8,
+      restitution: 0.05,
+    });
+  for (const b of level.blocks ?? []) addBox(world, { position: b.at, halfExtents: b.half, static: true, friction: 0.5 });
+  const [x, y] = level.ball;
+  const ball = addBody(world, {
+    position: [x, y],
+    mass: p.ballMass,
+    radius: BALL_RADIUS,
+    restitution: 0.25,
+    friction: 0.5,
+    linearDrag: 0.02,
+  });
+  const ropes: RopePiece[] = [];
+  for (const anchor of level.anchors) {
+    const dx = x - anchor[0],
+      dy = y - anchor[1],
+      d = Math.hypot(dx, dy);
+    // The rope runs from the anchor to the ball's surface; its last link joins the ball's centre.
+    const length = d - BALL_RADIUS;
+    const end: [number, number] = [anchor[0] + (dx / d) * length, anchor[1] + (dy / d) * length];
+    const segments = Math.max(4, Math.round(length * p.linksPerMetre));
+    const rope = createRope(world, {
+      start: anchor,
+      end,
+      segments,
+      mass: p.ropeMass * length,
+      slack: p.slack,
+      drag: 0.004,
+      radius: 0.035,
+    });
+    const last = rope.bodies[rope.bodies.length - 1]!;
+    const ballLink = addDistanceJoint(world, { a: last, b: ball, ...(p.slack ? { minLength: 0 } : {}) });
+    ropes.push({ anchor, rope, ballLink, links: [...rope.joints, ballLink], bodies: Array.from(rope.bodies) });
+  }
+  return { world, level, ball, ropes };
+}
+
+/** Where a level stands. */
+export type Outcome = 'playing' | 'won' | 'lost';
+
+/**
+ * The rules of a level on its scene: the stars caught, whether the ball is in the basket (won) or lost.
+ * Call `update` after every step.
+ */
+export class RopeGame {
+  /** Which stars are caught. */
+  readonly caught: boolean[];
+  outcome: Outcome = 'playing';
+  /** Seconds the ball has been almost still (speed under 0.25 m/s). */
+  private still = 0;
+
+  constructor(readonly scene: RopeScene) {
+    this.caught = scene.level.stars.map(() => false);
+  }
+
+  /** Stars caught. */
+  stars(): number {
+    return this.caught.filter(Boolean).length;
+  }
+
+  /** Ropes that still hold the ball (every link from the anchor to the ball alive). */
+  holding(): number {
+    const w = this.scene.world;
+    return this.scene.ropes.filter((r) => r.links.every((l) => isAlive(w, l))).length;
+  }
+
+  /**
+   * Catches the stars the ball touches and decides the outcome. @returns the indices of the stars
+   * caught in this call (usually none).
+   */
+  update(): number[] {
+    const { world, ball, level } = this.scene;
+    const e = slotOf(ball);
+    const P = world.components.Position,
+      V = world.components.Velocity;
+    const x = P.x[e]!,
+      y = P.y[e]!;
+    const fresh: number[] = [];
+    if (this.outcome !== 'playing') return fresh;
+    level.stars.forEach(([sx, sy], i) => {
+      if (!this.caught[i] && Math.hypot(x - sx, y - sy) < STAR_REACH) {
+        this.caught[i] = true;
+        fresh.push(i);
+      }
+    });
+    const speed = Math.hypot(V.x[e]!, V.y[e]!);
+    this.still = speed < 0.25 ? this.still + world.dt : 0;
+    const [bx, by] = level.basket;
+    const inside = Math.abs(x - bx) < level.basketWidth / 2 && y > by && y < by + level.basketDepth + BALL_RADIUS;
+    if (inside && this.still > 0.3) this.outcome = 'won';
+    else if (this.holding() === 0 && (this.still > 0.6 || y < -2 || x < level.view.minX - 3 || x > level.view.maxX + 3))
+      this.outcome = 'lost';
+    return fresh;
+  }
+}

@@ -1,0 +1,325 @@
+/**
+ * Draws a level of the rope lab: the room (a papered wall, a floor of boards, brick side walls and the
+ * beam the ropes hang from), the basket and the blocks, the stars, the ropes and the ball.
+ *
+ * A rope is drawn as a thick twisted cord: a smooth curve (uniform Catmull-Rom) through its points, in
+ * a dark outline, a hemp body, short diagonal strokes for the twist of its strands and a light edge.
+ * Where a link is gone (a cut), the curve ends there, so a cut rope is two ropes, and each cut end is
+ * drawn frayed. Drawing only.
+ */
+import { isAlive, type PhysicsWorld, slotOf } from '@bitphysics/physics';
+import type { Camera } from '@bitphysics/render-pixi';
+import { Container, Graphics, Sprite, Texture } from 'pixi.js';
+import { BALL_RADIUS, type Level, ROOM_HALF_WIDTH, type RopePiece, WALL } from './scene';
+
+/** Rope thickness, m (drawn at least 4 px). */
+export const ROPE_WIDTH = 0.075;
+
+/** A vertical gradient (CSS colours at stops in [0, 1]) as a 1 x 256 texture. */
+function gradient(stops: readonly [number, string][]): Texture {
+  const c = document.createElement('canvas');
+  c.width = 1;
+  c.height = 256;
+  const g = c.getContext('2d')!;
+  const grad = g.createLinearGradient(0, 0, 0, 256);
+  for (const [at, color] of stops) grad.addColorStop(at, color);
+  g.fillStyle = grad;
+  g.fillRect(0, 0, 1, 256);
+  return Texture.from(c);
+}
+
+/** A glossy red ball, 128 px, drawn with radial gradients. */
+function ballTexture(): Texture {
+  const s = 128;
+  const c = document.createElement('canvas');
+  c.width = s;
+  c.height = s;
+  const g = c.getContext('2d')!;
+  const body = g.createRadialGradient(s * 0.38, s * 0.34, s * 0.05, s * 0.5, s * 0.5, s * 0.5);
+  body.addColorStop(0, '#ff8a7a');
+  body.addColorStop(0.45, '#e2403a');
+  body.addColorStop(1, '#8e1c22');
+  g.fillStyle = body;
+  g.beginPath();
+  g.arc(s / 2, s / 2, s / 2 - 1, 0, 2 * Math.PI);
+  g.fill();
+  // A band round it, and a highlight.
+  g.strokeStyle = 'rgba(255, 236, 200, 0.75)';
+  g.lineWidth = s * 0.07;
+  g.beginPath();
+  g.ellipse(s / 2, s / 2, s * 0.46, s * 0.16, -0.5, 0, 2 * Math.PI);
+  g.stroke();
+  const hi = g.createRadialGradient(s * 0.34, s * 0.3, 0, s * 0.34, s * 0.3, s * 0.2);
+  hi.addColorStop(0, 'rgba(255,255,255,0.9)');
+  hi.addColorStop(1, 'rgba(255,255,255,0)');
+  g.fillStyle = hi;
+  g.fillRect(0, 0, s, s);
+  return Texture.from(c);
+}
+
+/** The smooth curve through points (x, y interleaved, screen px): `steps` points a span, uniform Catmull-Rom. */
+function smooth(pts: number[], steps: number): number[] {
+  const n = pts.length / 2;
+  if (n < 2) return pts.slice();
+  const out: number[] = [pts[0]!, pts[1]!];
+  for (let i = 0; i + 1 < n; i++) {
+    const i0 = Math.max(0, i - 1),
+      i3 = Math.min(n - 1, i + 2);
+    for (let k = 1; k <= steps; k++) {
+      const t = k / steps,
+        t2 = t * t,
+        t3 = t2 * t;
+      for (let d = 0; d < 2; d++) {
+        const p0 = pts[2 * i0 + d]!,
+          p1 = pts[2 * i + d]!,
+          p2 = pts[2 * (i + 1) + d]!,
+          p3 = pts[2 * i3 + d]!;
+        out.push(0.5 * (2 * p1 + (p2 - p0) * t + (2 * p0 - 5 * p1 + 4 * p2 - p3) * t2 + (3 * p1 - p0 - 3 * p2 + p3) * t3));
+      }
+    }
+  }
+  return out;
+}
+
+/** The level's drawing: `container` goes into the scene; call `update` every frame. */
+export class RopeView {
+  readonly container = new Container({ label: 'rope level' });
+  /** Rope pieces drawn in the last frame (one a whole rope; a cut adds one). */
+  pieces = 0;
+  private readonly wall = new Sprite(
+    gradient([
+      [0, '#1d2b44'],
+      [1, '#3e5878'],
+    ]),
+  );
+  private readonly room = new Graphics({ label: 'room' });
+  private readonly cords = new Graphics({ label: 'ropes' });
+  private readonly ballSprite = new Sprite(ballTexture());
+  private readonly front = new Graphics({ label: 'front' });
+  private roomKey = '';
+
+  constructor() {
+    this.ballSprite.anchor.set(0.5);
+    this.container.addChild(this.wall, this.room, this.cords, this.ballSprite, this.front);
+  }
+
+  /**
+   * Draws `level` with its ropes and ball at interpolation factor `alpha`; `caught` says which stars
+   * are gone, `time` (s) turns the stars. `W` x `H` is the canvas, px.
+   */
+  update(
+    world: PhysicsWorld,
+    level: Level,
+    ropes: readonly RopePiece[],
+    ball: number,
+    caught: readonly boolean[],
+    cam: Camera,
+    alpha: number,
+    time: number,
+    W: number,
+    H: number,
+  ): void {
+    this.wall.width = W;
+    this.wall.height = H;
+    const key = `${level.name}:${W}x${H}:${cam.toScreenX(0).toFixed(2)},${cam.toScreenY(0).toFixed(2)},${cam.toScreenLength(1).toFixed(4)}`;
+    if (key !== this.roomKey) {
+      this.roomKey = key;
+      this.drawRoom(level, cam, W, H);
+    }
+    const P = world.components.Position,
+      O = world.components.PreviousPosition;
+    const X = (e: number) => cam.toScreenX(O.x[e]! + (P.x[e]! - O.x[e]!) * alpha),
+      Y = (e: number) => cam.toScreenY(O.y[e]! + (P.y[e]! - O.y[e]!) * alpha);
+    // Ropes.
+    const g = this.cords;
+    g.clear();
+    this.pieces = 0;
+    const be = slotOf(ball);
+    const bx = X(be),
+      by = Y(be);
+    const width = Math.max(4, cam.toScreenLength(ROPE_WIDTH));
+    for (const rope of ropes) {
+      // Points: the anchor, the bodies, the ball; link k joins point k and k + 1.
+      const xs: number[] = [cam.toScreenX(rope.anchor[0]), cam.toScreenY(rope.anchor[1])];
+      const pieces: { pts: number[]; cutStart: boolean; cutEnd: boolean }[] = [];
+      let cutStart = false;
+      for (let k = 0; k < rope.links.length; k++) {
+        const next = k < rope.bodies.length ? slotOf(rope.bodies[k]!) : be;
+        const nx = k < rope.bodies.length ? X(next) : bx,
+          ny = k < rope.bodies.length ? Y(next) : by;
+        if (!isAlive(world, rope.links[k]!)) {
+          pieces.push({ pts: xs.splice(0), cutStart, cutEnd: true });
+          cutStart = true;
+        }
+        // The ball's link ends at the ball's surface, not its centre.
+        if (k === rope.links.length - 1) {
+          const px = xs.length >= 2 ? xs[xs.length - 2]! : nx,
+            py = xs.length >= 2 ? xs[xs.length - 1]! : ny;
+          const d = Math.hypot(nx - px, ny - py),
+            r = cam.toScreenLength(BALL_RADIUS) * 0.85;
+          if (d > r && xs.length >= 2) xs.push(nx - ((nx - px) / d) * r, ny - ((ny - py) / d) * r);
+        } else xs.push(nx, ny);
+      }
+      pieces.push({ pts: xs, cutStart, cutEnd: false });
+      for (const piece of pieces) if (piece.pts.length >= 4) this.drawCord(piece.pts, width, piece.cutStart, piece.cutEnd);
+    }
+    // Ball.
+    const r = cam.toScreenLength(BALL_RADIUS);
+    this.ballSprite.position.set(bx, by);
+    this.ballSprite.width = 2 * r;
+    this.ballSprite.height = 2 * r;
+    this.ballSprite.rotation = world.components.Angle.value[be]! * -1;
+    // Stars, turning and pulsing; caught ones are gone.
+    const f = this.front;
+    f.clear();
+    level.stars.forEach(([sx, sy], i) => {
+      if (caught[i]) return;
+      const x = cam.toScreenX(sx),
+        y = cam.toScreenY(sy);
+      const R = cam.toScreenLength(0.22) * (1 + 0.08 * Math.sin(3 * time + i));
+      f.circle(x, y, R * 1.6).fill({ color: 0xffe27a, alpha: 0.18 });
+      const pts: number[] = [];
+      for (let k = 0; k < 10; k++) {
+        const a = -Math.PI / 2 + (Math.PI * k) / 5 + 0.4 * Math.sin(time + i);
+        const rr = k % 2 ? R * 0.45 : R;
+        pts.push(x + rr * Math.cos(a), y + rr * Math.sin(a));
+      }
+      f.poly(pts)
+        .fill({ color: 0xffd23f })
+        .stroke({ width: Math.max(1.5, R * 0.12), color: 0xb07a00 });
+    });
+  }
+
+  /** A twisted cord through `pts` (screen px), frayed at an end that was cut. */
+  private drawCord(pts: number[], width: number, frayStart: boolean, frayEnd: boolean): void {
+    const g = this.cords;
+    const c = smooth(pts, 4);
+    this.pieces++;
+    const path = (): void => {
+      g.moveTo(c[0]!, c[1]!);
+      for (let i = 2; i < c.length; i += 2) g.lineTo(c[i]!, c[i + 1]!);
+    };
+    path();
+    g.stroke({ width: width + 2.5, color: 0x4a3218, cap: 'round', join: 'round' });
+    path();
+    g.stroke({ width, color: 0xc9a064, cap: 'round', join: 'round' });
+    // The twist: a short diagonal stroke every 1.3 widths along the cord.
+    const step = width * 1.3;
+    let carry = 0;
+    for (let i = 2; i < c.length; i += 2) {
+      const x0 = c[i - 2]!,
+        y0 = c[i - 1]!,
+        dx = c[i]! - x0,
+        dy = c[i + 1]! - y0,
+        len = Math.hypot(dx, dy);
+      if (len === 0) continue;
+      const ux = dx / len,
+        uy = dy / len;
+      let s = step - carry;
+      while (s <= len) {
+        const x = x0 + ux * s,
+          y = y0 + uy * s,
+          h = width * 0.42;
+        g.moveTo(x - uy * h - ux * h * 0.6, y + ux * h - uy * h * 0.6).lineTo(x + uy * h + ux * h * 0.6, y - ux * h + uy * h * 0.6);
+        s += step;
+      }
+      carry = len - (s - step);
+    }
+    g.stroke({ width: Math.max(1, width * 0.2), color: 0x7c5a2c, cap: 'round' });
+    // A light edge along one side.
+    g.moveTo(c[0]!, c[1]!);
+    for (let i = 2; i < c.length; i += 2) g.lineTo(c[i]! - width * 0.18, c[i + 1]! - width * 0.18);
+    g.stroke({ width: Math.max(1, width * 0.18), color: 0xf0d49c, alpha: 0.7, cap: 'round' });
+    if (frayStart) this.fray(c[0]!, c[1]!, c[0]! - c[2]!, c[1]! - c[3]!, width);
+    if (frayEnd) {
+      const n = c.length;
+      this.fray(c[n - 2]!, c[n - 1]!, c[n - 2]! - c[n - 4]!, c[n - 1]! - c[n - 3]!, width);
+    }
+  }
+
+  /** Loose fibres at a cut end (x, y), spreading along direction (dx, dy). */
+  private fray(x: number, y: number, dx: number, dy: number, width: number): void {
+    const len = Math.hypot(dx, dy) || 1;
+    const ux = dx / len,
+      uy = dy / len;
+    const g = this.cords;
+    for (const a of [-0.6, -0.2, 0.25, 0.65]) {
+      const c = Math.cos(a),
+        s = Math.sin(a);
+      const fx = ux * c - uy * s,
+        fy = ux * s + uy * c;
+      g.moveTo(x, y).lineTo(x + fx * width * 1.1, y + fy * width * 1.1);
+    }
+    g.stroke({ width: Math.max(1, width * 0.25), color: 0xd9b67c, cap: 'round' });
+  }
+
+  /** The still room: wallpaper, floor, walls, beam and hooks, basket and blocks. */
+  private drawRoom(level: Level, cam: Camera, W: number, H: number): void {
+    const g = this.room;
+    g.clear();
+    const X = (x: number) => cam.toScreenX(x),
+      Y = (y: number) => cam.toScreenY(y),
+      S = (l: number) => cam.toScreenLength(l);
+    // Wallpaper stripes.
+    for (let x = -4; x <= 4; x += 0.5) g.rect(X(x), 0, Math.max(1, S(0.16)), H).fill({ color: 0xffffff, alpha: 0.035 });
+    // The floor: boards.
+    const floor = Y(0);
+    g.rect(0, floor, W, H - floor).fill({ color: 0x6b4a2f });
+    g.rect(0, floor, W, Math.max(2, S(0.05))).fill({ color: 0x9a6e45 });
+    for (let y = floor + S(0.22); y < H; y += S(0.22)) g.rect(0, y, W, 1).fill({ color: 0x4a321e, alpha: 0.8 });
+    // Side walls: brick.
+    for (const side of [-1, 1]) {
+      const inner = X(side * ROOM_HALF_WIDTH);
+      const x0 = side < 0 ? 0 : inner,
+        x1 = side < 0 ? inner : W;
+      if (x1 <= x0) continue;
+      g.rect(x0, 0, x1 - x0, floor).fill({ color: 0x7d3f2e });
+      const bh = S(0.18),
+        bw = S(0.45);
+      let row = 0;
+      for (let y = floor; y > -bh; y -= bh, row++) {
+        g.rect(x0, y, x1 - x0, 1).fill({ color: 0x4b2219 });
+        for (let x = (side < 0 ? inner : inner) + (row % 2 ? bw / 2 : 0) * side; side < 0 ? x > x0 : x < x1; x += side * bw)
+          g.rect(x, y - bh, 1, bh).fill({ color: 0x4b2219 });
+      }
+      g.rect(side < 0 ? inner - 3 : inner, 0, 3, floor).fill({ color: 0x3a1a12, alpha: 0.6 });
+    }
+    // The beam the ropes hang from, and a brass ring at each anchor.
+    const top = Math.max(...level.anchors.map((a) => a[1]));
+    g.rect(X(-ROOM_HALF_WIDTH), Y(top + 0.45), X(ROOM_HALF_WIDTH) - X(-ROOM_HALF_WIDTH), S(0.35)).fill({ color: 0x5a3b22 });
+    g.rect(X(-ROOM_HALF_WIDTH), Y(top + 0.45), X(ROOM_HALF_WIDTH) - X(-ROOM_HALF_WIDTH), Math.max(2, S(0.06))).fill({ color: 0x7b5433 });
+    for (const [ax, ay] of level.anchors) {
+      g.rect(X(ax) - S(0.03), Y(top + 0.1), S(0.06), Y(ay) - Y(top + 0.1)).fill({ color: 0x8d8d8d });
+      g.circle(X(ax), Y(ay), S(0.09)).stroke({ width: Math.max(2, S(0.04)), color: 0xd4a537 });
+    }
+    // Blocks: stone.
+    for (const b of level.blocks ?? []) {
+      const x0 = X(b.at[0] - b.half[0]),
+        y0 = Y(b.at[1] + b.half[1]);
+      g.rect(x0, y0, S(2 * b.half[0]), S(2 * b.half[1]))
+        .fill({ color: 0x8a8f98 })
+        .stroke({ width: 2, color: 0x4d525a });
+      for (let y = y0 + S(0.3); y < Y(b.at[1] - b.half[1]); y += S(0.3)) g.rect(x0, y, S(2 * b.half[0]), 1).fill({ color: 0x5d626b });
+    }
+    // The basket: wicker, open at the top.
+    const [bx, by] = level.basket,
+      half = level.basketWidth / 2 + WALL,
+      depth = level.basketDepth;
+    const l = X(bx - half),
+      r = X(bx + half),
+      t = Y(by + depth),
+      b = Y(by);
+    g.poly([l, t, r, t, r - S(0.06), b, l + S(0.06), b])
+      .fill({ color: 0xb9853f })
+      .stroke({ width: 2, color: 0x6e4a1c });
+    for (let y = t + S(0.12); y < b; y += S(0.12)) g.moveTo(l + S(0.03), y).lineTo(r - S(0.03), y);
+    g.stroke({ width: Math.max(1, S(0.025)), color: 0x8a5f26 });
+    for (let x = l + S(0.1); x < r; x += S(0.14)) g.moveTo(x, t).lineTo(x, b);
+    g.stroke({ width: Math.max(1, S(0.018)), color: 0xd9a65a, alpha: 0.6 });
+    g.rect(l - S(0.03), t - S(0.05), r - l + S(0.06), S(0.1)).fill({ color: 0x8a5f26 });
+  }
+
+  destroy(): void {
+    this.container.destroy({ children: true });
+  }
+}

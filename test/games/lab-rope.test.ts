@@ -1,0 +1,140 @@
+/**
+ * The rope lab's levels, headless (games/lab-rope/scene.ts, cut.ts): each level can be won by cutting
+ * its ropes at the right times, a cut at a wrong time loses, a swipe cuts each rope it crosses once, a
+ * tap cuts the nearest rope within reach, and a cut rope is two chains that no link joins.
+ */
+import { isAlive, type PhysicsWorld, removeJoint, slotOf, step } from '@bitphysics/physics';
+import { describe, expect, it } from 'vitest';
+import { cutRopes } from '../../games/lab-rope/cut';
+import { createRopeScene, DEFAULTS, LEVELS, type Outcome, RopeGame, type RopeScene } from '../../games/lab-rope/scene';
+
+/** Cuts rope `rope` at its middle link. */
+function cutMiddle(s: RopeScene, rope: number): void {
+  const links = s.ropes[rope]!.links;
+  removeJoint(s.world, links[Math.floor(links.length / 2)]!);
+}
+
+/**
+ * Plays level `index`: cuts rope `rope` at time `t` (s) for each entry of `schedule`, after giving the
+ * ball a sideways push of `push` m/s at the start; at most 12 s. @returns the outcome and stars.
+ */
+function play(index: number, schedule: readonly (readonly [number, number])[], push = 0): { outcome: Outcome; stars: number } {
+  const s = createRopeScene(index, DEFAULTS);
+  const g = new RopeGame(s);
+  if (push) s.world.components.Velocity.x[slotOf(s.ball)] = push;
+  let k = 0;
+  for (let i = 0; i < 60 * 12 && g.outcome === 'playing'; i++) {
+    while (k < schedule.length && s.world.time >= schedule[k]![0]) cutMiddle(s, schedule[k++]![1]);
+    step(s.world);
+    g.update();
+  }
+  return { outcome: g.outcome, stars: g.stars() };
+}
+
+/** The ball's position, m. */
+function ballAt(world: PhysicsWorld, ball: number): [number, number] {
+  const e = slotOf(ball);
+  return [world.components.Position.x[e]!, world.components.Position.y[e]!];
+}
+
+describe('lab-rope levels', () => {
+  // Cut times found by a search over schedules (every 0.05 s): each listed schedule won with the
+  // stars given, in windows 0.3-0.6 s wide. Two times either side of each window's middle must win,
+  // so a small change in the physics (a step's rounding) does not fail the test, while a level that
+  // can no longer be won does. The losing times lie well outside the windows.
+  const cases: {
+    level: number;
+    win: (readonly [number, number])[][];
+    lose: (readonly [number, number])[];
+    push?: number;
+    losePush?: number;
+    stars: number;
+  }[] = [
+    // 1: cut at the end of the first swing, over the basket (won 1.5-1.95 s, 3 stars from 1.7 s).
+    { level: 0, win: [[[1.75, 0]], [[1.85, 0]]], lose: [[0.4, 0]], stars: 3 },
+    // 2: the left rope first, the right one 0.5-1.5 s later.
+    {
+      level: 1,
+      win: [
+        [
+          [0.5, 0],
+          [1.4, 1],
+        ],
+        [
+          [0.5, 0],
+          [1.7, 1],
+        ],
+      ],
+      lose: [
+        [0.5, 1],
+        [1.5, 0],
+      ],
+      stars: 3,
+    },
+    // 3: on the upswing, over the wall (won 1.1-1.45 s).
+    { level: 2, win: [[[1.25, 0]], [[1.35, 0]]], lose: [[0.3, 0]], stars: 3 },
+    // 4: right, middle, then the left one on the way back (won 4.0-4.6 s for the last cut).
+    {
+      level: 3,
+      win: [
+        [
+          [2.03, 2],
+          [2.36, 1],
+          [4.1, 0],
+        ],
+        [
+          [2.03, 2],
+          [2.36, 1],
+          [4.5, 0],
+        ],
+      ],
+      lose: [
+        [0.3, 0],
+        [0.6, 1],
+        [0.9, 2],
+      ],
+      stars: 3,
+    },
+    // 5: a push of 5 m/s, then a cut at 3.85-4.1 s; without a push the ball only drops short of the basket.
+    { level: 4, push: 5, win: [[[3.9, 0]], [[4.05, 0]]], lose: [[1, 0]], losePush: 0, stars: 3 },
+  ];
+  for (const c of cases)
+    it(`level ${c.level + 1} (${LEVELS[c.level]!.name}) is won by cutting at the right times, lost at a wrong one`, () => {
+      const results = c.win.map((w) => play(c.level, w, c.push ?? 0));
+      for (const r of results) expect(r.outcome).toBe('won');
+      expect(Math.max(...results.map((r) => r.stars))).toBe(c.stars);
+      expect(play(c.level, c.lose, c.losePush ?? c.push ?? 0).outcome).toBe('lost');
+    });
+
+  it('a swipe cuts each rope it crosses once; a tap cuts the nearest rope within reach, and nothing beyond it', () => {
+    const s = createRopeScene(3, DEFAULTS);
+    const { world, ropes, ball } = s;
+    // A horizontal swipe across the whole room at the height of the ropes' middles crosses all three.
+    const y = 7.6;
+    const made = cutRopes(world, ropes, ball, -2.6, y, 2.6, y);
+    expect(made.map((c) => c.rope).sort()).toEqual([0, 1, 2]);
+    for (const r of ropes) expect(r.links.filter((l) => !isAlive(world, l)).length).toBe(1);
+    // A tap 0.1 m beside the middle of a fresh level 1's rope cuts it within a 0.15 m reach, not within 0.05 m.
+    const t = createRopeScene(0, DEFAULTS);
+    const mid = t.ropes[0]!.bodies[Math.floor(t.ropes[0]!.bodies.length / 2)]!;
+    const [mx, my] = ballAt(t.world, mid);
+    expect(cutRopes(t.world, t.ropes, t.ball, mx + 0.1, my, mx + 0.1, my, 0.05)).toEqual([]);
+    expect(cutRopes(t.world, t.ropes, t.ball, mx + 0.1, my, mx + 0.1, my, 0.15).length).toBe(1);
+  });
+
+  it('a cut rope is two chains: the piece on the ball falls with it, the other hangs from the anchor', () => {
+    const s = createRopeScene(0, DEFAULTS);
+    for (let i = 0; i < 30; i++) step(s.world);
+    cutMiddle(s, 0);
+    const rope = s.ropes[0]!;
+    const cut = rope.links.findIndex((l) => !isAlive(s.world, l));
+    for (let i = 0; i < 60; i++) step(s.world);
+    // The two bodies the cut link joined are now far apart (the rope's links are 0.125 m long): the
+    // lower piece fell with the ball, the upper one hangs from the anchor.
+    const above = ballAt(s.world, rope.bodies[cut - 1]!),
+      below = ballAt(s.world, rope.bodies[cut]!);
+    expect(Math.hypot(above[0] - below[0], above[1] - below[1])).toBeGreaterThan(1);
+    const anchor = rope.anchor;
+    expect(Math.hypot(above[0] - anchor[0], above[1] - anchor[1])).toBeLessThan(rope.links.length * 0.2);
+  });
+});
