@@ -1,74 +1,131 @@
 /**
- * Lab: cloth (Ramtal and Dobre ch. 13). A grid of point masses joined by structural, shear and
- * bending links (createCloth; the XPBD cloth solver in small steps), pinned along its top edge, in
- * the world's wind with turbulence (drag on each point against the wind). Drawn as a textured mesh
- * (ClothLayer); torn cells disappear, and torn pieces fall to the floor of the room (the world's
- * boundary box), where the wind drives them to the right wall.
+ * Lab: cloth (Ramtal and Dobre ch. 13). A sheet on a washing line in a breeze: a grid of point masses
+ * joined by compliant structural, soft shear and bending links (createCloth; the XPBD cloth solver in
+ * small steps), pegged at a few points along its top (scene.ts), in the world's wind (drag on each
+ * point against a breeze that rises and falls, with turbulence). It sways and leans in the gusts,
+ * stretches where it is pulled and tears where a link is stretched past the tear strain; torn-off
+ * pieces flutter down to the lawn.
  *
- * Input: press on the cloth and drag: the hand grips the patch under the pointer softly (scene.ts'
- * ClothGrab: a spring of bounded force on each point within 0.35 m), so a gentle pull stretches and
- * swings the sheet, and a hard or fast one tears links stretched past the tear strain. Keys: P pause,
- * N step, R reset. URL: ?size (4-64 points a side), ?wind (0-20 m/s), ?tear (0.05-2).
+ * The challenge: cut out the three shapes printed on the sheet (pattern.ts) along their dashed lines.
+ *
+ * Input: drag with the scissors to cut every link the stroke crosses (cut.ts); drag with the hand to
+ * take hold of the sheet and pull it (grab.ts: a soft grip, so it stretches before it tears). The tool
+ * buttons under the scene switch (key C); a right-button drag always cuts. Hold Gust (key G) to blow.
+ * Keys: P pause, N step, R new sheet. URL: ?size (8-48 points across), ?wind (0-10 m/s), ?gusts
+ * (0-5 m/s), ?tear (0.1-2).
  */
 
-import { createPanel, numberParam, pointerOnCanvas } from '@bitphysics/game-kit';
-import { createLabDock, createReadout, fmt, followView, readUrlParams } from '@bitphysics/game-kit/lab-kit';
+import { createActionButton, createButtonBar, createPanel, getSound, numberParam, pointerOnCanvas } from '@bitphysics/game-kit';
+import { createLabDock, createReadout, createStatusLine, fmt, followView, readUrlParams } from '@bitphysics/game-kit/lab-kit';
 import { startPixiGame } from '@bitphysics/game-kit/pixi';
 import { createPlot } from '@bitphysics/game-kit/plot';
-import { type Cloth, type PhysicsWorld, step as physicsStep, query, removeBody, slotOf } from '@bitphysics/physics';
-import { ClothLayer, type WorldRect } from '@bitphysics/render-pixi';
-import { Graphics } from 'pixi.js';
-import { applyWind as applySceneWind, CLOTH_SUBSTEPS, ClothGrab, createClothScene, gripFor, ROOM, SIDE } from './scene';
+import { type Cloth, type PhysicsWorld, step as physicsStep, query, removeJoint, slotOf, windAt } from '@bitphysics/physics';
+import type { WorldRect } from '@bitphysics/render-pixi';
+import { Container, Graphics, Text } from 'pixi.js';
+import { ClothCells } from './cells';
+import { cutAlong } from './cut';
+import { fabricTexture } from './fabric';
+import { ClothGrab, gripFor } from './grab';
+import { Challenge, type CutOut, SHAPES } from './pattern';
+import { applyWind, CLOTH_SUBSTEPS, createClothScene, DEFAULTS, LINE_Y, SHEET_WIDTH, SHEETS, sheetGrid, YARD } from './scene';
+import { SheetView } from './sheet-view';
+import { Yard } from './yard';
 
-const USAGE = 'Accepted: size 4-64 points a side; wind 0-20 m/s; tear 0.05-2 (strain).';
+const USAGE = 'Accepted: size 8-48 points across; wind 0-10 m/s; gusts 0-5 m/s; tear 0.1-2 (strain).';
 const url = readUrlParams(
   () => ({
-    size: numberParam('size', { default: 32, min: 4, max: 64, integer: true }),
-    wind: numberParam('wind', { default: 7, min: 0, max: 20 }),
-    // 0.3: at 24 substeps the default wind stretches the upwind top corner 9% and a 12 m/s gale 15%;
-    // a slow 1.25 m pull tears nothing (at 0.2 it tore up to 369 links), a 2.4 m pull or a fast yank
-    // tears the sheet (scene.ts GRAB).
-    tear: numberParam('tear', { default: 0.3, min: 0.05, max: 2 }),
+    size: numberParam('size', { default: DEFAULTS.size, min: 8, max: 48, integer: true }),
+    wind: numberParam('wind', { default: DEFAULTS.wind, min: 0, max: 10 }),
+    gusts: numberParam('gusts', { default: DEFAULTS.gusts, min: 0, max: 5 }),
+    tear: numberParam('tear', { default: DEFAULTS.tear, min: 0.1, max: 2 }),
   }),
   USAGE,
 );
-const params = { ...url, turbulence: 1.5, substeps: CLOTH_SUBSTEPS, reset: () => shell.reset() };
+const params = { ...url, substeps: CLOTH_SUBSTEPS, reset: () => shell.reset() };
+/** Which of SHEETS is up (0-based); the URL's wind and gusts hold for the first. */
+let sheetIndex = 0;
+/** Stars won on each sheet (-1: not finished). */
+const sheetStars = SHEETS.map(() => -1);
 
-const view: WorldRect = { minX: ROOM.minX, minY: ROOM.minY - 0.3, maxX: ROOM.maxX, maxY: SIDE + 0.6 };
-let cloth: Cloth;
-/** The hand's grip while the pointer holds the cloth. */
-let grab: ClothGrab | null = null;
-let torn = 0;
-let stepMs = 0;
+/** How much the Gust button adds to the wind, m/s, and how fast it comes and goes (1/s). */
+const GUST = 5,
+  GUST_RATE = 2.5;
 
-function applyWind(world: PhysicsWorld): void {
-  applySceneWind(world, params);
+/** What the camera shows: the yard with a strip of each wall, the lawn (the shapes' card lies on it) and the sky over the line. */
+const view: WorldRect = { minX: YARD.minX - 0.25, minY: -0.65, maxX: YARD.maxX + 0.25, maxY: LINE_Y + 0.55 };
+
+/** Floating words over the scene: a shape cut out, with its fit and stars. */
+interface Label {
+  /** The words and the stars under them. */
+  text: Container;
+  x: number;
+  y: number;
+  born: number;
 }
+const labels: Label[] = [];
+const LABEL_LIFE = 2.6;
+
+let cloth: Cloth;
+let cells: ClothCells;
+let challenge: Challenge;
+let sheet: SheetView | null = null;
+let grab: ClothGrab | null = null;
+/** Links torn by strain, and cut by the scissors, since the reset. */
+let torn = 0,
+  cut = 0;
+let stepMs = 0;
+/** The gust the player blows, 0 to 1 (eased toward `blowing`). */
+let blow = 0,
+  blowing = false;
 
 function createWorld(): PhysicsWorld {
   const scene = createClothScene(params);
   cloth = scene.cloth;
+  cells = new ClothCells(cloth);
+  challenge = new Challenge(scene.world, cloth, cells);
   grab = null;
   torn = 0;
+  cut = 0;
+  blow = 0;
   plot?.clear();
+  for (const l of labels.splice(0)) l.text.destroy({ children: true });
   return scene.world;
 }
 
 let plot: ReturnType<typeof createPlot> | null = null;
+const wind = new Float64Array(3);
+const sound = getSound();
 
 function labStep(world: PhysicsWorld): void {
+  const target = blowing ? 1 : 0;
+  if (blow !== target) {
+    blow = target > blow ? Math.min(1, blow + GUST_RATE * world.dt) : Math.max(0, blow - GUST_RATE * world.dt);
+    applyWind(world, params, GUST * blow);
+  }
   const t0 = performance.now();
   physicsStep(world);
   stepMs = performance.now() - t0;
-  torn += world.joints.breaks.count;
-  plot?.push(world.time, world.cloth.maxStretch * 100, stepMs);
+  const broke = world.joints.breaks.count;
+  if (broke > 0) {
+    torn += broke;
+    ripped += broke;
+  }
+  cells.loosen(world);
+  announce(challenge.update());
+  windAt(world, 2, 3, 0, world.time, wind);
+  plot?.push(world.time, (sheet?.shownStretch ?? 0) * 100, wind[0]!);
 }
 
 const game = await startPixiGame({
   title: 'Cloth',
   createWorld,
   step: labStep,
-  controls: [{ keys: 'Drag', action: 'pull the cloth (a hard or fast pull tears it)' }],
+  controls: [
+    { keys: 'Drag', action: 'cut with the scissors, or pull with the hand (a long pull tears)' },
+    { keys: 'C', action: 'scissors / hand', touch: 'Scissors / Hand' },
+    { keys: 'G (hold)', action: 'a gust of wind', touch: 'Gust (hold)' },
+    { keys: 'Right drag', action: 'cut, with either tool', touch: '' },
+  ],
   renderer: { view },
   onFrame: (alpha, world) => draw(alpha, world),
 });
@@ -76,22 +133,29 @@ const { shell, renderer, app } = game;
 const dock = createLabDock();
 followView(app, renderer.camera, dock, () => view);
 
-createPanel(
+const panel = createPanel(
   params,
   [
-    { type: 'slider', key: 'size', label: 'points a side', min: 4, max: 64, step: 1, onRelease: true, onChange: () => shell.reset() },
-    { type: 'slider', key: 'wind', label: 'wind (m/s)', min: 0, max: 20, step: 0.1, onChange: () => applyWind(shell.world) },
-    { type: 'slider', key: 'turbulence', label: 'turbulence (m/s RMS)', min: 0, max: 5, step: 0.1, onChange: () => applyWind(shell.world) },
+    { type: 'slider', key: 'size', label: 'points across', min: 8, max: 48, step: 1, onRelease: true, onChange: () => shell.reset() },
     {
       type: 'slider',
-      key: 'tear',
-      label: 'tears at strain',
-      min: 0.05,
-      max: 2,
-      step: 0.01,
-      onRelease: true,
-      onChange: () => shell.reset(),
+      key: 'wind',
+      label: 'breeze (m/s)',
+      min: 0,
+      max: 10,
+      step: 0.1,
+      onChange: () => applyWind(shell.world, params, GUST * blow),
     },
+    {
+      type: 'slider',
+      key: 'gusts',
+      label: 'gusts (m/s)',
+      min: 0,
+      max: 5,
+      step: 0.1,
+      onChange: () => applyWind(shell.world, params, GUST * blow),
+    },
+    { type: 'slider', key: 'tear', label: 'tears at strain', min: 0.1, max: 2, step: 0.01, onRelease: true, onChange: () => shell.reset() },
     {
       type: 'slider',
       key: 'substeps',
@@ -103,129 +167,425 @@ createPanel(
         shell.world.cloth.substeps = v as number;
       },
     },
-    { type: 'button', key: 'reset', label: 'new cloth (R)' },
+    { type: 'button', key: 'reset', label: 'new sheet (R)' },
   ],
   { title: 'Cloth', container: dock.panelSlot },
 );
-const readout = createReadout(shell.hud.readout, ['points', 'links', 'torn', 'largest stretch', 'step time']);
+const readout = createReadout(shell.hud.readout, [
+  'links',
+  'torn',
+  'cut',
+  'pieces off',
+  'largest stretch',
+  'wind at the sheet',
+  'step time',
+]);
 plot = createPlot({
   parent: dock.charts,
-  title: 'Stretch and step time',
-  yLabel: '% / ms',
+  title: 'Stretch and wind',
+  yLabel: '% / m/s',
   width: dock.chartWidth,
   height: 200,
   capacity: 1200,
   series: [
     { label: 'largest stretch (%)', color: '#e76f51' },
-    { label: 'step (ms)', color: '#98a2b3' },
+    { label: 'wind at the sheet (m/s)', color: '#4cc9f0' },
   ],
 });
 
-// Drag: the hand grips the cloth around the press (ClothGrab) and follows the pointer until release.
+// The challenge's line above the scene, and a button for a new sheet once it is done.
+const status = createStatusLine();
+const showNext = createActionButton('Next sheet ▶', () => nextSheet());
+
+/** Hangs the next sheet (after the last, the first again) in its breeze. */
+function nextSheet(): void {
+  sheetIndex = (sheetIndex + 1) % SHEETS.length;
+  params.wind = SHEETS[sheetIndex]!.wind;
+  params.gusts = SHEETS[sheetIndex]!.gusts;
+  panel.refresh();
+  shell.reset();
+}
+
+function announce(fresh: CutOut[]): void {
+  for (const d of fresh) {
+    const at = challenge.centre(d.piece, [0, 0]);
+    const name = SHAPES[d.shape]!.name;
+    const text = new Container({ label: 'cut out' });
+    const words = new Text({
+      text: `${name[0]!.toUpperCase()}${name.slice(1)}: ${Math.round(d.fit * 100)}%`,
+      style: { fill: 0xffffff, fontSize: 22, fontFamily: 'sans-serif', fontWeight: 'bold', stroke: { color: 0x1b2430, width: 5 } },
+    });
+    words.anchor.set(0.5, 1);
+    words.y = -30;
+    text.addChild(words, starRow(d.stars, 13));
+    labelLayer.addChild(text);
+    labels.push({ text, x: at[0], y: at[1] + 0.4, born: performance.now() / 1000 });
+    sound.chime(d.stars === 3 ? 1046 : d.stars === 2 ? 880 : 660, 0.5);
+  }
+}
+
+/** Three stars in a row centred on (0, -14), `won` of them gold, each `r` px across its points. */
+function starRow(won: number, r: number): Graphics {
+  const g = new Graphics();
+  for (let k = 0; k < 3; k++) {
+    const cx = (k - 1) * 2.3 * r,
+      cy = -r - 1;
+    const pts: number[] = [];
+    for (let i = 0; i < 10; i++) {
+      const a = -Math.PI / 2 + (Math.PI * i) / 5,
+        rr = i % 2 ? r * 0.45 : r;
+      pts.push(cx + rr * Math.cos(a), cy + rr * Math.sin(a));
+    }
+    g.poly(pts)
+      .fill({ color: k < won ? 0xffd23f : 0x3a4456 })
+      .stroke({ width: 2, color: 0x1b2430 });
+  }
+  return g;
+}
+
+// Tools: the scissors cut, the hand pulls; Gust blows while held.
+type Tool = 'cut' | 'pull';
+let tool: Tool = 'cut';
+const ICON_SCISSORS =
+  '<svg viewBox="0 0 24 24" width="20" height="20" aria-hidden="true" style="vertical-align:-4px"><g fill="none" stroke="currentColor" stroke-width="2"><circle cx="6" cy="6" r="3"/><circle cx="6" cy="18" r="3"/><path d="M8.5 7.5L20 18M8.5 16.5L20 6"/></g></svg>';
+const ICON_HAND =
+  '<svg viewBox="0 0 24 24" width="20" height="20" aria-hidden="true" style="vertical-align:-4px"><path d="M8 12V5a1.5 1.5 0 0 1 3 0v6M11 11V3.5a1.5 1.5 0 0 1 3 0V11M14 11V5a1.5 1.5 0 0 1 3 0v7M17 10.5a1.5 1.5 0 0 1 3 0V15a7 7 0 0 1-7 7h-1a7 7 0 0 1-5.6-2.8L3 15.5a1.6 1.6 0 0 1 2.5-2L8 16V12" fill="none" stroke="currentColor" stroke-width="1.8" stroke-linejoin="round"/></svg>';
+const ICON_WIND =
+  '<svg viewBox="0 0 24 24" width="20" height="20" aria-hidden="true" style="vertical-align:-4px"><path d="M3 8h11a3 3 0 1 0-3-3M3 12h16a3 3 0 1 1-3 3M3 16h8" fill="none" stroke="currentColor" stroke-width="2" stroke-linecap="round"/></svg>';
+const tools = createButtonBar(
+  [
+    { label: 'Scissors', name: 'scissors: drag to cut (C)', onTap: () => setTool('cut'), accent: '#ffd166' },
+    { label: 'Hand', name: 'hand: drag to pull (C)', onTap: () => setTool('pull'), accent: '#ffd166' },
+    {
+      label: 'Gust',
+      name: 'gust of wind (hold G)',
+      onPress: () => setBlowing(true),
+      onRelease: () => setBlowing(false),
+      accent: '#8ecbff',
+    },
+  ],
+  { label: 'tools', touchOnly: false },
+);
+tools.buttons[0]!.innerHTML = `${ICON_SCISSORS} Scissors`;
+tools.buttons[1]!.innerHTML = `${ICON_HAND} Hand`;
+tools.buttons[2]!.innerHTML = `${ICON_WIND} Gust`;
+function setTool(t: Tool): void {
+  tool = t;
+  tools.setActive(0, t === 'cut');
+  tools.setActive(1, t === 'pull');
+  tools.buttons[0]!.setAttribute('aria-pressed', String(t === 'cut'));
+  tools.buttons[1]!.setAttribute('aria-pressed', String(t === 'pull'));
+  app.canvas.style.cursor = t === 'cut' ? 'crosshair' : 'grab';
+}
+function setBlowing(on: boolean): void {
+  if (on && !blowing) sound.launch(0.7);
+  blowing = on;
+}
+setTool('cut');
+window.addEventListener('keydown', (e) => {
+  if (e.ctrlKey || e.metaKey || e.altKey) return;
+  const k = e.key.toLowerCase();
+  if (k === 'c' && !e.repeat) setTool(tool === 'cut' ? 'pull' : 'cut');
+  if (k === 'g') setBlowing(true);
+});
+window.addEventListener('keyup', (e) => {
+  if (e.key.toLowerCase() === 'g') setBlowing(false);
+});
+window.addEventListener('blur', () => setBlowing(false));
+
+// The pointer: a scissors stroke cuts the links it crosses, a hand grips the cloth and pulls.
 const canvas = app.canvas;
+canvas.addEventListener('contextmenu', (e) => e.preventDefault());
 const at = { x: 0, y: 0 };
 const pointerWorld = (e: PointerEvent): [number, number] => {
   pointerOnCanvas(canvas, e, at);
   return [renderer.camera.toWorldX(at.x), renderer.camera.toWorldY(at.y)];
 };
+/** The scissors' stroke while cutting: the last point, m, and the recent points for the drawn slash (screen px, time s). */
+let stroke: { x: number; y: number; id: number } | null = null;
+const slash: { x: number; y: number; t: number }[] = [];
+/** Links cut since the last snip sound, and torn since the last rip sound. */
+let snipped = 0,
+  ripped = 0,
+  lastSnip = 0,
+  lastRip = 0;
 canvas.addEventListener('pointerdown', (e) => {
-  if (e.button !== 0) return;
+  if (e.button !== 0 && e.button !== 2) return;
   const [x, y] = pointerWorld(e);
   grab?.release();
-  grab = ClothGrab.at(shell.world, cloth, x, y, gripFor(params.size));
-  if (grab) canvas.setPointerCapture(e.pointerId);
+  grab = null;
+  stroke = null;
+  if (tool === 'cut' || e.button === 2) {
+    stroke = { x, y, id: e.pointerId };
+    slash.length = 0;
+    slash.push({ x: at.x, y: at.y, t: performance.now() / 1000 });
+  } else grab = ClothGrab.at(shell.world, cloth, x, y, gripFor(params.size));
+  if (stroke || grab) canvas.setPointerCapture(e.pointerId);
 });
 canvas.addEventListener('pointermove', (e) => {
-  if (grab) grab.moveTo(...pointerWorld(e));
+  const [x, y] = pointerWorld(e);
+  if (stroke && e.pointerId === stroke.id) {
+    const cutHere = cutAlong(shell.world, stroke.x, stroke.y, x, y);
+    stroke.x = x;
+    stroke.y = y;
+    slash.push({ x: at.x, y: at.y, t: performance.now() / 1000 });
+    if (cutHere.length > 0) {
+      cut += cutHere.length / 2;
+      snipped += cutHere.length / 2;
+      cells.loosen(shell.world);
+      announce(challenge.update());
+    }
+  } else if (grab) grab.moveTo(x, y);
 });
 const release = (): void => {
   grab?.release();
   grab = null;
+  stroke = null;
 };
 canvas.addEventListener('pointerup', release);
 canvas.addEventListener('pointercancel', release);
 shell.onWorldChange(() => {
   grab = null;
+  stroke = null;
 });
 
-/** The hand: a ring at the pointer and a cord to the middle of the held patch, brighter the harder it pulls. */
+/** Plays the snip and rip sounds for what was cut and torn since the last frame (at most one of each per 60 ms). */
+function playSounds(): void {
+  const now = performance.now();
+  if (snipped > 0 && now - lastSnip > 60) {
+    sound.snap(Math.min(1, 0.25 + snipped / 30));
+    snipped = 0;
+    lastSnip = now;
+  }
+  if (ripped > 0 && now - lastRip > 90) {
+    sound.rip(Math.min(1, 0.3 + ripped / 40));
+    ripped = 0;
+    lastRip = now;
+  }
+}
+
+// Drawing: the yard behind, the sheet, then the pegs, the hand, the slash, the wind and the labels.
+const yard = new Yard();
+const pegs = new Graphics({ label: 'pegs' });
 const hand = new Graphics({ label: 'hand' });
-function drawHand(world: PhysicsWorld): void {
-  hand.clear();
-  if (!grab) return;
+const overlay = new Graphics({ label: 'overlay' });
+const labelLayer = new Container({ label: 'labels' });
+const card = new Graphics({ label: 'card' });
+renderer.root.addChildAt(yard.back, 0);
+// The yard draws the boundary box as the lawn and the walls: the renderer's outline of it is hidden.
+const outline = renderer.root.getChildByLabel('walls');
+if (outline) outline.visible = false;
+renderer.root.addChild(pegs, hand, yard.front, card, overlay, labelLayer);
+
+/** Wooden clothes pegs at the pegged points. */
+function drawPegs(world: PhysicsWorld): void {
   const cam = renderer.camera,
     P = world.components.Position;
-  let x = 0,
-    y = 0;
-  for (let i = 0; i < grab.points.length; i++) {
-    const e = slotOf(grab.points[i]!);
-    x += grab.weights[i]! * P.x[e]!;
-    y += grab.weights[i]! * P.y[e]!;
+  pegs.clear();
+  const w = Math.max(3, cam.toScreenLength(0.07)),
+    h = Math.max(8, cam.toScreenLength(0.24));
+  for (const e of pegPoints) {
+    const x = cam.toScreenX(P.x[e]!),
+      y = cam.toScreenY(P.y[e]!);
+    pegs
+      .roundRect(x - w / 2, y - h * 0.45, w, h, w / 2)
+      .fill({ color: 0xc89a5b })
+      .stroke({ width: 1, color: 0x7a5530 });
+    pegs.rect(x - w / 2, y - h * 0.1, w, Math.max(1, h * 0.08)).fill({ color: 0x9aa3ad });
   }
+}
+let pegPoints: number[] = [];
+
+/** The hand: a ring at the pointer and a cord to the held patch, brighter the harder it pulls. */
+function drawHand(): void {
+  hand.clear();
+  if (!grab) return;
+  const cam = renderer.camera;
+  const [x, y] = grab.patch([0, 0]);
   const pull = Math.min(1, grab.force() / grab.options.maxForce);
   const hx = cam.toScreenX(grab.hand[0]),
     hy = cam.toScreenY(grab.hand[1]);
   hand
     .moveTo(cam.toScreenX(x), cam.toScreenY(y))
     .lineTo(hx, hy)
-    .stroke({ width: 2, color: 0xffd166, alpha: 0.35 + 0.6 * pull });
-  hand.circle(cam.toScreenX(x), cam.toScreenY(y), 3).fill({ color: 0xffd166, alpha: 0.8 });
-  hand.circle(hx, hy, 9).stroke({ width: 2, color: 0xffd166, alpha: 0.9 });
+    .stroke({ width: 2 + 3 * pull, color: pull > 0.7 ? 0xff6b4a : 0xffd166, alpha: 0.5 + 0.5 * pull });
+  hand.circle(cam.toScreenX(x), cam.toScreenY(y), 4).fill({ color: 0xffd166 });
+  hand.circle(hx, hy, 11).stroke({ width: 3, color: 0x1b2430, alpha: 0.6 });
+  hand.circle(hx, hy, 11).stroke({ width: 2, color: 0xffd166 });
 }
 
-/** The floor the torn pieces land on (the boundary box's, scene.ts ROOM) and the rod the sheet is pinned to, drawn below the sheet. */
-const floor = new Graphics({ label: 'floor' });
-function drawFloor(): void {
+/** The scissors' slash: the last 0.3 s of the stroke, fading. */
+function drawSlash(now: number): void {
+  while (slash.length > 0 && now - slash[0]!.t > 0.3) slash.shift();
+  overlay.clear();
+  for (let i = 1; i < slash.length; i++) {
+    const a = slash[i - 1]!,
+      b = slash[i]!;
+    const fade = 1 - (now - b.t) / 0.3;
+    overlay
+      .moveTo(a.x, a.y)
+      .lineTo(b.x, b.y)
+      .stroke({ width: 6 * fade + 1, color: 0xffffff, alpha: 0.25 * fade, cap: 'round' });
+    overlay
+      .moveTo(a.x, a.y)
+      .lineTo(b.x, b.y)
+      .stroke({ width: 2, color: 0xffffff, alpha: 0.9 * fade, cap: 'round' });
+  }
+}
+
+/** Moves the floating labels up as they fade. */
+function drawLabels(now: number): void {
   const cam = renderer.camera;
-  const x0 = cam.toScreenX(ROOM.minX - 50),
-    x1 = cam.toScreenX(ROOM.maxX + 50),
-    top = cam.toScreenY(ROOM.minY),
-    bottom = cam.toScreenY(ROOM.minY - 50);
-  floor.clear();
-  floor.rect(x0, top, x1 - x0, bottom - top).fill({ color: 0x2b2f36 });
-  floor.moveTo(x0, top).lineTo(x1, top).stroke({ width: 2, color: 0x5c6370 });
-  const rodY = cam.toScreenY(SIDE);
-  floor
-    .moveTo(cam.toScreenX(-0.25), rodY)
-    .lineTo(cam.toScreenX(SIDE + 0.25), rodY)
-    .stroke({ width: 6, color: 0x8a8f98, cap: 'round' });
+  for (let i = labels.length - 1; i >= 0; i--) {
+    const l = labels[i]!;
+    const age = now - l.born;
+    if (age > LABEL_LIFE) {
+      l.text.destroy({ children: true });
+      labels.splice(i, 1);
+      continue;
+    }
+    const half = l.text.width / 2 + 6;
+    l.text.x = Math.min(Math.max(cam.toScreenX(l.x), half), cam.width - half);
+    l.text.y = Math.max(cam.toScreenY(l.y) - 30 * age, 64);
+    l.text.alpha = Math.min(1, 3 * (1 - age / LABEL_LIFE));
+  }
 }
 
-let layer: ClothLayer | null = null;
+/**
+ * The card on the lawn: the three shapes, each drawn in its colour once cut out (an outline while
+ * still to cut), with its stars under it.
+ */
+function drawCard(): void {
+  const cam = renderer.camera;
+  card.clear();
+  const size = Math.min(30, cam.toScreenLength(0.32)),
+    gap = size * 2.6;
+  const cy = cam.toScreenY(-0.3) - size * 0.1,
+    cx = cam.toScreenX((YARD.minX + YARD.maxX) / 2);
+  card.roundRect(cx - 1.5 * gap, cy - size * 0.75, 3 * gap, size * 1.9, 8).fill({ color: 0x1b2430, alpha: 0.55 });
+  SHAPES.forEach((shape, i) => {
+    const x = cx + (i - 1) * gap,
+      y = cy - size * 0.05;
+    const o = shape.outline;
+    let mx = 0,
+      my = 0;
+    for (let k = 0; k < o.length; k += 2) {
+      mx += o[k]!;
+      my += o[k + 1]!;
+    }
+    mx /= o.length / 2;
+    my /= o.length / 2;
+    const scale = (size * 0.5) / 0.6;
+    const pts: number[] = [];
+    for (let k = 0; k < o.length; k += 2) pts.push(x + (o[k]! - mx) * scale, y + (o[k + 1]! - my) * scale);
+    const done = challenge.done.find((d) => d.shape === i);
+    if (done) card.poly(pts).fill({ color: shape.color }).stroke({ width: 2, color: 0xffffff });
+    else card.poly(pts).stroke({ width: 2, color: 0xffffff, alpha: 0.8 });
+    for (let k = 0; k < 3; k++) {
+      const sx = x + (k - 1) * size * 0.42,
+        sy = y + size * 0.78,
+        r = size * 0.17;
+      const star: number[] = [];
+      for (let j = 0; j < 10; j++) {
+        const a = -Math.PI / 2 + (Math.PI * j) / 5,
+          rr = j % 2 ? r * 0.45 : r;
+        star.push(sx + rr * Math.cos(a), sy + rr * Math.sin(a));
+      }
+      card.poly(star).fill({ color: done && k < done.stars ? 0xffd23f : 0x55617a });
+    }
+  });
+}
+
+/** The status line: what to do, and how it went. */
+function updateStatus(): void {
+  const done = challenge.done;
+  const sheet = `Sheet ${sheetIndex + 1} of ${SHEETS.length}, ${SHEETS[sheetIndex]!.name}`;
+  if (challenge.finished()) {
+    sheetStars[sheetIndex] = Math.max(sheetStars[sheetIndex]!, challenge.stars());
+    const last = sheetIndex === SHEETS.length - 1;
+    status.set(
+      last
+        ? `All sheets cut: ${sheetStars.reduce((a, b) => a + Math.max(0, b), 0)} of ${9 * SHEETS.length} stars.`
+        : `${sheet}: all three cut out, ${challenge.stars()} of 9 stars. Next: ${SHEETS[sheetIndex + 1]!.name}.`,
+    );
+    showNext(true, last ? 'Start again ▶' : 'Next sheet ▶');
+    return;
+  }
+  showNext(false);
+  if (done.length === 0) {
+    status.set(`${sheet}: cut out the circle, the star and the heart along their dashed lines.`);
+    return;
+  }
+  const last = done[done.length - 1]!;
+  const left = challenge.pending().map((i) => SHAPES[i]!.name);
+  status.set(
+    `${SHAPES[last.shape]!.name}: ${Math.round(last.fit * 100)}% ${'★'.repeat(last.stars)}${'☆'.repeat(3 - last.stars)} · still to cut: ${left.join(', ')}`,
+  );
+}
+
+let lastFrame = performance.now() / 1000;
 let layerWorld: PhysicsWorld | null = null;
 function draw(alpha: number, world: PhysicsWorld): void {
+  const now = performance.now() / 1000;
+  const dt = shell.paused ? 0 : Math.min(0.05, now - lastFrame);
+  lastFrame = now;
   if (layerWorld !== world) {
-    layer?.destroy();
-    layer = new ClothLayer(world, cloth);
-    renderer.root.addChildAt(layer.mesh, 0);
-    if (!floor.parent) renderer.root.addChildAt(floor, 0);
-    if (!hand.parent) renderer.root.addChild(hand);
+    sheet?.destroy();
+    const grid = sheetGrid(params.size);
+    sheet = new SheetView(world, cloth, cells, fabricTexture(SHEET_WIDTH, grid.height, grid.spacing * 1.5), grid.spacing);
+    renderer.root.addChildAt(sheet.container, 1);
+    pegPoints = [];
+    const inv = world.components.Mass.inv;
+    for (let c = 0; c < cloth.columns; c++) {
+      const e = slotOf(cloth.points[c]!);
+      if (!(inv[e]! > 0)) pegPoints.push(e);
+    }
     layerWorld = world;
   }
-  layer!.update(renderer.camera, alpha);
-  drawFloor();
-  drawHand(world);
-  readout.set(0, String(cloth.points.length));
-  readout.set(1, String(query(world, [world.components.ClothLink]).length));
-  readout.set(2, String(torn));
-  readout.set(3, `${fmt(world.cloth.maxStretch * 100)} %`);
-  readout.set(4, `${fmt(stepMs)} ms`);
+  yard.update(world, renderer.camera, dt, app.screen.width, app.screen.height);
+  sheet!.update(renderer.camera, alpha);
+  drawPegs(world);
+  drawHand();
+  drawSlash(now);
+  drawLabels(now);
+  drawCard();
+  playSounds();
+  updateStatus();
+  const links = query(world, [world.components.ClothLink]).length;
+  readout.set(0, String(links));
+  readout.set(1, String(torn));
+  readout.set(2, String(cut));
+  readout.set(3, String(challenge.scraps));
+  readout.set(4, `${fmt(sheet!.shownStretch * 100, 3)} %`);
+  windAt(world, 2, 3, 0, world.time, wind);
+  readout.set(5, `${fmt(wind[0]!, 2)} m/s`);
+  readout.set(6, `${fmt(stepMs, 3)} ms`);
 }
-
 shell.expose({
   params,
   plot,
   /** The cloth's point and link handles. */
   cloth: () => cloth,
+  /** The current tool ('cut' or 'pull'). */
+  tool: () => tool,
   /** The hand's grip while the pointer holds the cloth, else null. */
   grab: () => grab,
-  /** Links left, and links torn since the reset. */
+  /** Links left, links torn by strain and cut by the scissors since the reset. */
   links: () => query(shell.world, [shell.world.components.ClothLink]).length,
   torn: () => torn,
-  /** Triangles the cloth layer draws (see ClothLayer.triangles). */
-  triangles: () => layer?.triangles ?? 0,
-  /** Tears one link (a link handle of `cloth().links`) as a strain past the tear would (tests). */
-  removeLink: (h: number) => removeBody(shell.world, h),
+  cut: () => cut,
+  /** The challenge: shapes cut out ({ shape, fit, stars }), and pieces that came away. */
+  cutOuts: () => challenge.done.map((d) => ({ shape: SHAPES[d.shape]!.name, fit: d.fit, stars: d.stars })),
+  scraps: () => challenge.scraps,
+  /** The gust the player blows, 0 to 1. */
+  gust: () => blow,
+  /** Triangles the sheet is drawn with, and the largest stretch it shows (a strain). */
+  triangles: () => sheet?.triangles ?? 0,
+  shownStretch: () => sheet?.shownStretch ?? 0,
+  /** Wind streaks drawn in the last frame. */
+  streaks: () => yard.streaksDrawn,
+  /** Removes one link (a link handle of `cloth().links`), as a tear would (tests). */
+  removeLink: (h: number) => removeJoint(shell.world, h),
   /** Runs the lab's step n times (tests). */
   advance: (n: number) => {
     for (let i = 0; i < n; i++) labStep(shell.world);

@@ -1,203 +1,200 @@
 /**
- * The cloth lab's scene, headless: the sheet (createCloth pinned along its top edge, in wind) and the
- * player's grab. A pure builder (no DOM, no Pixi), shared by the page and its tests.
+ * The cloth lab's world, headless (no DOM, no Pixi), shared by the page and its tests: a sheet pegged
+ * to a washing line in a yard, in a breeze.
  *
- * The grab is soft: pressing on the cloth takes hold of the points within a hand's radius of the press,
- * each by a soft pin (pinClothPoint with options: a spring solved in the cloth solver's small steps, its
- * force capped) toward its place under the pointer, the nearest points holding hardest. The pull spreads
- * over the patch and from it into the sheet, which stretches, swings and lags behind the hand; links
- * tear only where a pull far past where the cloth can follow, or a fast yank, strains them past the tear
- * strain. A hard pin on the one point under the pointer (pinClothPoint without options) puts all the
- * strain in the few links at that point: the slow 0.5 m pulls measured for GRAB tear 1 to 21 links
- * with it (every one of 40 pulls tears some).
+ * The sheet is createCloth's grid of point masses with compliant structural links (it stretches
+ * visibly under a pull and springs back), soft shear links (it sways and leans in the wind) and
+ * bending links. Its top row is held by pegs: hard pins (pinClothPoint) at a few points along the
+ * line, set a little closer together than the cloth between them, so the hem hangs in shallow swags.
+ * The two top rows are the hem: their links are stiffer and never tear, so a gust cannot blow the
+ * sheet off the line; the rest tears where a structural link is stretched past the tear strain (the
+ * soft shear and bending links go with the links they lie over: cells.ts ClothCells.loosen). The yard
+ * is the world's boundary box: the lawn, a wall on either side and a high ceiling.
+ *
+ * The air: linear drag on every point against the world's wind (setWind), a breeze that swings both
+ * ways (a small mean, a slow gust cycle and turbulence). A point's terminal speed in still air is
+ * m g / c (CLOTH_MASS g / DRAG for the whole sheet, about 2.5 m/s), so torn scraps flutter down in
+ * about a second, and the wind's push on the sheet is c u: at 2.5 m/s about the sheet's weight, so it
+ * leans about 45 degrees.
  */
 import {
   type Cloth,
+  ClothLinkKind,
   createCloth,
   createPhysicsWorld,
-  isAlive,
   type PhysicsWorld,
   pinClothPoint,
+  query,
   setBoundary,
   setWind,
   slotOf,
+  step,
 } from '@bitphysics/physics';
 
-/** Side of the square sheet, m. */
-export const SIDE = 4;
-/** Total mass of the sheet, kg. */
-export const CLOTH_MASS = 0.6;
+/** Width of the sheet at rest, m. */
+export const SHEET_WIDTH = 4;
+/** Height of the washing line above the ground, m. */
+export const LINE_Y = 4.9;
+/** Left end of the sheet at rest, m (the sheet spans [SHEET_X, SHEET_X + SHEET_WIDTH]). */
+export const SHEET_X = 0;
+/** Total mass of the sheet, kg (a light cotton sheet). */
+export const CLOTH_MASS = 1;
+/** Total air drag of the sheet, N s/m, shared by its points (terminal fall speed CLOTH_MASS g / DRAG). */
+export const DRAG = 4;
 /**
- * The room the sheet hangs in, m: floor, walls and ceiling of the world's boundary box, which keeps the
- * cloth's points inside (a torn piece lands on the floor and the wind piles it against the right wall).
- * The floor is 1.3 m below the hem, which the default wind and the sheet's own stretch keep above it.
+ * Compliance of the sheet's structural links for a sheet of 32 points across, m/N (stiffness 80 N/m a
+ * link, 0.13 m long): the sheet's own weight stretches its upper links a few percent, a hand's pull of
+ * 10-20 N stretches the links near it 15-35%. Scaled with the link length for other sizes (a finer sheet
+ * has more, shorter links in series: the same fabric).
  */
-export const ROOM = Object.freeze({ minX: -1, minY: -1.3, maxX: SIDE + 3, maxY: SIDE + 10 });
+export const COMPLIANCE = 0.0125;
+/**
+ * Shear links' compliance over the structural links': the diagonals hardly resist shear (fabric
+ * shears easily), so the sheet leans in the wind like a curtain and a scrap on the lawn slumps into a
+ * low heap; without them a scrap would lie flat as a line, with stiff ones it stands up like a plate.
+ */
+export const SHEAR = 200;
+/** Bending links' compliance over the structural links'. */
+export const BEND = 4;
+/**
+ * Friction of the lawn and the walls (the boundary box's, position-based): a scrap on the lawn stays
+ * about where it fell in the breeze, which gusts both ways; one the Gust button blows against the brick
+ * wall slides down it when the gust drops.
+ */
+export const FRICTION = 1;
+/** The yard: ground (y = 0), walls and ceiling of the world's boundary box, m. */
+export const YARD = Object.freeze({ minX: -0.6, minY: 0, maxX: 5.1, maxY: 12 });
+/** Pegs along the line (including both ends). */
+export const PEGS = 7;
+/** How much closer the pegs are than the cloth between them at rest (the hem's swags), in (0, 1]. */
+export const GATHER = 0.9;
 
 /**
- * The lab's cloth solver substeps a step. The links are inextensible (compliance 0), so a link's strain
- * is the small steps' leftover error, which falls as the substeps rise: at 24 the default 7 m/s wind
- * stretches the sheet's upwind top corner 9% (12: 24%, 16: 15%, 32: 6%), at about the same step time
- * as 12 (1.26 ms against 1.20 ms for 32 points a side, measured headless).
+ * The lab's cloth solver substeps a step. The compliant links converge in fewer than the inextensible
+ * links of a stiff sheet need; 12 keep the hanging sheet's extra (solver) stretch small at half the cost of 24.
  */
-export const CLOTH_SUBSTEPS = 24;
+export const CLOTH_SUBSTEPS = 12;
+
+/** Steps the new sheet hangs before it is shown (1/3 s). */
+export const SETTLE = 20;
 
 /** The lab's settings that shape its world. */
 export interface ClothSceneParams {
-  /** Points a side, integer in [4, 64]. */
+  /** Points across the sheet, integer in [8, 48]; the rows follow from the sheet's 4:3 shape. */
   size: number;
-  /** Wind speed to the right, m/s, >= 0. */
+  /** Mean wind to the right, m/s, >= 0. */
   wind: number;
-  /** Turbulence of the wind, m/s RMS, >= 0. */
-  turbulence: number;
-  /** Strain past which structural and shear links tear, > 0. */
+  /** Amplitude of the slow gust cycle and RMS of the turbulence, m/s, >= 0. */
+  gusts: number;
+  /** Strain past which the sheet's links tear (the hem's never do), > 0. */
   tear: number;
   /** Cloth solver substeps a step, integer >= 1. */
   substeps: number;
 }
 
-/** Sets the world's wind from the lab's settings (a steady wind with seeded turbulence). */
-export function applyWind(world: PhysicsWorld, p: Pick<ClothSceneParams, 'wind' | 'turbulence'>): void {
-  setWind(world, { velocity: [p.wind, 0], turbulence: { intensity: p.turbulence, lengthScale: 1.5, timeScale: 0.8, seed: 3 } });
+/** The challenge's sheets, one after another: the same shapes to cut out in a stronger breeze each time. */
+export const SHEETS: readonly { readonly name: string; readonly wind: number; readonly gusts: number }[] = Object.freeze([
+  { name: 'a calm day', wind: 0.1, gusts: 0.5 },
+  { name: 'a breezy day', wind: 0.3, gusts: 1.2 },
+  { name: 'a windy day', wind: 0.5, gusts: 2 },
+]);
+
+/** The lab's defaults (the first sheet's breeze). */
+export const DEFAULTS: Readonly<ClothSceneParams> = Object.freeze({
+  size: 32,
+  wind: SHEETS[0]!.wind,
+  gusts: SHEETS[0]!.gusts,
+  tear: 0.45,
+  substeps: CLOTH_SUBSTEPS,
+});
+
+/** Period of the breeze's slow rise and fall, s. */
+export const GUST_PERIOD = 7;
+
+/**
+ * Sets the world's wind: a mean `wind` m/s to the right, a slow cycle of amplitude `gusts` (period
+ * GUST_PERIOD), turbulence of RMS 0.7 `gusts`, and `extra` m/s more while the player blows a gust.
+ */
+export function applyWind(world: PhysicsWorld, p: Pick<ClothSceneParams, 'wind' | 'gusts'>, extra = 0): void {
+  setWind(world, {
+    velocity: [p.wind + extra, 0],
+    gust: [p.gusts, 0],
+    gustOmega: (2 * Math.PI) / GUST_PERIOD,
+    turbulence: { intensity: 0.7 * p.gusts + 0.25 * extra, lengthScale: 1.2, timeScale: 0.7, seed: 3 },
+  });
 }
 
-/** Builds the lab's world: a SIDE x SIDE sheet of `size` x `size` points pinned along its top edge at y = SIDE, in the ROOM box. */
-export function createClothScene(p: ClothSceneParams): { world: PhysicsWorld; cloth: Cloth } {
-  const n = p.size;
-  const world = createPhysicsWorld({ gravity: [0, -9.81], capacity: 7 * n * n + 64 });
+/** The sheet's grid for `size` points across: columns, rows and the link spacing (m). */
+export function sheetGrid(size: number): { columns: number; rows: number; spacing: number; height: number } {
+  const columns = size;
+  const spacing = SHEET_WIDTH / (columns - 1);
+  const rows = Math.max(4, Math.round(0.75 * (columns - 1)) + 1);
+  return { columns, rows, spacing, height: spacing * (rows - 1) };
+}
+
+/** What `createClothScene` made. */
+export interface ClothScene {
+  world: PhysicsWorld;
+  cloth: Cloth;
+  /** Handles of the pegged points, left to right. */
+  pegs: number[];
+  /** Where each peg holds its point, m (x, y interleaved). */
+  pegAt: number[];
+}
+
+/**
+ * Builds the lab's world: the sheet (`size` points across, SHEET_WIDTH wide, rows for a 4:3 sheet)
+ * hanging from PEGS pegs on the line at LINE_Y, in the YARD, in the breeze.
+ * @throws RangeError (from createCloth) on a size outside [2, 512].
+ */
+export function createClothScene(p: ClothSceneParams): ClothScene {
+  const { columns, rows, spacing, height } = sheetGrid(p.size);
+  const n = columns * rows;
+  const world = createPhysicsWorld({ gravity: [0, -9.81], capacity: 8 * n + 64 });
+  const compliance = (COMPLIANCE * spacing) / (SHEET_WIDTH / 31);
   const cloth = createCloth(world, {
-    columns: n,
-    rows: n,
-    width: SIDE,
-    height: SIDE,
-    origin: [0, SIDE],
+    columns,
+    rows,
+    width: SHEET_WIDTH,
+    height,
+    origin: [SHEET_X, LINE_Y],
     mass: CLOTH_MASS,
+    pinned: 'none',
+    compliance,
+    shearCompliance: SHEAR * compliance,
+    bendCompliance: BEND * compliance,
     tearStretch: p.tear,
-    // Air drag a point, N s/m, by its share of the sheet (20 N s/m over it): the default 7 m/s wind
-    // sways the hem about 0.7 m sideways in 3 s, and a 10 m/s gale tears the sheet from its pins.
-    drag: 20 / (n * n),
+    drag: DRAG / n,
   });
   world.cloth.substeps = p.substeps;
-  setBoundary(world, { min: [ROOM.minX, ROOM.minY], max: [ROOM.maxX, ROOM.maxY], friction: 0.8 });
+  // The hem: links with an end in the two top rows are three times stiffer and never tear. Shear
+  // and bending links never tear by strain (they are soft and stretch far); they go with the
+  // structural links they lie over (ClothCells.loosen).
+  const L = world.components.ClothLink;
+  const hem = new Set<number>();
+  for (let i = 0; i < 2 * columns; i++) hem.add(slotOf(cloth.points[i]!));
+  for (const e of query(world, [L])) {
+    if (L.kind[e] !== ClothLinkKind.Structural) L.tearStretch[e] = Infinity;
+    if (!hem.has(L.a[e]!) && !hem.has(L.b[e]!)) continue;
+    L.tearStretch[e] = Infinity;
+    L.compliance[e] = L.compliance[e]! / 3;
+  }
+  world.cloth.version++;
+  const pegs: number[] = [],
+    pegAt: number[] = [];
+  const mid = SHEET_X + SHEET_WIDTH / 2;
+  for (let k = 0; k < PEGS; k++) {
+    const c = Math.round((k * (columns - 1)) / (PEGS - 1));
+    const h = cloth.points[c]!;
+    const x = mid + (SHEET_X + c * spacing - mid) * GATHER;
+    pinClothPoint(world, h, [x, LINE_Y]);
+    pegs.push(h);
+    pegAt.push(x, LINE_Y);
+  }
+  setBoundary(world, { min: [YARD.minX, YARD.minY], max: [YARD.maxX, YARD.maxY], friction: FRICTION });
   applyWind(world, p);
-  return { world, cloth };
-}
-
-/** How the hand holds the cloth (see ClothGrab). */
-export interface GrabOptions {
-  /** Radius of the held patch, m, > 0: the moving points this close to the press are held. */
-  radius: number;
-  /** Stiffness of the grip, N/m, > 0, shared by the held points by weight. */
-  stiffness: number;
-  /** Largest total pull of the grip, N, > 0, shared by weight. */
-  maxForce: number;
-}
-
-/**
- * The lab's grip at 32 points a side: a 0.35 m hand, 400 N/m, at most 800 N. Measured headless at
- * CLOTH_SUBSTEPS and tear strain 0.2 (grabs at four places, 2 s after the start, in the default 7 m/s
- * wind and in still air): a 0.5 m pull over 1 s in any of five directions tears no link (40 of 40
- * pulls), the most stretched link reaches 5-18% and the held point follows the hand 0.09-0.32 m; a 2 m
- * yank in 0.12 s tears 105-569 links.
- */
-export const GRAB: GrabOptions = { radius: 0.35, stiffness: 400, maxForce: 800 };
-
-/**
- * The lab's grip for a sheet of `size` points a side: GRAB with its stiffness and force scaled by
- * (31 / (size - 1))^2 and its radius at least 1.5 link spacings. The solver's sheet is stiffer the
- * coarser it is (a link's strain is the small steps' leftover error, which grows with the links in a
- * chain). Measured at CLOTH_SUBSTEPS and tear strain 0.2, pulling the middle point: a slow 0.5 m pull
- * tears nothing and stretches the sheet 8-16% at 8 and 16 points a side (in the default wind and in
- * still air) and at 48 and 64 in still air, and a 2 m yank in 0.15 s tears 46-80 links at 8 and 16 and
- * 484-800 at 48 and 64. In the default wind a 48-point sheet already stretches 17% and a slow pull
- * tears a few links; a 64-point sheet stretches past the tear strain by itself (lower the wind).
- */
-export function gripFor(size: number): GrabOptions {
-  const s = (31 / (size - 1)) ** 2;
-  return {
-    radius: Math.max(GRAB.radius, (1.5 * SIDE) / (size - 1)),
-    stiffness: GRAB.stiffness * s,
-    maxForce: GRAB.maxForce * s,
-  };
-}
-
-/**
- * A soft grab of a cloth: `ClothGrab.at` presses at (x, y) and holds the moving points within
- * `radius`, each by a soft pin (pinClothPoint with options) toward t_i = hand + o_i, o_i its offset from
- * the press, with stiffness w_i k (compliance 1 / (w_i k)) and largest force w_i maxForce, where the
- * weights w_i = (1 - d_i / radius)^2, normalised to sum 1, favour the points nearest the press.
- */
-export class ClothGrab {
-  /** Held points' handles. */
-  readonly points: number[] = [];
-  /** Held points' weights (sum 1). */
-  readonly weights: number[] = [];
-  /** Held points' offsets from the hand, m (x, y interleaved). */
-  readonly offsets: number[] = [];
-  /** Where the hand is, m. */
-  readonly hand: [number, number];
-
-  private constructor(
-    private readonly world: PhysicsWorld,
-    x: number,
-    y: number,
-    readonly options: GrabOptions,
-  ) {
-    this.hand = [x, y];
-  }
-
-  /**
-   * Presses at (x, y), m: holds the cloth's moving points within options.radius.
-   * @returns the grab, or null when no moving point is that close.
-   */
-  static at(world: PhysicsWorld, cloth: Cloth, x: number, y: number, options: GrabOptions = GRAB): ClothGrab | null {
-    const P = world.components.Position,
-      inv = world.components.Mass.inv;
-    const g = new ClothGrab(world, x, y, options);
-    let total = 0;
-    for (let i = 0; i < cloth.points.length; i++) {
-      const e = slotOf(cloth.points[i]!);
-      if (!(inv[e]! > 0)) continue;
-      const dx = P.x[e]! - x,
-        dy = P.y[e]! - y,
-        d = Math.hypot(dx, dy);
-      if (d >= options.radius) continue;
-      const w = (1 - d / options.radius) ** 2;
-      g.points.push(cloth.points[i]!);
-      g.weights.push(w);
-      g.offsets.push(dx, dy);
-      total += w;
-    }
-    if (g.points.length === 0) return null;
-    for (let i = 0; i < g.weights.length; i++) g.weights[i]! /= total;
-    g.moveTo(x, y);
-    return g;
-  }
-
-  /** Moves the hand to (x, y), m: each held point is pulled toward its place under it. */
-  moveTo(x: number, y: number): void {
-    this.hand[0] = x;
-    this.hand[1] = y;
-    const o = this.options;
-    for (let i = 0; i < this.points.length; i++) {
-      const w = this.weights[i]!;
-      pinClothPoint(this.world, this.points[i]!, [x + this.offsets[2 * i]!, y + this.offsets[2 * i + 1]!], {
-        compliance: 1 / (w * o.stiffness),
-        maxForce: w * o.maxForce,
-      });
-    }
-  }
-
-  /** Total force the grip pulled with in the last substep, N. */
-  force(): number {
-    const cl = this.world.cloth;
-    let f = 0;
-    for (let i = 0; i < cl.softPinCount; i++) f += cl.softPinForce[i]!;
-    return f;
-  }
-
-  /** Lets go of the cloth. */
-  release(): void {
-    for (const h of this.points) if (isAlive(this.world, h)) pinClothPoint(this.world, h, null);
-  }
+  // The pegs moved the top row's pegged points inward by up to 0.2 m, straining the hem's links near
+  // them by up to 100% (they never tear); SETTLE steps let the sheet take up its swags before it is shown.
+  for (let i = 0; i < SETTLE; i++) step(world);
+  return { world, cloth, pegs, pegAt };
 }

@@ -1,9 +1,10 @@
 /**
- * The rope lab in headless Chromium, on a desktop (1280 x 800, mouse) and on a phone (390 x 844, touch:
- * CDP touch events, so pointer capture and `pointer: coarse` behave as on a phone): it loads without
- * errors, and its input changes it as read through window.game: a swipe cuts the rope into two drawn
- * ropes, a tap cuts the nearest one, and a level won offers the next. Every wait is on the page's
- * state, not the clock.
+ * The cloth and rope labs in headless Chromium, on a desktop (1280 x 800, mouse) and on a phone
+ * (390 x 844, touch: CDP touch events, so pointer capture and `pointer: coarse` behave as on a phone):
+ * each loads without errors, and its input changes it as read through window.game. Cloth: a scissors
+ * stroke cuts the sheet and the piece below it comes away, the hand takes hold and stretches it, Gust
+ * blows. Rope: a swipe cuts the rope into two drawn ropes, a tap cuts the nearest one, and a level won
+ * offers the next. Every wait is on the page's state, not the clock.
  */
 import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
@@ -21,6 +22,17 @@ interface Lab {
   renderer: { camera: Cam };
   world: { time: number; components: { Position: { x: Float64Array; y: Float64Array } } };
   advance(n: number): void;
+}
+interface ClothLab extends Lab {
+  cloth(): { points: ArrayLike<number>; columns: number; rows: number };
+  tool(): string;
+  grab(): { points: unknown[] } | null;
+  links(): number;
+  cut(): number;
+  scraps(): number;
+  gust(): number;
+  triangles(): number;
+  shownStretch(): number;
 }
 interface RopeLab extends Lab {
   ids(): { ball: number; ropes: { anchor: number[]; bodies: number[]; links: number[] }[] };
@@ -79,6 +91,19 @@ async function mousePath(page: Page, points: { x: number; y: number }[], steps =
   await page.mouse.up();
 }
 
+/** World position of cloth point (row, column), m. */
+function clothPoint(g: GamePage, row: number, column: number): Promise<[number, number]> {
+  return g.page.evaluate(
+    ([r, c]) => {
+      const w = window.game as unknown as ClothLab;
+      const cl = w.cloth(),
+        e = cl.points[r! * cl.columns + c!]! % 2 ** 25;
+      return [w.world.components.Position.x[e]!, w.world.components.Position.y[e]!] as [number, number];
+    },
+    [row, column] as const,
+  );
+}
+
 for (const [device, options] of [
   ['desktop', DESKTOP],
   ['phone', PHONE],
@@ -93,6 +118,86 @@ for (const [device, options] of [
     if (device === 'phone') await page.touchscreen.tap(box.x + box.width / 2, box.y + box.height / 2);
     else await b.click();
   };
+
+  describe(`lab-cloth (${device})`, () => {
+    it('a scissors stroke across the paused sheet cuts it, and the part below falls away when it runs', async () => {
+      const g = await h.openGame('lab-cloth', options);
+      await g.page.evaluate(() => {
+        (window.game as unknown as Lab).paused = true;
+      });
+      const before = await g.page.evaluate(() => (window.game as unknown as ClothLab).links());
+      // Across the whole sheet, a little below its middle row (from left of its left edge to right of its right edge).
+      const cl = await g.page.evaluate(() => {
+        const c = (window.game as unknown as ClothLab).cloth();
+        return { rows: c.rows, columns: c.columns };
+      });
+      const row = Math.round(cl.rows * 0.7);
+      const [lx, ly] = await clothPoint(g, row, 0),
+        [rx, ry] = await clothPoint(g, row, cl.columns - 1);
+      const spacing = 4 / (cl.columns - 1);
+      const a = await toPage(g, lx - 0.3, ly - spacing / 2),
+        b = await toPage(g, (lx + rx) / 2, (ly + ry) / 2 - spacing / 2),
+        c = await toPage(g, rx + 0.3, ry - spacing / 2);
+      await drag(g.page, [a, b, c], 6);
+      const cut = await g.waitFor(() => (window.game as unknown as ClothLab).cut(), null);
+      expect(cut).toBeGreaterThan(cl.columns);
+      expect(await g.page.evaluate(() => (window.game as unknown as ClothLab).links())).toBeLessThan(before - cl.columns);
+      await g.page.evaluate(() => {
+        (window.game as unknown as Lab).paused = false;
+      });
+      // The strip below the cut has come away: it counts as a piece off, and it falls.
+      await g.waitFor(() => (window.game as unknown as ClothLab).scraps() >= 1, null, 30_000);
+      const [, y0] = await clothPoint(g, cl.rows - 1, Math.floor(cl.columns / 2));
+      await g.waitFor(
+        ([r, c, y]) => {
+          const w = window.game as unknown as ClothLab;
+          const e = w.cloth().points[r! * w.cloth().columns + c!]! % 2 ** 25;
+          return w.world.components.Position.y[e]! < y! - 0.5;
+        },
+        [cl.rows - 1, Math.floor(cl.columns / 2), y0] as const,
+        30_000,
+      );
+      expect(g.errors).toEqual([]);
+      await g.close();
+    });
+
+    it('the hand takes hold of the sheet and stretches it; Gust blows', async () => {
+      const g = await h.openGame('lab-cloth', options);
+      await press(g.page, 'hand: drag to pull (C)');
+      expect(await g.page.evaluate(() => (window.game as unknown as ClothLab).tool())).toBe('pull');
+      await g.page.evaluate(() => {
+        (window.game as unknown as Lab).paused = true;
+      });
+      const cl = await g.page.evaluate(() => (window.game as unknown as ClothLab).cloth().rows);
+      const [x, y] = await clothPoint(g, cl - 4, 16);
+      const from = await toPage(g, x, y),
+        to = await toPage(g, x, y - 0.6);
+      let held = 0,
+        stretch = 0;
+      await drag(g.page, [from, to], 6, async () => {
+        held = await g.page.evaluate(() => (window.game as unknown as ClothLab).grab()?.points.length ?? 0);
+        await g.page.evaluate(() => {
+          (window.game as unknown as Lab).paused = false;
+        });
+        // Held 0.6 m below where it hung: the links by the hand stretch (drawn lighter and thinner).
+        stretch = await g.waitFor(() => {
+          const s = (window.game as unknown as ClothLab).shownStretch();
+          return s > 0.12 ? s : 0;
+        }, null);
+      });
+      expect(held).toBeGreaterThan(5);
+      expect(stretch).toBeGreaterThan(0.12);
+      expect(await g.page.evaluate(() => (window.game as unknown as ClothLab).grab())).toBeNull();
+      // Gust: held, the player's gust rises.
+      const gust = g.page.getByRole('button', { name: 'gust of wind (hold G)', exact: true });
+      const box = (await gust.boundingBox())!;
+      await drag(g.page, [{ x: box.x + box.width / 2, y: box.y + box.height / 2 }], 1, async () => {
+        await g.waitFor(() => (window.game as unknown as ClothLab).gust() > 0.5, null);
+      });
+      expect(g.errors).toEqual([]);
+      await g.close();
+    });
+  });
 
   describe(`lab-rope (${device})`, () => {
     /** The middle of rope `r` now, m. */
