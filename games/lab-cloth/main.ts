@@ -308,9 +308,12 @@ const slash: { x: number; y: number; t: number }[] = [];
 let snipped = 0,
   ripped = 0,
   lastSnip = 0,
-  lastRip = 0;
+  lastRip = 0,
+  /** When the pointer last went down, ms (performance.now). */
+  lastInput = 0;
 canvas.addEventListener('pointerdown', (e) => {
   if (e.button !== 0 && e.button !== 2) return;
+  lastInput = performance.now();
   const [x, y] = pointerWorld(e);
   grab?.release();
   grab = null;
@@ -349,9 +352,17 @@ shell.onWorldChange(() => {
   stroke = null;
 });
 
-/** Plays the snip and rip sounds for what was cut and torn since the last frame (at most one of each per 60 ms). */
+/**
+ * Plays the snip and rip sounds for what was cut and torn since the last one (at most one of each per
+ * 60 and 90 ms). Until the page's audio runs (the first press starts it, a moment later) they wait, up
+ * to 0.4 s, so the first cut is heard too.
+ */
 function playSounds(): void {
   const now = performance.now();
+  if (!sound.running) {
+    if (now - lastInput > 400) snipped = ripped = 0;
+    return;
+  }
   if (snipped > 0 && now - lastSnip > 60) {
     sound.snap(Math.min(1, 0.25 + snipped / 30));
     snipped = 0;

@@ -76,8 +76,13 @@ export class Yard {
   /** Streaks drawn in the last frame (tests). */
   streaksDrawn = 0;
 
+  /** The sky and the scenery, drawn into one texture when the view changes (one quad a frame, not their many shapes). */
+  private readonly still = new Container({ label: 'still' });
+
   constructor() {
-    this.back.addChild(this.sky, this.scenery, this.grass);
+    this.still.addChild(this.sky, this.scenery);
+    this.still.cacheAsTexture(true);
+    this.back.addChild(this.still, this.grass);
     this.front.addChild(this.air);
     for (let i = 0; i < 40; i++) this.streaks.push({ x: 0, y: 0, age: 0, life: 0 });
     for (let i = 0; i < 40; i++) this.respawnStreak(this.streaks[i]!, true);
@@ -109,12 +114,13 @@ export class Yard {
    * while paused) in the world's wind. `screenW` and `screenH` are the canvas' size, px.
    */
   update(world: PhysicsWorld, camera: Camera, dt: number, screenW: number, screenH: number): void {
-    this.sky.width = screenW;
-    this.sky.height = Math.max(1, camera.toScreenY(0));
     const key = `${screenW}x${screenH}:${camera.toScreenX(0).toFixed(2)},${camera.toScreenY(0).toFixed(2)},${camera.toScreenLength(1).toFixed(3)}`;
     if (key !== this.sceneryKey) {
       this.sceneryKey = key;
+      this.sky.width = screenW;
+      this.sky.height = Math.max(1, camera.toScreenY(0));
       this.drawScenery(camera, screenW, screenH);
+      this.still.updateCacheTexture();
     }
     this.drawGrass(world, camera);
     this.moveAir(world, dt);
