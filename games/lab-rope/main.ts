@@ -63,8 +63,19 @@ function createWorld(): PhysicsWorld {
   return scene.world;
 }
 
+/** The ball's velocity before the last step, m/s (for the thud of a landing). */
+const lastV = [0, 0];
+
 function labStep(world: PhysicsWorld): void {
+  const b = slotOf(scene.ball),
+    Vb = world.components.Velocity;
+  lastV[0] = Vb.x[b]!;
+  lastV[1] = Vb.y[b]!;
   physicsStep(world);
+  // A thud when the loose ball's velocity jumps in one step (it hit the floor, a wall or the basket):
+  // loudness from the impulse m |dv|.
+  const dv = Math.hypot(Vb.x[b]! - lastV[0]!, Vb.y[b]! - lastV[1]! - world.gravity[1]! * world.dt);
+  if (dv > 1 && game.holding() === 0) sound.impact(world.components.Mass.value[b]! * dv, 'wood', { threshold: 1, loud: 12 });
   const before = game.outcome;
   for (const i of game.update()) {
     const [x, y] = scene.level.stars[i]!;
@@ -209,12 +220,28 @@ function cutBetween(x0: number, y0: number, x1: number, y1: number, reach: numbe
   for (const c of made) {
     cuts++;
     burst(c.x, c.y, 0xd9b67c, 8);
-    sound.snap(0.7);
+    snaps++;
   }
+}
+
+/** Cuts not heard yet, and when the pointer last went down (ms): see playSnaps. */
+let snaps = 0,
+  lastInput = 0;
+/**
+ * Plays a snap for each cut. Until the page's audio runs (the first press starts it, a moment later)
+ * the snaps wait, up to 0.4 s, so the first cut is heard too.
+ */
+function playSnaps(): void {
+  if (snaps === 0) return;
+  if (sound.running) {
+    sound.snap(Math.min(1, 0.5 + 0.2 * snaps));
+    snaps = 0;
+  } else if (performance.now() - lastInput > 400) snaps = 0;
 }
 
 canvas.addEventListener('pointerdown', (e) => {
   if (e.button !== 0) return;
+  lastInput = performance.now();
   const [x, y] = toWorld(e);
   releasePush();
   const w = shell.world,
@@ -350,6 +377,7 @@ function draw(alpha: number, world: PhysicsWorld): void {
   }
   drawBanner(now);
   updateStatus();
+  playSnaps();
   const e = slotOf(scene.ball),
     V = world.components.Velocity;
   readout.set(0, String(game.holding()));

@@ -13,7 +13,7 @@ import { Container, Graphics, Sprite, Texture } from 'pixi.js';
 import { BALL_RADIUS, type Level, ROOM_HALF_WIDTH, type RopePiece, WALL } from './scene';
 
 /** Rope thickness, m (drawn at least 4 px). */
-export const ROPE_WIDTH = 0.075;
+export const ROPE_WIDTH = 0.085;
 
 /** A vertical gradient (CSS colours at stops in [0, 1]) as a 1 x 256 texture. */
 function gradient(stops: readonly [number, string][]): Texture {
@@ -94,13 +94,19 @@ export class RopeView {
   );
   private readonly room = new Graphics({ label: 'room' });
   private readonly cords = new Graphics({ label: 'ropes' });
+  private readonly shadow = new Graphics({ label: 'shadow' });
   private readonly ballSprite = new Sprite(ballTexture());
   private readonly front = new Graphics({ label: 'front' });
   private roomKey = '';
 
+  /** The wall and the room, drawn into one texture when the view changes (one quad a frame, not their many shapes). */
+  private readonly still = new Container({ label: 'still' });
+
   constructor() {
     this.ballSprite.anchor.set(0.5);
-    this.container.addChild(this.wall, this.room, this.cords, this.ballSprite, this.front);
+    this.still.addChild(this.wall, this.room);
+    this.still.cacheAsTexture(true);
+    this.container.addChild(this.still, this.shadow, this.cords, this.ballSprite, this.front);
   }
 
   /**
@@ -119,12 +125,13 @@ export class RopeView {
     W: number,
     H: number,
   ): void {
-    this.wall.width = W;
-    this.wall.height = H;
     const key = `${level.name}:${W}x${H}:${cam.toScreenX(0).toFixed(2)},${cam.toScreenY(0).toFixed(2)},${cam.toScreenLength(1).toFixed(4)}`;
     if (key !== this.roomKey) {
       this.roomKey = key;
+      this.wall.width = W;
+      this.wall.height = H;
       this.drawRoom(level, cam, W, H);
+      this.still.updateCacheTexture();
     }
     const P = world.components.Position,
       O = world.components.PreviousPosition;
@@ -163,8 +170,13 @@ export class RopeView {
       pieces.push({ pts: xs, cutStart, cutEnd: false });
       for (const piece of pieces) if (piece.pts.length >= 4) this.drawCord(piece.pts, width, piece.cutStart, piece.cutEnd);
     }
-    // Ball.
+    // Ball, and its shadow on the floor: wider and fainter the higher it is.
     const r = cam.toScreenLength(BALL_RADIUS);
+    const height = Math.max(0, O.y[be]! + (P.y[be]! - O.y[be]!) * alpha - BALL_RADIUS);
+    this.shadow.clear();
+    this.shadow
+      .ellipse(bx, cam.toScreenY(0) - 1, r * (1 + 0.15 * height), r * 0.25 * (1 + 0.05 * height))
+      .fill({ color: 0x000000, alpha: 0.35 * Math.exp(-height / 3) });
     this.ballSprite.position.set(bx, by);
     this.ballSprite.width = 2 * r;
     this.ballSprite.height = 2 * r;
