@@ -120,8 +120,16 @@ for (const [device, options] of [
   };
 
   describe(`lab-cloth (${device})`, () => {
+    // One page for both tests (a page load costs seconds in software-rendered Chromium).
+    let g: GamePage;
+    beforeAll(async () => {
+      g = await h.openGame('lab-cloth', options);
+    });
+    afterAll(async () => {
+      await g?.close();
+    });
+
     it('a scissors stroke across the paused sheet cuts it, and the part below falls away when it runs', async () => {
-      const g = await h.openGame('lab-cloth', options);
       await g.page.evaluate(() => {
         (window.game as unknown as Lab).paused = true;
       });
@@ -140,6 +148,8 @@ for (const [device, options] of [
         c = await toPage(g, rx + 0.3, ry - spacing / 2);
       await drag(g.page, [a, b, c], 6);
       const cut = await g.waitFor(() => (window.game as unknown as ClothLab).cut(), null);
+      // The scissors snipped (the press started the page's sound; the frame after the cut plays it).
+      await g.waitFor(() => (window.game as unknown as { sound: { played: number } }).sound.played > 0, null);
       expect(cut).toBeGreaterThan(cl.columns);
       expect(await g.page.evaluate(() => (window.game as unknown as ClothLab).links())).toBeLessThan(before - cl.columns);
       await g.page.evaluate(() => {
@@ -158,11 +168,10 @@ for (const [device, options] of [
         30_000,
       );
       expect(g.errors).toEqual([]);
-      await g.close();
     });
 
     it('the hand takes hold of the sheet and stretches it; Gust blows', async () => {
-      const g = await h.openGame('lab-cloth', options);
+      await g.page.evaluate(() => (window.game as unknown as { reset(): void }).reset());
       await press(g.page, 'hand: drag to pull (C)');
       expect(await g.page.evaluate(() => (window.game as unknown as ClothLab).tool())).toBe('pull');
       await g.page.evaluate(() => {
@@ -195,7 +204,6 @@ for (const [device, options] of [
         await g.waitFor(() => (window.game as unknown as ClothLab).gust() > 0.5, null);
       });
       expect(g.errors).toEqual([]);
-      await g.close();
     });
   });
 
@@ -209,8 +217,16 @@ for (const [device, options] of [
         return [w.world.components.Position.x[e]!, w.world.components.Position.y[e]!] as [number, number];
       }, r);
 
+    // One page for both tests (a page load costs seconds in software-rendered Chromium).
+    let g: GamePage;
+    beforeAll(async () => {
+      g = await h.openGame('lab-rope', { ...options, query: { level: 1 } });
+    });
+    afterAll(async () => {
+      await g?.close();
+    });
+
     it('a swipe across the rope cuts it into two ropes, and the ball falls', async () => {
-      const g = await h.openGame('lab-rope', { ...options, query: { level: 1 } });
       await g.page.evaluate(() => {
         (window.game as unknown as Lab).paused = true;
       });
@@ -233,18 +249,18 @@ for (const [device, options] of [
         return w.world.components.Position.y[w.ids().ball % 2 ** 25]! < y0 - 1;
       }, ball0);
       expect(g.errors).toEqual([]);
-      await g.close();
     });
 
     it('a tap beside a rope cuts it; cut at the right time, the ball lands in the basket and the next level is offered', async () => {
-      const g = await h.openGame('lab-rope', { ...options, query: { level: 1 } });
       // Level 1 is won by a cut 1.5-1.95 s in (test/games/lab-rope.test.ts): run to 1.75 s, paused.
       await g.page.evaluate(() => {
-        const w = window.game as unknown as RopeLab;
+        const w = window.game as unknown as RopeLab & { reset(): void };
+        w.reset();
         w.paused = true;
         w.advance(105);
       });
       const [x, y] = await ropeMiddle(g, 0);
+      const played = await g.page.evaluate(() => (window.game as unknown as { sound: { played: number } }).sound.played);
       // A tap 0.12 m beside the rope (about 9 px on the phone, 11 on the desktop): within reach.
       const at = await toPage(g, x + 0.12, y);
       if (device === 'phone') await g.page.touchscreen.tap(at.x, at.y);
@@ -254,11 +270,12 @@ for (const [device, options] of [
         (window.game as unknown as Lab).paused = false;
       });
       await g.waitFor(() => (window.game as unknown as RopeLab).outcome() === 'won', null, 30_000);
+      // The cut snapped and the win chimed.
+      await g.waitFor((n) => (window.game as unknown as { sound: { played: number } }).sound.played >= n + 2, played);
       await press(g.page, 'Next level ▶');
       await g.waitFor(() => (window.game as unknown as RopeLab).level() === 2, null);
       expect(await g.page.evaluate(() => (window.game as unknown as RopeLab).ids().ropes.length)).toBe(2);
       expect(g.errors).toEqual([]);
-      await g.close();
     });
   });
 }
