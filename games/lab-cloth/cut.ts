@@ -3,8 +3,14 @@
  *
  * Every kind of link is cut (structural, shear and bending), so the two sides of a cut are no longer
  * joined by anything and part at once; the solver repacks its links at the next step.
+ *
+ * The cloth moves between two pointer events, so a stroke is cut from where its last point is now on
+ * the cloth (a `ClothAnchor`: that point's place in a triangle of the grid, carried with the cloth)
+ * to the new one (`ScissorsStroke`): the cut is continuous in the cloth even while the cloth slides
+ * under the pointer. A stroke drawn through the air from point to point would leave gaps where the
+ * cloth moved between events, and the piece inside a closed stroke would stay joined across them.
  */
-import { handleOf, type PhysicsWorld, query, removeJoint } from '@bitphysics/physics';
+import { type Cloth, handleOf, type PhysicsWorld, query, removeJoint, slotOf } from '@bitphysics/physics';
 
 /**
  * Whether segment a (a0 -> a1) and segment b (b0 -> b1) cross (m): both parameters of the crossing
@@ -61,4 +67,102 @@ export function cutAlong(world: PhysicsWorld, x0: number, y0: number, x1: number
   }
   for (const h of doomed) removeJoint(world, h);
   return at;
+}
+
+/** A place on a cloth: three of its points (indices of `Cloth.points`) and barycentric weights (sum 1). */
+export interface ClothAnchor {
+  readonly points: readonly [number, number, number];
+  readonly weights: readonly [number, number, number];
+}
+
+/**
+ * The place on `cloth` under world point (x, y), m: the first triangle of the grid (two a cell, whole or
+ * torn) that holds it now, with its barycentric weights; else (over a cut, where the triangles have
+ * come apart) the nearest point of the cloth within `reach` m; else null.
+ */
+export function clothAnchorAt(world: PhysicsWorld, cloth: Cloth, x: number, y: number, reach = 0): ClothAnchor | null {
+  const P = world.components.Position;
+  const C = cloth.columns,
+    R = cloth.rows;
+  const px = (i: number) => P.x[slotOf(cloth.points[i]!)]!,
+    py = (i: number) => P.y[slotOf(cloth.points[i]!)]!;
+  const inTriangle = (a: number, b: number, c: number): ClothAnchor | null => {
+    const ax = px(a),
+      ay = py(a),
+      bx = px(b),
+      by = py(b),
+      cx = px(c),
+      cy = py(c);
+    const d = (by - cy) * (ax - cx) + (cx - bx) * (ay - cy);
+    if (d === 0) return null;
+    const wa = ((by - cy) * (x - cx) + (cx - bx) * (y - cy)) / d,
+      wb = ((cy - ay) * (x - cx) + (ax - cx) * (y - cy)) / d,
+      wc = 1 - wa - wb;
+    return wa >= 0 && wb >= 0 && wc >= 0 ? { points: [a, b, c], weights: [wa, wb, wc] } : null;
+  };
+  for (let r = 0; r + 1 < R; r++)
+    for (let c = 0; c + 1 < C; c++) {
+      const i = r * C + c;
+      const hit = inTriangle(i, i + 1, i + C) ?? inTriangle(i + 1, i + C + 1, i + C);
+      if (hit) return hit;
+    }
+  let best = -1,
+    bestD = reach;
+  for (let i = 0; i < C * R; i++) {
+    const d = Math.hypot(px(i) - x, py(i) - y);
+    if (d < bestD) {
+      bestD = d;
+      best = i;
+    }
+  }
+  return best < 0 ? null : { points: [best, best, best], weights: [1, 0, 0] };
+}
+
+/** Where `anchor` is now, m, into `out`. */
+export function anchorPosition(world: PhysicsWorld, cloth: Cloth, anchor: ClothAnchor, out: [number, number]): [number, number] {
+  const P = world.components.Position;
+  out[0] = 0;
+  out[1] = 0;
+  for (let k = 0; k < 3; k++) {
+    const e = slotOf(cloth.points[anchor.points[k]!]!);
+    out[0] += anchor.weights[k]! * P.x[e]!;
+    out[1] += anchor.weights[k]! * P.y[e]!;
+  }
+  return out;
+}
+
+/**
+ * A stroke of the scissors: `moveTo` cuts from where the stroke's last point is now on the cloth (its
+ * ClothAnchor, carried with the cloth; off the cloth, where it was) to the new point (see the header).
+ */
+export class ScissorsStroke {
+  /** The stroke's last point, m. */
+  readonly at: [number, number];
+  private on: ClothAnchor | null;
+  private readonly from: [number, number] = [0, 0];
+
+  /**
+   * Starts a stroke at (x, y), m, on `cloth`; a point within `reach` m of the cloth but on no triangle
+   * of it (over a cut) holds on to the nearest point of the cloth.
+   */
+  constructor(
+    private readonly world: PhysicsWorld,
+    private readonly cloth: Cloth,
+    x: number,
+    y: number,
+    private readonly reach: number,
+  ) {
+    this.at = [x, y];
+    this.on = clothAnchorAt(world, cloth, x, y, reach);
+  }
+
+  /** Moves the stroke on to (x, y), m, cutting the links it crosses. @returns the cut links' midpoints (as cutAlong). */
+  moveTo(x: number, y: number): number[] {
+    const f = this.on ? anchorPosition(this.world, this.cloth, this.on, this.from) : this.at;
+    const cut = cutAlong(this.world, f[0], f[1], x, y);
+    this.at[0] = x;
+    this.at[1] = y;
+    this.on = clothAnchorAt(this.world, this.cloth, x, y, this.reach);
+    return cut;
+  }
 }

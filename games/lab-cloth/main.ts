@@ -23,11 +23,11 @@ import { type Cloth, type PhysicsWorld, step as physicsStep, query, removeJoint,
 import type { WorldRect } from '@bitphysics/render-pixi';
 import { Container, Graphics, Text } from 'pixi.js';
 import { ClothCells } from './cells';
-import { cutAlong } from './cut';
+import { ScissorsStroke } from './cut';
 import { fabricTexture } from './fabric';
 import { ClothGrab, gripFor } from './grab';
 import { Challenge, type CutOut, SHAPES } from './pattern';
-import { applyWind, CLOTH_SUBSTEPS, createClothScene, DEFAULTS, LINE_Y, SHEET_WIDTH, SHEETS, sheetGrid, YARD } from './scene';
+import { applyWind, CLOTH_SUBSTEPS, createClothScene, DEFAULTS, LINE_Y, SHEET_WIDTH, SHEET_X, SHEETS, sheetGrid, YARD } from './scene';
 import { SheetView } from './sheet-view';
 import { Yard } from './yard';
 
@@ -208,7 +208,8 @@ function nextSheet(): void {
 
 function announce(fresh: CutOut[]): void {
   for (const d of fresh) {
-    const at = challenge.centre(d.piece, [0, 0]);
+    // Over the piece it came away in; one cut to bits has none: over the middle of the sheet.
+    const at: [number, number] = d.piece >= 0 ? challenge.centre(d.piece, [0, 0]) : [SHEET_X + SHEET_WIDTH / 2, LINE_Y - 1.5];
     const name = SHAPES[d.shape]!.name;
     const text = new Container({ label: 'cut out' });
     const words = new Text({
@@ -220,7 +221,7 @@ function announce(fresh: CutOut[]): void {
     text.addChild(words, starRow(d.stars, 13));
     labelLayer.addChild(text);
     labels.push({ text, x: at[0], y: at[1] + 0.4, born: performance.now() / 1000 });
-    sound.chime(d.stars === 3 ? 1046 : d.stars === 2 ? 880 : 660, 0.5);
+    sound.chime([440, 660, 880, 1046][d.stars]!, 0.5);
   }
 }
 
@@ -301,8 +302,8 @@ const pointerWorld = (e: PointerEvent): [number, number] => {
   pointerOnCanvas(canvas, e, at);
   return [renderer.camera.toWorldX(at.x), renderer.camera.toWorldY(at.y)];
 };
-/** The scissors' stroke while cutting: the last point, m, and the recent points for the drawn slash (screen px, time s). */
-let stroke: { x: number; y: number; id: number } | null = null;
+/** The scissors' stroke while cutting (cut.ts) and its pointer; the recent points for the drawn slash (screen px, time s). */
+let stroke: { cut: ScissorsStroke; id: number } | null = null;
 const slash: { x: number; y: number; t: number }[] = [];
 /** Links cut since the last snip sound, and torn since the last rip sound. */
 let snipped = 0,
@@ -319,7 +320,8 @@ canvas.addEventListener('pointerdown', (e) => {
   grab = null;
   stroke = null;
   if (tool === 'cut' || e.button === 2) {
-    stroke = { x, y, id: e.pointerId };
+    // A point over a cut holds on to the cloth's nearest point within a link's length.
+    stroke = { cut: new ScissorsStroke(shell.world, cloth, x, y, SHEET_WIDTH / (params.size - 1)), id: e.pointerId };
     slash.length = 0;
     slash.push({ x: at.x, y: at.y, t: performance.now() / 1000 });
   } else grab = ClothGrab.at(shell.world, cloth, x, y, gripFor(params.size));
@@ -328,9 +330,7 @@ canvas.addEventListener('pointerdown', (e) => {
 canvas.addEventListener('pointermove', (e) => {
   const [x, y] = pointerWorld(e);
   if (stroke && e.pointerId === stroke.id) {
-    const cutHere = cutAlong(shell.world, stroke.x, stroke.y, x, y);
-    stroke.x = x;
-    stroke.y = y;
+    const cutHere = stroke.cut.moveTo(x, y);
     slash.push({ x: at.x, y: at.y, t: performance.now() / 1000 });
     if (cutHere.length > 0) {
       cut += cutHere.length / 2;
@@ -529,8 +529,10 @@ function updateStatus(): void {
   }
   const last = done[done.length - 1]!;
   const left = challenge.pending().map((i) => SHAPES[i]!.name);
+  const name = SHAPES[last.shape]!.name;
+  const tip = last.stars < 3 ? ' Cut on the dashed line for ★★★.' : '';
   status.set(
-    `${SHAPES[last.shape]!.name}: ${Math.round(last.fit * 100)}% ${'★'.repeat(last.stars)}${'☆'.repeat(3 - last.stars)} · still to cut: ${left.join(', ')}`,
+    `${name[0]!.toUpperCase()}${name.slice(1)}: ${Math.round(last.fit * 100)}% ${'★'.repeat(last.stars)}${'☆'.repeat(3 - last.stars)}.${tip} Still to cut: ${left.join(', ')}.`,
   );
 }
 

@@ -1,8 +1,17 @@
 /**
  * The lab's challenge, headless: shapes printed on the sheet with dashed cutting lines (a circle, a
- * star and a heart), to be cut out. A shape counts as cut out once a piece that has come away holds
- * at least half of it; its fit is the overlap of that piece with the shape, as cells of the sheet at
- * rest: |shape and piece| / |shape or piece| (the Jaccard index), 1 for a clean cut along the line.
+ * star and a heart), to be cut out. A shape counts as cut out once a piece that came away holds a
+ * fifth of its cells (the cells of the sheet at rest whose centres lie inside its line), or less than
+ * a quarter of them still hang on the line: it is scored by the piece that came away with most.
+ *
+ * Its fit says how close to the line the cut ran, within a link's length either way: a cut removes
+ * the cells it runs through, so a cut right on the line takes the shape's edge cells with it. The
+ * shape's core (its cells whose centres lie at least one link spacing inside the line) should all be
+ * in the piece, and the piece should hold nothing farther than one spacing outside the line:
+ * fit = max(0, 1 - (core cells missing + cells beyond / 2) / inside cells), 1 for a cut along the
+ * line. Measured on the still sheet at 32 points across (cuts along the line moved out from the
+ * shape's middle): 1 from 0 to 0.2 m out, 0.87-0.94 at 0.1 m in, 0.74-0.95 at 0.3 m out, 0.4-0.61
+ * at 0.4 m out, 0 for a 1.8 m square round the shape.
  */
 import { type Cloth, type PhysicsWorld, slotOf } from '@bitphysics/physics';
 import type { ClothCells } from './cells';
@@ -64,16 +73,58 @@ export function insidePolygon(poly: readonly number[], x: number, y: number): bo
   return inside;
 }
 
-/** Per shape, the cells (row-major indices) of a sheet of `size` points across whose centres at rest lie inside it. */
-export function shapeCells(size: number): number[][] {
+/** Distance from point (x, y) to the closed polygon `poly`'s outline, m. */
+function outlineDistance(poly: readonly number[], x: number, y: number): number {
+  let best = Infinity;
+  const n = poly.length / 2;
+  for (let i = 0, j = n - 1; i < n; j = i++) {
+    const ax = poly[2 * j]!,
+      ay = poly[2 * j + 1]!,
+      dx = poly[2 * i]! - ax,
+      dy = poly[2 * i + 1]! - ay,
+      l2 = dx * dx + dy * dy;
+    const t = l2 > 0 ? Math.max(0, Math.min(1, ((x - ax) * dx + (y - ay) * dy) / l2)) : 0;
+    best = Math.min(best, Math.hypot(x - ax - t * dx, y - ay - t * dy));
+  }
+  return best;
+}
+
+/** A shape's cells on a sheet of one size (row-major cell indices; see the header). */
+export interface ShapeMask {
+  /** Cells whose centres lie inside the line. */
+  readonly inside: readonly number[];
+  /** Cells whose centres lie at least one link spacing inside the line. */
+  readonly core: readonly number[];
+  /** Per cell, 1 where its centre lies inside the line or at most one spacing outside it. */
+  readonly allowed: Uint8Array;
+}
+
+/** Per shape, its cells on a sheet of `size` points across, at rest. */
+export function shapeMasks(size: number): ShapeMask[] {
   const { columns, rows, spacing } = sheetGrid(size);
   return SHAPES.map((s) => {
-    const cells: number[] = [];
+    const inside: number[] = [],
+      core: number[] = [];
+    const allowed = new Uint8Array((columns - 1) * (rows - 1));
     for (let r = 0; r + 1 < rows; r++)
-      for (let c = 0; c + 1 < columns; c++)
-        if (insidePolygon(s.outline, (c + 0.5) * spacing, (r + 0.5) * spacing)) cells.push(r * (columns - 1) + c);
-    return cells;
+      for (let c = 0; c + 1 < columns; c++) {
+        const x = (c + 0.5) * spacing,
+          y = (r + 0.5) * spacing,
+          cell = r * (columns - 1) + c;
+        const d = outlineDistance(s.outline, x, y);
+        if (insidePolygon(s.outline, x, y)) {
+          inside.push(cell);
+          allowed[cell] = 1;
+          if (d >= spacing) core.push(cell);
+        } else if (d <= spacing) allowed[cell] = 1;
+      }
+    return { inside, core, allowed };
   });
+}
+
+/** Per shape, the cells (row-major indices) of a sheet of `size` points across whose centres at rest lie inside it. */
+export function shapeCells(size: number): number[][] {
+  return shapeMasks(size).map((m) => [...m.inside]);
 }
 
 /** A shape cut out. */
@@ -82,29 +133,31 @@ export interface CutOut {
   shape: number;
   /** The fit, in [0, 1] (see the header). */
   fit: number;
-  /** Stars for the fit: 3 from 0.8, 2 from 0.6, else 1. */
+  /** Stars for the fit (starsFor), 0 to 3. */
   stars: number;
-  /** The piece it came away in (an index of that moment's ClothPieces). */
+  /** The piece it came away in (an index of that moment's ClothPieces), -1 if none holds any of it (cut to bits). */
   piece: number;
 }
 
-/** Stars for a fit in [0, 1]: 3 from 0.8, 2 from 0.6, else 1. */
+/** Stars for a fit in [0, 1]: 3 from 0.9, 2 from 0.6, 1 from 0.3, else none. */
 export function starsFor(fit: number): number {
-  return fit >= 0.8 ? 3 : fit >= 0.6 ? 2 : 1;
+  return fit >= 0.9 ? 3 : fit >= 0.6 ? 2 : fit >= 0.3 ? 1 : 0;
 }
 
 /**
- * The shapes among `pending` (indices of SHAPES) that pieces which came away now hold: for each, the
- * free piece holding most of its cells, if at least half. A cell is in a piece when its four corners
- * are and at least one of its triangles is whole.
- * @param masks shapeCells of the sheet's size.
+ * The shapes among `pending` (indices of SHAPES) that have come off the line: a free piece holds a
+ * fifth of their inside cells, or less than a quarter are in pieces still hanging. Each is scored by
+ * the free piece holding most of its
+ * inside cells (-1 and fit 0 if none holds any), with its fit (see the header). A cell is in a piece
+ * when its four corners are and at least one of its triangles is whole.
+ * @param masks shapeMasks of the sheet's size.
  */
 export function scoreCutOuts(
   world: PhysicsWorld,
   cloth: Cloth,
   cells: ClothCells,
   pieces: ClothPieces,
-  masks: readonly number[][],
+  masks: readonly ShapeMask[],
   pending: readonly number[],
 ): CutOut[] {
   const C = cloth.columns;
@@ -116,21 +169,23 @@ export function scoreCutOuts(
     if (pieces.pieceOf[i + 1] !== p || pieces.pieceOf[i + C] !== p || pieces.pieceOf[i + C + 1] !== p) return -1;
     return cells.triangles(world, cell) ? p : -1;
   };
-  // Cells of each free piece.
-  const freeCells = new Map<number, number>();
+  // The free piece each cell is in (-1: none), and whether it hangs in a held one.
   const n = cells.across * cells.down;
   const pieceOfCell = new Int32Array(n);
+  const hanging = new Uint8Array(n);
   for (let cell = 0; cell < n; cell++) {
     const p = cellPiece(cell);
     pieceOfCell[cell] = p >= 0 && !pieces.held[p] ? p : -1;
-    if (pieceOfCell[cell]! >= 0) freeCells.set(p, (freeCells.get(p) ?? 0) + 1);
+    hanging[cell] = p >= 0 && pieces.held[p] ? 1 : 0;
   }
   const out: CutOut[] = [];
   for (const s of pending) {
     const mask = masks[s]!;
-    if (mask.length === 0) continue;
+    if (mask.inside.length === 0) continue;
+    let held = 0;
     const count = new Map<number, number>();
-    for (const cell of mask) {
+    for (const cell of mask.inside) {
+      held += hanging[cell]!;
       const p = pieceOfCell[cell]!;
       if (p >= 0) count.set(p, (count.get(p) ?? 0) + 1);
     }
@@ -141,8 +196,16 @@ export function scoreCutOuts(
         most = k;
         best = p;
       }
-    if (best < 0 || most < mask.length / 2) continue;
-    const fit = most / (mask.length + freeCells.get(best)! - most);
+    if (held >= mask.inside.length / 4 && most < mask.inside.length / 5) continue;
+    if (best < 0) {
+      out.push({ shape: s, fit: 0, stars: 0, piece: -1 });
+      continue;
+    }
+    let missing = 0,
+      beyond = 0;
+    for (const cell of mask.core) if (pieceOfCell[cell] !== best) missing++;
+    for (let cell = 0; cell < n; cell++) if (pieceOfCell[cell] === best && !mask.allowed[cell]) beyond++;
+    const fit = Math.max(0, 1 - (missing + beyond / 2) / mask.inside.length);
     out.push({ shape: s, fit, stars: starsFor(fit), piece: best });
   }
   return out;
@@ -159,7 +222,7 @@ export class Challenge {
   scraps = 0;
   /** The pieces at the last update. */
   pieces: ClothPieces | null = null;
-  private readonly masks: number[][];
+  private readonly masks: ShapeMask[];
   private seenVersion = -1;
 
   constructor(
@@ -167,7 +230,7 @@ export class Challenge {
     private readonly cloth: Cloth,
     private readonly cells: ClothCells,
   ) {
-    this.masks = shapeCells(cloth.columns);
+    this.masks = shapeMasks(cloth.columns);
   }
 
   /** Indices of the shapes not cut out yet. */
