@@ -538,6 +538,9 @@ function updateStatus(): void {
 
 let lastFrame = performance.now() / 1000;
 let layerWorld: PhysicsWorld | null = null;
+let links = 0,
+  linksVersion = -1,
+  linksWorld: PhysicsWorld | null = null;
 function draw(alpha: number, world: PhysicsWorld): void {
   const now = performance.now() / 1000;
   const dt = shell.paused ? 0 : Math.min(0.05, now - lastFrame);
@@ -564,7 +567,12 @@ function draw(alpha: number, world: PhysicsWorld): void {
   drawCard();
   playSounds();
   updateStatus();
-  const links = query(world, [world.components.ClothLink]).length;
+  // The links left, counted again only when the cloth's links changed (a query allocates).
+  if (linksVersion !== world.cloth.version || linksWorld !== world) {
+    links = query(world, [world.components.ClothLink]).length;
+    linksVersion = world.cloth.version;
+    linksWorld = world;
+  }
   readout.set(0, String(links));
   readout.set(1, String(torn));
   readout.set(2, String(cut));

@@ -210,7 +210,10 @@ export class Yard {
       const bend = Math.max(-1, Math.min(1, w[0]! / 6));
       const sx = cam.toScreenX(x + 0.03 * Math.sin(x * 17));
       const h = len * (0.7 + 0.3 * Math.sin(x * 31));
-      g.moveTo(sx, Y0 + 1).quadraticCurveTo(sx + bend * h * 0.3, Y0 - h * 0.6, sx + bend * h * 0.8, Y0 - h * (1 - 0.35 * Math.abs(bend)));
+      // Two straight pieces, the upper one bent further (a curve would be cut into many on every frame).
+      g.moveTo(sx, Y0 + 1)
+        .lineTo(sx + bend * h * 0.2, Y0 - h * 0.55)
+        .lineTo(sx + bend * h * 0.8, Y0 - h * (1 - 0.35 * Math.abs(bend)));
     }
     g.stroke({ width: Math.max(1, cam.toScreenLength(0.02)), color: 0x4e8a34 });
   }
