@@ -407,7 +407,7 @@ function drawBanner(now: number): void {
     return;
   }
   const t = shell.world.time;
-  setBanner(`Level ${params.level}: ${scene.level.name}`, 0xffffff, t < 2 ? 1 : Math.max(0, 1 - (t - 2) * 2));
+  setBanner(`Level ${params.level}: ${scene.level.name}`, 0xffffff, t < 1 ? 1 : Math.max(0, 1 - (t - 1) * 2));
 }
 function setBanner(text: string, color: number, alpha: number): void {
   if (banner.text !== text) banner.text = text;

@@ -295,6 +295,20 @@ export class RopeView {
           g.rect(x, y - bh, 1, bh).fill({ color: 0x4b2219 });
       }
       g.rect(side < 0 ? inner - 3 : inner, 0, 3, floor).fill({ color: 0x3a1a12, alpha: 0.6 });
+      // On a wide screen the walls show more: a window onto the night in each, the moon in the left one.
+      if (x1 - x0 > S(1.8)) {
+        const w = S(1.1),
+          h = S(1.6),
+          wx = (x0 + x1) / 2 - w / 2,
+          wy = Y(6.6);
+        g.rect(wx - S(0.08), wy - S(0.08), w + S(0.16), h + S(0.16)).fill({ color: 0x5a3b22 });
+        g.rect(wx, wy, w, h).fill({ color: 0x14284a });
+        for (let k = 0; k < 6; k++)
+          g.circle(wx + w * ((k * 0.37 + 0.13) % 1), wy + h * ((k * 0.61 + 0.2) % 1), Math.max(1, S(0.02))).fill({ color: 0xffffff });
+        if (side < 0) g.circle(wx + w * 0.68, wy + h * 0.28, S(0.16)).fill({ color: 0xf3ecc8 });
+        g.rect(wx + w / 2 - S(0.03), wy, S(0.06), h).fill({ color: 0x5a3b22 });
+        g.rect(wx, wy + h / 2 - S(0.03), w, S(0.06)).fill({ color: 0x5a3b22 });
+      }
     }
     // The beam the ropes hang from, and a brass ring at each anchor.
     const top = Math.max(...level.anchors.map((a) => a[1]));
