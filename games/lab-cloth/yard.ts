@@ -172,6 +172,17 @@ export class Yard {
           .stroke({ width: Math.max(1, S(0.04)), color: 0xffffff });
       }
       g.rect(left, 0, Math.max(2, S(0.05)), ground).fill({ color: 0x8c7a5e });
+      // On a wide screen, the back door and another window.
+      if (left > S(2.4)) {
+        const dx = left - S(2.1),
+          dw = S(0.9),
+          dh = S(2.1);
+        g.rect(dx, ground - dh, dw, dh)
+          .fill({ color: 0x3f6e8c })
+          .stroke({ width: Math.max(2, S(0.05)), color: 0xffffff });
+        g.circle(dx + dw * 0.82, ground - dh * 0.48, S(0.04)).fill({ color: 0xc8a64a });
+        g.rect(dx + S(0.12), ground - dh + S(0.15), dw - S(0.24), S(0.5)).fill({ color: 0x9cc3dc });
+      }
     }
     // The brick wall on the right.
     const right = X(YARD.maxX);
@@ -186,6 +197,23 @@ export class Yard {
           g.rect(x, y - bh, Math.max(1, S(0.015)), bh).fill({ color: 0xd8c3a5, alpha: 0.8 });
       }
       g.rect(right - Math.max(2, S(0.05)), 0, Math.max(2, S(0.05)), ground).fill({ color: 0x6e3426 });
+      // Ivy up the wall's edge, and on a wide screen a wooden gate in it.
+      const ivy = random(11);
+      for (let k = 0; k < 40; k++) {
+        const y = ground - S(3.2) * ivy() ** 1.5,
+          x = right + S(0.35) * ivy() ** 2;
+        g.ellipse(x, y, S(0.09), S(0.06)).fill({ color: ivy() < 0.5 ? 0x3f7a35 : 0x56953f });
+      }
+      if (W - right > S(1.8)) {
+        const gx = right + S(0.7),
+          gw = S(1),
+          gh = S(1.9);
+        g.rect(gx, ground - gh, gw, gh)
+          .fill({ color: 0x7a5230 })
+          .stroke({ width: 2, color: 0x4a2f18 });
+        for (let k = 1; k < 5; k++) g.rect(gx + (gw * k) / 5 - 1, ground - gh, 2, gh).fill({ color: 0x5d3d22 });
+        g.circle(gx + gw * 0.85, ground - gh * 0.5, S(0.04)).fill({ color: 0xc8a64a });
+      }
     }
     // Posts and the line between them.
     const top = LINE_Y + 0.15;
