@@ -41,38 +41,10 @@ import {
   UP,
   WELD_ANGULAR_SOFT,
 } from './layout-2d.js';
+import { soft, unwind } from './rows-2d.js';
 import { fixedSpring } from './spring.js';
 
 /** Preparation of the 2D joint rows at the start of a step (stage 2 of joints/solver-2d.ts): anchors, axes and centres, effective masses, spring and rigid softness, and last step's impulses. */
-
-/**
- * Writes the soft-constraint coefficients of a spring of `hertz` (Hz, >= 0) and damping ratio `zeta`
- * (>= 0) integrated implicitly over `h` (s) at rows[o..o+2]: bias rate omega / (2 zeta + h omega) (1/s),
- * mass scale a / (1 + a) and impulse scale 1 / (1 + a), a = h omega (2 zeta + h omega) (Catto, "Soft
- * Constraints", GDC 2011; Box2D v3 b2MakeSoft). hertz 0 gives the rigid 0, 1, 0. Written so every
- * coefficient stays finite and in range at any hertz: a spring so soft that a rounds to 0 (a denormal
- * hertz) gives 0, 0, 1, no impulse at all; one so stiff that a overflows gives 1 / h, 1, 0.
- */
-function soft(rows: Float64Array, o: number, hertz: number, zeta: number, h: number): void {
-  if (hertz === 0) {
-    rows[o] = 0;
-    rows[o + 1] = 1;
-    rows[o + 2] = 0;
-    return;
-  }
-  const omega = 2 * Math.PI * hertz;
-  const hw = h * omega;
-  const a = hw * (2 * zeta + hw);
-  if (!(a > 0)) {
-    rows[o] = 0;
-    rows[o + 1] = 0;
-    rows[o + 2] = 1;
-    return;
-  }
-  rows[o] = zeta === 0 ? 1 / h : 1 / (h + (2 * zeta) / omega);
-  rows[o + 1] = 1 / (1 + 1 / a);
-  rows[o + 2] = 1 / (1 + a);
-}
 
 /** `a` if it holds `n` numbers, else a new array of at least n (twice a's length): its contents are not kept. */
 function atLeast(a: Float64Array, n: number): Float64Array {
@@ -336,11 +308,4 @@ export function prepareJoints(world: PhysicsWorld, hs: number): void {
   js.linkCount = links;
   js.pinCount = pins;
   js.generalCount = n - links - pins;
-}
-
-/** Wraps an angle into [-pi, pi]. */
-export function unwind(x: number): number {
-  if (x > Math.PI) return x - 2 * Math.PI * Math.floor((x + Math.PI) / (2 * Math.PI));
-  if (x < -Math.PI) return x + 2 * Math.PI * Math.floor((Math.PI - x) / (2 * Math.PI));
-  return x;
 }

@@ -34,8 +34,7 @@ import {
   SM,
   UP,
 } from './layout-2d.js';
-import { unwind } from './prepare-2d.js';
-import { limitRow, solvePointBlock } from './rows-2d.js';
+import { limitRow, solvePointBlock, unwind } from './rows-2d.js';
 
 /**
  * The 2D revolute joint (a hinge, with an optional angle limit, motor and spring): its options and

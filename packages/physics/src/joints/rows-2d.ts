@@ -46,7 +46,8 @@ import {
 /**
  * The row code the 2D joint types share, on the frame of the row being solved (layout-2d.ts F_*): the
  * fixed-stiffness spring's impulse, the point-to-point block of the revolute and weld joints, and the
- * axis rows of the prismatic and wheel joints. Each type's own row solve is in its file
+ * axis rows of the prismatic and wheel joints; and the soft-constraint coefficients and the angle
+ * wrapping that the preparation and the revolute joint use. Each type's own row solve is in its file
  * (distance-joint.ts, revolute-joint.ts, weld-joint.ts, mouse-joint.ts); joints/solve-2d.ts runs them.
  */
 
@@ -337,4 +338,40 @@ function solveAcrossAxis(
   f[F_VBX] = vBx;
   f[F_VBY] = vBy;
   f[F_WB] = wB;
+}
+
+/**
+ * Writes the soft-constraint coefficients of a spring of `hertz` (Hz, >= 0) and damping ratio `zeta`
+ * (>= 0) integrated implicitly over `h` (s) at rows[o..o+2]: bias rate omega / (2 zeta + h omega) (1/s),
+ * mass scale a / (1 + a) and impulse scale 1 / (1 + a), a = h omega (2 zeta + h omega) (Catto, "Soft
+ * Constraints", GDC 2011; Box2D v3 b2MakeSoft). hertz 0 gives the rigid 0, 1, 0. Written so every
+ * coefficient stays finite and in range at any hertz: a spring so soft that a rounds to 0 (a denormal
+ * hertz) gives 0, 0, 1, no impulse at all; one so stiff that a overflows gives 1 / h, 1, 0.
+ */
+export function soft(rows: Float64Array, o: number, hertz: number, zeta: number, h: number): void {
+  if (hertz === 0) {
+    rows[o] = 0;
+    rows[o + 1] = 1;
+    rows[o + 2] = 0;
+    return;
+  }
+  const omega = 2 * Math.PI * hertz;
+  const hw = h * omega;
+  const a = hw * (2 * zeta + hw);
+  if (!(a > 0)) {
+    rows[o] = 0;
+    rows[o + 1] = 0;
+    rows[o + 2] = 1;
+    return;
+  }
+  rows[o] = zeta === 0 ? 1 / h : 1 / (h + (2 * zeta) / omega);
+  rows[o + 1] = 1 / (1 + 1 / a);
+  rows[o + 2] = 1 / (1 + a);
+}
+
+/** Wraps an angle into [-pi, pi]. */
+export function unwind(x: number): number {
+  if (x > Math.PI) return x - 2 * Math.PI * Math.floor((x + Math.PI) / (2 * Math.PI));
+  if (x < -Math.PI) return x + 2 * Math.PI * Math.floor((Math.PI - x) / (2 * Math.PI));
+  return x;
 }
