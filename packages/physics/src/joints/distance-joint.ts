@@ -1,5 +1,8 @@
+import { BS2_DX, BS2_DY, BS2_INV_MASS, BS2_PUSHED, BS2_VX, BS2_VY } from '../solver/body-state-layout.js';
 import { assertKnownKeys, assertNonNegative, assertPositive, describe } from '../validation/validate.js';
+import type { JointState } from '../world/joint-state-2d.js';
 import { JointFlag, JointType } from '../world/joint-store-2d.js';
+import { LINK_FLOATS, LINK_INTS, ROW_FLOATS } from '../world/joint-strides-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { assertBreakLimit, BASE_KEYS, centre, checkEnds, handle, type JointBaseOptions, makeJoint, optionalPoint } from './joint-2d.js';
 import {
@@ -39,9 +42,11 @@ import {
 import { limitRow, springImpulse } from './rows-2d.js';
 
 /**
- * The 2D distance joint (a rod, a rope or a spring between two anchors): its options, addDistanceJoint
- * and its row solve. Its rows are prepared and finished with the other 2D joints' (joints/prepare-2d.ts,
- * finish-2d.ts) and solved in their loop (joints/solve-2d.ts).
+ * The 2D distance joint (a rod, a rope or a spring between two anchors): its options, addDistanceJoint,
+ * its row solve, and the point links' passes (a rod or rope between two bodies that do not turn and
+ * has no spring, packed by joints/prepare-2d.ts: warm start, solve, impulses back into the rows). Its
+ * general rows are prepared and finished with the other 2D joints' (joints/prepare-2d.ts, finish-2d.ts)
+ * and solved in their loop (joints/solve-2d.ts).
  */
 
 /**
@@ -197,4 +202,118 @@ export function solveDistanceRow(rows: Float64Array, o: number, flags: number, u
   f[F_WB] = wB + iB * (rBx * Py - rBy * Px);
   // A taut (or sprung) link pushes its bodies; a slack rope leaves them in free flight.
   return rows[o + ISPR] !== 0 || rows[o + ILOW] !== 0 || rows[o + IUP] !== 0 ? ROW_PUSHED : ROW_MOVED;
+}
+
+/**
+ * The point links' warm start (once per substep, before the contacts'): each link's accumulated impulse
+ * applied again along the anchors' current line.
+ */
+export function warmStartPointLinks(world: PhysicsWorld): void {
+  const js = world.joints;
+  const sb = world.collision.bodyState;
+  const lf = js.links,
+    lint = js.linkInts;
+  for (let l = 0, m = js.linkCount; l < m; l++) {
+    const f = l * LINK_FLOATS,
+      i = l * LINK_INTS;
+    const acc = lf[f + 4]!;
+    if (acc === 0) continue;
+    const oA = lint[i]!,
+      oB = lint[i + 1]!;
+    const dx = sb[oB + BS2_DX]! - sb[oA + BS2_DX]! + lf[f]!,
+      dy = sb[oB + BS2_DY]! - sb[oA + BS2_DY]! + lf[f + 1]!;
+    const L = Math.sqrt(dx * dx + dy * dy);
+    if (L < 1e-12) continue;
+    const s = acc / L,
+      Px = s * dx,
+      Py = s * dy,
+      mA = sb[oA + BS2_INV_MASS]!,
+      mB = sb[oB + BS2_INV_MASS]!;
+    sb[oA + BS2_VX] = sb[oA + BS2_VX]! - mA * Px;
+    sb[oA + BS2_VY] = sb[oA + BS2_VY]! - mA * Py;
+    sb[oB + BS2_VX] = sb[oB + BS2_VX]! + mB * Px;
+    sb[oB + BS2_VY] = sb[oB + BS2_VY]! + mB * Py;
+  }
+}
+
+/**
+ * The point links' pass: the distance joint's rod (soft while `useBias`, Box2D's joint softness) or
+ * rope (pulls only, speculative while slack), with the anchors' offset fixed within the step.
+ */
+export function solvePointLinks(world: PhysicsWorld, invH: number, useBias: boolean): void {
+  const js = world.joints;
+  const m = js.linkCount;
+  if (m === 0) return;
+  const sb = world.collision.bodyState,
+    lf = js.links,
+    lint = js.linkInts;
+  // The rigid joint softness of this step (the same for every row; see prepareJoints).
+  const jb = useBias ? js.softness[0]! : 0,
+    jm = useBias ? js.softness[1]! : 1,
+    ji = useBias ? js.softness[2]! : 0;
+  for (let l = 0; l < m; l++) {
+    const f = l * LINK_FLOATS,
+      i = l * LINK_INTS;
+    const oA = lint[i]!,
+      oB = lint[i + 1]!;
+    const dx = sb[oB + BS2_DX]! - sb[oA + BS2_DX]! + lf[f]!,
+      dy = sb[oB + BS2_DY]! - sb[oA + BS2_DY]! + lf[f + 1]!;
+    const L = Math.sqrt(dx * dx + dy * dy);
+    if (L < 1e-12) continue;
+    const ux = dx / L,
+      uy = dy / L;
+    const vAx = sb[oA + BS2_VX]!,
+      vAy = sb[oA + BS2_VY]!,
+      vBx = sb[oB + BS2_VX]!,
+      vBy = sb[oB + BS2_VY]!;
+    const vr = (vBx - vAx) * ux + (vBy - vAy) * uy;
+    const C = L - lf[f + 3]!;
+    const acc = lf[f + 4]!;
+    let impulse: number;
+    if (lf[f + 5] === 0) {
+      impulse = -jm * lf[f + 2]! * (vr + jb * C) - ji * acc;
+      lf[f + 4] = acc + impulse;
+    } else {
+      // Rope: C = maxLength - L >= 0; the accumulated impulse (stored negated: pulling) <= 0.
+      let bias = 0,
+        ms = 1,
+        is = 0;
+      if (C < 0) bias = -C * invH;
+      else if (useBias) {
+        bias = -jb * C;
+        ms = jm;
+        is = ji;
+      }
+      const old = -acc;
+      let next = old - ms * lf[f + 2]! * (-vr + bias) - is * old;
+      if (next < 0) next = 0;
+      lf[f + 4] = -next;
+      impulse = old - next;
+    }
+    const Px = impulse * ux,
+      Py = impulse * uy,
+      mA = sb[oA + BS2_INV_MASS]!,
+      mB = sb[oB + BS2_INV_MASS]!;
+    sb[oA + BS2_VX] = vAx - mA * Px;
+    sb[oA + BS2_VY] = vAy - mA * Py;
+    sb[oB + BS2_VX] = vBx + mB * Px;
+    sb[oB + BS2_VY] = vBy + mB * Py;
+    if (lf[f + 4] !== 0) {
+      sb[oA + BS2_PUSHED] = 1;
+      sb[oB + BS2_PUSHED] = 1;
+    }
+  }
+}
+
+/** The point links' accumulated impulses back into their rows (the spring slot of a rod, the upper limit's of a rope), which keep them for the next step. */
+export function finishPointLinks(js: JointState): void {
+  const rows = js.rows;
+  const lf = js.links,
+    lint = js.linkInts;
+  for (let l = 0, m = js.linkCount; l < m; l++) {
+    const f = l * LINK_FLOATS,
+      o = lint[l * LINK_INTS + 2]! * ROW_FLOATS;
+    if (lf[f + 5] === 0) rows[o + ISPR] = lf[f + 4]!;
+    else rows[o + IUP] = -lf[f + 4]!;
+  }
 }

@@ -2,8 +2,9 @@ import { BS2_DX, BS2_DY, BS2_STRIDE } from '../solver/body-state-layout.js';
 import { currentHandle } from '../world/handles.js';
 import { pushBreak } from '../world/joint-state-2d.js';
 import { JointFlag, JointType } from '../world/joint-store-2d.js';
-import { IMPULSES, LINK_FLOATS, LINK_INTS, PIN_FLOATS, PIN_INTS, ROW_FLOATS, ROW_INTS } from '../world/joint-strides-2d.js';
+import { IMPULSES, ROW_FLOATS, ROW_INTS } from '../world/joint-strides-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
+import { finishPointLinks } from './distance-joint.js';
 import {
   AXX,
   AXY,
@@ -31,6 +32,7 @@ import {
   TF,
 } from './layout-2d.js';
 import { removeJointUnchecked } from './remove.js';
+import { finishPins } from './revolute-joint.js';
 
 /** The end of a step's 2D joint solve (stage 4 of joints/solver-2d.ts): forces and torques, the largest position error, impulses kept for warm starting, and joints past their break threshold removed. */
 
@@ -57,22 +59,8 @@ export function finishJoints(world: PhysicsWorld, hs: number): void {
   let maxError = 0,
     maxJoint = 0;
   let doomed: number[] | null = null;
-  const lf = js.links,
-    lint = js.linkInts;
-  for (let l = 0, m = js.linkCount; l < m; l++) {
-    const f = l * LINK_FLOATS,
-      o = lint[l * LINK_INTS + 2]! * ROW_FLOATS;
-    if (lf[f + 5] === 0) rows[o + ISPR] = lf[f + 4]!;
-    else rows[o + IUP] = -lf[f + 4]!;
-  }
-  const pf = js.pins,
-    pint = js.pinInts;
-  for (let l = 0, m = js.pinCount; l < m; l++) {
-    const f = l * PIN_FLOATS,
-      o = pint[l * PIN_INTS + 2]! * ROW_FLOATS;
-    rows[o + ILX] = pf[f + 6]!;
-    rows[o + ILY] = pf[f + 7]!;
-  }
+  finishPointLinks(js);
+  finishPins(js);
   for (let r = 0; r < n; r++) {
     const o = r * ROW_FLOATS,
       q = r * ROW_INTS;

@@ -12,7 +12,7 @@ import {
 import { JointType } from '../world/joint-store-2d.js';
 import { ROW_FLOATS, ROW_INTS } from '../world/joint-strides-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { solveDistanceRow } from './distance-joint.js';
+import { solveDistanceRow, solvePointLinks } from './distance-joint.js';
 import {
   DANG,
   DCX,
@@ -51,16 +51,15 @@ import {
   TF,
 } from './layout-2d.js';
 import { solveMouseRow } from './mouse-joint.js';
-import { solvePins, solvePointLinks } from './pins-2d.js';
-import { solveRevoluteRow } from './revolute-joint.js';
+import { solvePins, solveRevoluteRow } from './revolute-joint.js';
 import { solveAxisRow } from './rows-2d.js';
 import { solveWeldRow } from './weld-joint.js';
 
 /**
- * The 2D joint solve of a substep (stage 3 of joints/solver-2d.ts): every general row once, each by its
- * type's row solve (distance-joint.ts, revolute-joint.ts, weld-joint.ts, mouse-joint.ts; the prismatic
- * and wheel joints' axis rows in rows-2d.ts) on the frame of layout-2d.ts, in row order, then the pins
- * and point links.
+ * The 2D joint solve of a substep (stage 3 of joints/solver-2d.ts): the point links (distance-joint.ts)
+ * and the pins (revolute-joint.ts), then every general row once, each by its type's row solve
+ * (distance-joint.ts, revolute-joint.ts, weld-joint.ts, mouse-joint.ts; the prismatic and wheel joints'
+ * axis rows in rows-2d.ts) on the frame of layout-2d.ts, in row order.
  */
 
 /** The frame of the row being solved (layout-2d.ts F_*). */

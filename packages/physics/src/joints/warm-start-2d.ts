@@ -1,8 +1,10 @@
 import { BS2_DX, BS2_DY, BS2_INV_INERTIA, BS2_INV_MASS, BS2_STRIDE, BS2_VX, BS2_VY, BS2_W } from '../solver/body-state-layout.js';
 import { JointType } from '../world/joint-store-2d.js';
-import { LINK_FLOATS, LINK_INTS, PIN_FLOATS, PIN_INTS, ROW_FLOATS, ROW_INTS } from '../world/joint-strides-2d.js';
+import { ROW_FLOATS, ROW_INTS } from '../world/joint-strides-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
+import { warmStartPointLinks } from './distance-joint.js';
 import { AXX, AXY, DCX, DCY, IA, IANG, IB, ILOW, ILX, ILY, IMOT, ISPR, IUP, PIN, POINT_LINK, RAX, RAY, RBX, RBY, TF } from './layout-2d.js';
+import { warmStartPins } from './revolute-joint.js';
 
 /** Per substep, 2D joints (stage 3 of joints/solver-2d.ts): the joints' rotations integrated after the positions move, and last step's impulses applied again (warm start) before the solve. */
 
@@ -46,62 +48,8 @@ export function warmStartJoints(world: PhysicsWorld): void {
     rot = js.rotation,
     rows = js.rows,
     ri = js.rowInts;
-  const lf = js.links,
-    lint = js.linkInts;
-  for (let l = 0, m = js.linkCount; l < m; l++) {
-    const f = l * LINK_FLOATS,
-      i = l * LINK_INTS;
-    const acc = lf[f + 4]!;
-    if (acc === 0) continue;
-    const oA = lint[i]!,
-      oB = lint[i + 1]!;
-    const dx = sb[oB + BS2_DX]! - sb[oA + BS2_DX]! + lf[f]!,
-      dy = sb[oB + BS2_DY]! - sb[oA + BS2_DY]! + lf[f + 1]!;
-    const L = Math.sqrt(dx * dx + dy * dy);
-    if (L < 1e-12) continue;
-    const s = acc / L,
-      Px = s * dx,
-      Py = s * dy,
-      mA = sb[oA + BS2_INV_MASS]!,
-      mB = sb[oB + BS2_INV_MASS]!;
-    sb[oA + BS2_VX] = sb[oA + BS2_VX]! - mA * Px;
-    sb[oA + BS2_VY] = sb[oA + BS2_VY]! - mA * Py;
-    sb[oB + BS2_VX] = sb[oB + BS2_VX]! + mB * Px;
-    sb[oB + BS2_VY] = sb[oB + BS2_VY]! + mB * Py;
-  }
-  const pf = js.pins,
-    pint = js.pinInts;
-  for (let l = 0, m = js.pinCount; l < m; l++) {
-    const f = l * PIN_FLOATS,
-      i = l * PIN_INTS;
-    const Px = pf[f + 6]!,
-      Py = pf[f + 7]!;
-    // One comparison that always runs (|Px| + |Py| is 0 only when both are): the second half of
-    // `Px === 0 && Py === 0` runs only in a world's first steps, which V8 compiles as a deoptimisation.
-    if (Math.abs(Px) + Math.abs(Py) === 0) continue;
-    const ia = pint[i]!,
-      ib = pint[i + 1]!,
-      oA = ia * BS2_STRIDE,
-      oB = ib * BS2_STRIDE;
-    const cA = rot[ia * 3]!,
-      sA = rot[ia * 3 + 1]!,
-      cB = rot[ib * 3]!,
-      sB = rot[ib * 3 + 1]!;
-    const rAx = cA * pf[f]! - sA * pf[f + 1]!,
-      rAy = sA * pf[f]! + cA * pf[f + 1]!;
-    const rBx = cB * pf[f + 2]! - sB * pf[f + 3]!,
-      rBy = sB * pf[f + 2]! + cB * pf[f + 3]!;
-    const mA = sb[oA + BS2_INV_MASS]!,
-      iA = sb[oA + BS2_INV_INERTIA]!,
-      mB = sb[oB + BS2_INV_MASS]!,
-      iB = sb[oB + BS2_INV_INERTIA]!;
-    sb[oA + BS2_VX] = sb[oA + BS2_VX]! - mA * Px;
-    sb[oA + BS2_VY] = sb[oA + BS2_VY]! - mA * Py;
-    sb[oA + BS2_W] = sb[oA + BS2_W]! - iA * (rAx * Py - rAy * Px);
-    sb[oB + BS2_VX] = sb[oB + BS2_VX]! + mB * Px;
-    sb[oB + BS2_VY] = sb[oB + BS2_VY]! + mB * Py;
-    sb[oB + BS2_W] = sb[oB + BS2_W]! + iB * (rBx * Py - rBy * Px);
-  }
+  warmStartPointLinks(world);
+  warmStartPins(world);
   for (let r = 0, end = js.generalCount === 0 ? 0 : n; r < end; r++) {
     const o = r * ROW_FLOATS,
       q = r * ROW_INTS;
