@@ -1,13 +1,17 @@
+import { BS3_STRIDE, BS3_WX, BS3_WY, BS3_WZ } from '../solver/body-state-layout.js';
 import { assertFinite, describe } from '../validation/validate.js';
 import { currentHandle } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { centre, ends, type Joint3DBaseOptions, make, point, requireJoint3D, unit, wakeJoint3D } from './joint-3d.js';
+import { type JointPass3D, type JointRows3D, preparePointBlock, solvePointRows } from './rows-3d.js';
+import { angularRow, ax, bx, qa, qb, rot } from './rows-3d-math.js';
+import { useJointType3D } from './solver-3d.js';
 import { Joint3DFlag, Joint3DType, joints3DOf } from './store-3d.js';
 
 /**
  * The 3D ball-and-socket joint (a shared point, with an optional cone limit on B's axis): its options,
- * addBallJoint3D and setBallJoint3DCone. Its rows are solved with the other 3D joints'
- * (joints/solver-3d.ts).
+ * addBallJoint3D and setBallJoint3DCone, and its rows (BALL_ROWS_3D), which joints/solver-3d.ts runs
+ * with the other 3D joints'.
  */
 
 /**
@@ -42,6 +46,7 @@ export function addBallJoint3D(world: PhysicsWorld, options: BallJoint3DOptions)
       throw new RangeError(`${where}: coneAngle must be in (0, pi), got ${describe(options.coneAngle)}`);
   }
   const j = make(world, where, Joint3DType.Ball, e, options, p, p, axis);
+  useJointType3D(Joint3DType.Ball, BALL_ROWS_3D);
   const s = joints3DOf(world, true);
   if (options.coneAngle !== undefined) {
     s.flags[j] = Joint3DFlag.Cone;
@@ -75,3 +80,48 @@ export function setBallJoint3DCone(world: PhysicsWorld, joint: number, coneAngle
   s.limit[j] = 0;
   wakeJoint3D(world, s, j);
 }
+
+/** A ball joint's cone: the angle between A's axis and B's stays within the half angle (s.upper). */
+function solveCone(p: JointPass3D, j: number, a: number, b: number): void {
+  const { s, sb, T, hs, useBias, bRate, ms, is } = p;
+  const oa = BS3_STRIDE * a,
+    ob = BS3_STRIDE * b;
+  rot(qa, s.uax[j]!, s.uay[j]!, s.uaz[j]!, ax);
+  rot(qb, s.ubx[j]!, s.uby[j]!, s.ubz[j]!, bx);
+  let nx = ax[1]! * bx[2]! - ax[2]! * bx[1]!,
+    ny = ax[2]! * bx[0]! - ax[0]! * bx[2]!,
+    nz = ax[0]! * bx[1]! - ax[1]! * bx[0]!;
+  const sn = Math.hypot(nx, ny, nz);
+  if (sn > 1e-9) {
+    nx /= sn;
+    ny /= sn;
+    nz /= sn;
+    const phi = Math.atan2(sn, ax[0]! * bx[0]! + ax[1]! * bx[1]! + ax[2]! * bx[2]!);
+    const C = s.upper[j]! - phi;
+    let bias = 0,
+      m = 1,
+      im = 0;
+    if (C > 0) bias = C / hs;
+    else if (useBias) {
+      bias = bRate * C;
+      m = ms;
+      im = is;
+    }
+    const cdot = -(
+      (sb[ob + BS3_WX]! - sb[oa + BS3_WX]!) * nx +
+      (sb[ob + BS3_WY]! - sb[oa + BS3_WY]!) * ny +
+      (sb[ob + BS3_WZ]! - sb[oa + BS3_WZ]!) * nz
+    );
+    s.limit[j] = angularRow(sb, T, a, b, -nx, -ny, -nz, cdot, bias, m, im, s.limit[j]!, 0, Infinity);
+  } else s.limit[j] = 0; // axes parallel: n undefined, far inside the cone; the row starts again from zero
+}
+
+/** A ball-and-socket joint: the point block, then its cone limit if it has one. */
+export function solveBallRow3D(p: JointPass3D, j: number, a: number, b: number, flags: number): void {
+  preparePointBlock(p, a, b);
+  solvePointRows(p, j, a, b);
+  if (flags & Joint3DFlag.Cone) solveCone(p, j, a, b);
+}
+
+/** The 3D ball joint's rows (rows-3d.ts JointRows3D). */
+export const BALL_ROWS_3D: JointRows3D = { solve: solveBallRow3D };

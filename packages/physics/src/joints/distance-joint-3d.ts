@@ -2,12 +2,16 @@ import { assertNonNegative, assertPositive, describe } from '../validation/valid
 import { currentHandle } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { centre, ends, type Joint3DBaseOptions, make, point, requireJoint3D, wakeJoint3D } from './joint-3d.js';
+import type { JointPass3D, JointRows3D } from './rows-3d.js';
+import { anchorSpeed, linearK, linearRow, pa, pb, ra, rb, referenceK } from './rows-3d-math.js';
+import { useJointType3D } from './solver-3d.js';
+import { fixedSpring } from './spring.js';
 import { Joint3DFlag, type Joint3DStore, Joint3DType, joints3DOf } from './store-3d.js';
 
 /**
  * The 3D distance joint (a rod, a spring, or a rope through its length limits): its options,
- * addDistanceJoint3D, setDistanceJoint3DLength and setDistanceJoint3DSpring. Its rows are solved with the
- * other 3D joints' (joints/solver-3d.ts).
+ * addDistanceJoint3D, setDistanceJoint3DLength and setDistanceJoint3DSpring, and its rows
+ * (DISTANCE_ROWS_3D), which joints/solver-3d.ts runs with the other 3D joints'.
  */
 
 /**
@@ -59,6 +63,7 @@ export function addDistanceJoint3D(world: PhysicsWorld, options: DistanceJoint3D
   if (typeof maxL !== 'number' || Number.isNaN(maxL) || !(maxL >= length))
     throw new RangeError(`${where}: maxLength must be >= length (${length}), got ${describe(maxL)}`);
   const j = make(world, where, Joint3DType.Distance, e, options, pa, pb, [0, 1, 0]);
+  useJointType3D(Joint3DType.Distance, DISTANCE_ROWS_3D);
   const s = joints3DOf(world, true);
   s.length[j] = length;
   s.lower[j] = minL;
@@ -151,3 +156,97 @@ export function setDistanceJoint3DSpring(world: PhysicsWorld, joint: number, her
   dropIdleDistanceImpulses(s, j);
   wakeJoint3D(world, s, j);
 }
+
+/** Scratch of a spring's soft coefficients. */
+const spring = new Float64Array(3);
+
+/**
+ * A distance joint's rows along the anchors' line: the spring (soft, fixed stiffness), the rod, and the
+ * one-sided length limits (speculative when apart). Anchors that meet reset its impulses.
+ */
+export function solveDistanceRow3D(p: JointPass3D, j: number, a: number, b: number, flags: number): void {
+  const { s, sb, T, hs, useBias, bRate, ms, is } = p;
+  let dx = pb[0]! + rb[0]! - pa[0]! - ra[0]!,
+    dy = pb[1]! + rb[1]! - pa[1]! - ra[1]!,
+    dz = pb[2]! + rb[2]! - pa[2]! - ra[2]!;
+  const len = Math.hypot(dx, dy, dz);
+  // No direction: nothing was warm-started; the rows start again from zero.
+  if (!(len > 1e-12)) {
+    s.lx[j] = 0;
+    s.limit[j] = 0;
+    s.ly[j] = 0;
+    return;
+  }
+  dx /= len;
+  dy /= len;
+  dz /= len;
+  const k = linearK(sb, T, a, b, dx, dy, dz);
+  if (!(k > 0)) return;
+  const L = s.length[j]!;
+  if (flags & Joint3DFlag.Spring) {
+    if (useBias) {
+      // A spring of fixed stiffness (see fixedSpring): its softness gamma from the reference mass,
+      // the row's mass from the effective mass k of the moment.
+      fixedSpring(spring, 0, s.hertz[j]!, s.dampingRatio[j]!, hs, referenceK(sb, T, a, b));
+      const gamma = spring[1]!,
+        soft = gamma < Infinity;
+      spring[1] = soft ? k / (k + gamma) : 0;
+      spring[2] = soft ? gamma / (k + gamma) : 1;
+      s.lx[j] = linearRow(
+        sb,
+        T,
+        a,
+        b,
+        dx,
+        dy,
+        dz,
+        k,
+        anchorSpeed(sb, a, b, dx, dy, dz),
+        spring[0]! * (len - L),
+        spring[1]!,
+        spring[2]!,
+        s.lx[j]!,
+        -Infinity,
+        Infinity,
+      );
+    }
+  } else if (!(flags & Joint3DFlag.Limit)) {
+    s.lx[j] = linearRow(
+      sb,
+      T,
+      a,
+      b,
+      dx,
+      dy,
+      dz,
+      k,
+      anchorSpeed(sb, a, b, dx, dy, dz),
+      bRate * (len - L),
+      ms,
+      is,
+      s.lx[j]!,
+      -Infinity,
+      Infinity,
+    );
+  }
+  if (flags & Joint3DFlag.Limit) {
+    // One-sided rows: len >= lower (impulse along +u) and len <= upper (along -u); speculative when apart.
+    if (s.lower[j]! > 0 || !(flags & Joint3DFlag.Spring)) {
+      const C = len - s.lower[j]!;
+      const bias = C > 0 ? C / hs : useBias ? bRate * C : 0,
+        m = C > 0 || !useBias ? 1 : ms,
+        im = C > 0 || !useBias ? 0 : is;
+      s.limit[j] = linearRow(sb, T, a, b, dx, dy, dz, k, anchorSpeed(sb, a, b, dx, dy, dz), bias, m, im, s.limit[j]!, 0, Infinity);
+    }
+    if (Number.isFinite(s.upper[j]!)) {
+      const C = s.upper[j]! - len;
+      const bias = C > 0 ? C / hs : useBias ? bRate * C : 0,
+        m = C > 0 || !useBias ? 1 : ms,
+        im = C > 0 || !useBias ? 0 : is;
+      s.ly[j] = linearRow(sb, T, a, b, -dx, -dy, -dz, k, -anchorSpeed(sb, a, b, dx, dy, dz), bias, m, im, s.ly[j]!, 0, Infinity);
+    }
+  }
+}
+
+/** The 3D distance joint's rows (rows-3d.ts JointRows3D). */
+export const DISTANCE_ROWS_3D: JointRows3D = { solve: solveDistanceRow3D };

@@ -1,11 +1,13 @@
 import { currentHandle } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { centre, ends, type Joint3DBaseOptions, make, point } from './joint-3d.js';
+import { errorRotation, type JointPass3D, type JointRows3D, preparePointBlock, solveAngularLock, solvePointRows } from './rows-3d.js';
+import { useJointType3D } from './solver-3d.js';
 import { Joint3DType } from './store-3d.js';
 
 /**
- * The 3D fixed joint (glues two bodies: no relative motion): its options and addFixedJoint3D. Its rows are
- * solved with the other 3D joints' (joints/solver-3d.ts).
+ * The 3D fixed joint (glues two bodies: no relative motion): its options, addFixedJoint3D, and its rows
+ * (FIXED_ROWS_3D), which joints/solver-3d.ts runs with the other 3D joints'.
  */
 
 /**
@@ -25,5 +27,18 @@ export function addFixedJoint3D(world: PhysicsWorld, options: FixedJoint3DOption
   const where = 'addFixedJoint3D';
   const e = ends(where, world, options, ['anchor']);
   const p = options.anchor === undefined ? centre(world, e.b) : point(where, 'anchor', options.anchor);
-  return currentHandle(world, make(world, where, Joint3DType.Fixed, e, options, p, p, [0, 1, 0]));
+  const j = make(world, where, Joint3DType.Fixed, e, options, p, p, [0, 1, 0]);
+  useJointType3D(Joint3DType.Fixed, FIXED_ROWS_3D);
+  return currentHandle(world, j);
 }
+
+/** A fixed joint: the three angular rows, then the point block. */
+export function solveFixedRow3D(p: JointPass3D, j: number, a: number, b: number, _flags: number): void {
+  errorRotation(p, j);
+  solveAngularLock(p, j, a, b, false);
+  preparePointBlock(p, a, b);
+  solvePointRows(p, j, a, b);
+}
+
+/** The 3D fixed joint's rows (rows-3d.ts JointRows3D). */
+export const FIXED_ROWS_3D: JointRows3D = { solve: solveFixedRow3D };

@@ -1,11 +1,29 @@
 import { currentHandle } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { centre, ends, type Joint3DBaseOptions, limitAndMotor, make, point, storeLimitAndMotor, unit } from './joint-3d.js';
-import { Joint3DType, joints3DOf } from './store-3d.js';
+import { C3, errorRotation, type JointPass3D, type JointRows3D, preparePointBlock, solveAngularLock } from './rows-3d.js';
+import {
+  anchorSpeed,
+  applyLinear,
+  bx,
+  K,
+  linearK,
+  linearRow,
+  qa,
+  restrictToPlane,
+  rot,
+  sliderAnchor,
+  solve3,
+  v3,
+  x3,
+} from './rows-3d-math.js';
+import { useJointType3D } from './solver-3d.js';
+import { Joint3DFlag, Joint3DType, joints3DOf } from './store-3d.js';
 
 /**
  * The 3D slider joint (translation along one axis, no rotation, with an optional limit and motor): its
- * options and addSliderJoint3D. Its rows are solved with the other 3D joints' (joints/solver-3d.ts).
+ * options, addSliderJoint3D, and its rows (SLIDER_ROWS_3D), which joints/solver-3d.ts runs with the
+ * other 3D joints'.
  */
 
 /**
@@ -43,6 +61,119 @@ export function addSliderJoint3D(world: PhysicsWorld, options: SliderJoint3DOpti
   const axis = unit(where, 'axis', options.axis);
   const lm = limitAndMotor(where, options.lower, options.upper, options.motorSpeed, options.maxMotorForce, 'maxMotorForce');
   const j = make(world, where, Joint3DType.Slider, e, options, p, p, axis);
+  useJointType3D(Joint3DType.Slider, SLIDER_ROWS_3D);
   storeLimitAndMotor(joints3DOf(world, true), j, lm);
   return currentHandle(world, j);
 }
+
+/**
+ * A slider's point block restricted to the plane across A's axis, then along the axis (at the point
+ * of A under B's anchor) its motor and translation limit.
+ */
+function solveSliderAxis(p: JointPass3D, j: number, a: number, b: number, flags: number): void {
+  const { s, sb, T, hs, useBias, bRate, ms, is } = p;
+  // Only the part perpendicular to the axis (A's, in the world) is held.
+  rot(qa, s.uax[j]!, s.uay[j]!, s.uaz[j]!, bx);
+  const hx = bx[0]!,
+    hy = bx[1]!,
+    hz = bx[2]!;
+  const Cx = C3[0]!,
+    Cy = C3[1]!,
+    Cz = C3[2]!;
+  const t = Cx * hx + Cy * hy + Cz * hz,
+    dv = v3[0]! * hx + v3[1]! * hy + v3[2]! * hz;
+  restrictToPlane(hx, hy, hz);
+  solve3(
+    K,
+    v3[0]! - dv * hx + bRate * (Cx - t * hx),
+    v3[1]! - dv * hy + bRate * (Cy - t * hy),
+    v3[2]! - dv * hz + bRate * (Cz - t * hz),
+    x3,
+  );
+  let px = -ms * x3[0]! - is * s.lx[j]!,
+    py = -ms * x3[1]! - is * s.ly[j]!,
+    pz = -ms * x3[2]! - is * s.lz[j]!;
+  const d = px * hx + py * hy + pz * hz;
+  px -= d * hx;
+  py -= d * hy;
+  pz -= d * hz;
+  s.lx[j] = s.lx[j]! + px;
+  s.ly[j] = s.ly[j]! + py;
+  s.lz[j] = s.lz[j]! + pz;
+  applyLinear(sb, T, a, b, px, py, pz);
+  if (flags & (Joint3DFlag.Limit | Joint3DFlag.Motor)) {
+    // Axial rows act at the point of A under B's anchor.
+    sliderAnchor();
+    const k = linearK(sb, T, a, b, hx, hy, hz);
+    if (k > 0 && flags & Joint3DFlag.Motor) {
+      const maxP = s.maxMotorTorque[j]! * hs;
+      s.motor[j] = linearRow(
+        sb,
+        T,
+        a,
+        b,
+        hx,
+        hy,
+        hz,
+        k,
+        anchorSpeed(sb, a, b, hx, hy, hz),
+        -s.motorSpeed[j]!,
+        1,
+        0,
+        s.motor[j]!,
+        -maxP,
+        maxP,
+      );
+    }
+    if (k > 0 && flags & Joint3DFlag.Limit) {
+      const lo = s.lower[j]!,
+        hi = s.upper[j]!;
+      const nearLower = t - lo < hi - t;
+      const C = nearLower ? t - lo : hi - t,
+        sg = nearLower ? 1 : -1;
+      let bias = 0,
+        m = 1,
+        im = 0;
+      if (C > 0) bias = C / hs;
+      else if (useBias) {
+        bias = bRate * C;
+        m = ms;
+        im = is;
+      }
+      if (sg * s.limit[j]! < 0) {
+        const l = -s.limit[j]!;
+        applyLinear(sb, T, a, b, l * hx, l * hy, l * hz);
+        s.limit[j] = 0;
+      }
+      const lam = linearRow(
+        sb,
+        T,
+        a,
+        b,
+        sg * hx,
+        sg * hy,
+        sg * hz,
+        k,
+        sg * anchorSpeed(sb, a, b, hx, hy, hz),
+        bias,
+        m,
+        im,
+        sg * s.limit[j]!,
+        0,
+        Infinity,
+      );
+      s.limit[j] = sg * lam;
+    }
+  }
+}
+
+/** A slider: the three angular rows, the point block across its axis, then its motor and limit along it. */
+export function solveSliderRow3D(p: JointPass3D, j: number, a: number, b: number, flags: number): void {
+  errorRotation(p, j);
+  solveAngularLock(p, j, a, b, false);
+  preparePointBlock(p, a, b);
+  solveSliderAxis(p, j, a, b, flags);
+}
+
+/** The 3D slider joint's rows (rows-3d.ts JointRows3D). */
+export const SLIDER_ROWS_3D: JointRows3D = { solve: solveSliderRow3D };

@@ -4,15 +4,8 @@ import { classifyBody3D } from '../collision/shapes-3d.js';
 import { BS3_PUSHED, BS3_STRIDE } from '../solver/body-state-layout.js';
 import { currentHandle } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
-import {
-  type JointPass3D,
-  solveBallRow3D,
-  solveDistanceRow3D,
-  solveFixedRow3D,
-  solveHingeRow3D,
-  solveSliderRow3D,
-} from './joint-rows-3d.js';
 import { removeJoint3DUnchecked } from './remove-3d.js';
+import type { JointPass3D, JointRows3D } from './rows-3d.js';
 import { applyAngular, applyLinear, ax, bx, pa, pb, pose, qa, qb, ra, rb, rot, sliderAnchor } from './rows-3d-math.js';
 import { type Joint3DStore, Joint3DType, joints3DOf } from './store-3d.js';
 
@@ -52,6 +45,29 @@ import { type Joint3DStore, Joint3DType, joints3DOf } from './store-3d.js';
 /** Joint stiffness (Box2D v3 defaults: joint hertz 60, damping ratio 2), capped at a quarter of the substep rate. */
 const JOINT_HERTZ = 60,
   JOINT_DAMPING = 2;
+
+/** Rows of a type no joint of which was made yet: none is solved. */
+const NO_ROWS: JointRows3D = { solve() {} };
+// Each type's rows, handed over by useJointType3D: the solver does not import the types' files, which
+// import the 3D feature's install (joint-3d.ts make), and that imports this module.
+let distanceRows = NO_ROWS,
+  ballRows = NO_ROWS,
+  hingeRows = NO_ROWS,
+  fixedRows = NO_ROWS,
+  sliderRows = NO_ROWS;
+
+/**
+ * Hands the solver the rows of a 3D joint type (Joint3DType), called by the type's add call (whose file
+ * holds them) and, for every type, by restore. The rows serve every world of the program.
+ * @category Joints and ropes
+ */
+export function useJointType3D(type: number, rows: JointRows3D): void {
+  if (type === Joint3DType.Distance) distanceRows = rows;
+  else if (type === Joint3DType.Ball) ballRows = rows;
+  else if (type === Joint3DType.Hinge) hingeRows = rows;
+  else if (type === Joint3DType.Fixed) fixedRows = rows;
+  else if (type === Joint3DType.Slider) sliderRows = rows;
+}
 
 let ka = new Int32Array(16),
   kb = new Int32Array(16);
@@ -208,7 +224,7 @@ export function warmStartJoints3D(world: PhysicsWorld): void {
   }
 }
 
-/** The pass the row solves read (joint-rows-3d.ts JointPass3D), filled by each solveJoints3D. */
+/** The pass the row solves read (rows-3d.ts JointPass3D), filled by each solveJoints3D. */
 const pass: JointPass3D = {
   s: undefined as unknown as Joint3DStore,
   sb: new Float64Array(0),
@@ -221,7 +237,8 @@ const pass: JointPass3D = {
 };
 
 /**
- * One pass over the joints: soft with `useBias`, else relaxing (no bias).
+ * One pass over the joints: soft with `useBias`, else relaxing (no bias); each joint's bodies posed,
+ * then its type's row solve (its file's, handed over by useJointType3D).
  * @category Joints and ropes
  */
 export function solveJoints3D(world: PhysicsWorld, hs: number, useBias: boolean): void {
@@ -248,11 +265,11 @@ export function solveJoints3D(world: PhysicsWorld, hs: number, useBias: boolean)
     pose(world, s.b[j]!, b, qb, pb);
     rot(qa, s.ax[j]!, s.ay[j]!, s.az[j]!, ra);
     rot(qb, s.bx[j]!, s.by[j]!, s.bz[j]!, rb);
-    if (type === Joint3DType.Distance) solveDistanceRow3D(p, j, a, b, flags);
-    else if (type === Joint3DType.Ball) solveBallRow3D(p, j, a, b, flags);
-    else if (type === Joint3DType.Hinge) solveHingeRow3D(p, j, a, b, flags);
-    else if (type === Joint3DType.Fixed) solveFixedRow3D(p, j, a, b, flags);
-    else if (type === Joint3DType.Slider) solveSliderRow3D(p, j, a, b, flags);
+    if (type === Joint3DType.Distance) distanceRows.solve(p, j, a, b, flags);
+    else if (type === Joint3DType.Ball) ballRows.solve(p, j, a, b, flags);
+    else if (type === Joint3DType.Hinge) hingeRows.solve(p, j, a, b, flags);
+    else if (type === Joint3DType.Fixed) fixedRows.solve(p, j, a, b, flags);
+    else if (type === Joint3DType.Slider) sliderRows.solve(p, j, a, b, flags);
   }
 }
 

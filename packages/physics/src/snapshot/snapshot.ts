@@ -3,6 +3,7 @@ import { install3D } from '../collision/install-3d.js';
 import { installBalls } from '../collision/install-balls.js';
 import { barnesHutGravity } from '../forces/barnes-hut/tree.js';
 import { setBarnesHutGravity } from '../forces/gravity.js';
+import { useEveryJointType3D } from '../joints/types-3d.js';
 import { installEmitters } from '../particles/emitter-systems.js';
 import { shareStores } from '../threads/shared-stores.js';
 import { describe } from '../validation/validate.js';
@@ -205,13 +206,14 @@ export function restore(world: PhysicsWorld, snap: WorldSnapshot): void {
 
 /**
  * Installs every feature's systems into a restored world (world/install.ts): the emitters', the balls', the 3D
- * shapes' and joints', the cloth's and the Barnes-Hut sum, so the world runs whatever the snapshot's
- * world ran. A feature the snapshot's world never used has nothing to act on and writes nothing.
+ * shapes' and joints' (with every 3D joint type's rows), the cloth's and the Barnes-Hut sum, so the
+ * world runs whatever the snapshot's world ran. A feature the snapshot's world never used has nothing to act on and writes nothing.
  */
 function installEveryFeature(world: PhysicsWorld): void {
   installEmitters(world);
   installBalls(world);
   install3D(world);
+  useEveryJointType3D();
   installCloth(world);
   setBarnesHutGravity(barnesHutGravity);
 }

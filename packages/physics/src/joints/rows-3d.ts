@@ -1,0 +1,200 @@
+import { BS3_INV_MASS, BS3_STRIDE, BS3_WX, BS3_WY, BS3_WZ } from '../solver/body-state-layout.js';
+import {
+  anchorVelocity,
+  applyAngular,
+  applyLinear,
+  ax,
+  bx,
+  invI,
+  K,
+  pa,
+  pb,
+  qa,
+  qb,
+  ra,
+  rb,
+  restrictToPlane,
+  rot,
+  solve3,
+  tmp,
+  v3,
+  x3,
+} from './rows-3d-math.js';
+import type { Joint3DStore } from './store-3d.js';
+
+/**
+ * The row code the 3D joint types share: the pass every row solve reads (JointPass3D), what a type's
+ * file hands the solver (JointRows3D), and the pieces several types solve with: the error rotation,
+ * the angular lock (fixed, hinge, slider) and the point block (ball, hinge, fixed; the slider's
+ * restricted to a plane). Each type's own rows are in its file (ball-, hinge-, fixed-, slider- and
+ * distance-joint-3d.ts), run by joints/solver-3d.ts on the poses it leaves in the scratch of
+ * rows-3d-math.ts (qa, pa, ra for body A, qb, pb, rb for B); the rows are those its header describes.
+ */
+
+/**
+ * What every row solve of a pass reads (joints/solver-3d.ts fills it once a pass): the joint store,
+ * the packed body state and world inverse inertias, the substep (s), whether the rigid rows push out
+ * their error (`useBias`) and their softness (bias rate 1/s, mass and impulse scale).
+ */
+export interface JointPass3D {
+  s: Joint3DStore;
+  sb: Float64Array;
+  T: Float64Array;
+  hs: number;
+  useBias: boolean;
+  bRate: number;
+  ms: number;
+  is: number;
+}
+
+/**
+ * A 3D joint type's rows, which the type's file hands the solver (useJointType3D of joints/solver-3d.ts)
+ * when it makes a joint, and restore for every type: one pass of its row solve, soft with `p.useBias`,
+ * else relaxing, on the pass `p`, for joint slot `j` with bodies of solver indices `a`, `b` (0: fixed)
+ * and its flags (Joint3DFlag).
+ */
+export interface JointRows3D {
+  solve(p: JointPass3D, j: number, a: number, b: number, flags: number): void;
+}
+
+/** The error rotation of the joint being solved (x, y, z, w with w >= 0; errorRotation). */
+export const E = new Float64Array(4);
+/** The point block's position error C = p_B + r_B - p_A - r_A, m (preparePointBlock). */
+export const C3 = new Float64Array(3);
+
+/** The error rotation E = conj(q_A) q_B conj(q_rest) (A's frame) into E, w >= 0. */
+export function errorRotation(p: JointPass3D, j: number): void {
+  const { s } = p;
+  const x1 = -qa[0]!,
+    y1 = -qa[1]!,
+    z1 = -qa[2]!,
+    w1 = qa[3]!,
+    x2 = qb[0]!,
+    y2 = qb[1]!,
+    z2 = qb[2]!,
+    w2 = qb[3]!;
+  const rx = w1 * x2 + x1 * w2 + y1 * z2 - z1 * y2,
+    ry = w1 * y2 - x1 * z2 + y1 * w2 + z1 * x2,
+    rz = w1 * z2 + x1 * y2 - y1 * x2 + z1 * w2,
+    rw = w1 * w2 - x1 * x2 - y1 * y2 - z1 * z2;
+  const cx = -s.rx[j]!,
+    cy = -s.ry[j]!,
+    cz = -s.rz[j]!,
+    cw = s.rw[j]!;
+  let ex = rw * cx + rx * cw + ry * cz - rz * cy,
+    ey = rw * cy - rx * cz + ry * cw + rz * cx,
+    ez = rw * cz + rx * cy - ry * cx + rz * cw;
+  let ew = rw * cw - rx * cx - ry * cy - rz * cz;
+  if (ew < 0) {
+    ex = -ex;
+    ey = -ey;
+    ez = -ez;
+    ew = -ew;
+  }
+  E[0] = ex;
+  E[1] = ey;
+  E[2] = ez;
+  E[3] = ew;
+}
+
+/**
+ * The angular lock (fixed and slider: 3 rows; `hinge`: the 2 perpendicular to the axis), K = I_A^-1 +
+ * I_B^-1, on the error rotation in E. Leaves the hinge axis (world) in bx.
+ */
+export function solveAngularLock(p: JointPass3D, j: number, a: number, b: number, hinge: boolean): void {
+  const { s, sb, T, bRate, ms, is } = p;
+  const oa = BS3_STRIDE * a,
+    ob = BS3_STRIDE * b;
+  const wx = sb[ob + BS3_WX]! - sb[oa + BS3_WX]!,
+    wy = sb[ob + BS3_WY]! - sb[oa + BS3_WY]!,
+    wz = sb[ob + BS3_WZ]! - sb[oa + BS3_WZ]!;
+  const ex = E[0]!,
+    ey = E[1]!,
+    ez = E[2]!;
+  rot(qa, 2 * ex, 2 * ey, 2 * ez, ax); // the error as a world rotation vector
+  rot(qa, s.uax[j]!, s.uay[j]!, s.uaz[j]!, bx); // hinge axis, world
+  // Angular lock (fixed: 3 rows; hinge: the 2 perpendicular to the axis), K = I_A^-1 + I_B^-1.
+  for (let c = 0; c < 3; c++) {
+    const ux = c === 0 ? 1 : 0,
+      uy = c === 1 ? 1 : 0,
+      uz = c === 2 ? 1 : 0;
+    invI(T, a, ux, uy, uz, tmp, 0);
+    invI(T, b, ux, uy, uz, tmp, 3);
+    K[c] = tmp[0]! + tmp[3]!;
+    K[3 + c] = tmp[1]! + tmp[4]!;
+    K[6 + c] = tmp[2]! + tmp[5]!;
+  }
+  let r0 = wx + bRate * ax[0]!,
+    r1 = wy + bRate * ax[1]!,
+    r2 = wz + bRate * ax[2]!;
+  if (hinge) {
+    // Remove the axial part: project the residual and the system onto the plane perpendicular to the axis.
+    const hx = bx[0]!,
+      hy = bx[1]!,
+      hz = bx[2]!;
+    const d = r0 * hx + r1 * hy + r2 * hz;
+    r0 -= d * hx;
+    r1 -= d * hy;
+    r2 -= d * hz;
+    restrictToPlane(hx, hy, hz);
+  }
+  solve3(K, r0, r1, r2, x3);
+  let lx = -ms * x3[0]! - is * s.wx[j]!,
+    ly = -ms * x3[1]! - is * s.wy[j]!,
+    lz = -ms * x3[2]! - is * s.wz[j]!;
+  if (hinge) {
+    const d = lx * bx[0]! + ly * bx[1]! + lz * bx[2]!;
+    lx -= d * bx[0]!;
+    ly -= d * bx[1]!;
+    lz -= d * bx[2]!;
+  }
+  s.wx[j] = s.wx[j]! + lx;
+  s.wy[j] = s.wy[j]! + ly;
+  s.wz[j] = s.wz[j]! + lz;
+  applyAngular(sb, T, a, b, lx, ly, lz);
+}
+
+/** The point block: its error in C3, the anchors' relative velocity in v3 and K (3 x 3). */
+export function preparePointBlock(p: JointPass3D, a: number, b: number): void {
+  const { sb, T } = p;
+  const oa = BS3_STRIDE * a,
+    ob = BS3_STRIDE * b;
+  C3[0] = pb[0]! + rb[0]! - pa[0]! - ra[0]!;
+  C3[1] = pb[1]! + rb[1]! - pa[1]! - ra[1]!;
+  C3[2] = pb[2]! + rb[2]! - pa[2]! - ra[2]!;
+  anchorVelocity(sb, a, b, v3);
+  const ma = sb[oa + BS3_INV_MASS]!,
+    mb = sb[ob + BS3_INV_MASS]!;
+  for (let c = 0; c < 3; c++) {
+    const px = c === 0 ? 1 : 0,
+      py = c === 1 ? 1 : 0,
+      pz = c === 2 ? 1 : 0;
+    let kx = (ma + mb) * px,
+      ky = (ma + mb) * py,
+      kz = (ma + mb) * pz;
+    invI(T, a, ra[1]! * pz - ra[2]! * py, ra[2]! * px - ra[0]! * pz, ra[0]! * py - ra[1]! * px, tmp, 0);
+    kx += tmp[1]! * ra[2]! - tmp[2]! * ra[1]!;
+    ky += tmp[2]! * ra[0]! - tmp[0]! * ra[2]!;
+    kz += tmp[0]! * ra[1]! - tmp[1]! * ra[0]!;
+    invI(T, b, rb[1]! * pz - rb[2]! * py, rb[2]! * px - rb[0]! * pz, rb[0]! * py - rb[1]! * px, tmp, 0);
+    kx += tmp[1]! * rb[2]! - tmp[2]! * rb[1]!;
+    ky += tmp[2]! * rb[0]! - tmp[0]! * rb[2]!;
+    kz += tmp[0]! * rb[1]! - tmp[1]! * rb[0]!;
+    K[c] = kx;
+    K[3 + c] = ky;
+    K[6 + c] = kz;
+  }
+}
+
+/** The point rows as one 3 x 3 block (ball, hinge, fixed), on preparePointBlock's C3, v3 and K. */
+export function solvePointRows(p: JointPass3D, j: number, a: number, b: number): void {
+  const { s, sb, T, bRate, ms, is } = p;
+  solve3(K, v3[0]! + bRate * C3[0]!, v3[1]! + bRate * C3[1]!, v3[2]! + bRate * C3[2]!, x3);
+  const px = -ms * x3[0]! - is * s.lx[j]!,
+    py = -ms * x3[1]! - is * s.ly[j]!,
+    pz = -ms * x3[2]! - is * s.lz[j]!;
+  s.lx[j] = s.lx[j]! + px;
+  s.ly[j] = s.ly[j]! + py;
+  s.lz[j] = s.lz[j]! + pz;
+  applyLinear(sb, T, a, b, px, py, pz);
+}
