@@ -3,8 +3,15 @@ import { assertFinite, describe } from '../validation/validate.js';
 import { currentHandle } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { centre, ends, type Joint3DBaseOptions, make, point, requireJoint3D, unit, wakeJoint3D } from './joint-3d.js';
-import { type JointPass3D, type JointRows3D, preparePointBlock, solvePointRows } from './rows-3d.js';
-import { angularRow, ax, bx, qa, qb, rot } from './rows-3d-math.js';
+import {
+  type JointPass3D,
+  type JointRows3D,
+  pointJointReading,
+  preparePointBlock,
+  solvePointRows,
+  warmStartPointAndLock,
+} from './rows-3d.js';
+import { angularRow, applyAngular, ax, bx, qa, qb, rot } from './rows-3d-math.js';
 import { useJointType3D } from './solver-3d.js';
 import { Joint3DFlag, Joint3DType, joints3DOf } from './store-3d.js';
 
@@ -123,5 +130,25 @@ export function solveBallRow3D(p: JointPass3D, j: number, a: number, b: number, 
   if (flags & Joint3DFlag.Cone) solveCone(p, j, a, b);
 }
 
+/**
+ * A ball joint's warm start: its point impulse (and the angular lock's, which it does not have), then its
+ * cone's impulse (limit, >= 0) about -n, n = a_A x a_B / |a_A x a_B| as in the solve; none when the axes
+ * are parallel (n undefined).
+ */
+export function warmStartBallRow3D(p: JointPass3D, j: number, a: number, b: number): void {
+  warmStartPointAndLock(p, j, a, b);
+  const { s, sb, T } = p;
+  if (s.limit[j]! !== 0) {
+    rot(qa, s.uax[j]!, s.uay[j]!, s.uaz[j]!, ax);
+    rot(qb, s.ubx[j]!, s.uby[j]!, s.ubz[j]!, bx);
+    const nx = ax[1]! * bx[2]! - ax[2]! * bx[1]!,
+      ny = ax[2]! * bx[0]! - ax[0]! * bx[2]!,
+      nz = ax[0]! * bx[1]! - ax[1]! * bx[0]!;
+    const sn = Math.hypot(nx, ny, nz),
+      l = -s.limit[j]! / sn;
+    if (sn > 1e-9) applyAngular(sb, T, a, b, l * nx, l * ny, l * nz);
+  }
+}
+
 /** The 3D ball joint's rows (rows-3d.ts JointRows3D). */
-export const BALL_ROWS_3D: JointRows3D = { solve: solveBallRow3D };
+export const BALL_ROWS_3D: JointRows3D = { warmStart: warmStartBallRow3D, solve: solveBallRow3D, reading: pointJointReading };

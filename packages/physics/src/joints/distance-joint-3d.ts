@@ -3,7 +3,7 @@ import { currentHandle } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { centre, ends, type Joint3DBaseOptions, make, point, requireJoint3D, wakeJoint3D } from './joint-3d.js';
 import type { JointPass3D, JointRows3D } from './rows-3d.js';
-import { anchorSpeed, linearK, linearRow, pa, pb, ra, rb, referenceK } from './rows-3d-math.js';
+import { anchorSpeed, applyLinear, linearK, linearRow, pa, pb, ra, rb, referenceK } from './rows-3d-math.js';
 import { useJointType3D } from './solver-3d.js';
 import { fixedSpring } from './spring.js';
 import { Joint3DFlag, type Joint3DStore, Joint3DType, joints3DOf } from './store-3d.js';
@@ -248,5 +248,30 @@ export function solveDistanceRow3D(p: JointPass3D, j: number, a: number, b: numb
   }
 }
 
+/**
+ * A distance joint's warm start: its rod's or spring's impulse (lx) and its lower limit's (limit) push B
+ * along u = (anchor B - anchor A) / length, its upper limit's (ly) against it; nothing when the anchors
+ * meet (no direction).
+ */
+export function warmStartDistanceRow3D(p: JointPass3D, j: number, a: number, b: number): void {
+  const { s, sb, T } = p;
+  const dx = pb[0]! + rb[0]! - pa[0]! - ra[0]!,
+    dy = pb[1]! + rb[1]! - pa[1]! - ra[1]!,
+    dz = pb[2]! + rb[2]! - pa[2]! - ra[2]!;
+  const len = Math.hypot(dx, dy, dz),
+    P = s.lx[j]! + s.limit[j]! - s.ly[j]!;
+  if (len > 1e-12 && P !== 0) applyLinear(sb, T, a, b, (P * dx) / len, (P * dy) / len, (P * dz) / len);
+}
+
+/** A distance joint's reading: the force along the anchors' line of its rows (rod or spring, lower limit, minus upper limit), no torque. */
+export function distanceReading3D(s: Joint3DStore, j: number, hs: number, out: Float64Array): void {
+  out[0] = Math.abs(s.lx[j]! + s.limit[j]! - s.ly[j]!) / hs;
+  out[1] = 0;
+}
+
 /** The 3D distance joint's rows (rows-3d.ts JointRows3D). */
-export const DISTANCE_ROWS_3D: JointRows3D = { solve: solveDistanceRow3D };
+export const DISTANCE_ROWS_3D: JointRows3D = {
+  warmStart: warmStartDistanceRow3D,
+  solve: solveDistanceRow3D,
+  reading: distanceReading3D,
+};

@@ -1,7 +1,16 @@
 import { currentHandle } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { centre, ends, type Joint3DBaseOptions, make, point } from './joint-3d.js';
-import { errorRotation, type JointPass3D, type JointRows3D, preparePointBlock, solveAngularLock, solvePointRows } from './rows-3d.js';
+import {
+  errorRotation,
+  type JointPass3D,
+  type JointRows3D,
+  pointJointReading,
+  preparePointBlock,
+  solveAngularLock,
+  solvePointRows,
+  warmStartPointAndLock,
+} from './rows-3d.js';
 import { useJointType3D } from './solver-3d.js';
 import { Joint3DType } from './store-3d.js';
 
@@ -41,4 +50,4 @@ export function solveFixedRow3D(p: JointPass3D, j: number, a: number, b: number,
 }
 
 /** The 3D fixed joint's rows (rows-3d.ts JointRows3D). */
-export const FIXED_ROWS_3D: JointRows3D = { solve: solveFixedRow3D };
+export const FIXED_ROWS_3D: JointRows3D = { warmStart: warmStartPointAndLock, solve: solveFixedRow3D, reading: pointJointReading };

@@ -2,8 +2,18 @@ import { BS3_STRIDE, BS3_WX, BS3_WY, BS3_WZ } from '../solver/body-state-layout.
 import { currentHandle } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { centre, ends, type Joint3DBaseOptions, limitAndMotor, make, point, storeLimitAndMotor, unit } from './joint-3d.js';
-import { E, errorRotation, type JointPass3D, type JointRows3D, preparePointBlock, solveAngularLock, solvePointRows } from './rows-3d.js';
-import { angularRow, applyAngular, bx } from './rows-3d-math.js';
+import {
+  E,
+  errorRotation,
+  type JointPass3D,
+  type JointRows3D,
+  pointJointReading,
+  preparePointBlock,
+  solveAngularLock,
+  solvePointRows,
+  warmStartPointAndLock,
+} from './rows-3d.js';
+import { angularRow, applyAngular, ax, bx, qa, rot } from './rows-3d-math.js';
 import { useJointType3D } from './solver-3d.js';
 import { Joint3DFlag, Joint3DType, joints3DOf } from './store-3d.js';
 
@@ -105,5 +115,16 @@ export function solveHingeRow3D(p: JointPass3D, j: number, a: number, b: number,
   solvePointRows(p, j, a, b);
 }
 
+/** A hinge's warm start: its point and angular-lock impulses, then its limit's and motor's about its axis (turned with A). */
+export function warmStartHingeRow3D(p: JointPass3D, j: number, a: number, b: number): void {
+  warmStartPointAndLock(p, j, a, b);
+  const { s, sb, T } = p;
+  const axial = s.limit[j]! + s.motor[j]!;
+  if (axial !== 0) {
+    rot(qa, s.uax[j]!, s.uay[j]!, s.uaz[j]!, ax);
+    applyAngular(sb, T, a, b, axial * ax[0]!, axial * ax[1]!, axial * ax[2]!);
+  }
+}
+
 /** The 3D hinge joint's rows (rows-3d.ts JointRows3D). */
-export const HINGE_ROWS_3D: JointRows3D = { solve: solveHingeRow3D };
+export const HINGE_ROWS_3D: JointRows3D = { warmStart: warmStartHingeRow3D, solve: solveHingeRow3D, reading: pointJointReading };

@@ -49,12 +49,16 @@ export interface JointPass3D {
 
 /**
  * A 3D joint type's rows, which the type's file hands the solver (useJointType3D of joints/solver-3d.ts)
- * when it makes a joint, and restore for every type: one pass of its row solve, soft with `p.useBias`,
- * else relaxing, on the pass `p`, for joint slot `j` with bodies of solver indices `a`, `b` (0: fixed)
- * and its flags (Joint3DFlag).
+ * when it makes a joint, and restore for every type. Each runs on the pass `p` for joint slot `j` whose
+ * bodies have solver indices `a`, `b` (0: fixed), posed in the scratch of rows-3d-math.ts.
  */
 export interface JointRows3D {
+  /** Its impulses of the last substep applied again (warm start; `p` holds s, sb and T). */
+  warmStart(p: JointPass3D, j: number, a: number, b: number): void;
+  /** One pass of its rows, soft with `p.useBias`, else relaxing; `flags` its Joint3DFlag bits. */
   solve(p: JointPass3D, j: number, a: number, b: number, flags: number): void;
+  /** Its force (N) into out[0] and torque (N m) into out[1] after the substeps of `hs` s: the impulses of the last one / hs. */
+  reading(s: Joint3DStore, j: number, hs: number, out: Float64Array): void;
 }
 
 /** The error rotation of the joint being solved (x, y, z, w with w >= 0; errorRotation). */
@@ -197,4 +201,24 @@ export function solvePointRows(p: JointPass3D, j: number, a: number, b: number):
   s.ly[j] = s.ly[j]! + py;
   s.lz[j] = s.lz[j]! + pz;
   applyLinear(sb, T, a, b, px, py, pz);
+}
+
+/**
+ * The warm start of the point block and the angular lock (every 3D type but the distance joint): the
+ * point impulse (lx, ly, lz) at the anchors and the angular one (wx, wy, wz), world vectors, N s and N m s.
+ */
+export function warmStartPointAndLock(p: JointPass3D, j: number, a: number, b: number): void {
+  const { s, sb, T } = p;
+  applyLinear(sb, T, a, b, s.lx[j]!, s.ly[j]!, s.lz[j]!);
+  applyAngular(sb, T, a, b, s.wx[j]!, s.wy[j]!, s.wz[j]!);
+}
+
+/**
+ * The reading of a joint whose limit and motor act about an axis (ball, hinge, fixed): the force of its
+ * point impulse and the torque of its angular lock plus its limit's and motor's, after the substeps of
+ * `hs` s, into out[0] (N) and out[1] (N m).
+ */
+export function pointJointReading(s: Joint3DStore, j: number, hs: number, out: Float64Array): void {
+  out[0] = Math.hypot(s.lx[j]!, s.ly[j]!, s.lz[j]!) / hs;
+  out[1] = (Math.hypot(s.wx[j]!, s.wy[j]!, s.wz[j]!) + (Math.abs(s.limit[j]!) + Math.abs(s.motor[j]!))) / hs;
 }

@@ -1,10 +1,19 @@
 import { currentHandle } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { centre, ends, type Joint3DBaseOptions, limitAndMotor, make, point, storeLimitAndMotor, unit } from './joint-3d.js';
-import { C3, errorRotation, type JointPass3D, type JointRows3D, preparePointBlock, solveAngularLock } from './rows-3d.js';
+import {
+  C3,
+  errorRotation,
+  type JointPass3D,
+  type JointRows3D,
+  preparePointBlock,
+  solveAngularLock,
+  warmStartPointAndLock,
+} from './rows-3d.js';
 import {
   anchorSpeed,
   applyLinear,
+  ax,
   bx,
   K,
   linearK,
@@ -18,7 +27,7 @@ import {
   x3,
 } from './rows-3d-math.js';
 import { useJointType3D } from './solver-3d.js';
-import { Joint3DFlag, Joint3DType, joints3DOf } from './store-3d.js';
+import { Joint3DFlag, type Joint3DStore, Joint3DType, joints3DOf } from './store-3d.js';
 
 /**
  * The 3D slider joint (translation along one axis, no rotation, with an optional limit and motor): its
@@ -175,5 +184,29 @@ export function solveSliderRow3D(p: JointPass3D, j: number, a: number, b: number
   solveSliderAxis(p, j, a, b, flags);
 }
 
+/**
+ * A slider's warm start: its point and angular-lock impulses, then its limit's and motor's along its
+ * axis (turned with A), at the point of A under B's anchor.
+ */
+export function warmStartSliderRow3D(p: JointPass3D, j: number, a: number, b: number): void {
+  warmStartPointAndLock(p, j, a, b);
+  const { s, sb, T } = p;
+  const axial = s.limit[j]! + s.motor[j]!;
+  if (axial !== 0) {
+    rot(qa, s.uax[j]!, s.uay[j]!, s.uaz[j]!, ax);
+    sliderAnchor();
+    applyLinear(sb, T, a, b, axial * ax[0]!, axial * ax[1]!, axial * ax[2]!);
+  }
+}
+
+/**
+ * A slider's reading: the force of its point impulse plus its limit's and motor's along the axis, and
+ * the torque of its angular lock.
+ */
+export function sliderReading3D(s: Joint3DStore, j: number, hs: number, out: Float64Array): void {
+  out[0] = (Math.hypot(s.lx[j]!, s.ly[j]!, s.lz[j]!) + (Math.abs(s.limit[j]!) + Math.abs(s.motor[j]!))) / hs;
+  out[1] = Math.hypot(s.wx[j]!, s.wy[j]!, s.wz[j]!) / hs;
+}
+
 /** The 3D slider joint's rows (rows-3d.ts JointRows3D). */
-export const SLIDER_ROWS_3D: JointRows3D = { solve: solveSliderRow3D };
+export const SLIDER_ROWS_3D: JointRows3D = { warmStart: warmStartSliderRow3D, solve: solveSliderRow3D, reading: sliderReading3D };

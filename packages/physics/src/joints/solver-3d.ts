@@ -6,7 +6,7 @@ import { currentHandle } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { removeJoint3DUnchecked } from './remove-3d.js';
 import type { JointPass3D, JointRows3D } from './rows-3d.js';
-import { applyAngular, applyLinear, ax, bx, pa, pb, pose, qa, qb, ra, rb, rot, sliderAnchor } from './rows-3d-math.js';
+import { pa, pb, pose, qa, qb, ra, rb, rot } from './rows-3d-math.js';
 import { type Joint3DStore, Joint3DType, joints3DOf } from './store-3d.js';
 
 /**
@@ -47,7 +47,14 @@ const JOINT_HERTZ = 60,
   JOINT_DAMPING = 2;
 
 /** Rows of a type no joint of which was made yet: none is solved. */
-const NO_ROWS: JointRows3D = { solve() {} };
+const NO_ROWS: JointRows3D = {
+  warmStart() {},
+  solve() {},
+  reading(_s, _j, _hs, out) {
+    out[0] = 0;
+    out[1] = 0;
+  },
+};
 // Each type's rows, handed over by useJointType3D: the solver does not import the types' files, which
 // import the 3D feature's install (joint-3d.ts make), and that imports this module.
 let distanceRows = NO_ROWS,
@@ -174,56 +181,6 @@ export function prepareJoints3D(world: PhysicsWorld, hs: number): void {
   }
 }
 
-/**
- * Warm start: last substep's impulses of every row applied again (point, angular lock, limits, motors, cone, distance).
- * @category Joints and ropes
- */
-export function warmStartJoints3D(world: PhysicsWorld): void {
-  const s = joints3DOf(world);
-  if (s === undefined || world.dimensions !== 3) return;
-  const sb = world.collision.bodyState,
-    T = contact3DStateOf(world, true).invInertia;
-  for (let i = 0; i < s.list.length; i++) {
-    const j = s.list[i]!;
-    pose(world, s.a[j]!, ka[i]!, qa, pa);
-    pose(world, s.b[j]!, kb[i]!, qb, pb);
-    rot(qa, s.ax[j]!, s.ay[j]!, s.az[j]!, ra);
-    rot(qb, s.bx[j]!, s.by[j]!, s.bz[j]!, rb);
-    if (s.type[j] === Joint3DType.Distance) {
-      // Rod or spring (lx) and lower limit (limit) push B along u = (anchor B - anchor A) / len, the upper limit (ly) against it.
-      const dx = pb[0]! + rb[0]! - pa[0]! - ra[0]!,
-        dy = pb[1]! + rb[1]! - pa[1]! - ra[1]!,
-        dz = pb[2]! + rb[2]! - pa[2]! - ra[2]!;
-      const len = Math.hypot(dx, dy, dz),
-        P = s.lx[j]! + s.limit[j]! - s.ly[j]!;
-      if (len > 1e-12 && P !== 0) applyLinear(sb, T, ka[i]!, kb[i]!, (P * dx) / len, (P * dy) / len, (P * dz) / len);
-      continue;
-    }
-    applyLinear(sb, T, ka[i]!, kb[i]!, s.lx[j]!, s.ly[j]!, s.lz[j]!);
-    applyAngular(sb, T, ka[i]!, kb[i]!, s.wx[j]!, s.wy[j]!, s.wz[j]!);
-    const axial = s.limit[j]! + s.motor[j]!;
-    if (axial !== 0 && (s.type[j] === Joint3DType.Hinge || s.type[j] === Joint3DType.Slider)) {
-      rot(qa, s.uax[j]!, s.uay[j]!, s.uaz[j]!, ax);
-      if (s.type[j] === Joint3DType.Hinge) applyAngular(sb, T, ka[i]!, kb[i]!, axial * ax[0]!, axial * ax[1]!, axial * ax[2]!);
-      else {
-        sliderAnchor();
-        applyLinear(sb, T, ka[i]!, kb[i]!, axial * ax[0]!, axial * ax[1]!, axial * ax[2]!);
-      }
-    }
-    if (s.type[j] === Joint3DType.Ball && s.limit[j]! !== 0) {
-      // Cone: the impulse acts about -n, n = a_A x a_B / |a_A x a_B| (as in the solve).
-      rot(qa, s.uax[j]!, s.uay[j]!, s.uaz[j]!, ax);
-      rot(qb, s.ubx[j]!, s.uby[j]!, s.ubz[j]!, bx);
-      const nx = ax[1]! * bx[2]! - ax[2]! * bx[1]!,
-        ny = ax[2]! * bx[0]! - ax[0]! * bx[2]!,
-        nz = ax[0]! * bx[1]! - ax[1]! * bx[0]!;
-      const sn = Math.hypot(nx, ny, nz),
-        l = -s.limit[j]! / sn;
-      if (sn > 1e-9) applyAngular(sb, T, ka[i]!, kb[i]!, l * nx, l * ny, l * nz);
-    }
-  }
-}
-
 /** The pass the row solves read (rows-3d.ts JointPass3D), filled by each solveJoints3D. */
 const pass: JointPass3D = {
   s: undefined as unknown as Joint3DStore,
@@ -235,6 +192,35 @@ const pass: JointPass3D = {
   ms: 1,
   is: 0,
 };
+
+/**
+ * Warm start: last substep's impulses of every row applied again, each joint's by its type's warm start
+ * (point, angular lock, limits, motors, cone, distance) on its bodies' poses.
+ * @category Joints and ropes
+ */
+export function warmStartJoints3D(world: PhysicsWorld): void {
+  const s = joints3DOf(world);
+  if (s === undefined || world.dimensions !== 3) return;
+  const p = pass;
+  p.s = s;
+  p.sb = world.collision.bodyState;
+  p.T = contact3DStateOf(world, true).invInertia;
+  for (let i = 0; i < s.list.length; i++) {
+    const j = s.list[i]!,
+      a = ka[i]!,
+      b = kb[i]!,
+      type = s.type[j]!;
+    pose(world, s.a[j]!, a, qa, pa);
+    pose(world, s.b[j]!, b, qb, pb);
+    rot(qa, s.ax[j]!, s.ay[j]!, s.az[j]!, ra);
+    rot(qb, s.bx[j]!, s.by[j]!, s.bz[j]!, rb);
+    if (type === Joint3DType.Distance) distanceRows.warmStart(p, j, a, b);
+    else if (type === Joint3DType.Ball) ballRows.warmStart(p, j, a, b);
+    else if (type === Joint3DType.Hinge) hingeRows.warmStart(p, j, a, b);
+    else if (type === Joint3DType.Fixed) fixedRows.warmStart(p, j, a, b);
+    else if (type === Joint3DType.Slider) sliderRows.warmStart(p, j, a, b);
+  }
+}
 
 /**
  * One pass over the joints: soft with `useBias`, else relaxing (no bias); each joint's bodies posed,
@@ -273,24 +259,27 @@ export function solveJoints3D(world: PhysicsWorld, hs: number, useBias: boolean)
   }
 }
 
+/** A joint's force (N) and torque (N m) after the substeps, from its type's reading (finishJoints3D). */
+const reading = new Float64Array(2);
+
 /**
- * After the substeps: joints past their breaking force or torque are removed and listed.
+ * After the substeps: each joint's force and torque by its type's reading; joints past their breaking
+ * force or torque are removed and listed.
  * @category Joints and ropes
  */
 export function finishJoints3D(world: PhysicsWorld, hs: number): void {
   const s = joints3DOf(world);
   if (s === undefined || world.dimensions !== 3) return;
   const broken: number[] = [];
+  const out = reading;
   for (const j of s.list) {
-    // The limit and motor rows are torques about the axis (hinge, cone) or forces along it (slider).
-    // A distance joint's rows are all forces along the anchor line: rod or spring (lx), lower limit (limit), upper limit (-ly).
-    const axial = Math.abs(s.limit[j]!) + Math.abs(s.motor[j]!),
-      slider = s.type[j] === Joint3DType.Slider,
-      distance = s.type[j] === Joint3DType.Distance;
-    const force =
-      (distance ? Math.abs(s.lx[j]! + s.limit[j]! - s.ly[j]!) : Math.hypot(s.lx[j]!, s.ly[j]!, s.lz[j]!) + (slider ? axial : 0)) / hs;
-    const torque = distance ? 0 : (Math.hypot(s.wx[j]!, s.wy[j]!, s.wz[j]!) + (slider ? 0 : axial)) / hs;
-    if (force > s.breakForce[j]! || torque > s.breakTorque[j]!) broken.push(j);
+    const type = s.type[j]!;
+    if (type === Joint3DType.Distance) distanceRows.reading(s, j, hs, out);
+    else if (type === Joint3DType.Ball) ballRows.reading(s, j, hs, out);
+    else if (type === Joint3DType.Hinge) hingeRows.reading(s, j, hs, out);
+    else if (type === Joint3DType.Fixed) fixedRows.reading(s, j, hs, out);
+    else if (type === Joint3DType.Slider) sliderRows.reading(s, j, hs, out);
+    if (out[0]! > s.breakForce[j]! || out[1]! > s.breakTorque[j]!) broken.push(j);
   }
   for (const j of broken) {
     const h = (e: number): number => (e === 0 ? 0 : currentHandle(world, e));
