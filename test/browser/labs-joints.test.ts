@@ -79,7 +79,8 @@ describe('lab-joints', () => {
     await g.page.evaluate(() => {
       const w = window.game as unknown as LabWindow;
       w.reset();
-      w.paused = false;
+      // Paused while the bob is found and grabbed: a swinging bob moves away between the two.
+      w.paused = true;
     });
     const bob = await g.page.evaluate(() => {
       const w = window.game as unknown as LabWindow & { ids(): { bob: number } };
@@ -91,6 +92,9 @@ describe('lab-joints', () => {
     await g.page.mouse.down();
     const held = await g.page.evaluate(() => (window.game as unknown as { drag: { joint: number } }).drag.joint);
     expect(held).toBeGreaterThan(0);
+    await g.page.evaluate(() => {
+      (window.game as unknown as LabWindow).paused = false;
+    });
     const to = await screen(g, 0, 2.5);
     await g.page.mouse.move(to.x, to.y, { steps: 6 });
     await g.frames(40);
