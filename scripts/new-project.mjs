@@ -1,6 +1,6 @@
 // `npm run new-game -- <folder outside the repository>`: scaffolds a standalone game project there
 // (see newProject). scripts/new-game.mjs calls it when its argument is a path, not a game name.
-import { existsSync, mkdirSync, readdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { copyFileSync, existsSync, mkdirSync, readdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { basename, join, relative, resolve } from 'node:path';
 import { root } from './build.mjs';
 import { templateDir, titleOf } from './new-game.mjs';
@@ -8,6 +8,21 @@ import { packPackages } from './pack.mjs';
 
 /** The standalone project's own files (build, serve, tsconfig, README, .gitignore). */
 export const projectTemplateDir = join(root, 'scripts', 'templates', 'project');
+
+/**
+ * Copies packed packages into a project's vendor folder.
+ * @param {{ name: string, file: string }[]} tarballs `packPackages`' result.
+ * @param {string} vendor the folder to copy them into (created if missing).
+ * @returns {{ name: string, file: string }[]} each package's name and the path of its copy.
+ */
+function copyTarballs(tarballs, vendor) {
+  mkdirSync(vendor, { recursive: true });
+  return tarballs.map((t) => {
+    const file = join(vendor, basename(t.file));
+    copyFileSync(t.file, file);
+    return { name: t.name, file };
+  });
+}
 
 /** Versions the project pins for what the bitphysics packages expect beside them. */
 function workspaceVersion(name) {
@@ -23,11 +38,14 @@ function workspaceVersion(name) {
  * After `npm install` in `dir`, `npm start` serves the game. Packing builds the packages first (a
  * few seconds).
  * @param {string} dir the project folder (absolute or relative to the current directory).
- * @param {{ title?: string }} options the game's title (default from the folder's name).
+ * @param {{ title?: string, tarballs?: { name: string, file: string }[] }} options the game's title
+ *   (default from the folder's name); `tarballs`: the packages already packed by `packPackages`
+ *   (scripts/pack.mjs), copied into `vendor/` instead of building and packing them again (for a
+ *   program that makes several projects from one build, such as the packaging tests).
  * @returns {Promise<{ dir: string, files: string[] }>} the folder and every file written.
  * @throws Error if `dir` is inside the repository or is a non-empty folder; TypeError on a bad title.
  */
-export async function newProject(dir, { title = undefined } = {}) {
+export async function newProject(dir, { title = undefined, tarballs: packed = undefined } = {}) {
   const target = resolve(dir);
   const inside = relative(root, target);
   if (!inside.startsWith('..') && !inside.startsWith('/')) {
@@ -51,7 +69,8 @@ export async function newProject(dir, { title = undefined } = {}) {
     files.push(join(target, file));
   };
 
-  const tarballs = await packPackages({ destination: join(target, 'vendor') });
+  const vendor = join(target, 'vendor');
+  const tarballs = packed === undefined ? await packPackages({ destination: vendor }) : copyTarballs(packed, vendor);
   const dependencies = {};
   for (const t of tarballs) {
     if (t.name === '@bitphysics/render-three') {
