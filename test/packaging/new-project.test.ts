@@ -13,7 +13,8 @@ import { join } from 'node:path';
 import { pathToFileURL } from 'node:url';
 import { promisify } from 'node:util';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { acquireSiteLock, launchChromium, repoRoot } from '../browser/chromium.mjs';
+import { launchChromium, repoRoot } from '../browser/chromium.mjs';
+import { packedPackages, type Tarball } from './packed';
 
 const run = promisify(execFile);
 let parent = '';
@@ -33,11 +34,11 @@ function stopServer(child: ChildProcess | null): void {
 beforeAll(async () => {
   parent = mkdtempSync(join(tmpdir(), 'bitphysics-new-project-'));
   const { newProject } = (await import(pathToFileURL(join(repoRoot, 'scripts', 'new-project.mjs')).href)) as {
-    newProject(dir: string, options?: { title?: string }): Promise<{ dir: string; files: string[] }>;
+    newProject(dir: string, options?: { title?: string; tarballs?: readonly Tarball[] }): Promise<{ dir: string; files: string[] }>;
   };
-  // Packing rebuilds packages/*/dist: one test file at a time (packages.test.ts packs too).
-  const release = await acquireSiteLock({ name: 'pack', timeoutMs: 170_000 });
-  project = (await newProject(join(parent, 'tower-game'), { title: 'Tower game' }).finally(release)).dir;
+  // The packages as packPackages packs them (packed once for this file and packages.test.ts).
+  const tarballs = await packedPackages();
+  project = (await newProject(join(parent, 'tower-game'), { title: 'Tower game', tarballs })).dir;
   await run('npm', ['install', '--no-audit', '--no-fund', '--prefer-offline', '--ignore-scripts', '--loglevel=error'], { cwd: project });
 }, 180_000);
 

@@ -13,11 +13,11 @@ import { execFile } from 'node:child_process';
 import { mkdtempSync, readdirSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
-import { pathToFileURL } from 'node:url';
 import { promisify } from 'node:util';
 import * as esbuild from 'esbuild';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { acquireSiteLock, launchChromium, repoRoot } from '../browser/chromium.mjs';
+import { launchChromium, repoRoot } from '../browser/chromium.mjs';
+import { packedPackages } from './packed';
 import { readmeBlocks } from './readme-blocks';
 
 const run = promisify(execFile);
@@ -37,12 +37,7 @@ let project = '';
 
 beforeAll(async () => {
   project = mkdtempSync(join(tmpdir(), 'bitphysics-consumer-'));
-  const { packPackages } = (await import(pathToFileURL(join(repoRoot, 'scripts', 'pack.mjs')).href)) as {
-    packPackages(options: { destination: string }): Promise<{ name: string; file: string }[]>;
-  };
-  // Packing rebuilds packages/*/dist: one test file at a time (new-project.test.ts packs too).
-  const release = await acquireSiteLock({ name: 'pack', timeoutMs: 170_000 });
-  const tarballs = await packPackages({ destination: join(project, 'tarballs') }).finally(release);
+  const tarballs = await packedPackages();
   expect(tarballs.map((t) => t.name)).toEqual([
     '@bitphysics/physics',
     '@bitphysics/projects',
