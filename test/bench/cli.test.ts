@@ -1,5 +1,6 @@
-// The bench CLI end to end: built with buildBench() and run as a child process with small counts.
-// These tests check output shape and error handling only; they never assert timings.
+// The bench CLI end to end: built with buildBench() and run as a child process with small counts (the
+// usage errors: the built CLI's main, all in one child process). These tests check output shape and
+// error handling only; they never assert timings.
 import { execFile } from 'node:child_process';
 import { join, resolve } from 'node:path';
 import { pathToFileURL } from 'node:url';
@@ -15,16 +16,68 @@ interface CliRun {
   stderr: string;
 }
 
+/**
+ * Node's flags for every CLI run: V8 compiles WebAssembly with its baseline compiler (Liftoff) only.
+ * The CLI turns Liftoff off before a peer engine loads (rapier2d.ts `optimizedWasm`) so that peers
+ * are timed on optimized code; compiling a peer's whole module that way costs seconds of CPU in every
+ * run, and `--liftoff-only` overrides it. These tests check no timing, and WebAssembly computes the same
+ * results whichever compiler built it, so every field they compare is the same.
+ */
+const NODE_FLAGS = ['--liftoff-only'];
+
 /** Runs the built CLI with `args`; resolves with its exit code and output (never rejects on a non-zero exit). */
 function runCli(args: string[]): Promise<CliRun> {
   return new Promise((done, fail) => {
-    execFile(process.execPath, [cli, ...args], { cwd: root, timeout: 60_000, maxBuffer: 16 * 2 ** 20 }, (error, stdout, stderr) => {
-      if (error && typeof error.code !== 'number') {
-        fail(error);
-        return;
+    execFile(
+      process.execPath,
+      [...NODE_FLAGS, cli, ...args],
+      { cwd: root, timeout: 60_000, maxBuffer: 16 * 2 ** 20 },
+      (error, stdout, stderr) => {
+        if (error && typeof error.code !== 'number') {
+          fail(error);
+          return;
+        }
+        done({ code: error ? (error.code as number) : 0, stdout, stderr });
+      },
+    );
+  });
+}
+
+/**
+ * Runs the built CLI's `main(argv, io)` once for each of `argvs`, one after another in one Node
+ * process (with the CLI's streams captured as the process would write them), and resolves with each
+ * run's return value, the exit code the CLI exits with, and output. One process for many runs that
+ * stop at their arguments; a run that throws instead of returning gives code -1 and the error.
+ */
+function runMain(argvs: string[][]): Promise<CliRun[]> {
+  const driver = `
+    const { main } = await import(process.env.BENCH_CLI);
+    const runs = [];
+    for (const argv of JSON.parse(process.env.BENCH_ARGVS)) {
+      let stdout = '', stderr = '';
+      const io = { out: (t) => { stdout += t + '\\n'; }, err: (t) => { stderr += t + '\\n'; }, isTTY: false };
+      try {
+        runs.push({ code: await main(argv, io), stdout, stderr });
+      } catch (error) {
+        runs.push({ code: -1, stdout, stderr: stderr + String(error && error.stack) });
       }
-      done({ code: error ? (error.code as number) : 0, stdout, stderr });
-    });
+    }
+    process.stdout.write(JSON.stringify(runs));`;
+  return new Promise((done, fail) => {
+    execFile(
+      process.execPath,
+      [...NODE_FLAGS, '--input-type=module', '-e', driver],
+      {
+        cwd: root,
+        timeout: 60_000,
+        maxBuffer: 16 * 2 ** 20,
+        env: { ...process.env, BENCH_CLI: pathToFileURL(cli).href, BENCH_ARGVS: JSON.stringify(argvs) },
+      },
+      (error, stdout, stderr) => {
+        if (error) fail(new Error(`${error.message}\n${stderr}`));
+        else done(JSON.parse(stdout) as CliRun[]);
+      },
+    );
   });
 }
 
@@ -427,7 +480,12 @@ describe.concurrent('bench CLI scene parameters, studies and newer scenes', () =
   });
 });
 
-describe.concurrent('bench CLI usage errors exit 2 naming the bad value', () => {
+/**
+ * Usage errors: `main` returns 2 (the exit code; a real process exits with it in the --restitution
+ * test above), names the bad value on stderr and prints nothing on stdout. All the cases run in one
+ * process (`runMain`): each stops at its arguments, so a process apiece would mostly start Node.
+ */
+describe('bench CLI usage errors exit 2 naming the bad value', () => {
   const cases: Array<[string, string[], string]> = [
     ['unknown scene', ['--scene', 'no-such-scene'], 'no-such-scene'],
     ['unknown engine', ['--vs', 'rapier2d,box2d'], 'box2d'],
@@ -446,9 +504,11 @@ describe.concurrent('bench CLI usage errors exit 2 naming the bad value', () => 
     ['zero threads', ['--threads', '0'], '--threads'],
     ['too many threads', ['--threads', '65'], '--threads'],
   ];
-  for (const [what, args, named] of cases) {
+  let runs: Promise<CliRun[]> | undefined;
+  for (const [i, [what, , named]] of cases.entries()) {
     it(what, async () => {
-      const run = await runCli([...args, '--json']);
+      runs ??= runMain(cases.map(([, a]) => [...a, '--json']));
+      const run = (await runs)[i]!;
       expect(run.code).toBe(2);
       expect(run.stderr).toContain(named);
       expect(run.stdout).toBe('');
