@@ -54,12 +54,16 @@ function foldConstantModules(): Plugin {
  * Runs the headless files first (longest first, side by side on every worker), then the browser
  * files. Browser files run one at a time anyway (test/browser/harness.ts takes a lock: pages side by
  * side in one software-rendered Chromium ran about four times slower each), so a worker that picked
- * one early would wait for the lock instead of running headless files.
+ * one early would wait for the lock instead of running headless files. With BITPHYSICS_TEST_ORDER=reverse
+ * the headless files run in the opposite order: the second `node` lane of `npm test` (scripts/test.mjs)
+ * takes the files the first lane would reach last, and the two meet in the middle.
  */
 class HeadlessFirst extends BaseSequencer {
   override async sort(files: TestSpecification[]): Promise<TestSpecification[]> {
     const sorted = await super.sort(files);
-    return [...sorted.filter((f) => f.project.name !== 'browser'), ...sorted.filter((f) => f.project.name === 'browser')];
+    const headless = sorted.filter((f) => f.project.name !== 'browser');
+    if (process.env.BITPHYSICS_TEST_ORDER === 'reverse') headless.reverse();
+    return [...headless, ...sorted.filter((f) => f.project.name === 'browser')];
   }
 }
 
@@ -71,10 +75,9 @@ class HeadlessFirst extends BaseSequencer {
 // `browser` (test/browser's pages). The browser project's global setup builds and serves the site
 // once and starts one Chromium that test/browser's files share, one file at a time. `npm test`
 // (scripts/test.mjs) runs the two projects in two vitest processes at once, one file at a time each
-// on two cores (vitest's default: cores - 1 workers); a plain `npx vitest run` runs both in one,
-// headless files first. The two Chromium-opening files sit in the node lane because that lane ends
-// first since its files share their worker's modules (a full run on 2 cores, 2026-11-23: node 258 s,
-// browser 423 s with those two, about 56 s, in the browser lane).
+// on two cores (vitest's default: cores - 1 workers), and a second `node` process on the headless
+// files still waiting when the browser lane is done; a plain `npx vitest run` runs both projects in
+// one process, headless files first.
 
 export default defineConfig({
   plugins: [foldConstantModules()],
@@ -97,6 +100,9 @@ export default defineConfig({
           // the lane. No headless file mocks a module or stubs a global, and every test builds its own
           // world, so a file sees the same library state it would alone.
           isolate: false,
+          // vitest's runner, which also claims each file as it starts, so that the two node lanes of
+          // `npm test` (scripts/test.mjs) run every file once between them.
+          runner: './scripts/test-claims.mjs',
         },
       },
       {
