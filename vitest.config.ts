@@ -1,3 +1,4 @@
+import { existsSync, readFileSync } from 'node:fs';
 import { dirname, resolve } from 'node:path';
 import * as esbuild from 'esbuild';
 import { defaultClientConditions, defaultServerConditions, type Plugin } from 'vite';
@@ -22,13 +23,29 @@ function foldConstantModules(): Plugin {
     known.set(file, v);
     return v;
   };
+  const packageSource = (id: string): boolean => /\/packages\/[^/]+\/src\/.*\.ts$/.test(id) && !id.endsWith('.d.ts');
+  /** The files `code` (the module `id`) imports by a relative path, as .ts paths. */
+  const relativeImports = (id: string, code: string): string[] =>
+    [...code.matchAll(/from\s+['"](\.{1,2}\/[^'"]+)['"]/g)].map((m) => resolve(dirname(id), m[1]!).replace(/\.js$/, '.ts'));
   return {
     name: 'fold-constant-modules',
     enforce: 'pre',
+    // With vitest's module cache (experimental.fsModuleCache below), a package source's cached
+    // transform is keyed on the text of every file it imports by a relative path as well as its own:
+    // a folded module holds its constant modules' values, so a changed constant is a changed key.
+    configureVitest({ experimental_defineCacheKeyGenerator }) {
+      experimental_defineCacheKeyGenerator(({ id, sourceCode }) =>
+        packageSource(id)
+          ? relativeImports(id, sourceCode)
+              .map((f) => (existsSync(f) ? readFileSync(f, 'utf8') : ''))
+              .join('\0')
+          : undefined,
+      );
+    },
     async transform(code, id) {
-      if (!/\/packages\/[^/]+\/src\/.*\.ts$/.test(id) || id.endsWith('.d.ts')) return null;
+      if (!packageSource(id)) return null;
       const dir = dirname(id);
-      const imports = [...code.matchAll(/from\s+['"](\.{1,2}\/[^'"]+)['"]/g)].map((m) => resolve(dir, m[1]!).replace(/\.js$/, '.ts'));
+      const imports = relativeImports(id, code);
       if (!imports.some(constant)) return null;
       const out = await esbuild.build({
         entryPoints: [id],
@@ -84,6 +101,11 @@ export default defineConfig({
   resolve: { conditions: ['bitphysics-source', ...defaultClientConditions] },
   ssr: { resolve: { conditions: ['bitphysics-source', ...defaultServerConditions] } },
   test: {
+    // Transformed modules kept on disk (node_modules/.experimental-vitest-cache; `npx vitest
+    // --clearCache` empties it), so a vitest process reuses what an earlier one transformed: the second
+    // node lane of `npm test`, and every later run. Keyed on each file's text, the config and its
+    // imports (vitest), and for the package sources the files they import (foldConstantModules).
+    experimental: { fsModuleCache: true },
     pool: 'forks',
     testTimeout: 60_000,
     hookTimeout: 120_000,
