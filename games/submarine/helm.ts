@@ -16,6 +16,8 @@
  * - Nose down / up (held): pitch to `HELM.noseAngle` by the thrusters at once and by moving water
  *   between the tanks; meanwhile the thrusters stop the hull sliding across its axis, so with the
  *   screw ahead the boat follows its nose. Released, the hull levels out and the depth is held.
+ * - The on-screen stick asks for part of the dive or climb speed and of the throttle, as far as it
+ *   is pushed (`HelmInput.heave`, `HelmInput.drive`), so a small push makes a small correction.
  * - Ahead / astern (held): the throttle moves at `HELM.throttleRate`. Released, it winds back to
  *   stop at `HELM.throttleRelease`, so the screw turns while the player holds the key, as a player
  *   expects (a telegraph that stayed at full ahead read as a stuck key).
@@ -39,6 +41,16 @@ export interface HelmInput {
   ahead: boolean;
   /** Screw astern (A, left arrow). */
   astern: boolean;
+  /**
+   * How hard Dive or Rise is asked, in (0, 1]: the fraction of `HELM.diveSpeed` (`HELM.climbSpeed`)
+   * asked for. Default 1 (a key); the on-screen stick sets it from how far it is pushed.
+   */
+  heave?: number;
+  /**
+   * How far Ahead or Astern is asked, in (0, 1]: the throttle the screw runs up to (ahead) or
+   * -0.5 times it (astern). Default 1 (a key); the on-screen stick sets it from how far it is pushed.
+   */
+  drive?: number;
 }
 
 /** No control held. */
@@ -128,12 +140,14 @@ export function steer(world: PhysicsWorld, handles: SubmarineHandles, input: Hel
     e = handles.hull,
     dt = world.dt,
     S = SUBMARINE;
-  if (input.ahead && !input.astern) state.throttle = Math.min(1, state.throttle + HELM.throttleRate * dt);
-  if (input.astern && !input.ahead) state.throttle = Math.max(-0.5, state.throttle - HELM.throttleRate * dt);
-  if (input.ahead === input.astern) {
-    const ease = HELM.throttleRelease * dt;
-    state.throttle = state.throttle > ease ? state.throttle - ease : state.throttle < -ease ? state.throttle + ease : 0;
-  }
+  const heaveAsked = clamp(input.heave ?? 1, 0, 1),
+    driveAsked = clamp(input.drive ?? 1, 0, 1);
+  // The throttle runs at throttleRate toward the one asked for (drive ahead, -drive / 2 astern) and
+  // winds back at throttleRelease toward it when it is past it (a stick eased back) or to stop.
+  const asked = input.ahead === input.astern ? 0 : input.ahead ? driveAsked : -0.5 * driveAsked;
+  const pushing = (asked > 0 && state.throttle < asked) || (asked < 0 && state.throttle > asked);
+  const rate = (pushing ? HELM.throttleRate : HELM.throttleRelease) * dt;
+  state.throttle = state.throttle < asked ? Math.min(asked, state.throttle + rate) : Math.max(asked, state.throttle - rate);
 
   const y = c.Position.y[e]!,
     vy = c.Velocity.y[e]!,
@@ -150,7 +164,7 @@ export function steer(world: PhysicsWorld, handles: SubmarineHandles, input: Hel
   let vCmd = Number.NaN;
   if (dive) {
     state.mode = 'diving';
-    vCmd = -HELM.diveSpeed;
+    vCmd = -HELM.diveSpeed * heaveAsked;
   } else if (top > surface || (state.mode === 'surfaced' && top > surface - HELM.surfaceBand)) {
     // On the surface and not told to dive: tanks blown, the boat floats (Rise there does the same).
     // It stays surfaced while it bobs within surfaceBand of the surface.
@@ -158,7 +172,7 @@ export function steer(world: PhysicsWorld, handles: SubmarineHandles, input: Hel
   } else if (rise) {
     state.mode = 'rising';
     // Slower near the surface, so the boat comes up to it gently instead of leaping out.
-    vCmd = Math.min(HELM.climbSpeed, HELM.surfacingSpeed + HELM.holdGain * (surface - top));
+    vCmd = Math.min(HELM.climbSpeed * heaveAsked, HELM.surfacingSpeed + HELM.holdGain * (surface - top));
   } else if (input.noseDown !== input.noseUp) {
     // Steering by the nose: no depth held, so with the screw ahead the boat follows its nose.
     state.mode = 'steering';

@@ -197,3 +197,25 @@ describe('submarine helm', () => {
     expect(b.helm.mode).toBe('holding');
   });
 });
+
+describe('submarine helm, the stick pushed part way', () => {
+  it('a third of the way down asks for part of the dive speed; half ahead runs the screw to half', () => {
+    // The stick's share (games/submarine/main.ts) of 0.3 asks for 0.3 x 7 = 2.1 m/s; a key asks for 7.
+    const b = boat(-40);
+    run(b, { dive: true, heave: 0.3 }, 6);
+    expect(vy(b)).toBeGreaterThan(-0.3 * HELM.diveSpeed * 1.15);
+    expect(vy(b)).toBeLessThan(-0.3 * HELM.diveSpeed * 0.85);
+    const r = boat(-40);
+    run(r, { rise: true, heave: 0.5 }, 6);
+    expect(Math.abs(vy(r) - 0.5 * HELM.climbSpeed)).toBeLessThan(0.15 * 0.5 * HELM.climbSpeed);
+    // Half ahead: the throttle climbs to 0.5 and stays; eased back to 0.2, it winds down to it.
+    const d = boat(-40);
+    run(d, { ahead: true, drive: 0.5 }, 2);
+    expect(d.helm.throttle).toBe(0.5);
+    run(d, { ahead: true, drive: 0.2 }, 1);
+    expect(d.helm.throttle).toBeCloseTo(0.2, 9);
+    // Astern from half ahead falls at the full throttle rate (2.5 / s): to -0.5 within 0.5 s.
+    run(d, { astern: true }, 0.5);
+    expect(d.helm.throttle).toBe(-0.5);
+  });
+});
