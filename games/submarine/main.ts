@@ -3,13 +3,16 @@
  * flood or blow the ballast tanks and the vertical thrusters push at once; let go under water and the
  * helm holds the depth (./helm.ts). Hold Nose down or up to pitch, and drive the screw ahead or
  * astern. The hull floats by Archimedes (its submerged part of a 12 m x 3 m box), drags in proportion
- * to how much of it is under water and bobs in the waves. Collect every beacon without scraping the
- * seabed three times, as fast as you can (the clock runs; the best time of each course is kept).
+ * to how much of it is under water and bobs in the waves. Collect every beacon before three hits
+ * (a scrape on the seabed, or a moored mine laid across the way between two beacons: ./mines.ts)
+ * break the hull, inside the course's par time if you can: a won run earns a star for the beacons,
+ * one for par and one for an unhurt hull (the best time of each course is kept).
  * Keys: S / W or down / up arrows dive / rise, A / D or left / right arrows astern / ahead, Q / E
  * nose down / up, P pause, N step, R reset. Touch: a stick under the scene (down dives, up rises,
- * right ahead, left astern) and Nose buttons. Sound: the screw's hum follows the throttle, a hiss
- * when the vents open or the tanks blow, a sonar ping that quickens as the next beacon nears, a
- * rising chime for each beacon (rings spread from it and a banner counts it), a thump on the seabed.
+ * right ahead, left astern; pushed part way it asks for part of the speed) and Nose buttons.
+ * Sound: the screw's hum follows the throttle, a hiss when the vents open or the tanks blow, a sonar
+ * ping that quickens as the next beacon nears, a rising chime for each beacon (rings spread from it
+ * and a banner counts it), a thump on the seabed, a blast (a flash and bubbles) when a mine goes off.
  */
 
 import {
@@ -23,12 +26,13 @@ import {
   seedParam,
 } from '@bitphysics/game-kit';
 import { startPixiGame } from '@bitphysics/game-kit/pixi';
-import { createPhysicsWorld, type PhysicsWorld, step } from '@bitphysics/physics';
+import { applyImpulse, createPhysicsWorld, type PhysicsWorld, step } from '@bitphysics/physics';
 import { SUBMARINE, SUBMARINE_NEUTRAL_FILL, type SubmarineHandles, seabedHeight, submarine } from '@bitphysics/projects';
 import { Graphics, Text } from 'pixi.js';
 import { beaconLabel, chooseBeacon } from './beacons';
 import { drawBoat } from './boat-drawing';
 import { createHelmState, type HelmInput, steer } from './helm';
+import { layMines, MINE_BLAST_IMPULSE, MINE_RADIUS, type Mine, parTime, touchesMine } from './mines';
 import { drawFish } from './sea-life';
 
 const params = {
@@ -41,11 +45,30 @@ const params = {
 
 /**
  * Game state beside the physics: the helm's (./helm.ts: throttle, tank targets, depth held),
- * collected beacons, hull damage (hits, and the game time until which a bump counts as the last hit).
+ * collected beacons, hull damage (hits, the game time until which a bump counts as the last hit, and
+ * what the last hit was), the course's par time (s) and the mines set off.
  */
-const state = { ...createHelmState(), collected: 0, hits: 0, spared: 0, touching: false, over: '' as '' | 'won' | 'sunk', time: 0 };
+const state = {
+  ...createHelmState(),
+  collected: 0,
+  hits: 0,
+  spared: 0,
+  touching: false,
+  over: '' as '' | 'won' | 'sunk',
+  time: 0,
+  par: 0,
+  lastHit: '' as '' | 'seabed' | 'mine',
+  minesHit: 0,
+};
 let handles: SubmarineHandles;
 let taken: boolean[] = [];
+/** The course's moored mines (./mines.ts) and whether each is still live (a mine that went off is gone). */
+let mines: Mine[] = [];
+let mineLive: boolean[] = [];
+/** Mine blasts, for drawing: where (m) and when (game time, s). */
+const blasts: { x: number; y: number; time: number }[] = [];
+/** How long a blast's flash and bubbles last, s of game time. */
+const BLAST_LIFE = 1.6;
 
 /**
  * What the pointer shows: the beacon it leads to (index, -1: none left), its distance (m), its
@@ -75,17 +98,31 @@ const PICKUP_LIFE = 2;
 const FRAME_MARGIN = 60;
 /**
  * The framing camera zooms out no further than this, px/m (beyond, the edge arrow leads on): 2 on
- * a wide screen, 3 on a small one, where the hull would otherwise shrink to a few pixels.
+ * a wide screen, 4 on a small one, where the 12 m hull would otherwise shrink under 48 px and the
+ * mines to specks.
  */
-const FRAME_MIN_ZOOM = pageLayout().compact() ? 3 : 2;
+const FRAME_MIN_ZOOM = pageLayout().compact() ? 4 : 2;
 /** The camera's zoom now, px/m (eased toward the framing zoom; NaN: set at the next frame). */
 let zoom = Number.NaN;
 
 function createWorld(): PhysicsWorld {
   const world = createPhysicsWorld(submarine.worldOptions());
   handles = submarine.build(world, { seed: params.seed, count: params.beacons });
-  Object.assign(state, createHelmState(), { collected: 0, hits: 0, spared: 0, touching: false, over: '', time: 0 });
+  Object.assign(state, createHelmState(), {
+    collected: 0,
+    hits: 0,
+    spared: 0,
+    touching: false,
+    over: '',
+    time: 0,
+    par: parTime(handles.beacons),
+    lastHit: '',
+    minesHit: 0,
+  });
   taken = new Array(params.beacons).fill(false);
+  mines = layMines(handles.beacons, handles.seabed, params.seed);
+  mineLive = mines.map(() => true);
+  blasts.length = 0;
   aim.index = -1;
   zoom = Number.NaN;
   pickups.length = 0;
@@ -132,7 +169,19 @@ function heldInput(): HelmInput {
     noseUp: held.has('e'),
     ahead: held.has('d') || held.has('arrowright') || stickInput.x > STICK_DEAD,
     astern: held.has('a') || held.has('arrowleft') || stickInput.x < -STICK_DEAD,
+    heave: stickShare(stickInput.y, held.has('s') || held.has('w') || held.has('arrowdown') || held.has('arrowup')),
+    drive: stickShare(stickInput.x, held.has('a') || held.has('d') || held.has('arrowleft') || held.has('arrowright')),
   };
+}
+
+/**
+ * The share of full Dive / Rise (or screw) that the stick's push `v` in [-1, 1] along one axis asks
+ * for: 0.25 just past the dead zone, rising linearly to 1 at the rim; 1 while a key of that axis is
+ * held (`key`), so the keys always ask for all of it.
+ */
+function stickShare(v: number, key: boolean): number {
+  if (key) return 1;
+  return 0.25 + 0.75 * Math.max(0, Math.min(1, (Math.abs(v) - STICK_DEAD) / (1 - STICK_DEAD)));
 }
 
 /** The vertical command last step (-1 dive, 1 rise, 0 none): a hiss when it starts. */
@@ -182,11 +231,32 @@ function stepWorld(world: PhysicsWorld): void {
       if (world.time >= state.spared) {
         state.hits++;
         state.spared = world.time + 2;
+        state.lastHit = 'seabed';
       }
       if (state.hits >= 3) state.over = 'sunk';
     }
   }
   state.touching = hit;
+  // Mines: touching one sets it off. It costs a hit and its blast throws the hull away from it
+  // (an impulse at the hull's centre; the physics carries it from there).
+  const angle = c.Angle.value[e]!;
+  for (let i = 0; i < mines.length; i++) {
+    const m = mines[i]!;
+    if (!mineLive[i] || !touchesMine(c.Position.x[e]!, c.Position.y[e]!, angle, m.x, m.y)) continue;
+    mineLive[i] = false;
+    state.hits++;
+    state.minesHit++;
+    state.lastHit = 'mine';
+    state.spared = world.time + 2;
+    const dx = c.Position.x[e]! - m.x,
+      dy = c.Position.y[e]! - m.y,
+      r = Math.max(1e-6, Math.hypot(dx, dy));
+    applyImpulse(world, e, [(MINE_BLAST_IMPULSE * dx) / r, (MINE_BLAST_IMPULSE * dy) / r]);
+    blasts.push({ x: m.x, y: m.y, time: world.time });
+    sound.explosion(0.9);
+    if (state.hits >= 3) state.over = 'sunk';
+  }
+  if (state.over) return;
   for (let i = 0; i < taken.length; i++) {
     if (taken[i]) continue;
     const dx = handles.beacons[2 * i]! - c.Position.x[e]!,
@@ -335,15 +405,35 @@ function showEnd(): void {
   title.style.cssText = `font: 800 24px system-ui, sans-serif; color: ${won ? '#ffe066' : '#ff8a7a'};`;
   title.textContent = won ? (taken.length === 1 ? 'Beacon collected!' : `All ${taken.length} beacons!`) : 'Hull breached!';
   const line = document.createElement('div');
-  line.textContent = won
-    ? `${clock(state.time)} · hull ${hull}/3  ${'★'.repeat(hull)}${'☆'.repeat(3 - hull)}`
-    : `${state.collected} of ${taken.length} beacons before the third scrape.`;
+  if (won) {
+    // Three stars to earn: every beacon, inside par, the hull unhurt; each line says which were earned.
+    const stars = runStars();
+    const starRow = document.createElement('div');
+    starRow.dataset.hud = 'stars';
+    starRow.style.cssText = 'font-size: 30px; line-height: 1.1; letter-spacing: 4px; color: #ffe066;';
+    starRow.textContent = `${'★'.repeat(stars)}${'☆'.repeat(3 - stars)}`;
+    const inPar = state.time <= state.par;
+    line.style.cssText = 'font-size: 15px;';
+    line.textContent = `✓ ${taken.length === 1 ? 'the beacon' : `all ${taken.length} beacons`} · ${inPar ? '✓' : '✗'} ${clock(state.time)} (par ${clock(state.par)}) · ${hull === 3 ? '✓' : '✗'} hull ${hull}/3`;
+    endCard.append(title, starRow);
+  } else {
+    line.textContent = `${state.collected} of ${taken.length} beacons, then ${state.lastHit === 'mine' ? 'a mine' : 'the seabed'} broke the hull.`;
+    endCard.append(title);
+  }
   const bestLine = document.createElement('div');
   bestLine.style.cssText = 'color: #b8c8d8; font-size: 14px;';
   bestLine.textContent =
-    won && newBest ? 'A new best time for this sea!' : best !== null ? `Best: ${clock(best)}` : 'Keep clear of the seabed.';
-  endCard.append(title, line, bestLine);
+    won && newBest
+      ? 'A new best time for this sea!'
+      : best !== null
+        ? `Best: ${clock(best)}`
+        : 'Mines and the seabed each cost a third of the hull.';
+  endCard.append(line, bestLine);
   showAgain(true, won ? 'Play again ▶' : 'Try again ↺');
+}
+/** Stars of a won run, 1 to 3: one for the beacons, one for a time inside par, one for an unhurt hull. */
+function runStars(): number {
+  return 1 + Number(state.time <= state.par) + Number(state.hits === 0);
 }
 let gaugeFrame = 0;
 /** The "beacon" tags under beacons in view other than the pointer's (a pool, hidden when unused). */
@@ -367,6 +457,69 @@ createButtonBar(
   ],
   { label: 'trim' },
 );
+
+/**
+ * Draws the live mines between `left` and `right` (m, world x) and the blasts of those set off, at
+ * game time `t` (s), `k` px a metre, through `sx` and `sy` (world m to screen px). A mine: its cable
+ * down to an anchor block on the seabed, a dark sphere with contact horns, and a red lamp on top that
+ * blinks once a second (so a mine reads as a danger, not as a rock, in the dark of the deep). A blast:
+ * a white-orange flash and a ring of rising bubbles, over `BLAST_LIFE` s.
+ */
+function drawMines(t: number, k: number, sx: (x: number) => number, sy: (y: number) => number, left: number, right: number): void {
+  const R = MINE_RADIUS * 0.7;
+  for (let i = 0; i < mines.length; i++) {
+    const m = mines[i]!;
+    if (!mineLive[i] || m.x < left - 5 || m.x > right + 5) continue;
+    const x = sx(m.x),
+      y = sy(m.y);
+    // The cable, in links every 1.5 m, and the anchor block it holds to.
+    const links = Math.max(1, Math.floor((m.y - R - m.anchor) / 1.5));
+    g.moveTo(x, y + R * k)
+      .lineTo(x, sy(m.anchor))
+      .stroke({ color: 0x1a2630, width: Math.max(1.5, 0.25 * k), alpha: 0.9 });
+    if (k >= 4) for (let j = 1; j < links; j++) g.circle(x, sy(m.y - R - 1.5 * j), 0.18 * k).stroke({ color: 0x3a4a56, width: 1 });
+    g.rect(x - 0.9 * k, sy(m.anchor) - 0.7 * k, 1.8 * k, 0.9 * k).fill(0x2a3038);
+    // Horns: six stubs round the sphere, each with a bright tip.
+    for (let j = 0; j < 6; j++) {
+      const a = (j / 6) * 2 * Math.PI + Math.PI / 2;
+      const x1 = x + Math.cos(a) * MINE_RADIUS * k,
+        y1 = y - Math.sin(a) * MINE_RADIUS * k;
+      g.moveTo(x + Math.cos(a) * R * k, y - Math.sin(a) * R * k)
+        .lineTo(x1, y1)
+        .stroke({ color: 0x59656e, width: Math.max(1.5, 0.3 * k) });
+      g.circle(x1, y1, Math.max(1.2, 0.18 * k)).fill(0xb8c2c8);
+    }
+    g.circle(x, y, Math.max(4, R * k))
+      .fill(0x2b3640)
+      .stroke({ color: 0x8a98a2, width: Math.max(1, 0.12 * k), alpha: 0.8 });
+    // A highlight, so the sphere reads round.
+    g.circle(x - 0.3 * R * k, y - 0.3 * R * k, Math.max(1.5, 0.3 * R * k)).fill({ color: 0xc8d4dc, alpha: 0.35 });
+    const on = (t + i * 0.37) % 1 < 0.5;
+    g.circle(x, y - R * k * 0.55, Math.max(2, 0.22 * k)).fill({ color: on ? 0xff3b30 : 0x6a1a16, alpha: 1 });
+    if (on) g.circle(x, y - R * k * 0.55, Math.max(5, 0.7 * k)).fill({ color: 0xff3b30, alpha: 0.25 });
+  }
+  for (let i = blasts.length - 1; i >= 0; i--) if (t - blasts[i]!.time > BLAST_LIFE || t < blasts[i]!.time) blasts.splice(i, 1);
+  for (const b of blasts) {
+    const u = (t - b.time) / BLAST_LIFE,
+      x = sx(b.x),
+      y = sy(b.y);
+    if (u < 0.3) {
+      g.circle(x, y, (2 + 14 * u) * k).fill({ color: 0xffb347, alpha: 0.8 * (1 - u / 0.3) });
+      g.circle(x, y, (1 + 8 * u) * k).fill({ color: 0xfff3d6, alpha: 0.9 * (1 - u / 0.3) });
+    }
+    g.circle(x, y, (3 + 12 * Math.sqrt(u)) * k).stroke({ color: 0xe8f6ff, alpha: 0.7 * (1 - u), width: 2 });
+    for (let j = 0; j < 14; j++) {
+      const h = speckHash(j, Math.floor(b.time * 1000)),
+        a = (j / 14) * 2 * Math.PI,
+        r = (2 + 9 * Math.sqrt(u) * (0.6 + ((h & 0xff) / 255) * 0.8)) * k;
+      g.circle(x + r * Math.cos(a), y - r * Math.sin(a) - 6 * u * k, Math.max(1.5, (0.3 + ((h >>> 8) & 3) * 0.15) * k)).stroke({
+        color: 0xe8f6ff,
+        alpha: 0.8 * (1 - u),
+        width: 1.2,
+      });
+    }
+  }
+}
 
 /** A well-mixed 32-bit hash of a cell (i, j) of the marine snow: its speck's offset, size and brightness. */
 function speckHash(i: number, j: number): number {
@@ -581,6 +734,7 @@ function draw(): void {
     }
   }
   drawFish(g, left, right, t, k, sx, sy, bedAt, hxw, hyw);
+  drawMines(t, k, sx, sy, left, right);
   // Beacons: a lamp (at least 5 px, however far the camera zooms out) in a pulsing ring; each one
   // on screen but the pointer's is tagged "beacon" under it, so a yellow light elsewhere in the view
   // reads as another beacon to collect, not as something unexplained.
@@ -773,7 +927,10 @@ function draw(): void {
   showEnd();
   const helm = state.mode === 'holding' ? `holding ${(-state.holdY).toFixed(0)} m` : state.mode === 'braking' ? 'stopping' : state.mode;
   // The goal and a short readout first; the instruments (tanks, pitch, climb, helm) after, small and dim.
-  goal.textContent = end || `Collect the ${taken.length} beacons · ${state.collected} of ${taken.length} · ${clock(state.time)}`;
+  goal.textContent =
+    end || `Collect the ${taken.length} beacons · ${state.collected} of ${taken.length} · ${clock(state.time)} / par ${clock(state.par)}`;
+  // The clock turns red once par has passed.
+  goal.style.color = !state.over && state.time > state.par ? '#ff9e8a' : '#ffe066';
   readout.textContent = `depth ${depth.toFixed(0)} m · speed ${speed.toFixed(1)} m/s · hull ${3 - state.hits}/3`;
   instruments.textContent = `seabed ${(-floor).toFixed(0)} m · climb ${c.Velocity.y[e]!.toFixed(1)} m/s · pitch ${((a * 180) / Math.PI).toFixed(0)}° · screw ${(state.throttle * 100).toFixed(0)}% · tanks ${(B.fore[e]! * 100).toFixed(0)}/${(B.aft[e]! * 100).toFixed(0)}% (neutral ${(SUBMARINE_NEUTRAL_FILL * 100).toFixed(0)}%) · ${helm}`;
 }
@@ -800,6 +957,8 @@ shell.expose({
   state,
   /** The hull entity. */
   hull: () => handles.hull,
+  /** The course's mines: centre (x, y, m), anchor height (m) and whether each is still live. */
+  mines: () => mines.map((m, i) => ({ ...m, live: mineLive[i]! })),
   /** The scene's handles: hull, sea, seabed, beacons (x, y pairs, m) and vertical thrusters. */
   handles: () => handles,
   /** Sets the stick as the on-screen one does: x right (ahead), y up (rise), each clamped to [-1, 1]. */

@@ -77,6 +77,23 @@ describe('phone controls', () => {
       },
     );
     expect(throttle).toBeGreaterThan(0.05);
+    // Pushed a little over half way (x 0.56 of the knob's 45 px reach), the screw runs up to about
+    // half: 0.25 past the dead zone (0.35) rising to 1 at the rim gives 0.49; held 1 s of game time.
+    await touchPath(
+      g.page,
+      [
+        [cx, cy],
+        [cx + 25, cy],
+      ],
+      0,
+      async () => {
+        const t0 = await read(g, 'world.time');
+        await g.waitFor((start) => (window.game as unknown as { world: { time: number } }).world.time > start + 1, t0, 30_000);
+        throttle = await read(g, 'state.throttle');
+      },
+    );
+    expect(throttle).toBeGreaterThan(0.4);
+    expect(throttle).toBeLessThan(0.6);
     expect(g.errors).toEqual([]);
     await g.close();
   });
@@ -166,6 +183,16 @@ describe('phone controls', () => {
       return l[0]! + l[2]! <= hb[0]! || hb[0]! + hb[2]! <= l[0]! || l[1]! + l[3]! <= hb[1]! || hb[1]! + hb[3]! <= l[1]!;
     });
     expect(clear).toBe(true);
+    // Far from its beacon the camera zooms out no further than 4 px/m on a phone (the 12 m hull 48 px long).
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as { world: { components: { Position: { x: Float64Array } } }; hull(): number };
+      w.world.components.Position.x[w.hull()] = -90;
+    });
+    const far = await g.waitFor(() => {
+      const z = (window.game as unknown as { beaconPointer(): { zoom: number } }).beaconPointer().zoom;
+      return z < 4.05 ? z : null;
+    }, null);
+    expect(far).toBeGreaterThan(3.99);
     expect(g.errors).toEqual([]);
     await g.close();
   });

@@ -127,7 +127,7 @@ describe('projects', () => {
     expect(aim.zoom).toBeGreaterThan(5); // px/m: the 12 m hull at least 60 px long
     expect(aim.text).toBe(`beacon ${aim.text.match(/\d+ m ahead/)![0]}, ${Math.abs(aim.dy).toFixed(0)} m down`);
     // The goal and the clock are stated above the scene.
-    expect(await g.page.locator('[data-hud="goal"]').textContent()).toMatch(/^Collect the 6 beacons · 0 of 6 · 0:\d\d$/);
+    expect(await g.page.locator('[data-hud="goal"]').textContent()).toMatch(/^Collect the 6 beacons · 0 of 6 · 0:\d\d \/ par \d:\d\d$/);
     const x0 = await g.page.evaluate(() => {
       const w = window.game as unknown as Game & { hull(): number };
       return w.world.components.Position.x[w.hull()] as number;
@@ -156,15 +156,45 @@ describe('projects', () => {
     await g.close();
   });
 
-  it('submarine: a third scrape ends the run with Try again; the last beacon shows the time and Play again', async () => {
-    const g = await h.openGame('submarine', { query: { waves: 0, beacons: 1 } });
+  it('submarine: a mine costs a hit and throws the hull; a third scrape ends the run; the last beacon shows the stars', async () => {
+    const g = await h.openGame('submarine', { query: { waves: 0, beacons: 2 } });
     type Sub = {
-      world: { components: { Position: { x: Float64Array; y: Float64Array } } };
+      world: { components: { Position: { x: Float64Array; y: Float64Array }; Velocity: { x: Float64Array; y: Float64Array } } };
       hull(): number;
       handles(): { beacons: Float64Array; seabed: { x0: number; dx: number; y: Float64Array } };
-      state: { hits: number; spared: number; over: string; collected: number };
+      state: { hits: number; spared: number; over: string; collected: number; minesHit: number; time: number; par: number };
+      mines(): { x: number; y: number; live: boolean }[];
       endText(): string;
     };
+    // The hull put at rest with its deck 0.5 m under the first mine (within its 2.4 m reach): the
+    // mine goes off, costs a hit and its blast (440 kN s) throws the light hull (80 t, tanks empty)
+    // down at about 5.5 m/s, where its buoyancy alone would only lift it. The page keeps the
+    // fastest sinking speed seen each frame.
+    const mine = await g.page.evaluate(() => {
+      const w = window.game as unknown as Sub;
+      const m = w.mines()[0]!;
+      const c = w.world.components;
+      c.Position.x[w.hull()] = m.x;
+      c.Position.y[w.hull()] = m.y - 3.5;
+      c.Velocity.x[w.hull()] = 0;
+      c.Velocity.y[w.hull()] = 0;
+      const seen = { vy: 0 };
+      (window as unknown as { subSink: typeof seen }).subSink = seen;
+      const frame = () => {
+        seen.vy = Math.min(seen.vy, c.Velocity.y[w.hull()]!);
+        if (w.state.minesHit === 0 || seen.vy > -3) requestAnimationFrame(frame);
+      };
+      requestAnimationFrame(frame);
+      return m;
+    });
+    expect(mine.live).toBe(true);
+    const blast = await g.waitFor(() => {
+      const w = window.game as unknown as Sub;
+      const vy = (window as unknown as { subSink: { vy: number } }).subSink.vy;
+      return w.state.minesHit === 1 && vy < -3 ? { hits: w.state.hits, live: w.mines()[0]!.live } : null;
+    }, null);
+    expect(blast.hits).toBe(1);
+    expect(blast.live).toBe(false);
     // Two scrapes already; the hull put into the seabed under it makes the third.
     await g.page.evaluate(() => {
       const w = window.game as unknown as Sub;
@@ -180,16 +210,23 @@ describe('projects', () => {
     await again.click();
     await g.waitFor(() => (window.game as unknown as Sub).state.over === '', null);
     expect(await g.page.evaluate(() => (window.game as unknown as Sub).state.hits)).toBe(0);
-    // The one beacon collected: the run is won, with its time and the hull on the card.
-    await g.page.evaluate(() => {
-      const w = window.game as unknown as Sub;
-      const b = w.handles().beacons;
-      w.world.components.Position.x[w.hull()] = b[0]! - 3;
-      w.world.components.Position.y[w.hull()] = b[1]!;
-    });
+    // Both beacons collected inside par with the hull unhurt: the run is won with three stars.
+    for (const i of [0, 1]) {
+      await g.page.evaluate((i) => {
+        const w = window.game as unknown as Sub;
+        const b = w.handles().beacons;
+        w.world.components.Position.x[w.hull()] = b[2 * i]! - 3;
+        w.world.components.Position.y[w.hull()] = b[2 * i + 1]!;
+      }, i);
+      await g.waitFor((n) => (window.game as unknown as Sub).state.collected === n, i + 1);
+    }
     await g.waitFor(() => (window.game as unknown as Sub).state.over === 'won', null);
     await g.page.getByRole('button', { name: 'Play again ▶', exact: true }).waitFor({ state: 'visible' });
-    expect(await g.page.evaluate(() => (window.game as unknown as Sub).endText())).toMatch(/^Beacon collected!0:\d\d · hull 3\/3/);
+    const won = await g.page.evaluate(() => (window.game as unknown as Sub).state);
+    expect(won.time).toBeLessThan(won.par);
+    expect(await g.page.evaluate(() => (window.game as unknown as Sub).endText())).toMatch(
+      /^All 2 beacons!★★★✓ all 2 beacons · ✓ 0:\d\d \(par \d:\d\d\) · ✓ hull 3\/3/,
+    );
     expect(g.errors).toEqual([]);
     await g.close();
   });
