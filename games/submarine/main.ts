@@ -414,7 +414,14 @@ function showEnd(): void {
     starRow.textContent = `${'★'.repeat(stars)}${'☆'.repeat(3 - stars)}`;
     const inPar = state.time <= state.par;
     line.style.cssText = 'font-size: 15px;';
-    line.textContent = `✓ ${taken.length === 1 ? 'the beacon' : `all ${taken.length} beacons`} · ${inPar ? '✓' : '✗'} ${clock(state.time)} (par ${clock(state.par)}) · ${hull === 3 ? '✓' : '✗'} hull ${hull}/3`;
+    // Each item kept on one line (no-break spaces inside it), so a mark never wraps away from its words.
+    line.textContent = [
+      `✓ ${taken.length === 1 ? 'the beacon' : `all ${taken.length} beacons`}`,
+      `${inPar ? '✓' : '✗'} ${clock(state.time)} (par ${clock(state.par)})`,
+      `${hull === 3 ? '✓' : '✗'} hull ${hull}/3`,
+    ]
+      .map((item) => item.replaceAll(' ', '\u00a0'))
+      .join(' · ');
     endCard.append(title, starRow);
   } else {
     line.textContent = `${state.collected} of ${taken.length} beacons, then ${state.lastHit === 'mine' ? 'a mine' : 'the seabed'} broke the hull.`;

@@ -225,7 +225,7 @@ describe('projects', () => {
     const won = await g.page.evaluate(() => (window.game as unknown as Sub).state);
     expect(won.time).toBeLessThan(won.par);
     expect(await g.page.evaluate(() => (window.game as unknown as Sub).endText())).toMatch(
-      /^All 2 beacons!★★★✓ all 2 beacons · ✓ 0:\d\d \(par \d:\d\d\) · ✓ hull 3\/3/,
+      /^All 2 beacons!★★★✓\u00a0all\u00a02\u00a0beacons · ✓\u00a00:\d\d\u00a0\(par\u00a0\d:\d\d\) · ✓\u00a0hull\u00a03\/3/,
     );
     expect(g.errors).toEqual([]);
     await g.close();
