@@ -82,6 +82,13 @@ export interface CraneControls {
   /** Hoist: -1 down, 0, 1 up. */
   hoist: number;
   /**
+   * Whether the anti-sway control is on (the player holds it): while on, and no `goal` or `moves`
+   * drive the crane, the crane adds to the slew and trolley rates asked for the rates that carry the
+   * hook toward the point over the ball (STEADY_GAIN times the ball's offset from under the hook), so
+   * the swing dies out in a couple of seconds: the hook catches the ball as a crane operator does.
+   */
+  steady: boolean;
+  /**
    * A point to drive the hook to (m, x and z), or null: set by a click on the ground. The crane runs
    * there at full speed and stops at once, so the lagging ball swings on through the point.
    */
@@ -273,7 +280,7 @@ export function buildWreckingBall(world: PhysicsWorld, options: WreckingBallOpti
   };
   for (const v of [crane.angle, crane.radius, crane.height])
     if (!Number.isFinite(v)) throw new RangeError(`buildWreckingBall: crane must hold finite numbers, got ${JSON.stringify(at)}`);
-  const controls: CraneControls = { slew: 0, trolley: 0, hoist: 0, goal: null, moves: [] };
+  const controls: CraneControls = { slew: 0, trolley: 0, hoist: 0, steady: false, goal: null, moves: [] };
   const [hx, hy, hz] = hookPosition(crane);
   const trolley = addBody(world, { position: [hx, hy, hz], kinematic: true, orientation: [0, 0, 0, 1] });
   // The chain hangs straight down from the hook; links are joined end to end.
@@ -337,6 +344,21 @@ export const HANG = CHAIN_LINKS * 2 * (LINK_HALF + LINK_RADIUS) + BALL_RADIUS;
 
 /** Period of the ball's swing on its chain, s: a pendulum of length HANG, T = 2 pi sqrt(L / g). */
 export const SWING_PERIOD = 2 * Math.PI * Math.sqrt(HANG / 9.81);
+
+/**
+ * Damping ratio of the swing under the anti-sway control (`CraneControls.steady`): critical, the
+ * quickest this control can stop it (both roots of s^2 + K s + w^2 at -w; more gain splits them and
+ * one grows slower).
+ */
+export const STEADY_DAMPING = 1;
+/**
+ * Gain of the anti-sway control, 1/s: the hook's horizontal velocity is this times the ball's
+ * horizontal offset from under the hook (within the crane's rates). For a pendulum of angular
+ * frequency w = sqrt(g / L) whose pivot moves at velocity K e (e the ball's offset from under it),
+ * the pivot's acceleration K de/dt enters the offset's equation as e'' = -w^2 e - K e': a damped
+ * oscillator with damping ratio K / (2 w); K = 2 STEADY_DAMPING w, L = HANG (about 2.7 1/s).
+ */
+export const STEADY_GAIN = 2 * STEADY_DAMPING * Math.sqrt(9.81 / HANG);
 
 /** Length, m, of the straight run the hook makes up to a target in half a swing period (see `aimAt`). */
 export const RUN_UP = 6;
@@ -432,12 +454,7 @@ export function aimAt(world: PhysicsWorld, h: WreckingBallHandles, piece: number
       moves.push({ ...at(x0 + (x1 - x0) * f, z0 + (z1 - z0) * f), height: y, duration: duration / RUN_STEPS, elapsed: 0, run });
     }
   };
-  // How far the ball swings from under the hook now, m (its offset and its relative velocity over the swing's angular frequency).
-  const V = world.components.Velocity,
-    b = h.ball,
-    tr = h.trolley,
-    w = (2 * Math.PI) / SWING_PERIOD;
-  const amp = Math.hypot(P.x[b]! - P.x[tr]!, P.z[b]! - P.z[tr]!, (V.x[b]! - V.x[tr]!) / w, (V.z[b]! - V.z[tr]!) / w);
+  const amp = swayAmplitude(world, h);
   const half = SWING_PERIOD / 2;
   if (best === null) {
     // Nowhere to run from (cannot happen inside the jib's reach): straight to the piece.
@@ -464,6 +481,19 @@ export function aimAt(world: PhysicsWorld, h: WreckingBallHandles, piece: number
   }
   h.controls.goal = null;
   h.controls.moves = moves;
+}
+
+/**
+ * How far the ball swings from under the hook, m: the horizontal amplitude of a linear pendulum
+ * with its offset (ball minus hook) and relative velocity, sqrt(e^2 + (v / w)^2), w = 2 pi / SWING_PERIOD.
+ */
+export function swayAmplitude(world: PhysicsWorld, h: WreckingBallHandles): number {
+  const P = world.components.Position,
+    V = world.components.Velocity,
+    b = h.ball,
+    t = h.trolley,
+    w = (2 * Math.PI) / SWING_PERIOD;
+  return Math.hypot(P.x[b]! - P.x[t]!, P.z[b]! - P.z[t]!, (V.x[b]! - V.x[t]!) / w, (V.z[b]! - V.z[t]!) / w);
 }
 
 /** Wraps an angle into (-pi, pi]. */
@@ -506,6 +536,22 @@ export function craneSystem(h: WreckingBallHandles): (world: PhysicsWorld) => vo
       move.elapsed += dt;
       if (f === 1) k.moves.shift();
     } else {
+      if (k.steady && k.goal === null) {
+        // Anti-sway: the hook's velocity STEADY_GAIN times the ball's offset from under it, as
+        // slew and trolley rates (radial along the jib, tangential over the radius), added to
+        // those asked for and held to the crane's.
+        const P = world.components.Position,
+          b = h.ball;
+        const ex = P.x[b]! - before[0],
+          ez = P.z[b]! - before[2];
+        const ca = Math.cos(c.angle),
+          sa = Math.sin(c.angle);
+        // Radial unit (ca, -sa); the direction of growing slew angle (-sa, -ca).
+        const radial = STEADY_GAIN * (ex * ca - ez * sa),
+          tangential = STEADY_GAIN * (-ex * sa - ez * ca);
+        run = Math.max(-1, Math.min(1, run + radial / TROLLEY_SPEED));
+        slew = Math.max(-1, Math.min(1, slew + tangential / c.radius / SLEW_RATE));
+      }
       c.angle = wrap(c.angle + slew * SLEW_RATE * dt);
       c.radius = Math.min(RADIUS_RANGE[1], Math.max(RADIUS_RANGE[0], c.radius + run * TROLLEY_SPEED * dt));
       c.height = Math.min(HOOK_RANGE[1], Math.max(HOOK_RANGE[0], c.height + k.hoist * HOIST_SPEED * dt));
