@@ -69,6 +69,7 @@ import {
   RADIUS_RANGE,
   SWING_BUDGET,
   scorePieces,
+  swayAmplitude,
   swingStars,
   type WreckingBallHandles,
   wreckingBallWorldOptions,
@@ -203,13 +204,14 @@ const game = await startThreeGame({
   controls: [
     { keys: 'A D / ← →', action: 'slew the jib', touch: '⟲ ⟳' },
     { keys: 'W S / ↑ ↓', action: 'trolley out / in', touch: 'Out / In' },
-    { keys: 'Q E', action: 'hook up / down', touch: 'Up / Down' },
     { keys: 'Click a target', action: 'swing the ball at it', touch: 'Tap a target' },
+    { keys: 'Space', action: 'hold to steady the ball', touch: 'Steady' },
+    { keys: 'Q E', action: 'hook up / down', touch: 'Up / Down' },
     { keys: 'Click ground', action: 'send the hook there' },
     { keys: 'Drag ball', action: 'pull the ball, release to swing' },
     { keys: 'L', action: 'next level (once cleared)', touch: 'Next level' },
-    { keys: 'G', action: 'debug: joints and contacts' },
     ...ORBIT_CONTROLS_RIGHT,
+    // G (the debug layer: joints and contacts) is named in the settings panel, at its checkbox.
   ],
   keys: [
     {
@@ -571,7 +573,7 @@ app.scene.add(aimArrow);
 // ---- Keys held -------------------------------------------------------------------------------
 
 const held = new Set<string>();
-const DRIVE_KEYS = ['a', 'd', 'w', 's', 'q', 'e', 'arrowleft', 'arrowright', 'arrowup', 'arrowdown'];
+const DRIVE_KEYS = ['a', 'd', 'w', 's', 'q', 'e', ' ', 'arrowleft', 'arrowright', 'arrowup', 'arrowdown'];
 function typing(target: EventTarget | null): boolean {
   const el = target as HTMLElement | null;
   return !!el && (el.tagName === 'INPUT' || el.tagName === 'SELECT' || el.tagName === 'TEXTAREA');
@@ -588,8 +590,9 @@ window.addEventListener('keydown', (event) => {
 window.addEventListener('keyup', (event) => held.delete(event.key.toLowerCase()));
 window.addEventListener('blur', () => held.clear());
 
-// Touch: the crane's six drives as hold buttons (the same keys), and "Next level" once cleared.
-createButtonBar(
+// Touch: the crane's six drives and its anti-sway as hold buttons (the same keys), and "Next level"
+// once cleared. Seven buttons fit one row of a 390 px phone with narrower padding and gaps (1 px short at the kit's).
+const craneBar = createButtonBar(
   [
     { label: '⟲', name: 'slew the jib left', key: 'a' },
     { label: '⟳', name: 'slew the jib right', key: 'd' },
@@ -597,9 +600,15 @@ createButtonBar(
     { label: 'In', name: 'trolley in', key: 's' },
     { label: 'Up', name: 'hook up', key: 'q' },
     { label: 'Down', name: 'hook down', key: 'e' },
+    { label: 'Steady', name: 'steady the ball (anti-sway)', key: ' ', accent: '#3fb27f' },
   ],
   { label: 'crane' },
 );
+craneBar.element.style.gap = '4px';
+for (const b of craneBar.buttons) {
+  b.style.padding = '0 4px';
+  b.style.minWidth = '44px';
+}
 const showNext = createActionButton('Next level ▶', () => {
   if (cleared) nextLevel();
 });
@@ -610,6 +619,7 @@ function updateControls(): void {
   c.slew = on('a', 'arrowleft') - on('d', 'arrowright');
   c.trolley = on('w', 'arrowup') - on('s', 'arrowdown');
   c.hoist = (held.has('q') ? 1 : 0) - (held.has('e') ? 1 : 0);
+  c.steady = held.has(' ');
 }
 
 // ---- Mouse: click the ground to send the hook; drag the ball ------------------------------------
@@ -930,11 +940,21 @@ function frame(): void {
       ? `Level ${handles.level} cleared in ${swingsUsed} ${swingsUsed === 1 ? 'swing' : 'swings'}! ${'★'.repeat(stars)}${'☆'.repeat(3 - stars)} · score ${banked + levelScore} · ${touch ? 'tap' : 'press L or'} Next level`
       : `Level ${handles.level} · swings left ${left}/${SWING_BUDGET} (★★★ in 2) · down ${f}/${n} (clear at ${clearTarget(handles.pieces)})${swingPhase()}${
           swing.result && shell.world.time - swing.resultAt < RESULT_SHOWN ? ` · ${swing.result}` : ''
-        }${left <= 0 && handles.controls.moves.length === 0 ? ` · out of swings: ${touch ? 'tap ↻' : 'press R'} to retry` : ''}`;
+        }${left <= 0 && handles.controls.moves.length === 0 ? ` · out of swings: ${touch ? 'tap ↻' : 'press R'} to retry` : ''}${swayHint()}`;
     showNext(cleared, `Level ${handles.level + 1} ▶`);
     drawPlan();
     readout.textContent = `step ${stepMs.toFixed(1)} ms (worst ${worstMs.toFixed(1)}) · ${handles.pieces.length} pieces`;
   }
+}
+
+/** Swing amplitude, m, over which the status line tells a player driving the crane how to stop it. */
+const SWAY_HINT = 0.6;
+/** While the player drives (no swing running) and the ball swings more than SWAY_HINT: how to steady it. */
+function swayHint(): string {
+  const c = handles.controls;
+  if (c.moves.length > 0 || c.steady || (swing.result && shell.world.time - swing.resultAt < RESULT_SHOWN)) return '';
+  if (swayAmplitude(shell.world, handles) < SWAY_HINT) return '';
+  return touch ? ' · hold Steady to stop the swing' : ' · hold Space to steady the ball';
 }
 
 /**

@@ -292,6 +292,19 @@ describe('phone controls', () => {
     const a0 = await read(g, 'handles().crane.angle');
     await hold(g.page, 'slew the jib left', 500);
     expect(await read(g, 'handles().crane.angle')).toBeGreaterThan(a0 + 0.02);
+    // The crane's seven hold buttons, Steady among them, fit one row under the scene (at the kit's
+    // padding the seventh wrapped to a second row, 48 px taken from the scene).
+    const tops = await g.page.locator('[aria-label="crane"] button').evaluateAll((bs) => bs.map((b) => b.getBoundingClientRect().top));
+    expect(tops.length).toBe(7);
+    expect(new Set(tops).size).toBe(1);
+    // Holding Steady turns the crane's anti-sway on while held (what it does to the swing is tested
+    // headless, in test/games/wrecking-ball.test.ts).
+    const steady = (await g.page.getByRole('button', { name: 'steady the ball (anti-sway)', exact: true }).boundingBox())!;
+    const steadyOn = () => (window.game as unknown as { handles(): { controls: { steady: boolean } } }).handles().controls.steady;
+    await touchPath(g.page, [[steady.x + steady.width / 2, steady.y + steady.height / 2]], 50, async () => {
+      await g.waitFor(steadyOn, null);
+    });
+    await g.waitFor(() => !(window.game as unknown as { handles(): { controls: { steady: boolean } } }).handles().controls.steady, null);
     expect(await g.page.locator('.bp-big').count()).toBe(0);
     // Count every piece as fallen: the level is cleared and the button appears; a tap goes on.
     await g.page.evaluate(() => {

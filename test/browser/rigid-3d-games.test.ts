@@ -79,6 +79,12 @@ describe('3D rigid-body games in headless Chromium', () => {
     await g.page.keyboard.down('a');
     await g.waitFor((a) => (window.game as unknown as WB).handles().crane.angle > a + 0.05, a0, 20_000);
     await g.page.keyboard.up('a');
+    // Space held is the crane's anti-sway (Steady): on while held, off when let go.
+    type Steady = { handles(): { controls: { steady: boolean } } };
+    await g.page.keyboard.down(' ');
+    await g.waitFor(() => (window.game as unknown as Steady).handles().controls.steady, null);
+    await g.page.keyboard.up(' ');
+    await g.waitFor(() => !(window.game as unknown as Steady).handles().controls.steady, null);
     // While the ball is well inside the view the camera holds still (targets stay under the finger)...
     const t1 = await g.page.evaluate(() => (window.game as unknown as { cameraTarget(): number[] }).cameraTarget());
     expect(Math.hypot(t1[0]! - t0[0]!, t1[2]! - t0[2]!)).toBeLessThan(1e-9);
