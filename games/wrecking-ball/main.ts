@@ -340,12 +340,12 @@ dress();
 /** The level the camera was last framed for (a reset of the same level keeps the player's view). */
 let framedLevel = 0;
 /**
- * Frames the site: the level's pieces and the mast (a metre to spare on a phone, half a metre in on a
- * wide screen, whose view has room to the sides), the camera's orbit target
- * at their middle. A wide screen looks from the side, over the site; a tall phone screen from higher
- * up and square to the site's side (so the site's width, not its diagonal, spans the screen), low
- * enough that the site fills the width: the jib's far end may leave the screen, the hook and the
- * ball do not (the camera follows the ball, see followAction).
+ * Frames the site: the level's pieces and the mast (half a metre in on a wide screen, whose view has
+ * room to the sides), the camera's orbit target at their middle. A wide screen looks from the side,
+ * over the site; a tall phone screen square to the site's side (so the site's width, not its
+ * diagonal, spans the screen), from low enough that the sky and the crane's top show over the site
+ * (from higher up the view over the site is a flat field of grass): the jib's far end may leave the
+ * screen, the hook and the ball do not (the camera follows the ball, see followAction).
  */
 function frameSite(): void {
   framedLevel = handles.level;
@@ -361,7 +361,7 @@ function frameSite(): void {
     z0 = Math.min(z0, P.z[p.body]! - r);
     z1 = Math.max(z1, P.z[p.body]! + r);
   }
-  if (PORTRAIT) app.frame([x0 - 1, 0, z0 - 1], [x1 + 1, 2, z1 + 1], [0, 1.25, 1]);
+  if (PORTRAIT) app.frame([x0, 0, z0], [x1, 3, z1], [0, 0.6, 1]);
   else app.frame([x0 + 0.5, 0, z0 + 0.5], [x1 - 0.5, 7, z1 - 0.5], [0.85, 0.6, 1]);
 }
 frameSite();

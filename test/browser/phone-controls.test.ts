@@ -261,6 +261,18 @@ describe('phone controls', () => {
     });
     expect((span.max - span.min) / 2).toBeGreaterThan(0.5);
     expect(Math.max(-span.min, span.max, span.y)).toBeLessThan(1);
+    // The view is low enough to show the sky over the site: the grass 45 m beyond the mast (the
+    // ground's far edge) is drawn below the top fifth of the screen (measured y 0.6 in device
+    // coordinates; from higher up it was above the view, whose top was grass).
+    const horizon = await g.page.evaluate(() => {
+      const cam = (
+        window.game as unknown as {
+          app: { camera: { position: { clone(): { set(x: number, y: number, z: number): { project(c: unknown): { y: number } } } } } };
+        }
+      ).app.camera;
+      return cam.position.clone().set(0, 0, -45).project(cam).y;
+    });
+    expect(horizon).toBeLessThan(0.8);
     // A tap 26 px beside a tower block (a tower is about 20 px wide here) swings the ball at the
     // tower instead of sending the hook to the ground there; an arrow marks it. Seen from above, the
     // tower's blocks are drawn nearly over each other: the swing may take any of them.
