@@ -192,6 +192,17 @@ describe('bench CLI', () => {
     expect(lines[1]!.stateHash).toBe(lines[0]!.stateHash);
   });
 
+  it('--warm-up runs the warm-up scene first and leaves the state as it is without it', async () => {
+    const args = ['--scene', 'pyramid', '--count', '6', '--steps', '10', '--warmup', '0', '--hash'];
+    const [plain, warm] = await Promise.all([runCli(args), runCli([...args, '--warm-up'])]);
+    expect([plain.code, warm.code]).toEqual([0, 0]);
+    const hash = (out: string) => /bitphysics: stateHash ([0-9a-f]+)/.exec(out)?.[1];
+    expect(hash(plain.stdout)).toMatch(/^[0-9a-f]{16}$/);
+    expect(hash(warm.stdout)).toBe(hash(plain.stdout));
+    expect(warm.stdout).toContain('warm-up scene run first');
+    expect(plain.stdout).not.toContain('warm-up scene run first');
+  });
+
   it('--list lists the scenes and the engines that support each', async () => {
     const [human, json] = await Promise.all([runCli(['--list']), runCli(['--list', '--json'])]);
     expect(human.code).toBe(0);

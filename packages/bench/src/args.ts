@@ -43,6 +43,11 @@ export interface BenchArgs {
    * thread (V8 isolate) of its own (the default; see isolation/isolated-engine.ts for why).
    */
   readonly sameIsolate: boolean;
+  /**
+   * `--warm-up`: make bitphysics' world with `warmUp: true` (a small scene built, stepped and thrown
+   * away first, so its first steps run compiled code; the setup time includes it).
+   */
+  readonly warmUp: boolean;
   /** Engines to run: ours first, then the `--vs` peers in the order given (duplicates dropped). */
   readonly engines: readonly string[];
   /**
@@ -66,6 +71,7 @@ const BUILTIN_OPTIONS = {
   block: { type: 'string' },
   json: { type: 'boolean' },
   hash: { type: 'boolean' },
+  'warm-up': { type: 'boolean' },
   soak: { type: 'boolean' },
   threads: { type: 'string' },
   times: { type: 'boolean' },
@@ -102,6 +108,8 @@ export const USAGE = `usage: npm run bench -- [options] [--<param> <value> ...]
                      median step time printed every 10,000 steps (e.g. --scene fireworks --soak)
   --json             one JSON object per line per engine (or per study item) on stdout; notes and progress go to stderr
   --times            with --json: add every timed step's milliseconds as "timesMs" (not for studies)
+  --warm-up          make bitphysics' world with warmUp: true (a small scene stepped and thrown away first, so the
+                     first timed steps run compiled code; counted in setup ms); use with --warmup 0
   --same-isolate     run the --vs peers on bitphysics' thread (one V8 isolate) instead of each in a worker thread
                      of its own; a WASM peer then slows every JavaScript engine in the run (it detaches buffers)
   --list             list scenes, their parameters and the engines that support each
@@ -210,6 +218,7 @@ export function parseBenchArgs(argv: readonly string[]): BenchArgs {
     threads,
     times: values.times === true,
     sameIsolate: values['same-isolate'] === true,
+    warmUp: values['warm-up'] === true,
     scene,
     study,
     count,

@@ -199,7 +199,15 @@ async function run(args: BenchArgs, io: CliIO): Promise<number> {
     const result = await runBenchmark(
       adapters,
       scene.bench,
-      { scene: args.scene, count: args.count, seed: args.seed, params: args.params, hash: args.hash, threads: args.threads },
+      {
+        scene: args.scene,
+        count: args.count,
+        seed: args.seed,
+        params: args.params,
+        hash: args.hash,
+        threads: args.threads,
+        warmUp: args.warmUp,
+      },
       {
         steps: args.steps,
         warmup: args.warmup,

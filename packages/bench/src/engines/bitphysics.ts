@@ -51,6 +51,7 @@ function bitphysicsAdapter(name: string, threads: number): EngineAdapter {
         ...definition.worldOptions(sceneOptions),
         seed: options.seed,
         ...(threads > 1 ? { threads } : {}),
+        ...(options.warmUp === true ? { warmUp: true } : {}),
       });
       const handles = definition.build(w, sceneOptions);
       const probe = bench.probe?.(w, handles, options);
@@ -59,7 +60,8 @@ function bitphysicsAdapter(name: string, threads: number): EngineAdapter {
       const notes = [
         `bitphysics: dt ${fmtDt(w.dt)} s, substeps ${w.substeps}, solver substeps ${w.collision.settings.solverSubsteps}, ` +
           `iterations ${w.collision.settings.solverIterations}, integrator ${w.integrator}, ${w.collision.sleep.enabled ? `sleeping allowed (${w.collision.sleep.linearSpeed} m/s, ${w.collision.sleep.timeToSleep} s)` : 'no sleeping'}` +
-          (threads > 1 ? `, threads ${threads}` : ''),
+          (threads > 1 ? `, threads ${threads}` : '') +
+          (options.warmUp === true ? ', warm-up scene run first (counted in setup ms)' : ''),
       ];
       return {
         engine: name,
