@@ -1,18 +1,28 @@
 /**
- * The warm-up `createPhysicsWorld({ warmUp: true })` runs (packages/physics/src/warm-up.ts): its
- * scene exercises what it claims to (polygon or box manifolds, ball rows, joints: if its layout broke,
- * the JavaScript engine would compile less before a user's first steps), it leaves no trace in a world
- * made after it (the same state to the bit, with or without it), and its option is checked like the
- * others. Whether it speeds the first steps is measured in the bench, not here.
+ * `warmUp(dimensions)` (packages/physics/src/warm-up.ts): its scene exercises what it claims to (ball
+ * and shape contacts in every step: if its layout broke, the JavaScript engine would compile less before
+ * a user's first steps), it leaves no trace in a world made after it (the same state to the bit, with
+ * or without it), it runs once a dimension, and its argument is checked. Whether it speeds the first
+ * steps is measured in the bench (`--warm-up`), not here.
  */
-import { ContactKind, createPhysicsWorld, forEachContact, type PhysicsWorld, SCENES, stateHash, step } from '@bitphysics/physics';
+import {
+  ContactKind,
+  createPhysicsWorld,
+  forEachContact,
+  type PhysicsWorld,
+  SCENES,
+  stateHash,
+  step,
+  WARM_UP_STEPS,
+  warmUp,
+} from '@bitphysics/physics';
 import { describe, expect, it } from 'vitest';
-import { WARM_UP_STEPS, warmUp, warmUpScene } from '../../packages/physics/src/warm-up.js';
+import { warmUpScene } from '../../packages/physics/src/warm-up.js';
 
-/** A scene of `name` and `count` built in a world made without the warm-up, stepped `steps` times; its state hash. */
+/** A scene of `name` and `count` built in a fresh world, stepped `steps` times; its state hash. */
 function hashAfter(name: string, count: number, steps: number): string {
   const scene = SCENES[name]!;
-  const world = createPhysicsWorld({ ...scene.worldOptions({ count }), warmUp: false });
+  const world = createPhysicsWorld(scene.worldOptions({ count }));
   scene.build(world, { count });
   for (let i = 0; i < steps; i++) step(world);
   return stateHash(world);
@@ -28,9 +38,9 @@ function activity(world: PhysicsWorld): { balls: number; shapes: number } {
   return a;
 }
 
-describe('warm-up', () => {
+describe('warmUp', () => {
   it.each([2, 3] as const)('the %iD scene has ball and shape contacts through its steps, and stays finite', (d) => {
-    const world = warmUpScene(d, createPhysicsWorld);
+    const world = warmUpScene(d);
     let fewestBalls = Infinity,
       fewestShapes = Infinity;
     for (let i = 0; i < WARM_UP_STEPS; i++) {
@@ -46,16 +56,20 @@ describe('warm-up', () => {
     for (let e = 1; e < world.capacity + 1; e++) expect(Number.isFinite(P.y[e]!)).toBe(true);
   });
 
-  it('leaves no trace: scenes made before and after it step to the same state', () => {
-    const before = [hashAfter('pyramid', 8, 60), hashAfter('balls-in-box', 300, 60), hashAfter('box-pile-3d', 60, 60)];
-    warmUp(2, createPhysicsWorld);
-    warmUp(3, createPhysicsWorld);
-    expect([hashAfter('pyramid', 8, 60), hashAfter('balls-in-box', 300, 60), hashAfter('box-pile-3d', 60, 60)]).toEqual(before);
+  it('leaves no trace: scenes made before and after its scene step to the same state', () => {
+    const scenes = (): string[] => [hashAfter('pyramid', 8, 60), hashAfter('balls-in-box', 300, 60), hashAfter('box-pile-3d', 60, 60)];
+    const before = scenes();
+    for (const d of [2, 3] as const) {
+      const world = warmUpScene(d);
+      for (let i = 0; i < WARM_UP_STEPS; i++) step(world);
+    }
+    expect(scenes()).toEqual(before);
   });
 
-  it('its option must be a boolean, named in the error', () => {
-    expect(() => createPhysicsWorld({ warmUp: 1 as unknown as boolean })).toThrow(/createPhysicsWorld.*warmUp.*1/);
-    expect(() => createPhysicsWorld({ warmUp: false })).not.toThrow();
-    expect(createPhysicsWorld({ dimensions: 3, warmUp: true }).dimensions).toBe(3);
+  it('runs once a dimension; its argument must be 2 or 3, named in the error', () => {
+    expect(() => warmUp(4 as 2)).toThrow(/^warmUp: dimensions must be 2 or 3, got 4$/);
+    const first = warmUp(3);
+    expect(warmUp(3)).toBe(false);
+    expect(typeof first).toBe('boolean');
   });
 });

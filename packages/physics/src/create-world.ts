@@ -28,7 +28,6 @@ import {
   assertVector,
   describe,
 } from './validation/validate.js';
-import { warmUpOnce } from './warm-up.js';
 import { createClothState } from './world/cloth-state.js';
 import { COMPONENT_DEFAULTS } from './world/component-defaults.js';
 import { BODY_STORES, createComponents, LAZY_COMPONENTS, materializeGroup } from './world/components.js';
@@ -65,7 +64,6 @@ const KNOWN_OPTIONS = [
   'interpolation',
   'sleep',
   'threads',
-  'warmUp',
 ] as const;
 
 /**
@@ -121,10 +119,6 @@ export function createPhysicsWorld(options: PhysicsWorldOptions = {}): PhysicsWo
   assertInteger(where, 'threads', threads, 1, 64);
   // Made before anything else, so a missing SharedArrayBuffer or Worker throws before any allocation.
   const threadPool = threads > 1 ? makeThreadPool(where, threads) : null;
-  const warm = options.warmUp ?? false;
-  assertBoolean(where, 'warmUp', warm);
-  // Asked for: before the program's first world of this dimension, a small scene runs (warm-up.ts).
-  if (warm) warmUpOnce(dimensions, createPhysicsWorld);
   const restitution = options.restitutionThreshold === undefined ? {} : { restitutionThreshold };
   const settings = { dimensions, gravity, dt, substeps, integrator, seed, solverSubsteps, solverIterations, sleep, interpolation };
   if (!literalsPrimed) {

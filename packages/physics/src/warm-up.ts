@@ -1,7 +1,6 @@
 /**
- * The warm-up (`createPhysicsWorld({ warmUp: true })`): before a program's first world of a dimension
- * that asks for it is made, a small scene of that dimension is built, stepped and thrown away, so that
- * the JavaScript engine has compiled the physics code the scene runs before the program's own scene
+ * The warm-up, `warmUp(dimensions)`: a small scene of a dimension, built, stepped and thrown away, so
+ * that the JavaScript engine has compiled the physics code the scene runs before a program's own scene
  * runs it.
  *
  * Why: V8 (Node, Chrome) runs a function in its interpreter until the function has run enough, then
@@ -11,9 +10,10 @@
  * 820 boxes took about 130 ms of main-thread CPU for its first step against about 10 ms for a later
  * one, and several steps more before all of its code was compiled, although only 9 compiled functions
  * were thrown away again. A small scene reaches the compile thresholds of the same functions in far
- * fewer operations, so most of the stall moves out of the first steps into the making of the first
- * world, where a game loads. In all it costs a little more CPU than it saves, so it is asked for, not
- * the default.
+ * fewer operations, so most of the stall moves out of the first steps to wherever the program calls
+ * this, such as a game's loading. In all it costs a little more CPU than it saves, so it is a call a
+ * program makes, not something a world does by itself (and a module of its own, so a program that
+ * does not call it does not bundle the scene's shapes and joints).
  *
  * The scene covers the common paths of the dimension: boxes stacked on a static ground (polygon
  * manifolds, friction, islands, sleep), ball bodies (the ball rows), a circle or sphere shape, and a
@@ -23,10 +23,12 @@
 import { addBody, setBoundary } from './bodies/api.js';
 import { addBox, addShape } from './bodies/shapes-2d.js';
 import { addShape3D } from './bodies/shapes-3d.js';
+import { createPhysicsWorld } from './create-world.js';
 import { addHingeJoint3D } from './joints/hinge-joint-3d.js';
 import { addRevoluteJoint } from './joints/revolute-joint.js';
 import { step } from './step/step.js';
-import type { PhysicsWorld, PhysicsWorldOptions } from './world/options.js';
+import { describe } from './validation/validate.js';
+import type { PhysicsWorld } from './world/options.js';
 
 /** Steps the warm-up scene runs: about 1.3 s of simulated time at 60 Hz, enough for its loops to be compiled. */
 export const WARM_UP_STEPS = 80;
@@ -35,26 +37,33 @@ export const WARM_UP_STEPS = 80;
 const warmed = new Set<number>();
 
 /**
- * Runs the warm-up scene of `dimensions` once per program: a second call for the same dimension does
- * nothing. `make` makes the scene's world (createPhysicsWorld; passed in because this module sits
- * below create-world.ts).
+ * Warms the physics code of `dimensions` up once a program: builds a small scene of that dimension
+ * (boxes on a ground, a pile of balls, a disc or sphere, a hinged chain), steps it WARM_UP_STEPS (80)
+ * times and throws it away, so that a large scene's first steps afterwards run compiled code (see the
+ * top of warm-up.ts). Call it where a pause is expected, such as while a game loads its first level:
+ * it takes about 0.2 to 0.5 s of main-thread time, and a pyramid of 820 boxes' first step then takes
+ * about 50 ms of CPU instead of about 130. A second call for the same dimension does nothing. Worlds'
+ * states are the same with and without it.
+ * @param dimensions 2 or 3. Default 2.
+ * @returns whether it ran (false: this dimension was already warmed up).
+ * @throws RangeError if dimensions is not 2 or 3.
+ * @example
+ * warmUp(2); // while the game loads
+ * const world = createPhysicsWorld({ dimensions: 2 });
+ * @category World and step
  */
-export function warmUpOnce(dimensions: 2 | 3, make: (options: PhysicsWorldOptions) => PhysicsWorld): void {
-  if (warmed.has(dimensions)) return;
+export function warmUp(dimensions: 2 | 3 = 2): boolean {
+  if (dimensions !== 2 && dimensions !== 3) throw new RangeError(`warmUp: dimensions must be 2 or 3, got ${describe(dimensions)}`);
+  if (warmed.has(dimensions)) return false;
   warmed.add(dimensions);
-  warmUp(dimensions, make);
-}
-
-/** Builds the warm-up scene of `dimensions` with `make` and steps it WARM_UP_STEPS times; returns the world. */
-export function warmUp(dimensions: 2 | 3, make: (options: PhysicsWorldOptions) => PhysicsWorld): PhysicsWorld {
-  const world = warmUpScene(dimensions, make);
+  const world = warmUpScene(dimensions);
   for (let i = 0; i < WARM_UP_STEPS; i++) step(world);
-  return world;
+  return true;
 }
 
-/** The warm-up scene of `dimensions`, built in a world made by `make` (without a warm-up of its own), not stepped. */
-export function warmUpScene(dimensions: 2 | 3, make: (options: PhysicsWorldOptions) => PhysicsWorld): PhysicsWorld {
-  const world = make({ dimensions, capacity: 96, gravity: dimensions === 2 ? [0, -10] : [0, -10, 0], warmUp: false });
+/** The warm-up scene of `dimensions` in a world of its own, built and not stepped. */
+export function warmUpScene(dimensions: 2 | 3): PhysicsWorld {
+  const world = createPhysicsWorld({ dimensions, capacity: 96, gravity: dimensions === 2 ? [0, -10] : [0, -10, 0] });
   if (dimensions === 2) build2D(world);
   else build3D(world);
   return world;

@@ -7,6 +7,7 @@ import {
   SCENES,
   stateHash,
   step,
+  warmUp,
 } from '@bitphysics/physics';
 import { query } from 'bitecs';
 import { resolveScene } from '../scenes/index.js';
@@ -47,11 +48,12 @@ function bitphysicsAdapter(name: string, threads: number): EngineAdapter {
       const { definition, bench } = resolved;
       const sceneOptions = { ...(bench.sceneOptions?.(options) ?? {}), count: options.count, seed: options.seed };
       if (threads > 1) enableThreads();
+      const worldOptions = definition.worldOptions(sceneOptions);
+      if (options.warmUp === true) warmUp(worldOptions.dimensions ?? 2);
       const w: PhysicsWorld = createPhysicsWorld({
-        ...definition.worldOptions(sceneOptions),
+        ...worldOptions,
         seed: options.seed,
         ...(threads > 1 ? { threads } : {}),
-        ...(options.warmUp === true ? { warmUp: true } : {}),
       });
       const handles = definition.build(w, sceneOptions);
       const probe = bench.probe?.(w, handles, options);

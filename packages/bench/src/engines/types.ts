@@ -25,7 +25,7 @@ export interface SceneRunOptions {
   readonly hash?: boolean;
   /** Threads of our world (`createPhysicsWorld({ threads })`), integer >= 1. Default 1. Peers ignore it. */
   readonly threads?: number;
-  /** Whether ours makes its world with `warmUp: true` (`--warm-up`). Default false. Peers ignore it. */
+  /** Whether ours calls `warmUp` before making its world (`--warm-up`). Default false. Peers ignore it. */
   readonly warmUp?: boolean;
 }
 

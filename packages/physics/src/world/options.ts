@@ -90,16 +90,6 @@ export interface PhysicsWorldOptions {
    * `createPhysicsWorld` throws an Error that names it.
    */
   threads?: number;
-  /**
-   * Whether a warm-up runs first if this is the program's first world of its dimension asking for one:
-   * a small scene of boxes, balls, a disc or sphere and a jointed chain, built, stepped 80 times and
-   * thrown away, so that the JavaScript engine has compiled the physics code before this world's first
-   * steps run it (see warm-up.ts). It takes about 0.2 to 0.5 s of main-thread time once, and cuts a
-   * large scene's first step about in half (pyramid of 820 boxes: step 0 about 130 ms of CPU without,
-   * about 50 ms with). Ask for it where a pause is expected (a game loading its first level), not where
-   * the world is small or the first frame must come fast. Later worlds skip it. Default false.
-   */
-  warmUp?: boolean;
 }
 
 /**
