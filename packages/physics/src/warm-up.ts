@@ -30,7 +30,10 @@ import { step } from './step/step.js';
 import { describe } from './validation/validate.js';
 import type { PhysicsWorld } from './world/options.js';
 
-/** Steps the warm-up scene runs: about 1.3 s of simulated time at 60 Hz, enough for its loops to be compiled. */
+/**
+ * Steps the warm-up scene runs (`warmUp`): about 1.3 s of simulated time at 60 Hz, enough for its loops to be compiled.
+ * @category World and step
+ */
 export const WARM_UP_STEPS = 80;
 
 /** Dimensions (2, 3) whose warm-up ran in this program. */
