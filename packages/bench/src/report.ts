@@ -162,8 +162,11 @@ export function table(rows: readonly (readonly string[])[], align?: readonly ('l
 export function humanReport(result: BenchResult, scene: BenchScene): string {
   const { scene: s } = result;
   const lines: string[] = [];
+  // --count is not always the number of bodies (pyramid's is its base): the header says both then.
+  const bodies = result.engines[0]?.bodies;
+  const size = bodies === undefined || bodies === s.count ? `${s.count} bodies` : `count ${s.count} (${bodies} bodies)`;
   lines.push(
-    `${s.scene}: ${s.count} bodies, ${result.steps} timed steps after ${result.warmup} warm-up, seed ${s.seed}` +
+    `${s.scene}: ${size}, ${result.steps} timed steps after ${result.warmup} warm-up, seed ${s.seed}` +
       formatParams(s.params) +
       (result.engines.length > 1 ? `, engines alternating every ${result.block} steps` : ''),
     '',
