@@ -99,8 +99,6 @@ let handles: WreckingBallHandles;
 let banked = 0;
 let levelScore = 0;
 let cleared = false;
-/** Swings used on this level (taps on targets, drags of the ball), out of SWING_BUDGET. */
-let swingsUsed = 0;
 /** Smoothed step time, ms (exponential average over ~30 steps), and the worst of the last second. */
 let stepMs = 0;
 let worstMs = 0;
@@ -126,7 +124,6 @@ function createWorld(): PhysicsWorld {
   handles = buildWreckingBall(world, { level: params.level, seed: params.seed, ballWeight: params.ballWeight });
   levelScore = 0;
   cleared = false;
-  swingsUsed = 0;
   return world;
 }
 
@@ -160,7 +157,7 @@ function gameStep(world: PhysicsWorld): void {
     cleared = true;
     sound.chime(1046, 0.6);
     // 500 for clearing and 250 for each star (fewer swings).
-    levelScore += 500 + 250 * swingStars(swingsUsed, true);
+    levelScore += 500 + 250 * swingStars(swingsUsed(), true);
   }
 }
 
@@ -643,7 +640,7 @@ function pressAt(ndcX: number, ndcY: number): 'ball' | 'swing' | 'hook' | 'none'
     if (outOfSwings()) return 'none';
     drag.grab(ndcX, ndcY, app.camera);
     if (drag.body !== handles.ball) return 'none';
-    swingsUsed++;
+    handles.controls.released++;
     return 'ball';
   }
   const target = hit && handles.pieces.some((p) => p.body === hit.eid) ? hit.eid : nearPiece(ndcX, ndcY);
@@ -696,9 +693,15 @@ function light(piece: number): void {
   if (before && isAlive(shell.world, before.body)) tint(before.body, before.fallen ? FALLEN_TINT : STANDING_TINT);
   if (piece !== 0) tint(piece, LIT_TINT);
 }
+/** Whether the last tap re-aimed a swing still winding up (the status line says so). */
+let retargeted = false;
+/** Swings used on this level (runs at targets begun, drags of the ball), out of SWING_BUDGET. */
+function swingsUsed(): number {
+  return handles.controls.released;
+}
 /** Whether the level's swings are all used and it is not cleared (a swing is refused). */
 function outOfSwings(): boolean {
-  return !cleared && swingsUsed >= SWING_BUDGET;
+  return !cleared && swingsUsed() >= SWING_BUDGET;
 }
 /** Swings the ball at piece `piece`: the crane's moves, the marks on it, a chime; false (and a low tone) when out of swings. */
 function swingAt(piece: number): boolean {
@@ -706,7 +709,8 @@ function swingAt(piece: number): boolean {
     sound.chime(220, 0.2);
     return false;
   }
-  swingsUsed++;
+  // A tap during a wind-up re-aims that swing (no swing is used until the ball is let go into its run).
+  retargeted = aimed !== 0 && handles.controls.moves.length > 0 && handles.controls.moves[0]!.run !== true;
   aimAt(shell.world, handles, piece);
   light(piece);
   aimed = piece;
@@ -934,10 +938,11 @@ function frame(): void {
   if (frames++ % 6 === 0) {
     const n = handles.pieces.length,
       f = fallenCount(handles.pieces);
-    const stars = swingStars(swingsUsed, cleared);
-    const left = SWING_BUDGET - swingsUsed;
+    const stars = swingStars(swingsUsed(), cleared);
+    const used = swingsUsed(),
+      left = SWING_BUDGET - used;
     status.textContent = cleared
-      ? `Level ${handles.level} cleared in ${swingsUsed} ${swingsUsed === 1 ? 'swing' : 'swings'}! ${'★'.repeat(stars)}${'☆'.repeat(3 - stars)} · score ${banked + levelScore} · ${touch ? 'tap' : 'press L or'} Next level`
+      ? `Level ${handles.level} cleared in ${used} ${used === 1 ? 'swing' : 'swings'}! ${'★'.repeat(stars)}${'☆'.repeat(3 - stars)} · score ${banked + levelScore} · ${touch ? 'tap' : 'press L or'} Next level`
       : `Level ${handles.level} · swings left ${left}/${SWING_BUDGET} (★★★ in 2) · down ${f}/${n} (clear at ${clearTarget(handles.pieces)})${swingPhase()}${
           swing.result && shell.world.time - swing.resultAt < RESULT_SHOWN ? ` · ${swing.result}` : ''
         }${left <= 0 && handles.controls.moves.length === 0 ? ` · out of swings: ${touch ? 'tap ↻' : 'press R'} to retry` : ''}${swayHint()}`;
@@ -964,10 +969,13 @@ function swayHint(): string {
 function swingPhase(): string {
   const moves = handles.controls.moves;
   if (moves.length === 0) return '';
-  if (moves[0]!.run) return ' · swinging!';
+  if (moves[0]!.run) {
+    retargeted = false;
+    return ' · swinging!';
+  }
   let left = 0;
   for (const m of moves) if (!m.run) left += m.duration - m.elapsed;
-  return ` · target set: winding up, swing in ${Math.max(1, Math.ceil(left))} s`;
+  return ` · ${retargeted ? 'new target, same swing' : 'target set'}: winding up, swing in ${Math.max(1, Math.ceil(left))} s`;
 }
 
 // ---- window.game ---------------------------------------------------------------------------
@@ -992,7 +1000,7 @@ shell.expose({
   /** Total score (levels cleared plus this one). */
   score: (): number => banked + levelScore,
   /** Swings used on this level, the level's budget and the stars earned (0 until cleared). */
-  swings: () => ({ used: swingsUsed, budget: SWING_BUDGET, stars: swingStars(swingsUsed, cleared) }),
+  swings: () => ({ used: swingsUsed(), budget: SWING_BUDGET, stars: swingStars(swingsUsed(), cleared) }),
   /** Whether this level is cleared. */
   cleared: (): boolean => cleared,
   /** Smoothed step time, ms. */

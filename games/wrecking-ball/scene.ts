@@ -98,6 +98,12 @@ export interface CraneControls {
    * from where it is to (angle rad, radius m, height m) at a constant rate over `duration` s.
    */
   moves: CraneMove[];
+  /**
+   * Swings taken on this level: counted by `craneSystem` when it begins a move marked `release` (the
+   * ball let go into its run at a target), and by the page for each drag of the ball let go. A swing
+   * re-aimed during its wind-up (`aimAt` again) has not been taken and is not counted.
+   */
+  released: number;
 }
 
 /** One timed move of the crane (see `CraneControls.moves`). */
@@ -111,6 +117,8 @@ export interface CraneMove {
   elapsed: number;
   /** Whether it is part of a swing's run at its target (after the wind-up; see `aimAt`). */
   run?: boolean;
+  /** Whether beginning it releases the ball into its run: the first move of a run (counted in `released`). */
+  release?: boolean;
 }
 
 /** The crane's state: where the jib points and where the trolley is on it. */
@@ -280,7 +288,7 @@ export function buildWreckingBall(world: PhysicsWorld, options: WreckingBallOpti
   };
   for (const v of [crane.angle, crane.radius, crane.height])
     if (!Number.isFinite(v)) throw new RangeError(`buildWreckingBall: crane must hold finite numbers, got ${JSON.stringify(at)}`);
-  const controls: CraneControls = { slew: 0, trolley: 0, hoist: 0, steady: false, goal: null, moves: [] };
+  const controls: CraneControls = { slew: 0, trolley: 0, hoist: 0, steady: false, goal: null, moves: [], released: 0 };
   const [hx, hy, hz] = hookPosition(crane);
   const trolley = addBody(world, { position: [hx, hy, hz], kinematic: true, orientation: [0, 0, 0, 1] });
   // The chain hangs straight down from the hook; links are joined end to end.
@@ -479,6 +487,8 @@ export function aimAt(world: PhysicsWorld, h: WreckingBallHandles, piece: number
     else if (best.away > 0.5 || Math.abs(height - c.height) > 0.3) straight(hx, hz, best.sx, best.sz, c.height, odd * half, false);
     straight(best.sx, best.sz, ex, ez, height, half, true);
   }
+  const first = moves.find((m) => m.run);
+  if (first) first.release = true;
   h.controls.goal = null;
   h.controls.moves = moves;
 }
@@ -530,6 +540,7 @@ export function craneSystem(h: WreckingBallHandles): (world: PhysicsWorld) => vo
       // A timed move: the rest of the way at a constant rate over the time left.
       const left = move.duration - move.elapsed,
         f = Math.min(1, dt / Math.max(left, 1e-9));
+      if (move.release === true && move.elapsed === 0) k.released++;
       c.angle = wrap(c.angle + f * wrap(move.angle - c.angle));
       c.radius += f * (move.radius - c.radius);
       c.height += f * (move.height - c.height);

@@ -34,7 +34,8 @@ function build(level: number, seed = 1) {
 function atRunStart(level: number, index: number) {
   const probe = build(level);
   aimAt(probe.world, probe.h, probe.h.pieces[index]!.body);
-  const start = probe.h.controls.moves[0]!;
+  // The wind-up's last move ends at the run's start.
+  const start = probe.h.controls.moves.filter((m) => !m.run).at(-1)!;
   const world = createPhysicsWorld(wreckingBallWorldOptions());
   const h = buildWreckingBall(world, { level, crane: { angle: start.angle, radius: start.radius, height: start.height } });
   for (let k = 0; k < 30; k++) step(world);
@@ -103,14 +104,9 @@ describe('wrecking-ball scene', () => {
   });
 
   it('holding Steady (anti-sway) stops the swing a slew leaves: the hook catches the ball', () => {
-    // The player slews at full rate for 1 s and lets go: the ball, lagging, swings on (amplitude
-    // over 1.5 m). Then 2 s with the anti-sway control held. The swing's amplitude is the ball's
-    // offset from under the hook and its relative velocity over w (w = 2 pi / SWING_PERIOD), both
-    // horizontal (swayAmplitude). Held, the control (critically damped for the linear pendulum: amplitude about
-    // (1 + w t) exp(-w t), 0.24 at 2 s, and slower while the hook is at its rates) leaves under 0.35 of
-    // it (measured 0.20); let go, the ball's drag alone (time constant SWAY_DAMPING_TIME, 4 s) would
-    // leave over 0.6. The hook ends within 3 m of where it was let go: it follows the swing to its
-    // middle, not off across the site.
+    // The player slews at full rate for 1 s and lets go (the ball swings on), taps a tower block and
+    // taps two others during the wind-up. Each tap re-aims the same swing: `released` counts only the
+    // ball let go into its run, once (a swing counted at each tap left the player 2 of 4 here).
     const { world, h } = build(1);
     for (const p of h.pieces) removeBody(world, p.body);
     const P = world.components.Position,
@@ -279,5 +275,33 @@ describe('wrecking-ball scene', () => {
     expect(SWING_BUDGET).toBe(4);
     expect([1, 2, 3, 4].map((n) => swingStars(n, true))).toEqual([3, 3, 2, 1]);
     expect(swingStars(2, false)).toBe(0);
+  });
+});
+
+describe('wrecking-ball wind-up', () => {
+  it('taps on other targets during a wind-up re-aim the same swing: one swing is counted, when its run begins', () => {
+    // The player slews at full rate for 1 s and lets go (the ball swings on), taps a tower block and
+    // taps two others during the wind-up. Each tap re-aims the same swing: `released` counts only the
+    // ball let go into its run, once (a swing counted at each tap left the player 2 of 4 here).
+    const { world, h } = build(1);
+    h.controls.slew = 1;
+    for (let i = 0; i < 60; i++) step(world);
+    h.controls.slew = 0;
+    expect(swayAmplitude(world, h)).toBeGreaterThan(1.5);
+    const tower = h.pieces.filter((p) => p.kind === 'tower');
+    aimAt(world, h, tower[0]!.body);
+    for (let i = 0; i < 30; i++) step(world);
+    aimAt(world, h, tower[1]!.body);
+    for (let i = 0; i < 30; i++) step(world);
+    aimAt(world, h, tower[2]!.body);
+    expect(h.controls.released).toBe(0);
+    let steps = 0;
+    while (steps < 600 && h.controls.moves.length > 0 && h.controls.moves[0]!.run !== true) {
+      step(world);
+      steps++;
+    }
+    expect(h.controls.moves[0]?.run).toBe(true);
+    step(world);
+    expect(h.controls.released).toBe(1);
   });
 });
