@@ -64,11 +64,12 @@ export const SUBMARINE = Object.freeze({
   /**
    * Largest push of each of the two vertical thrusters, N (up or down, across the hull). A ducted
    * thruster of diameter D (m) and power P (kW) gives T (kN) = (D P)^(2/3) at zero speed (Wartsila,
-   * Encyclopedia of Ship Technology, "bollard pull"): 50 kN is a 1.2 m thruster of 295 kW. Nordenfelt
+   * Encyclopedia of Ship Technology, "bollard pull"): 300 kN is a 2 m thruster of 2.6 MW (the
+   * screw's power), enough to take the 110 t boat from a hover to 5 m/s in about a second. Nordenfelt
    * dived his boats of 1885-7 with such vertical "sinking screws" (BR 3043, The Development of HM
    * Submarines, ch. 18); small submersibles hover and change depth with them today.
    */
-  thrusterForce: 50_000,
+  thrusterForce: 300_000,
   /** Distance of each vertical thruster from the centre along the hull, m (fore at +, aft at -). */
   thrusterArm: 4.5,
 });
