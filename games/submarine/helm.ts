@@ -98,7 +98,7 @@ export const HELM = Object.freeze({
   /**
    * Most tank fill the helm adds or takes away while holding a depth: all of it, so the tanks blow
    * (flood) as far as the boat's sinking (rising) speed asks, ballastGain per m/s. Stopping 110 t at
-   * the dive speed still takes metres (100 kN of thrusters, drag k v^2, and the tanks' weight
+   * the dive speed still takes metres (600 kN of thrusters, drag k v^2, and the tanks' weight
    * changing at fillRate x 2 x 20 t x g = 392 kN/s); with only ballastExcess it takes more.
    */
   holdExcess: 1,

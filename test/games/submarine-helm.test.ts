@@ -89,6 +89,37 @@ describe('submarine helm', () => {
     }
   });
 
+  it('Dive and Rise held from a hover reach 70 % of the asked speed within 1 s (a full stick push asks the same)', () => {
+    // The thrusters (2 x 300 kN on 110 t) and the tanks take the boat to most of the asked speed in
+    // about a second, so a held key answers like the stick pushed to its rim (both ask heave 1).
+    for (const [input, speed, sign] of [
+      [{ dive: true }, HELM.diveSpeed, -1],
+      [{ rise: true }, HELM.climbSpeed, 1],
+      [{ dive: true, heave: 1 }, HELM.diveSpeed, -1],
+    ] as const) {
+      const b = boat(-40);
+      run(b, input, 1);
+      expect(sign * vy(b)).toBeGreaterThan(0.7 * speed);
+    }
+  });
+
+  it('at cruise speed on the surface, Dive held passes within 7 m of a beacon 60 m ahead and 26 m down', () => {
+    const b = boat();
+    run(b, { ahead: true }, 8);
+    const vx = b.world.components.Velocity.x[b.h.hull]!;
+    expect(vx).toBeGreaterThan(12); // cruising near the top speed of 12.9 m/s
+    const bx = b.world.components.Position.x[b.h.hull]! + 60,
+      by = -26;
+    let nearest = Infinity;
+    // Dive and Ahead held until the boat is 10 m past the beacon; 7 m is the pickup radius of
+    // games/submarine/main.ts.
+    for (let t = 0; t < 10 && b.world.components.Position.x[b.h.hull]! < bx + 10; t += b.world.dt) {
+      run(b, { ahead: true, dive: true }, b.world.dt);
+      nearest = Math.min(nearest, Math.hypot(b.world.components.Position.x[b.h.hull]! - bx, y(b) - by));
+    }
+    expect(nearest).toBeLessThan(7);
+  });
+
   it('Ahead from a hover: 5 m/s within 4 s; let go, the screw winds back to stop within 1.2 s', () => {
     const b = boat(-30);
     let five = Number.NaN;
@@ -106,7 +137,7 @@ describe('submarine helm', () => {
     run(b, { dive: true }, 7);
     expect(vy(b)).toBeLessThan(-0.9 * HELM.diveSpeed); // at speed
     const r = response(b, { rise: true }, 1);
-    // The momentum of 110 t at 7 m/s against 100 kN of thrusters, the drag k v^2 and the water
+    // The momentum of 110 t at 7 m/s against 600 kN of thrusters, the drag k v^2 and the water
     // blown out of the tanks: a few seconds to turn (honest: no instant stop). The bow comes up 1
     // degree within a second.
     expect(r.speed).toBeLessThan(4.5);
@@ -144,7 +175,7 @@ describe('submarine helm', () => {
       if (Math.abs(y(c) - released) > 0.5) settled = Number.NaN;
       else if (Number.isNaN(settled)) settled = s;
     });
-    // 110 t at 7 m/s stopped by 100 kN of thrusters, the drag and the tanks blowing at
+    // 110 t at 7 m/s stopped by 600 kN of thrusters, the drag and the tanks blowing at
     // fillRate x 2 x 20 t x g = 392 kN/s; then brought back up to the depth let go at, which the
     // gauge shows, instead of held where the boat stopped.
     expect(c.helm.mode).toBe('holding');
