@@ -34,6 +34,7 @@ import { drawBoat } from './boat-drawing';
 import { createHelmState, type HelmInput, steer } from './helm';
 import { layMines, MINE_BLAST_IMPULSE, MINE_RADIUS, type Mine, parTime, touchesMine } from './mines';
 import { drawFish } from './sea-life';
+import { touchSeabed } from './seabed';
 
 const params = {
   seed: seedParam(),
@@ -142,24 +143,6 @@ addEventListener('keyup', (e) => {
 });
 addEventListener('blur', () => held.clear());
 
-/** Hull end points and keel in world coordinates (bow, stern, keel centre). */
-function hullPoints(world: PhysicsWorld): number[][] {
-  const c = world.components,
-    e = handles.hull;
-  const x = c.Position.x[e]!,
-    y = c.Position.y[e]!,
-    a = c.Angle.value[e]!;
-  const co = Math.cos(a),
-    s = Math.sin(a),
-    L = SUBMARINE.length / 2,
-    H = SUBMARINE.height / 2;
-  return [
-    [x + L * co, y + L * s],
-    [x - L * co, y - L * s],
-    [x + H * s, y - H * co],
-  ];
-}
-
 /** The controls held now (keys, the on-screen buttons, which send the same keys, and the stick). */
 function heldInput(): HelmInput {
   return {
@@ -214,29 +197,21 @@ function stepWorld(world: PhysicsWorld): void {
       sound.chime(d < 40 ? 1568 : 1175, 0.22);
     }
   }
-  // The seabed: scraping it costs hull integrity and bounces the boat up.
+  // The seabed (./seabed.ts): an impulse contact; an impact faster than SEABED.hitSpeed costs a hit.
   const c = world.components,
     e = handles.hull;
-  let hit = false;
-  for (const [px, py] of hullPoints(world)) if (py! < seabedHeight(handles.seabed, px!)) hit = true;
-  if (hit) {
-    c.Velocity.y[e] = Math.max(c.Velocity.y[e]!, 1.5);
-    c.Velocity.x[e] = c.Velocity.x[e]! * 0.5;
-    // The bounce: the helm brakes and holds the depth it stops at, above the scrape.
+  const wasTouching = state.touching;
+  const contact = touchSeabed(world, handles, state, world.time);
+  if (contact !== '') {
+    // The helm brakes and holds the depth it stops at, above the contact.
     state.holdY = Number.NaN;
-    if (!state.touching) {
-      sound.impact(20, 'metal');
-      // One scrape costs one hit: bumps within 2 s of it (the boat bouncing along the bed while Dive
-      // is still held) are the same scrape.
-      if (world.time >= state.spared) {
-        state.hits++;
-        state.spared = world.time + 2;
-        state.lastHit = 'seabed';
-      }
+    if (!wasTouching || contact === 'hit') sound.impact(contact === 'hit' ? 20 : 6, 'metal');
+    if (contact === 'hit') {
+      state.hits++;
+      state.lastHit = 'seabed';
       if (state.hits >= 3) state.over = 'sunk';
     }
   }
-  state.touching = hit;
   // Mines: touching one sets it off. It costs a hit and its blast throws the hull away from it
   // (an impulse at the hull's centre; the physics carries it from there).
   const angle = c.Angle.value[e]!;

@@ -195,13 +195,15 @@ describe('projects', () => {
     }, null);
     expect(blast.hits).toBe(1);
     expect(blast.live).toBe(false);
-    // Two scrapes already; the hull put into the seabed under it makes the third.
+    // Two scrapes already; the hull put into the seabed under it, coming down at 4 m/s (over the
+    // 1.5 m/s an impact needs, games/submarine/seabed.ts), makes the third.
     await g.page.evaluate(() => {
       const w = window.game as unknown as Sub;
       const bed = w.handles().seabed;
       Object.assign(w.state, { hits: 2, spared: 0 });
       w.world.components.Position.x[w.hull()] = bed.x0 + 20 * bed.dx;
-      w.world.components.Position.y[w.hull()] = bed.y[20]! - 1;
+      w.world.components.Position.y[w.hull()] = bed.y[20]! + 1.4;
+      w.world.components.Velocity.y[w.hull()] = -4;
     });
     await g.waitFor(() => (window.game as unknown as Sub).state.over === 'sunk', null);
     const again = g.page.getByRole('button', { name: 'Try again ↺', exact: true });
