@@ -432,6 +432,17 @@ createStick({
     stickInput.y = y;
   },
 });
+// The touch hint (game-kit's card of gestures over the bottom of the scene, where the seabed is)
+// fades at the first touch anywhere, the stick and Nose buttons under the scene included, not only
+// at a touch on the scene.
+function dismissTouchHint(): void {
+  removeEventListener('pointerdown', dismissTouchHint, true);
+  const hint = document.querySelector<HTMLElement>('[data-hud="touch-hint"]');
+  if (!hint) return;
+  hint.classList.add('bp-gone');
+  setTimeout(() => hint.remove(), 700);
+}
+addEventListener('pointerdown', dismissTouchHint, true);
 createButtonBar(
   [
     { label: 'Nose ↘', name: 'nose down', key: 'q' },

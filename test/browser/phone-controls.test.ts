@@ -47,11 +47,15 @@ describe('phone controls', () => {
   it('submarine: the stick down floods the tanks, right drives the screw', async () => {
     const g = await h.openGame('submarine', PHONE);
     expect(await read(g, 'state.fill')).toBe(0);
+    // The card of gestures over the bottom of the scene is up until the first touch, on the stick too.
+    const hint = g.page.locator('[data-hud="touch-hint"]');
+    expect(await hint.count()).toBe(1);
     const stick = (await g.page.getByRole('slider', { name: 'stick: dive, rise, ahead, astern' }).boundingBox())!;
     const cx = stick.x + stick.width / 2,
       cy = stick.y + stick.height / 2;
     // Read while the finger is down: let go on the surface, the helm blows the tanks again.
-    let fill = 0;
+    let fill = 0,
+      hintGoing = false;
     await touchPath(
       g.page,
       [
@@ -61,9 +65,12 @@ describe('phone controls', () => {
       400,
       async () => {
         fill = await read(g, 'state.fill');
+        hintGoing = await g.page.evaluate(() => document.querySelector('[data-hud="touch-hint"]')?.classList.contains('bp-gone') ?? true);
       },
     );
     expect(fill).toBeGreaterThan(0.02);
+    expect(hintGoing).toBe(true);
+    await hint.waitFor({ state: 'detached' });
     let throttle = 0;
     await touchPath(
       g.page,
