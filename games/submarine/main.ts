@@ -34,7 +34,7 @@ import { drawBoat } from './boat-drawing';
 import { createHelmState, type HelmInput, steer } from './helm';
 import { layMines, MINE_BLAST_IMPULSE, MINE_RADIUS, type Mine, parTime, touchesMine } from './mines';
 import { drawFish } from './sea-life';
-import { touchSeabed } from './seabed';
+import { seabedInput, touchSeabed } from './seabed';
 
 const params = {
   seed: seedParam(),
@@ -55,6 +55,7 @@ const state = {
   hits: 0,
   spared: 0,
   touching: false,
+  diveStopped: false,
   over: '' as '' | 'won' | 'sunk',
   time: 0,
   par: 0,
@@ -114,6 +115,7 @@ function createWorld(): PhysicsWorld {
     hits: 0,
     spared: 0,
     touching: false,
+    diveStopped: false,
     over: '',
     time: 0,
     par: parTime(handles.beacons),
@@ -173,7 +175,8 @@ let lastVertical = 0;
 let lastPing = 0;
 
 function stepWorld(world: PhysicsWorld): void {
-  const input = heldInput();
+  // The seabed stops a dive until Dive is let go (./seabed.ts).
+  const input = seabedInput(state, heldInput());
   const vertical = input.dive === input.rise ? 0 : input.dive ? -1 : 1;
   if (vertical !== 0 && vertical !== lastVertical) sound.launch(0.25);
   lastVertical = vertical;
@@ -201,7 +204,7 @@ function stepWorld(world: PhysicsWorld): void {
   const c = world.components,
     e = handles.hull;
   const wasTouching = state.touching;
-  const contact = touchSeabed(world, handles, state, world.time);
+  const contact = touchSeabed(world, handles, state, world.time, input.dive);
   if (contact !== '') {
     // The helm brakes and holds the depth it stops at, above the contact.
     state.holdY = Number.NaN;

@@ -37,6 +37,21 @@ export interface SeabedState {
   touching: boolean;
   /** Game time until which contacts cost no hit, s. */
   spared: number;
+  /**
+   * Whether the bed stopped a dive: set when the hull touches it with Dive held; until Dive is let
+   * go the helm is not told to dive (`seabedInput`), so it holds the depth there instead of driving
+   * the hull down the bed's slope into the next kink.
+   */
+  diveStopped: boolean;
+}
+
+/**
+ * The helm's input with the seabed's stop applied: `input` without Dive while `state.diveStopped`.
+ * Letting Dive go clears the stop, so pressing it again dives again.
+ */
+export function seabedInput<T extends { dive: boolean }>(state: SeabedState, input: T): T {
+  if (!input.dive) state.diveStopped = false;
+  return state.diveStopped ? { ...input, dive: false } : input;
 }
 
 /** One step's contact: '' none, 'touch' a contact that costs nothing, 'hit' one that costs a hit. */
@@ -46,11 +61,18 @@ export type SeabedContact = '' | 'touch' | 'hit';
  * Resolves the hull's contact with the seabed after a step: finds the deepest of the bow, stern and
  * keel centre under the bed and, if the hull moves into the bed there, applies the impulse that
  * leaves it moving out at `restitution` times its approach speed (or at the push-out speed, if
- * larger), plus friction along the bed up to `friction` times that impulse. Updates `state` and says
+ * larger), plus friction along the bed up to `friction` times that impulse. Updates `state` (a
+ * contact while `diving`, Dive held, sets `state.diveStopped`) and says
  * whether the contact costs a hit (approach speed over `SEABED.hitSpeed`, and the game time `time`,
  * s, past `state.spared`; a hit sets `state.spared` to `time + SEABED.cooldown`).
  */
-export function touchSeabed(world: PhysicsWorld, handles: SubmarineHandles, state: SeabedState, time: number): SeabedContact {
+export function touchSeabed(
+  world: PhysicsWorld,
+  handles: SubmarineHandles,
+  state: SeabedState,
+  time: number,
+  diving = false,
+): SeabedContact {
   const c = world.components,
     e = handles.hull;
   const x = c.Position.x[e]!,
@@ -76,6 +98,7 @@ export function touchSeabed(world: PhysicsWorld, handles: SubmarineHandles, stat
   }
   state.touching = depth > 0;
   if (!state.touching) return '';
+  if (diving) state.diveStopped = true;
   // The bed's normal from its local slope (central difference over 1 m).
   const slope = seabedHeight(handles.seabed, px + 0.5) - seabedHeight(handles.seabed, px - 0.5);
   const norm = Math.hypot(slope, 1),
