@@ -212,8 +212,13 @@ const PASS_SHARE = 0.5;
 const campaign = { scores: new Array<number>(LEVEL_COUNT).fill(0), stars: new Array<number>(LEVEL_COUNT).fill(0) };
 const starsOf = (share: number): number => (share >= 0.95 ? 3 : share >= 0.75 ? 2 : share >= PASS_SHARE ? 1 : 0);
 const total = (): number => campaign.scores.reduce((a, b) => a + b, 0);
-/** What earns the stars, shown on the level's start hint and its end card (no-break spaces inside each entry: a narrow screen wraps between entries). */
+/**
+ * What earns the stars, shown on the level's start hint and its end card (no-break spaces inside each
+ * entry: a narrow screen wraps between entries, not inside one), and its short form for a narrow
+ * screen (a phone held upright), which fits on one line there.
+ */
 const STAR_RULE = ['★ half the pieces down', '★★ 75 %', '★★★ 95 %'].map((e) => e.replaceAll(' ', '\u00a0')).join('   ');
+const STAR_RULE_SHORT = ['★ 50 %', '★★ 75 %', '★★★ 95 %\u00a0down'].map((e) => e.replaceAll(' ', '\u00a0')).join('  ');
 
 /** The next level after a clear, the same one again after a miss, level 1 (a new campaign) after the end. */
 function nextLevel(): void {
@@ -338,65 +343,119 @@ shell.onWorldChange(() => {
 });
 
 /**
- * The camera has two views. The aim view: the whole play area, from behind the catapult to just
- * past the rock, fitted to the screen's width, so the player sees both the catapult and the castle
- * while aiming and never waits on a pan: from just behind the stones stacked by the catapult, or on a
- * narrow screen (a phone) just behind the catapult (a drag aims from anywhere). The shot view: after a
- * throw, the castle and the rock with room for debris around them, on a phone only, over 2 x
- * closer there (held upright, a level 1 castle 100 px wide instead of 45): the camera eases to it
- * while the stone flies and back to the aim view once the throw's verdict has faded, or at once
- * when a finger or the mouse goes down to aim. On a wide view the scene is as tall as the castle needs; on a tall one
- * the ground sits GROUND_AT of the way up the screen, earth below it and sky above. The view eases
- * a tenth of the way each frame; it jumps when the screen's size changes.
+ * The camera has two views. The aim view: on a wide screen the whole play area, from behind the
+ * catapult to just past the rock, fitted to the screen's width, so the player sees both the catapult
+ * and the castle while aiming; from just behind the stones stacked by the catapult, or on a narrow
+ * screen (a phone) just behind the catapult (a drag aims from anywhere). The shot view: after a
+ * throw, the castle and the rock with room for debris around them, on a phone only, where it is
+ * closer than the aim view: the camera eases to it while the stone flies and back to the aim view
+ * once the throw's verdict has faded, or at once when a finger or the mouse goes down to aim.
+ * On a wide view the scene is as tall as the castle needs; on a tall one the ground sits GROUND_AT of
+ * the way up the screen, earth below it and sky above. The view eases a tenth of the way each frame;
+ * it jumps when the screen's size changes.
+ *
+ * On an upright phone (a screen taller than wide) the whole play area fitted to the width leaves the
+ * scene a thin strip, so the camera works closer: the aim view holds the catapult, its stones and
+ * UPRIGHT_AIM_SPAN m of the field in front of it (an arrow at the right edge points to the castle),
+ * the shot view holds the castle and the rock with a little room either side, and in between the
+ * camera follows the stone: the view slides from the aim view to the shot view as the stone crosses
+ * the field (by the farthest it got), so the stone stays in sight all the way.
  */
 const cameraView = { minX: -4, minY: -1, maxX: 30, maxY: 14 };
 /** On a tall screen, where the ground line sits: this fraction of the screen's height from the bottom. */
-const GROUND_AT = 0.26;
+const GROUND_AT = 0.18;
 /** Screens narrower than this (CSS px) get the tighter aim view. */
 const NARROW = 600;
+/** Upright aim view: its left edge (behind the catapult's stones and mound) and width, m. */
+const UPRIGHT_AIM_LEFT = LAUNCH.x - 3.3,
+  UPRIGHT_AIM_SPAN = 7.5;
 /** Screen size the view was framed for; the view jumps (no easing) when it changes. */
 let framedFor = '';
 /** Every screen size the view has been framed for since the page loaded (one, unless the window was resized). */
 const sizesFramed = new Set<string>();
 /** Whether the camera shows the shot view (set by a throw, cleared when the player aims again). */
 let shotView = false;
+/** A view rectangle in metres. */
+type View = { minX: number; minY: number; maxX: number; maxY: number };
+/** Whether the screen is an upright phone's: narrower than NARROW and over 1.2 x as tall as wide. */
+const upright = (): boolean => renderer.camera.width < NARROW && renderer.camera.height > 1.2 * renderer.camera.width;
+/**
+ * Screen pixels at the bottom of the scene that the touch hint ("Drag ...") covers while it shows
+ * (0 once it has gone): a wide view puts the ground above it, so the hint lies on the earth and not
+ * over the catapult or the castle's foot.
+ */
+function hintReserve(): number {
+  const hint = document.querySelector('[data-hud="touch-hint"]');
+  if (!hint) return 0;
+  const h = hint.getBoundingClientRect(),
+    c = app.canvas.getBoundingClientRect();
+  return Math.max(0, c.bottom - h.top + 6);
+}
 /** The view (m) fitted to the screen for a horizontal span [minX, maxX]: as tall as the screen's aspect allows. */
-function viewFor(minX: number, maxX: number): { minX: number; minY: number; maxX: number; maxY: number } {
+function viewFor(minX: number, maxX: number): View {
   const cam = renderer.camera;
-  const aspect = Math.max(1, cam.height) / Math.max(1, cam.width);
+  const W = Math.max(1, cam.width),
+    H = Math.max(1, cam.height);
+  const aspect = H / W;
   const height = (maxX - minX) * aspect;
-  // Wide: from just under the ground up, taller than the castle. Tall (or a screen taller than
-  // wide): the ground GROUND_AT up, earth below it.
-  const minY = aspect > 1.2 || height > 3 * (lv.castleTop + 4) ? -GROUND_AT * height : -1;
-  return { minX, minY, maxX, maxY: Math.max(minY + height, lv.castleTop + 4) };
+  const top = lv.castleTop + 4;
+  // Tall (or a screen taller than wide): the ground GROUND_AT up, earth below it.
+  if (aspect > 1.2 || height > 3 * top) {
+    const low = -GROUND_AT * height;
+    return { minX, minY: low, maxX, maxY: Math.max(low + height, top) };
+  }
+  // Wide: from just under the ground up, taller than the castle; the ground above the touch hint
+  // while it shows (R px: R m at the width's scale, or, when the castle's height sets the scale,
+  // the depth that leaves R px under the ground with the view's top at `top`).
+  const R = hintReserve();
+  const minY = Math.min(-1, -(R * (maxX - minX)) / W, R > 0 && R < H ? -(R * top) / (H - R) : -1);
+  return { minX, minY, maxX, maxY: Math.max(minY + height, top) };
 }
 /** The right face of the rock behind the castle, m. */
 const rockRight = (): number => lv.castleMaxX + ROCK.gap + 2 * ROCK.hx;
 /** The aim view (see above). */
-function aimView(): { minX: number; minY: number; maxX: number; maxY: number } {
+function aimView(): View {
+  if (upright()) return viewFor(UPRIGHT_AIM_LEFT, UPRIGHT_AIM_LEFT + UPRIGHT_AIM_SPAN);
   // Room behind the catapult for its stones where the screen is wide enough.
   const behind = renderer.camera.width < NARROW ? 1.6 : 3.1;
   return viewFor(LAUNCH.x - behind, rockRight() + 0.6);
 }
-/** The shot view (see above): the castle, the rock and 2.5 m either side for debris. */
-function shotViewRect(): { minX: number; minY: number; maxX: number; maxY: number } {
-  return viewFor(lv.castleMinX - 2.5, rockRight() + 2.5);
+/** The shot view (see above): the castle, the rock and room either side for debris (2.5 m; 1.5 and 1.2 m upright). */
+function shotViewRect(): View {
+  return upright() ? viewFor(lv.castleMinX - 1.5, rockRight() + 1.2) : viewFor(lv.castleMinX - 2.5, rockRight() + 2.5);
 }
 /** Screen pixels a metre in view `v`, fitted (letterboxed) to the screen. */
-function pxPerM(v: { minX: number; minY: number; maxX: number; maxY: number }): number {
+function pxPerM(v: View): number {
   const cam = renderer.camera;
   return Math.min(cam.width / (v.maxX - v.minX), cam.height / (v.maxY - v.minY));
 }
 /**
- * Whether the shot view is used: on a narrow screen (a phone), where it shows the castle at least
- * 1.5 x as large as the aim view. A desktop's aim view shows the castle large enough.
+ * Whether the shot view is used: upright on a phone, and on any narrow screen where it shows the
+ * castle at least 1.5 x as large as the aim view. A desktop's aim view shows the castle large enough.
  */
-const zoomsIn = (): boolean => renderer.camera.width < NARROW && pxPerM(shotViewRect()) >= 1.5 * pxPerM(aimView());
+const zoomsIn = (): boolean => upright() || (renderer.camera.width < NARROW && pxPerM(shotViewRect()) >= 1.5 * pxPerM(aimView()));
+/**
+ * The view while the stone flies, upright: between the aim view (u = 0) and the shot view (u = 1),
+ * u the share of the way from the catapult to the castle's front the stone has got (smoothed, so the
+ * camera starts and ends the slide gently).
+ */
+function followView(): View {
+  const a = aimView(),
+    s = shotViewRect();
+  const u0 = Math.min(1, Math.max(0, (lastThrow.farthest - LAUNCH.x) / Math.max(1, lv.castleMinX - 1 - LAUNCH.x)));
+  const u = u0 * u0 * (3 - 2 * u0);
+  return {
+    minX: a.minX + u * (s.minX - a.minX),
+    minY: a.minY + u * (s.minY - a.minY),
+    maxX: a.maxX + u * (s.maxX - a.maxX),
+    maxY: a.maxY + u * (s.maxY - a.maxY),
+  };
+}
 function frameCamera(): void {
   const cam = renderer.camera;
   // Back to the aim view once the verdict has been up for VERDICT_READ seconds (or the level ended).
   if (shotView && lastThrow.verdict && (shell.world.time - lastThrow.decidedAt > VERDICT_READ || levelEnded)) shotView = false;
-  const target = shotView && zoomsIn() ? shotViewRect() : aimView();
+  const target = shotView && zoomsIn() ? (upright() ? followView() : shotViewRect()) : aimView();
   const size = `${cam.width}x${cam.height}`;
   const k = size === framedFor ? 0.1 : 1;
   if (size !== framedFor) sizesFramed.add(size);
@@ -594,6 +653,28 @@ function drawOffscreen(world: PhysicsWorld): void {
   offscreenText.y = ay;
 }
 
+/**
+ * While the castle is off the screen to the right (the close aim view on an upright phone), an arrow
+ * at the right edge, level with the castle's middle, and how far the castle's front is from the
+ * catapult, so the player knows where to throw.
+ */
+function drawCastleMarker(): void {
+  const cam = renderer.camera;
+  const W = cam.width;
+  castleText.visible = cam.toScreenX(lv.castleMinX) > W && !offscreenText.visible && !levelEnded;
+  if (!castleText.visible) return;
+  const m = 14,
+    y = Math.max(cam.toScreenY(lv.castleTop / 2), 90);
+  overlay
+    .poly([W - m + 8, y, W - m - 8, y - 10, W - m - 4, y, W - m - 8, y + 10])
+    .fill({ color: 0xffe066 })
+    .stroke({ width: 2, color: 0x000000 });
+  const label = `castle ${Math.round(lv.castleMinX - LAUNCH.x)} m`;
+  if (castleText.text !== label) castleText.text = label;
+  castleText.x = W - m - 14;
+  castleText.y = y;
+}
+
 /** Position of a body by handle, m. */
 function positionOf(h: number): [number, number] {
   const P = shell.world.components.Position,
@@ -609,6 +690,7 @@ function drawThrow(world: PhysicsWorld): void {
   for (let i = 2; i < path.length; i += 2)
     overlay.circle(cam.toScreenX(path[i]!), cam.toScreenY(path[i + 1]!), 2).fill({ color: 0xffffff, alpha: 0.55 });
   drawOffscreen(world);
+  drawCastleMarker();
   const age = world.time - lastThrow.decidedAt;
   if (!lastThrow.verdict || age > VERDICT_SHOWN) {
     verdictText.visible = false;
@@ -659,6 +741,13 @@ const offscreenText = new Text({
 });
 offscreenText.anchor.set(1, 0.5);
 offscreenText.visible = false;
+/** Where the castle is while it is off the screen (see drawCastleMarker). */
+const castleText = new Text({
+  text: '',
+  style: { fill: 0xffe066, fontSize: 15, fontFamily: 'sans-serif', fontWeight: 'bold', stroke: { color: 0x000000, width: 4 } },
+});
+castleText.anchor.set(1, 0.5);
+castleText.visible = false;
 /** Over the play area while paused: a dimmed scene and the word, so a pause is not mistaken for a hang. */
 const pauseShade = new Graphics({ label: 'paused' });
 const pauseText = new Text({
@@ -675,7 +764,7 @@ const pauseText = new Text({
 pauseText.anchor.set(0.5);
 const popupLayer = new Container({ label: 'popups' });
 effects = new Effects(popupLayer);
-renderer.root.addChild(overlay, effects.graphics, popupLayer, banner, verdictText, offscreenText, pauseShade, pauseText);
+renderer.root.addChild(overlay, effects.graphics, popupLayer, banner, verdictText, offscreenText, castleText, pauseShade, pauseText);
 
 /** Whether a stone sits in the cup: shots are left and the arm is back from its last throw. */
 function loaded(): boolean {
@@ -901,7 +990,7 @@ const SHOT_BONUS = 150;
 const PEBBLES: number[] = (() => {
   const r = new Rng(11);
   const out: number[] = [];
-  for (let i = 0; i < 70; i++) out.push(r.range(-6, 40), r.range(-14, -1.3), r.range(0.08, 0.22));
+  for (let i = 0; i < 90; i++) out.push(r.range(-12, 40), r.range(-14, -1.3), r.range(0.08, 0.22));
   return out;
 })();
 
@@ -992,6 +1081,7 @@ function draw(world: PhysicsWorld, alpha: number): void {
     banner.style.wordWrapWidth = app.screen.width - 24;
     banner.style.fontSize = narrow ? 17 : 22;
   }
+  const starRule = narrow ? STAR_RULE_SHORT : STAR_RULE;
   if (levelEnded) {
     const earned = campaign.stars[i]!;
     const bonus = earned > 0 ? shotsLeft * SHOT_BONUS : 0;
@@ -1000,22 +1090,21 @@ function draw(world: PhysicsWorld, alpha: number): void {
     const starsWon = campaign.stars.reduce((a, b) => a + b, 0);
     if (earned === 0) {
       const keys = touch ? 'Tap the button below to try again' : 'L or the button below: try again';
-      banner.text = `Level ${params.level} not cleared  ${stars}\n${t.fallen} of ${lv.pieces.length} pieces fell: bring down half to pass\n${STAR_RULE}\n${keys}`;
+      banner.text = `Level ${params.level} not cleared  ${stars}\n${t.fallen} of ${lv.pieces.length} pieces fell: bring down half to pass\n${starRule}\n${keys}`;
       showNext(true, 'Try again ↺');
     } else if (last) {
-      banner.text = `All ${LEVEL_COUNT} castles down!  ${stars}\nTotal score ${total()}   Stars ${starsWon} / ${3 * LEVEL_COUNT}\n${STAR_RULE}\n${touch ? 'Tap below to play again' : 'L or the button below: play again'}`;
+      banner.text = `All ${LEVEL_COUNT} castles down!  ${stars}\nTotal score ${total()}   Stars ${starsWon} / ${3 * LEVEL_COUNT}\n${starRule}\n${touch ? 'Tap below to play again' : 'L or the button below: play again'}`;
       showNext(true, 'Play again from level 1 ▶');
     } else {
       const keys = touch ? 'Tap the button below for the next level, ↺ to try again' : 'L or the button below: next level   R: try again';
       const extra = bonus > 0 ? ` + ${bonus} for ${shotsLeft} ${shotsLeft === 1 ? 'shot' : 'shots'} left` : '';
-      banner.text = `Level ${params.level} cleared  ${stars}\nScore ${score}: ${t.fallen} pieces fell, ${t.broken} welds broke${extra}   Total ${total()}\n${STAR_RULE}\n${keys}`;
+      banner.text = `Level ${params.level} cleared  ${stars}\nScore ${score}: ${t.fallen} pieces fell, ${t.broken} welds broke${extra}   Total ${total()}\n${starRule}\n${keys}`;
       showNext(true, `Level ${params.level + 1} ▶`);
     }
   } else {
     // The total counts this level's score as it grows; before the first throw, the star rule.
-    const tip = touch && shots.length === 0 && app.screen.height > 1.2 * app.screen.width ? '\nTip: turn sideways for a bigger view' : '';
-    const rule = shots.length === 0 ? `\nStars: ${STAR_RULE}` : '';
-    const running = `Score ${score}   Total ${runningTotal}   shots ${shotsLeft}${rule}${tip}`;
+    const rule = shots.length === 0 ? `\nStars: ${starRule}` : '';
+    const running = `Score ${score}   Total ${runningTotal}   shots ${shotsLeft}${rule}`;
     if (clearedEarly(world)) {
       // Cleared with shots to spare: the player may move on now (the shots left score their bonus) or
       // throw again for more stars.
@@ -1104,6 +1193,12 @@ shell.expose({
   total,
   /** The banner's text and whether the pause overlay shows. */
   bannerText: (): string => banner.text,
+  /** The banner's size on the screen and its type size, px (its lines: about height / (1.2 fontSize)). */
+  bannerSize: (): { width: number; height: number; fontSize: number } => ({
+    width: banner.width,
+    height: banner.height,
+    fontSize: banner.style.fontSize,
+  }),
   pauseShown: (): boolean => pauseText.visible,
   /** Steps the world n times (tests). */
   advance: (n: number) => {

@@ -22,8 +22,12 @@ import {
 
 /** Where the projectile leaves the catapult (its cup), m. */
 export const LAUNCH = { x: 0, y: 1.5 } as const;
-/** The ground: a static slab whose top is y = 0, from minX to maxX, m. */
-export const GROUND = { minX: -6, maxX: 34 } as const;
+/**
+ * The ground: a static slab whose top is y = 0, from minX to maxX, m. It reaches 12 m behind the
+ * catapult so that a view letterboxed to the castle's height (wider than the field) still has grass
+ * at its left edge.
+ */
+export const GROUND = { minX: -12, maxX: 34 } as const;
 /**
  * Longest pull, m, and launch speed per metre of pull, 1/s: the top speed is 3 x 7 = 21 m/s, which
  * carries a stone 45 m at 45 degrees (the farthest castle ends at about 28 m); a higher gain would

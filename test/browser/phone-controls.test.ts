@@ -390,29 +390,104 @@ describe('phone controls', () => {
     await g.close();
   });
 
-  it('catapult: the catapult and the castle both in view; a drag from anywhere throws; the next-level (or try-again) button goes on when the level is over', async () => {
+  it('catapult: upright, the catapult whole and large and the camera following the stone to a large tower; sideways the hint clear of the castle; a drag from anywhere throws; the next-level (or try-again) button goes on when the level is over', async () => {
     const g = await h.openGame('catapult', PHONE);
+    type Game = {
+      cameraSettled(): boolean;
+      bannerSize(): { width: number; height: number; fontSize: number };
+      level(): { castleMinX: number; castleMaxX: number; castleTop: number };
+      positionOf(b: number): [number, number];
+      fire(dx: number, dy: number): number;
+      shots(): number[];
+      renderer: { camera: { toScreenX(x: number): number; toScreenY(y: number): number; width: number; height: number } };
+    };
     await g.waitFor(() => (window.game as unknown as { cameraSettled(): boolean }).cameraSettled(), null);
-    // The whole play area fits the screen's width (it was an 8 m window that panned: the castle was
-    // off screen while aiming, and a drag during the pan threw nothing).
-    const box = await g.page.evaluate(() => document.querySelector('canvas')!.getBoundingClientRect().toJSON() as DOMRect);
-    const cup = await g.worldToPage(0, 1.5);
-    const castle = await g.page.evaluate(() => (window.game as unknown as { level(): { castleMinX: number; castleMaxX: number } }).level());
-    const castleLeft = await g.worldToPage(castle.castleMinX, 0);
-    const castleRight = await g.worldToPage(castle.castleMaxX, 0);
-    for (const p of [cup, castleLeft, castleRight]) {
-      expect(p.x).toBeGreaterThan(box.left);
-      expect(p.x).toBeLessThan(box.right);
-      expect(p.y).toBeLessThan(box.bottom);
-    }
-    // The ground is above the bottom quarter (earth below it), not at the canvas's bottom edge.
-    expect((box.bottom - castleLeft.y) / box.height).toBeGreaterThan(0.2);
+    // Upright, the aim view is the catapult and the field in front of it, not the whole field fitted
+    // to 390 px. The catapult with its mound and the stones stacked behind it spans x = -3.0 to 1.1 m,
+    // y = 0 to 2 m (see drawCatapult, drawMound and drawAmmo in games/catapult): all of it on the
+    // canvas and over 150 px wide (the whole field drew it 87 px wide, its stones cut off at the left).
+    const aim = await g.page.evaluate(() => {
+      const w = window.game as unknown as Game;
+      const cam = w.renderer.camera;
+      const [left, right, top, bottom] = [cam.toScreenX(-3.0), cam.toScreenX(1.1), cam.toScreenY(2), cam.toScreenY(0)];
+      return { left, right, top, bottom, W: cam.width, H: cam.height, banner: w.bannerSize() };
+    });
+    expect(aim.left).toBeGreaterThanOrEqual(0);
+    expect(aim.right).toBeLessThanOrEqual(aim.W);
+    expect(aim.top).toBeGreaterThanOrEqual(0);
+    expect(aim.bottom).toBeLessThanOrEqual(aim.H);
+    expect(aim.right - aim.left).toBeGreaterThan(150);
+    // The ground is above the bottom sixth (earth below it), not at the canvas's bottom edge.
+    expect((aim.H - aim.bottom) / aim.H).toBeGreaterThan(1 / 6);
+    // The score and the star rule: two lines of text, narrower than the canvas (a line is about
+    // 1.3 x the type size and the outline adds 4 px: two lines 2.7 x, three 4 x; bound 3.2 x).
+    expect(aim.banner.height).toBeLessThan(3.2 * aim.banner.fontSize);
+    expect(aim.banner.width).toBeLessThanOrEqual(aim.W);
     // The legend is behind the menu button on a phone: a card over the scene says how to play until
     // the first touch.
     const hint = g.page.locator('[data-hud="touch-hint"]');
     expect(await hint.textContent()).toMatch(/^Drag\s*pull back/);
-    // The drag starts mid-screen, far from the cup (at the left edge, there is no room to pull back).
-    const start = { x: box.left + box.width / 2, y: box.top + box.height / 2 };
+    // Sideways (844 x 390): the whole field in view, and the card lies on the earth under the ground
+    // line, not over the castle's foot (the field fitted to the castle's height put it there).
+    await g.page.setViewportSize({ width: 844, height: 390 });
+    await g.waitFor(() => {
+      const w = window.game as unknown as Game;
+      return w.renderer.camera.width > 600 && w.cameraSettled();
+    }, null);
+    const box = await g.page.evaluate(() => document.querySelector('canvas')!.getBoundingClientRect().toJSON() as DOMRect);
+    const castle = await g.page.evaluate(() => (window.game as unknown as Game).level());
+    const foot = await g.worldToPage(castle.castleMinX, 0);
+    for (const p of [await g.worldToPage(-3, 0), foot, await g.worldToPage(castle.castleMaxX, castle.castleTop)]) {
+      expect(p.x).toBeGreaterThan(box.left);
+      expect(p.x).toBeLessThan(box.right);
+      expect(p.y).toBeLessThan(box.bottom);
+    }
+    expect((await hint.boundingBox())!.y).toBeGreaterThanOrEqual(foot.y);
+    await g.page.setViewportSize(PHONE.viewport);
+    await g.waitFor(() => {
+      const w = window.game as unknown as Game;
+      return w.renderer.camera.width < 600 && w.cameraSettled();
+    }, null);
+    // A throw at the castle's front at 14 m/s, the low angle (sin 2 theta = g R / v^2). Each frame
+    // while it flies the stone is inside the canvas's width (the camera follows it), and when it gets
+    // there the tower is over 210 px tall on the screen (the shot view fitted to the castle, the rock
+    // and 2.5 m either side drew it 179 px tall).
+    const flight = await g.page.evaluate(async () => {
+      const w = window.game as unknown as Game;
+      const cam = w.renderer.camera;
+      const lv = w.level();
+      const R = lv.castleMinX + 0.5,
+        v = 14,
+        th = 0.5 * Math.asin((9.81 * R) / (v * v)),
+        d = v / 7;
+      const ball = w.fire(-d * Math.cos(th), -d * Math.sin(th));
+      let outside = 0,
+        frames = 0;
+      const t0 = performance.now();
+      while (performance.now() - t0 < 5000) {
+        await new Promise(requestAnimationFrame);
+        const x = w.positionOf(ball)[0];
+        if (x > lv.castleMinX - 0.3) break;
+        frames++;
+        const sx = cam.toScreenX(x);
+        if (sx < 0 || sx > cam.width) outside++;
+      }
+      return { frames, outside };
+    });
+    expect(flight.frames).toBeGreaterThan(3);
+    expect(flight.outside).toBe(0);
+    // Once the camera is at rest on the shot view, the rock past the castle and room past it are in view too.
+    const tower = await g.waitFor(() => {
+      const w = window.game as unknown as Game & { shotView(): boolean };
+      if (!w.shotView() || !w.cameraSettled()) return null;
+      const cam = w.renderer.camera,
+        lv = w.level();
+      return { height: cam.toScreenY(0) - cam.toScreenY(lv.castleTop), rock: cam.toScreenX(lv.castleMaxX + 2.9), width: cam.width };
+    }, null);
+    expect(tower.height).toBeGreaterThan(210);
+    expect(tower.rock).toBeLessThan(tower.width - 30);
+    // A touch drag starting mid-screen, far from the cup (at the left edge there is no room to pull back), throws.
+    const start = { x: box.left + 390 / 2, y: box.top + (844 - box.top) / 2 };
     await touchPath(
       g.page,
       [
@@ -422,23 +497,10 @@ describe('phone controls', () => {
       ],
       50,
     );
-    await g.waitFor(() => (window.game as unknown as { shots(): number[] }).shots().length === 1, null);
+    await g.waitFor(() => (window.game as unknown as { shots(): number[] }).shots().length === 2, null);
     await hint.waitFor({ state: 'detached', timeout: 3000 });
-    // After the throw the camera closes in on the castle: over 80 px wide (45 px in the view that
-    // holds the catapult too), the rock and room for debris past it still in view.
-    const shotView = await g.waitFor(() => {
-      const game = window.game as unknown as {
-        shotView(): boolean;
-        level(): { castleMinX: number; castleMaxX: number };
-        renderer: { camera: { toScreenX(x: number): number; width: number } };
-      };
-      const cam = game.renderer.camera,
-        lv = game.level();
-      const castle = cam.toScreenX(lv.castleMaxX) - cam.toScreenX(lv.castleMinX);
-      return game.shotView() && castle > 80 ? { castle, rock: cam.toScreenX(lv.castleMaxX + 2.9), width: cam.width } : null;
-    }, null);
-    expect(shotView.castle).toBeGreaterThan(80);
-    expect(shotView.rock).toBeLessThan(shotView.width - 30);
+    // After the throw the camera follows it (the shot view).
+    await g.waitFor(() => (window.game as unknown as { shotView(): boolean }).shotView(), null);
     // Spend the remaining shots and let 4 s pass: the level is over.
     await g.page.evaluate(() => {
       const game = window.game as unknown as { shotsLeft(): number; fire(dx: number, dy: number): number; advance(n: number): void };
