@@ -631,6 +631,8 @@ function drawOffscreen(world: PhysicsWorld): void {
     H = cam.height;
   const m = 18;
   if (px >= 0 && px <= W && py >= 0 && py <= H) return;
+  // Lying at the castle or the rock while the castle is off the screen: the castle's own marker points there.
+  if (px > W && x <= rockRight() + 0.5 && y < 2 * ROCK.hy + 1) return;
   // The arrow's tip on the screen's edge, on the line from the screen's centre to the stone.
   // Past the right edge, the arrow and its label sit above the castle and the rock, not over them.
   const top = px > W ? Math.min(cam.toScreenY(Math.max(lv.castleTop, 2 * ROCK.hy) + 1.2), H - m) : H - m;
@@ -1110,7 +1112,8 @@ function draw(world: PhysicsWorld, alpha: number): void {
       // throw again for more stars.
       const earned = starsOf(t.fallen / Math.max(1, lv.pieces.length));
       const stars = '★'.repeat(earned) + '☆'.repeat(3 - earned);
-      banner.text = `Cleared!  ${stars}   +${shotsLeft * SHOT_BONUS} for shots left if you move on now\n${running}`;
+      const bonus = narrow ? `Move on now: +${shotsLeft * SHOT_BONUS}` : `+${shotsLeft * SHOT_BONUS} for shots left if you move on now`;
+      banner.text = `Cleared!  ${stars}   ${bonus}\n${running}`;
       showNext(true, params.level === LEVEL_COUNT ? 'Finish ▶' : `Level ${params.level + 1} ▶`);
     } else {
       banner.text = running;
