@@ -121,9 +121,11 @@ html, body { margin: 0; height: 100%; overflow: hidden; }
 @media (max-width: ${COMPACT_MAX_WIDTH - 0.02}px), (max-height: ${COMPACT_MAX_HEIGHT - 0.02}px) {
   .bp-app { grid-template-columns: minmax(0, 1fr); grid-template-rows: auto auto minmax(0, 1fr) auto;
     grid-template-areas: "toolbar" "status" "stage" "controls"; }
-  .bp-toolbar { grid-area: toolbar; align-self: auto; flex-wrap: nowrap; padding: 6px 8px; gap: 6px; background: ${BACKING}; }
-  .bp-toolbar h1 { flex: 1 1 auto; white-space: nowrap; overflow: hidden; text-overflow: ellipsis; font-size: 14px; }
-  .bp-toolbar .bp-buttons { flex-wrap: nowrap; }
+  /* The title wraps beside the buttons (two lines fit their 44 px height); a word wider than the room
+     left moves the buttons to a row of their own, so the whole title stays readable. */
+  .bp-toolbar { grid-area: toolbar; align-self: auto; flex-wrap: wrap; padding: 6px; gap: 5px; background: ${BACKING}; }
+  .bp-toolbar h1 { flex: 1 1 0; min-width: min-content; font-size: 14px; line-height: 1.2; text-wrap: balance; }
+  .bp-toolbar .bp-buttons { flex-wrap: nowrap; gap: 3px; margin-left: auto; }
   .bp-toolbar .bp-drawer-button { display: inline-flex; }
   .bp-info, .bp-side { position: fixed; z-index: 30; top: var(--bp-toolbar-height, 44px); max-height: calc(100% - var(--bp-toolbar-height, 44px));
     display: none; background: rgba(16, 20, 28, 0.96); border-radius: 0 0 8px 8px; box-shadow: 0 6px 18px rgba(0, 0, 0, 0.5); }
