@@ -7,8 +7,9 @@
  * any visible element, other than the canvas and the elements that contain it, whose box meets the
  * scene's box by more than 2 px each way; elements marked `data-scene-overlay` (labels drawn as part
  * of the scene) are skipped with their children. Clipped: the scene's box reaching outside the
- * canvas or the window (the world cropped), a layout region reaching outside the window, or text cut
- * off by an element that hides its overflow (without an ellipsis).
+ * canvas or the window (the world cropped), a layout region reaching outside the window, text cut
+ * off by an element that hides its overflow (with or without an ellipsis), or the page's title not
+ * shown whole (wider or taller than its box, or under a toolbar button).
  */
 import type { Page } from 'playwright-core';
 
@@ -117,11 +118,10 @@ export function checkLayout(page: Page): Promise<LayoutReport> {
           overlays.push(describeEl(el));
           return; // its children are covered by the report of their parent
         }
-        // Text cut off by an element that hides its overflow.
+        // Text cut off by an element that hides its overflow (an ellipsis counts as cut off too).
         const hides = /hidden|clip/.test(st.overflowX) || /hidden|clip/.test(st.overflowY);
         if (
           hides &&
-          st.textOverflow !== 'ellipsis' &&
           !['CANVAS', 'INPUT', 'TEXTAREA', 'SELECT'].includes(el.tagName) &&
           (el.scrollWidth > el.clientWidth + 2 || el.scrollHeight > el.clientHeight + 2)
         ) {
@@ -142,6 +142,21 @@ export function checkLayout(page: Page): Promise<LayoutReport> {
       const inScroller = el.closest('.bp-side, .bp-info') !== null && !el.matches('.bp-side, .bp-info');
       if (b.x < -tol || b.right > W + tol || (!inScroller && (b.y < -tol || b.bottom > H + tol)))
         clipped.push(`${describeEl(el)} reaches outside the window ${W}x${H}`);
+    }
+    // The page's title is shown whole: its text fits its box, and the box clears the toolbar's buttons.
+    const title = document.querySelector('.bp-title');
+    if (title && visible(title)) {
+      if (title.scrollWidth > title.clientWidth + 1 || title.scrollHeight > title.clientHeight + 1)
+        clipped.push(
+          `${describeEl(title)}: title cut off (${title.scrollWidth}x${title.scrollHeight} in ${title.clientWidth}x${title.clientHeight})`,
+        );
+      const t = title.getBoundingClientRect();
+      for (const b of Array.from(document.querySelectorAll('.bp-toolbar button'))) {
+        if (!visible(b)) continue;
+        const bb = b.getBoundingClientRect();
+        if (Math.min(t.right, bb.right) - Math.max(t.x, bb.x) > 0.5 && Math.min(t.bottom, bb.bottom) - Math.max(t.y, bb.y) > 0.5)
+          clipped.push(`${describeEl(title)}: title under the button ${describeEl(b)}`);
+      }
     }
     // Chart titles fit their chart.
     for (const t of Array.from(document.querySelectorAll('.bp-plot .u-title'))) {
