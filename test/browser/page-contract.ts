@@ -16,6 +16,7 @@
  */
 import { mkdirSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
+import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { repoRoot } from './chromium.mjs';
 import { lowContrastText } from './contrast-check';
@@ -39,6 +40,21 @@ const BOTH_RUNS = process.env.BITPHYSICS_PAGES === 'all';
 
 const shots = join(repoRoot, 'dist', 'screenshots');
 mkdirSync(shots, { recursive: true });
+
+/**
+ * The gallery's cards whose line of text is cut off (its text overflows the paragraph's box, as a
+ * clamp to a few lines does): 'folder: w x h in w x h'. Empty when every line is shown whole.
+ */
+function cutCardLines(page: Page): Promise<string[]> {
+  return page.$$eval('#gallery a.card p', (ps) =>
+    ps
+      .filter((p) => p.scrollWidth > p.clientWidth + 1 || p.scrollHeight > p.clientHeight + 1)
+      .map(
+        (p) =>
+          `${(p.closest('a') as HTMLElement).dataset.folder}: ${p.scrollWidth}x${p.scrollHeight} in ${p.clientWidth}x${p.clientHeight}`,
+      ),
+  );
+}
 
 /**
  * Defines the page checks of shard `shard` (0-based) of `shards`: page runs number k with
@@ -79,6 +95,7 @@ export function describePages(shard: number, shards: number): void {
           return bad;
         });
         expect(undecodable, 'thumbnails that are not pictures').toEqual([]);
+        expect(await cutCardLines(g.page), 'card lines cut off on a desktop').toEqual([]);
         expect(g.errors).toEqual([]);
         await g.close();
       });
@@ -99,6 +116,7 @@ export function describePages(shard: number, shards: number): void {
         expect(page.lines.filter((l) => /[=√²³πθωτμ]|\bln\s*\(/.test(l))).toEqual([]);
         expect(page.text).not.toMatch(/npm run|built from components/);
         expect(page.rows).toBe(Math.ceil(page.cards / 2));
+        expect(await cutCardLines(g.page), 'card lines cut off on a phone').toEqual([]);
         expect(g.errors).toEqual([]);
         await g.close();
       });
@@ -120,6 +138,35 @@ export function describePages(shard: number, shards: number): void {
         expect(await g.page.locator('.bp-side .lil-gui.lil-root').first().isVisible()).toBe(true);
         await g.page.getByRole('button', { name: 'parameters and charts' }).tap();
         expect(await side.isVisible()).toBe(false);
+        // Every page's title is read whole beside the six toolbar buttons (the most a page has), which
+        // keep their 44 x 44 px and stay in the window: each registry title in turn in this toolbar.
+        const toolbar = await g.page.evaluate(
+          (titles) => {
+            const title = document.querySelector('.bp-title') as HTMLElement;
+            const own = title.textContent;
+            const bad: string[] = [];
+            for (const t of titles) {
+              title.textContent = t;
+              const buttons = Array.from(document.querySelectorAll('.bp-toolbar button'))
+                .map((b) => b.getBoundingClientRect())
+                .filter((b) => b.width > 0);
+              if (buttons.length !== 6) bad.push(`${t}: ${buttons.length} buttons shown, not 6`);
+              if (title.scrollWidth > title.clientWidth + 1 || title.scrollHeight > title.clientHeight + 1)
+                bad.push(`${t}: cut off (${title.scrollWidth}x${title.scrollHeight} in ${title.clientWidth}x${title.clientHeight})`);
+              const tb = title.getBoundingClientRect();
+              for (const b of buttons) {
+                if (b.width < 44 || b.height < 44 || b.x < 0 || b.right > window.innerWidth)
+                  bad.push(`${t}: a button at ${b.x},${b.y} ${b.width}x${b.height}`);
+                if (Math.min(tb.right, b.right) > Math.max(tb.x, b.x) && Math.min(tb.bottom, b.bottom) > Math.max(tb.y, b.y))
+                  bad.push(`${t}: under a button`);
+              }
+            }
+            title.textContent = own;
+            return bad;
+          },
+          registry.map((e) => e.title),
+        );
+        expect(toolbar, 'titles not shown whole in the phone toolbar').toEqual([]);
         await g.page.getByRole('button', { name: 'pause / resume (P)' }).tap();
         expect(await g.page.evaluate(() => window.game!.paused)).toBe(true);
         const steps = (await g.stats()).steps;
