@@ -130,7 +130,7 @@ html, body { margin: 0; height: 100%; overflow: hidden; }
   .bp-info, .bp-side { position: fixed; z-index: 30; top: var(--bp-toolbar-height, 44px); max-height: calc(100% - var(--bp-toolbar-height, 44px));
     display: none; background: rgba(16, 20, 28, 0.96); border-radius: 0 0 8px 8px; box-shadow: 0 6px 18px rgba(0, 0, 0, 0.5); }
   .bp-info { left: 0; width: min(100%, 320px); padding-top: 6px; }
-  .bp-side { right: 0; width: min(100%, 380px); }
+  .bp-side { right: 0; width: min(100%, 380px); min-width: 0; max-width: none; }
   .bp-app[data-open="info"] .bp-info { display: flex; }
   .bp-app[data-open="side"] .bp-side:not(:empty) { display: flex; }
 }
