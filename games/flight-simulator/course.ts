@@ -1,7 +1,8 @@
 /**
  * The flight simulator's course: a chain of rings to fly through, laid out from the start along a
- * path that turns and climbs a little more at each ring, always clear of the hills; and the rule
- * that decides when a ring is passed or missed. Headless (no drawing), so it is tested in node
+ * path that turns and climbs a little more at each ring, always clear of the hills (the first lies
+ * on the path flown with no input, a few seconds ahead); and the rule that decides when a ring is
+ * passed or missed. Headless (no drawing), so it is tested in node
  * (test/games/flight-simulator-course.test.ts).
  */
 
@@ -43,11 +44,24 @@ export interface CourseOptions {
   start: readonly [number, number, number];
 }
 
+/** Distance of the first ring straight ahead of the start, m: about 4.5 s at the trim speed. */
+export const FIRST_RING_DISTANCE = 520;
+
 /**
- * Lays out `count` rings from `start`: the first 1.6 km straight ahead at the start height (an easy
- * first ring), then each 1.5 to 2.2 km after the one before, turning by up to 20 degrees more at
- * each ring (up to 40 degrees from the 6th; within 100 degrees of +x) and changing height by up to 150 m (250 m from the 6th),
- * kept between 400 and 1,300 m and at least RING_CLEARANCE above the ground.
+ * How hard ring `i` (0-based) is, in [0, 1]: 0 for the first two, rising evenly to 1 at the 8th
+ * and staying there. Scales the spacing, the turn and the change of height in `layCourse`.
+ */
+export function ringDifficulty(i: number): number {
+  return Math.max(0, Math.min(1, (i - 1) / 6));
+}
+
+/**
+ * Lays out `count` rings from `start`: the first FIRST_RING_DISTANCE straight ahead at the start
+ * height (on the path the aircraft flies with no input), then each ring a step after the one before
+ * that grows with its difficulty d = ringDifficulty(i): 1,000 to 1,300 m apart at d = 0 up to 1,500
+ * to 1,800 m at d = 1, turning by up to 8 + 27 d degrees more (within 100 degrees of +x) and
+ * changing height by up to 60 + 190 m d, kept between 400 and 1,300 m and at least RING_CLEARANCE
+ * above the ground.
  * @throws RangeError on a count that is not an integer >= 1 or a seed or start that is not finite.
  */
 export function layCourse(options: CourseOptions): Ring[] {
@@ -60,19 +74,20 @@ export function layCourse(options: CourseOptions): Ring[] {
   let [x, y, z] = start;
   let heading = 0;
   for (let i = 0; i < count; i++) {
-    const hard = i >= 5;
-    const step = i === 0 ? 1600 : rng.range(1500, 2200);
+    const d = ringDifficulty(i);
+    const step = i === 0 ? FIRST_RING_DISTANCE : 1000 + 500 * d + rng.range(0, 300);
     // Turns, kept within 100 degrees of +x so that the course leads on and never folds back.
-    if (i > 0) heading = Math.max(-1.75, Math.min(1.75, heading + rng.range(-1, 1) * (hard ? 40 : 20) * (Math.PI / 180)));
+    if (i > 0) heading = Math.max(-1.75, Math.min(1.75, heading + rng.range(-1, 1) * (8 + 27 * d) * (Math.PI / 180)));
     const nx0 = x + step * Math.cos(heading),
       nz0 = z + step * Math.sin(heading);
     const ground = terrainHeight(terrain, nx0, nz0);
-    const ny0 = Math.max(ground + RING_CLEARANCE, Math.min(1300, Math.max(400, y + (i === 0 ? 0 : rng.range(-1, 1) * (hard ? 250 : 150)))));
+    const climb = i === 0 ? 0 : rng.range(-1, 1) * (60 + 190 * d);
+    const ny0 = Math.max(ground + RING_CLEARANCE, Math.min(1300, Math.max(400, y + climb)));
     const dx = nx0 - x,
       dy = ny0 - y,
       dz = nz0 - z,
-      d = Math.hypot(dx, dy, dz);
-    rings.push({ x: nx0, y: ny0, z: nz0, nx: dx / d, ny: dy / d, nz: dz / d, status: 'ahead' });
+      length = Math.hypot(dx, dy, dz);
+    rings.push({ x: nx0, y: ny0, z: nz0, nx: dx / length, ny: dy / length, nz: dz / length, status: 'ahead' });
     x = nx0;
     y = ny0;
     z = nz0;

@@ -1,34 +1,38 @@
 /**
  * The flight simulator's course (games/flight-simulator/course.ts), headless: the rings are laid
- * where the layout rule says (an easy first ring, spacing, heights clear of the hills), and a move
- * through a ring's plane passes it inside the radius, misses it outside, and counts nothing the
- * wrong way or far off.
+ * where the layout rule says (an easy first ring, spacing, heights clear of the hills), the aircraft
+ * flown as the game starts it with no input passes ring 1 within 5 s, and a move through a ring's
+ * plane passes it inside the radius, misses it outside, and counts nothing the wrong way or far off.
  */
 
-import { createPhysicsWorld } from '@bitphysics/physics';
-import { aircraft, terrainHeight } from '@bitphysics/projects';
+import { createPhysicsWorld, setBodyThrust, setControlDeflection, step } from '@bitphysics/physics';
+import { aircraft, aircraftLevelDrag, terrainHeight } from '@bitphysics/projects';
 import { describe, expect, it } from 'vitest';
+import { assist, createAssistState, flightState } from '../../games/flight-simulator/assist';
 import {
   courseStars,
   crossRing,
+  FIRST_RING_DISTANCE,
   layCourse,
   MISS_RANGE,
   nextRing,
   RING_CLEARANCE,
   RING_RADIUS,
   type Ring,
+  ringDifficulty,
 } from '../../games/flight-simulator/course';
 
 const terrain = aircraft.build(createPhysicsWorld(aircraft.worldOptions()), { seed: 3 }).terrain;
 
 describe('flight simulator course', () => {
-  it('lays the rings: the first 1.6 km straight ahead, then 1.5 to 2.2 km apart, clear of the hills', () => {
+  it('lays the rings: the first straight ahead, then farther apart, turning and climbing more as they go, clear of the hills', () => {
     for (const seed of [1, 2, 3, 4, 5]) {
       const rings = layCourse({ terrain, seed, count: 30, start: [0, 900, 0] });
       expect(rings).toHaveLength(30);
-      expect(rings[0]!.x).toBeCloseTo(1600, 9);
+      expect(rings[0]!.x).toBeCloseTo(FIRST_RING_DISTANCE, 9);
       expect(rings[0]!.z).toBeCloseTo(0, 9);
-      expect(rings[0]!.y).toBe(Math.max(900, terrainHeight(terrain, 1600, 0) + RING_CLEARANCE));
+      expect(rings[0]!.y).toBe(Math.max(900, terrainHeight(terrain, FIRST_RING_DISTANCE, 0) + RING_CLEARANCE));
+      let heading = 0;
       for (let i = 0; i < rings.length; i++) {
         const r = rings[i]!;
         expect(r.y - terrainHeight(terrain, r.x, r.z)).toBeGreaterThanOrEqual(RING_CLEARANCE - 1e-9);
@@ -36,17 +40,63 @@ describe('flight simulator course', () => {
         expect(r.status).toBe('ahead');
         if (i === 0) continue;
         const p = rings[i - 1]!;
+        const d = ringDifficulty(i);
         const across = Math.hypot(r.x - p.x, r.z - p.z);
-        expect(across).toBeGreaterThanOrEqual(1500 - 1e-9);
-        expect(across).toBeLessThanOrEqual(2200 + 1e-9);
+        expect(across).toBeGreaterThanOrEqual(1000 + 500 * d - 1e-9);
+        expect(across).toBeLessThanOrEqual(1300 + 500 * d + 1e-9);
+        // The turn at each ring and the change of height grow with the difficulty (the height may
+        // change less where the 400 m floor, the 1,300 m ceiling or the hills hold it).
+        const turn = Math.atan2(r.z - p.z, r.x - p.x);
+        expect(Math.abs(turn - heading)).toBeLessThanOrEqual(((8 + 27 * d) * Math.PI) / 180 + 1e-9);
+        heading = turn;
+        if (r.y > terrainHeight(terrain, r.x, r.z) + RING_CLEARANCE + 1e-9)
+          expect(Math.abs(r.y - p.y)).toBeLessThanOrEqual(60 + 190 * d + 1e-9);
         // The normal points from the ring before to this one.
-        const d = Math.hypot(r.x - p.x, r.y - p.y, r.z - p.z);
-        expect(r.nx).toBeCloseTo((r.x - p.x) / d, 12);
+        const length = Math.hypot(r.x - p.x, r.y - p.y, r.z - p.z);
+        expect(r.nx).toBeCloseTo((r.x - p.x) / length, 12);
         // The course leads on: each ring's heading within 100 degrees of +x.
-        expect(Math.abs(Math.atan2(r.z - p.z, r.x - p.x))).toBeLessThanOrEqual(1.75 + 1e-9);
+        expect(Math.abs(turn)).toBeLessThanOrEqual(1.75 + 1e-9);
       }
     }
+    expect([0, 1, 4, 7, 20].map(ringDifficulty)).toEqual([0, 0, 0.5, 1, 1]);
     expect(() => layCourse({ terrain, seed: 1, count: 0, start: [0, 900, 0] })).toThrow(/layCourse: count must be an integer >= 1, got 0/);
+  });
+
+  it('flown as the game starts it, with no input, the aircraft passes ring 1 near its centre within 5 s', () => {
+    // As the game's step does it: 900 m up at the trim speed, the assist on with 15 degrees of
+    // control authority and the surfaces following its commands at 6 per second, the throttle at
+    // the level drag of 130 m/s (N).
+    const world = createPhysicsWorld(aircraft.worldOptions());
+    const h = aircraft.build(world, { seed: 1, altitude: 900 });
+    const ring = layCourse({ terrain: h.terrain, seed: 8, count: 1, start: [0, 900, 0] })[0]!;
+    const full = (15 * Math.PI) / 180,
+      rate = 6 * world.dt;
+    const state = createAssistState(),
+      surface = { aileron: 0, elevator: 0, rudder: 0 };
+    const P = world.components.Position,
+      e = h.body;
+    let result: string | null = null,
+      time = 0;
+    while (!result && time < 5) {
+      const c = assist(flightState(world, e), { roll: 0, pitch: 0, yaw: 0 }, state, world.dt);
+      for (const k of ['aileron', 'elevator', 'rudder'] as const) surface[k] += Math.max(-rate, Math.min(rate, c[k] - surface[k]));
+      setControlDeflection(world, h.surfaces.tail, -surface.elevator * full);
+      setControlDeflection(world, h.surfaces.leftWing, surface.aileron * full);
+      setControlDeflection(world, h.surfaces.rightWing, -surface.aileron * full);
+      setControlDeflection(world, h.surfaces.fin, -surface.rudder * full);
+      setBodyThrust(world, e, [aircraftLevelDrag(130), 0, 0]);
+      const a = [P.x[e]!, P.y[e]!, P.z[e]!];
+      step(world);
+      time += world.dt;
+      result = crossRing(ring, a, [P.x[e]!, P.y[e]!, P.z[e]!]);
+      if (result) {
+        // Within a fifth of the radius of the centre: a newcomer's small corrections keep it inside.
+        expect(Math.hypot(P.y[e]! - ring.y, P.z[e]! - ring.z)).toBeLessThan(RING_RADIUS / 5);
+      }
+    }
+    expect(result).toBe('passed');
+    expect(time).toBeGreaterThan(3); // not at once: the ring is seen coming
+    expect(time).toBeLessThan(5);
   });
 
   it('passes a ring crossed inside its radius, misses one crossed outside, ignores the wrong way and far off', () => {
