@@ -10,8 +10,8 @@
  *   (the elevator pitches the aircraft until its path climbs or dives at that angle, pulling harder
  *   in a bank to keep the height); let go, the aircraft flies level.
  * - Rudder: as held, plus what cancels the sideslip (a coordinated turn).
- * - Throttle: the engine holds the speed the pilot sets (`autoThrottle`): the level drag there and
- *   the weight's pull along a climb, plus more while the aircraft is slower than set.
+ * - Throttle: the pilot's alone; the assist never moves it, so the stick steers without changing the
+ *   engine (a climb trades speed for height, a dive the other way, as the physics has it).
  * - A wing angle of attack past `ASSIST.alphaLimit` is not asked for: the elevator eases off before
  *   the stall (the aircraft still stalls if it is slowed far enough by a long climb).
  *
@@ -20,7 +20,7 @@
  */
 
 import type { PhysicsWorld } from '@bitphysics/physics';
-import { AIRCRAFT, aircraftLevelDrag } from '@bitphysics/projects';
+import { AIRCRAFT } from '@bitphysics/projects';
 
 const DEG = Math.PI / 180;
 
@@ -95,11 +95,6 @@ export const ASSIST = Object.freeze({
   sideslipGain: 3,
   /** Fastest change of the bank asked for, rad/s (a full stick's bank is reached smoothly). */
   bankRate: 90 * DEG,
-  /** Throttle added per m/s the aircraft is slower than the speed set, s/m. */
-  speedGain: 0.03,
-  /** Slowest and fastest speed the pilot can set, m/s (the wing stalls near 60 m/s in level flight). */
-  minSpeed: 90,
-  maxSpeed: 220,
 });
 
 /** What the assist keeps between steps: the integral of the flight-path error and the bank asked for. */
@@ -182,14 +177,4 @@ export function assist(s: FlightState, input: PilotInput, state: AssistState, dt
   elevator = clamp(elevator, -1, 1);
   const rudder = clamp(input.yaw + A.sideslipGain * s.sideslip, -1, 1);
   return { aileron, elevator, rudder };
-}
-
-/**
- * The throttle, a fraction of `AIRCRAFT.maxThrust` in [0, 1], that holds `setSpeed` (m/s): the
- * level drag at that speed (`aircraftLevelDrag`) plus the weight's part along the path m g sin(path),
- * over the largest thrust, plus `ASSIST.speedGain` per m/s the aircraft is slower than set.
- */
-export function autoThrottle(s: FlightState, setSpeed: number): number {
-  const need = aircraftLevelDrag(setSpeed) + AIRCRAFT.mass * 9.81 * Math.sin(s.path);
-  return clamp(need / AIRCRAFT.maxThrust + ASSIST.speedGain * (setSpeed - s.speed), 0, 1);
 }

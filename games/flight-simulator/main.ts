@@ -4,10 +4,10 @@
  * (wing halves with dihedral and ailerons, tailplane with the elevator, fin with the rudder), with a
  * stall past 20 degrees; the controls act where the surfaces are, so they turn the aircraft through
  * Euler's equations. The flight assist (./assist.ts, on by default) turns the stick into a bank and
- * a climb or dive and holds the speed set; without it the stick moves the surfaces directly.
+ * a climb or dive and leaves the throttle to the pilot; without it the stick moves the surfaces directly.
  * Fly through every ring (./course.ts) as fast as you can; do not hit the ground.
  * Keys: arrows or W/S/A/D: climb / dive and bank (with "pilot's pitch" in the panel, down pulls up);
- * Q / E: rudder; Shift / Ctrl (or + / -): faster / slower (throttle without the assist);
+ * Q / E: rudder; Shift / Ctrl (or + / -): faster / slower (the throttle: the only input that moves it);
  * C: camera (chase / cockpit); P pause, N step, R reset.
  * Touch: a stick under the scene (up climbs, sideways banks), buttons for speed, rudder and camera.
  * Sound: the engine follows the throttle; chimes for rings, a low tone for a miss, a stall horn,
@@ -28,7 +28,7 @@ import {
 } from '@bitphysics/game-kit';
 import { startThreeGame } from '@bitphysics/game-kit/three';
 import { createPhysicsWorld, type PhysicsWorld, setBodyThrust, setControlDeflection, step } from '@bitphysics/physics';
-import { AIRCRAFT, AIRCRAFT_TRIM_SPEED, type AircraftHandles, aircraft, aircraftLevelDrag, terrainHeight } from '@bitphysics/projects';
+import { AIRCRAFT, type AircraftHandles, aircraft, aircraftLevelDrag, terrainHeight } from '@bitphysics/projects';
 import {
   DoubleSide,
   HemisphereLight,
@@ -41,7 +41,7 @@ import {
   Vector3,
 } from 'three';
 import { aircraftGeometry } from './aircraft-model';
-import { ASSIST, assist, autoThrottle, createAssistState, type FlightState, flightState } from './assist';
+import { assist, createAssistState, type FlightState, flightState } from './assist';
 import { createAttitudeIndicator } from './attitude-indicator';
 import { courseStars, crossRing, layCourse, nextRing, RING_RADIUS, type Ring } from './course';
 import { createScenery, HORIZON_COLOUR, SUN_DIRECTION } from './scenery';
@@ -49,7 +49,7 @@ import { createScenery, HORIZON_COLOUR, SUN_DIRECTION } from './scenery';
 const params = {
   seed: seedParam(),
   rings: numberParam('rings', { default: 10, min: 1, max: 30, integer: true }),
-  /** The flight assist: the stick asks for a bank and a climb, the engine holds the speed set. */
+  /** The flight assist: the stick asks for a bank and a climb; the throttle stays the pilot's. */
   assist: new URLSearchParams(location.search).has('assist') ? flagParam('assist') : true,
   /** Pilot's pitch: stick back (down arrow, stick down) pulls the nose up, as in an aircraft. */
   pilotPitch: flagParam('pilotPitch'),
@@ -60,17 +60,15 @@ const params = {
 
 /** Height the aircraft starts at, m. */
 const START_ALTITUDE = 900;
-/** Speed set at the start, m/s (the assist's engine accelerates to it from the trim speed). */
+/** Speed whose level drag the starting throttle balances, m/s (the aircraft starts at its trim speed and gathers speed towards it). */
 const START_SPEED = 130;
 /** Sea level of the scenery, m: below it is water, which ends the flight as the ground does. */
 const SEA_LEVEL = 60;
 
 /** Controls and game state beside the physics. */
 const state = {
-  /** Throttle, fraction of the largest thrust, [0, 1]. */
+  /** Throttle, fraction of the largest thrust, [0, 1]: moved only by Faster / Slower. */
   throttle: 0,
-  /** Speed set for the assist's engine, m/s. */
-  setSpeed: START_SPEED,
   /** Control surfaces, fractions of full deflection in [-1, 1]: + roll right, + nose up, + nose right. */
   elevator: 0,
   aileron: 0,
@@ -95,8 +93,7 @@ function createWorld(): PhysicsWorld {
   const world = createPhysicsWorld(aircraft.worldOptions());
   handles = aircraft.build(world, { seed: params.seed, altitude: START_ALTITUDE });
   Object.assign(state, {
-    throttle: aircraftLevelDrag(AIRCRAFT_TRIM_SPEED) / AIRCRAFT.maxThrust,
-    setSpeed: START_SPEED,
+    throttle: aircraftLevelDrag(START_SPEED) / AIRCRAFT.maxThrust,
     elevator: 0,
     aileron: 0,
     rudder: 0,
@@ -168,17 +165,15 @@ function stepWorld(world: PhysicsWorld): void {
     state.aileron = approach(state.aileron, c.aileron, 6, dt);
     state.elevator = approach(state.elevator, c.elevator, 6, dt);
     state.rudder = approach(state.rudder, c.rudder, 6, dt);
-    if (faster) state.setSpeed = Math.min(ASSIST.maxSpeed, state.setSpeed + 25 * dt);
-    if (slower) state.setSpeed = Math.max(ASSIST.minSpeed, state.setSpeed - 25 * dt);
-    state.throttle = approach(state.throttle, autoThrottle(s, state.setSpeed), 0.8, dt);
   } else {
-    // Stick inputs spring back to neutral; the throttle stays where it is put.
+    // Stick inputs spring back to neutral.
     state.elevator = approach(state.elevator, input.pitch, 3, dt);
     state.aileron = approach(state.aileron, input.roll, 3, dt);
     state.rudder = approach(state.rudder, input.yaw, 3, dt);
-    if (faster) state.throttle = Math.min(1, state.throttle + 0.4 * dt);
-    if (slower) state.throttle = Math.max(0, state.throttle - 0.4 * dt);
   }
+  // The throttle stays where the pilot puts it, with or without the assist: the stick never moves it.
+  if (faster) state.throttle = Math.min(1, state.throttle + 0.4 * dt);
+  if (slower) state.throttle = Math.max(0, state.throttle - 0.4 * dt);
   const full = (params.authority * Math.PI) / 180;
   const surfaces = handles.surfaces;
   // Nose up: the elevator's trailing edge up, less tail lift.
@@ -496,7 +491,7 @@ function updateHud(i: ReturnType<typeof instruments>): void {
       : n < 0
         ? `Course done · ${state.score} of ${total} rings in ${clock(state.time)}`
         : `Fly through ring ${n + 1} of ${total} · ${distance >= 1000 ? `${(distance / 1000).toFixed(1)} km` : `${distance.toFixed(0)} m`} · ${clock(state.time)}`;
-  const speed = params.assist && !compact ? `${i.speed.toFixed(0)} m/s (set ${state.setSpeed.toFixed(0)})` : `${i.speed.toFixed(0)} m/s`;
+  const speed = `${i.speed.toFixed(0)} m/s`;
   readLine.textContent = compact
     ? `${speed} · alt ${i.altitude.toFixed(0)} m · engine ${(state.throttle * 100).toFixed(0)}% · rings ${state.score}/${total}`
     : `${speed} · alt ${i.altitude.toFixed(0)} m · throttle ${(state.throttle * 100).toFixed(0)}% · rings ${state.score}/${total}`;
@@ -508,7 +503,7 @@ function updateHud(i: ReturnType<typeof instruments>): void {
       `pitch ${i.pitch.toFixed(1).padStart(6)}°  bank ${i.roll.toFixed(1).padStart(6)}°`,
       `heading   ${i.heading.toFixed(0).padStart(4)}°`,
       `AoA (wing) ${i.aoa.toFixed(1).padStart(5)}°  ${state.stalled ? 'STALL' : `stall at ${((AIRCRAFT.stallAngle * 180) / Math.PI).toFixed(0)}°`}`,
-      `throttle  ${(state.throttle * 100).toFixed(0).padStart(4)}%${params.assist ? `  set ${state.setSpeed.toFixed(0)} m/s` : ''}`,
+      `throttle  ${(state.throttle * 100).toFixed(0).padStart(4)}%`,
       `assist    ${params.assist ? 'on' : 'off'}`,
     ].join('\n');
   // The end card and its button.

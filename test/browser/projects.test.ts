@@ -309,15 +309,15 @@ describe('projects', () => {
     await g.close();
   });
 
-  it('flight-simulator: Shift sets a higher speed and opens the throttle, up climbs, E yaws right; the wing reads its AoA', async () => {
+  it('flight-simulator: Shift opens the throttle, up climbs, E yaws right; the wing reads its AoA', async () => {
     const g = await h.openGame('flight-simulator');
     type Flight = Game & {
-      state: { throttle: number; setSpeed: number; elevator: number };
+      state: { throttle: number; elevator: number };
       instruments(): { pitch: number; speed: number; heading: number; aoa: number };
     };
     const before = await g.page.evaluate(() => {
       const w = window.game as unknown as Flight;
-      return { throttle: w.state.throttle, setSpeed: w.state.setSpeed, pitch: w.instruments().pitch, aoa: w.instruments().aoa };
+      return { throttle: w.state.throttle, pitch: w.instruments().pitch, aoa: w.instruments().aoa };
     });
     // Level at the trim speed, the wing meets the air at its 3 degree incidence (the body's AoA is 0).
     expect(before.aoa).toBeGreaterThan(2);
@@ -329,8 +329,8 @@ describe('projects', () => {
     const during = await g.waitFor(
       (b) => {
         const w = window.game as unknown as Flight;
-        const r = { throttle: w.state.throttle, setSpeed: w.state.setSpeed, elevator: w.state.elevator, pitch: w.instruments().pitch };
-        return r.throttle > b.throttle + 0.1 && r.setSpeed > b.setSpeed && r.elevator > 0.3 && r.pitch > b.pitch + 1 ? r : null;
+        const r = { throttle: w.state.throttle, elevator: w.state.elevator, pitch: w.instruments().pitch };
+        return r.throttle > b.throttle + 0.1 && r.elevator > 0.3 && r.pitch > b.pitch + 1 ? r : null;
       },
       before,
       30_000,
