@@ -226,8 +226,8 @@ function checkRings(time: number): void {
     const result = crossRing(ring, prev, now);
     if (!result) continue;
     if (j === i + 1) miss(i, time);
-    ring.status = result;
     if (result === 'passed') {
+      ring.status = 'passed';
       state.score++;
       const last = nextRing(rings) < 0;
       events.push({ text: last ? 'Last ring!' : `Ring ${j + 1} ✓`, colour: '#7dff9a', time });
@@ -239,6 +239,7 @@ function checkRings(time: number): void {
   if (nextRing(rings) < 0) finish(time);
 }
 
+/** Marks ring `i` missed (once): counts it, shows the banner and plays the low tone. */
 function miss(i: number, time: number): void {
   const ring = rings[i]!;
   if (ring.status === 'missed') return;

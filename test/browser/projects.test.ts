@@ -360,8 +360,8 @@ describe('projects', () => {
     const g = await h.openGame('flight-simulator', { query: { rings: 3 } });
     type Flight = Game & {
       aircraftBody(): number;
-      rings(): { x: number; y: number; z: number; status: string }[];
-      state: { score: number; phase: string };
+      rings(): { x: number; y: number; z: number; nx: number; nz: number; status: string }[];
+      state: { score: number; missed: number; phase: string };
       banner(): { text: string };
     };
     // The aircraft put 150 m before ring 1, on its line (the course's first ring lies along +x).
@@ -380,6 +380,22 @@ describe('projects', () => {
     }, null);
     expect(passed.status).toBe('passed');
     expect(passed.banner).toBe('Ring 1 ✓');
+    // Then put 150 m before ring 2 but 100 m above its centre (its radius is 45 m): a miss, counted
+    // once, with its banner.
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as Flight;
+      const r = w.rings()[1]!,
+        c = w.world.components,
+        e = w.aircraftBody();
+      c.Position.x[e] = r.x - 150 * r.nx;
+      c.Position.y[e] = r.y + 100;
+      c.Position.z[e] = r.z - 150 * r.nz;
+    });
+    const missed = await g.waitFor(() => {
+      const w = window.game as unknown as Flight;
+      return w.rings()[1]!.status === 'missed' ? { missed: w.state.missed, banner: w.banner().text } : null;
+    }, null);
+    expect(missed).toEqual({ missed: 1, banner: 'Missed ring 2' });
     await g.page.evaluate(() => {
       const w = window.game as unknown as Flight;
       w.world.components.Position.y[w.aircraftBody()] = 1; // below every hill and the sea
