@@ -58,7 +58,7 @@ export function ringDifficulty(i: number): number {
 /**
  * Lays out `count` rings from `start`: the first FIRST_RING_DISTANCE straight ahead at the start
  * height (on the path the aircraft flies with no input), then each ring a step after the one before
- * that grows with its difficulty d = ringDifficulty(i): 1,000 to 1,300 m apart at d = 0 up to 1,500
+ * that grows with its difficulty d = ringDifficulty(i): 800 to 1,100 m apart at d = 0 up to 1,500
  * to 1,800 m at d = 1, turning by up to 8 + 27 d degrees more (within 100 degrees of +x) and
  * changing height by up to 60 + 190 m d, kept between 400 and 1,300 m and at least RING_CLEARANCE
  * above the ground.
@@ -75,7 +75,7 @@ export function layCourse(options: CourseOptions): Ring[] {
   let heading = 0;
   for (let i = 0; i < count; i++) {
     const d = ringDifficulty(i);
-    const step = i === 0 ? FIRST_RING_DISTANCE : 1000 + 500 * d + rng.range(0, 300);
+    const step = i === 0 ? FIRST_RING_DISTANCE : 800 + 700 * d + rng.range(0, 300);
     // Turns, kept within 100 degrees of +x so that the course leads on and never folds back.
     if (i > 0) heading = Math.max(-1.75, Math.min(1.75, heading + rng.range(-1, 1) * (8 + 27 * d) * (Math.PI / 180)));
     const nx0 = x + step * Math.cos(heading),

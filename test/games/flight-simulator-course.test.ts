@@ -42,8 +42,8 @@ describe('flight simulator course', () => {
         const p = rings[i - 1]!;
         const d = ringDifficulty(i);
         const across = Math.hypot(r.x - p.x, r.z - p.z);
-        expect(across).toBeGreaterThanOrEqual(1000 + 500 * d - 1e-9);
-        expect(across).toBeLessThanOrEqual(1300 + 500 * d + 1e-9);
+        expect(across).toBeGreaterThanOrEqual(800 + 700 * d - 1e-9);
+        expect(across).toBeLessThanOrEqual(1100 + 700 * d + 1e-9);
         // The turn at each ring and the change of height grow with the difficulty (the height may
         // change less where the 400 m floor, the 1,300 m ceiling or the hills hold it).
         const turn = Math.atan2(r.z - p.z, r.x - p.x);
