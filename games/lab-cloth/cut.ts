@@ -9,6 +9,8 @@
  * to the new one (`ScissorsStroke`): the cut is continuous in the cloth even while the cloth slides
  * under the pointer. A stroke drawn through the air from point to point would leave gaps where the
  * cloth moved between events, and the piece inside a closed stroke would stay joined across them.
+ * The pointer's path is taken in the cloth's frame (ScissorsStroke: a sway during a stroke does not
+ * shift the cut off the line being traced).
  */
 import { type Cloth, handleOf, type PhysicsWorld, query, removeJoint, slotOf } from '@bitphysics/physics';
 
@@ -132,18 +134,34 @@ export function anchorPosition(world: PhysicsWorld, cloth: Cloth, anchor: ClothA
 }
 
 /**
- * A stroke of the scissors: `moveTo` cuts from where the stroke's last point is now on the cloth (its
- * ClothAnchor, carried with the cloth; off the cloth, where it was) to the new point (see the header).
+ * A stroke of the scissors, cut in the cloth's own frame: `moveTo` cuts from where the stroke's last
+ * point is now on the cloth (its ClothAnchor, carried with the cloth; off the cloth, where it was) to
+ * the new pointer point moved on by as far as the cloth round the stroke's start has moved since the
+ * stroke began (`drift`: the mean move of the cloth's points within `frame` m of it then). A hand
+ * tracing a line drawn on the cloth as it lay when the stroke began so cuts that line even if the
+ * cloth sways meanwhile, as scissors held against the fabric move with it. The mean over a patch,
+ * not the move of the cut's own edge, leaves out the edges of the cut opening under the sheet's
+ * weight (they part both ways), which would otherwise add up stroke by stroke. `close` ends a stroke that came back near its start
+ * by cutting the last gap to it, so a traced outline comes away even if the hand stops just short.
  */
 export class ScissorsStroke {
-  /** The stroke's last point, m. */
+  /** The stroke's last point on the cloth's frame, m (the pointer plus `drift`). */
   readonly at: [number, number];
+  /** How far the cloth under the stroke has moved since the stroke began, m (x, y). */
+  readonly drift: [number, number] = [0, 0];
+  /** Length of the stroke so far, m. */
+  length = 0;
   private on: ClothAnchor | null;
+  private readonly start: ClothAnchor | null;
   private readonly from: [number, number] = [0, 0];
+  /** The points (slots) of the patch `drift` follows, and where they were when the stroke began, m (x, y interleaved). */
+  private readonly patch: number[] = [];
+  private readonly patchWas: number[] = [];
 
   /**
    * Starts a stroke at (x, y), m, on `cloth`; a point within `reach` m of the cloth but on no triangle
-   * of it (over a cut) holds on to the nearest point of the cloth.
+   * of it (over a cut) holds on to the nearest point of the cloth. The stroke follows the cloth's
+   * points within `frame` m of (x, y) (see the class; 0: none, the pointer as it is).
    */
   constructor(
     private readonly world: PhysicsWorld,
@@ -151,18 +169,59 @@ export class ScissorsStroke {
     x: number,
     y: number,
     private readonly reach: number,
+    frame = 0,
   ) {
     this.at = [x, y];
     this.on = clothAnchorAt(world, cloth, x, y, reach);
+    this.start = this.on;
+    const P = world.components.Position;
+    for (const h of cloth.points) {
+      const e = slotOf(h);
+      if (Math.hypot(P.x[e]! - x, P.y[e]! - y) > frame) continue;
+      this.patch.push(e);
+      this.patchWas.push(P.x[e]!, P.y[e]!);
+    }
   }
 
-  /** Moves the stroke on to (x, y), m, cutting the links it crosses. @returns the cut links' midpoints (as cutAlong). */
+  /**
+   * Moves the stroke on to the pointer at (x, y), m (cutting to it plus `drift`), cutting the links it
+   * crosses. @returns the cut links' midpoints (as cutAlong).
+   */
   moveTo(x: number, y: number): number[] {
     const f = this.on ? anchorPosition(this.world, this.cloth, this.on, this.from) : this.at;
-    const cut = cutAlong(this.world, f[0], f[1], x, y);
-    this.at[0] = x;
-    this.at[1] = y;
-    this.on = clothAnchorAt(this.world, this.cloth, x, y, this.reach);
+    const P = this.world.components.Position,
+      n = this.patch.length;
+    if (n > 0) {
+      let dx = 0,
+        dy = 0;
+      for (let k = 0; k < n; k++) {
+        const e = this.patch[k]!;
+        dx += P.x[e]! - this.patchWas[2 * k]!;
+        dy += P.y[e]! - this.patchWas[2 * k + 1]!;
+      }
+      this.drift[0] = dx / n;
+      this.drift[1] = dy / n;
+    }
+    const tx = x + this.drift[0],
+      ty = y + this.drift[1];
+    const cut = cutAlong(this.world, f[0], f[1], tx, ty);
+    this.length += Math.hypot(tx - f[0], ty - f[1]);
+    this.at[0] = tx;
+    this.at[1] = ty;
+    this.on = clothAnchorAt(this.world, this.cloth, tx, ty, this.reach);
     return cut;
+  }
+
+  /**
+   * Ends the stroke: if it ran at least `minLength` m and its last point is within `gap` m of where
+   * its first point is now on the cloth, cuts the straight gap between them (a traced outline closes).
+   * @returns the cut links' midpoints (as cutAlong; empty if it did not close).
+   */
+  close(gap: number, minLength: number): number[] {
+    if (!this.start || this.length < minLength) return [];
+    const f = this.on ? anchorPosition(this.world, this.cloth, this.on, this.from) : this.at;
+    const s = anchorPosition(this.world, this.cloth, this.start, [0, 0]);
+    if (Math.hypot(s[0] - f[0], s[1] - f[1]) > gap) return [];
+    return cutAlong(this.world, f[0], f[1], s[0], s[1]);
   }
 }
