@@ -8,7 +8,9 @@
  *
  * The challenge: cut out the three shapes printed on the sheet (pattern.ts) along their dashed lines.
  *
- * Input: drag with the scissors to cut every link the stroke crosses (cut.ts); drag with the hand to
+ * Input: drag with the scissors to cut every link the stroke crosses (cut.ts: in the cloth's frame, and
+ * a stroke that ends near its start closes); on the first sheet the breeze drops while the scissors
+ * are down, so the sheet hangs still. Drag with the hand to
  * take hold of the sheet and pull it (grab.ts: a soft grip, so it stretches before it tears). The tool
  * buttons under the scene switch (key C); a right-button drag always cuts. Hold Gust (key G) to blow.
  * Keys: P pause, N step, R new sheet. URL: ?size (8-48 points across), ?wind (0-10 m/s), ?gusts
@@ -50,9 +52,25 @@ const sheetStars = SHEETS.map(() => -1);
 /** How much the Gust button adds to the wind, m/s, and how fast it comes and goes (1/s). */
 const GUST = 5,
   GUST_RATE = 2.5;
+/**
+ * How fast the breeze drops while the scissors are down on the first sheet, and picks up again after
+ * (1/s): on a calm day the air stills while you cut, and the sheet's drag (time constant CLOTH_MASS /
+ * DRAG, 0.25 s) stops its swing; later sheets' breezes keep blowing.
+ */
+const CALM_RATE = 4;
+/** A stroke that ends within CLOSE_GAP cells of where it began, after CLOSE_LENGTH m, closes (ScissorsStroke.close). */
+const CLOSE_GAP = 2.5,
+  CLOSE_LENGTH = 1;
+/** The scissors follow the cloth within this many m of where a stroke begins (ScissorsStroke's frame): about a shape's size. */
+const STROKE_FRAME = 0.6;
 
 /** What the camera shows: the yard with a strip of each wall, the lawn (the shapes' card lies on it) and the sky over the line. */
 const view: WorldRect = { minX: YARD.minX - 0.25, minY: -0.65, maxX: YARD.maxX + 0.25, maxY: LINE_Y + 0.55 };
+/**
+ * On a screen taller than wide (a phone held upright) the width sets the scale: the camera shows the
+ * sheet and its posts, the walls left out, so the sheet is drawn as large as the screen allows.
+ */
+const narrowView: WorldRect = { ...view, minX: SHEET_X - 0.35, maxX: SHEET_X + SHEET_WIDTH + 0.35 };
 
 /** Floating words over the scene: a shape cut out, with its fit and stars. */
 interface Label {
@@ -77,6 +95,10 @@ let stepMs = 0;
 /** The gust the player blows, 0 to 1 (eased toward `blowing`). */
 let blow = 0,
   blowing = false;
+/** How far the breeze has dropped for the scissors, 0 (blowing) to 1 (still air; see CALM_RATE). */
+let calm = 0,
+  /** Whether the scissors are down (a stroke is under way). */
+  cutting = false;
 
 function createWorld(): PhysicsWorld {
   const scene = createClothScene(params);
@@ -87,6 +109,7 @@ function createWorld(): PhysicsWorld {
   torn = 0;
   cut = 0;
   blow = 0;
+  calm = 0;
   plot?.clear();
   for (const l of labels.splice(0)) l.text.destroy({ children: true });
   return scene.world;
@@ -96,11 +119,18 @@ let plot: ReturnType<typeof createPlot> | null = null;
 const wind = new Float64Array(3);
 const sound = getSound();
 
+/** Sets the world's wind: the breeze (dropped by `calm`) and the player's gust. */
+function blowNow(world: PhysicsWorld): void {
+  applyWind(world, { wind: params.wind * (1 - calm), gusts: params.gusts * (1 - calm) }, GUST * blow);
+}
+
 function labStep(world: PhysicsWorld): void {
   const target = blowing ? 1 : 0;
-  if (blow !== target) {
+  const calmTarget = cutting && sheetIndex === 0 ? 1 : 0;
+  if (blow !== target || calm !== calmTarget) {
     blow = target > blow ? Math.min(1, blow + GUST_RATE * world.dt) : Math.max(0, blow - GUST_RATE * world.dt);
-    applyWind(world, params, GUST * blow);
+    calm = calmTarget > calm ? Math.min(1, calm + CALM_RATE * world.dt) : Math.max(0, calm - CALM_RATE * world.dt);
+    blowNow(world);
   }
   const t0 = performance.now();
   physicsStep(world);
@@ -131,7 +161,7 @@ const game = await startPixiGame({
 });
 const { shell, renderer, app } = game;
 const dock = createLabDock();
-followView(app, renderer.camera, dock, () => view);
+followView(app, renderer.camera, dock, () => (app.screen.width < app.screen.height ? narrowView : view));
 
 const panel = createPanel(
   params,
@@ -144,7 +174,7 @@ const panel = createPanel(
       min: 0,
       max: 10,
       step: 0.1,
-      onChange: () => applyWind(shell.world, params, GUST * blow),
+      onChange: () => blowNow(shell.world),
     },
     {
       type: 'slider',
@@ -153,7 +183,7 @@ const panel = createPanel(
       min: 0,
       max: 5,
       step: 0.1,
-      onChange: () => applyWind(shell.world, params, GUST * blow),
+      onChange: () => blowNow(shell.world),
     },
     { type: 'slider', key: 'tear', label: 'tears at strain', min: 0.1, max: 2, step: 0.01, onRelease: true, onChange: () => shell.reset() },
     {
@@ -305,6 +335,19 @@ const pointerWorld = (e: PointerEvent): [number, number] => {
 /** The scissors' stroke while cutting (cut.ts) and its pointer; the recent points for the drawn slash (screen px, time s). */
 let stroke: { cut: ScissorsStroke; id: number } | null = null;
 const slash: { x: number; y: number; t: number }[] = [];
+/** Pushes the stroke's last point (on the cloth's frame, ScissorsStroke.at) to the slash. */
+function slashTo(s: ScissorsStroke): void {
+  const cam = renderer.camera;
+  slash.push({ x: cam.toScreenX(s.at[0]), y: cam.toScreenY(s.at[1]), t: performance.now() / 1000 });
+}
+/** Counts and scores links the scissors cut (their midpoints, as cutAlong returns them). */
+function snip(cutHere: number[]): void {
+  if (cutHere.length === 0) return;
+  cut += cutHere.length / 2;
+  snipped += cutHere.length / 2;
+  cells.loosen(shell.world);
+  announce(challenge.update());
+}
 /** Links cut since the last snip sound, and torn since the last rip sound. */
 let snipped = 0,
   ripped = 0,
@@ -321,7 +364,8 @@ canvas.addEventListener('pointerdown', (e) => {
   stroke = null;
   if (tool === 'cut' || e.button === 2) {
     // A point over a cut holds on to the cloth's nearest point within a link's length.
-    stroke = { cut: new ScissorsStroke(shell.world, cloth, x, y, SHEET_WIDTH / (params.size - 1)), id: e.pointerId };
+    stroke = { cut: new ScissorsStroke(shell.world, cloth, x, y, SHEET_WIDTH / (params.size - 1), STROKE_FRAME), id: e.pointerId };
+    cutting = true;
     slash.length = 0;
     slash.push({ x: at.x, y: at.y, t: performance.now() / 1000 });
   } else grab = ClothGrab.at(shell.world, cloth, x, y, gripFor(params.size));
@@ -330,26 +374,27 @@ canvas.addEventListener('pointerdown', (e) => {
 canvas.addEventListener('pointermove', (e) => {
   const [x, y] = pointerWorld(e);
   if (stroke && e.pointerId === stroke.id) {
-    const cutHere = stroke.cut.moveTo(x, y);
-    slash.push({ x: at.x, y: at.y, t: performance.now() / 1000 });
-    if (cutHere.length > 0) {
-      cut += cutHere.length / 2;
-      snipped += cutHere.length / 2;
-      cells.loosen(shell.world);
-      announce(challenge.update());
-    }
+    snip(stroke.cut.moveTo(x, y));
+    slashTo(stroke.cut);
   } else if (grab) grab.moveTo(x, y);
 });
 const release = (): void => {
+  if (stroke) {
+    const spacing = SHEET_WIDTH / (params.size - 1);
+    snip(stroke.cut.close(CLOSE_GAP * spacing, CLOSE_LENGTH));
+    slashTo(stroke.cut);
+  }
   grab?.release();
   grab = null;
   stroke = null;
+  cutting = false;
 };
 canvas.addEventListener('pointerup', release);
 canvas.addEventListener('pointercancel', release);
 shell.onWorldChange(() => {
   grab = null;
   stroke = null;
+  cutting = false;
 });
 
 /**
