@@ -133,15 +133,22 @@ export function anchorPosition(world: PhysicsWorld, cloth: Cloth, anchor: ClothA
   return out;
 }
 
+/** The median of `v` (sorts it in place). */
+function median(v: Float64Array): number {
+  v.sort();
+  const m = v.length >> 1;
+  return v.length % 2 ? v[m]! : (v[m - 1]! + v[m]!) / 2;
+}
+
 /**
  * A stroke of the scissors, cut in the cloth's own frame: `moveTo` cuts from where the stroke's last
  * point is now on the cloth (its ClothAnchor, carried with the cloth; off the cloth, where it was) to
  * the new pointer point moved on by as far as the cloth round the stroke's start has moved since the
- * stroke began (`drift`: the mean move of the cloth's points within `frame` m of it then). A hand
- * tracing a line drawn on the cloth as it lay when the stroke began so cuts that line even if the
- * cloth sways meanwhile, as scissors held against the fabric move with it. The mean over a patch,
- * not the move of the cut's own edge, leaves out the edges of the cut opening under the sheet's
- * weight (they part both ways), which would otherwise add up stroke by stroke. `close` ends a stroke that came back near its start
+ * stroke began (`drift`: the median move, in x and in y, of the cloth's points within `frame` m of it
+ * then). A hand tracing a line drawn on the cloth as it lay when the stroke began so cuts that line
+ * even if the cloth sways meanwhile, as scissors held against the fabric move with it. The median
+ * over a patch, not the move of the cut's own edge, leaves out the edges of the cut opening under the
+ * sheet's weight and a flap of the shape sagging as the cut goes round it (a minority of the patch). `close` ends a stroke that came back near its start
  * by cutting the last gap to it, so a traced outline comes away even if the hand stops just short.
  */
 export class ScissorsStroke {
@@ -157,6 +164,8 @@ export class ScissorsStroke {
   /** The points (slots) of the patch `drift` follows, and where they were when the stroke began, m (x, y interleaved). */
   private readonly patch: number[] = [];
   private readonly patchWas: number[] = [];
+  /** Scratch: the patch points' moves, m (x and y). */
+  private readonly moves: [Float64Array, Float64Array];
 
   /**
    * Starts a stroke at (x, y), m, on `cloth`; a point within `reach` m of the cloth but on no triangle
@@ -181,6 +190,7 @@ export class ScissorsStroke {
       this.patch.push(e);
       this.patchWas.push(P.x[e]!, P.y[e]!);
     }
+    this.moves = [new Float64Array(this.patch.length), new Float64Array(this.patch.length)];
   }
 
   /**
@@ -192,15 +202,15 @@ export class ScissorsStroke {
     const P = this.world.components.Position,
       n = this.patch.length;
     if (n > 0) {
-      let dx = 0,
-        dy = 0;
+      const dx = this.moves[0],
+        dy = this.moves[1];
       for (let k = 0; k < n; k++) {
         const e = this.patch[k]!;
-        dx += P.x[e]! - this.patchWas[2 * k]!;
-        dy += P.y[e]! - this.patchWas[2 * k + 1]!;
+        dx[k] = P.x[e]! - this.patchWas[2 * k]!;
+        dy[k] = P.y[e]! - this.patchWas[2 * k + 1]!;
       }
-      this.drift[0] = dx / n;
-      this.drift[1] = dy / n;
+      this.drift[0] = median(dx);
+      this.drift[1] = median(dy);
     }
     const tx = x + this.drift[0],
       ty = y + this.drift[1];

@@ -61,8 +61,8 @@ const CALM_RATE = 4;
 /** A stroke that ends within CLOSE_GAP cells of where it began, after CLOSE_LENGTH m, closes (ScissorsStroke.close). */
 const CLOSE_GAP = 2.5,
   CLOSE_LENGTH = 1;
-/** The scissors follow the cloth within this many m of where a stroke begins (ScissorsStroke's frame): about a shape's size. */
-const STROKE_FRAME = 0.6;
+/** The scissors follow the cloth within this many m of where a stroke begins (ScissorsStroke's frame): about twice a shape's size. */
+const STROKE_FRAME = 0.9;
 
 /** What the camera shows: the yard with a strip of each wall, the lawn (the shapes' card lies on it) and the sky over the line. */
 const view: WorldRect = { minX: YARD.minX - 0.25, minY: -0.65, maxX: YARD.maxX + 0.25, maxY: LINE_Y + 0.55 };
@@ -70,7 +70,7 @@ const view: WorldRect = { minX: YARD.minX - 0.25, minY: -0.65, maxX: YARD.maxX +
  * On a screen taller than wide (a phone held upright) the width sets the scale: the camera shows the
  * sheet and its posts, the walls left out, so the sheet is drawn as large as the screen allows.
  */
-const narrowView: WorldRect = { ...view, minX: SHEET_X - 0.35, maxX: SHEET_X + SHEET_WIDTH + 0.35 };
+const narrowView: WorldRect = { ...view, minX: SHEET_X - 0.2, maxX: SHEET_X + SHEET_WIDTH + 0.2 };
 
 /** Floating words over the scene: a shape cut out, with its fit and stars. */
 interface Label {

@@ -166,7 +166,7 @@ describe('lab-cloth', () => {
         const a = -Math.PI / 2 + ((2 * Math.PI - short) * k) / moves;
         path.push(onSheet(0.72 + r * Math.cos(a), 1.55 + r * Math.sin(a)));
       }
-      const stroke = new ScissorsStroke(world, cloth, ...path[0]!, spacing, 0.6);
+      const stroke = new ScissorsStroke(world, cloth, ...path[0]!, spacing, 0.9);
       const centre = onSheet(0.72, 1.55);
       let swing = 0;
       for (let k = 1; k <= moves; k++) {
