@@ -12,34 +12,9 @@
  * The pointer's path is taken in the cloth's frame (ScissorsStroke: a sway during a stroke does not
  * shift the cut off the line being traced).
  */
-import { type Cloth, handleOf, type PhysicsWorld, query, removeJoint, slotOf } from '@bitphysics/physics';
 
-/**
- * Whether segment a (a0 -> a1) and segment b (b0 -> b1) cross (m): both parameters of the crossing
- * point in [0, 1]. Parallel segments never cross.
- */
-export function segmentsCross(
-  a0x: number,
-  a0y: number,
-  a1x: number,
-  a1y: number,
-  b0x: number,
-  b0y: number,
-  b1x: number,
-  b1y: number,
-): boolean {
-  const rx = a1x - a0x,
-    ry = a1y - a0y,
-    sx = b1x - b0x,
-    sy = b1y - b0y;
-  const d = rx * sy - ry * sx;
-  if (d === 0) return false;
-  const qx = b0x - a0x,
-    qy = b0y - a0y;
-  const t = (qx * sy - qy * sx) / d,
-    u = (qx * ry - qy * rx) / d;
-  return t >= 0 && t <= 1 && u >= 0 && u <= 1;
-}
+import { segmentsCross } from '@bitphysics/game-kit';
+import { type Cloth, handleOf, type PhysicsWorld, query, removeJoint, slotOf } from '@bitphysics/physics';
 
 /**
  * Cuts the world's cloth links that the stroke from (x0, y0) to (x1, y1), m, crosses at their current

@@ -3,6 +3,8 @@
  * to it within reach. A link is drawn (and tested) as the straight segment between the points it joins:
  * the anchor or a rope body, and the next rope body or the ball.
  */
+
+import { segmentsCross } from '@bitphysics/game-kit';
 import { isAlive, type PhysicsWorld, removeJoint, slotOf } from '@bitphysics/physics';
 import type { RopePiece } from './scene';
 
@@ -25,30 +27,6 @@ function ends(world: PhysicsWorld, rope: RopePiece, k: number, ball: number, out
   at(k, 0);
   at(k + 1, 2);
   return out;
-}
-
-/** Whether segments (p0, p1) and (q0, q1) cross (both parameters in [0, 1]); parallel ones never do. */
-export function segmentsCross(
-  p0x: number,
-  p0y: number,
-  p1x: number,
-  p1y: number,
-  q0x: number,
-  q0y: number,
-  q1x: number,
-  q1y: number,
-): boolean {
-  const rx = p1x - p0x,
-    ry = p1y - p0y,
-    sx = q1x - q0x,
-    sy = q1y - q0y;
-  const d = rx * sy - ry * sx;
-  if (d === 0) return false;
-  const qx = q0x - p0x,
-    qy = q0y - p0y;
-  const t = (qx * sy - qy * sx) / d,
-    u = (qx * ry - qy * rx) / d;
-  return t >= 0 && t <= 1 && u >= 0 && u <= 1;
 }
 
 /** Distance from point (px, py) to segment (a, b), m. */

@@ -5,10 +5,12 @@
  * breeze; the breeze visibly sways the sheet and a gust leans it; the drawing's cells lose the two
  * triangles beside a torn link.
  */
+
+import { segmentsCross } from '@bitphysics/game-kit';
 import { type Cloth, ClothLinkKind, isAlive, type PhysicsWorld, query, removeJoint, slotOf, step } from '@bitphysics/physics';
 import { describe, expect, it } from 'vitest';
 import { ClothCells } from '../../games/lab-cloth/cells';
-import { cutAlong, ScissorsStroke, segmentsCross } from '../../games/lab-cloth/cut';
+import { cutAlong, ScissorsStroke } from '../../games/lab-cloth/cut';
 import { ClothGrab, GRAB } from '../../games/lab-cloth/grab';
 import { Challenge, insidePolygon, SHAPES, shapeCells } from '../../games/lab-cloth/pattern';
 import { applyWind, createClothScene, DEFAULTS, SHEET_WIDTH, SHEETS, sheetGrid, YARD } from '../../games/lab-cloth/scene';
