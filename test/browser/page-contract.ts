@@ -175,6 +175,31 @@ export function describePages(shard: number, shards: number): void {
         expect(g.errors).toEqual([]);
         await g.close();
       });
+
+      it('a game page on a desktop keeps its settings in a drawer: the scene takes the width, the toolbar button opens and closes them', async () => {
+        const g = await h.openGame('submarine', { viewport: { width: 1280, height: 800 } });
+        const side = g.page.locator('.bp-side');
+        const button = g.page.getByRole('button', { name: 'parameters and charts' });
+        // Closed at start: nothing right of the scene, which runs from the 220 px info column to the edge.
+        expect(await side.isVisible()).toBe(false);
+        const stage = await g.page.locator('.bp-stage').boundingBox();
+        expect(stage!.x).toBeCloseTo(220, 0);
+        expect(stage!.x + stage!.width).toBeCloseTo(1280, 0);
+        await button.click();
+        expect(await side.isVisible()).toBe(true);
+        expect(await g.page.locator('.bp-side .lil-gui.lil-root').first().isVisible()).toBe(true);
+        expect(await button.getAttribute('aria-pressed')).toBe('true');
+        await button.click();
+        expect(await side.isVisible()).toBe(false);
+        // A lab keeps its side column open beside the scene.
+        const lab = await h.openGame('lab-pendulum', { viewport: { width: 1280, height: 800 } });
+        expect(await lab.page.locator('.bp-side').isVisible()).toBe(true);
+        expect(await lab.page.getByRole('button', { name: 'parameters and charts' }).isVisible()).toBe(false);
+        expect(g.errors).toEqual([]);
+        expect(lab.errors).toEqual([]);
+        await lab.close();
+        await g.close();
+      });
     }
 
     let k = -1;

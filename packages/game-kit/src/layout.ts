@@ -13,6 +13,11 @@
  * start, so nothing covers the scene until asked). The canvas fills the stage; the world renderer
  * fits its view into it (letterboxed, aspect kept, never cropped).
  *
+ * A game's page may ask for the game arrangement with `<body data-layout="game">`: on wide windows the
+ * side column is then a drawer too (the toolbar's settings button opens it over the scene's right
+ * edge, closed at start), so the scene takes the width a lab gives its panel and charts; small windows
+ * are arranged as for every page.
+ *
  * On touch devices the help shows each control's touch gesture instead of its key, and keyboard-only
  * controls are left out (the toolbar has pause, step and reset buttons; games add on-screen pads to
  * the controls row).
@@ -48,6 +53,8 @@ export interface PageLayout {
   readonly controls: HTMLElement;
   /** The right column: parameter panel, charts, docks; hidden while empty. */
   readonly side: HTMLElement;
+  /** Whether the page asked for the game arrangement (`<body data-layout="game">`): its side column is a drawer on wide windows too. */
+  readonly game: boolean;
   /** Whether the compact (small-screen) arrangement is in effect now. */
   compact(): boolean;
   /** Whether the device's main pointer is a finger (CSS `pointer: coarse`). */
@@ -64,7 +71,10 @@ export interface PageLayout {
    * 34% of the window (at least 240) there and at the window's width on small screens.
    */
   sideWidth(preferred: number): number;
-  /** Opens drawer `which` on small screens (closes the other); `null` closes both. No effect on wide windows. */
+  /**
+   * Opens drawer `which` on small screens (closes the other); `null` closes both. On wide windows only
+   * the game arrangement's side drawer opens (see `game`); other calls have no effect there.
+   */
   open(which: 'info' | 'side' | null): void;
 }
 
@@ -134,6 +144,13 @@ html, body { margin: 0; height: 100%; overflow: hidden; }
   .bp-app[data-open="info"] .bp-info { display: flex; }
   .bp-app[data-open="side"] .bp-side:not(:empty) { display: flex; }
 }
+@media (min-width: ${COMPACT_MAX_WIDTH}px) and (min-height: ${COMPACT_MAX_HEIGHT}px) {
+  .bp-app.bp-game { grid-template-columns: ${INFO_WIDTH}px minmax(0, 1fr); grid-template-areas: "info status" "info stage" "info controls"; }
+  .bp-app.bp-game .bp-toolbar .bp-side-button { display: inline-flex; }
+  .bp-app.bp-game .bp-side { position: fixed; z-index: 30; top: 8px; right: 8px; max-height: calc(100% - 16px);
+    display: none; background: rgba(16, 20, 28, 0.96); border-radius: 8px; box-shadow: 0 6px 18px rgba(0, 0, 0, 0.5); }
+  .bp-app.bp-game[data-open="side"] .bp-side:not(:empty) { display: flex; }
+}
 `;
 
 let layout: PageLayout | null = null;
@@ -162,6 +179,8 @@ export function pageLayout(): PageLayout {
     return e;
   };
   const root = el('div', 'bp-app');
+  const game = document.body.dataset.layout === 'game';
+  if (game) root.classList.add('bp-game');
   const toolbar = el('header', 'bp-toolbar');
   const title = el('h1', 'bp-title');
   const buttons = el('div', 'bp-buttons');
@@ -206,7 +225,7 @@ export function pageLayout(): PageLayout {
   infoButton.classList.add('bp-drawer-button');
   drawerButtons.info = infoButton;
   const sideButton = addButton('settings', 'parameters and charts', () => open('side'));
-  sideButton.classList.add('bp-drawer-button');
+  sideButton.classList.add('bp-drawer-button', 'bp-side-button');
   drawerButtons.side = sideButton;
   const syncSideButton = (): void => {
     sideButton.style.display = side.childElementCount === 0 ? 'none' : '';
@@ -225,9 +244,10 @@ export function pageLayout(): PageLayout {
   new MutationObserver((records) => {
     for (const r of records) r.addedNodes.forEach(adopt);
   }).observe(document.body, { childList: true });
-  // Growing into the wide arrangement closes the drawers.
+  // Growing into the wide arrangement closes the drawers (but for the game arrangement's side drawer,
+  // which the wide arrangement has too).
   query.addEventListener('change', () => {
-    if (!query.matches) open(null);
+    if (!query.matches && !(game && root.dataset.open === 'side')) open(null);
   });
 
   layout = {
@@ -240,6 +260,7 @@ export function pageLayout(): PageLayout {
     stage,
     controls,
     side,
+    game,
     compact: () => query.matches,
     touch: () => coarse.matches,
     setTitle(text) {
