@@ -206,6 +206,16 @@ describe('phone controls', () => {
 
   it('flight simulator: the stick banks and climbs and leaves the throttle alone; Faster opens it', async () => {
     const g = await h.openGame('flight-simulator', PHONE);
+    type Marker = { pathMarker(): { visible: boolean; inside: boolean }; scenery(): { trees: number; houses: number } };
+    // The path marker starts inside ring 1 (on course); the ground has its trees and houses.
+    const marker0 = await g.waitFor(() => {
+      const m = (window.game as unknown as Marker).pathMarker();
+      return m.visible ? m : null;
+    }, null);
+    expect(marker0.inside).toBe(true);
+    const ground = await g.page.evaluate(() => (window.game as unknown as Marker).scenery());
+    expect(ground.trees).toBeGreaterThan(300);
+    expect(ground.houses).toBeGreaterThan(20);
     const stick = (await g.page.getByRole('slider', { name: 'stick: bank and climb' }).boundingBox())!;
     const t0 = await read(g, 'state.throttle');
     const cx = stick.x + stick.width / 2,
@@ -225,6 +235,12 @@ describe('phone controls', () => {
       null,
       60_000,
     );
+    // Off the straight course: the path marker (where the path meets ring 1's plane) has left the ring.
+    const marker1 = await g.waitFor(() => {
+      const m = (window.game as unknown as Marker).pathMarker();
+      return !m.inside ? m : null;
+    }, null);
+    expect(marker1.inside).toBe(false);
     await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
     await cdp.detach();
     expect(flown.roll).toBeGreaterThan(10);
