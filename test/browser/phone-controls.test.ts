@@ -393,8 +393,14 @@ describe('phone controls', () => {
     const g = await h.openGame('solar-system', { ...PHONE, query: { rate: 0 } });
     type Solar = { mission(): { phase: string; aim: { speed: number }; flight: { elapsed: number } | null } };
     const speed = await read(g, 'mission().aim.speed');
-    await g.page.getByRole('button', { name: 'faster launch (↑)', exact: true }).tap();
-    await g.waitFor((s) => (window.game as unknown as Solar).mission().aim.speed > s, speed);
+    // Mission 1 starts too slow, and the line names the button that fixes it; 8 taps of + arrive.
+    await g.waitFor(() => /more speed \(tap \+\)$/.test(document.querySelector('[data-hud="plan"]')!.textContent ?? ''), null);
+    for (let i = 0; i < 8; i++) await g.page.getByRole('button', { name: 'faster launch (↑)', exact: true }).tap();
+    await g.waitFor((s) => (window.game as unknown as Solar).mission().aim.speed > s + 0.75, speed);
+    await g.waitFor(
+      () => /✓ reaches Mars in \d+ days .*\(tap Launch\)$/.test(document.querySelector('[data-hud="plan"]')!.textContent ?? ''),
+      null,
+    );
     await g.page.getByRole('button', { name: 'launch the probe (Space)', exact: true }).tap();
     await g.waitFor(() => {
       const m = (window.game as unknown as Solar).mission();

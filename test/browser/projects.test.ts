@@ -37,15 +37,24 @@ describe('projects', () => {
     type Solar = { mission(): Mission; params: { rate: number } };
     const m0 = await g.page.evaluate(() => (window.game as unknown as Solar).mission());
     expect([m0.number, m0.target, m0.phase]).toEqual([1, 'Mars', 'aim']);
-    // The first mission starts on a course that arrives, and the goal is stated above the scene.
-    expect(m0.plan.hit).toBe(true);
+    // The first mission is a lesson: the arrow points the right way but the launch is too slow, and
+    // the line says which key speeds it up; the goal is stated above the scene.
+    expect(m0.plan.hit).toBe(false);
     expect(await g.page.locator('[data-hud="goal"]').textContent()).toBe('Mission 1 of 7: fly a probe to Mars');
-    expect(await g.page.locator('[data-hud="plan"]').textContent()).toMatch(/✓ reaches Mars in \d+ days/);
-    for (let i = 0; i < 3; i++) await g.press('ArrowUp');
-    await g.press('ArrowRight');
+    expect(await g.page.locator('[data-hud="plan"]').textContent()).toMatch(/too slow to reach Mars’s orbit: more speed \(press ↑\)$/);
+    // Up, pressed 8 times (the lesson's 0.8 km/s; time is stopped): the plan arrives and says to launch.
+    for (let i = 0; i < 8; i++) await g.press('ArrowUp');
+    await g.waitFor(
+      () => /✓ reaches Mars in \d+ days .*\(Space\)$/.test(document.querySelector('[data-hud="plan"]')!.textContent ?? ''),
+      null,
+    );
+    expect(await g.page.evaluate(() => (window.game as unknown as Solar).mission().plan.hit)).toBe(true);
     const m1 = await g.page.evaluate(() => (window.game as unknown as Solar).mission());
-    expect(m1.aim.speed).toBeCloseTo(m0.aim.speed + 0.3, 9);
-    expect(m1.aim.angle).toBeCloseTo(m0.aim.angle + 2, 9);
+    expect(m1.aim.speed).toBeCloseTo(m0.aim.speed + 0.8, 9);
+    await g.press('ArrowRight');
+    const m2 = await g.page.evaluate(() => (window.game as unknown as Solar).mission());
+    expect(m2.aim.angle).toBeCloseTo(m0.aim.angle + 2, 9);
+    await g.press('ArrowLeft');
     const before = await g.page.evaluate(() => (window.game as unknown as Solar).params.rate);
     await g.press(']');
     expect(await g.page.evaluate(() => (window.game as unknown as Solar).params.rate)).toBeGreaterThan(before);
