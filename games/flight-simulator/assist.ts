@@ -178,3 +178,36 @@ export function assist(s: FlightState, input: PilotInput, state: AssistState, dt
   const rudder = clamp(input.yaw + A.sideslipGain * s.sideslip, -1, 1);
   return { aileron, elevator, rudder };
 }
+
+/** How the keyboard's climb / dive and bank keys move their input (`rampKey`). */
+export const KEY_RAMP = Object.freeze({
+  /** Rate a held key moves its input towards full, 1/s: full stick after 1.25 s of holding. */
+  rise: 0.8,
+  /** Rate a released key's input returns to 0, and a reversed one crosses 0, 1/s: neutral in 0.2 s. */
+  fall: 5,
+});
+
+/**
+ * One step of a keyboard axis: `value` (the input now, in [-1, 1]) moved over `dt` s (>= 0)
+ * towards `direction` (-1, 0 or 1: the key held, or none) at `KEY_RAMP.rise` per second, back
+ * towards 0 at `KEY_RAMP.fall` (released, or held the other way while still on the first side).
+ * A key is not a stick: it is all or nothing, so a tap ramped this way asks for a small correction
+ * (a 0.2 s tap: 0.16 of full stick) and only a held key asks for the full climb or bank.
+ * @returns the new input, in [-1, 1].
+ * @throws RangeError on a value outside [-1, 1], a direction not in {-1, 0, 1} or a negative dt.
+ */
+export function rampKey(value: number, direction: number, dt: number): number {
+  if (!(value >= -1 && value <= 1)) throw new RangeError(`rampKey: value must be in [-1, 1], got ${value}`);
+  if (direction !== -1 && direction !== 0 && direction !== 1)
+    throw new RangeError(`rampKey: direction must be -1, 0 or 1, got ${direction}`);
+  if (!(dt >= 0)) throw new RangeError(`rampKey: dt must be >= 0 s, got ${dt}`);
+  // Back towards 0 first when released or reversed; then on towards the key held.
+  if (value !== 0 && Math.sign(value) !== direction) {
+    const back = Math.max(0, Math.abs(value) - KEY_RAMP.fall * dt);
+    if (back > 0 || direction === 0) return Math.sign(value) * back;
+    // Crossed 0 within the step: the rest of the step ramps the other way.
+    dt -= Math.abs(value) / KEY_RAMP.fall;
+    value = 0;
+  }
+  return clamp(value + direction * KEY_RAMP.rise * dt, -1, 1);
+}

@@ -125,3 +125,34 @@ export function courseStars(passed: number, total: number): number {
   const f = passed / total;
   return f >= 1 ? 3 : f >= 0.7 ? 2 : f >= 0.4 ? 1 : 0;
 }
+
+/**
+ * Where a straight line from `position` (m, world) along `velocity` (m/s, world) meets `ring`'s
+ * plane: the time to get there (s) and the distance of that point from the ring's centre (m). A
+ * line that runs parallel to the plane or away from it (the plane behind) never meets it:
+ * { time: Infinity, offset: Infinity }. The flight-path marker is drawn there: with the offset
+ * under RING_RADIUS the aircraft, holding its path, flies through.
+ * @throws RangeError on a position or velocity that is not 3 finite numbers.
+ */
+export function pathThroughRing(
+  ring: Ring,
+  position: readonly number[],
+  velocity: readonly number[],
+): { time: number; offset: number; point: [number, number, number] } {
+  for (const [name, v] of [
+    ['position', position],
+    ['velocity', velocity],
+  ] as const)
+    if (v.length < 3 || !v.slice(0, 3).every(Number.isFinite))
+      throw new RangeError(`pathThroughRing: ${name} must be 3 finite numbers, got ${v.join(', ')}`);
+  const gap = (ring.x - position[0]!) * ring.nx + (ring.y - position[1]!) * ring.ny + (ring.z - position[2]!) * ring.nz;
+  const closing = velocity[0]! * ring.nx + velocity[1]! * ring.ny + velocity[2]! * ring.nz;
+  const time = gap / closing;
+  if (!(closing !== 0 && time > 0)) return { time: Infinity, offset: Infinity, point: [Infinity, Infinity, Infinity] };
+  const point: [number, number, number] = [
+    position[0]! + velocity[0]! * time,
+    position[1]! + velocity[1]! * time,
+    position[2]! + velocity[2]! * time,
+  ];
+  return { time, offset: Math.hypot(point[0] - ring.x, point[1] - ring.y, point[2] - ring.z), point };
+}

@@ -6,7 +6,11 @@
  * Euler's equations. The flight assist (./assist.ts, on by default) turns the stick into a bank and
  * a climb or dive and leaves the throttle to the pilot; without it the stick moves the surfaces directly.
  * Fly through every ring (./course.ts) as fast as you can; do not hit the ground.
- * Keys: arrows or W/S/A/D: climb / dive and bank (with "pilot's pitch" in the panel, down pulls up);
+ * Guidance: thick bright rings, a chain of beads through the next two, a label (or an edge arrow) for
+ * the next one, and a flight-path marker where the aircraft's straight path meets the next ring's
+ * plane (green when it is inside the ring).
+ * Keys: arrows or W/S/A/D: climb / dive and bank (with "pilot's pitch" in the panel, down pulls up),
+ * ramped (./assist.ts rampKey: a tap is a small correction, full stick after 1.25 s held);
  * Q / E: rudder; Shift / Ctrl (or + / -): faster / slower (the throttle: the only input that moves it);
  * C: camera (chase / cockpit); P pause, N step, R reset.
  * Touch: a stick under the scene (up climbs, sideways banks), buttons for speed, rudder and camera.
@@ -33,17 +37,20 @@ import {
   DoubleSide,
   HemisphereLight,
   IcosahedronGeometry,
+  InstancedMesh,
+  Matrix4,
   Mesh,
   MeshBasicMaterial,
   MeshStandardMaterial,
+  OctahedronGeometry,
   Quaternion,
   TorusGeometry,
   Vector3,
 } from 'three';
 import { aircraftGeometry } from './aircraft-model';
-import { assist, createAssistState, type FlightState, flightState } from './assist';
+import { assist, createAssistState, type FlightState, flightState, rampKey } from './assist';
 import { createAttitudeIndicator } from './attitude-indicator';
-import { courseStars, crossRing, layCourse, nextRing, RING_RADIUS, type Ring } from './course';
+import { courseStars, crossRing, layCourse, nextRing, pathThroughRing, RING_RADIUS, type Ring } from './course';
 import { createScenery, HORIZON_COLOUR, SUN_DIRECTION } from './scenery';
 
 const params = {
@@ -105,6 +112,7 @@ function createWorld(): PhysicsWorld {
     warning: '',
   });
   Object.assign(assistState, createAssistState());
+  keyInput.pitch = keyInput.roll = 0;
   rings = layCourse({ terrain: handles.terrain, seed: params.seed + 7, count: params.rings, start: [0, START_ALTITUDE, 0] });
   events.length = 0;
   return world;
@@ -129,15 +137,26 @@ function approach(value: number, target: number, rate: number, dt: number): numb
 
 const clamp1 = (x: number): number => Math.max(-1, Math.min(1, x));
 
-/** The pilot's inputs now, keys and stick added: roll + right, pitch + nose up, yaw + nose right. */
-function pilotInput(): { roll: number; pitch: number; yaw: number } {
+/** The keyboard's climb / dive and bank inputs, ramped while a key is held (./assist.ts `rampKey`), in [-1, 1]. */
+const keyInput = { pitch: 0, roll: 0 };
+
+/** Moves the keyboard's ramped inputs over a step of `dt` s towards the keys held now. */
+function rampKeys(dt: number): void {
   const up = held.has('arrowup') || held.has('w') ? 1 : 0,
-    down = held.has('arrowdown') || held.has('s') ? 1 : 0;
+    down = held.has('arrowdown') || held.has('s') ? 1 : 0,
+    right = held.has('arrowright') || held.has('d') ? 1 : 0,
+    left = held.has('arrowleft') || held.has('a') ? 1 : 0;
+  keyInput.pitch = rampKey(keyInput.pitch, up - down, dt);
+  keyInput.roll = rampKey(keyInput.roll, right - left, dt);
+}
+
+/** The pilot's inputs now, keys (ramped) and stick added: roll + right, pitch + nose up, yaw + nose right. */
+function pilotInput(): { roll: number; pitch: number; yaw: number } {
   // Up climbs, as most players expect; with the pilot's pitch, down (stick back) pulls up.
   const sign = params.pilotPitch ? -1 : 1;
   return {
-    roll: clamp1((held.has('arrowright') || held.has('d') ? 1 : 0) - (held.has('arrowleft') || held.has('a') ? 1 : 0) + stickInput.x),
-    pitch: clamp1(sign * (up - down + stickInput.y)),
+    roll: clamp1(keyInput.roll + stickInput.x),
+    pitch: clamp1(sign * (keyInput.pitch + stickInput.y)),
     yaw: (held.has('e') ? 1 : 0) - (held.has('q') ? 1 : 0),
   };
 }
@@ -156,6 +175,7 @@ function stepWorld(world: PhysicsWorld): void {
   if (state.phase === 'crashed') return;
   const dt = world.dt,
     e = handles.body;
+  rampKeys(dt);
   const input = pilotInput();
   const s = flightState(world, e);
   const faster = held.has('shift') || held.has('+') || held.has('='),
@@ -336,12 +356,13 @@ shell.onWorldChange(() => {
 
 // ---- Rings ----------------------------------------------------------------------------------------
 
-const ringGeometry = new TorusGeometry(RING_RADIUS, 3, 10, 48);
-const haloGeometry = new TorusGeometry(RING_RADIUS + 9, 1.2, 6, 48);
+// Thick tubes (6 m) in flat bright colours, so a ring still reads as a ring 2 km off on a phone.
+const ringGeometry = new TorusGeometry(RING_RADIUS, 6, 10, 48);
+const haloGeometry = new TorusGeometry(RING_RADIUS + 12, 2.5, 6, 48);
 const materials = {
-  next: new MeshBasicMaterial({ color: 0xffc21f }),
-  halo: new MeshBasicMaterial({ color: 0xfff0a0, transparent: true, opacity: 0.6, side: DoubleSide }),
-  ahead: new MeshBasicMaterial({ color: 0xff9a1f, transparent: true, opacity: 0.55 }),
+  next: new MeshBasicMaterial({ color: 0xffd21f, fog: false }),
+  halo: new MeshBasicMaterial({ color: 0xfff6b0, transparent: true, opacity: 0.6, side: DoubleSide, fog: false }),
+  ahead: new MeshBasicMaterial({ color: 0xff8a1f, transparent: true, opacity: 0.8 }),
   passed: new MeshBasicMaterial({ color: 0x50e070, transparent: true, opacity: 0.35 }),
   missed: new MeshBasicMaterial({ color: 0xff5a4a, transparent: true, opacity: 0.3 }),
 };
@@ -362,6 +383,44 @@ function placeRings(): void {
   });
 }
 placeRings();
+
+/**
+ * The guide: a chain of bright beads from just ahead of the aircraft to the next ring and on to the
+ * one after, so the way through the course shows in the scene itself (a ring far off or behind a
+ * hill still has its chain). One instanced mesh; a bead every GUIDE_SPACING m, at most GUIDE_BEADS.
+ */
+const GUIDE_SPACING = 70,
+  GUIDE_BEADS = 80;
+const guide = new InstancedMesh(new OctahedronGeometry(2.6, 0), new MeshBasicMaterial({ color: 0xffe35a }), GUIDE_BEADS);
+guide.frustumCulled = false;
+app.scene.add(guide);
+const beadMatrix = new Matrix4(),
+  beadAt = new Vector3(),
+  beadTo = new Vector3(),
+  beadStep = new Vector3();
+
+/** Lays the guide's beads from `from` (the aircraft, m) through the next ring to the one after it. */
+function drawGuide(from: Vector3): void {
+  const i = nextRing(rings);
+  guide.visible = i >= 0 && state.phase === 'flying';
+  if (!guide.visible) return;
+  let n = 0;
+  // From 60 m ahead of the aircraft (clear of the model) to the next ring, then from it to the one after.
+  beadAt.copy(from);
+  for (const ring of [rings[i]!, rings[i + 1]]) {
+    if (!ring) break;
+    beadTo.set(ring.x, ring.y, ring.z);
+    const length = beadAt.distanceTo(beadTo);
+    beadStep.subVectors(beadTo, beadAt).normalize();
+    for (let d = n === 0 ? 60 : GUIDE_SPACING; d < length - RING_RADIUS && n < GUIDE_BEADS; d += GUIDE_SPACING) {
+      beadMatrix.makeTranslation(beadAt.x + beadStep.x * d, beadAt.y + beadStep.y * d, beadAt.z + beadStep.z * d);
+      guide.setMatrixAt(n++, beadMatrix);
+    }
+    beadAt.copy(beadTo);
+  }
+  guide.count = n;
+  guide.instanceMatrix.needsUpdate = true;
+}
 
 /** Colours the rings by their status, the next one brightest with a pulsing halo. */
 function paintRings(t: number): void {
@@ -616,6 +675,43 @@ function pointToNextRing(): void {
   ringAim.box = [x - hw + 4, y - hh + 4, 2 * hw - 8, 2 * hh - 8];
 }
 
+// ---- The flight-path marker: where the aircraft is going, at the next ring's distance ------------
+
+/**
+ * A small circle with wings drawn where the aircraft's straight path meets the next ring's plane:
+ * put it inside the ring and, holding the path, the aircraft flies through. Green when it is inside
+ * the ring, white when not; hidden when the ring's plane is behind the path.
+ */
+const marker = overlay('width: 34px; height: 20px; display: none;');
+marker.dataset.hud = 'path-marker';
+marker.innerHTML =
+  '<svg viewBox="-17 -10 34 20" width="34" height="20" style="overflow: visible"><g fill="none" stroke="currentColor" stroke-width="2.5" stroke-linecap="round"><circle r="5.5"/><path d="M-15 0H-6M6 0H15M0 -6V-10"/></g></svg>';
+/** What the marker shows (tests): visible, inside the next ring, its offset from the ring's centre (m), its place (px). */
+const pathAim = { visible: false, inside: false, offset: Infinity, x: 0, y: 0 };
+const markAt = new Vector3();
+function markPath(): void {
+  const i = nextRing(rings);
+  const world = shell.world,
+    e = handles.body,
+    V = world.components.Velocity;
+  const through = i >= 0 && state.phase === 'flying' ? pathThroughRing(rings[i]!, now, [V.x[e]!, V.y[e]!, V.z[e]!]) : null;
+  pathAim.visible = !!through && Number.isFinite(through.offset);
+  marker.style.display = pathAim.visible ? 'block' : 'none';
+  if (!through || !pathAim.visible) return;
+  pathAim.offset = through.offset;
+  pathAim.inside = through.offset < RING_RADIUS;
+  // Drawn from the drawn aircraft (the same offset as the physics' path, from where it is drawn).
+  markAt.set(through.point[0] - now[0]! + at.x, through.point[1] - now[1]! + at.y, through.point[2] - now[2]! + at.z).project(app.camera);
+  pathAim.x = ((markAt.x + 1) / 2) * app.canvas.clientWidth;
+  pathAim.y = ((1 - markAt.y) / 2) * app.canvas.clientHeight;
+  const shown = markAt.z < 1 && pathAim.x > 0 && pathAim.x < app.canvas.clientWidth && pathAim.y > 0 && pathAim.y < app.canvas.clientHeight;
+  marker.style.display = shown ? 'block' : 'none';
+  marker.style.left = `${pathAim.x}px`;
+  marker.style.top = `${pathAim.y}px`;
+  marker.style.color = pathAim.inside ? '#5dff8a' : '#ffffff';
+  marker.style.filter = 'drop-shadow(0 0 2px rgba(0, 0, 0, 0.9))';
+}
+
 // ---- Camera, every frame ------------------------------------------------------------------------
 
 const p3 = [0, 0, 0],
@@ -664,7 +760,9 @@ function frame(): void {
   app.camera.updateMatrixWorld();
   scenery.update(app.camera.position, at);
   paintRings(world.time);
+  drawGuide(at);
   pointToNextRing();
+  markPath();
   engine.set(state.phase === 'crashed' ? 0 : 0.25 + 0.75 * state.throttle);
   const cockpit = state.camera === 'cockpit';
   horizon.show(cockpit);
@@ -742,6 +840,12 @@ const panel = createPanel(
 shell.expose({
   /** The pointer to the next ring: its index (-1: none left), whether it is in view, its text and box (px). */
   ringPointer: () => ({ ...ringAim }),
+  /** The flight-path marker: visible, inside the next ring, its offset from the ring's centre (m), its place (px). */
+  pathMarker: () => ({ ...pathAim }),
+  /** Trees, houses and cloud puffs drawn now, the cloud layers' lowest and highest base (m). */
+  scenery: () => scenery.counts(),
+  /** The keyboard's ramped inputs now, each in [-1, 1] (./assist.ts rampKey). */
+  keyInput: () => ({ ...keyInput }),
   /** The attitude indicator: shown (cockpit view) and the pitch and roll it drew last, degrees. */
   attitude: () => ({ ...shownAttitude }),
   /** The course: each ring's centre (m), normal and status. */

@@ -1,26 +1,37 @@
 /**
  * The flight simulator's scenery (drawing only, no physics): a sky dome shaded from the haze at the
  * horizon to deep blue overhead with the sun in it, the hills of the scene's terrain function on a
- * grid that follows the aircraft, the sea, and low-poly cumulus clouds fixed in the world (seeded
- * per 2 km cell, so the same clouds are there when the aircraft comes back) that the aircraft flies
- * past and through, so its speed shows.
+ * grid that follows the aircraft, the sea, low-poly cumulus clouds fixed in the world (seeded
+ * per 2 km cell, so the same clouds are there when the aircraft comes back) in three layers (small
+ * ones 450 to 800 m up and 950 to 1,250 m up, among the rings, and large ones 1,500 to 2,100 m up)
+ * that the aircraft flies past and through, so its speed shows; trees on the lowland and the slopes
+ * and villages of small houses, fixed in the world the same way (so the ground streams past when
+ * low, and gives a scale); and an airfield with a runway under the start.
+ * Trees and houses are two instanced meshes and the clouds one merged mesh: a handful of draw calls,
+ * cheap enough for a phone.
  */
 
 import { terrainHeight } from '@bitphysics/projects';
 import {
   BackSide,
+  BoxGeometry,
   type BufferAttribute,
   BufferGeometry,
   CircleGeometry,
   Color,
+  ConeGeometry,
+  CylinderGeometry,
   Float32BufferAttribute,
   Fog,
   IcosahedronGeometry,
+  InstancedMesh,
+  Matrix4,
   Mesh,
   MeshBasicMaterial,
   MeshLambertMaterial,
   MeshStandardMaterial,
   PlaneGeometry,
+  Quaternion,
   type Scene,
   SphereGeometry,
   Vector3,
@@ -40,6 +51,18 @@ const SIZE = 24_000,
 /** Cloud cells: side, m; clouds are kept within CLOUD_REACH cells of the aircraft's cell. */
 const CLOUD_CELL = 2000,
   CLOUD_REACH = 5;
+/** Tree cells: side, m (at most one tree a cell), and how far from the aircraft trees are drawn, m. */
+const TREE_CELL = 70,
+  TREE_REACH = 2600;
+/** Village cells: side, m (at most one village a cell), and the houses a village has at most. */
+const VILLAGE_CELL = 1500,
+  VILLAGE_HOUSES = 14;
+/** Most trees and houses drawn (the instanced meshes' sizes). */
+const MAX_TREES = 6000,
+  MAX_HOUSES = 600;
+/** The runway: length and width, m, and the least height of its ground above the sea, m. */
+const RUNWAY_LENGTH = 1600,
+  RUNWAY_WIDTH = 45;
 
 /** A well-mixed 32-bit hash of an integer cell (i, j) and a salt. */
 function hash(i: number, j: number, salt: number): number {
@@ -47,6 +70,16 @@ function hash(i: number, j: number, salt: number): number {
   h = Math.imul(h ^ (h >>> 15), 0x85ebca6b);
   h = Math.imul(h ^ (h >>> 13), 0xc2b2ae35);
   return (h ^ (h >>> 16)) >>> 0;
+}
+
+/** `g` with every vertex coloured `colour` (a vertex colour, which the instance's colour then tints). */
+function tinted(g: BufferGeometry, colour: number): BufferGeometry {
+  const c = new Color(colour),
+    n = g.attributes.position!.count;
+  const data = new Float32Array(3 * n);
+  for (let i = 0; i < n; i++) data.set([c.r, c.g, c.b], 3 * i);
+  g.setAttribute('color', new Float32BufferAttribute(data, 3));
+  return g;
 }
 
 /** The scenery of one page: call `update` every frame with the camera's and the aircraft's positions. */
@@ -57,6 +90,10 @@ export interface Scenery {
   setTerrain(terrain: Float64Array, seed: number): void;
   /** Clouds drawn now (for tests): puffs in the merged cloud mesh. */
   cloudPuffs(): number;
+  /** Trees, houses and cloud puffs drawn now, and the lowest and highest cloud puff's centre (m; tests). */
+  counts(): { trees: number; houses: number; puffs: number; cloudLow: number; cloudHigh: number };
+  /** The runway's centre (m, world) and its heading (rad, 0 along +x). */
+  runway(): { x: number; y: number; z: number; heading: number };
 }
 
 /** Builds the scenery into `scene` (and sets its fog). */
@@ -153,23 +190,29 @@ export function createScenery(scene: Scene): Scenery {
   clouds.frustumCulled = false;
   scene.add(clouds);
   let cloudCell: [number, number] | null = null;
-  let puffs = 0;
+  let puffs = 0,
+    cloudLow = Infinity,
+    cloudHigh = -Infinity;
   const puff = new IcosahedronGeometry(1, 1);
 
   /** Rebuilds the clouds of the cells within CLOUD_REACH of cell (ci, cj). */
   function rebuildClouds(ci: number, cj: number): void {
     cloudCell = [ci, cj];
+    cloudLow = Infinity;
+    cloudHigh = -Infinity;
     const parts: BufferGeometry[] = [];
     for (let i = ci - CLOUD_REACH; i <= ci + CLOUD_REACH; i++)
       for (let j = cj - CLOUD_REACH; j <= cj + CLOUD_REACH; j++) {
         const h = hash(i, j, seed);
-        // About half the cells hold a cloud: 4 to 7 puffs around a base 1,400 to 2,000 m up.
+        // About half the cells hold a cloud, in one of three layers: small low ones (450 to 800 m up)
+        // and middle ones (950 to 1,250 m), among the rings, and large ones (1,500 to 2,100 m).
         if ((h & 7) > 3) continue;
+        const layer = (h >>> 29) % 3;
         const x0 = (i + ((h >>> 3) & 255) / 256) * CLOUD_CELL,
           z0 = (j + ((h >>> 11) & 255) / 256) * CLOUD_CELL,
-          y0 = 1400 + ((h >>> 19) & 63) * 10,
+          y0 = layer === 0 ? 450 + ((h >>> 19) & 63) * 5.5 : layer === 1 ? 950 + ((h >>> 19) & 63) * 4.8 : 1500 + ((h >>> 19) & 63) * 9.5,
           n = 4 + ((h >>> 25) & 3),
-          size = 140 + ((h >>> 27) & 7) * 25;
+          size = (layer === 2 ? 140 : 55) + ((h >>> 27) & 3) * (layer === 2 ? 40 : 14);
         for (let k = 0; k < n; k++) {
           const g = hash(i, j, seed + 97 * (k + 1));
           const r = size * (0.6 + ((g & 255) / 255) * 0.7);
@@ -181,6 +224,8 @@ export function createScenery(scene: Scene): Scenery {
             z0 + (((g >>> 24) & 255) / 255 - 0.5) * size * 1.6,
           );
           parts.push(p);
+          cloudLow = Math.min(cloudLow, y0);
+          cloudHigh = Math.max(cloudHigh, y0);
         }
       }
     puffs = parts.length;
@@ -188,6 +233,192 @@ export function createScenery(scene: Scene): Scenery {
     clouds.geometry = parts.length > 0 ? mergeGeometries(parts)! : new BufferGeometry();
     for (const p of parts) p.dispose();
   }
+
+  // Trees: one instanced low-poly cone on a trunk, at most one a TREE_CELL cell, more in the woods.
+  const treeGeometry = mergeGeometries([
+    new ConeGeometry(0.5, 1, 6).translate(0, 0.75, 0),
+    new CylinderGeometry(0.08, 0.1, 0.3, 5).translate(0, 0.15, 0),
+  ])!;
+  const trees = new InstancedMesh(
+    treeGeometry,
+    new MeshLambertMaterial({ color: 0xffffff, emissive: 0x1a2a14, flatShading: true }),
+    MAX_TREES,
+  );
+  trees.frustumCulled = false;
+  scene.add(trees);
+  // Houses: an instanced box with a pitched roof, walls and roofs coloured per instance.
+  const houseGeometry = mergeGeometries([
+    tinted(new BoxGeometry(1, 0.6, 1).translate(0, 0.3, 0).toNonIndexed(), 0xffffff),
+    tinted(
+      new ConeGeometry(0.78, 0.45, 4, 1)
+        .rotateY(Math.PI / 4)
+        .translate(0, 0.82, 0)
+        .toNonIndexed(),
+      0xc0483a,
+    ),
+  ])!;
+  const houses = new InstancedMesh(
+    houseGeometry,
+    new MeshLambertMaterial({ color: 0xffffff, vertexColors: true, flatShading: true }),
+    MAX_HOUSES,
+  );
+  houses.frustumCulled = false;
+  scene.add(houses);
+  const leafColours = [0x3f7a36, 0x4f8a3c, 0x37703a, 0x5f9440].map((c) => new Color(c));
+  const houseColours = [0xe8dcc4, 0xd9c7a5, 0xf0ece2, 0xc9b79a].map((c) => new Color(c));
+  const m4 = new Matrix4(),
+    q = new Quaternion(),
+    up = new Vector3(0, 1, 0),
+    at = new Vector3(),
+    size = new Vector3();
+  let treeCount = 0,
+    houseCount = 0;
+  /** The airfield: the runway's centre (m) and heading (rad). */
+  const field = { x: 0, y: 0, z: 0, heading: 0 };
+
+  /** Whether (x, z) is on the runway or its apron (no trees or houses there). */
+  function onField(x: number, z: number): boolean {
+    const dx = x - field.x,
+      dz = z - field.z;
+    const along = dx * Math.cos(field.heading) + dz * Math.sin(field.heading),
+      across = -dx * Math.sin(field.heading) + dz * Math.cos(field.heading);
+    return Math.abs(along) < RUNWAY_LENGTH / 2 + 150 && Math.abs(across) < RUNWAY_WIDTH / 2 + 160;
+  }
+
+  /** Places the trees and the villages within TREE_REACH of (cx, cz). */
+  function rebuildGround(cx: number, cz: number): void {
+    treeCount = 0;
+    const i0 = Math.floor((cx - TREE_REACH) / TREE_CELL),
+      i1 = Math.floor((cx + TREE_REACH) / TREE_CELL),
+      j0 = Math.floor((cz - TREE_REACH) / TREE_CELL),
+      j1 = Math.floor((cz + TREE_REACH) / TREE_CELL);
+    for (let i = i0; i <= i1 && treeCount < MAX_TREES; i++)
+      for (let j = j0; j <= j1 && treeCount < MAX_TREES; j++) {
+        const h = hash(i, j, seed + 31);
+        const x = (i + (h & 255) / 256) * TREE_CELL,
+          z = (j + ((h >>> 8) & 255) / 256) * TREE_CELL;
+        if ((x - cx) ** 2 + (z - cz) ** 2 > TREE_REACH * TREE_REACH) continue;
+        const y = terrainHeight(terrain, x, z);
+        if (y < 75 || y > 520) continue;
+        // Woods: a third of the fields (as the ground's colours have them) and the slopes above 200 m.
+        const f = hash(Math.floor(x / 600), Math.floor(z / 600), 11);
+        const wood = (f >>> 8) % 3 === 0 || y > 220;
+        if (((h >>> 16) & 15) > (wood ? 9 : 1)) continue;
+        if (onField(x, z)) continue;
+        const tall = 12 + ((h >>> 20) & 15) * 1.2;
+        m4.compose(at.set(x, y - 2, z), q.identity(), size.set(tall * 0.55, tall, tall * 0.55));
+        trees.setMatrixAt(treeCount, m4);
+        trees.setColorAt(treeCount, leafColours[(h >>> 24) & 3]!);
+        treeCount++;
+      }
+    trees.count = treeCount;
+    trees.instanceMatrix.needsUpdate = true;
+    if (trees.instanceColor) trees.instanceColor.needsUpdate = true;
+    // Villages: a few lowland cells hold a cluster of houses round a centre, plus a row by the runway.
+    houseCount = 0;
+    const addHouse = (x: number, z: number, turn: number, g: number): void => {
+      if (houseCount >= MAX_HOUSES) return;
+      const y = terrainHeight(terrain, x, z);
+      if (y < 72) return;
+      const w = 14 + (g & 7) * 2,
+        d = 10 + ((g >>> 3) & 7) * 1.5,
+        tall = 9 + ((g >>> 6) & 3) * 3;
+      m4.compose(at.set(x, y - 1.5, z), q.setFromAxisAngle(up, turn), size.set(w, tall, d));
+      houses.setMatrixAt(houseCount, m4);
+      houses.setColorAt(houseCount, houseColours[(g >>> 9) & 3]!);
+      houseCount++;
+    };
+    const reach = Math.ceil(TREE_REACH / VILLAGE_CELL) + 1;
+    const vi = Math.floor(cx / VILLAGE_CELL),
+      vj = Math.floor(cz / VILLAGE_CELL);
+    for (let i = vi - reach; i <= vi + reach; i++)
+      for (let j = vj - reach; j <= vj + reach; j++) {
+        const h = hash(i, j, seed + 57);
+        if ((h & 3) !== 0) continue;
+        const x0 = (i + 0.2 + ((h >>> 2) & 255) / 430) * VILLAGE_CELL,
+          z0 = (j + 0.2 + ((h >>> 10) & 255) / 430) * VILLAGE_CELL;
+        const y0 = terrainHeight(terrain, x0, z0);
+        if (y0 < 80 || y0 > 300 || onField(x0, z0)) continue;
+        const n = 6 + ((h >>> 18) % (VILLAGE_HOUSES - 5));
+        for (let k = 0; k < n; k++) {
+          const g = hash(i, j, seed + 101 * (k + 1));
+          const a = (k / n) * 2 * Math.PI + ((g & 255) / 255) * 0.6,
+            r = 40 + ((g >>> 12) & 127);
+          addHouse(x0 + r * Math.cos(a), z0 + r * Math.sin(a), -a, g);
+        }
+      }
+    for (let k = 0; k < 8; k++) {
+      const along = -RUNWAY_LENGTH / 2 + 200 + k * 45,
+        across = RUNWAY_WIDTH / 2 + 110;
+      addHouse(
+        field.x + along * Math.cos(field.heading) - across * Math.sin(field.heading),
+        field.z + along * Math.sin(field.heading) + across * Math.cos(field.heading),
+        -field.heading,
+        hash(k, 3, seed),
+      );
+    }
+    houses.count = houseCount;
+    houses.instanceMatrix.needsUpdate = true;
+    if (houses.instanceColor) houses.instanceColor.needsUpdate = true;
+  }
+
+  // The runway: a strip of asphalt draped over the ground, with a white centre line and threshold bars.
+  const runwayGeometry = new PlaneGeometry(RUNWAY_LENGTH, RUNWAY_WIDTH, 32, 1);
+  runwayGeometry.rotateX(-Math.PI / 2);
+  const runwayBase = Float32Array.from(runwayGeometry.attributes.position!.array as Float32Array);
+  const runway = new Mesh(runwayGeometry, new MeshLambertMaterial({ color: 0x3a3d42 }));
+  const marks = new Mesh(new BufferGeometry(), new MeshBasicMaterial({ color: 0xf2f2f2 }));
+  scene.add(runway, marks);
+
+  /**
+   * Lays the airfield on the flattest lowland within 4 km of the start (the origin; nearer wins
+   * between two about as flat), its runway along the start's heading (+x).
+   */
+  function placeRunway(): void {
+    let best = Infinity;
+    field.heading = 0;
+    for (let x = -4000; x <= 4000; x += 250)
+      for (let z = -4000; z <= 4000; z += 250) {
+        let lo = Infinity,
+          hi = -Infinity;
+        for (const a of [-0.5, -0.25, 0, 0.25, 0.5]) {
+          const y = terrainHeight(terrain, x + a * RUNWAY_LENGTH, z);
+          lo = Math.min(lo, y);
+          hi = Math.max(hi, y);
+        }
+        if (lo < 75) continue;
+        // Flat first; near the start breaks ties.
+        const score = hi - lo + Math.hypot(x, z) / 400;
+        if (score < best) {
+          best = score;
+          field.x = x;
+          field.z = z;
+        }
+      }
+    field.y = terrainHeight(terrain, field.x, field.z);
+    const p = runwayGeometry.attributes.position as BufferAttribute;
+    for (let i = 0; i < p.count; i++) {
+      const x = runwayBase[3 * i]! + field.x,
+        z = runwayBase[3 * i + 2]! + field.z;
+      // Draped over the hills' true surface, lifted clear of the flat-shaded ground's cells.
+      p.setXYZ(i, x, terrainHeight(terrain, x, z) + 4, z);
+    }
+    p.needsUpdate = true;
+    runwayGeometry.computeVertexNormals();
+    runwayGeometry.computeBoundingSphere();
+    const bars: BufferGeometry[] = [];
+    const bar = (along: number, across: number, length: number, width: number): void => {
+      const x = field.x + along,
+        z = field.z + across;
+      bars.push(new PlaneGeometry(length, width).rotateX(-Math.PI / 2).translate(x, terrainHeight(terrain, x, z) + 4.6, z));
+    };
+    for (let a = -RUNWAY_LENGTH / 2 + 120; a < RUNWAY_LENGTH / 2 - 120; a += 80) bar(a + 20, 0, 40, 1.5);
+    for (const end of [-1, 1]) for (let k = -3; k <= 3; k++) bar(end * (RUNWAY_LENGTH / 2 - 30), k * 5.5, 36, 3);
+    marks.geometry.dispose();
+    marks.geometry = mergeGeometries(bars)!;
+    for (const b of bars) b.dispose();
+  }
+  let groundCentre: [number, number] | null = null;
 
   return {
     update(camera, aircraft) {
@@ -198,6 +429,11 @@ export function createScenery(scene: Scene): Scenery {
       glow.lookAt(camera);
       if (!terrainCentre || Math.hypot(aircraft.x - terrainCentre[0], aircraft.z - terrainCentre[1]) > 2000)
         rebuildTerrain(aircraft.x, aircraft.z);
+      if (!groundCentre || Math.hypot(aircraft.x - groundCentre[0], aircraft.z - groundCentre[1]) > 700) {
+        if (!groundCentre) placeRunway();
+        groundCentre = [aircraft.x, aircraft.z];
+        rebuildGround(aircraft.x, aircraft.z);
+      }
       sea.position.x = aircraft.x;
       sea.position.z = aircraft.z;
       const ci = Math.floor(aircraft.x / CLOUD_CELL),
@@ -209,7 +445,10 @@ export function createScenery(scene: Scene): Scenery {
       seed = s;
       terrainCentre = null;
       cloudCell = null;
+      groundCentre = null;
     },
     cloudPuffs: () => puffs,
+    counts: () => ({ trees: treeCount, houses: houseCount, puffs, cloudLow, cloudHigh }),
+    runway: () => ({ ...field }),
   };
 }

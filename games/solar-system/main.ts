@@ -89,6 +89,7 @@ import {
   type Mission,
   planFlight,
   starsFor,
+  tutorialAim,
 } from './missions';
 
 /** Scene units per display AU. */
@@ -285,22 +286,11 @@ function startMission(index: number): void {
   const v = hohmannSpeed(distanceFromSun('Earth'), distanceFromSun(m.target), mu);
   aim.angle = v >= 0 ? 0 : 180;
   aim.speed = Math.min(MAX_SPEED, Math.round(Math.abs(v) * 10) / 10);
-  // The first mission starts on a course that arrives (when one is near the Hohmann guess), so a
-  // newcomer's first launch succeeds; from the second on, the player finds the course.
+  // The first mission is a lesson in one change: the arrow points the way of an arriving course,
+  // with the speed a little short of it (./missions.ts tutorialAim); the status line says to speed up.
   if (missionIndex === 0) {
-    const guess = aim.speed;
-    found: for (const angle of [0, 10, -10, 20, -20]) {
-      for (let k = -10; k <= 15; k++) {
-        const speed = Math.round((guess + 0.1 * k) * 10) / 10;
-        if (speed < 0 || speed > MAX_SPEED) continue;
-        planFlight(shell.world, handles, m, { angle, speed }, plan);
-        if (plan.hit) {
-          aim.angle = angle;
-          aim.speed = speed;
-          break found;
-        }
-      }
-    }
+    const lesson = tutorialAim(shell.world, handles, m, plan);
+    if (lesson) Object.assign(aim, lesson.start);
   }
   missionStartMs = handles.epoch + shell.world.time * 86_400_000;
   planAt = -Infinity;
@@ -1229,6 +1219,8 @@ const aimWords = (a: number): string =>
       ? 'against the Earth’s path'
       : `${Math.abs(Math.round(a))}° ${a > 0 ? 'outwards' : 'inwards'}${Math.abs(a) > 90 ? ' (backwards)' : ''}`;
 let shownStatus = '';
+/** Whether the page is used by touch first (a phone): the hints name the buttons, not the keys. */
+const touchFirst = matchMedia('(pointer: coarse)').matches;
 
 function updateStatus(force = false): void {
   const m = mission();
@@ -1240,7 +1232,7 @@ function updateStatus(force = false): void {
   if (phase === 'aim') {
     const head = `${aim.speed.toFixed(1)} km/s ${aimWords(aim.angle)}: `;
     if (plan.hit) {
-      line = `${head}✓ reaches ${m.target} in ${Math.round(plan.time)} days ${starText(starsFor(m, aim.speed))}. Launch!`;
+      line = `${head}✓ reaches ${m.target} in ${Math.round(plan.time)} days ${starText(starsFor(m, aim.speed))}. Launch!${missionIndex === 0 ? ` (${touchFirst ? 'tap Launch' : 'Space'})` : ''}`;
       cls = 'ok';
     } else if (plan.sun) {
       line = `${head}✗ falls into the Sun`;
@@ -1248,7 +1240,8 @@ function updateStatus(force = false): void {
     } else {
       const outward = distanceFromSun(m.target) > distanceFromSun('Earth');
       const rT = distanceFromSun(m.target);
-      if (outward && plan.farthest < rT - m.zone) line = `${head}✗ too slow to reach ${m.target}’s orbit: more speed`;
+      if (outward && plan.farthest < rT - m.zone)
+        line = `${head}✗ too slow to reach ${m.target}’s orbit: more speed${missionIndex === 0 ? ` (${touchFirst ? 'tap +' : 'press ↑'})` : ''}`;
       else if (!outward && plan.nearest > rT + m.zone) line = `${head}✗ does not fall to ${m.target}’s orbit: more speed, aimed backwards`;
       else {
         const a = Math.round(Math.abs(plan.ahead));

@@ -440,3 +440,42 @@ export function hohmannSpeed(rEarth: number, rTarget: number, mu: number): numbe
   const v = Math.sqrt(mu / rEarth);
   return (v * (Math.sqrt((2 * rTarget) / (rEarth + rTarget)) - 1)) / KM_S;
 }
+
+/** How far below the slowest arriving launch mission 1 starts, km/s: a few presses of faster launch. */
+export const TUTORIAL_SHORTFALL = 0.8;
+
+/**
+ * Mission 1's starting aim, a lesson in one change: the launch direction of an arriving course
+ * near the Hohmann transfer (`hit`: along the Earth's motion or within 20 degrees of it, the slowest
+ * speed on a 0.1 km/s grid from 1 km/s below the Hohmann speed up that the plan calls a hit), with
+ * the speed TUTORIAL_SHORTFALL km/s short of it (`start`, rounded to 0.1 km/s), so the first
+ * plan falls short of the target's orbit and the player raises the speed until it arrives.
+ * Plans with `plan` (overwritten). @returns null when no launch on that grid arrives now.
+ */
+export function tutorialAim(
+  world: PhysicsWorld,
+  handles: SolarSystemHandles,
+  mission: Mission,
+  plan: FlightPlan = createFlightPlan(),
+): { start: Aim; hit: Aim } | null {
+  const mu = muSun(world, handles);
+  const distance = (body: number): number => {
+    heliocentricState(world, handles, body, earthState);
+    return Math.hypot(earthState[0]!, earthState[1]!, earthState[2]!);
+  };
+  const v = hohmannSpeed(distance(handles.bodies.Earth), distance(handles.bodies[mission.target]), mu);
+  const guess = Math.round(Math.abs(v) * 10) / 10,
+    base = v >= 0 ? 0 : 180;
+  for (const turn of [0, 10, -10, 20, -20]) {
+    // In (-180, 180]: 180 + 10 is -170.
+    const angle = base + turn > 180 ? base + turn - 360 : base + turn;
+    for (let k = -10; k <= 15; k++) {
+      const speed = Math.round((guess + 0.1 * k) * 10) / 10;
+      if (speed < 0 || speed > MAX_SPEED) continue;
+      planFlight(world, handles, mission, { angle, speed }, plan);
+      if (plan.hit)
+        return { start: { angle, speed: Math.max(0, Math.round((speed - TUTORIAL_SHORTFALL) * 10) / 10) }, hit: { angle, speed } };
+    }
+  }
+  return null;
+}

@@ -206,6 +206,16 @@ describe('phone controls', () => {
 
   it('flight simulator: the stick banks and climbs and leaves the throttle alone; Faster opens it', async () => {
     const g = await h.openGame('flight-simulator', PHONE);
+    type Marker = { pathMarker(): { visible: boolean; inside: boolean }; scenery(): { trees: number; houses: number } };
+    // The path marker starts inside ring 1 (on course); the ground has its trees and houses.
+    const marker0 = await g.waitFor(() => {
+      const m = (window.game as unknown as Marker).pathMarker();
+      return m.visible ? m : null;
+    }, null);
+    expect(marker0.inside).toBe(true);
+    const ground = await g.page.evaluate(() => (window.game as unknown as Marker).scenery());
+    expect(ground.trees).toBeGreaterThan(300);
+    expect(ground.houses).toBeGreaterThan(20);
     const stick = (await g.page.getByRole('slider', { name: 'stick: bank and climb' }).boundingBox())!;
     const t0 = await read(g, 'state.throttle');
     const cx = stick.x + stick.width / 2,
@@ -225,6 +235,12 @@ describe('phone controls', () => {
       null,
       60_000,
     );
+    // Off the straight course: the path marker (where the path meets ring 1's plane) has left the ring.
+    const marker1 = await g.waitFor(() => {
+      const m = (window.game as unknown as Marker).pathMarker();
+      return !m.inside ? m : null;
+    }, null);
+    expect(marker1.inside).toBe(false);
     await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
     await cdp.detach();
     expect(flown.roll).toBeGreaterThan(10);
@@ -377,8 +393,14 @@ describe('phone controls', () => {
     const g = await h.openGame('solar-system', { ...PHONE, query: { rate: 0 } });
     type Solar = { mission(): { phase: string; aim: { speed: number }; flight: { elapsed: number } | null } };
     const speed = await read(g, 'mission().aim.speed');
-    await g.page.getByRole('button', { name: 'faster launch (↑)', exact: true }).tap();
-    await g.waitFor((s) => (window.game as unknown as Solar).mission().aim.speed > s, speed);
+    // Mission 1 starts too slow, and the line names the button that fixes it; 8 taps of + arrive.
+    await g.waitFor(() => /more speed \(tap \+\)$/.test(document.querySelector('[data-hud="plan"]')!.textContent ?? ''), null);
+    for (let i = 0; i < 8; i++) await g.page.getByRole('button', { name: 'faster launch (↑)', exact: true }).tap();
+    await g.waitFor((s) => (window.game as unknown as Solar).mission().aim.speed > s + 0.75, speed);
+    await g.waitFor(
+      () => /✓ reaches Mars in \d+ days .*\(tap Launch\)$/.test(document.querySelector('[data-hud="plan"]')!.textContent ?? ''),
+      null,
+    );
     await g.page.getByRole('button', { name: 'launch the probe (Space)', exact: true }).tap();
     await g.waitFor(() => {
       const m = (window.game as unknown as Solar).mission();

@@ -37,15 +37,24 @@ describe('projects', () => {
     type Solar = { mission(): Mission; params: { rate: number } };
     const m0 = await g.page.evaluate(() => (window.game as unknown as Solar).mission());
     expect([m0.number, m0.target, m0.phase]).toEqual([1, 'Mars', 'aim']);
-    // The first mission starts on a course that arrives, and the goal is stated above the scene.
-    expect(m0.plan.hit).toBe(true);
+    // The first mission is a lesson: the arrow points the right way but the launch is too slow, and
+    // the line says which key speeds it up; the goal is stated above the scene.
+    expect(m0.plan.hit).toBe(false);
     expect(await g.page.locator('[data-hud="goal"]').textContent()).toBe('Mission 1 of 7: fly a probe to Mars');
-    expect(await g.page.locator('[data-hud="plan"]').textContent()).toMatch(/✓ reaches Mars in \d+ days/);
-    for (let i = 0; i < 3; i++) await g.press('ArrowUp');
-    await g.press('ArrowRight');
+    expect(await g.page.locator('[data-hud="plan"]').textContent()).toMatch(/too slow to reach Mars’s orbit: more speed \(press ↑\)$/);
+    // Up, pressed 8 times (the lesson's 0.8 km/s; time is stopped): the plan arrives and says to launch.
+    for (let i = 0; i < 8; i++) await g.press('ArrowUp');
+    await g.waitFor(
+      () => /✓ reaches Mars in \d+ days .*\(Space\)$/.test(document.querySelector('[data-hud="plan"]')!.textContent ?? ''),
+      null,
+    );
+    expect(await g.page.evaluate(() => (window.game as unknown as Solar).mission().plan.hit)).toBe(true);
     const m1 = await g.page.evaluate(() => (window.game as unknown as Solar).mission());
-    expect(m1.aim.speed).toBeCloseTo(m0.aim.speed + 0.3, 9);
-    expect(m1.aim.angle).toBeCloseTo(m0.aim.angle + 2, 9);
+    expect(m1.aim.speed).toBeCloseTo(m0.aim.speed + 0.8, 9);
+    await g.press('ArrowRight');
+    const m2 = await g.page.evaluate(() => (window.game as unknown as Solar).mission());
+    expect(m2.aim.angle).toBeCloseTo(m0.aim.angle + 2, 9);
+    await g.press('ArrowLeft');
     const before = await g.page.evaluate(() => (window.game as unknown as Solar).params.rate);
     await g.press(']');
     expect(await g.page.evaluate(() => (window.game as unknown as Solar).params.rate)).toBeGreaterThan(before);
@@ -352,6 +361,54 @@ describe('projects', () => {
     );
     await g.page.keyboard.up('e');
     expect(turned).toBeGreaterThan(3);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
+  it('flight-simulator at 1280x800: trees, villages and clouds at three heights; the path marker sits in ring 1; a tap of up is a small ramped input, held dive takes the marker out of the ring', async () => {
+    const g = await h.openGame('flight-simulator', { viewport: { width: 1280, height: 800 } });
+    type Flight = Game & {
+      scenery(): { trees: number; houses: number; puffs: number; cloudLow: number; cloudHigh: number };
+      pathMarker(): { visible: boolean; inside: boolean; offset: number; x: number; y: number };
+      keyInput(): { pitch: number; roll: number };
+    };
+    const scene = await g.waitFor(() => {
+      const s = (window.game as unknown as Flight).scenery();
+      return s.trees > 0 ? s : null;
+    }, null);
+    expect(scene.trees).toBeGreaterThan(300);
+    expect(scene.houses).toBeGreaterThan(20);
+    // Clouds below, at and above the start's 900 m.
+    expect(scene.cloudLow).toBeLessThan(800);
+    expect(scene.cloudHigh).toBeGreaterThan(1400);
+    // The aircraft starts on course for ring 1: the marker is drawn and inside it.
+    const start = await g.waitFor(() => {
+      const m = (window.game as unknown as Flight).pathMarker();
+      return m.visible ? m : null;
+    }, null);
+    expect(start.inside).toBe(true);
+    expect(await g.page.locator('[data-hud="path-marker"]').isVisible()).toBe(true);
+    // A tap: the key's input rises at KEY_RAMP.rise (0.8 per s), not to full at once, then falls back to 0.
+    await g.page.keyboard.down('ArrowUp');
+    const tapped = await g.waitFor(() => {
+      const k = (window.game as unknown as Flight).keyInput().pitch;
+      return k > 0 ? k : null;
+    }, null);
+    await g.page.keyboard.up('ArrowUp');
+    expect(tapped).toBeLessThan(0.5);
+    await g.waitFor(() => (window.game as unknown as Flight).keyInput().pitch === 0, null);
+    // Down held: the path dives, so the marker drops below the ring's centre and out of the ring.
+    await g.page.keyboard.down('ArrowDown');
+    const dived = await g.waitFor(
+      (y0) => {
+        const m = (window.game as unknown as Flight).pathMarker();
+        return m.visible && !m.inside && m.y > y0 + 10 ? m : null;
+      },
+      start.y,
+      60_000,
+    );
+    await g.page.keyboard.up('ArrowDown');
+    expect(dived.offset).toBeGreaterThan(45);
     expect(g.errors).toEqual([]);
     await g.close();
   });

@@ -9,7 +9,16 @@
 import { createPhysicsWorld, type PhysicsWorld, setBodyThrust, setControlDeflection, step } from '@bitphysics/physics';
 import { AIRCRAFT, AIRCRAFT_TRIM_SPEED, type AircraftHandles, aircraft, aircraftLevelDrag } from '@bitphysics/projects';
 import { describe, expect, it } from 'vitest';
-import { ASSIST, assist, createAssistState, type FlightState, flightState, type PilotInput } from '../../games/flight-simulator/assist';
+import {
+  ASSIST,
+  assist,
+  createAssistState,
+  type FlightState,
+  flightState,
+  KEY_RAMP,
+  type PilotInput,
+  rampKey,
+} from '../../games/flight-simulator/assist';
 
 const DEG = Math.PI / 180;
 const FULL = 15 * DEG;
@@ -113,5 +122,57 @@ describe('flight assist', () => {
     });
     expect(flightState(idle.world, idle.h.body).speed).toBeLessThan(90);
     expect(alpha).toBeLessThan(AIRCRAFT.stallAngle);
+  });
+});
+
+describe('keyboard ramp (rampKey)', () => {
+  /** The key's input after holding `direction` for `seconds` from `value`, in 1/60 s steps. */
+  const hold = (value: number, direction: number, seconds: number): number => {
+    for (let i = 0; i < Math.round(seconds * 60); i++) value = rampKey(value, direction, 1 / 60);
+    return value;
+  };
+
+  it('a tap asks for a little, a held key for full stick; released, it is back to 0 in 0.2 s', () => {
+    expect(hold(0, 1, 0.2)).toBeCloseTo(0.2 * KEY_RAMP.rise, 12);
+    expect(hold(0, 1, 0.2)).toBeLessThan(0.2);
+    expect(hold(0, -1, 1 / KEY_RAMP.rise + 0.05)).toBe(-1);
+    expect(hold(1, 0, 1 / KEY_RAMP.fall - 1 / 60)).toBeGreaterThan(0);
+    expect(hold(1, 0, 1 / KEY_RAMP.fall)).toBe(0);
+    // Reversed: through 0 at the return rate, then on the other way at the rise rate within the same step.
+    expect(rampKey(0.05, -1, 0.02)).toBeCloseTo(-(0.02 - 0.05 / KEY_RAMP.fall) * KEY_RAMP.rise, 12);
+  });
+
+  it('bad input is refused with the function and parameter named', () => {
+    expect(() => rampKey(2, 0, 0.1)).toThrow(/rampKey: value must be in \[-1, 1\], got 2/);
+    expect(() => rampKey(0, 0.5, 0.1)).toThrow(/rampKey: direction must be -1, 0 or 1, got 0.5/);
+    expect(() => rampKey(0, 1, -1)).toThrow(/rampKey: dt must be >= 0 s, got -1/);
+  });
+
+  it('flown: climb held 1 s then let go climbs on by less than half a ring (measured 19 m; 35 m with the key taken as full stick at once)', () => {
+    /** Climbs with up held for `seconds`, then lets go: metres gained after the release (to the top). */
+    const climbAfterRelease = (seconds: number, ramped: boolean): number => {
+      const f = start();
+      let key = 0,
+        atRelease = 900,
+        top = 900;
+      const n = Math.round(12 * 60);
+      for (let i = 0; i < n; i++) {
+        const held = i < seconds * 60 ? 1 : 0;
+        key = ramped ? rampKey(key, held, 1 / 60) : held;
+        fly(f, { pitch: key }, 1 / 60);
+        if (held) atRelease = height(f);
+        top = Math.max(top, height(f));
+      }
+      return top - atRelease;
+    };
+    const ramped = climbAfterRelease(1, true),
+      instant = climbAfterRelease(1, false);
+    // Half the ring's 45 m radius; and the ramp's own share, independent of the assist's tuning.
+    expect(ramped).toBeLessThan(22.5);
+    expect(ramped).toBeLessThan(0.7 * instant);
+    // A 0.3 s tap is a small correction: a metre or two (measured 1.9 m), not the 12.6 m of full stick at once.
+    const tap = climbAfterRelease(0.3, true);
+    expect(tap).toBeGreaterThan(0.3);
+    expect(tap).toBeLessThan(4);
   });
 });

@@ -16,6 +16,7 @@ import {
   layCourse,
   MISS_RANGE,
   nextRing,
+  pathThroughRing,
   RING_CLEARANCE,
   RING_RADIUS,
   type Ring,
@@ -114,6 +115,27 @@ describe('flight simulator course', () => {
     expect(crossRing(ring, [90, 500 - 40, 0], [110, 500 + 40, 0])).toBe('passed');
     expect(nextRing([{ ...ring, status: 'passed' }, ring])).toBe(1);
     expect(nextRing([{ ...ring, status: 'missed' }])).toBe(-1);
+  });
+
+  it('the flight-path marker: where a straight path meets a ring plane, and how far from its centre', () => {
+    // A ring whose plane leans: normal (3, 4, 0) / 5, centre (100, 500, 0).
+    const ring: Ring = { x: 100, y: 500, z: 0, nx: 0.6, ny: 0.8, nz: 0, status: 'ahead' };
+    // From 50 m before the centre along the normal at 10 m/s: there in 5 s, through the centre.
+    const straight = pathThroughRing(ring, [100 - 30, 500 - 40, 0], [6, 8, 0]);
+    expect(straight.time).toBeCloseTo(5, 12);
+    expect(straight.offset).toBeCloseTo(0, 12);
+    // Along +x from 12 m to the side (z): the plane meets the line where 0.6 (x - 100) = 0, after
+    // 20 s at 5 m/s from x = 0; the point is (100, 500, 12), 12 m off the centre.
+    const side = pathThroughRing(ring, [0, 500, 12], [5, 0, 0]);
+    expect(side.time).toBeCloseTo(20, 12);
+    expect(side.point).toEqual([100, 500, 12]);
+    expect(side.offset).toBeCloseTo(12, 12);
+    // Moving away from the plane, or along it: never meets it.
+    expect(pathThroughRing(ring, [0, 500, 0], [-5, 0, 0]).offset).toBe(Infinity);
+    expect(pathThroughRing(ring, [0, 500, 0], [0, 0, 5]).time).toBe(Infinity);
+    expect(pathThroughRing(ring, [200, 500, 0], [5, 0, 0]).offset).toBe(Infinity); // past it already
+    expect(() => pathThroughRing(ring, [0, Number.NaN, 0], [1, 0, 0])).toThrow(/pathThroughRing: position must be 3 finite numbers/);
+    expect(() => pathThroughRing(ring, [0, 0, 0], [1, 0])).toThrow(/pathThroughRing: velocity must be 3 finite numbers/);
   });
 
   it('gives stars for the share of rings passed', () => {
