@@ -98,7 +98,7 @@ const lastThrow = {
   good: false,
   at: [0, 0] as [number, number],
   decidedAt: 0,
-  /** Set when the player starts aiming again: the trail and the off-screen marker go. */
+  /** Set when the player starts aiming again: the off-screen marker goes (the trail stays as a guide). */
   hidden: false,
 };
 /** A fresh world with the current level (the shell calls it at start and on R). */
@@ -355,13 +355,20 @@ shell.onWorldChange(() => {
  * it jumps when the screen's size changes.
  *
  * On an upright phone (a screen taller than wide) the whole play area fitted to the width leaves the
- * scene a thin strip, so the camera works closer: the aim view holds the catapult, its stones and
- * UPRIGHT_AIM_SPAN m of the field in front of it (an arrow at the right edge points to the castle),
- * the shot view holds the castle and the rock with a little room either side, and in between the
- * camera follows the stone: the view slides from the aim view to the shot view as the stone crosses
- * the field (by the farthest it got), so the stone stays in sight all the way.
+ * scene a thin strip, so the camera works closer: at rest the aim view holds the catapult, its
+ * stones and UPRIGHT_AIM_SPAN m of the field in front of it (an arrow at the right edge points to
+ * the castle); while a finger pulls, the camera eases out to the overview, from just behind the
+ * catapult to past the castle, so the player sees the target while aiming; the shot view holds the
+ * castle and the rock with a little room either side, and in between the camera follows the stone:
+ * the view slides from the overview to the shot view as the stone crosses the field (by the
+ * farthest it got), so the stone stays in sight all the way.
  */
 const cameraView = { minX: -4, minY: -1, maxX: 30, maxY: 14 };
+/**
+ * The aim in progress: whether a press is pulling, the pull (dx, dy), m (x right, y up), and where
+ * the press went down on the canvas, px.
+ */
+const aim = { active: false, dx: 0, dy: 0, x0: 0, y0: 0 };
 /** On a tall screen, where the ground line sits: this fraction of the screen's height from the bottom. */
 const GROUND_AT = 0.18;
 /** Screens narrower than this (CSS px) get the tighter aim view. */
@@ -420,6 +427,16 @@ function aimView(): View {
   const behind = renderer.camera.width < NARROW ? 1.6 : 3.1;
   return viewFor(LAUNCH.x - behind, rockRight() + 0.6);
 }
+/**
+ * The overview while aiming on an upright phone: from just behind the catapult to past the castle's
+ * far end, so the player sees where the throw must go while pulling.
+ */
+function overviewRect(): View {
+  return viewFor(OVERVIEW_LEFT, lv.castleMaxX + OVERVIEW_PAST);
+}
+/** The overview's left edge (behind the catapult's stacked stones) and its room past the castle, m. */
+const OVERVIEW_LEFT = LAUNCH.x - 3.1,
+  OVERVIEW_PAST = 1.2;
 /** The shot view (see above): the castle, the rock and room either side for debris (2.5 m; 1.5 and 1.2 m upright). */
 function shotViewRect(): View {
   return upright() ? viewFor(lv.castleMinX - 1.5, rockRight() + 1.2) : viewFor(lv.castleMinX - 2.5, rockRight() + 2.5);
@@ -435,12 +452,12 @@ function pxPerM(v: View): number {
  */
 const zoomsIn = (): boolean => upright() || (renderer.camera.width < NARROW && pxPerM(shotViewRect()) >= 1.5 * pxPerM(aimView()));
 /**
- * The view while the stone flies, upright: between the aim view (u = 0) and the shot view (u = 1),
+ * The view while the stone flies, upright: between the overview (u = 0) and the shot view (u = 1),
  * u the share of the way from the catapult to the castle's front the stone has got (smoothed, so the
  * camera starts and ends the slide gently).
  */
 function followView(): View {
-  const a = aimView(),
+  const a = overviewRect(),
     s = shotViewRect();
   const u0 = Math.min(1, Math.max(0, (lastThrow.farthest - LAUNCH.x) / Math.max(1, lv.castleMinX - 1 - LAUNCH.x)));
   const u = u0 * u0 * (3 - 2 * u0);
@@ -455,7 +472,7 @@ function frameCamera(): void {
   const cam = renderer.camera;
   // Back to the aim view once the verdict has been up for VERDICT_READ seconds (or the level ended).
   if (shotView && lastThrow.verdict && (shell.world.time - lastThrow.decidedAt > VERDICT_READ || levelEnded)) shotView = false;
-  const target = shotView && zoomsIn() ? (upright() ? followView() : shotViewRect()) : aimView();
+  const target = shotView && zoomsIn() ? (upright() ? followView() : shotViewRect()) : aim.active && upright() ? overviewRect() : aimView();
   const size = `${cam.width}x${cam.height}`;
   const k = size === framedFor ? 0.1 : 1;
   if (size !== framedFor) sizesFramed.add(size);
@@ -481,16 +498,24 @@ frameCamera();
 
 const readout = createReadout(shell.hud.readout, ['level', 'shots left', 'score', 'total', 'pieces fallen', 'welds broken']);
 
-// Aiming: press anywhere, drag back, release: the pull is the drag, measured on the screen at no
-// fewer than AIM_PX_PER_M pixels a metre of pull, so a full pull (PULL.max) is a drag of at least
-// 165 px that starts wherever the finger or mouse goes down (fewer pixels a metre would make a finger's
-// wobble of a pixel move the landing several pixels).
-const aim = { active: false, dx: 0, dy: 0, x0: 0, y0: 0 };
+// Aiming: press anywhere, drag back, release: the pull is the drag, measured on the screen. A full
+// pull (PULL.max) is a drag of FULL_PULL_SHARE of the canvas's diagonal (kept within
+// [FULL_PULL_MIN_PX, FULL_PULL_MAX_PX]): 380 px at 1280 x 800, about 280 px on an upright phone,
+// so the throws that reach the castle (10 to 14 m/s, half to two thirds of the range) take a hand
+// movement long enough to adjust by a few pixels without the landing jumping a metre. It does not
+// depend on the camera's zoom, so the view may ease out while the player pulls.
 const pointer = { x: 0, y: 0 };
-/** Least screen pixels per metre of pull. */
-const AIM_PX_PER_M = 55;
-// Measured in the aim view's scale, so a drag pulls as far while the camera eases back from the shot view.
-const aimScale = (): number => Math.max(pxPerM(aimView()), AIM_PX_PER_M);
+/** A full pull's drag: this share of the canvas's diagonal, within [FULL_PULL_MIN_PX, FULL_PULL_MAX_PX] px. */
+const FULL_PULL_SHARE = 0.32,
+  FULL_PULL_MIN_PX = 240,
+  FULL_PULL_MAX_PX = 380;
+/** Screen pixels of drag for a full pull (PULL.max m), from the canvas's size. */
+function fullPullPx(): number {
+  const cam = renderer.camera;
+  return Math.min(FULL_PULL_MAX_PX, Math.max(FULL_PULL_MIN_PX, FULL_PULL_SHARE * Math.hypot(cam.width, cam.height)));
+}
+/** Screen pixels per metre of pull. */
+const aimScale = (): number => fullPullPx() / PULL.max;
 app.canvas.addEventListener('pointerdown', (e) => {
   if (shell.paused || shotsLeft <= 0 || (e.pointerType === 'mouse' && e.button !== 0)) return;
   pointerOnCanvas(app.canvas, e, pointer);
@@ -687,10 +712,11 @@ function positionOf(h: number): [number, number] {
 /** Draws the last throw's trail and, for VERDICT_SHOWN seconds, its verdict. */
 function drawThrow(world: PhysicsWorld): void {
   const cam = renderer.camera;
-  const path = lastThrow.hidden ? [] : lastThrow.path;
+  // The trail stays while the player aims the next throw (a guide: higher or lower than that one).
+  const path = lastThrow.path;
   trailDots = Math.max(0, path.length / 2 - 1);
   for (let i = 2; i < path.length; i += 2)
-    overlay.circle(cam.toScreenX(path[i]!), cam.toScreenY(path[i + 1]!), 2).fill({ color: 0xffffff, alpha: 0.55 });
+    overlay.circle(cam.toScreenX(path[i]!), cam.toScreenY(path[i + 1]!), 2.5).fill({ color: 0xffffff, alpha: 0.6 });
   drawOffscreen(world);
   drawCastleMarker();
   const age = world.time - lastThrow.decidedAt;
@@ -750,6 +776,13 @@ const castleText = new Text({
 });
 castleText.anchor.set(1, 0.5);
 castleText.visible = false;
+/** The power and angle over the power bar while aiming (see drawAim). */
+const aimText = new Text({
+  text: '',
+  style: { fill: 0xffffff, fontSize: 16, fontFamily: 'sans-serif', fontWeight: 'bold', stroke: { color: 0x000000, width: 4 } },
+});
+aimText.anchor.set(0.5, 1);
+aimText.visible = false;
 /** Over the play area while paused: a dimmed scene and the word, so a pause is not mistaken for a hang. */
 const pauseShade = new Graphics({ label: 'paused' });
 const pauseText = new Text({
@@ -766,7 +799,18 @@ const pauseText = new Text({
 pauseText.anchor.set(0.5);
 const popupLayer = new Container({ label: 'popups' });
 effects = new Effects(popupLayer);
-renderer.root.addChild(overlay, effects.graphics, popupLayer, banner, verdictText, offscreenText, castleText, pauseShade, pauseText);
+renderer.root.addChild(
+  overlay,
+  effects.graphics,
+  popupLayer,
+  banner,
+  verdictText,
+  offscreenText,
+  castleText,
+  aimText,
+  pauseShade,
+  pauseText,
+);
 
 /** Whether a stone sits in the cup: shots are left and the arm is back from its last throw. */
 function loaded(): boolean {
@@ -883,16 +927,78 @@ function showBreaks(world: PhysicsWorld): void {
   }
 }
 
-/** A power bar over the catapult while aiming: how hard the pull throws (full at PULL.max). */
-function drawPower(power: number): void {
+/**
+ * The arc preview covers the first part of the flight only: up to PREVIEW_SHARE of the way from the
+ * catapult to the castle's front, and PREVIEW_TIME s at most. The player sees the direction and the
+ * rise, and judges where it comes down from the last throw's trail, which stays on the screen while
+ * aiming (a whole arc to the castle made every throw a sure hit).
+ */
+const PREVIEW_SHARE = 0.55,
+  PREVIEW_TIME = 1;
+/** What the aim shows in the last frame (tests): power (0 to 1), angle (degrees above level), preview dots and the preview's farthest x, m. */
+const aimShown: { power: number; angle: number; dots: number; reach: number } = { power: 0, angle: 0, dots: 0, reach: 0 };
+
+/**
+ * While aiming: the pull as a band from where the press went down to the finger, inside a ring
+ * whose radius is a full pull (so the player sees how much further the pull can go); the first part
+ * of the arc (dots fading along it); and over the catapult a power bar with the power and the angle
+ * in numbers, so a throw can be repeated or changed by a little.
+ */
+function drawAim(world: PhysicsWorld): void {
+  aimText.visible = aim.active;
+  aimShown.dots = 0;
+  if (!aim.active) return;
   const cam = renderer.camera;
-  const w = Math.max(60, cam.toScreenLength(1.6)),
-    h = 8;
-  // Over the catapult, kept on the screen (a phone's view starts just behind the catapult).
+  const [vx, vy] = launchVelocity(aim.dx, aim.dy);
+  const pull = Math.hypot(aim.dx, aim.dy);
+  const power = Math.min(1, pull / PULL.max);
+  // Green to yellow at half power, to red at full.
+  const color = power < 0.5 ? mixColor(0x5cd65c, 0xffd23b, 2 * power) : mixColor(0xffd23b, 0xff5040, 2 * power - 1);
+  // The band and the ring, in screen pixels from the press.
+  const R = fullPullPx(),
+    k = (Math.min(pull, PULL.max) * aimScale()) / Math.max(pull, 1e-9);
+  const ex = aim.x0 + aim.dx * k,
+    ey = aim.y0 - aim.dy * k;
+  overlay.circle(aim.x0, aim.y0, R).stroke({ width: 2, color: 0xffffff, alpha: 0.35 });
+  overlay.circle(aim.x0, aim.y0, R / 2).stroke({ width: 1, color: 0xffffff, alpha: 0.2 });
+  overlay.moveTo(aim.x0, aim.y0).lineTo(ex, ey).stroke({ width: 5, color: 0x000000, alpha: 0.35 });
+  overlay.moveTo(aim.x0, aim.y0).lineTo(ex, ey).stroke({ width: 3, color });
+  overlay.circle(aim.x0, aim.y0, 4).fill({ color: 0xffffff, alpha: 0.8 });
+  overlay.circle(ex, ey, 9).fill(color).stroke({ width: 2, color: 0x000000, alpha: 0.6 });
+  // The first part of the arc.
+  const g = -world.gravity[1]!;
+  const arc = predictArc(LAUNCH.x, LAUNCH.y, vx, vy, g, Math.round(PREVIEW_TIME / 0.05) + 1, 0.05);
+  const reachX = LAUNCH.x + PREVIEW_SHARE * (lv.castleMinX - LAUNCH.x);
+  let reach: number = LAUNCH.x;
+  for (let i = 1; i < arc.length; i++) {
+    const [x, y] = arc[i]!;
+    if (x > reachX) break;
+    const fade = 1 - i / arc.length;
+    overlay
+      .circle(cam.toScreenX(x), cam.toScreenY(y), 4.5)
+      .fill({ color: 0xffffff, alpha: 0.35 + 0.6 * fade })
+      .stroke({
+        width: 1.5,
+        color: 0x000000,
+        alpha: 0.3 + 0.4 * fade,
+      });
+    reach = x;
+    aimShown.dots++;
+  }
+  aimShown.power = power;
+  aimShown.angle = (Math.atan2(vy, vx) * 180) / Math.PI;
+  aimShown.reach = reach;
+  // The power bar and its numbers over the catapult, kept on the screen.
+  const w = Math.max(90, cam.toScreenLength(2)),
+    h = 10;
   const x = Math.min(Math.max(6, cam.toScreenX(-0.3) - w / 2), cam.width - w - 6),
-    y = cam.toScreenY(2.9);
-  overlay.roundRect(x - 2, y - 2, w + 4, h + 4, 4).fill({ color: 0x000000, alpha: 0.55 });
-  overlay.roundRect(x, y, Math.max(2, w * power), h, 3).fill(mixColor(0x5cd65c, 0xff5040, power));
+    y = Math.max(60, cam.toScreenY(3.2));
+  overlay.roundRect(x - 2, y - 2, w + 4, h + 4, 5).fill({ color: 0x000000, alpha: 0.55 });
+  overlay.roundRect(x, y, Math.max(2, w * power), h, 4).fill(color);
+  const label = `${Math.round(100 * power)} %  ${Math.round(aimShown.angle)}°`;
+  if (aimText.text !== label) aimText.text = label;
+  aimText.x = x + w / 2;
+  aimText.y = y - 4;
 }
 
 /** Shows or hides the pause overlay. */
@@ -1050,14 +1156,7 @@ function draw(world: PhysicsWorld, alpha: number): void {
   // A good throw's points keep counting what falls after it was decided.
   if (lastThrow.good && lastThrow.verdict) lastThrow.verdict = `+${t.score - lastThrow.scoreBefore}`;
   drawThrow(world);
-  if (aim.active) {
-    const [vx, vy] = launchVelocity(aim.dx, aim.dy);
-    const arc = predictArc(LAUNCH.x, LAUNCH.y, vx, vy, -world.gravity[1]!, 60, 0.05);
-    const power = Math.min(1, Math.hypot(aim.dx, aim.dy) / PULL.max);
-    const dot = mixColor(0xffffff, 0xffb03b, power);
-    for (let i = 0; i < arc.length; i += 2) overlay.circle(sx(arc[i]![0]), sy(arc[i]![1]), 3).fill({ color: dot, alpha: 0.9 });
-    drawPower(power);
-  }
+  drawAim(world);
   effects!.update(dt, -world.gravity[1]!);
   effects!.draw(cam);
   drawPause();
@@ -1164,7 +1263,7 @@ shell.expose({
   effects: (): { bits: number; popups: number } => ({ bits: effects!.bitCount, popups: effects!.popupCount }),
   /** The catapult's arm angle, rad (see CATAPULT in ./look: cocked at pi, upright at pi / 2). */
   armAngle: (): number => arm.angle,
-  /** Screen pixels a metre of pull (a drag this many px long pulls 1 m), at least AIM_PX_PER_M. */
+  /** Screen pixels a metre of pull (a drag this many px long pulls 1 m; PULL.max m is a full pull). */
   aimPxPerM: aimScale,
   /** The last throw's launch velocity [vx, vy], m/s ([0, 0] before a throw). */
   lastLaunch: (): [number, number] => (lastThrow.body ? [lastThrow.vx, lastThrow.vy] : [0, 0]),
@@ -1191,6 +1290,13 @@ shell.expose({
   offscreenY: (): number => offscreenText.y,
   /** Dots of the last throw's trail drawn in the last frame. */
   trailDots: (): number => trailDots,
+  /**
+   * What the aim showed in the last frame: power (0 to 1), angle (degrees above level), dots of the
+   * arc preview (0 when not aiming) and the preview's farthest x, m.
+   */
+  aimShown: (): { power: number; angle: number; dots: number; reach: number } => ({ ...aimShown }),
+  /** Screen pixels of drag for a full pull. */
+  fullPullPx,
   /** The level score shown in the last frame, and the running total. */
   shownScore: (): number => shownScore,
   total,

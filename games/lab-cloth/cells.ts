@@ -101,6 +101,11 @@ export class ClothCells {
     return n;
   }
 
+  /** Makes the next `loosen` look at the links again (after the world was restored to an earlier state). */
+  invalidate(): void {
+    this.loosened = -1;
+  }
+
   /**
    * Which triangles of cell `cell` (row-major index) are whole in `world`: bit 1 the upper-left one
    * (top and left links alive), bit 2 the lower-right one (bottom and right links alive).

@@ -13,6 +13,8 @@
  * are down, so the sheet hangs still. Drag with the hand to
  * take hold of the sheet and pull it (grab.ts: a soft grip, so it stretches before it tears). The tool
  * buttons under the scene switch (key C); a right-button drag always cuts. Hold Gust (key G) to blow.
+ * Undo (Ctrl/Cmd+Z) puts the sheet back as it was just before the last stroke that cut it (the
+ * whole world restored from a snapshot taken when the stroke began; up to UNDO_DEPTH strokes).
  * Keys: P pause, N step, R new sheet. URL: ?size (8-48 points across), ?wind (0-10 m/s), ?gusts
  * (0-5 m/s), ?tear (0.1-2).
  */
@@ -21,7 +23,18 @@ import { createActionButton, createButtonBar, createPanel, getSound, numberParam
 import { createLabDock, createReadout, createStatusLine, fmt, followView, readUrlParams } from '@bitphysics/game-kit/lab-kit';
 import { startPixiGame } from '@bitphysics/game-kit/pixi';
 import { createPlot } from '@bitphysics/game-kit/plot';
-import { type Cloth, type PhysicsWorld, step as physicsStep, query, removeJoint, slotOf, windAt } from '@bitphysics/physics';
+import {
+  type Cloth,
+  type PhysicsWorld,
+  step as physicsStep,
+  query,
+  removeJoint,
+  restore,
+  slotOf,
+  snapshot,
+  type WorldSnapshot,
+  windAt,
+} from '@bitphysics/physics';
 import type { WorldRect } from '@bitphysics/render-pixi';
 import { Container, Graphics, Text } from 'pixi.js';
 import { ClothCells } from './cells';
@@ -155,6 +168,7 @@ const game = await startPixiGame({
     { keys: 'C', action: 'scissors / hand', touch: 'Scissors / Hand' },
     { keys: 'G (hold)', action: 'a gust of wind', touch: 'Gust (hold)' },
     { keys: 'Right drag', action: 'cut, with either tool', touch: '' },
+    { keys: 'Ctrl+Z', action: 'undo the last cut', touch: 'Undo' },
   ],
   renderer: { view },
   onFrame: (alpha, world) => draw(alpha, world),
@@ -283,6 +297,8 @@ const ICON_HAND =
   '<svg viewBox="0 0 24 24" width="20" height="20" aria-hidden="true" style="vertical-align:-4px"><path d="M8 12V5a1.5 1.5 0 0 1 3 0v6M11 11V3.5a1.5 1.5 0 0 1 3 0V11M14 11V5a1.5 1.5 0 0 1 3 0v7M17 10.5a1.5 1.5 0 0 1 3 0V15a7 7 0 0 1-7 7h-1a7 7 0 0 1-5.6-2.8L3 15.5a1.6 1.6 0 0 1 2.5-2L8 16V12" fill="none" stroke="currentColor" stroke-width="1.8" stroke-linejoin="round"/></svg>';
 const ICON_WIND =
   '<svg viewBox="0 0 24 24" width="20" height="20" aria-hidden="true" style="vertical-align:-4px"><path d="M3 8h11a3 3 0 1 0-3-3M3 12h16a3 3 0 1 1-3 3M3 16h8" fill="none" stroke="currentColor" stroke-width="2" stroke-linecap="round"/></svg>';
+const ICON_UNDO =
+  '<svg viewBox="0 0 24 24" width="20" height="20" aria-hidden="true" style="vertical-align:-4px"><path d="M9 14L4 9l5-5M4 9h10a6 6 0 0 1 0 12h-3" fill="none" stroke="currentColor" stroke-width="2" stroke-linecap="round" stroke-linejoin="round"/></svg>';
 const tools = createButtonBar(
   [
     { label: 'Scissors', name: 'scissors: drag to cut (C)', onTap: () => setTool('cut'), accent: '#ffd166' },
@@ -294,12 +310,15 @@ const tools = createButtonBar(
       onRelease: () => setBlowing(false),
       accent: '#8ecbff',
     },
+    { label: 'Undo', name: 'undo the last cut (Ctrl+Z)', onTap: () => undoCut(), accent: '#ffd166' },
   ],
   { label: 'tools', touchOnly: false },
 );
 tools.buttons[0]!.innerHTML = `${ICON_SCISSORS} Scissors`;
 tools.buttons[1]!.innerHTML = `${ICON_HAND} Hand`;
 tools.buttons[2]!.innerHTML = `${ICON_WIND} Gust`;
+const undoButton = tools.buttons[3]!;
+undoButton.innerHTML = `${ICON_UNDO} Undo`;
 function setTool(t: Tool): void {
   tool = t;
   tools.setActive(0, t === 'cut');
@@ -318,6 +337,12 @@ window.addEventListener('keydown', (e) => {
   const k = e.key.toLowerCase();
   if (k === 'c' && !e.repeat) setTool(tool === 'cut' ? 'pull' : 'cut');
   if (k === 'g') setBlowing(true);
+});
+window.addEventListener('keydown', (e) => {
+  if ((e.ctrlKey || e.metaKey) && !e.altKey && !e.shiftKey && e.key.toLowerCase() === 'z') {
+    e.preventDefault();
+    undoCut();
+  }
 });
 window.addEventListener('keyup', (e) => {
   if (e.key.toLowerCase() === 'g') setBlowing(false);
@@ -339,6 +364,56 @@ const slash: { x: number; y: number; t: number }[] = [];
 function slashTo(s: ScissorsStroke): void {
   const cam = renderer.camera;
   slash.push({ x: cam.toScreenX(s.at[0]), y: cam.toScreenY(s.at[1]), t: performance.now() / 1000 });
+}
+/**
+ * Undo of the scissors: before each stroke the whole world is saved (`snapshot`: every point's
+ * position and velocity, every link, the wind's state and the clock), with the lab's counts and the
+ * shapes cut out so far. A stroke that cut something keeps its save on a stack (UNDO_DEPTH deep);
+ * `undoCut` puts the last one back (`restore`), so the sheet is as it was the moment before that
+ * stroke, tears made since included. A new sheet empties the stack.
+ */
+interface UndoEntry {
+  world: WorldSnapshot;
+  cut: number;
+  torn: number;
+  done: number;
+}
+/** Strokes that can be undone, most recent last. */
+const undoStack: UndoEntry[] = [];
+/** The save taken when the current stroke began (kept if the stroke cuts something). */
+let strokeSave: UndoEntry | null = null;
+/** How many strokes can be undone, at most. */
+const UNDO_DEPTH = 10;
+/** Greys the undo button out when there is nothing to undo. */
+function refreshUndo(): void {
+  const none = undoStack.length === 0;
+  undoButton.disabled = none;
+  undoButton.style.opacity = none ? '0.45' : '';
+}
+/**
+ * Puts the sheet back as it was just before the last stroke that cut it (see UndoEntry). Does
+ * nothing while a stroke is under way or when no stroke is left to undo.
+ */
+function undoCut(): void {
+  if (stroke) return;
+  const last = undoStack.pop();
+  refreshUndo();
+  if (!last) return;
+  grab?.release();
+  grab = null;
+  restore(shell.world, last.world);
+  cut = last.cut;
+  torn = last.torn;
+  challenge.done.length = last.done;
+  // The cloth's link version went back with the world: the cells, the pieces and the drawing are
+  // worked out again from the links as they are now.
+  cells.invalidate();
+  challenge.invalidate();
+  sheet?.invalidate();
+  cells.loosen(shell.world);
+  challenge.update();
+  slash.length = 0;
+  sound.snap(0.2);
 }
 /** Counts and scores links the scissors cut (their midpoints, as cutAlong returns them). */
 function snip(cutHere: number[]): void {
@@ -363,6 +438,7 @@ canvas.addEventListener('pointerdown', (e) => {
   grab = null;
   stroke = null;
   if (tool === 'cut' || e.button === 2) {
+    strokeSave = { world: snapshot(shell.world), cut, torn, done: challenge.done.length };
     // A point over a cut holds on to the cloth's nearest point within a link's length.
     stroke = { cut: new ScissorsStroke(shell.world, cloth, x, y, SHEET_WIDTH / (params.size - 1), STROKE_FRAME), id: e.pointerId };
     cutting = true;
@@ -383,6 +459,12 @@ const release = (): void => {
     const spacing = SHEET_WIDTH / (params.size - 1);
     snip(stroke.cut.close(CLOSE_GAP * spacing, CLOSE_LENGTH));
     slashTo(stroke.cut);
+    if (strokeSave && cut > strokeSave.cut) {
+      undoStack.push(strokeSave);
+      if (undoStack.length > UNDO_DEPTH) undoStack.shift();
+      refreshUndo();
+    }
+    strokeSave = null;
   }
   grab?.release();
   grab = null;
@@ -395,7 +477,11 @@ shell.onWorldChange(() => {
   grab = null;
   stroke = null;
   cutting = false;
+  strokeSave = null;
+  undoStack.length = 0;
+  refreshUndo();
 });
+refreshUndo();
 
 /**
  * Plays the snip and rip sounds for what was cut and torn since the last one (at most one of each per
@@ -640,6 +726,10 @@ shell.expose({
   links: () => query(shell.world, [shell.world.components.ClothLink]).length,
   torn: () => torn,
   cut: () => cut,
+  /** Strokes that can be undone (undo button, Ctrl/Cmd+Z). */
+  undoCount: () => undoStack.length,
+  /** Undoes the last cutting stroke (as the undo button). */
+  undoCut,
   /** The challenge: shapes cut out ({ shape, fit, stars }), and pieces that came away. */
   cutOuts: () => challenge.done.map((d) => ({ shape: SHAPES[d.shape]!.name, fit: d.fit, stars: d.stars })),
   scraps: () => challenge.scraps,

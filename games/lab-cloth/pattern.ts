@@ -264,6 +264,11 @@ export class Challenge {
     return fresh;
   }
 
+  /** Makes the next `update` group the pieces again (after the world was restored to an earlier state). */
+  invalidate(): void {
+    this.seenVersion = -1;
+  }
+
   /** Where piece `piece` of the last update is, m: the mean of its points. */
   centre(piece: number, out: [number, number]): [number, number] {
     const P = this.world.components.Position,

@@ -105,6 +105,11 @@ export class SheetView {
     this.container.addChild(this.mesh, this.edges);
   }
 
+  /** Makes the next `update` rebuild the triangles (after the world was restored to an earlier state). */
+  invalidate(): void {
+    this.builtVersion = -1;
+  }
+
   /** Moves and shades the mesh for interpolation factor `alpha` through `camera`; rebuilds the triangles after a tear. */
   update(camera: Camera, alpha: number): void {
     const P = this.world.components.Position,

@@ -33,6 +33,7 @@ interface ClothLab extends Lab {
   gust(): number;
   triangles(): number;
   shownStretch(): number;
+  undoCount(): number;
 }
 interface RopeLab extends Lab {
   ids(): { ball: number; ropes: { anchor: number[]; bodies: number[]; links: number[] }[] };
@@ -203,6 +204,82 @@ for (const [device, options] of [
       await drag(g.page, [{ x: box.x + box.width / 2, y: box.y + box.height / 2 }], 1, async () => {
         await g.waitFor(() => (window.game as unknown as ClothLab).gust() > 0.5, null);
       });
+      expect(g.errors).toEqual([]);
+    });
+
+    it('undo (the button, and Ctrl+Z on a desktop) puts the sheet back as it was before the last cut', async () => {
+      await g.page.evaluate(() => (window.game as unknown as { reset(): void }).reset());
+      await press(g.page, 'scissors: drag to cut (C)');
+      const undo = g.page.getByRole('button', { name: 'undo the last cut (Ctrl+Z)', exact: true });
+      // Nothing cut yet: nothing to undo.
+      expect(await undo.isDisabled()).toBe(true);
+      // Let the sheet sway a little, then pause: the state before the stroke is read exactly.
+      await g.page.evaluate(() => (window.game as unknown as Lab).advance(30));
+      /** Every cloth point's position and velocity, the links left, the triangles drawn and the lab's counts. */
+      const state = () =>
+        g.page.evaluate(() => {
+          const w = window.game as unknown as ClothLab & {
+            world: { components: { Velocity: { x: Float64Array; y: Float64Array } } };
+          };
+          const P = w.world.components.Position,
+            V = (w.world.components as unknown as { Velocity: { x: Float64Array; y: Float64Array } }).Velocity;
+          const pts = Array.from(w.cloth().points, (h) => h % 2 ** 25);
+          return {
+            pos: pts.flatMap((e) => [P.x[e]!, P.y[e]!]),
+            vel: pts.flatMap((e) => [V.x[e]!, V.y[e]!]),
+            links: w.links(),
+            cut: w.cut(),
+            scraps: w.scraps(),
+            time: w.world.time,
+          };
+        });
+      const stroke = async () => {
+        await g.page.evaluate(() => {
+          (window.game as unknown as Lab).paused = true;
+        });
+        const cl = await g.page.evaluate(() => {
+          const c = (window.game as unknown as ClothLab).cloth();
+          return { rows: c.rows, columns: c.columns };
+        });
+        const row = Math.round(cl.rows * 0.7);
+        const [lx, ly] = await clothPoint(g, row, 0),
+          [rx, ry] = await clothPoint(g, row, cl.columns - 1);
+        const before = await state();
+        const a = await toPage(g, lx - 0.3, ly),
+          b = await toPage(g, (lx + rx) / 2, (ly + ry) / 2),
+          c = await toPage(g, rx + 0.3, ry);
+        await drag(g.page, [a, b, c], 6);
+        await g.waitFor(() => (window.game as unknown as ClothLab).undoCount() === 1, null);
+        const after = await state();
+        expect(after.cut).toBeGreaterThan(cl.columns);
+        expect(after.links).toBeLessThan(before.links - cl.columns);
+        // The cut strip falls for a second: the sheet is far from where it was.
+        await g.page.evaluate(() => (window.game as unknown as Lab).advance(60));
+        const fallen = await state();
+        expect(Math.max(...fallen.pos.map((v, i) => Math.abs(v - before.pos[i]!)))).toBeGreaterThan(0.3);
+        return before;
+      };
+      for (const how of device === 'desktop' ? (['button', 'keys'] as const) : (['button'] as const)) {
+        const before = await stroke();
+        expect(await undo.isDisabled()).toBe(false);
+        if (how === 'button') await press(g.page, 'undo the last cut (Ctrl+Z)');
+        else await g.page.keyboard.press('Control+z');
+        await g.waitFor(() => (window.game as unknown as ClothLab).undoCount() === 0, null);
+        const back = await state();
+        // Exactly as before the stroke: every point's position and velocity (bit for bit: the world
+        // was saved and put back, not rebuilt), the links, the count of cut links, the clock.
+        expect(back.links).toBe(before.links);
+        expect(back.cut).toBe(before.cut);
+        expect(back.scraps).toBe(before.scraps);
+        expect(back.time).toBe(before.time);
+        expect(back.pos).toEqual(before.pos);
+        expect(back.vel).toEqual(before.vel);
+        expect(await undo.isDisabled()).toBe(true);
+        // It runs on from there: the sheet hangs whole (no piece comes away).
+        await g.page.evaluate(() => (window.game as unknown as Lab).advance(60));
+        expect(await g.page.evaluate(() => (window.game as unknown as ClothLab).scraps())).toBe(0);
+        expect(await g.page.evaluate(() => (window.game as unknown as ClothLab).links())).toBe(before.links);
+      }
       expect(g.errors).toEqual([]);
     });
   });
