@@ -318,7 +318,14 @@ tools.buttons[0]!.innerHTML = `${ICON_SCISSORS} Scissors`;
 tools.buttons[1]!.innerHTML = `${ICON_HAND} Hand`;
 tools.buttons[2]!.innerHTML = `${ICON_WIND} Gust`;
 const undoButton = tools.buttons[3]!;
-undoButton.innerHTML = `${ICON_UNDO} Undo`;
+// On a narrow phone the undo button shows its icon only (its name stays for screen readers), so the
+// four tools fit one row under the scene.
+const narrow = window.matchMedia('(max-width: 480px)');
+const labelUndo = (): void => {
+  undoButton.innerHTML = narrow.matches ? ICON_UNDO : `${ICON_UNDO} Undo`;
+};
+narrow.addEventListener('change', labelUndo);
+labelUndo();
 function setTool(t: Tool): void {
   tool = t;
   tools.setActive(0, t === 'cut');
