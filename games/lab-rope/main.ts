@@ -209,15 +209,38 @@ const toWorld = (e: PointerEvent): [number, number] => {
   pointerOnCanvas(canvas, e, at);
   return [renderer.camera.toWorldX(at.x), renderer.camera.toWorldY(at.y)];
 };
-let stroke: { x: number; y: number; sx: number; sy: number; moved: number; id: number } | null = null;
+let stroke: { x: number; y: number; sx: number; sy: number; moved: number; id: number; reach: number; cut: Set<number> } | null = null;
 const slash: { x: number; y: number; t: number }[] = [];
 /** How far from a rope a tap still cuts it, CSS px. */
 const TAP_REACH_PX = 26;
+/**
+ * How far from a rope a swipe still cuts it, CSS px, by pointer: a finger's stroke (about 8 mm wide
+ * under the fingertip, on a 3 px cord that swings) cuts a rope it passes within 14 px of; the mouse's
+ * within 5 px. (A swipe had to cross the cord's exact line: a flick that stopped a few pixels short
+ * left the rope whole.)
+ */
+const SWIPE_REACH_PX = { touch: 14, other: 5 } as const;
 
-function cutBetween(x0: number, y0: number, x1: number, y1: number, reach: number): void {
+/**
+ * Cuts the ropes the segment (x0, y0)-(x1, y1), m, crosses or ends within `reach` m of (cut.ts), but
+ * none in `spare` (the ropes this stroke has cut already: a stroke cuts each rope once, however
+ * long it runs beside it); each rope cut is added to `spare`.
+ */
+function cutBetween(x0: number, y0: number, x1: number, y1: number, reach: number, spare = new Set<number>()): void {
   if (game.outcome !== 'playing') return;
-  const made = cutRopes(shell.world, scene.ropes, scene.ball, x0, y0, x1, y1, reach);
+  const open = scene.ropes.flatMap((_, i) => (spare.has(i) ? [] : [i]));
+  const made = cutRopes(
+    shell.world,
+    open.map((i) => scene.ropes[i]!),
+    scene.ball,
+    x0,
+    y0,
+    x1,
+    y1,
+    reach,
+  );
   for (const c of made) {
+    spare.add(open[c.rope]!);
     cuts++;
     burst(c.x, c.y, 0xd9b67c, 8);
     snaps++;
@@ -259,7 +282,16 @@ canvas.addEventListener('pointerdown', (e) => {
       maxForce: 1.2 * w.components.Mass.value[b]! * Math.max(1, params.gravity),
     });
   } else {
-    stroke = { x, y, sx: at.x, sy: at.y, moved: 0, id: e.pointerId };
+    stroke = {
+      x,
+      y,
+      sx: at.x,
+      sy: at.y,
+      moved: 0,
+      id: e.pointerId,
+      reach: e.pointerType === 'touch' ? SWIPE_REACH_PX.touch : SWIPE_REACH_PX.other,
+      cut: new Set(),
+    };
     slash.length = 0;
     slash.push({ x: at.x, y: at.y, t: performance.now() / 1000 });
   }
@@ -275,7 +307,7 @@ canvas.addEventListener('pointermove', (e) => {
   stroke.moved += Math.hypot(at.x - stroke.sx, at.y - stroke.sy);
   stroke.sx = at.x;
   stroke.sy = at.y;
-  cutBetween(stroke.x, stroke.y, x, y, 0);
+  cutBetween(stroke.x, stroke.y, x, y, stroke.moved >= 8 ? stroke.reach / renderer.camera.toScreenLength(1) : 0, stroke.cut);
   stroke.x = x;
   stroke.y = y;
   slash.push({ x: at.x, y: at.y, t: performance.now() / 1000 });
@@ -288,7 +320,7 @@ const release = (e: PointerEvent): void => {
   releasePush();
   // A tap (a press that hardly moved): cut the rope nearest to it, if close enough.
   if (stroke && e.pointerId === stroke.id && stroke.moved < 8)
-    cutBetween(stroke.x, stroke.y, stroke.x, stroke.y, TAP_REACH_PX / renderer.camera.toScreenLength(1));
+    cutBetween(stroke.x, stroke.y, stroke.x, stroke.y, TAP_REACH_PX / renderer.camera.toScreenLength(1), stroke.cut);
   stroke = null;
 };
 canvas.addEventListener('pointerup', release);

@@ -251,6 +251,44 @@ for (const [device, options] of [
       expect(g.errors).toEqual([]);
     });
 
+    it('a swipe that stops just short of the rope still cuts it (14 px for a finger, 5 px for the mouse)', async () => {
+      await g.page.evaluate(() => {
+        const w = window.game as unknown as RopeLab & { reset(): void };
+        w.reset();
+        w.paused = true;
+      });
+      // Across the rope's middle link, square to it, from 60 px away to `short` px before its line
+      // (a stroke that never crosses it): before, only a crossing cut.
+      const short = device === 'phone' ? 10 : 3;
+      const line = await g.page.evaluate(() => {
+        const w = window.game as unknown as RopeLab;
+        const rope = w.ids().ropes[0]!,
+          P = w.world.components.Position;
+        const i = Math.floor(rope.bodies.length / 2);
+        const a = rope.bodies[i]! % 2 ** 25,
+          b = rope.bodies[i + 1]! % 2 ** 25;
+        return [P.x[a]!, P.y[a]!, P.x[b]!, P.y[b]!] as [number, number, number, number];
+      });
+      const a = await toPage(g, line[0], line[1]),
+        b = await toPage(g, line[2], line[3]);
+      const mx = (a.x + b.x) / 2,
+        my = (a.y + b.y) / 2,
+        len = Math.hypot(b.x - a.x, b.y - a.y);
+      const nx = -(b.y - a.y) / len,
+        ny = (b.x - a.x) / len;
+      const path = [
+        { x: mx + 60 * nx, y: my + 60 * ny },
+        { x: mx + short * nx, y: my + short * ny },
+      ];
+      await drag(g.page, path, 6);
+      const state = await g.page.evaluate(() => {
+        const w = window.game as unknown as RopeLab;
+        return { cuts: w.cuts(), holding: w.holding() };
+      });
+      expect(state, `${device}: a swipe stopping ${short} px short`).toEqual({ cuts: 1, holding: 0 });
+      expect(g.errors).toEqual([]);
+    });
+
     it('a tap beside a rope cuts it; cut at the right time, the ball lands in the basket and the next level is offered', async () => {
       // Level 1 is won by a cut 1.5-1.95 s in (test/games/lab-rope.test.ts): run to 1.75 s, paused.
       await g.page.evaluate(() => {
