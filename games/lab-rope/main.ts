@@ -419,12 +419,38 @@ function draw(alpha: number, world: PhysicsWorld): void {
   readout.set(4, `${fmt(world.joints.stats.maxError * 1000, 3)} mm`);
 }
 
+/** Heights the banner may stand at, m, in order of preference: mid-scene first. */
+const BANNER_HEIGHTS = [3.4, 4.1, 2.6, 4.8, 1.8];
+/** A star's drawn glow reaches this far from its centre, m (view.ts: 0.22 m x 1.6, pulsing 8%). */
+const STAR_GLOW = 0.38;
+/**
+ * The first of BANNER_HEIGHTS (m) at which the banner's box stays clear of every star not caught
+ * yet (so the banner never hides one); the first height if none is clear.
+ */
+function bannerHeight(): number {
+  const cam = renderer.camera;
+  const halfW = banner.width / 2,
+    halfH = banner.height / 2;
+  for (const y of BANNER_HEIGHTS) {
+    const by = cam.toScreenY(y);
+    const clear = scene.level.stars.every(([sx, sy], i) => {
+      if (game.caught[i]) return true;
+      const r = cam.toScreenLength(STAR_GLOW);
+      const dx = Math.max(0, Math.abs(cam.toScreenX(sx) - cam.width / 2) - halfW),
+        dy = Math.max(0, Math.abs(cam.toScreenY(sy) - by) - halfH);
+      return dx * dx + dy * dy > r * r;
+    });
+    if (clear) return y;
+  }
+  return BANNER_HEIGHTS[0]!;
+}
+
 /** The banner in the middle of the scene: the level's name at its start, then the outcome. */
 function drawBanner(now: number): void {
   const cam = renderer.camera;
   banner.style.wordWrapWidth = Math.max(200, cam.width - 40);
   banner.x = cam.width / 2;
-  banner.y = cam.toScreenY(3.4);
+  banner.y = cam.toScreenY(bannerHeight());
   if (game.outcome === 'won') {
     const s = game.stars();
     const last = params.level === LEVELS.length;
@@ -471,6 +497,13 @@ shell.expose({
   /** The level shown (1-based), and the best stars of each level (-1: not cleared). */
   level: () => params.level,
   best: () => [...best],
+  /** The banner over the scene: its text ('' while hidden) and box (x, y, width, height, px). */
+  banner: () => ({
+    text: banner.visible ? banner.text : '',
+    box: [banner.x - banner.width / 2, banner.y - banner.height / 2, banner.width, banner.height],
+  }),
+  /** The level's stars (x, y, m) and whether each is caught. */
+  starsAt: () => scene.level.stars.map(([x, y], i) => ({ x, y, caught: game.caught[i]! })),
   /** Rope pieces drawn in the last frame (one a whole rope; each cut adds one). */
   ropePieces: () => view.pieces,
   /** Goes to level n (1-based). */

@@ -251,6 +251,43 @@ for (const [device, options] of [
       expect(g.errors).toEqual([]);
     });
 
+    it("the level's banner keeps clear of the stars on every level", async () => {
+      // Each level's banner box against each star's glow (0.38 m round it), at the level's start:
+      // level 1's name was drawn over its low star (3.2 m up, under the banner's 3.4 m).
+      for (let level = 1; level <= 5; level++) {
+        const r = await g.page.evaluate((n) => {
+          const w = window.game as unknown as RopeLab & {
+            goTo(n: number): void;
+            banner(): { text: string; box: number[] };
+            starsAt(): { x: number; y: number; caught: boolean }[];
+            renderer: { camera: Cam & { toScreenLength(l: number): number } };
+          };
+          w.goTo(n);
+          w.paused = true;
+          return new Promise<{ text: string; box: number[]; stars: number[][] }>((done) =>
+            requestAnimationFrame(() =>
+              requestAnimationFrame(() => {
+                const cam = w.renderer.camera;
+                done({
+                  ...w.banner(),
+                  stars: w.starsAt().map((s) => [cam.toScreenX(s.x), cam.toScreenY(s.y), cam.toScreenLength(0.38)]),
+                });
+              }),
+            ),
+          );
+        }, level);
+        expect(r.text).toMatch(new RegExp(`^Level ${level}: `));
+        const [bx, by, bw, bh] = r.box as [number, number, number, number];
+        for (const [sx, sy, sr] of r.stars as [number, number, number][]) {
+          const dx = Math.max(0, bx - sx, sx - (bx + bw)),
+            dy = Math.max(0, by - sy, sy - (by + bh));
+          expect(Math.hypot(dx, dy), `${device}, level ${level}: star at (${sx}, ${sy}) px`).toBeGreaterThan(sr);
+        }
+      }
+      await g.page.evaluate(() => (window.game as unknown as { goTo(n: number): void }).goTo(1));
+      expect(g.errors).toEqual([]);
+    });
+
     it('a swipe that stops just short of the rope still cuts it (14 px for a finger, 5 px for the mouse)', async () => {
       await g.page.evaluate(() => {
         const w = window.game as unknown as RopeLab & { reset(): void };
