@@ -820,10 +820,11 @@ function draw(): void {
       if (wy > surface - 0.5) continue;
       g.circle(sx(wx), sy(wy), 0.8 + ((h >>> 16) & 3) * 0.35).fill({ color: 0xcfe6ff, alpha: 0.25 + ((h >>> 20) & 7) * 0.04 });
     }
-  // Seabed.
+  // Seabed. Its outline is kept inside the view (at most H): where the bed dips below the view's
+  // bottom an outline below H folded the polygon over itself, and its fill drew dark wedges.
   g.moveTo(0, H);
   for (let px = 0; ; px = Math.min(W, px + 6)) {
-    g.lineTo(px, sy(seabedHeight(handles.seabed, cx + (px - W / 2) / k)));
+    g.lineTo(px, Math.min(H, sy(seabedHeight(handles.seabed, cx + (px - W / 2) / k))));
     if (px >= W) break;
   }
   g.lineTo(W, H).closePath().fill(0x5b4a32);
@@ -835,7 +836,7 @@ function draw(): void {
   if (sy(bedAt(cx)) < H + 40 * k) {
     g.moveTo(0, H);
     for (let px = 0; ; px = Math.min(W, px + 12)) {
-      g.lineTo(px, sy(bedAt(cx + (px - W / 2) / k) - 3));
+      g.lineTo(px, Math.min(H, sy(bedAt(cx + (px - W / 2) / k) - 3)));
       if (px >= W) break;
     }
     g.lineTo(W, H).closePath().fill({ color: 0x2e2418, alpha: 0.6 });
