@@ -160,7 +160,7 @@ const game = await startPixiGame({
     }
   },
   controls: [
-    { keys: '← ↑ → ↓', action: 'thrust (one at a time)', touch: 'hold ← ↑ → ↓' },
+    { keys: '← ↑ → ↓', action: 'thrust (one at a time)', touch: 'hold, slide ← ↑ → ↓' },
     { keys: 'Enter', action: 'next level / play again', touch: 'the big button' },
     { keys: 'F', action: 'predicted path on / off' },
     { keys: 'V', action: 'replay the run from the start' },
@@ -308,7 +308,10 @@ style.textContent = `
 .bh-status.over .bh-message { color: #ff8c8c; cursor: pointer; }
 .bh-status.cleared .bh-message { color: #7ee787; cursor: pointer; font-weight: 600; }
 .bh-pad button { font-size: 22px; min-width: 56px; }
-@media (pointer: coarse) { .bh-pad button { min-width: 70px; min-height: 56px; } }
+@media (pointer: coarse) {
+  .bp-touchbar.bh-pad { flex: 1 1 100%; gap: 8px; padding: 2px 8px; }
+  .bp-touchbar.bh-pad button { flex: 1 1 0; max-width: 86px; min-height: 62px; font-size: 28px; border-radius: 14px; }
+}
 `;
 document.head.append(style);
 const DIRS = ['left', 'up', 'down', 'right'] as const;
@@ -323,6 +326,40 @@ const pad = createButtonBar(
 );
 pad.element.classList.add('bh-pad');
 for (const [i, dir] of DIRS.entries()) pad.buttons[i]!.dataset.dir = dir;
+// A finger (or the mouse) held on the pad slides from arrow to arrow: the thrust follows the arrow
+// under it, so the thumb steers without lifting (each button alone keeps its pointer captured and
+// would go on thrusting the first way until the finger lifts). `padPointers` keeps each pointer's
+// direction now; lifting it lets that direction go.
+const padPointers = new Map<number, Thrust>();
+/** The direction of the pad's arrow at client point (x, y), px, or null off the arrows. */
+function padDirAt(x: number, y: number): Thrust | null {
+  for (const [i, dir] of DIRS.entries()) {
+    const r = pad.buttons[i]!.getBoundingClientRect();
+    if (x >= r.left && x <= r.right && y >= r.top && y <= r.bottom) return dir;
+  }
+  return null;
+}
+pad.element.addEventListener('pointerdown', (e) => {
+  const dir = padDirAt(e.clientX, e.clientY);
+  if (dir) padPointers.set(e.pointerId, dir);
+});
+pad.element.addEventListener('pointermove', (e) => {
+  const was = padPointers.get(e.pointerId);
+  if (!was) return;
+  const dir = padDirAt(e.clientX, e.clientY);
+  if (!dir || dir === was) return;
+  padPointers.set(e.pointerId, dir);
+  release(was);
+  press(dir);
+});
+const padLift = (e: PointerEvent): void => {
+  const dir = padPointers.get(e.pointerId);
+  if (!dir) return;
+  padPointers.delete(e.pointerId);
+  release(dir);
+};
+pad.element.addEventListener('pointerup', padLift);
+pad.element.addEventListener('pointercancel', padLift);
 const touch = isTouchDevice();
 // On a touch screen, a tap on the scene after the game is over (or a level is cleared) goes on.
 app.canvas.addEventListener('pointerup', () => {
@@ -672,6 +709,10 @@ function startSwallow(): void {
   swallow.start = performance.now();
 }
 
+/** The ship's drawn height at the least, px (it is 1 m tall where a metre is more). */
+const SHIP_MIN_PX = 26;
+/** The ship's drawn height in the last frame, px. */
+let shipPx = 0;
 /** The ship's arrowhead at screen (sx, sy), k px a metre, turned by `turn` rad. */
 function drawShip(sx: number, sy: number, k: number, turn: number, color: number): void {
   const c = Math.cos(turn),
@@ -704,9 +745,11 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
     pathPoints = 0;
   }
   // The ship: a small arrowhead, nose up, 1 m tall, with a flame out of the side opposite the thrust.
+  // The ship is drawn at least SHIP_MIN_PX tall (on a phone's narrow field it would be under 20 px).
   const sx = cam.toScreenX(x),
     sy = cam.toScreenY(y),
-    k = cam.toScreenLength(1);
+    k = Math.max(SHIP_MIN_PX, cam.toScreenLength(1));
+  shipPx = k;
   const age = performance.now() - swallow.start;
   if (swallow.active && age > SWALLOW_MS) swallow.active = false;
   if (swallow.active) {
@@ -759,6 +802,8 @@ shell.expose({
     const c = bh.world.components;
     return [c.Position.x[slotOf(bh.ship)]!, c.Position.y[slotOf(bh.ship)]!, c.Velocity.x[slotOf(bh.ship)]!, c.Velocity.y[slotOf(bh.ship)]!];
   },
+  /** The ship's drawn height in the last frame, px (at least SHIP_MIN_PX). */
+  shipPx: (): number => shipPx,
   /** Points of the predicted path drawn in the last frame. */
   pathPoints: (): number => pathPoints,
   /** The level banner's text while it shows (at a level's start, until the first thrust), else ''. */

@@ -209,15 +209,38 @@ const toWorld = (e: PointerEvent): [number, number] => {
   pointerOnCanvas(canvas, e, at);
   return [renderer.camera.toWorldX(at.x), renderer.camera.toWorldY(at.y)];
 };
-let stroke: { x: number; y: number; sx: number; sy: number; moved: number; id: number } | null = null;
+let stroke: { x: number; y: number; sx: number; sy: number; moved: number; id: number; reach: number; cut: Set<number> } | null = null;
 const slash: { x: number; y: number; t: number }[] = [];
 /** How far from a rope a tap still cuts it, CSS px. */
 const TAP_REACH_PX = 26;
+/**
+ * How far from a rope a swipe still cuts it, CSS px, by pointer: a finger's stroke (about 8 mm wide
+ * under the fingertip, on a 3 px cord that swings) cuts a rope it passes within 14 px of; the mouse's
+ * within 5 px. (A swipe had to cross the cord's exact line: a flick that stopped a few pixels short
+ * left the rope whole.)
+ */
+const SWIPE_REACH_PX = { touch: 14, other: 5 } as const;
 
-function cutBetween(x0: number, y0: number, x1: number, y1: number, reach: number): void {
+/**
+ * Cuts the ropes the segment (x0, y0)-(x1, y1), m, crosses or ends within `reach` m of (cut.ts), but
+ * none in `spare` (the ropes this stroke has cut already: a stroke cuts each rope once, however
+ * long it runs beside it); each rope cut is added to `spare`.
+ */
+function cutBetween(x0: number, y0: number, x1: number, y1: number, reach: number, spare = new Set<number>()): void {
   if (game.outcome !== 'playing') return;
-  const made = cutRopes(shell.world, scene.ropes, scene.ball, x0, y0, x1, y1, reach);
+  const open = scene.ropes.flatMap((_, i) => (spare.has(i) ? [] : [i]));
+  const made = cutRopes(
+    shell.world,
+    open.map((i) => scene.ropes[i]!),
+    scene.ball,
+    x0,
+    y0,
+    x1,
+    y1,
+    reach,
+  );
   for (const c of made) {
+    spare.add(open[c.rope]!);
     cuts++;
     burst(c.x, c.y, 0xd9b67c, 8);
     snaps++;
@@ -259,7 +282,16 @@ canvas.addEventListener('pointerdown', (e) => {
       maxForce: 1.2 * w.components.Mass.value[b]! * Math.max(1, params.gravity),
     });
   } else {
-    stroke = { x, y, sx: at.x, sy: at.y, moved: 0, id: e.pointerId };
+    stroke = {
+      x,
+      y,
+      sx: at.x,
+      sy: at.y,
+      moved: 0,
+      id: e.pointerId,
+      reach: e.pointerType === 'touch' ? SWIPE_REACH_PX.touch : SWIPE_REACH_PX.other,
+      cut: new Set(),
+    };
     slash.length = 0;
     slash.push({ x: at.x, y: at.y, t: performance.now() / 1000 });
   }
@@ -275,7 +307,7 @@ canvas.addEventListener('pointermove', (e) => {
   stroke.moved += Math.hypot(at.x - stroke.sx, at.y - stroke.sy);
   stroke.sx = at.x;
   stroke.sy = at.y;
-  cutBetween(stroke.x, stroke.y, x, y, 0);
+  cutBetween(stroke.x, stroke.y, x, y, stroke.moved >= 8 ? stroke.reach / renderer.camera.toScreenLength(1) : 0, stroke.cut);
   stroke.x = x;
   stroke.y = y;
   slash.push({ x: at.x, y: at.y, t: performance.now() / 1000 });
@@ -288,7 +320,7 @@ const release = (e: PointerEvent): void => {
   releasePush();
   // A tap (a press that hardly moved): cut the rope nearest to it, if close enough.
   if (stroke && e.pointerId === stroke.id && stroke.moved < 8)
-    cutBetween(stroke.x, stroke.y, stroke.x, stroke.y, TAP_REACH_PX / renderer.camera.toScreenLength(1));
+    cutBetween(stroke.x, stroke.y, stroke.x, stroke.y, TAP_REACH_PX / renderer.camera.toScreenLength(1), stroke.cut);
   stroke = null;
 };
 canvas.addEventListener('pointerup', release);
@@ -387,12 +419,38 @@ function draw(alpha: number, world: PhysicsWorld): void {
   readout.set(4, `${fmt(world.joints.stats.maxError * 1000, 3)} mm`);
 }
 
+/** Heights the banner may stand at, m, in order of preference: mid-scene first. */
+const BANNER_HEIGHTS = [3.4, 4.1, 2.6, 4.8, 1.8];
+/** A star's drawn glow reaches this far from its centre, m (view.ts: 0.22 m x 1.6, pulsing 8%). */
+const STAR_GLOW = 0.38;
+/**
+ * The first of BANNER_HEIGHTS (m) at which the banner's box stays clear of every star not caught
+ * yet (so the banner never hides one); the first height if none is clear.
+ */
+function bannerHeight(): number {
+  const cam = renderer.camera;
+  const halfW = banner.width / 2,
+    halfH = banner.height / 2;
+  for (const y of BANNER_HEIGHTS) {
+    const by = cam.toScreenY(y);
+    const clear = scene.level.stars.every(([sx, sy], i) => {
+      if (game.caught[i]) return true;
+      const r = cam.toScreenLength(STAR_GLOW);
+      const dx = Math.max(0, Math.abs(cam.toScreenX(sx) - cam.width / 2) - halfW),
+        dy = Math.max(0, Math.abs(cam.toScreenY(sy) - by) - halfH);
+      return dx * dx + dy * dy > r * r;
+    });
+    if (clear) return y;
+  }
+  return BANNER_HEIGHTS[0]!;
+}
+
 /** The banner in the middle of the scene: the level's name at its start, then the outcome. */
 function drawBanner(now: number): void {
   const cam = renderer.camera;
   banner.style.wordWrapWidth = Math.max(200, cam.width - 40);
   banner.x = cam.width / 2;
-  banner.y = cam.toScreenY(3.4);
+  banner.y = cam.toScreenY(bannerHeight());
   if (game.outcome === 'won') {
     const s = game.stars();
     const last = params.level === LEVELS.length;
@@ -439,6 +497,13 @@ shell.expose({
   /** The level shown (1-based), and the best stars of each level (-1: not cleared). */
   level: () => params.level,
   best: () => [...best],
+  /** The banner over the scene: its text ('' while hidden) and box (x, y, width, height, px). */
+  banner: () => ({
+    text: banner.visible ? banner.text : '',
+    box: [banner.x - banner.width / 2, banner.y - banner.height / 2, banner.width, banner.height],
+  }),
+  /** The level's stars (x, y, m) and whether each is caught. */
+  starsAt: () => scene.level.stars.map(([x, y], i) => ({ x, y, caught: game.caught[i]! })),
   /** Rope pieces drawn in the last frame (one a whole rope; each cut adds one). */
   ropePieces: () => view.pieces,
   /** Goes to level n (1-based). */

@@ -106,6 +106,28 @@ const FRAME_MARGIN = 60;
 const FRAME_MIN_ZOOM = pageLayout().compact() ? 4 : 2;
 /** The camera's zoom now, px/m (eased toward the framing zoom; NaN: set at the next frame). */
 let zoom = Number.NaN;
+/** The view leads the hull by its velocity times this, s (the look-ahead). */
+const LEAD_TIME = 2.2;
+/** The look-ahead is at most this share of the distance from the view's centre to the framing margin. */
+const LEAD_SHARE = 0.6;
+/** The look-ahead eases toward its target with this time constant, s of game time. */
+const LEAD_EASE = 0.8;
+/**
+ * The camera as last drawn: centre (x, y, m), zoom (px/m), the eased look-ahead (leadX, leadY, m,
+ * before its limit), the game time it was eased to (s), the shake now (px) and the view's size (px).
+ */
+const camera = { x: 0, y: 0, zoom: 0, leadX: 0, leadY: 0, time: 0, shake: 0, width: 0, height: 0 };
+/**
+ * Hits on the hull, for drawing: what hit it ('mine' or 'seabed'), where (m: the mine's centre, or
+ * the point of the hull that struck the bed) and when (game time, s).
+ */
+const hitMarks: { kind: 'mine' | 'seabed'; x: number; y: number; time: number }[] = [];
+/** How long a hit's label, sand cloud and red flash last, s of game time. */
+const HIT_LIFE = 1.8;
+/** How long a hit shakes the view, s of game time. */
+const HIT_SHAKE_LIFE = 0.6;
+/** The shake's amplitude at the moment of a hit, px. */
+const SHAKE_PX = 9;
 
 function createWorld(): PhysicsWorld {
   const world = createPhysicsWorld(submarine.worldOptions());
@@ -128,6 +150,8 @@ function createWorld(): PhysicsWorld {
   blasts.length = 0;
   aim.index = -1;
   zoom = Number.NaN;
+  Object.assign(camera, { leadX: 0, leadY: 0, time: 0, shake: 0 });
+  hitMarks.length = 0;
   pickups.length = 0;
   return world;
 }
@@ -169,6 +193,8 @@ function stickShare(v: number, key: boolean): number {
   return 0.25 + 0.75 * Math.max(0, Math.min(1, (Math.abs(v) - STICK_DEAD) / (1 - STICK_DEAD)));
 }
 
+/** Where the hull last touched the seabed (m), filled by touchSeabed. */
+const seabedContact = { x: 0, y: 0 };
 /** The vertical command last step (-1 dive, 1 rise, 0 none): a hiss when it starts. */
 let lastVertical = 0;
 /** Game time of the last sonar ping, s. */
@@ -204,7 +230,7 @@ function stepWorld(world: PhysicsWorld): void {
   const c = world.components,
     e = handles.hull;
   const wasTouching = state.touching;
-  const contact = touchSeabed(world, handles, state, world.time, input.dive);
+  const contact = touchSeabed(world, handles, state, world.time, input.dive, seabedContact);
   if (contact !== '') {
     // The helm brakes and holds the depth it stops at, above the contact.
     state.holdY = Number.NaN;
@@ -212,6 +238,7 @@ function stepWorld(world: PhysicsWorld): void {
     if (contact === 'hit') {
       state.hits++;
       state.lastHit = 'seabed';
+      hitMarks.push({ kind: 'seabed', x: seabedContact.x, y: seabedContact.y, time: world.time });
       if (state.hits >= 3) state.over = 'sunk';
     }
   }
@@ -231,6 +258,7 @@ function stepWorld(world: PhysicsWorld): void {
       r = Math.max(1e-6, Math.hypot(dx, dy));
     applyImpulse(world, e, [(MINE_BLAST_IMPULSE * dx) / r, (MINE_BLAST_IMPULSE * dy) / r]);
     blasts.push({ x: m.x, y: m.y, time: world.time });
+    hitMarks.push({ kind: 'mine', x: m.x, y: m.y, time: world.time });
     sound.explosion(0.9);
     if (state.hits >= 3) state.over = 'sunk';
   }
@@ -319,6 +347,13 @@ goal.dataset.hud = 'goal';
 goal.style.cssText = 'font-weight: 700; color: #ffe066;';
 const readout = document.createElement('div');
 readout.dataset.hud = 'readout';
+const readoutText = document.createElement('span');
+/** The hull gauge: a bar a third each, lit red and pulsing at a hit, so the cost of a hit is seen. */
+const hullGauge = document.createElement('span');
+hullGauge.dataset.hud = 'hull';
+hullGauge.style.cssText =
+  'display: inline-block; padding: 0 5px; border-radius: 5px; font-weight: 700; white-space: nowrap; transform-origin: left center;';
+readout.append(readoutText, hullGauge);
 const instruments = document.createElement('div');
 instruments.dataset.hud = 'instruments';
 instruments.style.cssText = 'font-size: 11px; color: #b4c4d4;';
@@ -421,6 +456,86 @@ function runStars(): number {
   return 1 + Number(state.time <= state.par) + Number(state.hits === 0);
 }
 let gaugeFrame = 0;
+/** How long the hull gauge stays lit after a hit, s of game time. */
+const GAUGE_FLASH = 1.4;
+/** The hull gauge's flash now, in [0, 1] (0: not lit). */
+let gaugeFlash = 0;
+/** Writes the hull gauge: a bar for each third left, hollow for each lost, and n/3; red once two are lost. */
+function showHull(): void {
+  const left = Math.max(0, 3 - state.hits);
+  hullGauge.textContent = `hull ${'▮'.repeat(left)}${'▯'.repeat(3 - left)} ${left}/3`;
+  hullGauge.style.color = left <= 1 ? '#ff8a7a' : '';
+}
+/** The label at a hit: what hit the hull ("MINE!", "SEABED SCRAPE") and its cost. */
+const hitLabel = new Text({
+  text: '',
+  style: {
+    fill: 0xff6b5a,
+    fontSize: 22,
+    fontWeight: '800',
+    fontFamily: 'system-ui, sans-serif',
+    align: 'center',
+    stroke: { color: 0x1a0606, width: 5 },
+  },
+});
+hitLabel.anchor.set(0.5);
+hitLabel.visible = false;
+app.stage.addChild(hitLabel);
+/** The label's text for each cause of a hit. */
+const HIT_TEXT = { mine: 'MINE!\n−1 hull', seabed: 'SEABED SCRAPE\n−1 hull' } as const;
+/**
+ * Draws the newest hit's signs at game time `t` (s), `k` px a metre, through `sx`, `sy` (world m to
+ * screen px) in a `W` x `H` px view: a red ring spreading from the place, a cloud of sand and a fan
+ * of sparks there for a seabed scrape (a mine's blast is drawn by drawMines), a red frame round the
+ * view fading over 0.6 s, and the label naming the cause over the place, rising and fading over HIT_LIFE s.
+ */
+function drawHits(t: number, k: number, sx: (x: number) => number, sy: (y: number) => number, W: number, H: number, hullTop: number): void {
+  for (let i = hitMarks.length - 1; i >= 0; i--) if (t < hitMarks[i]!.time) hitMarks.splice(i, 1);
+  const m = hitMarks[hitMarks.length - 1];
+  const u = m ? (t - m.time) / HIT_LIFE : 1;
+  hitLabel.visible = m !== undefined && u < 1;
+  if (!m || u >= 1) return;
+  const x = sx(m.x),
+    y = sy(m.y),
+    fade = 1 - u;
+  g.circle(x, y, (1.5 + 10 * Math.sqrt(u)) * k).stroke({ color: 0xff3b30, alpha: 0.9 * fade, width: 3 });
+  if (m.kind === 'seabed') {
+    const h0 = Math.floor(m.time * 1000);
+    for (let j = 0; j < 18; j++) {
+      const h = speckHash(j, h0),
+        a = Math.PI * (0.1 + 0.8 * ((h & 0xff) / 255)),
+        r = (0.5 + (3 + (4 * ((h >>> 8) & 0xff)) / 255) * Math.sqrt(u)) * k;
+      g.circle(x + r * Math.cos(a), y - r * Math.sin(a) * 0.6, Math.max(2, (0.5 + 1.4 * u) * k * (0.6 + ((h >>> 16) & 3) * 0.2))).fill({
+        color: j % 3 === 0 ? 0xc9ad7a : 0x8a7350,
+        alpha: 0.75 * fade,
+      });
+    }
+    if (u < 0.3)
+      for (let j = 0; j < 8; j++) {
+        const a = Math.PI * (0.15 + (0.7 * j) / 7),
+          r0 = (0.5 + 6 * u) * k,
+          r1 = r0 + 1.5 * k;
+        g.moveTo(x + r0 * Math.cos(a), y - r0 * Math.sin(a))
+          .lineTo(x + r1 * Math.cos(a), y - r1 * Math.sin(a))
+          .stroke({ color: 0xfff0b0, alpha: 1 - u / 0.3, width: 2 });
+      }
+  }
+  const flash = Math.max(0, 1 - (t - m.time) / 0.6);
+  if (flash > 0) g.rect(0, 0, W, H).stroke({ color: 0xff3b30, width: 18, alpha: 0.5 * flash, alignment: 1 });
+  hitLabel.text = HIT_TEXT[m.kind];
+  hitLabel.alpha = u < 0.6 ? 1 : (1 - u) / 0.4;
+  hitLabel.scale.set(u < 0.06 ? 0.6 + 0.4 * (u / 0.06) + 0.2 * Math.sin((Math.PI * u) / 0.06) : 1);
+  // Over the place and the hull (above whichever is higher), rising; under the hull instead if it
+  // would cover the beacon pointer's label or leave the view.
+  const lw = hitLabel.width,
+    lh = hitLabel.height;
+  const lx = Math.max(lw / 2 + 8, Math.min(W - lw / 2 - 8, x));
+  let ly = Math.min(y, hullTop) - lh / 2 - 6 - 24 * u;
+  const [px, py, pw, ph] = aim.label as [number, number, number, number];
+  const overPointer = pointer.visible && Math.abs(lx - (px + pw / 2)) < (lw + pw) / 2 && Math.abs(ly - (py + ph / 2)) < (lh + ph) / 2;
+  if (overPointer || ly < lh / 2 + 8) ly = Math.max(y, hullTop + (SUBMARINE.height + 5) * k) + lh / 2 + 6 + 24 * u;
+  hitLabel.position.set(lx, Math.max(lh / 2 + 8, Math.min(H - lh / 2 - 8, ly)));
+}
 /** The "beacon" tags under beacons in view other than the pointer's (a pool, hidden when unused). */
 const tags: Text[] = [];
 /** How many tags are shown this frame. */
@@ -614,10 +729,35 @@ function draw(): void {
   // inside the view when both do not fit; never more sky than the top 15% of the view.
   const reachX = Math.max(0, W / 2 - FRAME_MARGIN) / k,
     reachY = Math.max(0, H / 2 - FRAME_MARGIN) / k;
-  const cx = Math.max(hxw - reachX, Math.min(hxw + reachX, (hxw + fx) / 2)),
-    cy = Math.min(-H / k / 2 + (0.15 * H) / k, Math.max(hyw - reachY, Math.min(hyw + reachY, (hyw + fy) / 2)));
-  const sx = (x: number) => W / 2 + (x - cx) * k,
-    sy = (y: number) => H / 2 - (y - cy) * k;
+  // Look-ahead: the view leads the hull by LEAD_TIME s of its velocity, at most LEAD_SHARE of the way
+  // to the framing margin, eased over about LEAD_EASE s of game time (a bump or a blast does not jerk
+  // the view). Under way, the view's centre is at least that far ahead of the hull, so what lies
+  // ahead is in view even when the beacon framed is behind.
+  const dtCam = Math.max(0, Math.min(0.1, world.time - camera.time));
+  camera.time = world.time;
+  const ease = 1 - Math.exp(-dtCam / LEAD_EASE);
+  camera.leadX += (LEAD_TIME * c.Velocity.x[e]! - camera.leadX) * ease;
+  camera.leadY += (LEAD_TIME * c.Velocity.y[e]! - camera.leadY) * ease;
+  const leadX = Math.max(-LEAD_SHARE * reachX, Math.min(LEAD_SHARE * reachX, camera.leadX)),
+    leadY = Math.max(-LEAD_SHARE * reachY, Math.min(LEAD_SHARE * reachY, camera.leadY));
+  const atLeast = (framed: number, hull: number, lead: number) =>
+    lead > 0 ? Math.max(framed, hull + lead) : lead < 0 ? Math.min(framed, hull + lead) : framed;
+  const cx = Math.max(hxw - reachX, Math.min(hxw + reachX, atLeast((hxw + fx) / 2, hxw, leadX))),
+    cy = Math.min(-H / k / 2 + (0.15 * H) / k, Math.max(hyw - reachY, Math.min(hyw + reachY, atLeast((hyw + fy) / 2, hyw, leadY))));
+  camera.x = cx;
+  camera.y = cy;
+  camera.zoom = k;
+  camera.width = W;
+  camera.height = H;
+  // A hit shakes the view (drawing only): SHAKE_PX px at the hit, decaying over HIT_SHAKE_LIFE s.
+  const lastMark = hitMarks[hitMarks.length - 1];
+  const shakeAge = lastMark ? world.time - lastMark.time : Number.POSITIVE_INFINITY;
+  const shake = shakeAge >= 0 && shakeAge < HIT_SHAKE_LIFE ? SHAKE_PX * (1 - shakeAge / HIT_SHAKE_LIFE) ** 2 : 0;
+  camera.shake = shake;
+  const shakeX = shake * Math.sin(97 * world.time),
+    shakeY = shake * Math.cos(71 * world.time);
+  const sx = (x: number) => W / 2 + (x - cx) * k + shakeX,
+    sy = (y: number) => H / 2 - (y - cy) * k + shakeY;
   g.clear();
   g.rect(0, 0, W, Math.max(0, sy(0))).fill(0x8fc3ea);
   // Sea surface with waves.
@@ -680,10 +820,11 @@ function draw(): void {
       if (wy > surface - 0.5) continue;
       g.circle(sx(wx), sy(wy), 0.8 + ((h >>> 16) & 3) * 0.35).fill({ color: 0xcfe6ff, alpha: 0.25 + ((h >>> 20) & 7) * 0.04 });
     }
-  // Seabed.
+  // Seabed. Its outline is kept inside the view (at most H): where the bed dips below the view's
+  // bottom an outline below H folded the polygon over itself, and its fill drew dark wedges.
   g.moveTo(0, H);
   for (let px = 0; ; px = Math.min(W, px + 6)) {
-    g.lineTo(px, sy(seabedHeight(handles.seabed, cx + (px - W / 2) / k)));
+    g.lineTo(px, Math.min(H, sy(seabedHeight(handles.seabed, cx + (px - W / 2) / k))));
     if (px >= W) break;
   }
   g.lineTo(W, H).closePath().fill(0x5b4a32);
@@ -695,7 +836,7 @@ function draw(): void {
   if (sy(bedAt(cx)) < H + 40 * k) {
     g.moveTo(0, H);
     for (let px = 0; ; px = Math.min(W, px + 12)) {
-      g.lineTo(px, sy(bedAt(cx + (px - W / 2) / k) - 3));
+      g.lineTo(px, Math.min(H, sy(bedAt(cx + (px - W / 2) / k) - 3)));
       if (px >= W) break;
     }
     g.lineTo(W, H).closePath().fill({ color: 0x2e2418, alpha: 0.6 });
@@ -913,6 +1054,19 @@ function draw(): void {
     speed = Math.hypot(c.Velocity.x[e]!, c.Velocity.y[e]!);
   const floor = seabedHeight(handles.seabed, cx);
   engine.set(state.over ? 0 : Math.abs(state.throttle));
+  drawHits(t, k, sx, sy, W, H, sy(hyw) - (Hh + 2.5) * k);
+  // The hull gauge at a hit: red and enlarged, fading over GAUGE_FLASH s of game time.
+  const hitAge = hitMarks.length > 0 ? t - hitMarks[hitMarks.length - 1]!.time : Number.POSITIVE_INFINITY;
+  const flashNow = hitAge >= 0 && hitAge < GAUGE_FLASH ? 1 - hitAge / GAUGE_FLASH : 0;
+  if (flashNow > 0 || gaugeFlash > 0) {
+    gaugeFlash = flashNow;
+    if (hullGauge.dataset.hits !== String(state.hits)) {
+      hullGauge.dataset.hits = String(state.hits);
+      showHull();
+    }
+    hullGauge.style.background = flashNow > 0 ? `rgba(255, 59, 48, ${(0.9 * flashNow).toFixed(3)})` : '';
+    hullGauge.style.transform = flashNow > 0 ? `scale(${(1 + 0.3 * flashNow ** 2).toFixed(3)})` : '';
+  }
   if (gaugeFrame++ % 6 !== 0) return;
   const end =
     state.over === 'won'
@@ -927,7 +1081,8 @@ function draw(): void {
     end || `Collect the ${taken.length} beacons · ${state.collected} of ${taken.length} · ${clock(state.time)} / par ${clock(state.par)}`;
   // The clock turns red once par has passed.
   goal.style.color = !state.over && state.time > state.par ? '#ff9e8a' : '#ffe066';
-  readout.textContent = `depth ${depth.toFixed(0)} m · speed ${speed.toFixed(1)} m/s · hull ${3 - state.hits}/3`;
+  readoutText.textContent = `depth ${depth.toFixed(0)} m · speed ${speed.toFixed(1)} m/s · `;
+  showHull();
   instruments.textContent = `seabed ${(-floor).toFixed(0)} m · climb ${c.Velocity.y[e]!.toFixed(1)} m/s · pitch ${((a * 180) / Math.PI).toFixed(0)}° · screw ${(state.throttle * 100).toFixed(0)}% · tanks ${(B.fore[e]! * 100).toFixed(0)}/${(B.aft[e]! * 100).toFixed(0)}% (neutral ${(SUBMARINE_NEUTRAL_FILL * 100).toFixed(0)}%) · ${helm}`;
 }
 
@@ -946,6 +1101,25 @@ const panel = createPanel(
 shell.expose({
   /** The beacon pointer: the beacon it leads to (-1: none), distance (m), offset (m), arrow angle and whether it is on screen. */
   beaconPointer: () => ({ ...aim, visible: pointer.visible, text: pointer.text, zoom, otherTags }),
+  /** The camera as last drawn: centre (x, y, m), zoom (px/m), look-ahead (m, before its limit) and shake (px). */
+  camera: () => ({ ...camera }),
+  /**
+   * The newest hit's signs: its cause ('' before any), place (m), the label shown ('' once faded)
+   * and its screen box (x, y, width, height, px), and the hull gauge's text and running animations.
+   */
+  hitEffect: () => {
+    const m = hitMarks[hitMarks.length - 1];
+    return {
+      kind: m?.kind ?? '',
+      x: m?.x ?? Number.NaN,
+      y: m?.y ?? Number.NaN,
+      label: hitLabel.visible ? hitLabel.text : '',
+      box: [hitLabel.x - hitLabel.width / 2, hitLabel.y - hitLabel.height / 2, hitLabel.width, hitLabel.height],
+      shake: camera.shake,
+      gauge: hullGauge.textContent ?? '',
+      gaugeFlash,
+    };
+  },
   /** The collect effect: pickups still drawn (rings at the beacons) and the banner over the scene. */
   pickupEffect: () => ({ count: pickups.length, banner: banner.visible ? banner.text : '', alpha: banner.alpha }),
   params,

@@ -64,7 +64,9 @@ export type SeabedContact = '' | 'touch' | 'hit';
  * larger), plus friction along the bed up to `friction` times that impulse. Updates `state` (a
  * contact while `diving`, Dive held, sets `state.diveStopped`) and says
  * whether the contact costs a hit (approach speed over `SEABED.hitSpeed`, and the game time `time`,
- * s, past `state.spared`; a hit sets `state.spared` to `time + SEABED.cooldown`).
+ * s, past `state.spared`; a hit sets `state.spared` to `time + SEABED.cooldown`). On a contact,
+ * `at` (if given) is set to the point of the hull that is deepest in the bed (bow, stern or keel
+ * centre; x, y, m), where the hull struck it.
  */
 export function touchSeabed(
   world: PhysicsWorld,
@@ -72,6 +74,7 @@ export function touchSeabed(
   state: SeabedState,
   time: number,
   diving = false,
+  at?: { x: number; y: number },
 ): SeabedContact {
   const c = world.components,
     e = handles.hull;
@@ -84,7 +87,8 @@ export function touchSeabed(
     H = SUBMARINE.height / 2;
   // Bow, stern and keel centre; the deepest under the bed is the contact.
   let depth = 0,
-    px = x;
+    px = x,
+    py = y;
   for (const [qx, qy] of [
     [x + L * co, y + L * s],
     [x - L * co, y - L * s],
@@ -94,10 +98,15 @@ export function touchSeabed(
     if (d > depth) {
       depth = d;
       px = qx;
+      py = qy;
     }
   }
   state.touching = depth > 0;
   if (!state.touching) return '';
+  if (at) {
+    at.x = px;
+    at.y = py;
+  }
   if (diving) state.diveStopped = true;
   // The bed's normal from its local slope (central difference over 1 m).
   const slope = seabedHeight(handles.seabed, px + 0.5) - seabedHeight(handles.seabed, px - 0.5);

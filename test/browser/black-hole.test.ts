@@ -42,3 +42,51 @@ describe('black hole', () => {
     expect(g.errors).toEqual([]);
   });
 });
+
+describe.each([
+  { device: 'desktop', viewport: { width: 1280, height: 800 }, touch: false },
+  { device: 'phone', viewport: { width: 390, height: 844 }, touch: true },
+] as const)('black hole thrust pad ($device)', ({ device, viewport, touch }) => {
+  it('a finger (or the mouse) held on ↑ and slid onto → turns the thrust right; lifting it stops; the ship is drawn at least 26 px', async () => {
+    const p = await h.openGame('black-hole', { viewport, touch, query: { level: 1 } });
+    type Bh = { bh: { thrust: string }; shipPx(): number };
+    const centre = async (name: string): Promise<[number, number]> => {
+      const b = (await p.page.getByRole('button', { name, exact: true }).boundingBox())!;
+      return [b.x + b.width / 2, b.y + b.height / 2];
+    };
+    const up = await centre('thrust up'),
+      right = await centre('thrust right');
+    const thrust = () => p.page.evaluate(() => (window.game as unknown as Bh).bh.thrust);
+    const cdp = touch ? await p.page.context().newCDPSession(p.page) : null;
+    const finger = async (type: 'touchStart' | 'touchMove', [x, y]: [number, number]) =>
+      cdp!.send('Input.dispatchTouchEvent', { type, touchPoints: [{ x, y, id: 1 }] });
+    if (cdp) await finger('touchStart', up);
+    else {
+      await p.page.mouse.move(...up);
+      await p.page.mouse.down();
+    }
+    await p.waitFor(() => (window.game as unknown as Bh).bh.thrust === 'up', null);
+    // Slid across ↓ onto → without lifting: the thrust follows the arrow under it (before, the ↑
+    // button kept the pointer and thrust up until the finger lifted).
+    const path: [number, number][] = [0.25, 0.5, 0.75, 1].map((f) => [up[0] + f * (right[0] - up[0]), up[1]]);
+    for (const at of path) {
+      if (cdp) await finger('touchMove', at);
+      else await p.page.mouse.move(...at);
+    }
+    const slid = await p
+      .waitFor(() => {
+        const t = (window.game as unknown as Bh).bh.thrust;
+        return t === 'right' ? t : null;
+      }, null)
+      .catch(async () => thrust());
+    expect(slid, `${device}: thrust after sliding onto →`).toBe('right');
+    if (cdp) {
+      await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
+      await cdp.detach();
+    } else await p.page.mouse.up();
+    await p.waitFor(() => (window.game as unknown as Bh).bh.thrust === 'none', null);
+    expect(await p.page.evaluate(() => (window.game as unknown as Bh).shipPx())).toBeGreaterThanOrEqual(26);
+    expect(p.errors).toEqual([]);
+    await p.close();
+  });
+});

@@ -328,6 +328,81 @@ for (const [device, options] of [
       expect(g.errors).toEqual([]);
     });
 
+    it("the level's banner keeps clear of the stars on every level", async () => {
+      // Each level's banner box against each star's glow (0.38 m round it), at the level's start:
+      // level 1's name was drawn over its low star (3.2 m up, under the banner's 3.4 m).
+      for (let level = 1; level <= 5; level++) {
+        const r = await g.page.evaluate((n) => {
+          const w = window.game as unknown as RopeLab & {
+            goTo(n: number): void;
+            banner(): { text: string; box: number[] };
+            starsAt(): { x: number; y: number; caught: boolean }[];
+            renderer: { camera: Cam & { toScreenLength(l: number): number } };
+          };
+          w.goTo(n);
+          w.paused = true;
+          return new Promise<{ text: string; box: number[]; stars: number[][] }>((done) =>
+            requestAnimationFrame(() =>
+              requestAnimationFrame(() => {
+                const cam = w.renderer.camera;
+                done({
+                  ...w.banner(),
+                  stars: w.starsAt().map((s) => [cam.toScreenX(s.x), cam.toScreenY(s.y), cam.toScreenLength(0.38)]),
+                });
+              }),
+            ),
+          );
+        }, level);
+        expect(r.text).toMatch(new RegExp(`^Level ${level}: `));
+        const [bx, by, bw, bh] = r.box as [number, number, number, number];
+        for (const [sx, sy, sr] of r.stars as [number, number, number][]) {
+          const dx = Math.max(0, bx - sx, sx - (bx + bw)),
+            dy = Math.max(0, by - sy, sy - (by + bh));
+          expect(Math.hypot(dx, dy), `${device}, level ${level}: star at (${sx}, ${sy}) px`).toBeGreaterThan(sr);
+        }
+      }
+      await g.page.evaluate(() => (window.game as unknown as { goTo(n: number): void }).goTo(1));
+      expect(g.errors).toEqual([]);
+    });
+
+    it('a swipe that stops just short of the rope still cuts it (14 px for a finger, 5 px for the mouse)', async () => {
+      await g.page.evaluate(() => {
+        const w = window.game as unknown as RopeLab & { reset(): void };
+        w.reset();
+        w.paused = true;
+      });
+      // Across the rope's middle link, square to it, from 60 px away to `short` px before its line
+      // (a stroke that never crosses it): before, only a crossing cut.
+      const short = device === 'phone' ? 10 : 3;
+      const line = await g.page.evaluate(() => {
+        const w = window.game as unknown as RopeLab;
+        const rope = w.ids().ropes[0]!,
+          P = w.world.components.Position;
+        const i = Math.floor(rope.bodies.length / 2);
+        const a = rope.bodies[i]! % 2 ** 25,
+          b = rope.bodies[i + 1]! % 2 ** 25;
+        return [P.x[a]!, P.y[a]!, P.x[b]!, P.y[b]!] as [number, number, number, number];
+      });
+      const a = await toPage(g, line[0], line[1]),
+        b = await toPage(g, line[2], line[3]);
+      const mx = (a.x + b.x) / 2,
+        my = (a.y + b.y) / 2,
+        len = Math.hypot(b.x - a.x, b.y - a.y);
+      const nx = -(b.y - a.y) / len,
+        ny = (b.x - a.x) / len;
+      const path = [
+        { x: mx + 60 * nx, y: my + 60 * ny },
+        { x: mx + short * nx, y: my + short * ny },
+      ];
+      await drag(g.page, path, 6);
+      const state = await g.page.evaluate(() => {
+        const w = window.game as unknown as RopeLab;
+        return { cuts: w.cuts(), holding: w.holding() };
+      });
+      expect(state, `${device}: a swipe stopping ${short} px short`).toEqual({ cuts: 1, holding: 0 });
+      expect(g.errors).toEqual([]);
+    });
+
     it('a tap beside a rope cuts it; cut at the right time, the ball lands in the basket and the next level is offered', async () => {
       // Level 1 is won by a cut 1.5-1.95 s in (test/games/lab-rope.test.ts): run to 1.75 s, paused.
       await g.page.evaluate(() => {

@@ -1,0 +1,201 @@
+/**
+ * Submarine at desktop (1280 x 800, keys) and phone (390 x 844, a finger on the stick) size: under way
+ * the view leads the boat (more of the sea ahead of it than behind, even with the beacon behind),
+ * and a hit on the hull says what hit it where it happened (a label naming the mine or the seabed
+ * over the place, a shake) and lights the hull gauge.
+ */
+import type { Page } from 'playwright-core';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { Harness, START_TIMEOUT_MS } from './harness';
+
+type Camera = { x: number; y: number; zoom: number; leadX: number; shake: number; width: number; height: number };
+type Hit = { kind: string; x: number; y: number; label: string; box: number[]; shake: number; gauge: string; gaugeFlash: number };
+type Sub = {
+  paused: boolean;
+  world: { time: number; components: { Position: { x: Float64Array; y: Float64Array }; Velocity: { x: Float64Array; y: Float64Array } } };
+  hull(): number;
+  handles(): { beacons: Float64Array; seabed: { x0: number; dx: number; y: Float64Array } };
+  state: { hits: number; holdY: number; throttle: number };
+  mines(): { x: number; y: number; live: boolean }[];
+  camera(): Camera;
+  hitEffect(): Hit;
+};
+
+const SIZES = [
+  { device: 'desktop', viewport: { width: 1280, height: 800 }, touch: false },
+  { device: 'phone', viewport: { width: 390, height: 844 }, touch: true },
+] as const;
+
+/** Pauses the game (from inside the page, on the frame it happens) once a hit of `kind` is `after` s of game time old. */
+function pauseAfterHit(page: Page, kind: string, after: number): Promise<void> {
+  return page.evaluate(
+    ([kind, after]) => {
+      const w = window.game as unknown as Sub;
+      let t0 = Number.NaN;
+      const frame = () => {
+        if (w.hitEffect().kind === kind) {
+          if (Number.isNaN(t0)) t0 = w.world.time;
+          if (w.world.time >= t0 + after) {
+            w.paused = true;
+            return;
+          }
+        }
+        requestAnimationFrame(frame);
+      };
+      requestAnimationFrame(frame);
+    },
+    [kind, after] as const,
+  );
+}
+
+describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
+  let h: Harness;
+  beforeAll(async () => {
+    h = await Harness.start();
+  }, START_TIMEOUT_MS);
+  afterAll(async () => {
+    await h?.close();
+  });
+
+  it('under way the view leads the boat: more sea ahead than behind, with the beacon behind it', async () => {
+    // One beacon, the boat put 30 m past it (20 m down, clear of the seabed; one beacon lays no mines)
+    // and driven on full ahead: before the look-ahead the camera centred between the boat and the
+    // beacon behind it, so the boat sat right of centre with the way ahead at the view's edge.
+    const g = await h.openGame('submarine', { viewport, touch, query: { waves: 0, beacons: 1 } });
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as Sub;
+      const c = w.world.components,
+        e = w.hull(),
+        b = w.handles().beacons;
+      c.Position.x[e] = b[0]! + 30;
+      c.Position.y[e] = -20;
+      c.Velocity.x[e] = 0;
+      c.Velocity.y[e] = 0;
+      w.state.holdY = -20;
+    });
+    await g.frames(3);
+    const still = await g.page.evaluate(() => (window.game as unknown as Sub).camera());
+    const stick = touch ? (await g.page.getByRole('slider', { name: 'stick: dive, rise, ahead, astern' }).boundingBox())! : null;
+    const cdp = touch ? await g.page.context().newCDPSession(g.page) : null;
+    // Full ahead: D held, or a finger at the stick's right rim.
+    if (stick && cdp)
+      await cdp.send('Input.dispatchTouchEvent', {
+        type: 'touchStart',
+        touchPoints: [{ x: stick.x + stick.width - 12, y: stick.y + stick.height / 2, id: 1 }],
+      });
+    else await g.page.keyboard.down('d');
+    // Until the boat makes 8 m/s and 2 s of game time more (the look-ahead eases in over about 0.8 s).
+    const t8 = await g.waitFor(
+      () => {
+        const w = window.game as unknown as Sub;
+        return w.world.components.Velocity.x[w.hull()]! > 8 ? w.world.time : null;
+      },
+      null,
+      120_000,
+    );
+    await g.waitFor((t) => (window.game as unknown as Sub).world.time > t + 2, t8, 60_000);
+    const r = await g.page.evaluate(() => {
+      const w = window.game as unknown as Sub;
+      const cam = w.camera(),
+        e = w.hull();
+      const hx = w.world.components.Position.x[e]!;
+      return {
+        cam,
+        screenX: cam.width / 2 + (hx - cam.x) * cam.zoom,
+        vx: w.world.components.Velocity.x[e]!,
+        beaconX: w.handles().beacons[0]!,
+      };
+    });
+    if (cdp) {
+      await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
+      await cdp.detach();
+    } else await g.page.keyboard.up('d');
+    // At rest the boat was right of centre (the view centred between it and the beacon behind it).
+    expect(still.leadX).toBeLessThan(1);
+    // Under way the boat is in the left part of the view, with at least 1.8 times as much sea ahead
+    // of it (right) as behind it (left); the look-ahead follows the speed (2.2 s of it, eased).
+    expect(r.vx).toBeGreaterThan(8);
+    expect(r.screenX).toBeGreaterThan(0);
+    expect(r.cam.width - r.screenX, `${device}: ahead ${r.cam.width - r.screenX} px, behind ${r.screenX} px`).toBeGreaterThan(
+      1.8 * r.screenX,
+    );
+    expect(r.cam.leadX).toBeGreaterThan(0.8 * 2.2 * 8);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
+  it('a seabed hit and a mine each say what hit the hull, at the place, shake the view and light the hull gauge', async () => {
+    const g = await h.openGame('submarine', { viewport, touch, query: { waves: 0 } });
+    expect(await g.page.evaluate(() => (window.game as unknown as Sub).hitEffect().kind)).toBe('');
+    expect(await g.page.locator('[data-hud="hull"]').textContent()).toBe('hull ▮▮▮ 3/3');
+    // The hull put into the seabed coming down at 4 m/s (over the 1.5 m/s a hit needs).
+    await pauseAfterHit(g.page, 'seabed', 0.1);
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as Sub;
+      const bed = w.handles().seabed,
+        c = w.world.components,
+        e = w.hull();
+      c.Position.x[e] = bed.x0 + 20 * bed.dx;
+      c.Position.y[e] = bed.y[20]! + 1.6;
+      c.Velocity.x[e] = 0;
+      c.Velocity.y[e] = -4;
+    });
+    await g.waitFor(() => (window.game as unknown as Sub).paused, null, 60_000);
+    await g.frames(2);
+    const check = async (kind: string, label: string, gauge: string) => {
+      const r = await g.page.evaluate(() => {
+        const w = window.game as unknown as Sub;
+        return { hit: w.hitEffect(), cam: w.camera(), hits: w.state.hits };
+      });
+      expect(r.hit.kind).toBe(kind);
+      expect(r.hit.label).toBe(label);
+      expect(r.hit.shake).toBeGreaterThan(1);
+      expect(r.hit.gaugeFlash).toBeGreaterThan(0.5);
+      expect(await g.page.locator('[data-hud="hull"]').textContent()).toBe(gauge);
+      // The label lies inside the view, and over the place hit (its box spans the place's screen x,
+      // or lies within 12 px of it where the view's edge stops it).
+      const [bx, by, bw, bh] = r.hit.box as [number, number, number, number];
+      expect(bx).toBeGreaterThanOrEqual(0);
+      expect(by).toBeGreaterThanOrEqual(0);
+      expect(bx + bw).toBeLessThanOrEqual(r.cam.width);
+      expect(by + bh).toBeLessThanOrEqual(r.cam.height);
+      const px = r.cam.width / 2 + (r.hit.x - r.cam.x) * r.cam.zoom;
+      expect(px).toBeGreaterThan(bx - 12);
+      expect(px).toBeLessThan(bx + bw + 12);
+      // and within 12 m (screen) of it up or down.
+      const py = r.cam.height / 2 - (r.hit.y - r.cam.y) * r.cam.zoom;
+      expect(Math.abs(by + bh / 2 - py)).toBeLessThan(12 * r.cam.zoom + bh);
+    };
+    await check('seabed', 'SEABED SCRAPE\n−1 hull', 'hull ▮▮▯ 2/3');
+    // The hull put at rest with its deck 0.5 m under the first mine.
+    await pauseAfterHit(g.page, 'mine', 0.1);
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as Sub;
+      const m = w.mines()[0]!,
+        c = w.world.components,
+        e = w.hull();
+      c.Position.x[e] = m.x;
+      c.Position.y[e] = m.y - 3.5;
+      c.Velocity.x[e] = 0;
+      c.Velocity.y[e] = 0;
+      w.paused = false;
+    });
+    await g.waitFor(() => (window.game as unknown as Sub).paused, null, 60_000);
+    await g.frames(2);
+    await check('mine', 'MINE!\n−1 hull', 'hull ▮▯▯ 1/3');
+    // Played on, the label and the gauge's light fade out within 2 s of game time.
+    const t = await g.page.evaluate(() => {
+      const w = window.game as unknown as Sub;
+      w.paused = false;
+      return w.world.time;
+    });
+    await g.waitFor((t0) => (window.game as unknown as Sub).world.time > t0 + 2, t, 60_000);
+    await g.frames(2);
+    const after = await g.page.evaluate(() => (window.game as unknown as Sub).hitEffect());
+    expect(after.label).toBe('');
+    expect(after.gaugeFlash).toBe(0);
+    expect(after.shake).toBe(0);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+});
