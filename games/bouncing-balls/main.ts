@@ -2,27 +2,50 @@
  * Bouncing balls: the book's bouncing balls grown up. Balls of different sizes and masses fall,
  * bounce off the box, the inclined walls (and their end points) and each other.
  *
+ * The game on top (./hoop.ts): throw balls through the hoop as often as you can in 45 s; the hoop
+ * moves after each basket, the clock starts with the first ball, the best score is kept in
+ * localStorage; R or the Play-again button starts a new round. The status row above the box says
+ * the goal and shows baskets, time and best.
+ *
  * Input: press on a ball or crate and drag to pull it (a mouse joint); on empty space a click drops a
- * ball at the pointer and a drag throws one (release velocity from the drag).
+ * ball at the pointer and a drag throws one (release velocity from the drag). The player's balls are
+ * orange, all the same size (hoop.ts PLAYER_RADIUS).
  * Keys: P pause, N single step, R reset, T trails, D debug overlay.
- * URL: ?count=N (balls, 1..10000), ?seed=S, ?mode=auto|sprites|particles, ?trails=0|1, ?debug.
+ * URL: ?count=N (balls, 1..10000), ?round=S (hoop round, s, 5..600), ?seed=S, ?mode=auto|sprites|particles, ?trails=0|1, ?debug.
  * From 1000 balls on (mode auto) the renderer draws with pixi's ParticleContainer.
  */
 
 import {
   choiceParam,
+  createActionButton,
   createPanel,
   flagParam,
   forEachImpact,
   getSound,
   numberParam,
+  pageLayout,
   type SoundMaterial,
   seedParam,
 } from '@bitphysics/game-kit';
 import { enableMouseDrag } from '@bitphysics/game-kit/drag';
 import { startPixiGame } from '@bitphysics/game-kit/pixi';
-import { addBox, createPhysicsWorld, type PhysicsWorld, slotOf, step } from '@bitphysics/physics';
-import { Graphics } from 'pixi.js';
+import { addBox, createPhysicsWorld, type PhysicsWorld, setMaterial as setBodyMaterial, slotOf, step } from '@bitphysics/physics';
+import { Graphics, Text } from 'pixi.js';
+import {
+  addHoop,
+  createRound,
+  type HoopRound,
+  hoopCrossing,
+  hoopOpening,
+  hoopSpots,
+  mayScore,
+  PLAYER_RADIUS,
+  ROUND_SECONDS,
+  removeHoop,
+  roundBasket,
+  roundShot,
+  roundTick,
+} from './hoop';
 import {
   applyDrag,
   applyGravity,
@@ -61,6 +84,8 @@ const params = {
   debug: flagParam('debug'),
   reset: () => game.shell.reset(),
 };
+/** Length of a hoop round, s (?round=S, 5..600). */
+const roundSeconds = numberParam('round', { default: ROUND_SECONDS, min: 5, max: 600 });
 const mode = choiceParam('mode', ['auto', 'sprites', 'particles'] as const, 'auto');
 
 /** A screen taller than wide (a phone held upright) gets the tall box, which fills it. */
@@ -68,6 +93,29 @@ const TALL = window.innerHeight > 1.2 * window.innerWidth;
 let handles: BouncingBallsHandles;
 /** Crates dropped with X (boxes: shapes that tumble among the balls), oldest first. */
 let crates: number[] = [];
+/** The hoop game's round (a new one with each world: R restarts the round). */
+let round: HoopRound = createRound(roundSeconds);
+/** Entity ids of the hoop's backboard and front rim. */
+let hoopIds: number[] = [];
+/** The player's balls: whether each may score (released below the rim) and its centre after the last step, m. */
+let playerBalls = new Map<number, { scores: boolean; x: number; y: number }>();
+/** Colour of the player's balls (a basketball's orange), and of those released too high to score. */
+const PLAYER_COLOR = 0xff8a2a;
+const HIGH_COLOR = 0x9aa4b5;
+const BEST_KEY = 'bitphysics.bouncing-balls.best';
+
+/** The best score kept in local storage (0 when none, or storage is unavailable). */
+function readBest(): number {
+  try {
+    const v = Number(localStorage.getItem(BEST_KEY));
+    return Number.isInteger(v) && v > 0 ? v : 0;
+  } catch {
+    return 0;
+  }
+}
+let best = readBest();
+/** A basket's pop: where (m) and the world time (s) it was scored, for the flash and the +1. */
+let lastBasket = { x: 0, y: 0, time: -10 };
 
 /** Builds a fresh world with the scene from the current params (the shell calls it at start and on R). */
 function createWorld(): PhysicsWorld {
@@ -84,6 +132,10 @@ function createWorld(): PhysicsWorld {
   const world = createPhysicsWorld(bouncingBallsWorldOptions(options));
   handles = buildBouncingBalls(world, options);
   crates = [];
+  round = createRound(roundSeconds);
+  playerBalls = new Map();
+  lastBasket = { x: 0, y: 0, time: -10 };
+  hoopIds = addHoop(world, hoopSpots(TALL)[0]!, params.restitution, params.friction);
   return world;
 }
 
@@ -119,9 +171,64 @@ function materialOf(world: PhysicsWorld, body: number): SoundMaterial {
   return isHeavy(world, body) ? 'metal' : 'soft';
 }
 
+/**
+ * The hoop game after a step: a player's ball whose centre went down through the hoop's opening is a
+ * basket (the ball is taken out, the hoop moves on); then the clock runs. Keeps the best score.
+ */
+function playHoop(world: PhysicsWorld): void {
+  const P = world.components.Position;
+  const spots = hoopSpots(TALL);
+  let opening = hoopOpening(spots[round.spot]!);
+  for (const [e, b] of playerBalls) {
+    if (!handles.balls.includes(e)) {
+      playerBalls.delete(e);
+      continue;
+    }
+    const x = P.x[slotOf(e)]!,
+      y = P.y[slotOf(e)]!;
+    const crossing = hoopCrossing(opening, b.x, b.y, x, y);
+    if (crossing === 1 && b.scores) {
+      // Up through the hoop from below: no basket when it comes back down.
+      b.scores = false;
+      renderer.setColor(e, HIGH_COLOR);
+      tooHighAt = performance.now();
+      hintReason = 'below';
+    }
+    if (b.scores && crossing === -1 && roundBasket(round, spots.length)) {
+      lastBasket = { x: opening.minX + 0.5 * (opening.maxX - opening.minX), y: opening.y, time: world.time };
+      playerBalls.delete(e);
+      removeBall(world, handles, e);
+      removeHoop(world, hoopIds);
+      hoopIds = addHoop(world, spots[round.spot]!, handles.params.restitution, handles.params.friction);
+      opening = hoopOpening(spots[round.spot]!);
+      sound.chime(660 + 60 * Math.min(10, round.score));
+      keepBest();
+      continue;
+    }
+    b.x = x;
+    b.y = y;
+  }
+  if (roundTick(round, world.dt)) {
+    keepBest();
+    sound.chime(440, 0.6);
+  }
+}
+
+/** Keeps the round's score as the best if it beats it (in localStorage when it can). */
+function keepBest(): void {
+  if (round.score <= best) return;
+  best = round.score;
+  try {
+    localStorage.setItem(BEST_KEY, String(best));
+  } catch {
+    /* private mode: kept for this page only */
+  }
+}
+
 /** One step, then a knock for each impact: loudness from its impulse, the harder of the two materials. */
 function stepWorld(world: PhysicsWorld): void {
   step(world);
+  playHoop(world);
   forEachImpact(world, (a, b, impulse) => {
     const ma = materialOf(world, a),
       mb = materialOf(world, b);
@@ -136,9 +243,10 @@ const game = await startPixiGame({
   step: stepWorld,
   bodies: () => handles.balls.length,
   controls: [
-    { keys: 'Drag a body', action: 'pull a ball or crate' },
+    { keys: 'Drag', action: 'throw a ball: through the hoop scores' },
     { keys: 'Click', action: 'drop a ball (empty space)' },
-    { keys: 'Drag', action: 'throw a ball (empty space)' },
+    { keys: 'Drag a body', action: 'pull a ball or crate' },
+    { keys: 'R', action: 'new round (and reset)' },
     { keys: 'T', action: 'trails on / off' },
     { keys: 'D', action: 'debug: velocities, contacts' },
     { keys: 'X', action: 'drop a crate' },
@@ -154,7 +262,10 @@ const game = await startPixiGame({
     trails: params.trails ? trailOptions(params.count) : false,
     debug: params.debug,
   },
-  onFrame: () => drawPointer(),
+  onFrame: () => {
+    drawPointer();
+    drawHoop();
+  },
 });
 const { shell, renderer, app } = game;
 
@@ -164,6 +275,12 @@ function colorHeavy(world: PhysicsWorld): void {
 }
 colorHeavy(shell.world);
 shell.onWorldChange((world) => colorHeavy(world));
+
+/** Sets restitution and friction of the scene and of the hoop (the panel). */
+function setMaterial(restitution: number, friction: number): void {
+  applyMaterial(shell.world, handles, restitution, friction);
+  for (const e of hoopIds) setBodyMaterial(shell.world, e, { restitution, friction });
+}
 
 /** Turns trails on or off (the T key and the panel). */
 function setTrails(on: boolean): void {
@@ -197,7 +314,7 @@ const panel = createPanel(
       min: 0,
       max: 1,
       step: 0.01,
-      onChange: (e, p) => applyMaterial(shell.world, handles, e, p.friction),
+      onChange: (e, p) => setMaterial(e, p.friction),
     },
     {
       type: 'slider',
@@ -205,7 +322,7 @@ const panel = createPanel(
       min: 0,
       max: 1,
       step: 0.01,
-      onChange: (mu, p) => applyMaterial(shell.world, handles, p.restitution, mu),
+      onChange: (mu, p) => setMaterial(p.restitution, mu),
     },
     { type: 'choice', key: 'drag', options: DRAG_MODES, onChange: (m, p) => applyDrag(shell.world, handles, m as DragMode, p.dragK) },
     {
@@ -309,7 +426,7 @@ function release(event: PointerEvent, cancelled: boolean): void {
   sample(lastX, lastY, event.timeStamp);
   const cam = renderer.camera;
   if (!dragged) {
-    spawnBall(shell.world, handles, cam.toWorldX(startX), cam.toWorldY(startY));
+    shoot(cam.toWorldX(startX), cam.toWorldY(startY), 0, 0);
     return;
   }
   // Release velocity: pointer displacement over the last THROW_WINDOW_MS, px/s -> m/s (y flipped).
@@ -328,7 +445,29 @@ function release(event: PointerEvent, cancelled: boolean): void {
     vx *= MAX_THROW_SPEED / speed;
     vy *= MAX_THROW_SPEED / speed;
   }
-  spawnBall(shell.world, handles, cam.toWorldX(lastX), cam.toWorldY(lastY), vx, vy);
+  shoot(cam.toWorldX(lastX), cam.toWorldY(lastY), vx, vy);
+}
+
+/**
+ * A player's ball at (x, y), m, with velocity (vx, vy), m/s: orange if released below the rim (it may
+ * score), grey if not; starts the round's clock. @returns its id.
+ */
+function shoot(x: number, y: number, vx: number, vy: number): number {
+  const e = spawnBall(shell.world, handles, x, y, vx, vy, PLAYER_RADIUS);
+  const P = shell.world.components.Position;
+  const bx = P.x[slotOf(e)]!,
+    by = P.y[slotOf(e)]!;
+  const scores = mayScore(hoopSpots(TALL)[round.spot]!, by);
+  playerBalls.set(e, { scores, x: bx, y: by });
+  renderer.setColor(e, scores ? PLAYER_COLOR : HIGH_COLOR);
+  if (round.phase !== 'over') {
+    roundShot(round);
+    if (!scores) {
+      tooHighAt = performance.now();
+      hintReason = 'high';
+    }
+  }
+  return e;
 }
 canvas.addEventListener('pointerup', (event) => release(event, false));
 canvas.addEventListener('pointercancel', (event) => release(event, true));
@@ -344,6 +483,124 @@ function drawPointer(): void {
   } else {
     overlay.circle(startX, startY, r).stroke({ width: 2, color: 0xffffff, alpha: 0.6 });
   }
+}
+
+// ---- The hoop game: net, shot line, basket pop, status row and the play-again button -------------
+
+const hoopLayer = new Graphics({ label: 'hoop' });
+app.stage.addChild(hoopLayer);
+const popText = new Text({ text: '+1', style: { fontFamily: 'system-ui, sans-serif', fontSize: 28, fontWeight: '700', fill: 0xffd166 } });
+popText.anchor.set(0.5, 1);
+popText.visible = false;
+app.stage.addChild(popText);
+/** When a ball was last released too high to score (performance.now() ms), for the status row's reminder. */
+let tooHighAt = -1e9;
+/** Why the last ball cannot score: released above the line, or went up through the hoop from below. */
+let hintReason: 'high' | 'below' = 'high';
+
+/** Draws the net under the rim, the rim's opening, the dashed shot line at rim height and a basket's pop. */
+function drawHoop(): void {
+  const cam = renderer.camera;
+  const world = shell.world;
+  const spot = hoopSpots(TALL)[round.spot]!;
+  const o = hoopOpening(spot);
+  const { box } = layoutOf(TALL);
+  hoopLayer.clear();
+  // The shot line: balls released below it may score.
+  const yLine = cam.toScreenY(o.y);
+  const dash = 10;
+  for (let x = cam.toScreenX(box.min[0]); x < cam.toScreenX(box.max[0]); x += 2 * dash)
+    hoopLayer.moveTo(x, yLine).lineTo(Math.min(x + dash, cam.toScreenX(box.max[0])), yLine);
+  hoopLayer.stroke({ width: 1, color: 0xff8a2a, alpha: 0.35 });
+  // The net: strings from the rim down to a narrower bottom, 1.1 m below, and two cross rows.
+  const depth = 1.1,
+    narrow = 0.3;
+  const L = o.minX,
+    R = o.maxX;
+  for (let k = 0; k <= 4; k++) {
+    const t = k / 4;
+    const xTop = L + t * (R - L),
+      xBottom = L + narrow + t * (R - L - 2 * narrow);
+    hoopLayer.moveTo(cam.toScreenX(xTop), cam.toScreenY(o.y)).lineTo(cam.toScreenX(xBottom), cam.toScreenY(o.y - depth));
+  }
+  for (const f of [0.5, 1]) {
+    const inset = narrow * f;
+    hoopLayer
+      .moveTo(cam.toScreenX(L + inset), cam.toScreenY(o.y - depth * f))
+      .lineTo(cam.toScreenX(R - inset), cam.toScreenY(o.y - depth * f));
+  }
+  hoopLayer.stroke({ width: 1.5, color: 0xf2f5f9, alpha: 0.7 });
+  // The rim across the opening (drawn only: balls pass through it).
+  hoopLayer.moveTo(cam.toScreenX(L), cam.toScreenY(o.y)).lineTo(cam.toScreenX(R), cam.toScreenY(o.y)).stroke({ width: 3, color: 0xff6a1a });
+  // A basket: a ring that widens and fades over 0.8 s, and a rising +1.
+  const age = world.time - lastBasket.time;
+  popText.visible = age >= 0 && age < 0.8;
+  if (popText.visible) {
+    const f = age / 0.8;
+    const x = cam.toScreenX(lastBasket.x),
+      y = cam.toScreenY(lastBasket.y);
+    hoopLayer.circle(x, y, cam.toScreenLength(0.6 + 1.6 * f)).stroke({ width: 3, color: 0xffd166, alpha: 1 - f });
+    popText.position.set(x, y - 10 - 40 * f);
+    popText.alpha = 1 - f;
+  }
+  updateStatus();
+}
+
+const style = document.createElement('style');
+style.textContent = `
+.bb-status { text-align: center; font: 14px/1.4 system-ui, sans-serif; color: #eef3f8; padding: 6px 10px 4px; }
+.bb-status .bb-goal { font-weight: 600; color: #ffd166; }
+.bb-status .bb-numbers { font: 600 16px ui-monospace, Menlo, Consolas, monospace; }
+.bb-status .bb-hint { color: #c9d3e3; font-size: 13px; }
+.bb-status.over .bb-goal { color: #7ee787; }
+`;
+document.head.append(style);
+const statusEl = document.createElement('div');
+statusEl.className = 'bb-status';
+statusEl.setAttribute('role', 'status');
+statusEl.dataset.hud = 'hoop';
+const goalLine = document.createElement('div');
+goalLine.className = 'bb-goal';
+goalLine.dataset.hud = 'goal';
+const numbersLine = document.createElement('div');
+numbersLine.className = 'bb-numbers';
+numbersLine.dataset.hud = 'numbers';
+const hintLine = document.createElement('div');
+hintLine.className = 'bb-hint';
+hintLine.dataset.hud = 'hint';
+statusEl.append(goalLine, numbersLine, hintLine);
+pageLayout().status.append(statusEl);
+const touch = pageLayout().touch();
+/** The big Play-again button over the scene when time is up. */
+const setAction = createActionButton('Play again ▶', () => shell.reset());
+let shownStatus = '';
+
+/** Writes the status row (goal, baskets, time, best, a hint) when it changed, and shows Play again when time is up. */
+function updateStatus(): void {
+  const secs = Math.ceil(round.timeLeft);
+  const over = round.phase === 'over';
+  const goal = over
+    ? `Time! ${round.score} ${round.score === 1 ? 'basket' : 'baskets'}${round.score > 0 && round.score >= best ? ' — best yet!' : ''}`
+    : `Throw balls through the hoop! ${round.seconds} s`;
+  const numbers = `Baskets ${round.score} · Time ${secs} s · Best ${best}`;
+  const throwHow = touch ? 'Swipe to throw' : 'Drag and let go to throw';
+  const hint = over
+    ? `${touch ? 'Tap' : 'R or'} Play again for a new round`
+    : performance.now() - tooHighAt < 2500
+      ? hintReason === 'high'
+        ? 'Too high: throw from below the orange line to score'
+        : 'Up through the net does not count: drop it in from above'
+      : round.phase === 'ready'
+        ? `${throwHow} from below the orange line · the clock starts with your first ball`
+        : `${throwHow} · the hoop moves after each basket`;
+  const text = goal + numbers + hint + over;
+  if (text === shownStatus) return;
+  shownStatus = text;
+  goalLine.textContent = goal;
+  numbersLine.textContent = numbers;
+  hintLine.textContent = hint;
+  statusEl.classList.toggle('over', over);
+  setAction(over);
 }
 
 // ---- Test and console hooks on window.game ---------------------------------------------------
@@ -366,6 +623,16 @@ shell.expose({
   },
   /** Adds a ball at (x, y) m with velocity (vx, vy) m/s; returns its id. */
   spawn: (x: number, y: number, vx = 0, vy = 0): number => spawnBall(shell.world, handles, x, y, vx, vy),
+  /** The hoop game's round (a copy): phase, score, timeLeft (s), spot index, shots. */
+  round: (): HoopRound => ({ ...round }),
+  /** The best score kept (localStorage). */
+  best: (): number => best,
+  /** The hoop's opening now: rim height y and the x range, m. */
+  hoop: () => hoopOpening(hoopSpots(TALL)[round.spot]!),
+  /** A player's ball at (x, y) m with velocity (vx, vy) m/s, as a throw releases it (counts for the hoop). @returns its id. */
+  shoot: (x: number, y: number, vx = 0, vy = 0): number => shoot(x, y, vx, vy),
+  /** The status row's text (goal, numbers, hint). */
+  statusText: (): string => statusEl.innerText,
   /** Removes ball `eid`. @throws RangeError if it is not a ball of the scene. */
   remove: (eid: number): void => removeBall(shell.world, handles, eid),
 });

@@ -1,5 +1,12 @@
 /**
- * Fireworks: a show that runs on its own (the auto-show plays ./show.ts `PROGRAMME`: peonies,
+ * Fireworks, the lantern show (./lanterns.ts; the default, ?play=free for free play): light every
+ * lantern in the sky with your bursts in as few shells as you can, over five levels, with one to three
+ * stars a level against its par (best stars kept in localStorage). A burst lights the lanterns within
+ * the charging ring's reach; hold longer for a bigger burst that lights two; drifting lanterns must be
+ * led by the 2 s fuse. The status row above the sky says the goal and the level's tally; a cleared
+ * level shows a Next-level button; R restarts the level; the row's Free-play button switches modes.
+ *
+ * Free play: a show that runs on its own (the auto-show plays ./show.ts `PROGRAMME`: peonies,
  * chrysanthemums, willows, rings, crossettes, palms, strobes and the book's crackling stars, singly
  * and in salvos), and click (or tap) to launch a shell from the ground towards the pointer; it bursts
  * there about 2 s later (show.ts FUSE) into stars as its recipe says (./recipes.ts), which fall under
@@ -24,7 +31,17 @@
  * Sound (@bitphysics/game-kit/sound): a whoosh per launch, a bang per burst, a crackle when sparks burst again.
  */
 
-import { choiceParam, createPanel, flagParam, getSound, numberParam, pageLayout, plural, seedParam } from '@bitphysics/game-kit';
+import {
+  choiceParam,
+  createActionButton,
+  createPanel,
+  flagParam,
+  getSound,
+  numberParam,
+  pageLayout,
+  plural,
+  seedParam,
+} from '@bitphysics/game-kit';
 import { startPixiGame } from '@bitphysics/game-kit/pixi';
 import {
   createPhysicsWorld,
@@ -37,6 +54,7 @@ import {
   threadsReady,
 } from '@bitphysics/physics';
 import { Container, Graphics, Sprite, Texture } from 'pixi.js';
+import { burstAt, countShell, type LanternRun, LEVELS, lanternAt, lanternRadius, PREVIEW_SECONDS, startLevel } from './lanterns';
 import { RECIPE_NAMES, type RecipeName } from './recipes';
 import {
   BURST_SPEED,
@@ -62,14 +80,17 @@ import {
 
 const search = new URLSearchParams(location.search);
 const stress = flagParam('stress');
+/** The lantern show (the default) or free play (?play=free, and the stress show). */
+let lanternShow = choiceParam('play', ['lanterns', 'free'] as const, stress ? 'free' : 'lanterns') === 'lanterns';
 const params = {
   gravity: 9.81,
   /** Quadratic drag coefficient of a 1 g spark, g/m (the show takes kg/m: / 1000). */
   drag: 0.05,
   sparks: numberParam('sparks', { default: stress ? 3000 : 300, min: 10, max: 10_000, integer: true }),
   generations: numberParam('generations', { default: 2, min: 1, max: 3, integer: true }),
-  // The show runs on its own unless ?auto=0 (clicks and Space still launch).
-  autoShow: search.has('auto') ? flagParam('auto') : true,
+  // In free play the show runs on its own unless ?auto=0 (clicks and Space still launch); the
+  // lantern show starts without it (its bursts would light lanterns for you).
+  autoShow: search.has('auto') ? flagParam('auto') : !lanternShow,
   /** What a click or Space launches: a recipe of ./recipes.ts, or 'random'. */
   shellType: choiceParam('shell', ['random', ...RECIPE_NAMES] as const, 'random') as 'random' | RecipeName,
   // Trails double the drawing work; the stress show starts without them (T turns them on).
@@ -97,6 +118,85 @@ function nextRecipe(): RecipeName {
 }
 
 let show!: FireworksShow;
+/** The lantern show's level (an index into LEVELS) and its run. */
+let level = 0;
+let run: LanternRun = startLevel(0, 0);
+/** The player's shells in flight (lantern show): entity handle -> position after the last step, m. */
+const playerShells = new Map<number, [number, number]>();
+/** A lantern lit: where (m) and when (world time, s), for the ring that widens from it. */
+const lightings: { x: number; y: number; time: number }[] = [];
+const STARS_KEY = 'bitphysics.fireworks.stars';
+
+/** Best stars of each level kept in localStorage (0 for a level not yet lit). */
+function readStars(): number[] {
+  try {
+    const v = JSON.parse(localStorage.getItem(STARS_KEY) ?? '[]') as unknown;
+    return LEVELS.map((_, i) => (Array.isArray(v) && [1, 2, 3].includes(v[i] as number) ? (v[i] as number) : 0));
+  } catch {
+    return LEVELS.map(() => 0);
+  }
+}
+const bestStars = readStars();
+
+/**
+ * One step of the show, then the lantern show's bookkeeping: a player's shell gone from the show's
+ * shells this step has burst; its burst (the flash recorded this step nearest to where the shell was)
+ * lights the lanterns within its reach.
+ */
+function stepShow(world: PhysicsWorld): void {
+  const flashesBefore = show.flashCount;
+  stepFireworks(world, show);
+  if (!lanternShow || playerShells.size === 0) return;
+  const P = world.components.Position;
+  const alive = new Set<number>();
+  for (let i = 0; i < show.shellCount; i++) alive.add(show.shellIds[i]!);
+  for (const [id, at] of playerShells) {
+    if (alive.has(id)) {
+      at[0] = P.x[slotOf(id)]!;
+      at[1] = P.y[slotOf(id)]!;
+      continue;
+    }
+    playerShells.delete(id);
+    let best = -1,
+      bestD = Number.POSITIVE_INFINITY;
+    for (let k = Math.max(flashesBefore, show.flashCount - FLASHES); k < show.flashCount; k++) {
+      const f = 4 * (k % FLASHES);
+      const d = Math.hypot(show.flashes[f]! - at[0], show.flashes[f + 1]! - at[1]);
+      if (d < bestD) {
+        bestD = d;
+        best = f;
+      }
+    }
+    if (best < 0) continue;
+    const F = show.flashes;
+    const wasLit = run.lit.map((v) => v);
+    const lit = burstAt(run, show.params.sky, show.reach, F[best]!, F[best + 1]!, F[best + 3]!, world.time);
+    if (lit > 0) {
+      const lv = LEVELS[run.level]!;
+      for (const [i, l] of lv.lanterns.entries()) {
+        if (wasLit[i] || !run.lit[i]) continue;
+        const [x, y] = lanternAt(l, show.params.sky, world.time - run.start);
+        lightings.push({ x, y, time: world.time });
+      }
+      if (lightings.length > 16) lightings.splice(0, lightings.length - 16);
+      sound.chime(660 + 110 * lit);
+    }
+    if (run.stars > 0) levelLit();
+  }
+}
+
+/** All lanterns lit: keeps the level's best stars and offers the next level. */
+function levelLit(): void {
+  if (run.stars > bestStars[run.level]!) {
+    bestStars[run.level] = run.stars;
+    try {
+      localStorage.setItem(STARS_KEY, JSON.stringify(bestStars));
+    } catch {
+      /* private mode: kept for this page only */
+    }
+  }
+  sound.chime(1320, 0.6);
+}
 
 /**
  * The sky for this screen, m, shaped like the stage so no band of it is left black: about 6.2 px a
@@ -134,13 +234,16 @@ function createWorld(): PhysicsWorld {
   const world = createPhysicsWorld({ ...fireworksWorldOptions(options), threads: ISOLATED ? params.threads : 1 });
   show = buildFireworks(world, options);
   previous = world;
+  // A new world restarts the level being played (its lanterns' drift clock is the world's time).
+  run = startLevel(level, 0);
+  playerShells.clear();
   return world;
 }
 
 const game = await startPixiGame({
   title: 'Fireworks',
   createWorld,
-  step: (world) => stepFireworks(world, show),
+  step: (world) => stepShow(world),
   controls: [
     { keys: 'Click', action: 'launch a shell (hold: bigger burst)' },
     { keys: 'A', action: `auto-show on / off (waits ${PLAYER_PAUSE} s after your shell)` },
@@ -184,14 +287,17 @@ function setTrails(on: boolean): void {
 function randomLaunch(): number {
   const r = show.rng;
   pauseAutoShow(show);
-  return launchShell(
-    shell.world,
-    show,
-    r.range(0.15, 0.85) * show.params.sky.width,
-    r.range(0.45, 0.85) * show.params.sky.height,
-    r.range(0, MAX_HOLD),
-    nextRecipe(),
-  );
+  return playerLaunch(r.range(0.15, 0.85) * show.params.sky.width, r.range(0.45, 0.85) * show.params.sky.height, r.range(0, MAX_HOLD));
+}
+
+/** A player's shell towards (x, y), m, held `hold` s: counted and followed by the lantern show. @returns its id or 0. */
+function playerLaunch(x: number, y: number, hold: number): number {
+  const id = launchShell(shell.world, show, x, y, hold, nextRecipe());
+  if (id !== 0 && lanternShow) {
+    playerShells.set(id, [0.5 * show.params.sky.width, 0]);
+    countShell(run);
+  }
+  return id;
 }
 
 const panel = createPanel(
@@ -342,12 +448,10 @@ function drawSkyAndGround(): void {
     .fill(0x020306);
 }
 
-/**
- * The charging ring's radius over the burst's fastest star speed, s: the ring is BURST_SPEED x reach x
- * burstSize x this, 11.2 m for a click in a phone's sky, about how far a peony's fastest stars get in
- * their first second (x(t) = ln(1 + k v0 t / m) m / k: 11.8 m at 16 m/s under the default drag).
- */
-const PREVIEW_SECONDS = 0.7;
+// The charging ring's radius is PREVIEW_SECONDS x BURST_SPEED x reach x burstSize (./lanterns.ts
+// burstReach): 11.2 m for a click in a phone's sky, about how far a peony's fastest stars get in their
+// first second (x(t) = ln(1 + k v0 t / m) m / k: 11.8 m at 16 m/s under the default drag). It is
+// also the reach within which a burst lights a lantern.
 /** The player's shells in flight: entity handle and target (m), for the marker where each will burst. */
 const targets: { id: number; x: number; y: number }[] = [];
 let pointerId = -1;
@@ -408,6 +512,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
     sprite.width = sprite.height = 5 * r;
     sprite.alpha = fade;
   }
+  drawLanterns(world);
   // Charging: a faint ring about as large as the burst the hold would make (it grows while held), and
   // a bright inner ring that fills up to the longest hold.
   if (pointerId !== -1) {
@@ -466,7 +571,7 @@ canvas.addEventListener('pointerup', (event) => {
   pauseAutoShow(show);
   const x = cam.toWorldX(pointerX),
     y = cam.toWorldY(pointerY);
-  const id = launchShell(shell.world, show, x, y, hold, nextRecipe());
+  const id = playerLaunch(x, y, hold);
   if (id !== 0) {
     // The marker sits where the shell will burst (launchShell clamps the target into the sky the same way).
     const sky = show.params.sky;
@@ -476,6 +581,137 @@ canvas.addEventListener('pointerup', (event) => {
 canvas.addEventListener('pointercancel', (event) => {
   if (event.pointerId === pointerId) pointerId = -1;
 });
+
+// ---- The lantern show: lanterns, status row, next-level button -----------------------------------
+
+/** Draws the level's lanterns (unlit: dim paper; lit: glowing gold) and a ring widening from each lantern just lit. */
+function drawLanterns(world: PhysicsWorld): void {
+  if (!lanternShow) return;
+  const cam = renderer.camera;
+  const sky = show.params.sky;
+  const r = cam.toScreenLength(lanternRadius(sky.width));
+  const lv = LEVELS[run.level]!;
+  for (const [i, l] of lv.lanterns.entries()) {
+    const [wx, wy] = lanternAt(l, sky, world.time - run.start);
+    const x = cam.toScreenX(wx),
+      y = cam.toScreenY(wy);
+    // The string it hangs from, then the body: an upright oval with a top and a bottom cap.
+    overlay
+      .moveTo(x, y - r)
+      .lineTo(x, y - 2.2 * r)
+      .stroke({ width: 1, color: 0x8a6a4a, alpha: 0.6 });
+    if (run.lit[i]) {
+      overlay.circle(x, y, 2.1 * r).fill({ color: 0xffc36a, alpha: 0.16 });
+      overlay
+        .ellipse(x, y, 0.8 * r, r)
+        .fill({ color: 0xffd27a })
+        .stroke({ width: 2, color: 0xfff1c9 });
+    } else {
+      overlay
+        .ellipse(x, y, 0.8 * r, r)
+        .fill({ color: 0x6a2a12, alpha: 0.85 })
+        .stroke({ width: 2, color: 0xff9a4a, alpha: 0.9 });
+    }
+    overlay.rect(x - 0.45 * r, y - 1.08 * r, 0.9 * r, 0.16 * r).fill({ color: 0x3a2a1a });
+    overlay.rect(x - 0.45 * r, y + 0.92 * r, 0.9 * r, 0.16 * r).fill({ color: 0x3a2a1a });
+  }
+  for (const g of lightings) {
+    const age = world.time - g.time;
+    if (age < 0 || age > 0.9) continue;
+    const f = age / 0.9;
+    overlay.circle(cam.toScreenX(g.x), cam.toScreenY(g.y), r * (1.2 + 3 * f)).stroke({ width: 3, color: 0xffe08a, alpha: 1 - f });
+  }
+  updateStatus();
+}
+
+const style = document.createElement('style');
+style.textContent = `
+.fw-status { text-align: center; font: 14px/1.4 system-ui, sans-serif; color: #eef3f8; padding: 6px 10px 4px; }
+.fw-status .fw-goal { font-weight: 600; color: #ffd166; }
+.fw-status .fw-numbers { font: 600 15px ui-monospace, Menlo, Consolas, monospace; }
+.fw-status .fw-hint { color: #c9d3e3; font-size: 13px; }
+.fw-status.cleared .fw-goal { color: #7ee787; }
+.fw-status button { font: 13px system-ui, sans-serif; color: #e8ecf1; background: rgba(255, 255, 255, 0.08); border: 1px solid #4a5468;
+  border-radius: 6px; padding: 2px 10px; margin-left: 8px; cursor: pointer; min-height: 28px; }
+@media (pointer: coarse) { .fw-status button { min-height: 36px; } }
+`;
+document.head.append(style);
+const statusEl = document.createElement('div');
+statusEl.className = 'fw-status';
+statusEl.setAttribute('role', 'status');
+statusEl.dataset.hud = 'lanterns';
+const goalLine = document.createElement('div');
+goalLine.className = 'fw-goal';
+goalLine.dataset.hud = 'goal';
+const numbersLine = document.createElement('div');
+numbersLine.className = 'fw-numbers';
+numbersLine.dataset.hud = 'numbers';
+const hintLine = document.createElement('div');
+hintLine.className = 'fw-hint';
+hintLine.dataset.hud = 'hint';
+const hintText = document.createElement('span');
+const modeButton = document.createElement('button');
+modeButton.type = 'button';
+modeButton.addEventListener('click', () => setLanternShow(!lanternShow));
+hintLine.append(hintText, modeButton);
+statusEl.append(goalLine, numbersLine, hintLine);
+pageLayout().status.append(statusEl);
+const touch = pageLayout().touch();
+/** The big Next-level (or Play-again) button over the sky once a level is lit. */
+const setAction = createActionButton('Next level ▶', () => nextLevel());
+let shownStatus = '';
+
+/** '★★☆' for `n` of 3 stars. */
+function starText(n: number): string {
+  return '★'.repeat(n) + '☆'.repeat(3 - n);
+}
+
+/** Goes on to the next level (or back to the first after the last) with a fresh sky. */
+function nextLevel(): void {
+  level = run.stars > 0 ? (run.level + 1) % LEVELS.length : run.level;
+  shell.reset();
+}
+
+/** Switches between the lantern show and free play (the status row's button): a fresh sky either way; free play turns the auto-show on. */
+function setLanternShow(on: boolean): void {
+  lanternShow = on;
+  setAuto(!on);
+  shell.reset();
+}
+
+/** Writes the status row when it changed, and shows the Next-level button once the level is lit. */
+function updateStatus(): void {
+  const lv = LEVELS[run.level]!;
+  const lit = run.lit.filter(Boolean).length;
+  const cleared = lanternShow && run.stars > 0;
+  const last = run.level === LEVELS.length - 1;
+  const total = bestStars.reduce((a, b) => a + b, 0);
+  let goal: string, numbers: string, hint: string;
+  if (!lanternShow) {
+    goal = 'Free play: launch fireworks anywhere';
+    numbers = `${plural(show.launched, 'shell', 'shells')} launched`;
+    hint = `${touch ? 'Tap' : 'Click'} the sky · hold for a bigger burst`;
+  } else if (cleared) {
+    goal = last ? `Show complete! ${starText(run.stars)}` : `All lanterns lit! ${starText(run.stars)}`;
+    numbers = `${plural(run.shells, 'shell', 'shells')} (par ${lv.par}) · Stars ${total}/${3 * LEVELS.length}`;
+    hint = last ? 'Play again from level 1, or try for 3 stars' : 'Fewer shells, more stars';
+  } else {
+    goal = 'Light every lantern with your fireworks!';
+    numbers = `Level ${run.level + 1}/${LEVELS.length} · Lit ${lit}/${lv.lanterns.length} · Shells ${run.shells} · Par ${lv.par}`;
+    hint = `${touch ? 'Tap' : 'Click'} ${lv.tip}`;
+  }
+  const mode = lanternShow ? 'Free play' : 'Lantern show';
+  const text = goal + numbers + hint + mode + cleared;
+  if (text === shownStatus) return;
+  shownStatus = text;
+  goalLine.textContent = goal;
+  numbersLine.textContent = numbers;
+  hintText.textContent = hint;
+  modeButton.textContent = mode;
+  statusEl.classList.toggle('cleared', cleared);
+  setAction(cleared, last ? 'Play again ▶' : 'Next level ▶');
+}
+updateStatus();
 
 // ---- Test and console hooks on window.game ----------------------------------------------------
 
@@ -498,6 +734,22 @@ shell.expose({
   flashing: (): number => flashing,
   /** Markers drawn where the player's shells in flight will burst: their targets, m. */
   targetMarkers: (): { x: number; y: number }[] => targets.map((m) => ({ x: m.x, y: m.y })),
+  /** The lantern show: mode, level (0-based), lit lanterns, shells, stars (0 while playing), best stars per level, lantern positions (m). */
+  lanterns: () => ({
+    on: lanternShow,
+    level: run.level,
+    lit: run.lit.slice(),
+    shells: run.shells,
+    stars: run.stars,
+    best: bestStars.slice(),
+    positions: LEVELS[run.level]!.lanterns.map((l) => lanternAt(l, show.params.sky, shell.world.time - run.start)),
+  }),
+  /** Switches to the lantern show (true) or free play (false), with a fresh sky. */
+  setLanternShow: (on: boolean): void => setLanternShow(on),
+  /** Goes to the next level once this one is lit (else restarts it), as the Next-level button. */
+  nextLevel: (): void => nextLevel(),
+  /** The status row's text. */
+  statusText: (): string => statusEl.innerText,
   /** Turns the auto-show on or off. */
   setAutoShow: (on: boolean): void => setAuto(on),
 });

@@ -1,10 +1,13 @@
 /**
- * Bouncing balls in headless Chromium: click and drag on empty space spawn balls, a press on a ball drags it, P pauses (nothing moves while
+ * Bouncing balls in headless Chromium: the hoop game (the goal shown above the box at once, a throw through
+ * the hoop scores and is kept as the best, time up offers Play again; a swipe on a phone throws and starts
+ * the clock), and the sandbox: click and drag on empty space spawn balls, a press on a ball drags it, P pauses (nothing moves while
  * paused, motion resumes after), N advances exactly one step, R rebuilds the same seeded scene.
  * The tests share one page with a small ball count (?count=8); before each, the game is reset
  * (window.game.reset(), unpaused) and the page's error list emptied, so each starts from the
  * same seeded scene.
  */
+import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, beforeEach, describe, expect, it } from 'vitest';
 import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
 
@@ -20,8 +23,8 @@ interface BallsGame {
 }
 
 const COUNT = 8;
-/** Segments in the scene (games/bouncing-balls/scene.ts SEGMENTS). */
-const SEGMENTS = 3;
+/** Segments in the scene (games/bouncing-balls/scene.ts SEGMENTS) plus the hoop's backboard and rim (hoop.ts). */
+const SEGMENTS = 3 + 2;
 
 function balls(g: GamePage) {
   return g.page.evaluate(() => {
@@ -218,7 +221,7 @@ describe('bouncing balls', () => {
     expect(r.e).toBeCloseTo(0.25, 12);
     await field('balls (rebuilds)').fill('30');
     await field('balls (rebuilds)').press('Enter');
-    await g.waitFor(() => window.game!.stats().entities === 30 + 3, null);
+    await g.waitFor((n) => window.game!.stats().entities === n, 30 + SEGMENTS);
     // The rebuilt world keeps the panel's settings.
     expect(await g.page.evaluate(() => (window.game as unknown as { world: { gravity: Float64Array } }).world.gravity[1])).toBeCloseTo(
       -3.5,
@@ -234,7 +237,7 @@ describe('bouncing balls', () => {
     await field('drag').selectOption('none');
     await field('restitution').fill('0.8');
     await field('restitution').press('Enter');
-    await g.waitFor(() => window.game!.stats().entities === 8 + 3, null);
+    await g.waitFor((n) => window.game!.stats().entities === n, 8 + SEGMENTS);
   });
 
   it('a press on a ball drags it through a mouse joint (no ball added), and release lets go', async () => {
@@ -299,5 +302,126 @@ describe('bouncing balls', () => {
     });
     expect(y1).toBeLessThan(y0);
     expect(g.errors).toEqual([]);
+  });
+});
+
+/** What the hoop game puts on window.game. */
+interface HoopGame {
+  round(): { phase: 'ready' | 'playing' | 'over'; score: number; timeLeft: number; spot: number; shots: number; seconds: number };
+  best(): number;
+  hoop(): { y: number; minX: number; maxX: number };
+  shoot(x: number, y: number, vx?: number, vy?: number): number;
+  statusText(): string;
+  ballIds(): number[];
+}
+
+/** A finger down at the first point, through the others, then lifted (CDP touch events). */
+async function swipe(page: Page, points: Array<[number, number]>): Promise<void> {
+  const cdp = await page.context().newCDPSession(page);
+  const at = ([x, y]: [number, number]) => [{ x, y, id: 1 }];
+  await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: at(points[0]!) });
+  for (const p of points.slice(1)) await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: at(p) });
+  await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
+  await cdp.detach();
+}
+
+describe('bouncing balls: the hoop game', () => {
+  let h: Harness;
+  beforeAll(async () => {
+    h = await Harness.start();
+  }, START_TIMEOUT_MS);
+  afterAll(async () => {
+    await h?.close();
+  });
+
+  it('desktop 1280 x 800: the goal shows above the box; a throw through the hoop scores, moves the hoop and is kept as the best; time up offers Play again', async () => {
+    const g = await h.openGame('bouncing-balls', { viewport: { width: 1280, height: 800 }, query: { count: 8, round: 6 } });
+    const status = g.page.locator('[data-hud="hoop"]');
+    await expect.poll(() => status.isVisible()).toBe(true);
+    expect(await status.textContent()).toMatch(/through the hoop/);
+    // The goal row sits above the box, not over it.
+    const row = (await status.boundingBox())!;
+    const top = await g.worldToPage(0, 10);
+    expect(row.y + row.height).toBeLessThanOrEqual(top.y + 1);
+    expect(await g.page.evaluate(() => (window.game as unknown as HoopGame).round())).toMatchObject({
+      phase: 'ready',
+      score: 0,
+      seconds: 6,
+    });
+    // A drag-free arc from (8, 4) m coming down on the rim's centre after 1.3 s (the node test shows
+    // the same throw through the hoop in the scene's physics); the eight sandbox balls may knock it
+    // away, so up to three throws.
+    const before = await g.page.evaluate(() => (window.game as unknown as HoopGame).hoop());
+    let score = 0;
+    for (let attempt = 0; attempt < 3 && score === 0; attempt++) {
+      await g.page.evaluate(() => {
+        const game = window.game as unknown as HoopGame;
+        const o = game.hoop();
+        const x = 0.5 * (o.minX + o.maxX),
+          T = 1.3;
+        game.shoot(8, 4, (x - 8) / T, (o.y - 4 + 0.5 * 9.81 * T * T) / T);
+      });
+      score = await g.waitFor(() => (window.game as unknown as HoopGame).round().score, null, 4000).catch(() => 0);
+    }
+    expect(score).toBe(1);
+    const after = await g.page.evaluate(() => ({
+      hoop: (window.game as unknown as HoopGame).hoop(),
+      best: (window.game as unknown as HoopGame).best(),
+      stored: localStorage.getItem('bitphysics.bouncing-balls.best'),
+      text: (window.game as unknown as HoopGame).statusText(),
+    }));
+    expect(after.hoop).not.toEqual(before);
+    expect(after.best).toBe(1);
+    expect(after.stored).toBe('1');
+    expect(after.text).toMatch(/Baskets 1 .*Best 1/);
+    // A ball dropped from above the rim's line does not count.
+    const shots = await g.page.evaluate(() => {
+      const game = window.game as unknown as HoopGame;
+      const o = game.hoop();
+      game.shoot(0.5 * (o.minX + o.maxX), o.y + 1.2);
+      return game.round().shots;
+    });
+    await g.frames(60);
+    expect(await g.page.evaluate(() => (window.game as unknown as HoopGame).round())).toMatchObject({ score: 1, shots: shots });
+    // The 6 s round ends: time up, the Play-again button, which starts a new round keeping the best.
+    await g.waitFor(() => (window.game as unknown as HoopGame).round().phase === 'over', null, 20_000);
+    expect(await status.textContent()).toMatch(/Time!/);
+    const again = g.page.getByRole('button', { name: 'Play again ▶' });
+    await again.click();
+    await g.waitFor(() => (window.game as unknown as HoopGame).round().phase === 'ready', null);
+    expect(await g.page.evaluate(() => (window.game as unknown as HoopGame).best())).toBe(1);
+    expect(await again.count()).toBe(0);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
+  it('phone 390 x 844, touch: the goal shows above the box; a swipe from below the line throws an orange ball and starts the clock', async () => {
+    const g = await h.openGame('bouncing-balls', { viewport: { width: 390, height: 844 }, touch: true, query: { count: 8 } });
+    const status = g.page.locator('[data-hud="hoop"]');
+    await expect.poll(() => status.isVisible()).toBe(true);
+    expect(await status.textContent()).toMatch(/through the hoop.*Swipe to throw/s);
+    const row = (await status.boundingBox())!;
+    const top = await g.worldToPage(0, 16);
+    expect(row.y + row.height).toBeLessThanOrEqual(top.y + 1);
+    const n0 = await g.page.evaluate(() => (window.game as unknown as HoopGame).ballIds().length);
+    // Swipe up and to the right from 2 m above the floor, left of the box's middle.
+    const from = await g.worldToPage(3, 2),
+      to = await g.worldToPage(5, 5);
+    await swipe(g.page, [
+      [from.x, from.y],
+      [from.x + 0.25 * (to.x - from.x), from.y + 0.25 * (to.y - from.y)],
+      [from.x + 0.5 * (to.x - from.x), from.y + 0.5 * (to.y - from.y)],
+      [from.x + 0.75 * (to.x - from.x), from.y + 0.75 * (to.y - from.y)],
+      [to.x, to.y],
+    ]);
+    const r = await g.waitFor((n) => {
+      const game = window.game as unknown as HoopGame;
+      return game.ballIds().length === n + 1 && game.round().phase === 'playing' ? game.round() : null;
+    }, n0);
+    expect(r.shots).toBe(1);
+    await g.waitFor((t) => (window.game as unknown as HoopGame).round().timeLeft < t - 0.5, r.timeLeft);
+    expect(await status.textContent()).toMatch(/Baskets 0 · Time \d+ s/);
+    expect(g.errors).toEqual([]);
+    await g.close();
   });
 });

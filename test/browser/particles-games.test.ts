@@ -1,5 +1,8 @@
 /**
- * The particle games in headless Chromium: fireworks and black hole load without errors and draw;
+ * The particle games in headless Chromium: fireworks' lantern show (the goal shows above the sky at once;
+ * a click at desktop size and a tap on a phone light a lantern and count a shell; a lit level offers the
+ * next; the row's button switches to free play with the auto-show); fireworks and black hole load without
+ * errors and draw;
  * a click in fireworks launches a shell that bursts where clicked 2 s later and whose sparks appear
  * and later all expire (particle count rises then falls), a longer hold makes a bigger burst, A
  * toggles the auto-show, a click holds the auto-show for 8 s; in black hole the
@@ -10,6 +13,7 @@
  * Software WebGL is slow (a few frames a second with the other test files running), so the pages
  * run with small counts (?sparks, ?generations=1, ?opening=0) and waits are generous.
  */
+import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
 
@@ -205,6 +209,89 @@ describe('fireworks', () => {
       (window.game as unknown as { paused: boolean }).paused = false;
     });
     expect(g.errors).toEqual([]);
+  });
+});
+
+/** What the lantern show puts on window.game (games/fireworks/main.ts). */
+interface LanternGame {
+  lanterns(): { on: boolean; level: number; lit: boolean[]; shells: number; stars: number; best: number[]; positions: [number, number][] };
+  nextLevel(): void;
+  params: { autoShow: boolean };
+}
+
+/** Page position (CSS px) of lantern `i` of the level being played, through the camera. */
+async function lanternOnPage(g: GamePage, i: number): Promise<{ x: number; y: number }> {
+  const [x, y] = await g.page.evaluate((k) => (window.game as unknown as LanternGame).lanterns().positions[k]!, i);
+  return g.worldToPage(x, y);
+}
+
+/** Lit lanterns of the level being played. */
+function litCount(page: Page): Promise<number> {
+  return page.evaluate(() => (window.game as unknown as LanternGame).lanterns().lit.filter(Boolean).length);
+}
+
+describe('fireworks: the lantern show', () => {
+  let h: Harness;
+  beforeAll(async () => {
+    h = await Harness.start();
+  }, START_TIMEOUT_MS);
+  afterAll(async () => {
+    await h?.close();
+  });
+
+  it('desktop 1280 x 800: the goal shows above the sky; clicks on the lanterns light them (3 shells, par 3: 3 stars, kept); Next level; Free play turns the auto-show on', async () => {
+    const g = await h.openGame('fireworks', { viewport: { width: 1280, height: 800 }, query: { opening: 0, sparks: 60, generations: 1 } });
+    const status = g.page.locator('[data-hud="lanterns"]');
+    expect(await status.isVisible()).toBe(true);
+    expect(await status.textContent()).toMatch(/Light every lantern.*Level 1\/5 · Lit 0\/3 · Shells 0 · Par 3/s);
+    const row = (await status.boundingBox())!;
+    const canvas = await g.canvasBox();
+    expect(row.y + row.height).toBeLessThanOrEqual(canvas.y + 1);
+    let state = await g.page.evaluate(() => (window.game as unknown as LanternGame).lanterns());
+    expect(state).toMatchObject({ on: true, level: 0, shells: 0, stars: 0 });
+    expect(await g.page.evaluate(() => (window.game as unknown as LanternGame).params.autoShow)).toBe(false);
+    for (let i = 0; i < 3; i++) {
+      const p = await lanternOnPage(g, i);
+      await g.page.mouse.click(p.x, p.y);
+    }
+    // Each shell bursts 2 s (world time) after its click; at software WebGL's few frames a second that takes a while.
+    await g.waitFor(() => (window.game as unknown as LanternGame).lanterns().stars > 0, null, 60_000);
+    state = await g.page.evaluate(() => (window.game as unknown as LanternGame).lanterns());
+    expect(state).toMatchObject({ lit: [true, true, true], shells: 3, stars: 3 });
+    expect(state.best[0]).toBe(3);
+    expect(await g.page.evaluate(() => localStorage.getItem('bitphysics.fireworks.stars'))).toBe('[3,0,0,0,0]');
+    await g.waitFor(() => /All lanterns lit! ★★★/.test(document.querySelector('[data-hud="lanterns"]')?.textContent ?? ''), null);
+    await g.page.getByRole('button', { name: 'Next level ▶' }).click();
+    await g.waitFor(() => (window.game as unknown as LanternGame).lanterns().level === 1, null);
+    expect(await status.textContent()).toMatch(/Level 2\/5 · Lit 0\/3 · Shells 0 · Par 2/);
+    await g.page.getByRole('button', { name: 'Free play' }).click();
+    await g.waitFor(() => !(window.game as unknown as LanternGame).lanterns().on, null);
+    expect(await g.page.evaluate(() => (window.game as unknown as LanternGame).params.autoShow)).toBe(true);
+    expect(await status.textContent()).toMatch(/Free play/);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
+  it('phone 390 x 844, touch: the goal shows above the sky; a tap on a lantern lights it and counts a shell', async () => {
+    const g = await h.openGame('fireworks', {
+      viewport: { width: 390, height: 844 },
+      touch: true,
+      query: { opening: 0, sparks: 60, generations: 1 },
+    });
+    const status = g.page.locator('[data-hud="lanterns"]');
+    expect(await status.textContent()).toMatch(/Light every lantern.*Tap near a lantern/s);
+    const row = (await status.boundingBox())!;
+    const canvas = await g.canvasBox();
+    expect(row.y + row.height).toBeLessThanOrEqual(canvas.y + 1);
+    expect(await litCount(g.page)).toBe(0);
+    const p = await lanternOnPage(g, 1);
+    await g.page.touchscreen.tap(p.x, p.y);
+    await g.waitFor(() => (window.game as unknown as LanternGame).lanterns().lit[1], null, 60_000);
+    expect(await litCount(g.page)).toBe(1);
+    expect(await g.page.evaluate(() => (window.game as unknown as LanternGame).lanterns().shells)).toBe(1);
+    await g.waitFor(() => /Lit 1\/3 · Shells 1/.test(document.querySelector('[data-hud="lanterns"]')?.textContent ?? ''), null);
+    expect(g.errors).toEqual([]);
+    await g.close();
   });
 });
 

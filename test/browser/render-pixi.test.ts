@@ -341,7 +341,7 @@ describe('WorldRenderer in the browser', () => {
       null,
       30_000,
     );
-    expect(s.segments).toBe(3);
+    expect(s.segments).toBe(5); // the scene's three inclined walls and the hoop's backboard and rim
     expect(await g.page.evaluate(() => (window.game as unknown as Host).renderer.trailsEnabled)).toBe(true);
     expect(await g.canvasColors()).toBeGreaterThan(16);
     await g.page.evaluate(() => {

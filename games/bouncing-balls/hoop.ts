@@ -1,0 +1,181 @@
+/**
+ * The hoop game on top of the bouncing-balls sandbox: throw balls through a basketball hoop (a
+ * backboard and a front rim, both static segments the balls bounce off with the scene's restitution)
+ * as many times as you can in `ROUND_SECONDS`; the hoop moves to its next spot after each basket.
+ * Pure rules and the hoop's bodies: no DOM, no pixi (it runs in Node for the tests).
+ *
+ * A basket: the centre of one of the player's balls crosses the rim's line downwards between the
+ * front rim's inner end and the backboard (`throughHoop`). Only balls released below the rim count
+ * (`SHOT_LINE_GAP`), so a ball dropped straight in from above is no basket. The round's clock starts
+ * with the player's first ball, so reading the goal costs no time.
+ */
+import { addSegment, type PhysicsWorld, removeBody } from '@bitphysics/physics';
+
+/** Length of a round, s. */
+export const ROUND_SECONDS = 45;
+
+/** Radius of the player's balls, m (fixed, so every shot is the same ball whatever the sandbox's ball count). */
+export const PLAYER_RADIUS = 0.4;
+
+/** Half the hoop's opening, m: rim centre to the front rim's inner end, and to the backboard's face. */
+export const HOOP_HALF_WIDTH = 1;
+
+/** Height of the backboard above the rim, m, and how far it reaches below it. */
+export const BACKBOARD = Object.freeze({ above: 1.6, below: 0.3 });
+
+/** Length of the front rim, m (a short horizontal bar outside the opening). */
+export const FRONT_RIM_LENGTH = 0.25;
+
+/** Thickness radius of the backboard and the rim, m. */
+export const HOOP_RADIUS = 0.08;
+
+/** A ball counts only if released with its centre at least this far below the rim, m. */
+export const SHOT_LINE_GAP = 0.3;
+
+/** A hoop position: rim centre (x, y), m, and the side of its backboard (+1 right, -1 left). */
+export interface HoopSpot {
+  readonly x: number;
+  readonly y: number;
+  readonly side: 1 | -1;
+}
+
+/** Hoop spots of the wide 16 x 10 m box (scene.ts BOX), in the order they come: clear of its inclined walls. */
+export const HOOP_SPOTS: readonly HoopSpot[] = Object.freeze([
+  { x: 13.4, y: 7.4, side: 1 },
+  { x: 2.4, y: 8, side: -1 },
+  { x: 11.6, y: 5.8, side: 1 },
+  { x: 4.2, y: 2.8, side: -1 },
+  { x: 10.8, y: 8, side: 1 },
+]);
+
+/** Hoop spots of the tall 10 x 16 m box (scene.ts BOX_TALL). */
+export const HOOP_SPOTS_TALL: readonly HoopSpot[] = Object.freeze([
+  { x: 7.6, y: 12.6, side: 1 },
+  { x: 2.2, y: 13.6, side: -1 },
+  { x: 7.8, y: 8.6, side: 1 },
+  { x: 2.2, y: 7.4, side: -1 },
+  { x: 5.8, y: 13.6, side: 1 },
+]);
+
+/** The spots of a layout (`tall` for the upright box). */
+export function hoopSpots(tall: boolean): readonly HoopSpot[] {
+  return tall ? HOOP_SPOTS_TALL : HOOP_SPOTS;
+}
+
+/** The hoop's opening: the rim's height, m, and the x range, m, a ball's centre must cross it in. */
+export interface HoopOpening {
+  readonly y: number;
+  readonly minX: number;
+  readonly maxX: number;
+}
+
+/** The opening of a hoop at `spot`: between the front rim's inner end and the backboard's face. */
+export function hoopOpening(spot: HoopSpot): HoopOpening {
+  const a = spot.x - HOOP_HALF_WIDTH,
+    b = spot.x + HOOP_HALF_WIDTH;
+  return { y: spot.y, minX: a, maxX: b };
+}
+
+/** The segments of a hoop at `spot`, m, [ax, ay, bx, by]: the backboard, then the front rim. */
+export function hoopSegments(spot: HoopSpot): [number, number, number, number][] {
+  const s = spot.side;
+  const board = spot.x + s * (HOOP_HALF_WIDTH + HOOP_RADIUS);
+  const front = spot.x - s * (HOOP_HALF_WIDTH + HOOP_RADIUS);
+  return [
+    [board, spot.y - BACKBOARD.below, board, spot.y + BACKBOARD.above],
+    [front, spot.y, front - s * FRONT_RIM_LENGTH, spot.y],
+  ];
+}
+
+/** Adds the hoop's backboard and front rim to `world` with the given material. @returns their entity ids. */
+export function addHoop(world: PhysicsWorld, spot: HoopSpot, restitution: number, friction: number): number[] {
+  return hoopSegments(spot).map(([ax, ay, bx, by]) =>
+    addSegment(world, { a: [ax, ay], b: [bx, by], radius: HOOP_RADIUS, restitution, friction }),
+  );
+}
+
+/** Removes the hoop's bodies (`addHoop`'s ids) from `world`. */
+export function removeHoop(world: PhysicsWorld, ids: readonly number[]): void {
+  for (const e of ids) removeBody(world, e);
+}
+
+/**
+ * How a ball's centre moving from (x0, y0) to (x1, y1), m, in one step crossed the hoop's opening:
+ * -1 down through it (a basket, if the ball may score), +1 up through it from below (the page then
+ * takes the ball's chance to score away: a basket is made from above), 0 not through it (no
+ * crossing of the rim's line, or a crossing outside [minX, maxX]).
+ * @throws RangeError on non-finite coordinates.
+ */
+export function hoopCrossing(opening: HoopOpening, x0: number, y0: number, x1: number, y1: number): -1 | 0 | 1 {
+  if (![x0, y0, x1, y1].every(Number.isFinite))
+    throw new RangeError(`hoopCrossing: coordinates must be finite, got (${x0}, ${y0}) -> (${x1}, ${y1})`);
+  const down = y0 >= opening.y && y1 < opening.y;
+  const up = y0 < opening.y && y1 >= opening.y;
+  if (!down && !up) return 0;
+  const t = (y0 - opening.y) / (y0 - y1);
+  const x = x0 + t * (x1 - x0);
+  if (x < opening.minX || x > opening.maxX) return 0;
+  return down ? -1 : 1;
+}
+
+/** Whether a ball released with its centre at height `y`, m, may score in the hoop at `spot` (released below the rim). */
+export function mayScore(spot: HoopSpot, y: number): boolean {
+  return y <= spot.y - SHOT_LINE_GAP;
+}
+
+/** The phase of a round: waiting for the first ball, the clock running, or time up. */
+export type RoundPhase = 'ready' | 'playing' | 'over';
+
+/** A round of the hoop game. */
+export interface HoopRound {
+  phase: RoundPhase;
+  /** Baskets scored this round. */
+  score: number;
+  /** Length of the round, s. */
+  readonly seconds: number;
+  /** Seconds left on the clock, in [0, seconds]. */
+  timeLeft: number;
+  /** Index of the hoop's spot in the layout's spots (advances with each basket, cycling). */
+  spot: number;
+  /** Balls the player threw or dropped this round. */
+  shots: number;
+}
+
+/** A new round of `seconds` s (default ROUND_SECONDS), waiting for the first ball. @throws RangeError unless seconds is finite and > 0. */
+export function createRound(seconds = ROUND_SECONDS): HoopRound {
+  if (!(seconds > 0 && Number.isFinite(seconds))) throw new RangeError(`createRound: seconds must be finite and > 0, got ${seconds}`);
+  return { phase: 'ready', score: 0, seconds, timeLeft: seconds, spot: 0, shots: 0 };
+}
+
+/** The player released a ball: starts the clock if the round was waiting. Nothing changes once time is up. */
+export function roundShot(round: HoopRound): void {
+  if (round.phase === 'over') return;
+  round.phase = 'playing';
+  round.shots++;
+}
+
+/**
+ * Runs the clock `dt` s (only while playing). @returns true when this call ended the round.
+ * @throws RangeError if dt is negative or not finite.
+ */
+export function roundTick(round: HoopRound, dt: number): boolean {
+  if (!(dt >= 0 && Number.isFinite(dt))) throw new RangeError(`roundTick: dt must be finite and >= 0 s, got ${dt}`);
+  if (round.phase !== 'playing') return false;
+  round.timeLeft = Math.max(0, round.timeLeft - dt);
+  if (round.timeLeft > 0) return false;
+  round.phase = 'over';
+  return true;
+}
+
+/**
+ * A basket: one point and the hoop moves to its next spot (of `spotCount`, cycling). Ignored unless
+ * the clock runs. @returns whether it counted. @throws RangeError if spotCount is not a positive integer.
+ */
+export function roundBasket(round: HoopRound, spotCount: number): boolean {
+  if (!(Number.isInteger(spotCount) && spotCount > 0))
+    throw new RangeError(`roundBasket: spotCount must be a positive integer, got ${spotCount}`);
+  if (round.phase !== 'playing') return false;
+  round.score++;
+  round.spot = (round.spot + 1) % spotCount;
+  return true;
+}

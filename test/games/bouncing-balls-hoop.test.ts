@@ -1,0 +1,147 @@
+// The hoop game of bouncing balls (games/bouncing-balls/hoop.ts): the crossing rule against hand-worked
+// cases, the round's clock and score, and a real throw in the scene's physics that goes down through the
+// hoop (and one that hits the backboard and bounces back instead).
+import { addBody, createPhysicsWorld, slotOf, step } from '@bitphysics/physics';
+import { describe, expect, it } from 'vitest';
+import {
+  addHoop,
+  createRound,
+  HOOP_HALF_WIDTH,
+  HOOP_SPOTS,
+  HOOP_SPOTS_TALL,
+  hoopCrossing,
+  hoopOpening,
+  hoopSegments,
+  mayScore,
+  PLAYER_RADIUS,
+  ROUND_SECONDS,
+  roundBasket,
+  roundShot,
+  roundTick,
+} from '../../games/bouncing-balls/hoop';
+import { bouncingBallsWorldOptions, buildBouncingBalls, layoutOf } from '../../games/bouncing-balls/scene';
+
+const spot = { x: 10, y: 6, side: 1 as const };
+const o = hoopOpening(spot);
+
+describe('hoopCrossing', () => {
+  it('down through the opening is -1, up through it +1, beside it or not crossing 0', () => {
+    expect(o).toEqual({ y: 6, minX: 9, maxX: 11 });
+    expect(hoopCrossing(o, 10, 6.2, 10.1, 5.9)).toBe(-1);
+    expect(hoopCrossing(o, 10, 5.9, 10.1, 6.2)).toBe(1);
+    // Crosses the line at x = 8.5 (interpolated), outside [9, 11].
+    expect(hoopCrossing(o, 8, 6.5, 9, 5.5)).toBe(0);
+    // Ends outside but crosses at x = 10.9: inside.
+    expect(hoopCrossing(o, 10.8, 6.1, 11.8, 5.1)).toBe(-1);
+    // Stays above, stays below.
+    expect(hoopCrossing(o, 10, 7, 10, 6.01)).toBe(0);
+    expect(hoopCrossing(o, 10, 5, 10, 5.99)).toBe(0);
+  });
+  it('rejects non-finite coordinates, naming the function', () => {
+    expect(() => hoopCrossing(o, Number.NaN, 1, 2, 3)).toThrow(/hoopCrossing/);
+  });
+});
+
+describe('hoop layout', () => {
+  for (const [name, spots, tall] of [
+    ['wide', HOOP_SPOTS, false],
+    ['tall', HOOP_SPOTS_TALL, true],
+  ] as const) {
+    it(`${name}: every hoop, with its net (1.1 m) and backboard, lies inside the box`, () => {
+      const { box } = layoutOf(tall);
+      for (const s of spots) {
+        for (const [ax, ay, bx, by] of hoopSegments(s)) {
+          for (const [x, y] of [
+            [ax, ay],
+            [bx, by],
+          ] as const) {
+            expect(x).toBeGreaterThan(box.min[0]);
+            expect(x).toBeLessThan(box.max[0]);
+            expect(y).toBeGreaterThan(box.min[1] + 1.1);
+            expect(y).toBeLessThan(box.max[1]);
+          }
+        }
+        // Room above the rim line for a ball released below it to come down through: rim below the top by 1 m or more.
+        expect(box.max[1] - s.y).toBeGreaterThan(1);
+      }
+    });
+  }
+  it('mayScore: a ball released 0.3 m or more below the rim may score, one higher may not', () => {
+    expect(mayScore(spot, 5.7)).toBe(true);
+    expect(mayScore(spot, 5.71)).toBe(false);
+    expect(mayScore(spot, 9)).toBe(false);
+  });
+});
+
+describe('hoop round', () => {
+  it('waits for the first ball, runs the clock, scores only while playing, and ends at 0 s', () => {
+    const r = createRound();
+    expect(r.phase).toBe('ready');
+    expect(roundTick(r, 5)).toBe(false);
+    expect(r.timeLeft).toBe(ROUND_SECONDS); // the clock waits for the first ball
+    expect(roundBasket(r, 5)).toBe(false);
+    roundShot(r);
+    expect(r.phase).toBe('playing');
+    expect(roundBasket(r, 5)).toBe(true);
+    expect(r).toMatchObject({ score: 1, spot: 1 });
+    for (let k = 0; k < 4; k++) roundBasket(r, 5);
+    expect(r.spot).toBe(0); // cycled through the 5 spots
+    expect(roundTick(r, ROUND_SECONDS - 1)).toBe(false);
+    expect(r.timeLeft).toBeCloseTo(1, 12);
+    expect(roundTick(r, 2)).toBe(true);
+    expect(r).toMatchObject({ phase: 'over', timeLeft: 0, score: 5 });
+    expect(roundBasket(r, 5)).toBe(false);
+    roundShot(r);
+    expect(r.phase).toBe('over');
+    expect(r.shots).toBe(1);
+  });
+  it('rejects a negative dt and a spot count of 0, naming them', () => {
+    expect(() => roundTick(createRound(), -1)).toThrow(/roundTick: dt/);
+    expect(() => roundBasket(createRound(), 0)).toThrow(/roundBasket: spotCount/);
+  });
+});
+
+/** Throws a player's ball from (x0, y0) so that a drag-free parabola reaches (x1, y1) after T s; returns the crossings seen over 3 s. */
+function throwAt(x0: number, y0: number, x1: number, y1: number, T: number) {
+  const options = { count: 1, seed: 1 };
+  const world = createPhysicsWorld(bouncingBallsWorldOptions(options));
+  buildBouncingBalls(world, options);
+  const s = HOOP_SPOTS[0]!;
+  addHoop(world, s, 0.8, 0.2);
+  const g = 9.81;
+  const e = addBody(world, {
+    position: [x0, y0],
+    velocity: [(x1 - x0) / T, (y1 - y0 + 0.5 * g * T * T) / T],
+    radius: PLAYER_RADIUS,
+    density: 1,
+    restitution: 0.8,
+    friction: 0.2,
+  });
+  const P = world.components.Position;
+  const op = hoopOpening(s);
+  const crossings: number[] = [];
+  let x = x0,
+    y = y0;
+  for (let i = 0; i < 180; i++) {
+    step(world);
+    const nx = P.x[slotOf(e)]!,
+      ny = P.y[slotOf(e)]!;
+    const c = hoopCrossing(op, x, y, nx, ny);
+    if (c !== 0) crossings.push(c);
+    x = nx;
+    y = ny;
+  }
+  return crossings;
+}
+
+describe('a throw in the scene (wide box, first hoop at (13.4, 7.4) m, backboard right)', () => {
+  it('an arc that comes down on the rim centre after 1.3 s goes down through the hoop', () => {
+    const s = HOOP_SPOTS[0]!;
+    expect(throwAt(8, 4, s.x, s.y, 1.3)).toEqual([-1]);
+  });
+  it('a flat, fast throw at the backboard bounces off it and does not go through', () => {
+    const s = HOOP_SPOTS[0]!;
+    // Aimed 0.9 m above the rim at the backboard's face (x + HOOP_HALF_WIDTH), still rising there.
+    expect(throwAt(8, 4, s.x + HOOP_HALF_WIDTH + 0.5, s.y + 0.9, 0.5)).toEqual([]);
+  });
+});
