@@ -207,3 +207,37 @@ export function bodyHalfExtents(
   }
   return out;
 }
+
+/**
+ * A distant city's skyline, drawn once on a clear 1024 x 128 px canvas that repeats around the
+ * site: a far row of pale towers and a nearer, darker row, hazy blue-grey as far things look on a
+ * clear day, with a few lit windows. Building heights run up to the canvas's top.
+ */
+export function skylineTexture(): CanvasTexture {
+  const [c, g] = canvas(1024, 128);
+  const rand = random(17);
+  const row = (color: string, minH: number, maxH: number, minW: number, maxW: number, windows: string | null): void => {
+    for (let x = -10; x < 1024; ) {
+      const w = minW + rand() * (maxW - minW),
+        h = minH + rand() * (maxH - minH);
+      g.fillStyle = color;
+      g.fillRect(x, 128 - h, w, h);
+      // A stepped crown on some of the taller towers, a mast on a few.
+      if (h > 0.7 * maxH && rand() < 0.5) g.fillRect(x + w * 0.25, 128 - h - 8, w * 0.5, 8);
+      if (h > 0.8 * maxH && rand() < 0.4) g.fillRect(x + w / 2 - 1, 128 - h - 22, 2, 22);
+      if (windows)
+        for (let wy = 128 - h + 6; wy < 124; wy += 8)
+          for (let wx = x + 3; wx < x + w - 4; wx += 6)
+            if (rand() < 0.12) {
+              g.fillStyle = windows;
+              g.fillRect(wx, wy, 2, 3);
+            }
+      x += w + (rand() < 0.3 ? 4 + rand() * 12 : 0);
+    }
+  };
+  row('#c3d5e4', 40, 110, 18, 46, null);
+  row('#a9bccd', 18, 70, 22, 60, 'rgba(255, 250, 235, 0.5)');
+  const t = texture(c);
+  t.wrapS = RepeatWrapping;
+  return t;
+}

@@ -8,7 +8,8 @@
  *
  * Keys: A/D or ←/→ slew, W/S or ↑/↓ trolley out/in, Q/E hook up/down, L next level (once cleared),
  * G debug layer (joints, contacts), P pause, N step, R reset. Mouse: click a target to swing the ball
- * at it (the crane winds up and runs through); click the ground to send the hook there; drag the
+ * at it (the crane winds up and runs through); click the ground beside a target to swing at it,
+ * elsewhere to send the hook there; drag the
  * ball to pull it; right-drag orbits, wheel zooms.
  * URL: ?level=N, ?seed=S, ?debug, ?demo (the crane swings at the level's first tower by itself: the
  * gallery's thumbnail shows a hit).
@@ -30,6 +31,7 @@ import { ORBIT_CONTROLS_RIGHT, startThreeGame } from '@bitphysics/game-kit/three
 import { contactEvents, createPhysicsWorld, isAlive, type PhysicsWorld, step as physicsStep } from '@bitphysics/physics';
 import { BodyDrag3D } from '@bitphysics/render-three';
 import {
+  BackSide,
   BoxGeometry,
   BufferAttribute,
   BufferGeometry,
@@ -39,6 +41,7 @@ import {
   DoubleSide,
   Line,
   LineBasicMaterial,
+  LineSegments,
   Mesh,
   MeshBasicMaterial,
   MeshStandardMaterial,
@@ -55,7 +58,7 @@ import {
   Vector3,
 } from 'three';
 import { SiteEffects } from './effects';
-import { bodyHalfExtents, dirtTexture, pieceGeometry, pieceMaterials } from './look';
+import { bodyHalfExtents, dirtTexture, pieceGeometry, pieceMaterials, skylineTexture } from './look';
 import {
   aimAt,
   BALL_RADIUS,
@@ -376,6 +379,7 @@ shell.onWorldChange(() => {
   aimed = 0;
   lit = 0;
   runEndedAt = -1;
+  hintUntil = -1;
   swing.result = '';
 });
 
@@ -455,6 +459,39 @@ const footing = new Mesh(new BoxGeometry(2.4, 0.3, 2.4), new MeshStandardMateria
 footing.position.set(0, 0.15, 0);
 footing.receiveShadow = true;
 app.scene.add(footing);
+// A city on the horizon: its skyline painted around the inside of an open cylinder standing at the
+// grass's edge (one unlit, shadowless draw), so the view past the site is not an empty field.
+const skylineMap = skylineTexture();
+skylineMap.repeat.set(7, 1);
+const skyline = new Mesh(
+  new CylinderGeometry(43, 43, 7, 64, 1, true),
+  new MeshBasicMaterial({ map: skylineMap, transparent: true, side: BackSide, depthWrite: false, fog: false }),
+);
+skyline.position.y = 3.5;
+app.scene.add(skyline);
+// The crane's top: an apex over the mast (a four-sided lattice pyramid turning with the jib) and the
+// tie bars from its tip to the jib two thirds out and to the counter-jib's end (drawn each frame).
+const APEX_HEIGHT = 2.4;
+const apex = new Mesh(new ConeGeometry(0.55, APEX_HEIGHT, 4, 1, true), jibMaterial);
+apex.position.set(0, JIB_HEIGHT + 0.45 + APEX_HEIGHT / 2, 0);
+apex.castShadow = true;
+app.scene.add(apex);
+const tiePositions = new Float32Array(12);
+const tieGeometry = new BufferGeometry();
+tieGeometry.setAttribute('position', new BufferAttribute(tiePositions, 3));
+const ties = new LineSegments(tieGeometry, new LineBasicMaterial({ color: 0x3b3f46 }));
+ties.frustumCulled = false;
+app.scene.add(ties);
+/** Sets the tie bars' ends for the jib's slew angle `a`, rad. */
+function placeTies(a: number): void {
+  const ca = Math.cos(a),
+    sa = Math.sin(a);
+  const top = JIB_HEIGHT + 0.45 + APEX_HEIGHT;
+  const out = (2 / 3) * JIB_LENGTH_OUT;
+  tiePositions.set([0, top, 0, out * ca, JIB_HEIGHT + 0.45, -out * sa, 0, top, 0, -2.6 * ca, JIB_HEIGHT + 0.2, 2.6 * sa]);
+  tieGeometry.attributes.position!.needsUpdate = true;
+  apex.rotation.set(0, a + Math.PI / 4, 0);
+}
 const cableGeometry = new BufferGeometry();
 const cablePositions = new Float32Array(6);
 cableGeometry.setAttribute('position', new BufferAttribute(cablePositions, 3));
@@ -643,14 +680,40 @@ function pressAt(ndcX: number, ndcY: number): 'ball' | 'swing' | 'hook' | 'none'
     handles.controls.released++;
     return 'ball';
   }
-  const target = hit && handles.pieces.some((p) => p.body === hit.eid) ? hit.eid : nearPiece(ndcX, ndcY);
-  if (target !== 0) return swingAt(target) ? 'swing' : 'none';
+  let target = hit && handles.pieces.some((p) => p.body === hit.eid) ? hit.eid : nearPiece(ndcX, ndcY);
   raycaster.setFromCamera(new Vector2(ndcX, ndcY), app.camera);
-  if (raycaster.ray.intersectPlane(ground, groundHit) === null) return 'none';
+  const onGround = raycaster.ray.intersectPlane(ground, groundHit) !== null;
+  if (target === 0 && onGround) target = pieceNearGround(groundHit.x, groundHit.z);
+  if (target !== 0) return swingAt(target) ? 'swing' : 'none';
+  if (!onGround) return 'none';
   handles.controls.moves = [];
   handles.controls.goal = [groundHit.x, groundHit.z];
   aimed = 0;
+  hintUntil = shell.world.time + HINT_SHOWN;
   return 'hook';
+}
+/** Metres across the ground within which a tap beside a structure swings at it (see pieceNearGround). */
+const GROUND_NEAR = 1.8;
+/**
+ * The standing piece to swing at for a tap on the ground at (x, z), m: of those whose centre is
+ * within GROUND_NEAR across the ground, the nearest, counting each metre of height over 1 m as
+ * a quarter metre more (a tap at a tower's foot takes a block low in it); 0 when none is near. A tap
+ * beside a structure meant it (a tap that only sent the hook there read as a game that did not answer).
+ */
+function pieceNearGround(x: number, z: number): number {
+  const P = shell.world.components.Position;
+  let best = 0,
+    bestD = Number.POSITIVE_INFINITY;
+  for (const p of handles.pieces) {
+    if (p.fallen || !isAlive(shell.world, p.body)) continue;
+    const across = Math.hypot(P.x[p.body]! - x, P.z[p.body]! - z);
+    const d = across + 0.25 * Math.max(0, P.y[p.body]! - 1);
+    if (across < GROUND_NEAR && d < bestD) {
+      bestD = d;
+      best = p.body;
+    }
+  }
+  return best;
 }
 /** The piece the last swing was aimed at (marked with a ring and an arrow while the swing runs), or 0. */
 let aimed = 0;
@@ -866,6 +929,28 @@ plan.addEventListener('click', (event) => {
   }
 });
 
+// A plain hint over the scene of what a tap does: shown until the level's first swing, and for
+// HINT_SHOWN s after a tap on open ground (which moves the hook, not the ball).
+const hint = document.createElement('div');
+hint.dataset.hud = 'tap-hint';
+hint.setAttribute('role', 'status');
+hint.style.cssText =
+  'position: absolute; left: 50%; top: 10px; transform: translateX(-50%); max-width: 90%; padding: 6px 12px; border-radius: 16px; background: rgba(16, 20, 28, 0.78); color: #ffe08a; font: 600 15px/1.3 system-ui, sans-serif; text-align: center; pointer-events: none; z-index: 2';
+pageLayout().stage.append(hint);
+/** Seconds a hint after a tap on open ground stays. */
+const HINT_SHOWN = 3;
+/** World time until which the open-ground hint shows. */
+let hintUntil = -1;
+const tapWord = touch ? 'Tap' : 'Click';
+/** The hint's text now ('' hides it). */
+function hintText(): string {
+  const c = handles.controls;
+  if (cleared || outOfSwings()) return '';
+  if (shell.world.time < hintUntil) return `That moves the hook. ${tapWord} a block to swing the ball at it`;
+  if (c.released === 0 && c.moves.length === 0 && aimed === 0) return `${tapWord} a block: the crane swings the ball into it`;
+  return '';
+}
+
 let frames = 0;
 /** World time the last swing's run ended (the result is counted 1.5 s later), or -1. */
 let runEndedAt = -1;
@@ -895,6 +980,7 @@ function frame(): void {
   jib.rotation.set(0, c.angle, 0);
   counterweight.position.set(-2.6 * ca, JIB_HEIGHT - 0.35, 2.6 * sa);
   counterweight.rotation.set(0, c.angle, 0);
+  placeTies(c.angle);
   cab.position.set(0.2 * ca, JIB_HEIGHT - 0.6, -0.2 * sa);
   cab.rotation.set(0, c.angle, 0);
   const hp = renderer.drawnPosition(handles.trolley, hookAt) ?? hookPosition(c);
@@ -947,6 +1033,9 @@ function frame(): void {
           swing.result && shell.world.time - swing.resultAt < RESULT_SHOWN ? ` · ${swing.result}` : ''
         }${left <= 0 && handles.controls.moves.length === 0 ? ` · out of swings: ${touch ? 'tap ↻' : 'press R'} to retry` : ''}${swayHint()}`;
     showNext(cleared, `Level ${handles.level + 1} ▶`);
+    const text = hintText();
+    if (hint.textContent !== text) hint.textContent = text;
+    hint.style.display = text ? '' : 'none';
     drawPlan();
     readout.textContent = `step ${stepMs.toFixed(1)} ms (worst ${worstMs.toFixed(1)}) · ${handles.pieces.length} pieces`;
   }

@@ -99,6 +99,11 @@ export interface CraneControls {
    */
   moves: CraneMove[];
   /**
+   * The swing the moves are planned for (see `aimAt`), made again from where the ball is as it
+   * runs; null when the moves are not a planned swing (and once they are done).
+   */
+  swing: SwingAim | null;
+  /**
    * Swings taken on this level: counted by `craneSystem` when it begins a move marked `release` (the
    * ball let go into its run at a target), and by the page for each drag of the ball let go. A swing
    * re-aimed during its wind-up (`aimAt` again) has not been taken and is not counted.
@@ -288,7 +293,7 @@ export function buildWreckingBall(world: PhysicsWorld, options: WreckingBallOpti
   };
   for (const v of [crane.angle, crane.radius, crane.height])
     if (!Number.isFinite(v)) throw new RangeError(`buildWreckingBall: crane must hold finite numbers, got ${JSON.stringify(at)}`);
-  const controls: CraneControls = { slew: 0, trolley: 0, hoist: 0, steady: false, goal: null, moves: [], released: 0 };
+  const controls: CraneControls = { slew: 0, trolley: 0, hoist: 0, steady: false, goal: null, moves: [], swing: null, released: 0 };
   const [hx, hy, hz] = hookPosition(crane);
   const trolley = addBody(world, { position: [hx, hy, hz], kinematic: true, orientation: [0, 0, 0, 1] });
   // The chain hangs straight down from the hook; links are joined end to end.
@@ -368,37 +373,282 @@ export const STEADY_DAMPING = 1;
  */
 export const STEADY_GAIN = 2 * STEADY_DAMPING * Math.sqrt(9.81 / HANG);
 
-/** Length, m, of the straight run the hook makes up to a target in half a swing period (see `aimAt`). */
-export const RUN_UP = 6;
-/** Straight pieces the run is made of (each a timed move of the crane; see `aimAt`). */
-export const RUN_STEPS = 8;
-/** Swing amplitude, m, a wind-up waits for the ball's swing to decay under (see `aimAt`). */
-export const SWING_LEFT = 0.3;
-/** How far off the run's line, m, the hook may be for a wind-up of odd half periods (see `aimAt`). */
-export const SIDE_LEFT = 1;
-/** Directions `aimAt` tries for the run, evenly spaced around the target. */
-const RUN_DIRECTIONS = 24;
+/** Horizontal speed, m/s, the ball has as it reaches the tapped piece (see `aimAt`). */
+export const HIT_SPEED = 6;
+/** Shortest and longest time, s, from a tap to the ball's arrival that `aimAt` plans for. */
+export const PLAN_TIME_RANGE: readonly [number, number] = [1.2, 10];
+/** Step of the plan times `aimAt` tries, s. */
+const PLAN_TIME_STEP = 0.1;
+/**
+ * How much faster than the player's keys (SLEW_RATE, TROLLEY_SPEED) the crane may slew and run its
+ * trolley in a planned swing: an operator's practised full-speed move; at the keys' rates a target
+ * across the site took 7 to 8 s to reach.
+ */
+export const PLAN_RATE = 1.5;
+/** How a plan's time is shared among its three straight legs (`aimAt` tries each). */
+const LEG_SPLITS: ReadonlyArray<readonly [number, number, number]> = [
+  [1 / 3, 1 / 3, 1 / 3],
+  [0.5, 0.25, 0.25],
+  [0.25, 0.25, 0.5],
+  [0.25, 0.5, 0.25],
+  [0.4, 0.4, 0.2],
+];
+/** Integration step of the plan's pendulum model, s: the physics' substep (60 Hz, 4 substeps). */
+const PLAN_H = 1 / 240;
+/** Longest timed move of a plan, in PLAN_H steps (0.1 s): the hook's height follows its own profile. */
+const MOVE_STEPS = 24;
+/** Directions `aimAt` tries for the ball's approach, evenly spaced around the piece. */
+const APPROACH_DIRECTIONS = 24;
+/**
+ * Farthest, m, a plan lets the ball swing from under the hook (about 35 degrees on the chain): the
+ * plan's pendulum is linear; a plan that swung the ball 4 m out sent it 2.7 m up at a crib 0.6 m
+ * up, and at 1.8 m almost no plan was quick enough. At 3 m the ball reaches the piece within 0.2 s
+ * of the plan's time (measured over levels 1 to 5, see test/games/wrecking-ball-windup.test.ts).
+ */
+export const MAX_OFFSET = 3;
+/** Seconds of plan time a ball along a long piece's length costs (see `aimAt`). */
+const GLANCE_COST = 2;
+/** Seconds before the arrival in which pieces near the ball's path count as in the way of the hit. */
+const APPROACH_TIME = 0.8;
+/**
+ * A swing's plan is made again from where the ball is every REPLAN_EVERY s (the chain is not quite
+ * the model's pendulum), until REPLAN_UNTIL s before the hit (closer in, the legs' speeds it asks
+ * for grow past the crane's rates).
+ */
+export const REPLAN_EVERY = 0.25;
+export const REPLAN_UNTIL = 0.8;
 
 /**
- * Swings the ball at piece `piece` with timed moves (`CraneControls.moves`), from what a pendulum
- * does when its pivot moves at a constant velocity: starting at rest under the pivot, the ball lags,
- * then passes under it again half a period (T / 2) later moving at 2 w, and at rest a whole period
- * later; a pivot that moves at w1 for an odd number of half periods and then at w2 for one more
- * leaves the ball under it moving at 2 (w2 - w1) (small swings; T = SWING_PERIOD).
- * - The run: a straight line of RUN_UP m (shorter where the jib's reach asks) that ends over the
- *   piece, at constant speed over half a period (RUN_STEPS moves); the ball meets the piece at
- *   2 x 6 / 2.3 = 5 m/s and more as the hook stops over it. Of RUN_DIRECTIONS directions around the
- *   piece, the run takes the one with the fewest other pieces (standing or fallen) in the ball's
- *   way (a run along the jib's arc hit a wall's end brick and stopped short of the brick tapped),
- *   then the one whose start is nearest the hook.
- * - The wind-up before it: a straight move to the run's start, hoisted so the ball's centre passes
- *   at the piece's height, over the fewest odd half periods the crane's rates allow (one, 2.3 s,
- *   when the start is within reach of them) if the hook is within SIDE_LEFT of the run's line (as
- *   a hook near the piece is): the ball comes to the run's start swinging along the line, which the
- *   run turns into speed toward the piece (a hook backing away from the piece before the run adds
- *   to the hit). Skipped when the hook is already there. A ball still swinging from the last swing
- *   would meet the run off its line: then the wind-up takes whole periods, as many as the sway
- *   damping needs to bring the swing under SWING_LEFT, and the ball starts the run at rest.
+ * One axis of the plan's pendulum model: the ball at `b` (m) moving at `v` (m/s) on a chain from a
+ * hook at `p` (m) that moves at `u[i]` m/s for `n[i]` steps of PLAN_H s in turn; the ball obeys
+ * b'' = w^2 (p - b) - b' / SWAY_DAMPING_TIME (a linear pendulum with the ball's drag), w = 2 pi /
+ * SWING_PERIOD. @returns the final [p, b, v]; `path`, when given, gets b after every step.
+ */
+function pendulumAxis(
+  b: number,
+  v: number,
+  p: number,
+  u: ArrayLike<number>,
+  n: ArrayLike<number>,
+  path?: number[],
+): [number, number, number] {
+  const w2 = (2 * Math.PI) ** 2 / SWING_PERIOD ** 2,
+    c = 1 / SWAY_DAMPING_TIME,
+    h = PLAN_H;
+  for (let i = 0; i < n.length; i++) {
+    const ui = u[i]!;
+    for (let k = 0; k < n[i]!; k++) {
+      p += ui * h;
+      v += (w2 * (p - b) - c * v) * h;
+      b += v * h;
+      path?.push(b);
+    }
+  }
+  return [p, b, v];
+}
+
+/** Solves the 3 x 3 system m x = r (m by rows), or null when it is singular. */
+function solve3(m: number[][], r: number[]): number[] | null {
+  const det = (x: number[][]): number =>
+    x[0]![0]! * (x[1]![1]! * x[2]![2]! - x[1]![2]! * x[2]![1]!) -
+    x[0]![1]! * (x[1]![0]! * x[2]![2]! - x[1]![2]! * x[2]![0]!) +
+    x[0]![2]! * (x[1]![0]! * x[2]![1]! - x[1]![1]! * x[2]![0]!);
+  const d = det(m);
+  if (Math.abs(d) < 1e-12) return null;
+  return [0, 1, 2].map((j) => det(m.map((row, i) => row.map((x, k) => (k === j ? r[i]! : x)))) / d);
+}
+
+/**
+ * Hook height, m, a planned swing lifts the ball to on its way (its centre 2.5 m up, over the
+ * rubble and the low stacks) when the plan's time allows (see `hoistProfile`): a ball left low in
+ * the rubble of the last hit dragged through it and missed.
+ */
+/** Seconds before the hit the hook is down at the piece's height by, when the plan's time allows. */
+const LEVEL_OFF = 0.3;
+export const CRUISE_HEIGHT = Math.min(HOOK_RANGE[1], 2.5 + HANG);
+
+/**
+ * The hook's height, m, at time t (s) of a plan of `total` s from `from` to `to` (m) at HOIST_SPEED:
+ * up at once toward CRUISE_HEIGHT (or as far toward it as there is time to come down again), held,
+ * and down as late as it can to `to` (and level for the last LEVEL_OFF s): a ball lowered late swings
+ * over the pieces on its way.
+ */
+function hoistProfile(from: number, to: number, total: number, t: number): number {
+  // Level for the last LEVEL_OFF s when there is time (the ball meets the piece moving across, not down).
+  const need = Math.abs(to - from) / HOIST_SPEED;
+  total = Math.max(need, total - LEVEL_OFF);
+  if (t >= total) return to;
+  const top = Math.max(from, to, Math.min(CRUISE_HEIGHT, (HOIST_SPEED * total + from + to) / 2));
+  const up = (top - from) / HOIST_SPEED,
+    down = total - (top - to) / HOIST_SPEED;
+  if (t <= up) return from + HOIST_SPEED * t;
+  if (t <= down) return top;
+  return Math.max(to, top - HOIST_SPEED * (t - down));
+}
+
+/** A swing being planned (`CraneControls.swing`): what it aims at and how far it has gone. */
+export interface SwingAim {
+  /** The piece tapped. */
+  piece: number;
+  /** Where the hook ends, over the piece (m, x and z), and its height there, m. */
+  x: number;
+  z: number;
+  height: number;
+  /** The ball's horizontal velocity at the piece, m/s. */
+  vx: number;
+  vz: number;
+  /** Steps of PLAN_H s the plan takes in all, has done, and after which its run begins. */
+  steps: number;
+  done: number;
+  runAt: number;
+  /** The step at which the plan is made again next (see REPLAN_EVERY). */
+  replanAt: number;
+}
+
+/** Where the plan starts: the ball's horizontal position and velocity and the hook's position (m, m/s). */
+interface PlanStart {
+  bx: number;
+  bz: number;
+  vx: number;
+  vz: number;
+  hx: number;
+  hz: number;
+}
+
+/** Legs of a plan: the hook's velocity (m/s, x and z) on each and their lengths in PLAN_H steps. */
+interface Legs {
+  ux: number[];
+  uz: number[];
+  steps: number[];
+}
+
+/**
+ * The legs that take the hook from `s` to (ex, ez) over `steps` while the ball comes there too,
+ * moving at (wx, wz) m/s: a 3 x 3 linear system per axis on `pendulumAxis`'s responses. Null when singular.
+ */
+function solveLegs(s: PlanStart, ex: number, ez: number, wx: number, wz: number, steps: number[]): Legs | null {
+  const unit = [0, 1, 2].map((i) =>
+    pendulumAxis(
+      0,
+      0,
+      0,
+      [0, 1, 2].map((j) => (i === j ? 1 : 0)),
+      steps,
+    ),
+  );
+  const m = [unit.map((r) => r[0]), unit.map((r) => r[1]), unit.map((r) => r[2])];
+  const fx = pendulumAxis(s.bx, s.vx, s.hx, [0, 0, 0], steps),
+    fz = pendulumAxis(s.bz, s.vz, s.hz, [0, 0, 0], steps);
+  const ux = solve3(m, [ex - fx[0], ex - fx[1], wx - fx[2]]),
+    uz = solve3(m, [ez - fz[0], ez - fz[1], wz - fz[2]]);
+  return ux === null || uz === null ? null : { ux, uz, steps };
+}
+
+/** Whether legs from (hx, hz) keep the hook within the jib's reach and `rate` times the crane's slew and trolley rates. */
+function legsFeasible(hx: number, hz: number, legs: Legs, rate: number): boolean {
+  let x = hx,
+    z = hz;
+  for (let i = 0; i < legs.steps.length; i++) {
+    const len = legs.steps[i]! * PLAN_H,
+      ux = legs.ux[i]!,
+      uz = legs.uz[i]!;
+    for (let s = 0; s <= 4; s++) {
+      const px = x + (ux * len * s) / 4,
+        pz = z + (uz * len * s) / 4;
+      const r = Math.hypot(px, pz);
+      if (r < RADIUS_RANGE[0] - 0.05 || r > RADIUS_RANGE[1] + 0.05) return false;
+      const radial = (ux * px + uz * pz) / r,
+        across = Math.abs(ux * pz - uz * px) / r;
+      if (Math.abs(radial) > rate * TROLLEY_SPEED || across > rate * SLEW_RATE * r) return false;
+    }
+    x += ux * len;
+    z += uz * len;
+  }
+  return true;
+}
+
+/**
+ * Whether the ball, on legs `legs` from `s`, stays within `limit` (m) of under the hook (the model's
+ * pendulum is linear: past MAX_OFFSET the chain's ball rises and lags and the plan misses).
+ */
+function offsetWithin(s: PlanStart, legs: Legs, limit: number): boolean {
+  const bx: number[] = [],
+    bz: number[] = [];
+  pendulumAxis(s.bx, s.vx, s.hx, legs.ux, legs.steps, bx);
+  pendulumAxis(s.bz, s.vz, s.hz, legs.uz, legs.steps, bz);
+  let px = s.hx,
+    pz = s.hz,
+    k = 0;
+  for (let i = 0; i < legs.steps.length; i++)
+    for (let j = 0; j < legs.steps[i]!; j++, k++) {
+      px += legs.ux[i]! * PLAN_H;
+      pz += legs.uz[i]! * PLAN_H;
+      if (k % 4 === 0 && Math.hypot(bx[k]! - px, bz[k]! - pz) > limit) return false;
+    }
+  return true;
+}
+
+/** The ball's and hook's state now, for a plan. */
+function planStart(world: PhysicsWorld, h: WreckingBallHandles): PlanStart {
+  const P = world.components.Position,
+    V = world.components.Velocity,
+    b = h.ball;
+  const [hx, , hz] = hookPosition(h.crane);
+  return { bx: P.x[b]!, bz: P.z[b]!, vx: V.x[b]!, vz: V.z[b]!, hx, hz };
+}
+
+/**
+ * The timed moves of legs `legs` from (hx, hz), the rest of swing `aim` (from its step `aim.done`),
+ * the hook's height from `hy` on `hoistProfile`: moves of MOVE_STEPS steps at most, cut where a leg
+ * ends and where the run begins; the moves from `aim.runAt` on are the run, the first of them
+ * releases it (when it is still to come).
+ */
+function legMoves(hx: number, hy: number, hz: number, legs: Legs, aim: SwingAim): CraneMove[] {
+  const moves: CraneMove[] = [];
+  const left = aim.steps - aim.done;
+  let x = hx,
+    z = hz,
+    k = 0;
+  for (let i = 0; i < legs.steps.length; i++) {
+    const end = k + legs.steps[i]!;
+    while (k < end) {
+      const step = aim.done + k;
+      let next = Math.min(end, k + MOVE_STEPS);
+      if (step < aim.runAt && aim.done + next > aim.runAt) next = aim.runAt - aim.done;
+      const dt = (next - k) * PLAN_H;
+      x += legs.ux[i]! * dt;
+      z += legs.uz[i]! * dt;
+      k = next;
+      const run = step >= aim.runAt;
+      moves.push({
+        angle: Math.atan2(-z, x),
+        radius: Math.hypot(x, z),
+        height: hoistProfile(hy, aim.height, left * PLAN_H, k * PLAN_H),
+        duration: dt,
+        elapsed: 0,
+        run,
+        release: step === aim.runAt,
+      });
+    }
+  }
+  return moves;
+}
+
+/**
+ * Swings the ball at piece `piece` with timed moves (`CraneControls.moves`) planned on a pendulum
+ * model of the ball and its chain (`pendulumAxis`, linear, with the ball's drag): the hook runs
+ * three straight legs at constant velocities, chosen (a 3 x 3 linear system per horizontal axis) so
+ * that at the plan's end the hook is over the piece and the ball is there too, at the piece's
+ * height, moving at HIT_SPEED toward it from one of APPROACH_DIRECTIONS directions. Whatever the
+ * ball was doing at the tap (hanging still, or swinging from the last hit) is the model's start, so
+ * no time goes on waiting for a swing to die down. For each direction the plan is the quickest (of
+ * PLAN_TIME_RANGE in steps of PLAN_TIME_STEP, each shared among the legs as LEG_SPLITS) whose legs
+ * keep within the jib's reach, PLAN_RATE times the crane's slew and trolley rates and its hoist
+ * rate; of those, the one of the lowest cost: its time, up to GLANCE_COST s for meeting a long piece
+ * along its length rather than square to it, 3 s for each piece the ball would
+ * meet in the last APPROACH_TIME before it reaches the piece tapped, 1 s for each one earlier and
+ * 20 s for passing the mast. The last leg is the swing's run (`CraneMove.run`; its first move
+ * releases it). `craneSystem` makes the plan again from where the ball is every REPLAN_EVERY s.
  */
 export function aimAt(world: PhysicsWorld, h: WreckingBallHandles, piece: number): void {
   const P = world.components.Position;
@@ -407,90 +657,129 @@ export function aimAt(world: PhysicsWorld, h: WreckingBallHandles, piece: number
   // The ball's centre at the piece's, but never lower than skimming the ground.
   const ballY = Math.max(P.y[piece]!, BALL_RADIUS + 0.05);
   const height = Math.min(HOOK_RANGE[1], Math.max(HOOK_RANGE[0], ballY + HANG));
-  // The end of the run: over the piece, pulled into the jib's reach.
+  // The hook ends over the piece, pulled into the jib's reach.
   const r0 = Math.min(RADIUS_RANGE[1], Math.max(RADIUS_RANGE[0], Math.hypot(tx, tz)));
   const a0 = Math.atan2(-tz, tx);
   const ex = r0 * Math.cos(a0),
     ez = -r0 * Math.sin(a0);
-  const c = h.crane;
-  const [hx, , hz] = hookPosition(c);
-  const reachable = (x: number, z: number): boolean => {
-    const r = Math.hypot(x, z);
-    return r >= RADIUS_RANGE[0] - 1e-9 && r <= RADIUS_RANGE[1] + 1e-9;
-  };
-  /** Pieces, standing or fallen, the ball (at the piece's height) would meet from (sx, sz) along (dx, dz) for `length` m. */
-  const blockedOn = (sx: number, sz: number, dx: number, dz: number, length: number): number => {
-    let blocked = 0;
-    for (const q of h.pieces) {
-      if (q.body === piece) continue;
-      const qx = P.x[q.body]! - sx,
-        qy = P.y[q.body]! - ballY,
-        qz = P.z[q.body]! - sz;
-      const along = Math.min(length - 0.3, Math.max(0, qx * dx + qz * dz));
-      const d = Math.hypot(qx - along * dx, qy, qz - along * dz);
-      if (d < BALL_RADIUS + Math.max(...q.half) + 0.05) blocked++;
+  const hy = h.crane.height;
+  const start = planStart(world, h);
+  // A ball already swinging wider than MAX_OFFSET (a drag let go) may swing as wide as it does.
+  const limit = Math.max(MAX_OFFSET, 1.05 * swayAmplitude(world, h));
+  const hoistTime = Math.abs(height - hy) / HOIST_SPEED;
+  // For each direction, the quickest plan.
+  const best: Array<Legs | null> = new Array(APPROACH_DIRECTIONS).fill(null);
+  let left = APPROACH_DIRECTIONS;
+  for (let time = PLAN_TIME_RANGE[0]; time <= PLAN_TIME_RANGE[1] + 1e-9 && left > 0; time += PLAN_TIME_STEP) {
+    if (time < hoistTime) continue;
+    for (const split of LEG_SPLITS) {
+      const steps = split.map((f) => Math.round((f * time) / PLAN_H));
+      for (let d = 0; d < APPROACH_DIRECTIONS; d++) {
+        if (best[d] !== null) continue;
+        const t = (2 * Math.PI * d) / APPROACH_DIRECTIONS;
+        const legs = solveLegs(start, ex, ez, HIT_SPEED * Math.cos(t), HIT_SPEED * Math.sin(t), steps);
+        if (legs === null || !legsFeasible(start.hx, start.hz, legs, PLAN_RATE) || !offsetWithin(start, legs, limit)) continue;
+        best[d] = legs;
+        left--;
+      }
     }
-    return blocked;
-  };
-  let best: { sx: number; sz: number; blocked: number; away: number; side: number } | null = null;
-  for (const length of [RUN_UP, 0.75 * RUN_UP, 0.5 * RUN_UP]) {
-    for (let i = 0; i < RUN_DIRECTIONS; i++) {
-      const t = (2 * Math.PI * i) / RUN_DIRECTIONS;
-      const dx = Math.cos(t),
-        dz = Math.sin(t);
-      const sx = ex - length * dx,
-        sz = ez - length * dz;
-      let ok = true;
-      for (let k = 0; k <= RUN_STEPS && ok; k++) ok = reachable(sx + ((ex - sx) * k) / RUN_STEPS, sz + ((ez - sz) * k) / RUN_STEPS);
-      if (!ok) continue;
-      const blocked = blockedOn(sx, sz, dx, dz, length);
-      const away = Math.hypot(sx - hx, sz - hz);
-      // How far the hook is off the run's line (a wind-up across it would send the ball in sideways).
-      const side = Math.abs((sx - hx) * dz - (sz - hz) * dx);
-      if (best === null || blocked < best.blocked || (blocked === best.blocked && away < best.away - 1e-9))
-        best = { sx, sz, blocked, away, side };
-    }
-    if (best !== null) break;
   }
-  const moves: CraneMove[] = [];
-  const at = (x: number, z: number): { angle: number; radius: number } => ({ angle: Math.atan2(-z, x), radius: Math.hypot(x, z) });
-  /** RUN_STEPS straight moves from (x0, z0) to (x1, z1) over `duration` s in all, the hook's height going from y0 to `height`. */
-  const straight = (x0: number, z0: number, x1: number, z1: number, y0: number, duration: number, run: boolean): void => {
-    for (let k = 1; k <= RUN_STEPS; k++) {
-      const f = k / RUN_STEPS;
-      const y = y0 + (height - y0) * f;
-      moves.push({ ...at(x0 + (x1 - x0) * f, z0 + (z1 - z0) * f), height: y, duration: duration / RUN_STEPS, elapsed: 0, run });
+  // The cost of each direction's plan: its time, how square it meets the piece and what the ball
+  // would meet on its way there.
+  const tapped = h.pieces.find((q) => q.body === piece);
+  const reach = BALL_RADIUS + Math.max(...(tapped?.half ?? [0.3])) + 0.05;
+  const long: [number, number] | null =
+    tapped && Math.max(tapped.half[0], tapped.half[2]) > 1.5 * Math.min(tapped.half[0], tapped.half[2])
+      ? tapped.half[0] > tapped.half[2]
+        ? [Math.cos(tapped.yaw), -Math.sin(tapped.yaw)]
+        : [Math.sin(tapped.yaw), Math.cos(tapped.yaw)]
+      : null;
+  let chosen = -1,
+    chosenCost = Number.POSITIVE_INFINITY;
+  best.forEach((legs, d) => {
+    if (legs === null) return;
+    const pathX: number[] = [],
+      pathZ: number[] = [];
+    pendulumAxis(start.bx, start.vx, start.hx, legs.ux, legs.steps, pathX);
+    pendulumAxis(start.bz, start.vz, start.hz, legs.uz, legs.steps, pathZ);
+    const time = pathX.length * PLAN_H;
+    // A long piece (a brick, a plank) is knocked from its place by a ball square to its length; one
+    // along it only glances off its end: up to GLANCE_COST s more for a ball along it.
+    const t = (2 * Math.PI * d) / APPROACH_DIRECTIONS;
+    let cost = time + (long ? GLANCE_COST * Math.abs(Math.cos(t) * long[0] + Math.sin(t) * long[1]) : 0);
+    const approach = pathX.length - Math.round(APPROACH_TIME / PLAN_H);
+    const met = new Set<number>();
+    for (let k = 0; k < pathX.length; k += 6) {
+      const x = pathX[k]!,
+        z = pathZ[k]!;
+      const y = hoistProfile(hy, height, time, k * PLAN_H) - HANG;
+      if (Math.hypot(x - tx, y - P.y[piece]!, z - tz) < reach) break;
+      if (Math.hypot(x, z) < 0.4 + BALL_RADIUS + 0.1) cost += 20;
+      for (const q of h.pieces) {
+        if (q.body === piece || met.has(q.body)) continue;
+        if (Math.hypot(P.x[q.body]! - x, P.y[q.body]! - y, P.z[q.body]! - z) < BALL_RADIUS + Math.max(...q.half) + 0.05) {
+          met.add(q.body);
+          cost += k >= approach ? 3 : 1;
+        }
+      }
     }
-  };
-  const amp = swayAmplitude(world, h);
-  const half = SWING_PERIOD / 2;
-  if (best === null) {
-    // Nowhere to run from (cannot happen inside the jib's reach): straight to the piece.
-    moves.push({ ...at(ex, ez), height, duration: half, elapsed: 0, run: true });
-  } else {
-    const start = at(best.sx, best.sz);
-    // A ball still swinging from the last swing would meet the run off its line: the wind-up lasts
-    // the whole periods the sway damping needs to bring the swing's amplitude under SWING_LEFT.
-    const settle = amp > SWING_LEFT ? Math.ceil((SWAY_DAMPING_TIME * Math.log(amp / SWING_LEFT)) / SWING_PERIOD) : 0;
-    // The time the crane's rates need to reach the run's start.
-    const need = Math.max(
-      Math.abs(wrap(start.angle - c.angle)) / SLEW_RATE,
-      Math.abs(start.radius - c.radius) / TROLLEY_SPEED,
-      Math.abs(height - c.height) / HOIST_SPEED,
-    );
-    // Half periods the wind-up takes: the fewest odd ones the rates allow (the ball starts the run
-    // swinging along its line), unless as many whole periods are as quick or the hook is off the
-    // run's line by more than SIDE_LEFT (a swing across the line would carry the ball off it).
-    const odd = 2 * Math.max(0, Math.ceil((need / half - 1) / 2)) + 1,
-      whole = 2 * Math.max(1, Math.ceil(need / SWING_PERIOD), settle);
-    if (settle > 0 || whole < odd || best.side > SIDE_LEFT) moves.push({ ...start, height, duration: whole * half, elapsed: 0 });
-    else if (best.away > 0.5 || Math.abs(height - c.height) > 0.3) straight(hx, hz, best.sx, best.sz, c.height, odd * half, false);
-    straight(best.sx, best.sz, ex, ez, height, half, true);
-  }
-  const first = moves.find((m) => m.run);
-  if (first) first.release = true;
+    if (cost < chosenCost) {
+      chosenCost = cost;
+      chosen = d;
+    }
+  });
   h.controls.goal = null;
-  h.controls.moves = moves;
+  const legs = best[chosen];
+  if (legs === undefined || legs === null) {
+    // No plan within the crane's rates (not met inside the jib's reach): straight to the piece.
+    h.controls.swing = null;
+    h.controls.moves = [
+      { angle: Math.atan2(-ez, ex), radius: r0, height, duration: SWING_PERIOD / 2, elapsed: 0, run: true, release: true },
+    ];
+    return;
+  }
+  const dir = (2 * Math.PI * chosen) / APPROACH_DIRECTIONS;
+  const steps = legs.steps[0]! + legs.steps[1]! + legs.steps[2]!;
+  const aim: SwingAim = {
+    piece,
+    x: ex,
+    z: ez,
+    height,
+    vx: HIT_SPEED * Math.cos(dir),
+    vz: HIT_SPEED * Math.sin(dir),
+    steps,
+    done: 0,
+    runAt: steps - legs.steps[2]!,
+    replanAt: Math.round(REPLAN_EVERY / PLAN_H),
+  };
+  h.controls.swing = aim;
+  h.controls.moves = legMoves(start.hx, hy, start.hz, legs, aim);
+}
+
+/**
+ * Makes the running swing's plan again from where the ball and hook are now, for the same arrival
+ * (step, place and velocity): of LEG_SPLITS over the time left, the legs with the lowest top speed
+ * within PLAN_RATE times the crane's rates (and a tenth more: the model's error is what is being
+ * made up). Keeps the moves as they are when none is.
+ */
+function replan(world: PhysicsWorld, h: WreckingBallHandles, aim: SwingAim): void {
+  const left = aim.steps - aim.done;
+  const start = planStart(world, h);
+  const limit = Math.max(MAX_OFFSET, 1.05 * swayAmplitude(world, h));
+  let chosen: Legs | null = null,
+    top = Number.POSITIVE_INFINITY;
+  for (const split of LEG_SPLITS) {
+    const steps = split.map((f) => Math.round(f * left));
+    steps[2] = left - steps[0]! - steps[1]!;
+    const legs = solveLegs(start, aim.x, aim.z, aim.vx, aim.vz, steps);
+    if (legs === null || !legsFeasible(start.hx, start.hz, legs, 1.1 * PLAN_RATE) || !offsetWithin(start, legs, limit)) continue;
+    const fastest = Math.max(...legs.ux.map((u, i) => Math.hypot(u, legs.uz[i]!)));
+    if (fastest < top) {
+      top = fastest;
+      chosen = legs;
+    }
+  }
+  if (chosen !== null) h.controls.moves = legMoves(start.hx, h.crane.height, start.hz, chosen, aim);
 }
 
 /**
@@ -535,14 +824,27 @@ export function craneSystem(h: WreckingBallHandles): (world: PhysicsWorld) => vo
       if (Math.abs(d) < 1e-9 && Math.abs(wantR - c.radius) < 1e-9) k.goal = null;
     }
     const before = hookPosition(c);
+    const aim = k.swing;
+    if (aim !== null && k.moves.length === 0) k.swing = null;
+    else if (aim !== null) {
+      if (aim.done >= aim.replanAt && aim.steps - aim.done > REPLAN_UNTIL / PLAN_H) {
+        aim.replanAt += Math.round(REPLAN_EVERY / PLAN_H);
+        replan(world, h, aim);
+      }
+      aim.done++;
+    }
     const move = k.moves[0];
     if (move !== undefined) {
-      // A timed move: the rest of the way at a constant rate over the time left.
+      // A timed move: the rest of the way along a straight line at a constant velocity over the
+      // time left (`aimAt` plans the hook's velocities), held to the jib's reach.
       const left = move.duration - move.elapsed,
         f = Math.min(1, dt / Math.max(left, 1e-9));
       if (move.release === true && move.elapsed === 0) k.released++;
-      c.angle = wrap(c.angle + f * wrap(move.angle - c.angle));
-      c.radius += f * (move.radius - c.radius);
+      const [gx, , gz] = hookPosition(move);
+      const x = before[0] + f * (gx - before[0]),
+        z = before[2] + f * (gz - before[2]);
+      c.angle = Math.atan2(-z, x);
+      c.radius = Math.min(RADIUS_RANGE[1], Math.max(RADIUS_RANGE[0], Math.hypot(x, z)));
       c.height += f * (move.height - c.height);
       move.elapsed += dt;
       if (f === 1) k.moves.shift();

@@ -297,6 +297,13 @@ describe('phone controls', () => {
       return cam.position.clone().set(0, 0, -45).project(cam).y;
     });
     expect(horizon).toBeLessThan(0.8);
+    // Before the first swing a hint over the scene says what a tap does.
+    expect(await g.page.locator('[data-hud="tap-hint"]').textContent()).toBe('Tap a block: the crane swings the ball into it');
+    // A tap on open ground (near the screen's foot, in front of the crane) moves the hook, and the
+    // hint says so and what to tap instead.
+    const box0 = (await g.page.locator('canvas').first().boundingBox())!;
+    await g.page.touchscreen.tap(box0.x + box0.width / 2, box0.y + box0.height * 0.8);
+    await g.waitFor(() => document.querySelector('[data-hud="tap-hint"]')!.textContent!.startsWith('That moves the hook'), null);
     // A tap 26 px beside a tower block (a tower is about 20 px wide here) swings the ball at the
     // tower instead of sending the hook to the ground there; an arrow marks it. Seen from above, the
     // tower's blocks are drawn nearly over each other: the swing may take any of them.

@@ -114,11 +114,30 @@ describe('3D rigid-body games in headless Chromium', () => {
       panned,
       20_000,
     );
-    // A click on the ground in front of the crane sends the hook there (the goal is set at once).
+    // Before the first swing a hint over the scene says what a click does.
+    const hint = g.page.locator('[data-hud="tap-hint"]');
+    expect(await hint.textContent()).toBe('Click a block: the crane swings the ball into it');
+    // A click on open ground in front of the crane sends the hook there (the goal is set at once),
+    // and the hint says so, and what to click instead.
     await g.press('p');
     await g.clickCanvas(0.5, 0.85);
     const goal = await g.page.evaluate(() => (window.game as unknown as WB).handles().controls.goal);
     expect(goal).not.toBeNull();
+    await g.waitFor(() => document.querySelector('[data-hud="tap-hint"]')!.textContent!.startsWith('That moves the hook'), null);
+    expect(await hint.isVisible()).toBe(true);
+    // A click on the ground 1 m beside a structure swings the ball at it (it took the hook there).
+    const beside = await g.page.evaluate(() => {
+      const game = window.game as unknown as WB;
+      const P = game.world.components.Position;
+      const piece = game.handles().pieces.find((p) => p.kind === 'wall')!.body;
+      const s = game.app.camera.position
+        .clone()
+        .set(P.x[piece]! + 1, 0, P.z[piece]!)
+        .project(game.app.camera);
+      return { pressed: game.pressAt(s.x, s.y), goal: game.handles().controls.goal, moves: game.handles().controls.moves.length };
+    });
+    expect(beside).toEqual({ pressed: 'swing', goal: null, moves: beside.moves });
+    expect(beside.moves).toBeGreaterThan(0);
     // A press on a piece of a target swings the ball at it: the crane's moves (wind-up, run) are set.
     const swing = await g.page.evaluate(() => {
       const game = window.game as unknown as WB;
