@@ -126,8 +126,67 @@ function sum7(
   return s0;
 }
 
-const EMPTY: ArrayLike<number> = new Int32Array(0);
 const EMPTY_PARAMS: ArrayLike<number> = [];
+
+/** The fields a check reads, each with the name the error gives it ('Force.x'). */
+type Fields = ReadonlyArray<readonly [string, Float64Array]>;
+
+/** The x, y (and in 3D z) components of the vector store `s`, named `name.x` and so on. */
+function vector(name: string, s: { x: Float64Array; y: Float64Array; z: Float64Array }, is2D: boolean): Fields {
+  return is2D
+    ? [
+        [`${name}.x`, s.x],
+        [`${name}.y`, s.y],
+      ]
+    : [
+        [`${name}.x`, s.x],
+        [`${name}.y`, s.y],
+        [`${name}.z`, s.z],
+      ];
+}
+
+/** The finiteness sum of `fields` over `ents` (0: all finite), by the sum function of their count (1, 2, 3, 4, 6 or 7). */
+function sumFields(ents: ArrayLike<number>, dense: boolean, fields: Fields): number {
+  const a = fields[0]![1],
+    b = fields[fields.length > 1 ? 1 : 0]![1];
+  switch (fields.length) {
+    case 1:
+    case 2:
+      return sum2(ents, dense, a, b);
+    case 3:
+      return sum3(ents, dense, a, b, fields[2]![1]);
+    case 4:
+      return sum4(ents, dense, a, b, fields[2]![1], fields[3]![1]);
+    case 6:
+      return sum6(ents, dense, a, b, fields[2]![1], fields[3]![1], fields[4]![1], fields[5]![1]);
+    default:
+      return sum7(ents, dense, a, b, fields[2]![1], fields[3]![1], fields[4]![1], fields[5]![1], fields[6]![1]);
+  }
+}
+
+/**
+ * Checks `fields` of `ents` after `stage`; `pooled`: a world with threads splits the probe over them
+ * (kernel finiteProbe: the same test). Throws a NonFiniteStateError naming the first entity and field
+ * that is NaN or infinite, and the stage.
+ */
+function checkFields(world: PhysicsWorld, stage: StageName, ents: ArrayLike<number>, fields: Fields, pooled: boolean): void {
+  if (ents.length === 0) return;
+  const dense = ents.length === world.entityIndex.maxId;
+  const par =
+    !pooled || world.threadPool === null
+      ? null
+      : runOnPool(
+          world.threadPool,
+          `${stage} stage finiteness check`,
+          finiteProbe,
+          fields.map((f) => f[1]),
+          EMPTY_PARAMS,
+          ents.length,
+          dense ? null : ents,
+          MIN_PARALLEL_PER_THREAD,
+        );
+  if ((par ?? sumFields(ents, dense, fields)) !== 0) throwNonFinite(world, stage, ents, fields);
+}
 
 /**
  * Checks what `stage` may have written (see the module comment): the force and torque accumulators
@@ -138,144 +197,34 @@ const EMPTY_PARAMS: ArrayLike<number> = [];
 export function checkStageState(world: PhysicsWorld, stage: StageName, level: 0 | 1 | 2): void {
   const c = world.components;
   const is2D = world.dimensions === 2;
-  const maxId = world.entityIndex.maxId;
   if (stage === 'forces') {
     const F = c.Force,
       T = c.Torque;
-    let ents = query(world, [F]);
-    if (ents.length > 0 && !fusedForcesOn(world)) {
-      const dense = ents.length === maxId;
-      const par =
-        world.threadPool === null
-          ? null
-          : runOnPool(
-              world.threadPool,
-              'forces stage finiteness check',
-              finiteProbe,
-              is2D ? [F.x, F.y] : [F.x, F.y, F.z],
-              EMPTY_PARAMS,
-              ents.length,
-              dense ? null : ents,
-              MIN_PARALLEL_PER_THREAD,
-            );
-      if ((par ?? (is2D ? sum2(ents, dense, F.x, F.y) : sum3(ents, dense, F.x, F.y, F.z))) !== 0) {
-        throwNonFinite(
-          world,
-          stage,
-          ents,
-          is2D
-            ? [
-                ['Force.x', F.x],
-                ['Force.y', F.y],
-              ]
-            : [
-                ['Force.x', F.x],
-                ['Force.y', F.y],
-                ['Force.z', F.z],
-              ],
-        );
-      }
-    }
-    ents = query(world, [T]);
-    if (ents.length > 0) {
-      const dense = ents.length === maxId;
-      const par =
-        world.threadPool === null
-          ? null
-          : runOnPool(
-              world.threadPool,
-              'forces stage finiteness check',
-              finiteProbe,
-              is2D ? [T.z] : [T.x, T.y, T.z],
-              EMPTY_PARAMS,
-              ents.length,
-              dense ? null : ents,
-              MIN_PARALLEL_PER_THREAD,
-            );
-      if ((par ?? (is2D ? sum2(ents, dense, T.z, T.z) : sum3(ents, dense, T.x, T.y, T.z))) !== 0) {
-        throwNonFinite(
-          world,
-          stage,
-          ents,
-          is2D
-            ? [['Torque.z', T.z]]
-            : [
-                ['Torque.x', T.x],
-                ['Torque.y', T.y],
-                ['Torque.z', T.z],
-              ],
-        );
-      }
-    }
+    const forced = query(world, [F]);
+    if (!fusedForcesOn(world)) checkFields(world, stage, forced, vector('Force', F, is2D), true);
+    checkFields(world, stage, query(world, [T]), is2D ? [['Torque.z', T.z]] : vector('Torque', T, false), true);
   }
   if (level === 0) return;
   const P = c.Position,
     V = c.Velocity,
     W = c.AngularVelocity;
   // Velocities first: a NaN velocity makes the position NaN in the same stage, and it is the cause.
-  let ents = level === 2 ? query(world, [P, V]) : EMPTY;
-  if (ents.length > 0) {
-    const dense = ents.length === maxId;
-    // A world with threads splits the probe over them (kernel finiteProbe: the same test).
-    const par =
-      world.threadPool === null
-        ? null
-        : runOnPool(
-            world.threadPool,
-            `${stage} stage finiteness check`,
-            finiteProbe,
-            is2D ? [V.x, V.y, P.x, P.y] : [V.x, V.y, V.z, P.x, P.y, P.z],
-            EMPTY_PARAMS,
-            ents.length,
-            dense ? null : ents,
-            MIN_PARALLEL_PER_THREAD,
-          );
-    if ((par ?? (is2D ? sum4(ents, dense, V.x, V.y, P.x, P.y) : sum6(ents, dense, V.x, V.y, V.z, P.x, P.y, P.z))) !== 0) {
-      throwNonFinite(
-        world,
-        stage,
-        ents,
-        is2D
-          ? [
-              ['Velocity.x', V.x],
-              ['Velocity.y', V.y],
-              ['Position.x', P.x],
-              ['Position.y', P.y],
-            ]
-          : [
-              ['Velocity.x', V.x],
-              ['Velocity.y', V.y],
-              ['Velocity.z', V.z],
-              ['Position.x', P.x],
-              ['Position.y', P.y],
-              ['Position.z', P.z],
-            ],
-      );
-    }
-  }
+  if (level === 2) checkFields(world, stage, query(world, [P, V]), [...vector('Velocity', V, is2D), ...vector('Position', P, is2D)], true);
   if (is2D) {
-    const A = c.Angle.value;
-    ents = query(world, [W, c.Angle]);
-    if (ents.length > 0 && sum2(ents, ents.length === maxId, W.z, A) !== 0) {
-      throwNonFinite(world, stage, ents, [
+    checkFields(
+      world,
+      stage,
+      query(world, [W, c.Angle]),
+      [
         ['AngularVelocity.z', W.z],
-        ['Angle.value', A],
-      ]);
-    }
+        ['Angle.value', c.Angle.value],
+      ],
+      false,
+    );
   } else {
     const Q = c.Orientation;
-    ents = query(world, [W, Q]);
-    if (ents.length > 0 && sum7(ents, ents.length === maxId, W.x, W.y, W.z, Q.x, Q.y, Q.z, Q.w) !== 0) {
-      throwNonFinite(world, stage, ents, [
-        ['AngularVelocity.x', W.x],
-        ['AngularVelocity.y', W.y],
-        ['AngularVelocity.z', W.z],
-        ['Orientation.x', Q.x],
-        ['Orientation.y', Q.y],
-        ['Orientation.z', Q.z],
-        ['Orientation.w', Q.w],
-      ]);
-    }
+    const fields: Fields = [...vector('AngularVelocity', W, false), ...vector('Orientation', Q, false), ['Orientation.w', Q.w]];
+    checkFields(world, stage, query(world, [W, Q]), fields, false);
   }
 }
 
@@ -287,20 +236,8 @@ export function checkStageState(world: PhysicsWorld, stage: StageName, level: 0 
  * @category World and step
  */
 export function reportNonFiniteForces(world: PhysicsWorld, ents: ArrayLike<number>): void {
-  const F = world.components.Force;
-  if (world.dimensions === 2) {
-    if (sum2(ents, false, F.x, F.y) !== 0)
-      throwNonFinite(world, 'forces', ents, [
-        ['Force.x', F.x],
-        ['Force.y', F.y],
-      ]);
-  } else if (sum3(ents, false, F.x, F.y, F.z) !== 0) {
-    throwNonFinite(world, 'forces', ents, [
-      ['Force.x', F.x],
-      ['Force.y', F.y],
-      ['Force.z', F.z],
-    ]);
-  }
+  const fields = vector('Force', world.components.Force, world.dimensions === 2);
+  if (sumFields(ents, false, fields) !== 0) throwNonFinite(world, 'forces', ents, fields);
 }
 
 /**
