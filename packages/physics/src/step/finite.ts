@@ -35,6 +35,10 @@ import type { StageName } from '../world/stage-names.js';
  * per field, and a second pass to name the culprit only when the first finds one.
  */
 
+/**
+ * The finiteness sum of arrays `a` and `b` over `ents` (`dense`: ents are the ids 1..n): the sum of
+ * x * 0 over their values, 0 (or -0) when every value is finite, NaN when one is not.
+ */
 function sum2(ents: ArrayLike<number>, dense: boolean, a: Float64Array, b: Float64Array): number {
   let s = 0;
   const n = ents.length;
@@ -53,6 +57,7 @@ function sum2(ents: ArrayLike<number>, dense: boolean, a: Float64Array, b: Float
   return s;
 }
 
+/** `sum2` over three arrays. */
 function sum3(ents: ArrayLike<number>, dense: boolean, a: Float64Array, b: Float64Array, c: Float64Array): number {
   let s = 0;
   const n = ents.length;
@@ -67,6 +72,7 @@ function sum3(ents: ArrayLike<number>, dense: boolean, a: Float64Array, b: Float
   return s;
 }
 
+/** `sum2` over four arrays. */
 function sum4(ents: ArrayLike<number>, dense: boolean, a: Float64Array, b: Float64Array, c: Float64Array, d: Float64Array): number {
   let s = 0;
   const n = ents.length;
@@ -81,49 +87,6 @@ function sum4(ents: ArrayLike<number>, dense: boolean, a: Float64Array, b: Float
       s += a[e]! * 0 + b[e]! * 0 + (c[e]! * 0 + d[e]! * 0);
     }
   return s;
-}
-
-function sum6(
-  ents: ArrayLike<number>,
-  dense: boolean,
-  a: Float64Array,
-  b: Float64Array,
-  c: Float64Array,
-  d: Float64Array,
-  f: Float64Array,
-  g: Float64Array,
-): number {
-  let s0 = 0;
-  const n = ents.length;
-  if (dense) for (let e = 1; e <= n; e++) s0 += a[e]! * 0 + b[e]! * 0 + (c[e]! * 0 + d[e]! * 0) + (f[e]! * 0 + g[e]! * 0);
-  else
-    for (let i = 0; i < n; i++) {
-      const e = ents[i]!;
-      s0 += a[e]! * 0 + b[e]! * 0 + (c[e]! * 0 + d[e]! * 0) + (f[e]! * 0 + g[e]! * 0);
-    }
-  return s0;
-}
-
-function sum7(
-  ents: ArrayLike<number>,
-  dense: boolean,
-  a: Float64Array,
-  b: Float64Array,
-  c: Float64Array,
-  d: Float64Array,
-  f: Float64Array,
-  g: Float64Array,
-  h: Float64Array,
-): number {
-  let s0 = 0;
-  const n = ents.length;
-  if (dense) for (let e = 1; e <= n; e++) s0 += a[e]! * 0 + b[e]! * 0 + (c[e]! * 0 + d[e]! * 0) + (f[e]! * 0 + g[e]! * 0 + h[e]! * 0);
-  else
-    for (let i = 0; i < n; i++) {
-      const e = ents[i]!;
-      s0 += a[e]! * 0 + b[e]! * 0 + (c[e]! * 0 + d[e]! * 0) + (f[e]! * 0 + g[e]! * 0 + h[e]! * 0);
-    }
-  return s0;
 }
 
 const EMPTY_PARAMS: ArrayLike<number> = [];
@@ -145,7 +108,10 @@ function vector(name: string, s: { x: Float64Array; y: Float64Array; z: Float64A
       ];
 }
 
-/** The finiteness sum of `fields` over `ents` (0: all finite), by the sum function of their count (1, 2, 3, 4, 6 or 7). */
+/**
+ * The finiteness sum of `fields` over `ents` (0: all finite), by the sum function of their count (1 to
+ * 4; six and seven fields are two passes, the first four and the rest).
+ */
 function sumFields(ents: ArrayLike<number>, dense: boolean, fields: Fields): number {
   const a = fields[0]![1],
     b = fields[fields.length > 1 ? 1 : 0]![1];
@@ -158,9 +124,9 @@ function sumFields(ents: ArrayLike<number>, dense: boolean, fields: Fields): num
     case 4:
       return sum4(ents, dense, a, b, fields[2]![1], fields[3]![1]);
     case 6:
-      return sum6(ents, dense, a, b, fields[2]![1], fields[3]![1], fields[4]![1], fields[5]![1]);
+      return sum4(ents, dense, a, b, fields[2]![1], fields[3]![1]) + sum2(ents, dense, fields[4]![1], fields[5]![1]);
     default:
-      return sum7(ents, dense, a, b, fields[2]![1], fields[3]![1], fields[4]![1], fields[5]![1], fields[6]![1]);
+      return sum4(ents, dense, a, b, fields[2]![1], fields[3]![1]) + sum3(ents, dense, fields[4]![1], fields[5]![1], fields[6]![1]);
   }
 }
 
