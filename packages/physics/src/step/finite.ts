@@ -91,67 +91,79 @@ function sum4(ents: ArrayLike<number>, dense: boolean, a: Float64Array, b: Float
 
 const EMPTY_PARAMS: ArrayLike<number> = [];
 
-/** The fields a check reads, each with the name the error gives it ('Force.x'). */
-type Fields = ReadonlyArray<readonly [string, Float64Array]>;
+/** The arrays of the check being run, set by checkStageState before each checkFields, which empties it. Not state. */
+const probe: Float64Array[] = [];
 
-/** The x, y (and in 3D z) components of the vector store `s`, named `name.x` and so on. */
-function vector(name: string, s: { x: Float64Array; y: Float64Array; z: Float64Array }, is2D: boolean): Fields {
-  return is2D
-    ? [
-        [`${name}.x`, s.x],
-        [`${name}.y`, s.y],
-      ]
-    : [
-        [`${name}.x`, s.x],
-        [`${name}.y`, s.y],
-        [`${name}.z`, s.z],
-      ];
+// The names the error gives the arrays of each check, in their order (a 2D force check uses the first two).
+const FORCE = ['Force.x', 'Force.y', 'Force.z'];
+const TORQUE = ['Torque.x', 'Torque.y', 'Torque.z'];
+const TORQUE_2D = ['Torque.z'];
+const LINEAR_2D = ['Velocity.x', 'Velocity.y', 'Position.x', 'Position.y'];
+const LINEAR_3D = ['Velocity.x', 'Velocity.y', 'Velocity.z', 'Position.x', 'Position.y', 'Position.z'];
+const ANGULAR_2D = ['AngularVelocity.z', 'Angle.value'];
+const ANGULAR_3D = [
+  'AngularVelocity.x',
+  'AngularVelocity.y',
+  'AngularVelocity.z',
+  'Orientation.x',
+  'Orientation.y',
+  'Orientation.z',
+  'Orientation.w',
+];
+
+/** Appends the x, y (and in 3D z) arrays of the vector store `s` to the probe. */
+function pushVector(s: { x: Float64Array; y: Float64Array; z: Float64Array }, is2D: boolean): void {
+  if (is2D) probe.push(s.x, s.y);
+  else probe.push(s.x, s.y, s.z);
 }
 
 /**
- * The finiteness sum of `fields` over `ents` (0: all finite), by the sum function of their count (1 to
- * 4; six and seven fields are two passes, the first four and the rest).
+ * The finiteness sum of `arrays` over `ents` (0: all finite), by the sum function of their count (1 to
+ * 4; six and seven arrays are two passes, the first four and the rest).
  */
-function sumFields(ents: ArrayLike<number>, dense: boolean, fields: Fields): number {
-  const a = fields[0]![1],
-    b = fields[fields.length > 1 ? 1 : 0]![1];
-  switch (fields.length) {
+function sumFields(ents: ArrayLike<number>, dense: boolean, arrays: readonly Float64Array[]): number {
+  const a = arrays[0]!,
+    b = arrays[arrays.length > 1 ? 1 : 0]!;
+  switch (arrays.length) {
     case 1:
     case 2:
       return sum2(ents, dense, a, b);
     case 3:
-      return sum3(ents, dense, a, b, fields[2]![1]);
+      return sum3(ents, dense, a, b, arrays[2]!);
     case 4:
-      return sum4(ents, dense, a, b, fields[2]![1], fields[3]![1]);
+      return sum4(ents, dense, a, b, arrays[2]!, arrays[3]!);
     case 6:
-      return sum4(ents, dense, a, b, fields[2]![1], fields[3]![1]) + sum2(ents, dense, fields[4]![1], fields[5]![1]);
+      return sum4(ents, dense, a, b, arrays[2]!, arrays[3]!) + sum2(ents, dense, arrays[4]!, arrays[5]!);
     default:
-      return sum4(ents, dense, a, b, fields[2]![1], fields[3]![1]) + sum3(ents, dense, fields[4]![1], fields[5]![1], fields[6]![1]);
+      return sum4(ents, dense, a, b, arrays[2]!, arrays[3]!) + sum3(ents, dense, arrays[4]!, arrays[5]!, arrays[6]!);
   }
 }
 
 /**
- * Checks `fields` of `ents` after `stage`; `pooled`: a world with threads splits the probe over them
- * (kernel finiteProbe: the same test). Throws a NonFiniteStateError naming the first entity and field
- * that is NaN or infinite, and the stage.
+ * Checks the probe's arrays (named `names`, in order) over `ents` after `stage`, then empties the probe;
+ * `pooled`: a world with threads splits the probe over them (kernel finiteProbe: the same test).
+ * Throws a NonFiniteStateError naming the first entity and field that is NaN or infinite, and the stage.
  */
-function checkFields(world: PhysicsWorld, stage: StageName, ents: ArrayLike<number>, fields: Fields, pooled: boolean): void {
-  if (ents.length === 0) return;
+function checkFields(world: PhysicsWorld, stage: StageName, ents: ArrayLike<number>, names: readonly string[], pooled: boolean): void {
+  const A = probe;
   const dense = ents.length === world.entityIndex.maxId;
   const par =
-    !pooled || world.threadPool === null
+    ents.length === 0 || !pooled || world.threadPool === null
       ? null
       : runOnPool(
           world.threadPool,
           `${stage} stage finiteness check`,
           finiteProbe,
-          fields.map((f) => f[1]),
+          A,
           EMPTY_PARAMS,
           ents.length,
           dense ? null : ents,
           MIN_PARALLEL_PER_THREAD,
         );
-  if ((par ?? sumFields(ents, dense, fields)) !== 0) throwNonFinite(world, stage, ents, fields);
+  const bad = ents.length > 0 && (par ?? sumFields(ents, dense, A)) !== 0;
+  const fields = bad ? A.map((a, i) => [names[i]!, a] as const) : null;
+  A.length = 0;
+  if (fields !== null) throwNonFinite(world, stage, ents, fields);
 }
 
 /**
@@ -163,34 +175,38 @@ function checkFields(world: PhysicsWorld, stage: StageName, ents: ArrayLike<numb
 export function checkStageState(world: PhysicsWorld, stage: StageName, level: 0 | 1 | 2): void {
   const c = world.components;
   const is2D = world.dimensions === 2;
+  const A = probe;
+  A.length = 0;
   if (stage === 'forces') {
     const F = c.Force,
       T = c.Torque;
     const forced = query(world, [F]);
-    if (!fusedForcesOn(world)) checkFields(world, stage, forced, vector('Force', F, is2D), true);
-    checkFields(world, stage, query(world, [T]), is2D ? [['Torque.z', T.z]] : vector('Torque', T, false), true);
+    if (!fusedForcesOn(world)) {
+      pushVector(F, is2D);
+      checkFields(world, stage, forced, FORCE, true);
+    }
+    if (is2D) A.push(T.z);
+    else pushVector(T, false);
+    checkFields(world, stage, query(world, [T]), is2D ? TORQUE_2D : TORQUE, true);
   }
   if (level === 0) return;
   const P = c.Position,
     V = c.Velocity,
     W = c.AngularVelocity;
   // Velocities first: a NaN velocity makes the position NaN in the same stage, and it is the cause.
-  if (level === 2) checkFields(world, stage, query(world, [P, V]), [...vector('Velocity', V, is2D), ...vector('Position', P, is2D)], true);
+  if (level === 2) {
+    pushVector(V, is2D);
+    pushVector(P, is2D);
+    checkFields(world, stage, query(world, [P, V]), is2D ? LINEAR_2D : LINEAR_3D, true);
+  }
   if (is2D) {
-    checkFields(
-      world,
-      stage,
-      query(world, [W, c.Angle]),
-      [
-        ['AngularVelocity.z', W.z],
-        ['Angle.value', c.Angle.value],
-      ],
-      false,
-    );
+    A.push(W.z, c.Angle.value);
+    checkFields(world, stage, query(world, [W, c.Angle]), ANGULAR_2D, false);
   } else {
     const Q = c.Orientation;
-    const fields: Fields = [...vector('AngularVelocity', W, false), ...vector('Orientation', Q, false), ['Orientation.w', Q.w]];
-    checkFields(world, stage, query(world, [W, Q]), fields, false);
+    pushVector(W, false);
+    A.push(Q.x, Q.y, Q.z, Q.w);
+    checkFields(world, stage, query(world, [W, Q]), ANGULAR_3D, false);
   }
 }
 
@@ -202,8 +218,9 @@ export function checkStageState(world: PhysicsWorld, stage: StageName, level: 0 
  * @category World and step
  */
 export function reportNonFiniteForces(world: PhysicsWorld, ents: ArrayLike<number>): void {
-  const fields = vector('Force', world.components.Force, world.dimensions === 2);
-  if (sumFields(ents, false, fields) !== 0) throwNonFinite(world, 'forces', ents, fields);
+  probe.length = 0;
+  pushVector(world.components.Force, world.dimensions === 2);
+  checkFields(world, 'forces', ents, FORCE, false);
 }
 
 /**
