@@ -5,40 +5,7 @@ import { JointFlag, JointType } from '../world/joint-store-2d.js';
 import { LINK_FLOATS, LINK_INTS, ROW_FLOATS } from '../world/joint-strides-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { assertBreakLimit, BASE_KEYS, centre, checkEnds, handle, type JointBaseOptions, makeJoint, optionalPoint } from './joint-2d.js';
-import {
-  F_DX,
-  F_DY,
-  F_IA,
-  F_IB,
-  F_INVH,
-  F_MA,
-  F_MB,
-  F_RAX,
-  F_RAY,
-  F_RBX,
-  F_RBY,
-  F_VAX,
-  F_VAY,
-  F_VBX,
-  F_VBY,
-  F_WA,
-  F_WB,
-  ILOW,
-  ISPR,
-  IUP,
-  JB,
-  JI,
-  JM,
-  KAX,
-  LEN,
-  MAXL,
-  MINL,
-  ROW_MOVED,
-  ROW_PUSHED,
-  ROW_SKIPPED,
-  SB,
-  SM,
-} from './layout-2d.js';
+import * as R from './layout-2d.js';
 import { limitRow, springImpulse } from './rows-2d.js';
 
 /**
@@ -133,75 +100,75 @@ export function addDistanceJoint(world: PhysicsWorld, options: DistanceJointOpti
  * link holds an impulse, else ROW_MOVED (a slack rope leaves its bodies in free flight).
  */
 export function solveDistanceRow(rows: Float64Array, o: number, flags: number, useBias: boolean, f: Float64Array): number {
-  const dx = f[F_DX]!,
-    dy = f[F_DY]!;
+  const dx = f[R.F_DX]!,
+    dy = f[R.F_DY]!;
   const L = Math.sqrt(dx * dx + dy * dy);
-  if (L < 1e-12) return ROW_SKIPPED;
-  const mA = f[F_MA]!,
-    iA = f[F_IA]!,
-    mB = f[F_MB]!,
-    iB = f[F_IB]!;
-  const rAx = f[F_RAX]!,
-    rAy = f[F_RAY]!,
-    rBx = f[F_RBX]!,
-    rBy = f[F_RBY]!;
-  const vAx = f[F_VAX]!,
-    vAy = f[F_VAY]!,
-    wA = f[F_WA]!,
-    vBx = f[F_VBX]!,
-    vBy = f[F_VBY]!,
-    wB = f[F_WB]!;
-  const invH = f[F_INVH]!;
+  if (L < 1e-12) return R.ROW_SKIPPED;
+  const mA = f[R.F_MA]!,
+    iA = f[R.F_IA]!,
+    mB = f[R.F_MB]!,
+    iB = f[R.F_IB]!;
+  const rAx = f[R.F_RAX]!,
+    rAy = f[R.F_RAY]!,
+    rBx = f[R.F_RBX]!,
+    rBy = f[R.F_RBY]!;
+  const vAx = f[R.F_VAX]!,
+    vAy = f[R.F_VAY]!,
+    wA = f[R.F_WA]!,
+    vBx = f[R.F_VBX]!,
+    vBy = f[R.F_VBY]!,
+    wB = f[R.F_WB]!;
+  const invH = f[R.F_INVH]!;
   const ux = dx / L,
     uy = dy / L;
   const crA = rAx * uy - rAy * ux,
     crB = rBx * uy - rBy * ux;
-  const k = rows[o + KAX]!;
-  const minL = rows[o + MINL]!,
-    maxL = rows[o + MAXL]!;
+  const k = rows[o + R.KAX]!;
+  const minL = rows[o + R.MINL]!,
+    maxL = rows[o + R.MAXL]!;
   let total = 0;
   // Relative velocity of the anchors along u.
   let vr = (vBx - wB * rBy - vAx + wA * rAy) * ux + (vBy + wB * rBx - vAy - wA * rAx) * uy;
   if (minL < maxL) {
     if (flags & JointFlag.Spring) {
-      const C = L - rows[o + LEN]!;
-      const impulse = springImpulse(vr, C, mA + mB + iA * crA * crA + iB * crB * crB, rows[o + ISPR]!, rows[o + SB]!, rows[o + SM]!);
-      rows[o + ISPR] = rows[o + ISPR]! + impulse;
+      const C = L - rows[o + R.LEN]!;
+      const impulse = springImpulse(vr, C, mA + mB + iA * crA * crA + iB * crB * crB, rows[o + R.ISPR]!, rows[o + R.SB]!, rows[o + R.SM]!);
+      rows[o + R.ISPR] = rows[o + R.ISPR]! + impulse;
       total += impulse;
       vr += impulse * (mA + mB + iA * crA * crA + iB * crB * crB);
     }
     if (minL > 0) {
-      const impulse = limitRow(rows, o, ILOW, L - minL, k, vr, invH, useBias);
+      const impulse = limitRow(rows, o, R.ILOW, L - minL, k, vr, invH, useBias);
       total += impulse;
       vr += impulse * (mA + mB + iA * crA * crA + iB * crB * crB);
     }
     if (maxL < Infinity) {
-      total -= limitRow(rows, o, IUP, maxL - L, k, -vr, invH, useBias);
+      total -= limitRow(rows, o, R.IUP, maxL - L, k, -vr, invH, useBias);
     }
   } else {
-    const C = L - rows[o + LEN]!;
+    const C = L - rows[o + R.LEN]!;
     let bias = 0,
       ms = 1,
       is = 0;
     if (useBias) {
-      bias = rows[o + JB]! * C;
-      ms = rows[o + JM]!;
-      is = rows[o + JI]!;
+      bias = rows[o + R.JB]! * C;
+      ms = rows[o + R.JM]!;
+      is = rows[o + R.JI]!;
     }
-    const impulse = -ms * k * (vr + bias) - is * rows[o + ISPR]!;
-    rows[o + ISPR] = rows[o + ISPR]! + impulse;
+    const impulse = -ms * k * (vr + bias) - is * rows[o + R.ISPR]!;
+    rows[o + R.ISPR] = rows[o + R.ISPR]! + impulse;
     total = impulse;
   }
   const Px = total * ux,
     Py = total * uy;
-  f[F_VAX] = vAx - mA * Px;
-  f[F_VAY] = vAy - mA * Py;
-  f[F_WA] = wA - iA * (rAx * Py - rAy * Px);
-  f[F_VBX] = vBx + mB * Px;
-  f[F_VBY] = vBy + mB * Py;
-  f[F_WB] = wB + iB * (rBx * Py - rBy * Px);
+  f[R.F_VAX] = vAx - mA * Px;
+  f[R.F_VAY] = vAy - mA * Py;
+  f[R.F_WA] = wA - iA * (rAx * Py - rAy * Px);
+  f[R.F_VBX] = vBx + mB * Px;
+  f[R.F_VBY] = vBy + mB * Py;
+  f[R.F_WB] = wB + iB * (rBx * Py - rBy * Px);
   // A taut (or sprung) link pushes its bodies; a slack rope leaves them in free flight.
-  return rows[o + ISPR] !== 0 || rows[o + ILOW] !== 0 || rows[o + IUP] !== 0 ? ROW_PUSHED : ROW_MOVED;
+  return rows[o + R.ISPR] !== 0 || rows[o + R.ILOW] !== 0 || rows[o + R.IUP] !== 0 ? R.ROW_PUSHED : R.ROW_MOVED;
 }
 
 /**
@@ -313,7 +280,7 @@ export function finishPointLinks(js: JointState): void {
   for (let l = 0, m = js.linkCount; l < m; l++) {
     const f = l * LINK_FLOATS,
       o = lint[l * LINK_INTS + 2]! * ROW_FLOATS;
-    if (lf[f + 5] === 0) rows[o + ISPR] = lf[f + 4]!;
-    else rows[o + IUP] = -lf[f + 4]!;
+    if (lf[f + 5] === 0) rows[o + R.ISPR] = lf[f + 4]!;
+    else rows[o + R.IUP] = -lf[f + 4]!;
   }
 }

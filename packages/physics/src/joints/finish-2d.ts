@@ -5,32 +5,7 @@ import { JointFlag, JointType } from '../world/joint-store-2d.js';
 import { IMPULSES, ROW_FLOATS, ROW_INTS } from '../world/joint-strides-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { finishPointLinks } from './distance-joint.js';
-import {
-  AXX,
-  AXY,
-  DCX,
-  DCY,
-  EID,
-  IA,
-  IANG,
-  IB,
-  ILOW,
-  ILX,
-  ILY,
-  IMOT,
-  ISPR,
-  IUP,
-  LEN,
-  MAXL,
-  MINL,
-  PIN,
-  POINT_LINK,
-  RAX,
-  RAY,
-  RBX,
-  RBY,
-  TF,
-} from './layout-2d.js';
+import * as R from './layout-2d.js';
 import { removeJointUnchecked } from './remove.js';
 import { finishPins } from './revolute-joint.js';
 
@@ -64,11 +39,11 @@ export function finishJoints(world: PhysicsWorld, hs: number): void {
   for (let r = 0; r < n; r++) {
     const o = r * ROW_FLOATS,
       q = r * ROW_INTS;
-    const j = ri[q + EID]!,
-      ia = ri[q + IA]!,
-      ib = ri[q + IB]!,
-      tf = ri[q + TF]!;
-    const type = tf === POINT_LINK ? JointType.Distance : tf === PIN ? JointType.Revolute : tf & 255,
+    const j = ri[q + R.EID]!,
+      ia = ri[q + R.IA]!,
+      ib = ri[q + R.IB]!,
+      tf = ri[q + R.TF]!;
+    const type = tf === R.POINT_LINK ? JointType.Distance : tf === R.PIN ? JointType.Revolute : tf & 255,
       flags = tf >> 8;
     const oA = ia * BS2_STRIDE,
       oB = ib * BS2_STRIDE;
@@ -76,12 +51,12 @@ export function finishJoints(world: PhysicsWorld, hs: number): void {
       sA = rot[ia * 3 + 1]!,
       cB = rot[ib * 3]!,
       sB = rot[ib * 3 + 1]!;
-    const rAx = cA * rows[o + RAX]! - sA * rows[o + RAY]!,
-      rAy = sA * rows[o + RAX]! + cA * rows[o + RAY]!;
-    const rBx = cB * rows[o + RBX]! - sB * rows[o + RBY]!,
-      rBy = sB * rows[o + RBX]! + cB * rows[o + RBY]!;
-    const dx = sb[oB + BS2_DX]! - sb[oA + BS2_DX]! + rows[o + DCX]! + rBx - rAx;
-    const dy = sb[oB + BS2_DY]! - sb[oA + BS2_DY]! + rows[o + DCY]! + rBy - rAy;
+    const rAx = cA * rows[o + R.RAX]! - sA * rows[o + R.RAY]!,
+      rAy = sA * rows[o + R.RAX]! + cA * rows[o + R.RAY]!;
+    const rBx = cB * rows[o + R.RBX]! - sB * rows[o + R.RBY]!,
+      rBy = sB * rows[o + R.RBX]! + cB * rows[o + R.RBY]!;
+    const dx = sb[oB + BS2_DX]! - sb[oA + BS2_DX]! + rows[o + R.DCX]! + rBx - rAx;
+    const dy = sb[oB + BS2_DY]! - sb[oA + BS2_DY]! + rows[o + R.DCY]! + rBy - rAy;
     let force = 0,
       torque = 0,
       error = 0,
@@ -89,38 +64,38 @@ export function finishJoints(world: PhysicsWorld, hs: number): void {
     switch (type) {
       case JointType.Distance: {
         const L = Math.sqrt(dx * dx + dy * dy);
-        force = Math.abs(rows[o + ISPR]! + rows[o + ILOW]! - rows[o + IUP]!) * invH;
-        const minL = rows[o + MINL]!,
-          maxL = rows[o + MAXL]!,
-          rest = rows[o + LEN]!;
+        force = Math.abs(rows[o + R.ISPR]! + rows[o + R.ILOW]! - rows[o + R.IUP]!) * invH;
+        const minL = rows[o + R.MINL]!,
+          maxL = rows[o + R.MAXL]!,
+          rest = rows[o + R.LEN]!;
         if (minL < maxL) error = Math.max(0, minL - L, L - maxL);
         else error = Math.abs(L - rest);
         stretch = rest > 0 ? (L - rest) / rest : 0;
         break;
       }
       case JointType.Revolute:
-        force = Math.sqrt(rows[o + ILX]! * rows[o + ILX]! + rows[o + ILY]! * rows[o + ILY]!) * invH;
-        torque = Math.abs(rows[o + ISPR]! + rows[o + IMOT]! + rows[o + ILOW]! - rows[o + IUP]!) * invH;
+        force = Math.sqrt(rows[o + R.ILX]! * rows[o + R.ILX]! + rows[o + R.ILY]! * rows[o + R.ILY]!) * invH;
+        torque = Math.abs(rows[o + R.ISPR]! + rows[o + R.IMOT]! + rows[o + R.ILOW]! - rows[o + R.IUP]!) * invH;
         error = Math.sqrt(dx * dx + dy * dy);
         break;
       case JointType.Weld:
-        force = Math.sqrt(rows[o + ILX]! * rows[o + ILX]! + rows[o + ILY]! * rows[o + ILY]!) * invH;
-        torque = Math.abs(rows[o + IANG]!) * invH;
+        force = Math.sqrt(rows[o + R.ILX]! * rows[o + R.ILX]! + rows[o + R.ILY]! * rows[o + R.ILY]!) * invH;
+        torque = Math.abs(rows[o + R.IANG]!) * invH;
         if (!(flags & JointFlag.Spring)) error = Math.sqrt(dx * dx + dy * dy);
         break;
       case JointType.Prismatic:
       case JointType.Wheel: {
-        const axx = cA * rows[o + AXX]! - sA * rows[o + AXY]!,
-          axy = sA * rows[o + AXX]! + cA * rows[o + AXY]!;
-        const axial = rows[o + ISPR]! + rows[o + ILOW]! - rows[o + IUP]! + (type === JointType.Prismatic ? rows[o + IMOT]! : 0);
-        force = Math.hypot(axial, rows[o + ILX]!) * invH;
-        torque = Math.abs(type === JointType.Prismatic ? rows[o + IANG]! : rows[o + IMOT]!) * invH;
+        const axx = cA * rows[o + R.AXX]! - sA * rows[o + R.AXY]!,
+          axy = sA * rows[o + R.AXX]! + cA * rows[o + R.AXY]!;
+        const axial = rows[o + R.ISPR]! + rows[o + R.ILOW]! - rows[o + R.IUP]! + (type === JointType.Prismatic ? rows[o + R.IMOT]! : 0);
+        force = Math.hypot(axial, rows[o + R.ILX]!) * invH;
+        torque = Math.abs(type === JointType.Prismatic ? rows[o + R.IANG]! : rows[o + R.IMOT]!) * invH;
         error = Math.abs(-axy * dx + axx * dy);
         break;
       }
       case JointType.Mouse:
-        force = Math.sqrt(rows[o + ILX]! * rows[o + ILX]! + rows[o + ILY]! * rows[o + ILY]!) * invH;
-        torque = Math.abs(rows[o + IANG]!) * invH;
+        force = Math.sqrt(rows[o + R.ILX]! * rows[o + R.ILX]! + rows[o + R.ILY]! * rows[o + R.ILY]!) * invH;
+        torque = Math.abs(rows[o + R.IANG]!) * invH;
         break;
     }
     J.force[j] = force;
@@ -130,7 +105,7 @@ export function finishJoints(world: PhysicsWorld, hs: number): void {
       maxJoint = j;
     }
     const base = j * IMPULSES;
-    for (let s = 0; s < IMPULSES; s++) imp[base + s] = rows[o + ILX + s]!;
+    for (let s = 0; s < IMPULSES; s++) imp[base + s] = rows[o + R.ILX + s]!;
     if (force > J.breakForce[j]! || torque > J.breakTorque[j]! || stretch > J.breakStretch[j]!) {
       (doomed ??= []).push(j);
       const a = J.a[j]!;

@@ -1,6 +1,6 @@
 import { addComponent, hasComponent } from 'bitecs';
 import { wakeIsland } from '../islands/sleep.js';
-import { assertFinite, assertNonNegative, assertOptionalBoolean, assertVector, describe } from '../validation/validate.js';
+import { assertFinite, assertKnownKeys, assertNonNegative, assertOptionalBoolean, assertVector, describe } from '../validation/validate.js';
 import { createSlot, currentHandle, resolveEntity } from '../world/handles.js';
 import { addNoCollide } from '../world/joint-no-collide.js';
 import { ensureJointArrays } from '../world/joint-state-2d.js';
@@ -254,6 +254,52 @@ export function setAxis(world: PhysicsWorld, j: number, a: number, axis: [number
     si = Math.sin(t);
   J.axisX[j] = co * axis[0] + si * axis[1];
   J.axisY[j] = -si * axis[0] + co * axis[1];
+}
+
+/** What addPrismaticJoint and addWheelJoint differ in: their name, joint type, known option keys, the name of the motor's largest force or torque, and the defaults of the axis and the spring. */
+export interface AxisJointKind {
+  where: string;
+  type: JointTypeCode;
+  keys: readonly string[];
+  maxName: 'maxMotorForce' | 'maxMotorTorque';
+  axis: [number, number];
+  hertz: number;
+  dampingRatio: number;
+}
+
+/** The options of a joint along an axis (PrismaticJointOptions, WheelJointOptions; documented there). */
+export interface AxisJointOptions extends JointBaseOptions {
+  anchor?: ArrayLike<number>;
+  axis?: ArrayLike<number>;
+  lower?: number;
+  upper?: number;
+  motorSpeed?: number;
+  maxMotorForce?: number;
+  maxMotorTorque?: number;
+  hertz?: number;
+  dampingRatio?: number;
+}
+
+/**
+ * Adds a joint along an axis (addPrismaticJoint, addWheelJoint): B's anchor stays on the line through A's
+ * along `axis` (fixed in A); the travel's limits, a motor of at most the option `kind.maxName` (N for a
+ * prismatic joint, N m for a wheel) and a spring along the axis. Checks the bodies, the keys, the anchor, the axis, the
+ * limits, then the motor and spring.
+ * @returns the joint entity. @throws TypeError | RangeError naming `kind.where` on bad bodies, options or values.
+ */
+export function addAxisJoint(world: PhysicsWorld, kind: AxisJointKind, options: AxisJointOptions): number {
+  const where = kind.where;
+  const ends = checkEnds(where, world, options);
+  assertKnownKeys(where, options, kind.keys, ['a']);
+  const p = optionalPoint(where, 'anchor', options.anchor, centre(world, ends.b));
+  const axis = unitAxis(where, options.axis, kind.axis);
+  const limit = checkLimits(where, options.lower, options.upper, 'lower', 'upper', Infinity);
+  const { motorSpeed, hertz, dampingRatio } = options;
+  const drive = checkDrive(where, motorSpeed, options[kind.maxName], kind.maxName, hertz, dampingRatio, kind.hertz, kind.dampingRatio);
+  const j = makeJoint(world, kind.type, ends, p, p, options);
+  setAxis(world, j, ends.a, axis);
+  storeDrive(world, j, limit, options.lower, options.upper, drive);
+  return handle(world, j);
 }
 
 /** The slot of 2D joint `joint`, of one of `types` if given. @throws RangeError naming `where` otherwise. */

@@ -3,28 +3,7 @@ import { assertKnownKeys, assertNonNegative, assertPositive, assertVector, descr
 import { JointFlag, JointType } from '../world/joint-store-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { centre, checkEnds, handle, makeJoint, optionalPoint, requireJoint, wakeJoint } from './joint-2d.js';
-import {
-  AI,
-  AM,
-  F_DX,
-  F_DY,
-  F_IB,
-  F_MB,
-  F_RBX,
-  F_RBY,
-  F_VBX,
-  F_VBY,
-  F_WB,
-  FMAX,
-  IANG,
-  ILX,
-  ILY,
-  KAX,
-  ROW_PUSHED,
-  SB,
-  SI,
-  SM,
-} from './layout-2d.js';
+import * as R from './layout-2d.js';
 
 /**
  * The 2D mouse joint (a soft, force-capped spring pulling a body's point toward a target, for dragging):
@@ -106,26 +85,26 @@ export function setMouseTarget(world: PhysicsWorld, joint: number, target: Array
  * accumulated impulse is capped at the largest a substep (maxForce). @returns ROW_PUSHED.
  */
 export function solveMouseRow(rows: Float64Array, o: number, _flags: number, _useBias: boolean, f: Float64Array): number {
-  const mB = f[F_MB]!,
-    iB = f[F_IB]!;
-  const rBx = f[F_RBX]!,
-    rBy = f[F_RBY]!;
-  let vBx = f[F_VBX]!,
-    vBy = f[F_VBY]!,
-    wB = f[F_WB]!;
+  const mB = f[R.F_MB]!,
+    iB = f[R.F_IB]!;
+  const rBx = f[R.F_RBX]!,
+    rBy = f[R.F_RBY]!;
+  let vBx = f[R.F_VBX]!,
+    vBy = f[R.F_VBY]!,
+    wB = f[R.F_WB]!;
   // Damp B's spin softly, then pull its anchor toward the target with at most maxForce.
-  const kax = rows[o + KAX]!;
+  const kax = rows[o + R.KAX]!;
   {
-    const impulse = -rows[o + AM]! * kax * wB - rows[o + AI]! * rows[o + IANG]!;
-    rows[o + IANG] = rows[o + IANG]! + impulse;
+    const impulse = -rows[o + R.AM]! * kax * wB - rows[o + R.AI]! * rows[o + R.IANG]!;
+    rows[o + R.IANG] = rows[o + R.IANG]! + impulse;
     wB += iB * impulse;
   }
   const cdx = vBx - wB * rBy,
     cdy = vBy + wB * rBx;
-  const bx = rows[o + SB]! * f[F_DX]!,
-    by = rows[o + SB]! * f[F_DY]!,
-    ms = rows[o + SM]!,
-    is = rows[o + SI]!;
+  const bx = rows[o + R.SB]! * f[R.F_DX]!,
+    by = rows[o + R.SB]! * f[R.F_DY]!,
+    ms = rows[o + R.SM]!,
+    is = rows[o + R.SI]!;
   const k11 = mB + rBy * rBy * iB,
     k12 = -rBy * rBx * iB,
     k22 = mB + rBx * rBx * iB;
@@ -135,26 +114,26 @@ export function solveMouseRow(rows: Float64Array, o: number, _flags: number, _us
     ey = cdy + by;
   const sx = det * (k22 * ex - k12 * ey),
     sy = det * (k11 * ey - k12 * ex);
-  const oldX = rows[o + ILX]!,
-    oldY = rows[o + ILY]!;
+  const oldX = rows[o + R.ILX]!,
+    oldY = rows[o + R.ILY]!;
   let nx = oldX - ms * sx - is * oldX,
     ny = oldY - ms * sy - is * oldY;
-  const max = rows[o + FMAX]!;
+  const max = rows[o + R.FMAX]!;
   const mag2 = nx * nx + ny * ny;
   if (mag2 > max * max) {
     const s = max / Math.sqrt(mag2);
     nx *= s;
     ny *= s;
   }
-  rows[o + ILX] = nx;
-  rows[o + ILY] = ny;
+  rows[o + R.ILX] = nx;
+  rows[o + R.ILY] = ny;
   const ix = nx - oldX,
     iy = ny - oldY;
   vBx += mB * ix;
   vBy += mB * iy;
   wB += iB * (rBx * iy - rBy * ix);
-  f[F_VBX] = vBx;
-  f[F_VBY] = vBy;
-  f[F_WB] = wB;
-  return ROW_PUSHED;
+  f[R.F_VBX] = vBx;
+  f[R.F_VBY] = vBy;
+  f[R.F_WB] = wB;
+  return R.ROW_PUSHED;
 }

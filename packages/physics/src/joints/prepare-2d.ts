@@ -2,45 +2,7 @@ import { BS2_INV_INERTIA, BS2_INV_MASS, BS2_STRIDE, BX_BASE_X, BX_BASE_Y, BX_ROT
 import { JointFlag, JointType } from '../world/joint-store-2d.js';
 import { IMPULSES, LINK_FLOATS, LINK_INTS, PIN_FLOATS, PIN_INTS, ROW_FLOATS, ROW_INTS } from '../world/joint-strides-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
-import {
-  AB,
-  AI,
-  AM,
-  AXX,
-  AXY,
-  DANG,
-  DCX,
-  DCY,
-  EID,
-  FMAX,
-  IA,
-  IB,
-  ILX,
-  ILY,
-  JB,
-  JI,
-  JM,
-  KAX,
-  KMOT,
-  LEN,
-  LOW,
-  MAXL,
-  MINL,
-  MMAX,
-  MSPD,
-  PIN,
-  POINT_LINK,
-  RAX,
-  RAY,
-  RBX,
-  RBY,
-  SB,
-  SI,
-  SM,
-  TF,
-  UP,
-  WELD_ANGULAR_SOFT,
-} from './layout-2d.js';
+import * as R from './layout-2d.js';
 import { soft, unwind } from './rows-2d.js';
 import { fixedSpring } from './spring.js';
 
@@ -115,11 +77,11 @@ export function prepareJoints(world: PhysicsWorld, hs: number): void {
   for (let r = 0; r < n; r++) {
     const o = r * ROW_FLOATS,
       q = r * ROW_INTS;
-    const j = ri[q + EID]!,
-      ia = ri[q + IA]!,
-      ib = ri[q + IB]!;
-    const type = ri[q + TF]! & 255;
-    let flags = ri[q + TF]! >> 8;
+    const j = ri[q + R.EID]!,
+      ia = ri[q + R.IA]!,
+      ib = ri[q + R.IB]!;
+    const type = ri[q + R.TF]! & 255;
+    let flags = ri[q + R.TF]! >> 8;
     const a = J.a[j]!,
       b = J.b[j]!;
     const oA = ia * BS2_STRIDE,
@@ -181,34 +143,34 @@ export function prepareJoints(world: PhysicsWorld, hs: number): void {
         rBy += py[b]!;
       }
     }
-    rows[o + RAX] = rAx;
-    rows[o + RAY] = rAy;
-    rows[o + RBX] = rBx;
-    rows[o + RBY] = rBy;
+    rows[o + R.RAX] = rAx;
+    rows[o + R.RAY] = rAy;
+    rows[o + R.RBX] = rBx;
+    rows[o + R.RBY] = rBy;
     const dcx = cBx - cAx,
       dcy = cBy - cAy;
-    rows[o + DCX] = dcx;
-    rows[o + DCY] = dcy;
+    rows[o + R.DCX] = dcx;
+    rows[o + R.DCY] = dcy;
     let dAng = tB - tA - J.referenceAngle[j]!;
     dAng = unwind(dAng);
-    rows[o + DANG] = dAng;
+    rows[o + R.DANG] = dAng;
     const axx = cA * J.axisX[j]! - sA * J.axisY[j]!,
       axy = sA * J.axisX[j]! + cA * J.axisY[j]!;
-    rows[o + AXX] = axx;
-    rows[o + AXY] = axy;
-    rows[o + JB] = jBias;
-    rows[o + JM] = jMass;
-    rows[o + JI] = jImp;
+    rows[o + R.AXX] = axx;
+    rows[o + R.AXY] = axy;
+    rows[o + R.JB] = jBias;
+    rows[o + R.JM] = jMass;
+    rows[o + R.JI] = jImp;
     const hertz = J.hertz[j]!,
       zeta = J.dampingRatio[j]!;
-    soft(rows, o + SB, hertz, zeta, hs);
+    soft(rows, o + R.SB, hertz, zeta, hs);
     if (hertz > 0 && (type === JointType.Distance || type === JointType.Prismatic || type === JointType.Wheel)) {
-      fixedSpring(rows, o + SB, hertz, zeta, hs, mA + mB + 0.5 * (iA * (lax * lax + lay * lay) + iB * (lbx * lbx + lby * lby)));
+      fixedSpring(rows, o + R.SB, hertz, zeta, hs, mA + mB + 0.5 * (iA * (lax * lax + lay * lay) + iB * (lbx * lbx + lby * lby)));
     }
-    rows[o + LOW] = J.lower[j]!;
-    rows[o + UP] = J.upper[j]!;
-    rows[o + MSPD] = J.motorSpeed[j]!;
-    rows[o + MMAX] = J.maxMotorForce[j]! * hs;
+    rows[o + R.LOW] = J.lower[j]!;
+    rows[o + R.UP] = J.upper[j]!;
+    rows[o + R.MSPD] = J.motorSpeed[j]!;
+    rows[o + R.MMAX] = J.maxMotorForce[j]! * hs;
     const angularMass = iA + iB > 0 ? 1 / (iA + iB) : 0;
     const dx = dcx + rBx - rAx,
       dy = dcy + rBy - rAy;
@@ -220,20 +182,20 @@ export function prepareJoints(world: PhysicsWorld, hs: number): void {
         const crA = rAx * uy - rAy * ux,
           crB = rBx * uy - rBy * ux;
         const k = mA + mB + iA * crA * crA + iB * crB * crB;
-        rows[o + KAX] = k > 0 ? 1 / k : 0;
+        rows[o + R.KAX] = k > 0 ? 1 / k : 0;
         const minL = J.minLength[j]!,
           maxL = J.maxLength[j]!,
           rest = J.length[j]!;
-        rows[o + LEN] = rest;
-        rows[o + MINL] = minL;
-        rows[o + MAXL] = maxL;
+        rows[o + R.LEN] = rest;
+        rows[o + R.MINL] = minL;
+        rows[o + R.MAXL] = maxL;
         // Neither body turns and no spring: a point link (anchors are fixed offsets within the step).
         if (iA === 0 && iB === 0 && !(flags & JointFlag.Spring) && (minL === maxL || (minL === 0 && maxL < Infinity))) {
           const l = links * LINK_FLOATS,
             li = links * LINK_INTS;
           lf[l] = dx;
           lf[l + 1] = dy;
-          lf[l + 2] = rows[o + KAX]!;
+          lf[l + 2] = rows[o + R.KAX]!;
           const rope = minL < maxL;
           lf[l + 3] = rope ? maxL : rest;
           lf[l + 4] = warm ? (rope ? -imp[j * IMPULSES + 6]! : imp[j * IMPULSES + 3]!) : 0;
@@ -242,53 +204,53 @@ export function prepareJoints(world: PhysicsWorld, hs: number): void {
           lint[li + 1] = oB;
           lint[li + 2] = r;
           links++;
-          ri[q + TF] = POINT_LINK;
+          ri[q + R.TF] = R.POINT_LINK;
         }
         break;
       }
       case JointType.Revolute:
-        rows[o + KAX] = angularMass;
-        if ((flags & (JointFlag.Spring | JointFlag.Motor | JointFlag.Limit)) === 0) ri[q + TF] = PIN;
+        rows[o + R.KAX] = angularMass;
+        if ((flags & (JointFlag.Spring | JointFlag.Motor | JointFlag.Limit)) === 0) ri[q + R.TF] = R.PIN;
         break;
       case JointType.Prismatic:
       case JointType.Wheel: {
         const a1 = (dx + rAx) * axy - (dy + rAy) * axx,
           a2 = rBx * axy - rBy * axx;
         const k = mA + mB + iA * a1 * a1 + iB * a2 * a2;
-        rows[o + KAX] = k > 0 ? 1 / k : 0;
-        rows[o + KMOT] = angularMass;
+        rows[o + R.KAX] = k > 0 ? 1 / k : 0;
+        rows[o + R.KMOT] = angularMass;
         break;
       }
       case JointType.Weld: {
-        rows[o + KAX] = angularMass;
+        rows[o + R.KAX] = angularMass;
         // The linear part: its own softness if softened, else the rigid joint softness.
         if (hertz > 0) {
-          rows[o + JB] = rows[o + SB]!;
-          rows[o + JM] = rows[o + SM]!;
-          rows[o + JI] = rows[o + SI]!;
+          rows[o + R.JB] = rows[o + R.SB]!;
+          rows[o + R.JM] = rows[o + R.SM]!;
+          rows[o + R.JI] = rows[o + R.SI]!;
           flags |= JointFlag.Spring;
         } else flags &= ~JointFlag.Spring;
         const ah = J.angularHertz[j]!;
         if (ah > 0) {
-          soft(rows, o + AB, ah, J.angularDampingRatio[j]!, hs);
-          flags |= WELD_ANGULAR_SOFT;
+          soft(rows, o + R.AB, ah, J.angularDampingRatio[j]!, hs);
+          flags |= R.WELD_ANGULAR_SOFT;
         } else {
-          rows[o + AB] = jBias;
-          rows[o + AM] = jMass;
-          rows[o + AI] = jImp;
+          rows[o + R.AB] = jBias;
+          rows[o + R.AM] = jMass;
+          rows[o + R.AI] = jImp;
         }
-        ri[q + TF] = type | (flags << 8);
+        ri[q + R.TF] = type | (flags << 8);
         break;
       }
       case JointType.Mouse:
-        rows[o + KAX] = iB > 0 ? 1 / iB : 0;
-        rows[o + FMAX] = J.maxForce[j]! * hs;
-        soft(rows, o + AB, hertz, zeta, hs);
+        rows[o + R.KAX] = iB > 0 ? 1 / iB : 0;
+        rows[o + R.FMAX] = J.maxForce[j]! * hs;
+        soft(rows, o + R.AB, hertz, zeta, hs);
         break;
     }
     const base = j * IMPULSES;
-    for (let s = 0; s < IMPULSES; s++) rows[o + ILX + s] = warm ? imp[base + s]! : 0;
-    if (ri[q + TF] === PIN) {
+    for (let s = 0; s < IMPULSES; s++) rows[o + R.ILX + s] = warm ? imp[base + s]! : 0;
+    if (ri[q + R.TF] === R.PIN) {
       const f = pins * PIN_FLOATS,
         i = pins * PIN_INTS;
       pf[f] = rAx;
@@ -297,8 +259,8 @@ export function prepareJoints(world: PhysicsWorld, hs: number): void {
       pf[f + 3] = rBy;
       pf[f + 4] = dcx;
       pf[f + 5] = dcy;
-      pf[f + 6] = rows[o + ILX]!;
-      pf[f + 7] = rows[o + ILY]!;
+      pf[f + 6] = rows[o + R.ILX]!;
+      pf[f + 7] = rows[o + R.ILY]!;
       pint[i] = ia;
       pint[i + 1] = ib;
       pint[i + 2] = r;

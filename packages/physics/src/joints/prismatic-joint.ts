@@ -1,20 +1,6 @@
-import { assertKnownKeys } from '../validation/validate.js';
 import { JointType } from '../world/joint-store-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
-import {
-  BASE_KEYS,
-  centre,
-  checkDrive,
-  checkEnds,
-  checkLimits,
-  handle,
-  type JointBaseOptions,
-  makeJoint,
-  optionalPoint,
-  setAxis,
-  storeDrive,
-  unitAxis,
-} from './joint-2d.js';
+import { type AxisJointKind, addAxisJoint, BASE_KEYS, type JointBaseOptions } from './joint-2d.js';
 
 /**
  * The 2D prismatic joint (a slider along an axis, with an optional limit, motor and spring): its options
@@ -51,20 +37,16 @@ export interface PrismaticJointOptions extends JointBaseOptions {
  * @category Joints and ropes
  */
 export function addPrismaticJoint(world: PhysicsWorld, options: PrismaticJointOptions): number {
-  const where = 'addPrismaticJoint';
-  const ends = checkEnds(where, world, options);
-  assertKnownKeys(
-    where,
-    options,
-    [...BASE_KEYS, 'anchor', 'axis', 'lower', 'upper', 'motorSpeed', 'maxMotorForce', 'hertz', 'dampingRatio'],
-    ['a'],
-  );
-  const p = optionalPoint(where, 'anchor', options.anchor, centre(world, ends.b));
-  const axis = unitAxis(where, options.axis, [1, 0]);
-  const limit = checkLimits(where, options.lower, options.upper, 'lower', 'upper', Infinity);
-  const drive = checkDrive(where, options.motorSpeed, options.maxMotorForce, 'maxMotorForce', options.hertz, options.dampingRatio);
-  const j = makeJoint(world, JointType.Prismatic, ends, p, p, options);
-  setAxis(world, j, ends.a, axis);
-  storeDrive(world, j, limit, options.lower, options.upper, drive);
-  return handle(world, j);
+  return addAxisJoint(world, PRISMATIC, options);
 }
+
+/** What sets the prismatic joint apart from the other joint along an axis (joints/joint-2d.ts addAxisJoint). */
+const PRISMATIC: AxisJointKind = {
+  where: 'addPrismaticJoint',
+  type: JointType.Prismatic,
+  keys: [...BASE_KEYS, 'anchor', 'axis', 'lower', 'upper', 'motorSpeed', 'maxMotorForce', 'hertz', 'dampingRatio'],
+  maxName: 'maxMotorForce',
+  axis: [1, 0],
+  hertz: 0,
+  dampingRatio: 0,
+};

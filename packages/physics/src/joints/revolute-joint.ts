@@ -1,14 +1,4 @@
-import {
-  BS2_DX,
-  BS2_DY,
-  BS2_INV_INERTIA,
-  BS2_INV_MASS,
-  BS2_PUSHED,
-  BS2_STRIDE,
-  BS2_VX,
-  BS2_VY,
-  BS2_W,
-} from '../solver/body-state-layout.js';
+import * as BS from '../solver/body-state-layout.js';
 import { assertKnownKeys } from '../validation/validate.js';
 import type { JointState } from '../world/joint-state-2d.js';
 import { JointFlag, JointType } from '../world/joint-store-2d.js';
@@ -26,29 +16,7 @@ import {
   optionalPoint,
   storeDrive,
 } from './joint-2d.js';
-import {
-  F_IA,
-  F_IB,
-  F_INVH,
-  F_REL,
-  F_WA,
-  F_WB,
-  ILOW,
-  ILX,
-  ILY,
-  IMOT,
-  ISPR,
-  IUP,
-  KAX,
-  LOW,
-  MMAX,
-  MSPD,
-  ROW_PUSHED,
-  SB,
-  SI,
-  SM,
-  UP,
-} from './layout-2d.js';
+import * as R from './layout-2d.js';
 import { limitRow, solvePointBlock, unwind } from './rows-2d.js';
 
 /**
@@ -113,43 +81,43 @@ export function addRevoluteJoint(world: PhysicsWorld, options: RevoluteJointOpti
  * `useBias`. @returns ROW_PUSHED.
  */
 export function solveRevoluteRow(rows: Float64Array, o: number, flags: number, useBias: boolean, f: Float64Array): number {
-  const iA = f[F_IA]!,
-    iB = f[F_IB]!;
+  const iA = f[R.F_IA]!,
+    iB = f[R.F_IB]!;
   if (iA + iB !== 0) {
-    const invH = f[F_INVH]!,
-      relAngle = f[F_REL]!;
-    let wA = f[F_WA]!,
-      wB = f[F_WB]!;
-    const kax = rows[o + KAX]!;
+    const invH = f[R.F_INVH]!,
+      relAngle = f[R.F_REL]!;
+    let wA = f[R.F_WA]!,
+      wB = f[R.F_WB]!;
+    const kax = rows[o + R.KAX]!;
     if (flags & JointFlag.Spring) {
-      const impulse = -rows[o + SM]! * kax * (wB - wA + rows[o + SB]! * relAngle) - rows[o + SI]! * rows[o + ISPR]!;
-      rows[o + ISPR] = rows[o + ISPR]! + impulse;
+      const impulse = -rows[o + R.SM]! * kax * (wB - wA + rows[o + R.SB]! * relAngle) - rows[o + R.SI]! * rows[o + R.ISPR]!;
+      rows[o + R.ISPR] = rows[o + R.ISPR]! + impulse;
       wA -= iA * impulse;
       wB += iB * impulse;
     }
     if (flags & JointFlag.Motor) {
-      const max = rows[o + MMAX]!;
-      const old = rows[o + IMOT]!;
-      let next = old - kax * (wB - wA - rows[o + MSPD]!);
+      const max = rows[o + R.MMAX]!;
+      const old = rows[o + R.IMOT]!;
+      let next = old - kax * (wB - wA - rows[o + R.MSPD]!);
       next = next < -max ? -max : next > max ? max : next;
-      rows[o + IMOT] = next;
+      rows[o + R.IMOT] = next;
       wA -= iA * (next - old);
       wB += iB * (next - old);
     }
     if (flags & JointFlag.Limit) {
       const angle = unwind(relAngle);
-      const lower = limitRow(rows, o, ILOW, angle - rows[o + LOW]!, kax, wB - wA, invH, useBias);
+      const lower = limitRow(rows, o, R.ILOW, angle - rows[o + R.LOW]!, kax, wB - wA, invH, useBias);
       wA -= iA * lower;
       wB += iB * lower;
-      const upper = limitRow(rows, o, IUP, rows[o + UP]! - angle, kax, wA - wB, invH, useBias);
+      const upper = limitRow(rows, o, R.IUP, rows[o + R.UP]! - angle, kax, wA - wB, invH, useBias);
       wA += iA * upper;
       wB -= iB * upper;
     }
-    f[F_WA] = wA;
-    f[F_WB] = wB;
+    f[R.F_WA] = wA;
+    f[R.F_WB] = wB;
   }
   solvePointBlock(rows, o, f, useBias);
-  return ROW_PUSHED;
+  return R.ROW_PUSHED;
 }
 
 /**
@@ -172,8 +140,8 @@ export function warmStartPins(world: PhysicsWorld): void {
     if (Math.abs(Px) + Math.abs(Py) === 0) continue;
     const ia = pint[i]!,
       ib = pint[i + 1]!,
-      oA = ia * BS2_STRIDE,
-      oB = ib * BS2_STRIDE;
+      oA = ia * BS.BS2_STRIDE,
+      oB = ib * BS.BS2_STRIDE;
     const cA = rot[ia * 3]!,
       sA = rot[ia * 3 + 1]!,
       cB = rot[ib * 3]!,
@@ -182,16 +150,16 @@ export function warmStartPins(world: PhysicsWorld): void {
       rAy = sA * pf[f]! + cA * pf[f + 1]!;
     const rBx = cB * pf[f + 2]! - sB * pf[f + 3]!,
       rBy = sB * pf[f + 2]! + cB * pf[f + 3]!;
-    const mA = sb[oA + BS2_INV_MASS]!,
-      iA = sb[oA + BS2_INV_INERTIA]!,
-      mB = sb[oB + BS2_INV_MASS]!,
-      iB = sb[oB + BS2_INV_INERTIA]!;
-    sb[oA + BS2_VX] = sb[oA + BS2_VX]! - mA * Px;
-    sb[oA + BS2_VY] = sb[oA + BS2_VY]! - mA * Py;
-    sb[oA + BS2_W] = sb[oA + BS2_W]! - iA * (rAx * Py - rAy * Px);
-    sb[oB + BS2_VX] = sb[oB + BS2_VX]! + mB * Px;
-    sb[oB + BS2_VY] = sb[oB + BS2_VY]! + mB * Py;
-    sb[oB + BS2_W] = sb[oB + BS2_W]! + iB * (rBx * Py - rBy * Px);
+    const mA = sb[oA + BS.BS2_INV_MASS]!,
+      iA = sb[oA + BS.BS2_INV_INERTIA]!,
+      mB = sb[oB + BS.BS2_INV_MASS]!,
+      iB = sb[oB + BS.BS2_INV_INERTIA]!;
+    sb[oA + BS.BS2_VX] = sb[oA + BS.BS2_VX]! - mA * Px;
+    sb[oA + BS.BS2_VY] = sb[oA + BS.BS2_VY]! - mA * Py;
+    sb[oA + BS.BS2_W] = sb[oA + BS.BS2_W]! - iA * (rAx * Py - rAy * Px);
+    sb[oB + BS.BS2_VX] = sb[oB + BS.BS2_VX]! + mB * Px;
+    sb[oB + BS.BS2_VY] = sb[oB + BS.BS2_VY]! + mB * Py;
+    sb[oB + BS.BS2_W] = sb[oB + BS.BS2_W]! + iB * (rBx * Py - rBy * Px);
   }
 }
 
@@ -215,12 +183,12 @@ export function solvePins(world: PhysicsWorld, useBias: boolean): void {
       i = l * PIN_INTS;
     const ia = pint[i]!,
       ib = pint[i + 1]!,
-      oA = ia * BS2_STRIDE,
-      oB = ib * BS2_STRIDE;
-    const mA = sb[oA + BS2_INV_MASS]!,
-      iA = sb[oA + BS2_INV_INERTIA]!,
-      mB = sb[oB + BS2_INV_MASS]!,
-      iB = sb[oB + BS2_INV_INERTIA]!;
+      oA = ia * BS.BS2_STRIDE,
+      oB = ib * BS.BS2_STRIDE;
+    const mA = sb[oA + BS.BS2_INV_MASS]!,
+      iA = sb[oA + BS.BS2_INV_INERTIA]!,
+      mB = sb[oB + BS.BS2_INV_MASS]!,
+      iB = sb[oB + BS.BS2_INV_INERTIA]!;
     const cA = rot[ia * 3]!,
       sA = rot[ia * 3 + 1]!,
       cB = rot[ib * 3]!,
@@ -229,19 +197,19 @@ export function solvePins(world: PhysicsWorld, useBias: boolean): void {
       rAy = sA * pf[f]! + cA * pf[f + 1]!;
     const rBx = cB * pf[f + 2]! - sB * pf[f + 3]!,
       rBy = sB * pf[f + 2]! + cB * pf[f + 3]!;
-    let vAx = sb[oA + BS2_VX]!,
-      vAy = sb[oA + BS2_VY]!,
-      wA = sb[oA + BS2_W]!,
-      vBx = sb[oB + BS2_VX]!,
-      vBy = sb[oB + BS2_VY]!,
-      wB = sb[oB + BS2_W]!;
+    let vAx = sb[oA + BS.BS2_VX]!,
+      vAy = sb[oA + BS.BS2_VY]!,
+      wA = sb[oA + BS.BS2_W]!,
+      vBx = sb[oB + BS.BS2_VX]!,
+      vBy = sb[oB + BS.BS2_VY]!,
+      wB = sb[oB + BS.BS2_W]!;
     const cdx = vBx - wB * rBy - vAx + wA * rAy,
       cdy = vBy + wB * rBx - vAy - wA * rAx;
     let bx = 0,
       by = 0;
     if (useBias) {
-      bx = jb * (sb[oB + BS2_DX]! - sb[oA + BS2_DX]! + pf[f + 4]! + rBx - rAx);
-      by = jb * (sb[oB + BS2_DY]! - sb[oA + BS2_DY]! + pf[f + 5]! + rBy - rAy);
+      bx = jb * (sb[oB + BS.BS2_DX]! - sb[oA + BS.BS2_DX]! + pf[f + 4]! + rBx - rAx);
+      by = jb * (sb[oB + BS.BS2_DY]! - sb[oA + BS.BS2_DY]! + pf[f + 5]! + rBy - rAy);
     }
     const k11 = mA + mB + rAy * rAy * iA + rBy * rBy * iB;
     const k12 = -rAy * rAx * iA - rBy * rBx * iB;
@@ -262,14 +230,14 @@ export function solvePins(world: PhysicsWorld, useBias: boolean): void {
     vBx += mB * ix;
     vBy += mB * iy;
     wB += iB * (rBx * iy - rBy * ix);
-    sb[oA + BS2_VX] = vAx;
-    sb[oA + BS2_VY] = vAy;
-    sb[oA + BS2_W] = wA;
-    sb[oA + BS2_PUSHED] = 1;
-    sb[oB + BS2_VX] = vBx;
-    sb[oB + BS2_VY] = vBy;
-    sb[oB + BS2_W] = wB;
-    sb[oB + BS2_PUSHED] = 1;
+    sb[oA + BS.BS2_VX] = vAx;
+    sb[oA + BS.BS2_VY] = vAy;
+    sb[oA + BS.BS2_W] = wA;
+    sb[oA + BS.BS2_PUSHED] = 1;
+    sb[oB + BS.BS2_VX] = vBx;
+    sb[oB + BS.BS2_VY] = vBy;
+    sb[oB + BS.BS2_W] = wB;
+    sb[oB + BS.BS2_PUSHED] = 1;
   }
 }
 
@@ -281,7 +249,7 @@ export function finishPins(js: JointState): void {
   for (let l = 0, m = js.pinCount; l < m; l++) {
     const f = l * PIN_FLOATS,
       o = pint[l * PIN_INTS + 2]! * ROW_FLOATS;
-    rows[o + ILX] = pf[f + 6]!;
-    rows[o + ILY] = pf[f + 7]!;
+    rows[o + R.ILX] = pf[f + 6]!;
+    rows[o + R.ILY] = pf[f + 7]!;
   }
 }

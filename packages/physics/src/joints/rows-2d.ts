@@ -1,47 +1,5 @@
 import { JointFlag } from '../world/joint-store-2d.js';
-import {
-  AXX,
-  AXY,
-  F_CA,
-  F_DX,
-  F_DY,
-  F_IA,
-  F_IB,
-  F_INVH,
-  F_MA,
-  F_MB,
-  F_RAX,
-  F_RAY,
-  F_RBX,
-  F_RBY,
-  F_REL,
-  F_SA,
-  F_VAX,
-  F_VAY,
-  F_VBX,
-  F_VBY,
-  F_WA,
-  F_WB,
-  IANG,
-  ILOW,
-  ILX,
-  ILY,
-  IMOT,
-  ISPR,
-  IUP,
-  JB,
-  JI,
-  JM,
-  KAX,
-  KMOT,
-  LOW,
-  MMAX,
-  MSPD,
-  ROW_PUSHED,
-  SB,
-  SM,
-  UP,
-} from './layout-2d.js';
+import * as R from './layout-2d.js';
 
 /**
  * The row code the 2D joint types share, on the frame of the row being solved (layout-2d.ts F_*): the
@@ -84,9 +42,9 @@ export function limitRow(
     is = 0;
   if (C > 0) bias = C * invH;
   else if (useBias) {
-    bias = rows[o + JB]! * C;
-    ms = rows[o + JM]!;
-    is = rows[o + JI]!;
+    bias = rows[o + R.JB]! * C;
+    ms = rows[o + R.JM]!;
+    is = rows[o + R.JI]!;
   }
   const old = rows[o + slot]!;
   let next = old - ms * k * (cdot + bias) - is * old;
@@ -101,20 +59,20 @@ export function limitRow(
  * they only remove relative velocity. Reads and writes the frame's velocities.
  */
 export function solvePointBlock(rows: Float64Array, o: number, f: Float64Array, soft: boolean): void {
-  const mA = f[F_MA]!,
-    iA = f[F_IA]!,
-    mB = f[F_MB]!,
-    iB = f[F_IB]!;
-  const rAx = f[F_RAX]!,
-    rAy = f[F_RAY]!,
-    rBx = f[F_RBX]!,
-    rBy = f[F_RBY]!;
-  let vAx = f[F_VAX]!,
-    vAy = f[F_VAY]!,
-    wA = f[F_WA]!,
-    vBx = f[F_VBX]!,
-    vBy = f[F_VBY]!,
-    wB = f[F_WB]!;
+  const mA = f[R.F_MA]!,
+    iA = f[R.F_IA]!,
+    mB = f[R.F_MB]!,
+    iB = f[R.F_IB]!;
+  const rAx = f[R.F_RAX]!,
+    rAy = f[R.F_RAY]!,
+    rBx = f[R.F_RBX]!,
+    rBy = f[R.F_RBY]!;
+  let vAx = f[R.F_VAX]!,
+    vAy = f[R.F_VAY]!,
+    wA = f[R.F_WA]!,
+    vBx = f[R.F_VBX]!,
+    vBy = f[R.F_VBY]!,
+    wB = f[R.F_WB]!;
   const cdx = vBx - wB * rBy - vAx + wA * rAy,
     cdy = vBy + wB * rBx - vAy - wA * rAx;
   let bx = 0,
@@ -122,10 +80,10 @@ export function solvePointBlock(rows: Float64Array, o: number, f: Float64Array, 
     ms = 1,
     is = 0;
   if (soft) {
-    bx = rows[o + JB]! * f[F_DX]!;
-    by = rows[o + JB]! * f[F_DY]!;
-    ms = rows[o + JM]!;
-    is = rows[o + JI]!;
+    bx = rows[o + R.JB]! * f[R.F_DX]!;
+    by = rows[o + R.JB]! * f[R.F_DY]!;
+    ms = rows[o + R.JM]!;
+    is = rows[o + R.JI]!;
   }
   const k11 = mA + mB + rAy * rAy * iA + rBy * rBy * iB;
   const k12 = -rAy * rAx * iA - rBy * rBx * iB;
@@ -136,22 +94,22 @@ export function solvePointBlock(rows: Float64Array, o: number, f: Float64Array, 
     ey = cdy + by;
   const sx = det * (k22 * ex - k12 * ey),
     sy = det * (k11 * ey - k12 * ex);
-  const ix = -ms * sx - is * rows[o + ILX]!,
-    iy = -ms * sy - is * rows[o + ILY]!;
-  rows[o + ILX] = rows[o + ILX]! + ix;
-  rows[o + ILY] = rows[o + ILY]! + iy;
+  const ix = -ms * sx - is * rows[o + R.ILX]!,
+    iy = -ms * sy - is * rows[o + R.ILY]!;
+  rows[o + R.ILX] = rows[o + R.ILX]! + ix;
+  rows[o + R.ILY] = rows[o + R.ILY]! + iy;
   vAx -= mA * ix;
   vAy -= mA * iy;
   wA -= iA * (rAx * iy - rAy * ix);
   vBx += mB * ix;
   vBy += mB * iy;
   wB += iB * (rBx * iy - rBy * ix);
-  f[F_VAX] = vAx;
-  f[F_VAY] = vAy;
-  f[F_WA] = wA;
-  f[F_VBX] = vBx;
-  f[F_VBY] = vBy;
-  f[F_WB] = wB;
+  f[R.F_VAX] = vAx;
+  f[R.F_VAY] = vAy;
+  f[R.F_WA] = wA;
+  f[R.F_VBX] = vBx;
+  f[R.F_VBY] = vBy;
+  f[R.F_WB] = wB;
 }
 
 /**
@@ -161,48 +119,48 @@ export function solvePointBlock(rows: Float64Array, o: number, f: Float64Array, 
  * angle, a 2 x 2 block (prismatic). Reads and writes the frame's velocities. @returns ROW_PUSHED.
  */
 export function solveAxisRow(rows: Float64Array, o: number, flags: number, useBias: boolean, f: Float64Array, prismatic: boolean): number {
-  const mA = f[F_MA]!,
-    iA = f[F_IA]!,
-    mB = f[F_MB]!,
-    iB = f[F_IB]!;
-  const rAx = f[F_RAX]!,
-    rAy = f[F_RAY]!,
-    rBx = f[F_RBX]!,
-    rBy = f[F_RBY]!;
-  const dx = f[F_DX]!,
-    dy = f[F_DY]!;
-  const cA = f[F_CA]!,
-    sA = f[F_SA]!;
-  const invH = f[F_INVH]!;
-  let vAx = f[F_VAX]!,
-    vAy = f[F_VAY]!,
-    wA = f[F_WA]!,
-    vBx = f[F_VBX]!,
-    vBy = f[F_VBY]!,
-    wB = f[F_WB]!;
+  const mA = f[R.F_MA]!,
+    iA = f[R.F_IA]!,
+    mB = f[R.F_MB]!,
+    iB = f[R.F_IB]!;
+  const rAx = f[R.F_RAX]!,
+    rAy = f[R.F_RAY]!,
+    rBx = f[R.F_RBX]!,
+    rBy = f[R.F_RBY]!;
+  const dx = f[R.F_DX]!,
+    dy = f[R.F_DY]!;
+  const cA = f[R.F_CA]!,
+    sA = f[R.F_SA]!;
+  const invH = f[R.F_INVH]!;
+  let vAx = f[R.F_VAX]!,
+    vAy = f[R.F_VAY]!,
+    wA = f[R.F_WA]!,
+    vBx = f[R.F_VBX]!,
+    vBy = f[R.F_VBY]!,
+    wB = f[R.F_WB]!;
   const fixedRotation = iA + iB === 0;
-  const axx = cA * rows[o + AXX]! - sA * rows[o + AXY]!,
-    axy = sA * rows[o + AXX]! + cA * rows[o + AXY]!;
+  const axx = cA * rows[o + R.AXX]! - sA * rows[o + R.AXY]!,
+    axy = sA * rows[o + R.AXX]! + cA * rows[o + R.AXY]!;
   const translation = axx * dx + axy * dy;
   const a1 = (dx + rAx) * axy - (dy + rAy) * axx,
     a2 = rBx * axy - rBy * axx;
-  const kax = rows[o + KAX]!;
+  const kax = rows[o + R.KAX]!;
   const kA = iA * a1,
     kB = iB * a2;
   // Axial impulses: P = lambda axis on B (minus on A), angular lambda a1 on A and lambda a2 on B.
   if (!prismatic && flags & JointFlag.Motor && !fixedRotation) {
-    const max = rows[o + MMAX]!;
-    const old = rows[o + IMOT]!;
-    let next = old - rows[o + KMOT]! * (wB - wA - rows[o + MSPD]!);
+    const max = rows[o + R.MMAX]!;
+    const old = rows[o + R.IMOT]!;
+    let next = old - rows[o + R.KMOT]! * (wB - wA - rows[o + R.MSPD]!);
     next = next < -max ? -max : next > max ? max : next;
-    rows[o + IMOT] = next;
+    rows[o + R.IMOT] = next;
     wA -= iA * (next - old);
     wB += iB * (next - old);
   }
   if (flags & JointFlag.Spring) {
     const cdot = axx * (vBx - vAx) + axy * (vBy - vAy) + a2 * wB - a1 * wA;
-    const impulse = springImpulse(cdot, translation, mA + mB + kA * a1 + kB * a2, rows[o + ISPR]!, rows[o + SB]!, rows[o + SM]!);
-    rows[o + ISPR] = rows[o + ISPR]! + impulse;
+    const impulse = springImpulse(cdot, translation, mA + mB + kA * a1 + kB * a2, rows[o + R.ISPR]!, rows[o + R.SB]!, rows[o + R.SM]!);
+    rows[o + R.ISPR] = rows[o + R.ISPR]! + impulse;
     vAx -= mA * impulse * axx;
     vAy -= mA * impulse * axy;
     wA -= kA * impulse;
@@ -212,11 +170,11 @@ export function solveAxisRow(rows: Float64Array, o: number, flags: number, useBi
   }
   if (prismatic && flags & JointFlag.Motor) {
     const cdot = axx * (vBx - vAx) + axy * (vBy - vAy) + a2 * wB - a1 * wA;
-    const max = rows[o + MMAX]!;
-    const old = rows[o + IMOT]!;
-    let next = old + kax * (rows[o + MSPD]! - cdot);
+    const max = rows[o + R.MMAX]!;
+    const old = rows[o + R.IMOT]!;
+    let next = old + kax * (rows[o + R.MSPD]! - cdot);
     next = next < -max ? -max : next > max ? max : next;
-    rows[o + IMOT] = next;
+    rows[o + R.IMOT] = next;
     const impulse = next - old;
     vAx -= mA * impulse * axx;
     vAy -= mA * impulse * axy;
@@ -229,9 +187,9 @@ export function solveAxisRow(rows: Float64Array, o: number, flags: number, useBi
     for (let side = 0; side < 2; side++) {
       // Lower: C = translation - lower >= 0. Upper (signs flipped): C = upper - translation >= 0.
       const sign = side === 0 ? 1 : -1;
-      const C = side === 0 ? translation - rows[o + LOW]! : rows[o + UP]! - translation;
+      const C = side === 0 ? translation - rows[o + R.LOW]! : rows[o + R.UP]! - translation;
       const cdot = sign * (axx * (vBx - vAx) + axy * (vBy - vAy) + a2 * wB - a1 * wA);
-      const impulse = sign * limitRow(rows, o, side === 0 ? ILOW : IUP, C, kax, cdot, invH, useBias);
+      const impulse = sign * limitRow(rows, o, side === 0 ? R.ILOW : R.IUP, C, kax, cdot, invH, useBias);
       vAx -= mA * impulse * axx;
       vAy -= mA * impulse * axy;
       wA -= kA * impulse;
@@ -240,14 +198,14 @@ export function solveAxisRow(rows: Float64Array, o: number, flags: number, useBi
       wB += kB * impulse;
     }
   }
-  f[F_VAX] = vAx;
-  f[F_VAY] = vAy;
-  f[F_WA] = wA;
-  f[F_VBX] = vBx;
-  f[F_VBY] = vBy;
-  f[F_WB] = wB;
+  f[R.F_VAX] = vAx;
+  f[R.F_VAY] = vAy;
+  f[R.F_WA] = wA;
+  f[R.F_VBX] = vBx;
+  f[R.F_VBY] = vBy;
+  f[R.F_WB] = wB;
   solveAcrossAxis(rows, o, useBias, f, prismatic, axx, axy);
-  return ROW_PUSHED;
+  return R.ROW_PUSHED;
 }
 
 /**
@@ -264,22 +222,22 @@ function solveAcrossAxis(
   axx: number,
   axy: number,
 ): void {
-  const mA = f[F_MA]!,
-    iA = f[F_IA]!,
-    mB = f[F_MB]!,
-    iB = f[F_IB]!;
-  const rAx = f[F_RAX]!,
-    rAy = f[F_RAY]!,
-    rBx = f[F_RBX]!,
-    rBy = f[F_RBY]!;
-  const dx = f[F_DX]!,
-    dy = f[F_DY]!;
-  let vAx = f[F_VAX]!,
-    vAy = f[F_VAY]!,
-    wA = f[F_WA]!,
-    vBx = f[F_VBX]!,
-    vBy = f[F_VBY]!,
-    wB = f[F_WB]!;
+  const mA = f[R.F_MA]!,
+    iA = f[R.F_IA]!,
+    mB = f[R.F_MB]!,
+    iB = f[R.F_IB]!;
+  const rAx = f[R.F_RAX]!,
+    rAy = f[R.F_RAY]!,
+    rBx = f[R.F_RBX]!,
+    rBy = f[R.F_RBY]!;
+  const dx = f[R.F_DX]!,
+    dy = f[R.F_DY]!;
+  let vAx = f[R.F_VAX]!,
+    vAy = f[R.F_VAY]!,
+    wA = f[R.F_WA]!,
+    vBx = f[R.F_VBX]!,
+    vBy = f[R.F_VBY]!,
+    wB = f[R.F_WB]!;
   // Perpendicular to the axis (and, for prismatic, the relative angle).
   const pxx = -axy,
     pxy = axx;
@@ -291,10 +249,10 @@ function solveAcrossAxis(
     b1 = 0,
     b2 = 0;
   if (useBias) {
-    ms = rows[o + JM]!;
-    is = rows[o + JI]!;
-    b1 = rows[o + JB]! * (pxx * dx + pxy * dy);
-    b2 = rows[o + JB]! * f[F_REL]!;
+    ms = rows[o + R.JM]!;
+    is = rows[o + R.JI]!;
+    b1 = rows[o + R.JB]! * (pxx * dx + pxy * dy);
+    b2 = rows[o + R.JB]! * f[R.F_REL]!;
   }
   const k11 = mA + mB + iA * s1 * s1 + iB * s2 * s2;
   if (prismatic) {
@@ -307,10 +265,10 @@ function solveAcrossAxis(
       e2 = wB - wA + b2;
     const x1 = det * (k22 * e1 - k12 * e2),
       x2 = det * (k11 * e2 - k12 * e1);
-    const i1 = -ms * x1 - is * rows[o + ILX]!,
-      i2 = -ms * x2 - is * rows[o + IANG]!;
-    rows[o + ILX] = rows[o + ILX]! + i1;
-    rows[o + IANG] = rows[o + IANG]! + i2;
+    const i1 = -ms * x1 - is * rows[o + R.ILX]!,
+      i2 = -ms * x2 - is * rows[o + R.IANG]!;
+    rows[o + R.ILX] = rows[o + R.ILX]! + i1;
+    rows[o + R.IANG] = rows[o + R.IANG]! + i2;
     const Px = i1 * pxx,
       Py = i1 * pxy;
     vAx -= mA * Px;
@@ -321,8 +279,8 @@ function solveAcrossAxis(
     wB += iB * (i1 * s2 + i2);
   } else {
     const mass = k11 > 0 ? 1 / k11 : 0;
-    const i1 = -ms * mass * (cd1 + b1) - is * rows[o + ILX]!;
-    rows[o + ILX] = rows[o + ILX]! + i1;
+    const i1 = -ms * mass * (cd1 + b1) - is * rows[o + R.ILX]!;
+    rows[o + R.ILX] = rows[o + R.ILX]! + i1;
     const Px = i1 * pxx,
       Py = i1 * pxy;
     vAx -= mA * Px;
@@ -332,12 +290,12 @@ function solveAcrossAxis(
     vBy += mB * Py;
     wB += iB * i1 * s2;
   }
-  f[F_VAX] = vAx;
-  f[F_VAY] = vAy;
-  f[F_WA] = wA;
-  f[F_VBX] = vBx;
-  f[F_VBY] = vBy;
-  f[F_WB] = wB;
+  f[R.F_VAX] = vAx;
+  f[R.F_VAY] = vAy;
+  f[R.F_WA] = wA;
+  f[R.F_VBX] = vBx;
+  f[R.F_VBY] = vBy;
+  f[R.F_WB] = wB;
 }
 
 /**

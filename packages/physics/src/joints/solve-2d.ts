@@ -1,55 +1,9 @@
-import {
-  BS2_DX,
-  BS2_DY,
-  BS2_INV_INERTIA,
-  BS2_INV_MASS,
-  BS2_PUSHED,
-  BS2_STRIDE,
-  BS2_VX,
-  BS2_VY,
-  BS2_W,
-} from '../solver/body-state-layout.js';
+import * as BS from '../solver/body-state-layout.js';
 import { JointType } from '../world/joint-store-2d.js';
 import { ROW_FLOATS, ROW_INTS } from '../world/joint-strides-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { solveDistanceRow, solvePointLinks } from './distance-joint.js';
-import {
-  DANG,
-  DCX,
-  DCY,
-  F_CA,
-  F_DX,
-  F_DY,
-  F_IA,
-  F_IB,
-  F_INVH,
-  F_MA,
-  F_MB,
-  F_RAX,
-  F_RAY,
-  F_RBX,
-  F_RBY,
-  F_REL,
-  F_SA,
-  F_VAX,
-  F_VAY,
-  F_VBX,
-  F_VBY,
-  F_WA,
-  F_WB,
-  FRAME_SIZE,
-  IA,
-  IB,
-  PIN,
-  POINT_LINK,
-  RAX,
-  RAY,
-  RBX,
-  RBY,
-  ROW_PUSHED,
-  ROW_SKIPPED,
-  TF,
-} from './layout-2d.js';
+import * as R from './layout-2d.js';
 import { solveMouseRow } from './mouse-joint.js';
 import { solvePins, solveRevoluteRow } from './revolute-joint.js';
 import { solveAxisRow } from './rows-2d.js';
@@ -63,7 +17,7 @@ import { solveWeldRow } from './weld-joint.js';
  */
 
 /** The frame of the row being solved (layout-2d.ts F_*). */
-const frame = new Float64Array(FRAME_SIZE);
+const frame = new Float64Array(R.FRAME_SIZE);
 
 /**
  * Passes over every joint row (sequential impulses): `world.joints.settings.iterations` with `useBias`,
@@ -97,66 +51,66 @@ function solveJointRows(world: PhysicsWorld, hs: number, useBias: boolean): void
   for (let r = 0, end = js.generalCount === 0 ? 0 : n; r < end; r++) {
     const o = r * ROW_FLOATS,
       q = r * ROW_INTS;
-    const ia = ri[q + IA]!,
-      ib = ri[q + IB]!,
-      tf = ri[q + TF]!;
+    const ia = ri[q + R.IA]!,
+      ib = ri[q + R.IB]!,
+      tf = ri[q + R.TF]!;
     const type = tf & 255,
       flags = tf >> 8;
-    if (type === POINT_LINK || type === PIN) continue;
-    const oA = ia * BS2_STRIDE,
-      oB = ib * BS2_STRIDE;
-    f[F_MA] = sb[oA + BS2_INV_MASS]!;
-    f[F_IA] = sb[oA + BS2_INV_INERTIA]!;
-    f[F_MB] = sb[oB + BS2_INV_MASS]!;
-    f[F_IB] = sb[oB + BS2_INV_INERTIA]!;
-    f[F_VAX] = sb[oA + BS2_VX]!;
-    f[F_VAY] = sb[oA + BS2_VY]!;
-    f[F_WA] = sb[oA + BS2_W]!;
-    f[F_VBX] = sb[oB + BS2_VX]!;
-    f[F_VBY] = sb[oB + BS2_VY]!;
-    f[F_WB] = sb[oB + BS2_W]!;
+    if (type === R.POINT_LINK || type === R.PIN) continue;
+    const oA = ia * BS.BS2_STRIDE,
+      oB = ib * BS.BS2_STRIDE;
+    f[R.F_MA] = sb[oA + BS.BS2_INV_MASS]!;
+    f[R.F_IA] = sb[oA + BS.BS2_INV_INERTIA]!;
+    f[R.F_MB] = sb[oB + BS.BS2_INV_MASS]!;
+    f[R.F_IB] = sb[oB + BS.BS2_INV_INERTIA]!;
+    f[R.F_VAX] = sb[oA + BS.BS2_VX]!;
+    f[R.F_VAY] = sb[oA + BS.BS2_VY]!;
+    f[R.F_WA] = sb[oA + BS.BS2_W]!;
+    f[R.F_VBX] = sb[oB + BS.BS2_VX]!;
+    f[R.F_VBY] = sb[oB + BS.BS2_VY]!;
+    f[R.F_WB] = sb[oB + BS.BS2_W]!;
     const cA = rot[ia * 3]!,
       sA = rot[ia * 3 + 1]!,
       cB = rot[ib * 3]!,
       sB = rot[ib * 3 + 1]!;
-    const rAx = cA * rows[o + RAX]! - sA * rows[o + RAY]!,
-      rAy = sA * rows[o + RAX]! + cA * rows[o + RAY]!;
-    const rBx = cB * rows[o + RBX]! - sB * rows[o + RBY]!,
-      rBy = sB * rows[o + RBX]! + cB * rows[o + RBY]!;
-    f[F_RAX] = rAx;
-    f[F_RAY] = rAy;
-    f[F_RBX] = rBx;
-    f[F_RBY] = rBy;
+    const rAx = cA * rows[o + R.RAX]! - sA * rows[o + R.RAY]!,
+      rAy = sA * rows[o + R.RAX]! + cA * rows[o + R.RAY]!;
+    const rBx = cB * rows[o + R.RBX]! - sB * rows[o + R.RBY]!,
+      rBy = sB * rows[o + R.RBX]! + cB * rows[o + R.RBY]!;
+    f[R.F_RAX] = rAx;
+    f[R.F_RAY] = rAy;
+    f[R.F_RBX] = rBx;
+    f[R.F_RBY] = rBy;
     // Current separation of the anchors, B minus A.
-    f[F_DX] = sb[oB + BS2_DX]! - sb[oA + BS2_DX]! + rows[o + DCX]! + rBx - rAx;
-    f[F_DY] = sb[oB + BS2_DY]! - sb[oA + BS2_DY]! + rows[o + DCY]! + rBy - rAy;
-    f[F_CA] = cA;
-    f[F_SA] = sA;
+    f[R.F_DX] = sb[oB + BS.BS2_DX]! - sb[oA + BS.BS2_DX]! + rows[o + R.DCX]! + rBx - rAx;
+    f[R.F_DY] = sb[oB + BS.BS2_DY]! - sb[oA + BS.BS2_DY]! + rows[o + R.DCY]! + rBy - rAy;
+    f[R.F_CA] = cA;
+    f[R.F_SA] = sA;
     // Relative angle since the joint was made, minus the reference.
-    f[F_REL] = rows[o + DANG]! + rot[ib * 3 + 2]! - rot[ia * 3 + 2]!;
-    f[F_INVH] = invH;
-    let done = ROW_PUSHED;
+    f[R.F_REL] = rows[o + R.DANG]! + rot[ib * 3 + 2]! - rot[ia * 3 + 2]!;
+    f[R.F_INVH] = invH;
+    let done = R.ROW_PUSHED;
     if (type === JointType.Distance) done = solveDistanceRow(rows, o, flags, useBias, f);
     else if (type === JointType.Revolute) done = solveRevoluteRow(rows, o, flags, useBias, f);
     else if (type === JointType.Weld) done = solveWeldRow(rows, o, flags, useBias, f);
     else if (type === JointType.Prismatic || type === JointType.Wheel)
       done = solveAxisRow(rows, o, flags, useBias, f, type === JointType.Prismatic);
     else if (type === JointType.Mouse) done = solveMouseRow(rows, o, flags, useBias, f);
-    if (done === ROW_SKIPPED) continue;
-    sb[oA + BS2_VX] = f[F_VAX]!;
-    sb[oA + BS2_VY] = f[F_VAY]!;
-    sb[oA + BS2_W] = f[F_WA]!;
-    sb[oB + BS2_VX] = f[F_VBX]!;
-    sb[oB + BS2_VY] = f[F_VBY]!;
-    sb[oB + BS2_W] = f[F_WB]!;
+    if (done === R.ROW_SKIPPED) continue;
+    sb[oA + BS.BS2_VX] = f[R.F_VAX]!;
+    sb[oA + BS.BS2_VY] = f[R.F_VAY]!;
+    sb[oA + BS.BS2_W] = f[R.F_WA]!;
+    sb[oB + BS.BS2_VX] = f[R.F_VBX]!;
+    sb[oB + BS.BS2_VY] = f[R.F_VBY]!;
+    sb[oB + BS.BS2_W] = f[R.F_WB]!;
     // The joint pushes its bodies (the contact solver's `pushed` slot: they are not in free flight).
-    if (done === ROW_PUSHED) {
-      sb[oA + BS2_PUSHED] = 1;
-      sb[oB + BS2_PUSHED] = 1;
+    if (done === R.ROW_PUSHED) {
+      sb[oA + BS.BS2_PUSHED] = 1;
+      sb[oB + BS.BS2_PUSHED] = 1;
     }
   }
   // The static world's row must stay at rest whatever a fixed body's joint wrote into it.
-  sb[BS2_VX] = 0;
-  sb[BS2_VY] = 0;
-  sb[BS2_W] = 0;
+  sb[BS.BS2_VX] = 0;
+  sb[BS.BS2_VY] = 0;
+  sb[BS.BS2_W] = 0;
 }

@@ -2,37 +2,7 @@ import { assertKnownKeys, assertNonNegative } from '../validation/validate.js';
 import { JointFlag, JointType } from '../world/joint-store-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { BASE_KEYS, centre, checkEnds, handle, type JointBaseOptions, makeJoint, optionalPoint } from './joint-2d.js';
-import {
-  AB,
-  AI,
-  AM,
-  F_DX,
-  F_DY,
-  F_IA,
-  F_IB,
-  F_MA,
-  F_MB,
-  F_RAX,
-  F_RAY,
-  F_RBX,
-  F_RBY,
-  F_REL,
-  F_VAX,
-  F_VAY,
-  F_VBX,
-  F_VBY,
-  F_WA,
-  F_WB,
-  IANG,
-  ILX,
-  ILY,
-  JB,
-  JI,
-  JM,
-  KAX,
-  ROW_PUSHED,
-  WELD_ANGULAR_SOFT,
-} from './layout-2d.js';
+import * as R from './layout-2d.js';
 import { solvePointBlock } from './rows-2d.js';
 
 /**
@@ -89,28 +59,28 @@ export function addWeldJoint(world: PhysicsWorld, options: WeldJointOptions): nu
  * has a linear spring, or while `useBias`). @returns ROW_PUSHED.
  */
 export function solveWeldRow(rows: Float64Array, o: number, flags: number, useBias: boolean, f: Float64Array): number {
-  const iA = f[F_IA]!,
-    iB = f[F_IB]!;
-  if (flags & WELD_ANGULAR_SOFT && flags & JointFlag.Spring && iA + iB !== 0 && solveSoftWeld(rows, o, f)) return ROW_PUSHED;
-  const kax = rows[o + KAX]!;
-  let wA = f[F_WA]!,
-    wB = f[F_WB]!;
+  const iA = f[R.F_IA]!,
+    iB = f[R.F_IB]!;
+  if (flags & R.WELD_ANGULAR_SOFT && flags & JointFlag.Spring && iA + iB !== 0 && solveSoftWeld(rows, o, f)) return R.ROW_PUSHED;
+  const kax = rows[o + R.KAX]!;
+  let wA = f[R.F_WA]!,
+    wB = f[R.F_WB]!;
   let bias = 0,
     ms = 1,
     is = 0;
-  if (useBias || flags & WELD_ANGULAR_SOFT) {
-    bias = rows[o + AB]! * f[F_REL]!;
-    ms = rows[o + AM]!;
-    is = rows[o + AI]!;
+  if (useBias || flags & R.WELD_ANGULAR_SOFT) {
+    bias = rows[o + R.AB]! * f[R.F_REL]!;
+    ms = rows[o + R.AM]!;
+    is = rows[o + R.AI]!;
   }
-  const impulse = -ms * kax * (wB - wA + bias) - is * rows[o + IANG]!;
-  rows[o + IANG] = rows[o + IANG]! + impulse;
+  const impulse = -ms * kax * (wB - wA + bias) - is * rows[o + R.IANG]!;
+  rows[o + R.IANG] = rows[o + R.IANG]! + impulse;
   wA -= iA * impulse;
   wB += iB * impulse;
-  f[F_WA] = wA;
-  f[F_WB] = wB;
+  f[R.F_WA] = wA;
+  f[R.F_WB] = wB;
   solvePointBlock(rows, o, f, useBias || (flags & JointFlag.Spring) !== 0);
-  return ROW_PUSHED;
+  return R.ROW_PUSHED;
 }
 
 /**
@@ -128,36 +98,36 @@ export function solveWeldRow(rows: Float64Array, o: number, flags: number, useBi
  * the row-by-row update.
  */
 function solveSoftWeld(rows: Float64Array, o: number, f: Float64Array): boolean {
-  const msL = rows[o + JM]!,
-    msA = rows[o + AM]!;
+  const msL = rows[o + R.JM]!,
+    msA = rows[o + R.AM]!;
   if (!(msL > 0 && msA > 0)) return false;
-  const mA0 = f[F_MA]!,
-    iA0 = f[F_IA]!,
-    mB0 = f[F_MB]!,
-    iB0 = f[F_IB]!;
-  const rAx = f[F_RAX]!,
-    rAy = f[F_RAY]!,
-    rBx = f[F_RBX]!,
-    rBy = f[F_RBY]!;
-  const dx = f[F_DX]!,
-    dy = f[F_DY]!,
-    relAngle = f[F_REL]!;
+  const mA0 = f[R.F_MA]!,
+    iA0 = f[R.F_IA]!,
+    mB0 = f[R.F_MB]!,
+    iB0 = f[R.F_IB]!;
+  const rAx = f[R.F_RAX]!,
+    rAy = f[R.F_RAY]!,
+    rBx = f[R.F_RBX]!,
+    rBy = f[R.F_RBY]!;
+  const dx = f[R.F_DX]!,
+    dy = f[R.F_DY]!,
+    relAngle = f[R.F_REL]!;
   // The linear spring's reference: half the trace of its 2 x 2 block of A, which no rotation changes,
   // so the spring has a potential (k |separation|^2 / 2 with k = omega^2 / aRef) and cannot do work
   // around a closed path; the block itself turns with the anchors. impulseScale / massScale = 1 / a.
   const aRef = mA0 + mB0 + 0.5 * (iA0 * (rAx * rAx + rAy * rAy) + iB0 * (rBx * rBx + rBy * rBy));
-  const gL = (aRef * rows[o + JI]!) / msL,
-    gA = ((iA0 + iB0) * rows[o + AI]!) / msA;
+  const gL = (aRef * rows[o + R.JI]!) / msL,
+    gA = ((iA0 + iB0) * rows[o + R.AI]!) / msA;
   const mA = mA0,
     iA = iA0,
     mB = mB0,
     iB = iB0;
-  const vAx = f[F_VAX]!,
-    vAy = f[F_VAY]!,
-    wA = f[F_WA]!,
-    vBx = f[F_VBX]!,
-    vBy = f[F_VBY]!,
-    wB = f[F_WB]!;
+  const vAx = f[R.F_VAX]!,
+    vAy = f[R.F_VAY]!,
+    wA = f[R.F_WA]!,
+    vBx = f[R.F_VBX]!,
+    vBy = f[R.F_VBY]!,
+    wB = f[R.F_WB]!;
   // A = J M^-1 J^T for the rows (x, y, angle); Box2D v2's weld matrix.
   const a11 = mA + mB + rAy * rAy * iA + rBy * rBy * iB,
     a12 = -rAy * rAx * iA - rBy * rBx * iB,
@@ -165,15 +135,15 @@ function solveSoftWeld(rows: Float64Array, o: number, f: Float64Array): boolean 
     a13 = -rAy * iA - rBy * iB,
     a23 = rAx * iA + rBx * iB,
     a33 = iA + iB;
-  const lx = rows[o + ILX]!,
-    ly = rows[o + ILY]!,
-    lt = rows[o + IANG]!;
+  const lx = rows[o + R.ILX]!,
+    ly = rows[o + R.ILY]!,
+    lt = rows[o + R.IANG]!;
   const m11 = a11 + gL,
     m12 = a12,
     m22 = a22 + gL,
     m33 = a33 + gA;
-  const bL = rows[o + JB]!,
-    bA = rows[o + AB]!;
+  const bL = rows[o + R.JB]!,
+    bA = rows[o + R.AB]!;
   const r1 = -(vBx - wB * rBy - vAx + wA * rAy + bL * dx + gL * lx),
     r2 = -(vBy + wB * rBx - vAy - wA * rAx + bL * dy + gL * ly),
     r3 = -(wB - wA + bA * relAngle + gA * lt);
@@ -191,14 +161,14 @@ function solveSoftWeld(rows: Float64Array, o: number, f: Float64Array): boolean 
     iy = inv * (c12 * r1 + c22 * r2 + c23 * r3),
     it = inv * (c13 * r1 + c23 * r2 + c33 * r3);
   if (!(Number.isFinite(ix) && Number.isFinite(iy) && Number.isFinite(it))) return false;
-  rows[o + ILX] = lx + ix;
-  rows[o + ILY] = ly + iy;
-  rows[o + IANG] = lt + it;
-  f[F_VAX] = vAx - mA * ix;
-  f[F_VAY] = vAy - mA * iy;
-  f[F_WA] = wA - iA * (rAx * iy - rAy * ix + it);
-  f[F_VBX] = vBx + mB * ix;
-  f[F_VBY] = vBy + mB * iy;
-  f[F_WB] = wB + iB * (rBx * iy - rBy * ix + it);
+  rows[o + R.ILX] = lx + ix;
+  rows[o + R.ILY] = ly + iy;
+  rows[o + R.IANG] = lt + it;
+  f[R.F_VAX] = vAx - mA * ix;
+  f[R.F_VAY] = vAy - mA * iy;
+  f[R.F_WA] = wA - iA * (rAx * iy - rAy * ix + it);
+  f[R.F_VBX] = vBx + mB * ix;
+  f[R.F_VBY] = vBy + mB * iy;
+  f[R.F_WB] = wB + iB * (rBx * iy - rBy * ix + it);
   return true;
 }

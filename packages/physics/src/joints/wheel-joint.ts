@@ -1,20 +1,6 @@
-import { assertKnownKeys } from '../validation/validate.js';
 import { JointType } from '../world/joint-store-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
-import {
-  BASE_KEYS,
-  centre,
-  checkDrive,
-  checkEnds,
-  checkLimits,
-  handle,
-  type JointBaseOptions,
-  makeJoint,
-  optionalPoint,
-  setAxis,
-  storeDrive,
-  unitAxis,
-} from './joint-2d.js';
+import { type AxisJointKind, addAxisJoint, BASE_KEYS, type JointBaseOptions } from './joint-2d.js';
 
 /**
  * The 2D wheel joint (a suspension spring along an axis, free rotation with an optional motor): its options
@@ -52,29 +38,16 @@ export interface WheelJointOptions extends JointBaseOptions {
  * @category Joints and ropes
  */
 export function addWheelJoint(world: PhysicsWorld, options: WheelJointOptions): number {
-  const where = 'addWheelJoint';
-  const ends = checkEnds(where, world, options);
-  assertKnownKeys(
-    where,
-    options,
-    [...BASE_KEYS, 'anchor', 'axis', 'hertz', 'dampingRatio', 'lower', 'upper', 'motorSpeed', 'maxMotorTorque'],
-    ['a'],
-  );
-  const p = optionalPoint(where, 'anchor', options.anchor, centre(world, ends.b));
-  const axis = unitAxis(where, options.axis, [0, 1]);
-  const limit = checkLimits(where, options.lower, options.upper, 'lower', 'upper', Infinity);
-  const drive = checkDrive(
-    where,
-    options.motorSpeed,
-    options.maxMotorTorque,
-    'maxMotorTorque',
-    options.hertz,
-    options.dampingRatio,
-    4,
-    0.7,
-  );
-  const j = makeJoint(world, JointType.Wheel, ends, p, p, options);
-  setAxis(world, j, ends.a, axis);
-  storeDrive(world, j, limit, options.lower, options.upper, drive);
-  return handle(world, j);
+  return addAxisJoint(world, WHEEL, options);
 }
+
+/** What sets the wheel joint apart from the other joint along an axis (joints/joint-2d.ts addAxisJoint). */
+const WHEEL: AxisJointKind = {
+  where: 'addWheelJoint',
+  type: JointType.Wheel,
+  keys: [...BASE_KEYS, 'anchor', 'axis', 'hertz', 'dampingRatio', 'lower', 'upper', 'motorSpeed', 'maxMotorTorque'],
+  maxName: 'maxMotorTorque',
+  axis: [0, 1],
+  hertz: 4,
+  dampingRatio: 0.7,
+};

@@ -35,6 +35,10 @@ import type { StageName } from '../world/stage-names.js';
  * per field, and a second pass to name the culprit only when the first finds one.
  */
 
+/**
+ * The finiteness sum of arrays `a` and `b` over `ents` (`dense`: ents are the ids 1..n): the sum of
+ * x * 0 over their values, 0 (or -0) when every value is finite, NaN when one is not.
+ */
 function sum2(ents: ArrayLike<number>, dense: boolean, a: Float64Array, b: Float64Array): number {
   let s = 0;
   const n = ents.length;
@@ -53,6 +57,7 @@ function sum2(ents: ArrayLike<number>, dense: boolean, a: Float64Array, b: Float
   return s;
 }
 
+/** `sum2` over three arrays. */
 function sum3(ents: ArrayLike<number>, dense: boolean, a: Float64Array, b: Float64Array, c: Float64Array): number {
   let s = 0;
   const n = ents.length;
@@ -67,6 +72,7 @@ function sum3(ents: ArrayLike<number>, dense: boolean, a: Float64Array, b: Float
   return s;
 }
 
+/** `sum2` over four arrays. */
 function sum4(ents: ArrayLike<number>, dense: boolean, a: Float64Array, b: Float64Array, c: Float64Array, d: Float64Array): number {
   let s = 0;
   const n = ents.length;
@@ -83,51 +89,82 @@ function sum4(ents: ArrayLike<number>, dense: boolean, a: Float64Array, b: Float
   return s;
 }
 
-function sum6(
-  ents: ArrayLike<number>,
-  dense: boolean,
-  a: Float64Array,
-  b: Float64Array,
-  c: Float64Array,
-  d: Float64Array,
-  f: Float64Array,
-  g: Float64Array,
-): number {
-  let s0 = 0;
-  const n = ents.length;
-  if (dense) for (let e = 1; e <= n; e++) s0 += a[e]! * 0 + b[e]! * 0 + (c[e]! * 0 + d[e]! * 0) + (f[e]! * 0 + g[e]! * 0);
-  else
-    for (let i = 0; i < n; i++) {
-      const e = ents[i]!;
-      s0 += a[e]! * 0 + b[e]! * 0 + (c[e]! * 0 + d[e]! * 0) + (f[e]! * 0 + g[e]! * 0);
-    }
-  return s0;
-}
-
-function sum7(
-  ents: ArrayLike<number>,
-  dense: boolean,
-  a: Float64Array,
-  b: Float64Array,
-  c: Float64Array,
-  d: Float64Array,
-  f: Float64Array,
-  g: Float64Array,
-  h: Float64Array,
-): number {
-  let s0 = 0;
-  const n = ents.length;
-  if (dense) for (let e = 1; e <= n; e++) s0 += a[e]! * 0 + b[e]! * 0 + (c[e]! * 0 + d[e]! * 0) + (f[e]! * 0 + g[e]! * 0 + h[e]! * 0);
-  else
-    for (let i = 0; i < n; i++) {
-      const e = ents[i]!;
-      s0 += a[e]! * 0 + b[e]! * 0 + (c[e]! * 0 + d[e]! * 0) + (f[e]! * 0 + g[e]! * 0 + h[e]! * 0);
-    }
-  return s0;
-}
-
-const EMPTY: ArrayLike<number> = new Int32Array(0);
 const EMPTY_PARAMS: ArrayLike<number> = [];
+
+/** The arrays of the check being run, set by checkStageState before each checkFields, which empties it. Not state. */
+const probe: Float64Array[] = [];
+
+// The names the error gives the arrays of each check, in their order (a 2D force check uses the first two).
+const FORCE = ['Force.x', 'Force.y', 'Force.z'];
+const TORQUE = ['Torque.x', 'Torque.y', 'Torque.z'];
+const TORQUE_2D = ['Torque.z'];
+const LINEAR_2D = ['Velocity.x', 'Velocity.y', 'Position.x', 'Position.y'];
+const LINEAR_3D = ['Velocity.x', 'Velocity.y', 'Velocity.z', 'Position.x', 'Position.y', 'Position.z'];
+const ANGULAR_2D = ['AngularVelocity.z', 'Angle.value'];
+const ANGULAR_3D = [
+  'AngularVelocity.x',
+  'AngularVelocity.y',
+  'AngularVelocity.z',
+  'Orientation.x',
+  'Orientation.y',
+  'Orientation.z',
+  'Orientation.w',
+];
+
+/** Appends the x, y (and in 3D z) arrays of the vector store `s` to the probe. */
+function pushVector(s: { x: Float64Array; y: Float64Array; z: Float64Array }, is2D: boolean): void {
+  if (is2D) probe.push(s.x, s.y);
+  else probe.push(s.x, s.y, s.z);
+}
+
+/**
+ * The finiteness sum of `arrays` over `ents` (0: all finite), by the sum function of their count (1 to
+ * 4; six and seven arrays are two passes, the first four and the rest).
+ */
+function sumFields(ents: ArrayLike<number>, dense: boolean, arrays: readonly Float64Array[]): number {
+  const a = arrays[0]!,
+    b = arrays[arrays.length > 1 ? 1 : 0]!;
+  switch (arrays.length) {
+    case 1:
+    case 2:
+      return sum2(ents, dense, a, b);
+    case 3:
+      return sum3(ents, dense, a, b, arrays[2]!);
+    case 4:
+      return sum4(ents, dense, a, b, arrays[2]!, arrays[3]!);
+    case 6:
+      return sum4(ents, dense, a, b, arrays[2]!, arrays[3]!) + sum2(ents, dense, arrays[4]!, arrays[5]!);
+    default:
+      return sum4(ents, dense, a, b, arrays[2]!, arrays[3]!) + sum3(ents, dense, arrays[4]!, arrays[5]!, arrays[6]!);
+  }
+}
+
+/**
+ * Checks the probe's arrays (named `names`, in order) over `ents` after `stage`, then empties the probe;
+ * `pooled`: a world with threads splits the probe over them (kernel finiteProbe: the same test).
+ * Throws a NonFiniteStateError naming the first entity and field that is NaN or infinite, and the stage.
+ */
+function checkFields(world: PhysicsWorld, stage: StageName, ents: ArrayLike<number>, names: readonly string[], pooled: boolean): void {
+  const A = probe;
+  const dense = ents.length === world.entityIndex.maxId;
+  const par =
+    ents.length === 0 || !pooled || world.threadPool === null
+      ? null
+      : runOnPool(
+          world.threadPool,
+          `${stage} stage finiteness check`,
+          finiteProbe,
+          A,
+          EMPTY_PARAMS,
+          ents.length,
+          dense ? null : ents,
+          MIN_PARALLEL_PER_THREAD,
+        );
+  const bad = ents.length > 0 && (par ?? sumFields(ents, dense, A)) !== 0;
+  const fields = bad ? A.map((a, i) => [names[i]!, a] as const) : null;
+  A.length = 0;
+  if (fields !== null) throwNonFinite(world, stage, ents, fields);
+}
 
 /**
  * Checks what `stage` may have written (see the module comment): the force and torque accumulators
@@ -138,144 +175,38 @@ const EMPTY_PARAMS: ArrayLike<number> = [];
 export function checkStageState(world: PhysicsWorld, stage: StageName, level: 0 | 1 | 2): void {
   const c = world.components;
   const is2D = world.dimensions === 2;
-  const maxId = world.entityIndex.maxId;
+  const A = probe;
+  A.length = 0;
   if (stage === 'forces') {
     const F = c.Force,
       T = c.Torque;
-    let ents = query(world, [F]);
-    if (ents.length > 0 && !fusedForcesOn(world)) {
-      const dense = ents.length === maxId;
-      const par =
-        world.threadPool === null
-          ? null
-          : runOnPool(
-              world.threadPool,
-              'forces stage finiteness check',
-              finiteProbe,
-              is2D ? [F.x, F.y] : [F.x, F.y, F.z],
-              EMPTY_PARAMS,
-              ents.length,
-              dense ? null : ents,
-              MIN_PARALLEL_PER_THREAD,
-            );
-      if ((par ?? (is2D ? sum2(ents, dense, F.x, F.y) : sum3(ents, dense, F.x, F.y, F.z))) !== 0) {
-        throwNonFinite(
-          world,
-          stage,
-          ents,
-          is2D
-            ? [
-                ['Force.x', F.x],
-                ['Force.y', F.y],
-              ]
-            : [
-                ['Force.x', F.x],
-                ['Force.y', F.y],
-                ['Force.z', F.z],
-              ],
-        );
-      }
+    const forced = query(world, [F]);
+    if (!fusedForcesOn(world)) {
+      pushVector(F, is2D);
+      checkFields(world, stage, forced, FORCE, true);
     }
-    ents = query(world, [T]);
-    if (ents.length > 0) {
-      const dense = ents.length === maxId;
-      const par =
-        world.threadPool === null
-          ? null
-          : runOnPool(
-              world.threadPool,
-              'forces stage finiteness check',
-              finiteProbe,
-              is2D ? [T.z] : [T.x, T.y, T.z],
-              EMPTY_PARAMS,
-              ents.length,
-              dense ? null : ents,
-              MIN_PARALLEL_PER_THREAD,
-            );
-      if ((par ?? (is2D ? sum2(ents, dense, T.z, T.z) : sum3(ents, dense, T.x, T.y, T.z))) !== 0) {
-        throwNonFinite(
-          world,
-          stage,
-          ents,
-          is2D
-            ? [['Torque.z', T.z]]
-            : [
-                ['Torque.x', T.x],
-                ['Torque.y', T.y],
-                ['Torque.z', T.z],
-              ],
-        );
-      }
-    }
+    if (is2D) A.push(T.z);
+    else pushVector(T, false);
+    checkFields(world, stage, query(world, [T]), is2D ? TORQUE_2D : TORQUE, true);
   }
   if (level === 0) return;
   const P = c.Position,
     V = c.Velocity,
     W = c.AngularVelocity;
   // Velocities first: a NaN velocity makes the position NaN in the same stage, and it is the cause.
-  let ents = level === 2 ? query(world, [P, V]) : EMPTY;
-  if (ents.length > 0) {
-    const dense = ents.length === maxId;
-    // A world with threads splits the probe over them (kernel finiteProbe: the same test).
-    const par =
-      world.threadPool === null
-        ? null
-        : runOnPool(
-            world.threadPool,
-            `${stage} stage finiteness check`,
-            finiteProbe,
-            is2D ? [V.x, V.y, P.x, P.y] : [V.x, V.y, V.z, P.x, P.y, P.z],
-            EMPTY_PARAMS,
-            ents.length,
-            dense ? null : ents,
-            MIN_PARALLEL_PER_THREAD,
-          );
-    if ((par ?? (is2D ? sum4(ents, dense, V.x, V.y, P.x, P.y) : sum6(ents, dense, V.x, V.y, V.z, P.x, P.y, P.z))) !== 0) {
-      throwNonFinite(
-        world,
-        stage,
-        ents,
-        is2D
-          ? [
-              ['Velocity.x', V.x],
-              ['Velocity.y', V.y],
-              ['Position.x', P.x],
-              ['Position.y', P.y],
-            ]
-          : [
-              ['Velocity.x', V.x],
-              ['Velocity.y', V.y],
-              ['Velocity.z', V.z],
-              ['Position.x', P.x],
-              ['Position.y', P.y],
-              ['Position.z', P.z],
-            ],
-      );
-    }
+  if (level === 2) {
+    pushVector(V, is2D);
+    pushVector(P, is2D);
+    checkFields(world, stage, query(world, [P, V]), is2D ? LINEAR_2D : LINEAR_3D, true);
   }
   if (is2D) {
-    const A = c.Angle.value;
-    ents = query(world, [W, c.Angle]);
-    if (ents.length > 0 && sum2(ents, ents.length === maxId, W.z, A) !== 0) {
-      throwNonFinite(world, stage, ents, [
-        ['AngularVelocity.z', W.z],
-        ['Angle.value', A],
-      ]);
-    }
+    A.push(W.z, c.Angle.value);
+    checkFields(world, stage, query(world, [W, c.Angle]), ANGULAR_2D, false);
   } else {
     const Q = c.Orientation;
-    ents = query(world, [W, Q]);
-    if (ents.length > 0 && sum7(ents, ents.length === maxId, W.x, W.y, W.z, Q.x, Q.y, Q.z, Q.w) !== 0) {
-      throwNonFinite(world, stage, ents, [
-        ['AngularVelocity.x', W.x],
-        ['AngularVelocity.y', W.y],
-        ['AngularVelocity.z', W.z],
-        ['Orientation.x', Q.x],
-        ['Orientation.y', Q.y],
-        ['Orientation.z', Q.z],
-        ['Orientation.w', Q.w],
-      ]);
-    }
+    pushVector(W, false);
+    A.push(Q.x, Q.y, Q.z, Q.w);
+    checkFields(world, stage, query(world, [W, Q]), ANGULAR_3D, false);
   }
 }
 
@@ -287,20 +218,9 @@ export function checkStageState(world: PhysicsWorld, stage: StageName, level: 0 
  * @category World and step
  */
 export function reportNonFiniteForces(world: PhysicsWorld, ents: ArrayLike<number>): void {
-  const F = world.components.Force;
-  if (world.dimensions === 2) {
-    if (sum2(ents, false, F.x, F.y) !== 0)
-      throwNonFinite(world, 'forces', ents, [
-        ['Force.x', F.x],
-        ['Force.y', F.y],
-      ]);
-  } else if (sum3(ents, false, F.x, F.y, F.z) !== 0) {
-    throwNonFinite(world, 'forces', ents, [
-      ['Force.x', F.x],
-      ['Force.y', F.y],
-      ['Force.z', F.z],
-    ]);
-  }
+  probe.length = 0;
+  pushVector(world.components.Force, world.dimensions === 2);
+  checkFields(world, 'forces', ents, FORCE, false);
 }
 
 /**

@@ -337,71 +337,59 @@ function boundaryContacts(world: PhysicsWorld, buf: ContactBuffer): void {
       y = oy[b]!;
     const sx = vx[b]!,
       sy = vy[b]!;
+    // Faces 0 to 3 (5 in 3D): the min and max face of x, y (and z), in that order. The row's radius
+    // and separation go through rowArgs, not as arguments (see rowArgs).
+    W[5] = r;
     let sep = x - r - minX;
     if (sep < (sx < 0 ? -sx * h : 0) + spec) {
-      W[0] = 1;
-      W[1] = 0;
-      W[2] = 0;
       W[3] = sep;
-      W[4] = 0;
-      W[5] = r;
-      pushContact(buf, ContactKind.Boundary, 0, b, 0);
+      faceContact(buf, b, 0);
     }
     sep = maxX - x - r;
     if (sep < (sx > 0 ? sx * h : 0) + spec) {
-      W[0] = -1;
-      W[1] = 0;
-      W[2] = 0;
       W[3] = sep;
-      W[4] = 0;
-      W[5] = r;
-      pushContact(buf, ContactKind.Boundary, 0, b, 1);
+      faceContact(buf, b, 1);
     }
     sep = y - r - minY;
     if (sep < (sy < 0 ? -sy * h : 0) + spec) {
-      W[0] = 0;
-      W[1] = 1;
-      W[2] = 0;
       W[3] = sep;
-      W[4] = 0;
-      W[5] = r;
-      pushContact(buf, ContactKind.Boundary, 0, b, 2);
+      faceContact(buf, b, 2);
     }
     sep = maxY - y - r;
     if (sep < (sy > 0 ? sy * h : 0) + spec) {
-      W[0] = 0;
-      W[1] = -1;
-      W[2] = 0;
       W[3] = sep;
-      W[4] = 0;
-      W[5] = r;
-      pushContact(buf, ContactKind.Boundary, 0, b, 3);
+      faceContact(buf, b, 3);
     }
     if (is3D) {
       const z = oz[b]!,
         sz = vz[b]!;
       sep = z - r - minZ;
       if (sep < (sz < 0 ? -sz * h : 0) + spec) {
-        W[0] = 0;
-        W[1] = 0;
-        W[2] = 1;
         W[3] = sep;
-        W[4] = 0;
-        W[5] = r;
-        pushContact(buf, ContactKind.Boundary, 0, b, 4);
+        faceContact(buf, b, 4);
       }
       sep = maxZ - z - r;
       if (sep < (sz > 0 ? sz * h : 0) + spec) {
-        W[0] = 0;
-        W[1] = 0;
-        W[2] = -1;
         W[3] = sep;
-        W[4] = 0;
-        W[5] = r;
-        pushContact(buf, ContactKind.Boundary, 0, b, 5);
+        faceContact(buf, b, 5);
       }
     }
   }
+}
+
+/**
+ * Pushes the contact of a ball `b` with face `face` of the boundary box (2k: the min face of axis k,
+ * normal +axis; 2k + 1: the max face, normal -axis); its separation and radius (m) already in
+ * rowArgs[3] and rowArgs[5].
+ */
+function faceContact(buf: ContactBuffer, b: number, face: number): void {
+  const W = rowArgs;
+  W[0] = 0;
+  W[1] = 0;
+  W[2] = 0;
+  W[face >> 1] = (face & 1) === 0 ? 1 : -1;
+  W[4] = 0;
+  pushContact(buf, ContactKind.Boundary, 0, b, face);
 }
 
 /** Contacts of the moving balls with the static planes (half-spaces) they come near this step. */
