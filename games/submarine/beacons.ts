@@ -34,17 +34,43 @@ export function chooseBeacon(beacons: ArrayLike<number>, taken: readonly boolean
   return best < BEACON_SWITCH * own ? nearest : current;
 }
 
+/** What the pointer's label adds when the seabed rises between the hull and its beacon. */
+export const RIDGE_WARNING = 'ridge ahead: climb';
+
+/**
+ * Whether the straight line from the hull at (x0, y0) to the beacon at (x1, y1), m (y up), passes
+ * below the seabed anywhere: sampled every metre or less along x, and true where the line is under
+ * `bedAt(x)` (the seabed's height there, m). Going straight for the beacon would then run into a ridge.
+ * @throws RangeError when a coordinate is not finite.
+ */
+export function seabedBetween(x0: number, y0: number, x1: number, y1: number, bedAt: (x: number) => number): boolean {
+  for (const [name, v] of [
+    ['x0', x0],
+    ['y0', y0],
+    ['x1', x1],
+    ['y1', y1],
+  ] as const)
+    if (!Number.isFinite(v)) throw new RangeError(`seabedBetween: ${name} must be finite, got ${v}`);
+  const n = Math.max(1, Math.ceil(Math.abs(x1 - x0)));
+  for (let i = 0; i <= n; i++) {
+    const u = i / n;
+    if (y0 + u * (y1 - y0) < bedAt(x0 + u * (x1 - x0))) return true;
+  }
+  return false;
+}
+
 /**
  * The pointer's label: how far ahead or behind the beacon lies (along the hull's heading, so "ahead"
  * means "keep the screw ahead") and how far down or up, each when it is 3 m or more, e.g.
  * "beacon 85 m ahead, 30 m down". The boat moves nearly twice as fast ahead as it dives, so the depth
  * to make up is the part a player must start on early. `dx`, `dy`: the beacon's position minus the
- * hull's, m (y up); `angle`: the hull's pitch, rad.
+ * hull's, m (y up); `angle`: the hull's pitch, rad; `ridge`: the seabed rises across the straight way
+ * to it (`seabedBetween`), which adds `RIDGE_WARNING` on a second line.
  */
-export function beaconLabel(dx: number, dy: number, angle = 0): string {
+export function beaconLabel(dx: number, dy: number, angle = 0, ridge = false): string {
   const along = dx * Math.cos(angle) + dy * Math.sin(angle);
   const parts: string[] = [];
   if (Math.abs(along) >= 3) parts.push(`${Math.abs(along).toFixed(0)} m ${along > 0 ? 'ahead' : 'behind'}`);
   if (Math.abs(dy) >= 3) parts.push(`${Math.abs(dy).toFixed(0)} m ${dy < 0 ? 'down' : 'up'}`);
-  return `beacon ${parts.length > 0 ? parts.join(', ') : 'here'}`;
+  return `beacon ${parts.length > 0 ? parts.join(', ') : 'here'}${ridge ? `\n${RIDGE_WARNING}` : ''}`;
 }

@@ -29,7 +29,7 @@ import { startPixiGame } from '@bitphysics/game-kit/pixi';
 import { applyImpulse, createPhysicsWorld, type PhysicsWorld, step } from '@bitphysics/physics';
 import { SUBMARINE, SUBMARINE_NEUTRAL_FILL, type SubmarineHandles, seabedHeight, submarine } from '@bitphysics/projects';
 import { Graphics, Text } from 'pixi.js';
-import { beaconLabel, chooseBeacon } from './beacons';
+import { beaconLabel, chooseBeacon, seabedBetween } from './beacons';
 import { drawBoat } from './boat-drawing';
 import { createHelmState, type HelmInput, steer } from './helm';
 import { layMines, MINE_BLAST_IMPULSE, MINE_RADIUS, type Mine, parTime, touchesMine } from './mines';
@@ -112,6 +112,14 @@ const LEAD_TIME = 2.2;
 const LEAD_SHARE = 0.6;
 /** The look-ahead eases toward its target with this time constant, s of game time. */
 const LEAD_EASE = 0.8;
+/**
+ * On a portrait view (narrower than tall) the framing camera shows at least this much sea across,
+ * m: at the default 8 px/m a 390 px phone showed only 49 m, with mines, ridges and beacons ahead
+ * off screen. A wider view than tall is not limited by it (the desktop's framing is unchanged).
+ */
+const PORTRAIT_MIN_WIDTH = 70;
+/** The look-ahead's share of the way to the framing margin (`LEAD_SHARE`) on a portrait view. */
+const PORTRAIT_LEAD_SHARE = 0.8;
 /**
  * The camera as last drawn: centre (x, y, m), zoom (px/m), the eased look-ahead (leadX, leadY, m,
  * before its limit), the game time it was eased to (s), the shake now (px) and the view's size (px).
@@ -721,7 +729,12 @@ function draw(): void {
     (W - 2 * FRAME_MARGIN) / Math.max(1e-6, Math.abs(fx - hxw) + SUBMARINE.length),
     (H - 2 * FRAME_MARGIN) / Math.max(1e-6, Math.abs(fy - hyw) + SUBMARINE.length),
   );
-  const target = Math.max(Math.min(FRAME_MIN_ZOOM, params.pixelsPerMeter), fit);
+  // A portrait view is narrow: it zooms out to PORTRAIT_MIN_WIDTH m across at least and leads
+  // further, so the boat sits nearer the trailing edge with more of the way ahead in view.
+  const portrait = W < H;
+  const widest = portrait ? W / PORTRAIT_MIN_WIDTH : Number.POSITIVE_INFINITY;
+  const target = Math.max(Math.min(FRAME_MIN_ZOOM, params.pixelsPerMeter), Math.min(fit, widest));
+  const leadShare = portrait ? PORTRAIT_LEAD_SHARE : LEAD_SHARE;
   // Eased (a new beacon or a collected one does not make the view jump).
   zoom = Number.isFinite(zoom) ? zoom + (target - zoom) * 0.1 : target;
   const k = zoom;
@@ -738,7 +751,7 @@ function draw(): void {
   const ease = 1 - Math.exp(-dtCam / LEAD_EASE);
   camera.leadX += (LEAD_TIME * c.Velocity.x[e]! - camera.leadX) * ease;
   camera.leadY += (LEAD_TIME * c.Velocity.y[e]! - camera.leadY) * ease;
-  const leadX = Math.max(-LEAD_SHARE * reachX, Math.min(LEAD_SHARE * reachX, camera.leadX)),
+  const leadX = Math.max(-leadShare * reachX, Math.min(leadShare * reachX, camera.leadX)),
     leadY = Math.max(-LEAD_SHARE * reachY, Math.min(LEAD_SHARE * reachY, camera.leadY));
   const atLeast = (framed: number, hull: number, lead: number) =>
     lead > 0 ? Math.max(framed, hull + lead) : lead < 0 ? Math.min(framed, hull + lead) : framed;
@@ -940,7 +953,8 @@ function draw(): void {
       by = sy(wy);
     const m = 40;
     aim.distance = best;
-    pointer.text = beaconLabel(wx - hxw, wy - hyw, c.Angle.value[e]!);
+    const ridge = seabedBetween(hxw, hyw, wx, wy, (x) => seabedHeight(handles.seabed, x));
+    pointer.text = beaconLabel(wx - hxw, wy - hyw, c.Angle.value[e]!, ridge);
     aim.dx = wx - hxw;
     aim.dy = wy - hyw;
     aim.onScreen = bx >= m && bx <= W - m && by >= m && by <= H - m;

@@ -124,6 +124,55 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     await g.close();
   });
 
+  it('under way with the beacon close ahead, the view shows at least 40 m ahead of the bow', async () => {
+    // The boat driven at full speed (D held), then paused 20 m short of the beacon at its depth: the framing
+    // zooms in to its most (8 px/m) for a beacon this near. On a 390 px portrait phone that showed
+    // 49 m across with the boat left of centre, 28 m ahead of the bow; the portrait view keeps at
+    // least 70 m across and leads further. The desktop (160 m across at 8 px/m) is unchanged.
+    const g = await h.openGame('submarine', { viewport, touch, query: { waves: 0, beacons: 1 } });
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as Sub;
+      const c = w.world.components,
+        e = w.hull(),
+        b = w.handles().beacons;
+      c.Position.x[e] = b[0]! - 40;
+      c.Position.y[e] = b[1]!;
+      c.Velocity.x[e] = 10;
+      c.Velocity.y[e] = 0;
+      w.state.holdY = b[1]!;
+    });
+    await g.page.keyboard.down('d');
+    // About 1.5 s of game time from 40 m short: the look-ahead eases in over about 0.8 s; then back 20 m short, paused,
+    // and 40 frames for the zoom to settle (it eases 10% a frame).
+    const t0 = await g.page.evaluate(() => (window.game as unknown as Sub).world.time);
+    await g.waitFor((t) => (window.game as unknown as Sub).world.time > t + 1.5, t0, 60_000);
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as Sub;
+      w.paused = true;
+      w.world.components.Position.x[w.hull()] = w.handles().beacons[0]! - 20;
+    });
+    await g.page.keyboard.up('d');
+    await g.frames(40);
+    const r = await g.page.evaluate(() => {
+      const w = window.game as unknown as Sub;
+      const cam = w.camera(),
+        e = w.hull();
+      const hx = w.world.components.Position.x[e]!;
+      // The view's right edge minus the bow (the hull is 12 m long), m.
+      return { cam, ahead: cam.x + cam.width / 2 / cam.zoom - (hx + 6), vx: w.world.components.Velocity.x[e]! };
+    });
+    console.log(
+      `${device}: ${r.ahead.toFixed(1)} m ahead of the bow at ${r.cam.zoom.toFixed(2)} px/m, ${(r.cam.width / r.cam.zoom).toFixed(0)} m across`,
+    );
+    expect(r.vx).toBeGreaterThan(5);
+    expect(r.ahead, `${device}: ${r.ahead.toFixed(1)} m ahead at ${r.cam.zoom.toFixed(2)} px/m`).toBeGreaterThan(40);
+    if (device === 'desktop') expect(r.cam.zoom).toBeCloseTo(8, 1);
+    else expect(r.cam.width / r.cam.zoom).toBeGreaterThan(69);
+    await g.page.screenshot({ path: `/tmp/sub-ahead-${device}.png` });
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
   it('a seabed hit and a mine each say what hit the hull, at the place, shake the view and light the hull gauge', async () => {
     const g = await h.openGame('submarine', { viewport, touch, query: { waves: 0 } });
     expect(await g.page.evaluate(() => (window.game as unknown as Sub).hitEffect().kind)).toBe('');

@@ -5,9 +5,9 @@
  */
 
 import { createPhysicsWorld } from '@bitphysics/physics';
-import { submarine } from '@bitphysics/projects';
+import { seabedHeight, submarine } from '@bitphysics/projects';
 import { describe, expect, it } from 'vitest';
-import { BEACON_SWITCH, beaconLabel, chooseBeacon } from '../../games/submarine/beacons';
+import { BEACON_SWITCH, beaconLabel, chooseBeacon, RIDGE_WARNING, seabedBetween } from '../../games/submarine/beacons';
 
 describe('submarine beacon pointer', () => {
   it('does not flip between two beacons at about the same distance (the nearest-each-frame rule did)', () => {
@@ -72,5 +72,35 @@ describe('submarine beacon pointer', () => {
     expect(beaconLabel(-45, 30)).toBe('beacon 45 m behind, 30 m up');
     expect(beaconLabel(20, -2)).toBe('beacon 20 m ahead');
     expect(beaconLabel(1, -2)).toBe('beacon here');
+  });
+
+  it('warns of a ridge when the straight way to the beacon runs under the seabed', () => {
+    // A bed 60 m down with a ridge up to 25 m down from x = 20 to 40 m; the hull and the beacon 59 m
+    // apart at 40 m down: the line between them is level and 15 m under the ridge's top.
+    const bed = (x: number) => (x >= 20 && x <= 40 ? -25 : -60);
+    expect(seabedBetween(0, -40, 59, -40, bed)).toBe(true);
+    expect(beaconLabel(59, 0, 0, seabedBetween(0, -40, 59, -40, bed))).toBe(`beacon 59 m ahead\n${RIDGE_WARNING}`);
+    // At 20 m down the line clears the ridge by 5 m: no warning.
+    expect(seabedBetween(0, -20, 59, -20, bed)).toBe(false);
+    expect(beaconLabel(59, 0, 0, seabedBetween(0, -20, 59, -20, bed))).toBe('beacon 59 m ahead');
+    // A ridge 1 m wide is not stepped over by the sampling (every metre or less).
+    const thin = (x: number) => (x >= 30.2 && x <= 31.1 ? -25 : -60);
+    expect(seabedBetween(0, -40, 59, -40, thin)).toBe(true);
+    // The seeded course: the hull 15 m over the bed at x = 0 looking at a point 15 m over the bed at
+    // x = 300 m. The warning holds exactly where a point of the line is under the bed (checked every 0.1 m).
+    const h = submarine.build(createPhysicsWorld(submarine.worldOptions()), { seed: 1, count: 2 });
+    const at = (x: number) => seabedHeight(h.seabed, x);
+    for (const [x0, x1] of [
+      [0, 300],
+      [100, 400],
+      [500, 200],
+    ] as const) {
+      const y0 = at(x0) + 15,
+        y1 = at(x1) + 15;
+      let under = false;
+      for (let x = Math.min(x0, x1); x <= Math.max(x0, x1); x += 0.1) under ||= y0 + ((x - x0) / (x1 - x0)) * (y1 - y0) < at(x) - 0.05;
+      if (under) expect(seabedBetween(x0, y0, x1, y1, at)).toBe(true);
+    }
+    expect(() => seabedBetween(Number.NaN, 0, 1, 0, bed)).toThrow(/seabedBetween: x0/);
   });
 });
