@@ -437,6 +437,8 @@ let snipped = 0,
   lastRip = 0,
   /** When the pointer last went down, ms (performance.now). */
   lastInput = 0;
+/** Whether a scissors stroke was tried on the paused sheet (and ignored) since it was last paused. */
+let pausedStroke = false;
 canvas.addEventListener('pointerdown', (e) => {
   if (e.button !== 0 && e.button !== 2) return;
   lastInput = performance.now();
@@ -445,6 +447,12 @@ canvas.addEventListener('pointerdown', (e) => {
   grab = null;
   stroke = null;
   if (tool === 'cut' || e.button === 2) {
+    // The scissors cut only while the sheet moves: a still sheet would let a stroke trace the
+    // printed line exactly. A stroke on the paused sheet is ignored and the status line says so.
+    if (shell.paused) {
+      pausedStroke = true;
+      return;
+    }
     strokeSave = { world: snapshot(shell.world), cut, torn, done: challenge.done.length };
     // A point over a cut holds on to the cloth's nearest point within a link's length.
     stroke = { cut: new ScissorsStroke(shell.world, cloth, x, y, SHEET_WIDTH / (params.size - 1), STROKE_FRAME), id: e.pointerId };
@@ -647,6 +655,11 @@ function drawCard(): void {
 
 /** The status line: what to do, and how it went. */
 function updateStatus(): void {
+  if (!shell.paused) pausedStroke = false;
+  else if (pausedStroke) {
+    status.set('Paused: the scissors cut only while the sheet moves. Press ▶ (or P) to run it.');
+    return;
+  }
   const done = challenge.done;
   const sheet = `Sheet ${sheetIndex + 1} of ${SHEETS.length}, ${SHEETS[sheetIndex]!.name}`;
   if (challenge.finished()) {

@@ -130,7 +130,7 @@ for (const [device, options] of [
       await g?.close();
     });
 
-    it('a scissors stroke across the paused sheet cuts it, and the part below falls away when it runs', async () => {
+    it('a stroke on the paused sheet cuts nothing and says paused; across the running sheet it cuts, and the part below falls away', async () => {
       await g.page.evaluate(() => {
         (window.game as unknown as Lab).paused = true;
       });
@@ -141,21 +141,32 @@ for (const [device, options] of [
         return { rows: c.rows, columns: c.columns };
       });
       const row = Math.round(cl.rows * 0.7);
-      const [lx, ly] = await clothPoint(g, row, 0),
-        [rx, ry] = await clothPoint(g, row, cl.columns - 1);
-      const spacing = 4 / (cl.columns - 1);
-      const a = await toPage(g, lx - 0.3, ly - spacing / 2),
-        b = await toPage(g, (lx + rx) / 2, (ly + ry) / 2 - spacing / 2),
-        c = await toPage(g, rx + 0.3, ry - spacing / 2);
-      await drag(g.page, [a, b, c], 6);
+      const across = async () => {
+        const [lx, ly] = await clothPoint(g, row, 0),
+          [rx, ry] = await clothPoint(g, row, cl.columns - 1);
+        const spacing = 4 / (cl.columns - 1);
+        return [
+          await toPage(g, lx - 0.3, ly - spacing / 2),
+          await toPage(g, (lx + rx) / 2, (ly + ry) / 2 - spacing / 2),
+          await toPage(g, rx + 0.3, ry - spacing / 2),
+        ];
+      };
+      // Paused, the scissors cut nothing (a still sheet let a stroke trace a shape exactly: 100%), and
+      // the status line says why.
+      await drag(g.page, await across(), 6);
+      await g.frames(2);
+      expect(await g.page.evaluate(() => (window.game as unknown as ClothLab).cut())).toBe(0);
+      expect(await g.page.evaluate(() => (window.game as unknown as ClothLab).links())).toBe(before);
+      expect(await g.page.locator('.lab-status').textContent()).toMatch(/^Paused: the scissors cut only while the sheet moves/);
+      await g.page.evaluate(() => {
+        (window.game as unknown as Lab).paused = false;
+      });
+      await drag(g.page, await across(), 6);
       const cut = await g.waitFor(() => (window.game as unknown as ClothLab).cut(), null);
       // The scissors snipped (the press started the page's sound; the frame after the cut plays it).
       await g.waitFor(() => (window.game as unknown as { sound: { played: number } }).sound.played > 0, null);
       expect(cut).toBeGreaterThan(cl.columns);
       expect(await g.page.evaluate(() => (window.game as unknown as ClothLab).links())).toBeLessThan(before - cl.columns);
-      await g.page.evaluate(() => {
-        (window.game as unknown as Lab).paused = false;
-      });
       // The strip below the cut has come away: it counts as a piece off, and it falls.
       await g.waitFor(() => (window.game as unknown as ClothLab).scraps() >= 1, null, 30_000);
       const [, y0] = await clothPoint(g, cl.rows - 1, Math.floor(cl.columns / 2));
@@ -213,11 +224,11 @@ for (const [device, options] of [
       const undo = g.page.getByRole('button', { name: 'undo the last cut (Ctrl+Z)', exact: true });
       // Nothing cut yet: nothing to undo.
       expect(await undo.isDisabled()).toBe(true);
-      // Let the sheet sway a little, then pause: the state before the stroke is read exactly.
+      // Let the sheet sway a little.
       await g.page.evaluate(() => (window.game as unknown as Lab).advance(30));
-      /** Every cloth point's position and velocity, the links left, the triangles drawn and the lab's counts. */
-      const state = () =>
-        g.page.evaluate(() => {
+      /** Every cloth point's position and velocity, the links left, the triangles drawn and the lab's counts (in the page as window.clothState). */
+      await g.page.evaluate(() => {
+        (window as unknown as { clothState: () => unknown }).clothState = () => {
           const w = window.game as unknown as ClothLab & {
             world: { components: { Velocity: { x: Float64Array; y: Float64Array } } };
           };
@@ -232,10 +243,25 @@ for (const [device, options] of [
             scraps: w.scraps(),
             time: w.world.time,
           };
-        });
+        };
+      });
+      type State = { pos: number[]; vel: number[]; links: number; cut: number; scraps: number; time: number };
+      const state = () => g.page.evaluate(() => (window as unknown as { clothState: () => State }).clothState());
       const stroke = async () => {
+        // The scissors cut only on the running sheet: the state before the stroke is read in the page
+        // as the pointer goes down (a capturing listener on the window runs before the canvas's own,
+        // with no step between), then the page is paused once the stroke has cut.
         await g.page.evaluate(() => {
-          (window.game as unknown as Lab).paused = true;
+          (window.game as unknown as Lab).paused = false;
+          const w = window as unknown as { clothState: () => State; before: State | null };
+          w.before = null;
+          window.addEventListener(
+            'pointerdown',
+            () => {
+              w.before = w.clothState();
+            },
+            { capture: true, once: true },
+          );
         });
         const cl = await g.page.evaluate(() => {
           const c = (window.game as unknown as ClothLab).cloth();
@@ -244,12 +270,15 @@ for (const [device, options] of [
         const row = Math.round(cl.rows * 0.7);
         const [lx, ly] = await clothPoint(g, row, 0),
           [rx, ry] = await clothPoint(g, row, cl.columns - 1);
-        const before = await state();
         const a = await toPage(g, lx - 0.3, ly),
           b = await toPage(g, (lx + rx) / 2, (ly + ry) / 2),
           c = await toPage(g, rx + 0.3, ry);
         await drag(g.page, [a, b, c], 6);
         await g.waitFor(() => (window.game as unknown as ClothLab).undoCount() === 1, null);
+        await g.page.evaluate(() => {
+          (window.game as unknown as Lab).paused = true;
+        });
+        const before = await g.page.evaluate(() => (window as unknown as { before: State }).before);
         const after = await state();
         expect(after.cut).toBeGreaterThan(cl.columns);
         expect(after.links).toBeLessThan(before.links - cl.columns);
