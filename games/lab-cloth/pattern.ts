@@ -4,14 +4,16 @@
  * fifth of its cells (the cells of the sheet at rest whose centres lie inside its line), or less than
  * a quarter of them still hang on the line: it is scored by the piece that came away with most.
  *
- * Its fit says how close to the line the cut ran, within a link's length either way: a cut removes
- * the cells it runs through, so a cut right on the line takes the shape's edge cells with it. The
- * shape's core (its cells whose centres lie at least one link spacing inside the line) should all be
- * in the piece, and the piece should hold nothing farther than one spacing outside the line:
- * fit = max(0, 1 - (core cells missing + cells beyond / 2) / inside cells), 1 for a cut along the
- * line. Measured on the still sheet at 32 points across (cuts along the line moved out from the
- * shape's middle): 1 from 0 to 0.2 m out, 0.87-0.94 at 0.1 m in, 0.74-0.95 at 0.3 m out, 0.4-0.61
- * at 0.4 m out, 0 for a 1.8 m square round the shape.
+ * Its fit says how close to the line the cut ran: a cut removes the cells it runs through, so a cut
+ * right on the line takes the shape's edge cells with it. The shape's core (its cells whose centres
+ * lie at least one link spacing inside the line) should all be in the piece, and the piece should
+ * hold no cloth outside the line: each cell of the piece whose centre lies outside costs from 0 (up
+ * to 0.4 spacing out) to a whole cell (0.9 spacing out and beyond), so cloth cut away with the shape
+ * counts against it by its area: fit = max(0, 1 - (core cells missing + cells outside) / inside
+ * cells), 1 for a cut along the line. Measured on the still sheet at 32 points across: 0.95-1 for
+ * the circle or the star cut 4 cm out of the line, 0.85 (2 stars) for the star cut along the pentagon
+ * through its points (a hole 1.8 times the star; the fit before outside cloth counted by area gave
+ * it 0.97), 0 for the heart cut 0.4 m out or a 1.8 m square round a shape.
  */
 import { type Cloth, type PhysicsWorld, slotOf } from '@bitphysics/physics';
 import type { ClothCells } from './cells';
@@ -97,15 +99,29 @@ export interface ShapeMask {
   readonly core: readonly number[];
   /** Per cell, 1 where its centre lies inside the line or at most one spacing outside it. */
   readonly allowed: Uint8Array;
+  /**
+   * Per cell, what it costs the fit when it comes away with the shape, in cells (0 to 1): 0 inside the
+   * line or up to `EXCESS_FREE` spacings outside it, rising linearly to 1 at `EXCESS_FULL` and beyond.
+   */
+  readonly excess: Float32Array;
 }
 
 /** Per shape, its cells on a sheet of `size` points across, at rest. */
+/**
+ * A cell that comes away with a shape costs the fit nothing while its centre lies up to this many
+ * link spacings outside the line (a cut on the line runs through those cells), rising linearly to a
+ * whole cell at `EXCESS_FULL` spacings out and beyond.
+ */
+const EXCESS_FREE = 0.4;
+/** See `EXCESS_FREE`: the distance outside the line, in link spacings, from which a cell costs a whole cell. */
+const EXCESS_FULL = 0.9;
 export function shapeMasks(size: number): ShapeMask[] {
   const { columns, rows, spacing } = sheetGrid(size);
   return SHAPES.map((s) => {
     const inside: number[] = [],
       core: number[] = [];
     const allowed = new Uint8Array((columns - 1) * (rows - 1));
+    const excess = new Float32Array((columns - 1) * (rows - 1));
     for (let r = 0; r + 1 < rows; r++)
       for (let c = 0; c + 1 < columns; c++) {
         const x = (c + 0.5) * spacing,
@@ -116,9 +132,12 @@ export function shapeMasks(size: number): ShapeMask[] {
           inside.push(cell);
           allowed[cell] = 1;
           if (d >= spacing) core.push(cell);
-        } else if (d <= spacing) allowed[cell] = 1;
+        } else {
+          if (d <= spacing) allowed[cell] = 1;
+          excess[cell] = Math.max(0, Math.min(1, (d - EXCESS_FREE * spacing) / ((EXCESS_FULL - EXCESS_FREE) * spacing)));
+        }
       }
-    return { inside, core, allowed };
+    return { inside, core, allowed, excess };
   });
 }
 
@@ -204,8 +223,8 @@ export function scoreCutOuts(
     let missing = 0,
       beyond = 0;
     for (const cell of mask.core) if (pieceOfCell[cell] !== best) missing++;
-    for (let cell = 0; cell < n; cell++) if (pieceOfCell[cell] === best && !mask.allowed[cell]) beyond++;
-    const fit = Math.max(0, 1 - (missing + beyond / 2) / mask.inside.length);
+    for (let cell = 0; cell < n; cell++) if (pieceOfCell[cell] === best) beyond += mask.excess[cell]!;
+    const fit = Math.max(0, 1 - (missing + beyond) / mask.inside.length);
     out.push({ shape: s, fit, stars: starsFor(fit), piece: best });
   }
   return out;

@@ -189,6 +189,44 @@ describe('lab-cloth', () => {
     }
   });
 
+  it('a sloppy star cut (round its points, a hole 1.8 times the star) scores under 0.9; one along its line 3 stars', () => {
+    // Measured: 0.98 along the line 4 cm out, 0.85 round the points (0.97 before). The star's line (inner radius 0.27 m, points at 0.6 m), cut at rest along the line moved `out` m
+    // out from its middle, or along the pentagon through its points (the hole is 0.86 m^2, the star
+    // 0.48 m^2). The pentagon's extra cloth lies within 0.21 m of the line: the old fit counted cells up
+    // to one spacing (0.13 m) outside as allowed and the rest at half weight, and gave it 3 stars.
+    const star = SHAPES[1]!.outline;
+    const cx = 2,
+      cy = 1.5;
+    const cutRing = (ring: number[]) => {
+      const s = createClothScene(STILL);
+      const top = s.world.components.Position.y[slotOf(s.cloth.points[0]!)]!;
+      const cells = new ClothCells(s.cloth);
+      const ch = new Challenge(s.world, s.cloth, cells);
+      const n = ring.length / 2;
+      for (let k = 0; k < n; k++) {
+        const j = (k + 1) % n;
+        cutAlong(s.world, ring[2 * k]!, top - ring[2 * k + 1]!, ring[2 * j]!, top - ring[2 * j + 1]!);
+      }
+      cells.loosen(s.world);
+      const done = ch.update();
+      expect(done.map((d) => d.shape)).toEqual([1]);
+      return done[0]!;
+    };
+    const grown = (out: number) =>
+      star.map((_, i) => {
+        const x = star[i - (i % 2)]! - cx,
+          y = star[i - (i % 2) + 1]! - cy,
+          d = Math.hypot(x, y);
+        return i % 2 === 0 ? cx + x + (x / d) * out : cy + y + (y / d) * out;
+      });
+    const pentagon = star.filter((_, i) => i % 4 < 2);
+    const along = cutRing(grown(0.04));
+    const sloppy = cutRing(pentagon);
+    expect(along.stars).toBe(3);
+    expect(sloppy.fit).toBeLessThan(0.9);
+    expect(sloppy.stars).toBeLessThanOrEqual(2);
+  });
+
   it('the breeze sways the sheet, and a gust leans it', () => {
     // The hem's middle point over 4 s of the second sheet's breeze (0.3 m/s, gusts of 1.2 m/s both
     // ways): measured, it swings over 1.5-2 m; in a gust (5 m/s more) it is blown 2.5 m right of where
@@ -234,8 +272,9 @@ describe('lab-cloth', () => {
         expect(o[k + 1]!).toBeLessThan(height);
       }
     }
-    // The fit: a cut round the heart 0.4 m out of its line gets 1 or 2 stars (measured 0.46), a 1.8 m
-    // square round it (a piece ripped off with it) none (measured 0).
+    // The fit: a cut round the heart 0.4 m out of its line (a hole more than twice the heart) gets no
+    // star (measured 0; 0.46 before cloth outside the line counted by its area), nor a 1.8 m square
+    // round it (a piece ripped off with it; measured 0).
     const heart = SHAPES[2]!.outline;
     let hx = 0,
       hy = 0;
@@ -259,9 +298,7 @@ describe('lab-cloth', () => {
         d = Math.hypot(x - hx, y - hy);
       out.push([x + ((x - hx) / d) * 0.4, y + ((y - hy) / d) * 0.4]);
     }
-    const loose = scoreOf(out)[0];
-    expect(loose).toBeGreaterThanOrEqual(1);
-    expect(loose).toBeLessThanOrEqual(2);
+    expect(scoreOf(out)).toEqual([0]);
     expect(
       scoreOf([
         [hx - 0.9, hy - 0.9],
