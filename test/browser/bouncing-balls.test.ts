@@ -198,6 +198,8 @@ describe('bouncing balls', () => {
 
   it('the panel sets gravity, drag and restitution, and rebuilds with a new ball count', async () => {
     const g = await open();
+    // The game keeps its panel in the settings drawer (the game arrangement); the toolbar button opens it.
+    await g.page.getByRole('button', { name: 'parameters and charts' }).click();
     // lil-gui labels each input and select with its controller's name (aria-labelledby).
     const field = (name: string) => g.page.getByLabel(name, { exact: true });
     await field('gravity (m/s²)').fill('3.5');
@@ -238,6 +240,8 @@ describe('bouncing balls', () => {
     await field('restitution').fill('0.8');
     await field('restitution').press('Enter');
     await g.waitFor((n) => window.game!.stats().entities === n, 8 + SEGMENTS);
+    await g.page.getByRole('button', { name: 'parameters and charts' }).click();
+    expect(await g.page.locator('.bp-side').isVisible()).toBe(false);
   });
 
   it('a press on a ball drags it through a mouse joint (no ball added), and release lets go', async () => {

@@ -372,7 +372,11 @@ describe('WorldRenderer in the browser', () => {
       };
     });
     expect(r.h).toBe(canvas.height);
-    expect(canvas.height).toBeGreaterThan(560);
+    // The canvas fills the stage: the window less the toolbar and the game's status row (its goal,
+    // score and hint take two or three lines at this width).
+    const stage = (await g.page.locator('.bp-stage').boundingBox())!;
+    expect(canvas.height).toBeCloseTo(stage.height, 0);
+    expect(canvas.height).toBeGreaterThan(480);
     expect(r.x0).toBeGreaterThanOrEqual(0);
     expect(r.x1).toBeLessThanOrEqual(r.w);
     expect(r.yTop).toBeGreaterThanOrEqual(0);
