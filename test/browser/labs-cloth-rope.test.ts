@@ -42,6 +42,7 @@ interface RopeLab extends Lab {
   outcome(): string;
   level(): number;
   ropePieces(): number;
+  stars(): number;
 }
 
 let h: Harness;
@@ -414,6 +415,10 @@ for (const [device, options] of [
       // L before the level is cleared stays on it (the legend: "next level (once cleared)").
       await g.page.keyboard.press('l');
       expect(await g.page.evaluate(() => (window.game as unknown as RopeLab).level())).toBe(1);
+      // 1.75 s of swinging with nothing done has caught no star, and the readout says so (before,
+      // the swing itself caught two of level 1's stars by 1.4 s: "2 of 3").
+      expect(await g.page.evaluate(() => (window.game as unknown as RopeLab).stars())).toBe(0);
+      await g.waitFor(() => document.body.textContent!.includes('0 of 3'), null);
       const [x, y] = await ropeMiddle(g, 0);
       const played = await g.page.evaluate(() => (window.game as unknown as { sound: { played: number } }).sound.played);
       // A tap 0.12 m beside the rope (about 9 px on the phone, 11 on the desktop): within reach.
