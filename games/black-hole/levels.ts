@@ -8,7 +8,8 @@
  * `createBlackHoleGame` (./rules), and `stepLevel` runs one step of it: the holes drift, the fuel
  * burns while thrusting, then the game's own step (./rules `stepBlackHole`: pull, horizons, lives).
  * Crossing the line clears the level: the step returns 'cleared', `run.summary` says how it went, the
- * next level's holes are laid out and the run waits (no steps) until `beginLevel`.
+ * field is emptied and the run waits (no steps) until `beginLevel` lays out the next level's holes, so
+ * nothing appears on the field while the ship waits.
  *
  * Holes keep M = c^2 r / (2 G) (their drawn radius is their Schwarzschild radius, as in ./rules).
  * Drifting holes move sideways at a constant speed and turn back at the field's edges; they are moved
@@ -112,7 +113,7 @@ export interface LevelSummary {
 
 /** A game played in levels. */
 export interface LevelRun {
-  /** The level being played (or, while `waiting`, the next one, laid out). */
+  /** The level being played (or, while `waiting`, the next one, laid out when it begins). */
   spec: LevelSpec;
   /** Seconds since the level began. */
   time: number;
@@ -157,17 +158,14 @@ export function startLevel(game: BlackHoleGame, level: number): LevelRun {
   return run;
 }
 
-/** Starts the level a cleared run is waiting on (the ship at the start, the clock at 0). No effect unless waiting. */
+/**
+ * Starts the level a cleared run is waiting on: lays out its holes (the field stays empty while
+ * waiting), the ship parked at the start, the clock at 0, the fuel full. No effect unless waiting.
+ */
 export function beginLevel(game: BlackHoleGame, run: LevelRun): void {
   if (!run.waiting) return;
   run.waiting = false;
-  run.parked = true;
-  run.time = 0;
-  run.attemptStart = 0;
-  run.fuelLeft = run.spec.fuel;
-  run.fallsAtStart = game.falls;
-  game.message = levelMessage(run.spec);
-  resetShip(game);
+  layLevel(game, run, run.spec.level);
 }
 
 /** The opening line of a level. */
@@ -186,11 +184,7 @@ function layLevel(game: BlackHoleGame, run: LevelRun, level: number): void {
   run.fuelLeft = spec.fuel;
   run.fallsAtStart = game.falls;
   const world = game.world;
-  for (const h of game.holes) removeBody(world, h);
-  game.holes.length = 0;
-  game.holeRadius.length = 0;
-  game.holeMass.length = 0;
-  run.holeVx.length = 0;
+  clearHoles(game, run);
   const rng = game.rng;
   const G = gravitationalConstant(game),
     c = game.params.c;
@@ -251,6 +245,16 @@ function layLevel(game: BlackHoleGame, run: LevelRun, level: number): void {
   resetShip(game);
 }
 
+/** Removes every hole from the field (and its drift speed). */
+function clearHoles(game: BlackHoleGame, run: LevelRun): void {
+  for (const h of game.holes) removeBody(game.world, h);
+  game.holes.length = 0;
+  game.holeRadius.length = 0;
+  game.holeMass.length = 0;
+  run.holeVx.length = 0;
+  game.version++;
+}
+
 /** Moves drifting holes by one step (dt s), turning them back at the field's edges. */
 function driftHoles(game: BlackHoleGame, run: LevelRun, dt: number): void {
   if (run.spec.drift === 0) return;
@@ -284,8 +288,8 @@ function driftHoles(game: BlackHoleGame, run: LevelRun, dt: number): void {
  * One step of a level: nothing while waiting; else the holes drift, the fuel burns while thrusting
  * (at zero the thrust stops and stays off), the game steps (./rules `stepBlackHole`), and a parked
  * ship (see `LevelRun.parked`) is put back at the start at rest. A crossing of
- * the line becomes 'cleared': a lost life comes back, the summary is kept, the next level is laid out
- * and the run waits.
+ * the line becomes 'cleared': a lost life comes back, the summary is kept, the field is emptied (the
+ * next level is laid out by `beginLevel`) and the run waits with the ship at the start.
  * @returns the game's event, with 'scored' reported as 'cleared', or 'waiting'.
  */
 export function stepLevel(game: BlackHoleGame, run: LevelRun): BlackHoleEvent | 'cleared' | 'waiting' {
@@ -323,8 +327,12 @@ export function stepLevel(game: BlackHoleGame, run: LevelRun): BlackHoleEvent | 
     fuelLeft: run.fuelLeft,
     falls: game.falls - run.fallsAtStart,
   });
-  // ./rules scored one point per hole on screen and laid out one more hole: the levels lay out their own.
-  layLevel(game, run, run.spec.level + 1);
+  // ./rules scored one point per hole on screen and laid out one more hole: the levels lay out their
+  // own, when the next level begins; until then the field is empty and the ship parked at the start.
+  clearHoles(game, run);
+  run.spec = levelSpec(run.spec.level + 1);
+  run.parked = true;
+  resetShip(game);
   setThrust(game, 'none');
   run.waiting = true;
   const s = run.summary;

@@ -1194,7 +1194,14 @@ function draw(world: PhysicsWorld, alpha: number): void {
       banner.text = `Level ${params.level} not cleared  ${stars}\n${t.fallen} of ${lv.pieces.length} pieces fell: bring down half to pass\n${starRule}\n${keys}`;
       showNext(true, 'Try again ↺');
     } else if (last) {
-      banner.text = `All ${LEVEL_COUNT} castles down!  ${stars}\nTotal score ${total()}   Stars ${starsWon} / ${3 * LEVEL_COUNT}\n${starRule}\n${touch ? 'Tap below to play again' : 'L or the button below: play again'}`;
+      // Levels skipped (L before a clear, the level slider or ?level) have no stars: the end screen
+      // names them rather than claiming every castle fell.
+      const skipped = campaign.stars.flatMap((s, k) => (s > 0 ? [] : [k + 1]));
+      const head =
+        skipped.length === 0
+          ? `All ${LEVEL_COUNT} castles down!`
+          : `${LEVEL_COUNT - skipped.length} of ${LEVEL_COUNT} castles down (${skipped.length === 1 ? 'level' : 'levels'} ${skipped.join(', ')} not cleared)`;
+      banner.text = `${head}  ${stars}\nTotal score ${total()}   Stars ${starsWon} / ${3 * LEVEL_COUNT}\n${starRule}\n${touch ? 'Tap below to play again' : 'L or the button below: play again'}`;
       showNext(true, 'Play again from level 1 ▶');
     } else {
       const keys = touch ? 'Tap the button below for the next level, ↺ to try again' : 'L or the button below: next level   R: try again';

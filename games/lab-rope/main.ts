@@ -7,7 +7,7 @@
  *
  * Input: swipe across a rope to cut it (cut.ts: every rope the stroke crosses), or tap on it; drag the
  * ball to push it while a rope still holds it (a mouse joint of limited force). Keys: P pause, N step,
- * R retry, L next level. URL: ?level (1-5), ?links (links a metre, 2-40), ?gravity (0-30 m/s^2).
+ * R retry, L next level (once the level is cleared). URL: ?level (1-5), ?links (links a metre, 2-40), ?gravity (0-30 m/s^2).
  */
 
 import { createActionButton, createPanel, getSound, numberParam, pointerOnCanvas } from '@bitphysics/game-kit';
@@ -115,8 +115,12 @@ const { shell, renderer, app } = started;
 const dock = createLabDock();
 const refit = followView(app, renderer.camera, dock, () => scene.level.view as WorldRect);
 
-/** Goes to the next level (after the last, back to the first). */
+/**
+ * Goes to the next level (after the last, back to the first) once this one is cleared: won now or
+ * earlier in this visit (the legend says "once cleared"; the level slider still goes anywhere).
+ */
 function nextLevel(): void {
+  if (game.outcome !== 'won' && best[params.level - 1]! < 0) return;
   params.level = (params.level % LEVELS.length) + 1;
   shell.reset();
   refit();
@@ -445,6 +449,20 @@ function bannerHeight(): number {
   return BANNER_HEIGHTS[0]!;
 }
 
+/**
+ * Puts the "Next level" button at the bottom corner away from the basket (the bar is centred by
+ * default, over the floor where the ball lands), so the ball in the basket stays in sight.
+ */
+function placeNext(): void {
+  const bar = document.querySelector<HTMLElement>('.bp-action');
+  if (!bar) return;
+  const side = scene.level.basket[0] > 0 ? 'flex-start' : 'flex-end';
+  if (bar.style.justifyContent !== side) {
+    bar.style.justifyContent = side;
+    bar.style.padding = '0 16px';
+  }
+}
+
 /** The banner in the middle of the scene: the level's name at its start, then the outcome. */
 function drawBanner(now: number): void {
   const cam = renderer.camera;
@@ -456,6 +474,7 @@ function drawBanner(now: number): void {
     const last = params.level === LEVELS.length;
     setBanner(`${last ? 'All levels done!' : 'In the basket!'}\n${'★'.repeat(s)}${'☆'.repeat(3 - s)}`, 0x9ff0b8, 1);
     showNext(true, last ? 'Play again ▶' : 'Next level ▶');
+    placeNext();
     return;
   }
   showNext(false);

@@ -70,8 +70,8 @@ export const LEVELS: readonly Level[] = Object.freeze([
     basketWidth: 1.2,
     basketDepth: 0.75,
     stars: [
-      [0, 5.75],
-      [1.6, 6.3],
+      [1.97, 5.15],
+      [1.95, 4.2],
       [1.85, 3.2],
     ],
     view: VIEW,
@@ -103,9 +103,9 @@ export const LEVELS: readonly Level[] = Object.freeze([
     basketWidth: 1.1,
     basketDepth: 0.7,
     stars: [
-      [-1.1, 5.95],
-      [0.7, 6.7],
+      [0.95, 5.85],
       [1.75, 4.9],
+      [2.1, 3.1],
     ],
     blocks: [{ at: [0.75, 1.5], half: [0.12, 1.5] }],
     view: VIEW,
@@ -138,7 +138,7 @@ export const LEVELS: readonly Level[] = Object.freeze([
     basketWidth: 1,
     basketDepth: 0.6,
     stars: [
-      [-0.6, 5.2],
+      [0.1, 5.75],
       [1.2, 6.9],
       [2.1, 4.6],
     ],

@@ -43,6 +43,47 @@ describe('black hole', () => {
   });
 });
 
+describe('black hole, between levels', () => {
+  it('a cleared level leaves the field empty while the ship waits; Enter lays out the next level', async () => {
+    type Bh = BlackHolePage & {
+      paused: boolean;
+      reset(): void;
+      step(): void;
+      ship(): number[];
+      bh: { ship: number; lineY: number; holes: number[]; world: { components: { Position: { y: Float64Array } } } };
+      level: { waiting: boolean; spec: { level: number; holes: number } };
+    };
+    // The ship put just over the green line: the next step clears level 1.
+    const cleared = await g.page.evaluate(() => {
+      const w = window.game as unknown as Bh;
+      w.reset();
+      w.paused = true;
+      w.bh.world.components.Position.y[w.bh.ship % 2 ** 25] = w.bh.lineY + 0.3;
+      w.step();
+      const during = { waiting: w.level.waiting, next: w.level.spec.level, holes: w.bh.holes.length, y: w.ship()[1]! };
+      for (let i = 0; i < 30; i++) w.step();
+      return { during, later: w.bh.holes.length, line: w.bh.lineY };
+    });
+    // Waiting on level 2: no hole on the field (before, level 2's holes were laid out at once, round
+    // the frozen ship), the ship back below the line at the start.
+    expect(cleared.during).toMatchObject({ waiting: true, next: 2, holes: 0 });
+    expect(cleared.during.y).toBeLessThan(cleared.line);
+    expect(cleared.later).toBe(0);
+    await g.page.evaluate(() => {
+      (window.game as unknown as Bh).paused = false;
+    });
+    await g.page.keyboard.press('Enter');
+    const begun = await g.waitFor(() => {
+      const w = window.game as unknown as Bh;
+      return w.level.waiting ? null : { holes: w.bh.holes.length, want: w.level.spec.holes, level: w.level.spec.level };
+    }, null);
+    expect(begun.level).toBe(2);
+    expect(begun.holes).toBe(begun.want);
+    expect(begun.holes).toBeGreaterThan(0);
+    expect(g.errors).toEqual([]);
+  });
+});
+
 describe.each([
   { device: 'desktop', viewport: { width: 1280, height: 800 }, touch: false },
   { device: 'phone', viewport: { width: 390, height: 844 }, touch: true },

@@ -42,6 +42,7 @@ interface RopeLab extends Lab {
   outcome(): string;
   level(): number;
   ropePieces(): number;
+  stars(): number;
 }
 
 let h: Harness;
@@ -440,6 +441,13 @@ for (const [device, options] of [
         w.paused = true;
         w.advance(105);
       });
+      // L before the level is cleared stays on it (the legend: "next level (once cleared)").
+      await g.page.keyboard.press('l');
+      expect(await g.page.evaluate(() => (window.game as unknown as RopeLab).level())).toBe(1);
+      // 1.75 s of swinging with nothing done has caught no star, and the readout says so (before,
+      // the swing itself caught two of level 1's stars by 1.4 s: "2 of 3").
+      expect(await g.page.evaluate(() => (window.game as unknown as RopeLab).stars())).toBe(0);
+      await g.waitFor(() => document.body.textContent!.includes('0 of 3'), null);
       const [x, y] = await ropeMiddle(g, 0);
       const played = await g.page.evaluate(() => (window.game as unknown as { sound: { played: number } }).sound.played);
       // A tap 0.12 m beside the rope (about 9 px on the phone, 11 on the desktop): within reach.
@@ -453,6 +461,17 @@ for (const [device, options] of [
       await g.waitFor(() => (window.game as unknown as RopeLab).outcome() === 'won', null, 30_000);
       // The cut snapped and the win chimed.
       await g.waitFor((n) => (window.game as unknown as { sound: { played: number } }).sound.played >= n + 2, played);
+      // The button leaves the basket (level 1: 1.2 m wide at x = 1.85 m) and the ball landing in it in
+      // sight: it keeps 40 px or more to either side of the basket's column (the centred button of
+      // before came within 19 px of it on the desktop and 3 px into it on the phone).
+      const button = g.page.getByRole('button', { name: 'Next level ▶' });
+      await button.waitFor({ state: 'visible' });
+      const b = (await button.boundingBox())!;
+      const lo = await toPage(g, 1.85 - 0.6, 0),
+        hi = await toPage(g, 1.85 + 0.6, 0);
+      const apart = b.x + b.width < lo.x - 40 || b.x > hi.x + 40;
+      expect(apart, `${device}: button x ${b.x}-${b.x + b.width}, basket x ${lo.x}-${hi.x}`).toBe(true);
+      await g.page.screenshot({ path: `/tmp/rope-won-${device}.png` });
       await press(g.page, 'Next level ▶');
       await g.waitFor(() => (window.game as unknown as RopeLab).level() === 2, null);
       expect(await g.page.evaluate(() => (window.game as unknown as RopeLab).ids().ropes.length)).toBe(2);

@@ -287,7 +287,7 @@ describe('levels', () => {
     expect(canThrust(g, run)).toBe(false);
   });
 
-  test('clearing a level: a summary, one point per hole, a lost life back, the next level laid out, and no steps until it begins', () => {
+  test('clearing a level: a summary, one point per hole, a lost life back, an empty field and no steps until the next level begins', () => {
     const g = createBlackHoleGame({ seed: 3 });
     const run = startLevel(g, 2);
     // One fall first: thrust straight up into the blocker.
@@ -305,12 +305,14 @@ describe('levels', () => {
     expect(g.score).toBe(2);
     expect(run.waiting).toBe(true);
     expect(run.spec.level).toBe(3);
-    expect(g.holes.length).toBe(levelSpec(3).holes);
+    // No hole on the field while it waits: level 3's holes come when it begins.
+    expect(g.holes.length).toBe(0);
     const y = shipY(g);
     expect(stepLevel(g, run)).toBe('waiting');
     expect(shipY(g)).toBe(y);
     beginLevel(g, run);
     expect(run.waiting).toBe(false);
+    expect(g.holes.length).toBe(levelSpec(3).holes);
     expect(g.message).toBe('Level 3: reach the green line.');
     expect(shipY(g)).toBeLessThan(LINE_Y);
     // A clear at full lives keeps three.

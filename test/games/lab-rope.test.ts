@@ -106,6 +106,19 @@ describe('lab-rope levels', () => {
       expect(play(c.level, c.lose, c.losePush ?? c.push ?? 0).outcome).toBe('lost');
     });
 
+  it('no level gives a star before the player acts: 8 s of swinging untouched catches none', () => {
+    // Before, the swing alone caught 2 stars on levels 1 and 3 (by 1.4 s) and 1 on level 5 (0.15 s).
+    LEVELS.forEach((_, i) => {
+      const s = createRopeScene(i, DEFAULTS);
+      const g = new RopeGame(s);
+      for (let k = 0; k < 60 * 8; k++) {
+        step(s.world);
+        g.update();
+      }
+      expect(g.stars(), `level ${i + 1}`).toBe(0);
+    });
+  });
+
   it('a swipe cuts each rope it crosses once; a tap cuts the nearest rope within reach, and nothing beyond it', () => {
     const s = createRopeScene(3, DEFAULTS);
     const { world, ropes, ball } = s;
