@@ -11,7 +11,8 @@
  * plane (green when it is inside the ring).
  * Keys: arrows or W/S/A/D: climb / dive and bank (with "pilot's pitch" in the panel, down pulls up),
  * ramped (./assist.ts rampKey: a tap is a small correction, full stick after 1.25 s held);
- * Q / E: rudder; Shift / Ctrl (or + / -): faster / slower (the throttle: the only input that moves it);
+ * Q / E: rudder; X / Z (or Shift, + / -): faster / slower (the throttle: the only input that moves it;
+ * no Ctrl, which with W closes the browser's tab);
  * C: camera (chase / cockpit); P pause, N step, R reset.
  * Touch: a stick under the scene (up climbs, sideways banks), buttons for speed, rudder and camera.
  * Sound: the engine follows the throttle; chimes for rings, a low tone for a miss, a stall horn,
@@ -123,7 +124,7 @@ const held = new Set<string>();
 const stickInput = { x: 0, y: 0 };
 addEventListener('keydown', (e) => {
   held.add(e.key.toLowerCase());
-  if (e.key === 'Shift' || e.key === 'Control' || e.key.startsWith('Arrow')) e.preventDefault();
+  if (e.key === 'Shift' || e.key.startsWith('Arrow')) e.preventDefault();
 });
 addEventListener('keyup', (e) => {
   held.delete(e.key.toLowerCase());
@@ -178,8 +179,8 @@ function stepWorld(world: PhysicsWorld): void {
   rampKeys(dt);
   const input = pilotInput();
   const s = flightState(world, e);
-  const faster = held.has('shift') || held.has('+') || held.has('='),
-    slower = held.has('control') || held.has('-');
+  const faster = held.has('x') || held.has('shift') || held.has('+') || held.has('='),
+    slower = held.has('z') || held.has('-');
   if (params.assist) {
     const c = assist(s, input, assistState, dt);
     state.aileron = approach(state.aileron, c.aileron, 6, dt);
@@ -308,7 +309,7 @@ const game = await startThreeGame({
   controls: [
     { keys: '↑ ↓ / W S', action: 'climb / dive', touch: 'stick ↑ ↓' },
     { keys: '← → / A D', action: 'bank left / right', touch: 'stick ← →' },
-    { keys: 'Shift / Ctrl', action: 'faster / slower', touch: 'Faster / Slower' },
+    { keys: 'X / Z', action: 'faster / slower', touch: 'Faster / Slower' },
     { keys: 'Q / E', action: 'rudder', touch: 'Rudder' },
     { keys: 'C', action: 'camera: chase / cockpit', touch: 'Camera' },
   ],
