@@ -322,7 +322,7 @@ describe('projects', () => {
     const g = await h.openGame('flight-simulator');
     type Flight = Game & {
       state: { throttle: number; elevator: number };
-      instruments(): { pitch: number; speed: number; heading: number; aoa: number };
+      instruments(): { pitch: number; speed: number; heading: number; aoa: number; roll: number };
     };
     const before = await g.page.evaluate(() => {
       const w = window.game as unknown as Flight;
@@ -357,6 +357,24 @@ describe('projects', () => {
     await g.page.keyboard.down('z');
     await g.waitFor((o) => ((window.game as unknown as Flight).state.throttle < o - 0.1 ? true : null), opened, 30_000);
     await g.page.keyboard.up('z');
+    // A held bank: the chase camera stays at its distance behind (hypot(42, 10) = 43.2 m) in the turn.
+    await g.page.keyboard.down('d');
+    const t1 = await g.page.evaluate(() => (window.game as unknown as Flight).world.time);
+    let far = 0;
+    await g.waitFor(
+      (t) => {
+        const w = window.game as unknown as Flight & { chaseDistance(): number };
+        const o = (window as unknown as { farthest?: number }).farthest ?? 0;
+        (window as unknown as { farthest?: number }).farthest = Math.max(o, Math.abs(w.chaseDistance() - Math.hypot(42, 10)));
+        return w.world.time > t + 4 && Math.abs(w.instruments().roll) > 40 ? true : null;
+      },
+      t1,
+      30_000,
+    );
+    far = await g.page.evaluate(() => (window as unknown as { farthest?: number }).farthest ?? -1);
+    await g.page.keyboard.up('d');
+    expect(far).toBeGreaterThanOrEqual(0);
+    expect(far).toBeLessThan(0.5); // m
     // Right rudder (E) swings the nose right.
     await g.press('r');
     const h0 = await g.page.evaluate(() => (window.game as unknown as Flight).instruments().heading);
