@@ -68,8 +68,11 @@ export interface FlightState {
 
 /** The assist's settings. */
 export const ASSIST = Object.freeze({
-  /** Bank at full sideways stick, rad (50 degrees: a turn of about 1.6 g). */
-  maxBank: 50 * DEG,
+  /**
+   * Bank at full sideways stick, rad (60 degrees: a 2 g level turn, 8.5 degrees/s at 115 m/s, the
+   * wing still well under its stall; the course is laid for 50 degrees, see ./course.ts DESIGN_BANK).
+   */
+  maxBank: 60 * DEG,
   /** Flight-path angle at full stick forward or back, rad. */
   maxClimb: 20 * DEG,
   /** Aileron per radian of bank error (1/rad): full aileron rolls at about 0.5 rad/s at cruise. */

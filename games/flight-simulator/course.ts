@@ -1,8 +1,8 @@
 /**
  * The flight simulator's course: a chain of rings to fly through, laid out from the start along a
- * path that turns and climbs a little more at each ring, always clear of the hills (the first lies
- * on the path flown with no input, a few seconds ahead); and the rule that decides when a ring is
- * passed or missed. Headless (no drawing), so it is tested in node
+ * path that turns and climbs a little more at each ring, each turn within what the aircraft can fly
+ * (`reachable`), always clear of the hills (the first lies on the path flown with no input, a few
+ * seconds ahead); and the rule that decides when a ring is passed or missed. Headless (no drawing), so it is tested in node
  * (test/games/flight-simulator-course.test.ts).
  */
 
@@ -56,12 +56,67 @@ export function ringDifficulty(i: number): number {
 }
 
 /**
+ * Speed of the turn every ring is laid to be reachable with, m/s (the starting throttle's trim speed):
+ * the course assumes a pilot who flies straight on for REACTION_TIME s after a ring, left EXIT_SLACK
+ * off the way the design path came through it, then holds DESIGN_BANK in a level coordinated turn.
+ */
+export const DESIGN_SPEED = 130;
+/** Bank of the turn the course is laid for, rad (50 degrees; the assist gives 60 at full stick: ./assist.ts). */
+export const DESIGN_BANK = (50 * Math.PI) / 180;
+/** Time flown straight on past a ring before the turn to the next one starts, s. */
+export const REACTION_TIME = 2;
+/** Radius of the design turn, m: V^2 / (g tan(bank)), about 1,450 m (a turn rate of 5.2 degrees/s). */
+export const DESIGN_TURN_RADIUS = DESIGN_SPEED ** 2 / (9.81 * Math.tan(DESIGN_BANK));
+
+/**
+ * The design path (REACTION_TIME s straight on, then a turn of DESIGN_TURN_RADIUS, then straight)
+ * from a ring flown through along heading 0 to a point `forward` m ahead and `side` m to one side
+ * (+ right; the turn is to that side): the heading at the point, rad (+ right), or null when the
+ * point lies inside the turn's circle or behind the straight leg (out of reach).
+ * @throws RangeError on a forward or side that is not finite.
+ */
+export function designArrival(forward: number, side: number): number | null {
+  if (!Number.isFinite(forward) || !Number.isFinite(side))
+    throw new RangeError(`designArrival: forward and side must be finite m, got ${forward}, ${side}`);
+  const R = DESIGN_TURN_RADIUS,
+    a = forward - DESIGN_SPEED * REACTION_TIME,
+    b = Math.abs(side);
+  if (a < 0 && b > 0) return null;
+  // The point from the turn's centre (0, R): its distance D; the straight leg's length sqrt(D^2 - R^2).
+  const D2 = a * a + (b - R) * (b - R);
+  if (D2 < R * R) return null;
+  const heading = Math.atan2(b - R, a) - Math.atan2(-R, Math.sqrt(D2 - R * R));
+  return Math.sign(side) * heading;
+}
+
+/**
+ * Heading error at a ring's exit the course allows for, rad: the next ring is reached from up to
+ * this far off the design path's heading there, turned away from the next ring.
+ */
+export const EXIT_SLACK = (10 * Math.PI) / 180;
+
+/**
+ * Whether the design turn reaches a ring `step` m from the ring before at `turn` rad from the way
+ * through it (+ right), when the aircraft leaves that ring EXIT_SLACK off, turned away from it.
+ * @throws RangeError on a step that is not finite and > 0 m or a turn that is not finite.
+ */
+export function reachable(step: number, turn: number): boolean {
+  if (!(step > 0 && Number.isFinite(step))) throw new RangeError(`reachable: step must be finite and > 0 m, got ${step}`);
+  if (!Number.isFinite(turn)) throw new RangeError(`reachable: turn must be finite rad, got ${turn}`);
+  const off = Math.abs(turn) + EXIT_SLACK;
+  return designArrival(step * Math.cos(off), step * Math.sin(off)) !== null;
+}
+
+/**
  * Lays out `count` rings from `start`: the first FIRST_RING_DISTANCE straight ahead at the start
  * height (on the path the aircraft flies with no input), then each ring a step after the one before
  * that grows with its difficulty d = ringDifficulty(i): 800 to 1,100 m apart at d = 0 up to 1,500
- * to 1,800 m at d = 1, turning by up to 8 + 27 d degrees more (within 100 degrees of +x) and
- * changing height by up to 60 + 190 m d, kept between 400 and 1,300 m and at least RING_CLEARANCE
- * above the ground.
+ * to 1,800 m at d = 1, turning by up to 8 + 27 d degrees from the way through the ring before
+ * (within 100 degrees of +x), less where the design turn (`designArrival`: DESIGN_BANK at
+ * DESIGN_SPEED after REACTION_TIME) would not reach it, and changing height by up to 60 + 190 m d,
+ * kept between 400 and 1,300 m and at least RING_CLEARANCE above the ground. The next ring's turn is
+ * measured from the heading the design path arrives with (turned on past the line between the
+ * rings); each ring's way through is the line from the ring before.
  * @throws RangeError on a count that is not an integer >= 1 or a seed or start that is not finite.
  */
 export function layCourse(options: CourseOptions): Ring[] {
@@ -72,14 +127,24 @@ export function layCourse(options: CourseOptions): Ring[] {
   const rng = new Rng(seed);
   const rings: Ring[] = [];
   let [x, y, z] = start;
+  // The way through the ring before (the start: along +x).
   let heading = 0;
   for (let i = 0; i < count; i++) {
     const d = ringDifficulty(i);
     const step = i === 0 ? FIRST_RING_DISTANCE : 800 + 700 * d + rng.range(0, 300);
-    // Turns, kept within 100 degrees of +x so that the course leads on and never folds back.
-    if (i > 0) heading = Math.max(-1.75, Math.min(1.75, heading + rng.range(-1, 1) * (8 + 27 * d) * (Math.PI / 180)));
-    const nx0 = x + step * Math.cos(heading),
-      nz0 = z + step * Math.sin(heading);
+    // The turn asked for, kept within 100 degrees of +x so that the course leads on and never folds
+    // back, then eased until the design turn reaches the ring.
+    let turn = 0;
+    if (i > 0) {
+      const wanted = rng.range(-1, 1) * (8 + 27 * d) * (Math.PI / 180);
+      turn = Math.max(-1.75, Math.min(1.75, heading + wanted)) - heading;
+      while (Math.abs(turn) > 1e-3 && !reachable(step, turn)) turn *= 0.95;
+    }
+    // The aircraft comes through this ring turned on past the line from the one before: the next
+    // ring is laid from the heading the design path arrives with.
+    const arrival = i === 0 ? 0 : (designArrival(step * Math.cos(turn), step * Math.sin(turn)) ?? turn);
+    const nx0 = x + step * Math.cos(heading + turn),
+      nz0 = z + step * Math.sin(heading + turn);
     const ground = terrainHeight(terrain, nx0, nz0);
     const climb = i === 0 ? 0 : rng.range(-1, 1) * (60 + 190 * d);
     const ny0 = Math.max(ground + RING_CLEARANCE, Math.min(1300, Math.max(400, y + climb)));
@@ -88,6 +153,7 @@ export function layCourse(options: CourseOptions): Ring[] {
       dz = nz0 - z,
       length = Math.hypot(dx, dy, dz);
     rings.push({ x: nx0, y: ny0, z: nz0, nx: dx / length, ny: dy / length, nz: dz / length, status: 'ahead' });
+    heading += arrival;
     x = nx0;
     y = ny0;
     z = nz0;

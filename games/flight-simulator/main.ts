@@ -11,7 +11,8 @@
  * plane (green when it is inside the ring).
  * Keys: arrows or W/S/A/D: climb / dive and bank (with "pilot's pitch" in the panel, down pulls up),
  * ramped (./assist.ts rampKey: a tap is a small correction, full stick after 1.25 s held);
- * Q / E: rudder; Shift / Ctrl (or + / -): faster / slower (the throttle: the only input that moves it);
+ * Q / E: rudder; X / Z (or Shift, + / -): faster / slower (the throttle: the only input that moves it;
+ * no Ctrl, which with W closes the browser's tab);
  * C: camera (chase / cockpit); P pause, N step, R reset.
  * Touch: a stick under the scene (up climbs, sideways banks), buttons for speed, rudder and camera.
  * Sound: the engine follows the throttle; chimes for rings, a low tone for a miss, a stall horn,
@@ -123,7 +124,7 @@ const held = new Set<string>();
 const stickInput = { x: 0, y: 0 };
 addEventListener('keydown', (e) => {
   held.add(e.key.toLowerCase());
-  if (e.key === 'Shift' || e.key === 'Control' || e.key.startsWith('Arrow')) e.preventDefault();
+  if (e.key === 'Shift' || e.key.startsWith('Arrow')) e.preventDefault();
 });
 addEventListener('keyup', (e) => {
   held.delete(e.key.toLowerCase());
@@ -178,8 +179,8 @@ function stepWorld(world: PhysicsWorld): void {
   rampKeys(dt);
   const input = pilotInput();
   const s = flightState(world, e);
-  const faster = held.has('shift') || held.has('+') || held.has('='),
-    slower = held.has('control') || held.has('-');
+  const faster = held.has('x') || held.has('shift') || held.has('+') || held.has('='),
+    slower = held.has('z') || held.has('-');
   if (params.assist) {
     const c = assist(s, input, assistState, dt);
     state.aileron = approach(state.aileron, c.aileron, 6, dt);
@@ -308,7 +309,7 @@ const game = await startThreeGame({
   controls: [
     { keys: '↑ ↓ / W S', action: 'climb / dive', touch: 'stick ↑ ↓' },
     { keys: '← → / A D', action: 'bank left / right', touch: 'stick ← →' },
-    { keys: 'Shift / Ctrl', action: 'faster / slower', touch: 'Faster / Slower' },
+    { keys: 'X / Z', action: 'faster / slower', touch: 'Faster / Slower' },
     { keys: 'Q / E', action: 'rudder', touch: 'Rudder' },
     { keys: 'C', action: 'camera: chase / cockpit', touch: 'Camera' },
   ],
@@ -718,10 +719,16 @@ const p3 = [0, 0, 0],
   q4 = [0, 0, 0, 1];
 const drawnQ = new Quaternion(),
   at = new Vector3(),
-  eye = new Vector3(),
   look = new Vector3(),
-  smoothEye = new Vector3();
+  chaseOffset = new Vector3(),
+  smoothOffset = new Vector3();
 let smoothReady = false;
+/** performance.now() of the last frame, ms (the chase camera's smoothing is per second, not per frame). */
+let lastFrame = 0;
+/** The chase camera's distance from the drawn aircraft now, m (tests; 0 in the other views). */
+let chaseDistance = 0;
+/** Time constant of the chase camera's swing round behind the aircraft, s. */
+const CHASE_LAG = 0.25;
 let readoutFrame = 0;
 
 function frame(): void {
@@ -735,22 +742,31 @@ function frame(): void {
       a = crashHeading + Math.PI + 0.12 * u;
     const cx = fireball.position.x + 160 * Math.cos(a),
       cz = fireball.position.z + 160 * Math.sin(a);
+    chaseDistance = 0;
     app.camera.position.set(cx, Math.max(terrainHeight(handles.terrain, cx, cz) + 60, fireball.position.y + 90), cz);
     app.camera.up.set(0, 1, 0);
     app.camera.lookAt(fireball.position);
   } else if (state.camera === 'chase') {
-    eye.set(-42, 10, 0).applyQuaternion(drawnQ).add(at);
-    // Keep the chase camera level-ish: it follows the heading, with the horizon kept level.
+    // Behind and above the aircraft in its own frame. The offset from the aircraft (not the eye's
+    // place in the world) swings round smoothly and keeps its length, so in a turn the camera stays
+    // at the same distance behind instead of trailing off (a lerp of the world position lags by
+    // speed x frame time, more the slower the frames come).
+    chaseOffset.set(-42, 10, 0).applyQuaternion(drawnQ);
+    const t = performance.now();
+    const dt = Math.min(0.2, Math.max(0, (t - lastFrame) / 1000));
+    lastFrame = t;
     if (!smoothReady) {
-      smoothEye.copy(eye);
+      smoothOffset.copy(chaseOffset);
       smoothReady = true;
     }
-    smoothEye.lerp(eye, 0.15);
-    app.camera.position.copy(smoothEye);
+    smoothOffset.lerp(chaseOffset, 1 - Math.exp(-dt / CHASE_LAG)).setLength(chaseOffset.length());
+    app.camera.position.copy(at).add(smoothOffset);
+    chaseDistance = smoothOffset.length();
     app.camera.up.set(0, 1, 0);
     look.set(30, 0, 0).applyQuaternion(drawnQ).add(at);
     app.camera.lookAt(look);
   } else {
+    chaseDistance = 0;
     // From the canopy, over the nose.
     app.camera.position.set(11.5, 2.1, 0).applyQuaternion(drawnQ).add(at);
     app.camera.up.set(0, 1, 0).applyQuaternion(drawnQ);
@@ -844,6 +860,8 @@ shell.expose({
   pathMarker: () => ({ ...pathAim }),
   /** Trees, houses and cloud puffs drawn now, the cloud layers' lowest and highest base (m). */
   scenery: () => scenery.counts(),
+  /** The chase camera's distance from the drawn aircraft now, m (0 in the cockpit view or after a crash). */
+  chaseDistance: () => chaseDistance,
   /** The keyboard's ramped inputs now, each in [-1, 1] (./assist.ts rampKey). */
   keyInput: () => ({ ...keyInput }),
   /** The attitude indicator: shown (cockpit view) and the pitch and roll it drew last, degrees. */

@@ -318,11 +318,11 @@ describe('projects', () => {
     await g.close();
   });
 
-  it('flight-simulator: Shift opens the throttle, up climbs, E yaws right; the wing reads its AoA', async () => {
+  it('flight-simulator: X opens the throttle and Z closes it (no Ctrl), up climbs, E yaws right; the wing reads its AoA', async () => {
     const g = await h.openGame('flight-simulator');
     type Flight = Game & {
       state: { throttle: number; elevator: number };
-      instruments(): { pitch: number; speed: number; heading: number; aoa: number };
+      instruments(): { pitch: number; speed: number; heading: number; aoa: number; roll: number };
     };
     const before = await g.page.evaluate(() => {
       const w = window.game as unknown as Flight;
@@ -331,7 +331,7 @@ describe('projects', () => {
     // Level at the trim speed, the wing meets the air at its 3 degree incidence (the body's AoA is 0).
     expect(before.aoa).toBeGreaterThan(2);
     expect(before.aoa).toBeLessThan(4);
-    await g.page.keyboard.down('Shift');
+    await g.page.keyboard.down('x');
     await g.page.keyboard.down('ArrowUp');
     // Held until the nose has come up (simulated time, not a wall-clock wait, which a loaded machine
     // fills with few frames).
@@ -345,8 +345,36 @@ describe('projects', () => {
       30_000,
     );
     await g.page.keyboard.up('ArrowUp');
-    await g.page.keyboard.up('Shift');
+    await g.page.keyboard.up('x');
     expect(during.pitch).toBeGreaterThan(before.pitch + 1); // degrees: the nose came up
+    // Z closes the throttle; Ctrl (a browser modifier: Ctrl+W closes the tab) leaves it alone.
+    const opened = await g.page.evaluate(() => (window.game as unknown as Flight).state.throttle);
+    await g.page.keyboard.down('Control');
+    const t0 = await g.page.evaluate(() => (window.game as unknown as Flight).world.time);
+    await g.waitFor((t) => ((window.game as unknown as Flight).world.time > t + 0.5 ? true : null), t0, 30_000);
+    await g.page.keyboard.up('Control');
+    expect(await g.page.evaluate(() => (window.game as unknown as Flight).state.throttle)).toBeCloseTo(opened, 6);
+    await g.page.keyboard.down('z');
+    await g.waitFor((o) => ((window.game as unknown as Flight).state.throttle < o - 0.1 ? true : null), opened, 30_000);
+    await g.page.keyboard.up('z');
+    // A held bank: the chase camera stays at its distance behind (hypot(42, 10) = 43.2 m) in the turn.
+    await g.page.keyboard.down('d');
+    const t1 = await g.page.evaluate(() => (window.game as unknown as Flight).world.time);
+    let far = 0;
+    await g.waitFor(
+      (t) => {
+        const w = window.game as unknown as Flight & { chaseDistance(): number };
+        const o = (window as unknown as { farthest?: number }).farthest ?? 0;
+        (window as unknown as { farthest?: number }).farthest = Math.max(o, Math.abs(w.chaseDistance() - Math.hypot(42, 10)));
+        return w.world.time > t + 4 && Math.abs(w.instruments().roll) > 40 ? true : null;
+      },
+      t1,
+      30_000,
+    );
+    far = await g.page.evaluate(() => (window as unknown as { farthest?: number }).farthest ?? -1);
+    await g.page.keyboard.up('d');
+    expect(far).toBeGreaterThanOrEqual(0);
+    expect(far).toBeLessThan(0.5); // m
     // Right rudder (E) swings the nose right.
     await g.press('r');
     const h0 = await g.page.evaluate(() => (window.game as unknown as Flight).instruments().heading);

@@ -2,7 +2,7 @@
  * The flight simulator's flight assist (games/flight-simulator/assist.ts), headless: the aircraft
  * scene flown by the assist's control law as the game flies it (15 degrees of control authority,
  * the control surfaces set every 1/60 s step). A bank left alone rolls level, full stick holds a
- * 50 degree bank in a level turn at the rate a coordinated turn has, full stick back climbs at the
+ * 60 degree bank in a level turn at the rate a coordinated turn has, full stick back climbs at the
  * 20 degree path asked for without a stall.
  */
 
@@ -88,7 +88,7 @@ describe('flight assist', () => {
     expect(Math.abs(height(f) - 900)).toBeLessThan(5);
   });
 
-  it('full stick right: a 50 degree bank within 4 s and a level turn at the rate g tan(bank) / V', () => {
+  it('full stick right: a 60 degree bank within 4 s and a level turn at the rate g tan(bank) / V', () => {
     const f = start();
     fly(f, { roll: 1 }, 4);
     expect(Math.abs(flightState(f.world, f.h.body).bank - ASSIST.maxBank)).toBeLessThan(3 * DEG);
