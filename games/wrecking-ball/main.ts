@@ -933,6 +933,7 @@ plan.addEventListener('click', (event) => {
 // HINT_SHOWN s after a tap on open ground (which moves the hook, not the ball).
 const hint = document.createElement('div');
 hint.dataset.hud = 'tap-hint';
+hint.dataset.sceneOverlay = '';
 hint.setAttribute('role', 'status');
 hint.style.cssText =
   'position: absolute; left: 50%; top: 10px; transform: translateX(-50%); max-width: 90%; padding: 6px 12px; border-radius: 16px; background: rgba(16, 20, 28, 0.78); color: #ffe08a; font: 600 15px/1.3 system-ui, sans-serif; text-align: center; pointer-events: none; z-index: 2';
