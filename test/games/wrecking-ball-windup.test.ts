@@ -22,7 +22,7 @@ interface Tap {
   first: string;
 }
 
-/** Plays level `level` as above: one tap at each structure, two rounds. */
+/** Plays level `level` as above: one tap at each structure, then again from the first, four taps in all (the later ones while the ball still swings). */
 function play(level: number): Tap[] {
   const world = createPhysicsWorld(wreckingBallWorldOptions());
   const h = buildWreckingBall(world, { level });
@@ -35,7 +35,7 @@ function play(level: number): Tap[] {
     else groups.push([p]);
   }
   for (let k = 0; k < 30; k++) step(world);
-  for (const g of [...groups, ...groups].slice(0, 6)) {
+  for (const g of [...groups, ...groups].slice(0, 4)) {
     const standing = g.filter((p) => !p.fallen).sort((a, b) => a.y0 - b.y0);
     if (standing.length === 0) continue;
     const piece = standing[Math.floor(standing.length / 3)]!;
@@ -100,7 +100,7 @@ describe('wrecking-ball: tap to hit', () => {
     // Measured: 25 taps, 25 hit, 19 tapped pieces fell, median 3.22 s, mean 4.01 s, longest 12.0 s
     // (before the planned swing, with wind-ups: 23 taps, 15 hit, 13 fell, median 6.87 s, mean 9.34 s,
     // longest 14.18 s).
-    expect(taps.length).toBeGreaterThan(20);
+    expect(taps.length).toBeGreaterThan(14);
     expect(hit.length).toBeGreaterThanOrEqual(taps.length - 2);
     expect(median).toBeLessThan(4);
     expect(taps.filter((t) => t.fell).length).toBeGreaterThanOrEqual(Math.ceil(0.6 * taps.length));
