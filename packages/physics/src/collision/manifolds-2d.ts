@@ -1,3 +1,5 @@
+import { MAX_MANIFOLDS } from './manifold-limits-2d.js';
+
 /**
  * Storage of shape contacts (2D): one row per manifold (a touching pair of shapes, up to two points),
  * structure of arrays grown by doubling, kept in `world.collision.shapes`. Like the ball contacts of
@@ -179,10 +181,12 @@ export function createManifoldBuffer(capacity = 256): ManifoldBuffer {
 
 /**
  * Grows `buf` (doubling) to hold at least `needed` rows, keeping rows 0..count-1.
+ * @throws RangeError if `needed` is above MAX_MANIFOLDS.
  * @category Collision
  */
 export function growManifoldBuffer(buf: ManifoldBuffer, needed: number): void {
   if (needed <= buf.capacity) return;
+  if (needed > MAX_MANIFOLDS) throw new RangeError(`growManifoldBuffer: needed must be at most ${MAX_MANIFOLDS} manifolds, got ${needed}`);
   let cap = buf.capacity;
   while (cap < needed) cap *= 2;
   const rec = buf as unknown as Record<string, Float64Array | Int32Array | Uint32Array | Uint8Array>;

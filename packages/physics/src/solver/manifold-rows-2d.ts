@@ -1,3 +1,4 @@
+import { MAX_MANIFOLDS } from '../collision/manifold-limits-2d.js';
 import type { CollisionState } from '../collision/state.js';
 import type { PhysicsWorld } from '../world/options.js';
 import {
@@ -206,10 +207,10 @@ export function storeManifoldImpulses(cs: CollisionState): void {
 export function warmStartManifolds(cs: CollisionState): void {
   const R = cs.shapes.solverRows,
     sb = cs.bodyState;
-  for (let i = 0, n = cs.shapes.manifolds.count; i < n; i++) {
+  for (let i = 0, n = Math.min(cs.shapes.manifolds.count, MAX_MANIFOLDS); i < n; i++) {
     const r = i * Row.Stride;
-    const a = R[r + Row.BodyA]! * BS2_STRIDE,
-      b = R[r + Row.BodyB]! * BS2_STRIDE;
+    const a = (R[r + Row.BodyA]! | 0) * BS2_STRIDE,
+      b = (R[r + Row.BodyB]! | 0) * BS2_STRIDE;
     const mA = sb[a + BS2_INV_MASS]!,
       iA = sb[a + BS2_INV_INERTIA]!,
       mB = sb[b + BS2_INV_MASS]!,
@@ -267,6 +268,46 @@ function pushes(R: Float64Array, r: number): boolean {
 }
 
 /**
+ * The two normal impulses x of the manifold whose packed row starts at `r`, from the linear
+ * complementarity problem K x + c = w, x >= 0, w >= 0, x . w = 0 with the row's block K (Box2D 2.x's
+ * block solver: its four cases tried in turn, both points pushing first, then one point letting go,
+ * then both). Writes x as the row's normal impulses and returns true, or returns false and leaves the
+ * row as it was if no case holds.
+ */
+function solveBlock(R: Float64Array, r: number, c1: number, c2: number): boolean {
+  const K11 = R[r + Row.K11]!,
+    K22 = R[r + Row.K22]!,
+    K12 = R[r + Row.K12]!;
+  const B11 = R[r + Row.B11]!,
+    B12 = R[r + Row.B12]!,
+    B22 = R[r + Row.B22]!;
+  let n1 = -(B11 * c1 + B12 * c2),
+    n2 = -(B12 * c1 + B22 * c2);
+  let ok = n1 >= 0 && n2 >= 0;
+  // A point that lets go (one or both impulses 0: an impact undone, a box lifting off an edge).
+  if (!ok) {
+    n1 = -c1 / K11;
+    n2 = 0;
+    ok = n1 >= 0 && K12 * n1 + c2 >= 0;
+  }
+  if (!ok) {
+    n1 = 0;
+    n2 = -c2 / K22;
+    ok = n2 >= 0 && K12 * n2 + c1 >= 0;
+  }
+  if (!ok) {
+    n1 = 0;
+    n2 = 0;
+    ok = c1 >= 0 && c2 >= 0;
+  }
+  if (ok) {
+    R[r + Row.Point0 + Point.NormalImpulse] = n1;
+    R[r + Row.Point0 + Point.Stride + Point.NormalImpulse] = n2;
+  }
+  return ok;
+}
+
+/**
  * One pass over the manifolds: normal rows (soft bias if `useBias`), friction, rolling resistance, with
  * the softness `prepareManifolds` chose.
  * @category Collision
@@ -278,12 +319,20 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean)
     base = cs.shapes.angleBase;
   const sd = cs.shapes.softness,
     sr = cs.shapes.rigidSoftness;
+  const biasSoft = sd[0]!,
+    massSoft = sd[1]!,
+    impulseSoft = sd[2]!,
+    biasRigid = sr[0]!,
+    massRigid = sr[1]!,
+    impulseRigid = sr[2]!;
   const invH = 1 / hs,
     push = cs.settings.contactPushSpeed;
-  for (let i = 0, n = cs.shapes.manifolds.count; i < n; i++) {
+  // The row count bounded by MAX_MANIFOLDS and the body indices made integers (`| 0`: the rows hold
+  // doubles) let V8 compute every offset below in 32-bit integers without overflow checks.
+  for (let i = 0, n = Math.min(cs.shapes.manifolds.count, MAX_MANIFOLDS); i < n; i++) {
     const r = i * Row.Stride;
-    const ia = R[r + Row.BodyA]!,
-      ib = R[r + Row.BodyB]!;
+    const ia = R[r + Row.BodyA]! | 0,
+      ib = R[r + Row.BodyB]! | 0;
     const a = ia * BS2_STRIDE,
       b = ib * BS2_STRIDE;
     const mA = sb[a + BS2_INV_MASS]!,
@@ -305,12 +354,45 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean)
     const nx = R[r + Row.Nx]!,
       ny = R[r + Row.Ny]!;
     const rigidPartner = mA === 0 || mB === 0;
-    const biasRate = rigidPartner ? sr[0]! : sd[0]!,
-      softMass = rigidPartner ? sr[1]! : sd[1]!,
-      softImpulse = rigidPartner ? sr[2]! : sd[2]!;
-    const m = R[r + Row.PointCount]!;
+    const biasRate = rigidPartner ? biasRigid : biasSoft,
+      softMass = rigidPartner ? massRigid : massSoft,
+      softImpulse = rigidPartner ? impulseRigid : impulseSoft;
+    // Points 1 and 2 unrolled, their anchors read once. A one-point row reads its unused second
+    // point's slots (inside the row) and never uses them.
+    const two = R[r + Row.PointCount] === 2;
     const o1 = r + Row.Point0,
       o2 = o1 + Point.Stride;
+    const r1ax = R[o1 + Point.RAx]!,
+      r1ay = R[o1 + Point.RAy]!,
+      r1bx = R[o1 + Point.RBx]!,
+      r1by = R[o1 + Point.RBy]!;
+    const r2ax = R[o2 + Point.RAx]!,
+      r2ay = R[o2 + Point.RAy]!,
+      r2bx = R[o2 + Point.RBx]!,
+      r2by = R[o2 + Point.RBy]!;
+    const s1 = R[o1 + Point.Separation]! + (dbx - tb * r1by - dax + ta * r1ay) * nx + (dby + tb * r1bx - day - ta * r1ax) * ny;
+    const s2 = R[o2 + Point.Separation]! + (dbx - tb * r2by - dax + ta * r2ay) * nx + (dby + tb * r2bx - day - ta * r2ax) * ny;
+    // Each normal row's regime: speculative (s > 0: bias s / h_s, rigid) or, with the bias on, soft.
+    let b1 = 0,
+      m1 = 1,
+      i1 = 0,
+      b2 = 0,
+      m2 = 1,
+      i2 = 0;
+    if (s1 > 0) b1 = s1 * invH;
+    else if (useBias) {
+      b1 = biasRate * s1;
+      if (b1 < -push) b1 = -push;
+      m1 = softMass;
+      i1 = softImpulse;
+    }
+    if (s2 > 0) b2 = s2 * invH;
+    else if (useBias) {
+      b2 = biasRate * s2;
+      if (b2 < -push) b2 = -push;
+      m2 = softMass;
+      i2 = softImpulse;
+    }
     let total = 0;
     let solved = false;
     if (R[r + Row.BlockValid] === 1) {
@@ -318,36 +400,6 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean)
       // x . w = 0 (Box2D 2.x's block solver, its four cases tried in turn), with x the new accumulated
       // impulses and c from each row's own regime: c_i = s_m (v_n,i + bias_i) - (1 - s_i) (K x_old)_i,
       // which is the soft row's update written for both rows (s_m, s_i its mass and impulse scales).
-      const r1ax = R[o1 + Point.RAx]!,
-        r1ay = R[o1 + Point.RAy]!,
-        r1bx = R[o1 + Point.RBx]!,
-        r1by = R[o1 + Point.RBy]!;
-      const r2ax = R[o2 + Point.RAx]!,
-        r2ay = R[o2 + Point.RAy]!,
-        r2bx = R[o2 + Point.RBx]!,
-        r2by = R[o2 + Point.RBy]!;
-      const s1 = R[o1 + Point.Separation]! + (dbx - tb * r1by - dax + ta * r1ay) * nx + (dby + tb * r1bx - day - ta * r1ax) * ny;
-      const s2 = R[o2 + Point.Separation]! + (dbx - tb * r2by - dax + ta * r2ay) * nx + (dby + tb * r2bx - day - ta * r2ax) * ny;
-      let b1 = 0,
-        m1 = 1,
-        i1 = 0,
-        b2 = 0,
-        m2 = 1,
-        i2 = 0;
-      if (s1 > 0) b1 = s1 * invH;
-      else if (useBias) {
-        b1 = biasRate * s1;
-        if (b1 < -push) b1 = -push;
-        m1 = softMass;
-        i1 = softImpulse;
-      }
-      if (s2 > 0) b2 = s2 * invH;
-      else if (useBias) {
-        b2 = biasRate * s2;
-        if (b2 < -push) b2 = -push;
-        m2 = softMass;
-        i2 = softImpulse;
-      }
       // Soft rows (overlap with bias) that both push are solved as a block too. One point after the
       // other, a column of light boxes under a heavy one (1 kg boxes, 100 kg on top) tips its boxes a
       // little at every pass, the tilt grows and the column buckles; the block keeps the two points'
@@ -359,36 +411,13 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean)
       const K11 = R[r + Row.K11]!,
         K22 = R[r + Row.K22]!,
         K12 = R[r + Row.K12]!;
-      const B11 = R[r + Row.B11]!,
-        B12 = R[r + Row.B12]!,
-        B22 = R[r + Row.B22]!;
       const c1 = m1 * (vn1 + b1) - (1 - i1) * (K11 * l1 + K12 * l2);
       const c2 = m2 * (vn2 + b2) - (1 - i2) * (K12 * l1 + K22 * l2);
-      let n1 = -(B11 * c1 + B12 * c2),
-        n2 = -(B12 * c1 + B22 * c2);
-      const both = n1 >= 0 && n2 >= 0;
-      let ok = both;
-      // A point that lets go (one or both impulses 0: an impact undone, a box lifting off an edge).
-      if (!both) {
-        n1 = -c1 / K11;
-        n2 = 0;
-        ok = n1 >= 0 && K12 * n1 + c2 >= 0;
-      }
-      if (!both && !ok) {
-        n1 = 0;
-        n2 = -c2 / K22;
-        ok = n2 >= 0 && K12 * n2 + c1 >= 0;
-      }
-      if (!both && !ok) {
-        n1 = 0;
-        n2 = 0;
-        ok = c1 >= 0 && c2 >= 0;
-      }
-      if (ok) {
+      if (solveBlock(R, r, c1, c2)) {
+        const n1 = R[o1 + Point.NormalImpulse]!,
+          n2 = R[o2 + Point.NormalImpulse]!;
         const d1 = n1 - l1,
           d2 = n2 - l2;
-        R[o1 + Point.NormalImpulse] = n1;
-        R[o2 + Point.NormalImpulse] = n2;
         if (d1 > R[o1 + Point.MaxNormalImpulse]!) R[o1 + Point.MaxNormalImpulse] = d1;
         if (d2 > R[o2 + Point.MaxNormalImpulse]!) R[o2 + Point.MaxNormalImpulse] = d2;
         total = n1 + n2;
@@ -405,23 +434,16 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean)
         solved = true;
       }
     }
-    for (let p = 0; p < m && !solved; p++) {
+    for (let p = 0; p < (two ? 2 : 1) && !solved; p++) {
+      // Point after point, with the velocities the one before left.
       const o = o1 + p * Point.Stride;
       const rax = R[o + Point.RAx]!,
         ray = R[o + Point.RAy]!,
         rbx = R[o + Point.RBx]!,
         rby = R[o + Point.RBy]!;
-      const s = R[o + Point.Separation]! + (dbx - tb * rby - dax + ta * ray) * nx + (dby + tb * rbx - day - ta * rax) * ny;
-      let bias = 0,
-        massScale = 1,
-        impulseScale = 0;
-      if (s > 0) bias = s * invH;
-      else if (useBias) {
-        bias = biasRate * s;
-        massScale = softMass;
-        impulseScale = softImpulse;
-        if (bias < -push) bias = -push;
-      }
+      const bias = p === 0 ? b1 : b2,
+        massScale = p === 0 ? m1 : m2,
+        impulseScale = p === 0 ? i1 : i2;
       const vn = (vbx - wb * rby - vax + wa * ray) * nx + (vby + wb * rbx - vay - wa * rax) * ny;
       const old = R[o + Point.NormalImpulse]!;
       let next = old - R[o + Point.NormalMass]! * massScale * (vn + bias) - impulseScale * old;
@@ -439,30 +461,45 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean)
       vby += mB * Py;
       wb += iB * (rbx * Py - rby * Px);
     }
+    // Friction, point 1 then point 2: |lambda_t| <= bound lambda_n.
     const bound = R[r + Row.FrictionBound]!;
-    for (let p = 0; p < m; p++) {
-      const o = o1 + p * Point.Stride;
-      const rax = R[o + Point.RAx]!,
-        ray = R[o + Point.RAy]!,
-        rbx = R[o + Point.RBx]!,
-        rby = R[o + Point.RBy]!;
-      const dvx = vbx - wb * rby - vax + wa * ray,
-        dvy = vby + wb * rbx - vay - wa * rax;
+    {
+      const dvx = vbx - wb * r1by - vax + wa * r1ay,
+        dvy = vby + wb * r1bx - vay - wa * r1ax;
       const vt = -dvx * ny + dvy * nx;
-      const old = R[o + Point.TangentImpulse]!,
-        maxF = bound * R[o + Point.NormalImpulse]!;
-      let next = old - R[o + Point.TangentMass]! * vt;
+      const old = R[o1 + Point.TangentImpulse]!,
+        maxF = bound * R[o1 + Point.NormalImpulse]!;
+      let next = old - R[o1 + Point.TangentMass]! * vt;
       next = next < -maxF ? -maxF : next > maxF ? maxF : next;
       const dl = next - old;
-      R[o + Point.TangentImpulse] = next;
+      R[o1 + Point.TangentImpulse] = next;
       const Px = -dl * ny,
         Py = dl * nx;
       vax -= mA * Px;
       vay -= mA * Py;
-      wa -= iA * (rax * Py - ray * Px);
+      wa -= iA * (r1ax * Py - r1ay * Px);
       vbx += mB * Px;
       vby += mB * Py;
-      wb += iB * (rbx * Py - rby * Px);
+      wb += iB * (r1bx * Py - r1by * Px);
+    }
+    if (two) {
+      const dvx = vbx - wb * r2by - vax + wa * r2ay,
+        dvy = vby + wb * r2bx - vay - wa * r2ax;
+      const vt = -dvx * ny + dvy * nx;
+      const old = R[o2 + Point.TangentImpulse]!,
+        maxF = bound * R[o2 + Point.NormalImpulse]!;
+      let next = old - R[o2 + Point.TangentMass]! * vt;
+      next = next < -maxF ? -maxF : next > maxF ? maxF : next;
+      const dl = next - old;
+      R[o2 + Point.TangentImpulse] = next;
+      const Px = -dl * ny,
+        Py = dl * nx;
+      vax -= mA * Px;
+      vay -= mA * Py;
+      wa -= iA * (r2ax * Py - r2ay * Px);
+      vbx += mB * Px;
+      vby += mB * Py;
+      wb += iB * (r2bx * Py - r2by * Px);
     }
     const roll = R[r + Row.Rolling]!;
     if (roll > 0) {
@@ -494,7 +531,7 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean)
  */
 export function accumulateManifoldImpulses(cs: CollisionState): void {
   const R = cs.shapes.solverRows;
-  for (let i = 0, n = cs.shapes.manifolds.count; i < n; i++) {
+  for (let i = 0, n = Math.min(cs.shapes.manifolds.count, MAX_MANIFOLDS); i < n; i++) {
     const r = i * Row.Stride;
     for (let p = 0, m = R[r + Row.PointCount]!; p < m; p++) {
       const o = r + Row.Point0 + p * Point.Stride;
@@ -520,8 +557,8 @@ export function applyManifoldRestitution(world: PhysicsWorld): void {
     const r = i * Row.Stride;
     const e = R[r + Row.Restitution]!;
     if (e === 0) continue;
-    const a = R[r + Row.BodyA]! * BS2_STRIDE,
-      b = R[r + Row.BodyB]! * BS2_STRIDE;
+    const a = (R[r + Row.BodyA]! | 0) * BS2_STRIDE,
+      b = (R[r + Row.BodyB]! | 0) * BS2_STRIDE;
     const mA = sb[a + BS2_INV_MASS]!,
       iA = sb[a + BS2_INV_INERTIA]!,
       mB = sb[b + BS2_INV_MASS]!,
@@ -558,38 +595,15 @@ export function applyManifoldRestitution(world: PhysicsWorld): void {
         const vn2 = (vbx - wb * r2by - vax + wa * r2ay) * nx + (vby + wb * r2bx - vay - wa * r2ax) * ny;
         const l1 = R[o1 + Point.NormalImpulse]!,
           l2 = R[o2 + Point.NormalImpulse]!;
-        const B11 = R[r + Row.B11]!,
-          B12 = R[r + Row.B12]!,
-          B22 = R[r + Row.B22]!;
         const K11 = R[r + Row.K11]!,
           K22 = R[r + Row.K22]!,
           K12 = R[r + Row.K12]!;
         // K x + c = w >= 0, x >= 0, x . w = 0, with w_i = v_n,i + e v_n0,i after the impulses x.
         const c1 = vn1 + e * v1 - (K11 * l1 + K12 * l2),
           c2 = vn2 + e * v2 - (K12 * l1 + K22 * l2);
-        let n1 = -(B11 * c1 + B12 * c2),
-          n2 = -(B12 * c1 + B22 * c2);
-        let ok = n1 >= 0 && n2 >= 0;
-        if (!ok) {
-          n1 = -c1 / K11;
-          n2 = 0;
-          ok = n1 >= 0 && K12 * n1 + c2 >= 0;
-        }
-        if (!ok) {
-          n1 = 0;
-          n2 = -c2 / K22;
-          ok = n2 >= 0 && K12 * n2 + c1 >= 0;
-        }
-        if (!ok) {
-          n1 = 0;
-          n2 = 0;
-          ok = c1 >= 0 && c2 >= 0;
-        }
-        if (ok) {
-          const d1 = n1 - l1,
-            d2 = n2 - l2;
-          R[o1 + Point.NormalImpulse] = n1;
-          R[o2 + Point.NormalImpulse] = n2;
+        if (solveBlock(R, r, c1, c2)) {
+          const d1 = R[o1 + Point.NormalImpulse]! - l1,
+            d2 = R[o2 + Point.NormalImpulse]! - l2;
           R[o1 + Point.TotalNormalImpulse] = R[o1 + Point.TotalNormalImpulse]! + d1;
           R[o2 + Point.TotalNormalImpulse] = R[o2 + Point.TotalNormalImpulse]! + d2;
           const P1x = d1 * nx,
