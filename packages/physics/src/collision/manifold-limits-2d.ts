@@ -8,4 +8,4 @@
  */
 
 /** Most manifolds a step may hold. */
-export const MAX_MANIFOLDS = 16_777_216;
+export const MAX_MANIFOLDS = 16777216;
