@@ -177,7 +177,10 @@ function pushes(R: Float64Array, r: number): boolean {
  * complementarity problem K x + c = w, x >= 0, w >= 0, x . w = 0 with the row's block K (Box2D 2.x's
  * block solver: its four cases tried in turn, both points pushing first, then one point letting go,
  * then both). Writes x as the row's normal impulses and returns true, or returns false and leaves the
- * row as it was if no case holds.
+ * row as it was if no case holds. Soft rows (overlap with bias) that both push are solved as a block
+ * too: one point after the other, a column of light boxes under a heavy one (1 kg boxes, 100 kg on
+ * top) tips its boxes a little at every pass, the tilt grows and the column buckles; the block keeps
+ * the two points' impulses symmetric, and the column stands.
  */
 function solveBlock(R: Float64Array, r: number, c1: number, c2: number): boolean {
   const K11 = R[r + MR_K11]!,
@@ -214,10 +217,11 @@ function solveBlock(R: Float64Array, r: number, c1: number, c2: number): boolean
 
 /**
  * One pass over the manifolds: normal rows (soft bias if `useBias`), friction, rolling resistance, with
- * the softness `prepareManifolds` chose.
+ * the softness `prepareManifolds` chose. With `accumulate` (the substep's last pass), each point's
+ * impulse is then added to its step total, as accumulateManifoldImpulses does.
  * @category Collision
  */
-export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean): void {
+export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean, accumulate = false): void {
   const R = cs.shapes.solverRows,
     sb = cs.bodyState,
     ex = cs.bodyExtra,
@@ -305,10 +309,6 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean)
       // x . w = 0 (Box2D 2.x's block solver, its four cases tried in turn), with x the new accumulated
       // impulses and c from each row's own regime: c_i = s_m (v_n,i + bias_i) - (1 - s_i) (K x_old)_i,
       // which is the soft row's update written for both rows (s_m, s_i its mass and impulse scales).
-      // Soft rows (overlap with bias) that both push are solved as a block too. One point after the
-      // other, a column of light boxes under a heavy one (1 kg boxes, 100 kg on top) tips its boxes a
-      // little at every pass, the tilt grows and the column buckles; the block keeps the two points'
-      // impulses symmetric, and the column stands.
       const vn1 = (vbx - wb * r1by - vax + wa * r1ay) * nx + (vby + wb * r1bx - vay - wa * r1ax) * ny;
       const vn2 = (vbx - wb * r2by - vax + wa * r2ay) * nx + (vby + wb * r2bx - vay - wa * r2ax) * ny;
       const l1 = R[o1 + MP_NORMAL_IMPULSE]!,
@@ -427,11 +427,16 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean)
       sb[a + BS2_PUSHED] = 1;
       sb[b + BS2_PUSHED] = 1;
     }
+    if (accumulate) {
+      R[o1 + MP_TOTAL_NORMAL_IMPULSE] = R[o1 + MP_TOTAL_NORMAL_IMPULSE]! + R[o1 + MP_NORMAL_IMPULSE]!;
+      if (two) R[o2 + MP_TOTAL_NORMAL_IMPULSE] = R[o2 + MP_TOTAL_NORMAL_IMPULSE]! + R[o2 + MP_NORMAL_IMPULSE]!;
+    }
   }
 }
 
 /**
- * Adds each point's substep impulse to its step total (call once per substep, after relaxing).
+ * Adds each point's substep impulse to its step total (once per substep, after relaxing; the last
+ * relax pass of solveManifolds does it when asked).
  * @category Collision
  */
 export function accumulateManifoldImpulses(cs: CollisionState): void {
