@@ -1,3 +1,5 @@
+import { MAX_MANIFOLDS } from './manifold-limits-2d.js';
+
 /**
  * Storage of shape contacts (2D): one row per manifold (a touching pair of shapes, up to two points),
  * structure of arrays grown by doubling, kept in `world.collision.shapes`. Like the ball contacts of
@@ -33,30 +35,8 @@ export interface ManifoldBuffer {
   nx: Float64Array;
   /** Unit normal from A to B, y (`nx` its x). */
   ny: Float64Array;
-  /** Combined kinetic friction coefficient sqrt(mu_A mu_B). */
-  friction: Float64Array;
-  /** Friction bound used this step: the static coefficient while the contact sticks, else `friction`. */
-  frictionBound: Float64Array;
-  /** Combined restitution max(e_A, e_B). */
-  restitution: Float64Array;
-  /** Rolling resistance torque per unit normal impulse, m (coefficient times the rolling radius); 0 for none. */
-  rolling: Float64Array;
-  /** Effective rotational mass of the rolling constraint, kg m^2. */
-  rollingMass: Float64Array;
-  /** Accumulated angular impulse of the rolling constraint, N m s. */
+  /** Accumulated angular impulse of the rolling constraint, N m s (written after the solve). */
   rollingImpulse: Float64Array;
-  /**
-   * Inverse of the 2 x 2 normal effective-mass matrix of a two-point manifold (rows 11, 12, 22, 1/kg),
-   * for the block solve; `blockValid` 0 when the points are too close to independent (the matrix is
-   * ill-conditioned) and are solved one after the other instead. This field: the first diagonal entry.
-   */
-  block11: Float64Array;
-  /** Off-diagonal entry of the inverse block matrix, 1/kg. */
-  block12: Float64Array;
-  /** Second diagonal entry of the inverse block matrix, 1/kg. */
-  block22: Float64Array;
-  /** 1 if the block solve may be used for the row. */
-  blockValid: Uint8Array;
   /** 1 if the pair touched at the end of the step (a point carried a normal impulse, or overlapped). */
   touching: Uint8Array;
   /** Spawn stamp of shape A when the row was made (0 for the static world), to validate the warm start. */
@@ -77,37 +57,19 @@ export interface ManifoldBuffer {
   rBx: Float64Array;
   /** Per point: anchor from B's centre of mass to the point, y, m. */
   rBy: Float64Array;
-  /** Per point: separation at the start of the step, m (< 0: overlap). */
+  /** Per point: separation at the start of the step (from where the solver starts the bodies once prepareManifolds ran), m (< 0: overlap). */
   separation: Float64Array;
-  /** Per point: effective mass along the normal, kg. */
-  normalMass: Float64Array;
-  /** Per point: effective mass along the tangent, kg. */
-  tangentMass: Float64Array;
-  /** Per point: accumulated normal impulse of a substep, N s (warm-started from the previous step). */
+  /** Per point: accumulated normal impulse of the step's last substep, N s (written after the solve: the next step's warm start). */
   normalImpulse: Float64Array;
-  /** Per point: accumulated tangent (friction) impulse, N s. */
+  /** Per point: accumulated tangent (friction) impulse of the step's last substep, N s (written after the solve). */
   tangentImpulse: Float64Array;
-  /** Per point: largest normal impulse increment of any substep this step, N s (restitution applies only if > 0). */
-  maxNormalImpulse: Float64Array;
   /** Per point: normal impulse summed over the step's substeps, N s. */
   totalNormalImpulse: Float64Array;
   /** Per point: normal relative velocity at the start of the step, m/s (negative: approaching). */
   relativeVelocity: Float64Array;
 }
 
-const ROW_FLOAT = [
-  'nx',
-  'ny',
-  'friction',
-  'frictionBound',
-  'restitution',
-  'rolling',
-  'rollingMass',
-  'rollingImpulse',
-  'block11',
-  'block12',
-  'block22',
-] as const;
+const ROW_FLOAT = ['nx', 'ny', 'rollingImpulse'] as const;
 const ROW_INT = ['shapeA', 'shapeB', 'bodyA', 'bodyB', 'ia', 'ib'] as const;
 const POINT_FLOAT = [
   'px',
@@ -117,11 +79,8 @@ const POINT_FLOAT = [
   'rBx',
   'rBy',
   'separation',
-  'normalMass',
-  'tangentMass',
   'normalImpulse',
   'tangentImpulse',
-  'maxNormalImpulse',
   'totalNormalImpulse',
   'relativeVelocity',
 ] as const;
@@ -146,16 +105,7 @@ export function createManifoldBuffer(capacity = 256): ManifoldBuffer {
     pointCount: new Uint8Array(capacity),
     nx: f(),
     ny: f(),
-    friction: f(),
-    frictionBound: f(),
-    restitution: f(),
-    rolling: f(),
-    rollingMass: f(),
     rollingImpulse: f(),
-    block11: f(),
-    block12: f(),
-    block22: f(),
-    blockValid: new Uint8Array(capacity),
     touching: new Uint8Array(capacity),
     stampA: new Uint32Array(capacity),
     stampB: new Uint32Array(capacity),
@@ -167,11 +117,8 @@ export function createManifoldBuffer(capacity = 256): ManifoldBuffer {
     rBx: p(),
     rBy: p(),
     separation: p(),
-    normalMass: p(),
-    tangentMass: p(),
     normalImpulse: p(),
     tangentImpulse: p(),
-    maxNormalImpulse: p(),
     totalNormalImpulse: p(),
     relativeVelocity: p(),
   };
@@ -179,10 +126,12 @@ export function createManifoldBuffer(capacity = 256): ManifoldBuffer {
 
 /**
  * Grows `buf` (doubling) to hold at least `needed` rows, keeping rows 0..count-1.
+ * @throws RangeError if `needed` is above MAX_MANIFOLDS.
  * @category Collision
  */
 export function growManifoldBuffer(buf: ManifoldBuffer, needed: number): void {
   if (needed <= buf.capacity) return;
+  if (needed > MAX_MANIFOLDS) throw new RangeError(`growManifoldBuffer: needed must be at most ${MAX_MANIFOLDS} manifolds, got ${needed}`);
   let cap = buf.capacity;
   while (cap < needed) cap *= 2;
   const rec = buf as unknown as Record<string, Float64Array | Int32Array | Uint32Array | Uint8Array>;
@@ -198,7 +147,6 @@ export function growManifoldBuffer(buf: ManifoldBuffer, needed: number): void {
   for (const k of POINT_FLOAT) grow(k, 2);
   grow('pointCount', 1);
   grow('touching', 1);
-  grow('blockValid', 1);
   grow('stampA', 1);
   grow('stampB', 1);
   grow('id', 2);
@@ -303,8 +251,8 @@ export interface ShapeCollisionState {
   /** Per solver body: the rotation still owed at the start of the solve (its rotation within the step is measured from it). */
   angleBase: Float64Array;
   /**
-   * This step's manifolds as the solver's packed rows (solver/manifold-rows-2d.ts, Row and Point: 41
-   * numbers a manifold), filled by prepareManifolds before the substeps read them.
+   * This step's manifolds as the solver's packed rows (solver/manifold-layout-2d.ts: MR_STRIDE numbers a
+   * manifold), filled by prepareManifolds before the substeps read them.
    */
   solverRows: Float64Array;
   /** Per entity (capacity + 1), allocated with the first shape: the body's first extra shape entity (0 none). */

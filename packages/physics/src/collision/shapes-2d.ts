@@ -297,27 +297,45 @@ export function colliderGeometry(world: PhysicsWorld, e: number, g: ConvexGeomet
   const c = world.components,
     S = c.Shape;
   if (S.body.length > e && hasComponent(world, e, c.Shape)) {
-    const n = S.count[e]!,
-      o = SHAPE_STRIDE * e;
-    g.kind = S.kind[e]!;
-    g.count = n;
-    g.radius = S.radius[e]!;
-    for (let i = 0; i < n; i++) {
-      g.vx[i] = S.vx[o + i]!;
-      g.vy[i] = S.vy[o + i]!;
-      g.nx[i] = S.nx[o + i]!;
-      g.ny[i] = S.ny[o + i]!;
-    }
+    shapeGeometry(S, e, g);
     return false;
   }
+  ballGeometry(c.Ball.radius[e]!, g);
+  return true;
+}
+
+/** Reads shape `e`'s geometry from the store into `g`. */
+function shapeGeometry(S: ShapeStore, e: number, g: ConvexGeometry): void {
+  const n = S.count[e]!,
+    o = SHAPE_STRIDE * e;
+  const svx = S.vx,
+    svy = S.vy,
+    snx = S.nx,
+    sny = S.ny;
+  const vx = g.vx,
+    vy = g.vy,
+    nx = g.nx,
+    ny = g.ny;
+  g.kind = S.kind[e]!;
+  g.count = n;
+  g.radius = S.radius[e]!;
+  for (let i = 0; i < n; i++) {
+    vx[i] = svx[o + i]!;
+    vy[i] = svy[o + i]!;
+    nx[i] = snx[o + i]!;
+    ny[i] = sny[o + i]!;
+  }
+}
+
+/** Makes `g` the circle of a ball body of the given radius (m). */
+function ballGeometry(radius: number, g: ConvexGeometry): void {
   g.kind = ShapeKind.Circle;
   g.count = 1;
-  g.radius = c.Ball.radius[e]!;
+  g.radius = radius;
   g.vx[0] = 0;
   g.vy[0] = 0;
   g.nx[0] = 0;
   g.ny[0] = 1;
-  return true;
 }
 
 /** Narrowphase of the candidate pairs: manifolds for the solver, overlaps for sensors. */
@@ -328,7 +346,8 @@ function collidePairs(world: PhysicsWorld, st: ShapeCollisionState): void {
     S = c.Shape;
   const type = cs.bodyType;
   const vx = c.Velocity.x,
-    vy = c.Velocity.y;
+    vy = c.Velocity.y,
+    ballRadius = c.Ball.radius;
   const h = world.h;
   const sensorNow = st.sensorNow;
   sensorNow.clear();
@@ -337,13 +356,32 @@ function collidePairs(world: PhysicsWorld, st: ShapeCollisionState): void {
   // costly to touch: each doubling writes every column anew).
   const needed = st.manifolds.count + sc.pairCount;
   if (needed > st.manifolds.capacity) growManifoldBuffer(st.manifolds, needed + (needed >> 1));
+  const pairI = sc.pairI,
+    pairJ = sc.pairJ,
+    shape = sc.shape,
+    body = sc.body,
+    flags = sc.flags,
+    X = sc.x,
+    Y = sc.y,
+    C = sc.c,
+    Sn = sc.s,
+    SPEC = sc.spec,
+    SIZE = sc.size,
+    minX = sc.minX,
+    minY = sc.minY,
+    maxX = sc.maxX,
+    maxY = sc.maxY;
+  const sensorOf = S.sensor,
+    bodyW = st.bodyW;
+  // Collider whose geometry gA holds: pairs come collider by collider from the grid, so A repeats.
+  let inA = -1;
   for (let k = 0, n = sc.pairCount; k < n; k++) {
-    let i = sc.pairI[k]!,
-      j = sc.pairJ[k]!;
-    let ea = sc.shape[i]!,
-      eb = sc.shape[j]!;
-    let ba = sc.body[i]!,
-      bb = sc.body[j]!;
+    let i = pairI[k]!,
+      j = pairJ[k]!;
+    let ea = shape[i]!,
+      eb = shape[j]!;
+    let ba = body[i]!,
+      bb = body[j]!;
     if (ba === bb) continue;
     const ta = type[ba]!,
       tb = type[bb]!;
@@ -361,14 +399,20 @@ function collidePairs(world: PhysicsWorld, st: ShapeCollisionState): void {
       ba = bb;
       bb = t;
     }
-    const aBall = (sc.flags[i]! & BALL) !== 0,
-      bBall = (sc.flags[j]! & BALL) !== 0;
+    // A ball body without a shape collides as its own circle; every other collider is a shape entity.
+    const aBall = (flags[i]! & BALL) !== 0,
+      bBall = (flags[j]! & BALL) !== 0;
     if (aBall && bBall) continue; // ball-ball: collision/narrowphase/balls.ts
     if (!shouldCollide(S, ea, aBall, eb, bBall)) continue;
     if (jointKeepsApart(world.joints, ba, bb)) continue;
-    colliderGeometry(world, ea, gA);
-    colliderGeometry(world, eb, gB);
-    const sensor = (!aBall && S.sensor[ea] === 1) || (!bBall && S.sensor[eb] === 1);
+    if (i !== inA) {
+      if (aBall) ballGeometry(ballRadius[ea]!, gA);
+      else shapeGeometry(S, ea, gA);
+      inA = i;
+    }
+    if (bBall) ballGeometry(ballRadius[eb]!, gB);
+    else shapeGeometry(S, eb, gB);
+    const sensor = (!aBall && sensorOf[ea] === 1) || (!bBall && sensorOf[eb] === 1);
     const tA = type[ba]!,
       tB = type[bb]!;
     const mA = tA === BodyType.Dynamic || tA === BodyType.Kinematic,
@@ -377,31 +421,31 @@ function collidePairs(world: PhysicsWorld, st: ShapeCollisionState): void {
       vay = mA ? vy[ba]! : 0,
       vbx = mB ? vx[bb]! : 0,
       vby = mB ? vy[bb]! : 0;
-    const wa = st.bodyW[ba]!,
-      wb = st.bodyW[bb]!;
-    const spec = sc.spec[i]! < sc.spec[j]! ? sc.spec[i]! : sc.spec[j]!;
+    const wa = bodyW[ba]!,
+      wb = bodyW[bb]!;
+    const spec = SPEC[i]! < SPEC[j]! ? SPEC[i]! : SPEC[j]!;
     const dvx = vbx - vax,
       dvy = vby - vay;
-    const reachA = 0.5 * (sc.maxX[i]! - sc.minX[i]! + sc.maxY[i]! - sc.minY[i]!),
-      reachB = 0.5 * (sc.maxX[j]! - sc.minX[j]! + sc.maxY[j]! - sc.minY[j]!);
+    const reachA = 0.5 * (maxX[i]! - minX[i]! + maxY[i]! - minY[i]!),
+      reachB = 0.5 * (maxX[j]! - minX[j]! + maxY[j]! - minY[j]!);
     let closing = (Math.sqrt(dvx * dvx + dvy * dvy) + Math.abs(wa) * reachA + Math.abs(wb) * reachB) * h;
     // Speculation reaches as far as the two shapes are thick; a faster approach between dynamic (or
     // static) shapes is the continuous sweep's (collision/continuous-2d.ts): a normal chosen this far apart is often
     // the wrong face's (a ghost contact that deflects a bullet over a wall's end). Balls and kinematic
     // bodies are not swept, so they keep the whole margin.
     if (!aBall && !bBall && tA !== BodyType.Kinematic && tB !== BodyType.Kinematic) {
-      const thick = sc.size[i]! + sc.size[j]!;
+      const thick = SIZE[i]! + SIZE[j]!;
       if (closing > thick) closing = thick;
     }
     const q = pairPose;
-    q[PairPose.XA] = sc.x[i]!;
-    q[PairPose.YA] = sc.y[i]!;
-    q[PairPose.CA] = sc.c[i]!;
-    q[PairPose.SA] = sc.s[i]!;
-    q[PairPose.XB] = sc.x[j]!;
-    q[PairPose.YB] = sc.y[j]!;
-    q[PairPose.CB] = sc.c[j]!;
-    q[PairPose.SB] = sc.s[j]!;
+    q[PairPose.XA] = X[i]!;
+    q[PairPose.YA] = Y[i]!;
+    q[PairPose.CA] = C[i]!;
+    q[PairPose.SA] = Sn[i]!;
+    q[PairPose.XB] = X[j]!;
+    q[PairPose.YB] = Y[j]!;
+    q[PairPose.CB] = C[j]!;
+    q[PairPose.SB] = Sn[j]!;
     q[PairPose.SPECULATIVE] = spec + closing;
     collideShapesAt(mf, gA, gB, q);
     if (mf.count === 0) continue;
@@ -409,7 +453,7 @@ function collidePairs(world: PhysicsWorld, st: ShapeCollisionState): void {
       let overlap = false;
       for (let p = 0; p < mf.count; p++) if (mf.separation[p]! < 0) overlap = true;
       if (overlap) {
-        const sensorFirst = !aBall && S.sensor[ea] === 1;
+        const sensorFirst = !aBall && sensorOf[ea] === 1;
         sensorNow.add(sensorFirst ? ea * 33554432 + eb : eb * 33554432 + ea);
       }
       continue;
@@ -428,10 +472,10 @@ function collidePairs(world: PhysicsWorld, st: ShapeCollisionState): void {
       st.wake.push(sleeper);
     }
     const mo = rowMotion;
-    mo[RowMotion.XA] = sc.x[i]!;
-    mo[RowMotion.YA] = sc.y[i]!;
-    mo[RowMotion.XB] = sc.x[j]!;
-    mo[RowMotion.YB] = sc.y[j]!;
+    mo[RowMotion.XA] = X[i]!;
+    mo[RowMotion.YA] = Y[i]!;
+    mo[RowMotion.XB] = X[j]!;
+    mo[RowMotion.YB] = Y[j]!;
     mo[RowMotion.VAX] = vax;
     mo[RowMotion.VAY] = vay;
     mo[RowMotion.WA] = wa;
@@ -498,8 +542,17 @@ function pushManifold(st: ShapeCollisionState, m: Manifold, ea: number, eb: numb
     ny = m.ny;
   let row = buf.count;
   if (row >= buf.capacity) growManifoldBuffer(buf, row + 1);
+  const PX = buf.px,
+    PY = buf.py,
+    RAX = buf.rAx,
+    RAY = buf.rAy,
+    RBX = buf.rBx,
+    RBY = buf.rBy,
+    SEP = buf.separation,
+    ID = buf.id,
+    VN = buf.relativeVelocity;
   let count = 0;
-  for (let p = 0; p < m.count; p++) {
+  for (let p = 0, n = m.count; p < n; p++) {
     const x = m.px[p]!,
       y = m.py[p]!;
     const rax = x - xa,
@@ -510,15 +563,15 @@ function pushManifold(st: ShapeCollisionState, m: Manifold, ea: number, eb: numb
     const sep = m.separation[p]!;
     if (sep >= (vn < 0 ? -vn * h : 0) + spec) continue;
     const q = 2 * row + count;
-    buf.px[q] = x;
-    buf.py[q] = y;
-    buf.rAx[q] = rax;
-    buf.rAy[q] = ray;
-    buf.rBx[q] = rbx;
-    buf.rBy[q] = rby;
-    buf.separation[q] = sep;
-    buf.id[q] = m.id[p]!;
-    buf.relativeVelocity[q] = vn;
+    PX[q] = x;
+    PY[q] = y;
+    RAX[q] = rax;
+    RAY[q] = ray;
+    RBX[q] = rbx;
+    RBY[q] = rby;
+    SEP[q] = sep;
+    ID[q] = m.id[p]!;
+    VN[q] = vn;
     count++;
   }
   if (count === 0) return;

@@ -178,10 +178,11 @@ function solveContacts(world: PhysicsWorld): void {
       solveJoints(world, hs, false);
       solveJoints3D(world, hs, false);
       balls?.solve(world, buf, false);
-      if (is2D) solveManifolds(cs, hs, false);
+      // The substep's last pass over the manifolds also adds their impulses to the step's totals.
+      if (is2D) solveManifolds(cs, hs, false, it === st.relaxIterations - 1);
       else solveManifolds3D(world, hs, false);
     }
-    if (is2D) accumulateManifoldImpulses(cs);
+    if (is2D && st.relaxIterations === 0) accumulateManifoldImpulses(cs);
     balls?.endSubstep(buf);
   }
   balls?.restitution(world, buf);

@@ -1,4 +1,5 @@
 import { keepWhileAsleep, pushEvent, resumeAfterSleep } from '../collision/events.js';
+import { MAX_MANIFOLDS } from '../collision/manifold-limits-2d.js';
 import { findPrevious, rotateManifolds } from '../collision/manifolds-2d.js';
 import { BodyType } from '../collision/state.js';
 import type { PhysicsWorld } from '../world/options.js';
@@ -14,7 +15,41 @@ import {
   BX_ROT_Z,
   BX_STRIDE,
 } from './body-state-layout.js';
-import { atLeast, packManifoldRows } from './manifold-rows-2d.js';
+import {
+  MP_MAX_NORMAL_IMPULSE,
+  MP_NORMAL_IMPULSE,
+  MP_NORMAL_MASS,
+  MP_RAX,
+  MP_RAY,
+  MP_RBX,
+  MP_RBY,
+  MP_RELATIVE_VELOCITY,
+  MP_SEPARATION,
+  MP_STRIDE,
+  MP_TANGENT_IMPULSE,
+  MP_TANGENT_MASS,
+  MP_TOTAL_NORMAL_IMPULSE,
+  MR_B11,
+  MR_B12,
+  MR_B22,
+  MR_BLOCK_VALID,
+  MR_BODY_A,
+  MR_BODY_B,
+  MR_FRICTION_BOUND,
+  MR_K11,
+  MR_K12,
+  MR_K22,
+  MR_NX,
+  MR_NY,
+  MR_POINT_COUNT,
+  MR_POINT0,
+  MR_RESTITUTION,
+  MR_ROLLING,
+  MR_ROLLING_IMPULSE,
+  MR_ROLLING_MASS,
+  MR_STRIDE,
+} from './manifold-layout-2d.js';
+import { atLeast } from './manifold-rows-2d.js';
 
 /**
  * The shape contacts' rows before and after the substeps (solver/manifold-rows-2d.ts describes the rows
@@ -105,14 +140,17 @@ export function gatherManifoldBodies(world: PhysicsWorld, count: number): number
 }
 
 /**
- * Material, effective masses, start-of-step velocities and warm start of every manifold.
+ * Material, effective masses, start-of-step velocities and warm start of every manifold, written into
+ * its packed solver row (solver/manifold-layout-2d.ts); the manifold buffer keeps what the touch
+ * events and the contact queries read (separations corrected to the solver's start, approach speeds,
+ * spawn stamps).
  * @category Collision
  */
 export function prepareManifolds(world: PhysicsWorld): void {
   const cs = world.collision,
     st = cs.shapes,
     buf = st.manifolds;
-  const n = buf.count;
+  const n = Math.min(buf.count, MAX_MANIFOLDS);
   const count = cs.solverBodyCount;
   st.angleBase = atLeast(st.angleBase, count);
   const ex = cs.bodyExtra,
@@ -125,8 +163,20 @@ export function prepareManifolds(world: PhysicsWorld): void {
   const hertz = Math.min(set.contactHertz, SHAPE_HERTZ_FRACTION / hs);
   makeSoftInto(st.softness, hertz, set.contactDampingRatio, hs);
   makeSoftInto(st.rigidSoftness, 2 * hertz, set.contactDampingRatio, hs);
+  const R = atLeast(st.solverRows, n * MR_STRIDE);
+  st.solverRows = R;
+  prepareRows(world, R, n);
+  prepareBlocks(cs, R, n);
+}
+
+/** prepareManifolds, per manifold: its bodies, normal, material, warm start and points (all but the block). */
+function prepareRows(world: PhysicsWorld, R: Float64Array, n: number): void {
+  const cs = world.collision,
+    st = cs.shapes,
+    buf = st.manifolds;
   const c = world.components,
-    sb = cs.bodyState;
+    sb = cs.bodyState,
+    ex = cs.bodyExtra;
   // Where the solver starts each body (its displacement 0) relative to where the narrowphase measured
   // it (PreviousPosition): separations are corrected by the difference, so the rows agree with
   // whatever base the solver chooses.
@@ -141,17 +191,42 @@ export function prepareManifolds(world: PhysicsWorld): void {
   const stamp = world.spawnStamp;
   const stick = cs.settings.stickSpeed;
   const prev = st.previous;
+  const shapeA = buf.shapeA,
+    shapeB = buf.shapeB,
+    IA = buf.ia,
+    IB = buf.ib,
+    NX = buf.nx,
+    NY = buf.ny,
+    points = buf.pointCount,
+    stampA = buf.stampA,
+    stampB = buf.stampB,
+    RAX = buf.rAx,
+    RAY = buf.rAy,
+    RBX = buf.rBx,
+    RBY = buf.rBy,
+    SEP = buf.separation,
+    VN = buf.relativeVelocity,
+    ID = buf.id;
   for (let i = 0; i < n; i++) {
-    const ea = buf.shapeA[i]!,
-      eb = buf.shapeB[i]!;
-    const oa = buf.ia[i]! * BS2_STRIDE,
-      ob = buf.ib[i]! * BS2_STRIDE;
+    const r = i * MR_STRIDE;
+    const ea = shapeA[i]!,
+      eb = shapeB[i]!;
+    const ka = IA[i]!,
+      kb = IB[i]!;
+    const oa = ka * BS2_STRIDE,
+      ob = kb * BS2_STRIDE;
     const mA = sb[oa + BS2_INV_MASS]!,
       iA = sb[oa + BS2_INV_INERTIA]!,
       mB = sb[ob + BS2_INV_MASS]!,
       iB = sb[ob + BS2_INV_INERTIA]!;
-    const nx = buf.nx[i]!,
-      ny = buf.ny[i]!;
+    const nx = NX[i]!,
+      ny = NY[i]!;
+    const m = points[i]!;
+    R[r + MR_BODY_A] = ka;
+    R[r + MR_BODY_B] = kb;
+    R[r + MR_NX] = nx;
+    R[r + MR_NY] = ny;
+    R[r + MR_POINT_COUNT] = m;
     // Materials: Box2D's mixing (the bouncier surface wins, friction is the geometric mean).
     let ra: number, fa: number, sa: number;
     if (ea < 0) {
@@ -165,30 +240,26 @@ export function prepareManifolds(world: PhysicsWorld): void {
     }
     const mu = Math.sqrt(fa * fM[eb]!),
       mus = Math.sqrt(sa * sM[eb]!);
-    buf.friction[i] = mu;
-    buf.restitution[i] = Math.max(ra, eM[eb]!);
+    R[r + MR_RESTITUTION] = Math.max(ra, eM[eb]!);
     // Rolling resistance of round shapes: coefficient times the rolling radius.
     let roll = 0;
     if (ea > 0 && S.body.length > ea && S.body[ea] === buf.bodyA[i] && S.count[ea]! <= 2 && S.count[ea]! > 0)
       roll = S.rollingResistance[ea]! * S.radius[ea]!;
     if (S.body.length > eb && S.body[eb] === buf.bodyB[i] && S.count[eb]! <= 2 && S.count[eb]! > 0)
       roll = Math.max(roll, S.rollingResistance[eb]! * S.radius[eb]!);
-    buf.rolling[i] = roll;
-    buf.rollingMass[i] = iA + iB > 0 ? 1 / (iA + iB) : 0;
-    buf.rollingImpulse[i] = 0;
-    buf.stampA[i] = ea > 0 ? stamp[ea]! : 0;
-    buf.stampB[i] = stamp[eb]!;
+    R[r + MR_ROLLING] = roll;
+    R[r + MR_ROLLING_MASS] = iA + iB > 0 ? 1 / (iA + iB) : 0;
+    stampA[i] = ea > 0 ? stamp[ea]! : 0;
+    stampB[i] = stamp[eb]!;
     let j = findPrevious(st, ea, eb);
-    if (j >= 0 && (prev.stampA[j] !== buf.stampA[i] || prev.stampB[j] !== buf.stampB[i])) j = -1;
-    if (j >= 0) buf.rollingImpulse[i] = prev.rollingImpulse[j]!;
+    if (j >= 0 && (prev.stampA[j] !== stampA[i] || prev.stampB[j] !== stampB[i])) j = -1;
+    R[r + MR_ROLLING_IMPULSE] = j >= 0 ? prev.rollingImpulse[j]! : 0;
     const vax = sb[oa + BS2_VX]!,
       vay = sb[oa + BS2_VY]!,
       wa = sb[oa + BS2_W]!,
       vbx = sb[ob + BS2_VX]!,
       vby = sb[ob + BS2_VY]!,
       wb = sb[ob + BS2_W]!;
-    const ka = buf.ia[i]!,
-      kb = buf.ib[i]!;
     const ea6 = ka * BX_STRIDE,
       eb6 = kb * BX_STRIDE;
     const offAx = ka === 0 ? 0 : ex[ea6 + BX_BASE_X]! - ox[list[ka]!]!,
@@ -196,67 +267,102 @@ export function prepareManifolds(world: PhysicsWorld): void {
     const offBx = kb === 0 ? 0 : ex[eb6 + BX_BASE_X]! - ox[list[kb]!]!,
       offBy = kb === 0 ? 0 : ex[eb6 + BX_BASE_Y]! - oy[list[kb]!]!;
     let vtMax = 0;
-    for (let p = 0, m = buf.pointCount[i]!; p < m; p++) {
-      const q = 2 * i + p;
-      const rax = buf.rAx[q]!,
-        ray = buf.rAy[q]!,
-        rbx = buf.rBx[q]!,
-        rby = buf.rBy[q]!;
-      buf.separation[q] = buf.separation[q]! + (offBx - offAx) * nx + (offBy - offAy) * ny;
+    for (let p = 0; p < m; p++) {
+      const q = 2 * i + p,
+        o = r + MR_POINT0 + p * MP_STRIDE;
+      const rax = RAX[q]!,
+        ray = RAY[q]!,
+        rbx = RBX[q]!,
+        rby = RBY[q]!;
+      const sep = SEP[q]! + (offBx - offAx) * nx + (offBy - offAy) * ny;
+      SEP[q] = sep;
       const rnA = rax * ny - ray * nx,
         rnB = rbx * ny - rby * nx;
       const kn = mA + mB + iA * rnA * rnA + iB * rnB * rnB;
-      buf.normalMass[q] = kn > 0 ? 1 / kn : 0;
       const rtA = rax * nx + ray * ny,
         rtB = rbx * nx + rby * ny; // r x t with t = (-n_y, n_x)
       const kt = mA + mB + iA * rtA * rtA + iB * rtB * rtB;
-      buf.tangentMass[q] = kt > 0 ? 1 / kt : 0;
       const dvx = vbx - wb * rby - vax + wa * ray,
         dvy = vby + wb * rbx - vay - wa * rax;
-      buf.relativeVelocity[q] = dvx * nx + dvy * ny;
+      const vn = dvx * nx + dvy * ny;
+      VN[q] = vn;
       const vt = Math.abs(-dvx * ny + dvy * nx);
       if (vt > vtMax) vtMax = vt;
-      buf.maxNormalImpulse[q] = 0;
-      buf.totalNormalImpulse[q] = 0;
+      // Warm start: last step's impulses of the point with the same feature id.
       let ln = 0,
         lt = 0;
       if (j >= 0) {
-        const id = buf.id[q]!;
-        for (let r = 0, pm = prev.pointCount[j]!; r < pm; r++) {
-          if (prev.id[2 * j + r] === id) {
-            ln = prev.normalImpulse[2 * j + r]!;
-            lt = prev.tangentImpulse[2 * j + r]!;
+        const id = ID[q]!;
+        for (let k = 0, pm = prev.pointCount[j]!; k < pm; k++) {
+          if (prev.id[2 * j + k] === id) {
+            ln = prev.normalImpulse[2 * j + k]!;
+            lt = prev.tangentImpulse[2 * j + k]!;
             break;
           }
         }
       }
-      buf.normalImpulse[q] = ln;
-      buf.tangentImpulse[q] = lt;
+      R[o + MP_RAX] = rax;
+      R[o + MP_RAY] = ray;
+      R[o + MP_RBX] = rbx;
+      R[o + MP_RBY] = rby;
+      R[o + MP_SEPARATION] = sep;
+      R[o + MP_NORMAL_MASS] = kn > 0 ? 1 / kn : 0;
+      R[o + MP_TANGENT_MASS] = kt > 0 ? 1 / kt : 0;
+      R[o + MP_NORMAL_IMPULSE] = ln;
+      R[o + MP_TANGENT_IMPULSE] = lt;
+      R[o + MP_MAX_NORMAL_IMPULSE] = 0;
+      R[o + MP_TOTAL_NORMAL_IMPULSE] = 0;
+      R[o + MP_RELATIVE_VELOCITY] = vn;
     }
-    buf.frictionBound[i] = vtMax < stick ? Math.max(mus, mu) : mu;
-    // Block solve of two-point manifolds (Catto's block solver of Box2D 2.x): K = J M^-1 J^T over the two normal rows.
-    buf.blockValid[i] = 0;
-    if (buf.pointCount[i] === 2) {
-      const q = 2 * i;
-      const rn1A = buf.rAx[q]! * ny - buf.rAy[q]! * nx,
-        rn1B = buf.rBx[q]! * ny - buf.rBy[q]! * nx;
-      const rn2A = buf.rAx[q + 1]! * ny - buf.rAy[q + 1]! * nx,
-        rn2B = buf.rBx[q + 1]! * ny - buf.rBy[q + 1]! * nx;
-      const k11 = mA + mB + iA * rn1A * rn1A + iB * rn1B * rn1B;
-      const k22 = mA + mB + iA * rn2A * rn2A + iB * rn2B * rn2B;
-      const k12 = mA + mB + iA * rn1A * rn2A + iB * rn1B * rn2B;
-      const det = k11 * k22 - k12 * k12;
-      // Box2D's condition-number guard: the rows must not be nearly parallel.
-      if (k11 * k11 < 1000 * det && det > 0) {
-        const inv = 1 / det;
-        buf.block11[i] = k22 * inv;
-        buf.block12[i] = -k12 * inv;
-        buf.block22[i] = k11 * inv;
-        buf.blockValid[i] = 1;
-      }
+    R[r + MR_FRICTION_BOUND] = vtMax < stick ? Math.max(mus, mu) : mu;
+  }
+}
+
+/**
+ * prepareManifolds, the block of each two-point manifold (Catto's block solver of Box2D 2.x):
+ * K = J M^-1 J^T over the two normal rows, its inverse, and K again as the inverse of that inverse
+ * (what the solve reads), if the rows are not nearly parallel.
+ */
+function prepareBlocks(cs: PhysicsWorld['collision'], R: Float64Array, n: number): void {
+  const sb = cs.bodyState;
+  for (let i = 0; i < n; i++) {
+    const r = i * MR_STRIDE;
+    R[r + MR_BLOCK_VALID] = 0;
+    if (R[r + MR_POINT_COUNT] !== 2) continue;
+    const oa = (R[r + MR_BODY_A]! | 0) * BS2_STRIDE,
+      ob = (R[r + MR_BODY_B]! | 0) * BS2_STRIDE;
+    const mA = sb[oa + BS2_INV_MASS]!,
+      iA = sb[oa + BS2_INV_INERTIA]!,
+      mB = sb[ob + BS2_INV_MASS]!,
+      iB = sb[ob + BS2_INV_INERTIA]!;
+    const nx = R[r + MR_NX]!,
+      ny = R[r + MR_NY]!;
+    const o1 = r + MR_POINT0,
+      o2 = o1 + MP_STRIDE;
+    const rn1A = R[o1 + MP_RAX]! * ny - R[o1 + MP_RAY]! * nx,
+      rn1B = R[o1 + MP_RBX]! * ny - R[o1 + MP_RBY]! * nx;
+    const rn2A = R[o2 + MP_RAX]! * ny - R[o2 + MP_RAY]! * nx,
+      rn2B = R[o2 + MP_RBX]! * ny - R[o2 + MP_RBY]! * nx;
+    const k11 = mA + mB + iA * rn1A * rn1A + iB * rn1B * rn1B;
+    const k22 = mA + mB + iA * rn2A * rn2A + iB * rn2B * rn2B;
+    const k12 = mA + mB + iA * rn1A * rn2A + iB * rn1B * rn2B;
+    const det = k11 * k22 - k12 * k12;
+    // Box2D's condition-number guard: the rows must not be nearly parallel.
+    if (k11 * k11 < 1000 * det && det > 0) {
+      const inv = 1 / det;
+      const b11 = k22 * inv,
+        b12 = -k12 * inv,
+        b22 = k11 * inv;
+      const back = 1 / (b11 * b22 - b12 * b12);
+      R[r + MR_BLOCK_VALID] = 1;
+      R[r + MR_B11] = b11;
+      R[r + MR_B12] = b12;
+      R[r + MR_B22] = b22;
+      R[r + MR_K11] = b22 * back;
+      R[r + MR_K12] = -b12 * back;
+      R[r + MR_K22] = b11 * back;
     }
   }
-  packManifoldRows(st, n);
 }
 /**
  * After the solve: marks the manifolds that touch, writes begin and end touch events against the

@@ -1,3 +1,4 @@
+import { MAX_MANIFOLDS } from '../collision/manifold-limits-2d.js';
 import type { CollisionState } from '../collision/state.js';
 import type { PhysicsWorld } from '../world/options.js';
 import {
@@ -13,6 +14,40 @@ import {
   BX_ROT_Z,
   BX_STRIDE,
 } from './body-state-layout.js';
+import {
+  MP_MAX_NORMAL_IMPULSE,
+  MP_NORMAL_IMPULSE,
+  MP_NORMAL_MASS,
+  MP_RAX,
+  MP_RAY,
+  MP_RBX,
+  MP_RBY,
+  MP_RELATIVE_VELOCITY,
+  MP_SEPARATION,
+  MP_STRIDE,
+  MP_TANGENT_IMPULSE,
+  MP_TANGENT_MASS,
+  MP_TOTAL_NORMAL_IMPULSE,
+  MR_B11,
+  MR_B12,
+  MR_B22,
+  MR_BLOCK_VALID,
+  MR_BODY_A,
+  MR_BODY_B,
+  MR_FRICTION_BOUND,
+  MR_K11,
+  MR_K12,
+  MR_K22,
+  MR_NX,
+  MR_NY,
+  MR_POINT_COUNT,
+  MR_POINT0,
+  MR_RESTITUTION,
+  MR_ROLLING,
+  MR_ROLLING_IMPULSE,
+  MR_ROLLING_MASS,
+  MR_STRIDE,
+} from './manifold-layout-2d.js';
 
 /**
  * The shape contacts' rows of the contact solver (solver/contact-solver.ts runs these calls next to the ball
@@ -41,139 +76,11 @@ import {
  *   end touch events, and the rows become the warm-start cache of the next step.
  */
 /**
- * The fields of one manifold point in its packed solver row (see Row): offsets from the point's start,
- * `Row.Point0 + p * Point.Stride` into the row for point p (0 or 1).
- */
-enum Point {
-  /** Anchor on body A from its centre of mass at the start of the step, x, m; y next. */
-  RAx = 0,
-  RAy = 1,
-  /** Anchor on body B, x, m; y next. */
-  RBx = 2,
-  RBy = 3,
-  /** Separation at the start of the step, relative to where the solver starts the bodies, m (< 0: overlap). */
-  Separation = 4,
-  /** Effective mass of the normal row, kg. */
-  NormalMass = 5,
-  /** Effective mass of the friction row, kg. */
-  TangentMass = 6,
-  /** Accumulated normal impulse of this substep, N s, >= 0. */
-  NormalImpulse = 7,
-  /** Accumulated friction impulse of this substep, N s. */
-  TangentImpulse = 8,
-  /** Largest normal impulse a single pass added this step, N s (restitution applies only where it is > 0). */
-  MaxNormalImpulse = 9,
-  /** Sum of the substeps' normal impulses, N s (touch events). */
-  TotalNormalImpulse = 10,
-  /** Normal velocity at the start of the step, m/s (< 0: approaching). */
-  RelativeVelocity = 11,
-  /** Numbers a point. */
-  Stride = 12,
-}
-
-/**
- * The packed solver row of one manifold, `ShapeCollisionState.solverRows` (Box2D v3's b2ContactConstraint):
- * prepareManifolds fills it from the manifold buffer once a step, the substeps' stages read and write
- * only the rows (one array, the fields of a manifold next to each other), and storeManifoldImpulses
- * writes the impulses back to the buffer for the touch events and the next step's warm start.
- */
-enum Row {
-  /** Solver index of body A (0: the static world); its packed body state starts at 8 times it. */
-  BodyA = 0,
-  /** Solver index of body B. */
-  BodyB = 1,
-  /** Unit normal from A to B, x; y next. */
-  Nx = 2,
-  Ny = 3,
-  /** Points, 1 or 2. */
-  PointCount = 4,
-  /** 1 when the two points' normal rows are solved as one block (K well conditioned), else 0. */
-  BlockValid = 5,
-  /** The block's inverse effective mass K^-1, entries 11, 12, 22, kg. */
-  B11 = 6,
-  B12 = 7,
-  B22 = 8,
-  /** The block's K = J M^-1 J^T itself, entries 11, 12, 22, 1/kg. */
-  K11 = 9,
-  K12 = 10,
-  K22 = 11,
-  /** Friction coefficient bounding |lambda_t| by mu lambda_n (the static one while sticking). */
-  FrictionBound = 12,
-  /** Rolling resistance times the rolling radius, m (0: none). */
-  Rolling = 13,
-  /** Effective mass of the rolling row, kg m^2. */
-  RollingMass = 14,
-  /** Accumulated rolling impulse, N m s. */
-  RollingImpulse = 15,
-  /** Mixed restitution coefficient. */
-  Restitution = 16,
-  /** Where the first point's fields start (Point); the second's is Point.Stride further. */
-  Point0 = 17,
-  /** Numbers a manifold: 17 + 2 * Point.Stride. */
-  Stride = 41,
-}
-
-/**
  * `a` if it holds `n` numbers, else a new zeroed array of at least n (twice a's length). Growth runs
  * only in a world's first steps: called before the loops that fill the array (solver/manifold-prepare-2d.ts withRoom).
  */
 export function atLeast(a: Float64Array, n: number): Float64Array {
   return a.length >= n ? a : new Float64Array(Math.max(n, 2 * a.length));
-}
-
-/**
- * Copies this step's manifolds into the solver's packed rows (Row, Point), with each valid block's K
- * next to its inverse (prepareManifolds, solver/manifold-prepare-2d.ts, calls it last).
- * @category Collision
- */
-export function packManifoldRows(st: CollisionState['shapes'], n: number): void {
-  const buf = st.manifolds;
-  const R = atLeast(st.solverRows, n * Row.Stride);
-  st.solverRows = R;
-  for (let i = 0; i < n; i++) {
-    const r = i * Row.Stride;
-    const m = buf.pointCount[i]!;
-    R[r + Row.BodyA] = buf.ia[i]!;
-    R[r + Row.BodyB] = buf.ib[i]!;
-    R[r + Row.Nx] = buf.nx[i]!;
-    R[r + Row.Ny] = buf.ny[i]!;
-    R[r + Row.PointCount] = m;
-    const valid = buf.blockValid[i]!;
-    R[r + Row.BlockValid] = valid;
-    if (valid === 1) {
-      const b11 = buf.block11[i]!,
-        b12 = buf.block12[i]!,
-        b22 = buf.block22[i]!;
-      const det = 1 / (b11 * b22 - b12 * b12);
-      R[r + Row.B11] = b11;
-      R[r + Row.B12] = b12;
-      R[r + Row.B22] = b22;
-      R[r + Row.K11] = b22 * det;
-      R[r + Row.K12] = -b12 * det;
-      R[r + Row.K22] = b11 * det;
-    }
-    R[r + Row.FrictionBound] = buf.frictionBound[i]!;
-    R[r + Row.Rolling] = buf.rolling[i]!;
-    R[r + Row.RollingMass] = buf.rollingMass[i]!;
-    R[r + Row.RollingImpulse] = buf.rollingImpulse[i]!;
-    R[r + Row.Restitution] = buf.restitution[i]!;
-    for (let p = 0; p < m; p++) {
-      const q = 2 * i + p,
-        o = r + Row.Point0 + p * Point.Stride;
-      R[o + Point.RAx] = buf.rAx[q]!;
-      R[o + Point.RAy] = buf.rAy[q]!;
-      R[o + Point.RBx] = buf.rBx[q]!;
-      R[o + Point.RBy] = buf.rBy[q]!;
-      R[o + Point.Separation] = buf.separation[q]!;
-      R[o + Point.NormalMass] = buf.normalMass[q]!;
-      R[o + Point.TangentMass] = buf.tangentMass[q]!;
-      R[o + Point.NormalImpulse] = buf.normalImpulse[q]!;
-      R[o + Point.TangentImpulse] = buf.tangentImpulse[q]!;
-      R[o + Point.MaxNormalImpulse] = 0;
-      R[o + Point.TotalNormalImpulse] = 0;
-      R[o + Point.RelativeVelocity] = buf.relativeVelocity[q]!;
-    }
-  }
 }
 
 /**
@@ -186,15 +93,14 @@ export function storeManifoldImpulses(cs: CollisionState): void {
   const buf = cs.shapes.manifolds,
     R = cs.shapes.solverRows;
   for (let i = 0, n = buf.count; i < n; i++) {
-    const r = i * Row.Stride;
-    buf.rollingImpulse[i] = R[r + Row.RollingImpulse]!;
+    const r = i * MR_STRIDE;
+    buf.rollingImpulse[i] = R[r + MR_ROLLING_IMPULSE]!;
     for (let p = 0, m = buf.pointCount[i]!; p < m; p++) {
       const q = 2 * i + p,
-        o = r + Row.Point0 + p * Point.Stride;
-      buf.normalImpulse[q] = R[o + Point.NormalImpulse]!;
-      buf.tangentImpulse[q] = R[o + Point.TangentImpulse]!;
-      buf.maxNormalImpulse[q] = R[o + Point.MaxNormalImpulse]!;
-      buf.totalNormalImpulse[q] = R[o + Point.TotalNormalImpulse]!;
+        o = r + MR_POINT0 + p * MP_STRIDE;
+      buf.normalImpulse[q] = R[o + MP_NORMAL_IMPULSE]!;
+      buf.tangentImpulse[q] = R[o + MP_TANGENT_IMPULSE]!;
+      buf.totalNormalImpulse[q] = R[o + MP_TOTAL_NORMAL_IMPULSE]!;
     }
   }
 }
@@ -206,36 +112,36 @@ export function storeManifoldImpulses(cs: CollisionState): void {
 export function warmStartManifolds(cs: CollisionState): void {
   const R = cs.shapes.solverRows,
     sb = cs.bodyState;
-  for (let i = 0, n = cs.shapes.manifolds.count; i < n; i++) {
-    const r = i * Row.Stride;
-    const a = R[r + Row.BodyA]! * BS2_STRIDE,
-      b = R[r + Row.BodyB]! * BS2_STRIDE;
+  for (let i = 0, n = Math.min(cs.shapes.manifolds.count, MAX_MANIFOLDS); i < n; i++) {
+    const r = i * MR_STRIDE;
+    const a = (R[r + MR_BODY_A]! | 0) * BS2_STRIDE,
+      b = (R[r + MR_BODY_B]! | 0) * BS2_STRIDE;
     const mA = sb[a + BS2_INV_MASS]!,
       iA = sb[a + BS2_INV_INERTIA]!,
       mB = sb[b + BS2_INV_MASS]!,
       iB = sb[b + BS2_INV_INERTIA]!;
-    const nx = R[r + Row.Nx]!,
-      ny = R[r + Row.Ny]!;
+    const nx = R[r + MR_NX]!,
+      ny = R[r + MR_NY]!;
     let vax = sb[a + BS2_VX]!,
       vay = sb[a + BS2_VY]!,
       wa = sb[a + BS2_W]!,
       vbx = sb[b + BS2_VX]!,
       vby = sb[b + BS2_VY]!,
       wb = sb[b + BS2_W]!;
-    for (let p = 0, m = R[r + Row.PointCount]!; p < m; p++) {
-      const o = r + Row.Point0 + p * Point.Stride;
-      const ln = R[o + Point.NormalImpulse]!,
-        lt = R[o + Point.TangentImpulse]!;
+    for (let p = 0, m = R[r + MR_POINT_COUNT]!; p < m; p++) {
+      const o = r + MR_POINT0 + p * MP_STRIDE;
+      const ln = R[o + MP_NORMAL_IMPULSE]!,
+        lt = R[o + MP_TANGENT_IMPULSE]!;
       const Px = ln * nx - lt * ny,
         Py = ln * ny + lt * nx;
-      wa -= iA * (R[o + Point.RAx]! * Py - R[o + Point.RAy]! * Px);
+      wa -= iA * (R[o + MP_RAX]! * Py - R[o + MP_RAY]! * Px);
       vax -= mA * Px;
       vay -= mA * Py;
-      wb += iB * (R[o + Point.RBx]! * Py - R[o + Point.RBy]! * Px);
+      wb += iB * (R[o + MP_RBX]! * Py - R[o + MP_RBY]! * Px);
       vbx += mB * Px;
       vby += mB * Py;
     }
-    const lr = R[r + Row.RollingImpulse]!;
+    const lr = R[r + MR_ROLLING_IMPULSE]!;
     wa -= iA * lr;
     wb += iB * lr;
     sb[a + BS2_VX] = vax;
@@ -259,31 +165,83 @@ export function warmStartManifolds(cs: CollisionState): void {
  * slope, a creep of mm a second.
  */
 function pushes(R: Float64Array, r: number): boolean {
-  for (let p = 0, m = R[r + Row.PointCount]!; p < m; p++) {
-    const o = r + Row.Point0 + p * Point.Stride;
-    if (R[o + Point.NormalImpulse] !== 0 || R[o + Point.TangentImpulse] !== 0) return true;
+  for (let p = 0, m = R[r + MR_POINT_COUNT]!; p < m; p++) {
+    const o = r + MR_POINT0 + p * MP_STRIDE;
+    if (R[o + MP_NORMAL_IMPULSE] !== 0 || R[o + MP_TANGENT_IMPULSE] !== 0) return true;
   }
-  return R[r + Row.RollingImpulse] !== 0;
+  return R[r + MR_ROLLING_IMPULSE] !== 0;
+}
+
+/**
+ * The two normal impulses x of the manifold whose packed row starts at `r`, from the linear
+ * complementarity problem K x + c = w, x >= 0, w >= 0, x . w = 0 with the row's block K (Box2D 2.x's
+ * block solver: its four cases tried in turn, both points pushing first, then one point letting go,
+ * then both). Writes x as the row's normal impulses and returns true, or returns false and leaves the
+ * row as it was if no case holds. Soft rows (overlap with bias) that both push are solved as a block
+ * too: one point after the other, a column of light boxes under a heavy one (1 kg boxes, 100 kg on
+ * top) tips its boxes a little at every pass, the tilt grows and the column buckles; the block keeps
+ * the two points' impulses symmetric, and the column stands.
+ */
+function solveBlock(R: Float64Array, r: number, c1: number, c2: number): boolean {
+  const K11 = R[r + MR_K11]!,
+    K22 = R[r + MR_K22]!,
+    K12 = R[r + MR_K12]!;
+  const B11 = R[r + MR_B11]!,
+    B12 = R[r + MR_B12]!,
+    B22 = R[r + MR_B22]!;
+  let n1 = -(B11 * c1 + B12 * c2),
+    n2 = -(B12 * c1 + B22 * c2);
+  let ok = n1 >= 0 && n2 >= 0;
+  // A point that lets go (one or both impulses 0: an impact undone, a box lifting off an edge).
+  if (!ok) {
+    n1 = -c1 / K11;
+    n2 = 0;
+    ok = n1 >= 0 && K12 * n1 + c2 >= 0;
+  }
+  if (!ok) {
+    n1 = 0;
+    n2 = -c2 / K22;
+    ok = n2 >= 0 && K12 * n2 + c1 >= 0;
+  }
+  if (!ok) {
+    n1 = 0;
+    n2 = 0;
+    ok = c1 >= 0 && c2 >= 0;
+  }
+  if (ok) {
+    R[r + MR_POINT0 + MP_NORMAL_IMPULSE] = n1;
+    R[r + MR_POINT0 + MP_STRIDE + MP_NORMAL_IMPULSE] = n2;
+  }
+  return ok;
 }
 
 /**
  * One pass over the manifolds: normal rows (soft bias if `useBias`), friction, rolling resistance, with
- * the softness `prepareManifolds` chose.
+ * the softness `prepareManifolds` chose. With `accumulate` (the substep's last pass), each point's
+ * impulse is then added to its step total, as accumulateManifoldImpulses does.
  * @category Collision
  */
-export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean): void {
+export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean, accumulate = false): void {
   const R = cs.shapes.solverRows,
     sb = cs.bodyState,
     ex = cs.bodyExtra,
     base = cs.shapes.angleBase;
   const sd = cs.shapes.softness,
     sr = cs.shapes.rigidSoftness;
+  const biasSoft = sd[0]!,
+    massSoft = sd[1]!,
+    impulseSoft = sd[2]!,
+    biasRigid = sr[0]!,
+    massRigid = sr[1]!,
+    impulseRigid = sr[2]!;
   const invH = 1 / hs,
     push = cs.settings.contactPushSpeed;
-  for (let i = 0, n = cs.shapes.manifolds.count; i < n; i++) {
-    const r = i * Row.Stride;
-    const ia = R[r + Row.BodyA]!,
-      ib = R[r + Row.BodyB]!;
+  // The row count bounded by MAX_MANIFOLDS and the body indices made integers (`| 0`: the rows hold
+  // doubles) let V8 compute every offset below in 32-bit integers without overflow checks.
+  for (let i = 0, n = Math.min(cs.shapes.manifolds.count, MAX_MANIFOLDS); i < n; i++) {
+    const r = i * MR_STRIDE;
+    const ia = R[r + MR_BODY_A]! | 0,
+      ib = R[r + MR_BODY_B]! | 0;
     const a = ia * BS2_STRIDE,
       b = ib * BS2_STRIDE;
     const mA = sb[a + BS2_INV_MASS]!,
@@ -302,95 +260,71 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean)
       dby = sb[b + BS2_DY]!;
     const ta = ia === 0 ? 0 : ex[ia * BX_STRIDE + BX_ROT_Z]! - base[ia]!,
       tb = ib === 0 ? 0 : ex[ib * BX_STRIDE + BX_ROT_Z]! - base[ib]!;
-    const nx = R[r + Row.Nx]!,
-      ny = R[r + Row.Ny]!;
+    const nx = R[r + MR_NX]!,
+      ny = R[r + MR_NY]!;
     const rigidPartner = mA === 0 || mB === 0;
-    const biasRate = rigidPartner ? sr[0]! : sd[0]!,
-      softMass = rigidPartner ? sr[1]! : sd[1]!,
-      softImpulse = rigidPartner ? sr[2]! : sd[2]!;
-    const m = R[r + Row.PointCount]!;
-    const o1 = r + Row.Point0,
-      o2 = o1 + Point.Stride;
+    const biasRate = rigidPartner ? biasRigid : biasSoft,
+      softMass = rigidPartner ? massRigid : massSoft,
+      softImpulse = rigidPartner ? impulseRigid : impulseSoft;
+    // Points 1 and 2 unrolled, their anchors read once. A one-point row reads its unused second
+    // point's slots (inside the row) and never uses them.
+    const two = R[r + MR_POINT_COUNT] === 2;
+    const o1 = r + MR_POINT0,
+      o2 = o1 + MP_STRIDE;
+    const r1ax = R[o1 + MP_RAX]!,
+      r1ay = R[o1 + MP_RAY]!,
+      r1bx = R[o1 + MP_RBX]!,
+      r1by = R[o1 + MP_RBY]!;
+    const r2ax = R[o2 + MP_RAX]!,
+      r2ay = R[o2 + MP_RAY]!,
+      r2bx = R[o2 + MP_RBX]!,
+      r2by = R[o2 + MP_RBY]!;
+    const s1 = R[o1 + MP_SEPARATION]! + (dbx - tb * r1by - dax + ta * r1ay) * nx + (dby + tb * r1bx - day - ta * r1ax) * ny;
+    const s2 = R[o2 + MP_SEPARATION]! + (dbx - tb * r2by - dax + ta * r2ay) * nx + (dby + tb * r2bx - day - ta * r2ax) * ny;
+    // Each normal row's regime: speculative (s > 0: bias s / h_s, rigid) or, with the bias on, soft.
+    let b1 = 0,
+      m1 = 1,
+      i1 = 0,
+      b2 = 0,
+      m2 = 1,
+      i2 = 0;
+    if (s1 > 0) b1 = s1 * invH;
+    else if (useBias) {
+      b1 = biasRate * s1;
+      if (b1 < -push) b1 = -push;
+      m1 = softMass;
+      i1 = softImpulse;
+    }
+    if (s2 > 0) b2 = s2 * invH;
+    else if (useBias) {
+      b2 = biasRate * s2;
+      if (b2 < -push) b2 = -push;
+      m2 = softMass;
+      i2 = softImpulse;
+    }
     let total = 0;
     let solved = false;
-    if (R[r + Row.BlockValid] === 1) {
+    if (R[r + MR_BLOCK_VALID] === 1) {
       // Both points at once, as the linear complementarity problem K x + c = w, x >= 0, w >= 0,
       // x . w = 0 (Box2D 2.x's block solver, its four cases tried in turn), with x the new accumulated
       // impulses and c from each row's own regime: c_i = s_m (v_n,i + bias_i) - (1 - s_i) (K x_old)_i,
       // which is the soft row's update written for both rows (s_m, s_i its mass and impulse scales).
-      const r1ax = R[o1 + Point.RAx]!,
-        r1ay = R[o1 + Point.RAy]!,
-        r1bx = R[o1 + Point.RBx]!,
-        r1by = R[o1 + Point.RBy]!;
-      const r2ax = R[o2 + Point.RAx]!,
-        r2ay = R[o2 + Point.RAy]!,
-        r2bx = R[o2 + Point.RBx]!,
-        r2by = R[o2 + Point.RBy]!;
-      const s1 = R[o1 + Point.Separation]! + (dbx - tb * r1by - dax + ta * r1ay) * nx + (dby + tb * r1bx - day - ta * r1ax) * ny;
-      const s2 = R[o2 + Point.Separation]! + (dbx - tb * r2by - dax + ta * r2ay) * nx + (dby + tb * r2bx - day - ta * r2ax) * ny;
-      let b1 = 0,
-        m1 = 1,
-        i1 = 0,
-        b2 = 0,
-        m2 = 1,
-        i2 = 0;
-      if (s1 > 0) b1 = s1 * invH;
-      else if (useBias) {
-        b1 = biasRate * s1;
-        if (b1 < -push) b1 = -push;
-        m1 = softMass;
-        i1 = softImpulse;
-      }
-      if (s2 > 0) b2 = s2 * invH;
-      else if (useBias) {
-        b2 = biasRate * s2;
-        if (b2 < -push) b2 = -push;
-        m2 = softMass;
-        i2 = softImpulse;
-      }
-      // Soft rows (overlap with bias) that both push are solved as a block too. One point after the
-      // other, a column of light boxes under a heavy one (1 kg boxes, 100 kg on top) tips its boxes a
-      // little at every pass, the tilt grows and the column buckles; the block keeps the two points'
-      // impulses symmetric, and the column stands.
       const vn1 = (vbx - wb * r1by - vax + wa * r1ay) * nx + (vby + wb * r1bx - vay - wa * r1ax) * ny;
       const vn2 = (vbx - wb * r2by - vax + wa * r2ay) * nx + (vby + wb * r2bx - vay - wa * r2ax) * ny;
-      const l1 = R[o1 + Point.NormalImpulse]!,
-        l2 = R[o2 + Point.NormalImpulse]!;
-      const K11 = R[r + Row.K11]!,
-        K22 = R[r + Row.K22]!,
-        K12 = R[r + Row.K12]!;
-      const B11 = R[r + Row.B11]!,
-        B12 = R[r + Row.B12]!,
-        B22 = R[r + Row.B22]!;
+      const l1 = R[o1 + MP_NORMAL_IMPULSE]!,
+        l2 = R[o2 + MP_NORMAL_IMPULSE]!;
+      const K11 = R[r + MR_K11]!,
+        K22 = R[r + MR_K22]!,
+        K12 = R[r + MR_K12]!;
       const c1 = m1 * (vn1 + b1) - (1 - i1) * (K11 * l1 + K12 * l2);
       const c2 = m2 * (vn2 + b2) - (1 - i2) * (K12 * l1 + K22 * l2);
-      let n1 = -(B11 * c1 + B12 * c2),
-        n2 = -(B12 * c1 + B22 * c2);
-      const both = n1 >= 0 && n2 >= 0;
-      let ok = both;
-      // A point that lets go (one or both impulses 0: an impact undone, a box lifting off an edge).
-      if (!both) {
-        n1 = -c1 / K11;
-        n2 = 0;
-        ok = n1 >= 0 && K12 * n1 + c2 >= 0;
-      }
-      if (!both && !ok) {
-        n1 = 0;
-        n2 = -c2 / K22;
-        ok = n2 >= 0 && K12 * n2 + c1 >= 0;
-      }
-      if (!both && !ok) {
-        n1 = 0;
-        n2 = 0;
-        ok = c1 >= 0 && c2 >= 0;
-      }
-      if (ok) {
+      if (solveBlock(R, r, c1, c2)) {
+        const n1 = R[o1 + MP_NORMAL_IMPULSE]!,
+          n2 = R[o2 + MP_NORMAL_IMPULSE]!;
         const d1 = n1 - l1,
           d2 = n2 - l2;
-        R[o1 + Point.NormalImpulse] = n1;
-        R[o2 + Point.NormalImpulse] = n2;
-        if (d1 > R[o1 + Point.MaxNormalImpulse]!) R[o1 + Point.MaxNormalImpulse] = d1;
-        if (d2 > R[o2 + Point.MaxNormalImpulse]!) R[o2 + Point.MaxNormalImpulse] = d2;
+        if (d1 > R[o1 + MP_MAX_NORMAL_IMPULSE]!) R[o1 + MP_MAX_NORMAL_IMPULSE] = d1;
+        if (d2 > R[o2 + MP_MAX_NORMAL_IMPULSE]!) R[o2 + MP_MAX_NORMAL_IMPULSE] = d2;
         total = n1 + n2;
         const P1x = d1 * nx,
           P1y = d1 * ny,
@@ -405,31 +339,24 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean)
         solved = true;
       }
     }
-    for (let p = 0; p < m && !solved; p++) {
-      const o = o1 + p * Point.Stride;
-      const rax = R[o + Point.RAx]!,
-        ray = R[o + Point.RAy]!,
-        rbx = R[o + Point.RBx]!,
-        rby = R[o + Point.RBy]!;
-      const s = R[o + Point.Separation]! + (dbx - tb * rby - dax + ta * ray) * nx + (dby + tb * rbx - day - ta * rax) * ny;
-      let bias = 0,
-        massScale = 1,
-        impulseScale = 0;
-      if (s > 0) bias = s * invH;
-      else if (useBias) {
-        bias = biasRate * s;
-        massScale = softMass;
-        impulseScale = softImpulse;
-        if (bias < -push) bias = -push;
-      }
+    for (let p = 0; p < (two ? 2 : 1) && !solved; p++) {
+      // Point after point, with the velocities the one before left.
+      const o = o1 + p * MP_STRIDE;
+      const rax = R[o + MP_RAX]!,
+        ray = R[o + MP_RAY]!,
+        rbx = R[o + MP_RBX]!,
+        rby = R[o + MP_RBY]!;
+      const bias = p === 0 ? b1 : b2,
+        massScale = p === 0 ? m1 : m2,
+        impulseScale = p === 0 ? i1 : i2;
       const vn = (vbx - wb * rby - vax + wa * ray) * nx + (vby + wb * rbx - vay - wa * rax) * ny;
-      const old = R[o + Point.NormalImpulse]!;
-      let next = old - R[o + Point.NormalMass]! * massScale * (vn + bias) - impulseScale * old;
+      const old = R[o + MP_NORMAL_IMPULSE]!;
+      let next = old - R[o + MP_NORMAL_MASS]! * massScale * (vn + bias) - impulseScale * old;
       if (next < 0) next = 0;
       const dl = next - old;
-      R[o + Point.NormalImpulse] = next;
+      R[o + MP_NORMAL_IMPULSE] = next;
       total += next;
-      if (dl > R[o + Point.MaxNormalImpulse]!) R[o + Point.MaxNormalImpulse] = dl;
+      if (dl > R[o + MP_MAX_NORMAL_IMPULSE]!) R[o + MP_MAX_NORMAL_IMPULSE] = dl;
       const Px = dl * nx,
         Py = dl * ny;
       vax -= mA * Px;
@@ -439,39 +366,54 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean)
       vby += mB * Py;
       wb += iB * (rbx * Py - rby * Px);
     }
-    const bound = R[r + Row.FrictionBound]!;
-    for (let p = 0; p < m; p++) {
-      const o = o1 + p * Point.Stride;
-      const rax = R[o + Point.RAx]!,
-        ray = R[o + Point.RAy]!,
-        rbx = R[o + Point.RBx]!,
-        rby = R[o + Point.RBy]!;
-      const dvx = vbx - wb * rby - vax + wa * ray,
-        dvy = vby + wb * rbx - vay - wa * rax;
+    // Friction, point 1 then point 2: |lambda_t| <= bound lambda_n.
+    const bound = R[r + MR_FRICTION_BOUND]!;
+    {
+      const dvx = vbx - wb * r1by - vax + wa * r1ay,
+        dvy = vby + wb * r1bx - vay - wa * r1ax;
       const vt = -dvx * ny + dvy * nx;
-      const old = R[o + Point.TangentImpulse]!,
-        maxF = bound * R[o + Point.NormalImpulse]!;
-      let next = old - R[o + Point.TangentMass]! * vt;
+      const old = R[o1 + MP_TANGENT_IMPULSE]!,
+        maxF = bound * R[o1 + MP_NORMAL_IMPULSE]!;
+      let next = old - R[o1 + MP_TANGENT_MASS]! * vt;
       next = next < -maxF ? -maxF : next > maxF ? maxF : next;
       const dl = next - old;
-      R[o + Point.TangentImpulse] = next;
+      R[o1 + MP_TANGENT_IMPULSE] = next;
       const Px = -dl * ny,
         Py = dl * nx;
       vax -= mA * Px;
       vay -= mA * Py;
-      wa -= iA * (rax * Py - ray * Px);
+      wa -= iA * (r1ax * Py - r1ay * Px);
       vbx += mB * Px;
       vby += mB * Py;
-      wb += iB * (rbx * Py - rby * Px);
+      wb += iB * (r1bx * Py - r1by * Px);
     }
-    const roll = R[r + Row.Rolling]!;
+    if (two) {
+      const dvx = vbx - wb * r2by - vax + wa * r2ay,
+        dvy = vby + wb * r2bx - vay - wa * r2ax;
+      const vt = -dvx * ny + dvy * nx;
+      const old = R[o2 + MP_TANGENT_IMPULSE]!,
+        maxF = bound * R[o2 + MP_NORMAL_IMPULSE]!;
+      let next = old - R[o2 + MP_TANGENT_MASS]! * vt;
+      next = next < -maxF ? -maxF : next > maxF ? maxF : next;
+      const dl = next - old;
+      R[o2 + MP_TANGENT_IMPULSE] = next;
+      const Px = -dl * ny,
+        Py = dl * nx;
+      vax -= mA * Px;
+      vay -= mA * Py;
+      wa -= iA * (r2ax * Py - r2ay * Px);
+      vbx += mB * Px;
+      vby += mB * Py;
+      wb += iB * (r2bx * Py - r2by * Px);
+    }
+    const roll = R[r + MR_ROLLING]!;
     if (roll > 0) {
-      const old = R[r + Row.RollingImpulse]!,
+      const old = R[r + MR_ROLLING_IMPULSE]!,
         maxR = roll * total;
-      let next = old - R[r + Row.RollingMass]! * (wb - wa);
+      let next = old - R[r + MR_ROLLING_MASS]! * (wb - wa);
       next = next < -maxR ? -maxR : next > maxR ? maxR : next;
       const dl = next - old;
-      R[r + Row.RollingImpulse] = next;
+      R[r + MR_ROLLING_IMPULSE] = next;
       wa -= iA * dl;
       wb += iB * dl;
     }
@@ -485,20 +427,25 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean)
       sb[a + BS2_PUSHED] = 1;
       sb[b + BS2_PUSHED] = 1;
     }
+    if (accumulate) {
+      R[o1 + MP_TOTAL_NORMAL_IMPULSE] = R[o1 + MP_TOTAL_NORMAL_IMPULSE]! + R[o1 + MP_NORMAL_IMPULSE]!;
+      if (two) R[o2 + MP_TOTAL_NORMAL_IMPULSE] = R[o2 + MP_TOTAL_NORMAL_IMPULSE]! + R[o2 + MP_NORMAL_IMPULSE]!;
+    }
   }
 }
 
 /**
- * Adds each point's substep impulse to its step total (call once per substep, after relaxing).
+ * Adds each point's substep impulse to its step total (once per substep, after relaxing; the last
+ * relax pass of solveManifolds does it when asked).
  * @category Collision
  */
 export function accumulateManifoldImpulses(cs: CollisionState): void {
   const R = cs.shapes.solverRows;
-  for (let i = 0, n = cs.shapes.manifolds.count; i < n; i++) {
-    const r = i * Row.Stride;
-    for (let p = 0, m = R[r + Row.PointCount]!; p < m; p++) {
-      const o = r + Row.Point0 + p * Point.Stride;
-      R[o + Point.TotalNormalImpulse] = R[o + Point.TotalNormalImpulse]! + R[o + Point.NormalImpulse]!;
+  for (let i = 0, n = Math.min(cs.shapes.manifolds.count, MAX_MANIFOLDS); i < n; i++) {
+    const r = i * MR_STRIDE;
+    for (let p = 0, m = R[r + MR_POINT_COUNT]!; p < m; p++) {
+      const o = r + MR_POINT0 + p * MP_STRIDE;
+      R[o + MP_TOTAL_NORMAL_IMPULSE] = R[o + MP_TOTAL_NORMAL_IMPULSE]! + R[o + MP_NORMAL_IMPULSE]!;
     }
   }
 }
@@ -517,81 +464,58 @@ export function applyManifoldRestitution(world: PhysicsWorld): void {
     sb = cs.bodyState;
   const threshold = cs.settings.restitutionThreshold;
   for (let i = 0, n = cs.shapes.manifolds.count; i < n; i++) {
-    const r = i * Row.Stride;
-    const e = R[r + Row.Restitution]!;
+    const r = i * MR_STRIDE;
+    const e = R[r + MR_RESTITUTION]!;
     if (e === 0) continue;
-    const a = R[r + Row.BodyA]! * BS2_STRIDE,
-      b = R[r + Row.BodyB]! * BS2_STRIDE;
+    const a = (R[r + MR_BODY_A]! | 0) * BS2_STRIDE,
+      b = (R[r + MR_BODY_B]! | 0) * BS2_STRIDE;
     const mA = sb[a + BS2_INV_MASS]!,
       iA = sb[a + BS2_INV_INERTIA]!,
       mB = sb[b + BS2_INV_MASS]!,
       iB = sb[b + BS2_INV_INERTIA]!;
-    const nx = R[r + Row.Nx]!,
-      ny = R[r + Row.Ny]!;
+    const nx = R[r + MR_NX]!,
+      ny = R[r + MR_NY]!;
     let vax = sb[a + BS2_VX]!,
       vay = sb[a + BS2_VY]!,
       wa = sb[a + BS2_W]!,
       vbx = sb[b + BS2_VX]!,
       vby = sb[b + BS2_VY]!,
       wb = sb[b + BS2_W]!;
-    const m = R[r + Row.PointCount]!;
-    const o1 = r + Row.Point0,
-      o2 = o1 + Point.Stride;
-    if (m === 2 && R[r + Row.BlockValid] === 1) {
+    const m = R[r + MR_POINT_COUNT]!;
+    const o1 = r + MR_POINT0,
+      o2 = o1 + MP_STRIDE;
+    if (m === 2 && R[r + MR_BLOCK_VALID] === 1) {
       // Both points at once (the linear complementarity problem of the block solve, with the target
       // v_n,i = -e v_n0,i), so symmetric points get symmetric impulses: point after point, the first
       // takes the whole rebound, turns the body and leaves the second less to do.
-      const v1 = R[o1 + Point.RelativeVelocity]!,
-        v2 = R[o2 + Point.RelativeVelocity]!;
-      const on1 = v1 <= -threshold && R[o1 + Point.MaxNormalImpulse]! > 0,
-        on2 = v2 <= -threshold && R[o2 + Point.MaxNormalImpulse]! > 0;
+      const v1 = R[o1 + MP_RELATIVE_VELOCITY]!,
+        v2 = R[o2 + MP_RELATIVE_VELOCITY]!;
+      const on1 = v1 <= -threshold && R[o1 + MP_MAX_NORMAL_IMPULSE]! > 0,
+        on2 = v2 <= -threshold && R[o2 + MP_MAX_NORMAL_IMPULSE]! > 0;
       if (on1 && on2) {
-        const r1ax = R[o1 + Point.RAx]!,
-          r1ay = R[o1 + Point.RAy]!,
-          r1bx = R[o1 + Point.RBx]!,
-          r1by = R[o1 + Point.RBy]!,
-          r2ax = R[o2 + Point.RAx]!,
-          r2ay = R[o2 + Point.RAy]!,
-          r2bx = R[o2 + Point.RBx]!,
-          r2by = R[o2 + Point.RBy]!;
+        const r1ax = R[o1 + MP_RAX]!,
+          r1ay = R[o1 + MP_RAY]!,
+          r1bx = R[o1 + MP_RBX]!,
+          r1by = R[o1 + MP_RBY]!,
+          r2ax = R[o2 + MP_RAX]!,
+          r2ay = R[o2 + MP_RAY]!,
+          r2bx = R[o2 + MP_RBX]!,
+          r2by = R[o2 + MP_RBY]!;
         const vn1 = (vbx - wb * r1by - vax + wa * r1ay) * nx + (vby + wb * r1bx - vay - wa * r1ax) * ny;
         const vn2 = (vbx - wb * r2by - vax + wa * r2ay) * nx + (vby + wb * r2bx - vay - wa * r2ax) * ny;
-        const l1 = R[o1 + Point.NormalImpulse]!,
-          l2 = R[o2 + Point.NormalImpulse]!;
-        const B11 = R[r + Row.B11]!,
-          B12 = R[r + Row.B12]!,
-          B22 = R[r + Row.B22]!;
-        const K11 = R[r + Row.K11]!,
-          K22 = R[r + Row.K22]!,
-          K12 = R[r + Row.K12]!;
+        const l1 = R[o1 + MP_NORMAL_IMPULSE]!,
+          l2 = R[o2 + MP_NORMAL_IMPULSE]!;
+        const K11 = R[r + MR_K11]!,
+          K22 = R[r + MR_K22]!,
+          K12 = R[r + MR_K12]!;
         // K x + c = w >= 0, x >= 0, x . w = 0, with w_i = v_n,i + e v_n0,i after the impulses x.
         const c1 = vn1 + e * v1 - (K11 * l1 + K12 * l2),
           c2 = vn2 + e * v2 - (K12 * l1 + K22 * l2);
-        let n1 = -(B11 * c1 + B12 * c2),
-          n2 = -(B12 * c1 + B22 * c2);
-        let ok = n1 >= 0 && n2 >= 0;
-        if (!ok) {
-          n1 = -c1 / K11;
-          n2 = 0;
-          ok = n1 >= 0 && K12 * n1 + c2 >= 0;
-        }
-        if (!ok) {
-          n1 = 0;
-          n2 = -c2 / K22;
-          ok = n2 >= 0 && K12 * n2 + c1 >= 0;
-        }
-        if (!ok) {
-          n1 = 0;
-          n2 = 0;
-          ok = c1 >= 0 && c2 >= 0;
-        }
-        if (ok) {
-          const d1 = n1 - l1,
-            d2 = n2 - l2;
-          R[o1 + Point.NormalImpulse] = n1;
-          R[o2 + Point.NormalImpulse] = n2;
-          R[o1 + Point.TotalNormalImpulse] = R[o1 + Point.TotalNormalImpulse]! + d1;
-          R[o2 + Point.TotalNormalImpulse] = R[o2 + Point.TotalNormalImpulse]! + d2;
+        if (solveBlock(R, r, c1, c2)) {
+          const d1 = R[o1 + MP_NORMAL_IMPULSE]! - l1,
+            d2 = R[o2 + MP_NORMAL_IMPULSE]! - l2;
+          R[o1 + MP_TOTAL_NORMAL_IMPULSE] = R[o1 + MP_TOTAL_NORMAL_IMPULSE]! + d1;
+          R[o2 + MP_TOTAL_NORMAL_IMPULSE] = R[o2 + MP_TOTAL_NORMAL_IMPULSE]! + d2;
           const P1x = d1 * nx,
             P1y = d1 * ny,
             P2x = d2 * nx,
@@ -613,20 +537,20 @@ export function applyManifoldRestitution(world: PhysicsWorld): void {
       }
     }
     for (let p = 0; p < m; p++) {
-      const o = o1 + p * Point.Stride;
-      const v0 = R[o + Point.RelativeVelocity]!;
-      if (v0 > -threshold || R[o + Point.MaxNormalImpulse]! === 0) continue;
-      const rax = R[o + Point.RAx]!,
-        ray = R[o + Point.RAy]!,
-        rbx = R[o + Point.RBx]!,
-        rby = R[o + Point.RBy]!;
+      const o = o1 + p * MP_STRIDE;
+      const v0 = R[o + MP_RELATIVE_VELOCITY]!;
+      if (v0 > -threshold || R[o + MP_MAX_NORMAL_IMPULSE]! === 0) continue;
+      const rax = R[o + MP_RAX]!,
+        ray = R[o + MP_RAY]!,
+        rbx = R[o + MP_RBX]!,
+        rby = R[o + MP_RBY]!;
       const vn = (vbx - wb * rby - vax + wa * ray) * nx + (vby + wb * rbx - vay - wa * rax) * ny;
-      const old = R[o + Point.NormalImpulse]!;
-      let next = old - R[o + Point.NormalMass]! * (vn + e * v0);
+      const old = R[o + MP_NORMAL_IMPULSE]!;
+      let next = old - R[o + MP_NORMAL_MASS]! * (vn + e * v0);
       if (next < 0) next = 0;
       const dl = next - old;
-      R[o + Point.NormalImpulse] = next;
-      R[o + Point.TotalNormalImpulse] = R[o + Point.TotalNormalImpulse]! + dl;
+      R[o + MP_NORMAL_IMPULSE] = next;
+      R[o + MP_TOTAL_NORMAL_IMPULSE] = R[o + MP_TOTAL_NORMAL_IMPULSE]! + dl;
       const Px = dl * nx,
         Py = dl * ny;
       vax -= mA * Px;
