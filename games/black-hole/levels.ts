@@ -1,8 +1,10 @@
 /**
- * Levels for black hole, DOM-free (Node tests run them): a first level a newcomer wins, then holes
- * across the straight path up (the player must steer), more and bigger holes, holes that drift, and
- * a fuel limit. Each cleared level gives a lost life back (up to the starting three). The ship waits at the start until the player thrusts. The page (main.ts) shows the level, the fuel, an
- * end-of-level summary and the best score.
+ * Levels for black hole, DOM-free (Node tests run them): a first level that teaches steering round a
+ * hole, then two set pieces (a wall of holes across the field with one gap off to the side; then a
+ * narrower gap with a hole above it), then holes across the straight path up, more and bigger holes,
+ * holes that drift, and a fuel limit. Each cleared level gives a lost life back (up to the starting
+ * three). The ship waits at the start until the player thrusts. The page (main.ts) shows the level,
+ * the fuel, an end-of-level summary and the best score.
  *
  * A level is a `LevelSpec` (`levelSpec(n)`); `startLevel` lays its holes out in a game made by
  * `createBlackHoleGame` (./rules), and `stepLevel` runs one step of it: the holes drift, the fuel
@@ -32,7 +34,7 @@ import {
 export interface LevelSpec {
   /** Level number, integer >= 1. */
   readonly level: number;
-  /** Holes, integer in [1, MAX_HOLES]. */
+  /** Holes, integer in [0, MAX_HOLES] (on a wall level, besides the wall's: see `gate`). */
   readonly holes: number;
   /** Range of the holes' horizon radii, m. */
   readonly radius: readonly [number, number];
@@ -47,12 +49,30 @@ export interface LevelSpec {
   readonly drift: number;
   /** Seconds of thrust the tank holds (Infinity: no limit). */
   readonly fuel: number;
+  /**
+   * Clear width, m, of the one gap in a wall of holes laid across the whole field at mid-height
+   * (0: no wall). The gap lies off to one side of the start, so the straight climb meets the wall;
+   * elsewhere the wall's holes overlap (`WALL_GAP`), out to the field's edges.
+   * On a wall level `holes` counts the holes besides the wall (the wall's own count depends on the
+   * field's width) and the blockers lie across the way up through the gap, above the wall.
+   */
+  readonly gate: number;
 }
 
 /**
- * The spec of level `level`, one new difficulty at a time: level 1 one small hole across the
- * straight path up (holding thrust up falls in; a nudge sideways passes it); level 2 a second hole
- * off that path; level 3 a third hole; level 4 two holes across the path, one above the other;
+ * Clear gap, m, between two neighbouring horizons of a wall (and between the last one and the field's
+ * edge), at most: less than the ship's width (2 SHIP_RADIUS), so the wall is closed but for its gate.
+ * (With gaps of 0.8 m the ship, whose motion is a point's, threaded some of them straight up their
+ * middle, where the pulls of the holes either side cancel. Horizons that overlap would close the
+ * wall too, but make it a line of mass that pulls the ship up from the start harder than its thrust.)
+ */
+export const WALL_GAP = 0.5;
+
+/**
+ * The spec of level `level`, one new difficulty at a time: level 1 one hole across the straight path
+ * up (holding thrust up falls in; a move sideways passes it); level 2 a wall of holes across the
+ * field with one 7 m gap off to the side (fly across to it, then up through it); level 3 a narrower
+ * gap (5.5 m) with a hole above it; level 4 three holes, two across the path one above the other;
  * level 5 a fourth hole; from level 6 the holes drift, slowly at first (0.35, then 0.6, 0.8 m/s);
  * from level 8 the fuel is limited (18 s, then 15 s down to 5 s); from level 9 a fifth hole, then a
  * hole more every second level (up to MAX_HOLES), bigger (radius up to 2 m) and faster (up to 3 m/s).
@@ -60,15 +80,23 @@ export interface LevelSpec {
  */
 export function levelSpec(level: number): LevelSpec {
   if (!Number.isInteger(level) || level < 1) throw new RangeError(`levelSpec: level must be an integer >= 1, got ${level}`);
-  const spec = (holes: number, radius: [number, number], corridor: number, blockers: number, drift: number, fuel: number): LevelSpec =>
-    Object.freeze({ level, holes, radius: Object.freeze(radius) as readonly [number, number], corridor, blockers, drift, fuel });
+  const spec = (
+    holes: number,
+    radius: [number, number],
+    corridor: number,
+    blockers: number,
+    drift: number,
+    fuel: number,
+    gate = 0,
+  ): LevelSpec =>
+    Object.freeze({ level, holes, radius: Object.freeze(radius) as readonly [number, number], corridor, blockers, drift, fuel, gate });
   switch (level) {
     case 1:
-      return spec(1, [0.55, 0.7], 9, 1, 0, Infinity);
+      return spec(1, [0.8, 0.95], 0, 1, 0, Infinity);
     case 2:
-      return spec(2, [0.55, 0.9], 6, 1, 0, Infinity);
+      return spec(0, [0.45, 0.55], 0, 0, 0, Infinity, 7);
     case 3:
-      return spec(3, [0.55, 1.0], 3, 1, 0, Infinity);
+      return spec(1, [0.45, 0.55], 0, 1, 0, Infinity, 5.5);
     case 4:
       return spec(3, [0.6, 1.1], 0, 2, 0, Infinity);
     case 5:
@@ -103,7 +131,7 @@ export interface LevelSummary {
   readonly totalTime: number;
   /** Lives after the clear (a cleared level gives one back, up to the starting lives). */
   readonly lives: number;
-  /** Points it scored (one per hole). */
+  /** Points it scored (one per hole on the field, the wall's included). */
   readonly points: number;
   /** Fuel left, s of thrust (Infinity when unlimited). */
   readonly fuelLeft: number;
@@ -171,6 +199,8 @@ export function beginLevel(game: BlackHoleGame, run: LevelRun): void {
 /** The opening line of a level. */
 export function levelMessage(spec: LevelSpec): string {
   const parts = [`Level ${spec.level}: reach the green line.`];
+  if (spec.gate > 0)
+    parts.push(spec.blockers > 0 ? 'Find the gap in the wall, then steer round the hole above it.' : 'Find the gap in the wall.');
   if (spec.drift > 0) parts.push('The holes drift.');
   if (Number.isFinite(spec.fuel)) parts.push(`${spec.fuel} s of fuel.`);
   return parts.join(' ');
@@ -189,6 +219,10 @@ function layLevel(game: BlackHoleGame, run: LevelRun, level: number): void {
   const G = gravitationalConstant(game),
     c = game.params.c;
   const [r0, r1] = spec.radius;
+  const s = game.lineY / LINE_Y;
+  // The wall first (gate levels): its gap's centre, m, where the blockers go above it.
+  const gateX = spec.gate > 0 ? layWall(game, run, spec) : game.start[0];
+  const wallY = game.holes.length > 0 ? world.components.Position.y[slotOf(game.holes[0]!)]! : 0;
   for (let k = 0; k < spec.holes; k++) {
     let bestX = 0,
       bestY = 0,
@@ -197,10 +231,13 @@ function layLevel(game: BlackHoleGame, run: LevelRun, level: number): void {
     for (let attempt = 0; attempt < 300; attempt++) {
       const r = rng.range(r0, r1);
       let x: number, y: number;
-      if (k < spec.blockers) {
+      if (k < spec.blockers && spec.gate > 0) {
+        // Across the way up through the wall's gap: 6 to 7.5 m (on the default field) above the wall.
+        x = gateX + rng.range(-0.5, 0.5) * r;
+        y = Math.min(wallY + rng.range(6, 7.5) * s, game.lineY - 3 - r);
+      } else if (k < spec.blockers) {
         // Across the straight path up, one blocker in each band of heights (lower band first).
         // Bands measured on the 22 m climb of the default field, scaled to this field's.
-        const s = game.lineY / LINE_Y;
         x = game.start[0] + rng.range(-0.5, 0.5) * r;
         const [lo, hi] = spec.blockers === 1 ? [9, 15] : k === 0 ? [7.5, 10.5] : [14, 17];
         y = rng.range(lo * s, hi * s);
@@ -243,6 +280,77 @@ function layLevel(game: BlackHoleGame, run: LevelRun, level: number): void {
   game.message = levelMessage(spec);
   run.parked = true;
   resetShip(game);
+}
+
+/**
+ * Lays a gate level's wall (see `LevelSpec.gate`): a row of holes across the whole field at 10 to 12 m
+ * up (on the default field; scaled to this field's climb), with one gap of clear width
+ * min(spec.gate, 0.32 x the field's width) m off to one side of the start (either side, at random;
+ * its near edge at least 2 m from the start's x). From each edge of the gap out to the field's edge,
+ * holes of radii in spec.radius follow one another at equal gaps of at most WALL_GAP m, the first
+ * one's horizon on the gap's edge. Of up to 40 draws of the gap's place, the one that puts a hole's
+ * centre nearest the start's x (in radii) is laid, so the straight climb runs into a hole and not up
+ * a narrow gap. On a field so wide that the wall would need more than MAX_HOLES - spec.holes - 4
+ * holes, all of them are larger in proportion. Pushes the holes into the game.
+ * @returns the gap's centre, m (x).
+ */
+function layWall(game: BlackHoleGame, run: LevelRun, spec: LevelSpec): number {
+  const world = game.world,
+    rng = game.rng;
+  const W = game.field.width,
+    x0 = game.start[0];
+  const gate = Math.min(spec.gate, 0.32 * W);
+  // Four spare: the rounding up on each side of the gap, and the hole more each side may need.
+  const room = MAX_HOLES - spec.holes - 4;
+  const grow = Math.max(1, ((W - gate) / room - WALL_GAP) / (spec.radius[0] + spec.radius[1]));
+  const r0 = grow * spec.radius[0],
+    r1 = grow * spec.radius[1];
+  const y = rng.range(10, 12) * (game.lineY / LINE_Y);
+  const least = gate / 2 + 2,
+    most = W / 2 - gate / 2 - 2 * r1 - 1;
+  let best = { gateX: x0, xs: [] as number[], rs: [] as number[] },
+    bestOff = Infinity;
+  for (let attempt = 0; attempt < 40 && bestOff > 0.3; attempt++) {
+    const side = rng.range(0, 1) < 0.5 ? -1 : 1;
+    const gateX = x0 + side * (most > least ? rng.range(least, most) : least);
+    const xs: number[] = [],
+      rs: number[] = [];
+    for (const dir of [-1, 1]) {
+      const edge = gateX + (dir * gate) / 2;
+      const length = dir > 0 ? W - edge : edge;
+      if (length <= WALL_GAP) continue;
+      const radii = Array.from({ length: Math.ceil(length / (r0 + r1 + WALL_GAP)) }, () => rng.range(r0, r1));
+      const span = () => radii.reduce((a, r) => a + 2 * r, 0);
+      while ((length - span()) / radii.length > WALL_GAP) radii.push(rng.range(r0, r1));
+      const gap = (length - span()) / radii.length;
+      let at = edge;
+      for (const r of radii) {
+        const x = at + dir * r;
+        at = x + dir * (r + gap);
+        xs.push(x);
+        rs.push(r);
+      }
+    }
+    let off = Infinity;
+    for (let i = 0; i < xs.length; i++) off = Math.min(off, Math.abs(xs[i]! - x0) / rs[i]!);
+    if (off < bestOff) {
+      bestOff = off;
+      best = { gateX, xs, rs };
+    }
+  }
+  const G = gravitationalConstant(game),
+    c = game.params.c;
+  for (let i = 0; i < best.xs.length; i++) {
+    const r = best.rs[i]!;
+    const mass = schwarzschildMass(r, c, G);
+    const e = addBody(world, { position: [best.xs[i]!, y + rng.range(-0.2, 0.2)], static: true });
+    setAttractor(world, e, { mass });
+    game.holes.push(e);
+    game.holeRadius.push(r);
+    game.holeMass.push(mass);
+    run.holeVx.push(0);
+  }
+  return best.gateX;
 }
 
 /** Removes every hole from the field (and its drift speed). */
@@ -308,6 +416,7 @@ export function stepLevel(game: BlackHoleGame, run: LevelRun): BlackHoleEvent | 
   }
   const time = run.time + dt;
   run.time = time;
+  const scoreBefore = game.score;
   const event = stepBlackHole(game);
   if (event === 'fell' || event === 'lost') run.parked = true;
   else if (event === 'none' && run.parked) {
@@ -323,7 +432,7 @@ export function stepLevel(game: BlackHoleGame, run: LevelRun): BlackHoleEvent | 
     time: time - run.attemptStart,
     totalTime: time,
     lives: game.lives,
-    points: run.spec.holes,
+    points: game.score - scoreBefore,
     fuelLeft: run.fuelLeft,
     falls: game.falls - run.fallsAtStart,
   });

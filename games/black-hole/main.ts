@@ -8,9 +8,11 @@
  * game is over, P pause, N single step, R reset, F predicted path on / off, V replays the run from its
  * start (./replay.ts: every input is recorded at its step; the replay ends where the run was, bit for bit).
  * Touch: the four arrow buttons under the scene (hold to thrust); tap the message to restart.
- * Levels (./levels.ts): level 1 has one small hole off the straight path, later levels more and
- * bigger holes, drifting holes and a fuel limit; clearing a level shows a summary and waits for
- * Enter (or a tap on the message); the best score is kept in the browser's local storage.
+ * Levels (./levels.ts): level 1 has one hole across the straight path, levels 2 and 3 a wall of holes
+ * with one gap off to the side (then a narrower one with a hole above it), later levels more and
+ * bigger holes, drifting holes and a fuel limit; clearing a level shows a summary and a button over
+ * the middle of the field, and waits for Enter or a tap; the best score is kept in the browser's
+ * local storage.
  * URL: ?level=N (start level, default 1), ?holes=N (1..16: the classic endless game with N holes
  * instead of levels), ?seed=S, ?c=C (m/s), ?thrust=A (m/s^2), ?path=0|1.
  *
@@ -308,6 +310,9 @@ style.textContent = `
 .bh-status.over .bh-message { color: #ff8c8c; cursor: pointer; }
 .bh-status.cleared .bh-message { color: #7ee787; cursor: pointer; font-weight: 600; }
 .bh-pad button { font-size: 22px; min-width: 56px; }
+/* The next-level / play-again button: over the middle of the field, which is empty between levels,
+   not at the stage's foot, where it covered the start pad and the ship waiting on it. */
+body .bp-touchbar.bp-action { top: 40%; bottom: auto; }
 @media (pointer: coarse) {
   .bp-touchbar.bh-pad { flex: 1 1 100%; gap: 8px; padding: 2px 8px; }
   .bp-touchbar.bh-pad button { flex: 1 1 0; max-width: 86px; min-height: 62px; font-size: 28px; border-radius: 14px; }
@@ -465,7 +470,12 @@ const holeGlowLayer = new Container({ label: 'hole-glows' });
 const holeGlows: Sprite[] = [];
 const holesLayer = new Graphics({ label: 'holes' });
 const overlay = new Graphics({ label: 'ship-and-path' });
-app.stage.addChild(holeGlowLayer, holesLayer, overlay);
+/** The holes, glows and discs, kept inside the field (a wall's holes reach its edges). */
+const holeField = new Container({ label: 'hole-field' });
+holeField.addChild(holeGlowLayer, holesLayer);
+const holeMask = new Graphics({ label: 'hole-mask' });
+holeField.mask = holeMask;
+app.stage.addChild(holeMask, holeField, overlay);
 let backdropVersion = -1;
 /** Stars: x, y as fractions of the canvas, alpha (fixed, seeded); those inside the field are brighter. */
 const stars = (() => {
@@ -496,6 +506,7 @@ function drawBackdrop(): void {
   }
   backdrop.rect(cam.toScreenX(0), cam.toScreenY(H), cam.toScreenLength(W), cam.toScreenLength(H)).fill(0x070a16);
   nebulaMask.clear().rect(cam.toScreenX(0), cam.toScreenY(H), cam.toScreenLength(W), cam.toScreenLength(H)).fill(0xffffff);
+  holeMask.clear().rect(cam.toScreenX(0), cam.toScreenY(H), cam.toScreenLength(W), cam.toScreenLength(H)).fill(0xffffff);
   for (let i = 0; i < NEBULAE.length; i++) {
     const [fx, fy, size] = NEBULAE[i]!;
     const sprite = nebulaSprites[i]!;
@@ -635,13 +646,19 @@ const levelBanner = new Text({
     lineHeight: 34,
   },
 });
-levelBanner.anchor.set(0.5, 0.5);
+levelBanner.anchor.set(0.5, 0);
 levelBanner.visible = false;
 app.stage.addChild(levelBanner);
 
-/** What a level adds, in a few words, for the banner. */
+/** What a level asks, in a few words, for the banner: its holes (all on the field) and what is new. */
 function levelNews(spec: LevelRun['spec']): string {
-  const holes = `${spec.holes} ${spec.holes === 1 ? 'hole' : 'holes'}`;
+  const n = bh.holes.length;
+  const holes =
+    spec.gate > 0
+      ? spec.blockers > 0
+        ? 'through the gap, round the hole'
+        : 'find the gap in the wall'
+      : `${n} ${n === 1 ? 'hole' : 'holes'}`;
   const extra = [spec.drift > 0 ? 'drifting' : '', Number.isFinite(spec.fuel) ? `${spec.fuel} s of fuel` : ''].filter(Boolean);
   return `${holes}${extra.length ? `, ${extra.join(', ')}` : ''}`;
 }
@@ -656,8 +673,11 @@ function drawLevelBanner(): void {
   const cam = renderer.camera;
   levelBanner.style.fontSize = Math.max(18, Math.min(26, cam.toScreenLength(playField.width) / 14));
   levelBanner.style.lineHeight = 1.2 * levelBanner.style.fontSize;
+  // Wrapped to the field (a phone's is narrow), growing downwards from just under the line.
+  levelBanner.style.wordWrap = true;
+  levelBanner.style.wordWrapWidth = Math.max(160, cam.toScreenLength(playField.width) - 24);
   // Just under the line, above every hole (holes keep 3 m clear of it).
-  levelBanner.position.set(cam.toScreenX(playField.width / 2), cam.toScreenY(bh.lineY) + 1.25 * levelBanner.style.fontSize + 6);
+  levelBanner.position.set(cam.toScreenX(playField.width / 2), cam.toScreenY(bh.lineY) + 8);
 }
 
 /** Draws the edges the ship is within EDGE_WARN m of, brighter the nearer, and shows the warning. */

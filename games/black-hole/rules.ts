@@ -11,8 +11,8 @@
  *   e.g. Schutz, A First Course in General Relativity, ch. 11).
  * - Crossing the line near the top scores the number of holes on screen, adds a hole and lays them
  *   all out again; the ship goes back to the start.
- * - Falling into a hole (crossing its horizon during a step) costs one of three lives; the ship goes
- *   back to the start.
+ * - Falling into a hole (the ship, SHIP_RADIUS m round its centre, touching its horizon during a
+ *   step) costs one of three lives; the ship goes back to the start.
  * - Leaving the field puts the ship back at the start without penalty.
  * - At zero lives the game is over (the page restarts it with a key).
  *
@@ -72,6 +72,13 @@ export const MAX_HOLES = 16;
 
 /** The ship's mass, kg. */
 export const SHIP_MASS = 1;
+
+/**
+ * The ship's size for the horizons, m: it falls in when its centre comes within a horizon's radius
+ * plus this (the drawn ship is about 0.8 m wide, so it goes when it is seen to touch the black
+ * disc). Its motion is a point's.
+ */
+export const SHIP_RADIUS = 0.3;
 
 /** Thrust directions: none, or one of the four arrows. */
 export type Thrust = 'none' | 'up' | 'down' | 'left' | 'right';
@@ -405,9 +412,9 @@ export function resetShip(game: BlackHoleGame): void {
 }
 
 /**
- * Index of the hole whose horizon the segment from (ax, ay) to (bx, by) (m) enters, or -1: the
- * closest point of the segment to each centre is compared with the radius, so a fast ship cannot
- * jump over a horizon within one step.
+ * Index of the hole whose horizon the ship touches on its way from (ax, ay) to (bx, by) (m), or -1:
+ * the closest point of the segment to each centre is compared with the radius plus SHIP_RADIUS, so a
+ * fast ship cannot jump over a horizon within one step.
  */
 export function holeHit(game: BlackHoleGame, ax: number, ay: number, bx: number, by: number): number {
   const P = game.world.components.Position;
@@ -421,7 +428,7 @@ export function holeHit(game: BlackHoleGame, ax: number, ay: number, bx: number,
     const t = len2 > 0 ? Math.max(0, Math.min(1, ((cx - ax) * ex + (cy - ay) * ey) / len2)) : 0;
     const dx = ax + t * ex - cx,
       dy = ay + t * ey - cy;
-    const r = game.holeRadius[i]!;
+    const r = game.holeRadius[i]! + SHIP_RADIUS;
     if (dx * dx + dy * dy < r * r) return i;
   }
   return -1;
@@ -570,7 +577,7 @@ function syncPredictor(game: BlackHoleGame, pred: Predictor): void {
  * thrust held: the ship's position and velocity are copied into the predictor's world, which then
  * steps with the same dt, integrator, G, holes and thrust law as the game. Positions (m) go into
  * `out` as x0, y0, x1, y1, ... starting with the ship's current position; the path stops early where
- * it enters a horizon or leaves the field.
+ * the ship touches a horizon (see SHIP_RADIUS) or leaves the field.
  * @returns the number of points written (1 + steps taken), at most out.length / 2.
  * @throws RangeError unless steps is an integer in [1, 10_000].
  */
@@ -609,7 +616,7 @@ export function predictPath(game: BlackHoleGame, pred: Predictor, out: Float64Ar
       const h = pred.holes[i]!;
       const dx = x - HP.x[slotOf(h)]!,
         dy = y - HP.y[slotOf(h)]!,
-        r = radius[i]!;
+        r = radius[i]! + SHIP_RADIUS;
       if (dx * dx + dy * dy < r * r) {
         inside = true;
         break;

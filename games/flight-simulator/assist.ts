@@ -6,9 +6,11 @@
  *
  * - Stick sideways: a bank angle, up to `ASSIST.maxBank` at full stick (the ailerons roll the
  *   aircraft there and hold it); let go, the wings roll level.
- * - Stick forward and back: a flight-path angle, up to `ASSIST.maxClimb` up or down at full stick
- *   (the elevator pitches the aircraft until its path climbs or dives at that angle, pulling harder
- *   in a bank to keep the height); let go, the aircraft flies level.
+ * - Stick forward and back: the stick moves the elevator itself in proportion to its deflection, so
+ *   a held climb or dive gets the full response it has without the assist, up to a path of
+ *   `ASSIST.maxPath` (45 degrees: no loop, no vertical dive); the rest of the elevator is a path
+ *   hold that asks for `ASSIST.maxClimb` times the stick (pulling harder in a bank to keep the
+ *   height). Let go, the path hold alone flies the aircraft level.
  * - Rudder: as held, plus what cancels the sideslip (a coordinated turn).
  * - Throttle: the pilot's alone; the assist never moves it, so the stick steers without changing the
  *   engine (a climb trades speed for height, a dive the other way, as the physics has it).
@@ -73,8 +75,15 @@ export const ASSIST = Object.freeze({
    * wing still well under its stall; the course is laid for 50 degrees, see ./course.ts DESIGN_BANK).
    */
   maxBank: 60 * DEG,
-  /** Flight-path angle at full stick forward or back, rad. */
+  /** Flight-path angle the path hold asks for at full stick forward or back, rad (its share fades as the stick's grows). */
   maxClimb: 20 * DEG,
+  /**
+   * Steepest flight path the stick's own elevator pitches to, up or down, rad: within `pathFade` of
+   * it the stick's share fades to nothing and the path hold takes over (no loop, no vertical dive).
+   */
+  maxPath: 45 * DEG,
+  /** Width of the fade below `maxPath`, rad. */
+  pathFade: 10 * DEG,
   /** Aileron per radian of bank error (1/rad): full aileron rolls at about 0.5 rad/s at cruise. */
   bankGain: 2.5,
   /** Aileron per rad/s of roll rate, s: damps the roll towards the bank asked for. */
@@ -167,19 +176,45 @@ export function assist(s: FlightState, input: PilotInput, state: AssistState, dt
   const wanted = A.maxBank * clamp(input.roll, -1, 1);
   state.bankTarget += clamp(wanted - state.bankTarget, -A.bankRate * dt, A.bankRate * dt);
   const aileron = clamp(A.bankGain * (state.bankTarget - s.bank) - A.rollDamping * s.rollRate, -1, 1);
+  // The stick's own share of the elevator: its deflection |pitch|, faded out over `pathFade` as the
+  // path nears `maxPath` the way the stick pushes (no loop, no vertical dive).
+  const stick = clamp(input.pitch, -1, 1);
+  const share = Math.abs(stick) * clamp((A.maxPath - Math.sign(stick) * s.path) / A.pathFade, 0, 1);
   // Flight path: proportional, integral and pitch-rate damping. The integral finds the elevator the
   // trim needs (more in a bank, where the lift must also carry the turn) and winds no further than
-  // full elevator.
-  const error = A.maxClimb * clamp(input.pitch, -1, 1) - s.path;
+  // full elevator. It rests while the stick has the elevator (no wind-up against a held climb) and
+  // while the hold asks for full elevator the way the error pushes (no wind-up while it pulls out of
+  // a steep climb or dive, which would carry the path past level for seconds after).
+  const error = A.maxClimb * stick - s.path;
   const limit = 1 / A.pathIntegral;
-  state.integral = clamp(state.integral + error * dt, -limit, limit);
   const turn = 1 / Math.max(0.3, Math.cos(s.bank)) - 1;
-  let elevator = A.pathGain * error + A.pathIntegral * state.integral + A.turnElevator * turn - A.pitchDamping * s.pitchRate;
+  const others = A.pathGain * error + A.turnElevator * turn - A.pitchDamping * s.pitchRate;
+  const before = others + A.pathIntegral * state.integral;
+  const saturated = Math.abs(before) >= 1 && Math.sign(error) === Math.sign(before);
+  if (!saturated) state.integral = clamp(state.integral + (1 - share) * error * dt, -limit, limit);
+  const hold = others + A.pathIntegral * state.integral;
+  let elevator = share * stick + (1 - share) * hold;
   // Angle of attack limit: past it, nose-up elevator is taken off (never beyond what brings it back).
   if (s.alpha > A.alphaLimit) elevator = Math.min(elevator, -A.alphaGain * (s.alpha - A.alphaLimit));
   elevator = clamp(elevator, -1, 1);
   const rudder = clamp(input.yaw + A.sideslipGain * s.sideslip, -1, 1);
   return { aileron, elevator, rudder };
+}
+
+/**
+ * How fast the control surfaces move towards what they are asked, fraction of full deflection per
+ * second: to the assist's command, and (without the assist) to the stick's input.
+ */
+export const SURFACE_RATE = Object.freeze({ assist: 6, direct: 3 });
+
+/**
+ * `value` moved towards `target` by at most `rate` x `dt` (a control surface over a step).
+ * @throws RangeError on a rate or dt that is negative or not finite.
+ */
+export function approach(value: number, target: number, rate: number, dt: number): number {
+  if (!(rate >= 0 && dt >= 0 && Number.isFinite(rate * dt)))
+    throw new RangeError(`approach: rate and dt must be finite and >= 0, got ${rate}, ${dt}`);
+  return value + clamp(target - value, -rate * dt, rate * dt);
 }
 
 /** How the keyboard's climb / dive and bank keys move their input (`rampKey`). */

@@ -2,8 +2,9 @@
  * The flight simulator's course: a chain of rings to fly through, laid out from the start along a
  * path that turns and climbs a little more at each ring, each turn within what the aircraft can fly
  * (`reachable`), always clear of the hills (the first lies on the path flown with no input, a few
- * seconds ahead); and the rule that decides when a ring is passed or missed. Headless (no drawing), so it is tested in node
- * (test/games/flight-simulator-course.test.ts).
+ * seconds ahead); the rule that decides when a ring is passed or missed (`flyRings`), and the
+ * course's time, in which each missed ring costs MISS_PENALTY s (`courseTime`). Headless (no
+ * drawing), so it is tested in node (test/games/flight-simulator-course.test.ts).
  */
 
 import { Rng } from '@bitphysics/physics';
@@ -178,6 +179,54 @@ export function crossRing(ring: Ring, a: readonly number[], b: readonly number[]
   const off = Math.hypot(px, py, pz);
   if (off < RING_RADIUS) return 'passed';
   return off < MISS_RANGE ? 'missed' : null;
+}
+
+/** Seconds added to the course time for each ring missed: a miss costs more than the turn back would save. */
+export const MISS_PENALTY = 10;
+
+/** What a move of the aircraft did to a ring (`flyRings`). */
+export interface RingEvent {
+  /** The ring's index. */
+  ring: number;
+  /** Flown through, or its plane crossed outside it (or skipped: the ring after it crossed first). */
+  result: 'passed' | 'missed';
+}
+
+/**
+ * The rule of the course for a move of the aircraft's centre from `a` to `b` (m, world): of the next
+ * ring still ahead and the one after it, the first whose plane the move crosses (`crossRing`) is
+ * passed or missed; crossing the one after's first also misses the next (it was skipped). Marks the
+ * rings' statuses and returns what happened, in order (empty when nothing did). A ring is missed
+ * once: each miss costs MISS_PENALTY s (`courseTime`).
+ */
+export function flyRings(rings: Ring[], a: readonly number[], b: readonly number[]): RingEvent[] {
+  const i = nextRing(rings);
+  const events: RingEvent[] = [];
+  if (i < 0) return events;
+  for (const j of [i, i + 1]) {
+    const ring = rings[j];
+    if (!ring) continue;
+    const result = crossRing(ring, a, b);
+    if (!result) continue;
+    if (j === i + 1) {
+      rings[i]!.status = 'missed';
+      events.push({ ring: i, result: 'missed' });
+    }
+    ring.status = result;
+    events.push({ ring: j, result });
+    break;
+  }
+  return events;
+}
+
+/**
+ * The course's time, s: the time flown plus MISS_PENALTY for each ring missed.
+ * @throws RangeError on a time that is negative or not finite, or a count of misses that is not an integer >= 0.
+ */
+export function courseTime(flown: number, missed: number): number {
+  if (!(flown >= 0 && Number.isFinite(flown))) throw new RangeError(`courseTime: flown must be finite and >= 0 s, got ${flown}`);
+  if (!(Number.isInteger(missed) && missed >= 0)) throw new RangeError(`courseTime: missed must be an integer >= 0, got ${missed}`);
+  return flown + MISS_PENALTY * missed;
 }
 
 /** The first ring still ahead (the one to fly through next), or -1 when none is. */

@@ -3,9 +3,12 @@
  * seeded hills through a course of rings. Lift and drag come from each surface's angle of attack
  * (wing halves with dihedral and ailerons, tailplane with the elevator, fin with the rudder), with a
  * stall past 20 degrees; the controls act where the surfaces are, so they turn the aircraft through
- * Euler's equations. The flight assist (./assist.ts, on by default) turns the stick into a bank and
- * a climb or dive and leaves the throttle to the pilot; without it the stick moves the surfaces directly.
- * Fly through every ring (./course.ts) as fast as you can; do not hit the ground.
+ * Euler's equations. The flight assist (./assist.ts, on by default) turns the stick into a bank (let
+ * go, the wings roll level) and gives a held climb or dive the elevator's full response, flying
+ * level when the stick is let go; it leaves the throttle to the pilot. Without it the stick moves
+ * the surfaces directly.
+ * Fly through every ring (./course.ts) as fast as you can; each ring missed adds MISS_PENALTY (10) s
+ * to the course clock, said in the banner the moment it is missed; do not hit the ground.
  * Guidance: thick bright rings, a chain of beads through the next two, a label (or an edge arrow) for
  * the next one, and a flight-path marker where the aircraft's straight path meets the next ring's
  * plane (green when it is inside the ring).
@@ -49,9 +52,9 @@ import {
   Vector3,
 } from 'three';
 import { aircraftGeometry } from './aircraft-model';
-import { assist, createAssistState, type FlightState, flightState, rampKey } from './assist';
+import { approach, assist, createAssistState, type FlightState, flightState, rampKey, SURFACE_RATE } from './assist';
 import { createAttitudeIndicator } from './attitude-indicator';
-import { courseStars, crossRing, layCourse, nextRing, pathThroughRing, RING_RADIUS, type Ring } from './course';
+import { courseStars, courseTime, flyRings, layCourse, MISS_PENALTY, nextRing, pathThroughRing, RING_RADIUS, type Ring } from './course';
 import { createScenery, HORIZON_COLOUR, SUN_DIRECTION } from './scenery';
 
 const params = {
@@ -116,6 +119,7 @@ function createWorld(): PhysicsWorld {
   keyInput.pitch = keyInput.roll = 0;
   rings = layCourse({ terrain: handles.terrain, seed: params.seed + 7, count: params.rings, start: [0, START_ALTITUDE, 0] });
   events.length = 0;
+  missedAt = -Infinity;
   return world;
 }
 
@@ -130,11 +134,6 @@ addEventListener('keyup', (e) => {
   held.delete(e.key.toLowerCase());
 });
 addEventListener('blur', () => held.clear());
-
-/** Moves a control towards `target` at `rate` per second. */
-function approach(value: number, target: number, rate: number, dt: number): number {
-  return value + Math.max(-rate * dt, Math.min(rate * dt, target - value));
-}
 
 const clamp1 = (x: number): number => Math.max(-1, Math.min(1, x));
 
@@ -183,14 +182,14 @@ function stepWorld(world: PhysicsWorld): void {
     slower = held.has('z') || held.has('-');
   if (params.assist) {
     const c = assist(s, input, assistState, dt);
-    state.aileron = approach(state.aileron, c.aileron, 6, dt);
-    state.elevator = approach(state.elevator, c.elevator, 6, dt);
-    state.rudder = approach(state.rudder, c.rudder, 6, dt);
+    state.aileron = approach(state.aileron, c.aileron, SURFACE_RATE.assist, dt);
+    state.elevator = approach(state.elevator, c.elevator, SURFACE_RATE.assist, dt);
+    state.rudder = approach(state.rudder, c.rudder, SURFACE_RATE.assist, dt);
   } else {
     // Stick inputs spring back to neutral.
-    state.elevator = approach(state.elevator, input.pitch, 3, dt);
-    state.aileron = approach(state.aileron, input.roll, 3, dt);
-    state.rudder = approach(state.rudder, input.yaw, 3, dt);
+    state.elevator = approach(state.elevator, input.pitch, SURFACE_RATE.direct, dt);
+    state.aileron = approach(state.aileron, input.roll, SURFACE_RATE.direct, dt);
+    state.rudder = approach(state.rudder, input.yaw, SURFACE_RATE.direct, dt);
   }
   // The throttle stays where the pilot puts it, with or without the assist: the stick never moves it.
   if (faster) state.throttle = Math.min(1, state.throttle + 0.4 * dt);
@@ -237,40 +236,29 @@ function stepWorld(world: PhysicsWorld): void {
   }
 }
 
-/** Passes or misses the next ring (or the one after it, which misses the next). */
+/** Passes or misses rings (./course.ts flyRings) on the move from `prev` to `now`: counts, banners, sounds. */
 function checkRings(time: number): void {
-  const i = nextRing(rings);
-  if (i < 0) return;
-  for (const j of [i, i + 1]) {
-    const ring = rings[j];
-    if (!ring) continue;
-    const result = crossRing(ring, prev, now);
-    if (!result) continue;
-    if (j === i + 1) miss(i, time);
+  for (const { ring, result } of flyRings(rings, prev, now)) {
     if (result === 'passed') {
-      ring.status = 'passed';
       state.score++;
       const last = nextRing(rings) < 0;
-      events.push({ text: last ? 'Last ring!' : `Ring ${j + 1} ✓`, colour: '#7dff9a', time });
+      events.push({ text: last ? 'Last ring!' : `Ring ${ring + 1} ✓`, colour: '#7dff9a', time });
       sound.chime(880, 0.18);
       setTimeout(() => sound.chime(1320, 0.3), 110);
-    } else miss(j, time);
-    break;
+    } else {
+      // A miss costs time on the course clock, said at once in the banner and by the clock's flash.
+      state.missed++;
+      missedAt = time;
+      events.push({ text: `Missed ring ${ring + 1} · +${MISS_PENALTY} s`, colour: '#ffb35a', time });
+      sound.chime(220, 0.4);
+    }
   }
   if (nextRing(rings) < 0) finish(time);
 }
+/** Game time of the last miss, s (the clock flashes for a while after it). */
+let missedAt = -Infinity;
 
-/** Marks ring `i` missed (once): counts it, shows the banner and plays the low tone. */
-function miss(i: number, time: number): void {
-  const ring = rings[i]!;
-  if (ring.status === 'missed') return;
-  ring.status = 'missed';
-  state.missed++;
-  events.push({ text: `Missed ring ${i + 1}`, colour: '#ffb35a', time });
-  sound.chime(220, 0.4);
-}
-
-/** Best result of this course (seed and ring count) in localStorage: rings passed, then the shorter time. */
+/** Best result of this course (seed and ring count) in localStorage: rings passed, then the shorter course time (misses' penalties in). */
 const BEST_KEY = 'bitphysics.flight-simulator.best';
 function bestOf(): { passed: number; time: number } | null {
   try {
@@ -286,11 +274,12 @@ let newBest = false;
 function finish(time: number): void {
   state.phase = 'done';
   const best = bestOf();
-  newBest = !best || state.score > best.passed || (state.score === best.passed && state.time < best.time);
+  const total = courseTime(state.time, state.missed);
+  newBest = !best || state.score > best.passed || (state.score === best.passed && total < best.time);
   if (newBest) {
     try {
       const all = JSON.parse(localStorage.getItem(BEST_KEY) ?? '{}') as Record<string, unknown>;
-      all[`${params.seed}/${params.rings}`] = { passed: state.score, time: state.time };
+      all[`${params.seed}/${params.rings}`] = { passed: state.score, time: total };
       localStorage.setItem(BEST_KEY, JSON.stringify(all));
     } catch {
       /* storage refused: no best kept */
@@ -546,16 +535,22 @@ function updateHud(i: ReturnType<typeof instruments>): void {
   const n = nextRing(rings);
   const total = rings.length;
   const distance = n >= 0 ? Math.hypot(rings[n]!.x - now[0]!, rings[n]!.y - now[1]!, rings[n]!.z - now[2]!) : 0;
+  // The course clock: the time flown plus the misses' penalties, said beside it.
+  const penalty = state.missed > 0 ? ` (+${MISS_PENALTY * state.missed} s)` : '';
+  const courseClock = `${clock(courseTime(state.time, state.missed))}${penalty}`;
   goalLine.textContent =
     state.phase === 'crashed'
       ? `Crashed · ${state.score} of ${total} rings`
       : n < 0
-        ? `Course done · ${state.score} of ${total} rings in ${clock(state.time)}`
-        : `Fly through ring ${n + 1} of ${total} · ${distance >= 1000 ? `${(distance / 1000).toFixed(1)} km` : `${distance.toFixed(0)} m`} · ${clock(state.time)}`;
+        ? `Course done · ${state.score} of ${total} rings in ${courseClock}`
+        : `Fly through ring ${n + 1} of ${total} · ${distance >= 1000 ? `${(distance / 1000).toFixed(1)} km` : `${distance.toFixed(0)} m`} · ${courseClock}`;
+  // Red for 2 s after a miss: the time it cost shows where the clock is.
+  goalLine.style.color = shell.world.time - missedAt < 2 ? '#ff8a5a' : '#ffd166';
   const speed = `${i.speed.toFixed(0)} m/s`;
+  const missedNote = state.missed > 0 ? ` · missed ${state.missed}` : '';
   readLine.textContent = compact
-    ? `${speed} · alt ${i.altitude.toFixed(0)} m · engine ${(state.throttle * 100).toFixed(0)}% · rings ${state.score}/${total}`
-    : `${speed} · alt ${i.altitude.toFixed(0)} m · throttle ${(state.throttle * 100).toFixed(0)}% · rings ${state.score}/${total}`;
+    ? `${speed} · alt ${i.altitude.toFixed(0)} m · engine ${(state.throttle * 100).toFixed(0)}% · rings ${state.score}/${total}${missedNote}`
+    : `${speed} · alt ${i.altitude.toFixed(0)} m · throttle ${(state.throttle * 100).toFixed(0)}% · rings ${state.score}/${total}${missedNote}`;
   if (!compact)
     panelEl.textContent = [
       `airspeed  ${i.speed.toFixed(0).padStart(4)} m/s  ${(i.speed * 1.944).toFixed(0).padStart(4)} kt`,
@@ -584,7 +579,9 @@ function updateHud(i: ReturnType<typeof instruments>): void {
     line.textContent =
       state.phase === 'crashed'
         ? `${state.score} of ${total} rings before the crash.`
-        : `${state.score} of ${total} rings in ${clock(state.time)}  ${starText}`;
+        : `${state.score} of ${total} rings in ${clock(courseTime(state.time, state.missed))}${
+            state.missed > 0 ? ` (${clock(state.time)} flown + ${MISS_PENALTY * state.missed} s for ${state.missed} missed)` : ''
+          }  ${starText}`;
     const bestLine = document.createElement('div');
     bestLine.style.cssText = 'color: #c7d3e0; font-size: 14px;';
     bestLine.textContent =

@@ -441,7 +441,7 @@ describe('projects', () => {
     await g.close();
   });
 
-  it('flight-simulator: a ring flown through counts with a banner; the ground ends the flight with a Try again button', async () => {
+  it('flight-simulator: a ring flown through counts with a banner; a missed one costs 10 s on the clock; the ground ends the flight with a Try again button', async () => {
     const g = await h.openGame('flight-simulator', { query: { rings: 3 } });
     type Flight = Game & {
       aircraftBody(): number;
@@ -480,7 +480,9 @@ describe('projects', () => {
       const w = window.game as unknown as Flight;
       return w.rings()[1]!.status === 'missed' ? { missed: w.state.missed, banner: w.banner().text } : null;
     }, null);
-    expect(missed).toEqual({ missed: 1, banner: 'Missed ring 2' });
+    // The miss costs 10 s, said at once in the banner, and the course clock above the scene adds it.
+    expect(missed).toEqual({ missed: 1, banner: 'Missed ring 2 · +10 s' });
+    await g.waitFor(() => document.querySelector('[data-hud="goal"]')?.textContent?.includes('(+10 s)'), null);
     await g.page.evaluate(() => {
       const w = window.game as unknown as Flight;
       w.world.components.Position.y[w.aircraftBody()] = 1; // below every hill and the sea

@@ -1,6 +1,6 @@
 /**
  * The rules of the black-hole game without a page (games/black-hole/rules.ts): falling into a hole
- * costs a life, crossing the line scores the number of holes and adds one, leaving the field resets
+ * (the ship's size touching its horizon) costs a life, crossing the line scores the number of holes and adds one, leaving the field resets
  * without penalty, zero lives ends the game; every hole's drawn radius is its Schwarzschild radius;
  * thrust, exhaust and the predicted path.
  */
@@ -23,6 +23,7 @@ import {
   predictPath,
   resolveBlackHoleOptions,
   restart,
+  SHIP_RADIUS,
   START,
   schwarzschildMass,
   schwarzschildRadius,
@@ -138,7 +139,11 @@ describe('rules', () => {
       r = g.holeRadius[0]!;
     // From 1.2 r left of the centre to 1.2 r right of it in one step: both ends outside the horizon.
     expect(holeHit(g, P.x[slotOf(h)]! - 1.2 * r, P.y[slotOf(h)]!, P.x[slotOf(h)]! + 1.2 * r, P.y[slotOf(h)]!)).toBe(0);
-    expect(holeHit(g, P.x[slotOf(h)]! - 1.2 * r, P.y[slotOf(h)]! + 1.1 * r, P.x[slotOf(h)]! + 1.2 * r, P.y[slotOf(h)]! + 1.1 * r)).toBe(-1);
+    // The ship has a size: passing SHIP_RADIUS m over the horizon (less 5 %) touches it; 5 % more does not.
+    const pass = (above: number) =>
+      holeHit(g, P.x[slotOf(h)]! - 2 * r, P.y[slotOf(h)]! + above, P.x[slotOf(h)]! + 2 * r, P.y[slotOf(h)]! + above);
+    expect(pass(r + 0.95 * SHIP_RADIUS)).toBe(0);
+    expect(pass(r + 1.05 * SHIP_RADIUS)).toBe(-1);
     place(g, P.x[slotOf(h)]! - 1.2 * r, P.y[slotOf(h)]!, (2.4 * r) / g.world.dt, 0);
     expect(stepBlackHole(g)).toBe('fell');
   });
@@ -295,7 +300,8 @@ describe('thrust, exhaust, prediction', () => {
     expect(n).toBeLessThan(30);
     const x = out[2 * (n - 1)]!,
       y = out[2 * (n - 1) + 1]!;
-    expect(Math.hypot(x - P.x[slotOf(h)]!, y - P.y[slotOf(h)]!)).toBeLessThan(g.holeRadius[0]!);
+    // Where the ship (SHIP_RADIUS round its centre) touches the horizon.
+    expect(Math.hypot(x - P.x[slotOf(h)]!, y - P.y[slotOf(h)]!)).toBeLessThan(g.holeRadius[0]! + SHIP_RADIUS);
   });
 
   test('bad options are rejected by name', () => {

@@ -2,8 +2,8 @@
  * The flight simulator's course (games/flight-simulator/course.ts), headless: the rings are laid
  * where the layout rule says (an easy first ring, spacing, heights clear of the hills), the aircraft
  * flown as the game starts it with no input passes ring 1 within 5 s, a scripted pilot passes every
- * ring of the default course, and a move through a ring's
- * plane passes it inside the radius, misses it outside, and counts nothing the wrong way or far off.
+ * ring of the default course, a move through a ring's plane passes it inside the radius, misses it
+ * outside, and counts nothing the wrong way or far off, and each missed ring costs 10 s of course time.
  */
 
 import { createPhysicsWorld, setBodyThrust, setControlDeflection, step } from '@bitphysics/physics';
@@ -12,11 +12,14 @@ import { describe, expect, it } from 'vitest';
 import { ASSIST, assist, createAssistState, flightState } from '../../games/flight-simulator/assist';
 import {
   courseStars,
+  courseTime,
   crossRing,
   DESIGN_BANK,
   designArrival,
   FIRST_RING_DISTANCE,
+  flyRings,
   layCourse,
+  MISS_PENALTY,
   MISS_RANGE,
   nextRing,
   pathThroughRing,
@@ -208,6 +211,34 @@ describe('flight simulator course', () => {
     expect(crossRing(ring, [90, 500 - 40, 0], [110, 500 + 40, 0])).toBe('passed');
     expect(nextRing([{ ...ring, status: 'passed' }, ring])).toBe(1);
     expect(nextRing([{ ...ring, status: 'missed' }])).toBe(-1);
+  });
+
+  it('a missed ring is counted once and costs MISS_PENALTY s on the course clock; skipping a ring misses it', () => {
+    // Three rings 1 km apart along +x (the way through each: +x).
+    const course = (): Ring[] => [0, 1, 2].map((k) => ({ x: 1000 * (k + 1), y: 500, z: 0, nx: 1, ny: 0, nz: 0, status: 'ahead' as const }));
+    const through = (rings: Ring[], k: number, above: number) =>
+      flyRings(rings, [rings[k]!.x - 5, 500 + above, 0], [rings[k]!.x + 5, 500 + above, 0]);
+    const rings = course();
+    // Ring 1's plane crossed 100 m above its centre (its radius is 45 m): missed, once.
+    expect(through(rings, 0, 100)).toEqual([{ ring: 0, result: 'missed' }]);
+    expect(through(rings, 0, 100)).toEqual([]); // it is behind now: the next is ring 2
+    // Ring 2 flown through its centre.
+    expect(through(rings, 1, 0)).toEqual([{ ring: 1, result: 'passed' }]);
+    expect(rings.map((r) => r.status)).toEqual(['missed', 'passed', 'ahead']);
+    // Skipped: ring 2's plane crossed (inside it) while ring 1 was next misses ring 1, then passes 2.
+    const skip = course();
+    expect(through(skip, 1, 0)).toEqual([
+      { ring: 0, result: 'missed' },
+      { ring: 1, result: 'passed' },
+    ]);
+    expect(skip.map((r) => r.status)).toEqual(['missed', 'passed', 'ahead']);
+    // The clock: 95 s flown with one ring missed is a 105 s course; none missed, the time flown.
+    const missed = rings.filter((r) => r.status === 'missed').length;
+    expect(MISS_PENALTY).toBe(10);
+    expect(courseTime(95, missed)).toBe(105);
+    expect(courseTime(95, 0)).toBe(95);
+    expect(() => courseTime(-1, 0)).toThrow(/courseTime: flown must be finite and >= 0 s, got -1/);
+    expect(() => courseTime(1, 0.5)).toThrow(/courseTime: missed must be an integer >= 0, got 0.5/);
   });
 
   it('the flight-path marker: where a straight path meets a ring plane, and how far from its centre', () => {
