@@ -35,6 +35,7 @@ import {
   choiceParam,
   createActionButton,
   createPanel,
+  createStatusRow,
   flagParam,
   getSound,
   numberParam,
@@ -624,42 +625,14 @@ function drawLanterns(world: PhysicsWorld): void {
   updateStatus();
 }
 
-const style = document.createElement('style');
-style.textContent = `
-.fw-status { text-align: center; font: 14px/1.4 system-ui, sans-serif; color: #eef3f8; padding: 6px 10px 4px; }
-.fw-status .fw-goal { font-weight: 600; color: #ffd166; }
-.fw-status .fw-numbers { font: 600 15px ui-monospace, Menlo, Consolas, monospace; }
-.fw-status .fw-hint { color: #c9d3e3; font-size: 13px; }
-.fw-status.cleared .fw-goal { color: #7ee787; }
-.fw-status button { font: 13px system-ui, sans-serif; color: #e8ecf1; background: rgba(255, 255, 255, 0.08); border: 1px solid #4a5468;
-  border-radius: 6px; padding: 2px 10px; margin-left: 8px; cursor: pointer; min-height: 28px; }
-@media (pointer: coarse) { .fw-status button { min-height: 36px; } }
-`;
-document.head.append(style);
-const statusEl = document.createElement('div');
-statusEl.className = 'fw-status';
-statusEl.setAttribute('role', 'status');
-statusEl.dataset.hud = 'lanterns';
-const goalLine = document.createElement('div');
-goalLine.className = 'fw-goal';
-goalLine.dataset.hud = 'goal';
-const numbersLine = document.createElement('div');
-numbersLine.className = 'fw-numbers';
-numbersLine.dataset.hud = 'numbers';
-const hintLine = document.createElement('div');
-hintLine.className = 'fw-hint';
-hintLine.dataset.hud = 'hint';
-const hintText = document.createElement('span');
+const status = createStatusRow({ name: 'lanterns' });
 const modeButton = document.createElement('button');
 modeButton.type = 'button';
 modeButton.addEventListener('click', () => setLanternShow(!lanternShow));
-hintLine.append(hintText, modeButton);
-statusEl.append(goalLine, numbersLine, hintLine);
-pageLayout().status.append(statusEl);
+status.hint.append(modeButton);
 const touch = pageLayout().touch();
 /** The big Next-level (or Play-again) button over the sky once a level is lit. */
 const setAction = createActionButton('Next level ▶', () => nextLevel());
-let shownStatus = '';
 
 /** '★★☆' for `n` of 3 stars. */
 function starText(n: number): string {
@@ -701,15 +674,8 @@ function updateStatus(): void {
     hint = `${touch ? 'Tap' : 'Click'} ${lv.tip}`;
   }
   const mode = lanternShow ? 'Free play' : 'Lantern show';
-  const text = goal + numbers + hint + mode + cleared;
-  if (text === shownStatus) return;
-  shownStatus = text;
-  goalLine.textContent = goal;
-  numbersLine.textContent = numbers;
-  hintText.textContent = hint;
-  modeButton.textContent = mode;
-  statusEl.classList.toggle('cleared', cleared);
-  setAction(cleared, last ? 'Play again ▶' : 'Next level ▶');
+  if (modeButton.textContent !== mode) modeButton.textContent = mode;
+  if (status.set({ goal, numbers, hint }, cleared)) setAction(cleared, last ? 'Play again ▶' : 'Next level ▶');
 }
 updateStatus();
 
@@ -749,7 +715,7 @@ shell.expose({
   /** Goes to the next level once this one is lit (else restarts it), as the Next-level button. */
   nextLevel: (): void => nextLevel(),
   /** The status row's text. */
-  statusText: (): string => statusEl.innerText,
+  statusText: (): string => status.element.innerText,
   /** Turns the auto-show on or off. */
   setAutoShow: (on: boolean): void => setAuto(on),
 });
