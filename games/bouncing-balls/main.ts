@@ -19,6 +19,7 @@ import {
   choiceParam,
   createActionButton,
   createPanel,
+  createStatusRow,
   flagParam,
   forEachImpact,
   getSound,
@@ -546,34 +547,10 @@ function drawHoop(): void {
   updateStatus();
 }
 
-const style = document.createElement('style');
-style.textContent = `
-.bb-status { text-align: center; font: 14px/1.4 system-ui, sans-serif; color: #eef3f8; padding: 6px 10px 4px; }
-.bb-status .bb-goal { font-weight: 600; color: #ffd166; }
-.bb-status .bb-numbers { font: 600 16px ui-monospace, Menlo, Consolas, monospace; }
-.bb-status .bb-hint { color: #c9d3e3; font-size: 13px; }
-.bb-status.over .bb-goal { color: #7ee787; }
-`;
-document.head.append(style);
-const statusEl = document.createElement('div');
-statusEl.className = 'bb-status';
-statusEl.setAttribute('role', 'status');
-statusEl.dataset.hud = 'hoop';
-const goalLine = document.createElement('div');
-goalLine.className = 'bb-goal';
-goalLine.dataset.hud = 'goal';
-const numbersLine = document.createElement('div');
-numbersLine.className = 'bb-numbers';
-numbersLine.dataset.hud = 'numbers';
-const hintLine = document.createElement('div');
-hintLine.className = 'bb-hint';
-hintLine.dataset.hud = 'hint';
-statusEl.append(goalLine, numbersLine, hintLine);
-pageLayout().status.append(statusEl);
+const status = createStatusRow({ name: 'hoop' });
 const touch = pageLayout().touch();
 /** The big Play-again button over the scene when time is up. */
 const setAction = createActionButton('Play again ▶', () => shell.reset());
-let shownStatus = '';
 
 /** Writes the status row (goal, baskets, time, best, a hint) when it changed, and shows Play again when time is up. */
 function updateStatus(): void {
@@ -593,14 +570,7 @@ function updateStatus(): void {
       : round.phase === 'ready'
         ? `${throwHow} from below the orange line · the clock starts with your first ball`
         : `${throwHow} · the hoop moves after each basket`;
-  const text = goal + numbers + hint + over;
-  if (text === shownStatus) return;
-  shownStatus = text;
-  goalLine.textContent = goal;
-  numbersLine.textContent = numbers;
-  hintLine.textContent = hint;
-  statusEl.classList.toggle('over', over);
-  setAction(over);
+  if (status.set({ goal, numbers, hint }, over)) setAction(over);
 }
 
 // ---- Test and console hooks on window.game ---------------------------------------------------
@@ -632,7 +602,7 @@ shell.expose({
   /** A player's ball at (x, y) m with velocity (vx, vy) m/s, as a throw releases it (counts for the hoop). @returns its id. */
   shoot: (x: number, y: number, vx = 0, vy = 0): number => shoot(x, y, vx, vy),
   /** The status row's text (goal, numbers, hint). */
-  statusText: (): string => statusEl.innerText,
+  statusText: (): string => status.element.innerText,
   /** Removes ball `eid`. @throws RangeError if it is not a ball of the scene. */
   remove: (eid: number): void => removeBall(shell.world, handles, eid),
 });

@@ -1,97 +1,146 @@
 /**
  * The lantern show, the fireworks' game: light every lantern in the sky with your bursts, in as few
- * shells as you can. A burst lights each lantern within its reach: the radius of the charging ring
- * the page draws while the button is held (PREVIEW_SECONDS x BURST_SPEED x reach x burstSize), about
- * how far the burst's fastest stars get in their first 0.7 s. Holding longer makes a bigger burst
- * that can light two lanterns at once; a shell bursts FUSE (2 s) after launch, so a drifting lantern
- * must be led. Stars by shells used against the level's par. Pure rules: no DOM, no pixi.
+ * shells as you can. A lantern lights when a hot star of a burst touches it: a star of the burst
+ * itself (not a shell's tail) in the first `HOT_FRACTION` of its life, while it is bright and near
+ * where it burst, whose centre comes within the lantern's radius (`lightFromSparks`). So a shell has
+ * to burst close to a lantern: its hot stars reach about 0.125 sky widths sideways (a quick burst)
+ * to 0.2 (the longest hold), and further down, as they droop (`sparkReach`, the page's charging
+ * ring). A shell bursts FUSE (2 s) after launch, so a drifting lantern must be led.
+ *
+ * Everything is measured in sky widths (W), as the bursts are (show.ts `reach`): a lantern's x is a
+ * fraction of the width, its y a height in widths above the band's middle (`BAND_MIDDLE` of the
+ * sky's height), so a level plays the same in the wide desktop sky and a phone's tall one. Stars by
+ * shells used against the level's par, the fewest shells that light it (found by search over burst
+ * points and holds on maps of where the real bursts' hot stars go, both sky shapes; see each level).
+ * Pure rules: no DOM, no pixi.
  */
-import { BURST_SPEED, burstSize } from './show';
+import { type PhysicsWorld, query, slotOf } from '@bitphysics/physics';
+import type { RecipeName } from './recipes';
+import { burstSize, type FireworksShow } from './show';
 
-/** The charging ring's radius over the burst's fastest star speed, s (see `burstReach`). */
-export const PREVIEW_SECONDS = 0.7;
+/** A star lights lanterns while its age is below this fraction of its lifetime (it fades linearly over its life). */
+export const HOT_FRACTION = 0.4;
 
-/** A lantern's radius as a fraction of the sky's width (3.6 m in the 120 m desktop sky). */
-export const LANTERN_SIZE = 0.03;
+/** A lantern's radius as a fraction of the sky's width (3.84 m in the 120 m desktop sky), at least `LANTERN_MIN_RADIUS`. */
+export const LANTERN_SIZE = 0.032;
+
+/** The smallest lantern radius, m: 3.4 m is 21 px in a phone's 64 m sky, so a lantern stands 41 px tall there. */
+export const LANTERN_MIN_RADIUS = 3.4;
+
+/** Where a lantern's y = 0 lies, as a fraction of the sky's height; levels keep |y| <= 0.2 W. */
+export const BAND_MIDDLE = 0.55;
+
+/** The shells of the lantern show. */
+export type LanternShell = Extract<RecipeName, 'peony' | 'willow'>;
 
 /**
- * A lantern: centre at fractions (fx of the sky's width, fy of its height); drifting lanterns swing
- * sideways by `drift` (a fraction of the width) with period `period` s.
+ * A lantern: centre x (a fraction of the sky's width) and y (sky widths above the band's middle);
+ * a drifting one swings sideways by `drift` (a fraction of the width) with period `period` s,
+ * starting at phase `phase` (radians).
  */
 export interface Lantern {
-  readonly fx: number;
-  readonly fy: number;
+  readonly x: number;
+  readonly y: number;
   readonly drift?: number;
   readonly period?: number;
+  readonly phase?: number;
 }
 
-/** A level: its name, a tip shown while it is played (after 'Click' or 'Tap'), its lanterns, and par (the fewest shells that can light them all). */
+/**
+ * A level: its name, a tip shown while it is played (after 'Click' or 'Tap'), its lanterns, par (the
+ * fewest shells that light them all, in both sky shapes), the shell it gives (`shell`) and whether
+ * holding makes that shell's burst bigger (`hold`).
+ */
 export interface LanternLevel {
   readonly name: string;
   readonly tip: string;
   readonly lanterns: readonly Lantern[];
   readonly par: number;
+  readonly shell: LanternShell;
+  readonly hold: boolean;
 }
 
 /**
- * The levels. A quick burst reaches 0.175 sky widths (W), a held one up to 0.252 W, plus a lantern's
- * radius (0.03 W). Pairs are 0.44 W apart and the row's lanterns 0.22 W: a burst between or on them
- * is 0.22 W from the next, beyond a quick burst's 0.205 W but within a held one's 0.282 W.
+ * The levels, each needing a new idea. Figures from maps of where the hot stars of real bursts go
+ * (3 seeds, 64 m phone sky and 120 m desktop sky, every 0.01 W, five holds), searched for the fewest
+ * shells; "spray" is the chance that par shells at random points of the band, at random holds,
+ * light everything.
+ * 1. Quick shells only, three lanterns 0.4 W apart: one shell each (spray 3-5 %).
+ * 2. Two pairs 0.4 W apart: only a held burst between a pair lights both (0.2 W away, beyond a
+ *    quick burst's 0.17); the two middle lanterns, one above the other, are an easy pair that leaves
+ *    the outer two for a shell each (3, not 2). Spray 0-0.1 %.
+ * 3. Quick shells only, drifting lanterns: lead them by the fuse (spray 3-5 %; two shells can do it
+ *    when two swing close).
+ * 4. Willows only: their stars rise little and fall far, so a burst at the top of a column of two
+ *    (0.26 W apart) lights both, and a burst between columns lights neither pair (spray 0.2-0.6 %).
+ * 5. Three lanterns high and two that drift towards each other low: when the low two meet, one burst
+ *    under the middle lantern lights three (spray 0.3-0.8 %; 2 shells at best, par 3).
  */
 export const LEVELS: readonly LanternLevel[] = Object.freeze([
   {
-    name: 'Three lanterns',
-    tip: 'near a lantern: your shell bursts there 2 s later',
+    name: 'First light',
+    tip: 'right on a lantern: its sparks light what they touch',
     par: 3,
+    shell: 'peony',
+    hold: false,
     lanterns: [
-      { fx: 0.25, fy: 0.6 },
-      { fx: 0.5, fy: 0.78 },
-      { fx: 0.75, fy: 0.6 },
+      { x: 0.1, y: -0.04 },
+      { x: 0.5, y: 0.12 },
+      { x: 0.9, y: -0.04 },
     ],
   },
   {
-    name: 'Hold for two',
-    tip: 'between two lanterns and hold: a bigger burst lights both',
+    name: 'Pairs',
+    tip: 'and hold between two lanterns to light both. Which pairs?',
     par: 2,
+    shell: 'peony',
+    hold: true,
     lanterns: [
-      { fx: 0.28, fy: 0.72 },
-      { fx: 0.72, fy: 0.72 },
-      { fx: 0.5, fy: 0.42 },
+      { x: 0.1, y: -0.1 },
+      { x: 0.5, y: -0.1 },
+      { x: 0.5, y: 0.18 },
+      { x: 0.9, y: 0.18 },
     ],
   },
   {
     name: 'Drifting',
-    tip: 'ahead of a lantern: it drifts on during the 2 s fuse',
+    tip: 'ahead of a lantern: it drifts on for the 2 s fuse',
     par: 3,
+    shell: 'peony',
+    hold: false,
     lanterns: [
-      { fx: 0.3, fy: 0.55, drift: 0.14, period: 7 },
-      { fx: 0.55, fy: 0.8, drift: 0.18, period: 6 },
-      { fx: 0.72, fy: 0.45, drift: 0.12, period: 8 },
+      { x: 0.17, y: -0.1, drift: 0.09, period: 7, phase: 0 },
+      { x: 0.5, y: 0.16, drift: 0.14, period: 5, phase: 1 },
+      { x: 0.83, y: -0.1, drift: 0.09, period: 8, phase: 3 },
     ],
   },
   {
-    name: 'A row of five',
-    tip: 'and hold: five lanterns, par two shells',
-    par: 2,
+    name: 'Willows',
+    tip: 'on an upper lantern: willow sparks fall far, onto the one below',
+    par: 3,
+    shell: 'willow',
+    hold: true,
     lanterns: [
-      { fx: 0.06, fy: 0.62 },
-      { fx: 0.28, fy: 0.62 },
-      { fx: 0.5, fy: 0.62 },
-      { fx: 0.72, fy: 0.62 },
-      { fx: 0.94, fy: 0.62 },
+      { x: 0.1, y: 0.14 },
+      { x: 0.1, y: -0.12 },
+      { x: 0.5, y: 0.14 },
+      { x: 0.5, y: -0.12 },
+      { x: 0.9, y: 0.14 },
+      { x: 0.9, y: -0.12 },
     ],
   },
   {
     name: 'Finale',
-    tip: 'near a lantern · hold to light two at once',
-    par: 4,
+    tip: 'and hold when the low lanterns meet: light three',
+    par: 3,
+    shell: 'peony',
+    hold: true,
     lanterns: [
-      { fx: 0.15, fy: 0.8 },
-      { fx: 0.55, fy: 0.8 },
-      { fx: 0.35, fy: 0.55, drift: 0.1, period: 6 },
-      { fx: 0.8, fy: 0.6, drift: 0.12, period: 7 },
-      { fx: 0.2, fy: 0.38 },
-      { fx: 0.6, fy: 0.38 },
+      { x: 0.1, y: 0.17 },
+      { x: 0.5, y: 0.17 },
+      { x: 0.9, y: 0.17 },
+      { x: 0.3, y: -0.15, drift: 0.1, period: 6, phase: 0 },
+      { x: 0.7, y: -0.15, drift: 0.1, period: 6, phase: Math.PI },
     ],
   },
 ]);
@@ -108,21 +157,42 @@ export interface SkySize {
  */
 export function lanternAt(lantern: Lantern, sky: SkySize, t: number): [number, number] {
   if (!Number.isFinite(t)) throw new RangeError(`lanternAt: t must be finite, got ${t}`);
-  const swing = lantern.drift && lantern.period ? lantern.drift * Math.sin((2 * Math.PI * t) / lantern.period) : 0;
-  return [(lantern.fx + swing) * sky.width, lantern.fy * sky.height];
+  const swing = lantern.drift && lantern.period ? lantern.drift * Math.sin((2 * Math.PI * t) / lantern.period + (lantern.phase ?? 0)) : 0;
+  return [(lantern.x + swing) * sky.width, BAND_MIDDLE * sky.height + lantern.y * sky.width];
 }
 
-/** A lantern's radius, m, in a sky `width` m wide. */
+/** A lantern's radius, m, in a sky `width` m wide: LANTERN_SIZE x width, at least LANTERN_MIN_RADIUS. */
 export function lanternRadius(width: number): number {
-  return LANTERN_SIZE * width;
+  return Math.max(LANTERN_SIZE * width, LANTERN_MIN_RADIUS);
+}
+
+/** How far a burst's hot stars get from where it burst, in sky widths: sideways, up and down. */
+export interface SparkReach {
+  readonly side: number;
+  readonly up: number;
+  readonly down: number;
 }
 
 /**
- * How far a burst reaches, m: PREVIEW_SECONDS x BURST_SPEED x reach x burstSize(scale), the charging
- * ring's radius (reach: the show's sky factor; scale: burstScale of the hold, in [1, 3]).
+ * Measured reach of a quick burst's hot stars, sky widths (where a lantern's centre lights, less the
+ * lantern's radius; both sky shapes averaged): willow stars droop under their heavy drag.
  */
-export function burstReach(reach: number, scale: number): number {
-  return PREVIEW_SECONDS * BURST_SPEED * reach * burstSize(scale);
+const QUICK_REACH: Readonly<Record<LanternShell, SparkReach>> = Object.freeze({
+  peony: { side: 0.125, up: 0.095, down: 0.155 },
+  willow: { side: 0.095, up: 0.055, down: 0.21 },
+});
+
+/**
+ * How far the hot stars of a `shell` burst of scale `scale` (burstScale of the hold, in [1, 3]) get,
+ * sky widths: the quick burst's measured reach x burstSize(scale)^1.25 (a held burst's three times
+ * as many stars also fill its rim more densely: 1.57 times the reach at the longest hold, measured
+ * 1.56 to 1.6). The page draws it as the charging ring.
+ * @throws RangeError (from burstSize) unless scale >= 1.
+ */
+export function sparkReach(shell: LanternShell, scale: number): SparkReach {
+  const f = burstSize(scale) ** 1.25;
+  const q = QUICK_REACH[shell];
+  return { side: q.side * f, up: q.up * f, down: q.down * f };
 }
 
 /** Stars for lighting a level with `shells` shells: 3 at par or better, 2 up to par + 2, else 1. */
@@ -156,24 +226,76 @@ export function countShell(run: LanternRun): void {
   if (run.stars === 0) run.shells++;
 }
 
+/** Lights lantern `i` of the run (if unlit) and gives the stars once all are lit. @returns whether it was lit now. */
+function light(run: LanternRun, i: number): boolean {
+  if (run.lit[i]) return false;
+  run.lit[i] = true;
+  if (run.lit.every(Boolean)) run.stars = starsFor(run.shells, LEVELS[run.level]!.par);
+  return true;
+}
+
 /**
- * A player's shell burst at (x, y), m, at world time `time` s with burst scale `scale`: lights every
- * unlit lantern whose edge the burst's reach touches, and gives the stars once all are lit.
- * @returns how many lanterns this burst lit.
+ * A hot star at (x, y), m, at world time `time` s: lights every unlit lantern whose centre is within
+ * a lantern's radius of it, and gives the stars once all are lit.
+ * @returns the indices of the lanterns it lit.
  */
-export function burstAt(run: LanternRun, sky: SkySize, reach: number, x: number, y: number, scale: number, time: number): number {
-  if (run.stars !== 0) return 0;
-  const r = burstReach(reach, scale) + lanternRadius(sky.width);
-  const level = LEVELS[run.level]!;
-  let n = 0;
-  for (const [i, lantern] of level.lanterns.entries()) {
+export function starAt(run: LanternRun, sky: SkySize, x: number, y: number, time: number): number[] {
+  const out: number[] = [];
+  if (run.stars !== 0) return out;
+  const r = lanternRadius(sky.width);
+  for (const [i, lantern] of LEVELS[run.level]!.lanterns.entries()) {
     if (run.lit[i]) continue;
     const [lx, ly] = lanternAt(lantern, sky, time - run.start);
-    if (Math.hypot(lx - x, ly - y) <= r) {
-      run.lit[i] = true;
-      n++;
-    }
+    if ((lx - x) ** 2 + (ly - y) ** 2 <= r * r && light(run, i)) out.push(i);
   }
-  if (run.lit.every(Boolean)) run.stars = starsFor(run.shells, level.par);
-  return n;
+  return out;
+}
+
+/** Slots of the show's burst emitters (its stars' emitters, not the shells' tails), per show. */
+const burstEmitters = new WeakMap<FireworksShow, Set<number>>();
+
+function burstEmittersOf(show: FireworksShow): Set<number> {
+  let set = burstEmitters.get(show);
+  if (!set) {
+    // Particle.emitter holds the emitter's slot.
+    set = new Set([...show.emitters.sparks, ...show.recipeEmitters.values()].map(slotOf));
+    burstEmitters.set(show, set);
+  }
+  return set;
+}
+
+/**
+ * Lights the lanterns the burst stars of `show` touch now (world time `world.time`): every star of a
+ * burst (generation 0 of the show's burst emitters; the shells' tails and the stars' own bursts do
+ * not count) in the first HOT_FRACTION of its life whose centre is within a lantern's radius of an
+ * unlit lantern's centre. Call it after each step of the lantern show.
+ * @returns the indices of the lanterns lit by this call.
+ * @throws RangeError if the world is not 2D.
+ */
+export function lightFromSparks(world: PhysicsWorld, show: FireworksShow, run: LanternRun): number[] {
+  const out: number[] = [];
+  if (world.dimensions !== 2) throw new RangeError(`lightFromSparks: needs the show's 2D world, got dimensions ${world.dimensions}`);
+  if (run.stars !== 0) return out;
+  const emitters = burstEmittersOf(show);
+  const sky = show.params.sky;
+  const lanterns = LEVELS[run.level]!.lanterns;
+  const r2 = lanternRadius(sky.width) ** 2;
+  const at = lanterns.map((l) => lanternAt(l, sky, world.time - run.start));
+  const c = world.components;
+  const P = c.Particle,
+    L = c.Lifetime,
+    X = c.Position.x,
+    Y = c.Position.y;
+  for (const e of query(world, [P, c.Position])) {
+    if (P.generation[e] !== 0 || L.age[e]! > HOT_FRACTION * L.duration[e]! || !emitters.has(P.emitter[e]!)) continue;
+    const x = X[e]!,
+      y = Y[e]!;
+    for (let i = 0; i < at.length; i++) {
+      if (run.lit[i]) continue;
+      const [lx, ly] = at[i]!;
+      if ((lx - x) ** 2 + (ly - y) ** 2 <= r2 && light(run, i)) out.push(i);
+    }
+    if (run.stars !== 0) break;
+  }
+  return out;
 }

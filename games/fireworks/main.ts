@@ -1,10 +1,13 @@
 /**
  * Fireworks, the lantern show (./lanterns.ts; the default, ?play=free for free play): light every
  * lantern in the sky with your bursts in as few shells as you can, over five levels, with one to three
- * stars a level against its par (best stars kept in localStorage). A burst lights the lanterns within
- * the charging ring's reach; hold longer for a bigger burst that lights two; drifting lanterns must be
- * led by the 2 s fuse. The status row above the sky says the goal and the level's tally; a cleared
- * level shows a Next-level button; R restarts the level; the row's Free-play button switches modes.
+ * stars a level against its par (best stars kept in localStorage). A lantern lights when a burst's
+ * hot stars touch it; the charging ring drawn while the button is held shows how far they get (hold
+ * longer for a bigger burst, on the levels that allow it); drifting lanterns must be led by the 2 s
+ * fuse; each level gives one kind of shell. A lit lantern glows. The sky starts dark (no opening
+ * salvo) and the auto-show stays off. The status row above the sky says the goal and the level's
+ * tally; a cleared level shows a Next-level button; R restarts the level; the row's Free-play button
+ * switches modes.
  *
  * Free play: a show that runs on its own (the auto-show plays ./show.ts `PROGRAMME`: peonies,
  * chrysanthemums, willows, rings, crossettes, palms, strobes and the book's crackling stars, singly
@@ -17,8 +20,9 @@
  * colours, additive blending, star trails.
  *
  * Keys: P pause, N single step, R reset, A auto-show on / off, T trails on / off, Space random shell.
- * URL: ?sparks=N (per normal burst, 10..10000), ?generations=1|2|3 (the crackle recipe), ?auto=0|1
- * (auto-show, default on), ?shell=random|peony|chrysanthemum|willow|palm|crossette|ring|strobe|crackle
+ * URL: ?play=lanterns|free, ?level=N (the lantern show's level to start at, 1..5), ?sparks=N (per
+ * normal burst, 10..10000), ?generations=1|2|3 (the crackle recipe), ?auto=0|1
+ * (auto-show in free play, default on), ?shell=random|peony|chrysanthemum|willow|palm|crossette|ring|strobe|crackle
  * (what a click launches), ?opening=N
  * (shells at start, 0..16), ?trails=0|1, ?seed=S, ?capacity=N (entities, 1000..2000000; default
  * 60000), ?stress (3000 sparks a burst, auto-show, no trails: 50,000 to 60,000 live sparks at
@@ -35,6 +39,7 @@ import {
   choiceParam,
   createActionButton,
   createPanel,
+  createStatusRow,
   flagParam,
   getSound,
   numberParam,
@@ -54,7 +59,7 @@ import {
   threadsReady,
 } from '@bitphysics/physics';
 import { Container, Graphics, Sprite, Texture } from 'pixi.js';
-import { burstAt, countShell, type LanternRun, LEVELS, lanternAt, lanternRadius, PREVIEW_SECONDS, startLevel } from './lanterns';
+import { countShell, type LanternRun, LEVELS, lanternAt, lanternRadius, lightFromSparks, sparkReach, startLevel } from './lanterns';
 import { RECIPE_NAMES, type RecipeName } from './recipes';
 import {
   BURST_SPEED,
@@ -113,18 +118,17 @@ let flashing = 0;
 
 /** The recipe of the next click or Space launch. */
 function nextRecipe(): RecipeName {
+  if (lanternShow) return LEVELS[run.level]!.shell;
   if (params.shellType !== 'random') return params.shellType;
   return RECIPE_NAMES[Math.floor(Math.random() * RECIPE_NAMES.length)]!;
 }
 
 let show!: FireworksShow;
-/** The lantern show's level (an index into LEVELS) and its run. */
-let level = 0;
-let run: LanternRun = startLevel(0, 0);
-/** The player's shells in flight (lantern show): entity handle -> position after the last step, m. */
-const playerShells = new Map<number, [number, number]>();
+/** The lantern show's level (an index into LEVELS; ?level=N starts at level N, 1-based) and its run. */
+let level = numberParam('level', { default: 1, min: 1, max: LEVELS.length, integer: true }) - 1;
+let run: LanternRun = startLevel(level, 0);
 /** A lantern lit: where (m) and when (world time, s), for the ring that widens from it. */
-const lightings: { x: number; y: number; time: number }[] = [];
+const lightings: { x: number; y: number; time: number; index: number }[] = [];
 const STARS_KEY = 'bitphysics.fireworks.stars';
 
 /** Best stars of each level kept in localStorage (0 for a level not yet lit). */
@@ -138,51 +142,19 @@ function readStars(): number[] {
 }
 const bestStars = readStars();
 
-/**
- * One step of the show, then the lantern show's bookkeeping: a player's shell gone from the show's
- * shells this step has burst; its burst (the flash recorded this step nearest to where the shell was)
- * lights the lanterns within its reach.
- */
+/** One step of the show, then (lantern show) the lanterns its hot stars touch light up. */
 function stepShow(world: PhysicsWorld): void {
-  const flashesBefore = show.flashCount;
   stepFireworks(world, show);
-  if (!lanternShow || playerShells.size === 0) return;
-  const P = world.components.Position;
-  const alive = new Set<number>();
-  for (let i = 0; i < show.shellCount; i++) alive.add(show.shellIds[i]!);
-  for (const [id, at] of playerShells) {
-    if (alive.has(id)) {
-      at[0] = P.x[slotOf(id)]!;
-      at[1] = P.y[slotOf(id)]!;
-      continue;
-    }
-    playerShells.delete(id);
-    let best = -1,
-      bestD = Number.POSITIVE_INFINITY;
-    for (let k = Math.max(flashesBefore, show.flashCount - FLASHES); k < show.flashCount; k++) {
-      const f = 4 * (k % FLASHES);
-      const d = Math.hypot(show.flashes[f]! - at[0], show.flashes[f + 1]! - at[1]);
-      if (d < bestD) {
-        bestD = d;
-        best = f;
-      }
-    }
-    if (best < 0) continue;
-    const F = show.flashes;
-    const wasLit = run.lit.map((v) => v);
-    const lit = burstAt(run, show.params.sky, show.reach, F[best]!, F[best + 1]!, F[best + 3]!, world.time);
-    if (lit > 0) {
-      const lv = LEVELS[run.level]!;
-      for (const [i, l] of lv.lanterns.entries()) {
-        if (wasLit[i] || !run.lit[i]) continue;
-        const [x, y] = lanternAt(l, show.params.sky, world.time - run.start);
-        lightings.push({ x, y, time: world.time });
-      }
-      if (lightings.length > 16) lightings.splice(0, lightings.length - 16);
-      sound.chime(660 + 110 * lit);
-    }
-    if (run.stars > 0) levelLit();
+  if (!lanternShow || run.stars !== 0) return;
+  const lit = lightFromSparks(world, show, run);
+  if (lit.length === 0) return;
+  for (const i of lit) {
+    const [x, y] = lanternAt(LEVELS[run.level]!.lanterns[i]!, show.params.sky, world.time - run.start);
+    lightings.push({ x, y, time: world.time, index: i });
   }
+  if (lightings.length > 16) lightings.splice(0, lightings.length - 16);
+  sound.chime(660 + 110 * Math.min(4, run.lit.filter(Boolean).length));
+  if (run.stars > 0) levelLit();
 }
 
 /** All lanterns lit: keeps the level's best stars and offers the next level. */
@@ -224,8 +196,9 @@ function createWorld(): PhysicsWorld {
     drag: params.drag / 1000,
     sparks: params.sparks,
     generations: params.generations,
-    autoShow: params.autoShow,
-    opening: params.opening,
+    autoShow: params.autoShow && !lanternShow,
+    // The lantern show starts with a dark sky: every star in it is the player's.
+    opening: lanternShow ? 0 : params.opening,
     capacity: params.capacity,
     sky: skyForStage(),
   };
@@ -236,7 +209,7 @@ function createWorld(): PhysicsWorld {
   previous = world;
   // A new world restarts the level being played (its lanterns' drift clock is the world's time).
   run = startLevel(level, 0);
-  playerShells.clear();
+  lightings.length = 0;
   return world;
 }
 
@@ -266,9 +239,9 @@ const game = await startPixiGame({
 const { shell, renderer, app } = game;
 const layer = renderer.particles!;
 
-/** Auto-show on or off (the A key and the panel). */
+/** Auto-show on or off (the A key and the panel); always off in the lantern show, whose stars would light lanterns. */
 function setAuto(on: boolean): void {
-  params.autoShow = on;
+  params.autoShow = on && !lanternShow;
   setAutoShow(show, on);
   panel.refresh();
 }
@@ -290,14 +263,16 @@ function randomLaunch(): number {
   return playerLaunch(r.range(0.15, 0.85) * show.params.sky.width, r.range(0.45, 0.85) * show.params.sky.height, r.range(0, MAX_HOLD));
 }
 
-/** A player's shell towards (x, y), m, held `hold` s: counted and followed by the lantern show. @returns its id or 0. */
+/** A player's shell towards (x, y), m, held `hold` s (a quick one on a level without holding): counted by the lantern show. @returns its id or 0. */
 function playerLaunch(x: number, y: number, hold: number): number {
-  const id = launchShell(shell.world, show, x, y, hold, nextRecipe());
-  if (id !== 0 && lanternShow) {
-    playerShells.set(id, [0.5 * show.params.sky.width, 0]);
-    countShell(run);
-  }
+  const id = launchShell(shell.world, show, x, y, holdCounts() ? hold : 0, nextRecipe());
+  if (id !== 0 && lanternShow) countShell(run);
   return id;
+}
+
+/** Whether holding makes a bigger burst: always in free play, on the levels that allow it in the lantern show. */
+function holdCounts(): boolean {
+  return !lanternShow || LEVELS[run.level]!.hold;
 }
 
 const panel = createPanel(
@@ -448,10 +423,13 @@ function drawSkyAndGround(): void {
     .fill(0x020306);
 }
 
-// The charging ring's radius is PREVIEW_SECONDS x BURST_SPEED x reach x burstSize (./lanterns.ts
-// burstReach): 11.2 m for a click in a phone's sky, about how far a peony's fastest stars get in their
-// first second (x(t) = ln(1 + k v0 t / m) m / k: 11.8 m at 16 m/s under the default drag). It is
-// also the reach within which a burst lights a lantern.
+/**
+ * Free play's charging ring: radius this x BURST_SPEED x reach x burstSize, s (11.2 m for a click in
+ * a phone's sky, about how far a burst's fastest stars get in their first second: x(t) = ln(1 + k v0
+ * t / m) m / k, 11.8 m at 16 m/s under the default drag). The lantern show draws its shell's
+ * `sparkReach` instead, where the hot stars that light lanterns get.
+ */
+const FREE_RING_SECONDS = 0.7;
 /** The player's shells in flight: entity handle and target (m), for the marker where each will burst. */
 const targets: { id: number; x: number; y: number }[] = [];
 let pointerId = -1;
@@ -513,13 +491,25 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
     sprite.alpha = fade;
   }
   drawLanterns(world);
-  // Charging: a faint ring about as large as the burst the hold would make (it grows while held), and
-  // a bright inner ring that fills up to the longest hold.
+  // Charging: a ring about as large as the burst the hold would make (it grows while held, where
+  // holding counts), and a bright inner ring that fills up to the longest hold. In the lantern show
+  // the ring is where the shell's hot stars get: lower than wide, as they droop.
   if (pointerId !== -1) {
-    const hold = (performance.now() - pressedAt) / 1000;
+    const hold = holdCounts() ? (performance.now() - pressedAt) / 1000 : 0;
     const s = burstScale(hold);
-    const r = cam.toScreenLength(PREVIEW_SECONDS * BURST_SPEED * show.reach * burstSize(s));
-    overlay.circle(pointerX, pointerY, r).stroke({ width: 1.5, color: 0xffe8a0, alpha: 0.2 + 0.08 * (s - 1) });
+    if (lanternShow) {
+      const reach = sparkReach(LEVELS[run.level]!.shell, s);
+      const w = show.params.sky.width;
+      const ry = cam.toScreenLength(0.5 * (reach.up + reach.down) * w);
+      const cy = pointerY + cam.toScreenLength(0.5 * (reach.down - reach.up) * w);
+      overlay
+        .ellipse(pointerX, cy, cam.toScreenLength(reach.side * w), ry)
+        .fill({ color: 0xffe8a0, alpha: 0.06 })
+        .stroke({ width: 2, color: 0xffe8a0, alpha: 0.5 });
+    } else {
+      const r = cam.toScreenLength(FREE_RING_SECONDS * BURST_SPEED * show.reach * burstSize(s));
+      overlay.circle(pointerX, pointerY, r).stroke({ width: 1.5, color: 0xffe8a0, alpha: 0.2 + 0.08 * (s - 1) });
+    }
     overlay.circle(pointerX, pointerY, 6 + 10 * ((s - 1) / 2)).stroke({ width: 2.5, color: 0xffe8a0, alpha: 0.9 });
     overlay.circle(pointerX, pointerY, 3).fill({ color: 0xffe8a0, alpha: 0.9 });
   }
@@ -584,39 +574,76 @@ canvas.addEventListener('pointercancel', (event) => {
 
 // ---- The lantern show: lanterns, status row, next-level button -----------------------------------
 
-/** Draws the level's lanterns (unlit: dim paper; lit: glowing gold) and a ring widening from each lantern just lit. */
+/** The lit lanterns' light: per lantern a halo and a wider, fainter wash, added to the sky under the lantern bodies. */
+const lanternGlow = new Container({ label: 'lantern-glow' });
+app.stage.addChildAt(lanternGlow, app.stage.getChildIndex(overlay));
+/** Halo and wash sprites of lantern i: 2i and 2i + 1 (made as levels need them). */
+const glowSprites: Sprite[] = [];
+function glowSprite(k: number): Sprite {
+  while (glowSprites.length <= k) {
+    const sprite = new Sprite({ texture: glow, anchor: 0.5, blendMode: 'add', tint: 0xffb060, visible: false });
+    lanternGlow.addChild(sprite);
+    glowSprites.push(sprite);
+  }
+  return glowSprites[k]!;
+}
+
+/**
+ * Draws the level's lanterns. Unlit: dark red paper with a thin orange rim. Lit: the paper glows
+ * from a white-hot core through gold to orange, with a flickering warm halo and a faint wash of light
+ * on the sky around it; a just-lit lantern flares and a ring widens from it.
+ */
 function drawLanterns(world: PhysicsWorld): void {
+  for (const sprite of glowSprites) sprite.visible = false;
   if (!lanternShow) return;
   const cam = renderer.camera;
   const sky = show.params.sky;
   const r = cam.toScreenLength(lanternRadius(sky.width));
   const lv = LEVELS[run.level]!;
+  const t = world.time;
   for (const [i, l] of lv.lanterns.entries()) {
-    const [wx, wy] = lanternAt(l, sky, world.time - run.start);
+    const [wx, wy] = lanternAt(l, sky, t - run.start);
     const x = cam.toScreenX(wx),
       y = cam.toScreenY(wy);
-    // The string it hangs from, then the body: an upright oval with a top and a bottom cap.
+    // The string it hangs from.
     overlay
       .moveTo(x, y - r)
       .lineTo(x, y - 2.2 * r)
       .stroke({ width: 1, color: 0x8a6a4a, alpha: 0.6 });
     if (run.lit[i]) {
-      overlay.circle(x, y, 2.1 * r).fill({ color: 0xffc36a, alpha: 0.16 });
-      overlay
-        .ellipse(x, y, 0.8 * r, r)
-        .fill({ color: 0xffd27a })
-        .stroke({ width: 2, color: 0xfff1c9 });
+      const lit = lightings.find((g) => g.index === i);
+      const flare = lit ? Math.max(0, 1 - (t - lit.time) / 0.6) : 0;
+      const flicker = 0.86 + 0.08 * Math.sin(9 * t + 1.7 * i) + 0.06 * Math.sin(23 * t + i);
+      const halo = glowSprite(2 * i),
+        wash = glowSprite(2 * i + 1);
+      halo.visible = wash.visible = true;
+      halo.position.set(x, y);
+      wash.position.set(x, y);
+      halo.width = halo.height = r * (6 + 4 * flare);
+      halo.alpha = Math.min(1, flicker + flare);
+      wash.width = wash.height = r * 16;
+      wash.alpha = 0.22 * flicker + 0.3 * flare;
+      overlay.ellipse(x, y, 0.8 * r, r).fill({ color: 0xff8a2a });
+      overlay.ellipse(x, y + 0.06 * r, 0.64 * r, 0.8 * r).fill({ color: 0xffc45a });
+      overlay.ellipse(x, y + 0.12 * r, 0.38 * r, 0.5 * r).fill({ color: 0xfff2c8, alpha: 0.7 + 0.3 * flicker });
+      overlay.ellipse(x, y, 0.4 * r, r).stroke({ width: 1, color: 0xd0601c, alpha: 0.35 });
     } else {
       overlay
         .ellipse(x, y, 0.8 * r, r)
-        .fill({ color: 0x6a2a12, alpha: 0.85 })
-        .stroke({ width: 2, color: 0xff9a4a, alpha: 0.9 });
+        .fill({ color: 0x6a2a12, alpha: 0.9 })
+        .stroke({ width: 2, color: 0xff9a4a, alpha: 0.85 });
+      overlay.ellipse(x, y, 0.4 * r, r).stroke({ width: 1, color: 0xb0502a, alpha: 0.5 });
     }
+    // Top and bottom caps, and a tassel.
     overlay.rect(x - 0.45 * r, y - 1.08 * r, 0.9 * r, 0.16 * r).fill({ color: 0x3a2a1a });
     overlay.rect(x - 0.45 * r, y + 0.92 * r, 0.9 * r, 0.16 * r).fill({ color: 0x3a2a1a });
+    overlay
+      .moveTo(x, y + 1.08 * r)
+      .lineTo(x, y + 1.45 * r)
+      .stroke({ width: 2, color: run.lit[i] ? 0xffb040 : 0x8a3a1a });
   }
   for (const g of lightings) {
-    const age = world.time - g.time;
+    const age = t - g.time;
     if (age < 0 || age > 0.9) continue;
     const f = age / 0.9;
     overlay.circle(cam.toScreenX(g.x), cam.toScreenY(g.y), r * (1.2 + 3 * f)).stroke({ width: 3, color: 0xffe08a, alpha: 1 - f });
@@ -624,42 +651,14 @@ function drawLanterns(world: PhysicsWorld): void {
   updateStatus();
 }
 
-const style = document.createElement('style');
-style.textContent = `
-.fw-status { text-align: center; font: 14px/1.4 system-ui, sans-serif; color: #eef3f8; padding: 6px 10px 4px; }
-.fw-status .fw-goal { font-weight: 600; color: #ffd166; }
-.fw-status .fw-numbers { font: 600 15px ui-monospace, Menlo, Consolas, monospace; }
-.fw-status .fw-hint { color: #c9d3e3; font-size: 13px; }
-.fw-status.cleared .fw-goal { color: #7ee787; }
-.fw-status button { font: 13px system-ui, sans-serif; color: #e8ecf1; background: rgba(255, 255, 255, 0.08); border: 1px solid #4a5468;
-  border-radius: 6px; padding: 2px 10px; margin-left: 8px; cursor: pointer; min-height: 28px; }
-@media (pointer: coarse) { .fw-status button { min-height: 36px; } }
-`;
-document.head.append(style);
-const statusEl = document.createElement('div');
-statusEl.className = 'fw-status';
-statusEl.setAttribute('role', 'status');
-statusEl.dataset.hud = 'lanterns';
-const goalLine = document.createElement('div');
-goalLine.className = 'fw-goal';
-goalLine.dataset.hud = 'goal';
-const numbersLine = document.createElement('div');
-numbersLine.className = 'fw-numbers';
-numbersLine.dataset.hud = 'numbers';
-const hintLine = document.createElement('div');
-hintLine.className = 'fw-hint';
-hintLine.dataset.hud = 'hint';
-const hintText = document.createElement('span');
+const status = createStatusRow({ name: 'lanterns' });
 const modeButton = document.createElement('button');
 modeButton.type = 'button';
 modeButton.addEventListener('click', () => setLanternShow(!lanternShow));
-hintLine.append(hintText, modeButton);
-statusEl.append(goalLine, numbersLine, hintLine);
-pageLayout().status.append(statusEl);
+status.hint.append(modeButton);
 const touch = pageLayout().touch();
 /** The big Next-level (or Play-again) button over the sky once a level is lit. */
 const setAction = createActionButton('Next level ▶', () => nextLevel());
-let shownStatus = '';
 
 /** '★★☆' for `n` of 3 stars. */
 function starText(n: number): string {
@@ -696,20 +695,13 @@ function updateStatus(): void {
     numbers = `${plural(run.shells, 'shell', 'shells')} (par ${lv.par}) · Stars ${total}/${3 * LEVELS.length}`;
     hint = last ? 'Play again from level 1, or try for 3 stars' : 'Fewer shells, more stars';
   } else {
-    goal = 'Light every lantern with your fireworks!';
+    goal = `Light every lantern with your fireworks! · ${lv.name}`;
     numbers = `Level ${run.level + 1}/${LEVELS.length} · Lit ${lit}/${lv.lanterns.length} · Shells ${run.shells} · Par ${lv.par}`;
     hint = `${touch ? 'Tap' : 'Click'} ${lv.tip}`;
   }
   const mode = lanternShow ? 'Free play' : 'Lantern show';
-  const text = goal + numbers + hint + mode + cleared;
-  if (text === shownStatus) return;
-  shownStatus = text;
-  goalLine.textContent = goal;
-  numbersLine.textContent = numbers;
-  hintText.textContent = hint;
-  modeButton.textContent = mode;
-  statusEl.classList.toggle('cleared', cleared);
-  setAction(cleared, last ? 'Play again ▶' : 'Next level ▶');
+  if (modeButton.textContent !== mode) modeButton.textContent = mode;
+  if (status.set({ goal, numbers, hint }, cleared)) setAction(cleared, last ? 'Play again ▶' : 'Next level ▶');
 }
 updateStatus();
 
@@ -749,7 +741,7 @@ shell.expose({
   /** Goes to the next level once this one is lit (else restarts it), as the Next-level button. */
   nextLevel: (): void => nextLevel(),
   /** The status row's text. */
-  statusText: (): string => statusEl.innerText,
+  statusText: (): string => status.element.innerText,
   /** Turns the auto-show on or off. */
   setAutoShow: (on: boolean): void => setAuto(on),
 });

@@ -62,8 +62,9 @@ afterAll(async () => {
 describe('fireworks', () => {
   let page: GamePage;
   beforeAll(async () => {
-    // auto=0: the show starts quiet (the auto-show is on by default), so the launches counted are the test's.
-    page = await h.openGame('fireworks', { query: { opening: 0, sparks: 120, generations: 1, auto: 0 } });
+    // Free play (the lantern show, the default, gives quick shells only on its first level and no
+    // auto-show); auto=0: the show starts quiet, so the launches counted are the test's.
+    page = await h.openGame('fireworks', { query: { play: 'free', opening: 0, sparks: 120, generations: 1, auto: 0 } });
   });
   afterAll(async () => {
     await page?.close();
@@ -256,7 +257,7 @@ describe('fireworks: the lantern show', () => {
     await g.waitFor(() => /All lanterns lit! ★★★/.test(document.querySelector('[data-hud="lanterns"]')?.textContent ?? ''), null);
     await g.page.getByRole('button', { name: 'Next level ▶' }).click();
     await g.waitFor(() => (window.game as unknown as LanternGame).lanterns().level === 1, null);
-    expect(await status.textContent()).toMatch(/Level 2\/5 · Lit 0\/3 · Shells 0 · Par 2/);
+    expect(await status.textContent()).toMatch(/Level 2\/5 · Lit 0\/4 · Shells 0 · Par 2/);
     await g.page.getByRole('button', { name: 'Free play' }).click();
     await g.waitFor(() => !(window.game as unknown as LanternGame).lanterns().on, null);
     expect(await g.page.evaluate(() => (window.game as unknown as LanternGame).params.autoShow)).toBe(true);
@@ -272,7 +273,7 @@ describe('fireworks: the lantern show', () => {
       query: { opening: 0, sparks: 60, generations: 1 },
     });
     const status = g.page.locator('[data-hud="lanterns"]');
-    expect(await status.textContent()).toMatch(/Light every lantern.*Tap near a lantern/s);
+    expect(await status.textContent()).toMatch(/Light every lantern.*Tap right on a lantern/s);
     const row = (await status.boundingBox())!;
     const canvas = await g.canvasBox();
     expect(row.y + row.height).toBeLessThanOrEqual(canvas.y + 1);

@@ -2,7 +2,7 @@
  * The renderer-agnostic game shell every game reuses: the page contract (`window.game`, ready
  * flag), the fixed-step loop on requestAnimationFrame, keys (P pause, N step, R reset), the HUD
  * (fps, bodies, controls legend), the page layout (toolbar, info and side columns around the scene),
- * lil-gui panels, URL parameters and pointer positions.
+ * lil-gui panels, URL parameters, pointer positions and a game's status row (goal, numbers, hint).
  * The pixi part lives in './pixi' (createPixiApp, startPixiGame) so 3D games need not load pixi.
  */
 
@@ -28,5 +28,7 @@ export type { GameShell, GameShellOptions } from './shell.js';
 export { createGameShell, SHELL_CONTROLS } from './shell.js';
 export type { EngineSound, Sound, SoundMaterial } from './sound.js';
 export { addMuteButton, getSound } from './sound.js';
+export type { StatusLines, StatusRow, StatusRowOptions } from './status-row.js';
+export { createStatusRow } from './status-row.js';
 export type { ButtonBar, ButtonBarOptions, Stick, StickOptions, TouchButton } from './touch-controls.js';
 export { createActionButton, createButtonBar, createStick, isTouchDevice } from './touch-controls.js';
