@@ -21,6 +21,7 @@ import {
   addPlane,
   addShape3D,
   addSystem,
+  isAlive,
   type PhysicsWorld,
   type PhysicsWorldOptions,
   setDrag,
@@ -1005,6 +1006,37 @@ export function upComponent(world: PhysicsWorld, e: number, axis: number): numbe
     z = O.z[e]!,
     w = O.w[e]!;
   return axis === 0 ? 2 * (x * y + w * z) : axis === 1 ? 1 - 2 * (x * x + z * z) : 2 * (y * z - w * x);
+}
+
+/** Samples along a swing that `pieceOnSwing` looks for pieces at. */
+const SWING_SAMPLES = 40;
+
+/**
+ * The first standing piece the ball at `ball` (m) meets when let go from rest under a hook held
+ * still at `hook` (m): as a pendulum of length HANG it swings along the line from where it is
+ * through the point under the hook to as far past it, its centre sqrt(HANG^2 - d^2) under the hook
+ * at d across the ground from it; a piece is met where the ball's centre comes within BALL_RADIUS
+ * and 0.8 of the piece's largest half extent of the piece's centre. @returns its body, or 0 when the
+ * swing meets none.
+ */
+export function pieceOnSwing(world: PhysicsWorld, pieces: readonly Piece[], ball: ArrayLike<number>, hook: ArrayLike<number>): number {
+  const P = world.components.Position;
+  const hx = hook[0]!,
+    hy = hook[1]!,
+    hz = hook[2]!;
+  const ex = ball[0]! - hx,
+    ez = ball[2]! - hz;
+  for (let k = 0; k <= SWING_SAMPLES; k++) {
+    const f = 1 - (2 * k) / SWING_SAMPLES;
+    const x = hx + f * ex,
+      z = hz + f * ez;
+    const y = hy - Math.sqrt(Math.max(0, HANG * HANG - f * f * (ex * ex + ez * ez)));
+    for (const p of pieces) {
+      if (p.fallen || !isAlive(world, p.body)) continue;
+      if (Math.hypot(P.x[p.body]! - x, P.y[p.body]! - y, P.z[p.body]! - z) < BALL_RADIUS + 0.8 * Math.max(...p.half)) return p.body;
+    }
+  }
+  return 0;
 }
 
 /** How many pieces have fallen. */

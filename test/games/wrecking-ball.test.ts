@@ -11,7 +11,9 @@ import {
   buildWreckingBall,
   clearTarget,
   fallenCount,
+  HANG,
   HOOK_RANGE,
+  pieceOnSwing,
   SLEW_RATE,
   SWING_BUDGET,
   scorePieces,
@@ -302,6 +304,24 @@ describe('wrecking-ball scene', () => {
     }
     expect(clearedAt).toBeGreaterThan(0);
     expect(swings).toBeLessThanOrEqual(SWING_BUDGET);
+  });
+
+  it('the swing of a held ball, let go: it meets the tower its line reaches, and nothing when pulled short', () => {
+    // The drag's red ring (pieceOnSwing): a hook 2 m from level 1's tower, toward the mast, its
+    // height putting the ball's lowest point 0.6 m up (the tower's blocks are 0.7 m cubes). Pulled
+    // 2.5 m back from under the hook, the ball swings 2.5 m past it, through the tower's foot;
+    // pulled 1 m, it turns back 1 m past the hook, 1 m short of the tower's middle (out of reach of
+    // the ball's 0.55 m radius and the block's 0.35 m half width).
+    const { world, h } = build(1);
+    const tower = h.pieces.filter((p) => p.kind === 'tower');
+    const foot = tower.reduce((a, b) => (b.y0 < a.y0 ? b : a));
+    const n = Math.hypot(foot.x0, foot.z0),
+      ux = -foot.x0 / n,
+      uz = -foot.z0 / n;
+    const hook = [foot.x0 + 2 * ux, HANG + 0.6, foot.z0 + 2 * uz];
+    const pulled = (d: number) => [hook[0]! + d * ux, hook[1]! - Math.sqrt(HANG * HANG - d * d), hook[2]! + d * uz];
+    expect(tower.map((p) => p.body)).toContain(pieceOnSwing(world, h.pieces, pulled(2.5), hook));
+    expect(pieceOnSwing(world, h.pieces, pulled(1), hook)).toBe(0);
   });
 
   it('stars for a cleared level: 3 in 2 swings or fewer, 2 in 3, 1 in 4 (the budget), none uncleared', () => {
