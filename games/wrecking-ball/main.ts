@@ -36,6 +36,7 @@ import {
   BufferAttribute,
   BufferGeometry,
   CanvasTexture,
+  CircleGeometry,
   ConeGeometry,
   CylinderGeometry,
   DoubleSide,
@@ -69,6 +70,7 @@ import {
   hookPosition,
   JIB_HEIGHT,
   LINK_RADIUS,
+  pieceOnSwing,
   RADIUS_RANGE,
   SWING_BUDGET,
   scorePieces,
@@ -604,6 +606,105 @@ aimArrow.rotation.x = Math.PI;
 aimArrow.visible = false;
 app.scene.add(aimArrow);
 
+// ---- Depth cues: where the ball is over the ground, and where a drag's swing will go ----------------
+
+// Under the ball, always: a dark disc on the ground with a pale rim (fainter the higher the ball),
+// so its place over the site reads from any view, not only its place on the screen.
+const ballMark = new Mesh(
+  new CircleGeometry(1, 32),
+  new MeshBasicMaterial({ color: 0x1b140c, transparent: true, opacity: 0.45, depthWrite: false }),
+);
+ballMark.rotation.x = -Math.PI / 2;
+app.scene.add(ballMark);
+const ballMarkRim = new Mesh(
+  new RingGeometry(0.92, 1, 40),
+  new MeshBasicMaterial({ color: 0xf4ead2, transparent: true, opacity: 0.7, depthWrite: false }),
+);
+ballMarkRim.rotation.x = -Math.PI / 2;
+app.scene.add(ballMarkRim);
+// While the ball is held: a plumb line from it down to its mark, the swing's track on the ground
+// (a dashed band, from under the ball through under the hook to as far the other side) with a ring
+// where the ball passes lowest and fastest (under the hook), and a red ring round the first piece
+// the swing will meet.
+const cueMaterial = new MeshBasicMaterial({ color: 0xfff6dc, transparent: true, opacity: 0.9, depthWrite: false });
+const plumb = new Mesh(new CylinderGeometry(1, 1, 1, 6), cueMaterial);
+plumb.visible = false;
+app.scene.add(plumb);
+/** Dashes of the swing's track on the ground, and each one's share of a dash period that is drawn. */
+const TRACK_DASHES = 16,
+  DASH_FILL = 0.6;
+/** How much thicker the cues are drawn on an upright phone, whose view of the site is about half as large. */
+const CUE_SCALE = PORTRAIT ? 1.8 : 1;
+/** Width of the track's dashes, m. */
+const TRACK_WIDTH = 0.14 * CUE_SCALE;
+const trackDashes = Array.from({ length: TRACK_DASHES }, () => {
+  const m = new Mesh(new PlaneGeometry(1, 1), cueMaterial);
+  m.visible = false;
+  app.scene.add(m);
+  return m;
+});
+const passRing = new Mesh(new RingGeometry(0.45, 0.6, 40), new MeshBasicMaterial({ color: 0xffd166, transparent: true, opacity: 0.9 }));
+passRing.rotation.x = -Math.PI / 2;
+passRing.visible = false;
+app.scene.add(passRing);
+const meetRing = new Mesh(new RingGeometry(0.85, 1.05, 40), new MeshBasicMaterial({ color: 0xff5a4a, transparent: true, opacity: 0.9 }));
+meetRing.rotation.x = -Math.PI / 2;
+meetRing.visible = false;
+app.scene.add(meetRing);
+/** Height above the ground the cues lie at, m (over the site's dirt, under the pieces' feet). */
+const CUE_Y = 0.02;
+/** The piece a held ball's swing would meet first (0: none), for tests. */
+let swingMeets = 0;
+/**
+ * Places the depth cues for this frame (see above): the ball's mark always; while the ball is held,
+ * its plumb line and its swing as a pendulum let go from rest under a still hook (./scene
+ * `pieceOnSwing`): along the line from the ball through the point under the hook to as far past it.
+ */
+function placeCues(ball: ArrayLike<number>, hook: ArrayLike<number>): void {
+  const bx = ball[0]!,
+    by = ball[1]!,
+    bz = ball[2]!;
+  const lift = Math.max(0, by - BALL_RADIUS);
+  const s = BALL_RADIUS * (0.85 + 0.05 * lift);
+  ballMark.position.set(bx, CUE_Y, bz);
+  ballMark.scale.setScalar(s);
+  (ballMark.material as MeshBasicMaterial).opacity = 0.45 * Math.max(0.35, 1 - lift / 6);
+  ballMarkRim.position.set(bx, CUE_Y + 0.002, bz);
+  ballMarkRim.scale.setScalar(s);
+  const held = drag.body === handles.ball && drag.body !== 0;
+  plumb.visible = passRing.visible = held;
+  for (const d of trackDashes) d.visible = held;
+  meetRing.visible = false;
+  swingMeets = 0;
+  if (!held) return;
+  const drop = Math.max(0.01, by - BALL_RADIUS - CUE_Y);
+  plumb.position.set(bx, CUE_Y + drop / 2, bz);
+  plumb.scale.set(0.025 * CUE_SCALE, drop, 0.025 * CUE_SCALE);
+  const hx = hook[0]!,
+    hz = hook[2]!;
+  const ex = bx - hx,
+    ez = bz - hz;
+  // The dashes from under the ball (f = 1) to as far past the hook (f = -1), flat on the ground.
+  const span = 2 * Math.hypot(ex, ez),
+    heading = Math.atan2(-ez, ex);
+  for (let i = 0; i < TRACK_DASHES; i++) {
+    const d = trackDashes[i]!;
+    const f = 1 - (2 * (i + 0.5)) / TRACK_DASHES;
+    d.position.set(hx + f * ex, CUE_Y + 0.003, hz + f * ez);
+    d.rotation.set(-Math.PI / 2, 0, heading);
+    d.scale.set(Math.max(0.01, (DASH_FILL * span) / TRACK_DASHES), TRACK_WIDTH, 1);
+  }
+  passRing.position.set(hx, CUE_Y + 0.004, hz);
+  passRing.scale.setScalar(CUE_SCALE);
+  swingMeets = pieceOnSwing(shell.world, handles.pieces, ball, hook);
+  if (swingMeets !== 0) {
+    const P = shell.world.components.Position;
+    meetRing.visible = true;
+    meetRing.position.set(P.x[swingMeets]!, CUE_Y + 0.006, P.z[swingMeets]!);
+    meetRing.scale.setScalar(Math.sqrt(CUE_SCALE) * (1 + 0.08 * Math.sin(shell.world.time * 8)));
+  }
+}
+
 // ---- Keys held -------------------------------------------------------------------------------
 
 const held = new Set<string>();
@@ -677,6 +778,7 @@ function pressAt(ndcX: number, ndcY: number): 'ball' | 'swing' | 'hook' | 'none'
     if (outOfSwings()) return 'none';
     drag.grab(ndcX, ndcY, app.camera);
     if (drag.body !== handles.ball) return 'none';
+    dragPlane.constant = -drag.target[1];
     handles.controls.released++;
     return 'ball';
   }
@@ -791,10 +893,33 @@ canvas.addEventListener('pointerdown', (event) => {
     canvas.setPointerCapture(event.pointerId);
   }
 });
+/** Farthest the hand may take a held ball from under the hook, across the ground, m. */
+const PULL_REACH = 4;
+/** The horizontal plane at the height the ball was grabbed: a held ball follows the pointer over the ground. */
+const dragPlane = new Plane(new Vector3(0, 1, 0), 0);
+const dragAt = new Vector3();
+/**
+ * Moves the hand holding the ball to where the pointer's ray meets the horizontal plane through the
+ * grab point (drawn up the screen, the ball goes away from the camera; down, toward it), at most
+ * PULL_REACH from under the hook; a ray that misses the plane (over the horizon) leaves it.
+ */
+function dragOverGround(ndcX: number, ndcY: number): void {
+  raycaster.setFromCamera(new Vector2(ndcX, ndcY), app.camera);
+  if (raycaster.ray.intersectPlane(dragPlane, dragAt) === null) return;
+  const [hx, , hz] = hookPosition(handles.crane);
+  let dx = dragAt.x - hx,
+    dz = dragAt.z - hz;
+  const d = Math.hypot(dx, dz);
+  if (d > PULL_REACH) {
+    dx *= PULL_REACH / d;
+    dz *= PULL_REACH / d;
+  }
+  drag.moveTo([hx + dx, -dragPlane.constant, hz + dz]);
+}
 canvas.addEventListener('pointermove', (event) => {
   if (event.pointerId !== pressId) return;
   app.toNdc(event.clientX, event.clientY, ndc);
-  drag.move(ndc[0], ndc[1], app.camera);
+  dragOverGround(ndc[0], ndc[1]);
 });
 const up = (event: PointerEvent): void => {
   if (event.pointerId !== pressId) return;
@@ -946,6 +1071,10 @@ const tapWord = touch ? 'Tap' : 'Click';
 /** The hint's text now ('' hides it). */
 function hintText(): string {
   const c = handles.controls;
+  if (drag.body !== 0 && drag.body === handles.ball)
+    return swingMeets !== 0
+      ? 'Let go: the ball swings along the dashes into the red ring'
+      : 'Pull so the dashes cross a block, then let go';
   if (cleared || outOfSwings()) return '';
   if (shell.world.time < hintUntil) return `That moves the hook. ${tapWord} a block to swing the ball at it`;
   if (c.released === 0 && c.moves.length === 0 && aimed === 0) return `${tapWord} a block: the crane swings the ball into it`;
@@ -986,6 +1115,7 @@ function frame(): void {
   cab.rotation.set(0, c.angle, 0);
   const hp = renderer.drawnPosition(handles.trolley, hookAt) ?? hookPosition(c);
   drawChain(hp);
+  if (renderer.drawnPosition(handles.ball, ballAt)) placeCues(ballAt, hp);
   followAction();
   cablePositions[0] = hp[0]!;
   cablePositions[1] = JIB_HEIGHT;
@@ -1099,6 +1229,10 @@ shell.expose({
   pressAt,
   /** The piece the running swing is aimed at (0 when none), and whether its arrow shows. */
   aimed: (): { piece: number; arrow: boolean } => ({ piece: aimed, arrow: aimArrow.visible }),
+  /** While the ball is held: the piece its swing would meet first (ringed red), 0 when none or not held. */
+  swingMeets: (): number => swingMeets,
+  /** Whether the depth cues show: the ball's ground mark, and (while held) its plumb line and swing track. */
+  cues: () => ({ mark: ballMark.visible, plumb: plumb.visible, track: trackDashes[0]!.visible, meets: meetRing.visible }),
   /** What the last swing did, once counted ('Hit! N down' or 'Missed: tap it again'; '' before). */
   swingResult: (): string => swing.result,
   /** The effects showing now: dust and chips in the air, score popups. */

@@ -21,6 +21,7 @@ import {
   addPlane,
   addShape3D,
   addSystem,
+  isAlive,
   type PhysicsWorld,
   type PhysicsWorldOptions,
   setDrag,
@@ -124,6 +125,8 @@ export interface CraneMove {
   run?: boolean;
   /** Whether beginning it releases the ball into its run: the first move of a run (counted in `released`). */
   release?: boolean;
+  /** Whether it is the run's follow-through, after the ball's arrival at its target (see FOLLOW_SPEED). */
+  follow?: boolean;
 }
 
 /** The crane's state: where the jib points and where the trolley is on it. */
@@ -411,6 +414,26 @@ const GLANCE_COST = 2;
 /** Seconds before the arrival in which pieces near the ball's path count as in the way of the hit. */
 const APPROACH_TIME = 0.8;
 /**
+ * Pieces whose start centres lie within this distance (m, across the ground) of the tapped piece's
+ * are its structure: a tower, a wall or a plank stack (the layouts keep structures 3 m apart or more).
+ */
+export const STRUCTURE_RADIUS = 2.5;
+/**
+ * Share of its structure's height (from the ground) a swing strikes at, at most (never above the
+ * tapped piece, never below skimming the ground): a ball at the top of a plank stack knocked off its
+ * top two layers and came to rest on the rest; one low in the stack sweeps most of it out.
+ */
+export const STRIKE_SHARE = 0.35;
+/**
+ * After its hit the hook runs on along the ball's approach at FOLLOW_SPEED m/s to FOLLOW_CLEAR m past
+ * the structure's far side (with the ball's radius): the ball swings through and comes to rest
+ * beyond the structure, not on it (a hook stopped over the piece hung the ball in what was left).
+ */
+export const FOLLOW_SPEED = 3;
+export const FOLLOW_CLEAR = 0.4;
+/** Seconds of plan cost per metre a follow-through would take the hook past the jib's reach. */
+const REACH_COST = 2;
+/**
  * A swing's plan is made again from where the ball is every REPLAN_EVERY s (the chain is not quite
  * the model's pendulum), until REPLAN_UNTIL s before the hit (closer in, the legs' speeds it asks
  * for grow past the crane's rates).
@@ -503,6 +526,9 @@ export interface SwingAim {
   runAt: number;
   /** The step at which the plan is made again next (see REPLAN_EVERY). */
   replanAt: number;
+  /** Where the hook's follow-through after the hit ends (m, x and z; see FOLLOW_SPEED). */
+  followX: number;
+  followZ: number;
 }
 
 /** Where the plan starts: the ball's horizontal position and velocity and the hook's position (m, m/s). */
@@ -631,7 +657,35 @@ function legMoves(hx: number, hy: number, hz: number, legs: Legs, aim: SwingAim)
       });
     }
   }
+  // The follow-through: on past the structure at FOLLOW_SPEED, at the hit's height.
+  const d = Math.hypot(aim.followX - aim.x, aim.followZ - aim.z);
+  if (d > 1e-6)
+    moves.push({
+      angle: Math.atan2(-aim.followZ, aim.followX),
+      radius: Math.hypot(aim.followX, aim.followZ),
+      height: aim.height,
+      duration: d / FOLLOW_SPEED,
+      elapsed: 0,
+      run: true,
+      follow: true,
+    });
   return moves;
+}
+
+/**
+ * The standing pieces of piece `piece`'s structure: those whose start centres lie within
+ * STRUCTURE_RADIUS of its start centre, across the ground (itself among them).
+ */
+export function structureOf(pieces: readonly Piece[], piece: Piece): Piece[] {
+  return pieces.filter((q) => !q.fallen && Math.hypot(q.x0 - piece.x0, q.z0 - piece.z0) < STRUCTURE_RADIUS);
+}
+
+/** How far box piece `p` reaches from its centre along the horizontal unit direction (ux, uz), m. */
+function reachAlong(p: Piece, ux: number, uz: number): number {
+  const c = Math.cos(p.yaw),
+    s = Math.sin(p.yaw);
+  // The box's own x axis is (cos yaw, -sin yaw) across the ground, its z axis (sin yaw, cos yaw).
+  return p.half[0] * Math.abs(ux * c - uz * s) + p.half[2] * Math.abs(ux * s + uz * c);
 }
 
 /**
@@ -647,15 +701,24 @@ function legMoves(hx: number, hy: number, hz: number, legs: Legs, aim: SwingAim)
  * rate; of those, the one of the lowest cost: its time, up to GLANCE_COST s for meeting a long piece
  * along its length rather than square to it, 3 s for each piece the ball would
  * meet in the last APPROACH_TIME before it reaches the piece tapped, 1 s for each one earlier and
- * 20 s for passing the mast. The last leg is the swing's run (`CraneMove.run`; its first move
- * releases it). `craneSystem` makes the plan again from where the ball is every REPLAN_EVERY s.
+ * 20 s for passing the mast, and REACH_COST s a metre for a follow-through past the jib's reach.
+ * The ball strikes at the piece's height, but no higher than STRIKE_SHARE of its structure's
+ * (`structureOf`). The last leg is the swing's run (`CraneMove.run`; its first move releases it);
+ * after the hit the hook follows through (FOLLOW_SPEED), so the ball swings on through the structure
+ * and comes to rest past it. `craneSystem` makes the plan again from where the ball is every
+ * REPLAN_EVERY s.
  */
 export function aimAt(world: PhysicsWorld, h: WreckingBallHandles, piece: number): void {
   const P = world.components.Position;
   const tx = P.x[piece]!,
     tz = P.z[piece]!;
-  // The ball's centre at the piece's, but never lower than skimming the ground.
-  const ballY = Math.max(P.y[piece]!, BALL_RADIUS + 0.05);
+  const tapped = h.pieces.find((q) => q.body === piece);
+  const structure = tapped ? structureOf(h.pieces, tapped) : [];
+  // The ball's centre at the piece's, but no higher than STRIKE_SHARE of its structure's height and
+  // never lower than skimming the ground.
+  let top = 0;
+  for (const q of structure) top = Math.max(top, P.y[q.body]! + q.half[1]);
+  const ballY = Math.max(BALL_RADIUS + 0.05, Math.min(P.y[piece]!, STRIKE_SHARE * top || P.y[piece]!));
   const height = Math.min(HOOK_RANGE[1], Math.max(HOOK_RANGE[0], ballY + HANG));
   // The hook ends over the piece, pulled into the jib's reach.
   const r0 = Math.min(RADIUS_RANGE[1], Math.max(RADIUS_RANGE[0], Math.hypot(tx, tz)));
@@ -684,9 +747,8 @@ export function aimAt(world: PhysicsWorld, h: WreckingBallHandles, piece: number
       }
     }
   }
-  // The cost of each direction's plan: its time, how square it meets the piece and what the ball
-  // would meet on its way there.
-  const tapped = h.pieces.find((q) => q.body === piece);
+  // The cost of each direction's plan: its time, how square it meets the piece, what the ball
+  // would meet on its way there and whether its follow-through stays in the jib's reach.
   const reach = BALL_RADIUS + Math.max(...(tapped?.half ?? [0.3])) + 0.05;
   const long: [number, number] | null =
     tapped && Math.max(tapped.half[0], tapped.half[2]) > 1.5 * Math.min(tapped.half[0], tapped.half[2])
@@ -696,6 +758,7 @@ export function aimAt(world: PhysicsWorld, h: WreckingBallHandles, piece: number
       : null;
   let chosen = -1,
     chosenCost = Number.POSITIVE_INFINITY;
+  const follow: Array<[number, number]> = best.map((_, d) => followEnd(world, structure, ex, ez, tx, tz, d));
   best.forEach((legs, d) => {
     if (legs === null) return;
     const pathX: number[] = [],
@@ -707,13 +770,16 @@ export function aimAt(world: PhysicsWorld, h: WreckingBallHandles, piece: number
     // along it only glances off its end: up to GLANCE_COST s more for a ball along it.
     const t = (2 * Math.PI * d) / APPROACH_DIRECTIONS;
     let cost = time + (long ? GLANCE_COST * Math.abs(Math.cos(t) * long[0] + Math.sin(t) * long[1]) : 0);
+    const [fx, fz] = follow[d]!,
+      fr = Math.hypot(fx, fz);
+    cost += REACH_COST * (Math.max(0, fr - RADIUS_RANGE[1]) + Math.max(0, RADIUS_RANGE[0] - fr));
     const approach = pathX.length - Math.round(APPROACH_TIME / PLAN_H);
     const met = new Set<number>();
     for (let k = 0; k < pathX.length; k += 6) {
       const x = pathX[k]!,
         z = pathZ[k]!;
       const y = hoistProfile(hy, height, time, k * PLAN_H) - HANG;
-      if (Math.hypot(x - tx, y - P.y[piece]!, z - tz) < reach) break;
+      if (Math.hypot(x - tx, y - ballY, z - tz) < reach) break;
       if (Math.hypot(x, z) < 0.4 + BALL_RADIUS + 0.1) cost += 20;
       for (const q of h.pieces) {
         if (q.body === piece || met.has(q.body)) continue;
@@ -751,9 +817,35 @@ export function aimAt(world: PhysicsWorld, h: WreckingBallHandles, piece: number
     done: 0,
     runAt: steps - legs.steps[2]!,
     replanAt: Math.round(REPLAN_EVERY / PLAN_H),
+    followX: follow[chosen]![0],
+    followZ: follow[chosen]![1],
   };
   h.controls.swing = aim;
   h.controls.moves = legMoves(start.hx, hy, start.hz, legs, aim);
+}
+
+/**
+ * Where the follow-through of a swing from direction `d` (of APPROACH_DIRECTIONS) ends: from the
+ * hook's end (ex, ez) on along the approach, as far past the piece at (tx, tz) as `structure`
+ * reaches beyond it along the approach plus the ball's radius and FOLLOW_CLEAR, m.
+ */
+function followEnd(
+  world: PhysicsWorld,
+  structure: readonly Piece[],
+  ex: number,
+  ez: number,
+  tx: number,
+  tz: number,
+  d: number,
+): [number, number] {
+  const P = world.components.Position;
+  const t = (2 * Math.PI * d) / APPROACH_DIRECTIONS,
+    ux = Math.cos(t),
+    uz = Math.sin(t);
+  let far = 0;
+  for (const q of structure) far = Math.max(far, (P.x[q.body]! - tx) * ux + (P.z[q.body]! - tz) * uz + reachAlong(q, ux, uz));
+  const past = far + BALL_RADIUS + FOLLOW_CLEAR;
+  return [ex + past * ux, ez + past * uz];
 }
 
 /**
@@ -914,6 +1006,37 @@ export function upComponent(world: PhysicsWorld, e: number, axis: number): numbe
     z = O.z[e]!,
     w = O.w[e]!;
   return axis === 0 ? 2 * (x * y + w * z) : axis === 1 ? 1 - 2 * (x * x + z * z) : 2 * (y * z - w * x);
+}
+
+/** Samples along a swing that `pieceOnSwing` looks for pieces at. */
+const SWING_SAMPLES = 40;
+
+/**
+ * The first standing piece the ball at `ball` (m) meets when let go from rest under a hook held
+ * still at `hook` (m): as a pendulum of length HANG it swings along the line from where it is
+ * through the point under the hook to as far past it, its centre sqrt(HANG^2 - d^2) under the hook
+ * at d across the ground from it; a piece is met where the ball's centre comes within BALL_RADIUS
+ * and 0.8 of the piece's largest half extent of the piece's centre. @returns its body, or 0 when the
+ * swing meets none.
+ */
+export function pieceOnSwing(world: PhysicsWorld, pieces: readonly Piece[], ball: ArrayLike<number>, hook: ArrayLike<number>): number {
+  const P = world.components.Position;
+  const hx = hook[0]!,
+    hy = hook[1]!,
+    hz = hook[2]!;
+  const ex = ball[0]! - hx,
+    ez = ball[2]! - hz;
+  for (let k = 0; k <= SWING_SAMPLES; k++) {
+    const f = 1 - (2 * k) / SWING_SAMPLES;
+    const x = hx + f * ex,
+      z = hz + f * ez;
+    const y = hy - Math.sqrt(Math.max(0, HANG * HANG - f * f * (ex * ex + ez * ez)));
+    for (const p of pieces) {
+      if (p.fallen || !isAlive(world, p.body)) continue;
+      if (Math.hypot(P.x[p.body]! - x, P.y[p.body]! - y, P.z[p.body]! - z) < BALL_RADIUS + 0.8 * Math.max(...p.half)) return p.body;
+    }
+  }
+  return 0;
 }
 
 /** How many pieces have fallen. */

@@ -162,11 +162,20 @@ describe('3D rigid-body games in headless Chromium', () => {
       game.drag.moveTo([x0 + 3, P.y[ball]! + 1, P.z[ball]!]);
       for (let i = 0; i < 40; i++) game.step();
       const moved = P.x[ball]! - x0;
-      game.drag.release();
       return { pressed, moved };
     });
     expect(r.pressed).toBe('ball');
     expect(r.moved).toBeGreaterThan(0.5);
+    // While the ball is held, depth cues: its mark on the ground and a plumb line down to it, the
+    // swing's track on the ground, and a hint of what letting go does; once let go, the mark only.
+    type Cues = { cues(): { mark: boolean; plumb: boolean; track: boolean }; drag: { release(): void } };
+    await g.frames(8);
+    const held = await g.page.evaluate(() => (window.game as unknown as Cues).cues());
+    expect(held).toMatchObject({ mark: true, plumb: true, track: true });
+    expect(await hint.textContent()).toMatch(/let go/i);
+    await g.page.evaluate(() => (window.game as unknown as Cues).drag.release());
+    await g.frames(2);
+    expect(await g.page.evaluate(() => (window.game as unknown as Cues).cues())).toMatchObject({ mark: true, plumb: false, track: false });
     // A drag of the ball uses one of the level's 4 swings; taps on targets during a wind-up (paused
     // here, so it never ends) re-aim that swing and use none until its run begins.
     const budget = await g.page.evaluate(() => {
