@@ -8,8 +8,13 @@
  * front rim's inner end and the backboard (`throughHoop`). Only balls released below the rim count
  * (`SHOT_LINE_GAP`), so a ball dropped straight in from above is no basket. The round's clock starts
  * with the player's first ball, so reading the goal costs no time.
+ *
+ * A throw is a slingshot (`slingVelocity`): press where the ball should start, pull back and let go;
+ * the ball leaves opposite to the pull, faster the longer the pull, and `throwPath` is the dotted
+ * arc the page draws while pulling.
  */
 import { addSegment, type PhysicsWorld, removeBody } from '@bitphysics/physics';
+import type { DragMode } from './scene';
 
 /** Length of a round, s. */
 export const ROUND_SECONDS = 45;
@@ -178,4 +183,94 @@ export function roundBasket(round: HoopRound, spotCount: number): boolean {
   round.score++;
   round.spot = (round.spot + 1) % spotCount;
   return true;
+}
+
+/** Fastest throw, m/s: a full pull of the slingshot (enough to reach the top of either box from its floor). */
+export const MAX_THROW_SPEED = 20;
+
+/**
+ * The velocity of a slingshot throw, m/s (y up): the ball leaves opposite to the pull (pullX,
+ * pullY), px on screen (the pointer minus where the ball starts; y down), at MAX_THROW_SPEED x
+ * pull length / `fullPull`, capped at MAX_THROW_SPEED.
+ * @throws RangeError unless the pull is finite and fullPull > 0.
+ */
+export function slingVelocity(pullX: number, pullY: number, fullPull: number): [number, number] {
+  if (!(Number.isFinite(pullX) && Number.isFinite(pullY)))
+    throw new RangeError(`slingVelocity: pull must be finite, got (${pullX}, ${pullY})`);
+  if (!(fullPull > 0 && Number.isFinite(fullPull)))
+    throw new RangeError(`slingVelocity: fullPull must be finite and > 0 px, got ${fullPull}`);
+  const length = Math.hypot(pullX, pullY);
+  if (length === 0) return [0, 0];
+  const speed = MAX_THROW_SPEED * Math.min(1, length / fullPull);
+  return [(-pullX / length) * speed, (pullY / length) * speed];
+}
+
+/** Options of `throwPath`: the scene's gravity and drag, the ball's mass, and the box it flies in. */
+export interface ThrowPathOptions {
+  /** Gravity, m/s^2 down, >= 0. */
+  gravity: number;
+  /** The scene's drag law (scene.ts DragMode) and its k (kg/s linear, kg/m quadratic). */
+  drag: DragMode;
+  k: number;
+  /** The ball's mass, kg (> 0) and radius, m (> 0). */
+  mass: number;
+  radius: number;
+  /** The box, m: the path ends where the ball would touch a wall, the floor or the ceiling. */
+  box: { readonly min: readonly [number, number]; readonly max: readonly [number, number] };
+  /** Time between the points, s (> 0). Default 0.06. */
+  every?: number;
+  /** Longest path, s (> 0). Default 2. */
+  seconds?: number;
+  /** The integration step, s (> 0): the world's step. Default 1/60 (the scene's). */
+  step?: number;
+}
+
+/**
+ * Where a ball thrown from (x, y), m, with velocity (vx, vy), m/s, flies, ignoring the other balls
+ * and the hoop: its centre every `every` s, flat [x0, y0, x1, y1, ...] starting at the throw, until
+ * `seconds` pass or it touches the box (that point is the last). Integrated in the scene's steps of
+ * `step` s with the acceleration held over each step (x += v h + a h^2 / 2, v += a h): exact for the
+ * drag-free parabola, as the engine's integrator is.
+ * @throws RangeError on a non-finite start or velocity, or a bad option.
+ */
+export function throwPath(x: number, y: number, vx: number, vy: number, o: ThrowPathOptions): number[] {
+  if (![x, y, vx, vy].every(Number.isFinite))
+    throw new RangeError(`throwPath: start and velocity must be finite, got (${x}, ${y}), (${vx}, ${vy})`);
+  const every = o.every ?? 0.06,
+    seconds = o.seconds ?? 2,
+    h = o.step ?? 1 / 60;
+  for (const [name, v] of [
+    ['every', every],
+    ['seconds', seconds],
+    ['step', h],
+    ['mass', o.mass],
+    ['radius', o.radius],
+  ] as const)
+    if (!(v > 0 && Number.isFinite(v))) throw new RangeError(`throwPath: ${name} must be finite and > 0, got ${v}`);
+  if (!(o.gravity >= 0 && o.k >= 0)) throw new RangeError(`throwPath: gravity and k must be >= 0, got ${o.gravity}, ${o.k}`);
+  const perPoint = Math.max(1, Math.round(every / h));
+  const r = o.radius,
+    { min, max } = o.box;
+  const out = [x, y];
+  const steps = Math.round(seconds / h);
+  for (let n = 1; n <= steps; n++) {
+    let ax = 0,
+      ay = -o.gravity;
+    if (o.drag === 'linear') {
+      ax -= (o.k / o.mass) * vx;
+      ay -= (o.k / o.mass) * vy;
+    } else if (o.drag === 'quadratic') {
+      const v = Math.hypot(vx, vy);
+      ax -= (o.k / o.mass) * v * vx;
+      ay -= (o.k / o.mass) * v * vy;
+    }
+    x += (vx + 0.5 * ax * h) * h;
+    y += (vy + 0.5 * ay * h) * h;
+    vx += ax * h;
+    vy += ay * h;
+    const touches = x - r <= min[0] || x + r >= max[0] || y - r <= min[1] || y + r >= max[1];
+    if (touches || n % perPoint === 0) out.push(x, y);
+    if (touches) break;
+  }
+  return out;
 }

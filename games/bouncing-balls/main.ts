@@ -7,9 +7,12 @@
  * localStorage; R or the Play-again button starts a new round. The status row above the box says
  * the goal and shows baskets, time and best.
  *
- * Input: press on a ball or crate and drag to pull it (a mouse joint); on empty space a click drops a
- * ball at the pointer and a drag throws one (release velocity from the drag). The player's balls are
- * orange, all the same size (hoop.ts PLAYER_RADIUS).
+ * Input: press on a ball or crate and drag to pull it (a mouse joint); anywhere else a click drops a
+ * ball at the pointer, and a pull throws one slingshot-style from where the press began (opposite to
+ * the pull, faster the longer it is, hoop.ts slingVelocity), with a dotted arc of its flight while
+ * pulling (hoop.ts throwPath). The player's balls are orange, all the same size (hoop.ts
+ * PLAYER_RADIUS). When time is up, the Play-again button floats at the top of the box, clear of the
+ * balls piled at its bottom.
  * Keys: P pause, N single step, R reset, T trails, D debug overlay.
  * URL: ?count=N (balls, 1..10000), ?round=S (hoop round, s, 5..600), ?seed=S, ?mode=auto|sprites|particles, ?trails=0|1, ?debug.
  * From 1000 balls on (mode auto) the renderer draws with pixi's ParticleContainer.
@@ -46,6 +49,8 @@ import {
   roundBasket,
   roundShot,
   roundTick,
+  slingVelocity,
+  throwPath,
 } from './hoop';
 import {
   applyDrag,
@@ -54,6 +59,7 @@ import {
   type BouncingBallsHandles,
   bouncingBallsWorldOptions,
   buildBouncingBalls,
+  DENSITIES,
   DRAG_MODES,
   type DragMode,
   isHeavy,
@@ -67,10 +73,6 @@ import {
 const HEAVY_COLOR = 0x6b7a93;
 /** A press that moves less than this, CSS px, is a click (drop), more is a throw. */
 const CLICK_SLOP = 6;
-/** Release velocity is measured over the pointer's last this-many ms. */
-const THROW_WINDOW_MS = 80;
-/** Fastest throw, m/s. */
-const MAX_THROW_SPEED = 30;
 
 const initialCount = numberParam('count', { default: 40, min: 1, max: 10_000, integer: true });
 const params = {
@@ -244,7 +246,7 @@ const game = await startPixiGame({
   step: stepWorld,
   bodies: () => handles.balls.length,
   controls: [
-    { keys: 'Drag', action: 'throw a ball: through the hoop scores' },
+    { keys: 'Drag', action: 'pull back and let go: throw a ball (through the hoop scores)' },
     { keys: 'Click', action: 'drop a ball (empty space)' },
     { keys: 'Drag a body', action: 'pull a ball or crate' },
     { keys: 'R', action: 'new round (and reset)' },
@@ -359,24 +361,19 @@ const panel = createPanel(
 
 const canvas = app.canvas;
 // Registered before the drop/throw listeners, so a press that grabs a body is seen as taken there.
-// Reach 1.4 mean radii: a ball grabs within that of its edge, a crate (a box, no radius) within that of its
-// centre (its half height), so presses in the open still drop and throw balls.
+// Reach 0.6 mean radii: a ball grabs within that of its edge, a crate (a box, no radius) within that of
+// its centre, so a press between the balls (a phone's box is crowded with them) throws rather than grabs.
 const drag = enableMouseDrag(
   canvas,
   () => shell.world,
   () => renderer.camera,
-  { reach: 1.4 * meanRadiusFor(params.count) },
+  { reach: 0.6 * meanRadiusFor(params.count) },
 );
 
 const overlay = new Graphics({ label: 'pointer' });
 app.stage.addChild(overlay);
-const SAMPLES = 32;
-const sampleX = new Float64Array(SAMPLES),
-  sampleY = new Float64Array(SAMPLES),
-  sampleT = new Float64Array(SAMPLES);
-let sampleHead = 0,
-  sampleCount = 0;
 let pointerId = -1;
+/** Where the press began (the ball's spot) and where the pointer is now, CSS px on the canvas. */
 let startX = 0,
   startY = 0,
   lastX = 0,
@@ -389,13 +386,19 @@ function local(event: PointerEvent): [number, number] {
   return [event.clientX - rect.left, event.clientY - rect.top];
 }
 
-/** Records a pointer sample (px, px, ms) in the ring used for the throw velocity. */
-function sample(x: number, y: number, t: number): void {
-  sampleX[sampleHead] = x;
-  sampleY[sampleHead] = y;
-  sampleT[sampleHead] = t;
-  sampleHead = (sampleHead + 1) % SAMPLES;
-  if (sampleCount < SAMPLES) sampleCount++;
+/**
+ * The pull, px, that throws at full speed (MAX_THROW_SPEED): 30 % of the canvas' shorter side, within
+ * [110, 220] px, so a phone's thumb reaches it without leaving the screen.
+ */
+function fullPull(): number {
+  return Math.min(220, Math.max(110, 0.3 * Math.min(canvas.clientWidth || innerWidth, canvas.clientHeight || innerHeight)));
+}
+
+/** The throw the pointer would make now: start (m) and velocity (m/s) of the slingshot. */
+function currentThrow(): { x: number; y: number; vx: number; vy: number } {
+  const cam = renderer.camera;
+  const [vx, vy] = slingVelocity(lastX - startX, lastY - startY, fullPull());
+  return { x: cam.toWorldX(startX), y: cam.toWorldY(startY), vx, vy };
 }
 
 canvas.addEventListener('pointerdown', (event) => {
@@ -406,47 +409,23 @@ canvas.addEventListener('pointerdown', (event) => {
   lastX = startX;
   lastY = startY;
   dragged = false;
-  sampleHead = 0;
-  sampleCount = 0;
-  sample(startX, startY, event.timeStamp);
 });
 
 canvas.addEventListener('pointermove', (event) => {
   if (event.pointerId !== pointerId) return;
   [lastX, lastY] = local(event);
   if (Math.hypot(lastX - startX, lastY - startY) > CLICK_SLOP) dragged = true;
-  sample(lastX, lastY, event.timeStamp);
 });
 
-/** Pointer released: a click drops a ball where it was pressed, a drag throws one from where it was let go. */
+/** Pointer released: a click drops a ball where it was pressed; a pull throws one from there, slingshot-style. */
 function release(event: PointerEvent, cancelled: boolean): void {
   if (event.pointerId !== pointerId) return;
   pointerId = -1;
   if (cancelled) return;
   [lastX, lastY] = local(event);
-  sample(lastX, lastY, event.timeStamp);
-  const cam = renderer.camera;
-  if (!dragged) {
-    shoot(cam.toWorldX(startX), cam.toWorldY(startY), 0, 0);
-    return;
-  }
-  // Release velocity: pointer displacement over the last THROW_WINDOW_MS, px/s -> m/s (y flipped).
-  const newest = (sampleHead - 1 + SAMPLES) % SAMPLES;
-  let oldest = newest;
-  for (let k = 1; k < sampleCount; k++) {
-    const i = (newest - k + SAMPLES) % SAMPLES;
-    oldest = i;
-    if (sampleT[newest]! - sampleT[i]! >= THROW_WINDOW_MS) break;
-  }
-  const dt = Math.max(1e-3, (sampleT[newest]! - sampleT[oldest]!) / 1000);
-  let vx = (sampleX[newest]! - sampleX[oldest]!) / dt / cam.pixelsPerMeter;
-  let vy = -(sampleY[newest]! - sampleY[oldest]!) / dt / cam.pixelsPerMeter;
-  const speed = Math.hypot(vx, vy);
-  if (speed > MAX_THROW_SPEED) {
-    vx *= MAX_THROW_SPEED / speed;
-    vy *= MAX_THROW_SPEED / speed;
-  }
-  shoot(cam.toWorldX(lastX), cam.toWorldY(lastY), vx, vy);
+  const t = currentThrow();
+  if (!dragged) shoot(t.x, t.y, 0, 0);
+  else shoot(t.x, t.y, t.vx, t.vy);
 }
 
 /**
@@ -473,17 +452,49 @@ function shoot(x: number, y: number, vx: number, vy: number): number {
 canvas.addEventListener('pointerup', (event) => release(event, false));
 canvas.addEventListener('pointercancel', (event) => release(event, true));
 
-/** Draws the pointer preview: the ball to be dropped, or the throw line while dragging. */
+/** The dotted arc of the throw the pointer would make now: its points, m (flat x, y pairs), or [] when not pulling. */
+function aimPath(): number[] {
+  if (pointerId === -1 || !dragged) return [];
+  const t = currentThrow();
+  const p = handles.params;
+  return throwPath(t.x, t.y, t.vx, t.vy, {
+    gravity: p.gravity,
+    drag: p.drag,
+    k: p.dragK,
+    mass: Math.PI * PLAYER_RADIUS * PLAYER_RADIUS * DENSITIES.normal,
+    radius: PLAYER_RADIUS,
+    box: layoutOf(TALL).box,
+  });
+}
+
+/**
+ * Draws the pointer preview: the ball to be dropped; while pulling, the ball at its spot (orange if
+ * it may score, grey if above the rim's line), the slingshot's band to the pointer, and a dotted arc
+ * of where the ball will fly, its dots fading along it.
+ */
 function drawPointer(): void {
   overlay.clear();
   if (pointerId === -1) return;
-  const r = renderer.camera.toScreenLength(handles.meanRadius);
-  if (dragged) {
-    overlay.moveTo(startX, startY).lineTo(lastX, lastY).stroke({ width: 2, color: 0xffffff, alpha: 0.35 });
-    overlay.circle(lastX, lastY, r).stroke({ width: 2, color: 0xffffff, alpha: 0.8 });
-  } else {
+  const cam = renderer.camera;
+  const r = cam.toScreenLength(PLAYER_RADIUS);
+  const scores = mayScore(hoopSpots(TALL)[round.spot]!, cam.toWorldY(startY));
+  const color = scores ? PLAYER_COLOR : HIGH_COLOR;
+  if (!dragged) {
     overlay.circle(startX, startY, r).stroke({ width: 2, color: 0xffffff, alpha: 0.6 });
+    return;
   }
+  overlay.moveTo(startX, startY).lineTo(lastX, lastY).stroke({ width: 3, color: 0xffffff, alpha: 0.6 });
+  overlay.circle(lastX, lastY, 5).fill({ color: 0xffffff, alpha: 0.5 });
+  const path = aimPath();
+  const n = path.length / 2;
+  for (let i = 1; i < n; i++) {
+    const f = i / n;
+    overlay
+      .circle(cam.toScreenX(path[2 * i]!), cam.toScreenY(path[2 * i + 1]!), Math.max(3, 0.32 * r * (1 - 0.4 * f)))
+      .fill({ color, alpha: 1 - 0.55 * f })
+      .stroke({ width: 1.5, color: 0x0b0f16, alpha: 0.8 - 0.4 * f });
+  }
+  overlay.circle(startX, startY, r).fill({ color, alpha: 0.85 }).stroke({ width: 2, color: 0xffffff, alpha: 0.9 });
 }
 
 // ---- The hoop game: net, shot line, basket pop, status row and the play-again button -------------
@@ -549,8 +560,8 @@ function drawHoop(): void {
 
 const status = createStatusRow({ name: 'hoop' });
 const touch = pageLayout().touch();
-/** The big Play-again button over the scene when time is up. */
-const setAction = createActionButton('Play again ▶', () => shell.reset());
+/** The big Play-again button when time is up: over the top of the box, clear of the balls piled at its bottom. */
+const setAction = createActionButton('Play again ▶', () => shell.reset(), { at: 'top' });
 
 /** Writes the status row (goal, baskets, time, best, a hint) when it changed, and shows Play again when time is up. */
 function updateStatus(): void {
@@ -560,7 +571,7 @@ function updateStatus(): void {
     ? `Time! ${round.score} ${round.score === 1 ? 'basket' : 'baskets'}${round.score > 0 && round.score >= best ? ' — best yet!' : ''}`
     : `Throw balls through the hoop! ${round.seconds} s`;
   const numbers = `Baskets ${round.score} · Time ${secs} s · Best ${best}`;
-  const throwHow = touch ? 'Swipe to throw' : 'Drag and let go to throw';
+  const throwHow = touch ? 'Press, pull back and let go to throw' : 'Press, drag back and let go to throw';
   const hint = over
     ? `${touch ? 'Tap' : 'R or'} Play again for a new round`
     : performance.now() - tooHighAt < 2500
@@ -601,6 +612,8 @@ shell.expose({
   hoop: () => hoopOpening(hoopSpots(TALL)[round.spot]!),
   /** A player's ball at (x, y) m with velocity (vx, vy) m/s, as a throw releases it (counts for the hoop). @returns its id. */
   shoot: (x: number, y: number, vx = 0, vy = 0): number => shoot(x, y, vx, vy),
+  /** The dotted arc drawn while pulling a throw: its points, m (flat x, y pairs), or [] when not pulling. */
+  aimPath: (): number[] => aimPath(),
   /** The status row's text (goal, numbers, hint). */
   statusText: (): string => status.element.innerText,
   /** Removes ball `eid`. @throws RangeError if it is not a ball of the scene. */

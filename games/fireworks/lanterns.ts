@@ -65,16 +65,16 @@ export interface LanternLevel {
  * (3 seeds, 64 m phone sky and 120 m desktop sky, every 0.01 W, five holds), searched for the fewest
  * shells; "spray" is the chance that par shells at random points of the band, at random holds,
  * light everything.
- * 1. Quick shells only, three lanterns 0.4 W apart: one shell each (spray 3-5 %).
+ * 1. Quick shells only, three lanterns 0.4 W apart: one shell each (spray 3-6 %).
  * 2. Two pairs 0.4 W apart: only a held burst between a pair lights both (0.2 W away, beyond a
  *    quick burst's 0.17); the two middle lanterns, one above the other, are an easy pair that leaves
- *    the outer two for a shell each (3, not 2). Spray 0-0.1 %.
- * 3. Quick shells only, drifting lanterns: lead them by the fuse (spray 3-5 %; two shells can do it
+ *    the outer two for a shell each (3, not 2). Spray 0-0.2 %.
+ * 3. Quick shells only, drifting lanterns: lead them by the fuse (spray 4-7 %; two shells can do it
  *    when two swing close).
  * 4. Willows only: their stars rise little and fall far, so a burst at the top of a column of two
  *    (0.26 W apart) lights both, and a burst between columns lights neither pair (spray 0.2-0.6 %).
  * 5. Three lanterns high and two that drift towards each other low: when the low two meet, one burst
- *    under the middle lantern lights three (spray 0.3-0.8 %; 2 shells at best, par 3).
+ *    under the middle lantern lights three (spray 0.3-1.1 %; 2 shells at best, par 3).
  */
 export const LEVELS: readonly LanternLevel[] = Object.freeze([
   {

@@ -695,7 +695,7 @@ function updateStatus(): void {
     numbers = `${plural(run.shells, 'shell', 'shells')} (par ${lv.par}) · Stars ${total}/${3 * LEVELS.length}`;
     hint = last ? 'Play again from level 1, or try for 3 stars' : 'Fewer shells, more stars';
   } else {
-    goal = `Light every lantern with your fireworks! · ${lv.name}`;
+    goal = `Light every lantern! · ${lv.name}`;
     numbers = `Level ${run.level + 1}/${LEVELS.length} · Lit ${lit}/${lv.lanterns.length} · Shells ${run.shells} · Par ${lv.par}`;
     hint = `${touch ? 'Tap' : 'Click'} ${lv.tip}`;
   }

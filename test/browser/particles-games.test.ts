@@ -257,7 +257,11 @@ describe('fireworks: the lantern show', () => {
     await g.waitFor(() => /All lanterns lit! ★★★/.test(document.querySelector('[data-hud="lanterns"]')?.textContent ?? ''), null);
     await g.page.getByRole('button', { name: 'Next level ▶' }).click();
     await g.waitFor(() => (window.game as unknown as LanternGame).lanterns().level === 1, null);
-    expect(await status.textContent()).toMatch(/Level 2\/5 · Lit 0\/4 · Shells 0 · Par 2/);
+    // The row is written with the next frame.
+    await g.waitFor(
+      () => /Level 2\/5 · Lit 0\/4 · Shells 0 · Par 2/.test(document.querySelector('[data-hud="lanterns"]')?.textContent ?? ''),
+      null,
+    );
     await g.page.getByRole('button', { name: 'Free play' }).click();
     await g.waitFor(() => !(window.game as unknown as LanternGame).lanterns().on, null);
     expect(await g.page.evaluate(() => (window.game as unknown as LanternGame).params.autoShow)).toBe(true);

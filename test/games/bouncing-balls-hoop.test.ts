@@ -1,6 +1,7 @@
 // The hoop game of bouncing balls (games/bouncing-balls/hoop.ts): the crossing rule against hand-worked
-// cases, the round's clock and score, and a real throw in the scene's physics that goes down through the
-// hoop (and one that hits the backboard and bounces back instead).
+// cases, the round's clock and score, a real throw in the scene's physics that goes down through the
+// hoop (and one that hits the backboard and bounces back instead), the slingshot's velocity, and the
+// aiming arc against a real ball's flight.
 import { addBody, createPhysicsWorld, slotOf, step } from '@bitphysics/physics';
 import { describe, expect, it } from 'vitest';
 import {
@@ -12,14 +13,17 @@ import {
   hoopCrossing,
   hoopOpening,
   hoopSegments,
+  MAX_THROW_SPEED,
   mayScore,
   PLAYER_RADIUS,
   ROUND_SECONDS,
   roundBasket,
   roundShot,
   roundTick,
+  slingVelocity,
+  throwPath,
 } from '../../games/bouncing-balls/hoop';
-import { bouncingBallsWorldOptions, buildBouncingBalls, layoutOf } from '../../games/bouncing-balls/scene';
+import { BOX, bouncingBallsWorldOptions, buildBouncingBalls, layoutOf } from '../../games/bouncing-balls/scene';
 
 const spot = { x: 10, y: 6, side: 1 as const };
 const o = hoopOpening(spot);
@@ -143,5 +147,63 @@ describe('a throw in the scene (wide box, first hoop at (13.4, 7.4) m, backboard
     const s = HOOP_SPOTS[0]!;
     // Aimed 0.9 m above the rim at the backboard's face (x + HOOP_HALF_WIDTH), still rising there.
     expect(throwAt(8, 4, s.x + HOOP_HALF_WIDTH + 0.5, s.y + 0.9, 0.5)).toEqual([]);
+  });
+});
+
+describe('the slingshot and its aiming arc', () => {
+  it('throws opposite to the pull, MAX_THROW_SPEED at the full pull, in proportion below it, capped above', () => {
+    // Pulled 60 px left and 80 px down (screen y down): thrown right and up, 3 : 4.
+    const [vx, vy] = slingVelocity(-60, 80, 100);
+    expect(vx).toBeCloseTo(0.6 * MAX_THROW_SPEED, 12);
+    expect(vy).toBeCloseTo(0.8 * MAX_THROW_SPEED, 12);
+    expect(Math.hypot(...slingVelocity(0, 50, 100))).toBeCloseTo(MAX_THROW_SPEED / 2, 12);
+    expect(Math.hypot(...slingVelocity(300, 0, 100))).toBeCloseTo(MAX_THROW_SPEED, 12);
+    expect(slingVelocity(0, 0, 100)).toEqual([0, 0]);
+    expect(() => slingVelocity(1, 1, 0)).toThrow(/slingVelocity: fullPull/);
+  });
+  it('the arc follows a real ball thrown in the scene (no drag) to 1 mm over its first second, and ends at a wall', () => {
+    const options = { count: 1, seed: 1 };
+    const world = createPhysicsWorld(bouncingBallsWorldOptions(options));
+    buildBouncingBalls(world, options);
+    // The first hoop's basket throw (see above): clear of the walls for its first second.
+    const [x0, y0, vx, vy] = [8, 4, (13.4 - 8) / 1.3, (7.4 - 4 + 0.5 * 9.81 * 1.3 * 1.3) / 1.3];
+    const e = addBody(world, {
+      position: [x0, y0],
+      velocity: [vx, vy],
+      radius: PLAYER_RADIUS,
+      density: 1,
+      restitution: 0.8,
+      friction: 0.2,
+    });
+    const path = throwPath(x0, y0, vx, vy, {
+      gravity: 9.81,
+      drag: 'none',
+      k: 0,
+      mass: Math.PI * PLAYER_RADIUS ** 2,
+      radius: PLAYER_RADIUS,
+      box: BOX,
+      every: 0.1,
+    });
+    const P = world.components.Position;
+    // Points every 0.1 s = 6 steps of 1/60 s.
+    for (let i = 1; i <= 10; i++) {
+      for (let k = 0; k < 6; k++) step(world);
+      expect(Math.hypot(P.x[slotOf(e)]! - path[2 * i]!, P.y[slotOf(e)]! - path[2 * i + 1]!)).toBeLessThan(1e-3);
+    }
+    // Thrown flat and fast at the right wall: the last point is where the ball touches it.
+    const flat = throwPath(8, 5, 20, 0, { gravity: 9.81, drag: 'none', k: 0, mass: 0.5, radius: PLAYER_RADIUS, box: BOX });
+    expect(flat.at(-2)! + PLAYER_RADIUS).toBeGreaterThanOrEqual(BOX.max[0]);
+    expect(flat.at(-2)! + PLAYER_RADIUS).toBeLessThan(BOX.max[0] + 0.1);
+    // Linear drag shortens the arc: after 1 s it has gone less far than without.
+    const dragged = throwPath(x0, y0, vx, vy, {
+      gravity: 9.81,
+      drag: 'linear',
+      k: 0.5,
+      mass: 0.5,
+      radius: PLAYER_RADIUS,
+      box: BOX,
+      every: 0.1,
+    });
+    expect(dragged[20]!).toBeLessThan(path[20]! - 0.5);
   });
 });

@@ -30,5 +30,5 @@ export type { EngineSound, Sound, SoundMaterial } from './sound.js';
 export { addMuteButton, getSound } from './sound.js';
 export type { StatusLines, StatusRow, StatusRowOptions } from './status-row.js';
 export { createStatusRow } from './status-row.js';
-export type { ButtonBar, ButtonBarOptions, Stick, StickOptions, TouchButton } from './touch-controls.js';
+export type { ActionButtonOptions, ButtonBar, ButtonBarOptions, Stick, StickOptions, TouchButton } from './touch-controls.js';
 export { createActionButton, createButtonBar, createStick, isTouchDevice } from './touch-controls.js';

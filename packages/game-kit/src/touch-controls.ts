@@ -67,6 +67,7 @@ const CSS = `
 .bp-touchbar button[hidden] { display: none; }
 .bp-touchbar button.bp-big { font-size: 17px; padding: 0 18px; background: #1f7a3a; border-color: #7ee2a0; }
 .bp-touchbar.bp-action { position: absolute; left: 0; right: 0; bottom: 14px; z-index: 6; pointer-events: none; }
+.bp-touchbar.bp-action.bp-at-top { top: 14px; bottom: auto; }
 .bp-touchbar.bp-action button { pointer-events: auto; min-height: 52px; box-shadow: 0 4px 14px rgba(0, 0, 0, 0.45); }
 .bp-stick { position: relative; width: 112px; height: 112px; border-radius: 50%; background: rgba(24, 30, 44, 0.9);
   border: 1px solid #6b7891; touch-action: none; user-select: none; flex: none; cursor: grab; }
@@ -277,16 +278,33 @@ export function createStick(options: StickOptions): Stick {
   };
 }
 
+/** Options of `createActionButton`. */
+export interface ActionButtonOptions {
+  /**
+   * Where the button floats: over the bottom of the stage (default), or over its top, for a scene
+   * whose bottom holds the play (a pile of balls).
+   */
+  at?: 'bottom' | 'top';
+}
+
 /**
  * Shows a big on-screen action button (a "Next level" or "Play again") while `visible`, on every
- * device, floating over the bottom of the stage (so the scene does not move when it appears); a tap
- * runs `onTap`. @returns a function that sets its visibility and label.
+ * device, floating over the bottom (or, with `at: 'top'`, the top) of the stage, so the scene does
+ * not move when it appears; a tap runs `onTap`. @returns a function that sets its visibility and label.
+ * @throws TypeError if `at` is neither 'bottom' nor 'top'.
  */
-export function createActionButton(label: string, onTap: () => void): (visible: boolean, text?: string) => void {
+export function createActionButton(
+  label: string,
+  onTap: () => void,
+  options: ActionButtonOptions = {},
+): (visible: boolean, text?: string) => void {
+  const at = options.at ?? 'bottom';
+  if (at !== 'bottom' && at !== 'top') throw new TypeError(`createActionButton: at must be 'bottom' or 'top', got ${JSON.stringify(at)}`);
   const bar = createButtonBar([{ label, onTap }], { label, touchOnly: false, parent: document.createElement('div') });
   const b = bar.buttons[0]!;
   b.classList.add('bp-big');
   bar.element.classList.add('bp-action');
+  if (at === 'top') bar.element.classList.add('bp-at-top');
   bar.element.remove();
   return (visible, text) => {
     if (text !== undefined && b.textContent !== text) {
