@@ -7,9 +7,12 @@
  * The game (./missions.ts): each mission names a planet. The player turns the launch arrow at the
  * Earth and sets the launch speed; a dashed line shows at once where the probe would go (a two-body
  * Kepler plan, ./kepler.ts) and a ghost ring where the planet would be then. Launch, and the probe
- * flies in the physics world, pulled by the Sun and every planet, while time speeds up; reaching the
- * ring round the planet wins the mission, with stars for a slow (cheap) launch. Waiting (time 10x
- * faster) lets the planets line up.
+ * flies in the physics world, pulled by the Sun and every planet, while time speeds up; the course
+ * from the probe is planned again as it goes, and the arrival miss shows: mid-course burns (the same
+ * keys and buttons) change it, from a small tank of fuel. Reaching the ring round the planet wins the
+ * mission, with stars for a cheap mission (the launch speed plus the burns). Waiting (time 10x faster)
+ * lets the planets line up. The status line states the goal and the plan's numbers; the Hint button
+ * (H) says what to try.
  *
  * Drawn on a compressed distance scale (./distance-scale.ts), so the eight planets fit on one screen
  * with room between the inner four (D switches to the true scale); orbit lines are each planet's
@@ -19,9 +22,10 @@
  * Units: AU, days, solar masses (see packages/projects/src/solar-system.ts). One scene unit is 0.1 AU
  * of the display scale. Time: the rate is simulated days per real second; each loop tick runs steps
  * of the chosen size, at most MAX_STEPS_PER_TICK of them (a faster rate takes longer steps).
- * Keys: ← → turn the launch, ↑ ↓ its speed, Space launch, W (held) wait, Enter next mission or try
- * again, [ ] slower / faster, D distances, 1 2 3 views, E sizes, P pause, N single step, R reset (back to
- * the last start: the first date, or the last launch after a Try again).
+ * Keys: ← → turn the launch, ↑ ↓ its speed (in flight: burns in / out, faster / slower), Space
+ * launch, W (held) wait, H hint, Enter next mission or try again, [ ] slower / faster, D distances,
+ * 1 2 3 views, E sizes, P pause, N single step, R reset (back to the last start: the first date, or
+ * the last launch after a Try again).
  * URL: ?mission=1..7, ?rate=days-per-second (0..400), ?step=hours (0.25|1|6|24), ?integrator=name,
  * ?date=ISO date, ?distances=compressed|true.
  */
@@ -76,6 +80,10 @@ import {
 import { displayRadius, fromDisplay, toDisplay } from './distance-scale';
 import {
   type Aim,
+  BURN_STEP,
+  type BurnDirection,
+  burnProbe,
+  CORRECTION_FUEL,
   checkFlight,
   createFlightPlan,
   endFlight,
@@ -87,6 +95,7 @@ import {
   MAX_SPEED,
   MISSIONS,
   type Mission,
+  planCourse,
   planFlight,
   starsFor,
   tutorialAim,
@@ -99,8 +108,12 @@ const STEPS = ['0.25', '1', '6', '24'] as const;
 const MAX_STEPS_PER_TICK = 24;
 /** Days per real second while Wait (W) is held: the aiming rate (if faster) times 4, at least this. */
 const WAIT_RATE = 40;
-/** Real seconds a flight takes at most: its rate is the flight's deadline (the planned time and a margin) over this, within [10, 400] days/s. */
-const FLIGHT_SECONDS = 12;
+/**
+ * Real seconds a flight takes at most: its rate is the flight's deadline (the planned time and a
+ * margin) over this, within [10, 400] days/s. Time enough to watch the arrival miss and burn to
+ * bring it into the ring.
+ */
+const FLIGHT_SECONDS = 20;
 /** Mean radii, AU (IAU), for true-size drawing. */
 const RADIUS_AU: Record<SolarSystemBody, number> = {
   Sun: 4.652e-3,
@@ -287,7 +300,8 @@ function startMission(index: number): void {
   aim.angle = v >= 0 ? 0 : 180;
   aim.speed = Math.min(MAX_SPEED, Math.round(Math.abs(v) * 10) / 10);
   // The first mission is a lesson in one change: the arrow points the way of an arriving course,
-  // with the speed a little short of it (./missions.ts tutorialAim); the status line says to speed up.
+  // with the speed a little short of it (./missions.ts tutorialAim); the plan's numbers show it
+  // falling short of Mars (the Hint button says to speed up).
   if (missionIndex === 0) {
     const lesson = tutorialAim(shell.world, handles, m, plan);
     if (lesson) Object.assign(aim, lesson.start);
@@ -326,7 +340,7 @@ function endOfFlight(): void {
   phase = 'done';
   if (flight.state === 'arrived') {
     arrivalAt = performance.now();
-    const stars = starsFor(flight.mission, flight.aim.speed);
+    const stars = starsFor(flight.mission, flight.aim.speed + flight.fuelUsed);
     if (stars > best[missionIndex]!) {
       best[missionIndex] = stars;
       saveBest();
@@ -361,7 +375,34 @@ function advance(): void {
   } else retry();
 }
 
+/** Least real time between two burns, ms; performance.now() of the last. */
+const BURN_GAP_MS = 200;
+let lastBurn = -Infinity;
+
+/**
+ * A mid-course burn of BURN_STEP km/s (./missions.ts burnProbe) while the probe flies: the new
+ * course is planned at once (its arrival miss shows in the status line and the dotted path).
+ */
+function burn(direction: BurnDirection): void {
+  if (phase !== 'flight' || !flight) return;
+  // At most one burn each BURN_GAP_MS (a key's own repeat would empty the tank in a second).
+  const t = performance.now();
+  if (t - lastBurn < BURN_GAP_MS) return;
+  lastBurn = t;
+  if (burnProbe(shell.world, handles, flight, direction, BURN_STEP, plan) > 0) {
+    planAt = shell.world.time;
+    planClock = performance.now();
+    flightRate = Math.min(400, Math.max(10, flight.deadline / FLIGHT_SECONDS));
+    sound.chime(plan.hit ? 1320 : 660, 0.08);
+  } else sound.chime(180, 0.1);
+  updateStatus(true);
+}
+
 function turn(degrees: number): void {
+  if (phase === 'flight') {
+    burn(degrees < 0 ? 'in' : 'out');
+    return;
+  }
   if (phase !== 'aim') return;
   let a = aim.angle + degrees;
   a = ((((a + 180) % 360) + 360) % 360) - 180;
@@ -370,6 +411,10 @@ function turn(degrees: number): void {
 }
 
 function changeSpeed(kms: number): void {
+  if (phase === 'flight') {
+    burn(kms > 0 ? 'faster' : 'slower');
+    return;
+  }
   if (phase !== 'aim') return;
   aim.speed = Math.min(MAX_SPEED, Math.max(0, Math.round((aim.speed + kms) * 10) / 10));
   planAt = -Infinity;
@@ -382,8 +427,9 @@ const game = await startThreeGame({
   createWorld,
   step: stepWorld,
   controls: [
-    { keys: '← →', action: 'turn the launch arrow', touch: '↺ ↻ buttons' },
-    { keys: '↑ ↓', action: 'launch speed', touch: '− + buttons' },
+    { keys: '← →', action: 'turn the launch arrow; in flight, burn in / out', touch: '↺ ↻ buttons' },
+    { keys: '↑ ↓', action: 'launch speed; in flight, burn faster / slower', touch: '− + buttons' },
+    { keys: 'H', action: 'hint: what to try', touch: 'Hint' },
     { keys: 'Click', action: 'aim the launch at a point', touch: 'Tap' },
     { keys: 'Space', action: 'launch the probe', touch: 'Launch button' },
     { keys: 'W (hold)', action: 'wait: time runs fast', touch: 'hold Wait' },
@@ -401,6 +447,7 @@ const game = await startThreeGame({
     { key: 'ArrowDown', label: 'slower launch', action: () => changeSpeed(-0.1), repeat: true },
     { key: ' ', label: 'launch', action: () => launch() },
     { key: 'Enter', label: 'next / try again', action: () => advance() },
+    { key: 'h', label: 'hint', action: () => toggleHint() },
     { key: '[', label: 'slower', action: () => setRate(params.rate / 1.5), repeat: true },
     { key: ']', label: 'faster', action: () => setRate(params.rate === 0 ? 1 : params.rate * 1.5), repeat: true },
     { key: 'd', label: 'distances', action: () => setDistances(params.distances === 'true' ? 'compressed' : 'true') },
@@ -1032,18 +1079,25 @@ function drawLaunch(world: PhysicsWorld): void {
     arrivalGlow.scale.setScalar(zone * (2 + 10 * flashAge));
     arrivalGlow.material.opacity = 1 - flashAge;
   }
+  // The plan: of the launch while aiming, of the course from the probe while it flies (a burn
+  // changes it at once; it is planned again as the probe goes, the planets' pulls bending its path).
+  const cruising = phase === 'flight' && flight !== null;
+  const planned = aiming || cruising;
   arrow.visible = aiming;
-  planDots.visible = aiming;
-  ghostRing.visible = aiming;
+  planDots.visible = planned;
+  ghostRing.visible = planned;
   missLine.visible = false;
-  if (aiming) {
-    if (world.time !== planAt && (planAt === -Infinity || performance.now() - planClock > 90)) {
-      planFlight(world, handles, m, aim, plan);
+  if (planned) {
+    if (world.time !== planAt && (planAt === -Infinity || performance.now() - planClock > (aiming ? 90 : 150))) {
+      if (cruising && flight) planCourse(world, handles, flight, plan);
+      else planFlight(world, handles, m, aim, plan);
       planAt = world.time;
       planClock = performance.now();
       if (plan.hit && !planShownHit) sound.chime(1320, 0.12);
       planShownHit = plan.hit;
     }
+  }
+  if (aiming) {
     heliocentricState(world, handles, handles.bodies.Earth, earthHelio);
     launchDirection(earthHelio, aim.angle, launchDir);
     displayDirection(earthHelio, launchDir, dirV);
@@ -1051,6 +1105,8 @@ function drawLaunch(world: PhysicsWorld): void {
     arrow.position.set(shown[3 * earthI]!, shown[3 * earthI + 1]!, shown[3 * earthI + 2]!);
     arrow.quaternion.setFromUnitVectors(arrowUp, dirV);
     arrow.scale.set(viewHalf * 0.12, len, viewHalf * 0.12);
+  }
+  if (planned) {
     const attr = planDots.geometry.getAttribute('position') as Float32BufferAttribute;
     const arr = attr.array as Float32Array;
     let n = 0;
@@ -1144,6 +1200,9 @@ style.textContent = `
 .ss-status .ss-line.bad { color: #ffb4a8; }
 .ss-status .ss-line.won { color: #7ee787; font-weight: 700; }
 .ss-status .ss-date { color: #b8c4d6; font-size: 12px; }
+.ss-status .ss-hint { color: #9fd3ff; font-style: italic; }
+.ss-pad button.ss-hint-button.ss-pulse { animation: ss-pulse 1.2s ease-in-out infinite; }
+@keyframes ss-pulse { 50% { box-shadow: 0 0 0 4px rgba(159, 211, 255, 0.55); } }
 .ss-pad button { min-width: 48px; }
 .ss-pad button.ss-go { background: #1f7a3a; border-color: #7ee2a0; min-width: 76px; }
 details.ss-table summary { cursor: pointer; color: #cfd8e6; }
@@ -1158,10 +1217,14 @@ goalLine.dataset.hud = 'goal';
 const planText = document.createElement('div');
 planText.className = 'ss-line';
 planText.dataset.hud = 'plan';
+const hintLine = document.createElement('div');
+hintLine.className = 'ss-hint';
+hintLine.dataset.hud = 'hint';
+hintLine.style.display = 'none';
 const dateText = document.createElement('div');
 dateText.className = 'ss-date';
 dateText.dataset.hud = 'date';
-status.append(goalLine, planText, dateText);
+status.append(goalLine, planText, hintLine, dateText);
 pageLayout().status.append(status);
 
 const PAD = [
@@ -1170,7 +1233,14 @@ const PAD = [
   { label: '−', name: 'slower launch (↓)', press: () => changeSpeed(-0.1) },
   { label: '+', name: 'faster launch (↑)', press: () => changeSpeed(0.1) },
 ] as const;
-/** Repeats a held pad button: once at once, then every 70 ms after 350 ms. */
+/** The same four buttons while the probe flies: mid-course burns (./missions.ts burnProbe). */
+const BURN_PAD = [
+  { label: '◁ in', name: 'burn towards the Sun (←)' },
+  { label: 'out ▷', name: 'burn away from the Sun (→)' },
+  { label: '− slow', name: 'burn to slow down (↓)' },
+  { label: '+ fast', name: 'burn to speed up (↑)' },
+] as const;
+/** Repeats a held pad button: once at once, then every 70 ms after 350 ms (every 250 ms for burns). */
 let repeatTimer = 0;
 function holdRepeat(action: () => void): void {
   action();
@@ -1178,12 +1248,22 @@ function holdRepeat(action: () => void): void {
   const again = (delay: number): void => {
     repeatTimer = window.setTimeout(() => {
       action();
-      again(70);
+      again(phase === 'flight' ? 250 : 70);
     }, delay);
   };
   again(350);
 }
 const stopRepeat = (): void => window.clearTimeout(repeatTimer);
+/** Whether the hint line shows (the Hint button or H). */
+let hinting = false;
+/** Whether the Hint button has been used: until then it pulses on the first mission. */
+let hintUsed = false;
+function toggleHint(): void {
+  hinting = !hinting;
+  hintUsed = true;
+  hintClock = -Infinity;
+  updateStatus(true);
+}
 const pad = createButtonBar(
   [
     ...PAD.map((b) => ({ label: b.label, name: b.name, onPress: () => holdRepeat(b.press), onRelease: stopRepeat })),
@@ -1201,15 +1281,28 @@ const pad = createButtonBar(
     { label: 'Abort', name: 'abort the flight: back to the launch', onTap: () => retry() },
     { label: 'Try again', name: 'try again from the launch (Enter)', onTap: () => retry() },
     { label: 'Next mission', name: 'next mission (Enter)', onTap: () => advance() },
+    { label: 'Hint', name: 'hint: what to try (H)', onTap: () => toggleHint() },
   ],
   { label: 'launch controls', touchOnly: false },
 );
 pad.element.classList.add('ss-pad');
 pad.buttons[4]!.classList.add('ss-go');
 pad.buttons[8]!.classList.add('ss-go');
+pad.buttons[9]!.classList.add('ss-hint-button');
 pad.buttons.forEach((b, i) => {
-  b.dataset.pad = ['left', 'right', 'slower', 'faster', 'launch', 'wait', 'abort', 'retry', 'next'][i]!;
+  b.dataset.pad = ['left', 'right', 'slower', 'faster', 'launch', 'wait', 'abort', 'retry', 'next', 'hint'][i]!;
 });
+/** The labels the four aim buttons show now: 'aim' or 'burn'. */
+let padLabels: 'aim' | 'burn' = 'aim';
+function setPadLabels(which: 'aim' | 'burn'): void {
+  if (which === padLabels) return;
+  padLabels = which;
+  const set = which === 'aim' ? PAD : BURN_PAD;
+  set.forEach((b, i) => {
+    pad.buttons[i]!.textContent = b.label;
+    pad.buttons[i]!.setAttribute('aria-label', b.name);
+  });
+}
 
 const starText = (n: number): string => '★'.repeat(n) + '☆'.repeat(3 - n);
 const aimWords = (a: number): string =>
@@ -1221,78 +1314,146 @@ const aimWords = (a: number): string =>
 let shownStatus = '';
 /** Whether the page is used by touch first (a phone): the hints name the buttons, not the keys. */
 const touchFirst = matchMedia('(pointer: coarse)').matches;
+/** The control a hint names: the key on a desktop, the button on a touch screen. */
+const named = (key: string, button: string): string => (touchFirst ? button : key);
+const BURN_NAMES: Record<BurnDirection, string> = { faster: '+ fast', slower: '− slow', out: 'out ▷', in: '◁ in' };
+const BURN_KEYS: Record<BurnDirection, string> = { faster: '↑', slower: '↓', out: '→', in: '←' };
+/** A plan to try burns on (the flight hint), and the hint's text and when it was worked out (performance.now(), ms). */
+const tryPlan = createFlightPlan();
+let hintText = '',
+  hintClock = -Infinity;
+
+/**
+ * What to try now, for the Hint button: while aiming, the change of the launch that the plan's
+ * numbers point to; while flying, the burn (of the four, BURN_STEP each) that brings the planned
+ * arrival nearest the target, worked out from the probe's course (./missions.ts planCourse).
+ */
+function hint(m: Mission): string {
+  if (phase === 'aim') {
+    if (plan.hit) return `On target. Launch: ${named('Space', 'tap Launch')}. A slower launch earns more stars.`;
+    if (plan.sun) return `Too much speed backwards: less speed (${named('↓', '−')}), or turn the arrow (${named('← →', '↺ ↻')}).`;
+    const rT = distanceFromSun(m.target);
+    const outward = rT > distanceFromSun('Earth');
+    if (outward && plan.farthest < rT - m.zone) return `Too slow to reach ${m.target}’s orbit: more speed (${named('press ↑', 'tap +')}).`;
+    if (!outward && plan.nearest > rT + m.zone)
+      return `It does not fall in to ${m.target}’s orbit: aim backwards, against the Earth’s path (${named('← →', '↺ ↻')}), with more speed.`;
+    const a = Math.abs(plan.ahead);
+    const inside =
+      Math.hypot(plan.probeAt[0]!, plan.probeAt[1]!, plan.probeAt[2]!) <
+      Math.hypot(plan.targetAt[0]!, plan.targetAt[1]!, plan.targetAt[2]!);
+    if (a < 6)
+      return `Close: a little ${inside === outward ? 'more' : 'less'} speed (${named(inside === outward ? '↑' : '↓', inside === outward ? '+' : '−')}).`;
+    return `${m.target} will be ${Math.round(a)}° ${plan.ahead > 0 ? 'ahead of' : 'behind'} the probe: turn the arrow (${named('← →', '↺ ↻')}), or hold Wait (${named('W', 'Wait')}) for ${m.target} to come round.`;
+  }
+  if (phase === 'flight' && flight) {
+    if (plan.hit) return 'On course for the ring: no burn needed (burns cost stars).';
+    if (flight.fuelUsed >= CORRECTION_FUEL - 1e-9) return 'No fuel left for burns: the probe coasts. Abort to try the launch again.';
+    let best: BurnDirection = 'faster',
+      bestMiss = Infinity;
+    for (const direction of ['faster', 'slower', 'out', 'in'] as const) {
+      planCourse(shell.world, handles, flight, tryPlan, { direction, dv: BURN_STEP });
+      const miss = tryPlan.hit ? 0 : tryPlan.distance;
+      if (miss < bestMiss) {
+        bestMiss = miss;
+        best = direction;
+      }
+    }
+    const to = bestMiss === 0 ? 'into the ring' : `from ${plan.distance.toFixed(2)} to ${bestMiss.toFixed(2)} AU`;
+    return `Burn ${named(BURN_KEYS[best], BURN_NAMES[best])}: the arrival miss goes ${to}.`;
+  }
+  return flight?.state === 'arrived'
+    ? `Next mission: ${named('Enter', 'tap Next mission')}.`
+    : `Try again from the launch: ${named('Enter', 'tap Try again')}.`;
+}
 
 function updateStatus(force = false): void {
   const m = mission();
   const world = shell.world;
   const total = best.reduce((s, n) => s + n, 0);
+  // The goal, and the numbers that say how near it the launch or the flight comes; what to change
+  // is the player's to work out (the Hint button says, on request).
   const goal = `Mission ${missionIndex + 1} of ${MISSIONS.length}: fly a probe to ${m.target}`;
   let line = '',
     cls = '';
   if (phase === 'aim') {
-    const head = `${aim.speed.toFixed(1)} km/s ${aimWords(aim.angle)}: `;
+    const head = `Launch ${aim.speed.toFixed(1)} km/s ${aimWords(aim.angle)} →`;
+    const rT = distanceFromSun(m.target);
     if (plan.hit) {
-      line = `${head}✓ reaches ${m.target} in ${Math.round(plan.time)} days ${starText(starsFor(m, aim.speed))}. Launch!${missionIndex === 0 ? ` (${touchFirst ? 'tap Launch' : 'Space'})` : ''}`;
+      line = `${head} ✓ reaches ${m.target} in ${Math.round(plan.time)} days ${starText(starsFor(m, aim.speed))}`;
       cls = 'ok';
     } else if (plan.sun) {
-      line = `${head}✗ falls into the Sun`;
+      line = `${head} ✗ falls into the Sun`;
       cls = 'bad';
     } else {
-      const outward = distanceFromSun(m.target) > distanceFromSun('Earth');
-      const rT = distanceFromSun(m.target);
+      const outward = rT > distanceFromSun('Earth');
       if (outward && plan.farthest < rT - m.zone)
-        line = `${head}✗ too slow to reach ${m.target}’s orbit: more speed${missionIndex === 0 ? ` (${touchFirst ? 'tap +' : 'press ↑'})` : ''}`;
-      else if (!outward && plan.nearest > rT + m.zone) line = `${head}✗ does not fall to ${m.target}’s orbit: more speed, aimed backwards`;
+        line = `${head} ✗ goes out only to ${plan.farthest.toFixed(2)} AU from the Sun; ${m.target} is at ${rT.toFixed(2)} AU`;
+      else if (!outward && plan.nearest > rT + m.zone)
+        line = `${head} ✗ falls in only to ${plan.nearest.toFixed(2)} AU from the Sun; ${m.target} is at ${rT.toFixed(2)} AU`;
       else {
         const a = Math.round(Math.abs(plan.ahead));
-        const inside =
-          Math.hypot(plan.probeAt[0]!, plan.probeAt[1]!, plan.probeAt[2]!) <
-          Math.hypot(plan.targetAt[0]!, plan.targetAt[1]!, plan.targetAt[2]!);
-        const miss = `${head}✗ misses ${m.target} by ${plan.distance.toFixed(2)} AU`;
-        if (a < 6) line = `${miss}, passing ${inside ? 'inside' : 'outside'} it: a little ${inside === outward ? 'more' : 'less'} speed`;
-        else line = `${miss}: it will be ${a}° ${plan.ahead > 0 ? 'ahead' : 'behind'}. Turn, or hold Wait`;
+        line = `${head} ✗ misses ${m.target} by ${plan.distance.toFixed(2)} AU (ring ${m.zone} AU)${a >= 6 ? `; ${m.target} ${a}° ${plan.ahead > 0 ? 'ahead' : 'behind'} then` : ''}`;
       }
       cls = 'bad';
     }
   } else if (phase === 'flight' && flight) {
-    heliocentricState(world, handles, flight.probe, state6);
     const P = world.components.Position;
     const t = slotOf(handles.bodies[m.target]),
       p = slotOf(flight.probe);
     const d = Math.hypot(P.x[t]! - P.x[p]!, P.y[t]! - P.y[p]!, P.z[t]! - P.z[p]!);
-    line = `Flying to ${m.target}: day ${Math.round(flight.elapsed)} · ${d.toFixed(2)} AU to go`;
+    const fuel = `fuel ${(CORRECTION_FUEL - flight.fuelUsed).toFixed(2)} km/s`;
+    const arrival = plan.hit
+      ? `✓ on course: in the ring in ${Math.round(plan.time)} days`
+      : plan.sun
+        ? '✗ falls into the Sun'
+        : `✗ arrival miss ${plan.distance.toFixed(2)} AU (ring ${m.zone} AU)`;
+    line = `Day ${Math.round(flight.elapsed)} · ${d.toFixed(2)} AU to ${m.target} · ${arrival} · ${fuel}`;
+    cls = plan.hit ? 'ok' : 'bad';
   } else if (phase === 'done' && flight) {
+    const burns = flight.fuelUsed > 0 ? ` + ${flight.fuelUsed.toFixed(2)} km/s of burns` : '';
     if (flight.state === 'arrived') {
-      const s = starsFor(m, flight.aim.speed);
-      line = `✓ Arrived at ${m.target} after ${Math.round(flight.elapsed)} days! ${starText(s)} (${flight.aim.speed.toFixed(1)} km/s; 3 stars up to ${m.stars3} km/s)`;
+      const s = starsFor(m, flight.aim.speed + flight.fuelUsed);
+      line = `✓ Arrived at ${m.target} after ${Math.round(flight.elapsed)} days! ${starText(s)} (${flight.aim.speed.toFixed(1)} km/s launch${burns}; 3 stars up to ${m.stars3} km/s in all)`;
       if (missionIndex === MISSIONS.length - 1) line += ` · All missions flown: ${total} of ${3 * MISSIONS.length} stars`;
       cls = 'won';
     } else if (flight.state === 'sun') {
-      line = '✗ The probe fell into the Sun. Try again?';
+      line = '✗ The probe fell into the Sun.';
       cls = 'bad';
     } else {
-      line = `✗ Missed ${m.target}: closest ${flight.closest.toFixed(2)} AU (the ring is ${m.zone} AU). Try again?`;
+      line = `✗ Missed ${m.target}: closest ${flight.closest.toFixed(2)} AU (the ring is ${m.zone} AU).`;
       cls = 'bad';
     }
+  }
+  // The hint, worked out again at most every 400 ms while it shows (a flight's tries four plans).
+  if (hinting && (force || performance.now() - hintClock > 400)) {
+    hintText = hint(m);
+    hintClock = performance.now();
   }
   const date = new Date(handles.epoch + world.time * 86_400_000).toISOString().slice(0, 10);
   const rate = currentRate();
   const stars = `Stars ${total} / ${3 * MISSIONS.length}`;
   const dateLine = `${date} · ${rate === 0 ? 'time stopped' : `${rate < 10 ? rate.toFixed(1) : Math.round(rate)} days a second`}${waiting ? ' (waiting)' : ''} · ${stars}`;
-  const key = `${goal}|${line}|${cls}|${dateLine}|${phase}`;
+  const shownHint = hinting ? hintText : '';
+  const key = `${goal}|${line}|${cls}|${dateLine}|${phase}|${shownHint}`;
   if (!force && key === shownStatus) return;
   shownStatus = key;
   goalLine.textContent = goal;
   planText.textContent = line;
   planText.className = `ss-line ${cls}`;
+  hintLine.textContent = shownHint;
+  hintLine.style.display = hinting ? 'block' : 'none';
   dateText.textContent = dateLine;
   const aimingNow = phase === 'aim';
-  for (let i = 0; i < 5; i++) pad.show(i, aimingNow);
+  setPadLabels(phase === 'flight' ? 'burn' : 'aim');
+  for (let i = 0; i < 4; i++) pad.show(i, phase !== 'done');
+  pad.show(4, aimingNow);
   pad.show(5, phase !== 'done');
   pad.show(6, phase === 'flight');
   pad.show(7, phase === 'done');
   pad.show(8, phase === 'done' && flight?.state === 'arrived');
   pad.setActive(5, waiting);
+  pad.setActive(9, hinting);
+  pad.buttons[9]!.classList.toggle('ss-pulse', missionIndex === 0 && !hintUsed);
 }
 
 // ---- The engineer's comparison with the ephemeris (folded) ------------------------------------------
@@ -1415,14 +1576,16 @@ shell.expose({
       v.set(shown[3 * i]!, shown[3 * i + 1]!, shown[3 * i + 2]!).project(app.camera);
       return v.z < 1 && Math.abs(v.x) <= 1 && Math.abs(v.y) <= 1;
     }),
-  /** The mission state: its number (1-based), target, phase, the aim, the plan and the flight. */
+  /** The mission state: its number (1-based), target, phase, the aim, the plan (of the launch, or of the course while flying) and the flight. */
   mission: () => ({
     number: missionIndex + 1,
     target: mission().target,
     phase,
     aim: { ...aim },
     plan: { hit: plan.hit, time: plan.time, distance: plan.distance, sun: plan.sun },
-    flight: flight ? { state: flight.state, elapsed: flight.elapsed, closest: flight.closest } : null,
+    flight: flight
+      ? { state: flight.state, elapsed: flight.elapsed, closest: flight.closest, fuelUsed: flight.fuelUsed, burns: flight.burns }
+      : null,
     stars: [...best],
     trueScale,
   }),

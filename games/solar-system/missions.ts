@@ -15,7 +15,11 @@
  * - A mission is won when the probe comes within the target's `zone` (AU): the ring drawn round it.
  *   It fails when the probe falls into the Sun (within `SUN_ZONE`), leaves the solar system (beyond
  *   `ESCAPE_DISTANCE`) or flies past the plan's end without arriving.
- * - Stars: 3 for a launch speed at most `stars3` km/s, 2 for at most `stars2`, else 1. The least a
+ * - On the way, burns (`burnProbe`) change the probe's velocity by BURN_STEP km/s along its motion,
+ *   against it, away from the Sun or towards it, up to CORRECTION_FUEL km/s in all; the course is
+ *   planned again from the probe (`planCourse`), and its arrival miss is what the burns are for.
+ * - Stars: for the mission's speed budget, the launch speed plus the burns': 3 for at most
+ *   `stars3` km/s, 2 for at most `stars2`, else 1. The least a
  *   launch can take is about the Hohmann transfer's v_inf = v_E (sqrt(2 r / (1 AU + r)) - 1) for
  *   circular orbits (Hohmann 1925; Curtis, Orbital Mechanics, sect. 6.3); the thresholds leave room
  *   above it, since the planets' orbits are not circles and the window is rarely ideal.
@@ -24,7 +28,7 @@
  * player sees are km/s (`KM_S` AU/day each).
  */
 
-import { addBody, enableMutualGravity, type PhysicsWorld, removeBody, slotOf } from '@bitphysics/physics';
+import { addBody, enableMutualGravity, type PhysicsWorld, removeBody, setVelocity, slotOf } from '@bitphysics/physics';
 import { AU, DAY, type SolarSystemHandles, type SolarSystemPlanet, solarSystemMass } from '@bitphysics/projects';
 import { keplerState } from './kepler';
 
@@ -142,7 +146,7 @@ export function createFlightPlan(): FlightPlan {
   };
 }
 
-/** Stars a launch speed earns on `mission`: 3, 2 or 1. */
+/** Stars a mission's speed budget (the launch speed plus the burns', km/s) earns on `mission`: 3, 2 or 1. */
 export function starsFor(mission: Mission, speed: number): 1 | 2 | 3 {
   return speed <= mission.stars3 + 1e-9 ? 3 : speed <= mission.stars2 + 1e-9 ? 2 : 1;
 }
@@ -232,21 +236,62 @@ const tState = new Float64Array(6);
  */
 export function planFlight(world: PhysicsWorld, handles: SolarSystemHandles, mission: Mission, aim: Aim, plan: FlightPlan): FlightPlan {
   checkAim('planFlight', aim);
-  const G = world.laws.gravitationalConstant;
-  const mu = muSun(world, handles);
-  const target = handles.bodies[mission.target];
   heliocentricState(world, handles, handles.bodies.Earth, earthState);
-  heliocentricState(world, handles, target, target0);
-  const muTarget = G * (world.components.Mass.value[slotOf(handles.bodies.Sun)]! + world.components.Mass.value[slotOf(target)]!);
   launchDirection(earthState, aim.angle, dir);
   const vInf = aim.speed * KM_S;
   for (let i = 0; i < 3; i++) {
     probe0[i] = earthState[i]! + LAUNCH_OFFSET * dir[i]!;
     probe0[3 + i] = earthState[3 + i]! + vInf * dir[i]!;
   }
+  return planFrom(world, handles, mission, probe0, plan);
+}
+
+/**
+ * Fills `plan` with where a flight under way is going: the two-body Kepler motion of the probe from
+ * its heliocentric state now (as `planFlight` plans a launch, the window counted from now), against
+ * the target's. The speed relative to the Earth is taken as what is left of it once clear of the
+ * Earth's pull, sqrt(v_rel^2 - 2 mu_E / d) along the same direction (energy conservation, as
+ * `launchProbe` adds it), so just after the launch the course is the launch's plan (without it, the
+ * climb still to come out of the Earth's pull would read as 0.07 km/s too fast at 3 km/s). After a
+ * burn (`burnProbe`) it says where the new course arrives; with `burn`, where a burn of `burn.dv`
+ * km/s in `burn.direction` now would take it (the probe is not changed). @returns plan.
+ */
+export function planCourse(
+  world: PhysicsWorld,
+  handles: SolarSystemHandles,
+  flight: Flight,
+  plan: FlightPlan,
+  burn?: { direction: BurnDirection; dv: number },
+): FlightPlan {
+  heliocentricState(world, handles, flight.probe, probe0);
+  if (burn) {
+    launchDirection(probe0, BURN_ANGLE[burn.direction], burnDir);
+    for (let i = 0; i < 3; i++) probe0[3 + i] = probe0[3 + i]! + burn.dv * KM_S * burnDir[i]!;
+  }
+  heliocentricState(world, handles, handles.bodies.Earth, earthState);
+  const muEarth = world.laws.gravitationalConstant * solarSystemMass('Earth');
+  const d = Math.hypot(probe0[0]! - earthState[0]!, probe0[1]! - earthState[1]!, probe0[2]! - earthState[2]!);
+  const rx = probe0[3]! - earthState[3]!,
+    ry = probe0[4]! - earthState[4]!,
+    rz = probe0[5]! - earthState[5]!;
+  const v2 = rx * rx + ry * ry + rz * rz;
+  const k = v2 > 0 ? Math.sqrt(Math.max(0, v2 - (2 * muEarth) / d) / v2) : 1;
+  probe0[3] = earthState[3]! + k * rx;
+  probe0[4] = earthState[4]! + k * ry;
+  probe0[5] = earthState[5]! + k * rz;
+  return planFrom(world, handles, flight.mission, probe0, plan);
+}
+
+/** The plan (see `planFlight`) of a probe at heliocentric state `start` (position AU, velocity AU/day) now. */
+function planFrom(world: PhysicsWorld, handles: SolarSystemHandles, mission: Mission, start: Float64Array, plan: FlightPlan): FlightPlan {
+  const G = world.laws.gravitationalConstant;
+  const mu = muSun(world, handles);
+  const target = handles.bodies[mission.target];
+  heliocentricState(world, handles, target, target0);
+  const muTarget = G * (world.components.Mass.value[slotOf(handles.bodies.Sun)]! + world.components.Mass.value[slotOf(target)]!);
   // The window: one orbit of the probe, at most three Hohmann transfer times to the target's distance.
-  const r0 = Math.hypot(probe0[0]!, probe0[1]!, probe0[2]!);
-  const v0sq = probe0[3]! ** 2 + probe0[4]! ** 2 + probe0[5]! ** 2;
+  const r0 = Math.hypot(start[0]!, start[1]!, start[2]!);
+  const v0sq = start[3]! ** 2 + start[4]! ** 2 + start[5]! ** 2;
   const alpha = 2 / r0 - v0sq / mu;
   const rT = Math.hypot(target0[0]!, target0[1]!, target0[2]!);
   const hohmann = Math.PI * Math.sqrt(((r0 + rT) / 2) ** 3 / mu);
@@ -262,7 +307,7 @@ export function planFlight(world: PhysicsWorld, handles: SolarSystemHandles, mis
     prevT = 0,
     points = 0;
   const at = (t: number): number => {
-    keplerState(probe0, probe0.subarray(3), mu, t, pState);
+    keplerState(start, start.subarray(3), mu, t, pState);
     keplerState(target0, target0.subarray(3), muTarget, t, tState);
     return Math.hypot(pState[0]! - tState[0]!, pState[1]! - tState[1]!, pState[2]! - tState[2]!);
   };
@@ -340,8 +385,11 @@ export interface Flight {
   readonly probe: number;
   /** world.time at the launch, days. */
   readonly launchTime: number;
-  /** Days of flight after which a probe that has not arrived has missed: the plan's time with a margin, within its window. */
-  readonly deadline: number;
+  /**
+   * Days of flight after which a probe that has not arrived has missed: the plan's time with a
+   * margin, within its window (moved by a burn to the new course's: `burnProbe`).
+   */
+  deadline: number;
   /** The plan at the launch. */
   readonly planned: Readonly<Pick<FlightPlan, 'hit' | 'time' | 'distance'>>;
   /** Closest approach to the target so far, AU, and the flight time then, days. */
@@ -351,7 +399,23 @@ export interface Flight {
   state: FlightEvent;
   /** Days from the launch to the end (or to now while flying). */
   elapsed: number;
+  /** Speed changed by mid-course burns so far, km/s (at most CORRECTION_FUEL). */
+  fuelUsed: number;
+  /** Mid-course burns so far. */
+  burns: number;
 }
+
+/** Speed the probe's mid-course burns may change in all, km/s (its fuel for corrections). */
+export const CORRECTION_FUEL = 1;
+
+/** Speed change of one burn (a key press or a tap), km/s. */
+export const BURN_STEP = 0.05;
+
+/** Directions of a mid-course burn: along the probe's motion round the Sun, against it, away from the Sun, towards it. */
+export type BurnDirection = 'faster' | 'slower' | 'out' | 'in';
+
+/** Launch angles (`launchDirection`) of each burn direction, degrees. */
+const BURN_ANGLE: Record<BurnDirection, number> = { faster: 0, slower: 180, out: 90, in: -90 };
 
 const launchPos = new Float64Array(3);
 const launchVel = new Float64Array(3);
@@ -392,7 +456,50 @@ export function launchProbe(world: PhysicsWorld, handles: SolarSystemHandles, mi
     closestAt: 0,
     state: 'flying',
     elapsed: 0,
+    fuelUsed: 0,
+    burns: 0,
   };
+}
+
+const burnState = new Float64Array(6);
+const burnDir = new Float64Array(3);
+
+/**
+ * A mid-course burn: changes the velocity of `flight`'s probe by `dv` km/s in `direction` (in the
+ * ecliptic, from its heliocentric motion now: along it, against it, away from the Sun or towards
+ * it, as `launchDirection` turns a launch), at most the CORRECTION_FUEL left. Then plans the new
+ * course into `plan` (`planCourse`) and moves the flight's deadline to the new plan's time with the
+ * launch's margin. No burn (and no plan) once the flight has ended or the fuel is gone.
+ * @returns the speed change made, km/s (0 when none). @throws RangeError on a dv that is not finite and > 0 or an unknown direction.
+ */
+export function burnProbe(
+  world: PhysicsWorld,
+  handles: SolarSystemHandles,
+  flight: Flight,
+  direction: BurnDirection,
+  dv: number,
+  plan: FlightPlan,
+): number {
+  if (!(dv > 0 && Number.isFinite(dv))) throw new RangeError(`burnProbe: dv must be finite and > 0 km/s, got ${dv}`);
+  if (!(direction in BURN_ANGLE))
+    throw new RangeError(`burnProbe: direction must be one of ${Object.keys(BURN_ANGLE).join(', ')}, got ${String(direction)}`);
+  const left = CORRECTION_FUEL - flight.fuelUsed;
+  if (flight.state !== 'flying' || left <= 1e-9) return 0;
+  const change = Math.min(dv, left);
+  heliocentricState(world, handles, flight.probe, burnState);
+  launchDirection(burnState, BURN_ANGLE[direction], burnDir);
+  const V = world.components.Velocity,
+    p = slotOf(flight.probe);
+  const k = change * KM_S;
+  launchVel[0] = V.x[p]! + k * burnDir[0]!;
+  launchVel[1] = V.y[p]! + k * burnDir[1]!;
+  launchVel[2] = V.z[p]! + k * burnDir[2]!;
+  setVelocity(world, flight.probe, launchVel);
+  flight.fuelUsed = Math.min(CORRECTION_FUEL, flight.fuelUsed + change);
+  flight.burns++;
+  planCourse(world, handles, flight, plan);
+  flight.deadline = flight.elapsed + Math.min(plan.window, plan.time) * 1.2 + 30;
+  return change;
 }
 
 /**

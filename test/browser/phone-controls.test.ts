@@ -396,23 +396,27 @@ describe('phone controls', () => {
     await g.close();
   });
 
-  it('solar system: + raises the launch speed, Launch sends the probe off, Abort brings it back to the launch', async () => {
+  it('solar system: Hint says what to try, + raises the launch speed, Launch sends the probe off, + fast burns in flight, Abort brings it back to the launch', async () => {
     const g = await h.openGame('solar-system', { ...PHONE, query: { rate: 0 } });
-    type Solar = { mission(): { phase: string; aim: { speed: number }; flight: { elapsed: number } | null } };
+    type Solar = {
+      mission(): { phase: string; aim: { speed: number }; flight: { elapsed: number; fuelUsed: number } | null; plan: { hit: boolean } };
+    };
     const speed = await read(g, 'mission().aim.speed');
-    // Mission 1 starts too slow, and the line names the button that fixes it; 8 taps of + arrive.
-    await g.waitFor(() => /more speed \(tap \+\)$/.test(document.querySelector('[data-hud="plan"]')!.textContent ?? ''), null);
+    // Mission 1 starts too slow; the Hint button names the button that fixes it; 8 taps of + arrive.
+    await g.page.getByRole('button', { name: 'hint: what to try (H)', exact: true }).tap();
+    await g.waitFor(() => /more speed \(tap \+\)\.$/.test(document.querySelector('[data-hud="hint"]')!.textContent ?? ''), null);
     for (let i = 0; i < 8; i++) await g.page.getByRole('button', { name: 'faster launch (↑)', exact: true }).tap();
     await g.waitFor((s) => (window.game as unknown as Solar).mission().aim.speed > s + 0.75, speed);
-    await g.waitFor(
-      () => /✓ reaches Mars in \d+ days .*\(tap Launch\)$/.test(document.querySelector('[data-hud="plan"]')!.textContent ?? ''),
-      null,
-    );
+    await g.waitFor(() => /✓ reaches Mars in \d+ days/.test(document.querySelector('[data-hud="plan"]')!.textContent ?? ''), null);
+    await g.waitFor(() => /tap Launch/.test(document.querySelector('[data-hud="hint"]')!.textContent ?? ''), null);
     await g.page.getByRole('button', { name: 'launch the probe (Space)', exact: true }).tap();
     await g.waitFor(() => {
       const m = (window.game as unknown as Solar).mission();
       return m.phase === 'flight' && m.flight!.elapsed > 1;
     }, null);
+    // In flight the speed buttons burn: + fast uses 0.05 km/s of the fuel.
+    await g.page.getByRole('button', { name: 'burn to speed up (↑)', exact: true }).tap();
+    await g.waitFor(() => ((window.game as unknown as Solar).mission().flight?.fuelUsed ?? 0) > 0.04, null);
     await g.page.getByRole('button', { name: 'abort the flight: back to the launch', exact: true }).tap();
     await g.waitFor(() => (window.game as unknown as Solar).mission().phase === 'aim', null);
     expect(await read(g, 'mission().aim.speed')).toBeGreaterThan(speed);

@@ -2,7 +2,8 @@
  * The solar system game without a page (games/solar-system): Kepler propagation against independent
  * solutions, the compressed distance scale and its inverse, and the missions: a launch the flight
  * plan calls a hit arrives in the physics world (every planet pulling) about when planned, a planned
- * miss does not, a probe at rest falls into the Sun in the free-fall time, stars and bad input.
+ * miss does not, mid-course burns planned from the probe's course turn a miss into an arrival, a
+ * probe at rest falls into the Sun in the free-fall time, stars and bad input.
  */
 
 import { createPhysicsWorld, type PhysicsWorld, setVelocity, slotOf, step } from '@bitphysics/physics';
@@ -12,6 +13,9 @@ import { COMPRESSION_LENGTH, displayRadius, fromDisplay, toDisplay, trueRadius }
 import { keplerState } from '../../games/solar-system/kepler';
 import {
   type Aim,
+  BURN_STEP,
+  burnProbe,
+  CORRECTION_FUEL,
   checkFlight,
   createFlightPlan,
   type Flight,
@@ -22,6 +26,7 @@ import {
   MISSIONS,
   type Mission,
   PLAN_MARGIN,
+  planCourse,
   planFlight,
   starsFor,
   TUTORIAL_SHORTFALL,
@@ -202,6 +207,44 @@ describe('missions', () => {
     const flight = launchProbe(world, handles, m, aim, plan);
     fly(world, handles, flight);
     expect(flight.state).toBe('arrived');
+  });
+
+  test('a mid-course burn changes the arrival: mission 1’s short launch misses Mars; burns along the motion 20 days out bring the planned closest approach into the ring, and flown, it arrives', () => {
+    const { world, handles } = solarWorld(1);
+    const m = MISSIONS[0]!;
+    const lesson = tutorialAim(world, handles, m)!;
+    const plan = planFlight(world, handles, m, lesson.start, createFlightPlan());
+    expect(plan.hit).toBe(false);
+    // Flown as launched: a miss (the control).
+    const { world: w2, handles: h2 } = solarWorld(1);
+    const control = launchProbe(w2, h2, m, lesson.start, planFlight(w2, h2, m, lesson.start, createFlightPlan()));
+    fly(w2, h2, control);
+    expect(control.state).toBe('missed');
+    // The same launch, then 20 days out burns of BURN_STEP along the motion until the plan from the
+    // probe's state (planCourse, Kepler about the Sun) calls a hit.
+    const flight = launchProbe(world, handles, m, lesson.start, plan);
+    // Just after the launch the course is the launch's plan: the climb still to come out of the
+    // Earth's pull is taken off the speed (measured: 2e-6 AU apart; 4.6e-3 AU without it).
+    step(world);
+    expect(Math.abs(planCourse(world, handles, flight, createFlightPlan()).distance - plan.distance)).toBeLessThan(5e-4);
+    for (let k = 1; k < 20 * 24; k++) {
+      step(world);
+      checkFlight(world, handles, flight);
+    }
+    const before = planCourse(world, handles, flight, createFlightPlan()).distance;
+    expect(before).toBeGreaterThan(m.zone);
+    const course = createFlightPlan();
+    while (!course.hit && burnProbe(world, handles, flight, 'faster', BURN_STEP, course) > 0);
+    expect(course.hit).toBe(true);
+    // Measured: 0.80 km/s of burns for the launch's 0.8 km/s shortfall.
+    expect(flight.fuelUsed).toBeLessThanOrEqual(CORRECTION_FUEL);
+    expect(flight.burns).toBe(Math.round(flight.fuelUsed / BURN_STEP));
+    // The deadline follows the new course: it arrives.
+    fly(world, handles, flight);
+    expect(flight.state).toBe('arrived');
+    // The fuel runs out: no burn past CORRECTION_FUEL, none after the flight.
+    expect(burnProbe(world, handles, flight, 'in', BURN_STEP, course)).toBe(0);
+    expect(() => burnProbe(world, handles, flight, 'faster', -1, course)).toThrow(/burnProbe: dv must be finite and > 0 km\/s, got -1/);
   });
 
   test('every mission can be reached: within two years of waiting some launch the plan calls a hit', () => {
