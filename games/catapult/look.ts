@@ -1,6 +1,6 @@
 /**
  * Catapult, how things look (drawing only, no physics): castle pieces as wood with grain and nails,
- * glass with a shine, round stones with a lit side; the catapult itself, a wooden throwing arm on a
+ * glass with a shine, dressed stone blocks, round stones with a lit side; hills and pits; the catapult itself, a wooden throwing arm on a
  * frame whose arm swings back as the player pulls; the earth mound under it. Everything is drawn in
  * the scene's metres through the camera, into a pixi Graphics the caller clears each frame.
  */
@@ -115,6 +115,90 @@ export function drawGlass(
     segment(g, f, -0.7 * hx, -0.6 * hy, 0.1 * hx, 0.1 * hy)
       .lineTo(...(put(f, 0.6 * hx, -0.3 * hy, []) as [number, number]))
       .stroke({ width: 1, color: 0xffffff, alpha: 0.8 });
+}
+
+/**
+ * A block of dressed stone centred at (x, y), m, turned by `angle`, half extents (hx, hy): `color`
+ * with a dark rim, a lit top edge, a shaded bottom one and a few chisel marks; a fallen one darker.
+ */
+export function drawBrick(
+  g: Graphics,
+  cam: Camera,
+  x: number,
+  y: number,
+  angle: number,
+  hx: number,
+  hy: number,
+  color: number,
+  fallen: boolean,
+): void {
+  const f: Frame = { cam, x, y, c: Math.cos(angle), s: Math.sin(angle) };
+  const base = fallen ? mixColor(color, 0x000000, 0.3) : color;
+  g.poly(box(f, -hx, -hy, hx, hy))
+    .fill(base)
+    .stroke({ width: 1.5, color: mixColor(base, 0x000000, 0.6) });
+  const edge = Math.min(0.06, 0.3 * hy);
+  g.poly(box(f, -hx, hy - edge, hx, hy)).fill({ color: 0xffffff, alpha: 0.25 });
+  g.poly(box(f, -hx, -hy, hx, -hy + edge)).fill({ color: 0x000000, alpha: 0.2 });
+  const mark = { width: 1, color: mixColor(base, 0x000000, 0.45), alpha: 0.7 };
+  segment(g, f, -0.6 * hx, 0.2 * hy, -0.3 * hx, -0.1 * hy).stroke(mark);
+  segment(g, f, 0.25 * hx, 0.35 * hy, 0.55 * hx, 0.05 * hy).stroke(mark);
+  segment(g, f, -0.05 * hx, -0.35 * hy, 0.3 * hx, -0.5 * hy).stroke(mark);
+}
+
+/**
+ * A hill (a box of earth over [minX, maxX] x [minY, maxY], m): earth, darker lower down, with
+ * stones set in it, a rocky rim down its sides and grass on its top.
+ */
+export function drawHill(
+  g: Graphics,
+  cam: Camera,
+  minX: number,
+  maxX: number,
+  minY: number,
+  maxY: number,
+  earth: number,
+  grass: number,
+): void {
+  const X = (v: number) => cam.toScreenX(v),
+    Y = (v: number) => cam.toScreenY(v);
+  g.rect(X(minX), Y(maxY), X(maxX) - X(minX), Y(minY) - Y(maxY)).fill(earth);
+  // Darker earth lower down, and stones set in it (fixed places from the hill's size).
+  g.rect(X(minX), Y(minY + 0.45 * (maxY - minY)), X(maxX) - X(minX), Y(minY) - Y(minY + 0.45 * (maxY - minY))).fill({
+    color: 0x2a1a0c,
+    alpha: 0.18,
+  });
+  const w = maxX - minX,
+    h = maxY - minY;
+  for (let k = 0; k < Math.round(2.2 * w); k++) {
+    const u = (k * 0.618034) % 1,
+      v = (k * 0.754878) % 1;
+    const r = 0.07 + 0.06 * ((k * 0.41) % 1);
+    g.ellipse(X(minX + 0.15 + u * (w - 0.3)), Y(minY + 0.15 + v * (h - 0.45)), cam.toScreenLength(r), cam.toScreenLength(0.65 * r)).fill({
+      color: 0xb3a58c,
+      alpha: 0.55,
+    });
+  }
+  const rim = mixColor(earth, 0x000000, 0.35);
+  const side = Math.max(2, cam.toScreenLength(0.12));
+  g.rect(X(minX), Y(maxY), side, Y(minY) - Y(maxY)).fill(rim);
+  g.rect(X(maxX) - side, Y(maxY), side, Y(minY) - Y(maxY)).fill(rim);
+  g.rect(X(minX) - 1, Y(maxY) - 1, X(maxX) - X(minX) + 2, Math.max(3, cam.toScreenLength(0.16))).fill(grass);
+}
+
+/**
+ * A pit over [minX, maxX] from its floor at `floor` (m, < 0) up to the ground (y = 0): its far wall
+ * in shadow, its side walls darker still, and its floor of earth, over the ground drawn before it.
+ */
+export function drawPit(g: Graphics, cam: Camera, minX: number, maxX: number, floor: number, earth: number): void {
+  const X = (v: number) => cam.toScreenX(v),
+    Y = (v: number) => cam.toScreenY(v);
+  g.rect(X(minX), Y(0) - 1, X(maxX) - X(minX), Y(floor) - Y(0) + 1).fill(mixColor(earth, 0x000000, 0.45));
+  // Light falling in from the left: the right wall lit, the left in shadow.
+  const wall = Math.max(3, cam.toScreenLength(0.25));
+  g.rect(X(minX), Y(0) - 1, wall, Y(floor) - Y(0) + 1).fill(mixColor(earth, 0x000000, 0.6));
+  g.rect(X(maxX) - wall, Y(0) - 1, wall, Y(floor) - Y(0) + 1).fill(mixColor(earth, 0xffffff, 0.08));
+  g.rect(X(minX), Y(floor), X(maxX) - X(minX), Math.max(3, cam.toScreenLength(0.14))).fill(mixColor(earth, 0xffffff, 0.12));
 }
 
 /**

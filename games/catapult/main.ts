@@ -1,13 +1,15 @@
 /**
- * Catapult: drag back from the catapult's cup and release to throw a stone at a castle of posts,
- * planks and stones glued by breakable welds. A dashed arc shows the drag-free path. Score: 100 a
- * fallen piece, 25 a broken weld; a few shots a level, five seeded levels. The last throw leaves a trail of dots and a word on what it did.
+ * Catapult: drag back from the catapult's cup and release to throw a stone at a castle of wooden
+ * posts and planks, glass and stone, glued by breakable welds. A dashed arc shows the drag-free
+ * path. Score: 100 a fallen piece, 25 a broken weld; a few shots a level, nine seeded levels of
+ * their own shapes (towers, a glass hall, a keep on stone, a bridge, a hill fort, a pit, a fortress;
+ * see ./scene LEVELS). The last throw leaves a trail of dots and a word on what it did.
  *
  * Input: drag from the cup and release. Keys: L next level, R reset the level, P pause, N step.
  * A "Next level" button under the scene when the level is over (touch and mouse).
- * Sound: a whoosh per throw; impacts as loud as their impulse, wood for posts and planks, stone for
- * blocks, stones and the projectile.
- * URL: ?level=1..5, ?seed=S, ?demo (the catapult throws one stone at the castle by itself, at 0.3 s:
+ * Sound: a whoosh per throw; impacts as loud as their impulse, wood for posts and planks, glass for
+ * glass, stone for stone blocks, stones and the projectile.
+ * URL: ?level=1..9, ?seed=S, ?demo (the catapult throws one stone at the castle by itself, at 0.3 s:
  * the gallery's thumbnail shows a hit).
  */
 
@@ -29,7 +31,7 @@ import { startPixiGame } from '@bitphysics/game-kit/pixi';
 import { contactEvents, createPhysicsWorld, isAlive, type PhysicsWorld, Rng, setGravity, slotOf, step } from '@bitphysics/physics';
 import { Container, Graphics, Text } from 'pixi.js';
 import { type DebrisKind, Effects } from './effects';
-import { CATAPULT, cupAt, drawCatapult, drawGlass, drawMound, drawStone, drawWood, mixColor } from './look';
+import { CATAPULT, cupAt, drawBrick, drawCatapult, drawGlass, drawHill, drawMound, drawPit, drawStone, drawWood, mixColor } from './look';
 import {
   angleForRange,
   buildLevel,
@@ -43,6 +45,7 @@ import {
   PULL,
   predictArc,
   ROCK,
+  surfaceAt,
   type Tally,
   tally,
   worldOptions,
@@ -61,6 +64,7 @@ const params = {
 /** The effects of hits (dust, splinters, popups, shake); made once the renderer is up. */
 let effects: Effects | null = null;
 let lv: Level = {
+  name: '',
   pieces: [],
   joints: [],
   jointBodies: [],
@@ -69,6 +73,7 @@ let lv: Level = {
   castleMaxX: 0,
   castleTop: 0,
   ground: 0,
+  terrain: [],
   mound: 0,
   rock: 0,
 };
@@ -121,6 +126,8 @@ function createWorld(): PhysicsWorld {
   materials.clear();
   for (const p of lv.pieces)
     materials.set(p.body, p.kind === 'post' || p.kind === 'plank' ? 'wood' : p.kind === 'block' ? 'glass' : 'stone');
+  terrainBodies.clear();
+  for (const t of lv.terrain) terrainBodies.add(t.body);
   popped.clear();
   celebrated = false;
   weldsHeld.length = 0;
@@ -146,6 +153,8 @@ let lastDrawTime = 0;
 
 /** Whether the catapult throws one stone by itself (?demo). */
 const DEMO = flagParam('demo');
+/** The level's terrain bodies (its ground slabs, hill, pit floor): a hit on them raises dust. */
+const terrainBodies = new Set<number>();
 /** Sound material of each piece's body; the projectiles and the ground sound as stone. */
 const materials = new Map<number, SoundMaterial>();
 const sound = getSound();
@@ -187,7 +196,7 @@ function stepWorld(world: PhysicsWorld): void {
     if (v < 2.5) continue;
     const stoneA = shots.includes(a),
       stoneB = shots.includes(b);
-    const ground = a === lv.ground || b === lv.ground;
+    const ground = terrainBodies.has(a) || terrainBodies.has(b);
     if (ground) effects.burst('dust', x, y, Math.min(12, Math.round(2 + v)), 1.5 + 0.3 * v);
     for (const [body, hitByStone] of [
       [a, stoneB],
@@ -326,12 +335,13 @@ const MATERIAL_COLORS: Record<Level['pieces'][number]['kind'], number> = {
   post: 0x9a6232,
   plank: 0xc08a4e,
   block: 0xa8dcef,
+  brick: 0xa39e94,
   stone: 0x8b929c,
 };
 /** Gives the level's bodies the colours of what they are made of. */
 function paint(): void {
   for (const p of lv.pieces) if (isAlive(shell.world, p.body)) renderer.setColor(p.body, MATERIAL_COLORS[p.kind]);
-  if (lv.ground) renderer.setColor(lv.ground, GRASS);
+  for (const t of lv.terrain) renderer.setColor(t.body, t.kind === 'ground' ? GRASS : EARTH);
   if (lv.mound) renderer.setColor(lv.mound, 0x7a5533);
   if (lv.rock) renderer.setColor(lv.rock, 0x7d776e);
 }
@@ -406,16 +416,18 @@ function viewFor(minX: number, maxX: number): View {
   const aspect = H / W;
   const height = (maxX - minX) * aspect;
   const top = lv.castleTop + 4;
+  // The lowest surface (a pit's floor) shows with 0.6 m of earth under it.
+  const floor = Math.min(0, ...lv.terrain.map((t) => t.maxY)) - 0.6;
   // Tall (or a screen taller than wide): the ground GROUND_AT up, earth below it.
   if (aspect > 1.2 || height > 3 * top) {
-    const low = -GROUND_AT * height;
+    const low = Math.min(-GROUND_AT * height, floor);
     return { minX, minY: low, maxX, maxY: Math.max(low + height, top) };
   }
   // Wide: from just under the ground up, taller than the castle; the ground above the touch hint
   // while it shows (R px: R m at the width's scale, or, when the castle's height sets the scale,
   // the depth that leaves R px under the ground with the view's top at `top`).
   const R = hintReserve();
-  const minY = Math.min(-1, -(R * (maxX - minX)) / W, R > 0 && R < H ? -(R * top) / (H - R) : -1);
+  const minY = Math.min(-1, floor, -(R * (maxX - minX)) / W, R > 0 && R < H ? -(R * top) / (H - R) : -1);
   return { minX, minY, maxX, maxY: Math.max(minY + height, top) };
 }
 /** The right face of the rock behind the castle, m. */
@@ -616,14 +628,21 @@ function followThrow(world: PhysicsWorld, t: Tally): void {
     lastThrow.at = [(lv.castleMinX + lv.castleMaxX) / 2, lv.castleTop + 0.8];
     return;
   }
-  // Where the projectile first came down to the castle's height tells short from long.
+  // Where the projectile first reached the castle's span under its top, or else came down to the
+  // ground (a hill's top, a pit's floor), tells short from long. (The first point under the
+  // castle's top on the way down was the throw's top for a low throw: "short by 8 m" for a stone
+  // that came down 1 m short.)
   const path = lastThrow.path;
   let landX = x;
-  for (let i = 2; i < path.length; i += 2)
-    if (path[i + 1]! < lv.castleTop && path[i + 1]! < path[i - 1]!) {
-      landX = path[i]!;
+  for (let i = 2; i < path.length; i += 2) {
+    const px = path[i]!,
+      py = path[i + 1]!;
+    const down = py < path[i - 1]! && py < surfaceAt(lv, px) + PROJECTILE_RADIUS + 0.3;
+    if ((px >= lv.castleMinX - 0.3 && py < lv.castleTop) || down) {
+      landX = px;
       break;
     }
+  }
   // By how far: where the throw would have come down on open ground (drag-free), from the castle's
   // near or far end, in whole metres (at least 1).
   const g = -world.gravity[1]!,
@@ -899,6 +918,7 @@ function drawPieces(world: PhysicsWorld, alpha: number): void {
       down = p.down === true;
     if (p.kind === 'stone') drawStone(overlay, cam, at.x, at.y, a, p.half[0], down ? mixColor(color, 0x000000, 0.25) : color);
     else if (p.kind === 'block') drawGlass(overlay, cam, at.x, at.y, a, p.half[0], p.half[1], color, down);
+    else if (p.kind === 'brick') drawBrick(overlay, cam, at.x, at.y, a, p.half[0], p.half[1], color, down);
     else drawWood(overlay, cam, at.x, at.y, a, p.half[0], p.half[1], color, down);
     if (down && !popped.has(p.body)) {
       popped.add(p.body);
@@ -1142,6 +1162,11 @@ function draw(world: PhysicsWorld, alpha: number): void {
   drawRock();
   // The grass's top edge, lit, over the ground slab.
   overlay.rect(0, sy(0) - 1, cam.width, Math.max(2, cam.toScreenLength(0.12))).fill(0x76b852);
+  // The level's hill or pit over the flat ground.
+  for (const t of lv.terrain) {
+    if (t.kind === 'hill') drawHill(overlay, cam, t.minX, t.maxX, t.minY, t.maxY, 0x8a6238, 0x76b852);
+    else if (t.kind === 'pit') drawPit(overlay, cam, t.minX, t.maxX, t.maxY, EARTH);
+  }
   drawMound(overlay, cam, 0x7a5533, 0x5e9c45);
   const dt = Math.min(0.1, Math.max(0, world.time - lastDrawTime));
   lastDrawTime = world.time;
@@ -1168,7 +1193,7 @@ function draw(world: PhysicsWorld, alpha: number): void {
   const score = levelEnded ? campaign.scores[i]! : t.score;
   const runningTotal = total() - (levelEnded ? 0 : campaign.scores[i]!) + (levelEnded ? 0 : score);
   shownScore = score;
-  readout.set(0, `${params.level} / ${LEVEL_COUNT}`);
+  readout.set(0, `${params.level} / ${LEVEL_COUNT} ${lv.name}`);
   readout.set(1, String(shotsLeft));
   readout.set(2, String(score));
   readout.set(3, String(runningTotal));
@@ -1211,8 +1236,10 @@ function draw(world: PhysicsWorld, alpha: number): void {
     }
   } else {
     // The total counts this level's score as it grows; before the first throw, the star rule.
+    // Before the first throw the level's name stands where its score (0) will be.
     const rule = shots.length === 0 ? `\nStars: ${starRule}` : '';
-    const running = `Score ${score}   Total ${runningTotal}   shots ${shotsLeft}${rule}`;
+    const head = shots.length === 0 ? `Level ${params.level}: ${lv.name}` : `Score ${score}`;
+    const running = `${head}   Total ${runningTotal}   shots ${shotsLeft}${rule}`;
     if (clearedEarly(world)) {
       // Cleared with shots to spare: the player may move on now (the shots left score their bonus) or
       // throw again for more stars.

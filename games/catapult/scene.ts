@@ -1,12 +1,13 @@
 /**
  * Catapult, the rules (no DOM, no pixi; they run in Node and in tests): seeded castle levels of
- * posts, planks and round stones glued by breakable weld joints, the launch from a pull, the
- * drag-free predicted arc, and the score.
+ * wooden posts and planks, glass, stone blocks and round stones glued by breakable weld joints, on
+ * flat ground, a hill or by a pit; the launch from a pull, the drag-free predicted arc, and the score.
  *
- * Units: metres, seconds, kilograms. The ground's top is y = 0 from x = GROUND.minX to GROUND.maxX;
- * the catapult throws from LAUNCH. Score: FALL_POINTS for every castle piece that fell (its centre
- * more than FALL_DROP below where it started, or off the ground's end) and BREAK_POINTS for every
- * weld joint that broke.
+ * Units: metres, seconds, kilograms. The ground's top is y = 0 from x = GROUND.minX to GROUND.maxX
+ * (a level's hill or pit changes it there: `Level.terrain`); the catapult throws from LAUNCH.
+ * Score: FALL_POINTS for every castle piece that fell (`hasFallen`: its centre more than FALL_DROP
+ * below where it started, knocked KNOCK_DISTANCE from there, a box tipped past TIP_ANGLE, or off the
+ * ground's end) and BREAK_POINTS for every weld joint that broke.
  */
 import {
   addBody,
@@ -17,6 +18,7 @@ import {
   type PhysicsWorld,
   type PhysicsWorldOptions,
   Rng,
+  removeBody,
   slotOf,
 } from '@bitphysics/physics';
 
@@ -45,26 +47,19 @@ export const PROJECTILE_RADIUS = 0.3;
 export const ROLL_RESISTANCE = 1.2;
 /** Drop (m) below its start past which a castle piece counts as fallen. */
 export const FALL_DROP = 0.6;
+/**
+ * A castle piece has also fallen when its centre is this far (m) from where it started, or a box has
+ * turned past TIP_ANGLE (rad): a post on the ground knocked over, or a stone block pushed off its
+ * row, cannot drop FALL_DROP, and counted as standing it left three stars out of reach on every level.
+ */
+export const KNOCK_DISTANCE = 1;
+export const TIP_ANGLE = Math.PI / 3;
 /** Points for a fallen piece and for a broken joint. */
 export const FALL_POINTS = 100;
 export const BREAK_POINTS = 25;
-/** Number of levels. */
-export const LEVEL_COUNT = 5;
-
-/**
- * Each level's castle: towers side by side, storeys in each, where the first tower stands (m, give
- * or take 1 m from the seed) and the shots the player has. Each level asks a little more than the
- * one before. The castle stands 11 to 12 m out, so the catapult and the castle share the screen at a
- * scale where a piece reads (a 1.2 m post about 55 px tall on a 1060 px wide view).
- */
-const LEVEL_TOWERS = [1, 2, 2, 3, 4],
-  LEVEL_STOREYS = [3, 2, 3, 3, 4],
-  LEVEL_X0 = [12, 12, 12, 11.5, 11],
-  LEVEL_SHOTS = [3, 3, 3, 4, 5];
-
 /** Options of a level. */
 export interface LevelOptions {
-  /** Level index, integer in [0, LEVEL_COUNT). */
+  /** Level index, integer in [0, LEVEL_COUNT) (0-based: level 1 on the page is 0). */
   level: number;
   /** Seed of the castle's variations. */
   seed: number;
@@ -79,15 +74,28 @@ export interface Piece {
   body: number;
   startX: number;
   startY: number;
-  kind: 'post' | 'plank' | 'block' | 'stone';
+  /** Wood ('post', 'plank'), glass ('block': blocks and panes), stone ('brick': a block; 'stone': round). */
+  kind: 'post' | 'plank' | 'block' | 'brick' | 'stone';
   /** Half width and half height of a box, m; a stone's radius twice. */
   half: [number, number];
   /** Whether the piece has counted as fallen: once it has, it stays fallen (set by `tally`). */
   down?: boolean;
 }
 
+/** A static box of the ground's shape: the ground's slabs, a hill, a pit's floor (m). */
+export interface Terrain {
+  body: number;
+  kind: 'ground' | 'hill' | 'pit';
+  minX: number;
+  maxX: number;
+  minY: number;
+  maxY: number;
+}
+
 /** What a level holds. */
 export interface Level {
+  /** The level's name, as the player sees it. */
+  name: string;
   /** Castle pieces. */
   pieces: Piece[];
   /** Weld joints built (handles). */
@@ -101,8 +109,11 @@ export interface Level {
   castleMaxX: number;
   /** Height of the castle's top, m (for framing). */
   castleTop: number;
-  /** The ground's and the catapult mound's handles (0 before a level is built). */
+  /** The ground's handle (its slab under the catapult; 0 before a level is built). */
   ground: number;
+  /** The ground's shape: its slabs, and a hill or a pit's floor where the level has one. */
+  terrain: Terrain[];
+  /** The catapult mound's handle (0 before a level is built). */
   mound: number;
   /**
    * A static rock past the castle (its handle, 0 before a level is built) that stops debris sliding
@@ -119,128 +130,421 @@ export function worldOptions(o: { gravity: number }): PhysicsWorldOptions {
   return { dimensions: 2, capacity: 1000, gravity: [0, -o.gravity], sleep: false };
 }
 
+/** A post (wood, or a glass pane) of a storey, half extents (m). */
+const POST = { hx: 0.15, hy: 0.6 } as const;
+/** Width of a tower's storey (two posts under a plank), m. */
+const SPAN = 2.4;
+/** A storey's floor plank, half extents (m): the storey's width and 0.2 m over each side. */
+const PLANK = { hx: SPAN / 2 + 0.2, hy: 0.12 } as const;
+/** From one tower's middle to the next one's, m (room for a bridge plank between their roofs). */
+const TOWER_PITCH = SPAN + 1.2;
+/** A stone block, half extents (m). */
+const BRICK = { hx: 0.4, hy: 0.25 } as const;
+/** A glass pane (a post of glass), half extents (m). */
+const PANE = { hx: 0.12, hy: 0.6 } as const;
+/** Width of a bay of a hall (from one pane to the next), m. */
+const BAY = 2.2;
+
+/** Areal density (kg/m^2) and friction of each kind of box piece: wood, glass, stone. */
+const MATERIAL: Record<Exclude<Piece['kind'], 'stone'>, { density: number; friction: number }> = {
+  post: { density: 2, friction: 0.7 },
+  plank: { density: 2, friction: 0.7 },
+  block: { density: 1.5, friction: 0.7 },
+  brick: { density: 5, friction: 0.8 },
+};
+
+/** What a level's builder works with (see LEVELS). */
+interface Builder {
+  world: PhysicsWorld;
+  lv: Level;
+  rng: Rng;
+  /** Level index, 0-based. */
+  level: number;
+  /** A box piece of `kind` centred at (x, y), half extents (hx, hy), m. @returns its body. */
+  box(kind: Exclude<Piece['kind'], 'stone'>, x: number, y: number, hx: number, hy: number): number;
+  /** A round stone of radius r (m) and mass (kg) centred at (x, y). @returns its body. */
+  stone(x: number, y: number, r: number, mass: number): number;
+  /** Welds bodies a and b at `anchor` (m), breaking at the level's joint strength. */
+  weld(a: number, b: number, anchor: [number, number]): void;
+}
+
+/** A tower's roof: its plank's body, its middle x and the height of its top, m. */
+interface Roof {
+  body: number;
+  x: number;
+  y: number;
+}
+
+/** Options of `tower`. */
+interface TowerOptions {
+  /** Crown stones on the roof: 1 (in the middle) or 2. Default 1. */
+  stones?: number;
+  /** Crown stones' mass, kg. Default 2 + level / 2. */
+  stoneMass?: number;
+  /**
+   * Glass blocks inside: 'seeded' puts one in each storey above the first with chance 1/2 (from the
+   * level's seed), a number n in the n storeys above the first. Default 'seeded'.
+   */
+  blocks?: 'seeded' | number;
+  /** The posts: wood ('post') or glass panes ('block'). Default 'post'. */
+  post?: 'post' | 'block';
+  /** Storey width, m. Default SPAN. */
+  span?: number;
+  /** A body the first storey's posts are welded to (the deck it stands on), or 0. Default 0. */
+  on?: number;
+}
+
 /**
- * Builds level `o.level` into an empty `world`: the ground and a castle of seeded towers.
- * Level 0: one tower of three storeys; 1: two towers of two storeys joined by a bridge plank; 2: two
- * towers of three storeys, two stones on each; 3: three towers; 4: a fortress of four towers of four
- * storeys, heavier stones.
+ * A tower of `storeys` storeys standing at x = cx on the surface at height `base` (m): each storey two
+ * posts under a plank, each post welded to the plank under it and to the plank over it; crown stones
+ * on the roof. @returns its roof.
+ */
+function tower(b: Builder, cx: number, base: number, storeys: number, o: TowerOptions = {}): Roof {
+  const span = o.span ?? SPAN;
+  const post = o.post === 'block' ? PANE : POST;
+  const plankHx = span / 2 + 0.2;
+  let y = base,
+    below = o.on ?? 0,
+    roof = 0;
+  for (let s = 0; s < storeys; s++) {
+    const storeyBase = y;
+    const posts: number[] = [];
+    for (const side of [-1, 1]) {
+      const px = cx + side * (span / 2 - POST.hx);
+      const p = b.box(o.post ?? 'post', px, y + post.hy, post.hx, post.hy);
+      posts.push(p);
+      if (below) b.weld(below, p, [px, y]);
+    }
+    y += 2 * post.hy;
+    roof = b.box('plank', cx, y + PLANK.hy, plankHx, PLANK.hy);
+    for (const p of posts) b.weld(p, roof, [b.world.components.Position.x[slotOf(p)]!, y]);
+    y += 2 * PLANK.hy;
+    below = roof;
+    const blocks = o.blocks ?? 'seeded';
+    if (s > 0 && (blocks === 'seeded' ? b.rng.next() < 0.5 : s <= blocks)) b.box('block', cx, storeyBase + 0.31, 0.3, 0.3);
+  }
+  const stones = o.stones ?? 1;
+  const r = 0.3 + 0.02 * b.level;
+  for (let k = 0; k < stones; k++) b.stone(cx + (stones === 1 ? 0 : (k - 0.5) * 1.1), y + r + 0.01, r, o.stoneMass ?? 2 + 0.5 * b.level);
+  return { body: roof, x: cx, y };
+}
+
+/** A bridge plank between two roofs of the same height, welded to both. */
+function bridge(b: Builder, a: Roof, c: Roof): void {
+  const mid = (a.x + c.x) / 2;
+  const half = (c.x - a.x) / 2 - SPAN / 2 + 0.35;
+  const body = b.box('plank', mid, a.y + PLANK.hy, half, PLANK.hy);
+  b.weld(a.body, body, [mid - half + 0.15, a.y]);
+  b.weld(c.body, body, [mid + half - 0.15, a.y]);
+}
+
+/**
+ * A block of stone blocks `cols` wide and `rows` high centred at x = cx on the surface at height
+ * `base`, laid in bond (every other row shifted half a block, with half blocks at its ends; one block
+ * wide, a plain column), not glued. @returns the height of its top, m.
+ */
+function brickBlock(b: Builder, cx: number, base: number, cols: number, rows: number, brick: { hx: number; hy: number }): number {
+  const w = 2 * brick.hx;
+  const left = cx - (cols * w) / 2;
+  for (let r = 0; r < rows; r++) {
+    const y = base + brick.hy + r * 2 * brick.hy;
+    // One block wide: a plain column.
+    if (r % 2 === 0 || cols === 1) for (let c = 0; c < cols; c++) b.box('brick', left + (c + 0.5) * w, y, brick.hx - 0.005, brick.hy);
+    else {
+      b.box('brick', left + w / 4, y, brick.hx / 2 - 0.005, brick.hy);
+      for (let c = 0; c < cols - 1; c++) b.box('brick', left + (c + 1) * w, y, brick.hx - 0.005, brick.hy);
+      b.box('brick', left + cols * w - w / 4, y, brick.hx / 2 - 0.005, brick.hy);
+    }
+  }
+  return base + rows * 2 * brick.hy;
+}
+
+/**
+ * A hall of glass panes (or wooden posts) under wooden beams at x0 (its left pane) on the surface at
+ * height `base`: `bays` bays of BAY m, `floors` floors; each beam welded to the panes under it and
+ * the panes of the floor above to the beam they stand on. Crown stones stand in the upper floor's
+ * outer bays, glass blocks on the roof over the middle bay.
+ */
+function hall(b: Builder, x0: number, base: number, bays: number, floors: number, post: 'pane' | 'post'): void {
+  const p = post === 'pane' ? PANE : POST;
+  const kind = post === 'pane' ? 'block' : 'post';
+  let y = base,
+    beams: number[] = [];
+  for (let f = 0; f < floors; f++) {
+    const panes: number[] = [];
+    for (let i = 0; i <= bays; i++) {
+      const px = x0 + i * BAY;
+      const pane = b.box(kind, px, y + p.hy, p.hx, p.hy);
+      panes.push(pane);
+      const under = beams[Math.min(i, bays - 1)];
+      if (under !== undefined) b.weld(under, pane, [px, y]);
+    }
+    y += 2 * p.hy;
+    const next: number[] = [];
+    for (let i = 0; i < bays; i++) {
+      const beam = b.box('plank', x0 + (i + 0.5) * BAY, y + PLANK.hy, BAY / 2 - 0.005, PLANK.hy);
+      b.weld(panes[i]!, beam, [x0 + i * BAY, y]);
+      b.weld(panes[i + 1]!, beam, [x0 + (i + 1) * BAY, y]);
+      next.push(beam);
+    }
+    beams = next;
+    y += 2 * PLANK.hy;
+    if (f === floors - 2) {
+      const r = 0.3 + 0.02 * b.level;
+      b.stone(x0 + 0.5 * BAY, y + r + 0.01, r, 2 + 0.5 * b.level);
+      b.stone(x0 + (bays - 0.5) * BAY, y + r + 0.01, r, 2 + 0.5 * b.level);
+    }
+  }
+  const mid = x0 + (bays / 2) * BAY;
+  b.box('block', mid - 0.35, y + 0.3, 0.3, 0.3);
+  b.box('block', mid + 0.35, y + 0.3, 0.3, 0.3);
+}
+
+/** A static hill (an earth box) from minX to maxX, `height` m high, on the ground. */
+function hill(b: Builder, minX: number, maxX: number, height: number): void {
+  terrain(b, 'hill', minX, maxX, 0, height);
+}
+
+/**
+ * A pit from minX to maxX, `depth` m deep: the level's ground is made again as a slab either side of
+ * it (the left one is `Level.ground`) and the pit's floor.
+ */
+function pit(b: Builder, minX: number, maxX: number, depth: number): void {
+  removeBody(b.world, b.lv.ground);
+  b.lv.terrain = b.lv.terrain.filter((t) => t.body !== b.lv.ground);
+  b.lv.ground = terrain(b, 'ground', GROUND.minX, minX, -1, 0);
+  terrain(b, 'ground', maxX, GROUND.maxX, -1, 0);
+  terrain(b, 'pit', minX, maxX, -depth - 1, -depth);
+}
+
+/** A static earth box of `kind` over [minX, maxX] x [minY, maxY], m, listed in `Level.terrain`. @returns its body. */
+function terrain(b: Builder, kind: Terrain['kind'], minX: number, maxX: number, minY: number, maxY: number): number {
+  const body = addBox(b.world, {
+    position: [(minX + maxX) / 2, (minY + maxY) / 2],
+    halfExtents: [(maxX - minX) / 2, (maxY - minY) / 2],
+    static: true,
+    friction: 0.9,
+  });
+  b.lv.terrain.push({ body, kind, minX, maxX, minY, maxY });
+  return body;
+}
+
+/** The height of the surface (the top of the highest terrain box) at x, m; -Infinity off the ground. */
+export function surfaceAt(lv: Pick<Level, 'terrain'>, x: number): number {
+  let top = Number.NEGATIVE_INFINITY;
+  for (const t of lv.terrain) if (x >= t.minX && x <= t.maxX) top = Math.max(top, t.maxY);
+  return top;
+}
+
+/**
+ * The levels, in order: each a castle of its own shape and materials (a name shown to the player,
+ * the shots it allows, and its builder): one wooden tower, a keep of wood and stone, two towers joined
+ * by a bridge, a deck on stone piers, a tower down in a pit, a fort on a hill, a hall of glass,
+ * three towers, and a fortress. They come in the order of how hard they measured (the share of
+ * single throws over a grid of angles and powers that clear them), so each asks a little more than
+ * the one before. The castles stand 11 to 17 m out, so the catapult and the castle share the screen
+ * at a scale where a piece reads (a 1.2 m post about 55 px tall on a 1060 px wide view).
+ */
+const LEVELS: ReadonlyArray<{ name: string; shots: number; build: (b: Builder) => void }> = [
+  {
+    name: 'Watchtower',
+    shots: 3,
+    build: (b) => {
+      tower(b, 12 + b.rng.range(-1, 1), 0, 3, { stones: 1 });
+    },
+  },
+  {
+    name: 'Stone keep',
+    // A wooden tower on a plinth of stone blocks, crowned with a stone battlement (heavy: it brings
+    // the tower down with it), glass inside.
+    shots: 3,
+    build: (b) => {
+      const x = 13 + b.rng.range(-1, 1);
+      const top = brickBlock(b, x, 0, 4, 1, BRICK);
+      const roof = tower(b, x, top, 3, { stones: 0, blocks: 1 });
+      brickBlock(b, x, roof.y, 3, 1, BRICK);
+    },
+  },
+  {
+    name: 'Twin towers',
+    shots: 3,
+    build: (b) => {
+      const x0 = 12 + b.rng.range(-1, 1);
+      const first = tower(b, x0, 0, 2, { stones: 1 });
+      const second = tower(b, x0 + TOWER_PITCH, 0, 2, { stones: 1 });
+      bridge(b, first, second);
+    },
+  },
+  {
+    name: 'Stone bridge',
+    // A wooden deck on two stone piers, glass and a stone out in the middle of its span, a lookout
+    // over each pier.
+    shots: 4,
+    build: (b) => {
+      const x = 12 + b.rng.range(-0.5, 0.5);
+      const span = 5.2;
+      const top = brickBlock(b, x, 0, 1, 4, BRICK);
+      brickBlock(b, x + span, 0, 1, 4, BRICK);
+      // The deck: one long plank on a post on each pier, welded to both.
+      const deckY = top + 2 * POST.hy;
+      const postL = b.box('post', x, top + POST.hy, POST.hx, POST.hy);
+      const postR = b.box('post', x + span, top + POST.hy, POST.hx, POST.hy);
+      const mid = x + span / 2;
+      const deck = b.box('plank', mid, deckY + PLANK.hy, span / 2 + 0.9, PLANK.hy);
+      b.weld(postL, deck, [x, deckY]);
+      b.weld(postR, deck, [x + span, deckY]);
+      const on = deckY + 2 * PLANK.hy;
+      b.box('block', mid - 0.7, on + 0.3, 0.3, 0.3);
+      b.box('block', mid + 0.7, on + 0.3, 0.3, 0.3);
+      b.stone(mid, on + 0.36, 0.35, 3);
+      tower(b, x, on, 1, { stones: 1, span: 1.4, on: deck });
+      tower(b, x + span, on, 1, { stones: 1, span: 1.4, on: deck });
+    },
+  },
+  {
+    name: 'The pit',
+    // A tower standing in a pit 1.6 m deep: its lower storeys are behind the pit's wall, so throw
+    // high and drop onto it; the stone wall on the far rim holds the stones.
+    shots: 4,
+    build: (b) => {
+      const x = 13.5 + b.rng.range(-0.5, 0.5);
+      const depth = 1.6;
+      pit(b, x - 2.2, x + 2.2, depth);
+      tower(b, x, -depth, 3, { stones: 2, blocks: 2 });
+      const wallX = x + 3.4;
+      const top = brickBlock(b, wallX, 0, 2, 3, BRICK);
+      b.stone(wallX, top + 0.36, 0.35, 3);
+    },
+  },
+  {
+    name: 'Hill fort',
+    // A fort on a hill 2 m high: the hill's face stops a low throw; what is knocked off falls far.
+    shots: 4,
+    build: (b) => {
+      const x = 12.5 + b.rng.range(-0.5, 0.5);
+      const H = 2;
+      hill(b, x - 0.6, x + 6.4, H);
+      // A palisade of posts at the hill's front edge, a two-storey tower behind it and stones at the back.
+      for (let k = 0; k < 3; k++) b.box('post', x + 0.2 + 0.34 * k, H + POST.hy, POST.hx, POST.hy);
+      tower(b, x + 2.6, H, 2, { stones: 1, blocks: 1 });
+      b.box('block', x + 4.7, H + 0.3, 0.3, 0.3);
+      b.box('block', x + 4.7, H + 0.9, 0.3, 0.3);
+      b.stone(x + 5.6, H + 0.36, 0.35, 3);
+    },
+  },
+  {
+    name: 'Glass house',
+    // A long hall of glass panes under wooden beams, two floors, its stones on the upper floor.
+    shots: 4,
+    build: (b) => {
+      const x0 = 12 + b.rng.range(-0.5, 0.5);
+      hall(b, x0, 0, 3, 2, 'pane');
+    },
+  },
+  {
+    name: 'Three towers',
+    // Wood, then glass, then wood on a stone base, joined by bridges.
+    shots: 4,
+    build: (b) => {
+      const x0 = 11.5 + b.rng.range(-1, 1);
+      const a = tower(b, x0, 0, 3, { stones: 1, blocks: 1 });
+      const c = tower(b, x0 + TOWER_PITCH, 0, 3, { stones: 1, post: 'block' });
+      bridge(b, a, c);
+      const top = brickBlock(b, x0 + 2 * TOWER_PITCH, 0, 4, 2, BRICK);
+      tower(b, x0 + 2 * TOWER_PITCH, top, 2, { stones: 1, blocks: 1 });
+    },
+  },
+  {
+    name: 'Fortress',
+    // Four towers of four storeys, the outer two on stone bases, bridged; heavy stones on top.
+    shots: 5,
+    build: (b) => {
+      const x0 = 11 + b.rng.range(-1, 1);
+      let last: Roof | null = null;
+      for (let t = 0; t < 4; t++) {
+        const cx = x0 + t * TOWER_PITCH;
+        const base = t === 0 || t === 3 ? brickBlock(b, cx, 0, 4, 2, BRICK) : 0;
+        const roof = tower(b, cx, base, base > 0 ? 3 : 4, { stones: 2, blocks: 1, stoneMass: 5 });
+        if (last && Math.abs(last.y - roof.y) < 1e-6) bridge(b, last, roof);
+        last = roof;
+      }
+    },
+  },
+];
+
+/** Number of levels. */
+export const LEVEL_COUNT = LEVELS.length;
+
+/** The name of level `level` (0-based), as the player sees it. @throws RangeError out of [0, LEVEL_COUNT). */
+export function levelName(level: number): string {
+  const spec = LEVELS[level];
+  if (!Number.isInteger(level) || spec === undefined)
+    throw new RangeError(`levelName: level must be an integer in [0, ${LEVEL_COUNT}), got ${level}`);
+  return spec.name;
+}
+
+/**
+ * Builds level `o.level` into an empty `world`: the ground (its slabs, and a hill or a pit where the
+ * level has one), the catapult's mound, the level's castle (LEVELS: towers, a hall, a bridge, stone
+ * blocks; seeded variations) and a rock past it.
  * @throws RangeError if level is not an integer in [0, LEVEL_COUNT).
  */
 export function buildLevel(world: PhysicsWorld, o: LevelOptions): Level {
   if (!Number.isInteger(o.level) || o.level < 0 || o.level >= LEVEL_COUNT) {
     throw new RangeError(`buildLevel: level must be an integer in [0, ${LEVEL_COUNT}), got ${o.level}`);
   }
-  const ground = addBox(world, {
-    position: [(GROUND.minX + GROUND.maxX) / 2, -0.5],
-    halfExtents: [(GROUND.maxX - GROUND.minX) / 2, 0.5],
-    static: true,
-    friction: 0.9,
-  });
-  // The catapult's mound (static, under the catapult): 0.3 m high, from 1.2 m behind the cup to 0.6 m past it.
-  const mound = addBox(world, { position: [LAUNCH.x - 0.3, 0.15], halfExtents: [0.9, 0.15], static: true, friction: 0.9 });
-  const rng = new Rng(o.seed * 7919 + o.level);
+  const spec = LEVELS[o.level]!;
   const lv: Level = {
+    name: spec.name,
     pieces: [],
     joints: [],
     jointBodies: [],
-    shots: LEVEL_SHOTS[o.level]!,
+    shots: spec.shots,
     castleMinX: Infinity,
     castleMaxX: -Infinity,
     castleTop: 0,
-    ground,
-    mound,
+    ground: 0,
+    terrain: [],
+    mound: 0,
     rock: 0,
   };
-  const towers = LEVEL_TOWERS[o.level]!,
-    storeys = LEVEL_STOREYS[o.level]!;
-  const x0 = LEVEL_X0[o.level]! + rng.range(-1, 1);
-  const span = 2.4; // width of a storey: two posts under a plank
-  const weld = (a: number, b: number, anchor: [number, number]): void => {
-    lv.joints.push(addWeldJoint(world, { a, b, anchor, breakForce: o.jointStrength, breakTorque: o.jointStrength * 0.25 }));
-    lv.jointBodies.push([a, b]);
-  };
-  const piece = (body: number, kind: Piece['kind'], half: [number, number]): number => {
-    const P = world.components.Position,
-      s = slotOf(body);
-    lv.pieces.push({ body, startX: P.x[s]!, startY: P.y[s]!, kind, half });
-    return body;
-  };
-  // Round bodies slowed on the grass by `rollingResistance`: handle, radius (m) pairs.
+  // Round bodies slowed on the ground by `rollingResistance`: handle, radius (m) pairs.
   const rolling: number[] = [];
   thrown.set(world, rolling);
-  const POST = { hx: 0.15, hy: 0.6 },
-    PLANK = { hx: span / 2 + 0.2, hy: 0.12 };
-  for (let t = 0; t < towers; t++) {
-    const cx = x0 + t * (span + 1.2);
-    let y = 0,
-      below: number[] = [];
-    for (let s = 0; s < storeys; s++) {
-      const base = y;
-      const posts: number[] = [];
-      for (const side of [-1, 1]) {
-        const px = cx + side * (span / 2 - POST.hx);
-        const post = piece(
-          addBox(world, { position: [px, y + POST.hy], halfExtents: [POST.hx, POST.hy], density: 2, friction: 0.7 }),
-          'post',
-          [POST.hx, POST.hy],
-        );
-        posts.push(post);
-        // Glue the post to the plank under it.
-        if (below.length) weld(below[0]!, post, [px, y]);
-      }
-      y += 2 * POST.hy;
-      const plank = piece(
-        addBox(world, { position: [cx, y + PLANK.hy], halfExtents: [PLANK.hx, PLANK.hy], density: 2, friction: 0.7 }),
-        'plank',
-        [PLANK.hx, PLANK.hy],
-      );
-      for (const post of posts) weld(post, plank, [world.components.Position.x[slotOf(post)]!, y]);
-      y += 2 * PLANK.hy;
-      below = [plank];
-      // A block in the middle of some storeys, from the seed.
-      if (s > 0 && rng.next() < 0.5)
-        piece(addBox(world, { position: [cx, base + 0.31], halfExtents: [0.3, 0.3], density: 1.5, friction: 0.7 }), 'block', [0.3, 0.3]);
-    }
-    // Crown: a stone (or two) on the top plank.
-    const stones = o.level >= 2 ? 2 : 1;
-    for (let k = 0; k < stones; k++) {
-      const r = 0.3 + 0.04 * o.level;
-      const stone = piece(
-        addBody(world, {
-          position: [cx + (stones === 1 ? 0 : (k - 0.5) * 1.1), y + r + 0.01],
-          radius: r,
-          mass: 2 + o.level,
-          friction: 0.8,
-          restitution: 0.1,
-        }),
-        'stone',
-        [r, r],
-      );
-      rolling.push(stone, r);
-    }
-    lv.castleMinX = Math.min(lv.castleMinX, cx - span / 2 - 0.2);
-    lv.castleMaxX = Math.max(lv.castleMaxX, cx + span / 2 + 0.2);
-    lv.castleTop = Math.max(lv.castleTop, y + 0.6);
-    // A bridge plank between neighbouring towers' roofs, welded to both.
-    if (t > 0) {
-      const prevRoof = lv.pieces.filter((p) => p.kind === 'plank' && Math.abs(p.startY - (y - PLANK.hy)) < 1e-6);
-      const a = prevRoof[prevRoof.length - 2],
-        b = prevRoof[prevRoof.length - 1];
-      if (a && b) {
-        const mid = (a.startX + b.startX) / 2;
-        const bridge = piece(
-          addBox(world, { position: [mid, y + 0.12], halfExtents: [0.75, 0.12], density: 2, friction: 0.7 }),
-          'plank',
-          [0.75, 0.12],
-        );
-        weld(a.body, bridge, [mid - 0.6, y]);
-        weld(b.body, bridge, [mid + 0.6, y]);
-      }
-    }
-  }
-  addSystem(world, 'forces', rollingResistance(rolling));
+  const b: Builder = {
+    world,
+    lv,
+    rng: new Rng(o.seed * 7919 + o.level),
+    level: o.level,
+    box(kind, x, y, hx, hy) {
+      const m = MATERIAL[kind];
+      const body = addBox(world, { position: [x, y], halfExtents: [hx, hy], density: m.density, friction: m.friction });
+      return piece(body, kind, [hx, hy], x, y);
+    },
+    stone(x, y, r, mass) {
+      const body = addBody(world, { position: [x, y], radius: r, mass, friction: 0.8, restitution: 0.1 });
+      rolling.push(body, r);
+      return piece(body, 'stone', [r, r], x, y);
+    },
+    weld(a, c, anchor) {
+      lv.joints.push(addWeldJoint(world, { a, b: c, anchor, breakForce: o.jointStrength, breakTorque: o.jointStrength * 0.25 }));
+      lv.jointBodies.push([a, c]);
+    },
+  };
+  const piece = (body: number, kind: Piece['kind'], half: [number, number], x: number, y: number): number => {
+    lv.pieces.push({ body, startX: x, startY: y, kind, half });
+    lv.castleMinX = Math.min(lv.castleMinX, x - half[0]);
+    lv.castleMaxX = Math.max(lv.castleMaxX, x + half[0]);
+    lv.castleTop = Math.max(lv.castleTop, y + half[1]);
+    return body;
+  };
+  lv.ground = terrain(b, 'ground', GROUND.minX, GROUND.maxX, -1, 0);
+  // The catapult's mound (static, under the catapult): 0.3 m high, from 1.2 m behind the cup to 0.6 m past it.
+  lv.mound = addBox(world, { position: [LAUNCH.x - 0.3, 0.15], halfExtents: [0.9, 0.15], static: true, friction: 0.9 });
+  spec.build(b);
+  addSystem(world, 'forces', rollingResistance(rolling, lv));
   lv.rock = addBox(world, {
-    position: [lv.castleMaxX + ROCK.gap + ROCK.hx, ROCK.hy],
+    position: [lv.castleMaxX + ROCK.gap + ROCK.hx, surfaceAt(lv, lv.castleMaxX + ROCK.gap + ROCK.hx) + ROCK.hy],
     halfExtents: [ROCK.hx, ROCK.hy],
     static: true,
     friction: 0.9,
@@ -294,13 +598,25 @@ export function predictArc(x0: number, y0: number, vx: number, vy: number, g: nu
 const thrown = new WeakMap<PhysicsWorld, number[]>();
 
 /**
+ * The round bodies the grass slows in `world` (handle, radius pairs; `launch` adds each throw): a
+ * tool that restores a snapshot of the world sets its length back to what it was at the snapshot,
+ * so the throws made since are not slowed twice when their handles are used again.
+ * @throws Error if no level was built in `world`.
+ */
+export function rollingBodies(world: PhysicsWorld): number[] {
+  const list = thrown.get(world);
+  if (list === undefined) throw new Error('rollingBodies: no level was built in this world (buildLevel)');
+  return list;
+}
+
+/**
  * A forces-stage system: each round body of `list` (handle, radius pairs: the projectiles and the
- * castle's crown stones) touching the ground (its bottom within 3 cm of y = 0, on the ground's
- * length) gets a force against its motion of ROLL_RESISTANCE x its weight and a torque against its
+ * castle's crown stones) touching the ground (its bottom within 3 cm of the level's surface under
+ * it, `surfaceAt`: the ground, a hill's top or a pit's floor) gets a force against its motion of ROLL_RESISTANCE x its weight and a torque against its
  * spin of as much at its rim, each capped so that it stops the body within the substep rather than
  * turn it back. A stone knocked off the castle so stops near it instead of rolling back to the catapult.
  */
-function rollingResistance(list: number[]): (w: PhysicsWorld) => void {
+function rollingResistance(list: number[], lv: Pick<Level, 'terrain'>): (w: PhysicsWorld) => void {
   return (w) => {
     const c = w.components,
       h = w.dt / w.substeps,
@@ -311,7 +627,7 @@ function rollingResistance(list: number[]): (w: PhysicsWorld) => void {
       if (!isAlive(w, b)) continue;
       const s = slotOf(b);
       const x = c.Position.x[s]!;
-      if (c.Position.y[s]! - r > 0.03 || x < GROUND.minX || x > GROUND.maxX) continue;
+      if (c.Position.y[s]! - r - surfaceAt(lv, x) > 0.03) continue;
       const m = c.Mass.value[s]!,
         f = ROLL_RESISTANCE * m * g;
       const vx = c.Velocity.x[s]!,
@@ -343,14 +659,24 @@ export interface Tally {
   score: number;
 }
 
-/** Whether a piece has fallen: dropped FALL_DROP below its start, off the ground's end, or removed. */
+/**
+ * Whether a piece has fallen: dropped FALL_DROP below its start, knocked KNOCK_DISTANCE from it, a
+ * box (not a round stone) turned past TIP_ANGLE from its start (every piece is built upright), off
+ * the ground's end (past its ends, or 3 m down: below every level's surface, the deepest pit's
+ * floor being 1.6 m down), or removed.
+ */
 export function hasFallen(world: PhysicsWorld, p: Piece): boolean {
   if (!isAlive(world, p.body)) return true;
   const s = slotOf(p.body),
     P = world.components.Position;
   const x = P.x[s]!,
     y = P.y[s]!;
-  return y < p.startY - FALL_DROP || x < GROUND.minX || x > GROUND.maxX || y < -1;
+  if (y < p.startY - FALL_DROP || x < GROUND.minX || x > GROUND.maxX || y < -3) return true;
+  if (Math.hypot(x - p.startX, y - p.startY) > KNOCK_DISTANCE) return true;
+  if (p.kind === 'stone') return false;
+  // The turn from upright, wrapped into [0, pi].
+  const a = Math.abs(world.components.Angle.value[s]! % (2 * Math.PI));
+  return Math.min(a, 2 * Math.PI - a) > TIP_ANGLE;
 }
 
 /**

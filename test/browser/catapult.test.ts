@@ -4,6 +4,7 @@
  * that overshoots or falls short says by how much, with an arrow to where it went; P pauses.
  */
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { LEVEL_COUNT, levelName } from '../../games/catapult/scene';
 import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
 
 interface Cam {
@@ -236,6 +237,24 @@ describe('catapult', () => {
     expect(g.errors).toEqual([]);
   });
 
+  it('a low throw that comes down short says by how much it fell short, not where it topped out', async () => {
+    // 12 m/s at 5 degrees comes down about 8 m out (drag-free), 2.5 m short of level 1's castle (at
+    // 10.5 m). The verdict took where the throw first went down under the castle's top: for a throw
+    // that never rose over it, its top, 1.3 m out ("Short by 9 m").
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as CatapultGame;
+      w.paused = false;
+      w.params.level = 1;
+      w.reset();
+      const a = (5 * Math.PI) / 180;
+      w.fire((-12 / 7) * Math.cos(a), (-12 / 7) * Math.sin(a));
+    });
+    await g.waitFor(() => (window.game as unknown as CatapultGame).lastVerdict() !== '', null);
+    const verdict = await g.page.evaluate(() => (window.game as unknown as CatapultGame).lastVerdict());
+    expect(verdict).toMatch(/^Short by [2-4] m: pull further back$/);
+    expect(g.errors).toEqual([]);
+  });
+
   it('one level score everywhere, the star rule shown, and a retry (R) takes its points out of Total', async () => {
     type W = CatapultGame & { shownScore(): number; total(): number; bannerText(): string };
     await g.page.evaluate(() => {
@@ -316,7 +335,8 @@ describe('catapult', () => {
     expect(g.errors).toEqual([]);
   });
   it('the end screen after skipped levels names them instead of claiming every castle fell', async () => {
-    // L on a level not yet cleared moves on without counting it (levels 1 to 4 here), as a stranger did.
+    // L on a level not yet cleared moves on without counting it (levels 1 to 8 here), as a stranger
+    // did; each level's name shows in the banner before its first throw.
     await g.page.evaluate(() => {
       const w = window.game as unknown as CatapultGame;
       w.campaign.scores.fill(0);
@@ -324,11 +344,16 @@ describe('catapult', () => {
       w.params.level = 1;
       w.reset();
     });
-    for (let n = 2; n <= 5; n++) {
+    const banner = () => g.page.evaluate(() => (window.game as unknown as CatapultGame & { bannerText(): string }).bannerText());
+    await g.frames(2);
+    expect(await banner()).toContain(`Level 1: ${levelName(0)}`);
+    for (let n = 2; n <= LEVEL_COUNT; n++) {
       await g.page.keyboard.press('l');
       await g.waitFor((n) => (window.game as unknown as CatapultGame).params.level === n, n);
+      await g.frames(2);
+      expect(await banner()).toContain(`Level ${n}: ${levelName(n - 1)}`);
     }
-    // Level 5 cleared: one throw, then every piece marked as fallen (the tally keeps a piece's fall).
+    // The last level cleared: one throw, then every piece marked as fallen (the tally keeps a piece's fall).
     await g.page.evaluate(() => {
       const w = window.game as unknown as CatapultGame;
       w.paused = true;
@@ -343,10 +368,11 @@ describe('catapult', () => {
       const w = window.game as unknown as CatapultGame & { bannerText(): string };
       return { text: w.bannerText(), stars: [...w.campaign.stars] };
     });
-    expect(end.stars).toEqual([0, 0, 0, 0, 3]);
-    expect(end.text).not.toContain('All 5 castles down');
-    expect(end.text).toContain('1 of 5 castles down (levels 1, 2, 3, 4 not cleared)');
-    expect(end.text).toContain('Stars 3 / 15');
+    expect(end.stars).toEqual([...new Array(LEVEL_COUNT - 1).fill(0), 3]);
+    expect(end.text).not.toContain(`All ${LEVEL_COUNT} castles down`);
+    const skipped = Array.from({ length: LEVEL_COUNT - 1 }, (_, i) => i + 1).join(', ');
+    expect(end.text).toContain(`1 of ${LEVEL_COUNT} castles down (levels ${skipped} not cleared)`);
+    expect(end.text).toContain(`Stars 3 / ${3 * LEVEL_COUNT}`);
     expect(g.errors).toEqual([]);
   });
 

@@ -348,6 +348,38 @@ describe('phone controls', () => {
       await g.waitFor(steadyOn, null);
     });
     await g.waitFor(() => !(window.game as unknown as { handles(): { controls: { steady: boolean } } }).handles().controls.steady, null);
+    // A finger on the ball drags it over the ground (60 px down the screen: toward the camera):
+    // while it holds the ball, the depth cues show (a plumb line to its mark on the ground, the
+    // swing's track).
+    type Held = {
+      handles(): { ball: number };
+      renderer: { drawnPosition(e: number): number[] | null };
+      swings(): { used: number };
+      cues(): { plumb: boolean; track: boolean };
+      app: {
+        canvas: HTMLCanvasElement;
+        camera: { position: { clone(): { set(x: number, y: number, z: number): { project(c: unknown): { x: number; y: number } } } } };
+      };
+    };
+    const ball = await g.page.evaluate(() => {
+      const game = window.game as unknown as Held;
+      const at = game.renderer.drawnPosition(game.handles().ball)!;
+      const s = game.app.camera.position.clone().set(at[0]!, at[1]!, at[2]!).project(game.app.camera);
+      const box = game.app.canvas.getBoundingClientRect();
+      return { x: box.left + ((s.x + 1) / 2) * box.width, y: box.top + ((1 - s.y) / 2) * box.height, used: game.swings().used };
+    });
+    let cues = { plumb: false, track: false };
+    await touchPath(
+      g.page,
+      [0, 15, 30, 45, 60].map((d) => [ball.x, ball.y + d] as [number, number]),
+      400,
+      async () => {
+        cues = await g.page.evaluate(() => (window.game as unknown as Held).cues());
+      },
+    );
+    expect(cues).toMatchObject({ plumb: true, track: true });
+    // The drag let go is a swing of the level's four.
+    expect(await g.page.evaluate(() => (window.game as unknown as Held).swings().used)).toBe(ball.used + 1);
     expect(await g.page.locator('.bp-big').count()).toBe(0);
     // Count every piece as fallen: the level is cleared and the button appears; a tap goes on.
     await g.page.evaluate(() => {

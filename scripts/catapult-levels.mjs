@@ -1,0 +1,81 @@
+// `node scripts/catapult-levels.mjs [--seed=S] [--share=F] [level ...]`: checks that the catapult's
+// levels (1-based; default every level) can be cleared within their shots. For each, a coarse greedy
+// search over pull angle and power (games/catapult/solve.ts searchLevel, headless) for throws that
+// bring down F of the castle's pieces (default 0.5: a clear, one star; 0.75 two stars, 0.95 three),
+// on seed S (default 1, the page's). Prints each level's throws and what they brought down, then the
+// throws as a LEVEL_SOLUTIONS literal for games/catapult/solve.ts (the test replays those).
+// Exits 1 when a level was not cleared. Takes a few seconds a level (a minute for the last at 0.95).
+// With --spread, instead: how hard each level is, as how many of 36 single throws (angles 10 to 60
+// degrees by 10, powers 50 to 100 % by 10) clear it (the levels come in that order, easiest first).
+import { mkdtempSync, rmSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { pathToFileURL } from 'node:url';
+import * as esbuild from 'esbuild';
+import { root } from './build.mjs';
+
+const args = process.argv.slice(2);
+const option = (name, fallback) => {
+  const a = args.find((x) => x.startsWith(`--${name}=`));
+  return a === undefined ? fallback : Number(a.slice(name.length + 3));
+};
+const seed = option('seed', 1);
+const share = option('share', 0.5);
+if (!Number.isInteger(seed)) throw new RangeError(`catapult-levels: --seed must be an integer, got ${seed}`);
+if (!(share > 0 && share <= 1)) throw new RangeError(`catapult-levels: --share must be in (0, 1], got ${share}`);
+
+// The solver and the level rules are TypeScript: bundled (the packages from their sources) into a
+// temporary module.
+const dir = mkdtempSync(join(tmpdir(), 'catapult-levels-'));
+const out = join(dir, 'solve.mjs');
+try {
+  await esbuild.build({
+    entryPoints: [join(root, 'games/catapult/solve.ts')],
+    bundle: true,
+    format: 'esm',
+    platform: 'node',
+    outfile: out,
+    conditions: ['bitphysics-source'],
+    logLevel: 'error',
+  });
+  const { searchLevel, playThrows, levelName, LEVEL_COUNT } = await import(pathToFileURL(out).href);
+  const levels = args.filter((a) => !a.startsWith('--')).map(Number);
+  for (const n of levels)
+    if (!(Number.isInteger(n) && n >= 1 && n <= LEVEL_COUNT))
+      throw new RangeError(`catapult-levels: levels are 1 to ${LEVEL_COUNT}, got ${n}`);
+  const chosen = levels.length ? levels : Array.from({ length: LEVEL_COUNT }, (_, i) => i + 1);
+  if (args.includes('--spread')) {
+    for (const n of chosen) {
+      let clear = 0,
+        best = 0,
+        pieces = 0;
+      for (let angle = 10; angle <= 60; angle += 10)
+        for (let p = 50; p <= 100; p += 10) {
+          const r = playThrows(n - 1, seed, [{ angle, power: p / 100 }]);
+          pieces = r.pieces;
+          best = Math.max(best, r.fallen);
+          if (r.cleared) clear++;
+        }
+      console.log(`level ${n} ${levelName(n - 1)}: ${clear} of 36 single throws clear it; the best brings down ${best} of ${pieces}`);
+    }
+  }
+  const found = [];
+  let failed = 0;
+  for (const n of args.includes('--spread') ? [] : chosen) {
+    const t0 = performance.now();
+    const r = searchLevel(n - 1, seed, { share });
+    const throws = r.throws.map((t) => ({ angle: t.angle, power: Math.round(100 * t.power) / 100 }));
+    found.push([n, throws]);
+    if (!r.cleared) failed++;
+    console.log(
+      `level ${n} ${levelName(n - 1)}: ${r.cleared ? 'done' : 'NOT done'}, ${r.fallen} down with ${throws.length} ${throws.length === 1 ? 'throw' : 'throws'} ${throws
+        .map((t) => `${t.angle}° ${Math.round(100 * t.power)} %`)
+        .join(', ')} (${((performance.now() - t0) / 1000).toFixed(1)} s)`,
+    );
+  }
+  if (found.length > 0) console.log(`\nLEVEL_SOLUTIONS (seed ${seed}, share ${share}):`);
+  for (const [n, throws] of found) console.log(`  // ${n}\n  ${JSON.stringify(throws).replaceAll('"', '')},`);
+  process.exitCode = failed > 0 ? 1 : 0;
+} finally {
+  rmSync(dir, { recursive: true, force: true });
+}
