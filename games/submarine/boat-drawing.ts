@@ -2,7 +2,8 @@
  * How the submarine is drawn (drawing only, no physics): a yellow hull with a rounded bow and a
  * tapered stern, the sail with its periscope, the rudder and stern planes, a screw whose blades turn
  * with the throttle, lit portholes, windows into the two ballast tanks showing their water, and a
- * headlight that shows in the dark of the deep. The hull is given in its own coordinates (u along it
+ * headlight that shows in the dark of the deep, and the dive planes at the bow and the stern, turned
+ * as the helm turns them. The hull is given in its own coordinates (u along it
  * towards the bow, v up across it, m) through `pt`, which maps them to the screen.
  */
 
@@ -29,6 +30,8 @@ export interface BoatPicture {
   depth: number;
   /** Whether the hull is scraping the seabed (it flashes red). */
   touching: boolean;
+  /** The dive planes' angle, rad (positive: leading edge up, lifting); drawn at the bow and the stern. Default 0. */
+  planes?: number;
 }
 
 /** Colours of the boat. */
@@ -155,6 +158,23 @@ export function drawBoat(g: Graphics, b: BoatPicture): void {
           [u - 0.9, lo + (hi - lo) * f],
         ]),
       ).fill({ color: 0x4fb0ff, alpha: 0.9 });
+  }
+  // The dive planes: a foil at the bow and one at the stern (seen side on), turned about their middle.
+  const delta = b.planes ?? 0,
+    dc = Math.cos(delta),
+    ds = Math.sin(delta);
+  for (const [cu, cv, chord] of [
+    [L - 2.4, H * 0.1, 1.8],
+    [-L + 1.4, 0, 1.5],
+  ] as const) {
+    const foil: number[][] = [
+      [chord / 2, 0],
+      [chord / 4, 0.2],
+      [-chord / 2, 0.06],
+      [-chord / 2, -0.06],
+      [chord / 4, -0.2],
+    ].map(([fu, fv]) => [cu + fu! * dc - fv! * ds, cv + fu! * ds + fv! * dc]);
+    g.poly(poly(foil)).fill(STEEL).stroke({ color: OUTLINE, width: 1 });
   }
   // Portholes between the tanks, lit from inside.
   const lit = Math.min(1, 0.55 + b.depth / 80);

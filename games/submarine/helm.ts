@@ -1,18 +1,23 @@
 /**
- * The submarine's helm: turns the pilot's held keys into ballast targets, vertical thrusters and
- * screw thrust each step, the way a small submersible's control system does. The physics stays the
- * scene's own (Archimedes' buoyancy, the tanks' mass, quadratic drag); the helm only decides what
- * the pumps, vents and thrusters do.
+ * The submarine's helm: turns the pilot's held keys into ballast targets, vertical thrusters, dive
+ * planes and screw thrust each step, the way a small submersible's control system does. The physics
+ * stays the scene's own (Archimedes' buoyancy, the tanks' mass, quadratic drag) and the planes'
+ * (./planes.ts: lift of the water flowing past); the helm only decides what the pumps, vents,
+ * thrusters and planes do.
  *
- * - Dive / Rise (held): the tanks go heavier / lighter than neutral (enough to carry the boat at
- *   `HELM.diveSpeed` (`HELM.climbSpeed` rising) against drag, more while it is slower than that) and the vertical thrusters
- *   push at once, so the boat starts to move before the water has moved; the bow dips (rises) by
- *   `HELM.diveAngle`. On the surface Dive floods the tanks from empty, the fore tank first. Rise
- *   slows the climb near the surface and blows the tanks dry once the deck is out.
- * - Released under water: depth hold at the depth where the key was let go. The boat's momentum
- *   carries it on (under 8 m from a full-speed dive: the thrusters push at once and the tanks blow
- *   as far as needed), then the helm brings it back to that depth, tanks at neutral, within 8 s.
- *   Released on the surface: the tanks stay blown and the boat floats.
+ * - The depth order (`HelmState.holdY`, the gauge's ordered depth): Dive / Rise (held) move it down /
+ *   up at `HELM.diveSpeed` (`HELM.climbSpeed`) times the stick's share, from the boat, never further
+ *   ahead of it than the boat can stop in at `HELM.brake` (plus `HELM.orderLead`) and never nearer.
+ *   Let go, the order stays and the boat stops on it without passing it (`approach`), so the gauge
+ *   shows at all times where the boat will stop.
+ * - Dive / Rise (held): the vertical thrusters and the planes push at once, so the boat starts to
+ *   move before the water in the tanks has moved; the tanks go heavier / lighter than neutral
+ *   (enough to carry the boat at the asked speed against drag, more while it is slower than that);
+ *   the bow dips (rises) by `HELM.diveAngle`. On the surface Dive floods the tanks from empty, the
+ *   fore tank first. Rise slows the climb near the surface and blows the tanks dry once the deck is
+ *   out. Released on the surface: the tanks stay blown and the boat floats.
+ * - Under way the planes give first what they can of the push across the hull (their lift grows
+ *   with the speed squared), the thrusters the rest, and the helm brakes harder by their share.
  * - Nose down / up (held): pitch to `HELM.noseAngle` by the thrusters at once and by moving water
  *   between the tanks; meanwhile the thrusters stop the hull sliding across its axis, so with the
  *   screw ahead the boat follows its nose. Released, the hull levels out and the depth is held.
@@ -26,6 +31,7 @@
 import type { PhysicsWorld } from '@bitphysics/physics';
 import { setBallastTarget, setBodyThrust } from '@bitphysics/physics';
 import { SUBMARINE, SUBMARINE_NEUTRAL_FILL, type SubmarineHandles, setSubmarineThrusters } from '@bitphysics/projects';
+import { divePlanes, PLANES, planeLift } from './planes';
 
 /** Held controls this step: each true while its key or on-screen button is down. */
 export interface HelmInput {
@@ -71,18 +77,23 @@ export interface HelmState {
   fill: number;
   /** Half the fore-minus-aft fill difference asked for (positive: nose down), in [-0.5, 0.5]. */
   trim: number;
-  /** Depth held, as the hull's y, m (negative under water); NaN while none is held. */
+  /**
+   * The depth order, as the hull's y, m (negative under water): where the boat is going and will
+   * stop (see the header); NaN while none (surfaced, steering by the nose, braking after a bump).
+   */
   holdY: number;
   /** Vertical thrusters' push last commanded, N: fore and aft, positive up across the hull. */
   fore: number;
   aft: number;
+  /** Dive planes' angle last commanded, rad, in [-PLANES.maxAngle, PLANES.maxAngle] (positive: lifting). */
+  planes: number;
   /** What the helm is doing: 'surfaced', 'diving', 'rising', 'steering' (a Nose key), 'braking' or 'holding'. */
   mode: 'surfaced' | 'diving' | 'rising' | 'steering' | 'braking' | 'holding';
 }
 
 /** A new helm state: screw stopped, tanks empty (the scene's start), no depth held. */
 export function createHelmState(fill = 0): HelmState {
-  return { throttle: 0, fill, trim: 0, holdY: Number.NaN, fore: 0, aft: 0, mode: 'surfaced' };
+  return { throttle: 0, fill, trim: 0, holdY: Number.NaN, fore: 0, aft: 0, planes: 0, mode: 'surfaced' };
 }
 
 const DEG = Math.PI / 180;
@@ -109,9 +120,18 @@ export const HELM = Object.freeze({
   /** Pitch diving (bow down) or rising (bow up) adds, rad (5 degrees). */
   diveAngle: 5 * DEG,
   /** Time constant of the vertical speed loop, s: the thrusters push m dv / heaveTime. */
-  heaveTime: 0.4,
-  /** Depth hold: climb asked per metre of depth error, 1/s (the P of the hold's PD law; the D is the speed loop). */
-  holdGain: 0.5,
+  heaveTime: 0.2,
+  /** Depth hold: climb asked per metre of depth error near the order, 1/s (the P of the hold's PD law; the D is the speed loop). */
+  holdGain: 1.5,
+  /**
+   * Deceleration the helm plans to stop on the order with at rest, m/s^2: what the thrusters' 600 kN
+   * give 110 t; the drag and the tanks blowing (392 kN/s) make up for the share the pitch takes.
+   */
+  brake: 5.5,
+  /** Share of the dive planes' lift at full angle the helm counts on when it plans a stop under way. */
+  planesShare: 0.6,
+  /** How far the order runs ahead of a boat at rest when Dive or Rise is pressed, m (see orderReach). */
+  orderLead: 0.5,
   /** Vertical speed under which braking after a bounce off the seabed ends and that depth is held, m/s. */
   holdSpeed: 0.3,
   /** Pitch loop of the thrusters: torque per radian of pitch error, N m / rad. */
@@ -129,6 +149,31 @@ export const HELM = Object.freeze({
 });
 
 const clamp = (v: number, lo: number, hi: number): number => (v < lo ? lo : v > hi ? hi : v);
+
+/** The distance a boat at vertical speed `vy` (m/s) stops in at the deceleration `brake` (m/s^2, > 0), m. */
+export function stopping(vy: number, brake: number = HELM.brake): number {
+  return (vy * vy) / (2 * brake);
+}
+
+/**
+ * How far the depth order may run ahead of a boat moving at vertical speed `vy`, m/s: its stopping
+ * distance at the deceleration `brake` (m/s^2, > 0) plus `HELM.orderLead`, so a boat let go stops on
+ * the order.
+ */
+export function orderReach(vy: number, brake: number = HELM.brake): number {
+  return HELM.orderLead + stopping(vy, brake);
+}
+
+/**
+ * The vertical speed asked for to close a depth error `error` (the order's y minus the hull's, m):
+ * at most `most` (m/s), at most the speed from which the boat stops in `error` at the deceleration
+ * `brake` (m/s^2, > 0), and `HELM.holdGain` per metre near the order, so the boat slows onto it
+ * without passing it.
+ */
+export function approach(error: number, most: number, brake: number = HELM.brake): number {
+  const d = Math.abs(error);
+  return Math.sign(error) * Math.min(most, Math.sqrt(2 * brake * d), HELM.holdGain * d);
+}
 
 /**
  * One step of the helm: reads the hull (position, velocity, angle, mass) and the sea's surface,
@@ -160,32 +205,45 @@ export function steer(world: PhysicsWorld, handles: SubmarineHandles, input: Hel
     rise = input.rise && !input.dive;
   const neutral = SUBMARINE_NEUTRAL_FILL;
 
-  // Vertical: the speed asked for (NaN: none asked) and the tanks' mean target.
+  // The boat under way brakes harder: its planes (./planes.ts) add up to their lift at full angle.
+  const u = c.Velocity.x[e]! * Math.cos(angle) + vy * Math.sin(angle);
+  const submerged = clamp((surface - (y - S.height / 2)) / S.height, 0, 1);
+  const brake = HELM.brake + (HELM.planesShare * Math.abs(planeLift(PLANES.maxAngle, u, submerged))) / mass;
+  // Vertical: the depth ordered (state.holdY), the speed asked for (NaN: none asked) and the tanks' mean target.
   let vCmd = Number.NaN;
   if (dive) {
+    // The order runs down at the asked speed from where the boat is, never further ahead of it than
+    // it can stop in (orderReach), so that when the key is let go the boat stops on the order.
     state.mode = 'diving';
-    vCmd = -HELM.diveSpeed * heaveAsked;
+    const ask = HELM.diveSpeed * heaveAsked;
+    const from = Number.isNaN(state.holdY) ? y : Math.min(state.holdY, y);
+    state.holdY = Math.min(Math.max(from - ask * dt, y - orderReach(vy, brake)), y - stopping(Math.min(0, vy), brake));
+    vCmd = -ask;
   } else if (top > surface || (state.mode === 'surfaced' && top > surface - HELM.surfaceBand)) {
     // On the surface and not told to dive: tanks blown, the boat floats (Rise there does the same).
     // It stays surfaced while it bobs within surfaceBand of the surface.
     state.mode = 'surfaced';
   } else if (rise) {
     state.mode = 'rising';
+    const ask = HELM.climbSpeed * heaveAsked;
+    const from = Number.isNaN(state.holdY) ? y : Math.max(state.holdY, y);
+    state.holdY = Math.max(Math.min(from + ask * dt, y + orderReach(vy, brake)), y + stopping(Math.max(0, vy), brake));
     // Slower near the surface, so the boat comes up to it gently instead of leaping out.
-    vCmd = Math.min(HELM.climbSpeed * heaveAsked, HELM.surfacingSpeed + HELM.holdGain * (surface - top));
+    vCmd = Math.min(ask, HELM.surfacingSpeed + HELM.holdGain * (surface - top));
   } else if (input.noseDown !== input.noseUp) {
     // Steering by the nose: no depth held, so with the screw ahead the boat follows its nose.
     state.mode = 'steering';
   } else {
-    // Let go: hold the depth where the key was released (the boat's momentum carries it on a few
-    // metres, then the helm brings it back). After a bounce off the seabed (holdY cleared while
-    // braking or holding) the helm brakes first and holds where the boat stops instead.
-    if (state.mode !== 'braking' && state.mode !== 'holding') state.holdY = y;
+    // Let go: the boat goes on to the order and holds it. Coming from steering (no order) the order
+    // is where the boat can stop. After a bounce off the seabed (holdY cleared while braking or
+    // holding) the helm brakes first and holds where the boat stops instead.
+    if (state.mode === 'steering' || (state.mode === 'surfaced' && Number.isNaN(state.holdY)))
+      state.holdY = y + Math.sign(vy) * stopping(vy, brake);
     if (Number.isNaN(state.holdY) && Math.abs(vy) < HELM.holdSpeed) state.holdY = y;
     state.mode = Number.isNaN(state.holdY) ? 'braking' : 'holding';
-    vCmd = Number.isNaN(state.holdY) ? 0 : clamp(HELM.holdGain * (state.holdY - y), -HELM.climbSpeed, HELM.climbSpeed);
+    vCmd = Number.isNaN(state.holdY) ? 0 : approach(state.holdY - y, HELM.climbSpeed, brake);
   }
-  if (state.mode !== 'braking' && state.mode !== 'holding') state.holdY = Number.NaN;
+  if (state.mode !== 'braking' && state.mode !== 'holding' && state.mode !== 'diving' && state.mode !== 'rising') state.holdY = Number.NaN;
   if (state.mode === 'surfaced') state.fill = 0;
   else if (Number.isNaN(vCmd)) state.fill = neutral;
   else {
@@ -200,7 +258,16 @@ export function steer(world: PhysicsWorld, handles: SubmarineHandles, input: Hel
   // own axis (the speed v_n = -vx sin(angle) + vy cos(angle)), so it goes where it points, as a moving
   // boat does with its hydroplanes; otherwise they chase the vertical speed asked for.
   const vn = -c.Velocity.x[e]! * Math.sin(angle) + vy * Math.cos(angle);
-  const heave = state.mode === 'steering' ? (-mass * vn) / HELM.heaveTime : Number.isNaN(vCmd) ? 0 : (mass * (vCmd - vy)) / HELM.heaveTime;
+  let heave = state.mode === 'steering' ? (-mass * vn) / HELM.heaveTime : Number.isNaN(vCmd) ? 0 : (mass * (vCmd - vy)) / HELM.heaveTime;
+  // The dive planes (./planes.ts) give what they can of that push first (the water's flow past a
+  // boat under way lifts for nothing), turning at their rate; the thrusters give the rest.
+  const planes = divePlanes(world, handles);
+  const perRadian = planeLift(1, u, submerged);
+  const want = state.mode === 'surfaced' || Math.abs(perRadian) < 1 ? 0 : clamp(heave / perRadian, -PLANES.maxAngle, PLANES.maxAngle);
+  const turn = PLANES.rate * dt;
+  planes[0] = clamp(want, planes[0]! - turn, planes[0]! + turn);
+  state.planes = planes[0]!;
+  heave -= planeLift(state.planes, u, submerged);
 
   // Pitch: the angle asked for (positive: nose up), by the thrusters now and by the water for good.
   const pitch =

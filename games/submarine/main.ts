@@ -1,8 +1,11 @@
 /**
- * Submarine: the book's submarine (Ramtal and Dobre ch. 16) as a game. Hold Dive or Rise: the vents
- * flood or blow the ballast tanks and the vertical thrusters push at once; let go under water and the
- * helm holds the depth (./helm.ts). Hold Nose down or up to pitch, and drive the screw ahead or
- * astern. The hull floats by Archimedes (its submerged part of a 12 m x 3 m box), drags in proportion
+ * Submarine: the book's submarine (Ramtal and Dobre ch. 16) as a game. Hold Dive or Rise: the depth
+ * ordered (a dashed line by the hull and a cyan mark on the depth gauge at the scene's right edge)
+ * runs down or up at once, the vertical thrusters and (under way) the dive planes push at once and the
+ * vents flood or blow the ballast tanks; let go and the boat stops on the ordered depth and holds it
+ * (./helm.ts, ./planes.ts). Hold Nose down or up to pitch, and drive the screw ahead or astern. A trail
+ * of glowing plankton leads from beacon to beacon round the mines (./trail.ts): each glow caught
+ * scores, more for a streak of them. The hull floats by Archimedes (its submerged part of a 12 m x 3 m box), drags in proportion
  * to how much of it is under water and bobs in the waves. Collect every beacon before three hits
  * (a scrape on the seabed, or a moored mine laid across the way between two beacons: ./mines.ts)
  * break the hull, inside the course's par time if you can: a won run earns a star for the beacons,
@@ -35,6 +38,7 @@ import { createHelmState, type HelmInput, steer } from './helm';
 import { layMines, MINE_BLAST_IMPULSE, MINE_RADIUS, type Mine, parTime, touchesMine } from './mines';
 import { drawFish } from './sea-life';
 import { seabedInput, touchSeabed } from './seabed';
+import { type Glow, layTrail, touchesGlow } from './trail';
 
 const params = {
   seed: seedParam(),
@@ -61,12 +65,32 @@ const state = {
   par: 0,
   lastHit: '' as '' | 'seabed' | 'mine',
   minesHit: 0,
+  /** Glows of the trail caught, the streak of glows caught one after another without missing one, and the score. */
+  glowsCaught: 0,
+  streak: 0,
+  score: 0,
 };
 let handles: SubmarineHandles;
 let taken: boolean[] = [];
 /** The course's moored mines (./mines.ts) and whether each is still live (a mine that went off is gone). */
 let mines: Mine[] = [];
 let mineLive: boolean[] = [];
+/** The course's glow trail (./trail.ts), and each glow's state: 0 to catch, 1 caught, 2 missed (passed by). */
+let glows: Glow[] = [];
+let glowState = new Uint8Array(0);
+/** Glows caught, for the sparkle drawn at each: where (m), when (game time, s) and the points it scored. */
+const glowPops: { x: number; y: number; time: number; points: number }[] = [];
+/** How long a caught glow's sparkle lasts, s of game time. */
+const GLOW_POP_LIFE = 0.7;
+/** Points: a glow (times the streak, up to GLOW_STREAK_MAX), a beacon, and each second a won run beats par by. */
+const GLOW_POINTS = 10,
+  GLOW_STREAK_MAX = 5,
+  BEACON_POINTS = 100,
+  PAR_POINTS = 5;
+/** A glow the hull's centre has passed by this far along x without catching it is missed (the streak ends), m. */
+const GLOW_MISS = 10;
+/** The depth gauge's full scale: the deepest seabed of the course and 10 m, rounded up to 10 m. */
+let courseDepth = 160;
 /** Mine blasts, for drawing: where (m) and when (game time, s). */
 const blasts: { x: number; y: number; time: number }[] = [];
 /** How long a blast's flash and bubbles last, s of game time. */
@@ -106,8 +130,15 @@ const FRAME_MARGIN = 60;
 const FRAME_MIN_ZOOM = pageLayout().compact() ? 4 : 2;
 /** The camera's zoom now, px/m (eased toward the framing zoom; NaN: set at the next frame). */
 let zoom = Number.NaN;
-/** The view leads the hull by its velocity times this, s (the look-ahead). */
+/** The view leads the hull by its velocity along x times this, s (the look-ahead). */
 const LEAD_TIME = 2.2;
+/**
+ * The view leads the hull by its vertical velocity times this, s: a short look-ahead, so that on a
+ * Dive the hull is seen to move down the screen at once (with 2.2 s, as along x, the view ran ahead
+ * of it: the hull rose up the screen while it dived and sank down it for 2 s after it had stopped,
+ * which read as a late answer and an overshoot).
+ */
+const LEAD_TIME_Y = 0.4;
 /** The look-ahead is at most this share of the distance from the view's centre to the framing margin. */
 const LEAD_SHARE = 0.6;
 /** The look-ahead eases toward its target with this time constant, s of game time. */
@@ -151,10 +182,17 @@ function createWorld(): PhysicsWorld {
     par: parTime(handles.beacons),
     lastHit: '',
     minesHit: 0,
+    glowsCaught: 0,
+    streak: 0,
+    score: 0,
   });
   taken = new Array(params.beacons).fill(false);
   mines = layMines(handles.beacons, handles.seabed, params.seed);
   mineLive = mines.map(() => true);
+  glows = layTrail(handles.beacons, handles.seabed, mines);
+  glowState = new Uint8Array(glows.length);
+  glowPops.length = 0;
+  courseDepth = 10 * Math.ceil((10 - Math.min(...handles.seabed.y)) / 10);
   blasts.length = 0;
   aim.index = -1;
   zoom = Number.NaN;
@@ -167,8 +205,11 @@ function createWorld(): PhysicsWorld {
 const held = new Set<string>();
 /** The on-screen stick (phones): x right (ahead), y up (rise), each in [-1, 1]. */
 const stickInput = { x: 0, y: 0 };
-/** How far the stick must move before it counts as a held control. */
-const STICK_DEAD = 0.35;
+/**
+ * How far the stick must move before it counts as a held control (a thumb resting on it wobbles by
+ * less); past it the stick asks for as much as it is pushed (stickShare).
+ */
+const STICK_DEAD = 0.2;
 addEventListener('keydown', (e) => {
   held.add(e.key.toLowerCase());
 });
@@ -193,12 +234,12 @@ function heldInput(): HelmInput {
 
 /**
  * The share of full Dive / Rise (or screw) that the stick's push `v` in [-1, 1] along one axis asks
- * for: 0.25 just past the dead zone, rising linearly to 1 at the rim; 1 while a key of that axis is
- * held (`key`), so the keys always ask for all of it.
+ * for: as far as it is pushed (0.2 just past the dead zone, 0.5 half way, 1 at the rim); 1 while a
+ * key of that axis is held (`key`), so the keys always ask for all of it.
  */
 function stickShare(v: number, key: boolean): number {
   if (key) return 1;
-  return 0.25 + 0.75 * Math.max(0, Math.min(1, (Math.abs(v) - STICK_DEAD) / (1 - STICK_DEAD)));
+  return Math.max(STICK_DEAD, Math.min(1, Math.abs(v)));
 }
 
 /** Where the hull last touched the seabed (m), filled by touchSeabed. */
@@ -271,6 +312,7 @@ function stepWorld(world: PhysicsWorld): void {
     if (state.hits >= 3) state.over = 'sunk';
   }
   if (state.over) return;
+  catchGlows(world);
   for (let i = 0; i < taken.length; i++) {
     if (taken[i]) continue;
     const dx = handles.beacons[2 * i]! - c.Position.x[e]!,
@@ -278,6 +320,7 @@ function stepWorld(world: PhysicsWorld): void {
     if (dx * dx + dy * dy < 7 * 7) {
       taken[i] = true;
       state.collected++;
+      state.score += BEACON_POINTS;
       const last = state.collected === taken.length;
       pickups.push({
         x: handles.beacons[2 * i]!,
@@ -294,9 +337,44 @@ function stepWorld(world: PhysicsWorld): void {
       }
       if (state.collected === taken.length) {
         state.over = 'won';
+        state.score += PAR_POINTS * Math.max(0, Math.floor(state.par - world.time));
         recordWin(world.time);
       }
     }
+  }
+}
+
+/**
+ * The glows the hull touches (./trail.ts) are caught: each scores GLOW_POINTS times the streak (up
+ * to GLOW_STREAK_MAX) and chimes a note higher the longer the streak; one the hull has passed by
+ * GLOW_MISS m along x uncaught is missed and ends the streak (it can still be caught, turning back).
+ */
+function catchGlows(world: PhysicsWorld): void {
+  const c = world.components,
+    e = handles.hull;
+  const x = c.Position.x[e]!,
+    y = c.Position.y[e]!,
+    a = c.Angle.value[e]!;
+  for (let i = 0; i < glows.length; i++) {
+    if (glowState[i] === 1) continue;
+    const gl = glows[i]!;
+    if (Math.abs(gl.x - x) > 20 || !touchesGlow(x, y, a, gl.x, gl.y)) {
+      // Passed by: missed (it can still be caught, but the streak is over).
+      if (glowState[i] === 0 && x - gl.x > GLOW_MISS) {
+        glowState[i] = 2;
+        state.streak = 0;
+      }
+      continue;
+    }
+    glowState[i] = 1;
+    state.glowsCaught++;
+    state.streak++;
+    const points = GLOW_POINTS * Math.min(GLOW_STREAK_MAX, state.streak);
+    state.score += points;
+    glowPops.push({ x: gl.x, y: gl.y, time: world.time, points });
+    // Up a major scale from C6 as the streak grows (C D E G A C).
+    const scale = [1047, 1175, 1319, 1568, 1760, 2093];
+    sound.chime(scale[Math.min(scale.length - 1, state.streak - 1)]!, 0.12);
   }
 }
 
@@ -309,7 +387,7 @@ const game = await startPixiGame({
   step: stepWorld,
   bodies: () => 1,
   controls: [
-    { keys: '↓ ↑ / S W', action: 'dive / rise (let go: hold depth)', touch: 'stick ↓ ↑' },
+    { keys: '↓ ↑ / S W', action: 'dive / rise (let go: stop at the dashed line)', touch: 'stick ↓ ↑' },
     { keys: '← → / A D', action: 'screw astern / ahead', touch: 'stick ← →' },
     { keys: 'Q / E', action: 'nose down / up', touch: 'Nose ↘ / ↗' },
   ],
@@ -345,6 +423,8 @@ const banner = new Text({
 banner.anchor.set(0.5);
 banner.visible = false;
 app.stage.addChild(banner);
+/** Whether the page is laid out for a phone (the readout's lines are shorter). */
+const compact = pageLayout().compact();
 // The gauges: a text block in the status row above the scene (on its dark backing, never cut off).
 const gauge = document.createElement('div');
 gauge.className = 'sub-gauges';
@@ -366,7 +446,7 @@ const instruments = document.createElement('div');
 instruments.dataset.hud = 'instruments';
 instruments.style.cssText = 'font-size: 11px; color: #b4c4d4;';
 // On a phone the status row keeps two short lines (the instruments are for wide screens).
-if (pageLayout().compact()) instruments.style.display = 'none';
+if (compact) instruments.style.display = 'none';
 gauge.append(goal, readout, instruments);
 pageLayout().status.append(gauge);
 
@@ -456,8 +536,16 @@ function showEnd(): void {
       : best !== null
         ? `Best: ${clock(best)}`
         : 'Mines and the seabed each cost a third of the hull.';
-  endCard.append(line, bestLine);
+  endCard.append(line, scoreLine(), bestLine);
   showAgain(true, won ? 'Play again ▶' : 'Try again ↺');
+}
+/** The end card's line of the score and the glows caught ("Score 1,240 · 42 of 58 glows"). */
+function scoreLine(): HTMLElement {
+  const el = document.createElement('div');
+  el.dataset.hud = 'score';
+  el.style.cssText = 'font-size: 17px; font-weight: 700; color: #b8ffe9;';
+  el.textContent = `Score ${state.score.toLocaleString('en-US')} · ${state.glowsCaught} of ${glows.length} glows`;
+  return el;
 }
 /** Stars of a won run, 1 to 3: one for the beacons, one for a time inside par, one for an unhurt hull. */
 function runStars(): number {
@@ -551,13 +639,16 @@ let otherTags = 0;
 
 // Touch: a stick (up rise, down dive, right ahead, left astern, diagonals both) and two buttons
 // for the nose (hold them as the Q and E keys).
-createStick({
+const stick = createStick({
   label: 'stick: dive, rise, ahead, astern',
   onChange: (x, y) => {
     stickInput.x = x;
     stickInput.y = y;
   },
 });
+// On a phone a larger stick (136 px, the knob's reach 56 px): the thumb grades its push over more
+// of its travel, and the rim is easier to find without looking.
+if (compact) stick.element.style.cssText += 'width: 136px; height: 136px;';
 // The touch hint (game-kit's card of gestures over the bottom of the scene, where the seabed is)
 // fades at the first touch anywhere, the stick and Nose buttons under the scene included, not only
 // at a touch on the scene.
@@ -638,6 +729,101 @@ function drawMines(t: number, k: number, sx: (x: number) => number, sy: (y: numb
       });
     }
   }
+}
+
+/**
+ * Draws the glows of the trail between `left` and `right` (m, world x) at game time `t` (s), `k` px
+ * a metre, through `sx` and `sy`: a small sea-green light in a soft halo, pulsing (those missed
+ * dimmer), and a burst of sparks with the points scored at each one caught, fading over GLOW_POP_LIFE s.
+ */
+function drawGlows(t: number, k: number, sx: (x: number) => number, sy: (y: number) => number, left: number, right: number): void {
+  for (let i = 0; i < glows.length; i++) {
+    const gl = glows[i]!;
+    if (glowState[i] === 1 || gl.x < left - 2 || gl.x > right + 2) continue;
+    const x = sx(gl.x),
+      y = sy(gl.y),
+      pulse = 0.5 + 0.5 * Math.sin(3 * t + i * 1.7),
+      dim = glowState[i] === 2 ? 0.45 : 1;
+    g.circle(x, y, Math.max(7, (1.1 + 0.25 * pulse) * k)).fill({ color: 0x5cf2c8, alpha: 0.16 * dim });
+    g.circle(x, y, Math.max(3.5, 0.55 * k)).fill({ color: 0xb8ffe9, alpha: (0.75 + 0.25 * pulse) * dim });
+  }
+  for (let i = glowPops.length - 1; i >= 0; i--) if (t - glowPops[i]!.time > GLOW_POP_LIFE || t < glowPops[i]!.time) glowPops.splice(i, 1);
+  let shown = 0;
+  for (const p of glowPops) {
+    const u = (t - p.time) / GLOW_POP_LIFE,
+      x = sx(p.x),
+      y = sy(p.y);
+    g.circle(x, y, (0.6 + 3 * Math.sqrt(u)) * k).stroke({ color: 0x9dffe0, alpha: 0.9 * (1 - u), width: 2 });
+    for (let r = 0; r < 6; r++) {
+      const ang = (r / 6) * 2 * Math.PI + p.time,
+        r0 = (0.8 + 3 * u) * k,
+        r1 = r0 + 0.9 * k * (1 - u);
+      g.moveTo(x + r0 * Math.cos(ang), y + r0 * Math.sin(ang))
+        .lineTo(x + r1 * Math.cos(ang), y + r1 * Math.sin(ang))
+        .stroke({ color: 0xe8fff6, alpha: 1 - u, width: 1.5 });
+    }
+    let label = popLabels[shown];
+    if (!label) {
+      label = new Text({
+        text: '',
+        style: {
+          fill: 0xb8ffe9,
+          fontSize: 13,
+          fontWeight: '700',
+          fontFamily: 'system-ui, sans-serif',
+          stroke: { color: 0x06213a, width: 3 },
+        },
+      });
+      label.anchor.set(0.5);
+      popLabels.push(label);
+      app.stage.addChild(label);
+    }
+    label.visible = true;
+    label.text = `+${p.points}`;
+    label.position.set(x, y - (1.5 + 2.5 * u) * k - 8);
+    label.alpha = 1 - u * u;
+    shown++;
+  }
+  for (let i = shown; i < popLabels.length; i++) popLabels[i]!.visible = false;
+}
+/** The points labels over glows just caught (a pool, hidden when unused). */
+const popLabels: Text[] = [];
+
+/** Width of the depth gauge at the scene's right edge, px (the beacon label keeps clear of it). */
+const GAUGE_WIDTH = 30;
+/**
+ * Draws the depth gauge at the right edge of a `W` x `H` px scene: a scale from the surface (top) to
+ * the course's deepest seabed (`courseDepth`, bottom) with a tick every 10 m, the seabed under the
+ * boat (brown below it), the beacon the pointer leads to (a yellow dot), the boat's depth (a yellow
+ * pointer) and the depth ordered (a cyan bar, joined to the boat's pointer while the boat has yet
+ * to get there), so the player sees the order move at once and the boat answer it.
+ */
+function drawDepthGauge(W: number, H: number, depth: number, order: number, bed: number, beacon: number): void {
+  const x0 = W - GAUGE_WIDTH + 10,
+    w = 10,
+    top = 14,
+    bottom = H - 14;
+  const at = (d: number) => top + (bottom - top) * Math.max(0, Math.min(1, d / courseDepth));
+  g.roundRect(x0 - 16, top - 8, w + 22, bottom - top + 16, 8).fill({ color: 0x06213a, alpha: 0.55 });
+  g.rect(x0, top, w, bottom - top).fill({ color: 0x0e4a7a, alpha: 0.9 });
+  g.rect(x0, at(bed), w, bottom - at(bed)).fill({ color: 0x5b4a32 });
+  for (let d = 10; d < courseDepth; d += 10) g.rect(x0, at(d) - 0.5, d % 50 === 0 ? w : w / 2, 1).fill({ color: 0xcfe6ff, alpha: 0.5 });
+  g.rect(x0, top, w, bottom - top).stroke({ color: 0x8fb8d8, width: 1, alpha: 0.7 });
+  if (Number.isFinite(beacon))
+    g.circle(x0 + w / 2, at(beacon), 4)
+      .fill(0xffe066)
+      .stroke({ color: 0x06213a, width: 1.5 });
+  const yb = at(depth);
+  if (Number.isFinite(order)) {
+    const yo = at(order);
+    if (Math.abs(yo - yb) > 1.5) g.rect(x0 - 3.5, Math.min(yo, yb), 3, Math.abs(yo - yb)).fill({ color: 0x7fe3ff, alpha: 0.9 });
+    g.roundRect(x0 - 4, yo - 2.5, w + 8, 5, 2)
+      .fill({ color: 0x7fe3ff })
+      .stroke({ color: 0x06213a, width: 1 });
+  }
+  g.poly([x0 - 1, yb, x0 - 13, yb - 6, x0 - 13, yb + 6])
+    .fill(0xffe066)
+    .stroke({ color: 0x06213a, width: 1.5 });
 }
 
 /** A well-mixed 32-bit hash of a cell (i, j) of the marine snow: its speck's offset, size and brightness. */
@@ -742,7 +928,7 @@ function draw(): void {
   // inside the view when both do not fit; never more sky than the top 15% of the view.
   const reachX = Math.max(0, W / 2 - FRAME_MARGIN) / k,
     reachY = Math.max(0, H / 2 - FRAME_MARGIN) / k;
-  // Look-ahead: the view leads the hull by LEAD_TIME s of its velocity, at most LEAD_SHARE of the way
+  // Look-ahead: the view leads the hull by LEAD_TIME s of its velocity along x (LEAD_TIME_Y s across), at most LEAD_SHARE of the way
   // to the framing margin, eased over about LEAD_EASE s of game time (a bump or a blast does not jerk
   // the view). Under way, the view's centre is at least that far ahead of the hull, so what lies
   // ahead is in view even when the beacon framed is behind.
@@ -750,7 +936,7 @@ function draw(): void {
   camera.time = world.time;
   const ease = 1 - Math.exp(-dtCam / LEAD_EASE);
   camera.leadX += (LEAD_TIME * c.Velocity.x[e]! - camera.leadX) * ease;
-  camera.leadY += (LEAD_TIME * c.Velocity.y[e]! - camera.leadY) * ease;
+  camera.leadY += (LEAD_TIME_Y * c.Velocity.y[e]! - camera.leadY) * ease;
   const leadX = Math.max(-leadShare * reachX, Math.min(leadShare * reachX, camera.leadX)),
     leadY = Math.max(-LEAD_SHARE * reachY, Math.min(LEAD_SHARE * reachY, camera.leadY));
   const atLeast = (framed: number, hull: number, lead: number) =>
@@ -884,6 +1070,7 @@ function draw(): void {
     }
   }
   drawFish(g, left, right, t, k, sx, sy, bedAt, hxw, hyw);
+  drawGlows(t, k, sx, sy, left, right);
   drawMines(t, k, sx, sy, left, right);
   // Beacons: a lamp (at least 5 px, however far the camera zooms out) in a pulsing ring; each one
   // on screen but the pointer's is tagged "beacon" under it, so a yellow light elsewhere in the view
@@ -1000,7 +1187,7 @@ function draw(): void {
       pointer.y = by - 2.4 * k - 16;
     }
     // Kept inside the view (a long label beside a badge at a side edge).
-    pointer.x = Math.max(pointer.width / 2 + 8, Math.min(W - pointer.width / 2 - 8, pointer.x));
+    pointer.x = Math.max(pointer.width / 2 + 8, Math.min(W - GAUGE_WIDTH - pointer.width / 2 - 8, pointer.x));
     // Kept off the hull: a label that would cross the hull's box (its sail and a margin included)
     // moves above or below it, whichever is nearer and inside the view.
     const hr = Math.max(SUBMARINE.length / 2, SUBMARINE.height / 2 + 2) * k + 6,
@@ -1041,6 +1228,7 @@ function draw(): void {
     throttle: state.throttle,
     depth: -hyw,
     touching: state.touching,
+    planes: state.planes,
   });
   // The vertical thrusters' wash: water thrown opposite to each one's push, as long as it is strong.
   const n = SUBMARINE.thrusterForce;
@@ -1058,6 +1246,26 @@ function draw(): void {
       alpha: 0.25 + 0.35 * (Math.abs(f) / n),
     });
   }
+  // The depth ordered (./helm.ts): a dashed line across the hull's place, where the boat is going
+  // and will stop, while it is more than 0.3 m from there.
+  if (Number.isFinite(state.holdY) && Math.abs(state.holdY - hyw) > 0.3) {
+    const yo = sy(state.holdY);
+    for (let u = -SUBMARINE.length; u < SUBMARINE.length; u += 2.4) {
+      g.moveTo(sx(hxw + u), yo)
+        .lineTo(sx(hxw + u + 1.4), yo)
+        .stroke({ color: 0x7fe3ff, width: 2, alpha: 0.85 });
+    }
+    // Chevrons from the hull toward it.
+    const dir = Math.sign(state.holdY - hyw),
+      cxh = sx(hxw + SUBMARINE.length / 2 + 2.5);
+    for (let j = 0; j < 2; j++) {
+      const yc = sy(hyw + dir * (1 + 1.2 * j));
+      g.moveTo(cxh - 5, yc + 4 * dir)
+        .lineTo(cxh, yc - 2 * dir)
+        .lineTo(cxh + 5, yc + 4 * dir)
+        .stroke({ color: 0x7fe3ff, width: 2, alpha: 0.6 - 0.2 * j });
+    }
+  }
   spawnBubbles(world, a);
   for (const b of bubbles) {
     const life = 1 - b.age / b.life;
@@ -1068,6 +1276,14 @@ function draw(): void {
     speed = Math.hypot(c.Velocity.x[e]!, c.Velocity.y[e]!);
   const floor = seabedHeight(handles.seabed, cx);
   engine.set(state.over ? 0 : Math.abs(state.throttle));
+  drawDepthGauge(
+    W,
+    H,
+    depth,
+    -state.holdY,
+    -seabedHeight(handles.seabed, hxw),
+    aim.index >= 0 ? -handles.beacons[2 * aim.index + 1]! : Number.NaN,
+  );
   drawHits(t, k, sx, sy, W, H, sy(hyw) - (Hh + 2.5) * k);
   // The hull gauge at a hit: red and enlarged, fading over GAUGE_FLASH s of game time.
   const hitAge = hitMarks.length > 0 ? t - hitMarks[hitMarks.length - 1]!.time : Number.POSITIVE_INFINITY;
@@ -1090,12 +1306,21 @@ function draw(): void {
         : '';
   showEnd();
   const helm = state.mode === 'holding' ? `holding ${(-state.holdY).toFixed(0)} m` : state.mode === 'braking' ? 'stopping' : state.mode;
+  // The depth, and the depth ordered while the boat is a metre or more from it ("depth 30 → 34 m").
+  const ordered = Number.isFinite(state.holdY) && Math.abs(state.holdY + depth) >= 1 ? ` → ${(-state.holdY).toFixed(0)}` : '';
+  const streak = state.streak > 1 ? ` ×${Math.min(GLOW_STREAK_MAX, state.streak)}` : '';
   // The goal and a short readout first; the instruments (tanks, pitch, climb, helm) after, small and dim.
+  // On a phone the score goes on the goal's line (the readout's would wrap).
   goal.textContent =
-    end || `Collect the ${taken.length} beacons · ${state.collected} of ${taken.length} · ${clock(state.time)} / par ${clock(state.par)}`;
+    end ||
+    (compact
+      ? `Beacons ${state.collected} of ${taken.length} · ${clock(state.time)} / par ${clock(state.par)} · ${state.score} pts${streak}`
+      : `Collect the ${taken.length} beacons · ${state.collected} of ${taken.length} · ${clock(state.time)} / par ${clock(state.par)}`);
   // The clock turns red once par has passed.
   goal.style.color = !state.over && state.time > state.par ? '#ff9e8a' : '#ffe066';
-  readoutText.textContent = `depth ${depth.toFixed(0)} m · speed ${speed.toFixed(1)} m/s · `;
+  readoutText.textContent = compact
+    ? `depth ${depth.toFixed(0)}${ordered} m · ${speed.toFixed(1)} m/s · `
+    : `depth ${depth.toFixed(0)}${ordered} m · speed ${speed.toFixed(1)} m/s · score ${state.score}${streak} · `;
   showHull();
   instruments.textContent = `seabed ${(-floor).toFixed(0)} m · climb ${c.Velocity.y[e]!.toFixed(1)} m/s · pitch ${((a * 180) / Math.PI).toFixed(0)}° · screw ${(state.throttle * 100).toFixed(0)}% · tanks ${(B.fore[e]! * 100).toFixed(0)}/${(B.aft[e]! * 100).toFixed(0)}% (neutral ${(SUBMARINE_NEUTRAL_FILL * 100).toFixed(0)}%) · ${helm}`;
 }
@@ -1141,6 +1366,8 @@ shell.expose({
   state,
   /** The hull entity. */
   hull: () => handles.hull,
+  /** The glow trail: each glow's place (m), leg and state ('open', 'caught' or 'missed'). */
+  glows: () => glows.map((gl, i) => ({ ...gl, state: (['open', 'caught', 'missed'] as const)[glowState[i]!]! })),
   /** The course's mines: centre (x, y, m), anchor height (m) and whether each is still live. */
   mines: () => mines.map((m, i) => ({ ...m, live: mineLive[i]! })),
   /** The scene's handles: hull, sea, seabed, beacons (x, y pairs, m) and vertical thrusters. */

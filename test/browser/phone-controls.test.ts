@@ -84,8 +84,9 @@ describe('phone controls', () => {
       },
     );
     expect(throttle).toBeGreaterThan(0.05);
-    // Pushed a little over half way (x 0.56 of the knob's 45 px reach), the screw runs up to about
-    // half: 0.25 past the dead zone (0.35) rising to 1 at the rim gives 0.49; held 1 s of game time.
+    // Pushed a little under half way (25 px of the knob's 56 px reach on the phone's 136 px stick),
+    // the screw runs up to about half: the stick asks for as much as it is pushed, 0.45; held 1 s of
+    // game time.
     await touchPath(
       g.page,
       [

@@ -15,7 +15,8 @@ type Sub = {
   world: { time: number; components: { Position: { x: Float64Array; y: Float64Array }; Velocity: { x: Float64Array; y: Float64Array } } };
   hull(): number;
   handles(): { beacons: Float64Array; seabed: { x0: number; dx: number; y: Float64Array } };
-  state: { hits: number; holdY: number; throttle: number };
+  state: { hits: number; holdY: number; throttle: number; mode: string; fill: number; glowsCaught: number; score: number };
+  glows(): { x: number; y: number; leg: number; state: string }[];
   mines(): { x: number; y: number; live: boolean }[];
   camera(): Camera;
   hitEffect(): Hit;
@@ -55,6 +56,91 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
   }, START_TIMEOUT_MS);
   afterAll(async () => {
     await h?.close();
+  });
+
+  it('a Dive moves the depth order at once and the boat stops on it when let go; a glow touched scores', async () => {
+    // The boat hovering at 30 m (tanks at neutral, holding), on a calm sea with one beacon. A full
+    // Dive (S held, or a finger at the bottom of the stick) for 0.8 s of game time, then let go: the
+    // page records, every frame, the hull's depth, the order and the readout. The order is below the
+    // boat before the boat has moved 5 cm; the readout shows both ("depth 31 → 34 m"); let go, the
+    // boat passes the order by under 0.2 m and is within 0.2 m of it 2 s after (helm.ts: measured
+    // 0.00 m and 1.2 s headless from the full dive speed).
+    const g = await h.openGame('submarine', { viewport, touch, query: { waves: 0, beacons: 1 } });
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as Sub & { world: { components: { Ballast: { fore: Float64Array; aft: Float64Array } } } };
+      const c = w.world.components,
+        e = w.hull();
+      c.Position.y[e] = -30;
+      c.Velocity.y[e] = 0;
+      c.Ballast.fore[e] = c.Ballast.aft[e] = 0.7675;
+      Object.assign(w.state, { holdY: -30, mode: 'holding', fill: 0.7675 });
+      const trace: { t: number; y: number; order: number; text: string }[] = [];
+      (window as unknown as { subTrace: typeof trace }).subTrace = trace;
+      const frame = () => {
+        trace.push({
+          t: w.world.time,
+          y: c.Position.y[e]!,
+          order: w.state.holdY,
+          text: document.querySelector('[data-hud="readout"]')?.textContent ?? '',
+        });
+        if (trace.length < 20_000) requestAnimationFrame(frame);
+      };
+      requestAnimationFrame(frame);
+    });
+    await g.frames(3);
+    const stick = touch ? (await g.page.getByRole('slider', { name: 'stick: dive, rise, ahead, astern' }).boundingBox())! : null;
+    const cdp = touch ? await g.page.context().newCDPSession(g.page) : null;
+    const t0 = await g.page.evaluate(() => (window.game as unknown as Sub).world.time);
+    if (stick && cdp)
+      await cdp.send('Input.dispatchTouchEvent', {
+        type: 'touchStart',
+        touchPoints: [{ x: stick.x + stick.width / 2, y: stick.y + stick.height - 10, id: 1 }],
+      });
+    else await g.page.keyboard.down('s');
+    await g.waitFor((t) => (window.game as unknown as Sub).world.time > t + 0.8, t0, 60_000);
+    if (cdp) {
+      await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
+      await cdp.detach();
+    } else await g.page.keyboard.up('s');
+    const t1 = await g.page.evaluate(() => (window.game as unknown as Sub).world.time);
+    await g.waitFor((t) => (window.game as unknown as Sub).world.time > t + 2, t1, 60_000);
+    const r = await g.page.evaluate((t1) => {
+      const trace = (window as unknown as { subTrace: { t: number; y: number; order: number; text: string }[] }).subTrace;
+      const y0 = trace[0]!.y;
+      const first = trace.find((p) => p.order < y0 - 0.1);
+      const after = trace.filter((p) => p.t > t1 + 0.1);
+      const order = after[0]!.order;
+      return {
+        movedWhenOrdered: first ? y0 - first.y : Number.NaN,
+        shown: trace.some((p) => / → /.test(p.text)),
+        past: Math.max(...after.map((p) => order - p.y)),
+        end: after[after.length - 1]!.y - order,
+        orderKept: after.every((p) => p.order === order),
+        deep: y0 - order,
+      };
+    }, t1);
+    expect(r.movedWhenOrdered).toBeLessThan(0.05);
+    expect(r.shown).toBe(true);
+    expect(r.deep).toBeGreaterThan(2); // 0.8 s of a full dive
+    expect(r.orderKept).toBe(true);
+    expect(r.past).toBeLessThan(0.2);
+    expect(Math.abs(r.end)).toBeLessThan(0.2);
+    // A glow: the boat put just behind the first one of the trail, in line with it, catches it.
+    const caught = await g.page.evaluate(() => {
+      const w = window.game as unknown as Sub;
+      const gl = w.glows()[0]!;
+      const c = w.world.components,
+        e = w.hull();
+      c.Position.x[e] = gl.x - 7;
+      c.Position.y[e] = gl.y;
+      w.state.holdY = gl.y;
+      return { before: w.state.score };
+    });
+    await g.waitFor(() => (window.game as unknown as Sub).state.glowsCaught > 0, null, 30_000);
+    const after = await g.page.evaluate(() => (window.game as unknown as Sub).state.score);
+    expect(after - caught.before).toBe(10);
+    expect(g.errors).toEqual([]);
+    await g.close();
   });
 
   // The lead itself on a desktop; a phone's view, narrower, is checked ahead of the bow below.
