@@ -6,17 +6,21 @@
  * stretches where it is pulled and tears where a link is stretched past the tear strain; torn-off
  * pieces flutter down to the lawn.
  *
- * The challenge: cut out the three shapes printed on the sheet (pattern.ts) along their dashed lines.
+ * The challenge: four sheets, each asking for something else (levels.ts): cut out three shapes along
+ * their dashed lines, cut out the four panes of a window, cut the ribbon of a peg bag to drop it into
+ * a basket (a gust swings it over), and, without scissors, tear a strip off along a perforation. Each
+ * target is scored by pattern.ts (a fit to its line, or where the bag lands) in stars.
  *
  * Input: drag with the scissors to cut every link the stroke crosses (cut.ts: in the cloth's frame, and
- * a stroke that ends near its start closes); on the first sheet the breeze drops while the scissors
- * are down, so the sheet hangs still. Drag with the hand to
+ * a stroke that ends near its start closes); on the shapes' and the window's sheets the breeze drops
+ * while the scissors are down, so the sheet hangs still. A finger's stroke is scored with FINGER_SLACK_PX of slack along
+ * the lines and closes from FINGER_CLOSE_PX off (a fingertip hides the line it traces). Drag with the hand to
  * take hold of the sheet and pull it (grab.ts: a soft grip, so it stretches before it tears). The tool
  * buttons under the scene switch (key C); a right-button drag always cuts. Hold Gust (key G) to blow.
  * Undo (Ctrl/Cmd+Z) puts the sheet back as it was just before the last stroke that cut it (the
  * whole world restored from a snapshot taken when the stroke began; up to UNDO_DEPTH strokes).
- * Keys: P pause, N step, R new sheet. URL: ?size (8-48 points across), ?wind (0-10 m/s), ?gusts
- * (0-5 m/s), ?tear (0.1-2).
+ * Keys: P pause, N step, R new sheet. URL: ?level (1-4), ?size (8-48 points across), ?wind (0-10 m/s),
+ * ?gusts (0-5 m/s), ?tear (0.1-2).
  */
 
 import { createActionButton, createButtonBar, createPanel, getSound, numberParam, pointerOnCanvas } from '@bitphysics/game-kit';
@@ -41,8 +45,9 @@ import { ClothCells } from './cells';
 import { ScissorsStroke } from './cut';
 import { fabricTexture } from './fabric';
 import { ClothGrab, gripFor } from './grab';
-import { Challenge, type CutOut, SHAPES } from './pattern';
-import { applyWind, CLOTH_SUBSTEPS, createClothScene, DEFAULTS, LINE_Y, SHEET_WIDTH, SHEET_X, SHEETS, sheetGrid, YARD } from './scene';
+import { LEVELS } from './levels';
+import { Challenge, type CutOut } from './pattern';
+import { applyWind, CLOTH_SUBSTEPS, createClothScene, DEFAULTS, LINE_Y, SHEET_WIDTH, SHEET_X, sheetGrid, YARD } from './scene';
 import { SheetView } from './sheet-view';
 import { Yard } from './yard';
 
@@ -57,20 +62,33 @@ const url = readUrlParams(
   USAGE,
 );
 const params = { ...url, substeps: CLOTH_SUBSTEPS, reset: () => shell.reset() };
-/** Which of SHEETS is up (0-based); the URL's wind and gusts hold for the first. */
-let sheetIndex = 0;
-/** Stars won on each sheet (-1: not finished). */
-const sheetStars = SHEETS.map(() => -1);
+/** Which of LEVELS is up (0-based): ?level (1 to 4), default the first. */
+let levelIndex = numberParam('level', { default: 1, min: 1, max: LEVELS.length, integer: true }) - 1;
+// A level's own breeze, unless the URL sets one (the first level's is the URL's defaults).
+{
+  const search = new URLSearchParams(location.search);
+  if (!search.has('wind')) params.wind = LEVELS[levelIndex]!.wind;
+  if (!search.has('gusts')) params.gusts = LEVELS[levelIndex]!.gusts;
+}
+/** Stars won on each level (-1: not finished). */
+const levelStars = LEVELS.map(() => -1);
 
 /** How much the Gust button adds to the wind, m/s, and how fast it comes and goes (1/s). */
 const GUST = 5,
   GUST_RATE = 2.5;
 /**
- * How fast the breeze drops while the scissors are down on the first sheet, and picks up again after
- * (1/s): on a calm day the air stills while you cut, and the sheet's drag (time constant CLOTH_MASS /
- * DRAG, 0.25 s) stops its swing; later sheets' breezes keep blowing.
+ * How fast the breeze drops while the scissors are down on a sheet for careful cuts (Level.calm: the
+ * shapes, the window), and picks up again after (1/s): the air stills while you cut, and the sheet's
+ * drag (time constant CLOTH_MASS / DRAG, 0.25 s) stops its swing; the other sheets' breezes keep blowing.
  */
 const CALM_RATE = 4;
+/**
+ * A finger's stroke (pointer type 'touch') is given this much slack, CSS px: its cut may stray this
+ * far out of a line at no cost to the fit (Challenge.setSlack; about the width a fingertip hides on a
+ * 390 px phone, where a link spacing is 11 px), and it closes within FINGER_CLOSE_PX of its start.
+ */
+const FINGER_SLACK_PX = 12,
+  FINGER_CLOSE_PX = 36;
 /** A stroke that ends within CLOSE_GAP cells of where it began, after CLOSE_LENGTH m, closes (ScissorsStroke.close). */
 const CLOSE_GAP = 2.5,
   CLOSE_LENGTH = 1;
@@ -114,10 +132,11 @@ let calm = 0,
   cutting = false;
 
 function createWorld(): PhysicsWorld {
-  const scene = createClothScene(params);
+  const level = LEVELS[levelIndex]!;
+  const scene = createClothScene(params, level.prepare);
   cloth = scene.cloth;
   cells = new ClothCells(cloth);
-  challenge = new Challenge(scene.world, cloth, cells);
+  challenge = new Challenge(scene.world, cloth, cells, level.shapes(params.size));
   grab = null;
   torn = 0;
   cut = 0;
@@ -139,7 +158,7 @@ function blowNow(world: PhysicsWorld): void {
 
 function labStep(world: PhysicsWorld): void {
   const target = blowing ? 1 : 0;
-  const calmTarget = cutting && sheetIndex === 0 ? 1 : 0;
+  const calmTarget = cutting && LEVELS[levelIndex]!.calm ? 1 : 0;
   if (blow !== target || calm !== calmTarget) {
     blow = target > blow ? Math.min(1, blow + GUST_RATE * world.dt) : Math.max(0, blow - GUST_RATE * world.dt);
     calm = calmTarget > calm ? Math.min(1, calm + CALM_RATE * world.dt) : Math.max(0, calm - CALM_RATE * world.dt);
@@ -155,6 +174,7 @@ function labStep(world: PhysicsWorld): void {
   }
   cells.loosen(world);
   announce(challenge.update());
+  announce(challenge.watch());
   windAt(world, 2, 3, 0, world.time, wind);
   plot?.push(world.time, (sheet?.shownStretch ?? 0) * 100, wind[0]!);
 }
@@ -243,21 +263,33 @@ const showNext = createActionButton('Next sheet ▶', () => nextSheet());
 
 /** Hangs the next sheet (after the last, the first again) in its breeze. */
 function nextSheet(): void {
-  sheetIndex = (sheetIndex + 1) % SHEETS.length;
-  params.wind = SHEETS[sheetIndex]!.wind;
-  params.gusts = SHEETS[sheetIndex]!.gusts;
+  levelIndex = (levelIndex + 1) % LEVELS.length;
+  params.wind = LEVELS[levelIndex]!.wind;
+  params.gusts = LEVELS[levelIndex]!.gusts;
   panel.refresh();
   shell.reset();
 }
 
 function announce(fresh: CutOut[]): void {
   for (const d of fresh) {
-    // Over the piece it came away in; one cut to bits has none: over the middle of the sheet.
-    const at: [number, number] = d.piece >= 0 ? challenge.centre(d.piece, [0, 0]) : [SHEET_X + SHEET_WIDTH / 2, LINE_Y - 1.5];
-    const name = SHAPES[d.shape]!.name;
+    // A dropped piece is announced where it lands (Challenge.watch), not as it comes away.
+    if (d.drop === 'falling') continue;
+    // Over the piece it came away in (a dropped one: where it landed); one cut to bits has none: over
+    // the middle of the sheet.
+    const at: [number, number] = d.drop
+      ? [d.landedAt!, 0.5]
+      : d.piece >= 0
+        ? challenge.centre(d.piece, [0, 0])
+        : [SHEET_X + SHEET_WIDTH / 2, LINE_Y - 1.5];
+    const name = challenge.shapes[d.shape]!.name;
     const text = new Container({ label: 'cut out' });
     const words = new Text({
-      text: `${name[0]!.toUpperCase()}${name.slice(1)}: ${Math.round(d.fit * 100)}%`,
+      text:
+        d.drop === 'in'
+          ? 'In the basket!'
+          : d.drop === 'out'
+            ? 'Missed the basket'
+            : `${name[0]!.toUpperCase()}${name.slice(1)}: ${Math.round(d.fit * 100)}%`,
       style: { fill: 0xffffff, fontSize: 22, fontFamily: 'sans-serif', fontWeight: 'bold', stroke: { color: 0x1b2430, width: 5 } },
     });
     words.anchor.set(0.5, 1);
@@ -326,7 +358,11 @@ const labelUndo = (): void => {
 };
 narrow.addEventListener('change', labelUndo);
 labelUndo();
+/**
+ * Picks a tool (on a level without scissors the hand stays: the scissors' button is greyed out).
+ */
 function setTool(t: Tool): void {
+  if (t === 'cut' && !LEVELS[levelIndex]!.scissors) t = 'pull';
   tool = t;
   tools.setActive(0, t === 'cut');
   tools.setActive(1, t === 'pull');
@@ -338,7 +374,16 @@ function setBlowing(on: boolean): void {
   if (on && !blowing) sound.launch(0.7);
   blowing = on;
 }
-setTool('cut');
+/** Greys the scissors out on a level without them (and takes the hand), or gives them back. */
+function refreshTools(): void {
+  const ok = LEVELS[levelIndex]!.scissors;
+  const b = tools.buttons[0]!;
+  b.disabled = !ok;
+  b.style.opacity = ok ? '' : '0.45';
+  b.title = ok ? '' : 'no scissors on this sheet: tear it';
+  setTool(ok ? 'cut' : 'pull');
+}
+refreshTools();
 window.addEventListener('keydown', (e) => {
   if (e.ctrlKey || e.metaKey || e.altKey) return;
   const k = e.key.toLowerCase();
@@ -365,7 +410,7 @@ const pointerWorld = (e: PointerEvent): [number, number] => {
   return [renderer.camera.toWorldX(at.x), renderer.camera.toWorldY(at.y)];
 };
 /** The scissors' stroke while cutting (cut.ts) and its pointer; the recent points for the drawn slash (screen px, time s). */
-let stroke: { cut: ScissorsStroke; id: number } | null = null;
+let stroke: { cut: ScissorsStroke; id: number; finger: boolean } | null = null;
 const slash: { x: number; y: number; t: number }[] = [];
 /** Pushes the stroke's last point (on the cloth's frame, ScissorsStroke.at) to the slash. */
 function slashTo(s: ScissorsStroke): void {
@@ -446,7 +491,8 @@ canvas.addEventListener('pointerdown', (e) => {
   grab?.release();
   grab = null;
   stroke = null;
-  if (tool === 'cut' || e.button === 2) {
+  const scissors = LEVELS[levelIndex]!.scissors;
+  if ((tool === 'cut' || e.button === 2) && scissors) {
     // The scissors cut only while the sheet moves: a still sheet would let a stroke trace the
     // printed line exactly. A stroke on the paused sheet is ignored and the status line says so.
     if (shell.paused) {
@@ -454,12 +500,20 @@ canvas.addEventListener('pointerdown', (e) => {
       return;
     }
     strokeSave = { world: snapshot(shell.world), cut, torn, done: challenge.done.length };
+    // A finger hides the line it traces and is wider than a mouse's point: its cut is scored with
+    // FINGER_SLACK_PX of slack (as the sheet is drawn now), and it closes from further off.
+    const finger = e.pointerType === 'touch';
+    challenge.setSlack(finger ? FINGER_SLACK_PX / renderer.camera.toScreenLength(1) : 0);
     // A point over a cut holds on to the cloth's nearest point within a link's length.
-    stroke = { cut: new ScissorsStroke(shell.world, cloth, x, y, SHEET_WIDTH / (params.size - 1), STROKE_FRAME), id: e.pointerId };
+    stroke = {
+      cut: new ScissorsStroke(shell.world, cloth, x, y, SHEET_WIDTH / (params.size - 1), STROKE_FRAME),
+      id: e.pointerId,
+      finger,
+    };
     cutting = true;
     slash.length = 0;
     slash.push({ x: at.x, y: at.y, t: performance.now() / 1000 });
-  } else grab = ClothGrab.at(shell.world, cloth, x, y, gripFor(params.size));
+  } else if (e.button === 0) grab = ClothGrab.at(shell.world, cloth, x, y, gripFor(params.size));
   if (stroke || grab) canvas.setPointerCapture(e.pointerId);
 });
 canvas.addEventListener('pointermove', (e) => {
@@ -472,7 +526,8 @@ canvas.addEventListener('pointermove', (e) => {
 const release = (): void => {
   if (stroke) {
     const spacing = SHEET_WIDTH / (params.size - 1);
-    snip(stroke.cut.close(CLOSE_GAP * spacing, CLOSE_LENGTH));
+    const gap = Math.max(CLOSE_GAP * spacing, stroke.finger ? FINGER_CLOSE_PX / renderer.camera.toScreenLength(1) : 0);
+    snip(stroke.cut.close(gap, CLOSE_LENGTH));
     slashTo(stroke.cut);
     if (strokeSave && cut > strokeSave.cut) {
       undoStack.push(strokeSave);
@@ -489,6 +544,7 @@ const release = (): void => {
 canvas.addEventListener('pointerup', release);
 canvas.addEventListener('pointercancel', release);
 shell.onWorldChange(() => {
+  refreshTools();
   grab = null;
   stroke = null;
   cutting = false;
@@ -528,11 +584,14 @@ const hand = new Graphics({ label: 'hand' });
 const overlay = new Graphics({ label: 'overlay' });
 const labelLayer = new Container({ label: 'labels' });
 const card = new Graphics({ label: 'card' });
+const basket = new Graphics({ label: 'basket' });
+const basketBack = new Graphics({ label: 'basket back' });
 renderer.root.addChildAt(yard.back, 0);
+renderer.root.addChildAt(basketBack, 1);
 // The yard draws the boundary box as the lawn and the walls: the renderer's outline of it is hidden.
 const outline = renderer.root.getChildByLabel('walls');
 if (outline) outline.visible = false;
-renderer.root.addChild(pegs, hand, yard.front, card, overlay, labelLayer);
+renderer.root.addChild(pegs, hand, yard.front, basket, card, overlay, labelLayer);
 
 /** Wooden clothes pegs at the pegged points. */
 function drawPegs(world: PhysicsWorld): void {
@@ -609,33 +668,38 @@ function drawLabels(now: number): void {
 }
 
 /**
- * The card on the lawn: the three shapes, each drawn in its colour once cut out (an outline while
- * still to cut), with its stars under it.
+ * The card on the lawn: the level's targets side by side, each drawn in its colour once done (an
+ * outline while still to do), scaled to fit its place, with its stars under it.
  */
 function drawCard(): void {
   const cam = renderer.camera;
   card.clear();
+  const shapes = challenge.shapes,
+    n = shapes.length;
   const size = Math.min(30, cam.toScreenLength(0.32)),
     gap = size * 2.6;
   const cy = cam.toScreenY(-0.3) - size * 0.1,
     cx = cam.toScreenX((YARD.minX + YARD.maxX) / 2);
-  card.roundRect(cx - 1.5 * gap, cy - size * 0.75, 3 * gap, size * 1.9, 8).fill({ color: 0x1b2430, alpha: 0.55 });
-  SHAPES.forEach((shape, i) => {
-    const x = cx + (i - 1) * gap,
+  card.roundRect(cx - (n / 2) * gap, cy - size * 0.75, n * gap, size * 1.9, 8).fill({ color: 0x1b2430, alpha: 0.55 });
+  shapes.forEach((shape, i) => {
+    const x = cx + (i - (n - 1) / 2) * gap,
       y = cy - size * 0.05;
     const o = shape.outline;
-    let mx = 0,
-      my = 0;
+    let x0 = Infinity,
+      x1 = -Infinity,
+      y0 = Infinity,
+      y1 = -Infinity;
     for (let k = 0; k < o.length; k += 2) {
-      mx += o[k]!;
-      my += o[k + 1]!;
+      x0 = Math.min(x0, o[k]!);
+      x1 = Math.max(x1, o[k]!);
+      y0 = Math.min(y0, o[k + 1]!);
+      y1 = Math.max(y1, o[k + 1]!);
     }
-    mx /= o.length / 2;
-    my /= o.length / 2;
-    const scale = (size * 0.5) / 0.6;
+    // The largest side of the shape's box fills 1.1 times `size`; the strip (4 m by 1 m) as wide.
+    const scale = (size * 1.1) / Math.max(x1 - x0, y1 - y0);
     const pts: number[] = [];
-    for (let k = 0; k < o.length; k += 2) pts.push(x + (o[k]! - mx) * scale, y + (o[k + 1]! - my) * scale);
-    const done = challenge.done.find((d) => d.shape === i);
+    for (let k = 0; k < o.length; k += 2) pts.push(x + (o[k]! - (x0 + x1) / 2) * scale, y + (o[k + 1]! - (y0 + y1) / 2) * scale);
+    const done = challenge.done.find((d) => d.shape === i && d.drop !== 'falling');
     if (done) card.poly(pts).fill({ color: shape.color }).stroke({ width: 2, color: 0xffffff });
     else card.poly(pts).stroke({ width: 2, color: 0xffffff, alpha: 0.8 });
     for (let k = 0; k < 3; k++) {
@@ -653,6 +717,47 @@ function drawCard(): void {
   });
 }
 
+/**
+ * The basket on the lawn of a level with a piece to drop (Shape.drop): a wicker basket behind the
+ * sheet's layer and the lower half of its front over it, so a piece that lands in it is seen lying
+ * inside; a pale band on its rim marks the middle third (three stars).
+ */
+function drawBasket(): void {
+  basketBack.clear();
+  basket.clear();
+  const drop = challenge.shapes.find((sh) => sh.drop)?.drop;
+  if (!drop) return;
+  const cam = renderer.camera;
+  const x0 = cam.toScreenX(drop.x - drop.width / 2),
+    x1 = cam.toScreenX(drop.x + drop.width / 2),
+    top = cam.toScreenY(0.32),
+    bottom = cam.toScreenY(0),
+    lip = Math.max(2, cam.toScreenLength(0.04)),
+    slant = (x1 - x0) * 0.06;
+  for (const [g, from] of [
+    [basketBack, 0],
+    [basket, 0.5],
+  ] as const) {
+    const y0 = top + (bottom - top) * from,
+      s0 = slant * from;
+    g.poly([x0 + s0, y0, x1 - s0, y0, x1 - slant, bottom, x0 + slant, bottom]).fill({ color: from > 0 ? 0xb8874a : 0x8a5f2c });
+    // Wicker: bands across and ribs down.
+    for (let k = 1; k < 4; k++) {
+      const y = top + ((bottom - top) * k) / 4;
+      if (y > y0) g.moveTo(x0 + (slant * k) / 4, y).lineTo(x1 - (slant * k) / 4, y);
+    }
+    for (let k = 1; k < 8; k++) {
+      const u = k / 8;
+      g.moveTo(x0 + s0 + (x1 - x0 - 2 * s0) * u, y0).lineTo(x0 + slant + (x1 - x0 - 2 * slant) * u, bottom);
+    }
+    g.stroke({ width: 1, color: 0x5e3f1c, alpha: 0.8 });
+  }
+  basketBack.rect(x0 - lip, top - lip, x1 - x0 + 2 * lip, 2 * lip).fill({ color: 0x8a5f2c });
+  const third = (x1 - x0) / 6;
+  const mid = (x0 + x1) / 2;
+  basketBack.rect(mid - third, top - lip, 2 * third, 2 * lip).fill({ color: 0xffd166, alpha: 0.8 });
+}
+
 /** The status line: what to do, and how it went. */
 function updateStatus(): void {
   if (!shell.paused) pausedStroke = false;
@@ -660,30 +765,42 @@ function updateStatus(): void {
     status.set('Paused: the scissors cut only while the sheet moves. Press ▶ (or P) to run it.');
     return;
   }
-  const done = challenge.done;
-  const sheet = `Sheet ${sheetIndex + 1} of ${SHEETS.length}, ${SHEETS[sheetIndex]!.name}`;
+  const level = LEVELS[levelIndex]!;
+  const done = challenge.done,
+    shapes = challenge.shapes;
+  const head = `${levelIndex + 1}/${LEVELS.length} ${level.title}`;
+  const stars = (n: number) => `${'★'.repeat(n)}${'☆'.repeat(3 - n)}`;
   if (challenge.finished()) {
-    sheetStars[sheetIndex] = Math.max(sheetStars[sheetIndex]!, challenge.stars());
-    const last = sheetIndex === SHEETS.length - 1;
+    levelStars[levelIndex] = Math.max(levelStars[levelIndex]!, challenge.stars());
+    const last = levelIndex === LEVELS.length - 1;
+    const missed = done.some((d) => d.drop === 'out');
     status.set(
-      last
-        ? `All sheets cut: ${sheetStars.reduce((a, b) => a + Math.max(0, b), 0)} of ${9 * SHEETS.length} stars.`
-        : `${sheet}: all three cut out, ${challenge.stars()} of 9 stars. Next: ${SHEETS[sheetIndex + 1]!.name}.`,
+      missed
+        ? `${head}: the peg bag missed the basket. Undo (↶) and cut again, or try the next sheet.`
+        : `${head}: done, ${challenge.stars()} of ${3 * shapes.length} stars. ${
+            last
+              ? `All sheets: ${levelStars.reduce((a, b) => a + Math.max(0, b), 0)} of ${3 * LEVELS.reduce((a, l) => a + l.shapes(params.size).length, 0)} stars.`
+              : `Next: ${LEVELS[levelIndex + 1]!.title} (${LEVELS[levelIndex + 1]!.day}).`
+          }`,
     );
     showNext(true, last ? 'Start again ▶' : 'Next sheet ▶');
     return;
   }
   showNext(false);
-  if (done.length === 0) {
-    status.set(`${sheet}: cut out the circle, the star and the heart along their dashed lines.`);
+  const last = done[done.length - 1];
+  if (!last) {
+    status.set(`${head}: ${level.ask}`);
     return;
   }
-  const last = done[done.length - 1]!;
-  const left = challenge.pending().map((i) => SHAPES[i]!.name);
-  const name = SHAPES[last.shape]!.name;
+  if (last.drop === 'falling') {
+    status.set(`${head}: the peg bag falls…`);
+    return;
+  }
+  const left = challenge.pending().map((i) => shapes[i]!.name);
+  const name = shapes[last.shape]!.name;
   const tip = last.stars < 3 ? ' Cut on the dashed line for ★★★.' : '';
   status.set(
-    `${name[0]!.toUpperCase()}${name.slice(1)}: ${Math.round(last.fit * 100)}% ${'★'.repeat(last.stars)}${'☆'.repeat(3 - last.stars)}.${tip} Still to cut: ${left.join(', ')}.`,
+    `${name[0]!.toUpperCase()}${name.slice(1)}: ${Math.round(last.fit * 100)}% ${stars(last.stars)}.${tip} Still to cut: ${left.join(', ')}.`,
   );
 }
 
@@ -699,8 +816,15 @@ function draw(alpha: number, world: PhysicsWorld): void {
   if (layerWorld !== world) {
     sheet?.destroy();
     const grid = sheetGrid(params.size);
-    sheet = new SheetView(world, cloth, cells, fabricTexture(SHEET_WIDTH, grid.height, grid.spacing * 1.5), grid.spacing);
-    renderer.root.addChildAt(sheet.container, 1);
+    const level = LEVELS[levelIndex]!;
+    sheet = new SheetView(
+      world,
+      cloth,
+      cells,
+      fabricTexture(SHEET_WIDTH, grid.height, grid.spacing * 1.5, challenge.shapes, level.perforation),
+      grid.spacing,
+    );
+    renderer.root.addChildAt(sheet.container, renderer.root.getChildIndex(basketBack) + 1);
     pegPoints = [];
     const inv = world.components.Mass.inv;
     for (let c = 0; c < cloth.columns; c++) {
@@ -716,6 +840,7 @@ function draw(alpha: number, world: PhysicsWorld): void {
   drawSlash(now);
   drawLabels(now);
   drawCard();
+  drawBasket();
   playSounds();
   updateStatus();
   // The links left, counted again only when the cloth's links changed (a query allocates).
@@ -751,7 +876,20 @@ shell.expose({
   /** Undoes the last cutting stroke (as the undo button). */
   undoCut,
   /** The challenge: shapes cut out ({ shape, fit, stars }), and pieces that came away. */
-  cutOuts: () => challenge.done.map((d) => ({ shape: SHAPES[d.shape]!.name, fit: d.fit, stars: d.stars })),
+  cutOuts: () =>
+    challenge.done.map((d) => ({
+      shape: challenge.shapes[d.shape]!.name,
+      fit: d.fit,
+      stars: d.stars,
+      drop: d.drop ?? '',
+      landedAt: d.landedAt ?? Number.NaN,
+    })),
+  /** The level up: its index (0-based) and title, and its targets' names. */
+  level: () => ({ index: levelIndex, title: LEVELS[levelIndex]!.title, shapes: challenge.shapes.map((sh) => sh.name) }),
+  /** The level's targets' outlines (sheet coordinates: m from the sheet's left edge and down from its top, at rest). */
+  targets: () => challenge.shapes.map((sh) => [...sh.outline]),
+  /** The level's peg bag's basket (centre x and width, m), null on a level without one. */
+  basket: () => challenge.shapes.find((sh) => sh.drop)?.drop ?? null,
   scraps: () => challenge.scraps,
   /** The gust the player blows, 0 to 1. */
   gust: () => blow,

@@ -27,6 +27,17 @@ export interface Shape {
   readonly outline: readonly number[];
   /** Colour of its print, 0xRRGGBB. */
   readonly color: number;
+  /**
+   * A basket on the lawn the piece must land in: its centre (world x, m) and width (m). Its stars are
+   * then for where it lands (Challenge.watch), not for its fit.
+   */
+  readonly drop?: { readonly x: number; readonly width: number };
+  /**
+   * How it is printed: 'cut' (a tint inside a dashed cutting line, the default), 'pane' (as 'cut', in
+   * a wooden frame half a window bar wide: levels.ts WINDOW_FRAME), 'bag' (a peg bag) or 'tear' (a
+   * strip below a perforation).
+   */
+  readonly style?: 'cut' | 'pane' | 'bag' | 'tear';
 }
 
 /** A regular polygon of `n` corners (a circle's outline at n = 48) or a star of n points with inner radius `inner`. */
@@ -106,18 +117,28 @@ export interface ShapeMask {
   readonly excess: Float32Array;
 }
 
-/** Per shape, its cells on a sheet of `size` points across, at rest. */
 /**
  * A cell that comes away with a shape costs the fit nothing while its centre lies up to this many
  * link spacings outside the line (a cut on the line runs through those cells), rising linearly to a
  * whole cell at `EXCESS_FULL` spacings out and beyond.
  */
-const EXCESS_FREE = 0.4;
+export const EXCESS_FREE = 0.4;
 /** See `EXCESS_FREE`: the distance outside the line, in link spacings, from which a cell costs a whole cell. */
 const EXCESS_FULL = 0.9;
-export function shapeMasks(size: number): ShapeMask[] {
+/**
+ * Per shape of `shapes`, its cells on a sheet of `size` points across, at rest. `slack` (m, >= 0)
+ * widens the band along the line that a cut may stray into: cells up to the larger of `slack` and
+ * EXCESS_FREE spacings outside cost nothing (then up to a whole cell half a spacing further out), and
+ * the core starts the larger of `slack` and a spacing inside. The lab gives a finger more (main.ts).
+ * @throws RangeError if `slack` is negative or not finite.
+ */
+export function shapeMasks(size: number, shapes: readonly Shape[] = SHAPES, slack = 0): ShapeMask[] {
+  if (!(slack >= 0) || !Number.isFinite(slack)) throw new RangeError(`shapeMasks: slack must be a finite number >= 0, got ${slack}`);
   const { columns, rows, spacing } = sheetGrid(size);
-  return SHAPES.map((s) => {
+  const free = Math.max(EXCESS_FREE * spacing, slack),
+    full = free + (EXCESS_FULL - EXCESS_FREE) * spacing,
+    coreDepth = Math.max(spacing, slack);
+  return shapes.map((s) => {
     const inside: number[] = [],
       core: number[] = [];
     const allowed = new Uint8Array((columns - 1) * (rows - 1));
@@ -131,10 +152,10 @@ export function shapeMasks(size: number): ShapeMask[] {
         if (insidePolygon(s.outline, x, y)) {
           inside.push(cell);
           allowed[cell] = 1;
-          if (d >= spacing) core.push(cell);
+          if (d >= coreDepth) core.push(cell);
         } else {
           if (d <= spacing) allowed[cell] = 1;
-          excess[cell] = Math.max(0, Math.min(1, (d - EXCESS_FREE * spacing) / ((EXCESS_FULL - EXCESS_FREE) * spacing)));
+          excess[cell] = Math.max(0, Math.min(1, (d - free) / (full - free)));
         }
       }
     return { inside, core, allowed, excess };
@@ -156,6 +177,13 @@ export interface CutOut {
   stars: number;
   /** The piece it came away in (an index of that moment's ClothPieces), -1 if none holds any of it (cut to bits). */
   piece: number;
+  /**
+   * For a shape with a basket (Shape.drop): 'falling' until the piece lands, then 'in' or 'out' of
+   * the basket (its stars set then: Challenge.watch); absent for the others.
+   */
+  drop?: 'falling' | 'in' | 'out';
+  /** Where a dropped piece landed, world x, m (NaN until it has). */
+  landedAt?: number;
 }
 
 /** Stars for a fit in [0, 1]: 3 from 0.9, 2 from 0.6, 1 from 0.3, else none. */
@@ -178,6 +206,7 @@ export function scoreCutOuts(
   pieces: ClothPieces,
   masks: readonly ShapeMask[],
   pending: readonly number[],
+  shapes: readonly Shape[] = SHAPES,
 ): CutOut[] {
   const C = cloth.columns;
   const cellPiece = (cell: number): number => {
@@ -225,7 +254,8 @@ export function scoreCutOuts(
     for (const cell of mask.core) if (pieceOfCell[cell] !== best) missing++;
     for (let cell = 0; cell < n; cell++) if (pieceOfCell[cell] === best) beyond += mask.excess[cell]!;
     const fit = Math.max(0, 1 - (missing + beyond) / mask.inside.length);
-    out.push({ shape: s, fit, stars: starsFor(fit), piece: best });
+    if (shapes[s]?.drop) out.push({ shape: s, fit, stars: 0, piece: best, drop: 'falling', landedAt: Number.NaN });
+    else out.push({ shape: s, fit, stars: starsFor(fit), piece: best });
   }
   return out;
 }
@@ -241,20 +271,35 @@ export class Challenge {
   scraps = 0;
   /** The pieces at the last update. */
   pieces: ClothPieces | null = null;
-  private readonly masks: ShapeMask[];
+  private masks: ShapeMask[];
+  private slack = 0;
   private seenVersion = -1;
+  /** Per falling drop (an index of `done`), the cloth's point indices in its piece. */
+  private readonly falling = new Map<number, number[]>();
 
+  /** @param shapes the targets (default: the three shapes). */
   constructor(
     private readonly world: PhysicsWorld,
     private readonly cloth: Cloth,
     private readonly cells: ClothCells,
+    readonly shapes: readonly Shape[] = SHAPES,
   ) {
-    this.masks = shapeMasks(cloth.columns);
+    this.masks = shapeMasks(cloth.columns, shapes);
+  }
+
+  /**
+   * Sets the band along the lines that a cut may stray into, m (shapeMasks' `slack`), for the shapes
+   * scored from now on. @throws RangeError as shapeMasks.
+   */
+  setSlack(slack: number): void {
+    if (slack === this.slack) return;
+    this.masks = shapeMasks(this.cloth.columns, this.shapes, slack);
+    this.slack = slack;
   }
 
   /** Indices of the shapes not cut out yet. */
   pending(): number[] {
-    return SHAPES.map((_, i) => i).filter((i) => !this.done.some((d) => d.shape === i));
+    return this.shapes.map((_, i) => i).filter((i) => !this.done.some((d) => d.shape === i));
   }
 
   /** Total stars of the shapes cut out. */
@@ -262,9 +307,47 @@ export class Challenge {
     return this.done.reduce((sum, d) => sum + d.stars, 0);
   }
 
-  /** Whether every shape is cut out. */
+  /** Whether every shape is cut out (and every dropped piece has landed). */
   finished(): boolean {
-    return this.done.length === SHAPES.length;
+    return this.done.length === this.shapes.length && this.done.every((d) => d.drop !== 'falling');
+  }
+
+  /**
+   * Follows the dropped pieces still falling: one has landed when its lowest point is on the lawn and
+   * none of its points moves faster than 0.3 m/s. Its stars are then for how near the middle of the
+   * basket its centre lies: 3 within a sixth of the basket's width, 2 within a third, 1 inside it,
+   * none outside ('out'). Call it every step. @returns the drops that landed at this step.
+   */
+  watch(): CutOut[] {
+    const landed: CutOut[] = [];
+    if (this.falling.size === 0) return landed;
+    const P = this.world.components.Position,
+      V = this.world.components.Velocity;
+    for (const [k, points] of this.falling) {
+      const d = this.done[k];
+      if (d?.drop !== 'falling') {
+        this.falling.delete(k);
+        continue;
+      }
+      let low = Infinity,
+        fast = 0,
+        x = 0;
+      for (const i of points) {
+        const e = slotOf(this.cloth.points[i]!);
+        low = Math.min(low, P.y[e]!);
+        fast = Math.max(fast, Math.hypot(V.x[e]!, V.y[e]!));
+        x += P.x[e]! / points.length;
+      }
+      if (low > 0.02 || fast > 0.3) continue;
+      const basket = this.shapes[d.shape]!.drop!;
+      const off = Math.abs(x - basket.x) / basket.width;
+      d.stars = off <= 1 / 6 ? 3 : off <= 1 / 3 ? 2 : off <= 1 / 2 ? 1 : 0;
+      d.drop = d.stars > 0 ? 'in' : 'out';
+      d.landedAt = x;
+      this.falling.delete(k);
+      landed.push(d);
+    }
+    return landed;
   }
 
   /**
@@ -278,14 +361,25 @@ export class Challenge {
     const pieces = findPieces(this.world, this.cloth);
     this.pieces = pieces;
     this.scraps = pieces.size.filter((n, k) => n >= 4 && !pieces.held[k]).length;
-    const fresh = scoreCutOuts(this.world, this.cloth, this.cells, pieces, this.masks, this.pending());
-    this.done.push(...fresh);
+    const fresh = scoreCutOuts(this.world, this.cloth, this.cells, pieces, this.masks, this.pending(), this.shapes);
+    for (const d of fresh) {
+      this.done.push(d);
+      if (d.drop === 'falling') {
+        const points: number[] = [];
+        for (let i = 0; i < this.cloth.points.length; i++) if (pieces.pieceOf[i] === d.piece) points.push(i);
+        this.falling.set(this.done.length - 1, points);
+      }
+    }
     return fresh;
   }
 
-  /** Makes the next `update` group the pieces again (after the world was restored to an earlier state). */
+  /**
+   * Makes the next `update` group the pieces again (after the world was restored to an earlier
+   * state), and forgets the drops no longer in `done`.
+   */
   invalidate(): void {
     this.seenVersion = -1;
+    for (const k of [...this.falling.keys()]) if (k >= this.done.length) this.falling.delete(k);
   }
 
   /** Where piece `piece` of the last update is, m: the mean of its points. */

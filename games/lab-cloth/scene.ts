@@ -92,7 +92,7 @@ export interface ClothSceneParams {
   substeps: number;
 }
 
-/** The challenge's sheets, one after another: the same shapes to cut out in a stronger breeze each time. */
+/** The breezes of the lab's days, calm to windy (the levels' winds: levels.ts). */
 export const SHEETS: readonly { readonly name: string; readonly wind: number; readonly gusts: number }[] = Object.freeze([
   { name: 'a calm day', wind: 0.1, gusts: 0.5 },
   { name: 'a breezy day', wind: 0.3, gusts: 1.2 },
@@ -144,10 +144,11 @@ export interface ClothScene {
 
 /**
  * Builds the lab's world: the sheet (`size` points across, SHEET_WIDTH wide, rows for a 4:3 sheet)
- * hanging from PEGS pegs on the line at LINE_Y, in the YARD, in the breeze.
+ * hanging from PEGS pegs on the line at LINE_Y, in the YARD, in the breeze; `prepare` (a level's:
+ * levels.ts) changes the sheet before it settles.
  * @throws RangeError (from createCloth) on a size outside [2, 512].
  */
-export function createClothScene(p: ClothSceneParams): ClothScene {
+export function createClothScene(p: ClothSceneParams, prepare?: (world: PhysicsWorld, cloth: Cloth, size: number) => void): ClothScene {
   const { columns, rows, spacing, height } = sheetGrid(p.size);
   const n = columns * rows;
   const world = createPhysicsWorld({ gravity: [0, -9.81], capacity: 8 * n + 64 });
@@ -193,6 +194,7 @@ export function createClothScene(p: ClothSceneParams): ClothScene {
   }
   setBoundary(world, { min: [YARD.minX, YARD.minY], max: [YARD.maxX, YARD.maxY], friction: FRICTION });
   applyWind(world, p);
+  prepare?.(world, cloth, p.size);
   // The pegs moved the top row's pegged points inward by up to 0.2 m, straining the hem's links near
   // them by up to 100% (they never tear); SETTLE steps let the sheet take up its swags before it is shown.
   for (let i = 0; i < SETTLE; i++) step(world);

@@ -387,7 +387,7 @@ const game = await startPixiGame({
   step: stepWorld,
   bodies: () => 1,
   controls: [
-    { keys: '↓ ↑ / S W', action: 'dive / rise (let go: stop at the dashed line)', touch: 'stick ↓ ↑' },
+    { keys: '↓ ↑ / S W', action: 'dive / rise (let go: stop at the line)', touch: 'stick ↓ ↑' },
     { keys: '← → / A D', action: 'screw astern / ahead', touch: 'stick ← →' },
     { keys: 'Q / E', action: 'nose down / up', touch: 'Nose ↘ / ↗' },
   ],

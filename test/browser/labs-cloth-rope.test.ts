@@ -3,7 +3,8 @@
  * (390 x 844, touch: CDP touch events, so pointer capture and `pointer: coarse` behave as on a phone):
  * each loads without errors, and its input changes it as read through window.game. Cloth: a scissors
  * stroke cuts the sheet and the piece below it comes away, the hand takes hold and stretches it, Gust
- * blows. Rope: a swipe cuts the rope into two drawn ropes, a tap cuts the nearest one, and a level won
+ * blows; on the peg bag's sheet a swipe across the ribbon drops the bag, and on the next (no
+ * scissors) the hand tears the strip off along the dots; the tools stay on one row. Rope: a swipe cuts the rope into two drawn ropes, a tap cuts the nearest one, and a level won
  * offers the next. Every wait is on the page's state, not the clock.
  */
 import type { Page } from 'playwright-core';
@@ -34,6 +35,9 @@ interface ClothLab extends Lab {
   triangles(): number;
   shownStretch(): number;
   undoCount(): number;
+  level(): { index: number; title: string; shapes: string[] };
+  targets(): number[][];
+  cutOuts(): { shape: string; fit: number; stars: number; drop: string; landedAt: number }[];
 }
 interface RopeLab extends Lab {
   ids(): { ball: number; ropes: { anchor: number[]; bodies: number[]; links: number[] }[] };
@@ -311,6 +315,70 @@ for (const [device, options] of [
         expect(await g.page.evaluate(() => (window.game as unknown as ClothLab).links())).toBe(before.links);
       }
       expect(g.errors).toEqual([]);
+    });
+  });
+
+  describe(`lab-cloth levels (${device})`, () => {
+    it('the peg bag: a swipe across the ribbon drops it and it lands; next, the hand tears the strip off the dots', async () => {
+      const g = await h.openGame('lab-cloth', { ...options, query: { level: 3 } });
+      expect(await g.page.evaluate(() => (window.game as unknown as ClothLab).level().title)).toBe('The peg bag');
+      // The four tools on one row under the scene.
+      const tops = await g.page
+        .getByRole('group', { name: 'tools' })
+        .getByRole('button')
+        .evaluateAll((bs) => bs.map((b) => Math.round(b.getBoundingClientRect().top)));
+      expect(tops.length).toBe(4);
+      expect(Math.max(...tops) - Math.min(...tops)).toBeLessThanOrEqual(2);
+      /** Where sheet point (x, y) (m from the sheet's left edge and down from its top) is now, on the page. */
+      const onSheet = async (x: number, y: number) => {
+        const [wx, wy] = await g.page.evaluate(
+          ([x, y]) => {
+            const w = window.game as unknown as ClothLab;
+            const cl = w.cloth(),
+              s = 4 / (cl.columns - 1);
+            const e = cl.points[Math.round(y! / s) * cl.columns + Math.round(x! / s)]! % 2 ** 25;
+            return [w.world.components.Position.x[e]!, w.world.components.Position.y[e]!];
+          },
+          [x, y] as const,
+        );
+        return [wx!, wy!] as const;
+      };
+      // A swipe across the ribbon's middle (where the bag lands depends on the swing: the gust's part
+      // is checked headless, test/games/lab-cloth-levels.test.ts).
+      const o = (await g.page.evaluate(() => (window.game as unknown as ClothLab).targets()))[0]!;
+      const [lx, ly] = await onSheet(o[0]!, (o[1]! + o[5]!) / 2),
+        [rx] = await onSheet(o[2]!, (o[1]! + o[5]!) / 2);
+      // Half a link below the row of points there (a stroke along a row of points would only touch
+      // them), and long: the ribbon swings on while the finger moves.
+      await drag(g.page, [await toPage(g, lx - 1.5, ly - 0.06), await toPage(g, rx + 1.5, ly - 0.06)], 12);
+      const fell = await g.waitFor(() => (window.game as unknown as ClothLab).cutOuts()[0]?.drop, null, 30_000);
+      expect(['falling', 'in', 'out']).toContain(fell);
+      const landed = await g.waitFor(
+        () => {
+          const d = (window.game as unknown as ClothLab).cutOuts()[0]!;
+          return d.drop === 'falling' ? null : d;
+        },
+        null,
+        30_000,
+      );
+      // On the lawn, in the basket (its stars for how near the middle) or beside it (none).
+      expect(landed.landedAt).toBeGreaterThan(0);
+      expect(landed.stars > 0).toBe(landed.drop === 'in');
+      expect(await g.page.locator('.lab-status').textContent()).toMatch(landed.drop === 'in' ? /done, \d of 3 stars/ : /missed the basket/);
+      // The next sheet: the perforation, no scissors; the hand pulls the strip down from below the dots.
+      await press(g.page, 'Next sheet ▶');
+      await g.waitFor(() => (window.game as unknown as ClothLab).level().index === 3, null);
+      expect(await g.page.getByRole('button', { name: 'scissors: drag to cut (C)', exact: true }).isDisabled()).toBe(true);
+      expect(await g.page.evaluate(() => (window.game as unknown as ClothLab).tool())).toBe('pull');
+      const [px, py] = await onSheet(2, 2.45);
+      await drag(g.page, [await toPage(g, px, py), await toPage(g, px, py - 2.2)], 10, async () => {
+        await g.waitFor(() => (window.game as unknown as ClothLab).cutOuts().length > 0, null, 30_000);
+      });
+      const strip = (await g.page.evaluate(() => (window.game as unknown as ClothLab).cutOuts()))[0]!;
+      expect(strip.shape).toBe('strip');
+      expect(strip.fit).toBeGreaterThan(0.6);
+      expect(g.errors).toEqual([]);
+      await g.close();
     });
   });
 
