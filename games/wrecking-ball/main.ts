@@ -136,10 +136,11 @@ function createWorld(): PhysicsWorld {
 /** One step: the physics, then the score. */
 function gameStep(world: PhysicsWorld): void {
   const t0 = performance.now();
-  // A held ball is held firmly: it does not turn in the hand (see dragOverGround).
+  // A held ball is held firmly: it does not turn in the hand, which keeps it on its chain (holdBall).
   if (drag.body !== 0 && drag.body === handles.ball) {
     const W = world.components.AngularVelocity;
     W.x[handles.ball] = W.y[handles.ball] = W.z[handles.ball] = 0;
+    holdBall(world);
   }
   physicsStep(world);
   const ms = performance.now() - t0;
@@ -778,7 +779,10 @@ function updateControls(): void {
 // ---- Mouse: click the ground to send the hook; drag the ball ------------------------------------
 
 const canvas = app.canvas;
-const drag = new BodyDrag3D(renderer, { hertz: 2, dampingRatio: 0.3 });
+// Critically damped: a held ball settles where it is pulled instead of bobbing in the hand, so it
+// is let go at rest and swings along its chain's arc (bobbing at 0.3, it was let go moving up and
+// flew off the arc, its chain slack).
+const drag = new BodyDrag3D(renderer, { hertz: 2, dampingRatio: 1 });
 const ndc: [number, number] = [0, 0];
 const ground = new Plane(new Vector3(0, 1, 0), 0);
 const raycaster = new Raycaster();
@@ -801,6 +805,9 @@ function pressAt(ndcX: number, ndcY: number): 'ball' | 'swing' | 'hook' | 'none'
     grabOffset[0] = drag.target[0] - P.x[handles.ball]!;
     grabOffset[1] = drag.target[1] - P.y[handles.ball]!;
     grabOffset[2] = drag.target[2] - P.z[handles.ball]!;
+    const [hx, , hz] = hookPosition(handles.crane);
+    dragGoal[0] = P.x[handles.ball]! - hx;
+    dragGoal[1] = P.z[handles.ball]! - hz;
     handles.controls.released++;
     return 'ball';
   }
@@ -925,28 +932,46 @@ const dragAt = new Vector3();
  * turn in the hand, see gameStep).
  */
 const grabOffset = [0, 0, 0];
+/** Where the pointer asks the held ball's centre to go, from under the hook across the ground, m (x, z). */
+const dragGoal = [0, 0];
 /**
- * Moves the hand holding the ball so that the ball's centre goes over the ground point where the
- * pointer's ray meets the horizontal plane through the grab point (drawn up the screen, the ball
- * goes away from the camera; down, toward it), at most PULL_REACH from under the hook, at the height
- * its chain holds it there taut (sqrt(HANG^2 - d^2) under the hook at d across the ground from it):
- * a hand held at the grab's height lifted the ball off its chain, which buckled and held it up, and
- * a swing let go from there ran level instead of down through the pieces. A ray that misses the
- * plane (over the horizon) leaves the hand where it is.
+ * Sets where the held ball's centre is to go: over the ground point where the pointer's ray meets
+ * the horizontal plane through the grab point (drawn up the screen, the ball goes away from the
+ * camera; down, toward it), at most PULL_REACH from under the hook. A ray that misses the plane
+ * (over the horizon) leaves it. The hand follows in `holdBall`.
  */
 function dragOverGround(ndcX: number, ndcY: number): void {
   raycaster.setFromCamera(new Vector2(ndcX, ndcY), app.camera);
   if (raycaster.ray.intersectPlane(dragPlane, dragAt) === null) return;
-  const [hx, hy, hz] = hookPosition(handles.crane);
-  let dx = dragAt.x - grabOffset[0]! - hx,
-    dz = dragAt.z - grabOffset[2]! - hz;
+  pullBall(dragAt.x - grabOffset[0]!, dragAt.z - grabOffset[2]!);
+}
+/** Sets where the held ball's centre is pulled to across the ground (x, z, m), at most PULL_REACH from under the hook. */
+function pullBall(x: number, z: number): void {
+  const [hx, , hz] = hookPosition(handles.crane);
+  let dx = x - hx,
+    dz = z - hz;
   const d = Math.hypot(dx, dz);
   if (d > PULL_REACH) {
     dx *= PULL_REACH / d;
     dz *= PULL_REACH / d;
   }
-  const y = hy - Math.sqrt(HANG * HANG - Math.min(d, PULL_REACH) ** 2);
-  drag.moveTo([hx + dx + grabOffset[0]!, y + grabOffset[1]!, hz + dz + grabOffset[2]!]);
+  dragGoal[0] = dx;
+  dragGoal[1] = dz;
+}
+/**
+ * Before each step while the ball is held: the hand at the grab point of a ball whose centre is at
+ * `dragGoal` across the ground, at the height its taut chain holds the ball where it is now
+ * (sqrt(HANG^2 - d^2) under the hook at d across the ground), so the hand pulls the ball along its
+ * chain's reach and never up off it: a hand held at the grab's height lifted the ball, its chain
+ * buckled and held it up, and a swing let go from there ran level instead of down through the pieces.
+ */
+function holdBall(world: PhysicsWorld): void {
+  const P = world.components.Position,
+    b = handles.ball;
+  const [hx, hy, hz] = hookPosition(handles.crane);
+  const d = Math.min(HANG - 0.01, Math.hypot(P.x[b]! - hx, P.z[b]! - hz));
+  const y = hy - Math.sqrt(HANG * HANG - d * d);
+  drag.moveTo([hx + dragGoal[0]! + grabOffset[0]!, y + grabOffset[1]!, hz + dragGoal[1]! + grabOffset[2]!]);
 }
 canvas.addEventListener('pointermove', (event) => {
   if (event.pointerId !== pressId) return;
@@ -1263,6 +1288,11 @@ shell.expose({
   pressAt,
   /** The piece the running swing is aimed at (0 when none), and whether its arrow shows. */
   aimed: (): { piece: number; arrow: boolean } => ({ piece: aimed, arrow: aimArrow.visible }),
+  /**
+   * While the ball is held: pulls its centre toward (x, z) across the ground, m, as a drag of the
+   * pointer over the ground does (at most PULL_REACH from under the hook; the hand keeps it on its chain).
+   */
+  pullBall,
   /** While the ball is held: the piece its swing would meet first (ringed red), 0 when none or not held. */
   swingMeets: (): number => swingMeets,
   /** Whether the depth cues show: the ball's ground mark, and (while held) its plumb line and swing track. */

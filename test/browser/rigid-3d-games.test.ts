@@ -43,7 +43,8 @@ describe('3D rigid-body games in headless Chromium', () => {
         controls: { goal: number[] | null; moves: unknown[] };
       };
       pressAt(x: number, y: number): string;
-      drag: { body: number; moveTo(p: number[]): void; release(): void };
+      drag: { body: number; release(): void };
+      pullBall(x: number, z: number): void;
       score(): number;
     };
     const drawn = await g.page.evaluate(() => {
@@ -150,7 +151,7 @@ describe('3D rigid-body games in headless Chromium', () => {
     expect(swing.moves).toBeGreaterThan(0);
     // The swing's target is marked from the next frame (paused or not): a ring and an arrow over it.
     await g.waitFor(() => (window.game as unknown as { aimed(): { piece: number; arrow: boolean } }).aimed().arrow, null);
-    // A press on the ball grabs it; moving the hand pulls it.
+    // A press on the ball grabs it; a pull (as a drag over the ground) moves it.
     const r = await g.page.evaluate(() => {
       const game = window.game as unknown as WB;
       const ball = game.handles().ball,
@@ -159,7 +160,7 @@ describe('3D rigid-body games in headless Chromium', () => {
       const s = game.app.camera.position.clone().set(at[0]!, at[1]!, at[2]!).project(game.app.camera);
       const pressed = game.pressAt(s.x, s.y);
       const x0 = P.x[ball]!;
-      game.drag.moveTo([x0 + 3, P.y[ball]! + 1, P.z[ball]!]);
+      game.pullBall(x0 + 3, P.z[ball]!);
       for (let i = 0; i < 40; i++) game.step();
       const moved = P.x[ball]! - x0;
       return { pressed, moved };
