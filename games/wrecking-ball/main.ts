@@ -67,6 +67,7 @@ import {
   CHAIN_LINKS,
   clearTarget,
   fallenCount,
+  HANG,
   hookPosition,
   JIB_HEIGHT,
   LINK_RADIUS,
@@ -135,6 +136,12 @@ function createWorld(): PhysicsWorld {
 /** One step: the physics, then the score. */
 function gameStep(world: PhysicsWorld): void {
   const t0 = performance.now();
+  // A held ball is held firmly: it does not turn in the hand, which keeps it on its chain (holdBall).
+  if (drag.body !== 0 && drag.body === handles.ball) {
+    const W = world.components.AngularVelocity;
+    W.x[handles.ball] = W.y[handles.ball] = W.z[handles.ball] = 0;
+    holdBall(world);
+  }
   physicsStep(world);
   const ms = performance.now() - t0;
   // Sound: the steel ball rings as metal; pieces knocking into each other or the ground as wood.
@@ -623,9 +630,10 @@ const ballMarkRim = new Mesh(
 ballMarkRim.rotation.x = -Math.PI / 2;
 app.scene.add(ballMarkRim);
 // While the ball is held: a plumb line from it down to its mark, the swing's track on the ground
-// (a dashed band, from under the ball through under the hook to as far the other side) with a ring
-// where the ball passes lowest and fastest (under the hook), and a red ring round the first piece
-// the swing will meet.
+// (a dashed band, from under the ball through under the hook to as far the other side; each dash
+// bright where the ball passes low enough to hit a wall or a stack, faint where it passes high)
+// with a ring where the ball passes lowest and fastest (under the hook), and a red ring round the
+// first piece the swing will meet.
 const cueMaterial = new MeshBasicMaterial({ color: 0xfff6dc, transparent: true, opacity: 0.9, depthWrite: false });
 const plumb = new Mesh(new CylinderGeometry(1, 1, 1, 6), cueMaterial);
 plumb.visible = false;
@@ -637,8 +645,10 @@ const TRACK_DASHES = 16,
 const CUE_SCALE = PORTRAIT ? 1.8 : 1;
 /** Width of the track's dashes, m. */
 const TRACK_WIDTH = 0.14 * CUE_SCALE;
+/** Height of the ball's bottom, m, up to which a dash of the track is drawn at full brightness; it fades over the next 1.5 m. */
+const LOW_SWING = 0.8;
 const trackDashes = Array.from({ length: TRACK_DASHES }, () => {
-  const m = new Mesh(new PlaneGeometry(1, 1), cueMaterial);
+  const m = new Mesh(new PlaneGeometry(1, 1), cueMaterial.clone());
   m.visible = false;
   app.scene.add(m);
   return m;
@@ -655,6 +665,8 @@ app.scene.add(meetRing);
 const CUE_Y = 0.02;
 /** The piece a held ball's swing would meet first (0: none), for tests. */
 let swingMeets = 0;
+/** The lowest the held ball's bottom passes on its swing, m (under the hook). */
+let swingLow = Number.POSITIVE_INFINITY;
 /**
  * Places the depth cues for this frame (see above): the ball's mark always; while the ball is held,
  * its plumb line and its swing as a pendulum let go from rest under a still hook (./scene
@@ -681,18 +693,25 @@ function placeCues(ball: ArrayLike<number>, hook: ArrayLike<number>): void {
   plumb.position.set(bx, CUE_Y + drop / 2, bz);
   plumb.scale.set(0.025 * CUE_SCALE, drop, 0.025 * CUE_SCALE);
   const hx = hook[0]!,
+    hy = hook[1]!,
     hz = hook[2]!;
   const ex = bx - hx,
     ez = bz - hz;
-  // The dashes from under the ball (f = 1) to as far past the hook (f = -1), flat on the ground.
-  const span = 2 * Math.hypot(ex, ez),
+  // The dashes from under the ball (f = 1) to as far past the hook (f = -1), flat on the ground,
+  // each as bright as the ball passes low over it (its bottom sqrt(HANG^2 - d^2) + BALL_RADIUS under the hook).
+  const reach = Math.hypot(ex, ez),
+    span = 2 * reach,
     heading = Math.atan2(-ez, ex);
+  swingLow = Number.POSITIVE_INFINITY;
   for (let i = 0; i < TRACK_DASHES; i++) {
     const d = trackDashes[i]!;
     const f = 1 - (2 * (i + 0.5)) / TRACK_DASHES;
     d.position.set(hx + f * ex, CUE_Y + 0.003, hz + f * ez);
     d.rotation.set(-Math.PI / 2, 0, heading);
     d.scale.set(Math.max(0.01, (DASH_FILL * span) / TRACK_DASHES), TRACK_WIDTH, 1);
+    const bottom = hy - Math.sqrt(Math.max(0, HANG * HANG - f * f * reach * reach)) - BALL_RADIUS;
+    swingLow = Math.min(swingLow, bottom);
+    (d.material as MeshBasicMaterial).opacity = 0.9 * Math.min(1, Math.max(0.35, 1 - (bottom - LOW_SWING) / 1.5));
   }
   passRing.position.set(hx, CUE_Y + 0.004, hz);
   passRing.scale.setScalar(CUE_SCALE);
@@ -760,7 +779,10 @@ function updateControls(): void {
 // ---- Mouse: click the ground to send the hook; drag the ball ------------------------------------
 
 const canvas = app.canvas;
-const drag = new BodyDrag3D(renderer, { hertz: 2, dampingRatio: 0.3 });
+// Critically damped: a held ball settles where it is pulled instead of bobbing in the hand, so it
+// is let go at rest and swings along its chain's arc (bobbing at 0.3, it was let go moving up and
+// flew off the arc, its chain slack).
+const drag = new BodyDrag3D(renderer, { hertz: 2, dampingRatio: 1 });
 const ndc: [number, number] = [0, 0];
 const ground = new Plane(new Vector3(0, 1, 0), 0);
 const raycaster = new Raycaster();
@@ -779,6 +801,13 @@ function pressAt(ndcX: number, ndcY: number): 'ball' | 'swing' | 'hook' | 'none'
     drag.grab(ndcX, ndcY, app.camera);
     if (drag.body !== handles.ball) return 'none';
     dragPlane.constant = -drag.target[1];
+    const P = shell.world.components.Position;
+    grabOffset[0] = drag.target[0] - P.x[handles.ball]!;
+    grabOffset[1] = drag.target[1] - P.y[handles.ball]!;
+    grabOffset[2] = drag.target[2] - P.z[handles.ball]!;
+    const [hx, , hz] = hookPosition(handles.crane);
+    dragGoal[0] = P.x[handles.ball]! - hx;
+    dragGoal[1] = P.z[handles.ball]! - hz;
     handles.controls.released++;
     return 'ball';
   }
@@ -899,22 +928,50 @@ const PULL_REACH = 4;
 const dragPlane = new Plane(new Vector3(0, 1, 0), 0);
 const dragAt = new Vector3();
 /**
- * Moves the hand holding the ball to where the pointer's ray meets the horizontal plane through the
- * grab point (drawn up the screen, the ball goes away from the camera; down, toward it), at most
- * PULL_REACH from under the hook; a ray that misses the plane (over the horizon) leaves it.
+ * Where the hand holds the ball, from its centre, m (the grab point when grabbed; the ball does not
+ * turn in the hand, see gameStep).
+ */
+const grabOffset = [0, 0, 0];
+/** Where the pointer asks the held ball's centre to go, from under the hook across the ground, m (x, z). */
+const dragGoal = [0, 0];
+/**
+ * Sets where the held ball's centre is to go: over the ground point where the pointer's ray meets
+ * the horizontal plane through the grab point (drawn up the screen, the ball goes away from the
+ * camera; down, toward it), at most PULL_REACH from under the hook. A ray that misses the plane
+ * (over the horizon) leaves it. The hand follows in `holdBall`.
  */
 function dragOverGround(ndcX: number, ndcY: number): void {
   raycaster.setFromCamera(new Vector2(ndcX, ndcY), app.camera);
   if (raycaster.ray.intersectPlane(dragPlane, dragAt) === null) return;
+  pullBall(dragAt.x - grabOffset[0]!, dragAt.z - grabOffset[2]!);
+}
+/** Sets where the held ball's centre is pulled to across the ground (x, z, m), at most PULL_REACH from under the hook. */
+function pullBall(x: number, z: number): void {
   const [hx, , hz] = hookPosition(handles.crane);
-  let dx = dragAt.x - hx,
-    dz = dragAt.z - hz;
+  let dx = x - hx,
+    dz = z - hz;
   const d = Math.hypot(dx, dz);
   if (d > PULL_REACH) {
     dx *= PULL_REACH / d;
     dz *= PULL_REACH / d;
   }
-  drag.moveTo([hx + dx, -dragPlane.constant, hz + dz]);
+  dragGoal[0] = dx;
+  dragGoal[1] = dz;
+}
+/**
+ * Before each step while the ball is held: the hand at the grab point of a ball whose centre is at
+ * `dragGoal` across the ground, at the height its taut chain holds the ball where it is now
+ * (sqrt(HANG^2 - d^2) under the hook at d across the ground), so the hand pulls the ball along its
+ * chain's reach and never up off it: a hand held at the grab's height lifted the ball, its chain
+ * buckled and held it up, and a swing let go from there ran level instead of down through the pieces.
+ */
+function holdBall(world: PhysicsWorld): void {
+  const P = world.components.Position,
+    b = handles.ball;
+  const [hx, hy, hz] = hookPosition(handles.crane);
+  const d = Math.min(HANG - 0.01, Math.hypot(P.x[b]! - hx, P.z[b]! - hz));
+  const y = hy - Math.sqrt(HANG * HANG - d * d);
+  drag.moveTo([hx + dragGoal[0]! + grabOffset[0]!, y + grabOffset[1]!, hz + dragGoal[1]! + grabOffset[2]!]);
 }
 canvas.addEventListener('pointermove', (event) => {
   if (event.pointerId !== pressId) return;
@@ -1071,10 +1128,12 @@ const tapWord = touch ? 'Tap' : 'Click';
 /** The hint's text now ('' hides it). */
 function hintText(): string {
   const c = handles.controls;
-  if (drag.body !== 0 && drag.body === handles.ball)
-    return swingMeets !== 0
-      ? 'Let go: the ball swings along the dashes into the red ring'
-      : 'Pull so the dashes cross a block, then let go';
+  if (drag.body !== 0 && drag.body === handles.ball) {
+    if (swingMeets !== 0) return 'Let go: the ball swings along the dashes into the red ring';
+    // Swinging over everything: the hook is too high for the ball to pass low.
+    if (swingLow > LOW_SWING + 0.6) return `The ball swings high: lower the hook (${touch ? 'Down' : 'E'}) to swing it low`;
+    return 'Pull so the bright dashes cross a block, then let go';
+  }
   if (cleared || outOfSwings()) return '';
   if (shell.world.time < hintUntil) return `That moves the hook. ${tapWord} a block to swing the ball at it`;
   if (c.released === 0 && c.moves.length === 0 && aimed === 0) return `${tapWord} a block: the crane swings the ball into it`;
@@ -1229,6 +1288,11 @@ shell.expose({
   pressAt,
   /** The piece the running swing is aimed at (0 when none), and whether its arrow shows. */
   aimed: (): { piece: number; arrow: boolean } => ({ piece: aimed, arrow: aimArrow.visible }),
+  /**
+   * While the ball is held: pulls its centre toward (x, z) across the ground, m, as a drag of the
+   * pointer over the ground does (at most PULL_REACH from under the hook; the hand keeps it on its chain).
+   */
+  pullBall,
   /** While the ball is held: the piece its swing would meet first (ringed red), 0 when none or not held. */
   swingMeets: (): number => swingMeets,
   /** Whether the depth cues show: the ball's ground mark, and (while held) its plumb line and swing track. */

@@ -31,8 +31,12 @@ import {
 export const JIB_HEIGHT = 11.5;
 /** Smallest and largest trolley radius on the jib, m. */
 export const RADIUS_RANGE: readonly [number, number] = [3, 11];
-/** Lowest and highest hook height, m. */
-export const HOOK_RANGE: readonly [number, number] = [5.7, 10.5];
+/**
+ * Lowest and highest hook height, m. At the lowest the hanging ball's bottom is 6 cm off the ground
+ * (the hook to the ball's centre is HANG, 5.19 m, and its radius 0.55 m): at 5.7 m it sat on the
+ * ground with its chain slack, and a swing let go from there dragged along the ground.
+ */
+export const HOOK_RANGE: readonly [number, number] = [5.8, 10.5];
 /** Largest slew rate, rad/s; trolley speed along the jib and hoist speed, m/s. */
 export const SLEW_RATE = 0.7;
 export const TROLLEY_SPEED = 3.5;
@@ -703,17 +707,23 @@ function reachAlong(p: Piece, ux: number, uz: number): number {
  * meet in the last APPROACH_TIME before it reaches the piece tapped, 1 s for each one earlier and
  * 20 s for passing the mast, and REACH_COST s a metre for a follow-through past the jib's reach.
  * The ball strikes at the piece's height, but no higher than STRIKE_SHARE of its structure's
- * (`structureOf`). The last leg is the swing's run (`CraneMove.run`; its first move releases it);
+ * (`structureOf`), across the ground at the piece in a wall and at the middle of a stack or a tower. The last leg is the swing's run (`CraneMove.run`; its first move releases it);
  * after the hit the hook follows through (FOLLOW_SPEED), so the ball swings on through the structure
  * and comes to rest past it. `craneSystem` makes the plan again from where the ball is every
  * REPLAN_EVERY s.
  */
 export function aimAt(world: PhysicsWorld, h: WreckingBallHandles, piece: number): void {
   const P = world.components.Position;
-  const tx = P.x[piece]!,
-    tz = P.z[piece]!;
   const tapped = h.pieces.find((q) => q.body === piece);
   const structure = tapped ? structureOf(h.pieces, tapped) : [];
+  // Where the ball strikes across the ground: the piece tapped in a wall (a brick along it), the
+  // middle of a plank stack or a tower (a plank tapped at the stack's edge was only glanced off).
+  let tx = P.x[piece]!,
+    tz = P.z[piece]!;
+  if (tapped && tapped.kind !== 'wall' && structure.length > 0) {
+    tx = structure.reduce((a, q) => a + P.x[q.body]!, 0) / structure.length;
+    tz = structure.reduce((a, q) => a + P.z[q.body]!, 0) / structure.length;
+  }
   // The ball's centre at the piece's, but no higher than STRIKE_SHARE of its structure's height and
   // never lower than skimming the ground.
   let top = 0;
@@ -750,8 +760,9 @@ export function aimAt(world: PhysicsWorld, h: WreckingBallHandles, piece: number
   // The cost of each direction's plan: its time, how square it meets the piece, what the ball
   // would meet on its way there and whether its follow-through stays in the jib's reach.
   const reach = BALL_RADIUS + Math.max(...(tapped?.half ?? [0.3])) + 0.05;
+  // (A stack is struck at its middle, where its layers cross: square to one or the other.)
   const long: [number, number] | null =
-    tapped && Math.max(tapped.half[0], tapped.half[2]) > 1.5 * Math.min(tapped.half[0], tapped.half[2])
+    tapped && tapped.kind === 'wall' && Math.max(tapped.half[0], tapped.half[2]) > 1.5 * Math.min(tapped.half[0], tapped.half[2])
       ? tapped.half[0] > tapped.half[2]
         ? [Math.cos(tapped.yaw), -Math.sin(tapped.yaw)]
         : [Math.sin(tapped.yaw), Math.cos(tapped.yaw)]
@@ -1010,14 +1021,20 @@ export function upComponent(world: PhysicsWorld, e: number, axis: number): numbe
 
 /** Samples along a swing that `pieceOnSwing` looks for pieces at. */
 const SWING_SAMPLES = 40;
+/**
+ * How far past the hook, as a share of how far the ball was pulled from under it, `pieceOnSwing`
+ * follows the swing: beyond it the ball is slowing to its turn (at 0.75 of the way it still has
+ * sqrt(1 - 0.75^2), two thirds, of its top speed) and a piece it reaches is only nudged.
+ */
+export const SWING_REACH = 0.75;
 
 /**
  * The first standing piece the ball at `ball` (m) meets when let go from rest under a hook held
  * still at `hook` (m): as a pendulum of length HANG it swings along the line from where it is
- * through the point under the hook to as far past it, its centre sqrt(HANG^2 - d^2) under the hook
- * at d across the ground from it; a piece is met where the ball's centre comes within BALL_RADIUS
- * and 0.8 of the piece's largest half extent of the piece's centre. @returns its body, or 0 when the
- * swing meets none.
+ * through the point under the hook, SWING_REACH as far past it, its centre sqrt(HANG^2 - d^2) under
+ * the hook at d across the ground from it; a piece is met where its box (as built, turned about the
+ * vertical by its yaw, where its centre is now) comes within the ball's radius of the ball's centre.
+ * @returns its body, or 0 when the swing meets none.
  */
 export function pieceOnSwing(world: PhysicsWorld, pieces: readonly Piece[], ball: ArrayLike<number>, hook: ArrayLike<number>): number {
   const P = world.components.Position;
@@ -1027,13 +1044,26 @@ export function pieceOnSwing(world: PhysicsWorld, pieces: readonly Piece[], ball
   const ex = ball[0]! - hx,
     ez = ball[2]! - hz;
   for (let k = 0; k <= SWING_SAMPLES; k++) {
-    const f = 1 - (2 * k) / SWING_SAMPLES;
+    const f = 1 - ((1 + SWING_REACH) * k) / SWING_SAMPLES;
     const x = hx + f * ex,
       z = hz + f * ez;
     const y = hy - Math.sqrt(Math.max(0, HANG * HANG - f * f * (ex * ex + ez * ez)));
     for (const p of pieces) {
       if (p.fallen || !isAlive(world, p.body)) continue;
-      if (Math.hypot(P.x[p.body]! - x, P.y[p.body]! - y, P.z[p.body]! - z) < BALL_RADIUS + 0.8 * Math.max(...p.half)) return p.body;
+      // The ball's centre in the box's frame (its x axis (cos yaw, -sin yaw) across the ground, z (sin yaw, cos yaw)).
+      const dx = x - P.x[p.body]!,
+        dy = y - P.y[p.body]!,
+        dz = z - P.z[p.body]!;
+      const c = Math.cos(p.yaw),
+        sn = Math.sin(p.yaw);
+      const lx = dx * c - dz * sn,
+        lz = dx * sn + dz * c;
+      const gap = Math.hypot(
+        Math.max(0, Math.abs(lx) - p.half[0]),
+        Math.max(0, Math.abs(dy) - p.half[1]),
+        Math.max(0, Math.abs(lz) - p.half[2]),
+      );
+      if (gap < BALL_RADIUS) return p.body;
     }
   }
   return 0;
