@@ -81,21 +81,29 @@ export function layMines(beacons: ArrayLike<number>, seabed: SubmarineHandles['s
 }
 
 /**
+ * Distance, m, from the point (px, py) to the hull, a box `SUBMARINE.length` x `SUBMARINE.height`
+ * centred at (x, y) m and turned by `angle` rad (0 inside it): the point taken into the hull's frame
+ * (u along, v across), then to the nearest point of the box.
+ */
+export function hullDistance(x: number, y: number, angle: number, px: number, py: number): number {
+  const dx = px - x,
+    dy = py - y,
+    co = Math.cos(angle),
+    s = Math.sin(angle);
+  const u = dx * co + dy * s,
+    v = -dx * s + dy * co;
+  const nu = Math.max(-SUBMARINE.length / 2, Math.min(SUBMARINE.length / 2, u)),
+    nv = Math.max(-SUBMARINE.height / 2, Math.min(SUBMARINE.height / 2, v));
+  return Math.hypot(u - nu, v - nv);
+}
+
+/**
  * Whether the hull, a box `SUBMARINE.length` x `SUBMARINE.height` centred at (x, y) m and turned by
  * `angle` rad, touches a mine of radius `MINE_RADIUS` at (mx, my): the distance from the mine's
  * centre to the nearest point of the box is under the radius.
  */
 export function touchesMine(x: number, y: number, angle: number, mx: number, my: number): boolean {
-  const dx = mx - x,
-    dy = my - y,
-    co = Math.cos(angle),
-    s = Math.sin(angle);
-  // The mine's centre in the hull's frame (u along, v across), then the nearest point of the box.
-  const u = dx * co + dy * s,
-    v = -dx * s + dy * co;
-  const nu = Math.max(-SUBMARINE.length / 2, Math.min(SUBMARINE.length / 2, u)),
-    nv = Math.max(-SUBMARINE.height / 2, Math.min(SUBMARINE.height / 2, v));
-  return Math.hypot(u - nu, v - nv) < MINE_RADIUS;
+  return hullDistance(x, y, angle, mx, my) < MINE_RADIUS;
 }
 
 /**

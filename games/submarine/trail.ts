@@ -14,7 +14,7 @@
 
 import type { SubmarineHandles } from '@bitphysics/projects';
 import { SUBMARINE, seabedHeight } from '@bitphysics/projects';
-import { courseOrder, MINE_RADIUS, type Mine } from './mines';
+import { courseOrder, hullDistance, MINE_RADIUS, type Mine } from './mines';
 
 /** The trail's settings. */
 export const TRAIL = Object.freeze({
@@ -196,13 +196,5 @@ export function layTrail(beacons: ArrayLike<number>, seabed: SubmarineHandles['s
  * `angle` rad, comes within `TRAIL.reach` of the glow at (gx, gy).
  */
 export function touchesGlow(x: number, y: number, angle: number, gx: number, gy: number): boolean {
-  const dx = gx - x,
-    dy = gy - y,
-    co = Math.cos(angle),
-    s = Math.sin(angle);
-  const u = dx * co + dy * s,
-    v = -dx * s + dy * co;
-  const nu = Math.max(-SUBMARINE.length / 2, Math.min(SUBMARINE.length / 2, u)),
-    nv = Math.max(-SUBMARINE.height / 2, Math.min(SUBMARINE.height / 2, v));
-  return Math.hypot(u - nu, v - nv) < TRAIL.reach;
+  return hullDistance(x, y, angle, gx, gy) < TRAIL.reach;
 }
