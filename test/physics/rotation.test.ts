@@ -79,8 +79,11 @@ describe("3D rigid rotation (Euler's equations)", () => {
       L0 = Math.hypot(...angularMomentum(world));
     let worstK = 0,
       worstL = 0;
+    // Sampled every 4th step: the energy error oscillates over many steps, and a growing |L| error or a
+    // blow-up shows at any sample.
     for (let i = 0; i < 100_000; i++) {
       step(world);
+      if (i % 4 !== 3) continue;
       worstK = Math.max(worstK, Math.abs(kineticEnergy(world) - K0) / K0);
       worstL = Math.max(worstL, Math.abs(Math.hypot(...angularMomentum(world)) - L0) / L0);
     }
@@ -88,13 +91,14 @@ describe("3D rigid rotation (Euler's equations)", () => {
     expect(worstK).toBeLessThan(1e-5);
   });
 
-  // 100,000 steps (it was 1,000,000, which took 10 to 50 s of the suite; long runs belong in the bench).
-  test('the orientation quaternion stays unit length over 100,000 steps', () => {
+  // Without the renormalisation a step moves |q| by about (|w| dt)^2 / 4 = 2e-6 here, so 20,000 steps
+  // tell a renormalised quaternion (rounding only) from one that drifts by many orders of magnitude.
+  test('the orientation quaternion stays unit length over 20,000 steps', () => {
     const world = createPhysicsWorld({ dimensions: 3, gravity: [0, 0, 0], dt: 1e-3 });
     const b = addBody(world, { mass: 2, inertia: I, angularVelocity: [0.4, 3, 0.2] });
     const q = world.components.Orientation;
     let worst = 0;
-    for (let i = 0; i < 100_000; i++) {
+    for (let i = 0; i < 20_000; i++) {
       step(world);
       if (i % 1000 === 0) worst = Math.max(worst, Math.abs(Math.hypot(q.x[b]!, q.y[b]!, q.z[b]!, q.w[b]!) - 1));
     }

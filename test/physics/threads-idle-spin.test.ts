@@ -24,16 +24,19 @@ afterEach(() => {
   for (const w of worlds.splice(0)) disposeWorld(w);
 });
 
-/** 40,000 balls in a box: enough that the integration and collision loops run on both threads. */
+/**
+ * 20,000 balls in a box: enough that the integration and collision loops run on both threads (a loop
+ * goes to the pool from 2 x MIN_PARALLEL_PER_THREAD = 16,384 entities, threads/parallel.ts).
+ */
 function balls(spin: number): PhysicsWorld {
-  const world = createPhysicsWorld({ dimensions: 2, capacity: 40_000, gravity: [0, -10], threads: 2 });
+  const world = createPhysicsWorld({ dimensions: 2, capacity: 20_000, gravity: [0, -10], threads: 2 });
   worlds.push(world);
   world.threadPool!.adaptive = false;
   world.threadPool!.idleSpin = spin;
-  setBoundary(world, { min: [0, 0], max: [200, 400] });
+  setBoundary(world, { min: [0, 0], max: [200, 200] });
   const rng = new Rng(3);
-  for (let i = 0; i < 40_000; i++)
-    addBody(world, { position: [rng.range(1, 199), rng.range(1, 399)], radius: 0.4, velocity: [rng.range(-2, 2), 0] });
+  for (let i = 0; i < 20_000; i++)
+    addBody(world, { position: [rng.range(1, 199), rng.range(1, 199)], radius: 0.4, velocity: [rng.range(-2, 2), 0] });
   return world;
 }
 
