@@ -227,7 +227,6 @@ interface QueryMasks extends SparseSetLike {
   notMasks: Record<number, number>;
   orMasks: Record<number, number>;
   generations: number[];
-  addObservable: Observable;
 }
 
 /**
@@ -258,62 +257,98 @@ export function leanQuery(world: object, terms: object[]): QueryResult {
 }
 
 /**
- * Adds to the new query `q` every live entity that matches it, in the entity index's order, as
- * bitecs' registerQuery does (prefabs skipped; an entity matches if, in every generation of the
- * query's components, it has all of `masks`, none of `notMasks`, and, if the query has `orMasks`,
- * at least one of them in some generation).
+ * Fills the new query `q` with every live entity that matches it, in the entity index's order, as
+ * bitecs' registerQuery does: prefabs skipped; an entity matches if, in every generation of the
+ * query's components, it has all of `masks` and none of `notMasks`, and, if the query has
+ * `orMasks`, at least one of them in some generation. The members are written at once (the query is
+ * new: nothing listens to its add observable yet, so there is nothing to notify).
  */
 function fillQuery(ctx: EcsContext, q: QueryMasks): void {
+  const gens = q.generations.slice();
+  const all = gens.map((g) => q.masks[g] ?? 0),
+    none = gens.map((g) => q.notMasks[g] ?? 0),
+    any = gens.map((g) => q.orMasks[g] ?? 0);
+  // bitecs' scan skips prefabs: the same as a Not of the Prefab component.
   const prefab = ctx.componentMap.get(Prefab);
-  const prefabMasks = prefab === undefined ? null : ctx.entityMasks[prefab.generationId]!,
-    prefabBit = prefab === undefined ? 0 : prefab.bitflag;
-  const gens = q.generations;
-  const g = gens.length;
-  const masks: (ArrayLike<number> & { [i: number]: number })[] = [];
-  const all = new Int32Array(g),
-    none = new Int32Array(g),
-    any = new Int32Array(g);
-  for (let k = 0; k < g; k++) {
-    const gen = gens[k]!;
-    masks.push(ctx.entityMasks[gen]!);
-    all[k] = q.masks[gen] ?? 0;
-    none[k] = q.notMasks[gen] ?? 0;
-    any[k] = q.orMasks[gen] ?? 0;
+  if (prefab !== undefined) {
+    let k = gens.indexOf(prefab.generationId);
+    if (k < 0) {
+      k = gens.push(prefab.generationId) - 1;
+      all.push(0);
+      none.push(0);
+      any.push(0);
+    }
+    none[k] = none[k]! | prefab.bitflag;
   }
   const needAny = Object.keys(q.orMasks).length > 0;
-  const dense = ctx.entityIndex.dense,
-    n = ctx.entityIndex.aliveCount;
-  const add = q.addObservable;
-  if (g === 1 && !needAny && prefabMasks === null) {
-    // The usual query: components of one generation, no Or, no prefabs in the world.
-    const m = masks[0]!,
-      a = all[0]!,
-      z = none[0]!;
+  const index = ctx.entityIndex,
+    masks = ctx.entityMasks;
+  const n = index.aliveCount;
+  const ids = new Int32Array(n);
+  let count: number;
+  if (gens.length <= 2) {
+    // One or two mask words an entity (every world of up to 62 components): one loop, no arrays of masks.
+    const two = gens.length === 2;
+    count = matchTwoWords(
+      index.dense,
+      n,
+      masks[gens[0]!]!,
+      all[0]!,
+      none[0]!,
+      any[0]!,
+      two ? masks[gens[1]!]! : masks[gens[0]!]!,
+      two ? all[1]! : 0,
+      two ? none[1]! : 0,
+      two ? any[1]! : 0,
+      needAny,
+      ids,
+    );
+  } else {
+    count = 0;
     for (let i = 0; i < n; i++) {
-      const e = dense[i]!;
-      const bits = m[e]! | 0;
-      if ((bits & a) === a && (bits & z) === 0) {
-        q.add(e);
-        add.notify(e);
+      const e = index.dense[i]!;
+      let match = true,
+        anyMatch = !needAny;
+      for (let k = 0; k < gens.length && match; k++) {
+        const bits = masks[gens[k]!]![e] ?? 0;
+        if ((bits & none[k]!) !== 0 || (bits & all[k]!) !== all[k]) match = false;
+        else if ((bits & any[k]!) !== 0) anyMatch = true;
       }
+      if (match && anyMatch) ids[count++] = e;
     }
-    return;
   }
+  const members = ids.subarray(0, count);
+  if (!assignSparseSet(q, members)) for (let i = 0; i < count; i++) q.add(members[i]!);
+}
+
+/**
+ * The entities of `dense[0..n)` whose mask words `m0[e]`, `m1[e]` hold all bits of `a0`, `a1`, none of
+ * `z0`, `z1` and, if `needAny`, some bit of `o0` or `o1`, written to `out` in order. @returns their count.
+ */
+function matchTwoWords(
+  dense: ArrayLike<number>,
+  n: number,
+  m0: ArrayLike<number>,
+  a0: number,
+  z0: number,
+  o0: number,
+  m1: ArrayLike<number>,
+  a1: number,
+  z1: number,
+  o1: number,
+  needAny: boolean,
+  out: Int32Array,
+): number {
+  let count = 0;
   for (let i = 0; i < n; i++) {
     const e = dense[i]!;
-    if (prefabMasks !== null && ((prefabMasks[e] ?? 0) & prefabBit) === prefabBit) continue;
-    let match = true,
-      anyMatch = !needAny;
-    for (let k = 0; k < g && match; k++) {
-      const bits = masks[k]![e] ?? 0;
-      if ((bits & none[k]!) !== 0 || (bits & all[k]!) !== all[k]) match = false;
-      else if ((bits & any[k]!) !== 0) anyMatch = true;
-    }
-    if (match && anyMatch) {
-      q.add(e);
-      add.notify(e);
-    }
+    const b0 = m0[e]! | 0,
+      b1 = m1[e]! | 0;
+    if ((b0 & a0) !== a0 || (b0 & z0) !== 0 || (b1 & a1) !== a1 || (b1 & z1) !== 0) continue;
+    if (needAny && ((b0 & o0) | (b1 & o1)) === 0) continue;
+    out[count++] = e;
   }
+  return count;
 }
 
 /** The component set of one entity: read-only view over its mask (bitecs' writes are ignored). */
