@@ -28,7 +28,7 @@ import {
 } from '@bitphysics/game-kit';
 import { createReadout } from '@bitphysics/game-kit/lab-kit';
 import { startPixiGame } from '@bitphysics/game-kit/pixi';
-import { contactEvents, createPhysicsWorld, isAlive, type PhysicsWorld, Rng, setGravity, slotOf, step } from '@bitphysics/physics';
+import { contactEvents, createPhysicsWorld, isAlive, type PhysicsWorld, Rng, setGravity, slotOf, step, warmUp } from '@bitphysics/physics';
 import { Container, Graphics, Text } from 'pixi.js';
 import { type DebrisKind, Effects } from './effects';
 import { CATAPULT, cupAt, drawBrick, drawCatapult, drawGlass, drawHill, drawMound, drawPit, drawStone, drawWood, mixColor } from './look';
@@ -108,6 +108,8 @@ const lastThrow = {
 };
 /** A fresh world with the current level (the shell calls it at start and on R). */
 function createWorld(): PhysicsWorld {
+  // Once a page: the physics code compiled while the page loads, not in the level's first frames.
+  warmUp(2);
   const world = createPhysicsWorld(worldOptions(params));
   lv = buildLevel(world, { level: params.level - 1, seed: params.seed, gravity: params.gravity, jointStrength: params.jointStrength });
   shotsLeft = lv.shots;

@@ -28,7 +28,7 @@ import {
   seedParam,
 } from '@bitphysics/game-kit';
 import { ORBIT_CONTROLS_RIGHT, startThreeGame } from '@bitphysics/game-kit/three';
-import { contactEvents, createPhysicsWorld, isAlive, type PhysicsWorld, step as physicsStep } from '@bitphysics/physics';
+import { contactEvents, createPhysicsWorld, isAlive, type PhysicsWorld, step as physicsStep, warmUp } from '@bitphysics/physics';
 import { BodyDrag3D } from '@bitphysics/render-three';
 import {
   BackSide,
@@ -126,6 +126,8 @@ function darken(color: number, f: number): number {
 }
 
 function createWorld(): PhysicsWorld {
+  // Once a page: the physics code compiled while the page loads, not in the level's first frames.
+  warmUp(3);
   const world = createPhysicsWorld(wreckingBallWorldOptions());
   handles = buildWreckingBall(world, { level: params.level, seed: params.seed, ballWeight: params.ballWeight });
   levelScore = 0;

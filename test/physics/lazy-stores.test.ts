@@ -8,7 +8,9 @@ import {
   getEntityComponents,
   hasComponent,
   LAZY_GROUPS,
+  Not,
   type PhysicsWorld,
+  query as physicsQuery,
   removeComponent,
   restore,
   slotOf,
@@ -16,7 +18,7 @@ import {
   stateHash,
   stepMany,
 } from '@bitphysics/physics';
-import { addEntity, query, removeEntity } from 'bitecs';
+import { $internal, addEntity, getAllEntities, Or, query, removeEntity } from 'bitecs';
 import { describe, expect, test } from 'vitest';
 
 // Stores a world never uses are never allocated (world/components.ts), and bitecs' bookkeeping is kept in
@@ -148,5 +150,43 @@ describe('lean bitecs bookkeeping', () => {
     addComponent(world, again, c.Position);
     addComponent(world, again, c.Velocity);
     expect(c.Velocity.x[again]).toBe(0);
+  });
+
+  test('a query made while entities exist holds the matching entities in the entity index order (Not, Or, two mask generations)', () => {
+    const world = createPhysicsWorld({ capacity: 300 });
+    const c = world.components;
+    // Components from both ends of the registration order: the first 31 share one mask word, later ones another.
+    const all = Object.values(c) as object[];
+    const ctx = (world as unknown as Record<symbol, { componentMap: Map<object, { generationId: number }>; queries: Set<object> }>)[
+      $internal
+    ]!;
+    const late = all.filter((s) => (ctx.componentMap.get(s)?.generationId ?? 0) > 0).slice(0, 3);
+    expect(late.length).toBe(3);
+    const stores = [c.Position, c.Velocity, c.Mass, c.Ball, ...late];
+    let seed = 777;
+    const rand = (): number => (seed = (Math.imul(seed, 1103515245) + 12345) >>> 0) / 2 ** 32;
+    for (let k = 0; k < 250; k++) {
+      const e = addEntity(world);
+      for (const s of stores) if (rand() < 0.5) addComponent(world, e, s);
+      if (rand() < 0.1) removeEntity(world, e);
+    }
+    const ordered = (has: (e: number) => boolean): number[] => Array.from(getAllEntities(world)).filter(has);
+    const cases: Array<[object[], (e: number) => boolean]> = [
+      [
+        [c.Position, c.Velocity, Not(c.Ball)],
+        (e) => hasComponent(world, e, c.Position) && hasComponent(world, e, c.Velocity) && !hasComponent(world, e, c.Ball),
+      ],
+      [[c.Mass, Not(c.Ball)], (e) => hasComponent(world, e, c.Mass) && !hasComponent(world, e, c.Ball)],
+      [[c.Position, late[0]!], (e) => hasComponent(world, e, c.Position) && hasComponent(world, e, late[0]!)],
+      [[late[1]!, Not(c.Ball)], (e) => hasComponent(world, e, late[1]!) && !hasComponent(world, e, c.Ball)],
+      [[Or(c.Ball, late[2]!)], (e) => hasComponent(world, e, c.Ball) || hasComponent(world, e, late[2]!)],
+    ];
+    for (const [terms, has] of cases) {
+      const want = ordered(has);
+      expect(want.length).toBeGreaterThan(5);
+      const before = ctx.queries.size;
+      expect(Array.from(physicsQuery(world, terms))).toEqual(want);
+      expect(ctx.queries.size, 'a query new to the world').toBe(before + 1);
+    }
   });
 });

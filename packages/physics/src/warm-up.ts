@@ -7,46 +7,57 @@
  * compiles it on a background thread and keeps interpreting while it compiles. A scene's first steps
  * run every stage's loops over all its bodies and contacts in the interpreter, many times slower than
  * the compiled code, and the bigger the scene the more of its first step is interpreted: a pyramid of
- * 820 boxes took about 130 ms of main-thread CPU for its first step against about 10 ms for a later
- * one, and several steps more before all of its code was compiled, although only 9 compiled functions
- * were thrown away again. A small scene reaches the compile thresholds of the same functions in far
- * fewer operations, so most of the stall moves out of the first steps to wherever the program calls
- * this, such as a game's loading. In all it costs a little more CPU than it saves, so it is a call a
- * program makes, not something a world does by itself (and a module of its own, so a program that
- * does not call it does not bundle the scene's shapes and joints).
+ * 820 boxes took about 110 ms of main-thread CPU for its first step against about 15 ms once compiled,
+ * and several steps more before all of its code was compiled. A small scene reaches the compile
+ * thresholds of the same functions in fewer operations, so the stall moves out of the first steps to
+ * wherever the program calls this, such as a game's loading. In all it costs more CPU than it
+ * saves, so it is a call a program makes, not something a world does by itself (and a module of its
+ * own, so a program that does not call it does not bundle the scene's shapes and joints).
  *
- * The scene covers the common paths of the dimension: boxes stacked on a static ground (polygon
- * manifolds, friction, islands, sleep), ball bodies (the ball rows), a circle or sphere shape, and a
- * chain of joints. It touches no state outside the world it makes, so a world's trajectory is the same
- * with and without it.
+ * A function called once a step (the broadphase, the manifolds' preparation, the joints' rows) is
+ * compiled after a number of loop iterations, not of steps: the scene has enough contacts and joints
+ * for those to be compiled within its steps (a pyramid of 136 boxes, a grid of 180 joints), and one
+ * solver substep in 2D, so that they make a larger part of its steps. It covers the paths of the
+ * dimension that scenes and games use: boxes stacked on a static ground (two-point manifolds, the
+ * block solver, friction, islands), ball bodies piled and a fast stone with restitution (impacts),
+ * a circle or sphere shape, welds that break under a falling weight, a hinged chain, bodies without
+ * shapes joined in a grid with two of them pinned (2D); a plane, capsules on ball joints hanging from
+ * a moving kinematic body with a distance joint, linear drag and two integrator substeps (3D). It
+ * touches no state outside the world it makes, so a world's trajectory is the same with and without it.
  */
 import { addBody, setBoundary } from './bodies/api.js';
+import { addPlane } from './bodies/rigid.js';
 import { addBox, addShape } from './bodies/shapes-2d.js';
 import { addShape3D } from './bodies/shapes-3d.js';
 import { createPhysicsWorld } from './create-world.js';
+import { setDrag } from './forces/api.js';
+import { addBallJoint3D } from './joints/ball-joint-3d.js';
+import { addDistanceJoint3D } from './joints/distance-joint-3d.js';
 import { addHingeJoint3D } from './joints/hinge-joint-3d.js';
 import { addRevoluteJoint } from './joints/revolute-joint.js';
+import { addWeldJoint } from './joints/weld-joint.js';
 import { step } from './step/step.js';
 import { describe } from './validation/validate.js';
 import type { PhysicsWorld } from './world/options.js';
 
 /**
- * Steps the warm-up scene runs (`warmUp`): about 1.3 s of simulated time at 60 Hz, enough for its loops to be compiled.
+ * Steps the warm-up scene runs (`warmUp`): 0.67 s of simulated time at 60 Hz, enough for its loops to be compiled.
  * @category World and step
  */
-export const WARM_UP_STEPS = 80;
+export const WARM_UP_STEPS = 40;
 
 /** Dimensions (2, 3) whose warm-up ran in this program. */
 const warmed = new Set<number>();
 
 /**
  * Warms the physics code of `dimensions` up once a program: builds a small scene of that dimension
- * (boxes on a ground, a pile of balls, a disc or sphere, a hinged chain), steps it WARM_UP_STEPS (80)
- * times and throws it away, so that a large scene's first steps afterwards run compiled code (see the
- * top of warm-up.ts). Call it where a pause is expected, such as while a game loads its first level:
- * it takes about 0.2 to 0.5 s of main-thread time, and a pyramid of 820 boxes' first step then takes
- * about 50 ms of CPU instead of about 130. A second call for the same dimension does nothing. Worlds'
- * states are the same with and without it.
+ * (boxes on a ground, a pile of balls, a disc or sphere, joints of the common kinds), steps it
+ * WARM_UP_STEPS (40) times and throws it away, so that a large scene's first steps afterwards run
+ * compiled code (see the top of warm-up.ts). Call it where a pause is expected, such as while a game
+ * loads its first level: it takes about 0.3 to 0.5 s of main-thread time, and a pyramid of 820 boxes'
+ * first step then takes about 15 ms of CPU instead of about 110, a joint grid of 10,000 bodies' about
+ * 45 ms instead of about 170. A second call for the same dimension does nothing. Worlds' states are
+ * the same with and without it.
  * @param dimensions 2 or 3. Default 2.
  * @returns whether it ran (false: this dimension was already warmed up).
  * @throws RangeError if dimensions is not 2 or 3.
@@ -66,56 +77,114 @@ export function warmUp(dimensions: 2 | 3 = 2): boolean {
 
 /** The warm-up scene of `dimensions` in a world of its own, built and not stepped. */
 export function warmUpScene(dimensions: 2 | 3): PhysicsWorld {
-  const world = createPhysicsWorld({ dimensions, capacity: 96, gravity: dimensions === 2 ? [0, -10] : [0, -10, 0] });
-  if (dimensions === 2) build2D(world);
-  else build3D(world);
+  if (dimensions === 2) {
+    // One solver substep: the functions run once a step get a larger part of each step (see the top).
+    const world = createPhysicsWorld({ dimensions, capacity: 600, gravity: [0, -10], solverSubsteps: 1 });
+    build2D(world);
+    return world;
+  }
+  // Two integrator substeps: the step's own start and end of substeps (a game's chain takes four).
+  const world = createPhysicsWorld({ dimensions, capacity: 400, gravity: [0, -10, 0], substeps: 2 });
+  build3D(world);
   return world;
 }
 
-/** 2D: a pyramid of 21 boxes, 32 balls falling beside it, a disc and a chain of 4 hinged boxes, in a walled box. */
+/** 2D: a pyramid of 136 boxes, 16 balls, a disc, a fast stone, welded boxes a weight breaks, a hinged chain and a pinned joint grid, in a walled box. */
 function build2D(world: PhysicsWorld): void {
-  setBoundary(world, { min: [-8, -1], max: [8, 30] });
-  addBox(world, { position: [0, -0.5], halfExtents: [8, 0.5], static: true });
-  for (let row = 0; row < 6; row++) {
-    for (let i = 0; i < 6 - row; i++) {
-      addBox(world, { position: [(i - (5 - row) / 2) * 1.05 - 3, 0.5 + row], halfExtents: [0.5, 0.5], density: 1, friction: 0.6 });
-    }
+  setBoundary(world, { min: [-20, -1], max: [20, 40] });
+  addBox(world, { position: [0, -0.5], halfExtents: [20, 0.5], static: true, friction: 0.6 });
+  for (let row = 0; row < 16; row++) {
+    const n = 16 - row;
+    for (let i = 0; i < n; i++)
+      addBox(world, { position: [(i - (n - 1) / 2) * 1.05 - 8, 0.5 + row], halfExtents: [0.5, 0.5], density: 1, friction: 0.6 });
   }
   // Rows offset by half a ball, so the balls land on each other and pile up.
-  for (let i = 0; i < 32; i++) {
+  for (let i = 0; i < 16; i++) {
     const row = Math.floor(i / 8);
     addBody(world, { position: [2 + (i % 8) * 0.32 + (row % 2) * 0.16, 1 + row * 0.4], radius: 0.15, mass: 1 });
   }
-  addShape(world, addBody(world, { position: [-6, 3] }), { type: 'circle', radius: 0.4, density: 1 });
-  let previous = addBox(world, { position: [5, 8], halfExtents: [0.4, 0.1], static: true });
+  addShape(world, addBody(world, { position: [-2, 3] }), { type: 'circle', radius: 0.4, density: 1 });
+  // A stone thrown into the pyramid's side: a contact with restitution closing fast (the impact stage).
+  addBody(world, { position: [-18, 3], velocity: [25, 2], radius: 0.3, mass: 3, restitution: 0.3, friction: 0.6 });
+  buildJoints2D(world);
+}
+
+/** 2D joints: three boxes welded on a post under a falling weight that breaks a weld, a hinged chain, a 10 x 10 grid of bodies without shapes with two pinned. */
+function buildJoints2D(world: PhysicsWorld): void {
+  let below = addBox(world, { position: [8, 0.5], halfExtents: [0.2, 0.5], static: true });
+  for (let k = 0; k < 3; k++) {
+    const box = addBox(world, { position: [8, 1.25 + 0.5 * k], halfExtents: [0.6, 0.25], density: 2, friction: 0.7 });
+    addWeldJoint(world, { a: below, b: box, anchor: [8, 1 + 0.5 * k], breakForce: 300, breakTorque: 75 });
+    below = box;
+  }
+  addBody(world, { position: [8.4, 6], velocity: [0, -10], radius: 0.4, mass: 40 });
+  let previous = addBox(world, { position: [12, 8], halfExtents: [0.4, 0.1], static: true });
   for (let k = 0; k < 4; k++) {
-    const link = addBox(world, { position: [5.8 + k * 0.8, 8], halfExtents: [0.4, 0.1], density: 1 });
-    addRevoluteJoint(world, { a: previous, b: link, anchor: [5.4 + k * 0.8, 8] });
+    const link = addBox(world, { position: [12.8 + k * 0.8, 8], halfExtents: [0.4, 0.1], density: 1 });
+    addRevoluteJoint(world, { a: previous, b: link, anchor: [12.4 + k * 0.8, 8] });
     previous = link;
+  }
+  const side = 10,
+    grid: number[] = [];
+  for (let i = 0; i < side; i++) {
+    for (let k = 0; k < side; k++) {
+      const position = [-15 + k, 35 - i];
+      const pinned = i === 0 && (k === 2 || k === side - 3);
+      const body = pinned ? addBody(world, { position, static: true }) : addBody(world, { position, mass: 1, inertia: 0.08 });
+      grid.push(body);
+      if (i > 0) addRevoluteJoint(world, { a: grid[(i - 1) * side + k]!, b: body, anchor: [-15 + k, 35.5 - i] });
+      if (k > 0) addRevoluteJoint(world, { a: grid[i * side + k - 1]!, b: body, anchor: [-15.5 + k, 35 - i] });
+    }
   }
 }
 
-/** 3D: a stack of 20 boxes on a static slab, 24 balls falling beside it, a sphere shape and a chain of 3 hinged boxes. */
+/** 3D: a plane and a slab, a pile of 75 boxes, 24 balls, a sphere shape with drag, a capsule chain on a moving hook and a hinged chain. */
 function build3D(world: PhysicsWorld): void {
-  setBoundary(world, { min: [-6, -1, -6], max: [6, 20, 6] });
-  addShape3D(world, addBody(world, { position: [0, -0.5, 0], static: true }), { type: 'box', halfExtents: [6, 0.5, 6] });
-  for (let i = 0; i < 20; i++) {
-    const box = addBody(world, { position: [-3 + (i % 2) * 1.05, 0.5 + Math.floor(i / 4), -0.5 + ((i >> 1) % 2) * 1.05] });
-    addShape3D(world, box, { type: 'box', halfExtents: [0.5, 0.5, 0.5], density: 1, friction: 0.6 });
+  setBoundary(world, { min: [-12, -1, -12], max: [12, 30, 12] });
+  addPlane(world, { normal: [0, 1, 0], point: [0, 0, 0], friction: 0.7 });
+  addShape3D(world, addBody(world, { position: [0, 0.25, 0], static: true }), { type: 'box', halfExtents: [6, 0.25, 6] });
+  for (let l = 0; l < 3; l++) {
+    for (let i = 0; i < 5; i++) {
+      for (let k = 0; k < 5; k++) {
+        const box = addBody(world, { position: [-3 + i * 1.05, 1 + l, -2 + k * 1.05] });
+        addShape3D(world, box, { type: 'box', halfExtents: [0.5, 0.5, 0.5], density: 1, friction: 0.6, restitution: 0.05 });
+      }
+    }
   }
   // Layers offset by half a ball, so the balls land on each other and pile up.
   for (let i = 0; i < 24; i++) {
     const layer = Math.floor(i / 8),
       shift = (layer % 2) * 0.16;
-    addBody(world, { position: [2 + (i % 4) * 0.32 + shift, 1 + layer * 0.4, ((i >> 2) % 2) * 0.32 + shift], radius: 0.15, mass: 1 });
+    addBody(world, { position: [3 + (i % 4) * 0.32 + shift, 1 + layer * 0.4, ((i >> 2) % 2) * 0.32 + shift], radius: 0.15, mass: 1 });
   }
-  addShape3D(world, addBody(world, { position: [0, 4, 3] }), { type: 'sphere', radius: 0.4, density: 1 });
-  let previous = addBody(world, { position: [3, 8, 3], static: true });
+  const sphere = addBody(world, { position: [-1.5, 6, -0.5], velocity: [0, -4, 0] });
+  addShape3D(world, sphere, { type: 'sphere', radius: 0.5, density: 2, friction: 0.4, restitution: 0.1 });
+  setDrag(world, sphere, { linear: 0.5 });
+  buildJoints3D(world);
+}
+
+/** 3D joints: four capsules on ball joints from a kinematic hook moving sideways, a heavy sphere at their end held by a distance joint, and three boxes on hinges. */
+function buildJoints3D(world: PhysicsWorld): void {
+  const hook = addBody(world, { position: [8, 10, 0], kinematic: true, velocity: [-2, 0, 0] });
+  let above = hook,
+    top = 10;
+  for (let k = 0; k < 4; k++) {
+    const link = addBody(world, { position: [8, top - 0.4, 0] });
+    addShape3D(world, link, { type: 'capsule', radius: 0.08, halfHeight: 0.32, density: 7800 });
+    addBallJoint3D(world, { a: above, b: link, anchor: [8, top, 0] });
+    above = link;
+    top -= 0.8;
+  }
+  const ball = addBody(world, { position: [8, top - 0.5, 0] });
+  addShape3D(world, ball, { type: 'sphere', radius: 0.5, density: 800, friction: 0.4, restitution: 0.1 });
+  addBallJoint3D(world, { a: above, b: ball, anchor: [8, top, 0] });
+  addDistanceJoint3D(world, { a: hook, b: ball, anchorA: [8, 10, 0], anchorB: [8, top - 0.5, 0], minLength: 0 });
+  let previous = addBody(world, { position: [-8, 8, 3], static: true });
   addShape3D(world, previous, { type: 'box', halfExtents: [0.4, 0.1, 0.1] });
   for (let k = 0; k < 3; k++) {
-    const link = addBody(world, { position: [3.8 + k * 0.8, 8, 3] });
+    const link = addBody(world, { position: [-7.2 + k * 0.8, 8, 3] });
     addShape3D(world, link, { type: 'box', halfExtents: [0.4, 0.1, 0.1], density: 1 });
-    addHingeJoint3D(world, { a: previous, b: link, anchor: [3.4 + k * 0.8, 8, 3], axis: [0, 0, 1] });
+    addHingeJoint3D(world, { a: previous, b: link, anchor: [-7.6 + k * 0.8, 8, 3], axis: [0, 0, 1] });
     previous = link;
   }
 }

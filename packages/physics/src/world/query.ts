@@ -1,4 +1,5 @@
-import { Not as bitecsNot, query as bitecsQuery, commitRemovals, type QueryResult } from 'bitecs';
+import { Not as bitecsNot, commitRemovals, type QueryResult } from 'bitecs';
+import { leanQuery } from './lean-ecs.js';
 
 /**
  * Cached queries. bitecs 0.4's `query(world, terms)` hashes its terms on every call (map, sort and
@@ -6,7 +7,8 @@ import { Not as bitecsNot, query as bitecsQuery, commitRemovals, type QueryResul
  * This `query` looks the terms up by the identity of their objects instead (~0.1 us), asks bitecs
  * once per new combination, and thereafter returns the same live array after committing pending
  * removals, exactly as bitecs' own `query` does (so the bitecs trap applies: never query inside a
- * loop that removes). Use `Not` from here (it memoises bitecs' Not(...) objects so they have a
+ * loop that removes). A new query of a world with lean storage is filled by world/lean-ecs.ts
+ * `leanQuery` (one loop over the typed masks rather than bitecs' scan). Use `Not` from here (it memoises bitecs' Not(...) objects so they have a
  * stable identity).
  */
 
@@ -74,7 +76,7 @@ export function query(world: object, terms: Term[]): QueryResult {
     bucket = [];
     cache.set(key, bucket);
   }
-  const dense = bitecsQuery(world as never, terms as never);
+  const dense = leanQuery(world, terms);
   bucket.push({ terms: terms.slice(), dense });
   return dense;
 }
