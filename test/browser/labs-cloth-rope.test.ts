@@ -136,6 +136,8 @@ for (const [device, options] of [
     });
 
     it('a stroke on the paused sheet cuts nothing and says paused; across the running sheet it cuts, and the part below falls away', async () => {
+      // A whole sheet to start from, on a retry too (a first try that timed out left its cut sheet).
+      await g.page.evaluate(() => (window.game as unknown as { reset(): void }).reset());
       await g.page.evaluate(() => {
         (window.game as unknown as Lab).paused = true;
       });
