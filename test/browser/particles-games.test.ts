@@ -306,7 +306,7 @@ describe('black hole', () => {
 
   it('loads with the holes, the ship, lives and score on screen and no errors', async () => {
     expect(await page.canvasColors()).toBeGreaterThan(16);
-    expect(await page.page.locator('[data-hud="numbers"]').textContent()).toMatch(/Lives ♥♥♥\s+Score 0 \(holes passed\)\s+Holes 2/);
+    expect(await page.page.locator('[data-hud="numbers"]').textContent()).toMatch(/Lives ♥♥♥\s+Score 0 \(1 a hole\)\s+Holes 2/);
     const s = await page.stats();
     expect(s.entities).toBe(3); // the ship (with its exhaust emitter) and two holes
     await page.waitFor(() => (window.game as unknown as BlackHoleGameHandle).pathPoints() > 1, null);
@@ -362,15 +362,15 @@ describe('black hole', () => {
     expect(g.errors).toEqual([]);
   });
 
-  it('without ?holes it plays levels: level 1 with one hole, its number, lives and best score on screen', async () => {
+  it('without ?holes it plays levels: level 1 with its three holes, its number, lives and best score on screen', async () => {
     const g = await h.openGame('black-hole');
     const level = await g.page.evaluate(() => {
       const game = window.game as unknown as { level: { spec: { level: number; holes: number } } | null; bh: { holes: number[] } };
       return { spec: game.level?.spec, holes: game.bh.holes.length };
     });
-    expect(level).toEqual({ spec: expect.objectContaining({ level: 1, holes: 1 }), holes: 1 });
+    expect(level).toEqual({ spec: expect.objectContaining({ level: 1, holes: 3 }), holes: 3 });
     // The panel offers the level to start at, not a hole count (a level lays out its own holes; the
-    // panel's count of 3 disagreed with level 1's one hole).
+    // panel's count disagreed with the level's).
     const controls = await g.page.evaluate(() => {
       type Ctl = { property: string; $input?: HTMLInputElement };
       const gui = (window.game as unknown as { panel: { gui: { controllersRecursive(): Ctl[] } } }).panel.gui;
@@ -378,7 +378,7 @@ describe('black hole', () => {
     });
     expect(controls.level).toBe('1');
     expect('holes' in controls).toBe(false);
-    expect(await g.page.locator('[data-hud="numbers"]').textContent()).toMatch(/Level 1\s+Lives ♥♥♥\s+Score 0 \(holes passed\)\s+Best \d+/);
+    expect(await g.page.locator('[data-hud="numbers"]').textContent()).toMatch(/Level 1\s+Lives ♥♥♥\s+Score 0\s+Best \d+/);
     // The hole is drawn (its horizon is black with a glow: many colours in the canvas).
     expect(await g.canvasColors()).toBeGreaterThan(16);
     expect(g.errors).toEqual([]);
