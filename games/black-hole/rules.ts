@@ -254,7 +254,9 @@ export function gravitationalConstant(game: BlackHoleGame): number {
  * @throws RangeError unless dt > 0 and full >= 0 are finite.
  */
 export function rampThrust(vec: [number, number], tx: number, ty: number, full: number, dt: number): void {
-  check(dt > 0 && full >= 0 && Number.isFinite(dt * full), `rampThrust: dt must be > 0 and full >= 0, got ${dt}, ${full}`);
+  // Checked without building the message first: this runs every step of the game and the predictor.
+  if (!(dt > 0 && full >= 0 && Number.isFinite(dt * full)))
+    throw new RangeError(`black-hole: rampThrust: dt must be > 0 and full >= 0, got ${dt}, ${full}`);
   const dx = tx - vec[0],
     dy = ty - vec[1],
     gap = Math.hypot(dx, dy);

@@ -132,9 +132,9 @@ describe('levels', () => {
     // The issue this answers: level 1 was one hole across the path, and a nudge sideways then taps of
     // up (0.25 s in every 0.6 s) cleared it in all 12 seeds without a fall. Now the way round the
     // first hole leads under one of a pair above it, which leave a way through between them (the
-    // steering pilot below clears the level on every field). Measured: 10 of the 16 fall into the pair.
+    // steering pilot below clears the level on every field). Measured: 6 of the 8 fall into the pair.
     let intoPair = 0;
-    for (let seed = 1; seed <= 8; seed++) {
+    for (let seed = 1; seed <= 4; seed++) {
       const g = createBlackHoleGame({ seed });
       const run = startLevel(g, 1);
       expect(g.holes.length).toBe(3);
@@ -164,7 +164,7 @@ describe('levels', () => {
         if (event === 'fell' && d.indexOf(Math.min(...d)) > 0) intoPair++;
       }
     }
-    expect(intoPair).toBeGreaterThanOrEqual(8);
+    expect(intoPair).toBeGreaterThanOrEqual(4);
   });
 
   test('points: 10 a hole on the field plus a point for every whole second under 30 s', () => {
