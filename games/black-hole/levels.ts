@@ -1,10 +1,15 @@
 /**
- * Levels for black hole, DOM-free (Node tests run them): a first level that teaches steering round a
- * hole, then two set pieces (a wall of holes across the field with one gap off to the side; then a
- * narrower gap with a hole above it), then holes across the straight path up, more and bigger holes,
- * holes that drift, and a fuel limit. Each cleared level gives a lost life back (up to the starting
- * three). The ship waits at the start until the player thrusts. The page (main.ts) shows the level,
- * the fuel, an end-of-level summary and the best score.
+ * Levels for black hole, DOM-free (Node tests run them): a first level that teaches steering (a
+ * slalom: round one hole, then back between two), then two set pieces (a wall of holes across the field with one gap off to
+ * the side; then a narrower gap with a hole above it), then holes across the straight path up, more
+ * and bigger holes, holes that drift, and a fuel limit. Each cleared level gives a lost life back (up
+ * to the starting three). The ship waits at the start until the player thrusts. The page (main.ts)
+ * shows the level, the fuel, an end-of-level summary and the best score.
+ *
+ * Points (`levelPoints`): reaching the line scores POINTS_PER_HOLE for every hole on the field (the
+ * wall's included) plus a speed bonus of a point for every whole second the winning attempt took
+ * under BONUS_SECONDS. The level's opening line says what it is worth; the summary says how the
+ * points were made.
  *
  * A level is a `LevelSpec` (`levelSpec(n)`); `startLevel` lays its holes out in a game made by
  * `createBlackHoleGame` (./rules), and `stepLevel` runs one step of it: the holes drift, the fuel
@@ -57,6 +62,42 @@ export interface LevelSpec {
    * field's width) and the blockers lie across the way up through the gap, above the wall.
    */
   readonly gate: number;
+  /**
+   * Lay the holes as a slalom (level 1, three holes): one across the straight path up (within 0.3 of
+   * its radius of the start's x), then higher up two either side of that line, 3 to 3.6 m out, so the
+   * way round the first, on either side, leads under one of the pair: the ship weaves out and back
+   * through the middle.
+   */
+  readonly slalom: boolean;
+}
+
+/** Points for each hole on the field when the ship reaches the line. */
+export const POINTS_PER_HOLE = 10;
+
+/** The speed bonus: a point for every whole second the winning attempt took under this, s. */
+export const BONUS_SECONDS = 30;
+
+/** The points of a cleared level: for its holes, for speed, and their sum. */
+export interface LevelPoints {
+  /** POINTS_PER_HOLE for every hole on the field. */
+  readonly holes: number;
+  /** A point for each whole second under BONUS_SECONDS. */
+  readonly bonus: number;
+  /** holes + bonus. */
+  readonly total: number;
+}
+
+/**
+ * The points for reaching the line with `holes` holes on the field (integer >= 0) after `time` s
+ * (the winning attempt, >= 0): POINTS_PER_HOLE a hole plus floor(BONUS_SECONDS - time) when positive.
+ * @throws RangeError unless holes is an integer >= 0 and time finite and >= 0.
+ */
+export function levelPoints(holes: number, time: number): LevelPoints {
+  if (!(Number.isInteger(holes) && holes >= 0)) throw new RangeError(`levelPoints: holes must be an integer >= 0, got ${holes}`);
+  if (!(time >= 0 && Number.isFinite(time))) throw new RangeError(`levelPoints: time must be finite and >= 0 s, got ${time}`);
+  const h = POINTS_PER_HOLE * holes,
+    bonus = Math.max(0, Math.floor(BONUS_SECONDS - time));
+  return Object.freeze({ holes: h, bonus, total: h + bonus });
 }
 
 /**
@@ -68,9 +109,13 @@ export interface LevelSpec {
  */
 export const WALL_GAP = 0.5;
 
+/** The gap a wall is laid with, m (below WALL_GAP): its holes are scaled to fill each stretch with gaps of this. */
+const WALL_FILL_GAP = 0.4;
+
 /**
- * The spec of level `level`, one new difficulty at a time: level 1 one hole across the straight path
- * up (holding thrust up falls in; a move sideways passes it); level 2 a wall of holes across the
+ * The spec of level `level`, one new difficulty at a time: level 1 a slalom of three small holes
+ * (holding thrust up falls into the first; the way round it leads under one of the two above,
+ * which leave a way through between them); level 2 a wall of holes across the
  * field with one 7 m gap off to the side (fly across to it, then up through it); level 3 a narrower
  * gap (5.5 m) with a hole above it; level 4 three holes, two across the path one above the other;
  * level 5 a fourth hole; from level 6 the holes drift, slowly at first (0.35, then 0.6, 0.8 m/s);
@@ -88,11 +133,22 @@ export function levelSpec(level: number): LevelSpec {
     drift: number,
     fuel: number,
     gate = 0,
+    slalom = false,
   ): LevelSpec =>
-    Object.freeze({ level, holes, radius: Object.freeze(radius) as readonly [number, number], corridor, blockers, drift, fuel, gate });
+    Object.freeze({
+      level,
+      holes,
+      radius: Object.freeze(radius) as readonly [number, number],
+      corridor,
+      blockers,
+      drift,
+      fuel,
+      gate,
+      slalom,
+    });
   switch (level) {
     case 1:
-      return spec(1, [0.8, 0.95], 0, 1, 0, Infinity);
+      return spec(3, [0.6, 0.75], 0, 1, 0, Infinity, 0, true);
     case 2:
       return spec(0, [0.45, 0.55], 0, 0, 0, Infinity, 7);
     case 3:
@@ -131,8 +187,13 @@ export interface LevelSummary {
   readonly totalTime: number;
   /** Lives after the clear (a cleared level gives one back, up to the starting lives). */
   readonly lives: number;
-  /** Points it scored (one per hole on the field, the wall's included). */
+  /** Points it scored (`levelPoints`: for the holes on the field, the wall's included, and for speed). */
   readonly points: number;
+  /** The part of them for the holes (POINTS_PER_HOLE each), and the speed bonus. */
+  readonly holePoints: number;
+  readonly bonus: number;
+  /** Holes on the field when the ship reached the line. */
+  readonly holes: number;
   /** Fuel left, s of thrust (Infinity when unlimited). */
   readonly fuelLeft: number;
   /** Times the ship fell in during the level. */
@@ -196,9 +257,13 @@ export function beginLevel(game: BlackHoleGame, run: LevelRun): void {
   layLevel(game, run, run.spec.level);
 }
 
-/** The opening line of a level. */
-export function levelMessage(spec: LevelSpec): string {
-  const parts = [`Level ${spec.level}: reach the green line.`];
+/**
+ * The opening line of a level with `holes` holes on the field: the goal and what it is worth.
+ * @throws RangeError (from levelPoints) unless holes is an integer >= 0.
+ */
+export function levelMessage(spec: LevelSpec, holes: number): string {
+  const worth = levelPoints(holes, BONUS_SECONDS).holes;
+  const parts = [`Level ${spec.level}: reach the green line for ${worth} points (${POINTS_PER_HOLE} a hole), more if fast.`];
   if (spec.gate > 0)
     parts.push(spec.blockers > 0 ? 'Find the gap in the wall, then steer round the hole above it.' : 'Find the gap in the wall.');
   if (spec.drift > 0) parts.push('The holes drift.');
@@ -223,6 +288,7 @@ function layLevel(game: BlackHoleGame, run: LevelRun, level: number): void {
   // The wall first (gate levels): its gap's centre, m, where the blockers go above it.
   const gateX = spec.gate > 0 ? layWall(game, run, spec) : game.start[0];
   const wallY = game.holes.length > 0 ? world.components.Position.y[slotOf(game.holes[0]!)]! : 0;
+  const slalomY = rng.range(14.5, 15.5);
   for (let k = 0; k < spec.holes; k++) {
     let bestX = 0,
       bestY = 0,
@@ -231,7 +297,12 @@ function layLevel(game: BlackHoleGame, run: LevelRun, level: number): void {
     for (let attempt = 0; attempt < 300; attempt++) {
       const r = rng.range(r0, r1);
       let x: number, y: number;
-      if (k < spec.blockers && spec.gate > 0) {
+      if (spec.slalom) {
+        // The slalom: the first hole across the straight path, the other two either side of it higher
+        // up (heights measured on the 22 m climb of the default field).
+        x = k === 0 ? game.start[0] + rng.range(-0.3, 0.3) * r : game.start[0] + (k === 1 ? -1 : 1) * rng.range(3, 3.6);
+        y = (k === 0 ? rng.range(7.5, 9.5) : slalomY + rng.range(-0.5, 0.5)) * s;
+      } else if (k < spec.blockers && spec.gate > 0) {
         // Across the way up through the wall's gap: 6 to 7.5 m (on the default field) above the wall.
         x = gateX + rng.range(-0.5, 0.5) * r;
         y = Math.min(wallY + rng.range(6, 7.5) * s, game.lineY - 3 - r);
@@ -277,7 +348,7 @@ function layLevel(game: BlackHoleGame, run: LevelRun, level: number): void {
     run.holeVx.push(spec.drift * (rng.range(0, 1) < 0.5 ? -1 : 1));
   }
   game.version++;
-  game.message = levelMessage(spec);
+  game.message = levelMessage(spec, game.holes.length);
   run.parked = true;
   resetShip(game);
 }
@@ -287,8 +358,9 @@ function layLevel(game: BlackHoleGame, run: LevelRun, level: number): void {
  * up (on the default field; scaled to this field's climb), with one gap of clear width
  * min(spec.gate, 0.32 x the field's width) m off to one side of the start (either side, at random;
  * its near edge at least 2 m from the start's x). From each edge of the gap out to the field's edge,
- * holes of radii in spec.radius follow one another at equal gaps of at most WALL_GAP m, the first
- * one's horizon on the gap's edge. Of up to 40 draws of the gap's place, the one that puts a hole's
+ * holes follow one another at equal gaps of WALL_FILL_GAP m (under WALL_GAP), the first one's horizon
+ * on the gap's edge and the last one's that gap from the field's edge: as many as fit at radii drawn
+ * in spec.radius, then all scaled to fill the stretch exactly. Of up to 40 draws of the gap's place, the one that puts a hole's
  * centre nearest the start's x (in radii) is laid, so the straight climb runs into a hole and not up
  * a narrow gap. On a field so wide that the wall would need more than MAX_HOLES - spec.holes - 4
  * holes, all of them are larger in proportion. Pushes the holes into the game.
@@ -319,10 +391,14 @@ function layWall(game: BlackHoleGame, run: LevelRun, spec: LevelSpec): number {
       const edge = gateX + (dir * gate) / 2;
       const length = dir > 0 ? W - edge : edge;
       if (length <= WALL_GAP) continue;
-      const radii = Array.from({ length: Math.ceil(length / (r0 + r1 + WALL_GAP)) }, () => rng.range(r0, r1));
-      const span = () => radii.reduce((a, r) => a + 2 * r, 0);
-      while ((length - span()) / radii.length > WALL_GAP) radii.push(rng.range(r0, r1));
-      const gap = (length - span()) / radii.length;
+      // As many holes as the stretch holds at their mean size, then all scaled to fill it exactly
+      // with gaps of WALL_FILL_GAP: no hole reaches past the field's edge (a stretch of 1.6 m once
+      // got two holes 2 m across, the outer one half off the field).
+      const radii = Array.from({ length: Math.max(1, Math.round(length / (r0 + r1 + WALL_FILL_GAP))) }, () => rng.range(r0, r1));
+      const span = radii.reduce((a, r) => a + 2 * r, 0);
+      const fit = (length - radii.length * WALL_FILL_GAP) / span;
+      for (let i = 0; i < radii.length; i++) radii[i]! *= fit;
+      const gap = WALL_FILL_GAP;
       let at = edge;
       for (const r of radii) {
         const x = at + dir * r;
@@ -412,11 +488,12 @@ export function stepLevel(game: BlackHoleGame, run: LevelRun): BlackHoleEvent | 
     // A new attempt: its clock starts, and the message about the last one (a fall, an exit) goes.
     run.parked = false;
     run.attemptStart = run.time;
-    game.message = levelMessage(run.spec);
+    game.message = levelMessage(run.spec, game.holes.length);
   }
   const time = run.time + dt;
   run.time = time;
-  const scoreBefore = game.score;
+  const scoreBefore = game.score,
+    holes = game.holes.length;
   const event = stepBlackHole(game);
   if (event === 'fell' || event === 'lost') run.parked = true;
   else if (event === 'none' && run.parked) {
@@ -425,14 +502,20 @@ export function stepLevel(game: BlackHoleGame, run: LevelRun): BlackHoleEvent | 
   }
   if (event !== 'scored') return event;
   // A life back for every level cleared, up to the game's starting lives.
-  const bonus = game.lives < game.params.lives;
-  if (bonus) game.lives++;
+  const lifeBack = game.lives < game.params.lives;
+  if (lifeBack) game.lives++;
+  // ./rules scored a point a hole (the classic game's rule); a level scores `levelPoints`.
+  const points = levelPoints(holes, time - run.attemptStart);
+  game.score = scoreBefore + points.total;
   run.summary = Object.freeze({
     level: run.spec.level,
     time: time - run.attemptStart,
     totalTime: time,
     lives: game.lives,
-    points: game.score - scoreBefore,
+    points: points.total,
+    holePoints: points.holes,
+    bonus: points.bonus,
+    holes,
     fuelLeft: run.fuelLeft,
     falls: game.falls - run.fallsAtStart,
   });
@@ -444,18 +527,26 @@ export function stepLevel(game: BlackHoleGame, run: LevelRun): BlackHoleEvent | 
   resetShip(game);
   setThrust(game, 'none');
   run.waiting = true;
-  const s = run.summary;
-  game.message =
-    `Level ${s.level} cleared in ${s.time.toFixed(1)} s` +
-    (s.falls > 0 ? ` (${s.totalTime.toFixed(1)} s in all, ${s.falls} ${s.falls === 1 ? 'fall' : 'falls'})` : '') +
-    (bonus
-      ? `: a life back, ${s.lives} ${s.lives === 1 ? 'life' : 'lives'} now. `
-      : ` with ${s.lives} ${s.lives === 1 ? 'life' : 'lives'} left. `) +
-    `Tap here or press Enter for level ${run.spec.level}.`;
+  game.message = clearMessage(run.summary, lifeBack, run.spec.level);
   return 'cleared';
 }
 
 const REST: readonly [number, number] = [0, 0];
+
+/**
+ * The line shown when a level is cleared: its time (and falls), the points and how they were made,
+ * the lives, and how to go on to level `next`.
+ */
+export function clearMessage(s: LevelSummary, lifeBack: boolean, next: number): string {
+  const holes = `${s.holes} ${s.holes === 1 ? 'hole' : 'holes'} × ${POINTS_PER_HOLE}`;
+  return (
+    `Level ${s.level} cleared in ${s.time.toFixed(1)} s` +
+    (s.falls > 0 ? ` (${s.totalTime.toFixed(1)} s in all, ${s.falls} ${s.falls === 1 ? 'fall' : 'falls'})` : '') +
+    `: +${s.points} (${holes}${s.bonus > 0 ? ` + ${s.bonus} speed bonus` : ''}). ` +
+    (lifeBack ? `A life back: ${s.lives} ${s.lives === 1 ? 'life' : 'lives'}. ` : '') +
+    `Tap here or press Enter for level ${next}.`
+  );
+}
 
 /** Whether thrust is possible now (fuel left, not waiting, not over). */
 export function canThrust(game: BlackHoleGame, run: LevelRun): boolean {

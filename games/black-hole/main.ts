@@ -1,7 +1,10 @@
 /**
  * Black hole: fly the ship from the bottom to the green line at the top past black holes that pull
- * it with Newtonian gravity. Crossing the line scores one point per hole on screen and adds a hole;
- * falling into a hole costs one of three lives; leaving the screen puts the ship back for free.
+ * it with Newtonian gravity. Reaching the line scores 10 points per hole on the field plus a speed
+ * bonus (./levels.ts `levelPoints`; the classic game: one point a hole, and a hole more); the points
+ * rise from where the ship crossed. Falling into a hole costs one of three lives; leaving the screen
+ * puts the ship back for free. The engine spools up and down (./rules.ts THRUST_RAMP): the ship
+ * leans into its thrust and the flame grows with it.
  * (Ramtal and Dobre, ch. 6; the rules are in ./rules.ts, DOM-free.)
  *
  * Keys: arrow keys thrust (one direction at a time: the last one pressed), Enter restarts after the
@@ -36,7 +39,7 @@ import {
 import { startPixiGame } from '@bitphysics/game-kit/pixi';
 import { type PhysicsWorld, Rng, slotOf, stateHash } from '@bitphysics/physics';
 import { Container, Graphics, Sprite, Text, Texture } from 'pixi.js';
-import { canThrust, type LevelRun, startLevel } from './levels';
+import { canThrust, type LevelRun, POINTS_PER_HOLE, startLevel } from './levels';
 import { type BlackHoleReplay, createBlackHoleReplay, type GameStepEvent } from './replay';
 import {
   type BlackHoleGame,
@@ -67,9 +70,15 @@ function readBest(): number {
 }
 let best = readBest();
 
-/** After each game step (live or replayed): keeps the best score. */
+/** After each game step (live or replayed): keeps the best score, and shows the points a crossing made. */
 function onGameStep(event: GameStepEvent): void {
   if (event === 'cleared' || event === 'scored' || event === 'over') recordScore(bh.score);
+  if (event === 'cleared' || event === 'scored') {
+    scorePop.points = event === 'cleared' ? (run?.summary?.points ?? 0) : bh.score - scorePop.scoreBefore;
+    scorePop.x = lastShip[0]!;
+    scorePop.start = performance.now();
+  }
+  scorePop.scoreBefore = bh.score;
   // Sound (not while a replay plays the run back silently fast).
   if (event === 'fell' || event === 'over') startSwallow();
   if (event === 'fell' || event === 'lost') restarted = true;
@@ -400,9 +409,9 @@ function updateStatus(force = false): void {
   }
   const lives = `Lives ${'♥'.repeat(bh.lives)}${'♡'.repeat(Math.max(0, bh.params.lives - bh.lives))}`;
   const n = run
-    ? `Level ${run.spec.level}   ${lives}   Score ${bh.score} (holes passed)   Best ${Math.max(best, bh.score)}` +
+    ? `Level ${run.spec.level}   ${lives}   Score ${bh.score}   Best ${Math.max(best, bh.score)}` +
       (Number.isFinite(run.fuelLeft) ? `   Fuel ${run.fuelLeft.toFixed(1)} s` : '')
-    : `${lives}   Score ${bh.score} (holes passed)   Holes ${bh.holes.length}`;
+    : `${lives}   Score ${bh.score} (1 a hole)   Holes ${bh.holes.length}`;
   const playing = replay.player ? `   ▶ Replay ${replay.player.played} steps` : '';
   if (force || n + playing !== shownNumbers) {
     shownNumbers = n + playing;
@@ -548,9 +557,17 @@ function arc(g: Graphics, x: number, y: number, a: number, b: number, t0: number
 }
 
 /**
+ * How far each hole's drawing reached in the last frame, m: [left, right, bottom, top] of its disc
+ * and glow, the holes in order (tests: all inside the field).
+ */
+const holeExtents: number[][] = [];
+
+/**
  * Each hole, every frame: an orange glow, the far half of a tilted disc of hot gas, the horizon (a
  * black disc of the Schwarzschild radius with a thin bright photon ring), then the near half of the
- * disc across its face. Clumps of gas ride the disc, faster near the hole.
+ * disc across its face. Clumps of gas ride the disc, faster near the hole. The disc and the glow
+ * end at the field's edges (a wall's outer holes sit half a metre from them): both shrink to the
+ * room between the hole's centre and the nearest edge, so nothing is cut off at the edge.
  */
 function drawHoles(world: PhysicsWorld): void {
   const cam = renderer.camera;
@@ -563,15 +580,30 @@ function drawHoles(world: PhysicsWorld): void {
     holeGlowLayer.addChild(sprite);
   }
   for (let i = 0; i < holeGlows.length; i++) holeGlows[i]!.visible = i < bh.holes.length;
+  holeExtents.length = bh.holes.length;
   for (let i = 0; i < bh.holes.length; i++) {
     const h = bh.holes[i]!;
-    const x = cam.toScreenX(P.x[slotOf(h)]!),
-      y = cam.toScreenY(P.y[slotOf(h)]!),
-      r = cam.toScreenLength(bh.holeRadius[i]!);
+    const hx = P.x[slotOf(h)]!,
+      hy = P.y[slotOf(h)]!,
+      hr = bh.holeRadius[i]!;
+    const x = cam.toScreenX(hx),
+      y = cam.toScreenY(hy),
+      r = cam.toScreenLength(hr);
+    // Room to the nearest side edge of the field (the disc is wide and flat: its height is a third).
+    const room = Math.max(1.05 * hr, Math.min(hx, playField.width - hx));
+    const aM = Math.min(DISC.outer * hr, room),
+      glowM = Math.min(3.5 * hr, room, hy, playField.height - hy);
+    holeExtents[i] = [
+      hx - Math.max(aM, glowM),
+      hx + Math.max(aM, glowM),
+      hy - Math.max(DISC.tilt * aM, glowM),
+      hy + Math.max(DISC.tilt * aM, glowM),
+    ];
     const sprite = holeGlows[i]!;
     sprite.position.set(x, y);
-    sprite.width = sprite.height = 7 * r;
-    const a = DISC.outer * r,
+    // The glow texture fades to nothing at its rim: 2 x glowM across.
+    sprite.width = sprite.height = 2 * cam.toScreenLength(glowM);
+    const a = cam.toScreenLength(aM),
       b = DISC.tilt * a;
     // Far half of the disc (behind the hole): wide dim band, then a hotter inner edge.
     arc(holesLayer, x, y, a, b, Math.PI, 2 * Math.PI).stroke({ width: 0.9 * r, color: 0xff8a3c, alpha: 0.35 });
@@ -600,14 +632,10 @@ function clumps(x: number, y: number, a: number, b: number, r: number, t: number
   }
 }
 
-/** Screen direction (x right, y down) the flame points for each thrust: away from where the ship is pushed. */
-const FLAME: Record<Thrust, readonly [number, number] | null> = {
-  none: null,
-  up: [0, 1],
-  down: [0, -1],
-  left: [1, 0],
-  right: [-1, 0],
-};
+/** How far the ship leans into full sideways thrust, rad (drawn only). */
+const LEAN = 0.35;
+/** The ship's lean in the last frame, rad (+ clockwise on screen: leaning right). */
+let shipLean = 0;
 
 /**
  * Within EDGE_WARN m of a side (or BOTTOM_WARN m of the bottom, under the start's 1.5 m), the edge
@@ -650,7 +678,10 @@ levelBanner.anchor.set(0.5, 0);
 levelBanner.visible = false;
 app.stage.addChild(levelBanner);
 
-/** What a level asks, in a few words, for the banner: its holes (all on the field) and what is new. */
+/**
+ * What a level asks, in a few words, for the banner: its holes (all on the field) and what is new,
+ * then what reaching the line is worth.
+ */
 function levelNews(spec: LevelRun['spec']): string {
   const n = bh.holes.length;
   const holes =
@@ -658,9 +689,11 @@ function levelNews(spec: LevelRun['spec']): string {
       ? spec.blockers > 0
         ? 'through the gap, round the hole'
         : 'find the gap in the wall'
-      : `${n} ${n === 1 ? 'hole' : 'holes'}`;
+      : spec.slalom
+        ? 'weave between the holes'
+        : `${n} ${n === 1 ? 'hole' : 'holes'}`;
   const extra = [spec.drift > 0 ? 'drifting' : '', Number.isFinite(spec.fuel) ? `${spec.fuel} s of fuel` : ''].filter(Boolean);
-  return `${holes}${extra.length ? `, ${extra.join(', ')}` : ''}`;
+  return `${holes}${extra.length ? `, ${extra.join(', ')}` : ''}\n${POINTS_PER_HOLE * n} points at the line`;
 }
 
 /** Shows the banner at a level's start, until the first thrust. */
@@ -711,6 +744,36 @@ const SWALLOW_MS = 900;
 const swallow = { active: false, start: 0, hx: 0, hy: 0, dx: 0, dy: 0 };
 /** The ship's position (m) in the last frame drawn. */
 const lastShip = [0, 0];
+
+/** How long the points of a crossing rise from the line, ms. */
+const SCORE_POP_MS = 1600;
+/**
+ * The points a crossing made, shown as "+N" rising from where the ship crossed the line: the points,
+ * the ship's x there (m), when (performance.now(), ms; -Infinity: none yet) and the score before it.
+ */
+const scorePop = { points: 0, x: 0, start: -Infinity, scoreBefore: 0 };
+const scoreText = new Text({
+  text: '',
+  style: { fill: 0x7ee787, fontSize: 34, fontFamily: 'sans-serif', fontWeight: 'bold', stroke: { color: 0x000000, width: 5 } },
+});
+scoreText.anchor.set(0.5, 1);
+scoreText.visible = false;
+app.stage.addChild(scoreText);
+
+/** Draws the rising "+N" of the last crossing while it lasts. */
+function drawScorePop(): void {
+  const age = performance.now() - scorePop.start;
+  scoreText.visible = age >= 0 && age < SCORE_POP_MS && scorePop.points > 0;
+  if (!scoreText.visible) return;
+  const cam = renderer.camera;
+  const u = age / SCORE_POP_MS;
+  const text = `+${scorePop.points}`;
+  if (scoreText.text !== text) scoreText.text = text;
+  const half = scoreText.width / 2 + 6;
+  const x = Math.max(cam.toScreenX(0) + half, Math.min(cam.toScreenX(playField.width) - half, cam.toScreenX(scorePop.x)));
+  scoreText.position.set(x, cam.toScreenY(bh.lineY) - 6 + 60 * u * (u - 2) * 0.5);
+  scoreText.alpha = u < 0.7 ? 1 : (1 - u) / 0.3;
+}
 function startSwallow(): void {
   const P = bh.world.components.Position;
   let best = Infinity;
@@ -791,10 +854,18 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   lastShip[1] = y;
   drawEdgeWarning(x, y);
   drawLevelBanner();
-  const flame = FLAME[bh.thrust];
-  if (flame && !bh.over) {
-    const [fx, fy] = flame;
-    const len = k * (0.75 + 0.25 * Math.sin(world.time * 60));
+  drawScorePop();
+  // The engine's thrust now (it spools up and down): the flame points against it, as long as it is
+  // strong, and the ship leans into it (up to LEAN rad at full sideways thrust).
+  const [tx, ty] = bh.thrustVec;
+  const full = Math.max(1e-9, bh.params.thrust),
+    strength = Math.min(1, Math.hypot(tx, ty) / full);
+  shipLean = bh.over ? 0 : (LEAN * tx) / full;
+  if (strength > 0.02 && !bh.over) {
+    // Screen direction of the flame (x right, y down): away from where the ship is pushed.
+    const fx = -tx / (strength * full),
+      fy = ty / (strength * full);
+    const len = k * strength * (0.75 + 0.25 * Math.sin(world.time * 60));
     const px = -fy,
       py = fx;
     overlay
@@ -808,7 +879,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
       ])
       .fill({ color: 0xffb347, alpha: 0.9 });
   }
-  drawShip(sx, sy, k, 0, bh.over ? 0x5c677d : 0xe8ecf1);
+  drawShip(sx, sy, k, shipLean, bh.over ? 0x5c677d : 0xe8ecf1);
   updateStatus();
 }
 
@@ -828,6 +899,12 @@ shell.expose({
   pathPoints: (): number => pathPoints,
   /** The level banner's text while it shows (at a level's start, until the first thrust), else ''. */
   levelBanner: (): string => (levelBanner.visible ? levelBanner.text : ''),
+  /** How far each hole's drawing (disc and glow) reached in the last frame, m: [left, right, bottom, top], holes in order. */
+  holeExtents: (): number[][] => holeExtents.map((e) => e.slice()),
+  /** The ship's lean in the last frame, rad (+ leaning right, into thrust to the right). */
+  shipLean: (): number => shipLean,
+  /** The rising "+N" of the last crossing while it shows, else ''. */
+  scorePop: (): string => (scoreText.visible ? scoreText.text : ''),
   /** Whether the swallow effect (the ship spiralling into a hole) plays, and whether the edge warning shows. */
   swallowing: (): boolean => swallow.active,
   edgeWarning: (): boolean => edgeText.visible,

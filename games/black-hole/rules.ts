@@ -4,7 +4,9 @@
  *
  * The rules:
  * - The player's ship starts near the bottom of a `FIELD` (32 m x 24 m) and thrusts with the arrow
- *   keys, one direction at a time, with acceleration `thrust` (m/s^2).
+ *   keys, one direction at a time, with acceleration `thrust` (m/s^2). The engine spools up over
+ *   `THRUST_RAMP.up` and down over `THRUST_RAMP.down` (`rampThrust`), so a tap is a nudge and a
+ *   held arrow full thrust.
  * - Black holes of random size pull it with Newtonian gravity F = G M m / d^2 (the physics package's
  *   attractors). Each hole's mass is set so that its drawn radius r is its Schwarzschild radius,
  *   r = 2 G M / c^2, that is M = c^2 r / (2 G) (Schwarzschild 1916; any general relativity text,
@@ -80,6 +82,14 @@ export const SHIP_MASS = 1;
  */
 export const SHIP_RADIUS = 0.3;
 
+/**
+ * How fast the engine answers, s: from nothing to full thrust in `up` (the thrust vector moves
+ * towards the arrow's at thrust / up m/s^2 a second, so a change of direction swings it over in
+ * about as long) and from full to nothing in `down` after the arrow is let go. With full thrust at
+ * once a 0.1 s tap changed the speed by 0.6 m/s and the ship felt twitchy; now it gives 0.17 m/s.
+ */
+export const THRUST_RAMP = Object.freeze({ up: 0.25, down: 0.1 });
+
 /** Thrust directions: none, or one of the four arrows. */
 export type Thrust = 'none' | 'up' | 'down' | 'left' | 'right';
 
@@ -139,6 +149,8 @@ export interface BlackHoleGame {
   message: string;
   /** The current thrust direction (set with `setThrust`). */
   thrust: Thrust;
+  /** The engine's acceleration now, m/s^2 (x, y): it follows `thrust` at the rates of `THRUST_RAMP`. */
+  readonly thrustVec: [number, number];
   /** Counts of events since the start. */
   falls: number;
   crossings: number;
@@ -235,17 +247,46 @@ export function gravitationalConstant(game: BlackHoleGame): number {
 }
 
 /**
- * The thrust force law: F = m a_T d on the ship, d the unit vector of `game.thrust` (0 when none or
- * when the game is over). Runs in the forces stage.
+ * One step of the engine: moves `vec` (the thrust now, m/s^2) towards the target (tx, ty) m/s^2 by
+ * at most `rate` x dt, where the rate is full / THRUST_RAMP.up while an arrow is held (the target is
+ * not zero) and full / THRUST_RAMP.down when it is let go; `full` is the thrust acceleration (m/s^2,
+ * the larger of it and |vec|, so a thrust slider set to 0 still lets the engine die away).
+ * @throws RangeError unless dt > 0 and full >= 0 are finite.
  */
-function thrustLaw(game: BlackHoleGame, ship: number): (world: PhysicsWorld) => void {
+export function rampThrust(vec: [number, number], tx: number, ty: number, full: number, dt: number): void {
+  // Checked without building the message first: this runs every step of the game and the predictor.
+  if (!(dt > 0 && full >= 0 && Number.isFinite(dt * full)))
+    throw new RangeError(`black-hole: rampThrust: dt must be > 0 and full >= 0, got ${dt}, ${full}`);
+  const dx = tx - vec[0],
+    dy = ty - vec[1],
+    gap = Math.hypot(dx, dy);
+  const held = tx !== 0 || ty !== 0;
+  const most = (Math.max(full, Math.hypot(vec[0], vec[1])) / (held ? THRUST_RAMP.up : THRUST_RAMP.down)) * dt;
+  if (gap <= most) {
+    vec[0] = tx;
+    vec[1] = ty;
+  } else {
+    vec[0] += (dx * most) / gap;
+    vec[1] += (dy * most) / gap;
+  }
+}
+
+/**
+ * The thrust force law: F = m a on the ship, a the engine's acceleration `engine.thrustVec`, which
+ * each step moves towards a_T d (d the unit vector of `game.thrust`; 0 when none or when the game is
+ * over) as `rampThrust` says. Runs in the forces stage. `engine` is the game (or the predictor, which
+ * keeps its own copy of the engine).
+ */
+function thrustLaw(game: BlackHoleGame, ship: number, engine: { readonly thrustVec: [number, number] }): (world: PhysicsWorld) => void {
   return (world) => {
-    if (game.over || game.thrust === 'none') return;
-    const d = DIRS[game.thrust];
-    const f = SHIP_MASS * game.params.thrust;
+    const d = DIRS[game.over ? 'none' : game.thrust];
+    const a = game.params.thrust;
+    const v = engine.thrustVec;
+    rampThrust(v, a * d[0], a * d[1], a, world.dt);
+    if (v[0] === 0 && v[1] === 0) return;
     const F = world.components.Force;
-    F.x[slotOf(ship)] = F.x[slotOf(ship)]! + f * d[0];
-    F.y[slotOf(ship)] = F.y[slotOf(ship)]! + f * d[1];
+    F.x[slotOf(ship)] = F.x[slotOf(ship)]! + SHIP_MASS * v[0];
+    F.y[slotOf(ship)] = F.y[slotOf(ship)]! + SHIP_MASS * v[1];
   };
 }
 
@@ -284,6 +325,7 @@ export function createBlackHoleGame(options: BlackHoleOptions = {}): BlackHoleGa
     over: false,
     message: 'Reach the green line at the top. The arrow keys or buttons thrust.',
     thrust: 'none',
+    thrustVec: [0, 0],
     falls: 0,
     crossings: 0,
     resets: 0,
@@ -293,7 +335,7 @@ export function createBlackHoleGame(options: BlackHoleOptions = {}): BlackHoleGa
     start,
     lineY: p.field.height - 2,
   };
-  addSystem(world, 'forces', thrustLaw(game, ship));
+  addSystem(world, 'forces', thrustLaw(game, ship, game));
   layoutHoles(game, p.holes);
   return game;
 }
@@ -404,10 +446,11 @@ export function setThrust(game: BlackHoleGame, thrust: Thrust): void {
   }
 }
 
-/** Puts the ship back at the start, at rest (a teleport: no interpolation across it). */
+/** Puts the ship back at the start, at rest, its engine idle (a teleport: no interpolation across it). */
 export function resetShip(game: BlackHoleGame): void {
   setPosition(game.world, game.ship, game.start);
   setVelocity(game.world, game.ship, [0, 0]);
+  game.thrustVec[0] = game.thrustVec[1] = 0;
   game.resets++;
 }
 
@@ -540,6 +583,8 @@ export interface Predictor {
   version: number;
   /** The holes in the copy. */
   readonly holes: number[];
+  /** The copy's engine (set from the game's at the start of each `predictPath`), m/s^2. */
+  readonly thrustVec: [number, number];
 }
 
 /** Creates the predictor of `game` (its holes are copied on the first `predictPath`). */
@@ -552,8 +597,8 @@ export function createPredictor(game: BlackHoleGame): Predictor {
     integrator: game.world.integrator,
   });
   const ship = addBody(world, { position: game.start, mass: SHIP_MASS });
-  const pred: Predictor = { world, ship, version: -1, holes: [] };
-  addSystem(world, 'forces', thrustLaw(game, ship));
+  const pred: Predictor = { world, ship, version: -1, holes: [], thrustVec: [0, 0] };
+  addSystem(world, 'forces', thrustLaw(game, ship, pred));
   return pred;
 }
 
@@ -574,7 +619,7 @@ function syncPredictor(game: BlackHoleGame, pred: Predictor): void {
 
 /**
  * The ship's path for the next `steps` steps (default 60: one second at 60 Hz) with the current
- * thrust held: the ship's position and velocity are copied into the predictor's world, which then
+ * thrust held: the ship's position and velocity and the engine's thrust now are copied into the predictor's world, which then
  * steps with the same dt, integrator, G, holes and thrust law as the game. Positions (m) go into
  * `out` as x0, y0, x1, y1, ... starting with the ship's current position; the path stops early where
  * the ship touches a horizon (see SHIP_RADIUS) or leaves the field.
@@ -597,6 +642,8 @@ export function predictPath(game: BlackHoleGame, pred: Predictor, out: Float64Ar
   O.y[s] = P.y[s]!;
   V.x[s] = src.Velocity.x[slotOf(game.ship)]!;
   V.y[s] = src.Velocity.y[slotOf(game.ship)]!;
+  pred.thrustVec[0] = game.thrustVec[0];
+  pred.thrustVec[1] = game.thrustVec[1];
   const max = Math.min(steps + 1, out.length >> 1);
   if (max < 1) return 0;
   out[0] = P.x[s]!;

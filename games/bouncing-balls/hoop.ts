@@ -9,9 +9,14 @@
  * (`SHOT_LINE_GAP`), so a ball dropped straight in from above is no basket. The round's clock starts
  * with the player's first ball, so reading the goal costs no time.
  *
+ * The net (`NET`, `netContact`) hangs under the rim and lets a ball in only from above: one thrown up
+ * from under the hoop is stopped by the net's bottom and drops back, and one coming from the side
+ * below the rim bounces off the net's side, as a real net does (before, balls flew up through the
+ * drawn net and the rim's opening).
+ *
  * A throw is a slingshot (`slingVelocity`): press where the ball should start, pull back and let go;
  * the ball leaves opposite to the pull, faster the longer the pull, and `throwPath` is the dotted
- * arc the page draws while pulling.
+ * arc the page draws while pulling, bounces off the walls, the hoop and the net included.
  */
 import { addSegment, type PhysicsWorld, removeBody } from '@bitphysics/physics';
 import type { DragMode } from './scene';
@@ -90,6 +95,75 @@ export function hoopSegments(spot: HoopSpot): [number, number, number, number][]
     [board, spot.y - BACKBOARD.below, board, spot.y + BACKBOARD.above],
     [front, spot.y, front - s * FRONT_RIM_LENGTH, spot.y],
   ];
+}
+
+/**
+ * The net under the rim: it hangs `depth` m below the rim, and its bottom opening is `narrow` m
+ * narrower than the rim's on each side (1.4 m: a ball of the game, 0.8 m across, falls through).
+ */
+export const NET = Object.freeze({ depth: 1.1, narrow: 0.3 });
+
+/** Fraction of its speed into the net that a ball the net stops keeps, bouncing back (the net is soft). */
+export const NET_BOUNCE = 0.25;
+
+/**
+ * What the net at `spot` does to a ball of radius `r` m that moved over a step from (x0, y0) to
+ * (x, y), m, with velocity (vx, vy) m/s at the end: null if the net leaves it alone, else the ball's
+ * corrected [x, y, vx, vy]. The net is the trapezoid under the rim's opening (NET) and is open at
+ * the rim (the way in) and at its bottom opening (the way out):
+ * - a ball rising from under the net whose top crosses its bottom while its centre is within the
+ *   bottom opening is stopped there (its top on the net's bottom) and falls back, keeping NET_BOUNCE
+ *   of its upward speed;
+ * - a ball whose centre crosses a side of the net (in from outside below the rim, or out from
+ *   inside) is put back where it was and bounces off that side, keeping NET_BOUNCE of the speed
+ *   across it.
+ * @throws RangeError on non-finite input or r <= 0.
+ */
+export function netContact(
+  spot: HoopSpot,
+  r: number,
+  x0: number,
+  y0: number,
+  x: number,
+  y: number,
+  vx: number,
+  vy: number,
+): [number, number, number, number] | null {
+  if (![x0, y0, x, y, vx, vy].every(Number.isFinite) || !(r > 0 && Number.isFinite(r)))
+    throw new RangeError(
+      `netContact: positions, velocity and r > 0 must be finite, got (${x0}, ${y0}) -> (${x}, ${y}), (${vx}, ${vy}), r ${r}`,
+    );
+  const top = spot.y,
+    bottom = spot.y - NET.depth;
+  const L = spot.x - HOOP_HALF_WIDTH,
+    R = spot.x + HOOP_HALF_WIDTH,
+    n = NET.narrow;
+  // From below: the ball's top crosses the net's bottom under its opening.
+  if (vy > 0 && y0 + r <= bottom && y + r > bottom && x > L + n && x < R - n) return [x, bottom - r, vx, -NET_BOUNCE * vy];
+  const sideX = (h: number, left: boolean): number => (left ? L + (n * (top - h)) / NET.depth : R - (n * (top - h)) / NET.depth);
+  const inside = (px: number, py: number): boolean => py > bottom && py < top && px > sideX(py, true) && px < sideX(py, false);
+  const was = inside(x0, y0),
+    is = inside(x, y);
+  if (was === is) return null;
+  // In through the rim, or out through the bottom opening: the ways the net lets a ball pass. A
+  // centre that came up from below the bottom is stopped there as above.
+  if (!was && y0 >= top) return null;
+  if (was && y <= bottom) return null;
+  if (!was && y0 <= bottom) return [x, bottom - r, vx, -NET_BOUNCE * Math.abs(vy)];
+  if (was && y >= top) return null;
+  // Across a side: back where it was, bouncing off the side (its normal pointing out of the net).
+  const left = (x0 + x) / 2 < spot.x;
+  const len = Math.hypot(NET.depth, n);
+  let nx = (left ? -NET.depth : NET.depth) / len,
+    ny = -n / len;
+  // Seen from inside, the side's normal points in.
+  if (was) {
+    nx = -nx;
+    ny = -ny;
+  }
+  const into = vx * nx + vy * ny;
+  if (into >= 0) return [x0, y0, vx, vy];
+  return [x0, y0, vx - (1 + NET_BOUNCE) * into * nx, vy - (1 + NET_BOUNCE) * into * ny];
 }
 
 /** Adds the hoop's backboard and front rim to `world` with the given material. @returns their entity ids. */
@@ -185,6 +259,9 @@ export function roundBasket(round: HoopRound, spotCount: number): boolean {
   return true;
 }
 
+/** Below this speed into a surface a bounce has no restitution, m/s (the engine's default `restitutionThreshold`). */
+const RESTITUTION_THRESHOLD = 0.5;
+
 /** Fastest throw, m/s: a full pull of the slingshot (enough to reach the top of either box from its floor). */
 export const MAX_THROW_SPEED = 20;
 
@@ -223,14 +300,36 @@ export interface ThrowPathOptions {
   seconds?: number;
   /** The integration step, s (> 0): the world's step. Default 1/60 (the scene's). */
   step?: number;
+  /**
+   * Bounces to follow, integer >= 0: at a wall of the box, a capsule of `walls` or the net of `hoop`,
+   * the path bounces (restitution `restitution`) and goes on, until this many bounces have been made;
+   * the next touch ends it. Default 0: the path ends at the first touch of the box, as without walls.
+   */
+  bounces?: number;
+  /** Restitution of the bounces, [0, 1]. Default 0.8 (the scene's). */
+  restitution?: number;
+  /**
+   * Friction coefficient of the bounces, >= 0. Default 0: the speed along a surface is kept. With
+   * friction the bounce's sideways impulse spins the ball (a disc, I = m r^2 / 2) as the engine's
+   * contacts do, which changes where it goes after the bounce.
+   */
+  friction?: number;
+  /** The static capsules the ball bounces off, m: [ax, ay, bx, by, radius] (the scene's walls, the hoop's backboard and rim). */
+  walls?: readonly (readonly [number, number, number, number, number])[];
+  /** The hoop whose net (`netContact`) stops the ball as it would the real one. */
+  hoop?: HoopSpot;
 }
 
 /**
- * Where a ball thrown from (x, y), m, with velocity (vx, vy), m/s, flies, ignoring the other balls
- * and the hoop: its centre every `every` s, flat [x0, y0, x1, y1, ...] starting at the throw, until
- * `seconds` pass or it touches the box (that point is the last). Integrated in the scene's steps of
- * `step` s with the acceleration held over each step (x += v h + a h^2 / 2, v += a h): exact for the
- * drag-free parabola, as the engine's integrator is.
+ * Where a ball thrown from (x, y), m, with velocity (vx, vy), m/s, flies, ignoring the other balls:
+ * its centre every `every` s, flat [x0, y0, x1, y1, ...] starting at the throw, and at each bounce,
+ * until `seconds` pass or it touches the box, a wall or the net once more than `bounces` allows (that
+ * point is the last). Integrated in the scene's steps of `step` s with the acceleration held over
+ * each step (x += v h + a h^2 / 2, v += a h): exact for the drag-free parabola, as the engine's
+ * integrator is. A bounce reverses the speed into the surface times `restitution` (none below the
+ * engine's 0.5 m/s restitution threshold) and, with `friction`, takes the impulse along the surface
+ * that stops the contact point's slip (m / 3 of it for a disc), at most friction times the normal
+ * impulse, which also spins the ball (tracked from 0 at the throw).
  * @throws RangeError on a non-finite start or velocity, or a bad option.
  */
 export function throwPath(x: number, y: number, vx: number, vy: number, o: ThrowPathOptions): number[] {
@@ -248,12 +347,23 @@ export function throwPath(x: number, y: number, vx: number, vy: number, o: Throw
   ] as const)
     if (!(v > 0 && Number.isFinite(v))) throw new RangeError(`throwPath: ${name} must be finite and > 0, got ${v}`);
   if (!(o.gravity >= 0 && o.k >= 0)) throw new RangeError(`throwPath: gravity and k must be >= 0, got ${o.gravity}, ${o.k}`);
+  const most = o.bounces ?? 0,
+    e = o.restitution ?? 0.8,
+    mu = o.friction ?? 0;
+  if (!(mu >= 0 && Number.isFinite(mu))) throw new RangeError(`throwPath: friction must be finite and >= 0, got ${mu}`);
+  if (!(Number.isInteger(most) && most >= 0)) throw new RangeError(`throwPath: bounces must be an integer >= 0, got ${most}`);
+  if (!(e >= 0 && e <= 1)) throw new RangeError(`throwPath: restitution must be in [0, 1], got ${e}`);
   const perPoint = Math.max(1, Math.round(every / h));
   const r = o.radius,
     { min, max } = o.box;
+  const walls = o.walls ?? [];
   const out = [x, y];
   const steps = Math.round(seconds / h);
+  let bounced = 0,
+    spin = 0;
   for (let n = 1; n <= steps; n++) {
+    const px = x,
+      py = y;
     let ax = 0,
       ay = -o.gravity;
     if (o.drag === 'linear') {
@@ -268,9 +378,60 @@ export function throwPath(x: number, y: number, vx: number, vy: number, o: Throw
     y += (vy + 0.5 * ay * h) * h;
     vx += ax * h;
     vy += ay * h;
-    const touches = x - r <= min[0] || x + r >= max[0] || y - r <= min[1] || y + r >= max[1];
+    // Touches: the box's sides (normal into the box), each wall (normal from the wall to the ball), the net.
+    let touches = false;
+    const bounce = (nx: number, ny: number): void => {
+      touches = true;
+      const into = vx * nx + vy * ny;
+      if (into >= 0) return;
+      const jn = (1 + (-into > RESTITUTION_THRESHOLD ? e : 0)) * -into;
+      vx += jn * nx;
+      vy += jn * ny;
+      // Along the surface (t = n turned +90 degrees): the contact point's slip v.t - spin r, stopped
+      // by an impulse of m / 3 of it (a disc), at most mu times the normal one (both per unit mass).
+      const tx = -ny,
+        ty = nx;
+      const slip = vx * tx + vy * ty - spin * r;
+      const jt = Math.max(-mu * jn, Math.min(mu * jn, -slip / 3));
+      vx += jt * tx;
+      vy += jt * ty;
+      spin -= (2 * jt) / r;
+    };
+    if (x - r <= min[0]) {
+      x = min[0] + r;
+      bounce(1, 0);
+    } else if (x + r >= max[0]) {
+      x = max[0] - r;
+      bounce(-1, 0);
+    }
+    if (y - r <= min[1]) {
+      y = min[1] + r;
+      bounce(0, 1);
+    } else if (y + r >= max[1]) {
+      y = max[1] - r;
+      bounce(0, -1);
+    }
+    for (const [wax, way, wbx, wby, wr] of walls) {
+      const ex = wbx - wax,
+        ey = wby - way;
+      const t = Math.max(0, Math.min(1, ((x - wax) * ex + (y - way) * ey) / (ex * ex + ey * ey || 1)));
+      const dx = x - wax - t * ex,
+        dy = y - way - t * ey,
+        d = Math.hypot(dx, dy);
+      if (d >= r + wr || d === 0) continue;
+      x = wax + t * ex + (dx / d) * (r + wr);
+      y = way + t * ey + (dy / d) * (r + wr);
+      bounce(dx / d, dy / d);
+    }
+    if (o.hoop) {
+      const net = netContact(o.hoop, r, px, py, x, y, vx, vy);
+      if (net) {
+        touches = true;
+        [x, y, vx, vy] = net;
+      }
+    }
     if (touches || n % perPoint === 0) out.push(x, y);
-    if (touches) break;
+    if (touches && ++bounced > most) break;
   }
   return out;
 }

@@ -10,9 +10,15 @@
  * Input: press on a ball or crate and drag to pull it (a mouse joint); anywhere else a click drops a
  * ball at the pointer, and a pull throws one slingshot-style from where the press began (opposite to
  * the pull, faster the longer it is, hoop.ts slingVelocity), with a dotted arc of its flight while
- * pulling (hoop.ts throwPath). The player's balls are orange, all the same size (hoop.ts
- * PLAYER_RADIUS). When time is up, the Play-again button floats at the top of the box, clear of the
- * balls piled at its bottom.
+ * pulling (hoop.ts throwPath), bounces off the walls, the hoop and its net included. The net stops a
+ * ball from below or the side (hoop.ts netContact). The player's balls are basketballs, all the same
+ * size (hoop.ts PLAYER_RADIUS). When time is up, the Play-again button floats at the top of the box,
+ * clear of the balls piled at its bottom.
+ *
+ * Looks: a court (a wall with panels over a wooden floor, the box framed in steel), wooden ramps,
+ * plain coloured balls (no rotation marks, no trails unless asked for), a backboard with its target
+ * square, an orange rim and a net of diamond mesh; the player's balls are orange with black seams
+ * that turn with the ball.
  * Keys: P pause, N single step, R reset, T trails, D debug overlay.
  * URL: ?count=N (balls, 1..10000), ?round=S (hoop round, s, 5..600), ?seed=S, ?mode=auto|sprites|particles, ?trails=0|1, ?debug.
  * From 1000 balls on (mode auto) the renderer draws with pixi's ParticleContainer.
@@ -37,12 +43,18 @@ import { addBox, createPhysicsWorld, type PhysicsWorld, setMaterial as setBodyMa
 import { Graphics, Text } from 'pixi.js';
 import {
   addHoop,
+  BACKBOARD,
   createRound,
+  HOOP_RADIUS,
   type HoopRound,
+  type HoopSpot,
   hoopCrossing,
   hoopOpening,
+  hoopSegments,
   hoopSpots,
   mayScore,
+  NET,
+  netContact,
   PLAYER_RADIUS,
   ROUND_SECONDS,
   removeHoop,
@@ -66,11 +78,14 @@ import {
   layoutOf,
   meanRadiusFor,
   removeBall,
+  SEGMENT_RADIUS,
   spawnBall,
 } from './scene';
 
-/** Colour of the heavy balls (density 4 kg/m^2); the others keep their seeded colours. */
-const HEAVY_COLOR = 0x6b7a93;
+/** Colour of the heavy balls (density 4 kg/m^2, steel); the others keep their seeded colours from BALL_PALETTE. */
+const HEAVY_COLOR = 0xa9b4c6;
+/** The sandbox balls' colours: bright, so they read on the court's dark wall. */
+const BALL_PALETTE = [0x4cc9f0, 0xf15bb5, 0x9b5de5, 0x00bbf9, 0x00f5d4, 0xfee440, 0xff6b6b, 0x8ac926, 0xffca3a, 0x72efdd];
 /** A press that moves less than this, CSS px, is a click (drop), more is a throw. */
 const CLICK_SLOP = 6;
 
@@ -83,7 +98,8 @@ const params = {
   friction: 0.2,
   drag: 'none' as DragMode,
   dragK: 0.05,
-  trails: new URLSearchParams(location.search).has('trails') ? flagParam('trails') : initialCount <= 400,
+  // Off unless asked for: trails read as a physics plot, not a game.
+  trails: flagParam('trails'),
   debug: flagParam('debug'),
   reset: () => game.shell.reset(),
 };
@@ -228,9 +244,36 @@ function keepBest(): void {
   }
 }
 
+/** The net stops the balls it would stop (hoop.ts netContact): every ball, after each step. */
+function applyNet(world: PhysicsWorld): void {
+  const spot = hoopSpots(TALL)[round.spot]!;
+  const c = world.components,
+    P = c.Position,
+    O = c.PreviousPosition,
+    V = c.Velocity,
+    B = c.Ball;
+  // Only balls near the hoop can touch its net (a cheap test first: the sandbox may hold thousands).
+  const reach = HOOP_HALF_SPAN + 2;
+  for (const e of handles.balls) {
+    const s = slotOf(e);
+    const x = P.x[s]!,
+      y = P.y[s]!;
+    if (Math.abs(x - spot.x) > reach || Math.abs(y - spot.y) > reach) continue;
+    const hit = netContact(spot, B.radius[s]!, O.x[s]!, O.y[s]!, x, y, V.x[s]!, V.y[s]!);
+    if (!hit) continue;
+    P.x[s] = hit[0];
+    P.y[s] = hit[1];
+    V.x[s] = hit[2];
+    V.y[s] = hit[3];
+  }
+}
+/** Half the hoop's width with its net, m (for applyNet's quick test). */
+const HOOP_HALF_SPAN = 1.5;
+
 /** One step, then a knock for each impact: loudness from its impulse, the harder of the two materials. */
 function stepWorld(world: PhysicsWorld): void {
   step(world);
+  applyNet(world);
   playHoop(world);
   forEachImpact(world, (a, b, impulse) => {
     const ma = materialOf(world, a),
@@ -264,8 +307,14 @@ const game = await startPixiGame({
     balls: mode,
     trails: params.trails ? trailOptions(params.count) : false,
     debug: params.debug,
+    // Plain balls (no rotation marks: those read as a physics diagram) in bright colours.
+    rotation: false,
+    palette: BALL_PALETTE,
   },
-  onFrame: () => {
+  app: { background: 0x0b0f18 },
+  onFrame: (alpha, world) => {
+    drawCourt();
+    drawBasketballs(alpha, world);
     drawPointer();
     drawHoop();
   },
@@ -457,6 +506,11 @@ function aimPath(): number[] {
   if (pointerId === -1 || !dragged) return [];
   const t = currentThrow();
   const p = handles.params;
+  const spot = hoopSpots(TALL)[round.spot]!;
+  const walls = [
+    ...layoutOf(TALL).segments.map(([ax, ay, bx, by]) => [ax, ay, bx, by, SEGMENT_RADIUS] as const),
+    ...hoopSegments(spot).map(([ax, ay, bx, by]) => [ax, ay, bx, by, HOOP_RADIUS] as const),
+  ];
   return throwPath(t.x, t.y, t.vx, t.vy, {
     gravity: p.gravity,
     drag: p.drag,
@@ -464,8 +518,15 @@ function aimPath(): number[] {
     mass: Math.PI * PLAYER_RADIUS * PLAYER_RADIUS * DENSITIES.normal,
     radius: PLAYER_RADIUS,
     box: layoutOf(TALL).box,
+    seconds: 2.5,
+    bounces: AIM_BOUNCES,
+    restitution: p.restitution,
+    walls,
+    hoop: spot,
   });
 }
+/** Bounces the aiming arc follows (off the walls, the hoop and its net) before it ends. */
+const AIM_BOUNCES = 2;
 
 /**
  * Draws the pointer preview: the ball to be dropped; while pulling, the ball at its spot (orange if
@@ -510,7 +571,12 @@ let tooHighAt = -1e9;
 /** Why the last ball cannot score: released above the line, or went up through the hoop from below. */
 let hintReason: 'high' | 'below' = 'high';
 
-/** Draws the net under the rim, the rim's opening, the dashed shot line at rim height and a basket's pop. */
+/**
+ * Draws the hoop each frame: the backboard (a white board with its target square, on a bracket
+ * from the box's side), the net under the rim (strings from the rim to its narrower bottom, crossed
+ * into diamonds), the orange rim across the opening, the shot line at rim height (balls released
+ * below it may score) and a basket's pop.
+ */
 function drawHoop(): void {
   const cam = renderer.camera;
   const world = shell.world;
@@ -518,32 +584,44 @@ function drawHoop(): void {
   const o = hoopOpening(spot);
   const { box } = layoutOf(TALL);
   hoopLayer.clear();
-  // The shot line: balls released below it may score.
+  // The shot line: short dashes at rim height, faint, with a label at the box's far side.
   const yLine = cam.toScreenY(o.y);
-  const dash = 10;
-  for (let x = cam.toScreenX(box.min[0]); x < cam.toScreenX(box.max[0]); x += 2 * dash)
+  const dash = 8;
+  for (let x = cam.toScreenX(box.min[0]); x < cam.toScreenX(box.max[0]); x += 3 * dash)
     hoopLayer.moveTo(x, yLine).lineTo(Math.min(x + dash, cam.toScreenX(box.max[0])), yLine);
-  hoopLayer.stroke({ width: 1, color: 0xff8a2a, alpha: 0.35 });
-  // The net: strings from the rim down to a narrower bottom, 1.1 m below, and two cross rows.
-  const depth = 1.1,
-    narrow = 0.3;
+  hoopLayer.stroke({ width: 2, color: 0xff9f43, alpha: 0.45 });
+  drawBackboard(spot);
+  // The net: five strings from the rim to the narrower bottom, crossed by two rows of diagonals
+  // (a diamond mesh), white, over the balls inside it.
   const L = o.minX,
-    R = o.maxX;
-  for (let k = 0; k <= 4; k++) {
-    const t = k / 4;
-    const xTop = L + t * (R - L),
-      xBottom = L + narrow + t * (R - L - 2 * narrow);
-    hoopLayer.moveTo(cam.toScreenX(xTop), cam.toScreenY(o.y)).lineTo(cam.toScreenX(xBottom), cam.toScreenY(o.y - depth));
-  }
-  for (const f of [0.5, 1]) {
+    R = o.maxX,
+    depth = NET.depth,
+    narrow = NET.narrow;
+  const at = (t: number, f: number): [number, number] => {
+    // Point of the net at fraction t across (0 left, 1 right) and f down (0 rim, 1 bottom), m.
     const inset = narrow * f;
-    hoopLayer
-      .moveTo(cam.toScreenX(L + inset), cam.toScreenY(o.y - depth * f))
-      .lineTo(cam.toScreenX(R - inset), cam.toScreenY(o.y - depth * f));
-  }
-  hoopLayer.stroke({ width: 1.5, color: 0xf2f5f9, alpha: 0.7 });
-  // The rim across the opening (drawn only: balls pass through it).
-  hoopLayer.moveTo(cam.toScreenX(L), cam.toScreenY(o.y)).lineTo(cam.toScreenX(R), cam.toScreenY(o.y)).stroke({ width: 3, color: 0xff6a1a });
+    return [L + inset + t * (R - L - 2 * inset), o.y - depth * f];
+  };
+  const line = (a: [number, number], b: [number, number]): void => {
+    hoopLayer.moveTo(cam.toScreenX(a[0]), cam.toScreenY(a[1])).lineTo(cam.toScreenX(b[0]), cam.toScreenY(b[1]));
+  };
+  const cols = 6,
+    rows = 3;
+  for (let i = 0; i < cols; i++)
+    for (let j = 0; j < rows; j++) {
+      line(at(i / cols, j / rows), at((i + 1) / cols, (j + 1) / rows));
+      line(at((i + 1) / cols, j / rows), at(i / cols, (j + 1) / rows));
+    }
+  line(at(0, 0), at(0, 1));
+  line(at(1, 0), at(1, 1));
+  line(at(0, 1), at(1, 1));
+  hoopLayer.stroke({ width: 1.6, color: 0xf4f6fb, alpha: 0.85 });
+  // The rim across the opening (drawn only: balls pass through it), thick orange with a dark edge.
+  const rimW = Math.max(4, cam.toScreenLength(2 * HOOP_RADIUS));
+  line([L - HOOP_RADIUS, o.y], [R + HOOP_RADIUS, o.y]);
+  hoopLayer.stroke({ width: rimW + 2, color: 0x7a2e05, cap: 'round' });
+  line([L - HOOP_RADIUS, o.y], [R + HOOP_RADIUS, o.y]);
+  hoopLayer.stroke({ width: rimW, color: 0xff7a1a, cap: 'round' });
   // A basket: a ring that widens and fades over 0.8 s, and a rising +1.
   const age = world.time - lastBasket.time;
   popText.visible = age >= 0 && age < 0.8;
@@ -556,6 +634,136 @@ function drawHoop(): void {
     popText.alpha = 1 - f;
   }
   updateStatus();
+}
+
+/**
+ * The backboard of the hoop at `spot`: a white board (its physics is the capsule of hoopSegments,
+ * drawn as a board 0.16 m thick) with the red target square over the rim, and a steel bracket from
+ * the board to the box's side wall behind it.
+ */
+function drawBackboard(spot: HoopSpot): void {
+  const cam = renderer.camera;
+  const [bx, by0, , by1] = hoopSegments(spot)[0]!;
+  const { box } = layoutOf(TALL);
+  const wall = spot.side > 0 ? box.max[0] : box.min[0];
+  // The bracket: two struts from the board's back to the side wall (if there is room between them).
+  const back = bx + spot.side * HOOP_RADIUS;
+  if (Math.abs(wall - back) > 0.05) {
+    for (const y of [spot.y + 0.15, spot.y + 0.9]) {
+      hoopLayer.moveTo(cam.toScreenX(back), cam.toScreenY(y)).lineTo(cam.toScreenX(wall), cam.toScreenY(y + 0.25));
+    }
+    hoopLayer.stroke({ width: Math.max(3, cam.toScreenLength(0.1)), color: 0x6b7485 });
+  }
+  const t = Math.max(6, cam.toScreenLength(2 * HOOP_RADIUS));
+  const x = cam.toScreenX(bx),
+    top = cam.toScreenY(by1),
+    bottom = cam.toScreenY(by0);
+  hoopLayer
+    .roundRect(x - t / 2, top, t, bottom - top, t / 2)
+    .fill(0xf4f6fb)
+    .stroke({ width: 1.5, color: 0x8a93a6 });
+  // The target square: red, from the rim up a third of the board.
+  const sq = cam.toScreenY(spot.y + 0.45 * BACKBOARD.above);
+  hoopLayer.rect(x - t / 2 + 1, sq, t - 2, cam.toScreenY(spot.y) - sq).fill(0xe63946);
+}
+
+// ---- The court: wall, floor, frame and ramps (redrawn when the camera changes) --------------------
+
+/** The court under everything: drawn once per camera (the renderer's plain walls and box are hidden). */
+const court = new Graphics({ label: 'court' });
+app.stage.addChildAt(court, 0);
+// The renderer's walls (thin lines with end dots, the box's outline) look like a physics diagram:
+// the court draws them as a frame and wooden ramps instead.
+const plainWalls = renderer.root.children.find((c) => c.label === 'walls');
+if (plainWalls) plainWalls.visible = false;
+let courtVersion = -1;
+
+/** Draws the court if the camera changed: the wall with panels, the wooden floor, the steel frame, the ramps. */
+function drawCourt(): void {
+  const cam = renderer.camera;
+  if (cam.version === courtVersion) return;
+  courtVersion = cam.version;
+  const { box, segments } = layoutOf(TALL);
+  const x0 = cam.toScreenX(box.min[0]),
+    x1 = cam.toScreenX(box.max[0]),
+    y0 = cam.toScreenY(box.max[1]),
+    y1 = cam.toScreenY(box.min[1]);
+  court.clear();
+  // The wall: bands darker upwards, and panels 2 m wide.
+  const bands = 10;
+  for (let i = 0; i < bands; i++) {
+    const f = i / (bands - 1);
+    const c = (Math.round(0x1a + 0x12 * f) << 16) | (Math.round(0x24 + 0x16 * f) << 8) | Math.round(0x3a + 0x1c * f);
+    const ya = y0 + ((y1 - y0) * i) / bands;
+    court.rect(x0, ya, x1 - x0, (y1 - y0) / bands + 1).fill(c);
+  }
+  for (let x = box.min[0] + 2; x < box.max[0] - 0.5; x += 2)
+    court.moveTo(cam.toScreenX(x), y0).lineTo(cam.toScreenX(x), y1).stroke({ width: 1, color: 0x3b4a6b, alpha: 0.6 });
+  // The floor under the box: hardwood boards, 0.35 m deep, with their seams.
+  const floor = Math.max(10, cam.toScreenLength(0.35));
+  court.rect(x0, y1, x1 - x0, floor).fill(0xc8904f);
+  court.rect(x0, y1, x1 - x0, 2).fill(0xe3b276);
+  for (let x = box.min[0] + 1.3; x < box.max[0]; x += 1.3)
+    court
+      .moveTo(cam.toScreenX(x), y1 + 2)
+      .lineTo(cam.toScreenX(x), y1 + floor)
+      .stroke({ width: 1, color: 0x9a6a35 });
+  // The frame: dark steel round the box, a lighter inner edge.
+  const w = Math.max(6, cam.toScreenLength(0.18));
+  court.rect(x0 - w, y0 - w, x1 - x0 + 2 * w, w).fill(0x3a4252);
+  court.rect(x0 - w, y0 - w, w, y1 - y0 + w + floor).fill(0x3a4252);
+  court.rect(x1, y0 - w, w, y1 - y0 + w + floor).fill(0x3a4252);
+  court.rect(x0, y0, x1 - x0, 2).fill(0x5b6577);
+  // The ramps: wooden beams with a lighter top edge, round ends.
+  for (const [ax, ay, bx, by] of segments) {
+    const width = Math.max(6, cam.toScreenLength(2 * SEGMENT_RADIUS + 0.06));
+    court
+      .moveTo(cam.toScreenX(ax), cam.toScreenY(ay))
+      .lineTo(cam.toScreenX(bx), cam.toScreenY(by))
+      .stroke({ width, color: 0x8a5a32, cap: 'round' });
+    court
+      .moveTo(cam.toScreenX(ax), cam.toScreenY(ay) - width / 4)
+      .lineTo(cam.toScreenX(bx), cam.toScreenY(by) - width / 4)
+      .stroke({ width: width / 3, color: 0xc08a54, cap: 'round' });
+  }
+}
+
+// ---- The player's balls: basketballs --------------------------------------------------------------
+
+/** Seams over the player's balls (orange discs drawn by the renderer), above the balls. */
+const seams = new Graphics({ label: 'basketball-seams' });
+app.stage.addChild(seams);
+
+/** Draws each player's ball's seams (a black outline, two crossing seams and two curved ones) at its drawn place, turned with it. */
+function drawBasketballs(alpha: number, world: PhysicsWorld): void {
+  const cam = renderer.camera;
+  seams.clear();
+  const c = world.components,
+    P = c.Position,
+    O = c.PreviousPosition;
+  const r = cam.toScreenLength(PLAYER_RADIUS);
+  const w = Math.max(1, 0.09 * r);
+  for (const e of playerBalls.keys()) {
+    const s = slotOf(e);
+    const x = cam.toScreenX(O.x[s]! + (P.x[s]! - O.x[s]!) * alpha),
+      y = cam.toScreenY(O.y[s]! + (P.y[s]! - O.y[s]!) * alpha);
+    // Screen y is down: a turn of +a in the world is -a on screen.
+    const a = -(c.Angle?.value[s] ?? 0);
+    const cos = Math.cos(a),
+      sin = Math.sin(a);
+    const pt = (u: number, v: number): [number, number] => [x + r * (cos * u - sin * v), y + r * (sin * u + cos * v)];
+    seams.moveTo(...pt(-0.97, 0)).lineTo(...pt(0.97, 0));
+    seams.moveTo(...pt(0, -0.97)).lineTo(...pt(0, 0.97));
+    for (const side of [-1, 1]) {
+      seams.moveTo(...pt(side * 0.45, -0.88));
+      for (let k = 1; k <= 8; k++) {
+        const v = -0.88 + (1.76 * k) / 8;
+        seams.lineTo(...pt(side * (0.45 - 0.2 * (1 - v * v)), v));
+      }
+    }
+    seams.stroke({ width: w, color: 0x1a0d05, alpha: 0.85 });
+    seams.circle(x, y, r - w / 2).stroke({ width: w, color: 0x5a2a08, alpha: 0.7 });
+  }
 }
 
 const status = createStatusRow({ name: 'hoop' });

@@ -8,10 +8,18 @@
  * ring). A shell bursts FUSE (2 s) after launch, so a drifting lantern must be led.
  *
  * Everything is measured in sky widths (W), as the bursts are (show.ts `reach`): a lantern's x is a
- * fraction of the width, its y a height in widths above the band's middle (`BAND_MIDDLE` of the
- * sky's height), so a level plays the same in the wide desktop sky and a phone's tall one. Stars by
- * shells used against the level's par, the fewest shells that light it (found by search over burst
- * points and holds on maps of where the real bursts' hot stars go, both sky shapes; see each level).
+ * fraction of the width, its y a height in widths above the band's middle (`bandMiddle` of the sky's
+ * height). A wide sky (a desktop's) plays each level's `lanterns`; a tall one (a phone held upright,
+ * `isTall`) plays its `tall` layout, the same lanterns spread over about 0.9 W of height instead of
+ * 0.4 W, so the play fills the phone's screen rather than a band across its middle. Each tall layout
+ * keeps its level's idea (the pairs 0.4 W apart, the willow columns 0.26 W tall, the finale's low
+ * pair meeting 0.32 W under the middle lantern) and moves the rest apart. Stars by shells used
+ * against the level's par, the fewest shells that light it (found by search over burst points and
+ * holds on maps of where the real bursts' hot stars go; see each level).
+ *
+ * A level is shown as lit (`clearShown`) CLEAR_DELAY after its last lantern lit, once every
+ * lantern's glow (`glowOf`, rising over GLOW_RISE) is full: the banner no longer comes up while the
+ * last burst still hides the lantern it lit.
  * Pure rules: no DOM, no pixi.
  */
 import { type PhysicsWorld, query, slotOf } from '@bitphysics/physics';
@@ -27,8 +35,20 @@ export const LANTERN_SIZE = 0.032;
 /** The smallest lantern radius, m: 3.4 m is 21 px in a phone's 64 m sky, so a lantern stands 41 px tall there. */
 export const LANTERN_MIN_RADIUS = 3.4;
 
-/** Where a lantern's y = 0 lies, as a fraction of the sky's height; levels keep |y| <= 0.2 W. */
+/** Where a lantern's y = 0 lies in a wide sky, as a fraction of the sky's height; wide layouts keep |y| <= 0.2 W. */
 export const BAND_MIDDLE = 0.55;
+
+/** Where a lantern's y = 0 lies in a tall sky (`isTall`), as a fraction of its height; tall layouts keep |y| <= 0.5 W. */
+export const TALL_BAND_MIDDLE = 0.52;
+
+/** A sky at least this many times as tall as wide plays the levels' tall layouts. */
+export const TALL_RATIO = 1.3;
+
+/** How long a newly lit lantern's glow takes to come up to full, s (world time). */
+export const GLOW_RISE = 0.5;
+
+/** How long after the last lantern lit the level is shown as lit (banner, stars, next-level button), s (world time). */
+export const CLEAR_DELAY = 1.2;
 
 /** The shells of the lantern show. */
 export type LanternShell = Extract<RecipeName, 'peony' | 'willow'>;
@@ -47,14 +67,16 @@ export interface Lantern {
 }
 
 /**
- * A level: its name, a tip shown while it is played (after 'Click' or 'Tap'), its lanterns, par (the
- * fewest shells that light them all, in both sky shapes), the shell it gives (`shell`) and whether
- * holding makes that shell's burst bigger (`hold`).
+ * A level: its name, a tip shown while it is played (after 'Click' or 'Tap'; short, so the status
+ * row's hint stays one line on a phone beside its button), its lanterns in a wide sky and in a tall
+ * one (as many, in the same order), par (the fewest shells that light them all, in both), the shell
+ * it gives (`shell`) and whether holding makes that shell's burst bigger (`hold`).
  */
 export interface LanternLevel {
   readonly name: string;
   readonly tip: string;
   readonly lanterns: readonly Lantern[];
+  readonly tall: readonly Lantern[];
   readonly par: number;
   readonly shell: LanternShell;
   readonly hold: boolean;
@@ -79,7 +101,7 @@ export interface LanternLevel {
 export const LEVELS: readonly LanternLevel[] = Object.freeze([
   {
     name: 'First light',
-    tip: 'right on a lantern: its sparks light what they touch',
+    tip: 'right on a lantern to light it',
     par: 3,
     shell: 'peony',
     hold: false,
@@ -88,10 +110,16 @@ export const LEVELS: readonly LanternLevel[] = Object.freeze([
       { x: 0.5, y: 0.12 },
       { x: 0.9, y: -0.04 },
     ],
+    // At least 0.7 W apart: a burst lights one.
+    tall: [
+      { x: 0.15, y: 0.38 },
+      { x: 0.85, y: 0.1 },
+      { x: 0.35, y: -0.42 },
+    ],
   },
   {
     name: 'Pairs',
-    tip: 'and hold between two lanterns to light both. Which pairs?',
+    tip: 'and hold between two lanterns',
     par: 2,
     shell: 'peony',
     hold: true,
@@ -101,10 +129,19 @@ export const LEVELS: readonly LanternLevel[] = Object.freeze([
       { x: 0.5, y: 0.18 },
       { x: 0.9, y: 0.18 },
     ],
+    // Two pairs 0.4 W apart as wide, 0.64 W apart in height. The lower pair is centred: a low burst
+    // drifts outwards with its shell's sideways speed (less spent by drag low down), and one between
+    // these two is launched straight up.
+    tall: [
+      { x: 0.3, y: -0.22 },
+      { x: 0.7, y: -0.22 },
+      { x: 0.5, y: 0.42 },
+      { x: 0.9, y: 0.42 },
+    ],
   },
   {
     name: 'Drifting',
-    tip: 'ahead of a lantern: it drifts on for the 2 s fuse',
+    tip: 'ahead of a lantern: 2 s fuse',
     par: 3,
     shell: 'peony',
     hold: false,
@@ -113,10 +150,15 @@ export const LEVELS: readonly LanternLevel[] = Object.freeze([
       { x: 0.5, y: 0.16, drift: 0.14, period: 5, phase: 1 },
       { x: 0.83, y: -0.1, drift: 0.09, period: 8, phase: 3 },
     ],
+    tall: [
+      { x: 0.17, y: 0.36, drift: 0.09, period: 7, phase: 0 },
+      { x: 0.5, y: -0.02, drift: 0.14, period: 5, phase: 1 },
+      { x: 0.83, y: -0.4, drift: 0.09, period: 8, phase: 3 },
+    ],
   },
   {
     name: 'Willows',
-    tip: 'on an upper lantern: willow sparks fall far, onto the one below',
+    tip: 'on a top lantern: willows fall',
     par: 3,
     shell: 'willow',
     hold: true,
@@ -128,10 +170,20 @@ export const LEVELS: readonly LanternLevel[] = Object.freeze([
       { x: 0.9, y: 0.14 },
       { x: 0.9, y: -0.12 },
     ],
+    // Three columns of two, 0.26 W tall as wide and 0.4 W apart, the middle one lower by a column's
+    // height: a burst between columns reaches neither pair.
+    tall: [
+      { x: 0.1, y: 0.45 },
+      { x: 0.1, y: 0.19 },
+      { x: 0.5, y: -0.07 },
+      { x: 0.5, y: -0.33 },
+      { x: 0.9, y: 0.45 },
+      { x: 0.9, y: 0.19 },
+    ],
   },
   {
     name: 'Finale',
-    tip: 'and hold when the low lanterns meet: light three',
+    tip: 'and hold when the low two meet',
     par: 3,
     shell: 'peony',
     hold: true,
@@ -142,6 +194,14 @@ export const LEVELS: readonly LanternLevel[] = Object.freeze([
       { x: 0.3, y: -0.15, drift: 0.1, period: 6, phase: 0 },
       { x: 0.7, y: -0.15, drift: 0.1, period: 6, phase: Math.PI },
     ],
+    // The middle lantern and the low pair as wide (they meet 0.32 W under it); the sides higher.
+    tall: [
+      { x: 0.1, y: 0.42 },
+      { x: 0.5, y: 0.02 },
+      { x: 0.9, y: 0.42 },
+      { x: 0.3, y: -0.3, drift: 0.1, period: 6, phase: 0 },
+      { x: 0.7, y: -0.3, drift: 0.1, period: 6, phase: Math.PI },
+    ],
   },
 ]);
 
@@ -151,14 +211,31 @@ export interface SkySize {
   readonly height: number;
 }
 
+/** Whether `sky` is tall (at least TALL_RATIO times as tall as wide: a phone held upright), which plays the tall layouts. */
+export function isTall(sky: SkySize): boolean {
+  return sky.height >= TALL_RATIO * sky.width;
+}
+
+/** Where a lantern's y = 0 lies in `sky`, as a fraction of its height: TALL_BAND_MIDDLE in a tall sky, else BAND_MIDDLE. */
+export function bandMiddle(sky: SkySize): number {
+  return isTall(sky) ? TALL_BAND_MIDDLE : BAND_MIDDLE;
+}
+
+/** The lanterns of `level` (an index into LEVELS) in `sky`: its tall layout in a tall sky, else its wide one. */
+export function lanternsOf(level: number, sky: SkySize): readonly Lantern[] {
+  const lv = LEVELS[level];
+  if (!lv) throw new RangeError(`lanternsOf: level must be an integer in [0, ${LEVELS.length - 1}], got ${level}`);
+  return isTall(sky) ? lv.tall : lv.lanterns;
+}
+
 /**
- * Where lantern `lantern` is at `t` s after its level started, m.
+ * Where lantern `lantern` is at `t` s after its level started, m (y = 0 of the band at `bandMiddle`).
  * @throws RangeError if t is not finite.
  */
 export function lanternAt(lantern: Lantern, sky: SkySize, t: number): [number, number] {
   if (!Number.isFinite(t)) throw new RangeError(`lanternAt: t must be finite, got ${t}`);
   const swing = lantern.drift && lantern.period ? lantern.drift * Math.sin((2 * Math.PI * t) / lantern.period + (lantern.phase ?? 0)) : 0;
-  return [(lantern.x + swing) * sky.width, BAND_MIDDLE * sky.height + lantern.y * sky.width];
+  return [(lantern.x + swing) * sky.width, bandMiddle(sky) * sky.height + lantern.y * sky.width];
 }
 
 /** A lantern's radius, m, in a sky `width` m wide: LANTERN_SIZE x width, at least LANTERN_MIN_RADIUS. */
@@ -212,13 +289,44 @@ export interface LanternRun {
   readonly start: number;
   /** Stars earned once all are lit; 0 while playing. */
   stars: 0 | 1 | 2 | 3;
+  /** World time each lantern lit, s (NaN while unlit). */
+  readonly litAt: number[];
 }
 
 /** Starts level `level` (an index into LEVELS) at world time `start` s. @throws RangeError on an unknown level. */
 export function startLevel(level: number, start: number): LanternRun {
   if (!(Number.isInteger(level) && level >= 0 && level < LEVELS.length))
     throw new RangeError(`startLevel: level must be an integer in [0, ${LEVELS.length - 1}], got ${level}`);
-  return { level, lit: LEVELS[level]!.lanterns.map(() => false), shells: 0, start, stars: 0 };
+  const n = LEVELS[level]!.lanterns.length;
+  return {
+    level,
+    lit: Array.from({ length: n }, () => false),
+    shells: 0,
+    start,
+    stars: 0,
+    litAt: Array.from({ length: n }, () => Number.NaN),
+  };
+}
+
+/**
+ * How brightly lantern `i` of `run` glows at world time `time` s, in [0, 1]: 0 while unlit, rising
+ * evenly to 1 over GLOW_RISE after it lit.
+ */
+export function glowOf(run: LanternRun, i: number, time: number): number {
+  const at = run.litAt[i];
+  if (at === undefined || Number.isNaN(at)) return 0;
+  return Math.max(0, Math.min(1, (time - at) / GLOW_RISE));
+}
+
+/**
+ * Whether the level is shown as lit at world time `time` s: every lantern lit, the last CLEAR_DELAY
+ * or more ago (every glow full by then, as CLEAR_DELAY > GLOW_RISE).
+ */
+export function clearShown(run: LanternRun, time: number): boolean {
+  if (run.stars === 0) return false;
+  let last = -Infinity;
+  for (const t of run.litAt) last = Math.max(last, t);
+  return time - last >= CLEAR_DELAY - 1e-9;
 }
 
 /** The player launched a shell (counted until the level is lit). */
@@ -226,10 +334,11 @@ export function countShell(run: LanternRun): void {
   if (run.stars === 0) run.shells++;
 }
 
-/** Lights lantern `i` of the run (if unlit) and gives the stars once all are lit. @returns whether it was lit now. */
-function light(run: LanternRun, i: number): boolean {
+/** Lights lantern `i` of the run (if unlit) at world time `time` s and gives the stars once all are lit. @returns whether it was lit now. */
+function light(run: LanternRun, i: number, time: number): boolean {
   if (run.lit[i]) return false;
   run.lit[i] = true;
+  run.litAt[i] = time;
   if (run.lit.every(Boolean)) run.stars = starsFor(run.shells, LEVELS[run.level]!.par);
   return true;
 }
@@ -243,10 +352,10 @@ export function starAt(run: LanternRun, sky: SkySize, x: number, y: number, time
   const out: number[] = [];
   if (run.stars !== 0) return out;
   const r = lanternRadius(sky.width);
-  for (const [i, lantern] of LEVELS[run.level]!.lanterns.entries()) {
+  for (const [i, lantern] of lanternsOf(run.level, sky).entries()) {
     if (run.lit[i]) continue;
     const [lx, ly] = lanternAt(lantern, sky, time - run.start);
-    if ((lx - x) ** 2 + (ly - y) ** 2 <= r * r && light(run, i)) out.push(i);
+    if ((lx - x) ** 2 + (ly - y) ** 2 <= r * r && light(run, i, time)) out.push(i);
   }
   return out;
 }
@@ -278,7 +387,7 @@ export function lightFromSparks(world: PhysicsWorld, show: FireworksShow, run: L
   if (run.stars !== 0) return out;
   const emitters = burstEmittersOf(show);
   const sky = show.params.sky;
-  const lanterns = LEVELS[run.level]!.lanterns;
+  const lanterns = lanternsOf(run.level, sky);
   const r2 = lanternRadius(sky.width) ** 2;
   const at = lanterns.map((l) => lanternAt(l, sky, world.time - run.start));
   const c = world.components;
@@ -293,7 +402,7 @@ export function lightFromSparks(world: PhysicsWorld, show: FireworksShow, run: L
     for (let i = 0; i < at.length; i++) {
       if (run.lit[i]) continue;
       const [lx, ly] = at[i]!;
-      if ((lx - x) ** 2 + (ly - y) ** 2 <= r2 && light(run, i)) out.push(i);
+      if ((lx - x) ** 2 + (ly - y) ** 2 <= r2 && light(run, i, world.time)) out.push(i);
     }
     if (run.stars !== 0) break;
   }

@@ -4,10 +4,14 @@
  * stars a level against its par (best stars kept in localStorage). A lantern lights when a burst's
  * hot stars touch it; the charging ring drawn while the button is held shows how far they get (hold
  * longer for a bigger burst, on the levels that allow it); drifting lanterns must be led by the 2 s
- * fuse; each level gives one kind of shell. A lit lantern glows. The sky starts dark (no opening
- * salvo) and the auto-show stays off. The status row above the sky says the goal and the level's
- * tally; a cleared level shows a Next-level button; R restarts the level; the row's Free-play button
- * switches modes.
+ * fuse; each level gives one kind of shell. A lit lantern's glow comes up over half a second; the
+ * level shows as lit (the row's banner, the stars, the Next-level button) 1.2 s after its last
+ * lantern lit, when every glow is full (./lanterns.ts clearShown). On a phone held upright the levels
+ * play their tall layouts, spread over the screen's height. The sky starts dark (no opening salvo)
+ * and the auto-show stays off. The status row above the sky says the goal and the level's tally, each
+ * line one line on a phone; R restarts the level; the row's Free-play button switches modes. The
+ * controls legend (and a phone's gesture card) offers "hold: bigger burst" only where holding does
+ * something: on the levels that allow it, and in free play.
  *
  * Free play: a show that runs on its own (the auto-show plays ./show.ts `PROGRAMME`: peonies,
  * chrysanthemums, willows, rings, crossettes, palms, strobes and the book's crackling stars, singly
@@ -45,6 +49,7 @@ import {
   numberParam,
   pageLayout,
   plural,
+  SHELL_CONTROLS,
   seedParam,
 } from '@bitphysics/game-kit';
 import { startPixiGame } from '@bitphysics/game-kit/pixi';
@@ -59,7 +64,19 @@ import {
   threadsReady,
 } from '@bitphysics/physics';
 import { Container, Graphics, Sprite, Texture } from 'pixi.js';
-import { countShell, type LanternRun, LEVELS, lanternAt, lanternRadius, lightFromSparks, sparkReach, startLevel } from './lanterns';
+import {
+  clearShown,
+  countShell,
+  glowOf,
+  type LanternRun,
+  LEVELS,
+  lanternAt,
+  lanternRadius,
+  lanternsOf,
+  lightFromSparks,
+  sparkReach,
+  startLevel,
+} from './lanterns';
 import { RECIPE_NAMES, type RecipeName } from './recipes';
 import {
   BURST_SPEED,
@@ -84,6 +101,13 @@ import {
 } from './show';
 
 const search = new URLSearchParams(location.search);
+
+/** The legend's lines after the launch (./main.ts launchControls). */
+const OTHER_CONTROLS = [
+  { keys: 'A', action: `auto-show on / off (waits ${PLAYER_PAUSE} s after your shell)` },
+  { keys: 'T', action: 'trails on / off' },
+  { keys: 'Space', action: 'random shell' },
+];
 const stress = flagParam('stress');
 /** The lantern show (the default) or free play (?play=free, and the stress show). */
 let lanternShow = choiceParam('play', ['lanterns', 'free'] as const, stress ? 'free' : 'lanterns') === 'lanterns';
@@ -149,7 +173,7 @@ function stepShow(world: PhysicsWorld): void {
   const lit = lightFromSparks(world, show, run);
   if (lit.length === 0) return;
   for (const i of lit) {
-    const [x, y] = lanternAt(LEVELS[run.level]!.lanterns[i]!, show.params.sky, world.time - run.start);
+    const [x, y] = lanternAt(lanternsOf(run.level, show.params.sky)[i]!, show.params.sky, world.time - run.start);
     lightings.push({ x, y, time: world.time, index: i });
   }
   if (lightings.length > 16) lightings.splice(0, lightings.length - 16);
@@ -157,7 +181,7 @@ function stepShow(world: PhysicsWorld): void {
   if (run.stars > 0) levelLit();
 }
 
-/** All lanterns lit: keeps the level's best stars and offers the next level. */
+/** All lanterns lit: keeps the level's best stars (the level shows as lit, with its chime, CLEAR_DELAY later). */
 function levelLit(): void {
   if (run.stars > bestStars[run.level]!) {
     bestStars[run.level] = run.stars;
@@ -167,8 +191,9 @@ function levelLit(): void {
       /* private mode: kept for this page only */
     }
   }
-  sound.chime(1320, 0.6);
 }
+/** World time the level was first shown as lit (NaN until then), s. */
+let clearShownAt = Number.NaN;
 
 /**
  * The sky for this screen, m, shaped like the stage so no band of it is left black: about 6.2 px a
@@ -210,19 +235,25 @@ function createWorld(): PhysicsWorld {
   // A new world restarts the level being played (its lanterns' drift clock is the world's time).
   run = startLevel(level, 0);
   lightings.length = 0;
+  clearShownAt = Number.NaN;
   return world;
+}
+
+/**
+ * The controls legend for the mode and level being played: a click launches; "hold: bigger burst"
+ * only where holding makes one (free play, and the levels that allow it). On a phone the gesture card
+ * is made from these too.
+ */
+function launchControls(): { keys: string; action: string }[] {
+  const holds = !lanternShow || LEVELS[level]!.hold;
+  return [{ keys: 'Click', action: holds ? 'launch a shell (hold: bigger burst)' : 'launch a shell' }];
 }
 
 const game = await startPixiGame({
   title: 'Fireworks',
   createWorld,
   step: (world) => stepShow(world),
-  controls: [
-    { keys: 'Click', action: 'launch a shell (hold: bigger burst)' },
-    { keys: 'A', action: `auto-show on / off (waits ${PLAYER_PAUSE} s after your shell)` },
-    { keys: 'T', action: 'trails on / off' },
-    { keys: 'Space', action: 'random shell' },
-  ],
+  controls: [...launchControls(), ...OTHER_CONTROLS],
   keys: [
     { key: 'a', label: 'auto-show', action: () => setAuto(!params.autoShow) },
     { key: 't', label: 'trails', action: () => setTrails(!params.trails) },
@@ -238,6 +269,17 @@ const game = await startPixiGame({
 });
 const { shell, renderer, app } = game;
 const layer = renderer.particles!;
+
+/** The legend as shown now (launchControls' action), to write it again only when it changes. */
+let shownControls = launchControls()[0]!.action;
+/** Writes the controls legend (and a phone's gesture card) again when the level or mode changes what a hold does. */
+function updateControls(): void {
+  const c = launchControls();
+  if (c[0]!.action === shownControls) return;
+  shownControls = c[0]!.action;
+  shell.hud.setControls([...SHELL_CONTROLS, ...c, ...OTHER_CONTROLS]);
+}
+shell.onWorldChange(() => updateControls());
 
 /** Auto-show on or off (the A key and the panel); always off in the lantern show, whose stars would light lanterns. */
 function setAuto(on: boolean): void {
@@ -491,6 +533,9 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
     sprite.alpha = fade;
   }
   drawLanterns(world);
+  // The status row in both modes (it was written only while lanterns were drawn, so free play kept
+  // the lantern show's lines).
+  updateStatus();
   // Charging: a ring about as large as the burst the hold would make (it grows while held, where
   // holding counts), and a bright inner ring that fills up to the longest hold. In the lantern show
   // the ring is where the shell's hot stars get: lower than wide, as they droop.
@@ -579,6 +624,8 @@ const lanternGlow = new Container({ label: 'lantern-glow' });
 app.stage.addChildAt(lanternGlow, app.stage.getChildIndex(overlay));
 /** Halo and wash sprites of lantern i: 2i and 2i + 1 (made as levels need them). */
 const glowSprites: Sprite[] = [];
+/** How strong each lantern's glow was drawn in the last frame, [0, 1] (tests). */
+const glowShown: number[] = [];
 function glowSprite(k: number): Sprite {
   while (glowSprites.length <= k) {
     const sprite = new Sprite({ texture: glow, anchor: 0.5, blendMode: 'add', tint: 0xffb060, visible: false });
@@ -599,9 +646,8 @@ function drawLanterns(world: PhysicsWorld): void {
   const cam = renderer.camera;
   const sky = show.params.sky;
   const r = cam.toScreenLength(lanternRadius(sky.width));
-  const lv = LEVELS[run.level]!;
   const t = world.time;
-  for (const [i, l] of lv.lanterns.entries()) {
+  for (const [i, l] of lanternsOf(run.level, sky).entries()) {
     const [wx, wy] = lanternAt(l, sky, t - run.start);
     const x = cam.toScreenX(wx),
       y = cam.toScreenY(wy);
@@ -614,20 +660,24 @@ function drawLanterns(world: PhysicsWorld): void {
       const lit = lightings.find((g) => g.index === i);
       const flare = lit ? Math.max(0, 1 - (t - lit.time) / 0.6) : 0;
       const flicker = 0.86 + 0.08 * Math.sin(9 * t + 1.7 * i) + 0.06 * Math.sin(23 * t + i);
+      // The glow comes up over GLOW_RISE (./lanterns.ts glowOf): the level shows as lit once it is full.
+      const up = glowOf(run, i, t);
+      glowShown[i] = up;
       const halo = glowSprite(2 * i),
         wash = glowSprite(2 * i + 1);
       halo.visible = wash.visible = true;
       halo.position.set(x, y);
       wash.position.set(x, y);
       halo.width = halo.height = r * (6 + 4 * flare);
-      halo.alpha = Math.min(1, flicker + flare);
+      halo.alpha = Math.min(1, up * flicker + flare);
       wash.width = wash.height = r * 16;
-      wash.alpha = 0.22 * flicker + 0.3 * flare;
+      wash.alpha = up * 0.22 * flicker + 0.3 * flare;
       overlay.ellipse(x, y, 0.8 * r, r).fill({ color: 0xff8a2a });
       overlay.ellipse(x, y + 0.06 * r, 0.64 * r, 0.8 * r).fill({ color: 0xffc45a });
       overlay.ellipse(x, y + 0.12 * r, 0.38 * r, 0.5 * r).fill({ color: 0xfff2c8, alpha: 0.7 + 0.3 * flicker });
       overlay.ellipse(x, y, 0.4 * r, r).stroke({ width: 1, color: 0xd0601c, alpha: 0.35 });
     } else {
+      glowShown[i] = 0;
       overlay
         .ellipse(x, y, 0.8 * r, r)
         .fill({ color: 0x6a2a12, alpha: 0.9 })
@@ -648,7 +698,6 @@ function drawLanterns(world: PhysicsWorld): void {
     const f = age / 0.9;
     overlay.circle(cam.toScreenX(g.x), cam.toScreenY(g.y), r * (1.2 + 3 * f)).stroke({ width: 3, color: 0xffe08a, alpha: 1 - f });
   }
-  updateStatus();
 }
 
 const status = createStatusRow({ name: 'lanterns' });
@@ -682,21 +731,26 @@ function setLanternShow(on: boolean): void {
 function updateStatus(): void {
   const lv = LEVELS[run.level]!;
   const lit = run.lit.filter(Boolean).length;
-  const cleared = lanternShow && run.stars > 0;
+  // Shown as lit only once every glow is full (CLEAR_DELAY after the last lantern lit).
+  const cleared = lanternShow && clearShown(run, shell.world.time);
+  if (cleared && Number.isNaN(clearShownAt)) {
+    clearShownAt = shell.world.time;
+    sound.chime(1320, 0.6);
+  }
   const last = run.level === LEVELS.length - 1;
   const total = bestStars.reduce((a, b) => a + b, 0);
   let goal: string, numbers: string, hint: string;
   if (!lanternShow) {
     goal = 'Free play: launch fireworks anywhere';
     numbers = `${plural(show.launched, 'shell', 'shells')} launched`;
-    hint = `${touch ? 'Tap' : 'Click'} the sky · hold for a bigger burst`;
+    hint = `${touch ? 'Tap' : 'Click'} the sky · hold: bigger burst`;
   } else if (cleared) {
     goal = last ? `Show complete! ${starText(run.stars)}` : `All lanterns lit! ${starText(run.stars)}`;
     numbers = `${plural(run.shells, 'shell', 'shells')} (par ${lv.par}) · Stars ${total}/${3 * LEVELS.length}`;
-    hint = last ? 'Play again from level 1, or try for 3 stars' : 'Fewer shells, more stars';
+    hint = last ? 'Play again, or try for 3 stars' : 'Fewer shells, more stars';
   } else {
     goal = `Light every lantern! · ${lv.name}`;
-    numbers = `Level ${run.level + 1}/${LEVELS.length} · Lit ${lit}/${lv.lanterns.length} · Shells ${run.shells} · Par ${lv.par}`;
+    numbers = `Level ${run.level + 1}/${LEVELS.length} · Lit ${lit}/${run.lit.length} · Shells ${run.shells} · Par ${lv.par}`;
     hint = `${touch ? 'Tap' : 'Click'} ${lv.tip}`;
   }
   const mode = lanternShow ? 'Free play' : 'Lantern show';
@@ -734,8 +788,20 @@ shell.expose({
     shells: run.shells,
     stars: run.stars,
     best: bestStars.slice(),
-    positions: LEVELS[run.level]!.lanterns.map((l) => lanternAt(l, show.params.sky, shell.world.time - run.start)),
+    positions: lanternsOf(run.level, show.params.sky).map((l) => lanternAt(l, show.params.sky, shell.world.time - run.start)),
+    /** World time each lantern lit (NaN while unlit), the time the level was shown as lit (NaN until then), s, and each glow as drawn last. */
+    litAt: run.litAt.slice(),
+    clearShownAt,
+    glow: glowShown.slice(0, run.lit.length),
   }),
+  /** Starts level `i` (0-based) of the lantern show with a fresh sky. @throws RangeError on an unknown level. */
+  playLevel: (i: number): void => {
+    if (!(Number.isInteger(i) && i >= 0 && i < LEVELS.length))
+      throw new RangeError(`playLevel: level must be an integer in [0, ${LEVELS.length - 1}], got ${i}`);
+    level = i;
+    if (!lanternShow) setLanternShow(true);
+    else shell.reset();
+  },
   /** Switches to the lantern show (true) or free play (false), with a fresh sky. */
   setLanternShow: (on: boolean): void => setLanternShow(on),
   /** Goes to the next level once this one is lit (else restarts it), as the Next-level button. */

@@ -68,13 +68,20 @@ export interface FlightState {
   yawRate: number;
 }
 
+/**
+ * Full deflection of each control surface, degrees (the page's default; its panel can change it).
+ * 25: a held key banks the aircraft 30 degrees in 0.85 s and 55 in 2 s (with 15, 1.4 s and never
+ * within 3 s: players found it floaty).
+ */
+export const CONTROL_AUTHORITY = 25;
+
 /** The assist's settings. */
 export const ASSIST = Object.freeze({
   /**
-   * Bank at full sideways stick, rad (60 degrees: a 2 g level turn, 8.5 degrees/s at 115 m/s, the
-   * wing still well under its stall; the course is laid for 50 degrees, see ./course.ts DESIGN_BANK).
+   * Bank at full sideways stick, rad (70 degrees: a 2.9 g level turn, 12 degrees/s at 130 m/s, the
+   * wing still under its stall; the course is laid for 55 degrees, see ./course.ts DESIGN_BANK).
    */
-  maxBank: 60 * DEG,
+  maxBank: 70 * DEG,
   /** Flight-path angle the path hold asks for at full stick forward or back, rad (its share fades as the stick's grows). */
   maxClimb: 20 * DEG,
   /**
@@ -106,7 +113,7 @@ export const ASSIST = Object.freeze({
   /** Rudder per radian of sideslip (1/rad): turns the nose into the air. */
   sideslipGain: 3,
   /** Fastest change of the bank asked for, rad/s (a full stick's bank is reached smoothly). */
-  bankRate: 90 * DEG,
+  bankRate: 120 * DEG,
 });
 
 /** What the assist keeps between steps: the integral of the flight-path error and the bank asked for. */
@@ -219,8 +226,8 @@ export function approach(value: number, target: number, rate: number, dt: number
 
 /** How the keyboard's climb / dive and bank keys move their input (`rampKey`). */
 export const KEY_RAMP = Object.freeze({
-  /** Rate a held key moves its input towards full, 1/s: full stick after 1.25 s of holding. */
-  rise: 0.8,
+  /** Rate a held key moves its input towards full, 1/s: full stick after 0.4 s of holding (1.25 s felt sluggish). */
+  rise: 2.5,
   /** Rate a released key's input returns to 0, and a reversed one crosses 0, 1/s: neutral in 0.2 s. */
   fall: 5,
 });
@@ -230,7 +237,7 @@ export const KEY_RAMP = Object.freeze({
  * towards `direction` (-1, 0 or 1: the key held, or none) at `KEY_RAMP.rise` per second, back
  * towards 0 at `KEY_RAMP.fall` (released, or held the other way while still on the first side).
  * A key is not a stick: it is all or nothing, so a tap ramped this way asks for a small correction
- * (a 0.2 s tap: 0.16 of full stick) and only a held key asks for the full climb or bank.
+ * (a 0.1 s tap: 0.25 of full stick) and only a held key asks for the full climb or bank.
  * @returns the new input, in [-1, 1].
  * @throws RangeError on a value outside [-1, 1], a direction not in {-1, 0, 1} or a negative dt.
  */

@@ -10,8 +10,8 @@
 import { Rng } from '@bitphysics/physics';
 import { terrainHeight } from '@bitphysics/projects';
 
-/** Radius of a ring, m, to the middle of its tube: the aircraft passes when its centre crosses inside. */
-export const RING_RADIUS = 45;
+/** Radius of a ring, m, to the middle of its tube: the aircraft passes when its centre crosses inside (45 m was a tight fit for players new to flying). */
+export const RING_RADIUS = 55;
 
 /** A crossing of a ring's plane farther than this from its centre, m, is not counted (the pilot is elsewhere). */
 export const MISS_RANGE = 600;
@@ -45,6 +45,13 @@ export interface CourseOptions {
   start: readonly [number, number, number];
 }
 
+/**
+ * How far apart the rings are laid, m (`layCourse`): `near` plus up to `spread` at random, plus `far`
+ * times the ring's difficulty. 600 to 850 m at first (4.5 to 6.5 s at 130 m/s), 950 to 1,200 m at
+ * full difficulty; they were 800 to 1,800 m (6 to 14 s), and the course felt slow.
+ */
+export const RING_STEP = Object.freeze({ near: 600, spread: 250, far: 350 });
+
 /** Distance of the first ring straight ahead of the start, m: about 4.5 s at the trim speed. */
 export const FIRST_RING_DISTANCE = 520;
 
@@ -63,10 +70,10 @@ export function ringDifficulty(i: number): number {
  */
 export const DESIGN_SPEED = 130;
 /** Bank of the turn the course is laid for, rad (50 degrees; the assist gives 60 at full stick: ./assist.ts). */
-export const DESIGN_BANK = (50 * Math.PI) / 180;
+export const DESIGN_BANK = (55 * Math.PI) / 180;
 /** Time flown straight on past a ring before the turn to the next one starts, s. */
 export const REACTION_TIME = 2;
-/** Radius of the design turn, m: V^2 / (g tan(bank)), about 1,450 m (a turn rate of 5.2 degrees/s). */
+/** Radius of the design turn, m: V^2 / (g tan(bank)), about 1,210 m (a turn rate of 6.2 degrees/s). */
 export const DESIGN_TURN_RADIUS = DESIGN_SPEED ** 2 / (9.81 * Math.tan(DESIGN_BANK));
 
 /**
@@ -111,8 +118,8 @@ export function reachable(step: number, turn: number): boolean {
 /**
  * Lays out `count` rings from `start`: the first FIRST_RING_DISTANCE straight ahead at the start
  * height (on the path the aircraft flies with no input), then each ring a step after the one before
- * that grows with its difficulty d = ringDifficulty(i): 800 to 1,100 m apart at d = 0 up to 1,500
- * to 1,800 m at d = 1, turning by up to 8 + 27 d degrees from the way through the ring before
+ * that grows with its difficulty d = ringDifficulty(i) (RING_STEP: 600 to 850 m apart at d = 0, 950
+ * to 1,200 m at d = 1), turning by up to 8 + 27 d degrees from the way through the ring before
  * (within 100 degrees of +x), less where the design turn (`designArrival`: DESIGN_BANK at
  * DESIGN_SPEED after REACTION_TIME) would not reach it, and changing height by up to 60 + 190 m d,
  * kept between 400 and 1,300 m and at least RING_CLEARANCE above the ground. The next ring's turn is
@@ -132,7 +139,7 @@ export function layCourse(options: CourseOptions): Ring[] {
   let heading = 0;
   for (let i = 0; i < count; i++) {
     const d = ringDifficulty(i);
-    const step = i === 0 ? FIRST_RING_DISTANCE : 800 + 700 * d + rng.range(0, 300);
+    const step = i === 0 ? FIRST_RING_DISTANCE : RING_STEP.near + RING_STEP.far * d + rng.range(0, RING_STEP.spread);
     // The turn asked for, kept within 100 degrees of +x so that the course leads on and never folds
     // back, then eased until the design turn reaches the ring.
     let turn = 0;

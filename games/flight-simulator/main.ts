@@ -9,11 +9,14 @@
  * the surfaces directly.
  * Fly through every ring (./course.ts) as fast as you can; each ring missed adds MISS_PENALTY (10) s
  * to the course clock, said in the banner the moment it is missed; do not hit the ground.
- * Guidance: thick bright rings, a chain of beads through the next two, a label (or an edge arrow) for
- * the next one, and a flight-path marker where the aircraft's straight path meets the next ring's
- * plane (green when it is inside the ring).
+ * Guidance: thick bright rings, a chain of beads through the next two, a label above the next one
+ * (clear of the ring and of the marker; an edge arrow when it is out of view), and a flight-path
+ * marker where the aircraft's straight path meets the next ring's plane (green when it is inside the
+ * ring). The cockpit view (C) has a canopy frame and an instrument panel (./cockpit.ts: airspeed,
+ * altimeter, heading, vertical speed, throttle) with the attitude indicator in its middle. The chase
+ * camera sits close behind and widens its view with speed, so the speed shows.
  * Keys: arrows or W/S/A/D: climb / dive and bank (with "pilot's pitch" in the panel, down pulls up),
- * ramped (./assist.ts rampKey: a tap is a small correction, full stick after 1.25 s held);
+ * ramped (./assist.ts rampKey: a tap is a small correction, full stick after 0.4 s held);
  * Q / E: rudder; X / Z (or Shift, + / -): faster / slower (the throttle: the only input that moves it;
  * no Ctrl, which with W closes the browser's tab);
  * C: camera (chase / cockpit); P pause, N step, R reset.
@@ -52,8 +55,9 @@ import {
   Vector3,
 } from 'three';
 import { aircraftGeometry } from './aircraft-model';
-import { approach, assist, createAssistState, type FlightState, flightState, rampKey, SURFACE_RATE } from './assist';
+import { approach, assist, CONTROL_AUTHORITY, createAssistState, type FlightState, flightState, rampKey, SURFACE_RATE } from './assist';
 import { createAttitudeIndicator } from './attitude-indicator';
+import { createCockpit } from './cockpit';
 import { courseStars, courseTime, flyRings, layCourse, MISS_PENALTY, nextRing, pathThroughRing, RING_RADIUS, type Ring } from './course';
 import { createScenery, HORIZON_COLOUR, SUN_DIRECTION } from './scenery';
 
@@ -65,7 +69,7 @@ const params = {
   /** Pilot's pitch: stick back (down arrow, stick down) pulls the nose up, as in an aircraft. */
   pilotPitch: flagParam('pilotPitch'),
   /** Full deflection of each control, degrees. */
-  authority: 15,
+  authority: CONTROL_AUTHORITY,
   reset: () => shell.reset(),
 };
 
@@ -311,7 +315,7 @@ const game = await startThreeGame({
       },
     },
   ],
-  app: { background: HORIZON_COLOUR, shadows: false, controls: false, fov: 60 },
+  app: { background: HORIZON_COLOUR, shadows: false, controls: false, fov: 64 },
   renderer: {
     unitsPerMeter: 1,
     boundary: 'none',
@@ -505,7 +509,7 @@ if (!compact) layout.side.append(panelEl);
 function overlay(css: string): HTMLDivElement {
   const el = document.createElement('div');
   el.dataset.sceneOverlay = '';
-  el.style.cssText = `position: absolute; z-index: 4; pointer-events: none; transform: translate(-50%, -50%); ${css}`;
+  el.style.cssText = `position: absolute; z-index: 6; pointer-events: none; transform: translate(-50%, -50%); ${css}`;
   layout.stage.append(el);
   return el;
 }
@@ -611,9 +615,27 @@ function updateBanner(t: number): void {
 
 // ---- The attitude indicator (cockpit view), drawn at the top of the scene -------------------------
 
-const horizon = createAttitudeIndicator(layout.stage, compact ? 120 : 150);
+const attitudeSize = compact ? 120 : 150;
+const horizon = createAttitudeIndicator(layout.stage, attitudeSize);
 /** What the indicator showed last: pitch and roll, degrees (tests read them). */
 const shownAttitude = { pitch: 0, roll: 0, visible: false };
+/** The cockpit view's canopy frame and instrument panel; the attitude indicator sits in the panel's middle. */
+const cockpit = createCockpit(layout.stage, attitudeSize);
+
+/** Shows the cockpit view's frame and panel (or hides them) and draws the gauges for `i`. */
+function drawCockpit(on: boolean, i: ReturnType<typeof instruments>): void {
+  cockpit.show(on);
+  horizon.show(on);
+  shownAttitude.visible = on;
+  if (!on) return;
+  cockpit.draw({ speed: i.speed, altitude: i.altitude, heading: i.heading, climb: i.climb, throttle: state.throttle });
+  const slot = cockpit.attitudeSlot();
+  horizon.canvas.style.left = `${slot.x}px`;
+  horizon.canvas.style.top = `${slot.y - slot.size / 2}px`;
+  shownAttitude.pitch = i.pitch;
+  shownAttitude.roll = i.roll;
+  horizon.draw(i.pitch, i.roll);
+}
 
 // ---- Guidance: where the next ring is -----------------------------------------------------------
 
@@ -626,7 +648,9 @@ const ringPointer = overlay(
   'padding: 2px 8px; border-radius: 10px; background: rgba(10, 14, 22, 0.85); color: #ffcf5a; font: 700 14px system-ui, sans-serif; white-space: nowrap;',
 );
 ringPointer.dataset.hud = 'ring-pointer';
-const ringAt = new Vector3();
+const ringAt = new Vector3(),
+  rimAt = new Vector3(),
+  camUp = new Vector3();
 /** What the pointer shows (tests): the ring's index (-1: none left), whether it is in view, the text, its box in the stage (px). */
 const ringAim = { index: -1, inView: false, text: '', box: [0, 0, 0, 0] };
 function pointToNextRing(): void {
@@ -643,11 +667,20 @@ function pointToNextRing(): void {
   const ahead = ringAt.z < 1;
   let x = ((ringAt.x + 1) / 2) * w,
     y = ((1 - ringAt.y) / 2) * h;
-  ringAim.inView = ahead && x > 0 && x < w && y > 0 && y < h;
+  // In the cockpit view the panel covers the stage's bottom: the label stays above it.
+  const bottom = state.camera === 'cockpit' ? cockpit.panelTop() || h : h;
+  ringAim.inView = ahead && x > 0 && x < w && y > 0 && y < bottom;
   const distance = d >= 1000 ? `${(d / 1000).toFixed(1)} km` : `${d.toFixed(0)} m`;
   if (ringAim.inView) {
     ringAim.text = `ring ${i + 1} · ${distance}`;
-    y += 30;
+    // Above the ring, clear of it (its radius on screen, from a point on its rim at the camera's up)
+    // and so of the flight-path marker inside it (the label sat 30 px under the centre, under the
+    // marker's crosshair); below the ring when there is no room above.
+    rimAt.set(ring.x, ring.y, ring.z).addScaledVector(camUp.set(0, 1, 0).applyQuaternion(app.camera.quaternion), RING_RADIUS + 6);
+    rimAt.project(app.camera);
+    const rPx = Math.hypot(((rimAt.x - ringAt.x) / 2) * w, ((rimAt.y - ringAt.y) / 2) * h);
+    const half = ringPointer.offsetHeight / 2 + 6;
+    y = y - rPx - half >= half ? y - rPx - half : y + rPx + half;
   } else {
     // Behind the camera the projection is mirrored: point the other way.
     let dx = x - w / 2,
@@ -663,11 +696,11 @@ function pointToNextRing(): void {
     ringAim.text = dx > 0 && arrow === '▶' ? `ring ${i + 1} · ${distance} ${arrow}` : `${arrow} ring ${i + 1} · ${distance}`;
   }
   if (ringPointer.textContent !== ringAim.text) ringPointer.textContent = ringAim.text;
-  // Kept inside the scene: the label's half width (and height) from each edge.
+  // Kept inside the scene (above the cockpit's panel): the label's half width (and height) from each edge.
   const hw = ringPointer.offsetWidth / 2 + 4,
     hh = ringPointer.offsetHeight / 2 + 4;
   x = Math.max(hw, Math.min(w - hw, x));
-  y = Math.max(hh, Math.min(h - hh, y));
+  y = Math.max(hh, Math.min(bottom - hh, y));
   ringPointer.style.left = `${x}px`;
   ringPointer.style.top = `${y}px`;
   ringAim.box = [x - hw + 4, y - hh + 4, 2 * hw - 8, 2 * hh - 8];
@@ -726,6 +759,21 @@ let lastFrame = 0;
 let chaseDistance = 0;
 /** Time constant of the chase camera's swing round behind the aircraft, s. */
 const CHASE_LAG = 0.25;
+/** Where the chase camera sits in the aircraft's frame, m: behind, above (it was 42 m behind, 10 up: the ground crawled). */
+const CHASE_OFFSET = [-30, 9] as const;
+/** How far ahead of the aircraft the chase camera looks, m: far enough that the aircraft sits below the rings ahead. */
+const CHASE_LOOK = 60;
+/**
+ * The chase camera's offset now, m (behind, above): CHASE_OFFSET, moved back in proportion on a
+ * screen narrower than 0.85 (a phone held upright, whose narrow view the wings overfilled).
+ */
+function chaseOffsetNow(): [number, number] {
+  const aspect = app.canvas.clientWidth / Math.max(1, app.canvas.clientHeight);
+  const k = Math.max(1, 0.85 / Math.max(0.3, aspect));
+  return [k * CHASE_OFFSET[0], k * CHASE_OFFSET[1]];
+}
+/** The camera's field of view, degrees: `base`, widened by up to `fast` more between `from` and `to` m/s (speed shows). */
+const FOV = Object.freeze({ base: 64, fast: 10, from: 110, to: 170 });
 let readoutFrame = 0;
 
 function frame(): void {
@@ -748,7 +796,8 @@ function frame(): void {
     // place in the world) swings round smoothly and keeps its length, so in a turn the camera stays
     // at the same distance behind instead of trailing off (a lerp of the world position lags by
     // speed x frame time, more the slower the frames come).
-    chaseOffset.set(-42, 10, 0).applyQuaternion(drawnQ);
+    const [back, up] = chaseOffsetNow();
+    chaseOffset.set(back, up, 0).applyQuaternion(drawnQ);
     const t = performance.now();
     const dt = Math.min(0.2, Math.max(0, (t - lastFrame) / 1000));
     lastFrame = t;
@@ -760,7 +809,7 @@ function frame(): void {
     app.camera.position.copy(at).add(smoothOffset);
     chaseDistance = smoothOffset.length();
     app.camera.up.set(0, 1, 0);
-    look.set(30, 0, 0).applyQuaternion(drawnQ).add(at);
+    look.set(CHASE_LOOK, 0, 0).applyQuaternion(drawnQ).add(at);
     app.camera.lookAt(look);
   } else {
     chaseDistance = 0;
@@ -774,17 +823,16 @@ function frame(): void {
   scenery.update(app.camera.position, at);
   paintRings(world.time);
   drawGuide(at);
-  pointToNextRing();
   markPath();
+  pointToNextRing();
   engine.set(state.phase === 'crashed' ? 0 : 0.25 + 0.75 * state.throttle);
-  const cockpit = state.camera === 'cockpit';
-  horizon.show(cockpit);
-  shownAttitude.visible = cockpit;
   const i = instruments(world);
-  if (cockpit) {
-    shownAttitude.pitch = i.pitch;
-    shownAttitude.roll = i.roll;
-    horizon.draw(i.pitch, i.roll);
+  drawCockpit(state.camera === 'cockpit' && state.phase !== 'crashed', i);
+  // Wider with speed, eased towards it.
+  const fov = FOV.base + FOV.fast * Math.max(0, Math.min(1, (i.speed - FOV.from) / (FOV.to - FOV.from)));
+  if (Math.abs(app.camera.fov - fov) > 0.05) {
+    app.camera.fov += 0.1 * (fov - app.camera.fov);
+    app.camera.updateProjectionMatrix();
   }
   drawCrash();
   updateBanner(world.time);
@@ -857,8 +905,20 @@ shell.expose({
   pathMarker: () => ({ ...pathAim }),
   /** Trees, houses and cloud puffs drawn now, the cloud layers' lowest and highest base (m). */
   scenery: () => scenery.counts(),
-  /** The chase camera's distance from the drawn aircraft now, m (0 in the cockpit view or after a crash). */
+  /** The chase camera's distance from the drawn aircraft now, m (0 in the cockpit view or after a crash), and its offset now behind (-) and above, m. */
   chaseDistance: () => chaseDistance,
+  chaseOffset: (): [number, number] => chaseOffsetNow(),
+  /** The cockpit view's panel: shown, its top (CSS px in the stage), the gauges drawn last, the attitude indicator's box (px). */
+  cockpit: () => {
+    const box = horizon.canvas.getBoundingClientRect(),
+      stage = layout.stage.getBoundingClientRect();
+    return {
+      visible: cockpit.canvas.style.display !== 'none',
+      panelTop: cockpit.panelTop(),
+      gauges: cockpit.gauges(),
+      attitude: [box.left - stage.left, box.top - stage.top, box.width, box.height],
+    };
+  },
   /** The keyboard's ramped inputs now, each in [-1, 1] (./assist.ts rampKey). */
   keyInput: () => ({ ...keyInput }),
   /** The attitude indicator: shown (cockpit view) and the pitch and roll it drew last, degrees. */

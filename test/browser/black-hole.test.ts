@@ -1,9 +1,10 @@
 /**
- * Black hole in headless Chromium, level 1: the score says what it counts; the level's title shows
- * until the first thrust; holding ↑ flies into the hole across the path, which plays the swallow
- * effect and says so; the next thrust clears that message; flying at a side edge warns before the
- * ship leaves the field. Between levels the field is empty and the next-level button, over the
- * field, leaves the start pad, the ship and the thrust buttons clear (desktop and phone).
+ * Black hole in headless Chromium, level 1: the opening line says what reaching the line is worth;
+ * the level's title shows until the first thrust; holding ↑ flies into the hole across the path,
+ * which plays the swallow effect and says so; the next thrust clears that message; flying at a side
+ * edge warns before the ship leaves the field. A clear shows its points rising from the line; between
+ * levels the field is empty and the next-level button, over the field, leaves the start pad, the ship
+ * and the thrust buttons clear; level 2's wall is drawn inside the field (desktop and phone).
  */
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
@@ -27,9 +28,14 @@ afterAll(async () => {
 
 describe('black hole', () => {
   it('labels the score; a fall spirals the ship in; the next thrust clears the message; the edge warns', async () => {
-    expect(await g.page.locator('[data-hud="numbers"]').textContent()).toContain('Score 0 (holes passed)');
-    // The level's title shows over the field until the first thrust.
-    expect(await g.page.evaluate(() => (window.game as unknown as BlackHolePage).levelBanner())).toBe('Level 1\n1 hole');
+    expect(await g.page.locator('[data-hud="numbers"]').textContent()).toContain('Score 0');
+    expect(await g.page.locator('[data-hud="message"]').textContent()).toBe(
+      'Level 1: reach the green line for 30 points (10 a hole), more if fast.',
+    );
+    // The level's title shows over the field until the first thrust, with what the line is worth.
+    expect(await g.page.evaluate(() => (window.game as unknown as BlackHolePage).levelBanner())).toBe(
+      'Level 1\nweave between the holes\n30 points at the line',
+    );
     await g.page.keyboard.down('ArrowUp');
     await g.waitFor(() => (window.game as unknown as BlackHolePage).levelBanner() === '', null);
     await g.waitFor(() => (window.game as unknown as BlackHolePage).swallowing(), null);
@@ -51,8 +57,9 @@ describe('black hole, between levels', () => {
       reset(): void;
       step(): void;
       ship(): number[];
+      scorePop(): string;
       bh: { ship: number; lineY: number; holes: number[]; world: { components: { Position: { y: Float64Array } } } };
-      level: { waiting: boolean; spec: { level: number; holes: number } };
+      level: { waiting: boolean; spec: { level: number; holes: number }; summary: { points: number } | null };
     };
     // The ship put just over the green line: the next step clears level 1.
     const cleared = await g.page.evaluate(() => {
@@ -70,6 +77,9 @@ describe('black hole, between levels', () => {
     expect(cleared.during).toMatchObject({ waiting: true, next: 2, holes: 0 });
     expect(cleared.during.y).toBeLessThan(cleared.line);
     expect(cleared.later).toBe(0);
+    // The points the clear made rise from the line (they were only in the status row's numbers).
+    const pop = await g.waitFor(() => (window.game as unknown as Bh).scorePop(), null);
+    expect(pop).toBe(`+${await g.page.evaluate(() => (window.game as unknown as Bh).level.summary!.points)}`);
     await g.page.evaluate(() => {
       (window.game as unknown as Bh).paused = false;
     });
@@ -154,6 +164,24 @@ describe.each([
     for (const [name, o] of boxes) {
       const overlap = b.x < o.x + o.width && o.x < b.x + b.width && b.y < o.y + o.height && o.y < b.y + b.height;
       expect(overlap, `${device}: the Level 2 button over the ${name}`).toBe(false);
+    }
+    // Level 2's wall reaches from edge to edge, and every hole, its disc and its glow stay inside the
+    // field (on a phone a hole of the wall stood half past the edge and discs were cut off by it).
+    await next.click();
+    const wall = await p.waitFor(() => {
+      const w = window.game as unknown as {
+        level: { waiting: boolean };
+        bh: { holes: number[]; field: { width: number; height: number } };
+      };
+      const e = (window.game as unknown as { holeExtents(): number[][] }).holeExtents();
+      return !w.level.waiting && e.length === w.bh.holes.length && e.length > 0 ? { e, field: w.bh.field } : null;
+    }, null);
+    expect(wall.e.length).toBeGreaterThan(5);
+    for (const [left, right, bottom, top] of wall.e) {
+      expect(left, `${device}: a hole's left`).toBeGreaterThanOrEqual(0);
+      expect(right, `${device}: a hole's right`).toBeLessThanOrEqual(wall.field.width);
+      expect(bottom).toBeGreaterThanOrEqual(0);
+      expect(top).toBeLessThanOrEqual(wall.field.height);
     }
     expect(p.errors).toEqual([]);
     await p.close();

@@ -1,7 +1,9 @@
 /**
  * Bouncing balls in headless Chromium: the hoop game (the goal shown above the box at once, a throw through
- * the hoop scores and is kept as the best, time up offers Play again over the top of the box; a pull on a
- * phone shows the aiming arc, throws and starts the clock), and the sandbox: a click and a slingshot pull
+ * the hoop scores and is kept as the best, a ball thrown up from under the hoop stops at its net, the
+ * aiming arc bounces off a wall, time up offers Play again over the top of the box; a pull on a phone
+ * shows the aiming arc, throws and starts the clock), the court's looks (no trails, no plain physics
+ * walls), and the sandbox: a click and a slingshot pull
  * on empty space spawn balls, a press on a ball drags it, P pauses (nothing moves while
  * paused, motion resumes after), N advances exactly one step, R rebuilds the same seeded scene.
  * The tests share one page with a small ball count (?count=8); before each, the game is reset
@@ -73,6 +75,21 @@ describe('bouncing balls', () => {
     for (const key of ['P', 'N', 'R', 'Click', 'Drag']) expect(legend).toContain(key);
     await g.waitFor(() => /\d+ fps/.test(document.querySelector('[data-hud="fps"]')?.textContent ?? ''), null);
     expect(await g.page.locator('[data-hud="bodies"]').textContent()).toBe(`${COUNT} bodies`);
+    // A game's looks, not a physics plot's: no trails unless asked for, and the court (frame, floor,
+    // wooden ramps) drawn instead of the renderer's thin walls with their end dots.
+    const looks = await g.page.evaluate(() => {
+      const game = window.game as unknown as {
+        params: { trails: boolean };
+        app: { stage: { children: { label: string }[] } };
+        renderer: { root: { children: { label: string; visible: boolean }[] } };
+      };
+      return {
+        trails: game.params.trails,
+        court: game.app.stage.children.some((c) => c.label === 'court'),
+        plainWalls: game.renderer.root.children.find((c) => c.label === 'walls')?.visible,
+      };
+    });
+    expect(looks).toEqual({ trails: false, court: true, plainWalls: false });
     expect(g.errors).toEqual([]);
   });
 
@@ -407,6 +424,41 @@ describe('bouncing balls: the hoop game', () => {
     expect(after.best).toBe(1);
     expect(after.stored).toBe('1');
     expect(after.text).toMatch(/Baskets 1 .*Best 1/);
+    // Thrown straight up from under the hoop: the net stops it (its top at the net's bottom, 1.1 m under
+    // the rim) and it falls back; before, it flew up through the drawn net and the rim's opening.
+    const under = await g.page.evaluate(() => {
+      const game = window.game as unknown as HoopGame & {
+        paused: boolean;
+        step(): void;
+        world: { components: { Position: { y: Float64Array } } };
+      };
+      game.paused = true;
+      // 1.75 m under the rim: clear of the ramp under this spot, the ball's top 0.45 m under the net.
+      const o = game.hoop();
+      const id = game.shoot(0.5 * (o.minX + o.maxX), o.y - 1.75, 0, 6);
+      let top = -Infinity;
+      for (let k = 0; k < 40; k++) {
+        game.step();
+        top = Math.max(top, game.world.components.Position.y[id % 2 ** 25]! + 0.4);
+      }
+      (game as unknown as { remove(id: number): void }).remove(id);
+      game.paused = false;
+      return { top, rim: o.y };
+    });
+    expect(under.top).toBeLessThanOrEqual(under.rim - 1.1 + 1e-6);
+    expect(under.top).toBeGreaterThan(under.rim - 1.1 - 0.05);
+    // The aiming arc bounces: pressed low in the box's right half and pulled left and down, the throw
+    // goes right into the wall and the arc comes back off it (it used to end at the wall).
+    const press = await g.worldToPage(12, 3),
+      pull = await g.worldToPage(10.5, 2.5);
+    await g.page.mouse.move(press.x, press.y);
+    await g.page.mouse.down();
+    await g.page.mouse.move(pull.x, pull.y, { steps: 4 });
+    const bank = await g.page.evaluate(() => (window.game as unknown as HoopGame).aimPath());
+    await g.page.mouse.up();
+    const xs = bank.filter((_, i) => i % 2 === 0);
+    expect(Math.max(...xs)).toBeGreaterThan(15.5);
+    expect(xs.at(-1)!).toBeLessThan(Math.max(...xs) - 1);
     // A ball dropped from above the rim's line does not count.
     const shots = await g.page.evaluate(() => {
       const game = window.game as unknown as HoopGame;

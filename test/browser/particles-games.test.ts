@@ -1,7 +1,9 @@
 /**
  * The particle games in headless Chromium: fireworks' lantern show (the goal shows above the sky at once;
- * a click at desktop size and a tap on a phone light a lantern and count a shell; a lit level offers the
- * next; the row's button switches to free play with the auto-show); fireworks and black hole load without
+ * a click at desktop size and a tap on a phone light a lantern and count a shell; a lit level shows as
+ * lit only once the glows are full, then offers the next; the row's button switches to free play with
+ * the auto-show; on a phone the lanterns spread over the sky's height, each status line is one line and
+ * the gesture card offers a hold only where it does something); fireworks and black hole load without
  * errors and draw;
  * a click in fireworks launches a shell that bursts where clicked 2 s later and whose sparks appear
  * and later all expire (particle count rises then falls), a longer hold makes a bigger burst, A
@@ -215,9 +217,22 @@ describe('fireworks', () => {
 
 /** What the lantern show puts on window.game (games/fireworks/main.ts). */
 interface LanternGame {
-  lanterns(): { on: boolean; level: number; lit: boolean[]; shells: number; stars: number; best: number[]; positions: [number, number][] };
+  lanterns(): {
+    on: boolean;
+    level: number;
+    lit: boolean[];
+    shells: number;
+    stars: number;
+    best: number[];
+    positions: [number, number][];
+    litAt: number[];
+    clearShownAt: number;
+    glow: number[];
+  };
   nextLevel(): void;
+  playLevel(i: number): void;
   params: { autoShow: boolean };
+  show: { params: { sky: { width: number; height: number } } };
 }
 
 /** Page position (CSS px) of lantern `i` of the level being played, through the camera. */
@@ -254,7 +269,20 @@ describe('fireworks: the lantern show', () => {
     expect(state).toMatchObject({ lit: [true, true, true], shells: 3, stars: 3 });
     expect(state.best[0]).toBe(3);
     expect(await g.page.evaluate(() => localStorage.getItem('bitphysics.fireworks.stars'))).toBe('[3,0,0,0,0]');
+    // The 1.2 s (world time) to the lit banner stepped at once: at software WebGL's few frames a
+    // second and 4 steps a frame it took several seconds.
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as { paused: boolean; step(): void };
+      w.paused = true;
+      for (let k = 0; k < 80; k++) w.step();
+      w.paused = false;
+    });
     await g.waitFor(() => /All lanterns lit! ★★★/.test(document.querySelector('[data-hud="lanterns"]')?.textContent ?? ''), null);
+    // Shown as lit 1.2 s (world time) after the last lantern lit, with every glow full by then; before,
+    // the banner came up the moment it lit, its glow still hidden by the burst.
+    const shown = await g.page.evaluate(() => (window.game as unknown as LanternGame).lanterns());
+    expect(shown.clearShownAt - Math.max(...shown.litAt)).toBeGreaterThanOrEqual(1.2 - 1e-6);
+    expect(shown.glow).toEqual([1, 1, 1]);
     await g.page.getByRole('button', { name: 'Next level ▶' }).click();
     await g.waitFor(() => (window.game as unknown as LanternGame).lanterns().level === 1, null);
     // The row is written with the next frame.
@@ -265,7 +293,7 @@ describe('fireworks: the lantern show', () => {
     await g.page.getByRole('button', { name: 'Free play' }).click();
     await g.waitFor(() => !(window.game as unknown as LanternGame).lanterns().on, null);
     expect(await g.page.evaluate(() => (window.game as unknown as LanternGame).params.autoShow)).toBe(true);
-    expect(await status.textContent()).toMatch(/Free play/);
+    await g.waitFor(() => document.querySelector('[data-hud="lanterns"] [data-hud="goal"]')?.textContent?.startsWith('Free play'), null);
     expect(g.errors).toEqual([]);
     await g.close();
   });
@@ -281,6 +309,17 @@ describe('fireworks: the lantern show', () => {
     const row = (await status.boundingBox())!;
     const canvas = await g.canvasBox();
     expect(row.y + row.height).toBeLessThanOrEqual(canvas.y + 1);
+    // Level 1 gives quick shells only: the gesture card does not offer a hold (it did on every level).
+    const card = g.page.locator('[data-hud="touch-hint"]');
+    expect(await card.textContent()).toContain('launch a shell');
+    expect(await card.textContent()).not.toContain('hold');
+    // The lanterns spread over the tall sky's height (0.6 W and more), not a band across its middle.
+    const spread = await g.page.evaluate(() => {
+      const game = window.game as unknown as LanternGame;
+      const ys = game.lanterns().positions.map((p) => p[1]);
+      return (Math.max(...ys) - Math.min(...ys)) / game.show.params.sky.width;
+    });
+    expect(spread).toBeGreaterThanOrEqual(0.6);
     expect(await litCount(g.page)).toBe(0);
     const p = await lanternOnPage(g, 1);
     await g.page.touchscreen.tap(p.x, p.y);
@@ -288,6 +327,34 @@ describe('fireworks: the lantern show', () => {
     expect(await litCount(g.page)).toBe(1);
     expect(await g.page.evaluate(() => (window.game as unknown as LanternGame).lanterns().shells)).toBe(1);
     await g.waitFor(() => /Lit 1\/3 · Shells 1/.test(document.querySelector('[data-hud="lanterns"]')?.textContent ?? ''), null);
+    // Every level's status lines are one line each on the phone (the hint with its button beside it;
+    // level 2's tip wrapped to two), and the card offers a hold on the levels where it does something.
+    for (let level = 0; level < 5; level++) {
+      await g.page.evaluate((i) => (window.game as unknown as LanternGame).playLevel(i), level);
+      const lines = await g.waitFor((i) => {
+        const row = document.querySelector('[data-hud="lanterns"]')!;
+        if (!row.textContent!.includes(`Level ${i + 1}/5`)) return null;
+        const rows = (el: Element) => {
+          const range = document.createRange();
+          range.selectNodeContents(el);
+          return new Set(Array.from(range.getClientRects(), (r) => Math.round(r.top))).size;
+        };
+        const hint = row.querySelector('[data-hud="hint"]')!;
+        const text = hint.firstElementChild!.getBoundingClientRect(),
+          button = hint.querySelector('button')!.getBoundingClientRect();
+        return {
+          goal: rows(row.querySelector('[data-hud="goal"]')!),
+          numbers: rows(row.querySelector('[data-hud="numbers"]')!),
+          hint: rows(hint.firstElementChild!),
+          buttonBeside: button.top < text.bottom && button.bottom > text.top,
+          card: document.querySelector('[data-hud="touch-hint"]')?.textContent ?? '',
+        };
+      }, level);
+      expect(lines, `level ${level + 1}`).toMatchObject({ goal: 1, numbers: 1, hint: 1, buttonBeside: true });
+      // The card comes up again where the gesture changes from the level before (2, 3 and 4).
+      if ([1, 2, 3].includes(level)) expect(lines.card, `level ${level + 1}`).not.toBe('');
+      if (lines.card) expect(lines.card.includes('hold'), `level ${level + 1}: ${lines.card}`).toBe([1, 3, 4].includes(level));
+    }
     expect(g.errors).toEqual([]);
     await g.close();
   });
@@ -306,7 +373,7 @@ describe('black hole', () => {
 
   it('loads with the holes, the ship, lives and score on screen and no errors', async () => {
     expect(await page.canvasColors()).toBeGreaterThan(16);
-    expect(await page.page.locator('[data-hud="numbers"]').textContent()).toMatch(/Lives ♥♥♥\s+Score 0 \(holes passed\)\s+Holes 2/);
+    expect(await page.page.locator('[data-hud="numbers"]').textContent()).toMatch(/Lives ♥♥♥\s+Score 0 \(1 a hole\)\s+Holes 2/);
     const s = await page.stats();
     expect(s.entities).toBe(3); // the ship (with its exhaust emitter) and two holes
     await page.waitFor(() => (window.game as unknown as BlackHoleGameHandle).pathPoints() > 1, null);
@@ -362,15 +429,15 @@ describe('black hole', () => {
     expect(g.errors).toEqual([]);
   });
 
-  it('without ?holes it plays levels: level 1 with one hole, its number, lives and best score on screen', async () => {
+  it('without ?holes it plays levels: level 1 with its three holes, its number, lives and best score on screen', async () => {
     const g = await h.openGame('black-hole');
     const level = await g.page.evaluate(() => {
       const game = window.game as unknown as { level: { spec: { level: number; holes: number } } | null; bh: { holes: number[] } };
       return { spec: game.level?.spec, holes: game.bh.holes.length };
     });
-    expect(level).toEqual({ spec: expect.objectContaining({ level: 1, holes: 1 }), holes: 1 });
+    expect(level).toEqual({ spec: expect.objectContaining({ level: 1, holes: 3 }), holes: 3 });
     // The panel offers the level to start at, not a hole count (a level lays out its own holes; the
-    // panel's count of 3 disagreed with level 1's one hole).
+    // panel's count disagreed with the level's).
     const controls = await g.page.evaluate(() => {
       type Ctl = { property: string; $input?: HTMLInputElement };
       const gui = (window.game as unknown as { panel: { gui: { controllersRecursive(): Ctl[] } } }).panel.gui;
@@ -378,7 +445,7 @@ describe('black hole', () => {
     });
     expect(controls.level).toBe('1');
     expect('holes' in controls).toBe(false);
-    expect(await g.page.locator('[data-hud="numbers"]').textContent()).toMatch(/Level 1\s+Lives ♥♥♥\s+Score 0 \(holes passed\)\s+Best \d+/);
+    expect(await g.page.locator('[data-hud="numbers"]').textContent()).toMatch(/Level 1\s+Lives ♥♥♥\s+Score 0\s+Best \d+/);
     // The hole is drawn (its horizon is black with a glow: many colours in the canvas).
     expect(await g.canvasColors()).toBeGreaterThan(16);
     expect(g.errors).toEqual([]);

@@ -205,7 +205,7 @@ describe('phone controls', () => {
     await g.close();
   });
 
-  it('flight simulator: the stick banks and climbs and leaves the throttle alone; Faster opens it', async () => {
+  it('flight simulator: the stick banks and climbs and leaves the throttle alone; Faster opens it; Camera gives a cockpit whose panel fits', async () => {
     const g = await h.openGame('flight-simulator', PHONE);
     type Marker = { pathMarker(): { visible: boolean; inside: boolean }; scenery(): { trees: number; houses: number } };
     // The path marker starts inside ring 1 (on course); the ground has its trees and houses.
@@ -252,6 +252,21 @@ describe('phone controls', () => {
     await g.waitFor((start) => (window.game as unknown as { state: { throttle: number } }).state.throttle > start + 0.05, t0, 30_000);
     // The goal and readout fit the phone's width above the scene.
     expect((await checkLayout(g.page)).clipped).toEqual([]);
+    // The Camera button gives the cockpit: its instrument panel fits the phone's width, under the scene's middle.
+    await hold(g.page, 'camera: chase / cockpit', 100);
+    const panel = await g.waitFor(() => {
+      const c = (
+        window.game as unknown as { cockpit(): { visible: boolean; panelTop: number; gauges: { x: number; r: number }[] } }
+      ).cockpit();
+      return c.visible && c.gauges.length > 0
+        ? { ...c, w: document.querySelector('canvas')!.clientWidth, h: document.querySelector('canvas')!.clientHeight }
+        : null;
+    }, null);
+    expect(panel.panelTop).toBeGreaterThan(0.55 * panel.h);
+    for (const gauge of panel.gauges) {
+      expect(gauge.x - gauge.r).toBeGreaterThanOrEqual(0);
+      expect(gauge.x + gauge.r).toBeLessThanOrEqual(panel.w);
+    }
     expect(g.errors).toEqual([]);
     await g.close();
   });

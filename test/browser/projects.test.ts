@@ -2,7 +2,8 @@
  * The book's simulation projects in headless Chromium: input changes each game (the solar system's
  * keys aim and launch the probe, its rate key speeds up its clock and its error table reads the
  * ephemeris; the submarine's keys drive the screw and flood the tanks; the flight simulator's keys
- * open the throttle and pull the nose up).
+ * open the throttle and pull the nose up, its ring label stays clear of the path marker and its
+ * cockpit view has an instrument panel that reads the instruments).
  */
 
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
@@ -300,20 +301,57 @@ describe('projects', () => {
     await g.close();
   });
 
-  it('flight-simulator: the cockpit view shows an attitude indicator that follows the bank; the ring label stays in view', async () => {
+  it('flight-simulator: the ring label sits clear of the path marker; the cockpit view has a canopy and an instrument panel whose gauges read the instruments and whose attitude indicator follows the bank; the ring label stays in view', async () => {
     const g = await h.openGame('flight-simulator');
     type Pointer = { index: number; inView: boolean; text: string; box: number[] };
-    type Att = { attitude(): { pitch: number; roll: number; visible: boolean }; ringPointer(): Pointer };
+    type Panel = {
+      visible: boolean;
+      panelTop: number;
+      gauges: { name: string; value: number }[];
+      attitude: number[];
+    };
+    type Att = {
+      attitude(): { pitch: number; roll: number; visible: boolean };
+      ringPointer(): Pointer;
+      pathMarker(): { visible: boolean; x: number; y: number };
+      cockpit(): Panel;
+      instruments(): { speed: number; altitude: number; heading: number };
+    };
     // The next ring is pointed at, with its distance, and the goal is stated above the scene.
     const pointer = await g.page.evaluate(() => (window.game as unknown as Att).ringPointer());
     expect(pointer.index).toBe(0);
     expect(pointer.text).toMatch(/^(. )?ring 1 · \d+(\.\d)? k?m( .)?$/);
     expect(await g.page.locator('[data-hud="ring-pointer"]').isVisible()).toBe(true);
     expect(await g.page.locator('[data-hud="goal"]').textContent()).toMatch(/^Fly through ring 1 of 10 · /);
+    // The label is clear of the flight-path marker (34 x 20 px round its point) in the ring: it sat
+    // 30 px under the ring's centre, over the marker's crosshair.
+    const aim = await g.waitFor(() => {
+      const w = window.game as unknown as Att;
+      const m = w.pathMarker(),
+        p = w.ringPointer();
+      return m.visible && p.inView ? { m, box: p.box } : null;
+    }, null);
+    const [lx, ly, lw, lh] = aim.box as [number, number, number, number];
+    const overlaps = lx < aim.m.x + 17 && aim.m.x - 17 < lx + lw && ly < aim.m.y + 10 && aim.m.y - 10 < ly + lh;
+    expect(overlaps, `label ${aim.box} marker ${aim.m.x}, ${aim.m.y}`).toBe(false);
     expect(await g.page.evaluate(() => (window.game as unknown as Att).attitude().visible)).toBe(false);
     await g.press('c');
     await g.waitFor(() => (window.game as unknown as Att).attitude().visible, null);
     expect(await g.page.locator('canvas[aria-label="attitude indicator"]').isVisible()).toBe(true);
+    // The cockpit: the panel across the stage's lower part, its gauges reading the instruments, the
+    // attitude indicator inside the panel (there was only the indicator, over the sky).
+    expect(await g.page.locator('canvas[aria-label="cockpit instruments"]').isVisible()).toBe(true);
+    const panel = await g.page.evaluate(() => {
+      const w = window.game as unknown as Att;
+      return { ...w.cockpit(), i: w.instruments(), h: document.querySelector('canvas')!.clientHeight };
+    });
+    expect(panel.visible).toBe(true);
+    expect(panel.panelTop).toBeGreaterThan(0.55 * panel.h);
+    expect(panel.attitude[1]!).toBeGreaterThanOrEqual(panel.panelTop - 30);
+    const gauge = (name: string) => panel.gauges.find((x) => x.name === name)!.value;
+    expect(gauge('speed')).toBeCloseTo(panel.i.speed, -1);
+    expect(gauge('altitude')).toBeCloseTo(panel.i.altitude, -1);
+    expect(panel.gauges.map((x) => x.name)).toEqual(expect.arrayContaining(['speed', 'altitude', 'heading', 'throttle']));
     // Banking left: the indicator's roll goes negative (the instruments' sign), by more than 5 degrees.
     await g.page.keyboard.down('ArrowLeft');
     await g.waitFor(() => (window.game as unknown as Att).attitude().roll < -5, null, 30_000);
@@ -379,15 +417,15 @@ describe('projects', () => {
     await g.page.keyboard.down('z');
     await g.waitFor((o) => ((window.game as unknown as Flight).state.throttle < o - 0.1 ? true : null), opened, 30_000);
     await g.page.keyboard.up('z');
-    // A held bank: the chase camera stays at its distance behind (hypot(42, 10) = 43.2 m) in the turn.
+    // A held bank: the chase camera stays at its distance behind (its offset's length) in the turn.
     await g.page.keyboard.down('d');
     const t1 = await g.page.evaluate(() => (window.game as unknown as Flight).world.time);
     let far = 0;
     await g.waitFor(
       (t) => {
-        const w = window.game as unknown as Flight & { chaseDistance(): number };
+        const w = window.game as unknown as Flight & { chaseDistance(): number; chaseOffset(): [number, number] };
         const o = (window as unknown as { farthest?: number }).farthest ?? 0;
-        (window as unknown as { farthest?: number }).farthest = Math.max(o, Math.abs(w.chaseDistance() - Math.hypot(42, 10)));
+        (window as unknown as { farthest?: number }).farthest = Math.max(o, Math.abs(w.chaseDistance() - Math.hypot(...w.chaseOffset())));
         return w.world.time > t + 4 && Math.abs(w.instruments().roll) > 40 ? true : null;
       },
       t1,
@@ -438,7 +476,7 @@ describe('projects', () => {
     }, null);
     expect(start.inside).toBe(true);
     expect(await g.page.locator('[data-hud="path-marker"]').isVisible()).toBe(true);
-    // A tap: the key's input rises at KEY_RAMP.rise (0.8 per s), not to full at once, then falls back to 0.
+    // A tap: the key's input rises at KEY_RAMP.rise (2.5 per s), not to full at once, then falls back to 0.
     await g.page.keyboard.down('ArrowUp');
     const tapped = await g.waitFor(() => {
       const k = (window.game as unknown as Flight).keyInput().pitch;
@@ -458,7 +496,7 @@ describe('projects', () => {
       60_000,
     );
     await g.page.keyboard.up('ArrowDown');
-    expect(dived.offset).toBeGreaterThan(45);
+    expect(dived.offset).toBeGreaterThan(55); // the ring's radius
     expect(g.errors).toEqual([]);
     await g.close();
   });
@@ -487,7 +525,7 @@ describe('projects', () => {
     }, null);
     expect(passed.status).toBe('passed');
     expect(passed.banner).toBe('Ring 1 ✓');
-    // Then put 150 m before ring 2 but 100 m above its centre (its radius is 45 m): a miss, counted
+    // Then put 150 m before ring 2 but 100 m above its centre (its radius is 55 m): a miss, counted
     // once, with its banner.
     await g.page.evaluate(() => {
       const w = window.game as unknown as Flight;

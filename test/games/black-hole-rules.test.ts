@@ -21,6 +21,7 @@ import {
   layoutHoles,
   MAX_HOLES,
   predictPath,
+  rampThrust,
   resolveBlackHoleOptions,
   restart,
   SHIP_RADIUS,
@@ -31,6 +32,7 @@ import {
   setLightSpeed,
   setThrust,
   stepBlackHole,
+  THRUST_RAMP,
 } from '../../games/black-hole/rules';
 
 const shipAt = (g: BlackHoleGame) => [g.world.components.Position.x[slotOf(g.ship)]!, g.world.components.Position.y[slotOf(g.ship)]!];
@@ -223,9 +225,11 @@ describe('thrust, exhaust, prediction', () => {
     const none = run('none'),
       right = run('right'),
       up = run('up');
-    expect(right.v[0] - none.v[0]).toBeCloseTo(6 * 0.5, 2);
+    // 0.5 s held: full thrust but for the spool-up, which costs half its time (within a step's 0.1 m/s).
+    const gained = 6 * (0.5 - THRUST_RAMP.up / 2);
+    expect(Math.abs(right.v[0] - none.v[0] - gained)).toBeLessThan(0.1);
     expect(right.v[1] - none.v[1]).toBeCloseTo(0, 2);
-    expect(up.v[1] - none.v[1]).toBeCloseTo(6 * 0.5, 2);
+    expect(Math.abs(up.v[1] - none.v[1] - gained)).toBeLessThan(0.1);
     expect(up.v[0] - none.v[0]).toBeCloseTo(0, 2);
     expect(none.particles).toBe(0);
     expect(right.particles).toBeGreaterThan(40);
@@ -240,6 +244,41 @@ describe('thrust, exhaust, prediction', () => {
     for (let i = 0; i < 60; i++) stepBlackHole(g);
     expect(query(g.world, [g.world.components.Particle]).length).toBe(0);
     expect(() => setThrust(g, 'sideways' as never)).toThrow(/thrust must be one of none, up, down, left, right/);
+  });
+
+  test('the engine spools up and down: a tap is a nudge, a held arrow full thrust, a new arrow swings the thrust over', () => {
+    // The issue this answers: thrust was full from the first step, so a 0.1 s tap changed the speed by
+    // 0.6 m/s and the ship felt twitchy. The engine (rampThrust) now builds up over THRUST_RAMP.up.
+    const dt = 1 / 60;
+    const v: [number, number] = [0, 0];
+    rampThrust(v, 0, 6, 6, dt);
+    expect(v[1]).toBeCloseTo((6 * dt) / THRUST_RAMP.up, 12);
+    let n = 1;
+    while (v[1] < 6) {
+      rampThrust(v, 0, 6, 6, dt);
+      n++;
+    }
+    expect(n).toBe(Math.round(THRUST_RAMP.up / dt));
+    // Up to right: the thrust swings over, never more than full, and gets there in sqrt(2) x 0.25 s.
+    for (n = 0; v[0] !== 6 || v[1] !== 0; n++) {
+      rampThrust(v, 6, 0, 6, dt);
+      expect(Math.hypot(v[0], v[1])).toBeLessThanOrEqual(6 + 1e-12);
+    }
+    expect(n).toBe(Math.ceil((Math.SQRT2 * THRUST_RAMP.up) / dt - 1e-9));
+    // Let go: gone in THRUST_RAMP.down.
+    for (n = 0; Math.hypot(v[0], v[1]) > 0; n++) rampThrust(v, 0, 0, 6, dt);
+    expect(n).toBe(Math.round(THRUST_RAMP.down / dt));
+    expect(() => rampThrust(v, 0, 0, 6, 0)).toThrow(/rampThrust: dt must be > 0 and full >= 0, got 0, 6/);
+    // In the game: a 0.1 s tap of up changes the speed by 0.17 m/s (0.6 with full thrust at once).
+    const speedUp = (tap: boolean) => {
+      const h = createBlackHoleGame({ seed: 6, holes: 1, thrust: 6 });
+      for (let i = 0; i < 30; i++) {
+        setThrust(h, tap && i < 6 ? 'up' : 'none');
+        stepBlackHole(h);
+      }
+      return h.world.components.Velocity.y[slotOf(h.ship)]!;
+    };
+    expect(speedUp(true) - speedUp(false)).toBeCloseTo(0.17, 2);
   });
 
   test('exhaust that crosses a horizon is swallowed', () => {

@@ -1,23 +1,35 @@
-// The lantern show of fireworks (games/fireworks/lanterns.ts): the levels fit both sky shapes, a hot
-// star lights only the lanterns it touches, stars against par, and real shells in the show's physics:
-// one fired at a lantern lights it, one fired far from it does not, and a level-2 pair needs a held
-// burst (a quick one between them lights neither).
+// The lantern show of fireworks (games/fireworks/lanterns.ts): the levels fit both sky shapes (a
+// phone's tall sky plays tall layouts that fill its height), a hot star lights only the lanterns it
+// touches, the tall layouts group the lanterns as their level means, the level shows as lit only once
+// every glow is full, stars against par, and real shells in the show's physics: one fired at a
+// lantern lights it, one fired far from it does not, and a level-2 pair needs a held burst (a quick
+// one between them lights neither).
 import { describe, expect, it } from 'vitest';
 import {
   BAND_MIDDLE,
+  bandMiddle,
+  CLEAR_DELAY,
+  clearShown,
   countShell,
+  GLOW_RISE,
+  glowOf,
+  isTall,
+  type Lantern,
   LEVELS,
   lanternAt,
   lanternRadius,
+  lanternsOf,
   lightFromSparks,
   sparkReach,
   starAt,
   starsFor,
   startLevel,
+  TALL_BAND_MIDDLE,
 } from '../../games/fireworks/lanterns';
 import { burstScale, createFireworks, launchShell, MAX_HOLD, stepFireworks } from '../../games/fireworks/show';
 
 /** A phone's sky (the page gives a 390 x 844 phone about 64 x 108 m) and the desktop's. */
+
 const phone = { width: 64, height: 108 };
 const desktop = { width: 120, height: 80 };
 
@@ -39,12 +51,14 @@ function fire(level: number, x: number, y: number, hold: number): boolean[] {
 }
 
 describe('lantern rules', () => {
-  it('every lantern of every level stays in the sky and in the band (|y| <= 0.2 W), in both sky shapes', () => {
+  it('every lantern of every level stays in the sky and in its band (wide |y| <= 0.2 W, tall |y| <= 0.5 W), in both sky shapes', () => {
+    expect([isTall(phone), isTall(desktop)]).toEqual([true, false]);
     for (const sky of [phone, desktop])
-      for (const lv of LEVELS) {
+      for (const [level, lv] of LEVELS.entries()) {
         expect(lv.par).toBeLessThanOrEqual(lv.lanterns.length);
-        for (const l of lv.lanterns) {
-          expect(Math.abs(l.y)).toBeLessThanOrEqual(0.2);
+        expect(lv.tall.length).toBe(lv.lanterns.length);
+        for (const l of lanternsOf(level, sky)) {
+          expect(Math.abs(l.y)).toBeLessThanOrEqual(isTall(sky) ? 0.5 : 0.2);
           for (let t = 0; t < 24; t += 0.5) {
             const [x, y] = lanternAt(l, sky, t);
             const r = lanternRadius(sky.width);
@@ -56,13 +70,91 @@ describe('lantern rules', () => {
           }
         }
       }
-    expect(lanternAt({ x: 0.5, y: 0.1 }, phone, 0)).toEqual([32, BAND_MIDDLE * 108 + 6.4]);
+    expect(lanternAt({ x: 0.5, y: 0.1 }, phone, 0)).toEqual([32, TALL_BAND_MIDDLE * 108 + 6.4]);
+    expect(lanternAt({ x: 0.5, y: 0.1 }, desktop, 0)).toEqual([60, BAND_MIDDLE * 80 + 12]);
+    expect(bandMiddle(desktop)).toBe(BAND_MIDDLE);
     expect(lanternRadius(64)).toBe(3.4);
     expect(lanternRadius(120)).toBeCloseTo(3.84, 12);
   });
+  it("a phone's tall layouts fill its height: each level's lanterns span 0.6 W or more of it (the wide ones 0.32 W at most)", () => {
+    // The issue this answers: on a phone the lanterns and their bursts filled a band across the
+    // middle of a sky 1.7 W tall, the rest of the screen empty.
+    for (const [level, lv] of LEVELS.entries()) {
+      const span = (ls: readonly Lantern[]) => Math.max(...ls.map((l) => l.y)) - Math.min(...ls.map((l) => l.y));
+      expect(span(lanternsOf(level, phone)), lv.name).toBeGreaterThanOrEqual(0.6);
+      expect(span(lanternsOf(level, desktop)), lv.name).toBeLessThanOrEqual(0.32 + 1e-9);
+    }
+  });
+  it("the tall layouts keep each level's groups: the lanterns it means one burst to light together fit one held burst, no others do", () => {
+    // Two (or three) lanterns can share a burst when some burst point has every one of them within
+    // its hot stars' reach (sparkReach at the longest hold where the level allows holding, widened by
+    // a lantern's radius), searched every 0.01 W; drifting lanterns every 0.25 s over 30 s.
+    const W = phone.width,
+      rho = lanternRadius(W) / W;
+    const groups: number[][][] = [
+      [],
+      [
+        [0, 1],
+        [2, 3],
+      ],
+      [],
+      [
+        [0, 1],
+        [2, 3],
+        [4, 5],
+      ],
+      [[1, 3, 4]],
+    ];
+    for (const [level, lv] of LEVELS.entries()) {
+      const reach = sparkReach(lv.shell, lv.hold ? burstScale(MAX_HOLD) : 1);
+      const fits = (pts: [number, number][]): boolean => {
+        const xs = pts.map((p) => p[0]),
+          ys = pts.map((p) => p[1]);
+        // Burst points within reach of every lantern lie in this box (above the highest by at most
+        // the reach down, below the lowest by at most the reach up).
+        const sx = reach.side + rho;
+        for (let px = Math.max(...xs) - sx; px <= Math.min(...xs) + sx; px += 0.01)
+          for (let py = Math.max(...ys) - reach.up - rho; py <= Math.min(...ys) + reach.down + rho; py += 0.01)
+            if (
+              pts.every(([x, y]) => ((x - px) / (reach.side + rho)) ** 2 + ((y - py) / ((y > py ? reach.up : reach.down) + rho)) ** 2 <= 1)
+            )
+              return true;
+        return false;
+      };
+      const ls = lanternsOf(level, phone);
+      const at = (i: number, t: number): [number, number] => {
+        const [x, y] = lanternAt(ls[i]!, phone, t);
+        return [x / W, (y - bandMiddle(phone) * phone.height) / W];
+      };
+      const drifts = ls.some((l) => l.drift);
+      const times = drifts ? Array.from({ length: 120 }, (_, k) => k * 0.25) : [0];
+      const together = (set: number[]) => times.some((t) => fits(set.map((i) => at(i, t))));
+      for (const g of groups[level]!) expect(together(g), `${lv.name}: ${g}`).toBe(true);
+      const meant = (i: number, j: number) => groups[level]!.some((g) => g.includes(i) && g.includes(j));
+      for (let i = 0; i < ls.length; i++)
+        for (let j = i + 1; j < ls.length; j++) if (!meant(i, j)) expect(together([i, j]), `${lv.name}: ${i} with ${j}`).toBe(false);
+    }
+  });
+  it('a level shows as lit CLEAR_DELAY after its last lantern lit, when every glow is full', () => {
+    // The issue this answers: the "All lit" banner came up the moment the last lantern lit, before its
+    // glow showed (the last burst still covered it).
+    expect(GLOW_RISE).toBeLessThan(CLEAR_DELAY);
+    const run = startLevel(0, 0);
+    const ls = lanternsOf(0, phone);
+    starAt(run, phone, ...lanternAt(ls[0]!, phone, 0), 1);
+    starAt(run, phone, ...lanternAt(ls[1]!, phone, 0), 2);
+    expect(glowOf(run, 1, 2 + GLOW_RISE / 2)).toBeCloseTo(0.5, 12);
+    expect(glowOf(run, 2, 2)).toBe(0);
+    starAt(run, phone, ...lanternAt(ls[2]!, phone, 0), 3);
+    expect(run.stars).toBe(3);
+    expect(clearShown(run, 3)).toBe(false);
+    expect(clearShown(run, 3 + CLEAR_DELAY - 0.02)).toBe(false);
+    expect(clearShown(run, 3 + CLEAR_DELAY)).toBe(true);
+    for (let i = 0; i < 3; i++) expect(glowOf(run, i, 3 + CLEAR_DELAY)).toBe(1);
+  });
   it('a hot star lights the lanterns it touches (within a radius of the centre), not one just beyond', () => {
     const run = startLevel(0, 0);
-    const [x, y] = lanternAt(LEVELS[0]!.lanterns[1]!, phone, 0);
+    const [x, y] = lanternAt(lanternsOf(0, phone)[1]!, phone, 0);
     expect(starAt(run, phone, x + 3.45, y, 0)).toEqual([]);
     expect(starAt(run, phone, x + 3.35, y, 0)).toEqual([1]);
     expect(run.lit).toEqual([false, true, false]);
@@ -80,7 +172,7 @@ describe('lantern rules', () => {
     expect([starsFor(2, 3), starsFor(3, 3), starsFor(4, 3), starsFor(5, 3), starsFor(6, 3)]).toEqual([3, 3, 2, 2, 1]);
     const run = startLevel(0, 0);
     for (let k = 0; k < 5; k++) countShell(run);
-    for (const l of LEVELS[0]!.lanterns) starAt(run, phone, ...lanternAt(l, phone, 0), 0);
+    for (const l of lanternsOf(0, phone)) starAt(run, phone, ...lanternAt(l, phone, 0), 0);
     expect(run.stars).toBe(2);
     countShell(run);
     expect(run.shells).toBe(5);
@@ -90,13 +182,13 @@ describe('lantern rules', () => {
 
 describe('real shells in the show (64 m x 108 m phone sky, 300 stars a burst)', () => {
   it('level 1: a shell fired at a lantern lights it and no other; one fired 0.3 W above it lights nothing', () => {
-    const [x, y] = lanternAt(LEVELS[0]!.lanterns[1]!, phone, 0);
+    const [x, y] = lanternAt(lanternsOf(0, phone)[1]!, phone, 0);
     expect(fire(0, x, y, 0)).toEqual([false, true, false]);
     expect(fire(0, x, y + 0.3 * phone.width, 0)).toEqual([false, false, false]);
   });
   it('level 2: between the lower pair (0.4 W apart), a quick burst lights neither; one held 1.5 s lights both', () => {
-    const lv = LEVELS[1]!;
-    const [a, b] = [lanternAt(lv.lanterns[0]!, phone, 0), lanternAt(lv.lanterns[1]!, phone, 0)];
+    const ls = lanternsOf(1, phone);
+    const [a, b] = [lanternAt(ls[0]!, phone, 0), lanternAt(ls[1]!, phone, 0)];
     const mid = [(a[0] + b[0]) / 2, (a[1] + b[1]) / 2] as const;
     expect(fire(1, mid[0], mid[1], 0)).toEqual([false, false, false, false]);
     expect(fire(1, mid[0], mid[1], MAX_HOLD)).toEqual([true, true, false, false]);

@@ -1,9 +1,10 @@
 /**
  * The flight simulator's flight assist (games/flight-simulator/assist.ts), headless: the aircraft
- * scene flown by the assist's control law as the game flies it (15 degrees of control authority,
- * the control surfaces set every 1/60 s step). A bank left alone rolls level, full stick holds a
- * 60 degree bank in a level turn at the rate a coordinated turn has, full stick back climbs steeply
- * without a stall or a loop, and a held climb or dive changes height as fast as without the assist.
+ * scene flown by the assist's control law as the game flies it (CONTROL_AUTHORITY, 25 degrees of
+ * control authority, the control surfaces set every 1/60 s step). A bank left alone rolls level, a
+ * held key banks and turns briskly, full stick holds a 70 degree bank in a level turn at the rate a
+ * coordinated turn has, full stick back climbs steeply without a stall or a loop, and a held climb or
+ * dive changes height as fast as without the assist.
  */
 
 import { createPhysicsWorld, type PhysicsWorld, setBodyThrust, setControlDeflection, step } from '@bitphysics/physics';
@@ -13,6 +14,7 @@ import {
   ASSIST,
   approach,
   assist,
+  CONTROL_AUTHORITY,
   createAssistState,
   type FlightState,
   flightState,
@@ -21,9 +23,10 @@ import {
   rampKey,
   SURFACE_RATE,
 } from '../../games/flight-simulator/assist';
+import { RING_RADIUS } from '../../games/flight-simulator/course';
 
 const DEG = Math.PI / 180;
-const FULL = 15 * DEG;
+const FULL = CONTROL_AUTHORITY * DEG;
 
 interface Flight {
   world: PhysicsWorld;
@@ -90,7 +93,28 @@ describe('flight assist', () => {
     expect(Math.abs(height(f) - 900)).toBeLessThan(5);
   });
 
-  it('full stick right: a 60 degree bank within 4 s and a level turn at the rate g tan(bank) / V', () => {
+  it('a held key banks briskly: 30 degrees within 0.9 s, 55 within 1.6 s, the heading 20 degrees round within 3 s', () => {
+    // The issue this answers: players found the aircraft floaty. With 15 degrees of authority and the
+    // key ramped to full over 1.25 s, a held key took 1.4 s to 30 degrees, never reached 55 within
+    // 3 s and turned the heading 10 degrees in 3 s. Measured now: 0.78 s, 1.45 s, 28 degrees.
+    const f = start();
+    const h0 = flightState(f.world, f.h.body).heading;
+    let key = 0,
+      t30 = Infinity,
+      t55 = Infinity;
+    for (let i = 1; i <= 180; i++) {
+      key = rampKey(key, 1, 1 / 60);
+      fly(f, { roll: key }, 1 / 60);
+      const bank = flightState(f.world, f.h.body).bank;
+      if (bank > 30 * DEG) t30 = Math.min(t30, i / 60);
+      if (bank > 55 * DEG) t55 = Math.min(t55, i / 60);
+    }
+    expect(t30).toBeLessThan(0.9);
+    expect(t55).toBeLessThan(1.6);
+    expect(flightState(f.world, f.h.body).heading - h0).toBeGreaterThan(20 * DEG);
+  });
+
+  it('full stick right: a 70 degree bank within 4 s and a level turn at the rate g tan(bank) / V', () => {
     const f = start();
     fly(f, { roll: 1 }, 4);
     expect(Math.abs(flightState(f.world, f.h.body).bank - ASSIST.maxBank)).toBeLessThan(3 * DEG);
@@ -108,7 +132,8 @@ describe('flight assist', () => {
     const turned = flightState(f.world, f.h.body).heading - h0;
     expect(turned / 6 / (rate / count)).toBeGreaterThan(0.9);
     expect(turned / 6 / (rate / count)).toBeLessThan(1.1);
-    expect(Math.abs(height(f) - y0)).toBeLessThan(15); // the assist pulls for the turn
+    // The assist pulls for the turn: at 2.9 g it loses a little height (measured 25 m in 6 s).
+    expect(Math.abs(height(f) - y0)).toBeLessThan(35);
   });
 
   it('full stick back: climbs past 17 degrees within 3 s, never past the 45 degree path (no loop); at idle it slows but does not stall', () => {
@@ -165,15 +190,17 @@ describe('held climb and dive: the assist does not fight them', () => {
     return height(f) - 900;
   }
 
-  it('held 5 s, the climb key gains height (and the dive key loses it) at least 95 % as fast with the assist as without', () => {
+  it('held 5 s, the climb key gains 180 m (the dive key loses 230 m), at least 80 % of what the bare stick does', () => {
     // The issue this answers: the levelling assist slowed height changes (it asked for a 20 degree
-    // path at most: 115 m in 5 s against 140 m without it, 0.83). Tolerance: 5 % (measured 142 m
-    // against 140 m climbing, 167 m against 165 m diving).
+    // path at most: 115 m in 5 s against 140 m without it, 0.83, with 15 degrees of authority). With
+    // 25 degrees the bare elevator pitches on past the assist's 45 degree path limit (no loop):
+    // measured 212 m against 234 m climbing, 265 m against 312 m diving.
     for (const dir of [1, -1] as const) {
       const on = dir * heldKey(true, dir, 5),
         off = dir * heldKey(false, dir, 5);
       expect(off, `dir ${dir}`).toBeGreaterThan(100);
-      expect(on / off, `dir ${dir}: ${on.toFixed(0)} m against ${off.toFixed(0)} m`).toBeGreaterThan(0.95);
+      expect(on, `dir ${dir}`).toBeGreaterThan(dir > 0 ? 180 : 230);
+      expect(on / off, `dir ${dir}: ${on.toFixed(0)} m against ${off.toFixed(0)} m`).toBeGreaterThan(0.8);
     }
   });
 });
@@ -186,8 +213,8 @@ describe('keyboard ramp (rampKey)', () => {
   };
 
   it('a tap asks for a little, a held key for full stick; released, it is back to 0 in 0.2 s', () => {
-    expect(hold(0, 1, 0.2)).toBeCloseTo(0.2 * KEY_RAMP.rise, 12);
-    expect(hold(0, 1, 0.2)).toBeLessThan(0.2);
+    expect(hold(0, 1, 0.1)).toBeCloseTo(0.1 * KEY_RAMP.rise, 12);
+    expect(hold(0, 1, 0.1)).toBeLessThan(0.3);
     expect(hold(0, -1, 1 / KEY_RAMP.rise + 0.05)).toBe(-1);
     expect(hold(1, 0, 1 / KEY_RAMP.fall - 1 / 60)).toBeGreaterThan(0);
     expect(hold(1, 0, 1 / KEY_RAMP.fall)).toBe(0);
@@ -201,7 +228,7 @@ describe('keyboard ramp (rampKey)', () => {
     expect(() => rampKey(0, 1, -1)).toThrow(/rampKey: dt must be >= 0 s, got -1/);
   });
 
-  it('flown: climb held 1 s then let go climbs on by less than half a ring (measured 15 m; 23 m with the key taken as full stick at once)', () => {
+  it('flown: climb held 1 s then let go climbs on by about half a ring at most (measured 29 m of the 55 m radius)', () => {
     /** Climbs with up held for `seconds`, then lets go: metres gained after the release (to the top). */
     const climbAfterRelease = (seconds: number, ramped: boolean): number => {
       const f = start();
@@ -220,11 +247,11 @@ describe('keyboard ramp (rampKey)', () => {
     };
     const ramped = climbAfterRelease(1, true),
       instant = climbAfterRelease(1, false);
-    // Half the ring's 45 m radius; and the ramp's own share, independent of the assist's tuning.
-    expect(ramped).toBeLessThan(22.5);
-    expect(ramped).toBeLessThan(0.7 * instant);
-    // A 0.3 s tap is a small correction: a metre or two (measured 1.7 m).
-    const tap = climbAfterRelease(0.3, true);
+    // About half a ring's radius; the ramp (full after 0.4 s) takes a little off the full stick's.
+    expect(ramped).toBeLessThan(0.6 * RING_RADIUS);
+    expect(ramped).toBeLessThanOrEqual(instant);
+    // A 0.1 s tap is a small correction: a metre or two.
+    const tap = climbAfterRelease(0.1, true);
     expect(tap).toBeGreaterThan(0.3);
     expect(tap).toBeLessThan(4);
   });

@@ -9,7 +9,7 @@
 import { createPhysicsWorld, setBodyThrust, setControlDeflection, step } from '@bitphysics/physics';
 import { AIRCRAFT, aircraft, aircraftLevelDrag, terrainHeight } from '@bitphysics/projects';
 import { describe, expect, it } from 'vitest';
-import { ASSIST, assist, createAssistState, flightState } from '../../games/flight-simulator/assist';
+import { ASSIST, assist, CONTROL_AUTHORITY, createAssistState, flightState } from '../../games/flight-simulator/assist';
 import {
   courseStars,
   courseTime,
@@ -25,6 +25,7 @@ import {
   pathThroughRing,
   RING_CLEARANCE,
   RING_RADIUS,
+  RING_STEP,
   type Ring,
   reachable,
   ringDifficulty,
@@ -50,8 +51,8 @@ describe('flight simulator course', () => {
         const p = rings[i - 1]!;
         const d = ringDifficulty(i);
         const across = Math.hypot(r.x - p.x, r.z - p.z);
-        expect(across).toBeGreaterThanOrEqual(800 + 700 * d - 1e-9);
-        expect(across).toBeLessThanOrEqual(1100 + 700 * d + 1e-9);
+        expect(across).toBeGreaterThanOrEqual(RING_STEP.near + RING_STEP.far * d - 1e-9);
+        expect(across).toBeLessThanOrEqual(RING_STEP.near + RING_STEP.spread + RING_STEP.far * d + 1e-9);
         // The turn at each ring is at most 8 + 27 d degrees from the way the aircraft comes out of
         // the ring before (which, turned on past the line between rings, is at most twice that line's
         // own turn); the change of height grows with d (less where the 400 m floor, the 1,300 m
@@ -81,7 +82,7 @@ describe('flight simulator course', () => {
     // On the layout before the turn was limited (and with a 50 degree full stick) this pilot
     // missed 18 of 100 rings over seeds 0 to 9; 0 now.
     const DEG = Math.PI / 180,
-      full = 15 * DEG;
+      full = CONTROL_AUTHORITY * DEG;
     for (const seed of [0, 1, 2, 3, 4, 5, 6, 7]) {
       const world = createPhysicsWorld(aircraft.worldOptions());
       const h = aircraft.build(world, { seed, altitude: 900 });
