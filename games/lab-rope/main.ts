@@ -7,11 +7,13 @@
  *
  * Input: swipe across a rope to cut it (cut.ts: every rope the stroke crosses), or tap on it; drag the
  * ball to push it while a rope still holds it (a mouse joint of limited force). Keys: P pause, N step,
- * R retry, L next level (once the level is cleared). URL: ?level (1-5), ?links (links a metre, 2-40), ?gravity (0-30 m/s^2).
+ * R retry, L next level (once the level is cleared). URL: ?level (1-5), ?links (links a metre, 2-40), ?gravity (0-30 m/s^2),
+ * ?debug (the frame rate, body and step counts and the largest link error in the side column; a
+ * player sees the level, the stars and the cuts there).
  */
 
-import { createActionButton, createPanel, getSound, numberParam, pointerOnCanvas } from '@bitphysics/game-kit';
-import { createLabDock, createReadout, createStatusLine, fmt, followView, readUrlParams } from '@bitphysics/game-kit/lab-kit';
+import { createActionButton, createPanel, flagParam, getSound, numberParam, pointerOnCanvas } from '@bitphysics/game-kit';
+import { createLabDock, createReadout, createStatusLine, followView, readUrlParams } from '@bitphysics/game-kit/lab-kit';
 import { startPixiGame } from '@bitphysics/game-kit/pixi';
 import { createPlot } from '@bitphysics/game-kit/plot';
 import { addMouseJoint, isAlive, type PhysicsWorld, step as physicsStep, removeJoint, setMouseTarget, slotOf } from '@bitphysics/physics';
@@ -30,6 +32,8 @@ const url = readUrlParams(
   }),
   USAGE,
 );
+/** Whether the engineer's numbers show (?debug): frame rate, bodies, steps, the largest link error. */
+const debug = flagParam('debug');
 const params = {
   ...DEFAULTS,
   linksPerMetre: url.linksPerMetre,
@@ -126,7 +130,7 @@ function nextLevel(): void {
   refit();
 }
 
-createPanel(
+const panel = createPanel(
   params,
   [
     {
@@ -188,7 +192,20 @@ createPanel(
   ],
   { title: 'Rope', container: dock.panelSlot },
 );
-const readout = createReadout(shell.hud.readout, ['ropes holding', 'cuts', 'stars', 'ball speed', 'largest link error']);
+// What a player reads in the side column: the level, the stars caught and the cuts made; the frame
+// rate, body and step counts and the solver's largest link error are the engineer's (?debug).
+for (const line of ['fps', 'bodies', 'steps']) {
+  const el = shell.hud.readout.querySelector<HTMLElement>(`[data-hud="${line}"]`);
+  if (el) el.hidden = !debug;
+}
+const readout = createReadout(shell.hud.readout, debug ? ['level', 'stars', 'cuts', 'largest link error'] : ['level', 'stars', 'cuts']);
+/** Shows the side column's numbers for the level now (each frame, and at once on a reset or a new level). */
+function showReadout(world: PhysicsWorld): void {
+  readout.set(0, `${params.level} of ${LEVELS.length}: ${scene.level.name}`);
+  readout.set(1, `${game.stars()} of 3`);
+  readout.set(2, String(cuts));
+  if (debug) readout.set(3, `${(world.joints.stats.maxError * 1000).toPrecision(3)} mm`);
+}
 plot = createPlot({
   parent: dock.charts,
   title: 'The ball',
@@ -333,6 +350,11 @@ shell.onWorldChange(() => {
   push = 0;
   stroke = null;
   sparkles.length = 0;
+  // The panel's level slider and the side column follow a new level or a retry at once (the slider
+  // stayed at the level it was set to when the Next level button moved on).
+  panel.refresh();
+  showReadout(shell.world);
+  updateStatus();
 });
 
 /** Sparkles flying out from (x, y), m. */
@@ -414,13 +436,7 @@ function draw(alpha: number, world: PhysicsWorld): void {
   drawBanner(now);
   updateStatus();
   playSnaps();
-  const e = slotOf(scene.ball),
-    V = world.components.Velocity;
-  readout.set(0, String(game.holding()));
-  readout.set(1, String(cuts));
-  readout.set(2, `${game.stars()} of 3`);
-  readout.set(3, `${fmt(Math.hypot(V.x[e]!, V.y[e]!), 3)} m/s`);
-  readout.set(4, `${fmt(world.joints.stats.maxError * 1000, 3)} mm`);
+  showReadout(world);
 }
 
 /** Heights the banner may stand at, m, in order of preference: mid-scene first. */

@@ -31,7 +31,7 @@
  */
 
 import { choiceParam, createButtonBar, createPanel, flagParam, getSound, numberParam, pageLayout } from '@bitphysics/game-kit';
-import { ORBIT_CONTROLS_RIGHT, startThreeGame } from '@bitphysics/game-kit/three';
+import { startThreeGame } from '@bitphysics/game-kit/three';
 import {
   createPhysicsWorld,
   INTEGRATOR_NAMES,
@@ -98,6 +98,7 @@ import {
   planCourse,
   planFlight,
   starsFor,
+  TARGET_TRACK,
   tutorialAim,
 } from './missions';
 
@@ -426,19 +427,17 @@ const game = await startThreeGame({
   title: 'Solar system',
   createWorld,
   step: stepWorld,
+  // The few controls a mission needs; the rest (time rate, views, distances, sizes, Enter, the
+  // camera) are named with their keys in the settings panel, whose note lists them (16 lines here
+  // were more than a new player could take in). On a phone the lines naming on-screen buttons stay
+  // in the menu's legend, out of the card over the diagram (the kit leaves out gestures ending in "button(s)").
   controls: [
     { keys: '← →', action: 'turn the launch arrow; in flight, burn in / out', touch: '↺ ↻ buttons' },
     { keys: '↑ ↓', action: 'launch speed; in flight, burn faster / slower', touch: '− + buttons' },
-    { keys: 'H', action: 'hint: what to try', touch: 'Hint' },
-    { keys: 'Click', action: 'aim the launch at a point', touch: 'Tap' },
     { keys: 'Space', action: 'launch the probe', touch: 'Launch button' },
-    { keys: 'W (hold)', action: 'wait: time runs fast', touch: 'hold Wait' },
-    { keys: 'Enter', action: 'next mission / try again', touch: 'the result buttons' },
-    { keys: '[ ]', action: 'time slower / faster' },
-    { keys: 'D', action: 'compressed / true distances' },
-    { keys: '1 2 3', action: 'view: inner planets / all eight / mission' },
-    { keys: 'E', action: 'exaggerated sizes on / off' },
-    ...ORBIT_CONTROLS_RIGHT,
+    { keys: 'W (hold)', action: 'wait: time runs fast', touch: 'hold the Wait button' },
+    { keys: 'H', action: 'hint: what to try', touch: 'Hint button' },
+    { keys: 'Click', action: 'aim the launch at a point', touch: 'Tap' },
   ],
   keys: [
     { key: 'ArrowLeft', label: 'turn left', action: () => turn(-2), repeat: true },
@@ -718,6 +717,8 @@ function dynamicLine(n: number, material: LineBasicMaterial, loop = false): Line
 }
 /** Every PLAN_STRIDE-th point of the plan is drawn as a dot: dots at equal times, closer where the probe is slow. */
 const PLAN_STRIDE = 4;
+/** Dots of the plan the last frame drew. */
+let planDotsShown = 0;
 const planDots = (() => {
   const geometry = new BufferGeometry();
   geometry.setAttribute('position', new Float32BufferAttribute(new Float32Array(plan.path.length), 3));
@@ -731,6 +732,23 @@ const planDots = (() => {
 })();
 /** The gap between where the probe and the target would be at the closest approach. */
 const missLine = dynamicLine(2, new LineBasicMaterial({ color: 0xff9b9b, transparent: true, opacity: 0.8 }));
+/** A cloud of `n` dots of `size` px in `color`, its positions written per frame. */
+function dotCloud(n: number, color: number, size: number): Points {
+  const geometry = new BufferGeometry();
+  geometry.setAttribute('position', new Float32BufferAttribute(new Float32Array(3 * n), 3));
+  const points = new Points(geometry, new PointsMaterial({ color, size, sizeAttenuation: false, transparent: true, opacity: 0.95 }));
+  points.frustumCulled = false;
+  app.scene.add(points);
+  return points;
+}
+/**
+ * The preview's timing: the target's own dots from where it is now to the ghost ring (at the same
+ * times apart as the probe's), and on a miss a white dot where the probe is then. The probe's dots
+ * stop there too: drawn on past it, a miss's path ran through the ghost ring (the probe passing the
+ * place before or after the planet is there) while the status line and the hint said it missed.
+ */
+const trackDots = dotCloud(TARGET_TRACK, 0xffffff, 3);
+const probeThen = dotCloud(1, 0xffffff, 10);
 const CIRCLE = 64;
 /** A unit circle in the x-z plane (scaled and placed per use). */
 function circle(color: number, opacity: number): LineLoop {
@@ -1086,6 +1104,8 @@ function drawLaunch(world: PhysicsWorld): void {
   arrow.visible = aiming;
   planDots.visible = planned;
   ghostRing.visible = planned;
+  trackDots.visible = false;
+  probeThen.visible = false;
   missLine.visible = false;
   if (planned) {
     if (world.time !== planAt && (planAt === -Infinity || performance.now() - planClock > (aiming ? 90 : 150))) {
@@ -1110,10 +1130,22 @@ function drawLaunch(world: PhysicsWorld): void {
     const attr = planDots.geometry.getAttribute('position') as Float32BufferAttribute;
     const arr = attr.array as Float32Array;
     let n = 0;
-    for (let i = 0; i < plan.points; i += i + PLAN_STRIDE < plan.points || i === plan.points - 1 ? PLAN_STRIDE : plan.points - 1 - i)
+    const last = plan.pointsToTime;
+    for (let i = 0; i < last; i += i + PLAN_STRIDE < last || i === last - 1 ? PLAN_STRIDE : last - 1 - i)
       place(plan.path[3 * i]!, plan.path[3 * i + 1]!, plan.path[3 * i + 2]!, arr, 3 * n++);
     attr.needsUpdate = true;
     planDots.geometry.setDrawRange(0, n);
+    planDotsShown = n;
+    const track = trackDots.geometry.getAttribute('position') as Float32BufferAttribute;
+    for (let i = 0; i < TARGET_TRACK; i++)
+      place(plan.targetTrack[3 * i]!, plan.targetTrack[3 * i + 1]!, plan.targetTrack[3 * i + 2]!, track.array as Float32Array, 3 * i);
+    track.needsUpdate = true;
+    (trackDots.material as PointsMaterial).color.setHex(hexColor(m.target));
+    trackDots.visible = !plan.sun;
+    probeThen.visible = !plan.hit && !plan.sun;
+    const then = probeThen.geometry.getAttribute('position') as Float32BufferAttribute;
+    place(plan.probeAt[0]!, plan.probeAt[1]!, plan.probeAt[2]!, then.array as Float32Array, 0);
+    then.needsUpdate = true;
     (planDots.material as PointsMaterial).color.setHex(plan.hit ? 0x7ee787 : 0x9fd3ff);
     place(plan.targetAt[0]!, plan.targetAt[1]!, plan.targetAt[2]!, scratch3);
     ghostRing.position.set(scratch3[0]!, scratch3[1]!, scratch3[2]!);
@@ -1286,6 +1318,11 @@ const pad = createButtonBar(
   { label: 'launch controls', touchOnly: false },
 );
 pad.element.classList.add('ss-pad');
+// The phone's card of gestures over the diagram goes at the first press of a button too (the kit
+// hides it at the first touch on the scene, and the buttons are under it).
+pad.element.addEventListener('pointerdown', () => document.querySelector('[data-hud="touch-hint"]')?.classList.add('bp-gone'), {
+  once: true,
+});
 pad.buttons[4]!.classList.add('ss-go');
 pad.buttons[8]!.classList.add('ss-go');
 pad.buttons[9]!.classList.add('ss-hint-button');
@@ -1343,7 +1380,7 @@ function hint(m: Mission): string {
       Math.hypot(plan.targetAt[0]!, plan.targetAt[1]!, plan.targetAt[2]!);
     if (a < 6)
       return `Close: a little ${inside === outward ? 'more' : 'less'} speed (${named(inside === outward ? '↑' : '↓', inside === outward ? '+' : '−')}).`;
-    return `${m.target} will be ${Math.round(a)}° ${plan.ahead > 0 ? 'ahead of' : 'behind'} the probe: turn the arrow (${named('← →', '↺ ↻')}), or hold Wait (${named('W', 'Wait')}) for ${m.target} to come round.`;
+    return `When the probe (the white dot) gets there, ${m.target} (its ring) is ${Math.round(a)}° ${plan.ahead > 0 ? 'ahead' : 'behind'}: turn the arrow (${named('← →', '↺ ↻')}), or hold Wait (${named('W', 'Wait')}) for ${m.target} to come round.`;
   }
   if (phase === 'flight' && flight) {
     if (plan.hit) return 'On course for the ring: no burn needed (burns cost stars).';
@@ -1392,7 +1429,7 @@ function updateStatus(force = false): void {
         line = `${head} ✗ falls in only to ${plan.nearest.toFixed(2)} AU from the Sun; ${m.target} is at ${rT.toFixed(2)} AU`;
       else {
         const a = Math.round(Math.abs(plan.ahead));
-        line = `${head} ✗ misses ${m.target} by ${plan.distance.toFixed(2)} AU (ring ${m.zone} AU)${a >= 6 ? `; ${m.target} ${a}° ${plan.ahead > 0 ? 'ahead' : 'behind'} then` : ''}`;
+        line = `${head} ✗ misses ${m.target} by ${plan.distance.toFixed(2)} AU (ring ${m.zone} AU)${a >= 6 ? `; ${m.target} ${a}° ${plan.ahead > 0 ? 'ahead of' : 'behind'} the probe then` : ''}`;
       }
       cls = 'bad';
     }
@@ -1497,7 +1534,7 @@ const panel = createPanel(
       options: Object.fromEntries(MISSIONS.map((m, i) => [`${i + 1}: ${m.target}`, MISSION_CHOICES[i]!])),
       onChange: (n) => startMission(Number(n) - 1),
     },
-    { type: 'slider', key: 'rate', label: 'time while aiming (days/s)', min: 0, max: 400, step: 0.5 },
+    { type: 'slider', key: 'rate', label: 'time while aiming (days/s; [ ])', min: 0, max: 400, step: 0.5 },
     {
       type: 'choice',
       key: 'distances',
@@ -1529,6 +1566,15 @@ const panel = createPanel(
   ],
   { title: 'Solar system' },
 );
+// The keys left out of the legend, said once under the panel's controls.
+{
+  const note = document.createElement('p');
+  note.dataset.hud = 'more-keys';
+  note.style.cssText = 'margin: 6px 8px 8px; font: 12px/1.4 system-ui, sans-serif; color: #cfd8e6';
+  note.textContent =
+    'More keys: Enter next mission / try again; [ ] time slower / faster; 1 2 3 views; D distances; E sizes. Right-drag turns the view, the wheel zooms.';
+  panel.gui.domElement.append(note);
+}
 // R (the shell's reset) goes back to startMs: a fresh plan and orbits.
 shell.onWorldChange(() => {
   planAt = -Infinity;
@@ -1600,4 +1646,16 @@ shell.expose({
   launch,
   startMission,
   advance,
+  /**
+   * What the last frame's preview showed: the probe's dots drawn, whether the white dot of the probe
+   * at the closest approach and the target's own dots show, and the plan's path points up to that
+   * time and in all.
+   */
+  preview: () => ({
+    dots: planDotsShown,
+    probeThen: probeThen.visible,
+    track: trackDots.visible,
+    pointsToTime: plan.pointsToTime,
+    points: plan.points,
+  }),
 });

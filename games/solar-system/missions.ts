@@ -59,6 +59,9 @@ export const PLAN_MARGIN = 0.85;
 /** Samples of a flight plan (points of its path). */
 export const PLAN_SAMPLES = 400;
 
+/** Points of a plan's target track: where the target goes from now to the plan's time (see FlightPlan.targetTrack). */
+export const TARGET_TRACK = 24;
+
 /** One mission: the planet to reach, the ring round it that counts as reaching it, and the star thresholds. */
 export interface Mission {
   /** The planet to reach. */
@@ -123,6 +126,15 @@ export interface FlightPlan {
   /** Heliocentric path points, AU (x, y, z each), `points` of them, from the launch to `time` (a hit) or the window's end. */
   readonly path: Float64Array;
   points: number;
+  /**
+   * How many of the path's points lie up to `time` (all of them on a hit): where the probe goes until
+   * the closest approach, the rest of a miss's path being after it. A preview that drew the whole
+   * path showed it running through the ghost ring of a miss (the probe passes the place before or
+   * after the target is there), against the status line and the hint.
+   */
+  pointsToTime: number;
+  /** Where the target goes from now to `time`, heliocentric AU (x, y, z each), TARGET_TRACK points at equal times: its last is `targetAt`. */
+  readonly targetTrack: Float64Array;
   /** The probe's and the target's heliocentric places at `time`, AU. */
   readonly probeAt: Float64Array;
   readonly targetAt: Float64Array;
@@ -141,6 +153,8 @@ export function createFlightPlan(): FlightPlan {
     ahead: 0,
     path: new Float64Array(3 * (PLAN_SAMPLES + 1)),
     points: 0,
+    pointsToTime: 0,
+    targetTrack: new Float64Array(3 * TARGET_TRACK),
     probeAt: new Float64Array(3),
     targetAt: new Float64Array(3),
   };
@@ -360,9 +374,16 @@ function planFrom(world: PhysicsWorld, handles: SolarSystemHandles, mission: Mis
     plan.time = (lo + hi) / 2;
     plan.distance = at(plan.time);
   }
+  // The target's track from now to plan.time (before the last at() call, which leaves the states at plan.time).
+  for (let i = 0; i < TARGET_TRACK; i++) {
+    keplerState(target0, target0.subarray(3), muTarget, (plan.time * i) / (TARGET_TRACK - 1), tState);
+    plan.targetTrack.set(tState.subarray(0, 3), 3 * i);
+  }
+  plan.distance = at(plan.time);
   // at() left the states at plan.time.
   plan.points = points;
   if (plan.hit) plan.path.set(pState.subarray(0, 3), 3 * (plan.points - 1));
+  plan.pointsToTime = plan.hit ? points : Math.min(points, Math.floor((plan.time / window) * PLAN_SAMPLES) + 1);
   plan.probeAt.set(pState.subarray(0, 3));
   plan.targetAt.set(tState.subarray(0, 3));
   const lonP = Math.atan2(-pState[2]!, pState[0]!),

@@ -1,13 +1,18 @@
 /**
  * Wrecking ball, the effects of a hit (drawing only, no physics): dust that billows where something
  * strikes the ground or the ball strikes a piece, chips in the piece's colour that fly and fall, and
- * score popups that rise over a piece as it falls. Sprites in the scene's metres, from fixed pools.
+ * score popups that rise over what fell, one for each group of pieces that fell together
+ * (`ScoreTally`). Sprites in the scene's metres, from fixed pools.
  */
 import { CanvasTexture, type Object3D, Sprite, SpriteMaterial, SRGBColorSpace } from 'three';
 
-/** Sprites in each pool: dust puffs and chips share one, popups have their own. */
+/**
+ * Sprites in each pool: dust puffs and chips share one, popups have their own. At most POPUPS
+ * popups show at once (a new one takes the oldest's sprite): with one a falling piece, a tower's
+ * collapse stacked five or six labels into one unreadable pile on a phone.
+ */
 const BITS = 160,
-  POPUPS = 24;
+  POPUPS = 4;
 
 /** Seconds a dust puff lives; a chip lives CHIP_LIFE; a popup POPUP_LIFE. */
 const DUST_LIFE = 1.4,
@@ -33,7 +38,7 @@ function puffTexture(): CanvasTexture {
 /** A popup's label drawn in bold yellow with a dark outline, on a clear canvas. */
 function labelTexture(text: string): CanvasTexture {
   const c = document.createElement('canvas');
-  c.width = 128;
+  c.width = 160;
   c.height = 64;
   const g = c.getContext('2d')!;
   g.font = 'bold 40px sans-serif';
@@ -41,9 +46,9 @@ function labelTexture(text: string): CanvasTexture {
   g.textBaseline = 'middle';
   g.lineWidth = 8;
   g.strokeStyle = '#1a1208';
-  g.strokeText(text, 64, 34);
+  g.strokeText(text, 80, 34);
   g.fillStyle = '#ffe066';
-  g.fillText(text, 64, 34);
+  g.fillText(text, 80, 34);
   const t = new CanvasTexture(c);
   t.colorSpace = SRGBColorSpace;
   return t;
@@ -70,8 +75,16 @@ export class SiteEffects {
   private nextPopup = 0;
   private seed = 9;
 
-  /** `root` is the object the sprites are added to (the scene). */
-  constructor(root: Object3D) {
+  /**
+   * `root` is the object the sprites are added to (the scene); `popupScale` (> 0, default 1) sizes
+   * the popups (an upright phone, whose view of the site is about half as large, draws them larger).
+   * @throws RangeError on a popupScale that is not > 0.
+   */
+  constructor(
+    root: Object3D,
+    private readonly popupScale = 1,
+  ) {
+    if (!(popupScale > 0 && Number.isFinite(popupScale))) throw new RangeError(`SiteEffects: popupScale must be > 0, got ${popupScale}`);
     const puff = puffTexture();
     for (let i = 0; i < BITS; i++) {
       const sprite = new Sprite(new SpriteMaterial({ map: puff, transparent: true, depthWrite: false }));
@@ -170,8 +183,8 @@ export class SiteEffects {
         continue;
       }
       const t = p.age / POPUP_LIFE;
-      p.sprite.position.y = p.y0 + 1.6 * (1 - (1 - t) * (1 - t));
-      p.sprite.scale.set(2.4, 1.2, 1).multiplyScalar(t < 0.15 ? 0.6 + (0.4 * t) / 0.15 : 1);
+      p.sprite.position.y = p.y0 + 1.6 * this.popupScale * (1 - (1 - t) * (1 - t));
+      p.sprite.scale.set(3, 1.2, 1).multiplyScalar(this.popupScale * (t < 0.15 ? 0.6 + (0.4 * t) / 0.15 : 1));
       p.sprite.material.opacity = t < 0.7 ? 1 : (1 - t) / 0.3;
     }
   }
@@ -185,5 +198,66 @@ export class SiteEffects {
   clear(): void {
     for (const b of this.bits) b.sprite.visible = false;
     for (const p of this.popups) p.sprite.visible = false;
+  }
+}
+
+/** Seconds after a tally's first fall that it collects falls for, before its popup shows. */
+export const TALLY_TIME = 0.5;
+/** Metres across the ground from a tally's first fall within which a fall joins it. */
+export const TALLY_REACH = 3;
+
+/** One group of falls being summed (see `ScoreTally`). */
+export interface Tally {
+  /** Where its popup rises from, m: over the highest piece that fell in it. */
+  x: number;
+  y: number;
+  z: number;
+  /** The points of its falls, summed. */
+  points: number;
+  /** How many pieces fell in it. */
+  pieces: number;
+  /** World time of its first fall, s. */
+  time: number;
+}
+
+/**
+ * Sums the points of pieces that fall together into one popup: a fall within TALLY_REACH m across
+ * the ground of a tally opened less than TALLY_TIME s before joins it; any other opens a new one. A
+ * tally is due (its popup shows) TALLY_TIME s after it opened. Pure bookkeeping, no drawing.
+ */
+export class ScoreTally {
+  private readonly open: Tally[] = [];
+
+  /**
+   * Adds a fall of `points` at (x, y, z), m, at world time `time`, s.
+   * @throws RangeError on a non-finite place or time, or negative points.
+   */
+  add(x: number, y: number, z: number, points: number, time: number): void {
+    if (![x, y, z, time].every(Number.isFinite))
+      throw new RangeError(`ScoreTally.add: place and time must be finite, got ${[x, y, z, time]}`);
+    if (!(points >= 0)) throw new RangeError(`ScoreTally.add: points must be >= 0, got ${points}`);
+    const t = this.open.find((q) => time - q.time < TALLY_TIME && Math.hypot(q.x - x, q.z - z) < TALLY_REACH);
+    if (t === undefined) {
+      this.open.push({ x, y, z, points, pieces: 1, time });
+      return;
+    }
+    t.points += points;
+    t.pieces++;
+    if (y > t.y) t.y = y;
+  }
+
+  /** The tallies due at world time `time`, s (each returned once), oldest first. */
+  due(time: number): Tally[] {
+    const out: Tally[] = [];
+    for (let i = 0; i < this.open.length; ) {
+      if (time - this.open[i]!.time >= TALLY_TIME) out.push(...this.open.splice(i, 1));
+      else i++;
+    }
+    return out;
+  }
+
+  /** Forgets every open tally (a new level). */
+  clear(): void {
+    this.open.length = 0;
   }
 }

@@ -3,8 +3,9 @@
  * joints) into towers, brick walls and plank stacks of 3D boxes. Steer the crane: slew the jib, run the
  * trolley in and out, raise and lower the hook; the ball lags behind and swings, so pump it like a
  * pendulum. Or grab the ball with the mouse, pull it back and let go. Every piece that falls scores
- * (more for pieces that stood high); knock down 70 % of the pieces that stood above the ground
- * (`clearTarget`) to clear a level; levels are seeded.
+ * (more for pieces that stood high); knock down 40 % of the pieces that stood above the ground on
+ * level 1, 60 % after (`clearTarget`), within the level's swings (`swingBudget`) to clear it; levels
+ * are seeded.
  *
  * Keys: A/D or ←/→ slew, W/S or ↑/↓ trolley out/in, Q/E hook up/down, L next level (once cleared),
  * G debug layer (joints, contacts), P pause, N step, R reset. Mouse: click a target to swing the ball
@@ -58,7 +59,7 @@ import {
   Vector2,
   Vector3,
 } from 'three';
-import { SiteEffects } from './effects';
+import { ScoreTally, SiteEffects } from './effects';
 import { bodyHalfExtents, dirtTexture, pieceGeometry, pieceMaterials, skylineTexture } from './look';
 import {
   aimAt,
@@ -73,9 +74,10 @@ import {
   LINK_RADIUS,
   pieceOnSwing,
   RADIUS_RANGE,
-  SWING_BUDGET,
   scorePieces,
   swayAmplitude,
+  swingBudget,
+  swingPar,
   swingStars,
   type WreckingBallHandles,
   wreckingBallWorldOptions,
@@ -167,11 +169,11 @@ function gameStep(world: PhysicsWorld): void {
     // A fallen piece keeps its material, darkened (grey read as a different material).
     for (const p of handles.pieces) if (p.fallen && isAlive(world, p.body) && p.body !== lit) tint(p.body, FALLEN_TINT);
   }
-  if (!cleared && fallenCount(handles.pieces) >= clearTarget(handles.pieces)) {
+  if (!cleared && fallenCount(handles.pieces) >= clearTarget(handles.pieces, handles.level)) {
     cleared = true;
     sound.chime(1046, 0.6);
     // 500 for clearing and 250 for each star (fewer swings).
-    levelScore += 500 + 250 * swingStars(swingsUsed(), true);
+    levelScore += 500 + 250 * swingStars(swingsUsed(), true, handles.level);
   }
 }
 
@@ -251,9 +253,11 @@ const game = await startThreeGame({
 });
 const { shell, renderer, app } = game;
 /** Dust, chips and popups of the hits. */
-const effects = new SiteEffects(app.scene);
-/** Pieces whose fall has been shown (a popup and a puff), by body handle. */
+const effects = new SiteEffects(app.scene, PORTRAIT ? 1.6 : 1);
+/** Pieces whose fall has been counted for a popup, by body handle. */
 const popped = new Set<number>();
+/** The falls being summed into popups: one popup for pieces that fell together. */
+const tally = new ScoreTally();
 // The site: a square of packed dirt around the crane (the grass beyond is the renderer's floor).
 const site = new Mesh(new PlaneGeometry(30, 30), new MeshStandardMaterial({ map: dirtTexture(7), roughness: 0.95 }));
 site.rotation.x = -Math.PI / 2;
@@ -291,6 +295,7 @@ function debugOptions() {
 function setDebug(on: boolean): void {
   params.debug = on;
   renderer.setDebug(on ? debugOptions() : false);
+  showStats(on);
   panel.refresh();
 }
 
@@ -339,6 +344,7 @@ function dress(): void {
   renderer.setShape(h.ball, { geometry: ballGeometry, material: ballMaterial, scale: 'radius' });
   effects.clear();
   popped.clear();
+  tally.clear();
   // The capsule links are drawn by the chain rod (drawChain), not one by one.
   for (const l of h.links) renderer.setShape(l, { geometry: chainGeometry, scale: 1e-4 });
   // The mast's box is drawn as a lattice (mastLattice below), not as the solid box.
@@ -592,7 +598,13 @@ const followGoal = new Vector3(),
   followStep = new Vector3(),
   followBall = [0, 0, 0],
   followNdc = new Vector3();
-/** Eases the camera and its orbit target toward the action when the ball nears the view's edge (see FOLLOW). */
+/**
+ * Eases the camera and its orbit target toward the action when the ball nears the view's edge (see
+ * FOLLOW). The view it leaves is the camera's own from then on: the kit fits the framed site again
+ * on a resize only until the camera is moved (its controls' 'start' event), and a resize after a
+ * follow (the phone's status line wrapping onto another line) threw the camera back to the site's
+ * framing mid-swing.
+ */
 function followAction(): void {
   const controls = app.controls;
   if (controls === null || !renderer.drawnPosition(handles.ball, followBall)) return;
@@ -602,6 +614,7 @@ function followAction(): void {
   followStep.subVectors(followGoal, controls.target).multiplyScalar(FOLLOW);
   controls.target.add(followStep);
   app.camera.position.add(followStep);
+  controls.dispatchEvent({ type: 'start' });
 }
 
 // Where a click sent the hook: a ring on the ground until the hook is there.
@@ -813,7 +826,12 @@ function pressAt(ndcX: number, ndcY: number): 'ball' | 'swing' | 'hook' | 'none'
     handles.controls.released++;
     return 'ball';
   }
-  let target = hit && handles.pieces.some((p) => p.body === hit.eid) ? hit.eid : nearPiece(ndcX, ndcY);
+  // A standing piece under the pointer, else the standing piece whose outline is nearest (within
+  // NEAR_TAP_PX), else a fallen piece under the pointer (a press on a piece lying on the ground swung
+  // at it even with a standing one a pixel away).
+  const piece = hit ? handles.pieces.find((p) => p.body === hit.eid) : undefined;
+  let target = piece && !piece.fallen ? piece.body : nearPiece(ndcX, ndcY);
+  if (target === 0 && piece) target = piece.body;
   raycaster.setFromCamera(new Vector2(ndcX, ndcY), app.camera);
   const onGround = raycaster.ray.intersectPlane(ground, groundHit) !== null;
   if (target === 0 && onGround) target = pieceNearGround(groundHit.x, groundHit.z);
@@ -853,28 +871,65 @@ let aimed = 0;
 /** The standing pieces when the last swing was aimed (to count what it brought down), and what it did. */
 const swing = { downBefore: 0, result: '', resultAt: 0 };
 /**
- * Distance, CSS px, within which a press that misses every piece still takes the nearest standing
- * one: a finger's width on a touch screen, a few pixels for a mouse.
+ * Distance, CSS px, from a standing piece's drawn outline within which a press that misses every
+ * piece still takes it: a finger's width on a touch screen, a mouse's slip on a desktop.
  */
-const NEAR_TAP_PX = isTouchDevice() ? 36 : 10;
+const NEAR_TAP_PX = isTouchDevice() ? 30 : 12;
 const nearAt = new Vector3();
 /**
- * The standing piece whose centre is drawn nearest the point (ndcX, ndcY), if within NEAR_TAP_PX
- * (a tower 0.7 m wide is about 15 px on a phone: a finger's tap a little off it sent the hook to
- * the ground instead, and nothing was hit), else 0.
+ * The standing piece drawn nearest the point (ndcX, ndcY), if its outline (the screen rectangle
+ * round its box's corners, drawn where it is) comes within NEAR_TAP_PX of it, else 0; a point
+ * inside several outlines takes the piece whose centre is nearest. A tower's block 0.7 m wide is
+ * about 20 px on a desktop and 15 on a phone: measured from the block's centre (10 px on a
+ * desktop) a click just off its edge sent the hook to the ground behind it instead.
  */
 function nearPiece(ndcX: number, ndcY: number): number {
   const w = canvas.clientWidth / 2,
     hgt = canvas.clientHeight / 2;
+  const px = ndcX * w,
+    py = ndcY * hgt;
+  const O = shell.world.components.Orientation;
   let best = 0,
-    bestD = NEAR_TAP_PX;
+    bestD = NEAR_TAP_PX,
+    bestC = Number.POSITIVE_INFINITY;
   for (const p of handles.pieces) {
     if (p.fallen || !renderer.drawnPosition(p.body, followBall)) continue;
-    nearAt.set(followBall[0]!, followBall[1]!, followBall[2]!).project(app.camera);
-    if (nearAt.z > 1) continue;
-    const d = Math.hypot((nearAt.x - ndcX) * w, (nearAt.y - ndcY) * hgt);
-    if (d < bestD) {
+    // The box's half extents across the world's axes: |R| times its own.
+    const x = O.x[p.body]!,
+      y = O.y[p.body]!,
+      z = O.z[p.body]!,
+      q = O.w[p.body]!;
+    const R = [
+      [1 - 2 * (y * y + z * z), 2 * (x * y - q * z), 2 * (x * z + q * y)],
+      [2 * (x * y + q * z), 1 - 2 * (x * x + z * z), 2 * (y * z - q * x)],
+      [2 * (x * z - q * y), 2 * (y * z + q * x), 1 - 2 * (x * x + y * y)],
+    ];
+    const e = R.map((row) => Math.abs(row[0]!) * p.half[0] + Math.abs(row[1]!) * p.half[1] + Math.abs(row[2]!) * p.half[2]);
+    let x0 = Number.POSITIVE_INFINITY,
+      x1 = Number.NEGATIVE_INFINITY,
+      y0 = Number.POSITIVE_INFINITY,
+      y1 = Number.NEGATIVE_INFINITY,
+      behind = false;
+    for (let c = 0; c < 8; c++) {
+      nearAt
+        .set(
+          followBall[0]! + (c & 1 ? e[0]! : -e[0]!),
+          followBall[1]! + (c & 2 ? e[1]! : -e[1]!),
+          followBall[2]! + (c & 4 ? e[2]! : -e[2]!),
+        )
+        .project(app.camera);
+      if (nearAt.z > 1) behind = true;
+      x0 = Math.min(x0, nearAt.x * w);
+      x1 = Math.max(x1, nearAt.x * w);
+      y0 = Math.min(y0, nearAt.y * hgt);
+      y1 = Math.max(y1, nearAt.y * hgt);
+    }
+    if (behind) continue;
+    const d = Math.hypot(Math.max(0, x0 - px, px - x1), Math.max(0, y0 - py, py - y1));
+    const centre = Math.hypot((x0 + x1) / 2 - px, (y0 + y1) / 2 - py);
+    if (d < bestD || (d === 0 && centre < bestC)) {
       bestD = d;
+      bestC = centre;
       best = p.body;
     }
   }
@@ -891,13 +946,13 @@ function light(piece: number): void {
 }
 /** Whether the last tap re-aimed a swing still winding up (the status line says so). */
 let retargeted = false;
-/** Swings used on this level (runs at targets begun, drags of the ball), out of SWING_BUDGET. */
+/** Swings used on this level (runs at targets begun, drags of the ball), out of its `swingBudget`. */
 function swingsUsed(): number {
   return handles.controls.released;
 }
 /** Whether the level's swings are all used and it is not cleared (a swing is refused). */
 function outOfSwings(): boolean {
-  return !cleared && swingsUsed() >= SWING_BUDGET;
+  return !cleared && swingsUsed() >= swingBudget(handles.level);
 }
 /** Swings the ball at piece `piece`: the crane's moves, the marks on it, a chime; false (and a low tone) when out of swings. */
 function swingAt(piece: number): boolean {
@@ -1025,12 +1080,25 @@ const panel = createPanel(
 const status = document.createElement('div');
 status.className = 'bp-hud';
 status.dataset.hud = 'wrecking-ball';
-status.style.cssText = 'position: static; padding: 4px 8px';
+// As tall as its longest text (three lines on an upright phone, one on a desktop) whatever it says
+// now, so a longer line does not shrink the stage under the player's finger.
+status.style.cssText = `position: static; padding: 4px 8px; min-height: ${PORTRAIT ? 3 : 1}lh`;
 pageLayout().status.append(status);
+// The side column's numbers: the score for a player; with the debug layer (G, ?debug) also the
+// step time and the kit's frame rate, body and step counts.
 const readout = document.createElement('div');
 readout.className = 'bp-hud';
+readout.dataset.hud = 'score';
 readout.style.cssText = 'position: static; margin-top: 8px';
 pageLayout().info.prepend(readout);
+/** Shows or hides the engineer's numbers (the kit's frame rate, bodies and steps lines). */
+function showStats(on: boolean): void {
+  for (const line of ['fps', 'bodies', 'steps']) {
+    const el = shell.hud.readout.querySelector<HTMLElement>(`[data-hud="${line}"]`);
+    if (el) el.hidden = !on;
+  }
+}
+showStats(params.debug);
 
 // ---- Site plan: the left column's foot (it stood empty, 230 px at 1280 x 800) ------------------
 
@@ -1154,13 +1222,14 @@ function frame(): void {
   updateControls();
   const dt = Math.min(0.1, Math.max(0, shell.world.time - lastFrameTime));
   lastFrameTime = shell.world.time;
-  // A piece that has just fallen: its points rise over it, and a puff where it was.
+  // Pieces that have just fallen: the points of those that fell together rise over them as one popup.
   const P = shell.world.components.Position;
   for (const p of handles.pieces) {
     if (!p.fallen || popped.has(p.body) || !isAlive(shell.world, p.body)) continue;
     popped.add(p.body);
-    effects.popup(P.x[p.body]!, P.y[p.body]! + 0.9, P.z[p.body]!, `+${p.points}`);
+    tally.add(P.x[p.body]!, P.y[p.body]! + 0.9, P.z[p.body]!, p.points, shell.world.time);
   }
+  for (const t of tally.due(shell.world.time)) effects.popup(t.x, t.y, t.z, `+${t.points}`);
   effects.update(dt);
   const c = handles.crane;
   // Jib: along the slew direction through the mast top, reaching RADIUS_RANGE[1] + 2 out and 2 back.
@@ -1216,12 +1285,13 @@ function frame(): void {
   if (frames++ % 6 === 0) {
     const n = handles.pieces.length,
       f = fallenCount(handles.pieces);
-    const stars = swingStars(swingsUsed(), cleared);
+    const stars = swingStars(swingsUsed(), cleared, handles.level);
+    const budget = swingBudget(handles.level);
     const used = swingsUsed(),
-      left = SWING_BUDGET - used;
+      left = budget - used;
     status.textContent = cleared
       ? `Level ${handles.level} cleared in ${used} ${used === 1 ? 'swing' : 'swings'}! ${'★'.repeat(stars)}${'☆'.repeat(3 - stars)} · score ${banked + levelScore} · ${touch ? 'tap' : 'press L or'} Next level`
-      : `Level ${handles.level} · swings left ${left}/${SWING_BUDGET} (★★★ in 2) · down ${f}/${n} (clear at ${clearTarget(handles.pieces)})${swingPhase()}${
+      : `Level ${handles.level} · swings left ${left}/${budget} (★★★ in ${swingPar(handles.level)}) · down ${f}/${n} (clear at ${clearTarget(handles.pieces, handles.level)})${swingPhase()}${
           swing.result && shell.world.time - swing.resultAt < RESULT_SHOWN ? ` · ${swing.result}` : ''
         }${left <= 0 && handles.controls.moves.length === 0 ? ` · out of swings: ${touch ? 'tap ↻' : 'press R'} to retry` : ''}${swayHint()}`;
     showNext(cleared, `Level ${handles.level + 1} ▶`);
@@ -1229,7 +1299,9 @@ function frame(): void {
     if (hint.textContent !== text) hint.textContent = text;
     hint.style.display = text ? '' : 'none';
     drawPlan();
-    readout.textContent = `step ${stepMs.toFixed(1)} ms (worst ${worstMs.toFixed(1)}) · ${handles.pieces.length} pieces`;
+    readout.textContent = params.debug
+      ? `score ${banked + levelScore} · step ${stepMs.toFixed(1)} ms (worst ${worstMs.toFixed(1)}) · ${handles.pieces.length} pieces`
+      : `score ${banked + levelScore}`;
   }
 }
 
@@ -1281,7 +1353,7 @@ shell.expose({
   /** Total score (levels cleared plus this one). */
   score: (): number => banked + levelScore,
   /** Swings used on this level, the level's budget and the stars earned (0 until cleared). */
-  swings: () => ({ used: swingsUsed(), budget: SWING_BUDGET, stars: swingStars(swingsUsed(), cleared) }),
+  swings: () => ({ used: swingsUsed(), budget: swingBudget(handles.level), stars: swingStars(swingsUsed(), cleared, handles.level) }),
   /** Whether this level is cleared. */
   cleared: (): boolean => cleared,
   /** Smoothed step time, ms. */

@@ -450,8 +450,14 @@ describe('phone controls', () => {
       mission(): { phase: string; aim: { speed: number }; flight: { elapsed: number; fuelUsed: number } | null; plan: { hit: boolean } };
     };
     const speed = await read(g, 'mission().aim.speed');
+    // The card of gestures over the diagram has one line (the on-screen buttons name themselves):
+    // it had four, 140 px over the lower orbits and the preview. It goes at the first button press.
+    const card = g.page.locator('[data-hud="touch-hint"]');
+    expect(await card.textContent()).toBe('Tapaim the launch at a point');
+    expect((await card.boundingBox())!.height).toBeLessThan(50);
     // Mission 1 starts too slow; the Hint button names the button that fixes it; 8 taps of + arrive.
     await g.page.getByRole('button', { name: 'hint: what to try (H)', exact: true }).tap();
+    await g.waitFor(() => document.querySelector('[data-hud="touch-hint"]')?.classList.contains('bp-gone') ?? true, null);
     await g.waitFor(() => /more speed \(tap \+\)\.$/.test(document.querySelector('[data-hud="hint"]')!.textContent ?? ''), null);
     for (let i = 0; i < 8; i++) await g.page.getByRole('button', { name: 'faster launch (↑)', exact: true }).tap();
     await g.waitFor((s) => (window.game as unknown as Solar).mission().aim.speed > s + 0.75, speed);

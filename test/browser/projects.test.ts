@@ -51,8 +51,36 @@ describe('projects', () => {
     expect(await g.page.locator('[data-hud="hint"]').isVisible()).toBe(false);
     await g.press('h');
     await g.waitFor(() => document.querySelector('[data-hud="hint"]')?.textContent?.endsWith('more speed (press ↑).'), null);
-    // Up, pressed 8 times (the lesson's 0.8 km/s; time is stopped): the plan arrives; the hint says to launch.
-    for (let i = 0; i < 8; i++) await g.press('ArrowUp');
+    // The legend lists the few controls a mission needs (with the kit's P, N, R): 16 lines were too
+    // many to learn; the rest are named in the panel.
+    expect(await g.page.locator('.bp-legend > div').count()).toBe(9);
+    expect(await g.page.locator('[data-hud="more-keys"]').textContent()).toMatch(/^More keys: Enter .* 1 2 3 views; D distances; E sizes/);
+    // Up 6 times (2.9 km/s): a miss, the probe at Mars's orbit 9 degrees before Mars. The preview says
+    // so as the hint does: the probe's dots stop where it is at the closest approach (a white dot),
+    // and Mars's own dots run to its ring. Before, the dots ran on round the whole orbit, through the
+    // ring, while the status line and the hint said it missed.
+    for (let i = 0; i < 6; i++) await g.press('ArrowUp');
+    await g.waitFor(
+      () => /misses Mars by .* behind the probe then$/.test(document.querySelector('[data-hud="plan"]')!.textContent ?? ''),
+      null,
+    );
+    await g.waitFor(
+      () =>
+        document
+          .querySelector('[data-hud="hint"]')
+          ?.textContent?.startsWith('When the probe (the white dot) gets there, Mars (its ring) is'),
+      null,
+    );
+    await g.frames(2);
+    type Preview = { dots: number; probeThen: boolean; track: boolean; pointsToTime: number; points: number };
+    const preview = await g.page.evaluate(() => (window.game as unknown as { preview(): Preview }).preview());
+    expect(preview.probeThen).toBe(true);
+    expect(preview.track).toBe(true);
+    expect(preview.pointsToTime).toBeLessThan(preview.points);
+    // Every 4th point up to the closest approach, and that point.
+    expect(preview.dots).toBe(Math.ceil((preview.pointsToTime - 1) / 4) + 1);
+    // Up twice more (the lesson's 0.8 km/s; time is stopped): the plan arrives; the hint says to launch.
+    for (let i = 0; i < 2; i++) await g.press('ArrowUp');
     await g.waitFor(() => /✓ reaches Mars in \d+ days/.test(document.querySelector('[data-hud="plan"]')!.textContent ?? ''), null);
     await g.waitFor(() => document.querySelector('[data-hud="hint"]')?.textContent?.startsWith('On target. Launch: Space.'), null);
     expect(await g.page.evaluate(() => (window.game as unknown as Solar).mission().plan.hit)).toBe(true);

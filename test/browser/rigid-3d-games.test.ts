@@ -115,6 +115,10 @@ describe('3D rigid-body games in headless Chromium', () => {
       panned,
       20_000,
     );
+    // The side column gives the score, not the engineer's numbers (step time, frame rate, steps):
+    // those come with the debug layer (G).
+    expect(await g.page.locator('[data-hud="score"]').textContent()).toBe('score 0');
+    expect(await g.page.locator('[data-hud="fps"]').isHidden()).toBe(true);
     // Before the first swing a hint over the scene says what a click does.
     const hint = g.page.locator('[data-hud="tap-hint"]');
     expect(await hint.textContent()).toBe('Click a block: the crane swings the ball into it');
@@ -139,6 +143,25 @@ describe('3D rigid-body games in headless Chromium', () => {
     });
     expect(beside).toEqual({ pressed: 'swing', goal: null, moves: beside.moves });
     expect(beside.moves).toBeGreaterThan(0);
+    // A click just off a block's edge takes the block: 6 px over the top of the tower (a 0.7 m block
+    // is about 13 px here), it swings at the tower. Taken from the block's centre within 10 px, such
+    // a click went to the ground far behind it and sent the hook there.
+    const offEdge = await g.page.evaluate(() => {
+      const game = window.game as unknown as WB;
+      const P = game.world.components.Position;
+      const tower = game.handles().pieces.filter((p) => p.kind === 'tower');
+      const top = tower.reduce((a, b) => (P.y[b.body]! > P.y[a.body]! ? b : a)).body;
+      const at = game.renderer.drawnPosition(top)!;
+      const s = game.app.camera.position
+        .clone()
+        .set(at[0]!, at[1]! + 0.35, at[2]!)
+        .project(game.app.camera);
+      const canvas = document.querySelector('canvas')!;
+      const pressed = game.pressAt(s.x, s.y + (2 * 6) / canvas.clientHeight);
+      const aimed = (window.game as unknown as { aimed(): { piece: number } }).aimed().piece;
+      return { pressed, inTower: tower.some((p) => p.body === aimed) };
+    });
+    expect(offEdge).toEqual({ pressed: 'swing', inTower: true });
     // A press on a piece of a target swings the ball at it: the crane's moves (wind-up, run) are set.
     const swing = await g.page.evaluate(() => {
       const game = window.game as unknown as WB;
@@ -198,8 +221,16 @@ describe('3D rigid-body games in headless Chromium', () => {
     expect(await g.page.locator('[data-hud="wrecking-ball"]').textContent()).toContain('new target, same swing');
     // At 1280 x 800 the left column's foot holds the site plan: no empty gap under the legend (it
     // was 230 px), and nothing pushed out of view.
+    const followed = await g.page.evaluate(() => (window.game as unknown as { cameraTarget(): number[] }).cameraTarget());
     await g.page.setViewportSize({ width: 1280, height: 800 });
     await g.page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+    // The view the camera followed to stays through the resize (the kit fitted the site's framing
+    // again on every resize until the player moved the camera: on a phone, whose stage changes size
+    // as the status line wraps, the camera jumped back mid-swing).
+    const resized = await g.page.evaluate(() => (window.game as unknown as { cameraTarget(): number[] }).cameraTarget());
+    const off = Math.hypot(followed[0]! - t0[0]!, followed[2]! - t0[2]!);
+    expect(off).toBeGreaterThan(2);
+    expect(Math.hypot(resized[0]! - t0[0]!, resized[2]! - t0[2]!)).toBeGreaterThan(off / 2);
     const column = await g.page.evaluate(() => {
       const info = document.querySelector('.bp-info')!;
       const last = info.lastElementChild!.getBoundingClientRect();

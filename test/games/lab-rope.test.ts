@@ -49,9 +49,14 @@ describe('lab-rope levels', () => {
     push?: number;
     losePush?: number;
     stars: number;
+    /** The index of a `win` schedule that wins with fewer stars than `stars`. */
+    fewer?: number;
   }[] = [
-    // 1: cut at the end of the first swing, over the basket (won 1.5-1.95 s, 3 stars from 1.7 s).
-    { level: 0, win: [[[1.75, 0]], [[1.85, 0]]], lose: [[0.4, 0]], stars: 3 },
+    // 1: cut just after the ball turns back at the right end of its first swing (won 1.84-2.21 s,
+    // 3 stars 1.94-2.09 s: a cut at 2.02 s wins them, one at 2.15 s fewer). A cut with the ball over
+    // the basket, 1.2 s in, sends it on past it to the wall (before, the basket stood there and that
+    // cut won 3 stars: any cut from 0.65 to 1.95 s won).
+    { level: 0, win: [[[2.02, 0]], [[2.15, 0]]], lose: [[1.2, 0]], fewer: 1, stars: 3 },
     // 2: the left rope first, the right one 0.5-1.5 s later.
     {
       level: 1,
@@ -104,6 +109,7 @@ describe('lab-rope levels', () => {
       for (const r of results) expect(r.outcome).toBe('won');
       expect(Math.max(...results.map((r) => r.stars))).toBe(c.stars);
       expect(play(c.level, c.lose, c.losePush ?? c.push ?? 0).outcome).toBe('lost');
+      if (c.fewer !== undefined) expect(results[c.fewer]!.stars).toBeLessThan(c.stars);
     });
 
   it('no level gives a star before the player acts: 8 s of swinging untouched catches none', () => {

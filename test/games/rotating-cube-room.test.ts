@@ -1,10 +1,13 @@
 /**
  * rotating-cube's room mode (the default), headless: the free cube lands on the floor and comes to
- * rest on a face (centre 0.5 m up), and thrown at a wall it bounces back instead of passing through.
+ * rest on a face (centre 0.5 m up), and thrown at a wall it bounces back instead of passing through;
+ * and where the gallery lists it, with the two other pages that have no goal to win.
  */
 
+import { readFileSync } from 'node:fs';
 import { createPhysicsWorld, setAngularVelocity, setVelocity, step } from '@bitphysics/physics';
 import { describe, expect, it } from 'vitest';
+import { CARD_LINES } from '../../games/gallery-cards';
 import { buildRotatingCube, EDGES, ROOM_HALF, rotatingCubeWorldOptions } from '../../games/rotating-cube/scene';
 
 describe('rotating-cube room mode', () => {
@@ -50,5 +53,22 @@ describe('rotating-cube room mode', () => {
     expect(maxX).toBeLessThan(ROOM_HALF - half + 0.02);
     expect(maxX).toBeGreaterThan(ROOM_HALF - 0.9);
     expect(V.x[h.body]).toBeLessThan(0.5);
+  });
+});
+
+describe('pages without a goal in the gallery', () => {
+  it('rotating-cube, balls-3d and earth-moon are listed in the physics playground, their cards saying what to explore', () => {
+    // A stranger found them under Games with nothing to win. Each is a toy to explore (a score for a
+    // spinning cube, a box of balls or the Moon's orbit would be made up), so each is a lab now.
+    const explore: Record<string, RegExp> = {
+      'rotating-cube': /spin axis wander.*flip over by itself/,
+      'balls-3d': /gravity and bounce.*watch the pile settle/,
+      'earth-moon': /speed up time.*Earth wobble/i,
+    };
+    for (const [folder, line] of Object.entries(explore)) {
+      const entry = JSON.parse(readFileSync(new URL(`../../games/${folder}/game.json`, import.meta.url), 'utf8')) as { category: string };
+      expect(entry.category, folder).toBe('Labs');
+      expect(CARD_LINES[folder], folder).toMatch(line);
+    }
   });
 });

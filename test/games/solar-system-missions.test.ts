@@ -26,9 +26,11 @@ import {
   MISSIONS,
   type Mission,
   PLAN_MARGIN,
+  PLAN_SAMPLES,
   planCourse,
   planFlight,
   starsFor,
+  TARGET_TRACK,
   TUTORIAL_SHORTFALL,
   tutorialAim,
 } from '../../games/solar-system/missions';
@@ -188,6 +190,23 @@ describe('missions', () => {
     // lies short of Mars's distance less the ring.
     const mars = heliocentricState(world, handles, handles.bodies.Mars);
     expect(plan.farthest).toBeLessThan(Math.hypot(mars[0]!, mars[1]!, mars[2]!) - m.zone);
+    // What the preview draws of a miss: the probe's path up to the closest approach, its last point
+    // within one sample's travel of where the probe is then, the rest of the path (after it) left
+    // out; and Mars's own track from where it is now to where it is then (the ghost ring).
+    expect(plan.pointsToTime).toBeGreaterThan(1);
+    expect(plan.pointsToTime).toBeLessThan(plan.points);
+    const p = plan.path,
+      k = 3 * (plan.pointsToTime - 1),
+      sample = plan.window / PLAN_SAMPLES;
+    const pk = plan.pointsToTime - 1;
+    expect(pk * sample).toBeLessThanOrEqual(plan.time + 1e-9);
+    expect((pk + 1) * sample).toBeGreaterThan(plan.time);
+    const step1 = Math.hypot(p[3]! - p[0]!, p[4]! - p[1]!, p[5]! - p[2]!);
+    expect(Math.hypot(p[k]! - plan.probeAt[0]!, p[k + 1]! - plan.probeAt[1]!, p[k + 2]! - plan.probeAt[2]!)).toBeLessThan(2 * step1);
+    const t = plan.targetTrack,
+      n = 3 * (TARGET_TRACK - 1);
+    expect(Math.hypot(t[0]! - mars[0]!, t[1]! - mars[1]!, t[2]! - mars[2]!)).toBeLessThan(1e-9);
+    expect(Math.hypot(t[n]! - plan.targetAt[0]!, t[n + 1]! - plan.targetAt[1]!, t[n + 2]! - plan.targetAt[2]!)).toBeLessThan(1e-9);
     /** The slowest speed from the start up in 0.1 km/s presses that the plan calls a hit. */
     const pressUp = (): number => {
       for (let n = 1; n <= 40; n++) {

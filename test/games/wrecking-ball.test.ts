@@ -5,19 +5,22 @@
 
 import { addBody, addDistanceJoint3D, createPhysicsWorld, isSleeping, removeBody, removeJoint3D, slotOf, step } from '@bitphysics/physics';
 import { describe, expect, it } from 'vitest';
+import { ScoreTally, TALLY_TIME } from '../../games/wrecking-ball/effects';
 import {
   aimAt,
   BALL_RADIUS,
   buildWreckingBall,
+  clearShare,
   clearTarget,
   fallenCount,
   HANG,
   HOOK_RANGE,
   pieceOnSwing,
   SLEW_RATE,
-  SWING_BUDGET,
   scorePieces,
   swayAmplitude,
+  swingBudget,
+  swingPar,
   swingStars,
   wreckingBallWorldOptions,
 } from '../../games/wrecking-ball/scene';
@@ -57,15 +60,19 @@ describe('wrecking-ball scene', () => {
 
   it('the clear target counts the pieces that stood above the ground, not the bottom row', () => {
     // A playtester flattened level 1 and stayed at 16 of the 19 then needed (70% of 27): its lowest
-    // bricks, logs and blocks lay where they stood. The target is now 70% of the raised pieces, so
-    // the raised pieces alone can clear any level.
+    // bricks, logs and blocks lay where they stood. The target is a share of the raised pieces, so
+    // the raised pieces alone can clear any level: 40% on level 1 (a first-time player lost it twice
+    // at 70%), 60% after.
+    expect([1, 2, 3, 4, 5, 9].map(clearShare)).toEqual([0.4, 0.6, 0.6, 0.6, 0.6, 0.6]);
+    expect(() => clearShare(0)).toThrow(/level must be an integer >= 1, got 0/);
     for (let level = 1; level <= 5; level++) {
       const { h } = build(level);
       const onGround = h.pieces.filter((p) => Math.abs(p.y0 - p.half[1]) < 1e-9).length;
       expect(onGround).toBeGreaterThan(0);
-      expect(clearTarget(h.pieces)).toBe(Math.ceil(0.7 * (h.pieces.length - onGround)));
+      expect(clearTarget(h.pieces, level)).toBe(Math.ceil(clearShare(level) * (h.pieces.length - onGround)));
     }
-    expect(clearTarget(build(1).h.pieces)).toBeLessThan(Math.ceil(0.7 * build(1).h.pieces.length));
+    // Level 1: 27 pieces, 6 of them on the ground; 9 of the 21 raised clear it.
+    expect(clearTarget(build(1).h.pieces, 1)).toBe(9);
   });
 
   it('keeps every structure standing without a hit, and slews at its rated speed', () => {
@@ -280,32 +287,37 @@ describe('wrecking-ball scene', () => {
     }
   });
 
-  it('a player tapping the biggest structure clears level 1 within its 4 swings', () => {
-    // Each tap aims at the structure with the most standing pieces (pieces whose start centres lie
-    // within 2.5 m of each other), at its piece a third of the way up, once the last swing is over and
-    // 0.5 s has passed: a plain plan a player can follow, not the best one. Measured: level 1 cleared
-    // in 2 swings (4 swings, 27.4 s of game time, before a swing struck low and followed through).
+  it('a first-time player tapping the top of each structure in turn clears level 1 within its swings', () => {
+    // Each tap aims at the highest standing piece of the next structure (pieces whose start centres
+    // lie within 2.5 m of each other) that still has one, 2 s after the last swing's moves are over
+    // (once the count has settled): what the eye goes to, not the best plan. At 70% of the raised
+    // pieces (15) this took 5 swings (5, 11, 11, 14, 15 down), one more than the level allowed: a
+    // first-time player lost level 1 twice. Measured at 40% (9): 9 down in 2 swings (the tower, then
+    // the wall); over first taps a few steps apart (scripts/wrecking-ball-par.mjs) 2 or 3.
     const { world, h } = build(1);
+    const groups: (typeof h.pieces)[] = [];
+    for (const p of h.pieces) {
+      const g = groups.find((q) => Math.hypot(q[0]!.x0 - p.x0, q[0]!.z0 - p.z0) < 2.5);
+      if (g) g.push(p);
+      else groups.push([p]);
+    }
     let swings = 0,
       wait = 30,
       clearedAt = -1;
-    for (let k = 0; k < 60 * 60 && clearedAt < 0; k++) {
-      if (h.controls.moves.length === 0 && --wait <= 0 && swings < SWING_BUDGET) {
-        const standing = h.pieces.filter((p) => !p.fallen);
-        const near = (p: (typeof standing)[number]) => standing.filter((q) => Math.hypot(q.x0 - p.x0, q.z0 - p.z0) < 2.5);
-        let biggest = standing[0]!;
-        for (const p of standing) if (near(p).length > near(biggest).length) biggest = p;
-        const group = near(biggest).sort((a, b) => a.y0 - b.y0);
-        aimAt(world, h, group[Math.floor(group.length / 3)]!.body);
+    for (let k = 0; k < 60 * 30 && clearedAt < 0; k++) {
+      if (h.controls.moves.length === 0 && --wait <= 0 && swings < swingBudget(1)) {
+        const live = groups.filter((g) => g.some((p) => !p.fallen));
+        const top = live[swings % live.length]!.filter((p) => !p.fallen).reduce((a, b) => (b.y0 > a.y0 ? b : a));
+        aimAt(world, h, top.body);
         swings++;
-        wait = 30;
+        wait = 120;
       }
       step(world);
       scorePieces(world, h.pieces);
-      if (fallenCount(h.pieces) >= clearTarget(h.pieces)) clearedAt = k / 60;
+      if (fallenCount(h.pieces) >= clearTarget(h.pieces, 1)) clearedAt = k / 60;
     }
     expect(clearedAt).toBeGreaterThan(0);
-    expect(swings).toBeLessThanOrEqual(SWING_BUDGET);
+    expect(swings).toBeLessThanOrEqual(swingBudget(1));
   });
 
   it('the swing of a held ball, let go: it meets the tower its line reaches, and nothing when pulled short', () => {
@@ -326,10 +338,35 @@ describe('wrecking-ball scene', () => {
     expect(pieceOnSwing(world, h.pieces, pulled(1), hook)).toBe(0);
   });
 
-  it('stars for a cleared level: 3 in 2 swings or fewer, 2 in 3, 1 in 4 (the budget), none uncleared', () => {
-    expect(SWING_BUDGET).toBe(4);
-    expect([1, 2, 3, 4].map((n) => swingStars(n, true))).toEqual([3, 3, 2, 1]);
-    expect(swingStars(2, false)).toBe(0);
+  it('pieces that fall together score one popup: a collapsing tower shows its sum once, not a pile of labels', () => {
+    // A tower's five blocks fall within 0.4 s of each other, a wall's brick 6 m away at the same
+    // time, and a block of the tower again 1 s later. Before, each fall had its own label: on a phone
+    // the tower's five stacked into one unreadable pile.
+    const tally = new ScoreTally();
+    for (let i = 0; i < 5; i++) tally.add(4 + 0.3 * i, 1 + 0.7 * i, 2, 10 + 7 * i, 0.1 * i);
+    tally.add(-2, 0.5, 2, 15, 0.2);
+    expect(tally.due(0.3)).toEqual([]);
+    const due = tally.due(0.1 * 4 + TALLY_TIME);
+    expect(due.map((t) => [t.points, t.pieces])).toEqual([
+      [10 + 17 + 24 + 31 + 38, 5],
+      [15, 1],
+    ]);
+    // Over the highest of the tower's blocks.
+    expect(due[0]!.y).toBeCloseTo(1 + 0.7 * 4, 12);
+    tally.add(4, 0.4, 2, 10, 1.5);
+    expect(tally.due(1.5 + TALLY_TIME).map((t) => t.points)).toEqual([10]);
+    expect(() => tally.add(0, 0, 0, -1, 0)).toThrow(/points must be >= 0, got -1/);
+  });
+
+  it('swings and stars: level 1 allows 4 (3 stars in 2), levels 2 and 3 5 (in 3), later 6 (in 4); none uncleared', () => {
+    // Level 3 took a stranger's taps 4 to 6 swings against its 4 (scripts/wrecking-ball-par.mjs,
+    // 70% to clear); at 60% 3 to 5 in most games, and it allows 5.
+    expect([1, 2, 3, 4, 5, 12].map(swingBudget)).toEqual([4, 5, 5, 6, 6, 6]);
+    expect([1, 3, 5].map(swingPar)).toEqual([2, 3, 4]);
+    expect([1, 2, 3, 4].map((n) => swingStars(n, true, 1))).toEqual([3, 3, 2, 1]);
+    expect([1, 2, 3, 4, 5].map((n) => swingStars(n, true, 3))).toEqual([3, 3, 3, 2, 1]);
+    expect(swingStars(2, false, 1)).toBe(0);
+    expect(() => swingBudget(1.5)).toThrow(/swingBudget: level must be an integer >= 1, got 1.5/);
   });
 });
 

@@ -109,8 +109,8 @@ function showTouchHint(stage: HTMLElement, controls: readonly ControlHint[]): vo
   const lines: HTMLElement[] = [];
   for (const c of controls) {
     const gesture = touchGesture(c);
-    // The toolbar's own buttons (pause, step, reset) are in view already.
-    if (gesture === '' || /\bbutton$/i.test(gesture) || gesture.toLowerCase() === c.action.toLowerCase() || lines.length === 4) continue;
+    // The toolbar's own buttons (pause, step, reset) and a game's on-screen buttons are in view already.
+    if (gesture === '' || /\bbuttons?$/i.test(gesture) || gesture.toLowerCase() === c.action.toLowerCase() || lines.length === 4) continue;
     lines.push(controlLine('b', gesture, c.action));
   }
   if (lines.length === 0) return;
