@@ -1,5 +1,6 @@
 /**
- * Wrecking ball, the time from a tap to the ball's hit, scripted over levels 1, 3 and 5: a player taps
+ * Wrecking ball, the time from a tap to the ball's hit, scripted over levels 1 and 5 (the first and
+ * the last; scripts/wrecking-ball-par.mjs plays every level): a player taps
  * each structure in turn (its standing piece a third of the way up), the next tap 0.5 s after the
  * last swing's moves end (the ball still swinging from the hit, as an eager player leaves it). For
  * each tap: seconds until the ball first touches the tapped piece's structure (a contact begin
@@ -80,8 +81,8 @@ function play(level: number): Tap[] {
 }
 
 describe('wrecking-ball: tap to hit', () => {
-  it('measures the time from a tap to the hit over levels 1, 3 and 5', { timeout: 900_000 }, () => {
-    const taps = [1, 3, 5].flatMap(play);
+  it('measures the time from a tap to the hit over levels 1 and 5', { timeout: 900_000 }, () => {
+    const taps = [1, 5].flatMap(play);
     const hit = taps
       .filter((t) => t.toHit < Number.POSITIVE_INFINITY)
       .map((t) => t.toHit)
@@ -102,7 +103,8 @@ describe('wrecking-ball: tap to hit', () => {
     // 12 tapped pieces fell, median 3.27 s, mean 3.59 s, longest 5.13 s (earlier, 25 taps over the
     // levels' structures: 25 hit, 19 fell, median 3.22 s; before the planned swing, with wind-ups:
     // 23 taps, 15 hit, 13 fell, median 6.87 s, mean 9.34 s, longest 14.18 s).
-    expect(taps.length).toBeGreaterThan(8);
+    // Measured over levels 1 and 5: 8 taps, all hit and fell, median 3.27 s, longest 5.12 s.
+    expect(taps.length).toBeGreaterThan(5);
     expect(hit.length).toBeGreaterThanOrEqual(taps.length - 2);
     expect(median).toBeLessThan(4);
     expect(taps.filter((t) => t.fell).length).toBeGreaterThanOrEqual(Math.ceil(0.6 * taps.length));
