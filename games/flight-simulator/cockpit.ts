@@ -54,6 +54,17 @@ export function createCockpit(stage: HTMLElement, attitudeSize: number): Cockpit
   let slot = { x: 0, y: 0, size: attitudeSize };
   let drawn: { name: string; x: number; y: number; r: number; value: number }[] = [];
 
+  /** A round instrument's face: a dark disc of radius r (px) at (x, y) with a grey rim. */
+  function dialFace(g: CanvasRenderingContext2D, x: number, y: number, r: number): void {
+    g.fillStyle = '#0c0f13';
+    g.beginPath();
+    g.arc(x, y, r, 0, 2 * Math.PI);
+    g.fill();
+    g.strokeStyle = '#5a6270';
+    g.lineWidth = 3;
+    g.stroke();
+  }
+
   /** A round gauge at (x, y) of radius r: its face, ticks from `from` to `to` (values, with `ticks` steps, at angles a0 to a1, rad), the needle at `value`, the digits `text` and its name. */
   function gauge(
     g: CanvasRenderingContext2D,
@@ -63,13 +74,7 @@ export function createCockpit(stage: HTMLElement, attitudeSize: number): Cockpit
     r: number,
     o: { from: number; to: number; ticks: number; a0: number; a1: number; value: number; text: string },
   ): void {
-    g.fillStyle = '#0c0f13';
-    g.beginPath();
-    g.arc(x, y, r, 0, 2 * Math.PI);
-    g.fill();
-    g.strokeStyle = '#5a6270';
-    g.lineWidth = 3;
-    g.stroke();
+    dialFace(g, x, y, r);
     const angle = (v: number): number => o.a0 + ((o.a1 - o.a0) * (v - o.from)) / (o.to - o.from);
     g.strokeStyle = '#e8ecf1';
     g.fillStyle = '#e8ecf1';
@@ -117,13 +122,7 @@ export function createCockpit(stage: HTMLElement, attitudeSize: number): Cockpit
 
   /** The compass: a card marked every 30 degrees (N, E, S, W) turned by the heading under a fixed mark at the top. */
   function compass(g: CanvasRenderingContext2D, x: number, y: number, r: number, heading: number): void {
-    g.fillStyle = '#0c0f13';
-    g.beginPath();
-    g.arc(x, y, r, 0, 2 * Math.PI);
-    g.fill();
-    g.strokeStyle = '#5a6270';
-    g.lineWidth = 3;
-    g.stroke();
+    dialFace(g, x, y, r);
     g.textAlign = 'center';
     g.textBaseline = 'middle';
     for (let d = 0; d < 360; d += 10) {
