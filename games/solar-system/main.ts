@@ -1237,6 +1237,12 @@ style.textContent = `
 @keyframes ss-pulse { 50% { box-shadow: 0 0 0 4px rgba(159, 211, 255, 0.55); } }
 .ss-pad button { min-width: 48px; }
 .ss-pad button.ss-go { background: #1f7a3a; border-color: #7ee2a0; min-width: 76px; }
+/* A 390 px phone: the seven buttons of a mission (aim x4, Launch, Wait, Hint) on one row, still 44 px. */
+@media (max-width: 440px) {
+  .bp-touchbar.ss-pad { gap: 4px; }
+  .bp-touchbar.ss-pad button { min-width: 44px; padding: 0 5px; }
+  .bp-touchbar.ss-pad button.ss-go { min-width: 62px; }
+}
 details.ss-table summary { cursor: pointer; color: #cfd8e6; }
 `;
 document.head.append(style);
