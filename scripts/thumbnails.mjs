@@ -43,6 +43,15 @@ try {
     try {
       await page.goto(`${site.url}${entry.folder}/${queryOf.get(entry.folder) ?? ''}`);
       await page.waitForFunction(() => document.body.dataset.ready === 'true', null, { timeout: 60_000 });
+      // A three.js page draws at half resolution under software WebGL (game-kit SOFTWARE_PIXEL_RATIO),
+      // as headless Chromium is: a thumbnail is drawn once, so at full resolution.
+      await page.evaluate(() => {
+        const renderer = window.game?.app?.renderer;
+        if (renderer && typeof renderer.setPixelRatio === 'function' && renderer.getPixelRatio?.() < 1) {
+          renderer.setPixelRatio(1);
+          window.dispatchEvent(new Event('resize'));
+        }
+      });
       // Play `seconds` of simulated time (independent of how fast software WebGL draws).
       await page.waitForFunction((s) => (window.game?.world?.time ?? 0) >= s, seconds, { timeout: 120_000 });
       // Hide every overlay but keep the canvas: it sits inside the page layout's stage, so its
