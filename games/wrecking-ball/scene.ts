@@ -954,8 +954,11 @@ export function craneSystem(h: WreckingBallHandles): (world: PhysicsWorld) => vo
     if (move !== undefined) {
       // A timed move: the rest of the way along a straight line at a constant velocity over the
       // time left (`aimAt` plans the hook's velocities), held to the jib's reach.
+      // A move ends on the substep that has a substep's time left or less (within a part in a
+      // million): summed substeps fall short of the move's duration by rounding, and waiting one
+      // more substep for that sliver halted the hook for a substep at the end of every move.
       const left = move.duration - move.elapsed,
-        f = Math.min(1, dt / Math.max(left, 1e-9));
+        f = left <= dt * (1 + 1e-6) ? 1 : dt / left;
       if (move.release === true && move.elapsed === 0) k.released++;
       const [gx, , gz] = hookPosition(move);
       const x = before[0] + f * (gx - before[0]),
