@@ -46,6 +46,16 @@ export const HOIST_SPEED = 2;
 export const CHAIN_LINKS = 8;
 export const LINK_RADIUS = 0.07;
 export const LINK_HALF = 0.22;
+/**
+ * Density of the chain's links, kg/m^3: each link about 8 kg, the chain 66 kg against the ball's
+ * 5.4 t. The rope from the hook to the ball carries the load (see buildWreckingBall); the links show
+ * the chain. When the hook turned with the ball swinging, the links' joints stretched and folded
+ * (they still do, and the page draws the chain through the links' centres); as steel (7800, the
+ * chain 510 kg) the tangle held the ball up to 2 m above where its rope let it hang, for a second
+ * or more, and a swing planned for a ball on its rope flew over the piece aimed at. At this density
+ * the rope stays taut and the ball arrives within a few centimetres of the planned height.
+ */
+export const LINK_DENSITY = 1000;
 /** Time constant, s, with which the ball's swing decays (see buildWreckingBall). */
 export const SWAY_DAMPING_TIME = 4;
 /** The ball: radius, m, and density, kg/m^3 (steel). */
@@ -325,7 +335,7 @@ export function buildWreckingBall(world: PhysicsWorld, options: WreckingBallOpti
   for (let i = 0; i < CHAIN_LINKS; i++) {
     const cy = top - pitch / 2;
     const link = addBody(world, { position: [hx, cy, hz] });
-    addShape3D(world, link, { type: 'capsule', radius: LINK_RADIUS, halfHeight: LINK_HALF, density: 7800 });
+    addShape3D(world, link, { type: 'capsule', radius: LINK_RADIUS, halfHeight: LINK_HALF, density: LINK_DENSITY });
     addBallJoint3D(world, { a: prev, b: link, anchor: [hx, top, hz] });
     links.push(link);
     prev = link;
