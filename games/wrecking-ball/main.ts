@@ -1091,9 +1091,9 @@ readout.className = 'bp-hud';
 readout.dataset.hud = 'score';
 readout.style.cssText = 'position: static; margin-top: 8px';
 pageLayout().info.prepend(readout);
-/** Shows or hides the engineer's numbers (the kit's frame rate, bodies and steps lines). */
+/** Shows or hides the engineer's numbers (the kit's bodies and steps lines; the frame rate always shows). */
 function showStats(on: boolean): void {
-  for (const line of ['fps', 'bodies', 'steps']) {
+  for (const line of ['bodies', 'steps']) {
     const el = shell.hud.readout.querySelector<HTMLElement>(`[data-hud="${line}"]`);
     if (el) el.hidden = !on;
   }
@@ -1188,14 +1188,14 @@ hint.dataset.hud = 'tap-hint';
 hint.dataset.sceneOverlay = '';
 hint.setAttribute('role', 'status');
 hint.style.cssText =
-  'position: absolute; left: 50%; top: 10px; transform: translateX(-50%); max-width: 90%; padding: 6px 12px; border-radius: 16px; background: rgba(16, 20, 28, 0.78); color: #ffe08a; font: 600 15px/1.3 system-ui, sans-serif; text-align: center; pointer-events: none; z-index: 2';
+  'position: absolute; left: 0; right: 0; top: 10px; margin: 0 auto; width: fit-content; max-width: 90%; padding: 6px 12px; border-radius: 16px; background: rgba(16, 20, 28, 0.78); color: #ffe08a; font: 600 15px/1.3 system-ui, sans-serif; text-align: center; pointer-events: none; z-index: 2';
 pageLayout().stage.append(hint);
 /** Seconds a hint after a tap on open ground stays. */
 const HINT_SHOWN = 3;
 /** World time until which the open-ground hint shows. */
 let hintUntil = -1;
 const tapWord = touch ? 'Tap' : 'Click';
-/** The hint's text now ('' hides it). */
+/** The hint's text now ('' hides it); once the level is cleared, the level's end in large type. */
 function hintText(): string {
   const c = handles.controls;
   if (drag.body !== 0 && drag.body === handles.ball) {
@@ -1204,7 +1204,13 @@ function hintText(): string {
     if (swingLow > LOW_SWING + 0.6) return `The ball swings high: lower the hook (${touch ? 'Down' : 'E'}) to swing it low`;
     return 'Pull so the bright dashes cross a block, then let go';
   }
-  if (cleared || outOfSwings()) return '';
+  if (cleared) {
+    // The level's end, over the scene as the other games say it (the status line says it small).
+    const used = swingsUsed(),
+      stars = swingStars(used, true, handles.level);
+    return `Level ${handles.level} cleared in ${used} ${used === 1 ? 'swing' : 'swings'}! ${'★'.repeat(stars)}${'☆'.repeat(3 - stars)}`;
+  }
+  if (outOfSwings()) return '';
   if (shell.world.time < hintUntil) return `That moves the hook. ${tapWord} a block to swing the ball at it`;
   if (c.released === 0 && c.moves.length === 0 && aimed === 0) return `${tapWord} a block: the crane swings the ball into it`;
   return '';
@@ -1298,6 +1304,7 @@ function frame(): void {
     const text = hintText();
     if (hint.textContent !== text) hint.textContent = text;
     hint.style.display = text ? '' : 'none';
+    hint.style.fontSize = cleared ? '24px' : '15px';
     drawPlan();
     readout.textContent = params.debug
       ? `score ${banked + levelScore} · step ${stepMs.toFixed(1)} ms (worst ${worstMs.toFixed(1)}) · ${handles.pieces.length} pieces`

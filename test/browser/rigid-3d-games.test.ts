@@ -115,10 +115,11 @@ describe('3D rigid-body games in headless Chromium', () => {
       panned,
       20_000,
     );
-    // The side column gives the score, not the engineer's numbers (step time, frame rate, steps):
-    // those come with the debug layer (G).
+    // The side column gives the score and the frame rate, not the engineer's numbers (step time,
+    // bodies, steps): those come with the debug layer (G).
     expect(await g.page.locator('[data-hud="score"]').textContent()).toBe('score 0');
-    expect(await g.page.locator('[data-hud="fps"]').isHidden()).toBe(true);
+    expect(await g.page.locator('[data-hud="fps"]').isVisible()).toBe(true);
+    expect(await g.page.locator('[data-hud="steps"]').isHidden()).toBe(true);
     // Before the first swing a hint over the scene says what a click does.
     const hint = g.page.locator('[data-hud="tap-hint"]');
     expect(await hint.textContent()).toBe('Click a block: the crane swings the ball into it');
@@ -258,6 +259,22 @@ describe('3D rigid-body games in headless Chromium', () => {
     await g.press('p');
     await g.frames(2);
     expect(await planBox()).toEqual(pausedPlan);
+    // A cleared level says so over the scene in large type (the status line says it small): every
+    // piece is thrown here, so the level clears within two simulated seconds.
+    await g.page.evaluate(() => {
+      const game = window.game as unknown as WB & { cleared(): boolean };
+      const V = (game.world.components as unknown as { Velocity: { x: Float64Array; y: Float64Array } }).Velocity;
+      for (const p of game.handles().pieces) {
+        V.x[p.body] = 6;
+        V.y[p.body] = 3;
+      }
+      for (let i = 0; i < 120 && !game.cleared(); i++) game.step();
+    });
+    await g.waitFor(
+      () => /^Level 1 cleared in \d+ swings?! [★☆]{3}$/.test(document.querySelector('[data-hud="tap-hint"]')!.textContent!),
+      null,
+    );
+    expect(await hint.isVisible()).toBe(true);
     expect(g.errors).toEqual([]);
     await g.close();
   });
