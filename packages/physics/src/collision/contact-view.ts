@@ -143,13 +143,15 @@ function ballContacts(world: PhysicsWorld, fn: (contact: Readonly<ContactView>) 
 interface ManifoldColumns {
   /** Manifolds in the buffer. */
   count: number;
+  /** Body and shape slots of manifold i (ContactView's fields of the same names). */
   bodyA: ArrayLike<number>;
   bodyB: ArrayLike<number>;
   shapeA: ArrayLike<number>;
   shapeB: ArrayLike<number>;
+  /** Unit normal of manifold i, from A to B. */
   nx: ArrayLike<number>;
   ny: ArrayLike<number>;
-  /** null in 2D (the normal's z is 0). */
+  /** Normal z of manifold i; null in 2D (where it is 0). */
   nz: ArrayLike<number> | null;
   /** Points of manifold i. */
   points: ArrayLike<number>;
