@@ -171,15 +171,7 @@ export function addBodyAs(world: PhysicsWorld, options: BodyOptions, where: stri
   addComponent(world, eid, c.Position);
   addComponent(world, eid, c.Velocity);
   addComponent(world, eid, c.Mass);
-  if (options.position) {
-    const p = options.position;
-    c.Position.x[eid] = p[0]!;
-    c.Position.y[eid] = p[1]!;
-    c.Position.z[eid] = d === 3 ? p[2]! : 0;
-    c.PreviousPosition.x[eid] = p[0]!;
-    c.PreviousPosition.y[eid] = p[1]!;
-    c.PreviousPosition.z[eid] = d === 3 ? p[2]! : 0;
-  }
+  if (options.position) placeBody(world, eid, options.position);
   if (isStatic) {
     addComponent(world, eid, c.Static);
     setMassUnchecked(world, eid, 0);
@@ -289,14 +281,7 @@ export function addParticle(world: PhysicsWorld, options: ParticleOptions = {}):
   addComponent(world, eid, c.Velocity);
   const p = options.position,
     v = options.velocity;
-  if (p) {
-    c.Position.x[eid] = p[0]!;
-    c.Position.y[eid] = p[1]!;
-    c.Position.z[eid] = d === 3 ? p[2]! : 0;
-    c.PreviousPosition.x[eid] = p[0]!;
-    c.PreviousPosition.y[eid] = p[1]!;
-    c.PreviousPosition.z[eid] = d === 3 ? p[2]! : 0;
-  }
+  if (p) placeBody(world, eid, p);
   if (v) {
     c.Velocity.x[eid] = v[0]!;
     c.Velocity.y[eid] = v[1]!;
@@ -558,12 +543,21 @@ export function setPosition(world: PhysicsWorld, eid: number, position: ArrayLik
   if (!hasComponent(world, slot, c.Position)) resolveKind(world, eid, 'body', where);
   assertVector(where, 'position', position, world.dimensions);
   wakeIsland(world, slot);
-  const z = world.dimensions === 3 ? position[2]! : 0;
-  c.Position.x[slot] = position[0]!;
-  c.Position.y[slot] = position[1]!;
+  placeBody(world, slot, position);
+}
+
+/**
+ * Puts entity `slot` at `p` (m; z = 0 in a 2D world) with no motion since the last step: Position
+ * and PreviousPosition both p. `p` must be checked already.
+ */
+function placeBody(world: PhysicsWorld, slot: number, p: ArrayLike<number>): void {
+  const c = world.components;
+  const z = world.dimensions === 3 ? p[2]! : 0;
+  c.Position.x[slot] = p[0]!;
+  c.Position.y[slot] = p[1]!;
   c.Position.z[slot] = z;
-  c.PreviousPosition.x[slot] = position[0]!;
-  c.PreviousPosition.y[slot] = position[1]!;
+  c.PreviousPosition.x[slot] = p[0]!;
+  c.PreviousPosition.y[slot] = p[1]!;
   c.PreviousPosition.z[slot] = z;
 }
 

@@ -18,6 +18,7 @@ import type { PhysicsWorld } from '../world/options.js';
 import { addComponentIfMissing } from '../world/options.js';
 import { ensureShapeStore, SHAPE_STRIDE } from '../world/shape-store-2d.js';
 import { addBodyAs, type BodyOptions, createSlot } from './api.js';
+import { unlinkShape } from './shape-list.js';
 
 /**
  * Shapes of 2D bodies: adding them, their filter, and the body's mass from them.
@@ -407,13 +408,7 @@ function removeShapesOf(world: PhysicsWorld, eid: number): void {
   const S = world.components.Shape;
   if (hasComponent(world, eid, S) && S.body[eid] !== eid) {
     const b = S.body[eid]!;
-    if (st.firstShape[b] === eid) st.firstShape[b] = S.next[eid]!;
-    else
-      for (let e = st.firstShape[b]!; e !== 0; e = S.next[e]!)
-        if (S.next[e] === eid) {
-          S.next[e] = S.next[eid]!;
-          break;
-        }
+    unlinkShape(st.firstShape, S.next, b, eid);
     S.next[eid] = 0;
     // A dynamic body's mass follows its remaining shapes.
     const c = world.components;

@@ -26,6 +26,7 @@ import {
 import { createSlot, currentHandle, resolveEntity, resolveKind } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { setInertiaUnchecked } from './rigid.js';
+import { unlinkShape } from './shape-list.js';
 
 /**
  * Shapes of 3D bodies: adding them (a body with several is a compound), and the body's mass, centre
@@ -446,13 +447,7 @@ function removeShapes3DOf(world: PhysicsWorld, eid: number): void {
   if (s.body[eid] !== 0 && s.first[eid] === 0) {
     // A shape removed on its own: unlink it.
     const b = s.body[eid]!;
-    if (s.first[b] === eid) s.first[b] = s.next[eid]!;
-    else
-      for (let e = s.first[b]!; e !== 0; e = s.next[e]!)
-        if (s.next[e] === eid) {
-          s.next[e] = s.next[eid]!;
-          break;
-        }
+    unlinkShape(s.first, s.next, b, eid);
     s.body[eid] = 0;
     s.next[eid] = 0;
     return;

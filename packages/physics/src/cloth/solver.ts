@@ -100,9 +100,9 @@ export function clothSystem(world: PhysicsWorld): void {
     for (let i = 0; i < np; i += CHUNK) predictPoints(cl, sub > 0, i, Math.min(np, i + CHUNK));
     if (pins > 0) projectSoftPins(world, cl);
     // Project: inextensible links, then the compliant ones (one pass; their multipliers restart each substep).
-    for (let l = 0; l < rigid; l += CHUNK) projectLinks(cl, l, Math.min(rigid, l + CHUNK));
-    if (sub < S - 1) for (let l = rigid; l < n; l += CHUNK) projectLinks(cl, l, Math.min(n, l + CHUNK));
-    else for (let l = rigid; l < n; l += CHUNK) projectLinksRecording(cl, l, Math.min(n, l + CHUNK));
+    for (let l = 0; l < rigid; l += CHUNK) projectLinks(cl, l, Math.min(rigid, l + CHUNK), false);
+    const last = sub === S - 1;
+    for (let l = rigid; l < n; l += CHUNK) projectLinks(cl, l, Math.min(n, l + CHUNK), last);
     if (box.enabled) for (let i = 0; i < np; i += CHUNK) projectBoundary(cl, box, i, Math.min(np, i + CHUNK));
   }
   for (let i = 0; i < np; i += CHUNK) scatterPoints(cl, c, i, Math.min(np, i + CHUNK));
@@ -305,34 +305,11 @@ function alongWall(at: number, from: number, depth: number, mu: number, mus: num
   return at - (Math.min(size, mu * depth) * move) / size;
 }
 
-/** One Gauss-Seidel pass over the packed links [from, to). */
-function projectLinks(cl: ClothState, from: number, to: number): void {
-  const xb = cl.buffer,
-    I = cl.pair,
-    F = cl.solve;
-  for (let l = from; l < to; l++) {
-    const oa = I[PAIR_STRIDE * l + PAIR_A]!,
-      ob = I[PAIR_STRIDE * l + PAIR_B]!;
-    const ax = xb[oa + PT_X]!,
-      ay = xb[oa + PT_Y]!,
-      bx = xb[ob + PT_X]!,
-      by = xb[ob + PT_Y]!;
-    const dx = bx - ax,
-      dy = by - ay;
-    const p = F[SOLVE_STRIDE * l + SOLVE_P]!,
-      d2 = dx * dx + dy * dy;
-    const ks = F[SOLVE_STRIDE * l + SOLVE_K]! * ((3 * p - d2) / (p + d2)),
-      sa = xb[oa + PT_INV_MASS]! * ks,
-      sb = xb[ob + PT_INV_MASS]! * ks;
-    xb[oa + PT_X] = ax - sa * dx;
-    xb[oa + PT_Y] = ay - sa * dy;
-    xb[ob + PT_X] = bx + sb * dx;
-    xb[ob + PT_Y] = by + sb * dy;
-  }
-}
-
-/** `projectLinks`, also keeping each link's multiplier in `lambda` (the last substep's, for break forces). */
-function projectLinksRecording(cl: ClothState, from: number, to: number): void {
+/**
+ * One Gauss-Seidel pass over the packed links [from, to); with `record`, also keeps each link's
+ * multiplier in `lambda` (the last substep's, for break forces).
+ */
+function projectLinks(cl: ClothState, from: number, to: number, record: boolean): void {
   const xb = cl.buffer,
     I = cl.pair,
     F = cl.solve,
@@ -352,7 +329,7 @@ function projectLinksRecording(cl: ClothState, from: number, to: number): void {
       sa = xb[oa + PT_INV_MASS]! * ks,
       sb = xb[ob + PT_INV_MASS]! * ks;
     // The multiplier of this projection: dlambda = -C / D = (r - L) / D = (s / D) L, with s / D = ks.
-    lam[l] = ks * Math.sqrt(d2);
+    if (record) lam[l] = ks * Math.sqrt(d2);
     xb[oa + PT_X] = ax - sa * dx;
     xb[oa + PT_Y] = ay - sa * dy;
     xb[ob + PT_X] = bx + sb * dx;

@@ -101,17 +101,8 @@ export function ensure(n: number): void {
   sc.body = grow(sc.body, m);
   sc.order = grow(sc.order, m);
   sc.ball = grow(sc.ball, m);
-  sc.minX = grow(sc.minX, m);
-  sc.maxX = grow(sc.maxX, m);
-  sc.minY = grow(sc.minY, m);
-  sc.maxY = grow(sc.maxY, m);
-  sc.minZ = grow(sc.minZ, m);
-  sc.maxZ = grow(sc.maxZ, m);
-  sc.px = grow(sc.px, m);
-  sc.py = grow(sc.py, m);
-  sc.pz = grow(sc.pz, m);
+  for (const k of ['minX', 'maxX', 'minY', 'maxY', 'minZ', 'maxZ', 'px', 'py', 'pz', 'speed'] as const) sc[k] = grow(sc[k], m);
   sc.R = grow(sc.R, 9 * m);
-  sc.speed = grow(sc.speed, m);
 }
 
 /**
@@ -124,32 +115,13 @@ export function ensure(n: number): void {
  */
 export const SHAPE_SPECULATIVE_DISTANCE = 0.02;
 
-export const colA: Collider3D = {
-  kind: 0,
-  px: 0,
-  py: 0,
-  pz: 0,
-  R: new Float64Array(9),
-  radius: 0,
-  hy: 0,
-  hull: null,
-  box: 0,
-  hx: 0,
-  hz: 0,
-};
-export const colB: Collider3D = {
-  kind: 0,
-  px: 0,
-  py: 0,
-  pz: 0,
-  R: new Float64Array(9),
-  radius: 0,
-  hy: 0,
-  hull: null,
-  box: 0,
-  hx: 0,
-  hz: 0,
-};
+/** A collider with every field zero (kind 0, no hull), to be filled by `collider`. */
+function emptyCollider(): Collider3D {
+  return { kind: 0, px: 0, py: 0, pz: 0, R: new Float64Array(9), radius: 0, hy: 0, hull: null, box: 0, hx: 0, hz: 0 };
+}
+
+export const colA: Collider3D = emptyCollider();
+export const colB: Collider3D = emptyCollider();
 export const manifold: Manifold3D = createManifold3D();
 
 export function collider(world: PhysicsWorld, s: Shape3DStore, i: number, out: Collider3D): void {

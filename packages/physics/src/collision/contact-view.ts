@@ -139,12 +139,39 @@ function ballContacts(world: PhysicsWorld, fn: (contact: Readonly<ContactView>) 
   return n;
 }
 
-/** The 2D shape manifolds of the last step (`previous` once the step rotated its buffers). */
-function shapeContacts2D(world: PhysicsWorld, fn: (contact: Readonly<ContactView>) => void): number {
-  const st = world.collision.shapes;
-  if (!st.active) return 0;
-  const buf = st.previous,
-    P = world.components.Position;
+/** The columns of a buffer of shape manifolds that `shapeContacts` reads (2D or 3D). */
+interface ManifoldColumns {
+  /** Manifolds in the buffer. */
+  count: number;
+  /** Body and shape slots of manifold i (ContactView's fields of the same names). */
+  bodyA: ArrayLike<number>;
+  bodyB: ArrayLike<number>;
+  shapeA: ArrayLike<number>;
+  shapeB: ArrayLike<number>;
+  /** Unit normal of manifold i, from A to B. */
+  nx: ArrayLike<number>;
+  ny: ArrayLike<number>;
+  /** Normal z of manifold i; null in 2D (where it is 0). */
+  nz: ArrayLike<number> | null;
+  /** Points of manifold i. */
+  points: ArrayLike<number>;
+  /** Point slots a manifold (point p of manifold i is at stride i + p). */
+  stride: number;
+  /** Point anchors from body B's centre of mass, m; rz null in 2D. */
+  rx: ArrayLike<number>;
+  ry: ArrayLike<number>;
+  rz: ArrayLike<number> | null;
+  /** Normal impulse of each point, N s. */
+  impulse: ArrayLike<number>;
+  /** Separation of each point, m. */
+  separation: ArrayLike<number>;
+}
+
+/** The points of a buffer of shape manifolds, handed to `fn` in the reused view. */
+function shapeContacts(world: PhysicsWorld, buf: ManifoldColumns, fn: (contact: Readonly<ContactView>) => void): number {
+  const P = world.components.Position,
+    nz = buf.nz,
+    rz = buf.rz;
   let visited = 0;
   view.nz = 0;
   view.z = 0;
@@ -156,11 +183,13 @@ function shapeContacts2D(world: PhysicsWorld, fn: (contact: Readonly<ContactView
     view.shapeB = buf.shapeB[i]!;
     view.nx = buf.nx[i]!;
     view.ny = buf.ny[i]!;
-    for (let p = 0, m = buf.pointCount[i]!; p < m; p++) {
-      const q = 2 * i + p;
-      view.x = P.x[b]! + buf.rBx[q]!;
-      view.y = P.y[b]! + buf.rBy[q]!;
-      view.impulse = buf.totalNormalImpulse[q]!;
+    if (nz !== null) view.nz = nz[i]!;
+    for (let p = 0, m = buf.points[i]!; p < m; p++) {
+      const q = buf.stride * i + p;
+      view.x = P.x[b]! + buf.rx[q]!;
+      view.y = P.y[b]! + buf.ry[q]!;
+      if (rz !== null) view.z = P.z[b]! + rz[q]!;
+      view.impulse = buf.impulse[q]!;
       view.separation = buf.separation[q]!;
       view.kind = ContactKind.Shape;
       fn(view);
@@ -170,33 +199,22 @@ function shapeContacts2D(world: PhysicsWorld, fn: (contact: Readonly<ContactView
   return visited;
 }
 
+/** The 2D shape manifolds of the last step (`previous` once the step rotated its buffers). */
+function shapeContacts2D(world: PhysicsWorld, fn: (contact: Readonly<ContactView>) => void): number {
+  const st = world.collision.shapes;
+  if (!st.active) return 0;
+  const b = st.previous;
+  return shapeContacts(
+    world,
+    { ...b, nz: null, points: b.pointCount, stride: 2, rx: b.rBx, ry: b.rBy, rz: null, impulse: b.totalNormalImpulse },
+    fn,
+  );
+}
+
 /** The 3D shape manifolds of the last step. */
 function shapeContacts3D(world: PhysicsWorld, fn: (contact: Readonly<ContactView>) => void): number {
   const st = contact3DStateOf(world);
   if (st === undefined) return 0;
-  const buf = st.current,
-    P = world.components.Position;
-  let visited = 0;
-  for (let i = 0; i < buf.count; i++) {
-    const b = buf.bodyB[i]!;
-    view.bodyA = view.a = buf.bodyA[i]!;
-    view.bodyB = view.b = b;
-    view.shapeA = buf.shapeA[i]!;
-    view.shapeB = buf.shapeB[i]!;
-    view.nx = buf.nx[i]!;
-    view.ny = buf.ny[i]!;
-    view.nz = buf.nz[i]!;
-    for (let k = 0, m = buf.points[i]!; k < m; k++) {
-      const q = 4 * i + k;
-      view.x = P.x[b]! + buf.rbx[q]!;
-      view.y = P.y[b]! + buf.rby[q]!;
-      view.z = P.z[b]! + buf.rbz[q]!;
-      view.impulse = buf.ln[q]!;
-      view.separation = buf.sep[q]!;
-      view.kind = ContactKind.Shape;
-      fn(view);
-      visited++;
-    }
-  }
-  return visited;
+  const b = st.current;
+  return shapeContacts(world, { ...b, stride: 4, rx: b.rbx, ry: b.rby, rz: b.rbz, impulse: b.ln, separation: b.sep }, fn);
 }

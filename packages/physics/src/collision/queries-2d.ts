@@ -216,25 +216,7 @@ export function rayCastAll(world: PhysicsWorld, origin: ArrayLike<number>, trans
  */
 export function rayCast(world: PhysicsWorld, origin: ArrayLike<number>, translation: ArrayLike<number>): RayHit | null {
   checkRay('rayCast', world, origin, translation);
-  const px = origin[0]!,
-    py = origin[1]!,
-    dx = translation[0]!,
-    dy = translation[1]!;
-  let best: RayHit | null = null;
-  for (const e of colliders(world)) {
-    const b = worldGeometry(world, e, g);
-    if (!rayShape(px, py, dx, dy, g) || (best && hit.t >= best.fraction)) continue;
-    best = {
-      shape: currentHandle(world, e),
-      body: currentHandle(world, b),
-      fraction: hit.t,
-      x: px + hit.t * dx,
-      y: py + hit.t * dy,
-      nx: hit.nx,
-      ny: hit.ny,
-    };
-  }
-  return best;
+  return rayCastAll(world, origin, translation)[0] ?? null;
 }
 
 /**

@@ -81,6 +81,28 @@ export function gravitationalPotentialEnergy(world: PhysicsWorld): number {
 }
 
 /**
+ * The softened pair potential k w_a w_b / sqrt(r^2 + eps^2), J, summed over every pair of `ents`
+ * (each once, in query order); w by entity (mass, kg, or charge, C), k its constant with sign
+ * (-G for gravity, the Coulomb constant for charges), eps2 the softening squared, m^2.
+ */
+function pairPotential(world: PhysicsWorld, ents: ArrayLike<number>, w: Float64Array, k: number, eps2: number): number {
+  const P = world.components.Position;
+  const px = P.x,
+    py = P.y,
+    pz = P.z;
+  let sum = 0;
+  for (let i = 0; i < ents.length; i++) {
+    const a = ents[i]!;
+    for (let j = i + 1; j < ents.length; j++) {
+      const b = ents[j]!;
+      const r2 = (px[b]! - px[a]!) ** 2 + (py[b]! - py[a]!) ** 2 + (pz[b]! - pz[a]!) ** 2 + eps2;
+      if (r2 > 0) sum += (k * w[a]! * w[b]!) / Math.sqrt(r2);
+    }
+  }
+  return sum;
+}
+
+/**
  * Newtonian potential energy, J: -G m_i m_j / sqrt(r^2 + eps^2) summed over mutual-gravity pairs
  * (the softened Plummer potential whose gradient the force law uses), plus -G M m / sqrt(r^2 + eps_a^2)
  * for every attractor and every dynamic body it pulls. Direct O(N^2) sum, whatever the force method.
@@ -95,16 +117,7 @@ export function newtonianPotentialEnergy(world: PhysicsWorld): number {
     py = c.Position.y,
     pz = c.Position.z,
     m = c.Mass.value;
-  let sum = 0;
-  const mutual = query(world, [c.MutualGravity, c.Position, c.Mass, c.Force]);
-  for (let i = 0; i < mutual.length; i++) {
-    const a = mutual[i]!;
-    for (let j = i + 1; j < mutual.length; j++) {
-      const b = mutual[j]!;
-      const r2 = (px[b]! - px[a]!) ** 2 + (py[b]! - py[a]!) ** 2 + (pz[b]! - pz[a]!) ** 2 + eps2;
-      if (r2 > 0) sum -= (G * m[a]! * m[b]!) / Math.sqrt(r2);
-    }
-  }
+  let sum = pairPotential(world, query(world, [c.MutualGravity, c.Position, c.Mass, c.Force]), m, -G, eps2);
   const sources = query(world, [c.Attractor, c.Position]);
   if (sources.length > 0) {
     const bodies = query(world, [c.Position, c.Force, c.Mass, Not(c.Static), Not(c.Kinematic)]);
@@ -166,15 +179,7 @@ export function electricPotentialEnergy(world: PhysicsWorld): number {
     pz = c.Position.z,
     q = c.Charge.value;
   const ents = query(world, [c.Charge, c.Position]);
-  let sum = 0;
-  for (let i = 0; i < ents.length; i++) {
-    const a = ents[i]!;
-    for (let j = i + 1; j < ents.length; j++) {
-      const b = ents[j]!;
-      const r2 = (px[b]! - px[a]!) ** 2 + (py[b]! - py[a]!) ** 2 + (pz[b]! - pz[a]!) ** 2 + eps2;
-      if (r2 > 0) sum += (K * q[a]! * q[b]!) / Math.sqrt(r2);
-    }
-  }
+  let sum = pairPotential(world, ents, q, K, eps2);
   fieldsAt(world, world.time, E, B);
   if (E[0] !== 0 || E[1] !== 0 || E[2] !== 0) {
     for (let i = 0; i < ents.length; i++) {

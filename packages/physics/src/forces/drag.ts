@@ -60,8 +60,8 @@ export const quadraticDragSystem: ForceLaw = (world: PhysicsWorld): void => drag
  * The force of linear drag (`quadratic` false: c = k) or quadratic drag (true: c = k |v - u|),
  * F = -c (v - u), on every body with the law's component, and the stiff bodies left to
  * `stiffDragSystem` (c / m >= STIFF_RATE / h): linear drag records that some body was stiff, quadratic
- * drag stamps each stiff body. In still air the kernel `linearDragCalm` or `quadraticDragCalm` adds the
- * forces, on the world's threads when that pays. Does nothing in a substep that runs the fused pass.
+ * drag stamps each stiff body. In still air the kernel `dragCalm` adds the forces, on the world's
+ * threads when that pays. Does nothing in a substep that runs the fused pass.
  */
 function dragForces(world: PhysicsWorld, quadratic: boolean): void {
   if (fusedForcesOn(world)) return;
@@ -84,9 +84,9 @@ function dragForces(world: PhysicsWorld, quadratic: boolean): void {
     stiff = runParallel(
       world,
       quadratic ? 'quadraticDragSystem' : 'linearDragSystem',
-      quadratic ? quadraticDragCalm : linearDragCalm,
+      dragCalm,
       [k, inv, vx, vy, vz, fx, fy, fz],
-      [limit],
+      [limit, quadratic ? 1 : 0],
       ents.length,
       ents,
     );
@@ -253,10 +253,12 @@ export const liftSystem: ForceLaw = (world: PhysicsWorld): void => {
 };
 
 /**
- * Linear drag in still air (forces/drag.ts): F -= k v unless k / m >= limit (then the body is stiff and
- * left to the exact decay). A: k, inv, vx, vy, vz, fx, fy, fz. P: limit. Returns the count of stiff bodies.
+ * Drag in still air (forces/drag.ts): F -= c v with c = k (linear, P[1] = 0) or c = k |v| (quadratic,
+ * P[1] = 1), unless c / m >= limit (then the body is stiff: no force here; it is left to the exact
+ * update, quadratic bodies stamped by the caller). A: k, inv, vx, vy, vz, fx, fy, fz. P: limit,
+ * quadratic. Returns the count of stiff bodies.
  */
-export function linearDragCalm(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
+export function dragCalm(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
   const k = A[0] as Float64Array,
     inv = A[1] as Float64Array;
   const vx = A[2] as Float64Array,
@@ -265,38 +267,8 @@ export function linearDragCalm(A: KernelArray[], P: Float64Array, ids: Int32Arra
   const fx = A[5] as Float64Array,
     fy = A[6] as Float64Array,
     fz = A[7] as Float64Array;
-  const limit = P[0]!;
-  const list = ids as Int32Array;
-  let stiff = 0;
-  for (let i = lo; i < hi; i++) {
-    const e = list[i]!;
-    const c = k[e]!;
-    if (c * inv[e]! >= limit) {
-      stiff++;
-      continue;
-    }
-    fx[e] = fx[e]! - c * vx[e]!;
-    fy[e] = fy[e]! - c * vy[e]!;
-    fz[e] = fz[e]! - c * vz[e]!;
-  }
-  return stiff;
-}
-
-/**
- * Quadratic drag in still air (forces/drag.ts): F -= k |v| v unless k |v| / m >= limit (then the body
- * is stiff: no force here; the caller stamps it for the exact update). A: k, inv, vx, vy, vz, fx, fy,
- * fz. P: limit. Returns the count of stiff bodies.
- */
-export function quadraticDragCalm(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
-  const k = A[0] as Float64Array,
-    inv = A[1] as Float64Array;
-  const vx = A[2] as Float64Array,
-    vy = A[3] as Float64Array,
-    vz = A[4] as Float64Array;
-  const fx = A[5] as Float64Array,
-    fy = A[6] as Float64Array,
-    fz = A[7] as Float64Array;
-  const limit = P[0]!;
+  const limit = P[0]!,
+    quadratic = P[1] === 1;
   const list = ids as Int32Array;
   let stiff = 0;
   for (let i = lo; i < hi; i++) {
@@ -304,7 +276,7 @@ export function quadraticDragCalm(A: KernelArray[], P: Float64Array, ids: Int32A
     const x = vx[e]!,
       y = vy[e]!,
       z = vz[e]!;
-    const c = k[e]! * Math.sqrt(x * x + y * y + z * z);
+    const c = quadratic ? k[e]! * Math.sqrt(x * x + y * y + z * z) : k[e]!;
     if (c * inv[e]! >= limit) {
       stiff++;
       continue;

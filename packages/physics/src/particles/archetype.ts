@@ -436,24 +436,31 @@ export function bornSlotQueued(world: PhysicsWorld, a: Archetype): number {
 /** The pending mark of the slot `bornSlotQueued` returned last (0: none). */
 export let queuedPending = 0;
 
+/**
+ * Takes the slot bitecs hands out next (the slot freed last, else a new one) into the entity index as
+ * alive, and raises its spawn stamp (world.spawnStamp) by one. @returns the slot.
+ */
+function takeSlot(ix: EcsInternals['entityIndex'], spawn: Uint32Array): number {
+  const alive = ix.aliveCount;
+  let e: number;
+  if (alive < ix.dense.length) e = ix.dense[alive]!;
+  else {
+    e = ++ix.maxId;
+    ix.dense.push(e);
+  }
+  ix.sparse[e] = alive;
+  ix.aliveCount = alive + 1;
+  spawn[e] = spawn[e]! + 1;
+  return e;
+}
+
 function born(world: PhysicsWorld, a: Archetype, queued: boolean): number {
   const table = a.table,
     ecs = ecsOf(world);
   if (table.slotArchetype.length === 0) slotArrays(table);
   // A hook between births may have made a query.
   if (a.queryCount !== ecs.queries.size) refreshQueries(ecs, a);
-  const ix = ecs.entityIndex;
-  let e: number;
-  if (ix.aliveCount < ix.dense.length) {
-    e = ix.dense[ix.aliveCount]!;
-    ix.sparse[e] = ix.aliveCount;
-  } else {
-    e = ++ix.maxId;
-    ix.dense.push(e);
-    ix.sparse[e] = ix.aliveCount;
-  }
-  ix.aliveCount++;
-  world.spawnStamp[e] = world.spawnStamp[e]! + 1;
+  const e = takeSlot(ecs.entityIndex, world.spawnStamp);
   const masks = a.masks,
     em = ecs.entityMasks;
   for (let g = 0; g < masks.length; g++) em[g]![e] = masks[g]!;
@@ -646,20 +653,7 @@ export function bornSlots(world: PhysicsWorld, a: Archetype, count: number, out:
   const ecs = ecsOf(world);
   const ix = ecs.entityIndex,
     spawn = world.spawnStamp;
-  for (let k = 0; k < count; k++) {
-    let e: number;
-    if (ix.aliveCount < ix.dense.length) {
-      e = ix.dense[ix.aliveCount]!;
-      ix.sparse[e] = ix.aliveCount;
-    } else {
-      e = ++ix.maxId;
-      ix.dense.push(e);
-      ix.sparse[e] = ix.aliveCount;
-    }
-    ix.aliveCount++;
-    spawn[e] = spawn[e]! + 1;
-    out[k] = e;
-  }
+  for (let k = 0; k < count; k++) out[k] = takeSlot(ix, spawn);
   // A free slot's masks are 0 (removal clears them), so generations the archetype has no bit in need no writes.
   const masks = a.masks;
   for (let g = 0; g < masks.length; g++) {

@@ -27,7 +27,7 @@ import { treeMoments2, treeMoments3 } from '../forces/barnes-hut/moments.js';
 import { barnesHutWalk2 } from '../forces/barnes-hut/walk-2d.js';
 import { barnesHutWalk3 } from '../forces/barnes-hut/walk-3d.js';
 import { centralForce } from '../forces/central.js';
-import { linearDragCalm, quadraticDragCalm } from '../forces/drag.js';
+import { dragCalm } from '../forces/drag.js';
 import { attractors, gravityScale } from '../forces/gravity.js';
 import { sieForced2, sieForced3, sieFree2, sieFree3 } from '../integrators/semi-implicit-euler.js';
 import { solveColored2D } from '../solver/coloring-kernel.js';
@@ -66,7 +66,7 @@ export const KERNELS: readonly Kernel[] = /* @__PURE__ */ Object.freeze([
   sieFree2,
   sieFree3,
   gravityScale,
-  linearDragCalm,
+  dragCalm,
   testKernel,
   finiteProbe,
   barnesHutWalk2,
@@ -74,7 +74,6 @@ export const KERNELS: readonly Kernel[] = /* @__PURE__ */ Object.freeze([
   treeGather,
   mortonKeysHist,
   treeForces,
-  quadraticDragCalm,
   angularDampingScalar,
   ballPairs,
   ballContacts,
