@@ -4,8 +4,8 @@ import type { PhysicsWorld } from '../world/options.js';
 import { centre, ends, type Joint3DBaseOptions, make, point, requireJoint3D, wakeJoint3D } from './joint-3d.js';
 import type { JointPass3D, JointRows3D } from './rows-3d.js';
 import { anchorSpeed, applyLinear, linearK, linearRow, pa, pb, ra, rb, referenceK } from './rows-3d-math.js';
+import { fixedSpring } from './softness.js';
 import { useJointType3D } from './solver-3d.js';
-import { fixedSpring } from './spring.js';
 import { Joint3DFlag, type Joint3DStore, Joint3DType, joints3DOf } from './store-3d.js';
 
 /**

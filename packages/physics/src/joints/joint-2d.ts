@@ -1,85 +1,23 @@
 import { addComponent, hasComponent } from 'bitecs';
 import { wakeIsland } from '../islands/sleep.js';
-import { assertFinite, assertKnownKeys, assertNonNegative, assertOptionalBoolean, assertVector, describe } from '../validation/validate.js';
+import { assertFinite, assertKnownKeys, assertNonNegative, assertVector, describe } from '../validation/validate.js';
 import { createSlot, currentHandle, resolveEntity } from '../world/handles.js';
 import { addNoCollide } from '../world/joint-no-collide.js';
 import { ensureJointArrays } from '../world/joint-state-2d.js';
 import { JOINT_TYPE_NAMES, JointFlag, type JointTypeCode } from '../world/joint-store-2d.js';
 import { IMPULSES } from '../world/joint-strides-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
+import { checkEnds, type Ends, type JointBaseOptions } from './joint-base.js';
 
 /**
- * Joints between 2D bodies (Box2D v3's set, solved in the contact solver's soft substeps; see
- * joints/solver-2d.ts). Every joint is an entity with a `Joint` component holding its two bodies: A (a
- * body, or the fixed world when omitted or null) and B (a body). Anchors are given in world
- * coordinates where the bodies are when the joint is made; the joint keeps them in the bodies' frames.
- * Removing a body removes its joints. A joint may break: past `breakForce` (N) or `breakTorque` (N m)
- * it is removed and reported in `world.joints.breaks` after the step.
+ * The add-time code the 2D joint types share (their rows are in rows-2d.ts): every joint is an entity
+ * with a `Joint` component holding its two bodies, A (a body, or the fixed world when omitted or null)
+ * and B (a body). Anchors are given in world coordinates where the bodies are when the joint is made;
+ * the joint keeps them in the bodies' frames. Removing a body removes its joints. A joint may break:
+ * past `breakForce` (N) or `breakTorque` (N m) it is removed and reported in `world.joints.breaks`
+ * after the step. Here: the anchors' and axis' checks and storage, the limits, motor and spring, the
+ * joint along an axis (prismatic, wheel), and finding a joint by its handle.
  */
-
-/**
- * Options every joint shares.
- * @category Joints and ropes
- */
-export interface JointBaseOptions {
-  /** Body A, or omitted / null for the fixed world. */
-  a?: number | null;
-  /** Body B. */
-  b: number;
-  /** Force above which the joint breaks, N, > 0. Default Infinity (never). */
-  breakForce?: number;
-  /** Torque above which the joint breaks, N m, > 0. Default Infinity (never). */
-  breakTorque?: number;
-  /**
-   * Whether bodies A and B still collide with each other (Box2D's collideConnected). Default false: the
-   * contacts between two jointed bodies are skipped (both ball and shape colliders), so a hinge's parts
-   * may overlap at the hinge; true keeps them colliding. Has no effect when A is the world.
-   */
-  collideConnected?: boolean;
-}
-
-/** The option keys every 2D joint takes (JointBaseOptions), for each add*Joint's check of unknown keys. */
-export const BASE_KEYS = ['a', 'b', 'breakForce', 'breakTorque', 'collideConnected'] as const;
-
-/** Where a joint's bodies are: slots and poses read for anchors. */
-interface Ends {
-  a: number;
-  b: number;
-}
-
-/** The slot of body `id` (param `param` of `where`): an entity with position, mass and angle (made by addBody). @throws RangeError otherwise. */
-function requireBody(where: string, param: string, world: PhysicsWorld, id: unknown): number {
-  const slot = resolveEntity(world, id, where, param);
-  const c = world.components;
-  if (!hasComponent(world, slot, c.Position) || !hasComponent(world, slot, c.Mass) || !hasComponent(world, slot, c.Angle)) {
-    throw new RangeError(`${where}: ${param} must be a body with position, mass and angle (made by addBody), got entity ${describe(id)}`);
-  }
-  return slot;
-}
-
-/** Checks a joint's `a` and `b` (a may be omitted or null: the world) and returns their slots. @throws TypeError | RangeError naming `where`. */
-export function checkEnds(where: string, world: PhysicsWorld, options: JointBaseOptions): Ends {
-  if (world.dimensions !== 2) throw new RangeError(`${where}: joints need a 2D world, this world has ${world.dimensions} dimensions`);
-  if (options === undefined || options === null || typeof options !== 'object') {
-    throw new TypeError(`${where}: options must be an object with body b, got ${describe(options)}`);
-  }
-  const a = options.a === undefined || options.a === null ? 0 : requireBody(where, 'a', world, options.a);
-  const b = requireBody(where, 'b', world, options.b);
-  if (a === b) throw new RangeError(`${where}: a and b must be different bodies, got ${describe(options.a)} twice`);
-  if (options.breakForce !== undefined) assertBreakLimit(where, 'breakForce', options.breakForce);
-  if (options.breakTorque !== undefined) assertBreakLimit(where, 'breakTorque', options.breakTorque);
-  assertOptionalBoolean(where, 'collideConnected', options.collideConnected);
-  return { a, b };
-}
-
-/**
- * A break limit: a number > 0, Infinity (the default: never breaks) included. @throws TypeError | RangeError
- * @category Joints and ropes
- */
-export function assertBreakLimit(where: string, param: string, value: unknown): void {
-  if (typeof value !== 'number') throw new TypeError(`${where}: ${param} must be a number, got ${describe(value)}`);
-  if (!(value > 0)) throw new RangeError(`${where}: ${param} must be > 0 (Infinity: never breaks), got ${describe(value)}`);
-}
 
 /** `value` as a 2D point, m, or `fallback` when undefined. @throws TypeError | RangeError on a malformed vector. */
 export function optionalPoint(where: string, param: string, value: unknown, fallback: [number, number]): [number, number] {
@@ -289,7 +227,7 @@ export interface AxisJointOptions extends JointBaseOptions {
  */
 export function addAxisJoint(world: PhysicsWorld, kind: AxisJointKind, options: AxisJointOptions): number {
   const where = kind.where;
-  const ends = checkEnds(where, world, options);
+  const ends = checkEnds(where, world, options, 2);
   assertKnownKeys(where, options, kind.keys, ['a']);
   const p = optionalPoint(where, 'anchor', options.anchor, centre(world, ends.b));
   const axis = unitAxis(where, options.axis, kind.axis);

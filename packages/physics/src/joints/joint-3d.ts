@@ -6,7 +6,7 @@ import { createSlot, resolveEntity } from '../world/handles.js';
 import { addNoCollide } from '../world/joint-no-collide.js';
 import { ensureJointArrays } from '../world/joint-state-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { assertBreakLimit } from './joint-2d.js';
+import { assertBreakLimit } from './joint-base.js';
 import { removeJoints3DOf } from './remove-3d.js';
 import { Joint3DFlag, type Joint3DStore, joints3DOf } from './store-3d.js';
 
