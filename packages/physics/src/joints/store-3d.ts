@@ -1,5 +1,8 @@
+import { entityExists, removeEntity } from 'bitecs';
 import { addIslandEdge, EdgeFlag, type IslandEdges } from '../islands/edges.js';
+import { wakeIsland } from '../islands/sleep.js';
 import { registerExternalWorldState } from '../world/external-state.js';
+import { removeNoCollide } from '../world/joint-no-collide.js';
 import type { PhysicsWorld } from '../world/options.js';
 
 /**
@@ -77,50 +80,25 @@ export interface Joint3DStore {
   breaks: number[][];
 }
 
+/** The Float64Array fields of a Joint3DStore, in its order: anchors, axes, rest orientation, limits, motor, spring, breaking, impulses. */
+const FLOAT_FIELDS = [
+  ...['ax', 'ay', 'az', 'bx', 'by', 'bz', 'uax', 'uay', 'uaz', 'ubx', 'uby', 'ubz', 'rx', 'ry', 'rz', 'rw', 'lower', 'upper'],
+  ...['motorSpeed', 'maxMotorTorque', 'length', 'hertz', 'dampingRatio', 'breakForce', 'breakTorque'],
+  ...['lx', 'ly', 'lz', 'wx', 'wy', 'wz', 'limit', 'motor'],
+] as const;
+
 function create(capacity: number): Joint3DStore {
-  const n = capacity + 1,
-    f = (): Float64Array => new Float64Array(n);
-  return {
+  const n = capacity + 1;
+  const s: Record<string, unknown> = {
     list: [],
     type: new Uint8Array(n),
     flags: new Uint8Array(n),
     a: new Int32Array(n),
     b: new Int32Array(n),
-    ax: f(),
-    ay: f(),
-    az: f(),
-    bx: f(),
-    by: f(),
-    bz: f(),
-    uax: f(),
-    uay: f(),
-    uaz: f(),
-    ubx: f(),
-    uby: f(),
-    ubz: f(),
-    rx: f(),
-    ry: f(),
-    rz: f(),
-    rw: f(),
-    lower: f(),
-    upper: f(),
-    motorSpeed: f(),
-    maxMotorTorque: f(),
-    length: f(),
-    hertz: f(),
-    dampingRatio: f(),
-    breakForce: f(),
-    breakTorque: f(),
-    lx: f(),
-    ly: f(),
-    lz: f(),
-    wx: f(),
-    wy: f(),
-    wz: f(),
-    limit: f(),
-    motor: f(),
-    breaks: [],
   };
+  for (const k of FLOAT_FIELDS) s[k] = new Float64Array(n);
+  s.breaks = [];
+  return s as unknown as Joint3DStore;
 }
 
 /**
@@ -170,4 +148,44 @@ export function addJointEdges3D(world: PhysicsWorld, e: IslandEdges): void {
       Math.abs(s.motor[j]!);
     addIslandEdge(e, s.a[j]!, s.b[j]!, load > 0 ? EdgeFlag.JOINT | EdgeFlag.SUPPORTS : EdgeFlag.JOINT);
   }
+}
+
+/**
+ * Internal: unlists and removes joint slot j, and wakes its bodies (what held them is gone).
+ * @category Joints and ropes
+ */
+export function removeJoint3DUnchecked(world: PhysicsWorld, s: Joint3DStore, j: number): void {
+  unlistJoint3D(world, s, j);
+  if (entityExists(world, j)) removeEntity(world, j);
+}
+
+/**
+ * Takes joint slot j out of the list and the no-collide pairs, and wakes the islands of its bodies
+ * that still exist: a sleeping body the joint held up (a bob at rest on its string) must fall.
+ * @category Joints and ropes
+ */
+export function unlistJoint3D(world: PhysicsWorld, s: Joint3DStore, j: number): void {
+  const i = s.list.indexOf(j);
+  if (i >= 0) s.list.splice(i, 1);
+  const a = s.a[j]!,
+    b = s.b[j]!;
+  removeNoCollide(world.joints, j, a, b);
+  s.a[j] = 0;
+  s.b[j] = 0;
+  if (a !== 0 && entityExists(world, a)) wakeIsland(world, a);
+  if (b !== 0 && entityExists(world, b)) wakeIsland(world, b);
+}
+
+/**
+ * Removal hook: removing a body removes its 3D joints (and removing a joint entity unlists it).
+ * @category Joints and ropes
+ */
+export function removeJoints3DOf(world: PhysicsWorld, eid: number): void {
+  const s = joints3DOf(world);
+  if (s === undefined || s.list.length === 0) return;
+  if (s.list.includes(eid)) {
+    unlistJoint3D(world, s, eid);
+    return;
+  }
+  for (const j of s.list.filter((k) => s.a[k] === eid || s.b[k] === eid)) removeJoint3DUnchecked(world, s, j);
 }
