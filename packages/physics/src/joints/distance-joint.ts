@@ -1,14 +1,4 @@
-import {
-  BS2_DX,
-  BS2_DY,
-  BS2_INV_INERTIA,
-  BS2_INV_MASS,
-  BS2_PUSHED,
-  BS2_STRIDE,
-  BS2_VX,
-  BS2_VY,
-  BS2_W,
-} from '../solver/body-state-layout.js';
+import * as BS from '../solver/body-state-layout.js';
 import { assertKnownKeys, assertNonNegative, assertPositive } from '../validation/validate.js';
 import type { JointState } from '../world/joint-state-2d.js';
 import { JointFlag, type JointStore, JointType } from '../world/joint-store-2d.js';
@@ -152,8 +142,8 @@ export function prepareDistanceRow(js: JointState, J: JointStore, j: number, r: 
         : imp[j * IMPULSES + (R.ISPR - R.ILX)]!
       : 0;
     lf[l + R.LK_ROPE] = rope ? 1 : 0;
-    js.linkInts[li + R.LK_OA] = ri[q + R.IA]! * BS2_STRIDE;
-    js.linkInts[li + R.LK_OB] = ri[q + R.IB]! * BS2_STRIDE;
+    js.linkInts[li + R.LK_OA] = ri[q + R.IA]! * BS.BS2_STRIDE;
+    js.linkInts[li + R.LK_OB] = ri[q + R.IB]! * BS.BS2_STRIDE;
     js.linkInts[li + R.LK_ROW] = r;
     js.linkCount++;
     ri[q + R.TF] = R.POINT_LINK;
@@ -174,7 +164,15 @@ export function warmStartDistanceRow(p: JointPass2D, ia: number, ib: number, o: 
   if (L < 1e-12) return;
   const px = (axial * dx) / L,
     py = (axial * dy) / L;
-  applyImpulse(p.sb, ia * BS2_STRIDE, ib * BS2_STRIDE, px, py, f[R.F_RAX]! * py - f[R.F_RAY]! * px, f[R.F_RBX]! * py - f[R.F_RBY]! * px);
+  applyImpulse(
+    p.sb,
+    ia * BS.BS2_STRIDE,
+    ib * BS.BS2_STRIDE,
+    px,
+    py,
+    f[R.F_RAX]! * py - f[R.F_RAY]! * px,
+    f[R.F_RBX]! * py - f[R.F_RBY]! * px,
+  );
 }
 
 /**
@@ -189,8 +187,8 @@ export function solveDistanceRow(p: JointPass2D, ia: number, ib: number, o: numb
     dy = f[R.F_DY]!;
   const L = Math.sqrt(dx * dx + dy * dy);
   if (L < 1e-12) return R.ROW_SKIPPED;
-  const oA = ia * BS2_STRIDE,
-    oB = ib * BS2_STRIDE;
+  const oA = ia * BS.BS2_STRIDE,
+    oB = ib * BS.BS2_STRIDE;
   const rAx = f[R.F_RAX]!,
     rAy = f[R.F_RAY]!,
     rBx = f[R.F_RBX]!,
@@ -200,11 +198,16 @@ export function solveDistanceRow(p: JointPass2D, ia: number, ib: number, o: numb
   const crA = rAx * uy - rAy * ux,
     crB = rBx * uy - rBy * ux;
   // The inverse effective mass along u, and the anchors' relative velocity along it.
-  const K = sb[oA + BS2_INV_MASS]! + sb[oB + BS2_INV_MASS]! + sb[oA + BS2_INV_INERTIA]! * crA * crA + sb[oB + BS2_INV_INERTIA]! * crB * crB;
-  const wA = sb[oA + BS2_W]!,
-    wB = sb[oB + BS2_W]!;
+  const K =
+    sb[oA + BS.BS2_INV_MASS]! +
+    sb[oB + BS.BS2_INV_MASS]! +
+    sb[oA + BS.BS2_INV_INERTIA]! * crA * crA +
+    sb[oB + BS.BS2_INV_INERTIA]! * crB * crB;
+  const wA = sb[oA + BS.BS2_W]!,
+    wB = sb[oB + BS.BS2_W]!;
   let vr =
-    (sb[oB + BS2_VX]! - wB * rBy - sb[oA + BS2_VX]! + wA * rAy) * ux + (sb[oB + BS2_VY]! + wB * rBx - sb[oA + BS2_VY]! - wA * rAx) * uy;
+    (sb[oB + BS.BS2_VX]! - wB * rBy - sb[oA + BS.BS2_VX]! + wA * rAy) * ux +
+    (sb[oB + BS.BS2_VY]! + wB * rBx - sb[oA + BS.BS2_VY]! - wA * rAx) * uy;
   const k = rows[o + R.KAX]!;
   const minL = rows[o + R.MINL]!,
     maxL = rows[o + R.MAXL]!;
@@ -276,19 +279,19 @@ export function warmStartPointLinks(world: PhysicsWorld): void {
     if (acc === 0) continue;
     const oA = lint[i + R.LK_OA]!,
       oB = lint[i + R.LK_OB]!;
-    const dx = sb[oB + BS2_DX]! - sb[oA + BS2_DX]! + lf[f + R.LK_DX]!,
-      dy = sb[oB + BS2_DY]! - sb[oA + BS2_DY]! + lf[f + R.LK_DY]!;
+    const dx = sb[oB + BS.BS2_DX]! - sb[oA + BS.BS2_DX]! + lf[f + R.LK_DX]!,
+      dy = sb[oB + BS.BS2_DY]! - sb[oA + BS.BS2_DY]! + lf[f + R.LK_DY]!;
     const L = Math.sqrt(dx * dx + dy * dy);
     if (L < 1e-12) continue;
     const s = acc / L,
       Px = s * dx,
       Py = s * dy,
-      mA = sb[oA + BS2_INV_MASS]!,
-      mB = sb[oB + BS2_INV_MASS]!;
-    sb[oA + BS2_VX] = sb[oA + BS2_VX]! - mA * Px;
-    sb[oA + BS2_VY] = sb[oA + BS2_VY]! - mA * Py;
-    sb[oB + BS2_VX] = sb[oB + BS2_VX]! + mB * Px;
-    sb[oB + BS2_VY] = sb[oB + BS2_VY]! + mB * Py;
+      mA = sb[oA + BS.BS2_INV_MASS]!,
+      mB = sb[oB + BS.BS2_INV_MASS]!;
+    sb[oA + BS.BS2_VX] = sb[oA + BS.BS2_VX]! - mA * Px;
+    sb[oA + BS.BS2_VY] = sb[oA + BS.BS2_VY]! - mA * Py;
+    sb[oB + BS.BS2_VX] = sb[oB + BS.BS2_VX]! + mB * Px;
+    sb[oB + BS.BS2_VY] = sb[oB + BS.BS2_VY]! + mB * Py;
   }
 }
 
@@ -312,16 +315,16 @@ export function solvePointLinks(world: PhysicsWorld, invH: number, useBias: bool
       i = l * LINK_INTS;
     const oA = lint[i + R.LK_OA]!,
       oB = lint[i + R.LK_OB]!;
-    const dx = sb[oB + BS2_DX]! - sb[oA + BS2_DX]! + lf[f + R.LK_DX]!,
-      dy = sb[oB + BS2_DY]! - sb[oA + BS2_DY]! + lf[f + R.LK_DY]!;
+    const dx = sb[oB + BS.BS2_DX]! - sb[oA + BS.BS2_DX]! + lf[f + R.LK_DX]!,
+      dy = sb[oB + BS.BS2_DY]! - sb[oA + BS.BS2_DY]! + lf[f + R.LK_DY]!;
     const L = Math.sqrt(dx * dx + dy * dy);
     if (L < 1e-12) continue;
     const ux = dx / L,
       uy = dy / L;
-    const vAx = sb[oA + BS2_VX]!,
-      vAy = sb[oA + BS2_VY]!,
-      vBx = sb[oB + BS2_VX]!,
-      vBy = sb[oB + BS2_VY]!;
+    const vAx = sb[oA + BS.BS2_VX]!,
+      vAy = sb[oA + BS.BS2_VY]!,
+      vBx = sb[oB + BS.BS2_VX]!,
+      vBy = sb[oB + BS.BS2_VY]!;
     const vr = (vBx - vAx) * ux + (vBy - vAy) * uy;
     const C = L - lf[f + R.LK_LEN]!;
     const acc = lf[f + R.LK_ACC]!;
@@ -348,15 +351,15 @@ export function solvePointLinks(world: PhysicsWorld, invH: number, useBias: bool
     }
     const Px = impulse * ux,
       Py = impulse * uy,
-      mA = sb[oA + BS2_INV_MASS]!,
-      mB = sb[oB + BS2_INV_MASS]!;
-    sb[oA + BS2_VX] = vAx - mA * Px;
-    sb[oA + BS2_VY] = vAy - mA * Py;
-    sb[oB + BS2_VX] = vBx + mB * Px;
-    sb[oB + BS2_VY] = vBy + mB * Py;
+      mA = sb[oA + BS.BS2_INV_MASS]!,
+      mB = sb[oB + BS.BS2_INV_MASS]!;
+    sb[oA + BS.BS2_VX] = vAx - mA * Px;
+    sb[oA + BS.BS2_VY] = vAy - mA * Py;
+    sb[oB + BS.BS2_VX] = vBx + mB * Px;
+    sb[oB + BS.BS2_VY] = vBy + mB * Py;
     if (lf[f + R.LK_ACC] !== 0) {
-      sb[oA + BS2_PUSHED] = 1;
-      sb[oB + BS2_PUSHED] = 1;
+      sb[oA + BS.BS2_PUSHED] = 1;
+      sb[oB + BS.BS2_PUSHED] = 1;
     }
   }
 }

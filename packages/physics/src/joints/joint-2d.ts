@@ -7,7 +7,7 @@ import { ensureJointArrays } from '../world/joint-state-2d.js';
 import { JOINT_TYPE_NAMES, JointFlag, type JointTypeCode } from '../world/joint-store-2d.js';
 import { IMPULSES } from '../world/joint-strides-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { checkEnds, type Ends, type JointBaseOptions } from './joint-base.js';
+import { BASE_KEYS, checkEnds, type Ends, type JointBaseOptions } from './joint-base.js';
 
 /**
  * The add-time code the 2D joint types share (their rows are in rows-2d.ts): every joint is an entity
@@ -55,6 +55,12 @@ export function checkLimits(where: string, lower: unknown, upper: unknown, lower
   return true;
 }
 
+/** The Joint fields a new joint starts at 0 (its axis, longest length and breaking thresholds are set apart). */
+const ZEROED = [
+  ...['axisY', 'length', 'minLength', 'hertz', 'dampingRatio', 'angularHertz', 'angularDampingRatio', 'flags', 'lower', 'upper'],
+  ...['motorSpeed', 'maxMotorForce', 'maxForce', 'force', 'torque'],
+] as const;
+
 /**
  * Makes the joint entity with every field at its default, and the anchors: `anchorA`, `anchorB` are
  * world points, stored in A's and B's body frames (A's stays a world point if A is the world).
@@ -92,26 +98,12 @@ export function makeJoint(
   J.localBx[j] = lb[0];
   J.localBy[j] = lb[1];
   J.referenceAngle[j] = (b === 0 ? 0 : c.Angle.value[b]!) - (a === 0 ? 0 : c.Angle.value[a]!);
+  for (const k of ZEROED) J[k][j] = 0;
   J.axisX[j] = 1;
-  J.axisY[j] = 0;
-  J.length[j] = 0;
-  J.minLength[j] = 0;
   J.maxLength[j] = Infinity;
-  J.hertz[j] = 0;
-  J.dampingRatio[j] = 0;
-  J.angularHertz[j] = 0;
-  J.angularDampingRatio[j] = 0;
-  J.flags[j] = 0;
-  J.lower[j] = 0;
-  J.upper[j] = 0;
-  J.motorSpeed[j] = 0;
-  J.maxMotorForce[j] = 0;
-  J.maxForce[j] = 0;
   J.breakForce[j] = options.breakForce ?? Infinity;
   J.breakTorque[j] = options.breakTorque ?? Infinity;
   J.breakStretch[j] = Infinity;
-  J.force[j] = 0;
-  J.torque[j] = 0;
   world.joints.impulses.fill(0, j * IMPULSES, (j + 1) * IMPULSES);
   const att = world.joints.attached;
   if (a !== 0) {
@@ -147,35 +139,31 @@ interface Drive {
  */
 export function checkDrive(
   where: string,
-  motorSpeed: number | undefined,
-  maxMotor: number | undefined,
+  motorSpeed: unknown,
+  maxMotor: unknown,
   maxName: string,
-  hertz: number | undefined,
-  zeta: number | undefined,
+  hertz: unknown,
+  zeta: unknown,
   defaultHertz = 0,
   defaultZeta = 0,
 ): Drive {
-  const d: Drive = { speed: motorSpeed ?? 0, maxMotor: maxMotor ?? 0, hertz: hertz ?? defaultHertz, zeta: zeta ?? defaultZeta };
-  assertFinite(where, 'motorSpeed', d.speed);
-  assertNonNegative(where, maxName, d.maxMotor);
-  assertNonNegative(where, 'hertz', d.hertz);
-  assertNonNegative(where, 'dampingRatio', d.zeta);
-  return d;
+  const speed = motorSpeed ?? 0,
+    max = maxMotor ?? 0,
+    hz = hertz ?? defaultHertz,
+    z = zeta ?? defaultZeta;
+  assertFinite(where, 'motorSpeed', speed);
+  assertNonNegative(where, maxName, max);
+  assertNonNegative(where, 'hertz', hz);
+  assertNonNegative(where, 'dampingRatio', z);
+  return { speed, maxMotor: max, hertz: hz, zeta: z };
 }
 
 /** Writes joint j's limits (when `limit`), motor and spring, and sets its Limit, Motor and Spring flags from them. */
-export function storeDrive(
-  world: PhysicsWorld,
-  j: number,
-  limit: boolean,
-  lower: number | undefined,
-  upper: number | undefined,
-  d: Drive,
-): void {
+export function storeDrive(world: PhysicsWorld, j: number, limit: boolean, lower: unknown, upper: unknown, d: Drive): void {
   const J = world.components.Joint;
   if (limit) {
-    J.lower[j] = lower!;
-    J.upper[j] = upper!;
+    J.lower[j] = lower as number;
+    J.upper[j] = upper as number;
   }
   J.motorSpeed[j] = d.speed;
   J.maxMotorForce[j] = d.maxMotor;
@@ -194,29 +182,19 @@ export function setAxis(world: PhysicsWorld, j: number, a: number, axis: [number
   J.axisY[j] = -si * axis[0] + co * axis[1];
 }
 
-/** What addPrismaticJoint and addWheelJoint differ in: their name, joint type, known option keys, the name of the motor's largest force or torque, and the defaults of the axis and the spring. */
+/** What addPrismaticJoint and addWheelJoint differ in: their name and joint type, the name of the motor's largest force or torque, and the defaults of the axis and the spring. */
 export interface AxisJointKind {
   where: string;
   type: JointTypeCode;
-  keys: readonly string[];
   maxName: 'maxMotorForce' | 'maxMotorTorque';
   axis: [number, number];
   hertz: number;
   dampingRatio: number;
 }
 
-/** The options of a joint along an axis (PrismaticJointOptions, WheelJointOptions; documented there). */
-export interface AxisJointOptions extends JointBaseOptions {
-  anchor?: ArrayLike<number>;
-  axis?: ArrayLike<number>;
-  lower?: number;
-  upper?: number;
-  motorSpeed?: number;
-  maxMotorForce?: number;
-  maxMotorTorque?: number;
-  hertz?: number;
-  dampingRatio?: number;
-}
+/** The options of a joint along an axis as addAxisJoint reads them (PrismaticJointOptions, WheelJointOptions; documented there), each checked there. */
+type AxisJointOptions = JointBaseOptions &
+  Partial<Record<'anchor' | 'axis' | 'lower' | 'upper' | 'motorSpeed' | AxisJointKind['maxName'] | 'hertz' | 'dampingRatio', unknown>>;
 
 /**
  * Adds a joint along an axis (addPrismaticJoint, addWheelJoint): B's anchor stays on the line through A's
@@ -228,7 +206,8 @@ export interface AxisJointOptions extends JointBaseOptions {
 export function addAxisJoint(world: PhysicsWorld, kind: AxisJointKind, options: AxisJointOptions): number {
   const where = kind.where;
   const ends = checkEnds(where, world, options, 2);
-  assertKnownKeys(where, options, kind.keys, ['a']);
+  const keys = ['anchor', 'axis', 'lower', 'upper', 'motorSpeed', kind.maxName, 'hertz', 'dampingRatio'];
+  assertKnownKeys(where, options, [...BASE_KEYS, ...keys], ['a']);
   const p = optionalPoint(where, 'anchor', options.anchor, centre(world, ends.b));
   const axis = unitAxis(where, options.axis, kind.axis);
   const limit = checkLimits(where, options.lower, options.upper, 'lower', 'upper', Infinity);

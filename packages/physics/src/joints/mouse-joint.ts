@@ -1,5 +1,5 @@
 import { hasComponent } from 'bitecs';
-import { BS2_INV_INERTIA, BS2_INV_MASS, BS2_STRIDE, BS2_VX, BS2_VY, BS2_W } from '../solver/body-state-layout.js';
+import * as BS from '../solver/body-state-layout.js';
 import { assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe } from '../validation/validate.js';
 import type { JointState } from '../world/joint-state-2d.js';
 import { JointFlag, type JointStore, JointType } from '../world/joint-store-2d.js';
@@ -8,7 +8,7 @@ import type { PhysicsWorld } from '../world/options.js';
 import { centre, handle, makeJoint, optionalPoint, requireJoint, wakeJoint } from './joint-2d.js';
 import { checkEnds } from './joint-base.js';
 import * as R from './layout-2d.js';
-import { type JointPass2D, type JointTypeRows2D, pointForce, warmStartPoint } from './rows-2d.js';
+import { type JointPass2D, type JointTypeRows2D, pointForce, warmStartPointAngle } from './rows-2d.js';
 import { soft } from './softness.js';
 
 /**
@@ -103,11 +103,6 @@ export function prepareMouseRow(js: JointState, J: JointStore, j: number, r: num
   soft(rows, o + R.AB, J.hertz[j]!, J.dampingRatio[j]!, hs);
 }
 
-/** A mouse joint's warm start: its pull at the anchor and its spin damping's. */
-export function warmStartMouseRow(p: JointPass2D, ia: number, ib: number, o: number): void {
-  warmStartPoint(p, ia, ib, o, p.rows[o + R.IANG]!);
-}
-
 /**
  * One pass of a mouse joint's rows (Box2D v3's b2SolveMouseJoint) on its frame: B's spin damped
  * softly, then its anchor pulled toward the target by a soft point row whose accumulated impulse is
@@ -115,14 +110,14 @@ export function warmStartMouseRow(p: JointPass2D, ia: number, ib: number, o: num
  */
 export function solveMouseRow(p: JointPass2D, _ia: number, ib: number, o: number, _flags: number): number {
   const { sb, rows, f } = p;
-  const oB = ib * BS2_STRIDE;
-  const mB = sb[oB + BS2_INV_MASS]!,
-    iB = sb[oB + BS2_INV_INERTIA]!;
+  const oB = ib * BS.BS2_STRIDE;
+  const mB = sb[oB + BS.BS2_INV_MASS]!,
+    iB = sb[oB + BS.BS2_INV_INERTIA]!;
   const rBx = f[R.F_RBX]!,
     rBy = f[R.F_RBY]!;
-  let vBx = sb[oB + BS2_VX]!,
-    vBy = sb[oB + BS2_VY]!,
-    wB = sb[oB + BS2_W]!;
+  let vBx = sb[oB + BS.BS2_VX]!,
+    vBy = sb[oB + BS.BS2_VY]!,
+    wB = sb[oB + BS.BS2_W]!;
   // Damp B's spin softly, then pull its anchor toward the target with at most maxForce.
   const kax = rows[o + R.KAX]!;
   {
@@ -163,9 +158,9 @@ export function solveMouseRow(p: JointPass2D, _ia: number, ib: number, o: number
   vBx += mB * ix;
   vBy += mB * iy;
   wB += iB * (rBx * iy - rBy * ix);
-  sb[oB + BS2_VX] = vBx;
-  sb[oB + BS2_VY] = vBy;
-  sb[oB + BS2_W] = wB;
+  sb[oB + BS.BS2_VX] = vBx;
+  sb[oB + BS.BS2_VY] = vBy;
+  sb[oB + BS.BS2_W] = wB;
   return R.ROW_PUSHED;
 }
 
@@ -178,7 +173,7 @@ export function mouseReading(p: JointPass2D, o: number, _flags: number, out: Flo
 /** The 2D mouse joint's row functions (rows-2d.ts JointTypeRows2D). */
 export const MOUSE_ROWS_2D: JointTypeRows2D = {
   prepare: prepareMouseRow,
-  warmStart: warmStartMouseRow,
+  warmStart: warmStartPointAngle,
   solve: solveMouseRow,
   reading: mouseReading,
 };

@@ -1,8 +1,8 @@
-import { BS2_INV_INERTIA, BS2_INV_MASS, BS2_STRIDE, BS2_W } from '../solver/body-state-layout.js';
+import * as BS from '../solver/body-state-layout.js';
 import { JointFlag, JointType } from '../world/joint-store-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { type AxisJointKind, addAxisJoint } from './joint-2d.js';
-import { BASE_KEYS, type JointBaseOptions } from './joint-base.js';
+import type { JointBaseOptions } from './joint-base.js';
 import * as R from './layout-2d.js';
 import {
   acrossAxis,
@@ -61,7 +61,6 @@ export function addPrismaticJoint(world: PhysicsWorld, options: PrismaticJointOp
 const PRISMATIC: AxisJointKind = {
   where: 'addPrismaticJoint',
   type: JointType.Prismatic,
-  keys: [...BASE_KEYS, 'anchor', 'axis', 'lower', 'upper', 'motorSpeed', 'maxMotorForce', 'hertz', 'dampingRatio'],
   maxName: 'maxMotorForce',
   axis: [1, 0],
   hertz: 0,
@@ -83,8 +82,8 @@ export function warmStartPrismaticRow(p: JointPass2D, ia: number, ib: number, o:
  */
 export function solvePrismaticRow(p: JointPass2D, ia: number, ib: number, o: number, flags: number): number {
   const { sb, rows, f } = p;
-  const oA = ia * BS2_STRIDE,
-    oB = ib * BS2_STRIDE;
+  const oA = ia * BS.BS2_STRIDE,
+    oB = ib * BS.BS2_STRIDE;
   axisFrame(p, o);
   if (flags & JointFlag.Spring) axialSpring(p, oA, oB, o);
   if (flags & JointFlag.Motor) {
@@ -97,10 +96,10 @@ export function solvePrismaticRow(p: JointPass2D, ia: number, ib: number, o: num
   }
   if (flags & JointFlag.Limit) axialLimits(p, oA, oB, o);
   acrossAxis(p, oA, oB, o);
-  const mA = sb[oA + BS2_INV_MASS]!,
-    iA = sb[oA + BS2_INV_INERTIA]!,
-    mB = sb[oB + BS2_INV_MASS]!,
-    iB = sb[oB + BS2_INV_INERTIA]!;
+  const mA = sb[oA + BS.BS2_INV_MASS]!,
+    iA = sb[oA + BS.BS2_INV_INERTIA]!,
+    mB = sb[oB + BS.BS2_INV_MASS]!,
+    iB = sb[oB + BS.BS2_INV_INERTIA]!;
   const s1 = f[R.F_S1]!,
     s2 = f[R.F_S2]!;
   let ms = 1,
@@ -119,7 +118,7 @@ export function solvePrismaticRow(p: JointPass2D, ia: number, ib: number, o: num
   let det = k11 * k22 - k12 * k12;
   if (det !== 0) det = 1 / det;
   const e1 = f[R.F_CD]! + f[R.F_BIAS]!,
-    e2 = sb[oB + BS2_W]! - sb[oA + BS2_W]! + b2;
+    e2 = sb[oB + BS.BS2_W]! - sb[oA + BS.BS2_W]! + b2;
   const x1 = det * (k22 * e1 - k12 * e2),
     x2 = det * (k11 * e2 - k12 * e1);
   const i1 = -ms * x1 - is * rows[o + R.ILX]!,

@@ -1,4 +1,4 @@
-import { BS2_INV_INERTIA, BS2_STRIDE, BS2_W } from '../solver/body-state-layout.js';
+import * as BS from '../solver/body-state-layout.js';
 import { assertKnownKeys } from '../validation/validate.js';
 import type { JointState } from '../world/joint-state-2d.js';
 import { JointFlag, type JointStore, JointType } from '../world/joint-store-2d.js';
@@ -107,9 +107,9 @@ export function warmStartRevoluteRow(p: JointPass2D, ia: number, ib: number, o: 
  */
 export function solveRevoluteRow(p: JointPass2D, ia: number, ib: number, o: number, flags: number): number {
   const { sb, rows } = p;
-  const oA = ia * BS2_STRIDE,
-    oB = ib * BS2_STRIDE;
-  if (sb[oA + BS2_INV_INERTIA]! + sb[oB + BS2_INV_INERTIA]! !== 0) {
+  const oA = ia * BS.BS2_STRIDE,
+    oB = ib * BS.BS2_STRIDE;
+  if (sb[oA + BS.BS2_INV_INERTIA]! + sb[oB + BS.BS2_INV_INERTIA]! !== 0) {
     const relAngle = p.f[R.F_REL]!,
       kax = rows[o + R.KAX]!;
     if (flags & JointFlag.Spring) softAngularRow(p, oA, oB, o, R.ISPR, kax, rows[o + R.SB]! * relAngle, rows[o + R.SM]!, rows[o + R.SI]!);
@@ -117,8 +117,8 @@ export function solveRevoluteRow(p: JointPass2D, ia: number, ib: number, o: numb
     if (flags & JointFlag.Limit) {
       // Lower: C = angle - lower >= 0, along wB - wA. Upper: C = upper - angle >= 0, along wA - wB.
       const angle = unwind(relAngle);
-      applyAngular(sb, oA, oB, limitRow(p, o, R.ILOW, angle - rows[o + R.LOW]!, kax, sb[oB + BS2_W]! - sb[oA + BS2_W]!));
-      applyAngular(sb, oA, oB, -limitRow(p, o, R.IUP, rows[o + R.UP]! - angle, kax, sb[oA + BS2_W]! - sb[oB + BS2_W]!));
+      applyAngular(sb, oA, oB, limitRow(p, o, R.ILOW, angle - rows[o + R.LOW]!, kax, sb[oB + BS.BS2_W]! - sb[oA + BS.BS2_W]!));
+      applyAngular(sb, oA, oB, -limitRow(p, o, R.IUP, rows[o + R.UP]! - angle, kax, sb[oA + BS.BS2_W]! - sb[oB + BS.BS2_W]!));
     }
   }
   solvePointRow(p, o, ia, ib, p.useBias);
@@ -163,7 +163,7 @@ export function warmStartPins(world: PhysicsWorld): void {
       rAy = sA * pf[f + R.PN_RAX]! + cA * pf[f + R.PN_RAY]!;
     const rBx = cB * pf[f + R.PN_RBX]! - sB * pf[f + R.PN_RBY]!,
       rBy = sB * pf[f + R.PN_RBX]! + cB * pf[f + R.PN_RBY]!;
-    applyImpulse(sb, ia * BS2_STRIDE, ib * BS2_STRIDE, Px, Py, rAx * Py - rAy * Px, rBx * Py - rBy * Px);
+    applyImpulse(sb, ia * BS.BS2_STRIDE, ib * BS.BS2_STRIDE, Px, Py, rAx * Py - rAy * Px, rBx * Py - rBy * Px);
   }
 }
 

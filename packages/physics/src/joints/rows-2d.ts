@@ -1,14 +1,4 @@
-import {
-  BS2_DX,
-  BS2_DY,
-  BS2_INV_INERTIA,
-  BS2_INV_MASS,
-  BS2_PUSHED,
-  BS2_STRIDE,
-  BS2_VX,
-  BS2_VY,
-  BS2_W,
-} from '../solver/body-state-layout.js';
+import * as BS from '../solver/body-state-layout.js';
 import type { JointState } from '../world/joint-state-2d.js';
 import type { JointStore } from '../world/joint-store-2d.js';
 import { PIN_FLOATS, PIN_INTS, ROW_FLOATS } from '../world/joint-strides-2d.js';
@@ -60,8 +50,8 @@ export interface JointTypeRows2D {
  */
 export function poseFrame(p: JointPass2D, o: number, ia: number, ib: number): void {
   const { sb, rot, rows, f } = p;
-  const oA = ia * BS2_STRIDE,
-    oB = ib * BS2_STRIDE;
+  const oA = ia * BS.BS2_STRIDE,
+    oB = ib * BS.BS2_STRIDE;
   const cA = rot[ia * 3]!,
     sA = rot[ia * 3 + 1]!,
     cB = rot[ib * 3]!,
@@ -74,8 +64,8 @@ export function poseFrame(p: JointPass2D, o: number, ia: number, ib: number): vo
   f[R.F_RAY] = rAy;
   f[R.F_RBX] = rBx;
   f[R.F_RBY] = rBy;
-  f[R.F_DX] = sb[oB + BS2_DX]! - sb[oA + BS2_DX]! + rows[o + R.DCX]! + rBx - rAx;
-  f[R.F_DY] = sb[oB + BS2_DY]! - sb[oA + BS2_DY]! + rows[o + R.DCY]! + rBy - rAy;
+  f[R.F_DX] = sb[oB + BS.BS2_DX]! - sb[oA + BS.BS2_DX]! + rows[o + R.DCX]! + rBx - rAx;
+  f[R.F_DY] = sb[oB + BS.BS2_DY]! - sb[oA + BS.BS2_DY]! + rows[o + R.DCY]! + rBy - rAy;
   f[R.F_CA] = cA;
   f[R.F_SA] = sA;
   f[R.F_REL] = rows[o + R.DANG]! + rot[ib * 3 + 2]! - rot[ia * 3 + 2]!;
@@ -83,22 +73,22 @@ export function poseFrame(p: JointPass2D, o: number, ia: number, ib: number): vo
 
 /** Applies a linear impulse P (N s) and angular impulses lA, lB (N m s): -P and -lA to A, +P and +lB to B. */
 export function applyImpulse(sb: Float64Array, oA: number, oB: number, px: number, py: number, lA: number, lB: number): void {
-  const mA = sb[oA + BS2_INV_MASS]!,
-    iA = sb[oA + BS2_INV_INERTIA]!,
-    mB = sb[oB + BS2_INV_MASS]!,
-    iB = sb[oB + BS2_INV_INERTIA]!;
-  sb[oA + BS2_VX] = sb[oA + BS2_VX]! - mA * px;
-  sb[oA + BS2_VY] = sb[oA + BS2_VY]! - mA * py;
-  sb[oA + BS2_W] = sb[oA + BS2_W]! - iA * lA;
-  sb[oB + BS2_VX] = sb[oB + BS2_VX]! + mB * px;
-  sb[oB + BS2_VY] = sb[oB + BS2_VY]! + mB * py;
-  sb[oB + BS2_W] = sb[oB + BS2_W]! + iB * lB;
+  const mA = sb[oA + BS.BS2_INV_MASS]!,
+    iA = sb[oA + BS.BS2_INV_INERTIA]!,
+    mB = sb[oB + BS.BS2_INV_MASS]!,
+    iB = sb[oB + BS.BS2_INV_INERTIA]!;
+  sb[oA + BS.BS2_VX] = sb[oA + BS.BS2_VX]! - mA * px;
+  sb[oA + BS.BS2_VY] = sb[oA + BS.BS2_VY]! - mA * py;
+  sb[oA + BS.BS2_W] = sb[oA + BS.BS2_W]! - iA * lA;
+  sb[oB + BS.BS2_VX] = sb[oB + BS.BS2_VX]! + mB * px;
+  sb[oB + BS.BS2_VY] = sb[oB + BS.BS2_VY]! + mB * py;
+  sb[oB + BS.BS2_W] = sb[oB + BS.BS2_W]! + iB * lB;
 }
 
 /** Applies an angular impulse (N m s): -impulse to A, +impulse to B. */
 export function applyAngular(sb: Float64Array, oA: number, oB: number, impulse: number): void {
-  sb[oA + BS2_W] = sb[oA + BS2_W]! - sb[oA + BS2_INV_INERTIA]! * impulse;
-  sb[oB + BS2_W] = sb[oB + BS2_W]! + sb[oB + BS2_INV_INERTIA]! * impulse;
+  sb[oA + BS.BS2_W] = sb[oA + BS.BS2_W]! - sb[oA + BS.BS2_INV_INERTIA]! * impulse;
+  sb[oB + BS.BS2_W] = sb[oB + BS.BS2_W]! + sb[oB + BS.BS2_INV_INERTIA]! * impulse;
 }
 
 /**
@@ -126,8 +116,8 @@ export function solvePointBlocks(
       i = l * PIN_INTS;
     const ia = pint[i + R.PN_IA]!,
       ib = pint[i + R.PN_IB]!,
-      oA = ia * BS2_STRIDE,
-      oB = ib * BS2_STRIDE;
+      oA = ia * BS.BS2_STRIDE,
+      oB = ib * BS.BS2_STRIDE;
     const cA = rot[ia * 3]!,
       sA = rot[ia * 3 + 1]!,
       cB = rot[ib * 3]!,
@@ -139,19 +129,19 @@ export function solvePointBlocks(
     let bx = 0,
       by = 0;
     if (useBias) {
-      bx = jb * (sb[oB + BS2_DX]! - sb[oA + BS2_DX]! + pf[f + R.PN_DCX]! + rBx - rAx);
-      by = jb * (sb[oB + BS2_DY]! - sb[oA + BS2_DY]! + pf[f + R.PN_DCY]! + rBy - rAy);
+      bx = jb * (sb[oB + BS.BS2_DX]! - sb[oA + BS.BS2_DX]! + pf[f + R.PN_DCX]! + rBx - rAx);
+      by = jb * (sb[oB + BS.BS2_DY]! - sb[oA + BS.BS2_DY]! + pf[f + R.PN_DCY]! + rBy - rAy);
     }
-    const mA = sb[oA + BS2_INV_MASS]!,
-      iA = sb[oA + BS2_INV_INERTIA]!,
-      mB = sb[oB + BS2_INV_MASS]!,
-      iB = sb[oB + BS2_INV_INERTIA]!;
-    const vAx = sb[oA + BS2_VX]!,
-      vAy = sb[oA + BS2_VY]!,
-      wA = sb[oA + BS2_W]!,
-      vBx = sb[oB + BS2_VX]!,
-      vBy = sb[oB + BS2_VY]!,
-      wB = sb[oB + BS2_W]!;
+    const mA = sb[oA + BS.BS2_INV_MASS]!,
+      iA = sb[oA + BS.BS2_INV_INERTIA]!,
+      mB = sb[oB + BS.BS2_INV_MASS]!,
+      iB = sb[oB + BS.BS2_INV_INERTIA]!;
+    const vAx = sb[oA + BS.BS2_VX]!,
+      vAy = sb[oA + BS.BS2_VY]!,
+      wA = sb[oA + BS.BS2_W]!,
+      vBx = sb[oB + BS.BS2_VX]!,
+      vBy = sb[oB + BS.BS2_VY]!,
+      wB = sb[oB + BS.BS2_W]!;
     const cdx = vBx - wB * rBy - vAx + wA * rAy,
       cdy = vBy + wB * rBx - vAy - wA * rAx;
     const k11 = mA + mB + rAy * rAy * iA + rBy * rBy * iB;
@@ -167,14 +157,14 @@ export function solvePointBlocks(
       iy = -jm * sy - ji * pf[f + R.PN_ILY]!;
     pf[f + R.PN_ILX] = pf[f + R.PN_ILX]! + ix;
     pf[f + R.PN_ILY] = pf[f + R.PN_ILY]! + iy;
-    sb[oA + BS2_VX] = vAx - mA * ix;
-    sb[oA + BS2_VY] = vAy - mA * iy;
-    sb[oA + BS2_W] = wA - iA * (rAx * iy - rAy * ix);
-    sb[oA + BS2_PUSHED] = 1;
-    sb[oB + BS2_VX] = vBx + mB * ix;
-    sb[oB + BS2_VY] = vBy + mB * iy;
-    sb[oB + BS2_W] = wB + iB * (rBx * iy - rBy * ix);
-    sb[oB + BS2_PUSHED] = 1;
+    sb[oA + BS.BS2_VX] = vAx - mA * ix;
+    sb[oA + BS.BS2_VY] = vAy - mA * iy;
+    sb[oA + BS.BS2_W] = wA - iA * (rAx * iy - rAy * ix);
+    sb[oA + BS.BS2_PUSHED] = 1;
+    sb[oB + BS.BS2_VX] = vBx + mB * ix;
+    sb[oB + BS.BS2_VY] = vBy + mB * iy;
+    sb[oB + BS.BS2_W] = wB + iB * (rBx * iy - rBy * ix);
+    sb[oB + BS.BS2_PUSHED] = 1;
   }
 }
 
@@ -241,7 +231,7 @@ export function softAngularRow(
   is: number,
 ): void {
   const { sb, rows } = p;
-  const impulse = -ms * k * (sb[oB + BS2_W]! - sb[oA + BS2_W]! + bias) - is * rows[o + slot]!;
+  const impulse = -ms * k * (sb[oB + BS.BS2_W]! - sb[oA + BS.BS2_W]! + bias) - is * rows[o + slot]!;
   rows[o + slot] = rows[o + slot]! + impulse;
   applyAngular(sb, oA, oB, impulse);
 }
@@ -254,7 +244,7 @@ export function angularMotor(p: JointPass2D, oA: number, oB: number, o: number, 
   const { sb, rows } = p;
   const max = rows[o + R.MMAX]!;
   const old = rows[o + R.IMOT]!;
-  let next = old - k * (sb[oB + BS2_W]! - sb[oA + BS2_W]! - rows[o + R.MSPD]!);
+  let next = old - k * (sb[oB + BS.BS2_W]! - sb[oA + BS.BS2_W]! - rows[o + R.MSPD]!);
   next = next < -max ? -max : next > max ? max : next;
   rows[o + R.IMOT] = next;
   applyAngular(sb, oA, oB, next - old);
@@ -297,7 +287,12 @@ export function warmStartPoint(p: JointPass2D, ia: number, ib: number, o: number
     py = rows[o + R.ILY]!;
   const lA = f[R.F_RAX]! * py - f[R.F_RAY]! * px + axial,
     lB = f[R.F_RBX]! * py - f[R.F_RBY]! * px + axial;
-  applyImpulse(p.sb, ia * BS2_STRIDE, ib * BS2_STRIDE, px, py, lA, lB);
+  applyImpulse(p.sb, ia * BS.BS2_STRIDE, ib * BS.BS2_STRIDE, px, py, lA, lB);
+}
+
+/** The warm start of a point joint with an angular row (weld, mouse): its linear impulse at the anchors and the angular one (IANG). */
+export function warmStartPointAngle(p: JointPass2D, ia: number, ib: number, o: number): void {
+  warmStartPoint(p, ia, ib, o, p.rows[o + R.IANG]!);
 }
 
 /** The force (N) of a point joint's linear impulse over the substep (the frame's F_INVH). */
@@ -376,26 +371,26 @@ export function axisFrame(p: JointPass2D, o: number): void {
 /** The relative velocity along the axis of the frame (axisFrame), m/s. */
 export function axialSpeed(p: JointPass2D, oA: number, oB: number): number {
   const { sb, f } = p;
-  const vx = sb[oB + BS2_VX]! - sb[oA + BS2_VX]!,
-    vy = sb[oB + BS2_VY]! - sb[oA + BS2_VY]!;
-  return f[R.F_AXX]! * vx + f[R.F_AXY]! * vy + f[R.F_A2]! * sb[oB + BS2_W]! - f[R.F_A1]! * sb[oA + BS2_W]!;
+  const vx = sb[oB + BS.BS2_VX]! - sb[oA + BS.BS2_VX]!,
+    vy = sb[oB + BS.BS2_VY]! - sb[oA + BS.BS2_VY]!;
+  return f[R.F_AXX]! * vx + f[R.F_AXY]! * vy + f[R.F_A2]! * sb[oB + BS.BS2_W]! - f[R.F_A1]! * sb[oA + BS.BS2_W]!;
 }
 
 /** Applies an impulse along the axis of the frame (axisFrame), N s. */
 export function applyAxial(p: JointPass2D, oA: number, oB: number, impulse: number): void {
   const { sb, f } = p;
-  const mA = sb[oA + BS2_INV_MASS]!,
-    mB = sb[oB + BS2_INV_MASS]!;
+  const mA = sb[oA + BS.BS2_INV_MASS]!,
+    mB = sb[oB + BS.BS2_INV_MASS]!;
   const axx = f[R.F_AXX]!,
     axy = f[R.F_AXY]!;
-  const kA = sb[oA + BS2_INV_INERTIA]! * f[R.F_A1]!,
-    kB = sb[oB + BS2_INV_INERTIA]! * f[R.F_A2]!;
-  sb[oA + BS2_VX] = sb[oA + BS2_VX]! - mA * impulse * axx;
-  sb[oA + BS2_VY] = sb[oA + BS2_VY]! - mA * impulse * axy;
-  sb[oA + BS2_W] = sb[oA + BS2_W]! - kA * impulse;
-  sb[oB + BS2_VX] = sb[oB + BS2_VX]! + mB * impulse * axx;
-  sb[oB + BS2_VY] = sb[oB + BS2_VY]! + mB * impulse * axy;
-  sb[oB + BS2_W] = sb[oB + BS2_W]! + kB * impulse;
+  const kA = sb[oA + BS.BS2_INV_INERTIA]! * f[R.F_A1]!,
+    kB = sb[oB + BS.BS2_INV_INERTIA]! * f[R.F_A2]!;
+  sb[oA + BS.BS2_VX] = sb[oA + BS.BS2_VX]! - mA * impulse * axx;
+  sb[oA + BS.BS2_VY] = sb[oA + BS.BS2_VY]! - mA * impulse * axy;
+  sb[oA + BS.BS2_W] = sb[oA + BS.BS2_W]! - kA * impulse;
+  sb[oB + BS.BS2_VX] = sb[oB + BS.BS2_VX]! + mB * impulse * axx;
+  sb[oB + BS.BS2_VY] = sb[oB + BS.BS2_VY]! + mB * impulse * axy;
+  sb[oB + BS.BS2_W] = sb[oB + BS.BS2_W]! + kB * impulse;
 }
 
 /** The spring along the axis toward translation 0 (fixed stiffness: softness.ts fixedSpring). */
@@ -403,7 +398,8 @@ export function axialSpring(p: JointPass2D, oA: number, oB: number, o: number): 
   const { sb, rows, f } = p;
   const a1 = f[R.F_A1]!,
     a2 = f[R.F_A2]!;
-  const k = sb[oA + BS2_INV_MASS]! + sb[oB + BS2_INV_MASS]! + sb[oA + BS2_INV_INERTIA]! * a1 * a1 + sb[oB + BS2_INV_INERTIA]! * a2 * a2;
+  const k =
+    sb[oA + BS.BS2_INV_MASS]! + sb[oB + BS.BS2_INV_MASS]! + sb[oA + BS.BS2_INV_INERTIA]! * a1 * a1 + sb[oB + BS.BS2_INV_INERTIA]! * a2 * a2;
   const impulse = springImpulse(axialSpeed(p, oA, oB), f[R.F_TRANS]!, k, rows[o + R.ISPR]!, rows[o + R.SB]!, rows[o + R.SM]!);
   rows[o + R.ISPR] = rows[o + R.ISPR]! + impulse;
   applyAxial(p, oA, oB, impulse);
@@ -431,9 +427,9 @@ export function acrossAxis(p: JointPass2D, oA: number, oB: number, o: number): v
   const { sb, f } = p;
   const pxx = -f[R.F_AXY]!,
     pxy = f[R.F_AXX]!;
-  const vx = sb[oB + BS2_VX]! - sb[oA + BS2_VX]!,
-    vy = sb[oB + BS2_VY]! - sb[oA + BS2_VY]!;
-  f[R.F_CD] = pxx * vx + pxy * vy + f[R.F_S2]! * sb[oB + BS2_W]! - f[R.F_S1]! * sb[oA + BS2_W]!;
+  const vx = sb[oB + BS.BS2_VX]! - sb[oA + BS.BS2_VX]!,
+    vy = sb[oB + BS.BS2_VY]! - sb[oA + BS.BS2_VY]!;
+  f[R.F_CD] = pxx * vx + pxy * vy + f[R.F_S2]! * sb[oB + BS.BS2_W]! - f[R.F_S1]! * sb[oA + BS.BS2_W]!;
   f[R.F_BIAS] = p.useBias ? p.rows[o + R.JB]! * (pxx * f[R.F_DX]! + pxy * f[R.F_DY]!) : 0;
 }
 
@@ -449,7 +445,7 @@ export function warmStartAxis(p: JointPass2D, ia: number, ib: number, o: number,
   const perp = p.rows[o + R.ILX]!;
   const lA = axial * f[R.F_A1]! + perp * f[R.F_S1]! + angular,
     lB = axial * f[R.F_A2]! + perp * f[R.F_S2]! + angular;
-  applyImpulse(p.sb, ia * BS2_STRIDE, ib * BS2_STRIDE, axial * axx + perp * -axy, axial * axy + perp * axx, lA, lB);
+  applyImpulse(p.sb, ia * BS.BS2_STRIDE, ib * BS.BS2_STRIDE, axial * axx + perp * -axy, axial * axy + perp * axx, lA, lB);
 }
 
 /**

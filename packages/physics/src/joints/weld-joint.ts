@@ -1,4 +1,4 @@
-import { BS2_INV_INERTIA, BS2_INV_MASS, BS2_STRIDE, BS2_VX, BS2_VY, BS2_W } from '../solver/body-state-layout.js';
+import * as BS from '../solver/body-state-layout.js';
 import { assertKnownKeys, assertNonNegative } from '../validation/validate.js';
 import type { JointState } from '../world/joint-state-2d.js';
 import { JointFlag, type JointStore, JointType } from '../world/joint-store-2d.js';
@@ -15,7 +15,7 @@ import {
   pointForce,
   softAngularRow,
   solvePointRow,
-  warmStartPoint,
+  warmStartPointAngle,
 } from './rows-2d.js';
 import { soft } from './softness.js';
 
@@ -95,11 +95,6 @@ export function prepareWeldRow(js: JointState, J: JointStore, j: number, r: numb
   ri[q + R.TF] = JointType.Weld | (flags << 8);
 }
 
-/** A weld joint's warm start: its point impulse and its angular one. */
-export function warmStartWeldRow(p: JointPass2D, ia: number, ib: number, o: number): void {
-  warmStartPoint(p, ia, ib, o, p.rows[o + R.IANG]!);
-}
-
 /**
  * One pass of a weld joint's rows (Box2D v3's b2SolveWeldJoint) on its frame: both parts soft as one
  * 3 x 3 system (solveSoftWeld) when it can, else the angular row (soft when the weld's angular part
@@ -108,9 +103,9 @@ export function warmStartWeldRow(p: JointPass2D, ia: number, ib: number, o: numb
  */
 export function solveWeldRow(p: JointPass2D, ia: number, ib: number, o: number, flags: number): number {
   const { sb, rows } = p;
-  const oA = ia * BS2_STRIDE,
-    oB = ib * BS2_STRIDE;
-  const turns = sb[oA + BS2_INV_INERTIA]! + sb[oB + BS2_INV_INERTIA]! !== 0;
+  const oA = ia * BS.BS2_STRIDE,
+    oB = ib * BS.BS2_STRIDE;
+  const turns = sb[oA + BS.BS2_INV_INERTIA]! + sb[oB + BS.BS2_INV_INERTIA]! !== 0;
   if (flags & R.WELD_ANGULAR_SOFT && flags & JointFlag.Spring && turns && solveSoftWeld(p, oA, oB, o)) return R.ROW_PUSHED;
   const kax = rows[o + R.KAX]!;
   if (p.useBias || flags & R.WELD_ANGULAR_SOFT) {
@@ -149,10 +144,10 @@ function solveSoftWeld(p: JointPass2D, oA: number, oB: number, o: number): boole
   const msL = rows[o + R.JM]!,
     msA = rows[o + R.AM]!;
   if (!(msL > 0 && msA > 0)) return false;
-  const mA = sb[oA + BS2_INV_MASS]!,
-    iA = sb[oA + BS2_INV_INERTIA]!,
-    mB = sb[oB + BS2_INV_MASS]!,
-    iB = sb[oB + BS2_INV_INERTIA]!;
+  const mA = sb[oA + BS.BS2_INV_MASS]!,
+    iA = sb[oA + BS.BS2_INV_INERTIA]!,
+    mB = sb[oB + BS.BS2_INV_MASS]!,
+    iB = sb[oB + BS.BS2_INV_INERTIA]!;
   const rAx = f[R.F_RAX]!,
     rAy = f[R.F_RAY]!,
     rBx = f[R.F_RBX]!,
@@ -166,12 +161,12 @@ function solveSoftWeld(p: JointPass2D, oA: number, oB: number, o: number): boole
   const aRef = mA + mB + 0.5 * (iA * (rAx * rAx + rAy * rAy) + iB * (rBx * rBx + rBy * rBy));
   const gL = (aRef * rows[o + R.JI]!) / msL,
     gA = ((iA + iB) * rows[o + R.AI]!) / msA;
-  const vAx = sb[oA + BS2_VX]!,
-    vAy = sb[oA + BS2_VY]!,
-    wA = sb[oA + BS2_W]!,
-    vBx = sb[oB + BS2_VX]!,
-    vBy = sb[oB + BS2_VY]!,
-    wB = sb[oB + BS2_W]!;
+  const vAx = sb[oA + BS.BS2_VX]!,
+    vAy = sb[oA + BS.BS2_VY]!,
+    wA = sb[oA + BS.BS2_W]!,
+    vBx = sb[oB + BS.BS2_VX]!,
+    vBy = sb[oB + BS.BS2_VY]!,
+    wB = sb[oB + BS.BS2_W]!;
   // A = J M^-1 J^T for the rows (x, y, angle); Box2D v2's weld matrix.
   const a11 = mA + mB + rAy * rAy * iA + rBy * rBy * iB,
     a12 = -rAy * rAx * iA - rBy * rBx * iB,
@@ -215,7 +210,7 @@ function solveSoftWeld(p: JointPass2D, oA: number, oB: number, o: number): boole
 /** The 2D weld joint's row functions (rows-2d.ts JointTypeRows2D). */
 export const WELD_ROWS_2D: JointTypeRows2D = {
   prepare: prepareWeldRow,
-  warmStart: warmStartWeldRow,
+  warmStart: warmStartPointAngle,
   solve: solveWeldRow,
   reading: weldReading,
 };

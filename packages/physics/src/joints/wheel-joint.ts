@@ -1,8 +1,8 @@
-import { BS2_INV_INERTIA, BS2_INV_MASS, BS2_STRIDE, BS2_VX, BS2_VY, BS2_W } from '../solver/body-state-layout.js';
+import * as BS from '../solver/body-state-layout.js';
 import { JointFlag, JointType } from '../world/joint-store-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { type AxisJointKind, addAxisJoint } from './joint-2d.js';
-import { BASE_KEYS, type JointBaseOptions } from './joint-base.js';
+import type { JointBaseOptions } from './joint-base.js';
 import * as R from './layout-2d.js';
 import {
   acrossAxis,
@@ -60,7 +60,6 @@ export function addWheelJoint(world: PhysicsWorld, options: WheelJointOptions): 
 const WHEEL: AxisJointKind = {
   where: 'addWheelJoint',
   type: JointType.Wheel,
-  keys: [...BASE_KEYS, 'anchor', 'axis', 'hertz', 'dampingRatio', 'lower', 'upper', 'motorSpeed', 'maxMotorTorque'],
   maxName: 'maxMotorTorque',
   axis: [0, 1],
   hertz: 4,
@@ -80,13 +79,13 @@ export function warmStartWheelRow(p: JointPass2D, ia: number, ib: number, o: num
  */
 export function solveWheelRow(p: JointPass2D, ia: number, ib: number, o: number, flags: number): number {
   const { sb, rows, f } = p;
-  const oA = ia * BS2_STRIDE,
-    oB = ib * BS2_STRIDE;
+  const oA = ia * BS.BS2_STRIDE,
+    oB = ib * BS.BS2_STRIDE;
   axisFrame(p, o);
-  const mA = sb[oA + BS2_INV_MASS]!,
-    iA = sb[oA + BS2_INV_INERTIA]!,
-    mB = sb[oB + BS2_INV_MASS]!,
-    iB = sb[oB + BS2_INV_INERTIA]!;
+  const mA = sb[oA + BS.BS2_INV_MASS]!,
+    iA = sb[oA + BS.BS2_INV_INERTIA]!,
+    mB = sb[oB + BS.BS2_INV_MASS]!,
+    iB = sb[oB + BS.BS2_INV_INERTIA]!;
   if (flags & JointFlag.Motor && iA + iB !== 0) angularMotor(p, oA, oB, o, rows[o + R.KMOT]!);
   if (flags & JointFlag.Spring) axialSpring(p, oA, oB, o);
   if (flags & JointFlag.Limit) axialLimits(p, oA, oB, o);
@@ -102,12 +101,12 @@ export function solveWheelRow(p: JointPass2D, ia: number, ib: number, o: number,
   // The impulse i1 across the axis (-axy, axx) on B, minus on A, and its angular impulses i1 s1 on A and i1 s2 on B.
   const px = i1 * -f[R.F_AXY]!,
     py = i1 * f[R.F_AXX]!;
-  sb[oA + BS2_VX] = sb[oA + BS2_VX]! - mA * px;
-  sb[oA + BS2_VY] = sb[oA + BS2_VY]! - mA * py;
-  sb[oA + BS2_W] = sb[oA + BS2_W]! - iA * i1 * s1;
-  sb[oB + BS2_VX] = sb[oB + BS2_VX]! + mB * px;
-  sb[oB + BS2_VY] = sb[oB + BS2_VY]! + mB * py;
-  sb[oB + BS2_W] = sb[oB + BS2_W]! + iB * i1 * s2;
+  sb[oA + BS.BS2_VX] = sb[oA + BS.BS2_VX]! - mA * px;
+  sb[oA + BS.BS2_VY] = sb[oA + BS.BS2_VY]! - mA * py;
+  sb[oA + BS.BS2_W] = sb[oA + BS.BS2_W]! - iA * i1 * s1;
+  sb[oB + BS.BS2_VX] = sb[oB + BS.BS2_VX]! + mB * px;
+  sb[oB + BS.BS2_VY] = sb[oB + BS.BS2_VY]! + mB * py;
+  sb[oB + BS.BS2_W] = sb[oB + BS.BS2_W]! + iB * i1 * s2;
   return R.ROW_PUSHED;
 }
 
