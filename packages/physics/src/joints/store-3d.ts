@@ -80,25 +80,50 @@ export interface Joint3DStore {
   breaks: number[][];
 }
 
-/** The Float64Array fields of a Joint3DStore, in its order: anchors, axes, rest orientation, limits, motor, spring, breaking, impulses. */
-const FLOAT_FIELDS = [
-  ...['ax', 'ay', 'az', 'bx', 'by', 'bz', 'uax', 'uay', 'uaz', 'ubx', 'uby', 'ubz', 'rx', 'ry', 'rz', 'rw', 'lower', 'upper'],
-  ...['motorSpeed', 'maxMotorTorque', 'length', 'hertz', 'dampingRatio', 'breakForce', 'breakTorque'],
-  ...['lx', 'ly', 'lz', 'wx', 'wy', 'wz', 'limit', 'motor'],
-] as const;
-
 function create(capacity: number): Joint3DStore {
-  const n = capacity + 1;
-  const s: Record<string, unknown> = {
+  const n = capacity + 1,
+    f = (): Float64Array => new Float64Array(n);
+  return {
     list: [],
     type: new Uint8Array(n),
     flags: new Uint8Array(n),
     a: new Int32Array(n),
     b: new Int32Array(n),
+    ax: f(),
+    ay: f(),
+    az: f(),
+    bx: f(),
+    by: f(),
+    bz: f(),
+    uax: f(),
+    uay: f(),
+    uaz: f(),
+    ubx: f(),
+    uby: f(),
+    ubz: f(),
+    rx: f(),
+    ry: f(),
+    rz: f(),
+    rw: f(),
+    lower: f(),
+    upper: f(),
+    motorSpeed: f(),
+    maxMotorTorque: f(),
+    length: f(),
+    hertz: f(),
+    dampingRatio: f(),
+    breakForce: f(),
+    breakTorque: f(),
+    lx: f(),
+    ly: f(),
+    lz: f(),
+    wx: f(),
+    wy: f(),
+    wz: f(),
+    limit: f(),
+    motor: f(),
+    breaks: [],
   };
-  for (const k of FLOAT_FIELDS) s[k] = new Float64Array(n);
-  s.breaks = [];
-  return s as unknown as Joint3DStore;
 }
 
 /**
