@@ -110,7 +110,7 @@ export const F_MA = 10;
 export const F_IA = 11;
 export const F_MB = 12;
 export const F_IB = 13;
-// A joint along an axis (rows-2d.ts axisFrame, acrossAxis): the axis turned with A (world), B's
+// A joint along an axis (rows-2d.ts axisFrame, solveAlongAxis): the axis turned with A (world), B's
 // translation along it (m), the angular Jacobians along it (m), and those of the row across it, that
 // row's velocity error (m/s) and bias (m/s).
 export const F_AXX = 14;
@@ -122,7 +122,11 @@ export const F_S1 = 19;
 export const F_S2 = 20;
 export const F_CD = 21;
 export const F_BIAS = 22;
-export const FRAME_SIZE = 23;
+// A type's impulses for a shared warm start or reading (rows-2d.ts warmStartPoint, warmStartAxis,
+// axisReading): along its axis or about its anchors (N s or N m s), and its angular row's (N m s).
+export const F_AXIAL = 23;
+export const F_ANGULAR = 24;
+export const FRAME_SIZE = 25;
 
 /** What a type's row solve did: nothing (a distance joint of zero length). */
 export const ROW_SKIPPED = 0;

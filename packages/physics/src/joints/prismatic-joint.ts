@@ -1,21 +1,16 @@
 import * as BS from '../solver/body-state-layout.js';
-import { JointFlag, JointType } from '../world/joint-store-2d.js';
+import { JointType } from '../world/joint-store-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { type AxisJointKind, addAxisJoint } from './joint-2d.js';
 import type { JointBaseOptions } from './joint-base.js';
 import * as R from './layout-2d.js';
 import {
-  acrossAxis,
-  applyAxial,
   applyImpulse,
-  axialLimits,
-  axialSpeed,
-  axialSpring,
-  axisFrame,
   axisReading,
   type JointPass2D,
   type JointTypeRows2D,
   prepareAxisRow,
+  solveAlongAxis,
   warmStartAxis,
 } from './rows-2d.js';
 
@@ -70,8 +65,9 @@ const PRISMATIC: AxisJointKind = {
 /** A prismatic joint's warm start: its spring's, motor's and limits' impulses along the axis, the row's across it and the angular row's. */
 export function warmStartPrismaticRow(p: JointPass2D, ia: number, ib: number, o: number): void {
   const rows = p.rows;
-  const axial = rows[o + R.ISPR]! + rows[o + R.IMOT]! + rows[o + R.ILOW]! - rows[o + R.IUP]!;
-  warmStartAxis(p, ia, ib, o, axial, rows[o + R.IANG]!);
+  p.f[R.F_AXIAL] = rows[o + R.ISPR]! + rows[o + R.IMOT]! + rows[o + R.ILOW]! - rows[o + R.IUP]!;
+  p.f[R.F_ANGULAR] = rows[o + R.IANG]!;
+  warmStartAxis(p, ia, ib, o);
 }
 
 /**
@@ -84,18 +80,7 @@ export function solvePrismaticRow(p: JointPass2D, ia: number, ib: number, o: num
   const { sb, rows, f } = p;
   const oA = ia * BS.BS2_STRIDE,
     oB = ib * BS.BS2_STRIDE;
-  axisFrame(p, o);
-  if (flags & JointFlag.Spring) axialSpring(p, oA, oB, o);
-  if (flags & JointFlag.Motor) {
-    const max = rows[o + R.MMAX]!;
-    const old = rows[o + R.IMOT]!;
-    let next = old + rows[o + R.KAX]! * (rows[o + R.MSPD]! - axialSpeed(p, oA, oB));
-    next = next < -max ? -max : next > max ? max : next;
-    rows[o + R.IMOT] = next;
-    applyAxial(p, oA, oB, next - old);
-  }
-  if (flags & JointFlag.Limit) axialLimits(p, oA, oB, o);
-  acrossAxis(p, oA, oB, o);
+  solveAlongAxis(p, oA, oB, o, flags, false);
   const mA = sb[oA + BS.BS2_INV_MASS]!,
     iA = sb[oA + BS.BS2_INV_INERTIA]!,
     mB = sb[oB + BS.BS2_INV_MASS]!,
@@ -132,8 +117,9 @@ export function solvePrismaticRow(p: JointPass2D, ia: number, ib: number, o: num
 /** A prismatic joint's reading after the step into out: the force along and across its axis (N), its angular row's torque (N m), B's offset across the axis (m). */
 export function prismaticReading(p: JointPass2D, o: number, _flags: number, out: Float64Array): void {
   const rows = p.rows;
-  const axial = rows[o + R.ISPR]! + rows[o + R.ILOW]! - rows[o + R.IUP]! + rows[o + R.IMOT]!;
-  axisReading(p, o, axial, rows[o + R.IANG]!, out);
+  p.f[R.F_AXIAL] = rows[o + R.ISPR]! + rows[o + R.ILOW]! - rows[o + R.IUP]! + rows[o + R.IMOT]!;
+  p.f[R.F_ANGULAR] = rows[o + R.IANG]!;
+  axisReading(p, o, out);
 }
 
 /** The 2D prismatic joint's row functions (rows-2d.ts JointTypeRows2D). */

@@ -9,15 +9,13 @@ import { BASE_KEYS, checkEnds, type JointBaseOptions } from './joint-base.js';
 import * as R from './layout-2d.js';
 import {
   angularMass,
-  angularMotor,
-  applyAngular,
   applyImpulse,
   type JointPass2D,
   type JointTypeRows2D,
   limitRow,
+  motorImpulse,
   packPin,
   pointForce,
-  softAngularRow,
   solvePointBlocks,
   solvePointRow,
   unwind,
@@ -97,7 +95,8 @@ export function prepareRevoluteRow(js: JointState, _J: JointStore, _j: number, r
 /** A revolute joint's warm start: its point impulse, and its spring's, motor's and limits' about the anchors. */
 export function warmStartRevoluteRow(p: JointPass2D, ia: number, ib: number, o: number): void {
   const rows = p.rows;
-  warmStartPoint(p, ia, ib, o, rows[o + R.ISPR]! + rows[o + R.IMOT]! + rows[o + R.ILOW]! - rows[o + R.IUP]!);
+  p.f[R.F_AXIAL] = rows[o + R.ISPR]! + rows[o + R.IMOT]! + rows[o + R.ILOW]! - rows[o + R.IUP]!;
+  warmStartPoint(p, ia, ib, o);
 }
 
 /**
@@ -109,19 +108,38 @@ export function solveRevoluteRow(p: JointPass2D, ia: number, ib: number, o: numb
   const { sb, rows } = p;
   const oA = ia * BS.BS2_STRIDE,
     oB = ib * BS.BS2_STRIDE;
-  if (sb[oA + BS.BS2_INV_INERTIA]! + sb[oB + BS.BS2_INV_INERTIA]! !== 0) {
+  const iA = sb[oA + BS.BS2_INV_INERTIA]!,
+    iB = sb[oB + BS.BS2_INV_INERTIA]!;
+  if (iA + iB !== 0) {
     const relAngle = p.f[R.F_REL]!,
       kax = rows[o + R.KAX]!;
-    if (flags & JointFlag.Spring) softAngularRow(p, oA, oB, o, R.ISPR, kax, rows[o + R.SB]! * relAngle, rows[o + R.SM]!, rows[o + R.SI]!);
-    if (flags & JointFlag.Motor) angularMotor(p, oA, oB, o, kax);
+    let wA = sb[oA + BS.BS2_W]!,
+      wB = sb[oB + BS.BS2_W]!;
+    if (flags & JointFlag.Spring) {
+      const impulse = -rows[o + R.SM]! * kax * (wB - wA + rows[o + R.SB]! * relAngle) - rows[o + R.SI]! * rows[o + R.ISPR]!;
+      rows[o + R.ISPR] = rows[o + R.ISPR]! + impulse;
+      wA -= iA * impulse;
+      wB += iB * impulse;
+    }
+    if (flags & JointFlag.Motor) {
+      const impulse = motorImpulse(rows, o, kax, wB - wA);
+      wA -= iA * impulse;
+      wB += iB * impulse;
+    }
     if (flags & JointFlag.Limit) {
       // Lower: C = angle - lower >= 0, along wB - wA. Upper: C = upper - angle >= 0, along wA - wB.
       const angle = unwind(relAngle);
-      applyAngular(sb, oA, oB, limitRow(p, o, R.ILOW, angle - rows[o + R.LOW]!, kax, sb[oB + BS.BS2_W]! - sb[oA + BS.BS2_W]!));
-      applyAngular(sb, oA, oB, -limitRow(p, o, R.IUP, rows[o + R.UP]! - angle, kax, sb[oA + BS.BS2_W]! - sb[oB + BS.BS2_W]!));
+      const lower = limitRow(p, o, R.ILOW, angle - rows[o + R.LOW]!, kax, wB - wA);
+      wA -= iA * lower;
+      wB += iB * lower;
+      const upper = limitRow(p, o, R.IUP, rows[o + R.UP]! - angle, kax, wA - wB);
+      wA += iA * upper;
+      wB -= iB * upper;
     }
+    sb[oA + BS.BS2_W] = wA;
+    sb[oB + BS.BS2_W] = wB;
   }
-  solvePointRow(p, o, ia, ib, p.useBias);
+  solvePointRow(p, oA, oB, o, p.useBias);
   return R.ROW_PUSHED;
 }
 

@@ -1,6 +1,6 @@
 import * as BS from '../solver/body-state-layout.js';
 import type { JointState } from '../world/joint-state-2d.js';
-import type { JointStore } from '../world/joint-store-2d.js';
+import { JointFlag, type JointStore } from '../world/joint-store-2d.js';
 import { PIN_FLOATS, PIN_INTS, ROW_FLOATS } from '../world/joint-strides-2d.js';
 import * as R from './layout-2d.js';
 import { fixedSpring, springImpulse } from './softness.js';
@@ -85,19 +85,12 @@ export function applyImpulse(sb: Float64Array, oA: number, oB: number, px: numbe
   sb[oB + BS.BS2_W] = sb[oB + BS.BS2_W]! + iB * lB;
 }
 
-/** Applies an angular impulse (N m s): -impulse to A, +impulse to B. */
-export function applyAngular(sb: Float64Array, oA: number, oB: number, impulse: number): void {
-  sb[oA + BS.BS2_W] = sb[oA + BS.BS2_W]! - sb[oA + BS.BS2_INV_INERTIA]! * impulse;
-  sb[oB + BS.BS2_W] = sb[oB + BS.BS2_W]! + sb[oB + BS.BS2_INV_INERTIA]! * impulse;
-}
-
 /**
- * Solves the point-to-point blocks of the first `count` pins (pf, pint: layout-2d.ts PN_*), each with
- * its anchors turned with their bodies (`rot`, as poseFrame) coinciding, as one 2 x 2 system. While
- * `useBias` they push out the anchors' separation as soft constraints with the softness in `sf` (bias
- * rate 1/s, mass scale, impulse scale: Catto, "Soft Constraints", GDC 2011), else they only remove
- * relative velocity. The pins' lean loop (revolute-joint.ts) and, one at a time, the revolute and weld
- * joints' general rows (solvePointRow).
+ * The pins' pass (revolute joints without spring, motor or limit, packed by their preparation: a
+ * lean loop over their own 8 numbers, not the row's): each pin's anchors turned with their bodies
+ * (`rot`, as poseFrame) coincide, as one 2 x 2 system (as solvePointRow). While `useBias` they push out
+ * the anchors' separation as soft constraints with the rigid joint softness `sf` (bias rate 1/s, mass
+ * scale, impulse scale: Catto, "Soft Constraints", GDC 2011), else they only remove relative velocity.
  */
 export function solvePointBlocks(
   sb: Float64Array,
@@ -194,60 +187,78 @@ export function packPin(
   pint[i + R.PN_ROW] = r;
 }
 
-/** One pin's floats, integers and softness (solvePointRow). */
-const onePin = new Float64Array(PIN_FLOATS),
-  onePinInts = new Int32Array(PIN_INTS),
-  rowSoftness = new Float64Array(3);
-
 /**
- * The point-to-point block of general row `o` of solver bodies ia, ib (revolute, weld), solved as a
- * pin (solvePointBlocks): `soft`, it pushes out the anchors' separation with the row's rigid softness (JB,
- * JM, JI); else it only removes their relative velocity.
+ * The point-to-point block of general row `o` (revolute, weld) on its frame: the anchors coincide, as
+ * one 2 x 2 system; `soft`, it pushes out their separation with the row's rigid softness (JB, JM, JI),
+ * else it only removes their relative velocity.
  */
-export function solvePointRow(p: JointPass2D, o: number, ia: number, ib: number, soft: boolean): void {
-  const rows = p.rows;
-  packPin(rows, o, onePin, onePinInts, 0, ia, ib, 0);
-  rowSoftness[0] = rows[o + R.JB]!;
-  rowSoftness[1] = rows[o + R.JM]!;
-  rowSoftness[2] = rows[o + R.JI]!;
-  solvePointBlocks(p.sb, p.rot, onePin, onePinInts, 1, soft, rowSoftness);
-  rows[o + R.ILX] = onePin[R.PN_ILX]!;
-  rows[o + R.ILY] = onePin[R.PN_ILY]!;
+export function solvePointRow(p: JointPass2D, oA: number, oB: number, o: number, soft: boolean): void {
+  const { sb, rows, f } = p;
+  const mA = sb[oA + BS.BS2_INV_MASS]!,
+    iA = sb[oA + BS.BS2_INV_INERTIA]!,
+    mB = sb[oB + BS.BS2_INV_MASS]!,
+    iB = sb[oB + BS.BS2_INV_INERTIA]!;
+  const rAx = f[R.F_RAX]!,
+    rAy = f[R.F_RAY]!,
+    rBx = f[R.F_RBX]!,
+    rBy = f[R.F_RBY]!;
+  let vAx = sb[oA + BS.BS2_VX]!,
+    vAy = sb[oA + BS.BS2_VY]!,
+    wA = sb[oA + BS.BS2_W]!,
+    vBx = sb[oB + BS.BS2_VX]!,
+    vBy = sb[oB + BS.BS2_VY]!,
+    wB = sb[oB + BS.BS2_W]!;
+  const cdx = vBx - wB * rBy - vAx + wA * rAy,
+    cdy = vBy + wB * rBx - vAy - wA * rAx;
+  let bx = 0,
+    by = 0,
+    ms = 1,
+    is = 0;
+  if (soft) {
+    bx = rows[o + R.JB]! * f[R.F_DX]!;
+    by = rows[o + R.JB]! * f[R.F_DY]!;
+    ms = rows[o + R.JM]!;
+    is = rows[o + R.JI]!;
+  }
+  const k11 = mA + mB + rAy * rAy * iA + rBy * rBy * iB;
+  const k12 = -rAy * rAx * iA - rBy * rBx * iB;
+  const k22 = mA + mB + rAx * rAx * iA + rBx * rBx * iB;
+  let det = k11 * k22 - k12 * k12;
+  if (det !== 0) det = 1 / det;
+  const ex = cdx + bx,
+    ey = cdy + by;
+  const sx = det * (k22 * ex - k12 * ey),
+    sy = det * (k11 * ey - k12 * ex);
+  const ix = -ms * sx - is * rows[o + R.ILX]!,
+    iy = -ms * sy - is * rows[o + R.ILY]!;
+  rows[o + R.ILX] = rows[o + R.ILX]! + ix;
+  rows[o + R.ILY] = rows[o + R.ILY]! + iy;
+  vAx -= mA * ix;
+  vAy -= mA * iy;
+  wA -= iA * (rAx * iy - rAy * ix);
+  vBx += mB * ix;
+  vBy += mB * iy;
+  wB += iB * (rBx * iy - rBy * ix);
+  sb[oA + BS.BS2_VX] = vAx;
+  sb[oA + BS.BS2_VY] = vAy;
+  sb[oA + BS.BS2_W] = wA;
+  sb[oB + BS.BS2_VX] = vBx;
+  sb[oB + BS.BS2_VY] = vBy;
+  sb[oB + BS.BS2_W] = wB;
 }
 
 /**
- * A soft angular row on the relative spin wB - wA: impulse -ms k (wB - wA + bias) - is lambda, its
- * accumulated impulse lambda at rows[o + slot] (a revolute joint's spring, a weld's angular part).
+ * A rotation motor (revolute, wheel): the change of its accumulated impulse (N m s) driving the
+ * relative spin `spin` = wB - wA toward the row's motor speed with effective mass `k`, the impulse
+ * capped at the largest a substep (MMAX).
  */
-export function softAngularRow(
-  p: JointPass2D,
-  oA: number,
-  oB: number,
-  o: number,
-  slot: number,
-  k: number,
-  bias: number,
-  ms: number,
-  is: number,
-): void {
-  const { sb, rows } = p;
-  const impulse = -ms * k * (sb[oB + BS.BS2_W]! - sb[oA + BS.BS2_W]! + bias) - is * rows[o + slot]!;
-  rows[o + slot] = rows[o + slot]! + impulse;
-  applyAngular(sb, oA, oB, impulse);
-}
-
-/**
- * A rotation motor (revolute, wheel): drives the relative spin wB - wA toward the row's motor speed
- * with effective mass `k`, its accumulated impulse capped at the largest a substep (MMAX).
- */
-export function angularMotor(p: JointPass2D, oA: number, oB: number, o: number, k: number): void {
-  const { sb, rows } = p;
+export function motorImpulse(rows: Float64Array, o: number, k: number, spin: number): number {
   const max = rows[o + R.MMAX]!;
   const old = rows[o + R.IMOT]!;
-  let next = old - k * (sb[oB + BS.BS2_W]! - sb[oA + BS.BS2_W]! - rows[o + R.MSPD]!);
+  let next = old - k * (spin - rows[o + R.MSPD]!);
   next = next < -max ? -max : next > max ? max : next;
   rows[o + R.IMOT] = next;
-  applyAngular(sb, oA, oB, next - old);
+  return next - old;
 }
 
 /**
@@ -280,11 +291,12 @@ export function angularMass(iA: number, iB: number): number {
   return iA + iB > 0 ? 1 / (iA + iB) : 0;
 }
 
-/** A point joint's warm start (revolute, weld, mouse): its linear impulse at the anchors and `axial` (N m s) about them. */
-export function warmStartPoint(p: JointPass2D, ia: number, ib: number, o: number, axial: number): void {
+/** A point joint's warm start (revolute, weld, mouse): its linear impulse at the anchors and the frame's F_AXIAL (N m s) about them. */
+export function warmStartPoint(p: JointPass2D, ia: number, ib: number, o: number): void {
   const { rows, f } = p;
   const px = rows[o + R.ILX]!,
-    py = rows[o + R.ILY]!;
+    py = rows[o + R.ILY]!,
+    axial = f[R.F_AXIAL]!;
   const lA = f[R.F_RAX]! * py - f[R.F_RAY]! * px + axial,
     lB = f[R.F_RBX]! * py - f[R.F_RBY]! * px + axial;
   applyImpulse(p.sb, ia * BS.BS2_STRIDE, ib * BS.BS2_STRIDE, px, py, lA, lB);
@@ -292,7 +304,8 @@ export function warmStartPoint(p: JointPass2D, ia: number, ib: number, o: number
 
 /** The warm start of a point joint with an angular row (weld, mouse): its linear impulse at the anchors and the angular one (IANG). */
 export function warmStartPointAngle(p: JointPass2D, ia: number, ib: number, o: number): void {
-  warmStartPoint(p, ia, ib, o, p.rows[o + R.IANG]!);
+  p.f[R.F_AXIAL] = p.rows[o + R.IANG]!;
+  warmStartPoint(p, ia, ib, o);
 }
 
 /** The force (N) of a point joint's linear impulse over the substep (the frame's F_INVH). */
@@ -368,80 +381,94 @@ export function axisFrame(p: JointPass2D, o: number): void {
   f[R.F_S2] = rBx * axx - rBy * -axy;
 }
 
-/** The relative velocity along the axis of the frame (axisFrame), m/s. */
-export function axialSpeed(p: JointPass2D, oA: number, oB: number): number {
-  const { sb, f } = p;
-  const vx = sb[oB + BS.BS2_VX]! - sb[oA + BS.BS2_VX]!,
-    vy = sb[oB + BS.BS2_VY]! - sb[oA + BS.BS2_VY]!;
-  return f[R.F_AXX]! * vx + f[R.F_AXY]! * vy + f[R.F_A2]! * sb[oB + BS.BS2_W]! - f[R.F_A1]! * sb[oA + BS.BS2_W]!;
-}
-
-/** Applies an impulse along the axis of the frame (axisFrame), N s. */
-export function applyAxial(p: JointPass2D, oA: number, oB: number, impulse: number): void {
-  const { sb, f } = p;
-  const mA = sb[oA + BS.BS2_INV_MASS]!,
-    mB = sb[oB + BS.BS2_INV_MASS]!;
-  const axx = f[R.F_AXX]!,
-    axy = f[R.F_AXY]!;
-  const kA = sb[oA + BS.BS2_INV_INERTIA]! * f[R.F_A1]!,
-    kB = sb[oB + BS.BS2_INV_INERTIA]! * f[R.F_A2]!;
-  sb[oA + BS.BS2_VX] = sb[oA + BS.BS2_VX]! - mA * impulse * axx;
-  sb[oA + BS.BS2_VY] = sb[oA + BS.BS2_VY]! - mA * impulse * axy;
-  sb[oA + BS.BS2_W] = sb[oA + BS.BS2_W]! - kA * impulse;
-  sb[oB + BS.BS2_VX] = sb[oB + BS.BS2_VX]! + mB * impulse * axx;
-  sb[oB + BS.BS2_VY] = sb[oB + BS.BS2_VY]! + mB * impulse * axy;
-  sb[oB + BS.BS2_W] = sb[oB + BS.BS2_W]! + kB * impulse;
-}
-
-/** The spring along the axis toward translation 0 (fixed stiffness: softness.ts fixedSpring). */
-export function axialSpring(p: JointPass2D, oA: number, oB: number, o: number): void {
+/**
+ * The rows along a joint's axis (prismatic, wheel) on its frame: a wheel's rotation motor (`wheel`;
+ * unless neither body turns), the spring of fixed stiffness toward translation 0 (softness.ts
+ * fixedSpring), a prismatic joint's motor along the axis, the translation limits (one-sided rows:
+ * limitRow); each capped motor impulse at the largest a substep. Fills the frame's axis (axisFrame),
+ * and for the row across it its velocity error after these rows (F_CD) and its bias while the pass
+ * uses bias (F_BIAS: the rigid softness's rate times B's offset across the axis).
+ */
+export function solveAlongAxis(p: JointPass2D, oA: number, oB: number, o: number, flags: number, wheel: boolean): void {
   const { sb, rows, f } = p;
-  const a1 = f[R.F_A1]!,
+  axisFrame(p, o);
+  const mA = sb[oA + BS.BS2_INV_MASS]!,
+    iA = sb[oA + BS.BS2_INV_INERTIA]!,
+    mB = sb[oB + BS.BS2_INV_MASS]!,
+    iB = sb[oB + BS.BS2_INV_INERTIA]!;
+  const axx = f[R.F_AXX]!,
+    axy = f[R.F_AXY]!,
+    translation = f[R.F_TRANS]!,
+    a1 = f[R.F_A1]!,
     a2 = f[R.F_A2]!;
-  const k =
-    sb[oA + BS.BS2_INV_MASS]! + sb[oB + BS.BS2_INV_MASS]! + sb[oA + BS.BS2_INV_INERTIA]! * a1 * a1 + sb[oB + BS.BS2_INV_INERTIA]! * a2 * a2;
-  const impulse = springImpulse(axialSpeed(p, oA, oB), f[R.F_TRANS]!, k, rows[o + R.ISPR]!, rows[o + R.SB]!, rows[o + R.SM]!);
-  rows[o + R.ISPR] = rows[o + R.ISPR]! + impulse;
-  applyAxial(p, oA, oB, impulse);
-}
-
-/** The lower and upper translation limits along the axis (one-sided rows: limitRow). */
-export function axialLimits(p: JointPass2D, oA: number, oB: number, o: number): void {
-  const rows = p.rows,
-    translation = p.f[R.F_TRANS]!;
-  for (let side = 0; side < 2; side++) {
-    // Lower: C = translation - lower >= 0. Upper (signs flipped): C = upper - translation >= 0.
-    const sign = side === 0 ? 1 : -1;
-    const C = side === 0 ? translation - rows[o + R.LOW]! : rows[o + R.UP]! - translation;
-    const cdot = sign * axialSpeed(p, oA, oB);
-    applyAxial(p, oA, oB, sign * limitRow(p, o, side === 0 ? R.ILOW : R.IUP, C, rows[o + R.KAX]!, cdot));
+  let vAx = sb[oA + BS.BS2_VX]!,
+    vAy = sb[oA + BS.BS2_VY]!,
+    wA = sb[oA + BS.BS2_W]!,
+    vBx = sb[oB + BS.BS2_VX]!,
+    vBy = sb[oB + BS.BS2_VY]!,
+    wB = sb[oB + BS.BS2_W]!;
+  const kax = rows[o + R.KAX]!;
+  const kA = iA * a1,
+    kB = iB * a2;
+  if (wheel && flags & JointFlag.Motor && iA + iB !== 0) {
+    const impulse = motorImpulse(rows, o, rows[o + R.KMOT]!, wB - wA);
+    wA -= iA * impulse;
+    wB += iB * impulse;
   }
+  // Each row's impulse along the axis, and the relative velocity along it.
+  let impulse = 0;
+  for (let row = 0; row < 4; row++) {
+    const cdot = axx * (vBx - vAx) + axy * (vBy - vAy) + a2 * wB - a1 * wA;
+    if (row === 0) {
+      if (!(flags & JointFlag.Spring)) continue;
+      impulse = springImpulse(cdot, translation, mA + mB + kA * a1 + kB * a2, rows[o + R.ISPR]!, rows[o + R.SB]!, rows[o + R.SM]!);
+      rows[o + R.ISPR] = rows[o + R.ISPR]! + impulse;
+    } else if (row === 1) {
+      if (wheel || !(flags & JointFlag.Motor)) continue;
+      const max = rows[o + R.MMAX]!;
+      const old = rows[o + R.IMOT]!;
+      let next = old + kax * (rows[o + R.MSPD]! - cdot);
+      next = next < -max ? -max : next > max ? max : next;
+      rows[o + R.IMOT] = next;
+      impulse = next - old;
+    } else {
+      if (!(flags & JointFlag.Limit)) continue;
+      // Lower: C = translation - lower >= 0. Upper (signs flipped): C = upper - translation >= 0.
+      const sign = row === 2 ? 1 : -1;
+      const C = row === 2 ? translation - rows[o + R.LOW]! : rows[o + R.UP]! - translation;
+      impulse = sign * limitRow(p, o, row === 2 ? R.ILOW : R.IUP, C, kax, sign * cdot);
+    }
+    vAx -= mA * impulse * axx;
+    vAy -= mA * impulse * axy;
+    wA -= kA * impulse;
+    vBx += mB * impulse * axx;
+    vBy += mB * impulse * axy;
+    wB += kB * impulse;
+  }
+  sb[oA + BS.BS2_VX] = vAx;
+  sb[oA + BS.BS2_VY] = vAy;
+  sb[oA + BS.BS2_W] = wA;
+  sb[oB + BS.BS2_VX] = vBx;
+  sb[oB + BS.BS2_VY] = vBy;
+  sb[oB + BS.BS2_W] = wB;
+  // Across the axis: the perpendicular (-axy, axx).
+  const pxx = -axy,
+    pxy = axx;
+  f[R.F_CD] = pxx * (vBx - vAx) + pxy * (vBy - vAy) + f[R.F_S2]! * wB - f[R.F_S1]! * wA;
+  f[R.F_BIAS] = p.useBias ? rows[o + R.JB]! * (pxx * f[R.F_DX]! + pxy * f[R.F_DY]!) : 0;
 }
 
 /**
- * The start of the row across the axis (axisFrame), into the frame: its velocity error now (F_CD),
- * and its bias while the pass uses bias (F_BIAS: the rigid softness's rate times B's offset across
- * the axis).
+ * A joint along an axis' warm start (prismatic, wheel): the frame's F_AXIAL (N s) along the axis, the
+ * row across it (ILX), and F_ANGULAR (N m s). Fills the frame's axis (axisFrame).
  */
-export function acrossAxis(p: JointPass2D, oA: number, oB: number, o: number): void {
-  const { sb, f } = p;
-  const pxx = -f[R.F_AXY]!,
-    pxy = f[R.F_AXX]!;
-  const vx = sb[oB + BS.BS2_VX]! - sb[oA + BS.BS2_VX]!,
-    vy = sb[oB + BS.BS2_VY]! - sb[oA + BS.BS2_VY]!;
-  f[R.F_CD] = pxx * vx + pxy * vy + f[R.F_S2]! * sb[oB + BS.BS2_W]! - f[R.F_S1]! * sb[oA + BS.BS2_W]!;
-  f[R.F_BIAS] = p.useBias ? p.rows[o + R.JB]! * (pxx * f[R.F_DX]! + pxy * f[R.F_DY]!) : 0;
-}
-
-/**
- * A joint along an axis' warm start (prismatic, wheel): `axial` (N s) along the axis, the row across
- * it (ILX), and `angular` (N m s). Fills the frame's axis (axisFrame).
- */
-export function warmStartAxis(p: JointPass2D, ia: number, ib: number, o: number, axial: number, angular: number): void {
+export function warmStartAxis(p: JointPass2D, ia: number, ib: number, o: number): void {
   const f = p.f;
   axisFrame(p, o);
   const axx = f[R.F_AXX]!,
-    axy = f[R.F_AXY]!;
+    axy = f[R.F_AXY]!,
+    axial = f[R.F_AXIAL]!,
+    angular = f[R.F_ANGULAR]!;
   const perp = p.rows[o + R.ILX]!;
   const lA = axial * f[R.F_A1]! + perp * f[R.F_S1]! + angular,
     lB = axial * f[R.F_A2]! + perp * f[R.F_S2]! + angular;
@@ -449,16 +476,16 @@ export function warmStartAxis(p: JointPass2D, ia: number, ib: number, o: number,
 }
 
 /**
- * A joint along an axis' reading into out (force N, torque N m, error m): the force of `axial` (N s,
- * along the axis) and the row across it, the torque of `angular` (N m s), B's offset across the axis.
- * Fills the frame's axis (axisFrame).
+ * A joint along an axis' reading into out (force N, torque N m, error m): the force of the frame's
+ * F_AXIAL (N s, along the axis) and the row across it, the torque of F_ANGULAR (N m s), B's offset
+ * across the axis. Fills the frame's axis (axisFrame).
  */
-export function axisReading(p: JointPass2D, o: number, axial: number, angular: number, out: Float64Array): void {
+export function axisReading(p: JointPass2D, o: number, out: Float64Array): void {
   const f = p.f,
     invH = f[R.F_INVH]!;
   axisFrame(p, o);
-  out[0] = Math.hypot(axial, p.rows[o + R.ILX]!) * invH;
-  out[1] = Math.abs(angular) * invH;
+  out[0] = Math.hypot(f[R.F_AXIAL]!, p.rows[o + R.ILX]!) * invH;
+  out[1] = Math.abs(f[R.F_ANGULAR]!) * invH;
   out[2] = Math.abs(-f[R.F_AXY]! * f[R.F_DX]! + f[R.F_AXX]! * f[R.F_DY]!);
 }
 

@@ -12,7 +12,7 @@ import * as R from './layout-2d.js';
 import { MOUSE_ROWS_2D } from './mouse-joint.js';
 import { PRISMATIC_ROWS_2D } from './prismatic-joint.js';
 import { finishPins, REVOLUTE_ROWS_2D, solvePins, warmStartPins } from './revolute-joint.js';
-import { type JointPass2D, type JointTypeRows2D, poseFrame, unwind } from './rows-2d.js';
+import { type JointPass2D, poseFrame, unwind } from './rows-2d.js';
 import { soft } from './softness.js';
 import { WELD_ROWS_2D } from './weld-joint.js';
 import { WHEEL_ROWS_2D } from './wheel-joint.js';
@@ -23,7 +23,8 @@ import { WHEEL_ROWS_2D } from './wheel-joint.js';
  * wheel_joint.c, mouse_joint.c), solved by the contact solver (solver/contact-solver.ts) inside the same
  * substeps as the contacts, on the same packed solver bodies. Its stages run every row by its type's
  * row functions (each type's file; rows-2d.ts JointTypeRows2D), the point links' and pins' lean loops
- * (distance-joint.ts, revolute-joint.ts) first:
+ * (distance-joint.ts, revolute-joint.ts) first. A stage picks the type by a chain of tests rather than
+ * a table, so that each call site sees one function, which the engine can inline.
  *
  * 1. `gatherJointBodies` (while the contact solver gathers its bodies): every joint whose bodies are
  *    not both fixed (static, asleep or the world) gets a row; its moving bodies get solver indices;
@@ -43,18 +44,6 @@ import { WHEEL_ROWS_2D } from './wheel-joint.js';
  * the relax pass; springs keep their own softness in both. A joint that carries an impulse marks its
  * bodies in the solver body's `pushed` slot, as contacts do: they were not in free flight.
  */
-
-/** Each joint type's row functions, indexed by JointType code. */
-const TYPES: readonly JointTypeRows2D[] = (() => {
-  const t: JointTypeRows2D[] = [];
-  t[JointType.Distance] = DISTANCE_ROWS_2D;
-  t[JointType.Revolute] = REVOLUTE_ROWS_2D;
-  t[JointType.Prismatic] = PRISMATIC_ROWS_2D;
-  t[JointType.Weld] = WELD_ROWS_2D;
-  t[JointType.Wheel] = WHEEL_ROWS_2D;
-  t[JointType.Mouse] = MOUSE_ROWS_2D;
-  return t;
-})();
 
 /** The frame of the row being worked on (layout-2d.ts F_*). */
 const frame = new Float64Array(R.FRAME_SIZE);
@@ -380,7 +369,13 @@ export function prepareJoints(world: PhysicsWorld, hs: number): void {
     f[R.F_RBY] = rBy;
     f[R.F_DX] = dcx + rBx - rAx;
     f[R.F_DY] = dcy + rBy - rAy;
-    TYPES[ri[q + R.TF]! & 255]!.prepare(js, J, j, r, f, hs);
+    const type = ri[q + R.TF]! & 255;
+    if (type === JointType.Distance) DISTANCE_ROWS_2D.prepare(js, J, j, r, f, hs);
+    else if (type === JointType.Revolute) REVOLUTE_ROWS_2D.prepare(js, J, j, r, f, hs);
+    else if (type === JointType.Prismatic) PRISMATIC_ROWS_2D.prepare(js, J, j, r, f, hs);
+    else if (type === JointType.Weld) WELD_ROWS_2D.prepare(js, J, j, r, f, hs);
+    else if (type === JointType.Wheel) WHEEL_ROWS_2D.prepare(js, J, j, r, f, hs);
+    else MOUSE_ROWS_2D.prepare(js, J, j, r, f, hs);
   }
   js.generalCount = n - js.linkCount - js.pinCount;
 }
@@ -434,7 +429,12 @@ export function warmStartJoints(world: PhysicsWorld): void {
       type = ri[q + R.TF]! & 255;
     if (type === R.POINT_LINK || type === R.PIN) continue;
     poseFrame(p, o, ia, ib);
-    TYPES[type]!.warmStart(p, ia, ib, o);
+    if (type === JointType.Distance) DISTANCE_ROWS_2D.warmStart(p, ia, ib, o);
+    else if (type === JointType.Revolute) REVOLUTE_ROWS_2D.warmStart(p, ia, ib, o);
+    else if (type === JointType.Prismatic) PRISMATIC_ROWS_2D.warmStart(p, ia, ib, o);
+    else if (type === JointType.Weld) WELD_ROWS_2D.warmStart(p, ia, ib, o);
+    else if (type === JointType.Wheel) WHEEL_ROWS_2D.warmStart(p, ia, ib, o);
+    else MOUSE_ROWS_2D.warmStart(p, ia, ib, o);
   }
 }
 
@@ -475,7 +475,15 @@ function solveJointRows(world: PhysicsWorld, hs: number, useBias: boolean): void
     if (type === R.POINT_LINK || type === R.PIN) continue;
     poseFrame(p, o, ia, ib);
     // The joint pushes its bodies (the contact solver's `pushed` slot: they are not in free flight).
-    if (TYPES[type]!.solve(p, ia, ib, o, tf >> 8) === R.ROW_PUSHED) {
+    const flags = tf >> 8;
+    let done: number;
+    if (type === JointType.Distance) done = DISTANCE_ROWS_2D.solve(p, ia, ib, o, flags);
+    else if (type === JointType.Revolute) done = REVOLUTE_ROWS_2D.solve(p, ia, ib, o, flags);
+    else if (type === JointType.Prismatic) done = PRISMATIC_ROWS_2D.solve(p, ia, ib, o, flags);
+    else if (type === JointType.Weld) done = WELD_ROWS_2D.solve(p, ia, ib, o, flags);
+    else if (type === JointType.Wheel) done = WHEEL_ROWS_2D.solve(p, ia, ib, o, flags);
+    else done = MOUSE_ROWS_2D.solve(p, ia, ib, o, flags);
+    if (done === R.ROW_PUSHED) {
       sb[ia * BS.BS2_STRIDE + BS.BS2_PUSHED] = 1;
       sb[ib * BS.BS2_STRIDE + BS.BS2_PUSHED] = 1;
     }
@@ -522,7 +530,13 @@ export function finishJoints(world: PhysicsWorld, hs: number): void {
     out[1] = 0;
     out[2] = 0;
     out[3] = 0;
-    TYPES[type]!.reading(p, o, tf >> 8, out);
+    const flags = tf >> 8;
+    if (type === JointType.Distance) DISTANCE_ROWS_2D.reading(p, o, flags, out);
+    else if (type === JointType.Revolute) REVOLUTE_ROWS_2D.reading(p, o, flags, out);
+    else if (type === JointType.Prismatic) PRISMATIC_ROWS_2D.reading(p, o, flags, out);
+    else if (type === JointType.Weld) WELD_ROWS_2D.reading(p, o, flags, out);
+    else if (type === JointType.Wheel) WHEEL_ROWS_2D.reading(p, o, flags, out);
+    else MOUSE_ROWS_2D.reading(p, o, flags, out);
     const force = out[0]!,
       torque = out[1]!,
       error = out[2]!,

@@ -13,7 +13,6 @@ import {
   type JointPass2D,
   type JointTypeRows2D,
   pointForce,
-  softAngularRow,
   solvePointRow,
   warmStartPointAngle,
 } from './rows-2d.js';
@@ -107,11 +106,21 @@ export function solveWeldRow(p: JointPass2D, ia: number, ib: number, o: number, 
     oB = ib * BS.BS2_STRIDE;
   const turns = sb[oA + BS.BS2_INV_INERTIA]! + sb[oB + BS.BS2_INV_INERTIA]! !== 0;
   if (flags & R.WELD_ANGULAR_SOFT && flags & JointFlag.Spring && turns && solveSoftWeld(p, oA, oB, o)) return R.ROW_PUSHED;
-  const kax = rows[o + R.KAX]!;
+  let bias = 0,
+    ms = 1,
+    is = 0;
   if (p.useBias || flags & R.WELD_ANGULAR_SOFT) {
-    softAngularRow(p, oA, oB, o, R.IANG, kax, rows[o + R.AB]! * p.f[R.F_REL]!, rows[o + R.AM]!, rows[o + R.AI]!);
-  } else softAngularRow(p, oA, oB, o, R.IANG, kax, 0, 1, 0);
-  solvePointRow(p, o, ia, ib, p.useBias || (flags & JointFlag.Spring) !== 0);
+    bias = rows[o + R.AB]! * p.f[R.F_REL]!;
+    ms = rows[o + R.AM]!;
+    is = rows[o + R.AI]!;
+  }
+  const wA = sb[oA + BS.BS2_W]!,
+    wB = sb[oB + BS.BS2_W]!;
+  const impulse = -ms * rows[o + R.KAX]! * (wB - wA + bias) - is * rows[o + R.IANG]!;
+  rows[o + R.IANG] = rows[o + R.IANG]! + impulse;
+  sb[oA + BS.BS2_W] = wA - sb[oA + BS.BS2_INV_INERTIA]! * impulse;
+  sb[oB + BS.BS2_W] = wB + sb[oB + BS.BS2_INV_INERTIA]! * impulse;
+  solvePointRow(p, oA, oB, o, p.useBias || (flags & JointFlag.Spring) !== 0);
   return R.ROW_PUSHED;
 }
 

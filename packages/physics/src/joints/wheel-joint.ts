@@ -1,21 +1,10 @@
 import * as BS from '../solver/body-state-layout.js';
-import { JointFlag, JointType } from '../world/joint-store-2d.js';
+import { JointType } from '../world/joint-store-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { type AxisJointKind, addAxisJoint } from './joint-2d.js';
 import type { JointBaseOptions } from './joint-base.js';
 import * as R from './layout-2d.js';
-import {
-  acrossAxis,
-  angularMotor,
-  axialLimits,
-  axialSpring,
-  axisFrame,
-  axisReading,
-  type JointPass2D,
-  type JointTypeRows2D,
-  prepareAxisRow,
-  warmStartAxis,
-} from './rows-2d.js';
+import { axisReading, type JointPass2D, type JointTypeRows2D, prepareAxisRow, solveAlongAxis, warmStartAxis } from './rows-2d.js';
 
 /**
  * The 2D wheel joint (a suspension spring along an axis, free rotation with an optional motor): its
@@ -69,7 +58,9 @@ const WHEEL: AxisJointKind = {
 /** A wheel joint's warm start: its spring's and limits' impulses along the axis, the row's across it and the motor's. */
 export function warmStartWheelRow(p: JointPass2D, ia: number, ib: number, o: number): void {
   const rows = p.rows;
-  warmStartAxis(p, ia, ib, o, rows[o + R.ISPR]! + rows[o + R.ILOW]! - rows[o + R.IUP]!, rows[o + R.IMOT]!);
+  p.f[R.F_AXIAL] = rows[o + R.ISPR]! + rows[o + R.ILOW]! - rows[o + R.IUP]!;
+  p.f[R.F_ANGULAR] = rows[o + R.IMOT]!;
+  warmStartAxis(p, ia, ib, o);
 }
 
 /**
@@ -81,15 +72,11 @@ export function solveWheelRow(p: JointPass2D, ia: number, ib: number, o: number,
   const { sb, rows, f } = p;
   const oA = ia * BS.BS2_STRIDE,
     oB = ib * BS.BS2_STRIDE;
-  axisFrame(p, o);
   const mA = sb[oA + BS.BS2_INV_MASS]!,
     iA = sb[oA + BS.BS2_INV_INERTIA]!,
     mB = sb[oB + BS.BS2_INV_MASS]!,
     iB = sb[oB + BS.BS2_INV_INERTIA]!;
-  if (flags & JointFlag.Motor && iA + iB !== 0) angularMotor(p, oA, oB, o, rows[o + R.KMOT]!);
-  if (flags & JointFlag.Spring) axialSpring(p, oA, oB, o);
-  if (flags & JointFlag.Limit) axialLimits(p, oA, oB, o);
-  acrossAxis(p, oA, oB, o);
+  solveAlongAxis(p, oA, oB, o, flags, true);
   const s1 = f[R.F_S1]!,
     s2 = f[R.F_S2]!;
   const ms = p.useBias ? rows[o + R.JM]! : 1,
@@ -113,7 +100,9 @@ export function solveWheelRow(p: JointPass2D, ia: number, ib: number, o: number,
 /** A wheel joint's reading after the step into out: the force along and across its axis (N), its motor's torque (N m), B's offset across the axis (m). */
 export function wheelReading(p: JointPass2D, o: number, _flags: number, out: Float64Array): void {
   const rows = p.rows;
-  axisReading(p, o, rows[o + R.ISPR]! + rows[o + R.ILOW]! - rows[o + R.IUP]!, rows[o + R.IMOT]!, out);
+  p.f[R.F_AXIAL] = rows[o + R.ISPR]! + rows[o + R.ILOW]! - rows[o + R.IUP]!;
+  p.f[R.F_ANGULAR] = rows[o + R.IMOT]!;
+  axisReading(p, o, out);
 }
 
 /** The 2D wheel joint's row functions (rows-2d.ts JointTypeRows2D). */
