@@ -6,13 +6,14 @@ import { checkEnds } from './joint-base.js';
 import {
   type JointPass3D,
   type JointRows3D,
-  limitRow3D,
+  limitSoft,
+  limitSoftness,
   pointJointReading,
   preparePointBlock,
   solvePointRows,
   warmStartPointAndLock,
 } from './rows-3d.js';
-import { applyAngular, ax, bx, qa, qb, relativeSpin, rot } from './rows-3d-math.js';
+import { applyAngular, ax, bx, qa, qb, relativeSpin, rot, row3D } from './rows-3d-math.js';
 import { useJointType3D } from './solver-3d.js';
 import { Joint3DFlag, Joint3DType, joints3DOf } from './store-3d.js';
 
@@ -105,7 +106,25 @@ function solveCone(p: JointPass3D, j: number, a: number, b: number): void {
     // The swing phi about n, d phi / dt = (wB - wA) . n; the row C = half angle - phi >= 0 acts about -n.
     const phi = Math.atan2(sn, ax[0]! * bx[0]! + ax[1]! * bx[1]! + ax[2]! * bx[2]!);
     const cdot = -relativeSpin(p.sb, a, b, nx, ny, nz);
-    s.limit[j] = limitRow3D(p, a, b, false, -nx, -ny, -nz, 0, s.upper[j]! - phi, cdot, s.limit[j]!);
+    limitSoftness(p, s.upper[j]! - phi);
+    s.limit[j] = row3D(
+      p.sb,
+      p.T,
+      a,
+      b,
+      false,
+      -nx,
+      -ny,
+      -nz,
+      0,
+      cdot,
+      limitSoft[0]!,
+      limitSoft[1]!,
+      limitSoft[2]!,
+      s.limit[j]!,
+      0,
+      Infinity,
+    );
   } else s.limit[j] = 0; // axes parallel: n undefined, far inside the cone; the row starts again from zero
 }
 

@@ -4,7 +4,7 @@ import type { PhysicsWorld } from '../world/options.js';
 import type { DistanceJointOptions } from './distance-joint.js';
 import { centre, make, point, requireJoint3D, wakeJoint3D } from './joint-3d.js';
 import { checkEnds, lengthLimits } from './joint-base.js';
-import { type JointPass3D, type JointRows3D, limitRow3D } from './rows-3d.js';
+import { type JointPass3D, type JointRows3D, limitSoft, limitSoftness } from './rows-3d.js';
 import { anchorSpeed, applyLinear, linearK, pa, pb, ra, rb, referenceK, row3D } from './rows-3d-math.js';
 import { fixedSpring } from './softness.js';
 import { useJointType3D } from './solver-3d.js';
@@ -187,10 +187,14 @@ export function solveDistanceRow3D(p: JointPass3D, j: number, a: number, b: numb
   if (flags & Joint3DFlag.Limit) {
     // One-sided rows: len >= lower (impulse along +u) and len <= upper (along -u); speculative when apart.
     if (s.lower[j]! > 0 || !(flags & Joint3DFlag.Spring)) {
-      s.limit[j] = limitRow3D(p, a, b, true, dx, dy, dz, k, len - s.lower[j]!, anchorSpeed(sb, a, b, dx, dy, dz), s.limit[j]!);
+      limitSoftness(p, len - s.lower[j]!);
+      const cdot = anchorSpeed(sb, a, b, dx, dy, dz);
+      s.limit[j] = row3D(sb, T, a, b, true, dx, dy, dz, k, cdot, limitSoft[0]!, limitSoft[1]!, limitSoft[2]!, s.limit[j]!, 0, Infinity);
     }
     if (Number.isFinite(s.upper[j]!)) {
-      s.ly[j] = limitRow3D(p, a, b, true, -dx, -dy, -dz, k, s.upper[j]! - len, -anchorSpeed(sb, a, b, dx, dy, dz), s.ly[j]!);
+      limitSoftness(p, s.upper[j]! - len);
+      const cdot = -anchorSpeed(sb, a, b, dx, dy, dz);
+      s.ly[j] = row3D(sb, T, a, b, true, -dx, -dy, -dz, k, cdot, limitSoft[0]!, limitSoft[1]!, limitSoft[2]!, s.ly[j]!, 0, Infinity);
     }
   }
 }

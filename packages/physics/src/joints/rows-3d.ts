@@ -238,25 +238,16 @@ export function poseJoint3D(world: PhysicsWorld, s: Joint3DStore, j: number, a: 
   rot(qb, s.bx[j]!, s.by[j]!, s.bz[j]!, rb);
 }
 
+/** A one-sided limit row's softness (limitSoftness): bias (m/s or rad/s), mass scale, impulse scale. */
+export const limitSoft = new Float64Array(3);
+
 /**
- * A one-sided limit row along (`linear`, at the anchors, effective mass 1 / k) or about unit u, whose
- * accumulated impulse `acc` stays >= 0: speculative while the position error C > 0 (bias C / h_s), soft
- * with the pass's softness while it uses bias, else rigid (Box2D v3's joint limits). `cdot` is the
- * velocity along the row. @returns the new accumulated impulse.
+ * The softness of a one-sided limit row (cone, hinge, slider, distance) with position error C (>= 0
+ * inside the limit) into limitSoft: speculative while C > 0 (bias C / h_s, rigid), soft with the pass's
+ * softness while it uses bias, else rigid without bias (Box2D v3's joint limits). The row then runs with
+ * its accumulated impulse kept >= 0 (row3D with lo 0, hi Infinity).
  */
-export function limitRow3D(
-  p: JointPass3D,
-  a: number,
-  b: number,
-  linear: boolean,
-  ux: number,
-  uy: number,
-  uz: number,
-  k: number,
-  C: number,
-  cdot: number,
-  acc: number,
-): number {
+export function limitSoftness(p: JointPass3D, C: number): void {
   let bias = 0,
     m = 1,
     im = 0;
@@ -266,7 +257,9 @@ export function limitRow3D(
     m = p.ms;
     im = p.is;
   }
-  return row3D(p.sb, p.T, a, b, linear, ux, uy, uz, k, cdot, bias, m, im, acc, 0, Infinity);
+  limitSoft[0] = bias;
+  limitSoft[1] = m;
+  limitSoft[2] = im;
 }
 
 /**
@@ -307,7 +300,26 @@ export function axisLimit3D(p: JointPass3D, j: number, a: number, b: number, lin
     s.limit[j] = 0;
   }
   const speed = linear ? anchorSpeed(sb, a, b, hx, hy, hz) : relativeSpin(sb, a, b, hx, hy, hz);
-  s.limit[j] = sg * limitRow3D(p, a, b, linear, sg * hx, sg * hy, sg * hz, k, C, sg * speed, sg * s.limit[j]!);
+  limitSoftness(p, C);
+  const lam = row3D(
+    sb,
+    T,
+    a,
+    b,
+    linear,
+    sg * hx,
+    sg * hy,
+    sg * hz,
+    k,
+    sg * speed,
+    limitSoft[0]!,
+    limitSoft[1]!,
+    limitSoft[2]!,
+    sg * s.limit[j]!,
+    0,
+    Infinity,
+  );
+  s.limit[j] = sg * lam;
 }
 
 /**

@@ -6,7 +6,7 @@ import { currentHandle } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { type JointPass3D, type JointRows3D, poseJoint3D } from './rows-3d.js';
 import { soft } from './softness.js';
-import { type Joint3DStore, joints3DOf, removeJoint3DUnchecked } from './store-3d.js';
+import { type Joint3DStore, Joint3DType, joints3DOf, removeJoint3DUnchecked } from './store-3d.js';
 
 /**
  * The 3D joints' rows of the contact solver (joints/solver-3d.ts calls these next to the contacts', in the same
@@ -54,11 +54,15 @@ const NO_ROWS: JointRows3D = {
     out[1] = 0;
   },
 };
-/**
- * Each type's rows by Joint3DType code, handed over by useJointType3D: the solver does not import the
- * types' files, which import the 3D feature's install (joint-3d.ts make), and that imports this module.
- */
-const ROWS: JointRows3D[] = [NO_ROWS, NO_ROWS, NO_ROWS, NO_ROWS, NO_ROWS];
+// Each type's rows, handed over by useJointType3D: the solver does not import the types' files, which
+// import the 3D feature's install (joint-3d.ts make), and that imports this module. A stage picks the
+// type by a chain of tests rather than a table, so that each call site sees one function, which the
+// engine can inline.
+let ballRows = NO_ROWS,
+  hingeRows = NO_ROWS,
+  fixedRows = NO_ROWS,
+  distanceRows = NO_ROWS,
+  sliderRows = NO_ROWS;
 
 /**
  * Hands the solver the rows of a 3D joint type (Joint3DType), called by the type's add call (whose file
@@ -66,7 +70,11 @@ const ROWS: JointRows3D[] = [NO_ROWS, NO_ROWS, NO_ROWS, NO_ROWS, NO_ROWS];
  * @category Joints and ropes
  */
 export function useJointType3D(type: number, rows: JointRows3D): void {
-  ROWS[type] = rows;
+  if (type === Joint3DType.Ball) ballRows = rows;
+  else if (type === Joint3DType.Hinge) hingeRows = rows;
+  else if (type === Joint3DType.Fixed) fixedRows = rows;
+  else if (type === Joint3DType.Distance) distanceRows = rows;
+  else if (type === Joint3DType.Slider) sliderRows = rows;
 }
 
 let ka = new Int32Array(16),
@@ -174,7 +182,12 @@ export function warmStartJoints3D(world: PhysicsWorld): void {
       a = ka[i]!,
       b = kb[i]!;
     poseJoint3D(world, s, j, a, b);
-    ROWS[s.type[j]!]!.warmStart(p, j, a, b);
+    const type = s.type[j]!;
+    if (type === Joint3DType.Ball) ballRows.warmStart(p, j, a, b);
+    else if (type === Joint3DType.Hinge) hingeRows.warmStart(p, j, a, b);
+    else if (type === Joint3DType.Fixed) fixedRows.warmStart(p, j, a, b);
+    else if (type === Joint3DType.Distance) distanceRows.warmStart(p, j, a, b);
+    else sliderRows.warmStart(p, j, a, b);
   }
 }
 
@@ -202,7 +215,13 @@ export function solveJoints3D(world: PhysicsWorld, hs: number, useBias: boolean)
       a = ka[i]!,
       b = kb[i]!;
     poseJoint3D(world, s, j, a, b);
-    ROWS[s.type[j]!]!.solve(p, j, a, b, s.flags[j]!);
+    const type = s.type[j]!,
+      flags = s.flags[j]!;
+    if (type === Joint3DType.Ball) ballRows.solve(p, j, a, b, flags);
+    else if (type === Joint3DType.Hinge) hingeRows.solve(p, j, a, b, flags);
+    else if (type === Joint3DType.Fixed) fixedRows.solve(p, j, a, b, flags);
+    else if (type === Joint3DType.Distance) distanceRows.solve(p, j, a, b, flags);
+    else sliderRows.solve(p, j, a, b, flags);
   }
 }
 
@@ -220,7 +239,12 @@ export function finishJoints3D(world: PhysicsWorld, hs: number): void {
   const broken: number[] = [];
   const out = reading;
   for (const j of s.list) {
-    ROWS[s.type[j]!]!.reading(s, j, hs, out);
+    const type = s.type[j]!;
+    if (type === Joint3DType.Ball) ballRows.reading(s, j, hs, out);
+    else if (type === Joint3DType.Hinge) hingeRows.reading(s, j, hs, out);
+    else if (type === Joint3DType.Fixed) fixedRows.reading(s, j, hs, out);
+    else if (type === Joint3DType.Distance) distanceRows.reading(s, j, hs, out);
+    else sliderRows.reading(s, j, hs, out);
     if (out[0]! > s.breakForce[j]! || out[1]! > s.breakTorque[j]!) broken.push(j);
   }
   for (const j of broken) {
