@@ -7,7 +7,7 @@ import type { PhysicsWorld } from '../world/options.js';
 import { centre, handle, makeJoint, optionalPoint } from './joint-2d.js';
 import { assertBreakLimit, BASE_KEYS, checkEnds, type JointBaseOptions, lengthLimits } from './joint-base.js';
 import * as R from './layout-2d.js';
-import { applyImpulse, type JointPass2D, type JointTypeRows2D, limitRow, springRow } from './rows-2d.js';
+import { applyImpulse, type JointPass2D, type JointTypeRows2D, limitRow, springLimitImpulse, springRow } from './rows-2d.js';
 import { springImpulse } from './softness.js';
 
 /**
@@ -95,7 +95,7 @@ export function addDistanceJoint(world: PhysicsWorld, options: DistanceJointOpti
  * spring of fixed stiffness (`hs` the substep, s), and, for a rod or rope between bodies that do not
  * turn and without a spring, its point link.
  */
-export function prepareDistanceRow(js: JointState, J: JointStore, j: number, r: number, f: Float64Array, hs: number): void {
+export function prepareDistanceRow(js: JointState, J: JointStore, j: number, r: number, f: Float64Array): void {
   const rows = js.rows,
     ri = js.rowInts;
   const o = r * ROW_FLOATS,
@@ -111,7 +111,7 @@ export function prepareDistanceRow(js: JointState, J: JointStore, j: number, r: 
     dx = f[R.F_DX]!,
     dy = f[R.F_DY]!;
   const flags = ri[q + R.TF]! >> 8;
-  springRow(rows, o, J, j, f, hs);
+  springRow(rows, o, J, j, f);
   const L = Math.sqrt(dx * dx + dy * dy);
   const ux = L > 1e-12 ? dx / L : 1,
     uy = L > 1e-12 ? dy / L : 0;
@@ -155,24 +155,26 @@ export function prepareDistanceRow(js: JointState, J: JointStore, j: number, r: 
  * current line; nothing when the anchors meet (no direction).
  */
 export function warmStartDistanceRow(p: JointPass2D, ia: number, ib: number, o: number): void {
-  const { rows, f } = p;
-  const axial = rows[o + R.ISPR]! + rows[o + R.ILOW]! - rows[o + R.IUP]!;
+  const { sb, rot, rows } = p;
+  const axial = springLimitImpulse(rows, o);
   if (axial === 0) return;
-  const dx = f[R.F_DX]!,
-    dy = f[R.F_DY]!;
+  const oA = ia * BS.BS2_STRIDE,
+    oB = ib * BS.BS2_STRIDE;
+  const cA = rot[ia * 3]!,
+    sA = rot[ia * 3 + 1]!,
+    cB = rot[ib * 3]!,
+    sB = rot[ib * 3 + 1]!;
+  const rAx = cA * rows[o + R.RAX]! - sA * rows[o + R.RAY]!,
+    rAy = sA * rows[o + R.RAX]! + cA * rows[o + R.RAY]!;
+  const rBx = cB * rows[o + R.RBX]! - sB * rows[o + R.RBY]!,
+    rBy = sB * rows[o + R.RBX]! + cB * rows[o + R.RBY]!;
+  const dx = sb[oB + BS.BS2_DX]! - sb[oA + BS.BS2_DX]! + rows[o + R.DCX]! + rBx - rAx,
+    dy = sb[oB + BS.BS2_DY]! - sb[oA + BS.BS2_DY]! + rows[o + R.DCY]! + rBy - rAy;
   const L = Math.sqrt(dx * dx + dy * dy);
   if (L < 1e-12) return;
   const px = (axial * dx) / L,
     py = (axial * dy) / L;
-  applyImpulse(
-    p.sb,
-    ia * BS.BS2_STRIDE,
-    ib * BS.BS2_STRIDE,
-    px,
-    py,
-    f[R.F_RAX]! * py - f[R.F_RAY]! * px,
-    f[R.F_RBX]! * py - f[R.F_RBY]! * px,
-  );
+  applyImpulse(sb, oA, oB, px, py, rAx * py - rAy * px, rBx * py - rBy * px);
 }
 
 /**
@@ -250,7 +252,7 @@ export function solveDistanceRow(p: JointPass2D, ia: number, ib: number, o: numb
  * A distance joint's reading after the step into out (rows-2d.ts JointTypeRows2D): its force along the
  * anchors' line (N), its error outside its length or limits (m) and its strain (length - rest) / rest.
  */
-export function distanceReading(p: JointPass2D, o: number, _flags: number, out: Float64Array): void {
+export function distanceReading(p: JointPass2D, _ia: number, _ib: number, o: number, _flags: number, out: Float64Array): void {
   const { rows, f } = p;
   const dx = f[R.F_DX]!,
     dy = f[R.F_DY]!;
@@ -380,7 +382,6 @@ export function finishPointLinks(js: JointState): void {
 /** The 2D distance joint's row functions (rows-2d.ts JointTypeRows2D). */
 export const DISTANCE_ROWS_2D: JointTypeRows2D = {
   prepare: prepareDistanceRow,
-  warmStart: warmStartDistanceRow,
   solve: solveDistanceRow,
   reading: distanceReading,
 };

@@ -93,40 +93,35 @@ export const PN_IB = 1;
 export const PN_ROW = 2;
 
 // The frame of the row being worked on (FRAME_SIZE numbers, filled by joints/solver-2d.ts): the
-// anchors from the centres in the world frame (m), their separation B - A (m), body A's rotation
-// (cos, sin), the relative angle since the joint was made minus its reference (rad), the inverse
-// substep (1/s); in the preparation the bodies' inverse masses (1/kg) and inertias (1/(kg m^2)) too.
+// anchors from the centres in the world frame (m), their separation B - A (m), the substep (s), the
+// relative angle since the joint was made minus its reference (rad), the inverse substep (1/s); in the
+// preparation the bodies' inverse masses (1/kg) and inertias (1/(kg m^2)) too.
 export const F_RAX = 0;
 export const F_RAY = 1;
 export const F_RBX = 2;
 export const F_RBY = 3;
 export const F_DX = 4;
 export const F_DY = 5;
-export const F_CA = 6;
-export const F_SA = 7;
-export const F_REL = 8;
-export const F_INVH = 9;
-export const F_MA = 10;
-export const F_IA = 11;
-export const F_MB = 12;
-export const F_IB = 13;
+export const F_HS = 6;
+export const F_REL = 7;
+export const F_INVH = 8;
+export const F_MA = 9;
+export const F_IA = 10;
+export const F_MB = 11;
+export const F_IB = 12;
 // A joint along an axis (rows-2d.ts axisFrame, solveAlongAxis): the axis turned with A (world), B's
 // translation along it (m), the angular Jacobians along it (m), and those of the row across it, that
 // row's velocity error (m/s) and bias (m/s).
-export const F_AXX = 14;
-export const F_AXY = 15;
-export const F_TRANS = 16;
-export const F_A1 = 17;
-export const F_A2 = 18;
-export const F_S1 = 19;
-export const F_S2 = 20;
-export const F_CD = 21;
-export const F_BIAS = 22;
-// A type's impulses for a shared warm start or reading (rows-2d.ts warmStartPoint, warmStartAxis,
-// axisReading): along its axis or about its anchors (N s or N m s), and its angular row's (N m s).
-export const F_AXIAL = 23;
-export const F_ANGULAR = 24;
-export const FRAME_SIZE = 25;
+export const F_AXX = 13;
+export const F_AXY = 14;
+export const F_TRANS = 15;
+export const F_A1 = 16;
+export const F_A2 = 17;
+export const F_S1 = 18;
+export const F_S2 = 19;
+export const F_CD = 20;
+export const F_BIAS = 21;
+export const FRAME_SIZE = 22;
 
 /** What a type's row solve did: nothing (a distance joint of zero length). */
 export const ROW_SKIPPED = 0;

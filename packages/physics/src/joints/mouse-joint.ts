@@ -8,12 +8,13 @@ import type { PhysicsWorld } from '../world/options.js';
 import { centre, handle, makeJoint, optionalPoint, requireJoint, wakeJoint } from './joint-2d.js';
 import { checkEnds } from './joint-base.js';
 import * as R from './layout-2d.js';
-import { type JointPass2D, type JointTypeRows2D, pointForce, warmStartPointAngle } from './rows-2d.js';
+import { type JointPass2D, type JointTypeRows2D, pointForce } from './rows-2d.js';
 import { soft } from './softness.js';
 
 /**
  * The 2D mouse joint (a soft, force-capped spring pulling a body's point toward a target, for dragging):
- * its options, addMouseJoint, setMouseTarget, and its row's preparation, warm start, solve and reading.
+ * its options, addMouseJoint, setMouseTarget, and its row's preparation, solve and reading (its warm
+ * start is rows-2d.ts warmStartPoint).
  * joints/solver-2d.ts runs them.
  */
 
@@ -94,7 +95,8 @@ export function setMouseTarget(world: PhysicsWorld, joint: number, target: Array
  * Prepares mouse joint `j`'s row r (B's masses at the start of the step in the frame `f`): B's
  * rotational mass, the largest impulse a substep of `hs` s, and the pull's softness.
  */
-export function prepareMouseRow(js: JointState, J: JointStore, j: number, r: number, f: Float64Array, hs: number): void {
+export function prepareMouseRow(js: JointState, J: JointStore, j: number, r: number, f: Float64Array): void {
+  const hs = f[R.F_HS]!;
   const rows = js.rows,
     o = r * ROW_FLOATS;
   const iB = f[R.F_IB]!;
@@ -165,7 +167,7 @@ export function solveMouseRow(p: JointPass2D, _ia: number, ib: number, o: number
 }
 
 /** A mouse joint's reading after the step into out: its pull's force (N) and its spin damping's torque (N m). */
-export function mouseReading(p: JointPass2D, o: number, _flags: number, out: Float64Array): void {
+export function mouseReading(p: JointPass2D, _ia: number, _ib: number, o: number, _flags: number, out: Float64Array): void {
   out[0] = pointForce(p, o);
   out[1] = Math.abs(p.rows[o + R.IANG]!) * p.f[R.F_INVH]!;
 }
@@ -173,7 +175,6 @@ export function mouseReading(p: JointPass2D, o: number, _flags: number, out: Flo
 /** The 2D mouse joint's row functions (rows-2d.ts JointTypeRows2D). */
 export const MOUSE_ROWS_2D: JointTypeRows2D = {
   prepare: prepareMouseRow,
-  warmStart: warmStartPointAngle,
   solve: solveMouseRow,
   reading: mouseReading,
 };

@@ -4,20 +4,12 @@ import type { PhysicsWorld } from '../world/options.js';
 import { type AxisJointKind, addAxisJoint } from './joint-2d.js';
 import type { JointBaseOptions } from './joint-base.js';
 import * as R from './layout-2d.js';
-import {
-  applyImpulse,
-  axisReading,
-  type JointPass2D,
-  type JointTypeRows2D,
-  prepareAxisRow,
-  solveAlongAxis,
-  warmStartAxis,
-} from './rows-2d.js';
+import { applyImpulse, axisReading, type JointPass2D, type JointTypeRows2D, prepareAxisRow, solveAlongAxis } from './rows-2d.js';
 
 /**
  * The 2D prismatic joint (a slider along an axis, with an optional limit, motor and spring): its
- * options, addPrismaticJoint, and its row's warm start, solve and reading (its preparation is the
- * wheel joint's: rows-2d.ts prepareAxisRow). joints/solver-2d.ts runs them.
+ * options, addPrismaticJoint, and its row's solve and reading (its preparation and warm start are the
+ * wheel joint's: rows-2d.ts prepareAxisRow, warmStartAxis). joints/solver-2d.ts runs them.
  */
 
 /**
@@ -62,14 +54,6 @@ const PRISMATIC: AxisJointKind = {
   dampingRatio: 0,
 };
 
-/** A prismatic joint's warm start: its spring's, motor's and limits' impulses along the axis, the row's across it and the angular row's. */
-export function warmStartPrismaticRow(p: JointPass2D, ia: number, ib: number, o: number): void {
-  const rows = p.rows;
-  p.f[R.F_AXIAL] = rows[o + R.ISPR]! + rows[o + R.IMOT]! + rows[o + R.ILOW]! - rows[o + R.IUP]!;
-  p.f[R.F_ANGULAR] = rows[o + R.IANG]!;
-  warmStartAxis(p, ia, ib, o);
-}
-
 /**
  * One pass of a prismatic joint's rows (Box2D v3's b2SolvePrismaticJoint) on its frame: along the axis
  * the spring, the motor (its impulse capped at the largest a substep) and the translation limits; then
@@ -80,7 +64,7 @@ export function solvePrismaticRow(p: JointPass2D, ia: number, ib: number, o: num
   const { sb, rows, f } = p;
   const oA = ia * BS.BS2_STRIDE,
     oB = ib * BS.BS2_STRIDE;
-  solveAlongAxis(p, oA, oB, o, flags, false);
+  solveAlongAxis(p, ia, ib, o, flags, false);
   const mA = sb[oA + BS.BS2_INV_MASS]!,
     iA = sb[oA + BS.BS2_INV_INERTIA]!,
     mB = sb[oB + BS.BS2_INV_MASS]!,
@@ -115,17 +99,13 @@ export function solvePrismaticRow(p: JointPass2D, ia: number, ib: number, o: num
 }
 
 /** A prismatic joint's reading after the step into out: the force along and across its axis (N), its angular row's torque (N m), B's offset across the axis (m). */
-export function prismaticReading(p: JointPass2D, o: number, _flags: number, out: Float64Array): void {
-  const rows = p.rows;
-  p.f[R.F_AXIAL] = rows[o + R.ISPR]! + rows[o + R.ILOW]! - rows[o + R.IUP]! + rows[o + R.IMOT]!;
-  p.f[R.F_ANGULAR] = rows[o + R.IANG]!;
-  axisReading(p, o, out);
+export function prismaticReading(p: JointPass2D, ia: number, _ib: number, o: number, _flags: number, out: Float64Array): void {
+  axisReading(p, ia, o, out, false);
 }
 
 /** The 2D prismatic joint's row functions (rows-2d.ts JointTypeRows2D). */
 export const PRISMATIC_ROWS_2D: JointTypeRows2D = {
   prepare: prepareAxisRow,
-  warmStart: warmStartPrismaticRow,
   solve: solvePrismaticRow,
   reading: prismaticReading,
 };

@@ -19,12 +19,12 @@ import {
   solvePointBlocks,
   solvePointRow,
   unwind,
-  warmStartPoint,
 } from './rows-2d.js';
 
 /**
  * The 2D revolute joint (a hinge, with an optional angle limit, motor and spring): its options,
- * addRevoluteJoint, its row's preparation, warm start, solve and reading, and the pins' passes (a
+ * addRevoluteJoint, its row's preparation, solve and reading (its warm start is rows-2d.ts
+ * warmStartPoint), and the pins' passes (a
  * revolute joint with no spring, motor or limit, packed by its preparation: warm start, solve, impulses
  * back into the rows). joints/solver-2d.ts runs them.
  */
@@ -81,7 +81,7 @@ export function addRevoluteJoint(world: PhysicsWorld, options: RevoluteJointOpti
  * effective mass of the relative rotation; a joint without spring, motor or limit becomes a pin (its
  * row's warm-start impulses already loaded).
  */
-export function prepareRevoluteRow(js: JointState, _J: JointStore, _j: number, r: number, f: Float64Array, _hs: number): void {
+export function prepareRevoluteRow(js: JointState, _J: JointStore, _j: number, r: number, f: Float64Array): void {
   const rows = js.rows,
     ri = js.rowInts;
   const o = r * ROW_FLOATS,
@@ -90,13 +90,6 @@ export function prepareRevoluteRow(js: JointState, _J: JointStore, _j: number, r
   if (((ri[q + R.TF]! >> 8) & (JointFlag.Spring | JointFlag.Motor | JointFlag.Limit)) !== 0) return;
   ri[q + R.TF] = R.PIN;
   packPin(rows, o, js.pins, js.pinInts, js.pinCount++, ri[q + R.IA]!, ri[q + R.IB]!, r);
-}
-
-/** A revolute joint's warm start: its point impulse, and its spring's, motor's and limits' about the anchors. */
-export function warmStartRevoluteRow(p: JointPass2D, ia: number, ib: number, o: number): void {
-  const rows = p.rows;
-  p.f[R.F_AXIAL] = rows[o + R.ISPR]! + rows[o + R.IMOT]! + rows[o + R.ILOW]! - rows[o + R.IUP]!;
-  warmStartPoint(p, ia, ib, o);
 }
 
 /**
@@ -144,7 +137,7 @@ export function solveRevoluteRow(p: JointPass2D, ia: number, ib: number, o: numb
 }
 
 /** A revolute joint's reading after the step into out: its point force (N), the torque of its spring, motor and limits (N m), its anchors' separation (m). */
-export function revoluteReading(p: JointPass2D, o: number, _flags: number, out: Float64Array): void {
+export function revoluteReading(p: JointPass2D, _ia: number, _ib: number, o: number, _flags: number, out: Float64Array): void {
   const { rows, f } = p;
   const dx = f[R.F_DX]!,
     dy = f[R.F_DY]!;
@@ -211,7 +204,6 @@ export function finishPins(js: JointState): void {
 /** The 2D revolute joint's row functions (rows-2d.ts JointTypeRows2D). */
 export const REVOLUTE_ROWS_2D: JointTypeRows2D = {
   prepare: prepareRevoluteRow,
-  warmStart: warmStartRevoluteRow,
   solve: solveRevoluteRow,
   reading: revoluteReading,
 };

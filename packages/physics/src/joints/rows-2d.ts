@@ -10,8 +10,8 @@ import { fixedSpring, springImpulse } from './softness.js';
  * at body-state offsets oA and oB) and on the frame of the row (layout-2d.ts F_*): the frame's pose,
  * impulses applied to both bodies, the point-to-point block (revolute, weld, pins), angular rows, the
  * one-sided limit row, the springs of fixed stiffness, and the rows along and across an axis
- * (prismatic, wheel); warm starts and readings several types share. Each type's own rows are in its
- * file; joints/solver-2d.ts runs them.
+ * (prismatic, wheel); the warm starts of the point and axis joints and the axis joints' reading. Each
+ * type's own rows are in its file; joints/solver-2d.ts runs them.
  */
 
 /**
@@ -31,44 +31,38 @@ export interface JointPass2D {
 /**
  * A 2D joint type's row functions, which its file exports and joints/solver-2d.ts runs for each of its
  * rows (row offset `o`, bodies of solver indices ia and ib, its pose in the frame): `prepare` at the
- * start of the step (row r of joint j, the start-of-step pose and masses in the frame `f`, `hs` the
- * substep, s), `warmStart` once a substep, `solve` once a pass (@returns a ROW_* outcome) and `reading`
- * after the step (force N, torque N m, position error m and strain into out[0..3], left 0 where the
- * type has none).
+ * start of the step (row r of joint j, the start-of-step pose, masses and substep in the frame `f`),
+ * `solve` once a pass (@returns a ROW_* outcome) and `reading` after the step (force N, torque N m,
+ * position error m and strain into out[0..3], left 0 where the type has none). The warm start (once a
+ * substep) goes by the joint's shape instead: warmStartPoint, warmStartAxis, distance-joint.ts
+ * warmStartDistanceRow, each on locals, for the engine inlines the stage's few calls.
  */
 export interface JointTypeRows2D {
-  prepare(js: JointState, J: JointStore, j: number, r: number, f: Float64Array, hs: number): void;
-  warmStart(p: JointPass2D, ia: number, ib: number, o: number): void;
+  prepare(js: JointState, J: JointStore, j: number, r: number, f: Float64Array): void;
   solve(p: JointPass2D, ia: number, ib: number, o: number, flags: number): number;
-  reading(p: JointPass2D, o: number, flags: number, out: Float64Array): void;
+  reading(p: JointPass2D, ia: number, ib: number, o: number, flags: number, out: Float64Array): void;
 }
 
-/**
- * Fills the frame with row `o`'s pose now: its anchors turned with their bodies (solver indices ia,
- * ib), their separation (the start-of-step offset plus the bodies' displacements), A's rotation and
- * the relative angle since the joint was made.
- */
-export function poseFrame(p: JointPass2D, o: number, ia: number, ib: number): void {
-  const { sb, rot, rows, f } = p;
-  const oA = ia * BS.BS2_STRIDE,
-    oB = ib * BS.BS2_STRIDE;
+/** Fills the frame with row `o`'s anchors now (F_RAX..F_RBY): turned with their bodies (solver indices ia, ib) since the start of the step. */
+export function anchorsFrame(p: JointPass2D, o: number, ia: number, ib: number): void {
+  const { rot, rows, f } = p;
   const cA = rot[ia * 3]!,
     sA = rot[ia * 3 + 1]!,
     cB = rot[ib * 3]!,
     sB = rot[ib * 3 + 1]!;
-  const rAx = cA * rows[o + R.RAX]! - sA * rows[o + R.RAY]!,
-    rAy = sA * rows[o + R.RAX]! + cA * rows[o + R.RAY]!;
-  const rBx = cB * rows[o + R.RBX]! - sB * rows[o + R.RBY]!,
-    rBy = sB * rows[o + R.RBX]! + cB * rows[o + R.RBY]!;
-  f[R.F_RAX] = rAx;
-  f[R.F_RAY] = rAy;
-  f[R.F_RBX] = rBx;
-  f[R.F_RBY] = rBy;
-  f[R.F_DX] = sb[oB + BS.BS2_DX]! - sb[oA + BS.BS2_DX]! + rows[o + R.DCX]! + rBx - rAx;
-  f[R.F_DY] = sb[oB + BS.BS2_DY]! - sb[oA + BS.BS2_DY]! + rows[o + R.DCY]! + rBy - rAy;
-  f[R.F_CA] = cA;
-  f[R.F_SA] = sA;
-  f[R.F_REL] = rows[o + R.DANG]! + rot[ib * 3 + 2]! - rot[ia * 3 + 2]!;
+  f[R.F_RAX] = cA * rows[o + R.RAX]! - sA * rows[o + R.RAY]!;
+  f[R.F_RAY] = sA * rows[o + R.RAX]! + cA * rows[o + R.RAY]!;
+  f[R.F_RBX] = cB * rows[o + R.RBX]! - sB * rows[o + R.RBY]!;
+  f[R.F_RBY] = sB * rows[o + R.RBX]! + cB * rows[o + R.RBY]!;
+}
+
+/** Fills the frame with row `o`'s anchor separation B - A now (F_DX, F_DY): the start-of-step offset, the bodies' displacements and the frame's anchors. */
+export function separationFrame(p: JointPass2D, o: number, ia: number, ib: number): void {
+  const { sb, rows, f } = p;
+  const oA = ia * BS.BS2_STRIDE,
+    oB = ib * BS.BS2_STRIDE;
+  f[R.F_DX] = sb[oB + BS.BS2_DX]! - sb[oA + BS.BS2_DX]! + rows[o + R.DCX]! + f[R.F_RBX]! - f[R.F_RAX]!;
+  f[R.F_DY] = sb[oB + BS.BS2_DY]! - sb[oA + BS.BS2_DY]! + rows[o + R.DCY]! + f[R.F_RBY]! - f[R.F_RAY]!;
 }
 
 /** Applies a linear impulse P (N s) and angular impulses lA, lB (N m s): -P and -lA to A, +P and +lB to B. */
@@ -291,21 +285,35 @@ export function angularMass(iA: number, iB: number): number {
   return iA + iB > 0 ? 1 / (iA + iB) : 0;
 }
 
-/** A point joint's warm start (revolute, weld, mouse): its linear impulse at the anchors and the frame's F_AXIAL (N m s) about them. */
-export function warmStartPoint(p: JointPass2D, ia: number, ib: number, o: number): void {
-  const { rows, f } = p;
-  const px = rows[o + R.ILX]!,
-    py = rows[o + R.ILY]!,
-    axial = f[R.F_AXIAL]!;
-  const lA = f[R.F_RAX]! * py - f[R.F_RAY]! * px + axial,
-    lB = f[R.F_RBX]! * py - f[R.F_RBY]! * px + axial;
-  applyImpulse(p.sb, ia * BS.BS2_STRIDE, ib * BS.BS2_STRIDE, px, py, lA, lB);
+/** Row `o`'s accumulated impulse of its spring, motor and limits (revolute about its pin, N m s; prismatic along its axis, N s). */
+export function driveImpulse(rows: Float64Array, o: number): number {
+  return rows[o + R.ISPR]! + rows[o + R.IMOT]! + rows[o + R.ILOW]! - rows[o + R.IUP]!;
 }
 
-/** The warm start of a point joint with an angular row (weld, mouse): its linear impulse at the anchors and the angular one (IANG). */
-export function warmStartPointAngle(p: JointPass2D, ia: number, ib: number, o: number): void {
-  p.f[R.F_AXIAL] = p.rows[o + R.IANG]!;
-  warmStartPoint(p, ia, ib, o);
+/** Row `o`'s accumulated impulse of its spring and limits (along a distance joint's line or a wheel joint's axis), N s. */
+export function springLimitImpulse(rows: Float64Array, o: number): number {
+  return rows[o + R.ISPR]! + rows[o + R.ILOW]! - rows[o + R.IUP]!;
+}
+
+/**
+ * A point joint's warm start (revolute, weld, mouse) on row `o` of solver bodies ia, ib: its linear
+ * impulse (ILX, ILY) at the anchors as turned so far in the step, and its angular one about them (N m
+ * s): a revolute joint's spring, motor and limits (`revolute`, driveImpulse), else the angular row's.
+ */
+export function warmStartPoint(p: JointPass2D, ia: number, ib: number, o: number, revolute: boolean): void {
+  const { sb, rot, rows } = p;
+  const axial = revolute ? driveImpulse(rows, o) : rows[o + R.IANG]!;
+  const cA = rot[ia * 3]!,
+    sA = rot[ia * 3 + 1]!,
+    cB = rot[ib * 3]!,
+    sB = rot[ib * 3 + 1]!;
+  const rAx = cA * rows[o + R.RAX]! - sA * rows[o + R.RAY]!,
+    rAy = sA * rows[o + R.RAX]! + cA * rows[o + R.RAY]!;
+  const rBx = cB * rows[o + R.RBX]! - sB * rows[o + R.RBY]!,
+    rBy = sB * rows[o + R.RBX]! + cB * rows[o + R.RBY]!;
+  const px = rows[o + R.ILX]!,
+    py = rows[o + R.ILY]!;
+  applyImpulse(sb, ia * BS.BS2_STRIDE, ib * BS.BS2_STRIDE, px, py, rAx * py - rAy * px + axial, rBx * py - rBy * px + axial);
 }
 
 /** The force (N) of a point joint's linear impulse over the substep (the frame's F_INVH). */
@@ -319,7 +327,7 @@ export function pointForce(p: JointPass2D, o: number): number {
  * wheel), when it has one: its reference mass mA + mB + (iA |rA|^2 + iB |rB|^2) / 2 from the frame's
  * masses and the anchors' levers in the bodies' frames; `hs` the substep, s.
  */
-export function springRow(rows: Float64Array, o: number, J: JointStore, j: number, f: Float64Array, hs: number): void {
+export function springRow(rows: Float64Array, o: number, J: JointStore, j: number, f: Float64Array): void {
   const hertz = J.hertz[j]!;
   if (!(hertz > 0)) return;
   const lax = J.localAx[j]!,
@@ -327,7 +335,7 @@ export function springRow(rows: Float64Array, o: number, J: JointStore, j: numbe
     lbx = J.localBx[j]!,
     lby = J.localBy[j]!;
   const kRef = f[R.F_MA]! + f[R.F_MB]! + 0.5 * (f[R.F_IA]! * (lax * lax + lay * lay) + f[R.F_IB]! * (lbx * lbx + lby * lby));
-  fixedSpring(rows, o + R.SB, hertz, J.dampingRatio[j]!, hs, kRef);
+  fixedSpring(rows, o + R.SB, hertz, J.dampingRatio[j]!, f[R.F_HS]!, kRef);
 }
 
 // The rows along and across an axis (prismatic and wheel joints: Box2D v3's prismatic_joint.c and
@@ -340,14 +348,14 @@ export function springRow(rows: Float64Array, o: number, J: JointStore, j: numbe
  * the step in the frame `f`): the effective masses along the axis and of the relative rotation, and
  * the spring of fixed stiffness along the axis (`hs` the substep, s).
  */
-export function prepareAxisRow(js: JointState, J: JointStore, j: number, r: number, f: Float64Array, hs: number): void {
+export function prepareAxisRow(js: JointState, J: JointStore, j: number, r: number, f: Float64Array): void {
   const rows = js.rows,
     o = r * ROW_FLOATS;
   const mA = f[R.F_MA]!,
     iA = f[R.F_IA]!,
     mB = f[R.F_MB]!,
     iB = f[R.F_IB]!;
-  springRow(rows, o, J, j, f, hs);
+  springRow(rows, o, J, j, f);
   const dx = f[R.F_DX]!,
     dy = f[R.F_DY]!,
     axx = rows[o + R.AXX]!,
@@ -360,10 +368,10 @@ export function prepareAxisRow(js: JointState, J: JointStore, j: number, r: numb
 }
 
 /** The axis of row `o` turned with A, B's translation along it and the angular Jacobians along and across it, into the frame (F_AXX..F_S2). */
-export function axisFrame(p: JointPass2D, o: number): void {
-  const { rows, f } = p;
-  const cA = f[R.F_CA]!,
-    sA = f[R.F_SA]!;
+export function axisFrame(p: JointPass2D, o: number, ia: number): void {
+  const { rot, rows, f } = p;
+  const cA = rot[ia * 3]!,
+    sA = rot[ia * 3 + 1]!;
   const dx = f[R.F_DX]!,
     dy = f[R.F_DY]!,
     rAx = f[R.F_RAX]!,
@@ -389,9 +397,11 @@ export function axisFrame(p: JointPass2D, o: number): void {
  * and for the row across it its velocity error after these rows (F_CD) and its bias while the pass
  * uses bias (F_BIAS: the rigid softness's rate times B's offset across the axis).
  */
-export function solveAlongAxis(p: JointPass2D, oA: number, oB: number, o: number, flags: number, wheel: boolean): void {
+export function solveAlongAxis(p: JointPass2D, ia: number, ib: number, o: number, flags: number, wheel: boolean): void {
   const { sb, rows, f } = p;
-  axisFrame(p, o);
+  const oA = ia * BS.BS2_STRIDE,
+    oB = ib * BS.BS2_STRIDE;
+  axisFrame(p, o, ia);
   const mA = sb[oA + BS.BS2_INV_MASS]!,
     iA = sb[oA + BS.BS2_INV_INERTIA]!,
     mB = sb[oB + BS.BS2_INV_MASS]!,
@@ -459,34 +469,55 @@ export function solveAlongAxis(p: JointPass2D, oA: number, oB: number, o: number
 }
 
 /**
- * A joint along an axis' warm start (prismatic, wheel): the frame's F_AXIAL (N s) along the axis, the
- * row across it (ILX), and F_ANGULAR (N m s). Fills the frame's axis (axisFrame).
+ * A joint along an axis' warm start (prismatic, wheel) on row `o` of solver bodies ia, ib, at the
+ * anchors as turned and moved so far in the step: the impulse along its axis turned with A (N s: a
+ * prismatic joint's spring, motor and limits, a `wheel`'s spring and limits), the row's across it (ILX)
+ * and the angular one (N m s: a prismatic joint's angular row, a wheel's motor).
  */
-export function warmStartAxis(p: JointPass2D, ia: number, ib: number, o: number): void {
-  const f = p.f;
-  axisFrame(p, o);
-  const axx = f[R.F_AXX]!,
-    axy = f[R.F_AXY]!,
-    axial = f[R.F_AXIAL]!,
-    angular = f[R.F_ANGULAR]!;
-  const perp = p.rows[o + R.ILX]!;
-  const lA = axial * f[R.F_A1]! + perp * f[R.F_S1]! + angular,
-    lB = axial * f[R.F_A2]! + perp * f[R.F_S2]! + angular;
-  applyImpulse(p.sb, ia * BS.BS2_STRIDE, ib * BS.BS2_STRIDE, axial * axx + perp * -axy, axial * axy + perp * axx, lA, lB);
+export function warmStartAxis(p: JointPass2D, ia: number, ib: number, o: number, wheel: boolean): void {
+  const { sb, rot, rows } = p;
+  const axial = wheel ? springLimitImpulse(rows, o) : driveImpulse(rows, o),
+    angular = rows[o + (wheel ? R.IMOT : R.IANG)]!;
+  const oA = ia * BS.BS2_STRIDE,
+    oB = ib * BS.BS2_STRIDE;
+  const cA = rot[ia * 3]!,
+    sA = rot[ia * 3 + 1]!,
+    cB = rot[ib * 3]!,
+    sB = rot[ib * 3 + 1]!;
+  const rAx = cA * rows[o + R.RAX]! - sA * rows[o + R.RAY]!,
+    rAy = sA * rows[o + R.RAX]! + cA * rows[o + R.RAY]!;
+  const rBx = cB * rows[o + R.RBX]! - sB * rows[o + R.RBY]!,
+    rBy = sB * rows[o + R.RBX]! + cB * rows[o + R.RBY]!;
+  const dx = sb[oB + BS.BS2_DX]! - sb[oA + BS.BS2_DX]! + rows[o + R.DCX]! + rBx - rAx,
+    dy = sb[oB + BS.BS2_DY]! - sb[oA + BS.BS2_DY]! + rows[o + R.DCY]! + rBy - rAy;
+  const axx = cA * rows[o + R.AXX]! - sA * rows[o + R.AXY]!,
+    axy = sA * rows[o + R.AXX]! + cA * rows[o + R.AXY]!;
+  const a1 = (dx + rAx) * axy - (dy + rAy) * axx,
+    a2 = rBx * axy - rBy * axx;
+  const s1 = (dx + rAx) * axx - (dy + rAy) * -axy,
+    s2 = rBx * axx - rBy * -axy;
+  const perp = rows[o + R.ILX]!;
+  const lA = axial * a1 + perp * s1 + angular,
+    lB = axial * a2 + perp * s2 + angular;
+  applyImpulse(sb, oA, oB, axial * axx + perp * -axy, axial * axy + perp * axx, lA, lB);
 }
 
 /**
- * A joint along an axis' reading into out (force N, torque N m, error m): the force of the frame's
- * F_AXIAL (N s, along the axis) and the row across it, the torque of F_ANGULAR (N m s), B's offset
- * across the axis. Fills the frame's axis (axisFrame).
+ * A joint along an axis' reading into out (force N, torque N m, error m): the force of its impulses
+ * along the axis (a prismatic joint's spring, limits and motor, a `wheel`'s spring and limits) and
+ * across it, the torque of its angular row (a wheel's motor), B's offset across the axis turned with A.
  */
-export function axisReading(p: JointPass2D, o: number, out: Float64Array): void {
-  const f = p.f,
-    invH = f[R.F_INVH]!;
-  axisFrame(p, o);
-  out[0] = Math.hypot(f[R.F_AXIAL]!, p.rows[o + R.ILX]!) * invH;
-  out[1] = Math.abs(f[R.F_ANGULAR]!) * invH;
-  out[2] = Math.abs(-f[R.F_AXY]! * f[R.F_DX]! + f[R.F_AXX]! * f[R.F_DY]!);
+export function axisReading(p: JointPass2D, ia: number, o: number, out: Float64Array, wheel: boolean): void {
+  const { rot, rows, f } = p;
+  const invH = f[R.F_INVH]!,
+    cA = rot[ia * 3]!,
+    sA = rot[ia * 3 + 1]!;
+  const axx = cA * rows[o + R.AXX]! - sA * rows[o + R.AXY]!,
+    axy = sA * rows[o + R.AXX]! + cA * rows[o + R.AXY]!;
+  const axial = springLimitImpulse(rows, o) + (wheel ? 0 : rows[o + R.IMOT]!);
+  out[0] = Math.hypot(axial, rows[o + R.ILX]!) * invH;
+  out[1] = Math.abs(rows[o + (wheel ? R.IMOT : R.IANG)]!) * invH;
+  out[2] = Math.abs(-axy * f[R.F_DX]! + axx * f[R.F_DY]!);
 }
 
 /** Wraps an angle into [-pi, pi]. */

@@ -7,12 +7,12 @@ import { IMPULSES, ROW_FLOATS, ROW_INTS } from '../world/joint-strides-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
 import { removeJointUnchecked } from './api-2d.js';
-import { DISTANCE_ROWS_2D, finishPointLinks, solvePointLinks, warmStartPointLinks } from './distance-joint.js';
+import { DISTANCE_ROWS_2D, finishPointLinks, solvePointLinks, warmStartDistanceRow, warmStartPointLinks } from './distance-joint.js';
 import * as R from './layout-2d.js';
 import { MOUSE_ROWS_2D } from './mouse-joint.js';
 import { PRISMATIC_ROWS_2D } from './prismatic-joint.js';
 import { finishPins, REVOLUTE_ROWS_2D, solvePins, warmStartPins } from './revolute-joint.js';
-import { type JointPass2D, poseFrame, unwind } from './rows-2d.js';
+import { anchorsFrame, type JointPass2D, separationFrame, unwind, warmStartAxis, warmStartPoint } from './rows-2d.js';
 import { soft } from './softness.js';
 import { WELD_ROWS_2D } from './weld-joint.js';
 import { WHEEL_ROWS_2D } from './wheel-joint.js';
@@ -24,7 +24,9 @@ import { WHEEL_ROWS_2D } from './wheel-joint.js';
  * substeps as the contacts, on the same packed solver bodies. Its stages run every row by its type's
  * row functions (each type's file; rows-2d.ts JointTypeRows2D), the point links' and pins' lean loops
  * (distance-joint.ts, revolute-joint.ts) first. A stage picks the type by a chain of tests rather than
- * a table, so that each call site sees one function, which the engine can inline.
+ * a table, so that each call site sees one function, which the engine can inline; the warm start picks
+ * the joint's shape (point, axis, distance), three calls that take no doubles (a call the engine does
+ * not inline boxes its double arguments).
  *
  * 1. `gatherJointBodies` (while the contact solver gathers its bodies): every joint whose bodies are
  *    not both fixed (static, asleep or the world) gets a row; its moving bodies get solver indices;
@@ -278,6 +280,7 @@ export function prepareJoints(world: PhysicsWorld, hs: number): void {
   js.softness[2] = jImp;
   js.linkCount = 0;
   js.pinCount = 0;
+  f[R.F_HS] = hs;
   for (let r = 0; r < n; r++) {
     const o = r * ROW_FLOATS,
       q = r * ROW_INTS;
@@ -370,12 +373,12 @@ export function prepareJoints(world: PhysicsWorld, hs: number): void {
     f[R.F_DX] = dcx + rBx - rAx;
     f[R.F_DY] = dcy + rBy - rAy;
     const type = ri[q + R.TF]! & 255;
-    if (type === JointType.Distance) DISTANCE_ROWS_2D.prepare(js, J, j, r, f, hs);
-    else if (type === JointType.Revolute) REVOLUTE_ROWS_2D.prepare(js, J, j, r, f, hs);
-    else if (type === JointType.Prismatic) PRISMATIC_ROWS_2D.prepare(js, J, j, r, f, hs);
-    else if (type === JointType.Weld) WELD_ROWS_2D.prepare(js, J, j, r, f, hs);
-    else if (type === JointType.Wheel) WHEEL_ROWS_2D.prepare(js, J, j, r, f, hs);
-    else MOUSE_ROWS_2D.prepare(js, J, j, r, f, hs);
+    if (type === JointType.Distance) DISTANCE_ROWS_2D.prepare(js, J, j, r, f);
+    else if (type === JointType.Revolute) REVOLUTE_ROWS_2D.prepare(js, J, j, r, f);
+    else if (type === JointType.Prismatic) PRISMATIC_ROWS_2D.prepare(js, J, j, r, f);
+    else if (type === JointType.Weld) WELD_ROWS_2D.prepare(js, J, j, r, f);
+    else if (type === JointType.Wheel) WHEEL_ROWS_2D.prepare(js, J, j, r, f);
+    else MOUSE_ROWS_2D.prepare(js, J, j, r, f);
   }
   js.generalCount = n - js.linkCount - js.pinCount;
 }
@@ -428,13 +431,9 @@ export function warmStartJoints(world: PhysicsWorld): void {
       ib = ri[q + R.IB]!,
       type = ri[q + R.TF]! & 255;
     if (type === R.POINT_LINK || type === R.PIN) continue;
-    poseFrame(p, o, ia, ib);
-    if (type === JointType.Distance) DISTANCE_ROWS_2D.warmStart(p, ia, ib, o);
-    else if (type === JointType.Revolute) REVOLUTE_ROWS_2D.warmStart(p, ia, ib, o);
-    else if (type === JointType.Prismatic) PRISMATIC_ROWS_2D.warmStart(p, ia, ib, o);
-    else if (type === JointType.Weld) WELD_ROWS_2D.warmStart(p, ia, ib, o);
-    else if (type === JointType.Wheel) WHEEL_ROWS_2D.warmStart(p, ia, ib, o);
-    else MOUSE_ROWS_2D.warmStart(p, ia, ib, o);
+    if (type === JointType.Distance) warmStartDistanceRow(p, ia, ib, o);
+    else if (type === JointType.Prismatic || type === JointType.Wheel) warmStartAxis(p, ia, ib, o, type === JointType.Wheel);
+    else warmStartPoint(p, ia, ib, o, type === JointType.Revolute);
   }
 }
 
@@ -473,7 +472,9 @@ function solveJointRows(world: PhysicsWorld, hs: number, useBias: boolean): void
       tf = ri[q + R.TF]!;
     const type = tf & 255;
     if (type === R.POINT_LINK || type === R.PIN) continue;
-    poseFrame(p, o, ia, ib);
+    anchorsFrame(p, o, ia, ib);
+    separationFrame(p, o, ia, ib);
+    p.f[R.F_REL] = p.rows[o + R.DANG]! + p.rot[ib * 3 + 2]! - p.rot[ia * 3 + 2]!;
     // The joint pushes its bodies (the contact solver's `pushed` slot: they are not in free flight).
     const flags = tf >> 8;
     let done: number;
@@ -525,18 +526,21 @@ export function finishJoints(world: PhysicsWorld, hs: number): void {
     const j = ri[q + R.EID]!,
       tf = ri[q + R.TF]!;
     const type = tf === R.POINT_LINK ? JointType.Distance : tf === R.PIN ? JointType.Revolute : tf & 255;
-    poseFrame(p, o, ri[q + R.IA]!, ri[q + R.IB]!);
+    const ia = ri[q + R.IA]!,
+      ib = ri[q + R.IB]!;
+    anchorsFrame(p, o, ia, ib);
+    separationFrame(p, o, ia, ib);
     out[0] = 0;
     out[1] = 0;
     out[2] = 0;
     out[3] = 0;
     const flags = tf >> 8;
-    if (type === JointType.Distance) DISTANCE_ROWS_2D.reading(p, o, flags, out);
-    else if (type === JointType.Revolute) REVOLUTE_ROWS_2D.reading(p, o, flags, out);
-    else if (type === JointType.Prismatic) PRISMATIC_ROWS_2D.reading(p, o, flags, out);
-    else if (type === JointType.Weld) WELD_ROWS_2D.reading(p, o, flags, out);
-    else if (type === JointType.Wheel) WHEEL_ROWS_2D.reading(p, o, flags, out);
-    else MOUSE_ROWS_2D.reading(p, o, flags, out);
+    if (type === JointType.Distance) DISTANCE_ROWS_2D.reading(p, ia, ib, o, flags, out);
+    else if (type === JointType.Revolute) REVOLUTE_ROWS_2D.reading(p, ia, ib, o, flags, out);
+    else if (type === JointType.Prismatic) PRISMATIC_ROWS_2D.reading(p, ia, ib, o, flags, out);
+    else if (type === JointType.Weld) WELD_ROWS_2D.reading(p, ia, ib, o, flags, out);
+    else if (type === JointType.Wheel) WHEEL_ROWS_2D.reading(p, ia, ib, o, flags, out);
+    else MOUSE_ROWS_2D.reading(p, ia, ib, o, flags, out);
     const force = out[0]!,
       torque = out[1]!,
       error = out[2]!,

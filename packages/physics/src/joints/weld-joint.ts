@@ -7,20 +7,13 @@ import type { PhysicsWorld } from '../world/options.js';
 import { centre, handle, makeJoint, optionalPoint } from './joint-2d.js';
 import { BASE_KEYS, checkEnds, type JointBaseOptions } from './joint-base.js';
 import * as R from './layout-2d.js';
-import {
-  angularMass,
-  applyImpulse,
-  type JointPass2D,
-  type JointTypeRows2D,
-  pointForce,
-  solvePointRow,
-  warmStartPointAngle,
-} from './rows-2d.js';
+import { angularMass, applyImpulse, type JointPass2D, type JointTypeRows2D, pointForce, solvePointRow } from './rows-2d.js';
 import { soft } from './softness.js';
 
 /**
  * The 2D weld joint (glues two bodies, rigidly or as linear and angular springs): its options,
- * addWeldJoint, and its row's preparation, warm start, solve and reading. joints/solver-2d.ts runs them.
+ * addWeldJoint, and its row's preparation, solve and reading (its warm start is rows-2d.ts
+ * warmStartPoint). joints/solver-2d.ts runs them.
  */
 
 /**
@@ -69,7 +62,8 @@ export function addWeldJoint(world: PhysicsWorld, options: WeldJointOptions): nu
  * mass of the relative rotation; the linear part's softness, its spring's (the Spring flag) or the
  * rigid rows'; the angular part's, its spring's (WELD_ANGULAR_SOFT) or the rigid rows'.
  */
-export function prepareWeldRow(js: JointState, J: JointStore, j: number, r: number, f: Float64Array, hs: number): void {
+export function prepareWeldRow(js: JointState, J: JointStore, j: number, r: number, f: Float64Array): void {
+  const hs = f[R.F_HS]!;
   const rows = js.rows,
     ri = js.rowInts;
   const o = r * ROW_FLOATS,
@@ -125,7 +119,7 @@ export function solveWeldRow(p: JointPass2D, ia: number, ib: number, o: number, 
 }
 
 /** A weld joint's reading after the step into out: its point force (N), its angular torque (N m), and a rigid weld's anchor separation (m). */
-export function weldReading(p: JointPass2D, o: number, flags: number, out: Float64Array): void {
+export function weldReading(p: JointPass2D, _ia: number, _ib: number, o: number, flags: number, out: Float64Array): void {
   const f = p.f;
   const dx = f[R.F_DX]!,
     dy = f[R.F_DY]!;
@@ -219,7 +213,6 @@ function solveSoftWeld(p: JointPass2D, oA: number, oB: number, o: number): boole
 /** The 2D weld joint's row functions (rows-2d.ts JointTypeRows2D). */
 export const WELD_ROWS_2D: JointTypeRows2D = {
   prepare: prepareWeldRow,
-  warmStart: warmStartPointAngle,
   solve: solveWeldRow,
   reading: weldReading,
 };

@@ -4,12 +4,12 @@ import type { PhysicsWorld } from '../world/options.js';
 import { type AxisJointKind, addAxisJoint } from './joint-2d.js';
 import type { JointBaseOptions } from './joint-base.js';
 import * as R from './layout-2d.js';
-import { axisReading, type JointPass2D, type JointTypeRows2D, prepareAxisRow, solveAlongAxis, warmStartAxis } from './rows-2d.js';
+import { axisReading, type JointPass2D, type JointTypeRows2D, prepareAxisRow, solveAlongAxis } from './rows-2d.js';
 
 /**
  * The 2D wheel joint (a suspension spring along an axis, free rotation with an optional motor): its
- * options, addWheelJoint, and its row's warm start, solve and reading (its preparation is the prismatic
- * joint's: rows-2d.ts prepareAxisRow). joints/solver-2d.ts runs them.
+ * options, addWheelJoint, and its row's solve and reading (its preparation and warm start are the prismatic
+ * joint's: rows-2d.ts prepareAxisRow, warmStartAxis). joints/solver-2d.ts runs them.
  */
 
 /**
@@ -55,14 +55,6 @@ const WHEEL: AxisJointKind = {
   dampingRatio: 0.7,
 };
 
-/** A wheel joint's warm start: its spring's and limits' impulses along the axis, the row's across it and the motor's. */
-export function warmStartWheelRow(p: JointPass2D, ia: number, ib: number, o: number): void {
-  const rows = p.rows;
-  p.f[R.F_AXIAL] = rows[o + R.ISPR]! + rows[o + R.ILOW]! - rows[o + R.IUP]!;
-  p.f[R.F_ANGULAR] = rows[o + R.IMOT]!;
-  warmStartAxis(p, ia, ib, o);
-}
-
 /**
  * One pass of a wheel joint's rows (Box2D v3's b2SolveWheelJoint) on its frame: the rotation motor
  * (unless neither body turns), the suspension spring and the translation limits along the axis, then
@@ -76,7 +68,7 @@ export function solveWheelRow(p: JointPass2D, ia: number, ib: number, o: number,
     iA = sb[oA + BS.BS2_INV_INERTIA]!,
     mB = sb[oB + BS.BS2_INV_MASS]!,
     iB = sb[oB + BS.BS2_INV_INERTIA]!;
-  solveAlongAxis(p, oA, oB, o, flags, true);
+  solveAlongAxis(p, ia, ib, o, flags, true);
   const s1 = f[R.F_S1]!,
     s2 = f[R.F_S2]!;
   const ms = p.useBias ? rows[o + R.JM]! : 1,
@@ -98,17 +90,13 @@ export function solveWheelRow(p: JointPass2D, ia: number, ib: number, o: number,
 }
 
 /** A wheel joint's reading after the step into out: the force along and across its axis (N), its motor's torque (N m), B's offset across the axis (m). */
-export function wheelReading(p: JointPass2D, o: number, _flags: number, out: Float64Array): void {
-  const rows = p.rows;
-  p.f[R.F_AXIAL] = rows[o + R.ISPR]! + rows[o + R.ILOW]! - rows[o + R.IUP]!;
-  p.f[R.F_ANGULAR] = rows[o + R.IMOT]!;
-  axisReading(p, o, out);
+export function wheelReading(p: JointPass2D, ia: number, _ib: number, o: number, _flags: number, out: Float64Array): void {
+  axisReading(p, ia, o, out, true);
 }
 
 /** The 2D wheel joint's row functions (rows-2d.ts JointTypeRows2D). */
 export const WHEEL_ROWS_2D: JointTypeRows2D = {
   prepare: prepareAxisRow,
-  warmStart: warmStartWheelRow,
   solve: solveWheelRow,
   reading: wheelReading,
 };
