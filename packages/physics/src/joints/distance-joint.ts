@@ -383,5 +383,4 @@ export function finishPointLinks(js: JointState): void {
 export const DISTANCE_ROWS_2D: JointTypeRows2D = {
   prepare: prepareDistanceRow,
   solve: solveDistanceRow,
-  reading: distanceReading,
 };

@@ -176,5 +176,4 @@ export function mouseReading(p: JointPass2D, _ia: number, _ib: number, o: number
 export const MOUSE_ROWS_2D: JointTypeRows2D = {
   prepare: prepareMouseRow,
   solve: solveMouseRow,
-  reading: mouseReading,
 };

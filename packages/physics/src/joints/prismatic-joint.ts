@@ -4,12 +4,12 @@ import type { PhysicsWorld } from '../world/options.js';
 import { type AxisJointKind, addAxisJoint } from './joint-2d.js';
 import type { JointBaseOptions } from './joint-base.js';
 import * as R from './layout-2d.js';
-import { applyImpulse, axisReading, type JointPass2D, type JointTypeRows2D, prepareAxisRow, solveAlongAxis } from './rows-2d.js';
+import { applyImpulse, type JointPass2D, type JointTypeRows2D, prepareAxisRow, solveAlongAxis } from './rows-2d.js';
 
 /**
  * The 2D prismatic joint (a slider along an axis, with an optional limit, motor and spring): its
- * options, addPrismaticJoint, and its row's solve and reading (its preparation and warm start are the
- * wheel joint's: rows-2d.ts prepareAxisRow, warmStartAxis). joints/solver-2d.ts runs them.
+ * options, addPrismaticJoint, and its row's solve (its preparation, warm start and reading are the
+ * wheel joint's: rows-2d.ts prepareAxisRow, warmStartAxis, axisReading). joints/solver-2d.ts runs them.
  */
 
 /**
@@ -98,14 +98,8 @@ export function solvePrismaticRow(p: JointPass2D, ia: number, ib: number, o: num
   return R.ROW_PUSHED;
 }
 
-/** A prismatic joint's reading after the step into out: the force along and across its axis (N), its angular row's torque (N m), B's offset across the axis (m). */
-export function prismaticReading(p: JointPass2D, ia: number, _ib: number, o: number, _flags: number, out: Float64Array): void {
-  axisReading(p, ia, o, out, false);
-}
-
 /** The 2D prismatic joint's row functions (rows-2d.ts JointTypeRows2D). */
 export const PRISMATIC_ROWS_2D: JointTypeRows2D = {
   prepare: prepareAxisRow,
   solve: solvePrismaticRow,
-  reading: prismaticReading,
 };

@@ -205,5 +205,4 @@ export function finishPins(js: JointState): void {
 export const REVOLUTE_ROWS_2D: JointTypeRows2D = {
   prepare: prepareRevoluteRow,
   solve: solveRevoluteRow,
-  reading: revoluteReading,
 };

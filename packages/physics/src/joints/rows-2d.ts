@@ -31,16 +31,16 @@ export interface JointPass2D {
 /**
  * A 2D joint type's row functions, which its file exports and joints/solver-2d.ts runs for each of its
  * rows (row offset `o`, bodies of solver indices ia and ib, its pose in the frame): `prepare` at the
- * start of the step (row r of joint j, the start-of-step pose, masses and substep in the frame `f`),
- * `solve` once a pass (@returns a ROW_* outcome) and `reading` after the step (force N, torque N m,
- * position error m and strain into out[0..3], left 0 where the type has none). The warm start (once a
- * substep) goes by the joint's shape instead: warmStartPoint, warmStartAxis, distance-joint.ts
- * warmStartDistanceRow, each on locals, for the engine inlines the stage's few calls.
+ * start of the step (row r of joint j, the start-of-step pose, masses and substep in the frame `f`) and
+ * `solve` once a pass (@returns a ROW_* outcome). The stages call the rest by the joint's shape or
+ * type, each on locals, so that the engine inlines their few calls: the warm start once a substep
+ * (warmStartPoint, warmStartAxis, distance-joint.ts warmStartDistanceRow) and the reading after the
+ * step (force N, torque N m, position error m and strain into out[0..3], left 0 where the type has
+ * none: each type's `*Reading`, axisReading for the prismatic and wheel joints).
  */
 export interface JointTypeRows2D {
   prepare(js: JointState, J: JointStore, j: number, r: number, f: Float64Array): void;
   solve(p: JointPass2D, ia: number, ib: number, o: number, flags: number): number;
-  reading(p: JointPass2D, ia: number, ib: number, o: number, flags: number, out: Float64Array): void;
 }
 
 /** Fills the frame with row `o`'s anchors now (F_RAX..F_RBY): turned with their bodies (solver indices ia, ib) since the start of the step. */

@@ -7,14 +7,21 @@ import { IMPULSES, ROW_FLOATS, ROW_INTS } from '../world/joint-strides-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
 import { removeJointUnchecked } from './api-2d.js';
-import { DISTANCE_ROWS_2D, finishPointLinks, solvePointLinks, warmStartDistanceRow, warmStartPointLinks } from './distance-joint.js';
+import {
+  DISTANCE_ROWS_2D,
+  distanceReading,
+  finishPointLinks,
+  solvePointLinks,
+  warmStartDistanceRow,
+  warmStartPointLinks,
+} from './distance-joint.js';
 import * as R from './layout-2d.js';
-import { MOUSE_ROWS_2D } from './mouse-joint.js';
+import { MOUSE_ROWS_2D, mouseReading } from './mouse-joint.js';
 import { PRISMATIC_ROWS_2D } from './prismatic-joint.js';
-import { finishPins, REVOLUTE_ROWS_2D, solvePins, warmStartPins } from './revolute-joint.js';
-import { anchorsFrame, type JointPass2D, separationFrame, unwind, warmStartAxis, warmStartPoint } from './rows-2d.js';
+import { finishPins, REVOLUTE_ROWS_2D, revoluteReading, solvePins, warmStartPins } from './revolute-joint.js';
+import { anchorsFrame, axisReading, type JointPass2D, separationFrame, unwind, warmStartAxis, warmStartPoint } from './rows-2d.js';
 import { soft } from './softness.js';
-import { WELD_ROWS_2D } from './weld-joint.js';
+import { WELD_ROWS_2D, weldReading } from './weld-joint.js';
 import { WHEEL_ROWS_2D } from './wheel-joint.js';
 
 /**
@@ -373,11 +380,11 @@ export function prepareJoints(world: PhysicsWorld, hs: number): void {
     f[R.F_DX] = dcx + rBx - rAx;
     f[R.F_DY] = dcy + rBy - rAy;
     const type = ri[q + R.TF]! & 255;
+    // The prismatic and wheel joints share one preparation: one call site, inlined once.
     if (type === JointType.Distance) DISTANCE_ROWS_2D.prepare(js, J, j, r, f);
     else if (type === JointType.Revolute) REVOLUTE_ROWS_2D.prepare(js, J, j, r, f);
-    else if (type === JointType.Prismatic) PRISMATIC_ROWS_2D.prepare(js, J, j, r, f);
+    else if (type === JointType.Prismatic || type === JointType.Wheel) PRISMATIC_ROWS_2D.prepare(js, J, j, r, f);
     else if (type === JointType.Weld) WELD_ROWS_2D.prepare(js, J, j, r, f);
-    else if (type === JointType.Wheel) WHEEL_ROWS_2D.prepare(js, J, j, r, f);
     else MOUSE_ROWS_2D.prepare(js, J, j, r, f);
   }
   js.generalCount = n - js.linkCount - js.pinCount;
@@ -535,12 +542,11 @@ export function finishJoints(world: PhysicsWorld, hs: number): void {
     out[2] = 0;
     out[3] = 0;
     const flags = tf >> 8;
-    if (type === JointType.Distance) DISTANCE_ROWS_2D.reading(p, ia, ib, o, flags, out);
-    else if (type === JointType.Revolute) REVOLUTE_ROWS_2D.reading(p, ia, ib, o, flags, out);
-    else if (type === JointType.Prismatic) PRISMATIC_ROWS_2D.reading(p, ia, ib, o, flags, out);
-    else if (type === JointType.Weld) WELD_ROWS_2D.reading(p, ia, ib, o, flags, out);
-    else if (type === JointType.Wheel) WHEEL_ROWS_2D.reading(p, ia, ib, o, flags, out);
-    else MOUSE_ROWS_2D.reading(p, ia, ib, o, flags, out);
+    if (type === JointType.Distance) distanceReading(p, ia, ib, o, flags, out);
+    else if (type === JointType.Revolute) revoluteReading(p, ia, ib, o, flags, out);
+    else if (type === JointType.Prismatic || type === JointType.Wheel) axisReading(p, ia, o, out, type === JointType.Wheel);
+    else if (type === JointType.Weld) weldReading(p, ia, ib, o, flags, out);
+    else mouseReading(p, ia, ib, o, flags, out);
     const force = out[0]!,
       torque = out[1]!,
       error = out[2]!,

@@ -214,5 +214,4 @@ function solveSoftWeld(p: JointPass2D, oA: number, oB: number, o: number): boole
 export const WELD_ROWS_2D: JointTypeRows2D = {
   prepare: prepareWeldRow,
   solve: solveWeldRow,
-  reading: weldReading,
 };

@@ -4,12 +4,12 @@ import type { PhysicsWorld } from '../world/options.js';
 import { type AxisJointKind, addAxisJoint } from './joint-2d.js';
 import type { JointBaseOptions } from './joint-base.js';
 import * as R from './layout-2d.js';
-import { axisReading, type JointPass2D, type JointTypeRows2D, prepareAxisRow, solveAlongAxis } from './rows-2d.js';
+import { type JointPass2D, type JointTypeRows2D, prepareAxisRow, solveAlongAxis } from './rows-2d.js';
 
 /**
  * The 2D wheel joint (a suspension spring along an axis, free rotation with an optional motor): its
- * options, addWheelJoint, and its row's solve and reading (its preparation and warm start are the prismatic
- * joint's: rows-2d.ts prepareAxisRow, warmStartAxis). joints/solver-2d.ts runs them.
+ * options, addWheelJoint, and its row's solve (its preparation, warm start and reading are the prismatic
+ * joint's: rows-2d.ts prepareAxisRow, warmStartAxis, axisReading). joints/solver-2d.ts runs them.
  */
 
 /**
@@ -89,14 +89,8 @@ export function solveWheelRow(p: JointPass2D, ia: number, ib: number, o: number,
   return R.ROW_PUSHED;
 }
 
-/** A wheel joint's reading after the step into out: the force along and across its axis (N), its motor's torque (N m), B's offset across the axis (m). */
-export function wheelReading(p: JointPass2D, ia: number, _ib: number, o: number, _flags: number, out: Float64Array): void {
-  axisReading(p, ia, o, out, true);
-}
-
 /** The 2D wheel joint's row functions (rows-2d.ts JointTypeRows2D). */
 export const WHEEL_ROWS_2D: JointTypeRows2D = {
   prepare: prepareAxisRow,
   solve: solveWheelRow,
-  reading: wheelReading,
 };
