@@ -19,7 +19,6 @@ const LEFT: Readonly<Record<string, number>> = {
   'solver/manifold-solve-3d.ts solveManifolds3D': 349,
   'forces/barnes-hut/walk-2d.ts barnesHutWalk2': 327,
   'forces/barnes-hut/walk-3d.ts barnesHutWalk3': 325,
-  'joints/prepare-2d.ts prepareJoints': 251,
   'solver/manifold-rows-2d.ts solveManifolds': 215,
   'solver/coloring-kernel.ts solveColored2D': 180,
   'solver/ball-sweeps.ts solve3D': 174,

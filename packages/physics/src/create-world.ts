@@ -8,12 +8,16 @@ import { createEntityIndex, createWorld, observe, onAdd, onRemove } from 'bitecs
 import { allocateCollisionScratch, createCollisionState } from './collision/state.js';
 import { removeSpringsOf } from './forces/spring.js';
 import { wakeTouching } from './islands/sleep.js';
-import { finishJoints } from './joints/finish-2d.js';
-import { prepareJoints } from './joints/prepare-2d.js';
-import { removeJointsOf } from './joints/remove.js';
-import { solveJoints } from './joints/solve-2d.js';
-import { gatherJointBodies, jointsToSolve } from './joints/solver-2d.js';
-import { integrateJointRotations, warmStartJoints } from './joints/warm-start-2d.js';
+import { removeJointsOf } from './joints/api-2d.js';
+import {
+  finishJoints,
+  gatherJointBodies,
+  integrateJointRotations,
+  jointsToSolve,
+  prepareJoints,
+  solveJoints,
+  warmStartJoints,
+} from './joints/solver-2d.js';
 import { Rng } from './math/rng.js';
 import { setJointRows2D } from './solver/rows-joints-2d.js';
 import { createStages, STAGES } from './step/stages.js';

@@ -1,18 +1,22 @@
 import { entityExists, hasComponent, removeEntity } from 'bitecs';
 import { detachClothLink } from '../cloth/solver.js';
+import { wakeIsland } from '../islands/sleep.js';
 import { assertFinite, assertNonNegative, assertPositive } from '../validation/validate.js';
 import { currentHandle, resolveEntity, SLOT_RANGE } from '../world/handles.js';
+import { removeNoCollide } from '../world/joint-no-collide.js';
 import { JointFlag, JointType } from '../world/joint-store-2d.js';
 import { IMPULSES } from '../world/joint-strides-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
+import { query } from '../world/query.js';
 import { checkLimits, requireJoint, wakeJoint } from './joint-2d.js';
-import { removeJointUnchecked } from './remove.js';
+import { ILOW, ILX, IMOT, ISPR, IUP } from './layout-2d.js';
 
 /**
  * Calls on the 2D joints of every type: isJoint, removeJoint, setJointMotor, setJointLimits, setJointSpring
- * and the readings jointLength, jointAngle and jointAnchors. Each joint type's options and add call are in
- * a file of its own (distance-joint.ts, revolute-joint.ts, prismatic-joint.ts, weld-joint.ts, wheel-
- * joint.ts, mouse-joint.ts), on the shared checks of joint-2d.ts.
+ * and the readings jointLength, jointAngle and jointAnchors; the removal of a joint and the removal hook
+ * of a body. Each joint type's options and add call are in a file of its own (distance-joint.ts,
+ * revolute-joint.ts, prismatic-joint.ts, weld-joint.ts, wheel-joint.ts, mouse-joint.ts), on the shared
+ * checks of joint-2d.ts.
  */
 
 /**
@@ -56,7 +60,7 @@ export function setJointMotor(world: PhysicsWorld, joint: number, speed: number,
   J.motorSpeed[j] = speed;
   J.maxMotorForce[j] = maxForce;
   J.flags[j] = maxForce > 0 ? J.flags[j]! | JointFlag.Motor : J.flags[j]! & ~JointFlag.Motor;
-  if (maxForce === 0) world.joints.impulses[j * IMPULSES + 4] = 0;
+  if (maxForce === 0) world.joints.impulses[j * IMPULSES + (IMOT - ILX)] = 0;
   wakeJoint(world, j);
 }
 
@@ -71,8 +75,8 @@ export function setJointLimits(world: PhysicsWorld, joint: number, lower: number
   const j = requireJoint(where, world, joint, [JointType.Revolute, JointType.Prismatic, JointType.Wheel]);
   const J = world.components.Joint;
   const base = j * IMPULSES;
-  world.joints.impulses[base + 5] = 0;
-  world.joints.impulses[base + 6] = 0;
+  world.joints.impulses[base + (ILOW - ILX)] = 0;
+  world.joints.impulses[base + (IUP - ILX)] = 0;
   if (lower === null) {
     J.flags[j] = J.flags[j]! & ~JointFlag.Limit;
     wakeJoint(world, j);
@@ -103,7 +107,7 @@ export function setJointSpring(world: PhysicsWorld, joint: number, hertz: number
   if (J.type[j] !== JointType.Weld && J.type[j] !== JointType.Mouse) {
     J.flags[j] = hertz > 0 ? J.flags[j]! | JointFlag.Spring : J.flags[j]! & ~JointFlag.Spring;
   }
-  world.joints.impulses[j * IMPULSES + 3] = 0;
+  world.joints.impulses[j * IMPULSES + (ISPR - ILX)] = 0;
   wakeJoint(world, j);
 }
 
@@ -155,4 +159,69 @@ function anchorsOf(world: PhysicsWorld, j: number): [number, number, number, num
   const a = point(J.a[j]!, J.localAx[j]!, J.localAy[j]!),
     b = point(J.b[j]!, J.localBx[j]!, J.localBy[j]!);
   return [a[0], a[1], b[0], b[1]];
+}
+
+/**
+ * Removes joint entity `j` (which must be a live joint): its bodies are woken (what held them is
+ * gone) and no longer count it as attached.
+ * @category Joints and ropes
+ */
+export function removeJointUnchecked(world: PhysicsWorld, j: number): void {
+  detachJoint(world, j);
+  removeEntity(world, j);
+}
+
+/** The bookkeeping of removing joint `j`, without removing the entity: wake its bodies, uncount it. */
+function detachJoint(world: PhysicsWorld, j: number): void {
+  const J = world.components.Joint;
+  const att = world.joints.attached;
+  const a = J.a[j]!,
+    b = J.b[j]!;
+  removeNoCollide(world.joints, j, a, b);
+  if (a !== 0) {
+    att[a] = att[a]! - 1;
+    if (entityExists(world, a)) wakeIsland(world, a);
+  }
+  att[b] = att[b]! - 1;
+  if (entityExists(world, b)) wakeIsland(world, b);
+}
+
+/**
+ * Removal hook: removes every joint attached to body `eid` (so no joint ever holds a recycled id);
+ * if `eid` is itself a joint, does its bookkeeping (the caller removes the entity). Costs nothing in a
+ * world without joints or for a body that no joint holds.
+ * @category Joints and ropes
+ */
+export function removeJointsOf(world: PhysicsWorld, eid: number): void {
+  const att = world.joints.attached;
+  if (att.length === 0) return;
+  const J = world.components.Joint,
+    L = world.components.ClothLink;
+  if (hasComponent(world, eid, J)) {
+    detachJoint(world, eid);
+    return;
+  }
+  if (hasComponent(world, eid, L)) {
+    detachClothLink(world, eid);
+    return;
+  }
+  if (att[eid] === 0) return;
+  const joints = query(world, [J]);
+  const doomed: number[] = [];
+  for (let i = 0; i < joints.length; i++) {
+    const j = joints[i]!;
+    if (J.a[j] === eid || J.b[j] === eid) doomed.push(j);
+  }
+  for (const j of doomed) removeJointUnchecked(world, j);
+  if (att[eid] === 0) return;
+  const links = query(world, [L]);
+  const cut: number[] = [];
+  for (let i = 0; i < links.length; i++) {
+    const l = links[i]!;
+    if (L.a[l] === eid || L.b[l] === eid) cut.push(l);
+  }
+  for (const l of cut) {
+    detachClothLink(world, l);
+    removeEntity(world, l);
+  }
 }

@@ -2,10 +2,7 @@ import { assertFinite, assertNonNegative, describe } from '../validation/validat
 import { resolveEntity } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { requireJoint3D, wakeJoint3D } from './joint-3d.js';
-import { removeJoint3DUnchecked } from './remove-3d.js';
-import { Joint3DFlag, Joint3DType, joints3DOf } from './store-3d.js';
-
-export { removeJoint3DUnchecked } from './remove-3d.js';
+import { Joint3DFlag, Joint3DType, joints3DOf, removeJoint3DUnchecked } from './store-3d.js';
 
 /**
  * Calls on the 3D joints of every type: setJoint3DBreak, setJoint3DLimits, setJoint3DMotor, removeJoint3D

@@ -1,17 +1,19 @@
-import { BS3_STRIDE, BS3_WX, BS3_WY, BS3_WZ } from '../solver/body-state-layout.js';
 import { assertFinite, describe } from '../validation/validate.js';
 import { currentHandle } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { centre, ends, type Joint3DBaseOptions, make, point, requireJoint3D, unit, wakeJoint3D } from './joint-3d.js';
+import { centre, type Joint3DBaseOptions, make, point, requireJoint3D, unit, wakeJoint3D } from './joint-3d.js';
+import { checkEnds } from './joint-base.js';
 import {
   type JointPass3D,
   type JointRows3D,
+  limitSoft,
+  limitSoftness,
   pointJointReading,
   preparePointBlock,
   solvePointRows,
   warmStartPointAndLock,
 } from './rows-3d.js';
-import { angularRow, applyAngular, ax, bx, qa, qb, rot } from './rows-3d-math.js';
+import { applyAngular, ax, bx, qa, qb, relativeSpin, rot, row3D } from './rows-3d-math.js';
 import { useJointType3D } from './solver-3d.js';
 import { Joint3DFlag, Joint3DType, joints3DOf } from './store-3d.js';
 
@@ -44,7 +46,7 @@ export interface BallJoint3DOptions extends Joint3DBaseOptions {
  */
 export function addBallJoint3D(world: PhysicsWorld, options: BallJoint3DOptions): number {
   const where = 'addBallJoint3D';
-  const e = ends(where, world, options, ['anchor', 'axis', 'coneAngle']);
+  const e = checkEnds(where, world, options, 3, ['anchor', 'axis', 'coneAngle']);
   const p = options.anchor === undefined ? centre(world, e.b) : point(where, 'anchor', options.anchor);
   const axis = options.axis === undefined ? ([0, 1, 0] as [number, number, number]) : unit(where, 'axis', options.axis);
   if (options.coneAngle !== undefined) {
@@ -90,9 +92,7 @@ export function setBallJoint3DCone(world: PhysicsWorld, joint: number, coneAngle
 
 /** A ball joint's cone: the angle between A's axis and B's stays within the half angle (s.upper). */
 function solveCone(p: JointPass3D, j: number, a: number, b: number): void {
-  const { s, sb, T, hs, useBias, bRate, ms, is } = p;
-  const oa = BS3_STRIDE * a,
-    ob = BS3_STRIDE * b;
+  const s = p.s;
   rot(qa, s.uax[j]!, s.uay[j]!, s.uaz[j]!, ax);
   rot(qb, s.ubx[j]!, s.uby[j]!, s.ubz[j]!, bx);
   let nx = ax[1]! * bx[2]! - ax[2]! * bx[1]!,
@@ -103,23 +103,28 @@ function solveCone(p: JointPass3D, j: number, a: number, b: number): void {
     nx /= sn;
     ny /= sn;
     nz /= sn;
+    // The swing phi about n, d phi / dt = (wB - wA) . n; the row C = half angle - phi >= 0 acts about -n.
     const phi = Math.atan2(sn, ax[0]! * bx[0]! + ax[1]! * bx[1]! + ax[2]! * bx[2]!);
-    const C = s.upper[j]! - phi;
-    let bias = 0,
-      m = 1,
-      im = 0;
-    if (C > 0) bias = C / hs;
-    else if (useBias) {
-      bias = bRate * C;
-      m = ms;
-      im = is;
-    }
-    const cdot = -(
-      (sb[ob + BS3_WX]! - sb[oa + BS3_WX]!) * nx +
-      (sb[ob + BS3_WY]! - sb[oa + BS3_WY]!) * ny +
-      (sb[ob + BS3_WZ]! - sb[oa + BS3_WZ]!) * nz
+    const cdot = -relativeSpin(p.sb, a, b, nx, ny, nz);
+    limitSoftness(p, s.upper[j]! - phi);
+    s.limit[j] = row3D(
+      p.sb,
+      p.T,
+      a,
+      b,
+      false,
+      -nx,
+      -ny,
+      -nz,
+      0,
+      cdot,
+      limitSoft[0]!,
+      limitSoft[1]!,
+      limitSoft[2]!,
+      s.limit[j]!,
+      0,
+      Infinity,
     );
-    s.limit[j] = angularRow(sb, T, a, b, -nx, -ny, -nz, cdot, bias, m, im, s.limit[j]!, 0, Infinity);
   } else s.limit[j] = 0; // axes parallel: n undefined, far inside the cone; the row starts again from zero
 }
 

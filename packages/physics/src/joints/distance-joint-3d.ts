@@ -1,11 +1,13 @@
-import { assertNonNegative, assertPositive, describe } from '../validation/validate.js';
+import { assertNonNegative, assertPositive } from '../validation/validate.js';
 import { currentHandle } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { centre, ends, type Joint3DBaseOptions, make, point, requireJoint3D, wakeJoint3D } from './joint-3d.js';
-import type { JointPass3D, JointRows3D } from './rows-3d.js';
-import { anchorSpeed, applyLinear, linearK, linearRow, pa, pb, ra, rb, referenceK } from './rows-3d-math.js';
+import type { DistanceJointOptions } from './distance-joint.js';
+import { centre, make, point, requireJoint3D, wakeJoint3D } from './joint-3d.js';
+import { checkEnds, lengthLimits } from './joint-base.js';
+import { type JointPass3D, type JointRows3D, limitSoft, limitSoftness } from './rows-3d.js';
+import { anchorSpeed, applyLinear, linearK, pa, pb, ra, rb, referenceK, row3D } from './rows-3d-math.js';
+import { fixedSpring } from './softness.js';
 import { useJointType3D } from './solver-3d.js';
-import { fixedSpring } from './spring.js';
 import { Joint3DFlag, type Joint3DStore, Joint3DType, joints3DOf } from './store-3d.js';
 
 /**
@@ -15,26 +17,17 @@ import { Joint3DFlag, type Joint3DStore, Joint3DType, joints3DOf } from './store
  */
 
 /**
- * Options of `addDistanceJoint3D`.
+ * Options of `addDistanceJoint3D`: those of `addDistanceJoint` (anchors as 3D world points, m) but
+ * `breakStretch`, its spring's reference mass taken in 3D.
  * @category Joints and ropes
  */
-export interface DistanceJoint3DOptions extends Joint3DBaseOptions {
-  /** Anchor on A (world, m); required when A is the world, else default A's centre. */
-  anchorA?: ArrayLike<number>;
-  /** Anchor on B (world, m). Default B's centre. */
-  anchorB?: ArrayLike<number>;
-  /** Rest length, m, > 0. Default the anchors' distance when made. */
-  length?: number;
-  /** Limits, m: 0 <= minLength <= length <= maxLength. Defaults: both `length` (a rigid rod), or 0 and Infinity with a spring. A rope: minLength 0. */
-  minLength?: number;
-  maxLength?: number;
+export interface DistanceJoint3DOptions extends Omit<DistanceJointOptions, 'breakStretch' | 'hertz'> {
   /**
-   * Spring frequency, Hz (>= 0; 0 rigid), and damping ratio (>= 0). Default 0, 0. A spring of fixed stiffness
-   * k = (2 pi hertz)^2 / K_ref, K_ref = mA + mB + (tr(IA^-1) |rA|^2 - rA . IA^-1 rA + the same for B) / 3 (the
-   * anchors' levers from the centres; no rotation changes it), so a lever's swing does no work on it.
+   * Spring frequency, Hz (>= 0; 0 rigid). Default 0. A spring of fixed stiffness k = (2 pi hertz)^2 / K_ref,
+   * K_ref = mA + mB + (tr(IA^-1) |rA|^2 - rA . IA^-1 rA + the same for B) / 3 (the anchors' levers from the
+   * centres; no rotation changes it), so a lever's swing does no work on it.
    */
   hertz?: number;
-  dampingRatio?: number;
 }
 
 /**
@@ -46,7 +39,7 @@ export interface DistanceJoint3DOptions extends Joint3DBaseOptions {
  */
 export function addDistanceJoint3D(world: PhysicsWorld, options: DistanceJoint3DOptions): number {
   const where = 'addDistanceJoint3D';
-  const e = ends(where, world, options, ['anchorA', 'anchorB', 'length', 'minLength', 'maxLength', 'hertz', 'dampingRatio']);
+  const e = checkEnds(where, world, options, 3, ['anchorA', 'anchorB', 'length', 'minLength', 'maxLength', 'hertz', 'dampingRatio']);
   if (e.a === 0 && options.anchorA === undefined) throw new RangeError(`${where}: anchorA (a world point) is required when a is the world`);
   const pa = options.anchorA === undefined ? centre(world, e.a) : point(where, 'anchorA', options.anchorA);
   const pb = options.anchorB === undefined ? centre(world, e.b) : point(where, 'anchorB', options.anchorB);
@@ -56,12 +49,7 @@ export function addDistanceJoint3D(world: PhysicsWorld, options: DistanceJoint3D
     zeta = options.dampingRatio ?? 0;
   assertNonNegative(where, 'hertz', hertz);
   assertNonNegative(where, 'dampingRatio', zeta);
-  const minL = options.minLength ?? (hertz > 0 ? 0 : length),
-    maxL = options.maxLength ?? (hertz > 0 ? Infinity : length);
-  assertNonNegative(where, 'minLength', minL);
-  if (!(minL <= length)) throw new RangeError(`${where}: minLength must be <= length (${length}), got ${describe(minL)}`);
-  if (typeof maxL !== 'number' || Number.isNaN(maxL) || !(maxL >= length))
-    throw new RangeError(`${where}: maxLength must be >= length (${length}), got ${describe(maxL)}`);
+  const [minL, maxL] = lengthLimits(where, length, hertz > 0, options.minLength, options.maxLength);
   const j = make(world, where, Joint3DType.Distance, e, options, pa, pb, [0, 1, 0]);
   useJointType3D(Joint3DType.Distance, DISTANCE_ROWS_3D);
   const s = joints3DOf(world, true);
@@ -110,12 +98,7 @@ export function setDistanceJoint3DLength(world: PhysicsWorld, joint: number, len
   const { s, j } = requireJoint3D(where, world, joint, [Joint3DType.Distance]);
   assertPositive(where, 'length', length);
   const spring = (s.flags[j]! & Joint3DFlag.Spring) !== 0;
-  const minL = minLength ?? (spring ? 0 : length),
-    maxL = maxLength ?? (spring ? Infinity : length);
-  assertNonNegative(where, 'minLength', minL);
-  if (!(minL <= length)) throw new RangeError(`${where}: minLength must be <= length (${length}), got ${describe(minL)}`);
-  if (typeof maxL !== 'number' || Number.isNaN(maxL) || !(maxL >= length))
-    throw new RangeError(`${where}: maxLength must be >= length (${length}), got ${describe(maxL)}`);
+  const [minL, maxL] = lengthLimits(where, length, spring, minLength, maxLength);
   const limitsChanged = s.lower[j] !== minL || s.upper[j] !== maxL;
   s.length[j] = length;
   s.lower[j] = minL;
@@ -157,8 +140,8 @@ export function setDistanceJoint3DSpring(world: PhysicsWorld, joint: number, her
   wakeJoint3D(world, s, j);
 }
 
-/** Scratch of a spring's soft coefficients. */
-const spring = new Float64Array(3);
+/** Scratch of a spring's coefficients (fixedSpring). */
+const spring = new Float64Array(2);
 
 /**
  * A distance joint's rows along the anchors' line: the spring (soft, fixed stiffness), the rod, and the
@@ -182,68 +165,36 @@ export function solveDistanceRow3D(p: JointPass3D, j: number, a: number, b: numb
   dz /= len;
   const k = linearK(sb, T, a, b, dx, dy, dz);
   if (!(k > 0)) return;
-  const L = s.length[j]!;
-  if (flags & Joint3DFlag.Spring) {
-    if (useBias) {
+  const L = s.length[j]!,
+    sprung = (flags & Joint3DFlag.Spring) !== 0;
+  // The spring (while the pass uses bias), or the rod when there are no limits (soft with the pass's softness).
+  if (sprung ? useBias : !(flags & Joint3DFlag.Limit)) {
+    let bias = bRate * (len - L),
+      m = ms,
+      im = is;
+    if (sprung) {
       // A spring of fixed stiffness (see fixedSpring): its softness gamma from the reference mass,
       // the row's mass from the effective mass k of the moment.
       fixedSpring(spring, 0, s.hertz[j]!, s.dampingRatio[j]!, hs, referenceK(sb, T, a, b));
       const gamma = spring[1]!,
         soft = gamma < Infinity;
-      spring[1] = soft ? k / (k + gamma) : 0;
-      spring[2] = soft ? gamma / (k + gamma) : 1;
-      s.lx[j] = linearRow(
-        sb,
-        T,
-        a,
-        b,
-        dx,
-        dy,
-        dz,
-        k,
-        anchorSpeed(sb, a, b, dx, dy, dz),
-        spring[0]! * (len - L),
-        spring[1]!,
-        spring[2]!,
-        s.lx[j]!,
-        -Infinity,
-        Infinity,
-      );
+      bias = spring[0]! * (len - L);
+      m = soft ? k / (k + gamma) : 0;
+      im = soft ? gamma / (k + gamma) : 1;
     }
-  } else if (!(flags & Joint3DFlag.Limit)) {
-    s.lx[j] = linearRow(
-      sb,
-      T,
-      a,
-      b,
-      dx,
-      dy,
-      dz,
-      k,
-      anchorSpeed(sb, a, b, dx, dy, dz),
-      bRate * (len - L),
-      ms,
-      is,
-      s.lx[j]!,
-      -Infinity,
-      Infinity,
-    );
+    s.lx[j] = row3D(sb, T, a, b, true, dx, dy, dz, k, anchorSpeed(sb, a, b, dx, dy, dz), bias, m, im, s.lx[j]!, -Infinity, Infinity);
   }
   if (flags & Joint3DFlag.Limit) {
     // One-sided rows: len >= lower (impulse along +u) and len <= upper (along -u); speculative when apart.
     if (s.lower[j]! > 0 || !(flags & Joint3DFlag.Spring)) {
-      const C = len - s.lower[j]!;
-      const bias = C > 0 ? C / hs : useBias ? bRate * C : 0,
-        m = C > 0 || !useBias ? 1 : ms,
-        im = C > 0 || !useBias ? 0 : is;
-      s.limit[j] = linearRow(sb, T, a, b, dx, dy, dz, k, anchorSpeed(sb, a, b, dx, dy, dz), bias, m, im, s.limit[j]!, 0, Infinity);
+      limitSoftness(p, len - s.lower[j]!);
+      const cdot = anchorSpeed(sb, a, b, dx, dy, dz);
+      s.limit[j] = row3D(sb, T, a, b, true, dx, dy, dz, k, cdot, limitSoft[0]!, limitSoft[1]!, limitSoft[2]!, s.limit[j]!, 0, Infinity);
     }
     if (Number.isFinite(s.upper[j]!)) {
-      const C = s.upper[j]! - len;
-      const bias = C > 0 ? C / hs : useBias ? bRate * C : 0,
-        m = C > 0 || !useBias ? 1 : ms,
-        im = C > 0 || !useBias ? 0 : is;
-      s.ly[j] = linearRow(sb, T, a, b, -dx, -dy, -dz, k, -anchorSpeed(sb, a, b, dx, dy, dz), bias, m, im, s.ly[j]!, 0, Infinity);
+      limitSoftness(p, s.upper[j]! - len);
+      const cdot = -anchorSpeed(sb, a, b, dx, dy, dz);
+      s.ly[j] = row3D(sb, T, a, b, true, -dx, -dy, -dz, k, cdot, limitSoft[0]!, limitSoft[1]!, limitSoft[2]!, s.ly[j]!, 0, Infinity);
     }
   }
 }

@@ -1,19 +1,20 @@
-import { BS2_DX, BS2_DY, BS2_INV_MASS, BS2_PUSHED, BS2_VX, BS2_VY } from '../solver/body-state-layout.js';
-import { assertKnownKeys, assertNonNegative, assertPositive, describe } from '../validation/validate.js';
+import * as BS from '../solver/body-state-layout.js';
+import { assertKnownKeys, assertNonNegative, assertPositive } from '../validation/validate.js';
 import type { JointState } from '../world/joint-state-2d.js';
-import { JointFlag, JointType } from '../world/joint-store-2d.js';
-import { LINK_FLOATS, LINK_INTS, ROW_FLOATS } from '../world/joint-strides-2d.js';
+import { JointFlag, type JointStore, JointType } from '../world/joint-store-2d.js';
+import { IMPULSES, LINK_FLOATS, LINK_INTS, ROW_FLOATS, ROW_INTS } from '../world/joint-strides-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { assertBreakLimit, BASE_KEYS, centre, checkEnds, handle, type JointBaseOptions, makeJoint, optionalPoint } from './joint-2d.js';
+import { centre, handle, makeJoint, optionalPoint } from './joint-2d.js';
+import { assertBreakLimit, BASE_KEYS, checkEnds, type JointBaseOptions, lengthLimits } from './joint-base.js';
 import * as R from './layout-2d.js';
-import { limitRow, springImpulse } from './rows-2d.js';
+import { applyImpulse, type JointPass2D, type JointTypeRows2D, limitRow, springLimitImpulse, springRow } from './rows-2d.js';
+import { springImpulse } from './softness.js';
 
 /**
  * The 2D distance joint (a rod, a rope or a spring between two anchors): its options, addDistanceJoint,
- * its row solve, and the point links' passes (a rod or rope between two bodies that do not turn and
- * has no spring, packed by joints/prepare-2d.ts: warm start, solve, impulses back into the rows). Its
- * general rows are prepared and finished with the other 2D joints' (joints/prepare-2d.ts, finish-2d.ts)
- * and solved in their loop (joints/solve-2d.ts).
+ * its row's preparation, warm start, solve and reading, and the point links' passes (a rod or rope
+ * between two bodies that do not turn and has no spring, packed by its preparation: warm start, solve,
+ * impulses back into the rows). joints/solver-2d.ts runs them.
  */
 
 /**
@@ -57,7 +58,7 @@ export interface DistanceJointOptions extends JointBaseOptions {
  */
 export function addDistanceJoint(world: PhysicsWorld, options: DistanceJointOptions): number {
   const where = 'addDistanceJoint';
-  const ends = checkEnds(where, world, options);
+  const ends = checkEnds(where, world, options, 2);
   assertKnownKeys(
     where,
     options,
@@ -74,12 +75,7 @@ export function addDistanceJoint(world: PhysicsWorld, options: DistanceJointOpti
   assertNonNegative(where, 'hertz', hertz);
   const zeta = options.dampingRatio ?? 0;
   assertNonNegative(where, 'dampingRatio', zeta);
-  const minL = options.minLength ?? (hertz > 0 ? 0 : length);
-  const maxL = options.maxLength ?? (hertz > 0 ? Infinity : length);
-  assertNonNegative(where, 'minLength', minL);
-  if (!(minL <= length)) throw new RangeError(`${where}: minLength must be <= length (${length}), got ${describe(minL)}`);
-  if (typeof maxL !== 'number' || Number.isNaN(maxL) || !(maxL >= length))
-    throw new RangeError(`${where}: maxLength must be >= length (${length}), got ${describe(maxL)}`);
+  const [minL, maxL] = lengthLimits(where, length, hertz > 0, options.minLength, options.maxLength);
   if (options.breakStretch !== undefined) assertBreakLimit(where, 'breakStretch', options.breakStretch);
   const j = makeJoint(world, JointType.Distance, ends, pa, pb, options);
   const J = world.components.Joint;
@@ -94,16 +90,16 @@ export function addDistanceJoint(world: PhysicsWorld, options: DistanceJointOpti
 }
 
 /**
- * One pass of a distance joint's row (Box2D v3's b2SolveDistanceJoint) on the frame `f` of
- * layout-2d.ts: the spring, then the lower and upper length limits (a rope link: only the upper), or
- * the rigid rod. @returns ROW_SKIPPED when the anchors coincide (no direction), ROW_PUSHED when the
- * link holds an impulse, else ROW_MOVED (a slack rope leaves its bodies in free flight).
+ * Prepares distance joint `j`'s row r (its anchors, pose and masses at the start of the step in the
+ * frame `f`, layout-2d.ts): the effective mass along the anchors' line, the rest length and limits, the
+ * spring of fixed stiffness (`hs` the substep, s), and, for a rod or rope between bodies that do not
+ * turn and without a spring, its point link.
  */
-export function solveDistanceRow(rows: Float64Array, o: number, flags: number, useBias: boolean, f: Float64Array): number {
-  const dx = f[R.F_DX]!,
-    dy = f[R.F_DY]!;
-  const L = Math.sqrt(dx * dx + dy * dy);
-  if (L < 1e-12) return R.ROW_SKIPPED;
+export function prepareDistanceRow(js: JointState, J: JointStore, j: number, r: number, f: Float64Array): void {
+  const rows = js.rows,
+    ri = js.rowInts;
+  const o = r * ROW_FLOATS,
+    q = r * ROW_INTS;
   const mA = f[R.F_MA]!,
     iA = f[R.F_IA]!,
     mB = f[R.F_MB]!,
@@ -111,46 +107,132 @@ export function solveDistanceRow(rows: Float64Array, o: number, flags: number, u
   const rAx = f[R.F_RAX]!,
     rAy = f[R.F_RAY]!,
     rBx = f[R.F_RBX]!,
+    rBy = f[R.F_RBY]!,
+    dx = f[R.F_DX]!,
+    dy = f[R.F_DY]!;
+  const flags = ri[q + R.TF]! >> 8;
+  springRow(rows, o, J, j, f);
+  const L = Math.sqrt(dx * dx + dy * dy);
+  const ux = L > 1e-12 ? dx / L : 1,
+    uy = L > 1e-12 ? dy / L : 0;
+  const crA = rAx * uy - rAy * ux,
+    crB = rBx * uy - rBy * ux;
+  const k = mA + mB + iA * crA * crA + iB * crB * crB;
+  rows[o + R.KAX] = k > 0 ? 1 / k : 0;
+  const minL = J.minLength[j]!,
+    maxL = J.maxLength[j]!,
+    rest = J.length[j]!;
+  rows[o + R.LEN] = rest;
+  rows[o + R.MINL] = minL;
+  rows[o + R.MAXL] = maxL;
+  // Neither body turns and no spring: a point link (anchors are fixed offsets within the step).
+  if (iA === 0 && iB === 0 && !(flags & JointFlag.Spring) && (minL === maxL || (minL === 0 && maxL < Infinity))) {
+    const l = js.linkCount * LINK_FLOATS,
+      li = js.linkCount * LINK_INTS;
+    const lf = js.links,
+      imp = js.impulses;
+    lf[l + R.LK_DX] = dx;
+    lf[l + R.LK_DY] = dy;
+    lf[l + R.LK_MASS] = rows[o + R.KAX]!;
+    const rope = minL < maxL;
+    lf[l + R.LK_LEN] = rope ? maxL : rest;
+    lf[l + R.LK_ACC] = js.settings.warmStarting
+      ? rope
+        ? -imp[j * IMPULSES + (R.IUP - R.ILX)]!
+        : imp[j * IMPULSES + (R.ISPR - R.ILX)]!
+      : 0;
+    lf[l + R.LK_ROPE] = rope ? 1 : 0;
+    js.linkInts[li + R.LK_OA] = ri[q + R.IA]! * BS.BS2_STRIDE;
+    js.linkInts[li + R.LK_OB] = ri[q + R.IB]! * BS.BS2_STRIDE;
+    js.linkInts[li + R.LK_ROW] = r;
+    js.linkCount++;
+    ri[q + R.TF] = R.POINT_LINK;
+  }
+}
+
+/**
+ * A distance joint's warm start: its spring's (or rod's) and limits' impulses along the anchors'
+ * current line; nothing when the anchors meet (no direction).
+ */
+export function warmStartDistanceRow(p: JointPass2D, ia: number, ib: number, o: number): void {
+  const { sb, rot, rows } = p;
+  const axial = springLimitImpulse(rows, o);
+  if (axial === 0) return;
+  const oA = ia * BS.BS2_STRIDE,
+    oB = ib * BS.BS2_STRIDE;
+  const cA = rot[ia * 3]!,
+    sA = rot[ia * 3 + 1]!,
+    cB = rot[ib * 3]!,
+    sB = rot[ib * 3 + 1]!;
+  const rAx = cA * rows[o + R.RAX]! - sA * rows[o + R.RAY]!,
+    rAy = sA * rows[o + R.RAX]! + cA * rows[o + R.RAY]!;
+  const rBx = cB * rows[o + R.RBX]! - sB * rows[o + R.RBY]!,
+    rBy = sB * rows[o + R.RBX]! + cB * rows[o + R.RBY]!;
+  const dx = sb[oB + BS.BS2_DX]! - sb[oA + BS.BS2_DX]! + rows[o + R.DCX]! + rBx - rAx,
+    dy = sb[oB + BS.BS2_DY]! - sb[oA + BS.BS2_DY]! + rows[o + R.DCY]! + rBy - rAy;
+  const L = Math.sqrt(dx * dx + dy * dy);
+  if (L < 1e-12) return;
+  const px = (axial * dx) / L,
+    py = (axial * dy) / L;
+  applyImpulse(sb, oA, oB, px, py, rAx * py - rAy * px, rBx * py - rBy * px);
+}
+
+/**
+ * One pass of a distance joint's row (Box2D v3's b2SolveDistanceJoint) on its frame: the spring, then
+ * the lower and upper length limits (a rope link: only the upper), or the rigid rod, soft while the
+ * pass uses bias. @returns ROW_SKIPPED when the anchors coincide (no direction), ROW_PUSHED when the
+ * link holds an impulse, else ROW_MOVED (a slack rope leaves its bodies in free flight).
+ */
+export function solveDistanceRow(p: JointPass2D, ia: number, ib: number, o: number, flags: number): number {
+  const { sb, rows, f } = p;
+  const dx = f[R.F_DX]!,
+    dy = f[R.F_DY]!;
+  const L = Math.sqrt(dx * dx + dy * dy);
+  if (L < 1e-12) return R.ROW_SKIPPED;
+  const oA = ia * BS.BS2_STRIDE,
+    oB = ib * BS.BS2_STRIDE;
+  const rAx = f[R.F_RAX]!,
+    rAy = f[R.F_RAY]!,
+    rBx = f[R.F_RBX]!,
     rBy = f[R.F_RBY]!;
-  const vAx = f[R.F_VAX]!,
-    vAy = f[R.F_VAY]!,
-    wA = f[R.F_WA]!,
-    vBx = f[R.F_VBX]!,
-    vBy = f[R.F_VBY]!,
-    wB = f[R.F_WB]!;
-  const invH = f[R.F_INVH]!;
   const ux = dx / L,
     uy = dy / L;
   const crA = rAx * uy - rAy * ux,
     crB = rBx * uy - rBy * ux;
+  // The inverse effective mass along u, and the anchors' relative velocity along it.
+  const K =
+    sb[oA + BS.BS2_INV_MASS]! +
+    sb[oB + BS.BS2_INV_MASS]! +
+    sb[oA + BS.BS2_INV_INERTIA]! * crA * crA +
+    sb[oB + BS.BS2_INV_INERTIA]! * crB * crB;
+  const wA = sb[oA + BS.BS2_W]!,
+    wB = sb[oB + BS.BS2_W]!;
+  let vr =
+    (sb[oB + BS.BS2_VX]! - wB * rBy - sb[oA + BS.BS2_VX]! + wA * rAy) * ux +
+    (sb[oB + BS.BS2_VY]! + wB * rBx - sb[oA + BS.BS2_VY]! - wA * rAx) * uy;
   const k = rows[o + R.KAX]!;
   const minL = rows[o + R.MINL]!,
     maxL = rows[o + R.MAXL]!;
   let total = 0;
-  // Relative velocity of the anchors along u.
-  let vr = (vBx - wB * rBy - vAx + wA * rAy) * ux + (vBy + wB * rBx - vAy - wA * rAx) * uy;
   if (minL < maxL) {
     if (flags & JointFlag.Spring) {
-      const C = L - rows[o + R.LEN]!;
-      const impulse = springImpulse(vr, C, mA + mB + iA * crA * crA + iB * crB * crB, rows[o + R.ISPR]!, rows[o + R.SB]!, rows[o + R.SM]!);
+      const impulse = springImpulse(vr, L - rows[o + R.LEN]!, K, rows[o + R.ISPR]!, rows[o + R.SB]!, rows[o + R.SM]!);
       rows[o + R.ISPR] = rows[o + R.ISPR]! + impulse;
       total += impulse;
-      vr += impulse * (mA + mB + iA * crA * crA + iB * crB * crB);
+      vr += impulse * K;
     }
     if (minL > 0) {
-      const impulse = limitRow(rows, o, R.ILOW, L - minL, k, vr, invH, useBias);
+      const impulse = limitRow(p, o, R.ILOW, L - minL, k, vr);
       total += impulse;
-      vr += impulse * (mA + mB + iA * crA * crA + iB * crB * crB);
+      vr += impulse * K;
     }
-    if (maxL < Infinity) {
-      total -= limitRow(rows, o, R.IUP, maxL - L, k, -vr, invH, useBias);
-    }
+    if (maxL < Infinity) total -= limitRow(p, o, R.IUP, maxL - L, k, -vr);
   } else {
     const C = L - rows[o + R.LEN]!;
     let bias = 0,
       ms = 1,
       is = 0;
-    if (useBias) {
+    if (p.useBias) {
       bias = rows[o + R.JB]! * C;
       ms = rows[o + R.JM]!;
       is = rows[o + R.JI]!;
@@ -159,16 +241,28 @@ export function solveDistanceRow(rows: Float64Array, o: number, flags: number, u
     rows[o + R.ISPR] = rows[o + R.ISPR]! + impulse;
     total = impulse;
   }
-  const Px = total * ux,
-    Py = total * uy;
-  f[R.F_VAX] = vAx - mA * Px;
-  f[R.F_VAY] = vAy - mA * Py;
-  f[R.F_WA] = wA - iA * (rAx * Py - rAy * Px);
-  f[R.F_VBX] = vBx + mB * Px;
-  f[R.F_VBY] = vBy + mB * Py;
-  f[R.F_WB] = wB + iB * (rBx * Py - rBy * Px);
+  const px = total * ux,
+    py = total * uy;
+  applyImpulse(sb, oA, oB, px, py, rAx * py - rAy * px, rBx * py - rBy * px);
   // A taut (or sprung) link pushes its bodies; a slack rope leaves them in free flight.
   return rows[o + R.ISPR] !== 0 || rows[o + R.ILOW] !== 0 || rows[o + R.IUP] !== 0 ? R.ROW_PUSHED : R.ROW_MOVED;
+}
+
+/**
+ * A distance joint's reading after the step into out (rows-2d.ts JointTypeRows2D): its force along the
+ * anchors' line (N), its error outside its length or limits (m) and its strain (length - rest) / rest.
+ */
+export function distanceReading(p: JointPass2D, _ia: number, _ib: number, o: number, _flags: number, out: Float64Array): void {
+  const { rows, f } = p;
+  const dx = f[R.F_DX]!,
+    dy = f[R.F_DY]!;
+  const L = Math.sqrt(dx * dx + dy * dy);
+  out[0] = Math.abs(rows[o + R.ISPR]! + rows[o + R.ILOW]! - rows[o + R.IUP]!) * f[R.F_INVH]!;
+  const minL = rows[o + R.MINL]!,
+    maxL = rows[o + R.MAXL]!,
+    rest = rows[o + R.LEN]!;
+  out[2] = minL < maxL ? Math.max(0, minL - L, L - maxL) : Math.abs(L - rest);
+  out[3] = rest > 0 ? (L - rest) / rest : 0;
 }
 
 /**
@@ -183,23 +277,23 @@ export function warmStartPointLinks(world: PhysicsWorld): void {
   for (let l = 0, m = js.linkCount; l < m; l++) {
     const f = l * LINK_FLOATS,
       i = l * LINK_INTS;
-    const acc = lf[f + 4]!;
+    const acc = lf[f + R.LK_ACC]!;
     if (acc === 0) continue;
-    const oA = lint[i]!,
-      oB = lint[i + 1]!;
-    const dx = sb[oB + BS2_DX]! - sb[oA + BS2_DX]! + lf[f]!,
-      dy = sb[oB + BS2_DY]! - sb[oA + BS2_DY]! + lf[f + 1]!;
+    const oA = lint[i + R.LK_OA]!,
+      oB = lint[i + R.LK_OB]!;
+    const dx = sb[oB + BS.BS2_DX]! - sb[oA + BS.BS2_DX]! + lf[f + R.LK_DX]!,
+      dy = sb[oB + BS.BS2_DY]! - sb[oA + BS.BS2_DY]! + lf[f + R.LK_DY]!;
     const L = Math.sqrt(dx * dx + dy * dy);
     if (L < 1e-12) continue;
     const s = acc / L,
       Px = s * dx,
       Py = s * dy,
-      mA = sb[oA + BS2_INV_MASS]!,
-      mB = sb[oB + BS2_INV_MASS]!;
-    sb[oA + BS2_VX] = sb[oA + BS2_VX]! - mA * Px;
-    sb[oA + BS2_VY] = sb[oA + BS2_VY]! - mA * Py;
-    sb[oB + BS2_VX] = sb[oB + BS2_VX]! + mB * Px;
-    sb[oB + BS2_VY] = sb[oB + BS2_VY]! + mB * Py;
+      mA = sb[oA + BS.BS2_INV_MASS]!,
+      mB = sb[oB + BS.BS2_INV_MASS]!;
+    sb[oA + BS.BS2_VX] = sb[oA + BS.BS2_VX]! - mA * Px;
+    sb[oA + BS.BS2_VY] = sb[oA + BS.BS2_VY]! - mA * Py;
+    sb[oB + BS.BS2_VX] = sb[oB + BS.BS2_VX]! + mB * Px;
+    sb[oB + BS.BS2_VY] = sb[oB + BS.BS2_VY]! + mB * Py;
   }
 }
 
@@ -221,25 +315,25 @@ export function solvePointLinks(world: PhysicsWorld, invH: number, useBias: bool
   for (let l = 0; l < m; l++) {
     const f = l * LINK_FLOATS,
       i = l * LINK_INTS;
-    const oA = lint[i]!,
-      oB = lint[i + 1]!;
-    const dx = sb[oB + BS2_DX]! - sb[oA + BS2_DX]! + lf[f]!,
-      dy = sb[oB + BS2_DY]! - sb[oA + BS2_DY]! + lf[f + 1]!;
+    const oA = lint[i + R.LK_OA]!,
+      oB = lint[i + R.LK_OB]!;
+    const dx = sb[oB + BS.BS2_DX]! - sb[oA + BS.BS2_DX]! + lf[f + R.LK_DX]!,
+      dy = sb[oB + BS.BS2_DY]! - sb[oA + BS.BS2_DY]! + lf[f + R.LK_DY]!;
     const L = Math.sqrt(dx * dx + dy * dy);
     if (L < 1e-12) continue;
     const ux = dx / L,
       uy = dy / L;
-    const vAx = sb[oA + BS2_VX]!,
-      vAy = sb[oA + BS2_VY]!,
-      vBx = sb[oB + BS2_VX]!,
-      vBy = sb[oB + BS2_VY]!;
+    const vAx = sb[oA + BS.BS2_VX]!,
+      vAy = sb[oA + BS.BS2_VY]!,
+      vBx = sb[oB + BS.BS2_VX]!,
+      vBy = sb[oB + BS.BS2_VY]!;
     const vr = (vBx - vAx) * ux + (vBy - vAy) * uy;
-    const C = L - lf[f + 3]!;
-    const acc = lf[f + 4]!;
+    const C = L - lf[f + R.LK_LEN]!;
+    const acc = lf[f + R.LK_ACC]!;
     let impulse: number;
-    if (lf[f + 5] === 0) {
-      impulse = -jm * lf[f + 2]! * (vr + jb * C) - ji * acc;
-      lf[f + 4] = acc + impulse;
+    if (lf[f + R.LK_ROPE] === 0) {
+      impulse = -jm * lf[f + R.LK_MASS]! * (vr + jb * C) - ji * acc;
+      lf[f + R.LK_ACC] = acc + impulse;
     } else {
       // Rope: C = maxLength - L >= 0; the accumulated impulse (stored negated: pulling) <= 0.
       let bias = 0,
@@ -252,22 +346,22 @@ export function solvePointLinks(world: PhysicsWorld, invH: number, useBias: bool
         is = ji;
       }
       const old = -acc;
-      let next = old - ms * lf[f + 2]! * (-vr + bias) - is * old;
+      let next = old - ms * lf[f + R.LK_MASS]! * (-vr + bias) - is * old;
       if (next < 0) next = 0;
-      lf[f + 4] = -next;
+      lf[f + R.LK_ACC] = -next;
       impulse = old - next;
     }
     const Px = impulse * ux,
       Py = impulse * uy,
-      mA = sb[oA + BS2_INV_MASS]!,
-      mB = sb[oB + BS2_INV_MASS]!;
-    sb[oA + BS2_VX] = vAx - mA * Px;
-    sb[oA + BS2_VY] = vAy - mA * Py;
-    sb[oB + BS2_VX] = vBx + mB * Px;
-    sb[oB + BS2_VY] = vBy + mB * Py;
-    if (lf[f + 4] !== 0) {
-      sb[oA + BS2_PUSHED] = 1;
-      sb[oB + BS2_PUSHED] = 1;
+      mA = sb[oA + BS.BS2_INV_MASS]!,
+      mB = sb[oB + BS.BS2_INV_MASS]!;
+    sb[oA + BS.BS2_VX] = vAx - mA * Px;
+    sb[oA + BS.BS2_VY] = vAy - mA * Py;
+    sb[oB + BS.BS2_VX] = vBx + mB * Px;
+    sb[oB + BS.BS2_VY] = vBy + mB * Py;
+    if (lf[f + R.LK_ACC] !== 0) {
+      sb[oA + BS.BS2_PUSHED] = 1;
+      sb[oB + BS.BS2_PUSHED] = 1;
     }
   }
 }
@@ -279,8 +373,14 @@ export function finishPointLinks(js: JointState): void {
     lint = js.linkInts;
   for (let l = 0, m = js.linkCount; l < m; l++) {
     const f = l * LINK_FLOATS,
-      o = lint[l * LINK_INTS + 2]! * ROW_FLOATS;
-    if (lf[f + 5] === 0) rows[o + R.ISPR] = lf[f + 4]!;
-    else rows[o + R.IUP] = -lf[f + 4]!;
+      o = lint[l * LINK_INTS + R.LK_ROW]! * ROW_FLOATS;
+    if (lf[f + R.LK_ROPE] === 0) rows[o + R.ISPR] = lf[f + R.LK_ACC]!;
+    else rows[o + R.IUP] = -lf[f + R.LK_ACC]!;
   }
 }
+
+/** The 2D distance joint's row functions (rows-2d.ts JointTypeRows2D). */
+export const DISTANCE_ROWS_2D: JointTypeRows2D = {
+  prepare: prepareDistanceRow,
+  solve: solveDistanceRow,
+};

@@ -1,6 +1,7 @@
 import { currentHandle } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { centre, ends, type Joint3DBaseOptions, make, point } from './joint-3d.js';
+import { centre, type Joint3DBaseOptions, make, point } from './joint-3d.js';
+import { checkEnds } from './joint-base.js';
 import {
   errorRotation,
   type JointPass3D,
@@ -34,7 +35,7 @@ export interface FixedJoint3DOptions extends Joint3DBaseOptions {
  */
 export function addFixedJoint3D(world: PhysicsWorld, options: FixedJoint3DOptions): number {
   const where = 'addFixedJoint3D';
-  const e = ends(where, world, options, ['anchor']);
+  const e = checkEnds(where, world, options, 3, ['anchor']);
   const p = options.anchor === undefined ? centre(world, e.b) : point(where, 'anchor', options.anchor);
   const j = make(world, where, Joint3DType.Fixed, e, options, p, p, [0, 1, 0]);
   useJointType3D(Joint3DType.Fixed, FIXED_ROWS_3D);

@@ -1,85 +1,23 @@
 import { addComponent, hasComponent } from 'bitecs';
 import { wakeIsland } from '../islands/sleep.js';
-import { assertFinite, assertKnownKeys, assertNonNegative, assertOptionalBoolean, assertVector, describe } from '../validation/validate.js';
+import { assertFinite, assertKnownKeys, assertNonNegative, assertVector, describe } from '../validation/validate.js';
 import { createSlot, currentHandle, resolveEntity } from '../world/handles.js';
 import { addNoCollide } from '../world/joint-no-collide.js';
 import { ensureJointArrays } from '../world/joint-state-2d.js';
 import { JOINT_TYPE_NAMES, JointFlag, type JointTypeCode } from '../world/joint-store-2d.js';
 import { IMPULSES } from '../world/joint-strides-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
+import { BASE_KEYS, checkEnds, type Ends, type JointBaseOptions } from './joint-base.js';
 
 /**
- * Joints between 2D bodies (Box2D v3's set, solved in the contact solver's soft substeps; see
- * joints/solver-2d.ts). Every joint is an entity with a `Joint` component holding its two bodies: A (a
- * body, or the fixed world when omitted or null) and B (a body). Anchors are given in world
- * coordinates where the bodies are when the joint is made; the joint keeps them in the bodies' frames.
- * Removing a body removes its joints. A joint may break: past `breakForce` (N) or `breakTorque` (N m)
- * it is removed and reported in `world.joints.breaks` after the step.
+ * The add-time code the 2D joint types share (their rows are in rows-2d.ts): every joint is an entity
+ * with a `Joint` component holding its two bodies, A (a body, or the fixed world when omitted or null)
+ * and B (a body). Anchors are given in world coordinates where the bodies are when the joint is made;
+ * the joint keeps them in the bodies' frames. Removing a body removes its joints. A joint may break:
+ * past `breakForce` (N) or `breakTorque` (N m) it is removed and reported in `world.joints.breaks`
+ * after the step. Here: the anchors' and axis' checks and storage, the limits, motor and spring, the
+ * joint along an axis (prismatic, wheel), and finding a joint by its handle.
  */
-
-/**
- * Options every joint shares.
- * @category Joints and ropes
- */
-export interface JointBaseOptions {
-  /** Body A, or omitted / null for the fixed world. */
-  a?: number | null;
-  /** Body B. */
-  b: number;
-  /** Force above which the joint breaks, N, > 0. Default Infinity (never). */
-  breakForce?: number;
-  /** Torque above which the joint breaks, N m, > 0. Default Infinity (never). */
-  breakTorque?: number;
-  /**
-   * Whether bodies A and B still collide with each other (Box2D's collideConnected). Default false: the
-   * contacts between two jointed bodies are skipped (both ball and shape colliders), so a hinge's parts
-   * may overlap at the hinge; true keeps them colliding. Has no effect when A is the world.
-   */
-  collideConnected?: boolean;
-}
-
-/** The option keys every 2D joint takes (JointBaseOptions), for each add*Joint's check of unknown keys. */
-export const BASE_KEYS = ['a', 'b', 'breakForce', 'breakTorque', 'collideConnected'] as const;
-
-/** Where a joint's bodies are: slots and poses read for anchors. */
-interface Ends {
-  a: number;
-  b: number;
-}
-
-/** The slot of body `id` (param `param` of `where`): an entity with position, mass and angle (made by addBody). @throws RangeError otherwise. */
-function requireBody(where: string, param: string, world: PhysicsWorld, id: unknown): number {
-  const slot = resolveEntity(world, id, where, param);
-  const c = world.components;
-  if (!hasComponent(world, slot, c.Position) || !hasComponent(world, slot, c.Mass) || !hasComponent(world, slot, c.Angle)) {
-    throw new RangeError(`${where}: ${param} must be a body with position, mass and angle (made by addBody), got entity ${describe(id)}`);
-  }
-  return slot;
-}
-
-/** Checks a joint's `a` and `b` (a may be omitted or null: the world) and returns their slots. @throws TypeError | RangeError naming `where`. */
-export function checkEnds(where: string, world: PhysicsWorld, options: JointBaseOptions): Ends {
-  if (world.dimensions !== 2) throw new RangeError(`${where}: joints need a 2D world, this world has ${world.dimensions} dimensions`);
-  if (options === undefined || options === null || typeof options !== 'object') {
-    throw new TypeError(`${where}: options must be an object with body b, got ${describe(options)}`);
-  }
-  const a = options.a === undefined || options.a === null ? 0 : requireBody(where, 'a', world, options.a);
-  const b = requireBody(where, 'b', world, options.b);
-  if (a === b) throw new RangeError(`${where}: a and b must be different bodies, got ${describe(options.a)} twice`);
-  if (options.breakForce !== undefined) assertBreakLimit(where, 'breakForce', options.breakForce);
-  if (options.breakTorque !== undefined) assertBreakLimit(where, 'breakTorque', options.breakTorque);
-  assertOptionalBoolean(where, 'collideConnected', options.collideConnected);
-  return { a, b };
-}
-
-/**
- * A break limit: a number > 0, Infinity (the default: never breaks) included. @throws TypeError | RangeError
- * @category Joints and ropes
- */
-export function assertBreakLimit(where: string, param: string, value: unknown): void {
-  if (typeof value !== 'number') throw new TypeError(`${where}: ${param} must be a number, got ${describe(value)}`);
-  if (!(value > 0)) throw new RangeError(`${where}: ${param} must be > 0 (Infinity: never breaks), got ${describe(value)}`);
-}
 
 /** `value` as a 2D point, m, or `fallback` when undefined. @throws TypeError | RangeError on a malformed vector. */
 export function optionalPoint(where: string, param: string, value: unknown, fallback: [number, number]): [number, number] {
@@ -116,6 +54,12 @@ export function checkLimits(where: string, lower: unknown, upper: unknown, lower
   }
   return true;
 }
+
+/** The Joint fields a new joint starts at 0 (its axis, longest length and breaking thresholds are set apart). */
+const ZEROED = [
+  ...['axisY', 'length', 'minLength', 'hertz', 'dampingRatio', 'angularHertz', 'angularDampingRatio', 'flags', 'lower', 'upper'],
+  ...['motorSpeed', 'maxMotorForce', 'maxForce', 'force', 'torque'],
+] as const;
 
 /**
  * Makes the joint entity with every field at its default, and the anchors: `anchorA`, `anchorB` are
@@ -154,26 +98,12 @@ export function makeJoint(
   J.localBx[j] = lb[0];
   J.localBy[j] = lb[1];
   J.referenceAngle[j] = (b === 0 ? 0 : c.Angle.value[b]!) - (a === 0 ? 0 : c.Angle.value[a]!);
+  for (const k of ZEROED) J[k][j] = 0;
   J.axisX[j] = 1;
-  J.axisY[j] = 0;
-  J.length[j] = 0;
-  J.minLength[j] = 0;
   J.maxLength[j] = Infinity;
-  J.hertz[j] = 0;
-  J.dampingRatio[j] = 0;
-  J.angularHertz[j] = 0;
-  J.angularDampingRatio[j] = 0;
-  J.flags[j] = 0;
-  J.lower[j] = 0;
-  J.upper[j] = 0;
-  J.motorSpeed[j] = 0;
-  J.maxMotorForce[j] = 0;
-  J.maxForce[j] = 0;
   J.breakForce[j] = options.breakForce ?? Infinity;
   J.breakTorque[j] = options.breakTorque ?? Infinity;
   J.breakStretch[j] = Infinity;
-  J.force[j] = 0;
-  J.torque[j] = 0;
   world.joints.impulses.fill(0, j * IMPULSES, (j + 1) * IMPULSES);
   const att = world.joints.attached;
   if (a !== 0) {
@@ -209,35 +139,31 @@ interface Drive {
  */
 export function checkDrive(
   where: string,
-  motorSpeed: number | undefined,
-  maxMotor: number | undefined,
+  motorSpeed: unknown,
+  maxMotor: unknown,
   maxName: string,
-  hertz: number | undefined,
-  zeta: number | undefined,
+  hertz: unknown,
+  zeta: unknown,
   defaultHertz = 0,
   defaultZeta = 0,
 ): Drive {
-  const d: Drive = { speed: motorSpeed ?? 0, maxMotor: maxMotor ?? 0, hertz: hertz ?? defaultHertz, zeta: zeta ?? defaultZeta };
-  assertFinite(where, 'motorSpeed', d.speed);
-  assertNonNegative(where, maxName, d.maxMotor);
-  assertNonNegative(where, 'hertz', d.hertz);
-  assertNonNegative(where, 'dampingRatio', d.zeta);
-  return d;
+  const speed = motorSpeed ?? 0,
+    max = maxMotor ?? 0,
+    hz = hertz ?? defaultHertz,
+    z = zeta ?? defaultZeta;
+  assertFinite(where, 'motorSpeed', speed);
+  assertNonNegative(where, maxName, max);
+  assertNonNegative(where, 'hertz', hz);
+  assertNonNegative(where, 'dampingRatio', z);
+  return { speed, maxMotor: max, hertz: hz, zeta: z };
 }
 
 /** Writes joint j's limits (when `limit`), motor and spring, and sets its Limit, Motor and Spring flags from them. */
-export function storeDrive(
-  world: PhysicsWorld,
-  j: number,
-  limit: boolean,
-  lower: number | undefined,
-  upper: number | undefined,
-  d: Drive,
-): void {
+export function storeDrive(world: PhysicsWorld, j: number, limit: boolean, lower: unknown, upper: unknown, d: Drive): void {
   const J = world.components.Joint;
   if (limit) {
-    J.lower[j] = lower!;
-    J.upper[j] = upper!;
+    J.lower[j] = lower as number;
+    J.upper[j] = upper as number;
   }
   J.motorSpeed[j] = d.speed;
   J.maxMotorForce[j] = d.maxMotor;
@@ -256,29 +182,19 @@ export function setAxis(world: PhysicsWorld, j: number, a: number, axis: [number
   J.axisY[j] = -si * axis[0] + co * axis[1];
 }
 
-/** What addPrismaticJoint and addWheelJoint differ in: their name, joint type, known option keys, the name of the motor's largest force or torque, and the defaults of the axis and the spring. */
+/** What addPrismaticJoint and addWheelJoint differ in: their name and joint type, the name of the motor's largest force or torque, and the defaults of the axis and the spring. */
 export interface AxisJointKind {
   where: string;
   type: JointTypeCode;
-  keys: readonly string[];
   maxName: 'maxMotorForce' | 'maxMotorTorque';
   axis: [number, number];
   hertz: number;
   dampingRatio: number;
 }
 
-/** The options of a joint along an axis (PrismaticJointOptions, WheelJointOptions; documented there). */
-export interface AxisJointOptions extends JointBaseOptions {
-  anchor?: ArrayLike<number>;
-  axis?: ArrayLike<number>;
-  lower?: number;
-  upper?: number;
-  motorSpeed?: number;
-  maxMotorForce?: number;
-  maxMotorTorque?: number;
-  hertz?: number;
-  dampingRatio?: number;
-}
+/** The options of a joint along an axis as addAxisJoint reads them (PrismaticJointOptions, WheelJointOptions; documented there), each checked there. */
+type AxisJointOptions = JointBaseOptions &
+  Partial<Record<'anchor' | 'axis' | 'lower' | 'upper' | 'motorSpeed' | AxisJointKind['maxName'] | 'hertz' | 'dampingRatio', unknown>>;
 
 /**
  * Adds a joint along an axis (addPrismaticJoint, addWheelJoint): B's anchor stays on the line through A's
@@ -289,8 +205,9 @@ export interface AxisJointOptions extends JointBaseOptions {
  */
 export function addAxisJoint(world: PhysicsWorld, kind: AxisJointKind, options: AxisJointOptions): number {
   const where = kind.where;
-  const ends = checkEnds(where, world, options);
-  assertKnownKeys(where, options, kind.keys, ['a']);
+  const ends = checkEnds(where, world, options, 2);
+  const keys = ['anchor', 'axis', 'lower', 'upper', 'motorSpeed', kind.maxName, 'hertz', 'dampingRatio'];
+  assertKnownKeys(where, options, [...BASE_KEYS, ...keys], ['a']);
   const p = optionalPoint(where, 'anchor', options.anchor, centre(world, ends.b));
   const axis = unitAxis(where, options.axis, kind.axis);
   const limit = checkLimits(where, options.lower, options.upper, 'lower', 'upper', Infinity);

@@ -1,14 +1,15 @@
-import { hasComponent } from 'bitecs';
 import { install3D } from '../collision/install-3d.js';
 import { wakeIsland } from '../islands/sleep.js';
-import { assertFinite, assertKnownKeys, assertNonNegative, assertOptionalBoolean, assertVector, describe } from '../validation/validate.js';
-import { createSlot, resolveEntity } from '../world/handles.js';
+import { rotateVectorInverse } from '../math/quaternion.js';
+import { assertFinite, assertNonNegative, assertVector, describe } from '../validation/validate.js';
+import { createSlot, currentHandle, resolveEntity } from '../world/handles.js';
 import { addNoCollide } from '../world/joint-no-collide.js';
 import { ensureJointArrays } from '../world/joint-state-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { assertBreakLimit } from './joint-2d.js';
-import { removeJoints3DOf } from './remove-3d.js';
-import { Joint3DFlag, type Joint3DStore, joints3DOf } from './store-3d.js';
+import { checkEnds, type JointBaseOptions } from './joint-base.js';
+import type { JointRows3D } from './rows-3d.js';
+import { useJointType3D } from './solver-3d.js';
+import { Joint3DFlag, type Joint3DStore, joints3DOf, removeJoints3DOf } from './store-3d.js';
 
 /**
  * Joints between 3D bodies, solved in the contact solver's soft substeps (joints/solver-3d.ts): ball
@@ -24,53 +25,10 @@ import { Joint3DFlag, type Joint3DStore, joints3DOf } from './store-3d.js';
  */
 
 /**
- * Options every 3D joint shares.
+ * Options every 3D joint shares: those of every joint (JointBaseOptions).
  * @category Joints and ropes
  */
-export interface Joint3DBaseOptions {
-  /** Body A, or omitted / null for the fixed world. */
-  a?: number | null;
-  /** Body B. */
-  b: number;
-  /** Force above which the joint breaks, N, > 0. Default Infinity (never). */
-  breakForce?: number;
-  /** Torque above which the joint breaks, N m, > 0. Default Infinity (never). */
-  breakTorque?: number;
-  /**
-   * Whether bodies A and B still collide with each other (Box2D's collideConnected). Default false: the
-   * contacts between the two jointed bodies are skipped (their shapes may overlap at the joint, as a
-   * welded L's or a ragdoll's limbs do, without the contact and the joint fighting); true keeps them
-   * colliding. No effect when A is the world.
-   */
-  collideConnected?: boolean;
-}
-
-const BASE = ['a', 'b', 'breakForce', 'breakTorque', 'collideConnected'] as const;
-
-function body(where: string, param: string, world: PhysicsWorld, id: unknown): number {
-  const slot = resolveEntity(world, id, where, param);
-  const c = world.components;
-  if (!hasComponent(world, slot, c.Position) || !hasComponent(world, slot, c.Mass) || !hasComponent(world, slot, c.Orientation)) {
-    throw new RangeError(
-      `${where}: ${param} must be a 3D body with position, mass and orientation (addBody, addShape3D), got entity ${describe(id)}`,
-    );
-  }
-  return slot;
-}
-
-/** Checks a 3D joint's keys (`keys` besides the shared ones) and its `a` and `b` (a may be omitted or null: the world); returns their slots. @throws TypeError | RangeError naming `where`. */
-export function ends(where: string, world: PhysicsWorld, o: Joint3DBaseOptions, keys: readonly string[]): { a: number; b: number } {
-  if (world.dimensions !== 3) throw new RangeError(`${where}: 3D joints need a 3D world, this world has ${world.dimensions} dimensions`);
-  if (o === null || typeof o !== 'object') throw new TypeError(`${where}: options must be an object with body b, got ${describe(o)}`);
-  assertKnownKeys(where, o, [...BASE, ...keys], ['a']);
-  const a = o.a === undefined || o.a === null ? 0 : body(where, 'a', world, o.a);
-  const b = body(where, 'b', world, o.b);
-  if (a === b) throw new RangeError(`${where}: a and b must be different bodies, got ${describe(o.a)} twice`);
-  if (o.breakForce !== undefined) assertBreakLimit(where, 'breakForce', o.breakForce);
-  if (o.breakTorque !== undefined) assertBreakLimit(where, 'breakTorque', o.breakTorque);
-  assertOptionalBoolean(where, 'collideConnected', o.collideConnected);
-  return { a, b };
-}
+export type Joint3DBaseOptions = JointBaseOptions;
 
 /** `v` as a 3D point, m. @throws TypeError | RangeError naming `where` and `param` on a malformed vector. */
 export function point(where: string, param: string, v: unknown): [number, number, number] {
@@ -87,6 +45,7 @@ export function unit(where: string, param: string, v: unknown): [number, number,
   return [p[0] / l, p[1] / l, p[2] / l];
 }
 
+/** The orientation of body slot `e` (the world's identity for 0). */
 function quat(world: PhysicsWorld, e: number): [number, number, number, number] {
   if (e === 0) return [0, 0, 0, 1];
   const Q = world.components.Orientation;
@@ -95,14 +54,9 @@ function quat(world: PhysicsWorld, e: number): [number, number, number, number] 
 
 /** v rotated by the inverse of unit quaternion q (world to body frame). */
 function toBody(q: [number, number, number, number], v: [number, number, number]): [number, number, number] {
-  const x = -q[0],
-    y = -q[1],
-    z = -q[2],
-    w = q[3];
-  const tx = 2 * (y * v[2] - z * v[1]),
-    ty = 2 * (z * v[0] - x * v[2]),
-    tz = 2 * (x * v[1] - y * v[0]);
-  return [v[0] + w * tx + (y * tz - z * ty), v[1] + w * ty + (z * tx - x * tz), v[2] + w * tz + (x * ty - y * tx)];
+  const out = new Float64Array(3);
+  rotateVectorInverse(q[0], q[1], q[2], q[3], v[0], v[1], v[2], out);
+  return [out[0]!, out[1]!, out[2]!];
 }
 
 /** The position of body slot `e`, m (its centre of mass). */
@@ -157,23 +111,10 @@ export function make(
   s.ry[j] = w1 * y2 - x1 * z2 + y1 * w2 + z1 * x2;
   s.rz[j] = w1 * z2 + x1 * y2 - y1 * x2 + z1 * w2;
   s.rw[j] = w1 * w2 - x1 * x2 - y1 * y2 - z1 * z2;
-  s.lower[j] = 0;
-  s.upper[j] = 0;
-  s.motorSpeed[j] = 0;
-  s.maxMotorTorque[j] = 0;
-  s.length[j] = 0;
-  s.hertz[j] = 0;
-  s.dampingRatio[j] = 0;
+  for (const k of ['lower', 'upper', 'motorSpeed', 'maxMotorTorque', 'length', 'hertz', 'dampingRatio'] as const) s[k][j] = 0;
+  for (const k of ['lx', 'ly', 'lz', 'wx', 'wy', 'wz', 'limit', 'motor'] as const) s[k][j] = 0;
   s.breakForce[j] = o.breakForce ?? Infinity;
   s.breakTorque[j] = o.breakTorque ?? Infinity;
-  s.lx[j] = 0;
-  s.ly[j] = 0;
-  s.lz[j] = 0;
-  s.wx[j] = 0;
-  s.wy[j] = 0;
-  s.wz[j] = 0;
-  s.limit[j] = 0;
-  s.motor[j] = 0;
   s.list.push(j);
   ensureJointArrays(world.joints, world.capacity);
   world.joints.noCollideJoint[j] = 0;
@@ -197,12 +138,12 @@ interface LimitAndMotor {
  * largest torque or force `maxName` >= 0) of addHingeJoint3D and addSliderJoint3D before anything is made.
  * @throws RangeError `<where>: ...` naming the parameter and value.
  */
-export function limitAndMotor(
+function limitAndMotor(
   where: string,
-  lower: number | undefined,
-  upper: number | undefined,
-  motorSpeed: number | undefined,
-  maxMotor: number | undefined,
+  lower: unknown,
+  upper: unknown,
+  motorSpeed: unknown,
+  maxMotor: unknown,
   maxName: string,
 ): LimitAndMotor {
   const out: LimitAndMotor = {};
@@ -217,17 +158,18 @@ export function limitAndMotor(
     out.upper = upper;
   }
   if (motorSpeed !== undefined || maxMotor !== undefined) {
-    assertFinite(where, 'motorSpeed', motorSpeed ?? 0);
+    const speed = motorSpeed ?? 0;
+    assertFinite(where, 'motorSpeed', speed);
     if (maxMotor === undefined) throw new RangeError(`${where}: ${maxName} must be given with motorSpeed, got undefined`);
     assertNonNegative(where, maxName, maxMotor);
-    out.motorSpeed = motorSpeed ?? 0;
+    out.motorSpeed = speed;
     out.maxMotor = maxMotor;
   }
   return out;
 }
 
 /** Writes checked limits and motor into joint j's store row (the motor's cap goes in maxMotorTorque, N m or N). */
-export function storeLimitAndMotor(s: Joint3DStore, j: number, lm: LimitAndMotor): void {
+function storeLimitAndMotor(s: Joint3DStore, j: number, lm: LimitAndMotor): void {
   if (lm.lower !== undefined) {
     s.flags[j] = s.flags[j]! | Joint3DFlag.Limit;
     s.lower[j] = lm.lower;
@@ -238,6 +180,36 @@ export function storeLimitAndMotor(s: Joint3DStore, j: number, lm: LimitAndMotor
     s.motorSpeed[j] = lm.motorSpeed!;
     s.maxMotorTorque[j] = lm.maxMotor;
   }
+}
+
+/** What addHingeJoint3D and addSliderJoint3D differ in: their name, joint type and rows, and the name of the motor's largest torque or force. */
+export interface AxisJoint3DKind {
+  where: string;
+  type: number;
+  rows: JointRows3D;
+  maxName: 'maxMotorTorque' | 'maxMotorForce';
+}
+
+/** The options of a 3D joint along or about an axis as addAxisJoint3D reads them (HingeJoint3DOptions, SliderJoint3DOptions; documented there), each checked there. */
+type AxisJoint3DOptions = JointBaseOptions &
+  Partial<Record<'anchor' | 'axis' | 'lower' | 'upper' | 'motorSpeed' | AxisJoint3DKind['maxName'], unknown>>;
+
+/**
+ * Adds a 3D joint along or about an axis (addHingeJoint3D, addSliderJoint3D): checks the bodies and
+ * keys, the anchor (default B's centre), the axis, the limits and the motor of at most the option
+ * `kind.maxName`, then makes the joint and hands the solver the type's rows.
+ * @returns the joint's handle. @throws TypeError | RangeError naming `kind.where` on bad bodies, options or values.
+ */
+export function addAxisJoint3D(world: PhysicsWorld, kind: AxisJoint3DKind, options: AxisJoint3DOptions): number {
+  const where = kind.where;
+  const e = checkEnds(where, world, options, 3, ['anchor', 'axis', 'lower', 'upper', 'motorSpeed', kind.maxName]);
+  const p = options.anchor === undefined ? centre(world, e.b) : point(where, 'anchor', options.anchor);
+  const axis = unit(where, 'axis', options.axis);
+  const lm = limitAndMotor(where, options.lower, options.upper, options.motorSpeed, options[kind.maxName], kind.maxName);
+  const j = make(world, where, kind.type, e, options, p, p, axis);
+  useJointType3D(kind.type, kind.rows);
+  storeLimitAndMotor(joints3DOf(world, true), j, lm);
+  return currentHandle(world, j);
 }
 
 /** Names of the 3D joint types, for errors. */

@@ -1,14 +1,21 @@
 import { hasComponent } from 'bitecs';
+import * as BS from '../solver/body-state-layout.js';
 import { assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe } from '../validation/validate.js';
-import { JointFlag, JointType } from '../world/joint-store-2d.js';
+import type { JointState } from '../world/joint-state-2d.js';
+import { JointFlag, type JointStore, JointType } from '../world/joint-store-2d.js';
+import { ROW_FLOATS } from '../world/joint-strides-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { centre, checkEnds, handle, makeJoint, optionalPoint, requireJoint, wakeJoint } from './joint-2d.js';
+import { centre, handle, makeJoint, optionalPoint, requireJoint, wakeJoint } from './joint-2d.js';
+import { checkEnds } from './joint-base.js';
 import * as R from './layout-2d.js';
+import { type JointPass2D, type JointTypeRows2D, pointForce } from './rows-2d.js';
+import { soft } from './softness.js';
 
 /**
  * The 2D mouse joint (a soft, force-capped spring pulling a body's point toward a target, for dragging):
- * its options, addMouseJoint, setMouseTarget and its row solve. Its rows are prepared with the other 2D
- * joints' (joints/prepare-2d.ts) and solved in their loop (joints/solve-2d.ts).
+ * its options, addMouseJoint, setMouseTarget, and its row's preparation, solve and reading (its warm
+ * start is rows-2d.ts warmStartPoint).
+ * joints/solver-2d.ts runs them.
  */
 
 /**
@@ -43,7 +50,12 @@ export function addMouseJoint(world: PhysicsWorld, options: MouseJointOptions): 
   const where = 'addMouseJoint';
   if (options === null || typeof options !== 'object') throw new TypeError(`${where}: options must be an object, got ${describe(options)}`);
   assertKnownKeys(where, options, ['b', 'anchor', 'target', 'hertz', 'dampingRatio', 'maxForce', 'breakForce']);
-  const ends = checkEnds(where, world, { b: options.b, ...(options.breakForce !== undefined ? { breakForce: options.breakForce } : {}) });
+  const ends = checkEnds(
+    where,
+    world,
+    { b: options.b, ...(options.breakForce !== undefined ? { breakForce: options.breakForce } : {}) },
+    2,
+  );
   const C = world.components;
   if (hasComponent(world, ends.b, C.Static) || hasComponent(world, ends.b, C.Kinematic) || !(C.Mass.inv[ends.b]! > 0)) {
     throw new RangeError(`${where}: b must be a dynamic body (a static or kinematic body cannot be dragged), got ${describe(options.b)}`);
@@ -80,18 +92,34 @@ export function setMouseTarget(world: PhysicsWorld, joint: number, target: Array
 }
 
 /**
- * One pass of a mouse joint's rows (Box2D v3's b2SolveMouseJoint) on the frame `f` of layout-2d.ts:
- * B's spin damped softly, then its anchor pulled toward the target by a soft point row whose
- * accumulated impulse is capped at the largest a substep (maxForce). @returns ROW_PUSHED.
+ * Prepares mouse joint `j`'s row r (B's masses at the start of the step in the frame `f`): B's
+ * rotational mass, the largest impulse a substep of `hs` s, and the pull's softness.
  */
-export function solveMouseRow(rows: Float64Array, o: number, _flags: number, _useBias: boolean, f: Float64Array): number {
-  const mB = f[R.F_MB]!,
-    iB = f[R.F_IB]!;
+export function prepareMouseRow(js: JointState, J: JointStore, j: number, r: number, f: Float64Array): void {
+  const hs = f[R.F_HS]!;
+  const rows = js.rows,
+    o = r * ROW_FLOATS;
+  const iB = f[R.F_IB]!;
+  rows[o + R.KAX] = iB > 0 ? 1 / iB : 0;
+  rows[o + R.FMAX] = J.maxForce[j]! * hs;
+  soft(rows, o + R.AB, J.hertz[j]!, J.dampingRatio[j]!, hs);
+}
+
+/**
+ * One pass of a mouse joint's rows (Box2D v3's b2SolveMouseJoint) on its frame: B's spin damped
+ * softly, then its anchor pulled toward the target by a soft point row whose accumulated impulse is
+ * capped at the largest a substep (maxForce). @returns ROW_PUSHED.
+ */
+export function solveMouseRow(p: JointPass2D, _ia: number, ib: number, o: number, _flags: number): number {
+  const { sb, rows, f } = p;
+  const oB = ib * BS.BS2_STRIDE;
+  const mB = sb[oB + BS.BS2_INV_MASS]!,
+    iB = sb[oB + BS.BS2_INV_INERTIA]!;
   const rBx = f[R.F_RBX]!,
     rBy = f[R.F_RBY]!;
-  let vBx = f[R.F_VBX]!,
-    vBy = f[R.F_VBY]!,
-    wB = f[R.F_WB]!;
+  let vBx = sb[oB + BS.BS2_VX]!,
+    vBy = sb[oB + BS.BS2_VY]!,
+    wB = sb[oB + BS.BS2_W]!;
   // Damp B's spin softly, then pull its anchor toward the target with at most maxForce.
   const kax = rows[o + R.KAX]!;
   {
@@ -132,8 +160,20 @@ export function solveMouseRow(rows: Float64Array, o: number, _flags: number, _us
   vBx += mB * ix;
   vBy += mB * iy;
   wB += iB * (rBx * iy - rBy * ix);
-  f[R.F_VBX] = vBx;
-  f[R.F_VBY] = vBy;
-  f[R.F_WB] = wB;
+  sb[oB + BS.BS2_VX] = vBx;
+  sb[oB + BS.BS2_VY] = vBy;
+  sb[oB + BS.BS2_W] = wB;
   return R.ROW_PUSHED;
 }
+
+/** A mouse joint's reading after the step into out: its pull's force (N) and its spin damping's torque (N m). */
+export function mouseReading(p: JointPass2D, _ia: number, _ib: number, o: number, _flags: number, out: Float64Array): void {
+  out[0] = pointForce(p, o);
+  out[1] = Math.abs(p.rows[o + R.IANG]!) * p.f[R.F_INVH]!;
+}
+
+/** The 2D mouse joint's row functions (rows-2d.ts JointTypeRows2D). */
+export const MOUSE_ROWS_2D: JointTypeRows2D = {
+  prepare: prepareMouseRow,
+  solve: solveMouseRow,
+};

@@ -1,30 +1,32 @@
 import * as BS from '../solver/body-state-layout.js';
 import { assertKnownKeys } from '../validation/validate.js';
 import type { JointState } from '../world/joint-state-2d.js';
-import { JointFlag, JointType } from '../world/joint-store-2d.js';
-import { PIN_FLOATS, PIN_INTS, ROW_FLOATS } from '../world/joint-strides-2d.js';
+import { JointFlag, type JointStore, JointType } from '../world/joint-store-2d.js';
+import { PIN_FLOATS, PIN_INTS, ROW_FLOATS, ROW_INTS } from '../world/joint-strides-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
-import {
-  BASE_KEYS,
-  centre,
-  checkDrive,
-  checkEnds,
-  checkLimits,
-  handle,
-  type JointBaseOptions,
-  makeJoint,
-  optionalPoint,
-  storeDrive,
-} from './joint-2d.js';
+import { centre, checkDrive, checkLimits, handle, makeJoint, optionalPoint, storeDrive } from './joint-2d.js';
+import { BASE_KEYS, checkEnds, type JointBaseOptions } from './joint-base.js';
 import * as R from './layout-2d.js';
-import { limitRow, solvePointBlock, unwind } from './rows-2d.js';
+import {
+  angularMass,
+  applyImpulse,
+  type JointPass2D,
+  type JointTypeRows2D,
+  limitRow,
+  motorImpulse,
+  packPin,
+  pointForce,
+  solvePointBlocks,
+  solvePointRow,
+  unwind,
+} from './rows-2d.js';
 
 /**
  * The 2D revolute joint (a hinge, with an optional angle limit, motor and spring): its options,
- * addRevoluteJoint, its row solve, and the pins' passes (a revolute joint with no spring, motor or
- * limit, packed by joints/prepare-2d.ts: warm start, solve, impulses back into the rows). Its general
- * rows are prepared and finished with the other 2D joints' (joints/prepare-2d.ts, finish-2d.ts) and
- * solved in their loop (joints/solve-2d.ts).
+ * addRevoluteJoint, its row's preparation, solve and reading (its warm start is rows-2d.ts
+ * warmStartPoint), and the pins' passes (a
+ * revolute joint with no spring, motor or limit, packed by its preparation: warm start, solve, impulses
+ * back into the rows). joints/solver-2d.ts runs them.
  */
 
 /**
@@ -59,7 +61,7 @@ export interface RevoluteJointOptions extends JointBaseOptions {
  */
 export function addRevoluteJoint(world: PhysicsWorld, options: RevoluteJointOptions): number {
   const where = 'addRevoluteJoint';
-  const ends = checkEnds(where, world, options);
+  const ends = checkEnds(where, world, options, 2);
   assertKnownKeys(
     where,
     options,
@@ -75,20 +77,37 @@ export function addRevoluteJoint(world: PhysicsWorld, options: RevoluteJointOpti
 }
 
 /**
- * One pass of a revolute joint's rows (Box2D v3's b2SolveRevoluteJoint) on the frame `f` of
- * layout-2d.ts: unless neither body can turn, the angular spring, the motor (its impulse capped at
- * the largest a substep) and the angle limits; then the anchors' point-to-point block, soft while
- * `useBias`. @returns ROW_PUSHED.
+ * Prepares revolute joint `j`'s row r (its masses at the start of the step in the frame `f`): the
+ * effective mass of the relative rotation; a joint without spring, motor or limit becomes a pin (its
+ * row's warm-start impulses already loaded).
  */
-export function solveRevoluteRow(rows: Float64Array, o: number, flags: number, useBias: boolean, f: Float64Array): number {
-  const iA = f[R.F_IA]!,
-    iB = f[R.F_IB]!;
+export function prepareRevoluteRow(js: JointState, _J: JointStore, _j: number, r: number, f: Float64Array): void {
+  const rows = js.rows,
+    ri = js.rowInts;
+  const o = r * ROW_FLOATS,
+    q = r * ROW_INTS;
+  rows[o + R.KAX] = angularMass(f[R.F_IA]!, f[R.F_IB]!);
+  if (((ri[q + R.TF]! >> 8) & (JointFlag.Spring | JointFlag.Motor | JointFlag.Limit)) !== 0) return;
+  ri[q + R.TF] = R.PIN;
+  packPin(rows, o, js.pins, js.pinInts, js.pinCount++, ri[q + R.IA]!, ri[q + R.IB]!, r);
+}
+
+/**
+ * One pass of a revolute joint's rows (Box2D v3's b2SolveRevoluteJoint) on its frame: unless neither
+ * body can turn, the angular spring, the motor (its impulse capped at the largest a substep) and the
+ * angle limits; then the anchors' point-to-point block, soft while the pass uses bias. @returns ROW_PUSHED.
+ */
+export function solveRevoluteRow(p: JointPass2D, ia: number, ib: number, o: number, flags: number): number {
+  const { sb, rows } = p;
+  const oA = ia * BS.BS2_STRIDE,
+    oB = ib * BS.BS2_STRIDE;
+  const iA = sb[oA + BS.BS2_INV_INERTIA]!,
+    iB = sb[oB + BS.BS2_INV_INERTIA]!;
   if (iA + iB !== 0) {
-    const invH = f[R.F_INVH]!,
-      relAngle = f[R.F_REL]!;
-    let wA = f[R.F_WA]!,
-      wB = f[R.F_WB]!;
-    const kax = rows[o + R.KAX]!;
+    const relAngle = p.f[R.F_REL]!,
+      kax = rows[o + R.KAX]!;
+    let wA = sb[oA + BS.BS2_W]!,
+      wB = sb[oB + BS.BS2_W]!;
     if (flags & JointFlag.Spring) {
       const impulse = -rows[o + R.SM]! * kax * (wB - wA + rows[o + R.SB]! * relAngle) - rows[o + R.SI]! * rows[o + R.ISPR]!;
       rows[o + R.ISPR] = rows[o + R.ISPR]! + impulse;
@@ -96,28 +115,35 @@ export function solveRevoluteRow(rows: Float64Array, o: number, flags: number, u
       wB += iB * impulse;
     }
     if (flags & JointFlag.Motor) {
-      const max = rows[o + R.MMAX]!;
-      const old = rows[o + R.IMOT]!;
-      let next = old - kax * (wB - wA - rows[o + R.MSPD]!);
-      next = next < -max ? -max : next > max ? max : next;
-      rows[o + R.IMOT] = next;
-      wA -= iA * (next - old);
-      wB += iB * (next - old);
+      const impulse = motorImpulse(rows, o, kax, wB - wA);
+      wA -= iA * impulse;
+      wB += iB * impulse;
     }
     if (flags & JointFlag.Limit) {
+      // Lower: C = angle - lower >= 0, along wB - wA. Upper: C = upper - angle >= 0, along wA - wB.
       const angle = unwind(relAngle);
-      const lower = limitRow(rows, o, R.ILOW, angle - rows[o + R.LOW]!, kax, wB - wA, invH, useBias);
+      const lower = limitRow(p, o, R.ILOW, angle - rows[o + R.LOW]!, kax, wB - wA);
       wA -= iA * lower;
       wB += iB * lower;
-      const upper = limitRow(rows, o, R.IUP, rows[o + R.UP]! - angle, kax, wA - wB, invH, useBias);
+      const upper = limitRow(p, o, R.IUP, rows[o + R.UP]! - angle, kax, wA - wB);
       wA += iA * upper;
       wB -= iB * upper;
     }
-    f[R.F_WA] = wA;
-    f[R.F_WB] = wB;
+    sb[oA + BS.BS2_W] = wA;
+    sb[oB + BS.BS2_W] = wB;
   }
-  solvePointBlock(rows, o, f, useBias);
+  solvePointRow(p, oA, oB, o, p.useBias);
   return R.ROW_PUSHED;
+}
+
+/** A revolute joint's reading after the step into out: its point force (N), the torque of its spring, motor and limits (N m), its anchors' separation (m). */
+export function revoluteReading(p: JointPass2D, _ia: number, _ib: number, o: number, _flags: number, out: Float64Array): void {
+  const { rows, f } = p;
+  const dx = f[R.F_DX]!,
+    dy = f[R.F_DY]!;
+  out[0] = pointForce(p, o);
+  out[1] = Math.abs(rows[o + R.ISPR]! + rows[o + R.IMOT]! + rows[o + R.ILOW]! - rows[o + R.IUP]!) * f[R.F_INVH]!;
+  out[2] = Math.sqrt(dx * dx + dy * dy);
 }
 
 /**
@@ -133,112 +159,33 @@ export function warmStartPins(world: PhysicsWorld): void {
   for (let l = 0, m = js.pinCount; l < m; l++) {
     const f = l * PIN_FLOATS,
       i = l * PIN_INTS;
-    const Px = pf[f + 6]!,
-      Py = pf[f + 7]!;
+    const Px = pf[f + R.PN_ILX]!,
+      Py = pf[f + R.PN_ILY]!;
     // One comparison that always runs (|Px| + |Py| is 0 only when both are): the second half of
     // `Px === 0 && Py === 0` runs only in a world's first steps, which V8 compiles as a deoptimisation.
     if (Math.abs(Px) + Math.abs(Py) === 0) continue;
-    const ia = pint[i]!,
-      ib = pint[i + 1]!,
-      oA = ia * BS.BS2_STRIDE,
-      oB = ib * BS.BS2_STRIDE;
+    const ia = pint[i + R.PN_IA]!,
+      ib = pint[i + R.PN_IB]!;
     const cA = rot[ia * 3]!,
       sA = rot[ia * 3 + 1]!,
       cB = rot[ib * 3]!,
       sB = rot[ib * 3 + 1]!;
-    const rAx = cA * pf[f]! - sA * pf[f + 1]!,
-      rAy = sA * pf[f]! + cA * pf[f + 1]!;
-    const rBx = cB * pf[f + 2]! - sB * pf[f + 3]!,
-      rBy = sB * pf[f + 2]! + cB * pf[f + 3]!;
-    const mA = sb[oA + BS.BS2_INV_MASS]!,
-      iA = sb[oA + BS.BS2_INV_INERTIA]!,
-      mB = sb[oB + BS.BS2_INV_MASS]!,
-      iB = sb[oB + BS.BS2_INV_INERTIA]!;
-    sb[oA + BS.BS2_VX] = sb[oA + BS.BS2_VX]! - mA * Px;
-    sb[oA + BS.BS2_VY] = sb[oA + BS.BS2_VY]! - mA * Py;
-    sb[oA + BS.BS2_W] = sb[oA + BS.BS2_W]! - iA * (rAx * Py - rAy * Px);
-    sb[oB + BS.BS2_VX] = sb[oB + BS.BS2_VX]! + mB * Px;
-    sb[oB + BS.BS2_VY] = sb[oB + BS.BS2_VY]! + mB * Py;
-    sb[oB + BS.BS2_W] = sb[oB + BS.BS2_W]! + iB * (rBx * Py - rBy * Px);
+    const rAx = cA * pf[f + R.PN_RAX]! - sA * pf[f + R.PN_RAY]!,
+      rAy = sA * pf[f + R.PN_RAX]! + cA * pf[f + R.PN_RAY]!;
+    const rBx = cB * pf[f + R.PN_RBX]! - sB * pf[f + R.PN_RBY]!,
+      rBy = sB * pf[f + R.PN_RBX]! + cB * pf[f + R.PN_RBY]!;
+    applyImpulse(sb, ia * BS.BS2_STRIDE, ib * BS.BS2_STRIDE, Px, Py, rAx * Py - rAy * Px, rBx * Py - rBy * Px);
   }
 }
 
 /**
- * The pins' pass: the revolute joint's point-to-point block (2 x 2 effective mass from the current
- * anchors), soft while `useBias` (Box2D's joint softness), exactly as the general loop solves it.
+ * The pins' pass: each pin's point-to-point block (rows-2d.ts solvePointBlocks), soft while `useBias`
+ * (Box2D's joint softness), exactly as the general loop solves a revolute joint's.
  */
 export function solvePins(world: PhysicsWorld, useBias: boolean): void {
   const js = world.joints;
-  const m = js.pinCount;
-  if (m === 0) return;
-  const sb = world.collision.bodyState,
-    rot = js.rotation,
-    pf = js.pins,
-    pint = js.pinInts;
-  const jb = useBias ? js.softness[0]! : 0,
-    jm = useBias ? js.softness[1]! : 1,
-    ji = useBias ? js.softness[2]! : 0;
-  for (let l = 0; l < m; l++) {
-    const f = l * PIN_FLOATS,
-      i = l * PIN_INTS;
-    const ia = pint[i]!,
-      ib = pint[i + 1]!,
-      oA = ia * BS.BS2_STRIDE,
-      oB = ib * BS.BS2_STRIDE;
-    const mA = sb[oA + BS.BS2_INV_MASS]!,
-      iA = sb[oA + BS.BS2_INV_INERTIA]!,
-      mB = sb[oB + BS.BS2_INV_MASS]!,
-      iB = sb[oB + BS.BS2_INV_INERTIA]!;
-    const cA = rot[ia * 3]!,
-      sA = rot[ia * 3 + 1]!,
-      cB = rot[ib * 3]!,
-      sB = rot[ib * 3 + 1]!;
-    const rAx = cA * pf[f]! - sA * pf[f + 1]!,
-      rAy = sA * pf[f]! + cA * pf[f + 1]!;
-    const rBx = cB * pf[f + 2]! - sB * pf[f + 3]!,
-      rBy = sB * pf[f + 2]! + cB * pf[f + 3]!;
-    let vAx = sb[oA + BS.BS2_VX]!,
-      vAy = sb[oA + BS.BS2_VY]!,
-      wA = sb[oA + BS.BS2_W]!,
-      vBx = sb[oB + BS.BS2_VX]!,
-      vBy = sb[oB + BS.BS2_VY]!,
-      wB = sb[oB + BS.BS2_W]!;
-    const cdx = vBx - wB * rBy - vAx + wA * rAy,
-      cdy = vBy + wB * rBx - vAy - wA * rAx;
-    let bx = 0,
-      by = 0;
-    if (useBias) {
-      bx = jb * (sb[oB + BS.BS2_DX]! - sb[oA + BS.BS2_DX]! + pf[f + 4]! + rBx - rAx);
-      by = jb * (sb[oB + BS.BS2_DY]! - sb[oA + BS.BS2_DY]! + pf[f + 5]! + rBy - rAy);
-    }
-    const k11 = mA + mB + rAy * rAy * iA + rBy * rBy * iB;
-    const k12 = -rAy * rAx * iA - rBy * rBx * iB;
-    const k22 = mA + mB + rAx * rAx * iA + rBx * rBx * iB;
-    let det = k11 * k22 - k12 * k12;
-    if (det !== 0) det = 1 / det;
-    const ex = cdx + bx,
-      ey = cdy + by;
-    const sx = det * (k22 * ex - k12 * ey),
-      sy = det * (k11 * ey - k12 * ex);
-    const ix = -jm * sx - ji * pf[f + 6]!,
-      iy = -jm * sy - ji * pf[f + 7]!;
-    pf[f + 6] = pf[f + 6]! + ix;
-    pf[f + 7] = pf[f + 7]! + iy;
-    vAx -= mA * ix;
-    vAy -= mA * iy;
-    wA -= iA * (rAx * iy - rAy * ix);
-    vBx += mB * ix;
-    vBy += mB * iy;
-    wB += iB * (rBx * iy - rBy * ix);
-    sb[oA + BS.BS2_VX] = vAx;
-    sb[oA + BS.BS2_VY] = vAy;
-    sb[oA + BS.BS2_W] = wA;
-    sb[oA + BS.BS2_PUSHED] = 1;
-    sb[oB + BS.BS2_VX] = vBx;
-    sb[oB + BS.BS2_VY] = vBy;
-    sb[oB + BS.BS2_W] = wB;
-    sb[oB + BS.BS2_PUSHED] = 1;
-  }
+  if (js.pinCount === 0) return;
+  solvePointBlocks(world.collision.bodyState, js.rotation, js.pins, js.pinInts, js.pinCount, useBias, js.softness);
 }
 
 /** The pins' accumulated impulses back into their rows, which keep them for the next step. */
@@ -248,8 +195,14 @@ export function finishPins(js: JointState): void {
     pint = js.pinInts;
   for (let l = 0, m = js.pinCount; l < m; l++) {
     const f = l * PIN_FLOATS,
-      o = pint[l * PIN_INTS + 2]! * ROW_FLOATS;
-    rows[o + R.ILX] = pf[f + 6]!;
-    rows[o + R.ILY] = pf[f + 7]!;
+      o = pint[l * PIN_INTS + R.PN_ROW]! * ROW_FLOATS;
+    rows[o + R.ILX] = pf[f + R.PN_ILX]!;
+    rows[o + R.ILY] = pf[f + R.PN_ILY]!;
   }
 }
+
+/** The 2D revolute joint's row functions (rows-2d.ts JointTypeRows2D). */
+export const REVOLUTE_ROWS_2D: JointTypeRows2D = {
+  prepare: prepareRevoluteRow,
+  solve: solveRevoluteRow,
+};

@@ -1,23 +1,5 @@
-import {
-  BS3_DX,
-  BS3_DY,
-  BS3_DZ,
-  BS3_INV_MASS,
-  BS3_STRIDE,
-  BS3_VX,
-  BS3_VY,
-  BS3_VZ,
-  BS3_WX,
-  BS3_WY,
-  BS3_WZ,
-  BX_BASE_X,
-  BX_BASE_Y,
-  BX_BASE_Z,
-  BX_ROT_X,
-  BX_ROT_Y,
-  BX_ROT_Z,
-  BX_STRIDE,
-} from '../solver/body-state-layout.js';
+import { rotateVector } from '../math/quaternion.js';
+import * as BS from '../solver/body-state-layout.js';
 import type { PhysicsWorld } from '../world/options.js';
 
 /**
@@ -65,9 +47,9 @@ export function pose(world: PhysicsWorld, e: number, k: number, q: Float64Array,
   }
   const ex = world.collision.bodyExtra,
     sb = world.collision.bodyState;
-  const rx = ex[BX_STRIDE * k + BX_ROT_X]!,
-    ry = ex[BX_STRIDE * k + BX_ROT_Y]!,
-    rz = ex[BX_STRIDE * k + BX_ROT_Z]!,
+  const rx = ex[BS.BX_STRIDE * k + BS.BX_ROT_X]!,
+    ry = ex[BS.BX_STRIDE * k + BS.BX_ROT_Y]!,
+    rz = ex[BS.BX_STRIDE * k + BS.BX_ROT_Z]!,
     a = Math.hypot(rx, ry, rz);
   if (a > 0) {
     const f = Math.sin(a / 2) / a,
@@ -88,22 +70,14 @@ export function pose(world: PhysicsWorld, e: number, k: number, q: Float64Array,
   q[1] = y;
   q[2] = z;
   q[3] = w;
-  p[0] = ex[BX_STRIDE * k + BX_BASE_X]! + sb[BS3_STRIDE * k + BS3_DX]!;
-  p[1] = ex[BX_STRIDE * k + BX_BASE_Y]! + sb[BS3_STRIDE * k + BS3_DY]!;
-  p[2] = ex[BX_STRIDE * k + BX_BASE_Z]! + sb[BS3_STRIDE * k + BS3_DZ]!;
+  p[0] = ex[BS.BX_STRIDE * k + BS.BX_BASE_X]! + sb[BS.BS3_STRIDE * k + BS.BS3_DX]!;
+  p[1] = ex[BS.BX_STRIDE * k + BS.BX_BASE_Y]! + sb[BS.BS3_STRIDE * k + BS.BS3_DY]!;
+  p[2] = ex[BS.BX_STRIDE * k + BS.BX_BASE_Z]! + sb[BS.BS3_STRIDE * k + BS.BS3_DZ]!;
 }
 
+/** v rotated by the unit quaternion q (x, y, z, w; body to world frame) into out. */
 export function rot(q: Float64Array, vx: number, vy: number, vz: number, out: Float64Array): void {
-  const x = q[0]!,
-    y = q[1]!,
-    z = q[2]!,
-    w = q[3]!;
-  const tx = 2 * (y * vz - z * vy),
-    ty = 2 * (z * vx - x * vz),
-    tz = 2 * (x * vy - y * vx);
-  out[0] = vx + w * tx + (y * tz - z * ty);
-  out[1] = vy + w * ty + (z * tx - x * tz);
-  out[2] = vz + w * tz + (x * ty - y * tx);
+  rotateVector(q[0]!, q[1]!, q[2]!, q[3]!, vx, vy, vz, out);
 }
 
 /** I^-1 v for solver body k (0: zero) into out. */
@@ -119,26 +93,26 @@ export const tmp = new Float64Array(6);
 /** Linear impulse P at the anchors: -P to A, +P to B. */
 export function applyLinear(sb: Float64Array, T: Float64Array, a: number, b: number, px: number, py: number, pz: number): void {
   if (a > 0) {
-    const o = BS3_STRIDE * a,
-      m = sb[o + BS3_INV_MASS]!;
-    sb[o + BS3_VX] = sb[o + BS3_VX]! - m * px;
-    sb[o + BS3_VY] = sb[o + BS3_VY]! - m * py;
-    sb[o + BS3_VZ] = sb[o + BS3_VZ]! - m * pz;
+    const o = BS.BS3_STRIDE * a,
+      m = sb[o + BS.BS3_INV_MASS]!;
+    sb[o + BS.BS3_VX] = sb[o + BS.BS3_VX]! - m * px;
+    sb[o + BS.BS3_VY] = sb[o + BS.BS3_VY]! - m * py;
+    sb[o + BS.BS3_VZ] = sb[o + BS.BS3_VZ]! - m * pz;
     invI(T, a, ra[1]! * pz - ra[2]! * py, ra[2]! * px - ra[0]! * pz, ra[0]! * py - ra[1]! * px, tmp, 0);
-    sb[o + BS3_WX] = sb[o + BS3_WX]! - tmp[0]!;
-    sb[o + BS3_WY] = sb[o + BS3_WY]! - tmp[1]!;
-    sb[o + BS3_WZ] = sb[o + BS3_WZ]! - tmp[2]!;
+    sb[o + BS.BS3_WX] = sb[o + BS.BS3_WX]! - tmp[0]!;
+    sb[o + BS.BS3_WY] = sb[o + BS.BS3_WY]! - tmp[1]!;
+    sb[o + BS.BS3_WZ] = sb[o + BS.BS3_WZ]! - tmp[2]!;
   }
   if (b > 0) {
-    const o = BS3_STRIDE * b,
-      m = sb[o + BS3_INV_MASS]!;
-    sb[o + BS3_VX] = sb[o + BS3_VX]! + m * px;
-    sb[o + BS3_VY] = sb[o + BS3_VY]! + m * py;
-    sb[o + BS3_VZ] = sb[o + BS3_VZ]! + m * pz;
+    const o = BS.BS3_STRIDE * b,
+      m = sb[o + BS.BS3_INV_MASS]!;
+    sb[o + BS.BS3_VX] = sb[o + BS.BS3_VX]! + m * px;
+    sb[o + BS.BS3_VY] = sb[o + BS.BS3_VY]! + m * py;
+    sb[o + BS.BS3_VZ] = sb[o + BS.BS3_VZ]! + m * pz;
     invI(T, b, rb[1]! * pz - rb[2]! * py, rb[2]! * px - rb[0]! * pz, rb[0]! * py - rb[1]! * px, tmp, 0);
-    sb[o + BS3_WX] = sb[o + BS3_WX]! + tmp[0]!;
-    sb[o + BS3_WY] = sb[o + BS3_WY]! + tmp[1]!;
-    sb[o + BS3_WZ] = sb[o + BS3_WZ]! + tmp[2]!;
+    sb[o + BS.BS3_WX] = sb[o + BS.BS3_WX]! + tmp[0]!;
+    sb[o + BS.BS3_WY] = sb[o + BS.BS3_WY]! + tmp[1]!;
+    sb[o + BS.BS3_WZ] = sb[o + BS.BS3_WZ]! + tmp[2]!;
   }
 }
 
@@ -146,42 +120,44 @@ export function applyLinear(sb: Float64Array, T: Float64Array, a: number, b: num
 export function applyAngular(sb: Float64Array, T: Float64Array, a: number, b: number, lx: number, ly: number, lz: number): void {
   if (a > 0) {
     invI(T, a, lx, ly, lz, tmp, 0);
-    const o = BS3_STRIDE * a;
-    sb[o + BS3_WX] = sb[o + BS3_WX]! - tmp[0]!;
-    sb[o + BS3_WY] = sb[o + BS3_WY]! - tmp[1]!;
-    sb[o + BS3_WZ] = sb[o + BS3_WZ]! - tmp[2]!;
+    const o = BS.BS3_STRIDE * a;
+    sb[o + BS.BS3_WX] = sb[o + BS.BS3_WX]! - tmp[0]!;
+    sb[o + BS.BS3_WY] = sb[o + BS.BS3_WY]! - tmp[1]!;
+    sb[o + BS.BS3_WZ] = sb[o + BS.BS3_WZ]! - tmp[2]!;
   }
   if (b > 0) {
     invI(T, b, lx, ly, lz, tmp, 0);
-    const o = BS3_STRIDE * b;
-    sb[o + BS3_WX] = sb[o + BS3_WX]! + tmp[0]!;
-    sb[o + BS3_WY] = sb[o + BS3_WY]! + tmp[1]!;
-    sb[o + BS3_WZ] = sb[o + BS3_WZ]! + tmp[2]!;
+    const o = BS.BS3_STRIDE * b;
+    sb[o + BS.BS3_WX] = sb[o + BS.BS3_WX]! + tmp[0]!;
+    sb[o + BS.BS3_WY] = sb[o + BS.BS3_WY]! + tmp[1]!;
+    sb[o + BS.BS3_WZ] = sb[o + BS.BS3_WZ]! + tmp[2]!;
   }
 }
 
 /** Relative velocity of the anchors, vB + wB x rB - vA - wA x rA, into out[0..2]. */
 export function anchorVelocity(sb: Float64Array, a: number, b: number, out: Float64Array): void {
-  const oa = BS3_STRIDE * a,
-    ob = BS3_STRIDE * b;
-  out[0] =
-    sb[ob + BS3_VX]! +
-    sb[ob + BS3_WY]! * rb[2]! -
-    sb[ob + BS3_WZ]! * rb[1]! -
-    sb[oa + BS3_VX]! -
-    (sb[oa + BS3_WY]! * ra[2]! - sb[oa + BS3_WZ]! * ra[1]!);
-  out[1] =
-    sb[ob + BS3_VY]! +
-    sb[ob + BS3_WZ]! * rb[0]! -
-    sb[ob + BS3_WX]! * rb[2]! -
-    sb[oa + BS3_VY]! -
-    (sb[oa + BS3_WZ]! * ra[0]! - sb[oa + BS3_WX]! * ra[2]!);
-  out[2] =
-    sb[ob + BS3_VZ]! +
-    sb[ob + BS3_WX]! * rb[1]! -
-    sb[ob + BS3_WY]! * rb[0]! -
-    sb[oa + BS3_VZ]! -
-    (sb[oa + BS3_WX]! * ra[1]! - sb[oa + BS3_WY]! * ra[0]!);
+  const oa = BS.BS3_STRIDE * a,
+    ob = BS.BS3_STRIDE * b;
+  const wax = sb[oa + BS.BS3_WX]!,
+    way = sb[oa + BS.BS3_WY]!,
+    waz = sb[oa + BS.BS3_WZ]!,
+    wbx = sb[ob + BS.BS3_WX]!,
+    wby = sb[ob + BS.BS3_WY]!,
+    wbz = sb[ob + BS.BS3_WZ]!;
+  out[0] = sb[ob + BS.BS3_VX]! + wby * rb[2]! - wbz * rb[1]! - sb[oa + BS.BS3_VX]! - (way * ra[2]! - waz * ra[1]!);
+  out[1] = sb[ob + BS.BS3_VY]! + wbz * rb[0]! - wbx * rb[2]! - sb[oa + BS.BS3_VY]! - (waz * ra[0]! - wax * ra[2]!);
+  out[2] = sb[ob + BS.BS3_VZ]! + wbx * rb[1]! - wby * rb[0]! - sb[oa + BS.BS3_VZ]! - (wax * ra[1]! - way * ra[0]!);
+}
+
+/** The relative spin of B about unit u, (wB - wA) . u, rad/s. */
+export function relativeSpin(sb: Float64Array, a: number, b: number, ux: number, uy: number, uz: number): number {
+  const oa = BS.BS3_STRIDE * a,
+    ob = BS.BS3_STRIDE * b;
+  return (
+    (sb[ob + BS.BS3_WX]! - sb[oa + BS.BS3_WX]!) * ux +
+    (sb[ob + BS.BS3_WY]! - sb[oa + BS.BS3_WY]!) * uy +
+    (sb[ob + BS.BS3_WZ]! - sb[oa + BS.BS3_WZ]!) * uz
+  );
 }
 
 /** Solves the 3 x 3 system M x = r (M row-major) in place into x by Cramer's rule; a singular M gives 0. */
@@ -217,13 +193,6 @@ export const K = new Float64Array(9),
   ax = new Float64Array(3),
   bx = new Float64Array(3);
 
-/** Slider: moves A's anchor (ra) to the point of A under B's anchor (ra + C), where the axial rows act. */
-export function sliderAnchor(): void {
-  ra[0] = pb[0]! + rb[0]! - pa[0]!;
-  ra[1] = pb[1]! + rb[1]! - pa[1]!;
-  ra[2] = pb[2]! + rb[2]! - pa[2]!;
-}
-
 /** Effective mass denominator of a linear row along unit u at the anchors ra, rb: 1/m_A + 1/m_B + (r x u) . I^-1 (r x u) for both. */
 export function linearK(sb: Float64Array, T: Float64Array, a: number, b: number, ux: number, uy: number, uz: number): number {
   const cax = ra[1]! * uz - ra[2]! * uy,
@@ -235,8 +204,8 @@ export function linearK(sb: Float64Array, T: Float64Array, a: number, b: number,
   invI(T, a, cax, cay, caz, tmp, 0);
   invI(T, b, cbx, cby, cbz, tmp, 3);
   return (
-    sb[BS3_STRIDE * a + BS3_INV_MASS]! +
-    sb[BS3_STRIDE * b + BS3_INV_MASS]! +
+    sb[BS.BS3_STRIDE * a + BS.BS3_INV_MASS]! +
+    sb[BS.BS3_STRIDE * b + BS.BS3_INV_MASS]! +
     cax * tmp[0]! +
     cay * tmp[1]! +
     caz * tmp[2]! +
@@ -263,18 +232,20 @@ export function referenceK(sb: Float64Array, T: Float64Array, a: number, b: numb
   const kb =
     (T[tb]! + T[tb + 1]! + T[tb + 2]!) * (rb[0]! ** 2 + rb[1]! ** 2 + rb[2]! ** 2) -
     (rb[0]! * tmp[3]! + rb[1]! * tmp[4]! + rb[2]! * tmp[5]!);
-  return sb[BS3_STRIDE * a + BS3_INV_MASS]! + sb[BS3_STRIDE * b + BS3_INV_MASS]! + (ka + kb) / 3;
+  return sb[BS.BS3_STRIDE * a + BS.BS3_INV_MASS]! + sb[BS.BS3_STRIDE * b + BS.BS3_INV_MASS]! + (ka + kb) / 3;
 }
 
 /**
- * A linear row along unit u at the anchors (impulse +lambda u to B), with effective mass 1 / k:
- * lambda = clamp(acc - ms (cdot + bias) / k - is acc, lo, hi); applies the change, returns the new lambda.
+ * One row along (`linear`: at the anchors, effective mass 1 / k) or about (angular: k from the bodies'
+ * inverse inertias) unit u, impulse +lambda u to B: lambda = clamp(acc - ms (cdot + bias) / k - is acc,
+ * lo, hi); applies the change and returns the new lambda (acc when an angular row has no effective mass).
  */
-export function linearRow(
+export function row3D(
   sb: Float64Array,
   T: Float64Array,
   a: number,
   b: number,
+  linear: boolean,
   ux: number,
   uy: number,
   uz: number,
@@ -287,10 +258,19 @@ export function linearRow(
   lo: number,
   hi: number,
 ): number {
+  if (!linear) {
+    invI(T, a, ux, uy, uz, tmp, 0);
+    invI(T, b, ux, uy, uz, tmp, 3);
+    k = ux * (tmp[0]! + tmp[3]!) + uy * (tmp[1]! + tmp[4]!) + uz * (tmp[2]! + tmp[5]!);
+    if (!(k > 0)) return acc;
+  }
   let lam = acc - (ms * (cdot + bias)) / k - is * acc;
   lam = lam < lo ? lo : lam > hi ? hi : lam;
   const d = lam - acc;
-  if (d !== 0) applyLinear(sb, T, a, b, d * ux, d * uy, d * uz);
+  if (d !== 0) {
+    if (linear) applyLinear(sb, T, a, b, d * ux, d * uy, d * uz);
+    else applyAngular(sb, T, a, b, d * ux, d * uy, d * uz);
+  }
   return lam;
 }
 
@@ -333,31 +313,3 @@ export function restrictToPlane(ux: number, uy: number, uz: number): void {
 
 const P9 = new Float64Array(9),
   KP = new Float64Array(9);
-
-/** A one-sided or bounded angular row along unit u (impulse +lambda u to B): returns the new accumulated impulse. */
-export function angularRow(
-  sb: Float64Array,
-  T: Float64Array,
-  a: number,
-  b: number,
-  ux: number,
-  uy: number,
-  uz: number,
-  cdot: number,
-  bias: number,
-  ms: number,
-  is: number,
-  acc: number,
-  lo: number,
-  hi: number,
-): number {
-  invI(T, a, ux, uy, uz, tmp, 0);
-  invI(T, b, ux, uy, uz, tmp, 3);
-  const k = ux * (tmp[0]! + tmp[3]!) + uy * (tmp[1]! + tmp[4]!) + uz * (tmp[2]! + tmp[5]!);
-  if (!(k > 0)) return acc;
-  let lam = acc - (ms * (cdot + bias)) / k - is * acc;
-  lam = lam < lo ? lo : lam > hi ? hi : lam;
-  const d = lam - acc;
-  if (d !== 0) applyAngular(sb, T, a, b, d * ux, d * uy, d * uz);
-  return lam;
-}

@@ -1,5 +1,7 @@
 import { BS3_INV_MASS, BS3_STRIDE, BS3_WX, BS3_WY, BS3_WZ } from '../solver/body-state-layout.js';
+import type { PhysicsWorld } from '../world/options.js';
 import {
+  anchorSpeed,
   anchorVelocity,
   applyAngular,
   applyLinear,
@@ -9,12 +11,15 @@ import {
   K,
   pa,
   pb,
+  pose,
   qa,
   qb,
   ra,
   rb,
+  relativeSpin,
   restrictToPlane,
   rot,
+  row3D,
   solve3,
   tmp,
   v3,
@@ -24,11 +29,13 @@ import type { Joint3DStore } from './store-3d.js';
 
 /**
  * The row code the 3D joint types share: the pass every row solve reads (JointPass3D), what a type's
- * file hands the solver (JointRows3D), and the pieces several types solve with: the error rotation,
- * the angular lock (fixed, hinge, slider) and the point block (ball, hinge, fixed; the slider's
- * restricted to a plane). Each type's own rows are in its file (ball-, hinge-, fixed-, slider- and
- * distance-joint-3d.ts), run by joints/solver-3d.ts on the poses it leaves in the scratch of
- * rows-3d-math.ts (qa, pa, ra for body A, qb, pb, rb for B); the rows are those its header describes.
+ * file hands the solver (JointRows3D), a joint's pose, and the pieces several types solve with: the
+ * error rotation, the angular lock (fixed, hinge, slider), the point block (ball, hinge, fixed; the
+ * slider's restricted to a plane), one-sided limit rows (cone, hinge, slider, distance) and the limit
+ * and motor along or about an axis (hinge, slider). Each type's own rows are in its file (ball-, hinge-,
+ * fixed-, slider- and distance-joint-3d.ts), run by joints/solver-3d.ts on the poses poseJoint3D leaves
+ * in the scratch of rows-3d-math.ts (qa, pa, ra for body A, qb, pb, rb for B); the rows are those its
+ * header describes.
  */
 
 /**
@@ -221,4 +228,120 @@ export function warmStartPointAndLock(p: JointPass3D, j: number, a: number, b: n
 export function pointJointReading(s: Joint3DStore, j: number, hs: number, out: Float64Array): void {
   out[0] = Math.hypot(s.lx[j]!, s.ly[j]!, s.lz[j]!) / hs;
   out[1] = (Math.hypot(s.wx[j]!, s.wy[j]!, s.wz[j]!) + (Math.abs(s.limit[j]!) + Math.abs(s.motor[j]!))) / hs;
+}
+
+/** Poses joint slot j's bodies (solver indices a, b; 0: fixed) into qa, pa and qb, pb, and its anchors (world frame, from the centres) into ra, rb. */
+export function poseJoint3D(world: PhysicsWorld, s: Joint3DStore, j: number, a: number, b: number): void {
+  pose(world, s.a[j]!, a, qa, pa);
+  pose(world, s.b[j]!, b, qb, pb);
+  rot(qa, s.ax[j]!, s.ay[j]!, s.az[j]!, ra);
+  rot(qb, s.bx[j]!, s.by[j]!, s.bz[j]!, rb);
+}
+
+/** A one-sided limit row's softness (limitSoftness): bias (m/s or rad/s), mass scale, impulse scale. */
+export const limitSoft = new Float64Array(3);
+
+/**
+ * The softness of a one-sided limit row (cone, hinge, slider, distance) with position error C (>= 0
+ * inside the limit) into limitSoft: speculative while C > 0 (bias C / h_s, rigid), soft with the pass's
+ * softness while it uses bias, else rigid without bias (Box2D v3's joint limits). The row then runs with
+ * its accumulated impulse kept >= 0 (row3D with lo 0, hi Infinity).
+ */
+export function limitSoftness(p: JointPass3D, C: number): void {
+  let bias = 0,
+    m = 1,
+    im = 0;
+  if (C > 0) bias = C / p.hs;
+  else if (p.useBias) {
+    bias = p.bRate * C;
+    m = p.ms;
+    im = p.is;
+  }
+  limitSoft[0] = bias;
+  limitSoft[1] = m;
+  limitSoft[2] = im;
+}
+
+/**
+ * The motor along (`linear`: a slider's, at the anchors, effective mass 1 / k) or about (a hinge's) the
+ * unit axis in bx: drives B's speed relative to A toward the motor speed with at most the largest
+ * force or torque times h_s.
+ */
+export function axisMotor3D(p: JointPass3D, j: number, a: number, b: number, linear: boolean, k: number): void {
+  const { s, sb, T } = p;
+  const hx = bx[0]!,
+    hy = bx[1]!,
+    hz = bx[2]!;
+  const max = s.maxMotorTorque[j]! * p.hs;
+  const speed = linear ? anchorSpeed(sb, a, b, hx, hy, hz) : relativeSpin(sb, a, b, hx, hy, hz);
+  s.motor[j] = row3D(sb, T, a, b, linear, hx, hy, hz, k, speed, -s.motorSpeed[j]!, 1, 0, s.motor[j]!, -max, max);
+}
+
+/**
+ * The limits of `value` (a slider's translation along the unit axis in bx, `linear`, at the anchors
+ * with effective mass 1 / k; a hinge's angle about it) within [lower, upper]: one one-sided row, on the
+ * side nearer; an impulse warm-started from the other side is taken back first. s.limit holds the
+ * signed impulse along the axis.
+ */
+export function axisLimit3D(p: JointPass3D, j: number, a: number, b: number, linear: boolean, k: number, value: number): void {
+  const { s, sb, T } = p;
+  const hx = bx[0]!,
+    hy = bx[1]!,
+    hz = bx[2]!;
+  const lo = s.lower[j]!,
+    hi = s.upper[j]!;
+  const nearLower = value - lo < hi - value;
+  const C = nearLower ? value - lo : hi - value,
+    sg = nearLower ? 1 : -1;
+  if (sg * s.limit[j]! < 0) {
+    const l = -s.limit[j]!;
+    if (linear) applyLinear(sb, T, a, b, l * hx, l * hy, l * hz);
+    else applyAngular(sb, T, a, b, l * hx, l * hy, l * hz);
+    s.limit[j] = 0;
+  }
+  const speed = linear ? anchorSpeed(sb, a, b, hx, hy, hz) : relativeSpin(sb, a, b, hx, hy, hz);
+  limitSoftness(p, C);
+  const lam = row3D(
+    sb,
+    T,
+    a,
+    b,
+    linear,
+    sg * hx,
+    sg * hy,
+    sg * hz,
+    k,
+    sg * speed,
+    limitSoft[0]!,
+    limitSoft[1]!,
+    limitSoft[2]!,
+    sg * s.limit[j]!,
+    0,
+    Infinity,
+  );
+  s.limit[j] = sg * lam;
+}
+
+/**
+ * The warm start of a joint with a limit and motor along (`linear`: a slider's, at the point of A under
+ * B's anchor) or about (a hinge's) A's axis: its point and angular-lock impulses, then its limit's and
+ * motor's along the axis turned with A.
+ */
+export function warmStartAxis3D(p: JointPass3D, j: number, a: number, b: number, linear: boolean): void {
+  warmStartPointAndLock(p, j, a, b);
+  const { s, sb, T } = p;
+  const axial = s.limit[j]! + s.motor[j]!;
+  if (axial === 0) return;
+  rot(qa, s.uax[j]!, s.uay[j]!, s.uaz[j]!, ax);
+  if (linear) {
+    sliderAnchor();
+    applyLinear(sb, T, a, b, axial * ax[0]!, axial * ax[1]!, axial * ax[2]!);
+  } else applyAngular(sb, T, a, b, axial * ax[0]!, axial * ax[1]!, axial * ax[2]!);
+}
+
+/** Slider: moves A's anchor (ra) to the point of A under B's anchor (ra + C), where the axial rows act. */
+export function sliderAnchor(): void {
+  ra[0] = pb[0]! + rb[0]! - pa[0]!;
+  ra[1] = pb[1]! + rb[1]! - pa[1]!;
+  ra[2] = pb[2]! + rb[2]! - pa[2]!;
 }

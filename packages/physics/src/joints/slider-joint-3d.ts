@@ -1,33 +1,19 @@
-import { currentHandle } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { centre, ends, type Joint3DBaseOptions, limitAndMotor, make, point, storeLimitAndMotor, unit } from './joint-3d.js';
+import { type AxisJoint3DKind, addAxisJoint3D, type Joint3DBaseOptions } from './joint-3d.js';
 import {
+  axisLimit3D,
+  axisMotor3D,
   C3,
   errorRotation,
   type JointPass3D,
   type JointRows3D,
   preparePointBlock,
-  solveAngularLock,
-  warmStartPointAndLock,
-} from './rows-3d.js';
-import {
-  anchorSpeed,
-  applyLinear,
-  ax,
-  bx,
-  K,
-  linearK,
-  linearRow,
-  qa,
-  restrictToPlane,
-  rot,
   sliderAnchor,
-  solve3,
-  v3,
-  x3,
-} from './rows-3d-math.js';
-import { useJointType3D } from './solver-3d.js';
-import { Joint3DFlag, type Joint3DStore, Joint3DType, joints3DOf } from './store-3d.js';
+  solveAngularLock,
+  warmStartAxis3D,
+} from './rows-3d.js';
+import { applyLinear, bx, K, linearK, qa, restrictToPlane, rot, solve3, v3, x3 } from './rows-3d-math.js';
+import { Joint3DFlag, type Joint3DStore, Joint3DType } from './store-3d.js';
 
 /**
  * The 3D slider joint (translation along one axis, no rotation, with an optional limit and motor): its
@@ -64,15 +50,7 @@ export interface SliderJoint3DOptions extends Joint3DBaseOptions {
  * @category Joints and ropes
  */
 export function addSliderJoint3D(world: PhysicsWorld, options: SliderJoint3DOptions): number {
-  const where = 'addSliderJoint3D';
-  const e = ends(where, world, options, ['anchor', 'axis', 'lower', 'upper', 'motorSpeed', 'maxMotorForce']);
-  const p = options.anchor === undefined ? centre(world, e.b) : point(where, 'anchor', options.anchor);
-  const axis = unit(where, 'axis', options.axis);
-  const lm = limitAndMotor(where, options.lower, options.upper, options.motorSpeed, options.maxMotorForce, 'maxMotorForce');
-  const j = make(world, where, Joint3DType.Slider, e, options, p, p, axis);
-  useJointType3D(Joint3DType.Slider, SLIDER_ROWS_3D);
-  storeLimitAndMotor(joints3DOf(world, true), j, lm);
-  return currentHandle(world, j);
+  return addAxisJoint3D(world, SLIDER, options);
 }
 
 /**
@@ -80,7 +58,7 @@ export function addSliderJoint3D(world: PhysicsWorld, options: SliderJoint3DOpti
  * of A under B's anchor) its motor and translation limit.
  */
 function solveSliderAxis(p: JointPass3D, j: number, a: number, b: number, flags: number): void {
-  const { s, sb, T, hs, useBias, bRate, ms, is } = p;
+  const { s, sb, T, bRate, ms, is } = p;
   // Only the part perpendicular to the axis (A's, in the world) is held.
   rot(qa, s.uax[j]!, s.uay[j]!, s.uaz[j]!, bx);
   const hx = bx[0]!,
@@ -114,65 +92,8 @@ function solveSliderAxis(p: JointPass3D, j: number, a: number, b: number, flags:
     // Axial rows act at the point of A under B's anchor.
     sliderAnchor();
     const k = linearK(sb, T, a, b, hx, hy, hz);
-    if (k > 0 && flags & Joint3DFlag.Motor) {
-      const maxP = s.maxMotorTorque[j]! * hs;
-      s.motor[j] = linearRow(
-        sb,
-        T,
-        a,
-        b,
-        hx,
-        hy,
-        hz,
-        k,
-        anchorSpeed(sb, a, b, hx, hy, hz),
-        -s.motorSpeed[j]!,
-        1,
-        0,
-        s.motor[j]!,
-        -maxP,
-        maxP,
-      );
-    }
-    if (k > 0 && flags & Joint3DFlag.Limit) {
-      const lo = s.lower[j]!,
-        hi = s.upper[j]!;
-      const nearLower = t - lo < hi - t;
-      const C = nearLower ? t - lo : hi - t,
-        sg = nearLower ? 1 : -1;
-      let bias = 0,
-        m = 1,
-        im = 0;
-      if (C > 0) bias = C / hs;
-      else if (useBias) {
-        bias = bRate * C;
-        m = ms;
-        im = is;
-      }
-      if (sg * s.limit[j]! < 0) {
-        const l = -s.limit[j]!;
-        applyLinear(sb, T, a, b, l * hx, l * hy, l * hz);
-        s.limit[j] = 0;
-      }
-      const lam = linearRow(
-        sb,
-        T,
-        a,
-        b,
-        sg * hx,
-        sg * hy,
-        sg * hz,
-        k,
-        sg * anchorSpeed(sb, a, b, hx, hy, hz),
-        bias,
-        m,
-        im,
-        sg * s.limit[j]!,
-        0,
-        Infinity,
-      );
-      s.limit[j] = sg * lam;
-    }
+    if (k > 0 && flags & Joint3DFlag.Motor) axisMotor3D(p, j, a, b, true, k);
+    if (k > 0 && flags & Joint3DFlag.Limit) axisLimit3D(p, j, a, b, true, k, t);
   }
 }
 
@@ -189,14 +110,7 @@ export function solveSliderRow3D(p: JointPass3D, j: number, a: number, b: number
  * axis (turned with A), at the point of A under B's anchor.
  */
 export function warmStartSliderRow3D(p: JointPass3D, j: number, a: number, b: number): void {
-  warmStartPointAndLock(p, j, a, b);
-  const { s, sb, T } = p;
-  const axial = s.limit[j]! + s.motor[j]!;
-  if (axial !== 0) {
-    rot(qa, s.uax[j]!, s.uay[j]!, s.uaz[j]!, ax);
-    sliderAnchor();
-    applyLinear(sb, T, a, b, axial * ax[0]!, axial * ax[1]!, axial * ax[2]!);
-  }
+  warmStartAxis3D(p, j, a, b, true);
 }
 
 /**
@@ -210,3 +124,6 @@ export function sliderReading3D(s: Joint3DStore, j: number, hs: number, out: Flo
 
 /** The 3D slider joint's rows (rows-3d.ts JointRows3D). */
 export const SLIDER_ROWS_3D: JointRows3D = { warmStart: warmStartSliderRow3D, solve: solveSliderRow3D, reading: sliderReading3D };
+
+/** What sets the slider apart from the other 3D joint along an axis (joint-3d.ts addAxisJoint3D). */
+const SLIDER: AxisJoint3DKind = { where: 'addSliderJoint3D', type: Joint3DType.Slider, rows: SLIDER_ROWS_3D, maxName: 'maxMotorForce' };

@@ -1,20 +1,44 @@
 import { BodyType } from '../collision/broadphase/grid.js';
-import { ensureRows } from '../world/joint-state-2d.js';
-import { ROW_INTS } from '../world/joint-strides-2d.js';
+import * as BS from '../solver/body-state-layout.js';
+import { currentHandle } from '../world/handles.js';
+import { ensureRows, pushBreak } from '../world/joint-state-2d.js';
+import { JointType } from '../world/joint-store-2d.js';
+import { IMPULSES, ROW_FLOATS, ROW_INTS } from '../world/joint-strides-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
-import { EID, IA, IB, TF } from './layout-2d.js';
+import { removeJointUnchecked } from './api-2d.js';
+import {
+  DISTANCE_ROWS_2D,
+  distanceReading,
+  finishPointLinks,
+  solvePointLinks,
+  warmStartDistanceRow,
+  warmStartPointLinks,
+} from './distance-joint.js';
+import * as R from './layout-2d.js';
+import { MOUSE_ROWS_2D, mouseReading } from './mouse-joint.js';
+import { PRISMATIC_ROWS_2D } from './prismatic-joint.js';
+import { finishPins, REVOLUTE_ROWS_2D, revoluteReading, solvePins, warmStartPins } from './revolute-joint.js';
+import { anchorsFrame, axisReading, type JointPass2D, separationFrame, unwind, warmStartAxis, warmStartPoint } from './rows-2d.js';
+import { soft } from './softness.js';
+import { WELD_ROWS_2D, weldReading } from './weld-joint.js';
+import { WHEEL_ROWS_2D } from './wheel-joint.js';
 
 /**
- * The joint solver: Box2D v3's soft-step joints (Catto, "Solver2D", 2024, and "Soft Constraints",
+ * The 2D joint solver: Box2D v3's soft-step joints (Catto, "Solver2D", 2024, and "Soft Constraints",
  * GDC 2011; Box2D v3.0 distance_joint.c, revolute_joint.c, prismatic_joint.c, weld_joint.c,
  * wheel_joint.c, mouse_joint.c), solved by the contact solver (solver/contact-solver.ts) inside the same
- * substeps as the contacts, on the same packed solver bodies:
+ * substeps as the contacts, on the same packed solver bodies. Its stages run every row by its type's
+ * row functions (each type's file; rows-2d.ts JointTypeRows2D), the point links' and pins' lean loops
+ * (distance-joint.ts, revolute-joint.ts) first. A stage picks the type by a chain of tests rather than
+ * a table, so that each call site sees one function, which the engine can inline; the warm start picks
+ * the joint's shape (point, axis, distance), three calls that take no doubles (a call the engine does
+ * not inline boxes its double arguments).
  *
  * 1. `gatherJointBodies` (while the contact solver gathers its bodies): every joint whose bodies are
  *    not both fixed (static, asleep or the world) gets a row; its moving bodies get solver indices;
- * 2. `prepareJoints`: anchors, axes and centres at the start of the step, effective masses, spring
- *    and rigid softness, last step's impulses (warm start);
+ * 2. `prepareJoints`: anchors, axes and centres at the start of the step, spring and rigid softness,
+ *    last step's impulses (warm start), then each type's effective masses;
  * 3. per substep: `warmStartJoints` (before the contacts'), `solveJoints(useBias = true)` (before the
  *    contacts' solve), `integrateJointRotations` (after the positions move), `solveJoints(useBias =
  *    false)` (the relax pass, before the contacts');
@@ -27,8 +51,25 @@ import { EID, IA, IB, TF } from './layout-2d.js';
  * here per substep (cos, sin and angle per solver body). Rigid parts of joints are soft constraints
  * of `world.joints.settings.hertz` (Box2D's joint softness) while `useBias`, and rigid (no bias) in
  * the relax pass; springs keep their own softness in both. A joint that carries an impulse marks its
- * bodies in the solver row's `pushed` slot (index 7), as contacts do: they were not in free flight.
+ * bodies in the solver body's `pushed` slot, as contacts do: they were not in free flight.
  */
+
+/** The frame of the row being worked on (layout-2d.ts F_*). */
+const frame = new Float64Array(R.FRAME_SIZE);
+/** What the row functions of a pass read, filled by each stage (rows-2d.ts JointPass2D). */
+const pass: JointPass2D = { sb: frame, rot: frame, rows: frame, f: frame, useBias: false };
+
+/** The pass over world's joint rows (its arrays as they are now), with `useBias`. */
+function passOf(world: PhysicsWorld, useBias: boolean): JointPass2D {
+  const p = pass;
+  p.sb = world.collision.bodyState;
+  p.rot = world.joints.rotation;
+  p.rows = world.joints.rows;
+  p.useBias = useBias;
+  return p;
+}
+/** A row's reading (force, torque, error, strain; finishJoints). */
+const reading = new Float64Array(4);
 
 enum Class {
   Dynamic = 0,
@@ -160,13 +201,379 @@ export function gatherJointBodies(world: PhysicsWorld, count: number): number {
       else ib = index[e]!;
     }
     const o = rows * ROW_INTS;
-    ri[o + EID] = j;
-    ri[o + IA] = ia;
-    ri[o + IB] = ib;
-    ri[o + TF] = T[j]! | (F[j]! << 8);
+    ri[o + R.EID] = j;
+    ri[o + R.IA] = ia;
+    ri[o + R.IB] = ib;
+    ri[o + R.TF] = T[j]! | (F[j]! << 8);
     rows++;
   }
   cs.solverBodies = list;
   js.rowCount = rows;
   return count;
+}
+
+/** `a` if it holds `n` numbers, else a new array of at least n (twice a's length): its contents are not kept. */
+function atLeast(a: Float64Array, n: number): Float64Array {
+  return a.length >= n ? a : new Float64Array(Math.max(n, 2 * a.length));
+}
+
+/**
+ * Resets each solver body's rotation within the step (js.rotation: cos, sin, angle) and records its
+ * angle at the start of the step (js.startPose: its angle less the rotation still owed, with its cos
+ * and sin), once per body rather than once per joint.
+ */
+function startPoses(world: PhysicsWorld): void {
+  const js = world.joints,
+    cs = world.collision;
+  const count = cs.solverBodyCount,
+    ex = cs.bodyExtra;
+  js.rotation = atLeast(js.rotation, count * 3);
+  const rot = js.rotation;
+  for (let k = 0; k < count; k++) {
+    rot[k * 3] = 1;
+    rot[k * 3 + 1] = 0;
+    rot[k * 3 + 2] = 0;
+  }
+  js.startPose = atLeast(js.startPose, count * 3);
+  const pose = js.startPose,
+    list = cs.solverBodies,
+    angle = world.components.Angle.value;
+  for (let k = 1; k < count; k++) {
+    const t = angle[list[k]!]! + ex[k * BS.BX_STRIDE + BS.BX_ROT_Z]!;
+    pose[k * 3] = Math.cos(t);
+    pose[k * 3 + 1] = Math.sin(t);
+    pose[k * 3 + 2] = t;
+  }
+}
+
+/**
+ * Fills every row from the joint components and the solver bodies (already gathered and filled by the
+ * contact solver): start-of-step anchors (world frame, from each centre), centre difference, relative
+ * angle, axis, softness, limits, motor and warm-start impulses; then its type's preparation (effective
+ * masses, point links and pins). `hs` is the solver substep, s.
+ * @category Joints and ropes
+ */
+export function prepareJoints(world: PhysicsWorld, hs: number): void {
+  const js = world.joints;
+  const n = js.rowCount;
+  js.stats.rows = n;
+  if (n === 0) return;
+  startPoses(world);
+  const c = world.components;
+  const J = c.Joint;
+  const sb = world.collision.bodyState,
+    ex = world.collision.bodyExtra,
+    pose = js.startPose;
+  const rows = js.rows,
+    ri = js.rowInts,
+    imp = js.impulses,
+    f = frame;
+  const px = c.Position.x,
+    py = c.Position.y,
+    ang = c.Angle.value;
+  // The rigid joint softness of this step (Box2D's joint softness, its rate capped at a quarter of the substep's).
+  const jointHertz = Math.min(js.settings.hertz, 0.25 / hs),
+    jointZeta = js.settings.dampingRatio;
+  const warm = js.settings.warmStarting;
+  const omega = 2 * Math.PI * jointHertz;
+  const ja1 = 2 * jointZeta + hs * omega,
+    ja2 = hs * omega * ja1,
+    ja3 = 1 / (1 + ja2);
+  const jBias = omega / ja1,
+    jMass = ja2 * ja3,
+    jImp = ja3;
+  js.softness[0] = jBias;
+  js.softness[1] = jMass;
+  js.softness[2] = jImp;
+  js.linkCount = 0;
+  js.pinCount = 0;
+  f[R.F_HS] = hs;
+  for (let r = 0; r < n; r++) {
+    const o = r * ROW_FLOATS,
+      q = r * ROW_INTS;
+    const j = ri[q + R.EID]!,
+      ia = ri[q + R.IA]!,
+      ib = ri[q + R.IB]!;
+    const a = J.a[j]!,
+      b = J.b[j]!;
+    const oA = ia * BS.BS2_STRIDE,
+      oB = ib * BS.BS2_STRIDE;
+    // Start-of-step pose of A and B: solver bodies from their base and owed rotation; fixed bodies where they are.
+    let cAx = 0,
+      cAy = 0,
+      tA = 0,
+      cBx = 0,
+      cBy = 0,
+      tB = 0;
+    let rAx: number, rAy: number;
+    const lax = J.localAx[j]!,
+      lay = J.localAy[j]!,
+      lbx = J.localBx[j]!,
+      lby = J.localBy[j]!;
+    let cA = 1,
+      sA = 0;
+    if (ia !== 0) {
+      cAx = ex[ia * BS.BX_STRIDE + BS.BX_BASE_X]!;
+      cAy = ex[ia * BS.BX_STRIDE + BS.BX_BASE_Y]!;
+      tA = pose[ia * 3 + 2]!;
+      cA = pose[ia * 3]!;
+      sA = pose[ia * 3 + 1]!;
+      rAx = cA * lax - sA * lay;
+      rAy = sA * lax + cA * lay;
+    } else if (a !== 0) {
+      tA = ang[a]!;
+      cA = Math.cos(tA);
+      sA = Math.sin(tA);
+      rAx = px[a]! + cA * lax - sA * lay;
+      rAy = py[a]! + sA * lax + cA * lay;
+    } else {
+      rAx = lax;
+      rAy = lay;
+    }
+    let cb: number, sbn: number;
+    if (ib !== 0) {
+      cBx = ex[ib * BS.BX_STRIDE + BS.BX_BASE_X]!;
+      cBy = ex[ib * BS.BX_STRIDE + BS.BX_BASE_Y]!;
+      tB = pose[ib * 3 + 2]!;
+      cb = pose[ib * 3]!;
+      sbn = pose[ib * 3 + 1]!;
+    } else {
+      tB = ang[b]!;
+      cb = Math.cos(tB);
+      sbn = Math.sin(tB);
+    }
+    let rBx = cb * lbx - sbn * lby,
+      rBy = sbn * lbx + cb * lby;
+    if (ib === 0) {
+      rBx += px[b]!;
+      rBy += py[b]!;
+    }
+    rows[o + R.RAX] = rAx;
+    rows[o + R.RAY] = rAy;
+    rows[o + R.RBX] = rBx;
+    rows[o + R.RBY] = rBy;
+    const dcx = cBx - cAx,
+      dcy = cBy - cAy;
+    rows[o + R.DCX] = dcx;
+    rows[o + R.DCY] = dcy;
+    rows[o + R.DANG] = unwind(tB - tA - J.referenceAngle[j]!);
+    rows[o + R.AXX] = cA * J.axisX[j]! - sA * J.axisY[j]!;
+    rows[o + R.AXY] = sA * J.axisX[j]! + cA * J.axisY[j]!;
+    rows[o + R.JB] = jBias;
+    rows[o + R.JM] = jMass;
+    rows[o + R.JI] = jImp;
+    soft(rows, o + R.SB, J.hertz[j]!, J.dampingRatio[j]!, hs);
+    rows[o + R.LOW] = J.lower[j]!;
+    rows[o + R.UP] = J.upper[j]!;
+    rows[o + R.MSPD] = J.motorSpeed[j]!;
+    rows[o + R.MMAX] = J.maxMotorForce[j]! * hs;
+    const base = j * IMPULSES;
+    for (let s = 0; s < IMPULSES; s++) rows[o + R.ILX + s] = warm ? imp[base + s]! : 0;
+    f[R.F_MA] = sb[oA + BS.BS2_INV_MASS]!;
+    f[R.F_IA] = sb[oA + BS.BS2_INV_INERTIA]!;
+    f[R.F_MB] = sb[oB + BS.BS2_INV_MASS]!;
+    f[R.F_IB] = sb[oB + BS.BS2_INV_INERTIA]!;
+    f[R.F_RAX] = rAx;
+    f[R.F_RAY] = rAy;
+    f[R.F_RBX] = rBx;
+    f[R.F_RBY] = rBy;
+    f[R.F_DX] = dcx + rBx - rAx;
+    f[R.F_DY] = dcy + rBy - rAy;
+    const type = ri[q + R.TF]! & 255;
+    // The prismatic and wheel joints share one preparation: one call site, inlined once.
+    if (type === JointType.Distance) DISTANCE_ROWS_2D.prepare(js, J, j, r, f);
+    else if (type === JointType.Revolute) REVOLUTE_ROWS_2D.prepare(js, J, j, r, f);
+    else if (type === JointType.Prismatic || type === JointType.Wheel) PRISMATIC_ROWS_2D.prepare(js, J, j, r, f);
+    else if (type === JointType.Weld) WELD_ROWS_2D.prepare(js, J, j, r, f);
+    else MOUSE_ROWS_2D.prepare(js, J, j, r, f);
+  }
+  js.generalCount = n - js.linkCount - js.pinCount;
+}
+
+/**
+ * Advances each solver body's rotation since the start of the step by w h_s (once per substep, after
+ * the positions move): the angle exactly, its cos and sin as a normalised first-order update of the
+ * unit complex number (Box2D v3 b2IntegrateRotation).
+ * @category Joints and ropes
+ */
+export function integrateJointRotations(world: PhysicsWorld, hs: number): void {
+  if (world.joints.rowCount === 0) return;
+  const cs = world.collision;
+  const sb = cs.bodyState,
+    rot = world.joints.rotation;
+  for (let k = 1, n = cs.solverBodyCount; k < n; k++) {
+    const o = k * BS.BS2_STRIDE;
+    if (sb[o + BS.BS2_INV_INERTIA]! === 0) continue;
+    const w = sb[o + BS.BS2_W]! * hs;
+    if (w === 0) continue;
+    const r = k * 3;
+    const c0 = rot[r]!,
+      s0 = rot[r + 1]!;
+    const c1 = c0 - w * s0,
+      s1 = s0 + w * c0;
+    const inv = 1 / Math.sqrt(c1 * c1 + s1 * s1);
+    rot[r] = c1 * inv;
+    rot[r + 1] = s1 * inv;
+    rot[r + 2] = rot[r + 2]! + w;
+  }
+}
+
+/**
+ * Applies every joint's accumulated impulses to its bodies (warm start, once per substep, before the
+ * contacts'): the point links' and pins', then each general row's by its type.
+ * @category Joints and ropes
+ */
+export function warmStartJoints(world: PhysicsWorld): void {
+  const js = world.joints;
+  const n = js.rowCount;
+  if (n === 0) return;
+  const p = passOf(world, false),
+    ri = js.rowInts;
+  warmStartPointLinks(world);
+  warmStartPins(world);
+  for (let r = 0, end = js.generalCount === 0 ? 0 : n; r < end; r++) {
+    const o = r * ROW_FLOATS,
+      q = r * ROW_INTS;
+    const ia = ri[q + R.IA]!,
+      ib = ri[q + R.IB]!,
+      type = ri[q + R.TF]! & 255;
+    if (type === R.POINT_LINK || type === R.PIN) continue;
+    if (type === JointType.Distance) warmStartDistanceRow(p, ia, ib, o);
+    else if (type === JointType.Prismatic || type === JointType.Wheel) warmStartAxis(p, ia, ib, o, type === JointType.Wheel);
+    else warmStartPoint(p, ia, ib, o, type === JointType.Revolute);
+  }
+}
+
+/**
+ * Passes over every joint row (sequential impulses): `world.joints.settings.iterations` with `useBias`,
+ * in which the rigid parts push out their position error as soft constraints; one without it (relax),
+ * in which they only remove relative velocity. `hs` is the substep, s. Velocities of the static world
+ * (solver index 0) stay zero: its inverse mass is 0.
+ * @category Joints and ropes
+ */
+export function solveJoints(world: PhysicsWorld, hs: number, useBias: boolean): void {
+  if (world.joints.rowCount === 0) return;
+  const passes = useBias ? Math.max(1, Math.floor(world.joints.settings.iterations)) : 1;
+  for (let i = 0; i < passes; i++) solveJointRows(world, hs, useBias);
+}
+
+/**
+ * One pass over every joint row (see solveJoints): the point links and pins, then each general row's
+ * frame filled and its type's row solve run, its bodies marked `pushed` when it pushes them.
+ */
+function solveJointRows(world: PhysicsWorld, hs: number, useBias: boolean): void {
+  const js = world.joints;
+  const n = js.rowCount;
+  const p = passOf(world, useBias),
+    sb = p.sb,
+    ri = js.rowInts;
+  const invH = 1 / hs;
+  p.f[R.F_INVH] = invH;
+  solvePointLinks(world, invH, useBias);
+  solvePins(world, useBias);
+  for (let r = 0, end = js.generalCount === 0 ? 0 : n; r < end; r++) {
+    const o = r * ROW_FLOATS,
+      q = r * ROW_INTS;
+    const ia = ri[q + R.IA]!,
+      ib = ri[q + R.IB]!,
+      tf = ri[q + R.TF]!;
+    const type = tf & 255;
+    if (type === R.POINT_LINK || type === R.PIN) continue;
+    anchorsFrame(p, o, ia, ib);
+    separationFrame(p, o, ia, ib);
+    p.f[R.F_REL] = p.rows[o + R.DANG]! + p.rot[ib * 3 + 2]! - p.rot[ia * 3 + 2]!;
+    // The joint pushes its bodies (the contact solver's `pushed` slot: they are not in free flight).
+    const flags = tf >> 8;
+    let done: number;
+    if (type === JointType.Distance) done = DISTANCE_ROWS_2D.solve(p, ia, ib, o, flags);
+    else if (type === JointType.Revolute) done = REVOLUTE_ROWS_2D.solve(p, ia, ib, o, flags);
+    else if (type === JointType.Prismatic) done = PRISMATIC_ROWS_2D.solve(p, ia, ib, o, flags);
+    else if (type === JointType.Weld) done = WELD_ROWS_2D.solve(p, ia, ib, o, flags);
+    else if (type === JointType.Wheel) done = WHEEL_ROWS_2D.solve(p, ia, ib, o, flags);
+    else done = MOUSE_ROWS_2D.solve(p, ia, ib, o, flags);
+    if (done === R.ROW_PUSHED) {
+      sb[ia * BS.BS2_STRIDE + BS.BS2_PUSHED] = 1;
+      sb[ib * BS.BS2_STRIDE + BS.BS2_PUSHED] = 1;
+    }
+  }
+  // The static world's row must stay at rest whatever a fixed body's joint wrote into it.
+  sb[BS.BS2_VX] = 0;
+  sb[BS.BS2_VY] = 0;
+  sb[BS.BS2_W] = 0;
+}
+
+/**
+ * After the bodies are written back: each joint's constraint force and torque (accumulated impulse
+ * of the last substep / h_s, its type's reading), the largest position error left, the impulses kept
+ * for the next step's warm start, and breaking: a joint whose force exceeds `breakForce`, torque
+ * `breakTorque` or strain `breakStretch` is removed and reported in `world.joints.breaks`.
+ * @category Joints and ropes
+ */
+export function finishJoints(world: PhysicsWorld, hs: number): void {
+  const js = world.joints;
+  const n = js.rowCount;
+  js.stats.maxError = 0;
+  js.stats.maxErrorJoint = 0;
+  if (n === 0) return;
+  const J = world.components.Joint;
+  const p = passOf(world, false),
+    rows = p.rows,
+    ri = js.rowInts,
+    imp = js.impulses,
+    out = reading;
+  p.f[R.F_INVH] = 1 / hs;
+  let maxError = 0,
+    maxJoint = 0;
+  let doomed: number[] | null = null;
+  finishPointLinks(js);
+  finishPins(js);
+  for (let r = 0; r < n; r++) {
+    const o = r * ROW_FLOATS,
+      q = r * ROW_INTS;
+    const j = ri[q + R.EID]!,
+      tf = ri[q + R.TF]!;
+    const type = tf === R.POINT_LINK ? JointType.Distance : tf === R.PIN ? JointType.Revolute : tf & 255;
+    const ia = ri[q + R.IA]!,
+      ib = ri[q + R.IB]!;
+    anchorsFrame(p, o, ia, ib);
+    separationFrame(p, o, ia, ib);
+    out[0] = 0;
+    out[1] = 0;
+    out[2] = 0;
+    out[3] = 0;
+    const flags = tf >> 8;
+    if (type === JointType.Distance) distanceReading(p, ia, ib, o, flags, out);
+    else if (type === JointType.Revolute) revoluteReading(p, ia, ib, o, flags, out);
+    else if (type === JointType.Prismatic || type === JointType.Wheel) axisReading(p, ia, o, out, type === JointType.Wheel);
+    else if (type === JointType.Weld) weldReading(p, ia, ib, o, flags, out);
+    else mouseReading(p, ia, ib, o, flags, out);
+    const force = out[0]!,
+      torque = out[1]!,
+      error = out[2]!,
+      stretch = out[3]!;
+    J.force[j] = force;
+    J.torque[j] = torque;
+    if (error > maxError) {
+      maxError = error;
+      maxJoint = j;
+    }
+    const base = j * IMPULSES;
+    for (let s = 0; s < IMPULSES; s++) imp[base + s] = rows[o + R.ILX + s]!;
+    if (force > J.breakForce[j]! || torque > J.breakTorque[j]! || stretch > J.breakStretch[j]!) {
+      (doomed ??= []).push(j);
+      const a = J.a[j]!;
+      pushBreak(
+        js.breaks,
+        currentHandle(world, j),
+        a === 0 ? 0 : currentHandle(world, a),
+        currentHandle(world, J.b[j]!),
+        force,
+        torque,
+        stretch,
+      );
+    }
+  }
+  js.stats.maxError = maxError;
+  js.stats.maxErrorJoint = maxJoint;
+  if (doomed) for (const j of doomed) removeJointUnchecked(world, j);
 }

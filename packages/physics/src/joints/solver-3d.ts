@@ -4,10 +4,9 @@ import { classifyBody3D } from '../collision/shapes-3d.js';
 import { BS3_PUSHED, BS3_STRIDE } from '../solver/body-state-layout.js';
 import { currentHandle } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { removeJoint3DUnchecked } from './remove-3d.js';
-import type { JointPass3D, JointRows3D } from './rows-3d.js';
-import { pa, pb, pose, qa, qb, ra, rb, rot } from './rows-3d-math.js';
-import { type Joint3DStore, Joint3DType, joints3DOf } from './store-3d.js';
+import { type JointPass3D, type JointRows3D, poseJoint3D } from './rows-3d.js';
+import { soft } from './softness.js';
+import { type Joint3DStore, Joint3DType, joints3DOf, removeJoint3DUnchecked } from './store-3d.js';
 
 /**
  * The 3D joints' rows of the contact solver (joints/solver-3d.ts calls these next to the contacts', in the same
@@ -56,11 +55,13 @@ const NO_ROWS: JointRows3D = {
   },
 };
 // Each type's rows, handed over by useJointType3D: the solver does not import the types' files, which
-// import the 3D feature's install (joint-3d.ts make), and that imports this module.
-let distanceRows = NO_ROWS,
-  ballRows = NO_ROWS,
+// import the 3D feature's install (joint-3d.ts make), and that imports this module. A stage picks the
+// type by a chain of tests rather than a table, so that each call site sees one function, which the
+// engine can inline.
+let ballRows = NO_ROWS,
   hingeRows = NO_ROWS,
   fixedRows = NO_ROWS,
+  distanceRows = NO_ROWS,
   sliderRows = NO_ROWS;
 
 /**
@@ -69,45 +70,16 @@ let distanceRows = NO_ROWS,
  * @category Joints and ropes
  */
 export function useJointType3D(type: number, rows: JointRows3D): void {
-  if (type === Joint3DType.Distance) distanceRows = rows;
-  else if (type === Joint3DType.Ball) ballRows = rows;
+  if (type === Joint3DType.Ball) ballRows = rows;
   else if (type === Joint3DType.Hinge) hingeRows = rows;
   else if (type === Joint3DType.Fixed) fixedRows = rows;
+  else if (type === Joint3DType.Distance) distanceRows = rows;
   else if (type === Joint3DType.Slider) sliderRows = rows;
 }
 
 let ka = new Int32Array(16),
   kb = new Int32Array(16);
 const jsoft = new Float64Array(3);
-
-/**
- * Writes the soft-constraint coefficients of a spring of `hertz` (Hz, >= 0) and damping ratio `zeta`
- * (>= 0) integrated implicitly over `h` (s) into out[0..2]: bias rate omega / (2 zeta + h omega) (1/s),
- * mass scale a / (1 + a), impulse scale 1 / (1 + a), a = h omega (2 zeta + h omega) (Catto, "Soft
- * Constraints", GDC 2011; Box2D v3 b2MakeSoft); hertz 0 gives the rigid 0, 1, 0. Finite and in range
- * at any hertz: a spring so soft that a rounds to 0 (a denormal hertz) gives 0, 0, 1 (no impulse), one
- * so stiff that a overflows gives 1 / h, 1, 0 (as joints/solver-2d.ts `soft`).
- */
-function makeSoft(out: Float64Array, hertz: number, zeta: number, h: number): void {
-  if (hertz === 0) {
-    out[0] = 0;
-    out[1] = 1;
-    out[2] = 0;
-    return;
-  }
-  const omega = 2 * Math.PI * hertz,
-    hw = h * omega,
-    a = hw * (2 * zeta + hw);
-  if (!(a > 0)) {
-    out[0] = 0;
-    out[1] = 0;
-    out[2] = 1;
-    return;
-  }
-  out[0] = zeta === 0 ? 1 / h : 1 / (h + (2 * zeta) / omega);
-  out[1] = 1 / (1 + 1 / a);
-  out[2] = 1 / (1 + a);
-}
 
 /**
  * Whether the world has 3D joints.
@@ -173,7 +145,7 @@ export function prepareJoints3D(world: PhysicsWorld, hs: number): void {
   const s = joints3DOf(world);
   if (s === undefined || world.dimensions !== 3 || s.list.length === 0) return;
   contact3DStateOf(world, true);
-  makeSoft(jsoft, Math.min(JOINT_HERTZ, 0.25 / hs), JOINT_DAMPING, hs);
+  soft(jsoft, 0, Math.min(JOINT_HERTZ, 0.25 / hs), JOINT_DAMPING, hs);
   const sb = world.collision.bodyState;
   for (let i = 0; i < s.list.length; i++) {
     if (ka[i]! > 0) sb[BS3_STRIDE * ka[i]! + BS3_PUSHED] = 1;
@@ -208,17 +180,14 @@ export function warmStartJoints3D(world: PhysicsWorld): void {
   for (let i = 0; i < s.list.length; i++) {
     const j = s.list[i]!,
       a = ka[i]!,
-      b = kb[i]!,
-      type = s.type[j]!;
-    pose(world, s.a[j]!, a, qa, pa);
-    pose(world, s.b[j]!, b, qb, pb);
-    rot(qa, s.ax[j]!, s.ay[j]!, s.az[j]!, ra);
-    rot(qb, s.bx[j]!, s.by[j]!, s.bz[j]!, rb);
-    if (type === Joint3DType.Distance) distanceRows.warmStart(p, j, a, b);
-    else if (type === Joint3DType.Ball) ballRows.warmStart(p, j, a, b);
+      b = kb[i]!;
+    poseJoint3D(world, s, j, a, b);
+    const type = s.type[j]!;
+    if (type === Joint3DType.Ball) ballRows.warmStart(p, j, a, b);
     else if (type === Joint3DType.Hinge) hingeRows.warmStart(p, j, a, b);
     else if (type === Joint3DType.Fixed) fixedRows.warmStart(p, j, a, b);
-    else if (type === Joint3DType.Slider) sliderRows.warmStart(p, j, a, b);
+    else if (type === Joint3DType.Distance) distanceRows.warmStart(p, j, a, b);
+    else sliderRows.warmStart(p, j, a, b);
   }
 }
 
@@ -244,18 +213,15 @@ export function solveJoints3D(world: PhysicsWorld, hs: number, useBias: boolean)
   for (let i = 0; i < s.list.length; i++) {
     const j = s.list[i]!,
       a = ka[i]!,
-      b = kb[i]!,
-      type = s.type[j]!,
+      b = kb[i]!;
+    poseJoint3D(world, s, j, a, b);
+    const type = s.type[j]!,
       flags = s.flags[j]!;
-    pose(world, s.a[j]!, a, qa, pa);
-    pose(world, s.b[j]!, b, qb, pb);
-    rot(qa, s.ax[j]!, s.ay[j]!, s.az[j]!, ra);
-    rot(qb, s.bx[j]!, s.by[j]!, s.bz[j]!, rb);
-    if (type === Joint3DType.Distance) distanceRows.solve(p, j, a, b, flags);
-    else if (type === Joint3DType.Ball) ballRows.solve(p, j, a, b, flags);
+    if (type === Joint3DType.Ball) ballRows.solve(p, j, a, b, flags);
     else if (type === Joint3DType.Hinge) hingeRows.solve(p, j, a, b, flags);
     else if (type === Joint3DType.Fixed) fixedRows.solve(p, j, a, b, flags);
-    else if (type === Joint3DType.Slider) sliderRows.solve(p, j, a, b, flags);
+    else if (type === Joint3DType.Distance) distanceRows.solve(p, j, a, b, flags);
+    else sliderRows.solve(p, j, a, b, flags);
   }
 }
 
@@ -274,11 +240,11 @@ export function finishJoints3D(world: PhysicsWorld, hs: number): void {
   const out = reading;
   for (const j of s.list) {
     const type = s.type[j]!;
-    if (type === Joint3DType.Distance) distanceRows.reading(s, j, hs, out);
-    else if (type === Joint3DType.Ball) ballRows.reading(s, j, hs, out);
+    if (type === Joint3DType.Ball) ballRows.reading(s, j, hs, out);
     else if (type === Joint3DType.Hinge) hingeRows.reading(s, j, hs, out);
     else if (type === Joint3DType.Fixed) fixedRows.reading(s, j, hs, out);
-    else if (type === Joint3DType.Slider) sliderRows.reading(s, j, hs, out);
+    else if (type === Joint3DType.Distance) distanceRows.reading(s, j, hs, out);
+    else sliderRows.reading(s, j, hs, out);
     if (out[0]! > s.breakForce[j]! || out[1]! > s.breakTorque[j]!) broken.push(j);
   }
   for (const j of broken) {

@@ -1,14 +1,19 @@
+import * as BS from '../solver/body-state-layout.js';
 import { assertKnownKeys, assertNonNegative } from '../validation/validate.js';
-import { JointFlag, JointType } from '../world/joint-store-2d.js';
+import type { JointState } from '../world/joint-state-2d.js';
+import { JointFlag, type JointStore, JointType } from '../world/joint-store-2d.js';
+import { ROW_FLOATS, ROW_INTS } from '../world/joint-strides-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { BASE_KEYS, centre, checkEnds, handle, type JointBaseOptions, makeJoint, optionalPoint } from './joint-2d.js';
+import { centre, handle, makeJoint, optionalPoint } from './joint-2d.js';
+import { BASE_KEYS, checkEnds, type JointBaseOptions } from './joint-base.js';
 import * as R from './layout-2d.js';
-import { solvePointBlock } from './rows-2d.js';
+import { angularMass, applyImpulse, type JointPass2D, type JointTypeRows2D, pointForce, solvePointRow } from './rows-2d.js';
+import { soft } from './softness.js';
 
 /**
  * The 2D weld joint (glues two bodies, rigidly or as linear and angular springs): its options,
- * addWeldJoint and its row solve. Its rows are prepared and finished with the other 2D joints'
- * (joints/prepare-2d.ts, finish-2d.ts) and solved in their loop (joints/solve-2d.ts).
+ * addWeldJoint, and its row's preparation, solve and reading (its warm start is rows-2d.ts
+ * warmStartPoint). joints/solver-2d.ts runs them.
  */
 
 /**
@@ -36,7 +41,7 @@ export interface WeldJointOptions extends JointBaseOptions {
  */
 export function addWeldJoint(world: PhysicsWorld, options: WeldJointOptions): number {
   const where = 'addWeldJoint';
-  const ends = checkEnds(where, world, options);
+  const ends = checkEnds(where, world, options, 2);
   assertKnownKeys(where, options, [...BASE_KEYS, 'anchor', 'hertz', 'dampingRatio', 'angularHertz', 'angularDampingRatio'], ['a']);
   const p = optionalPoint(where, 'anchor', options.anchor, centre(world, ends.b));
   const vals = [options.hertz ?? 0, options.dampingRatio ?? 0, options.angularHertz ?? 0, options.angularDampingRatio ?? 0];
@@ -53,34 +58,74 @@ export function addWeldJoint(world: PhysicsWorld, options: WeldJointOptions): nu
 }
 
 /**
- * One pass of a weld joint's rows (Box2D v3's b2SolveWeldJoint) on the frame `f` of layout-2d.ts:
- * both parts soft as one 3 x 3 system (solveSoftWeld) when it can, else the angular row (soft when the
- * weld's angular part is, or while `useBias`) and the anchors' point-to-point block (soft when the weld
- * has a linear spring, or while `useBias`). @returns ROW_PUSHED.
+ * Prepares weld joint `j`'s row r (its masses at the start of the step in the frame `f`): the effective
+ * mass of the relative rotation; the linear part's softness, its spring's (the Spring flag) or the
+ * rigid rows'; the angular part's, its spring's (WELD_ANGULAR_SOFT) or the rigid rows'.
  */
-export function solveWeldRow(rows: Float64Array, o: number, flags: number, useBias: boolean, f: Float64Array): number {
-  const iA = f[R.F_IA]!,
-    iB = f[R.F_IB]!;
-  if (flags & R.WELD_ANGULAR_SOFT && flags & JointFlag.Spring && iA + iB !== 0 && solveSoftWeld(rows, o, f)) return R.ROW_PUSHED;
-  const kax = rows[o + R.KAX]!;
-  let wA = f[R.F_WA]!,
-    wB = f[R.F_WB]!;
+export function prepareWeldRow(js: JointState, J: JointStore, j: number, r: number, f: Float64Array): void {
+  const hs = f[R.F_HS]!;
+  const rows = js.rows,
+    ri = js.rowInts;
+  const o = r * ROW_FLOATS,
+    q = r * ROW_INTS;
+  let flags = ri[q + R.TF]! >> 8;
+  rows[o + R.KAX] = angularMass(f[R.F_IA]!, f[R.F_IB]!);
+  if (J.hertz[j]! > 0) {
+    rows[o + R.JB] = rows[o + R.SB]!;
+    rows[o + R.JM] = rows[o + R.SM]!;
+    rows[o + R.JI] = rows[o + R.SI]!;
+    flags |= JointFlag.Spring;
+  } else flags &= ~JointFlag.Spring;
+  const ah = J.angularHertz[j]!;
+  if (ah > 0) {
+    soft(rows, o + R.AB, ah, J.angularDampingRatio[j]!, hs);
+    flags |= R.WELD_ANGULAR_SOFT;
+  } else {
+    rows[o + R.AB] = js.softness[0]!;
+    rows[o + R.AM] = js.softness[1]!;
+    rows[o + R.AI] = js.softness[2]!;
+  }
+  ri[q + R.TF] = JointType.Weld | (flags << 8);
+}
+
+/**
+ * One pass of a weld joint's rows (Box2D v3's b2SolveWeldJoint) on its frame: both parts soft as one
+ * 3 x 3 system (solveSoftWeld) when it can, else the angular row (soft when the weld's angular part
+ * is, or while the pass uses bias) and the anchors' point-to-point block (soft when the weld has a
+ * linear spring, or while the pass uses bias). @returns ROW_PUSHED.
+ */
+export function solveWeldRow(p: JointPass2D, ia: number, ib: number, o: number, flags: number): number {
+  const { sb, rows } = p;
+  const oA = ia * BS.BS2_STRIDE,
+    oB = ib * BS.BS2_STRIDE;
+  const turns = sb[oA + BS.BS2_INV_INERTIA]! + sb[oB + BS.BS2_INV_INERTIA]! !== 0;
+  if (flags & R.WELD_ANGULAR_SOFT && flags & JointFlag.Spring && turns && solveSoftWeld(p, oA, oB, o)) return R.ROW_PUSHED;
   let bias = 0,
     ms = 1,
     is = 0;
-  if (useBias || flags & R.WELD_ANGULAR_SOFT) {
-    bias = rows[o + R.AB]! * f[R.F_REL]!;
+  if (p.useBias || flags & R.WELD_ANGULAR_SOFT) {
+    bias = rows[o + R.AB]! * p.f[R.F_REL]!;
     ms = rows[o + R.AM]!;
     is = rows[o + R.AI]!;
   }
-  const impulse = -ms * kax * (wB - wA + bias) - is * rows[o + R.IANG]!;
+  const wA = sb[oA + BS.BS2_W]!,
+    wB = sb[oB + BS.BS2_W]!;
+  const impulse = -ms * rows[o + R.KAX]! * (wB - wA + bias) - is * rows[o + R.IANG]!;
   rows[o + R.IANG] = rows[o + R.IANG]! + impulse;
-  wA -= iA * impulse;
-  wB += iB * impulse;
-  f[R.F_WA] = wA;
-  f[R.F_WB] = wB;
-  solvePointBlock(rows, o, f, useBias || (flags & JointFlag.Spring) !== 0);
+  sb[oA + BS.BS2_W] = wA - sb[oA + BS.BS2_INV_INERTIA]! * impulse;
+  sb[oB + BS.BS2_W] = wB + sb[oB + BS.BS2_INV_INERTIA]! * impulse;
+  solvePointRow(p, oA, oB, o, p.useBias || (flags & JointFlag.Spring) !== 0);
   return R.ROW_PUSHED;
+}
+
+/** A weld joint's reading after the step into out: its point force (N), its angular torque (N m), and a rigid weld's anchor separation (m). */
+export function weldReading(p: JointPass2D, _ia: number, _ib: number, o: number, flags: number, out: Float64Array): void {
+  const f = p.f;
+  const dx = f[R.F_DX]!,
+    dy = f[R.F_DY]!;
+  out[0] = pointForce(p, o);
+  out[1] = Math.abs(p.rows[o + R.IANG]!) * f[R.F_INVH]!;
+  if (!(flags & JointFlag.Spring)) out[2] = Math.sqrt(dx * dx + dy * dy);
 }
 
 /**
@@ -93,18 +138,19 @@ export function solveWeldRow(rows: Float64Array, o: number, flags: number, useBi
  * omega_p^2 A_pp^-1 and damping 2 zeta_p omega_p A_pp^-1 (each part alone is Box2D's soft constraint),
  * the impulse's change d solves (A + G) d = -(Cdot + beta C + G lambda), lambda the impulse so far this
  * substep, beta_p the bias rate and G_p = A_pp impulseScale_p / massScale_p (one part alone: exactly
- * the soft row's update). Reads the bodies' velocities from the frame `f` and writes them back;
+ * the soft row's update). Reads the anchors from the frame `f`;
  * returns false (nothing done) when a part has no spring (mass scale 0) or the system is singular, for
  * the row-by-row update.
  */
-function solveSoftWeld(rows: Float64Array, o: number, f: Float64Array): boolean {
+function solveSoftWeld(p: JointPass2D, oA: number, oB: number, o: number): boolean {
+  const { sb, rows, f } = p;
   const msL = rows[o + R.JM]!,
     msA = rows[o + R.AM]!;
   if (!(msL > 0 && msA > 0)) return false;
-  const mA0 = f[R.F_MA]!,
-    iA0 = f[R.F_IA]!,
-    mB0 = f[R.F_MB]!,
-    iB0 = f[R.F_IB]!;
+  const mA = sb[oA + BS.BS2_INV_MASS]!,
+    iA = sb[oA + BS.BS2_INV_INERTIA]!,
+    mB = sb[oB + BS.BS2_INV_MASS]!,
+    iB = sb[oB + BS.BS2_INV_INERTIA]!;
   const rAx = f[R.F_RAX]!,
     rAy = f[R.F_RAY]!,
     rBx = f[R.F_RBX]!,
@@ -115,19 +161,15 @@ function solveSoftWeld(rows: Float64Array, o: number, f: Float64Array): boolean 
   // The linear spring's reference: half the trace of its 2 x 2 block of A, which no rotation changes,
   // so the spring has a potential (k |separation|^2 / 2 with k = omega^2 / aRef) and cannot do work
   // around a closed path; the block itself turns with the anchors. impulseScale / massScale = 1 / a.
-  const aRef = mA0 + mB0 + 0.5 * (iA0 * (rAx * rAx + rAy * rAy) + iB0 * (rBx * rBx + rBy * rBy));
+  const aRef = mA + mB + 0.5 * (iA * (rAx * rAx + rAy * rAy) + iB * (rBx * rBx + rBy * rBy));
   const gL = (aRef * rows[o + R.JI]!) / msL,
-    gA = ((iA0 + iB0) * rows[o + R.AI]!) / msA;
-  const mA = mA0,
-    iA = iA0,
-    mB = mB0,
-    iB = iB0;
-  const vAx = f[R.F_VAX]!,
-    vAy = f[R.F_VAY]!,
-    wA = f[R.F_WA]!,
-    vBx = f[R.F_VBX]!,
-    vBy = f[R.F_VBY]!,
-    wB = f[R.F_WB]!;
+    gA = ((iA + iB) * rows[o + R.AI]!) / msA;
+  const vAx = sb[oA + BS.BS2_VX]!,
+    vAy = sb[oA + BS.BS2_VY]!,
+    wA = sb[oA + BS.BS2_W]!,
+    vBx = sb[oB + BS.BS2_VX]!,
+    vBy = sb[oB + BS.BS2_VY]!,
+    wB = sb[oB + BS.BS2_W]!;
   // A = J M^-1 J^T for the rows (x, y, angle); Box2D v2's weld matrix.
   const a11 = mA + mB + rAy * rAy * iA + rBy * rBy * iB,
     a12 = -rAy * rAx * iA - rBy * rBx * iB,
@@ -164,11 +206,12 @@ function solveSoftWeld(rows: Float64Array, o: number, f: Float64Array): boolean 
   rows[o + R.ILX] = lx + ix;
   rows[o + R.ILY] = ly + iy;
   rows[o + R.IANG] = lt + it;
-  f[R.F_VAX] = vAx - mA * ix;
-  f[R.F_VAY] = vAy - mA * iy;
-  f[R.F_WA] = wA - iA * (rAx * iy - rAy * ix + it);
-  f[R.F_VBX] = vBx + mB * ix;
-  f[R.F_VBY] = vBy + mB * iy;
-  f[R.F_WB] = wB + iB * (rBx * iy - rBy * ix + it);
+  applyImpulse(sb, oA, oB, ix, iy, rAx * iy - rAy * ix + it, rBx * iy - rBy * ix + it);
   return true;
 }
+
+/** The 2D weld joint's row functions (rows-2d.ts JointTypeRows2D). */
+export const WELD_ROWS_2D: JointTypeRows2D = {
+  prepare: prepareWeldRow,
+  solve: solveWeldRow,
+};

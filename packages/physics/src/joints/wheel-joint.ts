@@ -1,11 +1,15 @@
+import * as BS from '../solver/body-state-layout.js';
 import { JointType } from '../world/joint-store-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { type AxisJointKind, addAxisJoint, BASE_KEYS, type JointBaseOptions } from './joint-2d.js';
+import { type AxisJointKind, addAxisJoint } from './joint-2d.js';
+import type { JointBaseOptions } from './joint-base.js';
+import * as R from './layout-2d.js';
+import { type JointPass2D, type JointTypeRows2D, prepareAxisRow, solveAlongAxis } from './rows-2d.js';
 
 /**
- * The 2D wheel joint (a suspension spring along an axis, free rotation with an optional motor): its options
- * and addWheelJoint. Its rows are prepared, solved and finished with the other 2D joints'
- * (joints/prepare-2d.ts, solve-2d.ts, finish-2d.ts).
+ * The 2D wheel joint (a suspension spring along an axis, free rotation with an optional motor): its
+ * options, addWheelJoint, and its row's solve (its preparation, warm start and reading are the prismatic
+ * joint's: rows-2d.ts prepareAxisRow, warmStartAxis, axisReading). joints/solver-2d.ts runs them.
  */
 
 /**
@@ -45,9 +49,48 @@ export function addWheelJoint(world: PhysicsWorld, options: WheelJointOptions): 
 const WHEEL: AxisJointKind = {
   where: 'addWheelJoint',
   type: JointType.Wheel,
-  keys: [...BASE_KEYS, 'anchor', 'axis', 'hertz', 'dampingRatio', 'lower', 'upper', 'motorSpeed', 'maxMotorTorque'],
   maxName: 'maxMotorTorque',
   axis: [0, 1],
   hertz: 4,
   dampingRatio: 0.7,
+};
+
+/**
+ * One pass of a wheel joint's rows (Box2D v3's b2SolveWheelJoint) on its frame: the rotation motor
+ * (unless neither body turns), the suspension spring and the translation limits along the axis, then
+ * the row across it, soft while the pass uses bias. @returns ROW_PUSHED.
+ */
+export function solveWheelRow(p: JointPass2D, ia: number, ib: number, o: number, flags: number): number {
+  const { sb, rows, f } = p;
+  const oA = ia * BS.BS2_STRIDE,
+    oB = ib * BS.BS2_STRIDE;
+  const mA = sb[oA + BS.BS2_INV_MASS]!,
+    iA = sb[oA + BS.BS2_INV_INERTIA]!,
+    mB = sb[oB + BS.BS2_INV_MASS]!,
+    iB = sb[oB + BS.BS2_INV_INERTIA]!;
+  solveAlongAxis(p, ia, ib, o, flags, true);
+  const s1 = f[R.F_S1]!,
+    s2 = f[R.F_S2]!;
+  const ms = p.useBias ? rows[o + R.JM]! : 1,
+    is = p.useBias ? rows[o + R.JI]! : 0;
+  const k = mA + mB + iA * s1 * s1 + iB * s2 * s2;
+  const mass = k > 0 ? 1 / k : 0;
+  const i1 = -ms * mass * (f[R.F_CD]! + f[R.F_BIAS]!) - is * rows[o + R.ILX]!;
+  rows[o + R.ILX] = rows[o + R.ILX]! + i1;
+  // The impulse i1 across the axis (-axy, axx) on B, minus on A, and its angular impulses i1 s1 on A and i1 s2 on B.
+  const px = i1 * -f[R.F_AXY]!,
+    py = i1 * f[R.F_AXX]!;
+  sb[oA + BS.BS2_VX] = sb[oA + BS.BS2_VX]! - mA * px;
+  sb[oA + BS.BS2_VY] = sb[oA + BS.BS2_VY]! - mA * py;
+  sb[oA + BS.BS2_W] = sb[oA + BS.BS2_W]! - iA * i1 * s1;
+  sb[oB + BS.BS2_VX] = sb[oB + BS.BS2_VX]! + mB * px;
+  sb[oB + BS.BS2_VY] = sb[oB + BS.BS2_VY]! + mB * py;
+  sb[oB + BS.BS2_W] = sb[oB + BS.BS2_W]! + iB * i1 * s2;
+  return R.ROW_PUSHED;
+}
+
+/** The 2D wheel joint's row functions (rows-2d.ts JointTypeRows2D). */
+export const WHEEL_ROWS_2D: JointTypeRows2D = {
+  prepare: prepareAxisRow,
+  solve: solveWheelRow,
 };

@@ -1,7 +1,6 @@
 /**
- * The contact solver's entry points into the 2D joint rows (joints/solver-2d.ts, prepare-2d.ts,
- * warm-start-2d.ts, solve-2d.ts, finish-2d.ts), through a table that the world's assembly
- * (create-world.ts) fills once for the program. The solver runs the joints' stages beside the
+ * The contact solver's entry points into the 2D joint rows (joints/solver-2d.ts), through a table
+ * that the world's assembly (create-world.ts) fills once for the program. The solver runs the joints' stages beside the
  * contacts' without importing the joints, which sit above it (a joint type's file holds both its
  * add call and its row solve). Until the table is filled no world exists, and each entry does what
  * the real function does in a world without 2D joints: nothing.
@@ -42,27 +41,27 @@ export function gatherJointBodies(world: PhysicsWorld, count: number): number {
   return rows === null ? count : rows.gatherJointBodies(world, count);
 }
 
-/** joints/prepare-2d.ts prepareJoints; nothing before the table is set. */
+/** joints/solver-2d.ts prepareJoints; nothing before the table is set. */
 export function prepareJoints(world: PhysicsWorld, hs: number): void {
   if (rows !== null) rows.prepareJoints(world, hs);
 }
 
-/** joints/warm-start-2d.ts warmStartJoints; nothing before the table is set. */
+/** joints/solver-2d.ts warmStartJoints; nothing before the table is set. */
 export function warmStartJoints(world: PhysicsWorld): void {
   if (rows !== null) rows.warmStartJoints(world);
 }
 
-/** joints/warm-start-2d.ts integrateJointRotations; nothing before the table is set. */
+/** joints/solver-2d.ts integrateJointRotations; nothing before the table is set. */
 export function integrateJointRotations(world: PhysicsWorld, hs: number): void {
   if (rows !== null) rows.integrateJointRotations(world, hs);
 }
 
-/** joints/solve-2d.ts solveJoints; nothing before the table is set. */
+/** joints/solver-2d.ts solveJoints; nothing before the table is set. */
 export function solveJoints(world: PhysicsWorld, hs: number, useBias: boolean): void {
   if (rows !== null) rows.solveJoints(world, hs, useBias);
 }
 
-/** joints/finish-2d.ts finishJoints; nothing before the table is set. */
+/** joints/solver-2d.ts finishJoints; nothing before the table is set. */
 export function finishJoints(world: PhysicsWorld, hs: number): void {
   if (rows !== null) rows.finishJoints(world, hs);
 }

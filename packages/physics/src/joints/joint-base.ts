@@ -1,0 +1,106 @@
+import { hasComponent } from 'bitecs';
+import { assertKnownKeys, assertNonNegative, assertOptionalBoolean, describe } from '../validation/validate.js';
+import { resolveEntity } from '../world/handles.js';
+import type { PhysicsWorld } from '../world/options.js';
+
+/**
+ * What every joint shares, 2D and 3D: the options of its two bodies, breaking and collisions, their
+ * checks, and the check of a distance joint's length and limits.
+ */
+
+/**
+ * Options every joint shares (2D and 3D).
+ * @category Joints and ropes
+ */
+export interface JointBaseOptions {
+  /** Body A, or omitted / null for the fixed world. */
+  a?: number | null;
+  /** Body B. */
+  b: number;
+  /** Force above which the joint breaks, N, > 0. Default Infinity (never). */
+  breakForce?: number;
+  /** Torque above which the joint breaks, N m, > 0. Default Infinity (never). */
+  breakTorque?: number;
+  /**
+   * Whether bodies A and B still collide with each other (Box2D's collideConnected). Default false: the
+   * contacts between two jointed bodies are skipped (every collider of both), so their shapes may
+   * overlap at the joint (a hinge's parts, a welded L, a ragdoll's limbs) without the contact and the
+   * joint fighting; true keeps them colliding. Has no effect when A is the world.
+   */
+  collideConnected?: boolean;
+}
+
+/** The option keys every joint takes (JointBaseOptions), for each add call's check of unknown keys. */
+export const BASE_KEYS = ['a', 'b', 'breakForce', 'breakTorque', 'collideConnected'] as const;
+
+/** A joint's bodies: entity slots, 0 for the fixed world. */
+export interface Ends {
+  a: number;
+  b: number;
+}
+
+/**
+ * A break limit: a number > 0, Infinity (the default: never breaks) included. @throws TypeError | RangeError
+ * @category Joints and ropes
+ */
+export function assertBreakLimit(where: string, param: string, value: unknown): void {
+  if (typeof value !== 'number') throw new TypeError(`${where}: ${param} must be a number, got ${describe(value)}`);
+  if (!(value > 0)) throw new RangeError(`${where}: ${param} must be > 0 (Infinity: never breaks), got ${describe(value)}`);
+}
+
+/** The slot of body `id` (param `param` of `where`): an entity with position, mass and an angle (2D) or orientation (3D). @throws RangeError otherwise. */
+function requireBody(where: string, param: string, world: PhysicsWorld, id: unknown, dims: 2 | 3): number {
+  const slot = resolveEntity(world, id, where, param);
+  const c = world.components;
+  if (
+    !hasComponent(world, slot, c.Position) ||
+    !hasComponent(world, slot, c.Mass) ||
+    !hasComponent(world, slot, dims === 2 ? c.Angle : c.Orientation)
+  ) {
+    throw new RangeError(
+      dims === 2
+        ? `${where}: ${param} must be a body with position, mass and angle (made by addBody), got entity ${describe(id)}`
+        : `${where}: ${param} must be a 3D body with position, mass and orientation (addBody, addShape3D), got entity ${describe(id)}`,
+    );
+  }
+  return slot;
+}
+
+/**
+ * Checks a joint's world (of `dims` dimensions), its options object, the option keys (`keys` besides
+ * JointBaseOptions', when given), its `a` and `b` (a may be omitted or null: the world), its break
+ * limits and collideConnected; returns the bodies' slots.
+ * @throws TypeError | RangeError naming `where`, the parameter and the value.
+ */
+export function checkEnds(where: string, world: PhysicsWorld, options: JointBaseOptions, dims: 2 | 3, keys?: readonly string[]): Ends {
+  if (world.dimensions !== dims) {
+    const what = dims === 2 ? 'joints need a 2D' : '3D joints need a 3D';
+    throw new RangeError(`${where}: ${what} world, this world has ${world.dimensions} dimensions`);
+  }
+  if (options === undefined || options === null || typeof options !== 'object') {
+    throw new TypeError(`${where}: options must be an object with body b, got ${describe(options)}`);
+  }
+  if (keys !== undefined) assertKnownKeys(where, options, [...BASE_KEYS, ...keys], ['a']);
+  const a = options.a === undefined || options.a === null ? 0 : requireBody(where, 'a', world, options.a, dims);
+  const b = requireBody(where, 'b', world, options.b, dims);
+  if (a === b) throw new RangeError(`${where}: a and b must be different bodies, got ${describe(options.a)} twice`);
+  if (options.breakForce !== undefined) assertBreakLimit(where, 'breakForce', options.breakForce);
+  if (options.breakTorque !== undefined) assertBreakLimit(where, 'breakTorque', options.breakTorque);
+  assertOptionalBoolean(where, 'collideConnected', options.collideConnected);
+  return { a, b };
+}
+
+/**
+ * A distance joint's limits [minLength, maxLength] around its rest `length` (m, already checked > 0):
+ * as given, or by default both `length` (a rod) without a spring, 0 and Infinity with one.
+ * @throws RangeError naming `where` unless 0 <= minLength <= length <= maxLength.
+ */
+export function lengthLimits(where: string, length: number, spring: boolean, minLength: unknown, maxLength: unknown): [number, number] {
+  const minL = minLength ?? (spring ? 0 : length),
+    maxL = maxLength ?? (spring ? Infinity : length);
+  assertNonNegative(where, 'minLength', minL);
+  if (!(minL <= length)) throw new RangeError(`${where}: minLength must be <= length (${length}), got ${describe(minL)}`);
+  if (typeof maxL !== 'number' || Number.isNaN(maxL) || !(maxL >= length))
+    throw new RangeError(`${where}: maxLength must be >= length (${length}), got ${describe(maxL)}`);
+  return [minL, maxL];
+}
