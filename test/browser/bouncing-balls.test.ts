@@ -449,8 +449,8 @@ describe('bouncing balls: the hoop game', () => {
     expect(under.top).toBeGreaterThan(under.rim - 1.1 - 0.05);
     // The aiming arc bounces: pressed low in the box's right half and pulled left and down, the throw
     // goes right into the wall and the arc comes back off it (it used to end at the wall).
-    const press = await g.worldToPage(12, 3),
-      pull = await g.worldToPage(10.5, 2.5);
+    const press = await g.worldToPage(9, 2),
+      pull = await g.worldToPage(6, 1.7);
     await g.page.mouse.move(press.x, press.y);
     await g.page.mouse.down();
     await g.page.mouse.move(pull.x, pull.y, { steps: 4 });
