@@ -65,7 +65,7 @@ export const HOOP_SPOTS: readonly HoopSpot[] = Object.freeze([
 
 /** Hoop spots of the tall 10 x 16 m box (scene.ts BOX_TALL), chosen as HOOP_SPOTS are: low enough to reach from the lower box. */
 export const HOOP_SPOTS_TALL: readonly HoopSpot[] = Object.freeze([
-  { x: 7.8, y: 8.5, side: 1 },
+  { x: 7.8, y: 9, side: 1 },
   { x: 2, y: 6, side: -1 },
   { x: 8.2, y: 4, side: 1 },
   { x: 2, y: 7, side: -1 },
