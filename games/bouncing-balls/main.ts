@@ -475,7 +475,7 @@ canvas.addEventListener('pointerdown', (event) => {
   dragged = false;
   holdStart = performance.now();
   clearTimeout(holdTimer);
-  const { clientX, clientY, pointerId: id, pointerType } = event;
+  const { clientX, clientY, pointerId: id, pointerType, timeStamp } = event;
   holdTimer = window.setTimeout(() => {
     if (pointerId !== id || dragged) return;
     // Still and pressed: hand the pointer to the drag. A press beside every body grabs nothing and
@@ -483,8 +483,27 @@ canvas.addEventListener('pointerdown', (event) => {
     grabbing = true;
     canvas.dispatchEvent(new PointerEvent('pointerdown', { clientX, clientY, pointerId: id, pointerType, button: 0, bubbles: true }));
     grabbing = false;
-    if (drag.joint !== 0) pointerId = -1;
+    if (drag.joint !== 0) {
+      pointerId = -1;
+      heldFrom = { id, timeStamp };
+    }
   }, HOLD_MS);
+});
+/**
+ * The press the hold handed to the drag: its pointer and when it went down (event time, ms). A busy
+ * page may run the hold's timer after moves that came sooner: a move made within HOLD_MS of the
+ * press (by its event time) takes the press back from the drag, a throw after all.
+ */
+let heldFrom = { id: -1, timeStamp: 0 };
+canvas.addEventListener('pointermove', (event) => {
+  if (event.pointerId !== heldFrom.id || drag.joint === 0 || event.timeStamp - heldFrom.timeStamp >= HOLD_MS) return;
+  const [x, y] = local(event);
+  if (Math.hypot(x - startX, y - startY) <= CLICK_SLOP) return;
+  drag.release();
+  heldFrom.id = -1;
+  pointerId = event.pointerId;
+  [lastX, lastY] = [x, y];
+  dragged = true;
 });
 /** When the current press began, performance.now() ms (for the hold ring). */
 let holdStart = 0;
