@@ -49,22 +49,27 @@ export interface HoopSpot {
   readonly side: 1 | -1;
 }
 
-/** Hoop spots of the wide 16 x 10 m box (scene.ts BOX), in the order they come: clear of its inclined walls. */
+/**
+ * Hoop spots of the wide 16 x 10 m box (scene.ts BOX), in the order they come: clear of its inclined
+ * walls, rims 3 m or more under the top (room for an arc over the rim), and each reachable by a clean
+ * throw with room for error from a fifth or more of the lower box (reach.ts; measured by
+ * scripts/bouncing-balls-reach.mjs).
+ */
 export const HOOP_SPOTS: readonly HoopSpot[] = Object.freeze([
-  { x: 13.4, y: 7.4, side: 1 },
-  { x: 2.4, y: 8, side: -1 },
-  { x: 11.6, y: 5.8, side: 1 },
-  { x: 4.2, y: 2.8, side: -1 },
-  { x: 10.8, y: 8, side: 1 },
+  { x: 13, y: 6, side: 1 },
+  { x: 2.4, y: 6, side: -1 },
+  { x: 10.5, y: 5, side: 1 },
+  { x: 6.5, y: 4.5, side: -1 },
+  { x: 12.6, y: 6.6, side: 1 },
 ]);
 
-/** Hoop spots of the tall 10 x 16 m box (scene.ts BOX_TALL). */
+/** Hoop spots of the tall 10 x 16 m box (scene.ts BOX_TALL), chosen as HOOP_SPOTS are: low enough to reach from the lower box. */
 export const HOOP_SPOTS_TALL: readonly HoopSpot[] = Object.freeze([
-  { x: 7.6, y: 12.6, side: 1 },
-  { x: 2.2, y: 13.6, side: -1 },
-  { x: 7.8, y: 8.6, side: 1 },
-  { x: 2.2, y: 7.4, side: -1 },
-  { x: 5.8, y: 13.6, side: 1 },
+  { x: 7.8, y: 9, side: 1 },
+  { x: 2, y: 6, side: -1 },
+  { x: 8.2, y: 4, side: 1 },
+  { x: 2, y: 7, side: -1 },
+  { x: 4.6, y: 7, side: 1 },
 ]);
 
 /** The spots of a layout (`tall` for the upright box). */

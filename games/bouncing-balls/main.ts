@@ -7,12 +7,14 @@
  * localStorage; R or the Play-again button starts a new round. The status row above the box says
  * the goal and shows baskets, time and best.
  *
- * Input: press on a ball or crate and drag to pull it (a mouse joint); anywhere else a click drops a
- * ball at the pointer, and a pull throws one slingshot-style from where the press began (opposite to
+ * Input: a click drops a ball at the pointer, and a pull throws one slingshot-style from where the
+ * press began, on a ball or not (opposite to
  * the pull, faster the longer it is, hoop.ts slingVelocity), with a dotted arc of its flight while
  * pulling (hoop.ts throwPath), bounces off the walls, the hoop and its net included. The net stops a
  * ball from below or the side (hoop.ts netContact). The player's balls are basketballs, all the same
- * size (hoop.ts PLAYER_RADIUS). When time is up, the Play-again button floats at the top of the box,
+ * size (hoop.ts PLAYER_RADIUS). Holding still on a ball or crate for HOLD_MS (a ring fills) picks it
+ * up with a mouse joint to pull it around. Knocks: the loudest few collisions a step (knocks.ts), so
+ * a pile does not roar. When time is up, the Play-again button floats at the top of the box,
  * clear of the balls piled at its bottom.
  *
  * Looks: a court (a wall with panels over a wooden floor, the box framed in steel), wooden ramps,
@@ -64,6 +66,7 @@ import {
   slingVelocity,
   throwPath,
 } from './hoop';
+import { createKnockLimiter, KNOCK_LIMITS } from './knocks';
 import {
   applyDrag,
   applyGravity,
@@ -270,17 +273,21 @@ function applyNet(world: PhysicsWorld): void {
 /** Half the hoop's width with its net, m (for applyNet's quick test). */
 const HOOP_HALF_SPAN = 1.5;
 
-/** One step, then a knock for each impact: loudness from its impulse, the harder of the two materials. */
+/** Which impacts are heard (knocks.ts): the loudest few a step, a cooldown per body, a budget a second. */
+const knocks = createKnockLimiter(KNOCK_LIMITS);
+
+/** One step, then a knock for each impact the limiter keeps: loudness from its impulse, the harder of the two materials. */
 function stepWorld(world: PhysicsWorld): void {
   step(world);
   applyNet(world);
   playHoop(world);
-  forEachImpact(world, (a, b, impulse) => {
+  forEachImpact(world, (a, b, impulse) => knocks.offer(a, b, impulse));
+  for (const { a, b, impulse } of knocks.take(world.time)) {
     const ma = materialOf(world, a),
       mb = materialOf(world, b);
     const m = ma === 'metal' || mb === 'metal' ? 'metal' : ma === 'wood' || mb === 'wood' ? 'wood' : ma === 'soft' ? mb : ma;
-    sound.impact(impulse, m, { threshold: 0.5, loud: 20 });
-  });
+    sound.impact(impulse, m, { threshold: 0.5 * KNOCK_LIMITS.minImpulse, loud: 20 });
+  }
 }
 
 const game = await startPixiGame({
@@ -290,8 +297,8 @@ const game = await startPixiGame({
   bodies: () => handles.balls.length,
   controls: [
     { keys: 'Drag', action: 'pull back and let go: throw a ball (through the hoop scores)' },
-    { keys: 'Click', action: 'drop a ball (empty space)' },
-    { keys: 'Drag a body', action: 'pull a ball or crate' },
+    { keys: 'Click', action: 'drop a ball' },
+    { keys: 'Hold on a ball', touch: 'Hold on a ball', action: 'pick it (or a crate) up, then drag it' },
     { keys: 'R', action: 'new round (and reset)' },
     { keys: 'T', action: 'trails on / off' },
     { keys: 'D', action: 'debug: velocities, contacts' },
@@ -406,18 +413,26 @@ const panel = createPanel(
   { title: 'Bouncing balls' },
 );
 
-// ---- Pointer: a press on a body drags it; elsewhere a click drops, a drag throws -----------------
+// ---- Pointer: a click drops, a drag throws; holding still on a body picks it up -----------------
 
 const canvas = app.canvas;
-// Registered before the drop/throw listeners, so a press that grabs a body is seen as taken there.
+/**
+ * True only while the long press hands its pointer to the mouse-joint drag (a synthetic press): a
+ * real press never grabs, so a throw started on a ball (balls still falling at a round's start, a
+ * crowded phone box) throws instead of dragging that ball away.
+ */
+let grabbing = false;
 // Reach 0.6 mean radii: a ball grabs within that of its edge, a crate (a box, no radius) within that of
-// its centre, so a press between the balls (a phone's box is crowded with them) throws rather than grabs.
+// its centre.
 const drag = enableMouseDrag(
   canvas,
   () => shell.world,
   () => renderer.camera,
-  { reach: 0.6 * meanRadiusFor(params.count) },
+  { reach: 0.6 * meanRadiusFor(params.count), enabled: () => grabbing },
 );
+/** Holding still this long, ms, on a ball or crate picks it up (a long press) instead of dropping a ball. */
+const HOLD_MS = 450;
+let holdTimer = 0;
 
 const overlay = new Graphics({ label: 'pointer' });
 app.stage.addChild(overlay);
@@ -451,14 +466,62 @@ function currentThrow(): { x: number; y: number; vx: number; vy: number } {
 }
 
 canvas.addEventListener('pointerdown', (event) => {
-  if (event.button !== 0 || pointerId !== -1 || drag.joint !== 0) return;
+  if (grabbing || event.button !== 0 || pointerId !== -1 || drag.joint !== 0) return;
   pointerId = event.pointerId;
   canvas.setPointerCapture(event.pointerId);
   [startX, startY] = local(event);
   lastX = startX;
   lastY = startY;
   dragged = false;
+  holdStart = performance.now();
+  clearTimeout(holdTimer);
+  const { clientX, clientY, pointerId: id, pointerType, timeStamp } = event;
+  holdTimer = window.setTimeout(() => {
+    if (pointerId !== id || dragged) return;
+    // Still and pressed: hand the pointer to the drag. A press beside every body grabs nothing and
+    // stays a click (a dropped ball on release).
+    grabbing = true;
+    canvas.dispatchEvent(new PointerEvent('pointerdown', { clientX, clientY, pointerId: id, pointerType, button: 0, bubbles: true }));
+    grabbing = false;
+    if (drag.joint !== 0) {
+      pointerId = -1;
+      heldFrom = { id, timeStamp };
+    }
+  }, HOLD_MS);
 });
+/**
+ * The press the hold handed to the drag: its pointer and when it went down (event time, ms). A busy
+ * page may run the hold's timer after moves that came sooner: a move made within HOLD_MS of the
+ * press (by its event time) takes the press back from the drag, a throw after all.
+ */
+let heldFrom = { id: -1, timeStamp: 0 };
+canvas.addEventListener('pointermove', (event) => {
+  if (event.pointerId !== heldFrom.id || drag.joint === 0 || event.timeStamp - heldFrom.timeStamp >= HOLD_MS) return;
+  const [x, y] = local(event);
+  if (Math.hypot(x - startX, y - startY) <= CLICK_SLOP) return;
+  drag.release();
+  heldFrom.id = -1;
+  pointerId = event.pointerId;
+  [lastX, lastY] = [x, y];
+  dragged = true;
+});
+/** When the current press began, performance.now() ms (for the hold ring). */
+let holdStart = 0;
+
+/** Whether a ball or crate is within the drag's reach of (x, y), m (a long press there picks it up). */
+function bodyUnder(x: number, y: number): boolean {
+  const c = shell.world.components,
+    reach = 0.6 * meanRadiusFor(params.count);
+  for (const e of handles.balls) {
+    const s = slotOf(e);
+    if (Math.hypot(c.Position.x[s]! - x, c.Position.y[s]! - y) - c.Ball.radius[s]! <= reach) return true;
+  }
+  for (const e of crates) {
+    const s = slotOf(e);
+    if (Math.hypot(c.Position.x[s]! - x, c.Position.y[s]! - y) <= reach) return true;
+  }
+  return false;
+}
 
 canvas.addEventListener('pointermove', (event) => {
   if (event.pointerId !== pointerId) return;
@@ -470,6 +533,7 @@ canvas.addEventListener('pointermove', (event) => {
 function release(event: PointerEvent, cancelled: boolean): void {
   if (event.pointerId !== pointerId) return;
   pointerId = -1;
+  clearTimeout(holdTimer);
   if (cancelled) return;
   [lastX, lastY] = local(event);
   const t = currentThrow();
@@ -542,6 +606,11 @@ function drawPointer(): void {
   const color = scores ? PLAYER_COLOR : HIGH_COLOR;
   if (!dragged) {
     overlay.circle(startX, startY, r).stroke({ width: 2, color: 0xffffff, alpha: 0.6 });
+    // On a ball or crate: a ring fills while the press is held, picking it up when full.
+    if (bodyUnder(cam.toWorldX(startX), cam.toWorldY(startY))) {
+      const f = Math.min(1, (performance.now() - holdStart) / HOLD_MS);
+      overlay.arc(startX, startY, r + 6, -Math.PI / 2, -Math.PI / 2 + 2 * Math.PI * f).stroke({ width: 4, color: 0xffd166, alpha: 0.9 });
+    }
     return;
   }
   overlay.moveTo(startX, startY).lineTo(lastX, lastY).stroke({ width: 3, color: 0xffffff, alpha: 0.6 });
@@ -634,6 +703,7 @@ function drawHoop(): void {
     popText.alpha = 1 - f;
   }
   updateStatus();
+  placeTouchHint();
 }
 
 /**
@@ -768,6 +838,20 @@ function drawBasketballs(alpha: number, world: PhysicsWorld): void {
 
 const status = createStatusRow({ name: 'hoop' });
 const touch = pageLayout().touch();
+// On a phone game-kit's touch hint card sits over the bottom of the stage: the floor, where the balls
+// pile and a throw starts. Here it goes just under the top of the box instead, empty once the starting
+// balls have fallen (it fades at the first touch anyway); placed each frame while it shows, as the
+// status row above the box may still move the canvas.
+const touchHint = document.querySelector<HTMLElement>('[data-hud="touch-hint"]');
+/** Keeps the touch hint card 10 px under the top of the box (while it is on the page). */
+function placeTouchHint(): void {
+  if (!touchHint?.isConnected || !touchHint.offsetParent) return;
+  const top = canvas.getBoundingClientRect().top - touchHint.offsetParent.getBoundingClientRect().top;
+  touchHint.style.bottom = 'auto';
+  touchHint.style.top = `${Math.round(top + renderer.camera.toScreenY(layoutOf(TALL).box.max[1]) + 10)}px`;
+}
+placeTouchHint();
+
 /** The big Play-again button when time is up: over the top of the box, clear of the balls piled at its bottom. */
 const setAction = createActionButton('Play again ▶', () => shell.reset(), { at: 'top' });
 

@@ -54,21 +54,25 @@ export type BouncingBallsParams = Required<BouncingBallsOptions>;
 /** Inner corners of the box, m. */
 export const BOX = Object.freeze({ min: [0, 0] as const, max: [16, 10] as const });
 
-/** The inclined walls, m: [ax, ay, bx, by]. Each has at least one free end point balls can hit. */
+/**
+ * The inclined walls, m: [ax, ay, bx, by]. Each has at least one free end point balls can hit. Short
+ * and kept to the sides and the top, so they leave open lanes from the lower box to the hoops
+ * (hoop.ts HOOP_SPOTS): a long ramp across the middle blocked every throw at some hoops.
+ */
 export const SEGMENTS: readonly (readonly [number, number, number, number])[] = Object.freeze([
-  [0, 6.3, 6.2, 4.7],
-  [16, 4.4, 9.6, 2.9],
-  [6.6, 7.1, 8.9, 7.6],
+  [0, 4.3, 3.8, 3.3],
+  [16, 3.9, 11.6, 2.8],
+  [6.6, 8.4, 8.6, 8.8],
 ]);
 
 /** The tall layout's box, m: as much room as BOX, turned upright. */
 export const BOX_TALL = Object.freeze({ min: [0, 0] as const, max: [10, 16] as const });
 
-/** The tall layout's inclined walls, m: ramps from each side wall in turn, and a floating bar. */
+/** The tall layout's inclined walls, m: ramps from each side wall in turn, and a floating bar; short, as SEGMENTS are. */
 export const SEGMENTS_TALL: readonly (readonly [number, number, number, number])[] = Object.freeze([
-  [0, 10.6, 6.2, 9.1],
-  [10, 6.6, 3.8, 5.1],
-  [1.6, 2.6, 3.9, 3.1],
+  [0, 11.4, 3.6, 10.5],
+  [10, 6.8, 6.4, 5.9],
+  [1.4, 3.0, 3.4, 3.4],
 ]);
 
 /** A box's inner corners, m. */

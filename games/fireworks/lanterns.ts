@@ -87,12 +87,15 @@ export interface LanternLevel {
  * (3 seeds, 64 m phone sky and 120 m desktop sky, every 0.01 W, five holds), searched for the fewest
  * shells; "spray" is the chance that par shells at random points of the band, at random holds,
  * light everything.
- * 1. Quick shells only, three lanterns 0.4 W apart: one shell each (spray 3-6 %).
+ * 1. Quick shells only, four lanterns: two far apart, one shell each, and a close pair (0.18 W) a
+ *    quick burst right between lights together: par 3, not 4 (the playtest's "no skill" with three
+ *    lanterns, one shell each; the tip does not say it, the par and the lit count do).
  * 2. Two pairs 0.4 W apart: only a held burst between a pair lights both (0.2 W away, beyond a
  *    quick burst's 0.17); the two middle lanterns, one above the other, are an easy pair that leaves
- *    the outer two for a shell each (3, not 2). Spray 0-0.2 %.
+ *    the outer two for a shell each (3, not 2). Spray 0-0.2 %. The tip says only that a hold makes
+ *    a bigger burst: which lanterns pair up is for the player to see.
  * 3. Quick shells only, drifting lanterns: lead them by the fuse (spray 4-7 %; two shells can do it
- *    when two swing close).
+ *    when two swing close). The page draws each one's ghost where it will be when the fuse runs out.
  * 4. Willows only: their stars rise little and fall far, so a burst at the top of a column of two
  *    (0.26 W apart) lights both, and a burst between columns lights neither pair (spray 0.2-0.6 %).
  * 5. Three lanterns high and two that drift towards each other low: when the low two meet, one burst
@@ -107,19 +110,22 @@ export const LEVELS: readonly LanternLevel[] = Object.freeze([
     hold: false,
     lanterns: [
       { x: 0.1, y: -0.04 },
-      { x: 0.5, y: 0.12 },
+      { x: 0.44, y: 0.12 },
+      { x: 0.62, y: 0.12 },
       { x: 0.9, y: -0.04 },
     ],
-    // At least 0.7 W apart: a burst lights one.
+    // The close pair 0.18 W apart, the others 0.45 W or more from every lantern: a burst on one
+    // lantern lights one, a burst right between the pair lights both.
     tall: [
       { x: 0.15, y: 0.38 },
-      { x: 0.85, y: 0.1 },
+      { x: 0.66, y: 0.1 },
+      { x: 0.84, y: 0.1 },
       { x: 0.35, y: -0.42 },
     ],
   },
   {
     name: 'Pairs',
-    tip: 'and hold between two lanterns',
+    tip: 'and hold: a bigger burst',
     par: 2,
     shell: 'peony',
     hold: true,
@@ -141,7 +147,7 @@ export const LEVELS: readonly LanternLevel[] = Object.freeze([
   },
   {
     name: 'Drifting',
-    tip: 'ahead of a lantern: 2 s fuse',
+    tip: 'on a ghost: the lantern in 2 s',
     par: 3,
     shell: 'peony',
     hold: false,

@@ -4,7 +4,9 @@
  * stars a level against its par (best stars kept in localStorage). A lantern lights when a burst's
  * hot stars touch it; the charging ring drawn while the button is held shows how far they get (hold
  * longer for a bigger burst, on the levels that allow it); drifting lanterns must be led by the 2 s
- * fuse; each level gives one kind of shell. A lit lantern's glow comes up over half a second; the
+ * fuse, and a dashed ghost of each, with a dotted trail along its swing, shows where it will be when
+ * a shell launched now bursts; each level gives one kind of shell. On a touch screen the row's
+ * Free-play button is 44 px tall or more (a finger's target). A lit lantern's glow comes up over half a second; the
  * level shows as lit (the row's banner, the stars, the Next-level button) 1.2 s after its last
  * lantern lit, when every glow is full (./lanterns.ts clearShown). On a phone held upright the levels
  * play their tall layouts, spread over the screen's height. The sky starts dark (no opening salvo)
@@ -635,6 +637,27 @@ function glowSprite(k: number): Sprite {
   return glowSprites[k]!;
 }
 
+/** Dots of the trail from a drifting lantern to its ghost (the last one is the ghost). */
+const GHOST_DOTS = 8;
+
+/** A lantern's ghost at (x, y), px, radius r px: its outline in 12 dashes and a cross at its centre, pale. */
+function drawGhost(x: number, y: number, r: number): void {
+  for (let a = 0; a < 24; a += 2) {
+    overlay.moveTo(x + 0.8 * r * Math.cos((a * Math.PI) / 12), y + r * Math.sin((a * Math.PI) / 12));
+    for (let b = 1; b <= 3; b++) {
+      const u = ((a + b / 3) * Math.PI) / 12;
+      overlay.lineTo(x + 0.8 * r * Math.cos(u), y + r * Math.sin(u));
+    }
+  }
+  overlay.stroke({ width: 2, color: 0xffc07a, alpha: 0.75 });
+  overlay
+    .moveTo(x - 0.3 * r, y)
+    .lineTo(x + 0.3 * r, y)
+    .moveTo(x, y - 0.3 * r)
+    .lineTo(x, y + 0.3 * r);
+  overlay.stroke({ width: 1.5, color: 0xffc07a, alpha: 0.6 });
+}
+
 /**
  * Draws the level's lanterns. Unlit: dark red paper with a thin orange rim. Lit: the paper glows
  * from a white-hot core through gold to orange, with a flickering warm halo and a faint wash of light
@@ -692,6 +715,18 @@ function drawLanterns(world: PhysicsWorld): void {
       .lineTo(x, y + 1.45 * r)
       .stroke({ width: 2, color: run.lit[i] ? 0xffb040 : 0x8a3a1a });
   }
+  // Where each unlit drifting lantern will be when a shell launched now bursts (FUSE later): a dotted
+  // trail along its swing to a dashed ghost there, so leading it by the fuse can be seen and learnt.
+  for (const [i, l] of lanternsOf(run.level, sky).entries()) {
+    if (run.lit[i] || !l.drift || run.stars !== 0) continue;
+    for (let k = 1; k <= GHOST_DOTS; k++) {
+      const [px, py] = lanternAt(l, sky, t - run.start + (FUSE * k) / GHOST_DOTS);
+      const x = cam.toScreenX(px),
+        y = cam.toScreenY(py);
+      if (k < GHOST_DOTS) overlay.circle(x, y, 1.6).fill({ color: 0xffc07a, alpha: 0.25 + (0.35 * k) / GHOST_DOTS });
+      else drawGhost(x, y, r);
+    }
+  }
   for (const g of lightings) {
     const age = t - g.time;
     if (age < 0 || age > 0.9) continue;
@@ -706,6 +741,11 @@ modeButton.type = 'button';
 modeButton.addEventListener('click', () => setLanternShow(!lanternShow));
 status.hint.append(modeButton);
 const touch = pageLayout().touch();
+// A finger's target: 44 x 44 px at least on a touch screen (game-kit's row buttons are 36 px tall there).
+if (touch) {
+  modeButton.style.minHeight = '44px';
+  modeButton.style.minWidth = '44px';
+}
 /** The big Next-level (or Play-again) button over the sky once a level is lit. */
 const setAction = createActionButton('Next level ▶', () => nextLevel());
 

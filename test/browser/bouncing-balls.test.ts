@@ -4,7 +4,7 @@
  * aiming arc bounces off a wall, time up offers Play again over the top of the box; a pull on a phone
  * shows the aiming arc, throws and starts the clock), the court's looks (no trails, no plain physics
  * walls), and the sandbox: a click and a slingshot pull
- * on empty space spawn balls, a press on a ball drags it, P pauses (nothing moves while
+ * spawn balls (a quick pull that starts on a ball throws too), holding still on a ball drags it, P pauses (nothing moves while
  * paused, motion resumes after), N advances exactly one step, R rebuilds the same seeded scene.
  * The tests share one page with a small ball count (?count=8); before each, the game is reset
  * (window.game.reset(), unpaused) and the page's error list emptied, so each starts from the
@@ -269,7 +269,7 @@ describe('bouncing balls', () => {
     expect(await g.page.locator('.bp-side').isVisible()).toBe(false);
   });
 
-  it('a press on a ball drags it through a mouse joint (no ball added), and release lets go', async () => {
+  it('a quick pull that starts on a ball throws; holding still on a ball picks it up (a mouse joint, no ball added), and release lets go', async () => {
     const g = await open();
     // Paused while the ball is found and pressed (a loaded machine let it fall out from under the pointer).
     await g.press('p');
@@ -289,9 +289,25 @@ describe('bouncing balls', () => {
         [x, y] as const,
       );
     const from = await screen(start.x, start.y);
+    // A pull that starts on the ball at once: a throw from there (a new ball), the ball left where it was.
+    const side = await screen(start.x < 8 ? start.x - 1.5 : start.x + 1.5, start.y);
     await g.page.mouse.move(from.x, from.y);
     await g.page.mouse.down();
-    const held = await g.page.evaluate(() => (window.game as unknown as { drag: { joint: number } }).drag.joint);
+    await g.page.mouse.move(side.x, side.y, { steps: 3 });
+    expect(await g.page.evaluate(() => (window.game as unknown as { drag: { joint: number } }).drag.joint)).toBe(0);
+    await g.page.mouse.up();
+    const thrown = await g.waitFor((n) => {
+      const game = window.game as unknown as BallsGame & { remove(id: number): void };
+      const ids = game.ballIds();
+      if (ids.length !== n + 1) return null;
+      game.remove(ids.at(-1)!);
+      return game.positions().slice(0, 2);
+    }, COUNT);
+    expect(thrown).toEqual([start.x, start.y]);
+    // Held still on the ball: the hold (0.45 s) hands the pointer to the drag.
+    await g.page.mouse.move(from.x, from.y);
+    await g.page.mouse.down();
+    const held = await g.waitFor(() => (window.game as unknown as { drag: { joint: number } }).drag.joint || null, null);
     expect(held).toBeGreaterThan(0);
     await g.press('p');
     // Pull to a point 2 m to the side at height 8 m (inside the 16 x 10 m box): free motion would keep
@@ -449,8 +465,8 @@ describe('bouncing balls: the hoop game', () => {
     expect(under.top).toBeGreaterThan(under.rim - 1.1 - 0.05);
     // The aiming arc bounces: pressed low in the box's right half and pulled left and down, the throw
     // goes right into the wall and the arc comes back off it (it used to end at the wall).
-    const press = await g.worldToPage(12, 3),
-      pull = await g.worldToPage(10.5, 2.5);
+    const press = await g.worldToPage(9, 2),
+      pull = await g.worldToPage(6, 1.7);
     await g.page.mouse.move(press.x, press.y);
     await g.page.mouse.down();
     await g.page.mouse.move(pull.x, pull.y, { steps: 4 });
@@ -491,6 +507,10 @@ describe('bouncing balls: the hoop game', () => {
     const row = (await status.boundingBox())!;
     const top = await g.worldToPage(0, 16);
     expect(row.y + row.height).toBeLessThanOrEqual(top.y + 1);
+    // The touch hint card sits under the top of the box, clear of its floor (the lower 12 m of 16) where balls pile.
+    const card = (await g.page.locator('[data-hud="touch-hint"]').boundingBox())!;
+    expect(card.y).toBeGreaterThanOrEqual(top.y - 1);
+    expect(card.y + card.height).toBeLessThan((await g.worldToPage(0, 12)).y);
     const n0 = await g.page.evaluate(() => (window.game as unknown as HoopGame).ballIds().length);
     // Pressed 4 m above the floor, left of the box's middle, and pulled down and to the left: while
     // pulling, the dotted arc rises to the right from the press point; let go, the ball flies that way.

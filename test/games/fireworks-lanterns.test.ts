@@ -26,7 +26,7 @@ import {
   startLevel,
   TALL_BAND_MIDDLE,
 } from '../../games/fireworks/lanterns';
-import { burstScale, createFireworks, launchShell, MAX_HOLD, stepFireworks } from '../../games/fireworks/show';
+import { burstScale, createFireworks, FUSE, launchShell, MAX_HOLD, stepFireworks } from '../../games/fireworks/show';
 
 /** A phone's sky (the page gives a 390 x 844 phone about 64 x 108 m) and the desktop's. */
 
@@ -35,14 +35,16 @@ const desktop = { width: 120, height: 80 };
 
 /**
  * Fires one shell of level `level`'s kind towards (x, y), m, held `hold` s, in a fresh show of the
- * phone's sky, and runs 5 s (the burst at 2 s, its stars cold by 4.5 s) lighting lanterns as the page
- * does. @returns which lanterns are lit.
+ * phone's sky (and one more towards each point of `more`), and runs 5 s (the burst at 2 s, its
+ * stars cold by 4.5 s) lighting lanterns as the page does. @returns which lanterns are lit.
  */
-function fire(level: number, x: number, y: number, hold: number): boolean[] {
+function fire(level: number, x: number, y: number, hold: number, ...more: [number, number][]): boolean[] {
   const { world, show } = createFireworks({ sky: phone, opening: 0, autoShow: false, generations: 1, seed: 5 });
   const run = startLevel(level, 0);
-  expect(launchShell(world, show, x, y, hold, LEVELS[level]!.shell)).toBeGreaterThan(0);
-  countShell(run);
+  for (const [px, py] of [[x, y], ...more]) {
+    expect(launchShell(world, show, px!, py!, hold, LEVELS[level]!.shell)).toBeGreaterThan(0);
+    countShell(run);
+  }
   for (let i = 0; i < 300; i++) {
     stepFireworks(world, show);
     lightFromSparks(world, show, run);
@@ -92,7 +94,7 @@ describe('lantern rules', () => {
     const W = phone.width,
       rho = lanternRadius(W) / W;
     const groups: number[][][] = [
-      [],
+      [[1, 2]],
       [
         [0, 1],
         [2, 3],
@@ -145,19 +147,20 @@ describe('lantern rules', () => {
     starAt(run, phone, ...lanternAt(ls[1]!, phone, 0), 2);
     expect(glowOf(run, 1, 2 + GLOW_RISE / 2)).toBeCloseTo(0.5, 12);
     expect(glowOf(run, 2, 2)).toBe(0);
-    starAt(run, phone, ...lanternAt(ls[2]!, phone, 0), 3);
+    starAt(run, phone, ...lanternAt(ls[2]!, phone, 0), 2.5);
+    starAt(run, phone, ...lanternAt(ls[3]!, phone, 0), 3);
     expect(run.stars).toBe(3);
     expect(clearShown(run, 3)).toBe(false);
     expect(clearShown(run, 3 + CLEAR_DELAY - 0.02)).toBe(false);
     expect(clearShown(run, 3 + CLEAR_DELAY)).toBe(true);
-    for (let i = 0; i < 3; i++) expect(glowOf(run, i, 3 + CLEAR_DELAY)).toBe(1);
+    for (let i = 0; i < 4; i++) expect(glowOf(run, i, 3 + CLEAR_DELAY)).toBe(1);
   });
   it('a hot star lights the lanterns it touches (within a radius of the centre), not one just beyond', () => {
     const run = startLevel(0, 0);
     const [x, y] = lanternAt(lanternsOf(0, phone)[1]!, phone, 0);
     expect(starAt(run, phone, x + 3.45, y, 0)).toEqual([]);
     expect(starAt(run, phone, x + 3.35, y, 0)).toEqual([1]);
-    expect(run.lit).toEqual([false, true, false]);
+    expect(run.lit).toEqual([false, true, false, false]);
     expect(starAt(run, phone, x, y, 0)).toEqual([]); // already lit
   });
   it('the charging ring: a held burst reaches 1.57 times as far as a quick one; willows droop further than peonies', () => {
@@ -181,10 +184,21 @@ describe('lantern rules', () => {
 });
 
 describe('real shells in the show (64 m x 108 m phone sky, 300 stars a burst)', () => {
-  it('level 1: a shell fired at a lantern lights it and no other; one fired 0.3 W above it lights nothing', () => {
-    const [x, y] = lanternAt(lanternsOf(0, phone)[1]!, phone, 0);
-    expect(fire(0, x, y, 0)).toEqual([false, true, false]);
-    expect(fire(0, x, y + 0.3 * phone.width, 0)).toEqual([false, false, false]);
+  it('level 1: a shell fired at a lone lantern lights it and no other; one 0.3 W above it lights nothing; one right between the close pair lights both', () => {
+    const ls = lanternsOf(0, phone);
+    const [x, y] = lanternAt(ls[0]!, phone, 0);
+    const [a, b] = [lanternAt(ls[1]!, phone, 0), lanternAt(ls[2]!, phone, 0)];
+    const [fx, fy] = lanternAt(ls[3]!, phone, 0);
+    // Three shells in one show, far enough apart not to reach each other's lanterns: lantern 0 lit,
+    // the pair lit by the one between them, lantern 3 (the shell 0.3 W above it) not.
+    expect(fire(0, x, y, 0, [(a[0] + b[0]) / 2, (a[1] + b[1]) / 2], [fx, fy + 0.3 * phone.width])).toEqual([true, true, true, false]);
+  });
+  it("level 3: a shell fired at each drifting lantern's ghost (where it will be after the fuse, as the page draws it) lights it; one fired at the lantern does not", () => {
+    const ls = lanternsOf(2, phone);
+    const ghosts = ls.map((l) => lanternAt(l, phone, FUSE));
+    expect(fire(2, ...ghosts[0]!, 0, ghosts[1]!, ghosts[2]!)).toEqual([true, true, true]);
+    // The middle lantern swings fastest: aimed where it is now, the burst comes after it has gone.
+    expect(fire(2, ...lanternAt(ls[1]!, phone, 0), 0)).toEqual([false, false, false]);
   });
   it('level 2: between the lower pair (0.4 W apart), a quick burst lights neither; one held 1.5 s lights both', () => {
     const ls = lanternsOf(1, phone);
