@@ -378,8 +378,34 @@ function frameSite(): void {
     z0 = Math.min(z0, P.z[p.body]! - r);
     z1 = Math.max(z1, P.z[p.body]! + r);
   }
-  if (PORTRAIT) app.frame([x0, 0, z0], [x1, 3, z1], [0, 0.6, 1]);
-  else app.frame([x0 + 0.5, 0, z0 + 0.5], [x1 - 0.5, 7, z1 - 0.5], [0.85, 0.6, 1]);
+  const [dx, dy, dz] = clearOfMast(PORTRAIT ? [0, 0.6, 1] : [0.85, 0.6, 1]);
+  if (PORTRAIT) app.frame([x0, 0, z0], [x1, 3, z1], [dx, dy, dz]);
+  else app.frame([x0 + 0.5, 0, z0 + 0.5], [x1 - 0.5, 7, z1 - 0.5], [dx, dy, dz]);
+}
+
+/** How near, m, a piece's centre may pass to the line from the camera through the mast before the mast hides it. */
+const MAST_SHADOW = 1.8;
+/**
+ * The view direction `d` (toward the camera) turned about the vertical by the least of 0, ±10°, ...,
+ * ±40° that leaves no standing piece behind the mast (farther than the mast from the camera and
+ * within MAST_SHADOW of the sight line through it); `d` itself when every turn hides one.
+ */
+function clearOfMast(d: [number, number, number]): [number, number, number] {
+  const P = shell.world.components.Position;
+  for (const deg of [0, 10, -10, 20, -20, 30, -30, 40, -40]) {
+    const a = (deg * Math.PI) / 180;
+    const x = d[0] * Math.cos(a) + d[2] * Math.sin(a),
+      z = -d[0] * Math.sin(a) + d[2] * Math.cos(a);
+    const ux = x / Math.hypot(x, z),
+      uz = z / Math.hypot(x, z);
+    const hidden = handles.pieces.some((p) => {
+      const px = P.x[p.body]!,
+        pz = P.z[p.body]!;
+      return px * ux + pz * uz < 0 && Math.abs(px * uz - pz * ux) < MAST_SHADOW;
+    });
+    if (!hidden) return [x, d[1], z];
+  }
+  return d;
 }
 frameSite();
 // ?demo: one swing at the middle of the first tower, as a tap would.
