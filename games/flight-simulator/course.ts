@@ -56,12 +56,28 @@ export const RING_STEP = Object.freeze({ near: 600, spread: 250, far: 350 });
 export const FIRST_RING_DISTANCE = 520;
 
 /**
- * How hard ring `i` (0-based) is, in [0, 1]: 0 for the first two, rising evenly to 1 at the 8th
- * and staying there. Scales the spacing, the turn and the change of height in `layCourse`.
+ * How hard ring `i` (0-based) is, in [0, 1]: 0 for the first four (the lessons, `LESSONS`), rising
+ * evenly to 1 at the 10th and staying there. Scales the spacing, the turn and the change of height
+ * in `layCourse`.
  */
 export function ringDifficulty(i: number): number {
-  return Math.max(0, Math.min(1, (i - 1) / 6));
+  return Math.max(0, Math.min(1, (i - 3) / 6));
 }
+
+/**
+ * The first rings teach one small input each (`layCourse`): ring 1 straight ahead (no input), ring 2
+ * a turn of `turn` degrees (at random within it; 70 to 95 m to the side) to one side at the same
+ * height (bank), ring 3 straight on `climb` m higher or lower (climb or dive), ring 4 a turn the
+ * other way at the same height; rings 2 to 4 `step` m apart (7.7 s at 130 m/s: time to see and react;
+ * a newcomer's reaction of 3 s leaves 4.7 s to steer). A stranger met a ring 120 m higher right after two rings that asked for nothing, and missed.
+ */
+export const LESSONS = Object.freeze({ turn: [4, 5.5] as const, climb: [30, 40] as const, step: 1000 });
+
+/**
+ * Steepest change of height between rings the layout asks for, as a rise over the distance between
+ * them: `easy` at difficulty 0 (a 2.3 degree path), up to `easy + hard` at 1 (6.8 degrees).
+ */
+export const RING_GRADIENT = Object.freeze({ easy: 0.04, hard: 0.08 });
 
 /**
  * Speed of the turn every ring is laid to be reachable with, m/s (the starting throttle's trim speed):
@@ -117,12 +133,14 @@ export function reachable(step: number, turn: number): boolean {
 
 /**
  * Lays out `count` rings from `start`: the first FIRST_RING_DISTANCE straight ahead at the start
- * height (on the path the aircraft flies with no input), then each ring a step after the one before
+ * height (on the path the aircraft flies with no input), rings 2 to 4 the lessons (`LESSONS`: a
+ * turn, a climb or dive, a turn the other way), then each ring a step after the one before
  * that grows with its difficulty d = ringDifficulty(i) (RING_STEP: 600 to 850 m apart at d = 0, 950
  * to 1,200 m at d = 1), turning by up to 8 + 27 d degrees from the way through the ring before
  * (within 100 degrees of +x), less where the design turn (`designArrival`: DESIGN_BANK at
- * DESIGN_SPEED after REACTION_TIME) would not reach it, and changing height by up to 60 + 190 m d,
- * kept between 400 and 1,300 m and at least RING_CLEARANCE above the ground. The next ring's turn is
+ * DESIGN_SPEED after REACTION_TIME) would not reach it, and changing height by up to 60 + 190 m d
+ * and at most the step times RING_GRADIENT, kept between 400 and 1,300 m and at least
+ * RING_CLEARANCE above the ground. The next ring's turn is
  * measured from the heading the design path arrives with (turned on past the line between the
  * rings); each ring's way through is the line from the ring before.
  * @throws RangeError on a count that is not an integer >= 1 or a seed or start that is not finite.
@@ -137,16 +155,25 @@ export function layCourse(options: CourseOptions): Ring[] {
   let [x, y, z] = start;
   // The way through the ring before (the start: along +x).
   let heading = 0;
+  let side = 1;
   for (let i = 0; i < count; i++) {
     const d = ringDifficulty(i);
-    const step = i === 0 ? FIRST_RING_DISTANCE : RING_STEP.near + RING_STEP.far * d + rng.range(0, RING_STEP.spread);
+    const lesson = i >= 1 && i <= 3;
+    const step =
+      i === 0 ? FIRST_RING_DISTANCE : lesson ? LESSONS.step : RING_STEP.near + RING_STEP.far * d + rng.range(0, RING_STEP.spread);
     // The turn asked for, kept within 100 degrees of +x so that the course leads on and never folds
     // back, then eased until the design turn reaches the ring.
     let turn = 0;
+    // The lessons' side: ring 2 turns one way, ring 4 the other.
+    if (i === 1) side = rng.range(0, 1) < 0.5 ? -1 : 1;
     if (i > 0) {
-      const wanted = rng.range(-1, 1) * (8 + 27 * d) * (Math.PI / 180);
+      const lessonTurn = i === 2 ? 0 : side * (i === 3 ? -1 : 1) * rng.range(LESSONS.turn[0], LESSONS.turn[1]);
+      const wanted = (lesson ? lessonTurn : rng.range(-1, 1) * (8 + 27 * d)) * (Math.PI / 180);
       turn = Math.max(-1.75, Math.min(1.75, heading + wanted)) - heading;
-      while (Math.abs(turn) > 1e-3 && !reachable(step, turn)) turn *= 0.95;
+      // A lesson's ring is met from the line of the ring before (no slack: the ring before asked for
+      // no turn or a small one).
+      const reached = (t: number) => (lesson ? designArrival(step * Math.cos(t), step * Math.sin(t)) !== null : reachable(step, t));
+      while (Math.abs(turn) > 1e-3 && !reached(turn)) turn *= 0.95;
     }
     // The aircraft comes through this ring turned on past the line from the one before: the next
     // ring is laid from the heading the design path arrives with.
@@ -154,7 +181,15 @@ export function layCourse(options: CourseOptions): Ring[] {
     const nx0 = x + step * Math.cos(heading + turn),
       nz0 = z + step * Math.sin(heading + turn);
     const ground = terrainHeight(terrain, nx0, nz0);
-    const climb = i === 0 ? 0 : rng.range(-1, 1) * (60 + 190 * d);
+    // Level for the turns of the lessons, a small climb or dive for ring 3, else at random within
+    // 60 + 190 d m and never steeper than RING_GRADIENT.
+    const steepest = step * (RING_GRADIENT.easy + RING_GRADIENT.hard * d);
+    const climb =
+      i < 2 || i === 3
+        ? 0
+        : i === 2
+          ? (rng.range(0, 1) < 0.5 ? -1 : 1) * rng.range(LESSONS.climb[0], LESSONS.climb[1])
+          : Math.max(-steepest, Math.min(steepest, rng.range(-1, 1) * (60 + 190 * d)));
     const ny0 = Math.max(ground + RING_CLEARANCE, Math.min(1300, Math.max(400, y + climb)));
     const dx = nx0 - x,
       dy = ny0 - y,

@@ -679,8 +679,23 @@ function pointToNextRing(): void {
     rimAt.set(ring.x, ring.y, ring.z).addScaledVector(camUp.set(0, 1, 0).applyQuaternion(app.camera.quaternion), RING_RADIUS + 6);
     rimAt.project(app.camera);
     const rPx = Math.hypot(((rimAt.x - ringAt.x) / 2) * w, ((rimAt.y - ringAt.y) / 2) * h);
-    const half = ringPointer.offsetHeight / 2 + 6;
-    y = y - rPx - half >= half ? y - rPx - half : y + rPx + half;
+    ringPointer.textContent = ringAim.text;
+    const half = ringPointer.offsetHeight / 2 + 6,
+      halfW = ringPointer.offsetWidth / 2 + 6;
+    // Above the ring, else below, else beside it: the first place inside the scene that keeps clear
+    // of the flight-path marker (which sits outside the ring when off course: the label covered it).
+    const places: [number, number][] = [
+      [x, y - rPx - half],
+      [x, y + rPx + half],
+      [x - rPx - halfW, y],
+      [x + rPx + halfW, y],
+    ];
+    const clear = ([px, py]: [number, number]) => {
+      const [cx, cy] = keepInScene(px, py, w, bottom);
+      const off = marker.style.display !== 'none';
+      return cx === px && cy === py && (!off || Math.abs(px - pathAim.x) > halfW + 17 || Math.abs(py - pathAim.y) > half + 10);
+    };
+    [x, y] = places.find(clear) ?? places.find(([, py]) => py - half >= 0 && py + half <= bottom) ?? places[0]!;
   } else {
     // Behind the camera the projection is mirrored: point the other way.
     let dx = x - w / 2,
@@ -696,15 +711,25 @@ function pointToNextRing(): void {
     ringAim.text = dx > 0 && arrow === '▶' ? `ring ${i + 1} · ${distance} ${arrow}` : `${arrow} ring ${i + 1} · ${distance}`;
   }
   if (ringPointer.textContent !== ringAim.text) ringPointer.textContent = ringAim.text;
-  // Kept inside the scene (above the cockpit's panel): the label's half width (and height) from each edge.
+  [x, y] = keepInScene(x, y, w, bottom);
   const hw = ringPointer.offsetWidth / 2 + 4,
     hh = ringPointer.offsetHeight / 2 + 4;
-  x = Math.max(hw, Math.min(w - hw, x));
-  y = Math.max(hh, Math.min(bottom - hh, y));
   ringPointer.style.left = `${x}px`;
   ringPointer.style.top = `${y}px`;
   ringAim.box = [x - hw + 4, y - hh + 4, 2 * hw - 8, 2 * hh - 8];
 }
+
+/**
+ * The ring label's centre (px) moved inside the scene `w` px wide, `bottom` px high (above the
+ * cockpit's panel), its box EDGE_MARGIN px from each edge (it touched the phone's right edge).
+ */
+function keepInScene(x: number, y: number, w: number, bottom: number): [number, number] {
+  const hw = ringPointer.offsetWidth / 2 + EDGE_MARGIN,
+    hh = ringPointer.offsetHeight / 2 + EDGE_MARGIN;
+  return [Math.max(hw, Math.min(w - hw, x)), Math.max(hh, Math.min(bottom - hh, y))];
+}
+/** Least gap between the ring label and the scene's edges, px. */
+const EDGE_MARGIN = 10;
 
 // ---- The flight-path marker: where the aircraft is going, at the next ring's distance ------------
 
@@ -759,17 +784,31 @@ let lastFrame = 0;
 let chaseDistance = 0;
 /** Time constant of the chase camera's swing round behind the aircraft, s. */
 const CHASE_LAG = 0.25;
-/** Where the chase camera sits in the aircraft's frame, m: behind, above (it was 42 m behind, 10 up: the ground crawled). */
-const CHASE_OFFSET = [-30, 9] as const;
-/** How far ahead of the aircraft the chase camera looks, m: far enough that the aircraft sits below the rings ahead. */
-const CHASE_LOOK = 60;
 /**
- * The chase camera's offset now, m (behind, above): CHASE_OFFSET, moved back in proportion on a
- * screen narrower than 0.85 (a phone held upright, whose narrow view the wings overfilled).
+ * Where the chase camera sits in the aircraft's frame, m: behind, above. Far enough that the 30 m
+ * wing spans about a third of a landscape view (at 30 m behind, 9 up it filled the lower middle and
+ * hid the rings below the nose), and 17 degrees above the aircraft's axis so it sits low.
  */
-function chaseOffsetNow(): [number, number] {
+const CHASE_OFFSET = [-58, 18] as const;
+/**
+ * The point the chase camera looks at in the aircraft's frame, m (ahead, above): the view's axis
+ * 1.7 degrees below the aircraft's, so the path ahead (the next ring) is near the middle of the scene
+ * and the aircraft in its lower third (16 degrees under the middle, 0.45 of the half height at the
+ * 64 degree field of view).
+ */
+const CHASE_LOOK = [42, 15] as const;
+/**
+ * How much farther the chase camera sits on a screen narrower than 1.2 (a phone held upright: its
+ * narrow view was half filled by the wings): the offset and the look point times 1.2 / aspect, so
+ * the aircraft keeps its place in the frame and spans about a third of its width.
+ */
+function chaseScale(): number {
   const aspect = app.canvas.clientWidth / Math.max(1, app.canvas.clientHeight);
-  const k = Math.max(1, 0.85 / Math.max(0.3, aspect));
+  return Math.max(1, 1.2 / Math.max(0.3, aspect));
+}
+/** The chase camera's offset now, m (behind, above): CHASE_OFFSET times `chaseScale`. */
+function chaseOffsetNow(): [number, number] {
+  const k = chaseScale();
   return [k * CHASE_OFFSET[0], k * CHASE_OFFSET[1]];
 }
 /** The camera's field of view, degrees: `base`, widened by up to `fast` more between `from` and `to` m/s (speed shows). */
@@ -809,7 +848,11 @@ function frame(): void {
     app.camera.position.copy(at).add(smoothOffset);
     chaseDistance = smoothOffset.length();
     app.camera.up.set(0, 1, 0);
-    look.set(CHASE_LOOK, 0, 0).applyQuaternion(drawnQ).add(at);
+    const k = chaseScale();
+    look
+      .set(k * CHASE_LOOK[0], k * CHASE_LOOK[1], 0)
+      .applyQuaternion(drawnQ)
+      .add(at);
     app.camera.lookAt(look);
   } else {
     chaseDistance = 0;

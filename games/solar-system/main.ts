@@ -95,6 +95,7 @@ import {
   MAX_SPEED,
   MISSIONS,
   type Mission,
+  PLAN_SAMPLES,
   planCourse,
   planFlight,
   starsFor,
@@ -719,6 +720,15 @@ function dynamicLine(n: number, material: LineBasicMaterial, loop = false): Line
 const PLAN_STRIDE = 4;
 /** Dots of the plan the last frame drew. */
 let planDotsShown = 0;
+/**
+ * Share of the plan's window (one orbit of the probe: PLAN_SAMPLES points) the launch preview draws:
+ * the first fifth, about 40 % of the way out to Mars. The whole path turned green on a hit before the
+ * launch, and a mission was "press + until it is green"; now where the path meets the target's orbit,
+ * and where the target is then, are the player's to judge. In flight the whole course shows.
+ */
+const PREVIEW_SHARE = 0.2;
+/** Plan points the last frame's preview could draw (all up to the arrival in flight; PREVIEW_SHARE of the window while aiming). */
+let planPointsShown = 0;
 const planDots = (() => {
   const geometry = new BufferGeometry();
   geometry.setAttribute('position', new Float32BufferAttribute(new Float32Array(plan.path.length), 3));
@@ -1113,8 +1123,9 @@ function drawLaunch(world: PhysicsWorld): void {
       else planFlight(world, handles, m, aim, plan);
       planAt = world.time;
       planClock = performance.now();
-      if (plan.hit && !planShownHit) sound.chime(1320, 0.12);
-      planShownHit = plan.hit;
+      // The chime of a course that arrives: in flight only (while aiming it would give the verdict away).
+      if (cruising && plan.hit && !planShownHit) sound.chime(1320, 0.12);
+      planShownHit = cruising && plan.hit;
     }
   }
   if (aiming) {
@@ -1130,7 +1141,8 @@ function drawLaunch(world: PhysicsWorld): void {
     const attr = planDots.geometry.getAttribute('position') as Float32BufferAttribute;
     const arr = attr.array as Float32Array;
     let n = 0;
-    const last = plan.pointsToTime;
+    const last = aiming ? Math.min(plan.pointsToTime, Math.floor(PREVIEW_SHARE * PLAN_SAMPLES) + 1) : plan.pointsToTime;
+    planPointsShown = last;
     for (let i = 0; i < last; i += i + PLAN_STRIDE < last || i === last - 1 ? PLAN_STRIDE : last - 1 - i)
       place(plan.path[3 * i]!, plan.path[3 * i + 1]!, plan.path[3 * i + 2]!, arr, 3 * n++);
     attr.needsUpdate = true;
@@ -1141,17 +1153,19 @@ function drawLaunch(world: PhysicsWorld): void {
       place(plan.targetTrack[3 * i]!, plan.targetTrack[3 * i + 1]!, plan.targetTrack[3 * i + 2]!, track.array as Float32Array, 3 * i);
     track.needsUpdate = true;
     (trackDots.material as PointsMaterial).color.setHex(hexColor(m.target));
-    trackDots.visible = !plan.sun;
-    probeThen.visible = !plan.hit && !plan.sun;
+    // While aiming, no verdict: neither the target's dots to the meeting nor the probe's place then.
+    trackDots.visible = cruising && !plan.sun;
+    probeThen.visible = cruising && !plan.hit && !plan.sun;
     const then = probeThen.geometry.getAttribute('position') as Float32BufferAttribute;
     place(plan.probeAt[0]!, plan.probeAt[1]!, plan.probeAt[2]!, then.array as Float32Array, 0);
     then.needsUpdate = true;
-    (planDots.material as PointsMaterial).color.setHex(plan.hit ? 0x7ee787 : 0x9fd3ff);
+    (planDots.material as PointsMaterial).color.setHex(cruising && plan.hit ? 0x7ee787 : 0x9fd3ff);
     place(plan.targetAt[0]!, plan.targetAt[1]!, plan.targetAt[2]!, scratch3);
     ghostRing.position.set(scratch3[0]!, scratch3[1]!, scratch3[2]!);
     ghostRing.scale.setScalar(zone);
     (ghostRing.material as LineBasicMaterial).color.setHex(plan.hit ? 0x7ee787 : hexColor(m.target));
-    if (!plan.hit && !plan.sun) {
+    ghostRing.visible = cruising;
+    if (cruising && !plan.hit && !plan.sun) {
       missLine.visible = true;
       const attr = missLine.geometry.getAttribute('position') as Float32BufferAttribute;
       const arr = attr.array as Float32Array;
@@ -1230,18 +1244,32 @@ style.textContent = `
 .ss-status .ss-stars { color: #ffd166; letter-spacing: 1px; }
 .ss-status .ss-line.ok { color: #7ee787; }
 .ss-status .ss-line.bad { color: #ffb4a8; }
+.ss-status .ss-line.edge { color: #ffd479; }
 .ss-status .ss-line.won { color: #7ee787; font-weight: 700; }
 .ss-status .ss-date { color: #b8c4d6; font-size: 12px; }
-.ss-status .ss-hint { color: #9fd3ff; font-style: italic; }
+/* The hint's line is kept (empty) when the hint is off, so pressing Hint does not move the stage. */
+.ss-status .ss-hint { color: #9fd3ff; font-style: italic; min-height: 1.4em; }
 .ss-pad button.ss-hint-button.ss-pulse { animation: ss-pulse 1.2s ease-in-out infinite; }
 @keyframes ss-pulse { 50% { box-shadow: 0 0 0 4px rgba(159, 211, 255, 0.55); } }
 .ss-pad button { min-width: 48px; }
 .ss-pad button.ss-go { background: #1f7a3a; border-color: #7ee2a0; min-width: 76px; }
-/* A 390 px phone: the seven buttons of a mission (aim x4, Launch, Wait, Hint) on one row, still 44 px. */
+/* One order in every phase: the aim or burn buttons, then Launch, Abort or Try again in one slot,
+   Wait or Next mission in the next, Hint last (Wait moved a slot when Abort took Launch's place). */
+.ss-pad button[data-pad="launch"], .ss-pad button[data-pad="abort"], .ss-pad button[data-pad="retry"] { order: 5; }
+.ss-pad button[data-pad="wait"], .ss-pad button[data-pad="next"] { order: 6; }
+.ss-pad button[data-pad="hint"] { order: 7; }
+/* A 390 px phone: every phase's buttons (seven at most) on one row of equal cells, each at least
+   44 x 44 px; a longer label ("+ fast", "Try again") breaks inside its button, not the row (the
+   flight's buttons took two rows, Hint alone on the second, and Wait moved under the finger). */
 @media (max-width: 440px) {
-  .bp-touchbar.ss-pad { gap: 4px; }
-  .bp-touchbar.ss-pad button { min-width: 44px; padding: 0 5px; }
-  .bp-touchbar.ss-pad button.ss-go { min-width: 62px; }
+  .bp-touchbar.ss-pad { display: grid; grid-auto-flow: column; grid-auto-columns: auto; justify-content: stretch; gap: 4px; }
+  .bp-touchbar.ss-pad button { min-width: 44px; padding: 0 3px; font-size: 14px; white-space: normal; line-height: 1.05; }
+  .bp-touchbar.ss-pad button.ss-go { min-width: 44px; }
+  .ss-status .ss-line { min-height: 2.8em; }
+  .ss-status { position: relative; }
+  .ss-status .ss-hint { position: absolute; left: 6px; right: 6px; top: 100%; z-index: 7; min-height: 0; padding: 4px 8px;
+    border-radius: 8px; background: rgba(8, 12, 20, 0.88); }
+  .ss-status .ss-hint:empty { display: none; }
 }
 details.ss-table summary { cursor: pointer; color: #cfd8e6; }
 `;
@@ -1258,7 +1286,6 @@ planText.dataset.hud = 'plan';
 const hintLine = document.createElement('div');
 hintLine.className = 'ss-hint';
 hintLine.dataset.hud = 'hint';
-hintLine.style.display = 'none';
 const dateText = document.createElement('div');
 dateText.className = 'ss-date';
 dateText.dataset.hud = 'date';
@@ -1421,23 +1448,22 @@ function updateStatus(force = false): void {
   if (phase === 'aim') {
     const head = `Launch ${aim.speed.toFixed(1)} km/s ${aimWords(aim.angle)} →`;
     const rT = distanceFromSun(m.target);
-    if (plan.hit) {
-      line = `${head} ✓ reaches ${m.target} in ${Math.round(plan.time)} days ${starText(starsFor(m, aim.speed))}`;
-      cls = 'ok';
-    } else if (plan.sun) {
+    // No verdict on the arrival before the launch (that is the player's judgement): whether the path
+    // reaches the target's orbit at all, and the stars at stake at this speed.
+    if (plan.sun) {
       line = `${head} ✗ falls into the Sun`;
       cls = 'bad';
     } else {
       const outward = rT > distanceFromSun('Earth');
+      cls = 'bad';
       if (outward && plan.farthest < rT - m.zone)
         line = `${head} ✗ goes out only to ${plan.farthest.toFixed(2)} AU from the Sun; ${m.target} is at ${rT.toFixed(2)} AU`;
       else if (!outward && plan.nearest > rT + m.zone)
         line = `${head} ✗ falls in only to ${plan.nearest.toFixed(2)} AU from the Sun; ${m.target} is at ${rT.toFixed(2)} AU`;
       else {
-        const a = Math.round(Math.abs(plan.ahead));
-        line = `${head} ✗ misses ${m.target} by ${plan.distance.toFixed(2)} AU (ring ${m.zone} AU)${a >= 6 ? `; ${m.target} ${a}° ${plan.ahead > 0 ? 'ahead of' : 'behind'} the probe then` : ''}`;
+        line = `${head} reaches ${m.target}’s orbit (${rT.toFixed(2)} AU) · if ${m.target} is there: ${starText(starsFor(m, aim.speed))}`;
+        cls = '';
       }
-      cls = 'bad';
     }
   } else if (phase === 'flight' && flight) {
     const P = world.components.Position;
@@ -1445,13 +1471,19 @@ function updateStatus(force = false): void {
       p = slotOf(flight.probe);
     const d = Math.hypot(P.x[t]! - P.x[p]!, P.y[t]! - P.y[p]!, P.z[t]! - P.z[p]!);
     const fuel = `fuel ${(CORRECTION_FUEL - flight.fuelUsed).toFixed(2)} km/s`;
+    // Three cases, as the numbers say: well inside the ring (the plan's margin, PLAN_MARGIN, for the
+    // planets' pulls), at its edge (inside the ring but not by the margin: it read "✗ arrival miss
+    // 0.12 AU (ring 0.14 AU)" and then arrived), or outside it.
+    const edge = !plan.hit && !plan.sun && plan.distance < m.zone;
     const arrival = plan.hit
       ? `✓ on course: in the ring in ${Math.round(plan.time)} days`
       : plan.sun
         ? '✗ falls into the Sun'
-        : `✗ arrival miss ${plan.distance.toFixed(2)} AU (ring ${m.zone} AU)`;
+        : edge
+          ? `≈ at the ring’s edge: arrival ${plan.distance.toFixed(2)} AU (ring ${m.zone} AU)`
+          : `✗ arrival miss ${plan.distance.toFixed(2)} AU (ring ${m.zone} AU)`;
     line = `Day ${Math.round(flight.elapsed)} · ${d.toFixed(2)} AU to ${m.target} · ${arrival} · ${fuel}`;
-    cls = plan.hit ? 'ok' : 'bad';
+    cls = plan.hit ? 'ok' : edge ? 'edge' : 'bad';
   } else if (phase === 'done' && flight) {
     const burns = flight.fuelUsed > 0 ? ` + ${flight.fuelUsed.toFixed(2)} km/s of burns` : '';
     if (flight.state === 'arrived') {
@@ -1484,7 +1516,6 @@ function updateStatus(force = false): void {
   planText.textContent = line;
   planText.className = `ss-line ${cls}`;
   hintLine.textContent = shownHint;
-  hintLine.style.display = hinting ? 'block' : 'none';
   dateText.textContent = dateLine;
   const aimingNow = phase === 'aim';
   setPadLabels(phase === 'flight' ? 'burn' : 'aim');
@@ -1653,12 +1684,14 @@ shell.expose({
   startMission,
   advance,
   /**
-   * What the last frame's preview showed: the probe's dots drawn, whether the white dot of the probe
-   * at the closest approach and the target's own dots show, and the plan's path points up to that
-   * time and in all.
+   * What the last frame's preview showed: the probe's dots drawn, the plan points they were drawn
+   * from (PREVIEW_SHARE of the window while aiming), whether the white dot of the probe at the
+   * closest approach and the target's own dots show (in flight only), and the plan's path points up
+   * to that time and in all.
    */
   preview: () => ({
     dots: planDotsShown,
+    shownPoints: planPointsShown,
     probeThen: probeThen.visible,
     track: trackDots.visible,
     pointsToTime: plan.pointsToTime,

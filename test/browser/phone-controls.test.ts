@@ -461,13 +461,39 @@ describe('phone controls', () => {
     await g.waitFor(() => /more speed \(tap \+\)\.$/.test(document.querySelector('[data-hud="hint"]')!.textContent ?? ''), null);
     for (let i = 0; i < 8; i++) await g.page.getByRole('button', { name: 'faster launch (↑)', exact: true }).tap();
     await g.waitFor((s) => (window.game as unknown as Solar).mission().aim.speed > s + 0.75, speed);
-    await g.waitFor(() => /✓ reaches Mars in \d+ days/.test(document.querySelector('[data-hud="plan"]')!.textContent ?? ''), null);
+    await g.waitFor(() => (window.game as unknown as Solar).mission().plan.hit, null);
     await g.waitFor(() => /tap Launch/.test(document.querySelector('[data-hud="hint"]')!.textContent ?? ''), null);
+    // The buttons of every phase sit on one row, each at least 44 x 44 px, Wait in the same place (in
+    // flight they took two rows, Hint alone on the second, and Wait moved under a held finger).
+    const bar = () =>
+      g.page.evaluate(() =>
+        [...document.querySelectorAll<HTMLElement>('.ss-pad button')]
+          .filter((b) => !b.hidden)
+          .map((b) => ({ pad: b.dataset.pad!, ...b.getBoundingClientRect().toJSON() }))
+          .sort((a, b) => a.x - b.x),
+      ) as Promise<{ pad: string; x: number; y: number; width: number; height: number }[]>;
+    const aimBar = await bar();
     await g.page.getByRole('button', { name: 'launch the probe (Space)', exact: true }).tap();
     await g.waitFor(() => {
       const m = (window.game as unknown as Solar).mission();
       return m.phase === 'flight' && m.flight!.elapsed > 1;
     }, null);
+    const flightBar = await bar();
+    for (const row of [aimBar, flightBar]) {
+      expect(row.map((b) => b.pad)).toEqual(
+        row === aimBar
+          ? ['left', 'right', 'slower', 'faster', 'launch', 'wait', 'hint']
+          : ['left', 'right', 'slower', 'faster', 'abort', 'wait', 'hint'],
+      );
+      for (const b of row) {
+        expect(b.y, b.pad).toBeCloseTo(row[0]!.y, 0);
+        expect(b.width, b.pad).toBeGreaterThanOrEqual(44);
+        expect(b.height, b.pad).toBeGreaterThanOrEqual(44);
+        expect(b.x + b.width, b.pad).toBeLessThanOrEqual(390);
+      }
+    }
+    // Wait keeps its slot (the sixth); the cells fit their labels, so it may shift by a few px.
+    expect(Math.abs(flightBar.find((b) => b.pad === 'wait')!.x - aimBar.find((b) => b.pad === 'wait')!.x)).toBeLessThan(12);
     // In flight the speed buttons burn: + fast uses 0.05 km/s of the fuel.
     await g.page.getByRole('button', { name: 'burn to speed up (↑)', exact: true }).tap();
     await g.waitFor(() => ((window.game as unknown as Solar).mission().flight?.fuelUsed ?? 0) > 0.04, null);

@@ -48,22 +48,32 @@ describe('projects', () => {
       /^Launch \d+\.\d km\/s along the Earth’s path → ✗ goes out only to \d\.\d\d AU from the Sun; Mars is at \d\.\d\d AU$/,
     );
     expect(numbers).not.toMatch(/press|tap|more speed/);
-    expect(await g.page.locator('[data-hud="hint"]').isVisible()).toBe(false);
+    expect(await g.page.locator('[data-hud="hint"]').textContent()).toBe('');
+    // The hint's line is kept while empty: showing the hint leaves the stage's height as it was (it
+    // grew the header by a line, and one frame drew the canvas black).
+    const stageHeight = () => g.page.evaluate(() => document.querySelector('canvas')!.clientHeight);
+    const heightBefore = await stageHeight();
     await g.press('h');
     await g.waitFor(() => document.querySelector('[data-hud="hint"]')?.textContent?.endsWith('more speed (press ↑).'), null);
+    expect(await stageHeight()).toBe(heightBefore);
     // The legend lists the few controls a mission needs (with the kit's P, N, R): 16 lines were too
     // many to learn; the rest are named in the panel.
     expect(await g.page.locator('.bp-legend > div').count()).toBe(9);
     expect(await g.page.locator('[data-hud="more-keys"]').textContent()).toMatch(/^More keys: Enter .* 1 2 3 views; D distances; E sizes/);
-    // Up 6 times (2.9 km/s): a miss, the probe at Mars's orbit 9 degrees before Mars. The preview says
-    // so as the hint does: the probe's dots stop where it is at the closest approach (a white dot),
-    // and Mars's own dots run to its ring. Before, the dots ran on round the whole orbit, through the
-    // ring, while the status line and the hint said it missed.
+    // Up 6 times (2.9 km/s): a miss, the probe at Mars's orbit 9 degrees before Mars. Before the
+    // launch the preview gives no verdict (a mission was "press + until it is green"): the line says
+    // the path reaches Mars's orbit and the stars at stake, the dots show only the first part of the
+    // path (PREVIEW_SHARE of the plan's window), with neither the probe's place at the closest
+    // approach nor Mars's dots to it. The hint (on request) still says what the plan finds.
     for (let i = 0; i < 6; i++) await g.press('ArrowUp');
     await g.waitFor(
-      () => /misses Mars by .* behind the probe then$/.test(document.querySelector('[data-hud="plan"]')!.textContent ?? ''),
+      () =>
+        /→ reaches Mars’s orbit \(\d\.\d\d AU\) · if Mars is there: [★☆]{3}$/.test(
+          document.querySelector('[data-hud="plan"]')!.textContent ?? '',
+        ),
       null,
     );
+    expect(await g.page.evaluate(() => (window.game as unknown as Solar).mission().plan.hit)).toBe(false);
     await g.waitFor(
       () =>
         document
@@ -72,18 +82,25 @@ describe('projects', () => {
       null,
     );
     await g.frames(2);
-    type Preview = { dots: number; probeThen: boolean; track: boolean; pointsToTime: number; points: number };
+    type Preview = { dots: number; shownPoints: number; probeThen: boolean; track: boolean; pointsToTime: number; points: number };
     const preview = await g.page.evaluate(() => (window.game as unknown as { preview(): Preview }).preview());
-    expect(preview.probeThen).toBe(true);
-    expect(preview.track).toBe(true);
+    expect(preview.probeThen).toBe(false);
+    expect(preview.track).toBe(false);
     expect(preview.pointsToTime).toBeLessThan(preview.points);
-    // Every 4th point up to the closest approach, and that point.
-    expect(preview.dots).toBe(Math.ceil((preview.pointsToTime - 1) / 4) + 1);
-    // Up twice more (the lesson's 0.8 km/s; time is stopped): the plan arrives; the hint says to launch.
+    // The first fifth of the window's 400 points (81), short of the closest approach.
+    expect(preview.shownPoints).toBe(Math.min(81, preview.pointsToTime));
+    expect(preview.shownPoints).toBeLessThan(preview.pointsToTime);
+    // Every 4th point of those, and the last.
+    expect(preview.dots).toBe(Math.ceil((preview.shownPoints - 1) / 4) + 1);
+    // Up twice more (the lesson's 0.8 km/s; time is stopped): the plan arrives, which the line does
+    // not say (no ✓, no green); the hint, asked for, says to launch.
     for (let i = 0; i < 2; i++) await g.press('ArrowUp');
-    await g.waitFor(() => /✓ reaches Mars in \d+ days/.test(document.querySelector('[data-hud="plan"]')!.textContent ?? ''), null);
     await g.waitFor(() => document.querySelector('[data-hud="hint"]')?.textContent?.startsWith('On target. Launch: Space.'), null);
     expect(await g.page.evaluate(() => (window.game as unknown as Solar).mission().plan.hit)).toBe(true);
+    const aimLine = (await g.page.locator('[data-hud="plan"]').textContent()) ?? '';
+    expect(aimLine).toMatch(/reaches Mars’s orbit/);
+    expect(aimLine).not.toMatch(/[✓✗]/);
+    expect(await g.page.locator('[data-hud="plan"]').getAttribute('class')).toBe('ss-line ');
     const m1 = await g.page.evaluate(() => (window.game as unknown as Solar).mission());
     expect(m1.aim.speed).toBeCloseTo(m0.aim.speed + 0.8, 9);
     await g.press('ArrowRight');

@@ -18,12 +18,14 @@ import {
   designArrival,
   FIRST_RING_DISTANCE,
   flyRings,
+  LESSONS,
   layCourse,
   MISS_PENALTY,
   MISS_RANGE,
   nextRing,
   pathThroughRing,
   RING_CLEARANCE,
+  RING_GRADIENT,
   RING_RADIUS,
   RING_STEP,
   type Ring,
@@ -41,7 +43,8 @@ describe('flight simulator course', () => {
       expect(rings[0]!.x).toBeCloseTo(FIRST_RING_DISTANCE, 9);
       expect(rings[0]!.z).toBeCloseTo(0, 9);
       expect(rings[0]!.y).toBe(Math.max(900, terrainHeight(terrain, FIRST_RING_DISTANCE, 0) + RING_CLEARANCE));
-      let heading = 0;
+      let heading = 0,
+        firstTurn = 0;
       for (let i = 0; i < rings.length; i++) {
         const r = rings[i]!;
         expect(r.y - terrainHeight(terrain, r.x, r.z)).toBeGreaterThanOrEqual(RING_CLEARANCE - 1e-9);
@@ -51,17 +54,37 @@ describe('flight simulator course', () => {
         const p = rings[i - 1]!;
         const d = ringDifficulty(i);
         const across = Math.hypot(r.x - p.x, r.z - p.z);
-        expect(across).toBeGreaterThanOrEqual(RING_STEP.near + RING_STEP.far * d - 1e-9);
-        expect(across).toBeLessThanOrEqual(RING_STEP.near + RING_STEP.spread + RING_STEP.far * d + 1e-9);
+        if (i <= 3) expect(across).toBeCloseTo(LESSONS.step, 6);
+        else {
+          expect(across).toBeGreaterThanOrEqual(RING_STEP.near + RING_STEP.far * d - 1e-9);
+          expect(across).toBeLessThanOrEqual(RING_STEP.near + RING_STEP.spread + RING_STEP.far * d + 1e-9);
+        }
         // The turn at each ring is at most 8 + 27 d degrees from the way the aircraft comes out of
         // the ring before (which, turned on past the line between rings, is at most twice that line's
         // own turn); the change of height grows with d (less where the 400 m floor, the 1,300 m
         // ceiling or the hills hold it).
         const turn = Math.atan2(r.z - p.z, r.x - p.x);
         expect(Math.abs(turn - heading)).toBeLessThanOrEqual((3 * (8 + 27 * d) * Math.PI) / 180 + 1e-9);
+        // The lessons: ring 2 a small turn at the same height, ring 3 straight on a little higher or
+        // lower, ring 4 a small turn the other way (each asks for one small input).
+        if (i === 1 || i === 3) {
+          const deg = Math.abs(turn - heading) / (Math.PI / 180);
+          expect(deg, `seed ${seed} ring ${i + 1}`).toBeGreaterThan(LESSONS.turn[0] * 0.5);
+          expect(deg).toBeLessThanOrEqual(LESSONS.turn[1] + 1e-6);
+          expect(r.y).toBe(p.y);
+        }
+        if (i === 1) firstTurn = turn - heading;
+        if (i === 3) expect(Math.sign(turn - heading)).toBe(-Math.sign(firstTurn));
         heading = turn;
-        if (r.y > terrainHeight(terrain, r.x, r.z) + RING_CLEARANCE + 1e-9)
+        if (r.y > terrainHeight(terrain, r.x, r.z) + RING_CLEARANCE + 1e-9 && r.y > 400 + 1e-9 && r.y < 1300 - 1e-9) {
           expect(Math.abs(r.y - p.y)).toBeLessThanOrEqual(60 + 190 * d + 1e-9);
+          // Gradually: never steeper than RING_GRADIENT (a stranger met 120 m in 300 m and missed).
+          expect(Math.abs(r.y - p.y)).toBeLessThanOrEqual(across * (RING_GRADIENT.easy + RING_GRADIENT.hard * d) + 1e-9);
+        }
+        if (i === 2) {
+          expect(Math.abs(r.y - p.y)).toBeGreaterThanOrEqual(LESSONS.climb[0] - 1e-9);
+          expect(Math.abs(r.y - p.y)).toBeLessThanOrEqual(LESSONS.climb[1] + 1e-9);
+        }
         // The normal points from the ring before to this one.
         const length = Math.hypot(r.x - p.x, r.y - p.y, r.z - p.z);
         expect(r.nx).toBeCloseTo((r.x - p.x) / length, 12);
@@ -69,7 +92,7 @@ describe('flight simulator course', () => {
         expect(Math.abs(turn)).toBeLessThanOrEqual(1.75 + 1e-9);
       }
     }
-    expect([0, 1, 4, 7, 20].map(ringDifficulty)).toEqual([0, 0, 0.5, 1, 1]);
+    expect([0, 3, 6, 9, 20].map(ringDifficulty)).toEqual([0, 0, 0.5, 1, 1]);
     expect(() => layCourse({ terrain, seed: 1, count: 0, start: [0, 900, 0] })).toThrow(/layCourse: count must be an integer >= 1, got 0/);
   });
 
