@@ -109,7 +109,7 @@ export function touchesMine(x: number, y: number, angle: number, mx: number, my:
 /**
  * The course's par time, s: along the course from the start (0, 0) through every beacon in
  * `courseOrder`, each leg takes the longer of its run ahead at 8 m/s and its depth change at 4 m/s
- * (about 60% of the boat's top speed ahead, 12.9 m/s, and of its dive speed, 7 m/s: the rest goes
+ * (about 60% of the boat's top speed ahead, 12.9 m/s, and of its dive speed, 10 m/s: the rest goes
  * to the turns and the detours round the mines), plus 3 s a beacon; rounded up to 5 s.
  */
 export function parTime(beacons: ArrayLike<number>): number {
