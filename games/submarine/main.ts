@@ -35,7 +35,7 @@ import { Graphics, Text } from 'pixi.js';
 import { beaconLabel, chooseBeacon, seabedBetween } from './beacons';
 import { drawBoat } from './boat-drawing';
 import { createHelmState, type HelmInput, steer } from './helm';
-import { layMines, MINE_BLAST_IMPULSE, MINE_RADIUS, type Mine, parTime, touchesMine } from './mines';
+import { hullDistance, layMines, MINE_BLAST_IMPULSE, MINE_RADIUS, type Mine, mineOnWay, parTime, touchesMine } from './mines';
 import { drawFish } from './sea-life';
 import { seabedInput, touchSeabed } from './seabed';
 import { type Glow, layTrail, touchesGlow } from './trail';
@@ -75,6 +75,10 @@ let taken: boolean[] = [];
 /** The course's moored mines (./mines.ts) and whether each is still live (a mine that went off is gone). */
 let mines: Mine[] = [];
 let mineLive: boolean[] = [];
+/** The live mine on the straight way to the pointer's beacon (./mines.ts mineOnWay), -1 for none: drawn ringed. */
+let wayMine = -1;
+/** Within this distance of the hull, m, a mine is drawn with a pulsing warning ring. */
+const MINE_WARN_DISTANCE = 25;
 /** The course's glow trail (./trail.ts), and each glow's state: 0 to catch, 1 caught, 2 missed (passed by). */
 let glows: Glow[] = [];
 let glowState = new Uint8Array(0);
@@ -189,6 +193,7 @@ function createWorld(): PhysicsWorld {
   taken = new Array(params.beacons).fill(false);
   mines = layMines(handles.beacons, handles.seabed, params.seed);
   mineLive = mines.map(() => true);
+  wayMine = -1;
   glows = layTrail(handles.beacons, handles.seabed, mines);
   glowState = new Uint8Array(glows.length);
   glowPops.length = 0;
@@ -670,12 +675,25 @@ createButtonBar(
 
 /**
  * Draws the live mines between `left` and `right` (m, world x) and the blasts of those set off, at
- * game time `t` (s), `k` px a metre, through `sx` and `sy` (world m to screen px). A mine: its cable
- * down to an anchor block on the seabed, a dark sphere with contact horns, and a red lamp on top that
- * blinks once a second (so a mine reads as a danger, not as a rock, in the dark of the deep). A blast:
- * a white-orange flash and a ring of rising bubbles, over `BLAST_LIFE` s.
+ * game time `t` (s), `k` px a metre, through `sx` and `sy` (world m to screen px), the hull at
+ * (`hx`, `hy`, m) turned by `ha` rad. A mine: its cable (light, so it reads on the dark water) down
+ * to an anchor block on the seabed, a red-orange halo, a grey sphere ringed in light grey with
+ * contact horns, and a red lamp on top that blinks once a second (so a mine reads as a danger, not
+ * as a rock, in the dark of the deep). Within MINE_WARN_DISTANCE of the hull, and the one on the
+ * way to the pointer's beacon, it gets a pulsing red ring at the distance where the hull sets it
+ * off. A blast: a white-orange flash and a ring of rising bubbles, over `BLAST_LIFE` s.
  */
-function drawMines(t: number, k: number, sx: (x: number) => number, sy: (y: number) => number, left: number, right: number): void {
+function drawMines(
+  t: number,
+  k: number,
+  sx: (x: number) => number,
+  sy: (y: number) => number,
+  left: number,
+  right: number,
+  hx: number,
+  hy: number,
+  ha: number,
+): void {
   const R = MINE_RADIUS * 0.7;
   for (let i = 0; i < mines.length; i++) {
     const m = mines[i]!;
@@ -686,9 +704,22 @@ function drawMines(t: number, k: number, sx: (x: number) => number, sy: (y: numb
     const links = Math.max(1, Math.floor((m.y - R - m.anchor) / 1.5));
     g.moveTo(x, y + R * k)
       .lineTo(x, sy(m.anchor))
-      .stroke({ color: 0x1a2630, width: Math.max(1.5, 0.25 * k), alpha: 0.9 });
-    if (k >= 4) for (let j = 1; j < links; j++) g.circle(x, sy(m.y - R - 1.5 * j), 0.18 * k).stroke({ color: 0x3a4a56, width: 1 });
-    g.rect(x - 0.9 * k, sy(m.anchor) - 0.7 * k, 1.8 * k, 0.9 * k).fill(0x2a3038);
+      .stroke({ color: 0x8fa3b0, width: Math.max(1.5, 0.25 * k), alpha: 0.85 });
+    if (k >= 4) for (let j = 1; j < links; j++) g.circle(x, sy(m.y - R - 1.5 * j), 0.18 * k).stroke({ color: 0xb8c6d0, width: 1 });
+    g.rect(x - 0.9 * k, sy(m.anchor) - 0.7 * k, 1.8 * k, 0.9 * k).fill(0x5a6570);
+    // A warm halo, so the sphere stands out of the blue at any zoom.
+    g.circle(x, y, Math.max(9, 1.9 * MINE_RADIUS * k)).fill({ color: 0xff5a36, alpha: 0.16 });
+    // Near the hull (or on the way to the beacon): a pulsing ring where contact begins.
+    const near = hullDistance(hx, hy, ha, m.x, m.y);
+    if (near < MINE_WARN_DISTANCE || i === wayMine) {
+      const pulse = 0.5 + 0.5 * Math.sin(2 * Math.PI * 2 * t),
+        close = Math.max(0, 1 - near / MINE_WARN_DISTANCE);
+      g.circle(x, y, Math.max(12, (MINE_RADIUS + 1.5) * k)).stroke({
+        color: 0xff3b30,
+        width: 2 + 2 * close,
+        alpha: 0.45 + 0.45 * Math.max(close, pulse * 0.6),
+      });
+    }
     // Horns: six stubs round the sphere, each with a bright tip.
     for (let j = 0; j < 6; j++) {
       const a = (j / 6) * 2 * Math.PI + Math.PI / 2;
@@ -696,14 +727,14 @@ function drawMines(t: number, k: number, sx: (x: number) => number, sy: (y: numb
         y1 = y - Math.sin(a) * MINE_RADIUS * k;
       g.moveTo(x + Math.cos(a) * R * k, y - Math.sin(a) * R * k)
         .lineTo(x1, y1)
-        .stroke({ color: 0x59656e, width: Math.max(1.5, 0.3 * k) });
-      g.circle(x1, y1, Math.max(1.2, 0.18 * k)).fill(0xb8c2c8);
+        .stroke({ color: 0xaab6be, width: Math.max(1.5, 0.3 * k) });
+      g.circle(x1, y1, Math.max(1.5, 0.2 * k)).fill(0xffd0c0);
     }
     g.circle(x, y, Math.max(4, R * k))
-      .fill(0x2b3640)
-      .stroke({ color: 0x8a98a2, width: Math.max(1, 0.12 * k), alpha: 0.8 });
+      .fill(0x56636e)
+      .stroke({ color: 0xd8e2e8, width: Math.max(1.5, 0.15 * k), alpha: 0.95 });
     // A highlight, so the sphere reads round.
-    g.circle(x - 0.3 * R * k, y - 0.3 * R * k, Math.max(1.5, 0.3 * R * k)).fill({ color: 0xc8d4dc, alpha: 0.35 });
+    g.circle(x - 0.3 * R * k, y - 0.3 * R * k, Math.max(1.5, 0.3 * R * k)).fill({ color: 0xe8f0f4, alpha: 0.45 });
     const on = (t + i * 0.37) % 1 < 0.5;
     g.circle(x, y - R * k * 0.55, Math.max(2, 0.22 * k)).fill({ color: on ? 0xff3b30 : 0x6a1a16, alpha: 1 });
     if (on) g.circle(x, y - R * k * 0.55, Math.max(5, 0.7 * k)).fill({ color: 0xff3b30, alpha: 0.25 });
@@ -1071,7 +1102,7 @@ function draw(): void {
   }
   drawFish(g, left, right, t, k, sx, sy, bedAt, hxw, hyw);
   drawGlows(t, k, sx, sy, left, right);
-  drawMines(t, k, sx, sy, left, right);
+  drawMines(t, k, sx, sy, left, right, hxw, hyw, c.Angle.value[e]!);
   // Beacons: a lamp (at least 5 px, however far the camera zooms out) in a pulsing ring; each one
   // on screen but the pointer's is tagged "beacon" under it, so a yellow light elsewhere in the view
   // reads as another beacon to collect, not as something unexplained.
@@ -1141,7 +1172,9 @@ function draw(): void {
     const m = 40;
     aim.distance = best;
     const ridge = seabedBetween(hxw, hyw, wx, wy, (x) => seabedHeight(handles.seabed, x));
-    pointer.text = beaconLabel(wx - hxw, wy - hyw, c.Angle.value[e]!, ridge);
+    const onWay = mineOnWay(hxw, hyw, wx, wy, mines, mineLive);
+    wayMine = onWay ? onWay.index : -1;
+    pointer.text = beaconLabel(wx - hxw, wy - hyw, c.Angle.value[e]!, ridge, onWay ? onWay.side : '');
     aim.dx = wx - hxw;
     aim.dy = wy - hyw;
     aim.onScreen = bx >= m && bx <= W - m && by >= m && by <= H - m;
