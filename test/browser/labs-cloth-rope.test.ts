@@ -47,6 +47,8 @@ interface RopeLab extends Lab {
   level(): number;
   ropePieces(): number;
   stars(): number;
+  advance(n: number): void;
+  banner(): { text: string; stars: number[]; box: number[] };
 }
 
 let h: Harness;
@@ -425,6 +427,26 @@ for (const [device, options] of [
         const w = window.game as unknown as RopeLab;
         return w.world.components.Position.y[w.ids().ball % 2 ** 25]! < y0 - 1;
       }, ball0);
+      // Cut while it hangs still, the ball drops beside the basket: a miss. The banner says so with
+      // the stars this try caught (gold) and missed (outlined) and stays until a tap or click (it
+      // used to start the level again 1.4 s after, hiding what was caught).
+      const lost = await g.page.evaluate(() => {
+        const w = window.game as unknown as RopeLab;
+        w.paused = true;
+        for (let i = 0; i < 900 && w.outcome() === 'playing'; i++) w.advance(1);
+        return { outcome: w.outcome(), stars: w.stars() };
+      });
+      expect(lost.outcome).toBe('lost');
+      await g.waitFor(() => (window.game as unknown as RopeLab).banner().text.startsWith('Missed!'), null);
+      const shown = await g.page.evaluate(() => (window.game as unknown as RopeLab).banner());
+      expect(shown.text).toBe(`Missed!\n${device === 'phone' ? 'tap' : 'click'} to try again`);
+      expect(shown.stars).toEqual([lost.stars, 3]);
+      await g.page.waitForTimeout(450); // a tap counts 0.4 s after the miss (not the swipe that missed)
+      const mid = await toPage(g, 0, 4);
+      if (device === 'phone') await g.page.touchscreen.tap(mid.x, mid.y);
+      else await g.page.mouse.click(mid.x, mid.y);
+      await g.waitFor(() => (window.game as unknown as RopeLab).outcome() === 'playing', null);
+      expect(await g.page.evaluate(() => (window.game as unknown as RopeLab).cuts())).toBe(0);
       expect(g.errors).toEqual([]);
     });
 
@@ -540,6 +562,13 @@ for (const [device, options] of [
         (window.game as unknown as Lab).paused = false;
       });
       await g.waitFor(() => (window.game as unknown as RopeLab).outcome() === 'won', null, 30_000);
+      // The banner and, under it, a row of the level's 3 stars, as many gold as were caught.
+      await g.waitFor(() => (window.game as unknown as RopeLab).banner().text === 'In the basket!', null);
+      const won = await g.page.evaluate(() => {
+        const w = window.game as unknown as RopeLab;
+        return { row: w.banner().stars, stars: w.stars() };
+      });
+      expect(won.row).toEqual([won.stars, 3]);
       // The cut snapped and the win chimed.
       await g.waitFor((n) => (window.game as unknown as { sound: { played: number } }).sound.played >= n + 2, played);
       // The button leaves the basket (level 1: 1.2 m wide at x = 1.85 m) and the ball landing in it in
