@@ -127,11 +127,11 @@ const PICKUP_LIFE = 2;
 /** The framing camera: the hull and the next beacon are kept this far inside the view's edges, px. */
 const FRAME_MARGIN = 60;
 /**
- * The framing camera zooms out no further than this, px/m (beyond, the edge arrow leads on): 2 on
- * a wide screen, 4 on a small one, where the 12 m hull would otherwise shrink under 48 px and the
- * mines to specks.
+ * The framing camera zooms out no further than this, px/m (beyond, the edge arrow leads on): 5 on
+ * a wide screen (the 12 m hull 60 px long; at 2 px/m a stranger saw it shrink to about 35 px at
+ * speed), 4 on a small one, where the hull would otherwise shrink under 48 px and the mines to specks.
  */
-const FRAME_MIN_ZOOM = pageLayout().compact() ? 4 : 2;
+const FRAME_MIN_ZOOM = pageLayout().compact() ? 4 : 5;
 /** The camera's zoom now, px/m (eased toward the framing zoom; NaN: set at the next frame). */
 let zoom = Number.NaN;
 /** The view leads the hull by its velocity along x times this, s (the look-ahead). */
