@@ -115,6 +115,9 @@ const aim = {
   /** The label's box and the hull's (x, y, width, height, px), to check the label stays off the hull. */
   label: [0, 0, 0, 0],
   hull: [0, 0, 0, 0],
+  /** The arrow's badge while drawn: its box (x, y, width, height, px; zeros while none) and the depth gauge's left edge (px). */
+  badge: [0, 0, 0, 0],
+  gaugeLeft: 0,
 };
 
 /**
@@ -449,10 +452,19 @@ hullGauge.style.cssText =
 readout.append(readoutText, hullGauge);
 const instruments = document.createElement('div');
 instruments.dataset.hud = 'instruments';
-instruments.style.cssText = 'font-size: 11px; color: #b4c4d4;';
-// On a phone the status row keeps two short lines (the instruments are for wide screens).
+// #c8d6e4 on the columns' dark backing: a contrast of about 12:1 (at least 4.5:1 for small text).
+instruments.style.cssText = 'white-space: pre-line; color: #c8d6e4; margin: 6px 0;';
+// On a desktop the status row is one line, the goal then the numbers a player needs (a stranger
+// found three lines, the third small and grey, too dense); the instruments (seabed, climb, pitch,
+// screw, tanks, helm) go in the info column, a line each. On a phone the status row keeps two
+// short lines and the instruments are left out.
 if (compact) instruments.style.display = 'none';
-gauge.append(goal, readout, instruments);
+else {
+  goal.style.display = readout.style.display = 'inline';
+  pageLayout().info.append(instruments);
+}
+gauge.append(goal, readout);
+if (!compact) goal.after(Object.assign(document.createElement('span'), { textContent: ' · ' }));
 pageLayout().status.append(gauge);
 
 /** The end of a run over the scene: won or sunk, the time, the hull, the best, and a button to go again. */
@@ -1177,7 +1189,9 @@ function draw(): void {
     pointer.text = beaconLabel(wx - hxw, wy - hyw, c.Angle.value[e]!, ridge, onWay ? onWay.side : '');
     aim.dx = wx - hxw;
     aim.dy = wy - hyw;
-    aim.onScreen = bx >= m && bx <= W - m && by >= m && by <= H - m;
+    // The right margin leaves the depth gauge clear too (on a phone the badge sat over it).
+    const right = W - GAUGE_WIDTH - m;
+    aim.onScreen = bx >= m && bx <= right && by >= m && by <= H - m;
     // From the hull's place on screen toward the beacon, stopped at the margin.
     const hx = sx(hxw),
       hy = sy(hyw);
@@ -1187,7 +1201,7 @@ function draw(): void {
       const dx = bx - hx,
         dy = by - hy;
       const t = Math.min(
-        dx > 0 ? (W - m - hx) / dx : dx < 0 ? (m - hx) / dx : Infinity,
+        dx > 0 ? (right - hx) / dx : dx < 0 ? (m - hx) / dx : Infinity,
         dy > 0 ? (H - m - hy) / dy : dy < 0 ? (m - hy) / dy : Infinity,
       );
       px = hx + dx * t;
@@ -1199,6 +1213,11 @@ function draw(): void {
       // A badge: a dark disc ringed in the beacons' yellow, drawn out to a point toward the beacon,
       // with a long arrow (shaft and head) in it: a short broad triangle read as pointing either way.
       const along = (u: number, v: number): [number, number] => [px + u * ca - v * sa, py + u * sa + v * ca];
+      const corners = [along(28, 0), along(10, 15), along(-14, 14), along(-20, 0), along(-14, -14), along(10, -15)];
+      const xs = corners.map((p) => p[0]),
+        ys = corners.map((p) => p[1]);
+      aim.badge = [Math.min(...xs), Math.min(...ys), Math.max(...xs) - Math.min(...xs), Math.max(...ys) - Math.min(...ys)];
+      aim.gaugeLeft = W - GAUGE_WIDTH;
       g.poly([...along(28, 0), ...along(10, 15), ...along(-14, 14), ...along(-20, 0), ...along(-14, -14), ...along(10, -15)])
         .fill({ color: 0x06213a, alpha: 0.9 })
         .stroke({ color: 0xffe066, width: 2 });
@@ -1216,6 +1235,7 @@ function draw(): void {
       pointer.y = py - (pointer.height / 2 + 28) * sa;
     } else {
       aim.angle = Number.NaN;
+      aim.badge = [0, 0, 0, 0];
       pointer.x = bx;
       pointer.y = by - 2.4 * k - 16;
     }
@@ -1355,7 +1375,14 @@ function draw(): void {
     ? `depth ${depth.toFixed(0)}${ordered} m · ${speed.toFixed(1)} m/s · `
     : `depth ${depth.toFixed(0)}${ordered} m · speed ${speed.toFixed(1)} m/s · score ${state.score}${streak} · `;
   showHull();
-  instruments.textContent = `seabed ${(-floor).toFixed(0)} m · climb ${c.Velocity.y[e]!.toFixed(1)} m/s · pitch ${((a * 180) / Math.PI).toFixed(0)}° · screw ${(state.throttle * 100).toFixed(0)}% · tanks ${(B.fore[e]! * 100).toFixed(0)}/${(B.aft[e]! * 100).toFixed(0)}% (neutral ${(SUBMARINE_NEUTRAL_FILL * 100).toFixed(0)}%) · ${helm}`;
+  instruments.textContent = [
+    `seabed ${(-floor).toFixed(0)} m`,
+    `climb ${c.Velocity.y[e]!.toFixed(1)} m/s`,
+    `pitch ${((a * 180) / Math.PI).toFixed(0)}°`,
+    `screw ${(state.throttle * 100).toFixed(0)}%`,
+    `tanks ${(B.fore[e]! * 100).toFixed(0)}/${(B.aft[e]! * 100).toFixed(0)}% (neutral ${(SUBMARINE_NEUTRAL_FILL * 100).toFixed(0)}%)`,
+    `helm: ${helm}`,
+  ].join('\n');
 }
 
 const panel = createPanel(
