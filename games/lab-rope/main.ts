@@ -12,7 +12,7 @@
  * player sees the level, the stars and the cuts there).
  */
 
-import { createActionButton, createPanel, flagParam, getSound, numberParam, pointerOnCanvas } from '@bitphysics/game-kit';
+import { createActionButton, createPanel, flagParam, getSound, numberParam, pageLayout, pointerOnCanvas } from '@bitphysics/game-kit';
 import { createLabDock, createReadout, createStatusLine, followView, readUrlParams } from '@bitphysics/game-kit/lab-kit';
 import { startPixiGame } from '@bitphysics/game-kit/pixi';
 import { createPlot } from '@bitphysics/game-kit/plot';
@@ -490,15 +490,18 @@ const BANNER_HEIGHTS = [3.4, 4.1, 2.6, 4.8, 1.8];
 /** A star's drawn glow reaches this far from its centre, m (view.ts: 0.22 m x 1.6, pulsing 8%). */
 const STAR_GLOW = 0.38;
 /**
- * The first of BANNER_HEIGHTS (m) at which the banner's box stays clear of every star not caught
- * yet (so the banner never hides one); the first height if none is clear.
+ * The first of BANNER_HEIGHTS (m) at which the banner's box (with the star row under it once the
+ * level is over) stays clear of every star not caught yet (so the banner never hides one); the
+ * first height if none is clear.
  */
 function bannerHeight(): number {
   const cam = renderer.camera;
+  // With the star row under it (the outcome's banner) the box reaches a row lower.
+  const row = game.outcome === 'playing' ? 0 : STAR_SIZE * 1.2;
   const halfW = banner.width / 2,
-    halfH = banner.height / 2;
+    halfH = banner.height / 2 + row / 2;
   for (const y of BANNER_HEIGHTS) {
-    const by = cam.toScreenY(y);
+    const by = cam.toScreenY(y) + row / 2;
     const clear = scene.level.stars.every(([sx, sy], i) => {
       if (game.caught[i]) return true;
       const r = cam.toScreenLength(STAR_GLOW);
@@ -563,6 +566,12 @@ function setBanner(text: string, color: number, alpha: number): void {
 function updateStatus(): void {
   const total = best.reduce((s, b) => s + Math.max(0, b), 0);
   const cleared = best.filter((b) => b >= 0).length;
+  // On a phone the count goes in front, short ("1/5 · ★ 2: "), no longer than "Level 1 of 5: ", so a
+  // clear does not grow the status by a line and push the scene down.
+  if (pageLayout().compact()) {
+    status.set(`${params.level}/${LEVELS.length}${cleared > 0 ? ` · ★ ${total}` : ''}: ${scene.level.hint}`);
+    return;
+  }
   const tail = cleared > 0 ? ` · cleared ${cleared} of ${LEVELS.length}, ★ ${total}` : '';
   status.set(`Level ${params.level} of ${LEVELS.length}: ${scene.level.hint}${tail}`);
 }

@@ -555,6 +555,7 @@ for (const [device, options] of [
       expect(column.stats).toBe(0);
       expect(column.info).toContain('level 1 of 5: Let go');
       expect(column.info).not.toMatch(/link error|ball speed/);
+      const statusHeight = await g.page.evaluate(() => document.querySelector('.lab-status')!.getBoundingClientRect().height);
       const [x, y] = await ropeMiddle(g, 0);
       const played = await g.page.evaluate(() => (window.game as unknown as { sound: { played: number } }).sound.played);
       // A tap 0.12 m beside the rope (about 9 px on the phone, 11 on the desktop): within reach.
@@ -568,6 +569,10 @@ for (const [device, options] of [
       await g.waitFor(() => (window.game as unknown as RopeLab).outcome() === 'won', null, 30_000);
       // The banner and, under it, a row of the level's 3 stars, as many gold as were caught.
       await g.waitFor(() => (window.game as unknown as RopeLab).banner().text === 'In the basket!', null);
+      // The status says the level is cleared without growing (on a phone it grew to 3 lines and
+      // pushed the scene down): as tall as before the win.
+      await g.waitFor(() => /★ \d/.test(document.querySelector('.lab-status')?.textContent ?? ''), null);
+      expect(await g.page.evaluate(() => document.querySelector('.lab-status')!.getBoundingClientRect().height)).toBe(statusHeight);
       const won = await g.page.evaluate(() => {
         const w = window.game as unknown as RopeLab;
         return { row: w.banner().stars, stars: w.stars() };
