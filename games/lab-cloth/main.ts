@@ -13,7 +13,8 @@
  *
  * Input: drag with the scissors to cut every link the stroke crosses (cut.ts: in the cloth's frame, and
  * a stroke that ends near its start closes); on the shapes' and the window's sheets the breeze drops
- * while the scissors are down, so the sheet hangs still. A finger's stroke is scored with FINGER_SLACK_PX of slack along
+ * while the scissors are down, so the sheet hangs still. Paused (P), the scissors cut the still
+ * sheet, and the pieces cut away fall when it runs again. A finger's stroke is scored with FINGER_SLACK_PX of slack along
  * the lines and closes from FINGER_CLOSE_PX off (a fingertip hides the line it traces). Drag with the hand to
  * take hold of the sheet and pull it (grab.ts: a soft grip, so it stretches before it tears). The tool
  * buttons under the scene switch (key C); a right-button drag always cuts. Hold Gust (key G) to blow.
@@ -29,6 +30,7 @@ import { startPixiGame } from '@bitphysics/game-kit/pixi';
 import { createPlot } from '@bitphysics/game-kit/plot';
 import {
   type Cloth,
+  handleOf,
   type PhysicsWorld,
   step as physicsStep,
   query,
@@ -420,15 +422,54 @@ function slashTo(s: ScissorsStroke): void {
 /**
  * Undo of the scissors: before each stroke the whole world is saved (`snapshot`: every point's
  * position and velocity, every link, the wind's state and the clock), with the lab's counts and the
- * shapes cut out so far. A stroke that cut something keeps its save on a stack (UNDO_DEPTH deep);
- * `undoCut` puts the last one back (`restore`), so the sheet is as it was the moment before that
- * stroke, tears made since included. A new sheet empties the stack.
+ * shapes cut out so far. A stroke that cut something keeps its save on a stack (UNDO_DEPTH deep),
+ * with the links it cut. `undoCut` undoes the last stroke that did not cut out a shape with ★★★:
+ * it puts that stroke's save back (`restore`), then cuts again the links of the strokes after it,
+ * so a good cut made after a bad one stays (its piece falls again) while the bad one is undone.
+ * Tears made since are undone with it. A new sheet empties the stack.
  */
 interface UndoEntry {
   world: WorldSnapshot;
   cut: number;
   torn: number;
   done: number;
+  /** Pieces off (Challenge.scraps) before the stroke. */
+  scraps: number;
+  /** The cloth links there were before the stroke (linkKey); dropped once the stroke ends. */
+  before: Set<number> | null;
+  /** The links the stroke cut (linkKey), set as it ends. */
+  severed: number[];
+  /** Whether the stroke cut out a shape with ★★★ (undo passes over it while there is another). */
+  kept: boolean;
+}
+/** A cloth link's key: its two points' slots, a * 2^25 + b (slots are under 2^25). */
+const linkKey = (a: number, b: number): number => a * 2 ** 25 + b;
+/** The keys of the world's cloth links now. */
+function linkKeys(world: PhysicsWorld): Set<number> {
+  const L = world.components.ClothLink;
+  const keys = new Set<number>();
+  for (const e of query(world, [L])) keys.add(linkKey(L.a[e]!, L.b[e]!));
+  return keys;
+}
+/** Cuts the world's cloth links whose keys are in `keys`. @returns how many were cut. */
+function cutLinks(world: PhysicsWorld, keys: ReadonlySet<number>): number {
+  const L = world.components.ClothLink;
+  const doomed: number[] = [];
+  for (const e of query(world, [L])) if (keys.has(linkKey(L.a[e]!, L.b[e]!))) doomed.push(handleOf(world, e));
+  for (const h of doomed) removeJoint(world, h);
+  return doomed.length;
+}
+/**
+ * Marks as kept the strokes on the undo stack that cut a link with an end in piece `piece` of the
+ * last update (the strokes that cut that piece out).
+ */
+function keepStrokesOf(piece: number): void {
+  const pieceOf = challenge.pieces?.pieceOf;
+  if (!pieceOf) return;
+  const inside = new Set<number>();
+  for (let i = 0; i < cloth.points.length; i++) if (pieceOf[i] === piece) inside.add(slotOf(cloth.points[i]!));
+  for (const entry of undoStack)
+    if (!entry.kept) entry.kept = entry.severed.some((key) => inside.has(Math.floor(key / 2 ** 25)) || inside.has(key % 2 ** 25));
 }
 /** Strokes that can be undone, most recent last. */
 const undoStack: UndoEntry[] = [];
@@ -442,28 +483,46 @@ function refreshUndo(): void {
   undoButton.disabled = none;
   undoButton.style.opacity = none ? '0.45' : '';
 }
-/**
- * Puts the sheet back as it was just before the last stroke that cut it (see UndoEntry). Does
- * nothing while a stroke is under way or when no stroke is left to undo.
- */
-function undoCut(): void {
-  if (stroke) return;
-  const last = undoStack.pop();
-  refreshUndo();
-  if (!last) return;
-  grab?.release();
-  grab = null;
-  restore(shell.world, last.world);
-  cut = last.cut;
-  torn = last.torn;
-  challenge.done.length = last.done;
-  // The cloth's link version went back with the world: the cells, the pieces and the drawing are
-  // worked out again from the links as they are now.
+/** The cloth's cells, pieces and drawing worked out again from its links (after a restore). */
+function relink(): void {
   cells.invalidate();
   challenge.invalidate();
   sheet?.invalidate();
   cells.loosen(shell.world);
   challenge.update();
+}
+/**
+ * Undoes the last stroke that did not cut out a shape with ★★★ (the last stroke if every one did;
+ * see UndoEntry): the sheet as it was just before it, with the cuts of the strokes after it made
+ * again. Does nothing while a stroke is under way or when no stroke is left to undo.
+ */
+function undoCut(): void {
+  if (stroke || undoStack.length === 0) return;
+  let k = undoStack.length - 1;
+  while (k >= 0 && undoStack[k]!.kept) k--;
+  if (k < 0) k = undoStack.length - 1;
+  const entry = undoStack[k]!;
+  const later = undoStack.splice(k);
+  later.shift();
+  grab?.release();
+  grab = null;
+  restore(shell.world, entry.world);
+  note = '';
+  cut = entry.cut;
+  torn = entry.torn;
+  challenge.done.length = entry.done;
+  relink();
+  // The good cuts made after it, made again (each with a new save, so it can be undone in turn).
+  const keptNames: string[] = [];
+  for (const j of later) {
+    const save: UndoEntry = { ...j, world: snapshot(shell.world), cut, torn, done: challenge.done.length, scraps: challenge.scraps };
+    cut += cutLinks(shell.world, new Set(j.severed));
+    cells.loosen(shell.world);
+    for (const d of challenge.update()) keptNames.push(`the ${challenge.shapes[d.shape]!.name} (${Math.round(d.fit * 100)}%)`);
+    undoStack.push(save);
+  }
+  refreshUndo();
+  if (later.length > 0) note = `Undid the cut before the last; kept ${keptNames.length > 0 ? keptNames.join(', ') : 'the cuts after it'}.`;
   slash.length = 0;
   sound.snap(0.2);
 }
@@ -482,7 +541,27 @@ let snipped = 0,
   lastRip = 0,
   /** When the pointer last went down, ms (performance.now). */
   lastInput = 0;
-/** Whether a scissors stroke was tried on the paused sheet (and ignored) since it was last paused. */
+/**
+ * What the last stroke did when it cut something away but cut out no shape (set as the stroke ends;
+ * '' when there is nothing to say): shown on the status line until the next stroke, an undo or a
+ * new sheet, so a cut that missed its line is not met with silence.
+ */
+let note = '';
+/** The note for a stroke that cut pieces away (`scrapsBefore` pieces off before it) but cut out no shape; '' if it cut nothing away. */
+function strokeNote(scrapsBefore: number): string {
+  const parts = challenge.partCuts();
+  if (parts.length > 0)
+    return parts
+      .map((p) => {
+        const name = challenge.shapes[p.shape]!.name;
+        return `${name[0]!.toUpperCase()}${name.slice(1)}: cut off the line, ${Math.round(p.fell * 100)}% of it fell and ${Math.round(p.hangs * 100)}% still hangs: not cut out. Undo (↶) and cut along the dashes.`;
+      })
+      .join(' ');
+  return challenge.scraps > scrapsBefore ? 'That piece held no shape: cut along a dashed line.' : '';
+}
+/** The note after the status line's own words (' ' and the note), or ''. */
+const noteTail = (): string => (note ? ` ${note}` : '');
+/** Whether a scissors stroke was made on the paused sheet since it was last paused. */
 let pausedStroke = false;
 canvas.addEventListener('pointerdown', (e) => {
   if (e.button !== 0 && e.button !== 2) return;
@@ -493,13 +572,20 @@ canvas.addEventListener('pointerdown', (e) => {
   stroke = null;
   const scissors = LEVELS[levelIndex]!.scissors;
   if ((tool === 'cut' || e.button === 2) && scissors) {
-    // The scissors cut only while the sheet moves: a still sheet would let a stroke trace the
-    // printed line exactly. A stroke on the paused sheet is ignored and the status line says so.
-    if (shell.paused) {
-      pausedStroke = true;
-      return;
-    }
-    strokeSave = { world: snapshot(shell.world), cut, torn, done: challenge.done.length };
+    // On the paused sheet the scissors cut too: the sheet holds still for a careful cut, and the
+    // pieces cut away fall when it runs again (the status line says so).
+    if (shell.paused) pausedStroke = true;
+    strokeSave = {
+      world: snapshot(shell.world),
+      cut,
+      torn,
+      done: challenge.done.length,
+      scraps: challenge.scraps,
+      before: linkKeys(shell.world),
+      severed: [],
+      kept: false,
+    };
+    note = '';
     // A finger hides the line it traces and is wider than a mouse's point: its cut is scored with
     // FINGER_SLACK_PX of slack (as the sheet is drawn now), and it closes from further off.
     const finger = e.pointerType === 'touch';
@@ -530,7 +616,14 @@ const release = (): void => {
     snip(stroke.cut.close(gap, CLOSE_LENGTH));
     slashTo(stroke.cut);
     if (strokeSave && cut > strokeSave.cut) {
+      if (challenge.done.length === strokeSave.done) note = strokeNote(strokeSave.scraps);
+      const now = linkKeys(shell.world);
+      strokeSave.severed = [...strokeSave.before!].filter((key) => !now.has(key));
+      strokeSave.before = null;
       undoStack.push(strokeSave);
+      // The strokes that cut out a shape with ★★★ now (this one and any earlier one that cut along its
+      // piece's edge) are kept by undo.
+      for (const d of challenge.done.slice(strokeSave.done)) if (d.stars === 3 && d.piece >= 0) keepStrokesOf(d.piece);
       if (undoStack.length > UNDO_DEPTH) undoStack.shift();
       refreshUndo();
     }
@@ -549,6 +642,7 @@ shell.onWorldChange(() => {
   stroke = null;
   cutting = false;
   strokeSave = null;
+  note = '';
   undoStack.length = 0;
   refreshUndo();
 });
@@ -762,7 +856,7 @@ function drawBasket(): void {
 function updateStatus(): void {
   if (!shell.paused) pausedStroke = false;
   else if (pausedStroke) {
-    status.set('Paused: the scissors cut only while the sheet moves. Press ▶ (or P) to run it.');
+    status.set(`Paused: cut along the dashed lines, then press ▶ (or P) to let the pieces fall.${noteTail()}`);
     return;
   }
   const level = LEVELS[levelIndex]!;
@@ -787,6 +881,10 @@ function updateStatus(): void {
     return;
   }
   showNext(false);
+  if (note) {
+    status.set(`${head}: ${note}`);
+    return;
+  }
   const last = done[done.length - 1];
   if (!last) {
     status.set(`${head}: ${level.ask}`);

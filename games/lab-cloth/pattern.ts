@@ -192,6 +192,47 @@ export function starsFor(fit: number): number {
 }
 
 /**
+ * Per cell of the sheet, the free piece it is in (`pieceOfCell`, -1: none) and whether it hangs in a
+ * held one (`hanging`, 1 or 0). A cell is in a piece when its four corners are and at least one of
+ * its triangles is whole.
+ */
+function cellOwners(
+  world: PhysicsWorld,
+  cloth: Cloth,
+  cells: ClothCells,
+  pieces: ClothPieces,
+): { pieceOfCell: Int32Array; hanging: Uint8Array } {
+  const C = cloth.columns;
+  const cellPiece = (cell: number): number => {
+    const r = Math.floor(cell / cells.across),
+      c = cell % cells.across;
+    const i = r * C + c;
+    const p = pieces.pieceOf[i]!;
+    if (pieces.pieceOf[i + 1] !== p || pieces.pieceOf[i + C] !== p || pieces.pieceOf[i + C + 1] !== p) return -1;
+    return cells.triangles(world, cell) ? p : -1;
+  };
+  const n = cells.across * cells.down;
+  const pieceOfCell = new Int32Array(n);
+  const hanging = new Uint8Array(n);
+  for (let cell = 0; cell < n; cell++) {
+    const p = cellPiece(cell);
+    pieceOfCell[cell] = p >= 0 && !pieces.held[p] ? p : -1;
+    hanging[cell] = p >= 0 && pieces.held[p] ? 1 : 0;
+  }
+  return { pieceOfCell, hanging };
+}
+
+/** A shape not cut out yet of which some came away (Challenge.partCuts). */
+export interface PartCut {
+  /** Index of the shape. */
+  shape: number;
+  /** Fraction of its inside cells in pieces that came away, in (0, 1]. */
+  fell: number;
+  /** Fraction of its inside cells still hanging on the line, in [0, 1]. */
+  hangs: number;
+}
+
+/**
  * The shapes among `pending` (indices of SHAPES) that have come off the line: a free piece holds a
  * fifth of their inside cells, or less than a quarter are in pieces still hanging. Each is scored by
  * the free piece holding most of its
@@ -208,24 +249,8 @@ export function scoreCutOuts(
   pending: readonly number[],
   shapes: readonly Shape[] = SHAPES,
 ): CutOut[] {
-  const C = cloth.columns;
-  const cellPiece = (cell: number): number => {
-    const r = Math.floor(cell / cells.across),
-      c = cell % cells.across;
-    const i = r * C + c;
-    const p = pieces.pieceOf[i]!;
-    if (pieces.pieceOf[i + 1] !== p || pieces.pieceOf[i + C] !== p || pieces.pieceOf[i + C + 1] !== p) return -1;
-    return cells.triangles(world, cell) ? p : -1;
-  };
-  // The free piece each cell is in (-1: none), and whether it hangs in a held one.
-  const n = cells.across * cells.down;
-  const pieceOfCell = new Int32Array(n);
-  const hanging = new Uint8Array(n);
-  for (let cell = 0; cell < n; cell++) {
-    const p = cellPiece(cell);
-    pieceOfCell[cell] = p >= 0 && !pieces.held[p] ? p : -1;
-    hanging[cell] = p >= 0 && pieces.held[p] ? 1 : 0;
-  }
+  const { pieceOfCell, hanging } = cellOwners(world, cloth, cells, pieces);
+  const n = pieceOfCell.length;
   const out: CutOut[] = [];
   for (const s of pending) {
     const mask = masks[s]!;
@@ -380,6 +405,30 @@ export class Challenge {
   invalidate(): void {
     this.seenVersion = -1;
     for (const k of [...this.falling.keys()]) if (k >= this.done.length) this.falling.delete(k);
+  }
+
+  /**
+   * The shapes still to cut out of which some came away in the pieces of the last update (a cut off
+   * the line: not enough came away together for scoreCutOuts to count it), with how much of each fell
+   * and how much still hangs, for telling the player what happened. Empty before the first update.
+   */
+  partCuts(): PartCut[] {
+    const pieces = this.pieces;
+    if (!pieces) return [];
+    const { pieceOfCell, hanging } = cellOwners(this.world, this.cloth, this.cells, pieces);
+    const out: PartCut[] = [];
+    for (const s of this.pending()) {
+      const inside = this.masks[s]!.inside;
+      if (inside.length === 0) continue;
+      let fell = 0,
+        hangs = 0;
+      for (const cell of inside) {
+        if (pieceOfCell[cell]! >= 0) fell++;
+        hangs += hanging[cell]!;
+      }
+      if (fell > 0) out.push({ shape: s, fell: fell / inside.length, hangs: hangs / inside.length });
+    }
+    return out;
   }
 
   /** Where piece `piece` of the last update is, m: the mean of its points. */

@@ -12,13 +12,13 @@
  * player sees the level, the stars and the cuts there).
  */
 
-import { createActionButton, createPanel, flagParam, getSound, numberParam, pointerOnCanvas } from '@bitphysics/game-kit';
+import { createActionButton, createPanel, flagParam, getSound, numberParam, pageLayout, pointerOnCanvas } from '@bitphysics/game-kit';
 import { createLabDock, createReadout, createStatusLine, followView, readUrlParams } from '@bitphysics/game-kit/lab-kit';
 import { startPixiGame } from '@bitphysics/game-kit/pixi';
 import { createPlot } from '@bitphysics/game-kit/plot';
 import { addMouseJoint, isAlive, type PhysicsWorld, step as physicsStep, removeJoint, setMouseTarget, slotOf } from '@bitphysics/physics';
 import type { WorldRect } from '@bitphysics/render-pixi';
-import { Graphics, Text } from 'pixi.js';
+import { Container, Graphics, Text } from 'pixi.js';
 import { cutRopes } from './cut';
 import { BALL_RADIUS, createRopeScene, DEFAULTS, LEVELS, RopeGame, type RopeScene } from './scene';
 import { RopeView } from './view';
@@ -50,6 +50,18 @@ let game: RopeGame;
 let cuts = 0;
 /** Real time (s) at which the level was lost, for the automatic retry; NaN while playing. */
 let lostAt = Number.NaN;
+/** After a miss the level starts again after this long, s (real time), or at a tap or key after MISS_TAP_AFTER s. */
+const MISS_PAUSE = 2.5;
+/** A tap or key during a miss's pause starts the level again once this long has passed, s (not the swipe that missed). */
+const MISS_TAP_AFTER = 0.4;
+/** The miss banner's second line: a tap on a touch screen, a click (or Space) elsewhere. */
+const MISS_HINT = matchMedia('(pointer: coarse)').matches ? '\ntap to try again' : '\nclick to try again';
+/** Starts the level again at once after a miss (a tap or key during the pause); false otherwise. */
+function retryAfterMiss(): boolean {
+  if (game.outcome !== 'lost' || performance.now() / 1000 - lostAt < MISS_TAP_AFTER) return false;
+  shell.reset();
+  return true;
+}
 /** The push: a mouse joint on the ball while the pointer drags it. */
 let push = 0;
 /** Sparkles: where (m), when (s), colour. */
@@ -283,8 +295,12 @@ function playSnaps(): void {
   } else if (performance.now() - lastInput > 400) snaps = 0;
 }
 
+window.addEventListener('keydown', (e) => {
+  if (e.key === ' ' || e.key === 'Enter') retryAfterMiss();
+});
 canvas.addEventListener('pointerdown', (e) => {
   if (e.button !== 0) return;
+  if (retryAfterMiss()) return;
   lastInput = performance.now();
   const [x, y] = toWorld(e);
   releasePush();
@@ -388,6 +404,36 @@ const banner = new Text({
 });
 banner.anchor.set(0.5);
 renderer.root.addChild(banner);
+/**
+ * The stars of the try under the banner: a gold star for each caught, an outlined one (dark fill, a
+ * light rim) for each missed, so both read on the blue wall (a '☆' in the banner's dark stroke did not).
+ */
+const starRow = new Container({ label: 'stars' });
+/** The star row as last shown: [gold, of] ([0, 0] while hidden). */
+let starsShown: [number, number] = [0, 0];
+const STAR_SIZE = 34;
+for (let i = 0; i < 3; i++) {
+  const star = new Text({ text: '★', style: { fontSize: STAR_SIZE, fontFamily: 'sans-serif', fill: 0xffd23f } });
+  star.anchor.set(0.5);
+  star.x = (i - 1) * STAR_SIZE * 1.1;
+  starRow.addChild(star);
+}
+renderer.root.addChild(starRow);
+/** Shows the star row centred at (x, y) px with `got` of `of` stars gold; hides it when `of` is 0. */
+function showStars(x: number, y: number, got: number, of: number, alpha: number): void {
+  starsShown = of > 0 && alpha > 0 ? [got, of] : [0, 0];
+  starRow.visible = of > 0 && alpha > 0;
+  starRow.position.set(x, y);
+  starRow.alpha = alpha;
+  starRow.children.forEach((child, i) => {
+    const star = child as Text;
+    star.visible = i < of;
+    star.x = (i - (of - 1) / 2) * STAR_SIZE * 1.1;
+    const on = i < got;
+    star.style.fill = on ? 0xffd23f : 0x22324a;
+    star.style.stroke = on ? { color: 0x5a3a00, width: 3 } : { color: 0xe8eef5, width: 3 };
+  });
+}
 
 let lastFrame = performance.now() / 1000;
 function draw(alpha: number, world: PhysicsWorld): void {
@@ -444,15 +490,18 @@ const BANNER_HEIGHTS = [3.4, 4.1, 2.6, 4.8, 1.8];
 /** A star's drawn glow reaches this far from its centre, m (view.ts: 0.22 m x 1.6, pulsing 8%). */
 const STAR_GLOW = 0.38;
 /**
- * The first of BANNER_HEIGHTS (m) at which the banner's box stays clear of every star not caught
- * yet (so the banner never hides one); the first height if none is clear.
+ * The first of BANNER_HEIGHTS (m) at which the banner's box (with the star row under it once the
+ * level is over) stays clear of every star not caught yet (so the banner never hides one); the
+ * first height if none is clear.
  */
 function bannerHeight(): number {
   const cam = renderer.camera;
+  // With the star row under it (the outcome's banner) the box reaches a row lower.
+  const row = game.outcome === 'playing' ? 0 : STAR_SIZE * 1.2;
   const halfW = banner.width / 2,
-    halfH = banner.height / 2;
+    halfH = banner.height / 2 + row / 2;
   for (const y of BANNER_HEIGHTS) {
-    const by = cam.toScreenY(y);
+    const by = cam.toScreenY(y) + row / 2;
     const clear = scene.level.stars.every(([sx, sy], i) => {
       if (game.caught[i]) return true;
       const r = cam.toScreenLength(STAR_GLOW);
@@ -485,20 +534,25 @@ function drawBanner(now: number): void {
   banner.style.wordWrapWidth = Math.max(200, cam.width - 40);
   banner.x = cam.width / 2;
   banner.y = cam.toScreenY(bannerHeight());
+  const starsY = banner.y + banner.height / 2 + STAR_SIZE * 0.6;
   if (game.outcome === 'won') {
     const s = game.stars();
     const last = params.level === LEVELS.length;
-    setBanner(`${last ? 'All levels done!' : 'In the basket!'}\n${'★'.repeat(s)}${'☆'.repeat(3 - s)}`, 0x9ff0b8, 1);
+    setBanner(last ? 'All levels done!' : 'In the basket!', 0x9ff0b8, 1);
+    showStars(banner.x, starsY, s, scene.level.stars.length, 1);
     showNext(true, last ? 'Play again ▶' : 'Next level ▶');
     placeNext();
     return;
   }
   showNext(false);
   if (game.outcome === 'lost') {
-    setBanner('Missed! Again…', 0xffb4a2, 1);
-    if (now - lostAt > 1.4) shell.reset();
+    // A beat to see what happened and what this try caught; a tap or a key starts again sooner.
+    setBanner(`Missed!${MISS_HINT}`, 0xffb4a2, 1);
+    showStars(banner.x, starsY, game.stars(), scene.level.stars.length, 1);
+    if (now - lostAt > MISS_PAUSE) shell.reset();
     return;
   }
+  showStars(0, 0, 0, 0, 0);
   const t = shell.world.time;
   setBanner(`Level ${params.level}: ${scene.level.name}`, 0xffffff, t < 1 ? 1 : Math.max(0, 1 - (t - 1) * 2));
 }
@@ -512,6 +566,12 @@ function setBanner(text: string, color: number, alpha: number): void {
 function updateStatus(): void {
   const total = best.reduce((s, b) => s + Math.max(0, b), 0);
   const cleared = best.filter((b) => b >= 0).length;
+  // On a phone the count goes in front, short ("1/5 · ★ 2: "), no longer than "Level 1 of 5: ", so a
+  // clear does not grow the status by a line and push the scene down.
+  if (pageLayout().compact()) {
+    status.set(`${params.level}/${LEVELS.length}${cleared > 0 ? ` · ★ ${total}` : ''}: ${scene.level.hint}`);
+    return;
+  }
   const tail = cleared > 0 ? ` · cleared ${cleared} of ${LEVELS.length}, ★ ${total}` : '';
   status.set(`Level ${params.level} of ${LEVELS.length}: ${scene.level.hint}${tail}`);
 }
@@ -532,9 +592,13 @@ shell.expose({
   /** The level shown (1-based), and the best stars of each level (-1: not cleared). */
   level: () => params.level,
   best: () => [...best],
-  /** The banner over the scene: its text ('' while hidden) and box (x, y, width, height, px). */
+  /**
+   * The banner over the scene: its text ('' while hidden), box (x, y, width, height, px) and the star
+   * row under it ([gold, of]; [0, 0] while hidden).
+   */
   banner: () => ({
     text: banner.visible ? banner.text : '',
+    stars: [...starsShown],
     box: [banner.x - banner.width / 2, banner.y - banner.height / 2, banner.width, banner.height],
   }),
   /** The level's stars (x, y, m) and whether each is caught. */

@@ -38,6 +38,12 @@ export function chooseBeacon(beacons: ArrayLike<number>, taken: readonly boolean
 export const RIDGE_WARNING = 'ridge ahead: climb';
 
 /**
+ * What the pointer's label adds when a live mine lies on the straight way to its beacon
+ * (./mines.ts `mineOnWay`): which side to pass it.
+ */
+export const MINE_WARNING = Object.freeze({ over: '⚠ mine on the way: pass over it', under: '⚠ mine on the way: pass under it' });
+
+/**
  * Whether the straight line from the hull at (x0, y0) to the beacon at (x1, y1), m (y up), passes
  * below the seabed anywhere: sampled every metre or less along x, and true where the line is under
  * `bedAt(x)` (the seabed's height there, m). Going straight for the beacon would then run into a ridge.
@@ -65,12 +71,15 @@ export function seabedBetween(x0: number, y0: number, x1: number, y1: number, be
  * "beacon 85 m ahead, 30 m down". The boat moves nearly twice as fast ahead as it dives, so the depth
  * to make up is the part a player must start on early. `dx`, `dy`: the beacon's position minus the
  * hull's, m (y up); `angle`: the hull's pitch, rad; `ridge`: the seabed rises across the straight way
- * to it (`seabedBetween`), which adds `RIDGE_WARNING` on a second line.
+ * to it (`seabedBetween`), which adds `RIDGE_WARNING` on a second line; `mine`: a live mine lies on
+ * that way (./mines.ts `mineOnWay`) and on which side to pass it, which adds `MINE_WARNING` there
+ * instead when there is no ridge.
  */
-export function beaconLabel(dx: number, dy: number, angle = 0, ridge = false): string {
+export function beaconLabel(dx: number, dy: number, angle = 0, ridge = false, mine: '' | 'over' | 'under' = ''): string {
   const along = dx * Math.cos(angle) + dy * Math.sin(angle);
   const parts: string[] = [];
   if (Math.abs(along) >= 3) parts.push(`${Math.abs(along).toFixed(0)} m ${along > 0 ? 'ahead' : 'behind'}`);
   if (Math.abs(dy) >= 3) parts.push(`${Math.abs(dy).toFixed(0)} m ${dy < 0 ? 'down' : 'up'}`);
-  return `beacon ${parts.length > 0 ? parts.join(', ') : 'here'}${ridge ? `\n${RIDGE_WARNING}` : ''}`;
+  const warning = ridge ? RIDGE_WARNING : mine ? MINE_WARNING[mine] : '';
+  return `beacon ${parts.length > 0 ? parts.join(', ') : 'here'}${warning ? `\n${warning}` : ''}`;
 }

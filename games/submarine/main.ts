@@ -35,7 +35,7 @@ import { Graphics, Text } from 'pixi.js';
 import { beaconLabel, chooseBeacon, seabedBetween } from './beacons';
 import { drawBoat } from './boat-drawing';
 import { createHelmState, type HelmInput, steer } from './helm';
-import { layMines, MINE_BLAST_IMPULSE, MINE_RADIUS, type Mine, parTime, touchesMine } from './mines';
+import { hullDistance, layMines, MINE_BLAST_IMPULSE, MINE_RADIUS, type Mine, mineOnWay, parTime, touchesMine } from './mines';
 import { drawFish } from './sea-life';
 import { seabedInput, touchSeabed } from './seabed';
 import { type Glow, layTrail, touchesGlow } from './trail';
@@ -75,6 +75,10 @@ let taken: boolean[] = [];
 /** The course's moored mines (./mines.ts) and whether each is still live (a mine that went off is gone). */
 let mines: Mine[] = [];
 let mineLive: boolean[] = [];
+/** The live mine on the straight way to the pointer's beacon (./mines.ts mineOnWay), -1 for none: drawn ringed. */
+let wayMine = -1;
+/** Within this distance of the hull, m, a mine is drawn with a pulsing warning ring. */
+const MINE_WARN_DISTANCE = 25;
 /** The course's glow trail (./trail.ts), and each glow's state: 0 to catch, 1 caught, 2 missed (passed by). */
 let glows: Glow[] = [];
 let glowState = new Uint8Array(0);
@@ -111,6 +115,9 @@ const aim = {
   /** The label's box and the hull's (x, y, width, height, px), to check the label stays off the hull. */
   label: [0, 0, 0, 0],
   hull: [0, 0, 0, 0],
+  /** The arrow's badge while drawn: its box (x, y, width, height, px; zeros while none) and the depth gauge's left edge (px). */
+  badge: [0, 0, 0, 0],
+  gaugeLeft: 0,
 };
 
 /**
@@ -123,11 +130,11 @@ const PICKUP_LIFE = 2;
 /** The framing camera: the hull and the next beacon are kept this far inside the view's edges, px. */
 const FRAME_MARGIN = 60;
 /**
- * The framing camera zooms out no further than this, px/m (beyond, the edge arrow leads on): 2 on
- * a wide screen, 4 on a small one, where the 12 m hull would otherwise shrink under 48 px and the
- * mines to specks.
+ * The framing camera zooms out no further than this, px/m (beyond, the edge arrow leads on): 5 on
+ * a wide screen (the 12 m hull 60 px long; at 2 px/m a stranger saw it shrink to about 35 px at
+ * speed), 4 on a small one, where the hull would otherwise shrink under 48 px and the mines to specks.
  */
-const FRAME_MIN_ZOOM = pageLayout().compact() ? 4 : 2;
+const FRAME_MIN_ZOOM = pageLayout().compact() ? 4 : 5;
 /** The camera's zoom now, px/m (eased toward the framing zoom; NaN: set at the next frame). */
 let zoom = Number.NaN;
 /** The view leads the hull by its velocity along x times this, s (the look-ahead). */
@@ -189,6 +196,7 @@ function createWorld(): PhysicsWorld {
   taken = new Array(params.beacons).fill(false);
   mines = layMines(handles.beacons, handles.seabed, params.seed);
   mineLive = mines.map(() => true);
+  wayMine = -1;
   glows = layTrail(handles.beacons, handles.seabed, mines);
   glowState = new Uint8Array(glows.length);
   glowPops.length = 0;
@@ -444,10 +452,19 @@ hullGauge.style.cssText =
 readout.append(readoutText, hullGauge);
 const instruments = document.createElement('div');
 instruments.dataset.hud = 'instruments';
-instruments.style.cssText = 'font-size: 11px; color: #b4c4d4;';
-// On a phone the status row keeps two short lines (the instruments are for wide screens).
+// #c8d6e4 on the columns' dark backing: a contrast of about 12:1 (at least 4.5:1 for small text).
+instruments.style.cssText = 'white-space: pre-line; color: #c8d6e4; margin: 6px 0;';
+// On a desktop the status row is one line, the goal then the numbers a player needs (a stranger
+// found three lines, the third small and grey, too dense); the instruments (seabed, climb, pitch,
+// screw, tanks, helm) go in the info column, a line each. On a phone the status row keeps two
+// short lines and the instruments are left out.
 if (compact) instruments.style.display = 'none';
-gauge.append(goal, readout, instruments);
+else {
+  goal.style.display = readout.style.display = 'inline';
+  pageLayout().info.append(instruments);
+}
+gauge.append(goal, readout);
+if (!compact) goal.after(Object.assign(document.createElement('span'), { textContent: ' · ' }));
 pageLayout().status.append(gauge);
 
 /** The end of a run over the scene: won or sunk, the time, the hull, the best, and a button to go again. */
@@ -670,12 +687,25 @@ createButtonBar(
 
 /**
  * Draws the live mines between `left` and `right` (m, world x) and the blasts of those set off, at
- * game time `t` (s), `k` px a metre, through `sx` and `sy` (world m to screen px). A mine: its cable
- * down to an anchor block on the seabed, a dark sphere with contact horns, and a red lamp on top that
- * blinks once a second (so a mine reads as a danger, not as a rock, in the dark of the deep). A blast:
- * a white-orange flash and a ring of rising bubbles, over `BLAST_LIFE` s.
+ * game time `t` (s), `k` px a metre, through `sx` and `sy` (world m to screen px), the hull at
+ * (`hx`, `hy`, m) turned by `ha` rad. A mine: its cable (light, so it reads on the dark water) down
+ * to an anchor block on the seabed, a red-orange halo, a grey sphere ringed in light grey with
+ * contact horns, and a red lamp on top that blinks once a second (so a mine reads as a danger, not
+ * as a rock, in the dark of the deep). Within MINE_WARN_DISTANCE of the hull, and the one on the
+ * way to the pointer's beacon, it gets a pulsing red ring at the distance where the hull sets it
+ * off. A blast: a white-orange flash and a ring of rising bubbles, over `BLAST_LIFE` s.
  */
-function drawMines(t: number, k: number, sx: (x: number) => number, sy: (y: number) => number, left: number, right: number): void {
+function drawMines(
+  t: number,
+  k: number,
+  sx: (x: number) => number,
+  sy: (y: number) => number,
+  left: number,
+  right: number,
+  hx: number,
+  hy: number,
+  ha: number,
+): void {
   const R = MINE_RADIUS * 0.7;
   for (let i = 0; i < mines.length; i++) {
     const m = mines[i]!;
@@ -686,9 +716,22 @@ function drawMines(t: number, k: number, sx: (x: number) => number, sy: (y: numb
     const links = Math.max(1, Math.floor((m.y - R - m.anchor) / 1.5));
     g.moveTo(x, y + R * k)
       .lineTo(x, sy(m.anchor))
-      .stroke({ color: 0x1a2630, width: Math.max(1.5, 0.25 * k), alpha: 0.9 });
-    if (k >= 4) for (let j = 1; j < links; j++) g.circle(x, sy(m.y - R - 1.5 * j), 0.18 * k).stroke({ color: 0x3a4a56, width: 1 });
-    g.rect(x - 0.9 * k, sy(m.anchor) - 0.7 * k, 1.8 * k, 0.9 * k).fill(0x2a3038);
+      .stroke({ color: 0x8fa3b0, width: Math.max(1.5, 0.25 * k), alpha: 0.85 });
+    if (k >= 4) for (let j = 1; j < links; j++) g.circle(x, sy(m.y - R - 1.5 * j), 0.18 * k).stroke({ color: 0xb8c6d0, width: 1 });
+    g.rect(x - 0.9 * k, sy(m.anchor) - 0.7 * k, 1.8 * k, 0.9 * k).fill(0x5a6570);
+    // A warm halo, so the sphere stands out of the blue at any zoom.
+    g.circle(x, y, Math.max(9, 1.9 * MINE_RADIUS * k)).fill({ color: 0xff5a36, alpha: 0.16 });
+    // Near the hull (or on the way to the beacon): a pulsing ring where contact begins.
+    const near = hullDistance(hx, hy, ha, m.x, m.y);
+    if (near < MINE_WARN_DISTANCE || i === wayMine) {
+      const pulse = 0.5 + 0.5 * Math.sin(2 * Math.PI * 2 * t),
+        close = Math.max(0, 1 - near / MINE_WARN_DISTANCE);
+      g.circle(x, y, Math.max(12, (MINE_RADIUS + 1.5) * k)).stroke({
+        color: 0xff3b30,
+        width: 2 + 2 * close,
+        alpha: 0.45 + 0.45 * Math.max(close, pulse * 0.6),
+      });
+    }
     // Horns: six stubs round the sphere, each with a bright tip.
     for (let j = 0; j < 6; j++) {
       const a = (j / 6) * 2 * Math.PI + Math.PI / 2;
@@ -696,14 +739,14 @@ function drawMines(t: number, k: number, sx: (x: number) => number, sy: (y: numb
         y1 = y - Math.sin(a) * MINE_RADIUS * k;
       g.moveTo(x + Math.cos(a) * R * k, y - Math.sin(a) * R * k)
         .lineTo(x1, y1)
-        .stroke({ color: 0x59656e, width: Math.max(1.5, 0.3 * k) });
-      g.circle(x1, y1, Math.max(1.2, 0.18 * k)).fill(0xb8c2c8);
+        .stroke({ color: 0xaab6be, width: Math.max(1.5, 0.3 * k) });
+      g.circle(x1, y1, Math.max(1.5, 0.2 * k)).fill(0xffd0c0);
     }
     g.circle(x, y, Math.max(4, R * k))
-      .fill(0x2b3640)
-      .stroke({ color: 0x8a98a2, width: Math.max(1, 0.12 * k), alpha: 0.8 });
+      .fill(0x56636e)
+      .stroke({ color: 0xd8e2e8, width: Math.max(1.5, 0.15 * k), alpha: 0.95 });
     // A highlight, so the sphere reads round.
-    g.circle(x - 0.3 * R * k, y - 0.3 * R * k, Math.max(1.5, 0.3 * R * k)).fill({ color: 0xc8d4dc, alpha: 0.35 });
+    g.circle(x - 0.3 * R * k, y - 0.3 * R * k, Math.max(1.5, 0.3 * R * k)).fill({ color: 0xe8f0f4, alpha: 0.45 });
     const on = (t + i * 0.37) % 1 < 0.5;
     g.circle(x, y - R * k * 0.55, Math.max(2, 0.22 * k)).fill({ color: on ? 0xff3b30 : 0x6a1a16, alpha: 1 });
     if (on) g.circle(x, y - R * k * 0.55, Math.max(5, 0.7 * k)).fill({ color: 0xff3b30, alpha: 0.25 });
@@ -1071,7 +1114,7 @@ function draw(): void {
   }
   drawFish(g, left, right, t, k, sx, sy, bedAt, hxw, hyw);
   drawGlows(t, k, sx, sy, left, right);
-  drawMines(t, k, sx, sy, left, right);
+  drawMines(t, k, sx, sy, left, right, hxw, hyw, c.Angle.value[e]!);
   // Beacons: a lamp (at least 5 px, however far the camera zooms out) in a pulsing ring; each one
   // on screen but the pointer's is tagged "beacon" under it, so a yellow light elsewhere in the view
   // reads as another beacon to collect, not as something unexplained.
@@ -1141,10 +1184,14 @@ function draw(): void {
     const m = 40;
     aim.distance = best;
     const ridge = seabedBetween(hxw, hyw, wx, wy, (x) => seabedHeight(handles.seabed, x));
-    pointer.text = beaconLabel(wx - hxw, wy - hyw, c.Angle.value[e]!, ridge);
+    const onWay = mineOnWay(hxw, hyw, wx, wy, mines, mineLive);
+    wayMine = onWay ? onWay.index : -1;
+    pointer.text = beaconLabel(wx - hxw, wy - hyw, c.Angle.value[e]!, ridge, onWay ? onWay.side : '');
     aim.dx = wx - hxw;
     aim.dy = wy - hyw;
-    aim.onScreen = bx >= m && bx <= W - m && by >= m && by <= H - m;
+    // The right margin leaves the depth gauge clear too (on a phone the badge sat over it).
+    const right = W - GAUGE_WIDTH - m;
+    aim.onScreen = bx >= m && bx <= right && by >= m && by <= H - m;
     // From the hull's place on screen toward the beacon, stopped at the margin.
     const hx = sx(hxw),
       hy = sy(hyw);
@@ -1154,7 +1201,7 @@ function draw(): void {
       const dx = bx - hx,
         dy = by - hy;
       const t = Math.min(
-        dx > 0 ? (W - m - hx) / dx : dx < 0 ? (m - hx) / dx : Infinity,
+        dx > 0 ? (right - hx) / dx : dx < 0 ? (m - hx) / dx : Infinity,
         dy > 0 ? (H - m - hy) / dy : dy < 0 ? (m - hy) / dy : Infinity,
       );
       px = hx + dx * t;
@@ -1166,6 +1213,11 @@ function draw(): void {
       // A badge: a dark disc ringed in the beacons' yellow, drawn out to a point toward the beacon,
       // with a long arrow (shaft and head) in it: a short broad triangle read as pointing either way.
       const along = (u: number, v: number): [number, number] => [px + u * ca - v * sa, py + u * sa + v * ca];
+      const corners = [along(28, 0), along(10, 15), along(-14, 14), along(-20, 0), along(-14, -14), along(10, -15)];
+      const xs = corners.map((p) => p[0]),
+        ys = corners.map((p) => p[1]);
+      aim.badge = [Math.min(...xs), Math.min(...ys), Math.max(...xs) - Math.min(...xs), Math.max(...ys) - Math.min(...ys)];
+      aim.gaugeLeft = W - GAUGE_WIDTH;
       g.poly([...along(28, 0), ...along(10, 15), ...along(-14, 14), ...along(-20, 0), ...along(-14, -14), ...along(10, -15)])
         .fill({ color: 0x06213a, alpha: 0.9 })
         .stroke({ color: 0xffe066, width: 2 });
@@ -1183,6 +1235,7 @@ function draw(): void {
       pointer.y = py - (pointer.height / 2 + 28) * sa;
     } else {
       aim.angle = Number.NaN;
+      aim.badge = [0, 0, 0, 0];
       pointer.x = bx;
       pointer.y = by - 2.4 * k - 16;
     }
@@ -1322,7 +1375,14 @@ function draw(): void {
     ? `depth ${depth.toFixed(0)}${ordered} m · ${speed.toFixed(1)} m/s · `
     : `depth ${depth.toFixed(0)}${ordered} m · speed ${speed.toFixed(1)} m/s · score ${state.score}${streak} · `;
   showHull();
-  instruments.textContent = `seabed ${(-floor).toFixed(0)} m · climb ${c.Velocity.y[e]!.toFixed(1)} m/s · pitch ${((a * 180) / Math.PI).toFixed(0)}° · screw ${(state.throttle * 100).toFixed(0)}% · tanks ${(B.fore[e]! * 100).toFixed(0)}/${(B.aft[e]! * 100).toFixed(0)}% (neutral ${(SUBMARINE_NEUTRAL_FILL * 100).toFixed(0)}%) · ${helm}`;
+  instruments.textContent = [
+    `seabed ${(-floor).toFixed(0)} m`,
+    `climb ${c.Velocity.y[e]!.toFixed(1)} m/s`,
+    `pitch ${((a * 180) / Math.PI).toFixed(0)}°`,
+    `screw ${(state.throttle * 100).toFixed(0)}%`,
+    `tanks ${(B.fore[e]! * 100).toFixed(0)}/${(B.aft[e]! * 100).toFixed(0)}% (neutral ${(SUBMARINE_NEUTRAL_FILL * 100).toFixed(0)}%)`,
+    `helm: ${helm}`,
+  ].join('\n');
 }
 
 const panel = createPanel(

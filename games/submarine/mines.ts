@@ -81,6 +81,58 @@ export function layMines(beacons: ArrayLike<number>, seabed: SubmarineHandles['s
 }
 
 /**
+ * How near the straight way of the hull's centre may pass a mine's centre before the pointer warns,
+ * m: the mine's radius, half the hull's height and 3 m of room (6.9 m).
+ */
+export const MINE_WAY_CLEARANCE = MINE_RADIUS + SUBMARINE.height / 2 + 3;
+
+/**
+ * The first live mine along the straight way from the hull at (x0, y0) to the beacon at (x1, y1),
+ * m (y up): the one nearest the hull whose centre lies within `clearance` (m, > 0) of the segment,
+ * and on which side the way should pass it: 'over' when the mine lies below the line (or on it
+ * with more room above: deeper than half the water between it and the surface), else 'under'.
+ * Null when the way is clear. Going straight for the beacon would otherwise set it off.
+ * @param mines the course's mines; `live[i]` false for one that went off.
+ * @throws RangeError when a coordinate is not finite or `clearance` is not positive.
+ */
+export function mineOnWay(
+  x0: number,
+  y0: number,
+  x1: number,
+  y1: number,
+  mines: readonly Mine[],
+  live: readonly boolean[],
+  clearance: number = MINE_WAY_CLEARANCE,
+): { index: number; side: 'over' | 'under' } | null {
+  for (const [name, v] of [
+    ['x0', x0],
+    ['y0', y0],
+    ['x1', x1],
+    ['y1', y1],
+  ] as const)
+    if (!Number.isFinite(v)) throw new RangeError(`mineOnWay: ${name} must be finite, got ${v}`);
+  if (!(clearance > 0)) throw new RangeError(`mineOnWay: clearance must be positive, got ${clearance}`);
+  const dx = x1 - x0,
+    dy = y1 - y0,
+    len2 = dx * dx + dy * dy;
+  let best: { index: number; side: 'over' | 'under' } | null = null,
+    bestU = Infinity;
+  for (let i = 0; i < mines.length; i++) {
+    if (!live[i]) continue;
+    const m = mines[i]!;
+    const u = len2 > 0 ? Math.max(0, Math.min(1, ((m.x - x0) * dx + (m.y - y0) * dy) / len2)) : 0;
+    const lx = x0 + u * dx,
+      ly = y0 + u * dy;
+    if (Math.hypot(m.x - lx, m.y - ly) >= clearance || u >= bestU) continue;
+    bestU = u;
+    // Below the line: over it. Near the line: the side with the more water, above (to the surface) or under (to the bed).
+    const side = m.y < ly - 0.5 ? 'over' : m.y > ly + 0.5 ? 'under' : -m.y > m.y - m.anchor ? 'over' : 'under';
+    best = { index: i, side };
+  }
+  return best;
+}
+
+/**
  * Distance, m, from the point (px, py) to the hull, a box `SUBMARINE.length` x `SUBMARINE.height`
  * centred at (x, y) m and turned by `angle` rad (0 inside it): the point taken into the hull's frame
  * (u along, v across), then to the nearest point of the box.
@@ -109,7 +161,7 @@ export function touchesMine(x: number, y: number, angle: number, mx: number, my:
 /**
  * The course's par time, s: along the course from the start (0, 0) through every beacon in
  * `courseOrder`, each leg takes the longer of its run ahead at 8 m/s and its depth change at 4 m/s
- * (about 60% of the boat's top speed ahead, 12.9 m/s, and of its dive speed, 7 m/s: the rest goes
+ * (about 60% of the boat's top speed ahead, 12.9 m/s, and of its dive speed, 10 m/s: the rest goes
  * to the turns and the detours round the mines), plus 3 s a beacon; rounded up to 5 s.
  */
 export function parTime(beacons: ArrayLike<number>): number {

@@ -47,6 +47,8 @@ interface RopeLab extends Lab {
   level(): number;
   ropePieces(): number;
   stars(): number;
+  advance(n: number): void;
+  banner(): { text: string; stars: number[]; box: number[] };
 }
 
 let h: Harness;
@@ -135,7 +137,7 @@ for (const [device, options] of [
       await g?.close();
     });
 
-    it('a stroke on the paused sheet cuts nothing and says paused; across the running sheet it cuts, and the part below falls away', async () => {
+    it('a stroke on the paused sheet cuts it and says the pieces fall on ▶; running, the part below falls away and the status says what it held', async () => {
       // A whole sheet to start from, on a retry too (a first try that timed out left its cut sheet).
       await g.page.evaluate(() => (window.game as unknown as { reset(): void }).reset());
       await g.page.evaluate(() => {
@@ -158,18 +160,22 @@ for (const [device, options] of [
           await toPage(g, rx + 0.3, ry - spacing / 2),
         ];
       };
-      // Paused, the scissors cut nothing (a still sheet let a stroke trace a shape exactly: 100%), and
-      // the status line says why.
+      // Paused, the scissors cut the still sheet (a stranger missed a star three times on the swaying
+      // sheet, and the paused one used to refuse the cut); nothing moves until ▶, and the status line
+      // says so, with what the cut did: the strip held part of a shape, or none.
+      const [, yLow] = await clothPoint(g, cl.rows - 1, Math.floor(cl.columns / 2));
       await drag(g.page, await across(), 6);
       await g.frames(2);
-      expect(await g.page.evaluate(() => (window.game as unknown as ClothLab).cut())).toBe(0);
-      expect(await g.page.evaluate(() => (window.game as unknown as ClothLab).links())).toBe(before);
-      expect(await g.page.locator('.lab-status').textContent()).toMatch(/^Paused: the scissors cut only while the sheet moves/);
+      expect(await g.page.evaluate(() => (window.game as unknown as ClothLab).cut())).toBeGreaterThan(cl.columns);
+      expect(await g.page.evaluate(() => (window.game as unknown as ClothLab).links())).toBeLessThan(before - cl.columns);
+      const said = (await g.page.locator('.lab-status').textContent())!;
+      expect(said).toMatch(/^Paused: cut along the dashed lines, then press ▶ \(or P\) to let the pieces fall\. /);
+      expect(said).toMatch(/: cut off the line, \d+% of it fell and \d+% still hangs: not cut out\.|held no shape/);
+      expect((await clothPoint(g, cl.rows - 1, Math.floor(cl.columns / 2)))[1]).toBe(yLow);
       await g.page.evaluate(() => {
         (window.game as unknown as Lab).paused = false;
       });
-      await drag(g.page, await across(), 6);
-      const cut = await g.waitFor(() => (window.game as unknown as ClothLab).cut(), null);
+      const cut = await g.page.evaluate(() => (window.game as unknown as ClothLab).cut());
       // The scissors snipped (the press started the page's sound; the frame after the cut plays it).
       await g.waitFor(() => (window.game as unknown as { sound: { played: number } }).sound.played > 0, null);
       expect(cut).toBeGreaterThan(cl.columns);
@@ -255,7 +261,7 @@ for (const [device, options] of [
       type State = { pos: number[]; vel: number[]; links: number; cut: number; scraps: number; time: number };
       const state = () => g.page.evaluate(() => (window as unknown as { clothState: () => State }).clothState());
       const stroke = async () => {
-        // The scissors cut only on the running sheet: the state before the stroke is read in the page
+        // The stroke is made on the running sheet: the state before the stroke is read in the page
         // as the pointer goes down (a capturing listener on the window runs before the canvas's own,
         // with no step between), then the page is paused once the stroke has cut.
         await g.page.evaluate(() => {
@@ -425,6 +431,26 @@ for (const [device, options] of [
         const w = window.game as unknown as RopeLab;
         return w.world.components.Position.y[w.ids().ball % 2 ** 25]! < y0 - 1;
       }, ball0);
+      // Cut while it hangs still, the ball drops beside the basket: a miss. The banner says so with
+      // the stars this try caught (gold) and missed (outlined) and stays until a tap or click (it
+      // used to start the level again 1.4 s after, hiding what was caught).
+      const lost = await g.page.evaluate(() => {
+        const w = window.game as unknown as RopeLab;
+        w.paused = true;
+        for (let i = 0; i < 900 && w.outcome() === 'playing'; i++) w.advance(1);
+        return { outcome: w.outcome(), stars: w.stars() };
+      });
+      expect(lost.outcome).toBe('lost');
+      await g.waitFor(() => (window.game as unknown as RopeLab).banner().text.startsWith('Missed!'), null);
+      const shown = await g.page.evaluate(() => (window.game as unknown as RopeLab).banner());
+      expect(shown.text).toBe(`Missed!\n${device === 'phone' ? 'tap' : 'click'} to try again`);
+      expect(shown.stars).toEqual([lost.stars, 3]);
+      await g.page.waitForTimeout(450); // a tap counts 0.4 s after the miss (not the swipe that missed)
+      const mid = await toPage(g, 0, 4);
+      if (device === 'phone') await g.page.touchscreen.tap(mid.x, mid.y);
+      else await g.page.mouse.click(mid.x, mid.y);
+      await g.waitFor(() => (window.game as unknown as RopeLab).outcome() === 'playing', null);
+      expect(await g.page.evaluate(() => (window.game as unknown as RopeLab).cuts())).toBe(0);
       expect(g.errors).toEqual([]);
     });
 
@@ -529,6 +555,7 @@ for (const [device, options] of [
       expect(column.stats).toBe(0);
       expect(column.info).toContain('level 1 of 5: Let go');
       expect(column.info).not.toMatch(/link error|ball speed/);
+      const statusHeight = await g.page.evaluate(() => document.querySelector('.lab-status')!.getBoundingClientRect().height);
       const [x, y] = await ropeMiddle(g, 0);
       const played = await g.page.evaluate(() => (window.game as unknown as { sound: { played: number } }).sound.played);
       // A tap 0.12 m beside the rope (about 9 px on the phone, 11 on the desktop): within reach.
@@ -540,6 +567,17 @@ for (const [device, options] of [
         (window.game as unknown as Lab).paused = false;
       });
       await g.waitFor(() => (window.game as unknown as RopeLab).outcome() === 'won', null, 30_000);
+      // The banner and, under it, a row of the level's 3 stars, as many gold as were caught.
+      await g.waitFor(() => (window.game as unknown as RopeLab).banner().text === 'In the basket!', null);
+      // The status says the level is cleared without growing (on a phone it grew to 3 lines and
+      // pushed the scene down): as tall as before the win.
+      await g.waitFor(() => /★ \d/.test(document.querySelector('.lab-status')?.textContent ?? ''), null);
+      expect(await g.page.evaluate(() => document.querySelector('.lab-status')!.getBoundingClientRect().height)).toBe(statusHeight);
+      const won = await g.page.evaluate(() => {
+        const w = window.game as unknown as RopeLab;
+        return { row: w.banner().stars, stars: w.stars() };
+      });
+      expect(won.row).toEqual([won.stars, 3]);
       // The cut snapped and the win chimed.
       await g.waitFor((n) => (window.game as unknown as { sound: { played: number } }).sound.played >= n + 2, played);
       // The button leaves the basket (level 1: 1.2 m wide at x = 1.85 m) and the ball landing in it in

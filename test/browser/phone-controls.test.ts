@@ -201,6 +201,14 @@ describe('phone controls', () => {
       return z < 4.05 ? z : null;
     }, null);
     expect(far).toBeGreaterThan(3.99);
+    // The beacon far ahead: the arrow's badge at the right edge keeps clear of the depth gauge (it
+    // sat over it).
+    const edge = await g.page.evaluate(() => {
+      const p = (window.game as unknown as { beaconPointer(): { angle: number; badge: number[]; gaugeLeft: number } }).beaconPointer();
+      return { angle: p.angle, right: p.badge[0]! + p.badge[2]!, gaugeLeft: p.gaugeLeft };
+    });
+    expect(Math.abs(edge.angle)).toBeLessThan(Math.PI / 2); // pointing right
+    expect(edge.right).toBeLessThan(edge.gaugeLeft);
     expect(g.errors).toEqual([]);
     await g.close();
   });

@@ -207,6 +207,17 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
       1.8 * r.screenX,
     );
     expect(r.cam.leadX).toBeGreaterThan(0.8 * 2.2 * 8);
+    // Far from the beacon (250 m short, at its depth) the camera zooms out no further than 5 px/m
+    // on the desktop (the 12 m hull 60 px long; it went to 2 px/m, about 35 px seen at speed) and
+    // 4 px/m on a phone.
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as Sub;
+      w.world.components.Position.x[w.hull()] = w.handles().beacons[0]! - 250;
+      w.world.components.Position.y[w.hull()] = w.handles().beacons[1]!;
+    });
+    await g.frames(40);
+    const far = await g.page.evaluate(() => (window.game as unknown as Sub).camera().zoom);
+    expect(far).toBeGreaterThan(device === 'desktop' ? 4.9 : 3.9);
     expect(g.errors).toEqual([]);
     await g.close();
   });
@@ -257,6 +268,17 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     if (device === 'desktop') expect(r.cam.zoom).toBeCloseTo(8, 1);
     else expect(r.cam.width / r.cam.zoom).toBeGreaterThan(69);
     await g.page.screenshot({ path: `/tmp/sub-ahead-${device}.png` });
+    // Far from the beacon (250 m short, at its depth) the camera zooms out no further than 5 px/m
+    // on the desktop (the 12 m hull 60 px long; it went to 2 px/m, about 35 px seen at speed) and
+    // 4 px/m on a phone.
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as Sub;
+      w.world.components.Position.x[w.hull()] = w.handles().beacons[0]! - 250;
+      w.world.components.Position.y[w.hull()] = w.handles().beacons[1]!;
+    });
+    await g.frames(40);
+    const far = await g.page.evaluate(() => (window.game as unknown as Sub).camera().zoom);
+    expect(far).toBeGreaterThan(device === 'desktop' ? 4.9 : 3.9);
     expect(g.errors).toEqual([]);
     await g.close();
   });

@@ -7,7 +7,7 @@
 import { createPhysicsWorld } from '@bitphysics/physics';
 import { seabedHeight, submarine } from '@bitphysics/projects';
 import { describe, expect, it } from 'vitest';
-import { BEACON_SWITCH, beaconLabel, chooseBeacon, RIDGE_WARNING, seabedBetween } from '../../games/submarine/beacons';
+import { BEACON_SWITCH, beaconLabel, chooseBeacon, MINE_WARNING, RIDGE_WARNING, seabedBetween } from '../../games/submarine/beacons';
 
 describe('submarine beacon pointer', () => {
   it('does not flip between two beacons at about the same distance (the nearest-each-frame rule did)', () => {
@@ -72,6 +72,9 @@ describe('submarine beacon pointer', () => {
     expect(beaconLabel(-45, 30)).toBe('beacon 45 m behind, 30 m up');
     expect(beaconLabel(20, -2)).toBe('beacon 20 m ahead');
     expect(beaconLabel(1, -2)).toBe('beacon here');
+    // A mine on the way adds which side to pass it; a ridge, the more urgent, takes the line instead.
+    expect(beaconLabel(20, -2, 0, false, 'over')).toBe(`beacon 20 m ahead\n${MINE_WARNING.over}`);
+    expect(beaconLabel(20, -2, 0, true, 'under')).toBe(`beacon 20 m ahead\n${RIDGE_WARNING}`);
   });
 
   it('warns of a ridge when the straight way to the beacon runs under the seabed', () => {

@@ -90,21 +90,27 @@ describe('submarine helm', () => {
     }
   });
 
-  it('Dive and Rise held from a hover reach 70 % of the asked speed within 1 s (a full stick push asks the same)', () => {
+  it('Dive and Rise held from a hover reach 70 % of the asked speed within 1.5 s, 10 m within 2.05 s (a full stick push asks the same)', () => {
     // The thrusters (2 x 300 kN on 110 t) and the tanks take the boat to most of the asked speed in
-    // about a second, so a held key answers like the stick pushed to its rim (both ask heave 1).
+    // about 1.5 s, so a held key answers like the stick pushed to its rim (both ask heave 1). A
+    // beacon 15 to 28 m down (the first one) is then a couple of seconds of Dive away.
     for (const [input, speed, sign] of [
       [{ dive: true }, HELM.diveSpeed, -1],
       [{ rise: true }, HELM.climbSpeed, 1],
       [{ dive: true, heave: 1 }, HELM.diveSpeed, -1],
     ] as const) {
       const b = boat(-40);
-      run(b, input, 1);
-      expect(sign * vy(b)).toBeGreaterThan(0.7 * speed);
+      const y0 = y(b);
+      let ten = Number.NaN;
+      run(b, input, 2.5, (t) => {
+        if (Math.abs(t - 1.5) < 1e-9) expect(sign * vy(b)).toBeGreaterThan(0.7 * speed);
+        if (Number.isNaN(ten) && sign * (y(b) - y0) >= 10) ten = t;
+      });
+      expect(ten).toBeLessThan(2.05);
     }
   });
 
-  it('at cruise speed on the surface, Dive held passes within 7 m of a beacon 60 m ahead and 26 m down', () => {
+  it('at cruise speed on the surface, Dive held until the order reaches a beacon 60 m ahead and 26 m down passes within 7 m of it', () => {
     const b = boat();
     run(b, { ahead: true }, 8);
     const vx = b.world.components.Velocity.x[b.h.hull]!;
@@ -112,10 +118,12 @@ describe('submarine helm', () => {
     const bx = b.world.components.Position.x[b.h.hull]! + 60,
       by = -26;
     let nearest = Infinity;
-    // Dive and Ahead held until the boat is 10 m past the beacon; 7 m is the pickup radius of
-    // games/submarine/main.ts.
+    // Ahead held, and Dive until the depth order (the gauge's line) is at the beacon's depth, as the
+    // key help says ("let go: stop at the line"), until the boat is 10 m past the beacon; 7 m is
+    // the pickup radius of games/submarine/main.ts.
     for (let t = 0; t < 10 && b.world.components.Position.x[b.h.hull]! < bx + 10; t += b.world.dt) {
-      run(b, { ahead: true, dive: true }, b.world.dt);
+      const dive = !(b.helm.holdY <= by);
+      run(b, { ahead: true, dive }, b.world.dt);
       nearest = Math.min(nearest, Math.hypot(b.world.components.Position.x[b.h.hull]! - bx, y(b) - by));
     }
     expect(nearest).toBeLessThan(7);
@@ -138,7 +146,7 @@ describe('submarine helm', () => {
     run(b, { dive: true }, 7);
     expect(vy(b)).toBeLessThan(-0.9 * HELM.diveSpeed); // at speed
     const r = response(b, { rise: true }, 1);
-    // The momentum of 110 t at 7 m/s against 600 kN of thrusters, the drag k v^2 and the water
+    // The momentum of 110 t at 10 m/s against 600 kN of thrusters, the drag k v^2 and the water
     // blown out of the tanks: a few seconds to turn (honest: no instant stop). The bow comes up 1
     // degree within a second.
     expect(r.speed).toBeLessThan(4.5);
@@ -165,12 +173,12 @@ describe('submarine helm', () => {
 
   it('full Dive: 0.5 m down within 0.47 s (0.42 s under way); let go at full speed, the boat stops on the depth order', () => {
     // The time from a full Dive to 0.5 m of depth change, and how far the boat passes the depth it
-    // ends at once let go at the full 7 m/s, from a hover at 60 m and under way (8 s of full ahead,
+    // ends at once let go at the full 10 m/s, from a hover at 60 m and under way (8 s of full ahead,
     // 12.6 m/s). Measured before the depth order and the dive planes: 0.43 s and 0.45 s; let go, it
     // ran on 3.7 m (3.5 m under way) past the depth it was let go at and took 6 s to climb back to
     // it. Now: 0.43 s (the 600 kN of thrusters on 110 t: 5.5 m/s^2 at most) and 0.38 s (the planes
-    // add up to 470 kN at speed); let go, it runs on 4.3 m (3.3 m under way) to the order, which
-    // went down at 7 m/s from the first step and kept the boat's stopping distance ahead, passes it
+    // add up to 470 kN at speed); let go at 7 m/s, it ran on 4.3 m (3.3 m under way) to the order,
+    // at 10 m/s 8.8 m (6.8 m), the order going down at the dive speed from the first step and kept the boat's stopping distance ahead, passes it
     // by 0.00 m and is within 0.2 m of it 1.2 s (1.1 s) after. Bounds: 10% over the times, 0.2 m.
     for (const ahead of [false, true]) {
       const b = boat(-60);

@@ -14,6 +14,8 @@ import {
   MINE_BED_CLEARANCE,
   MINE_RADIUS,
   MINE_TOP,
+  MINE_WAY_CLEARANCE,
+  mineOnWay,
   parTime,
   touchesMine,
 } from '../../games/submarine/mines';
@@ -89,5 +91,36 @@ describe('submarine mines', () => {
     expect(parTime([60, -20, 300, -80])).toBe(45); // 10.5 + max(30, 15) + 3 = 43.5
     expect(parTime([40, -60])).toBe(20); // max(5, 15) + 3 = 18
     expect(parTime([])).toBe(0);
+  });
+
+  it('mineOnWay: every level run that meets a mine is warned of, with the side to pass; a clear way is not', () => {
+    // Independent of the warning's own geometry: the hull box swept along the straight way (touchesMine).
+    let meets = 0;
+    for (const seed of [1, 2]) {
+      const { h, mines } = course(seed, 6);
+      const live = mines.map(() => true);
+      for (let leg = 1; leg < 6; leg++) {
+        const [ax, ay, bx, by] = [h.beacons[2 * leg - 2]!, h.beacons[2 * leg - 1]!, h.beacons[2 * leg]!, h.beacons[2 * leg + 1]!];
+        let first = -1;
+        for (let f = 0; f <= 1 && first < 0; f += 0.002)
+          for (let i = 0; i < mines.length && first < 0; i++)
+            if (touchesMine(ax + f * (bx - ax), ay + f * (by - ay), 0, mines[i]!.x, mines[i]!.y)) first = i;
+        const way = mineOnWay(ax, ay, bx, by, mines, live);
+        if (first >= 0) {
+          meets++;
+          expect(way?.index).toBe(first);
+          // Gone off, it no longer blocks.
+          const gone = live.map((_, i) => i !== first);
+          expect(mineOnWay(ax, ay, bx, by, mines, gone)?.index).not.toBe(first);
+        }
+      }
+    }
+    expect(meets).toBeGreaterThan(3);
+    // A mine 3 m under a level way: pass over it; 3 m above: under it; 10 m off: clear.
+    const at = (y: number) => [{ x: 50, y, anchor: -80 }];
+    expect(mineOnWay(0, -30, 100, -30, at(-33), [true])).toEqual({ index: 0, side: 'over' });
+    expect(mineOnWay(0, -30, 100, -30, at(-27), [true])).toEqual({ index: 0, side: 'under' });
+    expect(mineOnWay(0, -30, 100, -30, at(-30 - MINE_WAY_CLEARANCE - 0.1), [true])).toBeNull();
+    expect(() => mineOnWay(Number.NaN, 0, 1, 1, [], [])).toThrow(/mineOnWay: x0/);
   });
 });
