@@ -204,9 +204,9 @@ const panel = createPanel(
   ],
   { title: 'Rope', container: dock.panelSlot },
 );
-// What a player reads in the side column: the level, the stars caught and the cuts made; the frame
-// rate, body and step counts and the solver's largest link error are the engineer's (?debug).
-for (const line of ['fps', 'bodies', 'steps']) {
+// What a player reads in the side column: the level, the stars caught, the cuts made and the frame
+// rate; the body and step counts and the solver's largest link error are the engineer's (?debug).
+for (const line of ['bodies', 'steps']) {
   const el = shell.hud.readout.querySelector<HTMLElement>(`[data-hud="${line}"]`);
   if (el) el.hidden = !debug;
 }

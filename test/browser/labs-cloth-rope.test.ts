@@ -545,14 +545,20 @@ for (const [device, options] of [
       // the swing itself caught two of level 1's stars by 1.4 s: "2 of 3").
       expect(await g.page.evaluate(() => (window.game as unknown as RopeLab).stars())).toBe(0);
       await g.waitFor(() => document.body.textContent!.includes('0 of 3'), null);
-      // The side column reads as a game's: the level, stars and cuts; no frame rate, step count or
-      // solver error (before: "fps", "step", "ball speed", "largest link error").
+      // The side column reads as a game's: the level, stars, cuts and the frame rate; no body or
+      // step count or solver error (before: "step", "ball speed", "largest link error").
       const column = await g.page.evaluate(() => {
         const hud = document.querySelector('.bp-hud')!;
-        const stats = [...hud.querySelectorAll<HTMLElement>('[data-hud="fps"], [data-hud="bodies"], [data-hud="steps"]')];
-        return { stats: stats.filter((e) => !e.hidden).length, info: hud.querySelector('[data-lab="info"]')!.textContent };
+        const stats = [...hud.querySelectorAll<HTMLElement>('[data-hud="bodies"], [data-hud="steps"]')];
+        const fps = hud.querySelector<HTMLElement>('[data-hud="fps"]');
+        return {
+          stats: stats.filter((e) => !e.hidden).length,
+          fps: fps !== null && !fps.hidden,
+          info: hud.querySelector('[data-lab="info"]')!.textContent,
+        };
       });
       expect(column.stats).toBe(0);
+      expect(column.fps).toBe(true);
       expect(column.info).toContain('level 1 of 5: Let go');
       expect(column.info).not.toMatch(/link error|ball speed/);
       const statusHeight = await g.page.evaluate(() => document.querySelector('.lab-status')!.getBoundingClientRect().height);
