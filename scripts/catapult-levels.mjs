@@ -7,6 +7,9 @@
 // Exits 1 when a level was not cleared. Takes a few seconds a level (a minute for the last at 0.95).
 // With --spread, instead: how hard each level is, as how many of 36 single throws (angles 10 to 60
 // degrees by 10, powers 50 to 100 % by 10) clear it (the levels come in that order, easiest first).
+// With --grid, instead: of 13 x 15 single throws (angles 10 to 70 degrees by 5, powers 30 to 100 %
+// by 5), the share that clears each level and the share that earns three stars (95 % down), and how
+// many throws clear more than one of the levels chosen (one throw should not fit every castle).
 import { mkdtempSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
@@ -59,9 +62,36 @@ try {
       console.log(`level ${n} ${levelName(n - 1)}: ${clear} of 36 single throws clear it; the best brings down ${best} of ${pieces}`);
     }
   }
+  if (args.includes('--grid')) {
+    const clears = new Map();
+    for (const n of chosen) {
+      let clear = 0,
+        three = 0,
+        total = 0;
+      const t0 = performance.now();
+      for (let angle = 10; angle <= 70; angle += 5)
+        for (let p = 30; p <= 100; p += 5) {
+          const r = playThrows(n - 1, seed, [{ angle, power: p / 100 }]);
+          total++;
+          if (r.cleared) {
+            clear++;
+            const key = `${angle}° ${p} %`;
+            clears.set(key, [...(clears.get(key) ?? []), n]);
+          }
+          if (r.fallen >= Math.ceil(0.95 * r.pieces)) three++;
+        }
+      console.log(
+        `level ${n} ${levelName(n - 1)}: ${clear} of ${total} single throws clear it (${((100 * clear) / total).toFixed(1)} %), ${three} earn three stars (${((100 * three) / total).toFixed(1)} %) (${((performance.now() - t0) / 1000).toFixed(1)} s)`,
+      );
+    }
+    const shared = [...clears].filter(([, ls]) => ls.length > 1);
+    console.log(
+      `throws that clear more than one of levels ${chosen.join(', ')}: ${shared.length}${shared.length ? `: ${shared.map(([k, ls]) => `${k} (${ls.join(', ')})`).join('; ')}` : ''}`,
+    );
+  }
   const found = [];
   let failed = 0;
-  for (const n of args.includes('--spread') ? [] : chosen) {
+  for (const n of args.includes('--spread') || args.includes('--grid') ? [] : chosen) {
     const t0 = performance.now();
     const r = searchLevel(n - 1, seed, { share });
     const throws = r.throws.map((t) => ({ angle: t.angle, power: Math.round(100 * t.power) / 100 }));

@@ -116,8 +116,10 @@ const WALL_FILL_GAP = 0.4;
  * The spec of level `level`, one new difficulty at a time: level 1 a slalom of three small holes
  * (holding thrust up falls into the first; the way round it leads under one of the two above,
  * which leave a way through between them); level 2 a wall of holes across the
- * field with one 7 m gap off to the side (fly across to it, then up through it); level 3 a narrower
- * gap (5.5 m) with a hole above it; level 4 three holes, two across the path one above the other;
+ * field with one 9 m gap off to the side (fly across to it, then up through it); level 3 a narrower
+ * gap (7 m) with a hole above it (measured with scripted players who fly across without braking: with
+ * gaps of 7 and 5.5 m level 2 took 4.3 tries on average and level 3 5.1 to 5.8, half the fields never
+ * cleared in six; now 2.6 and 4.8); level 4 three holes, two across the path one above the other;
  * level 5 a fourth hole; from level 6 the holes drift, slowly at first (0.35, then 0.6, 0.8 m/s);
  * from level 8 the fuel is limited (18 s, then 15 s down to 5 s); from level 9 a fifth hole, then a
  * hole more every second level (up to MAX_HOLES), bigger (radius up to 2 m) and faster (up to 3 m/s).
@@ -150,9 +152,9 @@ export function levelSpec(level: number): LevelSpec {
     case 1:
       return spec(3, [0.6, 0.75], 0, 1, 0, Infinity, 0, true);
     case 2:
-      return spec(0, [0.45, 0.55], 0, 0, 0, Infinity, 7);
+      return spec(0, [0.45, 0.55], 0, 0, 0, Infinity, 9);
     case 3:
-      return spec(1, [0.45, 0.55], 0, 1, 0, Infinity, 5.5);
+      return spec(1, [0.45, 0.55], 0, 1, 0, Infinity, 7);
     case 4:
       return spec(3, [0.6, 1.1], 0, 2, 0, Infinity);
     case 5:

@@ -139,6 +139,12 @@ function fieldForStage(): { width: number; height: number } {
   return { width: FIELD.width, height: Math.min(30, Math.max(FIELD.height, Math.round((2 * FIELD.width * h) / w) / 2)) };
 }
 let playField = fieldForStage();
+/**
+ * The level the next world starts at instead of `params.level` (then cleared): set by `advance` after
+ * a game over, so the player goes on from the level that ended it (with a score of 0 and three lives)
+ * rather than play the levels before it again. R still starts from `params.level`.
+ */
+let continueLevel: number | null = null;
 
 function createWorld(): PhysicsWorld {
   bh = createBlackHoleGame({
@@ -149,7 +155,8 @@ function createWorld(): PhysicsWorld {
     thrust: params.thrust,
     field: playField,
   });
-  run = levels ? startLevel(bh, params.level) : null;
+  run = levels ? startLevel(bh, continueLevel ?? params.level) : null;
+  continueLevel = null;
   predictor = createPredictor(bh);
   replay = createBlackHoleReplay(bh, run, onGameStep);
   return bh.world;
@@ -172,7 +179,7 @@ const game = await startPixiGame({
   },
   controls: [
     { keys: '← ↑ → ↓', action: 'thrust (one at a time)', touch: 'hold, slide ← ↑ → ↓' },
-    { keys: 'Enter', action: 'next level / play again', touch: 'the big button' },
+    { keys: 'Enter', action: 'next level / continue from this level', touch: 'the big button' },
     { keys: 'F', action: 'predicted path on / off' },
     { keys: 'V', action: 'replay the run from the start' },
   ],
@@ -277,10 +284,15 @@ function applyHeld(): void {
   if (want !== bh.thrust) replay.input('thrust', want);
 }
 
-/** Enter or a tap on the message: the next level after a clear, a new game after the last life. */
+/**
+ * Enter or a tap on the message: the next level after a clear; after the last life, a new game from
+ * the level that ended it (levels) or a new classic game.
+ */
 function advance(): void {
-  if (bh.over) game.shell.reset();
-  else if (run?.waiting) {
+  if (bh.over) {
+    if (run) continueLevel = run.spec.level;
+    game.shell.reset();
+  } else if (run?.waiting) {
     replay.input('beginLevel');
     updateStatus(true);
   }
@@ -401,6 +413,17 @@ let shownNumbers = '',
   shownMessage = '',
   shownThrust: Thrust | '' = '';
 
+/** The game-over line in levels: Enter goes on from the level lost (`advance`), R starts again from the first. */
+function overMessage(m: string): string {
+  if (!run || !bh.over) return m;
+  return m.replace(
+    'Press Enter or R to play again.',
+    touch
+      ? `Tap to continue from level ${run.spec.level}.`
+      : `Enter: continue from level ${run.spec.level} (score from 0). R: start again from level ${params.level}.`,
+  );
+}
+
 function updateStatus(force = false): void {
   // The classic game's hole count follows the field (a crossing adds a hole).
   if (!levels && params.holes !== bh.holes.length && bh.holes.length > 0) {
@@ -421,13 +444,19 @@ function updateStatus(force = false): void {
     shownMessage = bh.message;
     // The rules speak of keys; on a touch screen a tap does the same.
     message.textContent = touch
-      ? bh.message.replace('Press Enter or R to play again.', 'Tap to play again.').replace('Tap here or press Enter', 'Tap')
-      : bh.message;
+      ? overMessage(bh.message).replace('Press Enter or R to play again.', 'Tap to play again.').replace('Tap here or press Enter', 'Tap')
+      : overMessage(bh.message);
   }
   status.classList.toggle('over', bh.over);
   status.classList.toggle('cleared', !bh.over && (run?.waiting ?? false));
   // A big button over the scene says what comes next: the next level, or a new game.
-  const next = bh.over ? 'Play again ↺' : run?.waiting ? `Level ${run.spec.level} ▶` : '';
+  const next = bh.over
+    ? run
+      ? `Continue from level ${run.spec.level} ↺`
+      : 'Play again ↺'
+    : run?.waiting
+      ? `Level ${run.spec.level} ▶`
+      : '';
   if (next !== shownAction) {
     shownAction = next;
     setAction(next !== '', next || undefined);

@@ -320,8 +320,13 @@ const game = await startPixiGame({
   controls: [
     { keys: 'Drag', action: 'pull back (anywhere), release to throw' },
     { keys: 'L', action: 'next level', touch: 'Next level' },
+    { keys: 'Enter', action: 'next level after a clear (try again after a miss)' },
   ],
-  keys: [{ key: 'l', label: 'next level', action: () => nextLevel() }],
+  keys: [
+    { key: 'l', label: 'next level', action: () => nextLevel() },
+    // Enter presses the on-screen button, and only while it shows (a cleared or ended level).
+    { key: 'Enter', label: 'next level after a clear', action: () => nextShown && nextLevel() },
+  ],
   renderer: { view: { minX: -4, minY: -1, maxX: 30, maxY: 14 } },
   app: { background: SKY },
   // The camera moves before the bodies are placed, so they and the overlay share it.
@@ -436,7 +441,8 @@ function viewFor(minX: number, maxX: number): View {
 const rockRight = (): number => lv.castleMaxX + ROCK.gap + 2 * ROCK.hx;
 /** The aim view (see above). */
 function aimView(): View {
-  if (upright()) return viewFor(UPRIGHT_AIM_LEFT, UPRIGHT_AIM_LEFT + UPRIGHT_AIM_SPAN);
+  // Before the level's first throw the overview: the player sees the castle they are to aim at.
+  if (upright()) return shots.length === 0 ? overviewRect() : viewFor(UPRIGHT_AIM_LEFT, UPRIGHT_AIM_LEFT + UPRIGHT_AIM_SPAN);
   // Room behind the catapult for its stones where the screen is wide enough.
   const behind = renderer.camera.width < NARROW ? 1.6 : 3.1;
   return viewFor(LAUNCH.x - behind, rockRight() + 0.6);
@@ -486,7 +492,17 @@ function frameCamera(): void {
   const cam = renderer.camera;
   // Back to the aim view once the verdict has been up for VERDICT_READ seconds (or the level ended).
   if (shotView && lastThrow.verdict && (shell.world.time - lastThrow.decidedAt > VERDICT_READ || levelEnded)) shotView = false;
-  const target = shotView && zoomsIn() ? (upright() ? followView() : shotViewRect()) : aim.active && upright() ? overviewRect() : aimView();
+  // A level over: the wreck stays in view with its result (on a phone the shot view, not the catapult).
+  const wreck = levelEnded && shots.length > 0 && zoomsIn();
+  const target = wreck
+    ? shotViewRect()
+    : shotView && zoomsIn()
+      ? upright()
+        ? followView()
+        : shotViewRect()
+      : aim.active && upright()
+        ? overviewRect()
+        : aimView();
   const size = `${cam.width}x${cam.height}`;
   const k = size === framedFor ? 0.1 : 1;
   if (size !== framedFor) sizesFramed.add(size);
@@ -761,7 +777,14 @@ let trailDots = 0;
 let shownScore = 0;
 
 /** The on-screen "Next level" button, shown when a level is over. */
-const showNext = createActionButton('Next level ▶', () => nextLevel());
+const showNextButton = createActionButton('Next level ▶', () => nextLevel());
+/** Whether the "Next level" button shows (Enter presses it then). */
+let nextShown = false;
+/** Shows or hides the "Next level" button, with `text` on it. */
+const showNext = (visible: boolean, text?: string): void => {
+  nextShown = visible;
+  showNextButton(visible, text);
+};
 
 const overlay = new Graphics({ label: 'catapult' });
 const banner = new Text({
@@ -777,6 +800,13 @@ const banner = new Text({
   },
 });
 banner.anchor.set(0.5, 0);
+/**
+ * A dark panel behind the banner (black at BANNER_PANEL_ALPHA): white type over the pale sun or a
+ * cloud read at under 2:1; over the panel the sky's palest (the sun's disc) is 0.38 x white, and
+ * white type on that is about 5.9:1 (WCAG contrast, at least 4.5:1).
+ */
+const bannerPanel = new Graphics({ label: 'banner panel' });
+const BANNER_PANEL_ALPHA = 0.62;
 const verdictText = new Text({
   text: '',
   style: { fill: 0xffffff, fontSize: 20, fontFamily: 'sans-serif', fontWeight: 'bold', stroke: { color: 0x000000, width: 5 } },
@@ -824,6 +854,7 @@ renderer.root.addChild(
   overlay,
   effects.graphics,
   popupLayer,
+  bannerPanel,
   banner,
   verdictText,
   offscreenText,
@@ -1217,7 +1248,7 @@ function draw(world: PhysicsWorld, alpha: number): void {
     const last = params.level === LEVEL_COUNT;
     const starsWon = campaign.stars.reduce((a, b) => a + b, 0);
     if (earned === 0) {
-      const keys = touch ? 'Tap the button below to try again' : 'L or the button below: try again';
+      const keys = touch ? 'Tap the button below to try again' : 'Enter, L or the button below: try again';
       banner.text = `Level ${params.level} not cleared  ${stars}\n${t.fallen} of ${lv.pieces.length} pieces fell: bring down half to pass\n${starRule}\n${keys}`;
       showNext(true, 'Try again ↺');
     } else if (last) {
@@ -1228,10 +1259,12 @@ function draw(world: PhysicsWorld, alpha: number): void {
         skipped.length === 0
           ? `All ${LEVEL_COUNT} castles down!`
           : `${LEVEL_COUNT - skipped.length} of ${LEVEL_COUNT} castles down (${skipped.length === 1 ? 'level' : 'levels'} ${skipped.join(', ')} not cleared)`;
-      banner.text = `${head}  ${stars}\nTotal score ${total()}   Stars ${starsWon} / ${3 * LEVEL_COUNT}\n${starRule}\n${touch ? 'Tap below to play again' : 'L or the button below: play again'}`;
+      banner.text = `${head}  ${stars}\nTotal score ${total()}   Stars ${starsWon} / ${3 * LEVEL_COUNT}\n${starRule}\n${touch ? 'Tap below to play again' : 'Enter, L or the button below: play again'}`;
       showNext(true, 'Play again from level 1 ▶');
     } else {
-      const keys = touch ? 'Tap the button below for the next level, ↺ to try again' : 'L or the button below: next level   R: try again';
+      const keys = touch
+        ? 'Tap the button below for the next level, ↺ to try again'
+        : 'Enter, L or the button below: next level   R: try again';
       const extra = bonus > 0 ? ` + ${bonus} for ${shotsLeft} ${shotsLeft === 1 ? 'shot' : 'shots'} left` : '';
       banner.text = `Level ${params.level} cleared  ${stars}\nScore ${score}: ${t.fallen} pieces fell, ${t.broken} welds broke${extra}   Total ${total()}\n${starRule}\n${keys}`;
       showNext(true, `Level ${params.level + 1} ▶`);
@@ -1247,7 +1280,12 @@ function draw(world: PhysicsWorld, alpha: number): void {
       // throw again for more stars.
       const earned = starsOf(t.fallen / Math.max(1, lv.pieces.length));
       const stars = '★'.repeat(earned) + '☆'.repeat(3 - earned);
-      const bonus = narrow ? `Move on now: +${shotsLeft * SHOT_BONUS}` : `+${shotsLeft * SHOT_BONUS} for shots left if you move on now`;
+      const n = shotsLeft * SHOT_BONUS;
+      const bonus = touch
+        ? `Move on now: +${n}`
+        : narrow
+          ? `Move on now (Enter): +${n}`
+          : `+${n} for shots left if you move on now (Enter)`;
       banner.text = `Cleared!  ${stars}   ${bonus}\n${running}`;
       showNext(true, params.level === LEVEL_COUNT ? 'Finish ▶' : `Level ${params.level + 1} ▶`);
     } else {
@@ -1255,6 +1293,15 @@ function draw(world: PhysicsWorld, alpha: number): void {
       showNext(false);
     }
   }
+  // The panel behind the banner: the text's box with 8 px (6 on a phone) round it.
+  const pad = narrow ? 6 : 8,
+    bw = banner.width,
+    bh = banner.height;
+  bannerPanel.clear();
+  if (banner.text !== '' && bw > 0)
+    bannerPanel
+      .roundRect(banner.x - bw / 2 - pad, banner.y - pad / 2, bw + 2 * pad, bh + pad, 8)
+      .fill({ color: 0x000000, alpha: BANNER_PANEL_ALPHA });
 }
 
 /**
@@ -1345,6 +1392,19 @@ shell.expose({
     fontSize: banner.style.fontSize,
   }),
   pauseShown: (): boolean => pauseText.visible,
+  /**
+   * The dark panel behind the banner in the last frame: its box on the screen, px, and its opacity
+   * (0 to 1), and the banner's box; null while the banner is empty.
+   */
+  bannerPanel: (): { panel: [number, number, number, number]; alpha: number; text: [number, number, number, number] } | null => {
+    if (banner.text === '') return null;
+    const b = bannerPanel.getLocalBounds();
+    return {
+      panel: [b.minX, b.minY, b.maxX, b.maxY],
+      alpha: BANNER_PANEL_ALPHA,
+      text: [banner.x - banner.width / 2, banner.y, banner.x + banner.width / 2, banner.y + banner.height],
+    };
+  },
   /** Steps the world n times (tests). */
   advance: (n: number) => {
     for (let i = 0; i < n; i++) shell.step();

@@ -342,34 +342,45 @@ export function surfaceAt(lv: Pick<Level, 'terrain'>, x: number): number {
  * by a bridge, a deck on stone piers, a tower down in a pit, a fort on a hill, a hall of glass,
  * three towers, and a fortress. They come in the order of how hard they measured (the share of
  * single throws over a grid of angles and powers that clear them), so each asks a little more than
- * the one before. The castles stand 11 to 17 m out, so the catapult and the castle share the screen
- * at a scale where a piece reads (a 1.2 m post about 55 px tall on a 1060 px wide view).
+ * the one before. The castles stand 7 to 26 m out, so the catapult and the castle share the screen
+ * at a scale where a piece reads (a 1.2 m post about 40 px tall on a 1060 px wide view). The first
+ * three ask for different throws (games/catapult/solve.ts, `node scripts/catapult-levels.mjs --grid`):
+ * a low watchtower near by with a hut behind it (a low, flat throw brings both down for three stars), a
+ * low keep behind an earth rampart (a lob drops onto it), and twin towers far off behind a taller
+ * rampart; one blind throw no longer clears all three.
  */
 const LEVELS: ReadonlyArray<{ name: string; shots: number; build: (b: Builder) => void }> = [
   {
     name: 'Watchtower',
+    // A low tower near by and a hut behind it: a flat throw through both brings all down; a hard,
+    // flat throw meant for a farther castle flies over them.
     shots: 3,
     build: (b) => {
-      tower(b, 12 + b.rng.range(-1, 1), 0, 3, { stones: 1 });
+      const x = 8.5 + b.rng.range(-0.5, 0.5);
+      tower(b, x, 0, 1, { stones: 2 });
+      tower(b, x + 3.3, 0, 1, { stones: 1, span: 1.6 });
     },
   },
   {
     name: 'Stone keep',
-    // A wooden tower on a plinth of stone blocks, crowned with a stone battlement (heavy: it brings
-    // the tower down with it), glass inside.
+    // A low wooden keep on a plinth of stone blocks, crowned with a stone battlement, behind an earth
+    // rampart 2 m high: most flat throws hit the rampart or fly over the keep; a lob drops onto it.
     shots: 3,
     build: (b) => {
-      const x = 13 + b.rng.range(-1, 1);
+      const x = 12.5 + b.rng.range(-0.5, 0.5);
+      hill(b, x - 4.4, x - 3, 2);
       const top = brickBlock(b, x, 0, 4, 1, BRICK);
-      const roof = tower(b, x, top, 3, { stones: 0, blocks: 1 });
+      const roof = tower(b, x, top, 1, { stones: 0, blocks: 0 });
       brickBlock(b, x, roof.y, 3, 1, BRICK);
     },
   },
   {
     name: 'Twin towers',
+    // Far off (22 m), behind a rampart 2.4 m high: a long, high throw.
     shots: 3,
     build: (b) => {
-      const x0 = 12 + b.rng.range(-1, 1);
+      const x0 = 22 + b.rng.range(-0.5, 0.5);
+      hill(b, x0 - 4.4, x0 - 2.8, 2.4);
       const first = tower(b, x0, 0, 2, { stones: 1 });
       const second = tower(b, x0 + TOWER_PITCH, 0, 2, { stones: 1 });
       bridge(b, first, second);

@@ -30,9 +30,9 @@ export interface Throw {
  * castle or rules change gets its throws found again there.
  */
 export const LEVEL_SOLUTIONS: ReadonlyArray<readonly Throw[]> = [
-  [{ angle: 10, power: 0.75 }],
-  [{ angle: 10, power: 0.75 }],
-  [{ angle: 10, power: 0.75 }],
+  [{ angle: 10, power: 0.5 }],
+  [{ angle: 15, power: 0.85 }],
+  [{ angle: 20, power: 1 }],
   [{ angle: 10, power: 0.8 }],
   [{ angle: 10, power: 0.85 }],
   [{ angle: 15, power: 1 }],

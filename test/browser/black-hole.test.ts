@@ -91,6 +91,33 @@ describe('black hole, between levels', () => {
     // Level 2: a wall of holes across the field (how many depends on the field's width).
     expect(begun.level).toBe(2);
     expect(begun.holes).toBeGreaterThan(5);
+    // The last life lost on level 2 (the ship put into a hole): the button and Enter go on from level 2
+    // with three lives and a score of 0, not back to level 1.
+    const over = await g.page.evaluate(() => {
+      const w = window.game as unknown as Bh & {
+        bh: { lives: number; over: boolean; world: { components: { Position: { x: Float64Array } } } };
+      };
+      w.paused = true;
+      w.bh.lives = 1;
+      (w.level as unknown as { parked: boolean }).parked = false;
+      const P = w.bh.world.components.Position,
+        s = w.bh.ship % 2 ** 25,
+        hole = w.bh.holes[0]! % 2 ** 25;
+      P.x[s] = P.x[hole]!;
+      w.bh.world.components.Position.y[s] = w.bh.world.components.Position.y[hole]!;
+      w.step();
+      w.paused = false;
+      return w.bh.over;
+    });
+    expect(over).toBe(true);
+    await g.page.getByRole('button', { name: 'Continue from level 2 ↺' }).waitFor({ state: 'visible', timeout: 10_000 });
+    expect(await g.page.locator('[data-hud="message"]').textContent()).toContain('Enter: continue from level 2');
+    await g.page.keyboard.press('Enter');
+    const again = await g.waitFor(() => {
+      const w = window.game as unknown as Bh & { bh: { lives: number; over: boolean; score: number } };
+      return w.bh.over ? null : { level: w.level.spec.level, lives: w.bh.lives, score: w.bh.score };
+    }, null);
+    expect(again).toEqual({ level: 2, lives: 3, score: 0 });
     expect(g.errors).toEqual([]);
   });
 });
@@ -182,6 +209,12 @@ describe.each([
       expect(right, `${device}: a hole's right`).toBeLessThanOrEqual(wall.field.width);
       expect(bottom).toBeGreaterThanOrEqual(0);
       expect(top).toBeLessThanOrEqual(wall.field.height);
+    }
+    // The phone's menu drawer is opaque: the level banner over the field does not show through it.
+    if (touch) {
+      await p.page.locator('.bp-drawer-button:not(.bp-side-button)').click();
+      const bg = await p.page.evaluate(() => getComputedStyle(document.querySelector('.bp-info')!).backgroundColor);
+      expect(bg).toBe('rgb(16, 20, 28)');
     }
     expect(p.errors).toEqual([]);
     await p.close();

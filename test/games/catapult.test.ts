@@ -15,6 +15,7 @@ import {
   LEVEL_COUNT,
   launch,
   launchVelocity,
+  PROJECTILE_RADIUS,
   pullFor,
   tally,
   worldOptions,
@@ -37,9 +38,9 @@ describe('catapult rules', () => {
   });
 
   it('a throw at the computed angle lands at v^2 sin(2 theta) / g and reaches the castle', () => {
-    // Empty sky (level 0's castle is at x > 10.8 m; the range aimed at is 8 m): the landing x where
+    // Empty sky (level 3's rampart starts past 14 m; the range aimed at is 8 m): the landing x where
     // the projectile comes back down through its launch height, interpolated between steps.
-    const { w } = level(0);
+    const { w } = level(2);
     const v = 15,
       R = 8,
       theta = angleForRange(R, v, G);
@@ -75,7 +76,7 @@ describe('catapult rules', () => {
   });
 
   it('a strong hit breaks welds and scores 100 a fallen piece and 25 a broken weld', () => {
-    const { w, lv } = level(2);
+    const { w, lv } = level(0);
     for (let i = 0; i < 60; i++) step(w);
     const R = lv.castleMinX + 0.5 - LAUNCH.x,
       th = angleForRange(R, 26, G);
@@ -101,16 +102,21 @@ describe('catapult rules', () => {
 
   it('a weak throw that lands short stops on the grass: it does not roll into the castle and score', () => {
     // A playtester scored 650 on level 1 with a short pull: the stone landed 3 m out and rolled on
-    // into the tower. A pull of 1 m (7 m/s) at 15 degrees, on three seeds of level 1.
+    // into the tower. A pull of 1 m (7 m/s) at 15 degrees, on three seeds of level 1: drag-free it
+    // lands 5.2 m out (from 1.5 m up); it stops within 1.2 m of there, short of the castle (past 6.8 m).
+    const a = (15 * Math.PI) / 180,
+      vx = 7 * Math.cos(a),
+      vy = 7 * Math.sin(a);
+    const land = (vx * (vy + Math.sqrt(vy * vy + 2 * G * LAUNCH.y))) / G;
     for (const seed of [1, 2, 3]) {
       const w = createPhysicsWorld(worldOptions({ gravity: G }));
       const lv = buildLevel(w, { level: 0, seed, gravity: G, jointStrength: 400 });
-      const a = (15 * Math.PI) / 180;
-      const ball = launch(w, 7 * Math.cos(a), 7 * Math.sin(a), 3);
+      const ball = launch(w, vx, vy, 3);
       for (let i = 0; i < 300; i++) step(w);
       const s = slotOf(ball);
       expect(tally(w, lv).score).toBe(0);
-      expect(w.components.Position.x[s]!).toBeLessThan(lv.castleMinX - 3);
+      expect(w.components.Position.x[s]! - land).toBeLessThan(1.2);
+      expect(w.components.Position.x[s]!).toBeLessThan(lv.castleMinX - PROJECTILE_RADIUS);
       expect(Math.abs(w.components.Velocity.x[s]!)).toBeLessThan(0.05);
     }
   });
@@ -126,8 +132,10 @@ describe('catapult rules', () => {
     expect(built.filter((lv) => has(lv, 'block')).length).toBeGreaterThanOrEqual(6);
     expect(built.filter((lv) => has(lv, 'brick')).length).toBeGreaterThanOrEqual(3);
     expect(built.every((lv) => has(lv, 'plank'))).toBe(true);
-    // A fort raised on a hill, a tower down in a pit (its foot below the ground), the others on flat ground.
-    expect(built.filter((lv) => lv.terrain.some((t) => t.kind === 'hill')).length).toBe(1);
+    // A fort raised on a hill (its pieces standing 2 m up), ramparts of earth before levels 2 and 3, a tower
+    // down in a pit (its foot below the ground), the others on flat ground.
+    expect(built.filter((lv) => Math.min(...lv.pieces.map((p) => p.startY - p.half[1])) > 1.9).length).toBe(1);
+    expect([1, 2].every((n) => built[n]!.terrain.some((t) => t.kind === 'hill' && t.maxX < built[n]!.castleMinX))).toBe(true);
     const pit = built.find((lv) => lv.terrain.some((t) => t.kind === 'pit'))!;
     expect(Math.min(...pit.pieces.map((p) => p.startY - p.half[1]))).toBeLessThan(-1);
     // Shots: never fewer as the levels go on, 3 to 5.
@@ -140,8 +148,9 @@ describe('catapult rules', () => {
     // LEVEL_SOLUTIONS were found by scripts/catapult-levels.mjs (a greedy search over pull angle
     // and power, too slow for a test: a few seconds a level); here they are played again, each
     // 2.5 s after the last, counted 4 s after the last (as the page ends a level). Measured, seed 1:
-    // levels 1 to 8 in one throw, level 9 in two. How hard each is (--spread): 16, 12, 9, 11, 8, 7,
-    // 5, 2 and 0 of 36 single throws clear levels 1 to 9 (the five levels before: 16, 6, 5, 1, 0).
+    // levels 1 to 8 in one throw, level 9 in two. How hard each is (--spread): 11, 8, 7, 5, 2 and 0
+    // of 36 single throws clear levels 4 to 9; levels 1 to 3 (--grid, 195 throws): 15, 10 and 7 %
+    // of throws clear them, and no throw clears two of them.
     expect(LEVEL_SOLUTIONS.length).toBe(LEVEL_COUNT);
     LEVEL_SOLUTIONS.forEach((throws, n) => {
       const r = playThrows(n, 1, throws);

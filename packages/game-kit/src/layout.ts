@@ -138,7 +138,7 @@ html, body { margin: 0; height: 100%; overflow: hidden; }
   .bp-toolbar .bp-buttons { flex-wrap: nowrap; gap: 3px; margin-left: auto; }
   .bp-toolbar .bp-drawer-button { display: inline-flex; }
   .bp-info, .bp-side { position: fixed; z-index: 30; top: var(--bp-toolbar-height, 44px); max-height: calc(100% - var(--bp-toolbar-height, 44px));
-    display: none; background: rgba(16, 20, 28, 0.96); border-radius: 0 0 8px 8px; box-shadow: 0 6px 18px rgba(0, 0, 0, 0.5); }
+    display: none; background: rgb(16, 20, 28); border-radius: 0 0 8px 8px; box-shadow: 0 6px 18px rgba(0, 0, 0, 0.5); }
   .bp-info { left: 0; width: min(100%, 320px); padding-top: 6px; }
   .bp-side { right: 0; width: min(100%, 380px); min-width: 0; max-width: none; }
   .bp-app[data-open="info"] .bp-info { display: flex; }
