@@ -427,12 +427,13 @@ describe('phone controls', () => {
       game.bh.over = true;
       game.bh.message = 'Swallowed! Game over with 0 points. Press Enter or R to play again.';
     });
-    await g.waitFor(() => document.querySelector('[data-hud="message"]')?.textContent?.includes('Tap to play again'), null);
+    // The game goes on from the level lost (level 1 here), not from the start.
+    await g.waitFor(() => document.querySelector('[data-hud="message"]')?.textContent?.includes('Tap to continue from level 1.'), null);
     // A big button over the scene says so too.
-    await g.page.getByRole('button', { name: 'Play again ↺' }).waitFor({ state: 'visible', timeout: 5000 });
+    await g.page.getByRole('button', { name: 'Continue from level 1 ↺' }).waitFor({ state: 'visible', timeout: 5000 });
     await g.clickCanvas(0.5, 0.5);
     await g.waitFor(() => !(window.game as unknown as { bh: { over: boolean } }).bh.over, null);
-    await g.page.getByRole('button', { name: 'Play again ↺' }).waitFor({ state: 'detached', timeout: 5000 });
+    await g.page.getByRole('button', { name: 'Continue from level 1 ↺' }).waitFor({ state: 'detached', timeout: 5000 });
     // Clearing a level shows the next level's button, and a tap on it starts that level.
     await g.page.evaluate(() => {
       const game = window.game as unknown as {
@@ -524,10 +525,11 @@ describe('phone controls', () => {
       renderer: { camera: { toScreenX(x: number): number; toScreenY(y: number): number; width: number; height: number } };
     };
     await g.waitFor(() => (window.game as unknown as { cameraSettled(): boolean }).cameraSettled(), null);
-    // Upright, the aim view is the catapult and the field in front of it, not the whole field fitted
-    // to 390 px. The catapult with its mound and the stones stacked behind it spans x = -3.0 to 1.1 m,
-    // y = 0 to 2 m (see drawCatapult, drawMound and drawAmmo in games/catapult): all of it on the
-    // canvas and over 150 px wide (the whole field drew it 87 px wide, its stones cut off at the left).
+    // Upright, the start view is the catapult and the castle it aims at (a player saw only an arrow
+    // to the castle), not the whole field fitted to 390 px. The catapult with its mound and the
+    // stones stacked behind it spans x = -3.0 to 1.1 m, y = 0 to 2 m (see drawCatapult, drawMound
+    // and drawAmmo in games/catapult): all of it on the canvas and over 90 px wide (the whole field
+    // drew it 87 px wide, its stones cut off at the left; level 1's castle 8.5 m out gives 94 px).
     const aim = await g.page.evaluate(() => {
       const w = window.game as unknown as Game;
       const cam = w.renderer.camera;
@@ -538,7 +540,7 @@ describe('phone controls', () => {
     expect(aim.right).toBeLessThanOrEqual(aim.W);
     expect(aim.top).toBeGreaterThanOrEqual(0);
     expect(aim.bottom).toBeLessThanOrEqual(aim.H);
-    expect(aim.right - aim.left).toBeGreaterThan(150);
+    expect(aim.right - aim.left).toBeGreaterThan(90);
     // The ground is above the bottom sixth (earth below it), not at the canvas's bottom edge.
     expect((aim.H - aim.bottom) / aim.H).toBeGreaterThan(1 / 6);
     // The score and the star rule: two lines of text, narrower than the canvas (a line is about
@@ -604,11 +606,25 @@ describe('phone controls', () => {
       if (!w.shotView() || !w.cameraSettled()) return null;
       const cam = w.renderer.camera,
         lv = w.level();
-      return { height: cam.toScreenY(0) - cam.toScreenY(lv.castleTop), rock: cam.toScreenX(lv.castleMaxX + 2.9), width: cam.width };
+      return {
+        height: cam.toScreenY(0) - cam.toScreenY(lv.castleTop),
+        perMetre: cam.toScreenY(0) - cam.toScreenY(1),
+        rock: cam.toScreenX(lv.castleMaxX + 2.9),
+        width: cam.width,
+      };
     }, null);
-    expect(tower.height).toBeGreaterThan(210);
+    // The shot view's zoom: over 32 px a metre (level 1's old 6 m watchtower drew 210 px tall; its
+    // low tower of 2 m now draws 70 px at the same 34 px a metre).
+    expect(tower.perMetre).toBeGreaterThan(32);
+    expect(tower.height).toBeGreaterThan(2 * 32);
     expect(tower.rock).toBeLessThan(tower.width - 30);
     // A touch drag starting mid-screen, far from the cup (at the left edge there is no room to pull back), throws.
+    // Level 1's low tower falls to the shot above, which ends the level: the drag plays it again.
+    const thrown = await g.page.evaluate(() => {
+      const game = window.game as unknown as { shots(): number[]; reset(): void };
+      game.reset();
+      return game.shots().length;
+    });
     const start = { x: box.left + 390 / 2, y: box.top + (844 - box.top) / 2 };
     await touchPath(
       g.page,
@@ -619,7 +635,7 @@ describe('phone controls', () => {
       ],
       50,
     );
-    await g.waitFor(() => (window.game as unknown as { shots(): number[] }).shots().length === 2, null);
+    await g.waitFor((n) => (window.game as unknown as { shots(): number[] }).shots().length === n + 1, thrown);
     await hint.waitFor({ state: 'detached', timeout: 3000 });
     // After the throw the camera follows it (the shot view).
     await g.waitFor(() => (window.game as unknown as { shotView(): boolean }).shotView(), null);
