@@ -7,7 +7,7 @@
 import { createPhysicsWorld, type PhysicsWorld, step } from '@bitphysics/physics';
 import { SUBMARINE, SUBMARINE_NEUTRAL_FILL, type SubmarineHandles, seabedHeight, submarine } from '@bitphysics/projects';
 import { describe, expect, it } from 'vitest';
-import { createHelmState, type HelmInput, type HelmState, NO_INPUT, steer } from '../../games/submarine/helm';
+import { createHelmState, HELM, type HelmInput, type HelmState, NO_INPUT, steer } from '../../games/submarine/helm';
 import { SEABED, type SeabedState, seabedInput, touchSeabed } from '../../games/submarine/seabed';
 
 interface Boat {
@@ -99,9 +99,9 @@ describe('submarine on the seabed', () => {
     expect(b.hits - hits).toBeLessThanOrEqual(1);
   });
 
-  it('a slow landing (a fifth of the dive speed, 1.4 m/s) costs no hit', () => {
+  it('a slow landing (1.4 m/s, a light press on Dive) costs no hit', () => {
     const b = boat(6);
-    run(b, { dive: true, heave: 0.2 }, 8);
+    run(b, { dive: true, heave: 1.4 / HELM.diveSpeed }, 8);
     expect(b.sunk).toBeGreaterThan(0); // it reached the bed
     expect(b.hits).toBe(0);
   });
