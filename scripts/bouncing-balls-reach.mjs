@@ -7,82 +7,61 @@
 // --spot x,y,side [--tall] measures one spot of your own instead; --sweep [--tall] measures every
 // spot 0.5 m apart that fits the box clear of the ramps (from starts 1 m apart) and prints the best
 // 40 (to choose spots from). Takes a second or so a spot.
-import { mkdtempSync, rmSync } from 'node:fs';
-import { tmpdir } from 'node:os';
-import { join } from 'node:path';
-import { pathToFileURL } from 'node:url';
-import * as esbuild from 'esbuild';
-import { root } from './build.mjs';
+import { importSource } from './build.mjs';
 
-const dir = mkdtempSync(join(tmpdir(), 'bouncing-balls-reach-'));
-const out = join(dir, 'reach.mjs');
-try {
-  await esbuild.build({
-    stdin: {
-      contents: "export * from './games/bouncing-balls/reach.ts'; export * from './games/bouncing-balls/hoop.ts';",
-      resolveDir: root,
-      loader: 'ts',
-    },
-    bundle: true,
-    format: 'esm',
-    platform: 'node',
-    outfile: out,
-    conditions: ['bitphysics-source'],
-    logLevel: 'error',
-  });
-  const r = await import(pathToFileURL(out).href);
-  const at = process.argv.indexOf('--spot');
-  const cases = [];
-  if (process.argv.includes('--sweep')) {
-    const tall = process.argv.includes('--tall');
-    const [w, h] = tall ? [10, 16] : [16, 10];
-    const rows = [];
-    for (let y = 2.5; y <= h - 1.6; y += 0.5)
-      for (let x = 1.5; x <= w - 1.5; x += 0.5)
-        for (const side of [1, -1]) {
-          const spot = { x, y, side };
-          if (!r.hoopFits(spot, tall)) continue;
-          const starts = r.naturalStarts(spot, tall);
-          let found = 0;
-          for (let k = 0; k < starts.length; k += 2) {
-            // Starts 1 m apart: every other one across and up.
-            if (Math.round(starts[k] * 2) % 2 || Math.round(starts[k + 1] * 2) % 2) continue;
-            if (r.findBasket(spot, tall, starts[k], starts[k + 1])) found++;
-          }
-          rows.push([found, `(${x}, ${y}, ${side})`]);
+const r = await importSource(
+  'bouncing-balls-reach',
+  "export * from './games/bouncing-balls/reach.ts'; export * from './games/bouncing-balls/hoop.ts';",
+);
+const at = process.argv.indexOf('--spot');
+const cases = [];
+if (process.argv.includes('--sweep')) {
+  const tall = process.argv.includes('--tall');
+  const [w, h] = tall ? [10, 16] : [16, 10];
+  const rows = [];
+  for (let y = 2.5; y <= h - 1.6; y += 0.5)
+    for (let x = 1.5; x <= w - 1.5; x += 0.5)
+      for (const side of [1, -1]) {
+        const spot = { x, y, side };
+        if (!r.hoopFits(spot, tall)) continue;
+        const starts = r.naturalStarts(spot, tall);
+        let found = 0;
+        for (let k = 0; k < starts.length; k += 2) {
+          // Starts 1 m apart: every other one across and up.
+          if (Math.round(starts[k] * 2) % 2 || Math.round(starts[k + 1] * 2) % 2) continue;
+          if (r.findBasket(spot, tall, starts[k], starts[k + 1])) found++;
         }
-    rows.sort((a, b) => b[0] - a[0]);
-    for (const [found, s] of rows.slice(0, 40)) console.log(found, s);
-    process.exit(0);
-  }
-  if (at >= 0) {
-    const [x, y, side] = process.argv[at + 1].split(',').map(Number);
-    if (![x, y].every(Number.isFinite) || (side !== 1 && side !== -1))
-      throw new RangeError(`bouncing-balls-reach: --spot wants x,y,side (side 1 or -1), got ${process.argv[at + 1]}`);
-    cases.push({ tall: process.argv.includes('--tall'), i: 0, spot: { x, y, side } });
-  } else {
-    for (const tall of [false, true]) {
-      const spots = r.hoopSpots(tall);
-      for (let i = 0; i < spots.length; i++) cases.push({ tall, i, spot: spots[i] });
-    }
-  }
-  for (const { tall, i, spot } of cases) {
-    const starts = r.naturalStarts(spot, tall);
-    let found = 0,
-      example = null;
-    for (let k = 0; k < starts.length; k += 2) {
-      const t = r.findBasket(spot, tall, starts[k], starts[k + 1]);
-      if (t) {
-        found++;
-        example ??= t;
+        rows.push([found, `(${x}, ${y}, ${side})`]);
       }
-    }
-    const n = starts.length / 2;
-    const ex = example ? `e.g. from (${example.x}, ${example.y}) at ${example.angle} deg, ${example.speed} m/s` : 'none';
-    console.log(
-      `${tall ? 'tall' : 'wide'} spot ${i} (${spot.x}, ${spot.y}, ${spot.side > 0 ? 'right' : 'left'}): ${found}/${n} starts (${Math.round((100 * found) / Math.max(1, n))} %) ${ex}`,
-    );
+  rows.sort((a, b) => b[0] - a[0]);
+  for (const [found, s] of rows.slice(0, 40)) console.log(found, s);
+  process.exit(0);
+}
+if (at >= 0) {
+  const [x, y, side] = process.argv[at + 1].split(',').map(Number);
+  if (![x, y].every(Number.isFinite) || (side !== 1 && side !== -1))
+    throw new RangeError(`bouncing-balls-reach: --spot wants x,y,side (side 1 or -1), got ${process.argv[at + 1]}`);
+  cases.push({ tall: process.argv.includes('--tall'), i: 0, spot: { x, y, side } });
+} else {
+  for (const tall of [false, true]) {
+    const spots = r.hoopSpots(tall);
+    for (let i = 0; i < spots.length; i++) cases.push({ tall, i, spot: spots[i] });
   }
-} finally {
-  rmSync(dir, { recursive: true, force: true });
+}
+for (const { tall, i, spot } of cases) {
+  const starts = r.naturalStarts(spot, tall);
+  let found = 0,
+    example = null;
+  for (let k = 0; k < starts.length; k += 2) {
+    const t = r.findBasket(spot, tall, starts[k], starts[k + 1]);
+    if (t) {
+      found++;
+      example ??= t;
+    }
+  }
+  const n = starts.length / 2;
+  const ex = example ? `e.g. from (${example.x}, ${example.y}) at ${example.angle} deg, ${example.speed} m/s` : 'none';
+  console.log(
+    `${tall ? 'tall' : 'wide'} spot ${i} (${spot.x}, ${spot.y}, ${spot.side > 0 ? 'right' : 'left'}): ${found}/${n} starts (${Math.round((100 * found) / Math.max(1, n))} %) ${ex}`,
+  );
 }

@@ -2,9 +2,10 @@
 // ESM bundles (packages/*/dist). Run directly (`npm run build`) or import the functions.
 
 import { execFileSync } from 'node:child_process';
-import { existsSync, mkdirSync, readdirSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
+import { existsSync, mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
 import { dirname, join, resolve } from 'node:path';
-import { fileURLToPath } from 'node:url';
+import { fileURLToPath, pathToFileURL } from 'node:url';
 import * as esbuild from 'esbuild';
 
 export const root = resolve(dirname(fileURLToPath(import.meta.url)), '..');
@@ -12,6 +13,32 @@ export const siteDir = join(root, 'dist', 'site');
 
 /** Workspace packages resolve to their TypeScript sources under this condition. */
 const conditions = ['bitphysics-source'];
+
+/**
+ * The module `contents` (TypeScript, resolved from the repository root, e.g. "export * from
+ * './games/catapult/solve.ts';") bundled for Node with the workspace packages from their sources,
+ * and imported: how the scripts that play a game headless load its rules. The bundle is written to a
+ * temporary folder named after `name` and removed once imported (it imports nothing further).
+ * @param {string} name @param {string} contents @returns {Promise<any>} the module's exports
+ */
+export async function importSource(name, contents) {
+  const dir = mkdtempSync(join(tmpdir(), `${name}-`));
+  try {
+    const outfile = join(dir, 'bundle.mjs');
+    await esbuild.build({
+      stdin: { contents, resolveDir: root, loader: 'ts' },
+      bundle: true,
+      format: 'esm',
+      platform: 'node',
+      outfile,
+      conditions,
+      logLevel: 'error',
+    });
+    return await import(pathToFileURL(outfile).href);
+  } finally {
+    rmSync(dir, { recursive: true, force: true });
+  }
+}
 
 /** Every game folder: games/<name>/ holding main.ts and index.html. @param {string} games the games folder (default games/). */
 export function gameFolders(games = join(root, 'games')) {

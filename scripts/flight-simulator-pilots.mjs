@@ -13,146 +13,125 @@
 //   else hands off (wings level); never touches the throttle.
 // Prints per seed and pilot the rings passed of 10 and each ring's status (P passed, m missed), then
 // each ring's turn (degrees) and change of height (m) for the default seed.
-import { mkdtempSync, rmSync } from 'node:fs';
-import { tmpdir } from 'node:os';
-import { join } from 'node:path';
-import { pathToFileURL } from 'node:url';
-import * as esbuild from 'esbuild';
-import { root } from './build.mjs';
+import { importSource } from './build.mjs';
 
 /** The naive pilot's reaction to a new ring, s (env REACTION, default 2), and the lag of what it steers on, s. */
 const REACTION = Number(process.env.REACTION ?? 2);
 const LAG = 0.5;
-const dir = mkdtempSync(join(tmpdir(), 'flight-simulator-pilots-'));
-const out = join(dir, 'course.mjs');
-try {
-  await esbuild.build({
-    stdin: {
-      contents: [
-        "export * from './games/flight-simulator/course.ts';",
-        "export * from './games/flight-simulator/assist.ts';",
-        "export { createPhysicsWorld, setBodyThrust, setControlDeflection, step } from '@bitphysics/physics';",
-        "export { AIRCRAFT, aircraft, aircraftLevelDrag } from '@bitphysics/projects';",
-      ].join('\n'),
-      resolveDir: root,
-      loader: 'ts',
-    },
-    bundle: true,
-    format: 'esm',
-    platform: 'node',
-    outfile: out,
-    conditions: ['bitphysics-source'],
-    logLevel: 'error',
-  });
-  const fs = await import(pathToFileURL(out).href);
-  const DEG = Math.PI / 180;
-  const seeds = process.argv.slice(2).map(Number);
-  const chosen = seeds.length ? seeds : [1, 2, 3, 4, 5, 6, 7, 8];
+const fs = await importSource(
+  'flight-simulator-pilots',
+  [
+    "export * from './games/flight-simulator/course.ts';",
+    "export * from './games/flight-simulator/assist.ts';",
+    "export { createPhysicsWorld, setBodyThrust, setControlDeflection, step } from '@bitphysics/physics';",
+    "export { AIRCRAFT, aircraft, aircraftLevelDrag } from '@bitphysics/projects';",
+  ].join('\n'),
+);
+const DEG = Math.PI / 180;
+const seeds = process.argv.slice(2).map(Number);
+const chosen = seeds.length ? seeds : [1, 2, 3, 4, 5, 6, 7, 8];
 
-  const pilots = {
-    scripted: ({ s, ring, P, e, trim }) => {
-      const dx = ring.x - P.x[e],
-        dy = ring.y - P.y[e],
-        dz = ring.z - P.z[e],
-        far = Math.hypot(dx, dz);
-      const error = ((Math.atan2(dz, dx) - s.heading + 3 * Math.PI) % (2 * Math.PI)) - Math.PI;
-      const bank = Math.atan((2 * s.speed * s.speed * Math.sin(error)) / far / 9.81);
-      const roll = far < 250 ? 0 : Math.abs(error) > Math.PI / 2 ? Math.sign(error) : Math.max(-1, Math.min(1, bank / fs.ASSIST.maxBank));
-      const aim = Math.atan2(dy, far);
-      const pitch = Math.max(-1, Math.min(1, (aim - s.path) / (10 * DEG) + aim / fs.ASSIST.maxClimb));
-      return { roll, pitch, throttle: Math.max(0, Math.min(1, trim + 0.05 * (125 - s.speed))) };
-    },
-    naive: ({ s, seen, since, start, keys, dt }) => {
-      const ready = since >= REACTION && seen;
-      // Leans towards the ring: a bank of three times its bearing, at most 35 degrees (what it saw LAG s ago).
-      const bank = ready ? Math.max(-35 * DEG, Math.min(35 * DEG, 3 * seen.bearing)) : 0;
-      const roll = Math.abs(bank - s.bank) > 5 * DEG ? Math.sign(bank - s.bank) : 0;
-      // Climbs or dives towards it while it is over 1.5 degrees off the path, no steeper than 10 degrees.
-      const up = ready && Math.abs(seen.elevation) > 1.5 * DEG ? Math.sign(seen.elevation) : 0;
-      const pitch = up !== 0 && up * s.path < 10 * DEG ? up : 0;
-      keys.roll = fs.rampKey(keys.roll, roll, dt);
-      keys.pitch = fs.rampKey(keys.pitch, pitch, dt);
-      return { roll: keys.roll, pitch: keys.pitch, throttle: start };
-    },
-  };
+const pilots = {
+  scripted: ({ s, ring, P, e, trim }) => {
+    const dx = ring.x - P.x[e],
+      dy = ring.y - P.y[e],
+      dz = ring.z - P.z[e],
+      far = Math.hypot(dx, dz);
+    const error = ((Math.atan2(dz, dx) - s.heading + 3 * Math.PI) % (2 * Math.PI)) - Math.PI;
+    const bank = Math.atan((2 * s.speed * s.speed * Math.sin(error)) / far / 9.81);
+    const roll = far < 250 ? 0 : Math.abs(error) > Math.PI / 2 ? Math.sign(error) : Math.max(-1, Math.min(1, bank / fs.ASSIST.maxBank));
+    const aim = Math.atan2(dy, far);
+    const pitch = Math.max(-1, Math.min(1, (aim - s.path) / (10 * DEG) + aim / fs.ASSIST.maxClimb));
+    return { roll, pitch, throttle: Math.max(0, Math.min(1, trim + 0.05 * (125 - s.speed))) };
+  },
+  naive: ({ s, seen, since, start, keys, dt }) => {
+    const ready = since >= REACTION && seen;
+    // Leans towards the ring: a bank of three times its bearing, at most 35 degrees (what it saw LAG s ago).
+    const bank = ready ? Math.max(-35 * DEG, Math.min(35 * DEG, 3 * seen.bearing)) : 0;
+    const roll = Math.abs(bank - s.bank) > 5 * DEG ? Math.sign(bank - s.bank) : 0;
+    // Climbs or dives towards it while it is over 1.5 degrees off the path, no steeper than 10 degrees.
+    const up = ready && Math.abs(seen.elevation) > 1.5 * DEG ? Math.sign(seen.elevation) : 0;
+    const pitch = up !== 0 && up * s.path < 10 * DEG ? up : 0;
+    keys.roll = fs.rampKey(keys.roll, roll, dt);
+    keys.pitch = fs.rampKey(keys.pitch, pitch, dt);
+    return { roll: keys.roll, pitch: keys.pitch, throttle: start };
+  },
+};
 
-  const fly = (seed, pilot) => {
-    const world = fs.createPhysicsWorld(fs.aircraft.worldOptions());
-    const h = fs.aircraft.build(world, { seed, altitude: 900 });
-    const rings = fs.layCourse({ terrain: h.terrain, seed: seed + 7, count: 10, start: [0, 900, 0] });
-    const state = fs.createAssistState(),
-      surface = { aileron: 0, elevator: 0, rudder: 0 },
-      rate = 6 * world.dt,
-      full = fs.CONTROL_AUTHORITY * DEG;
-    const P = world.components.Position,
-      e = h.body;
-    const trim = fs.aircraftLevelDrag(125) / fs.AIRCRAFT.maxThrust;
-    const start = fs.aircraftLevelDrag(130) / fs.AIRCRAFT.maxThrust;
-    const history = [];
-    const keys = { roll: 0, pitch: 0 };
-    let current = 0,
-      since = 0;
-    for (let t = 0; t < 200 && fs.nextRing(rings) >= 0; t += world.dt) {
-      const s = fs.flightState(world, e);
-      const n = fs.nextRing(rings);
-      if (n !== current) {
-        current = n;
-        since = 0;
-      }
-      since += world.dt;
-      const ring = rings[n];
-      const dx = ring.x - P.x[e],
-        dy = ring.y - P.y[e],
-        dz = ring.z - P.z[e],
-        far = Math.hypot(dx, dz);
-      const bearing = ((Math.atan2(dz, dx) - s.heading + 3 * Math.PI) % (2 * Math.PI)) - Math.PI;
-      history.push({ ring: n, bearing, elevation: Math.atan2(dy, far) - s.path });
-      const back = history[history.length - 1 - Math.round(LAG / world.dt)];
-      const seen = back && back.ring === n ? back : null;
-      const c0 = pilot({ s, ring, P, e, trim, start, seen, since, keys, dt: world.dt });
-      const c = fs.assist(s, { roll: c0.roll, pitch: c0.pitch, yaw: 0 }, state, world.dt);
-      for (const k of ['aileron', 'elevator', 'rudder']) surface[k] += Math.max(-rate, Math.min(rate, c[k] - surface[k]));
-      fs.setControlDeflection(world, h.surfaces.tail, -surface.elevator * full);
-      fs.setControlDeflection(world, h.surfaces.leftWing, surface.aileron * full);
-      fs.setControlDeflection(world, h.surfaces.rightWing, -surface.aileron * full);
-      fs.setControlDeflection(world, h.surfaces.fin, -surface.rudder * full);
-      fs.setBodyThrust(world, e, [c0.throttle * fs.AIRCRAFT.maxThrust, 0, 0]);
-      const a = [P.x[e], P.y[e], P.z[e]];
-      fs.step(world);
-      fs.flyRings(rings, a, [P.x[e], P.y[e], P.z[e]]);
-      if (P.y[e] < 0) break;
-    }
-    return rings;
-  };
-
-  const totals = { scripted: 0, naive: 0 };
-  for (const seed of chosen)
-    for (const [name, pilot] of Object.entries(pilots)) {
-      const rings = fly(seed, pilot);
-      const passed = rings.filter((r) => r.status === 'passed').length;
-      totals[name] += passed;
-      console.log(
-        `seed ${seed} ${name.padEnd(8)} ${passed}/10  ${rings.map((r) => (r.status === 'passed' ? 'P' : r.status === 'missed' ? 'm' : '.')).join('')}`,
-      );
-    }
-  for (const [name, n] of Object.entries(totals)) console.log(`${name}: ${n} of ${10 * chosen.length} rings`);
+const fly = (seed, pilot) => {
   const world = fs.createPhysicsWorld(fs.aircraft.worldOptions());
-  const h = fs.aircraft.build(world, { seed: 1, altitude: 900 });
-  const rings = fs.layCourse({ terrain: h.terrain, seed: 8, count: 10, start: [0, 900, 0] });
-  let px = 0,
-    py = 900,
-    pz = 0,
-    heading = 0;
-  const lines = [];
-  for (const r of rings) {
-    const to = Math.atan2(r.z - pz, r.x - px);
-    lines.push(`${((to - heading) / DEG).toFixed(0)}° ${(r.y - py).toFixed(0)} m / ${Math.hypot(r.x - px, r.z - pz).toFixed(0)} m`);
-    heading = to;
-    px = r.x;
-    py = r.y;
-    pz = r.z;
+  const h = fs.aircraft.build(world, { seed, altitude: 900 });
+  const rings = fs.layCourse({ terrain: h.terrain, seed: seed + 7, count: 10, start: [0, 900, 0] });
+  const state = fs.createAssistState(),
+    surface = { aileron: 0, elevator: 0, rudder: 0 },
+    rate = 6 * world.dt,
+    full = fs.CONTROL_AUTHORITY * DEG;
+  const P = world.components.Position,
+    e = h.body;
+  const trim = fs.aircraftLevelDrag(125) / fs.AIRCRAFT.maxThrust;
+  const start = fs.aircraftLevelDrag(130) / fs.AIRCRAFT.maxThrust;
+  const history = [];
+  const keys = { roll: 0, pitch: 0 };
+  let current = 0,
+    since = 0;
+  for (let t = 0; t < 200 && fs.nextRing(rings) >= 0; t += world.dt) {
+    const s = fs.flightState(world, e);
+    const n = fs.nextRing(rings);
+    if (n !== current) {
+      current = n;
+      since = 0;
+    }
+    since += world.dt;
+    const ring = rings[n];
+    const dx = ring.x - P.x[e],
+      dy = ring.y - P.y[e],
+      dz = ring.z - P.z[e],
+      far = Math.hypot(dx, dz);
+    const bearing = ((Math.atan2(dz, dx) - s.heading + 3 * Math.PI) % (2 * Math.PI)) - Math.PI;
+    history.push({ ring: n, bearing, elevation: Math.atan2(dy, far) - s.path });
+    const back = history[history.length - 1 - Math.round(LAG / world.dt)];
+    const seen = back && back.ring === n ? back : null;
+    const c0 = pilot({ s, ring, P, e, trim, start, seen, since, keys, dt: world.dt });
+    const c = fs.assist(s, { roll: c0.roll, pitch: c0.pitch, yaw: 0 }, state, world.dt);
+    for (const k of ['aileron', 'elevator', 'rudder']) surface[k] += Math.max(-rate, Math.min(rate, c[k] - surface[k]));
+    fs.setControlDeflection(world, h.surfaces.tail, -surface.elevator * full);
+    fs.setControlDeflection(world, h.surfaces.leftWing, surface.aileron * full);
+    fs.setControlDeflection(world, h.surfaces.rightWing, -surface.aileron * full);
+    fs.setControlDeflection(world, h.surfaces.fin, -surface.rudder * full);
+    fs.setBodyThrust(world, e, [c0.throttle * fs.AIRCRAFT.maxThrust, 0, 0]);
+    const a = [P.x[e], P.y[e], P.z[e]];
+    fs.step(world);
+    fs.flyRings(rings, a, [P.x[e], P.y[e], P.z[e]]);
+    if (P.y[e] < 0) break;
   }
-  console.log(`seed 1 rings (turn from the line before, height change / distance): ${lines.join(', ')}`);
-} finally {
-  rmSync(dir, { recursive: true, force: true });
+  return rings;
+};
+
+const totals = { scripted: 0, naive: 0 };
+for (const seed of chosen)
+  for (const [name, pilot] of Object.entries(pilots)) {
+    const rings = fly(seed, pilot);
+    const passed = rings.filter((r) => r.status === 'passed').length;
+    totals[name] += passed;
+    console.log(
+      `seed ${seed} ${name.padEnd(8)} ${passed}/10  ${rings.map((r) => (r.status === 'passed' ? 'P' : r.status === 'missed' ? 'm' : '.')).join('')}`,
+    );
+  }
+for (const [name, n] of Object.entries(totals)) console.log(`${name}: ${n} of ${10 * chosen.length} rings`);
+const world = fs.createPhysicsWorld(fs.aircraft.worldOptions());
+const h = fs.aircraft.build(world, { seed: 1, altitude: 900 });
+const rings = fs.layCourse({ terrain: h.terrain, seed: 8, count: 10, start: [0, 900, 0] });
+let px = 0,
+  py = 900,
+  pz = 0,
+  heading = 0;
+const lines = [];
+for (const r of rings) {
+  const to = Math.atan2(r.z - pz, r.x - px);
+  lines.push(`${((to - heading) / DEG).toFixed(0)}° ${(r.y - py).toFixed(0)} m / ${Math.hypot(r.x - px, r.z - pz).toFixed(0)} m`);
+  heading = to;
+  px = r.x;
+  py = r.y;
+  pz = r.z;
 }
+console.log(`seed 1 rings (turn from the line before, height change / distance): ${lines.join(', ')}`);

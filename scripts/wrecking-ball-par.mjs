@@ -13,12 +13,7 @@
 // or within half a second after (a ball left resting against a structure begins no contact when the
 // swing drives it in). With --full every game goes on to 8 taps (to compare clearing shares). Takes a
 // minute or two a level.
-import { mkdtempSync, rmSync } from 'node:fs';
-import { tmpdir } from 'node:os';
-import { join } from 'node:path';
-import { pathToFileURL } from 'node:url';
-import * as esbuild from 'esbuild';
-import { root } from './build.mjs';
+import { importSource } from './build.mjs';
 
 /** Most taps a way gets before it counts as not clearing the level. */
 const MOST_TAPS = 8;
@@ -28,156 +23,138 @@ const MOST_TAPS = 8;
  * so the most taps over these is the measure, not one game's.
  */
 const FIRST_TAP_STEPS = [30, 31, 35];
-const dir = mkdtempSync(join(tmpdir(), 'wrecking-ball-par-'));
-const out = join(dir, 'scene.mjs');
-try {
-  await esbuild.build({
-    stdin: {
-      contents:
-        "export * from './games/wrecking-ball/scene.ts'; export { contactEvents, createPhysicsWorld, forEachContact, step } from '@bitphysics/physics';",
-      resolveDir: root,
-      loader: 'ts',
-    },
-    bundle: true,
-    format: 'esm',
-    platform: 'node',
-    outfile: out,
-    conditions: ['bitphysics-source'],
-    logLevel: 'error',
-  });
-  const wb = await import(pathToFileURL(out).href);
-  const full = process.argv.includes('--full');
-  const levels = process.argv
-    .slice(2)
-    .filter((a) => !a.startsWith('--'))
-    .map(Number);
-  for (const n of levels)
-    if (!(Number.isInteger(n) && n >= 1)) throw new RangeError(`wrecking-ball-par: levels are integers >= 1, got ${n}`);
-  const chosen = levels.length ? levels : [1, 2, 3, 4, 5];
+const wb = await importSource(
+  'wrecking-ball-par',
+  "export * from './games/wrecking-ball/scene.ts'; export { contactEvents, createPhysicsWorld, forEachContact, step } from '@bitphysics/physics';",
+);
+const full = process.argv.includes('--full');
+const levels = process.argv
+  .slice(2)
+  .filter((a) => !a.startsWith('--'))
+  .map(Number);
+for (const n of levels) if (!(Number.isInteger(n) && n >= 1)) throw new RangeError(`wrecking-ball-par: levels are integers >= 1, got ${n}`);
+const chosen = levels.length ? levels : [1, 2, 3, 4, 5];
 
-  /**
-   * Structures: pieces linked by start centres within LINK m of each other across the ground (a
-   * wall's bricks 1.2 m apart, a stack's crossing planks 1.3 m, a tower's cubes one over another;
-   * structures stand 3 m apart or more). Grouped around a first piece within 2.5 m, a wall 4.8 m
-   * long fell into two structures, and a ball that struck the tapped brick's neighbour counted as
-   * a miss.
-   */
-  const LINK = 1.5;
-  const structures = (pieces) => {
-    const groups = [];
-    for (const p of pieces) {
-      const near = groups.filter((g) => g.some((q) => Math.hypot(q.x0 - p.x0, q.z0 - p.z0) < LINK));
-      const merged = [p];
-      for (const g of near) {
-        merged.push(...g);
-        groups.splice(groups.indexOf(g), 1);
-      }
-      groups.push(merged);
+/**
+ * Structures: pieces linked by start centres within LINK m of each other across the ground (a
+ * wall's bricks 1.2 m apart, a stack's crossing planks 1.3 m, a tower's cubes one over another;
+ * structures stand 3 m apart or more). Grouped around a first piece within 2.5 m, a wall 4.8 m
+ * long fell into two structures, and a ball that struck the tapped brick's neighbour counted as
+ * a miss.
+ */
+const LINK = 1.5;
+const structures = (pieces) => {
+  const groups = [];
+  for (const p of pieces) {
+    const near = groups.filter((g) => g.some((q) => Math.hypot(q.x0 - p.x0, q.z0 - p.z0) < LINK));
+    const merged = [p];
+    for (const g of near) {
+      merged.push(...g);
+      groups.splice(groups.indexOf(g), 1);
     }
-    return groups
-      .map((g) => [...g].sort((a, b) => pieces.indexOf(a) - pieces.indexOf(b)))
-      .sort((a, b) => pieces.indexOf(a[0]) - pieces.indexOf(b[0]));
-  };
-  /** Whether a piece stood above the ground (a bottom row piece rarely falls: a player goes for what stands tall). */
-  const raised = (p) => p.y0 - p.half[p.upAxis] > 0.01;
-  const ways = {
-    top: ({ taps, groups }) => {
-      const live = groups.filter((g) => g.some((p) => !p.fallen));
-      if (live.length === 0) return null;
-      const g = live[taps % live.length];
-      return g.filter((p) => !p.fallen).reduce((a, b) => (b.y0 > a.y0 ? b : a));
-    },
-    biggest: ({ groups }) => {
-      const g = groups.map((g) => g.filter((p) => !p.fallen && raised(p))).reduce((a, b) => (b.length > a.length ? b : a));
-      const s = g.sort((a, b) => a.y0 - b.y0);
-      return s[Math.floor(s.length / 3)] ?? null;
-    },
-    near: ({ world, h }) => {
-      const P = world.components.Position;
-      let best = null,
-        d = Number.POSITIVE_INFINITY;
-      for (const p of h.pieces) {
-        if (p.fallen || !raised(p)) continue;
-        const e = Math.hypot(P.x[p.body] - P.x[h.ball], P.z[p.body] - P.z[h.ball]);
-        if (e < d) {
-          d = e;
-          best = p;
-        }
-      }
-      return best;
-    },
-  };
-  const most = {},
-    missed = {},
-    tapped = {},
-    toHit = {};
-  /** Median of a list of numbers (null when empty). */
-  const median = (xs) => {
-    const s = [...xs].sort((a, b) => a - b);
-    return s.length ? s[Math.floor(s.length / 2)] : null;
-  };
-  for (const level of chosen) {
-    most[level] = 0;
-    missed[level] = 0;
-    tapped[level] = 0;
-    toHit[level] = [];
-    for (const [name, choose] of Object.entries(ways))
-      for (const first of FIRST_TAP_STEPS) {
-        const world = wb.createPhysicsWorld(wb.wreckingBallWorldOptions());
-        const h = wb.buildWreckingBall(world, { level });
-        const groups = structures(h.pieces);
-        const target = wb.clearTarget(h.pieces, level);
-        for (let k = 0; k < first; k++) wb.step(world);
-        let taps = 0,
-          cleared = false;
-        const downs = [];
-        while (taps < MOST_TAPS && !cleared) {
-          const piece = choose({ world, h, taps, groups });
-          if (!piece) break;
-          wb.aimAt(world, h, piece.body);
-          taps++;
-          const structure = new Set(groups.find((g) => g.includes(piece)).map((p) => p.body));
-          let idle = 0,
-            touched = false,
-            steps = 0,
-            arrival = -1;
-          const run = () => {
-            wb.step(world);
-            steps++;
-            wb.scorePieces(world, h.pieces);
-            if (touched) return;
-            const ev = wb.contactEvents(world).begin;
-            for (let i = 0; i < ev.count; i++)
-              if ((ev.bodyA[i] === h.ball && structure.has(ev.bodyB[i])) || (ev.bodyB[i] === h.ball && structure.has(ev.bodyA[i])))
-                touched = true;
-            // The swing's arrival: its follow-through has begun (or no moves are left); contacts in
-            // the half second from there count.
-            if (arrival < 0 && (h.controls.moves.length === 0 || h.controls.moves[0].follow === true)) arrival = steps;
-            if (!touched && arrival >= 0 && steps <= arrival + 30)
-              wb.forEachContact(world, (c) => {
-                if (c.separation > 0.01) return;
-                if ((c.bodyA === h.ball && structure.has(c.bodyB)) || (c.bodyB === h.ball && structure.has(c.bodyA))) touched = true;
-              });
-            if (touched) toHit[level].push(steps / 60);
-          };
-          for (let k = 0; k < 60 * 15 && (h.controls.moves.length > 0 || idle++ < 30); k++) run();
-          // A player looks at the count once the dust settles: 1.5 s more.
-          for (let k = 0; k < 90; k++) run();
-          tapped[level]++;
-          if (!touched) missed[level]++;
-          downs.push(`${wb.fallenCount(h.pieces)}${touched ? '' : ' (missed)'}`);
-          cleared = !full && wb.fallenCount(h.pieces) >= target;
-        }
-        most[level] = Math.max(most[level], cleared ? taps : MOST_TAPS + 1);
-        console.log(
-          `level ${level} ${name.padEnd(7)} first tap at step ${String(first).padEnd(2)} ${cleared ? `cleared in ${taps} taps` : `not in ${MOST_TAPS}`} (${wb.fallenCount(h.pieces)} of ${h.pieces.length} down, clear at ${target}; down after each tap ${downs.join(' ')})`,
-        );
-      }
+    groups.push(merged);
   }
-  for (const level of chosen)
-    console.log(
-      `level ${level}: budget ${wb.swingBudget(level)}, the most any way took ${most[level] > MOST_TAPS ? `over ${MOST_TAPS}` : most[level]}; missed ${missed[level]} of ${tapped[level]} taps; tap to touch median ${median(toHit[level])?.toFixed(2) ?? '-'} s, longest ${toHit[level].length ? Math.max(...toHit[level]).toFixed(2) : '-'} s`,
-    );
-} finally {
-  rmSync(dir, { recursive: true, force: true });
+  return groups
+    .map((g) => [...g].sort((a, b) => pieces.indexOf(a) - pieces.indexOf(b)))
+    .sort((a, b) => pieces.indexOf(a[0]) - pieces.indexOf(b[0]));
+};
+/** Whether a piece stood above the ground (a bottom row piece rarely falls: a player goes for what stands tall). */
+const raised = (p) => p.y0 - p.half[p.upAxis] > 0.01;
+const ways = {
+  top: ({ taps, groups }) => {
+    const live = groups.filter((g) => g.some((p) => !p.fallen));
+    if (live.length === 0) return null;
+    const g = live[taps % live.length];
+    return g.filter((p) => !p.fallen).reduce((a, b) => (b.y0 > a.y0 ? b : a));
+  },
+  biggest: ({ groups }) => {
+    const g = groups.map((g) => g.filter((p) => !p.fallen && raised(p))).reduce((a, b) => (b.length > a.length ? b : a));
+    const s = g.sort((a, b) => a.y0 - b.y0);
+    return s[Math.floor(s.length / 3)] ?? null;
+  },
+  near: ({ world, h }) => {
+    const P = world.components.Position;
+    let best = null,
+      d = Number.POSITIVE_INFINITY;
+    for (const p of h.pieces) {
+      if (p.fallen || !raised(p)) continue;
+      const e = Math.hypot(P.x[p.body] - P.x[h.ball], P.z[p.body] - P.z[h.ball]);
+      if (e < d) {
+        d = e;
+        best = p;
+      }
+    }
+    return best;
+  },
+};
+const most = {},
+  missed = {},
+  tapped = {},
+  toHit = {};
+/** Median of a list of numbers (null when empty). */
+const median = (xs) => {
+  const s = [...xs].sort((a, b) => a - b);
+  return s.length ? s[Math.floor(s.length / 2)] : null;
+};
+for (const level of chosen) {
+  most[level] = 0;
+  missed[level] = 0;
+  tapped[level] = 0;
+  toHit[level] = [];
+  for (const [name, choose] of Object.entries(ways))
+    for (const first of FIRST_TAP_STEPS) {
+      const world = wb.createPhysicsWorld(wb.wreckingBallWorldOptions());
+      const h = wb.buildWreckingBall(world, { level });
+      const groups = structures(h.pieces);
+      const target = wb.clearTarget(h.pieces, level);
+      for (let k = 0; k < first; k++) wb.step(world);
+      let taps = 0,
+        cleared = false;
+      const downs = [];
+      while (taps < MOST_TAPS && !cleared) {
+        const piece = choose({ world, h, taps, groups });
+        if (!piece) break;
+        wb.aimAt(world, h, piece.body);
+        taps++;
+        const structure = new Set(groups.find((g) => g.includes(piece)).map((p) => p.body));
+        let idle = 0,
+          touched = false,
+          steps = 0,
+          arrival = -1;
+        const run = () => {
+          wb.step(world);
+          steps++;
+          wb.scorePieces(world, h.pieces);
+          if (touched) return;
+          const ev = wb.contactEvents(world).begin;
+          for (let i = 0; i < ev.count; i++)
+            if ((ev.bodyA[i] === h.ball && structure.has(ev.bodyB[i])) || (ev.bodyB[i] === h.ball && structure.has(ev.bodyA[i])))
+              touched = true;
+          // The swing's arrival: its follow-through has begun (or no moves are left); contacts in
+          // the half second from there count.
+          if (arrival < 0 && (h.controls.moves.length === 0 || h.controls.moves[0].follow === true)) arrival = steps;
+          if (!touched && arrival >= 0 && steps <= arrival + 30)
+            wb.forEachContact(world, (c) => {
+              if (c.separation > 0.01) return;
+              if ((c.bodyA === h.ball && structure.has(c.bodyB)) || (c.bodyB === h.ball && structure.has(c.bodyA))) touched = true;
+            });
+          if (touched) toHit[level].push(steps / 60);
+        };
+        for (let k = 0; k < 60 * 15 && (h.controls.moves.length > 0 || idle++ < 30); k++) run();
+        // A player looks at the count once the dust settles: 1.5 s more.
+        for (let k = 0; k < 90; k++) run();
+        tapped[level]++;
+        if (!touched) missed[level]++;
+        downs.push(`${wb.fallenCount(h.pieces)}${touched ? '' : ' (missed)'}`);
+        cleared = !full && wb.fallenCount(h.pieces) >= target;
+      }
+      most[level] = Math.max(most[level], cleared ? taps : MOST_TAPS + 1);
+      console.log(
+        `level ${level} ${name.padEnd(7)} first tap at step ${String(first).padEnd(2)} ${cleared ? `cleared in ${taps} taps` : `not in ${MOST_TAPS}`} (${wb.fallenCount(h.pieces)} of ${h.pieces.length} down, clear at ${target}; down after each tap ${downs.join(' ')})`,
+      );
+    }
 }
+for (const level of chosen)
+  console.log(
+    `level ${level}: budget ${wb.swingBudget(level)}, the most any way took ${most[level] > MOST_TAPS ? `over ${MOST_TAPS}` : most[level]}; missed ${missed[level]} of ${tapped[level]} taps; tap to touch median ${median(toHit[level])?.toFixed(2) ?? '-'} s, longest ${toHit[level].length ? Math.max(...toHit[level]).toFixed(2) : '-'} s`,
+  );
