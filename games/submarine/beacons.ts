@@ -5,6 +5,8 @@
  * boat moves. Headless (no drawing), so the rule is tested in node.
  */
 
+import { assertFinite } from '@bitphysics/physics/validate';
+
 /**
  * The pointer leaves its beacon for another one only when that one is nearer than this fraction
  * of the distance to its own (0.6: a beacon at 45 m takes over from one at 80 m, one at 60 m does not).
@@ -44,19 +46,24 @@ export const RIDGE_WARNING = 'ridge ahead: climb';
 export const MINE_WARNING = Object.freeze({ over: '⚠ mine on the way: pass over it', under: '⚠ mine on the way: pass under it' });
 
 /**
+ * Throws unless the segment from (x0, y0) to (x1, y1), m, has finite ends; `where` names the caller.
+ * @throws RangeError naming the first coordinate that is not finite.
+ */
+export function assertSegment(where: string, x0: number, y0: number, x1: number, y1: number): void {
+  assertFinite(where, 'x0', x0);
+  assertFinite(where, 'y0', y0);
+  assertFinite(where, 'x1', x1);
+  assertFinite(where, 'y1', y1);
+}
+
+/**
  * Whether the straight line from the hull at (x0, y0) to the beacon at (x1, y1), m (y up), passes
  * below the seabed anywhere: sampled every metre or less along x, and true where the line is under
  * `bedAt(x)` (the seabed's height there, m). Going straight for the beacon would then run into a ridge.
  * @throws RangeError when a coordinate is not finite.
  */
 export function seabedBetween(x0: number, y0: number, x1: number, y1: number, bedAt: (x: number) => number): boolean {
-  for (const [name, v] of [
-    ['x0', x0],
-    ['y0', y0],
-    ['x1', x1],
-    ['y1', y1],
-  ] as const)
-    if (!Number.isFinite(v)) throw new RangeError(`seabedBetween: ${name} must be finite, got ${v}`);
+  assertSegment('seabedBetween', x0, y0, x1, y1);
   const n = Math.max(1, Math.ceil(Math.abs(x1 - x0)));
   for (let i = 0; i <= n; i++) {
     const u = i / n;

@@ -6,7 +6,9 @@
  */
 
 import { Rng } from '@bitphysics/physics';
+import { assertPositive } from '@bitphysics/physics/validate';
 import { SUBMARINE, type SubmarineHandles, seabedHeight } from '@bitphysics/projects';
+import { assertSegment } from './beacons';
 
 /** A mine's contact radius (the sphere and its horns' tips), m. */
 export const MINE_RADIUS = 2.4;
@@ -104,14 +106,8 @@ export function mineOnWay(
   live: readonly boolean[],
   clearance: number = MINE_WAY_CLEARANCE,
 ): { index: number; side: 'over' | 'under' } | null {
-  for (const [name, v] of [
-    ['x0', x0],
-    ['y0', y0],
-    ['x1', x1],
-    ['y1', y1],
-  ] as const)
-    if (!Number.isFinite(v)) throw new RangeError(`mineOnWay: ${name} must be finite, got ${v}`);
-  if (!(clearance > 0)) throw new RangeError(`mineOnWay: clearance must be positive, got ${clearance}`);
+  assertSegment('mineOnWay', x0, y0, x1, y1);
+  assertPositive('mineOnWay', 'clearance', clearance);
   const dx = x1 - x0,
     dy = y1 - y0,
     len2 = dx * dx + dy * dy;
