@@ -289,6 +289,10 @@ describe('snapshot captures every piece of state', () => {
       const world = createPhysicsWorld({ dimensions, capacity: 16 });
       const names = externalWorldStates().map((e) => e.name);
       expect(names.length).toBeGreaterThanOrEqual(8);
+      // A new world holds every registered name, undefined (create-world.ts: one object layout in
+      // every world), and nothing else.
+      expect(Object.keys(world.features).sort()).toEqual([...names].sort());
+      for (const name of names) expect(world.features[name], name).toBeUndefined();
       for (const ext of externalWorldStates()) {
         const state = ext.get(world, true);
         expect(state, ext.name).toBeDefined();

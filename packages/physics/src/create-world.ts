@@ -207,7 +207,19 @@ function assemble(o: WorldSettings): PhysicsWorld {
     interpolation,
     threads,
     threadPool,
-    features: {},
+    // Every feature's entry from the start (undefined until the feature is used): the object then
+    // has one layout in every world, whatever order a world's features are first used in, so code
+    // compiled while one world ran reads another's entries without being thrown away.
+    features: {
+      shapes3d: undefined,
+      joints3d: undefined,
+      contacts3d: undefined,
+      meshes3d: undefined,
+      particles: undefined,
+      'particle-archetypes': undefined,
+      dissipation: undefined,
+      'contact-scale': undefined,
+    },
   };
   const world = createWorld(context, entityIndex) as PhysicsWorld;
   installDefaults(world);
