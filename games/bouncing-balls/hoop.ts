@@ -7,7 +7,8 @@
  * A basket: the centre of one of the player's balls crosses the rim's line downwards between the
  * front rim's inner end and the backboard (`throughHoop`). Only balls released below the rim count
  * (`SHOT_LINE_GAP`), so a ball dropped straight in from above is no basket. The round's clock starts
- * with the player's first ball, so reading the goal costs no time.
+ * with the player's first throw (the page's clicks that drop a ball do not start it), so reading the
+ * goal, or a click meant for something else, costs no time.
  *
  * The net (`NET`, `netContact`) hangs under the rim and lets a ball in only from above: one thrown up
  * from under the hoop is stopped by the net's bottom and drops back, and one coming from the side
@@ -207,7 +208,7 @@ export function mayScore(spot: HoopSpot, y: number): boolean {
   return y <= spot.y - SHOT_LINE_GAP;
 }
 
-/** The phase of a round: waiting for the first ball, the clock running, or time up. */
+/** The phase of a round: waiting for the first throw, the clock running, or time up. */
 export type RoundPhase = 'ready' | 'playing' | 'over';
 
 /** A round of the hoop game. */
@@ -221,17 +222,17 @@ export interface HoopRound {
   timeLeft: number;
   /** Index of the hoop's spot in the layout's spots (advances with each basket, cycling). */
   spot: number;
-  /** Balls the player threw or dropped this round. */
+  /** Balls the player threw this round. */
   shots: number;
 }
 
-/** A new round of `seconds` s (default ROUND_SECONDS), waiting for the first ball. @throws RangeError unless seconds is finite and > 0. */
+/** A new round of `seconds` s (default ROUND_SECONDS), waiting for the first throw. @throws RangeError unless seconds is finite and > 0. */
 export function createRound(seconds = ROUND_SECONDS): HoopRound {
   if (!(seconds > 0 && Number.isFinite(seconds))) throw new RangeError(`createRound: seconds must be finite and > 0, got ${seconds}`);
   return { phase: 'ready', score: 0, seconds, timeLeft: seconds, spot: 0, shots: 0 };
 }
 
-/** The player released a ball: starts the clock if the round was waiting. Nothing changes once time is up. */
+/** The player threw a ball: starts the clock if the round was waiting, and counts the shot. Nothing changes once time is up. */
 export function roundShot(round: HoopRound): void {
   if (round.phase === 'over') return;
   round.phase = 'playing';

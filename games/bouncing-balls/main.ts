@@ -3,7 +3,7 @@
  * bounce off the box, the inclined walls (and their end points) and each other.
  *
  * The game on top (./hoop.ts): throw balls through the hoop as often as you can in 45 s; the hoop
- * moves after each basket, the clock starts with the first ball, the best score is kept in
+ * moves after each basket, the clock starts with the first throw, the best score is kept in
  * localStorage; R or the Play-again button starts a new round. The status row above the box says
  * the goal and shows baskets, time and best.
  *
@@ -12,8 +12,11 @@
  * the pull, faster the longer it is, hoop.ts slingVelocity), with a dotted arc of its flight while
  * pulling (hoop.ts throwPath), bounces off the walls, the hoop and its net included. The net stops a
  * ball from below or the side (hoop.ts netContact). The player's balls are basketballs, all the same
- * size (hoop.ts PLAYER_RADIUS). Holding still on a ball or crate for HOLD_MS (a ring fills) picks it
- * up with a mouse joint to pull it around. Knocks: the loudest few collisions a step (knocks.ts), so
+ * size (hoop.ts PLAYER_RADIUS). Holding still on a ball or crate for HOLD_MS, 1 s (a ring fills from
+ * HOLD_RING_MS on, labelled), picks it up with a mouse joint to carry it around; any pull before then
+ * throws, so a press on the pile throws unless the pickup is meant. A basket is celebrated: a swish
+ * and a rising chord, confetti from the rim, "+1" and the old hoop glowing out as the new one is
+ * ringed, and the status row's score bumps. Knocks: the loudest few collisions a step (knocks.ts), so
  * a pile does not roar. When time is up, the Play-again button floats at the top of the box,
  * clear of the balls piled at its bottom.
  *
@@ -89,8 +92,10 @@ import {
 const HEAVY_COLOR = 0xa9b4c6;
 /** The sandbox balls' colours: bright, so they read on the court's dark wall. */
 const BALL_PALETTE = [0x4cc9f0, 0xf15bb5, 0x9b5de5, 0x00bbf9, 0x00f5d4, 0xfee440, 0xff6b6b, 0x8ac926, 0xffca3a, 0x72efdd];
-/** A press that moves less than this, CSS px, is a click (drop), more is a throw. */
+/** A mouse press that moves less than this, CSS px, is a click (drop) or a hold; more is a throw. */
 const CLICK_SLOP = 6;
+/** The same for a finger, CSS px: a fingertip resting on glass wobbles a few pixels. */
+const TOUCH_SLOP = 12;
 
 const initialCount = numberParam('count', { default: 40, min: 1, max: 10_000, integer: true });
 const params = {
@@ -136,8 +141,11 @@ function readBest(): number {
   }
 }
 let best = readBest();
-/** A basket's pop: where (m) and the world time (s) it was scored, for the flash and the +1. */
-let lastBasket = { x: 0, y: 0, time: -10 };
+/**
+ * The last basket, for its celebration: where it went in (the rim's centre, m), the world time it was
+ * scored (s), the hoop's spot it went through (an index of hoopSpots) and the score it made.
+ */
+let lastBasket = { x: 0, y: 0, time: -10, spot: 0, score: 0 };
 
 /** Builds a fresh world with the scene from the current params (the shell calls it at start and on R). */
 function createWorld(): PhysicsWorld {
@@ -156,7 +164,7 @@ function createWorld(): PhysicsWorld {
   crates = [];
   round = createRound(roundSeconds);
   playerBalls = new Map();
-  lastBasket = { x: 0, y: 0, time: -10 };
+  lastBasket = { x: 0, y: 0, time: -10, spot: 0, score: 0 };
   hoopIds = addHoop(world, hoopSpots(TALL)[0]!, params.restitution, params.friction);
   return world;
 }
@@ -217,13 +225,19 @@ function playHoop(world: PhysicsWorld): void {
       hintReason = 'below';
     }
     if (b.scores && crossing === -1 && roundBasket(round, spots.length)) {
-      lastBasket = { x: opening.minX + 0.5 * (opening.maxX - opening.minX), y: opening.y, time: world.time };
+      lastBasket = {
+        x: opening.minX + 0.5 * (opening.maxX - opening.minX),
+        y: opening.y,
+        time: world.time,
+        spot: (round.spot + spots.length - 1) % spots.length,
+        score: round.score,
+      };
       playerBalls.delete(e);
       removeBall(world, handles, e);
       removeHoop(world, hoopIds);
       hoopIds = addHoop(world, spots[round.spot]!, handles.params.restitution, handles.params.friction);
       opening = hoopOpening(spots[round.spot]!);
-      sound.chime(660 + 60 * Math.min(10, round.score));
+      cheer(round.score);
       keepBest();
       continue;
     }
@@ -234,6 +248,19 @@ function playHoop(world: PhysicsWorld): void {
     keepBest();
     sound.chime(440, 0.6);
   }
+}
+
+/**
+ * A basket's sound: the net's swish, then a rising major chord (three notes 90 ms apart) that starts
+ * a semitone higher with each basket of the round (`score`, up to an octave).
+ */
+function cheer(score: number): void {
+  sound.rip(0.3);
+  const base = 523.25 * 2 ** (Math.min(12, score - 1) / 12);
+  sound.chime(base, 0.3);
+  setTimeout(() => sound.chime(base * 1.26, 0.3), 90);
+  setTimeout(() => sound.chime(base * 1.5, 0.55), 180);
+  bumpScore();
 }
 
 /** Keeps the round's score as the best if it beats it (in localStorage when it can). */
@@ -298,7 +325,7 @@ const game = await startPixiGame({
   controls: [
     { keys: 'Drag', action: 'pull back and let go: throw a ball (through the hoop scores)' },
     { keys: 'Click', action: 'drop a ball' },
-    { keys: 'Hold on a ball', touch: 'Hold on a ball', action: 'pick it (or a crate) up, then drag it' },
+    { keys: 'Hold on a ball', touch: 'Hold on a ball', action: 'hold still 1 s: pick it (or a crate) up and carry it' },
     { keys: 'R', action: 'new round (and reset)' },
     { keys: 'T', action: 'trails on / off' },
     { keys: 'D', action: 'debug: velocities, contacts' },
@@ -430,9 +457,17 @@ const drag = enableMouseDrag(
   () => renderer.camera,
   { reach: 0.6 * meanRadiusFor(params.count), enabled: () => grabbing },
 );
-/** Holding still this long, ms, on a ball or crate picks it up (a long press) instead of dropping a ball. */
-const HOLD_MS = 450;
+/**
+ * Holding still this long, ms, on a ball or crate picks it up (a long press) instead of dropping a
+ * ball. Long enough that a player who presses on the pile, aims a moment and then pulls throws: the
+ * pickup has to be meant (450 ms picked balls up from players who meant to throw).
+ */
+const HOLD_MS = 1000;
+/** A still press on a ball shows its pick-up ring from this long on, ms (a press that is pulled at once shows none). */
+const HOLD_RING_MS = 250;
 let holdTimer = 0;
+/** How far the current press may wander and still be a click or a hold, CSS px (CLICK_SLOP, or TOUCH_SLOP for a finger). */
+let slop = CLICK_SLOP;
 
 const overlay = new Graphics({ label: 'pointer' });
 app.stage.addChild(overlay);
@@ -473,6 +508,7 @@ canvas.addEventListener('pointerdown', (event) => {
   lastX = startX;
   lastY = startY;
   dragged = false;
+  slop = event.pointerType === 'touch' ? TOUCH_SLOP : CLICK_SLOP;
   holdStart = performance.now();
   clearTimeout(holdTimer);
   const { clientX, clientY, pointerId: id, pointerType, timeStamp } = event;
@@ -498,7 +534,7 @@ let heldFrom = { id: -1, timeStamp: 0 };
 canvas.addEventListener('pointermove', (event) => {
   if (event.pointerId !== heldFrom.id || drag.joint === 0 || event.timeStamp - heldFrom.timeStamp >= HOLD_MS) return;
   const [x, y] = local(event);
-  if (Math.hypot(x - startX, y - startY) <= CLICK_SLOP) return;
+  if (Math.hypot(x - startX, y - startY) <= slop) return;
   drag.release();
   heldFrom.id = -1;
   pointerId = event.pointerId;
@@ -526,26 +562,34 @@ function bodyUnder(x: number, y: number): boolean {
 canvas.addEventListener('pointermove', (event) => {
   if (event.pointerId !== pointerId) return;
   [lastX, lastY] = local(event);
-  if (Math.hypot(lastX - startX, lastY - startY) > CLICK_SLOP) dragged = true;
+  if (Math.hypot(lastX - startX, lastY - startY) > slop) dragged = true;
 });
 
-/** Pointer released: a click drops a ball where it was pressed; a pull throws one from there, slingshot-style. */
+/**
+ * Pointer released: a click drops a ball where it was pressed; a pull throws one from there,
+ * slingshot-style. Only a throw starts the round's clock: a click that only meant to close a menu,
+ * dismiss a card or try the sandbox costs no time.
+ */
 function release(event: PointerEvent, cancelled: boolean): void {
   if (event.pointerId !== pointerId) return;
   pointerId = -1;
   clearTimeout(holdTimer);
   if (cancelled) return;
   [lastX, lastY] = local(event);
+  if (Math.hypot(lastX - startX, lastY - startY) > slop) dragged = true;
   const t = currentThrow();
-  if (!dragged) shoot(t.x, t.y, 0, 0);
+  if (!dragged) shoot(t.x, t.y, 0, 0, false);
   else shoot(t.x, t.y, t.vx, t.vy);
 }
+// A long press on a touch screen may open the browser's menu: the hold picks a ball up instead.
+canvas.addEventListener('contextmenu', (event) => event.preventDefault());
 
 /**
  * A player's ball at (x, y), m, with velocity (vx, vy), m/s: orange if released below the rim (it may
- * score), grey if not; starts the round's clock. @returns its id.
+ * score), grey if not. A `thrown` ball (a throw, not a click's drop) starts the round's clock and
+ * counts as a shot. @returns its id.
  */
-function shoot(x: number, y: number, vx: number, vy: number): number {
+function shoot(x: number, y: number, vx: number, vy: number, thrown = true): number {
   const e = spawnBall(shell.world, handles, x, y, vx, vy, PLAYER_RADIUS);
   const P = shell.world.components.Position;
   const bx = P.x[slotOf(e)]!,
@@ -553,7 +597,7 @@ function shoot(x: number, y: number, vx: number, vy: number): number {
   const scores = mayScore(hoopSpots(TALL)[round.spot]!, by);
   playerBalls.set(e, { scores, x: bx, y: by });
   renderer.setColor(e, scores ? PLAYER_COLOR : HIGH_COLOR);
-  if (round.phase !== 'over') {
+  if (round.phase !== 'over' && thrown) {
     roundShot(round);
     if (!scores) {
       tooHighAt = performance.now();
@@ -592,6 +636,23 @@ function aimPath(): number[] {
 /** Bounces the aiming arc follows (off the walls, the hoop and its net) before it ends. */
 const AIM_BOUNCES = 2;
 
+/** The label over a press held on a ball (what the hold does) and over a ball picked up (how to let go). */
+const holdLabel = new Text({
+  text: '',
+  style: { fontFamily: 'system-ui, sans-serif', fontSize: 14, fontWeight: '600', fill: 0xffffff, stroke: { color: 0x0b0f16, width: 4 } },
+});
+holdLabel.anchor.set(0.5, 1);
+holdLabel.visible = false;
+app.stage.addChild(holdLabel);
+
+/** Shows `text` on the hold label centred at x, its bottom at y (CSS px on the canvas), kept inside the canvas. */
+function showHoldLabel(text: string, x: number, y: number): void {
+  if (holdLabel.text !== text) holdLabel.text = text;
+  const half = holdLabel.width / 2 + 4;
+  holdLabel.position.set(Math.min(canvas.clientWidth - half, Math.max(half, x)), Math.max(holdLabel.height + 2, y));
+  holdLabel.visible = true;
+}
+
 /**
  * Draws the pointer preview: the ball to be dropped; while pulling, the ball at its spot (orange if
  * it may score, grey if above the rim's line), the slingshot's band to the pointer, and a dotted arc
@@ -599,17 +660,37 @@ const AIM_BOUNCES = 2;
  */
 function drawPointer(): void {
   overlay.clear();
-  if (pointerId === -1) return;
+  holdLabel.visible = false;
   const cam = renderer.camera;
+  if (pointerId === -1) {
+    // A ball picked up: say how to let it go, over it.
+    if (drag.joint !== 0 && drag.body !== 0) {
+      const s = slotOf(drag.body);
+      const P = shell.world.components.Position;
+      showHoldLabel('carry it · let go to drop it', cam.toScreenX(P.x[s]!), cam.toScreenY(P.y[s]!) - cam.toScreenLength(PLAYER_RADIUS) - 8);
+    }
+    return;
+  }
   const r = cam.toScreenLength(PLAYER_RADIUS);
   const scores = mayScore(hoopSpots(TALL)[round.spot]!, cam.toWorldY(startY));
   const color = scores ? PLAYER_COLOR : HIGH_COLOR;
   if (!dragged) {
     overlay.circle(startX, startY, r).stroke({ width: 2, color: 0xffffff, alpha: 0.6 });
-    // On a ball or crate: a ring fills while the press is held, picking it up when full.
-    if (bodyUnder(cam.toWorldX(startX), cam.toWorldY(startY))) {
-      const f = Math.min(1, (performance.now() - holdStart) / HOLD_MS);
-      overlay.arc(startX, startY, r + 6, -Math.PI / 2, -Math.PI / 2 + 2 * Math.PI * f).stroke({ width: 4, color: 0xffd166, alpha: 0.9 });
+    // Held still on a ball or crate: after HOLD_RING_MS a ring fills, picking it up when full (a
+    // pull before then throws), and a label says so.
+    const held = performance.now() - holdStart;
+    if (held >= HOLD_RING_MS && bodyUnder(cam.toWorldX(startX), cam.toWorldY(startY))) {
+      const f = Math.min(1, (held - HOLD_RING_MS) / (HOLD_MS - HOLD_RING_MS));
+      overlay.circle(startX, startY, r + 6).stroke({ width: 4, color: 0x0b0f16, alpha: 0.5 });
+      // From the top, clockwise, as a polyline (pixi's arc here joined the canvas's corner to it with a line).
+      const steps = Math.max(1, Math.ceil(48 * f));
+      overlay.moveTo(startX, startY - r - 6);
+      for (let k = 1; k <= steps; k++) {
+        const a = -Math.PI / 2 + (2 * Math.PI * f * k) / steps;
+        overlay.lineTo(startX + (r + 6) * Math.cos(a), startY + (r + 6) * Math.sin(a));
+      }
+      overlay.stroke({ width: 4, color: 0xffd166, alpha: 0.95 });
+      showHoldLabel('hold still to pick up · pull to throw', startX, startY - r - 12);
     }
     return;
   }
@@ -631,10 +712,49 @@ function drawPointer(): void {
 
 const hoopLayer = new Graphics({ label: 'hoop' });
 app.stage.addChild(hoopLayer);
-const popText = new Text({ text: '+1', style: { fontFamily: 'system-ui, sans-serif', fontSize: 28, fontWeight: '700', fill: 0xffd166 } });
+const confetti = new Graphics({ label: 'confetti' });
+const popText = new Text({
+  text: '+1',
+  style: { fontFamily: 'system-ui, sans-serif', fontSize: 44, fontWeight: '800', fill: 0xffd166, stroke: { color: 0x3a1a02, width: 6 } },
+});
 popText.anchor.set(0.5, 1);
 popText.visible = false;
-app.stage.addChild(popText);
+const praiseText = new Text({
+  text: 'Basket!',
+  style: { fontFamily: 'system-ui, sans-serif', fontSize: 24, fontWeight: '700', fill: 0xffffff, stroke: { color: 0x0b0f16, width: 5 } },
+});
+praiseText.anchor.set(0.5, 1);
+praiseText.visible = false;
+app.stage.addChild(confetti, popText, praiseText);
+/** How long a basket's celebration lasts, s (world time). */
+const CELEBRATE_SECONDS = 1.6;
+/** What the praise line says for the n-th basket of a round (1-based): the first few differ. */
+const PRAISE = ['Basket!', 'Again!', 'Hat trick!', 'On fire!'];
+/**
+ * The confetti of a basket: each piece's launch velocity (m/s, up from the rim, fanned 60 degrees
+ * either side of vertical), spin (rad/s), size (m) and colour, drawn from a fixed generator so every
+ * basket throws the same fan.
+ */
+const CONFETTI = (() => {
+  let seed = 7;
+  const next = (): number => {
+    seed = (seed * 1103515245 + 12345) >>> 0;
+    return seed / 2 ** 32;
+  };
+  const colors = [0xffd166, 0xff8a2a, 0xffffff, 0x4cc9f0, 0xf15bb5, 0x7ee787];
+  return Array.from({ length: 40 }, (_, i) => {
+    const a = Math.PI / 2 + (next() - 0.5) * ((2 * Math.PI) / 3),
+      v = 3 + 4.5 * next();
+    return {
+      vx: v * Math.cos(a),
+      vy: v * Math.sin(a),
+      spin: (next() - 0.5) * 20,
+      w: 0.12 + 0.1 * next(),
+      h: 0.06 + 0.04 * next(),
+      color: colors[i % colors.length]!,
+    };
+  });
+})();
 /** When a ball was last released too high to score (performance.now() ms), for the status row's reminder. */
 let tooHighAt = -1e9;
 /** Why the last ball cannot score: released above the line, or went up through the hoop from below. */
@@ -691,19 +811,91 @@ function drawHoop(): void {
   hoopLayer.stroke({ width: rimW + 2, color: 0x7a2e05, cap: 'round' });
   line([L - HOOP_RADIUS, o.y], [R + HOOP_RADIUS, o.y]);
   hoopLayer.stroke({ width: rimW, color: 0xff7a1a, cap: 'round' });
-  // A basket: a ring that widens and fades over 0.8 s, and a rising +1.
-  const age = world.time - lastBasket.time;
-  popText.visible = age >= 0 && age < 0.8;
-  if (popText.visible) {
-    const f = age / 0.8;
-    const x = cam.toScreenX(lastBasket.x),
-      y = cam.toScreenY(lastBasket.y);
-    hoopLayer.circle(x, y, cam.toScreenLength(0.6 + 1.6 * f)).stroke({ width: 3, color: 0xffd166, alpha: 1 - f });
-    popText.position.set(x, y - 10 - 40 * f);
-    popText.alpha = 1 - f;
-  }
+  drawCelebration(world.time - lastBasket.time);
   updateStatus();
   placeTouchHint();
+}
+
+/**
+ * A basket's celebration, `age` s (world time) after it (nothing outside [0, CELEBRATE_SECONDS)): the
+ * hoop it went through glows gold and fades where it was (the hoop has moved on), a gold ring widens
+ * from the rim, confetti flies up from it and falls under gravity, a big "+1" and a word of praise
+ * rise over it, and a ring closes in on the new hoop so the eye finds it.
+ */
+function drawCelebration(age: number): void {
+  confetti.clear();
+  const on = age >= 0 && age < CELEBRATE_SECONDS;
+  popText.visible = praiseText.visible = on;
+  if (!on) return;
+  const cam = renderer.camera;
+  const f = age / CELEBRATE_SECONDS;
+  const x = cam.toScreenX(lastBasket.x),
+    y = cam.toScreenY(lastBasket.y);
+  // The old hoop glowing out over 0.8 s: its rim and net in gold.
+  const glow = Math.max(0, 1 - age / 0.8);
+  if (glow > 0) {
+    const o = hoopOpening(hoopSpots(TALL)[lastBasket.spot]!);
+    const rimW = Math.max(4, cam.toScreenLength(2 * HOOP_RADIUS));
+    const L = o.minX,
+      R = o.maxX,
+      n = NET.narrow,
+      b = o.y - NET.depth;
+    confetti
+      .moveTo(cam.toScreenX(L - HOOP_RADIUS), cam.toScreenY(o.y))
+      .lineTo(cam.toScreenX(R + HOOP_RADIUS), cam.toScreenY(o.y))
+      .stroke({ width: rimW + 6, color: 0xffd166, alpha: glow, cap: 'round' });
+    confetti
+      .moveTo(cam.toScreenX(L), cam.toScreenY(o.y))
+      .lineTo(cam.toScreenX(L + n), cam.toScreenY(b))
+      .lineTo(cam.toScreenX(R - n), cam.toScreenY(b))
+      .lineTo(cam.toScreenX(R), cam.toScreenY(o.y))
+      .stroke({ width: 3, color: 0xffd166, alpha: 0.8 * glow });
+  }
+  // A ring widening from the rim over the first half.
+  if (f < 0.5) confetti.circle(x, y, cam.toScreenLength(0.6 + 3 * f)).stroke({ width: 4, color: 0xffd166, alpha: 1 - 2 * f });
+  // The confetti: thrown up from the rim, falling under g, turning, fading over the last 40 %.
+  const g = 9.81;
+  const fade = Math.min(1, (1 - f) / 0.4);
+  for (const c of CONFETTI) {
+    const px = lastBasket.x + c.vx * age,
+      py = lastBasket.y + c.vy * age - 0.5 * g * age * age;
+    const a = c.spin * age,
+      cos = Math.cos(a),
+      sin = Math.sin(a);
+    const hw = cam.toScreenLength(c.w) / 2,
+      hh = cam.toScreenLength(c.h) / 2 + 0.5;
+    const sx = cam.toScreenX(px),
+      sy = cam.toScreenY(py);
+    confetti
+      .poly([
+        sx - hw * cos + hh * sin,
+        sy - hw * sin - hh * cos,
+        sx + hw * cos + hh * sin,
+        sy + hw * sin - hh * cos,
+        sx + hw * cos - hh * sin,
+        sy + hw * sin + hh * cos,
+        sx - hw * cos - hh * sin,
+        sy - hw * sin + hh * cos,
+      ])
+      .fill({ color: c.color, alpha: fade });
+  }
+  // The new hoop: a ring closing in on its rim between 0.3 s and 1.3 s.
+  if (age > 0.3 && age < 1.3) {
+    const k = (age - 0.3) / 1;
+    const o = hoopOpening(hoopSpots(TALL)[round.spot]!);
+    confetti
+      .circle(cam.toScreenX(0.5 * (o.minX + o.maxX)), cam.toScreenY(o.y), cam.toScreenLength(3.2 - 1.8 * k))
+      .stroke({ width: 3, color: 0xffffff, alpha: 0.8 * (1 - k) });
+  }
+  // "+1" and the praise rising over the rim, fading over the last 40 %.
+  const rise = 30 + 50 * Math.min(1, 2 * f);
+  const pop = age < 0.12 ? 0.6 + (0.4 * age) / 0.12 : 1;
+  popText.scale.set(pop);
+  popText.position.set(x, y - rise);
+  popText.alpha = fade;
+  praiseText.text = PRAISE[Math.min(PRAISE.length, lastBasket.score) - 1]!;
+  praiseText.position.set(x, y - rise - popText.height - 2);
+  praiseText.alpha = fade;
 }
 
 /**
@@ -855,13 +1047,31 @@ placeTouchHint();
 /** The big Play-again button when time is up: over the top of the box, clear of the balls piled at its bottom. */
 const setAction = createActionButton('Play again ▶', () => shell.reset(), { at: 'top' });
 
+// The numbers line bumps (grows and turns gold for a moment) when a basket scores.
+const bumpStyle = document.createElement('style');
+bumpStyle.textContent = `@keyframes bb-bump { 0% { transform: scale(1); color: inherit; } 20% { transform: scale(1.3); color: #ffd166; }
+  70% { color: #ffd166; } 100% { transform: scale(1); color: inherit; } }
+[data-hud="hoop"] [data-hud="numbers"].bb-bump { animation: bb-bump 0.9s ease-out; }`;
+document.head.append(bumpStyle);
+/** Bumps the status row's numbers line (a basket scored). */
+function bumpScore(): void {
+  const el = status.numbers;
+  el.classList.remove('bb-bump');
+  // Reading the layout restarts the animation when the class comes back.
+  void el.offsetWidth;
+  el.classList.add('bb-bump');
+}
+
 /** Writes the status row (goal, baskets, time, best, a hint) when it changed, and shows Play again when time is up. */
 function updateStatus(): void {
   const secs = Math.ceil(round.timeLeft);
   const over = round.phase === 'over';
+  const cheering = shell.world.time - lastBasket.time < CELEBRATE_SECONDS && lastBasket.score === round.score;
   const goal = over
     ? `Time! ${round.score} ${round.score === 1 ? 'basket' : 'baskets'}${round.score > 0 && round.score >= best ? ' — best yet!' : ''}`
-    : `Throw balls through the hoop! ${round.seconds} s`;
+    : cheering
+      ? `${PRAISE[Math.min(PRAISE.length, round.score) - 1]} ${round.score} so far · the hoop moved`
+      : `Throw balls through the hoop! ${round.seconds} s`;
   const numbers = `Baskets ${round.score} · Time ${secs} s · Best ${best}`;
   const throwHow = touch ? 'Press, pull back and let go to throw' : 'Press, drag back and let go to throw';
   const hint = over
@@ -871,8 +1081,8 @@ function updateStatus(): void {
         ? 'Too high: throw from below the orange line to score'
         : 'Up through the net does not count: drop it in from above'
       : round.phase === 'ready'
-        ? `${throwHow} from below the orange line · the clock starts with your first ball`
-        : `${throwHow} · the hoop moves after each basket`;
+        ? `${throwHow} from below the orange line · the clock starts with your first throw`
+        : `${throwHow} · hold still 1 s on a ball to pick it up`;
   if (status.set({ goal, numbers, hint }, over)) setAction(over);
 }
 

@@ -5,7 +5,7 @@
  * where it burst, whose centre comes within the lantern's radius (`lightFromSparks`). So a shell has
  * to burst close to a lantern: its hot stars reach about 0.125 sky widths sideways (a quick burst)
  * to 0.2 (the longest hold), and further down, as they droop (`sparkReach`, the page's charging
- * ring). A shell bursts FUSE (2 s) after launch, so a drifting lantern must be led.
+ * ring). A shell bursts FUSE (1.2 s) after launch, so a drifting lantern must be led.
  *
  * Everything is measured in sky widths (W), as the bursts are (show.ts `reach`): a lantern's x is a
  * fraction of the width, its y a height in widths above the band's middle (`bandMiddle` of the sky's
@@ -19,12 +19,14 @@
  *
  * A level is shown as lit (`clearShown`) CLEAR_DELAY after its last lantern lit, once every
  * lantern's glow (`glowOf`, rising over GLOW_RISE) is full: the banner no longer comes up while the
- * last burst still hides the lantern it lit.
+ * last burst still hides the lantern it lit. The lit count the page shows counts a lantern once its
+ * glow is full (`shownLit`), for the same reason. A burst whose hot stars go cold having lit
+ * nothing is a miss (`watchBursts`), which the page says near it.
  * Pure rules: no DOM, no pixi.
  */
 import { type PhysicsWorld, query, slotOf } from '@bitphysics/physics';
-import type { RecipeName } from './recipes';
-import { burstSize, type FireworksShow } from './show';
+import { RECIPES, type RecipeName } from './recipes';
+import { burstSize, type FireworksShow, FLASHES, FUSE } from './show';
 
 /** A star lights lanterns while its age is below this fraction of its lifetime (it fades linearly over its life). */
 export const HOT_FRACTION = 0.4;
@@ -94,8 +96,11 @@ export interface LanternLevel {
  *    quick burst's 0.17); the two middle lanterns, one above the other, are an easy pair that leaves
  *    the outer two for a shell each (3, not 2). Spray 0-0.2 %. The tip says only that a hold makes
  *    a bigger burst: which lanterns pair up is for the player to see.
- * 3. Quick shells only, drifting lanterns: lead them by the fuse (spray 4-7 %; two shells can do it
- *    when two swing close). The page draws each one's ghost where it will be when the fuse runs out.
+ * 3. Quick shells only, drifting lanterns: lead them by the fuse (two shells can do it when two
+ *    swing close). The page draws each one's ghost where it will be when the fuse runs out. Over the
+ *    1.2 s fuse their swings carry them up to 0.13 to 0.24 W (2 A sin(pi FUSE / period)): the
+ *    middle one, from where it starts, further than a quick burst reaches, so a shell aimed where
+ *    it is misses it.
  * 4. Willows only: their stars rise little and fall far, so a burst at the top of a column of two
  *    (0.26 W apart) lights both, and a burst between columns lights neither pair (spray 0.2-0.6 %).
  * 5. Three lanterns high and two that drift towards each other low: when the low two meet, one burst
@@ -147,19 +152,19 @@ export const LEVELS: readonly LanternLevel[] = Object.freeze([
   },
   {
     name: 'Drifting',
-    tip: 'on a ghost: the lantern in 2 s',
+    tip: `on a ghost: the lantern in ${FUSE} s`,
     par: 3,
     shell: 'peony',
     hold: false,
     lanterns: [
-      { x: 0.17, y: -0.1, drift: 0.09, period: 7, phase: 0 },
-      { x: 0.5, y: 0.16, drift: 0.14, period: 5, phase: 1 },
-      { x: 0.83, y: -0.1, drift: 0.09, period: 8, phase: 3 },
+      { x: 0.17, y: -0.1, drift: 0.1, period: 4.6, phase: 0 },
+      { x: 0.5, y: 0.16, drift: 0.17, period: 4.8, phase: -0.8 },
+      { x: 0.83, y: -0.1, drift: 0.1, period: 5.5, phase: 3 },
     ],
     tall: [
-      { x: 0.17, y: 0.36, drift: 0.09, period: 7, phase: 0 },
-      { x: 0.5, y: -0.02, drift: 0.14, period: 5, phase: 1 },
-      { x: 0.83, y: -0.4, drift: 0.09, period: 8, phase: 3 },
+      { x: 0.17, y: 0.36, drift: 0.1, period: 4.6, phase: 0 },
+      { x: 0.5, y: -0.02, drift: 0.17, period: 4.8, phase: -0.8 },
+      { x: 0.83, y: -0.4, drift: 0.1, period: 5.5, phase: 3 },
     ],
   },
   {
@@ -413,4 +418,82 @@ export function lightFromSparks(world: PhysicsWorld, show: FireworksShow, run: L
     if (run.stars !== 0) break;
   }
   return out;
+}
+
+/**
+ * How many lanterns of `run` the player sees lit at world time `time` s: those whose glow is full
+ * (GLOW_RISE after they lit). The page's "Lit n/m" counts these, so it never runs ahead of a lantern
+ * the burst that lit it still hides.
+ */
+export function shownLit(run: LanternRun, time: number): number {
+  let n = 0;
+  for (let i = 0; i < run.lit.length; i++) if (glowOf(run, i, time) >= 1) n++;
+  return n;
+}
+
+/** A burst watched for what it lights: where it burst, m, when and until when its stars are hot (world time, s), and the lanterns it lit. */
+export interface WatchedBurst {
+  readonly x: number;
+  readonly y: number;
+  readonly time: number;
+  readonly until: number;
+  lit: number;
+}
+
+/** The bursts of a level being watched (`watchBursts`): how many of the show's bursts were seen, and those still hot. */
+export interface BurstWatch {
+  seen: number;
+  readonly bursts: WatchedBurst[];
+}
+
+/** A new watch for `show`, counting its bursts so far as seen. */
+export function startWatch(show: FireworksShow): BurstWatch {
+  return { seen: show.flashCount, bursts: [] };
+}
+
+/**
+ * Follows the bursts of the lantern show after a step at world time `time` s, in which the lanterns
+ * `lit` (indices, from `lightFromSparks`) lit: each new burst of `show` (its flashes since
+ * `watch.seen`) is watched while its stars are hot (HOT_FRACTION of the longest star life of the
+ * level's shell); each lantern lit is credited to the nearest watched burst; a burst whose stars went
+ * cold having lit nothing is a miss. Once the level is lit nothing is watched.
+ * @returns the misses of this step (no longer watched).
+ * @throws RangeError if time is not finite.
+ */
+export function watchBursts(watch: BurstWatch, show: FireworksShow, run: LanternRun, lit: readonly number[], time: number): WatchedBurst[] {
+  if (!Number.isFinite(time)) throw new RangeError(`watchBursts: time must be finite, got ${time}`);
+  const hot = HOT_FRACTION * RECIPES[LEVELS[run.level]!.shell].lifetime[1];
+  for (let k = Math.max(watch.seen, show.flashCount - FLASHES); k < show.flashCount; k++) {
+    const f = 4 * (k % FLASHES);
+    const at = show.flashes[f + 2]!;
+    watch.bursts.push({ x: show.flashes[f]!, y: show.flashes[f + 1]!, time: at, until: at + hot, lit: 0 });
+  }
+  watch.seen = show.flashCount;
+  if (run.stars !== 0) {
+    watch.bursts.length = 0;
+    return [];
+  }
+  const sky = show.params.sky;
+  const lanterns = lanternsOf(run.level, sky);
+  for (const i of lit) {
+    const [lx, ly] = lanternAt(lanterns[i]!, sky, time - run.start);
+    let best: WatchedBurst | null = null,
+      bestD = Infinity;
+    for (const b of watch.bursts) {
+      const d = (b.x - lx) ** 2 + (b.y - ly) ** 2;
+      if (d < bestD) {
+        bestD = d;
+        best = b;
+      }
+    }
+    if (best) best.lit++;
+  }
+  const misses: WatchedBurst[] = [];
+  for (let k = watch.bursts.length - 1; k >= 0; k--) {
+    const b = watch.bursts[k]!;
+    if (time <= b.until) continue;
+    watch.bursts.splice(k, 1);
+    if (b.lit === 0) misses.push(b);
+  }
+  return misses;
 }

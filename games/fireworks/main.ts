@@ -3,7 +3,7 @@
  * lantern in the sky with your bursts in as few shells as you can, over five levels, with one to three
  * stars a level against its par (best stars kept in localStorage). A lantern lights when a burst's
  * hot stars touch it; the charging ring drawn while the button is held shows how far they get (hold
- * longer for a bigger burst, on the levels that allow it); drifting lanterns must be led by the 2 s
+ * longer for a bigger burst, on the levels that allow it); drifting lanterns must be led by the 1.2 s
  * fuse, and a dashed ghost of each, with a dotted trail along its swing, shows where it will be when
  * a shell launched now bursts; each level gives one kind of shell. On a touch screen the row's
  * Free-play button is 44 px tall or more (a finger's target). A lit lantern's glow comes up over half a second; the
@@ -18,7 +18,7 @@
  * Free play: a show that runs on its own (the auto-show plays ./show.ts `PROGRAMME`: peonies,
  * chrysanthemums, willows, rings, crossettes, palms, strobes and the book's crackling stars, singly
  * and in salvos), and click (or tap) to launch a shell from the ground towards the pointer; it bursts
- * there about 2 s later (show.ts FUSE) into stars as its recipe says (./recipes.ts), which fall under
+ * there 1.2 s later (show.ts FUSE) into stars as its recipe says (./recipes.ts), which fall under
  * gravity with quadratic drag and fade over their lifetime. Hold the button longer for a bigger
  * burst (up to three times the stars, 1.44 times the radius, at 1.5 s). A player's launch (click, tap,
  * Space, the panel's button) holds the auto-show for 8 s (show.ts PLAYER_PAUSE), so the player's
@@ -65,8 +65,9 @@ import {
   stateHash,
   threadsReady,
 } from '@bitphysics/physics';
-import { Container, Graphics, Sprite, Texture } from 'pixi.js';
+import { Container, Graphics, Sprite, Text, Texture } from 'pixi.js';
 import {
+  type BurstWatch,
   clearShown,
   countShell,
   glowOf,
@@ -76,8 +77,11 @@ import {
   lanternRadius,
   lanternsOf,
   lightFromSparks,
+  shownLit,
   sparkReach,
   startLevel,
+  startWatch,
+  watchBursts,
 } from './lanterns';
 import { RECIPE_NAMES, type RecipeName } from './recipes';
 import {
@@ -168,11 +172,29 @@ function readStars(): number[] {
 }
 const bestStars = readStars();
 
-/** One step of the show, then (lantern show) the lanterns its hot stars touch light up. */
+/** The lantern show's bursts being watched for what they light (a miss is said near its burst). */
+let watch: BurstWatch;
+/** Bursts that lit nothing: where (m) and when the miss was known (world time, s), newest last (at most 8). */
+const misses: { x: number; y: number; time: number }[] = [];
+/** Misses since the level started (tests). */
+let missCount = 0;
+
+/**
+ * One step of the show, then (lantern show) the lanterns its hot stars touch light up, and a burst
+ * whose stars went cold having lit nothing is a miss.
+ */
 function stepShow(world: PhysicsWorld): void {
   stepFireworks(world, show);
   if (!lanternShow || run.stars !== 0) return;
   const lit = lightFromSparks(world, show, run);
+  for (const m of watchBursts(watch, show, run, lit, world.time)) {
+    misses.push({ x: m.x, y: m.y, time: world.time });
+    missCount++;
+    if (misses.length > 8) misses.shift();
+    // A soft falling pair of notes: not a failure sting, a "not that one".
+    sound.chime(330, 0.18);
+    setTimeout(() => sound.chime(247, 0.3), 120);
+  }
   if (lit.length === 0) return;
   for (const i of lit) {
     const [x, y] = lanternAt(lanternsOf(run.level, show.params.sky)[i]!, show.params.sky, world.time - run.start);
@@ -238,6 +260,9 @@ function createWorld(): PhysicsWorld {
   run = startLevel(level, 0);
   lightings.length = 0;
   clearShownAt = Number.NaN;
+  watch = startWatch(show);
+  misses.length = 0;
+  missCount = 0;
   return world;
 }
 
@@ -535,31 +560,11 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
     sprite.alpha = fade;
   }
   drawLanterns(world);
+  drawMisses(world);
   // The status row in both modes (it was written only while lanterns were drawn, so free play kept
   // the lantern show's lines).
   updateStatus();
-  // Charging: a ring about as large as the burst the hold would make (it grows while held, where
-  // holding counts), and a bright inner ring that fills up to the longest hold. In the lantern show
-  // the ring is where the shell's hot stars get: lower than wide, as they droop.
-  if (pointerId !== -1) {
-    const hold = holdCounts() ? (performance.now() - pressedAt) / 1000 : 0;
-    const s = burstScale(hold);
-    if (lanternShow) {
-      const reach = sparkReach(LEVELS[run.level]!.shell, s);
-      const w = show.params.sky.width;
-      const ry = cam.toScreenLength(0.5 * (reach.up + reach.down) * w);
-      const cy = pointerY + cam.toScreenLength(0.5 * (reach.down - reach.up) * w);
-      overlay
-        .ellipse(pointerX, cy, cam.toScreenLength(reach.side * w), ry)
-        .fill({ color: 0xffe8a0, alpha: 0.06 })
-        .stroke({ width: 2, color: 0xffe8a0, alpha: 0.5 });
-    } else {
-      const r = cam.toScreenLength(FREE_RING_SECONDS * BURST_SPEED * show.reach * burstSize(s));
-      overlay.circle(pointerX, pointerY, r).stroke({ width: 1.5, color: 0xffe8a0, alpha: 0.2 + 0.08 * (s - 1) });
-    }
-    overlay.circle(pointerX, pointerY, 6 + 10 * ((s - 1) / 2)).stroke({ width: 2.5, color: 0xffe8a0, alpha: 0.9 });
-    overlay.circle(pointerX, pointerY, 3).fill({ color: 0xffe8a0, alpha: 0.9 });
-  }
+  drawCharge();
   // Where each of the player's shells will burst: a ring that closes in as its fuse burns down.
   let k = 0;
   for (const m of targets) {
@@ -581,6 +586,136 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   }
 }
 
+// ---- Charging: what a press shows and sounds from its first frame -----------------------------------
+
+/** Charge sounds played for the current press: -1 none yet, 0 the fuse lit, 1 to 3 each third of MAX_HOLD. */
+let chargeHeard = -1;
+/** Radius of the fuse ring round the pointer, CSS px. */
+const FUSE_RING = 20;
+/** The label over the fuse ring: what holding does. */
+const chargeLabel = new Text({
+  text: '',
+  style: { fontFamily: 'system-ui, sans-serif', fontSize: 13, fontWeight: '600', fill: 0xffe8a0, stroke: { color: 0x03050c, width: 4 } },
+});
+chargeLabel.anchor.set(0.5, 1);
+chargeLabel.visible = false;
+app.stage.addChild(chargeLabel);
+
+/**
+ * The press being charged, from its first frame: where this burst's stars would get (the reach,
+ * growing while held where holding counts; in the lantern show where its hot stars light lanterns,
+ * lower than wide, as they droop), a fuse ring round the pointer that pops in and burns once round
+ * over MAX_HOLD with a spark at its head (lit at once where holding does nothing), and a label saying
+ * what the hold does. Sounds: a fuse's crackle on the press, a rising note at each third of the hold
+ * and a higher one when it is full. So the player sees and hears at once that the hold counts.
+ */
+function drawCharge(): void {
+  chargeLabel.visible = false;
+  if (pointerId === -1) return;
+  const cam = renderer.camera;
+  const held = Math.max(0, (performance.now() - pressedAt) / 1000);
+  const holds = holdCounts();
+  const s = burstScale(holds ? held : 0);
+  const burnt = holds ? Math.min(1, held / MAX_HOLD) : 1;
+  const stage = holds ? Math.min(3, Math.floor((3 * held) / MAX_HOLD)) : 0;
+  if (stage > chargeHeard && sound.running) {
+    if (chargeHeard < 0) sound.crackle(6, 0.25);
+    sound.chime(stage === 3 ? 1047 : 523 * 2 ** ((4 * stage) / 12), stage === 3 ? 0.3 : 0.1);
+    chargeHeard = stage;
+  }
+  if (lanternShow) {
+    const reach = sparkReach(LEVELS[run.level]!.shell, s);
+    const w = show.params.sky.width;
+    const ry = cam.toScreenLength(0.5 * (reach.up + reach.down) * w);
+    const cy = pointerY + cam.toScreenLength(0.5 * (reach.down - reach.up) * w);
+    overlay
+      .ellipse(pointerX, cy, cam.toScreenLength(reach.side * w), ry)
+      .fill({ color: 0xffe8a0, alpha: 0.06 })
+      .stroke({ width: 2, color: 0xffe8a0, alpha: 0.55 });
+  } else {
+    const r = cam.toScreenLength(FREE_RING_SECONDS * BURST_SPEED * show.reach * burstSize(s));
+    overlay.circle(pointerX, pointerY, r).stroke({ width: 1.5, color: 0xffe8a0, alpha: 0.25 + 0.08 * (s - 1) });
+  }
+  // The fuse ring: pops in over 0.15 s (from twice its size), its track dark, the burnt part gold
+  // from the top clockwise, a flickering spark at its head; pulsing white-gold once full.
+  const pop = Math.min(1, held / 0.15);
+  const R = FUSE_RING * (2 - pop);
+  overlay.circle(pointerX, pointerY, R).stroke({ width: 5, color: 0x03050c, alpha: 0.55 * pop });
+  overlay.circle(pointerX, pointerY, R).stroke({ width: 1.5, color: 0xffe8a0, alpha: 0.35 * pop });
+  const full = holds && burnt >= 1;
+  const steps = Math.max(1, Math.ceil(48 * burnt));
+  overlay.moveTo(pointerX, pointerY - R);
+  for (let k = 1; k <= steps; k++) {
+    const a = -Math.PI / 2 + (2 * Math.PI * burnt * k) / steps;
+    overlay.lineTo(pointerX + R * Math.cos(a), pointerY + R * Math.sin(a));
+  }
+  const pulse = full ? 0.75 + 0.25 * Math.sin(performance.now() / 60) : 1;
+  overlay.stroke({ width: full ? 5 : 4, color: full ? 0xffd166 : 0xffb040, alpha: pulse * pop });
+  if (full) overlay.circle(pointerX, pointerY, R + 6).stroke({ width: 2, color: 0xfff6d8, alpha: 0.8 * pulse });
+  if (!full) {
+    const a = -Math.PI / 2 + 2 * Math.PI * burnt;
+    const hx = pointerX + R * Math.cos(a),
+      hy = pointerY + R * Math.sin(a);
+    overlay.circle(hx, hy, 3.5).fill({ color: 0xfff6d8, alpha: pop });
+    for (let k = 0; k < 3; k++) {
+      const b = Math.random() * 2 * Math.PI,
+        l = 4 + 5 * Math.random();
+      overlay.moveTo(hx, hy).lineTo(hx + l * Math.cos(b), hy + l * Math.sin(b));
+    }
+    overlay.stroke({ width: 1.5, color: 0xffd27a, alpha: 0.9 * pop });
+  }
+  overlay.circle(pointerX, pointerY, 3).fill({ color: 0xffe8a0, alpha: 0.9 });
+  const text = !holds ? 'let go to launch' : full ? 'biggest burst · let go' : 'hold: a bigger burst';
+  if (chargeLabel.text !== text) chargeLabel.text = text;
+  chargeLabel.position.set(
+    Math.min(cam.width - chargeLabel.width / 2 - 4, Math.max(chargeLabel.width / 2 + 4, pointerX)),
+    Math.max(chargeLabel.height + 2, pointerY - FUSE_RING - 10),
+  );
+  chargeLabel.visible = true;
+}
+
+// ---- Misses: said where the burst was ---------------------------------------------------------------
+
+/** How long a miss is shown, s (world time). */
+const MISS_SECONDS = 1.8;
+/** The miss labels (made as needed, one per miss on screen). */
+const missTexts: Text[] = [];
+
+/** Writes "Miss" (and why) over each burst that lit nothing, rising a little and fading over MISS_SECONDS. */
+function drawMisses(world: PhysicsWorld): void {
+  const cam = renderer.camera;
+  let k = 0;
+  for (const m of misses) {
+    const age = world.time - m.time;
+    if (age < 0 || age >= MISS_SECONDS) continue;
+    if (k === missTexts.length) {
+      const t = new Text({
+        text: 'Miss\nno lantern in reach',
+        style: {
+          fontFamily: 'system-ui, sans-serif',
+          fontSize: 20,
+          fontWeight: '700',
+          fill: 0xffb4a8,
+          align: 'center',
+          stroke: { color: 0x03050c, width: 4 },
+        },
+      });
+      t.anchor.set(0.5, 0.5);
+      app.stage.addChild(t);
+      missTexts.push(t);
+    }
+    const t = missTexts[k++]!;
+    t.visible = true;
+    const f = age / MISS_SECONDS;
+    t.position.set(
+      Math.min(cam.width - t.width / 2 - 4, Math.max(t.width / 2 + 4, cam.toScreenX(m.x))),
+      Math.max(t.height / 2 + 2, cam.toScreenY(m.y) - 24 * f),
+    );
+    t.alpha = Math.min(1, (1 - f) / 0.4);
+  }
+  for (; k < missTexts.length; k++) missTexts[k]!.visible = false;
+}
+
 // ---- Pointer: press to charge, release to launch ------------------------------------------------
 
 const canvas = app.canvas;
@@ -594,6 +729,7 @@ canvas.addEventListener('pointerdown', (event) => {
   pointerId = event.pointerId;
   canvas.setPointerCapture(event.pointerId);
   pressedAt = performance.now();
+  chargeHeard = -1;
   local(event);
 });
 canvas.addEventListener('pointermove', (event) => {
@@ -767,18 +903,36 @@ function setLanternShow(on: boolean): void {
   shell.reset();
 }
 
-/** Writes the status row when it changed, and shows the Next-level button once the level is lit. */
-function updateStatus(): void {
+/** How long after a miss the hint line says why, s (world time). */
+const MISS_HINT_SECONDS = 3;
+
+/** The status row's lines for one frame, and what goes with them. */
+interface StatusFrame {
+  goal: string;
+  numbers: string;
+  hint: string;
+  /** The level shown as lit (the banner, the Next-level button). */
+  cleared: boolean;
+  last: boolean;
+}
+/**
+ * The lines computed in the last frame, and the frames drawn before it (the pacer's count). They are
+ * written once that frame has been drawn: a frame the GPU was too busy for is skipped and the canvas
+ * keeps the one before, and the row must not run ahead of the sky (it said "Lit 4/4" while the canvas
+ * still showed the shell rising). Where every frame is drawn the row follows one frame behind.
+ */
+let pendingStatus: StatusFrame | null = null;
+let pendingDrawn = -1;
+
+/** The status row's lines now: the goal, the level's tally (lanterns counted lit once their glow is full), a tip or why the last burst missed. */
+function statusFrame(): StatusFrame {
   const lv = LEVELS[run.level]!;
-  const lit = run.lit.filter(Boolean).length;
+  const time = shell.world.time;
   // Shown as lit only once every glow is full (CLEAR_DELAY after the last lantern lit).
-  const cleared = lanternShow && clearShown(run, shell.world.time);
-  if (cleared && Number.isNaN(clearShownAt)) {
-    clearShownAt = shell.world.time;
-    sound.chime(1320, 0.6);
-  }
+  const cleared = lanternShow && clearShown(run, time);
   const last = run.level === LEVELS.length - 1;
   const total = bestStars.reduce((a, b) => a + b, 0);
+  const missed = misses.length > 0 && time - misses[misses.length - 1]!.time < MISS_HINT_SECONDS;
   let goal: string, numbers: string, hint: string;
   if (!lanternShow) {
     goal = 'Free play: launch fireworks anywhere';
@@ -790,14 +944,36 @@ function updateStatus(): void {
     hint = last ? 'Play again, or try for 3 stars' : 'Fewer shells, more stars';
   } else {
     goal = `Light every lantern! · ${lv.name}`;
-    numbers = `Level ${run.level + 1}/${LEVELS.length} · Lit ${lit}/${run.lit.length} · Shells ${run.shells} · Par ${lv.par}`;
-    hint = `${touch ? 'Tap' : 'Click'} ${lv.tip}`;
+    numbers = `Level ${run.level + 1}/${LEVELS.length} · Lit ${shownLit(run, time)}/${run.lit.length} · Shells ${run.shells} · Par ${lv.par}`;
+    hint = missed ? 'Missed · a lantern must be inside the ring' : `${touch ? 'Tap' : 'Click'} ${lv.tip}`;
+  }
+  return { goal, numbers, hint, cleared, last };
+}
+
+/** Writes `f` to the status row when it changed, and shows the Next-level button (with its chime) once the level is lit. */
+function writeStatus(f: StatusFrame): void {
+  if (f.cleared && Number.isNaN(clearShownAt)) {
+    clearShownAt = shell.world.time;
+    sound.chime(1320, 0.6);
   }
   const mode = lanternShow ? 'Free play' : 'Lantern show';
   if (modeButton.textContent !== mode) modeButton.textContent = mode;
-  if (status.set({ goal, numbers, hint }, cleared)) setAction(cleared, last ? 'Play again ▶' : 'Next level ▶');
+  if (status.set({ goal: f.goal, numbers: f.numbers, hint: f.hint }, f.cleared))
+    setAction(f.cleared, f.last ? 'Play again ▶' : 'Next level ▶');
 }
-updateStatus();
+
+/**
+ * Each frame: writes the lines computed in the frame before if that frame was drawn, and computes
+ * this frame's (written at once when `now`: the page's start).
+ */
+function updateStatus(now = false): void {
+  const drawn = game.pacer.drawn;
+  if (pendingStatus && drawn !== pendingDrawn) writeStatus(pendingStatus);
+  pendingStatus = statusFrame();
+  pendingDrawn = drawn;
+  if (now) writeStatus(pendingStatus);
+}
+updateStatus(true);
 
 // ---- Test and console hooks on window.game ----------------------------------------------------
 
@@ -833,7 +1009,15 @@ shell.expose({
     litAt: run.litAt.slice(),
     clearShownAt,
     glow: glowShown.slice(0, run.lit.length),
+    /** Lanterns the row counts as lit now (their glow full), and the bursts that lit nothing since the level started. */
+    shownLit: shownLit(run, shell.world.time),
+    misses: missCount,
   }),
+  /**
+   * The press being charged: whether a press is down, the charge sounds played for it (-1 none, 0 the
+   * fuse lit, 1 to 3 each third of the longest hold) and the label over its fuse ring ('' when none).
+   */
+  charge: () => ({ pressed: pointerId !== -1, heard: chargeHeard, label: chargeLabel.visible ? chargeLabel.text : '' }),
   /** Starts level `i` (0-based) of the lantern show with a fresh sky. @throws RangeError on an unknown level. */
   playLevel: (i: number): void => {
     if (!(Number.isInteger(i) && i >= 0 && i < LEVELS.length))

@@ -4,9 +4,9 @@
  * auto-show. The page (main.ts) adds input, the panel and the renderer.
  *
  * Physics (all SI, y up):
- * - A shell is a body (1 kg) launched from the ground and timed to burst at the target `FUSE` (2 s)
+ * - A shell is a body (1 kg) launched from the ground and timed to burst at the target `FUSE` (1.2 s)
  *   after launch, so a tap answers quickly whatever the height. A target low enough for a drag-free
- *   parabola to peak there within FUSE (h <= g FUSE^2 / 2, 19.6 m) gets that parabola: v_y =
+ *   parabola to peak there within FUSE (h <= g FUSE^2 / 2, 7.1 m: lower than any target) gets that parabola: v_y =
  *   sqrt(2 g h), fuse T = v_y / g, v_x = dx / T (Ramtal and Dobre ch. 4, projectiles). A higher one
  *   is launched faster and slowed by linear air drag F = -c m v (Ramtal and Dobre ch. 7), c chosen
  *   so that the apex comes at FUSE, as a real shell decelerates to its apex (`shellFlight`; c is
@@ -81,17 +81,19 @@ export const MAX_SHELLS = 64;
 export const BURST_SPARKS_PER_STEP = 2000;
 
 /**
- * Time from launch to burst of a shell aimed higher than g FUSE^2 / 2 (19.6 m), s: a tap bursts
- * about this long after it at every height (lower targets peak sooner, 1.5 s at the lowest).
+ * Time from launch to burst of a shell aimed higher than g FUSE^2 / 2 (7.1 m), s: a tap bursts this
+ * long after it at every height the show aims at (targets start 12 m up). 1.2 s: at 2 s the shells
+ * felt slow to players; a real shell's climb is slower still, but a game's tap must answer.
  */
-export const FUSE = 2;
+export const FUSE = 1.2;
 
 /**
- * Largest linear drag rate c = k / m of a shell, 1/s: enough for a 400 m apex in FUSE at 9.81 m/s^2;
- * beyond it (a weak gravity) the shell bursts at the target still rising. Kept well below the
- * engine's stiff limit (c dt < 0.25) so the drag stays an explicit force the launch can solve for.
+ * Largest linear drag rate c = k / m of a shell, 1/s: enough for a 400 m apex in FUSE at 9.81 m/s^2
+ * (a 160 m sky needs 5); beyond it (a weak gravity) the shell bursts at the target still rising.
+ * Kept well below the engine's stiff limit (c dt < 0.25; 0.1 at 60 steps a second) so the drag
+ * stays an explicit force the launch can solve for.
  */
-export const SHELL_DRAG_MAX = 4;
+export const SHELL_DRAG_MAX = 6;
 
 /**
  * Width of the sky, m, in which a burst has its nominal size (BURST_SPEED, the drag option): a
@@ -448,7 +450,7 @@ export function createFireworks(options: FireworksOptions = {}): { world: Physic
 }
 
 /**
- * Launches a shell from the ground towards (targetX, targetY), m, where it bursts FUSE (2 s) later
+ * Launches a shell from the ground towards (targetX, targetY), m, where it bursts FUSE (1.2 s) later
  * at the apex of its flight, or sooner for a low target (see `shellFlight`). The target is clamped
  * into the show's sky, `params.sky`: x in [4, width - 4], y in [12, height - 3]. The launch point is
  * on the ground between the middle of the sky and the target, jittered. The burst's size follows

@@ -1,11 +1,13 @@
 /**
  * Bouncing balls in headless Chromium: the hoop game (the goal shown above the box at once, a throw through
- * the hoop scores and is kept as the best, a ball thrown up from under the hoop stops at its net, the
- * aiming arc bounces off a wall, time up offers Play again over the top of the box; a pull on a phone
- * shows the aiming arc, throws and starts the clock), the court's looks (no trails, no plain physics
- * walls), and the sandbox: a click and a slingshot pull
- * spawn balls (a quick pull that starts on a ball throws too), holding still on a ball drags it, P pauses (nothing moves while
- * paused, motion resumes after), N advances exactly one step, R rebuilds the same seeded scene.
+ * the hoop scores, is celebrated (the row says so and its score bumps, "+1" and praise over the hoop)
+ * and is kept as the best, a ball thrown up from under the hoop stops at its net, the aiming arc
+ * bounces off a wall, time up offers Play again over the top of the box; on a phone a tap leaves the
+ * clock waiting and a pull shows the aiming arc, throws and starts the clock), the court's looks (no
+ * trails, no plain physics walls), and the sandbox: a click (which starts no clock) and a slingshot
+ * pull spawn balls (a pull that starts on a ball throws too, at once or after half a second held
+ * still), holding still on a ball for 1 s drags it, P pauses (nothing moves while paused, motion
+ * resumes after), N advances exactly one step, R rebuilds the same seeded scene.
  * The tests share one page with a small ball count (?count=8); before each, the game is reset
  * (window.game.reset(), unpaused) and the page's error list emptied, so each starts from the
  * same seeded scene.
@@ -93,7 +95,7 @@ describe('bouncing balls', () => {
     expect(g.errors).toEqual([]);
   });
 
-  it('a click adds exactly one ball, drawn on the next frame', async () => {
+  it('a click adds exactly one ball, drawn on the next frame, and does not start the hoop clock', async () => {
     const g = await open();
     const before = await g.stats();
     await g.clickCanvas(0.5, 0.45);
@@ -106,6 +108,8 @@ describe('bouncing balls', () => {
     const b = await balls(g);
     expect(b.ids.length).toBe(COUNT + 1);
     expect(b.shown).toBe(COUNT + 1);
+    // Only a throw starts the round: a click (meant to close a menu, say) cost the player time.
+    expect(await g.page.evaluate(() => (window.game as unknown as HoopGame).round())).toMatchObject({ phase: 'ready', shots: 0 });
     expect(g.errors).toEqual([]);
   });
 
@@ -269,7 +273,7 @@ describe('bouncing balls', () => {
     expect(await g.page.locator('.bp-side').isVisible()).toBe(false);
   });
 
-  it('a quick pull that starts on a ball throws; holding still on a ball picks it up (a mouse joint, no ball added), and release lets go', async () => {
+  it('a pull that starts on a ball throws, at once or after half a second held still; holding still on a ball for 1 s picks it up (a mouse joint, no ball added), and release lets go', async () => {
     const g = await open();
     // Paused while the ball is found and pressed (a loaded machine let it fall out from under the pointer).
     await g.press('p');
@@ -304,7 +308,22 @@ describe('bouncing balls', () => {
       return game.positions().slice(0, 2);
     }, COUNT);
     expect(thrown).toEqual([start.x, start.y]);
-    // Held still on the ball: the hold (0.45 s) hands the pointer to the drag.
+    // Pressed on the ball and held still half a second (aiming), then pulled: still a throw (a hold
+    // of 0.45 s picked balls up from players who meant to throw).
+    await g.page.mouse.move(from.x, from.y);
+    await g.page.mouse.down();
+    await g.page.waitForTimeout(500);
+    await g.page.mouse.move(side.x, side.y, { steps: 3 });
+    await g.page.mouse.up();
+    const aimed = await g.waitFor((n) => {
+      const game = window.game as unknown as BallsGame & { remove(id: number): void; drag: { joint: number } };
+      const ids = game.ballIds();
+      if (ids.length !== n + 1) return null;
+      game.remove(ids.at(-1)!);
+      return { first: game.positions().slice(0, 2), joint: game.drag.joint };
+    }, COUNT);
+    expect(aimed).toEqual({ first: [start.x, start.y], joint: 0 });
+    // Held still on the ball: the hold (1 s) hands the pointer to the drag.
     await g.page.mouse.move(from.x, from.y);
     await g.page.mouse.down();
     const held = await g.waitFor(() => (window.game as unknown as { drag: { joint: number } }).drag.joint || null, null);
@@ -385,7 +404,7 @@ describe('bouncing balls: the hoop game', () => {
     await h?.close();
   });
 
-  it('desktop 1280 x 800: the goal shows above the box; a throw through the hoop scores, moves the hoop and is kept as the best; time up offers Play again', async () => {
+  it('desktop 1280 x 800: the goal shows above the box; a throw through the hoop scores, is celebrated, moves the hoop and is kept as the best; time up offers Play again', async () => {
     const g = await h.openGame('bouncing-balls', { viewport: { width: 1280, height: 800 }, query: { count: 8, round: 6 } });
     const status = g.page.locator('[data-hud="hoop"]');
     await expect.poll(() => status.isVisible()).toBe(true);
@@ -420,8 +439,10 @@ describe('bouncing balls: the hoop game', () => {
       });
       score = await g.waitFor(
         (start) => {
-          const game = window.game as unknown as HoopGame & { world: { time: number } };
+          const game = window.game as unknown as HoopGame & { world: { time: number }; paused: boolean };
           const n = game.round().score;
+          // Paused at the basket, so its celebration is read before it ends.
+          if (n > 0) game.paused = true;
           return n > 0 ? n : game.world.time > start + 1.7 ? -1 : 0;
         },
         t0,
@@ -430,6 +451,21 @@ describe('bouncing balls: the hoop game', () => {
       if (score < 0) score = 0;
     }
     expect(score).toBe(1);
+    // The basket is celebrated: the status row says so and its score line bumps; over the old
+    // hoop, "+1" and a word of praise (before, a small +1 and a ring for 0.8 s were all).
+    const cheer = await g.waitFor(() => {
+      const game = window.game as unknown as HoopGame & {
+        app: { stage: { children: { label: string; visible: boolean; text?: string }[] } };
+      };
+      const texts = game.app.stage.children.filter((c) => c.visible && typeof c.text === 'string').map((c) => c.text);
+      const numbers = document.querySelector('[data-hud="hoop"] [data-hud="numbers"]')!;
+      return /Basket! 1 so far/.test(game.statusText()) ? { texts, bump: numbers.classList.contains('bb-bump') } : null;
+    }, null);
+    expect(cheer.bump).toBe(true);
+    expect(cheer.texts).toEqual(expect.arrayContaining(['+1', 'Basket!']));
+    await g.page.evaluate(() => {
+      (window.game as unknown as { paused: boolean }).paused = false;
+    });
     const after = await g.page.evaluate(() => ({
       hoop: (window.game as unknown as HoopGame).hoop(),
       best: (window.game as unknown as HoopGame).best(),
@@ -499,7 +535,7 @@ describe('bouncing balls: the hoop game', () => {
     await g.close();
   });
 
-  it('phone 390 x 844, touch: the goal shows above the box; a pull from below the line shows the arc, throws a ball up and away and starts the clock', async () => {
+  it('phone 390 x 844, touch: the goal shows above the box; a tap does not start the clock; a pull from below the line shows the arc, throws a ball up and away and starts the clock', async () => {
     const g = await h.openGame('bouncing-balls', { viewport: { width: 390, height: 844 }, touch: true, query: { count: 8 } });
     const status = g.page.locator('[data-hud="hoop"]');
     await expect.poll(() => status.isVisible()).toBe(true);
@@ -511,6 +547,11 @@ describe('bouncing balls: the hoop game', () => {
     const card = (await g.page.locator('[data-hud="touch-hint"]').boundingBox())!;
     expect(card.y).toBeGreaterThanOrEqual(top.y - 1);
     expect(card.y + card.height).toBeLessThan((await g.worldToPage(0, 12)).y);
+    // A tap drops a ball and leaves the clock waiting for the first throw.
+    const tap = await g.worldToPage(5, 13);
+    await g.page.touchscreen.tap(tap.x, tap.y);
+    await g.waitFor((n) => (window.game as unknown as HoopGame).ballIds().length === n + 1, 8);
+    expect(await g.page.evaluate(() => (window.game as unknown as HoopGame).round())).toMatchObject({ phase: 'ready', shots: 0 });
     const n0 = await g.page.evaluate(() => (window.game as unknown as HoopGame).ballIds().length);
     // Pressed 4 m above the floor, left of the box's middle, and pulled down and to the left: while
     // pulling, the dotted arc rises to the right from the press point; let go, the ball flies that way.

@@ -13,6 +13,7 @@ import {
   countShell,
   GLOW_RISE,
   glowOf,
+  HOT_FRACTION,
   isTall,
   type Lantern,
   LEVELS,
@@ -20,11 +21,14 @@ import {
   lanternRadius,
   lanternsOf,
   lightFromSparks,
+  shownLit,
   sparkReach,
   starAt,
   starsFor,
   startLevel,
+  startWatch,
   TALL_BAND_MIDDLE,
+  watchBursts,
 } from '../../games/fireworks/lanterns';
 import { burstScale, createFireworks, FUSE, launchShell, MAX_HOLD, stepFireworks } from '../../games/fireworks/show';
 
@@ -35,21 +39,29 @@ const desktop = { width: 120, height: 80 };
 
 /**
  * Fires one shell of level `level`'s kind towards (x, y), m, held `hold` s, in a fresh show of the
- * phone's sky (and one more towards each point of `more`), and runs 5 s (the burst at 2 s, its
- * stars cold by 4.5 s) lighting lanterns as the page does. @returns which lanterns are lit.
+ * phone's sky (and one more towards each point of `more`), and runs 4 s (the burst at FUSE, 1.2 s,
+ * its stars cold by 3.5 s) lighting lanterns and watching the bursts as the page does.
+ * @returns which lanterns are lit, when each lit (world time, s), and the misses (bursts that lit nothing) with the world time each was known.
  */
-function fire(level: number, x: number, y: number, hold: number, ...more: [number, number][]): boolean[] {
+function fireWatched(level: number, x: number, y: number, hold: number, ...more: [number, number][]) {
   const { world, show } = createFireworks({ sky: phone, opening: 0, autoShow: false, generations: 1, seed: 5 });
   const run = startLevel(level, 0);
+  const watch = startWatch(show);
   for (const [px, py] of [[x, y], ...more]) {
     expect(launchShell(world, show, px!, py!, hold, LEVELS[level]!.shell)).toBeGreaterThan(0);
     countShell(run);
   }
-  for (let i = 0; i < 300; i++) {
+  const misses: { x: number; y: number; time: number; until: number }[] = [];
+  for (let i = 0; i < 240; i++) {
     stepFireworks(world, show);
-    lightFromSparks(world, show, run);
+    const lit = lightFromSparks(world, show, run);
+    for (const m of watchBursts(watch, show, run, lit, world.time)) misses.push({ x: m.x, y: m.y, time: world.time, until: m.until });
   }
-  return run.lit;
+  return { lit: run.lit, litAt: run.litAt, misses, run };
+}
+/** Which lanterns `fireWatched` lights. */
+function fire(level: number, x: number, y: number, hold: number, ...more: [number, number][]): boolean[] {
+  return fireWatched(level, x, y, hold, ...more).lit;
 }
 
 describe('lantern rules', () => {
@@ -184,14 +196,29 @@ describe('lantern rules', () => {
 });
 
 describe('real shells in the show (64 m x 108 m phone sky, 300 stars a burst)', () => {
-  it('level 1: a shell fired at a lone lantern lights it and no other; one 0.3 W above it lights nothing; one right between the close pair lights both', () => {
+  it('level 1: a shell fired at a lone lantern lights it and no other; one 0.3 W above it lights nothing and is a miss once its stars are cold; one right between the close pair lights both; the row counts a lantern once its glow is full', () => {
     const ls = lanternsOf(0, phone);
     const [x, y] = lanternAt(ls[0]!, phone, 0);
     const [a, b] = [lanternAt(ls[1]!, phone, 0), lanternAt(ls[2]!, phone, 0)];
     const [fx, fy] = lanternAt(ls[3]!, phone, 0);
     // Three shells in one show, far enough apart not to reach each other's lanterns: lantern 0 lit,
     // the pair lit by the one between them, lantern 3 (the shell 0.3 W above it) not.
-    expect(fire(0, x, y, 0, [(a[0] + b[0]) / 2, (a[1] + b[1]) / 2], [fx, fy + 0.3 * phone.width])).toEqual([true, true, true, false]);
+    const r = fireWatched(0, x, y, 0, [(a[0] + b[0]) / 2, (a[1] + b[1]) / 2], [fx, fy + 0.3 * phone.width]);
+    expect(r.lit).toEqual([true, true, true, false]);
+    // One miss, the shell over lantern 3 (it bursts on its target), said once its hot stars (40 % of
+    // a peony star's longest life, 2.2 s) are cold: the step after FUSE + 0.88 s.
+    expect(r.misses.length).toBe(1);
+    const m = r.misses[0]!;
+    expect(Math.hypot(m.x - fx, m.y - (fy + 0.3 * phone.width))).toBeLessThan(0.1);
+    expect(m.until).toBeCloseTo(FUSE + HOT_FRACTION * 2.2, 1);
+    expect(m.time).toBeGreaterThan(m.until);
+    expect(m.time).toBeLessThan(m.until + 1.5 / 60);
+    // "Lit n/4" counts a lantern only once its glow is full (GLOW_RISE after it lit).
+    const first = Math.min(...r.litAt.filter((t) => !Number.isNaN(t)));
+    expect(shownLit(r.run, first)).toBe(0);
+    expect(shownLit(r.run, first + GLOW_RISE - 0.02)).toBe(0);
+    expect(shownLit(r.run, first + GLOW_RISE)).toBeGreaterThanOrEqual(1);
+    expect(shownLit(r.run, 100)).toBe(3);
   });
   it("level 3: a shell fired at each drifting lantern's ghost (where it will be after the fuse, as the page draws it) lights it; one fired at the lantern does not", () => {
     const ls = lanternsOf(2, phone);

@@ -2,7 +2,7 @@
  * The fireworks show without a page (games/fireworks/show.ts): launches reach their target, burst
  * into as many sparks as the hold asks for, the sparks fall, fade and expire; generations; a long
  * auto-show stays within the world's capacity; the same seed replays the same show. A shell bursts on
- * its target about FUSE (2 s) after launch at any height; bursts grow with the sky's width and the
+ * its target FUSE (1.2 s) after launch at any height; bursts grow with the sky's width and the
  * hold; a player's launch holds the auto-show for PLAYER_PAUSE.
  */
 
@@ -25,6 +25,7 @@ import {
   PLAYER_PAUSE,
   pauseAutoShow,
   resolveFireworksOptions,
+  SHELL_DRAG_MAX,
   SKY,
   setAutoShow,
   setShowDrag,
@@ -269,7 +270,7 @@ describe('the show', () => {
     expect(() => launchShell(world, show, Number.NaN, 3)).toThrow(/target must be finite/);
   });
 
-  test('with zero gravity a shell flies straight to its target and bursts there after 2 s', () => {
+  test('with zero gravity a shell flies straight to its target and bursts there after FUSE (1.2 s)', () => {
     const { world, show } = createFireworks({ opening: 0, gravity: 0, generations: 1, seed: 2 });
     launchShell(world, show, 30, 40, 0);
     let steps = 0;
@@ -277,7 +278,7 @@ describe('the show', () => {
       stepFireworks(world, show);
       steps++;
     }
-    expect(steps).toBe(120);
+    expect(steps).toBe(Math.round(FUSE / world.dt));
     const at = sparkCentre(world, show);
     expect(at[0]).toBeCloseTo(30, 6);
     expect(at[1]).toBeCloseTo(40, 6);
@@ -299,7 +300,7 @@ describe('quick response: the fuse', () => {
     return { seconds: steps * world.dt, at: sparkCentre(world, show), speed };
   };
 
-  test('a shell aimed anywhere in a desktop or phone sky bursts on its target 1.5 to 2 s after launch, near its apex', () => {
+  test('a shell aimed anywhere in a desktop or phone sky bursts on its target FUSE (1.2 s) after launch, at its apex', () => {
     for (const sky of [
       { width: 120, height: 124 }, // desktop, 1280 x 800
       { width: 64, height: 125 }, // phone held upright, 390 x 844
@@ -307,10 +308,10 @@ describe('quick response: the fuse', () => {
       for (const y of [12, 16, 25, 40, 70, 100, sky.height - 3]) {
         const x = 0.3 * sky.width;
         const f = flight(sky, x, y);
-        // The old apex-of-a-parabola flight took sqrt(2 y / g): 3.6 s at 65 m, 4.9 s at 121 m.
-        expect(f.seconds).toBeLessThanOrEqual(FUSE + 1e-9);
-        expect(f.seconds).toBeGreaterThan(1.5);
-        if (y - 0.5 > 0.5 * 9.81 * FUSE * FUSE) expect(f.seconds).toBeCloseTo(FUSE, 9);
+        // A drag-free apex-of-a-parabola flight takes sqrt(2 y / g): 3.6 s at 65 m, 4.9 s at 121 m.
+        // Every target the show aims at (12 m up or more) is above g FUSE^2 / 2, so bursts FUSE later.
+        expect(y - 0.5).toBeGreaterThan(0.5 * 9.81 * FUSE * FUSE);
+        expect(f.seconds).toBeCloseTo(FUSE, 9);
         // On target to a few cm (the launch is solved on the integrator's own recursion)...
         expect(Math.hypot(f.at[0] - x, f.at[1] - y)).toBeLessThan(0.05);
         // ...and at the apex: the sparks do not inherit a climb (one step's g dt, plus rounding).
@@ -321,16 +322,16 @@ describe('quick response: the fuse', () => {
 
   test('shellFlight: drag only above g FUSE^2 / 2, capped at SHELL_DRAG_MAX (then it bursts still rising); zero gravity flies straight', () => {
     const h = 1 / 60;
-    expect(shellFlight(9.81, 15, h).drag).toBe(0);
-    expect(shellFlight(9.81, 15, h).fuse).toBeCloseTo(Math.sqrt(30 / 9.81), 12);
+    expect(shellFlight(9.81, 5, h).drag).toBe(0);
+    expect(shellFlight(9.81, 5, h).fuse).toBeCloseTo(Math.sqrt(10 / 9.81), 12);
     const high = shellFlight(9.81, 120, h);
     expect(high.drag).toBeGreaterThan(1);
     expect(high.fuse).toBeCloseTo(FUSE, 12);
-    expect(shellFlight(0, 50, h)).toEqual({ fuse: FUSE, vy: 25, perMetreX: 0.5, drag: 0 });
+    expect(shellFlight(0, 50, h)).toEqual({ fuse: FUSE, vy: 50 / FUSE, perMetreX: 1 / FUSE, drag: 0 });
     // Weak gravity: the apex would need more drag than the cap; the shell reaches 100 m rising.
     const weak = createFireworks({ opening: 0, generations: 1, sparks: 50, gravity: 0.3, seed: 3, sky: { width: 120, height: 124 } });
     const e = slotOf(launchShell(weak.world, weak.show, 60, 100.5, 0));
-    expect(weak.world.components.LinearDrag.k[e]).toBe(4);
+    expect(weak.world.components.LinearDrag.k[e]).toBe(SHELL_DRAG_MAX);
     let vy = 0;
     while (weak.show.bursts === 0) {
       vy = weak.world.components.Velocity.y[e]!;
@@ -371,8 +372,10 @@ describe('burst size', () => {
     for (const width of [BURST_REFERENCE_WIDTH, 120]) {
       const ratio = radius(width, MAX_HOLD) / radius(width, 0);
       // The drag scales with the size factor, so the burst's radius follows it (1.44 at the
-      // longest hold; speeds x 1.44 under the same drag would give about 1.25).
-      expect(ratio).toBeGreaterThan(1.33);
+      // longest hold; speeds x 1.44 under the same drag would give about 1.25). Measured over seeds
+      // 31 to 35: 1.32 to 1.38 in the phone's sky (gravity's pull on the stars, the same for both
+      // bursts, weighs more in the smaller one), 1.36 to 1.43 in the desktop's.
+      expect(ratio).toBeGreaterThan(1.3);
       expect(ratio).toBeLessThan(1.55);
     }
     expect(() => burstSize(0.5)).toThrow(/burstSize: scale must be a finite number >= 1, got 0.5/);
