@@ -275,6 +275,33 @@ describe('phone controls', () => {
       expect(gauge.x - gauge.r).toBeGreaterThanOrEqual(0);
       expect(gauge.x + gauge.r).toBeLessThanOrEqual(panel.w);
     }
+    // Ring 2's tip names the stick, not a key: put back level 40 m before ring 1, on its line and
+    // flying along it, the aircraft passes it, and the tip says to push the stick to the side.
+    await g.page.evaluate(() => {
+      type Store = { x: Float64Array; y: Float64Array; z: Float64Array };
+      const w = window.game as unknown as {
+        rings(): { x: number; y: number; z: number }[];
+        aircraftBody(): number;
+        world: { components: { Position: Store; Velocity: Store; AngularVelocity: Store; Orientation: Store & { w: Float64Array } } };
+      };
+      const r = w.rings()[0]!,
+        c = w.world.components,
+        e = w.aircraftBody();
+      const speed = Math.hypot(c.Velocity.x[e]!, c.Velocity.y[e]!, c.Velocity.z[e]!);
+      c.Position.x[e] = r.x - 40;
+      c.Position.y[e] = r.y;
+      c.Position.z[e] = r.z;
+      c.Velocity.x[e] = speed;
+      c.Velocity.y[e] = 0;
+      c.Velocity.z[e] = 0;
+      c.AngularVelocity.x[e] = c.AngularVelocity.y[e] = c.AngularVelocity.z[e] = 0;
+      c.Orientation.x[e] = c.Orientation.y[e] = c.Orientation.z[e] = 0;
+      c.Orientation.w[e] = 1;
+    });
+    const tip = await g.waitFor(() => (window.game as unknown as { tip(): string }).tip() || null, null);
+    expect(tip).toMatch(
+      /^Ring 2 is to the (left|right)\. A plane turns by tipping its wings \(banking\): push the stick \1 and it leans and turns \1; let go to fly straight\.$/,
+    );
     expect(g.errors).toEqual([]);
     await g.close();
   });

@@ -352,7 +352,7 @@ describe('projects', () => {
 
   it('flight-simulator: the ring label sits clear of the path marker; the cockpit view has a canopy and an instrument panel whose gauges read the instruments and whose attitude indicator follows the bank; the ring label stays in view', async () => {
     const g = await h.openGame('flight-simulator');
-    type Pointer = { index: number; inView: boolean; text: string; box: number[] };
+    type Pointer = { index: number; inView: boolean; text: string; box: number[]; ring: number[] };
     type Panel = {
       visible: boolean;
       panelTop: number;
@@ -378,11 +378,17 @@ describe('projects', () => {
       const w = window.game as unknown as Att;
       const m = w.pathMarker(),
         p = w.ringPointer();
-      return m.visible && p.inView ? { m, box: p.box } : null;
+      return m.visible && p.inView ? { m, box: p.box, ring: p.ring } : null;
     }, null);
     const [lx, ly, lw, lh] = aim.box as [number, number, number, number];
     const overlaps = lx < aim.m.x + 17 && aim.m.x - 17 < lx + lw && ly < aim.m.y + 10 && aim.m.y - 10 < ly + lh;
     expect(overlaps, `label ${aim.box} marker ${aim.m.x}, ${aim.m.y}`).toBe(false);
+    // Nor does it cover the ring it labels, a few hundred metres off and small on the screen: its box
+    // stays outside the ring's outer edge (the pulsing halo's; the label sat over it, 8 px in at 470 m).
+    const [cx, cy, rr] = aim.ring as [number, number, number];
+    expect(rr).toBeLessThan(150);
+    const gap = Math.hypot(Math.max(Math.abs(lx + lw / 2 - cx) - lw / 2, 0), Math.max(Math.abs(ly + lh / 2 - cy) - lh / 2, 0)) - rr;
+    expect(gap, `label ${aim.box} ring ${aim.ring}`).toBeGreaterThanOrEqual(0);
     expect(await g.page.evaluate(() => (window.game as unknown as Att).attitude().visible)).toBe(false);
     await g.press('c');
     await g.waitFor(() => (window.game as unknown as Att).attitude().visible, null);
@@ -574,6 +580,21 @@ describe('projects', () => {
     }, null);
     expect(passed.status).toBe('passed');
     expect(passed.banner).toBe('Ring 1 ✓');
+    // Ring 2, the first turn, comes with a tip over the scene in plain words: which side it is on
+    // (the side the course lays it, from the aircraft's heading), that a plane turns by tipping its
+    // wings, and the key for it.
+    const tip = await g.waitFor(() => {
+      const w = window.game as unknown as Flight & { tip(): string };
+      const r = w.rings()[1]!,
+        c = w.world.components,
+        e = w.aircraftBody();
+      const right = (r.x - c.Position.x[e]!) * -c.Velocity.z[e]! + (r.z - c.Position.z[e]!) * c.Velocity.x[e]! > 0;
+      return w.tip() ? { text: w.tip(), side: right ? 'right' : 'left' } : null;
+    }, null);
+    expect(tip.text).toBe(
+      `Ring 2 is to the ${tip.side}. A plane turns by tipping its wings (banking): hold ${tip.side === 'right' ? '→' : '←'} and it leans and turns ${tip.side}; let go to fly straight.`,
+    );
+    expect(await g.page.locator('[data-hud="tip"]').isVisible()).toBe(true);
     // Then put 150 m before ring 2 but 100 m above its centre (its radius is 55 m): a miss, counted
     // once, with its banner.
     await g.page.evaluate(() => {
@@ -591,6 +612,10 @@ describe('projects', () => {
     }, null);
     // The miss costs 10 s, said at once in the banner, and the course clock above the scene adds it.
     expect(missed).toEqual({ missed: 1, banner: 'Missed ring 2 · +10 s' });
+    // Ring 3, a climb or a dive: its tip says which and which key.
+    expect(await g.page.evaluate(() => (window.game as unknown as { tip(): string }).tip())).toMatch(
+      /^Ring 3 is (higher: hold ↑ to climb|lower: hold ↓ to dive) gently, and let go to fly level\.$/,
+    );
     await g.waitFor(() => document.querySelector('[data-hud="goal"]')?.textContent?.includes('(+10 s)'), null);
     await g.page.evaluate(() => {
       const w = window.game as unknown as Flight;
