@@ -1461,7 +1461,7 @@ const BURN_WORDS: Record<BurnDirection, string> = {
   out: 'away from the Sun',
   in: 'towards the Sun',
 };
-const times = (n: number): string => (n === 1 ? 'once' : `${n} times`);
+const times = (n: number): string => (n === 1 ? 'once' : n === 2 ? 'twice' : `${n} times`);
 /** The hints (./advice.ts), the forecast they were worked out for, and when (performance.now(), ms). */
 const aimAdvice = createAimAdvice();
 const burnAdvice = createBurnAdvice();
@@ -1586,7 +1586,7 @@ function updateStatus(force = false): void {
     if (flight.state === 'arrived') {
       const s = starsFor(m, flight.aim.speed + flight.fuelUsed);
       line = `✓ Arrived at ${m.target} after ${Math.round(flight.elapsed)} days! ${starText(s)} (${flight.aim.speed.toFixed(1)} km/s launch${burns}; 3 stars up to ${m.stars3} km/s in all)`;
-      if (missionIndex === MISSIONS.length - 1) line += ` · All missions flown: ${total} of ${3 * MISSIONS.length} stars`;
+      if (best.every((b) => b > 0)) line += ` · All missions flown: ${total} of ${3 * MISSIONS.length} stars`;
       cls = 'won';
     } else if (flight.state === 'sun') {
       line = '✗ The probe fell into the Sun.';

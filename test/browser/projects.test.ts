@@ -75,7 +75,7 @@ describe('projects', () => {
     expect(await g.page.evaluate(() => (window.game as unknown as Solar).mission().plan.hit)).toBe(false);
     expect(await g.page.locator('[data-hud="plan"]').textContent()).toMatch(/ → ✗ /);
     await g.waitFor(
-      () => /^Speed up by 0\.2 km\/s \(press ↑ 2 times\)/.test(document.querySelector('[data-hud="hint"]')?.textContent ?? ''),
+      () => /^Speed up by 0\.2 km\/s \(press ↑ twice\)/.test(document.querySelector('[data-hud="hint"]')?.textContent ?? ''),
       null,
     );
     // Paused (P), the aim still moves the forecast: up twice more, and the line says it arrives, in
