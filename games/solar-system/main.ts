@@ -203,12 +203,23 @@ function createWorld(): PhysicsWorld {
 const TICK = 1 / 60;
 
 /**
+ * How long a flight's time runs slow after a burn, ms, and how slow (a share of its rate): a player
+ * tapping a burn the hint asks for six times takes two seconds, 50 days of a flight to Mars, and the
+ * later burns did less than the hint (worked out for burns now) said.
+ */
+const BURN_SLOW_MS = 800;
+const BURN_SLOW = 0.2;
+
+/**
  * Days per real second now: the aiming rate (WAIT_RATE or 4 times it while Wait is held), a flight's
- * rate (3 times it while held, at most 400), nothing after a flight ends.
+ * rate (3 times it while held, at most 400; BURN_SLOW of it just after a burn), nothing after a flight ends.
  */
 function currentRate(): number {
   if (phase === 'done') return 0;
-  if (phase === 'flight') return waiting ? Math.min(400, 3 * flightDaysPerSecond) : flightDaysPerSecond;
+  if (phase === 'flight') {
+    const rate = waiting ? Math.min(400, 3 * flightDaysPerSecond) : flightDaysPerSecond;
+    return performance.now() - lastBurn < BURN_SLOW_MS ? BURN_SLOW * rate : rate;
+  }
   return waiting ? Math.max(WAIT_RATE, 4 * params.rate) : params.rate;
 }
 
