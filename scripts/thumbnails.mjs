@@ -1,8 +1,9 @@
 // `npm run thumbnails [-- folder[?query] ...] [-- --seconds=1.5]`: opens each registered game (or the
 // named folders, each with the URL query given after it, e.g. `black-hole?level=4` for a level with
-// more to see) in headless Chromium at 640x400, waits for its ready flag plus 1.5 s of simulated play,
-// and writes a screenshot of its canvas (HUD and panels hidden) to games/<folder>/thumbnail.png.
-import { statSync, writeFileSync } from 'node:fs';
+// more to see; without one, the "thumbnailQuery" of the game's game.json, if any) in headless
+// Chromium at 640x400, waits for its ready flag plus 1.5 s of simulated play, and writes a
+// screenshot of its canvas (HUD and panels hidden) to games/<folder>/thumbnail.png.
+import { readFileSync, statSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { launchChromium, readRegistry, repoRoot, startSite } from '../test/browser/chromium.mjs';
 
@@ -20,6 +21,12 @@ const registry = await readRegistry();
 const named = args.filter((a) => !a.startsWith('--'));
 const wanted = named.map((a) => a.split('?')[0]);
 const queryOf = new Map(named.map((a) => [a.split('?')[0], a.includes('?') ? a.slice(a.indexOf('?')) : '']));
+// A game whose time waits for the player (the solar system while aiming) names a query that plays.
+for (const { folder } of registry)
+  if (!queryOf.get(folder)) {
+    const { thumbnailQuery } = JSON.parse(readFileSync(join(repoRoot, 'games', folder, 'game.json'), 'utf8'));
+    if (typeof thumbnailQuery === 'string') queryOf.set(folder, thumbnailQuery);
+  }
 for (const folder of wanted) {
   if (!registry.some((e) => e.folder === folder)) {
     console.error(`${folder} is not a registered game (games/${folder}/ needs main.ts, index.html and game.json)`);

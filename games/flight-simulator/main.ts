@@ -651,8 +651,12 @@ ringPointer.dataset.hud = 'ring-pointer';
 const ringAt = new Vector3(),
   rimAt = new Vector3(),
   camUp = new Vector3();
-/** What the pointer shows (tests): the ring's index (-1: none left), whether it is in view, the text, its box in the stage (px). */
-const ringAim = { index: -1, inView: false, text: '', box: [0, 0, 0, 0] };
+/**
+ * What the pointer shows (tests): the ring's index (-1: none left), whether it is in view, the text,
+ * its box in the stage (px: left, top, width, height) and, in view, the ring's circle on the screen
+ * (px: centre x, y and the radius of its outer edge, halo included).
+ */
+const ringAim = { index: -1, inView: false, text: '', box: [0, 0, 0, 0], ring: [0, 0, 0] };
 function pointToNextRing(): void {
   const i = nextRing(rings);
   ringAim.index = i;
@@ -673,29 +677,40 @@ function pointToNextRing(): void {
   const distance = d >= 1000 ? `${(d / 1000).toFixed(1)} km` : `${d.toFixed(0)} m`;
   if (ringAim.inView) {
     ringAim.text = `ring ${i + 1} · ${distance}`;
-    // Above the ring, clear of it (its radius on screen, from a point on its rim at the camera's up)
-    // and so of the flight-path marker inside it (the label sat 30 px under the centre, under the
-    // marker's crosshair); below the ring when there is no room above.
-    rimAt.set(ring.x, ring.y, ring.z).addScaledVector(camUp.set(0, 1, 0).applyQuaternion(app.camera.quaternion), RING_RADIUS + 6);
+    // Above the ring, clear of it (its radius on screen to the halo's outer edge, from a point on it
+    // at the camera's up) and so of the flight-path marker inside it (the label sat 30 px under the
+    // centre, under the marker's crosshair); else below it, beside it or at a corner.
+    rimAt.set(ring.x, ring.y, ring.z).addScaledVector(camUp.set(0, 1, 0).applyQuaternion(app.camera.quaternion), RING_OUTER);
     rimAt.project(app.camera);
     const rPx = Math.hypot(((rimAt.x - ringAt.x) / 2) * w, ((rimAt.y - ringAt.y) / 2) * h);
+    ringAim.ring = [x, y, rPx];
     ringPointer.textContent = ringAim.text;
-    const half = ringPointer.offsetHeight / 2 + 6,
-      halfW = ringPointer.offsetWidth / 2 + 6;
-    // Above the ring, else below, else beside it: the first place inside the scene that keeps clear
-    // of the flight-path marker (which sits outside the ring when off course: the label covered it).
+    const bw = ringPointer.offsetWidth / 2,
+      bh = ringPointer.offsetHeight / 2;
+    const half = bh + LABEL_GAP,
+      halfW = bw + LABEL_GAP,
+      d = rPx * Math.SQRT1_2;
     const places: [number, number][] = [
       [x, y - rPx - half],
       [x, y + rPx + half],
       [x - rPx - halfW, y],
       [x + rPx + halfW, y],
-    ];
-    const clear = ([px, py]: [number, number]) => {
-      const [cx, cy] = keepInScene(px, py, w, bottom);
-      const off = marker.style.display !== 'none';
-      return cx === px && cy === py && (!off || Math.abs(px - pathAim.x) > halfW + 17 || Math.abs(py - pathAim.y) > half + 10);
-    };
-    [x, y] = places.find(clear) ?? places.find(([, py]) => py - half >= 0 && py + half <= bottom) ?? places[0]!;
+      [x - d - halfW, y - d - half],
+      [x + d + halfW, y - d - half],
+      [x - d - halfW, y + d + half],
+      [x + d + halfW, y + d + half],
+    ].map(([px, py]) => keepInScene(px!, py!, w, bottom));
+    // Whether the label at (px, py) covers the ring (its box reaches inside the ring's outer edge: a
+    // far ring is small, and the label held inside the scene slid over it), or the marker.
+    const coversRing = ([px, py]: [number, number]) =>
+      Math.hypot(Math.max(Math.abs(px - x) - bw, 0), Math.max(Math.abs(py - y) - bh, 0)) < rPx + 2;
+    const coversMarker = ([px, py]: [number, number]) =>
+      marker.style.display !== 'none' && Math.abs(px - pathAim.x) <= halfW + 17 && Math.abs(py - pathAim.y) <= half + 10;
+    [x, y] =
+      places.find((p) => !coversRing(p) && !coversMarker(p)) ??
+      places.find((p) => !coversRing(p)) ??
+      places.find((p) => !coversMarker(p)) ??
+      places[0]!;
   } else {
     // Behind the camera the projection is mirrored: point the other way.
     let dx = x - w / 2,
@@ -730,6 +745,75 @@ function keepInScene(x: number, y: number, w: number, bottom: number): [number, 
 }
 /** Least gap between the ring label and the scene's edges, px. */
 const EDGE_MARGIN = 10;
+/** Gap between the ring label and the ring it labels, px. */
+const LABEL_GAP = 6;
+/** The next ring's outer edge from its centre, m: the pulsing halo's (RING_RADIUS + 12, tube 2.5, pulse 6 %). */
+const RING_OUTER = (RING_RADIUS + 12 + 2.5) * 1.06;
+
+// ---- Lessons: what the first rings ask for, in plain words ----------------------------------------
+
+/**
+ * A tip over the scene's top while the next ring is one of the lessons (./course.ts LESSONS: ring 2
+ * a turn, ring 3 a climb or a dive, ring 4 a turn the other way): which way it lies and what to do,
+ * in words for someone who has never flown. A stranger did not know that an aeroplane turns by
+ * tipping its wings (banking), so ring 2's tip says so.
+ */
+const tip = overlay(
+  `left: 50%; top: ${compact ? 11 : 12}%; width: max-content; max-width: min(92%, 560px); box-sizing: border-box; padding: 5px 14px; border-radius: 12px; background: rgba(8, 12, 20, 0.8); color: #eef3f8; font: 600 ${compact ? 14 : 16}px/1.35 system-ui, sans-serif; text-align: center; display: none;`,
+);
+tip.dataset.hud = 'tip';
+/** Whether the page is used by touch first (a phone): the tips name the stick, not the keys. */
+const touchFirst = matchMedia('(pointer: coarse)').matches;
+/** What the tip shows now ('' when none; tests). */
+let tipText = '';
+/**
+ * The lesson ring the tip was worked out for (-1: none), and which way it lay then: the side (+1
+ * right) and the height (+1 higher). Fixed while that ring is next, so the tip does not turn round
+ * as the aircraft turns towards the ring.
+ */
+let tipRing = -1,
+  tipSide = 1,
+  tipUp = 1;
+
+/** The tip for the next ring now, or '' (none after the lessons, or once the flight is over). */
+function lessonTip(): string {
+  const i = nextRing(rings);
+  if (state.phase !== 'flying' || i < 1 || i > 3) {
+    tipRing = -1;
+    return '';
+  }
+  const ring = rings[i]!;
+  if (tipRing !== i) {
+    // Right of the heading is (-vz, 0, vx) (y up).
+    const V = shell.world.components.Velocity,
+      e = handles.body;
+    tipRing = i;
+    tipSide = (ring.x - now[0]!) * -V.z[e]! + (ring.z - now[2]!) * V.x[e]! > 0 ? 1 : -1;
+    tipUp = ring.y > now[1]! ? 1 : -1;
+  }
+  const side = tipSide > 0 ? 'right' : 'left';
+  const key = tipSide > 0 ? '→' : '←';
+  const stickSide = `push the stick ${side}`;
+  if (i === 2) {
+    const up = tipUp > 0;
+    const climbKey = up !== params.pilotPitch ? '↑' : '↓';
+    const doIt = touchFirst ? `push the stick ${climbKey === '↑' ? 'up' : 'down'}` : `hold ${climbKey}`;
+    return `Ring 3 is ${up ? 'higher' : 'lower'}: ${doIt} to ${up ? 'climb' : 'dive'} gently, and let go to fly level.`;
+  }
+  const doIt = touchFirst ? stickSide : `hold ${key}`;
+  if (i === 1)
+    return `Ring 2 is to the ${side}. A plane turns by tipping its wings (banking): ${doIt} and it leans and turns ${side}; let go to fly straight.`;
+  return `Ring 4 is to the ${side}: tip the wings ${side} (${touchFirst ? stickSide : key}) to turn, then let go.`;
+}
+
+function showTip(): void {
+  const text = lessonTip();
+  if (text !== tipText) {
+    tipText = text;
+    tip.textContent = text;
+    tip.style.display = text ? 'block' : 'none';
+  }
+}
 
 // ---- The flight-path marker: where the aircraft is going, at the next ring's distance ------------
 
@@ -868,6 +952,7 @@ function frame(): void {
   drawGuide(at);
   markPath();
   pointToNextRing();
+  showTip();
   engine.set(state.phase === 'crashed' ? 0 : 0.25 + 0.75 * state.throttle);
   const i = instruments(world);
   drawCockpit(state.camera === 'cockpit' && state.phase !== 'crashed', i);
@@ -968,6 +1053,8 @@ shell.expose({
   attitude: () => ({ ...shownAttitude }),
   /** The course: each ring's centre (m), normal and status. */
   rings: () => rings.map((r) => ({ ...r })),
+  /** The lesson tip over the scene now ('' when none shows). */
+  tip: () => tipText,
   /** The banner's text now ('' when none shows) and the warning. */
   banner: () => ({ text: banner.style.display === 'none' ? '' : (banner.textContent ?? ''), warning: state.warning }),
   params,

@@ -5,14 +5,15 @@
  * start date and are integrated with the world's scheme (default RK4, steps of at most 1 hour).
  *
  * The game (./missions.ts): each mission names a planet. The player turns the launch arrow at the
- * Earth and sets the launch speed; a dashed line shows at once where the probe would go (a two-body
- * Kepler plan, ./kepler.ts) and a ghost ring where the planet would be then. Launch, and the probe
- * flies in the physics world, pulled by the Sun and every planet, while time speeds up; the course
- * from the probe is planned again as it goes, and the arrival miss shows: mid-course burns (the same
- * keys and buttons) change it, from a small tank of fuel. Reaching the ring round the planet wins the
- * mission, with stars for a cheap mission (the launch speed plus the burns). Waiting (time 10x faster)
- * lets the planets line up. The status line states the goal and the plan's numbers; the Hint button
- * (H) says what to try.
+ * Earth and sets the launch speed while time waits; dots show at once where the probe will go and a
+ * ghost ring where the planet will be then, and the status line says whether it arrives. That
+ * forecast (./forecast.ts) is the flight itself, flown ahead with the world's scheme and the
+ * flight's step, so what it says is what the launch does. Launch, and the probe flies in the physics
+ * world, pulled by the Sun and every planet, while time speeds up; mid-course burns (the same keys
+ * and buttons) change its course, from a small tank of fuel, and the forecast follows each burn.
+ * Reaching the ring round the planet wins the mission, with stars for a cheap mission (the launch
+ * speed plus the burns). Waiting (Wait held: time runs) lets the planets line up. The Hint button
+ * (H) says which change, or which burn, arrives and how many presses it takes (./advice.ts).
  *
  * Drawn on a compressed distance scale (./distance-scale.ts), so the eight planets fit on one screen
  * with room between the inner four (D switches to the true scale); orbit lines are each planet's
@@ -21,12 +22,13 @@
  *
  * Units: AU, days, solar masses (see packages/projects/src/solar-system.ts). One scene unit is 0.1 AU
  * of the display scale. Time: the rate is simulated days per real second; each loop tick runs steps
- * of the chosen size, at most MAX_STEPS_PER_TICK of them (a faster rate takes longer steps).
+ * of the mission's step (./missions.ts missionTimeStep: the chosen step, longer for the outer
+ * planets), at most MAX_STEPS_PER_TICK of them (a faster rate then runs slower than asked).
  * Keys: ← → turn the launch, ↑ ↓ its speed (in flight: burns in / out, faster / slower), Space
  * launch, W (held) wait, H hint, Enter next mission or try again, [ ] slower / faster, D distances,
  * 1 2 3 views, E sizes, P pause, N single step, R reset (back to the last start: the first date, or
  * the last launch after a Try again).
- * URL: ?mission=1..7, ?rate=days-per-second (0..400), ?step=hours (0.25|1|6|24), ?integrator=name,
+ * URL: ?mission=1..7, ?rate=days-per-second while aiming (0..400, default 0), ?step=hours (0.25|1|6|24), ?integrator=name,
  * ?date=ISO date, ?distances=compressed|true.
  */
 
@@ -77,7 +79,9 @@ import {
   Vector2,
   Vector3,
 } from 'three';
+import { adviseAim, adviseBurn, createAimAdvice, createBurnAdvice, SPEED_STEP, TURN_STEP, tutorialAim } from './advice';
 import { displayRadius, fromDisplay, toDisplay } from './distance-scale';
+import { copyForecast, createForecast, ForecastJob } from './forecast';
 import {
   type Aim,
   BURN_STEP,
@@ -88,6 +92,7 @@ import {
   createFlightPlan,
   endFlight,
   type Flight,
+  flightRate,
   heliocentricState,
   hohmannSpeed,
   launchDirection,
@@ -95,27 +100,32 @@ import {
   MAX_SPEED,
   MISSIONS,
   type Mission,
-  PLAN_SAMPLES,
-  planCourse,
+  missionTimeStep,
   planFlight,
   starsFor,
   TARGET_TRACK,
-  tutorialAim,
 } from './missions';
 
 /** Scene units per display AU. */
 const UNITS_PER_AU = 10;
 const STEPS = ['0.25', '1', '6', '24'] as const;
-/** Most physics steps a loop tick runs; a rate that needs more takes longer steps. */
-const MAX_STEPS_PER_TICK = 24;
+/**
+ * Most physics steps a loop tick runs (a flight's rate needs at most 24 of its steps, 72 while Wait
+ * is held); a rate that needs more runs slower than asked, the steps staying the forecast's.
+ */
+const MAX_STEPS_PER_TICK = 96;
 /** Days per real second while Wait (W) is held: the aiming rate (if faster) times 4, at least this. */
 const WAIT_RATE = 40;
 /**
- * Real seconds a flight takes at most: its rate is the flight's deadline (the planned time and a
- * margin) over this, within [10, 400] days/s. Time enough to watch the arrival miss and burn to
- * bring it into the ring.
+ * Real time forecasting may take a frame, ms (in slices of FORECAST_SLICE steps), or a third of the
+ * time between frames where they come slowly (at most 40 ms): a longer forecast goes on over the
+ * next frames, the line keeping the last verdict until it is done. A probe step takes about 1 us on
+ * a desktop, 6 us while the planets' motion for it is worked out too.
  */
-const FLIGHT_SECONDS = 20;
+const FORECAST_MS_PER_FRAME = 6;
+const FORECAST_SLICE = 500;
+/** Real time between the last two frames, ms: where frames come slowly, forecasting takes up to a third of it. */
+let frameGap = 16;
 /** Mean radii, AU (IAU), for true-size drawing. */
 const RADIUS_AU: Record<SolarSystemBody, number> = {
   Sun: 4.652e-3,
@@ -143,8 +153,11 @@ const hex = (c: number): string => `#${c.toString(16).padStart(6, '0')}`;
 
 const search = new URLSearchParams(location.search);
 const params = {
-  /** Simulated days per real second while aiming (flights pick their own). */
-  rate: numberParam('rate', { default: 1, min: 0, max: 400 }),
+  /**
+   * Simulated days per real second while aiming (flights pick their own): none by default, so the
+   * forecast is for the very moment of the launch; Wait runs time.
+   */
+  rate: numberParam('rate', { default: 0, min: 0, max: 400 }),
   step: choiceParam('step', STEPS, '1'),
   integrator: choiceParam('integrator', INTEGRATOR_NAMES, 'rk4') as IntegratorName,
   date: search.get('date') ?? SOLAR_SYSTEM_EPOCH.slice(0, 10),
@@ -182,7 +195,7 @@ function createWorld(): PhysicsWorld {
   flight = null;
   phase = 'aim';
   trailCount = 0;
-  planAt = -Infinity;
+  worldSerial++;
   return world;
 }
 
@@ -190,27 +203,41 @@ function createWorld(): PhysicsWorld {
 const TICK = 1 / 60;
 
 /**
+ * How long a flight's time runs slow after a burn, ms, and how slow (a share of its rate): a player
+ * tapping a burn the hint asks for six times takes two seconds, 50 days of a flight to Mars, and the
+ * later burns did less than the hint (worked out for burns now) said.
+ */
+const BURN_SLOW_MS = 800;
+const BURN_SLOW = 0.2;
+
+/**
  * Days per real second now: the aiming rate (WAIT_RATE or 4 times it while Wait is held), a flight's
- * rate (3 times it while held, at most 400), nothing after a flight ends.
+ * rate (3 times it while held, at most 400; BURN_SLOW of it just after a burn), nothing after a flight ends.
  */
 function currentRate(): number {
   if (phase === 'done') return 0;
-  if (phase === 'flight') return waiting ? Math.min(400, 3 * flightRate) : flightRate;
+  if (phase === 'flight') {
+    const rate = waiting ? Math.min(400, 3 * flightDaysPerSecond) : flightDaysPerSecond;
+    return performance.now() - lastBurn < BURN_SLOW_MS ? BURN_SLOW * rate : rate;
+  }
   return waiting ? Math.max(WAIT_RATE, 4 * params.rate) : params.rate;
 }
 
+/** The chosen step, days (the panel's "longest step"). */
+const baseStep = (): number => Number(params.step) / 24;
+
 /**
- * One loop tick: rate x TICK days in steps of the chosen size (at most MAX_STEPS_PER_TICK; beyond that
- * the steps grow to fit); during a flight the probe is checked after every step.
+ * One loop tick: rate x TICK days in steps of the flight's step (./missions.ts missionTimeStep: the
+ * forecast's, so the flight is what was forecast, and the planets' motion it worked out serves the
+ * next forecast too), at most MAX_STEPS_PER_TICK; during a flight the probe is checked after every step.
  */
 function stepWorld(world: PhysicsWorld): void {
-  const base = Number(params.step) / 24;
+  const dt = flight && phase === 'flight' ? flight.dt : missionTimeStep(mission(), baseStep());
   carry += currentRate() * TICK;
-  let n = Math.floor(carry / base + 1e-9);
-  let dt = base;
+  let n = Math.floor(carry / dt + 1e-9);
   if (n > MAX_STEPS_PER_TICK) {
     n = MAX_STEPS_PER_TICK;
-    dt = carry / n;
+    carry = n * dt;
   }
   if (n === 0) return;
   carry = Math.max(0, carry - n * dt);
@@ -234,10 +261,19 @@ type Phase = 'aim' | 'flight' | 'done';
 let phase: Phase = 'aim';
 let missionIndex = Number(params.mission) - 1;
 const aim: Aim = { angle: 0, speed: 3 };
+/** The Kepler plan a launch takes its deadline from (./missions.ts launchProbe). */
 const plan = createFlightPlan();
-/** world.time of the plan shown (-Infinity: stale). */
-let planAt = -Infinity;
-let planShownHit = false;
+/**
+ * The forecast shown (./forecast.ts): what the launch aimed now will do, or what the flight under
+ * way will do; complete. `forecastKey` names what it is for ('' for nothing yet): see `wantedKey`.
+ */
+const forecast = createForecast();
+let forecastKey = '';
+/** The forecast being worked out, a slice a frame, and what it is for. */
+const job = new ForecastJob();
+let jobKey = '';
+/** Counts the worlds made (a reset makes a new one): part of a forecast's key. */
+let worldSerial = 0;
 let flight: Flight | null = null;
 /** Most points of the probe's trail. */
 const TRAIL_POINTS = 4096;
@@ -246,10 +282,8 @@ const trail = new Float64Array(3 * TRAIL_POINTS);
 let trailCount = 0;
 /** The date of the last launch, ms (Try again starts there). */
 let launchMs = 0;
-/** performance.now() of the last plan (plans are redrawn at most every 90 ms while time runs). */
-let planClock = 0;
-/** The rate of the flight under way, days/s. */
-let flightRate = 30;
+/** The rate of the flight under way, days/s (./missions.ts flightRate of its deadline). */
+let flightDaysPerSecond = 30;
 /** Whether Wait (W or the button) is held. */
 let waiting = false;
 /** The date a mission began, ms (the panel's restart goes back there). */
@@ -302,14 +336,13 @@ function startMission(index: number): void {
   aim.angle = v >= 0 ? 0 : 180;
   aim.speed = Math.min(MAX_SPEED, Math.round(Math.abs(v) * 10) / 10);
   // The first mission is a lesson in one change: the arrow points the way of an arriving course,
-  // with the speed a little short of it (./missions.ts tutorialAim); the plan's numbers show it
-  // falling short of Mars (the Hint button says to speed up).
+  // with the speed a little short of it (./advice.ts tutorialAim); the line shows it falling short
+  // of Mars (the Hint button says how much to speed up).
   if (missionIndex === 0) {
-    const lesson = tutorialAim(shell.world, handles, m, plan);
+    const lesson = tutorialAim(shell.world, handles, m, baseStep());
     if (lesson) Object.assign(aim, lesson.start);
   }
   missionStartMs = handles.epoch + shell.world.time * 86_400_000;
-  planAt = -Infinity;
   frameView('mission');
   panel.refresh();
   updateStatus(true);
@@ -322,15 +355,67 @@ function restartMission(): void {
   startMission(missionIndex);
 }
 
+/**
+ * What the forecast shown should be for now: the launch aimed at this moment of this world, or the
+ * flight under way after its burns so far ('' after a flight). The moment comes last, after a '|'.
+ */
+function wantedKey(): string {
+  if (phase === 'aim')
+    return `aim ${worldSerial} ${missionIndex} ${aim.angle} ${aim.speed} ${params.step} ${params.integrator}|${shell.world.time}`;
+  if (phase === 'flight' && flight) return `flight ${worldSerial} ${flight.launchTime} ${flight.burns}|`;
+  return '';
+}
+const keyBase = (key: string): string => key.slice(0, key.indexOf('|'));
+
+/** Starts the job on the forecast `key` names (wantedKey now). */
+function startForecast(key: string): void {
+  if (phase === 'aim') job.startLaunch(shell.world, handles, mission(), aim, baseStep());
+  else if (flight) job.startCourse(shell.world, handles, flight);
+  jobKey = key;
+}
+
+/**
+ * Brings the forecast shown up to date: FORECAST_MS_PER_FRAME of the job a call, or all of it
+ * (`now`). While time runs (Wait held) a forecast under way for a moment just gone is
+ * finished and shown before the next is started, so the line keeps up. @returns whether the
+ * forecast shown is for now.
+ */
+function updateForecast(now = false): boolean {
+  const key = wantedKey();
+  if (key === '' || key === forecastKey) return key !== '';
+  const keep = job.busy && !now && keyBase(jobKey) === keyBase(key);
+  if (!keep && (jobKey !== key || !job.busy)) startForecast(key);
+  const start = performance.now();
+  let over = now ? job.run() : job.run(FORECAST_SLICE);
+  const budget = Math.min(40, Math.max(FORECAST_MS_PER_FRAME, frameGap / 3));
+  while (!over && performance.now() - start < budget) over = job.run(FORECAST_SLICE);
+  if (!over) return false;
+  if (job.lost) {
+    jobKey = '';
+    return false;
+  }
+  const arrivedBefore = forecastKey.startsWith('flight') && forecast.outcome === 'arrived';
+  copyForecast(job.forecast, forecast);
+  forecastKey = jobKey;
+  jobKey = '';
+  // A burn that brings the course into the ring chimes.
+  if (phase === 'flight' && forecast.outcome === 'arrived' && !arrivedBefore) sound.chime(1320, 0.12);
+  updateStatus(true);
+  return forecastKey === key;
+}
+
 /** Launches the probe with the current aim (Space, the Launch button). No effect unless aiming. */
 function launch(): void {
   if (phase !== 'aim') return;
+  // The forecast shown is for this very moment and aim (worked out now if it was not yet).
+  updateForecast(true);
   planFlight(shell.world, handles, mission(), aim, plan);
-  planAt = shell.world.time;
   launchMs = handles.epoch + shell.world.time * 86_400_000;
-  flight = launchProbe(shell.world, handles, mission(), aim, plan);
-  flightRate = Math.min(400, Math.max(10, flight.deadline / FLIGHT_SECONDS));
+  flight = launchProbe(shell.world, handles, mission(), aim, plan, baseStep());
+  flightDaysPerSecond = flightRate(flight.deadline);
   phase = 'flight';
+  // The launch's forecast is the flight's course from the launch.
+  forecastKey = wantedKey();
   trailCount = 0;
   recordTrail(shell.world);
   sound.launch(0.9);
@@ -364,7 +449,6 @@ function retry(): void {
   startMs = launchMs;
   shell.reset();
   Object.assign(aim, keep);
-  planAt = -Infinity;
   updateStatus(true);
 }
 
@@ -383,7 +467,7 @@ let lastBurn = -Infinity;
 
 /**
  * A mid-course burn of BURN_STEP km/s (./missions.ts burnProbe) while the probe flies: the new
- * course is planned at once (its arrival miss shows in the status line and the dotted path).
+ * course is forecast at once (its verdict shows in the status line and the dotted path).
  */
 function burn(direction: BurnDirection): void {
   if (phase !== 'flight' || !flight) return;
@@ -392,10 +476,8 @@ function burn(direction: BurnDirection): void {
   if (t - lastBurn < BURN_GAP_MS) return;
   lastBurn = t;
   if (burnProbe(shell.world, handles, flight, direction, BURN_STEP, plan) > 0) {
-    planAt = shell.world.time;
-    planClock = performance.now();
-    flightRate = Math.min(400, Math.max(10, flight.deadline / FLIGHT_SECONDS));
-    sound.chime(plan.hit ? 1320 : 660, 0.08);
+    flightDaysPerSecond = flightRate(flight.deadline);
+    sound.chime(660, 0.08);
   } else sound.chime(180, 0.1);
   updateStatus(true);
 }
@@ -409,7 +491,7 @@ function turn(degrees: number): void {
   let a = aim.angle + degrees;
   a = ((((a + 180) % 360) + 360) % 360) - 180;
   aim.angle = a === -180 ? 180 : Math.round(a * 10) / 10;
-  planAt = -Infinity;
+  aimChangedAt = performance.now();
 }
 
 function changeSpeed(kms: number): void {
@@ -419,7 +501,7 @@ function changeSpeed(kms: number): void {
   }
   if (phase !== 'aim') return;
   aim.speed = Math.min(MAX_SPEED, Math.max(0, Math.round((aim.speed + kms) * 10) / 10));
-  planAt = -Infinity;
+  aimChangedAt = performance.now();
 }
 
 // ---- The page ---------------------------------------------------------------------------------------
@@ -441,10 +523,10 @@ const game = await startThreeGame({
     { keys: 'Click', action: 'aim the launch at a point', touch: 'Tap' },
   ],
   keys: [
-    { key: 'ArrowLeft', label: 'turn left', action: () => turn(-2), repeat: true },
-    { key: 'ArrowRight', label: 'turn right', action: () => turn(2), repeat: true },
-    { key: 'ArrowUp', label: 'faster launch', action: () => changeSpeed(0.1), repeat: true },
-    { key: 'ArrowDown', label: 'slower launch', action: () => changeSpeed(-0.1), repeat: true },
+    { key: 'ArrowLeft', label: 'turn left', action: () => turn(-TURN_STEP), repeat: true },
+    { key: 'ArrowRight', label: 'turn right', action: () => turn(TURN_STEP), repeat: true },
+    { key: 'ArrowUp', label: 'faster launch', action: () => changeSpeed(SPEED_STEP), repeat: true },
+    { key: 'ArrowDown', label: 'slower launch', action: () => changeSpeed(-SPEED_STEP), repeat: true },
     { key: ' ', label: 'launch', action: () => launch() },
     { key: 'Enter', label: 'next / try again', action: () => advance() },
     { key: 'h', label: 'hint', action: () => toggleHint() },
@@ -716,25 +798,29 @@ function dynamicLine(n: number, material: LineBasicMaterial, loop = false): Line
   app.scene.add(line);
   return line;
 }
-/** Every PLAN_STRIDE-th point of the plan is drawn as a dot: dots at equal times, closer where the probe is slow. */
+/** Every PLAN_STRIDE-th point of the forecast is drawn as a dot: dots at equal times, closer where the probe is slow. */
 const PLAN_STRIDE = 4;
+/** A white disc on a clear ground: point sprites drawn round, not square. */
+const DISC = (() => {
+  const c = document.createElement('canvas');
+  c.width = c.height = 32;
+  const g = c.getContext('2d')!;
+  g.fillStyle = '#fff';
+  g.beginPath();
+  g.arc(16, 16, 15, 0, 2 * Math.PI);
+  g.fill();
+  return new CanvasTexture(c);
+})();
 /** Dots of the plan the last frame drew. */
 let planDotsShown = 0;
-/**
- * Share of the plan's window (one orbit of the probe: PLAN_SAMPLES points) the launch preview draws:
- * the first fifth, about 40 % of the way out to Mars. The whole path turned green on a hit before the
- * launch, and a mission was "press + until it is green"; now where the path meets the target's orbit,
- * and where the target is then, are the player's to judge. In flight the whole course shows.
- */
-const PREVIEW_SHARE = 0.2;
-/** Plan points the last frame's preview could draw (all up to the arrival in flight; PREVIEW_SHARE of the window while aiming). */
+/** Forecast points the last frame's dots stand for (from the probe now, or the launch, to the closest approach). */
 let planPointsShown = 0;
 const planDots = (() => {
   const geometry = new BufferGeometry();
-  geometry.setAttribute('position', new Float32BufferAttribute(new Float32Array(plan.path.length), 3));
+  geometry.setAttribute('position', new Float32BufferAttribute(new Float32Array(forecast.path.length), 3));
   const points = new Points(
     geometry,
-    new PointsMaterial({ color: 0x9fd3ff, size: 3.5, sizeAttenuation: false, transparent: true, opacity: 0.95 }),
+    new PointsMaterial({ color: 0x9fd3ff, size: 4.5, sizeAttenuation: false, map: DISC, alphaTest: 0.5, transparent: true, opacity: 0.95 }),
   );
   points.frustumCulled = false;
   app.scene.add(points);
@@ -746,7 +832,10 @@ const missLine = dynamicLine(2, new LineBasicMaterial({ color: 0xff9b9b, transpa
 function dotCloud(n: number, color: number, size: number): Points {
   const geometry = new BufferGeometry();
   geometry.setAttribute('position', new Float32BufferAttribute(new Float32Array(3 * n), 3));
-  const points = new Points(geometry, new PointsMaterial({ color, size, sizeAttenuation: false, transparent: true, opacity: 0.95 }));
+  const points = new Points(
+    geometry,
+    new PointsMaterial({ color, size, sizeAttenuation: false, map: DISC, alphaTest: 0.5, transparent: true, opacity: 0.95 }),
+  );
   points.frustumCulled = false;
   app.scene.add(points);
   return points;
@@ -1053,6 +1142,7 @@ let lastFrame = performance.now();
 function frame(): void {
   const now = performance.now();
   const dtReal = Math.min(0.1, (now - lastFrame) / 1000);
+  frameGap = now - lastFrame;
   lastFrame = now;
   const world = shell.world;
   // Ease the distance scale towards the chosen one.
@@ -1107,70 +1197,68 @@ function drawLaunch(world: PhysicsWorld): void {
     arrivalGlow.scale.setScalar(zone * (2 + 10 * flashAge));
     arrivalGlow.material.opacity = 1 - flashAge;
   }
-  // The plan: of the launch while aiming, of the course from the probe while it flies (a burn
-  // changes it at once; it is planned again as the probe goes, the planets' pulls bending its path).
+  // The forecast: of the launch while aiming, of the course from the probe while it flies (a burn
+  // changes it; ./forecast.ts). Worked out a slice a frame, the last complete one drawn meanwhile.
   const cruising = phase === 'flight' && flight !== null;
-  const planned = aiming || cruising;
+  const planned = (aiming || cruising) && forecastKey !== '';
+  updateForecast();
   arrow.visible = aiming;
   planDots.visible = planned;
   ghostRing.visible = planned;
   trackDots.visible = false;
   probeThen.visible = false;
   missLine.visible = false;
-  if (planned) {
-    if (world.time !== planAt && (planAt === -Infinity || performance.now() - planClock > (aiming ? 90 : 150))) {
-      if (cruising && flight) planCourse(world, handles, flight, plan);
-      else planFlight(world, handles, m, aim, plan);
-      planAt = world.time;
-      planClock = performance.now();
-      // The chime of a course that arrives: in flight only (while aiming it would give the verdict away).
-      if (cruising && plan.hit && !planShownHit) sound.chime(1320, 0.12);
-      planShownHit = cruising && plan.hit;
-    }
-  }
   if (aiming) {
     heliocentricState(world, handles, handles.bodies.Earth, earthHelio);
     launchDirection(earthHelio, aim.angle, launchDir);
     displayDirection(earthHelio, launchDir, dirV);
-    const len = viewHalf * (0.1 + (0.3 * aim.speed) / MAX_SPEED);
+    // Longer for a faster launch; thick enough to see which way it points at any zoom.
+    const len = viewHalf * (0.16 + (0.4 * aim.speed) / MAX_SPEED);
     arrow.position.set(shown[3 * earthI]!, shown[3 * earthI + 1]!, shown[3 * earthI + 2]!);
     arrow.quaternion.setFromUnitVectors(arrowUp, dirV);
-    arrow.scale.set(viewHalf * 0.12, len, viewHalf * 0.12);
+    arrow.scale.set(viewHalf * 0.3, len, viewHalf * 0.3);
   }
   if (planned) {
+    const f = forecast;
+    const arrived = f.outcome === 'arrived',
+      sun = f.outcome === 'sun';
+    // The probe's dots from where it is now (in flight) to the closest approach (the arrival),
+    // every PLAN_STRIDE-th sample and the place then.
     const attr = planDots.geometry.getAttribute('position') as Float32BufferAttribute;
     const arr = attr.array as Float32Array;
+    const first = cruising && flight ? Math.max(0, Math.ceil((flight.elapsed - f.from) / f.every)) : 0;
     let n = 0;
-    const last = aiming ? Math.min(plan.pointsToTime, Math.floor(PREVIEW_SHARE * PLAN_SAMPLES) + 1) : plan.pointsToTime;
-    planPointsShown = last;
-    for (let i = 0; i < last; i += i + PLAN_STRIDE < last || i === last - 1 ? PLAN_STRIDE : last - 1 - i)
-      place(plan.path[3 * i]!, plan.path[3 * i + 1]!, plan.path[3 * i + 2]!, arr, 3 * n++);
+    for (let i = first; i < f.pointsToClosest; i += PLAN_STRIDE)
+      place(f.path[3 * i]!, f.path[3 * i + 1]!, f.path[3 * i + 2]!, arr, 3 * n++);
+    place(f.probeAt[0]!, f.probeAt[1]!, f.probeAt[2]!, arr, 3 * n++);
     attr.needsUpdate = true;
     planDots.geometry.setDrawRange(0, n);
     planDotsShown = n;
+    planPointsShown = f.pointsToClosest - first;
+    // The target's own dots from now to then, and on a miss a white dot where the probe is then
+    // and a line across the gap.
     const track = trackDots.geometry.getAttribute('position') as Float32BufferAttribute;
     for (let i = 0; i < TARGET_TRACK; i++)
-      place(plan.targetTrack[3 * i]!, plan.targetTrack[3 * i + 1]!, plan.targetTrack[3 * i + 2]!, track.array as Float32Array, 3 * i);
+      place(f.targetTrack[3 * i]!, f.targetTrack[3 * i + 1]!, f.targetTrack[3 * i + 2]!, track.array as Float32Array, 3 * i);
     track.needsUpdate = true;
     (trackDots.material as PointsMaterial).color.setHex(hexColor(m.target));
-    // While aiming, no verdict: neither the target's dots to the meeting nor the probe's place then.
-    trackDots.visible = cruising && !plan.sun;
-    probeThen.visible = cruising && !plan.hit && !plan.sun;
+    trackDots.visible = !sun && !cruising;
+    probeThen.visible = !arrived && !sun;
     const then = probeThen.geometry.getAttribute('position') as Float32BufferAttribute;
-    place(plan.probeAt[0]!, plan.probeAt[1]!, plan.probeAt[2]!, then.array as Float32Array, 0);
+    place(f.probeAt[0]!, f.probeAt[1]!, f.probeAt[2]!, then.array as Float32Array, 0);
     then.needsUpdate = true;
-    (planDots.material as PointsMaterial).color.setHex(cruising && plan.hit ? 0x7ee787 : 0x9fd3ff);
-    place(plan.targetAt[0]!, plan.targetAt[1]!, plan.targetAt[2]!, scratch3);
+    (planDots.material as PointsMaterial).color.setHex(arrived ? 0x7ee787 : sun ? 0xffb4a8 : 0x9fd3ff);
+    place(f.targetAt[0]!, f.targetAt[1]!, f.targetAt[2]!, scratch3);
     ghostRing.position.set(scratch3[0]!, scratch3[1]!, scratch3[2]!);
     ghostRing.scale.setScalar(zone);
-    (ghostRing.material as LineBasicMaterial).color.setHex(plan.hit ? 0x7ee787 : hexColor(m.target));
-    ghostRing.visible = cruising;
-    if (cruising && !plan.hit && !plan.sun) {
+    (ghostRing.material as LineBasicMaterial).color.setHex(arrived ? 0x7ee787 : hexColor(m.target));
+    ghostRing.visible = !sun;
+    if (!arrived && !sun) {
       missLine.visible = true;
       const attr = missLine.geometry.getAttribute('position') as Float32BufferAttribute;
       const arr = attr.array as Float32Array;
-      place(plan.probeAt[0]!, plan.probeAt[1]!, plan.probeAt[2]!, arr, 0);
-      place(plan.targetAt[0]!, plan.targetAt[1]!, plan.targetAt[2]!, arr, 3);
+      place(f.probeAt[0]!, f.probeAt[1]!, f.probeAt[2]!, arr, 0);
+      place(f.targetAt[0]!, f.targetAt[1]!, f.targetAt[2]!, arr, 3);
       attr.needsUpdate = true;
     }
   }
@@ -1219,7 +1307,7 @@ function aimAtPointer(clientX: number, clientY: number): void {
     o = launchDirection(earthHelio, 90, [0, 0, 0]);
   const angle = (Math.atan2(dx * o[0]! + dz * o[2]!, dx * p[0]! + dz * p[2]!) * 180) / Math.PI;
   aim.angle = Math.round(angle) === -180 ? 180 : Math.round(angle);
-  planAt = -Infinity;
+  aimChangedAt = performance.now();
 }
 let aiming = -1;
 app.canvas.addEventListener('pointerdown', (e) => {
@@ -1293,10 +1381,10 @@ status.append(goalLine, planText, hintLine, dateText);
 pageLayout().status.append(status);
 
 const PAD = [
-  { label: '↺', name: 'turn the launch left (←)', press: () => turn(-2) },
-  { label: '↻', name: 'turn the launch right (→)', press: () => turn(2) },
-  { label: '−', name: 'slower launch (↓)', press: () => changeSpeed(-0.1) },
-  { label: '+', name: 'faster launch (↑)', press: () => changeSpeed(0.1) },
+  { label: '↺', name: 'turn the launch left (←)', press: () => turn(-TURN_STEP) },
+  { label: '↻', name: 'turn the launch right (→)', press: () => turn(TURN_STEP) },
+  { label: '−', name: 'slower launch (↓)', press: () => changeSpeed(-SPEED_STEP) },
+  { label: '+', name: 'faster launch (↑)', press: () => changeSpeed(SPEED_STEP) },
 ] as const;
 /** The same four buttons while the probe flies: mid-course burns (./missions.ts burnProbe). */
 const BURN_PAD = [
@@ -1326,7 +1414,7 @@ let hintUsed = false;
 function toggleHint(): void {
   hinting = !hinting;
   hintUsed = true;
-  hintClock = -Infinity;
+  adviceKey = '';
   updateStatus(true);
 }
 const pad = createButtonBar(
@@ -1388,82 +1476,122 @@ const touchFirst = matchMedia('(pointer: coarse)').matches;
 const named = (key: string, button: string): string => (touchFirst ? button : key);
 const BURN_NAMES: Record<BurnDirection, string> = { faster: '+ fast', slower: '− slow', out: 'out ▷', in: '◁ in' };
 const BURN_KEYS: Record<BurnDirection, string> = { faster: '↑', slower: '↓', out: '→', in: '←' };
-/** A plan to try burns on (the flight hint), and the hint's text and when it was worked out (performance.now(), ms). */
-const tryPlan = createFlightPlan();
-let hintText = '',
-  hintClock = -Infinity;
+const BURN_WORDS: Record<BurnDirection, string> = {
+  faster: 'faster along its path',
+  slower: 'slower along its path',
+  out: 'away from the Sun',
+  in: 'towards the Sun',
+};
+const times = (n: number): string => (n === 1 ? 'once' : n === 2 ? 'twice' : `${n} times`);
+/** The hints (./advice.ts), the forecast they were worked out for, and when (performance.now(), ms). */
+const aimAdvice = createAimAdvice();
+const burnAdvice = createBurnAdvice();
+let adviceKey = '',
+  adviceClock = -Infinity;
+/** performance.now() of the last change of the aim: the launch hint waits until the aim rests. */
+let aimChangedAt = -Infinity;
+/** How long the aim must rest before the launch hint is worked out again, ms (a search takes up to 0.1 s). */
+const HINT_REST_MS = 250;
+/** Real time between two burn hints in flight, ms (the burn needed changes as the probe flies). */
+const BURN_HINT_MS = 1000;
+let hintText = '';
 
 /**
- * What to try now, for the Hint button: while aiming, the change of the launch that the plan's
- * numbers point to; while flying, the burn (of the four, BURN_STEP each) that brings the planned
- * arrival nearest the target, worked out from the probe's course (./missions.ts planCourse).
+ * What to try now, for the Hint button (./advice.ts): while aiming, the turn or the speed change
+ * (or the wait) that makes the launch arrive, in presses; while flying, the burn that brings it into
+ * the ring, in presses now. Worked out for the forecast shown once it is for now; '' until then.
  */
 function hint(m: Mission): string {
+  const world = shell.world;
   if (phase === 'aim') {
-    if (plan.hit) return `On target. Launch: ${named('Space', 'tap Launch')}. A slower launch earns more stars.`;
-    if (plan.sun) return `Too much speed backwards: less speed (${named('↓', '−')}), or turn the arrow (${named('← →', '↺ ↻')}).`;
-    const rT = distanceFromSun(m.target);
-    const outward = rT > distanceFromSun('Earth');
-    if (outward && plan.farthest < rT - m.zone) return `Too slow to reach ${m.target}’s orbit: more speed (${named('press ↑', 'tap +')}).`;
-    if (!outward && plan.nearest > rT + m.zone)
-      return `It does not fall in to ${m.target}’s orbit: aim backwards, against the Earth’s path (${named('← →', '↺ ↻')}), with more speed.`;
-    const a = Math.abs(plan.ahead);
-    const inside =
-      Math.hypot(plan.probeAt[0]!, plan.probeAt[1]!, plan.probeAt[2]!) <
-      Math.hypot(plan.targetAt[0]!, plan.targetAt[1]!, plan.targetAt[2]!);
-    if (a < 6)
-      return `Close: a little ${inside === outward ? 'more' : 'less'} speed (${named(inside === outward ? '↑' : '↓', inside === outward ? '+' : '−')}).`;
-    return `When the probe (the white dot) gets there, ${m.target} (its ring) is ${Math.round(a)}° ${plan.ahead > 0 ? 'ahead' : 'behind'}: turn the arrow (${named('← →', '↺ ↻')}), or hold Wait (${named('W', 'Wait')}) for ${m.target} to come round.`;
+    if (forecastKey !== wantedKey() || performance.now() - aimChangedAt < HINT_REST_MS) return '';
+    if (adviceKey !== forecastKey) {
+      adviseAim(world, handles, m, aim, baseStep(), forecast, aimAdvice);
+      adviceKey = forecastKey;
+    }
+    const a = aimAdvice;
+    if (a.kind === 'launch') {
+      const s = starsFor(m, aim.speed);
+      const more = s < 3 ? ` For ${starText(3)} it needs ${m.stars3} km/s or less: try a slower launch.` : '';
+      return `This launch arrives: ${named('press Space', 'tap Launch')}.${more}`;
+    }
+    if (a.kind === 'change') {
+      const days = `then it arrives in ${Math.round(a.forecast.end)} days`;
+      if (a.turn !== 0) {
+        const cw = a.turn > 0;
+        return `Turn the arrow ${Math.abs(a.turn)}° ${cw ? 'clockwise' : 'anticlockwise'} (${named(`press ${cw ? '→' : '←'}`, `tap ${cw ? '↻' : '↺'}`)} ${times(a.presses)}): ${days}.`;
+      }
+      const up = a.speed > 0;
+      return `${up ? 'Speed up' : 'Slow down'} by ${Math.abs(a.speed).toFixed(1)} km/s (${named(`press ${up ? '↑' : '↓'}`, `tap ${up ? '+' : '−'}`)} ${times(a.presses)}): ${days}.`;
+    }
+    const waitRate = Math.max(WAIT_RATE, 4 * params.rate);
+    if (a.kind === 'wait') {
+      const faster =
+        a.speed > 0
+          ? `, and speed up by ${a.speed.toFixed(1)} km/s (${named('press ↑', 'tap +')} ${times(Math.round(a.speed / SPEED_STEP))})`
+          : '';
+      return `No small turn or speed change arrives now. Hold Wait (${named('W', 'the Wait button')}) for about ${Math.max(1, Math.round(a.days / waitRate))} s (${a.days} days) while ${m.target} comes round${faster}; then ask again.`;
+    }
+    return `Nothing near this launch arrives now: hold Wait (${named('W', 'the Wait button')}) and watch the line, or ${named('click', 'tap')} elsewhere to aim another way.`;
   }
   if (phase === 'flight' && flight) {
-    if (plan.hit) return 'On course for the ring: no burn needed (burns cost stars).';
-    if (flight.fuelUsed >= CORRECTION_FUEL - 1e-9) return 'No fuel left for burns: the probe coasts. Abort to try the launch again.';
-    let best: BurnDirection = 'faster',
-      bestMiss = Infinity;
-    for (const direction of ['faster', 'slower', 'out', 'in'] as const) {
-      planCourse(shell.world, handles, flight, tryPlan, { direction, dv: BURN_STEP });
-      const miss = tryPlan.hit ? 0 : tryPlan.distance;
-      if (miss < bestMiss) {
-        bestMiss = miss;
-        best = direction;
-      }
+    if (forecastKey !== wantedKey()) return hintText;
+    if (adviceKey !== forecastKey || performance.now() - adviceClock > BURN_HINT_MS) {
+      adviseBurn(world, handles, flight, forecast, burnAdvice);
+      adviceKey = forecastKey;
+      adviceClock = performance.now();
     }
-    const to = bestMiss === 0 ? 'into the ring' : `from ${plan.distance.toFixed(2)} to ${bestMiss.toFixed(2)} AU`;
-    return `Burn ${named(BURN_KEYS[best], BURN_NAMES[best])}: the arrival miss goes ${to}.`;
+    const b = burnAdvice;
+    if (b.kind === 'coast') return 'On course for the ring: no burn needed (burns cost stars).';
+    if (b.kind === 'empty') return 'No fuel left for burns: the probe coasts. Abort to try the launch again.';
+    if (b.kind === 'none') return 'No burn the fuel left allows brings it into the ring now. Abort to try the launch again.';
+    const n = b.presses;
+    return `${named(`Press ${BURN_KEYS[b.direction]}`, `Tap ${BURN_NAMES[b.direction]}`)} ${times(n)} now (${(n * BURN_STEP).toFixed(2)} km/s ${BURN_WORDS[b.direction]}): then it arrives on day ${Math.round(b.forecast.end)}.`;
   }
   return flight?.state === 'arrived'
     ? `Next mission: ${named('Enter', 'tap Next mission')}.`
     : `Try again from the launch: ${named('Enter', 'tap Try again')}.`;
 }
 
+/** The verdict of the forecast shown on `m` (the status line's end), and its class. */
+function verdict(m: Mission): [string, string] {
+  const f = forecast;
+  const scheme = f.scheme === 'rk4' ? '' : ` (forecast with rk4; this flight uses ${f.scheme})`;
+  if (f.outcome === 'arrived')
+    return [
+      phase === 'aim'
+        ? `✓ arrives at ${m.target} in ${Math.round(f.end)} days · ${starText(starsFor(m, aim.speed))}${scheme}`
+        : `✓ arrives on day ${Math.round(f.end)}${scheme}`,
+      'ok',
+    ];
+  if (f.outcome === 'sun') return [`✗ falls into the Sun${scheme}`, 'bad'];
+  if (phase === 'aim') {
+    const rT = distanceFromSun(m.target);
+    const outward = rT > distanceFromSun('Earth');
+    if (outward && f.farthest < rT - m.zone)
+      return [`✗ goes out only to ${f.farthest.toFixed(2)} AU from the Sun; ${m.target} is at ${rT.toFixed(2)} AU${scheme}`, 'bad'];
+    if (!outward && f.nearest > rT + m.zone)
+      return [`✗ falls in only to ${f.nearest.toFixed(2)} AU from the Sun; ${m.target} is at ${rT.toFixed(2)} AU${scheme}`, 'bad'];
+  }
+  return [`✗ misses ${m.target}: closest ${f.closest.toFixed(2)} AU (the ring is ${m.zone} AU)${scheme}`, 'bad'];
+}
+
 function updateStatus(force = false): void {
   const m = mission();
   const world = shell.world;
   const total = best.reduce((s, n) => s + n, 0);
-  // The goal, and the numbers that say how near it the launch or the flight comes; what to change
+  // The goal, and the forecast's verdict: what the launch (or the flight) will do. What to change
   // is the player's to work out (the Hint button says, on request).
   const goal = `Mission ${missionIndex + 1} of ${MISSIONS.length}: fly a probe to ${m.target}`;
   let line = '',
     cls = '';
   if (phase === 'aim') {
     const head = `Launch ${aim.speed.toFixed(1)} km/s ${aimWords(aim.angle)} →`;
-    const rT = distanceFromSun(m.target);
-    // No verdict on the arrival before the launch (that is the player's judgement): whether the path
-    // reaches the target's orbit at all, and the stars at stake at this speed.
-    if (plan.sun) {
-      line = `${head} ✗ falls into the Sun`;
-      cls = 'bad';
-    } else {
-      const outward = rT > distanceFromSun('Earth');
-      cls = 'bad';
-      if (outward && plan.farthest < rT - m.zone)
-        line = `${head} ✗ goes out only to ${plan.farthest.toFixed(2)} AU from the Sun; ${m.target} is at ${rT.toFixed(2)} AU`;
-      else if (!outward && plan.nearest > rT + m.zone)
-        line = `${head} ✗ falls in only to ${plan.nearest.toFixed(2)} AU from the Sun; ${m.target} is at ${rT.toFixed(2)} AU`;
-      else {
-        line = `${head} reaches ${m.target}’s orbit (${rT.toFixed(2)} AU) · if ${m.target} is there: ${starText(starsFor(m, aim.speed))}`;
-        cls = '';
-      }
+    if (forecastKey === '') line = `${head} …`;
+    else {
+      const [words, c] = verdict(m);
+      line = `${head} ${words}`;
+      cls = c;
     }
   } else if (phase === 'flight' && flight) {
     const P = world.components.Position;
@@ -1471,25 +1599,15 @@ function updateStatus(force = false): void {
       p = slotOf(flight.probe);
     const d = Math.hypot(P.x[t]! - P.x[p]!, P.y[t]! - P.y[p]!, P.z[t]! - P.z[p]!);
     const fuel = `fuel ${(CORRECTION_FUEL - flight.fuelUsed).toFixed(2)} km/s`;
-    // Three cases, as the numbers say: well inside the ring (the plan's margin, PLAN_MARGIN, for the
-    // planets' pulls), at its edge (inside the ring but not by the margin: it read "✗ arrival miss
-    // 0.12 AU (ring 0.14 AU)" and then arrived), or outside it.
-    const edge = !plan.hit && !plan.sun && plan.distance < m.zone;
-    const arrival = plan.hit
-      ? `✓ on course: in the ring in ${Math.round(plan.time)} days`
-      : plan.sun
-        ? '✗ falls into the Sun'
-        : edge
-          ? `≈ at the ring’s edge: arrival ${plan.distance.toFixed(2)} AU (ring ${m.zone} AU)`
-          : `✗ arrival miss ${plan.distance.toFixed(2)} AU (ring ${m.zone} AU)`;
-    line = `Day ${Math.round(flight.elapsed)} · ${d.toFixed(2)} AU to ${m.target} · ${arrival} · ${fuel}`;
-    cls = plan.hit ? 'ok' : edge ? 'edge' : 'bad';
+    const [words, c] = verdict(m);
+    line = `Day ${Math.round(flight.elapsed)} · ${d.toFixed(2)} AU to ${m.target} · ${words} · ${fuel}`;
+    cls = c;
   } else if (phase === 'done' && flight) {
     const burns = flight.fuelUsed > 0 ? ` + ${flight.fuelUsed.toFixed(2)} km/s of burns` : '';
     if (flight.state === 'arrived') {
       const s = starsFor(m, flight.aim.speed + flight.fuelUsed);
       line = `✓ Arrived at ${m.target} after ${Math.round(flight.elapsed)} days! ${starText(s)} (${flight.aim.speed.toFixed(1)} km/s launch${burns}; 3 stars up to ${m.stars3} km/s in all)`;
-      if (missionIndex === MISSIONS.length - 1) line += ` · All missions flown: ${total} of ${3 * MISSIONS.length} stars`;
+      if (best.every((b) => b > 0)) line += ` · All missions flown: ${total} of ${3 * MISSIONS.length} stars`;
       cls = 'won';
     } else if (flight.state === 'sun') {
       line = '✗ The probe fell into the Sun.';
@@ -1499,15 +1617,18 @@ function updateStatus(force = false): void {
       cls = 'bad';
     }
   }
-  // The hint, worked out again at most every 400 ms while it shows (a flight's tries four plans).
-  if (hinting && (force || performance.now() - hintClock > 400)) {
-    hintText = hint(m);
-    hintClock = performance.now();
-  }
+  // The hint, worked out again (./advice.ts) when what it is for has changed.
+  if (hinting) hintText = hint(m) || (phase === 'aim' ? 'Hint: working it out…' : hintText);
   const date = new Date(handles.epoch + world.time * 86_400_000).toISOString().slice(0, 10);
   const rate = currentRate();
   const stars = `Stars ${total} / ${3 * MISSIONS.length}`;
-  const dateLine = `${date} · ${rate === 0 ? 'time stopped' : `${rate < 10 ? rate.toFixed(1) : Math.round(rate)} days a second`}${waiting ? ' (waiting)' : ''} · ${stars}`;
+  const clock =
+    rate === 0
+      ? phase === 'aim'
+        ? 'time waits while you aim'
+        : 'time stopped'
+      : `${rate < 10 ? rate.toFixed(1) : Math.round(rate)} days a second${waiting ? ' (waiting)' : ''}`;
+  const dateLine = `${date} · ${clock} · ${stars}`;
   const shownHint = hinting ? hintText : '';
   const key = `${goal}|${line}|${cls}|${dateLine}|${phase}|${shownHint}`;
   if (!force && key === shownStatus) return;
@@ -1612,9 +1733,8 @@ const panel = createPanel(
     'More keys: Enter next mission / try again; [ ] time slower / faster; 1 2 3 views; D distances; E sizes. Right-drag turns the view, the wheel zooms.';
   panel.gui.domElement.append(note);
 }
-// R (the shell's reset) goes back to startMs: a fresh plan and orbits.
+// R (the shell's reset) goes back to startMs: fresh orbits (the forecast's key names the world).
 shell.onWorldChange(() => {
-  planAt = -Infinity;
   orbitsAt = -Infinity;
 });
 startMission(missionIndex);
@@ -1659,13 +1779,24 @@ shell.expose({
       v.set(shown[3 * i]!, shown[3 * i + 1]!, shown[3 * i + 2]!).project(app.camera);
       return v.z < 1 && Math.abs(v.x) <= 1 && Math.abs(v.y) <= 1;
     }),
-  /** The mission state: its number (1-based), target, phase, the aim, the plan (of the launch, or of the course while flying) and the flight. */
+  /**
+   * The mission state: its number (1-based), target, phase, the aim, the forecast shown (of the
+   * launch, or of the course while flying: `plan.hit` whether it arrives, `time` the days of flight
+   * at the end, `distance` the closest approach, AU, `sun` whether it falls into the Sun, `current`
+   * whether it is for the aim and moment now) and the flight.
+   */
   mission: () => ({
     number: missionIndex + 1,
     target: mission().target,
     phase,
     aim: { ...aim },
-    plan: { hit: plan.hit, time: plan.time, distance: plan.distance, sun: plan.sun },
+    plan: {
+      hit: forecast.outcome === 'arrived',
+      time: forecast.end,
+      distance: forecast.closest,
+      sun: forecast.outcome === 'sun',
+      current: forecastKey !== '' && forecastKey === wantedKey(),
+    },
     flight: flight
       ? { state: flight.state, elapsed: flight.elapsed, closest: flight.closest, fuelUsed: flight.fuelUsed, burns: flight.burns }
       : null,
@@ -1677,24 +1808,24 @@ shell.expose({
     if (phase !== 'aim') return;
     aim.angle = angle;
     aim.speed = speed;
-    planAt = -Infinity;
+    aimChangedAt = performance.now();
   },
   /** Launches (Space), starts a mission (0-based), goes on after a flight (Enter). */
   launch,
   startMission,
   advance,
   /**
-   * What the last frame's preview showed: the probe's dots drawn, the plan points they were drawn
-   * from (PREVIEW_SHARE of the window while aiming), whether the white dot of the probe at the
-   * closest approach and the target's own dots show (in flight only), and the plan's path points up
-   * to that time and in all.
+   * What the last frame's preview showed: the probe's dots drawn, the forecast points they were
+   * drawn from (from the probe now, or the launch, to the closest approach), whether the white dot of
+   * the probe at the closest approach (a miss) and the target's own dots (while aiming) show, and the
+   * forecast's points up to that time and in all.
    */
   preview: () => ({
     dots: planDotsShown,
     shownPoints: planPointsShown,
     probeThen: probeThen.visible,
     track: trackDots.visible,
-    pointsToTime: plan.pointsToTime,
-    points: plan.points,
+    pointsToTime: forecast.pointsToClosest,
+    points: forecast.points,
   }),
 });

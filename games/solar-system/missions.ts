@@ -71,6 +71,8 @@ export interface Mission {
   /** Launch speeds (v_inf, km/s) that still earn 3 stars and 2 stars. */
   readonly stars3: number;
   readonly stars2: number;
+  /** The target's mean distance from the Sun (semi-major axis), AU: sets the mission's flight step (`missionTimeStep`). */
+  readonly distance: number;
 }
 
 /**
@@ -81,13 +83,13 @@ export interface Mission {
 export const MISSIONS: readonly Mission[] = Object.freeze(
   (
     [
-      { target: 'Mars', zone: 0.14, stars3: 3.6, stars2: 5 },
-      { target: 'Venus', zone: 0.1, stars3: 3.2, stars2: 4.5 },
-      { target: 'Jupiter', zone: 0.75, stars3: 9.8, stars2: 12 },
-      { target: 'Mercury', zone: 0.08, stars3: 8.6, stars2: 11 },
-      { target: 'Saturn', zone: 1.2, stars3: 11.5, stars2: 14 },
-      { target: 'Uranus', zone: 1.9, stars3: 12.5, stars2: 15 },
-      { target: 'Neptune', zone: 3, stars3: 13, stars2: 16 },
+      { target: 'Mars', zone: 0.14, stars3: 3.6, stars2: 5, distance: 1.524 },
+      { target: 'Venus', zone: 0.1, stars3: 3.2, stars2: 4.5, distance: 0.723 },
+      { target: 'Jupiter', zone: 0.75, stars3: 9.8, stars2: 12, distance: 5.203 },
+      { target: 'Mercury', zone: 0.08, stars3: 8.6, stars2: 11, distance: 0.387 },
+      { target: 'Saturn', zone: 1.2, stars3: 11.5, stars2: 14, distance: 9.537 },
+      { target: 'Uranus', zone: 1.9, stars3: 12.5, stars2: 15, distance: 19.19 },
+      { target: 'Neptune', zone: 3, stars3: 13, stars2: 16, distance: 30.07 },
     ] satisfies Mission[]
   ).map((m) => Object.freeze(m)),
 );
@@ -113,6 +115,12 @@ export interface FlightPlan {
   distance: number;
   /** Days the plan covers: one orbit of the probe, at most 3 Hohmann transfer times to the target. */
   window: number;
+  /**
+   * Days until the path first crosses the target's distance from the Sun (now), or, if it never
+   * does within the window (or the sampled part of it), comes nearest to it: the flight's deadline
+   * lets the probe get that far (`flightDeadline`).
+   */
+  orbitTime: number;
   /** Whether the probe would fall into the Sun within the window (the path stops there). */
   sun: boolean;
   /** Farthest and nearest the probe gets from the Sun over the window, AU. */
@@ -147,6 +155,7 @@ export function createFlightPlan(): FlightPlan {
     time: 0,
     distance: Infinity,
     window: 0,
+    orbitTime: 0,
     sun: false,
     farthest: 0,
     nearest: 0,
@@ -245,11 +254,20 @@ const tState = new Float64Array(6);
  * Fills `plan` with what launching `aim` now towards `mission`'s target would do: the probe's and the
  * target's two-body Kepler motions about the Sun (see the file's header), sampled PLAN_SAMPLES times
  * over the window, the first sample inside PLAN_MARGIN of the zone refined by bisection (a hit) or the closest
- * sample refined by a golden-section search (a miss). @returns plan.
- * @throws RangeError on an aim out of range.
+ * sample refined by a golden-section search (a miss). `samples` (at most PLAN_SAMPLES) sets how many
+ * samples: fewer for a quick look (the hint's search, ./advice.ts). @returns plan.
+ * @throws RangeError on an aim out of range or samples not an integer in [8, PLAN_SAMPLES].
  */
-export function planFlight(world: PhysicsWorld, handles: SolarSystemHandles, mission: Mission, aim: Aim, plan: FlightPlan): FlightPlan {
+export function planFlight(
+  world: PhysicsWorld,
+  handles: SolarSystemHandles,
+  mission: Mission,
+  aim: Aim,
+  plan: FlightPlan,
+  samples: number = PLAN_SAMPLES,
+): FlightPlan {
   checkAim('planFlight', aim);
+  checkSamples('planFlight', samples);
   heliocentricState(world, handles, handles.bodies.Earth, earthState);
   launchDirection(earthState, aim.angle, dir);
   const vInf = aim.speed * KM_S;
@@ -257,7 +275,12 @@ export function planFlight(world: PhysicsWorld, handles: SolarSystemHandles, mis
     probe0[i] = earthState[i]! + LAUNCH_OFFSET * dir[i]!;
     probe0[3 + i] = earthState[3 + i]! + vInf * dir[i]!;
   }
-  return planFrom(world, handles, mission, probe0, plan);
+  return planFrom(world, handles, mission, probe0, plan, samples);
+}
+
+function checkSamples(where: string, samples: number): void {
+  if (!(Number.isInteger(samples) && samples >= 8 && samples <= PLAN_SAMPLES))
+    throw new RangeError(`${where}: samples must be an integer in [8, ${PLAN_SAMPLES}], got ${samples}`);
 }
 
 /**
@@ -268,7 +291,8 @@ export function planFlight(world: PhysicsWorld, handles: SolarSystemHandles, mis
  * `launchProbe` adds it), so just after the launch the course is the launch's plan (without it, the
  * climb still to come out of the Earth's pull would read as 0.07 km/s too fast at 3 km/s). After a
  * burn (`burnProbe`) it says where the new course arrives; with `burn`, where a burn of `burn.dv`
- * km/s in `burn.direction` now would take it (the probe is not changed). @returns plan.
+ * km/s in `burn.direction` now would take it (the probe is not changed). `samples` as planFlight's.
+ * @returns plan.
  */
 export function planCourse(
   world: PhysicsWorld,
@@ -276,10 +300,12 @@ export function planCourse(
   flight: Flight,
   plan: FlightPlan,
   burn?: { direction: BurnDirection; dv: number },
+  samples: number = PLAN_SAMPLES,
 ): FlightPlan {
+  checkSamples('planCourse', samples);
   heliocentricState(world, handles, flight.probe, probe0);
   if (burn) {
-    launchDirection(probe0, BURN_ANGLE[burn.direction], burnDir);
+    burnDirection(probe0, burn.direction, burnDir);
     for (let i = 0; i < 3; i++) probe0[3 + i] = probe0[3 + i]! + burn.dv * KM_S * burnDir[i]!;
   }
   heliocentricState(world, handles, handles.bodies.Earth, earthState);
@@ -293,15 +319,64 @@ export function planCourse(
   probe0[3] = earthState[3]! + k * rx;
   probe0[4] = earthState[4]! + k * ry;
   probe0[5] = earthState[5]! + k * rz;
-  return planFrom(world, handles, flight.mission, probe0, plan);
+  return planFrom(world, handles, flight.mission, probe0, plan, samples);
 }
 
-/** The plan (see `planFlight`) of a probe at heliocentric state `start` (position AU, velocity AU/day) now. */
-function planFrom(world: PhysicsWorld, handles: SolarSystemHandles, mission: Mission, start: Float64Array, plan: FlightPlan): FlightPlan {
+const later = new Float64Array(6);
+
+/**
+ * The plan (see `planFlight`) of launching `aim` towards `mission`'s target `days` (>= 0) from now,
+ * the Earth and the target carried there on their own two-body orbits about the Sun (the giants'
+ * pulls left out: a guess of what waiting would do, for the hint's search, ./advice.ts).
+ * `samples` as planFlight's. @returns plan. @throws RangeError on a bad aim, samples or days.
+ */
+export function planFlightLater(
+  world: PhysicsWorld,
+  handles: SolarSystemHandles,
+  mission: Mission,
+  aim: Aim,
+  days: number,
+  plan: FlightPlan,
+  samples: number = PLAN_SAMPLES,
+): FlightPlan {
+  checkAim('planFlightLater', aim);
+  checkSamples('planFlightLater', samples);
+  if (!(days >= 0 && Number.isFinite(days))) throw new RangeError(`planFlightLater: days must be finite and >= 0, got ${days}`);
+  const G = world.laws.gravitationalConstant,
+    M = world.components.Mass.value,
+    sun = M[slotOf(handles.bodies.Sun)]!;
+  heliocentricState(world, handles, handles.bodies.Earth, earthState);
+  keplerState(earthState, earthState.subarray(3), G * (sun + M[slotOf(handles.bodies.Earth)]!), days, later);
+  launchDirection(later, aim.angle, dir);
+  const vInf = aim.speed * KM_S;
+  for (let i = 0; i < 3; i++) {
+    probe0[i] = later[i]! + LAUNCH_OFFSET * dir[i]!;
+    probe0[3 + i] = later[3 + i]! + vInf * dir[i]!;
+  }
+  const target = handles.bodies[mission.target];
+  heliocentricState(world, handles, target, target0);
+  keplerState(target0, target0.subarray(3), G * (sun + M[slotOf(target)]!), days, later);
+  return planFrom(world, handles, mission, probe0, plan, samples, later);
+}
+
+/**
+ * The plan (see `planFlight`) of a probe at heliocentric state `start` (position AU, velocity AU/day)
+ * now, with `samples` samples, against the target as it is now or at heliocentric state `targetState`.
+ */
+function planFrom(
+  world: PhysicsWorld,
+  handles: SolarSystemHandles,
+  mission: Mission,
+  start: Float64Array,
+  plan: FlightPlan,
+  samples: number,
+  targetState?: Float64Array,
+): FlightPlan {
   const G = world.laws.gravitationalConstant;
   const mu = muSun(world, handles);
   const target = handles.bodies[mission.target];
-  heliocentricState(world, handles, target, target0);
+  if (targetState) target0.set(targetState.subarray(0, 6));
+  else heliocentricState(world, handles, target, target0);
   const muTarget = G * (world.components.Mass.value[slotOf(handles.bodies.Sun)]! + world.components.Mass.value[slotOf(target)]!);
   // The window: one orbit of the probe, at most three Hohmann transfer times to the target's distance.
   const r0 = Math.hypot(start[0]!, start[1]!, start[2]!);
@@ -312,6 +387,7 @@ function planFrom(world: PhysicsWorld, handles: SolarSystemHandles, mission: Mis
   const period = alpha > 0 ? (2 * Math.PI) / Math.sqrt(mu * alpha * alpha * alpha) : Infinity;
   const window = Math.min(period, 3 * hohmann);
   plan.window = window;
+  plan.orbitTime = 0;
   plan.hit = false;
   plan.sun = false;
   plan.farthest = 0;
@@ -319,20 +395,31 @@ function planFrom(world: PhysicsWorld, handles: SolarSystemHandles, mission: Mis
   let best = Infinity,
     bestT = 0,
     prevT = 0,
-    points = 0;
+    points = 0,
+    crossT = -1,
+    side = 0,
+    nearOrbit = Infinity,
+    nearOrbitT = 0;
   const at = (t: number): number => {
     keplerState(start, start.subarray(3), mu, t, pState);
     keplerState(target0, target0.subarray(3), muTarget, t, tState);
     return Math.hypot(pState[0]! - tState[0]!, pState[1]! - tState[1]!, pState[2]! - tState[2]!);
   };
   let hitT = -1;
-  for (let k = 0; k <= PLAN_SAMPLES; k++) {
-    const t = (window * k) / PLAN_SAMPLES;
+  for (let k = 0; k <= samples; k++) {
+    const t = (window * k) / samples;
     const d = at(t);
     const r = Math.hypot(pState[0]!, pState[1]!, pState[2]!);
     plan.farthest = Math.max(plan.farthest, r);
     plan.nearest = Math.min(plan.nearest, r);
     plan.path.set(pState.subarray(0, 3), 3 * points++);
+    // Where the path first crosses the target's distance from the Sun, or comes nearest to it.
+    if (crossT < 0 && k > 0 && (r - rT) * side <= 0) crossT = t;
+    side = r - rT;
+    if (Math.abs(side) < nearOrbit) {
+      nearOrbit = Math.abs(side);
+      nearOrbitT = t;
+    }
     if (r < SUN_ZONE) {
       plan.sun = true;
       break;
@@ -361,7 +448,7 @@ function planFrom(world: PhysicsWorld, handles: SolarSystemHandles, mission: Mis
     plan.distance = at(hi);
   } else {
     // The closest approach near the closest sample.
-    const step = window / PLAN_SAMPLES;
+    const step = window / samples;
     let lo = Math.max(0, bestT - step),
       hi = Math.min(window, bestT + step);
     const g = (Math.sqrt(5) - 1) / 2;
@@ -374,6 +461,7 @@ function planFrom(world: PhysicsWorld, handles: SolarSystemHandles, mission: Mis
     plan.time = (lo + hi) / 2;
     plan.distance = at(plan.time);
   }
+  plan.orbitTime = crossT >= 0 ? crossT : nearOrbitT;
   // The target's track from now to plan.time (before the last at() call, which leaves the states at plan.time).
   for (let i = 0; i < TARGET_TRACK; i++) {
     keplerState(target0, target0.subarray(3), muTarget, (plan.time * i) / (TARGET_TRACK - 1), tState);
@@ -383,7 +471,7 @@ function planFrom(world: PhysicsWorld, handles: SolarSystemHandles, mission: Mis
   // at() left the states at plan.time.
   plan.points = points;
   if (plan.hit) plan.path.set(pState.subarray(0, 3), 3 * (plan.points - 1));
-  plan.pointsToTime = plan.hit ? points : Math.min(points, Math.floor((plan.time / window) * PLAN_SAMPLES) + 1);
+  plan.pointsToTime = plan.hit ? points : Math.min(points, Math.floor((plan.time / window) * samples) + 1);
   plan.probeAt.set(pState.subarray(0, 3));
   plan.targetAt.set(tState.subarray(0, 3));
   const lonP = Math.atan2(-pState[2]!, pState[0]!),
@@ -411,6 +499,11 @@ export interface Flight {
    * margin, within its window (moved by a burn to the new course's: `burnProbe`).
    */
   deadline: number;
+  /**
+   * The step the flight is flown with, days (`missionTimeStep`): the page steps the world with it
+   * and the forecast (./forecast.ts) with the same, so the forecast's verdict is the flight's.
+   */
+  readonly dt: number;
   /** The plan at the launch. */
   readonly planned: Readonly<Pick<FlightPlan, 'hit' | 'time' | 'distance'>>;
   /** Closest approach to the target so far, AU, and the flight time then, days. */
@@ -438,15 +531,80 @@ export type BurnDirection = 'faster' | 'slower' | 'out' | 'in';
 /** Launch angles (`launchDirection`) of each burn direction, degrees. */
 const BURN_ANGLE: Record<BurnDirection, number> = { faster: 0, slower: 180, out: 90, in: -90 };
 
+/**
+ * The unit direction of a burn in `direction` for a probe of heliocentric state `state` (position AU,
+ * velocity AU/day, 6 numbers), in the ecliptic, into out[0..2] (as `launchDirection` turns a launch).
+ * @returns out.
+ */
+export function burnDirection(state: ArrayLike<number>, direction: BurnDirection, out: Float64Array): Float64Array {
+  launchDirection(state, BURN_ANGLE[direction], out);
+  return out;
+}
+
+/** Real seconds a flight lasts at most on the page: its rate is its deadline over this (`flightRate`). */
+export const FLIGHT_SECONDS = 20;
+
+/** Physics steps the page runs in a real second of a flight at most at its rate (60 frames of 24 steps). */
+export const FLIGHT_STEPS_PER_SECOND = 60 * 24;
+
+/**
+ * Days of flight after which a probe that has not arrived has missed, from the plan `plan` of its
+ * course (`planFlight`, `planCourse`) towards a target with a ring of `zone` AU: within the plan's
+ * window, the later of the plan's time (its arrival or closest approach) and its time to the
+ * target's orbit (or nearest it), or for a wide miss (closest approach beyond 3 rings) the time to
+ * the orbit alone, with a margin (1.2 x and 30 days). So a probe is not given up before it reaches
+ * the target's orbit (a launch whose closest approach was at the start, the target then on the far
+ * side, was given up after 30 days, a tenth of the way out to Jupiter), nor flown for decades to a
+ * closest approach of many AU (Uranus: 17,900 days, 45 s at the fastest rate).
+ */
+export function flightDeadline(plan: Pick<FlightPlan, 'time' | 'window' | 'orbitTime' | 'distance'>, zone: number): number {
+  const t = plan.distance > 3 * zone ? plan.orbitTime : Math.max(plan.time, plan.orbitTime);
+  return Math.min(plan.window, t) * 1.2 + 30;
+}
+
+/** A flight's rate on the page, simulated days per real second: its deadline over FLIGHT_SECONDS, within [10, 400]. */
+export function flightRate(deadline: number): number {
+  return Math.min(400, Math.max(10, deadline / FLIGHT_SECONDS));
+}
+
+/** Gauss's gravitational constant squared: the Sun's G M, AU^3/day^2 (for the missions' nominal flight times). */
+const GAUSS_MU = 0.01720209895 ** 2;
+
+/**
+ * The fixed step of `mission`'s flights (and of the world while aiming at it), days: the aiming step
+ * `baseStep` (days), or longer when the rate of a nominal flight, a Hohmann transfer between
+ * circular orbits (1 AU to mission.distance; Curtis, Orbital Mechanics, sect. 6.3) with the
+ * deadline's margin, needs more than FLIGHT_STEPS_PER_SECOND steps (Jupiter 1.02 hours, the three
+ * outermost 400 / 1440 days, 6.7 hours). One step for every launch of a mission, so the planets'
+ * motion worked out for one forecast serves them all (./forecast.ts).
+ * @throws RangeError on a baseStep that is not finite and > 0.
+ */
+export function missionTimeStep(mission: Mission, baseStep: number): number {
+  if (!(baseStep > 0 && Number.isFinite(baseStep)))
+    throw new RangeError(`missionTimeStep: baseStep must be finite and > 0 days, got ${baseStep}`);
+  const a = (1 + mission.distance) / 2;
+  const hohmann = Math.PI * Math.sqrt((a * a * a) / GAUSS_MU);
+  return Math.max(baseStep, flightRate(hohmann * 1.2 + 30) / FLIGHT_STEPS_PER_SECOND);
+}
+
 const launchPos = new Float64Array(3);
 const launchVel = new Float64Array(3);
 
 /**
  * Launches a probe now with `aim` on `mission`: adds it to the world (see the file's header) and
  * returns its flight, with the deadline taken from `plan` (made for the same aim and moment by
- * `planFlight`). @throws RangeError on a bad aim or a world without room for one more body.
+ * `planFlight`; `flightDeadline`) and the step `missionTimeStep(mission, baseStep)` (baseStep in
+ * days, default the world's step now). The caller steps the world with `flight.dt` while it flies.
+ * @throws RangeError on a bad aim or a world without room for one more body.
  */
-export function launchProbe(world: PhysicsWorld, handles: SolarSystemHandles, mission: Mission, aim: Aim, plan: FlightPlan): Flight {
+export function launchProbe(
+  world: PhysicsWorld,
+  handles: SolarSystemHandles,
+  mission: Mission,
+  aim: Aim,
+  plan: FlightPlan,
+  baseStep: number = world.dt,
+): Flight {
   checkAim('launchProbe', aim);
   const P = world.components.Position,
     V = world.components.Velocity;
@@ -465,13 +623,14 @@ export function launchProbe(world: PhysicsWorld, handles: SolarSystemHandles, mi
   launchVel[2] = V.z[earth]! + w * dir[2]!;
   const probe = addBody(world, { position: launchPos, velocity: launchVel, mass: PROBE_MASS });
   enableMutualGravity(world, probe);
-  const deadline = Math.min(plan.window, plan.time) * 1.2 + 30;
+  const deadline = flightDeadline(plan, mission.zone);
   return {
     mission,
     aim: Object.freeze({ ...aim }),
     probe,
     launchTime: world.time,
     deadline,
+    dt: missionTimeStep(mission, baseStep),
     planned: Object.freeze({ hit: plan.hit, time: plan.time, distance: plan.distance }),
     closest: Infinity,
     closestAt: 0,
@@ -508,7 +667,7 @@ export function burnProbe(
   if (flight.state !== 'flying' || left <= 1e-9) return 0;
   const change = Math.min(dv, left);
   heliocentricState(world, handles, flight.probe, burnState);
-  launchDirection(burnState, BURN_ANGLE[direction], burnDir);
+  burnDirection(burnState, direction, burnDir);
   const V = world.components.Velocity,
     p = slotOf(flight.probe);
   const k = change * KM_S;
@@ -519,7 +678,7 @@ export function burnProbe(
   flight.fuelUsed = Math.min(CORRECTION_FUEL, flight.fuelUsed + change);
   flight.burns++;
   planCourse(world, handles, flight, plan);
-  flight.deadline = flight.elapsed + Math.min(plan.window, plan.time) * 1.2 + 30;
+  flight.deadline = flight.elapsed + flightDeadline(plan, flight.mission.zone);
   return change;
 }
 
@@ -567,43 +726,4 @@ export function endFlight(world: PhysicsWorld, flight: Flight): void {
 export function hohmannSpeed(rEarth: number, rTarget: number, mu: number): number {
   const v = Math.sqrt(mu / rEarth);
   return (v * (Math.sqrt((2 * rTarget) / (rEarth + rTarget)) - 1)) / KM_S;
-}
-
-/** How far below the slowest arriving launch mission 1 starts, km/s: a few presses of faster launch. */
-export const TUTORIAL_SHORTFALL = 0.8;
-
-/**
- * Mission 1's starting aim, a lesson in one change: the launch direction of an arriving course
- * near the Hohmann transfer (`hit`: along the Earth's motion or within 20 degrees of it, the slowest
- * speed on a 0.1 km/s grid from 1 km/s below the Hohmann speed up that the plan calls a hit), with
- * the speed TUTORIAL_SHORTFALL km/s short of it (`start`, rounded to 0.1 km/s), so the first
- * plan falls short of the target's orbit and the player raises the speed until it arrives.
- * Plans with `plan` (overwritten). @returns null when no launch on that grid arrives now.
- */
-export function tutorialAim(
-  world: PhysicsWorld,
-  handles: SolarSystemHandles,
-  mission: Mission,
-  plan: FlightPlan = createFlightPlan(),
-): { start: Aim; hit: Aim } | null {
-  const mu = muSun(world, handles);
-  const distance = (body: number): number => {
-    heliocentricState(world, handles, body, earthState);
-    return Math.hypot(earthState[0]!, earthState[1]!, earthState[2]!);
-  };
-  const v = hohmannSpeed(distance(handles.bodies.Earth), distance(handles.bodies[mission.target]), mu);
-  const guess = Math.round(Math.abs(v) * 10) / 10,
-    base = v >= 0 ? 0 : 180;
-  for (const turn of [0, 10, -10, 20, -20]) {
-    // In (-180, 180]: 180 + 10 is -170.
-    const angle = base + turn > 180 ? base + turn - 360 : base + turn;
-    for (let k = -10; k <= 15; k++) {
-      const speed = Math.round((guess + 0.1 * k) * 10) / 10;
-      if (speed < 0 || speed > MAX_SPEED) continue;
-      planFlight(world, handles, mission, { angle, speed }, plan);
-      if (plan.hit)
-        return { start: { angle, speed: Math.max(0, Math.round((speed - TUTORIAL_SHORTFALL) * 10) / 10) }, hit: { angle, speed } };
-    }
-  }
-  return null;
 }

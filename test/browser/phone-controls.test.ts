@@ -275,6 +275,33 @@ describe('phone controls', () => {
       expect(gauge.x - gauge.r).toBeGreaterThanOrEqual(0);
       expect(gauge.x + gauge.r).toBeLessThanOrEqual(panel.w);
     }
+    // Ring 2's tip names the stick, not a key: put back level 40 m before ring 1, on its line and
+    // flying along it, the aircraft passes it, and the tip says to push the stick to the side.
+    await g.page.evaluate(() => {
+      type Store = { x: Float64Array; y: Float64Array; z: Float64Array };
+      const w = window.game as unknown as {
+        rings(): { x: number; y: number; z: number }[];
+        aircraftBody(): number;
+        world: { components: { Position: Store; Velocity: Store; AngularVelocity: Store; Orientation: Store & { w: Float64Array } } };
+      };
+      const r = w.rings()[0]!,
+        c = w.world.components,
+        e = w.aircraftBody();
+      const speed = Math.hypot(c.Velocity.x[e]!, c.Velocity.y[e]!, c.Velocity.z[e]!);
+      c.Position.x[e] = r.x - 40;
+      c.Position.y[e] = r.y;
+      c.Position.z[e] = r.z;
+      c.Velocity.x[e] = speed;
+      c.Velocity.y[e] = 0;
+      c.Velocity.z[e] = 0;
+      c.AngularVelocity.x[e] = c.AngularVelocity.y[e] = c.AngularVelocity.z[e] = 0;
+      c.Orientation.x[e] = c.Orientation.y[e] = c.Orientation.z[e] = 0;
+      c.Orientation.w[e] = 1;
+    });
+    const tip = await g.waitFor(() => (window.game as unknown as { tip(): string }).tip() || null, null);
+    expect(tip).toMatch(
+      /^Ring 2 is to the (left|right)\. A plane turns by tipping its wings \(banking\): push the stick \1 and it leans and turns \1; let go to fly straight\.$/,
+    );
     expect(g.errors).toEqual([]);
     await g.close();
   });
@@ -464,14 +491,20 @@ describe('phone controls', () => {
     const card = g.page.locator('[data-hud="touch-hint"]');
     expect(await card.textContent()).toBe('Tapaim the launch at a point');
     expect((await card.boundingBox())!.height).toBeLessThan(50);
-    // Mission 1 starts too slow; the Hint button names the button that fixes it; 8 taps of + arrive.
+    // Mission 1 starts too slow; the Hint button names the button that fixes it and how many taps:
+    // 8 taps of + arrive.
     await g.page.getByRole('button', { name: 'hint: what to try (H)', exact: true }).tap();
     await g.waitFor(() => document.querySelector('[data-hud="touch-hint"]')?.classList.contains('bp-gone') ?? true, null);
-    await g.waitFor(() => /more speed \(tap \+\)\.$/.test(document.querySelector('[data-hud="hint"]')!.textContent ?? ''), null);
+    await g.waitFor(
+      () =>
+        /^Speed up by 0\.8 km\/s \(tap \+ 8 times\): then it arrives/.test(document.querySelector('[data-hud="hint"]')!.textContent ?? ''),
+      null,
+    );
     for (let i = 0; i < 8; i++) await g.page.getByRole('button', { name: 'faster launch (↑)', exact: true }).tap();
     await g.waitFor((s) => (window.game as unknown as Solar).mission().aim.speed > s + 0.75, speed);
     await g.waitFor(() => (window.game as unknown as Solar).mission().plan.hit, null);
     await g.waitFor(() => /tap Launch/.test(document.querySelector('[data-hud="hint"]')!.textContent ?? ''), null);
+    expect(await g.page.locator('[data-hud="plan"]').textContent()).toMatch(/ → ✓ arrives at Mars in \d+ days · ★★★$/);
     // The buttons of every phase sit on one row, each at least 44 x 44 px, Wait in the same place (in
     // flight they took two rows, Hint alone on the second, and Wait moved under a held finger).
     const bar = () =>

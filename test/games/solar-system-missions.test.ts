@@ -2,14 +2,17 @@
  * The solar system game without a page (games/solar-system): Kepler propagation against independent
  * solutions, the compressed distance scale and its inverse, and the missions: a launch the flight
  * plan calls a hit arrives in the physics world (every planet pulling) about when planned, a planned
- * miss does not, mid-course burns planned from the probe's course turn a miss into an arrival, a
- * probe at rest falls into the Sun in the free-fall time, stars and bad input.
+ * miss does not; the forecast the page shows before a launch (and after a burn) is the flight, bit
+ * for bit; the hints (a change of the launch, a burn) name presses whose forecast arrives; a probe
+ * at rest falls into the Sun in the free-fall time; stars and bad input.
  */
 
-import { createPhysicsWorld, type PhysicsWorld, setVelocity, slotOf, step } from '@bitphysics/physics';
+import { createPhysicsWorld, type PhysicsWorld, setTimeStep, setVelocity, slotOf, step } from '@bitphysics/physics';
 import { type SolarSystemHandles, solarSystem } from '@bitphysics/projects';
 import { describe, expect, test } from 'vitest';
+import { adviseAim, adviseBurn, SPEED_STEP, TURN_STEP, TUTORIAL_SHORTFALL, tutorialAim } from '../../games/solar-system/advice';
 import { COMPRESSION_LENGTH, displayRadius, fromDisplay, toDisplay, trueRadius } from '../../games/solar-system/distance-scale';
+import { forecastCourse, forecastLaunch } from '../../games/solar-system/forecast';
 import { keplerState } from '../../games/solar-system/kepler';
 import {
   type Aim,
@@ -26,13 +29,8 @@ import {
   MISSIONS,
   type Mission,
   PLAN_MARGIN,
-  PLAN_SAMPLES,
-  planCourse,
   planFlight,
   starsFor,
-  TARGET_TRACK,
-  TUTORIAL_SHORTFALL,
-  tutorialAim,
 } from '../../games/solar-system/missions';
 
 /** The eccentric anomaly of mean anomaly M for eccentricity e (Kepler's equation E - e sin E = M, Newton from E = M + e sin M). */
@@ -143,6 +141,13 @@ function fly(world: PhysicsWorld, handles: SolarSystemHandles, flight: Flight): 
   while (checkFlight(world, handles, flight) === 'flying') step(world);
 }
 
+/** Flies `flight` to its end as the page does: steps of flight.dt, each followed by checkFlight. */
+function flyPage(world: PhysicsWorld, handles: SolarSystemHandles, flight: Flight): void {
+  setTimeStep(world, flight.dt);
+  do step(world);
+  while (checkFlight(world, handles, flight) === 'flying');
+}
+
 const mission = (target: string): Mission => MISSIONS.find((m) => m.target === target)!;
 
 describe('missions', () => {
@@ -176,100 +181,111 @@ describe('missions', () => {
     }
   });
 
-  test('mission 1 starts short: the plan falls short of Mars’s orbit, more speed along the same arrow arrives (also 30 days later)', () => {
+  test('the forecast is the flight: launches that arrive (Mercury) and miss (Mars) end on the same step with the same closest approach, bit for bit, and so does the course after burns', () => {
+    // The forecast copies the world's rk4, force sum and step (games/solar-system/forecast.ts), so it
+    // must agree exactly, not within a tolerance: scripts/solar-system-forecast.mjs checks 190
+    // launches of all seven missions the same way.
+    for (const [target, aim] of [
+      ['Mercury', { angle: 180, speed: 7 }],
+      ['Mars', { angle: 0, speed: 2.3 }],
+    ] as const) {
+      const { world, handles } = solarWorld(1);
+      const m = mission(target);
+      const f = forecastLaunch(world, handles, m, aim, 1 / 24);
+      const flight = launchProbe(world, handles, m, aim, planFlight(world, handles, m, aim, createFlightPlan()), 1 / 24);
+      expect(flight.dt).toBe(f.dt);
+      expect(flight.deadline).toBe(f.deadline);
+      flyPage(world, handles, flight);
+      expect([flight.state, flight.elapsed, flight.closest], target).toEqual([f.outcome, f.end, f.closest]);
+      expect(f.outcome).toBe(target === 'Mercury' ? 'arrived' : 'missed');
+      // The path's last point is where the probe ended.
+      const p = heliocentricState(world, handles, flight.probe);
+      const k = 3 * (f.points - 1);
+      expect([f.path[k], f.path[k + 1], f.path[k + 2]]).toEqual([p[0], p[1], p[2]]);
+    }
+    // In flight: mission 1's short launch, 20 days out three burns along the motion; the course's
+    // forecast then is where the flight ends.
     const { world, handles } = solarWorld(1);
     const m = MISSIONS[0]!;
-    expect(m.target).toBe('Mars');
-    const lesson = tutorialAim(world, handles, m)!;
-    expect(lesson.start.angle).toBe(lesson.hit.angle);
-    expect(lesson.hit.speed - lesson.start.speed).toBeCloseTo(TUTORIAL_SHORTFALL, 9);
-    const plan = createFlightPlan();
-    planFlight(world, handles, m, lesson.start, plan);
-    expect(plan.hit).toBe(false);
-    // The page's hint then reads "too slow to reach Mars's orbit": the farthest point of the path
-    // lies short of Mars's distance less the ring.
-    const mars = heliocentricState(world, handles, handles.bodies.Mars);
-    expect(plan.farthest).toBeLessThan(Math.hypot(mars[0]!, mars[1]!, mars[2]!) - m.zone);
-    // What the preview draws of a miss: the probe's path up to the closest approach, its last point
-    // within one sample's travel of where the probe is then, the rest of the path (after it) left
-    // out; and Mars's own track from where it is now to where it is then (the ghost ring).
-    expect(plan.pointsToTime).toBeGreaterThan(1);
-    expect(plan.pointsToTime).toBeLessThan(plan.points);
-    const p = plan.path,
-      k = 3 * (plan.pointsToTime - 1),
-      sample = plan.window / PLAN_SAMPLES;
-    const pk = plan.pointsToTime - 1;
-    expect(pk * sample).toBeLessThanOrEqual(plan.time + 1e-9);
-    expect((pk + 1) * sample).toBeGreaterThan(plan.time);
-    const step1 = Math.hypot(p[3]! - p[0]!, p[4]! - p[1]!, p[5]! - p[2]!);
-    expect(Math.hypot(p[k]! - plan.probeAt[0]!, p[k + 1]! - plan.probeAt[1]!, p[k + 2]! - plan.probeAt[2]!)).toBeLessThan(2 * step1);
-    const t = plan.targetTrack,
-      n = 3 * (TARGET_TRACK - 1);
-    expect(Math.hypot(t[0]! - mars[0]!, t[1]! - mars[1]!, t[2]! - mars[2]!)).toBeLessThan(1e-9);
-    expect(Math.hypot(t[n]! - plan.targetAt[0]!, t[n + 1]! - plan.targetAt[1]!, t[n + 2]! - plan.targetAt[2]!)).toBeLessThan(1e-9);
-    /** The slowest speed from the start up in 0.1 km/s presses that the plan calls a hit. */
-    const pressUp = (): number => {
-      for (let n = 1; n <= 40; n++) {
-        const speed = Math.round((lesson.start.speed + 0.1 * n) * 10) / 10;
-        if (planFlight(world, handles, m, { angle: lesson.start.angle, speed }, plan).hit) return speed;
-      }
-      return Number.NaN;
-    };
-    expect(pressUp()).toBe(lesson.hit.speed);
-    // A slow player: 30 days later (30 s at the aiming rate) presses still find an arrival, no more
-    // than 5 presses beyond the lesson's shortfall; flown in the physics world, it arrives.
-    for (let k = 0; k < 30 * 24; k++) step(world);
-    const later = pressUp();
-    expect(later - lesson.start.speed).toBeLessThan(TUTORIAL_SHORTFALL + 0.5 + 1e-9);
-    const aim = { angle: lesson.start.angle, speed: later };
-    planFlight(world, handles, m, aim, plan);
-    const flight = launchProbe(world, handles, m, aim, plan);
-    fly(world, handles, flight);
-    expect(flight.state).toBe('arrived');
-  });
-
-  test('a mid-course burn changes the arrival: mission 1’s short launch misses Mars; burns along the motion 20 days out bring the planned closest approach into the ring, and flown, it arrives', () => {
-    const { world, handles } = solarWorld(1);
-    const m = MISSIONS[0]!;
-    const lesson = tutorialAim(world, handles, m)!;
-    const plan = planFlight(world, handles, m, lesson.start, createFlightPlan());
-    expect(plan.hit).toBe(false);
-    // Flown as launched: a miss (the control).
-    const { world: w2, handles: h2 } = solarWorld(1);
-    const control = launchProbe(w2, h2, m, lesson.start, planFlight(w2, h2, m, lesson.start, createFlightPlan()));
-    fly(w2, h2, control);
-    expect(control.state).toBe('missed');
-    // The same launch, then 20 days out burns of BURN_STEP along the motion until the plan from the
-    // probe's state (planCourse, Kepler about the Sun) calls a hit.
-    const flight = launchProbe(world, handles, m, lesson.start, plan);
-    // Just after the launch the course is the launch's plan: the climb still to come out of the
-    // Earth's pull is taken off the speed (measured: 2e-6 AU apart; 4.6e-3 AU without it).
-    step(world);
-    expect(Math.abs(planCourse(world, handles, flight, createFlightPlan()).distance - plan.distance)).toBeLessThan(5e-4);
-    for (let k = 1; k < 20 * 24; k++) {
+    const aim = { angle: 0, speed: 2.3 };
+    const flight = launchProbe(world, handles, m, aim, planFlight(world, handles, m, aim, createFlightPlan()), 1 / 24);
+    for (let k = 0; k < 20 * 24; k++) {
       step(world);
       checkFlight(world, handles, flight);
     }
-    const before = planCourse(world, handles, flight, createFlightPlan()).distance;
-    expect(before).toBeGreaterThan(m.zone);
-    const course = createFlightPlan();
-    while (!course.hit && burnProbe(world, handles, flight, 'faster', BURN_STEP, course) > 0);
-    expect(course.hit).toBe(true);
-    // Measured: 0.80 km/s of burns for the launch's 0.8 km/s shortfall.
-    expect(flight.fuelUsed).toBeLessThanOrEqual(CORRECTION_FUEL);
-    expect(flight.burns).toBe(Math.round(flight.fuelUsed / BURN_STEP));
-    // The deadline follows the new course: it arrives.
-    fly(world, handles, flight);
-    expect(flight.state).toBe('arrived');
-    // The fuel runs out: no burn past CORRECTION_FUEL, none after the flight.
-    expect(burnProbe(world, handles, flight, 'in', BURN_STEP, course)).toBe(0);
-    expect(() => burnProbe(world, handles, flight, 'faster', -1, course)).toThrow(/burnProbe: dv must be finite and > 0 km\/s, got -1/);
+    for (let k = 0; k < 3; k++) burnProbe(world, handles, flight, 'faster', BURN_STEP, createFlightPlan());
+    const course = forecastCourse(world, handles, flight);
+    flyPage(world, handles, flight);
+    expect([flight.state, flight.elapsed, flight.closest]).toEqual([course.outcome, course.end, course.closest]);
+  });
+
+  test('mission 1 starts short: the forecast goes out short of Mars’s orbit; the hint says how much faster, and that launch’s forecast arrives', () => {
+    const { world, handles } = solarWorld(1);
+    const m = MISSIONS[0]!;
+    expect(m.target).toBe('Mars');
+    const lesson = tutorialAim(world, handles, m, 1 / 24)!;
+    expect(lesson.start.angle).toBe(lesson.hit.angle);
+    expect(lesson.hit.speed - lesson.start.speed).toBeCloseTo(TUTORIAL_SHORTFALL, 9);
+    const start = forecastLaunch(world, handles, m, lesson.start, 1 / 24);
+    expect(start.outcome).toBe('missed');
+    // The page's line then reads "goes out only to x AU from the Sun": the farthest point of the
+    // path lies short of Mars's distance less the ring.
+    const mars = heliocentricState(world, handles, handles.bodies.Mars);
+    expect(start.farthest).toBeLessThan(Math.hypot(mars[0]!, mars[1]!, mars[2]!) - m.zone);
+    // The hint: the change of fewest presses that arrives is the lesson's, 8 presses of ↑ (the
+    // slowest arriving speed along that arrow).
+    const advice = adviseAim(world, handles, m, lesson.start, 1 / 24, start);
+    expect([advice.kind, advice.turn, advice.speed, advice.presses]).toEqual(['change', 0, TUTORIAL_SHORTFALL, 8]);
+    const hit = forecastLaunch(world, handles, m, lesson.hit, 1 / 24);
+    expect(hit.outcome).toBe('arrived');
+    expect(advice.forecast.end).toBe(hit.end);
+    // Told to turn: from the arriving launch turned 30 degrees inwards, the hint turns it back
+    // clockwise (outwards, positive) or changes the speed, and the launch it names arrives.
+    const turned = { angle: lesson.hit.angle - 30, speed: lesson.hit.speed };
+    const off = forecastLaunch(world, handles, m, turned, 1 / 24);
+    expect(off.outcome).toBe('missed');
+    const back = adviseAim(world, handles, m, turned, 1 / 24, off);
+    expect(back.kind).toBe('change');
+    const named = { angle: turned.angle + back.turn, speed: Math.round((turned.speed + back.speed) * 10) / 10 };
+    expect(forecastLaunch(world, handles, m, named, 1 / 24).outcome).toBe('arrived');
+    expect(back.presses).toBe(Math.abs(back.turn) / TURN_STEP + Math.round(Math.abs(back.speed) / SPEED_STEP));
+  });
+
+  test('the burn hint: the short launch’s course misses; the hint names a burn in presses now, and after those burns the course arrives', () => {
+    const { world, handles } = solarWorld(1);
+    const m = MISSIONS[0]!;
+    const aim = { angle: 0, speed: 2.5 };
+    const flight = launchProbe(world, handles, m, aim, planFlight(world, handles, m, aim, createFlightPlan()), 1 / 24);
+    for (let k = 0; k < 20 * 24; k++) {
+      step(world);
+      checkFlight(world, handles, flight);
+    }
+    const before = forecastCourse(world, handles, flight);
+    expect(before.outcome).toBe('missed');
+    const advice = adviseBurn(world, handles, flight, before);
+    expect(advice.kind).toBe('burn');
+    expect(advice.presses).toBeGreaterThan(0);
+    expect(advice.presses * BURN_STEP).toBeLessThanOrEqual(CORRECTION_FUEL + 1e-9);
+    // The burns made one after another, as the player presses the key: the course arrives.
+    for (let k = 0; k < advice.presses; k++) burnProbe(world, handles, flight, advice.direction, BURN_STEP, createFlightPlan());
+    const after = forecastCourse(world, handles, flight);
+    expect(after.outcome).toBe('arrived');
+    expect(after.end).toBe(advice.forecast.end);
+    expect(adviseBurn(world, handles, flight, after).kind).toBe('coast');
+    // The fuel runs out: no burn past CORRECTION_FUEL.
+    while (burnProbe(world, handles, flight, 'in', BURN_STEP, createFlightPlan()) > 0);
+    expect(flight.fuelUsed).toBeCloseTo(CORRECTION_FUEL, 9);
+    expect(adviseBurn(world, handles, flight, forecastCourse(world, handles, flight)).kind).toMatch(/^(empty|coast)$/);
+    expect(() => burnProbe(world, handles, flight, 'faster', -1, createFlightPlan())).toThrow(
+      /burnProbe: dv must be finite and > 0 km\/s, got -1/,
+    );
   });
 
   test('every mission can be reached: within two years of waiting some launch the plan calls a hit', () => {
     // From 2012-01-01, looked at every 60 days (6 hour steps); a coarse grid (30 degrees, 1 km/s), so
     // a hit on it means a broad window the player finds with the arrows (measured: Mars, Venus,
-    // Mercury and Saturn on day 0, Neptune 60, Uranus 120, Jupiter 180).
+    // Mercury and Saturn on day 0, Neptune 60, Uranus 120, Jupiter 180). Quick plans of 100 samples,
+    // as the hint's search makes them (a quarter of the time of 400; the same days).
     const { world, handles } = solarWorld(6);
     const plan = createFlightPlan();
     const reached = new Map<string, number>();
@@ -278,7 +294,7 @@ describe('missions', () => {
         if (reached.has(m.target)) continue;
         search: for (let speed = 1; speed <= 20; speed += 1)
           for (let angle = -150; angle <= 180; angle += 30)
-            if (planFlight(world, handles, m, { angle, speed }, plan).hit) {
+            if (planFlight(world, handles, m, { angle, speed }, plan, 100).hit) {
               reached.set(m.target, day);
               break search;
             }
@@ -286,6 +302,7 @@ describe('missions', () => {
       for (let k = 0; k < 60 * 4; k++) step(world);
     }
     expect([...reached.keys()].sort()).toEqual(MISSIONS.map((m) => m.target).sort());
+    expect(Object.fromEntries(reached)).toEqual({ Mars: 0, Venus: 0, Mercury: 0, Saturn: 0, Neptune: 60, Uranus: 120, Jupiter: 180 });
   });
 
   test('a planned miss by more than 3 zones does not arrive', () => {
