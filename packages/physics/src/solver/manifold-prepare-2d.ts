@@ -35,6 +35,7 @@ import {
   MR_BLOCK_VALID,
   MR_BODY_A,
   MR_BODY_B,
+  MR_BODY_MASK,
   MR_FRICTION_BOUND,
   MR_K11,
   MR_K12,
@@ -329,8 +330,8 @@ function prepareBlocks(cs: PhysicsWorld['collision'], R: Float64Array, n: number
     const r = i * MR_STRIDE;
     R[r + MR_BLOCK_VALID] = 0;
     if (R[r + MR_POINT_COUNT] !== 2) continue;
-    const oa = (R[r + MR_BODY_A]! | 0) * BS2_STRIDE,
-      ob = (R[r + MR_BODY_B]! | 0) * BS2_STRIDE;
+    const oa = (R[r + MR_BODY_A]! & MR_BODY_MASK) * BS2_STRIDE,
+      ob = (R[r + MR_BODY_B]! & MR_BODY_MASK) * BS2_STRIDE;
     const mA = sb[oa + BS2_INV_MASS]!,
       iA = sb[oa + BS2_INV_INERTIA]!,
       mB = sb[ob + BS2_INV_MASS]!,

@@ -34,6 +34,7 @@ import {
   MR_BLOCK_VALID,
   MR_BODY_A,
   MR_BODY_B,
+  MR_BODY_MASK,
   MR_FRICTION_BOUND,
   MR_K11,
   MR_K12,
@@ -114,8 +115,8 @@ export function warmStartManifolds(cs: CollisionState): void {
     sb = cs.bodyState;
   for (let i = 0, n = Math.min(cs.shapes.manifolds.count, MAX_MANIFOLDS); i < n; i++) {
     const r = i * MR_STRIDE;
-    const a = (R[r + MR_BODY_A]! | 0) * BS2_STRIDE,
-      b = (R[r + MR_BODY_B]! | 0) * BS2_STRIDE;
+    const a = (R[r + MR_BODY_A]! & MR_BODY_MASK) * BS2_STRIDE,
+      b = (R[r + MR_BODY_B]! & MR_BODY_MASK) * BS2_STRIDE;
     const mA = sb[a + BS2_INV_MASS]!,
       iA = sb[a + BS2_INV_INERTIA]!,
       mB = sb[b + BS2_INV_MASS]!,
@@ -240,8 +241,8 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean,
   // doubles) let V8 compute every offset below in 32-bit integers without overflow checks.
   for (let i = 0, n = Math.min(cs.shapes.manifolds.count, MAX_MANIFOLDS); i < n; i++) {
     const r = i * MR_STRIDE;
-    const ia = R[r + MR_BODY_A]! | 0,
-      ib = R[r + MR_BODY_B]! | 0;
+    const ia = R[r + MR_BODY_A]! & MR_BODY_MASK,
+      ib = R[r + MR_BODY_B]! & MR_BODY_MASK;
     const a = ia * BS2_STRIDE,
       b = ib * BS2_STRIDE;
     const mA = sb[a + BS2_INV_MASS]!,
@@ -467,8 +468,8 @@ export function applyManifoldRestitution(world: PhysicsWorld): void {
     const r = i * MR_STRIDE;
     const e = R[r + MR_RESTITUTION]!;
     if (e === 0) continue;
-    const a = (R[r + MR_BODY_A]! | 0) * BS2_STRIDE,
-      b = (R[r + MR_BODY_B]! | 0) * BS2_STRIDE;
+    const a = (R[r + MR_BODY_A]! & MR_BODY_MASK) * BS2_STRIDE,
+      b = (R[r + MR_BODY_B]! & MR_BODY_MASK) * BS2_STRIDE;
     const mA = sb[a + BS2_INV_MASS]!,
       iA = sb[a + BS2_INV_INERTIA]!,
       mB = sb[b + BS2_INV_MASS]!,
