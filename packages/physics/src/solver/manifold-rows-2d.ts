@@ -217,9 +217,44 @@ function solveBlock(R: Float64Array, r: number, c1: number, c2: number): boolean
 }
 
 /**
+ * The rolling resistance row of the manifold whose packed row starts at `r` (its `MR_ROLLING` > 0): the
+ * accumulated torque impulse about the normal, bounded by the rolling coefficient times the rolling
+ * radius times `total` (the manifold's normal impulse), updated against the relative spin `dw`
+ * (w_B - w_A, rad/s). Returns the impulse added, N m s (A gets minus it).
+ */
+function solveRolling(R: Float64Array, r: number, total: number, dw: number): number {
+  const old = R[r + MR_ROLLING_IMPULSE]!,
+    maxR = R[r + MR_ROLLING]! * total;
+  let next = old - R[r + MR_ROLLING_MASS]! * dw;
+  next = next < -maxR ? -maxR : next > maxR ? maxR : next;
+  R[r + MR_ROLLING_IMPULSE] = next;
+  return next - old;
+}
+
+/** Adds the normal impulses of the row whose first point starts at `o1` (two points if `two`) to their step totals. */
+function accumulateRow(R: Float64Array, o1: number, two: boolean): void {
+  R[o1 + MP_TOTAL_NORMAL_IMPULSE] = R[o1 + MP_TOTAL_NORMAL_IMPULSE]! + R[o1 + MP_NORMAL_IMPULSE]!;
+  const o2 = o1 + MP_STRIDE;
+  if (two) R[o2 + MP_TOTAL_NORMAL_IMPULSE] = R[o2 + MP_TOTAL_NORMAL_IMPULSE]! + R[o2 + MP_NORMAL_IMPULSE]!;
+}
+
+/**
  * One pass over the manifolds: normal rows (soft bias if `useBias`), friction, rolling resistance, with
  * the softness `prepareManifolds` chose. With `accumulate` (the substep's last pass), each point's
  * impulse is then added to its step total, as accumulateManifoldImpulses does.
+ *
+ * Per row: the bodies' velocities and the row's normal impulses are read into locals once and written
+ * back once (offsets in 32-bit integers without overflow checks: the row count is bounded by
+ * MAX_MANIFOLDS, the body indices masked by MR_BODY_MASK); points 1 and 2 are unrolled, their anchors
+ * read once (a one-point row reads its unused second point's slots, inside the row, and never uses
+ * them). Each normal row's regime: speculative (s > 0: bias s / h_s, rigid) or, with the bias on, soft.
+ * A two-point row with a valid block solves both normal rows at once, as the linear complementarity
+ * problem K x + c = w, x >= 0, w >= 0, x . w = 0 of `solveBlock` (its cases inline: both points push,
+ * then one lets go, then both), with x the new accumulated impulses and c from each row's own regime,
+ * c_i = s_m (v_n,i + bias_i) - (1 - s_i) (K x_old)_i: the soft row's update written for both rows (s_m,
+ * s_i its mass and impulse scales). Otherwise point after point, with the velocities the one before
+ * left. Then friction, point 1 then point 2 (|lambda_t| <= bound lambda_n), and rolling resistance. A
+ * row that carries an impulse (`pushes`) marks its bodies as not in free flight.
  * @category Collision
  */
 export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean, accumulate = false): void {
@@ -237,8 +272,6 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean,
     impulseRigid = sr[2]!;
   const invH = 1 / hs,
     push = cs.settings.contactPushSpeed;
-  // The row count bounded by MAX_MANIFOLDS and the body indices made integers (`| 0`: the rows hold
-  // doubles) let V8 compute every offset below in 32-bit integers without overflow checks.
   for (let i = 0, n = Math.min(cs.shapes.manifolds.count, MAX_MANIFOLDS); i < n; i++) {
     const r = i * MR_STRIDE;
     const ia = R[r + MR_BODY_A]! & MR_BODY_MASK,
@@ -267,8 +300,6 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean,
     const biasRate = rigidPartner ? biasRigid : biasSoft,
       softMass = rigidPartner ? massRigid : massSoft,
       softImpulse = rigidPartner ? impulseRigid : impulseSoft;
-    // Points 1 and 2 unrolled, their anchors read once. A one-point row reads its unused second
-    // point's slots (inside the row) and never uses them.
     const two = R[r + MR_POINT_COUNT] === 2;
     const o1 = r + MR_POINT0,
       o2 = o1 + MP_STRIDE;
@@ -282,7 +313,6 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean,
       r2by = R[o2 + MP_RBY]!;
     const s1 = R[o1 + MP_SEPARATION]! + (dbx - tb * r1by - dax + ta * r1ay) * nx + (dby + tb * r1bx - day - ta * r1ax) * ny;
     const s2 = R[o2 + MP_SEPARATION]! + (dbx - tb * r2by - dax + ta * r2ay) * nx + (dby + tb * r2bx - day - ta * r2ax) * ny;
-    // Each normal row's regime: speculative (s > 0: bias s / h_s, rigid) or, with the bias on, soft.
     let b1 = 0,
       m1 = 1,
       i1 = 0,
@@ -303,29 +333,46 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean,
       m2 = softMass;
       i2 = softImpulse;
     }
+    let l1 = R[o1 + MP_NORMAL_IMPULSE]!,
+      l2 = R[o2 + MP_NORMAL_IMPULSE]!;
     let total = 0;
     let solved = false;
     if (R[r + MR_BLOCK_VALID] === 1) {
-      // Both points at once, as the linear complementarity problem K x + c = w, x >= 0, w >= 0,
-      // x . w = 0 (Box2D 2.x's block solver, its four cases tried in turn), with x the new accumulated
-      // impulses and c from each row's own regime: c_i = s_m (v_n,i + bias_i) - (1 - s_i) (K x_old)_i,
-      // which is the soft row's update written for both rows (s_m, s_i its mass and impulse scales).
       const vn1 = (vbx - wb * r1by - vax + wa * r1ay) * nx + (vby + wb * r1bx - vay - wa * r1ax) * ny;
       const vn2 = (vbx - wb * r2by - vax + wa * r2ay) * nx + (vby + wb * r2bx - vay - wa * r2ax) * ny;
-      const l1 = R[o1 + MP_NORMAL_IMPULSE]!,
-        l2 = R[o2 + MP_NORMAL_IMPULSE]!;
       const K11 = R[r + MR_K11]!,
         K22 = R[r + MR_K22]!,
         K12 = R[r + MR_K12]!;
       const c1 = m1 * (vn1 + b1) - (1 - i1) * (K11 * l1 + K12 * l2);
       const c2 = m2 * (vn2 + b2) - (1 - i2) * (K12 * l1 + K22 * l2);
-      if (solveBlock(R, r, c1, c2)) {
-        const n1 = R[o1 + MP_NORMAL_IMPULSE]!,
-          n2 = R[o2 + MP_NORMAL_IMPULSE]!;
+      const B11 = R[r + MR_B11]!,
+        B12 = R[r + MR_B12]!,
+        B22 = R[r + MR_B22]!;
+      let n1 = -(B11 * c1 + B12 * c2),
+        n2 = -(B12 * c1 + B22 * c2);
+      solved = n1 >= 0 && n2 >= 0;
+      if (!solved) {
+        n1 = -c1 / K11;
+        n2 = 0;
+        solved = n1 >= 0 && K12 * n1 + c2 >= 0;
+      }
+      if (!solved) {
+        n1 = 0;
+        n2 = -c2 / K22;
+        solved = n2 >= 0 && K12 * n2 + c1 >= 0;
+      }
+      if (!solved) {
+        n1 = 0;
+        n2 = 0;
+        solved = c1 >= 0 && c2 >= 0;
+      }
+      if (solved) {
         const d1 = n1 - l1,
           d2 = n2 - l2;
         if (d1 > R[o1 + MP_MAX_NORMAL_IMPULSE]!) R[o1 + MP_MAX_NORMAL_IMPULSE] = d1;
         if (d2 > R[o2 + MP_MAX_NORMAL_IMPULSE]!) R[o2 + MP_MAX_NORMAL_IMPULSE] = d2;
+        l1 = n1;
+        l2 = n2;
         total = n1 + n2;
         const P1x = d1 * nx,
           P1y = d1 * ny,
@@ -337,25 +384,21 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean,
         vbx += mB * (P1x + P2x);
         vby += mB * (P1y + P2y);
         wb += iB * (r1bx * P1y - r1by * P1x + r2bx * P2y - r2by * P2x);
-        solved = true;
       }
     }
     for (let p = 0; p < (two ? 2 : 1) && !solved; p++) {
-      // Point after point, with the velocities the one before left.
       const o = o1 + p * MP_STRIDE;
       const rax = R[o + MP_RAX]!,
         ray = R[o + MP_RAY]!,
         rbx = R[o + MP_RBX]!,
         rby = R[o + MP_RBY]!;
-      const bias = p === 0 ? b1 : b2,
-        massScale = p === 0 ? m1 : m2,
-        impulseScale = p === 0 ? i1 : i2;
+      const old = p === 0 ? l1 : l2;
       const vn = (vbx - wb * rby - vax + wa * ray) * nx + (vby + wb * rbx - vay - wa * rax) * ny;
-      const old = R[o + MP_NORMAL_IMPULSE]!;
-      let next = old - R[o + MP_NORMAL_MASS]! * massScale * (vn + bias) - impulseScale * old;
+      let next = old - R[o + MP_NORMAL_MASS]! * (p === 0 ? m1 : m2) * (vn + (p === 0 ? b1 : b2)) - (p === 0 ? i1 : i2) * old;
       if (next < 0) next = 0;
       const dl = next - old;
-      R[o + MP_NORMAL_IMPULSE] = next;
+      if (p === 0) l1 = next;
+      else l2 = next;
       total += next;
       if (dl > R[o + MP_MAX_NORMAL_IMPULSE]!) R[o + MP_MAX_NORMAL_IMPULSE] = dl;
       const Px = dl * nx,
@@ -367,18 +410,20 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean,
       vby += mB * Py;
       wb += iB * (rbx * Py - rby * Px);
     }
-    // Friction, point 1 then point 2: |lambda_t| <= bound lambda_n.
+    R[o1 + MP_NORMAL_IMPULSE] = l1;
+    if (two) R[o2 + MP_NORMAL_IMPULSE] = l2;
     const bound = R[r + MR_FRICTION_BOUND]!;
+    let f1 = R[o1 + MP_TANGENT_IMPULSE]!,
+      f2 = 0;
     {
       const dvx = vbx - wb * r1by - vax + wa * r1ay,
         dvy = vby + wb * r1bx - vay - wa * r1ax;
       const vt = -dvx * ny + dvy * nx;
-      const old = R[o1 + MP_TANGENT_IMPULSE]!,
-        maxF = bound * R[o1 + MP_NORMAL_IMPULSE]!;
-      let next = old - R[o1 + MP_TANGENT_MASS]! * vt;
+      const maxF = bound * l1;
+      let next = f1 - R[o1 + MP_TANGENT_MASS]! * vt;
       next = next < -maxF ? -maxF : next > maxF ? maxF : next;
-      const dl = next - old;
-      R[o1 + MP_TANGENT_IMPULSE] = next;
+      const dl = next - f1;
+      f1 = next;
       const Px = -dl * ny,
         Py = dl * nx;
       vax -= mA * Px;
@@ -388,15 +433,17 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean,
       vby += mB * Py;
       wb += iB * (r1bx * Py - r1by * Px);
     }
+    R[o1 + MP_TANGENT_IMPULSE] = f1;
     if (two) {
+      f2 = R[o2 + MP_TANGENT_IMPULSE]!;
       const dvx = vbx - wb * r2by - vax + wa * r2ay,
         dvy = vby + wb * r2bx - vay - wa * r2ax;
       const vt = -dvx * ny + dvy * nx;
-      const old = R[o2 + MP_TANGENT_IMPULSE]!,
-        maxF = bound * R[o2 + MP_NORMAL_IMPULSE]!;
-      let next = old - R[o2 + MP_TANGENT_MASS]! * vt;
+      const maxF = bound * l2;
+      let next = f2 - R[o2 + MP_TANGENT_MASS]! * vt;
       next = next < -maxF ? -maxF : next > maxF ? maxF : next;
-      const dl = next - old;
+      const dl = next - f2;
+      f2 = next;
       R[o2 + MP_TANGENT_IMPULSE] = next;
       const Px = -dl * ny,
         Py = dl * nx;
@@ -407,14 +454,8 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean,
       vby += mB * Py;
       wb += iB * (r2bx * Py - r2by * Px);
     }
-    const roll = R[r + MR_ROLLING]!;
-    if (roll > 0) {
-      const old = R[r + MR_ROLLING_IMPULSE]!,
-        maxR = roll * total;
-      let next = old - R[r + MR_ROLLING_MASS]! * (wb - wa);
-      next = next < -maxR ? -maxR : next > maxR ? maxR : next;
-      const dl = next - old;
-      R[r + MR_ROLLING_IMPULSE] = next;
+    if (R[r + MR_ROLLING]! > 0) {
+      const dl = solveRolling(R, r, total, wb - wa);
       wa -= iA * dl;
       wb += iB * dl;
     }
@@ -424,14 +465,11 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean,
     sb[b + BS2_VX] = vbx;
     sb[b + BS2_VY] = vby;
     sb[b + BS2_W] = wb;
-    if (total > 0 || pushes(R, r)) {
+    if (total > 0 || l1 !== 0 || f1 !== 0 || (two && (l2 !== 0 || f2 !== 0)) || R[r + MR_ROLLING_IMPULSE] !== 0) {
       sb[a + BS2_PUSHED] = 1;
       sb[b + BS2_PUSHED] = 1;
     }
-    if (accumulate) {
-      R[o1 + MP_TOTAL_NORMAL_IMPULSE] = R[o1 + MP_TOTAL_NORMAL_IMPULSE]! + R[o1 + MP_NORMAL_IMPULSE]!;
-      if (two) R[o2 + MP_TOTAL_NORMAL_IMPULSE] = R[o2 + MP_TOTAL_NORMAL_IMPULSE]! + R[o2 + MP_NORMAL_IMPULSE]!;
-    }
+    if (accumulate) accumulateRow(R, o1, two);
   }
 }
 
