@@ -67,8 +67,11 @@ import {
  *   against infinite mass, push-out speed capped), accumulated impulse >= 0, warm-started from the
  *   previous step's point with the same feature id;
  * - friction rows along t = (-n_y, n_x): |lambda_t| <= mu lambda_n per point (mu_s while sticking);
- * - a row that carries an impulse marks its bodies as pushed (the `pushed` slot of the packed body,
- *   as ball contacts and joints do), so they do not get the free-flight position correction;
+ * - a row that carries an impulse (a point's normal or friction impulse, or the rolling impulse, not
+ *   0) marks its bodies as pushed (the `pushed` slot of the packed body, as ball contacts and joints
+ *   do): they were not in free flight this step, and finishBodies does not give them the free-flight
+ *   position correction (-g h h_s / 2), which on a resting box is a drop of 0.34 mm a step at 4
+ *   substeps of 1/60 s that the contact then pushes back: on a slope, a creep of mm a second;
  * - rolling resistance (circles and capsules): a torque row on w_B - w_A bounded by the coefficient
  *   times the rolling radius times the manifold's normal impulse (Box2D v3.1's rolling resistance);
  * - restitution after the substeps (Box2D v3 b2ApplyRestitution): a point that approached faster than
@@ -129,18 +132,32 @@ export function warmStartManifolds(cs: CollisionState): void {
       vbx = sb[b + BS2_VX]!,
       vby = sb[b + BS2_VY]!,
       wb = sb[b + BS2_W]!;
-    for (let p = 0, m = R[r + MR_POINT_COUNT]!; p < m; p++) {
-      const o = r + MR_POINT0 + p * MP_STRIDE;
-      const ln = R[o + MP_NORMAL_IMPULSE]!,
-        lt = R[o + MP_TANGENT_IMPULSE]!;
-      const Px = ln * nx - lt * ny,
-        Py = ln * ny + lt * nx;
-      wa -= iA * (R[o + MP_RAX]! * Py - R[o + MP_RAY]! * Px);
-      vax -= mA * Px;
-      vay -= mA * Py;
-      wb += iB * (R[o + MP_RBX]! * Py - R[o + MP_RBY]! * Px);
-      vbx += mB * Px;
-      vby += mB * Py;
+    // Points 1 and 2 unrolled; whether the row carries an impulse (it pushes its bodies) from the impulses read.
+    const o1 = r + MR_POINT0,
+      o2 = o1 + MP_STRIDE;
+    const ln1 = R[o1 + MP_NORMAL_IMPULSE]!,
+      lt1 = R[o1 + MP_TANGENT_IMPULSE]!;
+    const P1x = ln1 * nx - lt1 * ny,
+      P1y = ln1 * ny + lt1 * nx;
+    wa -= iA * (R[o1 + MP_RAX]! * P1y - R[o1 + MP_RAY]! * P1x);
+    vax -= mA * P1x;
+    vay -= mA * P1y;
+    wb += iB * (R[o1 + MP_RBX]! * P1y - R[o1 + MP_RBY]! * P1x);
+    vbx += mB * P1x;
+    vby += mB * P1y;
+    let carries = ln1 !== 0 || lt1 !== 0;
+    if (R[r + MR_POINT_COUNT] === 2) {
+      const ln2 = R[o2 + MP_NORMAL_IMPULSE]!,
+        lt2 = R[o2 + MP_TANGENT_IMPULSE]!;
+      const P2x = ln2 * nx - lt2 * ny,
+        P2y = ln2 * ny + lt2 * nx;
+      wa -= iA * (R[o2 + MP_RAX]! * P2y - R[o2 + MP_RAY]! * P2x);
+      vax -= mA * P2x;
+      vay -= mA * P2y;
+      wb += iB * (R[o2 + MP_RBX]! * P2y - R[o2 + MP_RBY]! * P2x);
+      vbx += mB * P2x;
+      vby += mB * P2y;
+      carries = carries || ln2 !== 0 || lt2 !== 0;
     }
     const lr = R[r + MR_ROLLING_IMPULSE]!;
     wa -= iA * lr;
@@ -151,26 +168,11 @@ export function warmStartManifolds(cs: CollisionState): void {
     sb[b + BS2_VX] = vbx;
     sb[b + BS2_VY] = vby;
     sb[b + BS2_W] = wb;
-    if (pushes(R, r)) {
+    if (carries || lr !== 0) {
       sb[a + BS2_PUSHED] = 1;
       sb[b + BS2_PUSHED] = 1;
     }
   }
-}
-
-/**
- * Whether the manifold whose packed row starts at `r` carries an impulse: then its bodies were not in
- * free flight this step, and the contact solver's `pushed` slot (index 7 of a packed body) keeps
- * finishBodies from giving them the free-flight position correction (-g h h_s / 2), which on a resting
- * box is a drop of 0.34 mm a step at 4 substeps of 1/60 s that the contact then pushes back: on a
- * slope, a creep of mm a second.
- */
-function pushes(R: Float64Array, r: number): boolean {
-  for (let p = 0, m = R[r + MR_POINT_COUNT]!; p < m; p++) {
-    const o = r + MR_POINT0 + p * MP_STRIDE;
-    if (R[o + MP_NORMAL_IMPULSE] !== 0 || R[o + MP_TANGENT_IMPULSE] !== 0) return true;
-  }
-  return R[r + MR_ROLLING_IMPULSE] !== 0;
 }
 
 /**
@@ -254,7 +256,7 @@ function accumulateRow(R: Float64Array, o1: number, two: boolean): void {
  * c_i = s_m (v_n,i + bias_i) - (1 - s_i) (K x_old)_i: the soft row's update written for both rows (s_m,
  * s_i its mass and impulse scales). Otherwise point after point, with the velocities the one before
  * left. Then friction, point 1 then point 2 (|lambda_t| <= bound lambda_n), and rolling resistance. A
- * row that carries an impulse (`pushes`) marks its bodies as not in free flight.
+ * row that carries an impulse marks its bodies as pushed (see the module comment).
  * @category Collision
  */
 export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean, accumulate = false): void {
