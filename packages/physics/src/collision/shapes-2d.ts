@@ -107,6 +107,42 @@ function ensureScratch(sc: ShapeScratch, n: number): void {
 }
 
 /**
+ * Per collider of this step (gatherColliders fills it, collidePairs reads it): the shape entity whose
+ * geometry it has, the first of a run of colliders with identical geometry (a pyramid's boxes share
+ * one), or -1 for a ball body. The pair loop copies a geometry out of the shape store only when it
+ * differs from the one it holds: the store's vertex, normal, count and radius arrays are read at random
+ * once a pair otherwise, each a cache miss in a large pile.
+ */
+let geometryOf = new Int32Array(0);
+
+/** `geometryOf` with room for `n` colliders (grown only in a world's first steps, outside the loops). */
+function roomForGeometry(n: number): Int32Array {
+  if (geometryOf.length < n) geometryOf = new Int32Array(Math.max(n, 2 * geometryOf.length));
+  return geometryOf;
+}
+
+/**
+ * Whether shapes a and b of store S have the same geometry, number for number (kind, vertex count,
+ * radius, vertices and normals; -0 and 0 told apart), so that one's copy collides as the other would.
+ */
+function sameGeometry(S: ShapeStore, a: number, b: number): boolean {
+  const n = S.count[a]!;
+  if (n !== S.count[b] || S.kind[a] !== S.kind[b] || !same(S.radius[a]!, S.radius[b]!)) return false;
+  const oa = SHAPE_STRIDE * a,
+    ob = SHAPE_STRIDE * b;
+  for (let k = 0; k < n; k++) {
+    if (!same(S.vx[oa + k]!, S.vx[ob + k]!) || !same(S.vy[oa + k]!, S.vy[ob + k]!)) return false;
+    if (!same(S.nx[oa + k]!, S.nx[ob + k]!) || !same(S.ny[oa + k]!, S.ny[ob + k]!)) return false;
+  }
+  return true;
+}
+
+/** x and y are the same number (Object.is without NaN: a NaN geometry is never shared). */
+function same(x: number, y: number): boolean {
+  return x === y && (x !== 0 || 1 / x === 1 / y);
+}
+
+/**
  * Lists this step's colliders (shape entities, and ball bodies as circles), fills the per-body solver
  * scratch of shape bodies (body type, inverse mass and inertia) and each collider's start-of-step
  * transform and fattened box.
@@ -143,6 +179,8 @@ function gatherColliders(world: PhysicsWorld, st: ShapeCollisionState): void {
   const mark = ++st.bodyMark;
   st.anyMoving = false;
   const bodyMarks = st.bodyMarks;
+  const geometry = roomForGeometry(n);
+  let shared = -1; // the shape whose geometry the last run of colliders has
   for (let i = 0; i < n; i++) {
     const isBall = i >= shapes.length;
     const e = isBall ? balls[i - shapes.length]! : shapes[i]!;
@@ -200,12 +238,15 @@ function gatherColliders(world: PhysicsWorld, st: ShapeCollisionState): void {
       reach = 0,
       r: number;
     if (isBall) {
+      geometry[i] = -1;
       r = c.Ball.radius[b]!;
       x0 = x;
       x1 = x;
       y0 = y;
       y1 = y;
     } else {
+      if (shared < 0 || !sameGeometry(S, e, shared)) shared = e;
+      geometry[i] = shared;
       r = R[e]!;
       const o = SHAPE_STRIDE * e;
       for (let k = 0, m = CNT[e]!; k < m; k++) {
@@ -338,6 +379,13 @@ function ballGeometry(radius: number, g: ConvexGeometry): void {
   g.ny[0] = 1;
 }
 
+/** Fills `g` with the geometry of shape `geo` (geometryOf), or for -1 a ball's circle of `radius` (m); returns geo. */
+function fillGeometry(S: ShapeStore, geo: number, radius: number, g: ConvexGeometry): number {
+  if (geo < 0) ballGeometry(radius, g);
+  else shapeGeometry(S, geo, g);
+  return geo;
+}
+
 /** Narrowphase of the candidate pairs: manifolds for the solver, overlaps for sensors. */
 function collidePairs(world: PhysicsWorld, st: ShapeCollisionState): void {
   const c = world.components,
@@ -373,8 +421,11 @@ function collidePairs(world: PhysicsWorld, st: ShapeCollisionState): void {
     maxY = sc.maxY;
   const sensorOf = S.sensor,
     bodyW = st.bodyW;
-  // Collider whose geometry gA holds: pairs come collider by collider from the grid, so A repeats.
-  let inA = -1;
+  // The shapes whose geometry gA and gB hold (geometryOf; -1: none, or a ball's): pairs come collider by
+  // collider from the grid, so A repeats, and colliders of one geometry share it.
+  const geometry = geometryOf;
+  let inA = -1,
+    inB = -1;
   for (let k = 0, n = sc.pairCount; k < n; k++) {
     let i = pairI[k]!,
       j = pairJ[k]!;
@@ -405,13 +456,10 @@ function collidePairs(world: PhysicsWorld, st: ShapeCollisionState): void {
     if (aBall && bBall) continue; // ball-ball: collision/narrowphase/balls.ts
     if (!shouldCollide(S, ea, aBall, eb, bBall)) continue;
     if (jointKeepsApart(world.joints, ba, bb)) continue;
-    if (i !== inA) {
-      if (aBall) ballGeometry(ballRadius[ea]!, gA);
-      else shapeGeometry(S, ea, gA);
-      inA = i;
-    }
-    if (bBall) ballGeometry(ballRadius[eb]!, gB);
-    else shapeGeometry(S, eb, gB);
+    const geoA = geometry[i]!,
+      geoB = geometry[j]!;
+    if (geoA < 0 || geoA !== inA) inA = fillGeometry(S, geoA, ballRadius[ea]!, gA);
+    if (geoB < 0 || geoB !== inB) inB = fillGeometry(S, geoB, ballRadius[eb]!, gB);
     const sensor = (!aBall && sensorOf[ea] === 1) || (!bBall && sensorOf[eb] === 1);
     const tA = type[ba]!,
       tB = type[bb]!;
