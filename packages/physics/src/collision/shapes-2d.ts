@@ -7,8 +7,9 @@ import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
 import { SHAPE_STRIDE, type ShapeStore } from '../world/shape-store-2d.js';
 import { findPairs } from './broadphase/pairs-2d.js';
+import { gatherColliders, sharedGeometries } from './colliders-2d.js';
 import { pushEvent } from './events.js';
-import { BALL, growManifoldBuffer, MOVING, type ShapeCollisionState, type ShapeScratch } from './manifolds-2d.js';
+import { BALL, growManifoldBuffer, type ShapeCollisionState } from './manifolds-2d.js';
 import { collideHalfPlane, collideShapes, collideShapesAt, createManifold, type Manifold, PairPose } from './narrowphase/manifold-2d.js';
 import { BodyType } from './state.js';
 
@@ -79,172 +80,6 @@ export function shapeCollisionSystem(world: PhysicsWorld): void {
 
 /** Passes of the shape collision after which no more sleeping islands are woken within the step. */
 const MAX_WAKE_PASSES = 8;
-
-function ensureScratch(sc: ShapeScratch, n: number): void {
-  if (sc.shape.length >= n) return;
-  let m = Math.max(64, sc.shape.length);
-  while (m < n) m *= 2;
-  const f = (): Float64Array => new Float64Array(m);
-  const i = (): Int32Array => new Int32Array(m);
-  sc.shape = i();
-  sc.body = i();
-  sc.x = f();
-  sc.y = f();
-  sc.c = f();
-  sc.s = f();
-  sc.minX = f();
-  sc.minY = f();
-  sc.maxX = f();
-  sc.maxY = f();
-  sc.spec = f();
-  sc.size = f();
-  sc.flags = new Uint8Array(m);
-  sc.cellX = i();
-  sc.cellY = i();
-  sc.bucket = i();
-  sc.sorted = i();
-  sc.oversized = i();
-}
-
-/**
- * Lists this step's colliders (shape entities, and ball bodies as circles), fills the per-body solver
- * scratch of shape bodies (body type, inverse mass and inertia) and each collider's start-of-step
- * transform and fattened box.
- */
-function gatherColliders(world: PhysicsWorld, st: ShapeCollisionState): void {
-  const c = world.components,
-    cs = world.collision,
-    sc = st.scratch;
-  const shapes = query(world, [c.Shape]);
-  const balls = query(world, [c.Position, c.Ball]);
-  const n = shapes.length + balls.length;
-  ensureScratch(sc, n);
-  sc.count = n;
-  const S = c.Shape;
-  const type = cs.bodyType,
-    invMass = cs.invMass,
-    invInertia = cs.invInertia;
-  const px = c.Position.x,
-    py = c.Position.y,
-    ox = c.PreviousPosition.x,
-    oy = c.PreviousPosition.y;
-  const vx = c.Velocity.x,
-    vy = c.Velocity.y,
-    wz = c.AngularVelocity.z,
-    ang = c.Angle.value;
-  const h = world.h,
-    spec0 = cs.settings.speculativeDistance;
-  const halfSpec = 0.5 * spec0;
-  const SX = S.vx,
-    SY = S.vy,
-    R = S.radius,
-    CNT = S.count,
-    BODY = S.body;
-  const mark = ++st.bodyMark;
-  st.anyMoving = false;
-  const bodyMarks = st.bodyMarks;
-  for (let i = 0; i < n; i++) {
-    const isBall = i >= shapes.length;
-    const e = isBall ? balls[i - shapes.length]! : shapes[i]!;
-    const b = isBall ? e : BODY[e]!;
-    sc.shape[i] = e;
-    sc.body[i] = b;
-    let t: number;
-    if (!isBall && bodyMarks[b] !== mark) {
-      // Shape bodies: classify once a step (balls were classified by the ball broadphase).
-      bodyMarks[b] = mark;
-      if (hasComponent(world, b, c.Static)) {
-        t = BodyType.Static;
-        invMass[b] = 0;
-        invInertia[b] = 0;
-        ox[b] = px[b]!;
-        oy[b] = py[b]!;
-      } else if (hasComponent(world, b, c.Kinematic)) {
-        t = BodyType.Kinematic;
-        invMass[b] = 0;
-        invInertia[b] = 0;
-      } else if (hasComponent(world, b, c.Sleeping)) {
-        t = BodyType.Sleeping;
-        invMass[b] = 0;
-        invInertia[b] = 0;
-      } else {
-        t = BodyType.Dynamic;
-        invMass[b] = c.Mass.inv[b]!;
-        invInertia[b] = hasComponent(world, b, c.Inertia) && hasComponent(world, b, c.AngularVelocity) ? c.Inertia.inv[b]! : 0;
-      }
-      type[b] = t;
-      const turns = (t === BodyType.Dynamic || t === BodyType.Kinematic) && hasComponent(world, b, c.AngularVelocity);
-      st.bodyW[b] = turns ? wz[b]! : 0;
-      st.bodyAngle0[b] = (hasComponent(world, b, c.Angle) ? ang[b]! : 0) - st.bodyW[b]! * h;
-    } else if (isBall) {
-      st.bodyW[b] = type[b] === BodyType.Dynamic && hasComponent(world, b, c.AngularVelocity) ? wz[b]! : 0;
-      st.bodyAngle0[b] = 0;
-    }
-    t = type[b]!;
-    const moving = t === BodyType.Dynamic || t === BodyType.Kinematic;
-    sc.flags[i] = (moving ? MOVING : 0) | (isBall && !hasComponent(world, b, c.Shape) ? BALL : 0);
-    if (moving) st.anyMoving = true;
-    const x = ox[b]!,
-      y = oy[b]!,
-      a0 = st.bodyAngle0[b]!;
-    const co = Math.cos(a0),
-      si = Math.sin(a0);
-    sc.x[i] = x;
-    sc.y[i] = y;
-    sc.c[i] = co;
-    sc.s[i] = si;
-    let x0 = Infinity,
-      y0 = Infinity,
-      x1 = -Infinity,
-      y1 = -Infinity,
-      reach = 0,
-      r: number;
-    if (isBall) {
-      r = c.Ball.radius[b]!;
-      x0 = x;
-      x1 = x;
-      y0 = y;
-      y1 = y;
-    } else {
-      r = R[e]!;
-      const o = SHAPE_STRIDE * e;
-      for (let k = 0, m = CNT[e]!; k < m; k++) {
-        const lx = SX[o + k]!,
-          ly = SY[o + k]!;
-        const wx = x + co * lx - si * ly,
-          wy = y + si * lx + co * ly;
-        if (wx < x0) x0 = wx;
-        if (wx > x1) x1 = wx;
-        if (wy < y0) y0 = wy;
-        if (wy > y1) y1 = wy;
-        const d2 = lx * lx + ly * ly;
-        if (d2 > reach) reach = d2;
-      }
-    }
-    reach = Math.sqrt(reach) + r;
-    const size = 0.5 * Math.min(x1 - x0, y1 - y0) + r;
-    const spec = spec0 < SPECULATIVE_FRACTION * size ? spec0 : SPECULATIVE_FRACTION * size;
-    sc.spec[i] = spec;
-    sc.size[i] = size;
-    let pad = r + (spec < halfSpec ? spec : halfSpec);
-    if (moving) {
-      const sx = vx[b]!,
-        sy = vy[b]!;
-      pad += Math.sqrt(sx * sx + sy * sy) * h + Math.abs(st.bodyW[b]!) * h * reach;
-    }
-    sc.minX[i] = x0 - pad;
-    sc.minY[i] = y0 - pad;
-    sc.maxX[i] = x1 + pad;
-    sc.maxY[i] = y1 + pad;
-  }
-}
-
-/**
- * Speculative distance of a shape as a fraction of its size (half its smaller extent), at most the
- * world's `speculativeDistance`: 0.02 m for a 1 m box, Box2D's 4 linear slops, so neighbours standing
- * 5 cm apart in a row do not become contacts; smaller shapes get proportionally less.
- */
-const SPECULATIVE_FRACTION = 0.04;
 
 /**
  * Whether the filters of shapes a and b (ball bodies count as category 1, mask all, group 0) let them collide.
@@ -338,6 +173,13 @@ function ballGeometry(radius: number, g: ConvexGeometry): void {
   g.ny[0] = 1;
 }
 
+/** Fills `g` with the geometry of shape `geo` (sharedGeometries), or for -1 a ball's circle of `radius` (m); returns geo. */
+function fillGeometry(S: ShapeStore, geo: number, radius: number, g: ConvexGeometry): number {
+  if (geo < 0) ballGeometry(radius, g);
+  else shapeGeometry(S, geo, g);
+  return geo;
+}
+
 /** Narrowphase of the candidate pairs: manifolds for the solver, overlaps for sensors. */
 function collidePairs(world: PhysicsWorld, st: ShapeCollisionState): void {
   const c = world.components,
@@ -373,8 +215,11 @@ function collidePairs(world: PhysicsWorld, st: ShapeCollisionState): void {
     maxY = sc.maxY;
   const sensorOf = S.sensor,
     bodyW = st.bodyW;
-  // Collider whose geometry gA holds: pairs come collider by collider from the grid, so A repeats.
-  let inA = -1;
+  // The shapes whose geometry gA and gB hold (colliders-2d.ts sharedGeometries; -1: none, or a ball's): pairs come collider by
+  // collider from the grid, so A repeats, and colliders of one geometry share it.
+  const geometry = sharedGeometries();
+  let inA = -1,
+    inB = -1;
   for (let k = 0, n = sc.pairCount; k < n; k++) {
     let i = pairI[k]!,
       j = pairJ[k]!;
@@ -405,13 +250,10 @@ function collidePairs(world: PhysicsWorld, st: ShapeCollisionState): void {
     if (aBall && bBall) continue; // ball-ball: collision/narrowphase/balls.ts
     if (!shouldCollide(S, ea, aBall, eb, bBall)) continue;
     if (jointKeepsApart(world.joints, ba, bb)) continue;
-    if (i !== inA) {
-      if (aBall) ballGeometry(ballRadius[ea]!, gA);
-      else shapeGeometry(S, ea, gA);
-      inA = i;
-    }
-    if (bBall) ballGeometry(ballRadius[eb]!, gB);
-    else shapeGeometry(S, eb, gB);
+    const geoA = geometry[i]!,
+      geoB = geometry[j]!;
+    if (geoA < 0 || geoA !== inA) inA = fillGeometry(S, geoA, ballRadius[ea]!, gA);
+    if (geoB < 0 || geoB !== inB) inB = fillGeometry(S, geoB, ballRadius[eb]!, gB);
     const sensor = (!aBall && sensorOf[ea] === 1) || (!bBall && sensorOf[eb] === 1);
     const tA = type[ba]!,
       tB = type[bb]!;

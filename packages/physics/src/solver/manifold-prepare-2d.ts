@@ -1,6 +1,6 @@
 import { keepWhileAsleep, pushEvent, resumeAfterSleep } from '../collision/events.js';
 import { MAX_MANIFOLDS } from '../collision/manifold-limits-2d.js';
-import { findPrevious, rotateManifolds } from '../collision/manifolds-2d.js';
+import { findPrevious, rotateManifolds, type ShapeCollisionState } from '../collision/manifolds-2d.js';
 import { BodyType } from '../collision/state.js';
 import type { PhysicsWorld } from '../world/options.js';
 import {
@@ -35,6 +35,7 @@ import {
   MR_BLOCK_VALID,
   MR_BODY_A,
   MR_BODY_B,
+  MR_BODY_MASK,
   MR_FRICTION_BOUND,
   MR_K11,
   MR_K12,
@@ -96,6 +97,19 @@ function withRoom(list: Int32Array, n: number): Int32Array {
   const grown = new Int32Array(Math.max(n, 2 * list.length));
   grown.set(list);
   return grown;
+}
+
+/**
+ * The previous step's row of shape pair (a, b), or -1: row `guess` if it holds that pair, else the
+ * one findPrevious finds in the hash. A pair is in a step's rows once, so both give the same row; the
+ * pairs come in nearly the same order every step, and most often the previous row of the next pair
+ * lies as far from its own row as the last one's did: found without a hash probe (a cache miss each
+ * in a large pile), and read in sequence.
+ */
+function previousRow(st: ShapeCollisionState, guess: number, a: number, b: number): number {
+  const prev = st.previous;
+  if (guess >= 0 && guess < prev.count && prev.shapeA[guess] === a && prev.shapeB[guess] === b) return guess;
+  return findPrevious(st, a, b);
 }
 
 /**
@@ -207,6 +221,8 @@ function prepareRows(world: PhysicsWorld, R: Float64Array, n: number): void {
     SEP = buf.separation,
     VN = buf.relativeVelocity,
     ID = buf.id;
+  // The last pair's previous row less its own row (see previousRow).
+  let shift = 0;
   for (let i = 0; i < n; i++) {
     const r = i * MR_STRIDE;
     const ea = shapeA[i]!,
@@ -251,7 +267,8 @@ function prepareRows(world: PhysicsWorld, R: Float64Array, n: number): void {
     R[r + MR_ROLLING_MASS] = iA + iB > 0 ? 1 / (iA + iB) : 0;
     stampA[i] = ea > 0 ? stamp[ea]! : 0;
     stampB[i] = stamp[eb]!;
-    let j = findPrevious(st, ea, eb);
+    let j = previousRow(st, i + shift, ea, eb);
+    if (j >= 0) shift = j - i;
     if (j >= 0 && (prev.stampA[j] !== stampA[i] || prev.stampB[j] !== stampB[i])) j = -1;
     R[r + MR_ROLLING_IMPULSE] = j >= 0 ? prev.rollingImpulse[j]! : 0;
     const vax = sb[oa + BS2_VX]!,
@@ -329,8 +346,8 @@ function prepareBlocks(cs: PhysicsWorld['collision'], R: Float64Array, n: number
     const r = i * MR_STRIDE;
     R[r + MR_BLOCK_VALID] = 0;
     if (R[r + MR_POINT_COUNT] !== 2) continue;
-    const oa = (R[r + MR_BODY_A]! | 0) * BS2_STRIDE,
-      ob = (R[r + MR_BODY_B]! | 0) * BS2_STRIDE;
+    const oa = (R[r + MR_BODY_A]! & MR_BODY_MASK) * BS2_STRIDE,
+      ob = (R[r + MR_BODY_B]! & MR_BODY_MASK) * BS2_STRIDE;
     const mA = sb[oa + BS2_INV_MASS]!,
       iA = sb[oa + BS2_INV_INERTIA]!,
       mB = sb[ob + BS2_INV_MASS]!,
@@ -375,6 +392,7 @@ export function finishManifolds(world: PhysicsWorld): void {
   const buf = st.manifolds,
     prev = st.previous,
     ev = world.collision.events;
+  let shift = 0; // see previousRow
   for (let i = 0, n = buf.count; i < n; i++) {
     let touching = 0;
     for (let p = 0, m = buf.pointCount[i]!; p < m; p++) {
@@ -383,7 +401,8 @@ export function finishManifolds(world: PhysicsWorld): void {
     }
     buf.touching[i] = touching;
     if (touching === 0) continue;
-    const j = findPrevious(st, buf.shapeA[i]!, buf.shapeB[i]!);
+    const j = previousRow(st, i + shift, buf.shapeA[i]!, buf.shapeB[i]!);
+    if (j >= 0) shift = j - i;
     if (j >= 0 && prev.touching[j] === 1 && prev.stampB[j] === buf.stampB[i] && prev.stampA[j] === buf.stampA[i]) continue;
     if (resumeAfterSleep(world, buf.shapeA[i]!, buf.shapeB[i]!)) continue;
     const k = pushEvent(world, ev.begin, buf.shapeA[i]!, buf.shapeB[i]!, buf.bodyA[i]!, buf.bodyB[i]!);
@@ -404,9 +423,11 @@ export function finishManifolds(world: PhysicsWorld): void {
   // End events: pairs that touched last step and do not now (`previous` is now this step's rows).
   const now = st.previous,
     old = st.manifolds; // old: the buffer just emptied, still holding last step's rows
+  shift = 0;
   for (let i = 0, n = st.lastCount; i < n; i++) {
     if (old.touching[i] !== 1) continue;
-    const j = findPrevious(st, old.shapeA[i]!, old.shapeB[i]!);
+    const j = previousRow(st, i + shift, old.shapeA[i]!, old.shapeB[i]!);
+    if (j >= 0) shift = j - i;
     if (j >= 0 && now.touching[j] === 1 && now.stampB[j] === old.stampB[i] && now.stampA[j] === old.stampA[i]) continue;
     if (keepWhileAsleep(world, old.shapeA[i]!, old.shapeB[i]!, old.bodyA[i]!, old.bodyB[i]!)) continue;
     pushEvent(world, ev.end, old.shapeA[i]!, old.shapeB[i]!, old.bodyA[i]!, old.bodyB[i]!);

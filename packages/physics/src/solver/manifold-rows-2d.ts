@@ -34,6 +34,7 @@ import {
   MR_BLOCK_VALID,
   MR_BODY_A,
   MR_BODY_B,
+  MR_BODY_MASK,
   MR_FRICTION_BOUND,
   MR_K11,
   MR_K12,
@@ -66,8 +67,11 @@ import {
  *   against infinite mass, push-out speed capped), accumulated impulse >= 0, warm-started from the
  *   previous step's point with the same feature id;
  * - friction rows along t = (-n_y, n_x): |lambda_t| <= mu lambda_n per point (mu_s while sticking);
- * - a row that carries an impulse marks its bodies as pushed (the `pushed` slot of the packed body,
- *   as ball contacts and joints do), so they do not get the free-flight position correction;
+ * - a row that carries an impulse (a point's normal or friction impulse, or the rolling impulse, not
+ *   0) marks its bodies as pushed (the `pushed` slot of the packed body, as ball contacts and joints
+ *   do): they were not in free flight this step, and finishBodies does not give them the free-flight
+ *   position correction (-g h h_s / 2), which on a resting box is a drop of 0.34 mm a step at 4
+ *   substeps of 1/60 s that the contact then pushes back: on a slope, a creep of mm a second;
  * - rolling resistance (circles and capsules): a torque row on w_B - w_A bounded by the coefficient
  *   times the rolling radius times the manifold's normal impulse (Box2D v3.1's rolling resistance);
  * - restitution after the substeps (Box2D v3 b2ApplyRestitution): a point that approached faster than
@@ -114,8 +118,8 @@ export function warmStartManifolds(cs: CollisionState): void {
     sb = cs.bodyState;
   for (let i = 0, n = Math.min(cs.shapes.manifolds.count, MAX_MANIFOLDS); i < n; i++) {
     const r = i * MR_STRIDE;
-    const a = (R[r + MR_BODY_A]! | 0) * BS2_STRIDE,
-      b = (R[r + MR_BODY_B]! | 0) * BS2_STRIDE;
+    const a = (R[r + MR_BODY_A]! & MR_BODY_MASK) * BS2_STRIDE,
+      b = (R[r + MR_BODY_B]! & MR_BODY_MASK) * BS2_STRIDE;
     const mA = sb[a + BS2_INV_MASS]!,
       iA = sb[a + BS2_INV_INERTIA]!,
       mB = sb[b + BS2_INV_MASS]!,
@@ -128,18 +132,32 @@ export function warmStartManifolds(cs: CollisionState): void {
       vbx = sb[b + BS2_VX]!,
       vby = sb[b + BS2_VY]!,
       wb = sb[b + BS2_W]!;
-    for (let p = 0, m = R[r + MR_POINT_COUNT]!; p < m; p++) {
-      const o = r + MR_POINT0 + p * MP_STRIDE;
-      const ln = R[o + MP_NORMAL_IMPULSE]!,
-        lt = R[o + MP_TANGENT_IMPULSE]!;
-      const Px = ln * nx - lt * ny,
-        Py = ln * ny + lt * nx;
-      wa -= iA * (R[o + MP_RAX]! * Py - R[o + MP_RAY]! * Px);
-      vax -= mA * Px;
-      vay -= mA * Py;
-      wb += iB * (R[o + MP_RBX]! * Py - R[o + MP_RBY]! * Px);
-      vbx += mB * Px;
-      vby += mB * Py;
+    // Points 1 and 2 unrolled; whether the row carries an impulse (it pushes its bodies) from the impulses read.
+    const o1 = r + MR_POINT0,
+      o2 = o1 + MP_STRIDE;
+    const ln1 = R[o1 + MP_NORMAL_IMPULSE]!,
+      lt1 = R[o1 + MP_TANGENT_IMPULSE]!;
+    const P1x = ln1 * nx - lt1 * ny,
+      P1y = ln1 * ny + lt1 * nx;
+    wa -= iA * (R[o1 + MP_RAX]! * P1y - R[o1 + MP_RAY]! * P1x);
+    vax -= mA * P1x;
+    vay -= mA * P1y;
+    wb += iB * (R[o1 + MP_RBX]! * P1y - R[o1 + MP_RBY]! * P1x);
+    vbx += mB * P1x;
+    vby += mB * P1y;
+    let carries = ln1 !== 0 || lt1 !== 0;
+    if (R[r + MR_POINT_COUNT] === 2) {
+      const ln2 = R[o2 + MP_NORMAL_IMPULSE]!,
+        lt2 = R[o2 + MP_TANGENT_IMPULSE]!;
+      const P2x = ln2 * nx - lt2 * ny,
+        P2y = ln2 * ny + lt2 * nx;
+      wa -= iA * (R[o2 + MP_RAX]! * P2y - R[o2 + MP_RAY]! * P2x);
+      vax -= mA * P2x;
+      vay -= mA * P2y;
+      wb += iB * (R[o2 + MP_RBX]! * P2y - R[o2 + MP_RBY]! * P2x);
+      vbx += mB * P2x;
+      vby += mB * P2y;
+      carries = carries || ln2 !== 0 || lt2 !== 0;
     }
     const lr = R[r + MR_ROLLING_IMPULSE]!;
     wa -= iA * lr;
@@ -150,26 +168,11 @@ export function warmStartManifolds(cs: CollisionState): void {
     sb[b + BS2_VX] = vbx;
     sb[b + BS2_VY] = vby;
     sb[b + BS2_W] = wb;
-    if (pushes(R, r)) {
+    if (carries || lr !== 0) {
       sb[a + BS2_PUSHED] = 1;
       sb[b + BS2_PUSHED] = 1;
     }
   }
-}
-
-/**
- * Whether the manifold whose packed row starts at `r` carries an impulse: then its bodies were not in
- * free flight this step, and the contact solver's `pushed` slot (index 7 of a packed body) keeps
- * finishBodies from giving them the free-flight position correction (-g h h_s / 2), which on a resting
- * box is a drop of 0.34 mm a step at 4 substeps of 1/60 s that the contact then pushes back: on a
- * slope, a creep of mm a second.
- */
-function pushes(R: Float64Array, r: number): boolean {
-  for (let p = 0, m = R[r + MR_POINT_COUNT]!; p < m; p++) {
-    const o = r + MR_POINT0 + p * MP_STRIDE;
-    if (R[o + MP_NORMAL_IMPULSE] !== 0 || R[o + MP_TANGENT_IMPULSE] !== 0) return true;
-  }
-  return R[r + MR_ROLLING_IMPULSE] !== 0;
 }
 
 /**
@@ -216,9 +219,44 @@ function solveBlock(R: Float64Array, r: number, c1: number, c2: number): boolean
 }
 
 /**
+ * The rolling resistance row of the manifold whose packed row starts at `r` (its `MR_ROLLING` > 0): the
+ * accumulated torque impulse about the normal, bounded by the rolling coefficient times the rolling
+ * radius times `total` (the manifold's normal impulse), updated against the relative spin `dw`
+ * (w_B - w_A, rad/s). Returns the impulse added, N m s (A gets minus it).
+ */
+function solveRolling(R: Float64Array, r: number, total: number, dw: number): number {
+  const old = R[r + MR_ROLLING_IMPULSE]!,
+    maxR = R[r + MR_ROLLING]! * total;
+  let next = old - R[r + MR_ROLLING_MASS]! * dw;
+  next = next < -maxR ? -maxR : next > maxR ? maxR : next;
+  R[r + MR_ROLLING_IMPULSE] = next;
+  return next - old;
+}
+
+/** Adds the normal impulses of the row whose first point starts at `o1` (two points if `two`) to their step totals. */
+function accumulateRow(R: Float64Array, o1: number, two: boolean): void {
+  R[o1 + MP_TOTAL_NORMAL_IMPULSE] = R[o1 + MP_TOTAL_NORMAL_IMPULSE]! + R[o1 + MP_NORMAL_IMPULSE]!;
+  const o2 = o1 + MP_STRIDE;
+  if (two) R[o2 + MP_TOTAL_NORMAL_IMPULSE] = R[o2 + MP_TOTAL_NORMAL_IMPULSE]! + R[o2 + MP_NORMAL_IMPULSE]!;
+}
+
+/**
  * One pass over the manifolds: normal rows (soft bias if `useBias`), friction, rolling resistance, with
  * the softness `prepareManifolds` chose. With `accumulate` (the substep's last pass), each point's
  * impulse is then added to its step total, as accumulateManifoldImpulses does.
+ *
+ * Per row: the bodies' velocities and the row's normal impulses are read into locals once and written
+ * back once (offsets in 32-bit integers without overflow checks: the row count is bounded by
+ * MAX_MANIFOLDS, the body indices masked by MR_BODY_MASK); points 1 and 2 are unrolled, their anchors
+ * read once (a one-point row reads its unused second point's slots, inside the row, and never uses
+ * them). Each normal row's regime: speculative (s > 0: bias s / h_s, rigid) or, with the bias on, soft.
+ * A two-point row with a valid block solves both normal rows at once, as the linear complementarity
+ * problem K x + c = w, x >= 0, w >= 0, x . w = 0 of `solveBlock` (its cases inline: both points push,
+ * then one lets go, then both), with x the new accumulated impulses and c from each row's own regime,
+ * c_i = s_m (v_n,i + bias_i) - (1 - s_i) (K x_old)_i: the soft row's update written for both rows (s_m,
+ * s_i its mass and impulse scales). Otherwise point after point, with the velocities the one before
+ * left. Then friction, point 1 then point 2 (|lambda_t| <= bound lambda_n), and rolling resistance. A
+ * row that carries an impulse marks its bodies as pushed (see the module comment).
  * @category Collision
  */
 export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean, accumulate = false): void {
@@ -236,12 +274,10 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean,
     impulseRigid = sr[2]!;
   const invH = 1 / hs,
     push = cs.settings.contactPushSpeed;
-  // The row count bounded by MAX_MANIFOLDS and the body indices made integers (`| 0`: the rows hold
-  // doubles) let V8 compute every offset below in 32-bit integers without overflow checks.
   for (let i = 0, n = Math.min(cs.shapes.manifolds.count, MAX_MANIFOLDS); i < n; i++) {
     const r = i * MR_STRIDE;
-    const ia = R[r + MR_BODY_A]! | 0,
-      ib = R[r + MR_BODY_B]! | 0;
+    const ia = R[r + MR_BODY_A]! & MR_BODY_MASK,
+      ib = R[r + MR_BODY_B]! & MR_BODY_MASK;
     const a = ia * BS2_STRIDE,
       b = ib * BS2_STRIDE;
     const mA = sb[a + BS2_INV_MASS]!,
@@ -266,8 +302,6 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean,
     const biasRate = rigidPartner ? biasRigid : biasSoft,
       softMass = rigidPartner ? massRigid : massSoft,
       softImpulse = rigidPartner ? impulseRigid : impulseSoft;
-    // Points 1 and 2 unrolled, their anchors read once. A one-point row reads its unused second
-    // point's slots (inside the row) and never uses them.
     const two = R[r + MR_POINT_COUNT] === 2;
     const o1 = r + MR_POINT0,
       o2 = o1 + MP_STRIDE;
@@ -281,7 +315,6 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean,
       r2by = R[o2 + MP_RBY]!;
     const s1 = R[o1 + MP_SEPARATION]! + (dbx - tb * r1by - dax + ta * r1ay) * nx + (dby + tb * r1bx - day - ta * r1ax) * ny;
     const s2 = R[o2 + MP_SEPARATION]! + (dbx - tb * r2by - dax + ta * r2ay) * nx + (dby + tb * r2bx - day - ta * r2ax) * ny;
-    // Each normal row's regime: speculative (s > 0: bias s / h_s, rigid) or, with the bias on, soft.
     let b1 = 0,
       m1 = 1,
       i1 = 0,
@@ -302,29 +335,46 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean,
       m2 = softMass;
       i2 = softImpulse;
     }
+    let l1 = R[o1 + MP_NORMAL_IMPULSE]!,
+      l2 = R[o2 + MP_NORMAL_IMPULSE]!;
     let total = 0;
     let solved = false;
     if (R[r + MR_BLOCK_VALID] === 1) {
-      // Both points at once, as the linear complementarity problem K x + c = w, x >= 0, w >= 0,
-      // x . w = 0 (Box2D 2.x's block solver, its four cases tried in turn), with x the new accumulated
-      // impulses and c from each row's own regime: c_i = s_m (v_n,i + bias_i) - (1 - s_i) (K x_old)_i,
-      // which is the soft row's update written for both rows (s_m, s_i its mass and impulse scales).
       const vn1 = (vbx - wb * r1by - vax + wa * r1ay) * nx + (vby + wb * r1bx - vay - wa * r1ax) * ny;
       const vn2 = (vbx - wb * r2by - vax + wa * r2ay) * nx + (vby + wb * r2bx - vay - wa * r2ax) * ny;
-      const l1 = R[o1 + MP_NORMAL_IMPULSE]!,
-        l2 = R[o2 + MP_NORMAL_IMPULSE]!;
       const K11 = R[r + MR_K11]!,
         K22 = R[r + MR_K22]!,
         K12 = R[r + MR_K12]!;
       const c1 = m1 * (vn1 + b1) - (1 - i1) * (K11 * l1 + K12 * l2);
       const c2 = m2 * (vn2 + b2) - (1 - i2) * (K12 * l1 + K22 * l2);
-      if (solveBlock(R, r, c1, c2)) {
-        const n1 = R[o1 + MP_NORMAL_IMPULSE]!,
-          n2 = R[o2 + MP_NORMAL_IMPULSE]!;
+      const B11 = R[r + MR_B11]!,
+        B12 = R[r + MR_B12]!,
+        B22 = R[r + MR_B22]!;
+      let n1 = -(B11 * c1 + B12 * c2),
+        n2 = -(B12 * c1 + B22 * c2);
+      solved = n1 >= 0 && n2 >= 0;
+      if (!solved) {
+        n1 = -c1 / K11;
+        n2 = 0;
+        solved = n1 >= 0 && K12 * n1 + c2 >= 0;
+      }
+      if (!solved) {
+        n1 = 0;
+        n2 = -c2 / K22;
+        solved = n2 >= 0 && K12 * n2 + c1 >= 0;
+      }
+      if (!solved) {
+        n1 = 0;
+        n2 = 0;
+        solved = c1 >= 0 && c2 >= 0;
+      }
+      if (solved) {
         const d1 = n1 - l1,
           d2 = n2 - l2;
         if (d1 > R[o1 + MP_MAX_NORMAL_IMPULSE]!) R[o1 + MP_MAX_NORMAL_IMPULSE] = d1;
         if (d2 > R[o2 + MP_MAX_NORMAL_IMPULSE]!) R[o2 + MP_MAX_NORMAL_IMPULSE] = d2;
+        l1 = n1;
+        l2 = n2;
         total = n1 + n2;
         const P1x = d1 * nx,
           P1y = d1 * ny,
@@ -336,25 +386,21 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean,
         vbx += mB * (P1x + P2x);
         vby += mB * (P1y + P2y);
         wb += iB * (r1bx * P1y - r1by * P1x + r2bx * P2y - r2by * P2x);
-        solved = true;
       }
     }
     for (let p = 0; p < (two ? 2 : 1) && !solved; p++) {
-      // Point after point, with the velocities the one before left.
       const o = o1 + p * MP_STRIDE;
       const rax = R[o + MP_RAX]!,
         ray = R[o + MP_RAY]!,
         rbx = R[o + MP_RBX]!,
         rby = R[o + MP_RBY]!;
-      const bias = p === 0 ? b1 : b2,
-        massScale = p === 0 ? m1 : m2,
-        impulseScale = p === 0 ? i1 : i2;
+      const old = p === 0 ? l1 : l2;
       const vn = (vbx - wb * rby - vax + wa * ray) * nx + (vby + wb * rbx - vay - wa * rax) * ny;
-      const old = R[o + MP_NORMAL_IMPULSE]!;
-      let next = old - R[o + MP_NORMAL_MASS]! * massScale * (vn + bias) - impulseScale * old;
+      let next = old - R[o + MP_NORMAL_MASS]! * (p === 0 ? m1 : m2) * (vn + (p === 0 ? b1 : b2)) - (p === 0 ? i1 : i2) * old;
       if (next < 0) next = 0;
       const dl = next - old;
-      R[o + MP_NORMAL_IMPULSE] = next;
+      if (p === 0) l1 = next;
+      else l2 = next;
       total += next;
       if (dl > R[o + MP_MAX_NORMAL_IMPULSE]!) R[o + MP_MAX_NORMAL_IMPULSE] = dl;
       const Px = dl * nx,
@@ -366,18 +412,20 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean,
       vby += mB * Py;
       wb += iB * (rbx * Py - rby * Px);
     }
-    // Friction, point 1 then point 2: |lambda_t| <= bound lambda_n.
+    R[o1 + MP_NORMAL_IMPULSE] = l1;
+    if (two) R[o2 + MP_NORMAL_IMPULSE] = l2;
     const bound = R[r + MR_FRICTION_BOUND]!;
+    let f1 = R[o1 + MP_TANGENT_IMPULSE]!,
+      f2 = 0;
     {
       const dvx = vbx - wb * r1by - vax + wa * r1ay,
         dvy = vby + wb * r1bx - vay - wa * r1ax;
       const vt = -dvx * ny + dvy * nx;
-      const old = R[o1 + MP_TANGENT_IMPULSE]!,
-        maxF = bound * R[o1 + MP_NORMAL_IMPULSE]!;
-      let next = old - R[o1 + MP_TANGENT_MASS]! * vt;
+      const maxF = bound * l1;
+      let next = f1 - R[o1 + MP_TANGENT_MASS]! * vt;
       next = next < -maxF ? -maxF : next > maxF ? maxF : next;
-      const dl = next - old;
-      R[o1 + MP_TANGENT_IMPULSE] = next;
+      const dl = next - f1;
+      f1 = next;
       const Px = -dl * ny,
         Py = dl * nx;
       vax -= mA * Px;
@@ -387,15 +435,17 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean,
       vby += mB * Py;
       wb += iB * (r1bx * Py - r1by * Px);
     }
+    R[o1 + MP_TANGENT_IMPULSE] = f1;
     if (two) {
+      f2 = R[o2 + MP_TANGENT_IMPULSE]!;
       const dvx = vbx - wb * r2by - vax + wa * r2ay,
         dvy = vby + wb * r2bx - vay - wa * r2ax;
       const vt = -dvx * ny + dvy * nx;
-      const old = R[o2 + MP_TANGENT_IMPULSE]!,
-        maxF = bound * R[o2 + MP_NORMAL_IMPULSE]!;
-      let next = old - R[o2 + MP_TANGENT_MASS]! * vt;
+      const maxF = bound * l2;
+      let next = f2 - R[o2 + MP_TANGENT_MASS]! * vt;
       next = next < -maxF ? -maxF : next > maxF ? maxF : next;
-      const dl = next - old;
+      const dl = next - f2;
+      f2 = next;
       R[o2 + MP_TANGENT_IMPULSE] = next;
       const Px = -dl * ny,
         Py = dl * nx;
@@ -406,14 +456,8 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean,
       vby += mB * Py;
       wb += iB * (r2bx * Py - r2by * Px);
     }
-    const roll = R[r + MR_ROLLING]!;
-    if (roll > 0) {
-      const old = R[r + MR_ROLLING_IMPULSE]!,
-        maxR = roll * total;
-      let next = old - R[r + MR_ROLLING_MASS]! * (wb - wa);
-      next = next < -maxR ? -maxR : next > maxR ? maxR : next;
-      const dl = next - old;
-      R[r + MR_ROLLING_IMPULSE] = next;
+    if (R[r + MR_ROLLING]! > 0) {
+      const dl = solveRolling(R, r, total, wb - wa);
       wa -= iA * dl;
       wb += iB * dl;
     }
@@ -423,14 +467,11 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean,
     sb[b + BS2_VX] = vbx;
     sb[b + BS2_VY] = vby;
     sb[b + BS2_W] = wb;
-    if (total > 0 || pushes(R, r)) {
+    if (total > 0 || l1 !== 0 || f1 !== 0 || (two && (l2 !== 0 || f2 !== 0)) || R[r + MR_ROLLING_IMPULSE] !== 0) {
       sb[a + BS2_PUSHED] = 1;
       sb[b + BS2_PUSHED] = 1;
     }
-    if (accumulate) {
-      R[o1 + MP_TOTAL_NORMAL_IMPULSE] = R[o1 + MP_TOTAL_NORMAL_IMPULSE]! + R[o1 + MP_NORMAL_IMPULSE]!;
-      if (two) R[o2 + MP_TOTAL_NORMAL_IMPULSE] = R[o2 + MP_TOTAL_NORMAL_IMPULSE]! + R[o2 + MP_NORMAL_IMPULSE]!;
-    }
+    if (accumulate) accumulateRow(R, o1, two);
   }
 }
 
@@ -467,8 +508,8 @@ export function applyManifoldRestitution(world: PhysicsWorld): void {
     const r = i * MR_STRIDE;
     const e = R[r + MR_RESTITUTION]!;
     if (e === 0) continue;
-    const a = (R[r + MR_BODY_A]! | 0) * BS2_STRIDE,
-      b = (R[r + MR_BODY_B]! | 0) * BS2_STRIDE;
+    const a = (R[r + MR_BODY_A]! & MR_BODY_MASK) * BS2_STRIDE,
+      b = (R[r + MR_BODY_B]! & MR_BODY_MASK) * BS2_STRIDE;
     const mA = sb[a + BS2_INV_MASS]!,
       iA = sb[a + BS2_INV_INERTIA]!,
       mB = sb[b + BS2_INV_MASS]!,

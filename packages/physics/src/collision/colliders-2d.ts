@@ -1,0 +1,306 @@
+import { type EcsInternals, ecsOf } from '../world/ecs-internals.js';
+import type { PhysicsWorld } from '../world/options.js';
+import { query } from '../world/query.js';
+import { SHAPE_STRIDE, type ShapeStore } from '../world/shape-store-2d.js';
+import { BALL, MOVING, type ShapeCollisionState, type ShapeScratch } from './manifolds-2d.js';
+import { BodyType } from './state.js';
+
+/**
+ * The colliders of a 2D shape pass (collision/shapes-2d.ts): each shape entity, and each ball body as
+ * its own circle, with its body classified for the step (static, kinematic, sleeping or dynamic; its
+ * inverse mass and inertia, angular velocity and start-of-step angle), its start-of-step transform, its
+ * fattened bounding box and speculative distance (the broadphase's input, collision/broadphase/pairs-2d.ts),
+ * and the shape whose geometry it shares (the narrowphase's copies).
+ */
+
+function ensureScratch(sc: ShapeScratch, n: number): void {
+  if (sc.shape.length >= n) return;
+  let m = Math.max(64, sc.shape.length);
+  while (m < n) m *= 2;
+  const f = (): Float64Array => new Float64Array(m);
+  const i = (): Int32Array => new Int32Array(m);
+  sc.shape = i();
+  sc.body = i();
+  sc.x = f();
+  sc.y = f();
+  sc.c = f();
+  sc.s = f();
+  sc.minX = f();
+  sc.minY = f();
+  sc.maxX = f();
+  sc.maxY = f();
+  sc.spec = f();
+  sc.size = f();
+  sc.flags = new Uint8Array(m);
+  sc.cellX = i();
+  sc.cellY = i();
+  sc.bucket = i();
+  sc.sorted = i();
+  sc.oversized = i();
+}
+
+/**
+ * Per collider of this step (gatherColliders fills it, collidePairs reads it): the shape entity whose
+ * geometry it has, the first of a run of colliders with identical geometry (a pyramid's boxes share
+ * one), or -1 for a ball body. The pair loop copies a geometry out of the shape store only when it
+ * differs from the one it holds: the store's vertex, normal, count and radius arrays are read at random
+ * once a pair otherwise, each a cache miss in a large pile.
+ */
+let geometryOf = new Int32Array(0);
+
+/** This step's `geometryOf` (valid once gatherColliders ran). */
+export function sharedGeometries(): Int32Array {
+  return geometryOf;
+}
+
+/** `geometryOf` with room for `n` colliders (grown only in a world's first steps, outside the loops). */
+function roomForGeometry(n: number): Int32Array {
+  if (geometryOf.length < n) geometryOf = new Int32Array(Math.max(n, 2 * geometryOf.length));
+  return geometryOf;
+}
+
+/**
+ * Whether shapes a and b of store S have the same geometry, number for number (kind, vertex count,
+ * radius, vertices and normals; -0 and 0 told apart), so that one's copy collides as the other would.
+ */
+function sameGeometry(S: ShapeStore, a: number, b: number): boolean {
+  const n = S.count[a]!;
+  if (n !== S.count[b] || S.kind[a] !== S.kind[b] || !same(S.radius[a]!, S.radius[b]!)) return false;
+  const oa = SHAPE_STRIDE * a,
+    ob = SHAPE_STRIDE * b;
+  for (let k = 0; k < n; k++) {
+    if (!same(S.vx[oa + k]!, S.vx[ob + k]!) || !same(S.vy[oa + k]!, S.vy[ob + k]!)) return false;
+    if (!same(S.nx[oa + k]!, S.nx[ob + k]!) || !same(S.ny[oa + k]!, S.ny[ob + k]!)) return false;
+  }
+  return true;
+}
+
+/** x and y are the same number (Object.is without NaN: a NaN geometry is never shared). */
+function same(x: number, y: number): boolean {
+  return x === y && (x !== 0 || 1 / x === 1 / y);
+}
+
+/**
+ * The components classifyColliders asks a body about, as indices into `bits` (lookUpBits fills it once
+ * a call): `has` reads bitecs' component masks directly, what hasComponent reads after a Map lookup of
+ * the component per call (four to seven a body a step, most of a step's time in a pile asleep).
+ */
+const STATIC = 0,
+  KINEMATIC = 1,
+  SLEEPING = 2,
+  INERTIA = 3,
+  SPIN = 4,
+  ANGLE = 5,
+  SHAPE = 6;
+/** Per component above: its masks in bitecs (`NO_MASKS` if no entity ever had it) and its bit (1 then). */
+const bits = { masks: [] as ArrayLike<number>[], flag: new Int32Array(7) };
+const NO_MASKS: ArrayLike<number> = new Int32Array(0);
+
+/** Fills `bits` for `world` (bitecs' masks and each component's place in them). */
+function lookUpBits(world: PhysicsWorld): void {
+  const c = world.components,
+    ecs = ecsOf(world);
+  lookUpBit(ecs, STATIC, c.Static);
+  lookUpBit(ecs, KINEMATIC, c.Kinematic);
+  lookUpBit(ecs, SLEEPING, c.Sleeping);
+  lookUpBit(ecs, INERTIA, c.Inertia);
+  lookUpBit(ecs, SPIN, c.AngularVelocity);
+  lookUpBit(ecs, ANGLE, c.Angle);
+  lookUpBit(ecs, SHAPE, c.Shape);
+}
+
+function lookUpBit(ecs: EcsInternals, k: number, component: object): void {
+  const d = ecs.componentMap.get(component);
+  bits.masks[k] = d === undefined ? NO_MASKS : ecs.entityMasks[d.generationId]!;
+  bits.flag[k] = d === undefined ? 1 : d.bitflag;
+}
+
+/** hasComponent(world, e, component k) for the world `bits` was filled for. */
+function has(k: number, e: number): boolean {
+  const f = bits.flag[k]!;
+  return ((bits.masks[k]![e] ?? 0) & f) === f;
+}
+
+/**
+ * Body type, inverse mass and inertia, angular velocity and start-of-step angle of shape body `b` for
+ * this step (CollisionState.bodyType, invMass, invInertia; ShapeCollisionState.bodyW, bodyAngle0).
+ */
+function classifyShapeBody(world: PhysicsWorld, st: ShapeCollisionState, b: number): void {
+  const c = world.components,
+    cs = world.collision;
+  const invMass = cs.invMass,
+    invInertia = cs.invInertia;
+  let t: number;
+  if (has(STATIC, b)) {
+    t = BodyType.Static;
+    invMass[b] = 0;
+    invInertia[b] = 0;
+    c.PreviousPosition.x[b] = c.Position.x[b]!;
+    c.PreviousPosition.y[b] = c.Position.y[b]!;
+  } else if (has(KINEMATIC, b)) {
+    t = BodyType.Kinematic;
+    invMass[b] = 0;
+    invInertia[b] = 0;
+  } else if (has(SLEEPING, b)) {
+    t = BodyType.Sleeping;
+    invMass[b] = 0;
+    invInertia[b] = 0;
+  } else {
+    t = BodyType.Dynamic;
+    invMass[b] = c.Mass.inv[b]!;
+    invInertia[b] = has(INERTIA, b) && has(SPIN, b) ? c.Inertia.inv[b]! : 0;
+  }
+  cs.bodyType[b] = t;
+  const turns = (t === BodyType.Dynamic || t === BodyType.Kinematic) && has(SPIN, b);
+  st.bodyW[b] = turns ? c.AngularVelocity.z[b]! : 0;
+  st.bodyAngle0[b] = (has(ANGLE, b) ? c.Angle.value[b]! : 0) - st.bodyW[b]! * world.h;
+}
+
+/**
+ * Lists this step's colliders (shape entities, and ball bodies as circles), fills the per-body solver
+ * scratch of shape bodies (body type, inverse mass and inertia) and each collider's start-of-step
+ * transform and fattened box.
+ * @category Collision
+ */
+export function gatherColliders(world: PhysicsWorld, st: ShapeCollisionState): void {
+  const shapeCount = classifyColliders(world, st);
+  // With no collider moving no pair is searched (findPairs) and nothing reads the poses and boxes (the
+  // static contacts and the sweeps are of dynamic bodies): a scene asleep skips them.
+  if (st.anyMoving) boundColliders(world, st, shapeCount);
+}
+
+/**
+ * gatherColliders, first: lists the colliders (sc.count, shape, body), classifies their bodies, sets
+ * their flags and `anyMoving`. Returns how many of them are shape entities (the ball bodies follow).
+ */
+function classifyColliders(world: PhysicsWorld, st: ShapeCollisionState): number {
+  const c = world.components,
+    cs = world.collision,
+    sc = st.scratch;
+  const shapes = query(world, [c.Shape]);
+  const balls = query(world, [c.Position, c.Ball]);
+  const n = shapes.length + balls.length;
+  ensureScratch(sc, n);
+  sc.count = n;
+  const type = cs.bodyType,
+    BODY = c.Shape.body,
+    wz = c.AngularVelocity.z;
+  const mark = ++st.bodyMark;
+  st.anyMoving = false;
+  const bodyMarks = st.bodyMarks;
+  lookUpBits(world);
+  for (let i = 0; i < n; i++) {
+    const isBall = i >= shapes.length;
+    const e = isBall ? balls[i - shapes.length]! : shapes[i]!;
+    const b = isBall ? e : BODY[e]!;
+    sc.shape[i] = e;
+    sc.body[i] = b;
+    if (!isBall && bodyMarks[b] !== mark) {
+      // Shape bodies: classify once a step (balls were classified by the ball broadphase).
+      bodyMarks[b] = mark;
+      classifyShapeBody(world, st, b);
+    } else if (isBall) {
+      st.bodyW[b] = type[b] === BodyType.Dynamic && has(SPIN, b) ? wz[b]! : 0;
+      st.bodyAngle0[b] = 0;
+    }
+    const t = type[b]!;
+    const moving = t === BodyType.Dynamic || t === BodyType.Kinematic;
+    sc.flags[i] = (moving ? MOVING : 0) | (isBall && !has(SHAPE, b) ? BALL : 0);
+    if (moving) st.anyMoving = true;
+  }
+  return shapes.length;
+}
+
+/**
+ * gatherColliders, then: each collider's start-of-step transform, the shape whose geometry it shares
+ * (`geometryOf`), its speculative distance and size, and its fattened box. Colliders from
+ * `shapeCount` on are ball bodies.
+ */
+function boundColliders(world: PhysicsWorld, st: ShapeCollisionState, shapeCount: number): void {
+  const c = world.components,
+    cs = world.collision,
+    sc = st.scratch,
+    n = sc.count;
+  const S = c.Shape;
+  const ox = c.PreviousPosition.x,
+    oy = c.PreviousPosition.y;
+  const vx = c.Velocity.x,
+    vy = c.Velocity.y;
+  const h = world.h,
+    spec0 = cs.settings.speculativeDistance;
+  const halfSpec = 0.5 * spec0;
+  const SX = S.vx,
+    SY = S.vy,
+    R = S.radius,
+    CNT = S.count;
+  const geometry = roomForGeometry(n);
+  let shared = -1; // the shape whose geometry the last run of colliders has
+  for (let i = 0; i < n; i++) {
+    const isBall = i >= shapeCount;
+    const e = sc.shape[i]!,
+      b = sc.body[i]!;
+    const moving = (sc.flags[i]! & MOVING) !== 0;
+    const x = ox[b]!,
+      y = oy[b]!,
+      a0 = st.bodyAngle0[b]!;
+    const co = Math.cos(a0),
+      si = Math.sin(a0);
+    sc.x[i] = x;
+    sc.y[i] = y;
+    sc.c[i] = co;
+    sc.s[i] = si;
+    let x0 = Infinity,
+      y0 = Infinity,
+      x1 = -Infinity,
+      y1 = -Infinity,
+      reach = 0,
+      r: number;
+    if (isBall) {
+      geometry[i] = -1;
+      r = c.Ball.radius[b]!;
+      x0 = x;
+      x1 = x;
+      y0 = y;
+      y1 = y;
+    } else {
+      if (shared < 0 || !sameGeometry(S, e, shared)) shared = e;
+      geometry[i] = shared;
+      r = R[e]!;
+      const o = SHAPE_STRIDE * e;
+      for (let k = 0, m = CNT[e]!; k < m; k++) {
+        const lx = SX[o + k]!,
+          ly = SY[o + k]!;
+        const wx = x + co * lx - si * ly,
+          wy = y + si * lx + co * ly;
+        if (wx < x0) x0 = wx;
+        if (wx > x1) x1 = wx;
+        if (wy < y0) y0 = wy;
+        if (wy > y1) y1 = wy;
+        const d2 = lx * lx + ly * ly;
+        if (d2 > reach) reach = d2;
+      }
+    }
+    reach = Math.sqrt(reach) + r;
+    const size = 0.5 * Math.min(x1 - x0, y1 - y0) + r;
+    const spec = spec0 < SPECULATIVE_FRACTION * size ? spec0 : SPECULATIVE_FRACTION * size;
+    sc.spec[i] = spec;
+    sc.size[i] = size;
+    let pad = r + (spec < halfSpec ? spec : halfSpec);
+    if (moving) {
+      const sx = vx[b]!,
+        sy = vy[b]!;
+      pad += Math.sqrt(sx * sx + sy * sy) * h + Math.abs(st.bodyW[b]!) * h * reach;
+    }
+    sc.minX[i] = x0 - pad;
+    sc.minY[i] = y0 - pad;
+    sc.maxX[i] = x1 + pad;
+    sc.maxY[i] = y1 + pad;
+  }
+}
+
+/**
+ * Speculative distance of a shape as a fraction of its size (half its smaller extent), at most the
+ * world's `speculativeDistance`: 0.02 m for a 1 m box, Box2D's 4 linear slops, so neighbours standing
+ * 5 cm apart in a row do not become contacts; smaller shapes get proportionally less.
+ */
+const SPECULATIVE_FRACTION = 0.04;
