@@ -263,9 +263,11 @@ plot = createPlot({
   ],
 });
 
-// The challenge's line above the scene, and a button for a new sheet once it is done.
+// The challenge's line above the scene, and a button for a new sheet once it is done: over the sky
+// at the top of the scene, clear of the card of stars on the lawn (at the bottom, on a desktop, it
+// covered the stars just won).
 const status = createStatusLine();
-const showNext = createActionButton('Next sheet ▶', () => nextSheet());
+const showNext = createActionButton('Next sheet ▶', () => nextSheet(), { at: 'top' });
 
 /** Hangs the next sheet (after the last, the first again) in its breeze. */
 function nextSheet(): void {
@@ -897,6 +899,11 @@ shell.expose({
   /** The level's peg bag's basket (centre x and width, m), null on a level without one. */
   basket: () => challenge.shapes.find((sh) => sh.drop)?.drop ?? null,
   scraps: () => challenge.scraps,
+  /** The card of targets and their stars on the lawn, on the canvas (CSS px: x, y, width, height). */
+  starCard: () => {
+    const b = card.getBounds();
+    return { x: b.x, y: b.y, width: b.width, height: b.height };
+  },
   /** The gust the player blows, 0 to 1. */
   gust: () => blow,
   /** Triangles the sheet is drawn with, and the largest stretch it shows (a strain). */
