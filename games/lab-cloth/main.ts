@@ -806,7 +806,8 @@ function updateStatus(): void {
   }
   const left = challenge.pending().map((i) => shapes[i]!.name);
   const name = shapes[last.shape]!.name;
-  const tip = last.stars < 3 ? ' Cut on the dashed line for ★★★.' : '';
+  // Short of three stars: how to get them (on a sheet in a breeze, the paused sheet holds still).
+  const tip = last.stars < 3 ? ` Cut on the dashed line for ★★★${level.calm ? ' (pause to hold the sheet still)' : ''}.` : '';
   status.set(
     `${name[0]!.toUpperCase()}${name.slice(1)}: ${Math.round(last.fit * 100)}% ${stars(last.stars)}.${tip} Still to cut: ${left.join(', ')}.`,
   );
