@@ -170,17 +170,18 @@ describe('submarine mines', () => {
   });
 
   it('fair: leaving a beacon at full ahead dead on for the next mine, a boat heeding the warning MINE_REACTION s late passes every mine', () => {
-    // The real helm and physics. From each beacon of seeds 1-3 (6 beacons) the boat sets off at
+    // The real helm and physics. From each beacon of seeds 1 and 2 (6 beacons) the boat sets off at
     // 12.9 m/s (full ahead) ordered to the depth of the leg's first mine, dead on for it; warned
     // (mineAhead), it waits MINE_REACTION s, then holds Rise or Dive as told while the warning for that
     // mine lasts, then lets go (the helm holds the depth), on past the leg's last mine. Measured: the
-    // 23 mines passed, each warned 2.9 s or more before contact, the hull 1.49 m or more outside
-    // contact, the keel 4.2 m or more over the seabed (seeds 1-10, 82 mines, the same with 1.5 s).
+    // 16 mines passed, each warned 2.9 s or more before contact, the hull 1.49 m or more outside
+    // contact, the keel 4.2 m or more over the seabed (seeds 1-10, 82 mines: the same, with 1 s or
+    // 1.5 s; scripts/submarine-pilot.mjs flies whole courses).
     let mines = 0,
       closest = Infinity,
       earliest = Infinity,
       keel = Infinity;
-    for (const seed of [1, 2, 3]) {
+    for (const seed of [1, 2]) {
       const { h: scene, mines: laid } = course(seed, 6);
       const order = courseOrder(scene.beacons);
       for (let leg = 1; leg < order.length; leg++) {
@@ -203,11 +204,13 @@ describe('submarine mines', () => {
         let told: MineAhead | null = null;
         const end = laid[on[on.length - 1]!]!.x + 15;
         for (let n = 0; n < 60 * 20 && c.Position.x[e]! < end; n++) {
+          // The warning looked at 20 times a second (the page: every step; the pilot waits 1 s anyway).
           const heaving = state.mode === 'diving' || state.mode === 'rising';
-          told = mineAhead(c.Position.x[e]!, c.Position.y[e]!, c.Velocity.x[e]!, c.Velocity.y[e]!, state.holdY, laid, live, h.seabed, {
-            prefer: told,
-            heaving,
-          });
+          if (n % 3 === 0)
+            told = mineAhead(c.Position.x[e]!, c.Position.y[e]!, c.Velocity.x[e]!, c.Velocity.y[e]!, state.holdY, laid, live, h.seabed, {
+              prefer: told,
+              heaving,
+            });
           if (told && !warnedAt.has(told.index)) {
             warnedAt.set(told.index, world.time);
             earliest = Math.min(earliest, told.time);
@@ -232,7 +235,7 @@ describe('submarine mines', () => {
         closest = Math.min(closest, ...near.map((d) => d - MINE_RADIUS));
       }
     }
-    expect(mines).toBe(23);
+    expect(mines).toBe(16);
     expect(closest).toBeGreaterThan(1);
     expect(earliest).toBeGreaterThan(2.5);
     expect(keel).toBeGreaterThan(2);
