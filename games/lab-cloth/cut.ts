@@ -15,6 +15,7 @@
 
 import { segmentsCross } from '@bitphysics/game-kit';
 import { type Cloth, handleOf, type PhysicsWorld, query, removeJoint, slotOf } from '@bitphysics/physics';
+import { sheetGrid } from './scene';
 
 /**
  * Cuts the world's cloth links that the stroke from (x0, y0) to (x1, y1), m, crosses at their current
@@ -108,6 +109,20 @@ export function anchorPosition(world: PhysicsWorld, cloth: Cloth, anchor: ClothA
   return out;
 }
 
+/** Where `anchor` lies on the sheet at rest, m (sheet coordinates: x right from its left edge, y down from its top), into `out`. */
+export function anchorAtRest(cloth: Cloth, anchor: ClothAnchor, out: [number, number]): [number, number] {
+  const C = cloth.columns,
+    { spacing } = sheetGrid(C);
+  out[0] = 0;
+  out[1] = 0;
+  for (let k = 0; k < 3; k++) {
+    const i = anchor.points[k]!;
+    out[0] += anchor.weights[k]! * (i % C) * spacing;
+    out[1] += anchor.weights[k]! * Math.floor(i / C) * spacing;
+  }
+  return out;
+}
+
 /** The median of `v` (sorts it in place). */
 function median(v: Float64Array): number {
   v.sort();
@@ -125,6 +140,7 @@ function median(v: Float64Array): number {
  * over a patch, not the move of the cut's own edge, leaves out the edges of the cut opening under the
  * sheet's weight and a flap of the shape sagging as the cut goes round it (a minority of the patch). `close` ends a stroke that came back near its start
  * by cutting the last gap to it, so a traced outline comes away even if the hand stops just short.
+ * Where the stroke went on the sheet at rest is pushed to `marks`, if given (for the fit: pattern.ts).
  */
 export class ScissorsStroke {
   /** The stroke's last point on the cloth's frame, m (the pointer plus `drift`). */
@@ -142,10 +158,15 @@ export class ScissorsStroke {
   /** Scratch: the patch points' moves, m (x and y). */
   private readonly moves: [Float64Array, Float64Array];
 
+  /** Scratch: where the stroke's last point lies on the sheet at rest, m. */
+  private readonly rest: [number, number] = [0, 0];
+
   /**
    * Starts a stroke at (x, y), m, on `cloth`; a point within `reach` m of the cloth but on no triangle
    * of it (over a cut) holds on to the nearest point of the cloth. The stroke follows the cloth's
-   * points within `frame` m of (x, y) (see the class; 0: none, the pointer as it is).
+   * points within `frame` m of (x, y) (see the class; 0: none, the pointer as it is). Where it goes on
+   * the sheet at rest (sheet coordinates, m, x and y interleaved) is pushed to `marks`, if given:
+   * points along it at most a quarter of a link spacing apart, over the cloth only.
    */
   constructor(
     private readonly world: PhysicsWorld,
@@ -154,10 +175,12 @@ export class ScissorsStroke {
     y: number,
     private readonly reach: number,
     frame = 0,
+    private readonly marks?: number[],
   ) {
     this.at = [x, y];
     this.on = clothAnchorAt(world, cloth, x, y, reach);
     this.start = this.on;
+    this.mark(null, this.on);
     const P = world.components.Position;
     for (const h of cloth.points) {
       const e = slotOf(h);
@@ -193,8 +216,20 @@ export class ScissorsStroke {
     this.length += Math.hypot(tx - f[0], ty - f[1]);
     this.at[0] = tx;
     this.at[1] = ty;
+    const was = this.on;
     this.on = clothAnchorAt(this.world, this.cloth, tx, ty, this.reach);
+    this.mark(was, this.on);
     return cut;
+  }
+
+  /** Pushes to `marks` the way from anchor `from` (null: none, only `to`) to `to` on the sheet at rest, if both are on the cloth. */
+  private mark(from: ClothAnchor | null, to: ClothAnchor | null): void {
+    if (!this.marks || !to) return;
+    const [x0, y0] = from ? anchorAtRest(this.cloth, from, this.rest) : [Number.NaN, Number.NaN];
+    const [x1, y1] = anchorAtRest(this.cloth, to, this.rest);
+    const step = sheetGrid(this.cloth.columns).spacing / 4;
+    const k = from ? Math.max(1, Math.ceil(Math.hypot(x1 - x0, y1 - y0) / step)) : 1;
+    for (let j = 1; j <= k; j++) this.marks.push(from ? x0 + ((x1 - x0) * j) / k : x1, from ? y0 + ((y1 - y0) * j) / k : y1);
   }
 
   /**
@@ -207,6 +242,7 @@ export class ScissorsStroke {
     const f = this.on ? anchorPosition(this.world, this.cloth, this.on, this.from) : this.at;
     const s = anchorPosition(this.world, this.cloth, this.start, [0, 0]);
     if (Math.hypot(s[0] - f[0], s[1] - f[1]) > gap) return [];
+    this.mark(this.on, this.start);
     return cutAlong(this.world, f[0], f[1], s[0], s[1]);
   }
 }

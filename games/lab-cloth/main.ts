@@ -18,8 +18,9 @@
  * the lines and closes from FINGER_CLOSE_PX off (a fingertip hides the line it traces). Drag with the hand to
  * take hold of the sheet and pull it (grab.ts: a soft grip, so it stretches before it tears). The tool
  * buttons under the scene switch (key C); a right-button drag always cuts. Hold Gust (key G) to blow.
- * Undo (Ctrl/Cmd+Z) puts the sheet back as it was just before the last stroke that cut it (the
- * whole world restored from a snapshot taken when the stroke began; up to UNDO_DEPTH strokes).
+ * Undo (Ctrl/Cmd+Z) puts the sheet back as it was just before the last stroke that cut it and cut
+ * out no shape with ★★★, the strokes after it cut again (undo.ts: the whole world restored from a
+ * snapshot taken when the stroke began; up to UNDO_DEPTH strokes).
  * Keys: P pause, N step, R new sheet. URL: ?level (1-4), ?size (8-48 points across), ?wind (0-10 m/s),
  * ?gusts (0-5 m/s), ?tear (0.1-2).
  */
@@ -28,19 +29,7 @@ import { createActionButton, createButtonBar, createPanel, getSound, numberParam
 import { createLabDock, createReadout, createStatusLine, fmt, followView, readUrlParams } from '@bitphysics/game-kit/lab-kit';
 import { startPixiGame } from '@bitphysics/game-kit/pixi';
 import { createPlot } from '@bitphysics/game-kit/plot';
-import {
-  type Cloth,
-  handleOf,
-  type PhysicsWorld,
-  step as physicsStep,
-  query,
-  removeJoint,
-  restore,
-  slotOf,
-  snapshot,
-  type WorldSnapshot,
-  windAt,
-} from '@bitphysics/physics';
+import { type Cloth, type PhysicsWorld, step as physicsStep, query, removeJoint, slotOf, windAt } from '@bitphysics/physics';
 import type { WorldRect } from '@bitphysics/render-pixi';
 import { Container, Graphics, Text } from 'pixi.js';
 import { ClothCells } from './cells';
@@ -51,6 +40,7 @@ import { LEVELS } from './levels';
 import { Challenge, type CutOut } from './pattern';
 import { applyWind, CLOTH_SUBSTEPS, createClothScene, DEFAULTS, LINE_Y, SHEET_WIDTH, SHEET_X, sheetGrid, YARD } from './scene';
 import { SheetView } from './sheet-view';
+import { CutUndo } from './undo';
 import { Yard } from './yard';
 
 const USAGE = 'Accepted: size 8-48 points across; wind 0-10 m/s; gusts 0-5 m/s; tear 0.1-2 (strain).';
@@ -86,10 +76,13 @@ const GUST = 5,
 const CALM_RATE = 4;
 /**
  * A finger's stroke (pointer type 'touch') is given this much slack, CSS px: its cut may stray this
- * far out of a line at no cost to the fit (Challenge.setSlack; about the width a fingertip hides on a
- * 390 px phone, where a link spacing is 11 px), and it closes within FINGER_CLOSE_PX of its start.
+ * much further from a line at no cost to the fit (Challenge.setSlack), and it closes within
+ * FINGER_CLOSE_PX of its start. Measured on a 390 x 844 phone (a link spacing is 10 px there) with a
+ * finger's circle cut as far out of its line all round: 3 stars up to 10 px, 2 at 15, 1 at 20 and
+ * none at 25 (at 12 px of slack, 3 stars out to 15 px: too easy); with the mouse on a 1280 x 800
+ * screen, 3 stars up to 8 px, 2 at 10-15.
  */
-const FINGER_SLACK_PX = 12,
+const FINGER_SLACK_PX = 5,
   FINGER_CLOSE_PX = 36;
 /** A stroke that ends within CLOSE_GAP cells of where it began, after CLOSE_LENGTH m, closes (ScissorsStroke.close). */
 const CLOSE_GAP = 2.5,
@@ -119,6 +112,16 @@ const LABEL_LIFE = 2.6;
 let cloth: Cloth;
 let cells: ClothCells;
 let challenge: Challenge;
+/** The lab's counts saved with each stroke for undo: links cut and torn, and pieces off (Challenge.scraps) before it. */
+interface Counts {
+  cut: number;
+  torn: number;
+  scraps: number;
+}
+/** Undo of the scissors (undo.ts): a new one with each sheet. */
+let history: CutUndo<Counts>;
+/** How many strokes can be undone, at most. */
+const UNDO_DEPTH = 10;
 let sheet: SheetView | null = null;
 let grab: ClothGrab | null = null;
 /** Links torn by strain, and cut by the scissors, since the reset. */
@@ -139,6 +142,7 @@ function createWorld(): PhysicsWorld {
   cloth = scene.cloth;
   cells = new ClothCells(cloth);
   challenge = new Challenge(scene.world, cloth, cells, level.shapes(params.size));
+  history = new CutUndo(scene.world, cells, challenge, UNDO_DEPTH);
   grab = null;
   torn = 0;
   cut = 0;
@@ -259,9 +263,11 @@ plot = createPlot({
   ],
 });
 
-// The challenge's line above the scene, and a button for a new sheet once it is done.
+// The challenge's line above the scene, and a button for a new sheet once it is done: over the sky
+// at the top of the scene, clear of the card of stars on the lawn (at the bottom, on a desktop, it
+// covered the stars just won).
 const status = createStatusLine();
-const showNext = createActionButton('Next sheet ▶', () => nextSheet());
+const showNext = createActionButton('Next sheet ▶', () => nextSheet(), { at: 'top' });
 
 /** Hangs the next sheet (after the last, the first again) in its breeze. */
 function nextSheet(): void {
@@ -419,110 +425,29 @@ function slashTo(s: ScissorsStroke): void {
   const cam = renderer.camera;
   slash.push({ x: cam.toScreenX(s.at[0]), y: cam.toScreenY(s.at[1]), t: performance.now() / 1000 });
 }
-/**
- * Undo of the scissors: before each stroke the whole world is saved (`snapshot`: every point's
- * position and velocity, every link, the wind's state and the clock), with the lab's counts and the
- * shapes cut out so far. A stroke that cut something keeps its save on a stack (UNDO_DEPTH deep),
- * with the links it cut. `undoCut` undoes the last stroke that did not cut out a shape with ★★★:
- * it puts that stroke's save back (`restore`), then cuts again the links of the strokes after it,
- * so a good cut made after a bad one stays (its piece falls again) while the bad one is undone.
- * Tears made since are undone with it. A new sheet empties the stack.
- */
-interface UndoEntry {
-  world: WorldSnapshot;
-  cut: number;
-  torn: number;
-  done: number;
-  /** Pieces off (Challenge.scraps) before the stroke. */
-  scraps: number;
-  /** The cloth links there were before the stroke (linkKey); dropped once the stroke ends. */
-  before: Set<number> | null;
-  /** The links the stroke cut (linkKey), set as it ends. */
-  severed: number[];
-  /** Whether the stroke cut out a shape with ★★★ (undo passes over it while there is another). */
-  kept: boolean;
-}
-/** A cloth link's key: its two points' slots, a * 2^25 + b (slots are under 2^25). */
-const linkKey = (a: number, b: number): number => a * 2 ** 25 + b;
-/** The keys of the world's cloth links now. */
-function linkKeys(world: PhysicsWorld): Set<number> {
-  const L = world.components.ClothLink;
-  const keys = new Set<number>();
-  for (const e of query(world, [L])) keys.add(linkKey(L.a[e]!, L.b[e]!));
-  return keys;
-}
-/** Cuts the world's cloth links whose keys are in `keys`. @returns how many were cut. */
-function cutLinks(world: PhysicsWorld, keys: ReadonlySet<number>): number {
-  const L = world.components.ClothLink;
-  const doomed: number[] = [];
-  for (const e of query(world, [L])) if (keys.has(linkKey(L.a[e]!, L.b[e]!))) doomed.push(handleOf(world, e));
-  for (const h of doomed) removeJoint(world, h);
-  return doomed.length;
-}
-/**
- * Marks as kept the strokes on the undo stack that cut a link with an end in piece `piece` of the
- * last update (the strokes that cut that piece out).
- */
-function keepStrokesOf(piece: number): void {
-  const pieceOf = challenge.pieces?.pieceOf;
-  if (!pieceOf) return;
-  const inside = new Set<number>();
-  for (let i = 0; i < cloth.points.length; i++) if (pieceOf[i] === piece) inside.add(slotOf(cloth.points[i]!));
-  for (const entry of undoStack)
-    if (!entry.kept) entry.kept = entry.severed.some((key) => inside.has(Math.floor(key / 2 ** 25)) || inside.has(key % 2 ** 25));
-}
-/** Strokes that can be undone, most recent last. */
-const undoStack: UndoEntry[] = [];
-/** The save taken when the current stroke began (kept if the stroke cuts something). */
-let strokeSave: UndoEntry | null = null;
-/** How many strokes can be undone, at most. */
-const UNDO_DEPTH = 10;
 /** Greys the undo button out when there is nothing to undo. */
 function refreshUndo(): void {
-  const none = undoStack.length === 0;
+  const none = history.count === 0;
   undoButton.disabled = none;
   undoButton.style.opacity = none ? '0.45' : '';
 }
-/** The cloth's cells, pieces and drawing worked out again from its links (after a restore). */
-function relink(): void {
-  cells.invalidate();
-  challenge.invalidate();
-  sheet?.invalidate();
-  cells.loosen(shell.world);
-  challenge.update();
-}
 /**
- * Undoes the last stroke that did not cut out a shape with ★★★ (the last stroke if every one did;
- * see UndoEntry): the sheet as it was just before it, with the cuts of the strokes after it made
- * again. Does nothing while a stroke is under way or when no stroke is left to undo.
+ * Undoes the last stroke that did not cut out a shape with ★★★ (CutUndo.undo: the strokes after it
+ * are cut again), and says what was kept. Does nothing while a stroke is under way.
  */
 function undoCut(): void {
-  if (stroke || undoStack.length === 0) return;
-  let k = undoStack.length - 1;
-  while (k >= 0 && undoStack[k]!.kept) k--;
-  if (k < 0) k = undoStack.length - 1;
-  const entry = undoStack[k]!;
-  const later = undoStack.splice(k);
-  later.shift();
+  if (stroke) return;
   grab?.release();
   grab = null;
-  restore(shell.world, entry.world);
+  const done = history.undo((extra, recut) => ({ ...extra, cut: extra.cut + recut, scraps: challenge.scraps }));
+  if (!done) return;
   note = '';
-  cut = entry.cut;
-  torn = entry.torn;
-  challenge.done.length = entry.done;
-  relink();
-  // The good cuts made after it, made again (each with a new save, so it can be undone in turn).
-  const keptNames: string[] = [];
-  for (const j of later) {
-    const save: UndoEntry = { ...j, world: snapshot(shell.world), cut, torn, done: challenge.done.length, scraps: challenge.scraps };
-    cut += cutLinks(shell.world, new Set(j.severed));
-    cells.loosen(shell.world);
-    for (const d of challenge.update()) keptNames.push(`the ${challenge.shapes[d.shape]!.name} (${Math.round(d.fit * 100)}%)`);
-    undoStack.push(save);
-  }
+  cut = done.extra.cut + done.recut;
+  torn = done.extra.torn;
+  sheet?.invalidate();
   refreshUndo();
-  if (later.length > 0) note = `Undid the cut before the last; kept ${keptNames.length > 0 ? keptNames.join(', ') : 'the cuts after it'}.`;
+  const kept = done.cutOut.map((d) => `the ${challenge.shapes[d.shape]!.name} (${Math.round(d.fit * 100)}%)`);
+  if (done.redone > 0) note = `Undid the cut before the last; kept ${kept.length > 0 ? kept.join(', ') : 'the cuts after it'}.`;
   slash.length = 0;
   sound.snap(0.2);
 }
@@ -561,6 +486,9 @@ function strokeNote(scrapsBefore: number): string {
 }
 /** The note after the status line's own words (' ' and the note), or ''. */
 const noteTail = (): string => (note ? ` ${note}` : '');
+/** Pieces off (Challenge.scraps) and shapes cut out (Challenge.done) when the current stroke began. */
+let scrapsBefore = 0,
+  doneBefore = 0;
 /** Whether a scissors stroke was made on the paused sheet since it was last paused. */
 let pausedStroke = false;
 canvas.addEventListener('pointerdown', (e) => {
@@ -575,16 +503,9 @@ canvas.addEventListener('pointerdown', (e) => {
     // On the paused sheet the scissors cut too: the sheet holds still for a careful cut, and the
     // pieces cut away fall when it runs again (the status line says so).
     if (shell.paused) pausedStroke = true;
-    strokeSave = {
-      world: snapshot(shell.world),
-      cut,
-      torn,
-      done: challenge.done.length,
-      scraps: challenge.scraps,
-      before: linkKeys(shell.world),
-      severed: [],
-      kept: false,
-    };
+    history.begin({ cut, torn, scraps: challenge.scraps });
+    scrapsBefore = challenge.scraps;
+    doneBefore = challenge.done.length;
     note = '';
     // A finger hides the line it traces and is wider than a mouse's point: its cut is scored with
     // FINGER_SLACK_PX of slack (as the sheet is drawn now), and it closes from further off.
@@ -592,7 +513,7 @@ canvas.addEventListener('pointerdown', (e) => {
     challenge.setSlack(finger ? FINGER_SLACK_PX / renderer.camera.toScreenLength(1) : 0);
     // A point over a cut holds on to the cloth's nearest point within a link's length.
     stroke = {
-      cut: new ScissorsStroke(shell.world, cloth, x, y, SHEET_WIDTH / (params.size - 1), STROKE_FRAME),
+      cut: new ScissorsStroke(shell.world, cloth, x, y, SHEET_WIDTH / (params.size - 1), STROKE_FRAME, challenge.marks),
       id: e.pointerId,
       finger,
     };
@@ -615,19 +536,10 @@ const release = (): void => {
     const gap = Math.max(CLOSE_GAP * spacing, stroke.finger ? FINGER_CLOSE_PX / renderer.camera.toScreenLength(1) : 0);
     snip(stroke.cut.close(gap, CLOSE_LENGTH));
     slashTo(stroke.cut);
-    if (strokeSave && cut > strokeSave.cut) {
-      if (challenge.done.length === strokeSave.done) note = strokeNote(strokeSave.scraps);
-      const now = linkKeys(shell.world);
-      strokeSave.severed = [...strokeSave.before!].filter((key) => !now.has(key));
-      strokeSave.before = null;
-      undoStack.push(strokeSave);
-      // The strokes that cut out a shape with ★★★ now (this one and any earlier one that cut along its
-      // piece's edge) are kept by undo.
-      for (const d of challenge.done.slice(strokeSave.done)) if (d.stars === 3 && d.piece >= 0) keepStrokesOf(d.piece);
-      if (undoStack.length > UNDO_DEPTH) undoStack.shift();
+    if (history.end()) {
+      if (challenge.done.length === doneBefore) note = strokeNote(scrapsBefore);
       refreshUndo();
     }
-    strokeSave = null;
   }
   grab?.release();
   grab = null;
@@ -641,9 +553,7 @@ shell.onWorldChange(() => {
   grab = null;
   stroke = null;
   cutting = false;
-  strokeSave = null;
   note = '';
-  undoStack.length = 0;
   refreshUndo();
 });
 refreshUndo();
@@ -896,7 +806,8 @@ function updateStatus(): void {
   }
   const left = challenge.pending().map((i) => shapes[i]!.name);
   const name = shapes[last.shape]!.name;
-  const tip = last.stars < 3 ? ' Cut on the dashed line for ★★★.' : '';
+  // Short of three stars: how to get them (on a sheet in a breeze, the paused sheet holds still).
+  const tip = last.stars < 3 ? ` Cut on the dashed line for ★★★${level.calm ? ' (pause to hold the sheet still)' : ''}.` : '';
   status.set(
     `${name[0]!.toUpperCase()}${name.slice(1)}: ${Math.round(last.fit * 100)}% ${stars(last.stars)}.${tip} Still to cut: ${left.join(', ')}.`,
   );
@@ -970,7 +881,7 @@ shell.expose({
   torn: () => torn,
   cut: () => cut,
   /** Strokes that can be undone (undo button, Ctrl/Cmd+Z). */
-  undoCount: () => undoStack.length,
+  undoCount: () => history.count,
   /** Undoes the last cutting stroke (as the undo button). */
   undoCut,
   /** The challenge: shapes cut out ({ shape, fit, stars }), and pieces that came away. */
@@ -989,6 +900,11 @@ shell.expose({
   /** The level's peg bag's basket (centre x and width, m), null on a level without one. */
   basket: () => challenge.shapes.find((sh) => sh.drop)?.drop ?? null,
   scraps: () => challenge.scraps,
+  /** The card of targets and their stars on the lawn, on the canvas (CSS px: x, y, width, height). */
+  starCard: () => {
+    const b = card.getBounds();
+    return { x: b.x, y: b.y, width: b.width, height: b.height };
+  },
   /** The gust the player blows, 0 to 1. */
   gust: () => blow,
   /** Triangles the sheet is drawn with, and the largest stretch it shows (a strain). */

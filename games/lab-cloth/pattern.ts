@@ -4,18 +4,20 @@
  * fifth of its cells (the cells of the sheet at rest whose centres lie inside its line), or less than
  * a quarter of them still hang on the line: it is scored by the piece that came away with most.
  *
- * Its fit says how close to the line the cut ran: a cut removes the cells it runs through, so a cut
- * right on the line takes the shape's edge cells with it. The shape's core (its cells whose centres
- * lie at least one link spacing inside the line) should all be in the piece, and the piece should
- * hold no cloth outside the line: each cell of the piece whose centre lies outside costs from 0 (up
- * to 0.4 spacing out) to a whole cell (0.9 spacing out and beyond), so cloth cut away with the shape
- * counts against it by its area: fit = max(0, 1 - (core cells missing + cells outside) / inside
- * cells), 1 for a cut along the line. Measured on the still sheet at 32 points across: 0.95-1 for
- * the circle or the star cut 4 cm out of the line, 0.85 (2 stars) for the star cut along the pentagon
- * through its points (a hole 1.8 times the star; the fit before outside cloth counted by area gave
- * it 0.97), 0 for the heart cut 0.4 m out or a 1.8 m square round a shape.
+ * Its fit says how closely the cut followed the line, both ways (cutFit): how much of the piece's
+ * edge lies on the line (cloth cut away with the shape, or a cut inside it, lies off it), and how
+ * much of the line the edge follows (a cut inside the line, or across a star's points, leaves it),
+ * with the line's sharp corners (a star's points, a pane's corners) weighing as much as the rest of
+ * it: a star's narrow points are a small part of its line and area but most of its look. Each
+ * sample counts whole up to FIT_FULL link spacings off and nothing from FIT_ZERO. The piece's edge
+ * is taken from where the scissors went (Challenge.marks: finer than the grid, whose points lie too
+ * far apart to hold a star's points) and, where it tore, from the links it parted along.
+ * Measured over a spread of hand-like cuts on the still sheet at 32 points across (a spacing is
+ * 0.13 m: 14 px on a desktop; scripts/lab-cloth-cuts.mjs): careful cuts (within half a spacing of
+ * the line) 0.93-1.00, three stars; careless ones (1.2 spacings out, a wobble of 1.2, 1 inside, the
+ * star's points cut across 2 spacings back) 0.57-0.85, one or two; 2 spacings out or more, 0-0.16.
  */
-import { type Cloth, type PhysicsWorld, slotOf } from '@bitphysics/physics';
+import { type Cloth, isAlive, type PhysicsWorld, slotOf } from '@bitphysics/physics';
 import type { ClothCells } from './cells';
 import { type ClothPieces, findPieces } from './pieces';
 import { sheetGrid } from './scene';
@@ -102,64 +104,198 @@ function outlineDistance(poly: readonly number[], x: number, y: number): number 
   return best;
 }
 
-/** A shape's cells on a sheet of one size (row-major cell indices; see the header). */
+/** A shape on a sheet of one size: its cells, and samples of its line for the fit (see the header). */
 export interface ShapeMask {
-  /** Cells whose centres lie inside the line. */
+  /** Cells (row-major indices) whose centres lie inside the line. */
   readonly inside: readonly number[];
-  /** Cells whose centres lie at least one link spacing inside the line. */
-  readonly core: readonly number[];
-  /** Per cell, 1 where its centre lies inside the line or at most one spacing outside it. */
-  readonly allowed: Uint8Array;
-  /**
-   * Per cell, what it costs the fit when it comes away with the shape, in cells (0 to 1): 0 inside the
-   * line or up to `EXCESS_FREE` spacings outside it, rising linearly to 1 at `EXCESS_FULL` and beyond.
-   */
-  readonly excess: Float32Array;
+  /** Points along the line, every LINE_SAMPLE m or a little less, m (sheet coordinates at rest, x and y interleaved). */
+  readonly line: Float64Array;
+  /** Its sharp corners (convex, inside angle under CORNER_ANGLE: a star's points, a pane's corners), m (as `line`). */
+  readonly corners: Float64Array;
+}
+
+/** A convex corner of a line with an inside angle under CORNER_ANGLE radians (100 degrees) is sharp (ShapeMask.corners). */
+export const CORNER_ANGLE = (100 * Math.PI) / 180;
+
+/** The convex corners of the closed polygon `poly` (x, y interleaved) with an inside angle under CORNER_ANGLE. */
+function sharpCorners(poly: readonly number[]): number[] {
+  const n = poly.length / 2;
+  let area = 0;
+  for (let i = 0, j = n - 1; i < n; j = i++) area += poly[2 * j]! * poly[2 * i + 1]! - poly[2 * i]! * poly[2 * j + 1]!;
+  const out: number[] = [];
+  for (let k = 0; k < n; k++) {
+    const p = (k + n - 1) % n,
+      q = (k + 1) % n;
+    const x = poly[2 * k]!,
+      y = poly[2 * k + 1]!,
+      ax = poly[2 * p]! - x,
+      ay = poly[2 * p + 1]! - y,
+      bx = poly[2 * q]! - x,
+      by = poly[2 * q + 1]! - y;
+    // Convex: the line turns there the way it winds (the cross product of the sides in and out has the area's sign).
+    const convex = Math.sign(area) * (-ax * by + ay * bx) > 0;
+    const angle = Math.acos(Math.max(-1, Math.min(1, (ax * bx + ay * by) / (Math.hypot(ax, ay) * Math.hypot(bx, by)))));
+    if (convex && angle < CORNER_ANGLE) out.push(x, y);
+  }
+  return out;
+}
+
+/** The line is sampled every LINE_SAMPLE m for the fit (ShapeMask.line). */
+export const LINE_SAMPLE = 0.02;
+/**
+ * The fit's tolerance, in link spacings: a stretch of the cut (or of the line) up to FIT_FULL spacings
+ * from the line (from the cut) counts whole, one FIT_ZERO spacings off or more counts nothing, and
+ * linearly between. The grid puts a cut right on the line up to half a spacing off it.
+ */
+export const FIT_FULL = 0.6,
+  FIT_ZERO = 2;
+
+/**
+ * A scissors' mark (ScissorsStroke's `marks`) counts toward a piece's edge within MARK_REACH link
+ * spacings of the middle of a link on the edge (the end of a star's point lies up to 1.5 spacings
+ * beyond the grid's last point in it), and stands for that link's cut within MARK_COVER spacings
+ * (the stroke crosses a link within half a spacing of its middle).
+ */
+export const MARK_REACH = 1.5,
+  MARK_COVER = 1;
+
+/**
+ * The edge of the piece of a cloth of `columns` x `rows` points made of the points `inPiece` says
+ * (by point index, row-major), as samples in sheet coordinates at rest (m, x and y interleaved): where
+ * the piece parts from the rest of the cloth, the links from a point of the piece to one out of it,
+ * and where it is slit, the links between two of its points that are gone (`cutLink`, if given, says
+ * whether the link from point i to its right (`down` false) or lower neighbour is). The scissors'
+ * marks (`marks`, sheet coordinates at rest) within MARK_REACH spacings of such a link's middle
+ * are samples, and the middle of each such link with no mark within MARK_COVER spacings (a tear);
+ * and a sample half a spacing out from each of its points on the sheet's edge.
+ */
+export function pieceEdge(
+  columns: number,
+  rows: number,
+  inPiece: (i: number) => boolean,
+  cutLink?: (i: number, down: boolean) => boolean,
+  marks: ArrayLike<number> = [],
+): number[] {
+  const { spacing: s } = sheetGrid(columns);
+  const C = columns,
+    R = rows;
+  const links: number[] = [],
+    out: number[] = [];
+  for (let r = 0; r < R; r++)
+    for (let c = 0; c < C; c++) {
+      const i = r * C + c,
+        here = inPiece(i);
+      if (c + 1 < C && (here !== inPiece(i + 1) || (here && cutLink?.(i, false)))) links.push((c + 0.5) * s, r * s);
+      if (r + 1 < R && (here !== inPiece(i + C) || (here && cutLink?.(i, true)))) links.push(c * s, (r + 0.5) * s);
+      if (!here) continue;
+      if (c === 0) out.push(-0.5 * s, r * s);
+      if (c === C - 1) out.push((C - 0.5) * s, r * s);
+      if (r === 0) out.push(c * s, -0.5 * s);
+      if (r === R - 1) out.push(c * s, (R - 0.5) * s);
+    }
+  const reach2 = (MARK_REACH * s) ** 2,
+    cover2 = (MARK_COVER * s) ** 2;
+  const covered = new Uint8Array(links.length / 2);
+  for (let k = 0; k < marks.length; k += 2) {
+    const x = marks[k]!,
+      y = marks[k + 1]!;
+    let near = false;
+    for (let j = 0; j < links.length; j += 2) {
+      const d2 = (links[j]! - x) ** 2 + (links[j + 1]! - y) ** 2;
+      if (d2 <= reach2) near = true;
+      if (d2 <= cover2) covered[j / 2] = 1;
+    }
+    if (near) out.push(x, y);
+  }
+  for (let j = 0; j < covered.length; j++) if (!covered[j]) out.push(links[2 * j]!, links[2 * j + 1]!);
+  return out;
+}
+
+/** Points along the closed polygon `poly` (x, y interleaved), every `step` m or a little less, from its first corner. */
+function alongLine(poly: readonly number[], step: number): number[] {
+  const n = poly.length / 2;
+  const out: number[] = [];
+  for (let i = 0; i < n; i++) {
+    const j = (i + 1) % n;
+    const ax = poly[2 * i]!,
+      ay = poly[2 * i + 1]!,
+      dx = poly[2 * j]! - ax,
+      dy = poly[2 * j + 1]! - ay;
+    const k = Math.max(1, Math.ceil(Math.hypot(dx, dy) / step));
+    for (let t = 0; t < k; t++) out.push(ax + (dx * t) / k, ay + (dy * t) / k);
+  }
+  return out;
+}
+
+/** Per point of `points` (x, y interleaved), the distance to the nearest point of `to`, m (Infinity if `to` is empty). */
+function nearest(points: ArrayLike<number>, to: ArrayLike<number>): Float64Array {
+  const out = new Float64Array(points.length / 2);
+  for (let k = 0; k < out.length; k++) {
+    const x = points[2 * k]!,
+      y = points[2 * k + 1]!;
+    let best = Infinity;
+    for (let j = 0; j < to.length; j += 2) best = Math.min(best, (to[j]! - x) ** 2 + (to[j + 1]! - y) ** 2);
+    out[k] = Math.sqrt(best);
+  }
+  return out;
 }
 
 /**
- * A cell that comes away with a shape costs the fit nothing while its centre lies up to this many
- * link spacings outside the line (a cut on the line runs through those cells), rising linearly to a
- * whole cell at `EXCESS_FULL` spacings out and beyond.
+ * Per shape of `shapes`, its cells and its line's samples on a sheet of `size` points across, at rest
+ * (see ShapeMask).
  */
-export const EXCESS_FREE = 0.4;
-/** See `EXCESS_FREE`: the distance outside the line, in link spacings, from which a cell costs a whole cell. */
-const EXCESS_FULL = 0.9;
-/**
- * Per shape of `shapes`, its cells on a sheet of `size` points across, at rest. `slack` (m, >= 0)
- * widens the band along the line that a cut may stray into: cells up to the larger of `slack` and
- * EXCESS_FREE spacings outside cost nothing (then up to a whole cell half a spacing further out), and
- * the core starts the larger of `slack` and a spacing inside. The lab gives a finger more (main.ts).
- * @throws RangeError if `slack` is negative or not finite.
- */
-export function shapeMasks(size: number, shapes: readonly Shape[] = SHAPES, slack = 0): ShapeMask[] {
-  if (!(slack >= 0) || !Number.isFinite(slack)) throw new RangeError(`shapeMasks: slack must be a finite number >= 0, got ${slack}`);
+export function shapeMasks(size: number, shapes: readonly Shape[] = SHAPES): ShapeMask[] {
   const { columns, rows, spacing } = sheetGrid(size);
-  const free = Math.max(EXCESS_FREE * spacing, slack),
-    full = free + (EXCESS_FULL - EXCESS_FREE) * spacing,
-    coreDepth = Math.max(spacing, slack);
   return shapes.map((s) => {
-    const inside: number[] = [],
-      core: number[] = [];
-    const allowed = new Uint8Array((columns - 1) * (rows - 1));
-    const excess = new Float32Array((columns - 1) * (rows - 1));
+    const inside: number[] = [];
     for (let r = 0; r + 1 < rows; r++)
-      for (let c = 0; c + 1 < columns; c++) {
-        const x = (c + 0.5) * spacing,
-          y = (r + 0.5) * spacing,
-          cell = r * (columns - 1) + c;
-        const d = outlineDistance(s.outline, x, y);
-        if (insidePolygon(s.outline, x, y)) {
-          inside.push(cell);
-          allowed[cell] = 1;
-          if (d >= coreDepth) core.push(cell);
-        } else {
-          if (d <= spacing) allowed[cell] = 1;
-          excess[cell] = Math.max(0, Math.min(1, (d - free) / (full - free)));
-        }
-      }
-    return { inside, core, allowed, excess };
+      for (let c = 0; c + 1 < columns; c++)
+        if (insidePolygon(s.outline, (c + 0.5) * spacing, (r + 0.5) * spacing)) inside.push(r * (columns - 1) + c);
+    return { inside, line: Float64Array.from(alongLine(s.outline, LINE_SAMPLE)), corners: Float64Array.from(sharpCorners(s.outline)) };
   });
+}
+
+/** How well a piece's edge follows a shape's line (cutFit). */
+export interface Fit {
+  /** The fit, in [0, 1]: the harmonic mean of `onLine` and `followed`. */
+  fit: number;
+  /** How much of the piece's edge lies on the line (each sample scored by its distance from the line), in [0, 1]. */
+  onLine: number;
+  /** How much of the line the piece's edge follows (each sample scored by its distance from the edge), in [0, 1]. */
+  followed: number;
+}
+
+/**
+ * The fit of a piece whose edge is `edge` (pieceEdge: sheet coordinates at rest, m) to `shape`, with
+ * `mask` its ShapeMask on a sheet of link spacing `spacing` m: each sample of the edge scores by its
+ * distance from the line, and each sample of the line by its distance from the edge less its reach:
+ * 1 up to FIT_FULL spacings + `slack` m, 0 from FIT_ZERO spacings + `slack`, linearly between.
+ * `onLine` is the edge's mean score, `followed` the line's, and the fit their harmonic mean: both
+ * must be good (a piece with the shape and cloth round it lies off the line; one cut inside the line,
+ * or across a star's arms, leaves parts of the line unfollowed). 0 for an empty edge.
+ * @throws RangeError if `spacing` is not positive or `slack` is negative or not finite.
+ */
+export function cutFit(shape: Shape, mask: ShapeMask, edge: readonly number[], spacing: number, slack = 0): Fit {
+  if (!(spacing > 0)) throw new RangeError(`cutFit: spacing must be > 0 m, got ${spacing}`);
+  if (!(slack >= 0) || !Number.isFinite(slack)) throw new RangeError(`cutFit: slack must be a finite number >= 0, got ${slack}`);
+  if (edge.length === 0) return { fit: 0, onLine: 0, followed: 0 };
+  const full = FIT_FULL * spacing + slack,
+    zero = FIT_ZERO * spacing + slack;
+  const score = (d: number): number => Math.max(0, Math.min(1, (zero - d) / (zero - full)));
+  let onLine = 0;
+  for (let k = 0; k < edge.length; k += 2) onLine += score(outlineDistance(shape.outline, edge[k]!, edge[k + 1]!));
+  onLine /= edge.length / 2;
+  const mean = (points: ArrayLike<number>): number => {
+    const d = nearest(points, edge);
+    let sum = 0;
+    for (let k = 0; k < d.length; k++) sum += score(d[k]!);
+    return sum / d.length;
+  };
+  // The sharp corners weigh as much as the rest of the line: cutting across a star's points misses
+  // little of its line but much of its look.
+  const followed = mask.corners.length > 0 ? (mean(mask.line) + mean(mask.corners)) / 2 : mean(mask.line);
+  const fit = onLine + followed > 0 ? (2 * onLine * followed) / (onLine + followed) : 0;
+  return { fit, onLine, followed };
 }
 
 /** Per shape, the cells (row-major indices) of a sheet of `size` points across whose centres at rest lie inside it. */
@@ -186,9 +322,9 @@ export interface CutOut {
   landedAt?: number;
 }
 
-/** Stars for a fit in [0, 1]: 3 from 0.9, 2 from 0.6, 1 from 0.3, else none. */
+/** Stars for a fit in [0, 1]: 3 from 0.9, 2 from 0.7, 1 from 0.4, else none. */
 export function starsFor(fit: number): number {
-  return fit >= 0.9 ? 3 : fit >= 0.6 ? 2 : fit >= 0.3 ? 1 : 0;
+  return fit >= 0.9 ? 3 : fit >= 0.7 ? 2 : fit >= 0.4 ? 1 : 0;
 }
 
 /**
@@ -222,6 +358,39 @@ function cellOwners(
   return { pieceOfCell, hanging };
 }
 
+/**
+ * The edge of piece `piece` of `pieces` (pieceEdge), with the structural links cut between two of
+ * its points (a slit into it).
+ */
+function edgeOf(
+  world: PhysicsWorld,
+  cloth: Cloth,
+  cells: ClothCells,
+  pieces: ClothPieces,
+  piece: number,
+  marks: ArrayLike<number>,
+): number[] {
+  const C = cloth.columns,
+    R = cloth.rows,
+    A = cells.across,
+    sides = cells.sides;
+  // Point (r, c)'s right link is its cell's top side (the bottom side of the cell above on the last
+  // row), its lower link its cell's left side (the right side of the cell to its left in the last column).
+  const cutLink = (i: number, down: boolean): boolean => {
+    const r = Math.floor(i / C),
+      c = i % C;
+    const h = down
+      ? c + 1 < C
+        ? sides[4 * (r * A + c) + 1]!
+        : sides[4 * (r * A + c - 1) + 3]!
+      : r + 1 < R
+        ? sides[4 * (r * A + c)]!
+        : sides[4 * ((r - 1) * A + c) + 2]!;
+    return !isAlive(world, h);
+  };
+  return pieceEdge(C, R, (i) => pieces.pieceOf[i] === piece, cutLink, marks);
+}
+
 /** A shape not cut out yet of which some came away (Challenge.partCuts). */
 export interface PartCut {
   /** Index of the shape. */
@@ -235,10 +404,11 @@ export interface PartCut {
 /**
  * The shapes among `pending` (indices of SHAPES) that have come off the line: a free piece holds a
  * fifth of their inside cells, or less than a quarter are in pieces still hanging. Each is scored by
- * the free piece holding most of its
- * inside cells (-1 and fit 0 if none holds any), with its fit (see the header). A cell is in a piece
- * when its four corners are and at least one of its triangles is whole.
+ * the free piece holding most of its inside cells (-1 and fit 0 if none holds any), with its fit
+ * (cutFit of its edge, pieceEdge with the scissors' `how.marks`, with `how.slack` m). A cell is in a
+ * piece when its four corners are and at least one of its triangles is whole.
  * @param masks shapeMasks of the sheet's size.
+ * @throws RangeError as cutFit on a negative `how.slack`.
  */
 export function scoreCutOuts(
   world: PhysicsWorld,
@@ -248,9 +418,9 @@ export function scoreCutOuts(
   masks: readonly ShapeMask[],
   pending: readonly number[],
   shapes: readonly Shape[] = SHAPES,
+  how: { readonly slack?: number; readonly marks?: ArrayLike<number> } = {},
 ): CutOut[] {
   const { pieceOfCell, hanging } = cellOwners(world, cloth, cells, pieces);
-  const n = pieceOfCell.length;
   const out: CutOut[] = [];
   for (const s of pending) {
     const mask = masks[s]!;
@@ -274,11 +444,13 @@ export function scoreCutOuts(
       out.push({ shape: s, fit: 0, stars: 0, piece: -1 });
       continue;
     }
-    let missing = 0,
-      beyond = 0;
-    for (const cell of mask.core) if (pieceOfCell[cell] !== best) missing++;
-    for (let cell = 0; cell < n; cell++) if (pieceOfCell[cell] === best) beyond += mask.excess[cell]!;
-    const fit = Math.max(0, 1 - (missing + beyond) / mask.inside.length);
+    const { fit } = cutFit(
+      shapes[s]!,
+      mask,
+      edgeOf(world, cloth, cells, pieces, best, how.marks ?? []),
+      sheetGrid(cloth.columns).spacing,
+      how.slack,
+    );
     if (shapes[s]?.drop) out.push({ shape: s, fit, stars: 0, piece: best, drop: 'falling', landedAt: Number.NaN });
     else out.push({ shape: s, fit, stars: starsFor(fit), piece: best });
   }
@@ -296,7 +468,14 @@ export class Challenge {
   scraps = 0;
   /** The pieces at the last update. */
   pieces: ClothPieces | null = null;
-  private masks: ShapeMask[];
+  /**
+   * Where the scissors have been on the sheet, m (sheet coordinates at rest, x and y interleaved):
+   * points along each stroke at most a quarter of a link spacing apart (ScissorsStroke's `marks`,
+   * cutTrace's). A piece's edge is taken from them where they run along it (pieceEdge), finer than the
+   * grid. Cut them back with the sheet on an undo.
+   */
+  readonly marks: number[] = [];
+  private readonly masks: ShapeMask[];
   private slack = 0;
   private seenVersion = -1;
   /** Per falling drop (an index of `done`), the cloth's point indices in its piece. */
@@ -305,7 +484,7 @@ export class Challenge {
   /** @param shapes the targets (default: the three shapes). */
   constructor(
     private readonly world: PhysicsWorld,
-    private readonly cloth: Cloth,
+    readonly cloth: Cloth,
     private readonly cells: ClothCells,
     readonly shapes: readonly Shape[] = SHAPES,
   ) {
@@ -313,12 +492,12 @@ export class Challenge {
   }
 
   /**
-   * Sets the band along the lines that a cut may stray into, m (shapeMasks' `slack`), for the shapes
-   * scored from now on. @throws RangeError as shapeMasks.
+   * Sets how far a cut may stray from the lines at no cost, m (cutFit's `slack`: a finger's), for the
+   * shapes scored from now on. @throws RangeError if `slack` is negative or not finite.
    */
   setSlack(slack: number): void {
-    if (slack === this.slack) return;
-    this.masks = shapeMasks(this.cloth.columns, this.shapes, slack);
+    if (!(slack >= 0) || !Number.isFinite(slack))
+      throw new RangeError(`Challenge.setSlack: slack must be a finite number >= 0, got ${slack}`);
     this.slack = slack;
   }
 
@@ -386,7 +565,10 @@ export class Challenge {
     const pieces = findPieces(this.world, this.cloth);
     this.pieces = pieces;
     this.scraps = pieces.size.filter((n, k) => n >= 4 && !pieces.held[k]).length;
-    const fresh = scoreCutOuts(this.world, this.cloth, this.cells, pieces, this.masks, this.pending(), this.shapes);
+    const fresh = scoreCutOuts(this.world, this.cloth, this.cells, pieces, this.masks, this.pending(), this.shapes, {
+      slack: this.slack,
+      marks: this.marks,
+    });
     for (const d of fresh) {
       this.done.push(d);
       if (d.drop === 'falling') {

@@ -9,7 +9,9 @@
  * to how much of it is under water and bobs in the waves. Collect every beacon before three hits
  * (a scrape on the seabed, or a moored mine laid across the way between two beacons: ./mines.ts)
  * break the hull, inside the course's par time if you can: a won run earns a star for the beacons,
- * one for par and one for an unhurt hull (the best time of each course is kept).
+ * one for par and one for an unhurt hull (the best time of each course is kept). A mine on the
+ * boat's course within MINE_WARN_TIME s is told by the hull: a red arrow from it to the mine, a tag
+ * over the sail ("rise over") or under the keel ("dive under") and a low two-note call.
  * Keys: S / W or down / up arrows dive / rise, A / D or left / right arrows astern / ahead, Q / E
  * nose down / up, P pause, N step, R reset. Touch: a stick under the scene (down dives, up rises,
  * right ahead, left astern; pushed part way it asks for part of the speed) and Nose buttons.
@@ -35,7 +37,18 @@ import { Graphics, Text } from 'pixi.js';
 import { beaconLabel, chooseBeacon, seabedBetween } from './beacons';
 import { drawBoat } from './boat-drawing';
 import { createHelmState, type HelmInput, steer } from './helm';
-import { hullDistance, layMines, MINE_BLAST_IMPULSE, MINE_RADIUS, type Mine, mineOnWay, parTime, touchesMine } from './mines';
+import {
+  hullDistance,
+  layMines,
+  MINE_BLAST_IMPULSE,
+  MINE_RADIUS,
+  type Mine,
+  type MineAhead,
+  mineAhead,
+  mineOnWay,
+  parTime,
+  touchesMine,
+} from './mines';
 import { drawFish } from './sea-life';
 import { seabedInput, touchSeabed } from './seabed';
 import { type Glow, layTrail, touchesGlow } from './trail';
@@ -77,6 +90,11 @@ let mines: Mine[] = [];
 let mineLive: boolean[] = [];
 /** The live mine on the straight way to the pointer's beacon (./mines.ts mineOnWay), -1 for none: drawn ringed. */
 let wayMine = -1;
+/**
+ * The live mine on the boat's course within MINE_WARN_TIME s (./mines.ts mineAhead), null for none:
+ * drawn ringed, with a warning by the hull (an arrow from it to the mine and which way to pass).
+ */
+let ahead: MineAhead | null = null;
 /** Within this distance of the hull, m, a mine is drawn with a pulsing warning ring. */
 const MINE_WARN_DISTANCE = 25;
 /** The course's glow trail (./trail.ts), and each glow's state: 0 to catch, 1 caught, 2 missed (passed by). */
@@ -197,6 +215,7 @@ function createWorld(): PhysicsWorld {
   mines = layMines(handles.beacons, handles.seabed, params.seed);
   mineLive = mines.map(() => true);
   wayMine = -1;
+  ahead = null;
   glows = layTrail(handles.beacons, handles.seabed, mines);
   glowState = new Uint8Array(glows.length);
   glowPops.length = 0;
@@ -319,7 +338,21 @@ function stepWorld(world: PhysicsWorld): void {
     sound.explosion(0.9);
     if (state.hits >= 3) state.over = 'sunk';
   }
-  if (state.over) return;
+  if (state.over) {
+    ahead = null;
+    return;
+  }
+  // The course ahead (./mines.ts mineAhead): toward the ordered depth, and while Dive or Rise is
+  // held on at the climb rate too. A new warning sounds a low two-note call.
+  const was = ahead?.index ?? -1;
+  ahead = mineAhead(c.Position.x[e]!, c.Position.y[e]!, c.Velocity.x[e]!, c.Velocity.y[e]!, state.holdY, mines, mineLive, handles.seabed, {
+    prefer: ahead,
+    heaving: state.mode === 'diving' || state.mode === 'rising',
+  });
+  if (ahead && ahead.index !== was) {
+    sound.chime(330, 0.18);
+    setTimeout(() => sound.chime(262, 0.25), 150);
+  }
   catchGlows(world);
   for (let i = 0; i < taken.length; i++) {
     if (taken[i]) continue;
@@ -594,6 +627,80 @@ const hitLabel = new Text({
 hitLabel.anchor.set(0.5);
 hitLabel.visible = false;
 app.stage.addChild(hitLabel);
+/** The warning by the hull of a mine on its course (drawMineWarning): which way to pass it, white on a red pill. */
+const mineTag = new Text({
+  text: '',
+  style: { fill: 0xffffff, fontSize: 14, fontWeight: '800', fontFamily: 'system-ui, sans-serif' },
+});
+mineTag.anchor.set(0.5);
+mineTag.visible = false;
+app.stage.addChild(mineTag);
+/** The warning's words for each side to pass the mine on. */
+const MINE_TAG_TEXT = { over: '⚠ MINE: rise over ▲', under: '⚠ MINE: dive under ▼' } as const;
+/** The mine warning as last drawn (tests): its words ('' while none), the tag's box and the arrow's tip and tail (px). */
+const mineWarning = { text: '', box: [0, 0, 0, 0], tip: [0, 0], tail: [0, 0] };
+/**
+ * Places the tag of the warning of a mine on the boat's course (`ahead`) by the hull at screen
+ * (`hx`, `hy`, px), `k` px a metre, in a view `W` x `H` px: on the side to pass, over the sail (rise
+ * over it) or under the keel (dive under it), inside the view. Hidden while there is none. Placed
+ * before the beacon pointer's label, which keeps clear of it.
+ */
+function placeMineTag(k: number, hx: number, hy: number, W: number, H: number): void {
+  mineTag.visible = ahead !== null && !state.over;
+  mineWarning.text = '';
+  mineWarning.box = [0, 0, 0, 0];
+  if (!ahead || state.over) return;
+  mineTag.text = MINE_TAG_TEXT[ahead.side];
+  const w = mineTag.width + 16,
+    h = mineTag.height + 6;
+  const off = (SUBMARINE.height / 2) * k + (ahead.side === 'over' ? 1.6 * k + 6 : 6) + h / 2;
+  mineTag.x = Math.max(w / 2 + 4, Math.min(W - GAUGE_WIDTH - w / 2 - 4, hx));
+  mineTag.y = Math.max(h / 2 + 4, Math.min(H - h / 2 - 4, ahead.side === 'over' ? hy - off : hy + off));
+  mineWarning.text = mineTag.text;
+  mineWarning.box = [mineTag.x - w / 2, mineTag.y - h / 2, w, h];
+}
+/**
+ * Draws the warning of a mine on the boat's course (`ahead`) by the hull at (`hxw`, `hyw`, m), at
+ * game time `t`, `k` px a metre, through `sx`, `sy`: a red arrow from just off the hull to the mine
+ * (over its pulsing ring, drawMines), and the tag's red pill (placeMineTag), pulsing faster in the
+ * last 2 s before contact.
+ */
+function drawMineWarning(t: number, k: number, sx: (x: number) => number, sy: (y: number) => number, hxw: number, hyw: number): void {
+  if (!ahead || state.over) return;
+  const m = mines[ahead.index]!;
+  const hx = sx(hxw),
+    hy = sy(hyw),
+    dx = sx(m.x) - hx,
+    dy = sy(m.y) - hy,
+    d = Math.max(1e-6, Math.hypot(dx, dy));
+  const ux = dx / d,
+    uy = dy / d;
+  const pulse = 0.5 + 0.5 * Math.sin(2 * Math.PI * (ahead.time < 2 ? 4 : 2) * t);
+  // The arrow: from just off the hull toward the mine, short of its ring.
+  const r0 = Math.max((SUBMARINE.length / 2) * k * Math.abs(ux) + (SUBMARINE.height / 2) * k * Math.abs(uy) + 8, 28),
+    r1 = Math.max(r0 + 18, Math.min(d - (MINE_RADIUS + 2) * k, r0 + Math.max(40, 4 * k)));
+  const tail: [number, number] = [hx + ux * r0, hy + uy * r0],
+    tip: [number, number] = [hx + ux * r1, hy + uy * r1];
+  const head = 11,
+    wide = 8;
+  const base: [number, number] = [tip[0] - ux * head, tip[1] - uy * head];
+  for (const [width, color] of [
+    [7, 0x1a0606],
+    [3.5, 0xff3b30],
+  ] as const)
+    g.moveTo(...tail)
+      .lineTo(...base)
+      .stroke({ color, width, alpha: 0.75 + 0.25 * pulse, cap: 'round' });
+  g.poly([...tip, base[0] - uy * wide, base[1] + ux * wide, base[0] + uy * wide, base[1] - ux * wide])
+    .fill({ color: 0xff3b30, alpha: 0.8 + 0.2 * pulse })
+    .stroke({ color: 0x1a0606, width: 2 });
+  const [bx, by, bw, bh] = mineWarning.box as [number, number, number, number];
+  g.roundRect(bx, by, bw, bh, bh / 2)
+    .fill({ color: 0xc62a20, alpha: 0.8 + 0.2 * pulse })
+    .stroke({ color: 0xffd0c8, width: 1.5, alpha: 0.9 });
+  mineWarning.tip = tip;
+  mineWarning.tail = tail;
+}
 /** The label's text for each cause of a hit. */
 const HIT_TEXT = { mine: 'MINE!\n−1 hull', seabed: 'SEABED SCRAPE\n−1 hull' } as const;
 /**
@@ -723,7 +830,7 @@ function drawMines(
     g.circle(x, y, Math.max(9, 1.9 * MINE_RADIUS * k)).fill({ color: 0xff5a36, alpha: 0.16 });
     // Near the hull (or on the way to the beacon): a pulsing ring where contact begins.
     const near = hullDistance(hx, hy, ha, m.x, m.y);
-    if (near < MINE_WARN_DISTANCE || i === wayMine) {
+    if (near < MINE_WARN_DISTANCE || i === wayMine || i === ahead?.index) {
       const pulse = 0.5 + 0.5 * Math.sin(2 * Math.PI * 2 * t),
         close = Math.max(0, 1 - near / MINE_WARN_DISTANCE);
       g.circle(x, y, Math.max(12, (MINE_RADIUS + 1.5) * k)).stroke({
@@ -1174,6 +1281,7 @@ function draw(): void {
   }
   // The pointer: an arrow at the screen's edge leading to one beacon (./beacons.ts: kept until it is
   // collected or another is much nearer) while it is off screen, with its distance and depth.
+  placeMineTag(k, sx(hxw), sy(hyw), W, H);
   pointer.visible = aim.index >= 0;
   if (aim.index >= 0) {
     const wx = handles.beacons[2 * aim.index]!,
@@ -1186,7 +1294,9 @@ function draw(): void {
     const ridge = seabedBetween(hxw, hyw, wx, wy, (x) => seabedHeight(handles.seabed, x));
     const onWay = mineOnWay(hxw, hyw, wx, wy, mines, mineLive);
     wayMine = onWay ? onWay.index : -1;
-    pointer.text = beaconLabel(wx - hxw, wy - hyw, c.Angle.value[e]!, ridge, onWay ? onWay.side : '');
+    // A mine on the way is ringed where it is, and a mine on the boat's course is told by the hull
+    // (drawMineWarning), where the player looks: the pointer at the screen's edge tells only the ridge.
+    pointer.text = beaconLabel(wx - hxw, wy - hyw, c.Angle.value[e]!, ridge);
     aim.dx = wx - hxw;
     aim.dy = wy - hyw;
     // The right margin leaves the depth gauge clear too (on a phone the badge sat over it).
@@ -1254,6 +1364,14 @@ function draw(): void {
         below = hy0 + hr + pointer.height / 2 + 4;
       pointer.y = (pointer.y < hy0 && above > pointer.height) || below > H - pointer.height ? above : below;
     }
+    // Clear of the mine warning's tag by the hull too (placeMineTag): moved on past it, away from the hull.
+    const [tx, ty, tw, th] = mineWarning.box as [number, number, number, number];
+    if (
+      mineWarning.text &&
+      Math.abs(pointer.x - (tx + tw / 2)) < (pointer.width + 14 + tw) / 2 + 2 &&
+      Math.abs(pointer.y - (ty + th / 2)) < (pointer.height + 4 + th) / 2 + 2
+    )
+      pointer.y = pointer.y < ty + th / 2 ? ty - pointer.height / 2 - 6 : ty + th + pointer.height / 2 + 6;
     aim.label = [pointer.x - pointer.width / 2, pointer.y - pointer.height / 2, pointer.width, pointer.height];
     aim.hull = [hx0 - hr, hy0 - hr, 2 * hr, 2 * hr];
     // The label on a dark pill, readable over the bright surface water and the sky.
@@ -1319,6 +1437,7 @@ function draw(): void {
         .stroke({ color: 0x7fe3ff, width: 2, alpha: 0.6 - 0.2 * j });
     }
   }
+  drawMineWarning(t, k, sx, sy, hxw, hyw);
   spawnBubbles(world, a);
   for (const b of bubbles) {
     const life = 1 - b.age / b.life;
@@ -1428,6 +1547,11 @@ shell.expose({
   hull: () => handles.hull,
   /** The glow trail: each glow's place (m), leg and state ('open', 'caught' or 'missed'). */
   glows: () => glows.map((gl, i) => ({ ...gl, state: (['open', 'caught', 'missed'] as const)[glowState[i]!]! })),
+  /**
+   * The mine on the boat's course (./mines.ts mineAhead: index, side to pass, seconds to contact; null
+   * for none) and its warning by the hull as last drawn: words, tag box, arrow tip and tail (px).
+   */
+  mineAhead: () => (ahead ? { ...ahead, ...mineWarning } : null),
   /** The course's mines: centre (x, y, m), anchor height (m) and whether each is still live. */
   mines: () => mines.map((m, i) => ({ ...m, live: mineLive[i]! })),
   /** The scene's handles: hull, sea, seabed, beacons (x, y pairs, m) and vertical thrusters. */

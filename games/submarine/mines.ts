@@ -3,21 +3,58 @@
  * cable from an anchor on the seabed, laid across the legs between the beacons so that the straight
  * run from one beacon to the next meets a mine and the pilot must go over or under it. Also the
  * course's par time. Headless (no drawing), so placement, contact and par are tested in node.
+ *
+ * Fair: each mine leaves room to pass over it well under the waves, lies far enough past the beacon
+ * before it that a boat leaving that beacon at full ahead is warned in time, and far enough from the
+ * other mines that two never make a wall; and the warning (`mineAhead`) looks along the course the
+ * boat is on, MINE_WARN_TIME s ahead, so it comes in time to rise or dive past at the helm's speeds
+ * (HELM.climbSpeed, HELM.diveSpeed) after a pilot's reaction time.
  */
 
 import { Rng } from '@bitphysics/physics';
-import { assertPositive } from '@bitphysics/physics/validate';
+import { assertFinite, assertPositive } from '@bitphysics/physics/validate';
 import { SUBMARINE, type SubmarineHandles, seabedHeight } from '@bitphysics/projects';
 import { assertSegment } from './beacons';
+import { HELM } from './helm';
 
 /** A mine's contact radius (the sphere and its horns' tips), m. */
 export const MINE_RADIUS = 2.4;
 /** No mine's centre lies nearer a beacon than this, m (the game collects within 7 m). */
 export const MINE_BEACON_CLEARANCE = 15;
-/** No mine's centre lies less than this under the surface, m, so the boat can pass over it. */
-export const MINE_TOP = 9;
+/**
+ * No mine's centre lies less than this under the surface, m, so the boat can pass over it with its
+ * deck under the waves: its centre MINE_RADIUS + half its height + MINE_WARN_MARGIN (5.4 m) over the
+ * mine's leaves the deck 5.1 m deep (at 9 m, a boat rising over a mine near the surface touched it:
+ * the helm slows the climb as the deck nears the surface).
+ */
+export const MINE_TOP = 12;
 /** No mine's centre lies less than this over the seabed, m. */
 export const MINE_BED_CLEARANCE = 5;
+/**
+ * A pilot's reaction time to a warning, s: what the warning's timing and the mines' spacing allow for.
+ */
+export const MINE_REACTION = 1;
+/**
+ * How far ahead the warning looks along the boat's course, s (mineAhead): 52 m at full ahead
+ * (12.9 m/s). Measured headless (helm and physics, test/games/submarine-mines.test.ts): a boat at
+ * full ahead on a level run into a mine on its line, holding Rise from MINE_REACTION s after the
+ * warning, passes it with 2 m or more to spare; rising over a mine takes about 1.5 s from level.
+ */
+export const MINE_WARN_TIME = 4;
+/** The warning's room round the hull, m: a course that passes a mine closer than this (beyond contact) is warned of. */
+export const MINE_WARN_MARGIN = 1.5;
+/**
+ * No mine lies less than this past the beacon before it along x, m: at full ahead (12.9 m/s) from
+ * the beacon, 3.5 s, enough for MINE_REACTION and the 1.5 s a rise over it takes, with the bow's
+ * half length and the mine's radius.
+ */
+export const MINE_LEAD = 45;
+/**
+ * No two mines lie nearer than this along x, m, so that two never make a wall: once the way over or
+ * under the first is clear, the second is warned of about MINE_WARN_TIME s ahead, still before the
+ * first at full ahead (12.9 m/s).
+ */
+export const MINE_GAP = 40;
 /**
  * Impulse of a mine's blast on the hull, N s, pushing the hull away from the mine: 110 t (the hull
  * with half-full tanks) thrown at about 4 m/s.
@@ -43,10 +80,12 @@ export function courseOrder(beacons: ArrayLike<number>): number[] {
 
 /**
  * Lays the mines of a course: on each leg between two beacons (none on the first, from the start to
- * the first beacon) one mine on the straight line from one to the next, 40 to 60% of the way, and one
- * 65 to 85% of the way, 5 to 9 m above or below that line. A mine that would lie within
- * `MINE_BEACON_CLEARANCE` of a beacon, above `MINE_TOP` or within `MINE_BED_CLEARANCE` of the
- * seabed is moved into range, and left out if it cannot be. Seeded: the same course has the same mines.
+ * the first beacon) one mine on the straight line from one to the next, 35 to 50% of the way, and one
+ * 75 to 90% of the way, 5 to 9 m above or below that line. A mine above `MINE_TOP` or within
+ * `MINE_BED_CLEARANCE` of the seabed is moved into range; one that would lie within
+ * `MINE_BEACON_CLEARANCE` of a beacon, less than `MINE_LEAD` past the leg's first beacon along x,
+ * or within `MINE_GAP` of another mine along x is left out (a short leg has one mine or none).
+ * Seeded: the same course has the same mines.
  * @param beacons (x, y) pairs, m, as the scene lays them.
  * @param seabed the scene's seabed.
  * @param seed any finite number (the course's seed).
@@ -69,13 +108,14 @@ export function layMines(beacons: ArrayLike<number>, seabed: SubmarineHandles['s
       bx = beacons[2 * b]!,
       by = beacons[2 * b + 1]!;
     for (const [f, offset] of [
-      [rng.range(0.4, 0.6), rng.range(-1, 1)],
-      [rng.range(0.65, 0.85), (rng.next() < 0.5 ? -1 : 1) * rng.range(5, 9)],
+      [rng.range(0.35, 0.5), rng.range(-1, 1)],
+      [rng.range(0.75, 0.9), (rng.next() < 0.5 ? -1 : 1) * rng.range(5, 9)],
     ] as const) {
       const x = ax + f * (bx - ax);
       const anchor = seabedHeight(seabed, x);
       const y = Math.min(-MINE_TOP, Math.max(anchor + MINE_BED_CLEARANCE, ay + f * (by - ay) + offset));
       if (y - anchor < MINE_BED_CLEARANCE || !clearOfBeacons(x, y)) continue;
+      if (x - ax < MINE_LEAD || mines.some((m) => Math.abs(m.x - x) < MINE_GAP)) continue;
       mines.push({ x, y, anchor });
     }
   }
@@ -126,6 +166,155 @@ export function mineOnWay(
     best = { index: i, side };
   }
   return best;
+}
+
+/** A mine on the boat's course (mineAhead). */
+export interface MineAhead {
+  /** Index of the mine. */
+  index: number;
+  /** Which side to pass it: 'over', or 'under' when the course runs below its centre and there is room under it. */
+  side: 'over' | 'under';
+  /** In how long the course would touch it (with MINE_WARN_MARGIN to spare), s. */
+  time: number;
+}
+
+/**
+ * The first live mine the hull would touch (with `MINE_WARN_MARGIN` to spare) within `horizon` s
+ * (> 0) if it kept on its course: from its centre at (x, y), m (y up), along x at its speed `vx`
+ * (m/s; at least 2 m/s the way it goes, ahead when it is still), and in depth on toward the ordered
+ * depth `holdY` (m; NaN: none, surfaced or steering by the nose) at up to the helm's climb or dive
+ * speed; and, while Dive or Rise is held (`options.heaving`: on the way it goes, speeding up to the
+ * helm's dive or climb speed) or no depth is ordered (on at its vertical speed `vy`, m/s), also on:
+ * the first contact on either course. Null when the course is clear.
+ * Which side to pass: the one the hull can clear with more to spare by the time it gets there,
+ * rising or diving flat out from its vertical speed now (HELM.climbSpeed, HELM.diveSpeed, reached at
+ * HELM.brake), that does not run it into another mine on the way; under only where the hull has
+ * room under the mine over the seabed (`seabed`, the scene's); over has room (MINE_TOP).
+ * @param mines the course's mines; `live[i]` false for one that went off.
+ * @param options `horizon`: how far ahead to look, s (default MINE_WARN_TIME); `prefer`: the last
+ * warning (a mine's index and the side told), whose side is kept for that mine while the hull can
+ * still make it (or can make neither) and it runs into no other mine, so the warning does not flip
+ * as the hull turns to it; `heaving`: Dive or Rise is held (default false).
+ * @throws RangeError when x, y, vx or vy is not finite or `horizon` is not positive.
+ */
+export function mineAhead(
+  x: number,
+  y: number,
+  vx: number,
+  vy: number,
+  holdY: number,
+  mines: readonly Mine[],
+  live: readonly boolean[],
+  seabed: SubmarineHandles['seabed'],
+  options: {
+    readonly horizon?: number;
+    readonly prefer?: { readonly index: number; readonly side: 'over' | 'under' } | null;
+    readonly heaving?: boolean;
+  } = {},
+): MineAhead | null {
+  const horizon = options.horizon ?? MINE_WARN_TIME;
+  for (const [name, v] of [
+    ['x', x],
+    ['y', y],
+    ['vx', vx],
+    ['vy', vy],
+  ] as const)
+    assertFinite('mineAhead', name, v);
+  assertPositive('mineAhead', 'horizon', horizon);
+  const u = Math.abs(vx) >= 2 ? vx : vx < -0.3 ? -2 : 2;
+  const reach = MINE_RADIUS + MINE_WARN_MARGIN;
+  const dt = 0.05;
+  /** The first live mine but `skip` that a level hull at (hx, hy) comes within `reach` of, -1 for none. */
+  const touching = (hx: number, hy: number, skip: number): number => {
+    for (let i = 0; i < mines.length; i++) {
+      const m = mines[i]!;
+      if (i === skip || !live[i] || Math.abs(m.x - hx) > SUBMARINE.length / 2 + reach) continue;
+      if (hullDistance(hx, hy, 0, m.x, m.y) < reach) return i;
+    }
+    return -1;
+  };
+  let found = -1;
+  /**
+   * Whether rising (`dir` 1) or diving (-1) flat out from now to the depth `to` (m, the hull's
+   * centre) and holding it until the hull is past mine `found`, and MINE_REACTION s more, runs it
+   * into another live mine or takes its keel within MINE_WARN_MARGIN of the seabed.
+   */
+  const blocked = (dir: number, to: number): boolean => {
+    const m = mines[found]!,
+      pass = (Math.abs(m.x - x) + SUBMARINE.length / 2 + reach) / Math.abs(u) + MINE_REACTION;
+    for (let t = dt; t <= pass; t += dt) {
+      const rise = dir * heave(dir * vy, dir > 0 ? HELM.climbSpeed : HELM.diveSpeed, t);
+      const hx = x + u * t,
+        hy = Math.min(0, dir > 0 ? Math.min(Math.max(y, to), y + rise) : Math.max(Math.min(y, to), y + rise));
+      if (touching(hx, hy, found) >= 0) return true;
+      if (dir < 0 && hy - SUBMARINE.height / 2 - MINE_WARN_MARGIN < seabedHeight(seabed, hx)) return true;
+    }
+    return false;
+  };
+  // The courses: on toward the order, and on at the vertical speed while Dive or Rise is held (or
+  // no depth is ordered); the first contact on either counts.
+  const toOrder = !Number.isNaN(holdY),
+    onAsGoing = options.heaving === true || !toOrder;
+  for (let t = dt; t <= horizon + 1e-9; t += dt) {
+    const cx = x + u * t;
+    found = -1;
+    let cy = y;
+    if (toOrder) {
+      cy = Math.min(0, y + Math.max(-HELM.diveSpeed * t, Math.min(HELM.climbSpeed * t, holdY - y)));
+      found = touching(cx, cy, -1);
+    }
+    if (found < 0 && onAsGoing) {
+      // Held on: speeding up to the helm's climb or dive speed the way it goes (HELM.brake).
+      const on = !options.heaving ? vy * t : vy >= 0 ? heave(vy, HELM.climbSpeed, t) : -heave(-vy, HELM.diveSpeed, t);
+      cy = Math.min(0, y + on);
+      found = touching(cx, cy, -1);
+    }
+    if (found >= 0) {
+      const i = found,
+        m = mines[i]!;
+      // Over: the hull's centre MINE_RADIUS + half its height + the margin over the mine's; under:
+      // as far under it, with the keel a margin over the seabed there (under the hull's length).
+      const overY = m.y + MINE_RADIUS + SUBMARINE.height / 2 + MINE_WARN_MARGIN,
+        underY = m.y - MINE_RADIUS - SUBMARINE.height / 2 - MINE_WARN_MARGIN;
+      let bed = -Infinity;
+      for (let k = -1; k <= 1; k++) bed = Math.max(bed, seabedHeight(seabed, m.x + (k * SUBMARINE.length) / 2));
+      const roomUnder = underY - SUBMARINE.height / 2 - MINE_WARN_MARGIN > bed;
+      // The side the hull can clear sooner, rising or diving flat out from its vertical speed now
+      // (a boat diving fast cannot turn back up over a mine just below it in time, but can dive on
+      // under it), and not into another mine or the bed on the way: its time to spare (s) before it
+      // gets there, -Infinity where the way is blocked.
+      const spareOver = blocked(1, overY) ? -Infinity : t - heaveTime(vy, HELM.climbSpeed, overY - y),
+        spareUnder = !roomUnder || blocked(-1, underY) ? -Infinity : t - heaveTime(-vy, HELM.diveSpeed, y - underY);
+      let side: 'over' | 'under' = spareUnder > spareOver ? 'under' : 'over';
+      // The side told before for this mine (`options.prefer`) stays while it can still be made, or
+      // neither can, and its way is not blocked.
+      const prefer = options.prefer?.index === i ? options.prefer.side : null;
+      const kept = prefer === 'over' ? spareOver : prefer === 'under' ? spareUnder : Number.NaN;
+      if (prefer && kept > -Infinity && (kept >= 0 || Math.max(spareOver, spareUnder) < 0)) side = prefer;
+      return { index: i, side, time: t };
+    }
+  }
+  return null;
+}
+
+/**
+ * How far a boat rises in `t` s (m; negative: it sinks) rising flat out from a vertical speed `v`
+ * (m/s, up): the helm's speed asked for, `most` (m/s), reached at HELM.brake (m/s^2).
+ */
+function heave(v: number, most: number, t: number): number {
+  const a = HELM.brake,
+    t1 = Math.min(t, Math.max(0, (most - v) / a));
+  return v * t1 + 0.5 * a * t1 * t1 + Math.min(v + a * t1, most) * (t - t1);
+}
+
+/** How long a boat rising flat out as `heave` takes to rise `d` m (0 if d <= 0; s). */
+function heaveTime(v: number, most: number, d: number): number {
+  if (d <= 0) return 0;
+  const a = HELM.brake,
+    t1 = Math.max(0, (most - v) / a);
+  // Still speeding up: v t + a t^2 / 2 = d; else at `most` after the first t1 s.
+  const first = heave(v, most, t1);
+  return d <= first ? (-v + Math.sqrt(v * v + 2 * a * d)) / a : t1 + (d - first) / most;
 }
 
 /**

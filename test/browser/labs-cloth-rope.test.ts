@@ -38,6 +38,7 @@ interface ClothLab extends Lab {
   level(): { index: number; title: string; shapes: string[] };
   targets(): number[][];
   cutOuts(): { shape: string; fit: number; stars: number; drop: string; landedAt: number }[];
+  starCard(): { x: number; y: number; width: number; height: number };
 }
 interface RopeLab extends Lab {
   ids(): { ball: number; ropes: { anchor: number[]; bodies: number[]; links: number[] }[] };
@@ -373,6 +374,17 @@ for (const [device, options] of [
       expect(landed.landedAt).toBeGreaterThan(0);
       expect(landed.stars > 0).toBe(landed.drop === 'in');
       expect(await g.page.locator('.lab-status').textContent()).toMatch(landed.drop === 'in' ? /done, \d of 3 stars/ : /missed the basket/);
+      // The button for the next sheet covers nothing of the card of stars just won.
+      const next = (await g.page.getByRole('button', { name: 'Next sheet ▶', exact: true }).boundingBox())!;
+      const card = await g.page.evaluate(() => {
+        const c = (window.game as unknown as ClothLab).starCard();
+        const box = document.querySelector('canvas')!.getBoundingClientRect();
+        return { ...c, x: box.left + c.x, y: box.top + c.y };
+      });
+      expect(card.width).toBeGreaterThan(50);
+      const apart =
+        next.x >= card.x + card.width || card.x >= next.x + next.width || next.y >= card.y + card.height || card.y >= next.y + next.height;
+      expect(apart, JSON.stringify({ next, card })).toBe(true);
       // The next sheet: the perforation, no scissors; the hand pulls the strip down from below the dots.
       await press(g.page, 'Next sheet ▶');
       await g.waitFor(() => (window.game as unknown as ClothLab).level().index === 3, null);

@@ -1,7 +1,8 @@
 /**
  * Submarine at desktop (1280 x 800, keys) and phone (390 x 844, a finger on the stick) size: under way
  * the view leads the boat (more of the sea ahead of it than behind, even with the beacon behind),
- * and a hit on the hull says what hit it where it happened (a label naming the mine or the seabed
+ * a mine on the boat's course is told by the hull (a tag saying which way to pass, an arrow to the
+ * mine), and a hit on the hull says what hit it where it happened (a label naming the mine or the seabed
  * over the place, a shake) and lights the hull gauge.
  */
 import type { Page } from 'playwright-core';
@@ -12,7 +13,14 @@ type Camera = { x: number; y: number; zoom: number; leadX: number; shake: number
 type Hit = { kind: string; x: number; y: number; label: string; box: number[]; shake: number; gauge: string; gaugeFlash: number };
 type Sub = {
   paused: boolean;
-  world: { time: number; components: { Position: { x: Float64Array; y: Float64Array }; Velocity: { x: Float64Array; y: Float64Array } } };
+  world: {
+    time: number;
+    components: {
+      Position: { x: Float64Array; y: Float64Array };
+      Velocity: { x: Float64Array; y: Float64Array };
+      Angle: { value: Float64Array };
+    };
+  };
   hull(): number;
   handles(): { beacons: Float64Array; seabed: { x0: number; dx: number; y: Float64Array } };
   state: { hits: number; holdY: number; throttle: number; mode: string; fill: number; glowsCaught: number; score: number };
@@ -20,6 +28,7 @@ type Sub = {
   mines(): { x: number; y: number; live: boolean }[];
   camera(): Camera;
   hitEffect(): Hit;
+  mineAhead(): { index: number; side: string; time: number; text: string; box: number[]; tip: number[]; tail: number[] } | null;
 };
 
 const SIZES = [
@@ -326,6 +335,59 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
       expect(Math.abs(by + bh / 2 - py)).toBeLessThan(12 * r.cam.zoom + bh);
     };
     await check('seabed', 'SEABED SCRAPE\n−1 hull', 'hull ▮▮▯ 2/3');
+    // Level at 12 m/s, 45 m before the first mine at its depth: the warning comes by the hull at
+    // once (contact in under 4 s), a tag telling which way to pass and an arrow from the hull to the
+    // mine. Paused in the page on the first frame it is drawn.
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as Sub;
+      const m = w.mines()[0]!,
+        c = w.world.components,
+        e = w.hull();
+      c.Position.x[e] = m.x - 45;
+      c.Position.y[e] = m.y;
+      c.Velocity.x[e] = 12;
+      c.Velocity.y[e] = 0;
+      c.Angle.value[e] = 0;
+      w.state.holdY = m.y;
+      w.state.throttle = 1;
+      const frame = () => {
+        if (w.mineAhead()?.text) w.paused = true;
+        else requestAnimationFrame(frame);
+      };
+      requestAnimationFrame(frame);
+      w.paused = false;
+    });
+    await g.waitFor(() => (window.game as unknown as Sub).paused, null, 60_000);
+    await g.frames(2);
+    const warn = await g.page.evaluate(() => {
+      const w = window.game as unknown as Sub;
+      const e = w.hull(),
+        c = w.world.components;
+      return { ahead: w.mineAhead()!, cam: w.camera(), hull: [c.Position.x[e]!, c.Position.y[e]!], mine: w.mines()[0]! };
+    });
+    expect(warn.ahead.index).toBe(0);
+    expect(warn.ahead.time).toBeGreaterThan(2);
+    expect(warn.ahead.text).toMatch(/^⚠ MINE: (rise over ▲|dive under ▼)$/);
+    const screen = (x: number, y: number) => [
+      warn.cam.width / 2 + (x - warn.cam.x) * warn.cam.zoom,
+      warn.cam.height / 2 - (y - warn.cam.y) * warn.cam.zoom,
+    ];
+    const [hx, hy] = screen(warn.hull[0]!, warn.hull[1]!) as [number, number];
+    const [mx, my] = screen(warn.mine.x, warn.mine.y) as [number, number];
+    // The tag by the hull (its middle within 4 hull heights of the hull's centre up or down, and
+    // spanning the hull's x or inside the view's edge), over it to rise, under it to dive.
+    const [tx, ty, tw, th] = warn.ahead.box;
+    expect(tx).toBeGreaterThanOrEqual(0);
+    expect(tx + tw).toBeLessThanOrEqual(warn.cam.width);
+    expect(Math.abs(ty + th / 2 - hy)).toBeLessThan(4 * 3 * warn.cam.zoom + th);
+    expect(Math.abs(tx + tw / 2 - hx)).toBeLessThan(tw / 2 + 12);
+    expect(Math.sign(ty + th / 2 - hy)).toBe(warn.ahead.side === 'over' ? -1 : 1);
+    // The arrow starts by the hull and points at the mine (within 10 degrees).
+    const [ax, ay] = warn.ahead.tail as [number, number],
+      [bx, by] = warn.ahead.tip as [number, number];
+    expect(Math.hypot(ax - hx, ay - hy)).toBeLessThan(8 * warn.cam.zoom + 10);
+    const turn = Math.atan2(by - ay, bx - ax) - Math.atan2(my - hy, mx - hx);
+    expect(Math.abs(Math.atan2(Math.sin(turn), Math.cos(turn)))).toBeLessThan((10 * Math.PI) / 180);
     // The hull put at rest with its deck 0.5 m under the first mine.
     await pauseAfterHit(g.page, 'mine', 0.1);
     await g.page.evaluate(() => {
@@ -337,6 +399,7 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
       c.Position.y[e] = m.y - 3.5;
       c.Velocity.x[e] = 0;
       c.Velocity.y[e] = 0;
+      w.state.throttle = 0;
       w.paused = false;
     });
     await g.waitFor(() => (window.game as unknown as Sub).paused, null, 60_000);
