@@ -9,9 +9,10 @@
  *
  * Keys: A/D or ←/→ slew, W/S or ↑/↓ trolley out/in, Q/E hook up/down, L next level (once cleared),
  * G debug layer (joints, contacts), P pause, N step, R reset. Mouse: click a target to swing the ball
- * at it (the crane winds up and runs through); click the ground beside a target to swing at it,
- * elsewhere to send the hook there; drag the
- * ball to pull it; right-drag orbits, wheel zooms.
+ * at it (the crane winds up and runs through; a click on another target during the wind-up re-aims
+ * that swing, one during the run is swung at next); click the ground beside a target to swing at
+ * it, elsewhere to send the hook there; drag the ball to pull it; right-drag orbits, wheel zooms.
+ * Once a level is cleared its result (swings, stars, score) is fixed: later swings are for fun.
  * URL: ?level=N, ?seed=S, ?debug, ?demo (the crane swings at the level's first tower by itself: the
  * gallery's thumbnail shows a hit).
  */
@@ -47,6 +48,7 @@ import {
   Mesh,
   MeshBasicMaterial,
   MeshStandardMaterial,
+  PerspectiveCamera,
   Plane,
   PlaneGeometry,
   Quaternion,
@@ -107,6 +109,13 @@ let handles: WreckingBallHandles;
 let banked = 0;
 let levelScore = 0;
 let cleared = false;
+/**
+ * The level's result, fixed when it is cleared: the swings it took and the stars they earned (and
+ * whether a target was tapped since: the hint says such swings are for fun). Pieces still falling
+ * from the clearing swing add to the score until the next swing is let go; swings after that
+ * change nothing (see `resultFixed`).
+ */
+const clearedWith = { swings: 0, stars: 0, tapped: false };
 /** Smoothed step time, ms (exponential average over ~30 steps), and the worst of the last second. */
 let stepMs = 0;
 let worstMs = 0;
@@ -134,6 +143,7 @@ function createWorld(): PhysicsWorld {
   handles = buildWreckingBall(world, { level: params.level, seed: params.seed, ballWeight: params.ballWeight });
   levelScore = 0;
   cleared = false;
+  clearedWith.tapped = false;
   return world;
 }
 
@@ -165,15 +175,17 @@ function gameStep(world: PhysicsWorld): void {
   }
   const gained = scorePieces(world, handles.pieces);
   if (gained > 0) {
-    levelScore += gained;
+    if (!resultFixed()) levelScore += gained;
     // A fallen piece keeps its material, darkened (grey read as a different material).
     for (const p of handles.pieces) if (p.fallen && isAlive(world, p.body) && p.body !== lit) tint(p.body, FALLEN_TINT);
   }
   if (!cleared && fallenCount(handles.pieces) >= clearTarget(handles.pieces, handles.level)) {
     cleared = true;
+    clearedWith.swings = swingsUsed();
+    clearedWith.stars = swingStars(clearedWith.swings, true, handles.level);
     sound.chime(1046, 0.6);
     // 500 for clearing and 250 for each star (fewer swings).
-    levelScore += 500 + 250 * swingStars(swingsUsed(), true, handles.level);
+    levelScore += 500 + 250 * clearedWith.stars;
   }
 }
 
@@ -356,32 +368,197 @@ dress();
 
 /** The level the camera was last framed for (a reset of the same level keeps the player's view). */
 let framedLevel = 0;
+/** The canvas size (CSS px) the site was last framed for, while the player has not moved the camera (null after). */
+let framedSize: [number, number] | null = null;
 /**
- * Frames the site: the level's pieces and the mast (half a metre in on a wide screen, whose view has
- * room to the sides), the camera's orbit target at their middle. A wide screen looks from the side,
- * over the site; a tall phone screen square to the site's side (so the site's width, not its
- * diagonal, spans the screen), from low enough that the sky and the crane's top show over the site
- * (from higher up the view over the site is a flat field of grass): the jib's far end may leave the
- * screen, the hook and the ball do not (the camera follows the ball, see followAction).
+ * The screen a framing may fill, in normalised device coordinates: x from -FRAME_X to FRAME_X, y
+ * from FRAME_BOTTOM to FRAME_TOP (the hint over the scene's top keeps the pieces from it).
+ */
+const FRAME_X = 0.94,
+  FRAME_BOTTOM = -0.92,
+  FRAME_TOP = PORTRAIT ? 0.78 : 0.84;
+/** Elevations, rad, of the views `frameSite` tries (from 15 to 35 degrees over the ground). */
+const FRAME_ELEVATIONS = [15, 20, 25, 30, 35].map((d) => (d * Math.PI) / 180);
+/**
+ * Whether a camera at `p` (m) keeps the jib out of its view of the site: under the jib, or beyond its
+ * reach (from above it and near, the jib crossed the view of the site as it slewed).
+ */
+function clearOfJib(p: Vector3): boolean {
+  return p.y < JIB_HEIGHT - 2 || Math.hypot(p.x, p.z) > RADIUS_RANGE[1] + 6;
+}
+/**
+ * Frames the site and the crane: the camera looks at the level's pieces, the mast (footing and top),
+ * the hook and the ball from as near as keeps them all inside the screen's FRAME_ bounds
+ * (fitPoints: the pieces' own corners, not a box round the site, whose empty corners nearest the
+ * camera took a third of a phone's width and left bare ground in front), at the tilt of
+ * FRAME_ELEVATIONS that draws them largest (of those within 4 % of it, the steepest: the band of
+ * pieces the tallest), from a camera the jib does not cross (clearOfJib). A wide screen looks from
+ * the side, turned about the vertical so no standing piece is behind the mast (clearOfMast); a tall
+ * one from whichever side (every 15 degrees) draws them largest, seeing the jib from its side.
+ * Framed again when the canvas changes size by a tenth or more, until the player moves the camera.
  */
 function frameSite(): void {
   framedLevel = handles.level;
-  const P = shell.world.components.Position;
-  let x0 = -1.5,
-    x1 = 1.5,
-    z0 = -1.5,
-    z1 = 1.5;
-  for (const p of handles.pieces) {
-    const r = Math.max(...p.half);
-    x0 = Math.min(x0, P.x[p.body]! - r);
-    x1 = Math.max(x1, P.x[p.body]! + r);
-    z0 = Math.min(z0, P.z[p.body]! - r);
-    z1 = Math.max(z1, P.z[p.body]! + r);
-  }
-  const [dx, dy, dz] = clearOfMast(PORTRAIT ? [0, 0.6, 1] : [0.85, 0.6, 1]);
-  if (PORTRAIT) app.frame([x0, 0, z0], [x1, 3, z1], [dx, dy, dz]);
-  else app.frame([x0 + 0.5, 0, z0 + 0.5], [x1 - 0.5, 7, z1 - 0.5], [dx, dy, dz]);
+  framePoints = sitePoints();
+  frameAgain();
 }
+/** The points `frameSite` framed (the level as it stood when framed), for a new canvas size. */
+let framePoints: Vector3[] = [];
+/** The points to frame, m: the corners of each piece's box, of the mast's footing and top, of the hook and the ball. */
+function sitePoints(): Vector3[] {
+  const P = shell.world.components.Position,
+    O = shell.world.components.Orientation;
+  const pts: Vector3[] = [];
+  const box = (cx: number, cy: number, cz: number, ex: number, ey: number, ez: number): void => {
+    for (let c = 0; c < 8; c++) pts.push(new Vector3(cx + (c & 1 ? ex : -ex), cy + (c & 2 ? ey : -ey), cz + (c & 4 ? ez : -ez)));
+  };
+  for (const p of handles.pieces) {
+    const x = O.x[p.body]!,
+      y = O.y[p.body]!,
+      z = O.z[p.body]!,
+      w = O.w[p.body]!;
+    // The box's half extents across the world's axes: |R| times its own.
+    const R = [
+      [1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+      [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+      [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)],
+    ];
+    const e = R.map((row) => Math.abs(row[0]!) * p.half[0] + Math.abs(row[1]!) * p.half[1] + Math.abs(row[2]!) * p.half[2]);
+    box(P.x[p.body]!, P.y[p.body]!, P.z[p.body]!, e[0]!, e[1]!, e[2]!);
+  }
+  // The crane: its footing, the top of its mast, the hook and the ball.
+  box(0, 0.15, 0, 1.2, 0.15, 1.2);
+  box(0, JIB_HEIGHT, 0, 0.4, 0.4, 0.4);
+  const [hx, hy, hz] = hookPosition(handles.crane);
+  box(hx, hy, hz, 0.3, 0.3, 0.3);
+  box(P.x[handles.ball]!, P.y[handles.ball]!, P.z[handles.ball]!, BALL_RADIUS, BALL_RADIUS, BALL_RADIUS);
+  return pts;
+}
+/** Frames `framePoints` for the canvas as it is now (see frameSite). */
+function frameAgain(): void {
+  const pts = framePoints;
+  // A wide screen: the side view, turned clear of the mast. A phone: every 15 degrees round that the
+  // mast does not hide a piece from.
+  const ways: [number, number][] = [];
+  const tall = app.camera.aspect < 1;
+  // The jib seen from its side, within 40 degrees of square to it (pointing at the camera it crossed
+  // the site; pointing away, it and the ball were hidden behind the mast).
+  const jibX = Math.cos(handles.crane.angle),
+    jibZ = -Math.sin(handles.crane.angle);
+  if (tall) {
+    for (let i = 0; i < 24; i++) {
+      const a = (i * Math.PI) / 12;
+      const x = Math.sin(a),
+        z = Math.cos(a);
+      if (!mastHides(x, z) && Math.abs(x * jibX + z * jibZ) < Math.cos((50 * Math.PI) / 180)) ways.push([x, z]);
+    }
+  }
+  if (ways.length === 0) {
+    const [x, , z] = clearOfMast(tall ? [0, 0, 1] : [0.85, 0, 1]);
+    ways.push([x, z]);
+  }
+  let best: FittedView | null = null;
+  const fits: FittedView[] = [];
+  for (const [dx, dz] of ways) {
+    for (const elevation of FRAME_ELEVATIONS) {
+      const h = Math.hypot(dx, dz);
+      const dir = new Vector3((dx / h) * Math.cos(elevation), Math.sin(elevation), (dz / h) * Math.cos(elevation));
+      const fit = fitPoints(pts, dir);
+      fit.elevation = elevation;
+      if (!clearOfJib(fit.position)) continue;
+      fits.push(fit);
+      if (best === null || fit.distance < best.distance) best = fit;
+    }
+  }
+  if (best === null) return;
+  // Of the views within 4 % of the nearest, the steepest (the site's band of pieces the tallest).
+  for (const f of fits) if (f.distance < 1.04 * best.distance && f.elevation > best.elevation) best = f;
+  applyView(best);
+}
+/** A camera placement `fitPoints` found: its position, the point it looks at, its distance from it (m), the view's elevation (rad). */
+interface FittedView {
+  position: Vector3;
+  lookAt: Vector3;
+  distance: number;
+  elevation: number;
+}
+const fitCamera = new PerspectiveCamera();
+const fitAt = new Vector3(),
+  fitRight = new Vector3(),
+  fitUp = new Vector3();
+/**
+ * The camera placement looking along -`dir` (a unit vector toward the camera) from which the points
+ * `pts` (m) fill the screen's FRAME_ bounds as nearly as they can: each round projects them,
+ * moves the look-at point across the view by the offset of their drawn bounds' middle from the
+ * bounds' middle, and the camera in or out by how much more or less than the bounds they fill;
+ * a point nearer the camera grows faster than the rest as it comes in, so the steps are damped
+ * and repeated (40 rounds at most; they settle to a part in a thousand within about 20).
+ */
+function fitPoints(pts: readonly Vector3[], dir: Vector3): FittedView {
+  fitCamera.fov = app.camera.fov;
+  fitCamera.aspect = app.camera.aspect;
+  fitCamera.near = 0.1;
+  fitCamera.far = 1000;
+  fitCamera.updateProjectionMatrix();
+  const tanV = Math.tan((fitCamera.fov * Math.PI) / 360),
+    tanH = tanV * fitCamera.aspect;
+  const c = new Vector3();
+  for (const p of pts) c.add(p);
+  c.divideScalar(pts.length);
+  let d = 60;
+  const midY = (FRAME_TOP + FRAME_BOTTOM) / 2,
+    halfY = (FRAME_TOP - FRAME_BOTTOM) / 2;
+  for (let round = 0; round < 40; round++) {
+    fitCamera.position.copy(c).addScaledVector(dir, d);
+    fitCamera.lookAt(c);
+    fitCamera.updateMatrixWorld();
+    let x0 = Number.POSITIVE_INFINITY,
+      x1 = Number.NEGATIVE_INFINITY,
+      y0 = Number.POSITIVE_INFINITY,
+      y1 = Number.NEGATIVE_INFINITY;
+    for (const p of pts) {
+      fitAt.copy(p).project(fitCamera);
+      x0 = Math.min(x0, fitAt.x);
+      x1 = Math.max(x1, fitAt.x);
+      y0 = Math.min(y0, fitAt.y);
+      y1 = Math.max(y1, fitAt.y);
+    }
+    const mx = (x0 + x1) / 2,
+      my = (y0 + y1) / 2 - midY;
+    const fill = Math.max((x1 - x0) / 2 / FRAME_X, (y1 - y0) / 2 / halfY);
+    fitRight.setFromMatrixColumn(fitCamera.matrixWorld, 0);
+    fitUp.setFromMatrixColumn(fitCamera.matrixWorld, 1);
+    c.addScaledVector(fitRight, 0.8 * mx * d * tanH).addScaledVector(fitUp, 0.8 * my * d * tanV);
+    d *= fill ** 0.7;
+    if (Math.abs(mx) < 1e-3 && Math.abs(my) < 1e-3 && Math.abs(fill - 1) < 1e-3) break;
+  }
+  return { position: fitCamera.position.clone(), lookAt: c.clone(), distance: d, elevation: 0 };
+}
+/**
+ * Puts the camera at `view`, looking where it looks; the orbit target where that line of sight
+ * passes nearest the mast (a right-drag turns the view about the site's middle), no lower than 1 m.
+ */
+function applyView(view: FittedView): void {
+  const cam = app.camera;
+  cam.position.copy(view.position);
+  const p = view.position,
+    d = view.lookAt.clone().sub(p);
+  let t = -(p.x * d.x + p.z * d.z) / Math.max(1e-9, d.x * d.x + d.z * d.z);
+  if (d.y < 0) t = Math.min(t, (p.y - 1) / -d.y);
+  const target = p.clone().addScaledVector(d, Math.max(0.2, t));
+  cam.near = Math.max(0.05, view.distance / 200);
+  cam.far = view.distance * 200;
+  cam.updateProjectionMatrix();
+  cam.lookAt(target);
+  if (app.controls) {
+    app.controls.target.copy(target);
+    app.controls.update();
+  }
+  framedSize = [app.canvas.clientWidth, app.canvas.clientHeight];
+}
+app.controls?.addEventListener('start', () => {
+  framedSize = null;
+});
 
 /** How near, m, a piece's centre may pass to the line from the camera through the mast before the mast hides it. */
 const MAST_SHADOW = 1.8;
@@ -391,21 +568,24 @@ const MAST_SHADOW = 1.8;
  * within MAST_SHADOW of the sight line through it); `d` itself when every turn hides one.
  */
 function clearOfMast(d: [number, number, number]): [number, number, number] {
-  const P = shell.world.components.Position;
   for (const deg of [0, 10, -10, 20, -20, 30, -30, 40, -40]) {
     const a = (deg * Math.PI) / 180;
     const x = d[0] * Math.cos(a) + d[2] * Math.sin(a),
       z = -d[0] * Math.sin(a) + d[2] * Math.cos(a);
-    const ux = x / Math.hypot(x, z),
-      uz = z / Math.hypot(x, z);
-    const hidden = handles.pieces.some((p) => {
-      const px = P.x[p.body]!,
-        pz = P.z[p.body]!;
-      return px * ux + pz * uz < 0 && Math.abs(px * uz - pz * ux) < MAST_SHADOW;
-    });
-    if (!hidden) return [x, d[1], z];
+    if (!mastHides(x, z)) return [x, d[1], z];
   }
   return d;
+}
+/** Whether the mast hides a standing piece from a camera in direction (x, z) across the ground (see clearOfMast). */
+function mastHides(x: number, z: number): boolean {
+  const P = shell.world.components.Position;
+  const ux = x / Math.hypot(x, z),
+    uz = z / Math.hypot(x, z);
+  return handles.pieces.some((p) => {
+    const px = P.x[p.body]!,
+      pz = P.z[p.body]!;
+    return px * ux + pz * uz < 0 && Math.abs(px * uz - pz * ux) < MAST_SHADOW;
+  });
 }
 frameSite();
 // ?demo: one swing at the middle of the first tower, as a tap would.
@@ -421,9 +601,13 @@ shell.onWorldChange(() => {
   if (handles.level !== framedLevel) frameSite();
   aimed = 0;
   lit = 0;
+  queued = 0;
   runEndedAt = -1;
   hintUntil = -1;
+  notice.until = -1;
+  slide.at = -1;
   swing.result = '';
+  swing.pending = false;
 });
 
 /** Next level: bank the score and build the next one. */
@@ -617,9 +801,10 @@ function drawChain(hook: ArrayLike<number>): void {
 // target a player is about to tap stays where they saw it (a camera always easing toward the ball
 // would move the targets under the player's finger); past that the orbit's target eases toward a point
 // between the mast and the ball (FOLLOW of the way a frame) and the camera moves with it, keeping the
-// player's own orbit and zoom.
+// player's own orbit and zoom. The site's framing draws pieces out to FRAME_X of the view, so the
+// ball striking one there is still in view: the edge lies past that.
 const FOLLOW = 0.04,
-  FOLLOW_EDGE = 0.8;
+  FOLLOW_EDGE = 0.92;
 const followGoal = new Vector3(),
   followStep = new Vector3(),
   followBall = [0, 0, 0],
@@ -653,6 +838,34 @@ const aimArrow = new Mesh(new ConeGeometry(0.5, 1.2, 16), new MeshBasicMaterial(
 aimArrow.rotation.x = Math.PI;
 aimArrow.visible = false;
 app.scene.add(aimArrow);
+// Where a re-aimed swing's target was: a ring that fades and shrinks there while the swing's marks
+// slide to the new target (MARKS_SLIDE s), so a tap during a wind-up is seen to move the swing.
+const oldRing = new Mesh(
+  new RingGeometry(0.35, 0.5, 32),
+  new MeshBasicMaterial({ color: 0xff7b5c, transparent: true, opacity: 0.8, depthWrite: false }),
+);
+oldRing.rotation.x = -Math.PI / 2;
+oldRing.visible = false;
+app.scene.add(oldRing);
+/** Seconds the marks take to slide to a new target, and the old target's ring to fade. */
+const MARKS_SLIDE = 0.5,
+  OLD_RING_FADES = 1.5;
+/** Where the marks slide from (m, across the ground) and the world time they left (-1: not sliding). */
+const slide = { x: 0, z: 0, at: -1 };
+/** Starts the marks' slide from the old target at (x, z), m (see oldRing). */
+function dropMarks(x: number, z: number): void {
+  slide.x = x;
+  slide.z = z;
+  slide.at = shell.world.time;
+}
+// Round the target tapped while the ball is on its run at another: a white ring, pulsing, until its swing begins.
+const nextRing = new Mesh(
+  new RingGeometry(0.36, 0.5, 40),
+  new MeshBasicMaterial({ color: 0xffffff, transparent: true, opacity: 0.85, depthWrite: false }),
+);
+nextRing.rotation.x = -Math.PI / 2;
+nextRing.visible = false;
+app.scene.add(nextRing);
 
 // ---- Depth cues: where the ball is over the ground, and where a drag's swing will go ----------------
 
@@ -780,6 +993,7 @@ window.addEventListener('keydown', (event) => {
   handles.controls.goal = null;
   handles.controls.moves = [];
   aimed = 0;
+  queued = 0;
   event.preventDefault();
 });
 window.addEventListener('keyup', (event) => held.delete(event.key.toLowerCase()));
@@ -866,6 +1080,7 @@ function pressAt(ndcX: number, ndcY: number): 'ball' | 'swing' | 'hook' | 'none'
   handles.controls.moves = [];
   handles.controls.goal = [groundHit.x, groundHit.z];
   aimed = 0;
+  queued = 0;
   hintUntil = shell.world.time + HINT_SHOWN;
   return 'hook';
 }
@@ -895,7 +1110,7 @@ function pieceNearGround(x: number, z: number): number {
 /** The piece the last swing was aimed at (marked with a ring and an arrow while the swing runs), or 0. */
 let aimed = 0;
 /** The standing pieces when the last swing was aimed (to count what it brought down), and what it did. */
-const swing = { downBefore: 0, result: '', resultAt: 0 };
+const swing = { downBefore: 0, result: '', resultAt: 0, pending: false };
 /**
  * Distance, CSS px, from a standing piece's drawn outline within which a press that misses every
  * piece still takes it: a finger's width on a touch screen, a mouse's slip on a desktop.
@@ -972,28 +1187,71 @@ function light(piece: number): void {
 }
 /** Whether the last tap re-aimed a swing still winding up (the status line says so). */
 let retargeted = false;
+/** A target tapped while the ball was already on its run at another: swung at once that swing's result is counted (0: none). */
+let queued = 0;
 /** Swings used on this level (runs at targets begun, drags of the ball), out of its `swingBudget`. */
 function swingsUsed(): number {
   return handles.controls.released;
+}
+/** Whether the cleared level's result is fixed: a swing was let go after the clearing one (it only plays). */
+function resultFixed(): boolean {
+  return cleared && swingsUsed() > clearedWith.swings;
+}
+/** The cleared level's result, as the banner says it: "Level N cleared in S swings! ★★☆". */
+function clearedLine(): string {
+  const { swings, stars } = clearedWith;
+  return `Level ${handles.level} cleared in ${swings} ${swings === 1 ? 'swing' : 'swings'}! ${'★'.repeat(stars)}${'☆'.repeat(3 - stars)}`;
 }
 /** Whether the level's swings are all used and it is not cleared (a swing is refused). */
 function outOfSwings(): boolean {
   return !cleared && swingsUsed() >= swingBudget(handles.level);
 }
-/** Swings the ball at piece `piece`: the crane's moves, the marks on it, a chime; false (and a low tone) when out of swings. */
+/** What a piece is, for the hint: "the tower", "the wall", "the plank stack". */
+function pieceName(piece: number): string {
+  const kind = handles.pieces.find((p) => p.body === piece)?.kind;
+  return kind === 'planks' ? 'the plank stack' : `the ${kind ?? 'block'}`;
+}
+/**
+ * Swings the ball at piece `piece`: the crane's moves, the marks on it, a chime; false (and a low
+ * tone) when out of swings. A tap while a swing winds up re-aims that swing (the marks slide from
+ * the old target to the new, the hint says so; no swing is used until the ball is let go into its
+ * run); a tap while the ball is on its run at its target waits for that swing to end (a new plan
+ * then would abandon the hit and use another swing) and is marked as next.
+ */
 function swingAt(piece: number): boolean {
-  if (outOfSwings()) {
+  const moves = handles.controls.moves;
+  const running = aimed !== 0 && moves.length > 0 && moves[0]!.run === true;
+  if (outOfSwings() || (running && !cleared && swingsUsed() + 1 > swingBudget(handles.level))) {
     sound.chime(220, 0.2);
+    say(running ? 'That was the last swing: no swings left for another' : 'No swings left');
     return false;
   }
-  // A tap during a wind-up re-aims that swing (no swing is used until the ball is let go into its run).
-  retargeted = aimed !== 0 && handles.controls.moves.length > 0 && handles.controls.moves[0]!.run !== true;
+  if (running) {
+    if (piece === aimed) return true;
+    queued = piece;
+    sound.chime(523, 0.12);
+    say(`Next: ${pieceName(piece)}, once this swing is done`);
+    return true;
+  }
+  const before = aimed;
+  // A tap during a wind-up re-aims that swing.
+  retargeted = before !== 0 && moves.length > 0;
+  if (retargeted && before !== piece && isAlive(shell.world, before)) {
+    const P = shell.world.components.Position;
+    dropMarks(P.x[before]!, P.z[before]!);
+    say(`New target: ${pieceName(piece)} instead of ${pieceName(before)} (same swing)`);
+  } else if (retargeted) say(`Still swinging at ${pieceName(piece)}`);
+  // A swing whose result was not counted yet (its run over, the dust settling) is counted now.
+  if (runEndedAt >= 0) countResult();
+  queued = 0;
   aimAt(shell.world, handles, piece);
   light(piece);
   aimed = piece;
   swing.downBefore = fallenCount(handles.pieces);
   swing.result = '';
-  sound.chime(660, 0.15);
+  swing.pending = true;
+  if (cleared) clearedWith.tapped = true;
+  sound.chime(retargeted && before !== piece ? 880 : 660, 0.15);
   return true;
 }
 
@@ -1180,6 +1438,10 @@ function drawPlan(): void {
   );
   if (aimed !== 0 && isAlive(shell.world, aimed))
     out.push(`<circle cx="${X(P.x[aimed]!)}" cy="${Z(P.z[aimed]!)}" r="8" fill="none" stroke="#ffd166" stroke-width="2"/>`);
+  if (queued !== 0 && isAlive(shell.world, queued))
+    out.push(
+      `<circle cx="${X(P.x[queued]!)}" cy="${Z(P.z[queued]!)}" r="8" fill="none" stroke="#ffffff" stroke-width="2" stroke-dasharray="3 2"/>`,
+    );
   out.push('</svg>');
   plan.innerHTML = out.join('');
 }
@@ -1204,6 +1466,7 @@ plan.addEventListener('click', (event) => {
     handles.controls.moves = [];
     handles.controls.goal = [x, z];
     aimed = 0;
+    queued = 0;
   }
 });
 
@@ -1216,6 +1479,15 @@ hint.setAttribute('role', 'status');
 hint.style.cssText =
   'position: absolute; left: 0; right: 0; top: 10px; margin: 0 auto; width: fit-content; max-width: 90%; padding: 6px 12px; border-radius: 16px; background: rgba(16, 20, 28, 0.78); color: #ffe08a; font: 600 15px/1.3 system-ui, sans-serif; text-align: center; pointer-events: none; z-index: 2';
 pageLayout().stage.append(hint);
+/** A short message over the scene saying what a tap did (re-aimed, queued, refused), until world time `until`. */
+const notice = { text: '', until: -1 };
+/** Seconds a notice stays. */
+const NOTICE_SHOWN = 2.5;
+/** Says `text` over the scene for NOTICE_SHOWN s. */
+function say(text: string): void {
+  notice.text = text;
+  notice.until = shell.world.time + NOTICE_SHOWN;
+}
 /** Seconds a hint after a tap on open ground stays. */
 const HINT_SHOWN = 3;
 /** World time until which the open-ground hint shows. */
@@ -1231,20 +1503,50 @@ function hintText(): string {
     return 'Pull so the bright dashes cross a block, then let go';
   }
   if (cleared) {
-    // The level's end, over the scene as the other games say it (the status line says it small).
-    const used = swingsUsed(),
-      stars = swingStars(used, true, handles.level);
-    return `Level ${handles.level} cleared in ${used} ${used === 1 ? 'swing' : 'swings'}! ${'★'.repeat(stars)}${'☆'.repeat(3 - stars)}`;
+    // The level's end, over the scene as the other games say it (the status line says it small);
+    // once the player swings on, that those swings are for fun and the result stands.
+    if (swingsUsed() > clearedWith.swings || clearedWith.tapped)
+      return `${clearedLine()}\nSwinging for fun: the result stands. ${touch ? 'Tap' : 'Press L or'} Next level ▶`;
+    return clearedLine();
   }
   if (outOfSwings()) return '';
+  if (shell.world.time < notice.until) return notice.text;
   if (shell.world.time < hintUntil) return `That moves the hook. ${tapWord} a block to swing the ball at it`;
   if (c.released === 0 && c.moves.length === 0 && aimed === 0) return `${tapWord} a block: the crane swings the ball into it`;
   return '';
 }
 
+/**
+ * Shows `text` in the hint over the scene ('' hides it): each line ('\n') a line of its own, the
+ * first in large type when `big` (the level's end), the others at the hint's size.
+ */
+function showHint(text: string, big: boolean): void {
+  hint.style.display = text ? '' : 'none';
+  if (hint.dataset.text === text && hint.dataset.big === String(big)) return;
+  hint.dataset.text = text;
+  hint.dataset.big = String(big);
+  hint.replaceChildren(
+    ...text.split('\n').map((line, i) => {
+      const el = document.createElement('div');
+      el.textContent = line;
+      if (i === 0 && big) el.style.fontSize = '24px';
+      return el;
+    }),
+  );
+}
+
 let frames = 0;
 /** World time the last swing's run ended (the result is counted 1.5 s later), or -1. */
 let runEndedAt = -1;
+/** Counts the last swing's result ("Hit! N down" or a miss) for the status line; its marks go. */
+function countResult(): void {
+  const down = fallenCount(handles.pieces) - swing.downBefore;
+  swing.result = down > 0 ? `Hit! ${down} down` : 'Missed: tap it again';
+  swing.resultAt = shell.world.time;
+  swing.pending = false;
+  runEndedAt = -1;
+  aimed = 0;
+}
 /** How long a swing's result stays in the status line, s. */
 const RESULT_SHOWN = 3;
 const hookAt = new Float64Array(3);
@@ -1252,6 +1554,15 @@ const hookAt = new Float64Array(3);
 let lastFrameTime = 0;
 function frame(): void {
   updateControls();
+  // A new canvas size (a phone turned, a window resized), framed again unless the player moved the
+  // camera; not for a few pixels (the status line wrapping onto another line), which would shift the
+  // view under the player's finger.
+  if (
+    framedSize !== null &&
+    (Math.abs(app.canvas.clientWidth - framedSize[0]) > 0.1 * framedSize[0] ||
+      Math.abs(app.canvas.clientHeight - framedSize[1]) > 0.1 * framedSize[1])
+  )
+    frameAgain();
   const dt = Math.min(0.1, Math.max(0, shell.world.time - lastFrameTime));
   lastFrameTime = shell.world.time;
   // Pieces that have just fallen: the points of those that fell together rise over them as one popup.
@@ -1296,41 +1607,61 @@ function frame(): void {
   if (goal !== null) goalMarker.position.set(goal[0], 0.02, goal[1]);
   else if (swinging) {
     const P = shell.world.components.Position;
-    goalMarker.position.set(P.x[aimed]!, 0.02, P.z[aimed]!);
     // Over the top of whatever stands on the piece (an arrow at a tower's middle block was inside it).
-    const ax = P.x[aimed]!,
-      az = P.z[aimed]!;
+    const tx = P.x[aimed]!,
+      tz = P.z[aimed]!;
     let top = 0;
     for (const q of handles.pieces)
-      if (Math.hypot(P.x[q.body]! - ax, P.z[q.body]! - az) < 1.3) top = Math.max(top, P.y[q.body]! + Math.max(...q.half));
+      if (Math.hypot(P.x[q.body]! - tx, P.z[q.body]! - tz) < 1.3) top = Math.max(top, P.y[q.body]! + Math.max(...q.half));
+    // Sliding from a re-aimed swing's old target (eased), else on the target.
+    const f = slide.at < 0 ? 1 : Math.min(1, (shell.world.time - slide.at) / MARKS_SLIDE);
+    const e = f * f * (3 - 2 * f);
+    const ax = slide.x + e * (tx - slide.x),
+      az = slide.z + e * (tz - slide.z);
+    goalMarker.position.set(ax, 0.02, az);
     aimArrow.position.set(ax, top + 0.8 + 0.2 * Math.sin(shell.world.time * 6), az);
   }
+  const faded = slide.at < 0 ? 1 : (shell.world.time - slide.at) / OLD_RING_FADES;
+  oldRing.visible = faded < 1;
+  if (oldRing.visible) {
+    oldRing.position.set(slide.x, 0.03, slide.z);
+    oldRing.scale.setScalar(2.6 * (1 - 0.4 * faded));
+    (oldRing.material as MeshBasicMaterial).opacity = 0.85 * (1 - faded);
+  } else slide.at = -1;
+  nextRing.visible = queued !== 0 && isAlive(shell.world, queued);
+  if (nextRing.visible) {
+    const P = shell.world.components.Position;
+    nextRing.position.set(P.x[queued]!, 0.025, P.z[queued]!);
+    nextRing.scale.setScalar(2.6 * (1 + 0.08 * Math.sin(shell.world.time * 8)));
+  }
   // Once a swing's run is over, what it did: how many pieces it brought down, said for RESULT_SHOWN s.
-  if (aimed !== 0 && handles.controls.moves.length === 0 && swing.result === '' && runEndedAt < 0) runEndedAt = shell.world.time;
+  if (aimed !== 0 && handles.controls.moves.length === 0 && swing.pending && runEndedAt < 0) runEndedAt = shell.world.time;
   if (runEndedAt >= 0 && shell.world.time - runEndedAt > 1.5) {
-    const down = fallenCount(handles.pieces) - swing.downBefore;
-    swing.result = down > 0 ? `Hit! ${down} down` : 'Missed: tap it again';
-    swing.resultAt = shell.world.time;
-    runEndedAt = -1;
-    aimed = 0;
+    countResult();
+    // The target tapped during the run, if it still stands: its swing now (the result stays in the status line).
+    const next = queued;
+    queued = 0;
+    const p = handles.pieces.find((q) => q.body === next);
+    if (p && !p.fallen && isAlive(shell.world, next)) {
+      const { result, resultAt } = swing;
+      swingAt(next);
+      swing.result = result;
+      swing.resultAt = resultAt;
+    }
   }
   if (frames++ % 6 === 0) {
     const n = handles.pieces.length,
       f = fallenCount(handles.pieces);
-    const stars = swingStars(swingsUsed(), cleared, handles.level);
     const budget = swingBudget(handles.level);
     const used = swingsUsed(),
       left = budget - used;
     status.textContent = cleared
-      ? `Level ${handles.level} cleared in ${used} ${used === 1 ? 'swing' : 'swings'}! ${'★'.repeat(stars)}${'☆'.repeat(3 - stars)} · score ${banked + levelScore} · ${touch ? 'tap' : 'press L or'} Next level`
+      ? `${clearedLine()} · score ${banked + levelScore}${resultFixed() ? ' (fixed)' : ''} · ${touch ? 'tap' : 'press L or'} Next level`
       : `Level ${handles.level} · swings left ${left}/${budget} (★★★ in ${swingPar(handles.level)}) · down ${f}/${n} (clear at ${clearTarget(handles.pieces, handles.level)})${swingPhase()}${
           swing.result && shell.world.time - swing.resultAt < RESULT_SHOWN ? ` · ${swing.result}` : ''
         }${left <= 0 && handles.controls.moves.length === 0 ? ` · out of swings: ${touch ? 'tap ↻' : 'press R'} to retry` : ''}${swayHint()}`;
     showNext(cleared, `Level ${handles.level + 1} ▶`);
-    const text = hintText();
-    if (hint.textContent !== text) hint.textContent = text;
-    hint.style.display = text ? '' : 'none';
-    hint.style.fontSize = cleared ? '24px' : '15px';
+    showHint(hintText(), cleared);
     drawPlan();
     readout.textContent = params.debug
       ? `score ${banked + levelScore} · step ${stepMs.toFixed(1)} ms (worst ${worstMs.toFixed(1)}) · ${handles.pieces.length} pieces`
@@ -1385,8 +1716,12 @@ shell.expose({
   handles: (): WreckingBallHandles => handles,
   /** Total score (levels cleared plus this one). */
   score: (): number => banked + levelScore,
-  /** Swings used on this level, the level's budget and the stars earned (0 until cleared). */
-  swings: () => ({ used: swingsUsed(), budget: swingBudget(handles.level), stars: swingStars(swingsUsed(), cleared, handles.level) }),
+  /** Swings used on this level (once cleared, those that cleared it: later swings are for fun), the budget, the stars earned (0 until cleared). */
+  swings: () => ({
+    used: cleared ? clearedWith.swings : swingsUsed(),
+    budget: swingBudget(handles.level),
+    stars: cleared ? clearedWith.stars : 0,
+  }),
   /** Whether this level is cleared. */
   cleared: (): boolean => cleared,
   /** Smoothed step time, ms. */
@@ -1404,6 +1739,15 @@ shell.expose({
   swingMeets: (): number => swingMeets,
   /** Whether the depth cues show: the ball's ground mark, and (while held) its plumb line and swing track. */
   cues: () => ({ mark: ballMark.visible, plumb: plumb.visible, track: trackDashes[0]!.visible, meets: meetRing.visible }),
+  /**
+   * The swing's marks now: where its ring stands (m, x and z; null when hidden), whether the re-aimed
+   * swing's old target still shows its fading ring, and the target tapped to come next (0: none).
+   */
+  marks: () => ({
+    ring: goalMarker.visible ? [goalMarker.position.x, goalMarker.position.z] : null,
+    old: oldRing.visible,
+    next: nextRing.visible ? queued : 0,
+  }),
   /** What the last swing did, once counted ('Hit! N down' or 'Missed: tap it again'; '' before). */
   swingResult: (): string => swing.result,
   /** The effects showing now: dust and chips in the air, score popups. */

@@ -203,23 +203,56 @@ describe('3D rigid-body games in headless Chromium', () => {
     await g.frames(2);
     expect(await g.page.evaluate(() => (window.game as unknown as Cues).cues())).toMatchObject({ mark: true, plumb: false, track: false });
     // A drag of the ball uses one of the level's 4 swings; taps on targets during a wind-up (paused
-    // here, so it never ends) re-aim that swing and use none until its run begins.
-    const budget = await g.page.evaluate(() => {
-      type Swings = WB & { swings(): { used: number; budget: number; stars: number } };
-      const game = window.game as unknown as Swings;
-      const used = game.swings().used;
-      const piece = game.handles().pieces.find((p) => p.kind === 'tower')!.body;
-      const at = game.renderer.drawnPosition(piece)!;
-      const s = game.app.camera.position.clone().set(at[0]!, at[1]!, at[2]!).project(game.app.camera);
-      const presses = [game.pressAt(s.x, s.y), game.pressAt(s.x, s.y), game.pressAt(s.x, s.y)];
-      return { used, presses, after: game.swings() };
-    });
-    expect(budget.used).toBe(1);
-    expect(budget.presses).toEqual(['swing', 'swing', 'swing']);
-    expect(budget.after).toEqual({ used: 1, budget: 4, stars: 0 });
+    // here, so it never ends) re-aim that swing and use none until its run begins. A tap on another
+    // target is seen to move the swing: the hint names the new target and the old one, a fading ring
+    // stays at the old one and the swing's ring slides over to the new one.
+    type Marks = { marks(): { ring: number[] | null; old: boolean; next: number } };
+    /** Presses the first piece of kind `kind` where it is drawn; its place across the ground, m. */
+    const pressPiece = (kind: string) =>
+      g.page.evaluate((kind) => {
+        const game = window.game as unknown as WB;
+        const P = game.world.components.Position;
+        const piece = game.handles().pieces.find((p) => p.kind === kind)!.body;
+        const at = game.renderer.drawnPosition(piece)!;
+        const s = game.app.camera.position.clone().set(at[0]!, at[1]!, at[2]!).project(game.app.camera);
+        return { pressed: game.pressAt(s.x, s.y), at: [P.x[piece]!, P.z[piece]!] };
+      }, kind);
+    type Swings = { swings(): { used: number; budget: number; stars: number } };
+    const used = await g.page.evaluate(() => (window.game as unknown as Swings).swings().used);
+    const tower = await pressPiece('tower'),
+      again = await pressPiece('tower');
+    await g.frames(2);
+    const ring = await g.page.evaluate(() => (window.game as unknown as Marks).marks().ring);
+    const wall = await pressPiece('wall');
+    await g.frames(2);
+    const marks = await g.page.evaluate(() => (window.game as unknown as Marks).marks());
+    expect(used).toBe(1);
+    expect([tower.pressed, again.pressed, wall.pressed]).toEqual(['swing', 'swing', 'swing']);
+    expect(await g.page.evaluate(() => (window.game as unknown as Swings).swings())).toEqual({ used: 1, budget: 4, stars: 0 });
+    // (A tower's blocks stand over each other: its ring stands at the one tapped, on the tower's axis.)
+    expect(Math.hypot(ring![0]! - tower.at[0]!, ring![1]! - tower.at[1]!)).toBeLessThan(0.1);
+    expect(Math.hypot(marks.ring![0]! - tower.at[0]!, marks.ring![1]! - tower.at[1]!)).toBeLessThan(0.1);
+    expect(marks.old).toBe(true);
     await g.frames(8);
     expect(await g.page.locator('[data-hud="wrecking-ball"]').textContent()).toContain('swings left 3/4');
     expect(await g.page.locator('[data-hud="wrecking-ball"]').textContent()).toContain('new target, same swing');
+    expect(await hint.textContent()).toBe('New target: the wall instead of the tower (same swing)');
+    // Half a second on (the marks' slide; 1.5 s for the old ring to fade) the swing's ring stands at the wall.
+    await g.page.evaluate(() => {
+      const game = window.game as unknown as WB;
+      for (let i = 0; i < 100; i++) game.step();
+    });
+    await g.frames(2);
+    const slid = await g.page.evaluate(() => {
+      const game = window.game as unknown as WB & Marks & { aimed(): { piece: number } };
+      const P = game.world.components.Position,
+        aimed = game.aimed().piece;
+      return { ...game.marks(), kind: game.handles().pieces.find((p) => p.body === aimed)?.kind, at: [P.x[aimed]!, P.z[aimed]!] };
+    });
+    expect(slid.kind).toBe('wall');
+    expect(Math.hypot(slid.ring![0]! - slid.at[0]!, slid.ring![1]! - slid.at[1]!)).toBeLessThan(0.1);
+    expect(Math.hypot(slid.ring![0]! - wall.at[0]!, slid.ring![1]! - wall.at[1]!)).toBeLessThan(2.5);
+    expect(slid.old).toBe(false);
     // At 1280 x 800 the left column's foot holds the site plan: no empty gap under the legend (it
     // was 230 px), and nothing pushed out of view.
     const followed = await g.page.evaluate(() => (window.game as unknown as { cameraTarget(): number[] }).cameraTarget());
@@ -275,6 +308,27 @@ describe('3D rigid-body games in headless Chromium', () => {
       null,
     );
     expect(await hint.isVisible()).toBe(true);
+    // Once cleared, the result is fixed: a swing after it (a grab of the ball) changes neither the
+    // swings nor the stars nor the score, whatever falls; the hint says the swing is for fun.
+    const banner = await hint.textContent();
+    const fun = await g.page.evaluate(() => {
+      type Done = WB & { swings(): { used: number; stars: number } };
+      const game = window.game as unknown as Done;
+      for (let i = 0; i < 120; i++) game.step();
+      const before = { swings: game.swings(), score: game.score() };
+      const at = game.renderer.drawnPosition(game.handles().ball)!;
+      const s = game.app.camera.position.clone().set(at[0]!, at[1]!, at[2]!).project(game.app.camera);
+      const pressed = game.pressAt(s.x, s.y);
+      game.drag.release();
+      const V = (game.world.components as unknown as { Velocity: { x: Float64Array } }).Velocity;
+      for (const p of game.handles().pieces) V.x[p.body] = -6;
+      for (let i = 0; i < 120; i++) game.step();
+      return { pressed, before, after: { swings: game.swings(), score: game.score() } };
+    });
+    expect(fun.pressed).toBe('ball');
+    expect(fun.after).toEqual(fun.before);
+    await g.waitFor(() => document.querySelector('[data-hud="tap-hint"]')!.textContent!.includes('for fun: the result stands'), null);
+    expect((await hint.textContent())!.startsWith(banner!)).toBe(true);
     expect(g.errors).toEqual([]);
     await g.close();
   });
