@@ -5,8 +5,8 @@
  */
 
 import { segmentsCross } from '@bitphysics/game-kit';
-import { isAlive, type PhysicsWorld, removeJoint, slotOf } from '@bitphysics/physics';
-import type { RopePiece } from './scene';
+import { isAlive, type PhysicsWorld, slotOf } from '@bitphysics/physics';
+import { cutRope, type RopePiece } from './scene';
 
 /** A link's ends now, m: [ax, ay, bx, by]. */
 function ends(world: PhysicsWorld, rope: RopePiece, k: number, ball: number, out: number[]): number[] {
@@ -46,8 +46,9 @@ export interface RopeCut {
 }
 
 /**
- * Cuts, on each rope, the first live link (from the anchor) that the swipe from (x0, y0) to (x1, y1),
- * m, crosses, or failing a crossing and with `reach` > 0, the live link nearest to (x1, y1) within
+ * Cuts (scene.ts `cutRope`: the ball goes free of the piece below), on each rope, the first live
+ * link (from the anchor) that the swipe from (x0, y0) to (x1, y1), m, crosses, however long the
+ * segment, or failing a crossing and with `reach` > 0, the live link nearest to (x1, y1) within
  * `reach` m. One cut a rope a call, so a swipe that runs along a rope cuts it once, not into bits.
  * @returns the cuts made.
  */
@@ -74,7 +75,7 @@ export function cutRopes(
       if (!isAlive(world, link)) continue;
       const [ax, ay, bx, by] = ends(world, rope, k, ball, p);
       if (segmentsCross(x0, y0, x1, y1, ax!, ay!, bx!, by!)) {
-        removeJoint(world, link);
+        cutRope(world, rope, link);
         out.push({ x: (ax! + bx!) / 2, y: (ay! + by!) / 2, rope: r });
         return;
       }
@@ -91,7 +92,7 @@ export function cutRopes(
     }
   });
   if (out.length === 0 && near !== 0) {
-    removeJoint(world, near);
+    cutRope(world, ropes[nearRope]!, near);
     out.push({ x: nearX, y: nearY, rope: nearRope });
   }
   return out;

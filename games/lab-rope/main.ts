@@ -5,8 +5,9 @@
  * solver's soft substeps; a cut removes one link, and the two pieces hang and fall as two ropes
  * (view.ts draws each piece as its own cord).
  *
- * Input: swipe across a rope to cut it (cut.ts: every rope the stroke crosses), or tap on it; drag the
- * ball to push it while a rope still holds it (a mouse joint of limited force). Keys: P pause, N step,
+ * Input: swipe across a rope to cut it (cut.ts: every rope the stroke crosses, however fast), or tap
+ * on it; drag the ball to push it while a rope still holds it (a mouse joint of limited force; a fast
+ * flick from the ball is a swipe). A miss holds the scene until a tap, click or key starts again. Keys: P pause, N step,
  * R retry, L next level (once the level is cleared). URL: ?level (1-5), ?links (links a metre, 2-40), ?gravity (0-30 m/s^2),
  * ?debug (the frame rate, body and step counts and the largest link error in the side column; a
  * player sees the level, the stars and the cuts there).
@@ -48,11 +49,14 @@ const best = LEVELS.map(() => -1);
 let scene: RopeScene;
 let game: RopeGame;
 let cuts = 0;
-/** Real time (s) at which the level was lost, for the automatic retry; NaN while playing. */
+/** Real time (s) at which the level was lost; NaN while playing. */
 let lostAt = Number.NaN;
-/** After a miss the level starts again after this long, s (real time), or at a tap or key after MISS_TAP_AFTER s. */
-const MISS_PAUSE = 2.5;
-/** A tap or key during a miss's pause starts the level again once this long has passed, s (not the swipe that missed). */
+/**
+ * A miss holds the scene until the player taps, clicks or presses a key (it used to start the level
+ * again by itself 2.5 s on, and a player looking elsewhere missed it): the scene dims to red, the
+ * ball is ringed where it lies and the banner says so in large type on a dark card. The tap counts
+ * once this long has passed, s (not the swipe that missed).
+ */
 const MISS_TAP_AFTER = 0.4;
 /** The miss banner's second line: a tap on a touch screen, a click (or Space) elsewhere. */
 const MISS_HINT = matchMedia('(pointer: coarse)').matches ? '\ntap to try again' : '\nclick to try again';
@@ -108,6 +112,9 @@ function labStep(world: PhysicsWorld): void {
   if (before === 'playing' && game.outcome === 'lost') {
     lostAt = performance.now() / 1000;
     sound.impact(2, 'soft', { threshold: 0.1, loud: 10 });
+    // A falling two-note "no".
+    sound.chime(392, 0.22);
+    setTimeout(() => sound.chime(294, 0.4), 200);
   }
   const e = slotOf(scene.ball);
   const V = world.components.Velocity;
@@ -243,6 +250,14 @@ const toWorld = (e: PointerEvent): [number, number] => {
   return [renderer.camera.toWorldX(at.x), renderer.camera.toWorldY(at.y)];
 };
 let stroke: { x: number; y: number; sx: number; sy: number; moved: number; id: number; reach: number; cut: Set<number> } | null = null;
+/** The pointer pushing the ball: its id, and its last place (CSS px and m) and time (ms), to tell a flick from a push. */
+const pusher = { id: -1, sx: 0, sy: 0, x: 0, y: 0, t: 0 };
+/**
+ * Speed, CSS px/s, over which a pointer that pressed on the ball is a flick, not a push: its path
+ * cuts the ropes it crosses (a swipe begun at the ball, where the rope meets it, pushed the ball
+ * and cut nothing). A push drags at a few hundred px/s.
+ */
+const FLICK_PX_S = 1200;
 const slash: { x: number; y: number; t: number }[] = [];
 /** How far from a rope a tap still cuts it, CSS px. */
 const TAP_REACH_PX = 26;
@@ -309,6 +324,12 @@ canvas.addEventListener('pointerdown', (e) => {
     P = w.components.Position;
   const near = Math.hypot(P.x[b]! - x, P.y[b]! - y) < BALL_RADIUS + 22 / renderer.camera.toScreenLength(1);
   if (near && game.holding() > 0 && game.outcome === 'playing') {
+    pusher.id = e.pointerId;
+    pusher.sx = at.x;
+    pusher.sy = at.y;
+    pusher.x = x;
+    pusher.y = y;
+    pusher.t = e.timeStamp;
     // A push of at most 1.2 times the ball's weight: enough to swing it, not to carry it.
     push = addMouseJoint(w, {
       b: scene.ball,
@@ -336,11 +357,40 @@ canvas.addEventListener('pointerdown', (e) => {
 });
 canvas.addEventListener('pointermove', (e) => {
   const [x, y] = toWorld(e);
-  if (push && isAlive(shell.world, push)) {
+  if (push && isAlive(shell.world, push) && e.pointerId === pusher.id && !flicked(e)) {
     setMouseTarget(shell.world, push, [x, y]);
+    pusher.sx = at.x;
+    pusher.sy = at.y;
+    pusher.x = x;
+    pusher.y = y;
+    pusher.t = e.timeStamp;
     return;
   }
   if (!stroke || e.pointerId !== stroke.id) return;
+  strokeTo(x, y);
+});
+/**
+ * Whether the pointer pushing the ball has moved from its last place to `at` (CSS px) faster than
+ * FLICK_PX_S (`e` its move or release): then it is a flick, not a push: the push goes and a stroke
+ * begins at its last place, so the caller's `strokeTo` cuts what the flick crossed.
+ */
+function flicked(e: PointerEvent): boolean {
+  const px = Math.hypot(at.x - pusher.sx, at.y - pusher.sy);
+  if ((1000 * px) / Math.max(1, e.timeStamp - pusher.t) <= FLICK_PX_S) return false;
+  releasePush();
+  const reach = e.pointerType === 'touch' ? SWIPE_REACH_PX.touch : SWIPE_REACH_PX.other;
+  stroke = { x: pusher.x, y: pusher.y, sx: pusher.sx, sy: pusher.sy, moved: 0, id: e.pointerId, reach, cut: new Set() };
+  slash.length = 0;
+  slash.push({ x: pusher.sx, y: pusher.sy, t: performance.now() / 1000 });
+  return true;
+}
+/**
+ * Carries the stroke on to (x, y), m (the pointer's place now, `at` in CSS px): cuts what the
+ * segment from its last place crosses (or, once it has moved 8 px, ends within its reach of),
+ * however long the segment (a fast flick moves far between two pointer events), and draws it.
+ */
+function strokeTo(x: number, y: number): void {
+  if (!stroke) return;
   stroke.moved += Math.hypot(at.x - stroke.sx, at.y - stroke.sy);
   stroke.sx = at.x;
   stroke.sy = at.y;
@@ -348,16 +398,24 @@ canvas.addEventListener('pointermove', (e) => {
   stroke.x = x;
   stroke.y = y;
   slash.push({ x: at.x, y: at.y, t: performance.now() / 1000 });
-});
+}
 function releasePush(): void {
   if (push && isAlive(shell.world, push)) removeJoint(shell.world, push);
   push = 0;
 }
 const release = (e: PointerEvent): void => {
+  const [x, y] = toWorld(e);
+  // A push let go fast, far from its last move: a flick from the ball (see flicked).
+  if (push && isAlive(shell.world, push) && e.pointerId === pusher.id && e.type === 'pointerup') flicked(e);
   releasePush();
-  // A tap (a press that hardly moved): cut the rope nearest to it, if close enough.
-  if (stroke && e.pointerId === stroke.id && stroke.moved < 8)
-    cutBetween(stroke.x, stroke.y, stroke.x, stroke.y, TAP_REACH_PX / renderer.camera.toScreenLength(1), stroke.cut);
+  pusher.id = -1;
+  if (stroke && e.pointerId === stroke.id) {
+    // The last stretch, from the last move to where the pointer left: a flick may send its up event
+    // far from its last move, or with no move between down and up at all.
+    if (e.type === 'pointerup') strokeTo(x, y);
+    // A tap (a press that hardly moved): cut the rope nearest to it, if close enough.
+    if (stroke.moved < 8) cutBetween(stroke.x, stroke.y, stroke.x, stroke.y, TAP_REACH_PX / renderer.camera.toScreenLength(1), stroke.cut);
+  }
   stroke = null;
 };
 canvas.addEventListener('pointerup', release);
@@ -546,18 +604,35 @@ function drawBanner(now: number): void {
   }
   showNext(false);
   if (game.outcome === 'lost') {
-    // A beat to see what happened and what this try caught; a tap or a key starts again sooner.
-    setBanner(`Missed!${MISS_HINT}`, 0xffb4a2, 1);
+    // Held until a tap or a key (see MISS_TAP_AFTER): the scene dimmed red, the ball ringed, the
+    // banner large on a dark card with the stars this try caught.
+    const since = now - lostAt;
+    const fade = Math.min(1, since / 0.3);
+    overlay.rect(0, 0, cam.width, cam.height).fill({ color: 0x5a0b0b, alpha: 0.38 * fade });
+    const e = slotOf(scene.ball),
+      P = shell.world.components.Position;
+    const bx = cam.toScreenX(P.x[e]!),
+      by = cam.toScreenY(P.y[e]!),
+      r = cam.toScreenLength(BALL_RADIUS);
+    overlay.circle(bx, by, r * (1.7 + 0.15 * Math.sin(since * 6))).stroke({ width: 4, color: 0xff6b5a, alpha: fade });
+    setBanner(`Missed!${MISS_HINT}`, 0xffb4a2, 1, cam.width < 500 ? 34 : 40);
+    const w = banner.width + 48,
+      h = banner.height + STAR_SIZE * 1.3 + 28;
+    overlay
+      .roundRect(banner.x - w / 2, banner.y - banner.height / 2 - 14, w, h, 16)
+      .fill({ color: 0x101828, alpha: 0.82 * fade })
+      .stroke({ width: 3, color: 0xff6b5a, alpha: fade });
     showStars(banner.x, starsY, game.stars(), scene.level.stars.length, 1);
-    if (now - lostAt > MISS_PAUSE) shell.reset();
     return;
   }
   showStars(0, 0, 0, 0, 0);
   const t = shell.world.time;
   setBanner(`Level ${params.level}: ${scene.level.name}`, 0xffffff, t < 1 ? 1 : Math.max(0, 1 - (t - 1) * 2));
 }
-function setBanner(text: string, color: number, alpha: number): void {
+/** Shows `text` in the banner in colour `color` (0xRRGGBB) at opacity `alpha` in [0, 1], in `size` px type. */
+function setBanner(text: string, color: number, alpha: number, size = 30): void {
   if (banner.text !== text) banner.text = text;
+  if (banner.style.fontSize !== size) banner.style.fontSize = size;
   banner.style.fill = color;
   banner.alpha = alpha;
   banner.visible = alpha > 0;

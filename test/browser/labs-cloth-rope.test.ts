@@ -412,6 +412,50 @@ for (const [device, options] of [
         return [w.world.components.Position.x[e]!, w.world.components.Position.y[e]!] as [number, number];
       }, r);
 
+    /** The rope's middle link on the page: `from(d)` is the point d px from its middle, square to it. */
+    const middleLink = async () => {
+      const line = await g.page.evaluate(() => {
+        const w = window.game as unknown as RopeLab;
+        const rope = w.ids().ropes[0]!,
+          P = w.world.components.Position;
+        const i = Math.floor(rope.bodies.length / 2);
+        const a = rope.bodies[i]! % 2 ** 25,
+          b = rope.bodies[i + 1]! % 2 ** 25;
+        return [P.x[a]!, P.y[a]!, P.x[b]!, P.y[b]!] as [number, number, number, number];
+      });
+      const a = await toPage(g, line[0], line[1]),
+        b = await toPage(g, line[2], line[3]);
+      const len = Math.hypot(b.x - a.x, b.y - a.y);
+      const nx = -(b.y - a.y) / len,
+        ny = (b.x - a.x) / len;
+      return { from: (d: number) => ({ x: (a.x + b.x) / 2 + d * nx, y: (a.y + b.y) / 2 + d * ny }) };
+    };
+    /** Cuts made and ropes holding the ball. */
+    const cutState = () =>
+      g.page.evaluate(() => {
+        const w = window.game as unknown as RopeLab;
+        return { cuts: w.cuts(), holding: w.holding() };
+      });
+    /**
+     * A flick from `a` to `b` (page px) in 16 ms (CDP input with its own timestamps, so the page sees
+     * the speed whatever the machine's): a finger down, one move, up; the mouse pressed and released
+     * with no move between.
+     */
+    const flick = async (page: Page, a: { x: number; y: number }, b: { x: number; y: number }) => {
+      const cdp = await page.context().newCDPSession(page);
+      const t = Date.now() / 1000;
+      if (device === 'phone') {
+        await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: [{ ...a, id: 1 }], timestamp: t });
+        await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: [{ ...b, id: 1 }], timestamp: t + 0.016 });
+        await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [], timestamp: t + 0.02 });
+      } else {
+        await cdp.send('Input.dispatchMouseEvent', { type: 'mouseMoved', ...a, timestamp: t - 0.1 });
+        await cdp.send('Input.dispatchMouseEvent', { type: 'mousePressed', ...a, button: 'left', clickCount: 1, timestamp: t });
+        await cdp.send('Input.dispatchMouseEvent', { type: 'mouseReleased', ...b, button: 'left', clickCount: 1, timestamp: t + 0.016 });
+      }
+      await cdp.detach();
+    };
+
     // One page for both tests (a page load costs seconds in software-rendered Chromium).
     let g: GamePage;
     beforeAll(async () => {
@@ -503,7 +547,7 @@ for (const [device, options] of [
       expect(g.errors).toEqual([]);
     });
 
-    it('a swipe that stops just short of the rope still cuts it (14 px for a finger, 5 px for the mouse)', async () => {
+    it('a swipe that stops just short of the rope still cuts it (14 px for a finger, 5 px for the mouse); a fast flick cuts it, even one begun on the ball', async () => {
       await g.page.evaluate(() => {
         const w = window.game as unknown as RopeLab & { reset(): void };
         w.reset();
@@ -538,6 +582,41 @@ for (const [device, options] of [
         return { cuts: w.cuts(), holding: w.holding() };
       });
       expect(state, `${device}: a swipe stopping ${short} px short`).toEqual({ cuts: 1, holding: 0 });
+      // A fast flick across the rope cuts it however few pointer events it makes: from 60 px one side
+      // of the middle link to 60 px the other in 20 ms, as a press and a release with no move between
+      // (the mouse) or one move (a finger). Before, the stretch to the release was never tested.
+      await g.page.evaluate(() => {
+        const w = window.game as unknown as RopeLab & { reset(): void };
+        w.reset();
+        w.paused = true;
+      });
+      const across = await middleLink();
+      await flick(g.page, across.from(60), across.from(-60));
+      expect(await cutState(), `${device}: a flick`).toEqual({ cuts: 1, holding: 0 });
+      // A flick begun on the ball (where the rope meets it) cuts the rope too: a press there pushed
+      // the ball and the stroke cut nothing. From a point on the ball 0.12 m beside the rope's line,
+      // across it 0.5 m up the rope, in 16 ms.
+      await g.page.evaluate(() => {
+        const w = window.game as unknown as RopeLab & { reset(): void };
+        w.reset();
+        w.paused = true;
+      });
+      const onBall = await g.page.evaluate(() => {
+        const w = window.game as unknown as RopeLab;
+        const P = w.world.components.Position,
+          ids = w.ids();
+        const b = ids.ball % 2 ** 25,
+          [ax, ay] = ids.ropes[0]!.anchor as [number, number];
+        const bx = P.x[b]!,
+          by = P.y[b]!;
+        const d = Math.hypot(ax - bx, ay - by),
+          ux = (ax - bx) / d,
+          uy = (ay - by) / d;
+        // Start: 0.12 m to the rope's side of the ball's centre; end: 0.5 m up the rope, 0.3 m on its other side.
+        return [bx - 0.12 * uy, by + 0.12 * ux, bx + 0.5 * ux + 0.3 * uy, by + 0.5 * uy - 0.3 * ux] as const;
+      });
+      await flick(g.page, await toPage(g, onBall[0], onBall[1]), await toPage(g, onBall[2], onBall[3]));
+      expect(await cutState(), `${device}: a flick from the ball`).toEqual({ cuts: 1, holding: 0 });
       expect(g.errors).toEqual([]);
     });
 
