@@ -400,10 +400,13 @@ function clearOfJib(p: Vector3): boolean {
 function frameSite(): void {
   framedLevel = handles.level;
   framePoints = sitePoints();
+  rehomedAt.fill(1e9);
   frameAgain();
 }
 /** The points `frameSite` framed (the level as it stood when framed), for a new canvas size. */
 let framePoints: Vector3[] = [];
+/** Where the ball lay when the site was last framed again for it (once for each place it comes to rest; see rehome). */
+const rehomedAt = [1e9, 1e9, 1e9];
 /** The points to frame, m: the corners of each piece's box, of the mast's footing and top, of the hook and the ball. */
 function sitePoints(): Vector3[] {
   const P = shell.world.components.Position,
@@ -814,12 +817,14 @@ function drawChain(hook: ArrayLike<number>): void {
 // would move the targets under the player's finger); past that the orbit's target eases toward a point
 // between the mast and the ball (FOLLOW of the way a frame) and the camera moves with it, keeping the
 // player's own orbit and zoom. Once the ball is back inside the site's framing (the view frameSite
-// chose), the camera eases back to it: a camera that stayed where it had followed a follow-through
-// left the other structures off a phone's screen. A player who turns or zooms the camera keeps it.
-// The framing draws pieces out to FRAME_X of the view, so the ball striking one there is still in
-// view: the edge lies past that.
+// chose), the camera eases back to it (RETURN): a camera that stayed where it had followed a
+// follow-through left the other structures off a phone's screen. A player who turns or zooms the
+// camera keeps it. The framing draws pieces out to FRAME_X of the view, so the ball striking one
+// there is still in view: the edge lies past that.
 const FOLLOW = 0.04,
   FOLLOW_EDGE = 0.92;
+/** Share of the way back to the site's framing the camera eases each frame (most of it in half a second). */
+const RETURN = 0.08;
 const followGoal = new Vector3(),
   followStep = new Vector3(),
   followBall = [0, 0, 0],
@@ -843,6 +848,9 @@ function inHomeView(p: ArrayLike<number>): boolean {
  */
 function rehome(ball: ArrayLike<number>): void {
   if (home === null) return;
+  rehomedAt[0] = ball[0]!;
+  rehomedAt[1] = ball[1]!;
+  rehomedAt[2] = ball[2]!;
   const pts = framePoints;
   for (let c = 0; c < 8; c++)
     pts.push(
@@ -863,14 +871,20 @@ function followAction(): void {
     let inside = inHomeView(followBall);
     // Come to rest outside the framing (past a structure at its edge): framed again, from the same
     // side, with the ball where it lies (the camera eases there).
-    if (!inside && handles.controls.moves.length === 0 && handles.controls.goal === null && drag.body === 0) {
+    if (
+      !inside &&
+      handles.controls.moves.length === 0 &&
+      handles.controls.goal === null &&
+      drag.body === 0 &&
+      Math.hypot(followBall[0]! - rehomedAt[0]!, followBall[1]! - rehomedAt[1]!, followBall[2]! - rehomedAt[2]!) > 1
+    ) {
       rehome(followBall);
       inside = true;
     }
     if (inside) {
       if (app.camera.position.distanceToSquared(home.position) + controls.target.distanceToSquared(home.target) < 1e-8) return;
-      app.camera.position.lerp(home.position, FOLLOW);
-      controls.target.lerp(home.target, FOLLOW);
+      app.camera.position.lerp(home.position, RETURN);
+      controls.target.lerp(home.target, RETURN);
       return;
     }
   }
@@ -1754,6 +1768,8 @@ function swingPhase(): string {
 shell.expose({
   /** The camera's orbit target, m (it follows the ball; see followAction). */
   cameraTarget: (): number[] => (app.controls ? app.controls.target.toArray() : []),
+  /** The orbit target of the site's framing the camera returns to, m (null once the player has moved the camera). */
+  framing: (): number[] | null => (home ? home.target.toArray() : null),
   /** The drawn chain: its visible segments and the gap, m, between its end and the ball's surface (0 when whole). */
   chain: () => {
     const end = chainSegments[chainSegments.length - 1]!;
