@@ -9,11 +9,22 @@
  * on it; drag the ball to push it while a rope still holds it (a mouse joint of limited force; a fast
  * flick from the ball is a swipe). A miss holds the scene until a tap, click or key starts again. Keys: P pause, N step,
  * R retry, L next level (once the level is cleared). URL: ?level (1-5), ?links (links a metre, 2-40), ?gravity (0-30 m/s^2),
- * ?debug (the frame rate, body and step counts and the largest link error in the side column; a
- * player sees the level, the stars and the cuts there).
+ * ?room (auto, wide or upright: a screen wider than tall plays the levels in the wide room,
+ * scene.ts WIDE_LEVELS, an upright one in the upright room, LEVELS), ?debug (the frame rate, body
+ * and step counts and the largest link error in the side column; a player sees the level, the
+ * stars and the cuts there).
  */
 
-import { createActionButton, createPanel, flagParam, getSound, numberParam, pageLayout, pointerOnCanvas } from '@bitphysics/game-kit';
+import {
+  choiceParam,
+  createActionButton,
+  createPanel,
+  flagParam,
+  getSound,
+  numberParam,
+  pageLayout,
+  pointerOnCanvas,
+} from '@bitphysics/game-kit';
 import { createLabDock, createReadout, createStatusLine, followView, readUrlParams } from '@bitphysics/game-kit/lab-kit';
 import { startPixiGame } from '@bitphysics/game-kit/pixi';
 import { createPlot } from '@bitphysics/game-kit/plot';
@@ -21,18 +32,33 @@ import { addMouseJoint, isAlive, type PhysicsWorld, step as physicsStep, removeJ
 import type { WorldRect } from '@bitphysics/render-pixi';
 import { Container, Graphics, Text } from 'pixi.js';
 import { cutRopes } from './cut';
-import { BALL_RADIUS, createRopeScene, DEFAULTS, LEVELS, RopeGame, type RopeScene } from './scene';
+import { BALL_RADIUS, createRopeScene, DEFAULTS, LEVELS, type Level, RopeGame, type RopeScene, WIDE_LEVELS } from './scene';
 import { RopeView } from './view';
 
-const USAGE = `Accepted: level 1-${LEVELS.length}; links 2-40 (a metre); gravity 0-30 m/s².`;
+const USAGE = `Accepted: level 1-${LEVELS.length}; links 2-40 (a metre); gravity 0-30 m/s²; room auto, wide or upright.`;
 const url = readUrlParams(
   () => ({
     level: numberParam('level', { default: 1, min: 1, max: LEVELS.length, integer: true }),
     linksPerMetre: numberParam('links', { default: DEFAULTS.linksPerMetre, min: 2, max: 40 }),
     gravity: numberParam('gravity', { default: DEFAULTS.gravity, min: 0, max: 30 }),
+    room: choiceParam('room', ['auto', 'wide', 'upright'] as const, 'auto'),
   }),
   USAGE,
 );
+/**
+ * Whether a new level is built in the wide room (WIDE_LEVELS): ?room=wide, or ?room=auto (the default)
+ * on a stage wider than tall by a tenth (a desktop window, a phone on its side). Decided at each level's
+ * start (a turned phone gets the other room at its next level or retry).
+ */
+function wideRoom(): boolean {
+  if (url.room !== 'auto') return url.room === 'wide';
+  const stage = pageLayout().stage.getBoundingClientRect();
+  const w = stage.width || window.innerWidth,
+    h = stage.height || window.innerHeight;
+  return w > 1.1 * h;
+}
+/** The level set the level shown belongs to. */
+let levels: readonly Level[] = LEVELS;
 /** Whether the engineer's numbers show (?debug): frame rate, bodies, steps, the largest link error. */
 const debug = flagParam('debug');
 const params = {
@@ -74,7 +100,8 @@ let plot: ReturnType<typeof createPlot> | null = null;
 const sound = getSound();
 
 function createWorld(): PhysicsWorld {
-  scene = createRopeScene(params.level - 1, params);
+  levels = wideRoom() ? WIDE_LEVELS : LEVELS;
+  scene = createRopeScene(params.level - 1, params, levels);
   game = new RopeGame(scene);
   cuts = 0;
   lostAt = Number.NaN;
@@ -666,6 +693,10 @@ shell.expose({
   outcome: () => game.outcome,
   /** The level shown (1-based), and the best stars of each level (-1: not cleared). */
   level: () => params.level,
+  /** The room the level is built in: 'wide' (WIDE_LEVELS) or 'upright' (LEVELS). */
+  room: () => (levels === WIDE_LEVELS ? 'wide' : 'upright'),
+  /** The level's basket: centre of its floor (x, y, m) and inner width, m. */
+  basket: () => ({ at: [...scene.level.basket], width: scene.level.basketWidth }),
   best: () => [...best],
   /**
    * The banner over the scene: its text ('' while hidden), box (x, y, width, height, px) and the star

@@ -44,8 +44,10 @@ export interface Level {
   readonly stars: readonly (readonly [number, number])[];
   /** Walls in the way: centre and half extents, m. */
   readonly blocks?: readonly { readonly at: readonly [number, number]; readonly half: readonly [number, number] }[];
-  /** What the camera frames, m (the same for every screen: the level is drawn as large as it fits). */
+  /** What the camera frames, m (the level is drawn as large as it fits). */
   readonly view: { readonly minX: number; readonly minY: number; readonly maxX: number; readonly maxY: number };
+  /** Half the room's width, m: its side walls' inner faces are this far from x = 0. Default ROOM_HALF_WIDTH. */
+  readonly room?: number;
 }
 
 /** Radius of the ball, m. */
@@ -54,8 +56,12 @@ export const BALL_RADIUS = 0.28;
 export const BALL_MASS = 1;
 /** Thickness of the basket's walls and floor, m. */
 export const WALL = 0.1;
-/** Half the room's width, m: its side walls' inner faces are this far from x = 0. */
+/** Half the room's width of LEVELS, m (`Level.room`): its side walls' inner faces are this far from x = 0. */
 export const ROOM_HALF_WIDTH = 2.7;
+/** Half the room's width of level `level`, m. */
+export function roomHalfWidth(level: Level): number {
+  return level.room ?? ROOM_HALF_WIDTH;
+}
 /** How close the ball's centre must come to a star to catch it, m. */
 export const STAR_REACH = BALL_RADIUS + 0.22;
 
@@ -154,6 +160,122 @@ export const LEVELS: readonly Level[] = Object.freeze([
   },
 ]);
 
+/** Half the room's width of WIDE_LEVELS, m. */
+export const WIDE_ROOM_HALF_WIDTH = 5.2;
+const WIDE_VIEW = { minX: -5.4, minY: -0.35, maxX: 5.4, maxY: 7.0 } as const;
+
+/**
+ * The levels for a screen wider than tall: the same five ideas in a room twice as wide and 2 m
+ * lower (10.4 x 7 m), so a desktop window draws them large (94 px a metre at 1280 x 800, the room
+ * 1010 px wide; LEVELS' upright room, drawn as large as the window's height allows, was 415 px
+ * wide). Laid out with the ball's flights measured like LEVELS' (test/games/lab-rope.test.ts):
+ * each cut's outcome the same wherever along its rope it is made, and no star caught by the
+ * untouched swing.
+ */
+export const WIDE_LEVELS: readonly Level[] = Object.freeze([
+  {
+    name: 'Let go',
+    hint: LEVELS[0]!.hint,
+    anchors: [[-1.2, 6.3]],
+    ball: [-4.2, 4.8],
+    // Where the swing throws the ball farthest (a cut 1.5 s in): whether it lands changes least
+    // with the cut's time there (won 1.32-1.72 s, 3 stars 1.44-1.68 s). The basket's right wall
+    // stands 0.2 m from the room's, too near for the ball to drop between them.
+    basket: [4.35, 0],
+    basketWidth: 1.1,
+    basketDepth: 0.75,
+    stars: [
+      [2.67, 3.3],
+      [3.43, 2.8],
+      [4.18, 1.91],
+    ],
+    view: WIDE_VIEW,
+    room: WIDE_ROOM_HALF_WIDTH,
+  },
+  {
+    name: 'Two ropes',
+    hint: LEVELS[1]!.hint,
+    anchors: [
+      [-3.6, 6.3],
+      [0.6, 6.3],
+    ],
+    ball: [-1.6, 4.5],
+    // The left rope first (its swing on the right rope takes the first star), the right one 1.1-1.4 s
+    // later; the other way round never wins.
+    basket: [4.3, 0],
+    basketWidth: 1.1,
+    basketDepth: 0.75,
+    stars: [
+      [0.6, 2.75],
+      [3.01, 2.72],
+      [3.61, 1.71],
+    ],
+    view: WIDE_VIEW,
+    room: WIDE_ROOM_HALF_WIDTH,
+  },
+  {
+    name: 'Over the wall',
+    hint: LEVELS[2]!.hint,
+    anchors: [[-2.0, 6.3]],
+    ball: [-4.8, 5.6],
+    // On the upswing, over the 3 m wall (won 1.3-1.58 s, 3 stars from 1.42 s: the first star just
+    // over the throw's top).
+    basket: [4.3, 0],
+    basketWidth: 1.1,
+    basketDepth: 0.7,
+    stars: [
+      [1.35, 4.3],
+      [2.92, 3.34],
+      [3.9, 2.06],
+    ],
+    blocks: [{ at: [1.2, 1.5], half: [0.12, 1.5] }],
+    view: WIDE_VIEW,
+    room: WIDE_ROOM_HALF_WIDTH,
+  },
+  {
+    name: 'Three ropes',
+    hint: LEVELS[3]!.hint,
+    anchors: [
+      [-2.0, 6.3],
+      [0.4, 6.5],
+      [3.6, 6.3],
+    ],
+    ball: [0.6, 4.7],
+    // The right and middle ropes (either first), then the left one as the ball swings back from
+    // the left wall (won 3.6-3.92 s after cuts at 1.0 and 1.3 s): the swing takes the first two
+    // stars, the drop the third. The left rope cut before the right one never wins.
+    basket: [-2.4, 0],
+    basketWidth: 1.1,
+    basketDepth: 0.75,
+    stars: [
+      [-1.6, 2.25],
+      [-4.45, 4.45],
+      [-2.86, 1.59],
+    ],
+    view: WIDE_VIEW,
+    room: WIDE_ROOM_HALF_WIDTH,
+  },
+  {
+    name: 'Push',
+    hint: LEVELS[4]!.hint,
+    anchors: [[-1.6, 6.3]],
+    ball: [-1.6, 3.0],
+    // Pushed at 5 m/s, a cut as it swings back up to the right lobs it onto the raised basket (won
+    // 4.2-4.65 s; the push's swing takes the first two stars). Untouched, it only hangs.
+    basket: [1.0, 1.2],
+    basketWidth: 1.0,
+    basketDepth: 0.6,
+    stars: [
+      [0.35, 3.95],
+      [-3.55, 3.62],
+      [0.45, 3.0],
+    ],
+    blocks: [{ at: [1.0, 0.6], half: [0.6, 0.6] }],
+    view: WIDE_VIEW,
+    room: WIDE_ROOM_HALF_WIDTH,
+  },
+]);
+
 /** The lab's settings that shape its world. */
 export interface RopeSceneParams {
   /** Rope links a metre of rope, in [2, 40]. */
@@ -200,17 +322,19 @@ export interface RopeScene {
 }
 
 /**
- * Builds level `index` (0-based) of LEVELS: the floor, the basket, the blocks, the ball and its ropes.
- * @throws RangeError on a level index outside LEVELS.
+ * Builds level `index` (0-based) of `levels` (LEVELS, or WIDE_LEVELS for a wide screen): the floor,
+ * the room's side walls, the basket, the blocks, the ball and its ropes.
+ * @throws RangeError on a level index outside `levels`.
  */
-export function createRopeScene(index: number, p: RopeSceneParams): RopeScene {
-  const level = LEVELS[index];
-  if (!level) throw new RangeError(`createRopeScene: level must be an integer in [0, ${LEVELS.length - 1}], got ${index}`);
+export function createRopeScene(index: number, p: RopeSceneParams, levels: readonly Level[] = LEVELS): RopeScene {
+  const level = levels[index];
+  if (!level) throw new RangeError(`createRopeScene: level must be an integer in [0, ${levels.length - 1}], got ${index}`);
   const world = createPhysicsWorld({ gravity: [0, -p.gravity], capacity: 2000 });
   addBox(world, { position: [0, -0.25], halfExtents: [20, 0.25], static: true, friction: 0.6 });
-  // The room's side walls: their inner faces at x = -ROOM_HALF_WIDTH and +ROOM_HALF_WIDTH.
+  // The room's side walls: their inner faces at x = -room and +room.
+  const room = roomHalfWidth(level);
   for (const side of [-1, 1])
-    addBox(world, { position: [side * (ROOM_HALF_WIDTH + 1), 10], halfExtents: [1, 10], static: true, friction: 0.3, restitution: 0.3 });
+    addBox(world, { position: [side * (room + 1), 10], halfExtents: [1, 10], static: true, friction: 0.3, restitution: 0.3 });
   const [bx, by] = level.basket,
     half = level.basketWidth / 2;
   // The basket: a floor and two walls, static, of soft wicker (little bounce).
@@ -344,6 +468,12 @@ export class RopeGame {
     const speed = Math.hypot(V.x[e]!, V.y[e]!);
     this.still = speed < 0.25 ? this.still + world.dt : 0;
     const inside = Math.abs(x - bx) < level.basketWidth / 2 && y > by && y < by + level.basketDepth + BALL_RADIUS;
+    // A ball come to rest on the basket's rim (its centre over a wall's top) counts as in: whether
+    // it stayed there or rolled off outside turned on a centimetre.
+    const onRim =
+      Math.abs(x - bx) < level.basketWidth / 2 + WALL + 0.02 &&
+      y > by + level.basketDepth &&
+      y < by + level.basketDepth + BALL_RADIUS + 0.08;
     const free = this.holding() === 0;
     this.free = free ? this.free + world.dt : 0;
     // The basket's soft lining: a free ball in its opening (over its floor, no higher than a ball
@@ -354,8 +484,8 @@ export class RopeGame {
       V.y[e] = V.y[e]! * k;
     }
     // On the floor outside the basket (its walls stand up from the floor): nothing brings it back in.
-    this.floored = free && !inside && y < BALL_RADIUS + 0.03 ? this.floored + world.dt : 0;
-    if (inside && this.still > 0.3) this.outcome = 'won';
+    this.floored = free && !inside && !onRim && y < BALL_RADIUS + 0.03 ? this.floored + world.dt : 0;
+    if ((inside || onRim) && this.still > 0.3) this.outcome = 'won';
     else if (
       free &&
       (this.still > 0.6 ||

@@ -10,7 +10,7 @@
 import { isAlive, type PhysicsWorld, slotOf } from '@bitphysics/physics';
 import type { Camera } from '@bitphysics/render-pixi';
 import { Container, Graphics, Sprite, Texture } from 'pixi.js';
-import { BALL_RADIUS, type Level, ROOM_HALF_WIDTH, type RopePiece, WALL } from './scene';
+import { BALL_RADIUS, type Level, type RopePiece, roomHalfWidth, WALL } from './scene';
 
 /** Rope thickness, m (drawn at least 4 px). */
 export const ROPE_WIDTH = 0.085;
@@ -273,7 +273,8 @@ export class RopeView {
       Y = (y: number) => cam.toScreenY(y),
       S = (l: number) => cam.toScreenLength(l);
     // Wallpaper stripes.
-    for (let x = -4; x <= 4; x += 0.5) g.rect(X(x), 0, Math.max(1, S(0.16)), H).fill({ color: 0xffffff, alpha: 0.035 });
+    const room = roomHalfWidth(level);
+    for (let x = -room - 1.5; x <= room + 1.5; x += 0.5) g.rect(X(x), 0, Math.max(1, S(0.16)), H).fill({ color: 0xffffff, alpha: 0.035 });
     // The floor: boards.
     const floor = Y(0);
     g.rect(0, floor, W, H - floor).fill({ color: 0x6b4a2f });
@@ -281,7 +282,7 @@ export class RopeView {
     for (let y = floor + S(0.22); y < H; y += S(0.22)) g.rect(0, y, W, 1).fill({ color: 0x4a321e, alpha: 0.8 });
     // Side walls: brick.
     for (const side of [-1, 1]) {
-      const inner = X(side * ROOM_HALF_WIDTH);
+      const inner = X(side * room);
       const x0 = side < 0 ? 0 : inner,
         x1 = side < 0 ? inner : W;
       if (x1 <= x0) continue;
@@ -312,8 +313,8 @@ export class RopeView {
     }
     // The beam the ropes hang from, and a brass ring at each anchor.
     const top = Math.max(...level.anchors.map((a) => a[1]));
-    g.rect(X(-ROOM_HALF_WIDTH), Y(top + 0.45), X(ROOM_HALF_WIDTH) - X(-ROOM_HALF_WIDTH), S(0.35)).fill({ color: 0x5a3b22 });
-    g.rect(X(-ROOM_HALF_WIDTH), Y(top + 0.45), X(ROOM_HALF_WIDTH) - X(-ROOM_HALF_WIDTH), Math.max(2, S(0.06))).fill({ color: 0x7b5433 });
+    g.rect(X(-room), Y(top + 0.45), X(room) - X(-room), S(0.35)).fill({ color: 0x5a3b22 });
+    g.rect(X(-room), Y(top + 0.45), X(room) - X(-room), Math.max(2, S(0.06))).fill({ color: 0x7b5433 });
     for (const [ax, ay] of level.anchors) {
       g.rect(X(ax) - S(0.03), Y(top + 0.1), S(0.06), Y(ay) - Y(top + 0.1)).fill({ color: 0x8d8d8d });
       g.circle(X(ax), Y(ay), S(0.09)).stroke({ width: Math.max(2, S(0.04)), color: 0xd4a537 });

@@ -400,10 +400,13 @@ function clearOfJib(p: Vector3): boolean {
 function frameSite(): void {
   framedLevel = handles.level;
   framePoints = sitePoints();
+  rehomedAt.fill(1e9);
   frameAgain();
 }
 /** The points `frameSite` framed (the level as it stood when framed), for a new canvas size. */
 let framePoints: Vector3[] = [];
+/** Where the ball lay when the site was last framed again for it (once for each place it comes to rest; see rehome). */
+const rehomedAt = [1e9, 1e9, 1e9];
 /** The points to frame, m: the corners of each piece's box, of the mast's footing and top, of the hook and the ball. */
 function sitePoints(): Vector3[] {
   const P = shell.world.components.Position,
@@ -541,11 +544,7 @@ function fitPoints(pts: readonly Vector3[], dir: Vector3): FittedView {
 function applyView(view: FittedView): void {
   const cam = app.camera;
   cam.position.copy(view.position);
-  const p = view.position,
-    d = view.lookAt.clone().sub(p);
-  let t = -(p.x * d.x + p.z * d.z) / Math.max(1e-9, d.x * d.x + d.z * d.z);
-  if (d.y < 0) t = Math.min(t, (p.y - 1) / -d.y);
-  const target = p.clone().addScaledVector(d, Math.max(0.2, t));
+  const target = orbitTarget(view);
   cam.near = Math.max(0.05, view.distance / 200);
   cam.far = view.distance * 200;
   cam.updateProjectionMatrix();
@@ -555,9 +554,25 @@ function applyView(view: FittedView): void {
     app.controls.update();
   }
   framedSize = [app.canvas.clientWidth, app.canvas.clientHeight];
+  home = { position: cam.position.clone(), target, direction: view.position.clone().sub(view.lookAt).normalize() };
 }
+/** The orbit target of camera placement `view`: where its line of sight passes nearest the mast, no lower than 1 m. */
+function orbitTarget(view: FittedView): Vector3 {
+  const p = view.position,
+    d = view.lookAt.clone().sub(p);
+  let t = -(p.x * d.x + p.z * d.z) / Math.max(1e-9, d.x * d.x + d.z * d.z);
+  if (d.y < 0) t = Math.min(t, (p.y - 1) / -d.y);
+  return p.clone().addScaledVector(d, Math.max(0.2, t));
+}
+/**
+ * The site's framing the camera returns to after following the ball: camera position, orbit target
+ * and the unit direction toward the camera (null once the player moves the camera).
+ */
+let home: { position: Vector3; target: Vector3; direction: Vector3 } | null = null;
+// The player's own turn or zoom: the camera is theirs (no new framing on a resize, no easing back).
 app.controls?.addEventListener('start', () => {
   framedSize = null;
+  home = null;
 });
 
 /** How near, m, a piece's centre may pass to the line from the camera through the mast before the mast hides it. */
@@ -801,31 +816,84 @@ function drawChain(hook: ArrayLike<number>): void {
 // target a player is about to tap stays where they saw it (a camera always easing toward the ball
 // would move the targets under the player's finger); past that the orbit's target eases toward a point
 // between the mast and the ball (FOLLOW of the way a frame) and the camera moves with it, keeping the
-// player's own orbit and zoom. The site's framing draws pieces out to FRAME_X of the view, so the
-// ball striking one there is still in view: the edge lies past that.
+// player's own orbit and zoom. Once the ball is back inside the site's framing (the view frameSite
+// chose), the camera eases back to it (RETURN): a camera that stayed where it had followed a
+// follow-through left the other structures off a phone's screen. A player who turns or zooms the
+// camera keeps it. The framing draws pieces out to FRAME_X of the view, so the ball striking one
+// there is still in view: the edge lies past that.
 const FOLLOW = 0.04,
   FOLLOW_EDGE = 0.92;
+/** Share of the way back to the site's framing the camera eases each frame (most of it in half a second). */
+const RETURN = 0.08;
 const followGoal = new Vector3(),
   followStep = new Vector3(),
   followBall = [0, 0, 0],
   followNdc = new Vector3();
+/** Whether point `p` (m) is inside the site's framing (`home`, its FRAME_ bounds and a hair). */
+function inHomeView(p: ArrayLike<number>): boolean {
+  if (home === null) return false;
+  fitCamera.fov = app.camera.fov;
+  fitCamera.aspect = app.camera.aspect;
+  fitCamera.updateProjectionMatrix();
+  fitCamera.position.copy(home.position);
+  fitCamera.lookAt(home.target);
+  fitCamera.updateMatrixWorld();
+  followNdc.set(p[0]!, p[1]!, p[2]!).project(fitCamera);
+  return Math.abs(followNdc.x) < FRAME_X + 0.02 && followNdc.y > FRAME_BOTTOM - 0.02 && followNdc.y < FRAME_TOP + 0.02 && followNdc.z < 1;
+}
 /**
- * Eases the camera and its orbit target toward the action when the ball nears the view's edge (see
- * FOLLOW). The view it leaves is the camera's own from then on: the kit fits the framed site again
- * on a resize only until the camera is moved (its controls' 'start' event), and a resize after a
- * follow (the phone's status line wrapping onto another line) threw the camera back to the site's
- * framing mid-swing.
+ * Frames the site again from the framing's own direction, the ball at `ball` (m) added to its
+ * points (for the rest of the level: the framing only grows, it does not sway with the ball); the
+ * camera is not moved (followAction eases it there).
  */
+function rehome(ball: ArrayLike<number>): void {
+  if (home === null) return;
+  rehomedAt[0] = ball[0]!;
+  rehomedAt[1] = ball[1]!;
+  rehomedAt[2] = ball[2]!;
+  const pts = framePoints;
+  for (let c = 0; c < 8; c++)
+    pts.push(
+      new Vector3(
+        ball[0]! + (c & 1 ? BALL_RADIUS : -BALL_RADIUS),
+        ball[1]! + (c & 2 ? BALL_RADIUS : -BALL_RADIUS),
+        ball[2]! + (c & 4 ? BALL_RADIUS : -BALL_RADIUS),
+      ),
+    );
+  const fit = fitPoints(pts, home.direction);
+  home = { position: fit.position, target: orbitTarget(fit), direction: home.direction };
+}
+/** Eases the camera and its orbit target toward the action, or back to the site's framing (see FOLLOW). */
 function followAction(): void {
   const controls = app.controls;
   if (controls === null || !renderer.drawnPosition(handles.ball, followBall)) return;
+  if (home !== null) {
+    let inside = inHomeView(followBall);
+    // Come to rest outside the framing (past a structure at its edge): framed again, from the same
+    // side, with the ball where it lies (the camera eases there).
+    if (
+      !inside &&
+      handles.controls.moves.length === 0 &&
+      handles.controls.goal === null &&
+      drag.body === 0 &&
+      Math.hypot(followBall[0]! - rehomedAt[0]!, followBall[1]! - rehomedAt[1]!, followBall[2]! - rehomedAt[2]!) > 1
+    ) {
+      rehome(followBall);
+      inside = true;
+    }
+    if (inside) {
+      if (app.camera.position.distanceToSquared(home.position) + controls.target.distanceToSquared(home.target) < 1e-8) return;
+      app.camera.position.lerp(home.position, RETURN);
+      controls.target.lerp(home.target, RETURN);
+      return;
+    }
+  }
   followNdc.set(followBall[0]!, followBall[1]!, followBall[2]!).project(app.camera);
   if (Math.abs(followNdc.x) < FOLLOW_EDGE && Math.abs(followNdc.y) < FOLLOW_EDGE && followNdc.z < 1) return;
   followGoal.set(0.6 * followBall[0]!, 2.5, 0.6 * followBall[2]!);
   followStep.subVectors(followGoal, controls.target).multiplyScalar(FOLLOW);
   controls.target.add(followStep);
   app.camera.position.add(followStep);
-  controls.dispatchEvent({ type: 'start' });
 }
 
 // Where a click sent the hook: a ring on the ground until the hook is there.
@@ -1700,6 +1768,8 @@ function swingPhase(): string {
 shell.expose({
   /** The camera's orbit target, m (it follows the ball; see followAction). */
   cameraTarget: (): number[] => (app.controls ? app.controls.target.toArray() : []),
+  /** The orbit target of the site's framing the camera returns to, m (null once the player has moved the camera). */
+  framing: (): number[] | null => (home ? home.target.toArray() : null),
   /** The drawn chain: its visible segments and the gap, m, between its end and the ball's surface (0 when whole). */
   chain: () => {
     const end = chainSegments[chainSegments.length - 1]!;

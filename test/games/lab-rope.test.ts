@@ -6,7 +6,17 @@
 import { isAlive, type PhysicsWorld, slotOf, step } from '@bitphysics/physics';
 import { describe, expect, it } from 'vitest';
 import { cutRopes } from '../../games/lab-rope/cut';
-import { createRopeScene, cutRope, DEFAULTS, LEVELS, type Outcome, RopeGame, type RopeScene } from '../../games/lab-rope/scene';
+import {
+  createRopeScene,
+  cutRope,
+  DEFAULTS,
+  LEVELS,
+  type Level,
+  type Outcome,
+  RopeGame,
+  type RopeScene,
+  WIDE_LEVELS,
+} from '../../games/lab-rope/scene';
 
 /** Cuts rope `rope` at the link `at` of the way from its pin to the ball (0 to 1; default its middle). */
 function cutMiddle(s: RopeScene, rope: number, at = 0.5): void {
@@ -24,8 +34,9 @@ function play(
   schedule: readonly (readonly [number, number])[],
   push = 0,
   at = 0.5,
+  levels: readonly Level[] = LEVELS,
 ): { outcome: Outcome; stars: number; time: number } {
-  const s = createRopeScene(index, DEFAULTS);
+  const s = createRopeScene(index, DEFAULTS, levels);
   const g = new RopeGame(s);
   if (push) s.world.components.Velocity.x[slotOf(s.ball)] = push;
   let k = 0;
@@ -145,17 +156,61 @@ describe('lab-rope levels', () => {
     expect(rolled.time).toBeLessThan(5);
   });
 
+  it("the wide room's levels (a desktop window) are won by their cuts and lost by wrong ones", () => {
+    // Found as LEVELS' were (scripts/lab-rope-cuts.mjs --wide): the middle of each window, 3 stars.
+    const cases: { win: (readonly [number, number])[]; lose: (readonly [number, number])[]; push?: number; losePush?: number }[] = [
+      // 1: won 1.32-1.72 s (3 stars 1.44-1.68 s); a cut on the way down drops it short.
+      { win: [[1.52, 0]], lose: [[1.0, 0]] },
+      // 2: the left rope, then the right one 1.1-1.4 s later; the other way round never wins.
+      {
+        win: [
+          [0.5, 0],
+          [1.74, 1],
+        ],
+        lose: [
+          [0.5, 1],
+          [1.5, 0],
+        ],
+      },
+      // 3: over the wall, won 1.3-1.58 s (3 stars from 1.42 s); too early, it strikes the wall.
+      { win: [[1.44, 0]], lose: [[0.5, 0]] },
+      // 4: right, middle, then the left one on the way back (won 3.6-3.92 s); left first never wins.
+      {
+        win: [
+          [1.0, 2],
+          [1.3, 1],
+          [3.75, 0],
+        ],
+        lose: [
+          [1.0, 0],
+          [1.3, 1],
+          [2.0, 2],
+        ],
+      },
+      // 5: pushed at 5 m/s, a cut at 4.2-4.65 s lobs it onto the raised basket; unpushed it drops short.
+      { win: [[4.4, 0]], lose: [[4.4, 0]], push: 5, losePush: 0 },
+    ];
+    cases.forEach((c, i) => {
+      expect(play(i, c.win, c.push ?? 0, 0.5, WIDE_LEVELS), `wide level ${i + 1}`).toMatchObject({ outcome: 'won', stars: 3 });
+      expect(play(i, c.lose, c.losePush ?? 0, 0.5, WIDE_LEVELS).outcome, `wide level ${i + 1}`).toBe('lost');
+    });
+  });
+
   it('no level gives a star before the player acts: 8 s of swinging untouched catches none', () => {
     // Before, the swing alone caught 2 stars on levels 1 and 3 (by 1.4 s) and 1 on level 5 (0.15 s).
-    LEVELS.forEach((_, i) => {
-      const s = createRopeScene(i, DEFAULTS);
-      const g = new RopeGame(s);
-      for (let k = 0; k < 60 * 8; k++) {
-        step(s.world);
-        g.update();
-      }
-      expect(g.stars(), `level ${i + 1}`).toBe(0);
-    });
+    for (const [set, levels] of [
+      ['upright', LEVELS],
+      ['wide', WIDE_LEVELS],
+    ] as const)
+      levels.forEach((_, i) => {
+        const s = createRopeScene(i, DEFAULTS, levels);
+        const g = new RopeGame(s);
+        for (let k = 0; k < 60 * 8; k++) {
+          step(s.world);
+          g.update();
+        }
+        expect(g.stars(), `${set} level ${i + 1}`).toBe(0);
+      });
   });
 
   it('a swipe cuts each rope it crosses once; a tap cuts the nearest rope within reach, and nothing beyond it', () => {
