@@ -55,11 +55,13 @@ const WAIT_SLICE_MS = 25;
 /**
  * Milliseconds within which a live worker acknowledges a command (it writes the generation as soon
  * as it wakes, whatever the run's length); a worker that has not is taken for dead. Far above the
- * wake-up latency of a loaded machine (microseconds to tens of milliseconds), and short enough that a
- * dead worker is reported within a second.
+ * wake-up latency of a loaded machine (microseconds to tens of milliseconds; a live worker on two
+ * cores shared by about fifteen busy threads once took over 500 ms), and short enough that a frozen
+ * worker is reported within a few seconds. A worker whose thread ends is reported at once (`DEAD`,
+ * its `exit` event), not after this limit.
  * @category Threads
  */
-export const ACK_LIMIT_MS = 500;
+export const ACK_LIMIT_MS = 2000;
 
 /** Characters of a worker's error message kept (longer messages are cut). */
 const ERROR_TEXT = 1024;
