@@ -49,6 +49,38 @@ type Cached = { [CACHE]?: Map<Term | undefined, Entry[]> };
  * @category Queries
  */
 export function query(world: object, terms: Term[]): QueryResult {
+  const cache = (world as Cached)[CACHE];
+  if (cache !== undefined) {
+    const bucket = cache.get(terms[0]);
+    if (bucket !== undefined) {
+      for (let b = 0; b < bucket.length; b++) {
+        const entry = bucket[b]!;
+        const t = entry.terms;
+        if (t.length !== terms.length) continue;
+        let same = true;
+        for (let i = 1; i < t.length; i++)
+          if (t[i] !== terms[i]) {
+            same = false;
+            break;
+          }
+        if (same) {
+          commitRemovals(world as never);
+          return entry.dense;
+        }
+      }
+    }
+  }
+  return addQuery(world, terms);
+}
+
+/**
+ * A query `query` has not cached for this world yet: asked once, filled, and cached. A function of
+ * its own, called only on a miss, so that the compiled code of every system that calls `query` (which
+ * V8 inlines) holds no allocation: the allocation sites here would tie that code to V8's decision
+ * whether to allocate their objects straight into the old generation, and a change of that decision
+ * (made by the garbage collector while a large world starts) threw it all away.
+ */
+function addQuery(world: object, terms: Term[]): QueryResult {
   let cache = (world as Cached)[CACHE];
   if (cache === undefined) {
     cache = new Map();
@@ -56,23 +88,7 @@ export function query(world: object, terms: Term[]): QueryResult {
   }
   const key = terms[0];
   let bucket = cache.get(key);
-  if (bucket !== undefined) {
-    for (let b = 0; b < bucket.length; b++) {
-      const entry = bucket[b]!;
-      const t = entry.terms;
-      if (t.length !== terms.length) continue;
-      let same = true;
-      for (let i = 1; i < t.length; i++)
-        if (t[i] !== terms[i]) {
-          same = false;
-          break;
-        }
-      if (same) {
-        commitRemovals(world as never);
-        return entry.dense;
-      }
-    }
-  } else {
+  if (bucket === undefined) {
     bucket = [];
     cache.set(key, bucket);
   }
