@@ -2,7 +2,7 @@
  * `warmUp(dimensions)` (packages/physics/src/warm-up.ts): its scene exercises what it claims to (ball
  * and shape contacts in every step: if its layout broke, the JavaScript engine would compile less before
  * a user's first steps), it leaves no trace in a world made after it (the same state to the bit, with
- * or without it), it runs once a dimension, and its argument is checked. Whether it speeds the first
+ * or without it), it runs once a dimension (its ball pile too), and its arguments are checked. Whether it speeds the first
  * steps is measured in the bench (`--warm-up`), not here.
  */
 import {
@@ -10,14 +10,17 @@ import {
   createPhysicsWorld,
   forEachContact,
   type PhysicsWorld,
+  query,
   SCENES,
   stateHash,
   step,
+  WARM_UP_PILE_BALLS,
   WARM_UP_STEPS,
   warmUp,
 } from '@bitphysics/physics';
 import { describe, expect, it } from 'vitest';
-import { warmUpScene } from '../../packages/physics/src/warm-up.js';
+import { DENSE_MIN_BODIES } from '../../packages/physics/src/collision/broadphase/grid.js';
+import { ballPile, warmUpScene } from '../../packages/physics/src/warm-up.js';
 
 /** A scene of `name` and `count` built in a fresh world, stepped `steps` times; its state hash. */
 function hashAfter(name: string, count: number, steps: number): string {
@@ -80,5 +83,28 @@ describe('warmUp', () => {
     const first = warmUp(3);
     expect(warmUp(3)).toBe(false);
     expect(typeof first).toBe('boolean');
+  });
+
+  it.each([2, 3] as const)('the %iD ball pile is over the dense grid threshold, and it settles onto itself', (d) => {
+    const world = ballPile(d);
+    expect(WARM_UP_PILE_BALLS).toBeGreaterThanOrEqual(DENSE_MIN_BODIES);
+    expect(query(world, [world.components.Ball]).length).toBe(WARM_UP_PILE_BALLS);
+    step(world);
+    // Dense: the grid's table is laid out over the pile's cells (spanX > 0), not hashed (spanX = 0).
+    expect(world.collision.grid.spanX).toBeGreaterThan(0);
+    for (let i = 0; i < 5; i++) step(world);
+    // Touching from the start (rows 0.32 m apart, radius 0.15, half a ball shifted): the stages the
+    // pile is there to compile all ran.
+    expect(activity(world).balls).toBeGreaterThan(WARM_UP_PILE_BALLS);
+  });
+
+  it('runs the ball pile once a dimension, also after a plain warm-up; options are checked', () => {
+    expect(() => warmUp(2, { ball: true } as never)).toThrow(/^warmUp: unknown option "ball"; known options are balls$/);
+    expect(() => warmUp(2, { balls: 1 } as never)).toThrow(/^warmUp: balls must be a boolean, got 1$/);
+    expect(() => warmUp(2, null as never)).toThrow(/^warmUp: options must be an object, got null$/);
+    warmUp(3);
+    expect(warmUp(3, { balls: true })).toBe(true);
+    expect(warmUp(3, { balls: true })).toBe(false);
+    expect(warmUp(3)).toBe(false);
   });
 });

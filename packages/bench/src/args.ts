@@ -109,7 +109,8 @@ export const USAGE = `usage: npm run bench -- [options] [--<param> <value> ...]
   --json             one JSON object per line per engine (or per study item) on stdout; notes and progress go to stderr
   --times            with --json: add every timed step's milliseconds as "timesMs" (not for studies)
   --warm-up          call bitphysics' warmUp before making its world (a small scene stepped and thrown away, so the
-                     first timed steps run compiled code; counted in setup ms); use with --warmup 0
+                     first timed steps run compiled code; counted in setup ms; with its pile of 1,100 balls for
+                     balls-in-box and spheres-in-box); use with --warmup 0
   --same-isolate     run the --vs peers on bitphysics' thread (one V8 isolate) instead of each in a worker thread
                      of its own; a WASM peer then slows every JavaScript engine in the run (it detaches buffers)
   --list             list scenes, their parameters and the engines that support each

@@ -248,7 +248,7 @@ export { PIPELINE, STAGES, SUBSTEP_STAGES } from './step/stages.js';
 export type { AddSystemOptions } from './step/step.js';
 export { addSystem, removeSystem, step, stepMany } from './step/step.js';
 export { MIN_PARALLEL_PER_THREAD } from './threads/parallel.js';
-export { WARM_UP_STEPS, warmUp } from './warm-up.js';
+export { WARM_UP_PILE_BALLS, WARM_UP_STEPS, type WarmUpOptions, warmUp } from './warm-up.js';
 export type { ClothState } from './world/cloth-state.js';
 export type { ClothLinkStore } from './world/cloth-store.js';
 export { ClothLinkKind } from './world/cloth-store.js';

@@ -32,6 +32,9 @@ export function bitphysicsThreadedEngine(threads: number): EngineAdapter {
   return bitphysicsAdapter(THREADED, threads);
 }
 
+/** Scenes of thousands of balls, for which `--warm-up` also runs warmUp's ball pile (WarmUpOptions.balls). */
+const PILE_SCENES: ReadonlySet<string> = new Set(['balls-in-box', 'spheres-in-box']);
+
 function bitphysicsAdapter(name: string, threads: number): EngineAdapter {
   return {
     name,
@@ -49,7 +52,7 @@ function bitphysicsAdapter(name: string, threads: number): EngineAdapter {
       const sceneOptions = { ...(bench.sceneOptions?.(options) ?? {}), count: options.count, seed: options.seed };
       if (threads > 1) enableThreads();
       const worldOptions = definition.worldOptions(sceneOptions);
-      if (options.warmUp === true) warmUp(worldOptions.dimensions ?? 2);
+      if (options.warmUp === true) warmUp(worldOptions.dimensions ?? 2, { balls: PILE_SCENES.has(options.scene) });
       const w: PhysicsWorld = createPhysicsWorld({
         ...worldOptions,
         seed: options.seed,
