@@ -57,14 +57,19 @@ export const MR_POINT0 = 17;
 export const MR_STRIDE = 41;
 
 // A point's fields, from the point's start.
-/** Anchor on body A from its centre of mass at the start of the step, x, m. */
-export const MP_RAX = 0;
-/** Anchor on body A, y, m. */
-export const MP_RAY = 1;
-/** Anchor on body B from its centre of mass, x, m. */
-export const MP_RBX = 2;
-/** Anchor on body B, y, m. */
-export const MP_RBY = 3;
+/**
+ * r_A x n: the cross product of the anchor on body A (from its centre of mass at the start of the
+ * step) with the normal, m. The rows never need the anchors themselves: a point's normal velocity is
+ * (v_B - v_A) . n + w_B (r_B x n) - w_A (r_A x n), and a normal impulse P n turns A by -P (r_A x n) / I_A,
+ * so the four cross products are worked out once a step here instead of in every pass.
+ */
+export const MP_RNA = 0;
+/** r_B x n, m (see MP_RNA). */
+export const MP_RNB = 1;
+/** r_A x t with the tangent t = (-n_y, n_x), which is r_A . n, m: the friction row's lever on A. */
+export const MP_RTA = 2;
+/** r_B x t, m (see MP_RTA). */
+export const MP_RTB = 3;
 /** Separation at the start of the step, relative to where the solver starts the bodies, m (< 0: overlap). */
 export const MP_SEPARATION = 4;
 /** Effective mass of the normal row, kg. */

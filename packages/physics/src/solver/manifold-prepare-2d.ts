@@ -19,11 +19,11 @@ import {
   MP_MAX_NORMAL_IMPULSE,
   MP_NORMAL_IMPULSE,
   MP_NORMAL_MASS,
-  MP_RAX,
-  MP_RAY,
-  MP_RBX,
-  MP_RBY,
   MP_RELATIVE_VELOCITY,
+  MP_RNA,
+  MP_RNB,
+  MP_RTA,
+  MP_RTB,
   MP_SEPARATION,
   MP_STRIDE,
   MP_TANGENT_IMPULSE,
@@ -318,10 +318,10 @@ function prepareRows(world: PhysicsWorld, R: Float64Array, n: number): void {
           }
         }
       }
-      R[o + MP_RAX] = rax;
-      R[o + MP_RAY] = ray;
-      R[o + MP_RBX] = rbx;
-      R[o + MP_RBY] = rby;
+      R[o + MP_RNA] = rnA;
+      R[o + MP_RNB] = rnB;
+      R[o + MP_RTA] = rtA;
+      R[o + MP_RTB] = rtB;
       R[o + MP_SEPARATION] = sep;
       R[o + MP_NORMAL_MASS] = kn > 0 ? 1 / kn : 0;
       R[o + MP_TANGENT_MASS] = kt > 0 ? 1 / kt : 0;
@@ -352,14 +352,12 @@ function prepareBlocks(cs: PhysicsWorld['collision'], R: Float64Array, n: number
       iA = sb[oa + BS2_INV_INERTIA]!,
       mB = sb[ob + BS2_INV_MASS]!,
       iB = sb[ob + BS2_INV_INERTIA]!;
-    const nx = R[r + MR_NX]!,
-      ny = R[r + MR_NY]!;
     const o1 = r + MR_POINT0,
       o2 = o1 + MP_STRIDE;
-    const rn1A = R[o1 + MP_RAX]! * ny - R[o1 + MP_RAY]! * nx,
-      rn1B = R[o1 + MP_RBX]! * ny - R[o1 + MP_RBY]! * nx;
-    const rn2A = R[o2 + MP_RAX]! * ny - R[o2 + MP_RAY]! * nx,
-      rn2B = R[o2 + MP_RBX]! * ny - R[o2 + MP_RBY]! * nx;
+    const rn1A = R[o1 + MP_RNA]!,
+      rn1B = R[o1 + MP_RNB]!;
+    const rn2A = R[o2 + MP_RNA]!,
+      rn2B = R[o2 + MP_RNB]!;
     const k11 = mA + mB + iA * rn1A * rn1A + iB * rn1B * rn1B;
     const k22 = mA + mB + iA * rn2A * rn2A + iB * rn2B * rn2B;
     const k12 = mA + mB + iA * rn1A * rn2A + iB * rn1B * rn2B;

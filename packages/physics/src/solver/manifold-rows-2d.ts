@@ -18,11 +18,11 @@ import {
   MP_MAX_NORMAL_IMPULSE,
   MP_NORMAL_IMPULSE,
   MP_NORMAL_MASS,
-  MP_RAX,
-  MP_RAY,
-  MP_RBX,
-  MP_RBY,
   MP_RELATIVE_VELOCITY,
+  MP_RNA,
+  MP_RNB,
+  MP_RTA,
+  MP_RTB,
   MP_SEPARATION,
   MP_STRIDE,
   MP_TANGENT_IMPULSE,
@@ -57,7 +57,9 @@ import {
  *
  * - each point has fixed anchors r_A, r_B from the centres of mass (where the bodies were at the start
  *   of the step); its separation is tracked as s = s0 + (d_B + dtheta_B x r_B - d_A - dtheta_A x r_A) . n,
- *   with d and dtheta the bodies' displacement and rotation so far in the step (rotation linearised);
+ *   with d and dtheta the bodies' displacement and rotation so far in the step (rotation linearised),
+ *   that is s0 + (d_B - d_A) . n + dtheta_B (r_B x n) - dtheta_A (r_A x n): the rows keep only the
+ *   cross products r x n and r x t (solver/manifold-layout-2d.ts MP_RNA), not the anchors;
  * - normal rows: effective mass 1 / (1/m_A + 1/m_B + (r_A x n)^2 / I_A + (r_B x n)^2 / I_B); the two
  *   rows of a two-point manifold are solved together with their 2 x 2 effective mass (Box2D 2.x's block
  *   solver, a small complementarity problem; soft rows with the soft update written for both rows), so
@@ -139,10 +141,11 @@ export function warmStartManifolds(cs: CollisionState): void {
       lt1 = R[o1 + MP_TANGENT_IMPULSE]!;
     const P1x = ln1 * nx - lt1 * ny,
       P1y = ln1 * ny + lt1 * nx;
-    wa -= iA * (R[o1 + MP_RAX]! * P1y - R[o1 + MP_RAY]! * P1x);
+    // r x (ln n + lt t) = ln (r x n) + lt (r x t).
+    wa -= iA * (ln1 * R[o1 + MP_RNA]! + lt1 * R[o1 + MP_RTA]!);
     vax -= mA * P1x;
     vay -= mA * P1y;
-    wb += iB * (R[o1 + MP_RBX]! * P1y - R[o1 + MP_RBY]! * P1x);
+    wb += iB * (ln1 * R[o1 + MP_RNB]! + lt1 * R[o1 + MP_RTB]!);
     vbx += mB * P1x;
     vby += mB * P1y;
     let carries = ln1 !== 0 || lt1 !== 0;
@@ -151,10 +154,10 @@ export function warmStartManifolds(cs: CollisionState): void {
         lt2 = R[o2 + MP_TANGENT_IMPULSE]!;
       const P2x = ln2 * nx - lt2 * ny,
         P2y = ln2 * ny + lt2 * nx;
-      wa -= iA * (R[o2 + MP_RAX]! * P2y - R[o2 + MP_RAY]! * P2x);
+      wa -= iA * (ln2 * R[o2 + MP_RNA]! + lt2 * R[o2 + MP_RTA]!);
       vax -= mA * P2x;
       vay -= mA * P2y;
-      wb += iB * (R[o2 + MP_RBX]! * P2y - R[o2 + MP_RBY]! * P2x);
+      wb += iB * (ln2 * R[o2 + MP_RNB]! + lt2 * R[o2 + MP_RTB]!);
       vbx += mB * P2x;
       vby += mB * P2y;
       carries = carries || ln2 !== 0 || lt2 !== 0;
@@ -247,9 +250,9 @@ function accumulateRow(R: Float64Array, o1: number, two: boolean): void {
  *
  * Per row: the bodies' velocities and the row's normal impulses are read into locals once and written
  * back once (offsets in 32-bit integers without overflow checks: the row count is bounded by
- * MAX_MANIFOLDS, the body indices masked by MR_BODY_MASK); points 1 and 2 are unrolled, their anchors
- * read once (a one-point row reads its unused second point's slots, inside the row, and never uses
- * them). Each normal row's regime: speculative (s > 0: bias s / h_s, rigid) or, with the bias on, soft.
+ * MAX_MANIFOLDS, the body indices masked by MR_BODY_MASK); points 1 and 2 are unrolled, their levers
+ * (r x n and r x t on each body, worked out once a step by prepareManifolds) read once (a one-point row
+ * reads its unused second point's slots, inside the row, and never uses them). Each normal row's regime: speculative (s > 0: bias s / h_s, rigid) or, with the bias on, soft.
  * A two-point row with a valid block solves both normal rows at once, as the linear complementarity
  * problem K x + c = w, x >= 0, w >= 0, x . w = 0 of `solveBlock` (its cases inline: both points push,
  * then one lets go, then both), with x the new accumulated impulses and c from each row's own regime,
@@ -305,16 +308,17 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean,
     const two = R[r + MR_POINT_COUNT] === 2;
     const o1 = r + MR_POINT0,
       o2 = o1 + MP_STRIDE;
-    const r1ax = R[o1 + MP_RAX]!,
-      r1ay = R[o1 + MP_RAY]!,
-      r1bx = R[o1 + MP_RBX]!,
-      r1by = R[o1 + MP_RBY]!;
-    const r2ax = R[o2 + MP_RAX]!,
-      r2ay = R[o2 + MP_RAY]!,
-      r2bx = R[o2 + MP_RBX]!,
-      r2by = R[o2 + MP_RBY]!;
-    const s1 = R[o1 + MP_SEPARATION]! + (dbx - tb * r1by - dax + ta * r1ay) * nx + (dby + tb * r1bx - day - ta * r1ax) * ny;
-    const s2 = R[o2 + MP_SEPARATION]! + (dbx - tb * r2by - dax + ta * r2ay) * nx + (dby + tb * r2bx - day - ta * r2ax) * ny;
+    const n1a = R[o1 + MP_RNA]!,
+      n1b = R[o1 + MP_RNB]!,
+      t1a = R[o1 + MP_RTA]!,
+      t1b = R[o1 + MP_RTB]!;
+    const n2a = R[o2 + MP_RNA]!,
+      n2b = R[o2 + MP_RNB]!,
+      t2a = R[o2 + MP_RTA]!,
+      t2b = R[o2 + MP_RTB]!;
+    const dn = (dbx - dax) * nx + (dby - day) * ny;
+    const s1 = R[o1 + MP_SEPARATION]! + dn + tb * n1b - ta * n1a;
+    const s2 = R[o2 + MP_SEPARATION]! + dn + tb * n2b - ta * n2a;
     let b1 = 0,
       m1 = 1,
       i1 = 0,
@@ -340,8 +344,9 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean,
     let total = 0;
     let solved = false;
     if (R[r + MR_BLOCK_VALID] === 1) {
-      const vn1 = (vbx - wb * r1by - vax + wa * r1ay) * nx + (vby + wb * r1bx - vay - wa * r1ax) * ny;
-      const vn2 = (vbx - wb * r2by - vax + wa * r2ay) * nx + (vby + wb * r2bx - vay - wa * r2ax) * ny;
+      const dvn = (vbx - vax) * nx + (vby - vay) * ny;
+      const vn1 = dvn + wb * n1b - wa * n1a;
+      const vn2 = dvn + wb * n2b - wa * n2a;
       const K11 = R[r + MR_K11]!,
         K22 = R[r + MR_K22]!,
         K12 = R[r + MR_K12]!;
@@ -376,26 +381,21 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean,
         l1 = n1;
         l2 = n2;
         total = n1 + n2;
-        const P1x = d1 * nx,
-          P1y = d1 * ny,
-          P2x = d2 * nx,
-          P2y = d2 * ny;
-        vax -= mA * (P1x + P2x);
-        vay -= mA * (P1y + P2y);
-        wa -= iA * (r1ax * P1y - r1ay * P1x + r2ax * P2y - r2ay * P2x);
-        vbx += mB * (P1x + P2x);
-        vby += mB * (P1y + P2y);
-        wb += iB * (r1bx * P1y - r1by * P1x + r2bx * P2y - r2by * P2x);
+        const d = d1 + d2;
+        vax -= mA * d * nx;
+        vay -= mA * d * ny;
+        wa -= iA * (d1 * n1a + d2 * n2a);
+        vbx += mB * d * nx;
+        vby += mB * d * ny;
+        wb += iB * (d1 * n1b + d2 * n2b);
       }
     }
     for (let p = 0; p < (two ? 2 : 1) && !solved; p++) {
       const o = o1 + p * MP_STRIDE;
-      const rax = R[o + MP_RAX]!,
-        ray = R[o + MP_RAY]!,
-        rbx = R[o + MP_RBX]!,
-        rby = R[o + MP_RBY]!;
+      const na = p === 0 ? n1a : n2a,
+        nb = p === 0 ? n1b : n2b;
       const old = p === 0 ? l1 : l2;
-      const vn = (vbx - wb * rby - vax + wa * ray) * nx + (vby + wb * rbx - vay - wa * rax) * ny;
+      const vn = (vbx - vax) * nx + (vby - vay) * ny + wb * nb - wa * na;
       let next = old - R[o + MP_NORMAL_MASS]! * (p === 0 ? m1 : m2) * (vn + (p === 0 ? b1 : b2)) - (p === 0 ? i1 : i2) * old;
       if (next < 0) next = 0;
       const dl = next - old;
@@ -407,10 +407,10 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean,
         Py = dl * ny;
       vax -= mA * Px;
       vay -= mA * Py;
-      wa -= iA * (rax * Py - ray * Px);
+      wa -= iA * dl * na;
       vbx += mB * Px;
       vby += mB * Py;
-      wb += iB * (rbx * Py - rby * Px);
+      wb += iB * dl * nb;
     }
     R[o1 + MP_NORMAL_IMPULSE] = l1;
     if (two) R[o2 + MP_NORMAL_IMPULSE] = l2;
@@ -418,9 +418,8 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean,
     let f1 = R[o1 + MP_TANGENT_IMPULSE]!,
       f2 = 0;
     {
-      const dvx = vbx - wb * r1by - vax + wa * r1ay,
-        dvy = vby + wb * r1bx - vay - wa * r1ax;
-      const vt = -dvx * ny + dvy * nx;
+      // v_t = (v_B - v_A) . t + w_B (r_B x t) - w_A (r_A x t), t = (-n_y, n_x).
+      const vt = (vby - vay) * nx - (vbx - vax) * ny + wb * t1b - wa * t1a;
       const maxF = bound * l1;
       let next = f1 - R[o1 + MP_TANGENT_MASS]! * vt;
       next = next < -maxF ? -maxF : next > maxF ? maxF : next;
@@ -430,17 +429,15 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean,
         Py = dl * nx;
       vax -= mA * Px;
       vay -= mA * Py;
-      wa -= iA * (r1ax * Py - r1ay * Px);
+      wa -= iA * dl * t1a;
       vbx += mB * Px;
       vby += mB * Py;
-      wb += iB * (r1bx * Py - r1by * Px);
+      wb += iB * dl * t1b;
     }
     R[o1 + MP_TANGENT_IMPULSE] = f1;
     if (two) {
       f2 = R[o2 + MP_TANGENT_IMPULSE]!;
-      const dvx = vbx - wb * r2by - vax + wa * r2ay,
-        dvy = vby + wb * r2bx - vay - wa * r2ax;
-      const vt = -dvx * ny + dvy * nx;
+      const vt = (vby - vay) * nx - (vbx - vax) * ny + wb * t2b - wa * t2a;
       const maxF = bound * l2;
       let next = f2 - R[o2 + MP_TANGENT_MASS]! * vt;
       next = next < -maxF ? -maxF : next > maxF ? maxF : next;
@@ -451,10 +448,10 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean,
         Py = dl * nx;
       vax -= mA * Px;
       vay -= mA * Py;
-      wa -= iA * (r2ax * Py - r2ay * Px);
+      wa -= iA * dl * t2a;
       vbx += mB * Px;
       vby += mB * Py;
-      wb += iB * (r2bx * Py - r2by * Px);
+      wb += iB * dl * t2b;
     }
     if (R[r + MR_ROLLING]! > 0) {
       const dl = solveRolling(R, r, total, wb - wa);
@@ -534,16 +531,13 @@ export function applyManifoldRestitution(world: PhysicsWorld): void {
       const on1 = v1 <= -threshold && R[o1 + MP_MAX_NORMAL_IMPULSE]! > 0,
         on2 = v2 <= -threshold && R[o2 + MP_MAX_NORMAL_IMPULSE]! > 0;
       if (on1 && on2) {
-        const r1ax = R[o1 + MP_RAX]!,
-          r1ay = R[o1 + MP_RAY]!,
-          r1bx = R[o1 + MP_RBX]!,
-          r1by = R[o1 + MP_RBY]!,
-          r2ax = R[o2 + MP_RAX]!,
-          r2ay = R[o2 + MP_RAY]!,
-          r2bx = R[o2 + MP_RBX]!,
-          r2by = R[o2 + MP_RBY]!;
-        const vn1 = (vbx - wb * r1by - vax + wa * r1ay) * nx + (vby + wb * r1bx - vay - wa * r1ax) * ny;
-        const vn2 = (vbx - wb * r2by - vax + wa * r2ay) * nx + (vby + wb * r2bx - vay - wa * r2ax) * ny;
+        const n1a = R[o1 + MP_RNA]!,
+          n1b = R[o1 + MP_RNB]!,
+          n2a = R[o2 + MP_RNA]!,
+          n2b = R[o2 + MP_RNB]!;
+        const dvn = (vbx - vax) * nx + (vby - vay) * ny;
+        const vn1 = dvn + wb * n1b - wa * n1a;
+        const vn2 = dvn + wb * n2b - wa * n2a;
         const l1 = R[o1 + MP_NORMAL_IMPULSE]!,
           l2 = R[o2 + MP_NORMAL_IMPULSE]!;
         const K11 = R[r + MR_K11]!,
@@ -557,16 +551,13 @@ export function applyManifoldRestitution(world: PhysicsWorld): void {
             d2 = R[o2 + MP_NORMAL_IMPULSE]! - l2;
           R[o1 + MP_TOTAL_NORMAL_IMPULSE] = R[o1 + MP_TOTAL_NORMAL_IMPULSE]! + d1;
           R[o2 + MP_TOTAL_NORMAL_IMPULSE] = R[o2 + MP_TOTAL_NORMAL_IMPULSE]! + d2;
-          const P1x = d1 * nx,
-            P1y = d1 * ny,
-            P2x = d2 * nx,
-            P2y = d2 * ny;
-          vax -= mA * (P1x + P2x);
-          vay -= mA * (P1y + P2y);
-          wa -= iA * (r1ax * P1y - r1ay * P1x + r2ax * P2y - r2ay * P2x);
-          vbx += mB * (P1x + P2x);
-          vby += mB * (P1y + P2y);
-          wb += iB * (r1bx * P1y - r1by * P1x + r2bx * P2y - r2by * P2x);
+          const d = d1 + d2;
+          vax -= mA * d * nx;
+          vay -= mA * d * ny;
+          wa -= iA * (d1 * n1a + d2 * n2a);
+          vbx += mB * d * nx;
+          vby += mB * d * ny;
+          wb += iB * (d1 * n1b + d2 * n2b);
           sb[a + BS2_VX] = vax;
           sb[a + BS2_VY] = vay;
           sb[a + BS2_W] = wa;
@@ -581,11 +572,9 @@ export function applyManifoldRestitution(world: PhysicsWorld): void {
       const o = o1 + p * MP_STRIDE;
       const v0 = R[o + MP_RELATIVE_VELOCITY]!;
       if (v0 > -threshold || R[o + MP_MAX_NORMAL_IMPULSE]! === 0) continue;
-      const rax = R[o + MP_RAX]!,
-        ray = R[o + MP_RAY]!,
-        rbx = R[o + MP_RBX]!,
-        rby = R[o + MP_RBY]!;
-      const vn = (vbx - wb * rby - vax + wa * ray) * nx + (vby + wb * rbx - vay - wa * rax) * ny;
+      const na = R[o + MP_RNA]!,
+        nb = R[o + MP_RNB]!;
+      const vn = (vbx - vax) * nx + (vby - vay) * ny + wb * nb - wa * na;
       const old = R[o + MP_NORMAL_IMPULSE]!;
       let next = old - R[o + MP_NORMAL_MASS]! * (vn + e * v0);
       if (next < 0) next = 0;
@@ -596,10 +585,10 @@ export function applyManifoldRestitution(world: PhysicsWorld): void {
         Py = dl * ny;
       vax -= mA * Px;
       vay -= mA * Py;
-      wa -= iA * (rax * Py - ray * Px);
+      wa -= iA * dl * na;
       vbx += mB * Px;
       vby += mB * Py;
-      wb += iB * (rbx * Py - rby * Px);
+      wb += iB * dl * nb;
     }
     sb[a + BS2_VX] = vax;
     sb[a + BS2_VY] = vay;
