@@ -1363,8 +1363,9 @@ function draw(): void {
       pointer.y = by - 2.4 * k - 16;
     }
     // Kept inside the view (a long label beside a badge at a side edge).
-    // (its pill is 7 px wider each side than the text; 5 px more keep it off the depth gauge).
-    pointer.x = Math.max(pointer.width / 2 + 12, Math.min(W - GAUGE_WIDTH - pointer.width / 2 - 12, pointer.x));
+    // (its pill is 7 px wider each side than the text and the switch's ring 3 px more; 5 px more
+    // keep it off the depth gauge).
+    pointer.x = Math.max(pointer.width / 2 + 15, Math.min(W - GAUGE_WIDTH - pointer.width / 2 - 15, pointer.x));
     // Kept off the hull: a label that would cross the hull's box (its sail and a margin included)
     // moves above or below it, whichever is nearer and inside the view.
     const hr = Math.max(SUBMARINE.length / 2, SUBMARINE.height / 2 + 2) * k + 6,
