@@ -350,13 +350,17 @@ shell.onWorldChange(() => {
 
 // ---- Rings ----------------------------------------------------------------------------------------
 
-// Thick tubes (6 m) in flat bright colours, so a ring still reads as a ring 2 km off on a phone.
+// The next ring: a thick tube (6 m) in flat bright yellow, so it still reads as a ring 2 km off on a
+// phone. The rings after it: a thin (2.5 m) pale tube, faint, so the chain of them toward the
+// horizon does not read as rings to fly through now (a stranger took the orange chain for the way
+// to go while the next ring was off to the side).
 const ringGeometry = new TorusGeometry(RING_RADIUS, 6, 10, 48);
+const laterGeometry = new TorusGeometry(RING_RADIUS, 2.5, 6, 48);
 const haloGeometry = new TorusGeometry(RING_RADIUS + 12, 2.5, 6, 48);
 const materials = {
   next: new MeshBasicMaterial({ color: 0xffd21f, fog: false }),
   halo: new MeshBasicMaterial({ color: 0xfff6b0, transparent: true, opacity: 0.6, side: DoubleSide, fog: false }),
-  ahead: new MeshBasicMaterial({ color: 0xff8a1f, transparent: true, opacity: 0.8 }),
+  ahead: new MeshBasicMaterial({ color: 0xe4eef8, transparent: true, opacity: 0.45 }),
   passed: new MeshBasicMaterial({ color: 0x50e070, transparent: true, opacity: 0.35 }),
   missed: new MeshBasicMaterial({ color: 0xff5a4a, transparent: true, opacity: 0.3 }),
 };
@@ -421,6 +425,7 @@ function paintRings(t: number): void {
   const i = nextRing(rings);
   rings.forEach((ring, k) => {
     ringMeshes[k]!.material = k === i ? materials.next : materials[ring.status];
+    ringMeshes[k]!.geometry = k === i ? ringGeometry : laterGeometry;
   });
   halo.visible = i >= 0 && state.phase !== 'crashed';
   if (i >= 0) {

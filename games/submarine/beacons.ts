@@ -80,13 +80,25 @@ export function seabedBetween(x0: number, y0: number, x1: number, y1: number, be
  * hull's, m (y up); `angle`: the hull's pitch, rad; `ridge`: the seabed rises across the straight way
  * to it (`seabedBetween`), which adds `RIDGE_WARNING` on a second line; `mine`: a live mine lies on
  * that way (./mines.ts `mineOnWay`) and on which side to pass it, which adds `MINE_WARNING` there
- * instead when there is no ridge.
+ * instead when there is no ridge; `name`: the beacon's name (`beaconName`), put first as
+ * "beacon C: 85 m ahead", so a change of beacon is seen.
  */
-export function beaconLabel(dx: number, dy: number, angle = 0, ridge = false, mine: '' | 'over' | 'under' = ''): string {
+export function beaconLabel(dx: number, dy: number, angle = 0, ridge = false, mine: '' | 'over' | 'under' = '', name = ''): string {
   const along = dx * Math.cos(angle) + dy * Math.sin(angle);
   const parts: string[] = [];
   if (Math.abs(along) >= 3) parts.push(`${Math.abs(along).toFixed(0)} m ${along > 0 ? 'ahead' : 'behind'}`);
   if (Math.abs(dy) >= 3) parts.push(`${Math.abs(dy).toFixed(0)} m ${dy < 0 ? 'down' : 'up'}`);
   const warning = ridge ? RIDGE_WARNING : mine ? MINE_WARNING[mine] : '';
-  return `beacon ${parts.length > 0 ? parts.join(', ') : 'here'}${warning ? `\n${warning}` : ''}`;
+  return `beacon ${name ? `${name}: ` : ''}${parts.length > 0 ? parts.join(', ') : 'here'}${warning ? `\n${warning}` : ''}`;
+}
+
+/**
+ * The name of beacon `index` (0-based, an integer >= 0) on the page: a letter A to Z, then A2, B2...
+ * (letters, so that it is not read as the count of "Beacon 2 of 6").
+ * @throws RangeError on an index that is not an integer >= 0.
+ */
+export function beaconName(index: number): string {
+  if (!(Number.isInteger(index) && index >= 0)) throw new RangeError(`beaconName: index must be an integer >= 0, got ${index}`);
+  const letter = String.fromCharCode(65 + (index % 26));
+  return index < 26 ? letter : `${letter}${Math.floor(index / 26) + 1}`;
 }

@@ -23,9 +23,10 @@
  *   screw ahead the boat follows its nose. Released, the hull levels out and the depth is held.
  * - The on-screen stick asks for part of the dive or climb speed and of the throttle, as far as it
  *   is pushed (`HelmInput.heave`, `HelmInput.drive`), so a small push makes a small correction.
- * - Ahead / astern (held): the throttle moves at `HELM.throttleRate`. Released, it winds back to
- *   stop at `HELM.throttleRelease`, so the screw turns while the player holds the key, as a player
- *   expects (a telegraph that stayed at full ahead read as a stuck key).
+ * - Ahead / astern (held): the throttle moves at `HELM.throttleRate`. Released, the screw backs
+ *   against the boat's speed (`HELM.stopGain`) until it is at rest, so the screw turns while the
+ *   player holds the key and the boat stops when let go, as a player expects (a telegraph that
+ *   stayed at full ahead read as a stuck key; a boat that glided on at 13 m/s overshot every beacon).
  */
 
 import type { PhysicsWorld } from '@bitphysics/physics';
@@ -103,7 +104,7 @@ export const HELM = Object.freeze({
   /**
    * Vertical speed asked for while Dive is held, m/s (the boat runs at up to 12.9 m/s ahead): a first
    * beacon 15 to 28 m down is reached in 2.5 to 3.5 s of Dive (the thrusters' 600 kN and the flooded
-   * tanks' 91 kN take the 110 t boat to it in 1.6 s; drag k v^2 at 10 m/s is 120 kN).
+   * tanks' 91 kN take the 110 t boat to it in 1.6 s; drag k v^2 at 10 m/s is 240 kN).
    */
   diveSpeed: 10,
   /** Vertical speed asked for while Rise is held, m/s (less than diving: the boat must slow before the surface). */
@@ -159,6 +160,11 @@ export const HELM = Object.freeze({
   throttleRate: 2.5,
   /** Throttle change per second towards stop while neither is held. */
   throttleRelease: 1,
+  /**
+   * Throttle asked per m/s of speed along the hull while neither Ahead nor Astern is held, s/m
+   * (up to half astern): the screw brakes the boat to rest, as the depth order stops it on a line.
+   */
+  stopGain: 0.2,
 });
 
 const clamp = (v: number, lo: number, hi: number): number => (v < lo ? lo : v > hi ? hi : v);
@@ -202,7 +208,10 @@ export function steer(world: PhysicsWorld, handles: SubmarineHandles, input: Hel
     driveAsked = clamp(input.drive ?? 1, 0, 1);
   // The throttle runs at throttleRate toward the one asked for (drive ahead, -drive / 2 astern) and
   // winds back at throttleRelease toward it when it is past it (a stick eased back) or to stop.
-  const asked = input.ahead === input.astern ? 0 : input.ahead ? driveAsked : -0.5 * driveAsked;
+  // Neither held: the screw backs (or drives) against the speed along the hull, HELM.stopGain per
+  // m/s up to half astern, so the boat let go comes to rest instead of gliding on.
+  const along = c.Velocity.x[e]! * Math.cos(c.Angle.value[e]!) + c.Velocity.y[e]! * Math.sin(c.Angle.value[e]!);
+  const asked = input.ahead === input.astern ? clamp(-HELM.stopGain * along, -0.5, 0.5) : input.ahead ? driveAsked : -0.5 * driveAsked;
   const pushing = (asked > 0 && state.throttle < asked) || (asked < 0 && state.throttle > asked);
   const rate = (pushing ? HELM.throttleRate : HELM.throttleRelease) * dt;
   state.throttle = state.throttle < asked ? Math.min(asked, state.throttle + rate) : Math.max(asked, state.throttle - rate);

@@ -34,7 +34,7 @@ import { startPixiGame } from '@bitphysics/game-kit/pixi';
 import { applyImpulse, createPhysicsWorld, type PhysicsWorld, step } from '@bitphysics/physics';
 import { SUBMARINE, SUBMARINE_NEUTRAL_FILL, type SubmarineHandles, seabedHeight, submarine } from '@bitphysics/projects';
 import { Graphics, Text } from 'pixi.js';
-import { beaconLabel, chooseBeacon, seabedBetween } from './beacons';
+import { beaconLabel, beaconName, chooseBeacon, seabedBetween } from './beacons';
 import { drawBoat } from './boat-drawing';
 import { createHelmState, type HelmInput, steer } from './helm';
 import {
@@ -123,6 +123,10 @@ const BLAST_LIFE = 1.6;
  * offset from the hull (dx, dy, m, y up), the arrow's screen angle (rad, y down; NaN while the
  * beacon is on screen and no arrow is drawn), whether the beacon is on screen, and where the label is drawn.
  */
+/** Game time the pointer last left an uncollected beacon for another, s (its label pulses for AIM_PULSE s). */
+let aimSwitchedAt = Number.NEGATIVE_INFINITY;
+/** How long the pointer's label pulses after it switches beacon, s of game time. */
+const AIM_PULSE = 1.2;
 const aim = {
   index: -1,
   distance: 0,
@@ -222,6 +226,7 @@ function createWorld(): PhysicsWorld {
   courseDepth = 10 * Math.ceil((10 - Math.min(...handles.seabed.y)) / 10);
   blasts.length = 0;
   aim.index = -1;
+  aimSwitchedAt = Number.NEGATIVE_INFINITY;
   zoom = Number.NaN;
   Object.assign(camera, { leadX: 0, leadY: 0, time: 0, shake: 0 });
   hitMarks.length = 0;
@@ -939,8 +944,11 @@ function drawGlows(t: number, k: number, sx: (x: number) => number, sy: (y: numb
 /** The points labels over glows just caught (a pool, hidden when unused). */
 const popLabels: Text[] = [];
 
-/** Width of the depth gauge at the scene's right edge, px (the beacon label keeps clear of it). */
-const GAUGE_WIDTH = 30;
+/**
+ * Width of the depth gauge at the scene's right edge, px, its backing and the boat's depth pointer
+ * included (the beacon label and tags keep clear of it: on a phone they ran under it).
+ */
+const GAUGE_WIDTH = 36;
 /**
  * Draws the depth gauge at the right edge of a `W` x `H` px scene: a scale from the surface (top) to
  * the course's deepest seabed (`courseDepth`, bottom) with a tick every 10 m, the seabed under the
@@ -949,7 +957,7 @@ const GAUGE_WIDTH = 30;
  * to get there), so the player sees the order move at once and the boat answer it.
  */
 function drawDepthGauge(W: number, H: number, depth: number, order: number, bed: number, beacon: number): void {
-  const x0 = W - GAUGE_WIDTH + 10,
+  const x0 = W - GAUGE_WIDTH + 16,
     w = 10,
     top = 14,
     bottom = H - 14;
@@ -1054,7 +1062,10 @@ function draw(): void {
     H = app.screen.height;
   const hxw = c.Position.x[e]!,
     hyw = c.Position.y[e]!;
+  const before = aim.index;
   aim.index = chooseBeacon(handles.beacons, taken, hxw, hyw, aim.index);
+  // The pointer left a beacon not yet collected for a nearer one: its label pulses (drawBeacons).
+  if (before >= 0 && aim.index !== before && !taken[before]) aimSwitchedAt = world.time;
   // The camera frames the hull and the beacon the pointer leads to: it centres between them and
   // zooms out (down to FRAME_MIN_ZOOM px/m) until both fit inside FRAME_MARGIN px of the edges, so
   // the player sees where to go instead of steering by an arrow to a point off screen.
@@ -1241,7 +1252,9 @@ function draw(): void {
       app.stage.addChild(tag);
     }
     tag.visible = true;
-    tag.position.set(bx, by + Math.max(11, 3 * k));
+    tag.text = `beacon ${beaconName(i)}`;
+    // Under its beacon, kept clear of the depth gauge (a tag under it was cut to "beac").
+    tag.position.set(Math.max(tag.width / 2 + 4, Math.min(W - GAUGE_WIDTH - tag.width / 2 - 4, bx)), by + Math.max(11, 3 * k));
     tagged++;
   }
   for (let i = tagged; i < tags.length; i++) tags[i]!.visible = false;
@@ -1296,7 +1309,7 @@ function draw(): void {
     wayMine = onWay ? onWay.index : -1;
     // A mine on the way is ringed where it is, and a mine on the boat's course is told by the hull
     // (drawMineWarning), where the player looks: the pointer at the screen's edge tells only the ridge.
-    pointer.text = beaconLabel(wx - hxw, wy - hyw, c.Angle.value[e]!, ridge);
+    pointer.text = beaconLabel(wx - hxw, wy - hyw, c.Angle.value[e]!, ridge, '', beaconName(aim.index));
     aim.dx = wx - hxw;
     aim.dy = wy - hyw;
     // The right margin leaves the depth gauge clear too (on a phone the badge sat over it).
@@ -1350,7 +1363,9 @@ function draw(): void {
       pointer.y = by - 2.4 * k - 16;
     }
     // Kept inside the view (a long label beside a badge at a side edge).
-    pointer.x = Math.max(pointer.width / 2 + 8, Math.min(W - GAUGE_WIDTH - pointer.width / 2 - 8, pointer.x));
+    // (its pill is 7 px wider each side than the text and the switch's ring 3 px more; 5 px more
+    // keep it off the depth gauge).
+    pointer.x = Math.max(pointer.width / 2 + 15, Math.min(W - GAUGE_WIDTH - pointer.width / 2 - 15, pointer.x));
     // Kept off the hull: a label that would cross the hull's box (its sail and a margin included)
     // moves above or below it, whichever is nearer and inside the view.
     const hr = Math.max(SUBMARINE.length / 2, SUBMARINE.height / 2 + 2) * k + 6,
@@ -1378,6 +1393,15 @@ function draw(): void {
     const pw = pointer.width + 14,
       ph = pointer.height + 4;
     g.roundRect(pointer.x - pw / 2, pointer.y - ph / 2, pw, ph, ph / 2).fill({ color: 0x06213a, alpha: 0.85 });
+    // Just switched to another beacon: the pill blinks a yellow ring for AIM_PULSE s, so the new
+    // name and distance are noticed (a stranger saw "52 m ahead" become "157 m ahead" unexplained).
+    const since = t - aimSwitchedAt;
+    if (since >= 0 && since < AIM_PULSE)
+      g.roundRect(pointer.x - pw / 2 - 3, pointer.y - ph / 2 - 3, pw + 6, ph + 6, ph / 2 + 3).stroke({
+        color: 0xffe066,
+        width: 3,
+        alpha: (1 - since / AIM_PULSE) * (0.6 + 0.4 * Math.cos(4 * Math.PI * since)),
+      });
   }
   // The boat (./boat-drawing.ts), turned by the hull's angle; the screw's blades turn with the throttle.
   const a = c.Angle.value[e]!,

@@ -172,7 +172,7 @@ describe('phone controls', () => {
       (window.game as unknown as { beaconPointer(): { visible: boolean; text: string } }).beaconPointer(),
     );
     expect(aim.visible).toBe(true);
-    expect(aim.text).toMatch(/^beacon (\d+ m (ahead|behind)(, \d+ m (down|up))?|\d+ m (down|up)|here)$/);
+    expect(aim.text).toMatch(/^beacon ([A-Z]: )?(\d+ m (ahead|behind)(, \d+ m (down|up))?|\d+ m (down|up)|here)$/);
     // The label is kept off the hull (it was drawn across it on a phone): with the boat put 10 m
     // above its beacon, the label over the beacon would cross the hull.
     const clear = await g.page.evaluate(async () => {

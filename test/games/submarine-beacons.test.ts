@@ -7,7 +7,15 @@
 import { createPhysicsWorld } from '@bitphysics/physics';
 import { seabedHeight, submarine } from '@bitphysics/projects';
 import { describe, expect, it } from 'vitest';
-import { BEACON_SWITCH, beaconLabel, chooseBeacon, MINE_WARNING, RIDGE_WARNING, seabedBetween } from '../../games/submarine/beacons';
+import {
+  BEACON_SWITCH,
+  beaconLabel,
+  beaconName,
+  chooseBeacon,
+  MINE_WARNING,
+  RIDGE_WARNING,
+  seabedBetween,
+} from '../../games/submarine/beacons';
 
 describe('submarine beacon pointer', () => {
   it('does not flip between two beacons at about the same distance (the nearest-each-frame rule did)', () => {
@@ -75,6 +83,11 @@ describe('submarine beacon pointer', () => {
     // A mine on the way adds which side to pass it; a ridge, the more urgent, takes the line instead.
     expect(beaconLabel(20, -2, 0, false, 'over')).toBe(`beacon 20 m ahead\n${MINE_WARNING.over}`);
     expect(beaconLabel(20, -2, 0, true, 'under')).toBe(`beacon 20 m ahead\n${RIDGE_WARNING}`);
+    // Named, so that a switch to another beacon is seen ("52 m ahead" then "157 m ahead" was not).
+    expect(beaconLabel(52, 9, 0, false, '', beaconName(2))).toBe('beacon C: 52 m ahead, 9 m up');
+    expect([0, 1, 25, 26, 27].map(beaconName)).toEqual(['A', 'B', 'Z', 'A2', 'B2']);
+    expect(() => beaconName(-1)).toThrow(/beaconName: index must be an integer >= 0, got -1/);
+    expect(() => beaconName(1.5)).toThrow(/beaconName: index/);
   });
 
   it('warns of a ridge when the straight way to the beacon runs under the seabed', () => {

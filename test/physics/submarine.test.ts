@@ -134,7 +134,7 @@ describe('ballast and buoyancy (Archimedes)', () => {
     const { world, hull } = submerged(SUBMARINE_NEUTRAL_FILL);
     setBodyThrust(world, hull, [SUBMARINE.maxThrust, 0]);
     run(world, 40);
-    // F = 200 kN, k = 1200 kg/m: v_t = 12.9 m/s; m dv/dt = F - k v^2 with m constant (neutral tanks).
+    // F = 400 kN, k = 2400 kg/m: v_t = 12.9 m/s; m dv/dt = F - k v^2 with m constant (neutral tanks).
     const m = world.components.Mass.value[hull]!;
     const vt = Math.sqrt(SUBMARINE.maxThrust / SUBMARINE.dragCoefficient),
       a0 = SUBMARINE.maxThrust / m;

@@ -52,19 +52,23 @@ export const SUBMARINE = Object.freeze({
   tankArm: 4,
   /** Height of the centre of buoyancy above the centre of mass, m. */
   metacentricHeight: 1.5,
-  /** Quadratic drag coefficient of the fully submerged hull, kg/m: F = k v^2. */
-  dragCoefficient: 1200,
+  /**
+   * Quadratic drag coefficient of the fully submerged hull, kg/m: F = k v^2 (k = 1/2 rho C_d A with
+   * A = 9 m^2 across the hull and C_d = 0.52, a blunt hull with its fin and planes). The water slows
+   * the boat quickly when the screw stops: from 12.9 m/s to half that in m / (k v) = 3.6 s.
+   */
+  dragCoefficient: 2400,
   /**
    * Largest screw thrust, N: against the drag k v^2 of the submerged hull it drives the boat at up to
-   * sqrt(F / k) = 12.9 m/s (25 knots), about 2.6 MW of thrust power.
+   * sqrt(F / k) = 12.9 m/s (25 knots), about 5.2 MW of thrust power.
    */
-  maxThrust: 200_000,
+  maxThrust: 400_000,
   /** Rotational damping of the hull in water, N m s. */
   angularDamping: 1.5e6,
   /**
    * Largest push of each of the two vertical thrusters, N (up or down, across the hull). A ducted
    * thruster of diameter D (m) and power P (kW) gives T (kN) = (D P)^(2/3) at zero speed (Wartsila,
-   * Encyclopedia of Ship Technology, "bollard pull"): 300 kN is a 2 m thruster of 2.6 MW (the
+   * Encyclopedia of Ship Technology, "bollard pull"): 300 kN is a 2 m thruster of 2.6 MW (half the
    * screw's power), enough to take the 110 t boat from a hover to 5 m/s in about a second. Nordenfelt
    * dived his boats of 1885-7 with such vertical "sinking screws" (BR 3043, The Development of HM
    * Submarines, ch. 18); small submersibles hover and change depth with them today.
