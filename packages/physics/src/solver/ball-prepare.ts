@@ -6,7 +6,6 @@
  */
 
 import { type ContactBuffer, ContactKind, findWarmStart } from '../collision/contacts.js';
-import { BodyType } from '../collision/state.js';
 import type { KernelArray } from '../threads/kernel-types.js';
 import { runOnPool } from '../threads/parallel.js';
 import { isShared, sharedLike } from '../threads/pool.js';
@@ -15,7 +14,7 @@ import { BS3_INV_INERTIA, BS3_INV_MASS, BS3_STRIDE, BS3_VX, BS3_VY, BS3_VZ, BS3_
 import { shareContactBuffer } from './coloring.js';
 import { prepareContacts2D } from './prepare-contacts-kernel.js';
 import * as PREPARE from './slots/prepare-contacts.js';
-import { approach2DStage } from './stages-threads.js';
+import { approachStage } from './stages-threads.js';
 
 /**
  * Fewest contact rows a thread for a threaded 2D world to prepare its rows on its threads.
@@ -301,49 +300,5 @@ export function prepareContacts(world: PhysicsWorld, buf: ContactBuffer, stick: 
  * recorded at its time of impact (restitution leaves separating rows alone).
  */
 export function measureApproach(world: PhysicsWorld, buf: ContactBuffer): void {
-  // 2D: a range kernel, run on the threads or inline (solver/stages-threads.ts).
-  if (world.dimensions === 2) {
-    approach2DStage(world, buf);
-    return;
-  }
-  const cs = world.collision;
-  const sb = cs.bodyState,
-    type = cs.bodyType;
-  const g = world.gravity;
-  const gx = g[0]!,
-    gy = g[1]!,
-    gz = g[2]!;
-  const A = buf.a,
-    B = buf.b,
-    IA = buf.ia,
-    IB = buf.ib,
-    NX = buf.nx,
-    NY = buf.ny,
-    NZ = buf.nz;
-  const RV = buf.relativeVelocity,
-    IV = buf.impactVelocity,
-    S0 = buf.separation,
-    IMP = buf.impulse;
-  for (let i = 0, n = buf.count; i < n; i++) {
-    const oa = IA[i]! * BS3_STRIDE,
-      ob = IB[i]! * BS3_STRIDE;
-    const nx = NX[i]!,
-      ny = NY[i]!,
-      nz = NZ[i]!;
-    const rv =
-      (sb[ob + BS3_VX]! - sb[oa + BS3_VX]!) * nx + (sb[ob + BS3_VY]! - sb[oa + BS3_VY]!) * ny + (sb[ob + BS3_VZ]! - sb[oa + BS3_VZ]!) * nz;
-    RV[i] = rv;
-    // A row the impact stage bounced and that now separates keeps the approach speed of its impact.
-    if (IMP[i]! > 0 && rv >= 0) continue;
-    const gap = S0[i]!;
-    if (!(rv < 0 && gap > 0)) {
-      IV[i] = rv;
-      continue;
-    } // no gap to fall across: -sqrt(rv^2) = rv
-    const a = A[i]!,
-      b = B[i]!;
-    const an = ((type[b] === BodyType.Dynamic ? 1 : 0) - (a !== 0 && type[a] === BodyType.Dynamic ? 1 : 0)) * (gx * nx + gy * ny + gz * nz);
-    const v2 = rv * rv - 2 * an * gap;
-    IV[i] = v2 > 0 ? -Math.sqrt(v2) : rv;
-  }
+  approachStage(world, buf);
 }

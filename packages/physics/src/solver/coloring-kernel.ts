@@ -37,7 +37,7 @@ import {
 import * as APPROACH from './slots/approach.js';
 import * as PLAN from './slots/colored-plan.js';
 import * as SOLVE from './slots/colored-solve.js';
-import type { approach2D } from './stages-kernel.js';
+import type { approachSpeeds } from './stages-kernel.js';
 
 /**
  * Thread kernel (step/kernel-table.ts rules: self-contained) of the coloured substeps, run by every
@@ -61,7 +61,7 @@ import type { approach2D } from './stages-kernel.js';
  * blocks in Atomics.wait (a browser's main thread, which may not block, spins on).
  * A and P: the SOLVE slots (solver/slots/colored-solve.ts), the plan at A[SOLVE.PLAN] its PLAN slots
  * (solver/slots/colored-plan.ts), and
- * approach2D's arrays from A[SOLVE.APPROACH] (measureApproach of the buffer's rows, run as the unit after
+ * approachSpeeds's arrays from A[SOLVE.APPROACH] (measureApproach of the buffer's rows, run as the unit after
  * the packing when P[SOLVE.MEASURE_APPROACH] = 1); the parts running are 0 .. plan[PLAN.THREADS] - 1.
  * The arithmetic of each row and body is
  * that of solver/contact-solver.ts's buffer-order loops (solve2D, warmStart2D, the body stages), with
@@ -112,18 +112,19 @@ export function solveColored2D(
     unpackRows = H[1] as typeof coloredUnpack2D;
   const bodyStage = H[2] as typeof coloredBodies2D,
     rowPass = H[3] as typeof coloredRows2D;
-  const approachRows = H[12] as typeof approach2D;
+  const approachRows = H[12] as typeof approachSpeeds;
   // The approach speeds' blocks (when P[SOLVE.MEASURE_APPROACH] = 1), of APPROACH_ROWS buffer rows (as solveColoredBlocks2D),
-  // with approach2D's parameters: gravity, BodyType.Dynamic and where its arrays start in A (31).
+  // with approachSpeeds's parameters: gravity, BodyType.Dynamic and where its arrays start in A (31).
   const APPROACH_ROWS = 2048,
     rows = P[SOLVE.ROWS]!,
     approachBlocks = P[SOLVE.MEASURE_APPROACH] === 1 ? Math.ceil(rows / APPROACH_ROWS) : 0;
-  const approachParams = new Float64Array(5);
+  const approachParams = new Float64Array(APPROACH.PARAMS);
   approachParams[APPROACH.GX] = P[SOLVE.GX]!;
   approachParams[APPROACH.GY] = P[SOLVE.GY]!;
   approachParams[APPROACH.GZ] = P[SOLVE.GZ]!;
   approachParams[APPROACH.DYNAMIC] = P[SOLVE.DYNAMIC]!;
   approachParams[APPROACH.BASE] = SOLVE.APPROACH;
+  approachParams[APPROACH.THREE_D] = 0;
   // Rows a block of the unpacking, bodies a block of a body stage.
   const RB_ = 256,
     BB = 1024;

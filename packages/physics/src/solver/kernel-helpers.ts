@@ -6,7 +6,14 @@
 import { claimBlock } from '../threads/block-claim.js';
 import type { KernelHelper } from '../threads/kernel-types.js';
 import { coloredBodies2D, coloredPack2D, coloredRows2D, coloredUnpack2D } from './coloring-kernel.js';
-import { approach2D, containBodies2D, deepestRow2D, finishBodyRows2D, restitutionRows2D, restitutionTargets2D } from './stages-kernel.js';
+import {
+  approachSpeeds,
+  containBodies2D,
+  deepestRow2D,
+  finishBodyRows2D,
+  restitutionRows2D,
+  restitutionTargets2D,
+} from './stages-kernel.js';
 import { stripLayout2D } from './strip-plan-kernel.js';
 import { stripCut2D } from './strips-kernel.js';
 
@@ -17,7 +24,7 @@ import { stripCut2D } from './strips-kernel.js';
  * (solver/stages-kernel.ts: bodies, boundary, deepest row); 7 and 8 restitutionColored2D's (targets,
  * a pass's block); 9 claimBlock (block-claim.ts: the next block a thread takes of a unit, for both of
  * those kernels); 10 stripCut2D and 11 stripLayout2D (solver/strips-kernel.ts and
- * solver/strip-plan-kernel.ts: the strip cut and the pack layout, for stripPlan2D); 12 approach2D
+ * solver/strip-plan-kernel.ts: the strip cut and the pack layout, for stripPlan2D); 12 approachSpeeds
  * (solver/stages-kernel.ts, for solveColored2D). A kernel's hot loops live here when the kernel runs
  * once a step: V8 then compiles the loops as whole functions with full type feedback.
  * @category Threads
@@ -35,5 +42,5 @@ export const KERNEL_HELPERS: readonly KernelHelper[] = /* @__PURE__ */ Object.fr
   claimBlock,
   stripCut2D,
   stripLayout2D,
-  approach2D,
+  approachSpeeds,
 ]);

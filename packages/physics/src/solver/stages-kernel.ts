@@ -23,6 +23,8 @@ import {
   BS2_VX,
   BS2_VY,
   BS2_W,
+  BS3_STRIDE,
+  BS3_VZ,
   BX_BASE_X,
   BX_BASE_Y,
   BX_BASE_Z,
@@ -97,13 +99,15 @@ export function gatherFill2D(A: KernelArray[], P: Float64Array, ids: Int32Array 
 }
 
 /**
- * measureApproach (solver/contact-solver.ts) of 2D contact rows lo .. hi - 1: the normal relative velocity after the
- * impact stage and the speed at impact across a closing gap. A and P: the APPROACH slots
+ * measureApproach (solver/ball-prepare.ts) of contact rows lo .. hi - 1, 2D or 3D (P[APPROACH.THREE_D]): the normal
+ * relative velocity after the impact stage, and the speed at impact across a closing gap,
+ * v^2 = v0^2 - 2 a_n s with the relative normal acceleration a_n of gravity (a row the impact stage
+ * bounced that now separates keeps the speed that stage recorded). A and P: the APPROACH slots
  * (solver/slots/approach.ts), the arrays from A[P[APPROACH.BASE]] on (0 when they are A's only arrays; the
  * coloured solve, solver/coloring-kernel.ts, passes them after its own). Returns 0.
  * @category Collision
  */
-export function approach2D(A: KernelArray[], P: Float64Array, _ids: Int32Array | null, lo: number, hi: number): number {
+export function approachSpeeds(A: KernelArray[], P: Float64Array, _ids: Int32Array | null, lo: number, hi: number): number {
   const b0 = P[APPROACH.BASE]!;
   const IA = A[b0 + APPROACH.IA] as Int32Array,
     IB = A[b0 + APPROACH.IB] as Int32Array,
@@ -122,13 +126,17 @@ export function approach2D(A: KernelArray[], P: Float64Array, _ids: Int32Array |
     gy = P[APPROACH.GY]!,
     gz = P[APPROACH.GZ]!,
     DYNAMIC = P[APPROACH.DYNAMIC]!;
+  // vx and vy sit at the same offsets in both layouts.
+  const is3D = P[APPROACH.THREE_D] === 1,
+    S = is3D ? BS3_STRIDE : BS2_STRIDE;
   for (let i = lo; i < hi; i++) {
-    const oa = IA[i]! * BS2_STRIDE,
-      ob = IB[i]! * BS2_STRIDE;
+    const oa = IA[i]! * S,
+      ob = IB[i]! * S;
     const nx = NX[i]!,
       ny = NY[i]!,
       nz = NZ[i]!;
-    const rv = (sb[ob + BS2_VX]! - sb[oa + BS2_VX]!) * nx + (sb[ob + BS2_VY]! - sb[oa + BS2_VY]!) * ny;
+    let rv = (sb[ob + BS2_VX]! - sb[oa + BS2_VX]!) * nx + (sb[ob + BS2_VY]! - sb[oa + BS2_VY]!) * ny;
+    if (is3D) rv += (sb[ob + BS3_VZ]! - sb[oa + BS3_VZ]!) * nz;
     RV[i] = rv;
     if (IMP[i]! > 0 && rv >= 0) continue;
     const gap = S0[i]!;

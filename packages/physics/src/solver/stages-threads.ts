@@ -5,7 +5,7 @@
  *
  * - `gatherFill2DStage`: the solver rows of the step's bodies (gatherBodies' fill,
  *   solver/contact-solver.ts), a range of bodies a thread;
- * - `approach2DStage`: measureApproach, a range of rows a thread;
+ * - `approachStage`: measureApproach (2D and 3D), a range of rows a thread;
  * - `finish2DStage`: finishBodies (velocities, positions and angles back to the components; the
  *   deepest overlap left) and containInBoundary, a range of bodies and of rows a thread;
  * - `restitutionOnThreads`: the restitution stage after a coloured solve, its passes colour by colour;
@@ -43,7 +43,7 @@ import * as PLAN from './slots/colored-plan.js';
 import * as FINISH from './slots/finish-bodies.js';
 import * as GATHER from './slots/gather-fill.js';
 import * as RESTITUTION from './slots/restitution.js';
-import { approach2D, finishBodies2D, gatherFill2D, restitutionBlocks2D, restitutionColored2D } from './stages-kernel.js';
+import { approachSpeeds, finishBodies2D, gatherFill2D, restitutionBlocks2D, restitutionColored2D } from './stages-kernel.js';
 import { warmStartTable } from './warm-start-kernel.js';
 
 /**
@@ -159,12 +159,12 @@ export function gatherFill2DStage(world: PhysicsWorld, count: number, pushed: nu
 }
 
 /**
- * measureApproach of a 2D world's contact rows (solver/contact-solver.ts; kernel approach2D), on the
- * world's threads when it pays, else on the calling thread.
+ * measureApproach of the world's contact rows (solver/ball-prepare.ts; kernel approachSpeeds, 2D or 3D),
+ * on the world's threads when it pays (2D), else on the calling thread.
  * @throws Error naming contactSolverSystem if a worker thread failed.
  * @category Collision
  */
-export function approach2DStage(world: PhysicsWorld, buf: ContactBuffer): void {
+export function approachStage(world: PhysicsWorld, buf: ContactBuffer): void {
   const n = buf.count;
   const pool = poolFor(world, n);
   const cs = world.collision;
@@ -183,7 +183,8 @@ export function approach2DStage(world: PhysicsWorld, buf: ContactBuffer): void {
   P[APPROACH.GZ] = g[2]!;
   P[APPROACH.DYNAMIC] = BodyType.Dynamic;
   P[APPROACH.BASE] = 0;
-  runStage(pool, approach2D, A, P, n, null);
+  P[APPROACH.THREE_D] = world.dimensions === 3 ? 1 : 0;
+  runStage(pool, approachSpeeds, A, P, n, null);
 }
 
 /**
