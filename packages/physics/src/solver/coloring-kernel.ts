@@ -114,7 +114,7 @@ export function solveColored2D(
     rowPass = H[3] as typeof coloredRows2D;
   const approachRows = H[12] as typeof approachSpeeds;
   // The approach speeds' blocks (when P[SOLVE.MEASURE_APPROACH] = 1), of APPROACH_ROWS buffer rows (as solveColoredBlocks2D),
-  // with approachSpeeds's parameters: gravity, BodyType.Dynamic and where its arrays start in A (31).
+  // with approachSpeeds's parameters: gravity, BodyType.Dynamic, where its arrays start in A (31), 2D (THREE_D 0).
   const APPROACH_ROWS = 2048,
     rows = P[SOLVE.ROWS]!,
     approachBlocks = P[SOLVE.MEASURE_APPROACH] === 1 ? Math.ceil(rows / APPROACH_ROWS) : 0;
@@ -124,7 +124,6 @@ export function solveColored2D(
   approachParams[APPROACH.GZ] = P[SOLVE.GZ]!;
   approachParams[APPROACH.DYNAMIC] = P[SOLVE.DYNAMIC]!;
   approachParams[APPROACH.BASE] = SOLVE.APPROACH;
-  approachParams[APPROACH.THREE_D] = 0;
   // Rows a block of the unpacking, bodies a block of a body stage.
   const RB_ = 256,
     BB = 1024;

@@ -6,6 +6,7 @@
 import { claimBlock } from '../threads/block-claim.js';
 import type { KernelHelper } from '../threads/kernel-types.js';
 import { coloredBodies2D, coloredPack2D, coloredRows2D, coloredUnpack2D } from './coloring-kernel.js';
+import { prepareRowMasses, prepareRowWarmStart } from './prepare-contacts-kernel.js';
 import {
   approachSpeeds,
   containBodies2D,
@@ -25,7 +26,8 @@ import { stripCut2D } from './strips-kernel.js';
  * a pass's block); 9 claimBlock (block-claim.ts: the next block a thread takes of a unit, for both of
  * those kernels); 10 stripCut2D and 11 stripLayout2D (solver/strips-kernel.ts and
  * solver/strip-plan-kernel.ts: the strip cut and the pack layout, for stripPlan2D); 12 approachSpeeds
- * (solver/stages-kernel.ts, for solveColored2D). A kernel's hot loops live here when the kernel runs
+ * (solver/stages-kernel.ts, for solveColored2D); 13 and 14 prepareContactRows' passes
+ * (solver/prepare-contacts-kernel.ts: masses and material, warm start). A kernel's hot loops live here when the kernel runs
  * once a step: V8 then compiles the loops as whole functions with full type feedback.
  * @category Threads
  */
@@ -43,4 +45,6 @@ export const KERNEL_HELPERS: readonly KernelHelper[] = /* @__PURE__ */ Object.fr
   stripCut2D,
   stripLayout2D,
   approachSpeeds,
+  prepareRowMasses,
+  prepareRowWarmStart,
 ]);
