@@ -20,7 +20,6 @@ import {
   BS3_DY,
   BS3_DZ,
   BS3_INV_INERTIA,
-  BS3_INV_MASS,
   BS3_PUSHED,
   BS3_STRIDE,
   BS3_VX,
@@ -72,7 +71,7 @@ import {
   solveJoints,
   warmStartJoints,
 } from './rows-joints-2d.js';
-import { finish2DStage, gatherFill2DStage } from './stages-threads.js';
+import { finish2DStage, gatherFillStage } from './stages-threads.js';
 
 /**
  * Collide stage, part 3: the contact solver, Box2D v3's "soft step" (Catto, "Solver2D", 2024; Box2D
@@ -230,7 +229,6 @@ function stride(world: PhysicsWorld): number {
  */
 function gatherBodies(world: PhysicsWorld, buf: ContactBuffer): void {
   const cs = world.collision;
-  const c = world.components;
   const n = buf.count;
   const mark = cs.solverMark,
     index = cs.solverIndex;
@@ -275,9 +273,7 @@ function gatherBodies(world: PhysicsWorld, buf: ContactBuffer): void {
   count = gatherManifoldBodies(world, count); // the shapes' manifolds join (solver/manifold-prepare-2d.ts)
   if (world.dimensions === 3) count = gatherManifold3DBodies(world, count); // and the 3D shapes' (solver/manifold-rows-3d.ts)
   if (world.dimensions === 3) count = gatherJoint3DBodies(world, count); // and the 3D joints' (joints/solver-3d.ts)
-  list = cs.solverBodies;
   count = gatherJointBodies(world, count); // the joints' bodies join the contacts'
-  list = cs.solverBodies;
   cs.solverBodyCount = count;
 
   const S = stride(world);
@@ -289,72 +285,11 @@ function gatherBodies(world: PhysicsWorld, buf: ContactBuffer): void {
     cs.bodyState = shared ? sharedFloat64(sizeS) : new Float64Array(sizeS);
     cs.bodyExtra = shared ? sharedFloat64(sizeE) : new Float64Array(sizeE);
   }
-  const sb = cs.bodyState,
-    ex = cs.bodyExtra;
-  sb.fill(0, 0, S);
-  const px = c.Position.x,
-    py = c.Position.y,
-    pz = c.Position.z;
-  const vx = c.Velocity.x,
-    vy = c.Velocity.y,
-    vz = c.Velocity.z;
-  const wx = c.AngularVelocity.x,
-    wy = c.AngularVelocity.y,
-    wz = c.AngularVelocity.z;
-  const h = world.h;
-  const g = world.gravity;
-  const gx = g[0]! * h,
-    gy = g[1]! * h,
-    gz = g[2]! * h;
-  const type = cs.bodyType,
-    invMass = cs.invMass,
-    invInertia = cs.invInertia;
-  const fx = c.Force.x,
-    fy = c.Force.y,
-    fz = c.Force.z;
+  cs.bodyState.fill(0, 0, S);
   // Joint rows push their bodies without marking them: with joints, no body counts as free flying.
   const pushed = jointsToSolve(world) ? 1 : 0;
-  // 2D: the fill is a range kernel, run on the threads or inline (solver/stages-threads.ts).
-  if (S === BS2_STRIDE) {
-    gatherFill2DStage(world, count, pushed);
-    return;
-  }
-  for (let k = 1; k < count; k++) {
-    const e = list[k]!;
-    const o = k * BS3_STRIDE,
-      q = k * BX_STRIDE;
-    const ii = invInertia[e]!;
-    const dynamic = type[e] === BodyType.Dynamic;
-    // A kinematic body's spin is part of its surface velocity (v + w x r) that its contacts see; it is not
-    // integrated here (its rotation owed stays 0: the integrator already turned it, and it has no inverse inertia).
-    const spins = type[e] === BodyType.Kinematic;
-    // The integrator moved x by v0 h + g h^2 / 2 (plus anything of its own, e.g. forces); keep that
-    // extra as the base. v = v0 + g h here, so the base is x - v h + g h^2 / 2 for dynamic bodies.
-    // A body a force acted on was not given the exact free fall (semiImplicitEuler): no gravity base,
-    // and it counts as pushed so finishBodies does not give it the free-flight correction either.
-    const forced = fx[e] !== 0 || fy[e] !== 0 || fz[e] !== 0;
-    const gb = dynamic && !forced ? 0.5 * h : 0;
-    const held = forced ? 1 : pushed;
-    ex[q + BX_BASE_X] = px[e]! - vx[e]! * h + gx * gb;
-    ex[q + BX_BASE_Y] = py[e]! - vy[e]! * h + gy * gb;
-    ex[q + BX_BASE_Z] = pz[e]! - vz[e]! * h + gz * gb;
-    // The integrator turned the body by w h; the substeps will turn it by sum w_k h_s instead.
-    ex[q + BX_ROT_X] = ii > 0 ? -wx[e]! * h : 0;
-    ex[q + BX_ROT_Y] = ii > 0 ? -wy[e]! * h : 0;
-    ex[q + BX_ROT_Z] = ii > 0 ? -wz[e]! * h : 0;
-    sb[o + BS3_VX] = dynamic ? vx[e]! - gx : vx[e]!;
-    sb[o + BS3_VY] = dynamic ? vy[e]! - gy : vy[e]!;
-    sb[o + BS3_VZ] = dynamic ? vz[e]! - gz : vz[e]!;
-    sb[o + BS3_WX] = ii > 0 || spins ? wx[e]! : 0;
-    sb[o + BS3_WY] = ii > 0 || spins ? wy[e]! : 0;
-    sb[o + BS3_WZ] = ii > 0 || spins ? wz[e]! : 0;
-    sb[o + BS3_DX] = 0;
-    sb[o + BS3_DY] = 0;
-    sb[o + BS3_DZ] = 0;
-    sb[o + BS3_INV_MASS] = invMass[e]!;
-    sb[o + BS3_INV_INERTIA] = ii;
-    sb[o + BS3_PUSHED] = held;
-  }
+  // The fill is a range kernel, run on a 2D world's threads or inline (solver/stages-threads.ts).
+  gatherFillStage(world, count, pushed);
 }
 
 /** Adds one substep of gravity to the dynamic solver bodies. */

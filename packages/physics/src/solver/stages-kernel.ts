@@ -23,8 +23,17 @@ import {
   BS2_VX,
   BS2_VY,
   BS2_W,
+  BS3_DX,
+  BS3_DY,
+  BS3_DZ,
+  BS3_INV_INERTIA,
+  BS3_INV_MASS,
+  BS3_PUSHED,
   BS3_STRIDE,
   BS3_VZ,
+  BS3_WX,
+  BS3_WY,
+  BS3_WZ,
   BX_BASE_X,
   BX_BASE_Y,
   BX_BASE_Z,
@@ -41,17 +50,24 @@ import * as GATHER from './slots/gather-fill.js';
 import * as RESTITUTION from './slots/restitution.js';
 
 /**
- * Fills the 2D solver rows of solver bodies lo + 1 .. hi (gatherBodies' second loop, solver/contact-solver.ts), one
- * body at a time. `ids`: the solver bodies' entity ids from solver index 1 (ids[i] is solver body
- * i + 1). A and P: the GATHER slots (solver/slots/gather-fill.ts; slots z, and the turns about x and y,
- * of the extra rows are 0 in 2D). Returns 0.
+ * Fills the solver rows of solver bodies lo + 1 .. hi (gatherBodies' second loop, solver/contact-solver.ts),
+ * one body at a time, of a 2D or a 3D world (P[GATHER.THREE_D]: rows of BS2_STRIDE or BS3_STRIDE): the
+ * velocity with this step's gravity rewound, zero displacement, inverse mass and inertia, whether it
+ * counts as pushed; in the extra row, where the integrator put it beyond x0 + v h and the rotation
+ * still owed. `ids`: the solver bodies' entity ids from solver index 1 (ids[i] is solver body i + 1).
+ * A and P: the GATHER slots (solver/slots/gather-fill.ts; a 2D world's z, and turns about x and y, are
+ * 0 in the extra rows and not read). Returns 0.
  * @category Collision
  */
-export function gatherFill2D(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
+export function gatherFill(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
   const px = A[GATHER.PX] as Float64Array,
-    py = A[GATHER.PY] as Float64Array;
+    py = A[GATHER.PY] as Float64Array,
+    pz = A[GATHER.PZ] as Float64Array;
   const vx = A[GATHER.VX] as Float64Array,
     vy = A[GATHER.VY] as Float64Array,
+    vz = A[GATHER.VZ] as Float64Array;
+  const wx = A[GATHER.WX] as Float64Array,
+    wy = A[GATHER.WY] as Float64Array,
     wz = A[GATHER.WZ] as Float64Array;
   const fx = A[GATHER.FX] as Float64Array,
     fy = A[GATHER.FY] as Float64Array,
@@ -64,36 +80,62 @@ export function gatherFill2D(A: KernelArray[], P: Float64Array, ids: Int32Array 
   const h = P[GATHER.H]!,
     gx = P[GATHER.GX_H]!,
     gy = P[GATHER.GY_H]!,
+    gz = P[GATHER.GZ_H]!,
     pushed = P[GATHER.PUSHED]!,
     DYNAMIC = P[GATHER.DYNAMIC]!,
     KINEMATIC = P[GATHER.KINEMATIC]!;
+  const is3D = P[GATHER.THREE_D] === 1,
+    S = is3D ? BS3_STRIDE : BS2_STRIDE;
   const list = ids as Int32Array;
   for (let i = lo; i < hi; i++) {
     const k = i + 1,
       e = list[i]!;
-    const o = k * BS2_STRIDE,
+    const o = k * S,
       q = k * BX_STRIDE;
     const ii = invInertia[e]!;
     const dynamic = type[e] === DYNAMIC;
+    // A kinematic body's spin is part of its surface velocity (v + w x r) that its contacts see; it is
+    // not integrated here (its rotation owed stays 0: the integrator already turned it).
     const spins = type[e] === KINEMATIC;
+    // The integrator moved x by v0 h + g h^2 / 2 (plus anything of its own, e.g. forces); keep that
+    // extra as the base: x - v h + g h^2 / 2 for a dynamic body, since v = v0 + g h here. A body a
+    // force acted on was not given the exact free fall: no gravity base, and it counts as pushed so
+    // finishBodies does not give it the free-flight correction either.
     const forced = fx[e] !== 0 || fy[e] !== 0 || fz[e] !== 0;
     const gb = dynamic && !forced ? 0.5 * h : 0;
     const held = forced ? 1 : pushed;
-    // Slots 2 to 4 (z, and the turn about x and y) are not read in 2D, nor their stores here.
     ex[q + BX_BASE_X] = px[e]! - vx[e]! * h + gx * gb;
     ex[q + BX_BASE_Y] = py[e]! - vy[e]! * h + gy * gb;
-    ex[q + BX_BASE_Z] = 0;
-    ex[q + BX_ROT_X] = 0;
-    ex[q + BX_ROT_Y] = 0;
+    // The integrator turned the body by w h; the substeps will turn it by sum w_k h_s instead.
     ex[q + BX_ROT_Z] = ii > 0 ? -wz[e]! * h : 0;
+    // vx and vy sit at the same offsets in both layouts.
     sb[o + BS2_VX] = dynamic ? vx[e]! - gx : vx[e]!;
     sb[o + BS2_VY] = dynamic ? vy[e]! - gy : vy[e]!;
-    sb[o + BS2_W] = ii > 0 || spins ? wz[e]! : 0;
-    sb[o + BS2_DX] = 0;
-    sb[o + BS2_DY] = 0;
-    sb[o + BS2_INV_MASS] = invMass[e]!;
-    sb[o + BS2_INV_INERTIA] = ii;
-    sb[o + BS2_PUSHED] = held;
+    if (is3D) {
+      ex[q + BX_BASE_Z] = pz[e]! - vz[e]! * h + gz * gb;
+      ex[q + BX_ROT_X] = ii > 0 ? -wx[e]! * h : 0;
+      ex[q + BX_ROT_Y] = ii > 0 ? -wy[e]! * h : 0;
+      sb[o + BS3_VZ] = dynamic ? vz[e]! - gz : vz[e]!;
+      sb[o + BS3_WX] = ii > 0 || spins ? wx[e]! : 0;
+      sb[o + BS3_WY] = ii > 0 || spins ? wy[e]! : 0;
+      sb[o + BS3_WZ] = ii > 0 || spins ? wz[e]! : 0;
+      sb[o + BS3_DX] = 0;
+      sb[o + BS3_DY] = 0;
+      sb[o + BS3_DZ] = 0;
+      sb[o + BS3_INV_MASS] = invMass[e]!;
+      sb[o + BS3_INV_INERTIA] = ii;
+      sb[o + BS3_PUSHED] = held;
+    } else {
+      ex[q + BX_BASE_Z] = 0;
+      ex[q + BX_ROT_X] = 0;
+      ex[q + BX_ROT_Y] = 0;
+      sb[o + BS2_W] = ii > 0 || spins ? wz[e]! : 0;
+      sb[o + BS2_DX] = 0;
+      sb[o + BS2_DY] = 0;
+      sb[o + BS2_INV_MASS] = invMass[e]!;
+      sb[o + BS2_INV_INERTIA] = ii;
+      sb[o + BS2_PUSHED] = held;
+    }
   }
   return 0;
 }

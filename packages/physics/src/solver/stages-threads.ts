@@ -3,7 +3,7 @@
  * and the rows' preparation, each one range kernel (solver/stages-kernel.ts) run on the world's threads
  * when that pays and inline on the calling thread otherwise (one code path; issue 32):
  *
- * - `gatherFill2DStage`: the solver rows of the step's bodies (gatherBodies' fill,
+ * - `gatherFillStage`: the solver rows of the step's bodies, 2D and 3D (gatherBodies' fill,
  *   solver/contact-solver.ts), a range of bodies a thread;
  * - `approachStage`: measureApproach (2D and 3D), a range of rows a thread;
  * - `finish2DStage`: finishBodies (velocities, positions and angles back to the components; the
@@ -43,7 +43,7 @@ import * as PLAN from './slots/colored-plan.js';
 import * as FINISH from './slots/finish-bodies.js';
 import * as GATHER from './slots/gather-fill.js';
 import * as RESTITUTION from './slots/restitution.js';
-import { approachSpeeds, finishBodies2D, gatherFill2D, restitutionBlocks2D, restitutionColored2D } from './stages-kernel.js';
+import { approachSpeeds, finishBodies2D, gatherFill, restitutionBlocks2D, restitutionColored2D } from './stages-kernel.js';
 import { warmStartTable } from './warm-start-kernel.js';
 
 /**
@@ -119,13 +119,13 @@ function runStage(pool: ThreadPool | null, kernel: Kernel, A: KernelArray[], P: 
 }
 
 /**
- * gatherBodies' fill of the 2D solver rows of solver bodies 1 .. count - 1 (solver/contact-solver.ts;
- * kernel gatherFill2D), on the world's threads when it pays, else on the calling thread; `pushed` 1
+ * gatherBodies' fill of the solver rows of solver bodies 1 .. count - 1 (solver/contact-solver.ts;
+ * kernel gatherFill, 2D or 3D), on a 2D world's threads when it pays, else on the calling thread; `pushed` 1
  * when joints are in the step (every body counts as pushed).
  * @throws Error naming contactSolverSystem if a worker thread failed.
  * @category Collision
  */
-export function gatherFill2DStage(world: PhysicsWorld, count: number, pushed: number): void {
+export function gatherFillStage(world: PhysicsWorld, count: number, pushed: number): void {
   const pool = poolFor(world, count - 1);
   const cs = world.collision,
     c = world.components;
@@ -147,15 +147,21 @@ export function gatherFill2DStage(world: PhysicsWorld, count: number, pushed: nu
   A[GATHER.INV_INERTIA] = cs.invInertia;
   A[GATHER.BODY_STATE] = cs.bodyState;
   A[GATHER.BODY_EXTRA] = cs.bodyExtra;
+  A[GATHER.PZ] = c.Position.z;
+  A[GATHER.VZ] = c.Velocity.z;
+  A[GATHER.WX] = c.AngularVelocity.x;
+  A[GATHER.WY] = c.AngularVelocity.y;
   const h = world.h,
     g = world.gravity;
   P[GATHER.H] = h;
   P[GATHER.GX_H] = g[0]! * h;
   P[GATHER.GY_H] = g[1]! * h;
+  P[GATHER.GZ_H] = g[2]! * h;
+  P[GATHER.THREE_D] = world.dimensions === 3 ? 1 : 0;
   P[GATHER.PUSHED] = pushed;
   P[GATHER.DYNAMIC] = BodyType.Dynamic;
   P[GATHER.KINEMATIC] = BodyType.Kinematic;
-  runStage(pool, gatherFill2D, A, P, count - 1, cs.solverBodies.subarray(1, count));
+  runStage(pool, gatherFill, A, P, count - 1, cs.solverBodies.subarray(1, count));
 }
 
 /**
