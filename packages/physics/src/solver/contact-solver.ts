@@ -1,14 +1,9 @@
 import type { ContactBuffer } from '../collision/contacts.js';
 import { endWokenContacts } from '../collision/events.js';
 import { BodyType } from '../collision/state.js';
-import { rotateInPlace } from '../math/quaternion.js';
 import { isShared, sharedFloat64, sharedLike } from '../threads/pool.js';
-import { reportNonFinite } from '../world/errors.js';
 import type { PhysicsWorld } from '../world/options.js';
 import {
-  BI_CORR_X,
-  BI_CORR_Y,
-  BI_CORR_Z,
   BS2_DX,
   BS2_DY,
   BS2_INV_INERTIA,
@@ -20,7 +15,6 @@ import {
   BS3_DY,
   BS3_DZ,
   BS3_INV_INERTIA,
-  BS3_PUSHED,
   BS3_STRIDE,
   BS3_VX,
   BS3_VY,
@@ -28,9 +22,6 @@ import {
   BS3_WX,
   BS3_WY,
   BS3_WZ,
-  BX_BASE_X,
-  BX_BASE_Y,
-  BX_BASE_Z,
   BX_ROT_X,
   BX_ROT_Y,
   BX_ROT_Z,
@@ -71,7 +62,7 @@ import {
   solveJoints,
   warmStartJoints,
 } from './rows-joints-2d.js';
-import { finish2DStage, gatherFillStage } from './stages-threads.js';
+import { finishStage, gatherFillStage } from './stages-threads.js';
 
 /**
  * Collide stage, part 3: the contact solver, Box2D v3's "soft step" (Catto, "Solver2D", 2024; Box2D
@@ -190,7 +181,6 @@ function solveContacts(world: PhysicsWorld): void {
     storeManifoldImpulses(cs);
   } else applyManifold3DRestitution(world);
   finishBodies(world, buf);
-  containInBoundary(world);
   finishManifolds(world);
   if (world.dimensions === 3) finishManifolds3D(world);
   finishJoints(world, hs);
@@ -344,132 +334,11 @@ function integratePositions(world: PhysicsWorld, hs: number): void {
 }
 
 /**
- * Writes the solver bodies back: velocities; positions (base + displacement) and orientations (turned
- * by the rotation owed) of dynamic bodies. Records the deepest overlap left, measured linearly as in
- * the solve.
+ * Stages 7 and 8 of the solver (see contactSolverSystem): writes the solver bodies back (velocities;
+ * positions, base + displacement, and angles or orientations, turned by the rotation owed, of dynamic
+ * bodies), keeps them inside the boundary box, and records the deepest overlap left, measured linearly
+ * as in the solve: range kernels, run on a 2D world's threads or inline (solver/stages-threads.ts finishStage).
  */
 function finishBodies(world: PhysicsWorld, buf: ContactBuffer): void {
-  // 2D: a range kernel with the boundary box, run on the threads or inline (solver/stages-threads.ts).
-  if (world.dimensions === 2) {
-    finish2DStage(world, buf);
-    return;
-  }
-  const cs = world.collision;
-  const c = world.components;
-  const list = cs.solverBodies,
-    count = cs.solverBodyCount,
-    type = cs.bodyType,
-    sb = cs.bodyState,
-    ex = cs.bodyExtra;
-  const imp = cs.bodyImpact;
-  const px = c.Position.x,
-    py = c.Position.y,
-    pz = c.Position.z;
-  const vx = c.Velocity.x,
-    vy = c.Velocity.y,
-    vz = c.Velocity.z;
-  const wx = c.AngularVelocity.x,
-    wy = c.AngularVelocity.y,
-    wz = c.AngularVelocity.z;
-  const q = c.Orientation;
-  const g = world.gravity,
-    fh = (-0.5 * world.h * world.h) / cs.settings.solverSubsteps;
-  const fx = g[0]! * fh,
-    fy = g[1]! * fh,
-    fz = g[2]! * fh;
-  let check = 0;
-  for (let k = 1; k < count; k++) {
-    const e = list[k]!;
-    if (type[e] !== BodyType.Dynamic) continue;
-    const o = k * BS3_STRIDE,
-      r = k * BX_STRIDE;
-    const free = sb[o + BS3_PUSHED] === 0 ? 1 : 0;
-    vx[e] = sb[o + BS3_VX]!;
-    vy[e] = sb[o + BS3_VY]!;
-    vz[e] = sb[o + BS3_VZ]!;
-    const x = ex[r + BX_BASE_X]! + sb[o + BS3_DX]! + imp[k * IMPACT_STRIDE + BI_CORR_X]! + free * fx,
-      y = ex[r + BX_BASE_Y]! + sb[o + BS3_DY]! + imp[k * IMPACT_STRIDE + BI_CORR_Y]! + free * fy;
-    const z = ex[r + BX_BASE_Z]! + sb[o + BS3_DZ]! + imp[k * IMPACT_STRIDE + BI_CORR_Z]! + free * fz;
-    px[e] = x;
-    py[e] = y;
-    pz[e] = z;
-    check += x + y + z + sb[o + BS3_VX]! + sb[o + BS3_VY]! + sb[o + BS3_VZ]!;
-    if (sb[o + BS3_INV_INERTIA]! > 0) {
-      wx[e] = sb[o + BS3_WX]!;
-      wy[e] = sb[o + BS3_WY]!;
-      wz[e] = sb[o + BS3_WZ]!;
-      rotateInPlace(q.x, q.y, q.z, q.w, e, ex[r + BX_ROT_X]!, ex[r + BX_ROT_Y]!, ex[r + BX_ROT_Z]!);
-    }
-  }
-  if (check - check !== 0) reportNonFinite(world, list.subarray(1, count), 'collide');
-  let deepest = 0;
-  const IA = buf.ia,
-    IB = buf.ib,
-    S0 = buf.separation,
-    NX = buf.nx,
-    NY = buf.ny,
-    NZ = buf.nz;
-  // The start separations already hold the impact corrections (solver/impacts.ts).
-  for (let i = 0, n = buf.count; i < n; i++) {
-    const a = IA[i]! * BS3_STRIDE,
-      b = IB[i]! * BS3_STRIDE;
-    const s =
-      S0[i]! +
-      (sb[b + BS3_DX]! - sb[a + BS3_DX]!) * NX[i]! +
-      (sb[b + BS3_DY]! - sb[a + BS3_DY]!) * NY[i]! +
-      (sb[b + BS3_DZ]! - sb[a + BS3_DZ]!) * NZ[i]!;
-    if (s < deepest) deepest = s;
-  }
-  cs.stats.maxOverlap = -deepest;
-}
-
-/** Stage 8 of the solver (see contactSolverSystem): keeps the solver's dynamic bodies inside the boundary box. */
-function containInBoundary(world: PhysicsWorld): void {
-  const cs = world.collision;
-  const box = cs.boundary;
-  // 2D: done with finishBodies (finish2DStage, solver/stages-threads.ts).
-  if (!box.enabled || world.dimensions === 2) return;
-  const c = world.components;
-  const P = c.Position,
-    V = c.Velocity,
-    radius = c.Ball.radius,
-    eM = c.Material.restitution;
-  const list = cs.solverBodies,
-    count = cs.solverBodyCount,
-    type = cs.bodyType;
-  const dims = world.dimensions;
-  const g = world.gravity;
-  const pos = [P.x, P.y, P.z],
-    vel = [V.x, V.y, V.z];
-  for (let k = 1; k < count; k++) {
-    const e = list[k]!;
-    if (type[e] !== BodyType.Dynamic) continue;
-    const r = radius[e]!;
-    // Potential energy a unit mass gains by being put back (-g . dx), J/kg.
-    let gain = 0;
-    for (let d = 0; d < dims; d++) {
-      const p = pos[d]!,
-        v = vel[d]!;
-      const lo = box.min[d]! + r,
-        hi = box.max[d]! - r;
-      const x = p[e]!;
-      if (x < lo && lo <= hi) {
-        p[e] = lo;
-        gain -= g[d]! * (lo - x);
-        if (v[e]! < 0) v[e] = -Math.max(box.restitution, eM[e]!) * v[e]!;
-      } else if (x > hi && lo <= hi) {
-        p[e] = hi;
-        gain -= g[d]! * (hi - x);
-        if (v[e]! > 0) v[e] = -Math.max(box.restitution, eM[e]!) * v[e]!;
-      }
-    }
-    // Putting a body back up against gravity must not create energy: its kinetic energy pays for the
-    // potential energy gained (|v| scaled so |v'|^2 / 2 = |v|^2 / 2 - gain, or stopped if that is < 0).
-    if (gain > 0) {
-      let v2 = 0;
-      for (let d = 0; d < dims; d++) v2 += vel[d]![e]! * vel[d]![e]!;
-      const f = v2 > 2 * gain ? Math.sqrt(1 - (2 * gain) / v2) : 0;
-      for (let d = 0; d < dims; d++) vel[d]![e] = vel[d]![e]! * f;
-    }
-  }
+  finishStage(world, buf);
 }

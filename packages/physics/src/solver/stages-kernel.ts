@@ -11,6 +11,7 @@
  * any number of threads (see solver/stages-threads.ts).
  */
 
+import type { rotateFrom } from '../math/quaternion.js';
 import type { claimBlock } from '../threads/block-claim.js';
 import type { KernelArray, KernelHelper } from '../threads/kernel-types.js';
 import {
@@ -30,6 +31,8 @@ import {
   BS3_INV_MASS,
   BS3_PUSHED,
   BS3_STRIDE,
+  BS3_VX,
+  BS3_VY,
   BS3_VZ,
   BS3_WX,
   BS3_WY,
@@ -196,8 +199,9 @@ export function approachSpeeds(A: KernelArray[], P: Float64Array, _ids: Int32Arr
 }
 
 /**
- * finishBodies (solver/contact-solver.ts) of 2D solver bodies lo + 1 .. hi: velocities, positions (base +
- * displacement + impact correction, free flight's -g h h_s / 2) and angles back to the components;
+ * finishBodies (solver/contact-solver.ts) of solver bodies lo + 1 .. hi of a 2D or a 3D world
+ * (P[FINISH.THREE_D]): velocities, positions (base + displacement + impact correction, free flight's
+ * -g h h_s / 2) and angles (3D: orientations, turned by the rotation owed) back to the components;
  * then, if P[FINISH.CONTAIN] = 1, containInBoundary (solver/contact-solver.ts) of the same bodies (put back on a wall of the box
  * they went through, the outward normal velocity reflected and scaled by the restitution, the potential
  * energy gained taken from the kinetic); and the deepest overlap left over this thread's share of the
@@ -207,7 +211,7 @@ export function approachSpeeds(A: KernelArray[], P: Float64Array, _ids: Int32Arr
  * velocities finishBodies wrote (finite exactly when they all are: the caller's check).
  * @category Collision
  */
-export function finishBodies2D(
+export function finishBodies(
   A: KernelArray[],
   P: Float64Array,
   ids: Int32Array | null,
@@ -219,79 +223,121 @@ export function finishBodies2D(
   // The three loops are functions of their own (KERNEL_HELPERS 4 to 6, solver/kernel-helpers.ts): this
   // kernel runs once a step, and inline, its later loops and the code between them first ran after V8
   // had compiled the first loop on the stack (OSR), throwing that code away at every step.
-  const check = (H[4] as typeof finishBodyRows2D)(A, P, ids as Int32Array, lo, hi);
-  if (P[FINISH.CONTAIN] === 1) (H[5] as typeof containBodies2D)(A, P, ids as Int32Array, lo, hi);
-  (A[FINISH.DEEPEST] as Float64Array)[part] = (H[6] as typeof deepestRow2D)(A, P, lo, hi);
+  const check = (H[4] as typeof finishBodyRows)(A, P, ids as Int32Array, lo, hi, H);
+  if (P[FINISH.CONTAIN] === 1) (H[5] as typeof containBodies)(A, P, ids as Int32Array, lo, hi);
+  (A[FINISH.DEEPEST] as Float64Array)[part] = (H[6] as typeof deepestRow)(A, P, lo, hi);
   return check;
 }
 
 /**
- * finishBodies2D's first loop (velocities, positions and angles back to the components, bodies lo + 1 .. hi); returns the finiteness sum. A and P as finishBodies2D's.
+ * finishBodies' first loop (velocities, positions and angles or orientations back to the components,
+ * bodies lo + 1 .. hi); returns the finiteness sum. A and P as finishBodies'; H the kernel helpers
+ * (15: math/quaternion.ts rotateFrom, which turns a 3D body's orientation).
  * @category Collision
  */
-export function finishBodyRows2D(A: KernelArray[], P: Float64Array, list: Int32Array, lo: number, hi: number): number {
+export function finishBodyRows(
+  A: KernelArray[],
+  P: Float64Array,
+  list: Int32Array,
+  lo: number,
+  hi: number,
+  H: readonly KernelHelper[],
+): number {
   const px = A[FINISH.PX] as Float64Array,
     py = A[FINISH.PY] as Float64Array,
-    vx = A[FINISH.VX] as Float64Array,
-    vy = A[FINISH.VY] as Float64Array;
-  const wz = A[FINISH.WZ] as Float64Array,
-    angle = A[FINISH.ANGLE] as Float64Array,
-    type = A[FINISH.BODY_TYPE] as Uint8Array;
-  const sb = A[FINISH.BODY_STATE] as Float64Array,
+    pz = A[FINISH.PZ] as Float64Array;
+  const vx = A[FINISH.VX] as Float64Array,
+    vy = A[FINISH.VY] as Float64Array,
+    vz = A[FINISH.VZ] as Float64Array;
+  const wx = A[FINISH.WX] as Float64Array,
+    wy = A[FINISH.WY] as Float64Array,
+    wz = A[FINISH.WZ] as Float64Array,
+    angle = A[FINISH.ANGLE] as Float64Array;
+  const qx = A[FINISH.QX] as Float64Array,
+    qy = A[FINISH.QY] as Float64Array,
+    qz = A[FINISH.QZ] as Float64Array,
+    qw = A[FINISH.QW] as Float64Array;
+  const type = A[FINISH.BODY_TYPE] as Uint8Array,
+    sb = A[FINISH.BODY_STATE] as Float64Array,
     ex = A[FINISH.BODY_EXTRA] as Float64Array,
     imp = A[FINISH.BODY_IMPACT] as Float64Array;
   const fx = P[FINISH.FREE_X]!,
     fy = P[FINISH.FREE_Y]!,
+    fz = P[FINISH.FREE_Z]!,
     DYNAMIC = P[FINISH.DYNAMIC]!,
     Q = P[FINISH.IMPACT_STRIDE]!;
+  const rotate = H[15] as typeof rotateFrom;
+  // The solver state's layout: vx and vy sit at the same offsets in both, dy follows dx.
+  const is3D = P[FINISH.THREE_D] === 1,
+    S = is3D ? BS3_STRIDE : BS2_STRIDE,
+    DX = is3D ? BS3_DX : BS2_DX,
+    PUSHED = is3D ? BS3_PUSHED : BS2_PUSHED;
   let check = 0;
   for (let i = lo; i < hi; i++) {
     const k = i + 1,
       e = list[i]!;
     if (type[e] !== DYNAMIC) continue;
-    const o = k * BS2_STRIDE,
+    const o = k * S,
       r = k * BX_STRIDE;
-    const free = sb[o + BS2_PUSHED] === 0 ? 1 : 0;
+    const free = sb[o + PUSHED] === 0 ? 1 : 0;
     vx[e] = sb[o + BS2_VX]!;
     vy[e] = sb[o + BS2_VY]!;
-    const x = ex[r + BX_BASE_X]! + sb[o + BS2_DX]! + imp[k * Q]! + free * fx,
-      y = ex[r + BX_BASE_Y]! + sb[o + BS2_DY]! + imp[k * Q + 1]! + free * fy;
+    const x = ex[r + BX_BASE_X]! + sb[o + DX]! + imp[k * Q]! + free * fx,
+      y = ex[r + BX_BASE_Y]! + sb[o + DX + 1]! + imp[k * Q + 1]! + free * fy;
     px[e] = x;
     py[e] = y;
-    check += x + y + sb[o + BS2_VX]! + sb[o + BS2_VY]!;
-    if (sb[o + BS2_INV_INERTIA]! > 0) {
-      wz[e] = sb[o + BS2_W]!;
-      angle[e] = angle[e]! + ex[r + BX_ROT_Z]!;
+    if (is3D) {
+      vz[e] = sb[o + BS3_VZ]!;
+      const z = ex[r + BX_BASE_Z]! + sb[o + BS3_DZ]! + imp[k * Q + 2]! + free * fz;
+      pz[e] = z;
+      check += x + y + z + sb[o + BS3_VX]! + sb[o + BS3_VY]! + sb[o + BS3_VZ]!;
+      if (sb[o + BS3_INV_INERTIA]! > 0) {
+        wx[e] = sb[o + BS3_WX]!;
+        wy[e] = sb[o + BS3_WY]!;
+        wz[e] = sb[o + BS3_WZ]!;
+        rotate(qx, qy, qz, qw, e, qx[e]!, qy[e]!, qz[e]!, qw[e]!, ex[r + BX_ROT_X]!, ex[r + BX_ROT_Y]!, ex[r + BX_ROT_Z]!);
+      }
+    } else {
+      check += x + y + sb[o + BS2_VX]! + sb[o + BS2_VY]!;
+      if (sb[o + BS2_INV_INERTIA]! > 0) {
+        wz[e] = sb[o + BS2_W]!;
+        angle[e] = angle[e]! + ex[r + BX_ROT_Z]!;
+      }
     }
   }
   return check;
 }
 
 /**
- * finishBodies2D's containInBoundary over bodies lo + 1 .. hi (A and P as finishBodies2D's).
+ * finishBodies' containInBoundary over bodies lo + 1 .. hi, 2D or 3D (A and P as finishBodies'): a body
+ * the step's impulses sent through a wall of the box is put back on it, its outward normal velocity
+ * reflected and scaled by the restitution; the potential energy a unit mass gains by being put back
+ * (-g . dx, J/kg) is taken from its kinetic energy (|v| scaled, or the body stopped), so energy never rises.
  * @category Collision
  */
-export function containBodies2D(A: KernelArray[], P: Float64Array, list: Int32Array, lo: number, hi: number): void {
+export function containBodies(A: KernelArray[], P: Float64Array, list: Int32Array, lo: number, hi: number): void {
   const px = A[FINISH.PX] as Float64Array,
     py = A[FINISH.PY] as Float64Array,
-    vx = A[FINISH.VX] as Float64Array,
-    vy = A[FINISH.VY] as Float64Array;
+    pz = A[FINISH.PZ] as Float64Array;
+  const vx = A[FINISH.VX] as Float64Array,
+    vy = A[FINISH.VY] as Float64Array,
+    vz = A[FINISH.VZ] as Float64Array;
   const type = A[FINISH.BODY_TYPE] as Uint8Array,
     radius = A[FINISH.RADIUS] as Float64Array,
     eM = A[FINISH.RESTITUTION] as Float64Array;
   const DYNAMIC = P[FINISH.DYNAMIC]!,
-    boxE = P[FINISH.BOX_RESTITUTION]!,
-    g0 = P[FINISH.GX]!,
-    g1 = P[FINISH.GY]!;
+    boxE = P[FINISH.BOX_RESTITUTION]!;
+  const is3D = P[FINISH.THREE_D] === 1,
+    dims = is3D ? 3 : 2;
   for (let i = lo; i < hi; i++) {
     const e = list[i]!;
     if (type[e] !== DYNAMIC) continue;
     const rad = radius[e]!;
     let gain = 0;
-    for (let d = 0; d < 2; d++) {
-      const p = d === 0 ? px : py,
-        v = d === 0 ? vx : vy,
-        g = d === 0 ? g0 : g1;
+    for (let d = 0; d < dims; d++) {
+      const p = d === 0 ? px : d === 1 ? py : pz,
+        v = d === 0 ? vx : d === 1 ? vy : vz,
+        g = P[FINISH.GX + d]!;
       const wlo = P[FINISH.MIN_X + d]! + rad,
         whi = P[FINISH.MAX_X + d]! - rad;
       const x = p[e]!;
@@ -309,33 +355,41 @@ export function containBodies2D(A: KernelArray[], P: Float64Array, list: Int32Ar
       let v2 = 0;
       v2 += vx[e]! * vx[e]!;
       v2 += vy[e]! * vy[e]!;
+      if (is3D) v2 += vz[e]! * vz[e]!;
       const f = v2 > 2 * gain ? Math.sqrt(1 - (2 * gain) / v2) : 0;
       vx[e] = vx[e]! * f;
       vy[e] = vy[e]! * f;
+      if (is3D) vz[e] = vz[e]! * f;
     }
   }
 }
 
 /**
- * finishBodies2D's deepest overlap over its share of the contact rows (floor(m lo / nb) .. floor(m hi / nb) - 1): min(0, min s), m.
+ * finishBodies' deepest overlap over its share of the contact rows (floor(m lo / nb) .. floor(m hi / nb) - 1), 2D or 3D: min(0, min s), m.
  * @category Collision
  */
-export function deepestRow2D(A: KernelArray[], P: Float64Array, lo: number, hi: number): number {
+export function deepestRow(A: KernelArray[], P: Float64Array, lo: number, hi: number): number {
   const sb = A[FINISH.BODY_STATE] as Float64Array;
   const IA = A[FINISH.IA] as Int32Array,
     IB = A[FINISH.IB] as Int32Array,
     S0 = A[FINISH.SEPARATION] as Float64Array,
     NX = A[FINISH.NX] as Float64Array,
-    NY = A[FINISH.NY] as Float64Array;
+    NY = A[FINISH.NY] as Float64Array,
+    NZ = A[FINISH.NZ] as Float64Array;
   const m = P[FINISH.ROWS]!,
     nb = P[FINISH.BODIES]!;
+  const is3D = P[FINISH.THREE_D] === 1,
+    S = is3D ? BS3_STRIDE : BS2_STRIDE,
+    DX = is3D ? BS3_DX : BS2_DX;
   const r0 = Math.floor((m * lo) / nb),
     r1 = Math.floor((m * hi) / nb);
   let deepest = 0;
   for (let i = r0; i < r1; i++) {
-    const a = IA[i]! * BS2_STRIDE,
-      b = IB[i]! * BS2_STRIDE;
-    const s = S0[i]! + (sb[b + BS2_DX]! - sb[a + BS2_DX]!) * NX[i]! + (sb[b + BS2_DY]! - sb[a + BS2_DY]!) * NY[i]!;
+    const a = IA[i]! * S,
+      b = IB[i]! * S;
+    // The start separations already hold the impact corrections (solver/impacts.ts).
+    let s = S0[i]! + (sb[b + DX]! - sb[a + DX]!) * NX[i]! + (sb[b + DX + 1]! - sb[a + DX + 1]!) * NY[i]!;
+    if (is3D) s += (sb[b + BS3_DZ]! - sb[a + BS3_DZ]!) * NZ[i]!;
     if (s < deepest) deepest = s;
   }
   return deepest;

@@ -32,7 +32,7 @@ import { attractors, gravityScale } from '../forces/gravity.js';
 import { sieForced2, sieForced3, sieFree2, sieFree3 } from '../integrators/semi-implicit-euler.js';
 import { solveColored2D } from '../solver/coloring-kernel.js';
 import { prepareContactRows } from '../solver/prepare-contacts-kernel.js';
-import { approachSpeeds, finishBodies2D, gatherFill, restitutionColored2D } from '../solver/stages-kernel.js';
+import { approachSpeeds, finishBodies, gatherFill, restitutionColored2D } from '../solver/stages-kernel.js';
 import { stripPlan2D } from '../solver/strip-plan-kernel.js';
 import { stripCut2D } from '../solver/strips-kernel.js';
 import { warmStartTable } from '../solver/warm-start-kernel.js';
@@ -87,7 +87,7 @@ export const KERNELS: readonly Kernel[] = /* @__PURE__ */ Object.freeze([
   prepareContactRows,
   gatherFill,
   approachSpeeds,
-  finishBodies2D,
+  finishBodies,
   restitutionColored2D,
   stripCut2D,
   warmStartTable,
