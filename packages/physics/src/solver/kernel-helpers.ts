@@ -8,7 +8,7 @@ import { claimBlock } from '../threads/block-claim.js';
 import type { KernelHelper } from '../threads/kernel-types.js';
 import { coloredBodies2D, coloredPack2D, coloredRows2D, coloredUnpack2D } from './coloring-kernel.js';
 import { prepareRowMasses, prepareRowWarmStart } from './prepare-contacts-kernel.js';
-import { approachSpeeds, containBodies, deepestRow, finishBodyRows, restitutionRows2D, restitutionTargets2D } from './stages-kernel.js';
+import { approachSpeeds, containBodies, deepestRow, finishBodyRows, restitutionRows2D, restitutionTargets } from './stages-kernel.js';
 import { stripLayout2D } from './strip-plan-kernel.js';
 import { stripCut2D } from './strips-kernel.js';
 
@@ -34,7 +34,7 @@ export const KERNEL_HELPERS: readonly KernelHelper[] = /* @__PURE__ */ Object.fr
   finishBodyRows,
   containBodies,
   deepestRow,
-  restitutionTargets2D,
+  restitutionTargets,
   restitutionRows2D,
   claimBlock,
   stripCut2D,

@@ -486,7 +486,7 @@ export function restitutionColored2D(
           if (c < 0) {
             const lo = blk * FIRST,
               hi = Math.min(n, lo + FIRST);
-            const bouncing = (H[7] as typeof restitutionTargets2D)(A, P, lo, hi);
+            const bouncing = (H[7] as typeof restitutionTargets)(A, P, lo, hi);
             if (bouncing > 0) Atomics.add(bar, 3, bouncing);
           } else (H[8] as typeof restitutionRows2D)(A, bounds[first + blk]!, bounds[first + blk + 1]!);
         } catch (e) {
@@ -512,15 +512,22 @@ export function restitutionBlocks2D(plan: Int32Array, n: number, iterations: num
 }
 
 /**
- * restitutionColored2D's first unit over rows [lo, hi): each row's target and cap (A and P as the kernel's); returns how many rows bounce.
+ * The restitution stage's targets and caps over rows [lo, hi) (restitutionColored2D's first unit, and
+ * solver/ball-rows.ts applyRestitution's in buffer order), 2D or 3D (P[RESTITUTION.THREE_D]): a row that
+ * carried no impulse takes no part (target -1); one that approached faster than its threshold gets the
+ * target -e v_impact and the cap of Poisson's hypothesis (e times its compression impulse, delivered plus
+ * what still stops a residual approach); the rest the target 0. The relative velocity, largest pass
+ * impulse and delivered total of each row are spent by now and hold the target, the rebound's
+ * accumulated impulse (0) and the cap. A and P: the RESTITUTION slots the loop reads. Returns how many rows bounce.
  * @category Collision
  */
-export function restitutionTargets2D(A: KernelArray[], P: Float64Array, lo: number, hi: number): number {
+export function restitutionTargets(A: KernelArray[], P: Float64Array, lo: number, hi: number): number {
   const sb = A[RESTITUTION.BODY_STATE] as Float64Array,
     IA = A[RESTITUTION.IA] as Int32Array,
     IB = A[RESTITUTION.IB] as Int32Array,
     NX = A[RESTITUTION.NX] as Float64Array,
-    NY = A[RESTITUTION.NY] as Float64Array;
+    NY = A[RESTITUTION.NY] as Float64Array,
+    NZ = A[RESTITUTION.NZ] as Float64Array;
   const NM = A[RESTITUTION.NORMAL_MASS] as Float64Array,
     E = A[RESTITUTION.RESTITUTION] as Float64Array,
     RV = A[RESTITUTION.RELATIVE_VELOCITY] as Float64Array,
@@ -529,6 +536,9 @@ export function restitutionTargets2D(A: KernelArray[], P: Float64Array, lo: numb
     TOT = A[RESTITUTION.TOTAL_NORMAL_IMPULSE] as Float64Array;
   const threshold = P[RESTITUTION.THRESHOLD]!,
     elasticThreshold = P[RESTITUTION.ELASTIC_THRESHOLD]!;
+  // vx and vy sit at the same offsets in both layouts.
+  const is3D = P[RESTITUTION.THREE_D] === 1,
+    S = is3D ? BS3_STRIDE : BS2_STRIDE;
   let bouncing = 0;
   for (let i = lo; i < hi; i++) {
     const e = E[i]!;
@@ -539,9 +549,10 @@ export function restitutionTargets2D(A: KernelArray[], P: Float64Array, lo: numb
     MAXN[i] = 0;
     if (e > 0 && RV[i]! < -(e >= 1 ? elasticThreshold : threshold)) {
       RV[i] = -e * IV[i]!;
-      const a = IA[i]! * BS2_STRIDE,
-        bb = IB[i]! * BS2_STRIDE;
-      const vn = (sb[bb + BS2_VX]! - sb[a + BS2_VX]!) * NX[i]! + (sb[bb + BS2_VY]! - sb[a + BS2_VY]!) * NY[i]!;
+      const a = IA[i]! * S,
+        bb = IB[i]! * S;
+      let vn = (sb[bb + BS2_VX]! - sb[a + BS2_VX]!) * NX[i]! + (sb[bb + BS2_VY]! - sb[a + BS2_VY]!) * NY[i]!;
+      if (is3D) vn += (sb[bb + BS3_VZ]! - sb[a + BS3_VZ]!) * NZ[i]!;
       const stop = vn < 0 ? -NM[i]! * vn : 0;
       TOT[i] = stop + e * (TOT[i]! + stop);
       bouncing++;

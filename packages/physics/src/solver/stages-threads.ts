@@ -343,12 +343,14 @@ export function restitutionOnThreads(world: PhysicsWorld, buf: ContactBuffer): b
   A[RESTITUTION.PAIR] = colored.pair;
   A[RESTITUTION.ROW] = colored.row;
   A[RESTITUTION.CLAIM] = colored.claim;
+  A[RESTITUTION.NZ] = buf.nz;
   P[RESTITUTION.ROWS] = buf.count;
   P[RESTITUTION.THRESHOLD] = st.restitutionThreshold;
   P[RESTITUTION.ELASTIC_THRESHOLD] = st.elasticRestitutionThreshold;
   P[RESTITUTION.ITERATIONS] = st.restitutionIterations;
   P[RESTITUTION.MAY_WAIT] = callerMayWait() ? 1 : 0;
   P[RESTITUTION.SPIN_US] = SPIN_MICROSECONDS;
+  P[RESTITUTION.THREE_D] = 0;
   const bar = colored.bar,
     plan = colored.plan;
   const site = 'contactSolverSystem#restitution';
