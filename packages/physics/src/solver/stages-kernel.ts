@@ -1,14 +1,15 @@
 /**
- * The 2D contact solver's per-body and per-row stages (solver/contact-solver.ts gatherBodies' fill, measureApproach,
- * finishBodies) and its restitution stage by colours, as thread kernels (step/kernel-table.ts rules:
- * self-contained functions the worker threads also run as source text). solver/stages-threads.ts
- * runs them, on the threads or inline on one thread, and says when.
+ * The contact solver's per-body and per-row stages (solver/contact-solver.ts gatherBodies' fill,
+ * measureApproach, finishBodies with containInBoundary; the restitution stage's targets), 2D and 3D, and
+ * its 2D restitution stage by colours, as thread kernels (step/kernel-table.ts rules: self-contained
+ * functions the worker threads also run as source text). solver/stages-threads.ts runs them, on the
+ * threads or inline on one thread, and says when.
  *
- * The per-body and per-row kernels do each body's or row's arithmetic on its own (these are the 2D
- * stages' only code: solver/contact-solver.ts keeps the 3D loops), so their results are the same to the
- * bit whichever thread runs a body or row. The restitution kernel visits the rows colour by colour (the
- * coloured solve's colours, solver/coloring.ts), not in buffer order: deterministic, and the same on
- * any number of threads (see solver/stages-threads.ts).
+ * The per-body and per-row kernels do each body's or row's arithmetic on its own (they are these
+ * stages' only code, in both dimensions), so their results are the same to the bit whichever thread
+ * runs a body or row. The restitution kernel visits the rows colour by colour (the coloured solve's
+ * colours, solver/coloring.ts), not in buffer order: deterministic, and the same on any number of
+ * threads (see solver/stages-threads.ts).
  */
 
 import type { rotateFrom } from '../math/quaternion.js';

@@ -1,7 +1,7 @@
 /**
- * The 2D contact solver's per-body and per-row stages beside the coloured substeps (solver/coloring.ts)
- * and the rows' preparation, each one range kernel (solver/stages-kernel.ts) run on the world's threads
- * when that pays and inline on the calling thread otherwise (one code path; issue 32):
+ * The contact solver's per-body and per-row stages beside the coloured substeps (solver/coloring.ts)
+ * and the rows' preparation, each one range kernel (solver/stages-kernel.ts) run on a 2D world's threads
+ * when that pays and inline on the calling thread otherwise, and inline in 3D (one code path; issue 32):
  *
  * - `gatherFillStage`: the solver rows of the step's bodies, 2D and 3D (gatherBodies' fill,
  *   solver/contact-solver.ts), a range of bodies a thread;
