@@ -4,7 +4,7 @@
  * says when.
  */
 
-import type { claimBlock } from '../threads/block-claim.js';
+import type { awaitBlocks, claimBlock } from '../threads/block-claim.js';
 import type { KernelArray, KernelHelper } from '../threads/kernel-types.js';
 import {
   BS2_DX,
@@ -101,7 +101,6 @@ export function solveColored2D(
     pair = A[SOLVE.PAIR] as Int32Array;
   const tot = A[SOLVE.TOT] as Float64Array;
   const spinMs = P[SOLVE.SPIN_US]! / 1000;
-  const clock = (globalThis as { performance?: { now(): number } }).performance;
   // The blocks' loops, each a function of its own (KERNEL_HELPERS, passed in as H): called thousands
   // of times a step, V8 compiles them whole, with every branch's type feedback. Inline in this
   // function, which runs once a step, they ran in code compiled on the stack (OSR) partway through a
@@ -145,6 +144,7 @@ export function solveColored2D(
   const claim = A[SOLVE.CLAIM] as Int32Array,
     threads = plan[PLAN.THREADS]! > 0 ? plan[PLAN.THREADS]! : 1;
   const claimNext = H[9] as typeof claimBlock,
+    awaitUnit = H[16] as typeof awaitBlocks,
     cursor = new Int32Array(2);
   let base = 0,
     failed = false;
@@ -177,23 +177,10 @@ export function solveColored2D(
     const end = base + count;
     if (count > 0) {
       // Wait until every block of the earlier units is done: spin a while, then block.
-      if (Atomics.load(bar, 1) < base) {
-        let t0 = -1,
-          spins = 0;
-        for (;;) {
-          const done = Atomics.load(bar, 1);
-          if (done >= base) break;
-          if (Atomics.load(bar, 2) !== 0) {
-            failed = true;
-            break;
-          }
-          if (!wait || (++spins & 255) !== 0) continue;
-          const t = clock !== undefined ? clock.now() : 0;
-          if (t0 < 0) t0 = t;
-          if (clock === undefined || t - t0 >= spinMs) Atomics.wait(bar, 1, done, 50);
-        }
+      if (!awaitUnit(bar, base, wait, spinMs)) {
+        failed = true;
+        break;
       }
-      if (failed) break;
       cursor[0] = 0;
       cursor[1] = 0;
       for (

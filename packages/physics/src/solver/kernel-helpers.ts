@@ -4,7 +4,7 @@
  */
 
 import { rotateFrom } from '../math/quaternion.js';
-import { claimBlock } from '../threads/block-claim.js';
+import { awaitBlocks, claimBlock } from '../threads/block-claim.js';
 import type { KernelHelper } from '../threads/kernel-types.js';
 import { coloredBodies2D, coloredPack2D, coloredRows2D, coloredUnpack2D } from './coloring-kernel.js';
 import { prepareRowMasses, prepareRowWarmStart } from './prepare-contacts-kernel.js';
@@ -22,7 +22,8 @@ import { stripCut2D } from './strips-kernel.js';
  * solver/strip-plan-kernel.ts: the strip cut and the pack layout, for stripPlan2D); 12 approachSpeeds
  * (solver/stages-kernel.ts, for solveColored2D); 13 and 14 prepareContactRows' passes
  * (solver/prepare-contacts-kernel.ts: masses and material, warm start); 15 rotateFrom
- * (math/quaternion.ts, for finishBodies' 3D orientations). A kernel's hot loops live here when the kernel runs
+ * (math/quaternion.ts, for finishBodies' 3D orientations); 16 awaitBlocks (block-claim.ts: a thread's
+ * wait for the next unit, for the kernels of 9). A kernel's hot loops live here when the kernel runs
  * once a step: V8 then compiles the loops as whole functions with full type feedback.
  * @category Threads
  */
@@ -43,4 +44,5 @@ export const KERNEL_HELPERS: readonly KernelHelper[] = /* @__PURE__ */ Object.fr
   prepareRowMasses,
   prepareRowWarmStart,
   rotateFrom,
+  awaitBlocks,
 ]);

@@ -13,7 +13,7 @@
  */
 
 import type { rotateFrom } from '../math/quaternion.js';
-import type { claimBlock } from '../threads/block-claim.js';
+import type { awaitBlocks, claimBlock } from '../threads/block-claim.js';
 import type { KernelArray, KernelHelper } from '../threads/kernel-types.js';
 import {
   BS2_DX,
@@ -428,33 +428,18 @@ export function restitutionColored2D(
     spinMs = P[RESTITUTION.SPIN_US]! / 1000;
   const C = plan[PLAN.COLORS]!;
   const wait = part !== 0 || P[RESTITUTION.MAY_WAIT] === 1;
-  const clock = (globalThis as { performance?: { now(): number } }).performance;
   const FIRST = 1024;
   // Unit 0: the rows' targets and caps; then `iterations` passes of C + 1 colours each.
   const units = 1 + iterations * (C + 1);
   let base = 0,
     failed = false;
-  // Waits until every block of the units before the current one (`base` blocks) is done; false if
-  // another thread failed.
-  const earlierDone = (): boolean => {
-    let spins = 0,
-      t0 = -1;
-    for (;;) {
-      const done = Atomics.load(bar, 1);
-      if (done >= base) return true;
-      if (Atomics.load(bar, 2) !== 0) return false;
-      if (!wait || (++spins & 255) !== 0) continue;
-      const t = clock !== undefined ? clock.now() : 0;
-      if (t0 < 0) t0 = t;
-      if (clock === undefined || t - t0 >= spinMs) Atomics.wait(bar, 1, done, 50);
-    }
-  };
   // Blocks are claimed by flags, each thread from its own share of a unit first (claimBlock,
   // threads/block-claim.ts), as solveColored2D: with strips a thread keeps the strips, and their
   // bodies, it solved in the substeps.
   const claim = A[RESTITUTION.CLAIM] as Int32Array,
     threads = plan[PLAN.THREADS]! > 0 ? plan[PLAN.THREADS]! : 1;
   const claimNext = H[9] as typeof claimBlock,
+    awaitUnit = H[16] as typeof awaitBlocks,
     cursor = new Int32Array(2);
   for (let u = 0; u < units; u++) {
     const c = u === 0 ? -1 : (u - 1) % (C + 1);
@@ -463,14 +448,14 @@ export function restitutionColored2D(
     const end = base + count;
     // From unit 1 on: nothing to do unless some row bounces (known once unit 0 is done).
     if (u === 1) {
-      if (!earlierDone()) {
+      if (!awaitUnit(bar, base, wait, spinMs)) {
         failed = true;
         break;
       }
       if (Atomics.load(bar, 3) === 0) break;
     }
     if (count > 0) {
-      if (!earlierDone()) {
+      if (!awaitUnit(bar, base, wait, spinMs)) {
         failed = true;
         break;
       }
