@@ -15,6 +15,7 @@
  */
 
 import { type ContactBuffer, storeWarmStart } from '../collision/contacts.js';
+import type { KernelArray } from '../threads/kernel-types.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { measureApproach, prepareContacts } from './ball-prepare.js';
 import { solve2D, solve3D, warmStart2D, warmStart3D } from './ball-sweeps.js';
@@ -22,6 +23,8 @@ import { BS2_INV_MASS, BS2_STRIDE, BS2_VX, BS2_VY, BS3_INV_MASS, BS3_STRIDE, BS3
 import { solveColoredSubsteps, startStripPlan, useColoredSolve } from './coloring.js';
 import { ballContactHertz, ballContactPushSpeed, ballStickSpeed, contactLength } from './contact-scale.js';
 import { applyImpacts, releaseImpactedRows } from './impacts.js';
+import * as RESTITUTION from './slots/restitution.js';
+import { restitutionTargets } from './stages-kernel.js';
 import { restitutionOnThreads, storeWarmStartOnThreads } from './stages-threads.js';
 import { downward3Into, downwardInto, markFirstRelaxRows } from './support.js';
 
@@ -178,6 +181,10 @@ function makeSoftInto(out: Float64Array, at: number, hertz: number, zeta: number
 /** Scratch of applyRestitution: the indices of the rows that take part, in row order. Not world state. */
 let restitutionRows = new Int32Array(256);
 
+/** Scratch of applyRestitution: restitutionTargets' arrays (the RESTITUTION slots it reads) and numbers. Not world state. */
+const targetArgs: KernelArray[] = [];
+const targetParams = new Float64Array(RESTITUTION.THREE_D + 1);
+
 /**
  * Restitution, after Box2D v3 b2ApplyRestitution but solved as a small LCP rather than one pass.
  * A contact that approached faster than the threshold and carried an impulse this step must leave
@@ -193,8 +200,6 @@ let restitutionRows = new Int32Array(256);
 function applyRestitution(world: PhysicsWorld, buf: ContactBuffer): void {
   if (restitutionOnThreads(world, buf)) return; // after a coloured solve: by colours (solver/stages-threads.ts)
   const cs = world.collision;
-  const threshold = cs.settings.restitutionThreshold,
-    elasticThreshold = cs.settings.elasticRestitutionThreshold;
   const iterations = cs.settings.restitutionIterations;
   const n = buf.count,
     sb = cs.bodyState;
@@ -207,41 +212,40 @@ function applyRestitution(world: PhysicsWorld, buf: ContactBuffer): void {
     NY = buf.ny,
     NZ = buf.nz;
   const NM = buf.normalMass,
-    E = buf.restitution,
-    RV = buf.relativeVelocity,
-    IV = buf.impactVelocity;
+    RV = buf.relativeVelocity;
   const MAXN = buf.maxNormalImpulse,
     TOT = buf.totalNormalImpulse,
     IMP = buf.impulse;
-  // Reuse relativeVelocity as the target speed, maxNormalImpulse as the rebound's accumulated impulse
-  // and totalNormalImpulse as its cap (all spent by now); a negative target marks a contact that
-  // takes no part. A contact that closed its gap only in the last substep may still be approaching:
-  // the impulse to stop that is part of its compression, so it counts toward the cap too.
-  // The rows that take part, in row order (the passes below visit only these).
+  // The rows' targets and caps (solver/stages-kernel.ts restitutionTargets, the coloured stage's first
+  // unit too): relativeVelocity becomes the target speed (-1: the row takes no part), maxNormalImpulse
+  // the rebound's accumulated impulse and totalNormalImpulse its cap (all spent by now). A contact that
+  // closed its gap only in the last substep may still be approaching: the impulse to stop that is part
+  // of its compression, so it counts toward the cap too.
+  const TA = targetArgs;
+  TA.length = 0;
+  TA[RESTITUTION.BODY_STATE] = sb;
+  TA[RESTITUTION.IA] = IA;
+  TA[RESTITUTION.IB] = IB;
+  TA[RESTITUTION.NX] = NX;
+  TA[RESTITUTION.NY] = NY;
+  TA[RESTITUTION.NZ] = NZ;
+  TA[RESTITUTION.NORMAL_MASS] = NM;
+  TA[RESTITUTION.RESTITUTION] = buf.restitution;
+  TA[RESTITUTION.RELATIVE_VELOCITY] = RV;
+  TA[RESTITUTION.IMPACT_VELOCITY] = buf.impactVelocity;
+  TA[RESTITUTION.MAX_NORMAL_IMPULSE] = MAXN;
+  TA[RESTITUTION.TOTAL_NORMAL_IMPULSE] = TOT;
+  const TP = targetParams;
+  TP[RESTITUTION.THRESHOLD] = cs.settings.restitutionThreshold;
+  TP[RESTITUTION.ELASTIC_THRESHOLD] = cs.settings.elasticRestitutionThreshold;
+  TP[RESTITUTION.THREE_D] = is2D ? 0 : 1;
+  const bouncing = restitutionTargets(TA, TP, 0, n);
+  if (bouncing === 0) return;
+  // The rows that take part (a target >= 0), in row order: the passes below visit only these.
   if (restitutionRows.length < n) restitutionRows = new Int32Array(Math.max(n, 2 * restitutionRows.length));
   const rows = restitutionRows;
   let taking = 0;
-  let bouncing = 0;
-  for (let i = 0; i < n; i++) {
-    const e = E[i]!;
-    if (MAXN[i] === 0) {
-      RV[i] = -1;
-      continue;
-    }
-    rows[taking++] = i;
-    MAXN[i] = 0;
-    if (e > 0 && RV[i]! < -(e >= 1 ? elasticThreshold : threshold)) {
-      RV[i] = -e * IV[i]!;
-      const a = IA[i]! * S,
-        b = IB[i]! * S;
-      let vn = (sb[b + BS2_VX]! - sb[a + BS2_VX]!) * NX[i]! + (sb[b + BS2_VY]! - sb[a + BS2_VY]!) * NY[i]!;
-      if (!is2D) vn += (sb[b + BS3_VZ]! - sb[a + BS3_VZ]!) * NZ[i]!;
-      const stop = vn < 0 ? -NM[i]! * vn : 0;
-      TOT[i] = stop + e * (TOT[i]! + stop);
-      bouncing++;
-    } else RV[i] = 0;
-  }
-  if (bouncing === 0) return;
+  for (let i = 0; i < n; i++) if (RV[i]! >= 0) rows[taking++] = i;
   for (let it = 0; it < iterations; it++) {
     for (let k = 0; k < taking; k++) {
       const i = rows[k]!;

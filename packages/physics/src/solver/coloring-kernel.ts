@@ -4,7 +4,7 @@
  * says when.
  */
 
-import type { claimBlock } from '../threads/block-claim.js';
+import type { awaitBlocks, claimBlock } from '../threads/block-claim.js';
 import type { KernelArray, KernelHelper } from '../threads/kernel-types.js';
 import {
   BS2_DX,
@@ -37,7 +37,7 @@ import {
 import * as APPROACH from './slots/approach.js';
 import * as PLAN from './slots/colored-plan.js';
 import * as SOLVE from './slots/colored-solve.js';
-import type { approach2D } from './stages-kernel.js';
+import type { approachSpeeds } from './stages-kernel.js';
 
 /**
  * Thread kernel (step/kernel-table.ts rules: self-contained) of the coloured substeps, run by every
@@ -61,7 +61,7 @@ import type { approach2D } from './stages-kernel.js';
  * blocks in Atomics.wait (a browser's main thread, which may not block, spins on).
  * A and P: the SOLVE slots (solver/slots/colored-solve.ts), the plan at A[SOLVE.PLAN] its PLAN slots
  * (solver/slots/colored-plan.ts), and
- * approach2D's arrays from A[SOLVE.APPROACH] (measureApproach of the buffer's rows, run as the unit after
+ * approachSpeeds's arrays from A[SOLVE.APPROACH] (measureApproach of the buffer's rows, run as the unit after
  * the packing when P[SOLVE.MEASURE_APPROACH] = 1); the parts running are 0 .. plan[PLAN.THREADS] - 1.
  * The arithmetic of each row and body is
  * that of solver/contact-solver.ts's buffer-order loops (solve2D, warmStart2D, the body stages), with
@@ -101,7 +101,6 @@ export function solveColored2D(
     pair = A[SOLVE.PAIR] as Int32Array;
   const tot = A[SOLVE.TOT] as Float64Array;
   const spinMs = P[SOLVE.SPIN_US]! / 1000;
-  const clock = (globalThis as { performance?: { now(): number } }).performance;
   // The blocks' loops, each a function of its own (KERNEL_HELPERS, passed in as H): called thousands
   // of times a step, V8 compiles them whole, with every branch's type feedback. Inline in this
   // function, which runs once a step, they ran in code compiled on the stack (OSR) partway through a
@@ -112,13 +111,13 @@ export function solveColored2D(
     unpackRows = H[1] as typeof coloredUnpack2D;
   const bodyStage = H[2] as typeof coloredBodies2D,
     rowPass = H[3] as typeof coloredRows2D;
-  const approachRows = H[12] as typeof approach2D;
+  const approachRows = H[12] as typeof approachSpeeds;
   // The approach speeds' blocks (when P[SOLVE.MEASURE_APPROACH] = 1), of APPROACH_ROWS buffer rows (as solveColoredBlocks2D),
-  // with approach2D's parameters: gravity, BodyType.Dynamic and where its arrays start in A (31).
+  // with approachSpeeds's parameters: gravity, BodyType.Dynamic, where its arrays start in A (31), 2D (THREE_D 0).
   const APPROACH_ROWS = 2048,
     rows = P[SOLVE.ROWS]!,
     approachBlocks = P[SOLVE.MEASURE_APPROACH] === 1 ? Math.ceil(rows / APPROACH_ROWS) : 0;
-  const approachParams = new Float64Array(5);
+  const approachParams = new Float64Array(APPROACH.PARAMS);
   approachParams[APPROACH.GX] = P[SOLVE.GX]!;
   approachParams[APPROACH.GY] = P[SOLVE.GY]!;
   approachParams[APPROACH.GZ] = P[SOLVE.GZ]!;
@@ -145,6 +144,7 @@ export function solveColored2D(
   const claim = A[SOLVE.CLAIM] as Int32Array,
     threads = plan[PLAN.THREADS]! > 0 ? plan[PLAN.THREADS]! : 1;
   const claimNext = H[9] as typeof claimBlock,
+    awaitUnit = H[16] as typeof awaitBlocks,
     cursor = new Int32Array(2);
   let base = 0,
     failed = false;
@@ -177,23 +177,10 @@ export function solveColored2D(
     const end = base + count;
     if (count > 0) {
       // Wait until every block of the earlier units is done: spin a while, then block.
-      if (Atomics.load(bar, 1) < base) {
-        let t0 = -1,
-          spins = 0;
-        for (;;) {
-          const done = Atomics.load(bar, 1);
-          if (done >= base) break;
-          if (Atomics.load(bar, 2) !== 0) {
-            failed = true;
-            break;
-          }
-          if (!wait || (++spins & 255) !== 0) continue;
-          const t = clock !== undefined ? clock.now() : 0;
-          if (t0 < 0) t0 = t;
-          if (clock === undefined || t - t0 >= spinMs) Atomics.wait(bar, 1, done, 50);
-        }
+      if (!awaitUnit(bar, base, wait, spinMs)) {
+        failed = true;
+        break;
       }
-      if (failed) break;
       cursor[0] = 0;
       cursor[1] = 0;
       for (

@@ -380,7 +380,7 @@ function solveArguments(cs: CollisionState, buf: ContactBuffer, s: ColorScratch,
 }
 
 /**
- * Appends approach2D's arrays for `buf`'s rows (the APPROACH slots of solver/slots/approach.ts, from
+ * Appends approachSpeeds's arrays for `buf`'s rows (the APPROACH slots of solver/slots/approach.ts, from
  * A.length on) to `A`; returns `A`.
  * @category Collision
  */

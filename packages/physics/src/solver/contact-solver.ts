@@ -1,14 +1,9 @@
 import type { ContactBuffer } from '../collision/contacts.js';
 import { endWokenContacts } from '../collision/events.js';
 import { BodyType } from '../collision/state.js';
-import { rotateInPlace } from '../math/quaternion.js';
 import { isShared, sharedFloat64, sharedLike } from '../threads/pool.js';
-import { reportNonFinite } from '../world/errors.js';
 import type { PhysicsWorld } from '../world/options.js';
 import {
-  BI_CORR_X,
-  BI_CORR_Y,
-  BI_CORR_Z,
   BS2_DX,
   BS2_DY,
   BS2_INV_INERTIA,
@@ -20,8 +15,6 @@ import {
   BS3_DY,
   BS3_DZ,
   BS3_INV_INERTIA,
-  BS3_INV_MASS,
-  BS3_PUSHED,
   BS3_STRIDE,
   BS3_VX,
   BS3_VY,
@@ -29,9 +22,6 @@ import {
   BS3_WX,
   BS3_WY,
   BS3_WZ,
-  BX_BASE_X,
-  BX_BASE_Y,
-  BX_BASE_Z,
   BX_ROT_X,
   BX_ROT_Y,
   BX_ROT_Z,
@@ -72,7 +62,7 @@ import {
   solveJoints,
   warmStartJoints,
 } from './rows-joints-2d.js';
-import { finish2DStage, gatherFill2DStage } from './stages-threads.js';
+import { finishStage, gatherFillStage } from './stages-threads.js';
 
 /**
  * Collide stage, part 3: the contact solver, Box2D v3's "soft step" (Catto, "Solver2D", 2024; Box2D
@@ -191,7 +181,6 @@ function solveContacts(world: PhysicsWorld): void {
     storeManifoldImpulses(cs);
   } else applyManifold3DRestitution(world);
   finishBodies(world, buf);
-  containInBoundary(world);
   finishManifolds(world);
   if (world.dimensions === 3) finishManifolds3D(world);
   finishJoints(world, hs);
@@ -230,7 +219,6 @@ function stride(world: PhysicsWorld): number {
  */
 function gatherBodies(world: PhysicsWorld, buf: ContactBuffer): void {
   const cs = world.collision;
-  const c = world.components;
   const n = buf.count;
   const mark = cs.solverMark,
     index = cs.solverIndex;
@@ -275,9 +263,7 @@ function gatherBodies(world: PhysicsWorld, buf: ContactBuffer): void {
   count = gatherManifoldBodies(world, count); // the shapes' manifolds join (solver/manifold-prepare-2d.ts)
   if (world.dimensions === 3) count = gatherManifold3DBodies(world, count); // and the 3D shapes' (solver/manifold-rows-3d.ts)
   if (world.dimensions === 3) count = gatherJoint3DBodies(world, count); // and the 3D joints' (joints/solver-3d.ts)
-  list = cs.solverBodies;
   count = gatherJointBodies(world, count); // the joints' bodies join the contacts'
-  list = cs.solverBodies;
   cs.solverBodyCount = count;
 
   const S = stride(world);
@@ -289,72 +275,11 @@ function gatherBodies(world: PhysicsWorld, buf: ContactBuffer): void {
     cs.bodyState = shared ? sharedFloat64(sizeS) : new Float64Array(sizeS);
     cs.bodyExtra = shared ? sharedFloat64(sizeE) : new Float64Array(sizeE);
   }
-  const sb = cs.bodyState,
-    ex = cs.bodyExtra;
-  sb.fill(0, 0, S);
-  const px = c.Position.x,
-    py = c.Position.y,
-    pz = c.Position.z;
-  const vx = c.Velocity.x,
-    vy = c.Velocity.y,
-    vz = c.Velocity.z;
-  const wx = c.AngularVelocity.x,
-    wy = c.AngularVelocity.y,
-    wz = c.AngularVelocity.z;
-  const h = world.h;
-  const g = world.gravity;
-  const gx = g[0]! * h,
-    gy = g[1]! * h,
-    gz = g[2]! * h;
-  const type = cs.bodyType,
-    invMass = cs.invMass,
-    invInertia = cs.invInertia;
-  const fx = c.Force.x,
-    fy = c.Force.y,
-    fz = c.Force.z;
+  cs.bodyState.fill(0, 0, S);
   // Joint rows push their bodies without marking them: with joints, no body counts as free flying.
   const pushed = jointsToSolve(world) ? 1 : 0;
-  // 2D: the fill is a range kernel, run on the threads or inline (solver/stages-threads.ts).
-  if (S === BS2_STRIDE) {
-    gatherFill2DStage(world, count, pushed);
-    return;
-  }
-  for (let k = 1; k < count; k++) {
-    const e = list[k]!;
-    const o = k * BS3_STRIDE,
-      q = k * BX_STRIDE;
-    const ii = invInertia[e]!;
-    const dynamic = type[e] === BodyType.Dynamic;
-    // A kinematic body's spin is part of its surface velocity (v + w x r) that its contacts see; it is not
-    // integrated here (its rotation owed stays 0: the integrator already turned it, and it has no inverse inertia).
-    const spins = type[e] === BodyType.Kinematic;
-    // The integrator moved x by v0 h + g h^2 / 2 (plus anything of its own, e.g. forces); keep that
-    // extra as the base. v = v0 + g h here, so the base is x - v h + g h^2 / 2 for dynamic bodies.
-    // A body a force acted on was not given the exact free fall (semiImplicitEuler): no gravity base,
-    // and it counts as pushed so finishBodies does not give it the free-flight correction either.
-    const forced = fx[e] !== 0 || fy[e] !== 0 || fz[e] !== 0;
-    const gb = dynamic && !forced ? 0.5 * h : 0;
-    const held = forced ? 1 : pushed;
-    ex[q + BX_BASE_X] = px[e]! - vx[e]! * h + gx * gb;
-    ex[q + BX_BASE_Y] = py[e]! - vy[e]! * h + gy * gb;
-    ex[q + BX_BASE_Z] = pz[e]! - vz[e]! * h + gz * gb;
-    // The integrator turned the body by w h; the substeps will turn it by sum w_k h_s instead.
-    ex[q + BX_ROT_X] = ii > 0 ? -wx[e]! * h : 0;
-    ex[q + BX_ROT_Y] = ii > 0 ? -wy[e]! * h : 0;
-    ex[q + BX_ROT_Z] = ii > 0 ? -wz[e]! * h : 0;
-    sb[o + BS3_VX] = dynamic ? vx[e]! - gx : vx[e]!;
-    sb[o + BS3_VY] = dynamic ? vy[e]! - gy : vy[e]!;
-    sb[o + BS3_VZ] = dynamic ? vz[e]! - gz : vz[e]!;
-    sb[o + BS3_WX] = ii > 0 || spins ? wx[e]! : 0;
-    sb[o + BS3_WY] = ii > 0 || spins ? wy[e]! : 0;
-    sb[o + BS3_WZ] = ii > 0 || spins ? wz[e]! : 0;
-    sb[o + BS3_DX] = 0;
-    sb[o + BS3_DY] = 0;
-    sb[o + BS3_DZ] = 0;
-    sb[o + BS3_INV_MASS] = invMass[e]!;
-    sb[o + BS3_INV_INERTIA] = ii;
-    sb[o + BS3_PUSHED] = held;
-  }
+  // The fill is a range kernel, run on a 2D world's threads or inline (solver/stages-threads.ts).
+  gatherFillStage(world, count, pushed);
 }
 
 /** Adds one substep of gravity to the dynamic solver bodies. */
@@ -409,132 +334,11 @@ function integratePositions(world: PhysicsWorld, hs: number): void {
 }
 
 /**
- * Writes the solver bodies back: velocities; positions (base + displacement) and orientations (turned
- * by the rotation owed) of dynamic bodies. Records the deepest overlap left, measured linearly as in
- * the solve.
+ * Stages 7 and 8 of the solver (see contactSolverSystem): writes the solver bodies back (velocities;
+ * positions, base + displacement, and angles or orientations, turned by the rotation owed, of dynamic
+ * bodies), keeps them inside the boundary box, and records the deepest overlap left, measured linearly
+ * as in the solve: range kernels, run on a 2D world's threads or inline (solver/stages-threads.ts finishStage).
  */
 function finishBodies(world: PhysicsWorld, buf: ContactBuffer): void {
-  // 2D: a range kernel with the boundary box, run on the threads or inline (solver/stages-threads.ts).
-  if (world.dimensions === 2) {
-    finish2DStage(world, buf);
-    return;
-  }
-  const cs = world.collision;
-  const c = world.components;
-  const list = cs.solverBodies,
-    count = cs.solverBodyCount,
-    type = cs.bodyType,
-    sb = cs.bodyState,
-    ex = cs.bodyExtra;
-  const imp = cs.bodyImpact;
-  const px = c.Position.x,
-    py = c.Position.y,
-    pz = c.Position.z;
-  const vx = c.Velocity.x,
-    vy = c.Velocity.y,
-    vz = c.Velocity.z;
-  const wx = c.AngularVelocity.x,
-    wy = c.AngularVelocity.y,
-    wz = c.AngularVelocity.z;
-  const q = c.Orientation;
-  const g = world.gravity,
-    fh = (-0.5 * world.h * world.h) / cs.settings.solverSubsteps;
-  const fx = g[0]! * fh,
-    fy = g[1]! * fh,
-    fz = g[2]! * fh;
-  let check = 0;
-  for (let k = 1; k < count; k++) {
-    const e = list[k]!;
-    if (type[e] !== BodyType.Dynamic) continue;
-    const o = k * BS3_STRIDE,
-      r = k * BX_STRIDE;
-    const free = sb[o + BS3_PUSHED] === 0 ? 1 : 0;
-    vx[e] = sb[o + BS3_VX]!;
-    vy[e] = sb[o + BS3_VY]!;
-    vz[e] = sb[o + BS3_VZ]!;
-    const x = ex[r + BX_BASE_X]! + sb[o + BS3_DX]! + imp[k * IMPACT_STRIDE + BI_CORR_X]! + free * fx,
-      y = ex[r + BX_BASE_Y]! + sb[o + BS3_DY]! + imp[k * IMPACT_STRIDE + BI_CORR_Y]! + free * fy;
-    const z = ex[r + BX_BASE_Z]! + sb[o + BS3_DZ]! + imp[k * IMPACT_STRIDE + BI_CORR_Z]! + free * fz;
-    px[e] = x;
-    py[e] = y;
-    pz[e] = z;
-    check += x + y + z + sb[o + BS3_VX]! + sb[o + BS3_VY]! + sb[o + BS3_VZ]!;
-    if (sb[o + BS3_INV_INERTIA]! > 0) {
-      wx[e] = sb[o + BS3_WX]!;
-      wy[e] = sb[o + BS3_WY]!;
-      wz[e] = sb[o + BS3_WZ]!;
-      rotateInPlace(q.x, q.y, q.z, q.w, e, ex[r + BX_ROT_X]!, ex[r + BX_ROT_Y]!, ex[r + BX_ROT_Z]!);
-    }
-  }
-  if (check - check !== 0) reportNonFinite(world, list.subarray(1, count), 'collide');
-  let deepest = 0;
-  const IA = buf.ia,
-    IB = buf.ib,
-    S0 = buf.separation,
-    NX = buf.nx,
-    NY = buf.ny,
-    NZ = buf.nz;
-  // The start separations already hold the impact corrections (solver/impacts.ts).
-  for (let i = 0, n = buf.count; i < n; i++) {
-    const a = IA[i]! * BS3_STRIDE,
-      b = IB[i]! * BS3_STRIDE;
-    const s =
-      S0[i]! +
-      (sb[b + BS3_DX]! - sb[a + BS3_DX]!) * NX[i]! +
-      (sb[b + BS3_DY]! - sb[a + BS3_DY]!) * NY[i]! +
-      (sb[b + BS3_DZ]! - sb[a + BS3_DZ]!) * NZ[i]!;
-    if (s < deepest) deepest = s;
-  }
-  cs.stats.maxOverlap = -deepest;
-}
-
-/** Stage 8 of the solver (see contactSolverSystem): keeps the solver's dynamic bodies inside the boundary box. */
-function containInBoundary(world: PhysicsWorld): void {
-  const cs = world.collision;
-  const box = cs.boundary;
-  // 2D: done with finishBodies (finish2DStage, solver/stages-threads.ts).
-  if (!box.enabled || world.dimensions === 2) return;
-  const c = world.components;
-  const P = c.Position,
-    V = c.Velocity,
-    radius = c.Ball.radius,
-    eM = c.Material.restitution;
-  const list = cs.solverBodies,
-    count = cs.solverBodyCount,
-    type = cs.bodyType;
-  const dims = world.dimensions;
-  const g = world.gravity;
-  const pos = [P.x, P.y, P.z],
-    vel = [V.x, V.y, V.z];
-  for (let k = 1; k < count; k++) {
-    const e = list[k]!;
-    if (type[e] !== BodyType.Dynamic) continue;
-    const r = radius[e]!;
-    // Potential energy a unit mass gains by being put back (-g . dx), J/kg.
-    let gain = 0;
-    for (let d = 0; d < dims; d++) {
-      const p = pos[d]!,
-        v = vel[d]!;
-      const lo = box.min[d]! + r,
-        hi = box.max[d]! - r;
-      const x = p[e]!;
-      if (x < lo && lo <= hi) {
-        p[e] = lo;
-        gain -= g[d]! * (lo - x);
-        if (v[e]! < 0) v[e] = -Math.max(box.restitution, eM[e]!) * v[e]!;
-      } else if (x > hi && lo <= hi) {
-        p[e] = hi;
-        gain -= g[d]! * (hi - x);
-        if (v[e]! > 0) v[e] = -Math.max(box.restitution, eM[e]!) * v[e]!;
-      }
-    }
-    // Putting a body back up against gravity must not create energy: its kinetic energy pays for the
-    // potential energy gained (|v| scaled so |v'|^2 / 2 = |v|^2 / 2 - gain, or stopped if that is < 0).
-    if (gain > 0) {
-      let v2 = 0;
-      for (let d = 0; d < dims; d++) v2 += vel[d]![e]! * vel[d]![e]!;
-      const f = v2 > 2 * gain ? Math.sqrt(1 - (2 * gain) / v2) : 0;
-      for (let d = 0; d < dims; d++) vel[d]![e] = vel[d]![e]! * f;
-    }
-  }
+  finishStage(world, buf);
 }

@@ -1,17 +1,19 @@
 /**
- * The 2D contact solver's per-body and per-row stages (solver/contact-solver.ts gatherBodies' fill, measureApproach,
- * finishBodies) and its restitution stage by colours, as thread kernels (step/kernel-table.ts rules:
- * self-contained functions the worker threads also run as source text). solver/stages-threads.ts
- * runs them, on the threads or inline on one thread, and says when.
+ * The contact solver's per-body and per-row stages (solver/contact-solver.ts gatherBodies' fill,
+ * measureApproach, finishBodies with containInBoundary; the restitution stage's targets), 2D and 3D, and
+ * its 2D restitution stage by colours, as thread kernels (step/kernel-table.ts rules: self-contained
+ * functions the worker threads also run as source text). solver/stages-threads.ts runs them, on the
+ * threads or inline on one thread, and says when.
  *
- * The per-body and per-row kernels do each body's or row's arithmetic on its own (these are the 2D
- * stages' only code: solver/contact-solver.ts keeps the 3D loops), so their results are the same to the
- * bit whichever thread runs a body or row. The restitution kernel visits the rows colour by colour (the
- * coloured solve's colours, solver/coloring.ts), not in buffer order: deterministic, and the same on
- * any number of threads (see solver/stages-threads.ts).
+ * The per-body and per-row kernels do each body's or row's arithmetic on its own (they are these
+ * stages' only code, in both dimensions), so their results are the same to the bit whichever thread
+ * runs a body or row. The restitution kernel visits the rows colour by colour (the coloured solve's
+ * colours, solver/coloring.ts), not in buffer order: deterministic, and the same on any number of
+ * threads (see solver/stages-threads.ts).
  */
 
-import type { claimBlock } from '../threads/block-claim.js';
+import type { rotateFrom } from '../math/quaternion.js';
+import type { awaitBlocks, claimBlock } from '../threads/block-claim.js';
 import type { KernelArray, KernelHelper } from '../threads/kernel-types.js';
 import {
   BS2_DX,
@@ -23,6 +25,19 @@ import {
   BS2_VX,
   BS2_VY,
   BS2_W,
+  BS3_DX,
+  BS3_DY,
+  BS3_DZ,
+  BS3_INV_INERTIA,
+  BS3_INV_MASS,
+  BS3_PUSHED,
+  BS3_STRIDE,
+  BS3_VX,
+  BS3_VY,
+  BS3_VZ,
+  BS3_WX,
+  BS3_WY,
+  BS3_WZ,
   BX_BASE_X,
   BX_BASE_Y,
   BX_BASE_Z,
@@ -39,17 +54,24 @@ import * as GATHER from './slots/gather-fill.js';
 import * as RESTITUTION from './slots/restitution.js';
 
 /**
- * Fills the 2D solver rows of solver bodies lo + 1 .. hi (gatherBodies' second loop, solver/contact-solver.ts), one
- * body at a time. `ids`: the solver bodies' entity ids from solver index 1 (ids[i] is solver body
- * i + 1). A and P: the GATHER slots (solver/slots/gather-fill.ts; slots z, and the turns about x and y,
- * of the extra rows are 0 in 2D). Returns 0.
+ * Fills the solver rows of solver bodies lo + 1 .. hi (gatherBodies' second loop, solver/contact-solver.ts),
+ * one body at a time, of a 2D or a 3D world (P[GATHER.THREE_D]: rows of BS2_STRIDE or BS3_STRIDE): the
+ * velocity with this step's gravity rewound, zero displacement, inverse mass and inertia, whether it
+ * counts as pushed; in the extra row, where the integrator put it beyond x0 + v h and the rotation
+ * still owed. `ids`: the solver bodies' entity ids from solver index 1 (ids[i] is solver body i + 1).
+ * A and P: the GATHER slots (solver/slots/gather-fill.ts; a 2D world's z, and turns about x and y, are
+ * 0 in the extra rows and not read). Returns 0.
  * @category Collision
  */
-export function gatherFill2D(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
+export function gatherFill(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
   const px = A[GATHER.PX] as Float64Array,
-    py = A[GATHER.PY] as Float64Array;
+    py = A[GATHER.PY] as Float64Array,
+    pz = A[GATHER.PZ] as Float64Array;
   const vx = A[GATHER.VX] as Float64Array,
     vy = A[GATHER.VY] as Float64Array,
+    vz = A[GATHER.VZ] as Float64Array;
+  const wx = A[GATHER.WX] as Float64Array,
+    wy = A[GATHER.WY] as Float64Array,
     wz = A[GATHER.WZ] as Float64Array;
   const fx = A[GATHER.FX] as Float64Array,
     fy = A[GATHER.FY] as Float64Array,
@@ -62,48 +84,76 @@ export function gatherFill2D(A: KernelArray[], P: Float64Array, ids: Int32Array 
   const h = P[GATHER.H]!,
     gx = P[GATHER.GX_H]!,
     gy = P[GATHER.GY_H]!,
+    gz = P[GATHER.GZ_H]!,
     pushed = P[GATHER.PUSHED]!,
     DYNAMIC = P[GATHER.DYNAMIC]!,
     KINEMATIC = P[GATHER.KINEMATIC]!;
+  const is3D = P[GATHER.THREE_D] === 1,
+    S = is3D ? BS3_STRIDE : BS2_STRIDE;
   const list = ids as Int32Array;
   for (let i = lo; i < hi; i++) {
     const k = i + 1,
       e = list[i]!;
-    const o = k * BS2_STRIDE,
+    const o = k * S,
       q = k * BX_STRIDE;
     const ii = invInertia[e]!;
     const dynamic = type[e] === DYNAMIC;
+    // A kinematic body's spin is part of its surface velocity (v + w x r) that its contacts see; it is
+    // not integrated here (its rotation owed stays 0: the integrator already turned it).
     const spins = type[e] === KINEMATIC;
+    // The integrator moved x by v0 h + g h^2 / 2 (plus anything of its own, e.g. forces); keep that
+    // extra as the base: x - v h + g h^2 / 2 for a dynamic body, since v = v0 + g h here. A body a
+    // force acted on was not given the exact free fall: no gravity base, and it counts as pushed so
+    // finishBodies does not give it the free-flight correction either.
     const forced = fx[e] !== 0 || fy[e] !== 0 || fz[e] !== 0;
     const gb = dynamic && !forced ? 0.5 * h : 0;
     const held = forced ? 1 : pushed;
-    // Slots 2 to 4 (z, and the turn about x and y) are not read in 2D, nor their stores here.
     ex[q + BX_BASE_X] = px[e]! - vx[e]! * h + gx * gb;
     ex[q + BX_BASE_Y] = py[e]! - vy[e]! * h + gy * gb;
-    ex[q + BX_BASE_Z] = 0;
-    ex[q + BX_ROT_X] = 0;
-    ex[q + BX_ROT_Y] = 0;
+    // The integrator turned the body by w h; the substeps will turn it by sum w_k h_s instead.
     ex[q + BX_ROT_Z] = ii > 0 ? -wz[e]! * h : 0;
+    // vx and vy sit at the same offsets in both layouts.
     sb[o + BS2_VX] = dynamic ? vx[e]! - gx : vx[e]!;
     sb[o + BS2_VY] = dynamic ? vy[e]! - gy : vy[e]!;
-    sb[o + BS2_W] = ii > 0 || spins ? wz[e]! : 0;
-    sb[o + BS2_DX] = 0;
-    sb[o + BS2_DY] = 0;
-    sb[o + BS2_INV_MASS] = invMass[e]!;
-    sb[o + BS2_INV_INERTIA] = ii;
-    sb[o + BS2_PUSHED] = held;
+    if (is3D) {
+      ex[q + BX_BASE_Z] = pz[e]! - vz[e]! * h + gz * gb;
+      ex[q + BX_ROT_X] = ii > 0 ? -wx[e]! * h : 0;
+      ex[q + BX_ROT_Y] = ii > 0 ? -wy[e]! * h : 0;
+      sb[o + BS3_VZ] = dynamic ? vz[e]! - gz : vz[e]!;
+      sb[o + BS3_WX] = ii > 0 || spins ? wx[e]! : 0;
+      sb[o + BS3_WY] = ii > 0 || spins ? wy[e]! : 0;
+      sb[o + BS3_WZ] = ii > 0 || spins ? wz[e]! : 0;
+      sb[o + BS3_DX] = 0;
+      sb[o + BS3_DY] = 0;
+      sb[o + BS3_DZ] = 0;
+      sb[o + BS3_INV_MASS] = invMass[e]!;
+      sb[o + BS3_INV_INERTIA] = ii;
+      sb[o + BS3_PUSHED] = held;
+    } else {
+      ex[q + BX_BASE_Z] = 0;
+      ex[q + BX_ROT_X] = 0;
+      ex[q + BX_ROT_Y] = 0;
+      sb[o + BS2_W] = ii > 0 || spins ? wz[e]! : 0;
+      sb[o + BS2_DX] = 0;
+      sb[o + BS2_DY] = 0;
+      sb[o + BS2_INV_MASS] = invMass[e]!;
+      sb[o + BS2_INV_INERTIA] = ii;
+      sb[o + BS2_PUSHED] = held;
+    }
   }
   return 0;
 }
 
 /**
- * measureApproach (solver/contact-solver.ts) of 2D contact rows lo .. hi - 1: the normal relative velocity after the
- * impact stage and the speed at impact across a closing gap. A and P: the APPROACH slots
+ * measureApproach (solver/ball-prepare.ts) of contact rows lo .. hi - 1, 2D or 3D (P[APPROACH.THREE_D]): the normal
+ * relative velocity after the impact stage, and the speed at impact across a closing gap,
+ * v^2 = v0^2 - 2 a_n s with the relative normal acceleration a_n of gravity (a row the impact stage
+ * bounced that now separates keeps the speed that stage recorded). A and P: the APPROACH slots
  * (solver/slots/approach.ts), the arrays from A[P[APPROACH.BASE]] on (0 when they are A's only arrays; the
  * coloured solve, solver/coloring-kernel.ts, passes them after its own). Returns 0.
  * @category Collision
  */
-export function approach2D(A: KernelArray[], P: Float64Array, _ids: Int32Array | null, lo: number, hi: number): number {
+export function approachSpeeds(A: KernelArray[], P: Float64Array, _ids: Int32Array | null, lo: number, hi: number): number {
   const b0 = P[APPROACH.BASE]!;
   const IA = A[b0 + APPROACH.IA] as Int32Array,
     IB = A[b0 + APPROACH.IB] as Int32Array,
@@ -122,13 +172,17 @@ export function approach2D(A: KernelArray[], P: Float64Array, _ids: Int32Array |
     gy = P[APPROACH.GY]!,
     gz = P[APPROACH.GZ]!,
     DYNAMIC = P[APPROACH.DYNAMIC]!;
+  // vx and vy sit at the same offsets in both layouts.
+  const is3D = P[APPROACH.THREE_D] === 1,
+    S = is3D ? BS3_STRIDE : BS2_STRIDE;
   for (let i = lo; i < hi; i++) {
-    const oa = IA[i]! * BS2_STRIDE,
-      ob = IB[i]! * BS2_STRIDE;
+    const oa = IA[i]! * S,
+      ob = IB[i]! * S;
     const nx = NX[i]!,
       ny = NY[i]!,
       nz = NZ[i]!;
-    const rv = (sb[ob + BS2_VX]! - sb[oa + BS2_VX]!) * nx + (sb[ob + BS2_VY]! - sb[oa + BS2_VY]!) * ny;
+    let rv = (sb[ob + BS2_VX]! - sb[oa + BS2_VX]!) * nx + (sb[ob + BS2_VY]! - sb[oa + BS2_VY]!) * ny;
+    if (is3D) rv += (sb[ob + BS3_VZ]! - sb[oa + BS3_VZ]!) * nz;
     RV[i] = rv;
     if (IMP[i]! > 0 && rv >= 0) continue;
     const gap = S0[i]!;
@@ -146,8 +200,9 @@ export function approach2D(A: KernelArray[], P: Float64Array, _ids: Int32Array |
 }
 
 /**
- * finishBodies (solver/contact-solver.ts) of 2D solver bodies lo + 1 .. hi: velocities, positions (base +
- * displacement + impact correction, free flight's -g h h_s / 2) and angles back to the components;
+ * finishBodies (solver/contact-solver.ts) of solver bodies lo + 1 .. hi of a 2D or a 3D world
+ * (P[FINISH.THREE_D]): velocities, positions (base + displacement + impact correction, free flight's
+ * -g h h_s / 2) and angles (3D: orientations, turned by the rotation owed) back to the components;
  * then, if P[FINISH.CONTAIN] = 1, containInBoundary (solver/contact-solver.ts) of the same bodies (put back on a wall of the box
  * they went through, the outward normal velocity reflected and scaled by the restitution, the potential
  * energy gained taken from the kinetic); and the deepest overlap left over this thread's share of the
@@ -157,7 +212,7 @@ export function approach2D(A: KernelArray[], P: Float64Array, _ids: Int32Array |
  * velocities finishBodies wrote (finite exactly when they all are: the caller's check).
  * @category Collision
  */
-export function finishBodies2D(
+export function finishBodies(
   A: KernelArray[],
   P: Float64Array,
   ids: Int32Array | null,
@@ -169,79 +224,121 @@ export function finishBodies2D(
   // The three loops are functions of their own (KERNEL_HELPERS 4 to 6, solver/kernel-helpers.ts): this
   // kernel runs once a step, and inline, its later loops and the code between them first ran after V8
   // had compiled the first loop on the stack (OSR), throwing that code away at every step.
-  const check = (H[4] as typeof finishBodyRows2D)(A, P, ids as Int32Array, lo, hi);
-  if (P[FINISH.CONTAIN] === 1) (H[5] as typeof containBodies2D)(A, P, ids as Int32Array, lo, hi);
-  (A[FINISH.DEEPEST] as Float64Array)[part] = (H[6] as typeof deepestRow2D)(A, P, lo, hi);
+  const check = (H[4] as typeof finishBodyRows)(A, P, ids as Int32Array, lo, hi, H);
+  if (P[FINISH.CONTAIN] === 1) (H[5] as typeof containBodies)(A, P, ids as Int32Array, lo, hi);
+  (A[FINISH.DEEPEST] as Float64Array)[part] = (H[6] as typeof deepestRow)(A, P, lo, hi);
   return check;
 }
 
 /**
- * finishBodies2D's first loop (velocities, positions and angles back to the components, bodies lo + 1 .. hi); returns the finiteness sum. A and P as finishBodies2D's.
+ * finishBodies' first loop (velocities, positions and angles or orientations back to the components,
+ * bodies lo + 1 .. hi); returns the finiteness sum. A and P as finishBodies'; H the kernel helpers
+ * (15: math/quaternion.ts rotateFrom, which turns a 3D body's orientation).
  * @category Collision
  */
-export function finishBodyRows2D(A: KernelArray[], P: Float64Array, list: Int32Array, lo: number, hi: number): number {
+export function finishBodyRows(
+  A: KernelArray[],
+  P: Float64Array,
+  list: Int32Array,
+  lo: number,
+  hi: number,
+  H: readonly KernelHelper[],
+): number {
   const px = A[FINISH.PX] as Float64Array,
     py = A[FINISH.PY] as Float64Array,
-    vx = A[FINISH.VX] as Float64Array,
-    vy = A[FINISH.VY] as Float64Array;
-  const wz = A[FINISH.WZ] as Float64Array,
-    angle = A[FINISH.ANGLE] as Float64Array,
-    type = A[FINISH.BODY_TYPE] as Uint8Array;
-  const sb = A[FINISH.BODY_STATE] as Float64Array,
+    pz = A[FINISH.PZ] as Float64Array;
+  const vx = A[FINISH.VX] as Float64Array,
+    vy = A[FINISH.VY] as Float64Array,
+    vz = A[FINISH.VZ] as Float64Array;
+  const wx = A[FINISH.WX] as Float64Array,
+    wy = A[FINISH.WY] as Float64Array,
+    wz = A[FINISH.WZ] as Float64Array,
+    angle = A[FINISH.ANGLE] as Float64Array;
+  const qx = A[FINISH.QX] as Float64Array,
+    qy = A[FINISH.QY] as Float64Array,
+    qz = A[FINISH.QZ] as Float64Array,
+    qw = A[FINISH.QW] as Float64Array;
+  const type = A[FINISH.BODY_TYPE] as Uint8Array,
+    sb = A[FINISH.BODY_STATE] as Float64Array,
     ex = A[FINISH.BODY_EXTRA] as Float64Array,
     imp = A[FINISH.BODY_IMPACT] as Float64Array;
   const fx = P[FINISH.FREE_X]!,
     fy = P[FINISH.FREE_Y]!,
+    fz = P[FINISH.FREE_Z]!,
     DYNAMIC = P[FINISH.DYNAMIC]!,
     Q = P[FINISH.IMPACT_STRIDE]!;
+  const rotate = H[15] as typeof rotateFrom;
+  // The solver state's layout: vx and vy sit at the same offsets in both, dy follows dx.
+  const is3D = P[FINISH.THREE_D] === 1,
+    S = is3D ? BS3_STRIDE : BS2_STRIDE,
+    DX = is3D ? BS3_DX : BS2_DX,
+    PUSHED = is3D ? BS3_PUSHED : BS2_PUSHED;
   let check = 0;
   for (let i = lo; i < hi; i++) {
     const k = i + 1,
       e = list[i]!;
     if (type[e] !== DYNAMIC) continue;
-    const o = k * BS2_STRIDE,
+    const o = k * S,
       r = k * BX_STRIDE;
-    const free = sb[o + BS2_PUSHED] === 0 ? 1 : 0;
+    const free = sb[o + PUSHED] === 0 ? 1 : 0;
     vx[e] = sb[o + BS2_VX]!;
     vy[e] = sb[o + BS2_VY]!;
-    const x = ex[r + BX_BASE_X]! + sb[o + BS2_DX]! + imp[k * Q]! + free * fx,
-      y = ex[r + BX_BASE_Y]! + sb[o + BS2_DY]! + imp[k * Q + 1]! + free * fy;
+    const x = ex[r + BX_BASE_X]! + sb[o + DX]! + imp[k * Q]! + free * fx,
+      y = ex[r + BX_BASE_Y]! + sb[o + DX + 1]! + imp[k * Q + 1]! + free * fy;
     px[e] = x;
     py[e] = y;
-    check += x + y + sb[o + BS2_VX]! + sb[o + BS2_VY]!;
-    if (sb[o + BS2_INV_INERTIA]! > 0) {
-      wz[e] = sb[o + BS2_W]!;
-      angle[e] = angle[e]! + ex[r + BX_ROT_Z]!;
+    if (is3D) {
+      vz[e] = sb[o + BS3_VZ]!;
+      const z = ex[r + BX_BASE_Z]! + sb[o + BS3_DZ]! + imp[k * Q + 2]! + free * fz;
+      pz[e] = z;
+      check += x + y + z + sb[o + BS3_VX]! + sb[o + BS3_VY]! + sb[o + BS3_VZ]!;
+      if (sb[o + BS3_INV_INERTIA]! > 0) {
+        wx[e] = sb[o + BS3_WX]!;
+        wy[e] = sb[o + BS3_WY]!;
+        wz[e] = sb[o + BS3_WZ]!;
+        rotate(qx, qy, qz, qw, e, qx[e]!, qy[e]!, qz[e]!, qw[e]!, ex[r + BX_ROT_X]!, ex[r + BX_ROT_Y]!, ex[r + BX_ROT_Z]!);
+      }
+    } else {
+      check += x + y + sb[o + BS2_VX]! + sb[o + BS2_VY]!;
+      if (sb[o + BS2_INV_INERTIA]! > 0) {
+        wz[e] = sb[o + BS2_W]!;
+        angle[e] = angle[e]! + ex[r + BX_ROT_Z]!;
+      }
     }
   }
   return check;
 }
 
 /**
- * finishBodies2D's containInBoundary over bodies lo + 1 .. hi (A and P as finishBodies2D's).
+ * finishBodies' containInBoundary over bodies lo + 1 .. hi, 2D or 3D (A and P as finishBodies'): a body
+ * the step's impulses sent through a wall of the box is put back on it, its outward normal velocity
+ * reflected and scaled by the restitution; the potential energy a unit mass gains by being put back
+ * (-g . dx, J/kg) is taken from its kinetic energy (|v| scaled, or the body stopped), so energy never rises.
  * @category Collision
  */
-export function containBodies2D(A: KernelArray[], P: Float64Array, list: Int32Array, lo: number, hi: number): void {
+export function containBodies(A: KernelArray[], P: Float64Array, list: Int32Array, lo: number, hi: number): void {
   const px = A[FINISH.PX] as Float64Array,
     py = A[FINISH.PY] as Float64Array,
-    vx = A[FINISH.VX] as Float64Array,
-    vy = A[FINISH.VY] as Float64Array;
+    pz = A[FINISH.PZ] as Float64Array;
+  const vx = A[FINISH.VX] as Float64Array,
+    vy = A[FINISH.VY] as Float64Array,
+    vz = A[FINISH.VZ] as Float64Array;
   const type = A[FINISH.BODY_TYPE] as Uint8Array,
     radius = A[FINISH.RADIUS] as Float64Array,
     eM = A[FINISH.RESTITUTION] as Float64Array;
   const DYNAMIC = P[FINISH.DYNAMIC]!,
-    boxE = P[FINISH.BOX_RESTITUTION]!,
-    g0 = P[FINISH.GX]!,
-    g1 = P[FINISH.GY]!;
+    boxE = P[FINISH.BOX_RESTITUTION]!;
+  const is3D = P[FINISH.THREE_D] === 1,
+    dims = is3D ? 3 : 2;
   for (let i = lo; i < hi; i++) {
     const e = list[i]!;
     if (type[e] !== DYNAMIC) continue;
     const rad = radius[e]!;
     let gain = 0;
-    for (let d = 0; d < 2; d++) {
-      const p = d === 0 ? px : py,
-        v = d === 0 ? vx : vy,
-        g = d === 0 ? g0 : g1;
+    for (let d = 0; d < dims; d++) {
+      const p = d === 0 ? px : d === 1 ? py : pz,
+        v = d === 0 ? vx : d === 1 ? vy : vz,
+        g = P[FINISH.GX + d]!;
       const wlo = P[FINISH.MIN_X + d]! + rad,
         whi = P[FINISH.MAX_X + d]! - rad;
       const x = p[e]!;
@@ -259,33 +356,41 @@ export function containBodies2D(A: KernelArray[], P: Float64Array, list: Int32Ar
       let v2 = 0;
       v2 += vx[e]! * vx[e]!;
       v2 += vy[e]! * vy[e]!;
+      if (is3D) v2 += vz[e]! * vz[e]!;
       const f = v2 > 2 * gain ? Math.sqrt(1 - (2 * gain) / v2) : 0;
       vx[e] = vx[e]! * f;
       vy[e] = vy[e]! * f;
+      if (is3D) vz[e] = vz[e]! * f;
     }
   }
 }
 
 /**
- * finishBodies2D's deepest overlap over its share of the contact rows (floor(m lo / nb) .. floor(m hi / nb) - 1): min(0, min s), m.
+ * finishBodies' deepest overlap over its share of the contact rows (floor(m lo / nb) .. floor(m hi / nb) - 1), 2D or 3D: min(0, min s), m.
  * @category Collision
  */
-export function deepestRow2D(A: KernelArray[], P: Float64Array, lo: number, hi: number): number {
+export function deepestRow(A: KernelArray[], P: Float64Array, lo: number, hi: number): number {
   const sb = A[FINISH.BODY_STATE] as Float64Array;
   const IA = A[FINISH.IA] as Int32Array,
     IB = A[FINISH.IB] as Int32Array,
     S0 = A[FINISH.SEPARATION] as Float64Array,
     NX = A[FINISH.NX] as Float64Array,
-    NY = A[FINISH.NY] as Float64Array;
+    NY = A[FINISH.NY] as Float64Array,
+    NZ = A[FINISH.NZ] as Float64Array;
   const m = P[FINISH.ROWS]!,
     nb = P[FINISH.BODIES]!;
+  const is3D = P[FINISH.THREE_D] === 1,
+    S = is3D ? BS3_STRIDE : BS2_STRIDE,
+    DX = is3D ? BS3_DX : BS2_DX;
   const r0 = Math.floor((m * lo) / nb),
     r1 = Math.floor((m * hi) / nb);
   let deepest = 0;
   for (let i = r0; i < r1; i++) {
-    const a = IA[i]! * BS2_STRIDE,
-      b = IB[i]! * BS2_STRIDE;
-    const s = S0[i]! + (sb[b + BS2_DX]! - sb[a + BS2_DX]!) * NX[i]! + (sb[b + BS2_DY]! - sb[a + BS2_DY]!) * NY[i]!;
+    const a = IA[i]! * S,
+      b = IB[i]! * S;
+    // The start separations already hold the impact corrections (solver/impacts.ts).
+    let s = S0[i]! + (sb[b + DX]! - sb[a + DX]!) * NX[i]! + (sb[b + DX + 1]! - sb[a + DX + 1]!) * NY[i]!;
+    if (is3D) s += (sb[b + BS3_DZ]! - sb[a + BS3_DZ]!) * NZ[i]!;
     if (s < deepest) deepest = s;
   }
   return deepest;
@@ -323,33 +428,18 @@ export function restitutionColored2D(
     spinMs = P[RESTITUTION.SPIN_US]! / 1000;
   const C = plan[PLAN.COLORS]!;
   const wait = part !== 0 || P[RESTITUTION.MAY_WAIT] === 1;
-  const clock = (globalThis as { performance?: { now(): number } }).performance;
   const FIRST = 1024;
   // Unit 0: the rows' targets and caps; then `iterations` passes of C + 1 colours each.
   const units = 1 + iterations * (C + 1);
   let base = 0,
     failed = false;
-  // Waits until every block of the units before the current one (`base` blocks) is done; false if
-  // another thread failed.
-  const earlierDone = (): boolean => {
-    let spins = 0,
-      t0 = -1;
-    for (;;) {
-      const done = Atomics.load(bar, 1);
-      if (done >= base) return true;
-      if (Atomics.load(bar, 2) !== 0) return false;
-      if (!wait || (++spins & 255) !== 0) continue;
-      const t = clock !== undefined ? clock.now() : 0;
-      if (t0 < 0) t0 = t;
-      if (clock === undefined || t - t0 >= spinMs) Atomics.wait(bar, 1, done, 50);
-    }
-  };
   // Blocks are claimed by flags, each thread from its own share of a unit first (claimBlock,
   // threads/block-claim.ts), as solveColored2D: with strips a thread keeps the strips, and their
   // bodies, it solved in the substeps.
   const claim = A[RESTITUTION.CLAIM] as Int32Array,
     threads = plan[PLAN.THREADS]! > 0 ? plan[PLAN.THREADS]! : 1;
   const claimNext = H[9] as typeof claimBlock,
+    awaitUnit = H[16] as typeof awaitBlocks,
     cursor = new Int32Array(2);
   for (let u = 0; u < units; u++) {
     const c = u === 0 ? -1 : (u - 1) % (C + 1);
@@ -358,14 +448,14 @@ export function restitutionColored2D(
     const end = base + count;
     // From unit 1 on: nothing to do unless some row bounces (known once unit 0 is done).
     if (u === 1) {
-      if (!earlierDone()) {
+      if (!awaitUnit(bar, base, wait, spinMs)) {
         failed = true;
         break;
       }
       if (Atomics.load(bar, 3) === 0) break;
     }
     if (count > 0) {
-      if (!earlierDone()) {
+      if (!awaitUnit(bar, base, wait, spinMs)) {
         failed = true;
         break;
       }
@@ -382,7 +472,7 @@ export function restitutionColored2D(
           if (c < 0) {
             const lo = blk * FIRST,
               hi = Math.min(n, lo + FIRST);
-            const bouncing = (H[7] as typeof restitutionTargets2D)(A, P, lo, hi);
+            const bouncing = (H[7] as typeof restitutionTargets)(A, P, lo, hi);
             if (bouncing > 0) Atomics.add(bar, 3, bouncing);
           } else (H[8] as typeof restitutionRows2D)(A, bounds[first + blk]!, bounds[first + blk + 1]!);
         } catch (e) {
@@ -408,15 +498,22 @@ export function restitutionBlocks2D(plan: Int32Array, n: number, iterations: num
 }
 
 /**
- * restitutionColored2D's first unit over rows [lo, hi): each row's target and cap (A and P as the kernel's); returns how many rows bounce.
+ * The restitution stage's targets and caps over rows [lo, hi) (restitutionColored2D's first unit, and
+ * solver/ball-rows.ts applyRestitution's in buffer order), 2D or 3D (P[RESTITUTION.THREE_D]): a row that
+ * carried no impulse takes no part (target -1); one that approached faster than its threshold gets the
+ * target -e v_impact and the cap of Poisson's hypothesis (e times its compression impulse, delivered plus
+ * what still stops a residual approach); the rest the target 0. The relative velocity, largest pass
+ * impulse and delivered total of each row are spent by now and hold the target, the rebound's
+ * accumulated impulse (0) and the cap. A and P: the RESTITUTION slots the loop reads. Returns how many rows bounce.
  * @category Collision
  */
-export function restitutionTargets2D(A: KernelArray[], P: Float64Array, lo: number, hi: number): number {
+export function restitutionTargets(A: KernelArray[], P: Float64Array, lo: number, hi: number): number {
   const sb = A[RESTITUTION.BODY_STATE] as Float64Array,
     IA = A[RESTITUTION.IA] as Int32Array,
     IB = A[RESTITUTION.IB] as Int32Array,
     NX = A[RESTITUTION.NX] as Float64Array,
-    NY = A[RESTITUTION.NY] as Float64Array;
+    NY = A[RESTITUTION.NY] as Float64Array,
+    NZ = A[RESTITUTION.NZ] as Float64Array;
   const NM = A[RESTITUTION.NORMAL_MASS] as Float64Array,
     E = A[RESTITUTION.RESTITUTION] as Float64Array,
     RV = A[RESTITUTION.RELATIVE_VELOCITY] as Float64Array,
@@ -425,6 +522,9 @@ export function restitutionTargets2D(A: KernelArray[], P: Float64Array, lo: numb
     TOT = A[RESTITUTION.TOTAL_NORMAL_IMPULSE] as Float64Array;
   const threshold = P[RESTITUTION.THRESHOLD]!,
     elasticThreshold = P[RESTITUTION.ELASTIC_THRESHOLD]!;
+  // vx and vy sit at the same offsets in both layouts.
+  const is3D = P[RESTITUTION.THREE_D] === 1,
+    S = is3D ? BS3_STRIDE : BS2_STRIDE;
   let bouncing = 0;
   for (let i = lo; i < hi; i++) {
     const e = E[i]!;
@@ -435,9 +535,10 @@ export function restitutionTargets2D(A: KernelArray[], P: Float64Array, lo: numb
     MAXN[i] = 0;
     if (e > 0 && RV[i]! < -(e >= 1 ? elasticThreshold : threshold)) {
       RV[i] = -e * IV[i]!;
-      const a = IA[i]! * BS2_STRIDE,
-        bb = IB[i]! * BS2_STRIDE;
-      const vn = (sb[bb + BS2_VX]! - sb[a + BS2_VX]!) * NX[i]! + (sb[bb + BS2_VY]! - sb[a + BS2_VY]!) * NY[i]!;
+      const a = IA[i]! * S,
+        bb = IB[i]! * S;
+      let vn = (sb[bb + BS2_VX]! - sb[a + BS2_VX]!) * NX[i]! + (sb[bb + BS2_VY]! - sb[a + BS2_VY]!) * NY[i]!;
+      if (is3D) vn += (sb[bb + BS3_VZ]! - sb[a + BS3_VZ]!) * NZ[i]!;
       const stop = vn < 0 ? -NM[i]! * vn : 0;
       TOT[i] = stop + e * (TOT[i]! + stop);
       bouncing++;

@@ -1,12 +1,12 @@
 /**
- * The 2D contact solver's per-body and per-row stages beside the coloured substeps (solver/coloring.ts)
- * and the rows' preparation, each one range kernel (solver/stages-kernel.ts) run on the world's threads
- * when that pays and inline on the calling thread otherwise (one code path; issue 32):
+ * The contact solver's per-body and per-row stages beside the coloured substeps (solver/coloring.ts)
+ * and the rows' preparation, each one range kernel (solver/stages-kernel.ts) run on a 2D world's threads
+ * when that pays and inline on the calling thread otherwise, and inline in 3D (one code path; issue 32):
  *
- * - `gatherFill2DStage`: the solver rows of the step's bodies (gatherBodies' fill,
+ * - `gatherFillStage`: the solver rows of the step's bodies, 2D and 3D (gatherBodies' fill,
  *   solver/contact-solver.ts), a range of bodies a thread;
- * - `approach2DStage`: measureApproach, a range of rows a thread;
- * - `finish2DStage`: finishBodies (velocities, positions and angles back to the components; the
+ * - `approachStage`: measureApproach (2D and 3D), a range of rows a thread;
+ * - `finishStage`: finishBodies, 2D and 3D (velocities, positions and angles back to the components; the
  *   deepest overlap left) and containInBoundary, a range of bodies and of rows a thread;
  * - `restitutionOnThreads`: the restitution stage after a coloured solve, its passes colour by colour;
  * - `storeWarmStartOnThreads`: the warm-start table of the step's contacts, built on a worker while
@@ -43,7 +43,7 @@ import * as PLAN from './slots/colored-plan.js';
 import * as FINISH from './slots/finish-bodies.js';
 import * as GATHER from './slots/gather-fill.js';
 import * as RESTITUTION from './slots/restitution.js';
-import { approach2D, finishBodies2D, gatherFill2D, restitutionBlocks2D, restitutionColored2D } from './stages-kernel.js';
+import { approachSpeeds, finishBodies, gatherFill, restitutionBlocks2D, restitutionColored2D } from './stages-kernel.js';
 import { warmStartTable } from './warm-start-kernel.js';
 
 /**
@@ -70,7 +70,7 @@ function scratch(world: PhysicsWorld): StageScratch {
   let s = scratchOf.get(world);
   if (s === undefined) {
     const deepest = sharedMemoryAvailable() ? sharedFloat64(MAX_POOL_PARTS) : new Float64Array(MAX_POOL_PARTS);
-    s = { arrays: [], params: new Float64Array(16), deepest };
+    s = { arrays: [], params: new Float64Array(24), deepest };
     scratchOf.set(world, s);
   }
   return s;
@@ -119,13 +119,13 @@ function runStage(pool: ThreadPool | null, kernel: Kernel, A: KernelArray[], P: 
 }
 
 /**
- * gatherBodies' fill of the 2D solver rows of solver bodies 1 .. count - 1 (solver/contact-solver.ts;
- * kernel gatherFill2D), on the world's threads when it pays, else on the calling thread; `pushed` 1
+ * gatherBodies' fill of the solver rows of solver bodies 1 .. count - 1 (solver/contact-solver.ts;
+ * kernel gatherFill, 2D or 3D), on a 2D world's threads when it pays, else on the calling thread; `pushed` 1
  * when joints are in the step (every body counts as pushed).
  * @throws Error naming contactSolverSystem if a worker thread failed.
  * @category Collision
  */
-export function gatherFill2DStage(world: PhysicsWorld, count: number, pushed: number): void {
+export function gatherFillStage(world: PhysicsWorld, count: number, pushed: number): void {
   const pool = poolFor(world, count - 1);
   const cs = world.collision,
     c = world.components;
@@ -147,24 +147,30 @@ export function gatherFill2DStage(world: PhysicsWorld, count: number, pushed: nu
   A[GATHER.INV_INERTIA] = cs.invInertia;
   A[GATHER.BODY_STATE] = cs.bodyState;
   A[GATHER.BODY_EXTRA] = cs.bodyExtra;
+  A[GATHER.PZ] = c.Position.z;
+  A[GATHER.VZ] = c.Velocity.z;
+  A[GATHER.WX] = c.AngularVelocity.x;
+  A[GATHER.WY] = c.AngularVelocity.y;
   const h = world.h,
     g = world.gravity;
   P[GATHER.H] = h;
   P[GATHER.GX_H] = g[0]! * h;
   P[GATHER.GY_H] = g[1]! * h;
+  P[GATHER.GZ_H] = g[2]! * h;
+  P[GATHER.THREE_D] = world.dimensions === 3 ? 1 : 0;
   P[GATHER.PUSHED] = pushed;
   P[GATHER.DYNAMIC] = BodyType.Dynamic;
   P[GATHER.KINEMATIC] = BodyType.Kinematic;
-  runStage(pool, gatherFill2D, A, P, count - 1, cs.solverBodies.subarray(1, count));
+  runStage(pool, gatherFill, A, P, count - 1, cs.solverBodies.subarray(1, count));
 }
 
 /**
- * measureApproach of a 2D world's contact rows (solver/contact-solver.ts; kernel approach2D), on the
- * world's threads when it pays, else on the calling thread.
+ * measureApproach of the world's contact rows (solver/ball-prepare.ts; kernel approachSpeeds, 2D or 3D),
+ * on the world's threads when it pays (2D), else on the calling thread.
  * @throws Error naming contactSolverSystem if a worker thread failed.
  * @category Collision
  */
-export function approach2DStage(world: PhysicsWorld, buf: ContactBuffer): void {
+export function approachStage(world: PhysicsWorld, buf: ContactBuffer): void {
   const n = buf.count;
   const pool = poolFor(world, n);
   const cs = world.collision;
@@ -183,7 +189,8 @@ export function approach2DStage(world: PhysicsWorld, buf: ContactBuffer): void {
   P[APPROACH.GZ] = g[2]!;
   P[APPROACH.DYNAMIC] = BodyType.Dynamic;
   P[APPROACH.BASE] = 0;
-  runStage(pool, approach2D, A, P, n, null);
+  P[APPROACH.THREE_D] = world.dimensions === 3 ? 1 : 0;
+  runStage(pool, approachSpeeds, A, P, n, null);
 }
 
 /**
@@ -213,17 +220,17 @@ export function storeWarmStartOnThreads(world: PhysicsWorld, buf: ContactBuffer)
 }
 
 /**
- * finishBodies of a 2D world (solver/contact-solver.ts; kernel finishBodies2D) with containInBoundary
- * when the boundary box is on: the solver bodies' velocities, positions and angles back to the
- * components and the bodies put back in the box, a range of bodies a thread, and the deepest overlap
- * left into `cs.stats.maxOverlap`, a range of rows a thread; on the world's threads when it pays, else
- * on the calling thread.
+ * finishBodies (solver/contact-solver.ts; kernel finishBodies, 2D or 3D) with containInBoundary
+ * when the boundary box is on: the solver bodies' velocities, positions and angles (3D: orientations)
+ * back to the components and the bodies put back in the box, a range of bodies a thread, and the
+ * deepest overlap left into `cs.stats.maxOverlap`, a range of rows a thread; on a 2D world's threads
+ * when it pays, else on the calling thread.
  * @throws NonFiniteStateError (stage 'collide') if a written position or velocity is not finite (the
  *   bodies are then already put back in the box).
  * @throws Error naming contactSolverSystem if a worker thread failed.
  * @category Collision
  */
-export function finish2DStage(world: PhysicsWorld, buf: ContactBuffer): void {
+export function finishStage(world: PhysicsWorld, buf: ContactBuffer): void {
   const cs = world.collision,
     count = cs.solverBodyCount;
   const pool = poolFor(world, count - 1);
@@ -256,12 +263,22 @@ export function finish2DStage(world: PhysicsWorld, buf: ContactBuffer): void {
   A[FINISH.SEPARATION] = buf.separation;
   A[FINISH.NX] = buf.nx;
   A[FINISH.NY] = buf.ny;
+  A[FINISH.PZ] = c.Position.z;
+  A[FINISH.VZ] = c.Velocity.z;
+  A[FINISH.WX] = c.AngularVelocity.x;
+  A[FINISH.WY] = c.AngularVelocity.y;
+  A[FINISH.QX] = c.Orientation.x;
+  A[FINISH.QY] = c.Orientation.y;
+  A[FINISH.QZ] = c.Orientation.z;
+  A[FINISH.QW] = c.Orientation.w;
+  A[FINISH.NZ] = buf.nz;
   const list = cs.solverBodies,
     box = cs.boundary;
   const fh = (-0.5 * world.h * world.h) / cs.settings.solverSubsteps,
     g = world.gravity;
   P[FINISH.FREE_X] = g[0]! * fh;
   P[FINISH.FREE_Y] = g[1]! * fh;
+  P[FINISH.FREE_Z] = g[2]! * fh;
   P[FINISH.DYNAMIC] = BodyType.Dynamic;
   P[FINISH.IMPACT_STRIDE] = IMPACT_STRIDE;
   P[FINISH.CONTAIN] = box.enabled ? 1 : 0;
@@ -269,12 +286,16 @@ export function finish2DStage(world: PhysicsWorld, buf: ContactBuffer): void {
   P[FINISH.MIN_Y] = box.min[1]!;
   P[FINISH.MAX_X] = box.max[0]!;
   P[FINISH.MAX_Y] = box.max[1]!;
+  P[FINISH.MIN_Z] = box.min[2]!;
+  P[FINISH.MAX_Z] = box.max[2]!;
   P[FINISH.BOX_RESTITUTION] = box.restitution;
   P[FINISH.GX] = g[0]!;
   P[FINISH.GY] = g[1]!;
+  P[FINISH.GZ] = g[2]!;
+  P[FINISH.THREE_D] = world.dimensions === 3 ? 1 : 0;
   P[FINISH.ROWS] = buf.count;
   P[FINISH.BODIES] = count - 1;
-  const check = runStage(pool, finishBodies2D, A, P, count - 1, list.subarray(1, count));
+  const check = runStage(pool, finishBodies, A, P, count - 1, list.subarray(1, count));
   if (check - check !== 0) reportNonFinite(world, list.subarray(1, count), 'collide');
   // The deepest overlap left: one slot a thread, the least of them (0 where a thread had no rows).
   let deepest = 0;
@@ -322,12 +343,14 @@ export function restitutionOnThreads(world: PhysicsWorld, buf: ContactBuffer): b
   A[RESTITUTION.PAIR] = colored.pair;
   A[RESTITUTION.ROW] = colored.row;
   A[RESTITUTION.CLAIM] = colored.claim;
+  A[RESTITUTION.NZ] = buf.nz;
   P[RESTITUTION.ROWS] = buf.count;
   P[RESTITUTION.THRESHOLD] = st.restitutionThreshold;
   P[RESTITUTION.ELASTIC_THRESHOLD] = st.elasticRestitutionThreshold;
   P[RESTITUTION.ITERATIONS] = st.restitutionIterations;
   P[RESTITUTION.MAY_WAIT] = callerMayWait() ? 1 : 0;
   P[RESTITUTION.SPIN_US] = SPIN_MICROSECONDS;
+  P[RESTITUTION.THREE_D] = 0;
   const bar = colored.bar,
     plan = colored.plan;
   const site = 'contactSolverSystem#restitution';

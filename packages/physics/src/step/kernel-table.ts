@@ -31,8 +31,8 @@ import { dragCalm } from '../forces/drag.js';
 import { attractors, gravityScale } from '../forces/gravity.js';
 import { sieForced2, sieForced3, sieFree2, sieFree3 } from '../integrators/semi-implicit-euler.js';
 import { solveColored2D } from '../solver/coloring-kernel.js';
-import { prepareContacts2D } from '../solver/prepare-contacts-kernel.js';
-import { approach2D, finishBodies2D, gatherFill2D, restitutionColored2D } from '../solver/stages-kernel.js';
+import { prepareContactRows } from '../solver/prepare-contacts-kernel.js';
+import { approachSpeeds, finishBodies, gatherFill, restitutionColored2D } from '../solver/stages-kernel.js';
 import { stripPlan2D } from '../solver/strip-plan-kernel.js';
 import { stripCut2D } from '../solver/strips-kernel.js';
 import { warmStartTable } from '../solver/warm-start-kernel.js';
@@ -84,10 +84,10 @@ export const KERNELS: readonly Kernel[] = /* @__PURE__ */ Object.freeze([
   centralForce,
   attractors,
   solveColored2D,
-  prepareContacts2D,
-  gatherFill2D,
-  approach2D,
-  finishBodies2D,
+  prepareContactRows,
+  gatherFill,
+  approachSpeeds,
+  finishBodies,
   restitutionColored2D,
   stripCut2D,
   warmStartTable,

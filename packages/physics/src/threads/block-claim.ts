@@ -1,7 +1,7 @@
 /**
- * Claiming the blocks of a unit of work by flags, for kernels whose threads share a unit's blocks
- * (solver/coloring-kernel.ts, solver/stages-kernel.ts). A kernel helper (step/kernel-table.ts rules:
- * self-contained; kernels reach it through KERNEL_HELPERS).
+ * Claiming the blocks of a unit of work by flags, and waiting for a unit's turn, for kernels whose
+ * threads share a unit's blocks (solver/coloring-kernel.ts, solver/stages-kernel.ts). Kernel helpers
+ * (step/kernel-table.ts rules: self-contained; kernels reach them through KERNEL_HELPERS).
  */
 
 /**
@@ -43,4 +43,28 @@ export function claimBlock(claim: Int32Array, base: number, count: number, part:
   cursor[0] = sh;
   cursor[1] = 0;
   return -1;
+}
+
+/**
+ * Waits until `bar[1]` (the blocks done, counted across the units) reaches `base`, the blocks of the
+ * units before the one a thread is about to start: it spins, and when `wait` (the thread may block:
+ * not a browser's main thread) it blocks in Atomics.wait after `spinMs` milliseconds of spinning,
+ * 50 ms at a time, so waking it costs nothing while the others are about to finish and it holds no core
+ * for long when they are not. Returns true when they are done, false when `bar[2]` is set (another
+ * thread failed: the caller stops).
+ * @category Threads
+ */
+export function awaitBlocks(bar: Int32Array, base: number, wait: boolean, spinMs: number): boolean {
+  const clock = (globalThis as { performance?: { now(): number } }).performance;
+  let t0 = -1,
+    spins = 0;
+  for (;;) {
+    const done = Atomics.load(bar, 1);
+    if (done >= base) return true;
+    if (Atomics.load(bar, 2) !== 0) return false;
+    if (!wait || (++spins & 255) !== 0) continue;
+    const t = clock !== undefined ? clock.now() : 0;
+    if (t0 < 0) t0 = t;
+    if (clock === undefined || t - t0 >= spinMs) Atomics.wait(bar, 1, done, 50);
+  }
 }

@@ -1,6 +1,6 @@
 /**
- * The argument slots of approach2D (solver/stages-kernel.ts), filled by approachArguments
- * (solver/coloring.ts) and approach2DStage (solver/stages-threads.ts); its arrays may follow
+ * The argument slots of approachSpeeds (solver/stages-kernel.ts), filled by approachArguments
+ * (solver/coloring.ts) and approachStage (solver/stages-threads.ts); its arrays may follow
  * another kernel's, from A[P[BASE]]: where each array sits in the kernel's `A` and each number in
  * its `P`, imported as `APPROACH` (`A[APPROACH.NAME]`) by the kernel and by its caller. A module of
  * numeric constants only, which every build folds into the code (threads/worker-source.ts).
@@ -31,9 +31,9 @@ export const SEPARATION = 9;
 export const IMPULSE = 10;
 /** The collision state's body type (Uint8, by entity). */
 export const BODY_TYPE = 11;
-/** The solver body state (rows of BS2_STRIDE). */
+/** The solver body state (rows of BS2_STRIDE in 2D, BS3_STRIDE in 3D). */
 export const BODY_STATE = 12;
-/** Arrays approach2D takes. */
+/** Arrays approachSpeeds takes. */
 export const ARRAYS = 13;
 // P: the numbers.
 /** Gravity x, m/s^2. */
@@ -44,5 +44,9 @@ export const GY = 1;
 export const GZ = 2;
 /** BodyType.Dynamic. */
 export const DYNAMIC = 3;
-/** Where approach2D's arrays start in A. */
+/** Where approachSpeeds's arrays start in A. */
 export const BASE = 4;
+/** 1 for a 3D world's rows (BS3_STRIDE, the normal's z read), 0 for 2D. */
+export const THREE_D = 5;
+/** Numbers approachSpeeds takes. */
+export const PARAMS = 6;

@@ -75,7 +75,7 @@ export const ROW = 28;
 export const CLAIM = 29;
 /** A buffer row's pack row (Int32, written by the packing). */
 export const SLOT = 30;
-/** Where approach2D's arrays (the APPROACH slots of solver/slots/approach.ts) start. */
+/** Where approachSpeeds's arrays (the APPROACH slots of solver/slots/approach.ts) start. */
 export const APPROACH = 31;
 // P: the numbers.
 /** 1 / h_s, the substep rate, 1/s. */

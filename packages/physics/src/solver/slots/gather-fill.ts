@@ -1,5 +1,5 @@
 /**
- * The argument slots of gatherFill2D (solver/stages-kernel.ts), filled by gatherFill2DStage
+ * The argument slots of gatherFill (solver/stages-kernel.ts), filled by gatherFillStage
  * (solver/stages-threads.ts): where each array sits in the kernel's `A` and each number in its `P`,
  * imported as `GATHER` (`A[GATHER.NAME]`) by the kernel and by its caller. A module of numeric
  * constants only, which every build folds into the code (threads/worker-source.ts).
@@ -28,10 +28,18 @@ export const BODY_TYPE = 8;
 export const INV_MASS = 9;
 /** The collision state's inverse moment of inertia, 1/(kg m^2) (Float64, by entity). */
 export const INV_INERTIA = 10;
-/** The solver body state (rows of BS2_STRIDE, solver/body-state-layout.ts), written. */
+/** The solver body state (rows of BS2_STRIDE in 2D, BS3_STRIDE in 3D, solver/body-state-layout.ts), written. */
 export const BODY_STATE = 11;
 /** The solver body extra rows (rows of BX_STRIDE), written. */
 export const BODY_EXTRA = 12;
+/** Position z, m (read in 3D). */
+export const PZ = 13;
+/** Velocity z, m/s (read in 3D). */
+export const VZ = 14;
+/** Angular velocity x, rad/s (read in 3D). */
+export const WX = 15;
+/** Angular velocity y, rad/s (read in 3D). */
+export const WY = 16;
 // P: the numbers.
 /** The step h, s. */
 export const H = 0;
@@ -45,3 +53,7 @@ export const PUSHED = 3;
 export const DYNAMIC = 4;
 /** BodyType.Kinematic. */
 export const KINEMATIC = 5;
+/** g_z h, m/s (3D). */
+export const GZ_H = 6;
+/** 1 for a 3D world (rows of BS3_STRIDE), 0 for 2D. */
+export const THREE_D = 7;

@@ -1,6 +1,6 @@
 /**
- * The argument slots of prepareContacts2D (solver/prepare-contacts-kernel.ts), filled by
- * prepare2DStage (solver/ball-prepare.ts): where each array sits in the kernel's `A` and each
+ * The argument slots of prepareContactRows (solver/prepare-contacts-kernel.ts), filled by
+ * prepareStage (solver/ball-prepare.ts): where each array sits in the kernel's `A` and each
  * number in its `P`, imported as `PREPARE` (`A[PREPARE.NAME]`) by the kernel and by its caller. A
  * module of numeric constants only, which every build folds into the code (threads/worker-
  * source.ts).
@@ -95,6 +95,8 @@ export const PREV_TANGENT_IMPULSE_2 = 41;
 export const SLOTS = 42;
 /** Each row's row among last step's rows, -1 for a new contact (Int32, written). */
 export const PREVIOUS = 43;
+/** Contact normal z (read in 3D). */
+export const NZ = 44;
 // P: the numbers.
 /** Below this tangential speed a row sticks (static friction), m/s. */
 export const STICK_SPEED = 0;
@@ -112,3 +114,5 @@ export const SLOT_COUNT = 5;
 export const BALL = 6;
 /** ContactKind.Boundary. */
 export const BOUNDARY = 7;
+/** 1 for a 3D world's rows (BS3_STRIDE, the normal's z read), 0 for 2D. */
+export const THREE_D = 8;

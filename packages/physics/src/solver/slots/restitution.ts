@@ -1,6 +1,7 @@
 /**
  * The argument slots of restitutionColored2D and its loops (solver/stages-kernel.ts), filled by
- * restitutionOnThreads (solver/stages-threads.ts): where each array sits in the kernel's `A` and
+ * restitutionOnThreads (solver/stages-threads.ts) and, for restitutionTargets alone, applyRestitution
+ * (solver/ball-rows.ts): where each array sits in the kernel's `A` and
  * each number in its `P`, imported as `RESTITUTION` (`A[RESTITUTION.NAME]`) by the kernel and by
  * its caller. A module of numeric constants only, which every build folds into the code
  * (threads/worker-source.ts).
@@ -45,6 +46,8 @@ export const PAIR = 16;
 export const ROW = 17;
 /** A flag a block, numbered across the units (Int32, 0 on entry; restitutionBlocks2D of them). */
 export const CLAIM = 18;
+/** Contact normal z (read by restitutionTargets in 3D). */
+export const NZ = 19;
 // P: the numbers.
 /** Contact rows. */
 export const ROWS = 0;
@@ -58,3 +61,5 @@ export const ITERATIONS = 3;
 export const MAY_WAIT = 4;
 /** How long a thread spins before it blocks, microseconds. */
 export const SPIN_US = 5;
+/** 1 for a 3D world's rows (restitutionTargets: rows of BS3_STRIDE, the normal's z read), 0 for 2D. */
+export const THREE_D = 6;
