@@ -207,6 +207,10 @@ const game = await startPixiGame({
   onFrame: (alpha, world) => draw(alpha, world),
 });
 const { shell, renderer, app } = game;
+// On a phone game-kit's touch hint card sits over the bottom of the stage, on the lawn where the card
+// of shapes and stars is; here it goes over the sky at the top instead (it fades at the first touch).
+const touchHint = document.querySelector<HTMLElement>('[data-hud="touch-hint"]');
+if (touchHint) Object.assign(touchHint.style, { top: '12px', bottom: 'auto' });
 const dock = createLabDock();
 const refitView = followView(app, renderer.camera, dock, () => (app.screen.width < app.screen.height ? narrowViewFor(params.wind) : view));
 
