@@ -328,6 +328,8 @@ style.textContent = `
 .bh-status { text-align: center; font: 13px/1.4 system-ui, sans-serif; color: #e8ecf1; padding: 6px 10px 2px; }
 .bh-status .bh-numbers { font: 600 15px ui-monospace, Menlo, Consolas, monospace; }
 .bh-status .bh-message { color: #ffd166; }
+/* On a phone a message wraps to one or two lines: two are kept, so the scene under it does not jump. */
+@media (max-width: 600px) { .bh-status .bh-message { min-height: 2.8em; } }
 .bh-status.over .bh-message { color: #ff8c8c; cursor: pointer; }
 .bh-status.cleared .bh-message { color: #7ee787; cursor: pointer; font-weight: 600; }
 .bh-pad button { font-size: 22px; min-width: 56px; }

@@ -346,6 +346,7 @@ const game = await startPixiGame({
     palette: BALL_PALETTE,
   },
   app: { background: 0x0b0f18 },
+  beforeFrame: () => anchorCourt(),
   onFrame: (alpha, world) => {
     drawCourt();
     drawBasketballs(alpha, world);
@@ -1043,6 +1044,30 @@ function placeTouchHint(): void {
   touchHint.style.top = `${Math.round(top + renderer.camera.toScreenY(layoutOf(TALL).box.max[1]) + 10)}px`;
 }
 placeTouchHint();
+
+/**
+ * On a tall page the box is narrower than the canvas is tall, so a centred fit leaves a band above and
+ * below it; the band above sat between the status row and the box. This frames the box at the top of the
+ * canvas (the camera's padding under the status row) and leaves the spare height under the floor.
+ * The camera's view is a rectangle as wide as the box, ending at its top and reaching down as far as
+ * the canvas's aspect allows; refitted only when the canvas size changes the wanted rectangle.
+ */
+function anchorCourt(): void {
+  if (!TALL) return;
+  const cam = renderer.camera;
+  const { box } = layoutOf(TALL);
+  const w = box.max[0] - box.min[0],
+    h = box.max[1] - box.min[1];
+  const pad = cam.padding;
+  if (cam.width <= 2 * pad || cam.height <= 2 * pad) return;
+  // The scale a centred fit of the box gives, and the height in m the canvas shows at that scale.
+  const ppm = Math.min((cam.width - 2 * pad) / w, (cam.height - 2 * pad) / h);
+  const shown = Math.max(h, (cam.height - 2 * pad) / ppm);
+  const minY = box.max[1] - shown;
+  const v = cam.view;
+  if (v && v.minX === box.min[0] && v.maxX === box.max[0] && v.maxY === box.max[1] && Math.abs(v.minY - minY) < 1e-9) return;
+  cam.fit({ minX: box.min[0], minY, maxX: box.max[0], maxY: box.max[1] });
+}
 
 /** The big Play-again button when time is up: over the top of the box, clear of the balls piled at its bottom. */
 const setAction = createActionButton('Play again ▶', () => shell.reset(), { at: 'top' });

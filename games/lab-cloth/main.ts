@@ -38,7 +38,7 @@ import { fabricTexture } from './fabric';
 import { ClothGrab, gripFor } from './grab';
 import { LEVELS } from './levels';
 import { Challenge, type CutOut } from './pattern';
-import { applyWind, CLOTH_SUBSTEPS, createClothScene, DEFAULTS, LINE_Y, SHEET_WIDTH, SHEET_X, sheetGrid, YARD } from './scene';
+import { applyWind, CLOTH_SUBSTEPS, createClothScene, DEFAULTS, LINE_Y, SHEET_WIDTH, SHEET_X, SHEETS, sheetGrid, YARD } from './scene';
 import { SheetView } from './sheet-view';
 import { CutUndo } from './undo';
 import { Yard } from './yard';
@@ -97,6 +97,13 @@ const view: WorldRect = { minX: YARD.minX - 0.25, minY: -0.65, maxX: YARD.maxX +
  * sheet and its posts, the walls left out, so the sheet is drawn as large as the screen allows.
  */
 const narrowView: WorldRect = { ...view, minX: SHEET_X - 0.2, maxX: SHEET_X + SHEET_WIDTH + 0.2 };
+/**
+ * The upright view for a breeze of `wind` m/s: in more than the first sheet's calm the sheet blows out
+ * to the right, up to the yard's wall, so the view reaches that wall (the sheet is drawn smaller).
+ */
+function narrowViewFor(wind: number): WorldRect {
+  return wind > SHEETS[0]!.wind ? { ...narrowView, maxX: YARD.maxX + 0.1 } : narrowView;
+}
 
 /** Floating words over the scene: a shape cut out, with its fit and stars. */
 interface Label {
@@ -200,8 +207,12 @@ const game = await startPixiGame({
   onFrame: (alpha, world) => draw(alpha, world),
 });
 const { shell, renderer, app } = game;
+// On a phone game-kit's touch hint card sits over the bottom of the stage, on the lawn where the card
+// of shapes and stars is; here it goes over the sky at the top instead (it fades at the first touch).
+const touchHint = document.querySelector<HTMLElement>('[data-hud="touch-hint"]');
+if (touchHint) Object.assign(touchHint.style, { top: '12px', bottom: 'auto' });
 const dock = createLabDock();
-followView(app, renderer.camera, dock, () => (app.screen.width < app.screen.height ? narrowView : view));
+const refitView = followView(app, renderer.camera, dock, () => (app.screen.width < app.screen.height ? narrowViewFor(params.wind) : view));
 
 const panel = createPanel(
   params,
@@ -214,7 +225,10 @@ const panel = createPanel(
       min: 0,
       max: 10,
       step: 0.1,
-      onChange: () => blowNow(shell.world),
+      onChange: () => {
+        blowNow(shell.world);
+        refitView();
+      },
     },
     {
       type: 'slider',
@@ -275,7 +289,51 @@ function nextSheet(): void {
   params.wind = LEVELS[levelIndex]!.wind;
   params.gusts = LEVELS[levelIndex]!.gusts;
   panel.refresh();
+  refitView();
+  coverScene();
   shell.reset();
+}
+
+/**
+ * Where the GPU is slower than the page (software WebGL) the canvas keeps showing the old, cut sheet
+ * and its stars for a second or more after a reset, while the status line above already names the
+ * next sheet. This covers the scene at once with a sky-coloured veil that fades out once the first
+ * frame of the new sheet has been drawn on the GPU (two frames later the frame pacer has waited for it,
+ * ./frame-pacer); on a real GPU that is a blink. The veil lets touches through.
+ */
+function coverScene(): void {
+  const stage = canvas.parentElement;
+  if (!stage) return;
+  stage.querySelector('.cl-veil')?.remove();
+  const veil = document.createElement('div');
+  veil.className = 'cl-veil';
+  veil.dataset.sceneOverlay = '';
+  const box = canvas.getBoundingClientRect(),
+    at = stage.getBoundingClientRect();
+  Object.assign(veil.style, {
+    position: 'absolute',
+    left: `${box.left - at.left}px`,
+    top: `${box.top - at.top}px`,
+    width: `${box.width}px`,
+    height: `${box.height}px`,
+    background: 'linear-gradient(#4a80c4, #9cc7e8)',
+    pointerEvents: 'none',
+    transition: 'opacity 0.25s',
+    zIndex: '1',
+  });
+  stage.append(veil);
+  // The first frame with the new world is the next one drawn; two frames after it, it is finished.
+  const until = game.pacer.drawn + 3;
+  const watch = (): void => {
+    if (!veil.isConnected) return;
+    if (game.pacer.drawn < until) {
+      requestAnimationFrame(watch);
+      return;
+    }
+    veil.style.opacity = '0';
+    setTimeout(() => veil.remove(), 300);
+  };
+  requestAnimationFrame(watch);
 }
 
 function announce(fresh: CutOut[]): void {

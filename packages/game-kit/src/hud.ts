@@ -65,7 +65,7 @@ const CSS = `
 .bp-legend div { display: flex; gap: 6px; align-items: baseline; margin-bottom: 2px; }
 .bp-legend kbd { flex: none; display: inline-block; min-width: 1.4em; text-align: center; padding: 0 5px; border: 1px solid #8a94a6;
   border-radius: 4px; background: rgba(255, 255, 255, 0.08); font: inherit; white-space: nowrap; }
-.bp-touch-hint { position: absolute; z-index: 5; left: 50%; bottom: 16px; transform: translateX(-50%); width: max-content; max-width: calc(100% - 24px);
+.bp-touch-hint { position: absolute; z-index: 5; left: 50%; bottom: 16px; transform: translateX(-50%); width: max-content; max-width: calc(100% - 24px); box-sizing: border-box;
   padding: 8px 12px; background: rgba(12, 16, 26, 0.82); border: 1px solid #6b7891; border-radius: 10px; pointer-events: none;
   font: 14px/1.45 system-ui, sans-serif; color: #f2f5f9; transition: opacity 0.6s; }
 .bp-touch-hint.bp-gone { opacity: 0; }
