@@ -133,11 +133,12 @@ const PLANS = [
     { group: [1], hold: false, at: 1, lift: 0 },
     { group: [2], hold: false, at: 2, lift: 0 },
   ],
-  // 4. Willows: a held willow at the top lantern of each column (its stars fall onto the lower one).
+  // 4. Willows: a quick willow right on the top lantern of each column, as the tip says (its stars
+  //    fall onto the lower one, 0.16 W under it).
   [
-    { group: [0, 1], hold: true, at: 0, lift: 0.13 },
-    { group: [2, 3], hold: true, at: 0, lift: 0.13 },
-    { group: [4, 5], hold: true, at: 0, lift: 0.13 },
+    { group: [0, 1], hold: false, at: 0, lift: 0.08 },
+    { group: [2, 3], hold: false, at: 0, lift: 0.08 },
+    { group: [4, 5], hold: false, at: 0, lift: 0.08 },
   ],
   // 5. Finale: the two high side lanterns one each, and a held burst between the middle lantern and
   //    the low pair when they meet (closest a quarter period into their swing, 1.5 s).

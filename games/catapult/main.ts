@@ -372,13 +372,13 @@ shell.onWorldChange(() => {
  * it jumps when the screen's size changes.
  *
  * On an upright phone (a screen taller than wide) the whole play area fitted to the width leaves the
- * scene a thin strip, so the camera works closer: at rest the aim view holds the catapult, its
- * stones and UPRIGHT_AIM_SPAN m of the field in front of it (an arrow at the right edge points to
- * the castle); while a finger pulls, the camera eases out to the overview, from just behind the
- * catapult to past the castle, so the player sees the target while aiming; the shot view holds the
- * castle and the rock with a little room either side, and in between the camera follows the stone:
- * the view slides from the overview to the shot view as the stone crosses the field (by the
- * farthest it got), so the stone stays in sight all the way.
+ * scene a strip, so the camera works as close as it can while the catapult and the castle both show:
+ * the aim view is the overview, from just behind the catapult's stacked stones to just past the
+ * castle, with the ground GROUND_AT_UPRIGHT of the way up (less empty sky over the scene); the shot
+ * view holds the castle and the rock with a little room either side, and in between the camera
+ * follows the stone: the view slides from the overview to the shot view as the stone crosses the
+ * field (by the farthest it got), so the stone stays in sight all the way, and stays there (the
+ * castle and the wreck in view) until the next press eases it out to the overview.
  */
 const cameraView = { minX: -4, minY: -1, maxX: 30, maxY: 14 };
 /**
@@ -388,11 +388,13 @@ const cameraView = { minX: -4, minY: -1, maxX: 30, maxY: 14 };
 const aim = { active: false, dx: 0, dy: 0, x0: 0, y0: 0 };
 /** On a tall screen, where the ground line sits: this fraction of the screen's height from the bottom. */
 const GROUND_AT = 0.18;
+/**
+ * On an upright phone, where the ground line sits: this fraction of the screen's height from the
+ * bottom (the scene sits lower-middle, the touch hint on the earth under it).
+ */
+const GROUND_AT_UPRIGHT = 0.26;
 /** Screens narrower than this (CSS px) get the tighter aim view. */
 const NARROW = 600;
-/** Upright aim view: its left edge (behind the catapult's stones and mound) and width, m. */
-const UPRIGHT_AIM_LEFT = LAUNCH.x - 3.3,
-  UPRIGHT_AIM_SPAN = 7.5;
 /** Screen size the view was framed for; the view jumps (no easing) when it changes. */
 let framedFor = '';
 /** Every screen size the view has been framed for since the page loaded (one, unless the window was resized). */
@@ -427,7 +429,7 @@ function viewFor(minX: number, maxX: number): View {
   const floor = Math.min(0, ...lv.terrain.map((t) => t.maxY)) - 0.6;
   // Tall (or a screen taller than wide): the ground GROUND_AT up, earth below it.
   if (aspect > 1.2 || height > 3 * top) {
-    const low = Math.min(-GROUND_AT * height, floor);
+    const low = Math.min(-(aspect > 1.2 ? GROUND_AT_UPRIGHT : GROUND_AT) * height, floor);
     return { minX, minY: low, maxX, maxY: Math.max(low + height, top) };
   }
   // Wide: from just under the ground up, taller than the castle; the ground above the touch hint
@@ -442,7 +444,9 @@ const rockRight = (): number => lv.castleMaxX + ROCK.gap + 2 * ROCK.hx;
 /** The aim view (see above). */
 function aimView(): View {
   // Before the level's first throw the overview: the player sees the castle they are to aim at.
-  if (upright()) return shots.length === 0 ? overviewRect() : viewFor(UPRIGHT_AIM_LEFT, UPRIGHT_AIM_LEFT + UPRIGHT_AIM_SPAN);
+  // Upright, the overview throughout: the castle and what the last throw did stay in sight while
+  // aiming (a close view of the catapult left the castle off-screen behind an arrow).
+  if (upright()) return overviewRect();
   // Room behind the catapult for its stones where the screen is wide enough.
   const behind = renderer.camera.width < NARROW ? 1.6 : 3.1;
   return viewFor(LAUNCH.x - behind, rockRight() + 0.6);
@@ -456,7 +460,7 @@ function overviewRect(): View {
 }
 /** The overview's left edge (behind the catapult's stacked stones) and its room past the castle, m. */
 const OVERVIEW_LEFT = LAUNCH.x - 3.1,
-  OVERVIEW_PAST = 1.2;
+  OVERVIEW_PAST = 0.6;
 /** The shot view (see above): the castle, the rock and room either side for debris (2.5 m; 1.5 and 1.2 m upright). */
 function shotViewRect(): View {
   return upright() ? viewFor(lv.castleMinX - 1.5, rockRight() + 1.2) : viewFor(lv.castleMinX - 2.5, rockRight() + 2.5);
@@ -491,7 +495,10 @@ function followView(): View {
 function frameCamera(): void {
   const cam = renderer.camera;
   // Back to the aim view once the verdict has been up for VERDICT_READ seconds (or the level ended).
-  if (shotView && lastThrow.verdict && (shell.world.time - lastThrow.decidedAt > VERDICT_READ || levelEnded)) shotView = false;
+  // Upright, the shot view stays until the next press: the castle and what the throw did to it show
+  // for as long as the player looks, and a press eases out to the overview to aim.
+  const read = shell.world.time - lastThrow.decidedAt > VERDICT_READ && !upright();
+  if (shotView && lastThrow.verdict && (read || levelEnded)) shotView = false;
   // A level over: the wreck stays in view with its result (on a phone the shot view, not the catapult).
   const wreck = levelEnded && shots.length > 0 && zoomsIn();
   const target = wreck

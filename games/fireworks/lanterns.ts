@@ -12,7 +12,7 @@
  * height). A wide sky (a desktop's) plays each level's `lanterns`; a tall one (a phone held upright,
  * `isTall`) plays its `tall` layout, the same lanterns spread over about 0.9 W of height instead of
  * 0.4 W, so the play fills the phone's screen rather than a band across its middle. Each tall layout
- * keeps its level's idea (the pairs 0.4 W apart, the willow columns 0.26 W tall, the finale's low
+ * keeps its level's idea (the pairs 0.4 W apart, the willow columns 0.16 W tall, the finale's low
  * pair meeting 0.32 W under the middle lantern) and moves the rest apart. Stars by shells used
  * against the level's par, the fewest shells that light it (found by search over burst points and
  * holds on maps of where the real bursts' hot stars go; see each level).
@@ -102,7 +102,7 @@ export interface LanternLevel {
  *    middle one, from where it starts, further than a quick burst reaches, so a shell aimed where
  *    it is misses it.
  * 4. Willows only: their stars rise little and fall far, so a burst at the top of a column of two
- *    (0.26 W apart) lights both, and a burst between columns lights neither pair (spray 0.2-0.6 %).
+ *    (0.16 W apart, a quick burst's stars reach 0.21 W down) lights both, and a burst between columns lights neither pair (spray 0.2-0.6 %).
  * 5. Three lanterns high and two that drift towards each other low: when the low two meet, one burst
  *    under the middle lantern lights three (spray 0.3-1.1 %; 2 shells at best, par 3).
  */
@@ -174,22 +174,23 @@ export const LEVELS: readonly LanternLevel[] = Object.freeze([
     shell: 'willow',
     hold: true,
     lanterns: [
-      { x: 0.1, y: 0.14 },
-      { x: 0.1, y: -0.12 },
-      { x: 0.5, y: 0.14 },
-      { x: 0.5, y: -0.12 },
-      { x: 0.9, y: 0.14 },
-      { x: 0.9, y: -0.12 },
-    ],
-    // Three columns of two, 0.26 W tall as wide and 0.4 W apart, the middle one lower by a column's
-    // height: a burst between columns reaches neither pair.
-    tall: [
-      { x: 0.1, y: 0.45 },
-      { x: 0.1, y: 0.19 },
+      { x: 0.1, y: 0.09 },
+      { x: 0.1, y: -0.07 },
+      { x: 0.5, y: 0.09 },
       { x: 0.5, y: -0.07 },
-      { x: 0.5, y: -0.33 },
-      { x: 0.9, y: 0.45 },
-      { x: 0.9, y: 0.19 },
+      { x: 0.9, y: 0.09 },
+      { x: 0.9, y: -0.07 },
+    ],
+    // Three columns of two, 0.16 W tall (within a quick willow's 0.21 W reach down, so a click
+    // right on a top lantern lights its column, as the tip says) and 0.4 W apart, the middle one
+    // lower on a phone: a burst between columns reaches neither pair.
+    tall: [
+      { x: 0.1, y: 0.4 },
+      { x: 0.1, y: 0.24 },
+      { x: 0.5, y: -0.12 },
+      { x: 0.5, y: -0.28 },
+      { x: 0.9, y: 0.4 },
+      { x: 0.9, y: 0.24 },
     ],
   },
   {

@@ -332,8 +332,13 @@ function randomLaunch(): number {
   return playerLaunch(r.range(0.15, 0.85) * show.params.sky.width, r.range(0.45, 0.85) * show.params.sky.height, r.range(0, MAX_HOLD));
 }
 
-/** A player's shell towards (x, y), m, held `hold` s (a quick one on a level without holding): counted by the lantern show. @returns its id or 0. */
+/**
+ * A player's shell towards (x, y), m, held `hold` s (a quick one on a level without holding):
+ * counted by the lantern show. None once every lantern of the level is lit: the next-level button
+ * comes up CLEAR_DELAY later where a click would otherwise launch a shell. @returns its id or 0.
+ */
 function playerLaunch(x: number, y: number, hold: number): number {
+  if (lanternShow && run.stars > 0) return 0;
   const id = launchShell(shell.world, show, x, y, holdCounts() ? hold : 0, nextRecipe());
   if (id !== 0 && lanternShow) countShell(run);
   return id;

@@ -280,11 +280,30 @@ describe('fireworks: the lantern show', () => {
     const [p0, p1, p2, p3] = [await lanternOnPage(g, 0), await lanternOnPage(g, 1), await lanternOnPage(g, 2), await lanternOnPage(g, 3)];
     for (const p of [p0, { x: 0.5 * (p1.x + p2.x), y: 0.5 * (p1.y + p2.y) }, p3]) await g.page.mouse.click(p.x, p.y);
     // Each shell bursts 1.2 s (world time) after its click; at software WebGL's few frames a second that takes a while.
-    await g.waitFor(() => (window.game as unknown as LanternGame).lanterns().stars > 0, null, 60_000);
+    await g.waitFor(
+      () => {
+        const w = window.game as unknown as LanternGame & { paused: boolean };
+        if (w.lanterns().stars === 0) return false;
+        w.paused = true;
+        return true;
+      },
+      null,
+      60_000,
+    );
     state = await g.page.evaluate(() => (window.game as unknown as LanternGame).lanterns());
     expect(state).toMatchObject({ lit: [true, true, true, true], shells: 3, stars: 3 });
     expect(state.best[0]).toBe(3);
     expect(await g.page.evaluate(() => localStorage.getItem('bitphysics.fireworks.stars'))).toBe('[3,0,0,0,0]');
+    // Lit, before the Next-level button comes up (paused above): a click where it will be launches
+    // no shell (a stranger's click there did).
+    expect(await g.page.evaluate(() => (window.game as unknown as LanternGame).lanterns().clearShownAt)).toBeNaN();
+    await g.page.mouse.click(canvas.x + 0.5 * canvas.width, canvas.y + canvas.height - 40);
+    expect(
+      await g.page.evaluate(() => {
+        const w = window.game as unknown as { show: { shellCount: number }; targetMarkers(): unknown[] };
+        return [w.show.shellCount, w.targetMarkers().length];
+      }),
+    ).toEqual([0, 0]);
     // The 1.2 s (world time) to the lit banner stepped at once: at software WebGL's few frames a
     // second and 4 steps a frame it took several seconds.
     await g.page.evaluate(() => {
