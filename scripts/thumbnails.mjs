@@ -1,24 +1,42 @@
-// `npm run thumbnails [-- folder[?query] ...] [-- --seconds=1.5]`: opens each registered game (or the
+// `npm run thumbnails [-- folder[?query] ...] [--seconds 1.5]` (`--help` for usage): opens each registered game (or the
 // named folders, each with the URL query given after it, e.g. `black-hole?level=4` for a level with
 // more to see; without one, the "thumbnailQuery" of the game's game.json, if any) in headless
 // Chromium at 640x400, waits for its ready flag plus 1.5 s of simulated play, and writes a
 // screenshot of its canvas (HUD and panels hidden) to games/<folder>/thumbnail.png.
 import { readFileSync, statSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
+import { parseArgs } from 'node:util';
 import { launchChromium, readRegistry, repoRoot, startSite } from '../test/browser/chromium.mjs';
 
 const WIDTH = 640;
 const HEIGHT = 400;
 
-const args = process.argv.slice(2);
-const secondsArg = args.find((a) => a.startsWith('--seconds='));
-const seconds = secondsArg ? Number(secondsArg.slice('--seconds='.length)) : 1.5;
+const USAGE = `usage: npm run thumbnails -- [folder[?query] ...] [--seconds 1.5]
+  Writes games/<folder>/thumbnail.png for each named game (every registered game if none is named):
+  the canvas at ${WIDTH}x${HEIGHT} after its ready flag and --seconds of simulated play (default 1.5).
+  -h, --help  this text (nothing is written)`;
+
+let parsed;
+try {
+  parsed = parseArgs({
+    allowPositionals: true,
+    options: { seconds: { type: 'string', default: '1.5' }, help: { type: 'boolean', short: 'h' } },
+  });
+} catch (error) {
+  console.error(`thumbnails: ${error.message}\n${USAGE}`);
+  process.exit(2);
+}
+if (parsed.values.help) {
+  console.log(USAGE);
+  process.exit(0);
+}
+const seconds = Number(parsed.values.seconds);
 if (!(seconds >= 0 && Number.isFinite(seconds))) {
-  console.error(`--seconds must be a number >= 0, got ${secondsArg}`);
-  process.exit(1);
+  console.error(`thumbnails: --seconds must be a number >= 0, got ${parsed.values.seconds}\n${USAGE}`);
+  process.exit(2);
 }
 const registry = await readRegistry();
-const named = args.filter((a) => !a.startsWith('--'));
+const named = parsed.positionals;
 const wanted = named.map((a) => a.split('?')[0]);
 const queryOf = new Map(named.map((a) => [a.split('?')[0], a.includes('?') ? a.slice(a.indexOf('?')) : '']));
 // A game whose time waits for the player (the solar system while aiming) names a query that plays.
