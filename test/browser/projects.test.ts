@@ -206,7 +206,8 @@ describe('projects', () => {
     expect(aim.index).toBe(0);
     expect(aim.visible).toBe(true);
     expect(aim.zoom).toBeGreaterThan(5); // px/m: the 12 m hull at least 60 px long
-    expect(aim.text).toBe(`beacon ${aim.text.match(/\d+ m ahead/)![0]}, ${Math.abs(aim.dy).toFixed(0)} m down`);
+    // Named by its letter (the first beacon is A), so a switch to another beacon reads as one.
+    expect(aim.text).toBe(`beacon A: ${aim.text.match(/\d+ m ahead/)![0]}, ${Math.abs(aim.dy).toFixed(0)} m down`);
     // The goal and the clock are stated above the scene.
     expect(await g.page.locator('[data-hud="goal"]').textContent()).toMatch(/^Collect the 6 beacons · 0 of 6 · 0:\d\d \/ par \d:\d\d$/);
     const x0 = await g.page.evaluate(() => {
@@ -231,7 +232,8 @@ describe('projects', () => {
     expect(s.throttle).toBeGreaterThan(0.3);
     expect(s.fill).toBeGreaterThan(0.1);
     expect(s.x).toBeGreaterThan(x0);
-    // Let go, the screw winds back to stop (it stayed at full ahead, which read as a stuck key).
+    // Let go, the screw backs against the way on until the boat is at rest, then stops (it stayed at
+    // full ahead, which read as a stuck key).
     await g.waitFor(() => (window.game as unknown as { state: { throttle: number } }).state.throttle === 0, null, 30_000);
     expect(g.errors).toEqual([]);
     await g.close();
