@@ -165,11 +165,6 @@ export const HELM = Object.freeze({
    * (up to half astern): the screw brakes the boat to rest, as the depth order stops it on a line.
    */
   stopGain: 0.2,
-  /**
-   * Speed along the hull under which a boat let go counts as at rest, m/s: the screw stops there
-   * (its throttle winds back to exactly 0) rather than chasing a creep it can barely feel.
-   */
-  restSpeed: 0.05,
 });
 
 const clamp = (v: number, lo: number, hi: number): number => (v < lo ? lo : v > hi ? hi : v);
@@ -214,11 +209,9 @@ export function steer(world: PhysicsWorld, handles: SubmarineHandles, input: Hel
   // The throttle runs at throttleRate toward the one asked for (drive ahead, -drive / 2 astern) and
   // winds back at throttleRelease toward it when it is past it (a stick eased back) or to stop.
   // Neither held: the screw backs (or drives) against the speed along the hull, HELM.stopGain per
-  // m/s up to half astern, so the boat let go comes to rest instead of gliding on; under
-  // HELM.restSpeed it stops.
+  // m/s up to half astern, so the boat let go comes to rest instead of gliding on.
   const along = c.Velocity.x[e]! * Math.cos(c.Angle.value[e]!) + c.Velocity.y[e]! * Math.sin(c.Angle.value[e]!);
-  const backing = Math.abs(along) < HELM.restSpeed ? 0 : clamp(-HELM.stopGain * along, -0.5, 0.5);
-  const asked = input.ahead === input.astern ? backing : input.ahead ? driveAsked : -0.5 * driveAsked;
+  const asked = input.ahead === input.astern ? clamp(-HELM.stopGain * along, -0.5, 0.5) : input.ahead ? driveAsked : -0.5 * driveAsked;
   const pushing = (asked > 0 && state.throttle < asked) || (asked < 0 && state.throttle > asked);
   const rate = (pushing ? HELM.throttleRate : HELM.throttleRelease) * dt;
   state.throttle = state.throttle < asked ? Math.min(asked, state.throttle + rate) : Math.max(asked, state.throttle - rate);
