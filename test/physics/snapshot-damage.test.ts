@@ -138,6 +138,15 @@ describe('restore of a damaged snapshot: refused with a clear error and the worl
       [['joints'], 'rowCount', -1, /world\.joints\.rowCount must be an integer in \[0, /],
       [['cloth'], 'substeps', 1e9, /world\.cloth\.substeps must be an integer in \[0, 1000\]/],
       [[], 'time', { $t: 'n', v: 'Infinity' }, /world\.time must be a finite number/],
+      // The boundary's material as setBoundary takes it, and a diagnostic that no world holds as NaN.
+      [
+        ['collision', 'boundary'],
+        'restitution',
+        { $t: 'n', v: 'NaN' },
+        /world\.collision\.boundary\.restitution must be a number in \[0, 1\], got NaN$/,
+      ],
+      [['collision', 'boundary'], 'staticFriction', -7, /world\.collision\.boundary\.staticFriction must be a finite number >= 0, got -7$/],
+      [['cloth'], 'maxStretch', { $t: 'n', v: 'NaN' }, /world\.cloth\.maxStretch must be a finite number, got NaN$/],
       // The world's options: the header's copy is checked first; the state's must agree with the world.
       [[], 'dimensions', { $t: 'n', v: 'NaN' }, /world\.dimensions must be 2, as in the world it restores into .* got NaN$/],
       [[], 'capacity', 65, /world\.capacity must be \d+, as in the world it restores into .* got 65$/],
