@@ -369,7 +369,9 @@ describe('phone controls', () => {
     expect(sky.horizon).toBeLessThan(0.8);
     expect(Math.max(Math.abs(sky.mast.x), Math.abs(sky.mast.y))).toBeLessThan(1);
     // Before the first swing a hint over the scene says what a tap does.
-    expect(await g.page.locator('[data-hud="tap-hint"]').textContent()).toBe('Tap a block: the crane swings the ball into it');
+    expect(await g.page.locator('[data-hud="tap-hint"]').textContent()).toBe(
+      'Drag back from a block and let go: the ball swings into it along the arrow',
+    );
     // A tap on open ground (the point within the jib's reach farthest from every piece, drawn on
     // the screen) moves the hook, and the hint says so and what to tap instead.
     const open = await g.page.evaluate(() => {
@@ -403,8 +405,8 @@ describe('phone controls', () => {
     expect(open.far).toBeGreaterThan(2.5);
     await g.page.touchscreen.tap(open.x, open.y);
     await g.waitFor(() => document.querySelector('[data-hud="tap-hint"]')!.textContent!.startsWith('That moves the hook'), null);
-    // A tap 26 px beside a tower block (a tower is about 20 px wide here) swings the ball at the
-    // tower instead of sending the hook to the ground there; an arrow marks it. Seen from above, the
+    // A tap 26 px beside a tower block (a tower is about 20 px wide here) aims at the tower instead
+    // of sending the hook to the ground there: the aim's arrow shows on the ground. Seen from above, the
     // tower's blocks are drawn nearly over each other: the swing may take any of them.
     const near = await g.page.evaluate(() => {
       type V = { x: number; y: number };
@@ -425,7 +427,7 @@ describe('phone controls', () => {
     });
     await g.page.touchscreen.tap(near.x, near.y);
     await g.waitFor((tower) => {
-      const a = (window.game as unknown as { aimed(): { piece: number; arrow: boolean } }).aimed();
+      const a = (window.game as unknown as { aim(): { piece: number; arrow: boolean } }).aim();
       return tower.includes(a.piece) && a.arrow;
     }, near.tower);
     await g.page.evaluate(() => {
