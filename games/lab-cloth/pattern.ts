@@ -14,8 +14,11 @@
  * far apart to hold a star's points) and, where it tore, from the links it parted along.
  * Measured over a spread of hand-like cuts on the still sheet at 32 points across (a spacing is
  * 0.13 m: 14 px on a desktop; scripts/lab-cloth-cuts.mjs): careful cuts (within half a spacing of
- * the line) 0.93-1.00, three stars; careless ones (1.2 spacings out, a wobble of 1.2, 1 inside, the
- * star's points cut across 2 spacings back) 0.57-0.85, one or two; 2 spacings out or more, 0-0.16.
+ * the line) 0.93-1.00, three stars; a ragged one (0.3 out, wobbling 0.7 across it) 0.85-0.94, two or
+ * three (three for 7 of 12: a messy cut round the three shapes seldom scores 9 of 9, its steadiness
+ * counts, `Fit.steady`); careless ones (1.2 spacings
+ * out, a wobble of 1.2, 1 inside, the star's points cut across 2 spacings back) 0.57-0.82, mostly
+ * one; 2 spacings out or more, 0-0.15.
  */
 import { type Cloth, isAlive, type PhysicsWorld, slotOf } from '@bitphysics/physics';
 import type { ClothCells } from './cells';
@@ -151,6 +154,17 @@ export const FIT_FULL = 0.6,
   FIT_ZERO = 2;
 
 /**
+ * A ragged edge's cost (cutFit's `steady`): none while the standard deviation of the edge's distances
+ * from the line is within STEADY_FREE link spacings, RAGGED_COST of the fit once it is RAGGED_FULL
+ * spacings more, linearly between (so a cut zigzagging across the line within the tolerance does
+ * not score as a clean one; see the header's figures). A steady cut 0.4 spacings inside the line on a
+ * swaying sheet wanders 0.34 spacings (test/games/lab-cloth.test.ts).
+ */
+export const STEADY_FREE = 0.35,
+  RAGGED_FULL = 0.35,
+  RAGGED_COST = 0.2;
+
+/**
  * A scissors' mark (ScissorsStroke's `marks`) counts toward a piece's edge within MARK_REACH link
  * spacings of the middle of a link on the edge (the end of a star's point lies up to 1.5 spacings
  * beyond the grid's last point in it), and stands for that link's cut within MARK_COVER spacings
@@ -257,8 +271,14 @@ export function shapeMasks(size: number, shapes: readonly Shape[] = SHAPES): Sha
 
 /** How well a piece's edge follows a shape's line (cutFit). */
 export interface Fit {
-  /** The fit, in [0, 1]: the harmonic mean of `onLine` and `followed`. */
+  /** The fit, in [0, 1]: the harmonic mean of `onLine` and `followed`, times `steady`. */
   fit: number;
+  /**
+   * How steady the edge is, in [1 - RAGGED_COST, 1]: 1 while the standard deviation of its samples'
+   * distances from the line is within STEADY_FREE spacings (+ half the slack), down by RAGGED_COST
+   * over the next RAGGED_FULL spacings.
+   */
+  steady: number;
   /** How much of the piece's edge lies on the line (each sample scored by its distance from the line), in [0, 1]. */
   onLine: number;
   /** How much of the line the piece's edge follows (each sample scored by its distance from the edge), in [0, 1]. */
@@ -270,21 +290,34 @@ export interface Fit {
  * `mask` its ShapeMask on a sheet of link spacing `spacing` m: each sample of the edge scores by its
  * distance from the line, and each sample of the line by its distance from the edge less its reach:
  * 1 up to FIT_FULL spacings + `slack` m, 0 from FIT_ZERO spacings + `slack`, linearly between.
- * `onLine` is the edge's mean score, `followed` the line's, and the fit their harmonic mean: both
- * must be good (a piece with the shape and cloth round it lies off the line; one cut inside the line,
- * or across a star's arms, leaves parts of the line unfollowed). 0 for an empty edge.
+ * `onLine` is the edge's mean score, `followed` the line's, and the fit their harmonic mean (both
+ * must be good: a piece with the shape and cloth round it lies off the line; one cut inside the line,
+ * or across a star's arms, leaves parts of the line unfollowed) times `steady` (a ragged edge costs up
+ * to RAGGED_COST). 0 for an empty edge.
  * @throws RangeError if `spacing` is not positive or `slack` is negative or not finite.
  */
 export function cutFit(shape: Shape, mask: ShapeMask, edge: readonly number[], spacing: number, slack = 0): Fit {
   if (!(spacing > 0)) throw new RangeError(`cutFit: spacing must be > 0 m, got ${spacing}`);
   if (!(slack >= 0) || !Number.isFinite(slack)) throw new RangeError(`cutFit: slack must be a finite number >= 0, got ${slack}`);
-  if (edge.length === 0) return { fit: 0, onLine: 0, followed: 0 };
+  if (edge.length === 0) return { fit: 0, onLine: 0, followed: 0, steady: 1 };
   const full = FIT_FULL * spacing + slack,
     zero = FIT_ZERO * spacing + slack;
   const score = (d: number): number => Math.max(0, Math.min(1, (zero - d) / (zero - full)));
-  let onLine = 0;
-  for (let k = 0; k < edge.length; k += 2) onLine += score(outlineDistance(shape.outline, edge[k]!, edge[k + 1]!));
-  onLine /= edge.length / 2;
+  let onLine = 0,
+    dSum = 0,
+    dSum2 = 0;
+  for (let k = 0; k < edge.length; k += 2) {
+    const d = outlineDistance(shape.outline, edge[k]!, edge[k + 1]!);
+    onLine += score(d);
+    dSum += d;
+    dSum2 += d * d;
+  }
+  const n = edge.length / 2;
+  onLine /= n;
+  // How much the edge's distance from the line wanders (its standard deviation): a steady cut keeps
+  // one distance, a ragged one zigzags across the line however near it stays on the whole.
+  const wander = Math.sqrt(Math.max(0, dSum2 / n - (dSum / n) ** 2));
+  const steady = 1 - RAGGED_COST * Math.min(1, Math.max(0, wander - (STEADY_FREE * spacing + slack / 2)) / (RAGGED_FULL * spacing));
   const mean = (points: ArrayLike<number>): number => {
     const d = nearest(points, edge);
     let sum = 0;
@@ -294,8 +327,8 @@ export function cutFit(shape: Shape, mask: ShapeMask, edge: readonly number[], s
   // The sharp corners weigh as much as the rest of the line: cutting across a star's points misses
   // little of its line but much of its look.
   const followed = mask.corners.length > 0 ? (mean(mask.line) + mean(mask.corners)) / 2 : mean(mask.line);
-  const fit = onLine + followed > 0 ? (2 * onLine * followed) / (onLine + followed) : 0;
-  return { fit, onLine, followed };
+  const fit = onLine + followed > 0 ? (steady * 2 * onLine * followed) / (onLine + followed) : 0;
+  return { fit, onLine, followed, steady };
 }
 
 /** Per shape, the cells (row-major indices) of a sheet of `size` points across whose centres at rest lie inside it. */
@@ -311,6 +344,8 @@ export interface CutOut {
   fit: number;
   /** Stars for the fit (starsFor), 0 to 3. */
   stars: number;
+  /** How steady its edge is (Fit.steady), in [1 - RAGGED_COST, 1]; absent when no piece holds it. */
+  steady?: number;
   /** The piece it came away in (an index of that moment's ClothPieces), -1 if none holds any of it (cut to bits). */
   piece: number;
   /**
@@ -444,7 +479,7 @@ export function scoreCutOuts(
       out.push({ shape: s, fit: 0, stars: 0, piece: -1 });
       continue;
     }
-    const { fit } = cutFit(
+    const { fit, steady } = cutFit(
       shapes[s]!,
       mask,
       edgeOf(world, cloth, cells, pieces, best, how.marks ?? []),
@@ -452,7 +487,7 @@ export function scoreCutOuts(
       how.slack,
     );
     if (shapes[s]?.drop) out.push({ shape: s, fit, stars: 0, piece: best, drop: 'falling', landedAt: Number.NaN });
-    else out.push({ shape: s, fit, stars: starsFor(fit), piece: best });
+    else out.push({ shape: s, fit, stars: starsFor(fit), steady, piece: best });
   }
   return out;
 }
