@@ -630,6 +630,18 @@ describe('phone controls', () => {
     // 1.3 x the type size and the outline adds 4 px: two lines 2.7 x, three 4 x; bound 3.2 x).
     expect(aim.banner.height).toBeLessThan(3.2 * aim.banner.fontSize);
     expect(aim.banner.width).toBeLessThanOrEqual(aim.W);
+    // The field fitted to 390 px draws the castle small under a tall sky: a close-up of it fills
+    // the sky over the scene, at least twice as large (2.24 x on level 1), on the canvas and above
+    // the castle itself.
+    const close = await g.page.evaluate(() => {
+      const w = window.game as unknown as Game & { closeUp(): { box: number[]; zoom: number } | null };
+      return { close: w.closeUp(), castleTop: w.renderer.camera.toScreenY(w.level().castleTop) };
+    });
+    expect(close.close!.zoom).toBeGreaterThanOrEqual(2);
+    const [cx, cy, cw, ch] = close.close!.box as [number, number, number, number];
+    expect(cx).toBeGreaterThanOrEqual(0);
+    expect(cx + cw).toBeLessThanOrEqual(aim.W);
+    expect(cy + ch).toBeLessThan(close.castleTop);
     // The legend is behind the menu button on a phone: a card over the scene says how to play until
     // the first touch.
     const hint = g.page.locator('[data-hud="touch-hint"]');
@@ -685,11 +697,12 @@ describe('phone controls', () => {
     expect(flight.outside).toBe(0);
     // Once the camera is at rest on the shot view, the rock past the castle and room past it are in view too.
     const tower = await g.waitFor(() => {
-      const w = window.game as unknown as Game & { shotView(): boolean };
+      const w = window.game as unknown as Game & { shotView(): boolean; closeUp(): unknown };
       if (!w.shotView() || !w.cameraSettled()) return null;
       const cam = w.renderer.camera,
         lv = w.level();
       return {
+        closeUp: w.closeUp(),
         height: cam.toScreenY(0) - cam.toScreenY(lv.castleTop),
         perMetre: cam.toScreenY(0) - cam.toScreenY(1),
         rock: cam.toScreenX(lv.castleMaxX + 2.9),
@@ -699,6 +712,8 @@ describe('phone controls', () => {
     // The shot view's zoom: over 32 px a metre (level 1's old 6 m watchtower drew 210 px tall; its
     // low tower of 2 m now draws 70 px at the same 34 px a metre).
     expect(tower.perMetre).toBeGreaterThan(32);
+    // (The close-up is hidden there: the view is as close.)
+    expect(tower.closeUp).toBeNull();
     expect(tower.height).toBeGreaterThan(2 * 32);
     expect(tower.rock).toBeLessThan(tower.width - 30);
     // A touch drag starting mid-screen, far from the cup (at the left edge there is no room to pull back), throws.
