@@ -29,7 +29,7 @@ import {
 import { createReadout } from '@bitphysics/game-kit/lab-kit';
 import { startPixiGame } from '@bitphysics/game-kit/pixi';
 import { contactEvents, createPhysicsWorld, isAlive, type PhysicsWorld, Rng, setGravity, slotOf, step, warmUp } from '@bitphysics/physics';
-import { Container, Graphics, Text } from 'pixi.js';
+import { Container, Graphics, Matrix, RenderTexture, Sprite, Text } from 'pixi.js';
 import { type DebrisKind, Effects } from './effects';
 import { CATAPULT, cupAt, drawBrick, drawCatapult, drawGlass, drawHill, drawMound, drawPit, drawStone, drawWood, mixColor } from './look';
 import {
@@ -1075,6 +1075,78 @@ function drawPause(): void {
 }
 
 /**
+ * On an upright phone, while the whole field shows (before a throw and while aiming), a close-up of
+ * the castle in the sky over the scene: the field fitted to 390 px draws the castle about 24 px a
+ * metre in the screen's lower quarter under a tall empty sky; the close-up draws the same scene
+ * (the castle, the aim's dashes reaching it, a stone arriving) CLOSE_MAX times as large or less, as
+ * wide as the screen allows, framed and labelled. Hidden while the camera follows a throw or holds
+ * the wreck (it is then as close), and on other screens.
+ */
+const closeTexture = RenderTexture.create({ width: 16, height: 16, resolution: Math.min(2, window.devicePixelRatio || 1) });
+const closeSprite = new Sprite(closeTexture);
+const closeFrame = new Graphics({ label: 'close-up frame' });
+const closeLabel = new Text({
+  text: 'castle, close up',
+  style: { fill: 0xffffff, fontSize: 13, fontFamily: 'sans-serif', fontWeight: 'bold', stroke: { color: 0x000000, width: 3 } },
+});
+closeSprite.visible = closeFrame.visible = closeLabel.visible = false;
+app.stage.addChild(closeSprite, closeFrame, closeLabel);
+/** Largest magnification of the close-up, and the smallest worth showing. */
+const CLOSE_MAX = 3,
+  CLOSE_MIN = 1.4;
+/** The close-up's box on the screen (px: x, y, width, height) and its magnification; null while hidden. */
+let closeShown: { box: [number, number, number, number]; zoom: number } | null = null;
+/** Draws the close-up (see above) for this frame, or hides it. */
+function drawCloseUp(): void {
+  const cam = renderer.camera;
+  const show = upright() && !levelEnded && !(shotView && zoomsIn());
+  closeShown = null;
+  if (show) {
+    // The castle with room round it for what falls, from the ground (or a pit's floor) up.
+    const floor = Math.min(0, ...lv.terrain.map((t) => t.maxY));
+    const x0 = lv.castleMinX - 0.6,
+      x1 = lv.castleMaxX + 0.6,
+      y0 = floor - 0.3,
+      y1 = lv.castleTop + 0.8;
+    const sx = cam.toScreenX(x0),
+      sy = cam.toScreenY(y1),
+      w = cam.toScreenLength(x1 - x0),
+      h = cam.toScreenLength(y1 - y0);
+    // Under the banner, over the scene: the band from the banner's foot to 40 % of the way down to the castle's top.
+    const top = (banner.text !== '' ? banner.y + banner.height : 0) + 14,
+      bottom = top + 0.6 * (sy - top);
+    const zoom = Math.min(CLOSE_MAX, (cam.width - 24) / w, (bottom - top) / h);
+    if (zoom >= CLOSE_MIN) {
+      const bw = Math.round(w * zoom),
+        bh = Math.round(h * zoom);
+      if (closeTexture.width !== bw || closeTexture.height !== bh) closeTexture.resize(bw, bh);
+      // The screen-space words over the scene are not part of the close-up.
+      const words = [banner, bannerPanel, verdictText, offscreenText, castleText, aimText, pauseShade, pauseText];
+      const was = words.map((o) => o.visible);
+      for (const o of words) o.visible = false;
+      app.renderer.render({
+        container: renderer.root,
+        target: closeTexture,
+        clear: true,
+        transform: new Matrix().translate(-sx, -sy).scale(zoom, zoom),
+      });
+      words.forEach((o, k) => {
+        o.visible = was[k]!;
+      });
+      const bx = Math.round((cam.width - bw) / 2);
+      closeSprite.position.set(bx, top);
+      closeFrame
+        .clear()
+        .roundRect(bx - 1, top - 1, bw + 2, bh + 2, 6)
+        .stroke({ width: 2, color: 0xffffff, alpha: 0.9 });
+      closeLabel.position.set(bx + 6, top + 4);
+      closeShown = { box: [bx, top, bw, bh], zoom };
+    }
+  }
+  closeSprite.visible = closeFrame.visible = closeLabel.visible = closeShown !== null;
+}
+
+/**
  * The backdrop behind the castle: a sky shading from deep blue overhead to a pale horizon, the sun,
  * two ranges of hills and drifting clouds. The hills and clouds are scenery at a distance: they move
  * by a fraction of the camera's pan (parallax: far hills 0.3, near 0.6, clouds 0.15), so a pan to the
@@ -1309,6 +1381,7 @@ function draw(world: PhysicsWorld, alpha: number): void {
     bannerPanel
       .roundRect(banner.x - bw / 2 - pad, banner.y - pad / 2, bw + 2 * pad, bh + pad, 8)
       .fill({ color: 0x000000, alpha: BANNER_PANEL_ALPHA });
+  drawCloseUp();
 }
 
 /**
@@ -1368,6 +1441,8 @@ shell.expose({
   level: (): Level => lv,
   /** Throws with a pull (dx, dy), m (tests). @returns the projectile's handle, or 0 if none was thrown. */
   fire,
+  /** The castle's close-up on an upright phone (see drawCloseUp): its box (px) and magnification, or null while hidden. */
+  closeUp: () => closeShown,
   /** The screen sizes (CSS px, 'WxH') the camera has framed since the page loaded. */
   sizesFramed: (): string[] => [...sizesFramed],
   /** Position of a body by handle, m (tests). */

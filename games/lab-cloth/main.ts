@@ -865,7 +865,14 @@ function updateStatus(): void {
   const left = challenge.pending().map((i) => shapes[i]!.name);
   const name = shapes[last.shape]!.name;
   // Short of three stars: how to get them (on a sheet in a breeze, the paused sheet holds still).
-  const tip = last.stars < 3 ? ` Cut on the dashed line for ★★★${level.calm ? ' (pause to hold the sheet still)' : ''}.` : '';
+  // A ragged edge (Fit.steady) is told apart from one that strayed: it cost the stars, not the place.
+  const ragged = (last.steady ?? 1) < 0.97;
+  const tip =
+    last.stars < 3
+      ? ragged
+        ? ` A ragged edge: one smooth stroke along the dashes for ★★★${level.calm ? ' (pause to hold the sheet still)' : ''}.`
+        : ` Cut on the dashed line for ★★★${level.calm ? ' (pause to hold the sheet still)' : ''}.`
+      : '';
   status.set(
     `${name[0]!.toUpperCase()}${name.slice(1)}: ${Math.round(last.fit * 100)}% ${stars(last.stars)}.${tip} Still to cut: ${left.join(', ')}.`,
   );

@@ -14,8 +14,11 @@
  * far apart to hold a star's points) and, where it tore, from the links it parted along.
  * Measured over a spread of hand-like cuts on the still sheet at 32 points across (a spacing is
  * 0.13 m: 14 px on a desktop; scripts/lab-cloth-cuts.mjs): careful cuts (within half a spacing of
- * the line) 0.93-1.00, three stars; careless ones (1.2 spacings out, a wobble of 1.2, 1 inside, the
- * star's points cut across 2 spacings back) 0.57-0.85, one or two; 2 spacings out or more, 0-0.16.
+ * the line) 0.93-1.00, three stars; a ragged one (0.3 out, wobbling 0.7 across it) 0.85-0.94, two or
+ * three (three for 7 of 12: a messy cut round the three shapes seldom scores 9 of 9, its steadiness
+ * counts, `Fit.steady`); careless ones (1.2 spacings
+ * out, a wobble of 1.2, 1 inside, the star's points cut across 2 spacings back) 0.57-0.82, mostly
+ * one; 2 spacings out or more, 0-0.15.
  */
 import { type Cloth, isAlive, type PhysicsWorld, slotOf } from '@bitphysics/physics';
 import type { ClothCells } from './cells';
@@ -151,6 +154,24 @@ export const FIT_FULL = 0.6,
   FIT_ZERO = 2;
 
 /**
+ * A ragged edge's cost (cutFit's `steady`): none while the standard deviation of the edge's distances
+ * from the line is within STEADY_FREE link spacings, RAGGED_COST of the fit once it is RAGGED_FULL
+ * spacings more, linearly between (so a cut zigzagging across the line within the tolerance does
+ * not score as a clean one; see the header's figures). A steady cut 0.4 spacings inside the line on a
+ * swaying sheet wanders 0.34 spacings (test/games/lab-cloth.test.ts).
+ */
+/**
+ * A winding cut's cost (cutFit's `steady`): none while the scissors' way along the piece's edge is
+ * up to WINDING_FREE times the line's length (a careful trace and a second pass over part of it),
+ * RAGGED_COST of the fit once it is WINDING_FULL times more (a zigzag over the line: 4 to 5 times).
+ */
+export const WINDING_FREE = 1.8,
+  WINDING_FULL = 1.5;
+export const STEADY_FREE = 0.35,
+  RAGGED_FULL = 0.35,
+  RAGGED_COST = 0.2;
+
+/**
  * A scissors' mark (ScissorsStroke's `marks`) counts toward a piece's edge within MARK_REACH link
  * spacings of the middle of a link on the edge (the end of a star's point lies up to 1.5 spacings
  * beyond the grid's last point in it), and stands for that link's cut within MARK_COVER spacings
@@ -167,7 +188,9 @@ export const MARK_REACH = 1.5,
  * whether the link from point i to its right (`down` false) or lower neighbour is). The scissors'
  * marks (`marks`, sheet coordinates at rest) within MARK_REACH spacings of such a link's middle
  * are samples, and the middle of each such link with no mark within MARK_COVER spacings (a tear);
- * and a sample half a spacing out from each of its points on the sheet's edge.
+ * and a sample half a spacing out from each of its points on the sheet's edge. The length of the
+ * scissors' way along the edge (m: between consecutive marks near it, a step over two spacings being
+ * a new stroke) is written to `path.length`, if given.
  */
 export function pieceEdge(
   columns: number,
@@ -175,6 +198,7 @@ export function pieceEdge(
   inPiece: (i: number) => boolean,
   cutLink?: (i: number, down: boolean) => boolean,
   marks: ArrayLike<number> = [],
+  path?: { length: number },
 ): number[] {
   const { spacing: s } = sheetGrid(columns);
   const C = columns,
@@ -196,6 +220,8 @@ export function pieceEdge(
   const reach2 = (MARK_REACH * s) ** 2,
     cover2 = (MARK_COVER * s) ** 2;
   const covered = new Uint8Array(links.length / 2);
+  let nearBefore = false,
+    length = 0;
   for (let k = 0; k < marks.length; k += 2) {
     const x = marks[k]!,
       y = marks[k + 1]!;
@@ -206,7 +232,16 @@ export function pieceEdge(
       if (d2 <= cover2) covered[j / 2] = 1;
     }
     if (near) out.push(x, y);
+    // The way the scissors went along the edge: from each mark near it to the next (a stroke's marks
+    // are a quarter spacing apart, a trace's (traces.ts cutTrace) its points; a step over two
+    // spacings is a new stroke).
+    if (near && nearBefore) {
+      const step = Math.hypot(x - marks[k - 2]!, y - marks[k - 1]!);
+      if (step <= 2 * s) length += step;
+    }
+    nearBefore = near;
   }
+  if (path) path.length = length;
   for (let j = 0; j < covered.length; j++) if (!covered[j]) out.push(links[2 * j]!, links[2 * j + 1]!);
   return out;
 }
@@ -257,8 +292,15 @@ export function shapeMasks(size: number, shapes: readonly Shape[] = SHAPES): Sha
 
 /** How well a piece's edge follows a shape's line (cutFit). */
 export interface Fit {
-  /** The fit, in [0, 1]: the harmonic mean of `onLine` and `followed`. */
+  /** The fit, in [0, 1]: the harmonic mean of `onLine` and `followed`, times `steady`. */
   fit: number;
+  /**
+   * How steady the edge is, in [(1 - RAGGED_COST)^2, 1]: 1 while the standard deviation of its
+   * samples' distances from the line is within STEADY_FREE spacings (+ half the slack), down by
+   * RAGGED_COST over the next RAGGED_FULL spacings; times 1 less up to RAGGED_COST for a winding way
+   * of the scissors (WINDING_FREE, WINDING_FULL).
+   */
+  steady: number;
   /** How much of the piece's edge lies on the line (each sample scored by its distance from the line), in [0, 1]. */
   onLine: number;
   /** How much of the line the piece's edge follows (each sample scored by its distance from the edge), in [0, 1]. */
@@ -270,21 +312,46 @@ export interface Fit {
  * `mask` its ShapeMask on a sheet of link spacing `spacing` m: each sample of the edge scores by its
  * distance from the line, and each sample of the line by its distance from the edge less its reach:
  * 1 up to FIT_FULL spacings + `slack` m, 0 from FIT_ZERO spacings + `slack`, linearly between.
- * `onLine` is the edge's mean score, `followed` the line's, and the fit their harmonic mean: both
- * must be good (a piece with the shape and cloth round it lies off the line; one cut inside the line,
- * or across a star's arms, leaves parts of the line unfollowed). 0 for an empty edge.
- * @throws RangeError if `spacing` is not positive or `slack` is negative or not finite.
+ * `onLine` is the edge's mean score, `followed` the line's, and the fit their harmonic mean (both
+ * must be good: a piece with the shape and cloth round it lies off the line; one cut inside the line,
+ * or across a star's arms, leaves parts of the line unfollowed) times `steady`: a ragged edge (its
+ * distance from the line wandering) costs up to RAGGED_COST, and so does a winding way of the
+ * scissors along it, `path` m (pieceEdge's `path.length`; 0: not known) against the line's length.
+ * 0 for an empty edge.
+ * @throws RangeError if `spacing` is not positive or `slack` or `path` is negative or not finite.
  */
-export function cutFit(shape: Shape, mask: ShapeMask, edge: readonly number[], spacing: number, slack = 0): Fit {
+export function cutFit(shape: Shape, mask: ShapeMask, edge: readonly number[], spacing: number, slack = 0, path = 0): Fit {
   if (!(spacing > 0)) throw new RangeError(`cutFit: spacing must be > 0 m, got ${spacing}`);
   if (!(slack >= 0) || !Number.isFinite(slack)) throw new RangeError(`cutFit: slack must be a finite number >= 0, got ${slack}`);
-  if (edge.length === 0) return { fit: 0, onLine: 0, followed: 0 };
+  if (!(path >= 0) || !Number.isFinite(path)) throw new RangeError(`cutFit: path must be a finite length >= 0 m, got ${path}`);
+  if (edge.length === 0) return { fit: 0, onLine: 0, followed: 0, steady: 1 };
   const full = FIT_FULL * spacing + slack,
     zero = FIT_ZERO * spacing + slack;
   const score = (d: number): number => Math.max(0, Math.min(1, (zero - d) / (zero - full)));
-  let onLine = 0;
-  for (let k = 0; k < edge.length; k += 2) onLine += score(outlineDistance(shape.outline, edge[k]!, edge[k + 1]!));
-  onLine /= edge.length / 2;
+  let onLine = 0,
+    dSum = 0,
+    dSum2 = 0;
+  for (let k = 0; k < edge.length; k += 2) {
+    const d = outlineDistance(shape.outline, edge[k]!, edge[k + 1]!);
+    onLine += score(d);
+    dSum += d;
+    dSum2 += d * d;
+  }
+  const n = edge.length / 2;
+  onLine /= n;
+  // How much the edge's distance from the line wanders (its standard deviation): a steady cut keeps
+  // one distance, a ragged one zigzags across the line however near it stays on the whole.
+  const wander = Math.sqrt(Math.max(0, dSum2 / n - (dSum / n) ** 2));
+  // And how far the scissors went along the edge for the length of the line: a zigzag over the
+  // line (within the tolerance every way) goes several times as far as the line.
+  let line = 0;
+  const o = shape.outline,
+    m = o.length / 2;
+  for (let i = 0; i < m; i++) line += Math.hypot(o[2 * ((i + 1) % m)]! - o[2 * i]!, o[2 * ((i + 1) % m) + 1]! - o[2 * i + 1]!);
+  const winding = Math.min(1, Math.max(0, path / line - WINDING_FREE) / WINDING_FULL);
+  const steady =
+    (1 - RAGGED_COST * Math.min(1, Math.max(0, wander - (STEADY_FREE * spacing + slack / 2)) / (RAGGED_FULL * spacing))) *
+    (1 - RAGGED_COST * winding);
   const mean = (points: ArrayLike<number>): number => {
     const d = nearest(points, edge);
     let sum = 0;
@@ -294,8 +361,8 @@ export function cutFit(shape: Shape, mask: ShapeMask, edge: readonly number[], s
   // The sharp corners weigh as much as the rest of the line: cutting across a star's points misses
   // little of its line but much of its look.
   const followed = mask.corners.length > 0 ? (mean(mask.line) + mean(mask.corners)) / 2 : mean(mask.line);
-  const fit = onLine + followed > 0 ? (2 * onLine * followed) / (onLine + followed) : 0;
-  return { fit, onLine, followed };
+  const fit = onLine + followed > 0 ? (steady * 2 * onLine * followed) / (onLine + followed) : 0;
+  return { fit, onLine, followed, steady };
 }
 
 /** Per shape, the cells (row-major indices) of a sheet of `size` points across whose centres at rest lie inside it. */
@@ -311,6 +378,8 @@ export interface CutOut {
   fit: number;
   /** Stars for the fit (starsFor), 0 to 3. */
   stars: number;
+  /** How steady its edge is (Fit.steady), in [(1 - RAGGED_COST)^2, 1]; absent when no piece holds it. */
+  steady?: number;
   /** The piece it came away in (an index of that moment's ClothPieces), -1 if none holds any of it (cut to bits). */
   piece: number;
   /**
@@ -369,6 +438,7 @@ function edgeOf(
   pieces: ClothPieces,
   piece: number,
   marks: ArrayLike<number>,
+  path?: { length: number },
 ): number[] {
   const C = cloth.columns,
     R = cloth.rows,
@@ -388,7 +458,7 @@ function edgeOf(
         : sides[4 * ((r - 1) * A + c) + 2]!;
     return !isAlive(world, h);
   };
-  return pieceEdge(C, R, (i) => pieces.pieceOf[i] === piece, cutLink, marks);
+  return pieceEdge(C, R, (i) => pieces.pieceOf[i] === piece, cutLink, marks, path);
 }
 
 /** A shape not cut out yet of which some came away (Challenge.partCuts). */
@@ -444,15 +514,11 @@ export function scoreCutOuts(
       out.push({ shape: s, fit: 0, stars: 0, piece: -1 });
       continue;
     }
-    const { fit } = cutFit(
-      shapes[s]!,
-      mask,
-      edgeOf(world, cloth, cells, pieces, best, how.marks ?? []),
-      sheetGrid(cloth.columns).spacing,
-      how.slack,
-    );
+    const path = { length: 0 };
+    const edge = edgeOf(world, cloth, cells, pieces, best, how.marks ?? [], path);
+    const { fit, steady } = cutFit(shapes[s]!, mask, edge, sheetGrid(cloth.columns).spacing, how.slack, path.length);
     if (shapes[s]?.drop) out.push({ shape: s, fit, stars: 0, piece: best, drop: 'falling', landedAt: Number.NaN });
-    else out.push({ shape: s, fit, stars: starsFor(fit), piece: best });
+    else out.push({ shape: s, fit, stars: starsFor(fit), steady, piece: best });
   }
   return out;
 }

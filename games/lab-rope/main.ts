@@ -571,32 +571,54 @@ function draw(alpha: number, world: PhysicsWorld): void {
 }
 
 /** Heights the banner may stand at, m, in order of preference: mid-scene first. */
-const BANNER_HEIGHTS = [3.4, 4.1, 2.6, 4.8, 1.8];
+const BANNER_HEIGHTS = [3.4, 4.1, 2.6, 4.8, 1.8, 5.6, 6.4];
 /** A star's drawn glow reaches this far from its centre, m (view.ts: 0.22 m x 1.6, pulsing 8%). */
 const STAR_GLOW = 0.38;
 /**
- * The first of BANNER_HEIGHTS (m) at which the banner's box (with the star row under it once the
- * level is over) stays clear of every star not caught yet (so the banner never hides one); the
- * first height if none is clear.
+ * The first of BANNER_HEIGHTS (m) at which the banner's box (with the star row under it and the
+ * miss card's margin once the level is over) stays clear of every star not caught yet (so the
+ * banner never hides one) and, once the level is over, of the basket and the ball (a miss card over
+ * them hid why the ball missed); the first height clear of the stars if none is clear of all, the
+ * first height if none is clear of the stars.
  */
 function bannerHeight(): number {
   const cam = renderer.camera;
-  // With the star row under it (the outcome's banner) the box reaches a row lower.
-  const row = game.outcome === 'playing' ? 0 : STAR_SIZE * 1.2;
-  const halfW = banner.width / 2,
-    halfH = banner.height / 2 + row / 2;
+  const over = game.outcome !== 'playing';
+  // With the star row under it (the outcome's banner) the box reaches a row lower; the miss card
+  // (drawn in the update) reaches 24 px beyond the text each side and 14 px above and below.
+  const row = over ? STAR_SIZE * 1.2 : 0;
+  const halfW = banner.width / 2 + (over ? 24 : 0),
+    halfH = banner.height / 2 + row / 2 + (over ? 14 : 0);
+  /** Whether the box centred at screen y `by` keeps `r` px from the screen point (x, y). */
+  const apart = (by: number, x: number, y: number, r: number): boolean => {
+    const dx = Math.max(0, Math.abs(x - cam.width / 2) - halfW),
+      dy = Math.max(0, Math.abs(y - by) - halfH);
+    return dx * dx + dy * dy > r * r;
+  };
+  const [bx] = scene.level.basket,
+    half = scene.level.basketWidth / 2 + 0.15;
+  const e = slotOf(scene.ball),
+    P = shell.world.components.Position;
+  let fallback = -1;
   for (const y of BANNER_HEIGHTS) {
     const by = cam.toScreenY(y) + row / 2;
-    const clear = scene.level.stars.every(([sx, sy], i) => {
-      if (game.caught[i]) return true;
-      const r = cam.toScreenLength(STAR_GLOW);
-      const dx = Math.max(0, Math.abs(cam.toScreenX(sx) - cam.width / 2) - halfW),
-        dy = Math.max(0, Math.abs(cam.toScreenY(sy) - by) - halfH);
-      return dx * dx + dy * dy > r * r;
-    });
-    if (clear) return y;
+    const clear = scene.level.stars.every(
+      ([sx, sy], i) => game.caught[i] || apart(by, cam.toScreenX(sx), cam.toScreenY(sy), cam.toScreenLength(STAR_GLOW)),
+    );
+    if (!clear) continue;
+    if (!over) return y;
+    if (fallback < 0) fallback = y;
+    // The basket (its walls and rim) and the ball with its ring.
+    const rimY = cam.toScreenY(scene.level.basketDepth + 0.1),
+      floorY = cam.toScreenY(0);
+    const basketClear =
+      by + halfH < Math.min(rimY, floorY) ||
+      by - halfH > Math.max(rimY, floorY) ||
+      cam.width / 2 + halfW < Math.min(cam.toScreenX(bx - half), cam.toScreenX(bx + half)) ||
+      cam.width / 2 - halfW > Math.max(cam.toScreenX(bx - half), cam.toScreenX(bx + half));
+    if (basketClear && apart(by, cam.toScreenX(P.x[e]!), cam.toScreenY(P.y[e]!), cam.toScreenLength(2 * BALL_RADIUS))) return y;
   }
-  return BANNER_HEIGHTS[0]!;
+  return fallback >= 0 ? fallback : BANNER_HEIGHTS[0]!;
 }
 
 /**

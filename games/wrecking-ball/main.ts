@@ -8,11 +8,14 @@
  * are seeded.
  *
  * Keys: A/D or ←/→ slew, W/S or ↑/↓ trolley out/in, Q/E hook up/down, L next level (once cleared),
- * G debug layer (joints, contacts), P pause, N step, R reset. Mouse: click a target to swing the ball
- * at it (the crane winds up and runs through; a click on another target during the wind-up re-aims
- * that swing, one during the run is swung at next); click the ground beside a target to swing at
- * it, elsewhere to send the hook there; drag the ball to pull it; right-drag orbits, wheel zooms.
- * Once a level is cleared its result (swings, stars, score) is fixed: later swings are for fun.
+ * G debug layer (joints, contacts), P pause, N step, R reset. Mouse: press a target and drag back
+ * as with a sling, then let go: the ball swings into it along the arrow shown on the ground, harder
+ * the longer the pull (the crane winds up and runs through; one aimed at another target during the
+ * wind-up re-aims that swing, one during the run is swung at next); a click without a drag shows
+ * the arrow from where the ball hangs, a second click swings along it. A press on the ground beside
+ * a target aims at it, elsewhere sends the hook there; drag the ball to pull it; right-drag orbits,
+ * wheel zooms. Once the collapse that clears a level settles its result (swings, stars, score) is
+ * final: later swings are for fun.
  * URL: ?level=N, ?seed=S, ?debug, ?demo (the crane swings at the level's first tower by itself: the
  * gallery's thumbnail shows a hit).
  */
@@ -42,6 +45,7 @@ import {
   ConeGeometry,
   CylinderGeometry,
   DoubleSide,
+  Group,
   Line,
   LineBasicMaterial,
   LineSegments,
@@ -71,11 +75,13 @@ import {
   clearTarget,
   fallenCount,
   HANG,
+  HIT_SPEED,
   hookPosition,
   JIB_HEIGHT,
   LINK_RADIUS,
   pieceOnSwing,
   RADIUS_RANGE,
+  type SwingRequest,
   scorePieces,
   swayAmplitude,
   swingBudget,
@@ -111,9 +117,9 @@ let levelScore = 0;
 let cleared = false;
 /**
  * The level's result, fixed when it is cleared: the swings it took and the stars they earned (and
- * whether a target was tapped since: the hint says such swings are for fun). Pieces still falling
- * from the clearing swing add to the score until the next swing is let go; swings after that
- * change nothing (see `resultFixed`).
+ * whether a target was tapped since: the hint says such swings are for fun). The level counts as
+ * cleared once the collapse that reached its target has settled (see gameStep); nothing changes
+ * its score after that.
  */
 const clearedWith = { swings: 0, stars: 0, tapped: false };
 /** Smoothed step time, ms (exponential average over ~30 steps), and the worst of the last second. */
@@ -143,6 +149,7 @@ function createWorld(): PhysicsWorld {
   handles = buildWreckingBall(world, { level: params.level, seed: params.seed, ballWeight: params.ballWeight });
   levelScore = 0;
   cleared = false;
+  reachedAt = -1;
   clearedWith.tapped = false;
   return world;
 }
@@ -175,19 +182,32 @@ function gameStep(world: PhysicsWorld): void {
   }
   const gained = scorePieces(world, handles.pieces);
   if (gained > 0) {
-    if (!resultFixed()) levelScore += gained;
+    if (!cleared) levelScore += gained;
+    if (reachedAt >= 0) reachedAt = world.time;
     // A fallen piece keeps its material, darkened (grey read as a different material).
     for (const p of handles.pieces) if (p.fallen && isAlive(world, p.body) && p.body !== lit) tint(p.body, FALLEN_TINT);
   }
-  if (!cleared && fallenCount(handles.pieces) >= clearTarget(handles.pieces, handles.level)) {
+  if (!cleared && reachedAt < 0 && fallenCount(handles.pieces) >= clearTarget(handles.pieces, handles.level)) {
+    reachedAt = world.time;
+    reachedWith = swingsUsed();
+  }
+  // The result is given (and fixed) once the collapse that cleared the level has settled (no piece
+  // fell for CLEAR_SETTLE s) or the next swing is let go: given at once, its score went on rising
+  // under the banner as the last pieces fell.
+  if (!cleared && reachedAt >= 0 && (world.time - reachedAt >= CLEAR_SETTLE || swingsUsed() > reachedWith)) {
     cleared = true;
-    clearedWith.swings = swingsUsed();
+    clearedWith.swings = reachedWith;
     clearedWith.stars = swingStars(clearedWith.swings, true, handles.level);
     sound.chime(1046, 0.6);
     // 500 for clearing and 250 for each star (fewer swings).
     levelScore += 500 + 250 * clearedWith.stars;
   }
 }
+/** Seconds with no piece falling after the clear target is reached before the result is given. */
+const CLEAR_SETTLE = 1;
+/** World time the clear target was reached or a piece last fell after it (-1: not reached), and the swings used then. */
+let reachedAt = -1;
+let reachedWith = 0;
 
 const sound = getSound();
 
@@ -229,7 +249,7 @@ const game = await startThreeGame({
   controls: [
     { keys: 'A D / ← →', action: 'slew the jib', touch: '⟲ ⟳' },
     { keys: 'W S / ↑ ↓', action: 'trolley out / in', touch: 'Out / In' },
-    { keys: 'Click a target', action: 'swing the ball at it', touch: 'Tap a target' },
+    { keys: 'Drag a target', action: 'aim back, let go to swing', touch: 'Drag a target' },
     { keys: 'Space', action: 'hold to steady the ball', touch: 'Steady' },
     { keys: 'Q E', action: 'hook up / down', touch: 'Up / Down' },
     { keys: 'Click ground', action: 'send the hook there' },
@@ -1113,11 +1133,11 @@ const groundHit = new Vector3();
 let pressId = -1;
 
 /**
- * A press at (ndcX, ndcY): on the ball, grabs it; on a piece of a target, swings the ball at it
- * (./scene `aimAt`: the crane winds up and runs through); elsewhere, sends the hook to the ground
- * point under the pointer. @returns 'ball', 'swing', 'hook' or 'none'.
+ * A press at (ndcX, ndcY): on the ball, grabs it; on a piece of a target, begins aiming a swing at
+ * it (`beginAim`; the swing goes when the press is let go, `releaseAt`); elsewhere, sends the hook
+ * to the ground point under the pointer. @returns 'ball', 'aim', 'hook' or 'none'.
  */
-function pressAt(ndcX: number, ndcY: number): 'ball' | 'swing' | 'hook' | 'none' {
+function pressAt(ndcX: number, ndcY: number): 'ball' | 'aim' | 'hook' | 'none' {
   const hit = renderer.pick(ndcX, ndcY, app.camera);
   if (hit && hit.eid === handles.ball) {
     if (outOfSwings()) return 'none';
@@ -1143,7 +1163,7 @@ function pressAt(ndcX: number, ndcY: number): 'ball' | 'swing' | 'hook' | 'none'
   raycaster.setFromCamera(new Vector2(ndcX, ndcY), app.camera);
   const onGround = raycaster.ray.intersectPlane(ground, groundHit) !== null;
   if (target === 0 && onGround) target = pieceNearGround(groundHit.x, groundHit.z);
-  if (target !== 0) return swingAt(target) ? 'swing' : 'none';
+  if (target !== 0) return beginAim(target, ndcX, ndcY);
   if (!onGround) return 'none';
   handles.controls.moves = [];
   handles.controls.goal = [groundHit.x, groundHit.z];
@@ -1174,6 +1194,113 @@ function pieceNearGround(x: number, z: number): number {
     }
   }
   return best;
+}
+// ---- Aiming: press a target, drag back, let go ----------------------------------------------------
+
+/**
+ * The swing being aimed: the piece pressed (0: none), where the press was (NDC), whether the
+ * pointer has moved past TAP_PX since (a drag), and the swing the arrow shows: the direction the ball
+ * travels as it reaches the piece (rad, as ./scene SwingRequest) and the pull's power in
+ * [MIN_POWER, 1]. `armed` is the piece a tap without a drag marked (a second tap on it swings as shown).
+ */
+const aiming = { piece: 0, x0: 0, y0: 0, dragged: false, direction: 0, power: 0, armed: 0 };
+/** CSS px a press must move to be a drag that aims (less is a tap). */
+const TAP_PX = 10;
+/** CSS px of pull for a full-power swing; the weakest counts as MIN_POWER. */
+const FULL_PULL_PX = isTouchDevice() ? 110 : 160;
+const MIN_POWER = 0.2;
+/** Power of the arrow a tap shows before any drag. */
+const TAP_POWER = 0.5;
+/** The ball's speed at the piece, m/s, for a pull of power `power` in [MIN_POWER, 1]: 0.45 to 1.15 HIT_SPEED. */
+function swingSpeed(power: number): number {
+  return HIT_SPEED * (0.45 + 0.7 * power);
+}
+/** The swing the arrow shows now, for ./scene aimAt. */
+function request(): SwingRequest {
+  return { direction: aiming.direction, speed: swingSpeed(aiming.power) };
+}
+/**
+ * Begins aiming at piece `piece` from a press at (ndcX, ndcY): the arrow shows on the ground
+ * (the ball comes straight from where it hangs at TAP_POWER, or as last shown if the piece is
+ * armed) and follows the drag (`aimDrag`). @returns 'aim'.
+ */
+function beginAim(piece: number, ndcX: number, ndcY: number): 'aim' {
+  aiming.piece = piece;
+  aiming.x0 = ndcX;
+  aiming.y0 = ndcY;
+  aiming.dragged = false;
+  if (aiming.armed !== piece) {
+    const P = shell.world.components.Position;
+    aiming.direction = Math.atan2(P.z[piece]! - P.z[handles.ball]!, P.x[piece]! - P.x[handles.ball]!);
+    aiming.power = TAP_POWER;
+  }
+  return 'aim';
+}
+/**
+ * The press being aimed moved to (ndcX, ndcY): once it is TAP_PX from where it began, the ball's
+ * direction is from the ground point under the pointer through the piece (pull back from a block
+ * as a sling: the ball flies the other way) and the power grows with the pull's length on the screen.
+ */
+function aimDrag(ndcX: number, ndcY: number): void {
+  if (aiming.piece === 0) return;
+  const px = ((ndcX - aiming.x0) * canvas.clientWidth) / 2,
+    py = ((ndcY - aiming.y0) * canvas.clientHeight) / 2;
+  const pull = Math.hypot(px, py);
+  if (pull < TAP_PX && !aiming.dragged) return;
+  aiming.dragged = true;
+  raycaster.setFromCamera(new Vector2(ndcX, ndcY), app.camera);
+  const P = shell.world.components.Position;
+  const tx = P.x[aiming.piece]!,
+    tz = P.z[aiming.piece]!;
+  // The pull across the ground; over the horizon, the screen's pull turned into the ground's axes.
+  if (raycaster.ray.intersectPlane(ground, groundHit) !== null && Math.hypot(groundHit.x - tx, groundHit.z - tz) > 0.2)
+    aiming.direction = Math.atan2(tz - groundHit.z, tx - groundHit.x);
+  aiming.power = Math.min(1, Math.max(MIN_POWER, pull / FULL_PULL_PX));
+}
+/**
+ * The press being aimed let go at (ndcX, ndcY): after a drag, swings along the arrow; a tap on the
+ * armed piece swings as its arrow shows; another tap arms the piece (the arrow stays and the hint
+ * says to drag). @returns 'swing', 'armed' or 'none' (no press being aimed, or the swing refused).
+ */
+function releaseAt(ndcX: number, ndcY: number): 'swing' | 'armed' | 'none' {
+  const piece = aiming.piece;
+  if (piece === 0) return 'none';
+  aimDrag(ndcX, ndcY);
+  aiming.piece = 0;
+  if (!aiming.dragged && aiming.armed !== piece) {
+    aiming.armed = piece;
+    light(piece);
+    sound.chime(523, 0.08);
+    return 'armed';
+  }
+  aiming.armed = 0;
+  return swingAt(piece, request()) ? 'swing' : 'none';
+}
+// The arrow on the ground: from where the ball comes, to the piece; longer and redder the harder.
+// Drawn over everything (the mast or a structure in front of it hid it).
+const aimMaterial = new MeshBasicMaterial({ color: 0xffd166, depthTest: false, transparent: true, opacity: 0.9 });
+const aimShaft = new Mesh(new BoxGeometry(1, 0.04, 0.4), aimMaterial);
+const aimHead = new Mesh(new CircleGeometry(0.8, 3), aimMaterial);
+aimHead.rotation.x = -Math.PI / 2;
+aimShaft.renderOrder = aimHead.renderOrder = 10;
+const aimPreview = new Group();
+aimPreview.add(aimShaft, aimHead);
+aimPreview.visible = false;
+app.scene.add(aimPreview);
+/** Places the aim arrow (shown while a press aims or a piece is armed). */
+function drawAim(): void {
+  const piece = aiming.piece || aiming.armed;
+  aimPreview.visible = piece !== 0 && isAlive(shell.world, piece);
+  if (!aimPreview.visible) return;
+  const P = shell.world.components.Position;
+  // Its local +x along the ball's travel, its head 0.5 m short of the piece's centre.
+  const length = 1.2 + 3.5 * aiming.power;
+  aimPreview.position.set(P.x[piece]!, 0.08, P.z[piece]!);
+  aimPreview.rotation.y = -aiming.direction;
+  aimShaft.scale.x = length;
+  aimShaft.position.x = -1.2 - length / 2;
+  aimHead.position.x = -0.9;
+  aimMaterial.color.setHSL(0.13 * (1 - aiming.power), 1, 0.6);
 }
 /** The piece the last swing was aimed at (marked with a ring and an arrow while the swing runs), or 0. */
 let aimed = 0;
@@ -1257,13 +1384,11 @@ function light(piece: number): void {
 let retargeted = false;
 /** A target tapped while the ball was already on its run at another: swung at once that swing's result is counted (0: none). */
 let queued = 0;
+/** The swing the player aimed at `queued` (undefined: the planner's own). */
+let queuedAim: SwingRequest | undefined;
 /** Swings used on this level (runs at targets begun, drags of the ball), out of its `swingBudget`. */
 function swingsUsed(): number {
   return handles.controls.released;
-}
-/** Whether the cleared level's result is fixed: a swing was let go after the clearing one (it only plays). */
-function resultFixed(): boolean {
-  return cleared && swingsUsed() > clearedWith.swings;
 }
 /** The cleared level's result, as the banner says it: "Level N cleared in S swings! ★★☆". */
 function clearedLine(): string {
@@ -1286,7 +1411,7 @@ function pieceName(piece: number): string {
  * run); a tap while the ball is on its run at its target waits for that swing to end (a new plan
  * then would abandon the hit and use another swing) and is marked as next.
  */
-function swingAt(piece: number): boolean {
+function swingAt(piece: number, aim?: SwingRequest): boolean {
   const moves = handles.controls.moves;
   const running = aimed !== 0 && moves.length > 0 && moves[0]!.run === true;
   if (outOfSwings() || (running && !cleared && swingsUsed() + 1 > swingBudget(handles.level))) {
@@ -1297,6 +1422,7 @@ function swingAt(piece: number): boolean {
   if (running) {
     if (piece === aimed) return true;
     queued = piece;
+    queuedAim = aim;
     sound.chime(523, 0.12);
     say(`Next: ${pieceName(piece)}, once this swing is done`);
     return true;
@@ -1312,7 +1438,7 @@ function swingAt(piece: number): boolean {
   // A swing whose result was not counted yet (its run over, the dust settling) is counted now.
   if (runEndedAt >= 0) countResult();
   queued = 0;
-  aimAt(shell.world, handles, piece);
+  aimAt(shell.world, handles, piece, aim);
   light(piece);
   aimed = piece;
   swing.downBefore = fallenCount(handles.pieces);
@@ -1326,7 +1452,8 @@ function swingAt(piece: number): boolean {
 canvas.addEventListener('pointerdown', (event) => {
   if (event.button !== 0) return;
   app.toNdc(event.clientX, event.clientY, ndc);
-  if (pressAt(ndc[0], ndc[1]) === 'ball') {
+  const pressed = pressAt(ndc[0], ndc[1]);
+  if (pressed === 'ball' || pressed === 'aim') {
     pressId = event.pointerId;
     canvas.setPointerCapture(event.pointerId);
   }
@@ -1385,11 +1512,17 @@ function holdBall(world: PhysicsWorld): void {
 canvas.addEventListener('pointermove', (event) => {
   if (event.pointerId !== pressId) return;
   app.toNdc(event.clientX, event.clientY, ndc);
-  dragOverGround(ndc[0], ndc[1]);
+  if (aiming.piece !== 0) aimDrag(ndc[0], ndc[1]);
+  else dragOverGround(ndc[0], ndc[1]);
 });
 const up = (event: PointerEvent): void => {
   if (event.pointerId !== pressId) return;
   pressId = -1;
+  if (event.type === 'pointercancel') aiming.piece = 0;
+  if (aiming.piece !== 0) {
+    app.toNdc(event.clientX, event.clientY, ndc);
+    releaseAt(ndc[0], ndc[1]);
+  }
   drag.release();
 };
 canvas.addEventListener('pointerup', up);
@@ -1506,6 +1639,18 @@ function drawPlan(): void {
   );
   if (aimed !== 0 && isAlive(shell.world, aimed))
     out.push(`<circle cx="${X(P.x[aimed]!)}" cy="${Z(P.z[aimed]!)}" r="8" fill="none" stroke="#ffd166" stroke-width="2"/>`);
+  const aimPiece = aiming.piece || aiming.armed;
+  if (aimPiece !== 0 && isAlive(shell.world, aimPiece)) {
+    const length = 1.2 + 3.5 * aiming.power,
+      ux = Math.cos(aiming.direction),
+      uz = Math.sin(aiming.direction);
+    const tx = P.x[aimPiece]!,
+      tz = P.z[aimPiece]!;
+    out.push(
+      `<line x1="${X(tx - (length + 0.9) * ux)}" y1="${Z(tz - (length + 0.9) * uz)}" x2="${X(tx - 0.5 * ux)}" y2="${Z(tz - 0.5 * uz)}" stroke="#ffd166" stroke-width="3"/>`,
+      `<circle cx="${X(tx)}" cy="${Z(tz)}" r="6" fill="none" stroke="#ffd166" stroke-width="2"/>`,
+    );
+  }
   if (queued !== 0 && isAlive(shell.world, queued))
     out.push(
       `<circle cx="${X(P.x[queued]!)}" cy="${Z(P.z[queued]!)}" r="8" fill="none" stroke="#ffffff" stroke-width="2" stroke-dasharray="3 2"/>`,
@@ -1529,8 +1674,11 @@ plan.addEventListener('click', (event) => {
       best = p.body;
     }
   }
-  if (best !== 0) swingAt(best);
-  else if (Math.hypot(x, z) <= RADIUS_RANGE[1]) {
+  // As a tap on the piece in the scene: the first arms it, a second swings along its arrow.
+  if (best !== 0) {
+    beginAim(best, 0, 0);
+    releaseAt(0, 0);
+  } else if (Math.hypot(x, z) <= RADIUS_RANGE[1]) {
     handles.controls.moves = [];
     handles.controls.goal = [x, z];
     aimed = 0;
@@ -1577,10 +1725,16 @@ function hintText(): string {
       return `${clearedLine()}\nSwinging for fun: the result stands. ${touch ? 'Tap' : 'Press L or'} Next level ▶`;
     return clearedLine();
   }
+  if (aiming.piece !== 0 && aiming.dragged)
+    return `Let go to swing along the arrow: power ${Math.round(100 * aiming.power)} %${aiming.power >= 1 ? ' (full)' : ', pull longer for more'}`;
+  if (reachedAt >= 0) return '';
   if (outOfSwings()) return '';
   if (shell.world.time < notice.until) return notice.text;
-  if (shell.world.time < hintUntil) return `That moves the hook. ${tapWord} a block to swing the ball at it`;
-  if (c.released === 0 && c.moves.length === 0 && aimed === 0) return `${tapWord} a block: the crane swings the ball into it`;
+  if (aiming.armed !== 0)
+    return `Drag back from ${pieceName(aiming.armed)} to aim: the ball flies along the arrow, harder the longer the pull. ${tapWord} it again to swing as shown`;
+  if (shell.world.time < hintUntil) return `That moves the hook. Drag back from a block and let go to swing the ball at it`;
+  if (c.released === 0 && c.moves.length === 0 && aimed === 0)
+    return `Drag back from a block and let go: the ball swings into it along the arrow`;
   return '';
 }
 
@@ -1671,7 +1825,8 @@ function frame(): void {
   // A swing's ring is wide enough to show round the foot of a tower or a crib.
   goalMarker.scale.setScalar(goal === null && swinging ? 2.6 : 1);
   aimArrow.visible = swinging;
-  if (!swinging && lit !== 0) light(0);
+  if (!swinging && lit !== 0 && lit !== aiming.armed) light(0);
+  drawAim();
   if (goal !== null) goalMarker.position.set(goal[0], 0.02, goal[1]);
   else if (swinging) {
     const P = shell.world.components.Position;
@@ -1712,7 +1867,7 @@ function frame(): void {
     const p = handles.pieces.find((q) => q.body === next);
     if (p && !p.fallen && isAlive(shell.world, next)) {
       const { result, resultAt } = swing;
-      swingAt(next);
+      swingAt(next, queuedAim);
       swing.result = result;
       swing.resultAt = resultAt;
     }
@@ -1724,10 +1879,12 @@ function frame(): void {
     const used = swingsUsed(),
       left = budget - used;
     status.textContent = cleared
-      ? `${clearedLine()} · score ${banked + levelScore}${resultFixed() ? ' (fixed)' : ''} · ${touch ? 'tap' : 'press L or'} Next level`
-      : `Level ${handles.level} · swings left ${left}/${budget} (★★★ in ${swingPar(handles.level)}) · down ${f}/${n} (clear at ${clearTarget(handles.pieces, handles.level)})${swingPhase()}${
-          swing.result && shell.world.time - swing.resultAt < RESULT_SHOWN ? ` · ${swing.result}` : ''
-        }${left <= 0 && handles.controls.moves.length === 0 ? ` · out of swings: ${touch ? 'tap ↻' : 'press R'} to retry` : ''}${swayHint()}`;
+      ? `${clearedLine()} · final score ${banked + levelScore} · ${touch ? 'tap' : 'press L or'} Next level`
+      : reachedAt >= 0
+        ? `Level ${handles.level} · target reached! · down ${f}/${n} · score ${banked + levelScore} (counting the fall)`
+        : `Level ${handles.level} · swings left ${left}/${budget} (★★★ in ${swingPar(handles.level)}) · down ${f}/${n} (clear at ${clearTarget(handles.pieces, handles.level)})${swingPhase()}${
+            swing.result && shell.world.time - swing.resultAt < RESULT_SHOWN ? ` · ${swing.result}` : ''
+          }${left <= 0 && handles.controls.moves.length === 0 ? ` · out of swings: ${touch ? 'tap ↻' : 'press R'} to retry` : ''}${swayHint()}`;
     showNext(cleared, `Level ${handles.level + 1} ▶`);
     showHint(hintText(), cleared);
     drawPlan();
@@ -1796,8 +1953,19 @@ shell.expose({
   cleared: (): boolean => cleared,
   /** Smoothed step time, ms. */
   stepTime: (): number => stepMs,
-  /** A press at (ndcX, ndcY) as the mouse would: 'ball' (grabbed), 'swing' (at a piece), 'hook' (sent there) or 'none'. */
+  /** A press at (ndcX, ndcY) as the mouse would: 'ball' (grabbed), 'aim' (on a piece), 'hook' (sent there) or 'none'. */
   pressAt,
+  /** The press being aimed moved to (ndcX, ndcY), as the mouse would. */
+  aimDrag,
+  /** The press let go at (ndcX, ndcY) as the mouse would: 'swing' (along the arrow), 'armed' (a tap: the arrow shown) or 'none'. */
+  releaseAt,
+  /** The aim: the piece pressed or armed (0: none), whether its arrow shows, the ball's direction (rad) and the power in [0.2, 1]. */
+  aim: (): { piece: number; arrow: boolean; direction: number; power: number } => ({
+    piece: aiming.piece || aiming.armed,
+    arrow: aimPreview.visible,
+    direction: aiming.direction,
+    power: aiming.power,
+  }),
   /** The piece the running swing is aimed at (0 when none), and whether its arrow shows. */
   aimed: (): { piece: number; arrow: boolean } => ({ piece: aimed, arrow: aimArrow.visible }),
   /**

@@ -437,6 +437,20 @@ const APPROACH_DIRECTIONS = 24;
  * of the plan's time (measured over levels 1 to 5, see test/games/wrecking-ball-windup.test.ts).
  */
 export const MAX_OFFSET = 3;
+/**
+ * A swing the player aimed (see `aimAt`): the direction the ball travels across the ground as it
+ * reaches the piece, rad (atan2 of its z and x velocity: 0 along +x, pi/2 along +z), and its
+ * horizontal speed there, m/s, in (0, 2 HIT_SPEED].
+ */
+export interface SwingRequest {
+  direction: number;
+  speed: number;
+}
+/**
+ * Seconds of plan cost per radian an approach strays from the player's direction (`aimAt` with a
+ * SwingRequest): larger than any other cost, so the nearest direction the crane can swing wins.
+ */
+const AIM_COST = 200;
 /** Seconds of plan time a ball along a long piece's length costs (see `aimAt`). */
 const GLANCE_COST = 2;
 /** Seconds before the arrival in which pieces near the ball's path count as in the way of the hit. */
@@ -734,9 +748,20 @@ function reachAlong(p: Piece, ux: number, uz: number): number {
  * (`structureOf`), across the ground at the piece in a wall and at the middle of a stack or a tower. The last leg is the swing's run (`CraneMove.run`; its first move releases it);
  * after the hit the hook follows through (FOLLOW_SPEED), so the ball swings on through the structure
  * and comes to rest past it. `craneSystem` makes the plan again from where the ball is every
- * REPLAN_EVERY s.
+ * REPLAN_EVERY s. With `request` (the player's swing) the ball arrives at request.speed instead of
+ * HIT_SPEED, from the direction nearest request.direction the crane can swing it (AIM_COST); without it, from the
+ * direction of the lowest cost (the level scripts' and ?demo's swings). Throws a RangeError for a request
+ * whose direction is not finite or whose speed is outside (0, 2 HIT_SPEED].
  */
-export function aimAt(world: PhysicsWorld, h: WreckingBallHandles, piece: number): void {
+export function aimAt(world: PhysicsWorld, h: WreckingBallHandles, piece: number, request?: SwingRequest): void {
+  if (
+    request !== undefined &&
+    !(Number.isFinite(request.direction) && Number.isFinite(request.speed) && request.speed > 0 && request.speed <= 2 * HIT_SPEED)
+  )
+    throw new RangeError(
+      `aimAt: request needs a finite direction and a speed in (0, ${2 * HIT_SPEED}] m/s, got ${JSON.stringify(request)}`,
+    );
+  const speed = request?.speed ?? HIT_SPEED;
   const P = world.components.Position;
   const tapped = h.pieces.find((q) => q.body === piece);
   const structure = tapped ? structureOf(h.pieces, tapped) : [];
@@ -774,7 +799,7 @@ export function aimAt(world: PhysicsWorld, h: WreckingBallHandles, piece: number
       for (let d = 0; d < APPROACH_DIRECTIONS; d++) {
         if (best[d] !== null) continue;
         const t = (2 * Math.PI * d) / APPROACH_DIRECTIONS;
-        const legs = solveLegs(start, ex, ez, HIT_SPEED * Math.cos(t), HIT_SPEED * Math.sin(t), steps);
+        const legs = solveLegs(start, ex, ez, speed * Math.cos(t), speed * Math.sin(t), steps);
         if (legs === null || !legsFeasible(start.hx, start.hz, legs, PLAN_RATE) || !offsetWithin(start, legs, limit)) continue;
         best[d] = legs;
         left--;
@@ -805,6 +830,8 @@ export function aimAt(world: PhysicsWorld, h: WreckingBallHandles, piece: number
     // along it only glances off its end: up to GLANCE_COST s more for a ball along it.
     const t = (2 * Math.PI * d) / APPROACH_DIRECTIONS;
     let cost = time + (long ? GLANCE_COST * Math.abs(Math.cos(t) * long[0] + Math.sin(t) * long[1]) : 0);
+    // The player's direction: the feasible one nearest it, whatever the others would cost.
+    if (request) cost += AIM_COST * Math.abs(Math.atan2(Math.sin(t - request.direction), Math.cos(t - request.direction)));
     const [fx, fz] = follow[d]!,
       fr = Math.hypot(fx, fz);
     cost += REACH_COST * (Math.max(0, fr - RADIUS_RANGE[1]) + Math.max(0, RADIUS_RANGE[0] - fr));
@@ -846,8 +873,8 @@ export function aimAt(world: PhysicsWorld, h: WreckingBallHandles, piece: number
     x: ex,
     z: ez,
     height,
-    vx: HIT_SPEED * Math.cos(dir),
-    vz: HIT_SPEED * Math.sin(dir),
+    vx: speed * Math.cos(dir),
+    vz: speed * Math.sin(dir),
     steps,
     done: 0,
     runAt: steps - legs.steps[2]!,

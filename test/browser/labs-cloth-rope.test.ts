@@ -501,6 +501,34 @@ for (const [device, options] of [
       const shown = await g.page.evaluate(() => (window.game as unknown as RopeLab).banner());
       expect(shown.text).toBe(`Missed!\n${device === 'phone' ? 'tap' : 'click'} to try again`);
       expect(shown.stars).toEqual([lost.stars, 3]);
+      // The card (the banner's box, 24 px wider each side, 14 px above, its star row and 14 px
+      // below: within 80 px under the text) stands clear of the basket and of the ball beside it,
+      // so the player sees why it missed (on a phone the card covered both).
+      const card = await g.page.evaluate(() => {
+        const w = window.game as unknown as RopeLab & {
+          basket(): { at: number[]; width: number };
+          renderer: { camera: { toScreenX(x: number): number; toScreenY(y: number): number } };
+        };
+        const cam = w.renderer.camera,
+          b = w.basket(),
+          [x, y, bw, bh] = w.banner().box as [number, number, number, number];
+        const P = w.world.components.Position,
+          e = w.ids().ball % 2 ** 25;
+        const rect = (x0: number, y0: number, x1: number, y1: number) => [
+          cam.toScreenX(x0),
+          cam.toScreenY(y1),
+          cam.toScreenX(x1),
+          cam.toScreenY(y0),
+        ];
+        return {
+          card: [x - 24, y - 14, x + bw + 24, y + bh + 80],
+          basket: rect(b.at[0]! - b.width / 2 - 0.1, 0, b.at[0]! + b.width / 2 + 0.1, 0.85),
+          ball: rect(P.x[e]! - 0.3, P.y[e]! - 0.3, P.x[e]! + 0.3, P.y[e]! + 0.3),
+        };
+      });
+      const apart = (a: number[], b: number[]) => a[2]! < b[0]! || b[2]! < a[0]! || a[3]! < b[1]! || b[3]! < a[1]!;
+      expect(apart(card.card, card.basket)).toBe(true);
+      expect(apart(card.card, card.ball)).toBe(true);
       await g.page.waitForTimeout(450); // a tap counts 0.4 s after the miss (not the swipe that missed)
       const mid = await toPage(g, 0, 4);
       if (device === 'phone') await g.page.touchscreen.tap(mid.x, mid.y);

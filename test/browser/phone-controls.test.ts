@@ -369,7 +369,9 @@ describe('phone controls', () => {
     expect(sky.horizon).toBeLessThan(0.8);
     expect(Math.max(Math.abs(sky.mast.x), Math.abs(sky.mast.y))).toBeLessThan(1);
     // Before the first swing a hint over the scene says what a tap does.
-    expect(await g.page.locator('[data-hud="tap-hint"]').textContent()).toBe('Tap a block: the crane swings the ball into it');
+    expect(await g.page.locator('[data-hud="tap-hint"]').textContent()).toBe(
+      'Drag back from a block and let go: the ball swings into it along the arrow',
+    );
     // A tap on open ground (the point within the jib's reach farthest from every piece, drawn on
     // the screen) moves the hook, and the hint says so and what to tap instead.
     const open = await g.page.evaluate(() => {
@@ -403,8 +405,8 @@ describe('phone controls', () => {
     expect(open.far).toBeGreaterThan(2.5);
     await g.page.touchscreen.tap(open.x, open.y);
     await g.waitFor(() => document.querySelector('[data-hud="tap-hint"]')!.textContent!.startsWith('That moves the hook'), null);
-    // A tap 26 px beside a tower block (a tower is about 20 px wide here) swings the ball at the
-    // tower instead of sending the hook to the ground there; an arrow marks it. Seen from above, the
+    // A tap 26 px beside a tower block (a tower is about 20 px wide here) aims at the tower instead
+    // of sending the hook to the ground there: the aim's arrow shows on the ground. Seen from above, the
     // tower's blocks are drawn nearly over each other: the swing may take any of them.
     const near = await g.page.evaluate(() => {
       type V = { x: number; y: number };
@@ -425,7 +427,7 @@ describe('phone controls', () => {
     });
     await g.page.touchscreen.tap(near.x, near.y);
     await g.waitFor((tower) => {
-      const a = (window.game as unknown as { aimed(): { piece: number; arrow: boolean } }).aimed();
+      const a = (window.game as unknown as { aim(): { piece: number; arrow: boolean } }).aim();
       return tower.includes(a.piece) && a.arrow;
     }, near.tower);
     await g.page.evaluate(() => {
@@ -628,6 +630,18 @@ describe('phone controls', () => {
     // 1.3 x the type size and the outline adds 4 px: two lines 2.7 x, three 4 x; bound 3.2 x).
     expect(aim.banner.height).toBeLessThan(3.2 * aim.banner.fontSize);
     expect(aim.banner.width).toBeLessThanOrEqual(aim.W);
+    // The field fitted to 390 px draws the castle small under a tall sky: a close-up of it fills
+    // the sky over the scene, at least twice as large (2.24 x on level 1), on the canvas and above
+    // the castle itself.
+    const close = await g.page.evaluate(() => {
+      const w = window.game as unknown as Game & { closeUp(): { box: number[]; zoom: number } | null };
+      return { close: w.closeUp(), castleTop: w.renderer.camera.toScreenY(w.level().castleTop) };
+    });
+    expect(close.close!.zoom).toBeGreaterThanOrEqual(2);
+    const [cx, cy, cw, ch] = close.close!.box as [number, number, number, number];
+    expect(cx).toBeGreaterThanOrEqual(0);
+    expect(cx + cw).toBeLessThanOrEqual(aim.W);
+    expect(cy + ch).toBeLessThan(close.castleTop);
     // The legend is behind the menu button on a phone: a card over the scene says how to play until
     // the first touch.
     const hint = g.page.locator('[data-hud="touch-hint"]');
@@ -683,11 +697,12 @@ describe('phone controls', () => {
     expect(flight.outside).toBe(0);
     // Once the camera is at rest on the shot view, the rock past the castle and room past it are in view too.
     const tower = await g.waitFor(() => {
-      const w = window.game as unknown as Game & { shotView(): boolean };
+      const w = window.game as unknown as Game & { shotView(): boolean; closeUp(): unknown };
       if (!w.shotView() || !w.cameraSettled()) return null;
       const cam = w.renderer.camera,
         lv = w.level();
       return {
+        closeUp: w.closeUp(),
         height: cam.toScreenY(0) - cam.toScreenY(lv.castleTop),
         perMetre: cam.toScreenY(0) - cam.toScreenY(1),
         rock: cam.toScreenX(lv.castleMaxX + 2.9),
@@ -697,6 +712,8 @@ describe('phone controls', () => {
     // The shot view's zoom: over 32 px a metre (level 1's old 6 m watchtower drew 210 px tall; its
     // low tower of 2 m now draws 70 px at the same 34 px a metre).
     expect(tower.perMetre).toBeGreaterThan(32);
+    // (The close-up is hidden there: the view is as close.)
+    expect(tower.closeUp).toBeNull();
     expect(tower.height).toBeGreaterThan(2 * 32);
     expect(tower.rock).toBeLessThan(tower.width - 30);
     // A touch drag starting mid-screen, far from the cup (at the left edge there is no room to pull back), throws.

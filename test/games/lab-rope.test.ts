@@ -73,9 +73,9 @@ describe('lab-rope levels', () => {
     /** The index of a `win` schedule that wins with fewer stars than `stars`. */
     fewer?: number;
   }[] = [
-    // 1: cut just after the ball turns back at the right end of its first swing (won 1.86-2.22 s,
-    // 3 stars 1.96-2.12 s: a cut at 2.02 s wins them, one at 2.17 s fewer). A cut with the ball over
-    // the basket on its way back, 1.5 s in, sends it on past it to the wall.
+    // 1: cut just after the ball turns back at the right end of its first swing (won 1.8-2.26 s,
+    // 3 stars 1.96-2.12 s: a cut at 2.02 s wins them, one at 2.17 s fewer). A cut 1.5 s in, the
+    // ball past the basket on its way back, sends it on to the wall.
     { level: 0, win: [[[2.02, 0]], [[2.17, 0]]], lose: [[1.5, 0]], fewer: 1, stars: 3 },
     // 2: the left rope first, the right one 0.4-1.9 s later (3 stars from 0.85 s later).
     {
