@@ -6,7 +6,7 @@
 // either side too). Prints, per spot, the starts that have one out of all, and one such throw.
 // --spot x,y,side [--tall] measures one spot of your own instead; --sweep [--tall] measures every
 // spot 0.5 m apart that fits the box clear of the ramps (from starts 1 m apart) and prints the best
-// 40 (to choose spots from). --pull desk,phone (full pulls, px; default 420,292) measures how
+// 40 (to choose spots from). --pull desk,phone (full pulls, px; default 420,234) measures how
 // forgiving the slingshot is: for baskets from every third natural start, the window of pull lengths
 // (speed, at the basket's angle) and of sideways pull (angle, at its speed) that still score, in px
 // of pull at that full pull (games/bouncing-balls/main.ts fullPull). Takes a second or so a spot.
@@ -42,7 +42,7 @@ if (process.argv.includes('--sweep')) {
 }
 const pullAt = process.argv.indexOf('--pull');
 if (pullAt >= 0) {
-  const [desk, phone] = (process.argv[pullAt + 1] ?? '420,292').split(',').map(Number);
+  const [desk, phone] = (process.argv[pullAt + 1] ?? '420,234').split(',').map(Number);
   if (!(desk > 0 && phone > 0))
     throw new RangeError(`bouncing-balls-reach: --pull wants desk,phone px > 0, got ${process.argv[pullAt + 1]}`);
   const median = (a) => [...a].sort((x, y) => x - y)[Math.floor(a.length / 2)];

@@ -491,16 +491,18 @@ function local(event: PointerEvent): [number, number] {
 }
 
 /**
- * The pull, px, that throws at full speed (MAX_THROW_SPEED): 75 % of the canvas' shorter side, within
- * [260, 420] px. Long, so a few px of a shaky hand change a throw little: a basket's throws take
- * pulls of about 70 to 180 px on a phone (292 px full) and 120 to 250 px on a desktop (420 px), and
- * the window of pull lengths that still score is some 18 px wide (phone) and 24 px (desktop), of
- * sideways pull 11 and 16 px (medians of `node scripts/bouncing-balls-reach.mjs --pull`). At 30 %
- * of the shorter side (117 px on a phone, 210 px on a desktop) they were 7 and 12 px, 4 and 8 px.
+ * The pull, px, that throws at full speed (MAX_THROW_SPEED): 60 % of the canvas' shorter side, within
+ * [230, 420] px. Long, so a few px of a shaky hand change a throw little: a basket's throws take
+ * pulls of about 55 to 140 px on a phone (234 px full) and 120 to 250 px on a desktop (420 px), and
+ * the window of pull lengths that still score is some 15 px wide (phone) and 24 px (desktop), of
+ * sideways pull 9 and 16 px (medians of `node scripts/bouncing-balls-reach.mjs --pull 420,234`). At
+ * 30 % of the shorter side (117 px on a phone, 210 px on a desktop) they were 7 and 12 px, 4 and 8 px.
+ * Not longer on a phone: a throw from 1.5 m over the floor of its box has some 170 px of screen
+ * under it to pull into (at 75 %, 292 px, the steepest baskets took up to 177 px).
  * Pointer capture keeps the pull going past the canvas' edge.
  */
 function fullPull(): number {
-  return Math.min(420, Math.max(260, 0.75 * Math.min(canvas.clientWidth || innerWidth, canvas.clientHeight || innerHeight)));
+  return Math.min(420, Math.max(230, 0.6 * Math.min(canvas.clientWidth || innerWidth, canvas.clientHeight || innerHeight)));
 }
 
 /** The throw the pointer would make now: start (m) and velocity (m/s) of the slingshot. */
