@@ -6,7 +6,10 @@
 // either side too). Prints, per spot, the starts that have one out of all, and one such throw.
 // --spot x,y,side [--tall] measures one spot of your own instead; --sweep [--tall] measures every
 // spot 0.5 m apart that fits the box clear of the ramps (from starts 1 m apart) and prints the best
-// 40 (to choose spots from). Takes a second or so a spot.
+// 40 (to choose spots from). --pull desk,phone (full pulls, px; default 420,234) measures how
+// forgiving the slingshot is: for baskets from every third natural start, the window of pull lengths
+// (speed, at the basket's angle) and of sideways pull (angle, at its speed) that still score, in px
+// of pull at that full pull (games/bouncing-balls/main.ts fullPull). Takes a second or so a spot.
 import { importSource } from './build.mjs';
 
 const r = await importSource(
@@ -35,6 +38,41 @@ if (process.argv.includes('--sweep')) {
       }
   rows.sort((a, b) => b[0] - a[0]);
   for (const [found, s] of rows.slice(0, 40)) console.log(found, s);
+  process.exit(0);
+}
+const pullAt = process.argv.indexOf('--pull');
+if (pullAt >= 0) {
+  const [desk, phone] = (process.argv[pullAt + 1] ?? '420,234').split(',').map(Number);
+  if (!(desk > 0 && phone > 0))
+    throw new RangeError(`bouncing-balls-reach: --pull wants desk,phone px > 0, got ${process.argv[pullAt + 1]}`);
+  const median = (a) => [...a].sort((x, y) => x - y)[Math.floor(a.length / 2)];
+  for (const tall of [false, true]) {
+    const full = tall ? phone : desk,
+      perPx = r.MAX_THROW_SPEED / full;
+    const speedPx = [],
+      anglePx = [],
+      pulls = [];
+    for (const spot of r.hoopSpots(tall)) {
+      const starts = r.naturalStarts(spot, tall);
+      for (let k = 0; k < starts.length; k += 6) {
+        const t = r.findBasket(spot, tall, starts[k], starts[k + 1]);
+        if (!t) continue;
+        const edge = (key, d) => {
+          let v = t[key];
+          while (Math.abs(v - t[key]) < 5 && r.cleanBasket(spot, tall, { ...t, [key]: v + d })) v += d;
+          return v;
+        };
+        const pull = t.speed / perPx;
+        pulls.push(pull);
+        speedPx.push((edge('speed', 0.02) - edge('speed', -0.02)) / perPx);
+        anglePx.push((pull * (edge('angle', 0.05) - edge('angle', -0.05)) * Math.PI) / 180);
+      }
+    }
+    console.log(
+      `${tall ? 'tall (phone)' : 'wide (desktop)'}, full pull ${full} px: ${pulls.length} baskets, pulls ${Math.round(Math.min(...pulls))}..${Math.round(Math.max(...pulls))} px; ` +
+        `window of pull length median ${median(speedPx).toFixed(1)} px (least ${Math.min(...speedPx).toFixed(1)}), sideways median ${median(anglePx).toFixed(1)} px (least ${Math.min(...anglePx).toFixed(1)})`,
+    );
+  }
   process.exit(0);
 }
 if (at >= 0) {

@@ -13,6 +13,10 @@
 //   share of aim points that light its group (how forgiving it is) and the best aim found, then
 //   replays the whole plan (every shell at its best aim, in one show) and says whether it lit every
 //   lantern. Exits 1 when a level could not be lit in par.
+// --meet: that the finale's meeting cue (lanterns.ts meetCue, the page's ring) is honest: for launches
+//   every 0.1 s over a swing, a held shell aimed at the cue's point, on every seed and in both skies,
+//   and let go then, lights the meeting pair and the lantern above; prints the share that do where
+//   the cue says "let go now!" (release >= 0.5) and where its ring shows for a release at all.
 // Takes a minute or two.
 import { importSource } from './build.mjs';
 
@@ -21,7 +25,7 @@ const fw = await importSource(
   "export * from './games/fireworks/show.ts'; export * from './games/fireworks/lanterns.ts'; export { query, slotOf } from '@bitphysics/physics';",
 );
 const { LEVELS, FUSE, MAX_HOLD, HOT_FRACTION, createFireworks, launchShell, stepFireworks, lanternsOf, lanternAt, startLevel } = fw;
-const { lightFromSparks, countShell, bandMiddle, lanternRadius, query, slotOf } = fw;
+const { lightFromSparks, countShell, bandMiddle, lanternRadius, meetCue, query, slotOf } = fw;
 
 const args = process.argv.slice(2);
 const SKIES = [
@@ -34,7 +38,7 @@ for (const n of levels)
   if (!(Number.isInteger(n) && n >= 1 && n <= LEVELS.length))
     throw new RangeError(`fireworks-levels: levels are 1 to ${LEVELS.length}, got ${n}`);
 const chosen = levels.length ? levels : LEVELS.map((_, i) => i + 1);
-const both = !args.includes('--reach') && !args.includes('--par');
+const both = !args.includes('--reach') && !args.includes('--par') && !args.includes('--meet');
 
 /** A fresh quiet show in `sky` (one generation: the crackles light nothing). */
 function newShow(sky, seed) {
@@ -141,11 +145,12 @@ const PLANS = [
     { group: [4, 5], hold: false, at: 0, lift: 0.08 },
   ],
   // 5. Finale: the two high side lanterns one each, and a held burst between the middle lantern and
-  //    the low pair when they meet (closest a quarter period into their swing, 1.5 s).
+  //    the low pair when they meet (closest a quarter period into their swing, 1.5 s), MEET_LIFT over
+  //    their mean, where the page's meeting cue aims.
   [
     { group: [0], hold: false, at: 0, lift: 0 },
     { group: [2], hold: false, at: 0, lift: 0 },
-    { group: [1, 3, 4], hold: true, at: 1.5 - FUSE + 6, lift: 0 },
+    { group: [1, 3, 4], hold: true, at: 1.5 - FUSE + 6, lift: fw.MEET_LIFT },
   ],
 ];
 
@@ -224,6 +229,30 @@ if (both || args.includes('--par'))
         `level ${n} ${lv.name}, ${sky.name}: par ${lv.par} ${ok ? 'lit' : 'NOT lit'} (aims that light each shell's group on every seed: ${shares.join(', ')}; best aims ${best
           .map((b) => (b ? `(${(b.x / W).toFixed(2)}, ${((b.y - bandMiddle(sky) * sky.height) / W).toFixed(2)}) W` : 'none'))
           .join(', ')})`,
+      );
+    }
+  }
+if (args.includes('--meet'))
+  for (const [level, lv] of LEVELS.entries()) {
+    if (!lv.meet) continue;
+    for (const sky of SKIES) {
+      const tally = { label: [0, 0], ring: [0, 0] };
+      const lit0 = lanternsOf(level, sky).map(() => false);
+      for (let at = 6; at < 12 - 1e-9; at += 0.1) {
+        const cue = meetCue(level, sky, at, lit0);
+        if (!cue || cue.release <= 0) continue;
+        const group = [...lv.meet.pair, lv.meet.with];
+        const ok = SEEDS.every((seed) => {
+          const lit = play(level, sky, seed, [{ x: cue.x, y: cue.y, hold: true, at }]);
+          return group.every((i) => lit[i]);
+        });
+        for (const key of cue.release >= 0.5 ? ['label', 'ring'] : ['ring']) {
+          tally[key][0] += ok ? 1 : 0;
+          tally[key][1]++;
+        }
+      }
+      console.log(
+        `level ${level + 1} ${lv.name}, ${sky.name}: a held shell at the cue lights the meeting three on every seed from ${tally.label[0]}/${tally.label[1]} launch times with "let go now!", ${tally.ring[0]}/${tally.ring[1]} with the ring`,
       );
     }
   }

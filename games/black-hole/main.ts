@@ -21,7 +21,7 @@
  *
  * Drawn: nebulae behind the stars; each hole as a black disc of its Schwarzschild radius with a
  * photon ring, an orange glow and a tilted disc of hot gas whose clumps go round it; the exhaust
- * (particles, additive); the ship with a flame opposite its thrust; its predicted path for the next second, integrated in a small second world
+ * (particles, additive); the ship with a flame opposite its thrust; its predicted path for the next 2 s, integrated in a small second world
  * (rules.ts `predictPath`) and drawn as fading dots.
  */
 
@@ -122,7 +122,13 @@ let run: LevelRun | null = null;
 let predictor: Predictor;
 /** Records every input of the run (V plays it back from the start). */
 let replay: BlackHoleReplay;
-const PATH_STEPS = 60;
+/**
+ * Steps of the predicted path drawn ahead of the ship: 2 s. A wall of holes (levels 2 and 3) pulls
+ * like a line of mass, harder than the thrust within some 6 m; a pilot that flies up and steers by
+ * the path to keep it clear (scripts/black-hole-levels.mjs, reacting every 0.3 s) fell in on level 2
+ * three times in three (every field of eight) seeing 1 s ahead, 0.75 times a level seeing 2 s.
+ */
+const PATH_STEPS = 120;
 const path = new Float64Array(2 * (PATH_STEPS + 1));
 let pathPoints = 0;
 
@@ -850,11 +856,18 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
     y = O.y[slotOf(s)]! + (P.y[slotOf(s)]! - O.y[slotOf(s)]!) * alpha;
   if (params.path && !bh.over) {
     pathPoints = predictPath(bh, predictor, path, PATH_STEPS);
+    // A path that stops short inside the field ends on a horizon: drawn red, with a ring where it
+    // falls in, so the pull of a wall bending the ship into it shows 2 s ahead.
+    const lx = path[2 * pathPoints - 2]!,
+      ly = path[2 * pathPoints - 1]!;
+    const falls = pathPoints < PATH_STEPS + 1 && lx > 0 && lx < bh.field.width && ly > 0 && ly < bh.field.height;
+    const color = falls ? 0xff5a4a : 0x9fd3ff;
     for (let i = 1; i < pathPoints; i += 2) {
       overlay
-        .circle(cam.toScreenX(path[2 * i]!), cam.toScreenY(path[2 * i + 1]!), 1.6)
-        .fill({ color: 0x9fd3ff, alpha: 0.45 * (1 - i / (PATH_STEPS + 1)) + 0.08 });
+        .circle(cam.toScreenX(path[2 * i]!), cam.toScreenY(path[2 * i + 1]!), falls ? 2.2 : 1.8)
+        .fill({ color, alpha: 0.5 * (1 - i / (PATH_STEPS + 1)) + 0.15 });
     }
+    if (falls) overlay.circle(cam.toScreenX(lx), cam.toScreenY(ly), 7).stroke({ width: 2, color, alpha: 0.9 });
   } else {
     pathPoints = 0;
   }

@@ -7,8 +7,8 @@
  * A basket: the centre of one of the player's balls crosses the rim's line downwards between the
  * front rim's inner end and the backboard (`throughHoop`). Only balls released below the rim count
  * (`SHOT_LINE_GAP`), so a ball dropped straight in from above is no basket. The round's clock starts
- * with the player's first throw (the page's clicks that drop a ball do not start it), so reading the
- * goal, or a click meant for something else, costs no time.
+ * with the player's first basket: until then the player warms up, learning the aim with no time
+ * running (a first playtest's strangers, clocked from their first throw, scored only when paused).
  *
  * The net (`NET`, `netContact`) hangs under the rim and lets a ball in only from above: one thrown up
  * from under the hoop is stopped by the net's bottom and drops back, and one coming from the side
@@ -22,8 +22,8 @@
 import { addSegment, type PhysicsWorld, removeBody } from '@bitphysics/physics';
 import type { DragMode } from './scene';
 
-/** Length of a round, s. */
-export const ROUND_SECONDS = 45;
+/** Length of a round, s, counted from the first basket. */
+export const ROUND_SECONDS = 60;
 
 /** Radius of the player's balls, m (fixed, so every shot is the same ball whatever the sandbox's ball count). */
 export const PLAYER_RADIUS = 0.4;
@@ -208,7 +208,7 @@ export function mayScore(spot: HoopSpot, y: number): boolean {
   return y <= spot.y - SHOT_LINE_GAP;
 }
 
-/** The phase of a round: waiting for the first throw, the clock running, or time up. */
+/** The phase of a round: warming up until the first basket, the clock running, or time up. */
 export type RoundPhase = 'ready' | 'playing' | 'over';
 
 /** A round of the hoop game. */
@@ -226,16 +226,15 @@ export interface HoopRound {
   shots: number;
 }
 
-/** A new round of `seconds` s (default ROUND_SECONDS), waiting for the first throw. @throws RangeError unless seconds is finite and > 0. */
+/** A new round of `seconds` s (default ROUND_SECONDS), warming up until the first basket. @throws RangeError unless seconds is finite and > 0. */
 export function createRound(seconds = ROUND_SECONDS): HoopRound {
   if (!(seconds > 0 && Number.isFinite(seconds))) throw new RangeError(`createRound: seconds must be finite and > 0, got ${seconds}`);
   return { phase: 'ready', score: 0, seconds, timeLeft: seconds, spot: 0, shots: 0 };
 }
 
-/** The player threw a ball: starts the clock if the round was waiting, and counts the shot. Nothing changes once time is up. */
+/** The player threw a ball: counts the shot (the clock waits for the first basket). Nothing changes once time is up. */
 export function roundShot(round: HoopRound): void {
   if (round.phase === 'over') return;
-  round.phase = 'playing';
   round.shots++;
 }
 
@@ -253,13 +252,15 @@ export function roundTick(round: HoopRound, dt: number): boolean {
 }
 
 /**
- * A basket: one point and the hoop moves to its next spot (of `spotCount`, cycling). Ignored unless
- * the clock runs. @returns whether it counted. @throws RangeError if spotCount is not a positive integer.
+ * A basket: one point and the hoop moves to its next spot (of `spotCount`, cycling); the first one
+ * starts the clock. Ignored once time is up. @returns whether it counted.
+ * @throws RangeError if spotCount is not a positive integer.
  */
 export function roundBasket(round: HoopRound, spotCount: number): boolean {
   if (!(Number.isInteger(spotCount) && spotCount > 0))
     throw new RangeError(`roundBasket: spotCount must be a positive integer, got ${spotCount}`);
-  if (round.phase !== 'playing') return false;
+  if (round.phase === 'over') return false;
+  round.phase = 'playing';
   round.score++;
   round.spot = (round.spot + 1) % spotCount;
   return true;

@@ -2,8 +2,8 @@
  * Bouncing balls: the book's bouncing balls grown up. Balls of different sizes and masses fall,
  * bounce off the box, the inclined walls (and their end points) and each other.
  *
- * The game on top (./hoop.ts): throw balls through the hoop as often as you can in 45 s; the hoop
- * moves after each basket, the clock starts with the first throw, the best score is kept in
+ * The game on top (./hoop.ts): throw balls through the hoop as often as you can in 60 s; the hoop
+ * moves after each basket, the clock starts with the first basket (a warm-up until then), the best score is kept in
  * localStorage; R or the Play-again button starts a new round. The status row above the box says
  * the goal and shows baskets, time and best.
  *
@@ -25,7 +25,7 @@
  * square, an orange rim and a net of diamond mesh; the player's balls are orange with black seams
  * that turn with the ball.
  * Keys: P pause, N single step, R reset, T trails, D debug overlay.
- * URL: ?count=N (balls, 1..10000), ?round=S (hoop round, s, 5..600), ?seed=S, ?mode=auto|sprites|particles, ?trails=0|1, ?debug.
+ * URL: ?count=N (balls, 1..10000; default 40, 20 on a tall screen), ?round=S (hoop round, s, 5..600), ?seed=S, ?mode=auto|sprites|particles, ?trails=0|1, ?debug.
  * From 1000 balls on (mode auto) the renderer draws with pixi's ParticleContainer.
  */
 
@@ -97,7 +97,13 @@ const CLICK_SLOP = 6;
 /** The same for a finger, CSS px: a fingertip resting on glass wobbles a few pixels. */
 const TOUCH_SLOP = 12;
 
-const initialCount = numberParam('count', { default: 40, min: 1, max: 10_000, integer: true });
+/** A screen taller than wide (a phone held upright) gets the tall box, which fills it. */
+const TALL = window.innerHeight > 1.2 * window.innerWidth;
+/**
+ * Sandbox balls at the start: 40, or 20 in the tall box, where 40 balls of the same size crowd a
+ * court 360 px wide and cross most throws (the aiming arc ignores them).
+ */
+const initialCount = numberParam('count', { default: TALL ? 20 : 40, min: 1, max: 10_000, integer: true });
 const params = {
   count: initialCount,
   seed: seedParam(),
@@ -115,8 +121,6 @@ const params = {
 const roundSeconds = numberParam('round', { default: ROUND_SECONDS, min: 5, max: 600 });
 const mode = choiceParam('mode', ['auto', 'sprites', 'particles'] as const, 'auto');
 
-/** A screen taller than wide (a phone held upright) gets the tall box, which fills it. */
-const TALL = window.innerHeight > 1.2 * window.innerWidth;
 let handles: BouncingBallsHandles;
 /** Crates dropped with X (boxes: shapes that tumble among the balls), oldest first. */
 let crates: number[] = [];
@@ -487,11 +491,18 @@ function local(event: PointerEvent): [number, number] {
 }
 
 /**
- * The pull, px, that throws at full speed (MAX_THROW_SPEED): 30 % of the canvas' shorter side, within
- * [110, 220] px, so a phone's thumb reaches it without leaving the screen.
+ * The pull, px, that throws at full speed (MAX_THROW_SPEED): 60 % of the canvas' shorter side, within
+ * [230, 420] px. Long, so a few px of a shaky hand change a throw little: a basket's throws take
+ * pulls of about 55 to 140 px on a phone (234 px full) and 120 to 250 px on a desktop (420 px), and
+ * the window of pull lengths that still score is some 15 px wide (phone) and 24 px (desktop), of
+ * sideways pull 9 and 16 px (medians of `node scripts/bouncing-balls-reach.mjs --pull 420,234`). At
+ * 30 % of the shorter side (117 px on a phone, 210 px on a desktop) they were 7 and 12 px, 4 and 8 px.
+ * Not longer on a phone: a throw from 1.5 m over the floor of its box has some 170 px of screen
+ * under it to pull into (at 75 %, 292 px, the steepest baskets took up to 177 px).
+ * Pointer capture keeps the pull going past the canvas' edge.
  */
 function fullPull(): number {
-  return Math.min(220, Math.max(110, 0.3 * Math.min(canvas.clientWidth || innerWidth, canvas.clientHeight || innerHeight)));
+  return Math.min(420, Math.max(230, 0.6 * Math.min(canvas.clientWidth || innerWidth, canvas.clientHeight || innerHeight)));
 }
 
 /** The throw the pointer would make now: start (m) and velocity (m/s) of the slingshot. */
@@ -568,8 +579,7 @@ canvas.addEventListener('pointermove', (event) => {
 
 /**
  * Pointer released: a click drops a ball where it was pressed; a pull throws one from there,
- * slingshot-style. Only a throw starts the round's clock: a click that only meant to close a menu,
- * dismiss a card or try the sandbox costs no time.
+ * slingshot-style. Only a throw counts as a shot (and the clock waits for the first basket).
  */
 function release(event: PointerEvent, cancelled: boolean): void {
   if (event.pointerId !== pointerId) return;
@@ -587,8 +597,7 @@ canvas.addEventListener('contextmenu', (event) => event.preventDefault());
 
 /**
  * A player's ball at (x, y), m, with velocity (vx, vy), m/s: orange if released below the rim (it may
- * score), grey if not. A `thrown` ball (a throw, not a click's drop) starts the round's clock and
- * counts as a shot. @returns its id.
+ * score), grey if not. A `thrown` ball (a throw, not a click's drop) counts as a shot. @returns its id.
  */
 function shoot(x: number, y: number, vx: number, vy: number, thrown = true): number {
   const e = spawnBall(shell.world, handles, x, y, vx, vy, PLAYER_RADIUS);
@@ -630,6 +639,7 @@ function aimPath(): number[] {
     seconds: 2.5,
     bounces: AIM_BOUNCES,
     restitution: p.restitution,
+    friction: p.friction,
     walls,
     hoop: spot,
   });
@@ -1096,7 +1106,9 @@ function updateStatus(): void {
     ? `Time! ${round.score} ${round.score === 1 ? 'basket' : 'baskets'}${round.score > 0 && round.score >= best ? ' — best yet!' : ''}`
     : cheering
       ? `${PRAISE[Math.min(PRAISE.length, round.score) - 1]} ${round.score} so far · the hoop moved`
-      : `Throw balls through the hoop! ${round.seconds} s`;
+      : round.phase === 'ready'
+        ? `Score once to start the ${round.seconds} s clock`
+        : `Throw balls through the hoop! ${round.seconds} s`;
   const numbers = `Baskets ${round.score} · Time ${secs} s · Best ${best}`;
   const throwHow = touch ? 'Press, pull back and let go to throw' : 'Press, drag back and let go to throw';
   const hint = over
@@ -1106,7 +1118,7 @@ function updateStatus(): void {
         ? 'Too high: throw from below the orange line to score'
         : 'Up through the net does not count: drop it in from above'
       : round.phase === 'ready'
-        ? `${throwHow} from below the orange line · the clock starts with your first throw`
+        ? `${throwHow} through the hoop from below the orange line`
         : `${throwHow} · hold still 1 s on a ball to pick it up`;
   if (status.set({ goal, numbers, hint }, over)) setAction(over);
 }

@@ -26,7 +26,7 @@
  */
 import { type PhysicsWorld, query, slotOf } from '@bitphysics/physics';
 import { RECIPES, type RecipeName } from './recipes';
-import { burstSize, type FireworksShow, FLASHES, FUSE } from './show';
+import { burstSize, type FireworksShow, FLASHES, FUSE, MAX_HOLD } from './show';
 
 /** A star lights lanterns while its age is below this fraction of its lifetime (it fades linearly over its life). */
 export const HOT_FRACTION = 0.4;
@@ -82,6 +82,11 @@ export interface LanternLevel {
   readonly par: number;
   readonly shell: LanternShell;
   readonly hold: boolean;
+  /**
+   * A meeting the level is built round (`meetCue`): two drifting lanterns (`pair`, indices) that
+   * swing towards each other, and the lantern (`with`) that a burst where they meet lights with them.
+   */
+  readonly meet?: { readonly pair: readonly [number, number]; readonly with: number };
 }
 
 /**
@@ -195,10 +200,11 @@ export const LEVELS: readonly LanternLevel[] = Object.freeze([
   },
   {
     name: 'Finale',
-    tip: 'and hold when the low two meet',
+    tip: 'and hold on the ring, let go when told',
     par: 3,
     shell: 'peony',
     hold: true,
+    meet: { pair: [3, 4], with: 1 },
     lanterns: [
       { x: 0.1, y: 0.17 },
       { x: 0.5, y: 0.17 },
@@ -248,6 +254,78 @@ export function lanternAt(lantern: Lantern, sky: SkySize, t: number): [number, n
   if (!Number.isFinite(t)) throw new RangeError(`lanternAt: t must be finite, got ${t}`);
   const swing = lantern.drift && lantern.period ? lantern.drift * Math.sin((2 * Math.PI * t) / lantern.period + (lantern.phase ?? 0)) : 0;
   return [(lantern.x + swing) * sky.width, bandMiddle(sky) * sky.height + lantern.y * sky.width];
+}
+
+/** How far past their closest the meeting pair's gap may be for `meetCue` to show, in sky widths. */
+export const MEET_WINDOW = 0.07;
+
+/**
+ * How far above the mean of the meeting's three lanterns `meetCue` aims, in sky widths: a held
+ * burst's hot stars reach further down than up, and at the mean itself the lantern above lit for 20
+ * of 25 releases (5 seeds, 5 release times in the cue), from 0.02 to 0.08 W higher for all 25.
+ */
+export const MEET_LIFT = 0.05;
+
+/** When and where to fire at a level's meeting (`LanternLevel.meet`). */
+export interface MeetCue {
+  /** Where the shell should burst, m: MEET_LIFT over the middle of the pair and the lantern above, as they will be then. */
+  readonly x: number;
+  readonly y: number;
+  /** The pair's places then (their ghosts), m: [ax, ay, bx, by]. */
+  readonly ghosts: readonly [number, number, number, number];
+  /**
+   * How close the pair will be when a shell let go now bursts (FUSE on), 1 at their closest down to
+   * 0 at MEET_WINDOW wider; and the same for a press now held MAX_HOLD before it is let go.
+   */
+  readonly release: number;
+  readonly press: number;
+  /** Whether the pair is within the window now (they are meeting as drawn), not only after the fuse. */
+  readonly meetingNow: boolean;
+}
+
+/**
+ * The cue of `level`'s meeting at `t` s after it started: null if the level has none, either lantern
+ * of its pair is lit, or neither a shell let go now nor one pressed now and held MAX_HOLD would burst
+ * with the pair within MEET_WINDOW sky widths of their closest gap. The burst point is MEET_LIFT over
+ * the mean of the pair's and the other lantern's places at that burst (the pair's middle once that
+ * lantern is lit).
+ * A stranger told to hold "when the low two meet" could not tell when that was, nor that the press
+ * must come a hold and a fuse earlier.
+ * @throws RangeError on a bad level or a non-finite t.
+ */
+export function meetCue(level: number, sky: SkySize, t: number, lit: readonly boolean[]): MeetCue | null {
+  const ls = lanternsOf(level, sky);
+  if (!Number.isFinite(t)) throw new RangeError(`meetCue: t must be finite, got ${t}`);
+  const meet = LEVELS[level]!.meet;
+  if (!meet || lit[meet.pair[0]] || lit[meet.pair[1]]) return null;
+  const a = ls[meet.pair[0]]!,
+    b = ls[meet.pair[1]]!;
+  const gap = (u: number): number => {
+    const [ax, ay] = lanternAt(a, sky, u),
+      [bx, by] = lanternAt(b, sky, u);
+    return Math.hypot(bx - ax, by - ay);
+  };
+  // Their closest gap over a swing (the longer period), sampled.
+  const period = Math.max(a.period ?? 1, b.period ?? 1);
+  let closest = Infinity;
+  for (let k = 0; k < 96; k++) closest = Math.min(closest, gap((period * k) / 96));
+  const window = MEET_WINDOW * sky.width;
+  const near = (u: number): number => Math.max(0, Math.min(1, 1 - (gap(u) - closest) / window));
+  const release = near(t + FUSE),
+    press = near(t + MAX_HOLD + FUSE);
+  if (release <= 0 && press <= 0) return null;
+  const at = release > 0 ? t + FUSE : t + MAX_HOLD + FUSE;
+  const [ax, ay] = lanternAt(a, sky, at),
+    [bx, by] = lanternAt(b, sky, at);
+  const pts = [
+    [ax, ay],
+    [bx, by],
+  ];
+  const lift = lit[meet.with] ? 0 : MEET_LIFT * sky.width;
+  if (!lit[meet.with]) pts.push(lanternAt(ls[meet.with]!, sky, at));
+  const x = pts.reduce((s, p) => s + p[0]!, 0) / pts.length,
+    y = pts.reduce((s, p) => s + p[1]!, 0) / pts.length + lift;
+  return { x, y, ghosts: [ax, ay, bx, by], release, press, meetingNow: gap(t) - closest <= window };
 }
 
 /** A lantern's radius, m, in a sky `width` m wide: LANTERN_SIZE x width, at least LANTERN_MIN_RADIUS. */

@@ -77,6 +77,7 @@ import {
   lanternRadius,
   lanternsOf,
   lightFromSparks,
+  meetCue,
   shownLit,
   sparkReach,
   startLevel,
@@ -806,6 +807,7 @@ function drawGhost(x: number, y: number, r: number): void {
  */
 function drawLanterns(world: PhysicsWorld): void {
   for (const sprite of glowSprites) sprite.visible = false;
+  meetLabel.visible = false;
   if (!lanternShow) return;
   const cam = renderer.camera;
   const sky = show.params.sky;
@@ -868,12 +870,61 @@ function drawLanterns(world: PhysicsWorld): void {
       else drawGhost(x, y, r);
     }
   }
+  drawMeeting(t, r);
   for (const g of lightings) {
     const age = t - g.time;
     if (age < 0 || age > 0.9) continue;
     const f = age / 0.9;
     overlay.circle(cam.toScreenX(g.x), cam.toScreenY(g.y), r * (1.2 + 3 * f)).stroke({ width: 3, color: 0xffe08a, alpha: 1 - f });
   }
+}
+
+/** The label over the meeting's ring: when to press, and when to let go. */
+const meetLabel = new Text({
+  text: '',
+  style: { fontFamily: 'system-ui, sans-serif', fontSize: 15, fontWeight: '700', fill: 0xffe08a, stroke: { color: 0x03050c, width: 4 } },
+});
+meetLabel.anchor.set(0.5, 0);
+meetLabel.visible = false;
+app.stage.addChild(meetLabel);
+/** The meeting cue as drawn last frame (tests): how near a shell let go now bursts to the meeting (0: no ring), the burst point, m, and the label ('' none). */
+let meetShown = { release: 0, x: 0, y: 0, label: '' };
+
+/**
+ * The finale's cue (./lanterns.ts meetCue), `t` s world time, lantern radius `r` px: from a hold and a
+ * fuse before the low pair meets until it has, a gold line joins their ghosts and a pulsing ring marks
+ * where to burst (over the middle of the pair and the lantern above, then), brighter as they close.
+ * Under it "press and hold here" while a press held fully would burst as they meet ("keep holding…"
+ * while pressed), then "let go now!" while a shell let go would; while they are meeting, a line joins the lanterns themselves.
+ */
+function drawMeeting(t: number, r: number): void {
+  const cam = renderer.camera;
+  const cue = run.stars === 0 ? meetCue(run.level, show.params.sky, t - run.start, run.lit) : null;
+  const label = !cue ? '' : cue.release >= 0.5 ? 'let go now!' : pointerId !== -1 ? 'keep holding…' : 'press and hold here';
+  meetLabel.visible = label !== '';
+  if (label && meetLabel.text !== label) meetLabel.text = label;
+  meetShown = { release: cue?.release ?? 0, x: cue?.x ?? 0, y: cue?.y ?? 0, label };
+  if (!cue) return;
+  const gold = 0xffe08a,
+    k = Math.max(cue.release, 0.4 * cue.press);
+  const [ax, ay, bx, by] = cue.ghosts;
+  overlay.moveTo(cam.toScreenX(ax), cam.toScreenY(ay)).lineTo(cam.toScreenX(bx), cam.toScreenY(by));
+  overlay.stroke({ width: 2, color: gold, alpha: 0.25 + 0.5 * k });
+  if (cue.meetingNow) {
+    const ls = lanternsOf(run.level, show.params.sky);
+    const meet = LEVELS[run.level]!.meet!;
+    const [px, py] = lanternAt(ls[meet.pair[0]]!, show.params.sky, t - run.start),
+      [qx, qy] = lanternAt(ls[meet.pair[1]]!, show.params.sky, t - run.start);
+    overlay.moveTo(cam.toScreenX(px), cam.toScreenY(py)).lineTo(cam.toScreenX(qx), cam.toScreenY(qy));
+    overlay.stroke({ width: 3, color: 0xffb060, alpha: 0.55 });
+  }
+  const pulse = 0.5 + 0.5 * Math.sin((cue.release >= 0.5 ? 14 : 7) * t);
+  const x = cam.toScreenX(cue.x),
+    y = cam.toScreenY(cue.y);
+  overlay.circle(x, y, r * (1.3 + 0.25 * pulse)).stroke({ width: 3, color: gold, alpha: (0.45 + 0.45 * pulse) * (0.4 + 0.6 * k) });
+  overlay.circle(x, y, 4).fill({ color: gold, alpha: 0.5 + 0.5 * k });
+  // Under the ring: the lantern above it sits close over it in a phone's sky.
+  meetLabel.position.set(x, y + r * 1.6 + 4);
 }
 
 const status = createStatusRow({ name: 'lanterns' });
@@ -1001,6 +1052,8 @@ shell.expose({
   flashing: (): number => flashing,
   /** Markers drawn where the player's shells in flight will burst: their targets, m. */
   targetMarkers: (): { x: number; y: number }[] => targets.map((m) => ({ x: m.x, y: m.y })),
+  /** The finale's meeting cue as drawn last frame: release (how near a shell let go now bursts to the meeting, 0 none), burst point (m), label. */
+  meeting: () => ({ ...meetShown }),
   /** The lantern show: mode, level (0-based), lit lanterns, shells, stars (0 while playing), best stars per level, lantern positions (m). */
   lanterns: () => ({
     on: lanternShow,

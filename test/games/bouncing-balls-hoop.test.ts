@@ -84,16 +84,16 @@ describe('hoop layout', () => {
 });
 
 describe('hoop round', () => {
-  it('waits for the first ball, runs the clock, scores only while playing, and ends at 0 s', () => {
+  it('warms up until the first basket, which starts the clock; scores until time is up, and ends at 0 s', () => {
     const r = createRound();
     expect(r.phase).toBe('ready');
-    expect(roundTick(r, 5)).toBe(false);
-    expect(r.timeLeft).toBe(ROUND_SECONDS); // the clock waits for the first ball
-    expect(roundBasket(r, 5)).toBe(false);
     roundShot(r);
-    expect(r.phase).toBe('playing');
+    roundShot(r);
+    expect(roundTick(r, 5)).toBe(false);
+    // Throws that miss cost no time: the clock waits for the first basket.
+    expect(r).toMatchObject({ phase: 'ready', shots: 2, timeLeft: ROUND_SECONDS });
     expect(roundBasket(r, 5)).toBe(true);
-    expect(r).toMatchObject({ score: 1, spot: 1 });
+    expect(r).toMatchObject({ phase: 'playing', score: 1, spot: 1 });
     for (let k = 0; k < 4; k++) roundBasket(r, 5);
     expect(r.spot).toBe(0); // cycled through the 5 spots
     expect(roundTick(r, ROUND_SECONDS - 1)).toBe(false);
@@ -103,7 +103,7 @@ describe('hoop round', () => {
     expect(roundBasket(r, 5)).toBe(false);
     roundShot(r);
     expect(r.phase).toBe('over');
-    expect(r.shots).toBe(1);
+    expect(r.shots).toBe(2); // no shot counted after time is up
   });
   it('rejects a negative dt and a spot count of 0, naming them', () => {
     expect(() => roundTick(createRound(), -1)).toThrow(/roundTick: dt/);

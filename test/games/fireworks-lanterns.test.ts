@@ -21,6 +21,9 @@ import {
   lanternRadius,
   lanternsOf,
   lightFromSparks,
+  MEET_LIFT,
+  MEET_WINDOW,
+  meetCue,
   shownLit,
   sparkReach,
   starAt,
@@ -183,6 +186,38 @@ describe('lantern rules', () => {
     expect(sparkReach('willow', 1).down).toBeGreaterThan(quick.down);
     expect(sparkReach('willow', 1).side).toBeLessThan(quick.side);
   });
+  it("the finale's meeting cue: a press a hold and a fuse before the low pair is closest, the release a fuse before, aimed at the three; none on other levels or once the pair is lit", () => {
+    const finale = LEVELS.findIndex((l) => l.meet);
+    expect(finale).toBe(LEVELS.length - 1);
+    for (const sky of [phone, desktop]) {
+      const none = lanternsOf(finale, sky).map(() => false);
+      for (let level = 0; level < finale; level++) expect(meetCue(level, sky, 0.3, none)).toBeNull();
+      // The pair swings with period 6 s and is closest (0.2 W apart) at 1.5 s: over a swing (from
+      // -2 s, so neither window wraps), where a release now (or a press now, held MAX_HOLD) bursts
+      // within half MEET_WINDOW of that, 0.05 s apart.
+      const release: number[] = [],
+        press: number[] = [];
+      for (let t = -2; t < 4 - 1e-9; t += 0.05) {
+        const cue = meetCue(finale, sky, t, none);
+        if (cue && cue.release >= 0.5) release.push(t);
+        if (cue && cue.press >= 0.5) press.push(t);
+      }
+      const mid = (ts: number[]) => (ts[0]! + ts.at(-1)!) / 2;
+      expect(mid(release)).toBeCloseTo(1.5 - FUSE, 1);
+      expect(mid(press)).toBeCloseTo(1.5 - FUSE - MAX_HOLD, 1);
+      // Gap within 0.035 W of 0.2 W: 0.2 sin(2 pi t / 6) >= 0.165, about 1.2 s of the 6.
+      expect(release.length * 0.05).toBeGreaterThan(1);
+      expect(release.length * 0.05).toBeLessThan(1.4);
+      expect(MEET_WINDOW).toBeLessThan(0.1);
+      // Aimed MEET_LIFT over the mean of the middle lantern and the pair, on the middle line.
+      const cue = meetCue(finale, sky, 1.5 - FUSE, none)!;
+      const [, my] = lanternAt(lanternsOf(finale, sky)[1]!, sky, 1.5);
+      const [, py] = lanternAt(lanternsOf(finale, sky)[3]!, sky, 1.5);
+      expect(cue.x).toBeCloseTo(0.5 * sky.width, 6);
+      expect(cue.y).toBeCloseTo((my + 2 * py) / 3 + MEET_LIFT * sky.width, 6);
+      expect(meetCue(finale, sky, 1.5 - FUSE, [false, false, false, true, false])).toBeNull();
+    }
+  });
   it('stars: 3 at par or better, 2 up to par + 2, then 1; shells after the level is lit are not counted', () => {
     expect([starsFor(2, 3), starsFor(3, 3), starsFor(4, 3), starsFor(5, 3), starsFor(6, 3)]).toEqual([3, 3, 2, 2, 1]);
     const run = startLevel(0, 0);
@@ -226,6 +261,12 @@ describe('real shells in the show (64 m x 108 m phone sky, 300 stars a burst)', 
     expect(fire(2, ...ghosts[0]!, 0, ghosts[1]!, ghosts[2]!)).toEqual([true, true, true]);
     // The middle lantern swings fastest: aimed where it is now, the burst comes after it has gone.
     expect(fire(2, ...lanternAt(ls[1]!, phone, 0), 0)).toEqual([false, false, false]);
+  });
+  it('level 5: a shell held on the meeting cue and let go when it says so (from the start, 0.3 s before its middle) lights the pair and the lantern above', () => {
+    const finale = LEVELS.length - 1;
+    const cue = meetCue(finale, phone, 0, [false, false, false, false, false])!;
+    expect(cue.release).toBeGreaterThanOrEqual(0.5);
+    expect(fire(finale, cue.x, cue.y, MAX_HOLD)).toEqual([false, true, false, true, true]);
   });
   it('level 2: between the lower pair (0.4 W apart), a quick burst lights neither; one held 1.5 s lights both', () => {
     const ls = lanternsOf(1, phone);
