@@ -7,7 +7,16 @@ import type { PhysicsWorld } from '../world/options.js';
 import { centre, handle, makeJoint, optionalPoint } from './joint-2d.js';
 import { assertBreakLimit, BASE_KEYS, checkEnds, type JointBaseOptions, lengthLimits } from './joint-base.js';
 import * as R from './layout-2d.js';
-import { applyImpulse, type JointPass2D, type JointTypeRows2D, limitRow, springLimitImpulse, springRow } from './rows-2d.js';
+import {
+  anchorsFrame,
+  applyImpulse,
+  type JointPass2D,
+  type JointTypeRows2D,
+  limitRow,
+  separationFrame,
+  springLimitImpulse,
+  springRow,
+} from './rows-2d.js';
 import { springImpulse } from './softness.js';
 
 /**
@@ -155,26 +164,22 @@ export function prepareDistanceRow(js: JointState, J: JointStore, j: number, r: 
  * current line; nothing when the anchors meet (no direction).
  */
 export function warmStartDistanceRow(p: JointPass2D, ia: number, ib: number, o: number): void {
-  const { sb, rot, rows } = p;
+  const { sb, rows, f } = p;
   const axial = springLimitImpulse(rows, o);
   if (axial === 0) return;
-  const oA = ia * BS.BS2_STRIDE,
-    oB = ib * BS.BS2_STRIDE;
-  const cA = rot[ia * 3]!,
-    sA = rot[ia * 3 + 1]!,
-    cB = rot[ib * 3]!,
-    sB = rot[ib * 3 + 1]!;
-  const rAx = cA * rows[o + R.RAX]! - sA * rows[o + R.RAY]!,
-    rAy = sA * rows[o + R.RAX]! + cA * rows[o + R.RAY]!;
-  const rBx = cB * rows[o + R.RBX]! - sB * rows[o + R.RBY]!,
-    rBy = sB * rows[o + R.RBX]! + cB * rows[o + R.RBY]!;
-  const dx = sb[oB + BS.BS2_DX]! - sb[oA + BS.BS2_DX]! + rows[o + R.DCX]! + rBx - rAx,
-    dy = sb[oB + BS.BS2_DY]! - sb[oA + BS.BS2_DY]! + rows[o + R.DCY]! + rBy - rAy;
+  anchorsFrame(p, o, ia, ib);
+  separationFrame(p, o, ia, ib);
+  const rAx = f[R.F_RAX]!,
+    rAy = f[R.F_RAY]!,
+    rBx = f[R.F_RBX]!,
+    rBy = f[R.F_RBY]!,
+    dx = f[R.F_DX]!,
+    dy = f[R.F_DY]!;
   const L = Math.sqrt(dx * dx + dy * dy);
   if (L < 1e-12) return;
   const px = (axial * dx) / L,
     py = (axial * dy) / L;
-  applyImpulse(sb, oA, oB, px, py, rAx * py - rAy * px, rBx * py - rBy * px);
+  applyImpulse(sb, ia * BS.BS2_STRIDE, ib * BS.BS2_STRIDE, px, py, rAx * py - rAy * px, rBx * py - rBy * px);
 }
 
 /**

@@ -301,16 +301,13 @@ export function springLimitImpulse(rows: Float64Array, o: number): number {
  * s): a revolute joint's spring, motor and limits (`revolute`, driveImpulse), else the angular row's.
  */
 export function warmStartPoint(p: JointPass2D, ia: number, ib: number, o: number, revolute: boolean): void {
-  const { sb, rot, rows } = p;
+  const { sb, rows, f } = p;
   const axial = revolute ? driveImpulse(rows, o) : rows[o + R.IANG]!;
-  const cA = rot[ia * 3]!,
-    sA = rot[ia * 3 + 1]!,
-    cB = rot[ib * 3]!,
-    sB = rot[ib * 3 + 1]!;
-  const rAx = cA * rows[o + R.RAX]! - sA * rows[o + R.RAY]!,
-    rAy = sA * rows[o + R.RAX]! + cA * rows[o + R.RAY]!;
-  const rBx = cB * rows[o + R.RBX]! - sB * rows[o + R.RBY]!,
-    rBy = sB * rows[o + R.RBX]! + cB * rows[o + R.RBY]!;
+  anchorsFrame(p, o, ia, ib);
+  const rAx = f[R.F_RAX]!,
+    rAy = f[R.F_RAY]!,
+    rBx = f[R.F_RBX]!,
+    rBy = f[R.F_RBY]!;
   const px = rows[o + R.ILX]!,
     py = rows[o + R.ILY]!;
   applyImpulse(sb, ia * BS.BS2_STRIDE, ib * BS.BS2_STRIDE, px, py, rAx * py - rAy * px + axial, rBx * py - rBy * px + axial);
@@ -475,31 +472,18 @@ export function solveAlongAxis(p: JointPass2D, ia: number, ib: number, o: number
  * and the angular one (N m s: a prismatic joint's angular row, a wheel's motor).
  */
 export function warmStartAxis(p: JointPass2D, ia: number, ib: number, o: number, wheel: boolean): void {
-  const { sb, rot, rows } = p;
+  const { sb, rows, f } = p;
   const axial = wheel ? springLimitImpulse(rows, o) : driveImpulse(rows, o),
     angular = rows[o + (wheel ? R.IMOT : R.IANG)]!;
-  const oA = ia * BS.BS2_STRIDE,
-    oB = ib * BS.BS2_STRIDE;
-  const cA = rot[ia * 3]!,
-    sA = rot[ia * 3 + 1]!,
-    cB = rot[ib * 3]!,
-    sB = rot[ib * 3 + 1]!;
-  const rAx = cA * rows[o + R.RAX]! - sA * rows[o + R.RAY]!,
-    rAy = sA * rows[o + R.RAX]! + cA * rows[o + R.RAY]!;
-  const rBx = cB * rows[o + R.RBX]! - sB * rows[o + R.RBY]!,
-    rBy = sB * rows[o + R.RBX]! + cB * rows[o + R.RBY]!;
-  const dx = sb[oB + BS.BS2_DX]! - sb[oA + BS.BS2_DX]! + rows[o + R.DCX]! + rBx - rAx,
-    dy = sb[oB + BS.BS2_DY]! - sb[oA + BS.BS2_DY]! + rows[o + R.DCY]! + rBy - rAy;
-  const axx = cA * rows[o + R.AXX]! - sA * rows[o + R.AXY]!,
-    axy = sA * rows[o + R.AXX]! + cA * rows[o + R.AXY]!;
-  const a1 = (dx + rAx) * axy - (dy + rAy) * axx,
-    a2 = rBx * axy - rBy * axx;
-  const s1 = (dx + rAx) * axx - (dy + rAy) * -axy,
-    s2 = rBx * axx - rBy * -axy;
+  anchorsFrame(p, o, ia, ib);
+  separationFrame(p, o, ia, ib);
+  axisFrame(p, o, ia);
+  const axx = f[R.F_AXX]!,
+    axy = f[R.F_AXY]!;
   const perp = rows[o + R.ILX]!;
-  const lA = axial * a1 + perp * s1 + angular,
-    lB = axial * a2 + perp * s2 + angular;
-  applyImpulse(sb, oA, oB, axial * axx + perp * -axy, axial * axy + perp * axx, lA, lB);
+  const lA = axial * f[R.F_A1]! + perp * f[R.F_S1]! + angular,
+    lB = axial * f[R.F_A2]! + perp * f[R.F_S2]! + angular;
+  applyImpulse(sb, ia * BS.BS2_STRIDE, ib * BS.BS2_STRIDE, axial * axx + perp * -axy, axial * axy + perp * axx, lA, lB);
 }
 
 /**

@@ -1,5 +1,6 @@
 import { BodyType } from '../collision/broadphase/grid.js';
 import * as BS from '../solver/body-state-layout.js';
+import { withRoom } from '../solver/solver-bodies.js';
 import { currentHandle } from '../world/handles.js';
 import { ensureRows, pushBreak } from '../world/joint-state-2d.js';
 import { JointType } from '../world/joint-store-2d.js';
@@ -92,14 +93,6 @@ export function jointsToSolve(world: PhysicsWorld): boolean {
     js.breaksStep = world.steps;
   }
   return world.dimensions === 2 && js.attached.length > 0 && query(world, [world.components.Joint]).length > 0;
-}
-
-/** `list` if it holds `n` entries, else a copy in an array of at least n (twice its length). */
-function withRoom(list: Int32Array, n: number): Int32Array {
-  if (list.length >= n) return list;
-  const grown = new Int32Array(Math.max(n, 2 * list.length));
-  grown.set(list);
-  return grown;
 }
 
 /**

@@ -1,7 +1,7 @@
-import { BodyType } from '../collision/broadphase/grid.js';
 import { contact3DStateOf } from '../collision/manifolds-3d.js';
 import { classifyBody3D } from '../collision/shapes-3d.js';
 import { BS3_PUSHED, BS3_STRIDE } from '../solver/body-state-layout.js';
+import { joinSolverBodies } from '../solver/solver-bodies.js';
 import { currentHandle } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { type JointPass3D, type JointRows3D, poseJoint3D } from './rows-3d.js';
@@ -77,8 +77,11 @@ export function useJointType3D(type: number, rows: JointRows3D): void {
   else if (type === Joint3DType.Slider) sliderRows = rows;
 }
 
+/** Per joint of the list (scratch, filled each step): its bodies' solver indices (ka, kb) and entities (ja, jb). */
 let ka = new Int32Array(16),
-  kb = new Int32Array(16);
+  kb = new Int32Array(16),
+  ja = new Int32Array(16),
+  jb = new Int32Array(16);
 const jsoft = new Float64Array(3);
 
 /**
@@ -102,39 +105,20 @@ export function gatherJoint3DBodies(world: PhysicsWorld, count: number): number 
   if (ka.length < n) {
     ka = new Int32Array(2 * n);
     kb = new Int32Array(2 * n);
+    ja = new Int32Array(2 * n);
+    jb = new Int32Array(2 * n);
   }
-  const cs = world.collision,
-    mark = cs.solverMark,
-    index = cs.solverIndex,
-    stamp = cs.solverStamp;
-  let list = cs.solverBodies;
+  // Each joint's bodies in list order, classified now (the type joinSolverBodies reads).
   for (let i = 0; i < n; i++) {
     const j: number = s.list[i]!;
-    for (let side = 0; side < 2; side++) {
-      const e = side === 0 ? s.a[j]! : s.b[j]!;
-      let k = 0;
-      if (e !== 0) {
-        const t = classifyBody3D(world, e);
-        if (t === BodyType.Dynamic || t === BodyType.Kinematic) {
-          if (mark[e] !== stamp) {
-            mark[e] = stamp;
-            if (count >= list.length) {
-              const l = new Int32Array(list.length * 2);
-              l.set(list);
-              list = l;
-            }
-            index[e] = count;
-            list[count++] = e;
-          }
-          k = index[e]!;
-        }
-      }
-      if (side === 0) ka[i] = k;
-      else kb[i] = k;
-    }
+    const a = s.a[j]!,
+      b = s.b[j]!;
+    if (a !== 0) classifyBody3D(world, a);
+    if (b !== 0) classifyBody3D(world, b);
+    ja[i] = a;
+    jb[i] = b;
   }
-  cs.solverBodies = list;
-  return count;
+  return joinSolverBodies(world.collision, ja, jb, ka, kb, n, count);
 }
 
 /**

@@ -8,6 +8,14 @@ export function isTagged(e: Encoded): e is { [key: string]: Encoded } {
 }
 
 /**
+ * Whether the world's value `x` is an object whose keys a snapshot's 'o' encoding restores one by one:
+ * not null, an array, a Set, a Map or a typed array (those are replaced or refilled whole).
+ */
+function isPlainObject(x: unknown): x is Record<string, unknown> {
+  return x !== null && typeof x === 'object' && !Array.isArray(x) && !(x instanceof Set) && !(x instanceof Map) && !ArrayBuffer.isView(x);
+}
+
+/**
  * The typed array constructor named by `type`, once `n` is checked as a length (an integer in
  * [0, MAX_ELEMENTS]). @throws RangeError `restore: snapshot's <path> is damaged` otherwise.
  */
@@ -214,16 +222,8 @@ export class Reader {
         }
         return;
       }
-      if (
-        t === 'o' &&
-        cur !== null &&
-        typeof cur === 'object' &&
-        !Array.isArray(cur) &&
-        !(cur instanceof Set) &&
-        !(cur instanceof Map) &&
-        !ArrayBuffer.isView(cur)
-      ) {
-        this.objectInto(cur as Record<string, unknown>, e.v as Record<string, Encoded>, path, keep);
+      if (t === 'o' && isPlainObject(cur)) {
+        this.objectInto(cur, e.v as Record<string, Encoded>, path, keep);
         return;
       }
       if (t === 'a' && Array.isArray(cur)) {
@@ -272,17 +272,9 @@ export class Reader {
       this.array(e, path);
       return;
     }
-    if (
-      t === 'o' &&
-      cur !== null &&
-      typeof cur === 'object' &&
-      !Array.isArray(cur) &&
-      !(cur instanceof Set) &&
-      !(cur instanceof Map) &&
-      !ArrayBuffer.isView(cur)
-    ) {
+    if (t === 'o' && isPlainObject(cur)) {
       if (typeof e.v !== 'object' || e.v === null || Array.isArray(e.v)) throw damaged();
-      this.objectInto(cur as Record<string, unknown>, e.v as Record<string, Encoded>, path, keep);
+      this.objectInto(cur, e.v as Record<string, Encoded>, path, keep);
       return;
     }
     // Anything else replaces the world's value: decoding it checks it.

@@ -1,7 +1,6 @@
 import { keepWhileAsleep, pushEvent, resumeAfterSleep } from '../collision/events.js';
 import { MAX_MANIFOLDS } from '../collision/manifold-limits-2d.js';
 import { findPrevious, rotateManifolds, type ShapeCollisionState } from '../collision/manifolds-2d.js';
-import { BodyType } from '../collision/state.js';
 import type { PhysicsWorld } from '../world/options.js';
 import {
   BS2_INV_INERTIA,
@@ -51,6 +50,7 @@ import {
   MR_STRIDE,
 } from './manifold-layout-2d.js';
 import { atLeast } from './manifold-rows-2d.js';
+import { joinSolverBodies } from './solver-bodies.js';
 
 /**
  * The shape contacts' rows before and after the substeps (solver/manifold-rows-2d.ts describes the rows
@@ -88,18 +88,6 @@ function makeSoftInto(out: Float64Array, hertz: number, zeta: number, h: number)
 }
 
 /**
- * `list` if it holds `n` entries, else a copy in an array of at least n (twice its length). Growth runs
- * only in a world's first steps, before V8 records type feedback: inside the callers' loops it would
- * be compiled as a deoptimisation that throws the whole loop back to the interpreter in a later world.
- */
-function withRoom(list: Int32Array, n: number): Int32Array {
-  if (list.length >= n) return list;
-  const grown = new Int32Array(Math.max(n, 2 * list.length));
-  grown.set(list);
-  return grown;
-}
-
-/**
  * The previous step's row of shape pair (a, b), or -1: row `guess` if it holds that pair, else the
  * one findPrevious finds in the hash. A pair is in a step's rows once, so both give the same row; the
  * pairs come in nearly the same order every step, and most often the previous row of the next pair
@@ -122,35 +110,7 @@ export function gatherManifoldBodies(world: PhysicsWorld, count: number): number
   const buf = cs.shapes.manifolds;
   const n = buf.count;
   if (n === 0) return count;
-  const mark = cs.solverMark,
-    index = cs.solverIndex,
-    stamp = cs.solverStamp,
-    type = cs.bodyType;
-  // Room for both bodies of every row, made before the loop (see withRoom).
-  const list = withRoom(cs.solverBodies, count + 2 * n);
-  const A = buf.bodyA,
-    B = buf.bodyB,
-    IA = buf.ia,
-    IB = buf.ib;
-  for (let i = 0; i < n; i++) {
-    for (let side = 0; side < 2; side++) {
-      const e = side === 0 ? A[i]! : B[i]!;
-      const t = type[e]!;
-      let k = 0;
-      if (e !== 0 && (t === BodyType.Dynamic || t === BodyType.Kinematic)) {
-        if (mark[e] !== stamp) {
-          mark[e] = stamp;
-          index[e] = count;
-          list[count++] = e;
-        }
-        k = index[e]!;
-      }
-      if (side === 0) IA[i] = k;
-      else IB[i] = k;
-    }
-  }
-  cs.solverBodies = list;
-  return count;
+  return joinSolverBodies(cs, buf.bodyA, buf.bodyB, buf.ia, buf.ib, n, count);
 }
 
 /**

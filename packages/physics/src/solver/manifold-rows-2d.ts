@@ -254,8 +254,8 @@ function accumulateRow(R: Float64Array, o1: number, two: boolean): void {
  * (r x n and r x t on each body, worked out once a step by prepareManifolds) read once (a one-point row
  * reads its unused second point's slots, inside the row, and never uses them). Each normal row's regime: speculative (s > 0: bias s / h_s, rigid) or, with the bias on, soft.
  * A two-point row with a valid block solves both normal rows at once, as the linear complementarity
- * problem K x + c = w, x >= 0, w >= 0, x . w = 0 of `solveBlock` (its cases inline: both points push,
- * then one lets go, then both), with x the new accumulated impulses and c from each row's own regime,
+ * problem K x + c = w, x >= 0, w >= 0, x . w = 0 of `solveBlock` (both points push, then one lets go,
+ * then both), with x the new accumulated impulses and c from each row's own regime,
  * c_i = s_m (v_n,i + bias_i) - (1 - s_i) (K x_old)_i: the soft row's update written for both rows (s_m,
  * s_i its mass and impulse scales). Otherwise point after point, with the velocities the one before
  * left. Then friction, point 1 then point 2 (|lambda_t| <= bound lambda_n), and rolling resistance. A
@@ -352,28 +352,10 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean,
         K12 = R[r + MR_K12]!;
       const c1 = m1 * (vn1 + b1) - (1 - i1) * (K11 * l1 + K12 * l2);
       const c2 = m2 * (vn2 + b2) - (1 - i2) * (K12 * l1 + K22 * l2);
-      const B11 = R[r + MR_B11]!,
-        B12 = R[r + MR_B12]!,
-        B22 = R[r + MR_B22]!;
-      let n1 = -(B11 * c1 + B12 * c2),
-        n2 = -(B12 * c1 + B22 * c2);
-      solved = n1 >= 0 && n2 >= 0;
-      if (!solved) {
-        n1 = -c1 / K11;
-        n2 = 0;
-        solved = n1 >= 0 && K12 * n1 + c2 >= 0;
-      }
-      if (!solved) {
-        n1 = 0;
-        n2 = -c2 / K22;
-        solved = n2 >= 0 && K12 * n2 + c1 >= 0;
-      }
-      if (!solved) {
-        n1 = 0;
-        n2 = 0;
-        solved = c1 >= 0 && c2 >= 0;
-      }
+      solved = solveBlock(R, r, c1, c2);
       if (solved) {
+        const n1 = R[o1 + MP_NORMAL_IMPULSE]!,
+          n2 = R[o2 + MP_NORMAL_IMPULSE]!;
         const d1 = n1 - l1,
           d2 = n2 - l2;
         if (d1 > R[o1 + MP_MAX_NORMAL_IMPULSE]!) R[o1 + MP_MAX_NORMAL_IMPULSE] = d1;

@@ -1,7 +1,7 @@
 import { keepWhileAsleep, pushEvent, resumeAfterSleep } from '../collision/events.js';
 import { clearRowIndex, contact3DStateOf, insertRow, lookupRow, pushTouch } from '../collision/manifolds-3d.js';
-import { BodyType } from '../collision/state.js';
 import type { PhysicsWorld } from '../world/options.js';
+import { joinSolverBodies } from './solver-bodies.js';
 /**
  * The 3D shape contacts' rows of the contact solver (solver/contact-solver.ts calls these next to the ball contacts',
  * in the same substeps, on the same packed body state, stride 12: v, w, displacement, 1/m, an inverse
@@ -51,37 +51,8 @@ export function manifolds3DToSolve(world: PhysicsWorld): boolean {
 export function gatherManifold3DBodies(world: PhysicsWorld, count: number): number {
   const st = contact3DStateOf(world);
   if (st === undefined || st.current.count === 0) return count;
-  const cs = world.collision,
-    buf = st.current;
-  const mark = cs.solverMark,
-    index = cs.solverIndex,
-    stamp = cs.solverStamp,
-    type = cs.bodyType;
-  let list = cs.solverBodies;
-  for (let i = 0; i < buf.count; i++) {
-    for (let side = 0; side < 2; side++) {
-      const e = side === 0 ? buf.bodyA[i]! : buf.bodyB[i]!;
-      let k = 0;
-      const t = type[e]!;
-      if (e !== 0 && (t === BodyType.Dynamic || t === BodyType.Kinematic)) {
-        if (mark[e] !== stamp) {
-          mark[e] = stamp;
-          if (count >= list.length) {
-            const l = new Int32Array(list.length * 2);
-            l.set(list);
-            list = l;
-          }
-          index[e] = count;
-          list[count++] = e;
-        }
-        k = index[e]!;
-      }
-      if (side === 0) buf.ia[i] = k;
-      else buf.ib[i] = k;
-    }
-  }
-  cs.solverBodies = list;
-  return count;
+  const buf = st.current;
+  return joinSolverBodies(world.collision, buf.bodyA, buf.bodyB, buf.ia, buf.ib, buf.count, count);
 }
 
 /**

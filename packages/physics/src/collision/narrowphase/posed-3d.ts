@@ -13,26 +13,21 @@ export interface Posed {
   cz: number;
   hull: Hull;
 }
-export const posedA: Posed = {
-  n: 0,
-  v: new Float64Array(192),
-  fn: new Float64Array(3 * 130),
-  fd: new Float64Array(130),
-  cx: 0,
-  cy: 0,
-  cz: 0,
-  hull: null as unknown as Hull,
-};
-export const posedB: Posed = {
-  n: 0,
-  v: new Float64Array(192),
-  fn: new Float64Array(3 * 130),
-  fd: new Float64Array(130),
-  cx: 0,
-  cy: 0,
-  cz: 0,
-  hull: null as unknown as Hull,
-};
+/** An empty scratch pose: room for a hull's 64 vertices and 130 faces (`pose` grows the face arrays of a larger hull). */
+function emptyPose(): Posed {
+  return {
+    n: 0,
+    v: new Float64Array(192),
+    fn: new Float64Array(3 * 130),
+    fd: new Float64Array(130),
+    cx: 0,
+    cy: 0,
+    cz: 0,
+    hull: null as unknown as Hull,
+  };
+}
+export const posedA: Posed = emptyPose();
+export const posedB: Posed = emptyPose();
 
 export function pose(c: Collider3D, out: Posed): Posed {
   const h = c.hull!,
