@@ -1524,13 +1524,15 @@ function hint(m: Mission): string {
       const up = a.speed > 0;
       return `${up ? 'Speed up' : 'Slow down'} by ${Math.abs(a.speed).toFixed(1)} km/s (${named(`press ${up ? '↑' : '↓'}`, `tap ${up ? '+' : '−'}`)} ${times(a.presses)}): ${days}.`;
     }
-    const waitRate = Math.max(WAIT_RATE, 4 * params.rate);
     if (a.kind === 'wait') {
       const faster =
         a.speed > 0
           ? `, and speed up by ${a.speed.toFixed(1)} km/s (${named('press ↑', 'tap +')} ${times(Math.round(a.speed / SPEED_STEP))})`
           : '';
-      return `No small turn or speed change arrives now. Hold Wait (${named('W', 'the Wait button')}) for about ${Math.max(1, Math.round(a.days / waitRate))} s (${a.days} days) while ${m.target} comes round${faster}; then ask again.`;
+      // Said as the date on screen to wait for, not in seconds: time runs slower than asked where
+      // frames come slowly, so a count of seconds would be false on a slow machine.
+      const until = new Date(handles.epoch + (world.time + a.days) * 86_400_000).toISOString().slice(0, 10);
+      return `No small turn or speed change arrives now. Hold Wait (${named('W', 'the Wait button')}) until the date shown reads ${until} (${a.days} days from now) while ${m.target} comes round${faster}; then ask again.`;
     }
     return `Nothing near this launch arrives now: hold Wait (${named('W', 'the Wait button')}) and watch the line, or ${named('click', 'tap')} elsewhere to aim another way.`;
   }
