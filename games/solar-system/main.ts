@@ -1578,6 +1578,29 @@ function verdict(m: Mission): [string, string] {
   return [`✗ misses ${m.target}: closest ${f.closest.toFixed(2)} AU (the ring is ${m.zone} AU)${scheme}`, 'bad'];
 }
 
+/** The simulated days per real second measured over the last second or so (eased), and the last sample: world time (days) and real time (ms). */
+const measured = { rate: Number.NaN, time: Number.NaN, real: Number.NaN };
+/**
+ * The rate the status line shows, days per real second: `asked` while the page keeps up, else what
+ * time really runs at (measured from the world's time and the clock, eased over about a second). A
+ * page drawing few frames runs fewer steps than asked, and the line said "40 days a second" all
+ * the same. 0 when `asked` is 0.
+ */
+function shownRate(time: number, asked: number): number {
+  const real = performance.now();
+  const dt = (real - measured.real) / 1000;
+  if (asked === 0 || !(dt > 0) || dt > 1 || !(time >= measured.time)) measured.rate = Number.NaN;
+  else if (dt > 0.02) {
+    const sample = (time - measured.time) / dt;
+    const k = Math.min(1, dt);
+    measured.rate = Number.isFinite(measured.rate) ? measured.rate + k * (sample - measured.rate) : sample;
+  } else return !Number.isFinite(measured.rate) || measured.rate > 0.85 * asked ? asked : measured.rate;
+  measured.time = time;
+  measured.real = real;
+  // Within 15 % of the rate asked it is the rate asked (a frame's jitter is not news).
+  return !Number.isFinite(measured.rate) || measured.rate > 0.85 * asked ? asked : measured.rate;
+}
+
 function updateStatus(force = false): void {
   const m = mission();
   const world = shell.world;
@@ -1622,7 +1645,7 @@ function updateStatus(force = false): void {
   // The hint, worked out again (./advice.ts) when what it is for has changed.
   if (hinting) hintText = hint(m) || (phase === 'aim' ? 'Hint: working it out…' : hintText);
   const date = new Date(handles.epoch + world.time * 86_400_000).toISOString().slice(0, 10);
-  const rate = currentRate();
+  const rate = shownRate(world.time, currentRate());
   const stars = `Stars ${total} / ${3 * MISSIONS.length}`;
   const clock =
     rate === 0
