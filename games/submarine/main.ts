@@ -432,6 +432,12 @@ const game = await startPixiGame({
   createWorld,
   step: stepWorld,
   bodies: () => 1,
+  // The game's time keeps pace with the clock down to 6.7 frames a second (9 steps of 1/60 s a
+  // frame, frames up to 0.15 s; by default at most 4 and 0.1 s, so on a phone drawing under 15 fps
+  // the boat went in slow motion and answered the stick late). A step of the one hull costs
+  // microseconds.
+  maxFrameTime: 0.15,
+  maxStepsPerFrame: 9,
   controls: [
     { keys: '↓ ↑ / S W', action: 'dive / rise (let go: stop at the line)', touch: 'stick ↓ ↑' },
     { keys: '← → / A D', action: 'screw astern / ahead', touch: 'stick ← →' },
