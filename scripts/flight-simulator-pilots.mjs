@@ -11,8 +11,13 @@
 //   game ramps them, `rampKey`): banks towards the ring (three times its bearing, at most 35 degrees),
 //   climbs or dives while it is over 1.5 degrees off the flight path (no steeper than 10 degrees),
 //   else hands off (wings level); never touches the throttle.
+// - `keys`: a stranger on the keys. Holds ← / → and ↑ / ↓ (ramped) towards the next ring while it
+//   is off the flight path (as seen LAG s before) by more than the ring's radius over DEAD (env,
+//   default 4) at its distance, else lets go: all or nothing, so it swings past where the aircraft
+//   answers late. Prints how often it reversed the bank key.
 // Prints per seed and pilot the rings passed of 10 and each ring's status (P passed, m missed), then
-// each ring's turn (degrees) and change of height (m) for the default seed.
+// each ring's turn (degrees) and change of height (m) for the default seed. Env PILOTS=keys,naive
+// flies only those; DEBUG=1 prints where each missed ring's plane was crossed.
 import { importSource } from './build.mjs';
 
 /** The naive pilot's reaction to a new ring, s (env REACTION, default 2), and the lag of what it steers on, s. */
@@ -56,6 +61,20 @@ const pilots = {
     keys.pitch = fs.rampKey(keys.pitch, pitch, dt);
     return { roll: keys.roll, pitch: keys.pitch, throttle: start };
   },
+  // A stranger on the keys: holds the key towards the next ring while it is off the flight path (what
+  // it saw LAG s before) by more than RING_RADIUS / DEAD at its distance, else lets go; all or nothing,
+  // as a key is, so it overshoots where the aircraft answers late.
+  keys: ({ seen, since, start, keys, dt }) => {
+    const ready = since >= 1 && seen;
+    const dead = ready ? Math.max(1 * DEG, Math.atan(fs.RING_RADIUS / Number(process.env.DEAD ?? 4) / Math.max(1, seen.far))) : 0;
+    const roll = ready && Math.abs(seen.bearing) > dead ? Math.sign(seen.bearing) : 0;
+    const pitch = ready && Math.abs(seen.elevation) > dead ? Math.sign(seen.elevation) : 0;
+    if (roll !== 0 && roll !== keys.lastRoll) keys.reversals = (keys.reversals ?? 0) + 1;
+    if (roll !== 0) keys.lastRoll = roll;
+    keys.roll = fs.rampKey(keys.roll, roll, dt);
+    keys.pitch = fs.rampKey(keys.pitch, pitch, dt);
+    return { roll: keys.roll, pitch: keys.pitch, throttle: start };
+  },
 };
 
 const fly = (seed, pilot) => {
@@ -88,7 +107,7 @@ const fly = (seed, pilot) => {
       dz = ring.z - P.z[e],
       far = Math.hypot(dx, dz);
     const bearing = ((Math.atan2(dz, dx) - s.heading + 3 * Math.PI) % (2 * Math.PI)) - Math.PI;
-    history.push({ ring: n, bearing, elevation: Math.atan2(dy, far) - s.path });
+    history.push({ ring: n, bearing, elevation: Math.atan2(dy, far) - s.path, far: Math.hypot(far, dy) });
     const back = history[history.length - 1 - Math.round(LAG / world.dt)];
     const seen = back && back.ring === n ? back : null;
     const c0 = pilot({ s, ring, P, e, trim, start, seen, since, keys, dt: world.dt });
@@ -101,23 +120,33 @@ const fly = (seed, pilot) => {
     fs.setBodyThrust(world, e, [c0.throttle * fs.AIRCRAFT.maxThrust, 0, 0]);
     const a = [P.x[e], P.y[e], P.z[e]];
     fs.step(world);
-    fs.flyRings(rings, a, [P.x[e], P.y[e], P.z[e]]);
+    for (const ev of fs.flyRings(rings, a, [P.x[e], P.y[e], P.z[e]]))
+      if (process.env.DEBUG && ev.result === 'missed') {
+        const r = rings[ev.ring];
+        console.log(
+          `  ring ${ev.ring + 1} missed at t ${t.toFixed(1)}: dx ${(P.x[e] - r.x).toFixed(0)} dy ${(P.y[e] - r.y).toFixed(0)} dz ${(P.z[e] - r.z).toFixed(0)} bank ${(s.bank / DEG).toFixed(0)} path ${(s.path / DEG).toFixed(1)}`,
+        );
+      }
     if (P.y[e] < 0) break;
   }
+  rings.reversals = keys.reversals ?? 0;
   return rings;
 };
 
-const totals = { scripted: 0, naive: 0 };
+/** The pilots to fly (env PILOTS, comma-separated; default all). */
+const only = process.env.PILOTS?.split(',');
+const totals = { scripted: 0, naive: 0, keys: 0 };
 for (const seed of chosen)
-  for (const [name, pilot] of Object.entries(pilots)) {
+  for (const [name, pilot] of Object.entries(pilots).filter(([name]) => !only || only.includes(name))) {
     const rings = fly(seed, pilot);
     const passed = rings.filter((r) => r.status === 'passed').length;
     totals[name] += passed;
     console.log(
-      `seed ${seed} ${name.padEnd(8)} ${passed}/10  ${rings.map((r) => (r.status === 'passed' ? 'P' : r.status === 'missed' ? 'm' : '.')).join('')}`,
+      `seed ${seed} ${name.padEnd(8)} ${passed}/10  ${rings.map((r) => (r.status === 'passed' ? 'P' : r.status === 'missed' ? 'm' : '.')).join('')}${name === 'keys' ? `  bank reversals ${rings.reversals}` : ''}`,
     );
   }
-for (const [name, n] of Object.entries(totals)) console.log(`${name}: ${n} of ${10 * chosen.length} rings`);
+for (const [name, n] of Object.entries(totals))
+  if (!only || only.includes(name)) console.log(`${name}: ${n} of ${10 * chosen.length} rings`);
 const world = fs.createPhysicsWorld(fs.aircraft.worldOptions());
 const h = fs.aircraft.build(world, { seed: 1, altitude: 900 });
 const rings = fs.layCourse({ terrain: h.terrain, seed: 8, count: 10, start: [0, 900, 0] });

@@ -70,18 +70,21 @@ export interface FlightState {
 
 /**
  * Full deflection of each control surface, degrees (the page's default; its panel can change it).
- * 25: a held key banks the aircraft 30 degrees in 0.85 s and 55 in 2 s (with 15, 1.4 s and never
- * within 3 s: players found it floaty).
+ * 25: a held key banks the aircraft 30 degrees in 0.92 s and 40 in 1.6 s (with 15 it took 1.4 s
+ * to 30: players found it floaty).
  */
 export const CONTROL_AUTHORITY = 25;
 
 /** The assist's settings. */
 export const ASSIST = Object.freeze({
   /**
-   * Bank at full sideways stick, rad (70 degrees: a 2.9 g level turn, 12 degrees/s at 130 m/s, the
-   * wing still under its stall; the course is laid for 55 degrees, see ./course.ts DESIGN_BANK).
+   * Bank at full sideways stick, rad (45 degrees: a 1.4 g level turn, 4.3 degrees/s at 130 m/s; the
+   * course is laid for 40 degrees, see ./course.ts DESIGN_BANK). With 70 (12 degrees/s) a key held
+   * until the ring was ahead left the aircraft in a steep bank still turning, so it swung past: a
+   * pilot holding the key towards the ring while it is off the path, half a second late, passed 21
+   * of 80 rings; with 45, 76 (scripts/flight-simulator-pilots.mjs, the keys pilot).
    */
-  maxBank: 70 * DEG,
+  maxBank: 45 * DEG,
   /** Flight-path angle the path hold asks for at full stick forward or back, rad (its share fades as the stick's grows). */
   maxClimb: 20 * DEG,
   /**

@@ -299,6 +299,13 @@ const game = await startThreeGame({
   createWorld,
   step: stepWorld,
   bodies: () => 1,
+  // The game's time keeps pace with the clock down to 6.7 frames a second (9 steps of 1/60 s a
+  // frame; by default the loop ran at most 4, so below 15 fps the flight went in slow motion and a
+  // held key did less per real second). A step costs about 0.2 ms; the handling stays the fixed
+  // step's whatever the frame rate. No more than 0.15 s a frame: a key's tap still shows as a
+  // ramped input, not a full one (KEY_RAMP.rise 2.5 per s).
+  maxFrameTime: 0.15,
+  maxStepsPerFrame: 9,
   controls: [
     { keys: '↑ ↓ / W S', action: 'climb / dive', touch: 'stick ↑ ↓' },
     { keys: '← → / A D', action: 'bank left / right', touch: 'stick ← →' },

@@ -1524,13 +1524,15 @@ function hint(m: Mission): string {
       const up = a.speed > 0;
       return `${up ? 'Speed up' : 'Slow down'} by ${Math.abs(a.speed).toFixed(1)} km/s (${named(`press ${up ? '↑' : '↓'}`, `tap ${up ? '+' : '−'}`)} ${times(a.presses)}): ${days}.`;
     }
-    const waitRate = Math.max(WAIT_RATE, 4 * params.rate);
     if (a.kind === 'wait') {
       const faster =
         a.speed > 0
           ? `, and speed up by ${a.speed.toFixed(1)} km/s (${named('press ↑', 'tap +')} ${times(Math.round(a.speed / SPEED_STEP))})`
           : '';
-      return `No small turn or speed change arrives now. Hold Wait (${named('W', 'the Wait button')}) for about ${Math.max(1, Math.round(a.days / waitRate))} s (${a.days} days) while ${m.target} comes round${faster}; then ask again.`;
+      // Said as the date on screen to wait for, not in seconds: time runs slower than asked where
+      // frames come slowly, so a count of seconds would be false on a slow machine.
+      const until = new Date(handles.epoch + (world.time + a.days) * 86_400_000).toISOString().slice(0, 10);
+      return `No small turn or speed change arrives now. Hold Wait (${named('W', 'the Wait button')}) until the date shown reads ${until} (${a.days} days from now) while ${m.target} comes round${faster}; then ask again.`;
     }
     return `Nothing near this launch arrives now: hold Wait (${named('W', 'the Wait button')}) and watch the line, or ${named('click', 'tap')} elsewhere to aim another way.`;
   }
@@ -1574,6 +1576,29 @@ function verdict(m: Mission): [string, string] {
       return [`✗ falls in only to ${f.nearest.toFixed(2)} AU from the Sun; ${m.target} is at ${rT.toFixed(2)} AU${scheme}`, 'bad'];
   }
   return [`✗ misses ${m.target}: closest ${f.closest.toFixed(2)} AU (the ring is ${m.zone} AU)${scheme}`, 'bad'];
+}
+
+/** The simulated days per real second measured over the last second or so (eased), and the last sample: world time (days) and real time (ms). */
+const measured = { rate: Number.NaN, time: Number.NaN, real: Number.NaN };
+/**
+ * The rate the status line shows, days per real second: `asked` while the page keeps up, else what
+ * time really runs at (measured from the world's time and the clock, eased over about a second). A
+ * page drawing few frames runs fewer steps than asked, and the line said "40 days a second" all
+ * the same. 0 when `asked` is 0.
+ */
+function shownRate(time: number, asked: number): number {
+  const real = performance.now();
+  const dt = (real - measured.real) / 1000;
+  if (asked === 0 || !(dt > 0) || dt > 1 || !(time >= measured.time)) measured.rate = Number.NaN;
+  else if (dt > 0.02) {
+    const sample = (time - measured.time) / dt;
+    const k = Math.min(1, dt);
+    measured.rate = Number.isFinite(measured.rate) ? measured.rate + k * (sample - measured.rate) : sample;
+  } else return !Number.isFinite(measured.rate) || measured.rate > 0.85 * asked ? asked : measured.rate;
+  measured.time = time;
+  measured.real = real;
+  // Within 15 % of the rate asked it is the rate asked (a frame's jitter is not news).
+  return !Number.isFinite(measured.rate) || measured.rate > 0.85 * asked ? asked : measured.rate;
 }
 
 function updateStatus(force = false): void {
@@ -1620,7 +1645,7 @@ function updateStatus(force = false): void {
   // The hint, worked out again (./advice.ts) when what it is for has changed.
   if (hinting) hintText = hint(m) || (phase === 'aim' ? 'Hint: working it out…' : hintText);
   const date = new Date(handles.epoch + world.time * 86_400_000).toISOString().slice(0, 10);
-  const rate = currentRate();
+  const rate = shownRate(world.time, currentRate());
   const stars = `Stars ${total} / ${3 * MISSIONS.length}`;
   const clock =
     rate === 0

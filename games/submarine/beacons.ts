@@ -8,6 +8,14 @@
 import { assertFinite } from '@bitphysics/physics/validate';
 
 /**
+ * A beacon is collected when the hull's centre comes within this of it, m. Drawn round each beacon
+ * as a faint disc, so a player sees how near is near enough (only the 1 to 3 m lamp and its pulse
+ * showed, and a stranger on a phone steered for the lamp itself). 8 m: the hull's 12 m length
+ * passing within 2 m of the lamp.
+ */
+export const BEACON_CATCH = 8;
+
+/**
  * The pointer leaves its beacon for another one only when that one is nearer than this fraction
  * of the distance to its own (0.6: a beacon at 45 m takes over from one at 80 m, one at 60 m does not).
  */

@@ -34,7 +34,7 @@ import { startPixiGame } from '@bitphysics/game-kit/pixi';
 import { applyImpulse, createPhysicsWorld, type PhysicsWorld, step } from '@bitphysics/physics';
 import { SUBMARINE, SUBMARINE_NEUTRAL_FILL, type SubmarineHandles, seabedHeight, submarine } from '@bitphysics/projects';
 import { Graphics, Text } from 'pixi.js';
-import { beaconLabel, beaconName, chooseBeacon, seabedBetween } from './beacons';
+import { BEACON_CATCH, beaconLabel, beaconName, chooseBeacon, seabedBetween } from './beacons';
 import { drawBoat } from './boat-drawing';
 import { createHelmState, type HelmInput, steer } from './helm';
 import {
@@ -363,7 +363,7 @@ function stepWorld(world: PhysicsWorld): void {
     if (taken[i]) continue;
     const dx = handles.beacons[2 * i]! - c.Position.x[e]!,
       dy = handles.beacons[2 * i + 1]! - c.Position.y[e]!;
-    if (dx * dx + dy * dy < 7 * 7) {
+    if (dx * dx + dy * dy < BEACON_CATCH * BEACON_CATCH) {
       taken[i] = true;
       state.collected++;
       state.score += BEACON_POINTS;
@@ -432,6 +432,12 @@ const game = await startPixiGame({
   createWorld,
   step: stepWorld,
   bodies: () => 1,
+  // The game's time keeps pace with the clock down to 6.7 frames a second (9 steps of 1/60 s a
+  // frame, frames up to 0.15 s; by default at most 4 and 0.1 s, so on a phone drawing under 15 fps
+  // the boat went in slow motion and answered the stick late). A step of the one hull costs
+  // microseconds.
+  maxFrameTime: 0.15,
+  maxStepsPerFrame: 9,
   controls: [
     { keys: '↓ ↑ / S W', action: 'dive / rise (let go: stop at the line)', touch: 'stick ↓ ↑' },
     { keys: '← → / A D', action: 'screw astern / ahead', touch: 'stick ← →' },
@@ -949,6 +955,8 @@ const popLabels: Text[] = [];
  * included (the beacon label and tags keep clear of it: on a phone they ran under it).
  */
 const GAUGE_WIDTH = 36;
+/** A beacon's lamp this far inside the scene's edges (and the depth gauge) is on screen, px: its label shows, not the edge arrow. */
+const ON_SCREEN_MARGIN = 14;
 /**
  * Draws the depth gauge at the right edge of a `W` x `H` px scene: a scale from the surface (top) to
  * the course's deepest seabed (`courseDepth`, bottom) with a tick every 10 m, the seabed under the
@@ -1233,7 +1241,8 @@ function draw(): void {
   drawFish(g, left, right, t, k, sx, sy, bedAt, hxw, hyw);
   drawGlows(t, k, sx, sy, left, right);
   drawMines(t, k, sx, sy, left, right, hxw, hyw, c.Angle.value[e]!);
-  // Beacons: a lamp (at least 5 px, however far the camera zooms out) in a pulsing ring; each one
+  // Beacons: a lamp (at least 5 px, however far the camera zooms out) in a pulsing ring, inside a
+  // faint disc of the catch radius (BEACON_CATCH: the hull's centre within it collects); each one
   // on screen but the pointer's is tagged "beacon" under it, so a yellow light elsewhere in the view
   // reads as another beacon to collect, not as something unexplained.
   let tagged = 0;
@@ -1241,6 +1250,9 @@ function draw(): void {
     if (taken[i]) continue;
     const bx = sx(handles.beacons[2 * i]!),
       by = sy(handles.beacons[2 * i + 1]!);
+    g.circle(bx, by, BEACON_CATCH * k)
+      .fill({ color: 0xffe066, alpha: 0.08 })
+      .stroke({ color: 0xffe066, alpha: 0.3, width: 1.5 });
     g.circle(bx, by, Math.max(5, 1.2 * k)).fill({ color: 0xffe066, alpha: 0.9 + 0.1 * Math.sin(4 * t) });
     g.circle(bx, by, Math.max(9, (2 + Math.sin(3 * t)) * k)).stroke({ color: 0xffe066, alpha: 0.4, width: 2 });
     if (i === aim.index || bx < 0 || bx > W || by < 0 || by > H) continue;
@@ -1312,9 +1324,12 @@ function draw(): void {
     pointer.text = beaconLabel(wx - hxw, wy - hyw, c.Angle.value[e]!, ridge, '', beaconName(aim.index));
     aim.dx = wx - hxw;
     aim.dy = wy - hyw;
-    // The right margin leaves the depth gauge clear too (on a phone the badge sat over it).
+    // The right margin leaves the depth gauge clear too (on a phone the badge sat over it). A beacon
+    // whose lamp is in view (ON_SCREEN_MARGIN inside the edges and the gauge) counts as on screen:
+    // with the badge's margin, on a phone the badge was drawn over the very beacon it pointed to.
     const right = W - GAUGE_WIDTH - m;
-    aim.onScreen = bx >= m && bx <= right && by >= m && by <= H - m;
+    const inside = ON_SCREEN_MARGIN;
+    aim.onScreen = bx >= inside && bx <= W - GAUGE_WIDTH - inside && by >= inside && by <= H - inside;
     // From the hull's place on screen toward the beacon, stopped at the margin.
     const hx = sx(hxw),
       hy = sy(hyw);
@@ -1359,8 +1374,9 @@ function draw(): void {
     } else {
       aim.angle = Number.NaN;
       aim.badge = [0, 0, 0, 0];
+      // Above the catch disc's rim, so the label does not cover the zone to steer into.
       pointer.x = bx;
-      pointer.y = by - 2.4 * k - 16;
+      pointer.y = by - BEACON_CATCH * k - 10;
     }
     // Kept inside the view (a long label beside a badge at a side edge).
     // (its pill is 7 px wider each side than the text and the switch's ring 3 px more; 5 px more
@@ -1373,7 +1389,7 @@ function draw(): void {
       hy0 = sy(hyw);
     const onHull = () => Math.abs(pointer.x - hx0) < hr + pointer.width / 2 + 7 && Math.abs(pointer.y - hy0) < hr + pointer.height / 2 + 2;
     // Under the beacon first (the label stays with it), else above or below the hull.
-    if (onHull() && aim.onScreen) pointer.y = by + 2.4 * k + 16;
+    if (onHull() && aim.onScreen) pointer.y = by + BEACON_CATCH * k + 10;
     if (onHull()) {
       const above = hy0 - hr - pointer.height / 2 - 4,
         below = hy0 + hr + pointer.height / 2 + 4;

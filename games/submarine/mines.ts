@@ -19,7 +19,7 @@ import { HELM } from './helm';
 
 /** A mine's contact radius (the sphere and its horns' tips), m. */
 export const MINE_RADIUS = 2.4;
-/** No mine's centre lies nearer a beacon than this, m (the game collects within 7 m). */
+/** No mine's centre lies nearer a beacon than this, m (the game collects within BEACON_CATCH, 8 m). */
 export const MINE_BEACON_CLEARANCE = 15;
 /**
  * No mine's centre lies less than this under the surface, m, so the boat can pass over it with its

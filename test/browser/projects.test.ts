@@ -553,7 +553,7 @@ describe('projects', () => {
       60_000,
     );
     await g.page.keyboard.up('ArrowDown');
-    expect(dived.offset).toBeGreaterThan(55); // the ring's radius
+    expect(dived.offset).toBeGreaterThan(65); // the ring's radius
     expect(g.errors).toEqual([]);
     await g.close();
   });

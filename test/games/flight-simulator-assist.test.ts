@@ -2,7 +2,7 @@
  * The flight simulator's flight assist (games/flight-simulator/assist.ts), headless: the aircraft
  * scene flown by the assist's control law as the game flies it (CONTROL_AUTHORITY, 25 degrees of
  * control authority, the control surfaces set every 1/60 s step). A bank left alone rolls level, a
- * held key banks and turns briskly, full stick holds a 70 degree bank in a level turn at the rate a
+ * held key banks and turns briskly, full stick holds a 45 degree bank in a level turn at the rate a
  * coordinated turn has, full stick back climbs steeply without a stall or a loop, and a held climb or
  * dive changes height as fast as without the assist.
  */
@@ -93,28 +93,29 @@ describe('flight assist', () => {
     expect(Math.abs(height(f) - 900)).toBeLessThan(5);
   });
 
-  it('a held key banks briskly: 30 degrees within 0.9 s, 55 within 1.6 s, the heading 20 degrees round within 3 s', () => {
-    // The issue this answers: players found the aircraft floaty. With 15 degrees of authority and the
-    // key ramped to full over 1.25 s, a held key took 1.4 s to 30 degrees, never reached 55 within
-    // 3 s and turned the heading 10 degrees in 3 s. Measured now: 0.78 s, 1.45 s, 28 degrees.
+  it('a held key banks briskly to the full 45 degrees: 30 within 1 s, 40 within 2 s, the heading 9 degrees round within 3 s', () => {
+    // Players found the aircraft floaty with 15 degrees of authority and the key ramped to full over
+    // 1.25 s (1.4 s to 30 degrees, 10 degrees of heading in 3 s); then hard to aim with a 70 degree
+    // full bank (a held key overshot every ring: scripts/flight-simulator-pilots.mjs, the keys pilot).
+    // Measured now: 0.92 s, 1.63 s, 10.9 degrees.
     const f = start();
     const h0 = flightState(f.world, f.h.body).heading;
     let key = 0,
       t30 = Infinity,
-      t55 = Infinity;
+      t40 = Infinity;
     for (let i = 1; i <= 180; i++) {
       key = rampKey(key, 1, 1 / 60);
       fly(f, { roll: key }, 1 / 60);
       const bank = flightState(f.world, f.h.body).bank;
       if (bank > 30 * DEG) t30 = Math.min(t30, i / 60);
-      if (bank > 55 * DEG) t55 = Math.min(t55, i / 60);
+      if (bank > 40 * DEG) t40 = Math.min(t40, i / 60);
     }
-    expect(t30).toBeLessThan(0.9);
-    expect(t55).toBeLessThan(1.6);
-    expect(flightState(f.world, f.h.body).heading - h0).toBeGreaterThan(20 * DEG);
+    expect(t30).toBeLessThan(1);
+    expect(t40).toBeLessThan(2);
+    expect(flightState(f.world, f.h.body).heading - h0).toBeGreaterThan(9 * DEG);
   });
 
-  it('full stick right: a 70 degree bank within 4 s and a level turn at the rate g tan(bank) / V', () => {
+  it('full stick right: a 45 degree bank within 4 s and a level turn at the rate g tan(bank) / V', () => {
     const f = start();
     fly(f, { roll: 1 }, 4);
     expect(Math.abs(flightState(f.world, f.h.body).bank - ASSIST.maxBank)).toBeLessThan(3 * DEG);
@@ -132,7 +133,7 @@ describe('flight assist', () => {
     const turned = flightState(f.world, f.h.body).heading - h0;
     expect(turned / 6 / (rate / count)).toBeGreaterThan(0.9);
     expect(turned / 6 / (rate / count)).toBeLessThan(1.1);
-    // The assist pulls for the turn: at 2.9 g it loses a little height (measured 25 m in 6 s).
+    // The assist pulls for the turn: at 1.4 g it loses a little height.
     expect(Math.abs(height(f) - y0)).toBeLessThan(35);
   });
 
@@ -228,7 +229,7 @@ describe('keyboard ramp (rampKey)', () => {
     expect(() => rampKey(0, 1, -1)).toThrow(/rampKey: dt must be >= 0 s, got -1/);
   });
 
-  it('flown: climb held 1 s then let go climbs on by about half a ring at most (measured 29 m of the 55 m radius)', () => {
+  it('flown: climb held 1 s then let go climbs on by half a ring at most (measured 29 m; the radius is 65 m)', () => {
     /** Climbs with up held for `seconds`, then lets go: metres gained after the release (to the top). */
     const climbAfterRelease = (seconds: number, ramped: boolean): number => {
       const f = start();
@@ -248,7 +249,7 @@ describe('keyboard ramp (rampKey)', () => {
     const ramped = climbAfterRelease(1, true),
       instant = climbAfterRelease(1, false);
     // About half a ring's radius; the ramp (full after 0.4 s) takes a little off the full stick's.
-    expect(ramped).toBeLessThan(0.6 * RING_RADIUS);
+    expect(ramped).toBeLessThan(0.5 * RING_RADIUS);
     expect(ramped).toBeLessThanOrEqual(instant);
     // A 0.1 s tap is a small correction: a metre or two.
     const tap = climbAfterRelease(0.1, true);

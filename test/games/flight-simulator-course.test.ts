@@ -243,7 +243,7 @@ describe('flight simulator course', () => {
     const through = (rings: Ring[], k: number, above: number) =>
       flyRings(rings, [rings[k]!.x - 5, 500 + above, 0], [rings[k]!.x + 5, 500 + above, 0]);
     const rings = course();
-    // Ring 1's plane crossed 100 m above its centre (its radius is 45 m): missed, once.
+    // Ring 1's plane crossed 100 m above its centre (its radius is 65 m): missed, once.
     expect(through(rings, 0, 100)).toEqual([{ ring: 0, result: 'missed' }]);
     expect(through(rings, 0, 100)).toEqual([]); // it is behind now: the next is ring 2
     // Ring 2 flown through its centre.
