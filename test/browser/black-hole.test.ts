@@ -120,6 +120,11 @@ describe('black hole, between levels', () => {
     expect(again).toEqual({ level: 2, lives: 3, score: 0 });
     expect(g.errors).toEqual([]);
   });
+  // The thrust pad cases below open pages of their own; this page would otherwise keep running
+  // (stepping and drawing on the shared software GPU) beside them until the file ends.
+  afterAll(async () => {
+    await g?.close();
+  });
 });
 
 describe.each([

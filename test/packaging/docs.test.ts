@@ -1,15 +1,16 @@
 /**
  * The API reference (`npm run docs`, TypeDoc in tools/docs) holds every exported name with its docs.
- * TypeDoc runs once here, writing only its JSON model to a temp file, with its `notDocumented`
+ * TypeDoc runs once here, writing only its JSON model to a temp file (not the HTML site, which
+ * `npm run docs` writes to dist/docs), with its `notDocumented`
  * validation as an error (so an exported function, class, interface, property or type without a
  * docstring fails). Then, independently of TypeDoc's own check, every name each package exports at
  * run time (as esbuild's bundler reads its entry) must appear in that package's module of the
  * reference, and every name there must carry a comment (or re-export a commented declaration).
  */
 import { execFile } from 'node:child_process';
-import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
+import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
-import { join } from 'node:path';
+import { join, resolve } from 'node:path';
 import { promisify } from 'node:util';
 import * as esbuild from 'esbuild';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
@@ -39,12 +40,24 @@ beforeAll(async () => {
   dir = mkdtempSync(join(tmpdir(), 'bitphysics-docs-'));
   const tools = join(repoRoot, 'tools', 'docs');
   const json = join(dir, 'api.json');
+  // tools/docs/typedoc.json without its `out`: with `out` set TypeDoc renders the HTML site as well as
+  // the JSON (a fifth of its run, and it overwrote dist/docs). Its paths are made absolute, since
+  // TypeDoc reads an options file's paths from the file's folder.
+  const options = JSON.parse(readFileSync(join(tools, 'typedoc.json'), 'utf8')) as {
+    out?: string;
+    tsconfig: string;
+    entryPoints: string[];
+  };
+  delete options.out;
+  options.tsconfig = resolve(tools, options.tsconfig);
+  options.entryPoints = options.entryPoints.map((e) => resolve(tools, e));
+  writeFileSync(join(dir, 'typedoc.json'), JSON.stringify(options));
   await run(
     process.execPath,
     [
       join(tools, 'node_modules', 'typedoc', 'bin', 'typedoc'),
       '--options',
-      'typedoc.json',
+      join(dir, 'typedoc.json'),
       '--json',
       json,
       '--treatValidationWarningsAsErrors',
