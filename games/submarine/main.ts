@@ -1,6 +1,6 @@
 /**
  * Submarine: the book's submarine (Ramtal and Dobre ch. 16) as a game. Hold Dive or Rise: the depth
- * ordered (a dashed line by the hull and a cyan mark on the depth gauge at the scene's right edge)
+ * ordered (a dashed line by the hull and a cyan mark on the depth gauge, with figures, at the scene's right edge)
  * runs down or up at once, the vertical thrusters and (under way) the dive planes push at once and the
  * vents flood or blow the ballast tanks; let go and the boat stops on the ordered depth and holds it
  * (./helm.ts, ./planes.ts). Hold Nose down or up to pitch, and drive the screw ahead or astern. A trail
@@ -951,30 +951,52 @@ function drawGlows(t: number, k: number, sx: (x: number) => number, sy: (y: numb
 const popLabels: Text[] = [];
 
 /**
- * Width of the depth gauge at the scene's right edge, px, its backing and the boat's depth pointer
- * included (the beacon label and tags keep clear of it: on a phone they ran under it).
+ * Width of the depth gauge at the scene's right edge, px: its bar, depth figures and the boat's
+ * depth pointer (the beacon label, tags and badge keep clear of it). Narrow and see-through, so a
+ * mine coming into view at the right edge shows (a 36 px opaque gauge hid the edge on a phone).
  */
-const GAUGE_WIDTH = 36;
+const GAUGE_WIDTH = 26;
 /** A beacon's lamp this far inside the scene's edges (and the depth gauge) is on screen, px: its label shows, not the edge arrow. */
 const ON_SCREEN_MARGIN = 14;
+/** The depth gauge's figures: one every 50 m of the scale ("0", "50", ...), a pool hidden when unused. */
+const gaugeMarks: Text[] = [];
+/** The boat's depth in figures by its pointer on the gauge ("53 m"). */
+let gaugeDepth: Text | undefined;
+/** A small gauge figure: light, stroked dark to read over bright water, right-aligned at its anchor. */
+function gaugeText(size: number): Text {
+  const text = new Text({
+    text: '',
+    style: {
+      fill: 0xe8f4ff,
+      fontSize: size,
+      fontWeight: '700',
+      fontFamily: 'system-ui, sans-serif',
+      stroke: { color: 0x06213a, width: 3 },
+    },
+  });
+  text.anchor.set(1, 0.5);
+  app.stage.addChild(text);
+  return text;
+}
 /**
- * Draws the depth gauge at the right edge of a `W` x `H` px scene: a scale from the surface (top) to
- * the course's deepest seabed (`courseDepth`, bottom) with a tick every 10 m, the seabed under the
- * boat (brown below it), the beacon the pointer leads to (a yellow dot), the boat's depth (a yellow
- * pointer) and the depth ordered (a cyan bar, joined to the boat's pointer while the boat has yet
- * to get there), so the player sees the order move at once and the boat answer it.
+ * Draws the depth gauge at the right edge of a `W` x `H` px scene: a thin see-through scale from the
+ * surface (top) to the course's deepest seabed (`courseDepth`, bottom) with a tick every 10 m and a
+ * figure every 50 m, the seabed under the boat (brown below it), the beacon the pointer leads to (a
+ * yellow dot), the boat's depth (a yellow pointer with its depth in metres beside it) and the depth
+ * ordered (a cyan bar, joined to the boat's pointer while the boat has yet to get there), so the
+ * player reads the depth and sees the order move at once and the boat answer it.
  */
 function drawDepthGauge(W: number, H: number, depth: number, order: number, bed: number, beacon: number): void {
-  const x0 = W - GAUGE_WIDTH + 16,
-    w = 10,
+  const w = 6,
+    x0 = W - w - 3,
     top = 14,
     bottom = H - 14;
   const at = (d: number) => top + (bottom - top) * Math.max(0, Math.min(1, d / courseDepth));
-  g.roundRect(x0 - 16, top - 8, w + 22, bottom - top + 16, 8).fill({ color: 0x06213a, alpha: 0.55 });
-  g.rect(x0, top, w, bottom - top).fill({ color: 0x0e4a7a, alpha: 0.9 });
-  g.rect(x0, at(bed), w, bottom - at(bed)).fill({ color: 0x5b4a32 });
-  for (let d = 10; d < courseDepth; d += 10) g.rect(x0, at(d) - 0.5, d % 50 === 0 ? w : w / 2, 1).fill({ color: 0xcfe6ff, alpha: 0.5 });
-  g.rect(x0, top, w, bottom - top).stroke({ color: 0x8fb8d8, width: 1, alpha: 0.7 });
+  g.rect(x0, top, w, bottom - top).fill({ color: 0x0e4a7a, alpha: 0.45 });
+  g.rect(x0, at(bed), w, bottom - at(bed)).fill({ color: 0x5b4a32, alpha: 0.7 });
+  for (let d = 10; d < courseDepth; d += 10)
+    g.rect(x0 - (d % 50 === 0 ? 4 : 0), at(d) - 0.5, d % 50 === 0 ? w + 4 : w / 2, 1).fill({ color: 0xcfe6ff, alpha: 0.6 });
+  g.rect(x0, top, w, bottom - top).stroke({ color: 0x8fb8d8, width: 1, alpha: 0.6 });
   if (Number.isFinite(beacon))
     g.circle(x0 + w / 2, at(beacon), 4)
       .fill(0xffe066)
@@ -983,13 +1005,30 @@ function drawDepthGauge(W: number, H: number, depth: number, order: number, bed:
   if (Number.isFinite(order)) {
     const yo = at(order);
     if (Math.abs(yo - yb) > 1.5) g.rect(x0 - 3.5, Math.min(yo, yb), 3, Math.abs(yo - yb)).fill({ color: 0x7fe3ff, alpha: 0.9 });
-    g.roundRect(x0 - 4, yo - 2.5, w + 8, 5, 2)
+    g.roundRect(x0 - 4, yo - 2.5, w + 7, 5, 2)
       .fill({ color: 0x7fe3ff })
       .stroke({ color: 0x06213a, width: 1 });
   }
-  g.poly([x0 - 1, yb, x0 - 13, yb - 6, x0 - 13, yb + 6])
+  g.poly([x0 - 1, yb, x0 - 11, yb - 6, x0 - 11, yb + 6])
     .fill(0xffe066)
     .stroke({ color: 0x06213a, width: 1.5 });
+  // The figures: every 50 m left of the bar, hidden where the boat's depth is written.
+  let n = 0;
+  for (let d = 0; d < courseDepth; d += 50, n++) {
+    const mark = gaugeMarks[n] ?? gaugeText(10);
+    gaugeMarks[n] = mark;
+    mark.text = String(d);
+    mark.position.set(x0 - 5, Math.max(top + 5, at(d)));
+    mark.alpha = 0.8;
+    mark.visible = Math.abs(mark.y - yb) > 14;
+  }
+  for (let i = n; i < gaugeMarks.length; i++) gaugeMarks[i]!.visible = false;
+  if (!gaugeDepth) {
+    gaugeDepth = gaugeText(12);
+    gaugeDepth.style.fill = 0xffe066;
+  }
+  gaugeDepth.text = `${Math.max(0, depth).toFixed(0)} m`;
+  gaugeDepth.position.set(x0 - 13, Math.max(top + 6, Math.min(bottom - 6, yb)));
 }
 
 /** A well-mixed 32-bit hash of a cell (i, j) of the marine snow: its speck's offset, size and brightness. */
