@@ -669,6 +669,15 @@ function placeMineTag(k: number, hx: number, hy: number, W: number, H: number): 
   mineTag.y = Math.max(h / 2 + 4, Math.min(H - h / 2 - 4, ahead.side === 'over' ? hy - off : hy + off));
   mineWarning.text = mineTag.text;
   mineWarning.box = [mineTag.x - w / 2, mineTag.y - h / 2, w, h];
+  // A points label ("+30") over a glow just caught that would cross the tag moves on past it, away
+  // from the hull (a stranger saw the two drawn over each other).
+  for (const label of popLabels) {
+    if (!label.visible) continue;
+    const lw = label.width / 2 + 3,
+      lh = label.height / 2 + 3;
+    if (Math.abs(label.x - mineTag.x) < w / 2 + lw && Math.abs(label.y - mineTag.y) < h / 2 + lh)
+      label.y = ahead.side === 'over' ? Math.max(lh, mineTag.y - h / 2 - lh) : Math.min(H - lh, mineTag.y + h / 2 + lh);
+  }
 }
 /**
  * Draws the warning of a mine on the boat's course (`ahead`) by the hull at (`hxw`, `hyw`, m), at
