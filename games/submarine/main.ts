@@ -673,6 +673,11 @@ function placeMineTag(k: number, hx: number, hy: number, W: number, H: number): 
   const off = (SUBMARINE.height / 2) * k + (ahead.side === 'over' ? 1.6 * k + 6 : 6) + h / 2;
   mineTag.x = Math.max(w / 2 + 4, Math.min(W - GAUGE_WIDTH - w / 2 - 4, hx));
   mineTag.y = Math.max(h / 2 + 4, Math.min(H - h / 2 - 4, ahead.side === 'over' ? hy - off : hy + off));
+  // Clear of the beacon arrow's badge at the view's edge (as last drawn): moved along x past it,
+  // toward the view's middle (on a phone, with the boat near the left edge, the two overlapped).
+  const [bx, by, bw, bh] = aim.badge as [number, number, number, number];
+  if (bw > 0 && Math.abs(mineTag.x - (bx + bw / 2)) < (w + bw) / 2 + 4 && Math.abs(mineTag.y - (by + bh / 2)) < (h + bh) / 2 + 4)
+    mineTag.x = bx + bw / 2 < W / 2 ? bx + bw + w / 2 + 4 : bx - w / 2 - 4;
   mineWarning.text = mineTag.text;
   mineWarning.box = [mineTag.x - w / 2, mineTag.y - h / 2, w, h];
   // A points label ("+30") over a glow just caught that would cross the tag moves on past it, away
