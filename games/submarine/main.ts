@@ -1454,6 +1454,19 @@ function draw(): void {
         below = hy0 + hr + pointer.height / 2 + 4;
       pointer.y = (pointer.y < hy0 && above > pointer.height) || below > H - pointer.height ? above : below;
     }
+    // Clear of the live mines in view: a label across one (on a phone the label of a beacon behind
+    // spans most of the width at the boat's depth, over the mines ahead) moves past it, away from the hull.
+    for (let i = 0; i < mines.length; i++) {
+      if (!mineLive[i]) continue;
+      const mx = sx(mines[i]!.x),
+        my = sy(mines[i]!.y),
+        r = MINE_RADIUS * k + 6;
+      if (Math.abs(pointer.x - mx) < pointer.width / 2 + 7 + r && Math.abs(pointer.y - my) < pointer.height / 2 + 2 + r) {
+        const below = my + r + pointer.height / 2 + 4,
+          above = my - r - pointer.height / 2 - 4;
+        pointer.y = (my > hy0 && below < H - pointer.height) || above < pointer.height ? below : above;
+      }
+    }
     // Clear of the mine warning's tag by the hull too (placeMineTag): moved on past it, away from the hull.
     const [tx, ty, tw, th] = mineWarning.box as [number, number, number, number];
     if (
