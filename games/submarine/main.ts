@@ -1,6 +1,6 @@
 /**
  * Submarine: the book's submarine (Ramtal and Dobre ch. 16) as a game. Hold Dive or Rise: the depth
- * ordered (a dashed line by the hull and a cyan mark on the depth gauge at the scene's right edge)
+ * ordered (a dashed line by the hull and a cyan mark on the depth gauge, with figures, at the scene's right edge)
  * runs down or up at once, the vertical thrusters and (under way) the dive planes push at once and the
  * vents flood or blow the ballast tanks; let go and the boat stops on the ordered depth and holds it
  * (./helm.ts, ./planes.ts). Hold Nose down or up to pitch, and drive the screw ahead or astern. A trail
@@ -180,6 +180,12 @@ const LEAD_EASE = 0.8;
 const PORTRAIT_MIN_WIDTH = 70;
 /** The look-ahead's share of the way to the framing margin (`LEAD_SHARE`) on a portrait view. */
 const PORTRAIT_LEAD_SHARE = 0.8;
+/**
+ * The look-ahead along x on a portrait view, s (`LEAD_TIME` elsewhere): longer, so that on a narrow
+ * phone the view is already at its full lead (the boat near the trailing edge, about 60 m of sea
+ * ahead of the bow) from about 8 m/s instead of 12 m/s, and a mine ahead is in view sooner.
+ */
+const PORTRAIT_LEAD_TIME = 3.4;
 /**
  * The camera as last drawn: centre (x, y, m), zoom (px/m), the eased look-ahead (leadX, leadY, m,
  * before its limit), the game time it was eased to (s), the shake now (px) and the view's size (px).
@@ -667,8 +673,22 @@ function placeMineTag(k: number, hx: number, hy: number, W: number, H: number): 
   const off = (SUBMARINE.height / 2) * k + (ahead.side === 'over' ? 1.6 * k + 6 : 6) + h / 2;
   mineTag.x = Math.max(w / 2 + 4, Math.min(W - GAUGE_WIDTH - w / 2 - 4, hx));
   mineTag.y = Math.max(h / 2 + 4, Math.min(H - h / 2 - 4, ahead.side === 'over' ? hy - off : hy + off));
+  // Clear of the beacon arrow's badge at the view's edge (as last drawn): moved along x past it,
+  // toward the view's middle (on a phone, with the boat near the left edge, the two overlapped).
+  const [bx, by, bw, bh] = aim.badge as [number, number, number, number];
+  if (bw > 0 && Math.abs(mineTag.x - (bx + bw / 2)) < (w + bw) / 2 + 4 && Math.abs(mineTag.y - (by + bh / 2)) < (h + bh) / 2 + 4)
+    mineTag.x = bx + bw / 2 < W / 2 ? bx + bw + w / 2 + 4 : bx - w / 2 - 4;
   mineWarning.text = mineTag.text;
   mineWarning.box = [mineTag.x - w / 2, mineTag.y - h / 2, w, h];
+  // A points label ("+30") over a glow just caught that would cross the tag moves on past it, away
+  // from the hull (a stranger saw the two drawn over each other).
+  for (const label of popLabels) {
+    if (!label.visible) continue;
+    const lw = label.width / 2 + 3,
+      lh = label.height / 2 + 3;
+    if (Math.abs(label.x - mineTag.x) < w / 2 + lw && Math.abs(label.y - mineTag.y) < h / 2 + lh)
+      label.y = ahead.side === 'over' ? Math.max(lh, mineTag.y - h / 2 - lh) : Math.min(H - lh, mineTag.y + h / 2 + lh);
+  }
 }
 /**
  * Draws the warning of a mine on the boat's course (`ahead`) by the hull at (`hxw`, `hyw`, m), at
@@ -951,30 +971,52 @@ function drawGlows(t: number, k: number, sx: (x: number) => number, sy: (y: numb
 const popLabels: Text[] = [];
 
 /**
- * Width of the depth gauge at the scene's right edge, px, its backing and the boat's depth pointer
- * included (the beacon label and tags keep clear of it: on a phone they ran under it).
+ * Width of the depth gauge at the scene's right edge, px: its bar, depth figures and the boat's
+ * depth pointer (the beacon label, tags and badge keep clear of it). Narrow and see-through, so a
+ * mine coming into view at the right edge shows (a 36 px opaque gauge hid the edge on a phone).
  */
-const GAUGE_WIDTH = 36;
+const GAUGE_WIDTH = 26;
 /** A beacon's lamp this far inside the scene's edges (and the depth gauge) is on screen, px: its label shows, not the edge arrow. */
 const ON_SCREEN_MARGIN = 14;
+/** The depth gauge's figures: one every 50 m of the scale ("0", "50", ...), a pool hidden when unused. */
+const gaugeMarks: Text[] = [];
+/** The boat's depth in figures by its pointer on the gauge ("53 m"). */
+let gaugeDepth: Text | undefined;
+/** A small gauge figure: light, stroked dark to read over bright water, right-aligned at its anchor. */
+function gaugeText(size: number): Text {
+  const text = new Text({
+    text: '',
+    style: {
+      fill: 0xe8f4ff,
+      fontSize: size,
+      fontWeight: '700',
+      fontFamily: 'system-ui, sans-serif',
+      stroke: { color: 0x06213a, width: 3 },
+    },
+  });
+  text.anchor.set(1, 0.5);
+  app.stage.addChild(text);
+  return text;
+}
 /**
- * Draws the depth gauge at the right edge of a `W` x `H` px scene: a scale from the surface (top) to
- * the course's deepest seabed (`courseDepth`, bottom) with a tick every 10 m, the seabed under the
- * boat (brown below it), the beacon the pointer leads to (a yellow dot), the boat's depth (a yellow
- * pointer) and the depth ordered (a cyan bar, joined to the boat's pointer while the boat has yet
- * to get there), so the player sees the order move at once and the boat answer it.
+ * Draws the depth gauge at the right edge of a `W` x `H` px scene: a thin see-through scale from the
+ * surface (top) to the course's deepest seabed (`courseDepth`, bottom) with a tick every 10 m and a
+ * figure every 50 m, the seabed under the boat (brown below it), the beacon the pointer leads to (a
+ * yellow dot), the boat's depth (a yellow pointer with its depth in metres beside it) and the depth
+ * ordered (a cyan bar, joined to the boat's pointer while the boat has yet to get there), so the
+ * player reads the depth and sees the order move at once and the boat answer it.
  */
 function drawDepthGauge(W: number, H: number, depth: number, order: number, bed: number, beacon: number): void {
-  const x0 = W - GAUGE_WIDTH + 16,
-    w = 10,
+  const w = 6,
+    x0 = W - w - 3,
     top = 14,
     bottom = H - 14;
   const at = (d: number) => top + (bottom - top) * Math.max(0, Math.min(1, d / courseDepth));
-  g.roundRect(x0 - 16, top - 8, w + 22, bottom - top + 16, 8).fill({ color: 0x06213a, alpha: 0.55 });
-  g.rect(x0, top, w, bottom - top).fill({ color: 0x0e4a7a, alpha: 0.9 });
-  g.rect(x0, at(bed), w, bottom - at(bed)).fill({ color: 0x5b4a32 });
-  for (let d = 10; d < courseDepth; d += 10) g.rect(x0, at(d) - 0.5, d % 50 === 0 ? w : w / 2, 1).fill({ color: 0xcfe6ff, alpha: 0.5 });
-  g.rect(x0, top, w, bottom - top).stroke({ color: 0x8fb8d8, width: 1, alpha: 0.7 });
+  g.rect(x0, top, w, bottom - top).fill({ color: 0x0e4a7a, alpha: 0.45 });
+  g.rect(x0, at(bed), w, bottom - at(bed)).fill({ color: 0x5b4a32, alpha: 0.7 });
+  for (let d = 10; d < courseDepth; d += 10)
+    g.rect(x0 - (d % 50 === 0 ? 4 : 0), at(d) - 0.5, d % 50 === 0 ? w + 4 : w / 2, 1).fill({ color: 0xcfe6ff, alpha: 0.6 });
+  g.rect(x0, top, w, bottom - top).stroke({ color: 0x8fb8d8, width: 1, alpha: 0.6 });
   if (Number.isFinite(beacon))
     g.circle(x0 + w / 2, at(beacon), 4)
       .fill(0xffe066)
@@ -983,13 +1025,30 @@ function drawDepthGauge(W: number, H: number, depth: number, order: number, bed:
   if (Number.isFinite(order)) {
     const yo = at(order);
     if (Math.abs(yo - yb) > 1.5) g.rect(x0 - 3.5, Math.min(yo, yb), 3, Math.abs(yo - yb)).fill({ color: 0x7fe3ff, alpha: 0.9 });
-    g.roundRect(x0 - 4, yo - 2.5, w + 8, 5, 2)
+    g.roundRect(x0 - 4, yo - 2.5, w + 7, 5, 2)
       .fill({ color: 0x7fe3ff })
       .stroke({ color: 0x06213a, width: 1 });
   }
-  g.poly([x0 - 1, yb, x0 - 13, yb - 6, x0 - 13, yb + 6])
+  g.poly([x0 - 1, yb, x0 - 11, yb - 6, x0 - 11, yb + 6])
     .fill(0xffe066)
     .stroke({ color: 0x06213a, width: 1.5 });
+  // The figures: every 50 m left of the bar, hidden where the boat's depth is written.
+  let n = 0;
+  for (let d = 0; d < courseDepth; d += 50, n++) {
+    const mark = gaugeMarks[n] ?? gaugeText(10);
+    gaugeMarks[n] = mark;
+    mark.text = String(d);
+    mark.position.set(x0 - 5, Math.max(top + 5, at(d)));
+    mark.alpha = 0.8;
+    mark.visible = Math.abs(mark.y - yb) > 14;
+  }
+  for (let i = n; i < gaugeMarks.length; i++) gaugeMarks[i]!.visible = false;
+  if (!gaugeDepth) {
+    gaugeDepth = gaugeText(12);
+    gaugeDepth.style.fill = 0xffe066;
+  }
+  gaugeDepth.text = `${Math.max(0, depth).toFixed(0)} m`;
+  gaugeDepth.position.set(x0 - 13, Math.max(top + 6, Math.min(bottom - 6, yb)));
 }
 
 /** A well-mixed 32-bit hash of a cell (i, j) of the marine snow: its speck's offset, size and brightness. */
@@ -1097,14 +1156,14 @@ function draw(): void {
   // inside the view when both do not fit; never more sky than the top 15% of the view.
   const reachX = Math.max(0, W / 2 - FRAME_MARGIN) / k,
     reachY = Math.max(0, H / 2 - FRAME_MARGIN) / k;
-  // Look-ahead: the view leads the hull by LEAD_TIME s of its velocity along x (LEAD_TIME_Y s across), at most LEAD_SHARE of the way
+  // Look-ahead: the view leads the hull by LEAD_TIME s (PORTRAIT_LEAD_TIME on a portrait view) of its velocity along x (LEAD_TIME_Y s across), at most LEAD_SHARE of the way
   // to the framing margin, eased over about LEAD_EASE s of game time (a bump or a blast does not jerk
   // the view). Under way, the view's centre is at least that far ahead of the hull, so what lies
   // ahead is in view even when the beacon framed is behind.
   const dtCam = Math.max(0, Math.min(0.1, world.time - camera.time));
   camera.time = world.time;
   const ease = 1 - Math.exp(-dtCam / LEAD_EASE);
-  camera.leadX += (LEAD_TIME * c.Velocity.x[e]! - camera.leadX) * ease;
+  camera.leadX += ((portrait ? PORTRAIT_LEAD_TIME : LEAD_TIME) * c.Velocity.x[e]! - camera.leadX) * ease;
   camera.leadY += (LEAD_TIME_Y * c.Velocity.y[e]! - camera.leadY) * ease;
   const leadX = Math.max(-leadShare * reachX, Math.min(leadShare * reachX, camera.leadX)),
     leadY = Math.max(-LEAD_SHARE * reachY, Math.min(LEAD_SHARE * reachY, camera.leadY));
@@ -1394,6 +1453,19 @@ function draw(): void {
       const above = hy0 - hr - pointer.height / 2 - 4,
         below = hy0 + hr + pointer.height / 2 + 4;
       pointer.y = (pointer.y < hy0 && above > pointer.height) || below > H - pointer.height ? above : below;
+    }
+    // Clear of the live mines in view: a label across one (on a phone the label of a beacon behind
+    // spans most of the width at the boat's depth, over the mines ahead) moves past it, away from the hull.
+    for (let i = 0; i < mines.length; i++) {
+      if (!mineLive[i]) continue;
+      const mx = sx(mines[i]!.x),
+        my = sy(mines[i]!.y),
+        r = MINE_RADIUS * k + 6;
+      if (Math.abs(pointer.x - mx) < pointer.width / 2 + 7 + r && Math.abs(pointer.y - my) < pointer.height / 2 + 2 + r) {
+        const below = my + r + pointer.height / 2 + 4,
+          above = my - r - pointer.height / 2 - 4;
+        pointer.y = (my > hy0 && below < H - pointer.height) || above < pointer.height ? below : above;
+      }
     }
     // Clear of the mine warning's tag by the hull too (placeMineTag): moved on past it, away from the hull.
     const [tx, ty, tw, th] = mineWarning.box as [number, number, number, number];
