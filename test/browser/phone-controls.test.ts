@@ -44,68 +44,6 @@ describe('phone controls', () => {
     await h?.close();
   });
 
-  it('submarine: the stick down floods the tanks, right drives the screw', async () => {
-    const g = await h.openGame('submarine', PHONE);
-    expect(await read(g, 'state.fill')).toBe(0);
-    // The card of gestures over the bottom of the scene is up until the first touch, on the stick too.
-    const hint = g.page.locator('[data-hud="touch-hint"]');
-    expect(await hint.count()).toBe(1);
-    const stick = (await g.page.getByRole('slider', { name: 'stick: dive, rise, ahead, astern' }).boundingBox())!;
-    const cx = stick.x + stick.width / 2,
-      cy = stick.y + stick.height / 2;
-    // Read while the finger is down: let go on the surface, the helm blows the tanks again.
-    let fill = 0,
-      hintGoing = false;
-    await touchPath(
-      g.page,
-      [
-        [cx, cy],
-        [cx, cy + 45],
-      ],
-      400,
-      async () => {
-        fill = await read(g, 'state.fill');
-        hintGoing = await g.page.evaluate(() => document.querySelector('[data-hud="touch-hint"]')?.classList.contains('bp-gone') ?? true);
-      },
-    );
-    expect(fill).toBeGreaterThan(0.02);
-    expect(hintGoing).toBe(true);
-    await hint.waitFor({ state: 'detached' });
-    let throttle = 0;
-    await touchPath(
-      g.page,
-      [
-        [cx, cy],
-        [cx + 45, cy],
-      ],
-      400,
-      async () => {
-        throttle = await read(g, 'state.throttle');
-      },
-    );
-    expect(throttle).toBeGreaterThan(0.05);
-    // Pushed a little under half way (25 px of the knob's 56 px reach on the phone's 136 px stick),
-    // the screw runs up to about half: the stick asks for as much as it is pushed, 0.45; held 1 s of
-    // game time.
-    await touchPath(
-      g.page,
-      [
-        [cx, cy],
-        [cx + 25, cy],
-      ],
-      0,
-      async () => {
-        const t0 = await read(g, 'world.time');
-        await g.waitFor((start) => (window.game as unknown as { world: { time: number } }).world.time > start + 1, t0, 30_000);
-        throttle = await read(g, 'state.throttle');
-      },
-    );
-    expect(throttle).toBeGreaterThan(0.4);
-    expect(throttle).toBeLessThan(0.6);
-    expect(g.errors).toEqual([]);
-    await g.close();
-  });
-
   it('submarine: a touch on the stick starts the boat down within 0.5 s of game time; gauges and beacon arrow fit', async () => {
     // A calm sea (waves=0), so the heave measured is the boat's own. The page records, every frame,
     // the game time and the hull's height and climb from the moment the finger goes down; the helm

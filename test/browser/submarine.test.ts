@@ -3,11 +3,12 @@
  * the view leads the boat (more of the sea ahead of it than behind, even with the beacon behind),
  * a mine on the boat's course is told by the hull (a tag saying which way to pass, an arrow to the
  * mine), and a hit on the hull says what hit it where it happened (a label naming the mine or the seabed
- * over the place, a shake) and lights the hull gauge.
+ * over the place, a shake) and lights the hull gauge. On a phone the card of gestures stays up until
+ * the first touch, and the stick floods the tanks and drives the screw as far as it is pushed.
  */
 import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { Harness, START_TIMEOUT_MS } from './harness';
+import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
 
 type Camera = { x: number; y: number; zoom: number; leadX: number; shake: number; width: number; height: number };
 type Hit = { kind: string; x: number; y: number; label: string; box: number[]; shake: number; gauge: string; gaugeFlash: number };
@@ -31,10 +32,92 @@ type Sub = {
   mineAhead(): { index: number; side: string; time: number; text: string; box: number[]; tip: number[]; tail: number[] } | null;
 };
 
+/**
+ * On a phone, from the page's start: the card of gestures over the bottom of the scene is up until the
+ * first touch, on the stick too; the stick pulled down floods the tanks, pushed right drives the screw,
+ * and pushed a little under half way runs the screw at about half. Leaves the screw stopped.
+ */
+async function stickOnPhone(g: GamePage): Promise<void> {
+  const read = (field: 'fill' | 'throttle') => g.page.evaluate((f) => (window.game as unknown as Sub).state[f], field);
+  const time = () => g.page.evaluate(() => (window.game as unknown as Sub).world.time);
+  expect(await read('fill')).toBe(0);
+  const hint = g.page.locator('[data-hud="touch-hint"]');
+  expect(await hint.count()).toBe(1);
+  const stick = (await g.page.getByRole('slider', { name: 'stick: dive, rise, ahead, astern' }).boundingBox())!;
+  const cx = stick.x + stick.width / 2,
+    cy = stick.y + stick.height / 2;
+  // Read while the finger is down: let go on the surface, the helm blows the tanks again.
+  let fill = 0,
+    hintGoing = false;
+  await touchPath(
+    g.page,
+    [
+      [cx, cy],
+      [cx, cy + 45],
+    ],
+    400,
+    async () => {
+      fill = await read('fill');
+      hintGoing = await g.page.evaluate(() => document.querySelector('[data-hud="touch-hint"]')?.classList.contains('bp-gone') ?? true);
+    },
+  );
+  expect(fill).toBeGreaterThan(0.02);
+  expect(hintGoing).toBe(true);
+  await hint.waitFor({ state: 'detached' });
+  let throttle = 0;
+  await touchPath(
+    g.page,
+    [
+      [cx, cy],
+      [cx + 45, cy],
+    ],
+    400,
+    async () => {
+      throttle = await read('throttle');
+    },
+  );
+  expect(throttle).toBeGreaterThan(0.05);
+  // Pushed a little under half way (25 px of the knob's 56 px reach on the phone's 136 px stick),
+  // the screw runs up to about half: the stick asks for as much as it is pushed, 0.45; held 1 s of
+  // game time.
+  await touchPath(
+    g.page,
+    [
+      [cx, cy],
+      [cx + 25, cy],
+    ],
+    0,
+    async () => {
+      const t0 = await time();
+      await g.waitFor((start) => (window.game as unknown as Sub).world.time > start + 1, t0, 30_000);
+      throttle = await read('throttle');
+    },
+  );
+  expect(throttle).toBeGreaterThan(0.4);
+  expect(throttle).toBeLessThan(0.6);
+  await g.page.evaluate(() => {
+    const w = window.game as unknown as Sub;
+    w.state.throttle = 0;
+    w.world.components.Velocity.x[w.hull()] = 0;
+  });
+}
+
 const SIZES = [
   { device: 'desktop', viewport: { width: 1280, height: 800 }, touch: false },
   { device: 'phone', viewport: { width: 390, height: 844 }, touch: true },
 ] as const;
+
+/** A finger down at the first point, through the others, held `ms` at the last, `during` run, then lifted. */
+async function touchPath(page: Page, points: Array<[number, number]>, ms: number, during?: () => Promise<void>): Promise<void> {
+  const cdp = await page.context().newCDPSession(page);
+  const at = ([x, y]: [number, number]) => [{ x, y, id: 1 }];
+  await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: at(points[0]!) });
+  for (const p of points.slice(1)) await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: at(p) });
+  await page.waitForTimeout(ms);
+  await during?.();
+  await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
+  await cdp.detach();
+}
 
 /** Pauses the game (from inside the page, on the frame it happens) once a hit of `kind` is `after` s of game time old. */
 function pauseAfterHit(page: Page, kind: string, after: number): Promise<void> {
@@ -67,7 +150,7 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     await h?.close();
   });
 
-  it('a Dive moves the depth order at once and the boat stops on it when let go; a glow touched scores', async () => {
+  it('a Dive moves the depth order at once and the boat stops on it when let go; a glow touched scores; on a phone the stick floods the tanks and drives the screw as far as it is pushed', async () => {
     // The boat hovering at 30 m (tanks at neutral, holding), on a calm sea with one beacon. A full
     // Dive (S held, or a finger at the bottom of the stick) for 0.8 s of game time, then let go: the
     // page records, every frame, the hull's depth, the order and the readout. The order is below the
@@ -75,6 +158,7 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     // boat passes the order by under 0.2 m and is within 0.2 m of it 2 s after (helm.ts: measured
     // 0.00 m and 1.2 s headless from the full dive speed).
     const g = await h.openGame('submarine', { viewport, touch, query: { waves: 0, beacons: 1 } });
+    if (touch) await stickOnPhone(g);
     await g.page.evaluate(() => {
       const w = window.game as unknown as Sub & { world: { components: { Ballast: { fore: Float64Array; aft: Float64Array } } } };
       const c = w.world.components,
