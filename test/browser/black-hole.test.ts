@@ -4,7 +4,8 @@
  * which plays the swallow effect and says so; the next thrust clears that message; flying at a side
  * edge warns before the ship leaves the field. A clear shows its points rising from the line; between
  * levels the field is empty and the next-level button, over the field, leaves the start pad, the ship
- * and the thrust buttons clear; level 2's wall is drawn inside the field (desktop and phone).
+ * and the thrust buttons clear, and a tap on it starts level 2, whose wall is drawn inside the field
+ * (desktop and phone); on a phone, after the game a tap on the scene plays again from the level lost.
  */
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
@@ -131,9 +132,31 @@ describe.each([
   { device: 'desktop', viewport: { width: 1280, height: 800 }, touch: false },
   { device: 'phone', viewport: { width: 390, height: 844 }, touch: true },
 ] as const)('black hole thrust pad ($device)', ({ device, viewport, touch }) => {
-  it('a finger (or the mouse) held on ↑ and slid onto → turns the thrust right; lifting it stops; the ship is drawn at least 26 px; the next-level button leaves the pad and the ship clear', async () => {
+  it('a finger (or the mouse) held on ↑ and slid onto → turns the thrust right; lifting it stops; the ship is drawn at least 26 px; the next-level button leaves the pad and the ship clear and starts level 2; on a phone ↑ held thrusts up and after the game a tap on the scene plays again', async () => {
     const p = await h.openGame('black-hole', { viewport, touch, query: { level: 1 } });
     type Bh = { bh: { thrust: string }; shipPx(): number };
+    if (touch) {
+      // On the phone first: a finger held 0.4 s on ↑ thrusts the ship up; after the game a tap on the
+      // scene plays again from the level lost (level 1 here), and a big button over the scene says so.
+      const upBox = (await p.page.getByRole('button', { name: 'thrust up', exact: true }).boundingBox())!;
+      const tap = await p.page.context().newCDPSession(p.page);
+      const at = [{ x: upBox.x + upBox.width / 2, y: upBox.y + upBox.height / 2, id: 1 }];
+      await tap.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: at });
+      await p.page.waitForTimeout(400);
+      await tap.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
+      await tap.detach();
+      expect(await p.page.evaluate(() => (window.game as unknown as { ship(): number[] }).ship()[3])).toBeGreaterThan(0.2);
+      await p.page.evaluate(() => {
+        const game = window.game as unknown as { bh: { over: boolean; message: string } };
+        game.bh.over = true;
+        game.bh.message = 'Swallowed! Game over with 0 points. Press Enter or R to play again.';
+      });
+      await p.waitFor(() => document.querySelector('[data-hud="message"]')?.textContent?.includes('Tap to continue from level 1.'), null);
+      await p.page.getByRole('button', { name: 'Continue from level 1 ↺' }).waitFor({ state: 'visible', timeout: 5000 });
+      await p.clickCanvas(0.5, 0.5);
+      await p.waitFor(() => !(window.game as unknown as { bh: { over: boolean } }).bh.over, null);
+      await p.page.getByRole('button', { name: 'Continue from level 1 ↺' }).waitFor({ state: 'detached', timeout: 5000 });
+    }
     const centre = async (name: string): Promise<[number, number]> => {
       const b = (await p.page.getByRole('button', { name, exact: true }).boundingBox())!;
       return [b.x + b.width / 2, b.y + b.height / 2];
@@ -199,7 +222,9 @@ describe.each([
     }
     // Level 2's wall reaches from edge to edge, and every hole, its disc and its glow stay inside the
     // field (on a phone a hole of the wall stood half past the edge and discs were cut off by it).
-    await next.click();
+    // A tap on the phone (a click on the desktop) starts level 2.
+    if (touch) await next.tap();
+    else await next.click();
     const wall = await p.waitFor(() => {
       const w = window.game as unknown as {
         level: { waiting: boolean };
@@ -208,6 +233,7 @@ describe.each([
       const e = (window.game as unknown as { holeExtents(): number[][] }).holeExtents();
       return !w.level.waiting && e.length === w.bh.holes.length && e.length > 0 ? { e, field: w.bh.field } : null;
     }, null);
+    expect(await p.page.evaluate(() => (window.game as unknown as { level: { spec: { level: number } } }).level.spec.level)).toBe(2);
     expect(wall.e.length).toBeGreaterThan(5);
     for (const [left, right, bottom, top] of wall.e) {
       expect(left, `${device}: a hole's left`).toBeGreaterThanOrEqual(0);

@@ -1,8 +1,10 @@
 /**
  * Catapult in headless Chromium: the page draws and lists its controls; a mouse drag back from the
  * cup and release throws a projectile that flies; a throw at the castle raises the score; a throw
- * that overshoots or falls short says by how much, with an arrow to where it went; P pauses.
+ * that overshoots or falls short says by how much, with an arrow to where it went; P pauses. On a
+ * phone, upright and sideways, the views and the card saying how to play fit, and touch throws.
  */
+import type { Locator, Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { LEVEL_COUNT, levelName } from '../../games/catapult/scene';
 import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
@@ -48,6 +50,190 @@ const screen = (x: number, y: number) =>
     },
     [x, y] as const,
   );
+
+/** A finger down at the first point, through the others, held `ms` at the last, then lifted. */
+async function touchPath(page: Page, points: Array<[number, number]>, ms: number): Promise<void> {
+  const cdp = await page.context().newCDPSession(page);
+  const at = ([x, y]: [number, number]) => [{ x, y, id: 1 }];
+  await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: at(points[0]!) });
+  for (const q of points.slice(1)) await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: at(q) });
+  await page.waitForTimeout(ms);
+  await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
+  await cdp.detach();
+}
+
+/** What the phone page's checks below read of `window.game`. */
+type PhoneGame = {
+  cameraSettled(): boolean;
+  bannerSize(): { width: number; height: number; fontSize: number };
+  level(): { castleMinX: number; castleMaxX: number; castleTop: number };
+  positionOf(b: number): [number, number];
+  fire(dx: number, dy: number): number;
+  shots(): number[];
+  renderer: { camera: { toScreenX(x: number): number; toScreenY(y: number): number; width: number; height: number } };
+};
+
+/**
+ * On a phone (390 x 844, touch) page of level 1 before its first touch: upright, the start view is the
+ * catapult whole and large and the castle, the banner fits, a close-up of the castle fills the sky,
+ * and a card says how to play; sideways (844 x 390) the whole field is in view and the card lies
+ * clear of the castle; back upright. Returns the card and the canvas' box seen sideways.
+ */
+async function phoneBeforeTouch(p: GamePage): Promise<{ hint: Locator; box: DOMRect }> {
+  await p.waitFor(() => (window.game as unknown as { cameraSettled(): boolean }).cameraSettled(), null);
+  // Upright, the start view is the catapult and the castle it aims at (a player saw only an arrow
+  // to the castle), not the whole field fitted to 390 px. The catapult with its mound and the
+  // stones stacked behind it spans x = -3.0 to 1.1 m, y = 0 to 2 m (see drawCatapult, drawMound
+  // and drawAmmo in games/catapult): all of it on the canvas and over 90 px wide (the whole field
+  // drew it 87 px wide, its stones cut off at the left; level 1's castle 8.5 m out gives 94 px).
+  const aim = await p.page.evaluate(() => {
+    const w = window.game as unknown as PhoneGame;
+    const cam = w.renderer.camera;
+    const [left, right, top, bottom] = [cam.toScreenX(-3.0), cam.toScreenX(1.1), cam.toScreenY(2), cam.toScreenY(0)];
+    return { left, right, top, bottom, W: cam.width, H: cam.height, banner: w.bannerSize() };
+  });
+  expect(aim.left).toBeGreaterThanOrEqual(0);
+  expect(aim.right).toBeLessThanOrEqual(aim.W);
+  expect(aim.top).toBeGreaterThanOrEqual(0);
+  expect(aim.bottom).toBeLessThanOrEqual(aim.H);
+  expect(aim.right - aim.left).toBeGreaterThan(90);
+  // The ground is above the bottom sixth (earth below it), not at the canvas's bottom edge.
+  expect((aim.H - aim.bottom) / aim.H).toBeGreaterThan(1 / 6);
+  // The score and the star rule: two lines of text, narrower than the canvas (a line is about
+  // 1.3 x the type size and the outline adds 4 px: two lines 2.7 x, three 4 x; bound 3.2 x).
+  expect(aim.banner.height).toBeLessThan(3.2 * aim.banner.fontSize);
+  expect(aim.banner.width).toBeLessThanOrEqual(aim.W);
+  // The field fitted to 390 px draws the castle small under a tall sky: a close-up of it fills
+  // the sky over the scene, at least twice as large (2.24 x on level 1), on the canvas and above
+  // the castle itself.
+  const close = await p.page.evaluate(() => {
+    const w = window.game as unknown as PhoneGame & { closeUp(): { box: number[]; zoom: number } | null };
+    return { close: w.closeUp(), castleTop: w.renderer.camera.toScreenY(w.level().castleTop) };
+  });
+  expect(close.close!.zoom).toBeGreaterThanOrEqual(2);
+  const [cx, cy, cw, ch] = close.close!.box as [number, number, number, number];
+  expect(cx).toBeGreaterThanOrEqual(0);
+  expect(cx + cw).toBeLessThanOrEqual(aim.W);
+  expect(cy + ch).toBeLessThan(close.castleTop);
+  // The legend is behind the menu button on a phone: a card over the scene says how to play until
+  // the first touch.
+  const hint = p.page.locator('[data-hud="touch-hint"]');
+  expect(await hint.textContent()).toMatch(/^Drag\s*pull back/);
+  // Sideways (844 x 390): the whole field in view, and the card lies on the earth under the ground
+  // line, not over the castle's foot (the field fitted to the castle's height put it there).
+  await p.page.setViewportSize({ width: 844, height: 390 });
+  await p.waitFor(() => {
+    const w = window.game as unknown as PhoneGame;
+    return w.renderer.camera.width > 600 && w.cameraSettled();
+  }, null);
+  const box = await p.page.evaluate(() => document.querySelector('canvas')!.getBoundingClientRect().toJSON() as DOMRect);
+  const castle = await p.page.evaluate(() => (window.game as unknown as PhoneGame).level());
+  const foot = await p.worldToPage(castle.castleMinX, 0);
+  for (const at of [await p.worldToPage(-3, 0), foot, await p.worldToPage(castle.castleMaxX, castle.castleTop)]) {
+    expect(at.x).toBeGreaterThan(box.left);
+    expect(at.x).toBeLessThan(box.right);
+    expect(at.y).toBeLessThan(box.bottom);
+  }
+  expect((await hint.boundingBox())!.y).toBeGreaterThanOrEqual(foot.y);
+  await p.page.setViewportSize({ width: 390, height: 844 });
+  await p.waitFor(() => {
+    const w = window.game as unknown as PhoneGame;
+    return w.renderer.camera.width < 600 && w.cameraSettled();
+  }, null);
+  return { hint, box };
+}
+
+/**
+ * On the phone page after `phoneBeforeTouch` (the level played again from its start): the camera
+ * follows a stone to a large tower, a drag from anywhere throws, and the next-level (or try-again)
+ * button goes on when the level is over.
+ */
+async function phoneThrows(p: GamePage, hint: Locator, box: DOMRect): Promise<void> {
+  // A throw at the castle's front at 14 m/s, the low angle (sin 2 theta = g R / v^2). Each frame
+  // while it flies the stone is inside the canvas's width (the camera follows it), and when it gets
+  // there the tower is over 210 px tall on the screen (the shot view fitted to the castle, the rock
+  // and 2.5 m either side drew it 179 px tall).
+  const flight = await p.page.evaluate(async () => {
+    const w = window.game as unknown as PhoneGame;
+    const cam = w.renderer.camera;
+    const lv = w.level();
+    const R = lv.castleMinX + 0.5,
+      v = 14,
+      th = 0.5 * Math.asin((9.81 * R) / (v * v)),
+      d = v / 7;
+    const ball = w.fire(-d * Math.cos(th), -d * Math.sin(th));
+    let outside = 0,
+      frames = 0;
+    const t0 = performance.now();
+    while (performance.now() - t0 < 5000) {
+      await new Promise(requestAnimationFrame);
+      const x = w.positionOf(ball)[0];
+      if (x > lv.castleMinX - 0.3) break;
+      frames++;
+      const sx = cam.toScreenX(x);
+      if (sx < 0 || sx > cam.width) outside++;
+    }
+    return { frames, outside };
+  });
+  expect(flight.frames).toBeGreaterThan(3);
+  expect(flight.outside).toBe(0);
+  // Once the camera is at rest on the shot view, the rock past the castle and room past it are in view too.
+  const tower = await p.waitFor(() => {
+    const w = window.game as unknown as PhoneGame & { shotView(): boolean; closeUp(): unknown };
+    if (!w.shotView() || !w.cameraSettled()) return null;
+    const cam = w.renderer.camera,
+      lv = w.level();
+    return {
+      closeUp: w.closeUp(),
+      height: cam.toScreenY(0) - cam.toScreenY(lv.castleTop),
+      perMetre: cam.toScreenY(0) - cam.toScreenY(1),
+      rock: cam.toScreenX(lv.castleMaxX + 2.9),
+      width: cam.width,
+    };
+  }, null);
+  // The shot view's zoom: over 32 px a metre (level 1's old 6 m watchtower drew 210 px tall; its
+  // low tower of 2 m now draws 70 px at the same 34 px a metre).
+  expect(tower.perMetre).toBeGreaterThan(32);
+  // (The close-up is hidden there: the view is as close.)
+  expect(tower.closeUp).toBeNull();
+  expect(tower.height).toBeGreaterThan(2 * 32);
+  expect(tower.rock).toBeLessThan(tower.width - 30);
+  // A touch drag starting mid-screen, far from the cup (at the left edge there is no room to pull back), throws.
+  // Level 1's low tower falls to the shot above, which ends the level: the drag plays it again.
+  const thrown = await p.page.evaluate(() => {
+    const game = window.game as unknown as { shots(): number[]; reset(): void };
+    game.reset();
+    return game.shots().length;
+  });
+  const start = { x: box.left + 390 / 2, y: box.top + (844 - box.top) / 2 };
+  await touchPath(
+    p.page,
+    [
+      [start.x, start.y],
+      [start.x - 40, start.y + 20],
+      [start.x - 80, start.y + 40],
+    ],
+    50,
+  );
+  await p.waitFor((n) => (window.game as unknown as { shots(): number[] }).shots().length === n + 1, thrown);
+  await hint.waitFor({ state: 'detached', timeout: 3000 });
+  // After the throw the camera follows it (the shot view).
+  await p.waitFor(() => (window.game as unknown as { shotView(): boolean }).shotView(), null);
+  // Spend the remaining shots and let 4 s pass: the level is over.
+  await p.page.evaluate(() => {
+    const game = window.game as unknown as { shotsLeft(): number; fire(dx: number, dy: number): number; advance(n: number): void };
+    while (game.shotsLeft() > 0) game.fire(-2, -1);
+    game.advance(260);
+  });
+  // The button reads 'Level 2 ▶' when the shots brought down half the castle and 'Try again ↺' when
+  // not: the first shot is a real touch drag, whose throw depends on the frame timing.
+  const next = p.page.getByRole('button', { name: /^(Level 2 ▶|Try again ↺)$/ });
+  await next.waitFor({ state: 'visible', timeout: 5000 });
+  const cleared = (await next.textContent())?.startsWith('Level 2') === true;
+  await next.tap();
+  if (cleared) await p.waitFor(() => (window.game as unknown as { params: { level: number } }).params.level === 2, null);
+  else await p.waitFor(() => (window.game as unknown as { shotsLeft(): number }).shotsLeft() === 3, null);
+}
 
 describe('catapult', () => {
   it('draws, shows its controls and panel', async () => {
@@ -429,8 +615,10 @@ describe('catapult', () => {
     await d.close();
   });
 
-  it('phone 390 x 844 (touch): while a finger pulls, the camera frames the catapult and the castle; the pull is long and the release throws', async () => {
+  it('phone 390 x 844 (touch): upright and sideways the start view and the card saying how to play; while a finger pulls, the camera frames the catapult and the castle; the pull is long and the release throws; played again, the camera follows the stone to a large tower, a drag from anywhere throws and the next-level (or try-again) button goes on', async () => {
     const p = await h.openGame('catapult', { query: { level: 1 }, viewport: { width: 390, height: 844 }, touch: true });
+    // Before the first touch: the start view upright and sideways, and the card saying how to play.
+    const { hint, box: sideways } = await phoneBeforeTouch(p);
     type W = CatapultGame & {
       cameraSettled(): boolean;
       fullPullPx(): number;
@@ -487,6 +675,8 @@ describe('catapult', () => {
     await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
     await cdp.detach();
     await p.waitFor(() => (window.game as unknown as W).shots().length === 1, null);
+    // The first touch took the card away.
+    await hint.waitFor({ state: 'detached', timeout: 3000 });
     const v = await p.page.evaluate(() => (window.game as unknown as W).lastLaunch());
     expect(Math.hypot(v[0], v[1])).toBeLessThan(0.65 * 21);
     expect(Math.hypot(v[0], v[1])).toBeGreaterThan(0.3 * 21);
@@ -518,6 +708,14 @@ describe('catapult', () => {
     const c = 1 - panel!.alpha,
       lum = c <= 0.04045 ? c / 12.92 : ((c + 0.055) / 1.055) ** 2.4;
     expect(1.05 / (lum + 0.05)).toBeGreaterThanOrEqual(4.5);
+    // The level played again from its start, the camera at rest in the aim view: a stone followed to
+    // the tower, a drag from anywhere throws, the next-level (or try-again) button.
+    await p.page.evaluate(() => (window.game as unknown as CatapultGame).reset());
+    await p.waitFor(() => {
+      const w = window.game as unknown as W;
+      return !w.levelEnded() && w.shots().length === 0 && w.cameraSettled();
+    }, null);
+    await phoneThrows(p, hint, sideways);
     expect(p.errors).toEqual([]);
     await p.close();
   });

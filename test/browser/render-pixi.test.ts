@@ -260,53 +260,6 @@ describe('WorldRenderer in the browser', () => {
     expect(g.errors).toEqual([]);
   });
 
-  it('fills a shape with the colour set on its body (catapult page)', async () => {
-    // The catapult's castle pieces are boxes (addBox: the body is its own shape). Each colour set on a
-    // piece must fill it: the pixel at its centre is dominated by that channel (the fill is drawn at
-    // alpha 0.85 over the dark background, so the set channel reads above 180 and the others below 100).
-    const c = await h.openGame('catapult', { query: { level: 1 }, viewport: { width: 1280, height: 800 } });
-    const read = (color: number) =>
-      c.page.evaluate(async (color: number) => {
-        const game = window.game as unknown as {
-          paused: boolean;
-          level(): { pieces: { body: number; kind: string }[] };
-          positionOf(h: number): [number, number];
-          renderer: Host['renderer'];
-          pacer: { drawn: number };
-          app: { canvas: HTMLCanvasElement };
-        };
-        // Running, not paused: paused, the page dims the scene under its 'Paused' overlay. The castle
-        // stands at rest, so the post stays where it is drawn.
-        game.paused = false;
-        // A post: 0.3 m x 1.2 m, about 10 px wide on a 1280 px page, so its centre is fill, not outline.
-        const piece = game.level().pieces.find((p) => p.kind === 'post')!;
-        game.renderer.setColor(piece.body, color);
-        const reported = game.renderer.colorOf(piece.body);
-        // Two drawn frames, then copy the canvas in the next animation frame (before it is cleared).
-        const start = game.pacer.drawn;
-        while (game.pacer.drawn < start + 2) await new Promise((r) => requestAnimationFrame(r));
-        const canvas = game.app.canvas;
-        const copy = new OffscreenCanvas(canvas.width, canvas.height).getContext('2d')!;
-        copy.drawImage(canvas, 0, 0);
-        const [x, y] = game.positionOf(piece.body);
-        const scale = canvas.width / canvas.getBoundingClientRect().width;
-        const px = Math.round(game.renderer.camera.toScreenX(x) * scale),
-          py = Math.round(game.renderer.camera.toScreenY(y) * scale);
-        const [r, g, b] = copy.getImageData(px, py, 1, 1).data;
-        return { reported, rgb: [r!, g!, b!] };
-      }, color);
-    const green = await read(0x00ff00);
-    expect(green.reported).toBe(0x00ff00);
-    expect(green.rgb[1]).toBeGreaterThan(180);
-    expect(green.rgb[0]).toBeLessThan(100);
-    expect(green.rgb[2]).toBeLessThan(100);
-    const blue = await read(0x0000ff);
-    expect(blue.rgb[2]).toBeGreaterThan(180);
-    expect(blue.rgb[0]).toBeLessThan(100);
-    expect(blue.rgb[1]).toBeLessThan(100);
-    expect(c.errors).toEqual([]);
-  });
-
   it('keeps seeded colours deterministic and lets users set and clear their own', async () => {
     const r = await g.page.evaluate(() => {
       const game = window.game as unknown as Host;
@@ -383,6 +336,56 @@ describe('WorldRenderer in the browser', () => {
     expect(r.yBottom).toBeLessThanOrEqual(r.h);
     expect(r.x1 - r.x0).toBeGreaterThan(r.w * 0.8); // fitted, not just inside
     await g.page.setViewportSize({ width: 800, height: 500 });
+  });
+
+  it('fills a shape with the colour set on its body (catapult page)', async () => {
+    // The cases from here on open pages of their own: the bouncing-balls page of the cases above is
+    // closed (an open game page keeps stepping and drawing on the one software GPU every page shares).
+    await g.close();
+    // The catapult's castle pieces are boxes (addBox: the body is its own shape). Each colour set on a
+    // piece must fill it: the pixel at its centre is dominated by that channel (the fill is drawn at
+    // alpha 0.85 over the dark background, so the set channel reads above 180 and the others below 100).
+    const c = await h.openGame('catapult', { query: { level: 1 }, viewport: { width: 1280, height: 800 } });
+    const read = (color: number) =>
+      c.page.evaluate(async (color: number) => {
+        const game = window.game as unknown as {
+          paused: boolean;
+          level(): { pieces: { body: number; kind: string }[] };
+          positionOf(h: number): [number, number];
+          renderer: Host['renderer'];
+          pacer: { drawn: number };
+          app: { canvas: HTMLCanvasElement };
+        };
+        // Running, not paused: paused, the page dims the scene under its 'Paused' overlay. The castle
+        // stands at rest, so the post stays where it is drawn.
+        game.paused = false;
+        // A post: 0.3 m x 1.2 m, about 10 px wide on a 1280 px page, so its centre is fill, not outline.
+        const piece = game.level().pieces.find((p) => p.kind === 'post')!;
+        game.renderer.setColor(piece.body, color);
+        const reported = game.renderer.colorOf(piece.body);
+        // Two drawn frames, then copy the canvas in the next animation frame (before it is cleared).
+        const start = game.pacer.drawn;
+        while (game.pacer.drawn < start + 2) await new Promise((r) => requestAnimationFrame(r));
+        const canvas = game.app.canvas;
+        const copy = new OffscreenCanvas(canvas.width, canvas.height).getContext('2d')!;
+        copy.drawImage(canvas, 0, 0);
+        const [x, y] = game.positionOf(piece.body);
+        const scale = canvas.width / canvas.getBoundingClientRect().width;
+        const px = Math.round(game.renderer.camera.toScreenX(x) * scale),
+          py = Math.round(game.renderer.camera.toScreenY(y) * scale);
+        const [r, g, b] = copy.getImageData(px, py, 1, 1).data;
+        return { reported, rgb: [r!, g!, b!] };
+      }, color);
+    const green = await read(0x00ff00);
+    expect(green.reported).toBe(0x00ff00);
+    expect(green.rgb[1]).toBeGreaterThan(180);
+    expect(green.rgb[0]).toBeLessThan(100);
+    expect(green.rgb[2]).toBeLessThan(100);
+    const blue = await read(0x0000ff);
+    expect(blue.rgb[2]).toBeGreaterThan(180);
+    expect(blue.rgb[0]).toBeLessThan(100);
+    expect(blue.rgb[1]).toBeLessThan(100);
+    expect(c.errors).toEqual([]);
   });
 
   it('uses the ParticleContainer path from 1000 balls on (auto) or when asked', async () => {

@@ -3,11 +3,14 @@
  * the view leads the boat (more of the sea ahead of it than behind, even with the beacon behind),
  * a mine on the boat's course is told by the hull (a tag saying which way to pass, an arrow to the
  * mine), and a hit on the hull says what hit it where it happened (a label naming the mine or the seabed
- * over the place, a shake) and lights the hull gauge.
+ * over the place, a shake) and lights the hull gauge. On a phone the card of gestures stays up until
+ * the first touch, the stick floods the tanks and drives the screw as far as it is pushed, a touch on
+ * it starts the boat down within 0.5 s of game time, and the gauges and the beacon arrow fit.
  */
 import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { Harness, START_TIMEOUT_MS } from './harness';
+import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
+import { checkLayout } from './layout-check';
 
 type Camera = { x: number; y: number; zoom: number; leadX: number; shake: number; width: number; height: number };
 type Hit = { kind: string; x: number; y: number; label: string; box: number[]; shake: number; gauge: string; gaugeFlash: number };
@@ -31,10 +34,201 @@ type Sub = {
   mineAhead(): { index: number; side: string; time: number; text: string; box: number[]; tip: number[]; tail: number[] } | null;
 };
 
+/**
+ * On a phone, from the page's start: the card of gestures over the bottom of the scene is up until the
+ * first touch, on the stick too; the stick pulled down floods the tanks, pushed right drives the screw,
+ * and pushed a little under half way runs the screw at about half. Leaves the screw stopped.
+ */
+async function stickOnPhone(g: GamePage): Promise<void> {
+  const read = (field: 'fill' | 'throttle') => g.page.evaluate((f) => (window.game as unknown as Sub).state[f], field);
+  const time = () => g.page.evaluate(() => (window.game as unknown as Sub).world.time);
+  expect(await read('fill')).toBe(0);
+  const hint = g.page.locator('[data-hud="touch-hint"]');
+  expect(await hint.count()).toBe(1);
+  const stick = (await g.page.getByRole('slider', { name: 'stick: dive, rise, ahead, astern' }).boundingBox())!;
+  const cx = stick.x + stick.width / 2,
+    cy = stick.y + stick.height / 2;
+  // Read while the finger is down: let go on the surface, the helm blows the tanks again.
+  let fill = 0,
+    hintGoing = false;
+  await touchPath(
+    g.page,
+    [
+      [cx, cy],
+      [cx, cy + 45],
+    ],
+    400,
+    async () => {
+      fill = await read('fill');
+      hintGoing = await g.page.evaluate(() => document.querySelector('[data-hud="touch-hint"]')?.classList.contains('bp-gone') ?? true);
+    },
+  );
+  expect(fill).toBeGreaterThan(0.02);
+  expect(hintGoing).toBe(true);
+  await hint.waitFor({ state: 'detached' });
+  let throttle = 0;
+  await touchPath(
+    g.page,
+    [
+      [cx, cy],
+      [cx + 45, cy],
+    ],
+    400,
+    async () => {
+      throttle = await read('throttle');
+    },
+  );
+  expect(throttle).toBeGreaterThan(0.05);
+  // Pushed a little under half way (25 px of the knob's 56 px reach on the phone's 136 px stick),
+  // the screw runs up to about half: the stick asks for as much as it is pushed, 0.45; held 1 s of
+  // game time.
+  await touchPath(
+    g.page,
+    [
+      [cx, cy],
+      [cx + 25, cy],
+    ],
+    0,
+    async () => {
+      const t0 = await time();
+      await g.waitFor((start) => (window.game as unknown as Sub).world.time > start + 1, t0, 30_000);
+      throttle = await read('throttle');
+    },
+  );
+  expect(throttle).toBeGreaterThan(0.4);
+  expect(throttle).toBeLessThan(0.6);
+  await g.page.evaluate(() => {
+    const w = window.game as unknown as Sub;
+    w.state.throttle = 0;
+    w.world.components.Velocity.x[w.hull()] = 0;
+  });
+}
+
 const SIZES = [
   { device: 'desktop', viewport: { width: 1280, height: 800 }, touch: false },
   { device: 'phone', viewport: { width: 390, height: 844 }, touch: true },
 ] as const;
+
+/** A finger down at the first point, through the others, held `ms` at the last, `during` run, then lifted. */
+async function touchPath(page: Page, points: Array<[number, number]>, ms: number, during?: () => Promise<void>): Promise<void> {
+  const cdp = await page.context().newCDPSession(page);
+  const at = ([x, y]: [number, number]) => [{ x, y, id: 1 }];
+  await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: at(points[0]!) });
+  for (const p of points.slice(1)) await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: at(p) });
+  await page.waitForTimeout(ms);
+  await during?.();
+  await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
+  await cdp.detach();
+}
+
+/**
+ * On a phone, a calm sea (waves=0), the game at its start: a touch on the stick starts the boat down
+ * within 0.5 s of game time and 2 m down within 3 s; the gauges' longest lines fit the 390 px width,
+ * the beacon arrow is drawn, its label kept off the hull, the camera zoomed out no further than 4 px/m
+ * and the arrow's badge clear of the depth gauge.
+ */
+async function diveOnPhone(g: GamePage): Promise<void> {
+  // The page records, every frame, the game time and the hull's height and climb from the moment the
+  // finger goes down; the helm (games/submarine/helm.ts) must have it sinking at 0.2 m/s within 0.5 s
+  // and 2 m down within 3 s of game time.
+  type SubOnPhone = {
+    world: { time: number; components: { Position: { y: Float64Array }; Velocity: { y: Float64Array } } };
+    hull(): number;
+  };
+  await g.page.evaluate(() => {
+    const w = window.game as unknown as SubOnPhone;
+    const trace: { t: number; y: number; vy: number }[] = [];
+    (window as unknown as { subTrace: typeof trace }).subTrace = trace;
+    const frame = () => {
+      const c = w.world.components,
+        e = w.hull();
+      trace.push({ t: w.world.time, y: c.Position.y[e]!, vy: c.Velocity.y[e]! });
+      if (trace.length < 100_000) requestAnimationFrame(frame);
+    };
+    requestAnimationFrame(frame);
+  });
+  // The finger goes down at the bottom of the stick: full dive from the first touch.
+  const stick = (await g.page.getByRole('slider', { name: 'stick: dive, rise, ahead, astern' }).boundingBox())!;
+  const cdp = await g.page.context().newCDPSession(g.page);
+  const t0 = await g.page.evaluate(() => (window.game as unknown as SubOnPhone).world.time);
+  await cdp.send('Input.dispatchTouchEvent', {
+    type: 'touchStart',
+    touchPoints: [{ x: stick.x + stick.width / 2, y: stick.y + stick.height - 14, id: 1 }],
+  });
+  // Held until 3.5 s of game time have passed (a slow machine runs fewer frames, not less game time).
+  await g.waitFor((start) => (window.game as unknown as SubOnPhone).world.time > start + 3.5, t0, 60_000);
+  await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
+  await cdp.detach();
+  const r = await g.page.evaluate((start) => {
+    const trace = (window as unknown as { subTrace: { t: number; y: number; vy: number }[] }).subTrace;
+    const before = trace.filter((p) => p.t <= start);
+    const y0 = before.length > 0 ? before[before.length - 1]!.y : trace[0]!.y;
+    const after = trace.filter((p) => p.t > start);
+    const speed = after.find((p) => p.vy <= -0.2),
+      deep = after.find((p) => p.y <= y0 - 2);
+    return { speed: speed ? speed.t - start : Number.NaN, deep: deep ? deep.t - start : Number.NaN, frames: after.length };
+  }, t0);
+  // The touch reaches the game within a frame or two of game time (1/60 s each) after t0 is read.
+  expect(r.speed).toBeLessThan(0.5 + 2 / 60);
+  expect(r.deep).toBeLessThan(3);
+  // The gauges in the status row: their longest lines (a deep, fast, wrecked boat) still fit the
+  // 390 px width, nothing is cut off, and the beacon arrow is drawn.
+  await g.page.evaluate(() => {
+    const w = window.game as unknown as { state: { hits: number; over: string; collected: number } };
+    Object.assign(w.state, { hits: 3, over: 'sunk', collected: 12 });
+  });
+  await g.frames(8);
+  const gauge = await g.page.evaluate(() => {
+    const el = document.querySelector<HTMLElement>('[data-hud="gauges"]')!;
+    const b = el.getBoundingClientRect();
+    return { text: el.textContent ?? '', right: b.right, bottom: b.bottom, scroll: el.scrollWidth, client: el.clientWidth };
+  });
+  expect(gauge.text).toContain('Hull breached');
+  expect(gauge.right).toBeLessThanOrEqual(390);
+  expect(gauge.scroll).toBeLessThanOrEqual(gauge.client);
+  expect((await checkLayout(g.page)).clipped).toEqual([]);
+  const aim = await g.page.evaluate(() =>
+    (window.game as unknown as { beaconPointer(): { visible: boolean; text: string } }).beaconPointer(),
+  );
+  expect(aim.visible).toBe(true);
+  expect(aim.text).toMatch(/^beacon ([A-Z]: )?(\d+ m (ahead|behind)(, \d+ m (down|up))?|\d+ m (down|up)|here)$/);
+  // The label is kept off the hull (it was drawn across it on a phone): with the boat put 10 m
+  // above its beacon, the label over the beacon would cross the hull.
+  const clear = await g.page.evaluate(async () => {
+    const w = window.game as unknown as {
+      world: { components: { Position: { x: Float64Array; y: Float64Array } } };
+      hull(): number;
+      beaconPointer(): { index: number; label: number[]; hull: number[] };
+      handles(): { beacons: Float64Array };
+    };
+    const i = w.beaconPointer().index,
+      b = w.handles().beacons;
+    w.world.components.Position.x[w.hull()] = b[2 * i]!;
+    w.world.components.Position.y[w.hull()] = b[2 * i + 1]! + 10;
+    await new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)));
+    const { label: l, hull: hb } = w.beaconPointer();
+    return l[0]! + l[2]! <= hb[0]! || hb[0]! + hb[2]! <= l[0]! || l[1]! + l[3]! <= hb[1]! || hb[1]! + hb[3]! <= l[1]!;
+  });
+  expect(clear).toBe(true);
+  // Far from its beacon the camera zooms out no further than 4 px/m on a phone (the 12 m hull 48 px long).
+  await g.page.evaluate(() => {
+    const w = window.game as unknown as { world: { components: { Position: { x: Float64Array } } }; hull(): number };
+    w.world.components.Position.x[w.hull()] = -90;
+  });
+  const far = await g.waitFor(() => {
+    const z = (window.game as unknown as { beaconPointer(): { zoom: number } }).beaconPointer().zoom;
+    return z < 4.05 ? z : null;
+  }, null);
+  expect(far).toBeGreaterThan(3.99);
+  // The beacon far ahead: the arrow's badge at the right edge keeps clear of the depth gauge (it
+  // sat over it).
+  const edge = await g.page.evaluate(() => {
+    const p = (window.game as unknown as { beaconPointer(): { angle: number; badge: number[]; gaugeLeft: number } }).beaconPointer();
+    return { angle: p.angle, right: p.badge[0]! + p.badge[2]!, gaugeLeft: p.gaugeLeft };
+  });
+  expect(Math.abs(edge.angle)).toBeLessThan(Math.PI / 2); // pointing right
+  expect(edge.right).toBeLessThan(edge.gaugeLeft);
+}
 
 /** Pauses the game (from inside the page, on the frame it happens) once a hit of `kind` is `after` s of game time old. */
 function pauseAfterHit(page: Page, kind: string, after: number): Promise<void> {
@@ -67,7 +261,7 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     await h?.close();
   });
 
-  it('a Dive moves the depth order at once and the boat stops on it when let go; a glow touched scores', async () => {
+  it('a Dive moves the depth order at once and the boat stops on it when let go; a glow touched scores; on a phone the stick floods the tanks and drives the screw as far as it is pushed', async () => {
     // The boat hovering at 30 m (tanks at neutral, holding), on a calm sea with one beacon. A full
     // Dive (S held, or a finger at the bottom of the stick) for 0.8 s of game time, then let go: the
     // page records, every frame, the hull's depth, the order and the readout. The order is below the
@@ -75,6 +269,7 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     // boat passes the order by under 0.2 m and is within 0.2 m of it 2 s after (helm.ts: measured
     // 0.00 m and 1.2 s headless from the full dive speed).
     const g = await h.openGame('submarine', { viewport, touch, query: { waves: 0, beacons: 1 } });
+    if (touch) await stickOnPhone(g);
     await g.page.evaluate(() => {
       const w = window.game as unknown as Sub & { world: { components: { Ballast: { fore: Float64Array; aft: Float64Array } } } };
       const c = w.world.components,
@@ -292,7 +487,7 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     await g.close();
   });
 
-  it('a seabed hit and a mine each say what hit the hull, at the place, shake the view and light the hull gauge', async () => {
+  it('a seabed hit and a mine each say what hit the hull, at the place, shake the view and light the hull gauge; on a phone, played again, a touch on the stick starts the boat down within 0.5 s of game time and the gauges and beacon arrow fit', async () => {
     const g = await h.openGame('submarine', { viewport, touch, query: { waves: 0 } });
     expect(await g.page.evaluate(() => (window.game as unknown as Sub).hitEffect().kind)).toBe('');
     expect(await g.page.locator('[data-hud="hull"]').textContent()).toBe('hull ▮▮▮ 3/3');
@@ -417,6 +612,15 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     expect(after.label).toBe('');
     expect(after.gaugeFlash).toBe(0);
     expect(after.shake).toBe(0);
+    // On a phone, the game played again from its start (R): the dive from a touch, the gauges and the beacon arrow.
+    if (touch) {
+      await g.page.evaluate(() => (window.game as unknown as { reset(): void }).reset());
+      await g.waitFor(() => {
+        const w = window.game as unknown as Sub;
+        return w.state.hits === 0 && !w.paused;
+      }, null);
+      await diveOnPhone(g);
+    }
     expect(g.errors).toEqual([]);
     await g.close();
   });
