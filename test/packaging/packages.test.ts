@@ -47,9 +47,20 @@ beforeAll(async () => {
     '@bitphysics/game-kit',
   ]);
   writeFileSync(join(project, 'package.json'), JSON.stringify({ name: 'consumer', private: true, type: 'module' }, null, 2));
+  // --package-lock=false: no package-lock.json nor node_modules/.package-lock.json, which nothing here
+  // reads (1.1 s less user CPU an install, measured three times back to back).
   await run(
     'npm',
-    ['install', '--no-audit', '--no-fund', '--prefer-offline', '--ignore-scripts', '--loglevel=error', ...tarballs.map((t) => t.file)],
+    [
+      'install',
+      '--no-audit',
+      '--no-fund',
+      '--prefer-offline',
+      '--ignore-scripts',
+      '--package-lock=false',
+      '--loglevel=error',
+      ...tarballs.map((t) => t.file),
+    ],
     { cwd: project },
   );
   const blocks = readmeBlocks();
