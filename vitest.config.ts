@@ -136,8 +136,7 @@ export default defineConfig({
           // The browser files share one worker process and its modules, as the headless ones do: with
           // vitest's default (a new module graph per file) every file started a worker process of its
           // own and imported vitest's runner, playwright-core and the harness afresh, one file after
-          // another on the lane (three files: 3 node processes instead of 5, 7.7 s of node CPU instead
-          // of 9.1). A file's own state (its Harness, its pages) is in its own module, still evaluated
+          // another on the lane. A file's own state (its Harness, its pages) is in its own module, still evaluated
           // once a file; the shared modules (./harness, ./page-contract, ./chromium.mjs) keep no state
           // between files, and no browser file mocks a module or stubs a global.
           isolate: false,

@@ -242,7 +242,7 @@ function buildDeclarations(dir) {
   if (!existsSync(config)) return;
   try {
     // --singleThreaded: the same output for less CPU than tsc's parallel checkers, which each resolve
-    // the shared declarations again (physics 2.0 s of CPU instead of 2.5 s; game-kit 1.3 s, not 1.7 s).
+    // the shared declarations again.
     execFileSync(process.execPath, [join(root, 'node_modules', 'typescript', 'bin', 'tsc'), '-p', config, '--singleThreaded'], {
       cwd: root,
       encoding: 'utf8',

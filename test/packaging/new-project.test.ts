@@ -39,7 +39,7 @@ beforeAll(async () => {
   // The packages as packPackages packs them (packed once for this file and packages.test.ts).
   const tarballs = await packedPackages();
   project = (await newProject(join(parent, 'tower-game'), { title: 'Tower game', tarballs })).dir;
-  // --package-lock=false: no lock files, which nothing here reads (1.1 s less user CPU an install).
+  // --package-lock=false: no lock files, which nothing here reads (less CPU an install).
   await run(
     'npm',
     ['install', '--no-audit', '--no-fund', '--prefer-offline', '--ignore-scripts', '--package-lock=false', '--loglevel=error'],
