@@ -118,15 +118,15 @@ const blasts: { x: number; y: number; time: number }[] = [];
 /** How long a blast's flash and bubbles last, s of game time. */
 const BLAST_LIFE = 1.6;
 
+/** Game time the pointer last left an uncollected beacon for another, s (its label pulses for AIM_PULSE s). */
+let aimSwitchedAt = Number.NEGATIVE_INFINITY;
+/** How long the pointer's label pulses after it switches beacon, s of game time. */
+const AIM_PULSE = 1.2;
 /**
  * What the pointer shows: the beacon it leads to (index, -1: none left), its distance (m), its
  * offset from the hull (dx, dy, m, y up), the arrow's screen angle (rad, y down; NaN while the
  * beacon is on screen and no arrow is drawn), whether the beacon is on screen, and where the label is drawn.
  */
-/** Game time the pointer last left an uncollected beacon for another, s (its label pulses for AIM_PULSE s). */
-let aimSwitchedAt = Number.NEGATIVE_INFINITY;
-/** How long the pointer's label pulses after it switches beacon, s of game time. */
-const AIM_PULSE = 1.2;
 const aim = {
   index: -1,
   distance: 0,

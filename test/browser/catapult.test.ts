@@ -4,10 +4,11 @@
  * that overshoots or falls short says by how much, with an arrow to where it went; P pauses. On a
  * phone, upright and sideways, the views and the card saying how to play fit, and touch throws.
  */
-import type { Locator, Page } from 'playwright-core';
+import type { Locator } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { LEVEL_COUNT, levelName } from '../../games/catapult/scene';
 import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
+import { touchPath } from './touch';
 
 interface Cam {
   toScreenX(x: number): number;
@@ -50,17 +51,6 @@ const screen = (x: number, y: number) =>
     },
     [x, y] as const,
   );
-
-/** A finger down at the first point, through the others, held `ms` at the last, then lifted. */
-async function touchPath(page: Page, points: Array<[number, number]>, ms: number): Promise<void> {
-  const cdp = await page.context().newCDPSession(page);
-  const at = ([x, y]: [number, number]) => [{ x, y, id: 1 }];
-  await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: at(points[0]!) });
-  for (const q of points.slice(1)) await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: at(q) });
-  await page.waitForTimeout(ms);
-  await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
-  await cdp.detach();
-}
 
 /** What the phone page's checks below read of `window.game`. */
 type PhoneGame = {

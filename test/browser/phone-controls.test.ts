@@ -10,6 +10,7 @@ import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
 import { checkLayout } from './layout-check';
+import { touchPath } from './touch';
 
 const PHONE = { viewport: { width: 390, height: 844 }, touch: true } as const;
 
@@ -17,18 +18,6 @@ const PHONE = { viewport: { width: 390, height: 844 }, touch: true } as const;
 async function hold(page: Page, name: string, ms = 400): Promise<void> {
   const box = (await page.getByRole('button', { name, exact: true }).boundingBox())!;
   await touchPath(page, [[box.x + box.width / 2, box.y + box.height / 2]], ms);
-}
-
-/** A finger down at the first point, through the others, held `ms` at the last, then lifted. */
-async function touchPath(page: Page, points: Array<[number, number]>, ms: number, during?: () => Promise<void>): Promise<void> {
-  const cdp = await page.context().newCDPSession(page);
-  const at = ([x, y]: [number, number]) => [{ x, y, id: 1 }];
-  await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: at(points[0]!) });
-  for (const p of points.slice(1)) await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: at(p) });
-  await page.waitForTimeout(ms);
-  await during?.();
-  await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
-  await cdp.detach();
 }
 
 /** A field of `window.game` read through a path of getters and calls ('state.fill', 'handles().crane.angle'). */

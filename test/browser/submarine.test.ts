@@ -11,6 +11,7 @@ import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
 import { checkLayout } from './layout-check';
+import { touchPath } from './touch';
 
 type Camera = { x: number; y: number; zoom: number; leadX: number; shake: number; width: number; height: number };
 type Hit = { kind: string; x: number; y: number; label: string; box: number[]; shake: number; gauge: string; gaugeFlash: number };
@@ -108,18 +109,6 @@ const SIZES = [
   { device: 'desktop', viewport: { width: 1280, height: 800 }, touch: false },
   { device: 'phone', viewport: { width: 390, height: 844 }, touch: true },
 ] as const;
-
-/** A finger down at the first point, through the others, held `ms` at the last, `during` run, then lifted. */
-async function touchPath(page: Page, points: Array<[number, number]>, ms: number, during?: () => Promise<void>): Promise<void> {
-  const cdp = await page.context().newCDPSession(page);
-  const at = ([x, y]: [number, number]) => [{ x, y, id: 1 }];
-  await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: at(points[0]!) });
-  for (const p of points.slice(1)) await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: at(p) });
-  await page.waitForTimeout(ms);
-  await during?.();
-  await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
-  await cdp.detach();
-}
 
 /**
  * On a phone, a calm sea (waves=0), the game at its start: a touch on the stick starts the boat down
