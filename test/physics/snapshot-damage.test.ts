@@ -49,6 +49,21 @@ function stateAt(s: WorldSnapshot, ...path: string[]): Record<string, unknown> {
   return o;
 }
 
+/** The ids alive in a snapshot: the first aliveCount of its entity index's id list (a range or a stored list). */
+function snapshotAlive(s: WorldSnapshot): Int32Array {
+  const ecs = s.header.ecs as { aliveCount: number; dense: { i: number }; lists: { $t: string; first?: number; o?: number }[] };
+  const list = ecs.lists[ecs.dense.i]!;
+  if (list.$t === 'range') return Int32Array.from({ length: ecs.aliveCount }, (_, k) => list.first! + k);
+  return new Int32Array(s.buffers[0]!, list.o!, ecs.aliveCount);
+}
+
+/** The stored values of component store `component.field` in a snapshot: a view into its buffer (writes edit it). */
+function storedArray(s: WorldSnapshot, component: string, field: string): Float64Array {
+  const e = stateAt(s, 'components', component)[field] as { $t: string; o: number; n: number; rep?: number };
+  if (e.$t !== 'Float64Array' || e.rep !== undefined) throw new Error(`${component}.${field} is not stored element by element`);
+  return new Float64Array(s.buffers[0]!, e.o, e.n);
+}
+
 describe('restore of a damaged snapshot: refused with a clear error and the world left as it was, or exact', () => {
   const STEPS = 60;
   const original = mixedScene();
@@ -185,6 +200,30 @@ describe('restore of a damaged snapshot: refused with a clear error and the worl
     expect(fingerprint(world)).toBe(own);
   });
 
+  test("a NaN or infinity in a live body's stored state is refused before anything is written", () => {
+    const world = target();
+    const own = fingerprint(world);
+    const alive = snapshotAlive(saved);
+    for (const [component, field, value] of [
+      ['Position', 'y', Number.NaN],
+      ['Velocity', 'x', Number.POSITIVE_INFINITY],
+      ['AngularVelocity', 'z', Number.NEGATIVE_INFINITY],
+    ] as const) {
+      const bad = copyOf(saved);
+      const stored = storedArray(bad, component, field);
+      // The last live body whose value is stored (values past the last non-zero one are not).
+      const body = Math.max(...[...alive].filter((e) => e < stored.length && stored[e] !== 0));
+      stored[body] = value;
+      sealSnapshot(bad);
+      expect(() => restore(world, bad)).toThrow(
+        new RegExp(
+          `^restore: snapshot's world\\.components\\.${component}\\.${field}\\[${body}\\] must be a finite number \\(entity ${body} is alive and has ${component}\\), got ${value}$`,
+        ),
+      );
+      expect(fingerprint(world)).toBe(own);
+    }
+  });
+
   test('a snapshot taken by an older version (no checksum) is refused naming the version', () => {
     const world = target();
     const old = copyOf(saved);
@@ -235,5 +274,25 @@ describe('3D: a ball body made in the slot of a removed shape body', () => {
     restore(copy, saved);
     stepMany(copy, 100);
     expect(stateHash(copy)).toBe(stateHash(a));
+  });
+
+  test("a removed body's slot is not read: a NaN left there restores, and the future is the same", () => {
+    // Removal leaves a slot's data as it was (bitecs), so a world can hold anything there; only live
+    // bodies' state must be finite. The reference is the world the snapshot came from.
+    const world = createPhysicsWorld({ dimensions: 3, capacity: 16, gravity: [0, -9.81, 0] });
+    const bodies = [0, 1, 2].map((i) => addBody(world, { position: [i, 2, 0], radius: 0.3 }));
+    stepMany(world, 3);
+    removeBody(world, bodies[1]!);
+    const saved = snapshot(world);
+    const slot = 2; // bodies[1]'s id: ids start at 1
+    const x = storedArray(saved, 'Position', 'x');
+    expect(x.length).toBeGreaterThan(slot);
+    x[slot] = Number.NaN;
+    sealSnapshot(saved);
+    const copy = createPhysicsWorld({ dimensions: 3, capacity: 16, gravity: [0, -9.81, 0] });
+    restore(copy, saved);
+    stepMany(copy, 10);
+    stepMany(world, 10);
+    expect(stateHash(copy)).toBe(stateHash(world));
   });
 });

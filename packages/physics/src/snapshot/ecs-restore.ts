@@ -23,8 +23,8 @@ import type { Encoded } from './format.js';
 import { isTagged, type Reader } from './reader.js';
 import { sameFrom1Native, zeroFill } from './typed-arrays.js';
 
-/** Reads an id list encoded by IdLists. */
-function idList(e: Encoded, lists: readonly Int32Array[], path: string): Int32Array {
+/** Reads an id list encoded by IdLists. @throws RangeError `restore: snapshot's <path> is damaged`. */
+export function idList(e: Encoded, lists: readonly Int32Array[], path: string): Int32Array {
   const t = isTagged(e) ? e.$t : undefined;
   if (t === 'ids') return new Int32Array(0);
   const list = t === 'same' ? lists[(e as Record<string, Encoded>).i as number] : undefined;

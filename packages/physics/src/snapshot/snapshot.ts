@@ -9,6 +9,7 @@ import { shareStores } from '../threads/shared-stores.js';
 import { describe } from '../validation/validate.js';
 import { externalWorldStates } from '../world/external-state.js';
 import type { PhysicsWorld } from '../world/options.js';
+import { checkBodyStateFinite } from './body-state-check.js';
 import { checkSnapshotValues } from './checks.js';
 import { snapshotChecksum } from './checksum.js';
 import { captureEcs, internals } from './ecs-capture.js';
@@ -98,7 +99,7 @@ export function sealSnapshot(snap: WorldSnapshot): void {
  * Restore is all or nothing: it checks the snapshot first (format and version, the world's
  * dimensions and capacity, the checksum of the header and buffer, every encoded array's type, offset
  * and length, every scalar against the rules of snapshot/checks.ts, the entity ids against the
- * capacity) by a dry run of the whole restore, and writes only when all of it passed. A refused
+ * capacity, every live body's state finite: snapshot/body-state-check.ts) by a dry run of the whole restore, and writes only when all of it passed. A refused
  * snapshot leaves the world exactly as it was.
  *
  * Threads: the world keeps its own thread count and worker pool (they are not state: see NOT_STATE),
@@ -173,6 +174,7 @@ export function restore(world: PhysicsWorld, snap: WorldSnapshot): void {
     else r.objectInto(target as Record<string, unknown>, enc.v as Record<string, Encoded>, ext.name, new Set(ext.keep ?? []));
   }
   checkEcs(world, h.ecs, r);
+  checkBodyStateFinite(world, h.state, h.ecs as Record<string, Encoded>, r);
   r.dry = false;
   // Stamp counters (see STAMPED): the world's own, before the snapshot's are written.
   const counters = [...STAMPED.values()].map(({ parent, counter }) => parent(world)[counter]);
