@@ -122,30 +122,33 @@ export function warmUp(dimensions: 2 | 3 = 2, options: WarmUpOptions = {}): bool
   return scene || pile;
 }
 
-/** The warm-up scene of `dimensions`, stepped, then a fresh copy of it (see warmUp). */
+/** In 2D a resting pyramid first, then the warm-up scene of `dimensions`, stepped, then a fresh copy of it (see warmUp). */
 function warmScene(dimensions: 2 | 3): void {
   warmed.add(dimensions);
-  const world = warmUpScene(dimensions);
-  for (let i = 0; i < WARM_UP_STEPS; i++) step(world);
-  // V8 gives a function the vector where it records the types its operations meet (type feedback)
-  // only after the function has run a few times, so what a world runs only in its first step (its
-  // buffers grown from empty, every contact new) ran in the scene above before anything was
-  // recorded, and the code compiled from its later steps lacks those paths: a program's own world
-  // then threw that code away in its first step (11 functions recompiled, a pyramid's steps 0 to 3
-  // each several times its compiled cost). A second world of the scene runs those paths again,
-  // recorded this time.
-  const fresh = warmUpScene(dimensions);
-  for (let i = 0; i < FRESH_STEPS; i++) step(fresh);
-  // A world's first sleep, which the scene above does not reach in its steps: an island put to sleep
-  // (the sleep system's last branch, a component added to each of its bodies) and the sleeping steps
-  // after it. Cold, a pyramid of 820 boxes spent 28 to 32 ms of CPU in the step it fell asleep (its
-  // bodies' tags added in 39 to 49 ms of wall time on a loaded machine); after a small pile slept
-  // first, 17 ms (3 to 8 ms).
+  // A world's first sleep, which the scene below does not reach until late in its steps: an island
+  // put to sleep (the sleep system's last branch, a component added to each of its bodies) and the
+  // sleeping steps after it. It runs first, while the stages are still interpreted and record the
+  // types they meet (type feedback): code compiled before a branch has run leaves that branch out,
+  // and the first time it runs the compiled code is thrown away. Run after the scene, the sleep threw
+  // away the compiled sleep system and force clearing, which were compiled again only in a program's
+  // own first steps (on a background thread, while its first steps ran the slower code). Cold, a
+  // pyramid of 820 boxes spent 28 to 32 ms of CPU in the step it fell asleep; after a small pile
+  // slept first, 17 ms.
   if (dimensions === 2) {
     const resting = restingPyramid();
     for (let i = 0; i < REST_STEPS && resting.collision.stats.sleeping === 0; i++) step(resting);
     step(resting);
   }
+  const world = warmUpScene(dimensions);
+  for (let i = 0; i < WARM_UP_STEPS; i++) step(world);
+  // V8 gives a function the vector where it records its type feedback only after the function has
+  // run a few times, so what a world runs only in its first step (its buffers grown from empty, every
+  // contact new) ran in the scene above before anything was recorded, and the code compiled from its
+  // later steps lacks those paths: a program's own world then threw that code away in its first step
+  // (11 functions recompiled, a pyramid's steps 0 to 3 each several times its compiled cost). A
+  // second world of the scene runs those paths again, recorded this time.
+  const fresh = warmUpScene(dimensions);
+  for (let i = 0; i < FRESH_STEPS; i++) step(fresh);
 }
 
 /** The ball pile of `warmUp(d, { balls: true })`, stepped PILE_STEPS times. */
@@ -206,7 +209,7 @@ export function warmUpScene(dimensions: 2 | 3): PhysicsWorld {
   return world;
 }
 
-/** 2D: a pyramid of 136 boxes, 16 balls, a disc, a fast stone, welded boxes a weight breaks, a hinged chain and a pinned joint grid, in a walled box. */
+/** 2D: a pyramid of 136 boxes, 16 balls, a disc, a fast stone and a fast small box, welded boxes a weight breaks, a hinged chain and a pinned joint grid, in a walled box. */
 function build2D(world: PhysicsWorld): void {
   // Walls with a fractional restitution, as most scenes give theirs: the field then holds a double
   // from here on, and a program's own setBoundary does not change its representation (from a small
@@ -226,6 +229,9 @@ function build2D(world: PhysicsWorld): void {
   addShape(world, addBody(world, { position: [-2, 3] }), { type: 'circle', radius: 0.4, density: 1 });
   // A stone thrown into the pyramid's side: a contact with restitution closing fast (the impact stage).
   addBody(world, { position: [-18, 3], velocity: [25, 2], radius: 0.3, mass: 3, restitution: 0.3, friction: 0.6 });
+  // A small box moving farther than its size each step, from the first step on: the continuous
+  // collision of shapes (collision/continuous-2d.ts), whose sweep a settling pile reaches only late.
+  addBox(world, { position: [-18, 8], velocity: [40, 0], halfExtents: [0.1, 0.1], density: 5, friction: 0.3 });
   buildJoints2D(world);
 }
 

@@ -276,7 +276,9 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean,
     massRigid = sr[1]!,
     impulseRigid = sr[2]!;
   const invH = 1 / hs,
-    push = cs.settings.contactPushSpeed;
+    // The push-out speed cap as a lower bound of the bias, negated once here: a negation inside the
+    // branches (first reached when a point overlaps) would leave compiled code without feedback for it.
+    minBias = -cs.settings.contactPushSpeed;
   for (let i = 0, n = Math.min(cs.shapes.manifolds.count, MAX_MANIFOLDS); i < n; i++) {
     const r = i * MR_STRIDE;
     const ia = R[r + MR_BODY_A]! & MR_BODY_MASK,
@@ -328,14 +330,14 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean,
     if (s1 > 0) b1 = s1 * invH;
     else if (useBias) {
       b1 = biasRate * s1;
-      if (b1 < -push) b1 = -push;
+      if (b1 < minBias) b1 = minBias;
       m1 = softMass;
       i1 = softImpulse;
     }
     if (s2 > 0) b2 = s2 * invH;
     else if (useBias) {
       b2 = biasRate * s2;
-      if (b2 < -push) b2 = -push;
+      if (b2 < minBias) b2 = minBias;
       m2 = softMass;
       i2 = softImpulse;
     }
