@@ -88,11 +88,11 @@ const warmed = new Set<number | string>();
 const REST_STEPS = 60;
 
 /**
- * Warms the physics code of `dimensions` up once a program: builds a small scene of that dimension
- * (boxes on a ground, a pile of balls, a disc or sphere, joints of the common kinds), steps it
+ * Warms the physics code of `dimensions` up once a program: in 2D first steps a pyramid of 36 boxes
+ * until it falls asleep (a world's first sleep), then builds a small scene of that dimension (boxes
+ * on a ground, a pile of balls, a disc or sphere, joints of the common kinds), steps it
  * WARM_UP_STEPS (40) times, then a second copy of it 3 times (the paths only a world's first steps
- * run), in 2D then a pyramid of 36 boxes until it falls asleep (a world's first sleep), and throws
- * them away, so that a large scene's first steps afterwards run
+ * run), and throws them away, so that a large scene's first steps afterwards run
  * compiled code (see the top of warm-up.ts). Call it where a pause is expected, such as while a game
  * loads its first level: it takes about 0.3 to 0.5 s of main-thread time, and a pyramid of 820 boxes'
  * first four steps then take about 70 ms of CPU instead of about 450 (the first one 35 instead of
