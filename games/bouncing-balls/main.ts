@@ -987,6 +987,13 @@ function drawCourt(): void {
   court.rect(x0 - w, y0 - w, w, y1 - y0 + w + floor).fill(0x3a4252);
   court.rect(x1, y0 - w, w, y1 - y0 + w + floor).fill(0x3a4252);
   court.rect(x0, y0, x1 - x0, 2).fill(0x5b6577);
+  // The stand under the floor, down to the canvas' bottom: on a tall page (anchorCourt) the spare height
+  // under the box read as an empty strip of page; here it is the steel base the court stands on.
+  const base = y1 + floor;
+  if (cam.height > base + 1) {
+    court.rect(x0 - w, base, x1 - x0 + 2 * w, cam.height - base).fill(0x262c37);
+    court.rect(x0 - w, base, x1 - x0 + 2 * w, 3).fill(0x5b6577);
+  }
   // The ramps: wooden beams with a lighter top edge, round ends.
   for (const [ax, ay, bx, by] of segments) {
     const width = Math.max(6, cam.toScreenLength(2 * SEGMENT_RADIUS + 0.06));

@@ -246,10 +246,11 @@ const game = await startThreeGame({
   createWorld,
   step: gameStep,
   bodies: () => handles.pieces.length,
+  // The one move a level needs first (the scene's hint says it too), then the crane's own controls.
   controls: [
+    { keys: 'Drag a target', action: 'aim back, let go to swing', touch: 'Drag a target' },
     { keys: 'A D / ← →', action: 'slew the jib', touch: '⟲ ⟳' },
     { keys: 'W S / ↑ ↓', action: 'trolley out / in', touch: 'Out / In' },
-    { keys: 'Drag a target', action: 'aim back, let go to swing', touch: 'Drag a target' },
     { keys: 'Space', action: 'hold to steady the ball', touch: 'Steady' },
     { keys: 'Q E', action: 'hook up / down', touch: 'Up / Down' },
     { keys: 'Click ground', action: 'send the hook there' },

@@ -15,6 +15,7 @@
 import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, beforeEach, describe, expect, it } from 'vitest';
 import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
+import { decodePng } from './png';
 
 /** The extras bouncing-balls puts on window.game (see games/bouncing-balls/main.ts). */
 interface BallsGame {
@@ -547,6 +548,22 @@ describe('bouncing balls: the hoop game', () => {
     const card = (await g.page.locator('[data-hud="touch-hint"]').boundingBox())!;
     expect(card.y).toBeGreaterThanOrEqual(top.y - 1);
     expect(card.y + card.height).toBeLessThan((await g.worldToPage(0, 12)).y);
+    // The spare height under the floor is the court's steel stand (0x262c37), not bare page: a row
+    // 6 px above the canvas' bottom, across the middle, is that colour within 3 per channel.
+    const canvas = await g.canvasBox();
+    expect(canvas.y + canvas.height - (await g.worldToPage(0, 0)).y).toBeGreaterThan(60);
+    const strip = decodePng(
+      await g.page.screenshot({
+        clip: { x: canvas.x + canvas.width / 4, y: canvas.y + canvas.height - 6, width: canvas.width / 2, height: 1 },
+      }),
+    );
+    for (let i = 0; i < strip.width; i += 8) {
+      const px = Array.from(strip.data.subarray(i * strip.channels, i * strip.channels + 3));
+      expect(
+        px.map((c, k) => Math.abs(c - [0x26, 0x2c, 0x37][k]!)).every((d) => d <= 3),
+        `pixel ${i}: ${px}`,
+      ).toBe(true);
+    }
     // A tap drops a ball and leaves the clock waiting for the first throw.
     const tap = await g.worldToPage(5, 13);
     await g.page.touchscreen.tap(tap.x, tap.y);

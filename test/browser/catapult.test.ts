@@ -500,6 +500,8 @@ describe('catapult', () => {
     expect(state).toMatchObject({ fallen: 0, stars: 0, level: 1 });
     expect(state.verdict).toMatch(/^Short by [6-8] m: pull further back$/);
     const again = g.page.getByRole('button', { name: /Try again/ });
+    // Its tooltip says the same as its label (it was created as 'Next level ▶').
+    expect(await again.getAttribute('title')).toBe('Try again ↺');
     await again.click();
     await g.waitFor(() => !(window.game as unknown as CatapultGame).levelEnded(), null);
     expect(await g.page.evaluate(() => (window.game as unknown as CatapultGame).params.level)).toBe(1);

@@ -307,8 +307,10 @@ export function createActionButton(
   if (at === 'top') bar.element.classList.add('bp-at-top');
   bar.element.remove();
   return (visible, text) => {
+    // The tooltip (title) follows the label too: a 'Try again' button hovered must not say 'Next level'.
     if (text !== undefined && b.textContent !== text) {
       b.textContent = text;
+      b.title = text;
       b.setAttribute('aria-label', text);
     }
     // Out of the page while hidden.
