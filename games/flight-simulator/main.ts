@@ -771,7 +771,7 @@ const RING_OUTER = (RING_RADIUS + 12 + 2.5) * 1.06;
  * tipping its wings (banking), so ring 2's tip says so.
  */
 const tip = overlay(
-  `left: 50%; top: ${compact ? 11 : 12}%; width: max-content; max-width: min(92%, 560px); box-sizing: border-box; padding: 5px 14px; border-radius: 12px; background: rgba(8, 12, 20, 0.8); color: #eef3f8; font: 600 ${compact ? 14 : 16}px/1.35 system-ui, sans-serif; text-align: center; display: none;`,
+  `left: 50%; width: max-content; max-width: min(92%, 560px); box-sizing: border-box; padding: 5px 14px; border-radius: 12px; background: rgba(8, 12, 20, 0.8); color: #eef3f8; font: 600 ${compact ? 14 : 16}px/1.35 system-ui, sans-serif; text-align: center; display: none;`,
 );
 tip.dataset.hud = 'tip';
 /** Whether the page is used by touch first (a phone): the tips name the stick, not the keys. */
@@ -786,6 +786,15 @@ let tipText = '';
 let tipRing = -1,
   tipSide = 1,
   tipUp = 1;
+/**
+ * Whether the tip has moved to the scene's bottom for ring `tipRing`: it does when the ring on the
+ * screen runs under it (a ring above the aircraft sat behind the tip box), and stays there until the
+ * next lesson ring, so it does not jump back and forth as the ring moves.
+ */
+let tipLow = false;
+/** Where the tip sits, % of the scene's height from its top: over the sky, or low while `tipLow`. */
+const TIP_TOP = compact ? 11 : 12,
+  TIP_LOW = compact ? 90 : 91;
 
 /** The tip for the next ring now, or '' (none after the lessons, or once the flight is over). */
 function lessonTip(): string {
@@ -796,6 +805,7 @@ function lessonTip(): string {
   }
   const ring = rings[i]!;
   if (tipRing !== i) {
+    tipLow = false;
     // Right of the heading is (-vz, 0, vx) (y up).
     const V = shell.world.components.Velocity,
       e = handles.body;
@@ -818,13 +828,39 @@ function lessonTip(): string {
   return `Ring 4 is to the ${side}: tip the wings ${side} (${touchFirst ? stickSide : key}) to turn, then let go.`;
 }
 
-function showTip(): void {
+/**
+ * Shows the lesson tip for the next ring, if any; with `placed` (the ring's place on the screen,
+ * `ringAim`, is this frame's) it moves the tip low when the ring runs under it.
+ */
+function showTip(placed = true): void {
   const text = lessonTip();
   if (text !== tipText) {
     tipText = text;
     tip.textContent = text;
     tip.style.display = text ? 'block' : 'none';
   }
+  if (placed && text && !tipLow && ringAim.inView && ringCoversTip()) {
+    tipLow = true;
+    // On a phone the kit's card of touch gestures (game-kit hud.ts showTouchHint) may still be up
+    // over the scene's bottom for a few seconds: it goes now, as it does at a touch on the scene;
+    // the tip says what to do with the stick for this ring.
+    layout.stage.querySelector('.bp-touch-hint')?.classList.add('bp-gone');
+  }
+  // The cockpit's instrument panel covers the scene's bottom: there the tip stays on top.
+  const top = `${tipLow && state.camera !== 'cockpit' ? TIP_LOW : TIP_TOP}%`;
+  if (tip.style.top !== top) tip.style.top = top;
+}
+
+/** Whether the next ring's circle on the screen (`ringAim.ring`, halo included) reaches into the tip's box. */
+function ringCoversTip(): boolean {
+  const stage = layout.stage.getBoundingClientRect(),
+    box = tip.getBoundingClientRect();
+  const [cx, cy, r] = ringAim.ring as [number, number, number];
+  const x0 = box.left - stage.left,
+    y0 = box.top - stage.top;
+  const dx = Math.max(x0 - cx, 0, cx - (x0 + box.width)),
+    dy = Math.max(y0 - cy, 0, cy - (y0 + box.height));
+  return Math.hypot(dx, dy) < r;
 }
 
 // ---- The flight-path marker: where the aircraft is going, at the next ring's distance ------------
@@ -913,6 +949,16 @@ let readoutFrame = 0;
 
 function frame(): void {
   const world = shell.world;
+  // Everything here is what the frame shows: the camera, the labels and tips over the scene, the
+  // HUD. The frame pacer skips drawing while the GPU is behind (often several frames in a row on a
+  // software GPU); the HTML labels placed for a frame the canvas never showed sat 100 px and more
+  // from their ring. So a frame that will not be drawn changes nothing but the banner and the tip's
+  // words (a ring's pass or miss, and what the next ring asks, are said at once).
+  if (!app.pacer.mayDraw()) {
+    updateBanner(world.time);
+    showTip(false);
+    return;
+  }
   if (!renderer.drawnPosition(handles.body, p3) || !renderer.drawnOrientation(handles.body, q4)) return;
   at.set(p3[0]!, p3[1]!, p3[2]!);
   drawnQ.set(q4[0]!, q4[1]!, q4[2]!, q4[3]!);

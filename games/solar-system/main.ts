@@ -1053,16 +1053,19 @@ const v = new Vector3();
 const dirV = new Vector3();
 const scratch3 = [0, 0, 0];
 
-/** Projects scene point (x, y, z) into onScreen entry `i` and shows or hides its dot. */
+/** Per label (LABELS order): whether its dot shows (1) or not (0) in the frame being made. */
+const dotShown = new Uint8Array(LABELS.length);
+/** Per label (LABELS order): left and top of its name (px) in the frame being made, NaN when hidden. */
+const labelAt = new Float64Array(2 * LABELS.length);
+
+/** Projects scene point (x, y, z) into onScreen entry `i` and works out whether its dot shows (`dotShown`). */
 function project(i: number, name: LabelName, x: number, y: number, z: number, radius: number, show: boolean): void {
   const w = app.canvas.clientWidth,
     h = app.canvas.clientHeight;
   onScreen[4 * i + 3] = 0;
-  const { el: dot, size: dotSize } = dots[name];
-  if (!show) {
-    dot.style.display = 'none';
-    return;
-  }
+  const dotSize = dots[name].size;
+  dotShown[i] = 0;
+  if (!show) return;
   v.set(x, y, z);
   const distance = v.distanceTo(app.camera.position);
   v.project(app.camera);
@@ -1071,12 +1074,7 @@ function project(i: number, name: LabelName, x: number, y: number, z: number, ra
     sy = ((1 - v.y) / 2) * h;
   // Radius the body is drawn with, px (perspective: h / 2 px span tan(fov / 2) x distance).
   const drawnPx = (radius * h) / (2 * distance * Math.tan((app.camera.fov * Math.PI) / 360));
-  const showDot = visible && drawnPx < dotSize / 2;
-  dot.style.display = showDot ? 'block' : 'none';
-  if (showDot) {
-    dot.style.left = `${sx}px`;
-    dot.style.top = `${sy}px`;
-  }
+  dotShown[i] = visible && drawnPx < dotSize / 2 ? 1 : 0;
   onScreen[4 * i] = sx;
   onScreen[4 * i + 1] = sy;
   onScreen[4 * i + 2] = drawnPx;
@@ -1123,14 +1121,34 @@ function placeLabels(): void {
         free = x0 >= 0 && x0 + width <= w && labelFree(x0, y0, x0 + width, y0 + LABEL_HEIGHT, i);
       }
     }
-    el.style.display = free ? 'block' : 'none';
-    if (free) {
-      el.style.left = `${x0}px`;
-      el.style.top = `${y0}px`;
-      placed.push(x0, y0, x0 + width, y0 + LABEL_HEIGHT);
-    }
+    labelAt[2 * i] = free ? x0 : Number.NaN;
+    labelAt[2 * i + 1] = y0;
+    if (free) placed.push(x0, y0, x0 + width, y0 + LABEL_HEIGHT);
   }
   shownLabels = placed.length / 4;
+}
+
+/** `onScreen` as of the last frame drawn (what `showOverlay` showed). */
+const shownOnScreen = new Float64Array(4 * LABELS.length);
+
+/** Moves the dots and names to where `project` and `placeLabels` put them this frame. */
+function showOverlay(): void {
+  shownOnScreen.set(onScreen);
+  LABELS.forEach((name, i) => {
+    const dot = dots[name].el;
+    dot.style.display = dotShown[i] === 1 ? 'block' : 'none';
+    if (dotShown[i] === 1) {
+      dot.style.left = `${onScreen[4 * i]}px`;
+      dot.style.top = `${onScreen[4 * i + 1]}px`;
+    }
+    const el = labels[name];
+    const x0 = labelAt[2 * i]!;
+    el.style.display = Number.isNaN(x0) ? 'none' : 'block';
+    if (!Number.isNaN(x0)) {
+      el.style.left = `${x0}px`;
+      el.style.top = `${labelAt[2 * i + 1]}px`;
+    }
+  });
 }
 
 // ---- Each frame -------------------------------------------------------------------------------------
@@ -1172,6 +1190,15 @@ function frame(): void {
   }
   drawLaunch(world);
   placeLabels();
+  // The dots and names are HTML over the canvas: they move only when this frame's scene is drawn.
+  // The frame pacer skips drawing while the GPU is behind (a slow or software GPU, often several
+  // frames in a row); names moved on then sat tens of pixels from the planets the canvas still
+  // showed. The shell draws right after this function returns, and a microtask runs after that,
+  // before the page is painted.
+  const drawnBefore = app.pacer.drawn;
+  queueMicrotask(() => {
+    if (app.pacer.drawn > drawnBefore) showOverlay();
+  });
   updateStatus();
   if (tableFrame++ % 15 === 0 && table.open) updateTable();
 }
@@ -1781,19 +1808,19 @@ shell.expose({
   /** Labels the last frame showed (overlapping ones hidden). */
   shownLabels: (): number => shownLabels,
   /**
-   * What the last frame showed of each body and the probe, by name: its place on the canvas (px),
-   * its drawn radius (px), whether its dot shows and whether it is on screen.
+   * What the last frame drawn showed of each body and the probe, by name: its place on the canvas
+   * (px), its drawn radius (px), whether its dot shows and whether it is on screen.
    */
   markers: (): Record<string, { x: number; y: number; radius: number; dot: boolean; visible: boolean }> =>
     Object.fromEntries(
       LABELS.map((name, i) => [
         name,
         {
-          x: onScreen[4 * i]!,
-          y: onScreen[4 * i + 1]!,
-          radius: onScreen[4 * i + 2]!,
+          x: shownOnScreen[4 * i]!,
+          y: shownOnScreen[4 * i + 1]!,
+          radius: shownOnScreen[4 * i + 2]!,
           dot: dots[name].el.style.display !== 'none',
-          visible: onScreen[4 * i + 3] === 1,
+          visible: shownOnScreen[4 * i + 3] === 1,
         },
       ]),
     ),

@@ -153,8 +153,10 @@ describe('projects', () => {
     await g.waitFor(() => (window.game as unknown as Solar).planetsInView().length === 8, null);
     // Every body shows as a dot at least 6 px wide or is drawn at least 3 px in radius (the exaggerated
     // spheres of the small planets are a pixel or two at this scale), and every name shows beside its
-    // body, no two labels' boxes intersecting.
-    await g.frames(2);
+    // body, no two labels' boxes intersecting. The labels move only in frames that are drawn (the
+    // frame pacer skips some while the GPU is behind): wait for two.
+    const drawn = await g.page.evaluate(() => (window.game as unknown as { pacer: { drawn: number } }).pacer.drawn);
+    await g.waitFor((d) => (window.game as unknown as { pacer: { drawn: number } }).pacer.drawn >= d + 2, drawn);
     type Marker = { x: number; y: number; radius: number; dot: boolean; visible: boolean };
     const report = await g.page.evaluate(() => {
       const markers = (window.game as unknown as { markers(): Record<string, Marker> }).markers();
