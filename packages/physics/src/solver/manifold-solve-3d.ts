@@ -525,6 +525,9 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
   }
 }
 
+/** applyManifold3DRestitution's scratch: the manifolds with a bouncing point, in order. */
+let restitutionList = new Int32Array(0);
+
 /**
  * Restitution after the substeps: points that approached faster than the threshold and carried impulse
  * leave at >= e times that speed. (Written out in place: a call passing or returning doubles boxes each one.)
@@ -544,8 +547,16 @@ export function applyManifold3DRestitution(world: PhysicsWorld): void {
     MAX = buf.maxLn,
     LN = buf.ln,
     MN = buf.mn;
+  // Which points bounce (approach past the threshold, impulse carried) does not change from pass to
+  // pass: the first pass visits every manifold and lists those with such a point, the others only those
+  // (in the same order, so the same impulses; a settled pile's thousands of manifolds are read once).
+  if (restitutionList.length < buf.count) restitutionList = new Int32Array(2 * buf.count);
+  const list = restitutionList;
+  let listed = 0;
   for (let pass = 0; pass < 4; pass++) {
-    for (let i = 0; i < buf.count; i++) {
+    const all = pass === 0;
+    for (let r = 0, count = all ? buf.count : listed; r < count; r++) {
+      const i = all ? r : list[r]!;
       const e = buf.restitution[i]!;
       if (e === 0) continue;
       const ka = buf.ia[i]!,
@@ -559,9 +570,11 @@ export function applyManifold3DRestitution(world: PhysicsWorld): void {
       const nx = buf.nx[i]!,
         ny = buf.ny[i]!,
         nz = buf.nz[i]!;
+      let bounces = false;
       for (let k = 0, m = buf.points[i]!; k < m; k++) {
         const q = 4 * i + k;
         if (VN0[q]! > -threshold || MAX[q] === 0) continue;
+        bounces = true;
         const o = JAC_STRIDE * q;
         const vn =
           (sb[b + BS3_VX]! - sb[a + BS3_VX]!) * nx +
@@ -614,6 +627,8 @@ export function applyManifold3DRestitution(world: PhysicsWorld): void {
           sb[b + BS3_PUSHED] = 1;
         }
       }
+      if (all && bounces) list[listed++] = i;
     }
+    if (listed === 0) break;
   }
 }
