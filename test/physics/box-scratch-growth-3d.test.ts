@@ -23,5 +23,8 @@ describe('3D collide stage: the first step of many boxes', () => {
     const c = world.components,
       gh = 10 * world.dt;
     for (const b of boxes) expect(Math.abs(c.Velocity.y[b]!)).toBeLessThan(0.01 * gh);
+    // The count is the step's, not a running sum (with no balls in the world, nothing else resets it).
+    step(world);
+    expect(world.collision.stats.contacts).toBe(4 * boxes.length);
   });
 });

@@ -179,6 +179,12 @@ export interface Contact3DState {
    */
   frictionJacobians: Float32Array;
   frictionInv: Float32Array;
+  /**
+   * Per row of `current` (solver/manifold-layout-3d.ts HEAD_STRIDE numbers each): the numbers of the row
+   * the solve reads every pass (normal, tangent, friction, effective masses, the speculative skip's
+   * bounds, isotropic inverse inertias), copied there by prepareManifolds3D. Rebuilt every step.
+   */
+  solveHead: Float64Array;
   /** 0 or 1, flipped at every biased solve pass: the order the points of a manifold are solved in (solver/manifold-rows-3d.ts). */
   solveParity: number;
   /** Per solver body: its rotation owed at the start of the solve (the linearised rotation is measured from it). */
@@ -338,6 +344,7 @@ export function contact3DStateOf(world: PhysicsWorld, create = false): Contact3D
       jacobiansInv: new Float32Array(0),
       frictionJacobians: new Float32Array(0),
       frictionInv: new Float32Array(0),
+      solveHead: new Float64Array(0),
     };
     // Swapped every step (collision/shapes-3d.ts): swapped twice here so V8 does not treat them as
     // constant and drop the optimised code at the first swap (see createShapeCollisionState).

@@ -67,10 +67,14 @@ export function shape3DCollisionSystem(world: PhysicsWorld): void {
     for (let i = 0; i < wakes.count; i++) woken += wakeIsland3D(world, wakes.list[i]!);
     if (woken === 0) break;
   }
-  // The contact count of the step's statistics includes the 3D shape contact points (solver rows).
+  // The contact count of the step's statistics includes the 3D shape contact points (solver rows): added
+  // to the ball contacts when the balls' narrowphase ran this step (it sets the count, earlier in the
+  // collide stage), else the count is this pass's alone (adding to last step's summed every step's).
   let points = 0;
   for (let i = 0, b = st.current; i < b.count; i++) points += b.points[i]!;
-  world.collision.stats.contacts += points;
+  const stats = world.collision.stats,
+    balls = world.builtins.get('narrowphase');
+  stats.contacts = (balls !== undefined && world.stages.collide.includes(balls) ? stats.contacts : 0) + points;
   sensorEvents(world, st);
 }
 

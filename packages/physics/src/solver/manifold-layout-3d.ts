@@ -5,7 +5,8 @@
  * a row of angular parts along a direction u: body A's (ROW_AX ..) then body B's (ROW_BX ..); in
  * `jacobians` and `frictionJacobians` the crosses r x u (m), in `jacobiansInv` and `frictionInv` their
  * products with the world inverse inertia tensor, I^-1 (r x u) (1/(kg m)), kept only for a manifold
- * whose bodies are not isotropic (a pile of cubes streams the crosses alone).
+ * whose bodies are not isotropic (a pile of cubes streams the crosses alone). `solveHead` holds each
+ * manifold's own numbers (HEAD_*), so a pass reads one run of memory a manifold, not a dozen columns.
  *
  * A module of numeric constants only, which every build folds into the code that reads it
  * (scripts/build.mjs isConstantModule).
@@ -39,3 +40,40 @@ export const FRICTION_TWIST = 12;
 export const FRICTION_STRIDE = 12;
 /** Numbers a manifold keeps in frictionInv (the t1, t2 and twist rows). */
 export const FRICTION_INV_STRIDE = 18;
+
+// A manifold's head in `solveHead` (at HEAD_STRIDE i): the numbers the solve reads once per manifold and
+// pass, side by side (copied from the manifold buffer's columns by prepareManifolds3D).
+/** The normal n, x (unit). */
+export const HEAD_NX = 0;
+/** n, y. */
+export const HEAD_NY = 1;
+/** n, z. */
+export const HEAD_NZ = 2;
+/** The first tangent t1, x (unit). */
+export const HEAD_T1X = 3;
+/** t1, y. */
+export const HEAD_T1Y = 4;
+/** t1, z. */
+export const HEAD_T1Z = 5;
+/** Friction coefficient. */
+export const HEAD_MU = 6;
+/** Twist arm, m. */
+export const HEAD_ARM = 7;
+/** Effective mass of the t1 row, kg. */
+export const HEAD_MT1 = 8;
+/** Effective mass of the t2 row, kg. */
+export const HEAD_MT2 = 9;
+/** Effective mass of the twist row, kg m^2. */
+export const HEAD_MTW = 10;
+/** Smallest separation of the points at the step's start, m (the speculative skip). */
+export const HEAD_MIN_SEP = 11;
+/** Body A's reach from its centre to the points, m (padded). */
+export const HEAD_REACH_A = 12;
+/** Body B's reach, m. */
+export const HEAD_REACH_B = 13;
+/** Body A's scalar inverse inertia when both bodies are isotropic, else 0, 1/(kg m^2). */
+export const HEAD_INV_IA = 14;
+/** Body B's, as HEAD_INV_IA. */
+export const HEAD_INV_IB = 15;
+/** Numbers a manifold keeps in solveHead. */
+export const HEAD_STRIDE = 16;

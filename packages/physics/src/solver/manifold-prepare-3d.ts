@@ -31,6 +31,23 @@ import {
   FRICTION_T1,
   FRICTION_T2,
   FRICTION_TWIST,
+  HEAD_ARM,
+  HEAD_INV_IA,
+  HEAD_INV_IB,
+  HEAD_MIN_SEP,
+  HEAD_MT1,
+  HEAD_MT2,
+  HEAD_MTW,
+  HEAD_MU,
+  HEAD_NX,
+  HEAD_NY,
+  HEAD_NZ,
+  HEAD_REACH_A,
+  HEAD_REACH_B,
+  HEAD_STRIDE,
+  HEAD_T1X,
+  HEAD_T1Y,
+  HEAD_T1Z,
   JAC_STRIDE,
   ROW_AX,
   ROW_AY,
@@ -90,6 +107,7 @@ export function prepareManifolds3D(world: PhysicsWorld): void {
     st.jacobiansInv = new Float32Array(JAC_STRIDE * 4 * rows);
     st.frictionJacobians = new Float32Array(FRICTION_STRIDE * rows);
     st.frictionInv = new Float32Array(FRICTION_INV_STRIDE * rows);
+    st.solveHead = new Float64Array(HEAD_STRIDE * rows);
   }
   const J = st.jacobians,
     JI = st.jacobiansInv;
@@ -177,7 +195,32 @@ export function prepareManifolds3D(world: PhysicsWorld): void {
     buf.reachA[i] = Math.sqrt(reachA) * (1 + 1e-5) + 1e-9;
     buf.reachB[i] = Math.sqrt(reachB) * (1 + 1e-5) + 1e-9;
     prepareFriction3D(st, i, iso, mA, mB, ta, tb);
+    writeHead(st, i, iso, ta, tb);
   }
+}
+
+/** Manifold i's head in st.solveHead (HEAD_*), from its columns once they are all written; ta, tb its bodies' rows of st.invInertia. */
+function writeHead(st: Contact3DState, i: number, iso: boolean, ta: number, tb: number): void {
+  const buf = st.current,
+    H = st.solveHead,
+    T = st.invInertia,
+    h = HEAD_STRIDE * i;
+  H[h + HEAD_NX] = buf.nx[i]!;
+  H[h + HEAD_NY] = buf.ny[i]!;
+  H[h + HEAD_NZ] = buf.nz[i]!;
+  H[h + HEAD_T1X] = buf.t1x[i]!;
+  H[h + HEAD_T1Y] = buf.t1y[i]!;
+  H[h + HEAD_T1Z] = buf.t1z[i]!;
+  H[h + HEAD_MU] = buf.friction[i]!;
+  H[h + HEAD_ARM] = buf.arm[i]!;
+  H[h + HEAD_MT1] = buf.mt1[i]!;
+  H[h + HEAD_MT2] = buf.mt2[i]!;
+  H[h + HEAD_MTW] = buf.mtw[i]!;
+  H[h + HEAD_MIN_SEP] = buf.minSep[i]!;
+  H[h + HEAD_REACH_A] = buf.reachA[i]!;
+  H[h + HEAD_REACH_B] = buf.reachB[i]!;
+  H[h + HEAD_INV_IA] = iso ? T[ta + II3_XX]! : 0;
+  H[h + HEAD_INV_IB] = iso ? T[tb + II3_XX]! : 0;
 }
 
 /**

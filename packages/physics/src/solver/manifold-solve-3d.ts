@@ -26,6 +26,23 @@ import {
   FRICTION_T1,
   FRICTION_T2,
   FRICTION_TWIST,
+  HEAD_ARM,
+  HEAD_INV_IA,
+  HEAD_INV_IB,
+  HEAD_MIN_SEP,
+  HEAD_MT1,
+  HEAD_MT2,
+  HEAD_MTW,
+  HEAD_MU,
+  HEAD_NX,
+  HEAD_NY,
+  HEAD_NZ,
+  HEAD_REACH_A,
+  HEAD_REACH_B,
+  HEAD_STRIDE,
+  HEAD_T1X,
+  HEAD_T1Y,
+  HEAD_T1Z,
   JAC_STRIDE,
   ROW_AX,
   ROW_AY,
@@ -71,7 +88,7 @@ export function warmStartManifolds3D(world: PhysicsWorld): void {
   if (st === undefined) return;
   const buf = st.current,
     sb = world.collision.bodyState,
-    T = st.invInertia;
+    H = st.solveHead;
   const LN = buf.ln;
   for (let i = 0; i < buf.count; i++) {
     const f1 = buf.ft1[i]!,
@@ -102,12 +119,13 @@ export function warmStartManifolds3D(world: PhysicsWorld): void {
       bz += ln * J[o + ROW_BZ]!;
     }
     if (sn === 0 && f1 === 0 && f2 === 0 && fw === 0) continue;
-    const nx = buf.nx[i]!,
-      ny = buf.ny[i]!,
-      nz = buf.nz[i]!,
-      t1x = buf.t1x[i]!,
-      t1y = buf.t1y[i]!,
-      t1z = buf.t1z[i]!;
+    const h = HEAD_STRIDE * i;
+    const nx = H[h + HEAD_NX]!,
+      ny = H[h + HEAD_NY]!,
+      nz = H[h + HEAD_NZ]!,
+      t1x = H[h + HEAD_T1X]!,
+      t1y = H[h + HEAD_T1Y]!,
+      t1z = H[h + HEAD_T1Z]!;
     const t2x = ny * t1z - nz * t1y,
       t2y = nz * t1x - nx * t1z,
       t2z = nx * t1y - ny * t1x;
@@ -147,7 +165,7 @@ export function warmStartManifolds3D(world: PhysicsWorld): void {
       b = BS3_STRIDE * kb;
     if (ka > 0) {
       const mA = sb[a + BS3_INV_MASS]!,
-        gA = iso ? T[II3_STRIDE * ka + II3_XX]! : 1;
+        gA = iso ? H[h + HEAD_INV_IA]! : 1;
       sb[a + BS3_VX] = sb[a + BS3_VX]! - mA * px;
       sb[a + BS3_VY] = sb[a + BS3_VY]! - mA * py;
       sb[a + BS3_VZ] = sb[a + BS3_VZ]! - mA * pz;
@@ -158,7 +176,7 @@ export function warmStartManifolds3D(world: PhysicsWorld): void {
     }
     if (kb > 0) {
       const mB = sb[b + BS3_INV_MASS]!,
-        gB = iso ? T[II3_STRIDE * kb + II3_XX]! : 1;
+        gB = iso ? H[h + HEAD_INV_IB]! : 1;
       sb[b + BS3_VX] = sb[b + BS3_VX]! + mB * px;
       sb[b + BS3_VY] = sb[b + BS3_VY]! + mB * py;
       sb[b + BS3_VZ] = sb[b + BS3_VZ]! + mB * pz;
@@ -203,36 +221,24 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
     FV = st.frictionInv;
   const FT1 = buf.ft1,
     FT2 = buf.ft2,
-    FTW = buf.ftw,
-    MT1 = buf.mt1,
-    MT2 = buf.mt2,
-    MTW = buf.mtw,
-    ARM = buf.arm;
+    FTW = buf.ftw;
+  // The manifold's own numbers from its head (HEAD_*), one run of memory a manifold.
+  const H = st.solveHead;
   const IA = buf.ia,
     IB = buf.ib,
-    NX = buf.nx,
-    NY = buf.ny,
-    NZ = buf.nz,
-    T1X = buf.t1x,
-    T1Y = buf.t1y,
-    T1Z = buf.t1z,
     PTS = buf.points,
-    MU = buf.friction;
-  const ISO = buf.iso,
-    T = st.invInertia,
-    MINSEP = buf.minSep,
-    RA = buf.reachA,
-    RB = buf.reachB;
+    ISO = buf.iso;
   const invHs = 1 / hs,
     negPush = -push;
   for (let i = 0, count = buf.count; i < count; i++) {
     const ka = IA[i]!,
       kb = IB[i]!,
       a = BS3_STRIDE * ka,
-      b = BS3_STRIDE * kb;
-    const nx = NX[i]!,
-      ny = NY[i]!,
-      nz = NZ[i]!;
+      b = BS3_STRIDE * kb,
+      h = HEAD_STRIDE * i;
+    const nx = H[h + HEAD_NX]!,
+      ny = H[h + HEAD_NY]!,
+      nz = H[h + HEAD_NZ]!;
     const isRigid = ka === 0 || kb === 0;
     const biasRate = isRigid ? rBias : sBias,
       massScale = isRigid ? rMass : sMass,
@@ -280,7 +286,8 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
     // point's s >= minSep + dn - |theta_A| reach_A - |theta_B| reach_B > 0 with
     // v_n + s / h_s >= (v_B - v_A) . n - |w_A| reach_A - |w_B| reach_B + s_low / h_s >= 0, so each row would
     // compute lambda = max(0 - m (v_n + s / h_s), 0) = 0 and change nothing (friction has no limit then).
-    if (MINSEP[i]! > 0 && FT1[i] === 0 && FT2[i] === 0 && FTW[i] === 0) {
+    const minSep = H[h + HEAD_MIN_SEP]!;
+    if (minSep > 0 && FT1[i] === 0 && FT2[i] === 0 && FTW[i] === 0) {
       let idle = true;
       for (let k = 0; k < m; k++) {
         if (LN[4 * i + k] !== 0) {
@@ -289,10 +296,9 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
         }
       }
       if (idle) {
-        const rA = RA[i]!,
-          rB = RB[i]!;
-        const sLow =
-          MINSEP[i]! + dn - Math.sqrt(hax * hax + hay * hay + haz * haz) * rA - Math.sqrt(hbx * hbx + hby * hby + hbz * hbz) * rB;
+        const rA = H[h + HEAD_REACH_A]!,
+          rB = H[h + HEAD_REACH_B]!;
+        const sLow = minSep + dn - Math.sqrt(hax * hax + hay * hay + haz * haz) * rA - Math.sqrt(hbx * hbx + hby * hby + hbz * hbz) * rB;
         if (sLow > 0) {
           const vLow =
             (vbx - vax) * nx +
@@ -306,8 +312,8 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
     }
     // Isotropic bodies: I^-1 (r x u) = i (r x u), from the crosses (the stored products are not read).
     const iso = ISO[i] === 1,
-      iA = iso ? T[II3_STRIDE * ka + II3_XX]! : 0,
-      iB = iso ? T[II3_STRIDE * kb + II3_XX]! : 0;
+      iA = H[h + HEAD_INV_IA]!,
+      iB = H[h + HEAD_INV_IB]!;
     let pushed = false;
     // Normal rows swept until a flat hit is shared by the points as the exact solve shares it, not by the
     // order they are visited in (NORMAL_SWEEPS); a soft row ends the sweeps after the first.
@@ -400,15 +406,15 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
     // Friction of the manifold at its anchor (t1, t2, then the twist about n), limited by mu sum(lambda_n).
     let sumLn = 0;
     for (let k = 0; k < m; k++) sumLn += LN[4 * i + k]!;
-    const limit = MU[i]! * sumLn;
+    const limit = H[h + HEAD_MU]! * sumLn;
     const o1 = FT1[i]!,
       o2 = FT2[i]!,
       ow = FTW[i]!;
     // A manifold that pushes nothing (a speculative one) has no friction to solve.
     if (limit !== 0 || o1 !== 0 || o2 !== 0 || ow !== 0) {
-      const t1x = T1X[i]!,
-        t1y = T1Y[i]!,
-        t1z = T1Z[i]!;
+      const t1x = H[h + HEAD_T1X]!,
+        t1y = H[h + HEAD_T1Y]!,
+        t1z = H[h + HEAD_T1Z]!;
       const t2x = ny * t1z - nz * t1y,
         t2y = nz * t1x - nx * t1z,
         t2z = nx * t1y - ny * t1x;
@@ -433,8 +439,8 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
         dvz = vbz - vaz;
       const vt1 = dvx * t1x + dvy * t1y + dvz * t1z + (wbx * b10 + wby * b11 + wbz * b12 - (wax * a10 + way * a11 + waz * a12));
       const vt2 = dvx * t2x + dvy * t2y + dvz * t2z + (wbx * b20 + wby * b21 + wbz * b22 - (wax * a20 + way * a21 + waz * a22));
-      let l1 = o1 - MT1[i]! * vt1,
-        l2 = o2 - MT2[i]! * vt2;
+      let l1 = o1 - H[h + HEAD_MT1]! * vt1,
+        l2 = o2 - H[h + HEAD_MT2]! * vt2;
       const l2sum = l1 * l1 + l2 * l2;
       if (l2sum > limit * limit) {
         const k = limit / Math.sqrt(l2sum);
@@ -474,9 +480,9 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
         pushed = true;
       }
       // Twist: relative spin about n, limited by mu arm sum(lambda_n).
-      const tl = limit * ARM[i]!,
+      const tl = limit * H[h + HEAD_ARM]!,
         ntl = -tl;
-      let lw = ow - MTW[i]! * ((wbx - wax) * nx + (wby - way) * ny + (wbz - waz) * nz);
+      let lw = ow - H[h + HEAD_MTW]! * ((wbx - wax) * nx + (wby - way) * ny + (wbz - waz) * nz);
       lw = lw > tl ? tl : lw < ntl ? ntl : lw;
       FTW[i] = lw;
       const dw = lw - ow;
@@ -525,6 +531,9 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
   }
 }
 
+/** applyManifold3DRestitution's scratch: the manifolds with a bouncing point, in order. */
+let restitutionList = new Int32Array(0);
+
 /**
  * Restitution after the substeps: points that approached faster than the threshold and carried impulse
  * leave at >= e times that speed. (Written out in place: a call passing or returning doubles boxes each one.)
@@ -544,8 +553,16 @@ export function applyManifold3DRestitution(world: PhysicsWorld): void {
     MAX = buf.maxLn,
     LN = buf.ln,
     MN = buf.mn;
+  // Which points bounce (approach past the threshold, impulse carried) does not change from pass to
+  // pass: the first pass visits every manifold and lists those with such a point, the others only those
+  // (in the same order, so the same impulses; a settled pile's thousands of manifolds are read once).
+  if (restitutionList.length < buf.count) restitutionList = new Int32Array(2 * buf.count);
+  const list = restitutionList;
+  let listed = 0;
   for (let pass = 0; pass < 4; pass++) {
-    for (let i = 0; i < buf.count; i++) {
+    const all = pass === 0;
+    for (let r = 0, count = all ? buf.count : listed; r < count; r++) {
+      const i = all ? r : list[r]!;
       const e = buf.restitution[i]!;
       if (e === 0) continue;
       const ka = buf.ia[i]!,
@@ -559,9 +576,11 @@ export function applyManifold3DRestitution(world: PhysicsWorld): void {
       const nx = buf.nx[i]!,
         ny = buf.ny[i]!,
         nz = buf.nz[i]!;
+      let bounces = false;
       for (let k = 0, m = buf.points[i]!; k < m; k++) {
         const q = 4 * i + k;
         if (VN0[q]! > -threshold || MAX[q] === 0) continue;
+        bounces = true;
         const o = JAC_STRIDE * q;
         const vn =
           (sb[b + BS3_VX]! - sb[a + BS3_VX]!) * nx +
@@ -614,6 +633,8 @@ export function applyManifold3DRestitution(world: PhysicsWorld): void {
           sb[b + BS3_PUSHED] = 1;
         }
       }
+      if (all && bounces) list[listed++] = i;
     }
+    if (listed === 0) break;
   }
 }
