@@ -140,6 +140,12 @@ function warmScene(dimensions: 2 | 3): void {
     step(resting);
   }
   const world = warmUpScene(dimensions);
+  // The second world is made before the first steps: making a world's stores the second time
+  // generalises the field types V8 tracks for them (a store's arrays were of one class in the first
+  // world; --trace-generalization), which throws away all code compiled against the first world's
+  // (in 3D the broadphase's gather, the narrowphase's pairs, the joints' rows: 30 functions, compiled
+  // again only in a program's own first steps). Made before anything is compiled, it costs nothing.
+  const fresh = warmUpScene(dimensions);
   for (let i = 0; i < WARM_UP_STEPS; i++) step(world);
   // V8 gives a function the vector where it records its type feedback only after the function has
   // run a few times, so what a world runs only in its first step (its buffers grown from empty, every
@@ -147,7 +153,6 @@ function warmScene(dimensions: 2 | 3): void {
   // later steps lacks those paths: a program's own world then threw that code away in its first step
   // (11 functions recompiled, a pyramid's steps 0 to 3 each several times its compiled cost). A
   // second world of the scene runs those paths again, recorded this time.
-  const fresh = warmUpScene(dimensions);
   for (let i = 0; i < FRESH_STEPS; i++) step(fresh);
 }
 
