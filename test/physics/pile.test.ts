@@ -10,19 +10,22 @@ import { maxPairOverlap, modelEnergy } from './helpers';
  * of overlapping contacts (`contactSpringEnergy`). With restitution <= 1 it must never rise. The
  * tolerance per step is 1e-6 of the total: the elastic term is measured at the exact distance while
  * the solver linearises separation along the start-of-step normal, a second-order difference that
- * stays below 2e-7 of the total in these runs; any real energy gain (a missed contact, a restitution
- * overshoot) is orders of magnitude larger (we saw 3e-3 before fixing those).
+ * stays below 3e-7 of the total in these runs; any real energy gain (a missed contact, a restitution
+ * overshoot) is orders of magnitude larger (we saw 3e-3 before fixing those). 600 steps: the balls
+ * land, bounce and settle, and by step 600 the pile rests (measured over 1,000 steps at both
+ * restitutions: every change of energy after step 600 was exactly 0, the largest rise of all, 2.6e-7,
+ * came between steps 300 and 500, and the largest between 500 and 600 was 7e-10).
  */
 describe('balls-in-box', () => {
   for (const restitution of [0.5, 1]) {
-    test(`total energy never rises, restitution ${restitution} (1,000 balls, 1,000 steps)`, () => {
+    test(`total energy never rises, restitution ${restitution} (1,000 balls, 600 steps)`, () => {
       const count = 1000;
       const world = createPhysicsWorld(ballsInBox.worldOptions({ count }));
       ballsInBox.build(world, { count, restitution });
       let e0 = modelEnergy(world);
       const start = e0;
       let worst = -Infinity;
-      for (let i = 0; i < 1000; i++) {
+      for (let i = 0; i < 600; i++) {
         step(world);
         const e = modelEnergy(world);
         worst = Math.max(worst, (e - e0) / Math.abs(start));
@@ -31,7 +34,7 @@ describe('balls-in-box', () => {
       expect(worst).toBeLessThan(1e-6);
       // And it does dissipate: with restitution <= 1 and friction the pile comes to rest.
       expect(e0).toBeLessThan(start);
-    }, 240_000); // about 8 s alone; the bound is for a machine busy with the browser tests beside it
+    }, 240_000); // about 5 s alone; the bound is for a machine busy with the browser tests beside it
   }
 
   test('no ball leaves the box in 1,325 steps of 2,000 balls kicked three times, and the settled pile overlaps < 5% of a radius', () => {
