@@ -101,7 +101,10 @@ describe('balls-in-box', () => {
     const start = e0;
     let worstRise = -Infinity,
       worstOut = -Infinity;
-    for (let i = 0; i < 1500; i++) {
+    // 1,000 steps: they land and settle, and the pile is asleep by then (measured over 1,500 steps, per
+    // 100 steps: energy fell in every stretch up to step 1,000 and never changed after, nor did the
+    // overlap, 8.0e-4 m; no ball ever out).
+    for (let i = 0; i < 1000; i++) {
       step(world);
       const e = modelEnergy(world);
       worstRise = Math.max(worstRise, (e - e0) / Math.abs(start));
