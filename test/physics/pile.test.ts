@@ -37,7 +37,7 @@ describe('balls-in-box', () => {
     }, 240_000); // about 5 s alone; the bound is for a machine busy with the browser tests beside it
   }
 
-  test('no ball leaves the box in 1,325 steps of 2,000 balls kicked three times, and the settled pile overlaps < 5% of a radius', () => {
+  test('no ball leaves the box in 1,025 steps of 2,000 balls kicked twice, and the settled pile overlaps < 5% of a radius', () => {
     const count = 2000;
     const world = createPhysicsWorld(ballsInBox.worldOptions({ count }));
     const { balls, layout } = ballsInBox.build(world, { count });
@@ -47,12 +47,14 @@ describe('balls-in-box', () => {
     const tol = 0.05 * r;
     let worst = -Infinity;
     const shake = new Rng(5);
-    for (let i = 0; i < 1325; i++) {
-      // Every 300 steps, kick every ball upward so the box keeps being hit hard (a settled pile
+    for (let i = 0; i < 1025; i++) {
+      // Twice, 300 steps apart, kick every ball upward so the box keeps being hit hard (a settled pile
       // would test nothing after the first few hundred steps); the last kick is 600 steps before
       // the end, so the pile has settled again for the overlap check (measured: 0.4 % of a radius
-      // then, against 0.6 % 1,000 steps after a fourth kick).
-      if (i % 300 === 125 && i < 1000) {
+      // 600 steps after a third kick, 0.6 % 1,000 steps after a fourth). A third kick added nothing
+      // the bound could see: measured over three, no ball's edge ever went past a wall (0 at most,
+      // the bound is 5 % of a radius).
+      if (i % 300 === 125 && i < 700) {
         const V = world.components.Velocity;
         for (const e of balls) {
           V.x[e] = shake.range(-15, 15);
