@@ -1,6 +1,7 @@
-// The bench CLI end to end: built with buildBench() and run as a child process with small counts (the
-// usage errors: the built CLI's main, all in one child process). These tests check output shape and
-// error handling only; they never assert timings.
+// The bench CLI end to end: built with buildBench() and run with small counts, twice as a process of its
+// own (exit codes and output as a shell sees them) and otherwise through the built CLI's `main`, every
+// other run one after another in one child process (`queued`). These tests check output shape and error
+// handling only; they never assert timings.
 import { execFile } from 'node:child_process';
 import { join, resolve } from 'node:path';
 import { pathToFileURL } from 'node:url';
@@ -44,32 +45,24 @@ function runCli(args: string[]): Promise<CliRun> {
 }
 
 /**
+ * Milliseconds a test that reads a `queued` run may wait: the whole batch (about 25 s of CPU, every run
+ * of this file but two) runs before any of its results is read, on a machine busy with other tests.
+ */
+const BATCH_TIMEOUT_MS = 480_000;
+
+/**
  * Runs the built CLI's `main(argv, io)` once for each of `argvs`, one after another in one Node
- * process (with the CLI's streams captured as the process would write them), and resolves with each
- * run's return value, the exit code the CLI exits with, and output. One process for many runs that
- * stop at their arguments; a run that throws instead of returning gives code -1 and the error.
+ * process (./cli-batch.mjs), and resolves with each run's return value (the exit code the CLI exits
+ * with) and output as a process of its own would show them; a run that throws gives code -1.
  */
 function runMain(argvs: string[][]): Promise<CliRun[]> {
-  const driver = `
-    const { main } = await import(process.env.BENCH_CLI);
-    const runs = [];
-    for (const argv of JSON.parse(process.env.BENCH_ARGVS)) {
-      let stdout = '', stderr = '';
-      const io = { out: (t) => { stdout += t + '\\n'; }, err: (t) => { stderr += t + '\\n'; }, isTTY: false };
-      try {
-        runs.push({ code: await main(argv, io), stdout, stderr });
-      } catch (error) {
-        runs.push({ code: -1, stdout, stderr: stderr + String(error && error.stack) });
-      }
-    }
-    process.stdout.write(JSON.stringify(runs));`;
   return new Promise((done, fail) => {
     execFile(
       process.execPath,
-      [...NODE_FLAGS, '--input-type=module', '-e', driver],
+      [...NODE_FLAGS, join(import.meta.dirname, 'cli-batch.mjs')],
       {
         cwd: root,
-        timeout: 60_000,
+        timeout: BATCH_TIMEOUT_MS,
         maxBuffer: 16 * 2 ** 20,
         env: { ...process.env, BENCH_CLI: pathToFileURL(cli).href, BENCH_ARGVS: JSON.stringify(argvs) },
       },
@@ -79,6 +72,22 @@ function runMain(argvs: string[][]): Promise<CliRun[]> {
       },
     );
   });
+}
+
+/** The argument lists `queued` collected, run in this order. */
+const queue: string[][] = [];
+let batch: Promise<CliRun[]> | undefined;
+
+/**
+ * Adds a CLI run with `args` to the one batch of this file (called while the tests are collected, so
+ * the batch is complete before any test runs); returns a function resolving with that run's result,
+ * the first call starting the batch in one child process (`runMain`). One process spares each run
+ * Node's start and the CLI bundle's load, and with `--same-isolate` a peer engine's module is loaded
+ * and compiled once for all the runs that use it, not once a run in a worker thread.
+ */
+function queued(args: string[]): () => Promise<CliRun> {
+  const index = queue.push(args) - 1;
+  return async () => (await (batch ??= runMain(queue)))[index]!;
 }
 
 /** Parses every stdout line as JSON (fails the test if any line is not). */
@@ -109,7 +118,7 @@ beforeAll(async () => {
   await build.buildBench();
 });
 
-describe('bench CLI', () => {
+describe('bench CLI', { timeout: BATCH_TIMEOUT_MS }, () => {
   it('--json prints one parseable line with the fields', async () => {
     const run = await runCli(['--scene', 'balls-in-box', '--count', '200', '--steps', '10', '--warmup', '2', '--json']);
     expect(run.code).toBe(0);
@@ -122,12 +131,13 @@ describe('bench CLI', () => {
     expect(line.maxOverlapPercent as number).toBeGreaterThanOrEqual(0);
   });
 
+  // Each peer in a worker thread of its own, as a user runs them (the other runs of peers here share
+  // the bench's thread, --same-isolate, which the isolation test below compares with this).
+  const vs = ['--scene', 'balls-in-box', '--vs', 'rapier2d,matter'];
+  const vsJson = queued([...vs, '--count', '200', '--steps', '20', '--warmup', '2', '--json']);
+  const vsHuman = queued([...vs, '--count', '50', '--steps', '5', '--warmup', '1']);
   it('--vs rapier2d,matter gives one line per engine and ours/peer ratios', async () => {
-    const vs = ['--scene', 'balls-in-box', '--vs', 'rapier2d,matter'];
-    const [json, human] = await Promise.all([
-      runCli([...vs, '--count', '200', '--steps', '20', '--warmup', '2', '--json']),
-      runCli([...vs, '--count', '50', '--steps', '5', '--warmup', '1']),
-    ]);
+    const [json, human] = await Promise.all([vsJson(), vsHuman()]);
     expect(json.code).toBe(0);
     const lines = jsonLines(json.stdout);
     expect(lines.map((l) => l.engine)).toEqual(['bitphysics', 'rapier2d', 'matter']);
@@ -148,8 +158,22 @@ describe('bench CLI', () => {
     expect(human.stdout).toMatch(/matter-js is not SI/);
   });
 
+  const plainLoop = queued([
+    '--scene',
+    'particles',
+    '--count',
+    '1000',
+    '--steps',
+    '10',
+    '--warmup',
+    '2',
+    '--vs',
+    'plain-loop',
+    '--json',
+    '--same-isolate',
+  ]);
   it('--vs plain-loop on particles computes the same states', async () => {
-    const run = await runCli(['--scene', 'particles', '--count', '1000', '--steps', '10', '--warmup', '2', '--vs', 'plain-loop', '--json']);
+    const run = await plainLoop();
     expect(run.code).toBe(0);
     const [ours, plain] = jsonLines(run.stdout);
     expectEngineLine(ours!, 'bitphysics', 'particles', 1000, 10);
@@ -159,22 +183,23 @@ describe('bench CLI', () => {
     expect(ours!.positionChecksum).toBe(plain!.positionChecksum);
   });
 
+  // 40,000 particles: above 2 x MIN_PARALLEL_PER_THREAD, so the workers take their half.
+  const threads = queued([
+    '--scene',
+    'particles',
+    '--count',
+    '40000',
+    '--steps',
+    '5',
+    '--warmup',
+    '1',
+    '--threads',
+    '2',
+    '--hash',
+    '--json',
+  ]);
   it('--threads 2 runs bitphysics-threads beside bitphysics: threads, speedup, serial fraction, Amdahl projection and the same state hash', async () => {
-    // 40,000 particles: above 2 x MIN_PARALLEL_PER_THREAD, so the workers take their half.
-    const run = await runCli([
-      '--scene',
-      'particles',
-      '--count',
-      '40000',
-      '--steps',
-      '5',
-      '--warmup',
-      '1',
-      '--threads',
-      '2',
-      '--hash',
-      '--json',
-    ]);
+    const run = await threads();
     expect(run.code).toBe(0);
     const lines = jsonLines(run.stdout);
     expect(lines.map((l) => l.engine)).toEqual(['bitphysics', 'bitphysics-threads']);
@@ -192,9 +217,10 @@ describe('bench CLI', () => {
     expect(lines[1]!.stateHash).toBe(lines[0]!.stateHash);
   });
 
+  const warmUpArgs = ['--scene', 'pyramid', '--count', '6', '--steps', '10', '--warmup', '0', '--hash'];
+  const [warmUpPlain, warmUpWarm] = [queued(warmUpArgs), queued([...warmUpArgs, '--warm-up'])];
   it('--warm-up runs the warm-up scene first and leaves the state as it is without it', async () => {
-    const args = ['--scene', 'pyramid', '--count', '6', '--steps', '10', '--warmup', '0', '--hash'];
-    const [plain, warm] = await Promise.all([runCli(args), runCli([...args, '--warm-up'])]);
+    const [plain, warm] = await Promise.all([warmUpPlain(), warmUpWarm()]);
     expect([plain.code, warm.code]).toEqual([0, 0]);
     const hash = (out: string) => /bitphysics: stateHash ([0-9a-f]+)/.exec(out)?.[1];
     expect(hash(plain.stdout)).toMatch(/^[0-9a-f]{16}$/);
@@ -203,8 +229,9 @@ describe('bench CLI', () => {
     expect(plain.stdout).not.toContain('warm-up scene run first');
   });
 
+  const [listHuman, listJson] = [queued(['--list']), queued(['--list', '--json'])];
   it('--list lists the scenes and the engines that support each', async () => {
-    const [human, json] = await Promise.all([runCli(['--list']), runCli(['--list', '--json'])]);
+    const [human, json] = await Promise.all([listHuman(), listJson()]);
     expect(human.code).toBe(0);
     expect(human.stdout).toMatch(/^balls-in-box\s+bitphysics, rapier2d, rapier2d-simd, matter\s/m);
     expect(human.stdout).toMatch(/^particles\s+bitphysics, plain-loop\s/m);
@@ -214,7 +241,7 @@ describe('bench CLI', () => {
   });
 });
 
-describe.concurrent('bench CLI scene parameters, studies and newer scenes', () => {
+describe('bench CLI scene parameters, studies and newer scenes', { timeout: BATCH_TIMEOUT_MS }, () => {
   /**
    * joint-grid --vs rapier2d: Rapier builds the same net (impulse revolute joints, the same pins) and
    * reports the same joint error, the largest anchor separation after any timed step. A 10 x 10 net
@@ -222,8 +249,22 @@ describe.concurrent('bench CLI scene parameters, studies and newer scenes', () =
    * bodies). Ours must hold the net at least as tightly as Rapier's default solver (measured: 0.0041
    * against 0.0125 m over 60 steps), and both must hold it to a few centimetres.
    */
+  const jointGrid = queued([
+    '--scene',
+    'joint-grid',
+    '--count',
+    '10',
+    '--steps',
+    '60',
+    '--warmup',
+    '0',
+    '--vs',
+    'rapier2d',
+    '--json',
+    '--same-isolate',
+  ]);
   it('joint-grid --vs rapier2d: the same net in Rapier, its joint error beside ours', async () => {
-    const run = await runCli(['--scene', 'joint-grid', '--count', '10', '--steps', '60', '--warmup', '0', '--vs', 'rapier2d', '--json']);
+    const run = await jointGrid();
     expect(run.code).toBe(0);
     const [ours, rapier] = jsonLines(run.stdout);
     expectEngineLine(ours!, 'bitphysics', 'joint-grid', 10, 60);
@@ -236,8 +277,9 @@ describe.concurrent('bench CLI scene parameters, studies and newer scenes', () =
     expect(rapier!.ratioOf).toBe('bitphysics/rapier2d');
   });
 
+  const galaxy = queued(['--scene', 'galaxy', '--count', '300', '--steps', '2', '--warmup', '0', '--theta', '0.5', '--json']);
   it('galaxy takes --theta, passes it to the world and echoes it in the JSON line', async () => {
-    const run = await runCli(['--scene', 'galaxy', '--count', '300', '--steps', '2', '--warmup', '0', '--theta', '0.5', '--json']);
+    const run = await galaxy();
     expect(run.code).toBe(0);
     const [line] = jsonLines(run.stdout);
     expectEngineLine(line!, 'bitphysics', 'galaxy', 300, 2);
@@ -251,22 +293,24 @@ describe.concurrent('bench CLI scene parameters, studies and newer scenes', () =
    * energy (restitution <= 1 and friction only take it out; 1e-3 allows the final snapshot's soft
    * contact compression, which holds some of the energy as overlap rather than motion).
    */
+  const restitution = queued([
+    '--scene',
+    'balls-in-box',
+    '--count',
+    '200',
+    '--steps',
+    '20',
+    '--warmup',
+    '0',
+    '--restitution',
+    '1',
+    '--vs',
+    'rapier2d',
+    '--json',
+    '--same-isolate',
+  ]);
   it('balls-in-box takes --restitution, echoes it and reports energyDrift for every engine', async () => {
-    const run = await runCli([
-      '--scene',
-      'balls-in-box',
-      '--count',
-      '200',
-      '--steps',
-      '20',
-      '--warmup',
-      '0',
-      '--restitution',
-      '1',
-      '--vs',
-      'rapier2d',
-      '--json',
-    ]);
+    const run = await restitution();
     expect(run.code).toBe(0);
     const lines = jsonLines(run.stdout);
     const ours = lines.find((l) => l.engine === 'bitphysics')!,
@@ -277,15 +321,17 @@ describe.concurrent('bench CLI scene parameters, studies and newer scenes', () =
     expect(typeof ours.energyDrift).toBe('number');
     expect(typeof rapier.energyDrift).toBe('number');
     expect(ours.energyDrift as number).toBeLessThan(1e-3);
+    // A process of its own: the exit code a shell sees.
     const bad = await runCli(['--scene', 'balls-in-box', '--count', '10', '--restitution', '1.5']);
     expect(bad.code).toBe(2);
     expect(bad.stderr).toMatch(/--restitution must be >= 0 and <= 1/);
   });
 
+  const [help, listWithParams] = [queued(['--help']), queued(['--list', '--json'])];
   it('--help and --list show the scene parameters', async () => {
-    const [help, list] = await Promise.all([runCli(['--help']), runCli(['--list', '--json'])]);
-    expect(help.code).toBe(0);
-    expect(help.stdout).toMatch(/--theta <x>: galaxy: Barnes-Hut opening angle.*default 0\.7/);
+    const [helpRun, list] = await Promise.all([help(), listWithParams()]);
+    expect(helpRun.code).toBe(0);
+    expect(helpRun.stdout).toMatch(/--theta <x>: galaxy: Barnes-Hut opening angle.*default 0\.7/);
     const galaxy = jsonLines(list.stdout).find((s) => s.scene === 'galaxy')!;
     expect((galaxy.params as Record<string, { default: number }>).theta!.default).toBe(0.7);
   });
@@ -296,8 +342,9 @@ describe.concurrent('bench CLI scene parameters, studies and newer scenes', () =
    * from theory by < 0.05 (Euler 0.97, RK4 4.03). +-0.3 keeps the test robust to small changes of
    * the schemes or the step sizes while still telling order 1 from 2 and 4 from 3 or 5.
    */
+  const integrators = queued(['--scene', 'integrators', '--orbits', '1', '--count', '100', '--steps', '3', '--warmup', '1', '--json']);
   it('integrators --json: one line per scheme with order, energy error and cost; orders match theory', async () => {
-    const run = await runCli(['--scene', 'integrators', '--orbits', '1', '--count', '100', '--steps', '3', '--warmup', '1', '--json']);
+    const run = await integrators();
     expect(run.code).toBe(0);
     const lines = jsonLines(run.stdout);
     const expected: Record<string, number> = {
@@ -329,8 +376,9 @@ describe.concurrent('bench CLI scene parameters, studies and newer scenes', () =
    * near 0 on a loaded machine: every line must have a finite cost, a positive baseline and whole
    * step, and the laws far above the noise (pairwise sums, Barnes-Hut, turbulent wind) a positive cost.
    */
+  const forces = queued(['--scene', 'forces', '--count', '2100', '--steps', '4', '--warmup', '1', '--json']);
   it('forces --json: one line per force law with finite costs; pairwise laws capped at 2,000 bodies', async () => {
-    const run = await runCli(['--scene', 'forces', '--count', '2100', '--steps', '4', '--warmup', '1', '--json']);
+    const run = await forces();
     expect(run.code).toBe(0);
     const lines = jsonLines(run.stdout);
     expect(lines.length).toBeGreaterThanOrEqual(15);
@@ -348,21 +396,23 @@ describe.concurrent('bench CLI scene parameters, studies and newer scenes', () =
     }
   });
 
+  const spheres = queued([
+    '--scene',
+    'spheres-in-box',
+    '--count',
+    '100',
+    '--steps',
+    '5',
+    '--warmup',
+    '1',
+    '--vs',
+    'rapier3d',
+    '--json',
+    '--times',
+    '--same-isolate',
+  ]);
   it('spheres-in-box --vs rapier3d gives a ratio line, on the median and on the mean (whole timed run)', async () => {
-    const run = await runCli([
-      '--scene',
-      'spheres-in-box',
-      '--count',
-      '100',
-      '--steps',
-      '5',
-      '--warmup',
-      '1',
-      '--vs',
-      'rapier3d',
-      '--json',
-      '--times',
-    ]);
+    const run = await spheres();
     expect(run.code).toBe(0);
     const [ours, peer] = jsonLines(run.stdout);
     expectEngineLine(ours!, 'bitphysics', 'spheres-in-box', 100, 5);
@@ -386,11 +436,23 @@ describe.concurrent('bench CLI scene parameters, studies and newer scenes', () =
    * (top drop well under the 0.05 m goal in both); a few boxes dropped into the closed box never
    * overlap by half their half extent.
    */
+  const pile3d = queued([
+    '--scene',
+    'box-pile-3d',
+    '--count',
+    '27',
+    '--steps',
+    '20',
+    '--warmup',
+    '0',
+    '--vs',
+    'rapier3d',
+    '--json',
+    '--same-isolate',
+  ]);
+  const pyramid3d = queued(['--scene', 'pyramid-3d', '--count', '3', '--steps', '30', '--vs', 'rapier3d', '--json', '--same-isolate']);
   it('box-pile-3d and pyramid-3d --vs rapier3d report overlap, topDrop, maxDrift and fallen for both engines', async () => {
-    const [pile, pyramid] = await Promise.all([
-      runCli(['--scene', 'box-pile-3d', '--count', '27', '--steps', '20', '--warmup', '0', '--vs', 'rapier3d', '--json']),
-      runCli(['--scene', 'pyramid-3d', '--count', '3', '--steps', '30', '--vs', 'rapier3d', '--json']),
-    ]);
+    const [pile, pyramid] = await Promise.all([pile3d(), pyramid3d()]);
     expect(pile.code).toBe(0);
     expect(pyramid.code).toBe(0);
     for (const line of jsonLines(pile.stdout)) {
@@ -416,12 +478,35 @@ describe.concurrent('bench CLI scene parameters, studies and newer scenes', () =
    * (top drop well under the 0.05 m goal; none fall), in 2D (base 3: 6 boxes) and 3D (base 3: 14
    * boxes); a few spheres dropped into the closed box never overlap by half their radius.
    */
+  const simdFlat = queued(['--scene', 'pyramid', '--count', '3', '--steps', '30', '--vs', 'rapier2d-simd', '--json', '--same-isolate']);
+  const simdSolid = queued([
+    '--scene',
+    'pyramid-3d',
+    '--count',
+    '3',
+    '--steps',
+    '30',
+    '--vs',
+    'rapier3d-simd,jolt',
+    '--json',
+    '--same-isolate',
+  ]);
+  const joltSpheres = queued([
+    '--scene',
+    'spheres-in-box',
+    '--count',
+    '64',
+    '--steps',
+    '20',
+    '--warmup',
+    '0',
+    '--vs',
+    'jolt',
+    '--json',
+    '--same-isolate',
+  ]);
   it('--vs rapier2d-simd, rapier3d-simd and jolt run the pyramids and spheres with the quality fields', async () => {
-    const [flat, solid, spheres] = await Promise.all([
-      runCli(['--scene', 'pyramid', '--count', '3', '--steps', '30', '--vs', 'rapier2d-simd', '--json']),
-      runCli(['--scene', 'pyramid-3d', '--count', '3', '--steps', '30', '--vs', 'rapier3d-simd,jolt', '--json']),
-      runCli(['--scene', 'spheres-in-box', '--count', '64', '--steps', '20', '--warmup', '0', '--vs', 'jolt', '--json']),
-    ]);
+    const [flat, solid, spheres] = await Promise.all([simdFlat(), simdSolid(), joltSpheres()]);
     for (const run of [flat, solid, spheres]) expect(run.code).toBe(0);
     expect(jsonLines(flat.stdout).map((l) => l.engine)).toEqual(['bitphysics', 'rapier2d-simd']);
     expect(jsonLines(solid.stdout).map((l) => l.engine)).toEqual(['bitphysics', 'rapier3d-simd', 'jolt']);
@@ -441,9 +526,23 @@ describe.concurrent('bench CLI scene parameters, studies and newer scenes', () =
    * and final quality fields (rapier is deterministic on one machine; ours on every machine), and the
    * peer's setup time and memory are still measured (in its isolate).
    */
+  const isolationArgs = [
+    '--scene',
+    'box-pile-3d',
+    '--count',
+    '27',
+    '--steps',
+    '40',
+    '--warmup',
+    '20',
+    '--vs',
+    'rapier3d',
+    '--json',
+    '--hash',
+  ];
+  const [isolated, shared] = [queued(isolationArgs), queued([...isolationArgs, '--same-isolate'])];
   it('peers in their own isolates compute what they compute beside ours (--same-isolate)', async () => {
-    const args = ['--scene', 'box-pile-3d', '--count', '27', '--steps', '40', '--warmup', '20', '--vs', 'rapier3d', '--json', '--hash'];
-    const [apart, together] = await Promise.all([runCli(args), runCli([...args, '--same-isolate'])]);
+    const [apart, together] = await Promise.all([isolated(), shared()]);
     expect(apart.code).toBe(0);
     expect(together.code).toBe(0);
     const a = jsonLines(apart.stdout),
@@ -467,8 +566,20 @@ describe.concurrent('bench CLI scene parameters, studies and newer scenes', () =
    * steps in any engine; before the Box2D v2 peers' boxes were shrunk by their 0.01 m polygon skin, the
    * rows started inside each other's skins and planck and box2d-wasm pushed the top up by 0.04 m.
    */
+  const pyramid2d = queued([
+    '--scene',
+    'pyramid',
+    '--count',
+    '3',
+    '--steps',
+    '30',
+    '--vs',
+    'rapier2d,planck,box2d-wasm',
+    '--json',
+    '--same-isolate',
+  ]);
   it('pyramid --vs rapier2d,planck,box2d-wasm runs all three peers on the same 1 m boxes', async () => {
-    const run = await runCli(['--scene', 'pyramid', '--count', '3', '--steps', '30', '--vs', 'rapier2d,planck,box2d-wasm', '--json']);
+    const run = await pyramid2d();
     expect(run.code).toBe(0);
     const lines = jsonLines(run.stdout);
     expect(lines.map((l) => l.engine)).toEqual(['bitphysics', 'rapier2d', 'planck', 'box2d-wasm']);
@@ -479,9 +590,10 @@ describe.concurrent('bench CLI scene parameters, studies and newer scenes', () =
     }
   });
 
+  // 1,000 live particles reach steady churn after ~5 s, as at the default count: 360 warm-up steps.
+  const fireworks = queued(['--scene', 'fireworks', '--count', '1000', '--steps', '30', '--warmup', '360', '--json']);
   it('fireworks --json reports spawn and expiry every step', async () => {
-    // 1,000 live particles reach steady churn after ~5 s, as at the default count: 360 warm-up steps.
-    const run = await runCli(['--scene', 'fireworks', '--count', '1000', '--steps', '30', '--warmup', '360', '--json']);
+    const run = await fireworks();
     expect(run.code).toBe(0);
     const [line] = jsonLines(run.stdout);
     expectEngineLine(line!, 'bitphysics', 'fireworks', 1000, 30);
@@ -493,10 +605,10 @@ describe.concurrent('bench CLI scene parameters, studies and newer scenes', () =
 
 /**
  * Usage errors: `main` returns 2 (the exit code; a real process exits with it in the --restitution
- * test above), names the bad value on stderr and prints nothing on stdout. All the cases run in one
- * process (`runMain`): each stops at its arguments, so a process apiece would mostly start Node.
+ * test above), names the bad value on stderr and prints nothing on stdout. The cases run in this
+ * file's batch (`queued`): each stops at its arguments, so a process apiece would mostly start Node.
  */
-describe('bench CLI usage errors exit 2 naming the bad value', () => {
+describe('bench CLI usage errors exit 2 naming the bad value', { timeout: BATCH_TIMEOUT_MS }, () => {
   const cases: Array<[string, string[], string]> = [
     ['unknown scene', ['--scene', 'no-such-scene'], 'no-such-scene'],
     ['unknown engine', ['--vs', 'rapier2d,box2d'], 'box2d'],
@@ -515,11 +627,10 @@ describe('bench CLI usage errors exit 2 naming the bad value', () => {
     ['zero threads', ['--threads', '0'], '--threads'],
     ['too many threads', ['--threads', '65'], '--threads'],
   ];
-  let runs: Promise<CliRun[]> | undefined;
-  for (const [i, [what, , named]] of cases.entries()) {
+  for (const [what, args, named] of cases) {
+    const usage = queued([...args, '--json']);
     it(what, async () => {
-      runs ??= runMain(cases.map(([, a]) => [...a, '--json']));
-      const run = (await runs)[i]!;
+      const run = await usage();
       expect(run.code).toBe(2);
       expect(run.stderr).toContain(named);
       expect(run.stdout).toBe('');
