@@ -7,10 +7,12 @@
  * leans into its thrust and the flame grows with it.
  * (Ramtal and Dobre, ch. 6; the rules are in ./rules.ts, DOM-free.)
  *
- * Keys: arrow keys thrust (one direction at a time: the last one pressed), Enter restarts after the
+ * Keys: arrow keys thrust (two at right angles held together thrust diagonally, ./rules.ts
+ * `heldThrust`; of two opposite ones the last pressed wins), Enter restarts after the
  * game is over, P pause, N single step, R reset, F predicted path on / off, V replays the run from its
  * start (./replay.ts: every input is recorded at its step; the replay ends where the run was, bit for bit).
- * Touch: the four arrow buttons under the scene (hold to thrust); tap the message to restart.
+ * Touch: the four arrow buttons under the scene (hold to thrust, slide to steer; two fingers on two
+ * arrows thrust diagonally); tap the message to restart.
  * Levels (./levels.ts): level 1 has one hole across the straight path, levels 2 and 3 a wall of holes
  * with one gap off to the side (then a narrower one with a hole above it), later levels more and
  * bigger holes, drifting holes and a fuel limit; clearing a level shows a summary and a button over
@@ -42,15 +44,16 @@ import { Container, Graphics, Sprite, Text, Texture } from 'pixi.js';
 import { canThrust, type LevelRun, POINTS_PER_HOLE, startLevel } from './levels';
 import { type BlackHoleReplay, createBlackHoleReplay, type GameStepEvent } from './replay';
 import {
+  type Arrow,
   type BlackHoleGame,
   C_GAME,
   createBlackHoleGame,
   createPredictor,
   FIELD,
+  heldThrust,
   MAX_HOLES,
   type Predictor,
   predictPath,
-  type Thrust,
 } from './rules';
 
 const search = new URLSearchParams(location.search);
@@ -173,18 +176,18 @@ const game = await startPixiGame({
   createWorld,
   step: () => {
     replay.step();
-    if (run && !canThrust(bh, run) && held.length > 0) held.length = 0;
+    if (run && !canThrust(bh, run) && held.length > 0) letGo();
     if (restarted) {
       restarted = false;
       // Not while a replay plays: its inputs are the recorded ones.
       if (!replay.player && held.length > 0) {
-        held.length = 0;
+        letGo();
         applyHeld();
       }
     }
   },
   controls: [
-    { keys: '← ↑ → ↓', action: 'thrust (one at a time)', touch: 'hold, slide ← ↑ → ↓' },
+    { keys: '← ↑ → ↓', action: 'thrust (two at once: diagonal)', touch: 'hold, slide ← ↑ → ↓' },
     { keys: 'Enter', action: 'next level / continue from this level', touch: 'the big button' },
     { keys: 'F', action: 'predicted path on / off' },
     { keys: 'V', action: 'replay the run from the start' },
@@ -278,15 +281,30 @@ const panel = createPanel(
   { title: 'Black hole' },
 );
 
-// ---- Input: arrow keys and touch buttons, one direction at a time -------------------------------
+// ---- Input: arrow keys and touch buttons; two at right angles thrust diagonally ------------------
 
-const KEY_DIR: Record<string, Thrust> = { ArrowUp: 'up', ArrowDown: 'down', ArrowLeft: 'left', ArrowRight: 'right' };
-/** Directions held (keys and buttons), most recent last; the thrust is the last one. */
-const held: Thrust[] = [];
+const KEY_DIR: Record<string, Arrow> = { ArrowUp: 'up', ArrowDown: 'down', ArrowLeft: 'left', ArrowRight: 'right' };
+/**
+ * Arrows held (keys and buttons), most recent last; the thrust is `heldThrust` of them: the latest
+ * vertical and the latest horizontal one, a diagonal when both are held.
+ */
+const held: Arrow[] = [];
+/**
+ * How many keys and fingers hold each arrow: an arrow is let go when the last of them lifts (a
+ * finger slid off ↑ onto → and a second finger put on ↑ hold ↑ and → together).
+ */
+const holds = new Map<Arrow, number>();
+/** The arrow keys down now (a key-up without its key-down, e.g. pressed before the page had focus, is ignored). */
+const keysDown = new Set<Arrow>();
+/** Lets go of every arrow (after a fall or an exit the player presses again to thrust). */
+function letGo(): void {
+  held.length = 0;
+  holds.clear();
+}
 
 function applyHeld(): void {
   const allowed = !run || canThrust(bh, run);
-  const want = allowed && held.length > 0 ? held[held.length - 1]! : 'none';
+  const want = allowed ? heldThrust(held) : 'none';
   if (want !== bh.thrust) replay.input('thrust', want);
 }
 
@@ -303,29 +321,42 @@ function advance(): void {
     updateStatus(true);
   }
 }
-function press(dir: Thrust): void {
+/** A key or finger presses arrow `dir`: it becomes the latest arrow held. */
+function press(dir: Arrow): void {
+  holds.set(dir, (holds.get(dir) ?? 0) + 1);
   const i = held.indexOf(dir);
   if (i >= 0) held.splice(i, 1);
   held.push(dir);
   applyHeld();
 }
-function release(dir: Thrust): void {
-  const i = held.indexOf(dir);
-  if (i >= 0) held.splice(i, 1);
+/** A key or finger lets go of arrow `dir`: the arrow stays held while another key or finger holds it. */
+function release(dir: Arrow): void {
+  const n = holds.get(dir) ?? 0;
+  if (n > 1) holds.set(dir, n - 1);
+  else {
+    holds.delete(dir);
+    const i = held.indexOf(dir);
+    if (i >= 0) held.splice(i, 1);
+  }
   applyHeld();
 }
 window.addEventListener('keydown', (e) => {
   const dir = KEY_DIR[e.key];
   if (!dir || e.ctrlKey || e.metaKey || e.altKey) return;
   e.preventDefault();
-  if (!e.repeat) press(dir);
+  if (e.repeat || keysDown.has(dir)) return;
+  keysDown.add(dir);
+  press(dir);
 });
 window.addEventListener('keyup', (e) => {
   const dir = KEY_DIR[e.key];
-  if (dir) release(dir);
+  if (!dir || !keysDown.delete(dir)) return;
+  release(dir);
 });
 window.addEventListener('blur', () => {
-  held.length = 0;
+  keysDown.clear();
+  padPointers.clear();
+  letGo();
   applyHeld();
 });
 
@@ -353,8 +384,10 @@ const pad = createButtonBar(
   DIRS.map((dir) => ({
     label: { left: '←', up: '↑', down: '↓', right: '→' }[dir],
     name: `thrust ${dir}`,
-    onPress: () => press(dir),
-    onRelease: () => release(dir),
+    // The pad's own pointer listeners (below) press and let go; these handlers are empty but make
+    // each button capture its pointer, so a finger that leaves the pad still lifts on it.
+    onPress: () => {},
+    onRelease: () => {},
   })),
   { label: 'thrust buttons', touchOnly: false },
 );
@@ -363,10 +396,11 @@ for (const [i, dir] of DIRS.entries()) pad.buttons[i]!.dataset.dir = dir;
 // A finger (or the mouse) held on the pad slides from arrow to arrow: the thrust follows the arrow
 // under it, so the thumb steers without lifting (each button alone keeps its pointer captured and
 // would go on thrusting the first way until the finger lifts). `padPointers` keeps each pointer's
-// direction now; lifting it lets that direction go.
-const padPointers = new Map<number, Thrust>();
+// direction now; lifting it lets that direction go. Each finger holds its own arrow, so two thumbs
+// on ↑ and → thrust diagonally.
+const padPointers = new Map<number, Arrow>();
 /** The direction of the pad's arrow at client point (x, y), px, or null off the arrows. */
-function padDirAt(x: number, y: number): Thrust | null {
+function padDirAt(x: number, y: number): Arrow | null {
   for (const [i, dir] of DIRS.entries()) {
     const r = pad.buttons[i]!.getBoundingClientRect();
     if (x >= r.left && x <= r.right && y >= r.top && y <= r.bottom) return dir;
@@ -375,7 +409,9 @@ function padDirAt(x: number, y: number): Thrust | null {
 }
 pad.element.addEventListener('pointerdown', (e) => {
   const dir = padDirAt(e.clientX, e.clientY);
-  if (dir) padPointers.set(e.pointerId, dir);
+  if (!dir || padPointers.has(e.pointerId)) return;
+  padPointers.set(e.pointerId, dir);
+  press(dir);
 });
 pad.element.addEventListener('pointermove', (e) => {
   const was = padPointers.get(e.pointerId);
@@ -418,8 +454,7 @@ message.addEventListener('click', () => advance());
 const setAction = createActionButton('Level 2 ▶', () => advance());
 let shownAction = '';
 let shownNumbers = '',
-  shownMessage = '',
-  shownThrust: Thrust | '' = '';
+  shownMessage = '';
 
 /** The game-over line in levels: Enter goes on from the level lost (`advance`), R starts again from the first. */
 function overMessage(m: string): string {
@@ -469,10 +504,10 @@ function updateStatus(force = false): void {
     shownAction = next;
     setAction(next !== '', next || undefined);
   }
-  if (force || bh.thrust !== shownThrust) {
-    shownThrust = bh.thrust;
-    for (const [i, dir] of DIRS.entries()) pad.setActive(i, dir === bh.thrust);
-  }
+  // Every frame, not only when the thrust changes: a button also lights and darkens itself under
+  // its own finger. A diagonal lights both of its arrows.
+  const lit = bh.thrust.split('-');
+  for (const [i, dir] of DIRS.entries()) pad.setActive(i, lit.includes(dir));
 }
 
 // ---- Drawing --------------------------------------------------------------------------------------

@@ -4,7 +4,8 @@
  *
  * The rules:
  * - The player's ship starts near the bottom of a `FIELD` (32 m x 24 m) and thrusts with the arrow
- *   keys, one direction at a time, with acceleration `thrust` (m/s^2). The engine spools up over
+ *   keys (two at right angles held together aim it between them: `heldThrust`) with acceleration
+ *   `thrust` (m/s^2), whatever the direction. The engine spools up over
  *   `THRUST_RAMP.up` and down over `THRUST_RAMP.down` (`rampThrust`), so a tap is a nudge and a
  *   held arrow full thrust.
  * - Black holes of random size pull it with Newtonian gravity F = G M m / d^2 (the physics package's
@@ -90,16 +91,52 @@ export const SHIP_RADIUS = 0.3;
  */
 export const THRUST_RAMP = Object.freeze({ up: 0.25, down: 0.1 });
 
-/** Thrust directions: none, or one of the four arrows. */
-export type Thrust = 'none' | 'up' | 'down' | 'left' | 'right';
+/**
+ * Thrust directions: none, one of the four arrows, or two arrows at right angles held together
+ * (a diagonal, e.g. 'up-right').
+ */
+export type Thrust = 'none' | 'up' | 'down' | 'left' | 'right' | 'up-left' | 'up-right' | 'down-left' | 'down-right';
 
+/** One arrow: the four thrust directions a key or a pad button gives. */
+export type Arrow = 'up' | 'down' | 'left' | 'right';
+
+/**
+ * The unit vector of each thrust direction. A diagonal is the sum of its two arrows normalised to
+ * length 1: the ship has one engine (one flame, drawn opposite the thrust; one fuel tank burning a
+ * second a second) that points where the arrows say, so two arrows held aim it between them
+ * rather than add a second engine. That keeps the acceleration `thrust` m/s^2 whatever is held, and
+ * with it the levels' tuning, which measures the holes' pull against the thrust (./levels.ts).
+ */
 const DIRS: Record<Thrust, readonly [number, number]> = {
   none: [0, 0],
   up: [0, 1],
   down: [0, -1],
   left: [-1, 0],
   right: [1, 0],
+  'up-left': [-Math.SQRT1_2, Math.SQRT1_2],
+  'up-right': [Math.SQRT1_2, Math.SQRT1_2],
+  'down-left': [-Math.SQRT1_2, -Math.SQRT1_2],
+  'down-right': [Math.SQRT1_2, -Math.SQRT1_2],
 };
+
+/**
+ * The thrust of the arrows held, `held` in the order they were pressed (oldest first): the latest of
+ * up / down held and the latest of left / right held, combined into a diagonal when there is one of
+ * each ('up' and 'right' give 'up-right'); of two opposite arrows the later wins, as with one key
+ * over another. No arrows give 'none'.
+ * @throws RangeError on an entry that is not an arrow.
+ */
+export function heldThrust(held: readonly Arrow[]): Thrust {
+  let vertical: 'up' | 'down' | '' = '',
+    horizontal: 'left' | 'right' | '' = '';
+  for (const a of held) {
+    if (a === 'up' || a === 'down') vertical = a;
+    else if (a === 'left' || a === 'right') horizontal = a;
+    else throw new RangeError(`black-hole: heldThrust: held must hold only up, down, left, right, got ${JSON.stringify(a)}`);
+  }
+  if (vertical && horizontal) return `${vertical}-${horizontal}`;
+  return vertical || horizontal || 'none';
+}
 
 /** What happened in a step. */
 export type BlackHoleEvent = 'none' | 'fell' | 'scored' | 'lost' | 'over';
@@ -426,7 +463,8 @@ function updateHorizons(game: BlackHoleGame): void {
 }
 
 /**
- * Points the ship's thrust (one direction at a time; 'none' stops it) and turns the exhaust on
+ * Points the ship's thrust (an arrow's direction or a diagonal, always of acceleration
+ * `params.thrust`; 'none' stops it) and turns the exhaust on
  * while thrusting, pointing against the thrust. Ignored once the game is over.
  * @throws RangeError on an unknown direction.
  */

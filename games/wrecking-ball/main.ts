@@ -416,14 +416,24 @@ function clearOfJib(p: Vector3): boolean {
  * pieces the tallest), from a camera the jib does not cross (clearOfJib). A wide screen looks from
  * the side, turned about the vertical so no standing piece is behind the mast (clearOfMast); a tall
  * one from whichever side (every 15 degrees) draws them largest, seeing the jib from its side.
- * Framed again when the canvas changes size by a tenth or more, until the player moves the camera.
+ * Framed again when the canvas changes size by a tenth or more, until the player moves the camera:
+ * from the same side (see frameDirection).
  */
 function frameSite(): void {
   framedLevel = handles.level;
   framePoints = sitePoints();
   rehomedAt.fill(1e9);
+  frameDirection = null;
   frameAgain();
 }
+/**
+ * The side the level is seen from (a unit vector toward the camera) and whether the canvas was
+ * taller than wide when it was chosen; null until `frameAgain` chooses it for a new level. A new
+ * canvas size keeps it and only brings the camera in or out: the side depends on where the jib
+ * points, so choosing it again when a phone's address bar showed or hid during a swing (the canvas
+ * 100 px shorter) turned the view 120 degrees round the site and back.
+ */
+let frameDirection: { dir: Vector3; tall: boolean } | null = null;
 /** The points `frameSite` framed (the level as it stood when framed), for a new canvas size. */
 let framePoints: Vector3[] = [];
 /** Where the ball lay when the site was last framed again for it (once for each place it comes to rest; see rehome). */
@@ -461,10 +471,15 @@ function sitePoints(): Vector3[] {
 /** Frames `framePoints` for the canvas as it is now (see frameSite). */
 function frameAgain(): void {
   const pts = framePoints;
+  const tall = app.camera.aspect < 1;
+  // The level's side already chosen (and the screen not turned between tall and wide): the same side.
+  if (frameDirection !== null && frameDirection.tall === tall) {
+    applyView(fitPoints(pts, frameDirection.dir));
+    return;
+  }
   // A wide screen: the side view, turned clear of the mast. A phone: every 15 degrees round that the
   // mast does not hide a piece from.
   const ways: [number, number][] = [];
-  const tall = app.camera.aspect < 1;
   // The jib seen from its side, within 40 degrees of square to it (pointing at the camera it crossed
   // the site; pointing away, it and the ball were hidden behind the mast).
   const jibX = Math.cos(handles.crane.angle),
@@ -497,6 +512,7 @@ function frameAgain(): void {
   if (best === null) return;
   // Of the views within 4 % of the nearest, the steepest (the site's band of pieces the tallest).
   for (const f of fits) if (f.distance < 1.04 * best.distance && f.elevation > best.elevation) best = f;
+  frameDirection = { dir: best.position.clone().sub(best.lookAt).normalize(), tall };
   applyView(best);
 }
 /** A camera placement `fitPoints` found: its position, the point it looks at, its distance from it (m), the view's elevation (rad). */

@@ -2,7 +2,8 @@
  * Black hole in headless Chromium, level 1: the opening line says what reaching the line is worth;
  * the level's title shows until the first thrust; holding ↑ flies into the hole across the path,
  * which plays the swallow effect and says so; the next thrust clears that message; flying at a side
- * edge warns before the ship leaves the field. A clear shows its points rising from the line; between
+ * edge warns before the ship leaves the field; two arrows held thrust diagonally (keys, and two
+ * fingers on the pad). A clear shows its points rising from the line; between
  * levels the field is empty and the next-level button, over the field, leaves the start pad, the ship
  * and the thrust buttons clear, and a tap on it starts level 2, whose wall is drawn inside the field
  * (desktop and phone); on a phone, after the game a tap on the scene plays again from the level lost.
@@ -45,8 +46,25 @@ describe('black hole', () => {
     expect(await g.page.locator('[data-hud="message"]').textContent()).toMatch(/^Swallowed/);
     await g.page.keyboard.down('ArrowLeft');
     await g.waitFor(() => !(window.game as unknown as BlackHolePage).bh.message.startsWith('Swallowed'), null);
-    await g.waitFor(() => (window.game as unknown as BlackHolePage).edgeWarning(), null);
+    // Paused as soon as the edge warns, so the ship cannot leave the field meanwhile: ↑ pressed
+    // with ← still held thrusts up and left at once and both arrows of the pad light up (before, the
+    // last key pressed was the only thrust); letting ← go leaves ↑, and ↑ then none.
+    await g.waitFor(() => {
+      const w = window.game as unknown as BlackHolePage & { paused: boolean };
+      if (w.edgeWarning()) w.paused = true;
+      return w.paused;
+    }, null);
+    const thrust = () => g.page.evaluate(() => (window.game as unknown as { bh: { thrust: string } }).bh.thrust);
+    await g.page.keyboard.down('ArrowUp');
+    expect(await thrust()).toBe('up-left');
+    await g.waitFor(() => document.querySelectorAll('.bh-pad button.on').length === 2, null);
     await g.page.keyboard.up('ArrowLeft');
+    expect(await thrust()).toBe('up');
+    await g.page.keyboard.up('ArrowUp');
+    expect(await thrust()).toBe('none');
+    await g.page.evaluate(() => {
+      (window.game as unknown as { paused: boolean }).paused = false;
+    });
     expect(g.errors).toEqual([]);
   });
 });
@@ -187,6 +205,17 @@ describe.each([
       }, null)
       .catch(async () => thrust());
     expect(slid, `${device}: thrust after sliding onto →`).toBe('right');
+    if (cdp) {
+      // A second finger on ↑ while the first stays on → thrusts up and right at once.
+      await cdp.send('Input.dispatchTouchEvent', {
+        type: 'touchStart',
+        touchPoints: [
+          { x: right[0], y: right[1], id: 1 },
+          { x: up[0], y: up[1], id: 2 },
+        ],
+      });
+      await p.waitFor(() => (window.game as unknown as Bh).bh.thrust === 'up-right', null);
+    }
     if (cdp) {
       await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
       await cdp.detach();

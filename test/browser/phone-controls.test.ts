@@ -304,6 +304,28 @@ describe('phone controls', () => {
     // The drag let go is a swing of the level's four.
     expect(await g.page.evaluate(() => (window.game as unknown as Held).swings().used)).toBe(ball.used + 1);
     expect(await g.page.locator('.bp-big').count()).toBe(0);
+    // The jib turned 90 degrees (as in a swing's wind-up) and the address bar showing (the page
+    // 100 px shorter): the view is framed again for the new size from the same side, within 2
+    // degrees (chosen again, the side follows the jib: the view turned 120 degrees and back).
+    const side = () =>
+      g.page.evaluate(() => {
+        const app = (
+          window.game as unknown as {
+            app: { camera: { position: { x: number; z: number } }; controls: { target: { x: number; z: number } } };
+          }
+        ).app;
+        return (Math.atan2(app.camera.position.x - app.controls.target.x, app.camera.position.z - app.controls.target.z) * 180) / Math.PI;
+      });
+    const side0 = await side();
+    await g.page.evaluate(() => {
+      (window.game as unknown as { handles(): { crane: { angle: number } } }).handles().crane.angle += Math.PI / 2;
+    });
+    const framed = await g.page.evaluate(() => JSON.stringify((window.game as unknown as { framing(): unknown }).framing()));
+    await g.page.setViewportSize({ width: PHONE.viewport.width, height: PHONE.viewport.height - 100 });
+    // Framed again: the framing's orbit target moves as the camera comes in for the shorter screen.
+    await g.waitFor((before) => JSON.stringify((window.game as unknown as { framing(): unknown }).framing()) !== before, framed);
+    expect(Math.abs((((await side()) - side0 + 540) % 360) - 180)).toBeLessThan(2);
+    await g.page.setViewportSize(PHONE.viewport);
     // Count every piece as fallen: the level is cleared and the button appears; a tap goes on.
     await g.page.evaluate(() => {
       for (const p of (window.game as unknown as { handles(): { pieces: { fallen: boolean }[] } }).handles().pieces) p.fallen = true;

@@ -16,6 +16,7 @@ import {
   FIELD,
   G_GAME,
   gravitationalConstant,
+  heldThrust,
   holeHit,
   LINE_Y,
   layoutHoles,
@@ -244,6 +245,31 @@ describe('thrust, exhaust, prediction', () => {
     for (let i = 0; i < 60; i++) stepBlackHole(g);
     expect(query(g.world, [g.world.components.Particle]).length).toBe(0);
     expect(() => setThrust(g, 'sideways' as never)).toThrow(/thrust must be one of none, up, down, left, right/);
+  });
+
+  test('two arrows at right angles thrust diagonally at the same `thrust` m/s^2 as one; opposite arrows: the later wins', () => {
+    expect(heldThrust([])).toBe('none');
+    expect(heldThrust(['up'])).toBe('up');
+    expect(heldThrust(['up', 'right'])).toBe('up-right');
+    expect(heldThrust(['left', 'down'])).toBe('down-left');
+    expect(heldThrust(['left', 'up', 'right'])).toBe('up-right');
+    expect(heldThrust(['up', 'down'])).toBe('down');
+    expect(() => heldThrust(['north' as never])).toThrow(/heldThrust: held must hold only up, down, left, right, got "north"/);
+    // Far from the holes (none within 4 m of the start), the velocity gained in 0.5 s with up-right
+    // held points at 45 degrees and is as large as with up held (the pull differs by < 0.05 m/s).
+    const gain = (dir: 'none' | 'up' | 'up-right') => {
+      const h = createBlackHoleGame({ seed: 6, holes: 1, thrust: 6 });
+      setThrust(h, dir);
+      for (let i = 0; i < 30; i++) stepBlackHole(h);
+      return [h.world.components.Velocity.x[slotOf(h.ship)]!, h.world.components.Velocity.y[slotOf(h.ship)]!] as const;
+    };
+    const none = gain('none'),
+      up = gain('up'),
+      diag = gain('up-right');
+    const dx = diag[0] - none[0],
+      dy = diag[1] - none[1];
+    expect(Math.abs(Math.hypot(dx, dy) - (up[1] - none[1]))).toBeLessThan(0.05);
+    expect(Math.abs(Math.atan2(dy, dx) - Math.PI / 4)).toBeLessThan(0.01);
   });
 
   test('the engine spools up and down: a tap is a nudge, a held arrow full thrust, a new arrow swings the thrust over', () => {
