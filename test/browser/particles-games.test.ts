@@ -454,7 +454,7 @@ describe('black hole', () => {
     expect(page.errors).toEqual([]);
   });
 
-  it('arrow keys thrust: up raises the vertical velocity, right the horizontal; the exhaust runs while thrusting', async () => {
+  it('arrow keys thrust: up raises the vertical velocity, up and right together the horizontal too; the exhaust runs while thrusting', async () => {
     const g = page;
     await g.page.evaluate(() => (window.game as unknown as BlackHoleGameHandle).reset());
     const v0 = await ship(g);
@@ -470,9 +470,9 @@ describe('black hole', () => {
     );
     expect(up.thrust).toBe('up');
     expect(up.s[1]).toBeGreaterThan(v0[1]!);
-    // One direction at a time: pressing right while up is held switches to right.
+    // Two arrows held thrust diagonally: right while up is held gives up-right.
     await g.page.keyboard.down('ArrowRight');
-    expect(await g.page.evaluate(() => (window.game as unknown as BlackHoleGameHandle).bh.thrust)).toBe('right');
+    expect(await g.page.evaluate(() => (window.game as unknown as BlackHoleGameHandle).bh.thrust)).toBe('up-right');
     const right = await g.waitFor(
       () => {
         const s = (window.game as unknown as BlackHoleGameHandle).ship();
