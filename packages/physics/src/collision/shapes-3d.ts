@@ -67,14 +67,12 @@ export function shape3DCollisionSystem(world: PhysicsWorld): void {
     for (let i = 0; i < wakes.count; i++) woken += wakeIsland3D(world, wakes.list[i]!);
     if (woken === 0) break;
   }
-  // The contact count of the step's statistics includes the 3D shape contact points (solver rows): added
-  // to the ball contacts when the balls' narrowphase ran this step (it sets the count, earlier in the
-  // collide stage), else the count is this pass's alone (adding to last step's summed every step's).
+  // The contact count of the step's statistics: the ball contacts of this step (their buffer, which the
+  // balls' narrowphase refills earlier in the collide stage and which stays empty in a world without
+  // it) and the 3D shape contact points (solver rows).
   let points = 0;
   for (let i = 0, b = st.current; i < b.count; i++) points += b.points[i]!;
-  const stats = world.collision.stats,
-    balls = world.builtins.get('narrowphase');
-  stats.contacts = (balls !== undefined && world.stages.collide.includes(balls) ? stats.contacts : 0) + points;
+  world.collision.stats.contacts = world.collision.contacts.count + points;
   sensorEvents(world, st);
 }
 
