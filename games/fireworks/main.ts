@@ -1066,10 +1066,8 @@ function drawCard(f: StatusFrame): void {
   if (f.lost) {
     title = `Out of shells · ${lv.name}`;
     big = `${run.lit.filter(Boolean).length} of ${run.lit.length} lit`;
-    lines = [
-      `${plural(lv.shells, 'shell', 'shells')} for ${run.lit.length} lanterns: light some together`,
-      `Tip: ${touch ? 'tap' : 'click'} ${lv.tip}`,
-    ];
+    const advice = lv.shells < run.lit.length ? 'light two at once' : 'make every shell count';
+    lines = [`${plural(lv.shells, 'shell', 'shells')}, ${run.lit.length} lanterns: ${advice}`, `Tip: ${touch ? 'tap' : 'click'} ${lv.tip}`];
   } else {
     title = f.last ? 'Show complete!' : `Level ${run.level + 1} lit! · ${lv.name}`;
     big = starText(run.stars);
