@@ -1361,7 +1361,8 @@ function updateStatus(): void {
           ? 'Too high: throw from below the orange line to score'
           : 'Up through the net does not count: drop it in from above'
         : round.phase === 'ready' && round.shots === 0
-          ? `${throwHow} through the hoop from below the orange line`
+          ? // One line on a phone too: a second line there moved the box down the moment it changed.
+            `${throwHow} through the hoop${touch ? '' : ' from below the orange line'}`
           : teach;
   if (status.set({ goal, numbers, hint }, over)) setAction(over);
   drawEndCard(over);
