@@ -6,7 +6,8 @@
 //   left and right), up and down from the burst point, for a peony and a willow, averaged over shells
 //   aimed across the band of a phone's sky (64 x 108 m) and a desktop's (120 x 80 m), 3 seeds each.
 //   Compare with lanterns.ts QUICK_REACH (the page's charging ring and the grouping test use it).
-// --par: that each level (1-based) can be lit in par shells, in both skies: each level's plan (below:
+// --par: that each level (1-based) can be lit in par shells (and that it gives that many: LEVELS' shells,
+//   and whether one shell a lantern would run out), in both skies: each level's plan (below:
 //   which lanterns each shell is meant to light, aimed at a point worked out from them, held or not)
 //   is searched over aim points around the plan's (every 0.02 W across and up to 0.06 W either way)
 //   for the shells that light their group on all 3 seeds. Prints, per level and sky, each shell's
@@ -192,6 +193,11 @@ if (both || args.includes('--par'))
     const lv = LEVELS[level];
     const plan = PLANS[level];
     if (plan.length !== lv.par) throw new Error(`fireworks-levels: level ${n}'s plan has ${plan.length} shells, par is ${lv.par}`);
+    if (lv.shells < lv.par) throw new Error(`fireworks-levels: level ${n} gives ${lv.shells} shells, fewer than its par ${lv.par}`);
+    // Not trivial: one shell a lantern runs out of shells where the level gives fewer than lanterns.
+    console.log(
+      `level ${n}: ${lv.shells} shells for ${lv.lanterns.length} lanterns (par ${lv.par})${lv.shells < lv.lanterns.length ? ': one shell a lantern runs out' : ''}`,
+    );
     for (const sky of SKIES) {
       const W = sky.width;
       const best = [];

@@ -211,11 +211,48 @@ export function mayScore(spot: HoopSpot, y: number): boolean {
 /** The phase of a round: warming up until the first basket, the clock running, or time up. */
 export type RoundPhase = 'ready' | 'playing' | 'over';
 
+/**
+ * Points a basket is worth before the streak multiplier, by the ball that went in: one of the
+ * player's basketballs (thrown from anywhere below the rim), a ball of the heap on the floor (it has
+ * to be thrown from where it lies) and the heap's one gold ball.
+ */
+export const BALL_POINTS = Object.freeze({ basketball: 1, heap: 2, gold: 5 });
+
+/** The kinds of ball a basket can be made with (keys of BALL_POINTS). */
+export type BallKind = keyof typeof BALL_POINTS;
+
+/** The largest streak multiplier (reached with the fourth basket in a row). */
+export const MAX_MULTIPLIER = 4;
+
+/**
+ * A thrown ball that has not gone through the hoop this long after its throw, s (world time), is a
+ * miss: the streak ends (the page calls a throw a miss sooner, as soon as it falls below the rim's
+ * line beside the hoop).
+ */
+export const MISS_SECONDS = 3;
+
+/**
+ * The multiplier of the next basket after `streak` baskets in a row (no miss between them): 1 + streak,
+ * at most MAX_MULTIPLIER. @throws RangeError unless streak is an integer >= 0.
+ */
+export function streakMultiplier(streak: number): number {
+  if (!(Number.isInteger(streak) && streak >= 0)) throw new RangeError(`streakMultiplier: streak must be an integer >= 0, got ${streak}`);
+  return Math.min(MAX_MULTIPLIER, 1 + streak);
+}
+
 /** A round of the hoop game. */
 export interface HoopRound {
   phase: RoundPhase;
   /** Baskets scored this round. */
   score: number;
+  /** Points this round: each basket's BALL_POINTS times its streak multiplier. */
+  points: number;
+  /** Baskets in a row since the last miss. */
+  streak: number;
+  /** The longest streak of the round. */
+  bestStreak: number;
+  /** Points the last basket made (0 before the first). */
+  lastPoints: number;
   /** Length of the round, s. */
   readonly seconds: number;
   /** Seconds left on the clock, in [0, seconds]. */
@@ -229,7 +266,7 @@ export interface HoopRound {
 /** A new round of `seconds` s (default ROUND_SECONDS), warming up until the first basket. @throws RangeError unless seconds is finite and > 0. */
 export function createRound(seconds = ROUND_SECONDS): HoopRound {
   if (!(seconds > 0 && Number.isFinite(seconds))) throw new RangeError(`createRound: seconds must be finite and > 0, got ${seconds}`);
-  return { phase: 'ready', score: 0, seconds, timeLeft: seconds, spot: 0, shots: 0 };
+  return { phase: 'ready', score: 0, points: 0, streak: 0, bestStreak: 0, lastPoints: 0, seconds, timeLeft: seconds, spot: 0, shots: 0 };
 }
 
 /** The player threw a ball: counts the shot (the clock waits for the first basket). Nothing changes once time is up. */
@@ -252,17 +289,31 @@ export function roundTick(round: HoopRound, dt: number): boolean {
 }
 
 /**
- * A basket: one point and the hoop moves to its next spot (of `spotCount`, cycling); the first one
- * starts the clock. Ignored once time is up. @returns whether it counted.
- * @throws RangeError if spotCount is not a positive integer.
+ * A basket with a ball of `kind`: BALL_POINTS[kind] times the streak's multiplier (streakMultiplier of
+ * the baskets in a row before it), the streak grows and the hoop moves to its next spot (of
+ * `spotCount`, cycling); the first one starts the clock. Ignored once time is up. @returns whether it
+ * counted (the points it made are in `lastPoints`).
+ * @throws RangeError if spotCount is not a positive integer or kind is not a key of BALL_POINTS.
  */
-export function roundBasket(round: HoopRound, spotCount: number): boolean {
+export function roundBasket(round: HoopRound, spotCount: number, kind: BallKind = 'basketball'): boolean {
   if (!(Number.isInteger(spotCount) && spotCount > 0))
     throw new RangeError(`roundBasket: spotCount must be a positive integer, got ${spotCount}`);
+  if (!Object.hasOwn(BALL_POINTS, kind)) throw new RangeError(`roundBasket: kind must be basketball, heap or gold, got ${kind}`);
   if (round.phase === 'over') return false;
   round.phase = 'playing';
   round.score++;
+  round.lastPoints = BALL_POINTS[kind] * streakMultiplier(round.streak);
+  round.points += round.lastPoints;
+  round.streak++;
+  round.bestStreak = Math.max(round.bestStreak, round.streak);
   round.spot = (round.spot + 1) % spotCount;
+  return true;
+}
+
+/** A miss (a thrown ball that did not go in within MISS_SECONDS): the streak ends. Ignored once time is up. @returns whether a streak was broken. */
+export function roundMiss(round: HoopRound): boolean {
+  if (round.phase === 'over' || round.streak === 0) return false;
+  round.streak = 0;
   return true;
 }
 
@@ -325,6 +376,11 @@ export interface ThrowPathOptions {
   walls?: readonly (readonly [number, number, number, number, number])[];
   /** The hoop whose net (`netContact`) stops the ball as it would the real one. */
   hoop?: HoopSpot;
+  /**
+   * Balls the path ends at, m: [x, y, radius] each (the other balls near the throw, which move when
+   * hit, so no bounce off them is predicted): the path's last point is where the ball first touches one.
+   */
+  stops?: readonly (readonly [number, number, number])[];
 }
 
 /**
@@ -336,7 +392,8 @@ export interface ThrowPathOptions {
  * integrator is. A bounce reverses the speed into the surface times `restitution` (none below the
  * engine's 0.5 m/s restitution threshold) and, with `friction`, takes the impulse along the surface
  * that stops the contact point's slip (m / 3 of it for a disc), at most friction times the normal
- * impulse, which also spins the ball (tracked from 0 at the throw).
+ * impulse, which also spins the ball (tracked from 0 at the throw). The path ends where the ball
+ * first touches one of `stops` (the other balls) moving into it.
  * @throws RangeError on a non-finite start or velocity, or a bad option.
  */
 export function throwPath(x: number, y: number, vx: number, vy: number, o: ThrowPathOptions): number[] {
@@ -437,8 +494,12 @@ export function throwPath(x: number, y: number, vx: number, vy: number, o: Throw
         [x, y, vx, vy] = net;
       }
     }
-    if (touches || n % perPoint === 0) out.push(x, y);
-    if (touches && ++bounced > most) break;
+    // Touching a stop while moving into it (a ball resting against the thrown one and left behind does not stop it).
+    const stopped = (o.stops ?? []).some(
+      ([sx, sy, sr]) => (x - sx) ** 2 + (y - sy) ** 2 < (r + sr) ** 2 && (x - sx) * vx + (y - sy) * vy < 0,
+    );
+    if (touches || stopped || n % perPoint === 0) out.push(x, y);
+    if (stopped || (touches && ++bounced > most)) break;
   }
   return out;
 }

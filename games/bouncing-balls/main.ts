@@ -2,10 +2,16 @@
  * Bouncing balls: the book's bouncing balls grown up. Balls of different sizes and masses fall,
  * bounce off the box, the inclined walls (and their end points) and each other.
  *
- * The game on top (./hoop.ts): throw balls through the hoop as often as you can in 60 s; the hoop
- * moves after each basket, the clock starts with the first basket (a warm-up until then), the best score is kept in
- * localStorage; R or the Play-again button starts a new round. The status row above the box says
- * the goal and shows baskets, time and best.
+ * The game on top (./hoop.ts): throw balls through the hoop for points in 60 s; the hoop moves after
+ * each basket, the clock starts with the first basket (a warm-up until then). The heap matters: a
+ * pull that starts on one of its balls throws that ball, worth 2 (hoop.ts BALL_POINTS), and one of
+ * them is gold (a halo, worth 5; a new one after it scores); a pull from empty space throws a new
+ * basketball, worth 1. Baskets in a row multiply (x2, x3, x4: hoop.ts streakMultiplier); a thrown
+ * ball that falls below the rim beside the hoop is a miss and ends the streak (falling notes). The
+ * aiming arc ends with a red cross at a ball in its way (the heap blocks some throws). The best
+ * round's points are kept in localStorage; when time is up an end card over the box shows the points,
+ * baskets, throws and longest streak, and R or the Play-again button starts a new round. The status
+ * row above the box says the goal and shows points, the next basket's multiplier, time and best.
  *
  * Input: a click drops a ball at the pointer, and a pull throws one slingshot-style from where the
  * press began, on a ball or not (opposite to
@@ -39,16 +45,29 @@ import {
   getSound,
   numberParam,
   pageLayout,
+  plural,
   type SoundMaterial,
   seedParam,
 } from '@bitphysics/game-kit';
 import { enableMouseDrag } from '@bitphysics/game-kit/drag';
 import { startPixiGame } from '@bitphysics/game-kit/pixi';
-import { addBox, createPhysicsWorld, type PhysicsWorld, setMaterial as setBodyMaterial, slotOf, step } from '@bitphysics/physics';
-import { Graphics, Text } from 'pixi.js';
+import {
+  addBox,
+  createPhysicsWorld,
+  type PhysicsWorld,
+  Rng,
+  setAngularVelocity,
+  setMaterial as setBodyMaterial,
+  setVelocity,
+  slotOf,
+  step,
+} from '@bitphysics/physics';
+import { Container, Graphics, Text } from 'pixi.js';
 import {
   addHoop,
   BACKBOARD,
+  BALL_POINTS,
+  type BallKind,
   createRound,
   HOOP_RADIUS,
   type HoopRound,
@@ -57,6 +76,7 @@ import {
   hoopOpening,
   hoopSegments,
   hoopSpots,
+  MISS_SECONDS,
   mayScore,
   NET,
   netContact,
@@ -64,9 +84,11 @@ import {
   ROUND_SECONDS,
   removeHoop,
   roundBasket,
+  roundMiss,
   roundShot,
   roundTick,
   slingVelocity,
+  streakMultiplier,
   throwPath,
 } from './hoop';
 import { createKnockLimiter, KNOCK_LIMITS } from './knocks';
@@ -90,8 +112,8 @@ import {
 
 /** Colour of the heavy balls (density 4 kg/m^2, steel); the others keep their seeded colours from BALL_PALETTE. */
 const HEAVY_COLOR = 0xa9b4c6;
-/** The sandbox balls' colours: bright, so they read on the court's dark wall. */
-const BALL_PALETTE = [0x4cc9f0, 0xf15bb5, 0x9b5de5, 0x00bbf9, 0x00f5d4, 0xfee440, 0xff6b6b, 0x8ac926, 0xffca3a, 0x72efdd];
+/** The sandbox balls' colours: bright, so they read on the court's dark wall; no yellow or orange, the gold ball's and the basketballs'. */
+const BALL_PALETTE = [0x4cc9f0, 0xf15bb5, 0x9b5de5, 0x00bbf9, 0x00f5d4, 0xb8a1ff, 0xff6b6b, 0x8ac926, 0xff8fab, 0x72efdd];
 /** A mouse press that moves less than this, CSS px, is a click (drop) or a hold; more is a throw. */
 const CLICK_SLOP = 6;
 /** The same for a finger, CSS px: a fingertip resting on glass wobbles a few pixels. */
@@ -128,12 +150,22 @@ let crates: number[] = [];
 let round: HoopRound = createRound(roundSeconds);
 /** Entity ids of the hoop's backboard and front rim. */
 let hoopIds: number[] = [];
-/** The player's balls: whether each may score (released below the rim) and its centre after the last step, m. */
-let playerBalls = new Map<number, { scores: boolean; x: number; y: number }>();
-/** Colour of the player's balls (a basketball's orange), and of those released too high to score. */
+/**
+ * The balls in flight after a throw: whether each may still score (released below the rim, not up
+ * through the net), its centre after the last step, m, what it is worth (BALL_POINTS) and the world
+ * time it was thrown, s. A ball that has not gone in MISS_SECONDS after its throw is a miss and leaves.
+ */
+let flights = new Map<number, { scores: boolean; x: number; y: number; kind: BallKind; at: number }>();
+/** The player's basketballs (made by a throw or a click from empty space): drawn orange with seams. */
+let basketballs = new Set<number>();
+/** The heap's gold ball (0 when the heap is empty): worth BALL_POINTS.gold. */
+let goldBall = 0;
+/** Colour of the player's balls (a basketball's orange), of those released too high to score, and of the gold ball. */
 const PLAYER_COLOR = 0xff8a2a;
 const HIGH_COLOR = 0x9aa4b5;
-const BEST_KEY = 'bitphysics.bouncing-balls.best';
+const GOLD_COLOR = 0xffd23f;
+/** The best round's points (a basket's points: ball x streak); baskets were the score before. */
+const BEST_KEY = 'bitphysics.bouncing-balls.best-points';
 
 /** The best score kept in local storage (0 when none, or storage is unavailable). */
 function readBest(): number {
@@ -149,7 +181,17 @@ let best = readBest();
  * The last basket, for its celebration: where it went in (the rim's centre, m), the world time it was
  * scored (s), the hoop's spot it went through (an index of hoopSpots) and the score it made.
  */
-let lastBasket = { x: 0, y: 0, time: -10, spot: 0, score: 0 };
+let lastBasket: { x: number; y: number; time: number; spot: number; score: number; points: number; kind: BallKind } = {
+  x: 0,
+  y: 0,
+  time: -10,
+  spot: 0,
+  score: 0,
+  points: 0,
+  kind: 'basketball',
+};
+/** When a miss last broke a streak (performance.now() ms), for the status row's word. */
+let missAt = -1e9;
 
 /** Builds a fresh world with the scene from the current params (the shell calls it at start and on R). */
 function createWorld(): PhysicsWorld {
@@ -167,8 +209,12 @@ function createWorld(): PhysicsWorld {
   handles = buildBouncingBalls(world, options);
   crates = [];
   round = createRound(roundSeconds);
-  playerBalls = new Map();
-  lastBasket = { x: 0, y: 0, time: -10, spot: 0, score: 0 };
+  flights = new Map();
+  basketballs = new Set();
+  goldBall = 0;
+  goldRng = new Rng(params.seed + 7);
+  missAt = -1e9;
+  lastBasket = { x: 0, y: 0, time: -10, spot: 0, score: 0, points: 0, kind: 'basketball' };
   hoopIds = addHoop(world, hoopSpots(TALL)[0]!, params.restitution, params.friction);
   return world;
 }
@@ -201,21 +247,53 @@ const sound = getSound();
 /** What a body sounds like: a crate wood, a heavy ball metal, the others rubber; walls stone. */
 function materialOf(world: PhysicsWorld, body: number): SoundMaterial {
   if (body <= 0) return 'stone';
+  // The rim and the backboard clang.
+  if (hoopIds.includes(body)) return 'metal';
   if (crates.includes(body)) return 'wood';
   return isHeavy(world, body) ? 'metal' : 'soft';
 }
 
+/** What a ball is worth in a basket: the gold ball, one of the player's basketballs, or a ball of the heap. */
+function kindOf(e: number): BallKind {
+  return e === goldBall ? 'gold' : basketballs.has(e) ? 'basketball' : 'heap';
+}
+
 /**
- * The hoop game after a step: a player's ball whose centre went down through the hoop's opening is a
- * basket (the ball is taken out, the hoop moves on); then the clock runs. Keeps the best score.
+ * Makes a new gold ball: a heap ball (not a basketball, not in flight) picked at random among those
+ * with no ball right above them, so it is one the player can reach and throw (any heap ball if none
+ * is free; 0 when the heap is empty).
+ */
+function pickGold(world: PhysicsWorld): void {
+  const c = world.components,
+    P = c.Position;
+  const heap = handles.balls.filter((e) => !basketballs.has(e) && !flights.has(e));
+  const free = heap.filter((e) => {
+    const s = slotOf(e);
+    const x = P.x[s]!,
+      y = P.y[s]!,
+      r = c.Ball.radius[s]!;
+    return !heap.some((o) => o !== e && P.y[slotOf(o)]! > y && Math.abs(P.x[slotOf(o)]! - x) < r + c.Ball.radius[slotOf(o)]!);
+  });
+  const from = free.length > 0 ? free : heap;
+  goldBall = from.length > 0 ? from[Math.floor(goldRng.next() * from.length)]! : 0;
+  if (goldBall !== 0) renderer.setColor(goldBall, GOLD_COLOR);
+}
+/** Picks the gold balls (seeded, so a seed's round is the same). */
+let goldRng = new Rng(1);
+
+/**
+ * The hoop game after a step: a thrown ball whose centre went down through the hoop's opening is a
+ * basket (the ball is taken out, the hoop moves on; the gold ball goes to another heap ball); a
+ * thrown ball still out MISS_SECONDS after its throw is a miss, which ends the streak; then the clock
+ * runs. Keeps the best score.
  */
 function playHoop(world: PhysicsWorld): void {
   const P = world.components.Position;
   const spots = hoopSpots(TALL);
   let opening = hoopOpening(spots[round.spot]!);
-  for (const [e, b] of playerBalls) {
+  for (const [e, b] of flights) {
     if (!handles.balls.includes(e)) {
-      playerBalls.delete(e);
+      flights.delete(e);
       continue;
     }
     const x = P.x[slotOf(e)]!,
@@ -224,53 +302,72 @@ function playHoop(world: PhysicsWorld): void {
     if (crossing === 1 && b.scores) {
       // Up through the hoop from below: no basket when it comes back down.
       b.scores = false;
-      renderer.setColor(e, HIGH_COLOR);
+      if (basketballs.has(e)) renderer.setColor(e, HIGH_COLOR);
       tooHighAt = performance.now();
       hintReason = 'below';
     }
-    if (b.scores && crossing === -1 && roundBasket(round, spots.length)) {
+    if (b.scores && crossing === -1 && roundBasket(round, spots.length, b.kind)) {
       lastBasket = {
         x: opening.minX + 0.5 * (opening.maxX - opening.minX),
         y: opening.y,
         time: world.time,
         spot: (round.spot + spots.length - 1) % spots.length,
         score: round.score,
+        points: round.lastPoints,
+        kind: b.kind,
       };
-      playerBalls.delete(e);
+      flights.delete(e);
+      basketballs.delete(e);
       removeBall(world, handles, e);
+      if (e === goldBall) pickGold(world);
       removeHoop(world, hoopIds);
       hoopIds = addHoop(world, spots[round.spot]!, handles.params.restitution, handles.params.friction);
       opening = hoopOpening(spots[round.spot]!);
-      cheer(round.score);
+      cheer(round.score, b.kind);
       keepBest();
       continue;
     }
     b.x = x;
     b.y = y;
+    // Falling below the rim's line beside the hoop (the way in is down through it), or out too long: a miss.
+    const falling = world.components.Velocity.y[slotOf(e)]! < 0 && y < opening.y;
+    if (falling || world.time - b.at > MISS_SECONDS) {
+      flights.delete(e);
+      if (b.scores && roundMiss(round)) {
+        missAt = performance.now();
+        // A falling pair of low notes: the streak is gone.
+        sound.chime(294, 0.2);
+        setTimeout(() => sound.chime(220, 0.35), 110);
+      }
+    }
   }
   if (roundTick(round, world.dt)) {
     keepBest();
     sound.chime(440, 0.6);
+    setTimeout(() => sound.chime(554.37, 0.5), 160);
+    setTimeout(() => sound.chime(659.25, 0.9), 320);
   }
 }
 
 /**
  * A basket's sound: the net's swish, then a rising major chord (three notes 90 ms apart) that starts
- * a semitone higher with each basket of the round (`score`, up to an octave).
+ * a semitone higher with each basket of the streak (up to an octave); the gold ball adds the octave
+ * on top.
  */
-function cheer(score: number): void {
+function cheer(score: number, kind: BallKind): void {
   sound.rip(0.3);
-  const base = 523.25 * 2 ** (Math.min(12, score - 1) / 12);
+  const base = 523.25 * 2 ** (Math.min(12, Math.max(score, round.streak) - 1) / 12);
   sound.chime(base, 0.3);
   setTimeout(() => sound.chime(base * 1.26, 0.3), 90);
   setTimeout(() => sound.chime(base * 1.5, 0.55), 180);
+  if (kind === 'gold') setTimeout(() => sound.chime(base * 2, 0.8), 270);
   bumpScore();
 }
 
 /** Keeps the round's score as the best if it beats it (in localStorage when it can). */
 function keepBest(): void {
-  if (round.score <= best) return;
-  best = round.score;
+  if (round.points <= best) return;
+  best = round.points;
   try {
     localStorage.setItem(BEST_KEY, String(best));
   } catch {
@@ -327,7 +424,7 @@ const game = await startPixiGame({
   step: stepWorld,
   bodies: () => handles.balls.length,
   controls: [
-    { keys: 'Drag', action: 'pull back and let go: throw a ball (through the hoop scores)' },
+    { keys: 'Drag', action: 'pull back and let go: throw (from a ball of the heap: that ball)' },
     { keys: 'Click', action: 'drop a ball' },
     { keys: 'Hold on a ball', touch: 'Hold on a ball', action: 'hold still 1 s: pick it (or a crate) up and carry it' },
     { keys: 'R', action: 'new round (and reset)' },
@@ -365,7 +462,11 @@ function colorHeavy(world: PhysicsWorld): void {
   for (const e of handles.balls) if (isHeavy(world, e)) renderer.setColor(e, HEAVY_COLOR);
 }
 colorHeavy(shell.world);
-shell.onWorldChange((world) => colorHeavy(world));
+pickGold(shell.world);
+shell.onWorldChange((world) => {
+  colorHeavy(world);
+  pickGold(world);
+});
 
 /** Sets restitution and friction of the scene and of the hoop (the panel). */
 function setMaterial(restitution: number, friction: number): void {
@@ -505,11 +606,41 @@ function fullPull(): number {
   return Math.min(420, Math.max(230, 0.6 * Math.min(canvas.clientWidth || innerWidth, canvas.clientHeight || innerHeight)));
 }
 
-/** The throw the pointer would make now: start (m) and velocity (m/s) of the slingshot. */
-function currentThrow(): { x: number; y: number; vx: number; vy: number } {
+/**
+ * The throw the pointer would make now: start (m), velocity (m/s) of the slingshot, and the ball's
+ * radius (m) and mass (kg): from the pressed ball's centre when the press began on a ball (that ball
+ * is thrown), else from the press point (a new basketball).
+ */
+function currentThrow(): { x: number; y: number; vx: number; vy: number; radius: number; mass: number } {
   const cam = renderer.camera;
   const [vx, vy] = slingVelocity(lastX - startX, lastY - startY, fullPull());
-  return { x: cam.toWorldX(startX), y: cam.toWorldY(startY), vx, vy };
+  if (pressBall !== 0 && handles.balls.includes(pressBall)) {
+    const c = shell.world.components,
+      s = slotOf(pressBall);
+    return { x: c.Position.x[s]!, y: c.Position.y[s]!, vx, vy, radius: c.Ball.radius[s]!, mass: c.Mass.value[s]! };
+  }
+  const mass = Math.PI * PLAYER_RADIUS * PLAYER_RADIUS * DENSITIES.normal;
+  return { x: cam.toWorldX(startX), y: cam.toWorldY(startY), vx, vy, radius: PLAYER_RADIUS, mass };
+}
+
+/** The ball a press began on (a pull throws it), 0 when it began on empty space (a pull throws a new basketball). */
+let pressBall = 0;
+
+/** The ball whose edge is nearest (x, y), m, within the drag's reach of it (0.6 mean radii), or 0. */
+function ballUnder(x: number, y: number): number {
+  const c = shell.world.components,
+    reach = 0.6 * meanRadiusFor(params.count);
+  let best = 0,
+    bestGap = reach;
+  for (const e of handles.balls) {
+    const s = slotOf(e);
+    const gap = Math.hypot(c.Position.x[s]! - x, c.Position.y[s]! - y) - c.Ball.radius[s]!;
+    if (gap <= bestGap) {
+      bestGap = gap;
+      best = e;
+    }
+  }
+  return best;
 }
 
 canvas.addEventListener('pointerdown', (event) => {
@@ -520,6 +651,7 @@ canvas.addEventListener('pointerdown', (event) => {
   lastX = startX;
   lastY = startY;
   dragged = false;
+  pressBall = ballUnder(renderer.camera.toWorldX(startX), renderer.camera.toWorldY(startY));
   slop = event.pointerType === 'touch' ? TOUCH_SLOP : CLICK_SLOP;
   holdStart = performance.now();
   clearTimeout(holdTimer);
@@ -589,8 +721,15 @@ function release(event: PointerEvent, cancelled: boolean): void {
   [lastX, lastY] = local(event);
   if (Math.hypot(lastX - startX, lastY - startY) > slop) dragged = true;
   const t = currentThrow();
-  if (!dragged) shoot(t.x, t.y, 0, 0, false);
+  const ball = pressBall;
+  pressBall = 0;
+  if (!dragged) shoot(cam().toWorldX(startX), cam().toWorldY(startY), 0, 0, false);
+  else if (ball !== 0 && handles.balls.includes(ball)) throwBall(ball, t.vx, t.vy);
   else shoot(t.x, t.y, t.vx, t.vy);
+}
+/** The renderer's camera. */
+function cam() {
+  return renderer.camera;
 }
 // A long press on a touch screen may open the browser's menu: the hold picks a ball up instead.
 canvas.addEventListener('contextmenu', (event) => event.preventDefault());
@@ -601,12 +740,36 @@ canvas.addEventListener('contextmenu', (event) => event.preventDefault());
  */
 function shoot(x: number, y: number, vx: number, vy: number, thrown = true): number {
   const e = spawnBall(shell.world, handles, x, y, vx, vy, PLAYER_RADIUS);
+  basketballs.add(e);
+  launch(e, thrown);
+  return e;
+}
+
+/**
+ * Ball `e` of the scene (a heap ball, the gold one or a basketball lying about) thrown from where it
+ * is with velocity (vx, vy), m/s, as the slingshot throws: its spin stopped, it counts as a shot and
+ * may score its BALL_POINTS if it is below the rim. @throws RangeError if it is not a ball of the scene.
+ */
+function throwBall(e: number, vx: number, vy: number): void {
+  if (!handles.balls.includes(e)) throw new RangeError(`throwBall: ${e} is not a ball of the scene`);
+  setVelocity(shell.world, e, [vx, vy]);
+  setAngularVelocity(shell.world, e, 0);
+  launch(e, true);
+}
+
+/**
+ * Follows ball `e`, just released, as a throw (`thrown`) or a drop: orange (a basketball) if it may
+ * score, grey if released above the rim's line; a throw counts as a shot.
+ */
+function launch(e: number, thrown: boolean): void {
   const P = shell.world.components.Position;
   const bx = P.x[slotOf(e)]!,
     by = P.y[slotOf(e)]!;
   const scores = mayScore(hoopSpots(TALL)[round.spot]!, by);
-  playerBalls.set(e, { scores, x: bx, y: by });
-  renderer.setColor(e, scores ? PLAYER_COLOR : HIGH_COLOR);
+  if (basketballs.has(e)) renderer.setColor(e, scores ? PLAYER_COLOR : HIGH_COLOR);
+  // A drop falls: it cannot go down through the hoop from below the rim, nor be a miss.
+  if (thrown) flights.set(e, { scores, x: bx, y: by, kind: kindOf(e), at: shell.world.time });
+  else flights.delete(e);
   if (round.phase !== 'over' && thrown) {
     roundShot(round);
     if (!scores) {
@@ -614,7 +777,6 @@ function shoot(x: number, y: number, vx: number, vy: number, thrown = true): num
       hintReason = 'high';
     }
   }
-  return e;
 }
 canvas.addEventListener('pointerup', (event) => release(event, false));
 canvas.addEventListener('pointercancel', (event) => release(event, true));
@@ -633,8 +795,8 @@ function aimPath(): number[] {
     gravity: p.gravity,
     drag: p.drag,
     k: p.dragK,
-    mass: Math.PI * PLAYER_RADIUS * PLAYER_RADIUS * DENSITIES.normal,
-    radius: PLAYER_RADIUS,
+    mass: t.mass,
+    radius: t.radius,
     box: layoutOf(TALL).box,
     seconds: 2.5,
     bounces: AIM_BOUNCES,
@@ -642,7 +804,25 @@ function aimPath(): number[] {
     friction: p.friction,
     walls,
     hoop: spot,
+    stops: nearBalls(t.x, t.y, pressBall),
   });
+}
+
+/** How far from a throw's start the other balls end its aiming arc, m: the heap round it (balls further off move before the ball gets there). */
+const STOP_REACH = 3;
+
+/** The balls within STOP_REACH of (x, y), m, but `except`: [x, y, radius] each, for the aiming arc's stops. */
+function nearBalls(x: number, y: number, except: number): [number, number, number][] {
+  const c = shell.world.components;
+  const out: [number, number, number][] = [];
+  for (const e of handles.balls) {
+    if (e === except) continue;
+    const s = slotOf(e);
+    const bx = c.Position.x[s]!,
+      by = c.Position.y[s]!;
+    if (Math.abs(bx - x) < STOP_REACH && Math.abs(by - y) < STOP_REACH) out.push([bx, by, c.Ball.radius[s]!]);
+  }
+  return out;
 }
 /** Bounces the aiming arc follows (off the walls, the hoop and its net) before it ends. */
 const AIM_BOUNCES = 2;
@@ -683,8 +863,6 @@ function drawPointer(): void {
     return;
   }
   const r = cam.toScreenLength(PLAYER_RADIUS);
-  const scores = mayScore(hoopSpots(TALL)[round.spot]!, cam.toWorldY(startY));
-  const color = scores ? PLAYER_COLOR : HIGH_COLOR;
   if (!dragged) {
     overlay.circle(startX, startY, r).stroke({ width: 2, color: 0xffffff, alpha: 0.6 });
     // Held still on a ball or crate: after HOLD_RING_MS a ring fills, picking it up when full (a
@@ -705,18 +883,48 @@ function drawPointer(): void {
     }
     return;
   }
-  overlay.moveTo(startX, startY).lineTo(lastX, lastY).stroke({ width: 3, color: 0xffffff, alpha: 0.6 });
-  overlay.circle(lastX, lastY, 5).fill({ color: 0xffffff, alpha: 0.5 });
+  // From the ball being thrown: the pressed ball's centre, or the press point for a new basketball.
+  const t = currentThrow();
+  const ox = cam.toScreenX(t.x),
+    oy = cam.toScreenY(t.y),
+    or = cam.toScreenLength(t.radius);
+  const thrownColor = mayScore(hoopSpots(TALL)[round.spot]!, t.y) ? PLAYER_COLOR : HIGH_COLOR;
+  overlay
+    .moveTo(ox, oy)
+    .lineTo(ox + lastX - startX, oy + lastY - startY)
+    .stroke({ width: 3, color: 0xffffff, alpha: 0.6 });
+  overlay.circle(ox + lastX - startX, oy + lastY - startY, 5).fill({ color: 0xffffff, alpha: 0.5 });
   const path = aimPath();
   const n = path.length / 2;
   for (let i = 1; i < n; i++) {
     const f = i / n;
     overlay
       .circle(cam.toScreenX(path[2 * i]!), cam.toScreenY(path[2 * i + 1]!), Math.max(3, 0.32 * r * (1 - 0.4 * f)))
-      .fill({ color, alpha: 1 - 0.55 * f })
+      .fill({ color: thrownColor, alpha: 1 - 0.55 * f })
       .stroke({ width: 1.5, color: 0x0b0f16, alpha: 0.8 - 0.4 * f });
   }
-  overlay.circle(startX, startY, r).fill({ color, alpha: 0.85 }).stroke({ width: 2, color: 0xffffff, alpha: 0.9 });
+  // The arc ends on another ball: a red cross there (that ball is in the way).
+  if (n > 1) {
+    const ex = path[2 * n - 2]!,
+      ey = path[2 * n - 1]!;
+    if (nearBalls(t.x, t.y, pressBall).some(([bx, by, br]) => Math.hypot(ex - bx, ey - by) < t.radius + br + 0.02)) {
+      const sx = cam.toScreenX(ex),
+        sy = cam.toScreenY(ey),
+        k = 7;
+      overlay
+        .moveTo(sx - k, sy - k)
+        .lineTo(sx + k, sy + k)
+        .moveTo(sx + k, sy - k)
+        .lineTo(sx - k, sy + k)
+        .stroke({ width: 4, color: 0xff4d4d, alpha: 0.95 });
+    }
+  }
+  if (pressBall !== 0 && handles.balls.includes(pressBall)) {
+    // A ball of the scene is thrown: a ring round it and what it is worth.
+    overlay.circle(ox, oy, or + 4).stroke({ width: 3, color: 0xffffff, alpha: 0.9 });
+    const points = BALL_POINTS[kindOf(pressBall)];
+    showHoldLabel(`${points} ${points === 1 ? 'point' : 'points'}`, ox, oy - or - 8);
+  } else overlay.circle(ox, oy, or).fill({ color: thrownColor, alpha: 0.85 }).stroke({ width: 2, color: 0xffffff, alpha: 0.9 });
 }
 
 // ---- The hoop game: net, shot line, basket pop, status row and the play-again button -------------
@@ -741,6 +949,14 @@ app.stage.addChild(confetti, popText, praiseText);
 const CELEBRATE_SECONDS = 1.6;
 /** What the praise line says for the n-th basket of a round (1-based): the first few differ. */
 const PRAISE = ['Basket!', 'Again!', 'Hat trick!', 'On fire!'];
+
+/** The word over a basket: the gold ball's, a streak's multiplier, or PRAISE for the n-th basket. */
+function praiseFor(b: { score: number; points: number; kind: BallKind }): string {
+  const mult = Math.round(b.points / BALL_POINTS[b.kind]);
+  if (b.kind === 'gold') return mult > 1 ? `Gold ×${mult}!` : 'Gold ball!';
+  if (mult > 1) return `Streak ×${mult}!`;
+  return PRAISE[Math.min(PRAISE.length, b.score) - 1]!;
+}
 /**
  * The confetti of a basket: each piece's launch velocity (m/s, up from the rim, fanned 60 degrees
  * either side of vertical), spin (rad/s), size (m) and colour, drawn from a fixed generator so every
@@ -901,10 +1117,11 @@ function drawCelebration(age: number): void {
   // "+1" and the praise rising over the rim, fading over the last 40 %.
   const rise = 30 + 50 * Math.min(1, 2 * f);
   const pop = age < 0.12 ? 0.6 + (0.4 * age) / 0.12 : 1;
+  popText.text = `+${lastBasket.points}`;
   popText.scale.set(pop);
   popText.position.set(x, y - rise);
   popText.alpha = fade;
-  praiseText.text = PRAISE[Math.min(PRAISE.length, lastBasket.score) - 1]!;
+  praiseText.text = praiseFor(lastBasket);
   praiseText.position.set(x, y - rise - popText.height - 2);
   praiseText.alpha = fade;
 }
@@ -1023,7 +1240,7 @@ function drawBasketballs(alpha: number, world: PhysicsWorld): void {
     O = c.PreviousPosition;
   const r = cam.toScreenLength(PLAYER_RADIUS);
   const w = Math.max(1, 0.09 * r);
-  for (const e of playerBalls.keys()) {
+  for (const e of basketballs) {
     const s = slotOf(e);
     const x = cam.toScreenX(O.x[s]! + (P.x[s]! - O.x[s]!) * alpha),
       y = cam.toScreenY(O.y[s]! + (P.y[s]! - O.y[s]!) * alpha);
@@ -1043,6 +1260,16 @@ function drawBasketballs(alpha: number, world: PhysicsWorld): void {
     }
     seams.stroke({ width: w, color: 0x1a0d05, alpha: 0.85 });
     seams.circle(x, y, r - w / 2).stroke({ width: w, color: 0x5a2a08, alpha: 0.7 });
+  }
+  // The gold ball: a pulsing halo and a glint, so the eye finds it in the heap.
+  if (goldBall !== 0 && handles.balls.includes(goldBall)) {
+    const s = slotOf(goldBall);
+    const x = cam.toScreenX(O.x[s]! + (P.x[s]! - O.x[s]!) * alpha),
+      y = cam.toScreenY(O.y[s]! + (P.y[s]! - O.y[s]!) * alpha);
+    const gr = cam.toScreenLength(c.Ball.radius[s]!);
+    const pulse = 0.5 + 0.5 * Math.sin(performance.now() / 180);
+    seams.circle(x, y, gr + 3 + 4 * pulse).stroke({ width: 3, color: GOLD_COLOR, alpha: 0.45 + 0.45 * pulse });
+    seams.circle(x - 0.35 * gr, y - 0.35 * gr, Math.max(2, 0.18 * gr)).fill({ color: 0xffffff, alpha: 0.85 });
   }
 }
 
@@ -1110,24 +1337,105 @@ function updateStatus(): void {
   const over = round.phase === 'over';
   const cheering = shell.world.time - lastBasket.time < CELEBRATE_SECONDS && lastBasket.score === round.score;
   const goal = over
-    ? `Time! ${round.score} ${round.score === 1 ? 'basket' : 'baskets'}${round.score > 0 && round.score >= best ? ' — best yet!' : ''}`
+    ? `Time! ${plural(round.points, 'point', 'points')}${round.points > 0 && round.points >= best ? ' — best yet!' : ''}`
     : cheering
-      ? `${PRAISE[Math.min(PRAISE.length, round.score) - 1]} ${round.score} so far · the hoop moved`
+      ? `${praiseFor(lastBasket)} +${lastBasket.points} · the hoop moved`
       : round.phase === 'ready'
         ? `Score once to start the ${round.seconds} s clock`
-        : `Throw balls through the hoop! ${round.seconds} s`;
-  const numbers = `Baskets ${round.score} · Time ${secs} s · Best ${best}`;
+        : round.streak > 0
+          ? `${round.streak} in a row: the next basket scores ×${streakMultiplier(round.streak)}`
+          : `Throw balls through the hoop! ${round.seconds} s`;
+  const numbers = `Points ${round.points} · ×${streakMultiplier(round.streak)} · Time ${secs} s · Best ${best}`;
   const throwHow = touch ? 'Press, pull back and let go to throw' : 'Press, drag back and let go to throw';
+  // While playing the hint takes turns (5 s each) between the heap's balls and the streak.
+  const teach =
+    Math.floor(shell.world.time / 5) % 2 === 0
+      ? `Throw balls from the heap: ${BALL_POINTS.heap} points, the gold one ${BALL_POINTS.gold}`
+      : 'Baskets in a row multiply, up to ×4; a miss ends it';
   const hint = over
     ? `${touch ? 'Tap' : 'R or'} Play again for a new round`
-    : performance.now() - tooHighAt < 2500
-      ? hintReason === 'high'
-        ? 'Too high: throw from below the orange line to score'
-        : 'Up through the net does not count: drop it in from above'
-      : round.phase === 'ready'
-        ? `${throwHow} through the hoop from below the orange line`
-        : `${throwHow} · hold still 1 s on a ball to pick it up`;
+    : performance.now() - missAt < 2500
+      ? 'Missed: the streak is over'
+      : performance.now() - tooHighAt < 2500
+        ? hintReason === 'high'
+          ? 'Too high: throw from below the orange line to score'
+          : 'Up through the net does not count: drop it in from above'
+        : round.phase === 'ready' && round.shots === 0
+          ? // One line on a phone too: a second line there moved the box down the moment it changed.
+            `${throwHow} through the hoop${touch ? '' : ' from below the orange line'}`
+          : teach;
   if (status.set({ goal, numbers, hint }, over)) setAction(over);
+  drawEndCard(over);
+}
+
+// ---- The end of a round: a card with the points and what made them ------------------------------
+
+const endCard = new Container({ label: 'end-card' });
+const endBack = new Graphics();
+const endTitle = new Text({
+  text: '',
+  style: { fontFamily: 'system-ui, sans-serif', fontSize: 22, fontWeight: '700', fill: 0xffffff, align: 'center' },
+});
+const endPoints = new Text({
+  text: '',
+  style: { fontFamily: 'system-ui, sans-serif', fontSize: 56, fontWeight: '800', fill: 0xffd166, stroke: { color: 0x3a1a02, width: 6 } },
+});
+const endLines = new Text({
+  text: '',
+  style: { fontFamily: 'system-ui, sans-serif', fontSize: 16, fill: 0xe8ecf4, align: 'center', lineHeight: 24, wordWrap: true },
+});
+for (const t of [endTitle, endPoints, endLines]) t.anchor.set(0.5, 0);
+endCard.addChild(endBack, endTitle, endPoints, endLines);
+endCard.visible = false;
+app.stage.addChild(endCard);
+/** The round the card was written for (its points and shots), so it is written once. */
+let endShown = '';
+
+/**
+ * Shows the end card when time is up (`over`), centred in the box under the Play-again button: the
+ * round's points, its baskets, longest streak and throws that went in, the best, and a tip for the
+ * next round.
+ */
+function drawEndCard(over: boolean): void {
+  endCard.visible = over;
+  if (!over) {
+    endShown = '';
+    return;
+  }
+  const key = `${round.points}/${round.score}/${round.shots}/${best}/${renderer.camera.version}`;
+  if (key === endShown) return;
+  endShown = key;
+  const cam = renderer.camera;
+  const { box } = layoutOf(TALL);
+  const newBest = round.points > 0 && round.points >= best;
+  endTitle.text = newBest ? 'Time! A new best' : 'Time!';
+  endPoints.text = plural(round.points, 'point', 'points');
+  const tip =
+    round.bestStreak < 3
+      ? 'Tip: baskets in a row multiply points'
+      : round.score < 6
+        ? `Tip: the gold ball is worth ${BALL_POINTS.gold}`
+        : 'Can you beat it?';
+  endLines.text = [
+    `${plural(round.score, 'basket', 'baskets')} from ${plural(round.shots, 'throw', 'throws')}`,
+    `Longest streak ${round.bestStreak} · ${newBest ? 'your best round yet!' : `best ${best}`}`,
+    tip,
+  ].join('\n');
+  const room = cam.toScreenX(box.max[0]) - cam.toScreenX(box.min[0]) - 24;
+  endLines.style.wordWrapWidth = room - 32;
+  const w = Math.min(room, Math.max(endLines.width, endPoints.width) + 48);
+  // Under the Play-again button at the box's top: the middle of the box's upper half.
+  const cx = cam.toScreenX(0.5 * (box.min[0] + box.max[0])),
+    top = cam.toScreenY(box.max[1] - 0.28 * (box.max[1] - box.min[1]));
+  endTitle.position.set(cx, top + 14);
+  endPoints.position.set(cx, top + 14 + endTitle.height + 2);
+  endLines.position.set(cx, endPoints.y + endPoints.height + 4);
+  const h = endLines.y + endLines.height + 14 - top;
+  endBack.clear();
+  endBack
+    .roundRect(cx - w / 2, top, w, h, 14)
+    .fill({ color: 0x0b0f18, alpha: 0.88 })
+    .stroke({ width: 3, color: 0xffd166, alpha: 0.9 });
 }
 
 // ---- Test and console hooks on window.game ---------------------------------------------------
@@ -1154,6 +1462,10 @@ shell.expose({
   round: (): HoopRound => ({ ...round }),
   /** The best score kept (localStorage). */
   best: (): number => best,
+  /** The heap's gold ball (0 when none). */
+  goldBall: (): number => goldBall,
+  /** Throws ball `eid` of the scene from where it is with velocity (vx, vy) m/s, as a pull that starts on it does. */
+  throwBall: (eid: number, vx: number, vy: number): void => throwBall(eid, vx, vy),
   /** The hoop's opening now: rim height y and the x range, m. */
   hoop: () => hoopOpening(hoopSpots(TALL)[round.spot]!),
   /** A player's ball at (x, y) m with velocity (vx, vy) m/s, as a throw releases it (counts for the hoop). @returns its id. */

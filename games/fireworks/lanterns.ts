@@ -80,6 +80,11 @@ export interface LanternLevel {
   readonly lanterns: readonly Lantern[];
   readonly tall: readonly Lantern[];
   readonly par: number;
+  /**
+   * The shells the level gives (par or more): once they are spent and their bursts are cold with a
+   * lantern still dark, the level is lost and played again (`outOfShells`).
+   */
+  readonly shells: number;
   readonly shell: LanternShell;
   readonly hold: boolean;
   /**
@@ -94,13 +99,15 @@ export interface LanternLevel {
  * (3 seeds, 64 m phone sky and 120 m desktop sky, every 0.01 W, five holds), searched for the fewest
  * shells; "spray" is the chance that par shells at random points of the band, at random holds,
  * light everything.
- * 1. Quick shells only, four lanterns: two far apart, one shell each, and a close pair (0.18 W) a
- *    quick burst right between lights together: par 3, not 4 (the playtest's "no skill" with three
- *    lanterns, one shell each; the tip does not say it, the par and the lit count do).
- * 2. Two pairs 0.4 W apart: only a held burst between a pair lights both (0.2 W away, beyond a
- *    quick burst's 0.17); the two middle lanterns, one above the other, are an easy pair that leaves
- *    the outer two for a shell each (3, not 2). Spray 0-0.2 %. The tip says only that a hold makes
- *    a bigger burst: which lanterns pair up is for the player to see.
+ * 1. Quick shells only, four lanterns and three shells: two far apart, one shell each, and a close
+ *    pair (0.18 W) a quick burst right between lights together: par 3, and a shell a lantern runs
+ *    out (the playtest's "no skill" with three lanterns, one shell each; a later one's "too easy"
+ *    with a spare shell a lantern). The tip says to light two at once.
+ * 2. Two pairs 0.4 W apart, three shells: only a held burst between a pair lights both (0.2 W away,
+ *    beyond a quick burst's 0.17); the two middle lanterns, one above the other, are an easy pair
+ *    that leaves the outer two for a shell each (3, not 2): a shell a lantern runs out again, and
+ *    three stars take both held pairs. Spray 0-0.2 %. The tip says only that a hold makes a bigger
+ *    burst: which lanterns pair up is for the player to see.
  * 3. Quick shells only, drifting lanterns: lead them by the fuse (two shells can do it when two
  *    swing close). The page draws each one's ghost where it will be when the fuse runs out. Over the
  *    1.2 s fuse their swings carry them up to 0.13 to 0.24 W (2 A sin(pi FUSE / period)): the
@@ -114,8 +121,9 @@ export interface LanternLevel {
 export const LEVELS: readonly LanternLevel[] = Object.freeze([
   {
     name: 'First light',
-    tip: 'right on a lantern to light it',
+    tip: 'between a close pair: both light',
     par: 3,
+    shells: 3,
     shell: 'peony',
     hold: false,
     lanterns: [
@@ -137,6 +145,7 @@ export const LEVELS: readonly LanternLevel[] = Object.freeze([
     name: 'Pairs',
     tip: 'and hold: a bigger burst',
     par: 2,
+    shells: 3,
     shell: 'peony',
     hold: true,
     lanterns: [
@@ -159,6 +168,7 @@ export const LEVELS: readonly LanternLevel[] = Object.freeze([
     name: 'Drifting',
     tip: `on a ghost: the lantern in ${FUSE} s`,
     par: 3,
+    shells: 5,
     shell: 'peony',
     hold: false,
     lanterns: [
@@ -176,6 +186,7 @@ export const LEVELS: readonly LanternLevel[] = Object.freeze([
     name: 'Willows',
     tip: 'on a top lantern: willows fall',
     par: 3,
+    shells: 5,
     shell: 'willow',
     hold: true,
     lanterns: [
@@ -202,6 +213,7 @@ export const LEVELS: readonly LanternLevel[] = Object.freeze([
     name: 'Finale',
     tip: 'and hold on the ring, let go when told',
     par: 3,
+    shells: 5,
     shell: 'peony',
     hold: true,
     meet: { pair: [3, 4], with: 1 },
@@ -362,6 +374,21 @@ export function sparkReach(shell: LanternShell, scale: number): SparkReach {
   return { side: q.side * f, up: q.up * f, down: q.down * f };
 }
 
+/**
+ * Whether `run` is lost: every shell of its level (LanternLevel.shells) spent, none still to burst or
+ * hot (`pending`: the player's shells in flight plus the watched bursts still hot), and a lantern
+ * still dark. @throws RangeError unless pending is an integer >= 0.
+ */
+export function outOfShells(run: LanternRun, pending: number): boolean {
+  if (!(Number.isInteger(pending) && pending >= 0)) throw new RangeError(`outOfShells: pending must be an integer >= 0, got ${pending}`);
+  return run.stars === 0 && run.shells >= LEVELS[run.level]!.shells && pending === 0;
+}
+
+/** Shells of its level `run` has left to launch (0 once the level is lit). */
+export function shellsLeft(run: LanternRun): number {
+  return run.stars !== 0 ? 0 : Math.max(0, LEVELS[run.level]!.shells - run.shells);
+}
+
 /** Stars for lighting a level with `shells` shells: 3 at par or better, 2 up to par + 2, else 1. */
 export function starsFor(shells: number, par: number): 1 | 2 | 3 {
   return shells <= par ? 3 : shells <= par + 2 ? 2 : 1;
@@ -419,7 +446,7 @@ export function clearShown(run: LanternRun, time: number): boolean {
   return time - last >= CLEAR_DELAY - 1e-9;
 }
 
-/** The player launched a shell (counted until the level is lit). */
+/** The player launched a shell (counted until the level is lit; the page launches none once `shellsLeft` is 0). */
 export function countShell(run: LanternRun): void {
   if (run.stars === 0) run.shells++;
 }

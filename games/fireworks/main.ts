@@ -1,7 +1,11 @@
 /**
  * Fireworks, the lantern show (./lanterns.ts; the default, ?play=free for free play): light every
  * lantern in the sky with your bursts in as few shells as you can, over five levels, with one to three
- * stars a level against its par (best stars kept in localStorage). A lantern lights when a burst's
+ * stars a level against its par (best stars kept in localStorage). Each level gives a few shells
+ * (LanternLevel.shells; on the first two, fewer than lanterns): spent with a lantern still dark, the
+ * level is lost and a card offers Try again. A burst that lights two or three lanterns is cheered
+ * ("Double!", "Triple!", a chord); a card at each level's end shows its stars, and after the finale
+ * every level's. A lantern lights when a burst's
  * hot stars touch it; the charging ring drawn while the button is held shows how far they get (hold
  * longer for a bigger burst, on the levels that allow it); drifting lanterns must be led by the 1.2 s
  * fuse, and a dashed ghost of each, with a dotted trail along its swing, shows where it will be when
@@ -78,6 +82,8 @@ import {
   lanternsOf,
   lightFromSparks,
   meetCue,
+  outOfShells,
+  shellsLeft,
   shownLit,
   sparkReach,
   startLevel,
@@ -179,6 +185,12 @@ let watch: BurstWatch;
 const misses: { x: number; y: number; time: number }[] = [];
 /** Misses since the level started (tests). */
 let missCount = 0;
+/** Bursts that lit two lanterns or more: where (m), when the count was reached (world time, s) and how many. */
+const combos: { x: number; y: number; time: number; lit: number }[] = [];
+/** The watched bursts already cheered, and how many lanterns each had then. */
+const cheered = new WeakMap<object, number>();
+/** World time the level was lost (its shells spent, a lantern still dark), NaN while it is not. */
+let lostAt = Number.NaN;
 
 /**
  * One step of the show, then (lantern show) the lanterns its hot stars touch light up, and a burst
@@ -186,9 +198,27 @@ let missCount = 0;
  */
 function stepShow(world: PhysicsWorld): void {
   stepFireworks(world, show);
-  if (!lanternShow || run.stars !== 0) return;
+  if (!lanternShow || run.stars !== 0 || !Number.isNaN(lostAt)) return;
   const lit = lightFromSparks(world, show, run);
-  for (const m of watchBursts(watch, show, run, lit, world.time)) {
+  const misses0 = watchBursts(watch, show, run, lit, world.time);
+  // A burst that lit two or more: "Double!", "Triple!" over it, and a chord a step higher each.
+  for (const b of watch.bursts) {
+    if (b.lit < 2 || (cheered.get(b) ?? 0) >= b.lit) continue;
+    cheered.set(b, b.lit);
+    combos.push({ x: b.x, y: b.y, time: world.time, lit: b.lit });
+    if (combos.length > 6) combos.shift();
+    const base = 523.25 * 2 ** ((b.lit - 2) * 0.25);
+    setTimeout(() => sound.chime(base * 1.5, 0.35), 120);
+    setTimeout(() => sound.chime(base * 2, 0.6), 240);
+  }
+  if (run.stars === 0 && outOfShells(run, show.shellCount + watch.bursts.length)) {
+    lostAt = world.time;
+    // Three falling notes: the level is lost (the Try-again button comes up).
+    sound.chime(392, 0.25);
+    setTimeout(() => sound.chime(330, 0.25), 160);
+    setTimeout(() => sound.chime(262, 0.6), 320);
+  }
+  for (const m of misses0) {
     misses.push({ x: m.x, y: m.y, time: world.time });
     missCount++;
     if (misses.length > 8) misses.shift();
@@ -264,6 +294,8 @@ function createWorld(): PhysicsWorld {
   watch = startWatch(show);
   misses.length = 0;
   missCount = 0;
+  combos.length = 0;
+  lostAt = Number.NaN;
   return world;
 }
 
@@ -335,11 +367,12 @@ function randomLaunch(): number {
 
 /**
  * A player's shell towards (x, y), m, held `hold` s (a quick one on a level without holding):
- * counted by the lantern show. None once every lantern of the level is lit: the next-level button
+ * counted by the lantern show. None once the level's shells are spent (`shellsLeft`), nor once every
+ * lantern of the level is lit: the next-level button
  * comes up CLEAR_DELAY later where a click would otherwise launch a shell. @returns its id or 0.
  */
 function playerLaunch(x: number, y: number, hold: number): number {
-  if (lanternShow && run.stars > 0) return 0;
+  if (lanternShow && (run.stars > 0 || shellsLeft(run) === 0)) return 0;
   const id = launchShell(shell.world, show, x, y, holdCounts() ? hold : 0, nextRecipe());
   if (id !== 0 && lanternShow) countShell(run);
   return id;
@@ -567,6 +600,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   }
   drawLanterns(world);
   drawMisses(world);
+  drawCombos(world);
   // The status row in both modes (it was written only while lanterns were drawn, so free play kept
   // the lantern show's lines).
   updateStatus();
@@ -686,6 +720,49 @@ function drawCharge(): void {
 const MISS_SECONDS = 1.8;
 /** The miss labels (made as needed, one per miss on screen). */
 const missTexts: Text[] = [];
+
+/** The combo labels (made as needed). */
+const comboTexts: Text[] = [];
+/** What a burst that lit `n` lanterns is called. */
+function comboWord(n: number): string {
+  return n >= 3 ? 'Triple!' : 'Double!';
+}
+
+/** Writes "Double!" or "Triple!" over each burst that lit two lanterns or more, growing in, rising and fading over MISS_SECONDS. */
+function drawCombos(world: PhysicsWorld): void {
+  const cam = renderer.camera;
+  let k = 0;
+  for (const c of combos) {
+    const age = world.time - c.time;
+    if (age < 0 || age >= MISS_SECONDS) continue;
+    if (k === comboTexts.length) {
+      const t = new Text({
+        text: '',
+        style: {
+          fontFamily: 'system-ui, sans-serif',
+          fontSize: 30,
+          fontWeight: '800',
+          fill: 0xffe08a,
+          stroke: { color: 0x2a1402, width: 5 },
+        },
+      });
+      t.anchor.set(0.5, 0.5);
+      app.stage.addChild(t);
+      comboTexts.push(t);
+    }
+    const t = comboTexts[k++]!;
+    t.text = comboWord(c.lit);
+    t.visible = true;
+    const f = age / MISS_SECONDS;
+    t.scale.set(age < 0.15 ? 0.6 + (0.4 * age) / 0.15 : 1);
+    t.position.set(
+      Math.min(cam.width - t.width / 2 - 4, Math.max(t.width / 2 + 4, cam.toScreenX(c.x))),
+      Math.max(t.height / 2 + 2, cam.toScreenY(c.y) - 30 - 30 * f),
+    );
+    t.alpha = Math.min(1, (1 - f) / 0.4);
+  }
+  for (; k < comboTexts.length; k++) comboTexts[k]!.visible = false;
+}
 
 /** Writes "Miss" (and why) over each burst that lit nothing, rising a little and fading over MISS_SECONDS. */
 function drawMisses(world: PhysicsWorld): void {
@@ -946,6 +1023,81 @@ function starText(n: number): string {
   return '★'.repeat(n) + '☆'.repeat(3 - n);
 }
 
+// ---- The card at a level's end: its stars (or why it was lost) and, after the finale, the show's --------
+
+const card = new Container({ label: 'level-card' });
+const cardBack = new Graphics();
+const cardTitle = new Text({
+  text: '',
+  style: { fontFamily: 'system-ui, sans-serif', fontSize: 22, fontWeight: '700', fill: 0xffffff, align: 'center' },
+});
+const cardBig = new Text({
+  text: '',
+  style: { fontFamily: 'system-ui, sans-serif', fontSize: 48, fontWeight: '800', fill: 0xffd166, stroke: { color: 0x2a1402, width: 6 } },
+});
+const cardLines = new Text({
+  text: '',
+  style: { fontFamily: 'system-ui, sans-serif', fontSize: 16, fill: 0xe8ecf4, align: 'center', lineHeight: 23, wordWrap: true },
+});
+for (const t of [cardTitle, cardBig, cardLines]) t.anchor.set(0.5, 0);
+card.addChild(cardBack, cardTitle, cardBig, cardLines);
+card.visible = false;
+app.stage.addChild(card);
+/** Room left under the card for the big action button at the stage's bottom, CSS px. */
+const CARD_BOTTOM = 96;
+/** What the card shows now ('' while hidden), so it is laid out only when that changes. */
+let cardShown = '';
+
+/**
+ * The card over the sky when a level is shown as lit or is lost (`f`): lit, its stars, the shells it
+ * took against par and what three stars take; after the finale, every level's stars and the total;
+ * lost, how many lanterns lit and the level's tip.
+ */
+function drawCard(f: StatusFrame): void {
+  const on = lanternShow && (f.cleared || f.lost);
+  card.visible = on;
+  if (!on) {
+    cardShown = '';
+    return;
+  }
+  const lv = LEVELS[run.level]!;
+  const total = bestStars.reduce((a, b) => a + b, 0);
+  let title: string, big: string, lines: string[];
+  if (f.lost) {
+    title = `Out of shells · ${lv.name}`;
+    big = `${run.lit.filter(Boolean).length} of ${run.lit.length} lit`;
+    const advice = lv.shells < run.lit.length ? 'light two at once' : 'make every shell count';
+    lines = [`${plural(lv.shells, 'shell', 'shells')}, ${run.lit.length} lanterns: ${advice}`, `Tip: ${touch ? 'tap' : 'click'} ${lv.tip}`];
+  } else {
+    title = f.last ? 'Show complete!' : `Level ${run.level + 1} lit! · ${lv.name}`;
+    big = starText(run.stars);
+    lines = [`${plural(run.shells, 'shell', 'shells')} · par ${lv.par}${run.stars < 3 ? ` · 3 stars take ${lv.par}` : ' · perfect!'}`];
+    if (f.last)
+      lines.push(LEVELS.map((_, i) => `${i + 1} ${starText(bestStars[i]!)}`).join('  '), `Stars ${total} of ${3 * LEVELS.length}`);
+  }
+  const cam = renderer.camera;
+  const key = `${title}|${big}|${lines.join('|')}|${cam.version}`;
+  if (key === cardShown) return;
+  cardShown = key;
+  cardTitle.text = title;
+  cardBig.text = big;
+  cardLines.style.wordWrapWidth = Math.min(520, cam.width - 56);
+  cardLines.text = lines.join('\n');
+  const w = Math.min(cam.width - 24, Math.max(cardTitle.width, cardBig.width, cardLines.width) + 48);
+  // Low in the sky, just over the big button at the stage's bottom: the lanterns it is about stay in sight.
+  const h = 14 + cardTitle.height + 2 + cardBig.height + 4 + cardLines.height + 14;
+  const cx = cam.width / 2,
+    top = Math.max(8, Math.round(cam.height - CARD_BOTTOM - h));
+  cardTitle.position.set(cx, top + 14);
+  cardBig.position.set(cx, cardTitle.y + cardTitle.height + 2);
+  cardLines.position.set(cx, cardBig.y + cardBig.height + 4);
+  cardBack.clear();
+  cardBack
+    .roundRect(cx - w / 2, top, w, h, 14)
+    .fill({ color: 0x060914, alpha: 0.86 })
+    .stroke({ width: 3, color: f.lost ? 0xff8a7a : 0xffd166, alpha: 0.9 });
+}
+
 /** Goes on to the next level (or back to the first after the last) with a fresh sky. */
 function nextLevel(): void {
   level = run.stars > 0 ? (run.level + 1) % LEVELS.length : run.level;
@@ -961,6 +1113,8 @@ function setLanternShow(on: boolean): void {
 
 /** How long after a miss the hint line says why, s (world time). */
 const MISS_HINT_SECONDS = 3;
+/** How long after the level was lost the row and the card say so, s (world time): the last burst fades first. */
+const LOST_DELAY = 0.6;
 
 /** The status row's lines for one frame, and what goes with them. */
 interface StatusFrame {
@@ -970,6 +1124,8 @@ interface StatusFrame {
   /** The level shown as lit (the banner, the Next-level button). */
   cleared: boolean;
   last: boolean;
+  /** The level lost (its shells spent, a lantern still dark): the Try-again button. */
+  lost: boolean;
 }
 /**
  * The lines computed in the last frame, and the frames drawn before it (the pacer's count). They are
@@ -989,6 +1145,9 @@ function statusFrame(): StatusFrame {
   const last = run.level === LEVELS.length - 1;
   const total = bestStars.reduce((a, b) => a + b, 0);
   const missed = misses.length > 0 && time - misses[misses.length - 1]!.time < MISS_HINT_SECONDS;
+  // Lost once its last burst has faded a moment (LOST_DELAY), so the player sees what it did.
+  const lost = lanternShow && !Number.isNaN(lostAt) && time - lostAt >= LOST_DELAY;
+  const left = shellsLeft(run);
   let goal: string, numbers: string, hint: string;
   if (!lanternShow) {
     goal = 'Free play: launch fireworks anywhere';
@@ -999,11 +1158,19 @@ function statusFrame(): StatusFrame {
     numbers = `${plural(run.shells, 'shell', 'shells')} (par ${lv.par}) · Stars ${total}/${3 * LEVELS.length}`;
     hint = last ? 'Play again, or try for 3 stars' : 'Fewer shells, more stars';
   } else {
-    goal = `Light every lantern! · ${lv.name}`;
-    numbers = `Level ${run.level + 1}/${LEVELS.length} · Lit ${shownLit(run, time)}/${run.lit.length} · Shells ${run.shells} · Par ${lv.par}`;
-    hint = missed ? 'Missed · a lantern must be inside the ring' : `${touch ? 'Tap' : 'Click'} ${lv.tip}`;
+    // The shells still to launch count down in the numbers (one line on a phone); the goal says how many the level gives.
+    goal = lost
+      ? `Out of shells! ${shownLit(run, time)} of ${run.lit.length} lit`
+      : `Light ${run.lit.length} lanterns with ${plural(lv.shells, 'shell', 'shells')} · ${lv.name}`;
+    numbers = `Level ${run.level + 1}/${LEVELS.length} · Lit ${shownLit(run, time)}/${run.lit.length} · Shells ${left} · Par ${lv.par}`;
+    hint =
+      missed && !lost
+        ? left === 1
+          ? 'Missed · last shell!'
+          : 'Missed · a lantern must be inside the ring'
+        : `${touch ? 'Tap' : 'Click'} ${lv.tip}`;
   }
-  return { goal, numbers, hint, cleared, last };
+  return { goal, numbers, hint, cleared, last, lost };
 }
 
 /** Writes `f` to the status row when it changed, and shows the Next-level button (with its chime) once the level is lit. */
@@ -1014,8 +1181,9 @@ function writeStatus(f: StatusFrame): void {
   }
   const mode = lanternShow ? 'Free play' : 'Lantern show';
   if (modeButton.textContent !== mode) modeButton.textContent = mode;
-  if (status.set({ goal: f.goal, numbers: f.numbers, hint: f.hint }, f.cleared))
-    setAction(f.cleared, f.last ? 'Play again ▶' : 'Next level ▶');
+  if (status.set({ goal: f.goal, numbers: f.numbers, hint: f.hint }, f.cleared || f.lost))
+    setAction(f.cleared || f.lost, f.lost ? 'Try again ▶' : f.last ? 'Play again ▶' : 'Next level ▶');
+  drawCard(f);
 }
 
 /**
@@ -1070,6 +1238,10 @@ shell.expose({
     /** Lanterns the row counts as lit now (their glow full), and the bursts that lit nothing since the level started. */
     shownLit: shownLit(run, shell.world.time),
     misses: missCount,
+    /** Shells the level has left to launch, whether it is lost (its shells spent, a lantern dark) and the bursts that lit two or more. */
+    shellsLeft: shellsLeft(run),
+    lost: !Number.isNaN(lostAt),
+    combos: combos.map((c) => c.lit),
   }),
   /**
    * The press being charged: whether a press is down, the charge sounds played for it (-1 none, 0 the

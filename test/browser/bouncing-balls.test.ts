@@ -5,7 +5,7 @@
  * bounces off a wall, time up offers Play again over the top of the box; on a phone a tap leaves the
  * clock waiting and a pull shows the aiming arc, throws and starts the clock), the court's looks (no
  * trails, no plain physics walls), and the sandbox: a click (which starts no clock) and a slingshot
- * pull spawn balls (a pull that starts on a ball throws too, at once or after half a second held
+ * pull spawn balls (a pull that starts on a ball throws that ball, at once or after half a second held
  * still), holding still on a ball for 1 s drags it, P pauses (nothing moves while paused, motion
  * resumes after), N advances exactly one step, R rebuilds the same seeded scene.
  * The tests share one page with a small ball count (?count=8); before each, the game is reset
@@ -274,7 +274,7 @@ describe('bouncing balls', () => {
     expect(await g.page.locator('.bp-side').isVisible()).toBe(false);
   });
 
-  it('a pull that starts on a ball throws, at once or after half a second held still; holding still on a ball for 1 s picks it up (a mouse joint, no ball added), and release lets go', async () => {
+  it('a pull that starts on a ball throws that ball, at once or after half a second held still; holding still on a ball for 1 s picks it up (a mouse joint, no ball added), and release lets go', async () => {
     const g = await open();
     // Paused while the ball is found and pressed (a loaded machine let it fall out from under the pointer).
     await g.press('p');
@@ -294,21 +294,38 @@ describe('bouncing balls', () => {
         [x, y] as const,
       );
     const from = await screen(start.x, start.y);
-    // A pull that starts on the ball at once: a throw from there (a new ball), the ball left where it was.
+    // A pull that starts on the ball at once throws that ball (no ball added), opposite to the pull:
+    // pulled 1.5 m towards the box's nearer side, it leaves towards the middle, level, and counts as a shot.
     const side = await screen(start.x < 8 ? start.x - 1.5 : start.x + 1.5, start.y);
+    const toMiddle = start.x < 8 ? 1 : -1;
+    /** Ball 0's velocity (m/s), the ball count and the round's shots, once a throw of it has been seen (else null), zeroing its velocity. */
+    const throwOfFirst = (shots: number) =>
+      g.waitFor(
+        ([shots, count]) => {
+          const game = window.game as unknown as BallsGame & {
+            round(): { shots: number };
+            world: { components: { Velocity: { x: Float64Array; y: Float64Array } } };
+          };
+          if (game.round().shots !== shots) return null;
+          const e = game.ballIds()[0]! % 2 ** 25;
+          const V = game.world.components.Velocity;
+          const r = { vx: V.x[e]!, vy: V.y[e]!, added: game.ballIds().length - count, first: game.positions().slice(0, 2) };
+          V.x[e] = 0;
+          V.y[e] = 0;
+          return r;
+        },
+        [shots, COUNT] as const,
+      );
     await g.page.mouse.move(from.x, from.y);
     await g.page.mouse.down();
     await g.page.mouse.move(side.x, side.y, { steps: 3 });
     expect(await g.page.evaluate(() => (window.game as unknown as { drag: { joint: number } }).drag.joint)).toBe(0);
     await g.page.mouse.up();
-    const thrown = await g.waitFor((n) => {
-      const game = window.game as unknown as BallsGame & { remove(id: number): void };
-      const ids = game.ballIds();
-      if (ids.length !== n + 1) return null;
-      game.remove(ids.at(-1)!);
-      return game.positions().slice(0, 2);
-    }, COUNT);
-    expect(thrown).toEqual([start.x, start.y]);
+    const thrown = await throwOfFirst(1);
+    expect(thrown.added).toBe(0);
+    expect(thrown.first).toEqual([start.x, start.y]); // paused: thrown from where it lay
+    expect(toMiddle * thrown.vx).toBeGreaterThan(1);
+    expect(Math.abs(thrown.vy)).toBeLessThan(0.1 * Math.abs(thrown.vx));
     // Pressed on the ball and held still half a second (aiming), then pulled: still a throw (a hold
     // of 0.45 s picked balls up from players who meant to throw).
     await g.page.mouse.move(from.x, from.y);
@@ -316,14 +333,10 @@ describe('bouncing balls', () => {
     await g.page.waitForTimeout(500);
     await g.page.mouse.move(side.x, side.y, { steps: 3 });
     await g.page.mouse.up();
-    const aimed = await g.waitFor((n) => {
-      const game = window.game as unknown as BallsGame & { remove(id: number): void; drag: { joint: number } };
-      const ids = game.ballIds();
-      if (ids.length !== n + 1) return null;
-      game.remove(ids.at(-1)!);
-      return { first: game.positions().slice(0, 2), joint: game.drag.joint };
-    }, COUNT);
-    expect(aimed).toEqual({ first: [start.x, start.y], joint: 0 });
+    const aimed = await throwOfFirst(2);
+    expect(aimed.added).toBe(0);
+    expect(toMiddle * aimed.vx).toBeGreaterThan(1);
+    expect(await g.page.evaluate(() => (window.game as unknown as { drag: { joint: number } }).drag.joint)).toBe(0);
     // Held still on the ball: the hold (1 s) hands the pointer to the drag.
     await g.page.mouse.move(from.x, from.y);
     await g.page.mouse.down();
@@ -460,7 +473,7 @@ describe('bouncing balls: the hoop game', () => {
       };
       const texts = game.app.stage.children.filter((c) => c.visible && typeof c.text === 'string').map((c) => c.text);
       const numbers = document.querySelector('[data-hud="hoop"] [data-hud="numbers"]')!;
-      return /Basket! 1 so far/.test(game.statusText()) ? { texts, bump: numbers.classList.contains('bb-bump') } : null;
+      return /Basket! \+1 · the hoop moved/.test(game.statusText()) ? { texts, bump: numbers.classList.contains('bb-bump') } : null;
     }, null);
     expect(cheer.bump).toBe(true);
     expect(cheer.texts).toEqual(expect.arrayContaining(['+1', 'Basket!']));
@@ -470,13 +483,14 @@ describe('bouncing balls: the hoop game', () => {
     const after = await g.page.evaluate(() => ({
       hoop: (window.game as unknown as HoopGame).hoop(),
       best: (window.game as unknown as HoopGame).best(),
-      stored: localStorage.getItem('bitphysics.bouncing-balls.best'),
+      stored: localStorage.getItem('bitphysics.bouncing-balls.best-points'),
       text: (window.game as unknown as HoopGame).statusText(),
     }));
     expect(after.hoop).not.toEqual(before);
     expect(after.best).toBe(1);
     expect(after.stored).toBe('1');
-    expect(after.text).toMatch(/Baskets 1 .*Best 1/);
+    // A basketball's basket is 1 point (x1, the streak's first); the next one would score x2.
+    expect(after.text).toMatch(/Points 1 · ×2 .*Best 1/);
     // Thrown straight up from under the hoop: the net stops it (its top at the net's bottom, 1.1 m under
     // the rim) and it falls back; before, it flew up through the drawn net and the rim's opening.
     const under = await g.page.evaluate(() => {
@@ -524,6 +538,17 @@ describe('bouncing balls: the hoop game', () => {
     // The 6 s round ends: time up, the Play-again button, which starts a new round keeping the best.
     await g.waitFor(() => (window.game as unknown as HoopGame).round().phase === 'over', null, 20_000);
     expect(await status.textContent()).toMatch(/Time!/);
+    // The end card over the box: the round's points, its baskets and the best.
+    const card = await g.page.evaluate(() => {
+      const stage = (
+        window.game as unknown as { app: { stage: { children: { label: string; visible: boolean; children?: { text?: string }[] }[] } } }
+      ).app.stage;
+      const c = stage.children.find((k) => k.label === 'end-card');
+      return { visible: c?.visible, texts: (c?.children ?? []).map((k) => k.text).filter(Boolean) };
+    });
+    expect(card.visible).toBe(true);
+    expect(card.texts).toEqual(expect.arrayContaining(['1 point']));
+    expect(card.texts.join(' ')).toMatch(/1 basket from \d+ throws/);
     const again = g.page.getByRole('button', { name: 'Play again ▶' });
     // Over the top of the box (above 8 m of its 10), clear of the balls piled at its bottom.
     const button = (await again.boundingBox())!;
@@ -569,14 +594,18 @@ describe('bouncing balls: the hoop game', () => {
     await g.page.touchscreen.tap(tap.x, tap.y);
     await g.waitFor((n) => (window.game as unknown as HoopGame).ballIds().length === n + 1, 8);
     expect(await g.page.evaluate(() => (window.game as unknown as HoopGame).round())).toMatchObject({ phase: 'ready', shots: 0 });
-    const n0 = await g.page.evaluate(() => (window.game as unknown as HoopGame).ballIds().length);
     // Pressed 4 m above the floor, left of the box's middle, and pulled down and to the left: while
     // pulling, the dotted arc rises to the right from the press point; let go, the ball flies that way.
     const from = await g.worldToPage(3, 4),
       to = await g.worldToPage(2, 2.5);
-    // Paused from the press on, so the new ball's velocity is read as thrown.
-    await g.page.evaluate(() => {
-      (window.game as unknown as { paused: boolean }).paused = true;
+    // Paused from the press on, so the new ball's velocity is read as thrown. The balls within 3.5 m of
+    // the press are taken out: a press on a ball throws that ball, and the arc ends at a ball in its way.
+    const n0 = await g.page.evaluate(() => {
+      const game = window.game as unknown as HoopGame & { paused: boolean; remove(id: number): void; positions(): number[] };
+      game.paused = true;
+      const p = game.positions();
+      for (const id of game.ballIds().filter((_, i) => Math.hypot(p[2 * i]! - 3, p[2 * i + 1]! - 4) < 3.5)) game.remove(id);
+      return game.ballIds().length;
     });
     let arc: number[] = [];
     await swipe(
@@ -609,7 +638,7 @@ describe('bouncing balls: the hoop game', () => {
     const t1 = await g.page.evaluate(() => (window.game as unknown as { world: { time: number } }).world.time);
     await g.waitFor((t) => (window.game as unknown as { world: { time: number } }).world.time > t + 0.5, t1);
     expect(await g.page.evaluate(() => (window.game as unknown as HoopGame).round())).toMatchObject({ phase: 'ready', timeLeft: 60 });
-    expect(await status.textContent()).toMatch(/Score once to start the 60 s clock.*Baskets 0 · Time 60 s/s);
+    expect(await status.textContent()).toMatch(/Score once to start the 60 s clock.*Points 0 · ×1 · Time 60 s/s);
     expect(g.errors).toEqual([]);
     await g.close();
   });

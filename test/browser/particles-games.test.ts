@@ -245,6 +245,8 @@ interface LanternGame {
     glow: number[];
     shownLit: number;
     misses: number;
+    shellsLeft: number;
+    lost: boolean;
   };
   nextLevel(): void;
   playLevel(i: number): void;
@@ -269,7 +271,7 @@ describe('fireworks: the lantern show', () => {
     const g = await h.openGame('fireworks', { viewport: { width: 1280, height: 800 }, query: { opening: 0, sparks: 60, generations: 1 } });
     const status = g.page.locator('[data-hud="lanterns"]');
     expect(await status.isVisible()).toBe(true);
-    expect(await status.textContent()).toMatch(/Light every lantern.*Level 1\/5 · Lit 0\/4 · Shells 0 · Par 3/s);
+    expect(await status.textContent()).toMatch(/Light 4 lanterns with 3 shells.*Level 1\/5 · Lit 0\/4 · Shells 3 · Par 3/s);
     const row = (await status.boundingBox())!;
     const canvas = await g.canvasBox();
     expect(row.y + row.height).toBeLessThanOrEqual(canvas.y + 1);
@@ -322,7 +324,7 @@ describe('fireworks: the lantern show', () => {
     await g.waitFor(() => (window.game as unknown as LanternGame).lanterns().level === 1, null);
     // The row is written with the next frame.
     await g.waitFor(
-      () => /Level 2\/5 · Lit 0\/4 · Shells 0 · Par 2/.test(document.querySelector('[data-hud="lanterns"]')?.textContent ?? ''),
+      () => /Level 2\/5 · Lit 0\/4 · Shells 3 · Par 2/.test(document.querySelector('[data-hud="lanterns"]')?.textContent ?? ''),
       null,
     );
     await g.page.getByRole('button', { name: 'Free play' }).click();
@@ -340,7 +342,7 @@ describe('fireworks: the lantern show', () => {
       query: { opening: 0, sparks: 60, generations: 1 },
     });
     const status = g.page.locator('[data-hud="lanterns"]');
-    expect(await status.textContent()).toMatch(/Light every lantern.*Tap right on a lantern/s);
+    expect(await status.textContent()).toMatch(/Light 4 lanterns with 3 shells.*Tap between a close pair/s);
     const row = (await status.boundingBox())!;
     const canvas = await g.canvasBox();
     expect(row.y + row.height).toBeLessThanOrEqual(canvas.y + 1);
@@ -373,14 +375,14 @@ describe('fireworks: the lantern show', () => {
     // Just lit, its glow still coming up under the burst: the row does not count it yet (it said
     // "Lit 4/4" before the last lantern could be seen lit).
     // (Paused there: whenever a frame is drawn, the row it writes says so.)
-    await g.waitFor(() => /Shells 1/.test(document.querySelector('[data-hud="lanterns"]')?.textContent ?? ''), null);
-    expect(await status.textContent()).toMatch(/Lit 0\/4 · Shells 1/);
+    await g.waitFor(() => /Shells 2/.test(document.querySelector('[data-hud="lanterns"]')?.textContent ?? ''), null);
+    expect(await status.textContent()).toMatch(/Lit 0\/4 · Shells 2/);
     // Its glow full (GLOW_RISE, 0.5 s, later): counted.
     await g.page.evaluate((t) => {
       const game = window.game as unknown as Stepping;
       while (game.world.time < t + 0.5 + 1e-9) game.step();
     }, litAt);
-    await g.waitFor(() => /Lit 1\/4 · Shells 1/.test(document.querySelector('[data-hud="lanterns"]')?.textContent ?? ''), null);
+    await g.waitFor(() => /Lit 1\/4 · Shells 2/.test(document.querySelector('[data-hud="lanterns"]')?.textContent ?? ''), null);
     // A tap on empty sky, far from every lantern: when its burst's stars are cold it has lit nothing,
     // and the page says so near it and in the row.
     const empty = await g.page.evaluate(() => (window.game as unknown as LanternGame).show.params.sky.width);
@@ -396,6 +398,39 @@ describe('fireworks: the lantern show', () => {
     // FUSE (72 steps) and the peony's hot stars (0.88 s): the first step past them, the 125th.
     expect(missed).toMatchObject({ steps: 125, misses: 1, lit: [true, false, false, false] });
     await g.waitFor(() => /Missed/.test(document.querySelector('[data-hud="lanterns"] [data-hud="hint"]')?.textContent ?? ''), null);
+    // Level 1 gives 3 shells for its 4 lanterns: a third one on empty sky spends them with three dark,
+    // and once its stars are cold the level is lost: a fourth tap launches nothing, the row and a card
+    // say so, and Try again plays the level afresh.
+    await g.page.touchscreen.tap(q.x, q.y);
+    await g.waitFor(() => (window.game as unknown as LanternGame).lanterns().shells === 3, null);
+    expect(
+      await g.page.evaluate(() => {
+        const game = window.game as unknown as Stepping;
+        for (let k = 0; k < 300 && !game.lanterns().lost; k++) game.step();
+        for (let k = 0; k < 60; k++) game.step();
+        return game.lanterns().lost;
+      }),
+    ).toBe(true);
+    await g.page.touchscreen.tap(q.x, q.y);
+    await g.waitFor(() => /Out of shells! 1 of 4 lit/.test(document.querySelector('[data-hud="lanterns"]')?.textContent ?? ''), null);
+    expect(await g.page.evaluate(() => (window.game as unknown as LanternGame).lanterns().shells)).toBe(3);
+    expect(await status.textContent()).toMatch(/Lit 1\/4 · Shells 0/);
+    const lostCard = await g.page.evaluate(() => {
+      const stage = (
+        window.game as unknown as { app: { stage: { children: { label: string; visible: boolean; children?: { text?: string }[] }[] } } }
+      ).app.stage;
+      const c = stage.children.find((k) => k.label === 'level-card');
+      return { visible: c?.visible, texts: (c?.children ?? []).map((k) => k.text).filter(Boolean) };
+    });
+    expect(lostCard.visible).toBe(true);
+    expect(lostCard.texts).toEqual(expect.arrayContaining(['1 of 4 lit']));
+    await g.page.getByRole('button', { name: 'Try again ▶' }).tap();
+    await g.waitFor(() => (window.game as unknown as LanternGame).lanterns().shells === 0, null);
+    expect(await g.page.evaluate(() => (window.game as unknown as LanternGame).lanterns())).toMatchObject({
+      level: 0,
+      stars: 0,
+      lost: false,
+    });
     await g.page.evaluate(() => {
       (window.game as unknown as { paused: boolean }).paused = false;
     });

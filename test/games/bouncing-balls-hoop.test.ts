@@ -7,6 +7,7 @@ import { addBody, createPhysicsWorld, removeBody, slotOf, step } from '@bitphysi
 import { describe, expect, it } from 'vitest';
 import {
   addHoop,
+  BALL_POINTS,
   createRound,
   HOOP_HALF_WIDTH,
   HOOP_SPOTS,
@@ -15,6 +16,7 @@ import {
   hoopOpening,
   hoopSegments,
   hoopSpots,
+  MAX_MULTIPLIER,
   MAX_THROW_SPEED,
   mayScore,
   NET,
@@ -23,9 +25,11 @@ import {
   PLAYER_RADIUS,
   ROUND_SECONDS,
   roundBasket,
+  roundMiss,
   roundShot,
   roundTick,
   slingVelocity,
+  streakMultiplier,
   throwPath,
 } from '../../games/bouncing-balls/hoop';
 import { cleanBasket, findBasket, hoopFits, naturalStarts, type Throw } from '../../games/bouncing-balls/reach';
@@ -104,6 +108,25 @@ describe('hoop round', () => {
     roundShot(r);
     expect(r.phase).toBe('over');
     expect(r.shots).toBe(2); // no shot counted after time is up
+  });
+  it('points: a basket is worth its ball (basketball 1, heap 2, gold 5) times the streak, x1 to x4; a miss ends the streak', () => {
+    const r = createRound();
+    const gains: number[] = [];
+    for (const kind of ['basketball', 'heap', 'gold', 'basketball', 'heap'] as const) {
+      roundBasket(r, 5, kind);
+      gains.push(r.lastPoints);
+    }
+    // 1 x1, 2 x2, 5 x3, 1 x4, 2 x4 (the multiplier stops at MAX_MULTIPLIER).
+    expect(gains).toEqual([1, 4, 15, 4, 8]);
+    expect(MAX_MULTIPLIER).toBe(4);
+    expect(r).toMatchObject({ score: 5, points: 32, streak: 5, bestStreak: 5 });
+    expect(roundMiss(r)).toBe(true);
+    expect(roundMiss(r)).toBe(false); // no streak left to break
+    roundBasket(r, 5, 'gold');
+    expect(r).toMatchObject({ lastPoints: BALL_POINTS.gold, points: 37, streak: 1, bestStreak: 5 });
+    expect(streakMultiplier(0)).toBe(1);
+    expect(() => streakMultiplier(-1)).toThrow(/streakMultiplier: streak/);
+    expect(() => roundBasket(r, 5, 'crate' as 'heap')).toThrow(/roundBasket: kind/);
   });
   it('rejects a negative dt and a spot count of 0, naming them', () => {
     expect(() => roundTick(createRound(), -1)).toThrow(/roundTick: dt/);

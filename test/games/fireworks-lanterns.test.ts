@@ -24,6 +24,8 @@ import {
   MEET_LIFT,
   MEET_WINDOW,
   meetCue,
+  outOfShells,
+  shellsLeft,
   shownLit,
   sparkReach,
   starAt,
@@ -169,6 +171,25 @@ describe('lantern rules', () => {
     expect(clearShown(run, 3 + CLEAR_DELAY - 0.02)).toBe(false);
     expect(clearShown(run, 3 + CLEAR_DELAY)).toBe(true);
     for (let i = 0; i < 4; i++) expect(glowOf(run, i, 3 + CLEAR_DELAY)).toBe(1);
+  });
+  it('shells: each level gives par or more; the first two fewer than lanterns (one a lantern runs out); spent with a lantern dark and nothing pending, the level is lost', () => {
+    for (const lv of LEVELS) expect(lv.shells).toBeGreaterThanOrEqual(lv.par);
+    expect(LEVELS[0]!.shells).toBeLessThan(LEVELS[0]!.lanterns.length);
+    expect(LEVELS[1]!.shells).toBeLessThan(LEVELS[1]!.lanterns.length);
+    const run = startLevel(0, 0);
+    expect(shellsLeft(run)).toBe(LEVELS[0]!.shells);
+    for (let k = 0; k < LEVELS[0]!.shells; k++) countShell(run);
+    expect(shellsLeft(run)).toBe(0);
+    // Shells in flight or bursts still hot: not lost yet.
+    expect(outOfShells(run, 1)).toBe(false);
+    expect(outOfShells(run, 0)).toBe(true);
+    // Every lantern lit with the last shell: won, not lost.
+    const won = startLevel(0, 0);
+    for (let k = 0; k < LEVELS[0]!.shells; k++) countShell(won);
+    for (const l of lanternsOf(0, phone)) starAt(won, phone, ...lanternAt(l, phone, 0), 1);
+    expect(outOfShells(won, 0)).toBe(false);
+    expect(shellsLeft(won)).toBe(0);
+    expect(() => outOfShells(run, -1)).toThrow(/outOfShells: pending/);
   });
   it('a hot star lights the lanterns it touches (within a radius of the centre), not one just beyond', () => {
     const run = startLevel(0, 0);
