@@ -374,7 +374,7 @@ shell.onWorldChange(() => {
  * On an upright phone (a screen taller than wide) the whole play area fitted to the width leaves the
  * scene a strip, so the camera works as close as it can while the catapult and the castle both show:
  * the aim view is the overview, from just behind the catapult's stacked stones to just past the
- * castle, with the ground GROUND_AT_UPRIGHT of the way up (less empty sky over the scene); the shot
+ * castle, with the ground GROUND_AT_UPRIGHT of the way up (a strip of earth under it); the shot
  * view holds the castle and the rock with a little room either side, and in between the camera
  * follows the stone: the view slides from the overview to the shot view as the stone crosses the
  * field (by the farthest it got), so the stone stays in sight all the way, and stays there (the
@@ -390,9 +390,12 @@ const aim = { active: false, dx: 0, dy: 0, x0: 0, y0: 0 };
 const GROUND_AT = 0.18;
 /**
  * On an upright phone, where the ground line sits: this fraction of the screen's height from the
- * bottom (the scene sits lower-middle, the touch hint on the earth under it).
+ * bottom, a strip of earth as tall as the touch hint (about 7 % of a 390 x 844 phone's canvas) and
+ * a margin. At 0.26 the earth under the ground was a quarter of the screen, a third with a hill's
+ * mound over it: a stranger saw a band of dirt under the castle before the castle; the sky it
+ * gives up holds the castle's close-up (drawCloseUp), which grows with it.
  */
-const GROUND_AT_UPRIGHT = 0.26;
+const GROUND_AT_UPRIGHT = 0.11;
 /** Screens narrower than this (CSS px) get the tighter aim view. */
 const NARROW = 600;
 /** Screen size the view was framed for; the view jumps (no easing) when it changes. */
