@@ -430,9 +430,13 @@ function viewFor(minX: number, maxX: number): View {
   const top = lv.castleTop + 4;
   // The lowest surface (a pit's floor) shows with 0.6 m of earth under it.
   const floor = Math.min(0, ...lv.terrain.map((t) => t.maxY)) - 0.6;
-  // Tall (or a screen taller than wide): the ground GROUND_AT up, earth below it.
+  // Tall (or a screen taller than wide): the ground GROUND_AT (upright GROUND_AT_UPRIGHT) up, earth below it.
   if (aspect > 1.2 || height > 3 * top) {
-    const low = Math.min(-(aspect > 1.2 ? GROUND_AT_UPRIGHT : GROUND_AT) * height, floor);
+    // Upright, the lowest surface (a pit's floor, where the stones and the wreck lie) GROUND_AT_UPRIGHT
+    // up too: the strip under the ground is where the card saying how to play and the next-level
+    // button lie, and under them a pit's floor was hidden.
+    const low =
+      aspect > 1.2 ? Math.min(0, ...lv.terrain.map((t) => t.maxY)) - GROUND_AT_UPRIGHT * height : Math.min(-GROUND_AT * height, floor);
     return { minX, minY: low, maxX, maxY: Math.max(low + height, top) };
   }
   // Wide: from just under the ground up, taller than the castle; the ground above the touch hint
@@ -1097,6 +1101,8 @@ app.stage.addChild(closeSprite, closeFrame, closeLabel);
 /** Largest magnification of the close-up, and the smallest worth showing. */
 const CLOSE_MAX = 3,
   CLOSE_MIN = 1.4;
+/** Pixels between the close-up's foot and the top of the castle on the screen. */
+const CLOSE_GAP = 36;
 /** The close-up's box on the screen (px: x, y, width, height) and its magnification; null while hidden. */
 let closeShown: { box: [number, number, number, number]; zoom: number } | null = null;
 /** Draws the close-up (see above) for this frame, or hides it. */
@@ -1136,14 +1142,17 @@ function drawCloseUp(): void {
       words.forEach((o, k) => {
         o.visible = was[k]!;
       });
-      const bx = Math.round((cam.width - bw) / 2);
-      closeSprite.position.set(bx, top);
+      // Low in its band, CLOSE_GAP px over the castle it magnifies (the two read together; at the
+      // band's top it hung under the banner with a screen of empty sky between it and the castle).
+      const bx = Math.round((cam.width - bw) / 2),
+        by = Math.round(Math.max(top, sy - CLOSE_GAP - bh));
+      closeSprite.position.set(bx, by);
       closeFrame
         .clear()
-        .roundRect(bx - 1, top - 1, bw + 2, bh + 2, 6)
+        .roundRect(bx - 1, by - 1, bw + 2, bh + 2, 6)
         .stroke({ width: 2, color: 0xffffff, alpha: 0.9 });
-      closeLabel.position.set(bx + 6, top + 4);
-      closeShown = { box: [bx, top, bw, bh], zoom };
+      closeLabel.position.set(bx + 6, by + 4);
+      closeShown = { box: [bx, by, bw, bh], zoom };
     }
   }
   closeSprite.visible = closeFrame.visible = closeLabel.visible = closeShown !== null;
