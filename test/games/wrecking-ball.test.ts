@@ -120,9 +120,10 @@ describe('wrecking-ball scene', () => {
     h.controls.slew = 0;
     expect(Math.abs(turn(42) - (SLEW_RATE * 0.7) / 2)).toBeLessThan(tol);
     expect(Math.abs(h.drive.slew)).toBeLessThan(1e-12);
-    expect(Math.abs(turn(6))).toBeLessThan(1e-12);
+    expect(Math.abs(turn(2))).toBeLessThan(1e-12);
     h.controls.slew = 1;
-    turn(60);
+    turn(30);
+    expect(h.drive.slew).toBeCloseTo(SLEW_RATE, 9);
     h.controls.slew = -1;
     expect(Math.abs(turn(15) - (SLEW_RATE * 0.25) / 2)).toBeLessThan(tol);
     expect(h.drive.slew).toBeLessThanOrEqual(0);
