@@ -374,7 +374,7 @@ shell.onWorldChange(() => {
  * On an upright phone (a screen taller than wide) the whole play area fitted to the width leaves the
  * scene a strip, so the camera works as close as it can while the catapult and the castle both show:
  * the aim view is the overview, from just behind the catapult's stacked stones to just past the
- * castle, with the ground GROUND_AT_UPRIGHT of the way up (less empty sky over the scene); the shot
+ * castle, with the ground GROUND_AT_UPRIGHT of the way up (a strip of earth under it); the shot
  * view holds the castle and the rock with a little room either side, and in between the camera
  * follows the stone: the view slides from the overview to the shot view as the stone crosses the
  * field (by the farthest it got), so the stone stays in sight all the way, and stays there (the
@@ -390,9 +390,12 @@ const aim = { active: false, dx: 0, dy: 0, x0: 0, y0: 0 };
 const GROUND_AT = 0.18;
 /**
  * On an upright phone, where the ground line sits: this fraction of the screen's height from the
- * bottom (the scene sits lower-middle, the touch hint on the earth under it).
+ * bottom, a strip of earth as tall as the touch hint (about 7 % of a 390 x 844 phone's canvas) and
+ * a margin. At 0.26 the earth under the ground was a quarter of the screen, a third with a hill's
+ * mound over it: a stranger saw a band of dirt under the castle before the castle; the sky it
+ * gives up holds the castle's close-up (drawCloseUp), which grows with it.
  */
-const GROUND_AT_UPRIGHT = 0.26;
+const GROUND_AT_UPRIGHT = 0.11;
 /** Screens narrower than this (CSS px) get the tighter aim view. */
 const NARROW = 600;
 /** Screen size the view was framed for; the view jumps (no easing) when it changes. */
@@ -427,9 +430,13 @@ function viewFor(minX: number, maxX: number): View {
   const top = lv.castleTop + 4;
   // The lowest surface (a pit's floor) shows with 0.6 m of earth under it.
   const floor = Math.min(0, ...lv.terrain.map((t) => t.maxY)) - 0.6;
-  // Tall (or a screen taller than wide): the ground GROUND_AT up, earth below it.
+  // Tall (or a screen taller than wide): the ground GROUND_AT (upright GROUND_AT_UPRIGHT) up, earth below it.
   if (aspect > 1.2 || height > 3 * top) {
-    const low = Math.min(-(aspect > 1.2 ? GROUND_AT_UPRIGHT : GROUND_AT) * height, floor);
+    // Upright, the lowest surface (a pit's floor, where the stones and the wreck lie) GROUND_AT_UPRIGHT
+    // up too: the strip under the ground is where the card saying how to play and the next-level
+    // button lie, and under them a pit's floor was hidden.
+    const low =
+      aspect > 1.2 ? Math.min(0, ...lv.terrain.map((t) => t.maxY)) - GROUND_AT_UPRIGHT * height : Math.min(-GROUND_AT * height, floor);
     return { minX, minY: low, maxX, maxY: Math.max(low + height, top) };
   }
   // Wide: from just under the ground up, taller than the castle; the ground above the touch hint
@@ -1094,6 +1101,8 @@ app.stage.addChild(closeSprite, closeFrame, closeLabel);
 /** Largest magnification of the close-up, and the smallest worth showing. */
 const CLOSE_MAX = 3,
   CLOSE_MIN = 1.4;
+/** Pixels between the close-up's foot and the top of the castle on the screen. */
+const CLOSE_GAP = 36;
 /** The close-up's box on the screen (px: x, y, width, height) and its magnification; null while hidden. */
 let closeShown: { box: [number, number, number, number]; zoom: number } | null = null;
 /** Draws the close-up (see above) for this frame, or hides it. */
@@ -1133,14 +1142,17 @@ function drawCloseUp(): void {
       words.forEach((o, k) => {
         o.visible = was[k]!;
       });
-      const bx = Math.round((cam.width - bw) / 2);
-      closeSprite.position.set(bx, top);
+      // Low in its band, CLOSE_GAP px over the castle it magnifies (the two read together; at the
+      // band's top it hung under the banner with a screen of empty sky between it and the castle).
+      const bx = Math.round((cam.width - bw) / 2),
+        by = Math.round(Math.max(top, sy - CLOSE_GAP - bh));
+      closeSprite.position.set(bx, by);
       closeFrame
         .clear()
-        .roundRect(bx - 1, top - 1, bw + 2, bh + 2, 6)
+        .roundRect(bx - 1, by - 1, bw + 2, bh + 2, 6)
         .stroke({ width: 2, color: 0xffffff, alpha: 0.9 });
-      closeLabel.position.set(bx + 6, top + 4);
-      closeShown = { box: [bx, top, bw, bh], zoom };
+      closeLabel.position.set(bx + 6, by + 4);
+      closeShown = { box: [bx, by, bw, bh], zoom };
     }
   }
   closeSprite.visible = closeFrame.visible = closeLabel.visible = closeShown !== null;

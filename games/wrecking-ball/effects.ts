@@ -2,9 +2,23 @@
  * Wrecking ball, the effects of a hit (drawing only, no physics): dust that billows where something
  * strikes the ground or the ball strikes a piece, chips in the piece's colour that fly and fall, and
  * score popups that rise over what fell, one for each group of pieces that fell together
- * (`ScoreTally`). Sprites in the scene's metres, from fixed pools.
+ * (`ScoreTally`). Dust and chips are the points of one `Points` object (one draw call: as a sprite
+ * each, a collapse drew up to 160 more), popups sprites; all sized in the scene's metres, from fixed pools.
  */
-import { CanvasTexture, type Object3D, Sprite, SpriteMaterial, SRGBColorSpace } from 'three';
+import {
+  BufferAttribute,
+  BufferGeometry,
+  CanvasTexture,
+  Color,
+  DynamicDrawUsage,
+  type Object3D,
+  Points,
+  ShaderMaterial,
+  Sprite,
+  SpriteMaterial,
+  SRGBColorSpace,
+  Vector2,
+} from 'three';
 
 /**
  * Sprites in each pool: dust puffs and chips share one, popups have their own. At most POPUPS
@@ -19,21 +33,39 @@ const DUST_LIFE = 1.4,
   CHIP_LIFE = 1.2,
   POPUP_LIFE = 1.2;
 
-/** A soft round puff, white (tinted per sprite). */
-function puffTexture(): CanvasTexture {
-  const c = document.createElement('canvas');
-  c.width = c.height = 64;
-  const g = c.getContext('2d')!;
-  const grad = g.createRadialGradient(32, 32, 0, 32, 32, 32);
-  grad.addColorStop(0, 'rgba(255,255,255,1)');
-  grad.addColorStop(0.5, 'rgba(255,255,255,0.55)');
-  grad.addColorStop(1, 'rgba(255,255,255,0)');
-  g.fillStyle = grad;
-  g.fillRect(0, 0, 64, 64);
-  const t = new CanvasTexture(c);
-  t.colorSpace = SRGBColorSpace;
-  return t;
-}
+/**
+ * The bits' shaders: each point a square `size` m across at its distance (`pxPerM` px a metre at
+ * 1 m from the camera), in its colour; dust (kind 0) a soft round puff (opaque at its middle, 0.55
+ * halfway out, clear at its rim), a chip (kind 1) a solid square; `alpha` fades it.
+ */
+const BIT_VERTEX = `
+uniform float pxPerM;
+attribute float size;
+attribute float alpha;
+attribute float kind;
+attribute vec3 tint;
+varying vec3 vTint;
+varying float vAlpha;
+varying float vKind;
+void main() {
+  vTint = tint;
+  vAlpha = alpha;
+  vKind = kind;
+  vec4 mv = modelViewMatrix * vec4(position, 1.0);
+  gl_Position = projectionMatrix * mv;
+  gl_PointSize = alpha > 0.0 ? size * pxPerM / max(0.01, -mv.z) : 0.0;
+}`;
+const BIT_FRAGMENT = `
+varying vec3 vTint;
+varying float vAlpha;
+varying float vKind;
+void main() {
+  float r = 2.0 * length(gl_PointCoord - vec2(0.5));
+  float a = vKind > 0.5 ? 1.0 : (r < 0.5 ? mix(1.0, 0.55, 2.0 * r) : mix(0.55, 0.0, clamp(2.0 * r - 1.0, 0.0, 1.0)));
+  if (a * vAlpha <= 0.0) discard;
+  gl_FragColor = vec4(vTint, a * vAlpha);
+  #include <colorspace_fragment>
+}`;
 
 /** A popup's label drawn in bold yellow with a dark outline, on a clear canvas. */
 function labelTexture(text: string): CanvasTexture {
@@ -54,9 +86,11 @@ function labelTexture(text: string): CanvasTexture {
   return t;
 }
 
-/** One bit in flight: its sprite, velocity (m/s), age and life (s), size (m) and whether it is dust. */
+/** One bit in flight: its place (m), velocity (m/s), age and life (s, life 0: not in flight), size (m) and whether it is dust. */
 interface Bit {
-  sprite: Sprite;
+  x: number;
+  y: number;
+  z: number;
   vx: number;
   vy: number;
   vz: number;
@@ -69,6 +103,16 @@ interface Bit {
 /** The effects layer: add `root` to the scene, call `update` once a frame. */
 export class SiteEffects {
   private readonly bits: Bit[] = [];
+  /** The bits drawn: one point each (place, tint, size, alpha, kind), written by `update`. */
+  private readonly points: Points;
+  private readonly place = new Float32Array(3 * BITS);
+  private readonly tint = new Float32Array(3 * BITS);
+  private readonly size = new Float32Array(BITS);
+  private readonly alpha = new Float32Array(BITS);
+  private readonly kind = new Float32Array(BITS);
+  private readonly color = new Color();
+  /** Whether a bit showed at the last update (its buffers need one more upload to hide it). */
+  private drawn = false;
   private readonly popups: Array<{ sprite: Sprite; age: number; y0: number }> = [];
   private readonly labels = new Map<string, CanvasTexture>();
   private next = 0;
@@ -85,13 +129,34 @@ export class SiteEffects {
     private readonly popupScale = 1,
   ) {
     if (!(popupScale > 0 && Number.isFinite(popupScale))) throw new RangeError(`SiteEffects: popupScale must be > 0, got ${popupScale}`);
-    const puff = puffTexture();
-    for (let i = 0; i < BITS; i++) {
-      const sprite = new Sprite(new SpriteMaterial({ map: puff, transparent: true, depthWrite: false }));
-      sprite.visible = false;
-      root.add(sprite);
-      this.bits.push({ sprite, vx: 0, vy: 0, vz: 0, age: 0, life: 0, size: 0, dust: true });
-    }
+    const geometry = new BufferGeometry();
+    const attributes: Array<[string, Float32Array, number]> = [
+      ['position', this.place, 3],
+      ['tint', this.tint, 3],
+      ['size', this.size, 1],
+      ['alpha', this.alpha, 1],
+      ['kind', this.kind, 1],
+    ];
+    for (const [name, array, n] of attributes) geometry.setAttribute(name, new BufferAttribute(array, n).setUsage(DynamicDrawUsage));
+    const material = new ShaderMaterial({
+      uniforms: { pxPerM: { value: 500 } },
+      vertexShader: BIT_VERTEX,
+      fragmentShader: BIT_FRAGMENT,
+      transparent: true,
+      depthWrite: false,
+    });
+    this.points = new Points(geometry, material);
+    this.points.frustumCulled = false;
+    this.points.visible = false;
+    // Pixels a metre at 1 m, for this frame's camera and drawing buffer (a perspective camera's fov).
+    const buffer = new Vector2();
+    this.points.onBeforeRender = (renderer, _scene, camera) => {
+      renderer.getDrawingBufferSize(buffer);
+      const fov = (camera as { fov?: number }).fov ?? 50;
+      material.uniforms.pxPerM!.value = buffer.y / (2 * Math.tan((fov * Math.PI) / 360));
+    };
+    root.add(this.points);
+    for (let i = 0; i < BITS; i++) this.bits.push({ x: 0, y: 0, z: 0, vx: 0, vy: 0, vz: 0, age: 0, life: 0, size: 0, dust: true });
     for (let i = 0; i < POPUPS; i++) {
       const sprite = new Sprite(new SpriteMaterial({ transparent: true, depthTest: false, depthWrite: false }));
       sprite.visible = false;
@@ -112,7 +177,8 @@ export class SiteEffects {
    */
   burst(x: number, y: number, z: number, count: number, speed: number, color = 0xc9b393, chips = 0, chipColor = 0x888888): void {
     for (let i = 0; i < count + chips; i++) {
-      const b = this.bits[this.next]!;
+      const k = this.next;
+      const b = this.bits[k]!;
       this.next = (this.next + 1) % BITS;
       const dust = i < count;
       const a = this.rand() * 2 * Math.PI;
@@ -124,9 +190,14 @@ export class SiteEffects {
       b.life = dust ? DUST_LIFE * (0.6 + 0.4 * this.rand()) : CHIP_LIFE * (0.6 + 0.4 * this.rand());
       b.size = dust ? 0.5 + 0.5 * this.rand() : 0.1 + 0.1 * this.rand();
       b.dust = dust;
-      b.sprite.position.set(x + (this.rand() - 0.5) * 0.4, y + (this.rand() - 0.5) * 0.3, z + (this.rand() - 0.5) * 0.4);
-      b.sprite.material.color.setHex(dust ? color : chipColor);
-      b.sprite.visible = true;
+      b.x = x + (this.rand() - 0.5) * 0.4;
+      b.y = y + (this.rand() - 0.5) * 0.3;
+      b.z = z + (this.rand() - 0.5) * 0.4;
+      this.color.setHex(dust ? color : chipColor);
+      this.tint[3 * k] = this.color.r;
+      this.tint[3 * k + 1] = this.color.g;
+      this.tint[3 * k + 2] = this.color.b;
+      this.kind[k] = dust ? 0 : 1;
     }
   }
 
@@ -149,32 +220,40 @@ export class SiteEffects {
 
   /** Advances every bit and popup by `dt` s. */
   update(dt: number): void {
-    for (const b of this.bits) {
-      if (!b.sprite.visible) continue;
-      b.age += dt;
-      if (b.age >= b.life) {
-        b.sprite.visible = false;
+    let shown = 0;
+    for (let i = 0; i < BITS; i++) {
+      const b = this.bits[i]!;
+      if (b.life > 0) b.age += dt;
+      if (b.life > 0 && b.age >= b.life) b.life = 0;
+      if (b.life <= 0) {
+        this.alpha[i] = 0;
         continue;
       }
+      shown++;
       const t = b.age / b.life;
-      const s = b.sprite;
       if (b.dust) {
         const damp = Math.exp(-2.5 * dt);
         b.vx *= damp;
         b.vz *= damp;
         b.vy = b.vy * damp + 0.2 * dt;
-        s.scale.setScalar(b.size * (0.7 + 1.8 * t));
-        s.material.opacity = 0.6 * (1 - t);
+        this.size[i] = b.size * (0.7 + 1.8 * t);
+        this.alpha[i] = 0.6 * (1 - t);
       } else {
         b.vy -= 9.81 * dt;
-        if (s.position.y + b.vy * dt < 0.05) b.vx = b.vy = b.vz = 0;
-        s.scale.setScalar(b.size);
-        s.material.opacity = Math.min(1, 3 * (1 - t));
+        if (b.y + b.vy * dt < 0.05) b.vx = b.vy = b.vz = 0;
+        this.size[i] = b.size;
+        this.alpha[i] = Math.min(1, 3 * (1 - t));
       }
-      s.position.x += b.vx * dt;
-      s.position.y += b.vy * dt;
-      s.position.z += b.vz * dt;
+      b.x += b.vx * dt;
+      b.y += b.vy * dt;
+      b.z += b.vz * dt;
+      this.place[3 * i] = b.x;
+      this.place[3 * i + 1] = b.y;
+      this.place[3 * i + 2] = b.z;
     }
+    this.points.visible = shown > 0;
+    if (shown > 0 || this.drawn) for (const a of Object.values(this.points.geometry.attributes)) (a as BufferAttribute).needsUpdate = true;
+    this.drawn = shown > 0;
     for (const p of this.popups) {
       if (!p.sprite.visible) continue;
       p.age += dt;
@@ -191,12 +270,14 @@ export class SiteEffects {
 
   /** Bits and popups showing now (tests). */
   counts(): { bits: number; popups: number } {
-    return { bits: this.bits.filter((b) => b.sprite.visible).length, popups: this.popups.filter((p) => p.sprite.visible).length };
+    return { bits: this.bits.filter((b) => b.life > 0).length, popups: this.popups.filter((p) => p.sprite.visible).length };
   }
 
   /** Hides everything (a new level). */
   clear(): void {
-    for (const b of this.bits) b.sprite.visible = false;
+    for (const b of this.bits) b.life = 0;
+    this.alpha.fill(0);
+    this.points.visible = false;
     for (const p of this.popups) p.sprite.visible = false;
   }
 }

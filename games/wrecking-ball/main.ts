@@ -45,10 +45,13 @@ import {
   ConeGeometry,
   CylinderGeometry,
   DoubleSide,
+  DynamicDrawUsage,
   Group,
+  InstancedMesh,
   Line,
   LineBasicMaterial,
   LineSegments,
+  Matrix4,
   Mesh,
   MeshBasicMaterial,
   MeshStandardMaterial,
@@ -278,6 +281,10 @@ const game = await startThreeGame({
     floorColor: 0x6f9a4a,
     debug: params.debug ? debugOptions() : false,
     initialInstances: 128,
+    // A 1024 px shadow map over the 26 m site: 2.5 cm a texel, finer than a pixel of the view on a
+    // desktop or a phone; the default 2048 took four times the fill in the shadow pass (in software
+    // WebGL the shadow pass was half of the frame's GPU time).
+    lights: { shadowMapSize: 1024 },
     shadowBounds: { min: [-13, 0, -13], max: [13, 12, 13] },
   },
   // The camera frames the level's pieces (frameSite, below).
@@ -378,13 +385,17 @@ function dress(): void {
   effects.clear();
   popped.clear();
   tally.clear();
-  // The capsule links are drawn by the chain rod (drawChain), not one by one.
-  for (const l of h.links) renderer.setShape(l, { geometry: chainGeometry, scale: 1e-4 });
-  // The mast's box is drawn as a lattice (mastLattice below), not as the solid box.
-  renderer.setShape(h.mast, { geometry: hookGeometry, scale: 1e-4 });
+  // The capsule links are drawn by the chain rod (drawChain), not one by one, and the mast's box as
+  // a lattice (mastLattice below): both given an empty geometry, which three.js does not draw (as
+  // shrunk boxes they cost two draw calls and two more in the shadow pass).
+  for (const l of h.links) renderer.setShape(l, { geometry: noGeometry, scale: 1 });
+  renderer.setShape(h.mast, { geometry: noGeometry, scale: 1 });
   renderer.setShape(h.trolley, { geometry: hookGeometry, scale: [0.6, 0.35, 0.6], color: COLORS.hook });
 }
 const hookGeometry = new BoxGeometry(1, 1, 1);
+/** A geometry with no vertices, for bodies drawn by something else (see dress). */
+const noGeometry = new BufferGeometry();
+noGeometry.setAttribute('position', new BufferAttribute(new Float32Array(0), 3));
 dress();
 
 /** The level the camera was last framed for (a reset of the same level keeps the player's view). */
@@ -786,47 +797,61 @@ const chainMaterial = new MeshStandardMaterial({ color: 0x3a3f46, roughness: 0.6
 const LINKS_PER_SEGMENT = 2;
 const ringGeometry = new TorusGeometry(1, 0.3, 6, 12);
 const ringMaterial = new MeshStandardMaterial({ color: 0xb9c0c8, roughness: 0.35, metalness: 0.85 });
-const chainRings = Array.from({ length: (CHAIN_LINKS + 1) * LINKS_PER_SEGMENT }, () => {
-  const m = new Mesh(ringGeometry, ringMaterial);
+/**
+ * The chain's rings and core segments, each one instanced mesh (two draw calls, and two in the
+ * shadow pass): drawn as 27 meshes they were 54 of the page's 87 draw calls. A hidden instance is
+ * scaled to nothing; `segmentShown` and `ringShown` say which show (for window.game.chain).
+ */
+const chainRings = new InstancedMesh(ringGeometry, ringMaterial, (CHAIN_LINKS + 1) * LINKS_PER_SEGMENT);
+const chainSegments = new InstancedMesh(chainGeometry, chainMaterial, CHAIN_LINKS + 1);
+for (const m of [chainRings, chainSegments]) {
+  m.instanceMatrix.setUsage(DynamicDrawUsage);
   m.castShadow = true;
   m.frustumCulled = false;
   app.scene.add(m);
-  return m;
-});
+}
+const segmentShown = new Array<boolean>(CHAIN_LINKS + 1).fill(false);
+const ringShown = new Array<boolean>((CHAIN_LINKS + 1) * LINKS_PER_SEGMENT).fill(false);
+/** Where segment i was drawn last: its middle, turn and length, m (for window.game.chain). */
+const segmentAt = Array.from({ length: CHAIN_LINKS + 1 }, () => ({ position: new Vector3(), quaternion: new Quaternion(), length: 0 }));
+const hiddenMatrix = new Matrix4().makeScale(0, 0, 0);
 const quarterTurn = new Quaternion().setFromAxisAngle(new Vector3(0, 1, 0), Math.PI / 2);
-const chainSegments = Array.from({ length: CHAIN_LINKS + 1 }, () => {
-  const m = new Mesh(chainGeometry, chainMaterial);
-  m.castShadow = true;
-  m.frustumCulled = false;
-  app.scene.add(m);
-  return m;
-});
 const chainFrom = new Vector3(),
   chainTo = new Vector3(),
   chainDir = new Vector3(),
   chainUp = new Vector3(0, 1, 0),
   chainAt = [0, 0, 0],
-  ballAt = [0, 0, 0];
+  ballAt = [0, 0, 0],
+  ringTurn = new Quaternion(),
+  ringPos = new Vector3(),
+  partScale = new Vector3(),
+  partMatrix = new Matrix4();
 /** Places segment `i` of the drawn chain from chainFrom to chainTo (radius a link's, a little thicker). */
 function placeSegment(i: number): void {
-  const m = chainSegments[i]!;
   chainDir.subVectors(chainTo, chainFrom);
   const length = chainDir.length();
-  m.visible = length > 1e-6;
-  for (let j = 0; j < LINKS_PER_SEGMENT; j++) chainRings[i * LINKS_PER_SEGMENT + j]!.visible = m.visible;
-  if (!m.visible) return;
-  m.position.addVectors(chainFrom, chainTo).multiplyScalar(0.5);
-  m.quaternion.setFromUnitVectors(chainUp, chainDir.divideScalar(length));
-  m.scale.set(0.5 * LINK_RADIUS, length, 0.5 * LINK_RADIUS);
+  const shown = length > 1e-6;
+  segmentShown[i] = shown;
+  for (let j = 0; j < LINKS_PER_SEGMENT; j++) ringShown[i * LINKS_PER_SEGMENT + j] = shown;
+  if (!shown) {
+    chainSegments.setMatrixAt(i, hiddenMatrix);
+    for (let j = 0; j < LINKS_PER_SEGMENT; j++) chainRings.setMatrixAt(i * LINKS_PER_SEGMENT + j, hiddenMatrix);
+    return;
+  }
+  const at = segmentAt[i]!;
+  at.position.addVectors(chainFrom, chainTo).multiplyScalar(0.5);
+  at.quaternion.setFromUnitVectors(chainUp, chainDir.divideScalar(length));
+  at.length = length;
+  chainSegments.setMatrixAt(i, partMatrix.compose(at.position, at.quaternion, partScale.set(0.5 * LINK_RADIUS, length, 0.5 * LINK_RADIUS)));
   // The rings: ovals along the segment (the torus's y axis along it), long enough to overlap the next.
   const pitch = length / LINKS_PER_SEGMENT;
+  partScale.set(1.6 * LINK_RADIUS, 0.62 * pitch, 1.6 * LINK_RADIUS);
   for (let j = 0; j < LINKS_PER_SEGMENT; j++) {
-    const r = chainRings[i * LINKS_PER_SEGMENT + j]!;
-    r.visible = true;
-    r.position.copy(chainFrom).addScaledVector(chainDir, (j + 0.5) * pitch);
-    r.quaternion.copy(m.quaternion);
-    if ((i * LINKS_PER_SEGMENT + j) % 2 === 1) r.quaternion.multiply(quarterTurn);
-    r.scale.set(1.6 * LINK_RADIUS, 0.62 * pitch, 1.6 * LINK_RADIUS);
+    const k = i * LINKS_PER_SEGMENT + j;
+    ringPos.copy(chainFrom).addScaledVector(chainDir, (j + 0.5) * pitch);
+    ringTurn.copy(at.quaternion);
+    if (k % 2 === 1) ringTurn.multiply(quarterTurn);
+    chainRings.setMatrixAt(k, partMatrix.compose(ringPos, ringTurn, partScale));
   }
 }
 /** Draws the chain: hook, link centres, the ball's top (toward the last link). */
@@ -846,6 +871,8 @@ function drawChain(hook: ArrayLike<number>): void {
     if (d > BALL_RADIUS) chainTo.addScaledVector(chainDir, BALL_RADIUS / d);
     placeSegment(links.length);
   }
+  chainSegments.instanceMatrix.needsUpdate = true;
+  chainRings.instanceMatrix.needsUpdate = true;
 }
 
 // The camera follows the action only when it would leave the view: while the ball is within the
@@ -1946,12 +1973,12 @@ shell.expose({
   framing: (): number[] | null => (home ? home.target.toArray() : null),
   /** The drawn chain: its visible segments and the gap, m, between its end and the ball's surface (0 when whole). */
   chain: () => {
-    const end = chainSegments[chainSegments.length - 1]!;
-    const tip = new Vector3(0, 0.5, 0).applyQuaternion(end.quaternion).multiplyScalar(end.scale.y);
+    const end = segmentAt[segmentAt.length - 1]!;
+    const tip = new Vector3(0, 0.5, 0).applyQuaternion(end.quaternion).multiplyScalar(end.length);
     const low = end.position.clone().add(tip);
     renderer.drawnPosition(handles.ball, ballAt);
     const gap = Math.abs(Math.hypot(low.x - ballAt[0]!, low.y - ballAt[1]!, low.z - ballAt[2]!) - BALL_RADIUS);
-    return { segments: chainSegments.filter((m) => m.visible).length, rings: chainRings.filter((m) => m.visible).length, gap };
+    return { segments: segmentShown.filter(Boolean).length, rings: ringShown.filter(Boolean).length, gap };
   },
   params,
   panel,

@@ -42,6 +42,21 @@ export const HOOK_RANGE: readonly [number, number] = [5.8, 10.5];
 export const SLEW_RATE = 0.7;
 export const TROLLEY_SPEED = 3.5;
 export const HOIST_SPEED = 2;
+/**
+ * The slew and the trolley driven by the player (`CraneControls.slew`, `.trolley`) have mass: they
+ * speed up at SLEW_ACCEL (rad/s^2) and TROLLEY_ACCEL (m/s^2) to the rate asked, full speed in
+ * 0.5 s; let go, they coast to a stop at SLEW_COAST and TROLLEY_COAST (0.7 s, the jib turning 14
+ * degrees on); driven the other way, they brake at SLEW_REVERSE and TROLLEY_REVERSE (0.25 s to a
+ * stop). A crane that started and stopped dead at full speed felt like a cursor; the ball still
+ * swings out behind a start and on past a stop (both take well under a quarter of its 4.6 s swing),
+ * so a player pumps it by reversing the jib in time with the swing.
+ */
+export const SLEW_ACCEL = SLEW_RATE / 0.5;
+export const SLEW_COAST = SLEW_RATE / 0.7;
+export const SLEW_REVERSE = SLEW_RATE / 0.25;
+export const TROLLEY_ACCEL = TROLLEY_SPEED / 0.5;
+export const TROLLEY_COAST = TROLLEY_SPEED / 0.7;
+export const TROLLEY_REVERSE = TROLLEY_SPEED / 0.25;
 /** Chain: links, each a capsule of this radius and straight half length, m. */
 export const CHAIN_LINKS = 8;
 export const LINK_RADIUS = 0.07;
@@ -208,6 +223,13 @@ export interface WreckingBallHandles {
   seed: number;
   /** The static crane mast's body. */
   mast: number;
+  /**
+   * The crane's drive now: slew rate, rad/s (positive counter-clockwise seen from above), and
+   * trolley speed along the jib, m/s (positive outward); mutated by `craneSystem`, which ramps them
+   * toward what the controls ask (see SLEW_ACCEL); 0 while a timed move or a run to a goal drives
+   * the crane (those stop it dead at their end).
+   */
+  drive: { slew: number; trolley: number };
 }
 
 /** Options of `buildWreckingBall`. */
@@ -378,7 +400,7 @@ export function buildWreckingBall(world: PhysicsWorld, options: WreckingBallOpti
     else if (kind === 'wall') wall(world, pieces, x, z, 3 + Math.floor(rng() * 2), 3 + Math.floor(rng() * 2), facing);
     else planks(world, pieces, x, z, 4 + Math.floor(rng() * 3), rng() * Math.PI);
   });
-  const handles: WreckingBallHandles = { trolley, links, ball, pieces, crane, controls, level, seed, mast };
+  const handles: WreckingBallHandles = { trolley, links, ball, pieces, crane, controls, level, seed, mast, drive: { slew: 0, trolley: 0 } };
   addSystem(world, 'forces', craneSystem(handles));
   return handles;
 }
@@ -949,6 +971,17 @@ export function swayAmplitude(world: PhysicsWorld, h: WreckingBallHandles): numb
   return Math.hypot(P.x[b]! - P.x[t]!, P.z[b]! - P.z[t]!, (V.x[b]! - V.x[t]!) / w, (V.z[b]! - V.z[t]!) / w);
 }
 
+/**
+ * Rate `v` moved toward `want` over `dt` s: at `accel` while speeding up (from rest or the same
+ * way), at `coast` while slowing to a lesser rate the same way or to rest, at `reverse` while `want`
+ * is the other way; never past `want`.
+ */
+function ramp(v: number, want: number, dt: number, accel: number, coast: number, reverse: number): number {
+  const rate = v === 0 || (Math.sign(want) === Math.sign(v) && Math.abs(want) > Math.abs(v)) ? accel : want * v < 0 ? reverse : coast;
+  const step = rate * dt;
+  return Math.abs(want - v) <= step ? want : v + Math.sign(want - v) * step;
+}
+
 /** Wraps an angle into (-pi, pi]. */
 function wrap(a: number): number {
   return a - 2 * Math.PI * Math.floor((a + Math.PI) / (2 * Math.PI));
@@ -964,8 +997,11 @@ export function craneSystem(h: WreckingBallHandles): (world: PhysicsWorld) => vo
     const c = h.crane,
       k = h.controls,
       dt = world.dt / world.substeps;
+    const radius0 = c.radius;
     let slew = k.slew,
       run = k.trolley;
+    // Whether a run to a goal drives the crane this substep (including the one it arrives in).
+    const toGoal = k.goal !== null;
     if (k.goal !== null) {
       // Full speed until the last substep's worth, then exactly there: no easing in, so the ball,
       // lagging behind the hook, swings on through the goal with the crane's speed.
@@ -1006,10 +1042,19 @@ export function craneSystem(h: WreckingBallHandles): (world: PhysicsWorld) => vo
       move.elapsed += dt;
       if (f === 1) k.moves.shift();
     } else {
-      if (k.steady && k.goal === null) {
+      let slewRate = slew * SLEW_RATE,
+        runRate = run * TROLLEY_SPEED;
+      if (!toGoal) {
+        // The player's drive: ramped toward the rate asked (see SLEW_ACCEL).
+        h.drive.slew = ramp(h.drive.slew, slewRate, dt, SLEW_ACCEL, SLEW_COAST, SLEW_REVERSE);
+        h.drive.trolley = ramp(h.drive.trolley, runRate, dt, TROLLEY_ACCEL, TROLLEY_COAST, TROLLEY_REVERSE);
+        slewRate = h.drive.slew;
+        runRate = h.drive.trolley;
+      }
+      if (k.steady && !toGoal) {
         // Anti-sway: the hook's velocity STEADY_GAIN times the ball's offset from under it, as
         // slew and trolley rates (radial along the jib, tangential over the radius), added to
-        // those asked for and held to the crane's.
+        // the drive's and held to the crane's; not ramped (the crane's own control, not the player's).
         const P = world.components.Position,
           b = h.ball;
         const ex = P.x[b]! - before[0],
@@ -1019,13 +1064,18 @@ export function craneSystem(h: WreckingBallHandles): (world: PhysicsWorld) => vo
         // Radial unit (ca, -sa); the direction of growing slew angle (-sa, -ca).
         const radial = STEADY_GAIN * (ex * ca - ez * sa),
           tangential = STEADY_GAIN * (-ex * sa - ez * ca);
-        run = Math.max(-1, Math.min(1, run + radial / TROLLEY_SPEED));
-        slew = Math.max(-1, Math.min(1, slew + tangential / c.radius / SLEW_RATE));
+        runRate = Math.max(-TROLLEY_SPEED, Math.min(TROLLEY_SPEED, runRate + radial));
+        slewRate = Math.max(-SLEW_RATE, Math.min(SLEW_RATE, slewRate + tangential / c.radius));
       }
-      c.angle = wrap(c.angle + slew * SLEW_RATE * dt);
-      c.radius = Math.min(RADIUS_RANGE[1], Math.max(RADIUS_RANGE[0], c.radius + run * TROLLEY_SPEED * dt));
+      c.angle = wrap(c.angle + slewRate * dt);
+      c.radius = Math.min(RADIUS_RANGE[1], Math.max(RADIUS_RANGE[0], c.radius + runRate * dt));
       c.height = Math.min(HOOK_RANGE[1], Math.max(HOOK_RANGE[0], c.height + k.hoist * HOIST_SPEED * dt));
+      // A trolley held at the jib's end stops there.
+      if (c.radius === RADIUS_RANGE[0] || c.radius === RADIUS_RANGE[1]) h.drive.trolley = (c.radius - radius0) / dt;
     }
+    // A timed move or a run to a goal drives the crane and stops it dead at its end (the ball swings
+    // on through; see `goal`): the player's drive starts from rest after it.
+    if (move !== undefined || toGoal) h.drive.slew = h.drive.trolley = 0;
     const after = hookPosition(c);
     const V = world.components.Velocity,
       P = world.components.Position,

@@ -75,7 +75,7 @@ describe('wrecking-ball scene', () => {
     expect(clearTarget(build(1).h.pieces, 1)).toBe(9);
   });
 
-  it('keeps every structure standing without a hit, and slews at its rated speed', () => {
+  it('keeps every structure standing without a hit, and slews with the mass of a crane: a ramp up, a coast, a brake', () => {
     const { world, h } = build(1);
     const P = world.components.Position;
     const start = h.pieces.map((p) => [P.x[p.body]!, P.y[p.body]!, P.z[p.body]!] as const);
@@ -97,15 +97,37 @@ describe('wrecking-ball scene', () => {
     });
     // Each piece's centre within 1 cm of where it was built (measured 1.5 mm at most, 27 pieces).
     expect(moved).toBeLessThan(0.01);
-    // Then the crane slews: the trolley is kinematic and follows the crane state exactly: 0.5 s at
-    // full slew is SLEW_RATE / 2 rad.
+    // Then the crane slews: the trolley is kinematic and follows the crane state exactly. The jib
+    // has mass: from rest it speeds up evenly to SLEW_RATE in 0.5 s (turning SLEW_RATE / 4, the
+    // area under the ramp), then turns at SLEW_RATE (0.5 s more: SLEW_RATE / 2); let go, it coasts
+    // to a stop in 0.7 s (SLEW_RATE * 0.7 / 2 more) and stays; driven back, it brakes from full
+    // speed to rest in 0.25 s. Each within a substep's turn at full rate (the ramp steps once a
+    // substep, 1/240 s).
     const a0 = h.crane.angle;
+    const tol = SLEW_RATE / 240;
+    const turn = (steps: number): number => {
+      const before = h.crane.angle;
+      for (let i = 0; i < steps; i++) {
+        step(world);
+        scorePieces(world, h.pieces);
+      }
+      return h.crane.angle - before;
+    };
     h.controls.slew = 1;
-    for (let i = 0; i < 30; i++) {
-      step(world);
-      scorePieces(world, h.pieces);
-    }
-    expect(h.crane.angle - a0).toBeCloseTo(SLEW_RATE / 2, 9);
+    expect(Math.abs(turn(30) - SLEW_RATE / 4)).toBeLessThan(tol);
+    expect(Math.abs(turn(30) - SLEW_RATE / 2)).toBeLessThan(tol);
+    expect(h.drive.slew).toBeCloseTo(SLEW_RATE, 9);
+    h.controls.slew = 0;
+    expect(Math.abs(turn(42) - (SLEW_RATE * 0.7) / 2)).toBeLessThan(tol);
+    expect(Math.abs(h.drive.slew)).toBeLessThan(1e-12);
+    expect(Math.abs(turn(2))).toBeLessThan(1e-12);
+    h.controls.slew = 1;
+    turn(30);
+    expect(h.drive.slew).toBeCloseTo(SLEW_RATE, 9);
+    h.controls.slew = -1;
+    expect(Math.abs(turn(15) - (SLEW_RATE * 0.25) / 2)).toBeLessThan(tol);
+    expect(h.drive.slew).toBeLessThanOrEqual(0);
+    expect(h.crane.angle).not.toBe(a0);
     expect(fallenCount(h.pieces)).toBe(0);
   });
 
