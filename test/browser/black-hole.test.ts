@@ -10,6 +10,7 @@
  */
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
+import { checkPageContract } from './page-contract';
 
 interface BlackHolePage {
   bh: { falls: number; message: string };
@@ -151,7 +152,8 @@ describe.each([
   { device: 'phone', viewport: { width: 390, height: 844 }, touch: true },
 ] as const)('black hole thrust pad ($device)', ({ device, viewport, touch }) => {
   it('a finger (or the mouse) held on ↑ and slid onto → turns the thrust right; lifting it stops; the ship is drawn at least 26 px; the next-level button leaves the pad and the ship clear and starts level 2; on a phone ↑ held thrusts up and after the game a tap on the scene plays again', async () => {
-    const p = await h.openGame('black-hole', { viewport, touch, query: { level: 1 } });
+    const p = await h.openGame('black-hole', { viewport, touch, query: { level: 1 }, ...(touch ? { locale: 'en-US@posix' } : {}) });
+    if (touch) await checkPageContract(p, 'black-hole', 'phone');
     type Bh = { bh: { thrust: string }; shipPx(): number };
     if (touch) {
       // On the phone first: a finger held 0.4 s on ↑ thrusts the ship up; after the game a tap on the

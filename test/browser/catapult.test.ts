@@ -8,6 +8,7 @@ import type { Locator } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { LEVEL_COUNT, levelName } from '../../games/catapult/scene';
 import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
+import { checkPageContract } from './page-contract';
 import { touchPath } from './touch';
 
 interface Cam {
@@ -566,7 +567,8 @@ describe('catapult', () => {
     // running beside the pages this case and the next open.
     await g.close();
     // The stranger's complaint: a 190 px drag was already full power (21 m/s), so aiming was fiddly.
-    const d = await h.openGame('catapult', { query: { level: 1 }, viewport: { width: 1280, height: 800 } });
+    const d = await h.openGame('catapult', { query: { level: 1 }, viewport: { width: 1280, height: 800 }, locale: 'de-DE' });
+    await checkPageContract(d, 'catapult', 'desktop');
     type W = CatapultGame & {
       cameraSettled(): boolean;
       fullPullPx(): number;

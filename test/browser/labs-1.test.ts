@@ -10,6 +10,7 @@
  */
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
+import { type ContractRun, checkPageContract, contractOptions } from './page-contract';
 
 /** Fields every lab puts on window.game (see games/lab-*\/main.ts). */
 interface LabGame {
@@ -31,9 +32,19 @@ interface LabGame {
   plot?: { length: number };
 }
 
-/** Opens a lab and checks what every lab must show: canvas drawn, chart with data, legend, readout, no errors. */
-async function openLab(h: Harness, folder: string, query: Record<string, string | number> = {}, keys: string[] = []): Promise<GamePage> {
-  const g = await h.openGame(folder, { query });
+/**
+ * Opens a lab and checks what every lab must show: canvas drawn, chart with data, legend, readout, no errors;
+ * with `run`, opened as that run of the page contract (./page-contract), which it checks first.
+ */
+async function openLab(
+  h: Harness,
+  folder: string,
+  query: Record<string, string | number> = {},
+  keys: string[] = [],
+  run?: ContractRun,
+): Promise<GamePage> {
+  const g = await h.openGame(folder, { query, ...(run ? contractOptions(run) : {}) });
+  if (run) await checkPageContract(g, folder, run);
   expect(await g.canvasColors()).toBeGreaterThan(16);
   // The chart gets data as the lab runs (a few frames of real time), then its canvas is drawn.
   await g.waitFor(
@@ -258,7 +269,7 @@ describe('lab-orbits', () => {
 describe('lab-integrators', () => {
   let g: GamePage;
   beforeAll(async () => {
-    g = await openLab(h, 'lab-integrators', {}, ['+']);
+    g = await openLab(h, 'lab-integrators', {}, ['+'], 'desktop');
   });
   afterAll(async () => {
     await g?.close();
@@ -398,7 +409,7 @@ describe('lab-spring-chain', () => {
 describe('lab-bungee', () => {
   let g: GamePage;
   beforeAll(async () => {
-    g = await openLab(h, 'lab-bungee', {}, ['Space', 'Click']);
+    g = await openLab(h, 'lab-bungee', {}, ['Space', 'Click'], 'desktop');
   });
   afterAll(async () => {
     await g?.close();

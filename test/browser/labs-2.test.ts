@@ -14,6 +14,7 @@ import { createOrbitMeter, meterSample } from '../../games/lab-cyclotron/scene';
 import { circularSegmentArea, equilibriumDepth } from '../../games/lab-floating/scene';
 import { applyControls, buildRocket, rocketWorldOptions, uniformGravityModel } from '../../games/lab-rocket/scene';
 import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
+import { checkPageContract, contractOptions } from './page-contract';
 
 describe('exact curves of the labs (Node)', () => {
   it('circular segment: half and whole disc; the equilibrium draft balances the areas', () => {
@@ -111,7 +112,8 @@ describe('labs of Part II', () => {
   });
 
   it('floating: a click drops a ball, E puts the tracked body at its exact equilibrium and it stays there', async () => {
-    const g = await h.openGame('lab-floating');
+    const g = await h.openGame('lab-floating', contractOptions('desktop'));
+    await checkPageContract(g, 'lab-floating', 'desktop');
     await basics(g);
     const before = (await lab<{ handles(): { balls: number[] } }>(g, (game) => game.handles().balls.length)) as number;
     // Above the water near the right wall, away from the tracked (medium) ball.
@@ -182,7 +184,8 @@ describe('labs of Part II', () => {
   });
 
   it('electric field: click adds +, shift-click adds -, F hides the field lines; the test charge keeps its energy', async () => {
-    const g = await h.openGame('lab-electric-field');
+    const g = await h.openGame('lab-electric-field', contractOptions('desktop'));
+    await checkPageContract(g, 'lab-electric-field', 'desktop');
     await basics(g);
     type Charges = { charges(): [number, number, number][]; fieldLineCount(): number };
     const count = async () => (await lab<Charges>(g, (game) => game.charges())) as [number, number, number][];
@@ -252,7 +255,8 @@ describe('labs of Part II', () => {
   });
 
   it("rocket: in free space the speed is Tsiolkovsky's ve ln(m0 / m); arrow keys steer, Space cuts the engine", async () => {
-    const g = await h.openGame('lab-rocket');
+    const g = await h.openGame('lab-rocket', contractOptions('desktop'));
+    await checkPageContract(g, 'lab-rocket', 'desktop');
     await basics(g);
     type Rocket = { state(): { speed: number; tsiolkovsky: number; heading: number; throttle: number; fuel: number; altitude: number } };
     // Steering: hold Left for a while (the heading turns in simulated time while frames run).

@@ -10,9 +10,10 @@
 import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
+import { checkPageContract } from './page-contract';
 
-const DESKTOP = { viewport: { width: 1280, height: 800 } } as const;
-const PHONE = { viewport: { width: 390, height: 844 }, touch: true } as const;
+const DESKTOP = { viewport: { width: 1280, height: 800 }, locale: 'de-DE' } as const;
+const PHONE = { viewport: { width: 390, height: 844 }, touch: true, locale: 'en-US@posix' } as const;
 
 interface Cam {
   toScreenX(x: number): number;
@@ -133,6 +134,7 @@ for (const [device, options] of [
     let g: GamePage;
     beforeAll(async () => {
       g = await h.openGame('lab-cloth', options);
+      if (device === 'desktop') await checkPageContract(g, 'lab-cloth', 'desktop');
     });
     afterAll(async () => {
       await g?.close();
@@ -460,6 +462,7 @@ for (const [device, options] of [
     let g: GamePage;
     beforeAll(async () => {
       g = await h.openGame('lab-rope', { ...options, query: { level: 1 } });
+      if (device === 'phone') await checkPageContract(g, 'lab-rope', 'phone');
     });
     afterAll(async () => {
       await g?.close();

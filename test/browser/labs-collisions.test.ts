@@ -6,6 +6,7 @@
  */
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
+import { type ContractRun, checkPageContract, contractOptions } from './page-contract';
 
 interface Cam {
   toScreenX(x: number): number;
@@ -28,8 +29,10 @@ afterAll(async () => {
 });
 
 /** Opens a lab, checks the common furniture, pauses it on a fresh world. */
-async function open(folder: string, keys: string[]): Promise<GamePage> {
-  const g = await h.openGame(folder, {});
+/** Opens a lab and checks it is drawn, its legend and panel; with `run`, as that run of the page contract, which it checks first. */
+async function open(folder: string, keys: string[], run?: ContractRun): Promise<GamePage> {
+  const g = await h.openGame(folder, run ? contractOptions(run) : {});
+  if (run) await checkPageContract(g, folder, run);
   expect(await g.canvasColors()).toBeGreaterThan(8);
   const legend = await g.page.locator('.bp-legend').textContent();
   for (const key of ['P', 'N', 'R', ...keys]) expect(legend).toContain(key);
@@ -58,7 +61,7 @@ function screen(g: GamePage, x: number, y: number): Promise<{ x: number; y: numb
 describe('lab-newtons-cradle', () => {
   let g: GamePage;
   beforeAll(async () => {
-    g = await open('lab-newtons-cradle', ['Drag']);
+    g = await open('lab-newtons-cradle', ['Drag'], 'desktop');
   });
   afterAll(async () => {
     await g?.close();
@@ -207,7 +210,7 @@ describe('lab-newtons-cradle', () => {
 describe('lab-molecules', () => {
   let g: GamePage;
   beforeAll(async () => {
-    g = await open('lab-molecules', ['Click']);
+    g = await open('lab-molecules', ['Click'], 'desktop');
   });
   afterAll(async () => {
     await g?.close();

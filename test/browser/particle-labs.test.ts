@@ -9,6 +9,7 @@
  */
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
+import { type ContractRun, checkPageContract, contractOptions } from './page-contract';
 
 /** What every particle lab puts on window.game, loosely typed (each test casts what it reads). */
 type Lab = Record<string, unknown> & {
@@ -37,8 +38,10 @@ afterAll(async () => {
 });
 
 /** Opens a lab and checks what every lab shows: a drawn canvas, the legend keys, the readout, the panel, no errors. */
-async function openLab(folder: string, query: Record<string, string | number>, keys: string[]): Promise<GamePage> {
-  const g = await h.openGame(folder, { query });
+/** Opens a lab and checks it is drawn, its legend and panels; with `run`, as that run of the page contract, which it checks first. */
+async function openLab(folder: string, query: Record<string, string | number>, keys: string[], run?: ContractRun): Promise<GamePage> {
+  const g = await h.openGame(folder, { query, ...(run ? contractOptions(run) : {}) });
+  if (run) await checkPageContract(g, folder, run);
   expect(await g.canvasColors()).toBeGreaterThan(16);
   const legend = await g.page.locator('.bp-legend').textContent();
   for (const key of ['P', 'N', 'R', ...keys]) expect(legend).toContain(key);
@@ -325,7 +328,7 @@ describe('lab-splash', () => {
 describe('lab-smoke', () => {
   let g: GamePage;
   beforeAll(async () => {
-    g = await openLab('lab-smoke', {}, ['Click']);
+    g = await openLab('lab-smoke', {}, ['Click'], 'desktop');
   });
   afterAll(async () => {
     await g?.close();
@@ -390,7 +393,7 @@ describe('lab-smoke', () => {
 describe('lab-fire', () => {
   let g: GamePage;
   beforeAll(async () => {
-    g = await openLab('lab-fire', {}, ['Click']);
+    g = await openLab('lab-fire', {}, ['Click'], 'desktop');
   });
   afterAll(async () => {
     await g?.close();
@@ -441,7 +444,7 @@ describe('lab-fire', () => {
 describe('lab-sparks', () => {
   let g: GamePage;
   beforeAll(async () => {
-    g = await openLab('lab-sparks', {}, ['Mouse', 'Space', 'W']);
+    g = await openLab('lab-sparks', {}, ['Mouse', 'Space', 'W'], 'desktop');
   });
   afterAll(async () => {
     await g?.close();

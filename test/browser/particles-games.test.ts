@@ -20,6 +20,7 @@
 import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
+import { checkPageContract } from './page-contract';
 
 interface LayerStats {
   particles: number;
@@ -268,7 +269,12 @@ function litCount(page: Page): Promise<number> {
 describe('fireworks: the lantern show', () => {
   // The file's harness (one site lock a browser lane: a second Harness.start here waits for it forever).
   it('desktop 1280 x 800: the goal shows above the sky; clicks on the lanterns light them (4 lanterns, one click between the close pair: 3 shells, par 3: 3 stars, kept); Next level; Free play turns the auto-show on', async () => {
-    const g = await h.openGame('fireworks', { viewport: { width: 1280, height: 800 }, query: { opening: 0, sparks: 60, generations: 1 } });
+    const g = await h.openGame('fireworks', {
+      viewport: { width: 1280, height: 800 },
+      locale: 'de-DE',
+      query: { opening: 0, sparks: 60, generations: 1 },
+    });
+    await checkPageContract(g, 'fireworks', 'desktop');
     const status = g.page.locator('[data-hud="lanterns"]');
     expect(await status.isVisible()).toBe(true);
     expect(await status.textContent()).toMatch(/Light 4 lanterns with 3 shells.*Level 1\/5 · Lit 0\/4 · Shells 3 · Par 3/s);

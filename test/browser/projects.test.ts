@@ -8,6 +8,7 @@
 
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { Harness } from './harness';
+import { checkPageContract } from './page-contract';
 
 interface Game {
   paused: boolean;
@@ -26,7 +27,8 @@ describe('projects', () => {
   });
 
   it('solar-system: the status states the goal and the forecast’s verdict, H a hint in presses; paused, the keys turn and speed up the launch and the verdict follows; Space launches the probe, ↑ in flight burns and the forecast follows; ] raises the rate; the error table starts at the ephemeris', async () => {
-    const g = await h.openGame('solar-system', { viewport: { width: 1280, height: 800 }, query: { rate: 0 } });
+    const g = await h.openGame('solar-system', { viewport: { width: 1280, height: 800 }, locale: 'de-DE', query: { rate: 0 } });
+    await checkPageContract(g, 'solar-system', 'desktop');
     type Mission = {
       number: number;
       target: string;
@@ -513,7 +515,8 @@ describe('projects', () => {
   });
 
   it('flight-simulator at 1280x800: trees, villages and clouds at three heights; the path marker sits in ring 1; a tap of up is a small ramped input, held dive takes the marker out of the ring', async () => {
-    const g = await h.openGame('flight-simulator', { viewport: { width: 1280, height: 800 } });
+    const g = await h.openGame('flight-simulator', { viewport: { width: 1280, height: 800 }, locale: 'de-DE' });
+    await checkPageContract(g, 'flight-simulator', 'desktop');
     type Flight = Game & {
       scenery(): { trees: number; houses: number; puffs: number; cloudLow: number; cloudHigh: number };
       pathMarker(): { visible: boolean; inside: boolean; offset: number; x: number; y: number };
