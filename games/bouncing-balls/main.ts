@@ -50,7 +50,7 @@ import {
   seedParam,
 } from '@bitphysics/game-kit';
 import { enableMouseDrag } from '@bitphysics/game-kit/drag';
-import { startPixiGame } from '@bitphysics/game-kit/pixi';
+import { createResultCard, startPixiGame } from '@bitphysics/game-kit/pixi';
 import {
   addBox,
   createPhysicsWorld,
@@ -62,7 +62,7 @@ import {
   slotOf,
   step,
 } from '@bitphysics/physics';
-import { Container, Graphics, Text } from 'pixi.js';
+import { Graphics, Text } from 'pixi.js';
 import {
   addHoop,
   BACKBOARD,
@@ -1370,26 +1370,7 @@ function updateStatus(): void {
 
 // ---- The end of a round: a card with the points and what made them ------------------------------
 
-const endCard = new Container({ label: 'end-card' });
-const endBack = new Graphics();
-const endTitle = new Text({
-  text: '',
-  style: { fontFamily: 'system-ui, sans-serif', fontSize: 22, fontWeight: '700', fill: 0xffffff, align: 'center' },
-});
-const endPoints = new Text({
-  text: '',
-  style: { fontFamily: 'system-ui, sans-serif', fontSize: 56, fontWeight: '800', fill: 0xffd166, stroke: { color: 0x3a1a02, width: 6 } },
-});
-const endLines = new Text({
-  text: '',
-  style: { fontFamily: 'system-ui, sans-serif', fontSize: 16, fill: 0xe8ecf4, align: 'center', lineHeight: 24, wordWrap: true },
-});
-for (const t of [endTitle, endPoints, endLines]) t.anchor.set(0.5, 0);
-endCard.addChild(endBack, endTitle, endPoints, endLines);
-endCard.visible = false;
-app.stage.addChild(endCard);
-/** The round the card was written for (its points and shots), so it is written once. */
-let endShown = '';
+const endCard = createResultCard(app.stage, { label: 'end-card', bigSize: 56 });
 
 /**
  * Shows the end card when time is up (`over`), centred in the box under the Play-again button: the
@@ -1397,45 +1378,38 @@ let endShown = '';
  * next round.
  */
 function drawEndCard(over: boolean): void {
-  endCard.visible = over;
   if (!over) {
-    endShown = '';
+    endCard.hide();
     return;
   }
-  const key = `${round.points}/${round.score}/${round.shots}/${best}/${renderer.camera.version}`;
-  if (key === endShown) return;
-  endShown = key;
   const cam = renderer.camera;
   const { box } = layoutOf(TALL);
   const newBest = round.points > 0 && round.points >= best;
-  endTitle.text = newBest ? 'Time! A new best' : 'Time!';
-  endPoints.text = plural(round.points, 'point', 'points');
   const tip =
     round.bestStreak < 3
       ? 'Tip: baskets in a row multiply points'
       : round.score < 6
         ? `Tip: the gold ball is worth ${BALL_POINTS.gold}`
         : 'Can you beat it?';
-  endLines.text = [
-    `${plural(round.score, 'basket', 'baskets')} from ${plural(round.shots, 'throw', 'throws')}`,
-    `Longest streak ${round.bestStreak} · ${newBest ? 'your best round yet!' : `best ${best}`}`,
-    tip,
-  ].join('\n');
   const room = cam.toScreenX(box.max[0]) - cam.toScreenX(box.min[0]) - 24;
-  endLines.style.wordWrapWidth = room - 32;
-  const w = Math.min(room, Math.max(endLines.width, endPoints.width) + 48);
   // Under the Play-again button at the box's top: the middle of the box's upper half.
-  const cx = cam.toScreenX(0.5 * (box.min[0] + box.max[0])),
-    top = cam.toScreenY(box.max[1] - 0.28 * (box.max[1] - box.min[1]));
-  endTitle.position.set(cx, top + 14);
-  endPoints.position.set(cx, top + 14 + endTitle.height + 2);
-  endLines.position.set(cx, endPoints.y + endPoints.height + 4);
-  const h = endLines.y + endLines.height + 14 - top;
-  endBack.clear();
-  endBack
-    .roundRect(cx - w / 2, top, w, h, 14)
-    .fill({ color: 0x0b0f18, alpha: 0.88 })
-    .stroke({ width: 3, color: 0xffd166, alpha: 0.9 });
+  endCard.show(
+    {
+      title: newBest ? 'Time! A new best' : 'Time!',
+      big: plural(round.points, 'point', 'points'),
+      lines: [
+        `${plural(round.score, 'basket', 'baskets')} from ${plural(round.shots, 'throw', 'throws')}`,
+        `Longest streak ${round.bestStreak} · ${newBest ? 'your best round yet!' : `best ${best}`}`,
+        tip,
+      ],
+    },
+    {
+      cx: cam.toScreenX(0.5 * (box.min[0] + box.max[0])),
+      top: cam.toScreenY(box.max[1] - 0.28 * (box.max[1] - box.min[1])),
+      maxWidth: room,
+      wrapWidth: room - 32,
+    },
+  );
 }
 
 // ---- Test and console hooks on window.game ---------------------------------------------------

@@ -58,7 +58,7 @@ import {
   SHELL_CONTROLS,
   seedParam,
 } from '@bitphysics/game-kit';
-import { startPixiGame } from '@bitphysics/game-kit/pixi';
+import { createResultCard, startPixiGame } from '@bitphysics/game-kit/pixi';
 import {
   createPhysicsWorld,
   disposeWorld,
@@ -1025,28 +1025,9 @@ function starText(n: number): string {
 
 // ---- The card at a level's end: its stars (or why it was lost) and, after the finale, the show's --------
 
-const card = new Container({ label: 'level-card' });
-const cardBack = new Graphics();
-const cardTitle = new Text({
-  text: '',
-  style: { fontFamily: 'system-ui, sans-serif', fontSize: 22, fontWeight: '700', fill: 0xffffff, align: 'center' },
-});
-const cardBig = new Text({
-  text: '',
-  style: { fontFamily: 'system-ui, sans-serif', fontSize: 48, fontWeight: '800', fill: 0xffd166, stroke: { color: 0x2a1402, width: 6 } },
-});
-const cardLines = new Text({
-  text: '',
-  style: { fontFamily: 'system-ui, sans-serif', fontSize: 16, fill: 0xe8ecf4, align: 'center', lineHeight: 23, wordWrap: true },
-});
-for (const t of [cardTitle, cardBig, cardLines]) t.anchor.set(0.5, 0);
-card.addChild(cardBack, cardTitle, cardBig, cardLines);
-card.visible = false;
-app.stage.addChild(card);
+const card = createResultCard(app.stage, { label: 'level-card', bigSize: 48, background: 0x060914, backgroundAlpha: 0.86 });
 /** Room left under the card for the big action button at the stage's bottom, CSS px. */
 const CARD_BOTTOM = 96;
-/** What the card shows now ('' while hidden), so it is laid out only when that changes. */
-let cardShown = '';
 
 /**
  * The card over the sky when a level is shown as lit or is lost (`f`): lit, its stars, the shells it
@@ -1054,10 +1035,8 @@ let cardShown = '';
  * lost, how many lanterns lit and the level's tip.
  */
 function drawCard(f: StatusFrame): void {
-  const on = lanternShow && (f.cleared || f.lost);
-  card.visible = on;
-  if (!on) {
-    cardShown = '';
+  if (!(lanternShow && (f.cleared || f.lost))) {
+    card.hide();
     return;
   }
   const lv = LEVELS[run.level]!;
@@ -1076,26 +1055,11 @@ function drawCard(f: StatusFrame): void {
       lines.push(LEVELS.map((_, i) => `${i + 1} ${starText(bestStars[i]!)}`).join('  '), `Stars ${total} of ${3 * LEVELS.length}`);
   }
   const cam = renderer.camera;
-  const key = `${title}|${big}|${lines.join('|')}|${cam.version}`;
-  if (key === cardShown) return;
-  cardShown = key;
-  cardTitle.text = title;
-  cardBig.text = big;
-  cardLines.style.wordWrapWidth = Math.min(520, cam.width - 56);
-  cardLines.text = lines.join('\n');
-  const w = Math.min(cam.width - 24, Math.max(cardTitle.width, cardBig.width, cardLines.width) + 48);
   // Low in the sky, just over the big button at the stage's bottom: the lanterns it is about stay in sight.
-  const h = 14 + cardTitle.height + 2 + cardBig.height + 4 + cardLines.height + 14;
-  const cx = cam.width / 2,
-    top = Math.max(8, Math.round(cam.height - CARD_BOTTOM - h));
-  cardTitle.position.set(cx, top + 14);
-  cardBig.position.set(cx, cardTitle.y + cardTitle.height + 2);
-  cardLines.position.set(cx, cardBig.y + cardBig.height + 4);
-  cardBack.clear();
-  cardBack
-    .roundRect(cx - w / 2, top, w, h, 14)
-    .fill({ color: 0x060914, alpha: 0.86 })
-    .stroke({ width: 3, color: f.lost ? 0xff8a7a : 0xffd166, alpha: 0.9 });
+  card.show(
+    { title, big, lines, edge: f.lost ? 0xff8a7a : 0xffd166 },
+    { cx: cam.width / 2, bottom: cam.height - CARD_BOTTOM, maxWidth: cam.width - 24, wrapWidth: Math.min(520, cam.width - 56) },
+  );
 }
 
 /** Goes on to the next level (or back to the first after the last) with a fresh sky. */

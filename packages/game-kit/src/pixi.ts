@@ -11,6 +11,9 @@ import { createFramePacer, type FramePacer } from './frame-pacer.js';
 import { pageLayout } from './layout.js';
 import { createRenderedShell, type GameShell, type GameShellOptions } from './shell.js';
 
+export type { ResultCard, ResultCardContent, ResultCardOptions, ResultCardPlace } from './result-card.js';
+export { createResultCard } from './result-card.js';
+
 /** Options of `createPixiApp`. */
 export interface PixiAppOptions {
   /** Canvas background colour. Default 0x10141c. */
