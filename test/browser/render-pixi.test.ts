@@ -264,7 +264,18 @@ describe('WorldRenderer in the browser', () => {
     const r = await g.page.evaluate(() => {
       const game = window.game as unknown as Host;
       game.reset();
-      const id = game.ballIds()[1]!;
+      // A ball the page leaves in its seeded colour (it colours the gold ball and the steel ones): the
+      // first after ball 0 whose colour stays when its user colour is cleared.
+      const plain = (): number =>
+        game
+          .ballIds()
+          .slice(1)
+          .find((e) => {
+            const c = game.renderer.colorOf(e);
+            game.renderer.clearColor(e);
+            return game.renderer.colorOf(e) === c;
+          })!;
+      const id = plain();
       const seeded = game.renderer.colorOf(id);
       game.renderer.setColor(id, '#ff0000');
       const user = game.renderer.colorOf(id);
@@ -272,7 +283,7 @@ describe('WorldRenderer in the browser', () => {
       const back = game.renderer.colorOf(id);
       game.renderer.setColor(id, 0x00ff00);
       game.reset(); // a new world: user colours are forgotten, seeded ones come back identical
-      return { seeded, user, back, afterReset: game.renderer.colorOf(game.ballIds()[1]!) };
+      return { seeded, user, back, afterReset: game.renderer.colorOf(plain()) };
     });
     expect(r.user).toBe(0xff0000);
     expect(r.back).toBe(r.seeded);
