@@ -29,7 +29,6 @@ import { addBody, setBoundary } from './bodies/api.js';
 import { addPlane } from './bodies/rigid.js';
 import { addBox, addShape } from './bodies/shapes-2d.js';
 import { addShape3D } from './bodies/shapes-3d.js';
-import { releaseShapeScratch3D } from './collision/shapes-3d.js';
 import { createPhysicsWorld } from './create-world.js';
 import { setDrag } from './forces/api.js';
 import { addBallJoint3D } from './joints/ball-joint-3d.js';
@@ -154,8 +153,6 @@ function warmScene(dimensions: 2 | 3): void {
   // later steps lacks those paths: a program's own world then threw that code away in its first step
   // (11 functions recompiled, a pyramid's steps 0 to 3 each several times its compiled cost). A
   // second world of the scene runs those paths again, recorded this time.
-  // The 3D shape pass's module scratch emptied, so the fresh world grows it again, recorded as well.
-  if (dimensions === 3) releaseShapeScratch3D();
   for (let i = 0; i < FRESH_STEPS; i++) step(fresh);
 }
 

@@ -105,19 +105,6 @@ export function ensure(n: number): void {
   sc.R = grow(sc.R, 9 * m);
 }
 
-/** Empties the collider scratch (arrays of length 0; `ensure` and collision/shapes-3d.ts's gather grow them again): see releaseShapeScratch3D in collision/shapes-3d.ts. */
-export function releaseColliders3D(): void {
-  const sc = scratch;
-  sc.shape = new Int32Array(0);
-  sc.body = new Int32Array(0);
-  sc.order = new Int32Array(0);
-  sc.ball = new Uint8Array(0);
-  for (const k of ['minX', 'maxX', 'minY', 'maxY', 'minZ', 'maxZ', 'px', 'py', 'pz', 'speed', 'R'] as const) sc[k] = new Float64Array(0);
-  sc.colliderOf = new Int32Array(0);
-  sc.colliderStamp = new Int32Array(0);
-  sc.colliderPass = 0;
-}
-
 /**
  * Speculative distance of the 3D shapes, m: Box2D v3's (b2_speculativeDistance, 4 linear slops of 5 mm),
  * at most the world's `speculativeDistance` (0.1 m by default, which the ball contacts keep). A pair's

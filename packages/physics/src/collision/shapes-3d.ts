@@ -4,8 +4,8 @@ import { M00, M01, M02, M10, M11, M12, M20, M21, M22, MAT3_STRIDE } from '../mat
 import { Shape3DKind, type Shape3DStore, shapes3DOf } from '../shapes/store-3d.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
-import { pairs, releaseGrid3D } from './broadphase/pairs-3d.js';
-import { ensure, releaseColliders3D, SHAPE_SPECULATIVE_DISTANCE, scratch, wakes } from './colliders-3d.js';
+import { pairs } from './broadphase/pairs-3d.js';
+import { ensure, SHAPE_SPECULATIVE_DISTANCE, scratch, wakes } from './colliders-3d.js';
 import { pushEvent } from './events.js';
 import { type Contact3DState, clearRowIndex, contact3DStateOf, growManifold3DBuffer, insertRow, rowKey } from './manifolds-3d.js';
 import { BodyType } from './state.js';
@@ -74,22 +74,6 @@ export function shape3DCollisionSystem(world: PhysicsWorld): void {
   for (let i = 0, b = st.current; i < b.count; i++) points += b.points[i]!;
   world.collision.stats.contacts = world.collision.contacts.count + points;
   sensorEvents(world, st);
-}
-
-/**
- * Empties the 3D shape pass's module scratch that grows with a world (the colliders' slot arrays and
- * the broadphase grid); the next pass grows it again. `warmUp(3)` calls it before stepping its fresh
- * world, so that growth runs after V8 has started recording type feedback: code compiled without it
- * leaves the growth out, and a program's first large world threw the compiled gather, gridCell,
- * markSearching and fillGrid back to the interpreter in its first step. States are unchanged.
- * @category Collision
- */
-export function releaseShapeScratch3D(): void {
-  classStamp = new Int32Array(0);
-  classKind = new Uint8Array(0);
-  classStep = 0;
-  releaseColliders3D();
-  releaseGrid3D();
 }
 
 /** Sensor events: overlaps found this step against those of the last. */
@@ -297,6 +281,7 @@ function gather(world: PhysicsWorld, s: Shape3DStore): void {
   const balls = query(world, [c.Position, c.Ball]);
   const cap = world.capacity;
   let n = 0;
+  ensure(64);
   const h = world.h,
     spec = cs.settings.speculativeDistance < SHAPE_SPECULATIVE_DISTANCE ? cs.settings.speculativeDistance : SHAPE_SPECULATIVE_DISTANCE;
   const halfSpec = 0.5 * spec;
@@ -305,6 +290,7 @@ function gather(world: PhysicsWorld, s: Shape3DStore): void {
     oy = c.PreviousPosition.y,
     oz = c.PreviousPosition.z;
   const add = (e: number, b: number, isBall: boolean): void => {
+    ensure(n + 1);
     const sc = scratch;
     // Static, kinematic and sleeping bodies from this step's queries (no component lookups); dynamic ones classified.
     let t: number;
@@ -392,12 +378,6 @@ function gather(world: PhysicsWorld, s: Shape3DStore): void {
     scratch.n = 0;
     return;
   }
-  // Room for every collider before the loops (growth inside `add`, first taken in a large world's first
-  // step, was compiled as a deoptimisation).
-  let colliders = 0;
-  for (let e = 1; e <= cap; e++) if (s.body[e] !== 0) colliders++;
-  for (let i = 0; i < balls.length; i++) if (s.first[balls[i]!] === 0) colliders++;
-  ensure(colliders);
   for (let e = 1; e <= cap; e++) if (s.body[e] !== 0) add(e, s.body[e]!, false);
   for (let i = 0; i < balls.length; i++) {
     const b = balls[i]!;

@@ -26,14 +26,6 @@ import { BodyType } from '../state.js';
  */
 const RESTING_SEARCH_PERIOD = 8;
 
-/**
- * The grid's cell width in widest ordinary boxes. A box meets the boxes whose low corner lies within
- * [its min - widest, its max] on each axis: with cells one widest box wide that range covers two or
- * three cells an axis (about 22 buckets a box in a pile of cubes), with 1.5 about two (about 10 buckets
- * for a third more box tests), with 2 fewer buckets still but twice the tests.
- */
-const CELL_FACTOR = 1.5;
-
 /** Broadphase scratch: a hashed uniform grid (counting sort of colliders by the cell of their box's low corner). */
 const grid = {
   start: new Int32Array(0),
@@ -49,60 +41,9 @@ const grid = {
   largeCount: 0,
 };
 
-/**
- * Drops the grid's scratch arrays (the next pass grows them again). The warm-up calls it (through
- * releaseShapeScratch3D) before its fresh world's first step, so the growth paths run once after V8
- * records type feedback (see roomInt32).
- */
-export function releaseGrid3D(): void {
-  grid.start = new Int32Array(0);
-  grid.items = new Int32Array(0);
-  grid.bucket = new Int32Array(0);
-  grid.large = new Int32Array(0);
-  grid.width = new Float64Array(0);
-  grid.seen = new Int32Array(0);
-  grid.packed = new Float64Array(0);
-  grid.searching = new Uint8Array(0);
-  grid.firstRest = new Int32Array(0);
-}
-
-/**
- * `a` if it holds at least n entries, else a new array of max(64, 2 n) (contents not kept: the grid's
- * scratch is rewritten every step). Called on every step, not only when an array must grow: a branch
- * first taken in a world's first step, before V8 has type feedback for it, is compiled as a
- * deoptimisation that throws the optimised stage back to the interpreter.
- */
-function roomInt32(a: Int32Array<ArrayBuffer>, n: number): Int32Array<ArrayBuffer> {
-  return a.length >= n ? a : new Int32Array(Math.max(64, 2 * n));
-}
-
-/** roomInt32 for a Float64Array. */
-function roomFloat64(a: Float64Array<ArrayBuffer>, n: number): Float64Array<ArrayBuffer> {
-  return a.length >= n ? a : new Float64Array(Math.max(64, 2 * n));
-}
-
-/** roomInt32 for a Uint8Array. */
-function roomUint8(a: Uint8Array<ArrayBuffer>, n: number): Uint8Array<ArrayBuffer> {
-  return a.length >= n ? a : new Uint8Array(Math.max(64, 2 * n));
-}
-
-/**
- * Bucket of cell (x, y, z) in a table of mask + 1 buckets: a hash of the row (y, z) (Teschner et al.,
- * "Optimized Spatial Hashing for Collision Detection of Deformable Objects", 2003) plus x, so the cells
- * of a row along x lie in consecutive buckets and a neighbourhood's cells of one row are one run of
- * buckets (and of items) instead of scattered ones.
- */
-function cellBucket(x: number, y: number, z: number, mask: number): number {
-  return (rowHash(y, z) + x) & mask;
-}
-
-/**
- * The hash of grid row (y, z) (cellBucket); its high bits are folded into the low ones the mask keeps
- * (the products' low bits alone leave rows' runs of buckets overlapping more often).
- */
-function rowHash(y: number, z: number): number {
-  const h = Math.imul(y, 19349663) ^ Math.imul(z, 83492791);
-  return h ^ (h >>> 15);
+/** Bucket of cell (x, y, z) in a table of mask + 1 buckets (Teschner et al., "Optimized Spatial Hashing for Collision Detection of Deformable Objects", 2003). */
+function cellHash(x: number, y: number, z: number, mask: number): number {
+  return (Math.imul(x, 73856093) ^ Math.imul(y, 19349663) ^ Math.imul(z, 83492791)) & mask;
 }
 
 /**
@@ -122,28 +63,25 @@ enum PackedBox {
 
 /**
  * Broadphase: every collider's box goes into the cell of a uniform grid holding its low corner, with a
- * cell CELL_FACTOR times as wide as the widest ordinary box, so a box can only meet boxes whose low
- * corner lies in its own cell or the cells down to one widest box below its low corner; boxes more
- * than four times the mean width ("large": a ground slab) are tested against every collider instead.
- * Each candidate pair is seen once (from its lower collider index) and goes to `pair`. Then every
- * collider against the meshes and the planes.
+ * cell as wide as the widest ordinary box, so a box can only meet boxes whose low corner lies in its own
+ * cell or one of the 26 around it; boxes more than four times the mean width ("large": a ground slab)
+ * are tested against every collider instead. Each candidate pair is seen once (from its lower collider
+ * index) and goes to `pair`. Then every collider against the meshes and the planes.
  */
 export function pairs(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState): void {
   const n = scratch.n;
-  const widest = gridCell(n);
+  const cell = gridCell(n);
   // No moving collider (a pile asleep): no pair can be new, and the grid is not built.
   if (!anyMoving(world, n)) {
     planesAndMeshes(world, s, st);
     return;
   }
-  const inv = 1 / (CELL_FACTOR * widest);
+  const inv = 1 / cell;
   let size = 64;
   while (size < 2 * n) size *= 2;
   markSearching(world, s, n);
   fillGrid(n, inv, size);
-  // (The widest side is measured from rounded bounds: a relative 1e-9 more keeps a touching neighbour's
-  // low corner inside the searched cells.)
-  searchNeighbours(world, s, st, inv, size - 1, widest * (1 + 1e-9));
+  searchNeighbours(world, s, st, n, inv, size - 1);
   restingPairs(world, s, st);
   largePairs(world, s, st, n);
   planesAndMeshes(world, s, st);
@@ -151,8 +89,8 @@ export function pairs(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState):
 
 /**
  * Each collider's box's widest side (grid.width), the "large" ones (wider than four times the mean: into
- * grid.large, grid.largeCount of them, and sc.order -1; the others 0); returns the widest ordinary box's
- * side (1 when there is none), m, which sets the grid's cell.
+ * grid.large, grid.largeCount of them, and sc.order -1; the others 0), and the grid's cell: the widest
+ * ordinary box's side (1 when there is none), m.
  */
 function gridCell(n: number): number {
   const sc = scratch,
@@ -163,8 +101,10 @@ function gridCell(n: number): number {
     minZ = sc.minZ,
     maxZ = sc.maxZ;
   // Each box's widest side (written out: Math.max of three arguments is a call), kept for the second loop.
-  grid.large = roomInt32(grid.large, n);
-  grid.width = roomFloat64(grid.width, n);
+  if (grid.large.length < n) {
+    grid.large = new Int32Array(Math.max(64, 2 * n));
+    grid.width = new Float64Array(Math.max(64, 2 * n));
+  }
   const width = grid.width;
   let mean = 0;
   for (let i = 0; i < n; i++) {
@@ -209,7 +149,7 @@ function anyMoving(world: PhysicsWorld, n: number): boolean {
 function markSearching(world: PhysicsWorld, s: Shape3DStore, n: number): void {
   const sc = scratch,
     type = world.collision.bodyType;
-  grid.searching = roomUint8(grid.searching, n);
+  if (grid.searching.length < n) grid.searching = new Uint8Array(Math.max(64, 2 * n));
   const sl = world.collision.sleep,
     searching = grid.searching,
     rest = sl.restTime,
@@ -242,12 +182,16 @@ function markSearching(world: PhysicsWorld, s: Shape3DStore, n: number): void {
 function fillGrid(n: number, inv: number, size: number): void {
   const sc = scratch,
     mask = size - 1;
-  grid.start = roomInt32(grid.start, size + 1);
-  grid.seen = roomInt32(grid.seen, size);
+  if (grid.start.length < size + 1) {
+    grid.start = new Int32Array(2 * size + 1);
+    grid.seen = new Int32Array(2 * size + 1);
+  }
   grid.seen.fill(0, 0, size);
-  grid.items = roomInt32(grid.items, n);
-  grid.bucket = roomInt32(grid.bucket, n);
-  grid.firstRest = roomInt32(grid.firstRest, size);
+  if (grid.items.length < n) {
+    grid.items = new Int32Array(Math.max(64, 2 * n));
+    grid.bucket = new Int32Array(Math.max(64, 2 * n));
+  }
+  if (grid.firstRest.length < size) grid.firstRest = new Int32Array(2 * size);
   const start = grid.start,
     items = grid.items,
     bucket = grid.bucket,
@@ -264,7 +208,7 @@ function fillGrid(n: number, inv: number, size: number): void {
   firstRest.fill(0, 0, size);
   for (let i = 0; i < n; i++) {
     if (order[i] === -1) continue;
-    const b = cellBucket(Math.floor(minX[i]! * inv), Math.floor(minY[i]! * inv), Math.floor(minZ[i]! * inv), mask);
+    const b = cellHash(Math.floor(minX[i]! * inv), Math.floor(minY[i]! * inv), Math.floor(minZ[i]! * inv), mask);
     bucket[i] = b;
     start[b + 1]!++;
     firstRest[b] = firstRest[b]! + searching[i]!;
@@ -289,7 +233,7 @@ function fillGrid(n: number, inv: number, size: number): void {
   // The boxes in bucket order, packed, so the neighbour search reads memory in sequence instead of
   // jumping through the collider arrays.
   const placed = start[size]!;
-  grid.packed = roomFloat64(grid.packed, PackedBox.STRIDE * placed);
+  if (grid.packed.length < PackedBox.STRIDE * placed) grid.packed = new Float64Array(2 * PackedBox.STRIDE * placed);
   const pk = grid.packed;
   for (let k = 0; k < placed; k++) {
     const j = items[k]!,
@@ -305,75 +249,73 @@ function fillGrid(n: number, inv: number, size: number): void {
 
 /**
  * The searching colliders against their grid neighbours (fillGrid's grid, cells 1 / inv wide, bucket
- * mask `mask`, no ordinary box wider than `widest`, m): every overlapping pair that may collide goes to
- * `pair`. Sources are the colliders of moving (dynamic or kinematic) bodies, taken in bucket order
- * (neighbours in space search one after the other, on the same buckets); a resting pile's sleeping and
- * static colliders are only ever met as neighbours, so an asleep pile costs no neighbour search.
+ * mask `mask`): every overlapping pair that may collide goes to `pair`. Sources are the colliders of
+ * moving (dynamic or kinematic) bodies; a resting pile's sleeping and static colliders are only ever met
+ * as neighbours, so an asleep pile costs no neighbour search.
  */
-function searchNeighbours(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, inv: number, mask: number, widest: number): void {
+function searchNeighbours(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, n: number, inv: number, mask: number): void {
   const sc = scratch,
-    type = world.collision.bodyType,
-    body = sc.body;
+    type = world.collision.bodyType;
   const start = grid.start,
     items = grid.items,
     seen = grid.seen,
+    order = sc.order,
     firstRest = grid.firstRest,
+    searching = grid.searching,
     pk = grid.packed;
-  for (let bi = 0; bi <= mask; bi++) {
-    for (let ki = start[bi]!, ke = firstRest[bi]!; ki < ke; ki++) {
-      const i = items[ki]!,
-        oi = PackedBox.STRIDE * ki;
-      const ti = type[body[i]!]!;
-      const x0 = pk[oi + PackedBox.MIN_X]!,
-        x1 = pk[oi + PackedBox.MAX_X]!,
-        y0 = pk[oi + PackedBox.MIN_Y]!,
-        y1 = pk[oi + PackedBox.MAX_Y]!,
-        z0 = pk[oi + PackedBox.MIN_Z]!,
-        z1 = pk[oi + PackedBox.MAX_Z]!;
-      const cx = Math.floor(x0 * inv),
-        cy = Math.floor(y0 * inv),
-        cz = Math.floor(z0 * inv);
-      // A box that overlaps this one has its low corner in [min - widest, max] on each axis: cells from
-      // that of min - widest (c - 1 or c) up to that of this box's high corner; along x, a run of buckets.
-      const lx = Math.floor((x0 - widest) * inv) - cx,
-        ly = Math.floor((y0 - widest) * inv) - cy,
-        lz = Math.floor((z0 - widest) * inv) - cz;
-      const hx = Math.floor(x1 * inv) - cx,
-        hy = Math.floor(y1 * inv) - cy,
-        hz = Math.floor(z1 * inv) - cz;
-      const mark = i + 1;
-      for (let dy = ly; dy <= hy; dy++)
-        for (let dz = lz; dz <= hz; dz++) {
-          const row = rowHash(cy + dy, cz + dz) + cx;
-          for (let dx = lx; dx <= hx; dx++) {
-            const b = (row + dx) & mask;
-            // Two neighbour cells may share a bucket: each bucket is searched once per collider.
-            if (seen[b] === mark) continue;
-            seen[b] = mark;
-            // A pair of two searching colliders is taken from its lower index: of the bucket's searching
-            // colliders (ascending), only those above i; then every collider that does not search.
-            const b0 = start[b]!,
-              e = start[b + 1]!;
-            let k = firstRest[b]!;
-            while (k > b0 && items[k - 1]! > i) k--;
-            for (; k < e; k++) {
-              const o = PackedBox.STRIDE * k;
-              if (
-                pk[o + PackedBox.MIN_X]! > x1 ||
-                pk[o + PackedBox.MAX_X]! < x0 ||
-                pk[o + PackedBox.MIN_Y]! > y1 ||
-                pk[o + PackedBox.MAX_Y]! < y0 ||
-                pk[o + PackedBox.MIN_Z]! > z1 ||
-                pk[o + PackedBox.MAX_Z]! < z0
-              )
-                continue;
-              const j = items[k]!;
-              if (!meets(ti, type[body[j]!]!)) continue;
-              pair(world, s, st, i, j);
-            }
+  const minX = sc.minX,
+    maxX = sc.maxX,
+    minY = sc.minY,
+    maxY = sc.maxY,
+    minZ = sc.minZ,
+    maxZ = sc.maxZ;
+  for (let i = 0; i < n; i++) {
+    if (order[i] === -1 || searching[i] === 0) continue;
+    const ti = type[sc.body[i]!]!;
+    const x0 = minX[i]!,
+      x1 = maxX[i]!,
+      y0 = minY[i]!,
+      y1 = maxY[i]!,
+      z0 = minZ[i]!,
+      z1 = maxZ[i]!;
+    const cx = Math.floor(x0 * inv),
+      cy = Math.floor(y0 * inv),
+      cz = Math.floor(z0 * inv);
+    // A box that overlaps this one has its low corner in [min - cell, max] on each axis (no box is wider
+    // than a cell): cells from c - 1 up to the cell of this box's high corner.
+    const hx = Math.floor(x1 * inv) - cx,
+      hy = Math.floor(y1 * inv) - cy,
+      hz = Math.floor(z1 * inv) - cz;
+    const mark = i + 1;
+    for (let dx = -1; dx <= hx; dx++)
+      for (let dy = -1; dy <= hy; dy++)
+        for (let dz = -1; dz <= hz; dz++) {
+          const b = cellHash(cx + dx, cy + dy, cz + dz, mask);
+          // Two neighbour cells may share a bucket: each bucket is searched once per collider.
+          if (seen[b] === mark) continue;
+          seen[b] = mark;
+          // A pair of two searching colliders is taken from its lower index: of the bucket's searching
+          // colliders (ascending), only those above i; then every collider that does not search.
+          const b0 = start[b]!,
+            e = start[b + 1]!;
+          let k = firstRest[b]!;
+          while (k > b0 && items[k - 1]! > i) k--;
+          for (; k < e; k++) {
+            const o = PackedBox.STRIDE * k;
+            if (
+              pk[o + PackedBox.MIN_X]! > x1 ||
+              pk[o + PackedBox.MAX_X]! < x0 ||
+              pk[o + PackedBox.MIN_Y]! > y1 ||
+              pk[o + PackedBox.MAX_Y]! < y0 ||
+              pk[o + PackedBox.MIN_Z]! > z1 ||
+              pk[o + PackedBox.MAX_Z]! < z0
+            )
+              continue;
+            const j = items[k]!;
+            if (!meets(ti, type[sc.body[j]!]!)) continue;
+            pair(world, s, st, i, j);
           }
         }
-    }
   }
 }
 
