@@ -227,20 +227,32 @@ export function approach(value: number, target: number, rate: number, dt: number
   return value + clamp(target - value, -rate * dt, rate * dt);
 }
 
-/** How the keyboard's climb / dive and bank keys move their input (`rampKey`). */
+/**
+ * How the keyboard's climb / dive and bank keys move their input (`rampKey`): a held key's input
+ * grows as from (e^(rise t) - 1), slowly at first and then faster, the way a keyboard-flown sim
+ * moves its control surface, so a tap asks for a small correction and a held key for full stick.
+ */
 export const KEY_RAMP = Object.freeze({
-  /** Rate a held key moves its input towards full, 1/s: full stick after 0.4 s of holding (1.25 s felt sluggish). */
-  rise: 2.5,
-  /** Rate a released key's input returns to 0, and a reversed one crosses 0, 1/s: neutral in 0.2 s. */
-  fall: 5,
+  /**
+   * Growth rate of a held key's input, 1/s: with `from` 0.25 it is full after ln 5 / 4 = 0.40 s of
+   * holding (as the straight ramp was, so a held key banks as briskly), 0.12 after a 0.1 s tap and
+   * 0.31 after 0.2 s. (A straight ramp to full in 0.4 s gave
+   * 0.25 for a 0.1 s tap: strangers found the bank all or nothing; one to full in 1.25 s felt sluggish.)
+   */
+  rise: 4,
+  /** Where the growth starts from (added to the input's size), fraction of full stick. */
+  from: 0.25,
+  /** Rate a released key's input returns to 0, and a reversed one crosses 0, 1/s: neutral in 0.25 s. */
+  fall: 4,
 });
 
 /**
  * One step of a keyboard axis: `value` (the input now, in [-1, 1]) moved over `dt` s (>= 0)
- * towards `direction` (-1, 0 or 1: the key held, or none) at `KEY_RAMP.rise` per second, back
- * towards 0 at `KEY_RAMP.fall` (released, or held the other way while still on the first side).
+ * towards `direction` (-1, 0 or 1: the key held, or none): back towards 0 at `KEY_RAMP.fall` per
+ * second (released, or held the other way while still on the first side), else on towards the key
+ * held, its size growing as |v| + from = (|v0| + from) e^(rise dt) (exact for any dt).
  * A key is not a stick: it is all or nothing, so a tap ramped this way asks for a small correction
- * (a 0.1 s tap: 0.25 of full stick) and only a held key asks for the full climb or bank.
+ * (a 0.1 s tap: 0.12 of full stick) and only a key held 0.4 s asks for the full climb or bank.
  * @returns the new input, in [-1, 1].
  * @throws RangeError on a value outside [-1, 1], a direction not in {-1, 0, 1} or a negative dt.
  */
@@ -257,5 +269,7 @@ export function rampKey(value: number, direction: number, dt: number): number {
     dt -= Math.abs(value) / KEY_RAMP.fall;
     value = 0;
   }
-  return clamp(value + direction * KEY_RAMP.rise * dt, -1, 1);
+  if (direction === 0) return value;
+  const size = (Math.abs(value) + KEY_RAMP.from) * Math.exp(KEY_RAMP.rise * dt) - KEY_RAMP.from;
+  return direction * Math.min(1, size);
 }

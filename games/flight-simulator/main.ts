@@ -16,7 +16,7 @@
  * altimeter, heading, vertical speed, throttle) with the attitude indicator in its middle. The chase
  * camera sits close behind and widens its view with speed, so the speed shows.
  * Keys: arrows or W/S/A/D: climb / dive and bank (with "pilot's pitch" in the panel, down pulls up),
- * ramped (./assist.ts rampKey: a tap is a small correction, full stick after 0.4 s held);
+ * ramped (./assist.ts rampKey: a tap is a small correction, slowly at first, full stick after 0.4 s held);
  * Q / E: rudder; X / Z (or Shift, + / -): faster / slower (the throttle: the only input that moves it;
  * no Ctrl, which with W closes the browser's tab);
  * C: camera (chase / cockpit); P pause, N step, R reset.
@@ -303,7 +303,7 @@ const game = await startThreeGame({
   // frame; by default the loop ran at most 4, so below 15 fps the flight went in slow motion and a
   // held key did less per real second). A step costs about 0.2 ms; the handling stays the fixed
   // step's whatever the frame rate. No more than 0.15 s a frame: a key's tap still shows as a
-  // ramped input, not a full one (KEY_RAMP.rise 2.5 per s).
+  // ramped input, not a full one (KEY_RAMP: 0.12 of full after a 0.1 s tap).
   maxFrameTime: 0.15,
   maxStepsPerFrame: 9,
   controls: [

@@ -538,7 +538,7 @@ describe('projects', () => {
     }, null);
     expect(start.inside).toBe(true);
     expect(await g.page.locator('[data-hud="path-marker"]').isVisible()).toBe(true);
-    // A tap: the key's input rises at KEY_RAMP.rise (2.5 per s), not to full at once, then falls back to 0.
+    // A tap: the key's input grows from small (KEY_RAMP: full after 0.4 s held), not to full at once, then falls back to 0.
     await g.page.keyboard.down('ArrowUp');
     const tapped = await g.waitFor(() => {
       const k = (window.game as unknown as Flight).keyInput().pitch;
