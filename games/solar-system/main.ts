@@ -76,6 +76,7 @@ import {
   SphereGeometry,
   Sprite,
   SpriteMaterial,
+  SRGBColorSpace,
   Vector2,
   Vector3,
 } from 'three';
@@ -649,18 +650,112 @@ let arrivalAt = -Infinity;
 
 // ---- Bodies on the display scale ---------------------------------------------------------------------
 
+/** A colour `c` with each channel scaled by `k` (clamped), as a CSS colour. */
+function shade(c: number, k: number): string {
+  const ch = (shift: number) => Math.max(0, Math.min(255, Math.round(((c >> shift) & 255) * k)));
+  return `rgb(${ch(16)}, ${ch(8)}, ${ch(0)})`;
+}
+
+/**
+ * A body's surface, drawn on a 256 x 128 canvas wrapped round its sphere (seeded, so the same every
+ * load): the giants in bands of their colour (Jupiter with its Great Red Spot), the Earth oceans
+ * with land, cloud and ice caps, Mars rust with dark lowlands and a polar cap, Mercury grey and
+ * cratered, Venus veiled in pale cloud, the Sun mottled with a brighter core colour.
+ */
+function surfaceTexture(name: SolarSystemBody): CanvasTexture {
+  const W = 256,
+    H = 128;
+  const c = document.createElement('canvas');
+  c.width = W;
+  c.height = H;
+  const g = c.getContext('2d')!;
+  const rng = new Rng(SOLAR_SYSTEM_BODIES.indexOf(name) + 17);
+  const base = COLOR[name];
+  g.fillStyle = hex(base);
+  g.fillRect(0, 0, W, H);
+  const blobs = (n: number, colour: () => string, size: [number, number], squash = 1) => {
+    for (let i = 0; i < n; i++) {
+      g.fillStyle = colour();
+      g.beginPath();
+      const r = size[0] + (size[1] - size[0]) * rng.next();
+      g.ellipse(rng.next() * W, H * (0.1 + 0.8 * rng.next()), r, r * squash, 0, 0, 2 * Math.PI);
+      g.fill();
+    }
+  };
+  if (name === 'Jupiter' || name === 'Saturn' || name === 'Uranus' || name === 'Neptune') {
+    // Bands: stripes of lighter and darker tones, many and strong on Jupiter, faint on the ice giants.
+    const bands = name === 'Jupiter' ? 14 : name === 'Saturn' ? 10 : 6;
+    const depth = name === 'Jupiter' ? 0.5 : name === 'Saturn' ? 0.3 : 0.12;
+    let y = 0;
+    while (y < H) {
+      const h = (H / bands) * (0.5 + rng.next());
+      g.fillStyle = shade(base, 1 + depth * (2 * rng.next() - 1));
+      g.fillRect(0, y, W, h + 1);
+      y += h;
+    }
+    if (name === 'Jupiter') {
+      g.fillStyle = shade(0xc0603a, 1);
+      g.beginPath();
+      g.ellipse(W * 0.3, H * 0.64, 14, 6, 0, 0, 2 * Math.PI);
+      g.fill();
+    }
+  } else if (name === 'Earth') {
+    blobs(14, () => (rng.next() < 0.6 ? '#3f8f4a' : '#9a8a55'), [8, 24], 0.7);
+    blobs(22, () => 'rgba(255, 255, 255, 0.55)', [4, 14], 0.35);
+    g.fillStyle = '#f4f8ff';
+    g.fillRect(0, 0, W, 9);
+    g.fillRect(0, H - 10, W, 10);
+  } else if (name === 'Mars') {
+    blobs(16, () => shade(base, 0.6 + 0.2 * rng.next()), [6, 20], 0.6);
+    g.fillStyle = '#f6efe8';
+    g.fillRect(0, 0, W, 7);
+  } else if (name === 'Mercury') {
+    blobs(60, () => shade(base, 0.7 + 0.5 * rng.next()), [1.5, 7]);
+  } else if (name === 'Venus') {
+    blobs(30, () => shade(base, 0.9 + 0.2 * rng.next()), [10, 30], 0.3);
+  } else {
+    blobs(80, () => shade(0xffeab0, 0.95 + 0.1 * rng.next()), [2, 6]);
+  }
+  const t = new CanvasTexture(c);
+  t.colorSpace = SRGBColorSpace;
+  return t;
+}
+
 const sphere = new SphereGeometry(1, 32, 20);
 const bodyMeshes = Object.fromEntries(
   SOLAR_SYSTEM_BODIES.map((b) => {
+    const map = surfaceTexture(b);
+    // The planets lit by the Sun, with a little of their own colour so the night side still reads.
     const material =
       b === 'Sun'
-        ? new MeshBasicMaterial({ color: COLOR[b] })
-        : new MeshStandardMaterial({ color: COLOR[b], roughness: 0.8, emissive: COLOR[b], emissiveIntensity: 0.3 });
+        ? new MeshBasicMaterial({ map })
+        : new MeshStandardMaterial({ map, roughness: 0.8, emissive: 0xffffff, emissiveMap: map, emissiveIntensity: 0.25 });
     const mesh = new Mesh(sphere, material);
+    // Axes tipped a little (Uranus on its side), so the bands and caps read as a globe.
+    mesh.rotation.x = b === 'Uranus' ? 1.7 : 0.4;
     app.scene.add(mesh);
     return [b, mesh];
   }),
 ) as unknown as Record<SolarSystemBody, Mesh>;
+
+/** A soft halo of its colour round each planet, a few pixels wide at any zoom, so the small ones read as lights. */
+const HALO_PX = 56;
+const planetHalos = Object.fromEntries(
+  SOLAR_SYSTEM_PLANETS.map((b) => {
+    const halo = new Sprite(
+      new SpriteMaterial({
+        map: glowTexture('rgba(255, 255, 255, 0.9)', 'rgba(255, 255, 255, 0.3)', 'rgba(255, 255, 255, 0)'),
+        color: COLOR[b],
+        blending: AdditiveBlending,
+        depthWrite: false,
+        transparent: true,
+        sizeAttenuation: false,
+      }),
+    );
+    app.scene.add(halo);
+    return [b, halo];
+  }),
+) as unknown as Record<(typeof SOLAR_SYSTEM_PLANETS)[number], Sprite>;
 // Saturn's rings: a flat disc that follows Saturn.
 const rings = new Mesh(new SphereGeometry(1, 32, 4), new MeshBasicMaterial({ color: 0xcdb98a, transparent: true, opacity: 0.5 }));
 app.scene.add(rings);
@@ -1176,6 +1271,15 @@ function frame(): void {
     const r = drawnRadius(name) * UNITS_PER_AU;
     mesh.position.set(shown[3 * i]!, shown[3 * i + 1]!, shown[3 * i + 2]!);
     mesh.scale.setScalar(r);
+    // A turn every few real seconds: the surfaces show they are globes.
+    mesh.rotation.y += dtReal * (name === 'Sun' ? 0.1 : 0.6);
+    const halo = planetHalos[name as (typeof SOLAR_SYSTEM_PLANETS)[number]];
+    if (halo) {
+      halo.position.copy(mesh.position);
+      // Without size attenuation a sprite of scale k spans k / tan(fov / 2) of the half-height.
+      const tanHalf = Math.tan(((app.camera.fov / 2) * Math.PI) / 180);
+      halo.scale.setScalar((2 * HALO_PX * tanHalf) / Math.max(1, app.renderer.domElement.clientHeight));
+    }
     project(i, name, shown[3 * i]!, shown[3 * i + 1]!, shown[3 * i + 2]!, r, true);
   });
   sunGlow.position.set(0, 0, 0);
