@@ -1768,7 +1768,7 @@ function updateStatus(force = false): void {
   const total = best.reduce((s, n) => s + n, 0);
   // The goal, and the forecast's verdict: what the launch (or the flight) will do. What to change
   // is the player's to work out (the Hint button says, on request).
-  const goal = `Mission ${missionIndex + 1} of ${MISSIONS.length}: fly a probe to ${m.target} · ★★★ for ≤ ${m.stars3} km/s`;
+  const goal = `Mission ${missionIndex + 1}/${MISSIONS.length}: fly to ${m.target} · ★★★ ≤ ${m.stars3} km/s`;
   let line = '',
     cls = '';
   if (phase === 'aim') {
@@ -1945,7 +1945,9 @@ function showCard(f: Flight): void {
       card,
       'div',
       'ss-card-small',
-      r.stars < 3 ? `★★★ needs ${m.stars3} km/s or less in all.` : 'Fewer km/s or a quicker flight scores more.',
+      r.stars < 3
+        ? `★★★ needs ${m.stars3} km/s or less in all: hold Wait for a cheaper moment, then aim again.`
+        : 'Fewer km/s or a quicker flight scores more: a better moment may be cheaper.',
     );
   } else {
     put(card, 'h2', '', f.state === 'sun' ? 'The probe fell into the Sun' : `Missed ${m.target}`);

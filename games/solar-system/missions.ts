@@ -21,8 +21,9 @@
  * - Stars: for the mission's speed budget, the launch speed plus the burns': 3 for at most
  *   `stars3` km/s, 2 for at most `stars2`, else 1. The least a
  *   launch can take is about the Hohmann transfer's v_inf = v_E (sqrt(2 r / (1 AU + r)) - 1) for
- *   circular orbits (Hohmann 1925; Curtis, Orbital Mechanics, sect. 6.3); the thresholds leave room
- *   above it, since the planets' orbits are not circles and the window is rarely ideal.
+ *   circular orbits (Hohmann 1925; Curtis, Orbital Mechanics, sect. 6.3); the 3-star line is about
+ *   0.4 km/s above it, so 3 stars want a good moment (waiting for it), not just any launch that
+ *   arrives (scripts/solar-system-pilot.mjs finds a 3-star launch for each mission within 800 days).
  *
  * Units: the world's (AU, days, solar masses; see @bitphysics/projects solar-system). Speeds the
  * player sees are km/s (`KM_S` AU/day each).
@@ -88,56 +89,56 @@ export const MISSIONS: readonly Mission[] = Object.freeze(
       {
         target: 'Mars',
         zone: 0.14,
-        stars3: 3.6,
-        stars2: 5,
+        stars3: 3.3,
+        stars2: 4.5,
         distance: 1.524,
         brief: 'Mars is farther out: launch along the Earth’s path, fast enough to climb out to its orbit.',
       },
       {
         target: 'Venus',
         zone: 0.1,
-        stars3: 3.2,
-        stars2: 4.5,
+        stars3: 2.9,
+        stars2: 4,
         distance: 0.723,
         brief: 'Venus is nearer the Sun: launch against the Earth’s path to slow down and fall inwards.',
       },
       {
         target: 'Jupiter',
         zone: 0.75,
-        stars3: 9.8,
-        stars2: 12,
+        stars3: 9.2,
+        stars2: 11,
         distance: 5.203,
         brief: 'Jupiter is 5 AU out and takes almost 3 years to reach: launch where it will be, not where it is.',
       },
       {
         target: 'Mercury',
         zone: 0.08,
-        stars3: 8.6,
-        stars2: 11,
+        stars3: 7.9,
+        stars2: 10,
         distance: 0.387,
         brief: 'Mercury is small and fast, deep in the Sun’s pull: its ring is the smallest, so aim finely.',
       },
       {
         target: 'Saturn',
         zone: 1.2,
-        stars3: 11.5,
-        stars2: 14,
+        stars3: 10.7,
+        stars2: 13,
         distance: 9.537,
         brief: 'Saturn is nearly twice as far out as Jupiter: a cheap launch takes 6 years, so wait for a good moment.',
       },
       {
         target: 'Uranus',
         zone: 1.9,
-        stars3: 12.5,
-        stars2: 15,
+        stars3: 11.7,
+        stars2: 14,
         distance: 19.19,
         brief: 'Uranus is 19 AU out: the slightest error grows over 16 years, so use the burns on the way.',
       },
       {
         target: 'Neptune',
         zone: 3,
-        stars3: 13,
-        stars2: 16,
+        stars3: 12.1,
+        stars2: 15,
         distance: 30.07,
         brief: 'Neptune, the last: 30 AU and 30 years of flight for the cheapest launch.',
       },
