@@ -12,7 +12,8 @@
  * world, pulled by the Sun and every planet, while time speeds up; mid-course burns (the same keys
  * and buttons) change its course, from a small tank of fuel, and the forecast follows each burn.
  * Reaching the ring round the planet wins the mission, with stars for a cheap mission (the launch
- * speed plus the burns). Waiting (Wait held: time runs) lets the planets line up. The Hint button
+ * speed plus the burns; 3 stars want a good moment) and a score (./missions.ts missionScore) shown
+ * on a result card with the best so far, every mission's stars and the next mission's brief. Waiting (Wait held: time runs) lets the planets line up. The Hint button
  * (H) says which change, or which burn, arrives and how many presses it takes (./advice.ts).
  *
  * Drawn on a compressed distance scale (./distance-scale.ts), so the eight planets fit on one screen
@@ -25,7 +26,7 @@
  * of the mission's step (./missions.ts missionTimeStep: the chosen step, longer for the outer
  * planets), at most MAX_STEPS_PER_TICK of them (a faster rate then runs slower than asked).
  * Keys: ← → turn the launch, ↑ ↓ its speed (in flight: burns in / out, faster / slower), Space
- * launch, W (held) wait, H hint, Enter next mission or try again, [ ] slower / faster, D distances,
+ * launch, W (held) wait, H hint, Enter next mission or try again, T try again, [ ] slower / faster, D distances,
  * 1 2 3 views, E sizes, P pause, N single step, R reset (back to the last start: the first date, or
  * the last launch after a Try again).
  * URL: ?mission=1..7, ?rate=days-per-second while aiming (0..400, default 0), ?step=hours (0.25|1|6|24), ?integrator=name,
@@ -1854,7 +1855,7 @@ cardStyle.textContent = `
 .ss-card.bad h2 { color: #ffb4a8; }
 .ss-card .ss-card-stars { font-size: 34px; line-height: 1.1; color: #ffd166; letter-spacing: 4px; }
 .ss-card .ss-card-stars span { display: inline-block; animation: ss-pop 0.35s ease-out backwards; }
-.ss-card .ss-card-stars span.off { color: #6b7890; }
+.ss-card .ss-card-stars span.off { color: #8391a8; }
 @keyframes ss-pop { from { transform: scale(0.2); opacity: 0; } }
 .ss-card .ss-card-score { font-size: 22px; font-weight: 700; color: #ffffff; margin: 4px 0 0; }
 .ss-card .ss-card-record { color: #7ee787; font-weight: 700; }

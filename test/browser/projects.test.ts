@@ -7,6 +7,7 @@
  */
 
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { lowContrastText } from './contrast-check';
 import { Harness } from './harness';
 import { checkPageContract } from './page-contract';
 
@@ -220,6 +221,8 @@ describe('projects', () => {
     const budget = Number(await card.locator('.ss-card-parts b').first().textContent());
     expect(budget).toBeGreaterThanOrEqual(975);
     expect(budget).toBeLessThanOrEqual(990);
+    // The card's text over the scene is legible (WCAG AA, 4.5:1).
+    expect((await lowContrastText(g.page)).filter((t) => /reached|points|arrival|Speed|Flight|Next|Try|Mars|★/.test(t.text))).toEqual([]);
     await card.getByRole('button', { name: 'next mission (Enter)' }).click();
     await card.waitFor({ state: 'hidden' });
     const next = await g.page.evaluate(() => (window.game as unknown as Flow).mission());
