@@ -283,6 +283,8 @@ const TRAIL_POINTS = 4096;
 /** The probe's flown path, heliocentric AU (x, y, z each), trailCount points. */
 const trail = new Float64Array(3 * TRAIL_POINTS);
 let trailCount = 0;
+/** The target's distance from the Sun at the last launch, AU (as the aim's verdict compares with it). */
+let launchTargetR = 1;
 /** The date of the last launch, ms (Try again starts there). */
 let launchMs = 0;
 /** The rate of the flight under way, days/s (./missions.ts flightRate of its deadline). */
@@ -431,6 +433,7 @@ function launch(): void {
   planFlight(shell.world, handles, mission(), aim, plan);
   launchMs = handles.epoch + shell.world.time * 86_400_000;
   flight = launchProbe(shell.world, handles, mission(), aim, plan, baseStep());
+  launchTargetR = distanceFromSun(mission().target);
   flightDaysPerSecond = flightRate(flight.deadline);
   phase = 'flight';
   // The launch's forecast is the flight's course from the launch.
@@ -1900,6 +1903,31 @@ function hideCard(): void {
 }
 
 /**
+ * Why flight `f` (not arrived) failed, from its flown path (the trail) and the target's distance
+ * from the Sun at the launch (as the aim's verdict says it), and what to change: a path that never reached the target's orbit wants more
+ * speed, one that crossed it came at the wrong time (wait, or turn).
+ */
+function missAdvice(f: Flight): string {
+  const m = f.mission;
+  if (f.state === 'sun') return 'It fell into the Sun: launch slower against the Earth’s path, or turn it more outwards.';
+  let far = 0,
+    near = Infinity;
+  for (let i = 0; i < trailCount; i++) {
+    const r = Math.hypot(trail[3 * i]!, trail[3 * i + 1]!, trail[3 * i + 2]!);
+    far = Math.max(far, r);
+    near = Math.min(near, r);
+  }
+  const rT = launchTargetR;
+  const outward = m.distance > 1;
+  const near2 = `closest ${f.closest.toFixed(2)} AU; the ring is ${m.zone} AU`;
+  if (outward && far < rT - m.zone)
+    return `It turned back ${far.toFixed(2)} AU from the Sun, short of ${m.target}’s orbit (${rT.toFixed(2)} AU): launch faster.`;
+  if (!outward && near > rT + m.zone)
+    return `It fell in only to ${near.toFixed(2)} AU from the Sun; ${m.target} is at ${rT.toFixed(2)} AU: launch faster against the Earth’s path.`;
+  return `It crossed ${m.target}’s orbit when ${m.target} was elsewhere (${near2}): wait for a better moment, turn the launch, or burn on the way.`;
+}
+
+/**
  * Fills the result card for `f` (ended) and shows it CARD_DELAY_MS later: on an arrival the stars,
  * the score in parts, the best, every mission's stars, the next mission and its brief, Try again
  * (T) and Next mission (Enter); after a miss, how near it came and Try again (Enter).
@@ -1952,14 +1980,7 @@ function showCard(f: Flight): void {
     );
   } else {
     put(card, 'h2', '', f.state === 'sun' ? 'The probe fell into the Sun' : `Missed ${m.target}`);
-    put(
-      card,
-      'div',
-      'ss-card-small',
-      f.state === 'sun'
-        ? 'It lost too much speed: launch slower or more along the Earth’s path.'
-        : `Closest ${f.closest.toFixed(2)} AU; the ring is ${m.zone} AU. Wait for a better moment, or use the burns on the way.`,
-    );
+    put(card, 'div', 'ss-card-small', missAdvice(f));
     put(card, 'div', 'ss-card-small', `Stuck? ${named('Press H', 'Tap Hint')} for what to change.`);
   }
   const map = put(card, 'div', 'ss-card-map');
@@ -2066,7 +2087,7 @@ const panel = createPanel(
   note.dataset.hud = 'more-keys';
   note.style.cssText = 'margin: 6px 8px 8px; font: 12px/1.4 system-ui, sans-serif; color: #cfd8e6';
   note.textContent =
-    'More keys: Enter next mission / try again; [ ] time slower / faster; 1 2 3 views; D distances; E sizes. Right-drag turns the view, the wheel zooms.';
+    'More keys: Enter next mission / try again; T try again; [ ] time slower / faster; 1 2 3 views; D distances; E sizes. Right-drag turns the view, the wheel zooms.';
   panel.gui.domElement.append(note);
 }
 // R (the shell's reset) goes back to startMs: fresh orbits (the forecast's key names the world).
