@@ -1727,7 +1727,7 @@ function verdict(m: Mission): [string, string] {
   if (f.outcome === 'arrived')
     return [
       phase === 'aim'
-        ? `✓ arrives at ${m.target} in ${Math.round(f.end)} days · ${starText(starsFor(m, aim.speed))}${scheme}`
+        ? `✓ arrives at ${m.target} in ${Math.round(f.end)} days · ${starText(starsFor(m, aim.speed))} · ${missionScore(m, Math.max(aim.speed, 1e-3), Math.max(f.end, 1e-3)).total} points${scheme}`
         : `✓ arrives on day ${Math.round(f.end)}${scheme}`,
       'ok',
     ];
@@ -1983,6 +1983,14 @@ function showCard(f: Flight): void {
     put(card, 'div', 'ss-card-small', missAdvice(f));
     put(card, 'div', 'ss-card-small', `Stuck? ${named('Press H', 'Tap Hint')} for what to change.`);
   }
+  const sum = bestScore.reduce((a, b) => a + b, 0);
+  if (sum > 0)
+    put(
+      card,
+      'div',
+      'ss-card-small',
+      `All missions: ${best.reduce((a, b) => a + b, 0)} of ${3 * MISSIONS.length} stars · best scores ${sum} in all`,
+    );
   const map = put(card, 'div', 'ss-card-map');
   MISSIONS.forEach((x, i) => {
     const chip = put(map, 'span', i === missionIndex ? 'now' : '', `${i + 1} ${x.target} `);

@@ -89,7 +89,7 @@ describe('projects', () => {
     const m1 = await g.page.evaluate(() => (window.game as unknown as Solar).mission());
     expect(m1.aim.speed).toBeCloseTo(m0.aim.speed + 0.8, 9);
     expect(m1.plan.hit).toBe(true);
-    expect(await g.page.locator('[data-hud="plan"]').textContent()).toMatch(/ → ✓ arrives at Mars in \d+ days · ★★★$/);
+    expect(await g.page.locator('[data-hud="plan"]').textContent()).toMatch(/ → ✓ arrives at Mars in \d+ days · ★★★ · \d+ points$/);
     expect(await g.page.locator('[data-hud="plan"]').getAttribute('class')).toBe('ss-line ok');
     await g.waitFor(() => document.querySelector('[data-hud="hint"]')?.textContent === 'This launch arrives: press Space.', null);
     // The preview draws the forecast to the arrival: the probe's dots (every 4th point and the last),
@@ -212,12 +212,16 @@ describe('projects', () => {
       return m.plan.current ? m : null;
     }, null);
     expect(aimed.plan.hit).toBe(true);
+    // The line promises the score (the forecast is the flight flown ahead); the card gives it, within a point.
+    const promised = Number(/(\d+) points$/.exec((await g.page.locator('[data-hud="plan"]').textContent()) ?? '')?.[1]);
     await g.page.evaluate(() => (window.game as unknown as Flow).launch());
     expect(await g.page.evaluate(() => (window.game as unknown as Flow).finishFlight())).toBe('arrived');
     const card = g.page.locator('[data-hud="result-card"]');
     await card.waitFor({ state: 'visible' });
     expect(await card.locator('h2').textContent()).toBe('Mars reached!');
     expect(await card.locator('.ss-card-stars span:not(.off)').count()).toBe(3);
+    const scored = Number.parseInt((await card.locator('.ss-card-score').textContent()) ?? '', 10);
+    expect(Math.abs(scored - promised)).toBeLessThanOrEqual(1);
     const budget = Number(await card.locator('.ss-card-parts b').first().textContent());
     expect(budget).toBeGreaterThanOrEqual(975);
     expect(budget).toBeLessThanOrEqual(990);
