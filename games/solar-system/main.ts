@@ -12,7 +12,8 @@
  * world, pulled by the Sun and every planet, while time speeds up; mid-course burns (the same keys
  * and buttons) change its course, from a small tank of fuel, and the forecast follows each burn.
  * Reaching the ring round the planet wins the mission, with stars for a cheap mission (the launch
- * speed plus the burns). Waiting (Wait held: time runs) lets the planets line up. The Hint button
+ * speed plus the burns; 3 stars want a good moment) and a score (./missions.ts missionScore) shown
+ * on a result card with the best so far, every mission's stars and the next mission's brief. Waiting (Wait held: time runs) lets the planets line up. The Hint button
  * (H) says which change, or which burn, arrives and how many presses it takes (./advice.ts).
  *
  * Drawn on a compressed distance scale (./distance-scale.ts), so the eight planets fit on one screen
@@ -25,7 +26,7 @@
  * of the mission's step (./missions.ts missionTimeStep: the chosen step, longer for the outer
  * planets), at most MAX_STEPS_PER_TICK of them (a faster rate then runs slower than asked).
  * Keys: ← → turn the launch, ↑ ↓ its speed (in flight: burns in / out, faster / slower), Space
- * launch, W (held) wait, H hint, Enter next mission or try again, [ ] slower / faster, D distances,
+ * launch, W (held) wait, H hint, Enter next mission or try again, T try again, [ ] slower / faster, D distances,
  * 1 2 3 views, E sizes, P pause, N single step, R reset (back to the last start: the first date, or
  * the last launch after a Try again).
  * URL: ?mission=1..7, ?rate=days-per-second while aiming (0..400, default 0), ?step=hours (0.25|1|6|24), ?integrator=name,
@@ -101,6 +102,7 @@ import {
   MAX_SPEED,
   MISSIONS,
   type Mission,
+  missionScore,
   missionTimeStep,
   planFlight,
   starsFor,
@@ -281,6 +283,8 @@ const TRAIL_POINTS = 4096;
 /** The probe's flown path, heliocentric AU (x, y, z each), trailCount points. */
 const trail = new Float64Array(3 * TRAIL_POINTS);
 let trailCount = 0;
+/** The target's distance from the Sun at the last launch, AU (as the aim's verdict compares with it). */
+let launchTargetR = 1;
 /** The date of the last launch, ms (Try again starts there). */
 let launchMs = 0;
 /** The rate of the flight under way, days/s (./missions.ts flightRate of its deadline). */
@@ -292,6 +296,20 @@ let missionStartMs = startMs;
 const STARS_KEY = 'bitphysics.solar-system.stars';
 /** Best stars of each mission (0: not flown), kept in local storage. */
 const best: number[] = readBest();
+
+const SCORES_KEY = 'bitphysics.solar-system.scores';
+/** Best score of each mission (0: not won), kept in local storage (./missions.ts missionScore). */
+const bestScore: number[] = readScores();
+
+function readScores(): number[] {
+  try {
+    const v = JSON.parse(localStorage.getItem(SCORES_KEY) ?? '[]') as unknown;
+    if (Array.isArray(v)) return MISSIONS.map((_, i) => (Number.isInteger(v[i]) && v[i] >= 0 ? (v[i] as number) : 0));
+  } catch {
+    /* no storage or a bad entry: nothing won */
+  }
+  return MISSIONS.map(() => 0);
+}
 
 function readBest(): number[] {
   try {
@@ -306,6 +324,7 @@ function readBest(): number[] {
 function saveBest(): void {
   try {
     localStorage.setItem(STARS_KEY, JSON.stringify(best));
+    localStorage.setItem(SCORES_KEY, JSON.stringify(bestScore));
   } catch {
     /* private mode: this page only */
   }
@@ -325,6 +344,7 @@ const state6 = new Float64Array(6);
  * (outwards) or against it (inwards) at a round Hohmann transfer speed, the view framing its planets.
  */
 function startMission(index: number): void {
+  hideCard();
   if (flight) endFlight(shell.world, flight);
   flight = null;
   missionIndex = Math.max(0, Math.min(MISSIONS.length - 1, index));
@@ -413,6 +433,7 @@ function launch(): void {
   planFlight(shell.world, handles, mission(), aim, plan);
   launchMs = handles.epoch + shell.world.time * 86_400_000;
   flight = launchProbe(shell.world, handles, mission(), aim, plan, baseStep());
+  launchTargetR = distanceFromSun(mission().target);
   flightDaysPerSecond = flightRate(flight.deadline);
   phase = 'flight';
   // The launch's forecast is the flight's course from the launch.
@@ -428,11 +449,15 @@ function endOfFlight(): void {
   phase = 'done';
   if (flight.state === 'arrived') {
     arrivalAt = performance.now();
-    const stars = starsFor(flight.mission, flight.aim.speed + flight.fuelUsed);
-    if (stars > best[missionIndex]!) {
-      best[missionIndex] = stars;
-      saveBest();
-    }
+    const spent = flight.aim.speed + flight.fuelUsed;
+    const stars = starsFor(flight.mission, spent);
+    const score = missionScore(flight.mission, Math.max(spent, 1e-3), Math.max(flight.elapsed, 1e-3));
+    const record = score.total > bestScore[missionIndex]!;
+    const before = bestScore[missionIndex]!;
+    best[missionIndex] = Math.max(best[missionIndex]!, stars);
+    bestScore[missionIndex] = Math.max(before, score.total);
+    saveBest();
+    lastResult = { stars, score, record, before };
     sound.chime(784, 0.4);
     setTimeout(() => sound.chime(1175, 0.7), 160);
   } else if (flight.state === 'sun') {
@@ -440,12 +465,15 @@ function endOfFlight(): void {
   } else {
     sound.chime(196, 0.6);
   }
+  lastResult = flight.state === 'arrived' ? lastResult : null;
+  showCard(flight);
   updateStatus(true);
 }
 
 /** Try again: back to the moment of the last launch, same aim. */
 function retry(): void {
   if (phase === 'aim') return;
+  hideCard();
   const keep = { ...aim };
   startMs = launchMs;
   shell.reset();
@@ -531,6 +559,7 @@ const game = await startThreeGame({
     { key: ' ', label: 'launch', action: () => launch() },
     { key: 'Enter', label: 'next / try again', action: () => advance() },
     { key: 'h', label: 'hint', action: () => toggleHint() },
+    { key: 't', label: 'try again', action: () => retry() },
     { key: '[', label: 'slower', action: () => setRate(params.rate / 1.5), repeat: true },
     { key: ']', label: 'faster', action: () => setRate(params.rate === 0 ? 1 : params.rate * 1.5), repeat: true },
     { key: 'd', label: 'distances', action: () => setDistances(params.distances === 'true' ? 'compressed' : 'true') },
@@ -1461,6 +1490,7 @@ style.textContent = `
 .ss-status { text-align: center; font: 13px/1.4 system-ui, sans-serif; color: #e8ecf1; padding: 6px 10px 4px; }
 .ss-status .ss-goal { font-weight: 700; color: #ffe066; font-size: 14px; }
 .ss-status .ss-stars { color: #ffd166; letter-spacing: 1px; }
+.ss-status .ss-brief { color: #cfd8e6; font-size: 12px; min-height: 1.4em; }
 .ss-status .ss-line.ok { color: #7ee787; }
 .ss-status .ss-line.bad { color: #ffb4a8; }
 .ss-status .ss-line.edge { color: #ffd479; }
@@ -1481,6 +1511,7 @@ style.textContent = `
    44 x 44 px; a longer label ("+ fast", "Try again") breaks inside its button, not the row (the
    flight's buttons took two rows, Hint alone on the second, and Wait moved under the finger). */
 @media (max-width: 440px) {
+  .ss-status .ss-brief { display: none; }
   .bp-touchbar.ss-pad { display: grid; grid-auto-flow: column; grid-auto-columns: auto; justify-content: stretch; gap: 4px; }
   .bp-touchbar.ss-pad button { min-width: 44px; padding: 0 3px; font-size: 14px; white-space: normal; line-height: 1.05; }
   .bp-touchbar.ss-pad button.ss-go { min-width: 44px; }
@@ -1499,6 +1530,9 @@ status.setAttribute('role', 'status');
 const goalLine = document.createElement('div');
 goalLine.className = 'ss-goal';
 goalLine.dataset.hud = 'goal';
+const briefLine = document.createElement('div');
+briefLine.className = 'ss-brief';
+briefLine.dataset.hud = 'brief';
 const planText = document.createElement('div');
 planText.className = 'ss-line';
 planText.dataset.hud = 'plan';
@@ -1508,7 +1542,7 @@ hintLine.dataset.hud = 'hint';
 const dateText = document.createElement('div');
 dateText.className = 'ss-date';
 dateText.dataset.hud = 'date';
-status.append(goalLine, planText, hintLine, dateText);
+status.append(goalLine, briefLine, planText, hintLine, dateText);
 pageLayout().status.append(status);
 
 const PAD = [
@@ -1693,7 +1727,7 @@ function verdict(m: Mission): [string, string] {
   if (f.outcome === 'arrived')
     return [
       phase === 'aim'
-        ? `✓ arrives at ${m.target} in ${Math.round(f.end)} days · ${starText(starsFor(m, aim.speed))}${scheme}`
+        ? `✓ arrives at ${m.target} in ${Math.round(f.end)} days · ${starText(starsFor(m, aim.speed))} · ${missionScore(m, Math.max(aim.speed, 1e-3), Math.max(f.end, 1e-3)).total} points${scheme}`
         : `✓ arrives on day ${Math.round(f.end)}${scheme}`,
       'ok',
     ];
@@ -1738,7 +1772,7 @@ function updateStatus(force = false): void {
   const total = best.reduce((s, n) => s + n, 0);
   // The goal, and the forecast's verdict: what the launch (or the flight) will do. What to change
   // is the player's to work out (the Hint button says, on request).
-  const goal = `Mission ${missionIndex + 1} of ${MISSIONS.length}: fly a probe to ${m.target}`;
+  const goal = `Mission ${missionIndex + 1}/${MISSIONS.length}: fly to ${m.target} · ★★★ ≤ ${m.stars3} km/s`;
   let line = '',
     cls = '';
   if (phase === 'aim') {
@@ -1786,10 +1820,11 @@ function updateStatus(force = false): void {
       : `${rate < 10 ? rate.toFixed(1) : Math.round(rate)} days a second${waiting ? ' (waiting)' : ''}`;
   const dateLine = `${date} · ${clock} · ${stars}`;
   const shownHint = hinting ? hintText : '';
-  const key = `${goal}|${line}|${cls}|${dateLine}|${phase}|${shownHint}`;
+  const key = `${goal}|${m.brief}|${line}|${cls}|${dateLine}|${phase}|${shownHint}`;
   if (!force && key === shownStatus) return;
   shownStatus = key;
   goalLine.textContent = goal;
+  briefLine.textContent = phase === 'aim' ? m.brief : '';
   planText.textContent = line;
   planText.className = `ss-line ${cls}`;
   hintLine.textContent = shownHint;
@@ -1805,6 +1840,180 @@ function updateStatus(force = false): void {
   pad.setActive(5, waiting);
   pad.setActive(9, hinting);
   pad.buttons[9]!.classList.toggle('ss-pulse', missionIndex === 0 && !hintUsed);
+}
+
+// ---- The result card: stars, score and the way on, over the scene after each flight ----------------
+
+/** What the last arrival earned (null after a miss): shown on the result card. */
+let lastResult: { stars: number; score: ReturnType<typeof missionScore>; record: boolean; before: number } | null = null;
+/** Real time between the end of a flight and its card, ms: the arrival's flash shows first. */
+const CARD_DELAY_MS = 900;
+const cardStyle = document.createElement('style');
+cardStyle.textContent = `
+.ss-card { position: absolute; left: 50%; top: 50%; transform: translate(-50%, -50%); z-index: 6; width: min(380px, calc(100% - 24px));
+  box-sizing: border-box; padding: 14px 16px 12px; border-radius: 14px; background: rgba(10, 14, 24, 0.94); border: 1px solid #4a5a78;
+  color: #e8ecf1; font: 14px/1.45 system-ui, sans-serif; text-align: center; box-shadow: 0 8px 30px rgba(0, 0, 0, 0.6); }
+.ss-card[hidden] { display: none; }
+.ss-card h2 { margin: 0 0 2px; font-size: 20px; color: #ffe066; }
+.ss-card.bad h2 { color: #ffb4a8; }
+.ss-card .ss-card-stars { font-size: 34px; line-height: 1.1; color: #ffd166; letter-spacing: 4px; }
+.ss-card .ss-card-stars span { display: inline-block; animation: ss-pop 0.35s ease-out backwards; }
+.ss-card .ss-card-stars span.off { color: #8391a8; }
+@keyframes ss-pop { from { transform: scale(0.2); opacity: 0; } }
+.ss-card .ss-card-score { font-size: 22px; font-weight: 700; color: #ffffff; margin: 4px 0 0; }
+.ss-card .ss-card-record { color: #7ee787; font-weight: 700; }
+.ss-card .ss-card-small { color: #c3cedf; font-size: 13px; }
+.ss-card .ss-card-parts { display: grid; grid-template-columns: 1fr auto; gap: 0 10px; text-align: left; margin: 6px 4px; font-size: 13px; color: #d6deea; }
+.ss-card .ss-card-parts b { text-align: right; color: #ffffff; }
+.ss-card .ss-card-map { display: flex; justify-content: center; gap: 4px; flex-wrap: wrap; margin: 8px 0 4px; }
+.ss-card .ss-card-map span { padding: 1px 6px; border-radius: 6px; background: #1a2336; color: #d6deea; font-size: 12px; border: 1px solid #2c3a55; }
+.ss-card .ss-card-map span.now { border-color: #ffe066; color: #ffe066; }
+.ss-card .ss-card-map i { font-style: normal; color: #ffd166; }
+.ss-card .ss-card-next { color: #9fd3ff; font-size: 13px; margin: 4px 0 8px; }
+.ss-card .ss-card-buttons { display: flex; gap: 8px; justify-content: center; }
+.ss-card button { min-height: 44px; min-width: 44px; padding: 0 14px; border-radius: 10px; border: 1px solid #6b7c99; background: #1c2638;
+  color: #ffffff; font: 600 15px system-ui, sans-serif; cursor: pointer; white-space: nowrap; }
+.ss-card button.ss-go { background: #1f7a3a; border-color: #7ee2a0; }
+.ss-card button.ss-card-close { position: absolute; right: 6px; top: 6px; min-height: 32px; min-width: 32px; padding: 0; border: none; background: none; color: #c3cedf; }
+.ss-card kbd { font: 12px system-ui, sans-serif; color: #c3cedf; }
+`;
+document.head.append(cardStyle);
+const card = document.createElement('section');
+card.className = 'ss-card';
+card.dataset.hud = 'result-card';
+card.setAttribute('role', 'dialog');
+card.setAttribute('aria-label', 'flight result');
+card.hidden = true;
+pageLayout().stage.append(card);
+let cardTimer = 0;
+
+/** A new element of `tag` with class `cls` and text `text` in `parent`. */
+function put(parent: HTMLElement, tag: string, cls: string, text = ''): HTMLElement {
+  const e = document.createElement(tag);
+  if (cls) e.className = cls;
+  e.textContent = text;
+  parent.append(e);
+  return e;
+}
+
+/** Hides the result card (a new flight, a retry, another mission, or the ✕ to see the map). */
+function hideCard(): void {
+  window.clearTimeout(cardTimer);
+  card.hidden = true;
+}
+
+/**
+ * Why flight `f` (not arrived) failed, from its flown path (the trail) and the target's distance
+ * from the Sun at the launch (as the aim's verdict says it), and what to change: a path that never reached the target's orbit wants more
+ * speed, one that crossed it came at the wrong time (wait, or turn).
+ */
+function missAdvice(f: Flight): string {
+  const m = f.mission;
+  if (f.state === 'sun') return 'It fell into the Sun: launch slower against the Earth’s path, or turn it more outwards.';
+  let far = 0,
+    near = Infinity;
+  for (let i = 0; i < trailCount; i++) {
+    const r = Math.hypot(trail[3 * i]!, trail[3 * i + 1]!, trail[3 * i + 2]!);
+    far = Math.max(far, r);
+    near = Math.min(near, r);
+  }
+  const rT = launchTargetR;
+  const outward = m.distance > 1;
+  const near2 = `closest ${f.closest.toFixed(2)} AU; the ring is ${m.zone} AU`;
+  if (outward && far < rT - m.zone)
+    return `It turned back ${far.toFixed(2)} AU from the Sun, short of ${m.target}’s orbit (${rT.toFixed(2)} AU): launch faster.`;
+  if (!outward && near > rT + m.zone)
+    return `It fell in only to ${near.toFixed(2)} AU from the Sun; ${m.target} is at ${rT.toFixed(2)} AU: launch faster against the Earth’s path.`;
+  return `It crossed ${m.target}’s orbit when ${m.target} was elsewhere (${near2}): wait for a better moment, turn the launch, or burn on the way.`;
+}
+
+/**
+ * Fills the result card for `f` (ended) and shows it CARD_DELAY_MS later: on an arrival the stars,
+ * the score in parts, the best, every mission's stars, the next mission and its brief, Try again
+ * (T) and Next mission (Enter); after a miss, how near it came and Try again (Enter).
+ */
+function showCard(f: Flight): void {
+  hideCard();
+  card.replaceChildren();
+  const m = f.mission;
+  const won = f.state === 'arrived' && lastResult;
+  card.classList.toggle('bad', !won);
+  const close = put(card, 'button', 'ss-card-close', '✕');
+  close.setAttribute('aria-label', 'hide the result to see the map');
+  close.addEventListener('click', () => hideCard());
+  const buttons = document.createElement('div');
+  buttons.className = 'ss-card-buttons';
+  const button = (label: string, name: string, go: boolean, act: () => void): void => {
+    const b = put(buttons, 'button', go ? 'ss-go' : '', label);
+    b.setAttribute('aria-label', name);
+    b.dataset.card = go ? 'go' : 'retry';
+    b.addEventListener('click', act);
+  };
+  if (won) {
+    const r = lastResult!;
+    put(card, 'h2', '', `${m.target} reached!`);
+    const stars = put(card, 'div', 'ss-card-stars');
+    for (let i = 0; i < 3; i++) {
+      const star = put(stars, 'span', i < r.stars ? '' : 'off', i < r.stars ? '★' : '☆');
+      star.style.animationDelay = `${0.15 + 0.25 * i}s`;
+    }
+    put(card, 'div', 'ss-card-score', `${r.score.total} points`);
+    put(
+      card,
+      'div',
+      r.record ? 'ss-card-record' : 'ss-card-small',
+      r.record ? (r.before > 0 ? `New best! (was ${r.before})` : 'First arrival!') : `Best ${bestScore[missionIndex]}`,
+    );
+    const parts = put(card, 'div', 'ss-card-parts');
+    const spent = f.aim.speed + f.fuelUsed;
+    put(parts, 'span', '', `Speed spent ${spent.toFixed(2)} km/s${f.fuelUsed > 0 ? ` (${f.fuelUsed.toFixed(2)} in burns)` : ''}`);
+    put(parts, 'b', '', `${r.score.budget}`);
+    put(parts, 'span', '', `Flight ${Math.round(f.elapsed)} days`);
+    put(parts, 'b', '', `${r.score.time}`);
+    put(
+      card,
+      'div',
+      'ss-card-small',
+      r.stars < 3
+        ? `★★★ needs ${m.stars3} km/s or less in all: hold Wait for a cheaper moment, then aim again.`
+        : 'Fewer km/s or a quicker flight scores more: a better moment may be cheaper.',
+    );
+  } else {
+    put(card, 'h2', '', f.state === 'sun' ? 'The probe fell into the Sun' : `Missed ${m.target}`);
+    put(card, 'div', 'ss-card-small', missAdvice(f));
+    put(card, 'div', 'ss-card-small', `Stuck? ${named('Press H', 'Tap Hint')} for what to change.`);
+  }
+  const sum = bestScore.reduce((a, b) => a + b, 0);
+  if (sum > 0)
+    put(
+      card,
+      'div',
+      'ss-card-small',
+      `All missions: ${best.reduce((a, b) => a + b, 0)} of ${3 * MISSIONS.length} stars · best scores ${sum} in all`,
+    );
+  const map = put(card, 'div', 'ss-card-map');
+  MISSIONS.forEach((x, i) => {
+    const chip = put(map, 'span', i === missionIndex ? 'now' : '', `${i + 1} ${x.target} `);
+    put(chip, 'i', '', best[i]! > 0 ? '★'.repeat(best[i]!) : '–');
+  });
+  if (won) {
+    const next = MISSIONS[(missionIndex + 1) % MISSIONS.length]!;
+    put(
+      card,
+      'div',
+      'ss-card-next',
+      missionIndex + 1 < MISSIONS.length
+        ? `Next: ${next.target}. ${next.brief}`
+        : `All seven flown: ${best.reduce((a, b) => a + b, 0)} of ${3 * MISSIONS.length} stars. Next: Mars again, to beat your scores.`,
+    );
+    button(named('Try again (T)', 'Try again'), 'try again from the launch (T)', false, () => retry());
+    button(named('Next mission (Enter)', 'Next mission'), 'next mission (Enter)', true, () => advance());
+  } else button(named('Try again (Enter)', 'Try again'), 'try again from the launch (Enter)', true, () => retry());
+  card.append(buttons);
+  const ended = f;
+  cardTimer = window.setTimeout(() => {
+    if (phase === 'done' && flight === ended) card.hidden = false;
+  }, CARD_DELAY_MS);
 }
 
 // ---- The engineer's comparison with the ephemeris (folded) ------------------------------------------
@@ -1886,12 +2095,13 @@ const panel = createPanel(
   note.dataset.hud = 'more-keys';
   note.style.cssText = 'margin: 6px 8px 8px; font: 12px/1.4 system-ui, sans-serif; color: #cfd8e6';
   note.textContent =
-    'More keys: Enter next mission / try again; [ ] time slower / faster; 1 2 3 views; D distances; E sizes. Right-drag turns the view, the wheel zooms.';
+    'More keys: Enter next mission / try again; T try again; [ ] time slower / faster; 1 2 3 views; D distances; E sizes. Right-drag turns the view, the wheel zooms.';
   panel.gui.domElement.append(note);
 }
 // R (the shell's reset) goes back to startMs: fresh orbits (the forecast's key names the world).
 shell.onWorldChange(() => {
   orbitsAt = -Infinity;
+  hideCard();
 });
 startMission(missionIndex);
 
@@ -1965,6 +2175,22 @@ shell.expose({
     aim.angle = angle;
     aim.speed = speed;
     aimChangedAt = performance.now();
+  },
+  /**
+   * Flies the flight under way to its end at once, with its own step and checks (as the loop would
+   * over the next seconds), and pauses: for tests. @returns how it ended ('' with no flight under way).
+   */
+  finishFlight: (): string => {
+    if (phase !== 'flight' || !flight) return '';
+    shell.paused = true;
+    const world = shell.world;
+    if (world.dt !== flight.dt) setTimeStep(world, flight.dt);
+    while (phase === 'flight' && flight) {
+      step(world);
+      recordTrail(world);
+      if (checkFlight(world, handles, flight) !== 'flying') endOfFlight();
+    }
+    return flight?.state ?? '';
   },
   /** Launches (Space), starts a mission (0-based), goes on after a flight (Enter). */
   launch,

@@ -21,8 +21,9 @@
  * - Stars: for the mission's speed budget, the launch speed plus the burns': 3 for at most
  *   `stars3` km/s, 2 for at most `stars2`, else 1. The least a
  *   launch can take is about the Hohmann transfer's v_inf = v_E (sqrt(2 r / (1 AU + r)) - 1) for
- *   circular orbits (Hohmann 1925; Curtis, Orbital Mechanics, sect. 6.3); the thresholds leave room
- *   above it, since the planets' orbits are not circles and the window is rarely ideal.
+ *   circular orbits (Hohmann 1925; Curtis, Orbital Mechanics, sect. 6.3); the 3-star line is about
+ *   0.4 km/s above it, so 3 stars want a good moment (waiting for it), not just any launch that
+ *   arrives (scripts/solar-system-pilot.mjs finds a 3-star launch for each mission within 800 days).
  *
  * Units: the world's (AU, days, solar masses; see @bitphysics/projects solar-system). Speeds the
  * player sees are km/s (`KM_S` AU/day each).
@@ -73,6 +74,8 @@ export interface Mission {
   readonly stars2: number;
   /** The target's mean distance from the Sun (semi-major axis), AU: sets the mission's flight step (`missionTimeStep`). */
   readonly distance: number;
+  /** What is new about this mission, one sentence for the player (shown under the goal and on the result card). */
+  readonly brief: string;
 }
 
 /**
@@ -83,13 +86,62 @@ export interface Mission {
 export const MISSIONS: readonly Mission[] = Object.freeze(
   (
     [
-      { target: 'Mars', zone: 0.14, stars3: 3.6, stars2: 5, distance: 1.524 },
-      { target: 'Venus', zone: 0.1, stars3: 3.2, stars2: 4.5, distance: 0.723 },
-      { target: 'Jupiter', zone: 0.75, stars3: 9.8, stars2: 12, distance: 5.203 },
-      { target: 'Mercury', zone: 0.08, stars3: 8.6, stars2: 11, distance: 0.387 },
-      { target: 'Saturn', zone: 1.2, stars3: 11.5, stars2: 14, distance: 9.537 },
-      { target: 'Uranus', zone: 1.9, stars3: 12.5, stars2: 15, distance: 19.19 },
-      { target: 'Neptune', zone: 3, stars3: 13, stars2: 16, distance: 30.07 },
+      {
+        target: 'Mars',
+        zone: 0.14,
+        stars3: 3.3,
+        stars2: 4.5,
+        distance: 1.524,
+        brief: 'Mars is farther out: launch along the Earth’s path, fast enough to climb out to its orbit.',
+      },
+      {
+        target: 'Venus',
+        zone: 0.1,
+        stars3: 2.9,
+        stars2: 4,
+        distance: 0.723,
+        brief: 'Venus is nearer the Sun: launch against the Earth’s path to slow down and fall inwards.',
+      },
+      {
+        target: 'Jupiter',
+        zone: 0.75,
+        stars3: 9.2,
+        stars2: 11,
+        distance: 5.203,
+        brief: 'Jupiter is 5 AU out and takes almost 3 years to reach: launch where it will be, not where it is.',
+      },
+      {
+        target: 'Mercury',
+        zone: 0.08,
+        stars3: 7.9,
+        stars2: 10,
+        distance: 0.387,
+        brief: 'Mercury is small and fast, deep in the Sun’s pull: its ring is the smallest, so aim finely.',
+      },
+      {
+        target: 'Saturn',
+        zone: 1.2,
+        stars3: 10.7,
+        stars2: 13,
+        distance: 9.537,
+        brief: 'Saturn is nearly twice as far out as Jupiter: a cheap launch takes 6 years, so wait for a good moment.',
+      },
+      {
+        target: 'Uranus',
+        zone: 1.9,
+        stars3: 11.7,
+        stars2: 14,
+        distance: 19.19,
+        brief: 'Uranus is 19 AU out: the slightest error grows over 16 years, so use the burns on the way.',
+      },
+      {
+        target: 'Neptune',
+        zone: 3,
+        stars3: 12.1,
+        stars2: 15,
+        distance: 30.07,
+        brief: 'Neptune, the last: 30 AU and 30 years of flight for the cheapest launch.',
+      },
     ] satisfies Mission[]
   ).map((m) => Object.freeze(m)),
 );
@@ -172,6 +224,43 @@ export function createFlightPlan(): FlightPlan {
 /** Stars a mission's speed budget (the launch speed plus the burns', km/s) earns on `mission`: 3, 2 or 1. */
 export function starsFor(mission: Mission, speed: number): 1 | 2 | 3 {
   return speed <= mission.stars3 + 1e-9 ? 3 : speed <= mission.stars2 + 1e-9 ? 2 : 1;
+}
+
+/** Points of a mission's score for a speed budget of the Hohmann launch speed (`missionScore`). */
+export const SCORE_BUDGET = 1000;
+
+/** Most points of a mission's score for a quick flight (`missionScore`). */
+export const SCORE_TIME = 250;
+
+/** A mission's score (`missionScore`): its parts and their sum, points. */
+export interface MissionScore {
+  /** SCORE_BUDGET x (the Hohmann launch speed / the speed budget spent): more than SCORE_BUDGET for a launch cheaper than the Hohmann speed. */
+  readonly budget: number;
+  /** SCORE_TIME x (the Hohmann transfer time / the days flown), at most SCORE_TIME. */
+  readonly time: number;
+  /** budget + time. */
+  readonly total: number;
+}
+
+/**
+ * The score of an arrival on `mission` after a speed budget of `speed` km/s (the launch plus the
+ * burns) and `days` of flight: points for a cheap flight (the Hohmann transfer's launch speed
+ * between circular orbits, 1 AU to mission.distance, over the budget spent, times SCORE_BUDGET: more
+ * than SCORE_BUDGET where the orbits' eccentricity makes a moment cheaper than that) and for a quick
+ * one (the Hohmann transfer's time over the days flown, times SCORE_TIME, at most SCORE_TIME). A
+ * quicker flight costs speed, so the two pull against each other: the best scores wait for the
+ * cheapest moment and need no burns. Whole points.
+ * @throws RangeError on a speed or days that is not finite and > 0.
+ */
+export function missionScore(mission: Mission, speed: number, days: number): MissionScore {
+  if (!(speed > 0 && Number.isFinite(speed))) throw new RangeError(`missionScore: speed must be finite and > 0 km/s, got ${speed}`);
+  if (!(days > 0 && Number.isFinite(days))) throw new RangeError(`missionScore: days must be finite and > 0, got ${days}`);
+  const vH = Math.abs(hohmannSpeed(1, mission.distance, GAUSS_MU));
+  const a = (1 + mission.distance) / 2;
+  const tH = Math.PI * Math.sqrt((a * a * a) / GAUSS_MU);
+  const budget = Math.round((SCORE_BUDGET * vH) / speed);
+  const time = Math.round(SCORE_TIME * Math.min(1, tH / days));
+  return { budget, time, total: budget + time };
 }
 
 /** The Sun's gravitational parameter G M_sun in the world, AU^3/day^2. */

@@ -363,7 +363,7 @@ describe('phone controls', () => {
     await g.waitFor((s) => (window.game as unknown as Solar).mission().aim.speed > s + 0.75, speed);
     await g.waitFor(() => (window.game as unknown as Solar).mission().plan.hit, null);
     await g.waitFor(() => /tap Launch/.test(document.querySelector('[data-hud="hint"]')!.textContent ?? ''), null);
-    expect(await g.page.locator('[data-hud="plan"]').textContent()).toMatch(/ → ✓ arrives at Mars in \d+ days · ★★★$/);
+    expect(await g.page.locator('[data-hud="plan"]').textContent()).toMatch(/ → ✓ arrives at Mars in \d+ days · ★★★ · \d+ points$/);
     // The buttons of every phase sit on one row, each at least 44 x 44 px, Wait in the same place (in
     // flight they took two rows, Hint alone on the second, and Wait moved under a held finger).
     const bar = () =>

@@ -7,6 +7,7 @@
  */
 
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { lowContrastText } from './contrast-check';
 import { Harness } from './harness';
 import { checkPageContract } from './page-contract';
 
@@ -46,7 +47,7 @@ describe('projects', () => {
     // goal is stated above the scene; the line gives the forecast's verdict (the flight flown ahead,
     // games/solar-system/forecast.ts), not what to press; H shows that.
     expect(m0.plan.hit).toBe(false);
-    expect(await g.page.locator('[data-hud="goal"]').textContent()).toBe('Mission 1 of 7: fly a probe to Mars');
+    expect(await g.page.locator('[data-hud="goal"]').textContent()).toBe('Mission 1/7: fly to Mars · ★★★ ≤ 3.3 km/s');
     const numbers = (await g.page.locator('[data-hud="plan"]').textContent()) ?? '';
     expect(numbers).toMatch(
       /^Launch \d+\.\d km\/s along the Earth’s path → ✗ goes out only to \d\.\d\d AU from the Sun; Mars is at \d\.\d\d AU$/,
@@ -88,7 +89,7 @@ describe('projects', () => {
     const m1 = await g.page.evaluate(() => (window.game as unknown as Solar).mission());
     expect(m1.aim.speed).toBeCloseTo(m0.aim.speed + 0.8, 9);
     expect(m1.plan.hit).toBe(true);
-    expect(await g.page.locator('[data-hud="plan"]').textContent()).toMatch(/ → ✓ arrives at Mars in \d+ days · ★★★$/);
+    expect(await g.page.locator('[data-hud="plan"]').textContent()).toMatch(/ → ✓ arrives at Mars in \d+ days · ★★★ · \d+ points$/);
     expect(await g.page.locator('[data-hud="plan"]').getAttribute('class')).toBe('ss-line ok');
     await g.waitFor(() => document.querySelector('[data-hud="hint"]')?.textContent === 'This launch arrives: press Space.', null);
     // The preview draws the forecast to the arrival: the probe's dots (every 4th point and the last),
@@ -194,6 +195,43 @@ describe('projects', () => {
     await g.waitFor(() => !(window.game as unknown as Solar).planetsInView().includes('Neptune'), null);
     const inner = await g.page.evaluate(() => (window.game as unknown as Solar).planetsInView());
     for (const p of ['Mercury', 'Venus', 'Earth', 'Mars']) expect(inner).toContain(p);
+    // A won mission: on the start date (time waits while aiming) 3.0 km/s along the Earth's path
+    // arrives at Mars (the first case's launch). Flown to its end at once, it shows the result card:
+    // 3 stars (3.0 <= 3.3 km/s) and the score's budget part, 1000 x the Hohmann speed over 3.0 km/s:
+    // v_E (sqrt(2 r / (1 + r)) - 1) = 29.78 x 0.0989 = 2.945 km/s at r = 1.524 AU, so 982 (975..990
+    // allows for the constants' rounding). Its Next mission button starts mission 2, Venus.
+    type Flow = {
+      setAim(a: number, s: number): void;
+      launch(): void;
+      finishFlight(): string;
+      mission(): { number: number; target: string; phase: string; plan: { hit: boolean; current: boolean } };
+    };
+    await g.page.evaluate(() => (window.game as unknown as Flow).setAim(0, 3));
+    const aimed = await g.waitFor(() => {
+      const m = (window.game as unknown as Flow).mission();
+      return m.plan.current ? m : null;
+    }, null);
+    expect(aimed.plan.hit).toBe(true);
+    // The line promises the score (the forecast is the flight flown ahead); the card gives it, within a point.
+    const promised = Number(/(\d+) points$/.exec((await g.page.locator('[data-hud="plan"]').textContent()) ?? '')?.[1]);
+    await g.page.evaluate(() => (window.game as unknown as Flow).launch());
+    expect(await g.page.evaluate(() => (window.game as unknown as Flow).finishFlight())).toBe('arrived');
+    const card = g.page.locator('[data-hud="result-card"]');
+    await card.waitFor({ state: 'visible' });
+    expect(await card.locator('h2').textContent()).toBe('Mars reached!');
+    expect(await card.locator('.ss-card-stars span:not(.off)').count()).toBe(3);
+    const scored = Number.parseInt((await card.locator('.ss-card-score').textContent()) ?? '', 10);
+    expect(Math.abs(scored - promised)).toBeLessThanOrEqual(1);
+    const budget = Number(await card.locator('.ss-card-parts b').first().textContent());
+    expect(budget).toBeGreaterThanOrEqual(975);
+    expect(budget).toBeLessThanOrEqual(990);
+    // The card's text over the scene is legible (WCAG AA, 4.5:1).
+    expect((await lowContrastText(g.page)).filter((t) => /reached|points|arrival|Speed|Flight|Next|Try|Mars|★/.test(t.text))).toEqual([]);
+    await card.getByRole('button', { name: 'next mission (Enter)' }).click();
+    await card.waitFor({ state: 'hidden' });
+    const next = await g.page.evaluate(() => (window.game as unknown as Flow).mission());
+    expect([next.number, next.target, next.phase]).toEqual([2, 'Venus', 'aim']);
+    expect(await g.page.locator('[data-hud="goal"]').textContent()).toMatch(/^Mission 2\/7: fly to Venus · /);
     expect(g.errors).toEqual([]);
     await g.close();
   });

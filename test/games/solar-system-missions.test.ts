@@ -28,6 +28,7 @@ import {
   launchProbe,
   MISSIONS,
   type Mission,
+  missionScore,
   PLAN_MARGIN,
   planFlight,
   starsFor,
@@ -381,5 +382,22 @@ describe('missions', () => {
     expect(() => launchProbe(world, handles, m, { angle: 0, speed: 25 }, createFlightPlan())).toThrow(
       /launchProbe: aim.speed must be in \[0, 20\] km\/s, got 25/,
     );
+  });
+  test('the score: 1000 points at the Hohmann speed, more for less; up to 250 for a flight as quick as the Hohmann transfer', () => {
+    const m = mission('Mars');
+    // Mars (1.524 AU): Hohmann speed 2.943 km/s (Curtis, example 8.3) and transfer time 259 days
+    // (half the period of a 1.262 AU orbit: 0.5 x 1.262^1.5 x 365.25).
+    const tH = 0.5 * 1.262 ** 1.5 * 365.25;
+    const at = missionScore(m, 2.943, tH);
+    expect(Math.abs(at.budget - 1000)).toBeLessThanOrEqual(2);
+    expect(Math.abs(at.time - 250)).toBeLessThanOrEqual(1);
+    expect(at.total).toBe(at.budget + at.time);
+    // Half the speed: twice the budget points; twice the days: half the time points (rounded).
+    expect(Math.abs(missionScore(m, 2.943 / 2, 2 * tH).budget - 2000)).toBeLessThanOrEqual(4);
+    expect(Math.abs(missionScore(m, 2.943, 2 * tH).time - 125)).toBeLessThanOrEqual(1);
+    // A flight quicker than the Hohmann transfer earns no more than 250.
+    expect(missionScore(m, 2.943, tH / 2).time).toBe(250);
+    expect(() => missionScore(m, 0, 100)).toThrow(/missionScore: speed must be finite and > 0 km\/s, got 0/);
+    expect(() => missionScore(m, 3, Number.NaN)).toThrow(/missionScore: days must be finite and > 0, got NaN/);
   });
 });
