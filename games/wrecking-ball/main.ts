@@ -17,7 +17,7 @@
  * wheel zooms. Once the collapse that clears a level settles its result (swings, stars, score) is
  * final: later swings are for fun.
  * URL: ?level=N, ?seed=S, ?debug, ?demo (the crane swings at the level's first tower by itself: the
- * gallery's thumbnail shows a hit).
+ * gallery's thumbnail shows a hit), ?quality=full|lite (how it is drawn; see Quality; ?shadows=0 is lite).
  */
 
 import {
