@@ -3,7 +3,26 @@
  * canvases (a brick, a plank's grain, a painted crate, packed dirt) and box geometries that carry
  * them on each piece the right way round. Lengths are in metres.
  */
-import { BoxGeometry, type BufferGeometry, CanvasTexture, MeshStandardMaterial, RepeatWrapping, SRGBColorSpace } from 'three';
+import {
+  BoxGeometry,
+  type BufferGeometry,
+  CanvasTexture,
+  DoubleSide,
+  DynamicDrawUsage,
+  InstancedMesh,
+  LessDepth,
+  Matrix4,
+  Mesh,
+  MeshBasicMaterial,
+  MeshLambertMaterial,
+  MeshPhongMaterial,
+  MeshStandardMaterial,
+  Quaternion,
+  RepeatWrapping,
+  SphereGeometry,
+  SRGBColorSpace,
+  Vector3,
+} from 'three';
 
 /** A seeded generator (a fixed sequence, so the textures look the same on every load): numbers in [0, 1). */
 function random(seed: number): () => number {
@@ -240,4 +259,112 @@ export function skylineTexture(): CanvasTexture {
   const t = texture(c);
   t.wrapS = RepeatWrapping;
   return t;
+}
+
+/**
+ * A cheaper stand-in for physically based material `m` (for a slow GPU, see main.ts's quality): its
+ * colour, texture, alpha, side and transparency on a Lambert surface (light per pixel without the
+ * physically based highlight), or for a shiny or metal one (roughness under 0.45 or metalness 0.4 and
+ * over) on a Phong surface with a highlight as sharp as it is smooth, so steel still glints. The
+ * texture is shared, not copied.
+ */
+export function cheaperMaterial(m: MeshStandardMaterial): MeshLambertMaterial | MeshPhongMaterial {
+  const common = {
+    color: m.color.clone(),
+    map: m.map,
+    alphaMap: m.alphaMap,
+    alphaTest: m.alphaTest,
+    side: m.side,
+    transparent: m.transparent,
+    opacity: m.opacity,
+    depthWrite: m.depthWrite,
+  };
+  if (m.roughness < 0.45 || m.metalness >= 0.4)
+    return new MeshPhongMaterial({ ...common, shininess: 8 + 80 * (1 - m.roughness) ** 2, specular: 0x555555 });
+  return new MeshLambertMaterial(common);
+}
+
+/**
+ * Shadows cast on the ground by the sun, drawn without a shadow map (main.ts's lite quality): each
+ * box flattened onto the ground along the sun's direction and drawn as a translucent dark shape.
+ * The boxes are one instanced mesh (one draw call, no shadow pass) and the ball a mesh of its own.
+ * Where shapes overlap (the blocks of a tower) the ground is darkened once, not twice: they all lie
+ * in one plane and write its depth, and a later shape's equal depth fails the depth test.
+ * The shadows fall on the ground only, not on other pieces.
+ */
+export class GroundShadows {
+  /** The meshes (boxes, ball); add them to the scene. */
+  readonly boxes: InstancedMesh;
+  readonly ball: Mesh;
+  /** The flattening onto the ground: a point (x, y, z) goes to (x - y sx, LIFT, z - y sz). */
+  private readonly flatten = new Matrix4();
+  private readonly m = new Matrix4();
+  private readonly q = new Quaternion();
+  private readonly v = new Vector3();
+  private readonly s = new Vector3();
+  private n = 0;
+  /** Height of the shadows over the ground, m: over the site's dirt (5 mm), under the cue marks (20 mm). */
+  static readonly LIFT = 0.012;
+
+  /**
+   * @param capacity most boxes drawn at once (boxes past it cast none), integer >= 1.
+   * @param sun the direction toward the sun (x, y, z), its y > 0 (need not be a unit vector).
+   * @throws RangeError on a bad capacity or a sun not above the horizon.
+   */
+  constructor(capacity: number, sun: ArrayLike<number>) {
+    if (!(Number.isInteger(capacity) && capacity >= 1))
+      throw new RangeError(`GroundShadows: capacity must be an integer >= 1, got ${capacity}`);
+    if (!(sun.length === 3 && sun[1]! > 0 && Number.isFinite(sun[0]!) && Number.isFinite(sun[2]!)))
+      throw new RangeError(`GroundShadows: sun must be 3 finite numbers with y > 0, got ${JSON.stringify(Array.from(sun))}`);
+    const sx = sun[0]! / sun[1]!,
+      sz = sun[2]! / sun[1]!;
+    this.flatten.set(1, -sx, 0, 0, 0, 0, 0, GroundShadows.LIFT, 0, -sz, 1, 0, 0, 0, 0, 1);
+    const material = new MeshBasicMaterial({ color: 0x000000, transparent: true, opacity: 0.38, side: DoubleSide, depthFunc: LessDepth });
+    // Unit half extents: each instance scaled by its box's.
+    this.boxes = new InstancedMesh(new BoxGeometry(2, 2, 2), material, capacity);
+    this.boxes.instanceMatrix.setUsage(DynamicDrawUsage);
+    this.boxes.frustumCulled = false;
+    this.boxes.count = 0;
+    this.ball = new Mesh(new SphereGeometry(1, 16, 10), material);
+    this.ball.matrixAutoUpdate = false;
+    this.ball.frustumCulled = false;
+  }
+
+  /** Starts a frame's shadows (no box casts one until `add`). */
+  begin(): void {
+    this.n = 0;
+  }
+
+  /**
+   * The shadow of a box centred at (x, y, z), m, turned by the unit quaternion (qx, qy, qz, qw),
+   * with half extents `half` (m, along its own turned axes).
+   */
+  add(x: number, y: number, z: number, qx: number, qy: number, qz: number, qw: number, half: readonly [number, number, number]): void {
+    this.addBox(this.m.compose(this.v.set(x, y, z), this.q.set(qx, qy, qz, qw), this.s.set(half[0], half[1], half[2])));
+  }
+
+  /**
+   * The shadow of the box `box` makes of the cube from -1 to 1 on each axis (its world matrix times a
+   * scale by its half extents). `box` is overwritten.
+   */
+  addBox(box: Matrix4): void {
+    if (this.n >= this.boxes.instanceMatrix.count) return;
+    this.boxes.setMatrixAt(this.n++, box.premultiply(this.flatten));
+  }
+
+  /** Ends the frame: draws the box shadows added since `begin`, and the ball's for a ball of radius `r` at (x, y, z), m. */
+  end(x: number, y: number, z: number, r: number): void {
+    this.boxes.count = this.n;
+    this.boxes.instanceMatrix.needsUpdate = true;
+    this.ball.matrix.makeScale(r, r, r).setPosition(x, y, z).premultiply(this.flatten);
+    this.ball.matrixWorldNeedsUpdate = true;
+  }
+
+  /** Shows or hides the shadows. */
+  set visible(on: boolean) {
+    this.boxes.visible = this.ball.visible = on;
+  }
+  get visible(): boolean {
+    return this.boxes.visible;
+  }
 }

@@ -17,10 +17,11 @@
  * wheel zooms. Once the collapse that clears a level settles its result (swings, stars, score) is
  * final: later swings are for fun.
  * URL: ?level=N, ?seed=S, ?debug, ?demo (the crane swings at the level's first tower by itself: the
- * gallery's thumbnail shows a hit).
+ * gallery's thumbnail shows a hit), ?quality=full|lite (how it is drawn; see Quality; ?shadows=0 is lite).
  */
 
 import {
+  choiceParam,
   createActionButton,
   createButtonBar,
   createPanel,
@@ -32,7 +33,7 @@ import {
   pageLayout,
   seedParam,
 } from '@bitphysics/game-kit';
-import { ORBIT_CONTROLS_RIGHT, startThreeGame } from '@bitphysics/game-kit/three';
+import { isSoftwareWebGL, ORBIT_CONTROLS_RIGHT, startThreeGame } from '@bitphysics/game-kit/three';
 import { contactEvents, createPhysicsWorld, isAlive, type PhysicsWorld, step as physicsStep, warmUp } from '@bitphysics/physics';
 import { BodyDrag3D } from '@bitphysics/render-three';
 import {
@@ -51,6 +52,7 @@ import {
   Line,
   LineBasicMaterial,
   LineSegments,
+  type Material,
   Matrix4,
   Mesh,
   MeshBasicMaterial,
@@ -69,7 +71,7 @@ import {
   Vector3,
 } from 'three';
 import { ScoreTally, SiteEffects } from './effects';
-import { bodyHalfExtents, dirtTexture, pieceGeometry, pieceMaterials, skylineTexture } from './look';
+import { bodyHalfExtents, cheaperMaterial, dirtTexture, GroundShadows, pieceGeometry, pieceMaterials, skylineTexture } from './look';
 import {
   aimAt,
   BALL_RADIUS,
@@ -103,12 +105,31 @@ const touch = isTouchDevice();
 /** A panel label with its key (a phone has no keys: the label alone). */
 const withKey = (label: string, key: string): string => (touch ? label : `${label} (${key})`);
 
+/**
+ * How the scene is drawn: 'full' (physically based materials, the sun's 1024 px shadow map) or
+ * 'lite' (Lambert and Phong materials and no shadow map, the pieces' shadows flattened onto the ground: a
+ * GPU as slow as software WebGL or a low-end phone's drew a frame several times faster). The page
+ * starts lite on a small screen under software WebGL, else full, and steps down to lite once if the
+ * first seconds are drawn slower than AUTO_LITE_FPS (see watchFrameRate). ?quality=full or lite
+ * fixes it (no stepping down), as the settings panel's choice does; ?shadows=0 asks for lite.
+ */
+type Quality = 'full' | 'lite';
+const QUALITIES: readonly Quality[] = ['full', 'lite'];
+/** The quality the URL fixes, or null (the page chooses). */
+const askedQuality: Quality | null = new URLSearchParams(location.search).has('quality')
+  ? choiceParam('quality', QUALITIES, 'full')
+  : new URLSearchParams(location.search).has('shadows') && !flagParam('shadows')
+    ? 'lite'
+    : null;
+/** Whether the page is phone-sized (its shorter side under 600 CSS px). */
+const SMALL_SCREEN = Math.min(window.innerWidth, window.innerHeight) < 600;
+
 const params = {
   level: numberParam('level', { default: 1, min: 1, max: 20, integer: true }),
   seed: seedParam(),
   ballWeight: 1,
   debug: flagParam('debug'),
-  shadows: true,
+  quality: askedQuality ?? (SMALL_SCREEN && isSoftwareWebGL() ? 'lite' : 'full'),
   nextLevel: () => nextLevel(),
   reset: () => game.shell.reset(),
 };
@@ -346,6 +367,18 @@ const chainGeometry = new CylinderGeometry(1, 1, 1, 10);
 const materials = pieceMaterials();
 const ballMaterial = new MeshStandardMaterial({ color: 0xa3abb5, metalness: 0.15, roughness: 0.4 });
 const ballGeometry = new SphereGeometry(1, 32, 20);
+/** The cheaper stand-ins of the physically based materials, made when first drawn lite (see Quality). */
+const cheaper = new Map<MeshStandardMaterial, Material>();
+/** Material `m` as the quality draws it: itself when full, its cheaper stand-in (look.ts cheaperMaterial) when lite. */
+function asDrawn(m: MeshStandardMaterial): Material {
+  if (params.quality === 'full') return m;
+  let c = cheaper.get(m);
+  if (!c) {
+    c = cheaperMaterial(m);
+    cheaper.set(m, c);
+  }
+  return c;
+}
 /** Instance tints: a standing piece as painted, a fallen one darker, the target of a swing lit. */
 const STANDING_TINT = 0xffffff,
   FALLEN_TINT = 0x8c8c8c,
@@ -357,7 +390,7 @@ function tint(body: number, color: number): void {
   const p = handles.pieces.find((q) => q.body === body);
   const half = bodyHalf.get(body);
   if (!p || !half || !isAlive(shell.world, body)) return;
-  renderer.setShape(body, { geometry: pieceGeometry(half), material: materials[p.kind], scale: 1, color });
+  renderer.setShape(body, { geometry: pieceGeometry(half), material: asDrawn(materials[p.kind]), scale: 1, color });
 }
 
 /** Dresses every body of the level (after each reset): textured pieces, a steel ball, the crane's parts. */
@@ -381,21 +414,23 @@ function dress(): void {
     bodyHalf.set(e, bodyHalfExtents(p.half, p.yaw, axis));
     tint(e, STANDING_TINT);
   }
-  renderer.setShape(h.ball, { geometry: ballGeometry, material: ballMaterial, scale: 'radius' });
+  renderer.setShape(h.ball, { geometry: ballGeometry, material: asDrawn(ballMaterial), scale: 'radius' });
   effects.clear();
   popped.clear();
   tally.clear();
   // The capsule links are drawn by the chain rod (drawChain), not one by one, and the mast's box as
   // a lattice (mastLattice below): both given an empty geometry, which three.js does not draw (as
   // shrunk boxes they cost two draw calls and two more in the shadow pass).
-  for (const l of h.links) renderer.setShape(l, { geometry: noGeometry, scale: 1 });
-  renderer.setShape(h.mast, { geometry: noGeometry, scale: 1 });
+  for (const l of h.links) renderer.setShape(l, { geometry: noGeometry, material: noMaterial, scale: 1 });
+  renderer.setShape(h.mast, { geometry: noGeometry, material: noMaterial, scale: 1 });
   renderer.setShape(h.trolley, { geometry: hookGeometry, scale: [0.6, 0.35, 0.6], color: COLORS.hook });
 }
 const hookGeometry = new BoxGeometry(1, 1, 1);
 /** A geometry with no vertices, for bodies drawn by something else (see dress). */
 const noGeometry = new BufferGeometry();
 noGeometry.setAttribute('position', new BufferAttribute(new Float32Array(0), 3));
+/** Their material (never drawn: there is nothing to draw). */
+const noMaterial = new MeshBasicMaterial();
 dress();
 
 /** The level the camera was last framed for (a reset of the same level keeps the player's view). */
@@ -659,6 +694,7 @@ if (flagParam('demo'))
   }, 0);
 shell.onWorldChange(() => {
   drag.release();
+  swapDue = true;
   lastFrameTime = 0;
   dress();
   if (handles.level !== framedLevel) frameSite();
@@ -1572,6 +1608,110 @@ const up = (event: PointerEvent): void => {
 canvas.addEventListener('pointerup', up);
 canvas.addEventListener('pointercancel', up);
 
+// ---- Drawing quality (see Quality) -------------------------------------------------------------
+
+/** The sun's shadows on the ground without a shadow map (lite quality only; look.ts GroundShadows). */
+const groundShadows = new GroundShadows(256, renderer.lights?.options.direction ?? [0.45, 1, 0.3]);
+groundShadows.visible = false;
+app.scene.add(groundShadows.boxes, groundShadows.ball);
+const shadowAt = [0, 0, 0];
+/** Places this frame's ground shadows: each piece's and the ball's where they are drawn, and the mast's. */
+function placeGroundShadows(): void {
+  const O = shell.world.components.Orientation;
+  groundShadows.begin();
+  for (const p of handles.pieces) {
+    const half = bodyHalf.get(p.body);
+    if (!half || !renderer.drawnPosition(p.body, shadowAt)) continue;
+    groundShadows.add(shadowAt[0]!, shadowAt[1]!, shadowAt[2]!, O.x[p.body]!, O.y[p.body]!, O.z[p.body]!, O.w[p.body]!, half);
+  }
+  // The mast and the jib, narrower than their boxes (a lattice lets light through), the counterweight and the cab.
+  groundShadows.add(0, JIB_HEIGHT / 2, 0, 0, 0, 0, 1, MAST_SHADOW_HALF);
+  for (const [mesh, half] of craneShadows) {
+    mesh.updateMatrix();
+    groundShadows.addBox(shadowBox.makeScale(half[0], half[1], half[2]).premultiply(mesh.matrix));
+  }
+  const ball = renderer.drawnPosition(handles.ball, shadowAt);
+  if (ball) groundShadows.end(shadowAt[0]!, shadowAt[1]!, shadowAt[2]!, BALL_RADIUS);
+  else groundShadows.end(0, -100, 0, 0);
+}
+/** Half extents, m, of the mast's shadow-casting box (see placeGroundShadows). */
+const MAST_SHADOW_HALF: [number, number, number] = [0.22, JIB_HEIGHT / 2, 0.22];
+/** The crane's parts at the mast's top that cast ground shadows, and their boxes' half extents in their own frames, m. */
+const craneShadows: Array<[Mesh, [number, number, number]]> = [
+  [jib, [JIB_LENGTH / 2, 0.1, 0.1]],
+  [counterweight, [0.6, 0.55, 0.5]],
+  [cab, [0.45, 0.4, 0.45]],
+];
+const shadowBox = new Matrix4();
+/** The physically based materials a lite quality swapped out of the scene's meshes, by their stand-in. */
+const swappedOut = new Map<Material, Material>();
+/**
+ * Draws the scene at quality `q`: the sun's shadow map on or off, every physically based material in
+ * the scene (crane, site, floor, chain) swapped for its cheaper stand-in or back, the pieces and the
+ * ball drawn again in theirs (tinted as they were), the flattened ground shadows shown when lite.
+ */
+function setQuality(q: Quality): void {
+  if (!QUALITIES.includes(q)) throw new RangeError(`setQuality: quality must be one of ${QUALITIES.join(', ')}, got ${JSON.stringify(q)}`);
+  params.quality = q;
+  const full = q === 'full';
+  renderer.setShadows(full);
+  if (renderer.lights) renderer.lights.sun.castShadow = full;
+  swapMaterials();
+  for (const p of handles.pieces) tint(p.body, p.body === lit ? LIT_TINT : p.fallen ? FALLEN_TINT : STANDING_TINT);
+  renderer.setShape(handles.ball, { geometry: ballGeometry, material: asDrawn(ballMaterial), scale: 'radius' });
+  groundShadows.visible = !full;
+  if (!full) placeGroundShadows();
+  panel.refresh();
+}
+/**
+ * Swaps the physically based material of every mesh in the scene but the pieces and the ball (set
+ * by body, see setQuality) for its cheaper stand-in when lite, or back when full. Again after the
+ * world renderer makes meshes of its own (its floor, on the first frame of a world: see frame).
+ */
+function swapMaterials(): void {
+  const full = params.quality === 'full';
+  const own = [materials.tower, materials.wall, materials.planks, ballMaterial];
+  const dressed = new Set<Material | undefined>([...own, ...own.map((m) => cheaper.get(m))]);
+  app.scene.traverse((o) => {
+    if (!(o instanceof Mesh) || Array.isArray(o.material) || dressed.has(o.material)) return;
+    if (full) {
+      const before = swappedOut.get(o.material);
+      if (before) o.material = before;
+    } else if (o.material instanceof MeshStandardMaterial) {
+      const stand = asDrawn(o.material);
+      swappedOut.set(stand, o.material);
+      o.material = stand;
+    }
+  });
+}
+/** Frames a second under which a page drawing at full quality steps down to lite by itself. */
+const AUTO_LITE_FPS = 20;
+/** Whether the quality was fixed (by the URL or the settings panel): the page no longer changes it. */
+let qualityChosen = askedQuality !== null;
+/**
+ * Steps down to lite once if the page draws fewer than AUTO_LITE_FPS frames a second over the
+ * WATCH_FOR s that begin WATCH_FROM s after the page is ready (the first frames compile shaders);
+ * a page hidden meanwhile (its frames stop) is watched again when it shows.
+ */
+function watchFrameRate(): void {
+  const WATCH_FROM = 1000,
+    WATCH_FOR = 2000;
+  setTimeout(() => {
+    if (qualityChosen || params.quality !== 'full') return;
+    const drawn = app.pacer.drawn,
+      t0 = performance.now();
+    setTimeout(() => {
+      if (qualityChosen || params.quality !== 'full') return;
+      if (document.hidden) {
+        document.addEventListener('visibilitychange', watchFrameRate, { once: true });
+        return;
+      }
+      const fps = ((app.pacer.drawn - drawn) * 1000) / (performance.now() - t0);
+      if (fps < AUTO_LITE_FPS) setQuality('lite');
+    }, WATCH_FOR);
+  }, WATCH_FROM);
+}
+
 // ---- Panel and status line ---------------------------------------------------------------------
 
 const panel = createPanel(
@@ -1591,11 +1731,13 @@ const panel = createPanel(
     },
     { type: 'checkbox', key: 'debug', label: withKey('debug layer', 'G'), onChange: (v) => setDebug(v === true) },
     {
-      type: 'checkbox',
-      key: 'shadows',
+      type: 'choice',
+      key: 'quality',
+      label: 'drawing',
+      options: { 'full (shadows)': 'full', 'lite (faster)': 'lite' },
       onChange: (v) => {
-        renderer.setShadows(v === true);
-        if (renderer.lights) renderer.lights.sun.castShadow = v === true;
+        qualityChosen = true;
+        setQuality(v as Quality);
       },
     },
     { type: 'button', key: 'nextLevel', label: withKey('next level', 'L') },
@@ -1628,6 +1770,8 @@ function showStats(on: boolean): void {
   }
 }
 showStats(params.debug);
+setQuality(params.quality);
+watchFrameRate();
 
 // ---- Site plan: the left column's foot (it stood empty, 230 px at 1280 x 800) ------------------
 
@@ -1802,6 +1946,8 @@ function showHint(text: string, big: boolean): void {
 }
 
 let frames = 0;
+/** Whether the next frame swaps the scene's materials for the quality (see swapMaterials): the first, and the first of each world. */
+let swapDue = true;
 /** World time the last swing's run ended (the result is counted 1.5 s later), or -1. */
 let runEndedAt = -1;
 /** Counts the last swing's result ("Hit! N down" or a miss) for the status line; its marks go. */
@@ -1820,6 +1966,10 @@ const hookAt = new Float64Array(3);
 let lastFrameTime = 0;
 function frame(): void {
   updateControls();
+  if (swapDue) {
+    swapDue = false;
+    swapMaterials();
+  }
   // A new canvas size (a phone turned, a window resized), framed again unless the player moved the
   // camera; not for a few pixels (the status line wrapping onto another line), which would shift the
   // view under the player's finger.
@@ -1852,6 +2002,7 @@ function frame(): void {
   placeTies(c.angle);
   cab.position.set(0.2 * ca, JIB_HEIGHT - 0.6, -0.2 * sa);
   cab.rotation.set(0, c.angle, 0);
+  if (groundShadows.visible) placeGroundShadows();
   const hp = renderer.drawnPosition(handles.trolley, hookAt) ?? hookPosition(c);
   drawChain(hp);
   if (renderer.drawnPosition(handles.ball, ballAt)) placeCues(ballAt, hp);
@@ -2036,4 +2187,11 @@ shell.expose({
   effects: () => effects.counts(),
   /** Goes to the next level (banks the score). */
   nextLevel,
+  /** The drawing quality now ('full' or 'lite'; see Quality). */
+  quality: (): Quality => params.quality,
+  /** Draws at quality 'full' or 'lite' from now on (as the settings panel's choice: the page no longer changes it). */
+  setQuality: (q: Quality): void => {
+    qualityChosen = true;
+    setQuality(q);
+  },
 });

@@ -141,6 +141,56 @@ describe('phone controls', () => {
 
   it('wrecking ball: holding Slew turns the jib; Next level shows once the level is cleared', async () => {
     const g = await h.openGame('wrecking-ball', { ...PHONE, query: { shadows: 0 } });
+    // ?shadows=0 draws lite (games/wrecking-ball/main.ts Quality): no shadow map, no physically based
+    // material left on a visible mesh, and each piece's shadow flattened onto the ground along the
+    // sun: its centre (x, y, z) drawn at (x - y Lx / Ly, z - y Lz / Ly) for the sun's direction L
+    // (to 1 mm). 'full' brings the shadow map and the physically based materials back.
+    const drawing = await g.page.evaluate(() => {
+      type M = { isMeshStandardMaterial?: boolean; opacity: number };
+      type O = {
+        isMesh?: boolean;
+        isInstancedMesh?: boolean;
+        visible: boolean;
+        material: M;
+        count: number;
+        instanceMatrix: { array: Float32Array };
+      };
+      const game = window.game as unknown as {
+        quality(): string;
+        setQuality(q: string): void;
+        handles(): { pieces: { body: number }[] };
+        world: { components: { Position: { x: Float64Array; y: Float64Array; z: Float64Array } } };
+        renderer: { lights: { sun: { castShadow: boolean }; options: { direction: number[] } } };
+        app: { scene: { traverse(f: (o: O) => void): void } };
+      };
+      const standard = (): number => {
+        let n = 0;
+        game.app.scene.traverse((o) => {
+          if (o.isMesh && o.visible && o.material.isMeshStandardMaterial && (!o.isInstancedMesh || o.count > 0)) n++;
+        });
+        return n;
+      };
+      let shadows: O | null = null;
+      game.app.scene.traverse((o) => {
+        if (o.isInstancedMesh && o.visible && o.material.opacity === 0.38) shadows = o;
+      });
+      const P = game.world.components.Position,
+        [lx, ly, lz] = game.renderer.lights.options.direction as [number, number, number];
+      const p = game.handles().pieces[0]!.body;
+      const m = (shadows as O | null)?.instanceMatrix.array;
+      const off = m ? Math.hypot(m[12]! - (P.x[p]! - (P.y[p]! * lx) / ly), m[14]! - (P.z[p]! - (P.y[p]! * lz) / ly)) : -1;
+      const lite = { quality: game.quality(), sunShadow: game.renderer.lights.sun.castShadow, standard: standard(), off };
+      game.setQuality('full');
+      const full = { quality: game.quality(), sunShadow: game.renderer.lights.sun.castShadow, standard: standard() };
+      game.setQuality('lite');
+      return { lite, full };
+    });
+    expect(drawing.lite).toMatchObject({ quality: 'lite', sunShadow: false, standard: 0 });
+    expect(drawing.lite.off).toBeGreaterThanOrEqual(0);
+    expect(drawing.lite.off).toBeLessThan(1e-3);
+    expect(drawing.full.quality).toBe('full');
+    expect(drawing.full.sunShadow).toBe(true);
+    expect(drawing.full.standard).toBeGreaterThan(5);
     // The site fills the screen: framed by the pieces' own corners and the crane (not a box round
     // the site, whose empty corners took a third of the width and left bare ground in front), the
     // level's pieces have their centres over 72 % of the screen's width apart and over 35 % of its
