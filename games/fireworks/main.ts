@@ -1137,6 +1137,9 @@ function statusFrame(): StatusFrame {
   return { goal, numbers, hint, cleared, last, lost };
 }
 
+/** Colour of the goal line once a level is lost: the lost card's edge (not the row's green, which means lit). */
+const LOST_GOAL_COLOR = '#ff8a7a';
+
 /** Writes `f` to the status row when it changed, and shows the Next-level button (with its chime) once the level is lit. */
 function writeStatus(f: StatusFrame): void {
   if (f.cleared && Number.isNaN(clearShownAt)) {
@@ -1145,8 +1148,11 @@ function writeStatus(f: StatusFrame): void {
   }
   const mode = lanternShow ? 'Free play' : 'Lantern show';
   if (modeButton.textContent !== mode) modeButton.textContent = mode;
-  if (status.set({ goal: f.goal, numbers: f.numbers, hint: f.hint }, f.cleared || f.lost))
+  // Green (the row's done colour) only for a level lit; a lost one says so in the card's coral.
+  if (status.set({ goal: f.goal, numbers: f.numbers, hint: f.hint }, f.cleared)) {
+    status.goal.style.color = f.lost ? LOST_GOAL_COLOR : '';
     setAction(f.cleared || f.lost, f.lost ? 'Try again ▶' : f.last ? 'Play again ▶' : 'Next level ▶');
+  }
   drawCard(f);
 }
 
