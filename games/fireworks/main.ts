@@ -825,6 +825,9 @@ canvas.addEventListener('pointerup', (event) => {
   const hold = Math.max(0, (performance.now() - pressedAt) / 1000);
   const cam = renderer.camera;
   pauseAutoShow(show);
+  // In the lantern show a second tap on a shell's spot while it still rises (its ring closing in)
+  // is taken as the same tap: a stranger who tapped again, unsure the first one took, lost a shell.
+  if (lanternShow && targets.some((m) => Math.hypot(cam.toScreenX(m.x) - pointerX, cam.toScreenY(m.y) - pointerY) < SAME_SPOT_PX)) return;
   const x = cam.toWorldX(pointerX),
     y = cam.toWorldY(pointerY);
   const id = playerLaunch(x, y, hold);
@@ -837,6 +840,8 @@ canvas.addEventListener('pointerup', (event) => {
 canvas.addEventListener('pointercancel', (event) => {
   if (event.pointerId === pointerId) pointerId = -1;
 });
+/** A tap this close to a rising shell's burst point, CSS px (about a fingertip), launches nothing in the lantern show. */
+const SAME_SPOT_PX = 24;
 
 // ---- The lantern show: lanterns, status row, next-level button -----------------------------------
 

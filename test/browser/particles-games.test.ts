@@ -376,6 +376,15 @@ describe('fireworks: the lantern show', () => {
     const p = await lanternOnPage(g, 0);
     await g.page.touchscreen.tap(p.x, p.y);
     await g.waitFor(() => (window.game as unknown as LanternGame).lanterns().shells === 1, null);
+    // A second tap there while its shell still rises (paused) is the same tap: no second shell.
+    await g.page.touchscreen.tap(p.x + 5, p.y);
+    await g.frames(2);
+    expect(
+      await g.page.evaluate(() => [
+        (window.game as unknown as LanternGame).lanterns().shells,
+        (window.game as unknown as { show: { shellCount: number } }).show.shellCount,
+      ]),
+    ).toEqual([1, 1]);
     const litAt = await g.page.evaluate(() => {
       const game = window.game as unknown as Stepping;
       for (let k = 0; k < 300 && !game.lanterns().lit[0]; k++) game.step();
