@@ -1007,7 +1007,14 @@ function drawPointer(): void {
       .fill({ color: thrownColor, alpha: 1 - 0.55 * f })
       .stroke({ width: 1.5, color: 0x0b0f16, alpha: 0.8 - 0.4 * f });
   }
-  // The arc ends on another ball: a red cross there (that ball is in the way).
+  if (pressBall !== 0 && handles.balls.includes(pressBall)) {
+    // A ball of the scene is thrown: a ring round it and what it is worth.
+    overlay.circle(ox, oy, or + 4).stroke({ width: 3, color: 0xffffff, alpha: 0.9 });
+    const points = BALL_POINTS[kindOf(pressBall)];
+    showHoldLabel(`${points} ${points === 1 ? 'point' : 'points'}`, ox, oy - or - 8);
+  } else overlay.circle(ox, oy, or).fill({ color: thrownColor, alpha: 0.85 }).stroke({ width: 2, color: 0xffffff, alpha: 0.9 });
+  // The arc ends on another ball: a red cross there (that ball is in the way), over the thrown
+  // ball's disc (a throw blocked at once ends its arc inside that disc).
   if (n > 1) {
     const ex = path[2 * n - 2]!,
       ey = path[2 * n - 1]!;
@@ -1023,12 +1030,6 @@ function drawPointer(): void {
         .stroke({ width: 4, color: 0xff4d4d, alpha: 0.95 });
     }
   }
-  if (pressBall !== 0 && handles.balls.includes(pressBall)) {
-    // A ball of the scene is thrown: a ring round it and what it is worth.
-    overlay.circle(ox, oy, or + 4).stroke({ width: 3, color: 0xffffff, alpha: 0.9 });
-    const points = BALL_POINTS[kindOf(pressBall)];
-    showHoldLabel(`${points} ${points === 1 ? 'point' : 'points'}`, ox, oy - or - 8);
-  } else overlay.circle(ox, oy, or).fill({ color: thrownColor, alpha: 0.85 }).stroke({ width: 2, color: 0xffffff, alpha: 0.9 });
 }
 
 // ---- The hoop game: net, shot line, basket pop, status row and the play-again button -------------
