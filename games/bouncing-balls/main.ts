@@ -53,6 +53,7 @@ import { enableMouseDrag } from '@bitphysics/game-kit/drag';
 import { createResultCard, startPixiGame } from '@bitphysics/game-kit/pixi';
 import {
   addBox,
+  addSystem,
   createPhysicsWorld,
   type PhysicsWorld,
   Rng,
@@ -216,7 +217,99 @@ function createWorld(): PhysicsWorld {
   missAt = -1e9;
   lastBasket = { x: 0, y: 0, time: -10, spot: 0, score: 0, points: 0, kind: 'basketball' };
   hoopIds = addHoop(world, hoopSpots(TALL)[0]!, params.restitution, params.friction);
+  leaving = new Map();
+  addSystem(world, 'integrate', keepLeavingFree);
+  addSystem(world, 'collide', leaveFreely);
   return world;
+}
+
+// ---- A thrown heap ball leaves the heap on its arc ------------------------------------------------
+
+/**
+ * How long a thrown ball of the scene ignores the balls it leaves, s: its neighbours in the heap
+ * pressed on it as it rose and knocked it off the aimed arc (at 9 m/s, 0.4 m off in 0.1 s).
+ */
+const LEAVE_SECONDS = 0.1;
+
+/** The thrown balls leaving the heap: until (world time, s) and their state after the last integrate (m, m/s). */
+let leaving = new Map<number, { until: number; x: number; y: number; vx: number; vy: number }>();
+
+/** After each (sub)step's integrate: each leaving ball's state as it flies free of contacts. */
+function keepLeavingFree(world: PhysicsWorld): void {
+  if (leaving.size === 0) return;
+  const P = world.components.Position,
+    V = world.components.Velocity;
+  for (const [e, l] of leaving) {
+    if (world.time >= l.until || !handles.balls.includes(e)) {
+      leaving.delete(e);
+      continue;
+    }
+    const s = slotOf(e);
+    l.x = P.x[s]!;
+    l.y = P.y[s]!;
+    l.vx = V.x[s]!;
+    l.vy = V.y[s]!;
+  }
+}
+
+/**
+ * After each (sub)step's collide: a leaving ball goes on as if the balls round it were not there
+ * (they are pushed aside), unless it touches the box, a ramp or the hoop: then it stops leaving and
+ * bounces as any ball does.
+ */
+function leaveFreely(world: PhysicsWorld): void {
+  if (leaving.size === 0) return;
+  const P = world.components.Position,
+    V = world.components.Velocity;
+  const { box, segments } = layoutOf(TALL);
+  const walls = [
+    ...segments.map(([ax, ay, bx, by]) => [ax, ay, bx, by, SEGMENT_RADIUS] as const),
+    ...hoopSegments(hoopSpots(TALL)[round.spot]!).map(([ax, ay, bx, by]) => [ax, ay, bx, by, HOOP_RADIUS] as const),
+  ];
+  for (const [e, l] of leaving) {
+    const s = slotOf(e);
+    const r = world.components.Ball.radius[s]!;
+    const clear =
+      l.x - r > box.min[0] &&
+      l.x + r < box.max[0] &&
+      l.y - r > box.min[1] &&
+      l.y + r < box.max[1] &&
+      walls.every(([ax, ay, bx, by, wr]) => distanceToSegment(l.x, l.y, ax, ay, bx, by) > r + wr);
+    if (!clear) {
+      leaving.delete(e);
+      continue;
+    }
+    P.x[s] = l.x;
+    P.y[s] = l.y;
+    V.x[s] = l.vx;
+    V.y[s] = l.vy;
+  }
+}
+
+/** Distance from (px, py) to the segment (ax, ay)-(bx, by), m. */
+function distanceToSegment(px: number, py: number, ax: number, ay: number, bx: number, by: number): number {
+  const ex = bx - ax,
+    ey = by - ay;
+  const t = Math.max(0, Math.min(1, ((px - ax) * ex + (py - ay) * ey) / (ex * ex + ey * ey || 1)));
+  return Math.hypot(px - ax - t * ex, py - ay - t * ey);
+}
+
+/**
+ * Whether a ball of radius `r` thrown from (x, y), m, with velocity (vx, vy), m/s, runs into a ball
+ * (but `thrown`) within LEAVE_SECONDS: touching it and moving into it, as the aiming arc's red cross
+ * says. Such a throw collides at once, as the arc shows.
+ */
+function blockedAtOnce(x: number, y: number, vx: number, vy: number, r: number, thrown: number): boolean {
+  const g = handles.params.gravity;
+  const near = nearBalls(x, y, thrown);
+  for (let n = 1; n <= Math.round(LEAVE_SECONDS * 60); n++) {
+    const t = n / 60;
+    const px = x + vx * t,
+      py = y + vy * t - 0.5 * g * t * t,
+      wy = vy - g * t;
+    if (near.some(([bx, by, br]) => (px - bx) ** 2 + (py - by) ** 2 < (r + br) ** 2 && (px - bx) * vx + (py - by) * wy < 0)) return true;
+  }
+  return false;
 }
 
 /** Drops a crate (a box of about two mean ball diameters, turned a little) near the top of the box. */
@@ -754,6 +847,12 @@ function throwBall(e: number, vx: number, vy: number): void {
   if (!handles.balls.includes(e)) throw new RangeError(`throwBall: ${e} is not a ball of the scene`);
   setVelocity(shell.world, e, [vx, vy]);
   setAngularVelocity(shell.world, e, 0);
+  const c = shell.world.components,
+    s = slotOf(e);
+  const x = c.Position.x[s]!,
+    y = c.Position.y[s]!;
+  // Free of the heap round it for a moment, unless a ball lies on its arc right away.
+  if (!blockedAtOnce(x, y, vx, vy, c.Ball.radius[s]!, e)) leaving.set(e, { until: shell.world.time + LEAVE_SECONDS, x, y, vx, vy });
   launch(e, true);
 }
 
@@ -785,6 +884,11 @@ canvas.addEventListener('pointercancel', (event) => release(event, true));
 function aimPath(): number[] {
   if (pointerId === -1 || !dragged) return [];
   const t = currentThrow();
+  return arcOf(t, pressBall);
+}
+
+/** The aiming arc of throw `t` (start, m; velocity, m/s; the ball's radius, m, and mass, kg), ending at any ball but `thrown` in its way. */
+function arcOf(t: { x: number; y: number; vx: number; vy: number; radius: number; mass: number }, thrown: number): number[] {
   const p = handles.params;
   const spot = hoopSpots(TALL)[round.spot]!;
   const walls = [
@@ -804,7 +908,7 @@ function aimPath(): number[] {
     friction: p.friction,
     walls,
     hoop: spot,
-    stops: nearBalls(t.x, t.y, pressBall),
+    stops: nearBalls(t.x, t.y, thrown),
   });
 }
 
@@ -903,7 +1007,14 @@ function drawPointer(): void {
       .fill({ color: thrownColor, alpha: 1 - 0.55 * f })
       .stroke({ width: 1.5, color: 0x0b0f16, alpha: 0.8 - 0.4 * f });
   }
-  // The arc ends on another ball: a red cross there (that ball is in the way).
+  if (pressBall !== 0 && handles.balls.includes(pressBall)) {
+    // A ball of the scene is thrown: a ring round it and what it is worth.
+    overlay.circle(ox, oy, or + 4).stroke({ width: 3, color: 0xffffff, alpha: 0.9 });
+    const points = BALL_POINTS[kindOf(pressBall)];
+    showHoldLabel(`${points} ${points === 1 ? 'point' : 'points'}`, ox, oy - or - 8);
+  } else overlay.circle(ox, oy, or).fill({ color: thrownColor, alpha: 0.85 }).stroke({ width: 2, color: 0xffffff, alpha: 0.9 });
+  // The arc ends on another ball: a red cross there (that ball is in the way), over the thrown
+  // ball's disc (a throw blocked at once ends its arc inside that disc).
   if (n > 1) {
     const ex = path[2 * n - 2]!,
       ey = path[2 * n - 1]!;
@@ -919,12 +1030,6 @@ function drawPointer(): void {
         .stroke({ width: 4, color: 0xff4d4d, alpha: 0.95 });
     }
   }
-  if (pressBall !== 0 && handles.balls.includes(pressBall)) {
-    // A ball of the scene is thrown: a ring round it and what it is worth.
-    overlay.circle(ox, oy, or + 4).stroke({ width: 3, color: 0xffffff, alpha: 0.9 });
-    const points = BALL_POINTS[kindOf(pressBall)];
-    showHoldLabel(`${points} ${points === 1 ? 'point' : 'points'}`, ox, oy - or - 8);
-  } else overlay.circle(ox, oy, or).fill({ color: thrownColor, alpha: 0.85 }).stroke({ width: 2, color: 0xffffff, alpha: 0.9 });
 }
 
 // ---- The hoop game: net, shot line, basket pop, status row and the play-again button -------------
@@ -1444,6 +1549,16 @@ shell.expose({
   hoop: () => hoopOpening(hoopSpots(TALL)[round.spot]!),
   /** A player's ball at (x, y) m with velocity (vx, vy) m/s, as a throw releases it (counts for the hoop). @returns its id. */
   shoot: (x: number, y: number, vx = 0, vy = 0): number => shoot(x, y, vx, vy),
+  /**
+   * The dotted arc a pull starting on ball `eid` shows for a throw with velocity (vx, vy), m/s: its
+   * points, m (flat x, y pairs), ending at a ball in its way. @throws RangeError if `eid` is not a ball of the scene.
+   */
+  aimFrom: (eid: number, vx: number, vy: number): number[] => {
+    if (!handles.balls.includes(eid)) throw new RangeError(`aimFrom: ${eid} is not a ball of the scene`);
+    const c = shell.world.components,
+      s = slotOf(eid);
+    return arcOf({ x: c.Position.x[s]!, y: c.Position.y[s]!, vx, vy, radius: c.Ball.radius[s]!, mass: c.Mass.value[s]! }, eid);
+  },
   /** The dotted arc drawn while pulling a throw: its points, m (flat x, y pairs), or [] when not pulling. */
   aimPath: (): number[] => aimPath(),
   /** The status row's text (goal, numbers, hint). */

@@ -1365,7 +1365,8 @@ function draw(world: PhysicsWorld, alpha: number): void {
     // Before the first throw the level's name stands where its score (0) will be.
     const rule = shots.length === 0 ? `\nStars: ${starRule}` : '';
     const head = shots.length === 0 ? `Level ${params.level}: ${lv.name}` : `Score ${score}`;
-    const running = `${head}   Total ${runningTotal}   shots ${shotsLeft}${rule}`;
+    // "shots left", not "shots": a stranger read "shots 2" as the shots thrown.
+    const running = `${head}  Total ${runningTotal}  ${shotsLeft} ${shotsLeft === 1 ? 'shot' : 'shots'} left${rule}`;
     if (clearedEarly(world)) {
       // Cleared with shots to spare: the player may move on now (the shots left score their bonus) or
       // throw again for more stars.

@@ -825,6 +825,9 @@ canvas.addEventListener('pointerup', (event) => {
   const hold = Math.max(0, (performance.now() - pressedAt) / 1000);
   const cam = renderer.camera;
   pauseAutoShow(show);
+  // In the lantern show a second tap on a shell's spot while it still rises (its ring closing in)
+  // is taken as the same tap: a stranger who tapped again, unsure the first one took, lost a shell.
+  if (lanternShow && targets.some((m) => Math.hypot(cam.toScreenX(m.x) - pointerX, cam.toScreenY(m.y) - pointerY) < SAME_SPOT_PX)) return;
   const x = cam.toWorldX(pointerX),
     y = cam.toWorldY(pointerY);
   const id = playerLaunch(x, y, hold);
@@ -837,6 +840,8 @@ canvas.addEventListener('pointerup', (event) => {
 canvas.addEventListener('pointercancel', (event) => {
   if (event.pointerId === pointerId) pointerId = -1;
 });
+/** A tap this close to a rising shell's burst point, CSS px (about a fingertip), launches nothing in the lantern show. */
+const SAME_SPOT_PX = 24;
 
 // ---- The lantern show: lanterns, status row, next-level button -----------------------------------
 
@@ -1137,6 +1142,9 @@ function statusFrame(): StatusFrame {
   return { goal, numbers, hint, cleared, last, lost };
 }
 
+/** Colour of the goal line once a level is lost: the lost card's edge (not the row's green, which means lit). */
+const LOST_GOAL_COLOR = '#ff8a7a';
+
 /** Writes `f` to the status row when it changed, and shows the Next-level button (with its chime) once the level is lit. */
 function writeStatus(f: StatusFrame): void {
   if (f.cleared && Number.isNaN(clearShownAt)) {
@@ -1145,8 +1153,11 @@ function writeStatus(f: StatusFrame): void {
   }
   const mode = lanternShow ? 'Free play' : 'Lantern show';
   if (modeButton.textContent !== mode) modeButton.textContent = mode;
-  if (status.set({ goal: f.goal, numbers: f.numbers, hint: f.hint }, f.cleared || f.lost))
+  // Green (the row's done colour) only for a level lit; a lost one says so in the card's coral.
+  if (status.set({ goal: f.goal, numbers: f.numbers, hint: f.hint }, f.cleared)) {
+    status.goal.style.color = f.lost ? LOST_GOAL_COLOR : '';
     setAction(f.cleared || f.lost, f.lost ? 'Try again ▶' : f.last ? 'Play again ▶' : 'Next level ▶');
+  }
   drawCard(f);
 }
 

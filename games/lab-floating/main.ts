@@ -96,7 +96,11 @@ const game = await startPixiGame({
   ],
   keys: [{ key: 'e', label: 'equilibrium', action: () => placeAtEquilibrium() }],
   // On wide windows the view reaches past the tank on the right, so the plot docked there does not cover it.
-  renderer: { view: { minX: TANK.minX, minY: TANK.minY, maxX: TANK.maxX + (plotReserve() > 0 ? 8 : 0), maxY: TANK.maxY }, rotation: true },
+  // Above the tank, room for the divider's label.
+  renderer: {
+    view: { minX: TANK.minX, minY: TANK.minY, maxX: TANK.maxX + (plotReserve() > 0 ? 8 : 0), maxY: TANK.maxY + 1.4 },
+    rotation: true,
+  },
   onFrame: (alpha, world) => draw(alpha, world),
 });
 const { shell, renderer, app } = game;
@@ -230,7 +234,7 @@ const boxLayer = new Graphics({ label: 'box' });
 const water = new Graphics({ label: 'water' });
 const marks = new Graphics({ label: 'marks' });
 app.stage.addChild(boxLayer, water, marks);
-const labelStyle = { fill: 0xe8ecf1, fontSize: 12, fontFamily: 'system-ui, sans-serif' };
+const labelStyle = { fill: 0xe8ecf1, fontSize: 12, fontFamily: 'system-ui, sans-serif', align: 'center' as const };
 const labels = new Map<BodyKind, Text>(BODY_KINDS.map((k) => [k, new Text({ text: '', style: labelStyle })]));
 for (const t of labels.values()) {
   t.anchor.set(0.5, 1);
@@ -301,19 +305,77 @@ function draw(alpha: number, world: PhysicsWorld): void {
         (Number.isFinite(d) ? `equilibrium ${d.toFixed(3)} m` : 'denser than the fluid: it sinks'),
     );
   }
-  // Density labels above the starting bodies.
-  for (const kind of BODY_KINDS) {
-    const t = labels.get(kind)!;
-    const rho = params[kind];
-    if (shownDensity.get(kind) !== rho) {
-      shownDensity.set(kind, rho);
-      t.text = `${kind} ${rho} kg/m²`;
-    }
-    const id = handles[kind];
-    const top = kind === 'box' ? BOX_HALF[1] : BALL_RADIUS;
-    t.position.set(cam.toScreenX(lerpX(id)), cam.toScreenY(lerpY(id) + top) - 4);
+  // Density labels above the starting bodies: on one line, or on two ('box' over '500 kg/m²') when
+  // the box's label is wider than its compartment (a phone's scale).
+  const compartment = cam.toScreenLength(DIVIDER.x - TANK.minX) - 6;
+  if (shownCompartment !== compartment) {
+    shownCompartment = compartment;
+    const box = labels.get('box')!;
+    box.text = `box ${params.box} kg/m²`;
+    twoLineLabels = box.width > compartment;
+    shownDensity.clear();
   }
-  dividerLabel.position.set(cam.toScreenX(DIVIDER.x), cam.toScreenY(DIVIDER.top) - 4);
+  for (const kind of BODY_KINDS) {
+    const rho = params[kind];
+    if (shownDensity.get(kind) === rho) continue;
+    shownDensity.set(kind, rho);
+    labels.get(kind)!.text = `${kind}${twoLineLabels ? '\n' : ' '}${rho} kg/m²`;
+  }
+  // The divider's label above the tank, where no body goes, joined to the pole's top by a dotted
+  // line; placed last, so it is lifted over a density label in its way rather than the other way round.
+  const poleX = cam.toScreenX(DIVIDER.x);
+  placeLabels([
+    ...BODY_KINDS.map((kind) => {
+      const id = handles[kind];
+      const top = kind === 'box' ? BOX_HALF[1] : BALL_RADIUS;
+      return { t: labels.get(kind)!, x: cam.toScreenX(lerpX(id)), y: cam.toScreenY(lerpY(id) + top) - 4 };
+    }),
+    { t: dividerLabel, x: poleX, y: cam.toScreenY(TANK.maxY) - 6, last: true },
+  ]);
+  dashedLine(marks, poleX, cam.toScreenY(DIVIDER.top) - 3, poleX, dividerLabel.y + 2, 2, 3).stroke({
+    width: 1,
+    color: 0x98a2b3,
+    alpha: 0.8,
+  });
+}
+
+/** Whether the density labels are on two lines, and the box compartment's width (px) that was decided for. */
+let twoLineLabels = false;
+let shownCompartment = Number.NaN;
+
+/** Gap kept between two labels, px. */
+const LABEL_GAP = 2;
+
+/**
+ * Puts each label (anchored at its bottom centre) at its wanted point or, where it would overlap one
+ * already placed, just above what it overlaps. The lowest wanted points on screen go first (those
+ * marked `last` after all the others), so a label is only ever lifted, never pushed onto its body.
+ */
+function placeLabels(wanted: { t: Text; x: number; y: number; last?: boolean }[]): void {
+  const boxOf = (t: Text, x: number, y: number) => ({ left: x - t.width / 2, right: x + t.width / 2, top: y - t.height, bottom: y });
+  const placed: ReturnType<typeof boxOf>[] = [];
+  const order = [...wanted].sort((a, b) => Number(a.last ?? false) - Number(b.last ?? false) || b.y - a.y);
+  for (const w of order) {
+    let y = w.y;
+    for (let moved = true, n = 0; moved && n < 8; n++) {
+      moved = false;
+      const me = boxOf(w.t, w.x, y);
+      for (const o of placed) {
+        if (
+          me.left < o.right + LABEL_GAP &&
+          o.left < me.right + LABEL_GAP &&
+          me.top < o.bottom + LABEL_GAP &&
+          o.top < me.bottom + LABEL_GAP
+        ) {
+          y = o.top - LABEL_GAP;
+          moved = true;
+          break;
+        }
+      }
+    }
+    w.t.position.set(w.x, y);
+    placed.push(boxOf(w.t, w.x, y));
+  }
 }
 
 // ---- Pointer: a click drops a ball -------------------------------------------------------------
@@ -340,6 +402,12 @@ shell.expose({
   draft: (kind: BodyKind): number => immersionDepth(shell.world, handles, handles[kind]),
   /** Exact equilibrium draft of body `kind`, m (NaN if it sinks). */
   equilibrium: (kind: BodyKind): number => equilibriumOf(handles, kind),
+  /** Screen boxes (canvas px) of the divider's and the density labels, as last drawn: [name, left, top, right, bottom]. */
+  labelBoxes: (): [string, number, number, number, number][] =>
+    [['divider', dividerLabel] as const, ...BODY_KINDS.map((k) => [k, labels.get(k)!] as const)].map(([name, t]) => {
+      const b = t.getBounds();
+      return [name, b.minX, b.minY, b.maxX, b.maxY];
+    }),
   /** Puts the tracked body at rest at its exact equilibrium. */
   placeAtEquilibrium,
   /** Drops a ball at (x, y), m; returns its id. */

@@ -557,6 +557,56 @@ describe('bouncing balls: the hoop game', () => {
     await g.waitFor(() => (window.game as unknown as HoopGame).round().phase === 'ready', null);
     expect(await g.page.evaluate(() => (window.game as unknown as HoopGame).best())).toBe(1);
     expect(await again.count()).toBe(0);
+    // Heap throws fly their shown arc: the default heap of 40 balls settled 10 s (paused, stepped),
+    // then the first two heap balls (in a fixed order) with an arc clean for 0.5 s (no red cross, no
+    // bounce) thrown at 9 m/s 20 degrees off the vertical. Each is on its drag-free arc 0.5 s later
+    // within 2 cm; before, the heap's neighbours knocked the second one 2.2 m off it.
+    const offs = await g.page.evaluate(() => {
+      const game = window.game as unknown as HoopGame & {
+        params: { count: number; gravity: number };
+        paused: boolean;
+        reset(): void;
+        step(): void;
+        aimFrom(e: number, vx: number, vy: number): number[];
+        throwBall(e: number, vx: number, vy: number): void;
+        world: { components: { Position: { x: Float64Array; y: Float64Array }; Velocity: { x: Float64Array; y: Float64Array } } };
+      };
+      game.params.count = 40;
+      game.reset();
+      game.paused = true;
+      for (let k = 0; k < 600; k++) game.step();
+      const g = game.params.gravity,
+        C = game.world.components,
+        found: number[] = [];
+      const ids = game.ballIds();
+      for (let q = 0; q < ids.length && found.length < 2; q++) {
+        const e = ids[(q * 17) % ids.length]!,
+          s = e % 2 ** 25;
+        const x = C.Position.x[s]!,
+          y = C.Position.y[s]!;
+        if (y > 4 || Math.hypot(C.Velocity.x[s]!, C.Velocity.y[s]!) > 0.3) continue;
+        for (const angle of [70, 110, 65, 115, 75, 105, 60, 120]) {
+          const vx = 9 * Math.cos((angle * Math.PI) / 180),
+            vy = 9 * Math.sin((angle * Math.PI) / 180);
+          // The arc's points every 4 steps: the first 8 on the parabola (0.53 s) make it clean.
+          const path = game.aimFrom(e, vx, vy);
+          let clean = path.length >= 20;
+          for (let i = 1; clean && i <= 8; i++) {
+            const t = (4 / 60) * i;
+            clean = Math.hypot(path[2 * i]! - (x + vx * t), path[2 * i + 1]! - (y + vy * t - 0.5 * g * t * t)) < 1e-6;
+          }
+          if (!clean) continue;
+          game.throwBall(e, vx, vy);
+          for (let k = 0; k < 30; k++) game.step();
+          found.push(Math.hypot(C.Position.x[s]! - (x + vx * 0.5), C.Position.y[s]! - (y + vy * 0.5 - 0.5 * g * 0.25)));
+          for (let k = 0; k < 240; k++) game.step();
+          break;
+        }
+      }
+      return found;
+    });
+    expect(offs).toHaveLength(2);
+    for (const off of offs) expect(off).toBeLessThan(0.02);
     expect(g.errors).toEqual([]);
     await g.close();
   });

@@ -449,6 +449,8 @@ describe('catapult', () => {
       w.paused = false;
     });
     await g.waitFor(() => (window.game as unknown as { bannerText(): string }).bannerText().includes('★★★\u00a095\u00a0%'), null);
+    // The shots still to throw, said as such ("shots 3" read as shots thrown).
+    expect(await g.page.evaluate(() => (window.game as unknown as W).bannerText())).toMatch(/Total 0 {2}3 shots left/);
     await g.page.evaluate(() => {
       const w = window.game as unknown as CatapultGame;
       w.paused = true;

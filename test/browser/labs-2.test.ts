@@ -7,7 +7,7 @@
  * A bad URL parameter is reported on the page.
  */
 
-import { createPhysicsWorld, step } from '@bitphysics/physics';
+import { createPhysicsWorld, slotOf, step } from '@bitphysics/physics';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { equilibriumAltitude, fallSpeedFromRest, resolveOptions } from '../../games/lab-balloon-parachute/scene';
 import { createOrbitMeter, meterSample } from '../../games/lab-cyclotron/scene';
@@ -135,6 +135,41 @@ describe('labs of Part II', () => {
     expect(r.start).toBeCloseTo(r.exact, 9);
     expect(Math.abs(r.end - r.exact)).toBeLessThan(2e-3);
     expect(Number.isFinite(r.sinks)).toBe(true); // 920 < 1000: the "heavy" ball floats too
+    // The light and heavy balls held up by the divider's top, 1.4 m apart: their density labels and the
+    // divider's would meet there; none of the five labels overlaps another (canvas px, touching allowed).
+    const slots = (await lab<{ handles(): { light: number; heavy: number } }>(g, (game) => [
+      game.handles().light,
+      game.handles().heavy,
+    ])) as number[];
+    await g.page.evaluate(([light, heavy]) => {
+      const C = (window.game as unknown as { world: { components: Record<string, { x: Float64Array; y: Float64Array }> } }).world
+        .components;
+      for (const [s, x] of [
+        [light, 3.9],
+        [heavy, 5.3],
+      ] as const)
+        for (const P of [C.Position!, C.PreviousPosition!]) {
+          P.x[s] = x;
+          P.y[s] = 8.4;
+        }
+    }, slots.map(slotOf));
+    await g.frames(2);
+    const labels = (await lab<{ labelBoxes(): [string, number, number, number, number][] }>(g, (game) => game.labelBoxes())) as [
+      string,
+      number,
+      number,
+      number,
+      number,
+    ][];
+    expect(labels.map((b) => b[0])).toEqual(['divider', 'light', 'medium', 'heavy', 'box']);
+    for (const [i, a] of labels.entries())
+      for (const b of labels.slice(i + 1)) {
+        const overlap = Math.min(a[3], b[3]) - Math.max(a[1], b[1]) > 0 && Math.min(a[4], b[4]) - Math.max(a[2], b[2]) > 0;
+        expect(
+          overlap,
+          `${a[0]} label at ${a.slice(1).map((v) => Math.round(v as number))} overlaps ${b[0]} at ${b.slice(1).map((v) => Math.round(v as number))}`,
+        ).toBe(false);
+      }
     expect(g.errors).toEqual([]);
     await g.close();
   });

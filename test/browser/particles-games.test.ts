@@ -321,6 +321,10 @@ describe('fireworks: the lantern show', () => {
       w.paused = false;
     });
     await g.waitFor(() => /All lanterns lit! ★★★/.test(document.querySelector('[data-hud="lanterns"]')?.textContent ?? ''), null);
+    // A lit level's goal line turns the row's done green (#7ee787).
+    expect(await g.page.locator('[data-hud="lanterns"] [data-hud="goal"]').evaluate((e) => getComputedStyle(e).color)).toBe(
+      'rgb(126, 231, 135)',
+    );
     // Shown as lit 1.2 s (world time) after the last lantern lit, with every glow full by then; before,
     // the banner came up the moment it lit, its glow still hidden by the burst.
     const shown = await g.page.evaluate(() => (window.game as unknown as LanternGame).lanterns());
@@ -372,6 +376,15 @@ describe('fireworks: the lantern show', () => {
     const p = await lanternOnPage(g, 0);
     await g.page.touchscreen.tap(p.x, p.y);
     await g.waitFor(() => (window.game as unknown as LanternGame).lanterns().shells === 1, null);
+    // A second tap there while its shell still rises (paused) is the same tap: no second shell.
+    await g.page.touchscreen.tap(p.x + 5, p.y);
+    await g.frames(2);
+    expect(
+      await g.page.evaluate(() => [
+        (window.game as unknown as LanternGame).lanterns().shells,
+        (window.game as unknown as { show: { shellCount: number } }).show.shellCount,
+      ]),
+    ).toEqual([1, 1]);
     const litAt = await g.page.evaluate(() => {
       const game = window.game as unknown as Stepping;
       for (let k = 0; k < 300 && !game.lanterns().lit[0]; k++) game.step();
@@ -421,6 +434,10 @@ describe('fireworks: the lantern show', () => {
     await g.waitFor(() => /Out of shells! 1 of 4 lit/.test(document.querySelector('[data-hud="lanterns"]')?.textContent ?? ''), null);
     expect(await g.page.evaluate(() => (window.game as unknown as LanternGame).lanterns().shells)).toBe(3);
     expect(await status.textContent()).toMatch(/Lit 1\/4 · Shells 0/);
+    // A lost level's goal line is the lost card's coral (#ff8a7a), not the done green a lit one gets.
+    expect(await g.page.locator('[data-hud="lanterns"] [data-hud="goal"]').evaluate((e) => getComputedStyle(e).color)).toBe(
+      'rgb(255, 138, 122)',
+    );
     const lostCard = await g.page.evaluate(() => {
       const stage = (
         window.game as unknown as { app: { stage: { children: { label: string; visible: boolean; children?: { text?: string }[] }[] } } }
