@@ -367,7 +367,7 @@ style.textContent = `
 .bh-status .bh-numbers { font: 600 15px ui-monospace, Menlo, Consolas, monospace; }
 .bh-status .bh-message { color: #ffd166; }
 /* On a phone a message wraps to one or two lines: two are kept, so the scene under it does not jump. */
-@media (max-width: 600px) { .bh-status .bh-message { min-height: 2.8em; } }
+@media (max-width: 600px) { .bh-status .bh-message { min-height: 2.8em; } .bh-status .bh-numbers { font-size: 13px; } }
 .bh-status.over .bh-message { color: #ff8c8c; cursor: pointer; }
 .bh-status.cleared .bh-message { color: #7ee787; cursor: pointer; font-weight: 600; }
 .bh-pad button { font-size: 22px; min-width: 56px; }
@@ -481,7 +481,8 @@ function updateStatus(force = false): void {
   }
   const lives = `Lives ${'♥'.repeat(bh.lives)}${'♡'.repeat(Math.max(0, bh.params.lives - bh.lives))}`;
   const n = run
-    ? `Level ${run.spec.level}   ${lives}   Holes ${bh.holes.length}   Score ${bh.score}   Best ${Math.max(best, bh.score)}` +
+    ? // The holes on the field (none while the next level waits to begin).
+      `Level ${run.spec.level}   ${lives}   ${run.waiting ? '' : `Holes ${bh.holes.length}   `}Score ${bh.score}   Best ${Math.max(best, bh.score)}` +
       (Number.isFinite(run.fuelLeft) ? `   Fuel ${run.fuelLeft.toFixed(1)} s` : '')
     : `${lives}   Score ${bh.score} (1 a hole)   Holes ${bh.holes.length}`;
   const playing = replay.player ? `   ▶ Replay ${replay.player.played} steps` : '';
