@@ -1,6 +1,7 @@
 /**
- * Levels for black hole, DOM-free (Node tests run them): a first level that teaches steering (a
- * slalom: round one hole, then back between two), then two set pieces (a wall of holes across the field with one gap off to
+ * Levels for black hole, DOM-free (Node tests run them): a first level that asks for one steering
+ * decision (a fork: a hole across the straight path up and one across each diagonal, so no arrow or
+ * pair of arrows held from the start gets through), then two set pieces (a wall of holes across the field with one gap off to
  * the side; then a narrower gap with a hole above it), then holes across the straight path up, more
  * and bigger holes, holes that drift, and a fuel limit. Each cleared level gives a lost life back (up
  * to the starting three). The ship waits at the start until the player thrusts. The page (main.ts)
@@ -18,21 +19,28 @@
  * field is emptied and the run waits (no steps) until `beginLevel` lays out the next level's holes, so
  * nothing appears on the field while the ship waits.
  *
+ * No level can be cleared without steering: a layout in which an arrow, or two arrows at right angles,
+ * held from the start would reach the line (`heldThrustClears`) is drawn again, up to LAYOUT_TRIES times.
+ *
  * Holes keep M = c^2 r / (2 G) (their drawn radius is their Schwarzschild radius, as in ./rules).
  * Drifting holes move sideways at a constant speed and turn back at the field's edges; they are moved
  * between steps (kinematic), so their pull follows them.
  */
-import { addBody, removeBody, setAttractor, setPosition, setVelocity, slotOf } from '@bitphysics/physics';
+import { addBody, type PhysicsWorld, removeBody, setAttractor, setPosition, setVelocity, slotOf, step } from '@bitphysics/physics';
 import {
   type BlackHoleEvent,
   type BlackHoleGame,
+  createPredictor,
   gravitationalConstant,
   LINE_Y,
   MAX_HOLES,
+  predictPath,
   resetShip,
+  SHIP_RADIUS,
   schwarzschildMass,
   setThrust,
   stepBlackHole,
+  type Thrust,
 } from './rules';
 
 /** What a level asks of the player. */
@@ -63,12 +71,12 @@ export interface LevelSpec {
    */
   readonly gate: number;
   /**
-   * Lay the holes as a slalom (level 1, three holes): one across the straight path up (within 0.3 of
-   * its radius of the start's x), then higher up two either side of that line, 3 to 3.6 m out, so the
-   * way round the first, on either side, leads under one of the pair: the ship weaves out and back
-   * through the middle.
+   * Lay the holes as a fork (level 1, three holes): one across the straight path up (within 0.3 of
+   * its radius of the start's x), and one on each 45-degree line up from the start (where holding an
+   * arrow up and one sideways flies), so every thrust held from the start falls in or leaves the
+   * field: the ship has to be steered into one of the two gaps beside the first hole.
    */
-  readonly slalom: boolean;
+  readonly fork: boolean;
 }
 
 /** Points for each hole on the field when the ship reaches the line. */
@@ -113,9 +121,9 @@ export const WALL_GAP = 0.5;
 const WALL_FILL_GAP = 0.4;
 
 /**
- * The spec of level `level`, one new difficulty at a time: level 1 a slalom of three small holes
- * (holding thrust up falls into the first; the way round it leads under one of the two above,
- * which leave a way through between them); level 2 a wall of holes across the
+ * The spec of level `level`, one new difficulty at a time: level 1 a fork of three small holes
+ * (one across the straight path up, one across each diagonal: steer into a gap beside the first);
+ * level 2 a wall of holes across the
  * field with one 9 m gap off to the side (fly across to it, then up through it); level 3 a narrower
  * gap (7 m) with a hole above it (measured with scripted players who fly across without braking: with
  * gaps of 7 and 5.5 m level 2 took 4.3 tries on average and level 3 5.1 to 5.8, half the fields never
@@ -135,7 +143,7 @@ export function levelSpec(level: number): LevelSpec {
     drift: number,
     fuel: number,
     gate = 0,
-    slalom = false,
+    fork = false,
   ): LevelSpec =>
     Object.freeze({
       level,
@@ -146,7 +154,7 @@ export function levelSpec(level: number): LevelSpec {
       drift,
       fuel,
       gate,
-      slalom,
+      fork,
     });
   switch (level) {
     case 1:
@@ -156,7 +164,7 @@ export function levelSpec(level: number): LevelSpec {
     case 3:
       return spec(1, [0.45, 0.55], 0, 1, 0, Infinity, 7);
     case 4:
-      return spec(3, [0.6, 1.1], 0, 2, 0, Infinity);
+      return spec(4, [0.6, 1.1], 0, 1, 0, Infinity);
     case 5:
       return spec(4, [0.6, 1.1], 0, 2, 0, Infinity);
     case 6:
@@ -273,6 +281,11 @@ export function levelMessage(spec: LevelSpec, holes: number): string {
   return parts.join(' ');
 }
 
+/**
+ * Lays out level `level` in `game`: the run reset for it (clock, fuel, falls), the ship parked at the
+ * start, then the holes (`layHoles`) drawn until no thrust held from the start clears the level
+ * (`heldThrustClears`), at most LAYOUT_TRIES times.
+ */
 function layLevel(game: BlackHoleGame, run: LevelRun, level: number): void {
   const spec = levelSpec(level);
   run.spec = spec;
@@ -280,6 +293,83 @@ function layLevel(game: BlackHoleGame, run: LevelRun, level: number): void {
   run.attemptStart = 0;
   run.fuelLeft = spec.fuel;
   run.fallsAtStart = game.falls;
+  run.parked = true;
+  resetShip(game);
+  // Drawn again while a thrust held from the start would clear it (the last draw stays if all do).
+  for (let tries = 1; ; tries++) {
+    layHoles(game, run, spec);
+    if (tries >= LAYOUT_TRIES || heldThrustClears(game, run) === null) break;
+  }
+  game.message = levelMessage(spec, game.holes.length);
+}
+
+/** Most layouts of a level drawn in search of one that no held thrust clears (`heldThrustClears`). */
+export const LAYOUT_TRIES = 30;
+
+/** How long a held thrust is followed by `heldThrustClears`, s (a held climb takes under 4 s). */
+const HELD_SECONDS = 12;
+
+/** Every thrust an arrow, or two arrows at right angles, give. */
+const HELD_THRUSTS: readonly Thrust[] = ['up', 'up-left', 'up-right', 'left', 'right', 'down', 'down-left', 'down-right'];
+
+/**
+ * The first thrust of an arrow, or of two arrows at right angles, that held from the start (the ship
+ * at rest there, its engine idle) and never changed reaches the line (y >= game.lineY) within
+ * HELD_SECONDS before it falls in (SHIP_RADIUS from a horizon) or leaves the field; null if none does.
+ * The ship flies in the predictor's copy of the field (./rules `createPredictor`: the same steps,
+ * forces and engine as the game) while the holes drift at `run.holeVx` as in `stepLevel`. The game
+ * itself is not changed.
+ */
+export function heldThrustClears(game: BlackHoleGame, run: LevelRun): Thrust | null {
+  const pred = createPredictor(game);
+  const w = pred.world,
+    P = w.components.Position,
+    O = w.components.PreviousPosition,
+    V = w.components.Velocity;
+  const one = new Float64Array(4);
+  const was = game.thrust;
+  try {
+    for (const t of HELD_THRUSTS) {
+      game.thrust = t;
+      // Copies the holes into the predictor (back where they were laid, after the last thrust's drift).
+      pred.version = -1;
+      predictPath(game, pred, one, 1);
+      const s = pred.ship;
+      P.x[s] = O.x[s] = game.start[0];
+      P.y[s] = O.y[s] = game.start[1];
+      V.x[s] = V.y[s] = 0;
+      pred.thrustVec[0] = pred.thrustVec[1] = 0;
+      const vx = run.holeVx.slice();
+      for (let k = 0; k < HELD_SECONDS / w.dt; k++) {
+        driftBodies(w, pred.holes, game.holeRadius, vx, game.field.width, w.dt);
+        step(w);
+        const x = P.x[s]!,
+          y = P.y[s]!;
+        if (y >= game.lineY) return t;
+        if (holeWithin(w, pred.holes, game.holeRadius, x, y) || x < 0 || x > game.field.width || y < 0) break;
+      }
+    }
+    return null;
+  } finally {
+    game.thrust = was;
+  }
+}
+
+/** Whether point (x, y), m, is within SHIP_RADIUS of the horizon of one of `holes` (radii `radius`, m) in `world`. */
+function holeWithin(world: PhysicsWorld, holes: readonly number[], radius: readonly number[], x: number, y: number): boolean {
+  const P = world.components.Position;
+  for (let i = 0; i < holes.length; i++) {
+    const h = holes[i]!;
+    const dx = x - P.x[slotOf(h)]!,
+      dy = y - P.y[slotOf(h)]!,
+      r = radius[i]! + SHIP_RADIUS;
+    if (dx * dx + dy * dy < r * r) return true;
+  }
+  return false;
+}
+
+/** Lays out a level's holes (see `layLevel`), after clearing the field. */
+function layHoles(game: BlackHoleGame, run: LevelRun, spec: LevelSpec): void {
   const world = game.world;
   clearHoles(game, run);
   const rng = game.rng;
@@ -290,7 +380,6 @@ function layLevel(game: BlackHoleGame, run: LevelRun, level: number): void {
   // The wall first (gate levels): its gap's centre, m, where the blockers go above it.
   const gateX = spec.gate > 0 ? layWall(game, run, spec) : game.start[0];
   const wallY = game.holes.length > 0 ? world.components.Position.y[slotOf(game.holes[0]!)]! : 0;
-  const slalomY = rng.range(14.5, 15.5);
   for (let k = 0; k < spec.holes; k++) {
     let bestX = 0,
       bestY = 0,
@@ -299,11 +388,14 @@ function layLevel(game: BlackHoleGame, run: LevelRun, level: number): void {
     for (let attempt = 0; attempt < 300; attempt++) {
       const r = rng.range(r0, r1);
       let x: number, y: number;
-      if (spec.slalom) {
-        // The slalom: the first hole across the straight path, the other two either side of it higher
-        // up (heights measured on the 22 m climb of the default field).
-        x = k === 0 ? game.start[0] + rng.range(-0.3, 0.3) * r : game.start[0] + (k === 1 ? -1 : 1) * rng.range(3, 3.6);
-        y = (k === 0 ? rng.range(7.5, 9.5) : slalomY + rng.range(-0.5, 0.5)) * s;
+      if (spec.fork) {
+        // The fork: the first hole across the straight path up, 6 to 7.5 m above the start (on the
+        // default field), the other two on the lines at 45 degrees, 7 to 8 m out and up (less on a
+        // narrow field, so a hole stays 2 m clear of the edge: a ship held on the diagonal would
+        // leave the field before it, but a hole's pull could bend it back).
+        const out = Math.min(rng.range(7, 8), game.field.width / 2 - 2 - r);
+        x = k === 0 ? game.start[0] + rng.range(-0.3, 0.3) * r : game.start[0] + (k === 1 ? -1 : 1) * out;
+        y = k === 0 ? game.start[1] + rng.range(6, 7.5) * s : game.start[1] + out + rng.range(-0.3, 0.3);
       } else if (k < spec.blockers && spec.gate > 0) {
         // Across the way up through the wall's gap: 6 to 7.5 m (on the default field) above the wall.
         x = gateX + rng.range(-0.5, 0.5) * r;
@@ -314,6 +406,12 @@ function layLevel(game: BlackHoleGame, run: LevelRun, level: number): void {
         x = game.start[0] + rng.range(-0.5, 0.5) * r;
         const [lo, hi] = spec.blockers === 1 ? [9, 15] : k === 0 ? [7.5, 10.5] : [14, 17];
         y = rng.range(lo * s, hi * s);
+      } else if (spec.gate === 0 && k < spec.blockers + 2) {
+        // The next two on the lines at 45 degrees up from the start, one each side, 5 m out or more
+        // (as far as the field allows, 2 m clear of its edge), so holding two arrows falls in.
+        const out = Math.max(4, Math.min(rng.range(5, 11), game.field.width / 2 - 2 - r, game.lineY - 4 - r - game.start[1]));
+        x = game.start[0] + (k === spec.blockers ? -1 : 1) * out;
+        y = game.start[1] + out + rng.range(-0.3, 0.3);
       } else {
         const W = game.field.width;
         x = rng.range(1.5 + r, W - 1.5 - r);
@@ -350,9 +448,6 @@ function layLevel(game: BlackHoleGame, run: LevelRun, level: number): void {
     run.holeVx.push(spec.drift * (rng.range(0, 1) < 0.5 ? -1 : 1));
   }
   game.version++;
-  game.message = levelMessage(spec, game.holes.length);
-  run.parked = true;
-  resetShip(game);
 }
 
 /**
@@ -444,30 +539,46 @@ function clearHoles(game: BlackHoleGame, run: LevelRun): void {
 /** Moves drifting holes by one step (dt s), turning them back at the field's edges. */
 function driftHoles(game: BlackHoleGame, run: LevelRun, dt: number): void {
   if (run.spec.drift === 0) return;
-  const P = game.world.components.Position;
+  driftBodies(game.world, game.holes, game.holeRadius, run.holeVx, game.field.width, dt);
+  game.version++;
+}
+
+/**
+ * Moves the bodies `holes` of `world` (horizon radii `radius`, m) sideways by `vx` (m/s, same order;
+ * a missing or zero speed stays put) for dt s, each turning back (its speed's sign flipped in `vx`)
+ * where its centre would come within 1.5 m plus its radius of the side of a field `width` m wide.
+ */
+function driftBodies(
+  world: PhysicsWorld,
+  holes: readonly number[],
+  radius: readonly number[],
+  vx: number[],
+  width: number,
+  dt: number,
+): void {
+  const P = world.components.Position;
   const at: [number, number] = [0, 0];
-  for (let i = 0; i < game.holes.length; i++) {
-    const h = game.holes[i]!,
-      r = game.holeRadius[i]!;
+  for (let i = 0; i < holes.length; i++) {
+    const h = holes[i]!,
+      r = radius[i]!;
     // Holes laid out by other means (the page's holes slider) have no speed: they stay put.
-    const vx = run.holeVx[i] ?? 0;
-    if (vx === 0) continue;
-    let x = P.x[slotOf(h)]! + vx * dt;
+    const v = vx[i] ?? 0;
+    if (v === 0) continue;
+    let x = P.x[slotOf(h)]! + v * dt;
     const lo = 1.5 + r,
-      hi = game.field.width - 1.5 - r;
+      hi = width - 1.5 - r;
     if (x < lo) {
       x = 2 * lo - x;
-      run.holeVx[i] = Math.abs(run.holeVx[i]!);
+      vx[i] = Math.abs(v);
     }
     if (x > hi) {
       x = 2 * hi - x;
-      run.holeVx[i] = -Math.abs(run.holeVx[i]!);
+      vx[i] = -Math.abs(v);
     }
     at[0] = x;
     at[1] = P.y[slotOf(h)]!;
-    setPosition(game.world, h, at);
+    setPosition(world, h, at);
   }
-  game.version++;
 }
 
 /**

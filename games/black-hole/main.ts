@@ -13,7 +13,8 @@
  * start (./replay.ts: every input is recorded at its step; the replay ends where the run was, bit for bit).
  * Touch: the four arrow buttons under the scene (hold to thrust, slide to steer; two fingers on two
  * arrows thrust diagonally); tap the message to restart.
- * Levels (./levels.ts): level 1 has one hole across the straight path, levels 2 and 3 a wall of holes
+ * Levels (./levels.ts): level 1 has a hole across the straight path and one across each diagonal
+ * (no arrow or two held from the start gets through on any level), levels 2 and 3 a wall of holes
  * with one gap off to the side (then a narrower one with a hole above it), later levels more and
  * bigger holes, drifting holes and a fuel limit; clearing a level shows a summary and a button over
  * the middle of the field, and waits for Enter or a tap; the best score is kept in the browser's
@@ -366,13 +367,16 @@ style.textContent = `
 .bh-status .bh-numbers { font: 600 15px ui-monospace, Menlo, Consolas, monospace; }
 .bh-status .bh-message { color: #ffd166; }
 /* On a phone a message wraps to one or two lines: two are kept, so the scene under it does not jump. */
-@media (max-width: 600px) { .bh-status .bh-message { min-height: 2.8em; } }
+@media (max-width: 600px) { .bh-status .bh-message { min-height: 2.8em; } .bh-status .bh-numbers { font-size: 13px; } }
 .bh-status.over .bh-message { color: #ff8c8c; cursor: pointer; }
 .bh-status.cleared .bh-message { color: #7ee787; cursor: pointer; font-weight: 600; }
 .bh-pad button { font-size: 22px; min-width: 56px; }
 /* The next-level / play-again button: over the middle of the field, which is empty between levels,
    not at the stage's foot, where it covered the start pad and the ship waiting on it. */
 body .bp-touchbar.bp-action { top: 40%; bottom: auto; }
+/* The touch hint at the top of the stage, over the space above the finish line: at its foot (the
+   kit's place) it covered the ship waiting at the start and the path up to the first hole. */
+body .bp-touch-hint { top: 6px; bottom: auto; }
 @media (pointer: coarse) {
   .bp-touchbar.bh-pad { flex: 1 1 100%; gap: 8px; padding: 2px 8px; }
   .bp-touchbar.bh-pad button { flex: 1 1 0; max-width: 86px; min-height: 62px; font-size: 28px; border-radius: 14px; }
@@ -408,6 +412,8 @@ function padDirAt(x: number, y: number): Arrow | null {
   return null;
 }
 pad.element.addEventListener('pointerdown', (e) => {
+  // The first thrust shows the player has found the controls: the touch hint goes.
+  document.querySelector('[data-hud="touch-hint"]')?.classList.add('bp-gone');
   const dir = padDirAt(e.clientX, e.clientY);
   if (!dir || padPointers.has(e.pointerId)) return;
   padPointers.set(e.pointerId, dir);
@@ -475,7 +481,8 @@ function updateStatus(force = false): void {
   }
   const lives = `Lives ${'♥'.repeat(bh.lives)}${'♡'.repeat(Math.max(0, bh.params.lives - bh.lives))}`;
   const n = run
-    ? `Level ${run.spec.level}   ${lives}   Score ${bh.score}   Best ${Math.max(best, bh.score)}` +
+    ? // The holes on the field (none while the next level waits to begin).
+      `Level ${run.spec.level}   ${lives}   ${run.waiting ? '' : `Holes ${bh.holes.length}   `}Score ${bh.score}   Best ${Math.max(best, bh.score)}` +
       (Number.isFinite(run.fuelLeft) ? `   Fuel ${run.fuelLeft.toFixed(1)} s` : '')
     : `${lives}   Score ${bh.score} (1 a hole)   Holes ${bh.holes.length}`;
   const playing = replay.player ? `   ▶ Replay ${replay.player.played} steps` : '';
@@ -761,8 +768,8 @@ function levelNews(spec: LevelRun['spec']): string {
       ? spec.blockers > 0
         ? 'through the gap, round the hole'
         : 'find the gap in the wall'
-      : spec.slalom
-        ? 'weave between the holes'
+      : spec.fork
+        ? 'steer between the holes'
         : `${n} ${n === 1 ? 'hole' : 'holes'}`;
   const extra = [spec.drift > 0 ? 'drifting' : '', Number.isFinite(spec.fuel) ? `${spec.fuel} s of fuel` : ''].filter(Boolean);
   return `${holes}${extra.length ? `, ${extra.join(', ')}` : ''}\n${POINTS_PER_HOLE * n} points at the line`;

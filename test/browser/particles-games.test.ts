@@ -638,7 +638,7 @@ describe('black hole levels', () => {
     });
     expect(controls.level).toBe('1');
     expect('holes' in controls).toBe(false);
-    expect(await g.page.locator('[data-hud="numbers"]').textContent()).toMatch(/Level 1\s+Lives ♥♥♥\s+Score 0\s+Best \d+/);
+    expect(await g.page.locator('[data-hud="numbers"]').textContent()).toMatch(/Level 1\s+Lives ♥♥♥\s+Holes 3\s+Score 0\s+Best \d+/);
     // The hole is drawn (its horizon is black with a glow: many colours in the canvas).
     expect(await g.canvasColors()).toBeGreaterThan(16);
     expect(g.errors).toEqual([]);
