@@ -3,7 +3,8 @@
 // headless. For each level the earlier cuts are made at fixed times at their ropes' middles, and the
 // last cut is swept over a range of times, made at a tenth, half and nine tenths of the way down its
 // rope (a swipe may cross it anywhere). Prints, per place, one character a time: the stars won
-// (0-3), '.' lost, '?' undecided after 14 s; then the windows won at the middle place, the share of
+// (0-3), '.' lost, '?' undecided after 14 s; then the windows won at the middle place (and their
+// width in all, each time won counting its step), the share of
 // times at which the three places agree on win or loss, and the times won or lost unlike both their
 // neighbours (a lottery for the player). Takes a minute or two a level.
 import { importSource } from './build.mjs';
@@ -26,7 +27,7 @@ for (const n of levels)
  */
 const PLANS = wide
   ? [
-      { before: [], last: 0, times: [1.0, 2.3, 0.04], push: 0 },
+      { before: [], last: 0, times: [0.8, 3.0, 0.04], push: 0 },
       { before: [[0.5, 0]], last: 1, times: [0.6, 3.2, 0.04], push: 0 },
       { before: [], last: 0, times: [0.3, 3.5, 0.04], push: 0 },
       {
@@ -89,12 +90,14 @@ for (const n of levels.length ? levels : [1, 2, 3, 4, 5]) {
   for (const [i, place] of PLACES.entries()) console.log(`  at ${place} of its rope: ${rows[i]}`);
   const won = (c) => c >= '0' && c <= '3';
   const windows = [];
+  let width = 0;
   let open = -1;
   rows[1].split('').forEach((c, i) => {
     if (won(c) && open < 0) open = i;
     if ((!won(c) || i === times.length - 1) && open >= 0) {
       const end = won(c) ? i : i - 1;
       windows.push(`${times[open]}-${times[end]} s`);
+      width += times[end] - times[open] + dt;
       open = -1;
     }
   });
@@ -102,6 +105,6 @@ for (const n of levels.length ? levels : [1, 2, 3, 4, 5]) {
   let lone = 0;
   for (const r of rows) for (let i = 1; i + 1 < r.length; i++) if (won(r[i]) !== won(r[i - 1]) && won(r[i]) !== won(r[i + 1])) lone++;
   console.log(
-    `  won (middle place) ${windows.join(', ') || 'never'}; places agree at ${agree} of ${times.length} times (${Math.round((100 * agree) / times.length)} %); lone outcomes ${lone}`,
+    `  won (middle place) ${windows.join(', ') || 'never'} (${width.toFixed(2)} s in all); places agree at ${agree} of ${times.length} times (${Math.round((100 * agree) / times.length)} %); lone outcomes ${lone}`,
   );
 }

@@ -504,11 +504,15 @@ for (let i = 0; i < 3; i++) {
   starRow.addChild(star);
 }
 renderer.root.addChild(starRow);
-/** Shows the star row centred at (x, y) px with `got` of `of` stars gold; hides it when `of` is 0. */
-function showStars(x: number, y: number, got: number, of: number, alpha: number): void {
+/**
+ * Shows the star row centred at (x, y) px with `got` of `of` stars gold, drawn `scale` times their
+ * size (> 0); hides it when `of` is 0.
+ */
+function showStars(x: number, y: number, got: number, of: number, alpha: number, scale = 1): void {
   starsShown = of > 0 && alpha > 0 ? [got, of] : [0, 0];
   starRow.visible = of > 0 && alpha > 0;
   starRow.position.set(x, y);
+  starRow.scale.set(scale);
   starRow.alpha = alpha;
   starRow.children.forEach((child, i) => {
     const star = child as Text;
@@ -635,6 +639,28 @@ function placeNext(): void {
   }
 }
 
+/** The miss card's star row is drawn this times STAR_SIZE. */
+const MISS_STAR_SCALE = 0.75;
+/** The miss card as drawn: left, top, width, height, CSS px on the canvas; null while none is shown. */
+let missCard: [number, number, number, number] | null = null;
+/**
+ * The top (px) of the miss card `h` px tall: 8 px under the top of the canvas, over the beam, unless
+ * the ball or a star not caught lies in its rows there; then just under the lowest of those (or, if
+ * that leaves no room on the canvas, at the top after all).
+ */
+function missCardTop(h: number): number {
+  const cam = renderer.camera;
+  const e = slotOf(scene.ball),
+    P = shell.world.components.Position;
+  // Each as its screen rows (centre y, reach px), whatever its x: the card spans the scene's middle.
+  const things = [[P.y[e]!, 2 * BALL_RADIUS], ...scene.level.stars.flatMap(([, y], i) => (game.caught[i] ? [] : [[y, STAR_GLOW]]))].map(
+    ([y, r]) => [cam.toScreenY(y!), cam.toScreenLength(r!)] as const,
+  );
+  let top = 8;
+  for (let k = 0; k < things.length; k++) for (const [y, r] of things) if (y + r > top && y - r < top + h) top = y + r + 6;
+  return top + h <= cam.height ? top : 8;
+}
+
 /** The banner in the middle of the scene: the level's name at its start, then the outcome. */
 function drawBanner(now: number): void {
   const cam = renderer.camera;
@@ -653,8 +679,9 @@ function drawBanner(now: number): void {
   }
   showNext(false);
   if (game.outcome === 'lost') {
-    // Held until a tap or a key (see MISS_TAP_AFTER): the scene dimmed red, the ball ringed, the
-    // banner large on a dark card with the stars this try caught.
+    // Held until a tap or a key (see MISS_TAP_AFTER): the scene dimmed red, the ball ringed, and a
+    // small card at the top of the scene (over the beam) with the stars this try caught beside the
+    // text, so the stars, the ball and the basket stay in sight (a card mid-scene covered them).
     const since = now - lostAt;
     const fade = Math.min(1, since / 0.3);
     overlay.rect(0, 0, cam.width, cam.height).fill({ color: 0x5a0b0b, alpha: 0.38 * fade });
@@ -664,16 +691,23 @@ function drawBanner(now: number): void {
       by = cam.toScreenY(P.y[e]!),
       r = cam.toScreenLength(BALL_RADIUS);
     overlay.circle(bx, by, r * (1.7 + 0.15 * Math.sin(since * 6))).stroke({ width: 4, color: 0xff6b5a, alpha: fade });
-    setBanner(`Missed!${MISS_HINT}`, 0xffb4a2, 1, cam.width < 500 ? 34 : 40);
-    const w = banner.width + 48,
-      h = banner.height + STAR_SIZE * 1.3 + 28;
+    setBanner(`Missed!${MISS_HINT}`, 0xffb4a2, 1, cam.width < 500 ? 22 : 28);
+    const n = scene.level.stars.length,
+      rowW = n * STAR_SIZE * MISS_STAR_SCALE * 1.1;
+    const w = banner.width + 16 + rowW + 40,
+      h = banner.height + 20;
+    missCard = [(cam.width - w) / 2, missCardTop(h), w, h];
+    const [x0, y0] = missCard;
+    banner.x = x0 + 20 + banner.width / 2;
+    banner.y = y0 + h / 2;
     overlay
-      .roundRect(banner.x - w / 2, banner.y - banner.height / 2 - 14, w, h, 16)
-      .fill({ color: 0x101828, alpha: 0.82 * fade })
+      .roundRect(x0, y0, w, h, 14)
+      .fill({ color: 0x101828, alpha: 0.85 * fade })
       .stroke({ width: 3, color: 0xff6b5a, alpha: fade });
-    showStars(banner.x, starsY, game.stars(), scene.level.stars.length, 1);
+    showStars(x0 + w - 20 - rowW / 2, banner.y, game.stars(), n, 1, MISS_STAR_SCALE);
     return;
   }
+  missCard = null;
   showStars(0, 0, 0, 0, 0);
   const t = shell.world.time;
   setBanner(`Level ${params.level}: ${scene.level.name}`, 0xffffff, t < 1 ? 1 : Math.max(0, 1 - (t - 1) * 2));
@@ -690,10 +724,10 @@ function setBanner(text: string, color: number, alpha: number, size = 30): void 
 function updateStatus(): void {
   const total = best.reduce((s, b) => s + Math.max(0, b), 0);
   const cleared = best.filter((b) => b >= 0).length;
-  // On a phone the count goes in front, short ("1/5 · ★ 2: "), no longer than "Level 1 of 5: ", so a
-  // clear does not grow the status by a line and push the scene down.
+  // On a phone the count goes in front, short ("Level 2/5 · ★ 2 — "), and every hint leaves room
+  // for it in two lines, so a clear does not grow the status by a line and push the scene down.
   if (pageLayout().compact()) {
-    status.set(`${params.level}/${LEVELS.length}${cleared > 0 ? ` · ★ ${total}` : ''}: ${scene.level.hint}`);
+    status.set(`Level ${params.level}/${LEVELS.length}${cleared > 0 ? ` · ★ ${total}` : ''} — ${scene.level.hint}`);
     return;
   }
   const tail = cleared > 0 ? ` · cleared ${cleared} of ${LEVELS.length}, ★ ${total}` : '';
@@ -728,6 +762,8 @@ shell.expose({
     text: banner.visible ? banner.text : '',
     stars: [...starsShown],
     box: [banner.x - banner.width / 2, banner.y - banner.height / 2, banner.width, banner.height],
+    /** The miss card round the banner and its star row (left, top, width, height, px), or null. */
+    card: missCard ? [...missCard] : null,
   }),
   /** The level's stars (x, y, m) and whether each is caught. */
   starsAt: () => scene.level.stars.map(([x, y], i) => ({ x, y, caught: game.caught[i]! })),

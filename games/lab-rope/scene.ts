@@ -71,7 +71,7 @@ const VIEW = { minX: -2.9, minY: -0.35, maxX: 2.9, maxY: 9.1 } as const;
 export const LEVELS: readonly Level[] = Object.freeze([
   {
     name: 'Let go',
-    hint: 'Swipe across the rope to cut it. A cut ball flies on the way it swings: time it to land in the basket.',
+    hint: 'Swipe across the rope to cut it. Time the cut so the ball falls into the basket.',
     anchors: [[0, 8.4]],
     ball: [-2, 6.7],
     // The basket stands away from the swing's ends and from the wall, 1.3 m wide: a first level a
@@ -92,7 +92,7 @@ export const LEVELS: readonly Level[] = Object.freeze([
   },
   {
     name: 'Two ropes',
-    hint: 'Two ropes hold the ball. Which one goes first?',
+    hint: 'Two ropes: which goes first? Then wait for the swing to cut the other.',
     anchors: [
       [-2.2, 8.4],
       [1, 8.4],
@@ -179,16 +179,19 @@ export const WIDE_LEVELS: readonly Level[] = Object.freeze([
     hint: LEVELS[0]!.hint,
     anchors: [[-1.2, 6.3]],
     ball: [-4.2, 4.8],
-    // Where the swing throws the ball farthest (a cut 1.5 s in): whether it lands changes least
-    // with the cut's time there (won 1.32-1.72 s, 3 stars 1.44-1.68 s). The basket's right wall
-    // stands 0.2 m from the room's, too near for the ball to drop between them.
-    basket: [4.35, 0],
-    basketWidth: 1.1,
+    // Under the right end of the swing, where the ball slows, stops and turns back: a cut from just
+    // after the top of the swing (2.0 s) to 0.55 s later drops it in, and so does one as it passes
+    // the bottom (1.05-1.15 s). The three stars hang along the drop from the very top (3 stars
+    // 2.0-2.15 s); a cut a moment before the top throws the ball onto the basket's far rim.
+    // (The basket stood where the swing throws farthest, 4.35 m: won only 1.32-1.72 s, on the
+    // upswing; a stranger cut four times at the swing's end and never landed it.)
+    basket: [1.5, 0],
+    basketWidth: 1.5,
     basketDepth: 0.75,
     stars: [
-      [2.67, 3.3],
-      [3.43, 2.8],
-      [4.18, 1.91],
+      [2.0, 3.25],
+      [2.04, 2.4],
+      [2.07, 1.55],
     ],
     view: WIDE_VIEW,
     room: WIDE_ROOM_HALF_WIDTH,

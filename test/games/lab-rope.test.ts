@@ -159,8 +159,9 @@ describe('lab-rope levels', () => {
   it("the wide room's levels (a desktop window) are won by their cuts and lost by wrong ones", () => {
     // Found as LEVELS' were (scripts/lab-rope-cuts.mjs --wide): the middle of each window, 3 stars.
     const cases: { win: (readonly [number, number])[]; lose: (readonly [number, number])[]; push?: number; losePush?: number }[] = [
-      // 1: won 1.32-1.72 s (3 stars 1.44-1.68 s); a cut on the way down drops it short.
-      { win: [[1.52, 0]], lose: [[1.0, 0]] },
+      // 1: won from the top of the swing on, 2.0-2.55 s (3 stars 2.0-2.15 s), the ball dropping
+      // into the basket under it; a cut as the ball rises fast throws it over the basket to the wall.
+      { win: [[2.08, 0]], lose: [[1.5, 0]] },
       // 2: the left rope, then the right one 1.1-1.4 s later; the other way round never wins.
       {
         win: [
@@ -194,6 +195,16 @@ describe('lab-rope levels', () => {
       expect(play(i, c.win, c.push ?? 0, 0.5, WIDE_LEVELS), `wide level ${i + 1}`).toMatchObject({ outcome: 'won', stars: 3 });
       expect(play(i, c.lose, c.losePush ?? 0, 0.5, WIDE_LEVELS).outcome, `wide level ${i + 1}`).toBe('lost');
     });
+  });
+
+  it("the wide room's first level is won by timing alone, in a window half a second wide", () => {
+    // A stranger at a desktop window cut level 1 four times and never landed it: it was won only
+    // 1.32-1.72 s in, as the ball rose fast. Now a cut anywhere from the top of the swing (2.0 s)
+    // to 0.55 s on drops the ball in (scripts/lab-rope-cuts.mjs --wide 1); the stars ask for the top.
+    const at = [2.04, 2.28, 2.52].map((t) => play(0, [[t, 0]], 0, 0.5, WIDE_LEVELS));
+    for (const r of at) expect(r.outcome).toBe('won');
+    expect(at[0]!.stars).toBe(3);
+    expect(at[2]!.stars).toBeLessThan(3);
   });
 
   it('no level gives a star before the player acts: 8 s of swinging untouched catches none', () => {
