@@ -26,20 +26,21 @@
  * Drifting holes move sideways at a constant speed and turn back at the field's edges; they are moved
  * between steps (kinematic), so their pull follows them.
  */
-import { addBody, type PhysicsWorld, removeBody, setAttractor, setPosition, setVelocity, slotOf, step } from '@bitphysics/physics';
+import { addBody, type PhysicsWorld, removeBody, setAttractor, setPosition, setVelocity, slotOf } from '@bitphysics/physics';
 import {
   type BlackHoleEvent,
   type BlackHoleGame,
-  createPredictor,
   gravitationalConstant,
   LINE_Y,
   MAX_HOLES,
-  predictPath,
+  rampThrust,
   resetShip,
+  SHIP_MASS,
   SHIP_RADIUS,
   schwarzschildMass,
   setThrust,
   stepBlackHole,
+  THRUST_DIRECTION,
   type Thrust,
 } from './rules';
 
@@ -306,7 +307,7 @@ function layLevel(game: BlackHoleGame, run: LevelRun, level: number): void {
 /** Most layouts of a level drawn in search of one that no held thrust clears (`heldThrustClears`). */
 export const LAYOUT_TRIES = 30;
 
-/** How long a held thrust is followed by `heldThrustClears`, s (a held climb takes under 4 s). */
+/** How long a held thrust is followed by `heldFlight`, s (a held climb takes under 4 s). */
 const HELD_SECONDS = 12;
 
 /** Every thrust an arrow, or two arrows at right angles, give. */
@@ -314,58 +315,121 @@ const HELD_THRUSTS: readonly Thrust[] = ['up', 'up-left', 'up-right', 'left', 'r
 
 /**
  * The first thrust of an arrow, or of two arrows at right angles, that held from the start (the ship
- * at rest there, its engine idle) and never changed reaches the line (y >= game.lineY) within
- * HELD_SECONDS before it falls in (SHIP_RADIUS from a horizon) or leaves the field; null if none does.
- * The ship flies in the predictor's copy of the field (./rules `createPredictor`: the same steps,
- * forces and engine as the game) while the holes drift at `run.holeVx` as in `stepLevel`. The game
- * itself is not changed.
+ * at rest there, its engine idle) and never changed reaches the line within HELD_SECONDS before it
+ * falls in or leaves the field (`heldFlight` says 'cleared'); null if none does. The game itself is
+ * not changed.
  */
 export function heldThrustClears(game: BlackHoleGame, run: LevelRun): Thrust | null {
-  const pred = createPredictor(game);
-  const w = pred.world,
-    P = w.components.Position,
-    O = w.components.PreviousPosition,
-    V = w.components.Velocity;
-  const one = new Float64Array(4);
-  const was = game.thrust;
-  try {
-    for (const t of HELD_THRUSTS) {
-      game.thrust = t;
-      // Copies the holes into the predictor (back where they were laid, after the last thrust's drift).
-      pred.version = -1;
-      predictPath(game, pred, one, 1);
-      const s = pred.ship;
-      P.x[s] = O.x[s] = game.start[0];
-      P.y[s] = O.y[s] = game.start[1];
-      V.x[s] = V.y[s] = 0;
-      pred.thrustVec[0] = pred.thrustVec[1] = 0;
-      const vx = run.holeVx.slice();
-      for (let k = 0; k < HELD_SECONDS / w.dt; k++) {
-        driftBodies(w, pred.holes, game.holeRadius, vx, game.field.width, w.dt);
-        step(w);
-        const x = P.x[s]!,
-          y = P.y[s]!;
-        if (y >= game.lineY) return t;
-        if (holeWithin(w, pred.holes, game.holeRadius, x, y) || x < 0 || x > game.field.width || y < 0) break;
-      }
-    }
-    return null;
-  } finally {
-    game.thrust = was;
-  }
+  for (const t of HELD_THRUSTS) if (heldFlight(game, run, t).end === 'cleared') return t;
+  return null;
 }
 
-/** Whether point (x, y), m, is within SHIP_RADIUS of the horizon of one of `holes` (radii `radius`, m) in `world`. */
-function holeWithin(world: PhysicsWorld, holes: readonly number[], radius: readonly number[], x: number, y: number): boolean {
-  const P = world.components.Position;
-  for (let i = 0; i < holes.length; i++) {
-    const h = holes[i]!;
-    const dx = x - P.x[slotOf(h)]!,
-      dy = y - P.y[slotOf(h)]!,
-      r = radius[i]! + SHIP_RADIUS;
-    if (dx * dx + dy * dy < r * r) return true;
+/** How a held flight (`heldFlight`) ended, after how many steps, and where the ship was then (m). */
+export interface HeldFlight {
+  /** 'cleared': reached the line; 'fell': within SHIP_RADIUS of a horizon; 'left': left the field; 'timeout': HELD_SECONDS passed. */
+  readonly end: 'cleared' | 'fell' | 'left' | 'timeout';
+  /** Steps flown (of game.world.dt each), integer >= 1. */
+  readonly steps: number;
+  /** The ship's position after the last step, m. */
+  readonly x: number;
+  readonly y: number;
+}
+
+/**
+ * Flies the ship from the start (at rest, its engine idle) with `thrust` held for at most HELD_SECONDS
+ * in steps of game.world.dt, the holes drifting at `run.holeVx` (a copy) as `stepLevel` moves them,
+ * and stops after the first step that ends at or above the line (y >= game.lineY: 'cleared'), within
+ * SHIP_RADIUS of a horizon ('fell'), or outside the field (x < 0, x > width or y < 0: 'left').
+ *
+ * The flight is plain arithmetic on a few numbers, not a physics world (whose step runs every stage
+ * and system of the engine whatever the world holds, while a layout check flies up to 8 x 720 steps
+ * for each of up to LAYOUT_TRIES layouts, all in the frame a level starts). Each step is the game world's
+ * step for the ship, operation for operation: the force starts at 0, each hole's attractor pull
+ * -G M m d / |d|^3 (d from the hole to the ship; no softening) is added in the holes' order, then the
+ * engine's m a (`rampThrust`, as the game's thrust law), then semi-implicit Euler moves it
+ * (v += F / m dt, then x += v dt; the world has no uniform gravity and one substep). The game's world
+ * sums the pulls in its own order of the holes, so the two paths agree to rounding
+ * (test/games/black-hole-levels.test.ts flies them side by side).
+ *
+ * `path`, when given, receives the ship's x, y after each step (as many steps as it holds).
+ * @throws RangeError unless the game's world steps as assumed (semi-implicit Euler, one substep).
+ */
+export function heldFlight(game: BlackHoleGame, run: LevelRun, thrust: Thrust, path?: Float64Array): HeldFlight {
+  const world = game.world;
+  if (world.integrator !== 'semi-implicit-euler' || world.substeps !== 1)
+    throw new RangeError(
+      `heldFlight: the game's world must step by semi-implicit Euler in one substep, got ${world.integrator} in ${world.substeps}`,
+    );
+  const n = game.holes.length,
+    P = world.components.Position;
+  const hx = new Float64Array(n),
+    hy = new Float64Array(n),
+    gm = new Float64Array(n),
+    reach = new Float64Array(n);
+  const G = gravitationalConstant(game);
+  for (let i = 0; i < n; i++) {
+    const h = slotOf(game.holes[i]!);
+    hx[i] = P.x[h]!;
+    hy[i] = P.y[h]!;
+    gm[i] = G * game.holeMass[i]!;
+    reach[i] = game.holeRadius[i]! + SHIP_RADIUS;
   }
-  return false;
+  const vxHoles = run.holeVx.slice();
+  const dt = world.dt,
+    a = game.params.thrust,
+    d = THRUST_DIRECTION[game.over ? 'none' : thrust];
+  const tx = a * d[0],
+    ty = a * d[1];
+  const engine: [number, number] = [0, 0];
+  const width = game.field.width,
+    lineY = game.lineY;
+  const invMass = 1 / SHIP_MASS;
+  let x = game.start[0],
+    y = game.start[1],
+    vx = 0,
+    vy = 0;
+  const steps = HELD_SECONDS / dt;
+  let k = 0;
+  while (k < steps) {
+    for (let i = 0; i < n; i++) hx[i] = driftedX(hx[i]!, i, game.holeRadius[i]!, vxHoles, width, dt);
+    // The forces stage: the holes' pull, then the engine.
+    let fx = 0,
+      fy = 0;
+    for (let i = 0; i < n; i++) {
+      const dx = x - hx[i]!,
+        dy = y - hy[i]!;
+      const r2 = dx * dx + dy * dy;
+      if (r2 === 0) continue;
+      const f = (-gm[i]! * SHIP_MASS) / (r2 * Math.sqrt(r2));
+      fx = fx + f * dx;
+      fy = fy + f * dy;
+    }
+    rampThrust(engine, tx, ty, a, dt);
+    if (engine[0] !== 0 || engine[1] !== 0) {
+      fx = fx + SHIP_MASS * engine[0];
+      fy = fy + SHIP_MASS * engine[1];
+    }
+    // The integrate stage.
+    const w = invMass * dt;
+    vx = vx + fx * w;
+    vy = vy + fy * w;
+    x = x + vx * dt;
+    y = y + vy * dt;
+    if (path && 2 * k + 1 < path.length) {
+      path[2 * k] = x;
+      path[2 * k + 1] = y;
+    }
+    k++;
+    if (y >= lineY) return { end: 'cleared', steps: k, x, y };
+    for (let i = 0; i < n; i++) {
+      const dx = x - hx[i]!,
+        dy = y - hy[i]!,
+        r = reach[i]!;
+      if (dx * dx + dy * dy < r * r) return { end: 'fell', steps: k, x, y };
+    }
+    if (x < 0 || x > width || y < 0) return { end: 'left', steps: k, x, y };
+  }
+  return { end: 'timeout', steps: k, x, y };
 }
 
 /** Lays out a level's holes (see `layLevel`), after clearing the field. */
@@ -545,8 +609,7 @@ function driftHoles(game: BlackHoleGame, run: LevelRun, dt: number): void {
 
 /**
  * Moves the bodies `holes` of `world` (horizon radii `radius`, m) sideways by `vx` (m/s, same order;
- * a missing or zero speed stays put) for dt s, each turning back (its speed's sign flipped in `vx`)
- * where its centre would come within 1.5 m plus its radius of the side of a field `width` m wide.
+ * a missing or zero speed stays put) for dt s, each as `driftedX` says.
  */
 function driftBodies(
   world: PhysicsWorld,
@@ -559,26 +622,35 @@ function driftBodies(
   const P = world.components.Position;
   const at: [number, number] = [0, 0];
   for (let i = 0; i < holes.length; i++) {
-    const h = holes[i]!,
-      r = radius[i]!;
+    const h = holes[i]!;
     // Holes laid out by other means (the page's holes slider) have no speed: they stay put.
-    const v = vx[i] ?? 0;
-    if (v === 0) continue;
-    let x = P.x[slotOf(h)]! + v * dt;
-    const lo = 1.5 + r,
-      hi = width - 1.5 - r;
-    if (x < lo) {
-      x = 2 * lo - x;
-      vx[i] = Math.abs(v);
-    }
-    if (x > hi) {
-      x = 2 * hi - x;
-      vx[i] = -Math.abs(v);
-    }
-    at[0] = x;
+    if ((vx[i] ?? 0) === 0) continue;
+    at[0] = driftedX(P.x[slotOf(h)]!, i, radius[i]!, vx, width, dt);
     at[1] = P.y[slotOf(h)]!;
     setPosition(world, h, at);
   }
+}
+
+/**
+ * Where hole `i` (centre at x, m; horizon radius r, m) is dt s later, moving sideways at vx[i] m/s
+ * (missing or 0: it stays put): it turns back (the sign of vx[i] flipped) where its centre would come
+ * within 1.5 m plus r of the side of a field `width` m wide.
+ */
+function driftedX(x: number, i: number, r: number, vx: number[], width: number, dt: number): number {
+  const v = vx[i] ?? 0;
+  if (v === 0) return x;
+  let at = x + v * dt;
+  const lo = 1.5 + r,
+    hi = width - 1.5 - r;
+  if (at < lo) {
+    at = 2 * lo - at;
+    vx[i] = Math.abs(v);
+  }
+  if (at > hi) {
+    at = 2 * hi - at;
+    vx[i] = -Math.abs(v);
+  }
+  return at;
 }
 
 /**

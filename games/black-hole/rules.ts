@@ -107,7 +107,7 @@ export type Arrow = 'up' | 'down' | 'left' | 'right';
  * rather than add a second engine. That keeps the acceleration `thrust` m/s^2 whatever is held, and
  * with it the levels' tuning, which measures the holes' pull against the thrust (./levels.ts).
  */
-const DIRS: Record<Thrust, readonly [number, number]> = {
+export const THRUST_DIRECTION: Readonly<Record<Thrust, readonly [number, number]>> = Object.freeze({
   none: [0, 0],
   up: [0, 1],
   down: [0, -1],
@@ -117,7 +117,7 @@ const DIRS: Record<Thrust, readonly [number, number]> = {
   'up-right': [Math.SQRT1_2, Math.SQRT1_2],
   'down-left': [-Math.SQRT1_2, -Math.SQRT1_2],
   'down-right': [Math.SQRT1_2, -Math.SQRT1_2],
-};
+});
 
 /**
  * The thrust of the arrows held, `held` in the order they were pressed (oldest first): the latest of
@@ -316,7 +316,7 @@ export function rampThrust(vec: [number, number], tx: number, ty: number, full: 
  */
 function thrustLaw(game: BlackHoleGame, ship: number, engine: { readonly thrustVec: [number, number] }): (world: PhysicsWorld) => void {
   return (world) => {
-    const d = DIRS[game.over ? 'none' : game.thrust];
+    const d = THRUST_DIRECTION[game.over ? 'none' : game.thrust];
     const a = game.params.thrust;
     const v = engine.thrustVec;
     rampThrust(v, a * d[0], a * d[1], a, world.dt);
@@ -469,7 +469,7 @@ function updateHorizons(game: BlackHoleGame): void {
  * @throws RangeError on an unknown direction.
  */
 export function setThrust(game: BlackHoleGame, thrust: Thrust): void {
-  check(thrust in DIRS, `setThrust: thrust must be one of ${Object.keys(DIRS).join(', ')}, got ${String(thrust)}`);
+  check(thrust in THRUST_DIRECTION, `setThrust: thrust must be one of ${Object.keys(THRUST_DIRECTION).join(', ')}, got ${String(thrust)}`);
   const t = game.over ? 'none' : thrust;
   game.thrust = t;
   const world = game.world;
@@ -478,7 +478,7 @@ export function setThrust(game: BlackHoleGame, thrust: Thrust): void {
   if (on) {
     // The physics API has no setter for an emitter's direction; its unit vector is component data.
     const E = world.components.Emitter,
-      d = DIRS[t];
+      d = THRUST_DIRECTION[t];
     E.dirX[slotOf(game.ship)] = -d[0];
     E.dirY[slotOf(game.ship)] = -d[1];
   }

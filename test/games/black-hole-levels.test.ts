@@ -7,12 +7,13 @@
  * and a summary and lays out the next one.
  */
 
-import { slotOf } from '@bitphysics/physics';
+import { setEmitterEnabled, slotOf } from '@bitphysics/physics';
 import { describe, expect, test } from 'vitest';
 import {
   BONUS_SECONDS,
   beginLevel,
   canThrust,
+  heldFlight,
   heldThrustClears,
   type LevelRun,
   levelPoints,
@@ -179,6 +180,57 @@ describe('levels', () => {
     g.version++;
     expect(heldThrustClears(g, run)).toBe('up');
   }, 120_000);
+
+  test("a held flight (the layout check's) is the game's own flight: the same path, ended by the same event", () => {
+    // heldFlight integrates the ship without a physics world; the game steps its world. Every held
+    // thrust on a level of each kind (the fork, a wall, drifting holes, a fuel limit; drifting holes
+    // on the phone's narrower field too), and a field the straight climb clears: the paths agree to 1e-9 m a step (they are the same
+    // operations; only the order in which the world sums the holes' pulls could differ, by rounding),
+    // and the game ends the flight at the same step with the same event, or falls in earlier (the
+    // game tests the ship's whole step against a horizon, the check its end point: the check never
+    // misses a clear the game makes).
+    const path = new Float64Array(2 * 1000);
+    const ends = new Set<string>();
+    const flyBoth = (g: BlackHoleGame, run: LevelRun, t: Thrust, where: string) => {
+      const f = heldFlight(g, run, t, path);
+      ends.add(f.end);
+      setThrust(g, t);
+      // The exhaust's particles pull nothing; off, the game's steps cost far less.
+      setEmitterEnabled(g.world, g.ship, false);
+      const P = g.world.components.Position,
+        s = slotOf(g.ship);
+      let e: string = 'none',
+        k = 0;
+      for (; k < f.steps; k++) {
+        e = stepLevel(g, run);
+        if (e !== 'none') break;
+        expect(Math.abs(P.x[s]! - path[2 * k]!), where).toBeLessThanOrEqual(1e-9);
+        expect(Math.abs(P.y[s]! - path[2 * k + 1]!), where).toBeLessThanOrEqual(1e-9);
+      }
+      if (e === 'fell' && k + 1 < f.steps) return;
+      expect([e, k + 1], where).toEqual([{ cleared: 'cleared', fell: 'fell', left: 'lost', timeout: 'none' }[f.end], f.steps]);
+    };
+    for (const [field, levels] of [
+      [FIELD, [1, 2, 6, 8]],
+      [{ width: 20, height: 30 }, [6]],
+    ] as const)
+      for (const level of levels)
+        for (const t of ['up', 'up-left', 'up-right', 'left', 'right', 'down', 'down-left', 'down-right'] as const) {
+          const g = createBlackHoleGame({ seed: 2, field, lives: 9 });
+          flyBoth(g, startLevel(g, level), t, `${field.width}x${field.height} level ${level} ${t}`);
+        }
+    // Level 1 with its holes moved off to the side, 12 m up: holding up clears it.
+    const g = createBlackHoleGame({ seed: 2 });
+    const run = startLevel(g, 1);
+    const P = g.world.components.Position;
+    for (const h of g.holes) {
+      P.x[slotOf(h)] = 3;
+      P.y[slotOf(h)] = 12;
+    }
+    flyBoth(g, run, 'up', 'holes moved aside');
+    // Flights ended every way a held flight can but by timing out (none hovers for 12 s).
+    expect([...ends].sort()).toEqual(['cleared', 'fell', 'left']);
+  });
 
   test('points: 10 a hole on the field plus a point for every whole second under 30 s', () => {
     expect(levelPoints(3, 12.4)).toEqual({ holes: 3 * POINTS_PER_HOLE, bonus: 17, total: 47 });
