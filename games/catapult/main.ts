@@ -1163,6 +1163,8 @@ const closeLabel = new Text({
 });
 closeSprite.visible = closeFrame.visible = closeLabel.visible = false;
 app.stage.addChild(closeSprite, closeFrame, closeLabel);
+// The aim's numbers over the close-up (two lines with the last throw's reached up under it).
+app.stage.addChild(aimText);
 /** Largest magnification of the close-up, and the smallest worth showing. */
 const CLOSE_MAX = 3,
   CLOSE_MIN = 1.4;
