@@ -96,6 +96,9 @@ const lastThrow = {
   /** Launch velocity, m/s. */
   vx: 0,
   vy: 0,
+  /** Power (0 to 1) and angle (degrees above level) of the throw, shown beside the next aim's. */
+  power: 0,
+  angle: 0,
   /** World time of the throw, s. */
   time: 0,
   /** What the throw did ('' until it settles), where to show it (m) and when it was decided (s). */
@@ -465,9 +468,13 @@ function aimView(): View {
 function overviewRect(): View {
   return viewFor(OVERVIEW_LEFT, lv.castleMaxX + OVERVIEW_PAST);
 }
-/** The overview's left edge (behind the catapult's stacked stones) and its room past the castle, m. */
+/**
+ * The overview's left edge (behind the catapult's stacked stones) and its room past the castle's far
+ * end, m: every metre left out draws the catapult, the flight and the castle larger on a 390 px wide
+ * screen.
+ */
 const OVERVIEW_LEFT = LAUNCH.x - 3.1,
-  OVERVIEW_PAST = 0.6;
+  OVERVIEW_PAST = 0.3;
 /** The shot view (see above): the castle, the rock and room either side for debris (2.5 m; 1.5 and 1.2 m upright). */
 function shotViewRect(): View {
   return upright() ? viewFor(lv.castleMinX - 1.5, rockRight() + 1.2) : viewFor(lv.castleMinX - 2.5, rockRight() + 2.5);
@@ -553,10 +560,18 @@ const pointer = { x: 0, y: 0 };
 const FULL_PULL_SHARE = 0.32,
   FULL_PULL_MIN_PX = 240,
   FULL_PULL_MAX_PX = 380;
+/**
+ * On an upright phone a full pull is this share of the screen's width: nearly the width, as long a
+ * drag as a thumb can make across it, so a pixel of drag is a small change of power.
+ */
+const FULL_PULL_UPRIGHT_SHARE = 0.9;
 /** Screen pixels of drag for a full pull (PULL.max m), from the canvas's size. */
 function fullPullPx(): number {
   const cam = renderer.camera;
-  return Math.min(FULL_PULL_MAX_PX, Math.max(FULL_PULL_MIN_PX, FULL_PULL_SHARE * Math.hypot(cam.width, cam.height)));
+  const share = upright()
+    ? Math.max(FULL_PULL_SHARE * Math.hypot(cam.width, cam.height), FULL_PULL_UPRIGHT_SHARE * cam.width)
+    : FULL_PULL_SHARE * Math.hypot(cam.width, cam.height);
+  return Math.min(FULL_PULL_MAX_PX, Math.max(FULL_PULL_MIN_PX, share));
 }
 /** Screen pixels per metre of pull. */
 const aimScale = (): number => fullPullPx() / PULL.max;
@@ -613,6 +628,8 @@ function fire(dx: number, dy: number): number {
   lastThrow.farthest = LAUNCH.x;
   lastThrow.vx = vx;
   lastThrow.vy = vy;
+  lastThrow.power = Math.min(1, Math.hypot(dx, dy) / PULL.max);
+  lastThrow.angle = (Math.atan2(vy, vx) * 180) / Math.PI;
   shotView = true;
   arm.firedAt = shell.world.time;
   arm.velocity = -(8 + 22 * Math.min(1, Math.hypot(dx, dy) / PULL.max));
@@ -766,8 +783,14 @@ function drawThrow(world: PhysicsWorld): void {
   // The trail stays while the player aims the next throw (a guide: higher or lower than that one).
   const path = lastThrow.path;
   trailDots = Math.max(0, path.length / 2 - 1);
-  for (let i = 2; i < path.length; i += 2)
-    overlay.circle(cam.toScreenX(path[i]!), cam.toScreenY(path[i + 1]!), 2.5).fill({ color: 0xffffff, alpha: 0.6 });
+  // While aiming it is the ghost to correct from: larger, and ringed so it reads over the pale sky.
+  const r = aim.active ? 3 : 2.5;
+  for (let i = 2; i < path.length; i += 2) {
+    const dot = overlay
+      .circle(cam.toScreenX(path[i]!), cam.toScreenY(path[i + 1]!), r)
+      .fill({ color: 0xffffff, alpha: aim.active ? 0.75 : 0.6 });
+    if (aim.active) dot.stroke({ width: 1, color: 0x000000, alpha: 0.3 });
+  }
   drawOffscreen(world);
   drawCastleMarker();
   const age = world.time - lastThrow.decidedAt;
@@ -782,6 +805,17 @@ function drawThrow(world: PhysicsWorld): void {
   const half = verdictText.width / 2 + 8;
   verdictText.x = Math.min(Math.max(cam.toScreenX(lastThrow.at[0]), half), app.screen.width - half);
   verdictText.y = Math.max(cam.toScreenY(lastThrow.at[1]) - 18 * age, 70);
+  // Clear of the off-screen marker's label ("12 m past ▸") at the right edge: a verdict that starts
+  // under the label stops rising under it, one that starts level with or over it stays over it.
+  if (offscreenText.visible) {
+    const o = offscreenText,
+      oTop = o.y - o.height / 2 - 4,
+      oBottom = o.y + o.height / 2 + 4;
+    if (verdictText.x + verdictText.width / 2 > o.x - o.width - 4) {
+      const under = cam.toScreenY(lastThrow.at[1]) - verdictText.height > o.y;
+      verdictText.y = under ? Math.max(verdictText.y, oBottom + verdictText.height) : Math.min(verdictText.y, oTop);
+    }
+  }
   verdictText.alpha = Math.min(1, 3 * (1 - age / VERDICT_SHOWN));
 }
 
@@ -844,7 +878,14 @@ castleText.visible = false;
 /** The power and angle over the power bar while aiming (see drawAim). */
 const aimText = new Text({
   text: '',
-  style: { fill: 0xffffff, fontSize: 16, fontFamily: 'sans-serif', fontWeight: 'bold', stroke: { color: 0x000000, width: 4 } },
+  style: {
+    fill: 0xffffff,
+    fontSize: 16,
+    fontFamily: 'sans-serif',
+    fontWeight: 'bold',
+    align: 'center',
+    stroke: { color: 0x000000, width: 4 },
+  },
 });
 aimText.anchor.set(0.5, 1);
 aimText.visible = false;
@@ -995,13 +1036,20 @@ function showBreaks(world: PhysicsWorld): void {
 }
 
 /**
- * The arc preview covers the first part of the flight only: up to PREVIEW_SHARE of the way from the
- * catapult to the castle's front, and PREVIEW_TIME s at most. The player sees the direction and the
- * rise, and judges where it comes down from the last throw's trail, which stays on the screen while
- * aiming (a whole arc to the castle made every throw a sure hit).
+ * The arc preview covers the rise of the flight and the start of its fall: to PREVIEW_PAST of the
+ * way from the catapult to the arc's top beyond it (so the player sees where it tops out and turns
+ * down, and judges the landing by symmetry: an arc that tops out halfway to the castle comes down
+ * about at it), at least PREVIEW_SHARE of the way to the castle's front and never past PREVIEW_CAP
+ * of it, nor PREVIEW_TIME s of flight. The landing is left to the player, helped by the last throw's
+ * trail and its power and angle, which show while aiming (a whole arc to the castle made every
+ * throw a sure hit; one cut at 55 % of the way hid whether a strong throw was still rising there).
  */
-const PREVIEW_SHARE = 0.55,
-  PREVIEW_TIME = 1;
+const PREVIEW_SHARE = 0.45,
+  PREVIEW_CAP = 0.8,
+  PREVIEW_PAST = 1.3,
+  PREVIEW_TIME = 3;
+/** Least distance between two dots of the arc preview on the screen, px. */
+const PREVIEW_GAP = 11;
 /** What the aim shows in the last frame (tests): power (0 to 1), angle (degrees above level), preview dots and the preview's farthest x, m. */
 const aimShown: { power: number; angle: number; dots: number; reach: number } = { power: 0, angle: 0, dots: 0, reach: 0 };
 
@@ -1032,24 +1080,37 @@ function drawAim(world: PhysicsWorld): void {
   overlay.moveTo(aim.x0, aim.y0).lineTo(ex, ey).stroke({ width: 3, color });
   overlay.circle(aim.x0, aim.y0, 4).fill({ color: 0xffffff, alpha: 0.8 });
   overlay.circle(ex, ey, 9).fill(color).stroke({ width: 2, color: 0x000000, alpha: 0.6 });
-  // The first part of the arc.
+  // The arc to a little past its top (see PREVIEW_PAST).
   const g = -world.gravity[1]!;
   const arc = predictArc(LAUNCH.x, LAUNCH.y, vx, vy, g, Math.round(PREVIEW_TIME / 0.05) + 1, 0.05);
-  const reachX = LAUNCH.x + PREVIEW_SHARE * (lv.castleMinX - LAUNCH.x);
+  const span = lv.castleMinX - LAUNCH.x,
+    apex = vy > 0 ? (PREVIEW_PAST * vx * vy) / g : 0;
+  const reachX = LAUNCH.x + Math.min(PREVIEW_CAP * span, Math.max(PREVIEW_SHARE * span, apex));
   let reach: number = LAUNCH.x;
+  // Dots at least PREVIEW_GAP px apart (a small scene, an upright phone's, crowded them into a
+  // rope), and the arc's last point within reach always drawn; smaller on a narrow screen.
+  const dotR = cam.width < NARROW ? 3.5 : 4.5;
+  let lastX = Number.NEGATIVE_INFINITY,
+    lastY = 0;
   for (let i = 1; i < arc.length; i++) {
     const [x, y] = arc[i]!;
     if (x > reachX) break;
+    const px = cam.toScreenX(x),
+      py = cam.toScreenY(y);
+    const end = i + 1 >= arc.length || arc[i + 1]![0] > reachX;
+    reach = x;
+    if (!end && Math.hypot(px - lastX, py - lastY) < PREVIEW_GAP) continue;
+    lastX = px;
+    lastY = py;
     const fade = 1 - i / arc.length;
     overlay
-      .circle(cam.toScreenX(x), cam.toScreenY(y), 4.5)
+      .circle(px, py, dotR)
       .fill({ color: 0xffffff, alpha: 0.35 + 0.6 * fade })
       .stroke({
         width: 1.5,
         color: 0x000000,
         alpha: 0.3 + 0.4 * fade,
       });
-    reach = x;
     aimShown.dots++;
   }
   aimShown.power = power;
@@ -1062,9 +1123,13 @@ function drawAim(world: PhysicsWorld): void {
     y = Math.max(60, cam.toScreenY(3.2));
   overlay.roundRect(x - 2, y - 2, w + 4, h + 4, 5).fill({ color: 0x000000, alpha: 0.55 });
   overlay.roundRect(x, y, Math.max(2, w * power), h, 4).fill(color);
-  const label = `${Math.round(100 * power)} %  ${Math.round(aimShown.angle)}°`;
+  // Over this throw's numbers the last throw's: the player corrects from them ("long: a little less").
+  const last = lastThrow.body ? `last ${Math.round(100 * lastThrow.power)} %  ${Math.round(lastThrow.angle)}°\n` : '';
+  const label = `${last}${Math.round(100 * power)} %  ${Math.round(aimShown.angle)}°`;
   if (aimText.text !== label) aimText.text = label;
-  aimText.x = x + w / 2;
+  // Centred over the bar, and all on the screen (the last throw's line is wider than the bar).
+  const half = aimText.width / 2 + 4;
+  aimText.x = Math.min(Math.max(x + w / 2, half), cam.width - half);
   aimText.y = y - 4;
 }
 
@@ -1098,6 +1163,8 @@ const closeLabel = new Text({
 });
 closeSprite.visible = closeFrame.visible = closeLabel.visible = false;
 app.stage.addChild(closeSprite, closeFrame, closeLabel);
+// The aim's numbers over the close-up (two lines with the last throw's reached up under it).
+app.stage.addChild(aimText);
 /** Largest magnification of the close-up, and the smallest worth showing. */
 const CLOSE_MAX = 3,
   CLOSE_MIN = 1.4;
@@ -1105,6 +1172,14 @@ const CLOSE_MAX = 3,
 const CLOSE_GAP = 36;
 /** The close-up's box on the screen (px: x, y, width, height) and its magnification; null while hidden. */
 let closeShown: { box: [number, number, number, number]; zoom: number } | null = null;
+/**
+ * The close-up is drawn again every CLOSE_EVERY frames (and at once when its size changes): it shows
+ * the castle at rest while the player aims, and a second pass over the whole scene every frame was
+ * most of the phone's frame time.
+ */
+const CLOSE_EVERY = 4;
+/** Frames since the close-up was last drawn. */
+let closeAge = CLOSE_EVERY;
 /** Draws the close-up (see above) for this frame, or hides it. */
 function drawCloseUp(): void {
   const cam = renderer.camera;
@@ -1128,20 +1203,27 @@ function drawCloseUp(): void {
     if (zoom >= CLOSE_MIN) {
       const bw = Math.round(w * zoom),
         bh = Math.round(h * zoom);
-      if (closeTexture.width !== bw || closeTexture.height !== bh) closeTexture.resize(bw, bh);
+      closeAge++;
+      if (closeTexture.width !== bw || closeTexture.height !== bh) {
+        closeTexture.resize(bw, bh);
+        closeAge = CLOSE_EVERY;
+      }
       // The screen-space words over the scene are not part of the close-up.
-      const words = [banner, bannerPanel, verdictText, offscreenText, castleText, aimText, pauseShade, pauseText];
-      const was = words.map((o) => o.visible);
-      for (const o of words) o.visible = false;
-      app.renderer.render({
-        container: renderer.root,
-        target: closeTexture,
-        clear: true,
-        transform: new Matrix().translate(-sx, -sy).scale(zoom, zoom),
-      });
-      words.forEach((o, k) => {
-        o.visible = was[k]!;
-      });
+      if (closeAge >= CLOSE_EVERY) {
+        closeAge = 0;
+        const words = [banner, bannerPanel, verdictText, offscreenText, castleText, aimText, pauseShade, pauseText];
+        const was = words.map((o) => o.visible);
+        for (const o of words) o.visible = false;
+        app.renderer.render({
+          container: renderer.root,
+          target: closeTexture,
+          clear: true,
+          transform: new Matrix().translate(-sx, -sy).scale(zoom, zoom),
+        });
+        words.forEach((o, k) => {
+          o.visible = was[k]!;
+        });
+      }
       // Low in its band, CLOSE_GAP px over the castle it magnifies (the two read together; at the
       // band's top it hung under the banner with a screen of empty sky between it and the castle).
       const bx = Math.round((cam.width - bw) / 2),
@@ -1155,6 +1237,7 @@ function drawCloseUp(): void {
       closeShown = { box: [bx, by, bw, bh], zoom };
     }
   }
+  if (closeShown === null) closeAge = CLOSE_EVERY;
   closeSprite.visible = closeFrame.visible = closeLabel.visible = closeShown !== null;
 }
 
@@ -1468,6 +1551,18 @@ shell.expose({
   offscreenY: (): number => offscreenText.y,
   /** Dots of the last throw's trail drawn in the last frame. */
   trailDots: (): number => trailDots,
+  /**
+   * Boxes (px: left, top, right, bottom) of the verdict and the off-screen marker's label in the
+   * last frame, each null while hidden.
+   */
+  wordBoxes: (): { verdict: number[] | null; offscreen: number[] | null } => {
+    const box = (t: Text): number[] | null => {
+      if (!t.visible) return null;
+      const b = t.getBounds();
+      return [b.minX, b.minY, b.maxX, b.maxY];
+    };
+    return { verdict: box(verdictText), offscreen: box(offscreenText) };
+  },
   /**
    * What the aim showed in the last frame: power (0 to 1), angle (degrees above level), dots of the
    * arc preview (0 when not aiming) and the preview's farthest x, m.
