@@ -453,13 +453,13 @@ function layHoles(game: BlackHoleGame, run: LevelRun, spec: LevelSpec): void {
       const r = rng.range(r0, r1);
       let x: number, y: number;
       if (spec.fork) {
-        // The fork: the first hole across the straight path up, 6 to 7.5 m above the start (on the
+        // The fork: the first hole across the straight path up, 10 to 12 m above the start (on the
         // default field), the other two on the lines at 45 degrees, 7 to 8 m out and up (less on a
         // narrow field, so a hole stays 2 m clear of the edge: a ship held on the diagonal would
         // leave the field before it, but a hole's pull could bend it back).
         const out = Math.min(rng.range(7, 8), game.field.width / 2 - 2 - r);
         x = k === 0 ? game.start[0] + rng.range(-0.3, 0.3) * r : game.start[0] + (k === 1 ? -1 : 1) * out;
-        y = k === 0 ? game.start[1] + rng.range(6, 7.5) * s : game.start[1] + out + rng.range(-0.3, 0.3);
+        y = k === 0 ? game.start[1] + rng.range(10, 12) * s : game.start[1] + out + rng.range(-0.3, 0.3);
       } else if (k < spec.blockers && spec.gate > 0) {
         // Across the way up through the wall's gap: 6 to 7.5 m (on the default field) above the wall.
         x = gateX + rng.range(-0.5, 0.5) * r;
