@@ -178,6 +178,12 @@ function pilotGoes(): void {
   if (compact || nextRing(rings) === 0) tipGoneAt = shell.world.time + TIP_LINGER;
 }
 
+/** Whether the pilot holds a flight key or the stick now. */
+function steering(): boolean {
+  for (const key of held) if (FLIGHT_KEYS.has(key)) return true;
+  return stickInput.x !== 0 || stickInput.y !== 0;
+}
+
 const held = new Set<string>();
 /** The on-screen stick's deflection (x right, y up, in [-1, 1]). */
 const stickInput = { x: 0, y: 0 };
@@ -321,8 +327,9 @@ function checkRings(time: number): void {
   }
   const next = nextRing(rings);
   if (next < 0) finish(time);
-  // A lesson's ring next (2 to 4): the flight waits while its tip is read.
-  else if (next !== before && next >= 1 && next <= 3) holding = true;
+  // A lesson's ring next (2 to 4): the flight waits while its tip is read, unless the pilot is
+  // flying it already (a key or the stick held: no key would come to go on with).
+  else if (next !== before && next >= 1 && next <= 3 && !steering()) holding = true;
 }
 /** Game time of the last miss, s (the clock flashes for a while after it). */
 let missedAt = -Infinity;
@@ -1236,6 +1243,8 @@ shell.expose({
   rings: () => rings.map((r) => ({ ...r })),
   /** The lesson tip over the scene now ('' when none shows). */
   tip: () => tipText,
+  /** Game time at which the tip now shown goes, s (Infinity: it stays while its ring is next). */
+  tipUntil: () => tipGoneAt,
   /** The banner's text now ('' when none shows) and the warning. */
   banner: () => ({ text: banner.style.display === 'none' ? '' : (banner.textContent ?? ''), warning: state.warning }),
   params,

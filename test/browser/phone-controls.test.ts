@@ -143,15 +143,23 @@ describe('phone controls', () => {
     await cdp2.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: finger([cx + 5, cy]) });
     await cdp2.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
     await cdp2.detach();
+    // Running again: the tip goes TIP_LINGER (3 s) of game time after the stick went on. Paused and
+    // stepped (deterministic game time), it is up 0.2 s before then and gone 0.1 s after.
     const t1 = await g.waitFor(() => (window.game!.paused ? null : window.game!.world.time), null);
-    const lasted = await g.waitFor(
-      (t) => ((window.game as unknown as { tip(): string }).tip() === '' ? window.game!.world.time - t : null),
-      t1,
-      60_000,
-    );
-    // TIP_LINGER, 3 s, to within a frame's steps (at most 0.15 s).
-    expect(lasted).toBeGreaterThan(2.9);
-    expect(lasted).toBeLessThan(3.3);
+    const until = await g.page.evaluate(() => (window.game as unknown as { tipUntil(): number }).tipUntil());
+    expect(until).toBeLessThanOrEqual(t1 + 3 + 1e-9);
+    expect(until).toBeGreaterThan(t1 + 2);
+    const tipAt = async (t: number) => {
+      await g.page.evaluate((to) => {
+        const w = window.game as unknown as { paused: boolean; step(): void; world: { time: number } };
+        w.paused = true;
+        while (w.world.time < to) w.step();
+      }, t);
+      await g.frames(2);
+      return g.page.evaluate(() => (window.game as unknown as { tip(): string }).tip());
+    };
+    expect(await tipAt(until - 0.2)).not.toBe('');
+    expect(await tipAt(until + 0.1)).toBe('');
     expect(g.errors).toEqual([]);
     await g.close();
   });

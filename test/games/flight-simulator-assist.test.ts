@@ -353,6 +353,21 @@ describe('the flight-path marker (course.ts predictThroughRing) against the flow
     expect(worst).toBeLessThan(RING_RADIUS / 3);
   });
 
+  it('predictThroughRing: a ring behind is never met; bad input is refused with the function and parameter named', () => {
+    const ring: Ring = { x: -500, y: 900, z: 0, nx: 1, ny: 0, nz: 0, status: 'ahead' };
+    const motion = { position: [0, 900, 0], velocity: [130, 0, 0], bank: 0, rollRate: 0, pathRate: 0 };
+    expect(predictThroughRing(ring, motion, true).offset).toBe(Infinity);
+    // Level and straight, it agrees with the straight line.
+    const ahead = { ...ring, x: 600, y: 930 };
+    expect(predictThroughRing(ahead, motion, true).offset).toBeCloseTo(pathThroughRing(ahead, motion.position, motion.velocity).offset, 6);
+    expect(() => predictThroughRing(ring, { ...motion, velocity: [Number.NaN, 0, 0] }, true)).toThrow(
+      /predictThroughRing: velocity must be 3 finite numbers/,
+    );
+    expect(() => predictThroughRing(ring, { ...motion, bank: Infinity }, false)).toThrow(
+      /predictThroughRing: bank, rollRate and pathRate must be finite/,
+    );
+  });
+
   it('a held key let go after 1.5 s: the wings level briskly, the turn runs on under 2.5 degrees of heading past the release (3.1 with the old gains)', () => {
     const { runOn } = release(1, 0, 1.5, 1000);
     expect(runOn).toBeGreaterThan(0);
