@@ -15,6 +15,8 @@
 //   is off the flight path (as seen LAG s before) by more than the ring's radius over DEAD (env,
 //   default 4) at its distance, else lets go: all or nothing, so it swings past where the aircraft
 //   answers late. Prints how often it reversed the bank key.
+// - `marker`: the same stranger steering by the game's flight-path marker (where the aircraft
+//   crosses the ring's plane if it lets go now) instead of the ring's bearing.
 // Prints per seed and pilot the rings passed of 10 and each ring's status (P passed, m missed), then
 // each ring's turn (degrees) and change of height (m) for the default seed. Env PILOTS=keys,naive
 // flies only those; DEBUG=1 prints where each missed ring's plane was crossed.
@@ -75,6 +77,19 @@ const pilots = {
     keys.pitch = fs.rampKey(keys.pitch, pitch, dt);
     return { roll: keys.roll, pitch: keys.pitch, throttle: start };
   },
+  // A stranger on the keys who steers by the flight-path marker (the game's: where the aircraft
+  // crosses the ring's plane if it lets go now, course.ts predictThroughRing), as it was LAG s
+  // before: holds the key towards the ring while the marker is more than a third of the radius off
+  // its centre that way, else lets go.
+  marker: ({ seenMarker, since, start, keys, dt }) => {
+    const ready = since >= 1 && seenMarker;
+    const dead = fs.RING_RADIUS / 3;
+    const roll = ready && Math.abs(seenMarker.side) > dead ? Math.sign(seenMarker.side) : 0;
+    const pitch = ready && Math.abs(seenMarker.up) > dead ? Math.sign(seenMarker.up) : 0;
+    keys.roll = fs.rampKey(keys.roll, roll, dt);
+    keys.pitch = fs.rampKey(keys.pitch, pitch, dt);
+    return { roll: keys.roll, pitch: keys.pitch, throttle: start };
+  },
 };
 
 const fly = (seed, pilot) => {
@@ -92,7 +107,8 @@ const fly = (seed, pilot) => {
   const history = [];
   const keys = { roll: 0, pitch: 0 };
   let current = 0,
-    since = 0;
+    since = 0,
+    lastPath = 0;
   for (let t = 0; t < 200 && fs.nextRing(rings) >= 0; t += world.dt) {
     const s = fs.flightState(world, e);
     const n = fs.nextRing(rings);
@@ -107,10 +123,32 @@ const fly = (seed, pilot) => {
       dz = ring.z - P.z[e],
       far = Math.hypot(dx, dz);
     const bearing = ((Math.atan2(dz, dx) - s.heading + 3 * Math.PI) % (2 * Math.PI)) - Math.PI;
-    history.push({ ring: n, bearing, elevation: Math.atan2(dy, far) - s.path, far: Math.hypot(far, dy) });
+    // The marker: the ring's centre from where the let-go path crosses its plane, to the ring's right
+    // (horizontal, across its normal) and up, m.
+    const V = world.components.Velocity;
+    const through = fs.predictThroughRing(
+      ring,
+      {
+        position: [P.x[e], P.y[e], P.z[e]],
+        velocity: [V.x[e], V.y[e], V.z[e]],
+        bank: s.bank,
+        rollRate: s.rollRate,
+        pathRate: (s.path - lastPath) / world.dt,
+      },
+      true,
+    );
+    lastPath = s.path;
+    const across = Math.hypot(ring.nx, ring.nz);
+    const marker = Number.isFinite(through.offset)
+      ? {
+          side: ((ring.x - through.point[0]) * -ring.nz + (ring.z - through.point[2]) * ring.nx) / across,
+          up: ring.y - through.point[1],
+        }
+      : null;
+    history.push({ ring: n, bearing, elevation: Math.atan2(dy, far) - s.path, far: Math.hypot(far, dy), marker });
     const back = history[history.length - 1 - Math.round(LAG / world.dt)];
     const seen = back && back.ring === n ? back : null;
-    const c0 = pilot({ s, ring, P, e, trim, start, seen, since, keys, dt: world.dt });
+    const c0 = pilot({ s, ring, P, e, trim, start, seen, seenMarker: seen?.marker ?? null, since, keys, dt: world.dt });
     const c = fs.assist(s, { roll: c0.roll, pitch: c0.pitch, yaw: 0 }, state, world.dt);
     for (const k of ['aileron', 'elevator', 'rudder']) surface[k] += Math.max(-rate, Math.min(rate, c[k] - surface[k]));
     fs.setControlDeflection(world, h.surfaces.tail, -surface.elevator * full);
@@ -135,7 +173,7 @@ const fly = (seed, pilot) => {
 
 /** The pilots to fly (env PILOTS, comma-separated; default all). */
 const only = process.env.PILOTS?.split(',');
-const totals = { scripted: 0, naive: 0, keys: 0 };
+const totals = { scripted: 0, naive: 0, keys: 0, marker: 0 };
 for (const seed of chosen)
   for (const [name, pilot] of Object.entries(pilots).filter(([name]) => !only || only.includes(name))) {
     const rings = fly(seed, pilot);

@@ -70,7 +70,7 @@ export interface FlightState {
 
 /**
  * Full deflection of each control surface, degrees (the page's default; its panel can change it).
- * 25: a held key banks the aircraft 30 degrees in 0.92 s and 40 in 1.6 s (with 15 it took 1.4 s
+ * 25: a held key banks the aircraft 30 degrees in 0.8 s and 40 in 1.2 s (with 15 it took 1.4 s
  * to 30: players found it floaty).
  */
 export const CONTROL_AUTHORITY = 25;
@@ -94,10 +94,15 @@ export const ASSIST = Object.freeze({
   maxPath: 45 * DEG,
   /** Width of the fade below `maxPath`, rad. */
   pathFade: 10 * DEG,
-  /** Aileron per radian of bank error (1/rad): full aileron rolls at about 0.5 rad/s at cruise. */
-  bankGain: 2.5,
-  /** Aileron per rad/s of roll rate, s: damps the roll towards the bank asked for. */
-  rollDamping: 0.4,
+  /**
+   * Aileron per radian of bank error (1/rad): full aileron rolls at about 0.8 rad/s at cruise, and
+   * full aileron is asked for until the bank is within 10 degrees of the one asked for, so the wings
+   * roll level briskly when the stick is let go (with 2.5 the last 15 degrees took 1.4 s, and the
+   * turn ran on 3 degrees of heading past the release: players overshot).
+   */
+  bankGain: 6,
+  /** Aileron per rad/s of roll rate, s: damps the roll so that it stops at the bank asked for, not past it. */
+  rollDamping: 0.8,
   /** Elevator per radian of flight-path error (1/rad). */
   pathGain: 5,
   /** Elevator per radian-second of flight-path error (1/(rad s)): the integral that finds the trim. */

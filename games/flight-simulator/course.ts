@@ -317,3 +317,102 @@ export function pathThroughRing(
   ];
   return { time, offset: Math.hypot(point[0] - ring.x, point[1] - ring.y, point[2] - ring.z), point };
 }
+
+/**
+ * How the assisted aircraft settles when the stick is let go (./assist.ts; fitted to the flown
+ * response at the trim speed): the bank and the flight path keep their rates for `delay` s (the keys'
+ * inputs fall back and the surfaces follow), then each returns to level, as fast as at `rollRate`
+ * (rad/s) and `pathRate` (rad/s), within `bankTime` and `pathTime` (s, time constants) near level.
+ */
+export const LET_GO = Object.freeze({ delay: 0.15, bankTime: 0.3, rollRate: 0.8, pathTime: 0.65, pathRate: 0.25 });
+
+/** The aircraft's motion now for `predictThroughRing`. */
+export interface Motion {
+  /** Centre, m (world). */
+  position: readonly number[];
+  /** Velocity, m/s (world); its size is kept along the predicted path. */
+  velocity: readonly number[];
+  /** Bank, rad, + right wing down (./assist.ts FlightState.bank). */
+  bank: number;
+  /** Rate of the bank, rad/s. */
+  rollRate: number;
+  /** Rate of the flight-path angle, rad/s. */
+  pathRate: number;
+}
+
+/** Largest bank the prediction turns with, rad (a steeper bank's tangent runs away). */
+const PREDICT_BANK = (75 * Math.PI) / 180;
+
+/**
+ * Where the aircraft's path meets `ring`'s plane: the time to get there (s), the point (m, world)
+ * and its distance from the ring's centre (m), like `pathThroughRing`, but along the curved path the
+ * aircraft flies. With `letGo` (the assist on) the pilot lets go now: the bank and the flight path
+ * go on at their rates for LET_GO.delay s, then settle to level (LET_GO), the path turning at
+ * g tan(bank) / V the while (a coordinated turn); without, the bank and the flight path are held as
+ * they are (a steady turn). The speed is kept. Stepped every `dt` s (default 1/30) for at most
+ * `horizon` s (default 20): a plane not met by then gives { time: Infinity, offset: Infinity }.
+ * This is what the flight-path marker shows: put it in the ring and let go, and the aircraft flies
+ * through (test/games/flight-simulator-course.test.ts measures how close).
+ * @throws RangeError on a position or velocity that is not 3 finite numbers, or a bank, roll rate or
+ * path rate that is not finite.
+ */
+export function predictThroughRing(
+  ring: Ring,
+  motion: Motion,
+  letGo: boolean,
+  opts: { dt?: number; horizon?: number } = {},
+): { time: number; offset: number; point: [number, number, number] } {
+  const { position, velocity, bank, rollRate, pathRate } = motion;
+  for (const [name, v] of [
+    ['position', position],
+    ['velocity', velocity],
+  ] as const)
+    if (v.length < 3 || !v.slice(0, 3).every(Number.isFinite))
+      throw new RangeError(`predictThroughRing: ${name} must be 3 finite numbers, got ${v.join(', ')}`);
+  if (![bank, rollRate, pathRate].every(Number.isFinite))
+    throw new RangeError(`predictThroughRing: bank, rollRate and pathRate must be finite, got ${bank}, ${rollRate}, ${pathRate}`);
+  const dt = opts.dt ?? 1 / 30,
+    horizon = opts.horizon ?? 20;
+  const none = { time: Infinity, offset: Infinity, point: [Infinity, Infinity, Infinity] as [number, number, number] };
+  const speed = Math.hypot(velocity[0]!, velocity[1]!, velocity[2]!);
+  if (!(speed > 0)) return none;
+  let x = position[0]!,
+    y = position[1]!,
+    z = position[2]!,
+    b = bank,
+    path = Math.asin(Math.max(-1, Math.min(1, velocity[1]! / speed))),
+    heading = Math.atan2(velocity[2]!, velocity[0]!);
+  const gapOf = (px: number, py: number, pz: number) => (ring.x - px) * ring.nx + (ring.y - py) * ring.ny + (ring.z - pz) * ring.nz;
+  let gap = gapOf(x, y, z);
+  if (!(gap > 0)) return none;
+  // Towards 0 over a step: by the share 1 - e^(-dt / time) of `v`, no faster than `fastest` per second.
+  const settle = (v: number, time: number, fastest: number) =>
+    v - Math.max(-fastest * dt, Math.min(fastest * dt, v * (1 - Math.exp(-dt / time))));
+  for (let t = 0; t < horizon; t += dt) {
+    if (letGo) {
+      if (t < LET_GO.delay) {
+        b += rollRate * dt;
+        path += pathRate * dt;
+      } else {
+        b = settle(b, LET_GO.bankTime, LET_GO.rollRate);
+        path = settle(path, LET_GO.pathTime, LET_GO.pathRate);
+      }
+    }
+    const turn = (9.81 * Math.tan(Math.max(-PREDICT_BANK, Math.min(PREDICT_BANK, b)))) / speed;
+    heading += turn * dt;
+    const nx = x + speed * Math.cos(path) * Math.cos(heading) * dt,
+      ny = y + speed * Math.sin(path) * dt,
+      nz = z + speed * Math.cos(path) * Math.sin(heading) * dt;
+    const next = gapOf(nx, ny, nz);
+    if (next <= 0) {
+      const f = gap / (gap - next);
+      const point: [number, number, number] = [x + f * (nx - x), y + f * (ny - y), z + f * (nz - z)];
+      return { time: t + f * dt, offset: Math.hypot(point[0] - ring.x, point[1] - ring.y, point[2] - ring.z), point };
+    }
+    x = nx;
+    y = ny;
+    z = nz;
+    gap = next;
+  }
+  return none;
+}

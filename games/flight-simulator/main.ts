@@ -11,8 +11,9 @@
  * to the course clock, said in the banner the moment it is missed; do not hit the ground.
  * Guidance: thick bright rings, a chain of beads through the next two, a label above the next one
  * (clear of the ring and of the marker; an edge arrow when it is out of view), and a flight-path
- * marker where the aircraft's straight path meets the next ring's plane (green when it is inside the
- * ring). The cockpit view (C) has a canopy frame and an instrument panel (./cockpit.ts: airspeed,
+ * marker where the aircraft's path, curved by its turn and climb, meets the next ring's plane if the
+ * pilot lets go now (green when it is inside the ring). The flight waits for the pilot's first input
+ * at the start and while the tips of the lesson rings (2 to 4) are read. The cockpit view (C) has a canopy frame and an instrument panel (./cockpit.ts: airspeed,
  * altimeter, heading, vertical speed, throttle) with the attitude indicator in its middle. The chase
  * camera sits close behind and widens its view with speed, so the speed shows.
  * Keys: arrows or W/S/A/D: climb / dive and bank (with "pilot's pitch" in the panel, down pulls up),
@@ -58,7 +59,7 @@ import { aircraftGeometry } from './aircraft-model';
 import { approach, assist, CONTROL_AUTHORITY, createAssistState, type FlightState, flightState, rampKey, SURFACE_RATE } from './assist';
 import { createAttitudeIndicator } from './attitude-indicator';
 import { createCockpit } from './cockpit';
-import { courseStars, courseTime, flyRings, layCourse, MISS_PENALTY, nextRing, pathThroughRing, RING_RADIUS, type Ring } from './course';
+import { courseStars, courseTime, flyRings, layCourse, MISS_PENALTY, nextRing, predictThroughRing, RING_RADIUS, type Ring } from './course';
 import { createScenery, HORIZON_COLOUR, SUN_DIRECTION } from './scenery';
 
 const params = {
@@ -124,15 +125,73 @@ function createWorld(): PhysicsWorld {
   rings = layCourse({ terrain: handles.terrain, seed: params.seed + 7, count: params.rings, start: [0, START_ALTITUDE, 0] });
   events.length = 0;
   missedAt = -Infinity;
+  // Where the aircraft is now (the marker, the ring's distance), before the first step.
+  const P = world.components.Position,
+    e = handles.body;
+  now[0] = prev[0] = P.x[e]!;
+  now[1] = prev[1] = P.y[e]!;
+  now[2] = prev[2] = P.z[e]!;
+  Object.assign(motion, { bank: 0, rollRate: 0, pathRate: 0 });
+  // A new flight waits for the pilot (`waitForPilot`).
+  holding = true;
   return world;
+}
+
+/** The aircraft's bank (rad), its rate and the flight path's rate (rad/s) after the last step: the marker's prediction starts from them. */
+const motion = { bank: 0, rollRate: 0, pathRate: 0 };
+
+/**
+ * Whether the flight waits for the pilot: at the start and after a reset, and when a lesson's tip
+ * first shows (`showTip`), the game pauses until the pilot's first flight key or touch of the stick
+ * (or P), so the tip is read before the ring comes (a stranger read the tips while the aircraft flew
+ * on, and missed rings 2 to 6 in a row).
+ */
+let holding = true;
+/** Whether `shell` is set (a key pressed while the page loads finds none). */
+let shellReady = false;
+/** Keys that fly the aircraft: any of them ends a wait (`holding`). */
+const FLIGHT_KEYS = new Set([
+  'arrowup',
+  'arrowdown',
+  'arrowleft',
+  'arrowright',
+  'w',
+  'a',
+  's',
+  'd',
+  'q',
+  'e',
+  'x',
+  'z',
+  ' ',
+  'enter',
+  'shift',
+  '+',
+  '-',
+  '=',
+]);
+/** Ends a wait for the pilot (`holding`): the game runs on. */
+function pilotGoes(): void {
+  if (!holding || !shellReady) return;
+  holding = false;
+  shell.paused = false;
+  if (compact || nextRing(rings) === 0) tipGoneAt = shell.world.time + TIP_LINGER;
+}
+
+/** Whether the pilot holds a flight key or the stick now. */
+function steering(): boolean {
+  for (const key of held) if (FLIGHT_KEYS.has(key)) return true;
+  return stickInput.x !== 0 || stickInput.y !== 0;
 }
 
 const held = new Set<string>();
 /** The on-screen stick's deflection (x right, y up, in [-1, 1]). */
 const stickInput = { x: 0, y: 0 };
 addEventListener('keydown', (e) => {
-  held.add(e.key.toLowerCase());
-  if (e.key === 'Shift' || e.key.startsWith('Arrow')) e.preventDefault();
+  const key = e.key.toLowerCase();
+  held.add(key);
+  if (e.key === 'Shift' || e.key.startsWith('Arrow') || e.key === ' ') e.preventDefault();
+  if (FLIGHT_KEYS.has(key)) pilotGoes();
 });
 addEventListener('keyup', (e) => {
   held.delete(e.key.toLowerCase());
@@ -177,6 +236,11 @@ const prev = [0, 0, 0],
 
 function stepWorld(world: PhysicsWorld): void {
   if (state.phase === 'crashed') return;
+  if (holding) {
+    // Waiting for the pilot: the game pauses (its pause button and readout say so) until a flight input.
+    shell.paused = true;
+    return;
+  }
   const dt = world.dt,
     e = handles.body;
   rampKeys(dt);
@@ -230,6 +294,9 @@ function stepWorld(world: PhysicsWorld): void {
   }
   // Warnings: the wing within 3 degrees of the stall, or the ground less than 8 s away at this sink rate.
   const after = flightState(world, e);
+  motion.bank = after.bank;
+  motion.rollRate = after.rollRate;
+  motion.pathRate = (after.path - s.path) / dt;
   state.stalled = Math.abs(after.alpha) > AIRCRAFT.stallAngle;
   const sink = -world.components.Velocity.y[e]!;
   const agl = now[1]! - ground;
@@ -242,6 +309,7 @@ function stepWorld(world: PhysicsWorld): void {
 
 /** Passes or misses rings (./course.ts flyRings) on the move from `prev` to `now`: counts, banners, sounds. */
 function checkRings(time: number): void {
+  const before = nextRing(rings);
   for (const { ring, result } of flyRings(rings, prev, now)) {
     if (result === 'passed') {
       state.score++;
@@ -257,7 +325,11 @@ function checkRings(time: number): void {
       sound.chime(220, 0.4);
     }
   }
-  if (nextRing(rings) < 0) finish(time);
+  const next = nextRing(rings);
+  if (next < 0) finish(time);
+  // A lesson's ring next (2 to 4): the flight waits while its tip is read, unless the pilot is
+  // flying it already (a key or the stick held: no key would come to go on with).
+  else if (next !== before && next >= 1 && next <= 3 && !steering()) holding = true;
 }
 /** Game time of the last miss, s (the clock flashes for a while after it). */
 let missedAt = -Infinity;
@@ -306,6 +378,8 @@ const game = await startThreeGame({
   // ramped input, not a full one (KEY_RAMP: 0.12 of full after a 0.1 s tap).
   maxFrameTime: 0.15,
   maxStepsPerFrame: 9,
+  // The flight waits for the pilot's first input (`holding`).
+  paused: true,
   controls: [
     { keys: '↑ ↓ / W S', action: 'climb / dive', touch: 'stick ↑ ↓' },
     { keys: '← → / A D', action: 'bank left / right', touch: 'stick ← →' },
@@ -333,6 +407,7 @@ const game = await startThreeGame({
   onFrame: () => frame(),
 });
 const { shell, renderer, app } = game;
+shellReady = true;
 app.camera.near = 1;
 app.camera.far = 40_000;
 app.camera.updateProjectionMatrix();
@@ -526,7 +601,7 @@ function overlay(css: string): HTMLDivElement {
   return el;
 }
 const banner = overlay(
-  'left: 50%; top: 24%; padding: 6px 18px; border-radius: 14px; background: rgba(8, 12, 20, 0.78); font: 800 26px system-ui, sans-serif; white-space: nowrap; display: none;',
+  `left: 50%; top: ${compact ? 27 : 24}%; padding: ${compact ? '3px 12px' : '6px 18px'}; border-radius: 14px; background: rgba(8, 12, 20, 0.78); font: 800 ${compact ? 18 : 26}px system-ui, sans-serif; white-space: nowrap; display: none;`,
 );
 banner.dataset.hud = 'banner';
 const warningEl = overlay(
@@ -547,21 +622,34 @@ function clock(t: number): string {
   return `${Math.floor(s / 60)}:${String(s % 60).padStart(2, '0')}`;
 }
 
-function updateHud(i: ReturnType<typeof instruments>): void {
+/** A distance as the HUD says it, `d` m: metres under 1 km, else km to 0.1. */
+function distanceText(d: number): string {
+  return d >= 1000 ? `${(d / 1000).toFixed(1)} km` : `${d.toFixed(0)} m`;
+}
+
+/**
+ * The goal line above the scene, every frame: the next ring with its distance from the drawn
+ * aircraft (`at`), as the ring's own label says it, and the course clock.
+ */
+function updateGoal(): void {
   const n = nextRing(rings);
   const total = rings.length;
-  const distance = n >= 0 ? Math.hypot(rings[n]!.x - now[0]!, rings[n]!.y - now[1]!, rings[n]!.z - now[2]!) : 0;
   // The course clock: the time flown plus the misses' penalties, said beside it.
   const penalty = state.missed > 0 ? ` (+${MISS_PENALTY * state.missed} s)` : '';
   const courseClock = `${clock(courseTime(state.time, state.missed))}${penalty}`;
-  goalLine.textContent =
+  const text =
     state.phase === 'crashed'
       ? `Crashed · ${state.score} of ${total} rings`
       : n < 0
         ? `Course done · ${state.score} of ${total} rings in ${courseClock}`
-        : `Fly through ring ${n + 1} of ${total} · ${distance >= 1000 ? `${(distance / 1000).toFixed(1)} km` : `${distance.toFixed(0)} m`} · ${courseClock}`;
+        : `Fly through ring ${n + 1} of ${total} · ${distanceText(Math.hypot(rings[n]!.x - at.x, rings[n]!.y - at.y, rings[n]!.z - at.z))} · ${courseClock}`;
+  if (goalLine.textContent !== text) goalLine.textContent = text;
   // Red for 2 s after a miss: the time it cost shows where the clock is.
   goalLine.style.color = shell.world.time - missedAt < 2 ? '#ff8a5a' : '#ffd166';
+}
+
+function updateHud(i: ReturnType<typeof instruments>): void {
+  const total = rings.length;
   const speed = `${i.speed.toFixed(0)} m/s`;
   const missedNote = state.missed > 0 ? ` · missed ${state.missed}` : '';
   readLine.textContent = compact
@@ -615,7 +703,8 @@ function updateHud(i: ReturnType<typeof instruments>): void {
 function updateBanner(t: number): void {
   const last = events[events.length - 1];
   const age = last ? t - last.time : Infinity;
-  if (last && age >= 0 && age < BANNER_LIFE && state.phase === 'flying') {
+  // On a phone the banner gives way to a tip the flight waits on (the two covered the top third).
+  if (last && age >= 0 && age < BANNER_LIFE && state.phase === 'flying' && !(compact && holding && tipText)) {
     banner.style.display = 'block';
     banner.textContent = last.text;
     banner.style.color = last.colour;
@@ -686,7 +775,7 @@ function pointToNextRing(): void {
   // In the cockpit view the panel covers the stage's bottom: the label stays above it.
   const bottom = state.camera === 'cockpit' ? cockpit.panelTop() || h : h;
   ringAim.inView = ahead && x > 0 && x < w && y > 0 && y < bottom;
-  const distance = d >= 1000 ? `${(d / 1000).toFixed(1)} km` : `${d.toFixed(0)} m`;
+  const distance = distanceText(d);
   if (ringAim.inView) {
     ringAim.text = `ring ${i + 1} · ${distance}`;
     // Above the ring, clear of it (its radius on screen to the halo's outer edge, from a point on it
@@ -771,9 +860,20 @@ const RING_OUTER = (RING_RADIUS + 12 + 2.5) * 1.06;
  * tipping its wings (banking), so ring 2's tip says so.
  */
 const tip = overlay(
-  `left: 50%; width: max-content; max-width: min(92%, 560px); box-sizing: border-box; padding: 5px 14px; border-radius: 12px; background: rgba(8, 12, 20, 0.8); color: #eef3f8; font: 600 ${compact ? 14 : 16}px/1.35 system-ui, sans-serif; text-align: center; display: none;`,
+  `left: 50%; width: max-content; max-width: min(92%, 560px); box-sizing: border-box; padding: 5px 14px; border-radius: 12px; background: rgba(8, 12, 20, 0.8); color: #eef3f8; font: 600 ${compact ? 13 : 16}px/1.3 system-ui, sans-serif; text-align: center; display: none;`,
 );
 tip.dataset.hud = 'tip';
+const tipWords = document.createElement('div'),
+  tipWaitEl = document.createElement('div');
+tipWaitEl.dataset.hud = 'tip-wait';
+tipWaitEl.style.cssText = `color: #ffd166; font-size: ${compact ? 13 : 15}px; margin-top: 2px;`;
+tip.append(tipWords, tipWaitEl);
+/** The tip's second line now ('' when the flight is not waiting). */
+let tipWait = '';
+/** Game time after which the tip for `tipRing` goes (Infinity: it stays while its ring is next). */
+let tipGoneAt = Infinity;
+/** How long a tip stays after the pilot acts on it, s of game time: on a phone, and ring 1's start tip. */
+const TIP_LINGER = 3;
 /** Whether the page is used by touch first (a phone): the tips name the stick, not the keys. */
 const touchFirst = matchMedia('(pointer: coarse)').matches;
 /** What the tip shows now ('' when none; tests). */
@@ -799,13 +899,14 @@ const TIP_TOP = compact ? 11 : 12,
 /** The tip for the next ring now, or '' (none after the lessons, or once the flight is over). */
 function lessonTip(): string {
   const i = nextRing(rings);
-  if (state.phase !== 'flying' || i < 1 || i > 3) {
+  if (state.phase !== 'flying' || i < 0 || i > 3) {
     tipRing = -1;
     return '';
   }
   const ring = rings[i]!;
   if (tipRing !== i) {
     tipLow = false;
+    tipGoneAt = Infinity;
     // Right of the heading is (-vz, 0, vx) (y up).
     const V = shell.world.components.Velocity,
       e = handles.body;
@@ -813,19 +914,35 @@ function lessonTip(): string {
     tipSide = (ring.x - now[0]!) * -V.z[e]! + (ring.z - now[2]!) * V.x[e]! > 0 ? 1 : -1;
     tipUp = ring.y > now[1]! ? 1 : -1;
   }
+  // Ring 1's tip is the start's, up while the flight waits; on a phone each tip goes a little after
+  // the pilot has acted on it (TIP_LINGER), so it does not cover the sky all the way to its ring.
+  if ((i === 0 && !holding) || shell.world.time > tipGoneAt) return '';
   const side = tipSide > 0 ? 'right' : 'left';
   const key = tipSide > 0 ? '→' : '←';
   const stickSide = `push the stick ${side}`;
+  if (i === 0)
+    return `Fly through the yellow rings. The marker ⊕ shows where you will pass if you let go of the ${touchFirst ? 'stick' : 'keys'}.`;
   if (i === 2) {
     const up = tipUp > 0;
     const climbKey = up !== params.pilotPitch ? '↑' : '↓';
     const doIt = touchFirst ? `push the stick ${climbKey === '↑' ? 'up' : 'down'}` : `hold ${climbKey}`;
+    if (compact) return `Ring 3 is ${up ? 'higher' : 'lower'}: ${doIt} to ${up ? 'climb' : 'dive'}; let go to fly level.`;
     return `Ring 3 is ${up ? 'higher' : 'lower'}: ${doIt} to ${up ? 'climb' : 'dive'} gently, and let go to fly level.`;
   }
   const doIt = touchFirst ? stickSide : `hold ${key}`;
   if (i === 1)
-    return `Ring 2 is to the ${side}. A plane turns by tipping its wings (banking): ${doIt} and it leans and turns ${side}; let go to fly straight.`;
+    return compact
+      ? `Ring 2 is to the ${side}: ${doIt} to tip the wings and turn; let go to fly straight.`
+      : `Ring 2 is to the ${side}. A plane turns by tipping its wings (banking): ${doIt} and it leans and turns ${side}; let go to fly straight.`;
   return `Ring 4 is to the ${side}: tip the wings ${side} (${touchFirst ? stickSide : key}) to turn, then let go.`;
+}
+
+/** What the tip's second line asks while the flight waits for the pilot (`holding`): the input that goes on. */
+function waitLine(): string {
+  if (!holding) return '';
+  if (tipRing === 0) return touchFirst ? 'Move the stick to start.' : 'Press an arrow key to start.';
+  const key = tipRing === 2 ? (tipUp > 0 !== params.pilotPitch ? '↑' : '↓') : tipSide > 0 ? '→' : '←';
+  return touchFirst ? 'Paused: move the stick to fly on.' : `Paused: press ${key} to fly on.`;
 }
 
 /**
@@ -834,9 +951,13 @@ function lessonTip(): string {
  */
 function showTip(placed = true): void {
   const text = lessonTip();
-  if (text !== tipText) {
+  const wait = text ? waitLine() : '';
+  if (text !== tipText || wait !== tipWait) {
     tipText = text;
-    tip.textContent = text;
+    tipWait = wait;
+    tipWords.textContent = text;
+    tipWaitEl.textContent = wait;
+    tipWaitEl.style.display = wait ? 'block' : 'none';
     tip.style.display = text ? 'block' : 'none';
   }
   if (placed && text && !tipLow && ringAim.inView && ringCoversTip()) {
@@ -866,9 +987,13 @@ function ringCoversTip(): boolean {
 // ---- The flight-path marker: where the aircraft is going, at the next ring's distance ------------
 
 /**
- * A small circle with wings drawn where the aircraft's straight path meets the next ring's plane:
- * put it inside the ring and, holding the path, the aircraft flies through. Green when it is inside
- * the ring, white when not; hidden when the ring's plane is behind the path.
+ * A small circle with wings drawn where the aircraft's path meets the next ring's plane, the path
+ * curved by the turn and the climb it is in (./course.ts predictThroughRing): with the assist, the
+ * path flown if the pilot lets go now (the wings and the path roll level as the assist brings them),
+ * so holding a turn until the marker is in the ring and letting go flies through it; without the
+ * assist, the turn held as it is. (A straight line from the velocity ignored the turn: a stranger
+ * banking towards ring 3 had the marker at its edge and missed it by far.) Green when it is inside
+ * the ring, white when not; hidden when the ring's plane is not met.
  */
 const marker = overlay('width: 34px; height: 20px; display: none;');
 marker.dataset.hud = 'path-marker';
@@ -882,7 +1007,10 @@ function markPath(): void {
   const world = shell.world,
     e = handles.body,
     V = world.components.Velocity;
-  const through = i >= 0 && state.phase === 'flying' ? pathThroughRing(rings[i]!, now, [V.x[e]!, V.y[e]!, V.z[e]!]) : null;
+  const through =
+    i >= 0 && state.phase === 'flying'
+      ? predictThroughRing(rings[i]!, { position: now, velocity: [V.x[e]!, V.y[e]!, V.z[e]!], ...motion }, params.assist)
+      : null;
   pathAim.visible = !!through && Number.isFinite(through.offset);
   marker.style.display = pathAim.visible ? 'block' : 'none';
   if (!through || !pathAim.visible) return;
@@ -1022,6 +1150,7 @@ function frame(): void {
   }
   drawCrash();
   updateBanner(world.time);
+  updateGoal();
   if (readoutFrame++ % 6 === 0) updateHud(i);
 }
 
@@ -1058,6 +1187,7 @@ createStick({
   onChange: (x, y) => {
     stickInput.x = x;
     stickInput.y = y;
+    if (x !== 0 || y !== 0) pilotGoes();
   },
 });
 createButtonBar(
@@ -1113,6 +1243,8 @@ shell.expose({
   rings: () => rings.map((r) => ({ ...r })),
   /** The lesson tip over the scene now ('' when none shows). */
   tip: () => tipText,
+  /** Game time at which the tip now shown goes, s (Infinity: it stays while its ring is next). */
+  tipUntil: () => tipGoneAt,
   /** The banner's text now ('' when none shows) and the warning. */
   banner: () => ({ text: banner.style.display === 'none' ? '' : (banner.textContent ?? ''), warning: state.warning }),
   params,

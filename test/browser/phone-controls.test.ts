@@ -121,9 +121,45 @@ describe('phone controls', () => {
       c.Orientation.w[e] = 1;
     });
     const tip = await g.waitFor(() => (window.game as unknown as { tip(): string }).tip() || null, null);
-    expect(tip).toMatch(
-      /^Ring 2 is to the (left|right)\. A plane turns by tipping its wings \(banking\): push the stick \1 and it leans and turns \1; let go to fly straight\.$/,
-    );
+    expect(tip).toMatch(/^Ring 2 is to the (left|right): push the stick \1 to tip the wings and turn; let go to fly straight\.$/);
+    // The flight waits while it is read; the tip is compact (the tip and the ring's banner covered the
+    // top third of the phone's scene): the banner gives way, the tip is within a tenth of the scene's height.
+    const covered = await g.page.evaluate(() => {
+      const box = (s: string) => document.querySelector(s)!.getBoundingClientRect();
+      const banner = document.querySelector<HTMLElement>('[data-hud="banner"]')!;
+      return {
+        paused: window.game!.paused,
+        tip: box('[data-hud="tip"]').height,
+        stage: box('canvas').height,
+        banner: banner.style.display,
+      };
+    });
+    expect(covered.paused).toBe(true);
+    expect(covered.banner).toBe('none');
+    expect(covered.tip).toBeLessThan(0.12 * covered.stage);
+    // The stick goes on; the tip goes 3 s (game time) after.
+    const cdp2 = await g.page.context().newCDPSession(g.page);
+    await cdp2.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: finger([cx, cy]) });
+    await cdp2.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: finger([cx + 5, cy]) });
+    await cdp2.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
+    await cdp2.detach();
+    // Running again: the tip goes TIP_LINGER (3 s) of game time after the stick went on. Paused and
+    // stepped (deterministic game time), it is up 0.2 s before then and gone 0.1 s after.
+    const t1 = await g.waitFor(() => (window.game!.paused ? null : window.game!.world.time), null);
+    const until = await g.page.evaluate(() => (window.game as unknown as { tipUntil(): number }).tipUntil());
+    expect(until).toBeLessThanOrEqual(t1 + 3 + 1e-9);
+    expect(until).toBeGreaterThan(t1 + 2);
+    const tipAt = async (t: number) => {
+      await g.page.evaluate((to) => {
+        const w = window.game as unknown as { paused: boolean; step(): void; world: { time: number } };
+        w.paused = true;
+        while (w.world.time < to) w.step();
+      }, t);
+      await g.frames(2);
+      return g.page.evaluate(() => (window.game as unknown as { tip(): string }).tip());
+    };
+    expect(await tipAt(until - 0.2)).not.toBe('');
+    expect(await tipAt(until + 0.1)).toBe('');
     expect(g.errors).toEqual([]);
     await g.close();
   });

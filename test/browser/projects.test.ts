@@ -415,7 +415,9 @@ describe('projects', () => {
     expect(pointer.index).toBe(0);
     expect(pointer.text).toMatch(/^(. )?ring 1 · \d+(\.\d)? k?m( .)?$/);
     expect(await g.page.locator('[data-hud="ring-pointer"]').isVisible()).toBe(true);
-    expect(await g.page.locator('[data-hud="goal"]').textContent()).toMatch(/^Fly through ring 1 of 10 · /);
+    // The goal above the scene gives ring 1's distance as its label does (it said 2.0 km after a reset, the label 520 m).
+    const distance = pointer.text.match(/\d+(\.\d)? k?m/)![0];
+    expect(await g.page.locator('[data-hud="goal"]').textContent()).toMatch(new RegExp(`^Fly through ring 1 of 10 · ${distance} · `));
     // The label is clear of the flight-path marker (34 x 20 px round its point) in the ring: it sat
     // 30 px under the ring's centre, over the marker's crosshair.
     const aim = await g.waitFor(() => {
@@ -536,6 +538,14 @@ describe('projects', () => {
     expect(far).toBeLessThan(0.5); // m
     // Right rudder (E) swings the nose right.
     await g.press('r');
+    // After the reset the goal and ring 1's label give the same distance (the goal kept the old place's).
+    const agree = await g.waitFor(() => {
+      const w = window.game as unknown as { ringPointer(): { index: number; text: string }; world: { time: number } };
+      const p = w.ringPointer(),
+        goal = document.querySelector('[data-hud="goal"]')?.textContent ?? '';
+      return w.world.time === 0 && p.index === 0 ? { label: p.text, goal } : null;
+    }, null);
+    expect(agree.goal).toContain(` · ${agree.label.match(/\d+(\.\d)? k?m/)![0]} · `);
     const h0 = await g.page.evaluate(() => (window.game as unknown as Flight).instruments().heading);
     await g.page.keyboard.down('e');
     const turned = await g.waitFor(
@@ -576,6 +586,13 @@ describe('projects', () => {
     }, null);
     expect(start.inside).toBe(true);
     expect(await g.page.locator('[data-hud="path-marker"]').isVisible()).toBe(true);
+    // The flight waits for the pilot, the tip saying how to start (a stranger read the tips while it flew on).
+    const waiting = await g.page.evaluate(() => {
+      const w = window.game as unknown as Flight & { tip(): string };
+      return { paused: w.paused, time: w.world.time, tip: w.tip(), wait: document.querySelector('[data-hud="tip-wait"]')?.textContent };
+    });
+    expect(waiting).toMatchObject({ paused: true, time: 0, wait: 'Press an arrow key to start.' });
+    expect(waiting.tip).toMatch(/^Fly through the yellow rings\. The marker ⊕ shows where you will pass/);
     // A tap: the key's input grows from small (KEY_RAMP: full after 0.4 s held), not to full at once, then falls back to 0.
     await g.page.keyboard.down('ArrowUp');
     const tapped = await g.waitFor(() => {
@@ -584,6 +601,7 @@ describe('projects', () => {
     }, null);
     await g.page.keyboard.up('ArrowUp');
     expect(tapped).toBeLessThan(0.5);
+    expect(await g.page.evaluate(() => (window.game as unknown as Flight).paused)).toBe(false);
     await g.waitFor(() => (window.game as unknown as Flight).keyInput().pitch === 0, null);
     // Down held: the path dives, so the marker drops below the ring's centre and out of the ring.
     await g.page.keyboard.down('ArrowDown');
@@ -619,6 +637,8 @@ describe('projects', () => {
       c.Position.y[e] = r.y;
       c.Position.z[e] = r.z;
     });
+    // The flight waits for the pilot: Space starts it.
+    await g.page.keyboard.press('Space');
     const passed = await g.waitFor(() => {
       const w = window.game as unknown as Flight;
       return w.state.score === 1 ? { status: w.rings()[0]!.status, banner: w.banner().text } : null;
@@ -640,6 +660,11 @@ describe('projects', () => {
       `Ring 2 is to the ${tip.side}. A plane turns by tipping its wings (banking): hold ${tip.side === 'right' ? '→' : '←'} and it leans and turns ${tip.side}; let go to fly straight.`,
     );
     expect(await g.page.locator('[data-hud="tip"]').isVisible()).toBe(true);
+    // The flight waits while the lesson's tip is read, and says how to go on.
+    expect(await g.page.evaluate(() => (window.game as unknown as Flight).paused)).toBe(true);
+    expect(await g.page.locator('[data-hud="tip-wait"]').textContent()).toBe(
+      `Paused: press ${tip.side === 'right' ? '→' : '←'} to fly on.`,
+    );
     // Then put 150 m before ring 2 but 100 m above its centre (its radius is 55 m): a miss, counted
     // once, with its banner.
     await g.page.evaluate(() => {
@@ -651,6 +676,7 @@ describe('projects', () => {
       c.Position.y[e] = r.y + 100;
       c.Position.z[e] = r.z - 150 * r.nz;
     });
+    await g.page.keyboard.press('Space');
     const missed = await g.waitFor(() => {
       const w = window.game as unknown as Flight;
       return w.rings()[1]!.status === 'missed' ? { missed: w.state.missed, banner: w.banner().text } : null;
@@ -666,6 +692,7 @@ describe('projects', () => {
       const w = window.game as unknown as Flight;
       w.world.components.Position.y[w.aircraftBody()] = 1; // below every hill and the sea
     });
+    await g.page.keyboard.press('Space'); // ring 3's tip waits
     await g.waitFor(() => (window.game as unknown as Flight).state.phase === 'crashed', null);
     const again = g.page.getByRole('button', { name: 'Try again ↺', exact: true });
     await again.waitFor({ state: 'visible' });
