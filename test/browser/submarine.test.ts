@@ -180,7 +180,7 @@ async function diveOnPhone(g: GamePage): Promise<void> {
     (window.game as unknown as { beaconPointer(): { visible: boolean; text: string } }).beaconPointer(),
   );
   expect(aim.visible).toBe(true);
-  expect(aim.text).toMatch(/^beacon ([A-Z]: )?(\d+ m (ahead|behind)(, \d+ m (down|up))?|\d+ m (down|up)|here)$/);
+  expect(aim.text).toMatch(/^(beacon |target [A-Z]: )(\d+ m (ahead|behind)(, \d+ m (down|up))?|\d+ m (down|up)|here)$/);
   // The label is kept off the hull (it was drawn across it on a phone): with the boat put 10 m
   // above its beacon, the label over the beacon would cross the hull.
   const clear = await g.page.evaluate(async () => {
@@ -551,7 +551,7 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     });
     expect(warn.ahead.index).toBe(0);
     expect(warn.ahead.time).toBeGreaterThan(2);
-    expect(warn.ahead.text).toMatch(/^⚠ MINE: (rise over ▲|dive under ▼)$/);
+    expect(warn.ahead.text).toMatch(/^⚠ MINE \d+ m: (rise over ▲|dive under ▼)$/);
     const screen = (x: number, y: number) => [
       warn.cam.width / 2 + (x - warn.cam.x) * warn.cam.zoom,
       warn.cam.height / 2 - (y - warn.cam.y) * warn.cam.zoom,
