@@ -171,16 +171,16 @@ export const HELM = Object.freeze({
  * Dive / Rise from a key ramps up (`keyHeaveShare`): it asks for this share of the helm's dive
  * (climb) speed at first, all of it after `KEY_HEAVE_RAMP` s held, so a tap moves the depth order by
  * a metre or less and a long hold still dives fast (at full speed at once, 1.5 s of a key took the
- * order 19 m down and a stranger could not set a depth). The on-screen stick is proportional already.
+ * boat 11 m or more down and a stranger could not set a depth). The on-screen stick is proportional already.
  */
-export const KEY_HEAVE_START = 0.15;
+export const KEY_HEAVE_START = 0.1;
 /** How long a Dive or Rise key takes to ask for all of the dive (climb) speed, s. */
-export const KEY_HEAVE_RAMP = 2;
+export const KEY_HEAVE_RAMP = 3;
 
 /**
  * The share of full Dive / Rise (`HelmInput.heave`) a key held since game time `since` asks for at
  * game time `now` (s): `KEY_HEAVE_START` at first, rising linearly to 1 over `KEY_HEAVE_RAMP` s.
- * 1.5 s held moves the order about 7 m at the dive speed; 0.25 s about 0.5 m.
+ * From a hover, 1.5 s held takes the boat about 6 m down (11 m unramped), a 0.25 s tap about 0.3 m.
  * @throws RangeError when `since` or `now` is not finite.
  */
 export function keyHeaveShare(since: number, now: number): number {
