@@ -549,11 +549,23 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
       const w = window.game as unknown as Sub;
       const e = w.hull(),
         c = w.world.components;
-      return { ahead: w.mineAhead()!, cam: w.camera(), hull: [c.Position.x[e]!, c.Position.y[e]!], mine: w.mines()[0]! };
+      return {
+        ahead: w.mineAhead()!,
+        cam: w.camera(),
+        hull: [c.Position.x[e]!, c.Position.y[e]!],
+        mine: w.mines()[0]!,
+        pause: (w as unknown as { pauseOverlay(): { visible: boolean; text: string } }).pauseOverlay(),
+      };
     });
+    // Paused (by the test): the overlay over the scene says so and how to resume.
+    expect(warn.pause.visible).toBe(true);
+    expect(warn.pause.text).toMatch(/^Paused\n(P|▶) to resume$/);
     expect(warn.ahead.index).toBe(0);
     expect(warn.ahead.time).toBeGreaterThan(2);
     expect(warn.ahead.text).toMatch(/^⚠ MINE \d+ m: (rise over ▲|dive under ▼)$/);
+    // The metres told: along x from the bow (half the 12 m hull) to the mine's near side (2.4 m), to 1 m.
+    const told = Number(/MINE (\d+) m/.exec(warn.ahead.text)![1]);
+    expect(Math.abs(told - (warn.mine.x - warn.hull[0]! - 6 - 2.4))).toBeLessThanOrEqual(1);
     const screen = (x: number, y: number) => [
       warn.cam.width / 2 + (x - warn.cam.x) * warn.cam.zoom,
       warn.cam.height / 2 - (y - warn.cam.y) * warn.cam.zoom,
