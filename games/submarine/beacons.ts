@@ -1,8 +1,8 @@
 /**
- * The beacon pointer's choice: which beacon the arrow at the screen's edge leads to. It keeps one
- * beacon until that one is collected, and moves to another only when the other is clearly nearer
- * (`BEACON_SWITCH`), so it does not flip between two beacons at about the same distance while the
- * boat moves. Headless (no drawing), so the rule is tested in node.
+ * The beacon pointer's choice: which beacon the arrow at the screen's edge leads to (the target).
+ * It holds one beacon until that one is collected, however near the others pass (a stranger who
+ * saw the target flip between beacons as the boat went by them never knew which to chase), and then
+ * takes the nearest one left. Headless (no drawing), so the rule is tested in node.
  */
 
 import { assertFinite } from '@bitphysics/physics/validate';
@@ -16,19 +16,14 @@ import { assertFinite } from '@bitphysics/physics/validate';
 export const BEACON_CATCH = 8;
 
 /**
- * The pointer leaves its beacon for another one only when that one is nearer than this fraction
- * of the distance to its own (0.6: a beacon at 45 m takes over from one at 80 m, one at 60 m does not).
- */
-export const BEACON_SWITCH = 0.6;
-
-/**
- * The beacon the pointer leads to from the hull at (x, y), m: `current` while it is uncollected,
- * unless another uncollected one is nearer than `BEACON_SWITCH` times its distance; with no current
- * one (-1 or collected), the nearest uncollected. -1 when all are collected.
+ * The beacon the pointer leads to from the hull at (x, y), m: `current` while it is uncollected (it
+ * is held, however near another one comes); with no current one (-1, out of range or collected),
+ * the nearest uncollected one. -1 when all are collected.
  * @param beacons (x, y) pairs, m.
  * @param taken Whether each beacon has been collected.
  */
 export function chooseBeacon(beacons: ArrayLike<number>, taken: readonly boolean[], x: number, y: number, current: number): number {
+  if (current >= 0 && current < taken.length && !taken[current]) return current;
   let nearest = -1,
     best = Infinity;
   for (let i = 0; i < taken.length; i++) {
@@ -39,9 +34,7 @@ export function chooseBeacon(beacons: ArrayLike<number>, taken: readonly boolean
       nearest = i;
     }
   }
-  if (current < 0 || current >= taken.length || taken[current] || nearest === current) return nearest;
-  const own = Math.hypot(beacons[2 * current]! - x, beacons[2 * current + 1]! - y);
-  return best < BEACON_SWITCH * own ? nearest : current;
+  return nearest;
 }
 
 /** What the pointer's label adds when the seabed rises between the hull and its beacon. */
@@ -89,7 +82,8 @@ export function seabedBetween(x0: number, y0: number, x1: number, y1: number, be
  * to it (`seabedBetween`), which adds `RIDGE_WARNING` on a second line; `mine`: a live mine lies on
  * that way (./mines.ts `mineOnWay`) and on which side to pass it, which adds `MINE_WARNING` there
  * instead when there is no ridge; `name`: the beacon's name (`beaconName`), put first as
- * "beacon C: 85 m ahead", so a change of beacon is seen.
+ * "target C: 85 m ahead" (the one beacon to steer for, held until collected), so a change of target
+ * is seen; without a name the label starts "beacon".
  */
 export function beaconLabel(dx: number, dy: number, angle = 0, ridge = false, mine: '' | 'over' | 'under' = '', name = ''): string {
   const along = dx * Math.cos(angle) + dy * Math.sin(angle);
@@ -97,7 +91,7 @@ export function beaconLabel(dx: number, dy: number, angle = 0, ridge = false, mi
   if (Math.abs(along) >= 3) parts.push(`${Math.abs(along).toFixed(0)} m ${along > 0 ? 'ahead' : 'behind'}`);
   if (Math.abs(dy) >= 3) parts.push(`${Math.abs(dy).toFixed(0)} m ${dy < 0 ? 'down' : 'up'}`);
   const warning = ridge ? RIDGE_WARNING : mine ? MINE_WARNING[mine] : '';
-  return `beacon ${name ? `${name}: ` : ''}${parts.length > 0 ? parts.join(', ') : 'here'}${warning ? `\n${warning}` : ''}`;
+  return `${name ? `target ${name}: ` : 'beacon '}${parts.length > 0 ? parts.join(', ') : 'here'}${warning ? `\n${warning}` : ''}`;
 }
 
 /**

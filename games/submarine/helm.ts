@@ -167,6 +167,29 @@ export const HELM = Object.freeze({
   stopGain: 0.2,
 });
 
+/**
+ * Dive / Rise from a key ramps up (`keyHeaveShare`): it asks for this share of the helm's dive
+ * (climb) speed at first, all of it after `KEY_HEAVE_RAMP` s held, so a tap moves the depth order by
+ * a metre or less and a long hold still dives fast (at full speed at once, 1.5 s of a key took the
+ * boat 11 m or more down and a stranger could not set a depth). The on-screen stick is proportional already.
+ */
+export const KEY_HEAVE_START = 0.1;
+/** How long a Dive or Rise key takes to ask for all of the dive (climb) speed, s. */
+export const KEY_HEAVE_RAMP = 3;
+
+/**
+ * The share of full Dive / Rise (`HelmInput.heave`) a key held since game time `since` asks for at
+ * game time `now` (s): `KEY_HEAVE_START` at first, rising linearly to 1 over `KEY_HEAVE_RAMP` s.
+ * From a hover, 1.5 s held takes the boat about 6 m down (11 m unramped), a 0.25 s tap about 0.3 m.
+ * @throws RangeError when `since` or `now` is not finite.
+ */
+export function keyHeaveShare(since: number, now: number): number {
+  if (!Number.isFinite(since)) throw new RangeError(`keyHeaveShare: since must be finite, got ${since}`);
+  if (!Number.isFinite(now)) throw new RangeError(`keyHeaveShare: now must be finite, got ${now}`);
+  const held = Math.max(0, now - since);
+  return Math.min(1, KEY_HEAVE_START + ((1 - KEY_HEAVE_START) * held) / KEY_HEAVE_RAMP);
+}
+
 const clamp = (v: number, lo: number, hi: number): number => (v < lo ? lo : v > hi ? hi : v);
 
 /** The distance a boat at vertical speed `vy` (m/s) stops in at the deceleration `brake` (m/s^2, > 0), m. */

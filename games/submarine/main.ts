@@ -26,6 +26,7 @@ import {
   createPanel,
   createStick,
   getSound,
+  isTouchDevice,
   numberParam,
   pageLayout,
   seedParam,
@@ -36,7 +37,7 @@ import { SUBMARINE, SUBMARINE_NEUTRAL_FILL, type SubmarineHandles, seabedHeight,
 import { Graphics, Text } from 'pixi.js';
 import { BEACON_CATCH, beaconLabel, beaconName, chooseBeacon, seabedBetween } from './beacons';
 import { drawBoat } from './boat-drawing';
-import { createHelmState, type HelmInput, steer } from './helm';
+import { createHelmState, type HelmInput, keyHeaveShare, steer } from './helm';
 import {
   hullDistance,
   layMines,
@@ -233,6 +234,7 @@ function createWorld(): PhysicsWorld {
   blasts.length = 0;
   aim.index = -1;
   aimSwitchedAt = Number.NEGATIVE_INFINITY;
+  heaveKeySince = Number.NaN;
   zoom = Number.NaN;
   Object.assign(camera, { leadX: 0, leadY: 0, time: 0, shake: 0 });
   hitMarks.length = 0;
@@ -256,8 +258,14 @@ addEventListener('keyup', (e) => {
 });
 addEventListener('blur', () => held.clear());
 
-/** The controls held now (keys, the on-screen buttons, which send the same keys, and the stick). */
-function heldInput(): HelmInput {
+/** Game time a Dive or Rise key was first held (s), NaN while none is. */
+let heaveKeySince = Number.NaN;
+
+/** The controls held now, at game time `now` (s): keys, the on-screen buttons, which send the same keys, and the stick. */
+function heldInput(now: number): HelmInput {
+  const heaveKey = held.has('s') || held.has('w') || held.has('arrowdown') || held.has('arrowup');
+  if (!heaveKey) heaveKeySince = Number.NaN;
+  else if (Number.isNaN(heaveKeySince)) heaveKeySince = now;
   return {
     dive: held.has('s') || held.has('arrowdown') || stickInput.y < -STICK_DEAD,
     rise: held.has('w') || held.has('arrowup') || stickInput.y > STICK_DEAD,
@@ -265,7 +273,7 @@ function heldInput(): HelmInput {
     noseUp: held.has('e'),
     ahead: held.has('d') || held.has('arrowright') || stickInput.x > STICK_DEAD,
     astern: held.has('a') || held.has('arrowleft') || stickInput.x < -STICK_DEAD,
-    heave: stickShare(stickInput.y, held.has('s') || held.has('w') || held.has('arrowdown') || held.has('arrowup')),
+    heave: heaveKey ? keyHeaveShare(heaveKeySince, now) : stickShare(stickInput.y, false),
     drive: stickShare(stickInput.x, held.has('a') || held.has('d') || held.has('arrowleft') || held.has('arrowright')),
   };
 }
@@ -289,7 +297,7 @@ let lastPing = 0;
 
 function stepWorld(world: PhysicsWorld): void {
   // The seabed stops a dive until Dive is let go (./seabed.ts).
-  const input = seabedInput(state, heldInput());
+  const input = seabedInput(state, heldInput(world.time));
   const vertical = input.dive === input.rise ? 0 : input.dive ? -1 : 1;
   if (vertical !== 0 && vertical !== lastVertical) sound.launch(0.25);
   lastVertical = vertical;
@@ -652,7 +660,41 @@ const mineTag = new Text({
 mineTag.anchor.set(0.5);
 mineTag.visible = false;
 app.stage.addChild(mineTag);
-/** The warning's words for each side to pass the mine on. */
+/**
+ * Over the scene while paused (drawPause): the scene dimmed and the word with how to resume, so a
+ * pause is not mistaken for a hang (a stranger saw only "paused" in the side panel, or on a phone
+ * only the pause button lit).
+ */
+const pauseShade = new Graphics({ label: 'paused' });
+const pauseText = new Text({
+  text: '',
+  style: {
+    fill: 0xffffff,
+    fontSize: 40,
+    fontWeight: '800',
+    fontFamily: 'system-ui, sans-serif',
+    align: 'center',
+    stroke: { color: 0x000000, width: 6 },
+  },
+});
+pauseText.anchor.set(0.5);
+pauseShade.visible = pauseText.visible = false;
+app.stage.addChild(pauseShade, pauseText);
+const touch = isTouchDevice();
+/** Shows or hides the pause overlay over a `W` x `H` px scene, on top of everything drawn on the stage. */
+function drawPause(W: number, H: number): void {
+  const on = shell.paused && !state.over;
+  pauseShade.visible = pauseText.visible = on;
+  if (!on) return;
+  // Pools of labels are added to the stage as they are needed: kept under the overlay.
+  if (app.stage.children[app.stage.children.length - 1] !== pauseText) app.stage.addChild(pauseShade, pauseText);
+  pauseShade.clear().rect(0, 0, W, H).fill({ color: 0x000000, alpha: 0.5 });
+  const text = touch ? 'Paused\n▶ to resume' : 'Paused\nP to resume';
+  if (pauseText.text !== text) pauseText.text = text;
+  pauseText.style.fontSize = W < 500 ? 32 : 40;
+  pauseText.position.set(W / 2, H / 2);
+}
+/** The warning's words for each side to pass the mine on (placeMineTag adds how far ahead the mine is: "MINE 40 m"). */
 const MINE_TAG_TEXT = { over: '⚠ MINE: rise over ▲', under: '⚠ MINE: dive under ▼' } as const;
 /** The mine warning as last drawn (tests): its words ('' while none), the tag's box and the arrow's tip and tail (px). */
 const mineWarning = { text: '', box: [0, 0, 0, 0], tip: [0, 0], tail: [0, 0] };
@@ -667,7 +709,10 @@ function placeMineTag(k: number, hx: number, hy: number, W: number, H: number): 
   mineWarning.text = '';
   mineWarning.box = [0, 0, 0, 0];
   if (!ahead || state.over) return;
-  mineTag.text = MINE_TAG_TEXT[ahead.side];
+  // How far ahead the mine is, along x to its near side, so an early warning reads as early.
+  const m = mines[ahead.index]!,
+    away = Math.max(0, Math.abs(m.x - shell.world.components.Position.x[handles.hull]!) - SUBMARINE.length / 2 - MINE_RADIUS);
+  mineTag.text = MINE_TAG_TEXT[ahead.side].replace('MINE', `MINE ${away.toFixed(0)} m`);
   const w = mineTag.width + 16,
     h = mineTag.height + 6;
   const off = (SUBMARINE.height / 2) * k + (ahead.side === 'over' ? 1.6 * k + 6 : 6) + h / 2;
@@ -982,6 +1027,10 @@ const ON_SCREEN_MARGIN = 14;
 const gaugeMarks: Text[] = [];
 /** The boat's depth in figures by its pointer on the gauge ("53 m"). */
 let gaugeDepth: Text | undefined;
+/** The target beacon's name and depth by its dot on the gauge ("B 62 m"). */
+let gaugeTarget: Text | undefined;
+/** The target beacon's name as the gauge writes it (set in draw). */
+let targetName = '';
 /** A small gauge figure: light, stroked dark to read over bright water, right-aligned at its anchor. */
 function gaugeText(size: number): Text {
   const text = new Text({
@@ -1001,9 +1050,10 @@ function gaugeText(size: number): Text {
 /**
  * Draws the depth gauge at the right edge of a `W` x `H` px scene: a thin see-through scale from the
  * surface (top) to the course's deepest seabed (`courseDepth`, bottom) with a tick every 10 m and a
- * figure every 50 m, the seabed under the boat (brown below it), the beacon the pointer leads to (a
- * yellow dot), the boat's depth (a yellow pointer with its depth in metres beside it) and the depth
- * ordered (a cyan bar, joined to the boat's pointer while the boat has yet to get there), so the
+ * figure every 50 m, the seabed under the boat (brown below it), the target beacon (a yellow dot
+ * with its name and depth), the boat's depth (a yellow pointer with its depth in metres beside it)
+ * and the depth ordered (a cyan bar, joined to the boat's pointer while the boat has yet to get
+ * there), so the
  * player reads the depth and sees the order move at once and the boat answer it.
  */
 function drawDepthGauge(W: number, H: number, depth: number, order: number, bed: number, beacon: number): void {
@@ -1018,10 +1068,28 @@ function drawDepthGauge(W: number, H: number, depth: number, order: number, bed:
     g.rect(x0 - (d % 50 === 0 ? 4 : 0), at(d) - 0.5, d % 50 === 0 ? w + 4 : w / 2, 1).fill({ color: 0xcfe6ff, alpha: 0.6 });
   g.rect(x0, top, w, bottom - top).stroke({ color: 0x8fb8d8, width: 1, alpha: 0.6 });
   if (Number.isFinite(beacon))
-    g.circle(x0 + w / 2, at(beacon), 4)
+    g.circle(x0 + w / 2, at(beacon), 5)
       .fill(0xffe066)
       .stroke({ color: 0x06213a, width: 1.5 });
   const yb = at(depth);
+  // The target's name and depth by its dot ("B 62 m"), hidden where the boat's depth is written
+  // and where the pointer's badge or label at the view's edge is drawn.
+  if (!gaugeTarget) {
+    gaugeTarget = gaugeText(12);
+    gaugeTarget.style.fill = 0xffe066;
+  }
+  gaugeTarget.visible = Number.isFinite(beacon) && Math.abs(at(beacon) - yb) > 14;
+  if (gaugeTarget.visible) {
+    gaugeTarget.text = `${targetName} ${Math.max(0, beacon).toFixed(0)} m`;
+    gaugeTarget.position.set(x0 - 9, Math.max(top + 6, Math.min(bottom - 6, at(beacon))));
+    const tw = gaugeTarget.width,
+      th = gaugeTarget.height,
+      tx = gaugeTarget.x - tw,
+      ty = gaugeTarget.y - th / 2;
+    for (const [bx, by, bw, bh] of [aim.badge, aim.label] as [number, number, number, number][])
+      if (pointer.visible && bw > 0 && tx < bx + bw + 2 && bx < tx + tw + 2 && ty < by + bh + 2 && by < ty + th + 2)
+        gaugeTarget.visible = false;
+  }
   if (Number.isFinite(order)) {
     const yo = at(order);
     if (Math.abs(yo - yb) > 1.5) g.rect(x0 - 3.5, Math.min(yo, yb), 3, Math.abs(yo - yb)).fill({ color: 0x7fe3ff, alpha: 0.9 });
@@ -1131,8 +1199,8 @@ function draw(): void {
     hyw = c.Position.y[e]!;
   const before = aim.index;
   aim.index = chooseBeacon(handles.beacons, taken, hxw, hyw, aim.index);
-  // The pointer left a beacon not yet collected for a nearer one: its label pulses (drawBeacons).
-  if (before >= 0 && aim.index !== before && !taken[before]) aimSwitchedAt = world.time;
+  // A new target (the last one collected): its label pulses (drawBeacons).
+  if (before >= 0 && aim.index >= 0 && aim.index !== before) aimSwitchedAt = world.time;
   // The camera frames the hull and the beacon the pointer leads to: it centres between them and
   // zooms out (down to FRAME_MIN_ZOOM px/m) until both fit inside FRAME_MARGIN px of the edges, so
   // the player sees where to go instead of steering by an arrow to a point off screen.
@@ -1309,11 +1377,32 @@ function draw(): void {
     if (taken[i]) continue;
     const bx = sx(handles.beacons[2 * i]!),
       by = sy(handles.beacons[2 * i + 1]!);
+    // The target (the pointer's beacon) bright, in four corner brackets round its catch disc that
+    // close in and open out; the others dimmer, so the one to steer for stands out.
+    const dim = i === aim.index ? 1 : 0.55;
     g.circle(bx, by, BEACON_CATCH * k)
-      .fill({ color: 0xffe066, alpha: 0.08 })
-      .stroke({ color: 0xffe066, alpha: 0.3, width: 1.5 });
-    g.circle(bx, by, Math.max(5, 1.2 * k)).fill({ color: 0xffe066, alpha: 0.9 + 0.1 * Math.sin(4 * t) });
-    g.circle(bx, by, Math.max(9, (2 + Math.sin(3 * t)) * k)).stroke({ color: 0xffe066, alpha: 0.4, width: 2 });
+      .fill({ color: 0xffe066, alpha: 0.08 * dim })
+      .stroke({ color: 0xffe066, alpha: 0.3 * dim, width: 1.5 });
+    g.circle(bx, by, Math.max(5, 1.2 * k)).fill({ color: 0xffe066, alpha: dim * (0.9 + 0.1 * Math.sin(4 * t)) });
+    g.circle(bx, by, Math.max(9, (2 + Math.sin(3 * t)) * k)).stroke({ color: 0xffe066, alpha: 0.4 * dim, width: 2 });
+    if (i === aim.index && aim.onScreen) {
+      const r = Math.max(14, BEACON_CATCH * k) + 6 + 3 * Math.sin(3 * t),
+        arm = Math.max(6, 0.35 * r);
+      for (const [ux, uy] of [
+        [-1, -1],
+        [1, -1],
+        [1, 1],
+        [-1, 1],
+      ] as const)
+        for (const [width, color] of [
+          [5, 0x06213a],
+          [2.5, 0xffe066],
+        ] as const)
+          g.moveTo(bx + ux * r, by + uy * (r - arm))
+            .lineTo(bx + ux * r, by + uy * r)
+            .lineTo(bx + ux * (r - arm), by + uy * r)
+            .stroke({ color, width, cap: 'round', join: 'round' });
+    }
     if (i === aim.index || bx < 0 || bx > W || by < 0 || by > H) continue;
     let tag = tags[tagged];
     if (!tag) {
@@ -1363,8 +1452,8 @@ function draw(): void {
     banner.alpha = u < 0.7 ? 1 : (1 - u) / 0.3;
     banner.scale.set(u < 0.08 ? 0.6 + 0.4 * (u / 0.08) + 0.15 * Math.sin((Math.PI * u) / 0.08) : 1);
   }
-  // The pointer: an arrow at the screen's edge leading to one beacon (./beacons.ts: kept until it is
-  // collected or another is much nearer) while it is off screen, with its distance and depth.
+  // The pointer: an arrow at the screen's edge leading to the target beacon (./beacons.ts: held until
+  // it is collected) while it is off screen, with its distance and depth.
   placeMineTag(k, sx(hxw), sy(hyw), W, H);
   pointer.visible = aim.index >= 0;
   if (aim.index >= 0) {
@@ -1433,9 +1522,10 @@ function draw(): void {
     } else {
       aim.angle = Number.NaN;
       aim.badge = [0, 0, 0, 0];
-      // Above the catch disc's rim, so the label does not cover the zone to steer into.
+      // Above the catch disc's rim and the target's brackets (drawn at least 14 px and up to 9 px
+      // more out from the beacon), so the label covers neither.
       pointer.x = bx;
-      pointer.y = by - BEACON_CATCH * k - 10;
+      pointer.y = by - Math.max(14, BEACON_CATCH * k) - 22;
     }
     // Kept inside the view (a long label beside a badge at a side edge).
     // (its pill is 7 px wider each side than the text and the switch's ring 3 px more; 5 px more
@@ -1448,7 +1538,7 @@ function draw(): void {
       hy0 = sy(hyw);
     const onHull = () => Math.abs(pointer.x - hx0) < hr + pointer.width / 2 + 7 && Math.abs(pointer.y - hy0) < hr + pointer.height / 2 + 2;
     // Under the beacon first (the label stays with it), else above or below the hull.
-    if (onHull() && aim.onScreen) pointer.y = by + BEACON_CATCH * k + 10;
+    if (onHull() && aim.onScreen) pointer.y = by + Math.max(14, BEACON_CATCH * k) + 22;
     if (onHull()) {
       const above = hy0 - hr - pointer.height / 2 - 4,
         below = hy0 + hr + pointer.height / 2 + 4;
@@ -1560,6 +1650,7 @@ function draw(): void {
     speed = Math.hypot(c.Velocity.x[e]!, c.Velocity.y[e]!);
   const floor = seabedHeight(handles.seabed, cx);
   engine.set(state.over ? 0 : Math.abs(state.throttle));
+  targetName = aim.index >= 0 ? beaconName(aim.index) : '';
   drawDepthGauge(
     W,
     H,
@@ -1569,6 +1660,7 @@ function draw(): void {
     aim.index >= 0 ? -handles.beacons[2 * aim.index + 1]! : Number.NaN,
   );
   drawHits(t, k, sx, sy, W, H, sy(hyw) - (Hh + 2.5) * k);
+  drawPause(W, H);
   // The hull gauge at a hit: red and enlarged, fading over GAUGE_FLASH s of game time.
   const hitAge = hitMarks.length > 0 ? t - hitMarks[hitMarks.length - 1]!.time : Number.POSITIVE_INFINITY;
   const flashNow = hitAge >= 0 && hitAge < GAUGE_FLASH ? 1 - hitAge / GAUGE_FLASH : 0;
@@ -1673,6 +1765,8 @@ shell.expose({
     stickInput.x = Math.max(-1, Math.min(1, x));
     stickInput.y = Math.max(-1, Math.min(1, y));
   },
+  /** Whether the pause overlay shows, and its words. */
+  pauseOverlay: () => ({ visible: pauseText.visible, text: pauseText.text }),
   /** The end card's text ('' while the run goes on). */
   endText: (): string => (endCard.style.display === 'none' ? '' : (endCard.textContent ?? '')),
   /** Sets the screw's throttle directly, in [-0.5, 1] (the helm sets the tanks and thrusters each step). */

@@ -35,12 +35,14 @@ export const MINE_BED_CLEARANCE = 5;
  */
 export const MINE_REACTION = 1;
 /**
- * How far ahead the warning looks along the boat's course, s (mineAhead): 52 m at full ahead
- * (12.9 m/s). Measured headless (helm and physics, test/games/submarine-mines.test.ts): a boat at
- * full ahead on a level run into a mine on its line, holding Rise from MINE_REACTION s after the
- * warning, passes it with 2 m or more to spare; rising over a mine takes about 1.5 s from level.
+ * How far ahead the warning looks along the boat's course, s (mineAhead): 65 m at full ahead
+ * (12.9 m/s). Long enough for a pilot on the keys, whose Dive or Rise ramps up (helm.ts
+ * keyHeaveShare): at 4 s a stranger read "dive under" when the mine was already at the bow. Measured
+ * headless (helm and physics, test/games/submarine-mines.test.ts): a boat at full ahead on a level
+ * run into a mine on its line, holding Rise from MINE_REACTION s after the warning, passes it with
+ * 2 m or more to spare.
  */
-export const MINE_WARN_TIME = 4;
+export const MINE_WARN_TIME = 5;
 /** The warning's room round the hull, m: a course that passes a mine closer than this (beyond contact) is warned of. */
 export const MINE_WARN_MARGIN = 1.5;
 /**

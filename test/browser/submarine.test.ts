@@ -180,7 +180,7 @@ async function diveOnPhone(g: GamePage): Promise<void> {
     (window.game as unknown as { beaconPointer(): { visible: boolean; text: string } }).beaconPointer(),
   );
   expect(aim.visible).toBe(true);
-  expect(aim.text).toMatch(/^beacon ([A-Z]: )?(\d+ m (ahead|behind)(, \d+ m (down|up))?|\d+ m (down|up)|here)$/);
+  expect(aim.text).toMatch(/^(beacon |target [A-Z]: )(\d+ m (ahead|behind)(, \d+ m (down|up))?|\d+ m (down|up)|here)$/);
   // The label is kept off the hull (it was drawn across it on a phone): with the boat put 10 m
   // above its beacon, the label over the beacon would cross the hull.
   const clear = await g.page.evaluate(async () => {
@@ -290,7 +290,9 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
         touchPoints: [{ x: stick.x + stick.width / 2, y: stick.y + stick.height - 10, id: 1 }],
       });
     else await g.page.keyboard.down('s');
-    await g.waitFor((t) => (window.game as unknown as Sub).world.time > t + 0.8, t0, 60_000);
+    // The stick's full push dives at full speed at once; the key ramps up (helm.ts keyHeaveShare),
+    // so it is held longer for the order to run metres ahead.
+    await g.waitFor(([t, held]) => (window.game as unknown as Sub).world.time > t + held, [t0, touch ? 0.8 : 1.5] as const, 60_000);
     if (cdp) {
       await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
       await cdp.detach();
@@ -314,7 +316,7 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     }, t1);
     expect(r.movedWhenOrdered).toBeLessThan(0.05);
     expect(r.shown).toBe(true);
-    expect(r.deep).toBeGreaterThan(2); // 0.8 s of a full dive
+    expect(r.deep).toBeGreaterThan(2); // 0.8 s of a full dive on the stick, 1.5 s of the ramped key
     expect(r.orderKept).toBe(true);
     expect(r.past).toBeLessThan(0.2);
     expect(Math.abs(r.end)).toBeLessThan(0.2);
@@ -547,11 +549,23 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
       const w = window.game as unknown as Sub;
       const e = w.hull(),
         c = w.world.components;
-      return { ahead: w.mineAhead()!, cam: w.camera(), hull: [c.Position.x[e]!, c.Position.y[e]!], mine: w.mines()[0]! };
+      return {
+        ahead: w.mineAhead()!,
+        cam: w.camera(),
+        hull: [c.Position.x[e]!, c.Position.y[e]!],
+        mine: w.mines()[0]!,
+        pause: (w as unknown as { pauseOverlay(): { visible: boolean; text: string } }).pauseOverlay(),
+      };
     });
+    // Paused (by the test): the overlay over the scene says so and how to resume.
+    expect(warn.pause.visible).toBe(true);
+    expect(warn.pause.text).toMatch(/^Paused\n(P|▶) to resume$/);
     expect(warn.ahead.index).toBe(0);
     expect(warn.ahead.time).toBeGreaterThan(2);
-    expect(warn.ahead.text).toMatch(/^⚠ MINE: (rise over ▲|dive under ▼)$/);
+    expect(warn.ahead.text).toMatch(/^⚠ MINE \d+ m: (rise over ▲|dive under ▼)$/);
+    // The metres told: along x from the bow (half the 12 m hull) to the mine's near side (2.4 m), to 1 m.
+    const told = Number(/MINE (\d+) m/.exec(warn.ahead.text)![1]);
+    expect(Math.abs(told - (warn.mine.x - warn.hull[0]! - 6 - 2.4))).toBeLessThanOrEqual(1);
     const screen = (x: number, y: number) => [
       warn.cam.width / 2 + (x - warn.cam.x) * warn.cam.zoom,
       warn.cam.height / 2 - (y - warn.cam.y) * warn.cam.zoom,

@@ -1,24 +1,16 @@
 /**
- * The submarine's beacon pointer (games/submarine/beacons.ts), headless: it keeps one beacon instead
- * of flipping between two at about the same distance, and a boat that follows it (ahead at 10 m/s,
+ * The submarine's beacon pointer (games/submarine/beacons.ts), headless: it holds one target beacon
+ * until it is collected instead of flipping between beacons as the boat passes them, and a boat that follows it (ahead at 10 m/s,
  * down or up at 5 m/s, as the game's boat) sees the distance fall until it collects each beacon.
  */
 
 import { createPhysicsWorld } from '@bitphysics/physics';
 import { seabedHeight, submarine } from '@bitphysics/projects';
 import { describe, expect, it } from 'vitest';
-import {
-  BEACON_SWITCH,
-  beaconLabel,
-  beaconName,
-  chooseBeacon,
-  MINE_WARNING,
-  RIDGE_WARNING,
-  seabedBetween,
-} from '../../games/submarine/beacons';
+import { beaconLabel, beaconName, chooseBeacon, MINE_WARNING, RIDGE_WARNING, seabedBetween } from '../../games/submarine/beacons';
 
 describe('submarine beacon pointer', () => {
-  it('does not flip between two beacons at about the same distance (the nearest-each-frame rule did)', () => {
+  it('holds its target until it is collected, however near another passes, then takes the nearest left', () => {
     const beacons = [100, -50, 200, -50],
       taken = [false, false];
     let current = -1,
@@ -37,10 +29,12 @@ describe('submarine beacon pointer', () => {
     }
     expect(nearestSwitches).toBe(39);
     expect(switches).toBe(0);
-    // A clearly nearer beacon takes over; the collected one hands over to the nearest left.
-    expect(chooseBeacon(beacons, taken, 100 + 100 * BEACON_SWITCH, -50, 0)).toBe(0);
-    expect(chooseBeacon(beacons, taken, 170, -50, 0)).toBe(1);
+    // Held with the boat right on the other beacon (a stranger saw the target flip as they passed beacons).
+    expect(chooseBeacon(beacons, taken, 200, -50, 0)).toBe(0);
+    // With none held, the nearest; the collected one hands over to the nearest left; none left: -1.
+    expect(chooseBeacon(beacons, taken, 170, -50, -1)).toBe(1);
     expect(chooseBeacon(beacons, [true, false], 100, -50, 0)).toBe(1);
+    expect(chooseBeacon([100, -50, 200, -50, 300, -50], [true, false, false], 290, -50, 0)).toBe(2);
     expect(chooseBeacon(beacons, [true, true], 100, -50, 1)).toBe(-1);
   });
 
@@ -84,7 +78,7 @@ describe('submarine beacon pointer', () => {
     expect(beaconLabel(20, -2, 0, false, 'over')).toBe(`beacon 20 m ahead\n${MINE_WARNING.over}`);
     expect(beaconLabel(20, -2, 0, true, 'under')).toBe(`beacon 20 m ahead\n${RIDGE_WARNING}`);
     // Named, so that a switch to another beacon is seen ("52 m ahead" then "157 m ahead" was not).
-    expect(beaconLabel(52, 9, 0, false, '', beaconName(2))).toBe('beacon C: 52 m ahead, 9 m up');
+    expect(beaconLabel(52, 9, 0, false, '', beaconName(2))).toBe('target C: 52 m ahead, 9 m up');
     expect([0, 1, 25, 26, 27].map(beaconName)).toEqual(['A', 'B', 'Z', 'A2', 'B2']);
     expect(() => beaconName(-1)).toThrow(/beaconName: index must be an integer >= 0, got -1/);
     expect(() => beaconName(1.5)).toThrow(/beaconName: index/);

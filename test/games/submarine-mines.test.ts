@@ -143,9 +143,11 @@ describe('submarine mines', () => {
   it('mineAhead: warns of a mine on the course MINE_WARN_TIME s ahead, with the side that can be made', () => {
     const bed = { x0: -100, dx: 5, y: new Float64Array(400).fill(-120) };
     const at = (x: number, y: number) => [{ x, y, anchor: -120 }];
-    // Level at 10 m/s toward a mine on the line 60 m ahead: contact (the bow, 6 m ahead of the
-    // centre, within MINE_RADIUS + MINE_WARN_MARGIN = 3.9 m) in 5.0 s, warned from 4 s off.
-    expect(mineAhead(0, -40, 10, 0, -40, at(60, -40), [true], bed)).toBeNull();
+    // Level at 10 m/s toward a mine on the line: contact (the bow, 6 m ahead of the centre, within
+    // MINE_RADIUS + MINE_WARN_MARGIN = 3.9 m) at (x - 9.9 m) / 10 m/s, warned from MINE_WARN_TIME
+    // (5 s) off: not at 70 m (6.0 s), at 48 m (3.8 s).
+    expect(MINE_WARN_TIME).toBe(5);
+    expect(mineAhead(0, -40, 10, 0, -40, at(70, -40), [true], bed)).toBeNull();
     const w = mineAhead(0, -40, 10, 0, -40, at(48, -40), [true], bed)!;
     expect(w.index).toBe(0);
     expect(w.time).toBeCloseTo((48 - 6 - 3.9) / 10, 1);
@@ -239,7 +241,7 @@ describe('submarine mines', () => {
     expect(closest).toBeGreaterThan(1);
     expect(earliest).toBeGreaterThan(2.5);
     expect(keel).toBeGreaterThan(2);
-    // The warning looks far enough ahead for the helm's speeds: 4 s at full ahead is 52 m.
+    // The warning looks far enough ahead for the helm's speeds: 5 s at full ahead is 65 m.
     expect(MINE_WARN_TIME * Math.sqrt(SUBMARINE.maxThrust / SUBMARINE.dragCoefficient)).toBeGreaterThan(50);
     expect([HELM.climbSpeed, HELM.diveSpeed]).toEqual([8, 10]);
   });
