@@ -27,7 +27,7 @@ import {
   seedParam,
 } from '@bitphysics/game-kit';
 import { createReadout } from '@bitphysics/game-kit/lab-kit';
-import { startPixiGame } from '@bitphysics/game-kit/pixi';
+import { createPauseOverlay, startPixiGame } from '@bitphysics/game-kit/pixi';
 import { contactEvents, createPhysicsWorld, isAlive, type PhysicsWorld, Rng, setGravity, slotOf, step, warmUp } from '@bitphysics/physics';
 import { Container, Graphics, Matrix, RenderTexture, Sprite, Text } from 'pixi.js';
 import { type DebrisKind, Effects } from './effects';
@@ -890,19 +890,7 @@ const aimText = new Text({
 aimText.anchor.set(0.5, 1);
 aimText.visible = false;
 /** Over the play area while paused: a dimmed scene and the word, so a pause is not mistaken for a hang. */
-const pauseShade = new Graphics({ label: 'paused' });
-const pauseText = new Text({
-  text: '',
-  style: {
-    fill: 0xffffff,
-    fontSize: 40,
-    fontFamily: 'sans-serif',
-    fontWeight: 'bold',
-    align: 'center',
-    stroke: { color: 0x000000, width: 6 },
-  },
-});
-pauseText.anchor.set(0.5);
+const pause = createPauseOverlay();
 const popupLayer = new Container({ label: 'popups' });
 effects = new Effects(popupLayer);
 renderer.root.addChild(
@@ -915,8 +903,7 @@ renderer.root.addChild(
   offscreenText,
   castleText,
   aimText,
-  pauseShade,
-  pauseText,
+  pause.container,
 );
 
 /** Whether a stone sits in the cup: shots are left and the arm is back from its last throw. */
@@ -1135,15 +1122,7 @@ function drawAim(world: PhysicsWorld): void {
 
 /** Shows or hides the pause overlay. */
 function drawPause(): void {
-  const on = shell.paused;
-  pauseShade.visible = pauseText.visible = on;
-  if (!on) return;
-  const W = app.screen.width,
-    H = app.screen.height;
-  pauseShade.clear().rect(0, 0, W, H).fill({ color: 0x000000, alpha: 0.45 });
-  const text = touch ? 'Paused\n▶ to resume' : 'Paused\nP to resume';
-  if (pauseText.text !== text) pauseText.text = text;
-  pauseText.position.set(W / 2, H / 2);
+  pause.draw(shell.paused, app.screen.width, app.screen.height, touch);
 }
 
 /**
@@ -1211,7 +1190,7 @@ function drawCloseUp(): void {
       // The screen-space words over the scene are not part of the close-up.
       if (closeAge >= CLOSE_EVERY) {
         closeAge = 0;
-        const words = [banner, bannerPanel, verdictText, offscreenText, castleText, aimText, pauseShade, pauseText];
+        const words = [banner, bannerPanel, verdictText, offscreenText, castleText, aimText, pause.container];
         const was = words.map((o) => o.visible);
         for (const o of words) o.visible = false;
         app.renderer.render({
@@ -1581,7 +1560,7 @@ shell.expose({
     height: banner.height,
     fontSize: banner.style.fontSize,
   }),
-  pauseShown: (): boolean => pauseText.visible,
+  pauseShown: (): boolean => pause.visible,
   /**
    * The dark panel behind the banner in the last frame: its box on the screen, px, and its opacity
    * (0 to 1), and the banner's box; null while the banner is empty.

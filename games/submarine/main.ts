@@ -31,7 +31,7 @@ import {
   pageLayout,
   seedParam,
 } from '@bitphysics/game-kit';
-import { startPixiGame } from '@bitphysics/game-kit/pixi';
+import { createPauseOverlay, startPixiGame } from '@bitphysics/game-kit/pixi';
 import { applyImpulse, createPhysicsWorld, type PhysicsWorld, step } from '@bitphysics/physics';
 import { SUBMARINE, SUBMARINE_NEUTRAL_FILL, type SubmarineHandles, seabedHeight, submarine } from '@bitphysics/projects';
 import { Graphics, Text } from 'pixi.js';
@@ -662,37 +662,17 @@ mineTag.visible = false;
 app.stage.addChild(mineTag);
 /**
  * Over the scene while paused (drawPause): the scene dimmed and the word with how to resume, so a
- * pause is not mistaken for a hang (a stranger saw only "paused" in the side panel, or on a phone
- * only the pause button lit).
+ * pause is not mistaken for a hang.
  */
-const pauseShade = new Graphics({ label: 'paused' });
-const pauseText = new Text({
-  text: '',
-  style: {
-    fill: 0xffffff,
-    fontSize: 40,
-    fontWeight: '800',
-    fontFamily: 'system-ui, sans-serif',
-    align: 'center',
-    stroke: { color: 0x000000, width: 6 },
-  },
-});
-pauseText.anchor.set(0.5);
-pauseShade.visible = pauseText.visible = false;
-app.stage.addChild(pauseShade, pauseText);
+const pause = createPauseOverlay({ shadeAlpha: 0.5 });
+app.stage.addChild(pause.container);
 const touch = isTouchDevice();
 /** Shows or hides the pause overlay over a `W` x `H` px scene, on top of everything drawn on the stage. */
 function drawPause(W: number, H: number): void {
   const on = shell.paused && !state.over;
-  pauseShade.visible = pauseText.visible = on;
-  if (!on) return;
   // Pools of labels are added to the stage as they are needed: kept under the overlay.
-  if (app.stage.children[app.stage.children.length - 1] !== pauseText) app.stage.addChild(pauseShade, pauseText);
-  pauseShade.clear().rect(0, 0, W, H).fill({ color: 0x000000, alpha: 0.5 });
-  const text = touch ? 'Paused\n▶ to resume' : 'Paused\nP to resume';
-  if (pauseText.text !== text) pauseText.text = text;
-  pauseText.style.fontSize = W < 500 ? 32 : 40;
-  pauseText.position.set(W / 2, H / 2);
+  if (on && app.stage.children[app.stage.children.length - 1] !== pause.container) app.stage.addChild(pause.container);
+  pause.draw(on, W, H, touch);
 }
 /** The warning's words for each side to pass the mine on (placeMineTag adds how far ahead the mine is: "MINE 40 m"). */
 const MINE_TAG_TEXT = { over: '⚠ MINE: rise over ▲', under: '⚠ MINE: dive under ▼' } as const;
@@ -1766,7 +1746,7 @@ shell.expose({
     stickInput.y = Math.max(-1, Math.min(1, y));
   },
   /** Whether the pause overlay shows, and its words. */
-  pauseOverlay: () => ({ visible: pauseText.visible, text: pauseText.text }),
+  pauseOverlay: () => ({ visible: pause.visible, text: pause.text }),
   /** The end card's text ('' while the run goes on). */
   endText: (): string => (endCard.style.display === 'none' ? '' : (endCard.textContent ?? '')),
   /** Sets the screw's throttle directly, in [-0.5, 1] (the helm sets the tanks and thrusters each step). */

@@ -11,6 +11,8 @@ import { createFramePacer, type FramePacer } from './frame-pacer.js';
 import { pageLayout } from './layout.js';
 import { createRenderedShell, type GameShell, type GameShellOptions } from './shell.js';
 
+export type { PauseOverlay, PauseOverlayOptions } from './pause-overlay.js';
+export { createPauseOverlay } from './pause-overlay.js';
 export type { ResultCard, ResultCardContent, ResultCardOptions, ResultCardPlace } from './result-card.js';
 export { createResultCard } from './result-card.js';
 
