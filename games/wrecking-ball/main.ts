@@ -990,7 +990,12 @@ function followAction(): void {
   }
   followNdc.set(followBall[0]!, followBall[1]!, followBall[2]!).project(app.camera);
   if (Math.abs(followNdc.x) < FOLLOW_EDGE && Math.abs(followNdc.y) < FOLLOW_EDGE && followNdc.z < 1) return;
-  followGoal.set(0.6 * followBall[0]!, 2.5, 0.6 * followBall[2]!);
+  // On a swing at a target, between the ball and the target (toward the mast, a phone's narrow view
+  // lost the target as the ball ran at it); else between the mast and the ball.
+  if (aimed !== 0 && isAlive(shell.world, aimed)) {
+    const P = shell.world.components.Position;
+    followGoal.set(0.5 * (followBall[0]! + P.x[aimed]!), 2.5, 0.5 * (followBall[2]! + P.z[aimed]!));
+  } else followGoal.set(0.6 * followBall[0]!, 2.5, 0.6 * followBall[2]!);
   followStep.subVectors(followGoal, controls.target).multiplyScalar(FOLLOW);
   controls.target.add(followStep);
   app.camera.position.add(followStep);
@@ -1484,28 +1489,32 @@ function pieceName(piece: number): string {
   const kind = handles.pieces.find((p) => p.body === piece)?.kind;
   return kind === 'planks' ? 'the plank stack' : `the ${kind ?? 'block'}`;
 }
+/** Whether the ball is on its run at a target now (the swing can no longer be re-aimed). */
+function onRun(): boolean {
+  const moves = handles.controls.moves;
+  return aimed !== 0 && moves.length > 0 && moves[0]!.run === true;
+}
 /**
  * Swings the ball at piece `piece`: the crane's moves, the marks on it, a chime; false (and a low
  * tone) when out of swings. A tap while a swing winds up re-aims that swing (the marks slide from
  * the old target to the new, the hint says so; no swing is used until the ball is let go into its
- * run); a tap while the ball is on its run at its target waits for that swing to end (a new plan
- * then would abandon the hit and use another swing) and is marked as next.
+ * run); a tap while the ball is on its run is let go (false, a low tone, the hint says to wait):
+ * it uses no swing.
  */
 function swingAt(piece: number, aim?: SwingRequest): boolean {
+  const running = onRun();
   const moves = handles.controls.moves;
-  const running = aimed !== 0 && moves.length > 0 && moves[0]!.run === true;
   if (outOfSwings() || (running && !cleared && swingsUsed() + 1 > swingBudget(handles.level))) {
     sound.chime(220, 0.2);
     say(running ? 'That was the last swing: no swings left for another' : 'No swings left');
     return false;
   }
   if (running) {
-    if (piece === aimed) return true;
-    queued = piece;
-    queuedAim = aim;
-    sound.chime(523, 0.12);
-    say(`Next: ${pieceName(piece)}, once this swing is done`);
-    return true;
+    // A swing on its run cannot be re-aimed, and a swing saved up for after it was taken as this
+    // one's re-aim that then used another: the tap or drag is let go, and said so.
+    sound.chime(330, 0.12);
+    say(`The ball is on its swing: wait till it is done, then aim again (no swing used)`);
+    return false;
   }
   const before = aimed;
   // A tap during a wind-up re-aims that swing.
@@ -1643,6 +1652,14 @@ const craneShadows: Array<[Mesh, [number, number, number]]> = [
   [cab, [0.45, 0.4, 0.45]],
 ];
 const shadowBox = new Matrix4();
+/** The pixel ratio the app chose (0.5 under software WebGL, else the device's up to 2). */
+const startPixelRatio = app.renderer.getPixelRatio();
+/**
+ * The pixel ratio of a small screen drawn lite: a phone's canvas at 1 has about the pixels of a
+ * 1280 x 800 page's at 0.5 (at 0.5 the phone's scene was a blur of big pixels), and lite's materials
+ * and shadows keep each pixel cheap; never above the device's own.
+ */
+const LITE_PHONE_PIXEL_RATIO = Math.min(window.devicePixelRatio || 1, 1);
 /** The physically based materials a lite quality swapped out of the scene's meshes, by their stand-in. */
 const swappedOut = new Map<Material, Material>();
 /**
@@ -1656,6 +1673,7 @@ function setQuality(q: Quality): void {
   const full = q === 'full';
   renderer.setShadows(full);
   if (renderer.lights) renderer.lights.sun.castShadow = full;
+  app.renderer.setPixelRatio(!full && SMALL_SCREEN ? LITE_PHONE_PIXEL_RATIO : startPixelRatio);
   swapMaterials();
   for (const p of handles.pieces) tint(p.body, p.body === lit ? LIT_TINT : p.fallen ? FALLEN_TINT : STANDING_TINT);
   renderer.setShape(handles.ball, { geometry: ballGeometry, material: asDrawn(ballMaterial), scale: 'radius' });
@@ -1883,6 +1901,10 @@ hint.setAttribute('role', 'status');
 hint.style.cssText =
   'position: absolute; left: 0; right: 0; top: 10px; margin: 0 auto; width: fit-content; max-width: 90%; padding: 6px 12px; border-radius: 16px; background: rgba(16, 20, 28, 0.78); color: #ffe08a; font: 600 15px/1.3 system-ui, sans-serif; text-align: center; pointer-events: none; z-index: 2';
 pageLayout().stage.append(hint);
+const compactStyle = document.createElement('style');
+compactStyle.textContent =
+  '[data-hud="tap-hint"].compact { top: 4px !important; padding: 2px 8px !important; font-size: 12px !important; line-height: 1.25 !important; max-width: 80% !important; border-radius: 10px !important; }';
+document.head.append(compactStyle);
 /** A short message over the scene saying what a tap did (re-aimed, queued, refused), until world time `until`. */
 const notice = { text: '', until: -1 };
 /** Seconds a notice stays. */
@@ -1913,6 +1935,9 @@ function hintText(): string {
       return `${clearedLine()}\nSwinging for fun: the result stands. ${touch ? 'Tap' : 'Press L or'} Next level ▶`;
     return clearedLine();
   }
+  if (aiming.piece !== 0 && aiming.dragged && onRun()) return 'The ball is on its swing: wait till it is done, then aim again';
+  if (aiming.piece !== 0 && aiming.dragged && handles.controls.moves.length > 0 && aimed !== 0)
+    return `Winding up… let go to re-aim this swing (no swing used): power ${Math.round(100 * aiming.power)} %`;
   if (aiming.piece !== 0 && aiming.dragged)
     return `Let go to swing along the arrow: power ${Math.round(100 * aiming.power)} %${aiming.power >= 1 ? ' (full)' : ', pull longer for more'}`;
   if (reachedAt >= 0) return '';
@@ -2082,6 +2107,8 @@ function frame(): void {
           }${left <= 0 && handles.controls.moves.length === 0 ? ` · out of swings: ${touch ? 'tap ↻' : 'press R'} to retry` : ''}${swayHint()}`;
     showNext(cleared, `Level ${handles.level + 1} ▶`);
     showHint(hintText(), cleared);
+    // After the first swing a phone's hint is compact: it covered the top of the scene.
+    hint.classList.toggle('compact', touch && SMALL_SCREEN && swingsUsed() > 0 && !cleared);
     drawPlan();
     readout.textContent = params.debug
       ? `score ${banked + levelScore} · step ${stepMs.toFixed(1)} ms (worst ${worstMs.toFixed(1)}) · ${handles.pieces.length} pieces`

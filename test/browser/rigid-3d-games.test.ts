@@ -308,6 +308,26 @@ describe('3D rigid-body games in headless Chromium', () => {
     expect(slid.kind).toBe('wall');
     expect(Math.hypot(slid.ring![0]! - slid.at[0]!, slid.ring![1]! - slid.at[1]!)).toBeLessThan(0.1);
     expect(Math.hypot(slid.ring![0]! - wall.at[0]!, slid.ring![1]! - wall.at[1]!)).toBeLessThan(2.5);
+    // Once the ball is on its run (that swing counted: 2 of 4 used), a drag at another target is let
+    // go: no swing used, now or when the run ends, and the hint says to wait.
+    type Run = { controls: { moves: Array<{ run?: boolean }> } };
+    const onRun = await g.page.evaluate(() => {
+      const game = window.game as unknown as WB;
+      const moves = () => (game.handles() as unknown as Run).controls.moves;
+      for (let i = 0; i < 900 && moves()[0]?.run !== true; i++) game.step();
+      return moves()[0]?.run === true;
+    });
+    expect(onRun).toBe(true);
+    expect((await pressPiece('tower')).pressed).toBe('none');
+    await g.frames(2);
+    expect(await hint.textContent()).toBe('The ball is on its swing: wait till it is done, then aim again (no swing used)');
+    const afterRun = await g.page.evaluate(() => {
+      const game = window.game as unknown as WB & Swings;
+      for (let i = 0; i < 900 && (game.handles() as unknown as Run).controls.moves.length > 0; i++) game.step();
+      for (let i = 0; i < 180; i++) game.step();
+      return game.swings().used;
+    });
+    expect(afterRun).toBe(2);
     // At 1280 x 800 the left column's foot holds the site plan: no empty gap under the legend (it
     // was 230 px), and nothing pushed out of view.
     // A small resize (a status line wrapping onto a second line) keeps the view as it is: framed
