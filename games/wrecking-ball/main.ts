@@ -1655,11 +1655,12 @@ const shadowBox = new Matrix4();
 /** The pixel ratio the app chose (0.5 under software WebGL, else the device's up to 2). */
 const startPixelRatio = app.renderer.getPixelRatio();
 /**
- * The pixel ratio of a small screen drawn lite: a phone's canvas at 1 has about the pixels of a
- * 1280 x 800 page's at 0.5 (at 0.5 the phone's scene was a blur of big pixels), and lite's materials
- * and shadows keep each pixel cheap; never above the device's own.
+ * The pixel ratio of a small screen drawn lite: between the kit's 0.5 under software WebGL (a blur
+ * of big pixels on a phone) and 1 (about four times the pixels to fill, each frame 4 to 6 times
+ * dearer in SwiftShader); lite's materials and shadows keep each pixel cheap. Never above the
+ * device's own.
  */
-const LITE_PHONE_PIXEL_RATIO = Math.min(window.devicePixelRatio || 1, 1);
+const LITE_PHONE_PIXEL_RATIO = Math.min(window.devicePixelRatio || 1, 0.75);
 /** The physically based materials a lite quality swapped out of the scene's meshes, by their stand-in. */
 const swappedOut = new Map<Material, Material>();
 /**
