@@ -164,6 +164,8 @@ let goldBall = 0;
 /** Colour of the player's balls (a basketball's orange), of those released too high to score, and of the gold ball. */
 const PLAYER_COLOR = 0xff8a2a;
 const HIGH_COLOR = 0x9aa4b5;
+/** The aiming dots of a throw from above the rim's line: lighter than HIGH_COLOR, to stand out on the wall. */
+const HIGH_AIM_COLOR = 0xe6ebf3;
 const GOLD_COLOR = 0xffd23f;
 /** The best round's points (a basket's points: ball x streak); baskets were the score before. */
 const BEST_KEY = 'bitphysics.bouncing-balls.best-points';
@@ -1079,7 +1081,8 @@ function drawPointer(): void {
   const ox = cam.toScreenX(t.x),
     oy = cam.toScreenY(t.y),
     or = cam.toScreenLength(t.radius);
-  const thrownColor = mayScore(hoopSpots(TALL)[round.spot]!, t.y) ? PLAYER_COLOR : HIGH_COLOR;
+  // A grey (too high) throw's dots are drawn lighter than its ball: grey dots were lost on the wall.
+  const thrownColor = mayScore(hoopSpots(TALL)[round.spot]!, t.y) ? PLAYER_COLOR : HIGH_AIM_COLOR;
   overlay
     .moveTo(ox, oy)
     .lineTo(ox + lastX - startX, oy + lastY - startY)
@@ -1354,6 +1357,14 @@ function drawBackboard(spot: HoopSpot): void {
 /** The court under everything: drawn once per camera (the renderer's plain walls and box are hidden). */
 const court = new Graphics({ label: 'court' });
 app.stage.addChildAt(court, 0);
+/** A label on the stand under the floor, when it is tall enough: it is room to pull a throw back into. */
+const standLabel = new Text({
+  text: '↓ room to pull back into ↓',
+  style: { fontFamily: 'system-ui, sans-serif', fontSize: 14, fill: 0xb4bdcc },
+});
+standLabel.anchor.set(0.5);
+standLabel.visible = false;
+app.stage.addChildAt(standLabel, 1);
 // The renderer's walls (thin lines with end dots, the box's outline) look like a physics diagram:
 // the court draws them as a frame and wooden ramps instead.
 const plainWalls = renderer.root.children.find((c) => c.label === 'walls');
@@ -1403,6 +1414,8 @@ function drawCourt(): void {
     court.rect(x0 - w, base, x1 - x0 + 2 * w, cam.height - base).fill(0x262c37);
     court.rect(x0 - w, base, x1 - x0 + 2 * w, 3).fill(0x5b6577);
   }
+  standLabel.visible = cam.height - base > 48;
+  standLabel.position.set((x0 + x1) / 2, (base + cam.height) / 2);
   // The ramps: wooden beams with a lighter top edge, round ends.
   for (const [ax, ay, bx, by] of segments) {
     const width = Math.max(6, cam.toScreenLength(2 * SEGMENT_RADIUS + 0.06));
