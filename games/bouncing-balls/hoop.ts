@@ -259,7 +259,7 @@ export interface HoopRound {
   timeLeft: number;
   /** Index of the hoop's spot in the layout's spots (advances with each basket, cycling). */
   spot: number;
-  /** Balls the player threw this round. */
+  /** Balls the player threw this round: in the warm-up all of them; from the first basket on, that basket's throw and those after it. */
   shots: number;
 }
 
@@ -291,7 +291,7 @@ export function roundTick(round: HoopRound, dt: number): boolean {
 /**
  * A basket with a ball of `kind`: BALL_POINTS[kind] times the streak's multiplier (streakMultiplier of
  * the baskets in a row before it), the streak grows and the hoop moves to its next spot (of
- * `spotCount`, cycling); the first one starts the clock. Ignored once time is up. @returns whether it
+ * `spotCount`, cycling); the first one starts the clock and restarts the shot count at its own throw. Ignored once time is up. @returns whether it
  * counted (the points it made are in `lastPoints`).
  * @throws RangeError if spotCount is not a positive integer or kind is not a key of BALL_POINTS.
  */
@@ -300,6 +300,8 @@ export function roundBasket(round: HoopRound, spotCount: number, kind: BallKind 
     throw new RangeError(`roundBasket: spotCount must be a positive integer, got ${spotCount}`);
   if (!Object.hasOwn(BALL_POINTS, kind)) throw new RangeError(`roundBasket: kind must be basketball, heap or gold, got ${kind}`);
   if (round.phase === 'over') return false;
+  // The clock starts now: of the warm-up's throws only this one counts.
+  if (round.phase === 'ready') round.shots = 1;
   round.phase = 'playing';
   round.score++;
   round.lastPoints = BALL_POINTS[kind] * streakMultiplier(round.streak);

@@ -8,7 +8,7 @@
  * them is gold (a halo, worth 5; a new one after it scores); a pull from empty space throws a new
  * basketball, worth 1. Baskets in a row multiply (x2, x3, x4: hoop.ts streakMultiplier); a thrown
  * ball that falls below the rim beside the hoop is a miss and ends the streak (falling notes). The
- * aiming arc ends with a red cross at a ball in its way (the heap blocks some throws). The best
+ * aiming arc ends with a red cross at a ball in its way (a heap ball thrown passes the neighbours it leaves). The best
  * round's points are kept in localStorage; when time is up an end card over the box shows the points,
  * baskets, throws and longest streak, and R or the Play-again button starts a new round. The status
  * row above the box says the goal and shows points, the next basket's multiplier, time and best.
@@ -164,6 +164,8 @@ let goldBall = 0;
 /** Colour of the player's balls (a basketball's orange), of those released too high to score, and of the gold ball. */
 const PLAYER_COLOR = 0xff8a2a;
 const HIGH_COLOR = 0x9aa4b5;
+/** The aiming dots of a throw from above the rim's line: lighter than HIGH_COLOR, to stand out on the wall. */
+const HIGH_AIM_COLOR = 0xe6ebf3;
 const GOLD_COLOR = 0xffd23f;
 /** The best round's points (a basket's points: ball x streak); baskets were the score before. */
 const BEST_KEY = 'bitphysics.bouncing-balls.best-points';
@@ -212,6 +214,7 @@ function createWorld(): PhysicsWorld {
   round = createRound(roundSeconds);
   flights = new Map();
   basketballs = new Set();
+  fading = new Map();
   goldBall = 0;
   goldRng = new Rng(params.seed + 7);
   missAt = -1e9;
@@ -240,7 +243,10 @@ function keepLeavingFree(world: PhysicsWorld): void {
   const P = world.components.Position,
     V = world.components.Velocity;
   for (const [e, l] of leaving) {
-    if (world.time >= l.until || !handles.balls.includes(e)) {
+    // Past LEAVE_SECONDS it goes on leaving while it still overlaps a ball (a neighbour it is passing
+    // would knock it off its arc), for up to twice as long again.
+    const over = world.time >= l.until && (world.time >= l.until + 2 * LEAVE_SECONDS || !overlapsBall(world, e));
+    if (over || !handles.balls.includes(e)) {
       leaving.delete(e);
       continue;
     }
@@ -250,6 +256,22 @@ function keepLeavingFree(world: PhysicsWorld): void {
     l.vx = V.x[s]!;
     l.vy = V.y[s]!;
   }
+}
+
+/** Whether ball `e` overlaps another ball now. */
+function overlapsBall(world: PhysicsWorld, e: number): boolean {
+  const P = world.components.Position,
+    R = world.components.Ball.radius;
+  const s = slotOf(e),
+    x = P.x[s]!,
+    y = P.y[s]!,
+    r = R[s]!;
+  for (const o of handles.balls) {
+    if (o === e) continue;
+    const q = slotOf(o);
+    if ((P.x[q]! - x) ** 2 + (P.y[q]! - y) ** 2 < (r + R[q]!) ** 2) return true;
+  }
+  return false;
 }
 
 /**
@@ -295,21 +317,27 @@ function distanceToSegment(px: number, py: number, ax: number, ay: number, bx: n
 }
 
 /**
- * Whether a ball of radius `r` thrown from (x, y), m, with velocity (vx, vy), m/s, runs into a ball
- * (but `thrown`) within LEAVE_SECONDS: touching it and moving into it, as the aiming arc's red cross
- * says. Such a throw collides at once, as the arc shows.
+ * The balls a ball of radius `r` thrown from (x, y), m, with velocity (vx, vy), m/s, meets within
+ * LEAVE_SECONDS (touching it and moving into it): the heap's balls it leaves, which it passes as it
+ * leaves (they are pushed aside), so they do not end its aiming arc either. Each as [x, y, radius].
  */
-function blockedAtOnce(x: number, y: number, vx: number, vy: number, r: number, thrown: number): boolean {
+function metLeaving(
+  near: [number, number, number][],
+  x: number,
+  y: number,
+  vx: number,
+  vy: number,
+  r: number,
+): Set<[number, number, number]> {
   const g = handles.params.gravity;
-  const near = nearBalls(x, y, thrown);
-  for (let n = 1; n <= Math.round(LEAVE_SECONDS * 60); n++) {
+  const met = new Set<[number, number, number]>();
+  for (let n = 0; n <= Math.round(LEAVE_SECONDS * 60); n++) {
     const t = n / 60;
     const px = x + vx * t,
-      py = y + vy * t - 0.5 * g * t * t,
-      wy = vy - g * t;
-    if (near.some(([bx, by, br]) => (px - bx) ** 2 + (py - by) ** 2 < (r + br) ** 2 && (px - bx) * vx + (py - by) * wy < 0)) return true;
+      py = y + vy * t - 0.5 * g * t * t;
+    for (const b of near) if ((px - b[0]) ** 2 + (py - b[1]) ** 2 < (r + b[2]) ** 2) met.add(b);
   }
-  return false;
+  return met;
 }
 
 /** Drops a crate (a box of about two mean ball diameters, turned a little) near the top of the box. */
@@ -442,6 +470,59 @@ function playHoop(world: PhysicsWorld): void {
   }
 }
 
+/** Basketballs left lying about that the court keeps; past this many the oldest at rest fades out. */
+const MAX_LOOSE = 12;
+/** How long a basketball takes to fade out, s. */
+const FADE_SECONDS = 1;
+/** The court's wall near the floor, which a fading basketball's colour goes to. */
+const FADE_TO = 0x2c3a56;
+/** Basketballs fading out: the world time (s) their fade began and their colour then. */
+let fading = new Map<number, { at: number; color: number }>();
+
+/**
+ * Keeps the player's loose basketballs to MAX_LOOSE: past that the oldest one at rest (not in flight,
+ * not held, under 0.5 m/s) fades to the wall's colour over FADE_SECONDS and is removed, so thrown balls
+ * do not pile up for ever. One starts fading at a time.
+ */
+function clearLoose(world: PhysicsWorld): void {
+  const V = world.components.Velocity;
+  for (const [e, f] of fading) {
+    if (!handles.balls.includes(e) || flights.has(e) || drag.body === e) {
+      fading.delete(e);
+      if (handles.balls.includes(e)) renderer.setColor(e, f.color);
+      continue;
+    }
+    const t = (world.time - f.at) / FADE_SECONDS;
+    if (t >= 1) {
+      fading.delete(e);
+      basketballs.delete(e);
+      removeBall(world, handles, e);
+      continue;
+    }
+    renderer.setColor(e, mixColor(f.color, FADE_TO, t));
+  }
+  let loose = 0;
+  for (const e of basketballs) if (!flights.has(e) && !fading.has(e)) loose++;
+  if (loose <= MAX_LOOSE || fading.size > 0) return;
+  for (const e of basketballs) {
+    const s = slotOf(e);
+    if (flights.has(e) || drag.body === e || Math.hypot(V.x[s]!, V.y[s]!) > 0.5) continue;
+    fading.set(e, { at: world.time, color: renderer.colorOf(e) });
+    return;
+  }
+}
+
+/** Colour `a` blended towards `b` by `t` in [0, 1], per channel (0xRRGGBB). */
+function mixColor(a: number, b: number, t: number): number {
+  let out = 0;
+  for (const shift of [16, 8, 0]) {
+    const ca = (a >> shift) & 0xff,
+      cb = (b >> shift) & 0xff;
+    out |= Math.round(ca + (cb - ca) * t) << shift;
+  }
+  return out;
+}
+
 /**
  * A basket's sound: the net's swish, then a rising major chord (three notes 90 ms apart) that starts
  * a semitone higher with each basket of the streak (up to an octave); the gold ball adds the octave
@@ -502,6 +583,7 @@ function stepWorld(world: PhysicsWorld): void {
   step(world);
   applyNet(world);
   playHoop(world);
+  clearLoose(world);
   forEachImpact(world, (a, b, impulse) => knocks.offer(a, b, impulse));
   for (const { a, b, impulse } of knocks.take(world.time)) {
     const ma = materialOf(world, a),
@@ -517,7 +599,7 @@ const game = await startPixiGame({
   step: stepWorld,
   bodies: () => handles.balls.length,
   controls: [
-    { keys: 'Drag', action: 'pull back and let go: throw (from a ball of the heap: that ball)' },
+    { keys: 'Drag', action: 'press anywhere, pull back, let go: throw (pressed on a heap ball, that ball flies)' },
     { keys: 'Click', action: 'drop a ball' },
     { keys: 'Hold on a ball', touch: 'Hold on a ball', action: 'hold still 1 s: pick it (or a crate) up and carry it' },
     { keys: 'R', action: 'new round (and reset)' },
@@ -851,8 +933,8 @@ function throwBall(e: number, vx: number, vy: number): void {
     s = slotOf(e);
   const x = c.Position.x[s]!,
     y = c.Position.y[s]!;
-  // Free of the heap round it for a moment, unless a ball lies on its arc right away.
-  if (!blockedAtOnce(x, y, vx, vy, c.Ball.radius[s]!, e)) leaving.set(e, { until: shell.world.time + LEAVE_SECONDS, x, y, vx, vy });
+  // Free of the heap round it for a moment: its neighbours would take the throw's push and fly instead.
+  leaving.set(e, { until: shell.world.time + LEAVE_SECONDS, x, y, vx, vy });
   launch(e, true);
 }
 
@@ -908,7 +990,7 @@ function arcOf(t: { x: number; y: number; vx: number; vy: number; radius: number
     friction: p.friction,
     walls,
     hoop: spot,
-    stops: nearBalls(t.x, t.y, thrown),
+    stops: arcStops(t, thrown),
   });
 }
 
@@ -927,6 +1009,13 @@ function nearBalls(x: number, y: number, except: number): [number, number, numbe
     if (Math.abs(bx - x) < STOP_REACH && Math.abs(by - y) < STOP_REACH) out.push([bx, by, c.Ball.radius[s]!]);
   }
   return out;
+}
+/** The balls that end throw `t`'s aiming arc: those near its start but, for a ball of the scene (`thrown`), the ones it passes as it leaves. */
+function arcStops(t: { x: number; y: number; vx: number; vy: number; radius: number }, thrown: number): [number, number, number][] {
+  const near = nearBalls(t.x, t.y, thrown);
+  if (thrown === 0) return near;
+  const met = metLeaving(near, t.x, t.y, t.vx, t.vy, t.radius);
+  return near.filter((b) => !met.has(b));
 }
 /** Bounces the aiming arc follows (off the walls, the hoop and its net) before it ends. */
 const AIM_BOUNCES = 2;
@@ -992,7 +1081,8 @@ function drawPointer(): void {
   const ox = cam.toScreenX(t.x),
     oy = cam.toScreenY(t.y),
     or = cam.toScreenLength(t.radius);
-  const thrownColor = mayScore(hoopSpots(TALL)[round.spot]!, t.y) ? PLAYER_COLOR : HIGH_COLOR;
+  // A grey (too high) throw's dots are drawn lighter than its ball: grey dots were lost on the wall.
+  const thrownColor = mayScore(hoopSpots(TALL)[round.spot]!, t.y) ? PLAYER_COLOR : HIGH_AIM_COLOR;
   overlay
     .moveTo(ox, oy)
     .lineTo(ox + lastX - startX, oy + lastY - startY)
@@ -1267,6 +1357,14 @@ function drawBackboard(spot: HoopSpot): void {
 /** The court under everything: drawn once per camera (the renderer's plain walls and box are hidden). */
 const court = new Graphics({ label: 'court' });
 app.stage.addChildAt(court, 0);
+/** A label on the stand under the floor, when it is tall enough: it is room to pull a throw back into. */
+const standLabel = new Text({
+  text: '↓ room to pull back into ↓',
+  style: { fontFamily: 'system-ui, sans-serif', fontSize: 14, fill: 0xb4bdcc },
+});
+standLabel.anchor.set(0.5);
+standLabel.visible = false;
+app.stage.addChildAt(standLabel, 1);
 // The renderer's walls (thin lines with end dots, the box's outline) look like a physics diagram:
 // the court draws them as a frame and wooden ramps instead.
 const plainWalls = renderer.root.children.find((c) => c.label === 'walls');
@@ -1316,6 +1414,8 @@ function drawCourt(): void {
     court.rect(x0 - w, base, x1 - x0 + 2 * w, cam.height - base).fill(0x262c37);
     court.rect(x0 - w, base, x1 - x0 + 2 * w, 3).fill(0x5b6577);
   }
+  standLabel.visible = cam.height - base > 48;
+  standLabel.position.set((x0 + x1) / 2, (base + cam.height) / 2);
   // The ramps: wooden beams with a lighter top edge, round ends.
   for (const [ax, ay, bx, by] of segments) {
     const width = Math.max(6, cam.toScreenLength(2 * SEGMENT_RADIUS + 0.06));
@@ -1363,8 +1463,11 @@ function drawBasketballs(alpha: number, world: PhysicsWorld): void {
         seams.lineTo(...pt(side * (0.45 - 0.2 * (1 - v * v)), v));
       }
     }
-    seams.stroke({ width: w, color: 0x1a0d05, alpha: 0.85 });
-    seams.circle(x, y, r - w / 2).stroke({ width: w, color: 0x5a2a08, alpha: 0.7 });
+    // A fading ball's seams fade with it.
+    const fade = fading.get(e);
+    const shown = fade ? Math.max(0, 1 - (world.time - fade.at) / FADE_SECONDS) : 1;
+    seams.stroke({ width: w, color: 0x1a0d05, alpha: 0.85 * shown });
+    seams.circle(x, y, r - w / 2).stroke({ width: w, color: 0x5a2a08, alpha: 0.7 * shown });
   }
   // The gold ball: a pulsing halo and a glint, so the eye finds it in the heap.
   if (goldBall !== 0 && handles.balls.includes(goldBall)) {
@@ -1455,7 +1558,7 @@ function updateStatus(): void {
   // While playing the hint takes turns (5 s each) between the heap's balls and the streak.
   const teach =
     Math.floor(shell.world.time / 5) % 2 === 0
-      ? `Throw balls from the heap: ${BALL_POINTS.heap} points, the gold one ${BALL_POINTS.gold}`
+      ? `Press on a heap ball and pull back to throw it: ${BALL_POINTS.heap} points, the gold one ${BALL_POINTS.gold}`
       : 'Baskets in a row multiply, up to ×4; a miss ends it';
   const hint = over
     ? `${touch ? 'Tap' : 'R or'} Play again for a new round`

@@ -114,6 +114,27 @@ describe('bouncing balls', () => {
     expect(g.errors).toEqual([]);
   });
 
+  it('thrown balls do not pile up: past 12 resting basketballs the oldest fade out one at a time and are removed', async () => {
+    const g = await open();
+    const r = await g.page.evaluate(() => {
+      const game = window.game as unknown as BallsGame & { shoot(x: number, y: number): number; step(): void };
+      game.paused = true;
+      // 16 basketballs dropped side by side near the floor (shoot: as a throw releases them).
+      const shot: number[] = [];
+      for (let i = 0; i < 16; i++) shot.push(game.shoot(1 + i * 0.9, 1.2));
+      for (let k = 0; k < 60; k++) game.step();
+      const after1s = game.ballIds().length;
+      for (let k = 0; k < 300; k++) game.step();
+      const ids = game.ballIds();
+      return { after1s, left: ids.length, gone: shot.filter((e) => !ids.includes(e)), shot };
+    });
+    // One fade (1 s) at a time: 1 s in, at most one is gone; 6 s in, four of the basketballs are gone
+    // (the oldest ones at rest) and none of the scene's balls.
+    expect(r.after1s).toBeGreaterThanOrEqual(COUNT + 15);
+    expect(r.left).toBe(COUNT + 12);
+    expect(r.gone).toHaveLength(4);
+    expect(g.errors).toEqual([]);
+  });
   it('balls knock when they hit: ball contacts play impact sounds once an input started the sound', async () => {
     const g = await open();
     type Sounding = { sound: { running: boolean; played: number } };
@@ -607,6 +628,65 @@ describe('bouncing balls: the hoop game', () => {
     });
     expect(offs).toHaveLength(2);
     for (const off of offs) expect(off).toBeLessThan(0.02);
+    // A heap ball with a ball on top of it, thrown straight up at 9 m/s, flies as a new ball would:
+    // it passes the ball on top (pushed aside) instead of handing it the throw. The first three such
+    // balls (nothing else within 2.4 m above them, so only the neighbour is in the way) each rise at
+    // least 90 % of their free rise in 0.25 s (1.94 m), and the aiming arc rises past that (it does
+    // not end on the neighbour). Before, the neighbour took part of the throw and the arc ended on it.
+    const wedged = await g.page.evaluate(() => {
+      const game = window.game as unknown as HoopGame & {
+        params: { gravity: number };
+        paused: boolean;
+        reset(): void;
+        step(): void;
+        aimFrom(e: number, vx: number, vy: number): number[];
+        throwBall(e: number, vx: number, vy: number): void;
+        world: {
+          components: {
+            Position: { x: Float64Array; y: Float64Array };
+            Velocity: { x: Float64Array; y: Float64Array };
+            Ball: { radius: Float64Array };
+          };
+        };
+      };
+      game.reset();
+      game.paused = true;
+      for (let k = 0; k < 600; k++) game.step();
+      const C = game.world.components,
+        g = game.params.gravity;
+      const out: { rise: number; free: number; arcRise: number }[] = [];
+      const ids = game.ballIds();
+      for (const e of ids) {
+        if (out.length >= 3) break;
+        const s = e % 2 ** 25,
+          x = C.Position.x[s]!,
+          y = C.Position.y[s]!,
+          r = C.Ball.radius[s]!;
+        if (Math.hypot(C.Velocity.x[s]!, C.Velocity.y[s]!) > 0.3) continue;
+        // Balls over it: touching now (the one on top) and any further up its way.
+        const over = ids.filter((o) => {
+          const q = o % 2 ** 25;
+          return o !== e && Math.abs(C.Position.x[q]! - x) < r + C.Ball.radius[q]! && C.Position.y[q]! > y && C.Position.y[q]! < y + 2.4;
+        });
+        const touching = over.filter((o) => {
+          const q = o % 2 ** 25;
+          return Math.hypot(C.Position.x[q]! - x, C.Position.y[q]! - y) < r + C.Ball.radius[q]! + 0.02;
+        });
+        if (touching.length !== 1 || over.length !== 1) continue;
+        const arc = game.aimFrom(e, 0, 9);
+        const arcRise = Math.max(...arc.filter((_, i) => i % 2 === 1)) - y;
+        game.throwBall(e, 0, 9);
+        for (let k = 0; k < 15; k++) game.step();
+        out.push({ rise: C.Position.y[s]! - y, free: 9 * 0.25 - 0.5 * g * 0.25 * 0.25, arcRise });
+        for (let k = 0; k < 240; k++) game.step();
+      }
+      return out;
+    });
+    expect(wedged).toHaveLength(3);
+    for (const w of wedged) {
+      expect(w.rise).toBeGreaterThan(0.9 * w.free);
+      expect(w.arcRise).toBeGreaterThan(w.free);
+    }
     expect(g.errors).toEqual([]);
     await g.close();
   });
