@@ -1048,7 +1048,8 @@ function starText(n: number): string {
 
 // ---- The card at a level's end: its stars (or why it was lost) and, after the finale, the show's --------
 
-const card = createResultCard(app.stage, { label: 'level-card', bigSize: 48, background: 0x060914, backgroundAlpha: 0.86 });
+// Near opaque: at 0.86 a lit lantern and its glow showed through the card on a phone.
+const card = createResultCard(app.stage, { label: 'level-card', bigSize: 48, background: 0x060914, backgroundAlpha: 0.97 });
 /** Room left under the card for the big action button at the stage's bottom, CSS px. */
 const CARD_BOTTOM = 96;
 
@@ -1083,6 +1084,9 @@ function drawCard(f: StatusFrame): void {
     { title, big, lines, edge: f.lost ? 0xff8a7a : 0xffd166 },
     { cx: cam.width / 2, bottom: cam.height - CARD_BOTTOM, maxWidth: cam.width - 24, wrapWidth: Math.min(520, cam.width - 56) },
   );
+  // Above everything in the sky, labels made after the card included.
+  const top = app.stage.children.length - 1;
+  if (app.stage.getChildIndex(card.container) !== top) app.stage.setChildIndex(card.container, top);
 }
 
 /** Goes on to the next level (or back to the first after the last) with a fresh sky. */

@@ -448,9 +448,11 @@ describe('fireworks: the lantern show', () => {
         window.game as unknown as { app: { stage: { children: { label: string; visible: boolean; children?: { text?: string }[] }[] } } }
       ).app.stage;
       const c = stage.children.find((k) => k.label === 'level-card');
-      return { visible: c?.visible, texts: (c?.children ?? []).map((k) => k.text).filter(Boolean) };
+      return { visible: c?.visible, top: stage.children.at(-1) === c, texts: (c?.children ?? []).map((k) => k.text).filter(Boolean) };
     });
     expect(lostCard.visible).toBe(true);
+    // Drawn over everything in the sky (the miss labels made after it were drawn over it).
+    expect(lostCard.top).toBe(true);
     expect(lostCard.texts).toEqual(expect.arrayContaining(['1 of 4 lit']));
     await g.page.getByRole('button', { name: 'Try again ▶' }).tap();
     await g.waitFor(() => (window.game as unknown as LanternGame).lanterns().shells === 0, null);
