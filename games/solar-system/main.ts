@@ -560,7 +560,7 @@ const game = await startThreeGame({
   // were more than a new player could take in). On a phone the lines naming on-screen buttons stay
   // in the menu's legend, out of the card over the diagram (the kit leaves out gestures ending in "button(s)").
   controls: [
-    { keys: '← →', action: 'turn the launch arrow; in flight, burn in / out', touch: '↺ ↻ buttons' },
+    { keys: '← →', action: 'turn the launch arrow; in flight, burn in / out', touch: 'bottom ↺ ↻ buttons' },
     { keys: '↑ ↓', action: 'launch speed; in flight, burn faster / slower', touch: '− + buttons' },
     { keys: 'Space', action: 'launch the probe', touch: 'Launch button' },
     { keys: 'W (hold)', action: 'wait: time runs fast', touch: 'hold the Wait button' },
@@ -1527,7 +1527,8 @@ style.textContent = `
    44 x 44 px; a longer label ("+ fast", "Try again") breaks inside its button, not the row (the
    flight's buttons took two rows, Hint alone on the second, and Wait moved under the finger). */
 @media (max-width: 440px) {
-  .ss-status .ss-brief { display: none; }
+  /* The brief shows on a phone too (it was hidden: the first mission's was never seen), two lines kept. */
+  .ss-status .ss-brief { min-height: 2.8em; }
   .bp-touchbar.ss-pad { display: grid; grid-auto-flow: column; grid-auto-columns: auto; justify-content: stretch; gap: 4px; }
   .bp-touchbar.ss-pad button { min-width: 44px; padding: 0 3px; font-size: 14px; white-space: normal; line-height: 1.05; }
   .bp-touchbar.ss-pad button.ss-go { min-width: 44px; }
@@ -1712,7 +1713,8 @@ function hint(m: Mission): string {
           : '';
       // Said as the date on screen to wait for, not in seconds: time runs slower than asked where
       // frames come slowly, so a count of seconds would be false on a slow machine.
-      const until = new Date(handles.epoch + (world.time + a.days) * 86_400_000).toISOString().slice(0, 10);
+      // Non-breaking hyphens: a phone wrapped the date as "2013-10-" / "07".
+      const until = new Date(handles.epoch + (world.time + a.days) * 86_400_000).toISOString().slice(0, 10).replaceAll('-', '\u2011');
       return `No small turn or speed change arrives now. Hold Wait (${named('W', 'the Wait button')}) until the date shown reads ${until} (${a.days} days from now) while ${m.target} comes round${faster}; then ask again.`;
     }
     return `Nothing near this launch arrives now: hold Wait (${named('W', 'the Wait button')}) and watch the line, or ${named('click', 'tap')} elsewhere to aim another way.`;
