@@ -384,9 +384,13 @@ export function outOfShells(run: LanternRun, pending: number): boolean {
   return run.stars === 0 && run.shells >= LEVELS[run.level]!.shells && pending === 0;
 }
 
-/** Shells of its level `run` has left to launch (0 once the level is lit). */
+/**
+ * Shells of its level `run` has not launched, lit or not: the status row counts them (it read
+ * "Shells 0" while a level won with one to spare waited for its glow). The page launches none once
+ * the level is lit, whatever this says.
+ */
 export function shellsLeft(run: LanternRun): number {
-  return run.stars !== 0 ? 0 : Math.max(0, LEVELS[run.level]!.shells - run.shells);
+  return Math.max(0, LEVELS[run.level]!.shells - run.shells);
 }
 
 /** Stars for lighting a level with `shells` shells: 3 at par or better, 2 up to par + 2, else 1. */

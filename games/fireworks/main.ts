@@ -317,7 +317,7 @@ const game = await startPixiGame({
   keys: [
     { key: 'a', label: 'auto-show', action: () => setAuto(!params.autoShow) },
     { key: 't', label: 'trails', action: () => setTrails(!params.trails) },
-    { key: ' ', label: 'random shell', action: () => randomLaunch(), repeat: true },
+    { key: ' ', label: 'random shell', action: () => void (launchHeld() || randomLaunch()), repeat: true },
   ],
   renderer: {
     view: { minX: 0, minY: 0, maxX: SKY.width, maxY: SKY.height },
@@ -328,6 +328,22 @@ const game = await startPixiGame({
   onFrame: (alpha, world) => drawFrame(alpha, world),
 });
 const { shell, renderer, app } = game;
+
+/**
+ * Whether the player paused the show (the P key or the pause button; cleared once it runs again).
+ * Tests that set `paused` to step the show by hand still launch with clicks.
+ */
+let playerPaused = false;
+const shellTogglePause = shell.togglePause.bind(shell);
+shell.togglePause = () => {
+  shellTogglePause();
+  playerPaused = shell.paused;
+};
+/** Whether a click or tap launches nothing now: the player has paused. */
+function launchHeld(): boolean {
+  if (!shell.paused) playerPaused = false;
+  return playerPaused;
+}
 const layer = renderer.particles!;
 
 /** The legend as shown now (launchControls' action), to write it again only when it changes. */
@@ -808,7 +824,8 @@ function local(event: PointerEvent): void {
   pointerY = event.clientY - rect.top;
 }
 canvas.addEventListener('pointerdown', (event) => {
-  if (event.button !== 0 || pointerId !== -1) return;
+  // While the player has paused, a press launches nothing (it spent a shell on the frozen sky).
+  if (event.button !== 0 || pointerId !== -1 || launchHeld()) return;
   pointerId = event.pointerId;
   canvas.setPointerCapture(event.pointerId);
   pressedAt = performance.now();
@@ -822,6 +839,7 @@ canvas.addEventListener('pointerup', (event) => {
   if (event.pointerId !== pointerId) return;
   pointerId = -1;
   local(event);
+  if (launchHeld()) return;
   const hold = Math.max(0, (performance.now() - pressedAt) / 1000);
   const cam = renderer.camera;
   pauseAutoShow(show);
@@ -1030,7 +1048,8 @@ function starText(n: number): string {
 
 // ---- The card at a level's end: its stars (or why it was lost) and, after the finale, the show's --------
 
-const card = createResultCard(app.stage, { label: 'level-card', bigSize: 48, background: 0x060914, backgroundAlpha: 0.86 });
+// Near opaque: at 0.86 a lit lantern and its glow showed through the card on a phone.
+const card = createResultCard(app.stage, { label: 'level-card', bigSize: 48, background: 0x060914, backgroundAlpha: 0.97 });
 /** Room left under the card for the big action button at the stage's bottom, CSS px. */
 const CARD_BOTTOM = 96;
 
@@ -1065,6 +1084,9 @@ function drawCard(f: StatusFrame): void {
     { title, big, lines, edge: f.lost ? 0xff8a7a : 0xffd166 },
     { cx: cam.width / 2, bottom: cam.height - CARD_BOTTOM, maxWidth: cam.width - 24, wrapWidth: Math.min(520, cam.width - 56) },
   );
+  // Above everything in the sky, labels made after the card included.
+  const top = app.stage.children.length - 1;
+  if (app.stage.getChildIndex(card.container) !== top) app.stage.setChildIndex(card.container, top);
 }
 
 /** Goes on to the next level (or back to the first after the last) with a fresh sky. */

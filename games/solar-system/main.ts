@@ -114,11 +114,19 @@ const UNITS_PER_AU = 10;
 const STEPS = ['0.25', '1', '6', '24'] as const;
 /**
  * Most physics steps a loop tick runs (a flight's rate needs at most 24 of its steps, 72 while Wait
- * is held); a rate that needs more runs slower than asked, the steps staying the forecast's.
+ * is held in flight, 128 at the top of the aiming wait's ramp for Venus's hour steps); a rate that
+ * needs more runs slower than asked, the steps staying the forecast's.
  */
-const MAX_STEPS_PER_TICK = 96;
+const MAX_STEPS_PER_TICK = 128;
 /** Days per real second while Wait (W) is held: the aiming rate (if faster) times 4, at least this. */
 const WAIT_RATE = 40;
+/**
+ * Held Wait speeds up with the days it has run: its rate grows by WAIT_RATE's worth every WAIT_RAMP
+ * days waited, up to WAIT_MAX_GAIN times it. A tap nudges by days; a long hold crosses a year in a
+ * few seconds (at a constant rate Venus's 300 days took 30 s where frames come slowly).
+ */
+const WAIT_RAMP = 20;
+const WAIT_MAX_GAIN = 8;
 /**
  * Real time forecasting may take a frame, ms (in slices of FORECAST_SLICE steps), or a third of the
  * time between frames where they come slowly (at most 40 ms): a longer forecast goes on over the
@@ -214,7 +222,8 @@ const BURN_SLOW_MS = 800;
 const BURN_SLOW = 0.2;
 
 /**
- * Days per real second now: the aiming rate (WAIT_RATE or 4 times it while Wait is held), a flight's
+ * Days per real second now: the aiming rate (WAIT_RATE or 4 times it while Wait is held, ramping up to
+ * WAIT_MAX_GAIN times that with the days waited), a flight's
  * rate (3 times it while held, at most 400; BURN_SLOW of it just after a burn), nothing after a flight ends.
  */
 function currentRate(): number {
@@ -223,7 +232,9 @@ function currentRate(): number {
     const rate = waiting ? Math.min(400, 3 * flightDaysPerSecond) : flightDaysPerSecond;
     return performance.now() - lastBurn < BURN_SLOW_MS ? BURN_SLOW * rate : rate;
   }
-  return waiting ? Math.max(WAIT_RATE, 4 * params.rate) : params.rate;
+  if (!waiting) return params.rate;
+  const waited = Number.isNaN(waitFrom) ? 0 : Math.max(0, shell.world.time - waitFrom);
+  return Math.max(WAIT_RATE, 4 * params.rate) * Math.min(WAIT_MAX_GAIN, 1 + waited / WAIT_RAMP);
 }
 
 /** The chosen step, days (the panel's "longest step"). */
@@ -235,6 +246,9 @@ const baseStep = (): number => Number(params.step) / 24;
  * next forecast too), at most MAX_STEPS_PER_TICK; during a flight the probe is checked after every step.
  */
 function stepWorld(world: PhysicsWorld): void {
+  // The wait's ramp counts from the first step with Wait held, while aiming.
+  if (!(waiting && phase === 'aim')) waitFrom = Number.NaN;
+  else if (Number.isNaN(waitFrom)) waitFrom = world.time;
   const dt = flight && phase === 'flight' ? flight.dt : missionTimeStep(mission(), baseStep());
   carry += currentRate() * TICK;
   let n = Math.floor(carry / dt + 1e-9);
@@ -291,6 +305,8 @@ let launchMs = 0;
 let flightDaysPerSecond = 30;
 /** Whether Wait (W or the button) is held. */
 let waiting = false;
+/** World time, days, Wait began to be held while aiming (its ramp counts from there); NaN while it is not. */
+let waitFrom = Number.NaN;
 /** The date a mission began, ms (the panel's restart goes back there). */
 let missionStartMs = startMs;
 const STARS_KEY = 'bitphysics.solar-system.stars';
@@ -544,7 +560,7 @@ const game = await startThreeGame({
   // were more than a new player could take in). On a phone the lines naming on-screen buttons stay
   // in the menu's legend, out of the card over the diagram (the kit leaves out gestures ending in "button(s)").
   controls: [
-    { keys: '← →', action: 'turn the launch arrow; in flight, burn in / out', touch: '↺ ↻ buttons' },
+    { keys: '← →', action: 'turn the launch arrow; in flight, burn in / out', touch: 'bottom ↺ ↻ buttons' },
     { keys: '↑ ↓', action: 'launch speed; in flight, burn faster / slower', touch: '− + buttons' },
     { keys: 'Space', action: 'launch the probe', touch: 'Launch button' },
     { keys: 'W (hold)', action: 'wait: time runs fast', touch: 'hold the Wait button' },
@@ -1511,7 +1527,8 @@ style.textContent = `
    44 x 44 px; a longer label ("+ fast", "Try again") breaks inside its button, not the row (the
    flight's buttons took two rows, Hint alone on the second, and Wait moved under the finger). */
 @media (max-width: 440px) {
-  .ss-status .ss-brief { display: none; }
+  /* The brief shows on a phone too (it was hidden: the first mission's was never seen), two lines kept. */
+  .ss-status .ss-brief { min-height: 2.8em; }
   .bp-touchbar.ss-pad { display: grid; grid-auto-flow: column; grid-auto-columns: auto; justify-content: stretch; gap: 4px; }
   .bp-touchbar.ss-pad button { min-width: 44px; padding: 0 3px; font-size: 14px; white-space: normal; line-height: 1.05; }
   .bp-touchbar.ss-pad button.ss-go { min-width: 44px; }
@@ -1696,7 +1713,8 @@ function hint(m: Mission): string {
           : '';
       // Said as the date on screen to wait for, not in seconds: time runs slower than asked where
       // frames come slowly, so a count of seconds would be false on a slow machine.
-      const until = new Date(handles.epoch + (world.time + a.days) * 86_400_000).toISOString().slice(0, 10);
+      // Non-breaking hyphens: a phone wrapped the date as "2013-10-" / "07".
+      const until = new Date(handles.epoch + (world.time + a.days) * 86_400_000).toISOString().slice(0, 10).replaceAll('-', '\u2011');
       return `No small turn or speed change arrives now. Hold Wait (${named('W', 'the Wait button')}) until the date shown reads ${until} (${a.days} days from now) while ${m.target} comes round${faster}; then ask again.`;
     }
     return `Nothing near this launch arrives now: hold Wait (${named('W', 'the Wait button')}) and watch the line, or ${named('click', 'tap')} elsewhere to aim another way.`;

@@ -88,6 +88,11 @@ describe('fireworks', () => {
   it('a click launches a shell that bursts where clicked 1.2 s later, whose sparks appear, fall and all expire', async () => {
     const g = page;
     expect(await g.page.evaluate(() => (window.game as unknown as FireworksGame).particleCount())).toBe(0);
+    // Paused by the player (P), a click launches nothing (it spent a shell on the frozen sky).
+    await g.page.keyboard.press('p');
+    await g.clickCanvas(0.5, 0.62);
+    expect(await g.page.evaluate(() => [(window.game as unknown as FireworksGame).show.launched, window.game!.paused])).toEqual([0, true]);
+    await g.page.keyboard.press('p');
     // Paused from the click on: the test steps the show itself, synchronously in the page, and then
     // lets two frames draw it (a loaded machine drawing a frame a second takes the same steps as a
     // fast one), so the steps counted from the launch are its fuse.
@@ -443,9 +448,11 @@ describe('fireworks: the lantern show', () => {
         window.game as unknown as { app: { stage: { children: { label: string; visible: boolean; children?: { text?: string }[] }[] } } }
       ).app.stage;
       const c = stage.children.find((k) => k.label === 'level-card');
-      return { visible: c?.visible, texts: (c?.children ?? []).map((k) => k.text).filter(Boolean) };
+      return { visible: c?.visible, top: stage.children.at(-1) === c, texts: (c?.children ?? []).map((k) => k.text).filter(Boolean) };
     });
     expect(lostCard.visible).toBe(true);
+    // Drawn over everything in the sky (the miss labels made after it were drawn over it).
+    expect(lostCard.top).toBe(true);
     expect(lostCard.texts).toEqual(expect.arrayContaining(['1 of 4 lit']));
     await g.page.getByRole('button', { name: 'Try again ▶' }).tap();
     await g.waitFor(() => (window.game as unknown as LanternGame).lanterns().shells === 0, null);

@@ -436,6 +436,12 @@ describe('phone controls', () => {
     const card = g.page.locator('[data-hud="touch-hint"]');
     expect(await card.textContent()).toBe('Tapaim the launch at a point');
     expect((await card.boundingBox())!.height).toBeLessThan(50);
+    // The mission's brief shows while aiming (a phone hid it: the first one was never seen), and the
+    // help names the top bar's reset apart from the bottom row's turn buttons (both read "↺ button").
+    expect(await g.page.locator('[data-hud="brief"]').isVisible()).toBe(true);
+    expect(await g.page.locator('[data-hud="brief"]').textContent()).toMatch(/^Mars is farther out/);
+    const legend = (await g.page.locator('.bp-legend').textContent()) ?? '';
+    expect([legend.includes('top ↺ button'), legend.includes('bottom ↺ ↻ buttons')]).toEqual([true, true]);
     // Mission 1 starts too slow; the Hint button names the button that fixes it and how many taps:
     // 8 taps of + arrive.
     await g.page.getByRole('button', { name: 'hint: what to try (H)', exact: true }).tap();

@@ -232,6 +232,31 @@ describe('projects', () => {
     const next = await g.page.evaluate(() => (window.game as unknown as Flow).mission());
     expect([next.number, next.target, next.phase]).toEqual([2, 'Venus', 'aim']);
     expect(await g.page.locator('[data-hud="goal"]').textContent()).toMatch(/^Mission 2\/7: fly to Venus · /);
+    // Wait held speeds up with the days it has run, to 8 times its start (Venus's 300 days at one
+    // pace took 30 s on a slow machine). Stepped by hand: 10 ticks at the start, 10 after 200 days.
+    await g.page.evaluate(() => {
+      (window.game as unknown as { paused: boolean }).paused = true;
+    });
+    await g.page.keyboard.down('w');
+    const pace = await g.page.evaluate(() => {
+      const w = window.game as unknown as { step(): void; world: { time: number } };
+      const ten = (): number => {
+        const t = w.world.time;
+        for (let k = 0; k < 10; k++) w.step();
+        return w.world.time - t;
+      };
+      const first = ten();
+      const t0 = w.world.time;
+      for (let k = 0; k < 2000 && w.world.time - t0 < 200; k++) w.step();
+      return [first, ten()];
+    });
+    await g.page.keyboard.up('w');
+    // 40 days a second, 10 ticks of 1/60 s: 6.7 days, and a little more as the ramp starts (+1 day).
+    expect(pace[0]!).toBeGreaterThan(6);
+    expect(pace[0]!).toBeLessThan(8.7);
+    // 200 days on: 8 times it, 53.3 days, within a step (at most a day).
+    expect(pace[1]!).toBeGreaterThan(52.3);
+    expect(pace[1]!).toBeLessThan(54.4);
     expect(g.errors).toEqual([]);
     await g.close();
   });

@@ -189,6 +189,12 @@ describe('lantern rules', () => {
     for (const l of lanternsOf(0, phone)) starAt(won, phone, ...lanternAt(l, phone, 0), 1);
     expect(outOfShells(won, 0)).toBe(false);
     expect(shellsLeft(won)).toBe(0);
+    // Won with a shell to spare: the row still counts it (it read "Shells 0").
+    const early = startLevel(0, 0);
+    for (let k = 0; k < LEVELS[0]!.shells - 1; k++) countShell(early);
+    for (const l of lanternsOf(0, phone)) starAt(early, phone, ...lanternAt(l, phone, 0), 1);
+    expect(early.stars).toBeGreaterThan(0);
+    expect(shellsLeft(early)).toBe(1);
     expect(() => outOfShells(run, -1)).toThrow(/outOfShells: pending/);
   });
   it('a hot star lights the lanterns it touches (within a radius of the centre), not one just beyond', () => {

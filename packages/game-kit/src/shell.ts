@@ -72,7 +72,7 @@ export interface GameShell extends GameHandle {
 export const SHELL_CONTROLS: readonly ControlHint[] = Object.freeze([
   { keys: 'P', action: 'pause / resume', touch: '▮▮ button' },
   { keys: 'N', action: 'single step (pauses)', touch: '▶▮ button' },
-  { keys: 'R', action: 'reset', touch: '↺ button' },
+  { keys: 'R', action: 'reset', touch: 'top ↺ button' },
 ]);
 
 /**
