@@ -30,6 +30,7 @@ import { addBody, type PhysicsWorld, removeBody, setAttractor, setPosition, setV
 import {
   type BlackHoleEvent,
   type BlackHoleGame,
+  clearParticles,
   gravitationalConstant,
   LINE_Y,
   MAX_HOLES,
@@ -377,6 +378,7 @@ export function heldFlight(game: BlackHoleGame, run: LevelRun, thrust: Thrust, p
   const vxHoles = run.holeVx.slice();
   const dt = world.dt,
     a = game.params.thrust,
+    sideRamp = game.params.sideRamp,
     d = THRUST_DIRECTION[game.over ? 'none' : thrust];
   const tx = a * d[0],
     ty = a * d[1];
@@ -404,7 +406,7 @@ export function heldFlight(game: BlackHoleGame, run: LevelRun, thrust: Thrust, p
       fx = fx + f * dx;
       fy = fy + f * dy;
     }
-    rampThrust(engine, tx, ty, a, dt);
+    rampThrust(engine, tx, ty, a, dt, sideRamp);
     if (engine[0] !== 0 || engine[1] !== 0) {
       fx = fx + SHIP_MASS * engine[0];
       fy = fy + SHIP_MASS * engine[1];
@@ -657,8 +659,8 @@ function driftedX(x: number, i: number, r: number, vx: number[], width: number, 
  * One step of a level: nothing while waiting; else the holes drift, the fuel burns while thrusting
  * (at zero the thrust stops and stays off), the game steps (./rules `stepBlackHole`), and a parked
  * ship (see `LevelRun.parked`) is put back at the start at rest. A crossing of
- * the line becomes 'cleared': a lost life comes back, the summary is kept, the field is emptied (the
- * next level is laid out by `beginLevel`) and the run waits with the ship at the start.
+ * the line becomes 'cleared': a lost life comes back, the summary is kept, the field is emptied of
+ * holes and exhaust (the next level is laid out by `beginLevel`) and the run waits with the ship at the start.
  * @returns the game's event, with 'scored' reported as 'cleared', or 'waiting'.
  */
 export function stepLevel(game: BlackHoleGame, run: LevelRun): BlackHoleEvent | 'cleared' | 'waiting' {
@@ -707,6 +709,7 @@ export function stepLevel(game: BlackHoleGame, run: LevelRun): BlackHoleEvent | 
   // ./rules scored one point per hole on screen and laid out one more hole: the levels lay out their
   // own, when the next level begins; until then the field is empty and the ship parked at the start.
   clearHoles(game, run);
+  clearParticles(game);
   run.spec = levelSpec(run.spec.level + 1);
   run.parked = true;
   resetShip(game);
@@ -729,7 +732,7 @@ export function clearMessage(s: LevelSummary, lifeBack: boolean, next: number): 
     (s.falls > 0 ? ` (${s.totalTime.toFixed(1)} s in all, ${s.falls} ${s.falls === 1 ? 'fall' : 'falls'})` : '') +
     `: +${s.points} (${holes}${s.bonus > 0 ? ` + ${s.bonus} speed bonus` : ''}). ` +
     (lifeBack ? `A life back: ${s.lives} ${s.lives === 1 ? 'life' : 'lives'}. ` : '') +
-    `Tap here or press Enter for level ${next}.`
+    `Press Enter for level ${next}.`
   );
 }
 

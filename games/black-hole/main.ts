@@ -53,8 +53,10 @@ import {
   FIELD,
   heldThrust,
   MAX_HOLES,
+  PHONE_SIDE_RAMP,
   type Predictor,
   predictPath,
+  THRUST_RAMP,
 } from './rules';
 
 const search = new URLSearchParams(location.search);
@@ -163,6 +165,8 @@ function createWorld(): PhysicsWorld {
     gScale: params.gScale,
     c: params.c,
     thrust: params.thrust,
+    // A narrow field (a phone held upright) gets a gentler sideways engine: a brief tap of ← or → nudges.
+    sideRamp: playField.width < FIELD.width ? PHONE_SIDE_RAMP : THRUST_RAMP.up,
     field: playField,
   });
   run = levels ? startLevel(bh, continueLevel ?? params.level) : null;
@@ -377,9 +381,18 @@ body .bp-touchbar.bp-action { top: 40%; bottom: auto; }
 /* The touch hint at the top of the stage, over the space above the finish line: at its foot (the
    kit's place) it covered the ship waiting at the start and the path up to the first hole. */
 body .bp-touch-hint { top: 6px; bottom: auto; }
+/* On a phone a d-pad: ↑ above ↓ in the middle column, ← and → the height of both either side, so a
+   thumb slides from any arrow to its neighbours without crossing a third (in one row ← ↑ ↓ →, → to ↑
+   crossed ↓); on the seam between a side arrow and ↑ or ↓ it holds both (a diagonal). */
 @media (pointer: coarse) {
-  .bp-touchbar.bh-pad { flex: 1 1 100%; gap: 8px; padding: 2px 8px; }
-  .bp-touchbar.bh-pad button { flex: 1 1 0; max-width: 86px; min-height: 62px; font-size: 28px; border-radius: 14px; }
+  .bp-touchbar.bh-pad { flex: 1 1 100%; display: grid; grid-template-columns: 84px 104px 84px;
+    grid-template-rows: 54px 54px; grid-template-areas: 'left up right' 'left down right';
+    justify-content: center; gap: 6px 8px; padding: 2px 8px 4px; }
+  .bp-touchbar.bh-pad button { min-width: 0; min-height: 0; width: 100%; height: 100%; font-size: 28px; border-radius: 14px; }
+  .bp-touchbar.bh-pad button[data-dir='left'] { grid-area: left; }
+  .bp-touchbar.bh-pad button[data-dir='up'] { grid-area: up; }
+  .bp-touchbar.bh-pad button[data-dir='down'] { grid-area: down; }
+  .bp-touchbar.bh-pad button[data-dir='right'] { grid-area: right; }
 }
 `;
 document.head.append(style);
@@ -397,42 +410,61 @@ const pad = createButtonBar(
 );
 pad.element.classList.add('bh-pad');
 for (const [i, dir] of DIRS.entries()) pad.buttons[i]!.dataset.dir = dir;
-// A finger (or the mouse) held on the pad slides from arrow to arrow: the thrust follows the arrow
+// A finger (or the mouse) held on the pad slides from arrow to arrow: the thrust follows the arrows
 // under it, so the thumb steers without lifting (each button alone keeps its pointer captured and
 // would go on thrusting the first way until the finger lifts). `padPointers` keeps each pointer's
-// direction now; lifting it lets that direction go. Each finger holds its own arrow, so two thumbs
-// on ↑ and → thrust diagonally.
-const padPointers = new Map<number, Arrow>();
-/** The direction of the pad's arrow at client point (x, y), px, or null off the arrows. */
-function padDirAt(x: number, y: number): Arrow | null {
+// arrows now; lifting it lets them go. Each finger holds its own arrows, so two thumbs on ↑ and →
+// thrust diagonally, and so does one thumb on the seam between them.
+const padPointers = new Map<number, readonly Arrow[]>();
+/** How far past a button's edge a finger still holds it, px: on the seam between ↑ and → it holds both. */
+const PAD_SEAM = 10;
+/**
+ * The pad's arrows at client point (x, y), px: the arrow whose button is under it, or within
+ * PAD_SEAM of it; two when the point is near both a side arrow and ↑ or ↓ (a diagonal); of two
+ * opposite ones (the gap between ↑ and ↓) the nearer. Empty off the arrows.
+ */
+function padDirsAt(x: number, y: number): Arrow[] {
+  let vertical: Arrow | null = null,
+    horizontal: Arrow | null = null,
+    vd = Infinity,
+    hd = Infinity;
   for (const [i, dir] of DIRS.entries()) {
     const r = pad.buttons[i]!.getBoundingClientRect();
-    if (x >= r.left && x <= r.right && y >= r.top && y <= r.bottom) return dir;
+    if (r.width === 0) continue;
+    // Distance from the point to the button's rectangle, px (0 inside it).
+    const d = Math.hypot(Math.max(r.left - x, 0, x - r.right), Math.max(r.top - y, 0, y - r.bottom));
+    if (d > PAD_SEAM) continue;
+    if (dir === 'up' || dir === 'down') {
+      if (d < vd) [vertical, vd] = [dir, d];
+    } else if (d < hd) [horizontal, hd] = [dir, d];
   }
-  return null;
+  return [vertical, horizontal].filter((d): d is Arrow => d !== null);
 }
+/** Whether two lists of arrows hold the same arrows. */
+const sameDirs = (a: readonly Arrow[], b: readonly Arrow[]): boolean => a.length === b.length && a.every((d) => b.includes(d));
 pad.element.addEventListener('pointerdown', (e) => {
   // The first thrust shows the player has found the controls: the touch hint goes.
   document.querySelector('[data-hud="touch-hint"]')?.classList.add('bp-gone');
-  const dir = padDirAt(e.clientX, e.clientY);
-  if (!dir || padPointers.has(e.pointerId)) return;
-  padPointers.set(e.pointerId, dir);
-  press(dir);
+  const dirs = padDirsAt(e.clientX, e.clientY);
+  if (dirs.length === 0 || padPointers.has(e.pointerId)) return;
+  padPointers.set(e.pointerId, dirs);
+  for (const d of dirs) press(d);
 });
 pad.element.addEventListener('pointermove', (e) => {
   const was = padPointers.get(e.pointerId);
   if (!was) return;
-  const dir = padDirAt(e.clientX, e.clientY);
-  if (!dir || dir === was) return;
-  padPointers.set(e.pointerId, dir);
-  release(was);
-  press(dir);
+  const dirs = padDirsAt(e.clientX, e.clientY);
+  // Off the arrows (between them or past the pad) the finger keeps what it held.
+  if (dirs.length === 0 || sameDirs(dirs, was)) return;
+  padPointers.set(e.pointerId, dirs);
+  for (const d of dirs) if (!was.includes(d)) press(d);
+  for (const d of was) if (!dirs.includes(d)) release(d);
 });
 const padLift = (e: PointerEvent): void => {
-  const dir = padPointers.get(e.pointerId);
-  if (!dir) return;
+  const dirs = padPointers.get(e.pointerId);
+  if (!dirs) return;
   padPointers.delete(e.pointerId);
-  release(dir);
+  for (const d of dirs) release(d);
 };
 pad.element.addEventListener('pointerup', padLift);
 pad.element.addEventListener('pointercancel', padLift);
@@ -494,7 +526,9 @@ function updateStatus(force = false): void {
     shownMessage = bh.message;
     // The rules speak of keys; on a touch screen a tap does the same.
     message.textContent = touch
-      ? overMessage(bh.message).replace('Press Enter or R to play again.', 'Tap to play again.').replace('Tap here or press Enter', 'Tap')
+      ? overMessage(bh.message)
+          .replace('Press Enter or R to play again.', 'Tap to play again.')
+          .replace('Press Enter for level', 'Tap for level')
       : overMessage(bh.message);
   }
   status.classList.toggle('over', bh.over);
@@ -850,7 +884,13 @@ function drawScorePop(): void {
   if (scoreText.text !== text) scoreText.text = text;
   const half = scoreText.width / 2 + 6;
   const x = Math.max(cam.toScreenX(0) + half, Math.min(cam.toScreenX(playField.width) - half, cam.toScreenX(scorePop.x)));
-  scoreText.position.set(x, cam.toScreenY(bh.lineY) - 6 + 60 * u * (u - 2) * 0.5);
+  // It rises 30 px from just above the line; where the line is too near the top of the stage for
+  // that (a wide field's), it sinks from just below the line instead, so it is never cut off.
+  const rise = 60 * u * (u - 2) * 0.5,
+    line = cam.toScreenY(bh.lineY);
+  const above = line - 6 - 30 - scoreText.height >= 4;
+  scoreText.anchor.set(0.5, above ? 1 : 0);
+  scoreText.position.set(x, above ? line - 6 + rise : line + 6 - rise);
   scoreText.alpha = u < 0.7 ? 1 : (1 - u) / 0.3;
 }
 function startSwallow(): void {

@@ -92,6 +92,12 @@ export const SHIP_RADIUS = 0.3;
 export const THRUST_RAMP = Object.freeze({ up: 0.25, down: 0.1 });
 
 /**
+ * The `sideRamp` (s) of a phone held upright, whose field is 20 m wide: a brief tap of ← or → a
+ * small nudge there (at THRUST_RAMP.up, 0.2 s of → drifted off its edge in under 6 s).
+ */
+export const PHONE_SIDE_RAMP = 0.6;
+
+/**
  * Thrust directions: none, one of the four arrows, or two arrows at right angles held together
  * (a diagonal, e.g. 'up-right').
  */
@@ -156,6 +162,12 @@ export interface BlackHoleOptions {
   /** Lives at the start, integer in [1, 9]. Default 3. */
   lives?: number;
   /**
+   * How long the sideways part of the thrust takes to build up, s, in [THRUST_RAMP.up, 2]: a gentler
+   * sideways engine for a narrow field (a phone's, where a brief tap of → drifted off the edge).
+   * Default THRUST_RAMP.up (the sideways part builds as fast as the rest). See `rampThrust`.
+   */
+  sideRamp?: number;
+  /**
    * Size of the playing field, m: width in [12, 64], height in [16, 64]. Default `FIELD` (32 x 24);
    * a phone held upright plays a tall one. The start is at the middle of the bottom, 1.5 m up, and
    * the finish line 2 m below the top.
@@ -213,7 +225,7 @@ function check(cond: boolean, message: string): void {
  * @throws TypeError on an unknown option; RangeError naming the option and value when out of range.
  */
 export function resolveBlackHoleOptions(options: BlackHoleOptions = {}): BlackHoleParams {
-  const known = ['seed', 'holes', 'gScale', 'c', 'thrust', 'lives', 'field'];
+  const known = ['seed', 'holes', 'gScale', 'c', 'thrust', 'lives', 'sideRamp', 'field'];
   for (const k of Object.keys(options)) {
     if (!known.includes(k)) throw new TypeError(`black-hole: unknown option ${JSON.stringify(k)}; known options are ${known.join(', ')}`);
   }
@@ -224,6 +236,7 @@ export function resolveBlackHoleOptions(options: BlackHoleOptions = {}): BlackHo
     c: options.c ?? C_GAME,
     thrust: options.thrust ?? 6,
     lives: options.lives ?? 3,
+    sideRamp: options.sideRamp ?? THRUST_RAMP.up,
     field: { width: options.field?.width ?? FIELD.width, height: options.field?.height ?? FIELD.height },
   };
   check(Number.isFinite(p.seed), `seed must be finite, got ${p.seed}`);
@@ -232,6 +245,10 @@ export function resolveBlackHoleOptions(options: BlackHoleOptions = {}): BlackHo
   checkC(p.c);
   checkThrust(p.thrust);
   check(Number.isInteger(p.lives) && p.lives >= 1 && p.lives <= 9, `lives must be an integer in [1, 9], got ${p.lives}`);
+  check(
+    typeof p.sideRamp === 'number' && p.sideRamp >= THRUST_RAMP.up && p.sideRamp <= 2,
+    `sideRamp must be in [${THRUST_RAMP.up}, 2] s, got ${String(p.sideRamp)}`,
+  );
   check(
     typeof p.field.width === 'number' && p.field.width >= 12 && p.field.width <= 64,
     `field.width must be in [12, 64] m, got ${String(p.field.width)}`,
@@ -288,12 +305,18 @@ export function gravitationalConstant(game: BlackHoleGame): number {
  * at most `rate` x dt, where the rate is full / THRUST_RAMP.up while an arrow is held (the target is
  * not zero) and full / THRUST_RAMP.down when it is let go; `full` is the thrust acceleration (m/s^2,
  * the larger of it and |vec|, so a thrust slider set to 0 still lets the engine die away).
- * @throws RangeError unless dt > 0 and full >= 0 are finite.
+ * While an arrow is held the sideways part (x) grows in size by at most full / `sideUp` x dt a step
+ * (`sideUp` s >= THRUST_RAMP.up, default THRUST_RAMP.up, where the cap never binds): a slower
+ * sideways build-up, so a brief sideways tap is a small nudge; letting go is as quick as ever.
+ * @throws RangeError unless dt > 0, full >= 0 and sideUp >= THRUST_RAMP.up are finite.
  */
-export function rampThrust(vec: [number, number], tx: number, ty: number, full: number, dt: number): void {
+export function rampThrust(vec: [number, number], tx: number, ty: number, full: number, dt: number, sideUp: number = THRUST_RAMP.up): void {
   // Checked without building the message first: this runs every step of the game and the predictor.
-  if (!(dt > 0 && full >= 0 && Number.isFinite(dt * full)))
-    throw new RangeError(`black-hole: rampThrust: dt must be > 0 and full >= 0, got ${dt}, ${full}`);
+  if (!(dt > 0 && full >= 0 && sideUp >= THRUST_RAMP.up && Number.isFinite(dt * full * sideUp)))
+    throw new RangeError(
+      `black-hole: rampThrust: dt must be > 0, full >= 0 and sideUp >= ${THRUST_RAMP.up}, got ${dt}, ${full}, ${sideUp}`,
+    );
+  const x0 = vec[0];
   const dx = tx - vec[0],
     dy = ty - vec[1],
     gap = Math.hypot(dx, dy);
@@ -305,6 +328,10 @@ export function rampThrust(vec: [number, number], tx: number, ty: number, full: 
   } else {
     vec[0] += (dx * most) / gap;
     vec[1] += (dy * most) / gap;
+  }
+  if (held && sideUp > THRUST_RAMP.up) {
+    const side = Math.abs(x0) + (full / sideUp) * dt;
+    if (Math.abs(vec[0]) > side) vec[0] = Math.sign(vec[0]) * side;
   }
 }
 
@@ -319,7 +346,7 @@ function thrustLaw(game: BlackHoleGame, ship: number, engine: { readonly thrustV
     const d = THRUST_DIRECTION[game.over ? 'none' : game.thrust];
     const a = game.params.thrust;
     const v = engine.thrustVec;
-    rampThrust(v, a * d[0], a * d[1], a, world.dt);
+    rampThrust(v, a * d[0], a * d[1], a, world.dt, game.params.sideRamp);
     if (v[0] === 0 && v[1] === 0) return;
     const F = world.components.Force;
     F.x[slotOf(ship)] = F.x[slotOf(ship)]! + SHIP_MASS * v[0];
@@ -566,6 +593,18 @@ export function stepBlackHole(game: BlackHoleGame): BlackHoleEvent {
     return 'lost';
   }
   return 'none';
+}
+
+/**
+ * Removes every exhaust particle from the game's world (a cleared level's exhaust would otherwise
+ * hang over the next level's start while the run waits without stepping).
+ */
+export function clearParticles(game: BlackHoleGame): void {
+  const world = game.world;
+  const c = world.components;
+  // Copied first: removing while iterating a bitecs query skips entities.
+  const ents = Array.from(query(world, [c.Particle, c.Position]));
+  for (const e of ents) removeBody(world, handleOf(world, e)); // query() gives slots; the API takes handles
 }
 
 /** Removes every particle inside a horizon (matter falling in). */

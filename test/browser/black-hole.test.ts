@@ -221,6 +221,30 @@ describe.each([
     };
     const up = await centre('thrust up'),
       right = await centre('thrust right');
+    if (touch) {
+      // The phone's pad is a d-pad: ↑ straight above ↓ in the middle column, ← and → either side
+      // spanning both rows, every button at least 44 x 44 px, the pad below the scene (not over it).
+      const box = async (d: string) => (await p.page.getByRole('button', { name: `thrust ${d}`, exact: true }).boundingBox())!;
+      const [l, u, dn, r] = [await box('left'), await box('up'), await box('down'), await box('right')];
+      const canvas = (await p.page.locator('canvas').first().boundingBox())!;
+      for (const [name, b] of [
+        ['left', l],
+        ['up', u],
+        ['down', dn],
+        ['right', r],
+      ] as const) {
+        expect(b.width, `${name} width`).toBeGreaterThanOrEqual(44);
+        expect(b.height, `${name} height`).toBeGreaterThanOrEqual(44);
+        expect(b.y, `${name} below the scene`).toBeGreaterThanOrEqual(canvas.y + canvas.height - 1);
+      }
+      expect(Math.abs(u.x - dn.x)).toBeLessThan(1);
+      expect(dn.y).toBeGreaterThanOrEqual(u.y + u.height);
+      expect(l.x + l.width).toBeLessThanOrEqual(u.x);
+      expect(r.x).toBeGreaterThanOrEqual(u.x + u.width);
+      expect(l.y).toBeLessThanOrEqual(u.y + 1);
+      expect(l.y + l.height).toBeGreaterThanOrEqual(dn.y + dn.height - 1);
+      expect(r.y).toBeLessThanOrEqual(u.y + 1);
+    }
     const thrust = () => p.page.evaluate(() => (window.game as unknown as Bh).bh.thrust);
     const cdp = touch ? await p.page.context().newCDPSession(p.page) : null;
     const finger = async (type: 'touchStart' | 'touchMove', [x, y]: [number, number]) =>
@@ -231,12 +255,19 @@ describe.each([
       await p.page.mouse.down();
     }
     await p.waitFor(() => (window.game as unknown as Bh).bh.thrust === 'up', null);
-    // Slid across ↓ onto → without lifting: the thrust follows the arrow under it (before, the ↑
-    // button kept the pointer and thrust up until the finger lifted).
-    const path: [number, number][] = [0.25, 0.5, 0.75, 1].map((f) => [up[0] + f * (right[0] - up[0]), up[1]]);
+    // Slid onto → without lifting: the thrust follows the arrow under it (before, the ↑ button kept
+    // the pointer and thrust up until the finger lifted). On the desktop's row the straight slide
+    // crosses ↓; on the phone's d-pad it never does, and on the seam of ↑ and → it thrusts up-right.
+    const path: [number, number][] = [0.25, 0.5, 0.75, 1].map((f) => [up[0] + f * (right[0] - up[0]), up[1] + f * (right[1] - up[1])]);
+    const seen: string[] = [];
     for (const at of path) {
       if (cdp) await finger('touchMove', at);
       else await p.page.mouse.move(...at);
+      seen.push(await thrust());
+    }
+    if (touch) {
+      expect(seen, 'thrusts on the way from ↑ to →').not.toContain('down');
+      expect(seen, 'thrusts on the way from ↑ to →').toContain('up-right');
     }
     const slid = await p
       .waitFor(() => {

@@ -31,11 +31,15 @@ import {
   gravitationalConstant,
   LINE_Y,
   MAX_HOLES,
+  PHONE_SIDE_RAMP,
   predictPath,
   START,
   setThrust,
   type Thrust,
 } from '../../games/black-hole/rules';
+
+/** The engine the page gives a field: a phone's narrow one (20 m wide) builds its sideways thrust more gently. */
+const engineFor = (field: { readonly width: number; readonly height: number }) => (field.width === 20 ? { sideRamp: PHONE_SIDE_RAMP } : {});
 
 const shipY = (g: BlackHoleGame) => g.world.components.Position.y[slotOf(g.ship)]!;
 
@@ -135,7 +139,7 @@ describe('levels', () => {
     // cleared on every seed by holding up and one sideways arrow from the start, no steering at all.
     for (const field of [FIELD, { width: 20, height: 30 }]) {
       for (let seed = 1; seed <= 3; seed++) {
-        const g = createBlackHoleGame({ seed, field });
+        const g = createBlackHoleGame({ seed, field, ...engineFor(field) });
         startLevel(g, 1);
         expect(g.holes.length).toBe(3);
         const P = g.world.components.Position;
@@ -157,10 +161,10 @@ describe('levels', () => {
     for (const field of [FIELD, { width: 20, height: 30 }])
       for (const level of [1, 2, 4, 6, 8]) {
         // The layout check agrees (it predicts; the loop below plays).
-        const g0 = createBlackHoleGame({ seed: 1, field });
+        const g0 = createBlackHoleGame({ seed: 1, field, ...engineFor(field) });
         expect(heldThrustClears(g0, startLevel(g0, level)), `level ${level}`).toBe(null);
         for (const t of thrusts) {
-          const g = createBlackHoleGame({ seed: 1, field });
+          const g = createBlackHoleGame({ seed: 1, field, ...engineFor(field) });
           const run = startLevel(g, level);
           setThrust(g, t);
           let e = 'none';
@@ -212,11 +216,11 @@ describe('levels', () => {
     };
     for (const [field, levels] of [
       [FIELD, [1, 2, 6, 8]],
-      [{ width: 20, height: 30 }, [6]],
+      [{ width: 20, height: 30 }, [1, 6]],
     ] as const)
       for (const level of levels)
         for (const t of ['up', 'up-left', 'up-right', 'left', 'right', 'down', 'down-left', 'down-right'] as const) {
-          const g = createBlackHoleGame({ seed: 2, field, lives: 9 });
+          const g = createBlackHoleGame({ seed: 2, field, lives: 9, ...engineFor(field) });
           flyBoth(g, startLevel(g, level), t, `${field.width}x${field.height} level ${level} ${t}`);
         }
     // Level 1 with its holes moved off to the side, 12 m up: holding up clears it.
@@ -272,7 +276,7 @@ describe('levels', () => {
     for (const field of [FIELD, { width: 20, height: 30 }]) {
       for (const level of [2, 3]) {
         for (const seed of field === FIELD ? [1, 2] : [3]) {
-          const g = createBlackHoleGame({ seed, field });
+          const g = createBlackHoleGame({ seed, field, ...engineFor(field) });
           const spec = startLevel(g, level).spec;
           const gap = wallGap(g);
           expect(gap.width, `level ${level} seed ${seed}`).toBeCloseTo(Math.min(spec.gate, 0.32 * field.width), 9);
@@ -287,7 +291,7 @@ describe('levels', () => {
           for (const side of ['left', 'right'] as const) {
             for (const nudge of [0, 0.4, 0.8, 1.2]) {
               if (nudge === 0 && side === 'right') continue;
-              const g2 = createBlackHoleGame({ seed, field });
+              const g2 = createBlackHoleGame({ seed, field, ...engineFor(field) });
               const run2 = startLevel(g2, level);
               const S = g2.world.components.Position;
               let crossedAt = Number.NaN,
@@ -321,7 +325,7 @@ describe('levels', () => {
     for (const field of fields) {
       for (let level = 1; level <= (field === FIELD ? 5 : 3); level++) {
         for (const seed of field === FIELD ? [1, 2] : [level + 2]) {
-          const g = createBlackHoleGame({ seed, field });
+          const g = createBlackHoleGame({ seed, field, ...engineFor(field) });
           const r = pilot(g, startLevel(g, level), 30);
           expect(r.event, `${field.width} x ${field.height}: level ${level} seed ${seed}`).toBe('cleared');
           expect(g.falls, `${field.width} x ${field.height}: level ${level} seed ${seed}`).toBe(0);

@@ -294,7 +294,7 @@ describe('thrust, exhaust, prediction', () => {
     // Let go: gone in THRUST_RAMP.down.
     for (n = 0; Math.hypot(v[0], v[1]) > 0; n++) rampThrust(v, 0, 0, 6, dt);
     expect(n).toBe(Math.round(THRUST_RAMP.down / dt));
-    expect(() => rampThrust(v, 0, 0, 6, 0)).toThrow(/rampThrust: dt must be > 0 and full >= 0, got 0, 6/);
+    expect(() => rampThrust(v, 0, 0, 6, 0)).toThrow(/rampThrust: dt must be > 0, full >= 0 and sideUp >= 0.25, got 0, 6, 0.25/);
     // In the game: a 0.1 s tap of up changes the speed by 0.17 m/s (0.6 with full thrust at once).
     const speedUp = (tap: boolean) => {
       const h = createBlackHoleGame({ seed: 6, holes: 1, thrust: 6 });
@@ -305,6 +305,31 @@ describe('thrust, exhaust, prediction', () => {
       return h.world.components.Velocity.y[slotOf(h.ship)]!;
     };
     expect(speedUp(true) - speedUp(false)).toBeCloseTo(0.17, 2);
+  });
+
+  test('a gentler sideways engine (sideRamp): a brief tap of right is a small nudge, up is as before', () => {
+    // A 7-step (0.117 s) tap from rest. The engine's x part grows at 6 / sideRamp m/s^3 while held and
+    // dies at 6 / THRUST_RAMP.down after: dv = r T^2 / 2 + (r T)^2 / (2 x 60), r = 6 / sideRamp, T = 7/60,
+    // 0.069 m/s for sideRamp 0.6 (0.236 m/s at 0.25); the sum over steps differs by under 0.01 m/s.
+    const tapSpeed = (sideRamp: number, dir: 'right' | 'up', tap: boolean) => {
+      const h = createBlackHoleGame({ seed: 6, holes: 1, thrust: 6, sideRamp });
+      for (let i = 0; i < 30; i++) {
+        setThrust(h, tap && i < 7 ? dir : 'none');
+        stepBlackHole(h);
+      }
+      const V = h.world.components.Velocity;
+      return dir === 'right' ? V.x[slotOf(h.ship)]! : V.y[slotOf(h.ship)]!;
+    };
+    const expected = (sideRamp: number) => {
+      const r = 6 / sideRamp,
+        T = 7 / 60;
+      return (r * T * T) / 2 + (r * T) ** 2 / (2 * (6 / THRUST_RAMP.down));
+    };
+    for (const ramp of [0.6, THRUST_RAMP.up])
+      expect(Math.abs(tapSpeed(ramp, 'right', true) - tapSpeed(ramp, 'right', false) - expected(ramp))).toBeLessThan(0.01);
+    // Up is not sideways: the same with any sideRamp.
+    expect(tapSpeed(0.6, 'up', true)).toBe(tapSpeed(THRUST_RAMP.up, 'up', true));
+    expect(() => createBlackHoleGame({ sideRamp: 0.1 })).toThrow(/sideRamp must be in \[0.25, 2\] s, got 0.1/);
   });
 
   test('exhaust that crosses a horizon is swallowed', () => {
