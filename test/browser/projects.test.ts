@@ -273,8 +273,8 @@ describe('projects', () => {
     expect(aim.index).toBe(0);
     expect(aim.visible).toBe(true);
     expect(aim.zoom).toBeGreaterThan(5); // px/m: the 12 m hull at least 60 px long
-    // Named by its letter (the first beacon is A), so a switch to another beacon reads as one.
-    expect(aim.text).toBe(`beacon A: ${aim.text.match(/\d+ m ahead/)![0]}, ${Math.abs(aim.dy).toFixed(0)} m down`);
+    // Named by its letter (the first beacon is A), the target held until collected.
+    expect(aim.text).toBe(`target A: ${aim.text.match(/\d+ m ahead/)![0]}, ${Math.abs(aim.dy).toFixed(0)} m down`);
     // The goal and the clock are stated above the scene.
     expect(await g.page.locator('[data-hud="goal"]').textContent()).toMatch(/^Collect the 6 beacons · 0 of 6 · 0:\d\d \/ par \d:\d\d$/);
     const x0 = await g.page.evaluate(() => {
