@@ -700,7 +700,6 @@ shell.onWorldChange(() => {
   if (handles.level !== framedLevel) frameSite();
   aimed = 0;
   lit = 0;
-  queued = 0;
   runEndedAt = -1;
   hintUntil = -1;
   notice.until = -1;
@@ -1031,14 +1030,6 @@ function dropMarks(x: number, z: number): void {
   slide.z = z;
   slide.at = shell.world.time;
 }
-// Round the target tapped while the ball is on its run at another: a white ring, pulsing, until its swing begins.
-const nextRing = new Mesh(
-  new RingGeometry(0.36, 0.5, 40),
-  new MeshBasicMaterial({ color: 0xffffff, transparent: true, opacity: 0.85, depthWrite: false }),
-);
-nextRing.rotation.x = -Math.PI / 2;
-nextRing.visible = false;
-app.scene.add(nextRing);
 
 // ---- Depth cues: where the ball is over the ground, and where a drag's swing will go ----------------
 
@@ -1166,7 +1157,6 @@ window.addEventListener('keydown', (event) => {
   handles.controls.goal = null;
   handles.controls.moves = [];
   aimed = 0;
-  queued = 0;
   event.preventDefault();
 });
 window.addEventListener('keyup', (event) => held.delete(event.key.toLowerCase()));
@@ -1253,7 +1243,6 @@ function pressAt(ndcX: number, ndcY: number): 'ball' | 'aim' | 'hook' | 'none' {
   handles.controls.moves = [];
   handles.controls.goal = [groundHit.x, groundHit.z];
   aimed = 0;
-  queued = 0;
   hintUntil = shell.world.time + HINT_SHOWN;
   return 'hook';
 }
@@ -1467,10 +1456,6 @@ function light(piece: number): void {
 }
 /** Whether the last tap re-aimed a swing still winding up (the status line says so). */
 let retargeted = false;
-/** A target tapped while the ball was already on its run at another: swung at once that swing's result is counted (0: none). */
-let queued = 0;
-/** The swing the player aimed at `queued` (undefined: the planner's own). */
-let queuedAim: SwingRequest | undefined;
 /** Swings used on this level (runs at targets begun, drags of the ball), out of its `swingBudget`. */
 function swingsUsed(): number {
   return handles.controls.released;
@@ -1526,7 +1511,6 @@ function swingAt(piece: number, aim?: SwingRequest): boolean {
   } else if (retargeted) say(`Still swinging at ${pieceName(piece)}`);
   // A swing whose result was not counted yet (its run over, the dust settling) is counted now.
   if (runEndedAt >= 0) countResult();
-  queued = 0;
   aimAt(shell.world, handles, piece, aim);
   light(piece);
   aimed = piece;
@@ -1858,10 +1842,6 @@ function drawPlan(): void {
       `<circle cx="${X(tx)}" cy="${Z(tz)}" r="6" fill="none" stroke="#ffd166" stroke-width="2"/>`,
     );
   }
-  if (queued !== 0 && isAlive(shell.world, queued))
-    out.push(
-      `<circle cx="${X(P.x[queued]!)}" cy="${Z(P.z[queued]!)}" r="8" fill="none" stroke="#ffffff" stroke-width="2" stroke-dasharray="3 2"/>`,
-    );
   out.push('</svg>');
   plan.innerHTML = out.join('');
 }
@@ -1889,7 +1869,6 @@ plan.addEventListener('click', (event) => {
     handles.controls.moves = [];
     handles.controls.goal = [x, z];
     aimed = 0;
-    queued = 0;
   }
 });
 
@@ -1906,7 +1885,7 @@ const compactStyle = document.createElement('style');
 compactStyle.textContent =
   '[data-hud="tap-hint"].compact { top: 4px !important; padding: 2px 8px !important; font-size: 12px !important; line-height: 1.25 !important; max-width: 80% !important; border-radius: 10px !important; }';
 document.head.append(compactStyle);
-/** A short message over the scene saying what a tap did (re-aimed, queued, refused), until world time `until`. */
+/** A short message over the scene saying what a tap did (re-aimed or refused), until world time `until`. */
 const notice = { text: '', until: -1 };
 /** Seconds a notice stays. */
 const NOTICE_SHOWN = 2.5;
@@ -2072,27 +2051,9 @@ function frame(): void {
     oldRing.scale.setScalar(2.6 * (1 - 0.4 * faded));
     (oldRing.material as MeshBasicMaterial).opacity = 0.85 * (1 - faded);
   } else slide.at = -1;
-  nextRing.visible = queued !== 0 && isAlive(shell.world, queued);
-  if (nextRing.visible) {
-    const P = shell.world.components.Position;
-    nextRing.position.set(P.x[queued]!, 0.025, P.z[queued]!);
-    nextRing.scale.setScalar(2.6 * (1 + 0.08 * Math.sin(shell.world.time * 8)));
-  }
   // Once a swing's run is over, what it did: how many pieces it brought down, said for RESULT_SHOWN s.
   if (aimed !== 0 && handles.controls.moves.length === 0 && swing.pending && runEndedAt < 0) runEndedAt = shell.world.time;
-  if (runEndedAt >= 0 && shell.world.time - runEndedAt > 1.5) {
-    countResult();
-    // The target tapped during the run, if it still stands: its swing now (the result stays in the status line).
-    const next = queued;
-    queued = 0;
-    const p = handles.pieces.find((q) => q.body === next);
-    if (p && !p.fallen && isAlive(shell.world, next)) {
-      const { result, resultAt } = swing;
-      swingAt(next, queuedAim);
-      swing.result = result;
-      swing.resultAt = resultAt;
-    }
-  }
+  if (runEndedAt >= 0 && shell.world.time - runEndedAt > 1.5) countResult();
   if (frames++ % 6 === 0) {
     const n = handles.pieces.length,
       f = fallenCount(handles.pieces);
@@ -2201,13 +2162,12 @@ shell.expose({
   /** Whether the depth cues show: the ball's ground mark, and (while held) its plumb line and swing track. */
   cues: () => ({ mark: ballMark.visible, plumb: plumb.visible, track: trackDashes[0]!.visible, meets: meetRing.visible }),
   /**
-   * The swing's marks now: where its ring stands (m, x and z; null when hidden), whether the re-aimed
-   * swing's old target still shows its fading ring, and the target tapped to come next (0: none).
+   * The swing's marks now: where its ring stands (m, x and z; null when hidden) and whether the
+   * re-aimed swing's old target still shows its fading ring.
    */
   marks: () => ({
     ring: goalMarker.visible ? [goalMarker.position.x, goalMarker.position.z] : null,
     old: oldRing.visible,
-    next: nextRing.visible ? queued : 0,
   }),
   /** What the last swing did, once counted ('Hit! N down' or 'Missed: tap it again'; '' before). */
   swingResult: (): string => swing.result,
