@@ -261,7 +261,7 @@ describe('3D rigid-body games in headless Chromium', () => {
     // here, so it never ends) re-aim that swing and use none until its run begins. A tap on another
     // target is seen to move the swing: the hint names the new target and the old one, a fading ring
     // stays at the old one and the swing's ring slides over to the new one.
-    type Marks = { marks(): { ring: number[] | null; old: boolean; next: number } };
+    type Marks = { marks(): { ring: number[] | null; old: boolean } };
     /** Presses the first piece of kind `kind` where it is drawn; its place across the ground, m. */
     const pressPiece = (kind: string) =>
       g.page.evaluate((kind) => {
@@ -319,8 +319,10 @@ describe('3D rigid-body games in headless Chromium', () => {
     });
     expect(onRun).toBe(true);
     expect((await pressPiece('tower')).pressed).toBe('none');
-    await g.frames(2);
-    expect(await hint.textContent()).toBe('The ball is on its swing: wait till it is done, then aim again (no swing used)');
+    // The hint is written every 6th frame: waited for, not read after a fixed count of frames.
+    const refused = 'The ball is on its swing: wait till it is done, then aim again (no swing used)';
+    await g.waitFor((text) => document.querySelector('[data-hud="tap-hint"]')?.textContent === text, refused);
+    expect(await hint.textContent()).toBe(refused);
     const afterRun = await g.page.evaluate(() => {
       const game = window.game as unknown as WB & Swings;
       for (let i = 0; i < 900 && (game.handles() as unknown as Run).controls.moves.length > 0; i++) game.step();
