@@ -329,7 +329,11 @@ function checkRings(time: number): void {
   if (next < 0) finish(time);
   // A lesson's ring next (2 to 4): the flight waits while its tip is read, unless the pilot is
   // flying it already (a key or the stick held: no key would come to go on with).
-  else if (next !== before && next >= 1 && next <= 3 && !steering()) holding = true;
+  else if (next !== before && next >= 1 && next <= 3 && !steering()) {
+    // Paused at once, not at the next step: the tip and the pause show in the same frame.
+    holding = true;
+    shell.paused = true;
+  }
 }
 /** Game time of the last miss, s (the clock flashes for a while after it). */
 let missedAt = -Infinity;

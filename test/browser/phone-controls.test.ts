@@ -124,6 +124,11 @@ describe('phone controls', () => {
     expect(tip).toMatch(/^Ring 2 is to the (left|right): push the stick \1 to tip the wings and turn; let go to fly straight\.$/);
     // The flight waits while it is read; the tip is compact (the tip and the ring's banner covered the
     // top third of the phone's scene): the banner gives way, the tip is within a tenth of the scene's height.
+    // Read once a frame has drawn the wait (the tip can show in the frame whose last step passed ring 1).
+    await g.waitFor(
+      () => window.game!.paused && document.querySelector<HTMLElement>('[data-hud="banner"]')!.style.display === 'none',
+      null,
+    );
     const covered = await g.page.evaluate(() => {
       const box = (s: string) => document.querySelector(s)!.getBoundingClientRect();
       const banner = document.querySelector<HTMLElement>('[data-hud="banner"]')!;
