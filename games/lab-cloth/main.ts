@@ -177,6 +177,8 @@ function labStep(world: PhysicsWorld): void {
     calm = calmTarget > calm ? Math.min(1, calm + CALM_RATE * world.dt) : Math.max(0, calm - CALM_RATE * world.dt);
     blowNow(world);
   }
+  // The hand's pull follows how far it leads the patch it holds (grab.ts).
+  grab?.update();
   const t0 = performance.now();
   physicsStep(world);
   stepMs = performance.now() - t0;
@@ -680,7 +682,8 @@ function drawHand(): void {
   if (!grab) return;
   const cam = renderer.camera;
   const [x, y] = grab.patch([0, 0]);
-  const pull = Math.min(1, grab.force() / grab.options.maxForce);
+  // Full brightness (and red past 0.7) as the pull nears what tears the sheet (25-55 N, grab.ts).
+  const pull = Math.min(1, grab.force() / (2.5 * grab.options.firm));
   const hx = cam.toScreenX(grab.hand[0]),
     hy = cam.toScreenY(grab.hand[1]);
   hand
