@@ -270,6 +270,43 @@ describe('lab-cloth', () => {
     expect(torn).toBe(0);
   });
 
+  it('a 45-degree cut either way is drawn as a straight edge: each cell it clips keeps its far half', () => {
+    // A stroke at 45 degrees through the still sheet clips a corner off each cell it crosses (its two
+    // sides by that corner cut). Drawn with one fixed split (upper-left and lower-right triangles),
+    // a cut down to the left kept half of each such cell but one down to the right none (stairs of
+    // whole cells). Split along the other diagonal where that keeps more, each clipped cell keeps the
+    // triangle away from the cut, whose sides are both whole, and the drawn edge is the diagonal.
+    for (const dir of [1, -1]) {
+      const { world, cloth } = createClothScene(STILL);
+      for (let i = 0; i < 30; i++) step(world);
+      const cells = new ClothCells(cloth);
+      const C = cloth.columns;
+      // From 0.3 cells off point (6, 16) (above it), 8 cells each way down the diagonal.
+      const [x0, y0] = pointAt(world, cloth, 6, 16);
+      const { spacing } = sheetGrid(DEFAULTS.size);
+      const y = y0 + 0.3 * spacing;
+      expect(cutAlong(world, x0 - dir * 8 * spacing, y + 8 * spacing, x0 + dir * 8 * spacing, y - 8 * spacing).length).toBeGreaterThan(0);
+      let clipped = 0;
+      for (let cell = 0; cell < cells.across * cells.down; cell++) {
+        const q = 4 * cell;
+        const [top, left, bottom, right] = [0, 1, 2, 3].map((k) => isAlive(world, cells.sides[q + k]!));
+        const dead = [top, left, bottom, right].filter((a) => !a).length;
+        if (dead === 0) {
+          expect(cells.drawn(world, cell)).toBe(3);
+          continue;
+        }
+        if (dead !== 2 || (top === bottom && left === right)) continue;
+        clipped++;
+        const t = cells.drawn(world, cell);
+        // One triangle, and the one whose two sides are the cell's whole ones.
+        const want = top && left ? 1 : bottom && right ? 2 : top && right ? 4 : 8;
+        expect(t, `cell ${Math.floor(cell / (C - 1))},${cell % (C - 1)}`).toBe(want);
+      }
+      // The stroke crosses about 16 cells, clipping a corner of each.
+      expect(clipped).toBeGreaterThan(12);
+    }
+  });
+
   it('the shapes lie inside the sheet, apart; a torn link takes out the two triangles beside it', () => {
     const { columns, rows, height } = sheetGrid(DEFAULTS.size);
     const masks = shapeCells(DEFAULTS.size);
