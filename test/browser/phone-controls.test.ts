@@ -165,6 +165,30 @@ describe('phone controls', () => {
     };
     expect(await tipAt(until - 0.2)).not.toBe('');
     expect(await tipAt(until + 0.1)).toBe('');
+    // Paused by the toolbar's button (a real tap): the scene dims and says "Paused" and how to go on
+    // over the whole stage (in 3D there was no sign of it but the button's icon); a tap on it resumes.
+    await g.page.evaluate(() => {
+      window.game!.paused = false;
+    });
+    await g.page.getByRole('button', { name: 'pause / resume (P)' }).tap();
+    const shade = await g.waitFor(() => {
+      const el = document.querySelector<HTMLElement>('[data-hud="paused"]');
+      if (!window.game!.paused || !el || el.style.display === 'none') return null;
+      const box = el.getBoundingClientRect(),
+        stage = document.querySelector('canvas')!.getBoundingClientRect();
+      return {
+        text: el.innerText,
+        box: [box.left, box.top, box.width, box.height],
+        stage: [stage.left, stage.top, stage.width, stage.height],
+      };
+    }, null);
+    expect(shade.text.replace(/\s+/g, ' ')).toBe('Paused Tap to resume');
+    for (let k = 0; k < 4; k++) expect(Math.abs(shade.box[k]! - shade.stage[k]!)).toBeLessThan(2);
+    await g.page.touchscreen.tap(shade.box[0]! + shade.box[2]! / 2, shade.box[1]! + shade.box[3]! / 2);
+    await g.waitFor(
+      () => !window.game!.paused && document.querySelector<HTMLElement>('[data-hud="paused"]')!.style.display === 'none',
+      null,
+    );
     expect(g.errors).toEqual([]);
     await g.close();
   });
