@@ -1,5 +1,6 @@
 import type { ContactBuffer } from '../collision/contacts.js';
 import type { CollisionSettings } from '../collision/state.js';
+import { describe } from '../validation/validate.js';
 import { registerExternalWorldState } from '../world/external-state.js';
 import type { PhysicsWorld } from '../world/options.js';
 
@@ -76,10 +77,14 @@ export function smallestBallRadius(buf: ContactBuffer): number {
  * step of `world` that solved (or is solving) them used, which `withScaledSubsteps` moves toward their
  * smallest ball radius at most LENGTH_RAMP times a step (kept in `world.scratch.contactLengths`); for a
  * buffer no step of `world` has used, their smallest ball radius (Infinity if no rows).
+ * @throws TypeError if `world` is not a physics world (the call before was `contactLength(buf)`).
  * @category Collision
  */
 export function contactLength(world: PhysicsWorld, buf: ContactBuffer): number {
-  return world.scratch.contactLengths.get(buf) ?? smallestBallRadius(buf);
+  const lengths = world?.scratch?.contactLengths;
+  if (lengths === undefined)
+    throw new TypeError(`contactLength: world must be a physics world (contactLength(world, buf)), got ${describe(world)}`);
+  return lengths.get(buf) ?? smallestBallRadius(buf);
 }
 
 /**
