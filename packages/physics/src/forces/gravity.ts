@@ -6,19 +6,17 @@ import { Not, query } from '../world/query.js';
 import type { ForceLaw } from './law.js';
 import { inverseSquarePairs } from './pairwise.js';
 
-const sourcesOf = new WeakMap<PhysicsWorld, Float64Array>();
-
 /**
  * The world's packed attractor list (6 slots a source), grown by doubling; on shared memory once the
  * world has a thread pool, so the pool's workers can read it.
  */
 function attractorSources(world: PhysicsWorld, n: number): Float64Array {
-  let S = sourcesOf.get(world);
+  let S = world.scratch.attractorSources;
   const shared = world.threadPool !== null;
   if (S === undefined || S.length < 6 * n || (shared && !isShared(S))) {
     const length = 6 * Math.max(n, 2 * (S ? S.length / 6 : 4));
     S = shared ? sharedFloat64(length) : new Float64Array(length);
-    sourcesOf.set(world, S);
+    world.scratch.attractorSources = S;
   }
   return S;
 }

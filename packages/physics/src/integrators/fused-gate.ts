@@ -88,18 +88,12 @@ const IDLE_WHEN: ReadonlyMap<System, readonly [(c: Components) => object[], numb
   [liftingSurfaceSystem, [(c) => [c.LiftingSurface], 1]],
 ]);
 
-/** The query terms of each idle check, built once per world (keyed by its component stores): no allocation a substep. */
-const termCache = new WeakMap<Components, Map<System, object[]>>();
-
-function idleTerms(c: Components, law: System, build: (c: Components) => object[]): object[] {
-  let m = termCache.get(c);
-  if (m === undefined) {
-    m = new Map();
-    termCache.set(c, m);
-  }
+/** The query terms of `law`'s idle check, built once per world (`world.scratch.idleTerms`): no allocation a substep. */
+function idleTerms(world: PhysicsWorld, law: System, build: (c: Components) => object[]): object[] {
+  const m = world.scratch.idleTerms;
   let t = m.get(law);
   if (t === undefined) {
-    t = build(c);
+    t = build(world.components);
     m.set(law, t);
   }
   return t;
@@ -138,7 +132,7 @@ export function fusedForcesAllowed(world: PhysicsWorld): boolean {
     }
     if (TORQUE_ONLY.has(s)) continue;
     const idle = IDLE_WHEN.get(s);
-    if (idle === undefined || query(world, idleTerms(world.components, s, idle[0])).length >= idle[1]) return false;
+    if (idle === undefined || query(world, idleTerms(world, s, idle[0])).length >= idle[1]) return false;
   }
   // Each absorbed law exactly once (counted above; a duplicate would show as one missing).
   if (absorbed !== ABSORBED.length) return false;
@@ -147,7 +141,7 @@ export function fusedForcesAllowed(world: PhysicsWorld): boolean {
   if (
     query(
       world,
-      idleTerms(world.components, clearForcesSystem, (c) => [c.Force]),
+      idleTerms(world, clearForcesSystem, (c) => [c.Force]),
     ).length !== forced
   )
     return false;

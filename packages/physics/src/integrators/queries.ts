@@ -77,21 +77,18 @@ export function simpleSpinningBodies(world: PhysicsWorld): QueryResult {
  * none carries a GravityScale or both drags (the gate checks this by their lengths).
  */
 
-type Components = PhysicsWorld['components'];
-
-/** The terms of the three lists, built once per world (keyed by its component stores): these run every substep. */
-const fusedTerms = new WeakMap<Components, readonly [object[], object[], object[]]>();
-
-function fusedTermsOf(c: Components): readonly [object[], object[], object[]] {
-  let t = fusedTerms.get(c);
+/** The terms of the three lists, built once per world (`world.scratch.fusedTerms`): these run every substep. */
+function fusedTermsOf(world: PhysicsWorld): readonly [object[], object[], object[]] {
+  let t = world.scratch.fusedTerms;
   if (t === undefined) {
+    const c = world.components;
     const mover = [c.Position, c.Velocity, c.Force, Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)];
     t = [
       [...mover, Not(c.LinearDrag), Not(c.QuadraticDrag), Not(c.GravityScale)],
       [...mover, c.QuadraticDrag, Not(c.LinearDrag), Not(c.GravityScale)],
       [...mover, c.LinearDrag, Not(c.QuadraticDrag), Not(c.GravityScale)],
     ];
-    fusedTerms.set(c, t);
+    world.scratch.fusedTerms = t;
   }
   return t;
 }
@@ -101,7 +98,7 @@ function fusedTermsOf(c: Components): readonly [object[], object[], object[]] {
  * @category Integrators
  */
 export function fusedBareBodies(world: PhysicsWorld): QueryResult {
-  return query(world, fusedTermsOf(world.components)[0]);
+  return query(world, fusedTermsOf(world)[0]);
 }
 
 /**
@@ -109,7 +106,7 @@ export function fusedBareBodies(world: PhysicsWorld): QueryResult {
  * @category Integrators
  */
 export function fusedQuadraticBodies(world: PhysicsWorld): QueryResult {
-  return query(world, fusedTermsOf(world.components)[1]);
+  return query(world, fusedTermsOf(world)[1]);
 }
 
 /**
@@ -117,5 +114,5 @@ export function fusedQuadraticBodies(world: PhysicsWorld): QueryResult {
  * @category Integrators
  */
 export function fusedLinearBodies(world: PhysicsWorld): QueryResult {
-  return query(world, fusedTermsOf(world.components)[2]);
+  return query(world, fusedTermsOf(world)[2]);
 }

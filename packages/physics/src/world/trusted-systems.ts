@@ -9,6 +9,7 @@ import type { StageName } from './stage-names.js';
  */
 export type FiniteScope = 'all' | 'linear';
 
+// A WeakMap: keyed by a system function, code shared by every world (marked once when its feature installs), not by a world.
 const trusted = new WeakMap<System, { scope: FiniteScope; idle?: (world: PhysicsWorld) => boolean }>();
 
 /**
