@@ -487,9 +487,13 @@ function playHoop(world: PhysicsWorld): void {
     }
     b.x = x;
     b.y = y;
-    // Falling below the rim's line beside the hoop (the way in is down through it), or out too long: a miss.
+    // Falling below the rim's line beside the hoop (the way in is down through it), or out too long: a
+    // miss. A ball above the rim over the hoop (on the backboard's top, on the rim) may still drop in:
+    // it has MISS_SECONDS more, and then the rest of MISS_SECONDS_OVER_HOOP.
     const falling = world.components.Velocity.y[slotOf(e)]! < 0 && y < opening.y;
-    if (falling || world.time - b.at > MISS_SECONDS) {
+    const overHoop = y >= opening.y && x > opening.minX - HOOP_REACH && x < opening.maxX + HOOP_REACH;
+    const out = world.time - b.at;
+    if (falling || out > MISS_SECONDS_OVER_HOOP || (out > MISS_SECONDS && !overHoop)) {
       flights.delete(e);
       if (b.scores && roundMiss(round)) {
         missAt = performance.now();
@@ -506,6 +510,17 @@ function playHoop(world: PhysicsWorld): void {
     setTimeout(() => sound.chime(659.25, 0.9), 320);
   }
 }
+
+/**
+ * How far beside the hoop's opening, m, a thrown ball above the rim may still drop in (over the
+ * backboard's top or the front rim: a ball of radius up to 0.6 m resting on either).
+ */
+const HOOP_REACH = 0.8;
+/**
+ * The longest a thrown ball may be out, s, if it is over the hoop (HOOP_REACH) when MISS_SECONDS have
+ * passed: one that sat on the backboard's top, then rolled off into the net, went in with no basket.
+ */
+const MISS_SECONDS_OVER_HOOP = 3 * MISS_SECONDS;
 
 /** Basketballs left lying about that the court keeps; past this many the oldest at rest fades out. */
 const MAX_LOOSE = 12;
@@ -1365,7 +1380,9 @@ function drawCelebration(age: number): void {
 /**
  * The backboard of the hoop at `spot`: a white board (its physics is the capsule of hoopSegments,
  * drawn as a board 0.16 m thick) with the red target square over the rim, and a steel bracket from
- * the board to the box's side wall behind it.
+ * the board to the box's side wall behind it. The bracket has no body (balls that go over the board
+ * fall behind it), so it is drawn dim on the wall under the balls (`bracketLayer`): a ball falling
+ * behind the board passes in front of it, not through it.
  */
 function drawBackboard(spot: HoopSpot): void {
   const cam = renderer.camera;
@@ -1374,11 +1391,12 @@ function drawBackboard(spot: HoopSpot): void {
   const wall = spot.side > 0 ? box.max[0] : box.min[0];
   // The bracket: two struts from the board's back to the side wall (if there is room between them).
   const back = bx + spot.side * HOOP_RADIUS;
+  bracketLayer.clear();
   if (Math.abs(wall - back) > 0.05) {
     for (const y of [spot.y + 0.15, spot.y + 0.9]) {
-      hoopLayer.moveTo(cam.toScreenX(back), cam.toScreenY(y)).lineTo(cam.toScreenX(wall), cam.toScreenY(y + 0.25));
+      bracketLayer.moveTo(cam.toScreenX(back), cam.toScreenY(y)).lineTo(cam.toScreenX(wall), cam.toScreenY(y + 0.25));
     }
-    hoopLayer.stroke({ width: Math.max(3, cam.toScreenLength(0.1)), color: 0x6b7485 });
+    bracketLayer.stroke({ width: Math.max(3, cam.toScreenLength(0.1)), color: 0x4a5670 });
   }
   const t = Math.max(6, cam.toScreenLength(2 * HOOP_RADIUS));
   const x = cam.toScreenX(bx),
@@ -1406,6 +1424,9 @@ const standLabel = new Text({
 standLabel.anchor.set(0.5);
 standLabel.visible = false;
 app.stage.addChildAt(standLabel, 1);
+/** The backboard's bracket, on the wall under the balls (drawBackboard). */
+const bracketLayer = new Graphics({ label: 'hoop-bracket' });
+app.stage.addChildAt(bracketLayer, 2);
 // The renderer's walls (thin lines with end dots, the box's outline) look like a physics diagram:
 // the court draws them as a frame and wooden ramps instead.
 const plainWalls = renderer.root.children.find((c) => c.label === 'walls');
