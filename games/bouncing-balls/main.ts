@@ -234,8 +234,6 @@ function createWorld(): PhysicsWorld {
  * 0.4 m off in 0.1 s). A path still inside a ball then goes on passing it for up to LEAVE_MAX_SECONDS.
  */
 const LEAVE_SECONDS = 0.3;
-/** The most a leaving ball's pass changes a neighbour's velocity in a step, m/s (it pushes it aside). */
-const LEAVE_PUSH = 1.5;
 /** The hard end of a leave, s: a path that is still inside balls by then (a long drive through the heap) meets them. */
 const LEAVE_MAX_SECONDS = 0.5;
 
@@ -323,14 +321,6 @@ function leaveFreely(world: PhysicsWorld): void {
       if (dv > 0) {
         V.x[q] = V.x[q]! - dv * ux;
         V.y[q] = V.y[q]! - dv * uy;
-      }
-      // Aside at a walk, not a pop: the contact keeps pushing while the thrown ball is restored inside it.
-      const sx = V.x[q]! - l.near[i + 3]!,
-        sy = V.y[q]! - l.near[i + 4]!,
-        push = Math.hypot(sx, sy);
-      if (push > LEAVE_PUSH) {
-        V.x[q] = l.near[i + 3]! + (sx * LEAVE_PUSH) / push;
-        V.y[q] = l.near[i + 4]! + (sy * LEAVE_PUSH) / push;
       }
     }
   }
