@@ -4,7 +4,7 @@
 // beacon lies steeper than the boat can dive), holds Dive or Rise toward the next beacon, and when the
 // mine warning by the hull comes (mines.ts mineAhead, as the page computes it) it waits S s (default
 // 1: mines.ts MINE_REACTION), then holds the Rise or Dive key as told while the warning lasts (a key
-// ramps up, helm.ts keyHeaveShare, as on the page) and holds its depth until it is past the mine. It minds neither the ridges nor the glow trail. Courses: seeds 1
+// asks for a steady share, helm.ts keyHeaveShare, as on the page) and holds its depth until it is past the mine. It minds neither the ridges nor the glow trail. Courses: seeds 1
 // to N (default 20) with 6 and with 10 beacons. --warn: how far ahead the warning looks, s (default
 // mines.ts MINE_WARN_TIME). Prints the mines hit (and how long before each the
 // warning came), the seabed hits, the beacons collected (the hull's centre within 8 m, the page's

@@ -36,7 +36,7 @@ export const MINE_BED_CLEARANCE = 5;
 export const MINE_REACTION = 1;
 /**
  * How far ahead the warning looks along the boat's course, s (mineAhead): 65 m at full ahead
- * (12.9 m/s). Long enough for a pilot on the keys, whose Dive or Rise ramps up (helm.ts
+ * (12.9 m/s). Long enough for a pilot on the keys, whose Dive or Rise asks for part of the speed (helm.ts
  * keyHeaveShare): at 4 s a stranger read "dive under" when the mine was already at the bow. Measured
  * headless (helm and physics, test/games/submarine-mines.test.ts): a boat at full ahead on a level
  * run into a mine on its line, holding Rise from MINE_REACTION s after the warning, passes it with

@@ -290,8 +290,8 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
         touchPoints: [{ x: stick.x + stick.width / 2, y: stick.y + stick.height - 10, id: 1 }],
       });
     else await g.page.keyboard.down('s');
-    // The stick's full push dives at full speed at once; the key ramps up (helm.ts keyHeaveShare),
-    // so it is held longer for the order to run metres ahead.
+    // The stick's full push dives at full speed; the key asks for a steady share of it (helm.ts
+    // keyHeaveShare), so it is held longer for the order to run metres ahead.
     await g.waitFor(([t, held]) => (window.game as unknown as Sub).world.time > t + held, [t0, touch ? 0.8 : 1.5] as const, 60_000);
     if (cdp) {
       await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
@@ -316,7 +316,7 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     }, t1);
     expect(r.movedWhenOrdered).toBeLessThan(0.05);
     expect(r.shown).toBe(true);
-    expect(r.deep).toBeGreaterThan(2); // 0.8 s of a full dive on the stick, 1.5 s of the ramped key
+    expect(r.deep).toBeGreaterThan(2); // 0.8 s of a full dive on the stick, 1.5 s of the key
     expect(r.orderKept).toBe(true);
     expect(r.past).toBeLessThan(0.2);
     expect(Math.abs(r.end)).toBeLessThan(0.2);
