@@ -128,22 +128,22 @@ export const WALL_GAP = 0.5;
  * Level 2's wall heights, m on the default field (see `LevelSpec.wallHeight`): high up, so the start
  * is not deep in the wall's well. A wall pulls like a line of mass (about 18 kg/m), some 2 G lambda / d:
  * at 10 to 12 m up it pulled the waiting ship at 2.7 to 3 m/s^2 (half the default thrust), and a ship
- * nudged by taps was drawn up into it; at 15 to 16 m the pull at the start is 1.6 to 1.9 m/s^2.
+ * nudged by taps was drawn up into it; at 16.5 to 17.5 m the pull at the start is 1.4 to 1.6 m/s^2.
  */
-export const LEVEL2_WALL_HEIGHT: readonly [number, number] = Object.freeze([15, 16]);
+export const LEVEL2_WALL_HEIGHT: readonly [number, number] = Object.freeze([16.5, 17.5]);
 
 /**
- * Level 2's gap, m: under a wall that high a ship holding a diagonal arrow from the start is bent
- * towards the wall's longer side and meets the wall's height some 8.5 to 9 m to the side of the start
- * on the 32 m field, inside any gap 9 m wide that fits there; a gap this wide lies between 2 m and
- * 8.5 m out, so the diagonal meets a hole.
+ * Level 2's gap, m: under a wall that high a ship holding a diagonal arrow from the start meets the
+ * wall's height about DIAGONAL_REACH of its height out to the side (bent in by the wall's longer
+ * side), on the 32 m field inside any gap 9 m wide that fits; a gap this wide fits between 2 m out
+ * and there, so the diagonal meets a hole.
  */
 export const LEVEL2_GATE = 6;
 
 /**
  * How far to the side of the start a ship holding a diagonal arrow from it meets a wall's height, as a
- * fraction of the wall's height above the start (measured on level 2: 8.6 to 9.0 m out under a wall
- * 14 to 14.6 m up; a 45-degree line would be 1). `layWall` keeps the gap away from there.
+ * fraction of the wall's height above the start (0.6 to 0.64 measured on level 2's wall; a 45-degree
+ * line would be 1). `layWall` keeps the gap away from there.
  */
 const DIAGONAL_REACH = 0.62;
 
