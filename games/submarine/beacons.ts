@@ -7,7 +7,8 @@
 
 import { Rng } from '@bitphysics/physics';
 import { assertFinite } from '@bitphysics/physics/validate';
-import { SUBMARINE, type SubmarineHandles, seabedHeight } from '@bitphysics/projects';
+import { type SubmarineHandles, seabedHeight } from '@bitphysics/projects';
+import { hullDistance } from './hull';
 
 /**
  * A beacon is collected when any part of the hull (its 12 m x 3 m box) comes within this of it, m:
@@ -26,15 +27,7 @@ export const BEACON_CATCH = 8;
 export function catchesBeacon(x: number, y: number, angle: number, bx: number, by: number): boolean {
   assertSegment('catchesBeacon', x, y, bx, by);
   assertFinite('catchesBeacon', 'angle', angle);
-  const dx = bx - x,
-    dy = by - y,
-    co = Math.cos(angle),
-    s = Math.sin(angle);
-  const u = dx * co + dy * s,
-    v = -dx * s + dy * co;
-  const du = Math.max(0, Math.abs(u) - SUBMARINE.length / 2),
-    dv = Math.max(0, Math.abs(v) - SUBMARINE.height / 2);
-  return du * du + dv * dv < BEACON_CATCH * BEACON_CATCH;
+  return hullDistance(x, y, angle, bx, by) < BEACON_CATCH;
 }
 
 /** The course's legs after the first beacon: each next beacon lies this far along x past the one before, at most, m. */

@@ -16,6 +16,9 @@ import { assertFinite, assertPositive } from '@bitphysics/physics/validate';
 import { SUBMARINE, type SubmarineHandles, seabedHeight } from '@bitphysics/projects';
 import { assertSegment } from './beacons';
 import { HELM } from './helm';
+import { hullDistance } from './hull';
+
+export { hullDistance };
 
 /** A mine's contact radius (the sphere and its horns' tips), m. */
 export const MINE_RADIUS = 2.4;
@@ -317,23 +320,6 @@ function heaveTime(v: number, most: number, d: number): number {
   // Still speeding up: v t + a t^2 / 2 = d; else at `most` after the first t1 s.
   const first = heave(v, most, t1);
   return d <= first ? (-v + Math.sqrt(v * v + 2 * a * d)) / a : t1 + (d - first) / most;
-}
-
-/**
- * Distance, m, from the point (px, py) to the hull, a box `SUBMARINE.length` x `SUBMARINE.height`
- * centred at (x, y) m and turned by `angle` rad (0 inside it): the point taken into the hull's frame
- * (u along, v across), then to the nearest point of the box.
- */
-export function hullDistance(x: number, y: number, angle: number, px: number, py: number): number {
-  const dx = px - x,
-    dy = py - y,
-    co = Math.cos(angle),
-    s = Math.sin(angle);
-  const u = dx * co + dy * s,
-    v = -dx * s + dy * co;
-  const nu = Math.max(-SUBMARINE.length / 2, Math.min(SUBMARINE.length / 2, u)),
-    nv = Math.max(-SUBMARINE.height / 2, Math.min(SUBMARINE.height / 2, v));
-  return Math.hypot(u - nu, v - nv);
 }
 
 /**
