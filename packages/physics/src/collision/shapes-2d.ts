@@ -71,6 +71,13 @@ export function shapeCollisionSystem(world: PhysicsWorld): void {
   }
   sensorEvents(world, st);
   collideStatic(world, st);
+  // The contact count of the step's statistics: the ball contacts of this step (their buffer, which the
+  // balls' narrowphase refills earlier in the collide stage and which stays empty in a world without
+  // balls) and the 2D shape contact points (solver rows, static pairs included).
+  let points = 0;
+  const m = st.manifolds;
+  for (let i = 0; i < m.count; i++) points += m.pointCount[i]!;
+  cs.stats.contacts = cs.contacts.count + points;
   if (st.wake.length > 0) {
     // Sleeping bodies leaning on a resting body: woken for the next step (this step they held still).
     for (const e of st.wake) if (hasComponent(world, e, c.Sleeping)) wakeIsland(world, e);

@@ -352,7 +352,12 @@ export function linearMomentum(world: PhysicsWorld, out: Float64Array = new Floa
 }
 
 /**
- * Number of contacts the solver handled in the last (sub)step.
+ * Number of contact points the collide stage of the last step gave the solver: the ball contacts
+ * (ball-ball, ball-segment, ball-plane, ball-wall: one point each) plus the points of the shape
+ * manifolds (2D: up to 2 a touching pair, a ball against a shape 1; 3D: up to 4). Sleeping pairs are
+ * not counted. 0 before the first step.
+ * @param world - The world.
+ * @returns the count, an integer >= 0.
  * @category Diagnostics
  */
 export function contactCount(world: PhysicsWorld): number {
