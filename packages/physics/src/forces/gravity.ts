@@ -3,6 +3,7 @@ import { runParallel } from '../threads/parallel.js';
 import { isShared, sharedFloat64 } from '../threads/pool.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { Not, query } from '../world/query.js';
+import { idleWithout } from '../world/trusted-systems.js';
 import type { ForceLaw } from './law.js';
 import { inverseSquarePairs } from './pairwise.js';
 
@@ -181,3 +182,8 @@ export function attractors(A: KernelArray[], P: Float64Array, ids: Int32Array | 
   }
   return 0;
 }
+
+// What makes each system of this module idle (world/trusted-systems.ts idleWithout): its first query.
+idleWithout(gravityScaleSystem, (w) => [[w.components.GravityScale, w.components.Force, w.components.Mass]]);
+idleWithout(mutualGravitySystem, (w) => [[w.components.MutualGravity, w.components.Position, w.components.Mass, w.components.Force]]);
+idleWithout(attractorSystem, (w) => [[w.components.Attractor, w.components.Position]]);

@@ -12,6 +12,21 @@ export type FiniteScope = 'all' | 'linear';
 const trusted = new WeakMap<System, { scope: FiniteScope; idle?: (world: PhysicsWorld) => boolean }>();
 
 /**
+ * Counts the changes of the marks below (`trustFiniteOutput`, `idleWithout`): `step` keeps what it
+ * resolved of a stage's systems (step/plan.ts) while this and the stage's list stay the same.
+ */
+let marksVersion = 0;
+
+/**
+ * The version of the systems' marks (see `marksVersion`): any call of `trustFiniteOutput` or
+ * `idleWithout` changes it.
+ * @category World and step
+ */
+export function systemMarksVersion(): number {
+  return marksVersion;
+}
+
+/**
  * Marks built-in systems that write no body state, or check what they write and throw
  * NonFiniteStateError themselves. `scope` 'linear': the system checks the positions and velocities it
  * writes but not the angular state (the integrators), so the stage still checks the turning bodies.
@@ -21,6 +36,7 @@ const trusted = new WeakMap<System, { scope: FiniteScope; idle?: (world: Physics
  */
 export function trustFiniteOutput(systems: readonly System[], scope: FiniteScope = 'all', idle?: (world: PhysicsWorld) => boolean): void {
   for (const s of systems) trusted.set(s, idle ? { scope, idle } : { scope });
+  marksVersion++;
 }
 
 /**
@@ -57,3 +73,29 @@ export function systemNeedsCheck(world: PhysicsWorld, system: System): 0 | 1 | 2
  * When the query holds every live id (a world of particles), its ids are 1..maxId and the loop runs
  * over that range directly, in memory order.
  */
+
+/** The idle guards of built-in systems (see `idleWithout`): each a function of the world giving lists of query terms, or null. */
+const idleGuards = new WeakMap<System, (world: PhysicsWorld) => readonly object[][] | null>();
+
+/**
+ * Declares that the built-in `system` has nothing to do in `world` while every query of `terms(world)`
+ * (one or more lists of query terms; null: no guard in that world) is empty: it then writes nothing
+ * and returns at once, having made its queries only. `step` skips it then without calling it (step/plan.ts): it reads the live arrays of
+ * those queries, and commits bitecs' pending removals as the system's own query would have. Each list
+ * must be a query the system makes before anything else it does (or one whose emptiness implies the
+ * emptiness of such a query), and the system must return when those queries are all empty.
+ * @category World and step
+ */
+export function idleWithout(system: System, terms: (world: PhysicsWorld) => readonly object[][] | null): void {
+  idleGuards.set(system, terms);
+  marksVersion++;
+}
+
+/**
+ * The query terms whose emptiness makes `system` idle in `world` (`idleWithout`); null for a system
+ * without such a guard there (a user's system always runs).
+ * @category World and step
+ */
+export function idleGuardTerms(system: System, world: PhysicsWorld): readonly object[][] | null {
+  return idleGuards.get(system)?.(world) ?? null;
+}
