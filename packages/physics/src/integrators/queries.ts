@@ -2,14 +2,51 @@ import type { QueryResult } from 'bitecs';
 import type { PhysicsWorld } from '../world/options.js';
 import { Not, query } from '../world/query.js';
 
+type Components = PhysicsWorld['components'];
+
+/**
+ * The terms of the integrators' queries, built once per world (keyed by its component stores): these
+ * run every substep, and a list built at each call (with its `Not` look-ups) was most of their cost in
+ * a world of a few bodies.
+ */
+interface MoverTerms {
+  forced: object[];
+  free: object[];
+  kinematic: object[];
+  torqued: object[];
+  tensor: object[];
+  spinning2D: object[];
+  spinning3D: object[];
+  simpleSpinning3D: object[];
+}
+
+const moverTerms = new WeakMap<Components, MoverTerms>();
+
+function moverTermsOf(c: Components): MoverTerms {
+  let t = moverTerms.get(c);
+  if (t === undefined) {
+    t = {
+      forced: [c.Position, c.Velocity, c.Force, Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)],
+      free: [c.Position, c.Velocity, Not(c.Force), Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)],
+      kinematic: [c.Position, c.Velocity, c.Kinematic, Not(c.Static)],
+      torqued: [c.AngularVelocity, c.Inertia, c.Torque, Not(c.InertiaTensor), Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)],
+      tensor: [c.AngularVelocity, c.InertiaTensor, c.Orientation, Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)],
+      spinning2D: [c.AngularVelocity, c.Angle, Not(c.Static), Not(c.Sleeping)],
+      spinning3D: [c.AngularVelocity, c.Orientation, Not(c.Static), Not(c.Sleeping)],
+      simpleSpinning3D: [c.AngularVelocity, c.Orientation, Not(c.InertiaTensor), Not(c.Static), Not(c.Sleeping)],
+    };
+    moverTerms.set(c, t);
+  }
+  return t;
+}
+
 /**
  * Dynamic bodies with a force accumulator (and so a mass): they feel force laws and gravity.
  * Every integrator moves these with a = F / m + g.
  * @category Integrators
  */
 export function forcedBodies(world: PhysicsWorld): QueryResult {
-  const c = world.components;
-  return query(world, [c.Position, c.Velocity, c.Force, Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)]);
+  return query(world, moverTermsOf(world.components).forced);
 }
 
 /**
@@ -17,8 +54,7 @@ export function forcedBodies(world: PhysicsWorld): QueryResult {
  * @category Integrators
  */
 export function freeBodies(world: PhysicsWorld): QueryResult {
-  const c = world.components;
-  return query(world, [c.Position, c.Velocity, Not(c.Force), Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)]);
+  return query(world, moverTermsOf(world.components).free);
 }
 
 /**
@@ -26,8 +62,7 @@ export function freeBodies(world: PhysicsWorld): QueryResult {
  * @category Integrators
  */
 export function kinematicBodies(world: PhysicsWorld): QueryResult {
-  const c = world.components;
-  return query(world, [c.Position, c.Velocity, c.Kinematic, Not(c.Static)]);
+  return query(world, moverTermsOf(world.components).kinematic);
 }
 
 /**
@@ -35,8 +70,7 @@ export function kinematicBodies(world: PhysicsWorld): QueryResult {
  * @category Integrators
  */
 export function torquedBodies(world: PhysicsWorld): QueryResult {
-  const c = world.components;
-  return query(world, [c.AngularVelocity, c.Inertia, c.Torque, Not(c.InertiaTensor), Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)]);
+  return query(world, moverTermsOf(world.components).torqued);
 }
 
 /**
@@ -44,8 +78,7 @@ export function torquedBodies(world: PhysicsWorld): QueryResult {
  * @category Integrators
  */
 export function tensorBodies(world: PhysicsWorld): QueryResult {
-  const c = world.components;
-  return query(world, [c.AngularVelocity, c.InertiaTensor, c.Orientation, Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)]);
+  return query(world, moverTermsOf(world.components).tensor);
 }
 
 /**
@@ -53,10 +86,8 @@ export function tensorBodies(world: PhysicsWorld): QueryResult {
  * @category Integrators
  */
 export function spinningBodies(world: PhysicsWorld): QueryResult {
-  const c = world.components;
-  return world.dimensions === 2
-    ? query(world, [c.AngularVelocity, c.Angle, Not(c.Static), Not(c.Sleeping)])
-    : query(world, [c.AngularVelocity, c.Orientation, Not(c.Static), Not(c.Sleeping)]);
+  const t = moverTermsOf(world.components);
+  return query(world, world.dimensions === 2 ? t.spinning2D : t.spinning3D);
 }
 
 /**
@@ -65,10 +96,8 @@ export function spinningBodies(world: PhysicsWorld): QueryResult {
  * @category Integrators
  */
 export function simpleSpinningBodies(world: PhysicsWorld): QueryResult {
-  const c = world.components;
-  return world.dimensions === 2
-    ? query(world, [c.AngularVelocity, c.Angle, Not(c.Static), Not(c.Sleeping)])
-    : query(world, [c.AngularVelocity, c.Orientation, Not(c.InertiaTensor), Not(c.Static), Not(c.Sleeping)]);
+  const t = moverTermsOf(world.components);
+  return query(world, world.dimensions === 2 ? t.spinning2D : t.simpleSpinning3D);
 }
 
 /*
@@ -76,8 +105,6 @@ export function simpleSpinningBodies(world: PhysicsWorld): QueryResult {
  * they carry; the three lists below are disjoint, and together they are every forced body exactly when
  * none carries a GravityScale or both drags (the gate checks this by their lengths).
  */
-
-type Components = PhysicsWorld['components'];
 
 /** The terms of the three lists, built once per world (keyed by its component stores): these run every substep. */
 const fusedTerms = new WeakMap<Components, readonly [object[], object[], object[]]>();
