@@ -1,3 +1,4 @@
+import type { QueryResult } from 'bitecs';
 import { angularDampingSystem } from '../forces/angular-damping.js';
 import { ballastTrimSystem } from '../forces/ballast.js';
 import { bodyThrustSystem } from '../forces/body-thrust.js';
@@ -88,21 +89,60 @@ const IDLE_WHEN: ReadonlyMap<System, readonly [(c: Components) => object[], numb
   [liftingSurfaceSystem, [(c) => [c.LiftingSurface], 1]],
 ]);
 
-/** The query terms of each idle check, built once per world (keyed by its component stores): no allocation a substep. */
-const termCache = new WeakMap<Components, Map<System, object[]>>();
+/**
+ * What the gate resolved of a world's forces stage, kept while the stage holds the same systems in the
+ * same order: whether its systems allow the pass at all (each absorbed law exactly once, every other one
+ * torque-only or an idle-when-empty law), and the live query arrays of the laws that must be idle, with
+ * the fewest entities each acts on. A substep then reads those lengths instead of looking every law up.
+ */
+interface ForcesPlan {
+  forces: System[];
+  allowed: boolean;
+  idle: QueryResult[];
+  least: number[];
+  /** The query of every body with a force accumulator. */
+  force: QueryResult;
+}
 
-function idleTerms(c: Components, law: System, build: (c: Components) => object[]): object[] {
-  let m = termCache.get(c);
-  if (m === undefined) {
-    m = new Map();
-    termCache.set(c, m);
+/** A world's stages record (world.stages): the key of the plans. */
+type Stages = PhysicsWorld['stages'];
+
+/** The plans by the world's `stages` record (one a world): a cache of the code that runs, not world state. */
+const plans = new WeakMap<Stages, ForcesPlan>();
+
+function forcesPlan(world: PhysicsWorld, forces: readonly System[]): ForcesPlan {
+  const plan = plans.get(world.stages);
+  if (plan !== undefined && plan.forces.length === forces.length) {
+    let same = true;
+    for (let i = 0; i < forces.length; i++)
+      if (plan.forces[i] !== forces[i]) {
+        same = false;
+        break;
+      }
+    if (same) return plan;
   }
-  let t = m.get(law);
-  if (t === undefined) {
-    t = build(c);
-    m.set(law, t);
+  const c = world.components;
+  const made: ForcesPlan = { forces: forces.slice(), allowed: true, idle: [], least: [], force: query(world, [c.Force]) };
+  let absorbed = 0;
+  for (const s of forces) {
+    if (ABSORBED.includes(s)) {
+      absorbed++;
+      continue;
+    }
+    if (TORQUE_ONLY.has(s)) continue;
+    const idle = IDLE_WHEN.get(s);
+    if (idle === undefined) {
+      made.allowed = false;
+      break;
+    }
+    made.idle.push(query(world, idle[0](c)));
+    made.least.push(idle[1]);
   }
-  return t;
+  // Each absorbed law exactly once (counted above; a duplicate would show as one missing).
+  if (absorbed !== ABSORBED.length) made.allowed = false;
+  for (const s of ABSORBED) if (forces.indexOf(s) !== forces.lastIndexOf(s)) made.allowed = false;
+  plans.set(world.stages, made);
+  return made;
 }
 
 let integrator: System | null = null;
@@ -129,28 +169,14 @@ export function fusedForcesAllowed(world: PhysicsWorld): boolean {
   if (integrate.length === 0 || integrate[0] !== integrator) return false;
   const forced = forcedBodies(world).length;
   if (forced === 0) return false;
-  let absorbed = 0;
-  for (let i = 0; i < forces.length; i++) {
-    const s = forces[i]!;
-    if (ABSORBED.includes(s)) {
-      absorbed++;
-      continue;
-    }
-    if (TORQUE_ONLY.has(s)) continue;
-    const idle = IDLE_WHEN.get(s);
-    if (idle === undefined || query(world, idleTerms(world.components, s, idle[0])).length >= idle[1]) return false;
-  }
-  // Each absorbed law exactly once (counted above; a duplicate would show as one missing).
-  if (absorbed !== ABSORBED.length) return false;
-  for (let i = 0; i < ABSORBED.length; i++) if (forces.indexOf(ABSORBED[i]!) !== forces.lastIndexOf(ABSORBED[i]!)) return false;
+  // The plan's live arrays are read after forcedBodies' query committed bitecs' pending removals.
+  const plan = forcesPlan(world, forces);
+  if (!plan.allowed) return false;
+  const idle = plan.idle,
+    least = plan.least;
+  for (let i = 0; i < idle.length; i++) if (idle[i]!.length >= least[i]!) return false;
   if (!calmAir(world)) return false;
-  if (
-    query(
-      world,
-      idleTerms(world.components, clearForcesSystem, (c) => [c.Force]),
-    ).length !== forced
-  )
-    return false;
+  if (plan.force.length !== forced) return false;
   return fusedBareBodies(world).length + fusedQuadraticBodies(world).length + fusedLinearBodies(world).length === forced;
 }
 
