@@ -2,7 +2,7 @@ import type { QueryResult } from 'bitecs';
 import type { PhysicsWorld, System } from '../world/options.js';
 import { query } from '../world/query.js';
 import { STAGES, type StageName } from '../world/stage-names.js';
-import { idleGuardTerms, systemMarksVersion } from '../world/trusted-systems.js';
+import { type FiniteTrust, finiteTrustOf, idleGuardTerms, systemMarksVersion } from '../world/trusted-systems.js';
 
 /**
  * What `step` resolves once of a stage's systems rather than at every step: for each system, the live
@@ -17,6 +17,8 @@ export interface StagePlan {
   readonly systems: System[];
   /** For each system, its idle guard's live query arrays (idle when all are empty), or null: always run. */
   readonly guards: (readonly QueryResult[] | null)[];
+  /** For each system, how it is trusted not to write NaN (world/trusted-systems.ts finiteTrustOf). */
+  readonly trust: (FiniteTrust | undefined)[];
   /** The marks' version (world/trusted-systems.ts systemMarksVersion) the plan was made at. */
   readonly version: number;
 }
@@ -76,7 +78,7 @@ function makePlan(world: PhysicsWorld, plans: StagePlans, stage: StageName, syst
     const terms = idleGuardTerms(system, world);
     return terms === null ? null : terms.map((t) => query(world, t as object[]));
   });
-  const plan: StagePlan = { systems: systems.slice(), guards, version: systemMarksVersion() };
+  const plan: StagePlan = { systems: systems.slice(), guards, trust: systems.map(finiteTrustOf), version: systemMarksVersion() };
   plans[stage] = plan;
   return plan;
 }

@@ -9,7 +9,16 @@ import type { StageName } from './stage-names.js';
  */
 export type FiniteScope = 'all' | 'linear';
 
-const trusted = new WeakMap<System, { scope: FiniteScope; idle?: (world: PhysicsWorld) => boolean }>();
+/**
+ * How a system is trusted (`trustFiniteOutput`): its scope, and the condition it is trusted under.
+ * @category World and step
+ */
+export interface FiniteTrust {
+  readonly scope: FiniteScope;
+  readonly idle?: (world: PhysicsWorld) => boolean;
+}
+
+const trusted = new WeakMap<System, FiniteTrust>();
 
 /**
  * Counts the changes of the marks below (`trustFiniteOutput`, `idleWithout`): `step` keeps what it
@@ -61,7 +70,24 @@ export function stageNeedsCheck(world: PhysicsWorld, stage: StageName, systems: 
  * @category World and step
  */
 export function systemNeedsCheck(world: PhysicsWorld, system: System): 0 | 1 | 2 {
-  const t = trusted.get(system);
+  return checkAfter(world, trusted.get(system));
+}
+
+/**
+ * How `system` is trusted (`trustFiniteOutput`), or undefined: not trusted. Valid while
+ * `systemMarksVersion` stays the same.
+ * @category World and step
+ */
+export function finiteTrustOf(system: System): FiniteTrust | undefined {
+  return trusted.get(system);
+}
+
+/**
+ * What must be checked after a system trusted as `t` (`finiteTrustOf`; undefined: not trusted) ran
+ * in `world`: as `systemNeedsCheck`.
+ * @category World and step
+ */
+export function checkAfter(world: PhysicsWorld, t: FiniteTrust | undefined): 0 | 1 | 2 {
   if (t === undefined || (t.idle !== undefined && !t.idle(world))) return 2;
   return t.scope === 'linear' ? 1 : 0;
 }
