@@ -2,6 +2,20 @@ import { fusedForcesOn } from '../world/fused-state.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
 
+type Components = PhysicsWorld['components'];
+
+/** The two queries' terms, built once per world (keyed by its component stores): this runs every substep. */
+const clearTermsOf = new WeakMap<Components, { force: object[]; torque: object[] }>();
+
+function clearTerms(c: Components): { force: object[]; torque: object[] } {
+  let t = clearTermsOf.get(c);
+  if (t === undefined) {
+    t = { force: [c.Force], torque: [c.Torque] };
+    clearTermsOf.set(c, t);
+  }
+  return t;
+}
+
 /**
  * Stage 2: zeroes the force accumulator of every body with `Force`, and the torque accumulator of
  * every body with `Torque`. In a substep that runs the fused force-and-integrate pass
@@ -15,7 +29,7 @@ export function clearForcesSystem(world: PhysicsWorld): void {
     fy = Force.y,
     fz = Force.z;
   if (!fusedForcesOn(world)) {
-    const ents = query(world, [Force]);
+    const ents = query(world, clearTerms(world.components).force);
     if (world.dimensions === 2) {
       for (let i = 0; i < ents.length; i++) {
         const e = ents[i]!;
@@ -31,7 +45,7 @@ export function clearForcesSystem(world: PhysicsWorld): void {
       }
     }
   }
-  const ents = query(world, [Torque]);
+  const ents = query(world, clearTerms(world.components).torque);
   const tx = Torque.x,
     ty = Torque.y,
     tz = Torque.z;

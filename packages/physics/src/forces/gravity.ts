@@ -86,6 +86,20 @@ export function setBarnesHutGravity(sum: (world: PhysicsWorld, ents: ArrayLike<n
   barnesHut = sum;
 }
 
+type Components = PhysicsWorld['components'];
+
+/** The terms of the bodies attractors pull, built once per world (keyed by its component stores). */
+const pulledTermsOf = new WeakMap<Components, object[]>();
+
+function pulledTerms(c: Components): object[] {
+  let t = pulledTermsOf.get(c);
+  if (t === undefined) {
+    t = [c.Position, c.Force, c.Mass, Not(c.Static), Not(c.Kinematic)];
+    pulledTermsOf.set(c, t);
+  }
+  return t;
+}
+
 /**
  * Attractors (fixed or moving masses, e.g. a sun or a black hole) pull every dynamic body with a
  * force accumulator: F = -G M m r / (r^2 + eps^2)^(3/2), r from the attractor to the body, eps the
@@ -97,7 +111,7 @@ export const attractorSystem: ForceLaw = (world: PhysicsWorld): void => {
   const c = world.components;
   const sources = query(world, [c.Attractor, c.Position]);
   if (sources.length === 0) return;
-  const bodies = query(world, [c.Position, c.Force, c.Mass, Not(c.Static), Not(c.Kinematic)]);
+  const bodies = query(world, pulledTerms(c));
   const G = world.laws.gravitationalConstant;
   const px = c.Position.x,
     py = c.Position.y,

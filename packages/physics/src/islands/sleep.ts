@@ -120,6 +120,37 @@ function wakeIslandsOf(world: PhysicsWorld, list: number[] | null): void {
   if (list !== null) for (const e of list) wakeIsland(world, e);
 }
 
+type Components = PhysicsWorld['components'];
+
+/** The query terms of the sleep stage, built once per world (keyed by its component stores): it runs every step. */
+interface SleepTerms {
+  /** Awake dynamic balls. */
+  balls: object[];
+  /** Awake dynamic bodies with a 2D shape and no ball. */
+  shaped: object[];
+  /** Each component that keeps its body awake (time-varying forces), alone. */
+  awake: object[][];
+  spring: object[];
+  sleeping: object[];
+}
+
+const sleepTermsOf = new WeakMap<Components, SleepTerms>();
+
+function sleepTerms(c: Components): SleepTerms {
+  let t = sleepTermsOf.get(c);
+  if (t === undefined) {
+    t = {
+      balls: [c.Position, c.Velocity, c.Ball, c.Force, Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)],
+      shaped: [c.Position, c.Velocity, c.Shape, c.Force, Not(c.Ball), Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)],
+      awake: [[c.DrivingForce], [c.RandomForce], [c.Thrust]],
+      spring: [c.Spring],
+      sleeping: [c.Sleeping],
+    };
+    sleepTermsOf.set(c, t);
+  }
+  return t;
+}
+
 /**
  * Stage 7: updates rest times and puts resting islands to sleep. Islands come from this step's
  * contacts between two dynamic bodies that carried a normal impulse; contacts with static geometry do
@@ -134,10 +165,8 @@ export function sleepSystem(world: PhysicsWorld): void {
     cs.stats.sleeping = 0;
     return;
   }
-  const bodies = withShape3DBodies(
-    world,
-    withShapeBodies(world, query(world, [c.Position, c.Velocity, c.Ball, c.Force, Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)])),
-  );
+  const terms = sleepTerms(c);
+  const bodies = withShape3DBodies(world, withShapeBodies(world, query(world, terms.balls)));
   const n = bodies.length;
   const rest = sl.restTime,
     parent = sl.parent,
@@ -174,11 +203,11 @@ export function sleepSystem(world: PhysicsWorld): void {
     parent[e] = e;
   }
   // Bodies that must stay awake: time-varying forces, springs.
-  for (const comp of [c.DrivingForce, c.RandomForce, c.Thrust]) {
-    const ents = query(world, [comp]);
+  for (let k = 0; k < terms.awake.length; k++) {
+    const ents = query(world, terms.awake[k]!);
     for (let i = 0; i < ents.length; i++) rest[ents[i]!] = 0;
   }
-  const springs = query(world, [c.Spring]);
+  const springs = query(world, terms.spring);
   for (let i = 0; i < springs.length; i++) {
     const s = springs[i]!;
     rest[c.Spring.a[s]!] = 0;
@@ -196,7 +225,7 @@ export function sleepSystem(world: PhysicsWorld): void {
     }
   if (candidates === 0) {
     wakeIslandsOf(world, joinJointEdges(world, edges, bodies, rest, parent, supported, ++sl.stamp));
-    cs.stats.sleeping = sl.anyAsleep ? query(world, [c.Sleeping]).length : 0;
+    cs.stats.sleeping = sl.anyAsleep ? query(world, terms.sleeping).length : 0;
     return;
   }
   // Islands over contacts between dynamic awake bodies that pushed, and over joints (`supported` is
@@ -236,7 +265,7 @@ export function sleepSystem(world: PhysicsWorld): void {
     }
     sl.anyAsleep = true;
   }
-  cs.stats.sleeping = sl.anyAsleep ? query(world, [c.Sleeping]).length : 0;
+  cs.stats.sleeping = sl.anyAsleep ? query(world, terms.sleeping).length : 0;
 }
 
 /**
@@ -248,7 +277,7 @@ function withShapeBodies(world: PhysicsWorld, balls: ArrayLike<number>): ArrayLi
   const st = world.collision.shapes;
   if (!st.active) return balls;
   const c = world.components;
-  const shaped = query(world, [c.Position, c.Velocity, c.Shape, c.Force, Not(c.Ball), Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)]);
+  const shaped = query(world, sleepTerms(c).shaped);
   const n = balls.length + shaped.length;
   if (st.sleepList.length < n) st.sleepList = new Uint32Array(Math.max(n, 2 * st.sleepList.length));
   const out = st.sleepList;
