@@ -9,7 +9,9 @@
 //   of the horizons and in the field (games/black-hole/rules.ts predictPath, the path the page
 //   draws), for at most 60 s of game time with unlimited lives. The sharp one reacts every 0.1 s and
 //   looks 1.5 s ahead; the stranger every 0.25 s and 1 s ahead. Per level: seeds cleared, mean and
-//   longest time to the line, falls a level (the difficulty curve);
+//   longest time to the line, falls a level (the difficulty curve). The tapper is a newcomer on a
+//   phone: it chooses the same way every 0.4 s looking 1 s ahead, but only taps (thrusts for 0.15 s,
+//   then lets go until its next choice);
 // - simple: a sideways nudge of 0 to 2.4 s, then up: the share of such tries that clear.
 // The game runs at its 60 Hz step, so game time is what a player's clock shows. `--source` plays
 // another copy of the game's levels.ts and rules.ts (a folder inside the repository, e.g. an older
@@ -54,7 +56,13 @@ function wallGap(g) {
 
 /** A new game of `seed` on a `width` x `height` field with level `level` laid out; unlimited lives. */
 function newLevel(level, seed, width, height) {
-  const g = m.createBlackHoleGame({ seed, field: { width, height }, lives: 9 });
+  // The page gives a narrow field (a phone's) its gentler sideways engine.
+  const g = m.createBlackHoleGame({
+    seed,
+    field: { width, height },
+    lives: 9,
+    ...(width < m.FIELD.width ? { sideRamp: m.PHONE_SIDE_RAMP } : {}),
+  });
   const run = m.startLevel(g, level);
   return { g, run };
 }
@@ -75,7 +83,7 @@ function held(level, seed, width, height, thrust) {
  * Plays level `level` of seed `seed` with a pilot that chooses every `react` s looking `look` s ahead
  * (see the file's comment). Lives never run out (a fall counts and the ship starts again).
  */
-function play(level, seed, width, height, react, look) {
+function play(level, seed, width, height, react, look, tap = Infinity) {
   const { g, run } = newLevel(level, seed, width, height);
   const pred = m.createPredictor(g);
   const ahead = Math.round(look / g.world.dt),
@@ -84,9 +92,10 @@ function play(level, seed, width, height, react, look) {
   const gap = run.spec.gate > 0 ? wallGap(g) : null;
   const P = g.world.components.Position,
     V = g.world.components.Velocity;
-  const steps = Math.round(60 / g.world.dt);
+  const steps = Math.round(60 / g.world.dt),
+    tapSteps = Math.round(tap / g.world.dt);
   for (let k = 0; k < steps; k++) {
-    let want = g.thrust;
+    let want = k % every >= tapSteps ? 'none' : g.thrust;
     if (k % every === 0 && m.canThrust(g, run)) {
       want = 'none';
       let first = 'up';
@@ -167,13 +176,14 @@ for (const [width, height] of fields) {
     }
   }
   if (tables.includes('pilot')) {
-    for (const [name, react, look] of [
+    for (const [name, react, look, tap] of [
       ['sharp pilot (0.1 s, 1.5 s ahead)', 0.1, 1.5],
       ['stranger pilot (0.25 s, 1 s ahead)', 0.25, 1],
+      ['tapper (0.15 s taps every 0.4 s, 1 s ahead)', 0.4, 1, 0.15],
     ]) {
       console.log(`  ${name}:`);
       for (const level of levels) {
-        const rs = seedList.map((seed) => play(level, seed, width, height, react, look));
+        const rs = seedList.map((seed) => play(level, seed, width, height, react, look, tap));
         const ok = rs.filter((r) => Number.isFinite(r.time));
         const mean = ok.reduce((a, r) => a + r.time, 0) / Math.max(1, ok.length);
         const longest = Math.max(0, ...ok.map((r) => r.time));

@@ -1,14 +1,19 @@
-// `node scripts/submarine-pilot.mjs [--seeds=N] [--react=S] [--warn=S] [--verbose]`: flies the submarine's
-// courses headless (games/submarine: the helm, the physics, the seabed contact and the mines) with a
-// stranger at the helm, and counts the mines it sets off. The pilot runs full ahead (slower when the
-// beacon lies steeper than the boat can dive), holds Dive or Rise toward the next beacon, and when the
-// mine warning by the hull comes (mines.ts mineAhead, as the page computes it) it waits S s (default
-// 1: mines.ts MINE_REACTION), then holds the Rise or Dive key as told while the warning lasts (a key
-// ramps up, helm.ts keyHeaveShare, as on the page) and holds its depth until it is past the mine. It minds neither the ridges nor the glow trail. Courses: seeds 1
-// to N (default 20) with 6 and with 10 beacons. --warn: how far ahead the warning looks, s (default
-// mines.ts MINE_WARN_TIME). Prints the mines hit (and how long before each the
-// warning came), the seabed hits, the beacons collected (the hull's centre within 8 m, the page's
-// BEACON_CATCH) and the totals. Takes about a minute.
+// `node scripts/submarine-pilot.mjs [--seeds=N] [--react=S] [--warn=S] [--verbose] [--legs]`: flies the
+// submarine's courses headless (games/submarine: the course as the page lays it, beacons.ts layCourse;
+// the helm, the physics, the seabed contact and the mines) with a steady pilot on the keys, and counts
+// the mines it sets off and the time it takes. The pilot holds Ahead while the boat is slower than
+// lets it reach the next beacon's x as it reaches its depth, Astern (the brake) while it is 2 m/s
+// faster, and Dive or Rise (the keys' steady share, helm.ts keyHeaveShare) until the depth order is
+// at the beacon's depth; when the mine warning by the hull comes (mines.ts mineAhead, as the page
+// computes it) it waits S s (default 1: mines.ts MINE_REACTION), then holds the Rise or Dive key as
+// told while the warning lasts and holds its depth until it is past the mine. It minds neither the
+// ridges nor the glow trail, and does not turn back for a beacon it passed. Courses: seeds 1 to N
+// (default 20) with 6 and with 10 beacons. --warn: how far ahead the warning looks, s (default
+// mines.ts MINE_WARN_TIME). Prints the mines hit (and how long before each the warning came), the
+// seabed hits, the beacons collected (beacons.ts catchesBeacon) and missed, the time and the par
+// (mines.ts parTime), par over the pilot's time on the courses won, and the totals; --legs prints
+// each won course's legs (|dx|, |dy|, m) and time as JSON lines (mines.ts PILOT_LEG is fitted to
+// them). Takes about a minute.
 import { importSource } from './build.mjs';
 
 const args = process.argv.slice(2);
@@ -27,6 +32,7 @@ const verbose = args.includes('--verbose');
 const sub = await importSource(
   'submarine-pilot',
   `export * from './games/submarine/helm.ts';
+   export * from './games/submarine/beacons.ts';
    export * from './games/submarine/mines.ts';
    export * from './games/submarine/seabed.ts';
    export { SUBMARINE, submarine } from '@bitphysics/projects';
@@ -34,6 +40,9 @@ const sub = await importSource(
 );
 const {
   createHelmState,
+  catchesBeacon,
+  layCourse,
+  parTime,
   keyHeaveShare,
   steer,
   courseOrder,
@@ -50,6 +59,7 @@ const { SUBMARINE, submarine, applyImpulse, createPhysicsWorld, step } = sub;
 function fly(seed, count) {
   const world = createPhysicsWorld(submarine.worldOptions());
   const h = submarine.build(world, { seed, count });
+  layCourse(h.beacons, h.seabed, seed);
   const mines = layMines(h.beacons, h.seabed, seed);
   const live = mines.map(() => true);
   const state = { ...createHelmState(), touching: false, spared: 0, diveStopped: false };
@@ -94,13 +104,22 @@ function fly(seed, count) {
     } else {
       keySince = Number.NaN;
       const dy = by - y;
-      const tv = Math.abs(dy) / 8 + 1,
-        th = Math.max(0, bx - x) / 12.9;
-      input.drive = th < tv ? Math.max(0.25, th / tv) : 1;
-      if (Math.abs(dy) > 2) {
+      // On the keys too: Ahead held while the boat is slower than lets it reach the beacon's x as
+      // it reaches its depth (at about 3.5 m/s, the key's 6 m/s less the start, the stop and a margin),
+      // Astern (the brake) while it is 2 m/s or more faster, else it coasts.
+      const tv = Math.abs(dy) / 3.5 + 3,
+        want = Math.max(3, Math.max(0, bx - x) / tv),
+        vx = c.Velocity.x[e];
+      input.drive = 1;
+      input.ahead = vx < want;
+      input.astern = vx > want + 2;
+      // On the keys: Dive or Rise held (a steady share, as the page's keys) until the depth order
+      // is within 2 m of the beacon's depth.
+      const err = by - state.holdY;
+      if (Math.abs(dy) > 2 && !(Math.abs(err) < 2)) {
         input.rise = dy > 0;
         input.dive = dy < 0;
-        input.heave = Math.max(0.2, Math.min(1, Math.abs(dy) / 15));
+        input.heave = keyHeaveShare(0, t);
       }
     }
     const held = seabedInput(state, input);
@@ -124,14 +143,23 @@ function fly(seed, count) {
         r = Math.max(1e-6, Math.hypot(dx, dy));
       applyImpulse(world, e, [(MINE_BLAST_IMPULSE * dx) / r, (MINE_BLAST_IMPULSE * dy) / r]);
     }
-    const dx = bx - c.Position.x[e],
-      dy = by - c.Position.y[e];
-    if (dx * dx + dy * dy < 64) {
+    if (catchesBeacon(c.Position.x[e], c.Position.y[e], c.Angle.value[e], bx, by)) {
       collected++;
       next++;
-    } else if (c.Position.x[e] > bx + 30) next++;
+    } else if (c.Position.x[e] > bx + 30) {
+      events.push(`missed beacon ${b} at (${bx.toFixed(0)}, ${by.toFixed(0)}): passed at depth ${(-c.Position.y[e]).toFixed(0)} m`);
+      next++;
+    }
   }
-  return { mines: mines.length, hits, bed, collected, count: order.length, time: world.time, events };
+  let px = 0,
+    py = 0;
+  const legs = order.map((i) => {
+    const leg = [Math.abs(h.beacons[2 * i] - px), Math.abs(h.beacons[2 * i + 1] - py)];
+    px = h.beacons[2 * i];
+    py = h.beacons[2 * i + 1];
+    return leg;
+  });
+  return { mines: mines.length, hits, bed, collected, count: order.length, time: world.time, par: parTime(h.beacons), legs, events };
 }
 
 let laid = 0,
@@ -139,6 +167,7 @@ let laid = 0,
   bedHits = 0,
   beacons = 0,
   collected = 0;
+const ratios = [];
 for (let seed = 1; seed <= seeds; seed++)
   for (const count of [6, 10]) {
     const r = fly(seed, count);
@@ -147,11 +176,18 @@ for (let seed = 1; seed <= seeds; seed++)
     bedHits += r.bed;
     beacons += r.count;
     collected += r.collected;
+    if (r.collected === r.count) ratios.push(r.par / r.time);
+    if (args.includes('--legs') && r.collected === r.count) console.log(JSON.stringify({ seed, count, time: r.time, legs: r.legs }));
     if (verbose || r.hits > 0 || r.collected < r.count)
       console.log(
-        `seed ${seed}, ${count} beacons: ${r.collected} collected, ${r.mines} mines, ${r.hits} hit, ${r.bed} seabed hits, ${r.time.toFixed(0)} s. ${r.events.join('; ')}`,
+        `seed ${seed}, ${count} beacons: ${r.collected} collected, ${r.mines} mines, ${r.hits} hit, ${r.bed} seabed hits, ${r.time.toFixed(0)} s (par ${r.par} s). ${r.events.join('; ')}`,
       );
   }
+ratios.sort((a, b) => a - b);
+if (ratios.length > 0)
+  console.log(
+    `Par over the pilot's time, on the ${ratios.length} courses won: least ${ratios[0].toFixed(2)}, median ${ratios[ratios.length >> 1].toFixed(2)}, most ${ratios[ratios.length - 1].toFixed(2)}.`,
+  );
 console.log(
   `Reaction ${react} s: ${hit} of ${laid} mines hit (${((100 * hit) / Math.max(1, laid)).toFixed(1)} %), ${bedHits} seabed hits, ${collected} of ${beacons} beacons collected.`,
 );

@@ -2,7 +2,7 @@
  * Levels for black hole, DOM-free (Node tests run them): a first level that asks for one steering
  * decision (a fork: a hole across the straight path up and one across each diagonal, so no arrow or
  * pair of arrows held from the start gets through), then two set pieces (a wall of holes across the field with one gap off to
- * the side; then a narrower gap with a hole above it), then holes across the straight path up, more
+ * the side, high up; then a lower wall, pulling harder, with a hole above its gap), then holes across the straight path up, more
  * and bigger holes, holes that drift, and a fuel limit. Each cleared level gives a lost life back (up
  * to the starting three). The ship waits at the start until the player thrusts. The page (main.ts)
  * shows the level, the fuel, an end-of-level summary and the best score.
@@ -79,6 +79,11 @@ export interface LevelSpec {
    * field: the ship has to be steered into one of the two gaps beside the first hole.
    */
   readonly fork: boolean;
+  /**
+   * Heights, m, between which a wall's holes are laid (on the default field's 22 m climb from y = 0
+   * to the line; scaled to other fields'): [low, high], low < high. Unused without a wall.
+   */
+  readonly wallHeight: readonly [number, number];
 }
 
 /** Points for each hole on the field when the ship reaches the line. */
@@ -119,17 +124,39 @@ export function levelPoints(holes: number, time: number): LevelPoints {
  */
 export const WALL_GAP = 0.5;
 
+/**
+ * Level 2's wall heights, m on the default field (see `LevelSpec.wallHeight`): high up, so the start
+ * is not deep in the wall's well. A wall pulls like a line of mass (about 18 kg/m), some 2 G lambda / d:
+ * at 10 to 12 m up it pulled the waiting ship at 2.7 to 3 m/s^2 (half the default thrust), and a ship
+ * nudged by taps was drawn up into it; at 16.5 to 17.5 m the pull at the start is 1.4 to 1.6 m/s^2.
+ */
+export const LEVEL2_WALL_HEIGHT: readonly [number, number] = Object.freeze([16.5, 17.5]);
+
+/**
+ * Level 2's gap, m: under a wall that high a ship holding a diagonal arrow from the start meets the
+ * wall's height about DIAGONAL_REACH of its height out to the side (bent in by the wall's longer
+ * side), on the 32 m field inside any gap 9 m wide that fits; a gap this wide fits between 2 m out
+ * and there, so the diagonal meets a hole.
+ */
+export const LEVEL2_GATE = 6;
+
+/**
+ * How far to the side of the start a ship holding a diagonal arrow from it meets a wall's height, as a
+ * fraction of the wall's height above the start (0.6 to 0.64 measured on level 2's wall; a 45-degree
+ * line would be 1). `layWall` keeps the gap away from there.
+ */
+const DIAGONAL_REACH = 0.62;
+
 /** The gap a wall is laid with, m (below WALL_GAP): its holes are scaled to fill each stretch with gaps of this. */
 const WALL_FILL_GAP = 0.4;
 
 /**
  * The spec of level `level`, one new difficulty at a time: level 1 a fork of three small holes
  * (one across the straight path up, one across each diagonal: steer into a gap beside the first);
- * level 2 a wall of holes across the
- * field with one 9 m gap off to the side (fly across to it, then up through it); level 3 a narrower
- * gap (7 m) with a hole above it (measured with scripted players who fly across without braking: with
- * gaps of 7 and 5.5 m level 2 took 4.3 tries on average and level 3 5.1 to 5.8, half the fields never
- * cleared in six; now 2.6 and 4.8); level 4 three holes, two across the path one above the other;
+ * level 2 a wall of holes across the field, high up (LEVEL2_WALL_HEIGHT: its pull at the start
+ * weak, so taps steer the ship) with one gap of LEVEL2_GATE off to the side (fly across to it, then
+ * up through it); level 3 a wall lower down (10 to 12 m: it pulls harder) with a 7 m gap and a hole
+ * above it; level 4 three holes, two across the path one above the other;
  * level 5 a fourth hole; from level 6 the holes drift, slowly at first (0.35, then 0.6, 0.8 m/s);
  * from level 8 the fuel is limited (18 s, then 15 s down to 5 s); from level 9 a fifth hole, then a
  * hole more every second level (up to MAX_HOLES), bigger (radius up to 2 m) and faster (up to 3 m/s).
@@ -146,6 +173,7 @@ export function levelSpec(level: number): LevelSpec {
     fuel: number,
     gate = 0,
     fork = false,
+    wallHeight: [number, number] = [10, 12],
   ): LevelSpec =>
     Object.freeze({
       level,
@@ -157,12 +185,13 @@ export function levelSpec(level: number): LevelSpec {
       fuel,
       gate,
       fork,
+      wallHeight: Object.freeze(wallHeight) as readonly [number, number],
     });
   switch (level) {
     case 1:
       return spec(3, [0.6, 0.75], 0, 1, 0, Infinity, 0, true);
     case 2:
-      return spec(0, [0.45, 0.55], 0, 0, 0, Infinity, 9);
+      return spec(0, [0.45, 0.55], 0, 0, 0, Infinity, LEVEL2_GATE, false, [LEVEL2_WALL_HEIGHT[0], LEVEL2_WALL_HEIGHT[1]]);
     case 3:
       return spec(1, [0.45, 0.55], 0, 1, 0, Infinity, 7);
     case 4:
@@ -517,10 +546,11 @@ function layHoles(game: BlackHoleGame, run: LevelRun, spec: LevelSpec): void {
 }
 
 /**
- * Lays a gate level's wall (see `LevelSpec.gate`): a row of holes across the whole field at 10 to 12 m
- * up (on the default field; scaled to this field's climb), with one gap of clear width
- * min(spec.gate, 0.32 x the field's width) m off to one side of the start (either side, at random;
- * its near edge at least 2 m from the start's x). From each edge of the gap out to the field's edge,
+ * Lays a gate level's wall (see `LevelSpec.gate`): a row of holes across the whole field at a height
+ * drawn in spec.wallHeight (on the default field; scaled to this field's climb), with one gap of clear
+ * width min(spec.gate, 0.32 x the field's width) m off to one side of the start (either side, at
+ * random; its near edge at least 2 m from the start's x; not where a held diagonal meets the wall,
+ * `DIAGONAL_REACH`, unless no draw avoids it). From each edge of the gap out to the field's edge,
  * holes follow one another at equal gaps of WALL_FILL_GAP m (under WALL_GAP), the first one's horizon
  * on the gap's edge and the last one's that gap from the field's edge: as many as fit at radii drawn
  * in spec.radius, then all scaled to fill the stretch exactly. Of up to 40 draws of the gap's place, the one that puts a hole's
@@ -540,7 +570,10 @@ function layWall(game: BlackHoleGame, run: LevelRun, spec: LevelSpec): number {
   const grow = Math.max(1, ((W - gate) / room - WALL_GAP) / (spec.radius[0] + spec.radius[1]));
   const r0 = grow * spec.radius[0],
     r1 = grow * spec.radius[1];
-  const y = rng.range(10, 12) * (game.lineY / LINE_Y);
+  const y = rng.range(spec.wallHeight[0], spec.wallHeight[1]) * (game.lineY / LINE_Y);
+  // Where a ship holding a diagonal arrow from the start meets the wall's height, m to the side of the
+  // start (the wall's longer side pulls it in): a gap there (within 0.5 m) is laid only if no draw avoids it.
+  const diagonal = DIAGONAL_REACH * (y - game.start[1]);
   const least = gate / 2 + 2,
     most = W / 2 - gate / 2 - 2 * r1 - 1;
   let best = { gateX: x0, xs: [] as number[], rs: [] as number[] },
@@ -572,6 +605,7 @@ function layWall(game: BlackHoleGame, run: LevelRun, spec: LevelSpec): number {
     }
     let off = Infinity;
     for (let i = 0; i < xs.length; i++) off = Math.min(off, Math.abs(xs[i]! - x0) / rs[i]!);
+    if (Math.abs(Math.abs(gateX - x0) - diagonal) < gate / 2 + 0.5) off += 1000;
     if (off < bestOff) {
       bestOff = off;
       best = { gateX, xs, rs };

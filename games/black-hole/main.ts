@@ -15,7 +15,7 @@
  * arrows thrust diagonally); tap the message to restart.
  * Levels (./levels.ts): level 1 has a hole across the straight path and one across each diagonal
  * (no arrow or two held from the start gets through on any level), levels 2 and 3 a wall of holes
- * with one gap off to the side (then a narrower one with a hole above it), later levels more and
+ * with one gap off to the side (level 2's high up, level 3's lower with a hole above its gap), later levels more and
  * bigger holes, drifting holes and a fuel limit; clearing a level shows a summary and a button over
  * the middle of the field, and waits for Enter or a tap; the best score is kept in the browser's
  * local storage.
@@ -39,7 +39,7 @@ import {
   pageLayout,
   seedParam,
 } from '@bitphysics/game-kit';
-import { startPixiGame } from '@bitphysics/game-kit/pixi';
+import { createPauseOverlay, startPixiGame } from '@bitphysics/game-kit/pixi';
 import { type PhysicsWorld, Rng, slotOf, stateHash } from '@bitphysics/physics';
 import { Container, Graphics, Sprite, Text, Texture } from 'pixi.js';
 import { canThrust, type LevelRun, POINTS_PER_HOLE, startLevel } from './levels';
@@ -192,7 +192,11 @@ const game = await startPixiGame({
     }
   },
   controls: [
-    { keys: '← ↑ → ↓', action: 'thrust (two at once: diagonal)', touch: 'hold, slide ← ↑ → ↓' },
+    // On a phone the card says it in one line (it fits above the finish line) and names the seam: a
+    // finger on the seam between a side arrow and ↑ or ↓ holds both (`padDirsAt`).
+    isTouchDevice()
+      ? { keys: '← ↑ → ↓', action: 'thrust; seam of two: diagonal', touch: 'hold ← ↑ → ↓' }
+      : { keys: '← ↑ → ↓', action: 'thrust (two at once: diagonal)', touch: 'hold, slide ← ↑ → ↓' },
     { keys: 'Enter', action: 'next level / continue from this level', touch: 'the big button' },
     { keys: 'F', action: 'predicted path on / off' },
     { keys: 'V', action: 'replay the run from the start' },
@@ -381,6 +385,9 @@ body .bp-touchbar.bp-action { top: 40%; bottom: auto; }
 /* The touch hint at the top of the stage, over the space above the finish line: at its foot (the
    kit's place) it covered the ship waiting at the start and the path up to the first hole. */
 body .bp-touch-hint { top: 6px; bottom: auto; }
+/* On a phone in one line, so it fits above the finish line (\`placeTouchHint\` moves it under the
+   line where it does not). */
+@media (max-width: 600px) { body .bp-touch-hint { font-size: 13px; padding: 6px 10px; } }
 /* On a phone a d-pad: ↑ above ↓ in the middle column, ← and → the height of both either side, so a
    thumb slides from any arrow to its neighbours without crossing a third (in one row ← ↑ ↓ →, → to ↑
    crossed ↓); on the seam between a side arrow and ↑ or ↓ it holds both (a diagonal). */
@@ -925,8 +932,36 @@ function drawShip(sx: number, sy: number, k: number, turn: number, color: number
   overlay.poly(out).fill(color);
 }
 
+/** Over the field while paused: the scene dimmed and "Paused", so a pause is not taken for a hang. */
+const pause = createPauseOverlay({ label: 'paused' });
+app.stage.addChild(pause.container);
+
+/** Gap kept between the touch card and the finish line, px. */
+const HINT_LINE_GAP = 4;
+/**
+ * Keeps the kit's touch card (at the top of the stage, by the page's style) off the finish line: where
+ * the card's foot would reach the line it goes under the line instead, and under the level's title
+ * while that shows. Checked every frame while the card is up (the stage and the field can resize).
+ */
+function placeTouchHint(): void {
+  const card = document.querySelector<HTMLElement>('[data-hud="touch-hint"]');
+  if (!card) return;
+  const stage = pageLayout().stage.getBoundingClientRect(),
+    canvas = app.canvas.getBoundingClientRect();
+  const line = canvas.top + renderer.camera.toScreenY(bh.lineY) - stage.top;
+  const h = card.offsetHeight;
+  let top = 6;
+  if (top + h + HINT_LINE_GAP > line) top = line + HINT_LINE_GAP + (levelBanner.visible ? levelBanner.height + 8 : 0);
+  const want = `${Math.round(top)}px`;
+  if (card.style.top !== want) card.style.top = want;
+}
+
 function drawFrame(alpha: number, world: PhysicsWorld): void {
-  engine.set(bh.thrust === 'none' || bh.over ? 0 : 0.7);
+  // The overlay stays the stage's last child (text added later would be drawn over it).
+  if (pause.container.parent === app.stage && app.stage.children[app.stage.children.length - 1] !== pause.container)
+    app.stage.addChild(pause.container);
+  pause.draw(shell.paused, app.screen.width, app.screen.height, touch);
+  engine.set(bh.thrust === 'none' || bh.over || shell.paused ? 0 : 0.7);
   drawBackdrop();
   drawHoles(world);
   const cam = renderer.camera;
@@ -980,6 +1015,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   lastShip[1] = y;
   drawEdgeWarning(x, y);
   drawLevelBanner();
+  placeTouchHint();
   drawScorePop();
   // The engine's thrust now (it spools up and down): the flame points against it, as long as it is
   // strong, and the ship leans into it (up to LEAN rad at full sideways thrust).
@@ -1034,6 +1070,8 @@ shell.expose({
   /** Whether the swallow effect (the ship spiralling into a hole) plays, and whether the edge warning shows. */
   swallowing: (): boolean => swallow.active,
   edgeWarning: (): boolean => edgeText.visible,
+  /** The pause overlay as last drawn: whether it shows, and its words. */
+  pauseOverlay: (): { visible: boolean; text: string } => ({ visible: pause.visible, text: pause.text }),
   /** Particles drawn in the last frame (exhaust). */
   particleCount: (): number => renderer.particles!.stats.particles,
 });

@@ -229,24 +229,28 @@ function createWorld(): PhysicsWorld {
 // ---- A thrown heap ball leaves the heap on its arc ------------------------------------------------
 
 /**
- * How long a thrown ball of the scene ignores the balls it leaves, s: its neighbours in the heap
- * pressed on it as it rose and knocked it off the aimed arc (at 9 m/s, 0.4 m off in 0.1 s).
+ * The longest a thrown ball of the scene passes through the balls in its way as it leaves the heap,
+ * s: its neighbours in the heap pressed on it as it rose and knocked it off the aimed arc (at 9 m/s,
+ * 0.4 m off in 0.1 s). A path still inside a ball then goes on passing it for up to LEAVE_MAX_SECONDS.
  */
-const LEAVE_SECONDS = 0.1;
+const LEAVE_SECONDS = 0.3;
+/** The hard end of a leave, s: a path that is still inside balls by then (a long drive through the heap) meets them. */
+const LEAVE_MAX_SECONDS = 0.5;
 
-/** The thrown balls leaving the heap: until (world time, s) and their state after the last integrate (m, m/s). */
-let leaving = new Map<number, { until: number; x: number; y: number; vx: number; vy: number }>();
+/**
+ * The thrown balls leaving the heap: until (world time, s), their state after the last integrate (m,
+ * m/s), and the balls it touched then with their state (id, x, y, vx, vy; m, m/s), whose push by it
+ * the collide that follows is made sideways only.
+ */
+let leaving = new Map<number, { until: number; x: number; y: number; vx: number; vy: number; near: number[] }>();
 
-/** After each (sub)step's integrate: each leaving ball's state as it flies free of contacts. */
+/** After each (sub)step's integrate: each leaving ball's state as it flies free of contacts, until its leave ends. */
 function keepLeavingFree(world: PhysicsWorld): void {
   if (leaving.size === 0) return;
   const P = world.components.Position,
     V = world.components.Velocity;
   for (const [e, l] of leaving) {
-    // Past LEAVE_SECONDS it goes on leaving while it still overlaps a ball (a neighbour it is passing
-    // would knock it off its arc), for up to twice as long again.
-    const over = world.time >= l.until && (world.time >= l.until + 2 * LEAVE_SECONDS || !overlapsBall(world, e));
-    if (over || !handles.balls.includes(e)) {
+    if (world.time >= l.until || !handles.balls.includes(e)) {
       leaving.delete(e);
       continue;
     }
@@ -255,29 +259,24 @@ function keepLeavingFree(world: PhysicsWorld): void {
     l.y = P.y[s]!;
     l.vx = V.x[s]!;
     l.vy = V.y[s]!;
+    // The balls it may touch in this collide (within a step's travel of touching it), as they are before it.
+    const R = world.components.Ball.radius,
+      reach = R[s]! + Math.hypot(l.vx, l.vy) * world.h;
+    l.near.length = 0;
+    for (const o of handles.balls) {
+      if (o === e) continue;
+      const q = slotOf(o);
+      if ((P.x[q]! - l.x) ** 2 + (P.y[q]! - l.y) ** 2 < (reach + R[q]!) ** 2) l.near.push(o, P.x[q]!, P.y[q]!, V.x[q]!, V.y[q]!);
+    }
   }
-}
-
-/** Whether ball `e` overlaps another ball now. */
-function overlapsBall(world: PhysicsWorld, e: number): boolean {
-  const P = world.components.Position,
-    R = world.components.Ball.radius;
-  const s = slotOf(e),
-    x = P.x[s]!,
-    y = P.y[s]!,
-    r = R[s]!;
-  for (const o of handles.balls) {
-    if (o === e) continue;
-    const q = slotOf(o);
-    if ((P.x[q]! - x) ** 2 + (P.y[q]! - y) ** 2 < (r + R[q]!) ** 2) return true;
-  }
-  return false;
 }
 
 /**
- * After each (sub)step's collide: a leaving ball goes on as if the balls round it were not there
- * (they are pushed aside), unless it touches the box, a ramp or the hoop: then it stops leaving and
- * bounces as any ball does.
+ * After each (sub)step's collide: a leaving ball goes on as if the balls round it were not there,
+ * unless it touches the box, a ramp or the hoop: then it stops leaving and bounces as any ball does.
+ * The balls it passes are pushed aside, not ahead: of what the collide did to them, the part along the
+ * thrown ball's way is taken back (a ball pushed ahead of it, up through the heap, was in its way
+ * again when the leave ended, and it ploughed).
  */
 function leaveFreely(world: PhysicsWorld): void {
   if (leaving.size === 0) return;
@@ -305,6 +304,25 @@ function leaveFreely(world: PhysicsWorld): void {
     P.y[s] = l.y;
     V.x[s] = l.vx;
     V.y[s] = l.vy;
+    const speed = Math.hypot(l.vx, l.vy);
+    if (speed === 0) continue;
+    const ux = l.vx / speed,
+      uy = l.vy / speed;
+    for (let i = 0; i < l.near.length; i += 5) {
+      const o = l.near[i]!;
+      if (!handles.balls.includes(o)) continue;
+      const q = slotOf(o);
+      const dp = (P.x[q]! - l.near[i + 1]!) * ux + (P.y[q]! - l.near[i + 2]!) * uy,
+        dv = (V.x[q]! - l.near[i + 3]!) * ux + (V.y[q]! - l.near[i + 4]!) * uy;
+      if (dp > 0) {
+        P.x[q] = P.x[q]! - dp * ux;
+        P.y[q] = P.y[q]! - dp * uy;
+      }
+      if (dv > 0) {
+        V.x[q] = V.x[q]! - dv * ux;
+        V.y[q] = V.y[q]! - dv * uy;
+      }
+    }
   }
 }
 
@@ -317,27 +335,46 @@ function distanceToSegment(px: number, py: number, ax: number, ay: number, bx: n
 }
 
 /**
- * The balls a ball of radius `r` thrown from (x, y), m, with velocity (vx, vy), m/s, meets within
- * LEAVE_SECONDS (touching it and moving into it): the heap's balls it leaves, which it passes as it
- * leaves (they are pushed aside), so they do not end its aiming arc either. Each as [x, y, radius].
+ * How a ball of radius `r`, m, thrown from (x, y), m, with velocity (vx, vy), m/s, leaves the heap
+ * round it (`near`, the balls near its start, [x, y, radius] each, m): the world steps (of `h` s) its
+ * leave lasts, and the balls its drag-free path touches in them (or comes within a step's travel
+ * of), which it passes (they are pushed
+ * aside) and which so do not end its aiming arc either. The leave lasts to the last step within
+ * LEAVE_SECONDS whose point is inside a ball, and on while the path stays inside balls, to
+ * LEAVE_MAX_SECONDS at most: a throw from inside the heap passes every ball above it on its way
+ * out, and a gap between two of them does not end the leave early. The page's throw and its aiming
+ * arc both use this, so the arc shown is the way the ball goes.
  */
-function metLeaving(
-  near: [number, number, number][],
+function leaveOf(
+  near: readonly [number, number, number][],
   x: number,
   y: number,
   vx: number,
   vy: number,
   r: number,
-): Set<[number, number, number]> {
+  h: number,
+): { steps: number; met: Set<[number, number, number]> } {
   const g = handles.params.gravity;
   const met = new Set<[number, number, number]>();
-  for (let n = 0; n <= Math.round(LEAVE_SECONDS * 60); n++) {
-    const t = n / 60;
+  const soft = Math.round(LEAVE_SECONDS / h),
+    hard = Math.round(LEAVE_MAX_SECONDS / h);
+  // The engine's contacts begin a little before two balls touch (within about a step's travel): so does a leave's.
+  const reach = r + Math.hypot(vx, vy) * h + 0.02;
+  let steps = 0;
+  for (let n = 0; n <= hard; n++) {
+    const t = n * h;
     const px = x + vx * t,
       py = y + vy * t - 0.5 * g * t * t;
-    for (const b of near) if ((px - b[0]) ** 2 + (py - b[1]) ** 2 < (r + b[2]) ** 2) met.add(b);
+    let inside = false;
+    for (const b of near)
+      if ((px - b[0]) ** 2 + (py - b[1]) ** 2 < (reach + b[2]) ** 2) {
+        inside = true;
+        met.add(b);
+      }
+    if (inside) steps = n;
+    else if (n > soft) break;
   }
-  return met;
+  return { steps, met };
 }
 
 /** Drops a crate (a box of about two mean ball diameters, turned a little) near the top of the box. */
@@ -450,9 +487,13 @@ function playHoop(world: PhysicsWorld): void {
     }
     b.x = x;
     b.y = y;
-    // Falling below the rim's line beside the hoop (the way in is down through it), or out too long: a miss.
+    // Falling below the rim's line beside the hoop (the way in is down through it), or out too long: a
+    // miss. A ball above the rim over the hoop (on the backboard's top, on the rim) may still drop in:
+    // it has MISS_SECONDS more, and then the rest of MISS_SECONDS_OVER_HOOP.
     const falling = world.components.Velocity.y[slotOf(e)]! < 0 && y < opening.y;
-    if (falling || world.time - b.at > MISS_SECONDS) {
+    const overHoop = y >= opening.y && x > opening.minX - HOOP_REACH && x < opening.maxX + HOOP_REACH;
+    const out = world.time - b.at;
+    if (falling || out > MISS_SECONDS_OVER_HOOP || (out > MISS_SECONDS && !overHoop)) {
       flights.delete(e);
       if (b.scores && roundMiss(round)) {
         missAt = performance.now();
@@ -469,6 +510,17 @@ function playHoop(world: PhysicsWorld): void {
     setTimeout(() => sound.chime(659.25, 0.9), 320);
   }
 }
+
+/**
+ * How far beside the hoop's opening, m, a thrown ball above the rim may still drop in (over the
+ * backboard's top or the front rim: a ball of radius up to 0.6 m resting on either).
+ */
+const HOOP_REACH = 0.8;
+/**
+ * The longest a thrown ball may be out, s, if it is over the hoop (HOOP_REACH) when MISS_SECONDS have
+ * passed: one that sat on the backboard's top, then rolled off into the net, went in with no basket.
+ */
+const MISS_SECONDS_OVER_HOOP = 3 * MISS_SECONDS;
 
 /** Basketballs left lying about that the court keeps; past this many the oldest at rest fades out. */
 const MAX_LOOSE = 12;
@@ -933,8 +985,12 @@ function throwBall(e: number, vx: number, vy: number): void {
     s = slotOf(e);
   const x = c.Position.x[s]!,
     y = c.Position.y[s]!;
-  // Free of the heap round it for a moment: its neighbours would take the throw's push and fly instead.
-  leaving.set(e, { until: shell.world.time + LEAVE_SECONDS, x, y, vx, vy });
+  // Free of the heap round it while it leaves (leaveOf, as its aiming arc showed): its neighbours
+  // would take the throw's push and fly instead, and the balls above it would stop it.
+  const dt = shell.world.dt;
+  const { steps } = leaveOf(nearBalls(x, y, e), x, y, vx, vy, c.Ball.radius[s]!, dt);
+  // Free through the integrate of the leave's last step (world time is a step behind there).
+  if (steps > 0) leaving.set(e, { until: shell.world.time + (steps - 0.5) * dt, x, y, vx, vy, near: [] });
   launch(e, true);
 }
 
@@ -1014,7 +1070,7 @@ function nearBalls(x: number, y: number, except: number): [number, number, numbe
 function arcStops(t: { x: number; y: number; vx: number; vy: number; radius: number }, thrown: number): [number, number, number][] {
   const near = nearBalls(t.x, t.y, thrown);
   if (thrown === 0) return near;
-  const met = metLeaving(near, t.x, t.y, t.vx, t.vy, t.radius);
+  const { met } = leaveOf(near, t.x, t.y, t.vx, t.vy, t.radius, shell.world.dt);
   return near.filter((b) => !met.has(b));
 }
 /** Bounces the aiming arc follows (off the walls, the hoop and its net) before it ends. */
@@ -1324,7 +1380,9 @@ function drawCelebration(age: number): void {
 /**
  * The backboard of the hoop at `spot`: a white board (its physics is the capsule of hoopSegments,
  * drawn as a board 0.16 m thick) with the red target square over the rim, and a steel bracket from
- * the board to the box's side wall behind it.
+ * the board to the box's side wall behind it. The bracket has no body (balls that go over the board
+ * fall behind it), so it is drawn dim on the wall under the balls (`bracketLayer`): a ball falling
+ * behind the board passes in front of it, not through it.
  */
 function drawBackboard(spot: HoopSpot): void {
   const cam = renderer.camera;
@@ -1333,11 +1391,12 @@ function drawBackboard(spot: HoopSpot): void {
   const wall = spot.side > 0 ? box.max[0] : box.min[0];
   // The bracket: two struts from the board's back to the side wall (if there is room between them).
   const back = bx + spot.side * HOOP_RADIUS;
+  bracketLayer.clear();
   if (Math.abs(wall - back) > 0.05) {
     for (const y of [spot.y + 0.15, spot.y + 0.9]) {
-      hoopLayer.moveTo(cam.toScreenX(back), cam.toScreenY(y)).lineTo(cam.toScreenX(wall), cam.toScreenY(y + 0.25));
+      bracketLayer.moveTo(cam.toScreenX(back), cam.toScreenY(y)).lineTo(cam.toScreenX(wall), cam.toScreenY(y + 0.25));
     }
-    hoopLayer.stroke({ width: Math.max(3, cam.toScreenLength(0.1)), color: 0x6b7485 });
+    bracketLayer.stroke({ width: Math.max(3, cam.toScreenLength(0.1)), color: 0x4a5670 });
   }
   const t = Math.max(6, cam.toScreenLength(2 * HOOP_RADIUS));
   const x = cam.toScreenX(bx),
@@ -1365,6 +1424,9 @@ const standLabel = new Text({
 standLabel.anchor.set(0.5);
 standLabel.visible = false;
 app.stage.addChildAt(standLabel, 1);
+/** The backboard's bracket, on the wall under the balls (drawBackboard). */
+const bracketLayer = new Graphics({ label: 'hoop-bracket' });
+app.stage.addChildAt(bracketLayer, 2);
 // The renderer's walls (thin lines with end dots, the box's outline) look like a physics diagram:
 // the court draws them as a frame and wooden ramps instead.
 const plainWalls = renderer.root.children.find((c) => c.label === 'walls');
@@ -1524,11 +1586,14 @@ function anchorCourt(): void {
 /** The big Play-again button when time is up: over the top of the box, clear of the balls piled at its bottom. */
 const setAction = createActionButton('Play again ▶', () => shell.reset(), { at: 'top' });
 
-// The numbers line bumps (grows and turns gold for a moment) when a basket scores.
+// The numbers line bumps (grows and turns gold for a moment) when a basket scores. Each line of the
+// row is one line, whatever its text (a long one is cut with an ellipsis; the phone's texts are short
+// enough not to be): a hint that wrapped to two lines mid-drag moved the box down under the finger.
 const bumpStyle = document.createElement('style');
 bumpStyle.textContent = `@keyframes bb-bump { 0% { transform: scale(1); color: inherit; } 20% { transform: scale(1.3); color: #ffd166; }
   70% { color: #ffd166; } 100% { transform: scale(1); color: inherit; } }
-[data-hud="hoop"] [data-hud="numbers"].bb-bump { animation: bb-bump 0.9s ease-out; }`;
+[data-hud="hoop"] [data-hud="numbers"].bb-bump { animation: bb-bump 0.9s ease-out; }
+[data-hud="hoop"] > div { white-space: nowrap; overflow: hidden; text-overflow: ellipsis; }`;
 document.head.append(bumpStyle);
 /** Bumps the status row's numbers line (a basket scored). */
 function bumpScore(): void {
@@ -1558,7 +1623,9 @@ function updateStatus(): void {
   // While playing the hint takes turns (5 s each) between the heap's balls and the streak.
   const teach =
     Math.floor(shell.world.time / 5) % 2 === 0
-      ? `Press on a heap ball and pull back to throw it: ${BALL_POINTS.heap} points, the gold one ${BALL_POINTS.gold}`
+      ? touch
+        ? `Pull a heap ball back to throw it: ${BALL_POINTS.heap} points, gold ${BALL_POINTS.gold}`
+        : `Press on a heap ball and pull back to throw it: ${BALL_POINTS.heap} points, the gold one ${BALL_POINTS.gold}`
       : 'Baskets in a row multiply, up to ×4; a miss ends it';
   const hint = over
     ? `${touch ? 'Tap' : 'R or'} Play again for a new round`
@@ -1567,7 +1634,7 @@ function updateStatus(): void {
       : performance.now() - tooHighAt < 2500
         ? hintReason === 'high'
           ? 'Too high: throw from below the orange line to score'
-          : 'Up through the net does not count: drop it in from above'
+          : `Up through the net does not count${touch ? '' : ': drop it in from above'}`
         : round.phase === 'ready' && round.shots === 0
           ? // One line on a phone too: a second line there moved the box down the moment it changed.
             `${throwHow} through the hoop${touch ? '' : ' from below the orange line'}`

@@ -227,8 +227,11 @@ export function crossRing(ring: Ring, a: readonly number[], b: readonly number[]
   return off < MISS_RANGE ? 'missed' : null;
 }
 
-/** Seconds added to the course time for each ring missed: a miss costs more than the turn back would save. */
-export const MISS_PENALTY = 10;
+/**
+ * Seconds added to the course time for each ring missed: a miss costs more than the turn back would
+ * save, and a star (`courseStars`). (With 10 s a stranger found a miss cost nothing that mattered.)
+ */
+export const MISS_PENALTY = 20;
 
 /** What a move of the aircraft did to a ring (`flyRings`). */
 export interface RingEvent {
@@ -280,11 +283,85 @@ export function nextRing(rings: readonly Ring[]): number {
   return rings.findIndex((r) => r.status === 'ahead');
 }
 
-/** Stars for a finished course: 3 for every ring, 2 for at least 70 %, 1 for at least 40 %, else 0. */
-export function courseStars(passed: number, total: number): number {
-  if (total <= 0) return 0;
-  const f = passed / total;
-  return f >= 1 ? 3 : f >= 0.7 ? 2 : f >= 0.4 ? 1 : 0;
+/**
+ * Stars of a course with `missed` rings missed so far: 3, less one for each miss, never below 0. The
+ * HUD shows them while flying, so a miss is seen to cost a star the moment it happens.
+ * @throws RangeError on a count of misses that is not an integer >= 0.
+ */
+export function courseStars(missed: number): number {
+  if (!(Number.isInteger(missed) && missed >= 0)) throw new RangeError(`courseStars: missed must be an integer >= 0, got ${missed}`);
+  return Math.max(0, 3 - missed);
+}
+
+/** Where a ring lies from the aircraft (`ringBearing`). */
+export interface RingBearing {
+  /** Angle of the ring's centre to the right of the heading of the velocity, rad, in (-pi, pi] (horizontal). */
+  bearing: number;
+  /** Angle of the ring's centre above the flight path (the velocity's climb), rad. */
+  elevation: number;
+  /** Distance to the ring's centre, m. */
+  distance: number;
+  /** How far the ring's centre lies to the right of the line the aircraft flies, m, at its distance: distance x sin(bearing) (horizontal). */
+  side: number;
+  /** How far the ring's centre lies above that line, m, at its distance: distance x sin(elevation). */
+  up: number;
+}
+
+/**
+ * Where `ring`'s centre lies from an aircraft at `position` (m, world) flying along `velocity` (m/s,
+ * world): to the right or left of its heading and above or below its flight path (the lesson tips
+ * say this, worked out from where the aircraft is, not written per ring).
+ * @throws RangeError on a position or velocity that is not 3 finite numbers, or a velocity with no
+ * horizontal part.
+ */
+export function ringBearing(ring: Ring, position: readonly number[], velocity: readonly number[]): RingBearing {
+  for (const [name, v] of [
+    ['position', position],
+    ['velocity', velocity],
+  ] as const)
+    if (v.length < 3 || !v.slice(0, 3).every(Number.isFinite))
+      throw new RangeError(`ringBearing: ${name} must be 3 finite numbers, got ${v.join(', ')}`);
+  const vx = velocity[0]!,
+    vy = velocity[1]!,
+    vz = velocity[2]!,
+    level = Math.hypot(vx, vz);
+  if (!(level > 0)) throw new RangeError(`ringBearing: velocity must have a horizontal part, got ${velocity.join(', ')}`);
+  const dx = ring.x - position[0]!,
+    dy = ring.y - position[1]!,
+    dz = ring.z - position[2]!;
+  const flat = Math.hypot(dx, dz),
+    distance = Math.hypot(flat, dy);
+  // Right of the heading (vx, vz) is (-vz, vx): y up, +z to the right of +x.
+  const bearing = Math.atan2(dz * vx - dx * vz, dx * vx + dz * vz);
+  const elevation = Math.atan2(dy, flat) - Math.atan2(vy, level);
+  return { bearing, elevation, distance, side: distance * Math.sin(bearing), up: distance * Math.sin(elevation) };
+}
+
+/**
+ * How far off the line flown a ring's centre must lie for a tip to name that way, m (`ringWay`): a
+ * third of the ring's radius (flying on, the aircraft passes well inside it); past `little` it is
+ * not "a little", past `far` it is "far".
+ */
+export const TIP_OFFSET = Object.freeze({ straight: RING_RADIUS / 3, little: RING_RADIUS, far: 4 * RING_RADIUS });
+
+/** One way of a ring from the line flown (`ringWay`): -1, 0 (on the line) or 1, and how much in words. */
+export interface RingWay {
+  /** +1 right, -1 left, 0 neither. */
+  side: -1 | 0 | 1;
+  /** +1 higher, -1 lower, 0 neither. */
+  up: -1 | 0 | 1;
+  /** '' , 'a little ' or 'far ' (with its space), for the side and for the height. */
+  sideAmount: string;
+  upAmount: string;
+}
+
+/** The ways a ring lies from the line flown (`ringBearing`'s side and up, m), by TIP_OFFSET. */
+export function ringWay(b: Pick<RingBearing, 'side' | 'up' | 'bearing'>): RingWay {
+  const way = (m: number): -1 | 0 | 1 => (Math.abs(m) < TIP_OFFSET.straight ? 0 : m > 0 ? 1 : -1);
+  const amount = (m: number) => (Math.abs(m) < TIP_OFFSET.little ? 'a little ' : Math.abs(m) > TIP_OFFSET.far ? 'far ' : '');
+  // A ring behind (bearing past 90 degrees) is to its side however small the offset.
+  const side = Math.abs(b.bearing) > Math.PI / 2 ? (b.bearing > 0 ? 1 : -1) : way(b.side);
+  return { side, up: way(b.up), sideAmount: Math.abs(b.bearing) > Math.PI / 2 ? 'far ' : amount(b.side), upAmount: amount(b.up) };
 }
 
 /**

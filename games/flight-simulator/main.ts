@@ -7,8 +7,10 @@
  * go, the wings roll level) and gives a held climb or dive the elevator's full response, flying
  * level when the stick is let go; it leaves the throttle to the pilot. Without it the stick moves
  * the surfaces directly.
- * Fly through every ring (./course.ts) as fast as you can; each ring missed adds MISS_PENALTY (10) s
- * to the course clock, said in the banner the moment it is missed; do not hit the ground.
+ * Fly through every ring (./course.ts) as fast as you can; each ring missed costs a star (three to
+ * start with, shown on the goal line) and adds MISS_PENALTY (20) s to the course clock, said in the
+ * banner and by a red glow round the scene the moment it is missed; do not hit the ground. P (or the
+ * toolbar's button) pauses: the scene dims and says so (game-kit's createDomPauseOverlay).
  * Guidance: thick bright rings, a chain of beads through the next two, a label above the next one
  * (clear of the ring and of the marker; an edge arrow when it is out of view), and a flight-path
  * marker where the aircraft's path, curved by its turn and climb, meets the next ring's plane if the
@@ -30,6 +32,7 @@
 import {
   createActionButton,
   createButtonBar,
+  createDomPauseOverlay,
   createPanel,
   createStick,
   flagParam,
@@ -59,7 +62,20 @@ import { aircraftGeometry } from './aircraft-model';
 import { approach, assist, CONTROL_AUTHORITY, createAssistState, type FlightState, flightState, rampKey, SURFACE_RATE } from './assist';
 import { createAttitudeIndicator } from './attitude-indicator';
 import { createCockpit } from './cockpit';
-import { courseStars, courseTime, flyRings, layCourse, MISS_PENALTY, nextRing, predictThroughRing, RING_RADIUS, type Ring } from './course';
+import {
+  courseStars,
+  courseTime,
+  flyRings,
+  layCourse,
+  MISS_PENALTY,
+  nextRing,
+  predictThroughRing,
+  RING_RADIUS,
+  type Ring,
+  type RingWay,
+  ringBearing,
+  ringWay,
+} from './course';
 import { createScenery, HORIZON_COLOUR, SUN_DIRECTION } from './scenery';
 
 const params = {
@@ -318,10 +334,11 @@ function checkRings(time: number): void {
       sound.chime(880, 0.18);
       setTimeout(() => sound.chime(1320, 0.3), 110);
     } else {
-      // A miss costs time on the course clock, said at once in the banner and by the clock's flash.
+      // A miss costs a star and time on the course clock, said at once in the banner and by the
+      // flash of the goal line, where the stars and the clock are.
       state.missed++;
       missedAt = time;
-      events.push({ text: `Missed ring ${ring + 1} · +${MISS_PENALTY} s`, colour: '#ffb35a', time });
+      events.push({ text: `Missed ring ${ring + 1} · −1 ★ · +${MISS_PENALTY} s`, colour: '#ff8a5a', time });
       sound.chime(220, 0.4);
     }
   }
@@ -617,6 +634,21 @@ const endCard = overlay(
 );
 endCard.dataset.hud = 'end';
 const showAgain = createActionButton('Fly again ▶', () => shell.reset());
+/** The pause overlay (game-kit's, over the stage): a tap on it resumes. */
+const pauseOverlay = createDomPauseOverlay(layout.stage, {
+  onResume: () => {
+    shell.paused = false;
+  },
+});
+/**
+ * A red glow round the scene's edge for MISS_FLASH s of game time after a miss, fading (with the
+ * banner and the goal line's flash, the miss is seen wherever the eye is).
+ */
+const missFlash = overlay(
+  'left: 0; top: 0; right: 0; bottom: 0; transform: none; box-shadow: inset 0 0 60px 18px rgba(255, 70, 40, 0.85); opacity: 0; z-index: 5;',
+);
+missFlash.dataset.hud = 'miss-flash';
+const MISS_FLASH = 1.2;
 /** How long a banner stays, s of game time. */
 const BANNER_LIFE = 2;
 
@@ -640,7 +672,8 @@ function updateGoal(): void {
   const total = rings.length;
   // The course clock: the time flown plus the misses' penalties, said beside it.
   const penalty = state.missed > 0 ? ` (+${MISS_PENALTY * state.missed} s)` : '';
-  const courseClock = `${clock(courseTime(state.time, state.missed))}${penalty}`;
+  const stars = courseStars(state.missed);
+  const courseClock = `${clock(courseTime(state.time, state.missed))}${penalty} · ${'★'.repeat(stars)}${'☆'.repeat(3 - stars)}`;
   const text =
     state.phase === 'crashed'
       ? `Crashed · ${state.score} of ${total} rings`
@@ -676,7 +709,7 @@ function updateHud(i: ReturnType<typeof instruments>): void {
     showAgain(false);
   } else {
     const best = bestOf();
-    const stars = courseStars(state.score, total);
+    const stars = courseStars(state.missed);
     const starText = '★'.repeat(stars) + '☆'.repeat(3 - stars);
     endCard.style.display = 'block';
     endCard.replaceChildren();
@@ -714,6 +747,9 @@ function updateBanner(t: number): void {
     banner.style.color = last.colour;
     banner.style.opacity = String(age < 1.4 ? 1 : (BANNER_LIFE - age) / 0.6);
   } else banner.style.display = 'none';
+  const flash = state.phase === 'flying' ? Math.max(0, 1 - (t - missedAt) / MISS_FLASH) : 0;
+  const opacity = flash > 0 ? flash.toFixed(2) : '0';
+  if (missFlash.style.opacity !== opacity) missFlash.style.opacity = opacity;
   warningEl.style.display = state.warning && state.phase === 'flying' && Math.floor(t * 3) % 2 === 0 ? 'block' : 'none';
   warningEl.textContent = state.warning;
 }
@@ -883,13 +919,14 @@ const touchFirst = matchMedia('(pointer: coarse)').matches;
 /** What the tip shows now ('' when none; tests). */
 let tipText = '';
 /**
- * The lesson ring the tip was worked out for (-1: none), and which way it lay then: the side (+1
- * right) and the height (+1 higher). Fixed while that ring is next, so the tip does not turn round
- * as the aircraft turns towards the ring.
+ * The lesson ring the tip was worked out for (-1: none), and which ways it lay from the line flown
+ * then (./course.ts ringBearing, ringWay: right or left, higher or lower, and how much), worked out
+ * from where the aircraft is when the tip first shows, not written per ring (a tip said "higher"
+ * while the ring lay to the left). Fixed while that ring is next, so the tip does not turn round as
+ * the aircraft turns towards the ring.
  */
 let tipRing = -1,
-  tipSide = 1,
-  tipUp = 1;
+  tipWay: RingWay = { side: 0, up: 0, sideAmount: '', upAmount: '' };
 /**
  * Whether the tip has moved to the scene's bottom for ring `tipRing`: it does when the ring on the
  * screen runs under it (a ring above the aircraft sat behind the tip box), and stays there until the
@@ -900,6 +937,11 @@ let tipLow = false;
 const TIP_TOP = compact ? 11 : 12,
   TIP_LOW = compact ? 90 : 91;
 
+/** The key that climbs (up, or down with the pilot's pitch) or dives, for `up` +1 or -1. */
+function climbKey(up: number): string {
+  return up > 0 !== params.pilotPitch ? '↑' : '↓';
+}
+
 /** The tip for the next ring now, or '' (none after the lessons, or once the flight is over). */
 function lessonTip(): string {
   const i = nextRing(rings);
@@ -907,45 +949,49 @@ function lessonTip(): string {
     tipRing = -1;
     return '';
   }
-  const ring = rings[i]!;
   if (tipRing !== i) {
     tipLow = false;
     tipGoneAt = Infinity;
-    // Right of the heading is (-vz, 0, vx) (y up).
     const V = shell.world.components.Velocity,
       e = handles.body;
     tipRing = i;
-    tipSide = (ring.x - now[0]!) * -V.z[e]! + (ring.z - now[2]!) * V.x[e]! > 0 ? 1 : -1;
-    tipUp = ring.y > now[1]! ? 1 : -1;
+    tipWay = ringWay(ringBearing(rings[i]!, now, [V.x[e]!, V.y[e]!, V.z[e]!]));
   }
   // Ring 1's tip is the start's, up while the flight waits; on a phone each tip goes a little after
   // the pilot has acted on it (TIP_LINGER), so it does not cover the sky all the way to its ring.
   if ((i === 0 && !holding) || shell.world.time > tipGoneAt) return '';
-  const side = tipSide > 0 ? 'right' : 'left';
-  const key = tipSide > 0 ? '→' : '←';
-  const stickSide = `push the stick ${side}`;
   if (i === 0)
     return `Fly through the yellow rings. The marker ⊕ shows where you will pass if you let go of the ${touchFirst ? 'stick' : 'keys'}.`;
-  if (i === 2) {
-    const up = tipUp > 0;
-    const climbKey = up !== params.pilotPitch ? '↑' : '↓';
-    const doIt = touchFirst ? `push the stick ${climbKey === '↑' ? 'up' : 'down'}` : `hold ${climbKey}`;
-    if (compact) return `Ring 3 is ${up ? 'higher' : 'lower'}: ${doIt} to ${up ? 'climb' : 'dive'}; let go to fly level.`;
-    return `Ring 3 is ${up ? 'higher' : 'lower'}: ${doIt} to ${up ? 'climb' : 'dive'} gently, and let go to fly level.`;
-  }
-  const doIt = touchFirst ? stickSide : `hold ${key}`;
+  const w = tipWay;
+  const side = w.side > 0 ? 'right' : 'left';
+  const where =
+    [w.side ? `${w.sideAmount}to the ${side}` : '', w.up ? `${w.upAmount}${w.up > 0 ? 'higher' : 'lower'}` : '']
+      .filter(Boolean)
+      .join(' and ') || 'straight ahead';
+  const turnDo = touchFirst ? `push the stick ${side}` : `hold ${w.side > 0 ? '→' : '←'}`;
+  const key = climbKey(w.up);
+  const climbDo = touchFirst ? `push the stick ${key === '↑' ? 'up' : 'down'}` : `hold ${key}`;
+  const climb = w.up > 0 ? 'climb' : 'dive';
+  const n = `Ring ${i + 1} is ${where}`;
+  if (!w.side && !w.up) return `${n}: let go and fly on through it.`;
+  if (w.side && w.up)
+    return touchFirst
+      ? `${n}: push the stick ${side} and ${key === '↑' ? 'up' : 'down'}; let go when ⊕ is in the ring.`
+      : `${n}: hold ${w.side > 0 ? '→' : '←'} to bank and ${key} to ${climb}; let go when the marker ⊕ is in the ring.`;
+  if (w.up)
+    return compact ? `${n}: ${climbDo} to ${climb}; let go to fly level.` : `${n}: ${climbDo} to ${climb} gently, and let go to fly level.`;
   if (i === 1)
     return compact
-      ? `Ring 2 is to the ${side}: ${doIt} to tip the wings and turn; let go to fly straight.`
-      : `Ring 2 is to the ${side}. A plane turns by tipping its wings (banking): ${doIt} and it leans and turns ${side}; let go to fly straight.`;
-  return `Ring 4 is to the ${side}: tip the wings ${side} (${touchFirst ? stickSide : key}) to turn, then let go.`;
+      ? `${n}: ${turnDo} to tip the wings and turn; let go to fly straight.`
+      : `${n}. A plane turns by tipping its wings (banking): ${turnDo} and it leans and turns ${side}; let go to fly straight.`;
+  return `${n}: tip the wings ${side} (${touchFirst ? `push the stick ${side}` : w.side > 0 ? '→' : '←'}) to turn, then let go.`;
 }
 
 /** What the tip's second line asks while the flight waits for the pilot (`holding`): the input that goes on. */
 function waitLine(): string {
   if (!holding) return '';
   if (tipRing === 0) return touchFirst ? 'Move the stick to start.' : 'Press an arrow key to start.';
-  const key = tipRing === 2 ? (tipUp > 0 !== params.pilotPitch ? '↑' : '↓') : tipSide > 0 ? '→' : '←';
+  const key = tipWay.side ? (tipWay.side > 0 ? '→' : '←') : tipWay.up ? climbKey(tipWay.up) : 'an arrow key';
   return touchFirst ? 'Paused: move the stick to fly on.' : `Paused: press ${key} to fly on.`;
 }
 
@@ -1040,6 +1086,7 @@ const drawnQ = new Quaternion(),
   at = new Vector3(),
   look = new Vector3(),
   chaseOffset = new Vector3(),
+  nose = new Vector3(),
   smoothOffset = new Vector3();
 let smoothReady = false;
 /** performance.now() of the last frame, ms (the chase camera's smoothing is per second, not per frame). */
@@ -1086,8 +1133,12 @@ function frame(): void {
   // software GPU); the HTML labels placed for a frame the canvas never showed sat 100 px and more
   // from their ring. So a frame that will not be drawn changes nothing but the banner and the tip's
   // words (a ring's pass or miss, and what the next ring asks, are said at once).
+  // Paused by the pilot (P, the toolbar's button): the scene dims and says so. A wait for the pilot
+  // (`holding`) is said by the tip instead, over the ring it is about.
+  pauseOverlay.update(shell.paused && !holding, touchFirst);
   if (!app.pacer.mayDraw()) {
     updateBanner(world.time);
+    updateGoal();
     showTip(false);
     return;
   }
@@ -1109,8 +1160,15 @@ function frame(): void {
     // place in the world) swings round smoothly and keeps its length, so in a turn the camera stays
     // at the same distance behind instead of trailing off (a lerp of the world position lags by
     // speed x frame time, more the slower the frames come).
+    // The offsets are along the aircraft's nose and the world's up, not the aircraft's up: a bank
+    // does not swing the camera sideways (with the aircraft's up, the look point swung to the side
+    // of the bank at once while the camera lagged, so the scene and the path marker first slid the
+    // wrong way, 34 px at 1280 x 800, and a turn showed late).
     const [back, up] = chaseOffsetNow();
-    chaseOffset.set(back, up, 0).applyQuaternion(drawnQ);
+    nose.set(1, 0, 0).applyQuaternion(drawnQ);
+    chaseOffset.copy(nose).multiplyScalar(back).y += up;
+    // Its length is the offset's whatever the pitch (the sum of the two is not).
+    chaseOffset.setLength(Math.hypot(back, up));
     const t = performance.now();
     const dt = Math.min(0.2, Math.max(0, (t - lastFrame) / 1000));
     lastFrame = t;
@@ -1124,9 +1182,9 @@ function frame(): void {
     app.camera.up.set(0, 1, 0);
     const k = chaseScale();
     look
-      .set(k * CHASE_LOOK[0], k * CHASE_LOOK[1], 0)
-      .applyQuaternion(drawnQ)
-      .add(at);
+      .copy(nose)
+      .multiplyScalar(k * CHASE_LOOK[0])
+      .add(at).y += k * CHASE_LOOK[1];
     app.camera.lookAt(look);
   } else {
     chaseDistance = 0;

@@ -115,4 +115,24 @@ export class ClothCells {
       q = 4 * cell;
     return (isAlive(world, s[q]!) && isAlive(world, s[q + 1]!) ? 1 : 0) | (isAlive(world, s[q + 2]!) && isAlive(world, s[q + 3]!) ? 2 : 0);
   }
+
+  /**
+   * The triangles to draw of cell `cell` (row-major index) in `world`, split along whichever diagonal
+   * keeps more of them whole (the cell's own split, `triangles`, on a tie): bit 1 the upper-left
+   * triangle (top and left links alive) and bit 2 the lower-right one (bottom and right), or bit 4 the
+   * upper-right one (top and right) and bit 8 the lower-left one (left and bottom). A cut that clips
+   * the cell's upper-right or lower-left corner thus leaves the cell's other half drawn.
+   */
+  drawn(world: PhysicsWorld, cell: number): number {
+    const s = this.sides,
+      q = 4 * cell;
+    const top = isAlive(world, s[q]!),
+      left = isAlive(world, s[q + 1]!),
+      bottom = isAlive(world, s[q + 2]!),
+      right = isAlive(world, s[q + 3]!);
+    const own = (top && left ? 1 : 0) + (bottom && right ? 1 : 0),
+      other = (top && right ? 1 : 0) + (left && bottom ? 1 : 0);
+    if (other > own) return (top && right ? 4 : 0) | (left && bottom ? 8 : 0);
+    return (top && left ? 1 : 0) | (bottom && right ? 2 : 0);
+  }
 }

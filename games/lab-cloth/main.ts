@@ -177,6 +177,8 @@ function labStep(world: PhysicsWorld): void {
     calm = calmTarget > calm ? Math.min(1, calm + CALM_RATE * world.dt) : Math.max(0, calm - CALM_RATE * world.dt);
     blowNow(world);
   }
+  // The hand's pull follows how far it leads the patch it holds (grab.ts).
+  grab?.update();
   const t0 = performance.now();
   physicsStep(world);
   stepMs = performance.now() - t0;
@@ -212,7 +214,54 @@ const { shell, renderer, app } = game;
 const touchHint = document.querySelector<HTMLElement>('[data-hud="touch-hint"]');
 if (touchHint) Object.assign(touchHint.style, { top: '12px', bottom: 'auto' });
 const dock = createLabDock();
-const refitView = followView(app, renderer.camera, dock, () => (app.screen.width < app.screen.height ? narrowViewFor(params.wind) : view));
+/**
+ * The upright view's sides as drawn, m: they widen from narrowViewFor's, up to the yard's walls,
+ * to keep the cloth on the screen when a gust blows it out past them, and come back once it is in.
+ */
+const reach = { minX: narrowViewFor(params.wind).minX, maxX: narrowViewFor(params.wind).maxX };
+/** Puts the upright view's sides back to narrowViewFor's (a new sheet hangs at rest). */
+function resetReach(): void {
+  const base = narrowViewFor(params.wind);
+  reach.minX = base.minX;
+  reach.maxX = base.maxX;
+}
+/** Whether the screen is taller than wide (the upright view). */
+const upright = (): boolean => app.screen.width < app.screen.height;
+const refitView = followView(app, renderer.camera, dock, () =>
+  upright() ? { ...narrowViewFor(params.wind), minX: reach.minX, maxX: reach.maxX } : view,
+);
+/** How much room the cloth is given past the view's side, m. */
+const REACH_MARGIN = 0.2;
+/** How fast the upright view widens to follow the cloth out, and comes back in, 1/s. */
+const REACH_OUT = 10,
+  REACH_IN = 1.5;
+/**
+ * Eases the upright view's sides (`reach`) toward the cloth's reach over `dt` s: out to REACH_MARGIN
+ * past its outermost point (at most the walls), in to narrowViewFor's sides. Held still during a
+ * scissors stroke, so the cut keeps under the finger. @returns whether the view changed.
+ */
+function followReach(world: PhysicsWorld, dt: number): boolean {
+  if (!upright() || stroke) return false;
+  const base = narrowViewFor(params.wind);
+  const P = world.components.Position,
+    pts = cloth.points;
+  let lo = Infinity,
+    hi = -Infinity;
+  for (let i = 0; i < pts.length; i++) {
+    const x = P.x[slotOf(pts[i]!)]!;
+    if (x < lo) lo = x;
+    if (x > hi) hi = x;
+  }
+  const wantMin = Math.max(YARD.minX - 0.1, Math.min(base.minX, lo - REACH_MARGIN)),
+    wantMax = Math.min(YARD.maxX + 0.1, Math.max(base.maxX, hi + REACH_MARGIN));
+  const ease = (from: number, to: number, out: boolean): number => from + (to - from) * (1 - Math.exp(-dt * (out ? REACH_OUT : REACH_IN)));
+  const minX = ease(reach.minX, wantMin, wantMin < reach.minX),
+    maxX = ease(reach.maxX, wantMax, wantMax > reach.maxX);
+  if (Math.abs(minX - reach.minX) < 1e-4 && Math.abs(maxX - reach.maxX) < 1e-4) return false;
+  reach.minX = minX;
+  reach.maxX = maxX;
+  return true;
+}
 
 const panel = createPanel(
   params,
@@ -289,6 +338,7 @@ function nextSheet(): void {
   params.wind = LEVELS[levelIndex]!.wind;
   params.gusts = LEVELS[levelIndex]!.gusts;
   panel.refresh();
+  resetReach();
   refitView();
   coverScene();
   shell.reset();
@@ -607,6 +657,8 @@ const release = (): void => {
 canvas.addEventListener('pointerup', release);
 canvas.addEventListener('pointercancel', release);
 shell.onWorldChange(() => {
+  resetReach();
+  refitView();
   refreshTools();
   grab = null;
   stroke = null;
@@ -680,7 +732,8 @@ function drawHand(): void {
   if (!grab) return;
   const cam = renderer.camera;
   const [x, y] = grab.patch([0, 0]);
-  const pull = Math.min(1, grab.force() / grab.options.maxForce);
+  // Full brightness (and red past 0.7) as the pull nears what tears the sheet (25-55 N, grab.ts).
+  const pull = Math.min(1, grab.force() / (2.5 * grab.options.firm));
   const hx = cam.toScreenX(grab.hand[0]),
     hy = cam.toScreenY(grab.hand[1]);
   hand
@@ -907,6 +960,7 @@ function draw(alpha: number, world: PhysicsWorld): void {
     }
     layerWorld = world;
   }
+  if (followReach(world, dt)) refitView();
   yard.update(world, renderer.camera, dt, app.screen.width, app.screen.height);
   sheet!.update(renderer.camera, alpha);
   drawPegs(world);

@@ -10,7 +10,11 @@
  * - Edges: the sheet's own border is drawn as a sewn edge (a darker line), a torn edge as loose
  *   light threads.
  *
- * A triangle of a cell is drawn while the two structural links on its sides are whole (ClothCells).
+ * A cell is drawn as two triangles, split along whichever diagonal keeps more of it whole
+ * (ClothCells.drawn): a triangle is drawn while the two structural links on its sides are, so a cut
+ * that clips a cell's corner leaves the cell's other half, cut along the diagonal. A cut at 45 degrees
+ * either way is drawn as a straight edge (not the stairs of whole cells) and a curved one as a line of
+ * short chords, and a piece cut out is drawn in its own shape.
  */
 import { type Cloth, isAlive, type PhysicsWorld, slotOf } from '@bitphysics/physics';
 import type { Camera } from '@bitphysics/render-pixi';
@@ -189,7 +193,7 @@ export class SheetView {
       for (let c = 0; c + 1 < C; c++) {
         const cell = r * (C - 1) + c,
           i = r * C + c;
-        const t = cells.triangles(this.world, cell);
+        const t = cells.drawn(this.world, cell);
         if (t & 1) {
           idx[m++] = i;
           idx[m++] = i + 1;
@@ -205,6 +209,22 @@ export class SheetView {
           bump(i + 1, i + C + 1);
           bump(i + C, i + C + 1);
           bump(i + 1, i + C);
+        }
+        if (t & 4) {
+          idx[m++] = i;
+          idx[m++] = i + 1;
+          idx[m++] = i + C + 1;
+          bump(i, i + 1);
+          bump(i + 1, i + C + 1);
+          bump(i, i + C + 1);
+        }
+        if (t & 8) {
+          idx[m++] = i;
+          idx[m++] = i + C + 1;
+          idx[m++] = i + C;
+          bump(i, i + C);
+          bump(i + C, i + C + 1);
+          bump(i, i + C + 1);
         }
       }
     for (let r = 0; r < R; r++)

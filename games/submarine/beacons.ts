@@ -5,15 +5,89 @@
  * takes the nearest one left. Headless (no drawing), so the rule is tested in node.
  */
 
+import { Rng } from '@bitphysics/physics';
 import { assertFinite } from '@bitphysics/physics/validate';
+import { type SubmarineHandles, seabedHeight } from '@bitphysics/projects';
+import { hullDistance } from './hull';
 
 /**
- * A beacon is collected when the hull's centre comes within this of it, m. Drawn round each beacon
- * as a faint disc, so a player sees how near is near enough (only the 1 to 3 m lamp and its pulse
- * showed, and a stranger on a phone steered for the lamp itself). 8 m: the hull's 12 m length
- * passing within 2 m of the lamp.
+ * A beacon is collected when any part of the hull (its 12 m x 3 m box) comes within this of it, m:
+ * the radius of the ring drawn round each beacon, so the boat touching the ring collects it (with
+ * the hull's centre within 8 m, a stranger saw the bow deep inside the drawn disc and nothing
+ * happen, and read it as "only at the centre").
  */
 export const BEACON_CATCH = 8;
+
+/**
+ * Whether the hull, a box `SUBMARINE.length` x `SUBMARINE.height` centred at (x, y) m and turned by
+ * `angle` rad, reaches within `BEACON_CATCH` of the beacon at (bx, by), m: the beacon taken into the
+ * hull's frame, then its distance to the nearest point of the box.
+ * @throws RangeError when a coordinate or the angle is not finite.
+ */
+export function catchesBeacon(x: number, y: number, angle: number, bx: number, by: number): boolean {
+  assertSegment('catchesBeacon', x, y, bx, by);
+  assertFinite('catchesBeacon', 'angle', angle);
+  return hullDistance(x, y, angle, bx, by) < BEACON_CATCH;
+}
+
+/** The course's legs after the first beacon: each next beacon lies this far along x past the one before, at most, m. */
+export const LEG_MAX = 130;
+/** The shortest leg as a share of the longest one the course allows (`LEG_MAX`, less on a long course). */
+export const LEG_MIN_SHARE = 0.65;
+/** The straight way from one beacon to the next clears the seabed by this much where it can, m. */
+export const LEG_CLEARANCE = 8;
+
+/**
+ * Re-lays the beacons after the first (in place) into a course of short, open legs: each next
+ * beacon `LEG_MIN_SHARE` to 1 times the longest leg further along x (`LEG_MAX`, or less so that all
+ * of them end by x = 1,000 m, inside the scene's seabed), between 8 m over the seabed and 10 m under
+ * the surface, at a depth whose straight line from the beacon before clears the seabed by
+ * `LEG_CLEARANCE` (of 16 seeded tries, the first that does, else the one that clears it most). The
+ * scene's own layout spread them over 900 m whatever their number: legs of up to 300 m, some behind
+ * a ridge. The first beacon (close to the start) is kept. Seeded: the same course every time.
+ * @param beacons (x, y) pairs, m, as the scene laid them; rewritten from the second pair on.
+ * @param seabed the scene's seabed.
+ * @param seed any finite number (the course's seed).
+ * @throws RangeError when `seed` is not finite.
+ */
+export function layCourse(beacons: Float64Array, seabed: SubmarineHandles['seabed'], seed: number): void {
+  if (!Number.isFinite(seed)) throw new RangeError(`layCourse: seed must be finite, got ${seed}`);
+  const n = beacons.length / 2;
+  if (n < 2) return;
+  const rng = new Rng(seed * 104_729 + 31);
+  const bedAt = (x: number) => seabedHeight(seabed, x);
+  const longest = Math.min(LEG_MAX, (1000 - beacons[0]!) / (n - 1));
+  for (let i = 1; i < n; i++) {
+    const px = beacons[2 * i - 2]!,
+      py = beacons[2 * i - 1]!;
+    const x = px + longest * (LEG_MIN_SHARE + (1 - LEG_MIN_SHARE) * rng.next());
+    const floor = bedAt(x) + 8;
+    let best = -10,
+      bestClear = Number.NEGATIVE_INFINITY;
+    for (let k = 0; k < 16; k++) {
+      const y = floor + (-10 - floor) * rng.next();
+      const clear = clearance(px, py, x, y, bedAt);
+      if (clear > bestClear) {
+        best = y;
+        bestClear = clear;
+      }
+      if (clear >= LEG_CLEARANCE) break;
+    }
+    beacons[2 * i] = x;
+    beacons[2 * i + 1] = best;
+  }
+}
+
+/** The least height of the straight line from (x0, y0) to (x1, y1), m, over the seabed `bedAt`, sampled every metre or less. */
+function clearance(x0: number, y0: number, x1: number, y1: number, bedAt: (x: number) => number): number {
+  const n = Math.max(1, Math.ceil(Math.abs(x1 - x0)));
+  let least = Number.POSITIVE_INFINITY;
+  for (let i = 0; i <= n; i++) {
+    const u = i / n;
+    least = Math.min(least, y0 + u * (y1 - y0) - bedAt(x0 + u * (x1 - x0)));
+  }
+  return least;
+}
 
 /**
  * The beacon the pointer leads to from the hull at (x, y), m: `current` while it is uncollected (it
@@ -38,7 +112,7 @@ export function chooseBeacon(beacons: ArrayLike<number>, taken: readonly boolean
 }
 
 /** What the pointer's label adds when the seabed rises between the hull and its beacon. */
-export const RIDGE_WARNING = 'ridge ahead: climb';
+export const RIDGE_WARNING = '⚠ ridge in the way: climb over it';
 
 /**
  * What the pointer's label adds when a live mine lies on the straight way to its beacon

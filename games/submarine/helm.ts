@@ -23,10 +23,10 @@
  *   screw ahead the boat follows its nose. Released, the hull levels out and the depth is held.
  * - The on-screen stick asks for part of the dive or climb speed and of the throttle, as far as it
  *   is pushed (`HelmInput.heave`, `HelmInput.drive`), so a small push makes a small correction.
- * - Ahead / astern (held): the throttle moves at `HELM.throttleRate`. Released, the screw backs
- *   against the boat's speed (`HELM.stopGain`) until it is at rest, so the screw turns while the
- *   player holds the key and the boat stops when let go, as a player expects (a telegraph that
- *   stayed at full ahead read as a stuck key; a boat that glided on at 13 m/s overshot every beacon).
+ * - Ahead / astern (held): the throttle moves at `HELM.throttleRate`. Released, the screw winds
+ *   down to stop at `HELM.throttleRelease` and the boat coasts, the water's drag slowing it
+ *   gradually (a telegraph that stayed at full ahead read as a stuck key; a screw that backed on
+ *   its own braked the boat as if it had hit something). Astern held is the brake.
  */
 
 import type { PhysicsWorld } from '@bitphysics/physics';
@@ -158,36 +158,34 @@ export const HELM = Object.freeze({
   surfaceBand: 1.5,
   /** Throttle change per second while Ahead or Astern is held. */
   throttleRate: 2.5,
-  /** Throttle change per second towards stop while neither is held. */
-  throttleRelease: 1,
   /**
-   * Throttle asked per m/s of speed along the hull while neither Ahead nor Astern is held, s/m
-   * (up to half astern): the screw brakes the boat to rest, as the depth order stops it on a line.
+   * Throttle change per second towards stop while neither is held: the screw winds down over about
+   * a second and the boat coasts on, slowed by the drag k v^2 only (from 12.9 m/s to about 5 m/s
+   * in 5 s).
    */
-  stopGain: 0.2,
+  throttleRelease: 1,
 });
 
 /**
- * Dive / Rise from a key ramps up (`keyHeaveShare`): it asks for this share of the helm's dive
- * (climb) speed at first, all of it after `KEY_HEAVE_RAMP` s held, so a tap moves the depth order by
- * a metre or less and a long hold still dives fast (at full speed at once, 1.5 s of a key took the
- * boat 11 m or more down and a stranger could not set a depth). The on-screen stick is proportional already.
+ * The share of full Dive / Rise (`HelmInput.heave`) a Dive or Rise key asks for: a steady 0.6
+ * (6 m/s down, 4.8 m/s up), from the first moment it is held, so the depth gone grows in step with
+ * the time held (from a hover about 5 m for 1 s, 12 m for 2 s, 24 m for 4 s) and a short tap still
+ * moves the depth order by most of a metre. (A key that asked for the full 10 m/s at once took the boat
+ * 11 m in 1.5 s; one that ramped up from a tenth made the depth grow with the square of the time.)
+ * The on-screen stick asks for as much as it is pushed, up to all of it.
  */
-export const KEY_HEAVE_START = 0.1;
-/** How long a Dive or Rise key takes to ask for all of the dive (climb) speed, s. */
-export const KEY_HEAVE_RAMP = 3;
+export const KEY_HEAVE_SHARE = 0.6;
 
 /**
  * The share of full Dive / Rise (`HelmInput.heave`) a key held since game time `since` asks for at
- * game time `now` (s): `KEY_HEAVE_START` at first, rising linearly to 1 over `KEY_HEAVE_RAMP` s.
- * From a hover, 1.5 s held takes the boat about 6 m down (11 m unramped), a 0.25 s tap about 0.3 m.
+ * game time `now` (s): `KEY_HEAVE_SHARE`, whatever the time held (kept as a function of the hold so
+ * that the page and the pilot script ask the helm the same way).
  * @throws RangeError when `since` or `now` is not finite.
  */
 export function keyHeaveShare(since: number, now: number): number {
   if (!Number.isFinite(since)) throw new RangeError(`keyHeaveShare: since must be finite, got ${since}`);
   if (!Number.isFinite(now)) throw new RangeError(`keyHeaveShare: now must be finite, got ${now}`);
-  const held = Math.max(0, now - since);
-  return Math.min(1, KEY_HEAVE_START + ((1 - KEY_HEAVE_START) * held) / KEY_HEAVE_RAMP);
+  return KEY_HEAVE_SHARE;
 }
 
 const clamp = (v: number, lo: number, hi: number): number => (v < lo ? lo : v > hi ? hi : v);
@@ -231,10 +229,8 @@ export function steer(world: PhysicsWorld, handles: SubmarineHandles, input: Hel
     driveAsked = clamp(input.drive ?? 1, 0, 1);
   // The throttle runs at throttleRate toward the one asked for (drive ahead, -drive / 2 astern) and
   // winds back at throttleRelease toward it when it is past it (a stick eased back) or to stop.
-  // Neither held: the screw backs (or drives) against the speed along the hull, HELM.stopGain per
-  // m/s up to half astern, so the boat let go comes to rest instead of gliding on.
-  const along = c.Velocity.x[e]! * Math.cos(c.Angle.value[e]!) + c.Velocity.y[e]! * Math.sin(c.Angle.value[e]!);
-  const asked = input.ahead === input.astern ? clamp(-HELM.stopGain * along, -0.5, 0.5) : input.ahead ? driveAsked : -0.5 * driveAsked;
+  // Neither held: the screw winds down to stop and the boat coasts, slowed by the water's drag.
+  const asked = input.ahead === input.astern ? 0 : input.ahead ? driveAsked : -0.5 * driveAsked;
   const pushing = (asked > 0 && state.throttle < asked) || (asked < 0 && state.throttle > asked);
   const rate = (pushing ? HELM.throttleRate : HELM.throttleRelease) * dt;
   state.throttle = state.throttle < asked ? Math.min(asked, state.throttle + rate) : Math.max(asked, state.throttle - rate);

@@ -35,7 +35,7 @@ import { createPauseOverlay, startPixiGame } from '@bitphysics/game-kit/pixi';
 import { applyImpulse, createPhysicsWorld, type PhysicsWorld, step } from '@bitphysics/physics';
 import { SUBMARINE, SUBMARINE_NEUTRAL_FILL, type SubmarineHandles, seabedHeight, submarine } from '@bitphysics/projects';
 import { Graphics, Text } from 'pixi.js';
-import { BEACON_CATCH, beaconLabel, beaconName, chooseBeacon, seabedBetween } from './beacons';
+import { BEACON_CATCH, beaconLabel, beaconName, catchesBeacon, chooseBeacon, layCourse, seabedBetween } from './beacons';
 import { drawBoat } from './boat-drawing';
 import { createHelmState, type HelmInput, keyHeaveShare, steer } from './helm';
 import {
@@ -141,6 +141,12 @@ const aim = {
   /** The arrow's badge while drawn: its box (x, y, width, height, px; zeros while none) and the depth gauge's left edge (px). */
   badge: [0, 0, 0, 0],
   gaugeLeft: 0,
+  /** The target's frame (its corner brackets, drawn while it is on screen) as last drawn: x, y, width, height, px (zeros while none). */
+  frame: [0, 0, 0, 0],
+  /** Whether the seabed rises across the straight way to the target (the label's ridge warning and the crest mark show). */
+  ridge: false,
+  /** The ridge's crest as last marked: its place (x, y, m), NaN while none is marked. */
+  crest: [Number.NaN, Number.NaN],
 };
 
 /**
@@ -207,6 +213,8 @@ const SHAKE_PX = 9;
 function createWorld(): PhysicsWorld {
   const world = createPhysicsWorld(submarine.worldOptions());
   handles = submarine.build(world, { seed: params.seed, count: params.beacons });
+  // The game's course: short legs, each open from the beacon before (./beacons.ts layCourse).
+  layCourse(handles.beacons, handles.seabed, params.seed);
   Object.assign(state, createHelmState(), {
     collected: 0,
     hits: 0,
@@ -375,9 +383,8 @@ function stepWorld(world: PhysicsWorld): void {
   catchGlows(world);
   for (let i = 0; i < taken.length; i++) {
     if (taken[i]) continue;
-    const dx = handles.beacons[2 * i]! - c.Position.x[e]!,
-      dy = handles.beacons[2 * i + 1]! - c.Position.y[e]!;
-    if (dx * dx + dy * dy < BEACON_CATCH * BEACON_CATCH) {
+    // Any part of the hull inside the beacon's ring (./beacons.ts catchesBeacon) collects it.
+    if (catchesBeacon(c.Position.x[e]!, c.Position.y[e]!, angle, handles.beacons[2 * i]!, handles.beacons[2 * i + 1]!)) {
       taken[i] = true;
       state.collected++;
       state.score += BEACON_POINTS;
@@ -456,6 +463,7 @@ const game = await startPixiGame({
     { keys: '↓ ↑ / S W', action: 'dive / rise (let go: stop at the line)', touch: 'stick ↓ ↑' },
     { keys: '← → / A D', action: 'screw astern / ahead', touch: 'stick ← →' },
     { keys: 'Q / E', action: 'nose down / up', touch: 'Nose ↘ / ↗' },
+    { keys: '◯', action: 'beacon: touch its ring with the boat to collect it', touch: '◯' },
   ],
   app: { background: 0x0b2340, antialias: true },
   renderer: { pixelsPerMeter: params.pixelsPerMeter },
@@ -812,6 +820,39 @@ function drawHits(t: number, k: number, sx: (x: number) => number, sy: (y: numbe
   if (overPointer || ly < lh / 2 + 8) ly = Math.max(y, hullTop + (SUBMARINE.height + 5) * k) + lh / 2 + 6 + 24 * u;
   hitLabel.position.set(lx, Math.max(lh / 2 + 8, Math.min(H - lh / 2 - 8, ly)));
 }
+/**
+ * Marks the crest of the seabed between the hull at x = `hx` and the target at x = `bx` (m): an
+ * orange dashed line 5 m over its highest point, 30 m long, and an orange warning triangle on the
+ * crest, pulsing, at game time `t` (s), through `sx`, `sy`. Sets `aim.crest`.
+ */
+function drawRidgeCrest(hx: number, bx: number, sx: (x: number) => number, sy: (y: number) => number, t: number): void {
+  let cx = hx,
+    cy = Number.NEGATIVE_INFINITY;
+  const n = Math.max(1, Math.ceil(Math.abs(bx - hx)));
+  for (let i = 0; i <= n; i++) {
+    const x = hx + ((bx - hx) * i) / n,
+      y = seabedHeight(handles.seabed, x);
+    if (y > cy) {
+      cx = x;
+      cy = y;
+    }
+  }
+  aim.crest = [cx, cy];
+  const pulse = 0.6 + 0.4 * Math.sin(4 * t);
+  const lineY = sy(cy + 5);
+  for (let u = -15; u < 15; u += 3)
+    g.moveTo(sx(cx + u), lineY)
+      .lineTo(sx(cx + u + 1.8), lineY)
+      .stroke({ color: 0xff8a3d, width: 2.5, alpha: 0.9 });
+  const px = sx(cx),
+    py = sy(cy) - 4,
+    size = 14;
+  g.poly([px, py - size, px - size * 0.6, py, px + size * 0.6, py])
+    .fill({ color: 0xff8a3d, alpha: pulse })
+    .stroke({ color: 0x1a0a02, width: 2 });
+  g.rect(px - 1.2, py - size * 0.72, 2.4, size * 0.4).fill(0x1a0a02);
+  g.circle(px, py - size * 0.18, 1.4).fill(0x1a0a02);
+}
 /** The "beacon" tags under beacons in view other than the pointer's (a pool, hidden when unused). */
 const tags: Text[] = [];
 /** How many tags are shown this frame. */
@@ -1097,6 +1138,47 @@ function drawDepthGauge(W: number, H: number, depth: number, order: number, bed:
   }
   gaugeDepth.text = `${Math.max(0, depth).toFixed(0)} m`;
   gaugeDepth.position.set(x0 - 13, Math.max(top + 6, Math.min(bottom - 6, yb)));
+  // Off the target's frame (its brackets reach the gauge when the beacon is near the right edge,
+  // and on a phone the tags were drawn over them): each tag moves just above or below the frame,
+  // whichever is nearer and inside the gauge; a figure of the scale there is hidden.
+  const frame = aim.frame as [number, number, number, number];
+  if (frame[2] > 0) {
+    for (const tag of [gaugeDepth, gaugeTarget]) if (tag.visible) offFrame(tag, frame, top, bottom);
+    for (const mark of gaugeMarks) if (mark.visible && overlaps(textBox(mark), frame, 2)) mark.visible = false;
+    // Moved, the target's tag may now cross the boat's: the boat's depth is kept.
+    if (gaugeTarget.visible && overlaps(textBox(gaugeTarget), textBox(gaugeDepth), 2)) gaugeTarget.visible = false;
+  }
+  gauge_.depth = gaugeDepth.visible ? textBox(gaugeDepth) : [0, 0, 0, 0];
+  gauge_.target = gaugeTarget.visible ? textBox(gaugeTarget) : [0, 0, 0, 0];
+}
+
+/** The depth gauge's tags as last drawn (tests): the boat's depth and the target's, each x, y, width, height, px (zeros while hidden). */
+const gauge_ = { depth: [0, 0, 0, 0], target: [0, 0, 0, 0] };
+
+/** The box of a gauge figure or tag (anchored at its right middle): x, y, width, height, px. */
+function textBox(text: Text): [number, number, number, number] {
+  return [text.x - text.width, text.y - text.height / 2, text.width, text.height];
+}
+
+/** Whether boxes `a` and `b` (x, y, width, height, px) overlap, or come within `pad` px of each other. */
+function overlaps(a: readonly number[], b: readonly number[], pad: number): boolean {
+  return a[0]! < b[0]! + b[2]! + pad && b[0]! < a[0]! + a[2]! + pad && a[1]! < b[1]! + b[3]! + pad && b[1]! < a[1]! + a[3]! + pad;
+}
+
+/**
+ * Moves the gauge tag `tag` (anchored at its right middle) off the box `frame` (x, y, width, height,
+ * px): just above or below it, 4 px clear, whichever is nearer its place and between `top` and
+ * `bottom` (px); hidden if neither fits.
+ */
+function offFrame(tag: Text, frame: readonly number[], top: number, bottom: number): void {
+  if (!overlaps(textBox(tag), frame, 3)) return;
+  const h = tag.height,
+    above = frame[1]! - h / 2 - 4,
+    below = frame[1]! + frame[3]! + h / 2 + 4;
+  const fitsAbove = above >= top + h / 2,
+    fitsBelow = below <= bottom - h / 2;
+  if (!fitsAbove && !fitsBelow) tag.visible = false;
+  else tag.y = fitsAbove && (!fitsBelow || tag.y - above < below - tag.y) ? above : below;
 }
 
 /** A well-mixed 32-bit hash of a cell (i, j) of the marine snow: its speck's offset, size and brightness. */
@@ -1349,10 +1431,12 @@ function draw(): void {
   drawGlows(t, k, sx, sy, left, right);
   drawMines(t, k, sx, sy, left, right, hxw, hyw, c.Angle.value[e]!);
   // Beacons: a lamp (at least 5 px, however far the camera zooms out) in a pulsing ring, inside a
-  // faint disc of the catch radius (BEACON_CATCH: the hull's centre within it collects); each one
+  // ring of the catch radius (BEACON_CATCH: any part of the hull inside it collects), drawn as a
+  // bright dashed ring round a faint disc, brighter as the hull nears it; each one
   // on screen but the pointer's is tagged "beacon" under it, so a yellow light elsewhere in the view
   // reads as another beacon to collect, not as something unexplained.
   let tagged = 0;
+  aim.frame = [0, 0, 0, 0];
   for (let i = 0; i < taken.length; i++) {
     if (taken[i]) continue;
     const bx = sx(handles.beacons[2 * i]!),
@@ -1360,14 +1444,25 @@ function draw(): void {
     // The target (the pointer's beacon) bright, in four corner brackets round its catch disc that
     // close in and open out; the others dimmer, so the one to steer for stands out.
     const dim = i === aim.index ? 1 : 0.55;
-    g.circle(bx, by, BEACON_CATCH * k)
-      .fill({ color: 0xffe066, alpha: 0.08 * dim })
-      .stroke({ color: 0xffe066, alpha: 0.3 * dim, width: 1.5 });
+    const rk = BEACON_CATCH * k,
+      near = Math.max(0, 1 - Math.hypot(handles.beacons[2 * i]! - hxw, handles.beacons[2 * i + 1]! - hyw) / (4 * BEACON_CATCH));
+    g.circle(bx, by, rk).fill({ color: 0xffe066, alpha: (0.08 + 0.08 * near) * dim });
+    // 24 dashes turning slowly, so the ring reads as a zone's edge, not a lamp's halo.
+    for (let j = 0; j < 24; j++) {
+      const a0 = (j / 24) * 2 * Math.PI + 0.25 * t,
+        a1 = a0 + (0.6 * 2 * Math.PI) / 24;
+      g.moveTo(bx + rk * Math.cos(a0), by + rk * Math.sin(a0))
+        .arc(bx, by, rk, a0, a1)
+        .stroke({ color: 0xffe066, alpha: (0.55 + 0.45 * near) * dim, width: 2 + near });
+    }
     g.circle(bx, by, Math.max(5, 1.2 * k)).fill({ color: 0xffe066, alpha: dim * (0.9 + 0.1 * Math.sin(4 * t)) });
     g.circle(bx, by, Math.max(9, (2 + Math.sin(3 * t)) * k)).stroke({ color: 0xffe066, alpha: 0.4 * dim, width: 2 });
     if (i === aim.index && aim.onScreen) {
       const r = Math.max(14, BEACON_CATCH * k) + 6 + 3 * Math.sin(3 * t),
         arm = Math.max(6, 0.35 * r);
+      // The frame's box at its widest (the brackets open out to 9 px past the ring, 2.5 px of stroke).
+      const out = Math.max(14, BEACON_CATCH * k) + 9 + 2.5;
+      aim.frame = [bx - out, by - out, 2 * out, 2 * out];
       for (const [ux, uy] of [
         [-1, -1],
         [1, -1],
@@ -1445,6 +1540,7 @@ function draw(): void {
     const m = 40;
     aim.distance = best;
     const ridge = seabedBetween(hxw, hyw, wx, wy, (x) => seabedHeight(handles.seabed, x));
+    aim.crest = [Number.NaN, Number.NaN];
     const onWay = mineOnWay(hxw, hyw, wx, wy, mines, mineLive);
     wayMine = onWay ? onWay.index : -1;
     // A mine on the way is ringed where it is, and a mine on the boat's course is told by the hull
@@ -1550,7 +1646,15 @@ function draw(): void {
     // The label on a dark pill, readable over the bright surface water and the sky.
     const pw = pointer.width + 14,
       ph = pointer.height + 4;
-    g.roundRect(pointer.x - pw / 2, pointer.y - ph / 2, pw, ph, ph / 2).fill({ color: 0x06213a, alpha: 0.85 });
+    const radius = Math.min(ph / 2, 12);
+    g.roundRect(pointer.x - pw / 2, pointer.y - ph / 2, pw, ph, radius).fill({ color: 0x06213a, alpha: 0.85 });
+    // A ridge in the way: the warning's line (the label's second) on an orange band, and the crest
+    // marked on the seabed (drawRidgeCrest), so the warning is seen, not only read.
+    if (ridge) {
+      g.roundRect(pointer.x - pw / 2, pointer.y, pw, ph / 2, radius).fill({ color: 0xb8430f, alpha: 0.95 });
+      drawRidgeCrest(hxw, wx, sx, sy, t);
+    }
+    aim.ridge = ridge;
     // Just switched to another beacon: the pill blinks a yellow ring for AIM_PULSE s, so the new
     // name and distance are noticed (a stranger saw "52 m ahead" become "157 m ahead" unexplained).
     const since = t - aimSwitchedAt;
@@ -1703,6 +1807,8 @@ const panel = createPanel(
 shell.expose({
   /** The beacon pointer: the beacon it leads to (-1: none), distance (m), offset (m), arrow angle and whether it is on screen. */
   beaconPointer: () => ({ ...aim, visible: pointer.visible, text: pointer.text, zoom, otherTags }),
+  /** The depth gauge's tags as last drawn: the boat's depth and the target's, each x, y, width, height, px (zeros while hidden). */
+  gaugeTags: () => ({ depth: [...gauge_.depth], target: [...gauge_.target] }),
   /** The camera as last drawn: centre (x, y, m), zoom (px/m), look-ahead (m, before its limit) and shake (px). */
   camera: () => ({ ...camera }),
   /**

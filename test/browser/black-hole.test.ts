@@ -172,7 +172,7 @@ describe.each([
         if (!card) {
           card = document.createElement('div');
           card.className = 'bp-touch-hint';
-          card.innerHTML = '<div><b>hold, slide ← ↑ → ↓</b><span>thrust (two at once: diagonal)</span></div>';
+          card.innerHTML = '<div><b>hold ← ↑ → ↓</b><span>thrust; seam of two: diagonal</span></div>';
           document.querySelector('.bp-stage')!.append(card);
         }
         const hint = card.getBoundingClientRect();
@@ -347,6 +347,72 @@ describe.each([
       const bg = await p.page.evaluate(() => getComputedStyle(document.querySelector('.bp-info')!).backgroundColor);
       expect(bg).toBe('rgb(16, 20, 28)');
     }
+    expect(p.errors).toEqual([]);
+    await p.close();
+  });
+});
+
+describe.each([
+  { device: 'desktop', viewport: { width: 1280, height: 800 }, touch: false },
+  { device: 'phone', viewport: { width: 390, height: 844 }, touch: true },
+] as const)('black hole pause and touch card ($device)', ({ device, viewport, touch }) => {
+  it('pausing dims the field and says how to resume; on a phone the touch card names the seam and never covers the finish line', async () => {
+    const p = await h.openGame('black-hole', { viewport, touch, query: { level: 1 } });
+    type Pause = { pauseOverlay(): { visible: boolean; text: string }; paused: boolean };
+    if (touch) {
+      // The card of gestures (and the legend in the drawer) says a finger on the seam of two arrows
+      // thrusts diagonally.
+      expect(await p.page.locator('.bp-legend').textContent()).toContain('seam of two: diagonal');
+      // The finish line's screen rect (the dashed line across the field, 2 px either side of it) and
+      // the card's box: apart. The kit's card goes after 9 s or at a touch; a stand-in of its class
+      // with a longer text (two lines at this width, which do not fit above the line) is checked too.
+      const overlap = () =>
+        p.page.evaluate(() => {
+          type Cam = { toScreenX(x: number): number; toScreenY(y: number): number };
+          const w = window.game as unknown as { renderer: { camera: Cam }; bh: { lineY: number; field: { width: number } } };
+          const cam = w.renderer.camera;
+          const c = document.querySelector('canvas')!.getBoundingClientRect();
+          const line = {
+            left: c.left + cam.toScreenX(0),
+            right: c.left + cam.toScreenX(w.bh.field.width),
+            top: c.top + cam.toScreenY(w.bh.lineY) - 2,
+            bottom: c.top + cam.toScreenY(w.bh.lineY) + 2,
+          };
+          const card = document.querySelector('[data-hud="touch-hint"]');
+          if (!card) return null;
+          const r = card.getBoundingClientRect();
+          return r.left < line.right && line.left < r.right && r.top < line.bottom && line.top < r.bottom;
+        });
+      const real = await overlap();
+      if (real !== null) expect(real, 'the touch card over the finish line').toBe(false);
+      await p.page.evaluate(() => {
+        document.querySelector('[data-hud="touch-hint"]')?.remove();
+        const card = document.createElement('div');
+        card.className = 'bp-touch-hint';
+        card.dataset.hud = 'touch-hint';
+        card.innerHTML = '<div><b>hold, slide ← ↑ → ↓</b><span>thrust (two at once, or a finger on the seam of two: diagonal)</span></div>';
+        document.querySelector('.bp-stage')!.append(card);
+      });
+      expect(await p.page.locator('[data-hud="touch-hint"]').evaluate((e) => e.getBoundingClientRect().height)).toBeGreaterThan(40);
+      await p.waitFor(() => {
+        const card = document.querySelector<HTMLElement>('[data-hud="touch-hint"]');
+        return card !== null && card.style.top !== '' && card.style.top !== '6px';
+      }, null);
+      expect(await overlap(), 'a two-line card over the finish line').toBe(false);
+    }
+    // Paused from the toolbar (a tap on the phone, P on the desktop): the overlay shows and says how
+    // to resume; resumed, it goes.
+    if (touch) await p.page.getByRole('button', { name: 'pause / resume (P)', exact: true }).tap();
+    else await p.page.keyboard.press('p');
+    const shown = await p.waitFor(() => {
+      const o = (window.game as unknown as Pause).pauseOverlay();
+      return o.visible ? o.text : null;
+    }, null);
+    expect(shown, device).toBe(touch ? 'Paused\n▶ to resume' : 'Paused\nP to resume');
+    await p.page.evaluate(() => {
+      (window.game as unknown as Pause).paused = false;
+    });
+    await p.waitFor(() => !(window.game as unknown as Pause).pauseOverlay().visible, null);
     expect(p.errors).toEqual([]);
     await p.close();
   });

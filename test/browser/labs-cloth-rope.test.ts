@@ -3,7 +3,7 @@
  * (390 x 844, touch: CDP touch events, so pointer capture and `pointer: coarse` behave as on a phone):
  * each loads without errors, and its input changes it as read through window.game. Cloth: a scissors
  * stroke cuts the sheet and the piece below it comes away, the hand takes hold and stretches it, Gust
- * blows; on the peg bag's sheet a swipe across the ribbon drops the bag, and on the next (no
+ * blows (and the sheet stays on the screen); on the peg bag's sheet a swipe across the ribbon drops the bag, and on the next (no
  * scissors) the hand tears the strip off along the dots; the tools stay on one row. Rope: a swipe cuts the rope into two drawn ropes, a tap cuts the nearest one, and a level won
  * offers the next. Every wait is on the page's state, not the clock.
  */
@@ -231,6 +231,43 @@ for (const [device, options] of [
       await drag(g.page, [{ x: box.x + box.width / 2, y: box.y + box.height / 2 }], 1, async () => {
         await g.waitFor(() => (window.game as unknown as ClothLab).gust() > 0.5, null);
       });
+      expect(g.errors).toEqual([]);
+    });
+
+    it('a gust held 2.5 s blows the sheet out but keeps it on the screen', async () => {
+      await g.page.evaluate(() => (window.game as unknown as { reset(): void }).reset());
+      // Every frame, how far the cloth's outermost points are past the canvas's sides (CSS px, > 0: off it).
+      await g.page.evaluate(() => {
+        const w = window.game as unknown as ClothLab & { renderer: { camera: Cam & { width: number } } };
+        const out = { right: -1e9, left: -1e9, reach: -1e9 };
+        (window as unknown as { gustOut: typeof out }).gustOut = out;
+        const x0 = w.world.components.Position.x[w.cloth().points[0]! % 2 ** 25]!;
+        const frame = (): void => {
+          const P = w.world.components.Position,
+            cam = w.renderer.camera;
+          for (const h of Array.from(w.cloth().points)) {
+            const x = P.x[h % 2 ** 25]!;
+            out.right = Math.max(out.right, cam.toScreenX(x) - cam.width);
+            out.left = Math.max(out.left, -cam.toScreenX(x));
+            out.reach = Math.max(out.reach, x - x0);
+          }
+          requestAnimationFrame(frame);
+        };
+        requestAnimationFrame(frame);
+      });
+      const t0 = await g.page.evaluate(() => (window.game as unknown as Lab).world.time);
+      const gust = g.page.getByRole('button', { name: 'gust of wind (hold G)', exact: true });
+      const box = (await gust.boundingBox())!;
+      await drag(g.page, [{ x: box.x + box.width / 2, y: box.y + box.height / 2 }], 1, async () => {
+        await g.waitFor((t) => (window.game as unknown as Lab).world.time > t + 2.5, t0, 30_000);
+      });
+      const out = await g.page.evaluate(() => (window as unknown as { gustOut: { right: number; left: number; reach: number } }).gustOut);
+      // The gust blew the sheet out, more than 4.5 m right of its left peg (on a phone, before the
+      // upright view followed it, 46 px of it went off the screen's right edge) ...
+      expect(out.reach).toBeGreaterThan(4.5);
+      // ... and the view kept all of it on the screen.
+      expect(out.right).toBeLessThanOrEqual(0);
+      expect(out.left).toBeLessThanOrEqual(0);
       expect(g.errors).toEqual([]);
     });
 

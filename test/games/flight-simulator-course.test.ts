@@ -3,7 +3,8 @@
  * where the layout rule says (an easy first ring, spacing, heights clear of the hills), the aircraft
  * flown as the game starts it with no input passes ring 1 within 5 s, a scripted pilot passes every
  * ring of the default course, a move through a ring's plane passes it inside the radius, misses it
- * outside, and counts nothing the wrong way or far off, and each missed ring costs 10 s of course time.
+ * outside, and counts nothing the wrong way or far off, each missed ring costs 20 s of course time and a
+ * star, and the lesson tips' ways (left / right, higher / lower) are where the ring lies from the aircraft.
  */
 
 import { createPhysicsWorld, setBodyThrust, setControlDeflection, step } from '@bitphysics/physics';
@@ -30,7 +31,10 @@ import {
   RING_STEP,
   type Ring,
   reachable,
+  ringBearing,
   ringDifficulty,
+  ringWay,
+  TIP_OFFSET,
 } from '../../games/flight-simulator/course';
 
 const terrain = aircraft.build(createPhysicsWorld(aircraft.worldOptions()), { seed: 3 }).terrain;
@@ -256,10 +260,11 @@ describe('flight simulator course', () => {
       { ring: 1, result: 'passed' },
     ]);
     expect(skip.map((r) => r.status)).toEqual(['missed', 'passed', 'ahead']);
-    // The clock: 95 s flown with one ring missed is a 105 s course; none missed, the time flown.
+    // The clock: 95 s flown with one ring missed is a 115 s course; none missed, the time flown.
     const missed = rings.filter((r) => r.status === 'missed').length;
-    expect(MISS_PENALTY).toBe(10);
-    expect(courseTime(95, missed)).toBe(105);
+    // (10 s before: a stranger found a miss cost nothing that mattered.)
+    expect(MISS_PENALTY).toBe(20);
+    expect(courseTime(95, missed)).toBe(115);
     expect(courseTime(95, 0)).toBe(95);
     expect(() => courseTime(-1, 0)).toThrow(/courseTime: flown must be finite and >= 0 s, got -1/);
     expect(() => courseTime(1, 0.5)).toThrow(/courseTime: missed must be an integer >= 0, got 0.5/);
@@ -286,7 +291,43 @@ describe('flight simulator course', () => {
     expect(() => pathThroughRing(ring, [0, 0, 0], [1, 0])).toThrow(/pathThroughRing: velocity must be 3 finite numbers/);
   });
 
-  it('gives stars for the share of rings passed', () => {
-    expect([courseStars(10, 10), courseStars(7, 10), courseStars(6, 10), courseStars(4, 10), courseStars(3, 10)]).toEqual([3, 2, 1, 1, 0]);
+  it('each miss costs a star: 3 with none missed, 2, 1, then 0', () => {
+    // (Stars were for the share passed, 2 for 70 %: three misses of ten cost one star.)
+    expect([0, 1, 2, 3, 7].map((m) => courseStars(m))).toEqual([3, 2, 1, 0, 0]);
+    expect(() => courseStars(-1)).toThrow(/courseStars: missed must be an integer >= 0, got -1/);
+    expect(() => courseStars(1.5)).toThrow(/courseStars: missed must be an integer >= 0, got 1.5/);
+  });
+
+  it("where a ring lies from the aircraft: its bearing right of the heading and its elevation above the path, and the tip's ways", () => {
+    const ring: Ring = { x: 1000, y: 500, z: 0, nx: 1, ny: 0, nz: 0, status: 'ahead' };
+    // Flying along +x level, the ring 1 km ahead: straight ahead.
+    const ahead = ringBearing(ring, [0, 500, 0], [130, 0, 0]);
+    expect(ahead.bearing).toBeCloseTo(0, 12);
+    expect(ahead.elevation).toBeCloseTo(0, 12);
+    expect(ahead.distance).toBeCloseTo(1000, 9);
+    expect(ringWay(ahead)).toEqual({ side: 0, up: 0, sideAmount: 'a little ', upAmount: 'a little ' });
+    // Heading 10 degrees to the right of the ring (+z is right of +x): the ring is to the left,
+    // 1000 sin 10 = 174 m off the line, neither "a little" (< 65 m) nor "far" (> 260 m).
+    const a = (10 * Math.PI) / 180;
+    const left = ringBearing(ring, [0, 500, 0], [130 * Math.cos(a), 0, 130 * Math.sin(a)]);
+    expect(left.bearing).toBeCloseTo(-a, 12);
+    expect(left.side).toBeCloseTo(-1000 * Math.sin(a), 9);
+    expect(ringWay(left)).toMatchObject({ side: -1, up: 0, sideAmount: '' });
+    // The ring 40 m above the aircraft flying level: higher, a little; climbing at 5 degrees towards
+    // it, it is below the path (lower), 1000 sin(5 - 2.3 degrees) = 47 m.
+    const above = ringBearing(ring, [0, 460, 0], [130, 0, 0]);
+    expect(above.elevation).toBeCloseTo(Math.atan2(40, 1000), 12);
+    expect(ringWay(above)).toEqual({ side: 0, up: 1, sideAmount: 'a little ', upAmount: 'a little ' });
+    const c = (5 * Math.PI) / 180;
+    const climbing = ringBearing(ring, [0, 460, 0], [130 * Math.cos(c), 130 * Math.sin(c), 0]);
+    expect(climbing.elevation).toBeCloseTo(Math.atan2(40, 1000) - c, 12);
+    expect(ringWay(climbing)).toMatchObject({ side: 0, up: -1 });
+    // To the left and higher at once: both ways are named; far to the right (400 m); behind.
+    expect(ringWay(ringBearing(ring, [0, 400, 100], [130, 0, 0]))).toEqual({ side: -1, up: 1, sideAmount: '', upAmount: '' });
+    expect(ringWay(ringBearing(ring, [0, 500, -400], [130, 0, 0]))).toMatchObject({ side: 1, sideAmount: 'far ' });
+    expect(ringWay(ringBearing(ring, [2000, 500, 10], [130, 0, 0]))).toMatchObject({ side: -1, sideAmount: 'far ' });
+    expect(TIP_OFFSET.straight).toBeCloseTo(RING_RADIUS / 3, 12);
+    expect(() => ringBearing(ring, [0, 0, 0], [0, 5, 0])).toThrow(/ringBearing: velocity must have a horizontal part/);
+    expect(() => ringBearing(ring, [0, Number.NaN, 0], [1, 0, 0])).toThrow(/ringBearing: position must be 3 finite numbers/);
   });
 });

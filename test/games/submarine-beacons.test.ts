@@ -5,9 +5,21 @@
  */
 
 import { createPhysicsWorld } from '@bitphysics/physics';
-import { seabedHeight, submarine } from '@bitphysics/projects';
+import { SUBMARINE, seabedHeight, submarine } from '@bitphysics/projects';
 import { describe, expect, it } from 'vitest';
-import { beaconLabel, beaconName, chooseBeacon, MINE_WARNING, RIDGE_WARNING, seabedBetween } from '../../games/submarine/beacons';
+import {
+  BEACON_CATCH,
+  beaconLabel,
+  beaconName,
+  catchesBeacon,
+  chooseBeacon,
+  LEG_MAX,
+  LEG_MIN_SHARE,
+  layCourse,
+  MINE_WARNING,
+  RIDGE_WARNING,
+  seabedBetween,
+} from '../../games/submarine/beacons';
 
 describe('submarine beacon pointer', () => {
   it('holds its target until it is collected, however near another passes, then takes the nearest left', () => {
@@ -112,5 +124,78 @@ describe('submarine beacon pointer', () => {
       if (under) expect(seabedBetween(x0, y0, x1, y1, at)).toBe(true);
     }
     expect(() => seabedBetween(Number.NaN, 0, 1, 0, bed)).toThrow(/seabedBetween: x0/);
+  });
+});
+
+describe('submarine beacon ring', () => {
+  it('any part of the hull inside the drawn ring (BEACON_CATCH round the beacon) collects; just outside does not', () => {
+    const L = SUBMARINE.length / 2,
+      H = SUBMARINE.height / 2,
+      R = BEACON_CATCH;
+    // Level hull at (0, -30): the beacon ahead of the bow, above the deck, and at a corner.
+    expect(catchesBeacon(0, -30, 0, L + R - 0.1, -30)).toBe(true);
+    expect(catchesBeacon(0, -30, 0, L + R + 0.1, -30)).toBe(false);
+    expect(catchesBeacon(0, -30, 0, -(L + R - 0.1), -30)).toBe(true); // behind the stern
+    expect(catchesBeacon(0, -30, 0, 0, -30 + H + R - 0.1)).toBe(true);
+    expect(catchesBeacon(0, -30, 0, 0, -30 + H + R + 0.1)).toBe(false);
+    const d = (R - 0.1) / Math.SQRT2;
+    expect(catchesBeacon(0, -30, 0, L + d, -30 - H - d)).toBe(true);
+    expect(catchesBeacon(0, -30, 0, L + R / Math.SQRT2, -30 - H - R / Math.SQRT2 - 0.2)).toBe(false);
+    // Bow up (90 degrees): the bow is at (0, -30 + L).
+    expect(catchesBeacon(0, -30, Math.PI / 2, 0, -30 + L + R - 0.1)).toBe(true);
+    expect(catchesBeacon(0, -30, Math.PI / 2, H + R + 0.1, -30)).toBe(false);
+    // The hull's centre 13.9 m from the lamp, its bow inside the ring: collected (the old rule, the
+    // centre within 8 m, did not).
+    expect(Math.hypot(L + R - 0.1, 0)).toBeGreaterThan(8);
+    expect(() => catchesBeacon(0, Number.NaN, 0, 1, 1)).toThrow(/catchesBeacon: y0/);
+    expect(() => catchesBeacon(0, 0, Number.POSITIVE_INFINITY, 1, 1)).toThrow(/catchesBeacon: angle/);
+  });
+});
+
+describe('submarine course', () => {
+  it('after each beacon the next target is near (a leg of at most LEG_MAX m along x) and open (no ridge on the straight way)', () => {
+    let legs = 0,
+      ridges = 0,
+      longest = 0;
+    for (let seed = 1; seed <= 20; seed++)
+      for (const count of [2, 6, 10, 20]) {
+        const world = createPhysicsWorld(submarine.worldOptions());
+        const h = submarine.build(world, { seed, count });
+        const first = [h.beacons[0]!, h.beacons[1]!];
+        layCourse(h.beacons, h.seabed, seed);
+        expect([h.beacons[0], h.beacons[1]]).toEqual(first);
+        const bed = (x: number) => seabedHeight(h.seabed, x);
+        const leg = Math.min(LEG_MAX, (1000 - first[0]!) / (count - 1));
+        const taken = new Array<boolean>(count).fill(false);
+        for (let i = 0; i < count; i++) {
+          const x = h.beacons[2 * i]!,
+            y = h.beacons[2 * i + 1]!;
+          // Between 8 m over the seabed and 10 m under the surface, inside the scene's seabed.
+          expect(y).toBeLessThanOrEqual(-10);
+          expect(y).toBeGreaterThanOrEqual(bed(x) + 8 - 1e-9);
+          expect(x).toBeLessThanOrEqual(1000 + 1e-9);
+          if (i === 0) continue;
+          const dx = x - h.beacons[2 * i - 2]!;
+          expect(dx).toBeGreaterThanOrEqual(LEG_MIN_SHARE * leg - 1e-9);
+          expect(dx).toBeLessThanOrEqual(leg + 1e-9);
+        }
+        // Collected in turn, at each beacon the pointer's next target (the nearest left) is near and open.
+        for (let i = 0; i < count - 1; i++) {
+          taken[i] = true;
+          const x = h.beacons[2 * i]!,
+            y = h.beacons[2 * i + 1]!;
+          const next = chooseBeacon(h.beacons, taken, x, y, -1);
+          expect(next).toBeGreaterThan(i);
+          const nx = h.beacons[2 * next]!,
+            ny = h.beacons[2 * next + 1]!;
+          longest = Math.max(longest, Math.hypot(nx - x, ny - y));
+          legs++;
+          if (seabedBetween(x, y, nx, ny, bed)) ridges++;
+        }
+      }
+    // The scene's own layout: legs of up to 308 m, 12 of 420 behind a ridge (seeds 1 to 30, 6 and 10 beacons).
+    expect(longest).toBeLessThan(160);
+    expect(ridges).toBeLessThanOrEqual(Math.floor(0.02 * legs));
+    expect(() => layCourse(new Float64Array(4), { x0: 0, dx: 1, y: new Float64Array(2) }, Number.NaN)).toThrow(/layCourse: seed/);
   });
 });

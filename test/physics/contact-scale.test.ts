@@ -1,5 +1,5 @@
 import type { PhysicsWorld } from '@bitphysics/physics';
-import { addBody, createPhysicsWorld, setBoundary, solverSubstepsFor, step, stepMany } from '@bitphysics/physics';
+import { addBody, contactLength, createPhysicsWorld, setBoundary, solverSubstepsFor, step, stepMany } from '@bitphysics/physics';
 import { describe, expect, test } from 'vitest';
 
 /**
@@ -70,6 +70,21 @@ describe('contact scale', () => {
    * 12 substeps; with the world's 4 (autoSubsteps false, the behaviour before) 16.8 %, which the second
    * half checks (over 10 %) so the test shows what it guards.
    */
+  test("contactLength reads the length the world's last step used for its contacts; a bad world is refused", () => {
+    // Reference: every ball is 2 cm, and the first step with ball contacts takes their smallest radius
+    // at once (no ramp from a previous length), so the step's length is exactly 0.02 m.
+    const world = createPhysicsWorld({ dimensions: 2, capacity: 64 });
+    setBoundary(world, { min: [-0.2, 0], max: [0.2, 1] });
+    expect(contactLength(world, world.collision.cache.rows)).toBe(Infinity); // no step, no rows
+    for (let i = 0; i < 20; i++) addBody(world, { position: [-0.18 + (i % 10) * 0.04, 0.02 + Math.floor(i / 10) * 0.039], radius: 0.02 });
+    stepMany(world, 5);
+    expect(world.collision.cache.rows.count).toBeGreaterThan(0);
+    expect(contactLength(world, world.collision.cache.rows)).toBe(0.02);
+    // The call before the world was passed: contactLength(buf).
+    const old = contactLength as unknown as (buf: unknown) => number;
+    expect(() => old(world.collision.cache.rows)).toThrow(/contactLength: world must be a physics world/);
+  });
+
   test('a Galton bin of 2 cm balls overlaps less than 5 % of a radius at the defaults', () => {
     const auto = galtonBin(120, true);
     stepMany(auto.world, 200);

@@ -7,6 +7,7 @@ import {
   enableThreads,
   type PhysicsWorld,
   restore,
+  setBoundary,
   setGravity,
   snapshot,
   stateHash,
@@ -304,26 +305,47 @@ describe('snapshot captures every piece of state', () => {
     }
   });
 
-  test('a WeakMap keyed by the world holds only scratch (state goes in world.features)', () => {
-    // Scratch: rewritten before it is read in every step, so it carries nothing between steps.
-    // forces/gravity.ts: the attractors packed for the threads, written in full before each parallel run.
-    // world/fused-state.ts: whether the fused pass is on, set by step at each substep's start.
-    // snapshot/ecs-capture.ts: which query lists the last snapshot found equal (a cache checked by versions).
-    // solver/ball-prepare.ts: the threaded row preparation's shared copy of the spawn stamps (copied in full
-    // before each use) and its kernel's argument list.
-    // solver/stages-threads.ts: the threaded solver stages' kernel argument lists, parameters
-    // and one deepest-overlap slot a thread, all written before each parallel run.
-    // collision/contact-events.ts: the lists contactEvents returns, rewritten in full from the collision
-    // state's event lists (which snapshots carry) at every call.
-    const scratch = new Set([
-      'step/step.ts',
-      'forces/gravity.ts',
-      'world/fused-state.ts',
-      'snapshot/ecs-capture.ts',
-      'solver/ball-prepare.ts',
-      'solver/stages-threads.ts',
-      'collision/contact-events.ts',
-    ]);
+  test('per-world scratch lives on the world: no module-level WeakMap is keyed by a world or a part of one', () => {
+    // Buffers and caches kept for one world between calls are fields of world.scratch (world/scratch.ts),
+    // so a world's whole state is reachable from the world. The module-level WeakMaps left are keyed by
+    // objects that are not a world's: a component passed to Not (world/query.ts), a system function
+    // (world/trusted-systems.ts: its finite trust, its idle guard), a snapshot (snapshot/ecs-capture.ts
+    // `matching`). A key type counts as a world's when it is one of the world's types or a name a file
+    // gives one of them or a part of one (`type Stages = PhysicsWorld['stages']`, `Components as C`).
+    const kept = [
+      'snapshot/ecs-capture.ts: matching',
+      'world/query.ts: nots',
+      'world/trusted-systems.ts: idleGuards',
+      'world/trusted-systems.ts: trusted',
+    ];
+    const declared = /^(?:export )?const (\w+)\s*=\s*new WeakMap\b/gm;
+    const WORLD_TYPES = ['PhysicsWorld', 'PhysicsWorldContext', 'CollisionState', 'Components', 'ContactBuffer', 'WorldScratch'];
+    /** The names `src` gives the world's types or their parts: the types themselves, type aliases of them (indexed or not, chained), and imports renamed. */
+    const worldNames = (src: string): string[] => {
+      const names = [...WORLD_TYPES];
+      for (let grew = true; grew; ) {
+        grew = false;
+        const any = names.join('|');
+        const alias = new RegExp(`\\btype\\s+(\\w+)\\s*=\\s*(?:${any})\\s*(?:\\[[^\\]]*\\]\\s*)*;`, 'g');
+        const renamed = new RegExp(`\\b(?:${any})\\s+as\\s+(\\w+)`, 'g');
+        for (const m of [...src.matchAll(alias), ...src.matchAll(renamed)])
+          if (!names.includes(m[1]!)) {
+            names.push(m[1]!);
+            grew = true;
+          }
+      }
+      return names;
+    };
+    const keyedByWorld = (src: string): boolean => new RegExp(`new WeakMap<\\s*(?:${worldNames(src).join('|')})\\b`).test(src);
+    // Self-check on made-up sources: the patterns see what they look for, aliases and parts included,
+    // and a system function (a type that takes a world) is not a world's.
+    expect([...'const sourcesOf = new WeakMap<PhysicsWorld, Float64Array>();'.matchAll(declared)].map((m) => m[1])).toEqual(['sourcesOf']);
+    expect(keyedByWorld('const scratchOf = new WeakMap<CollisionState, ColorScratch>();')).toBe(true);
+    expect(keyedByWorld("type Stages = PhysicsWorld['stages'];\nconst plansOf = new WeakMap<Stages, StagePlans>();")).toBe(true);
+    expect(keyedByWorld("type Components = PhysicsWorld['components'];\nconst t = new WeakMap<Components, object[]>();")).toBe(true);
+    expect(keyedByWorld("type W = PhysicsWorld;\ntype K = W['collision'];\nconst t = new WeakMap<K, object>();")).toBe(true);
+    expect(keyedByWorld("import type { Components as C } from './components.js';\nconst t = new WeakMap<C, object>();")).toBe(true);
+    expect(keyedByWorld('type System = (world: PhysicsWorld) => void;\nconst marks = new WeakMap<System, number>();')).toBe(false);
     const root = join(__dirname, '../../packages/physics/src');
     const files: string[] = [];
     const walk = (dir: string) => {
@@ -334,17 +356,40 @@ describe('snapshot captures every piece of state', () => {
       }
     };
     walk(root);
+    expect(files.length).toBeGreaterThan(100);
     const found: string[] = [];
     for (const f of files) {
       const src = readFileSync(f, 'utf8');
-      if (!/new WeakMap<PhysicsWorld/.test(src)) continue;
       const rel = f.slice(root.length + 1);
-      found.push(rel);
-      expect(
-        scratch.has(rel),
-        `${rel} keeps per-world state in a WeakMap: keep it in world.features and register it with registerExternalWorldState`,
-      ).toBe(true);
+      expect(keyedByWorld(src), `${rel} keys a WeakMap by a world or a part of one: keep it in world.scratch`).toBe(false);
+      for (const m of src.matchAll(declared)) found.push(`${rel}: ${m[1]}`);
     }
-    expect(found.length).toBeGreaterThanOrEqual(3);
+    expect(found.sort()).toEqual(kept);
+  });
+
+  test('world.scratch is not stored by snapshots and restore leaves it as it is', () => {
+    // A 2D world of balls in a box with substeps fills scratch (the step start, the fused pass's terms,
+    // the contact lengths); a snapshot's header has no scratch, and after a restore the world holds the
+    // very same scratch objects and steps on exactly as a world restored fresh does.
+    const world = createPhysicsWorld({ dimensions: 2, capacity: 400, substeps: 2 });
+    setBoundary(world, { min: [-5, 0], max: [5, 20] });
+    for (let i = 0; i < 300; i++) addBody(world, { position: [-4.5 + (i % 20) * 0.45, 0.5 + Math.floor(i / 20) * 0.45], radius: 0.2 });
+    stepMany(world, 20);
+    const scratch = world.scratch;
+    const filled = Object.entries(scratch).filter(([, v]) => v !== undefined && !(v instanceof Map && v.size === 0));
+    expect(filled.map(([k]) => k)).toEqual(expect.arrayContaining(['stepStart', 'fusedTerms', 'contactLengths']));
+    const before = Object.fromEntries(Object.entries(scratch));
+    const saved = snapshot(world);
+    expect(Object.keys((saved.header.state as { v: object }).v)).not.toContain('scratch');
+    stepMany(world, 5);
+    restore(world, saved);
+    expect(world.scratch).toBe(scratch);
+    for (const [k, v] of Object.entries(before)) if (v !== undefined) expect(world.scratch[k as keyof typeof scratch], k).toBe(v);
+    const copy = createPhysicsWorld({ dimensions: 2, capacity: 400, substeps: 2 });
+    restore(copy, saved);
+    expect(copy.scratch).not.toBe(scratch);
+    stepMany(world, 30);
+    stepMany(copy, 30);
+    expect(stateHash(copy)).toBe(stateHash(world));
   });
 });

@@ -49,10 +49,10 @@ test('coloured contact solve: one state on 2 threads run twice, on 3 threads and
   const run = (threads: number, adaptive: boolean): string => {
     const world = pile(count, threads, adaptive);
     stepMany(world, steps);
-    const check = coloringConflicts(world.collision);
+    const check = coloringConflicts(world);
     expect(check.conflicts).toBe(0);
     expect(check.rows).toBeGreaterThan(count);
-    expect(lastColorCount(world.collision)).toBeGreaterThan(1);
+    expect(lastColorCount(world)).toBeGreaterThan(1);
     return stateHash(world);
   };
   const a = run(2, false);

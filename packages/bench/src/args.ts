@@ -44,8 +44,8 @@ export interface BenchArgs {
    */
   readonly sameIsolate: boolean;
   /**
-   * `--warm-up`: call bitphysics' `warmUp` before making its world (a small scene built, stepped and
-   * thrown away first, so its first steps run compiled code; the setup time includes it).
+   * `--warm-up`: call bitphysics' `warmUp` before making its world (a small scene built and stepped
+   * first, so its first steps run compiled code; the setup time includes it).
    */
   readonly warmUp: boolean;
   /** Engines to run: ours first, then the `--vs` peers in the order given (duplicates dropped). */
@@ -108,7 +108,7 @@ export const USAGE = `usage: npm run bench -- [options] [--<param> <value> ...]
                      median step time printed every 10,000 steps (e.g. --scene fireworks --soak)
   --json             one JSON object per line per engine (or per study item) on stdout; notes and progress go to stderr
   --times            with --json: add every timed step's milliseconds as "timesMs" (not for studies)
-  --warm-up          call bitphysics' warmUp before making its world (a small scene stepped and thrown away, so the
+  --warm-up          call bitphysics' warmUp before making its world (a small scene built and stepped first, so the
                      first timed steps run compiled code; counted in setup ms; with its pile of 1,100 balls for
                      balls-in-box and spheres-in-box); use with --warmup 0
   --same-isolate     run the --vs peers on bitphysics' thread (one V8 isolate) instead of each in a worker thread

@@ -8,6 +8,8 @@
 
 export type { GameHandle, GameStats } from './contract.js';
 export { exposeGame, markReady } from './contract.js';
+export type { DomPauseOverlay, DomPauseOverlayOptions } from './dom-pause-overlay.js';
+export { createDomPauseOverlay } from './dom-pause-overlay.js';
 export type { ControlHint, Hud, HudOptions } from './hud.js';
 export { createHud, plural, touchGesture } from './hud.js';
 export type { ImpactListener } from './impacts.js';

@@ -50,6 +50,7 @@ import {
   type StageTimings,
   type System,
 } from './world/options.js';
+import { createWorldScratch } from './world/scratch.js';
 
 // The contact solver runs the 2D joints' stages through this table (solver/rows-joints-2d.ts).
 setJointRows2D({ jointsToSolve, gatherJointBodies, prepareJoints, warmStartJoints, integrateJointRotations, solveJoints, finishJoints });
@@ -220,6 +221,7 @@ function assemble(o: WorldSettings): PhysicsWorld {
       dissipation: undefined,
       'contact-scale': undefined,
     },
+    scratch: createWorldScratch(),
   };
   const world = createWorld(context, entityIndex) as PhysicsWorld;
   installDefaults(world);

@@ -1,7 +1,7 @@
 /**
- * The warm-up, `warmUp(dimensions)`: a small scene of a dimension, built, stepped and thrown away, so
- * that the JavaScript engine has compiled the physics code the scene runs before a program's own scene
- * runs it.
+ * The warm-up, `warmUp(dimensions)`: a small scene of a dimension, built and stepped (and kept, see
+ * `keptWorlds`), so that the JavaScript engine has compiled the physics code the scene runs before a
+ * program's own scene runs it.
  *
  * Why: V8 (Node, Chrome) runs a function in its interpreter until the function has run enough, then
  * compiles it on a background thread and keeps interpreting while it compiles. A scene's first steps
@@ -23,7 +23,16 @@
  * a circle or sphere shape, welds that break under a falling weight, a hinged chain, bodies without
  * shapes joined in a grid with two of them pinned (2D); a plane, capsules on ball joints hanging from
  * a moving kinematic body with a distance joint, linear drag and two integrator substeps (3D). It
- * touches no state outside the world it makes, so a world's trajectory is the same with and without it.
+ * touches no state outside the worlds it makes, so a world's trajectory is the same with and without it.
+ *
+ * The scene's stepped world is kept for the life of the program (`keptWorlds`): V8's compiled code
+ * holds weak references to objects it was compiled against (hidden classes, constants), and some of
+ * those belong only to the scene's world (a program's own world does not keep them alive). With the
+ * scene collected, they died at a later full garbage collection, and every function compiled against
+ * one of them was thrown away (--trace-deopt: "marking dependent code ... reason: weak objects": the
+ * narrowphase's pairs, the bounds, the manifolds' preparation, the integrator, the sleep system,
+ * about 30 functions in 2D), to be interpreted and compiled again in the program's first steps, the
+ * stall the warm-up is there to take away.
  */
 import { addBody, setBoundary } from './bodies/api.js';
 import { addPlane } from './bodies/rigid.js';
@@ -82,6 +91,13 @@ export interface WarmUpOptions {
 const warmed = new Set<number | string>();
 
 /**
+ * The warm-up scene's world of each dimension warmed up, after its WARM_UP_STEPS steps, kept so that
+ * the objects the code compiled during the warm-up refers to, and with them that code, live as long
+ * as the program (see the top of warm-up.ts): about 2 to 2.5 MB a dimension. Never stepped again.
+ */
+const keptWorlds: PhysicsWorld[] = [];
+
+/**
  * Most steps of the resting pyramid of the 2D warm-up (see warmUp): it falls asleep after about 30
  * (it settles at once, then rests the sleep system's 0.5 s), and is stepped once more after.
  */
@@ -92,10 +108,11 @@ const REST_STEPS = 60;
  * until it falls asleep (a world's first sleep), then builds a small scene of that dimension (boxes
  * on a ground, a pile of balls, a disc or sphere, joints of the common kinds), steps it
  * WARM_UP_STEPS (40) times, then a second copy of it 3 times (the paths only a world's first steps
- * run), and throws them away, so that a large scene's first steps afterwards run
- * compiled code (see the top of warm-up.ts). Call it where a pause is expected, such as while a game
- * loads its first level: it takes about 0.3 to 0.5 s of main-thread time, and a pyramid of 820 boxes'
- * first four steps then take about 70 ms of CPU instead of about 450 (the first one 35 instead of
+ * run), so that a large scene's first steps afterwards run compiled code (see the top of
+ * warm-up.ts). The first copy is kept for the life of the program (about 2 to 2.5 MB a dimension),
+ * so that the code compiled against its objects is not thrown away with them. Call it where a pause
+ * is expected, such as while a game loads its first level: it takes about 0.3 to 0.5 s of
+ * main-thread time, and a pyramid of 820 boxes' first four steps then take about 70 ms of CPU instead of about 450 (the first one 35 instead of
  * about 220), a joint grid of 10,000 bodies' about 140 to 240 ms instead of about 480. With
  * `{ balls: true }` it also steps a pile of 1,100 balls, for scenes of thousands of balls (see
  * WarmUpOptions.balls). A second call for the same dimension does nothing (but run a pile not run
@@ -147,6 +164,7 @@ function warmScene(dimensions: 2 | 3): void {
   // again only in a program's own first steps). Made before anything is compiled, it costs nothing.
   const fresh = warmUpScene(dimensions);
   for (let i = 0; i < WARM_UP_STEPS; i++) step(world);
+  keptWorlds.push(world);
   // V8 gives a function the vector where it records its type feedback only after the function has
   // run a few times, so what a world runs only in its first step (its buffers grown from empty, every
   // contact new) ran in the scene above before anything was recorded, and the code compiled from its

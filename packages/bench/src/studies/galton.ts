@@ -97,7 +97,7 @@ export const galtonStudy: BenchStudy = {
       times.push(performance.now() - t);
       usedSubsteps = Math.max(
         usedSubsteps,
-        solverSubstepsFor(world.collision.settings, contactLength(world.collision.cache.rows), world.h),
+        solverSubstepsFor(world.collision.settings, contactLength(world, world.collision.cache.rows), world.h),
       );
       const d = ballOverlaps(P.x, P.y, balls, r, width).deepest;
       if (d > runDeepest) runDeepest = d;

@@ -239,7 +239,7 @@ export function contactSpringEnergy(world: PhysicsWorld): number {
   const cs = world.collision;
   const rows = cs.cache.rows;
   const st = cs.settings;
-  const length = contactLength(rows);
+  const length = contactLength(world, rows);
   const hs = world.h / solverSubstepsFor(st, length, world.h);
   const f = ballContactHertz(st, length, hs);
   const w = 2 * Math.PI * f;

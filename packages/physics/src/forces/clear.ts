@@ -1,17 +1,15 @@
 import { fusedForcesOn } from '../world/fused-state.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
+import type { ClearTerms } from '../world/scratch.js';
 
-type Components = PhysicsWorld['components'];
-
-/** The two queries' terms, built once per world (keyed by its component stores): this runs every substep. */
-const clearTermsOf = new WeakMap<Components, { force: object[]; torque: object[] }>();
-
-function clearTerms(c: Components): { force: object[]; torque: object[] } {
-  let t = clearTermsOf.get(c);
+/** The two queries' terms, built once per world (`world.scratch.clearTerms`): this runs every substep. */
+function clearTerms(world: PhysicsWorld): ClearTerms {
+  let t = world.scratch.clearTerms;
   if (t === undefined) {
+    const c = world.components;
     t = { force: [c.Force], torque: [c.Torque] };
-    clearTermsOf.set(c, t);
+    world.scratch.clearTerms = t;
   }
   return t;
 }
@@ -29,7 +27,7 @@ export function clearForcesSystem(world: PhysicsWorld): void {
     fy = Force.y,
     fz = Force.z;
   if (!fusedForcesOn(world)) {
-    const ents = query(world, clearTerms(world.components).force);
+    const ents = query(world, clearTerms(world).force);
     if (world.dimensions === 2) {
       for (let i = 0; i < ents.length; i++) {
         const e = ents[i]!;
@@ -45,7 +43,7 @@ export function clearForcesSystem(world: PhysicsWorld): void {
       }
     }
   }
-  const ents = query(world, clearTerms(world.components).torque);
+  const ents = query(world, clearTerms(world).torque);
   const tx = Torque.x,
     ty = Torque.y,
     tz = Torque.z;

@@ -7,19 +7,17 @@ import { idleWithout } from '../world/trusted-systems.js';
 import type { ForceLaw } from './law.js';
 import { inverseSquarePairs } from './pairwise.js';
 
-const sourcesOf = new WeakMap<PhysicsWorld, Float64Array>();
-
 /**
  * The world's packed attractor list (6 slots a source), grown by doubling; on shared memory once the
  * world has a thread pool, so the pool's workers can read it.
  */
 function attractorSources(world: PhysicsWorld, n: number): Float64Array {
-  let S = sourcesOf.get(world);
+  let S = world.scratch.attractorSources;
   const shared = world.threadPool !== null;
   if (S === undefined || S.length < 6 * n || (shared && !isShared(S))) {
     const length = 6 * Math.max(n, 2 * (S ? S.length / 6 : 4));
     S = shared ? sharedFloat64(length) : new Float64Array(length);
-    sourcesOf.set(world, S);
+    world.scratch.attractorSources = S;
   }
   return S;
 }
@@ -86,16 +84,13 @@ export function setBarnesHutGravity(sum: (world: PhysicsWorld, ents: ArrayLike<n
   barnesHut = sum;
 }
 
-type Components = PhysicsWorld['components'];
-
-/** The terms of the bodies attractors pull, built once per world (keyed by its component stores). */
-const pulledTermsOf = new WeakMap<Components, object[]>();
-
-function pulledTerms(c: Components): object[] {
-  let t = pulledTermsOf.get(c);
+/** The terms of the bodies attractors pull, built once per world (`world.scratch.pulledTerms`). */
+function pulledTerms(world: PhysicsWorld): object[] {
+  let t = world.scratch.pulledTerms;
   if (t === undefined) {
+    const c = world.components;
     t = [c.Position, c.Force, c.Mass, Not(c.Static), Not(c.Kinematic)];
-    pulledTermsOf.set(c, t);
+    world.scratch.pulledTerms = t;
   }
   return t;
 }
@@ -111,7 +106,7 @@ export const attractorSystem: ForceLaw = (world: PhysicsWorld): void => {
   const c = world.components;
   const sources = query(world, [c.Attractor, c.Position]);
   if (sources.length === 0) return;
-  const bodies = query(world, pulledTerms(c));
+  const bodies = query(world, pulledTerms(world));
   const G = world.laws.gravitationalConstant;
   const px = c.Position.x,
     py = c.Position.y,

@@ -1,4 +1,3 @@
-import type { QueryResult } from 'bitecs';
 import { angularDampingSystem } from '../forces/angular-damping.js';
 import { ballastTrimSystem } from '../forces/ballast.js';
 import { bodyThrustSystem } from '../forces/body-thrust.js';
@@ -16,6 +15,7 @@ import { vortexSystem } from '../forces/vortex.js';
 import { beginFusedSubstep } from '../world/fused-state.js';
 import type { PhysicsWorld, System } from '../world/options.js';
 import { query } from '../world/query.js';
+import type { ForcesPlan } from '../world/scratch.js';
 import { forcedBodies, fusedBareBodies, fusedLinearBodies, fusedQuadraticBodies } from './queries.js';
 
 /**
@@ -90,28 +90,12 @@ const IDLE_WHEN: ReadonlyMap<System, readonly [(c: Components) => object[], numb
 ]);
 
 /**
- * What the gate resolved of a world's forces stage, kept while the stage holds the same systems in the
- * same order: whether its systems allow the pass at all (each absorbed law exactly once, every other one
- * torque-only or an idle-when-empty law), and the live query arrays of the laws that must be idle, with
- * the fewest entities each acts on. A substep then reads those lengths instead of looking every law up.
+ * The gate's plan of `world`'s forces stage (`world.scratch.forcesPlan`; see ForcesPlan in
+ * world/scratch.ts), remade when the stage's systems change. A substep then reads the idle laws' query
+ * lengths instead of looking every law up.
  */
-interface ForcesPlan {
-  forces: System[];
-  allowed: boolean;
-  idle: QueryResult[];
-  least: number[];
-  /** The query of every body with a force accumulator. */
-  force: QueryResult;
-}
-
-/** A world's stages record (world.stages): the key of the plans. */
-type Stages = PhysicsWorld['stages'];
-
-/** The plans by the world's `stages` record (one a world): a cache of the code that runs, not world state. */
-const plans = new WeakMap<Stages, ForcesPlan>();
-
-function forcesPlan(world: PhysicsWorld, forces: readonly System[]): ForcesPlan {
-  const plan = plans.get(world.stages);
+function forcesPlan(world: PhysicsWorld, forces: readonly System[]): ForcesPlan<PhysicsWorld> {
+  const plan = world.scratch.forcesPlan;
   if (plan !== undefined && plan.forces.length === forces.length) {
     let same = true;
     for (let i = 0; i < forces.length; i++)
@@ -122,7 +106,7 @@ function forcesPlan(world: PhysicsWorld, forces: readonly System[]): ForcesPlan 
     if (same) return plan;
   }
   const c = world.components;
-  const made: ForcesPlan = { forces: forces.slice(), allowed: true, idle: [], least: [], force: query(world, [c.Force]) };
+  const made: ForcesPlan<PhysicsWorld> = { forces: forces.slice(), allowed: true, idle: [], least: [], force: query(world, [c.Force]) };
   let absorbed = 0;
   for (const s of forces) {
     if (ABSORBED.includes(s)) {
@@ -141,7 +125,7 @@ function forcesPlan(world: PhysicsWorld, forces: readonly System[]): ForcesPlan 
   // Each absorbed law exactly once (counted above; a duplicate would show as one missing).
   if (absorbed !== ABSORBED.length) made.allowed = false;
   for (const s of ABSORBED) if (forces.indexOf(s) !== forces.lastIndexOf(s)) made.allowed = false;
-  plans.set(world.stages, made);
+  world.scratch.forcesPlan = made;
   return made;
 }
 

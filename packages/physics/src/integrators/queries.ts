@@ -1,30 +1,17 @@
 import type { QueryResult } from 'bitecs';
 import type { PhysicsWorld } from '../world/options.js';
 import { Not, query } from '../world/query.js';
-
-type Components = PhysicsWorld['components'];
+import type { MoverTerms } from '../world/scratch.js';
 
 /**
- * The terms of the integrators' queries, built once per world (keyed by its component stores): these
- * run every substep, and a list built at each call (with its `Not` look-ups) was most of their cost in
+ * The terms of the integrators' queries, built once per world (`world.scratch.moverTerms`): these run
+ * every substep, and a list built at each call (with its `Not` look-ups) would be most of their cost in
  * a world of a few bodies.
  */
-interface MoverTerms {
-  forced: object[];
-  free: object[];
-  kinematic: object[];
-  torqued: object[];
-  tensor: object[];
-  spinning2D: object[];
-  spinning3D: object[];
-  simpleSpinning3D: object[];
-}
-
-const moverTerms = new WeakMap<Components, MoverTerms>();
-
-function moverTermsOf(c: Components): MoverTerms {
-  let t = moverTerms.get(c);
+function moverTermsOf(world: PhysicsWorld): MoverTerms {
+  let t = world.scratch.moverTerms;
   if (t === undefined) {
+    const c = world.components;
     t = {
       forced: [c.Position, c.Velocity, c.Force, Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)],
       free: [c.Position, c.Velocity, Not(c.Force), Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)],
@@ -35,7 +22,7 @@ function moverTermsOf(c: Components): MoverTerms {
       spinning3D: [c.AngularVelocity, c.Orientation, Not(c.Static), Not(c.Sleeping)],
       simpleSpinning3D: [c.AngularVelocity, c.Orientation, Not(c.InertiaTensor), Not(c.Static), Not(c.Sleeping)],
     };
-    moverTerms.set(c, t);
+    world.scratch.moverTerms = t;
   }
   return t;
 }
@@ -46,7 +33,7 @@ function moverTermsOf(c: Components): MoverTerms {
  * @category Integrators
  */
 export function forcedBodies(world: PhysicsWorld): QueryResult {
-  return query(world, moverTermsOf(world.components).forced);
+  return query(world, moverTermsOf(world).forced);
 }
 
 /**
@@ -54,7 +41,7 @@ export function forcedBodies(world: PhysicsWorld): QueryResult {
  * @category Integrators
  */
 export function freeBodies(world: PhysicsWorld): QueryResult {
-  return query(world, moverTermsOf(world.components).free);
+  return query(world, moverTermsOf(world).free);
 }
 
 /**
@@ -62,7 +49,7 @@ export function freeBodies(world: PhysicsWorld): QueryResult {
  * @category Integrators
  */
 export function kinematicBodies(world: PhysicsWorld): QueryResult {
-  return query(world, moverTermsOf(world.components).kinematic);
+  return query(world, moverTermsOf(world).kinematic);
 }
 
 /**
@@ -70,7 +57,7 @@ export function kinematicBodies(world: PhysicsWorld): QueryResult {
  * @category Integrators
  */
 export function torquedBodies(world: PhysicsWorld): QueryResult {
-  return query(world, moverTermsOf(world.components).torqued);
+  return query(world, moverTermsOf(world).torqued);
 }
 
 /**
@@ -78,7 +65,7 @@ export function torquedBodies(world: PhysicsWorld): QueryResult {
  * @category Integrators
  */
 export function tensorBodies(world: PhysicsWorld): QueryResult {
-  return query(world, moverTermsOf(world.components).tensor);
+  return query(world, moverTermsOf(world).tensor);
 }
 
 /**
@@ -86,7 +73,7 @@ export function tensorBodies(world: PhysicsWorld): QueryResult {
  * @category Integrators
  */
 export function spinningBodies(world: PhysicsWorld): QueryResult {
-  const t = moverTermsOf(world.components);
+  const t = moverTermsOf(world);
   return query(world, world.dimensions === 2 ? t.spinning2D : t.spinning3D);
 }
 
@@ -96,7 +83,7 @@ export function spinningBodies(world: PhysicsWorld): QueryResult {
  * @category Integrators
  */
 export function simpleSpinningBodies(world: PhysicsWorld): QueryResult {
-  const t = moverTermsOf(world.components);
+  const t = moverTermsOf(world);
   return query(world, world.dimensions === 2 ? t.spinning2D : t.simpleSpinning3D);
 }
 
@@ -106,19 +93,18 @@ export function simpleSpinningBodies(world: PhysicsWorld): QueryResult {
  * none carries a GravityScale or both drags (the gate checks this by their lengths).
  */
 
-/** The terms of the three lists, built once per world (keyed by its component stores): these run every substep. */
-const fusedTerms = new WeakMap<Components, readonly [object[], object[], object[]]>();
-
-function fusedTermsOf(c: Components): readonly [object[], object[], object[]] {
-  let t = fusedTerms.get(c);
+/** The terms of the three lists, built once per world (`world.scratch.fusedTerms`): these run every substep. */
+function fusedTermsOf(world: PhysicsWorld): readonly [object[], object[], object[]] {
+  let t = world.scratch.fusedTerms;
   if (t === undefined) {
+    const c = world.components;
     const mover = [c.Position, c.Velocity, c.Force, Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)];
     t = [
       [...mover, Not(c.LinearDrag), Not(c.QuadraticDrag), Not(c.GravityScale)],
       [...mover, c.QuadraticDrag, Not(c.LinearDrag), Not(c.GravityScale)],
       [...mover, c.LinearDrag, Not(c.QuadraticDrag), Not(c.GravityScale)],
     ];
-    fusedTerms.set(c, t);
+    world.scratch.fusedTerms = t;
   }
   return t;
 }
@@ -128,7 +114,7 @@ function fusedTermsOf(c: Components): readonly [object[], object[], object[]] {
  * @category Integrators
  */
 export function fusedBareBodies(world: PhysicsWorld): QueryResult {
-  return query(world, fusedTermsOf(world.components)[0]);
+  return query(world, fusedTermsOf(world)[0]);
 }
 
 /**
@@ -136,7 +122,7 @@ export function fusedBareBodies(world: PhysicsWorld): QueryResult {
  * @category Integrators
  */
 export function fusedQuadraticBodies(world: PhysicsWorld): QueryResult {
-  return query(world, fusedTermsOf(world.components)[1]);
+  return query(world, fusedTermsOf(world)[1]);
 }
 
 /**
@@ -144,5 +130,5 @@ export function fusedQuadraticBodies(world: PhysicsWorld): QueryResult {
  * @category Integrators
  */
 export function fusedLinearBodies(world: PhysicsWorld): QueryResult {
-  return query(world, fusedTermsOf(world.components)[2]);
+  return query(world, fusedTermsOf(world)[2]);
 }

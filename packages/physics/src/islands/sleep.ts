@@ -3,6 +3,7 @@ import { ecsOf } from '../world/ecs-internals.js';
 import { resolveKind } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { Not, query } from '../world/query.js';
+import type { SleepTerms } from '../world/scratch.js';
 import { addBallEdges, addIslandEdges2D, emptyIslandEdges, findRoot, joinContactEdges, joinJointEdges, markSupport } from './edges.js';
 import { addIslandEdges3D, wakeTouching3D, withShape3DBodies } from './hooks-3d.js';
 
@@ -120,25 +121,11 @@ function wakeIslandsOf(world: PhysicsWorld, list: number[] | null): void {
   if (list !== null) for (const e of list) wakeIsland(world, e);
 }
 
-type Components = PhysicsWorld['components'];
-
-/** The query terms of the sleep stage, built once per world (keyed by its component stores): it runs every step. */
-interface SleepTerms {
-  /** Awake dynamic balls. */
-  balls: object[];
-  /** Awake dynamic bodies with a 2D shape and no ball. */
-  shaped: object[];
-  /** Each component that keeps its body awake (time-varying forces), alone. */
-  awake: object[][];
-  spring: object[];
-  sleeping: object[];
-}
-
-const sleepTermsOf = new WeakMap<Components, SleepTerms>();
-
-function sleepTerms(c: Components): SleepTerms {
-  let t = sleepTermsOf.get(c);
+/** The query terms of the sleep stage, built once per world (`world.scratch.sleepTerms`): it runs every step. */
+function sleepTerms(world: PhysicsWorld): SleepTerms {
+  let t = world.scratch.sleepTerms;
   if (t === undefined) {
+    const c = world.components;
     t = {
       balls: [c.Position, c.Velocity, c.Ball, c.Force, Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)],
       shaped: [c.Position, c.Velocity, c.Shape, c.Force, Not(c.Ball), Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)],
@@ -146,7 +133,7 @@ function sleepTerms(c: Components): SleepTerms {
       spring: [c.Spring],
       sleeping: [c.Sleeping],
     };
-    sleepTermsOf.set(c, t);
+    world.scratch.sleepTerms = t;
   }
   return t;
 }
@@ -165,7 +152,7 @@ export function sleepSystem(world: PhysicsWorld): void {
     cs.stats.sleeping = 0;
     return;
   }
-  const terms = sleepTerms(c);
+  const terms = sleepTerms(world);
   const bodies = withShape3DBodies(world, withShapeBodies(world, query(world, terms.balls)));
   const n = bodies.length;
   const rest = sl.restTime,
@@ -276,8 +263,7 @@ export function sleepSystem(world: PhysicsWorld): void {
 function withShapeBodies(world: PhysicsWorld, balls: ArrayLike<number>): ArrayLike<number> {
   const st = world.collision.shapes;
   if (!st.active) return balls;
-  const c = world.components;
-  const shaped = query(world, sleepTerms(c).shaped);
+  const shaped = query(world, sleepTerms(world).shaped);
   const n = balls.length + shaped.length;
   if (st.sleepList.length < n) st.sleepList = new Uint32Array(Math.max(n, 2 * st.sleepList.length));
   const out = st.sleepList;

@@ -1,5 +1,6 @@
 import { $internal } from 'bitecs';
 import type { PhysicsWorld } from '../world/options.js';
+import type { ListMemo, QueryDescriptor } from '../world/scratch.js';
 import type { Encoded } from './format.js';
 import type { Reader } from './reader.js';
 import { countingTo } from './typed-arrays.js';
@@ -38,35 +39,28 @@ export function internals(world: PhysicsWorld): EcsInternals {
   return (world as unknown as Record<symbol, EcsInternals>)[$internal]!;
 }
 
+/** The world's component stores by name (`world.scratch.componentNames`). */
 export function namesOf(world: PhysicsWorld): Map<object, string> {
-  // The map is kept per world while world.components holds the same stores under the same names, so
-  // query descriptors computed from it stay valid (see describeKeyed).
+  // The map is kept while world.components holds the same stores under the same names, so query
+  // descriptors computed from it stay valid (see describeKeyed).
   const entries = Object.entries(world.components);
-  const last = nameMaps.get(world);
+  const last = world.scratch.componentNames;
   if (last !== undefined && last.size === entries.length && entries.every(([name, store]) => last.get(store as object) === name))
     return last;
   const names = new Map<object, string>();
   for (const [name, store] of entries) names.set(store as object, name);
-  nameMaps.set(world, names);
+  world.scratch.componentNames = names;
   return names;
 }
-/** The last name map of each world (see namesOf). */
-const nameMaps = new WeakMap<PhysicsWorld, Map<object, string>>();
 
 /**
- * Each query's descriptor and key as last computed, with the name map they were computed from (a
- * query's components never change; the names of world.components could, so a new map recomputes).
+ * `describeQuery` of `q`, one of `world`'s queries, and its `keyOf` (key '' when null), computed once
+ * per query and name map (see `namesOf`): kept in `world.scratch.queryKeys` with the name map they were
+ * computed from (a query's components never change; the names of world.components could, so a new map
+ * recomputes).
  */
-const described = new WeakMap<
-  object,
-  { names: Map<object, string>; d: { and: string[]; not: string[]; or: string[] } | null; key: string }
->();
-
-/** `describeQuery` and its `keyOf` (key '' when null), computed once per query and name map (see `namesOf`). */
-export function describeKeyed(
-  q: QueryData,
-  names: Map<object, string>,
-): { d: { and: string[]; not: string[]; or: string[] } | null; key: string } {
+export function describeKeyed(world: PhysicsWorld, q: QueryData, names: Map<object, string>): { d: QueryDescriptor; key: string } {
+  const described = world.scratch.queryKeys;
   let c = described.get(q);
   if (c === undefined || c.names !== names) {
     const d = describeQuery(q, names);
@@ -77,7 +71,7 @@ export function describeKeyed(
 }
 
 /** Query descriptor: its component names (and, not, or), or null if it involves a component outside world.components. */
-function describeQuery(q: QueryData, names: Map<object, string>): { and: string[]; not: string[]; or: string[] } | null {
+function describeQuery(q: QueryData, names: Map<object, string>): QueryDescriptor {
   const name = (c: object) => names.get(c);
   const not = q.notComponents.map(name),
     or = q.orComponents.map(name);
@@ -123,24 +117,11 @@ export function sameAsStored(a: readonly number[], b: Int32Array): boolean {
 }
 
 /**
- * What the last snapshot of a world found about one of its query sets (lean storage: sets with a
- * `version`, see world/lean-ecs.ts): its version and length then, and the earlier set of that snapshot it
- * was equal to (null: none) with that set's version and length then.
- */
-interface ListMemo {
-  version: number;
-  length: number;
-  same: object | null;
-  sameVersion: number;
-  sameLength: number;
-}
-const listMemos = new WeakMap<PhysicsWorld, Map<object, ListMemo>>();
-
-/**
  * Encodes bitecs id lists, each once: a list equal to one encoded before (most queries hold the same
  * entities in the same order) becomes a reference `{ $t: 'same', i }` to that one's position in `lists`.
  * Finding that costs a comparison of the two lists, except where neither set has changed (same
- * version and length, world/lean-ecs.ts) since the world's last snapshot found them equal.
+ * version and length, world/lean-ecs.ts) since the world's last snapshot found them equal (what it
+ * found: `world.scratch.listMemos`).
  */
 class IdLists {
   private readonly done: Array<{ ids: readonly number[]; index: number; set: object | null }> = [];
@@ -152,12 +133,7 @@ class IdLists {
     private readonly w: Writer,
     world: PhysicsWorld,
   ) {
-    let m = listMemos.get(world);
-    if (m === undefined) {
-      m = new Map();
-      listMemos.set(world, m);
-    }
-    this.memos = m;
+    this.memos = world.scratch.listMemos;
   }
   /** Encodes the members of `set` (a query's sparse set, or null for a list of no set). */
   encode(ids: ArrayLike<number>, set: object | null): Encoded {
@@ -290,7 +266,7 @@ export function captureEcs(world: PhysicsWorld, w: Writer): Encoded {
   const lists = new IdLists(w, world);
   const queries: Encoded[] = [];
   for (const q of ctx.queries) {
-    const d = describeKeyed(q, names).d;
+    const d = describeKeyed(world, q, names).d;
     if (d === null) continue;
     queries.push({
       $t: 'o',
@@ -319,6 +295,7 @@ export function captureEcs(world: PhysicsWorld, w: Writer): Encoded {
 
 /** Restoring bitecs' state from a snapshot into a world: entity index, component masks and query order, leaving unchanged lists alone. */
 
+// `matching` is a WeakMap: keyed by a snapshot, which the caller holds (and may restore into any world); an entry goes with its snapshot.
 /**
  * For the ECS part of a snapshot (by object identity, so a cloned or parsed snapshot has none): the
  * version (world/lean-ecs.ts) each query set of a world had when its members were known to equal the

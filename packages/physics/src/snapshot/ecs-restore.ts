@@ -2,6 +2,7 @@ import { query as bitecsQuery, Not, Or, registerComponent } from 'bitecs';
 import { describe } from '../validation/validate.js';
 import { assignSparseSet, hasMaskComponentSets } from '../world/lean-ecs.js';
 import type { PhysicsWorld } from '../world/options.js';
+import type { QueryTwin } from '../world/scratch.js';
 import {
   bitIndex,
   type ComponentData,
@@ -45,7 +46,7 @@ export function restoreEcs(world: PhysicsWorld, ecs: Record<string, Encoded>, r:
   const maxId = ecs.maxId as number;
   restoreMasks(ctx, ecs, r, map, same, Math.max(maxId, oldMaxId) + 1);
   restoreEntityIndex(world, ctx, ecs, lists);
-  restoreQueries(ctx, ecs, lists, byKey, ecs.aliveCount as number);
+  restoreQueries(ctx, ecs, lists, byKey, ecs.aliveCount as number, world.scratch.queryTwins);
 }
 
 /** One snapshot component's bit (generation `sg`, bit `sbit`) and the target world's (generation `tg`, flag `tflag`). */
@@ -86,7 +87,7 @@ function snapshotQueries(world: PhysicsWorld, ctx: EcsInternals, ecs: Record<str
   const names = namesOf(world);
   const byKey = new Map<string, QueryData>();
   for (const q of ctx.queries) {
-    const { d, key } = describeKeyed(q, names);
+    const { d, key } = describeKeyed(world, q, names);
     if (d !== null) byKey.set(key, q);
   }
   for (const enc of ecs.queries as Encoded[]) {
@@ -99,7 +100,7 @@ function snapshotQueries(world: PhysicsWorld, ctx: EcsInternals, ecs: Record<str
     if (d.or.length > 0) terms.push(Or(...d.or.map((n) => C[n]! as never)) as object);
     bitecsQuery(world as never, terms as never);
     const q = [...ctx.queries].find((x) => {
-      const dx = describeKeyed(x, names);
+      const dx = describeKeyed(world, x, names);
       return dx.d !== null && dx.key === key;
     });
     if (q === undefined) throw new Error(`restore: could not make the query ${key}`);
@@ -190,7 +191,12 @@ function restoreEntityIndex(world: PhysicsWorld, ctx: EcsInternals, ecs: Record<
 
 /**
  * The queries: the snapshot's in their order (each made by snapshotQueries, in `byKey`); any other
- * query of this world is rebuilt in entity order over the first `aliveCount` entities.
+ * query of this world is rebuilt in entity order over the first `aliveCount` entities. `twins`: the
+ * world's query sets (lean storage, with versions) known to hold the same ids in the same order as
+ * another set of it, `peer`, while their versions are still `version` and `peerVersion`
+ * (`world.scratch.queryTwins`), written here when both were given one stored list: a world restored
+ * again and again from snapshots of another (a replica) then compares each list with one set only,
+ * not with every query holding it.
  */
 function restoreQueries(
   ctx: EcsInternals,
@@ -198,6 +204,7 @@ function restoreQueries(
   lists: readonly Int32Array[],
   byKey: ReadonlyMap<string, QueryData>,
   aliveCount: number,
+  twins: Map<object, QueryTwin>,
 ): void {
   const ix = ctx.entityIndex;
   const done = new Set<QueryData>();
@@ -299,14 +306,6 @@ function setContent(set: SparseSetLike, ids: Int32Array, compare: boolean): bool
   for (let i = 0; i < ids.length; i++) set.add(ids[i]!);
   return true;
 }
-
-/**
- * Query sets of a world (lean storage, with versions) known to hold the same ids in the same order as
- * another set of it, `peer`, while their versions are still `version` and `peerVersion`: written by
- * restore when both were given one stored list. A world restored again and again from snapshots of
- * another (a replica) then compares each list with one set only, not with every query holding it.
- */
-const twins = new WeakMap<object, { peer: object; version: number; peerVersion: number }>();
 
 function matches(ctx: EcsInternals, q: QueryData, e: number): boolean {
   const has = (c: object) => {

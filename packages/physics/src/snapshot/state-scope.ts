@@ -8,8 +8,19 @@ import type { PhysicsWorld } from '../world/options.js';
  * with any number of threads restores into a world with any number, which keeps its pool.
  * `features` is state, but each entry is carried by the registration of the feature that made it
  * (world/external-state.ts: its name in the header's `external`, the keys kept as code).
+ * `scratch` is the world's buffers and caches (world/scratch.ts), which carry nothing between steps.
  */
-export const NOT_STATE = new Set(['stages', 'builtins', 'removeHooks', 'timings', 'entityIndex', 'threads', 'threadPool', 'features']);
+export const NOT_STATE = new Set([
+  'stages',
+  'builtins',
+  'removeHooks',
+  'timings',
+  'entityIndex',
+  'threads',
+  'threadPool',
+  'features',
+  'scratch',
+]);
 
 /**
  * Typed arrays of the world that are scratch: written in full before they are read, within the step

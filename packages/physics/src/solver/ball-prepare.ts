@@ -6,7 +6,6 @@
  */
 
 import { type ContactBuffer, ContactKind } from '../collision/contacts.js';
-import type { KernelArray } from '../threads/kernel-types.js';
 import { runOnPool } from '../threads/parallel.js';
 import { isShared, sharedLike } from '../threads/pool.js';
 import type { PhysicsWorld } from '../world/options.js';
@@ -21,9 +20,6 @@ import { approachStage } from './stages-threads.js';
  * @category Collision
  */
 export const PREPARE_MIN_PER_THREAD = 4096;
-
-/** Per world: the shared copy of the spawn stamps, the kernel's arrays and parameters (prepareStage). */
-const prepareScratch = new WeakMap<PhysicsWorld, { stamp: Uint32Array; arrays: KernelArray[]; params: Float64Array }>();
 
 /**
  * prepareContacts (kernel prepareContactRows: each row on its own), on a 2D world's threads when it
@@ -41,10 +37,11 @@ function prepareStage(world: PhysicsWorld, buf: ContactBuffer, stick: number): v
   if (pool !== null && (world.dimensions !== 2 || n < PREPARE_MIN_PER_THREAD * pool.threads)) pool = null;
   if (pool !== null && (!isShared(M.restitution) || !isShared(M.friction) || !isShared(M.staticFriction) || !isShared(cs.bodyState)))
     pool = null;
-  let S = prepareScratch.get(world);
+  // The world's shared copy of the spawn stamps and the kernel's arguments (world/scratch.ts).
+  let S = world.scratch.ballPrepare;
   if (S === undefined) {
     S = { stamp: new Uint32Array(0), arrays: [], params: new Float64Array(9) };
-    prepareScratch.set(world, S);
+    world.scratch.ballPrepare = S;
   }
   let stamp = world.spawnStamp;
   if (pool !== null) {

@@ -34,7 +34,7 @@ import { downward3Into, downwardInto, markFirstRelaxRows } from './support.js';
  * @category Collision
  */
 export function prepareBallRows(world: PhysicsWorld, buf: ContactBuffer): void {
-  prepareContacts(world, buf, ballStickSpeed(world.collision.settings, contactLength(buf)));
+  prepareContacts(world, buf, ballStickSpeed(world.collision.settings, contactLength(world, buf)));
 }
 
 /**
@@ -52,7 +52,7 @@ export function approachBallRows(world: PhysicsWorld, buf: ContactBuffer, others
   const colored = is2D && useColoredSolve(world, buf, others);
   if (!colored) measureApproach(world, buf);
   const st = world.collision.settings;
-  const length = contactLength(buf);
+  const length = contactLength(world, buf);
   // Softness (Box2D b2MakeSoft): stiffness from the balls' size, capped at the substep rate
   // (solver/contact-scale.ts); contacts against infinite mass twice as stiff.
   const hertz = ballContactHertz(st, length, hs);

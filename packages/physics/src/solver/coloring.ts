@@ -44,6 +44,7 @@ import { nowMs } from '../threads/adaptive.js';
 import type { KernelArray } from '../threads/kernel-types.js';
 import { isShared, sharedCopy, sharedLike, sharedMemoryAvailable, type ThreadPool } from '../threads/pool.js';
 import type { PhysicsWorld } from '../world/options.js';
+import type { ColorScratch } from '../world/scratch.js';
 import { BS2_INV_INERTIA, BS2_INV_MASS, BS2_STRIDE } from './body-state-layout.js';
 import { coloredRepack2D, solveColored2D, solveColoredBlocks2D } from './coloring-kernel.js';
 import { PACK_STRIDE } from './contact-pack-2d.js';
@@ -108,52 +109,6 @@ const BINS = 4096;
 /** A fixed body's bin (stripCut2D): in none. */
 const NO_BIN = 0xffff;
 
-interface ColorScratch {
-  pack: Float64Array;
-  dyn: Uint8Array;
-  plan: Int32Array;
-  bar: Int32Array;
-  params: Float64Array;
-  /** The kernel's claim flags, a block of every unit (shared; zeroed before each run). */
-  claim: Int32Array;
-  /** Each pack row's two bodies' solver state offsets (shared; two a row). */
-  pair: Int32Array;
-  /** Each pack row's normal impulse delivered over the substeps, and its row in the contact buffer (shared). */
-  tot: Float64Array;
-  row: Int32Array;
-  color: Uint8Array;
-  mask: Uint32Array;
-  arrays: KernelArray[];
-  /** Each thread's first pack slot of every colour (MAX_COLORS + 1 a thread; the packing stage's cursors). */
-  offsets: Int32Array;
-  /** Rows a colour, the colours' first rows, the next free row of each (MAX_COLORS + 2 each, shared). */
-  counts: Int32Array;
-  start: Int32Array;
-  next: Int32Array;
-  /** Each contact buffer row's pack row (shared; written by the packing, read by coloredRepack2D). */
-  slot: Int32Array;
-  /** The blocks' first pack rows (block j: bounds[j] .. bounds[j + 1] - 1), shared. */
-  bounds: Int32Array;
-  /** Strips: the movable solver bodies by strip pair, and each pair's first entry there (shared). */
-  bodyOrder: Int32Array;
-  bodyBounds: Int32Array;
-  /** Strips: each solver body's strip (255: fixed, in no strip); the rows' histogram; each bin's strip. */
-  strip: Uint8Array;
-  hist: Int32Array;
-  binStrip: Uint8Array;
-  /** Strips: each solver body's histogram bin (NO_BIN: fixed). */
-  bin: Uint16Array;
-  /** The strips of the cut in `strip`, `bin`, `hist`, `binStrip` and `dyn` this step (0: none yet; planRows). */
-  cut: number;
-  /** The strip plan kernel's arguments (stripPlan2D; its layout helper's for graph colours too). */
-  planArrays: KernelArray[];
-  planParams: Float64Array;
-  /** Whether this step's substeps ran by colours and the restitution stage has not used the plan yet. */
-  pending: boolean;
-}
-
-const scratchOf = new WeakMap<CollisionState, ColorScratch>();
-
 /**
  * A buffer of `bytes` bytes for the coloured solve's scratch: shared memory where there is any (the
  * pool's workers read it), else a plain ArrayBuffer (a one-thread world in a page that is not
@@ -174,8 +129,9 @@ export function grown<T extends KernelArray>(like: T, n: number): T {
   return new C(n);
 }
 
-function scratch(cs: CollisionState, rows: number, bodies: number): ColorScratch {
-  let s = scratchOf.get(cs);
+/** The world's coloured-solve scratch (world/scratch.ts), made on first use and grown to `rows` contact rows and `bodies` solver bodies. */
+function scratch(world: PhysicsWorld, rows: number, bodies: number): ColorScratch {
+  let s = world.scratch.coloring;
   if (s === undefined) {
     s = {
       pack: new Float64Array(buffer(8 * PACK_STRIDE * 1024)),
@@ -207,7 +163,7 @@ function scratch(cs: CollisionState, rows: number, bodies: number): ColorScratch
       planArrays: [],
       planParams: new Float64Array(PLAN_PARAMS),
     };
-    scratchOf.set(cs, s);
+    world.scratch.coloring = s;
   }
   if (s.pack.length < rows * PACK_STRIDE) s.pack = grown(s.pack, Math.max(rows * PACK_STRIDE, 2 * s.pack.length));
   if (s.pair.length < 2 * rows) s.pair = grown(s.pair, Math.max(2 * rows, 2 * s.pair.length));
@@ -234,7 +190,7 @@ function scratch(cs: CollisionState, rows: number, bodies: number): ColorScratch
  */
 export function useColoredSolve(world: PhysicsWorld, buf: ContactBuffer, others: boolean): boolean {
   // A plan left by a step that stopped before its restitution stage is not this step's.
-  const old = scratchOf.get(world.collision);
+  const old = world.scratch.coloring;
   if (old !== undefined) old.pending = false;
   return colored(world, buf, others);
 }
@@ -454,7 +410,7 @@ function planParameters(
  */
 export function startStripPlan(world: PhysicsWorld, buf: ContactBuffer, others: boolean): void {
   const cs = world.collision;
-  const old = scratchOf.get(cs);
+  const old = world.scratch.coloring;
   if (old !== undefined) {
     old.cut = 0;
     old.plan[PLAN.PACKED] = 0;
@@ -464,7 +420,7 @@ export function startStripPlan(world: PhysicsWorld, buf: ContactBuffer, others: 
   // The body types go to shared memory here if no threaded stage has moved them yet (the same values).
   cs.bodyType = sharedCopy(cs.bodyType);
   shareContactBuffer(buf);
-  const s = scratch(cs, buf.count, cs.solverBodyCount);
+  const s = scratch(world, buf.count, cs.solverBodyCount);
   pool.start('contactSolverSystem', stripPlan2D, planArguments(cs, buf, s), planParameters(cs, buf, s, STRIPS, 1, true, true), 1);
   s.cut = STRIPS;
 }
@@ -490,24 +446,25 @@ function planRows(cs: CollisionState, buf: ContactBuffer, s: ColorScratch, parts
 }
 
 /**
- * Colours used by the last coloured solve of `cs` (0: none ran), for tests and the bench.
+ * Colours used by the last coloured solve of `world` (0: none ran), for tests and the bench.
  * @category Collision
  */
-export function lastColorCount(cs: CollisionState): number {
-  const s = scratchOf.get(cs);
+export function lastColorCount(world: PhysicsWorld): number {
+  const s = world.scratch.coloring;
   return s === undefined ? 0 : s.plan[PLAN.COLORS]!;
 }
 
 /**
- * Checks the last coloured solve of `cs` (a test of the cut, not of physics): the number of times a
+ * Checks the last coloured solve of `world` (a test of the cut, not of physics): the number of times a
  * movable solver body (inverse mass or inertia > 0) appears in rows of two blocks of one colour (blocks
  * of a colour run at once on different threads; the overflow colour is one block), the rows in the
  * overflow colour, the rows packed, and whether the rows were cut into strips. 0 conflicts is the
  * cut's promise.
  * @category Collision
  */
-export function coloringConflicts(cs: CollisionState): { conflicts: number; overflow: number; rows: number; strips: boolean } {
-  const s = scratchOf.get(cs);
+export function coloringConflicts(world: PhysicsWorld): { conflicts: number; overflow: number; rows: number; strips: boolean } {
+  const cs = world.collision;
+  const s = world.scratch.coloring;
   if (s === undefined) return { conflicts: 0, overflow: 0, rows: 0, strips: false };
   const plan = s.plan,
     C = plan[PLAN.COLORS]!,
@@ -561,7 +518,7 @@ export function solveColoredSubsteps(world: PhysicsWorld, buf: ContactBuffer, hs
   const cs = world.collision,
     pool = coloredPool(world);
   const st = cs.settings;
-  const s = scratch(cs, buf.count, cs.solverBodyCount);
+  const s = scratch(world, buf.count, cs.solverBodyCount);
   if (pool !== null) {
     shareContactBuffer(buf);
     pool.join(); // the strip plan startStripPlan left on a worker
@@ -652,8 +609,8 @@ export interface ColoredPlan {
  * step's substeps did not run by colours.
  * @category Collision
  */
-export function coloredPlan(cs: CollisionState): ColoredPlan | null {
-  const s = scratchOf.get(cs);
+export function coloredPlan(world: PhysicsWorld): ColoredPlan | null {
+  const s = world.scratch.coloring;
   if (s === undefined || !s.pending) return null;
   s.pending = false;
   return s;

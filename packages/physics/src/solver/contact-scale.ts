@@ -1,5 +1,6 @@
 import type { ContactBuffer } from '../collision/contacts.js';
 import type { CollisionSettings } from '../collision/state.js';
+import { describe } from '../validation/validate.js';
 import { registerExternalWorldState } from '../world/external-state.js';
 import type { PhysicsWorld } from '../world/options.js';
 
@@ -70,17 +71,20 @@ export function smallestBallRadius(buf: ContactBuffer): number {
   return r;
 }
 
-/** The length each contact buffer's step used (set by `withScaledSubsteps`). */
-const stepLength = new WeakMap<ContactBuffer, number>();
-
 /**
- * The length scale of the ball contacts in `buf`, m: the length the step that solved (or is solving)
- * them used, which `withScaledSubsteps` moves toward their smallest ball radius at most LENGTH_RAMP
- * times a step; for a buffer no step has used, their smallest ball radius (Infinity if no rows).
+ * The length scale of the ball contacts in `buf`, one of `world`'s contact buffers
+ * (`world.collision.contacts` during a step, `world.collision.cache.rows` after it), m: the length the
+ * step of `world` that solved (or is solving) them used, which `withScaledSubsteps` moves toward their
+ * smallest ball radius at most LENGTH_RAMP times a step (kept in `world.scratch.contactLengths`); for a
+ * buffer no step of `world` has used, their smallest ball radius (Infinity if no rows).
+ * @throws TypeError if `world` is not a physics world (the call before was `contactLength(buf)`).
  * @category Collision
  */
-export function contactLength(buf: ContactBuffer): number {
-  return stepLength.get(buf) ?? smallestBallRadius(buf);
+export function contactLength(world: PhysicsWorld, buf: ContactBuffer): number {
+  const lengths = world?.scratch?.contactLengths;
+  if (lengths === undefined)
+    throw new TypeError(`contactLength: world must be a physics world (contactLength(world, buf)), got ${describe(world)}`);
+  return lengths.get(buf) ?? smallestBallRadius(buf);
 }
 
 /**
@@ -174,7 +178,7 @@ export function withScaledSubsteps(world: PhysicsWorld, solve: (world: PhysicsWo
     state.length = last === Infinity ? target : Math.min(Math.max(target, last / LENGTH_RAMP), last * LENGTH_RAMP);
   }
   const length = target < Infinity ? state.length : Infinity;
-  stepLength.set(buf, length);
+  world.scratch.contactLengths.set(buf, length);
   const count = settings.autoSubsteps ? solverSubstepsFor(settings, length, world.h) : base;
   if (state.substeps !== count) {
     if (state.substeps > 0) scaleWarmStart(cs.cache.rows, state.substeps / count);

@@ -35,6 +35,7 @@ import { MAX_POOL_PARTS, runOnPool } from '../threads/parallel.js';
 import { isShared, sharedCopy, sharedFloat64, sharedMemoryAvailable, type ThreadPool } from '../threads/pool.js';
 import { reportNonFinite } from '../world/errors.js';
 import type { PhysicsWorld } from '../world/options.js';
+import type { SolverStageScratch } from '../world/scratch.js';
 import { IMPACT_STRIDE } from './body-state-layout.js';
 import { approachArguments, callerMayWait, coloredPlan, grown, SPIN_MICROSECONDS, shareContactBuffer } from './coloring.js';
 import { KERNEL_HELPERS } from './kernel-helpers.js';
@@ -58,20 +59,13 @@ import { warmStartTable } from './warm-start-kernel.js';
  */
 export const stageThreading = { minPerThread: 8192, runs: 0, bouncing: 0 };
 
-/** Per world: the kernels' argument lists and parameters, the deepest-overlap slots. */
-interface StageScratch {
-  arrays: KernelArray[];
-  params: Float64Array;
-  deepest: Float64Array;
-}
-const scratchOf = new WeakMap<PhysicsWorld, StageScratch>();
-
-function scratch(world: PhysicsWorld): StageScratch {
-  let s = scratchOf.get(world);
+/** The world's kernel argument lists and parameters and deepest-overlap slots (world/scratch.ts), made on first use. */
+function scratch(world: PhysicsWorld): SolverStageScratch {
+  let s = world.scratch.solverStages;
   if (s === undefined) {
     const deepest = sharedMemoryAvailable() ? sharedFloat64(MAX_POOL_PARTS) : new Float64Array(MAX_POOL_PARTS);
     s = { arrays: [], params: new Float64Array(24), deepest };
-    scratchOf.set(world, s);
+    world.scratch.solverStages = s;
   }
   return s;
 }
@@ -314,7 +308,7 @@ export function finishStage(world: PhysicsWorld, buf: ContactBuffer): void {
 export function restitutionOnThreads(world: PhysicsWorld, buf: ContactBuffer): boolean {
   const cs = world.collision,
     pool = world.threadPool;
-  const colored = coloredPlan(cs);
+  const colored = coloredPlan(world);
   if (colored === null || world.dimensions !== 2) return false;
   if (pool !== null) shareContactBuffer(buf);
   const st = cs.settings;

@@ -4,6 +4,7 @@ import { throwNonFinite } from '../world/errors.js';
 import { fusedForcesOn } from '../world/fused-state.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
+import type { CheckTerms } from '../world/scratch.js';
 import type { StageName } from '../world/stage-names.js';
 
 /**
@@ -188,29 +189,18 @@ function checkFields(
   if (fields !== null) throwNonFinite(world, stage, ents, fields);
 }
 
-/** The query terms of the checks, made once per world (keyed by its component stores): no allocation a step. */
-interface CheckTerms {
-  force: object[];
-  torque: object[];
-  linear: object[];
-  angular: object[];
-}
-
-type Components = PhysicsWorld['components'];
-
-const checkTerms = new WeakMap<Components, CheckTerms>();
-
+/** The query terms of the checks, made once per world (`world.scratch.checkTerms`): no allocation a step. */
 function termsOf(world: PhysicsWorld): CheckTerms {
-  const c = world.components;
-  let t = checkTerms.get(c);
+  let t = world.scratch.checkTerms;
   if (t === undefined) {
+    const c = world.components;
     t = {
       force: [c.Force],
       torque: [c.Torque],
       linear: [c.Position, c.Velocity],
       angular: world.dimensions === 2 ? [c.AngularVelocity, c.Angle] : [c.AngularVelocity, c.Orientation],
     };
-    checkTerms.set(c, t);
+    world.scratch.checkTerms = t;
   }
   return t;
 }

@@ -1,42 +1,32 @@
 import type { QueryResult } from 'bitecs';
 import type { PhysicsWorld, System } from '../world/options.js';
 import { query } from '../world/query.js';
+import type { StagePlan as StagePlanOf, StagePlans as StagePlansOf } from '../world/scratch.js';
 import { STAGES, type StageName } from '../world/stage-names.js';
-import { type FiniteTrust, finiteTrustOf, idleGuardTerms, systemMarksVersion } from '../world/trusted-systems.js';
+import { finiteTrustOf, idleGuardTerms, systemMarksVersion } from '../world/trusted-systems.js';
 
-/**
+/*
  * What `step` resolves once of a stage's systems rather than at every step: for each system, the live
  * query arrays whose emptiness means it has nothing to do (its idle guard, `idleWithout` in
  * world/trusted-systems.ts), so that a world pays nothing for the built-in laws it does not use (a
  * world of one body still has about twenty force systems, each of which would look up its query and
- * return). The plan is remade when the stage's list of systems changes (addSystem, removeSystem, a
- * feature installing its systems, a direct write to `world.stages`) or when the systems' marks do.
+ * return). The plans live in `world.scratch.stagePlans` (the types in world/scratch.ts): derived from
+ * the stages and the queries, a cache of the code that runs, not world state, so snapshots carry none
+ * of it. A plan is remade when the stage's list of systems changes (addSystem, removeSystem, a feature
+ * installing its systems, a direct write to `world.stages`) or when the systems' marks do.
  */
-export interface StagePlan {
-  /** The stage's systems the plan was made for, in order (a copy, compared with the stage's list). */
-  readonly systems: System[];
-  /** For each system, its idle guard's live query arrays (idle when all are empty), or null: always run. */
-  readonly guards: (readonly QueryResult[] | null)[];
-  /** For each system, how it is trusted not to write NaN (world/trusted-systems.ts finiteTrustOf). */
-  readonly trust: (FiniteTrust | undefined)[];
-  /** The marks' version (world/trusted-systems.ts systemMarksVersion) the plan was made at. */
-  readonly version: number;
-}
+
+/**
+ * What `step` resolved of one stage's systems (see StagePlan in world/scratch.ts).
+ * @category World and step
+ */
+export type StagePlan = StagePlanOf<PhysicsWorld>;
 
 /**
  * A world's plans, one a stage (null until the stage first runs).
  * @category World and step
  */
-export type StagePlans = Record<StageName, StagePlan | null>;
-
-/** A world's stages record (world.stages): the key of the plans. */
-type Stages = PhysicsWorld['stages'];
-
-/**
- * The plans by the world's `stages` record (one a world, for its life): derived from the stages and
- * the queries, so a cache of the code that runs, not world state (snapshots carry none of it).
- */
-const plansOf = new WeakMap<Stages, StagePlans>();
+export type StagePlans = StagePlansOf<PhysicsWorld>;
 
 /**
  * The plans of `world`'s stages (each null until its stage first runs); one object per world, kept for
@@ -44,11 +34,11 @@ const plansOf = new WeakMap<Stages, StagePlans>();
  * @category World and step
  */
 export function stagePlans(world: PhysicsWorld): StagePlans {
-  let plans = plansOf.get(world.stages);
+  let plans = world.scratch.stagePlans;
   if (plans === undefined) {
     plans = {} as StagePlans;
     for (const s of STAGES) plans[s] = null;
-    plansOf.set(world.stages, plans);
+    world.scratch.stagePlans = plans;
   }
   return plans;
 }

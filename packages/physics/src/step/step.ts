@@ -121,7 +121,6 @@ function runStages(world: PhysicsWorld): void {
 }
 
 const moverTerms = (world: PhysicsWorld) => [world.components.Position, world.components.Velocity];
-const stepStarts = new WeakMap<PhysicsWorld, Float64Array[]>();
 
 /**
  * With substeps, each substep overwrites PreviousPosition (the collision stage needs the start of
@@ -131,14 +130,14 @@ const stepStarts = new WeakMap<PhysicsWorld, Float64Array[]>();
  */
 function snapshotStepStart(world: PhysicsWorld): ArrayLike<number> {
   const ents = query(world, moverTerms(world));
-  let stepStart = stepStarts.get(world);
+  let stepStart = world.scratch.stepStart;
   if (!stepStart) {
     const n = world.capacity + 1;
     stepStart = [new Float64Array(n), new Float64Array(n), new Float64Array(n)];
-    stepStarts.set(world, stepStart);
+    world.scratch.stepStart = stepStart;
   }
   const P = world.components.Position;
-  const [x, y, z] = stepStart as [Float64Array, Float64Array, Float64Array];
+  const [x, y, z] = stepStart;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
     x[e] = P.x[e]!;
@@ -150,7 +149,7 @@ function snapshotStepStart(world: PhysicsWorld): ArrayLike<number> {
 
 function restoreStepStart(world: PhysicsWorld, ents: ArrayLike<number>): void {
   const O = world.components.PreviousPosition;
-  const [x, y, z] = stepStarts.get(world) as [Float64Array, Float64Array, Float64Array];
+  const [x, y, z] = world.scratch.stepStart!;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
     O.x[e] = x[e]!;

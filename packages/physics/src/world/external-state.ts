@@ -5,8 +5,9 @@ import type { PhysicsWorld } from './options.js';
  * shapes, joints and contacts, meshes, the emitters' particle book and archetype tables, dissipation,
  * contact scale), which `snapshot` and `restore` carry by this registration: its name in the
  * snapshot's header, how to make it in a world that has none, and which of its keys are code. Every
- * module that keeps such state registers it here once; the snapshot test fails for a WeakMap keyed by
- * a world that is neither registered nor declared scratch.
+ * module that keeps such state registers it here once. Per-world buffers and caches that are not state
+ * go in `world.scratch` (world/scratch.ts); the snapshot test fails for a module-level WeakMap keyed by
+ * a world or by one of its parts.
  * @category Snapshots
  */
 export interface ExternalWorldState {

@@ -59,6 +59,8 @@ interface SparseSetLike {
   sort(compare?: (a: number, b: number) => number): void;
   /** Lean sets only: counts the changes of membership or order (see `typedSparseSet`). */
   version?: number;
+  /** Lean sets only: makes the set hold exactly the given ids in that order (see `assignSparseSet`). */
+  assign?: (ids: ArrayLike<number>) => void;
 }
 
 /**
@@ -100,7 +102,7 @@ function typedSparseSet(set: SparseSetLike, capacity: number): void {
     dense.length = 0;
     set.version!++;
   };
-  assigners.set(set, (ids: ArrayLike<number>): void => {
+  set.assign = (ids: ArrayLike<number>): void => {
     const n = ids.length;
     if (n > 0 && sparse.length === 0) {
       sparse = new Int32Array(capacity + 1);
@@ -112,7 +114,7 @@ function typedSparseSet(set: SparseSetLike, capacity: number): void {
     for (let i = m; i < n; i++) dense.push(ids[i]!);
     for (let i = 0; i < n; i++) sparse[ids[i]!] = i;
     set.version!++;
-  });
+  };
   set.sort = (compare?: (a: number, b: number) => number): void => {
     dense.sort(compare);
     set.version!++;
@@ -124,9 +126,6 @@ function typedSparseSet(set: SparseSetLike, capacity: number): void {
   };
 }
 
-/** The bulk writer of each typed sparse set (see `assignSparseSet`). */
-const assigners = new WeakMap<object, (ids: ArrayLike<number>) => void>();
-
 /**
  * Makes `set`, a query's sparse set (or its pending removals') in a world with lean storage, hold
  * exactly `ids` in that order: its dense list written in place (it stays a packed JS array, the same
@@ -135,7 +134,7 @@ const assigners = new WeakMap<object, (ids: ArrayLike<number>) => void>();
  * @category Bodies
  */
 export function assignSparseSet(set: object, ids: ArrayLike<number>): boolean {
-  const assign = assigners.get(set);
+  const assign = (set as { assign?: (ids: ArrayLike<number>) => void }).assign;
   if (assign === undefined) return false;
   assign(ids);
   return true;

@@ -8,6 +8,7 @@ import type { Components } from './components.js';
 import type { ForceLawSettings } from './force-settings.js';
 import type { IntegratorName } from './integrator-names.js';
 import type { JointState } from './joint-state-2d.js';
+import type { WorldScratch } from './scratch.js';
 import type { StageName } from './stage-names.js';
 
 /** Options of `createPhysicsWorld`. Every field is optional; unknown fields and null values are rejected. */
@@ -177,6 +178,11 @@ export interface PhysicsWorldContext {
    * the feature is used. Snapshots carry each entry through its registration, not as world state.
    */
   readonly features: Record<string, object | undefined>;
+  /**
+   * Internal: the buffers, kernel arguments and caches the systems and snapshots keep for this world
+   * between calls (world/scratch.ts). Not state: snapshots do not store it, restore leaves it as it is.
+   */
+  readonly scratch: WorldScratch<PhysicsWorld>;
 }
 
 /**

@@ -14,6 +14,7 @@ import { leanQuery } from './lean-ecs.js';
 
 type Term = object;
 
+// A WeakMap: keyed by a component (any object a caller passes, usable in several worlds) and `Not` takes no world; an entry goes with its component.
 const nots = new WeakMap<object, object>();
 
 /**

@@ -1,4 +1,5 @@
 import type { PhysicsWorld, System } from './options.js';
+import type { SystemTrust } from './scratch.js';
 import type { StageName } from './stage-names.js';
 
 /** The built-in systems that need no finite-state check after them (they write no body state, or check what they write): marked when their feature installs, read by `step` (step/finite.ts). */
@@ -13,11 +14,9 @@ export type FiniteScope = 'all' | 'linear';
  * How a system is trusted (`trustFiniteOutput`): its scope, and the condition it is trusted under.
  * @category World and step
  */
-export interface FiniteTrust {
-  readonly scope: FiniteScope;
-  readonly idle?: (world: PhysicsWorld) => boolean;
-}
+export type FiniteTrust = SystemTrust<PhysicsWorld>;
 
+// A WeakMap: keyed by a system function, code shared by every world (marked once when its feature installs), not by a world.
 const trusted = new WeakMap<System, FiniteTrust>();
 
 /**
@@ -101,6 +100,7 @@ export function checkAfter(world: PhysicsWorld, t: FiniteTrust | undefined): 0 |
  */
 
 /** The idle guards of built-in systems (see `idleWithout`): each a function of the world giving lists of query terms, or null. */
+// A WeakMap: keyed by a system function, code shared by every world (guarded once when its module loads), not by a world.
 const idleGuards = new WeakMap<System, (world: PhysicsWorld) => readonly object[][] | null>();
 
 /**

@@ -13,10 +13,10 @@
  * (collision/broadphase/grid.ts).
  */
 
-import type { KernelArray } from '../../threads/kernel-types.js';
 import { runOnPool } from '../../threads/parallel.js';
 import { sharedCopy, sharedMemoryAvailable, type ThreadPool } from '../../threads/pool.js';
 import type { PhysicsWorld } from '../../world/options.js';
+import type { PairBuffers } from '../../world/scratch.js';
 import { BodyType, type CollisionState, PairKind } from '../state.js';
 import * as PAIRS from './ball-pair-slots.js';
 import { ballPairs } from './grid-pairs-kernel.js';
@@ -31,17 +31,6 @@ export const PAIRS_MIN_PER_THREAD = 2048;
 
 /** Most threads the pass runs on: `counts` holds the ranges' pair counts, then at PAIRS.WAKE_COUNTS + p their wake counts. */
 const MAX_PARTS = PAIRS.WAKE_COUNTS;
-
-interface PairBuffers {
-  a: Int32Array[];
-  b: Int32Array[];
-  w: Int32Array[];
-  counts: Int32Array;
-  arrays: KernelArray[];
-  params: Float64Array;
-}
-
-const buffersOf = new WeakMap<CollisionState, PairBuffers>();
 
 /** The world's pool if the cell pass over `small` grid bodies may go to its threads, else null. */
 function poolFor(world: PhysicsWorld, small: number): ThreadPool | null {
@@ -96,13 +85,14 @@ export function ballPairsStage(
   }
   const parts = pool === null ? 1 : pool.threads;
   const shared = pool !== null || sharedMemoryAvailable();
-  let buf = buffersOf.get(cs);
+  // The world's pair buffers (world/scratch.ts), grown to `parts` ranges of `cap` pairs.
+  let buf = world.scratch.pairBuffers;
   let cap = 4 * small + 1024;
   for (;;) {
     if (buf === undefined || buf.a.length < parts || buf.a[0]!.length < cap) {
       const size = Math.max(cap, 2 * (buf === undefined ? 0 : buf.a[0]!.length));
       buf = makeBuffers(Math.max(parts, buf?.a.length ?? 0), size, shared);
-      buffersOf.set(cs, buf);
+      world.scratch.pairBuffers = buf;
     }
     const A = buf.arrays;
     A.length = 0;

@@ -15,6 +15,7 @@ import { runOnPool } from '../../threads/parallel.js';
 import { sharedCopy, sharedLike, type ThreadPool } from '../../threads/pool.js';
 import { jointKeepsApart } from '../../world/joint-no-collide.js';
 import type { PhysicsWorld } from '../../world/options.js';
+import type { BallContactScratch } from '../../world/scratch.js';
 import { type ContactBuffer, ContactKind, growContactBuffer } from '../contacts.js';
 import { BodyType, type CollisionState } from '../state.js';
 import * as CONTACT from './ball-contact-slots.js';
@@ -29,28 +30,12 @@ export const CONTACTS_MIN_PER_THREAD = 2048;
 /** The contact buffer's fields a range writes, in the order of the CONTACT.OUT_ slots (collision/narrowphase/ball-contact-slots.ts). */
 const FIELDS = ['kind', 'nx', 'ny', 'nz', 'separation', 'ra', 'rb', 'a', 'b', 'feature'] as const;
 
-/** Each range after the first: its arrays (FIELDS', typed as the buffer's), `cap` rows each; the ranges' counts. */
-interface ContactBuffers {
-  out: KernelArray[][];
-  cap: number;
-}
-
-/** Per collision state: the threads' buffers, the ranges' counts, the skip flags and the kernel's arguments. */
-interface ContactScratch {
-  threads: ContactBuffers | null;
-  counts: Int32Array;
-  skip: Uint8Array;
-  arrays: KernelArray[];
-  params: Float64Array;
-}
-
-const scratchOf = new WeakMap<CollisionState, ContactScratch>();
-
-function scratch(cs: CollisionState): ContactScratch {
-  let s = scratchOf.get(cs);
+/** The world's threads' buffers (FIELDS' arrays), ranges' counts, skip flags and kernel arguments (world/scratch.ts), made on first use. */
+function scratch(world: PhysicsWorld): BallContactScratch {
+  let s = world.scratch.ballContacts;
   if (s === undefined) {
     s = { threads: null, counts: new Int32Array(16), skip: new Uint8Array(0), arrays: [], params: new Float64Array(10) };
-    scratchOf.set(cs, s);
+    world.scratch.ballContacts = s;
   }
   return s;
 }
@@ -72,7 +57,7 @@ function poolFor(world: PhysicsWorld, n: number): ThreadPool | null {
 export function ballContactsStage(world: PhysicsWorld, cs: CollisionState, buf: ContactBuffer, lo: number, hi: number): void {
   const m = hi - lo;
   if (m <= 0) return;
-  const s = scratch(cs);
+  const s = scratch(world);
   let pool = poolFor(world, m);
   if (pool !== null) {
     cs.pairA = sharedCopy(cs.pairA);

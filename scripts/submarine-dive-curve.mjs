@@ -1,0 +1,42 @@
+// `node scripts/submarine-dive-curve.mjs`: the depth a held Dive key gives (games/submarine/helm.ts,
+// keyHeaveShare as the page applies it), headless on a calm sea: from a hover at 40 m, Dive held for
+// each time, let go, and the boat left to stop on its order. Prints the depth gone down (m) for each
+// hold time, and the same for Rise from 80 m.
+import { importSource } from './build.mjs';
+
+const sub = await importSource(
+  'submarine-dive-curve',
+  `export * from './games/submarine/helm.ts';
+   export { SUBMARINE_NEUTRAL_FILL, submarine } from '@bitphysics/projects';
+   export { createPhysicsWorld, step } from '@bitphysics/physics';`,
+);
+const { createHelmState, keyHeaveShare, steer, NO_INPUT, SUBMARINE_NEUTRAL_FILL, submarine, createPhysicsWorld, step } = sub;
+
+/** Depth change (m, positive the way asked) after holding `key` ('dive' or 'rise') for `held` s from a hover at `y0` m. */
+function hold(key, held, y0) {
+  const world = createPhysicsWorld(submarine.worldOptions());
+  const h = submarine.build(world, { seed: 1, count: 0, fill: SUBMARINE_NEUTRAL_FILL, position: [0, y0] });
+  world.components.FluidRegion.surface.fill(0);
+  const helm = createHelmState(SUBMARINE_NEUTRAL_FILL);
+  const run = (input, seconds) => {
+    for (let i = 0; i < Math.round(seconds / world.dt); i++) {
+      steer(world, h, { ...NO_INPUT, ...input }, helm);
+      step(world);
+    }
+  };
+  run({}, 2);
+  const start = world.components.Position.y[h.hull];
+  let t = 0;
+  for (let i = 0; i < Math.round(held / world.dt); i++, t += world.dt) {
+    steer(world, h, { ...NO_INPUT, [key]: true, heave: keyHeaveShare(0, t) }, helm);
+    step(world);
+  }
+  run({}, 6);
+  const end = world.components.Position.y[h.hull];
+  return key === 'dive' ? start - end : end - start;
+}
+
+const times = [0.1, 0.25, 0.5, 1, 2, 3, 4, 6];
+console.log(`hold s  | ${times.map((t) => String(t).padStart(5)).join(' ')}`);
+console.log(`dive m  | ${times.map((t) => hold('dive', t, -40).toFixed(1).padStart(5)).join(' ')}`);
+console.log(`rise m  | ${times.map((t) => hold('rise', t, -90).toFixed(1).padStart(5)).join(' ')}`);
