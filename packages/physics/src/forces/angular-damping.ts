@@ -4,6 +4,7 @@ import type { KernelArray } from '../threads/kernel-types.js';
 import { runParallel } from '../threads/parallel.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { Not, query } from '../world/query.js';
+import { idleWithout } from '../world/trusted-systems.js';
 import { dissipationState, linearDecay, STIFF_RATE } from './dissipation.js';
 import type { ForceLaw } from './law.js';
 
@@ -186,3 +187,6 @@ export function angularDampingScalar(A: KernelArray[], P: Float64Array, ids: Int
   }
   return stiff;
 }
+
+// What makes each system of this module idle (world/trusted-systems.ts idleWithout): its first query.
+idleWithout(angularDampingSystem, (w) => [[w.components.AngularDamping, w.components.AngularVelocity, w.components.Torque]]);

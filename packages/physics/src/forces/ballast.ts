@@ -4,6 +4,7 @@ import { resolveKind } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { addComponentIfMissing } from '../world/options.js';
 import { query } from '../world/query.js';
+import { idleWithout } from '../world/trusted-systems.js';
 import type { ForceLaw } from './law.js';
 
 /**
@@ -180,3 +181,9 @@ export function ballastFillSystem(world: PhysicsWorld): void {
     M.inv[e] = 1 / mass;
   }
 }
+
+// What makes each system of this module idle (world/trusted-systems.ts idleWithout): its first query.
+idleWithout(ballastTrimSystem, (w) =>
+  w.dimensions === 2 ? [[w.components.Ballast, w.components.Angle, w.components.Torque, w.components.Mass]] : null,
+);
+idleWithout(ballastFillSystem, (w) => [[w.components.Ballast, w.components.Mass]]);

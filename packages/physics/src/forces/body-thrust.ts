@@ -4,6 +4,7 @@ import { resolveKind } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { addComponentIfMissing } from '../world/options.js';
 import { query } from '../world/query.js';
+import { idleWithout } from '../world/trusted-systems.js';
 import type { ForceLaw } from './law.js';
 
 /**
@@ -82,3 +83,6 @@ export const bodyThrustSystem: ForceLaw = (world: PhysicsWorld): void => {
   }
 };
 bodyThrustSystem.velocityDependent = false;
+
+// What makes each system of this module idle (world/trusted-systems.ts idleWithout): its first query.
+idleWithout(bodyThrustSystem, (w) => [[w.components.BodyThrust, w.components.Force]]);

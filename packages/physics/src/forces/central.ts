@@ -2,6 +2,7 @@ import type { KernelArray } from '../threads/kernel-types.js';
 import { runParallel } from '../threads/parallel.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
+import { idleWithout } from '../world/trusted-systems.js';
 import type { ForceLaw } from './law.js';
 
 const NO_PARAMS: number[] = [];
@@ -68,3 +69,6 @@ export function centralForce(A: KernelArray[], P: Float64Array, ids: Int32Array 
   }
   return P.length * 0;
 }
+
+// What makes each system of this module idle (world/trusted-systems.ts idleWithout): its first query.
+idleWithout(centralForceSystem, (w) => [[w.components.CentralForce, w.components.Position, w.components.Force]]);

@@ -1,6 +1,18 @@
 import { fusedForcesOn } from '../world/fused-state.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
+import type { ClearTerms } from '../world/scratch.js';
+
+/** The two queries' terms, built once per world (`world.scratch.clearTerms`): this runs every substep. */
+function clearTerms(world: PhysicsWorld): ClearTerms {
+  let t = world.scratch.clearTerms;
+  if (t === undefined) {
+    const c = world.components;
+    t = { force: [c.Force], torque: [c.Torque] };
+    world.scratch.clearTerms = t;
+  }
+  return t;
+}
 
 /**
  * Stage 2: zeroes the force accumulator of every body with `Force`, and the torque accumulator of
@@ -15,7 +27,7 @@ export function clearForcesSystem(world: PhysicsWorld): void {
     fy = Force.y,
     fz = Force.z;
   if (!fusedForcesOn(world)) {
-    const ents = query(world, [Force]);
+    const ents = query(world, clearTerms(world).force);
     if (world.dimensions === 2) {
       for (let i = 0; i < ents.length; i++) {
         const e = ents[i]!;
@@ -31,7 +43,7 @@ export function clearForcesSystem(world: PhysicsWorld): void {
       }
     }
   }
-  const ents = query(world, [Torque]);
+  const ents = query(world, clearTerms(world).torque);
   const tx = Torque.x,
     ty = Torque.y,
     tz = Torque.z;

@@ -4,6 +4,7 @@ import { reportNonFinite } from '../world/errors.js';
 import { fusedForcesOn } from '../world/fused-state.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { Not, query } from '../world/query.js';
+import { idleWithout } from '../world/trusted-systems.js';
 import { windAt } from './configure.js';
 import { allocateStiffStamps, dissipationState, linearDecay, moveFromStart, quadraticDecay, STIFF_RATE } from './dissipation.js';
 import type { ForceLaw } from './law.js';
@@ -287,3 +288,8 @@ export function dragCalm(A: KernelArray[], P: Float64Array, ids: Int32Array | nu
   }
   return stiff;
 }
+
+// What makes each system of this module idle (world/trusted-systems.ts idleWithout): its first query.
+idleWithout(linearDragSystem, (w) => [[w.components.LinearDrag, w.components.Velocity, w.components.Force]]);
+idleWithout(quadraticDragSystem, (w) => [[w.components.QuadraticDrag, w.components.Velocity, w.components.Force]]);
+idleWithout(liftSystem, (w) => [[w.components.Lift, w.components.Velocity, w.components.Force]]);

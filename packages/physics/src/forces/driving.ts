@@ -1,5 +1,6 @@
 import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
+import { idleWithout } from '../world/trusted-systems.js';
 import type { ForceLaw } from './law.js';
 
 /**
@@ -78,3 +79,7 @@ export const randomForceSystem: ForceLaw = (world: PhysicsWorld): void => {
   }
 };
 randomForceSystem.velocityDependent = false;
+
+// What makes each system of this module idle (world/trusted-systems.ts idleWithout): its first query.
+idleWithout(drivingForceSystem, (w) => [[w.components.DrivingForce, w.components.Force]]);
+idleWithout(randomForceSystem, (w) => [[w.components.RandomForce, w.components.Force]]);

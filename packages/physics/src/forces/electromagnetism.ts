@@ -1,5 +1,6 @@
 import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
+import { idleWithout } from '../world/trusted-systems.js';
 import type { ForceLaw } from './law.js';
 import { inverseSquarePairs } from './pairwise.js';
 
@@ -82,3 +83,7 @@ export const lorentzSystem: ForceLaw = (world: PhysicsWorld): void => {
     fz[e] = fz[e]! + qe * (ez + ux * by - uy * bx);
   }
 };
+
+// What makes each system of this module idle (world/trusted-systems.ts idleWithout): its first query.
+idleWithout(coulombSystem, (w) => [[w.components.Charge, w.components.Position, w.components.Force]]);
+idleWithout(lorentzSystem, (w) => [[w.components.ElectricField], [w.components.MagneticField]]);

@@ -1,6 +1,7 @@
 import { reportNonFinite } from '../world/errors.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { Not, query } from '../world/query.js';
+import { idleWithout } from '../world/trusted-systems.js';
 import { allocateStiffStamps, dissipationState, moveFromStart, quadraticDecay, STIFF_RATE } from './dissipation.js';
 import type { ForceLaw } from './law.js';
 
@@ -163,3 +164,6 @@ export const stiffFluidDragSystem = (world: PhysicsWorld): void => {
   }
   if (check !== 0) reportNonFinite(world, ents, 'integrate');
 };
+
+// What makes each system of this module idle (world/trusted-systems.ts idleWithout): its first query.
+idleWithout(buoyancySystem, (w) => [[w.components.FluidRegion]]);

@@ -3,6 +3,7 @@ import { runParallel } from '../threads/parallel.js';
 import { isShared, sharedFloat64 } from '../threads/pool.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { Not, query } from '../world/query.js';
+import { idleWithout } from '../world/trusted-systems.js';
 import type { ForceLaw } from './law.js';
 import { inverseSquarePairs } from './pairwise.js';
 
@@ -83,6 +84,17 @@ export function setBarnesHutGravity(sum: (world: PhysicsWorld, ents: ArrayLike<n
   barnesHut = sum;
 }
 
+/** The terms of the bodies attractors pull, built once per world (`world.scratch.pulledTerms`). */
+function pulledTerms(world: PhysicsWorld): object[] {
+  let t = world.scratch.pulledTerms;
+  if (t === undefined) {
+    const c = world.components;
+    t = [c.Position, c.Force, c.Mass, Not(c.Static), Not(c.Kinematic)];
+    world.scratch.pulledTerms = t;
+  }
+  return t;
+}
+
 /**
  * Attractors (fixed or moving masses, e.g. a sun or a black hole) pull every dynamic body with a
  * force accumulator: F = -G M m r / (r^2 + eps^2)^(3/2), r from the attractor to the body, eps the
@@ -94,7 +106,7 @@ export const attractorSystem: ForceLaw = (world: PhysicsWorld): void => {
   const c = world.components;
   const sources = query(world, [c.Attractor, c.Position]);
   if (sources.length === 0) return;
-  const bodies = query(world, [c.Position, c.Force, c.Mass, Not(c.Static), Not(c.Kinematic)]);
+  const bodies = query(world, pulledTerms(world));
   const G = world.laws.gravitationalConstant;
   const px = c.Position.x,
     py = c.Position.y,
@@ -179,3 +191,8 @@ export function attractors(A: KernelArray[], P: Float64Array, ids: Int32Array | 
   }
   return 0;
 }
+
+// What makes each system of this module idle (world/trusted-systems.ts idleWithout): its first query.
+idleWithout(gravityScaleSystem, (w) => [[w.components.GravityScale, w.components.Force, w.components.Mass]]);
+idleWithout(mutualGravitySystem, (w) => [[w.components.MutualGravity, w.components.Position, w.components.Mass, w.components.Force]]);
+idleWithout(attractorSystem, (w) => [[w.components.Attractor, w.components.Position]]);

@@ -12,6 +12,7 @@ import { createSlot, currentHandle, resolveEntity, resolveKind } from '../world/
 import type { PhysicsWorld } from '../world/options.js';
 import { addComponentIfMissing } from '../world/options.js';
 import { query } from '../world/query.js';
+import { idleWithout } from '../world/trusted-systems.js';
 import type { ForceLaw } from './law.js';
 
 /**
@@ -284,3 +285,6 @@ export const liftingSurfaceSystem: ForceLaw = (world: PhysicsWorld): void => {
     tz[b] = tz[b]! + (rx * Fy - ry * Fx);
   }
 };
+
+// What makes each system of this module idle (world/trusted-systems.ts idleWithout): its first query.
+idleWithout(liftingSurfaceSystem, (w) => [[w.components.LiftingSurface]]);

@@ -2,6 +2,7 @@ import { hasComponent, removeEntity } from 'bitecs';
 import { reportNonFinite } from '../world/errors.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
+import { idleWithout } from '../world/trusted-systems.js';
 import { dissipationState, linearDecay, moveFromStart, STIFF_RATE } from './dissipation.js';
 import type { ForceLaw } from './law.js';
 
@@ -169,3 +170,6 @@ export function removeSpringsOf(world: PhysicsWorld, eid: number): void {
   }
   for (const s of doomed) removeEntity(world, s);
 }
+
+// What makes each system of this module idle (world/trusted-systems.ts idleWithout): its first query.
+idleWithout(springSystem, (w) => [[w.components.Spring]]);

@@ -1,5 +1,6 @@
 import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
+import { idleWithout } from '../world/trusted-systems.js';
 import type { ForceLaw } from './law.js';
 
 /**
@@ -67,3 +68,7 @@ export function burnFuelSystem(world: PhysicsWorld): void {
     M.inv[e] = 1 / mass;
   }
 }
+
+// What makes each system of this module idle (world/trusted-systems.ts idleWithout): its first query.
+idleWithout(thrustSystem, (w) => [[w.components.Thrust, w.components.Force, w.components.Mass]]);
+idleWithout(burnFuelSystem, (w) => [[w.components.Thrust, w.components.Mass]]);

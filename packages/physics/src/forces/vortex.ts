@@ -1,5 +1,6 @@
 import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
+import { idleWithout } from '../world/trusted-systems.js';
 import type { ForceLaw } from './law.js';
 
 /**
@@ -41,3 +42,6 @@ export const vortexSystem: ForceLaw = (world: PhysicsWorld): void => {
   }
 };
 vortexSystem.velocityDependent = false;
+
+// What makes each system of this module idle (world/trusted-systems.ts idleWithout): its first query.
+idleWithout(vortexSystem, (w) => [[w.components.Vortex, w.components.Position, w.components.Force]]);

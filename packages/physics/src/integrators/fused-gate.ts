@@ -15,6 +15,7 @@ import { vortexSystem } from '../forces/vortex.js';
 import { beginFusedSubstep } from '../world/fused-state.js';
 import type { PhysicsWorld, System } from '../world/options.js';
 import { query } from '../world/query.js';
+import type { ForcesPlan } from '../world/scratch.js';
 import { forcedBodies, fusedBareBodies, fusedLinearBodies, fusedQuadraticBodies } from './queries.js';
 
 /**
@@ -88,15 +89,44 @@ const IDLE_WHEN: ReadonlyMap<System, readonly [(c: Components) => object[], numb
   [liftingSurfaceSystem, [(c) => [c.LiftingSurface], 1]],
 ]);
 
-/** The query terms of `law`'s idle check, built once per world (`world.scratch.idleTerms`): no allocation a substep. */
-function idleTerms(world: PhysicsWorld, law: System, build: (c: Components) => object[]): object[] {
-  const m = world.scratch.idleTerms;
-  let t = m.get(law);
-  if (t === undefined) {
-    t = build(world.components);
-    m.set(law, t);
+/**
+ * The gate's plan of `world`'s forces stage (`world.scratch.forcesPlan`; see ForcesPlan in
+ * world/scratch.ts), remade when the stage's systems change. A substep then reads the idle laws' query
+ * lengths instead of looking every law up.
+ */
+function forcesPlan(world: PhysicsWorld, forces: readonly System[]): ForcesPlan<PhysicsWorld> {
+  const plan = world.scratch.forcesPlan;
+  if (plan !== undefined && plan.forces.length === forces.length) {
+    let same = true;
+    for (let i = 0; i < forces.length; i++)
+      if (plan.forces[i] !== forces[i]) {
+        same = false;
+        break;
+      }
+    if (same) return plan;
   }
-  return t;
+  const c = world.components;
+  const made: ForcesPlan<PhysicsWorld> = { forces: forces.slice(), allowed: true, idle: [], least: [], force: query(world, [c.Force]) };
+  let absorbed = 0;
+  for (const s of forces) {
+    if (ABSORBED.includes(s)) {
+      absorbed++;
+      continue;
+    }
+    if (TORQUE_ONLY.has(s)) continue;
+    const idle = IDLE_WHEN.get(s);
+    if (idle === undefined) {
+      made.allowed = false;
+      break;
+    }
+    made.idle.push(query(world, idle[0](c)));
+    made.least.push(idle[1]);
+  }
+  // Each absorbed law exactly once (counted above; a duplicate would show as one missing).
+  if (absorbed !== ABSORBED.length) made.allowed = false;
+  for (const s of ABSORBED) if (forces.indexOf(s) !== forces.lastIndexOf(s)) made.allowed = false;
+  world.scratch.forcesPlan = made;
+  return made;
 }
 
 let integrator: System | null = null;
@@ -123,28 +153,14 @@ export function fusedForcesAllowed(world: PhysicsWorld): boolean {
   if (integrate.length === 0 || integrate[0] !== integrator) return false;
   const forced = forcedBodies(world).length;
   if (forced === 0) return false;
-  let absorbed = 0;
-  for (let i = 0; i < forces.length; i++) {
-    const s = forces[i]!;
-    if (ABSORBED.includes(s)) {
-      absorbed++;
-      continue;
-    }
-    if (TORQUE_ONLY.has(s)) continue;
-    const idle = IDLE_WHEN.get(s);
-    if (idle === undefined || query(world, idleTerms(world, s, idle[0])).length >= idle[1]) return false;
-  }
-  // Each absorbed law exactly once (counted above; a duplicate would show as one missing).
-  if (absorbed !== ABSORBED.length) return false;
-  for (let i = 0; i < ABSORBED.length; i++) if (forces.indexOf(ABSORBED[i]!) !== forces.lastIndexOf(ABSORBED[i]!)) return false;
+  // The plan's live arrays are read after forcedBodies' query committed bitecs' pending removals.
+  const plan = forcesPlan(world, forces);
+  if (!plan.allowed) return false;
+  const idle = plan.idle,
+    least = plan.least;
+  for (let i = 0; i < idle.length; i++) if (idle[i]!.length >= least[i]!) return false;
   if (!calmAir(world)) return false;
-  if (
-    query(
-      world,
-      idleTerms(world, clearForcesSystem, (c) => [c.Force]),
-    ).length !== forced
-  )
-    return false;
+  if (plan.force.length !== forced) return false;
   return fusedBareBodies(world).length + fusedQuadraticBodies(world).length + fusedLinearBodies(world).length === forced;
 }
 

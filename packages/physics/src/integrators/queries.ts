@@ -1,6 +1,31 @@
 import type { QueryResult } from 'bitecs';
 import type { PhysicsWorld } from '../world/options.js';
 import { Not, query } from '../world/query.js';
+import type { MoverTerms } from '../world/scratch.js';
+
+/**
+ * The terms of the integrators' queries, built once per world (`world.scratch.moverTerms`): these run
+ * every substep, and a list built at each call (with its `Not` look-ups) would be most of their cost in
+ * a world of a few bodies.
+ */
+function moverTermsOf(world: PhysicsWorld): MoverTerms {
+  let t = world.scratch.moverTerms;
+  if (t === undefined) {
+    const c = world.components;
+    t = {
+      forced: [c.Position, c.Velocity, c.Force, Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)],
+      free: [c.Position, c.Velocity, Not(c.Force), Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)],
+      kinematic: [c.Position, c.Velocity, c.Kinematic, Not(c.Static)],
+      torqued: [c.AngularVelocity, c.Inertia, c.Torque, Not(c.InertiaTensor), Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)],
+      tensor: [c.AngularVelocity, c.InertiaTensor, c.Orientation, Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)],
+      spinning2D: [c.AngularVelocity, c.Angle, Not(c.Static), Not(c.Sleeping)],
+      spinning3D: [c.AngularVelocity, c.Orientation, Not(c.Static), Not(c.Sleeping)],
+      simpleSpinning3D: [c.AngularVelocity, c.Orientation, Not(c.InertiaTensor), Not(c.Static), Not(c.Sleeping)],
+    };
+    world.scratch.moverTerms = t;
+  }
+  return t;
+}
 
 /**
  * Dynamic bodies with a force accumulator (and so a mass): they feel force laws and gravity.
@@ -8,8 +33,7 @@ import { Not, query } from '../world/query.js';
  * @category Integrators
  */
 export function forcedBodies(world: PhysicsWorld): QueryResult {
-  const c = world.components;
-  return query(world, [c.Position, c.Velocity, c.Force, Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)]);
+  return query(world, moverTermsOf(world).forced);
 }
 
 /**
@@ -17,8 +41,7 @@ export function forcedBodies(world: PhysicsWorld): QueryResult {
  * @category Integrators
  */
 export function freeBodies(world: PhysicsWorld): QueryResult {
-  const c = world.components;
-  return query(world, [c.Position, c.Velocity, Not(c.Force), Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)]);
+  return query(world, moverTermsOf(world).free);
 }
 
 /**
@@ -26,8 +49,7 @@ export function freeBodies(world: PhysicsWorld): QueryResult {
  * @category Integrators
  */
 export function kinematicBodies(world: PhysicsWorld): QueryResult {
-  const c = world.components;
-  return query(world, [c.Position, c.Velocity, c.Kinematic, Not(c.Static)]);
+  return query(world, moverTermsOf(world).kinematic);
 }
 
 /**
@@ -35,8 +57,7 @@ export function kinematicBodies(world: PhysicsWorld): QueryResult {
  * @category Integrators
  */
 export function torquedBodies(world: PhysicsWorld): QueryResult {
-  const c = world.components;
-  return query(world, [c.AngularVelocity, c.Inertia, c.Torque, Not(c.InertiaTensor), Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)]);
+  return query(world, moverTermsOf(world).torqued);
 }
 
 /**
@@ -44,8 +65,7 @@ export function torquedBodies(world: PhysicsWorld): QueryResult {
  * @category Integrators
  */
 export function tensorBodies(world: PhysicsWorld): QueryResult {
-  const c = world.components;
-  return query(world, [c.AngularVelocity, c.InertiaTensor, c.Orientation, Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)]);
+  return query(world, moverTermsOf(world).tensor);
 }
 
 /**
@@ -53,10 +73,8 @@ export function tensorBodies(world: PhysicsWorld): QueryResult {
  * @category Integrators
  */
 export function spinningBodies(world: PhysicsWorld): QueryResult {
-  const c = world.components;
-  return world.dimensions === 2
-    ? query(world, [c.AngularVelocity, c.Angle, Not(c.Static), Not(c.Sleeping)])
-    : query(world, [c.AngularVelocity, c.Orientation, Not(c.Static), Not(c.Sleeping)]);
+  const t = moverTermsOf(world);
+  return query(world, world.dimensions === 2 ? t.spinning2D : t.spinning3D);
 }
 
 /**
@@ -65,10 +83,8 @@ export function spinningBodies(world: PhysicsWorld): QueryResult {
  * @category Integrators
  */
 export function simpleSpinningBodies(world: PhysicsWorld): QueryResult {
-  const c = world.components;
-  return world.dimensions === 2
-    ? query(world, [c.AngularVelocity, c.Angle, Not(c.Static), Not(c.Sleeping)])
-    : query(world, [c.AngularVelocity, c.Orientation, Not(c.InertiaTensor), Not(c.Static), Not(c.Sleeping)]);
+  const t = moverTermsOf(world);
+  return query(world, world.dimensions === 2 ? t.spinning2D : t.simpleSpinning3D);
 }
 
 /*

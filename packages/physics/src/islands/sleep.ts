@@ -3,6 +3,7 @@ import { ecsOf } from '../world/ecs-internals.js';
 import { resolveKind } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { Not, query } from '../world/query.js';
+import type { SleepTerms } from '../world/scratch.js';
 import { addBallEdges, addIslandEdges2D, emptyIslandEdges, findRoot, joinContactEdges, joinJointEdges, markSupport } from './edges.js';
 import { addIslandEdges3D, wakeTouching3D, withShape3DBodies } from './hooks-3d.js';
 
@@ -120,6 +121,23 @@ function wakeIslandsOf(world: PhysicsWorld, list: number[] | null): void {
   if (list !== null) for (const e of list) wakeIsland(world, e);
 }
 
+/** The query terms of the sleep stage, built once per world (`world.scratch.sleepTerms`): it runs every step. */
+function sleepTerms(world: PhysicsWorld): SleepTerms {
+  let t = world.scratch.sleepTerms;
+  if (t === undefined) {
+    const c = world.components;
+    t = {
+      balls: [c.Position, c.Velocity, c.Ball, c.Force, Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)],
+      shaped: [c.Position, c.Velocity, c.Shape, c.Force, Not(c.Ball), Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)],
+      awake: [[c.DrivingForce], [c.RandomForce], [c.Thrust]],
+      spring: [c.Spring],
+      sleeping: [c.Sleeping],
+    };
+    world.scratch.sleepTerms = t;
+  }
+  return t;
+}
+
 /**
  * Stage 7: updates rest times and puts resting islands to sleep. Islands come from this step's
  * contacts between two dynamic bodies that carried a normal impulse; contacts with static geometry do
@@ -134,10 +152,8 @@ export function sleepSystem(world: PhysicsWorld): void {
     cs.stats.sleeping = 0;
     return;
   }
-  const bodies = withShape3DBodies(
-    world,
-    withShapeBodies(world, query(world, [c.Position, c.Velocity, c.Ball, c.Force, Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)])),
-  );
+  const terms = sleepTerms(world);
+  const bodies = withShape3DBodies(world, withShapeBodies(world, query(world, terms.balls)));
   const n = bodies.length;
   const rest = sl.restTime,
     parent = sl.parent,
@@ -174,11 +190,11 @@ export function sleepSystem(world: PhysicsWorld): void {
     parent[e] = e;
   }
   // Bodies that must stay awake: time-varying forces, springs.
-  for (const comp of [c.DrivingForce, c.RandomForce, c.Thrust]) {
-    const ents = query(world, [comp]);
+  for (let k = 0; k < terms.awake.length; k++) {
+    const ents = query(world, terms.awake[k]!);
     for (let i = 0; i < ents.length; i++) rest[ents[i]!] = 0;
   }
-  const springs = query(world, [c.Spring]);
+  const springs = query(world, terms.spring);
   for (let i = 0; i < springs.length; i++) {
     const s = springs[i]!;
     rest[c.Spring.a[s]!] = 0;
@@ -196,7 +212,7 @@ export function sleepSystem(world: PhysicsWorld): void {
     }
   if (candidates === 0) {
     wakeIslandsOf(world, joinJointEdges(world, edges, bodies, rest, parent, supported, ++sl.stamp));
-    cs.stats.sleeping = sl.anyAsleep ? query(world, [c.Sleeping]).length : 0;
+    cs.stats.sleeping = sl.anyAsleep ? query(world, terms.sleeping).length : 0;
     return;
   }
   // Islands over contacts between dynamic awake bodies that pushed, and over joints (`supported` is
@@ -236,7 +252,7 @@ export function sleepSystem(world: PhysicsWorld): void {
     }
     sl.anyAsleep = true;
   }
-  cs.stats.sleeping = sl.anyAsleep ? query(world, [c.Sleeping]).length : 0;
+  cs.stats.sleeping = sl.anyAsleep ? query(world, terms.sleeping).length : 0;
 }
 
 /**
@@ -247,8 +263,7 @@ export function sleepSystem(world: PhysicsWorld): void {
 function withShapeBodies(world: PhysicsWorld, balls: ArrayLike<number>): ArrayLike<number> {
   const st = world.collision.shapes;
   if (!st.active) return balls;
-  const c = world.components;
-  const shaped = query(world, [c.Position, c.Velocity, c.Shape, c.Force, Not(c.Ball), Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)]);
+  const shaped = query(world, sleepTerms(world).shaped);
   const n = balls.length + shaped.length;
   if (st.sleepList.length < n) st.sleepList = new Uint32Array(Math.max(n, 2 * st.sleepList.length));
   const out = st.sleepList;

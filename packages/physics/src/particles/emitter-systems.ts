@@ -3,7 +3,7 @@ import { ecsOf } from '../world/ecs-internals.js';
 import { installSystem } from '../world/install.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
-import { trustFiniteOutput } from '../world/trusted-systems.js';
+import { idleWithout, trustFiniteOutput } from '../world/trusted-systems.js';
 import { archetypes, defragment, killSlot } from './archetype.js';
 import { flushBirths, spawnFrom } from './birth-queue.js';
 import { book, type ParticleBook } from './particle-book.js';
@@ -215,3 +215,6 @@ export function emitterSystem(world: PhysicsWorld): void {
   // Once a step, after the births that could take the expired particles' places.
   defragment(world, archetypes(world));
 }
+
+// What makes each system of this module idle (world/trusted-systems.ts idleWithout): its first query.
+idleWithout(lifetimeSystem, (w) => [[w.components.Lifetime]]);

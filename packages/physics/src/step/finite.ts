@@ -4,6 +4,7 @@ import { throwNonFinite } from '../world/errors.js';
 import { fusedForcesOn } from '../world/fused-state.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
+import type { CheckTerms } from '../world/scratch.js';
 import type { StageName } from '../world/stage-names.js';
 
 /**
@@ -91,8 +92,16 @@ function sum4(ents: ArrayLike<number>, dense: boolean, a: Float64Array, b: Float
 
 const EMPTY_PARAMS: ArrayLike<number> = [];
 
-/** The arrays of the check being run, set by checkStageState before each checkFields, which empties it. Not state. */
-const probe: Float64Array[] = [];
+/** What the probes hold between checks: nothing of any world. */
+const NONE = new Float64Array(0);
+
+/**
+ * The arrays of each check, by their count: set just before the check, emptied (`NONE`) just after,
+ * so a check allocates nothing and holds on to no world's stores (the stores' arrays themselves are
+ * read anew each time: a lazy store gets its arrays on first use, a restore may replace them).
+ */
+const probes: Float64Array[][] = [[], [NONE], [NONE, NONE], [NONE, NONE, NONE], [NONE, NONE, NONE, NONE], [], [], []];
+for (const n of [5, 6, 7]) for (let i = 0; i < n; i++) probes[n]!.push(NONE);
 
 // The names the error gives the arrays of each check, in their order (a 2D force check uses the first two).
 const FORCE = ['Force.x', 'Force.y', 'Force.z'];
@@ -111,10 +120,18 @@ const ANGULAR_3D = [
   'Orientation.w',
 ];
 
-/** Appends the x, y (and in 3D z) arrays of the vector store `s` to the probe. */
-function pushVector(s: { x: Float64Array; y: Float64Array; z: Float64Array }, is2D: boolean): void {
-  if (is2D) probe.push(s.x, s.y);
-  else probe.push(s.x, s.y, s.z);
+/** The probe of `n` arrays (see `probes`). */
+function probeOf(n: number): Float64Array[] {
+  return probes[n]!;
+}
+
+/** Puts the x, y (and in 3D z) arrays of the vector store `s` into `A` from index `at`; returns the next index. */
+function putVector(A: Float64Array[], at: number, s: { x: Float64Array; y: Float64Array; z: Float64Array }, is2D: boolean): number {
+  A[at] = s.x;
+  A[at + 1] = s.y;
+  if (is2D) return at + 2;
+  A[at + 2] = s.z;
+  return at + 3;
 }
 
 /**
@@ -140,12 +157,18 @@ function sumFields(ents: ArrayLike<number>, dense: boolean, arrays: readonly Flo
 }
 
 /**
- * Checks the probe's arrays (named `names`, in order) over `ents` after `stage`, then empties the probe;
- * `pooled`: a world with threads splits the probe over them (kernel finiteProbe: the same test).
+ * Checks the arrays `A` (a probe, named `names`, in order) over `ents` after `stage`, then empties the
+ * probe; `pooled`: a world with threads splits the check over them (kernel finiteProbe: the same test).
  * Throws a NonFiniteStateError naming the first entity and field that is NaN or infinite, and the stage.
  */
-function checkFields(world: PhysicsWorld, stage: StageName, ents: ArrayLike<number>, names: readonly string[], pooled: boolean): void {
-  const A = probe;
+function checkFields(
+  world: PhysicsWorld,
+  stage: StageName,
+  ents: ArrayLike<number>,
+  A: Float64Array[],
+  names: readonly string[],
+  pooled: boolean,
+): void {
   const dense = ents.length === world.entityIndex.maxId;
   const par =
     ents.length === 0 || !pooled || world.threadPool === null
@@ -162,8 +185,24 @@ function checkFields(world: PhysicsWorld, stage: StageName, ents: ArrayLike<numb
         );
   const bad = ents.length > 0 && (par ?? sumFields(ents, dense, A)) !== 0;
   const fields = bad ? A.map((a, i) => [names[i]!, a] as const) : null;
-  A.length = 0;
+  A.fill(NONE);
   if (fields !== null) throwNonFinite(world, stage, ents, fields);
+}
+
+/** The query terms of the checks, made once per world (`world.scratch.checkTerms`): no allocation a step. */
+function termsOf(world: PhysicsWorld): CheckTerms {
+  let t = world.scratch.checkTerms;
+  if (t === undefined) {
+    const c = world.components;
+    t = {
+      force: [c.Force],
+      torque: [c.Torque],
+      linear: [c.Position, c.Velocity],
+      angular: world.dimensions === 2 ? [c.AngularVelocity, c.Angle] : [c.AngularVelocity, c.Orientation],
+    };
+    world.scratch.checkTerms = t;
+  }
+  return t;
 }
 
 /**
@@ -175,19 +214,20 @@ function checkFields(world: PhysicsWorld, stage: StageName, ents: ArrayLike<numb
 export function checkStageState(world: PhysicsWorld, stage: StageName, level: 0 | 1 | 2): void {
   const c = world.components;
   const is2D = world.dimensions === 2;
-  const A = probe;
-  A.length = 0;
+  const terms = termsOf(world);
   if (stage === 'forces') {
     const F = c.Force,
       T = c.Torque;
-    const forced = query(world, [F]);
+    const forced = query(world, terms.force);
     if (!fusedForcesOn(world)) {
-      pushVector(F, is2D);
-      checkFields(world, stage, forced, FORCE, true);
+      const A = probeOf(is2D ? 2 : 3);
+      putVector(A, 0, F, is2D);
+      checkFields(world, stage, forced, A, FORCE, true);
     }
-    if (is2D) A.push(T.z);
-    else pushVector(T, false);
-    checkFields(world, stage, query(world, [T]), is2D ? TORQUE_2D : TORQUE, true);
+    const A = probeOf(is2D ? 1 : 3);
+    if (is2D) A[0] = T.z;
+    else putVector(A, 0, T, false);
+    checkFields(world, stage, query(world, terms.torque), A, is2D ? TORQUE_2D : TORQUE, true);
   }
   if (level === 0) return;
   const P = c.Position,
@@ -195,18 +235,24 @@ export function checkStageState(world: PhysicsWorld, stage: StageName, level: 0 
     W = c.AngularVelocity;
   // Velocities first: a NaN velocity makes the position NaN in the same stage, and it is the cause.
   if (level === 2) {
-    pushVector(V, is2D);
-    pushVector(P, is2D);
-    checkFields(world, stage, query(world, [P, V]), is2D ? LINEAR_2D : LINEAR_3D, true);
+    const A = probeOf(is2D ? 4 : 6);
+    putVector(A, putVector(A, 0, V, is2D), P, is2D);
+    checkFields(world, stage, query(world, terms.linear), A, is2D ? LINEAR_2D : LINEAR_3D, true);
   }
   if (is2D) {
-    A.push(W.z, c.Angle.value);
-    checkFields(world, stage, query(world, [W, c.Angle]), ANGULAR_2D, false);
+    const A = probeOf(2);
+    A[0] = W.z;
+    A[1] = c.Angle.value;
+    checkFields(world, stage, query(world, terms.angular), A, ANGULAR_2D, false);
   } else {
     const Q = c.Orientation;
-    pushVector(W, false);
-    A.push(Q.x, Q.y, Q.z, Q.w);
-    checkFields(world, stage, query(world, [W, Q]), ANGULAR_3D, false);
+    const A = probeOf(7);
+    putVector(A, 0, W, false);
+    A[3] = Q.x;
+    A[4] = Q.y;
+    A[5] = Q.z;
+    A[6] = Q.w;
+    checkFields(world, stage, query(world, terms.angular), A, ANGULAR_3D, false);
   }
 }
 
@@ -218,9 +264,10 @@ export function checkStageState(world: PhysicsWorld, stage: StageName, level: 0 
  * @category World and step
  */
 export function reportNonFiniteForces(world: PhysicsWorld, ents: ArrayLike<number>): void {
-  probe.length = 0;
-  pushVector(world.components.Force, world.dimensions === 2);
-  checkFields(world, 'forces', ents, FORCE, false);
+  const is2D = world.dimensions === 2;
+  const A = probeOf(is2D ? 2 : 3);
+  putVector(A, 0, world.components.Force, is2D);
+  checkFields(world, 'forces', ents, A, FORCE, false);
 }
 
 /**

@@ -1,11 +1,13 @@
+import { commitRemovals } from 'bitecs';
 import { clearContactEvents } from '../collision/event-lists.js';
 import { armFusedForces } from '../integrators/fused-gate.js';
 import { assertOptions, describe } from '../validation/validate.js';
 import type { PhysicsWorld, System } from '../world/options.js';
 import { query } from '../world/query.js';
 import { STAGES, type StageName, SUBSTEP_STAGES } from '../world/stage-names.js';
-import { systemNeedsCheck } from '../world/trusted-systems.js';
+import { checkAfter, systemNeedsCheck } from '../world/trusted-systems.js';
 import { checkStageState } from './finite.js';
+import { guardIdle, type StagePlans, stagePlan, stagePlans } from './plan.js';
 
 /** The host's clock (`performance` is not in the ES library this package is built against). */
 const clock = (globalThis as { performance?: { now(): number } }).performance;
@@ -17,31 +19,42 @@ const now: () => number = typeof clock?.now === 'function' ? () => clock.now() :
  * and the field. A system that does not check its own output (a user's, or a collision system for
  * shapes) and is followed by others in the stage is checked as soon as it returns: a later system
  * (the contact solver) would otherwise spread its NaN through the contacts to every body touching
- * the one it wrote, before the end of the stage.
+ * the one it wrote, before the end of the stage. A built-in system whose idle guard finds nothing
+ * for it to do (step/plan.ts) is not called; bitecs' pending removals are committed in its place, as
+ * its own query would have, so the queries of the systems after it see the same lists.
+ * `t0` is the clock's reading (ms) when the stage began, the end of the stage before it: the stage's
+ * time is added to `world.timings` and the clock's reading at its end returned (`t0` for a stage
+ * without systems), one reading a stage.
  */
-function runStage(world: PhysicsWorld, stage: StageName): void {
+function runStage(world: PhysicsWorld, plans: StagePlans, stage: StageName, t0: number): number {
   const systems = world.stages[stage];
   const n = systems.length;
-  if (n === 0) return;
-  const t0 = now();
+  if (n === 0) return t0;
+  const plan = stagePlan(world, plans, stage, systems);
   let level: 0 | 1 | 2 = 0;
   for (let i = 0; i < n; i++) {
     const system = systems[i]!;
-    system(world);
+    // The plan is of the list as the stage began; a system that changed the list leaves the rest unguarded.
+    const guard = plan.systems[i] === system ? plan.guards[i]! : null;
+    if (guard !== null && guardIdle(guard)) commitRemovals(world);
+    else system(world);
     if (stage === 'clearForces') continue;
-    const own = systemNeedsCheck(world, system);
+    const own = plan.systems[i] === system ? checkAfter(world, plan.trust[i]) : systemNeedsCheck(world, system);
     if (own === 2 && i < n - 1) checkStageState(world, stage, 2);
     else if (own > level) level = own;
   }
   if (level !== 0 || stage === 'forces') checkStageState(world, stage, level);
-  world.timings[stage] += now() - t0;
+  const t1 = now();
+  world.timings[stage] += t1 - t0;
+  return t1;
 }
 
 /**
  * Advances the world by one fixed step of `world.dt` seconds: `spawn`, then `substeps` times
  * (`clearForces`, `forces`, `integrate`, `collide`, `constraints`) with h = dt / substeps, then
  * `finalize`. `world.time` advances by h after each substep's integrate stage; `world.timings`
- * holds the milliseconds each stage took in this step.
+ * holds the milliseconds each stage took in this step (the little work between two stages, such as
+ * the fused pass's gate at the start of a substep, counts in the stage after it).
  *
  * @throws RangeError if more entities exist than the world's capacity (entities added with bitecs'
  *   own `addEntity` bypass the check of `createEntity`; this catches them before their data is lost).
@@ -85,7 +98,8 @@ export function step(world: PhysicsWorld): void {
 
 /** The stages of one step (see step). */
 function runStages(world: PhysicsWorld): void {
-  runStage(world, 'spawn');
+  const plans = stagePlans(world);
+  let clock = runStage(world, plans, 'spawn', now());
   const n = world.substeps;
   const h = world.dt / n;
   world.h = h;
@@ -97,13 +111,13 @@ function runStages(world: PhysicsWorld): void {
     // One pass for the forces and the integrator where nothing else touches forces (integrators/fused-gate.ts).
     armFusedForces(world);
     for (const stage of SUBSTEP_STAGES) {
-      runStage(world, stage);
+      clock = runStage(world, plans, stage, clock);
       if (stage === 'integrate') world.time = t0 + (s + 1) * h;
     }
   }
   world.time = t0 + world.dt;
   if (movers) restoreStepStart(world, movers);
-  runStage(world, 'finalize');
+  runStage(world, plans, 'finalize', clock);
 }
 
 const moverTerms = (world: PhysicsWorld) => [world.components.Position, world.components.Velocity];

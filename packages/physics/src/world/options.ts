@@ -182,7 +182,7 @@ export interface PhysicsWorldContext {
    * Internal: the buffers, kernel arguments and caches the systems and snapshots keep for this world
    * between calls (world/scratch.ts). Not state: snapshots do not store it, restore leaves it as it is.
    */
-  readonly scratch: WorldScratch;
+  readonly scratch: WorldScratch<PhysicsWorld>;
 }
 
 /**

@@ -1,4 +1,6 @@
+import type { QueryResult } from 'bitecs';
 import type { KernelArray } from '../threads/kernel-types.js';
+import type { StageName } from './stage-names.js';
 
 /**
  * A world's scratch (`world.scratch`): the buffers, kernel argument lists and caches that the systems
@@ -11,7 +13,9 @@ import type { KernelArray } from '../threads/kernel-types.js';
  * as it is; a world restored from another's snapshot makes its own as it steps.
  *
  * The types live here (the world layer), not in the modules that use them, so that the world's type
- * names no module above it. Every field is on the object from the world's creation (`undefined`
+ * names no module above it. Those that hold a system function or a check of the world take the world's
+ * type as a parameter `W` (world/options.ts PhysicsWorld), so this module names no module that names it
+ * (an import cycle, test/architecture/imports.test.ts). Every field is on the object from the world's creation (`undefined`
  * until its user first runs, or an empty Map), so the object has one layout in every world.
  */
 
@@ -138,20 +142,114 @@ export interface QueryTwin {
   peerVersion: number;
 }
 
+/** The query terms of the force accumulators' clear (forces/clear.ts): every body with `Force`, with `Torque`. */
+export interface ClearTerms {
+  force: object[];
+  torque: object[];
+}
+
+/** The query terms of the integrators' body lists (integrators/queries.ts), one list each. */
+export interface MoverTerms {
+  forced: object[];
+  free: object[];
+  kinematic: object[];
+  torqued: object[];
+  tensor: object[];
+  spinning2D: object[];
+  spinning3D: object[];
+  simpleSpinning3D: object[];
+}
+
+/** The query terms of the sleep stage (islands/sleep.ts). */
+export interface SleepTerms {
+  /** Awake dynamic balls. */
+  balls: object[];
+  /** Awake dynamic bodies with a 2D shape and no ball. */
+  shaped: object[];
+  /** Each component that keeps its body awake (time-varying forces), alone. */
+  awake: object[][];
+  spring: object[];
+  sleeping: object[];
+}
+
+/** The query terms of the stages' finiteness checks (step/finite.ts). */
+export interface CheckTerms {
+  force: object[];
+  torque: object[];
+  linear: object[];
+  angular: object[];
+}
+
+/**
+ * What the fused gate resolved of a world's forces stage (integrators/fused-gate.ts), kept while the
+ * stage holds the same systems in the same order: whether its systems allow the fused pass at all (each
+ * absorbed law exactly once, every other one torque-only or an idle-when-empty law), and the live query
+ * arrays of the laws that must be idle, with the fewest entities each acts on. `W` is the world's type.
+ */
+export interface ForcesPlan<W> {
+  /** The forces stage's systems the plan was made for, in order (a copy). */
+  forces: ((world: W) => void)[];
+  allowed: boolean;
+  idle: QueryResult[];
+  least: number[];
+  /** The query of every body with a force accumulator. */
+  force: QueryResult;
+}
+
+/**
+ * How a system is trusted not to write NaN (world/trusted-systems.ts `trustFiniteOutput`): its scope,
+ * and the condition it is trusted under. `W` is the world's type.
+ */
+export interface SystemTrust<W> {
+  readonly scope: 'all' | 'linear';
+  readonly idle?: (world: W) => boolean;
+}
+
+/**
+ * What `step` resolved once of a stage's systems (step/plan.ts): for each system, the live query arrays
+ * whose emptiness means it has nothing to do (its idle guard), and how it is trusted not to write NaN.
+ * Remade when the stage's list of systems or the systems' marks change. `W` is the world's type.
+ */
+export interface StagePlan<W> {
+  /** The stage's systems the plan was made for, in order (a copy, compared with the stage's list). */
+  readonly systems: ((world: W) => void)[];
+  /** For each system, its idle guard's live query arrays (idle when all are empty), or null: always run. */
+  readonly guards: (readonly QueryResult[] | null)[];
+  /** For each system, how it is trusted not to write NaN (world/trusted-systems.ts finiteTrustOf). */
+  readonly trust: (SystemTrust<W> | undefined)[];
+  /** The marks' version (world/trusted-systems.ts systemMarksVersion) the plan was made at. */
+  readonly version: number;
+}
+
+/** A world's stage plans, one a stage (null until the stage first runs). `W` is the world's type. */
+export type StagePlans<W> = Record<StageName, StagePlan<W> | null>;
+
 /**
  * The per-world scratch record, `world.scratch` (see the module comment). Each field names the module
- * that owns it; no other module reads or writes it.
+ * that owns it; no other module reads or writes it. `W` is the world's type (world/options.ts PhysicsWorld).
  * @category World and step
  */
-export interface WorldScratch {
+export interface WorldScratch<W> {
   /** forces/gravity.ts: the attractors packed for the threads (6 numbers a source), written in full before each use. */
   attractorSources: Float64Array | undefined;
   /** step/step.ts: positions (x, y, z by slot) of the movers at the start of a step with substeps, written back to PreviousPosition at its end. */
   stepStart: [Float64Array, Float64Array, Float64Array] | undefined;
   /** integrators/queries.ts: the query terms of the fused pass's three body lists (built from `world.components` once). */
   fusedTerms: readonly [object[], object[], object[]] | undefined;
-  /** integrators/fused-gate.ts: the query terms of each force law's idle check, by law system (built once each). */
-  readonly idleTerms: Map<object, object[]>;
+  /** integrators/queries.ts: the query terms of the integrators' body lists (built from `world.components` once). */
+  moverTerms: MoverTerms | undefined;
+  /** integrators/fused-gate.ts: what the gate resolved of the forces stage's systems (remade when they change). */
+  forcesPlan: ForcesPlan<W> | undefined;
+  /** forces/clear.ts: the query terms of the force and torque clear (built from `world.components` once). */
+  clearTerms: ClearTerms | undefined;
+  /** forces/gravity.ts: the query terms of the bodies attractors pull (built from `world.components` once). */
+  pulledTerms: object[] | undefined;
+  /** islands/sleep.ts: the query terms of the sleep stage (built from `world.components` once). */
+  sleepTerms: SleepTerms | undefined;
+  /** step/finite.ts: the query terms of the stages' finiteness checks (built from `world.components` once). */
+  checkTerms: CheckTerms | undefined;
+  /** step/plan.ts: each stage's plan (its systems' idle guards and trust), made when the stage first runs, remade when its systems or their marks change. */
+  stagePlans: StagePlans<W> | undefined;
   /** collision/broadphase/grid-pairs.ts: the cell pass's pair buffers, one set a range, grown as needed. */
   pairBuffers: PairBuffers | undefined;
   /** collision/narrowphase/balls-threads.ts: the threaded ball-ball contacts' buffers and arguments. */
@@ -181,12 +279,18 @@ export interface WorldScratch {
  * A new world's scratch: every field present, nothing made yet (createPhysicsWorld).
  * @category World and step
  */
-export function createWorldScratch(): WorldScratch {
+export function createWorldScratch<W>(): WorldScratch<W> {
   return {
     attractorSources: undefined,
     stepStart: undefined,
     fusedTerms: undefined,
-    idleTerms: new Map(),
+    moverTerms: undefined,
+    forcesPlan: undefined,
+    clearTerms: undefined,
+    pulledTerms: undefined,
+    sleepTerms: undefined,
+    checkTerms: undefined,
+    stagePlans: undefined,
     pairBuffers: undefined,
     ballContacts: undefined,
     ballPrepare: undefined,

@@ -1,4 +1,5 @@
 import type { PhysicsWorld, System } from './options.js';
+import type { SystemTrust } from './scratch.js';
 import type { StageName } from './stage-names.js';
 
 /** The built-in systems that need no finite-state check after them (they write no body state, or check what they write): marked when their feature installs, read by `step` (step/finite.ts). */
@@ -9,8 +10,29 @@ import type { StageName } from './stage-names.js';
  */
 export type FiniteScope = 'all' | 'linear';
 
+/**
+ * How a system is trusted (`trustFiniteOutput`): its scope, and the condition it is trusted under.
+ * @category World and step
+ */
+export type FiniteTrust = SystemTrust<PhysicsWorld>;
+
 // A WeakMap: keyed by a system function, code shared by every world (marked once when its feature installs), not by a world.
-const trusted = new WeakMap<System, { scope: FiniteScope; idle?: (world: PhysicsWorld) => boolean }>();
+const trusted = new WeakMap<System, FiniteTrust>();
+
+/**
+ * Counts the changes of the marks below (`trustFiniteOutput`, `idleWithout`): `step` keeps what it
+ * resolved of a stage's systems (step/plan.ts) while this and the stage's list stay the same.
+ */
+let marksVersion = 0;
+
+/**
+ * The version of the systems' marks (see `marksVersion`): any call of `trustFiniteOutput` or
+ * `idleWithout` changes it.
+ * @category World and step
+ */
+export function systemMarksVersion(): number {
+  return marksVersion;
+}
 
 /**
  * Marks built-in systems that write no body state, or check what they write and throw
@@ -22,6 +44,7 @@ const trusted = new WeakMap<System, { scope: FiniteScope; idle?: (world: Physics
  */
 export function trustFiniteOutput(systems: readonly System[], scope: FiniteScope = 'all', idle?: (world: PhysicsWorld) => boolean): void {
   for (const s of systems) trusted.set(s, idle ? { scope, idle } : { scope });
+  marksVersion++;
 }
 
 /**
@@ -46,7 +69,24 @@ export function stageNeedsCheck(world: PhysicsWorld, stage: StageName, systems: 
  * @category World and step
  */
 export function systemNeedsCheck(world: PhysicsWorld, system: System): 0 | 1 | 2 {
-  const t = trusted.get(system);
+  return checkAfter(world, trusted.get(system));
+}
+
+/**
+ * How `system` is trusted (`trustFiniteOutput`), or undefined: not trusted. Valid while
+ * `systemMarksVersion` stays the same.
+ * @category World and step
+ */
+export function finiteTrustOf(system: System): FiniteTrust | undefined {
+  return trusted.get(system);
+}
+
+/**
+ * What must be checked after a system trusted as `t` (`finiteTrustOf`; undefined: not trusted) ran
+ * in `world`: as `systemNeedsCheck`.
+ * @category World and step
+ */
+export function checkAfter(world: PhysicsWorld, t: FiniteTrust | undefined): 0 | 1 | 2 {
   if (t === undefined || (t.idle !== undefined && !t.idle(world))) return 2;
   return t.scope === 'linear' ? 1 : 0;
 }
@@ -58,3 +98,30 @@ export function systemNeedsCheck(world: PhysicsWorld, system: System): 0 | 1 | 2
  * When the query holds every live id (a world of particles), its ids are 1..maxId and the loop runs
  * over that range directly, in memory order.
  */
+
+/** The idle guards of built-in systems (see `idleWithout`): each a function of the world giving lists of query terms, or null. */
+// A WeakMap: keyed by a system function, code shared by every world (guarded once when its module loads), not by a world.
+const idleGuards = new WeakMap<System, (world: PhysicsWorld) => readonly object[][] | null>();
+
+/**
+ * Declares that the built-in `system` has nothing to do in `world` while every query of `terms(world)`
+ * (one or more lists of query terms; null: no guard in that world) is empty: it then writes nothing
+ * and returns at once, having made its queries only. `step` skips it then without calling it (step/plan.ts): it reads the live arrays of
+ * those queries, and commits bitecs' pending removals as the system's own query would have. Each list
+ * must be a query the system makes before anything else it does (or one whose emptiness implies the
+ * emptiness of such a query), and the system must return when those queries are all empty.
+ * @category World and step
+ */
+export function idleWithout(system: System, terms: (world: PhysicsWorld) => readonly object[][] | null): void {
+  idleGuards.set(system, terms);
+  marksVersion++;
+}
+
+/**
+ * The query terms whose emptiness makes `system` idle in `world` (`idleWithout`); null for a system
+ * without such a guard there (a user's system always runs).
+ * @category World and step
+ */
+export function idleGuardTerms(system: System, world: PhysicsWorld): readonly object[][] | null {
+  return idleGuards.get(system)?.(world) ?? null;
+}
