@@ -364,6 +364,72 @@ export function ringWay(b: Pick<RingBearing, 'side' | 'up' | 'bearing'>): RingWa
   return { side, up: way(b.up), sideAmount: Math.abs(b.bearing) > Math.PI / 2 ? 'far ' : amount(b.side), upAmount: amount(b.up) };
 }
 
+/** Who reads a lesson tip (`lessonTipText`). */
+export interface TipReader {
+  /** Touch first (a phone): the tip names the on-screen stick, not the arrow keys. */
+  touch: boolean;
+  /** A small scene (a phone): the shorter wording, which keeps the tip to two lines at 390 px. */
+  compact: boolean;
+  /** The pilot's pitch (↓ climbs, as a real stick pulled back). */
+  pilotPitch: boolean;
+}
+
+/** Every ring way: side and height each -1, 0 or 1, each with each amount (all `ringWay` gives and more; tests find the longest tip with it). */
+export const RING_WAYS: readonly RingWay[] = Object.freeze(
+  ([-1, 0, 1] as const).flatMap((side) =>
+    ([-1, 0, 1] as const).flatMap((up) =>
+      ['', 'a little ', 'far '].flatMap((sideAmount) => ['', 'a little ', 'far '].map((upAmount) => ({ side, up, sideAmount, upAmount }))),
+    ),
+  ),
+);
+
+/**
+ * The lesson tip for ring `ring` (0-based, 0 to 3: ring 1 is the start's, rings 2 to 4 the lessons,
+ * `LESSONS`) lying `way` from the line flown, in words for someone who has never flown: which way it
+ * lies (right or left, higher or lower, how much) and what to do. On a phone (`reader.compact`) the
+ * words are shorter ("far right, a little higher"), so the tip stays within two lines whatever it
+ * names; with `reader.touch` it names the stick, else the arrow keys.
+ * @throws RangeError on a ring that is not an integer in [0, 3].
+ */
+export function lessonTipText(ring: number, way: RingWay, reader: TipReader): string {
+  if (!(Number.isInteger(ring) && ring >= 0 && ring <= 3))
+    throw new RangeError(`lessonTipText: ring must be an integer in [0, 3], got ${ring}`);
+  const { touch, compact } = reader;
+  const input = touch ? 'stick' : 'keys';
+  if (ring === 0)
+    return compact
+      ? `Fly through the yellow rings. ⊕ marks where you pass if you let go of the ${input}.`
+      : `Fly through the yellow rings. The marker ⊕ shows where you will pass if you let go of the ${input}.`;
+  const w = way;
+  const side = w.side > 0 ? 'right' : 'left';
+  const sideWords = compact && w.sideAmount ? `${w.sideAmount}${side}` : `${w.sideAmount}to the ${side}`;
+  const where =
+    [w.side ? sideWords : '', w.up ? `${w.upAmount}${w.up > 0 ? 'higher' : 'lower'}` : ''].filter(Boolean).join(compact ? ', ' : ' and ') ||
+    'straight ahead';
+  const arrow = w.side > 0 ? '→' : '←';
+  const key = w.up > 0 !== reader.pilotPitch ? '↑' : '↓';
+  const stickUp = key === '↑' ? 'up' : 'down';
+  const turnDo = touch ? `push the stick ${side}` : `hold ${arrow}`;
+  const climbDo = touch ? `push the stick ${stickUp}` : `hold ${key}`;
+  const climb = w.up > 0 ? 'climb' : 'dive';
+  const n = `Ring ${ring + 1} is ${where}`;
+  if (!w.side && !w.up) return `${n}: let go and fly on through it.`;
+  if (w.side && w.up) {
+    if (compact) return `${n}: ${touch ? `push the stick ${side} and ${stickUp}` : `hold ${arrow} and ${key}`} until ⊕ is in it.`;
+    return touch
+      ? `${n}: push the stick ${side} and ${stickUp}; let go when ⊕ is in the ring.`
+      : `${n}: hold ${arrow} to bank and ${key} to ${climb}; let go when the marker ⊕ is in the ring.`;
+  }
+  if (w.up)
+    return compact
+      ? `${n}: ${climbDo} to ${climb}, then let go to fly level.`
+      : `${n}: ${climbDo} to ${climb} gently, and let go to fly level.`;
+  if (compact) return `${n}: ${turnDo} to tip the wings and turn, then let go.`;
+  if (ring === 1)
+    return `${n}. A plane turns by tipping its wings (banking): ${turnDo} and it leans and turns ${side}; let go to fly straight.`;
+  return `${n}: tip the wings ${side} (${touch ? `push the stick ${side}` : arrow}) to turn, then let go.`;
+}
+
 /**
  * Where a straight line from `position` (m, world) along `velocity` (m/s, world) meets `ring`'s
  * plane: the time to get there (s) and the distance of that point from the ring's centre (m). A

@@ -67,10 +67,12 @@ import {
   courseTime,
   flyRings,
   layCourse,
+  lessonTipText,
   MISS_PENALTY,
   nextRing,
   predictThroughRing,
   RING_RADIUS,
+  RING_WAYS,
   type Ring,
   type RingWay,
   ringBearing,
@@ -960,31 +962,7 @@ function lessonTip(): string {
   // Ring 1's tip is the start's, up while the flight waits; on a phone each tip goes a little after
   // the pilot has acted on it (TIP_LINGER), so it does not cover the sky all the way to its ring.
   if ((i === 0 && !holding) || shell.world.time > tipGoneAt) return '';
-  if (i === 0)
-    return `Fly through the yellow rings. The marker ⊕ shows where you will pass if you let go of the ${touchFirst ? 'stick' : 'keys'}.`;
-  const w = tipWay;
-  const side = w.side > 0 ? 'right' : 'left';
-  const where =
-    [w.side ? `${w.sideAmount}to the ${side}` : '', w.up ? `${w.upAmount}${w.up > 0 ? 'higher' : 'lower'}` : '']
-      .filter(Boolean)
-      .join(' and ') || 'straight ahead';
-  const turnDo = touchFirst ? `push the stick ${side}` : `hold ${w.side > 0 ? '→' : '←'}`;
-  const key = climbKey(w.up);
-  const climbDo = touchFirst ? `push the stick ${key === '↑' ? 'up' : 'down'}` : `hold ${key}`;
-  const climb = w.up > 0 ? 'climb' : 'dive';
-  const n = `Ring ${i + 1} is ${where}`;
-  if (!w.side && !w.up) return `${n}: let go and fly on through it.`;
-  if (w.side && w.up)
-    return touchFirst
-      ? `${n}: push the stick ${side} and ${key === '↑' ? 'up' : 'down'}; let go when ⊕ is in the ring.`
-      : `${n}: hold ${w.side > 0 ? '→' : '←'} to bank and ${key} to ${climb}; let go when the marker ⊕ is in the ring.`;
-  if (w.up)
-    return compact ? `${n}: ${climbDo} to ${climb}; let go to fly level.` : `${n}: ${climbDo} to ${climb} gently, and let go to fly level.`;
-  if (i === 1)
-    return compact
-      ? `${n}: ${turnDo} to tip the wings and turn; let go to fly straight.`
-      : `${n}. A plane turns by tipping its wings (banking): ${turnDo} and it leans and turns ${side}; let go to fly straight.`;
-  return `${n}: tip the wings ${side} (${touchFirst ? `push the stick ${side}` : w.side > 0 ? '→' : '←'}) to turn, then let go.`;
+  return lessonTipText(i, tipWay, { touch: touchFirst, compact, pilotPitch: params.pilotPitch });
 }
 
 /** What the tip's second line asks while the flight waits for the pilot (`holding`): the input that goes on. */
@@ -1305,6 +1283,9 @@ shell.expose({
   rings: () => rings.map((r) => ({ ...r })),
   /** The lesson tip over the scene now ('' when none shows). */
   tip: () => tipText,
+  /** Every tip this page can show (./course.ts lessonTipText for rings 1 to 4 and each of RING_WAYS), for its reader: the worst case's fit is tested. */
+  tipTexts: () =>
+    [0, 1, 2, 3].flatMap((i) => RING_WAYS.map((w) => lessonTipText(i, w, { touch: touchFirst, compact, pilotPitch: params.pilotPitch }))),
   /** Game time at which the tip now shown goes, s (Infinity: it stays while its ring is next). */
   tipUntil: () => tipGoneAt,
   /** The banner's text now ('' when none shows) and the warning. */

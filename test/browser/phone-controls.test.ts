@@ -196,6 +196,37 @@ describe('phone controls', () => {
     await g.close();
   });
 
+  it('flight simulator: every lesson tip the phone can show (all rings, both ways named, far or a little) fits in two lines', async () => {
+    const g = await h.openGame('flight-simulator', PHONE);
+    // Each text the game can write (./course.ts lessonTipText over every ring and way), put in the
+    // tip's own box with the wait line under it, as the flight shows it while it waits: the box stays
+    // within 12 % of the scene's height (the phone-flight case above), and no text takes more than
+    // two lines (one line is 13 px x 1.3 high).
+    const fits = await g.page.evaluate(() => {
+      const texts = (window.game as unknown as { tipTexts(): string[] }).tipTexts();
+      const tip = document.querySelector<HTMLElement>('[data-hud="tip"]')!,
+        words = tip.firstElementChild as HTMLElement,
+        wait = document.querySelector<HTMLElement>('[data-hud="tip-wait"]')!;
+      const before = [words.textContent, wait.textContent, wait.style.display, tip.style.display];
+      tip.style.display = 'block';
+      wait.style.display = 'block';
+      wait.textContent = 'Paused: move the stick to fly on.';
+      const stage = document.querySelector('canvas')!.getBoundingClientRect().height,
+        line = parseFloat(getComputedStyle(words).lineHeight);
+      const measured = texts.map((text) => {
+        words.textContent = text;
+        return { text, height: tip.getBoundingClientRect().height, lines: Math.round(words.getBoundingClientRect().height / line) };
+      });
+      [words.textContent, wait.textContent, wait.style.display, tip.style.display] = before;
+      return { count: texts.length, longest: Math.max(...texts.map((t) => t.length)), stage, measured };
+    });
+    expect(fits.count).toBe(4 * 81);
+    // The longest texts name two ways with amounts ("far right, a little higher"): they are measured.
+    expect(fits.longest).toBeGreaterThan(70);
+    expect(fits.measured.filter((m) => m.lines > 2 || !(m.height < 0.12 * fits.stage))).toEqual([]);
+    expect(Math.max(...fits.measured.map((m) => m.lines))).toBe(2);
+  });
+
   it('rotating cube: holding Yaw ▶ spins the cube', async () => {
     const g = await h.openGame('rotating-cube', { ...PHONE, query: { mode: 'cube' } });
     await hold(g.page, 'stop spinning', 100);

@@ -21,6 +21,7 @@ import {
   flyRings,
   LESSONS,
   layCourse,
+  lessonTipText,
   MISS_PENALTY,
   MISS_RANGE,
   nextRing,
@@ -29,6 +30,7 @@ import {
   RING_GRADIENT,
   RING_RADIUS,
   RING_STEP,
+  RING_WAYS,
   type Ring,
   reachable,
   ringBearing,
@@ -329,5 +331,46 @@ describe('flight simulator course', () => {
     expect(TIP_OFFSET.straight).toBeCloseTo(RING_RADIUS / 3, 12);
     expect(() => ringBearing(ring, [0, 0, 0], [0, 5, 0])).toThrow(/ringBearing: velocity must have a horizontal part/);
     expect(() => ringBearing(ring, [0, Number.NaN, 0], [1, 0, 0])).toThrow(/ringBearing: position must be 3 finite numbers/);
+  });
+
+  it("the lesson tips name the ways the ring lies and the stick or keys for them; a phone's are shorter", () => {
+    const phone = { touch: true, compact: true, pilotPitch: false };
+    const desk = { touch: false, compact: false, pilotPitch: false };
+    // 3 sides x 3 heights x 3 x 3 amounts.
+    expect(RING_WAYS.length).toBe(81);
+    for (const reader of [phone, desk, { ...phone, compact: false }, { ...phone, pilotPitch: true }])
+      for (const i of [1, 2, 3])
+        for (const w of RING_WAYS) {
+          const text = lessonTipText(i, w, reader);
+          const where = text.split(/[:.] /)[0]!;
+          expect(where.startsWith(`Ring ${i + 1} is `), text).toBe(true);
+          // The ways named are the ring's ways, and no other.
+          expect(/\bright\b/.test(where), text).toBe(w.side > 0);
+          expect(/\bleft\b/.test(where), text).toBe(w.side < 0);
+          expect(/\bhigher\b/.test(where), text).toBe(w.up > 0);
+          expect(/\blower\b/.test(where), text).toBe(w.up < 0);
+          expect(/straight ahead/.test(where), text).toBe(!w.side && !w.up);
+          if (w.side) expect(where, text).toContain(w.sideAmount.trim());
+          if (w.up) expect(where, text).toContain(w.upAmount.trim());
+          if (reader.touch) {
+            expect(text, text).toMatch(/^Ring \d is [^:.]*(left|right|higher|lower|straight ahead)[^:.]*[:.] .*(push the stick|let go)/);
+            expect(text, text).not.toMatch(/[←→↑↓]/);
+            if (w.side) expect(text, text).toContain(`push the stick ${w.side > 0 ? 'right' : 'left'}`);
+            // The stick's way for the height: up climbs, or down with the pilot's pitch.
+            if (w.up)
+              expect(text, text).toMatch(new RegExp(`push the stick (\\w+ and )?${w.up > 0 !== reader.pilotPitch ? 'up' : 'down'}\\b`));
+          } else if (w.side) expect(text, text).toContain(w.side > 0 ? '→' : '←');
+        }
+    // The phone's longest (both ways, both with amounts) is shorter than the desktop's wording of it;
+    // it was 107 characters and took three lines at 390 px (test/browser/phone-controls.test.ts measures).
+    const worst = { side: 1, up: 1, sideAmount: 'a little ', upAmount: 'a little ' } as const;
+    expect(lessonTipText(1, worst, { ...phone, compact: false })).toBe(
+      'Ring 2 is a little to the right and a little higher: push the stick right and up; let go when ⊕ is in the ring.',
+    );
+    expect(lessonTipText(1, worst, phone)).toBe('Ring 2 is a little right, a little higher: push the stick right and up until ⊕ is in it.');
+    const longest = Math.max(...[1, 2, 3].flatMap((i) => RING_WAYS.map((w) => lessonTipText(i, w, phone).length)));
+    expect(longest).toBeLessThanOrEqual(90);
+    expect(lessonTipText(0, worst, phone)).toMatch(/^Fly through the yellow rings\. ⊕ .*stick\.$/);
+    expect(() => lessonTipText(4, worst, phone)).toThrow(/lessonTipText: ring must be an integer in \[0, 3\], got 4/);
   });
 });
