@@ -16,7 +16,10 @@
  * Input: a click drops a ball at the pointer, and a pull throws one slingshot-style from where the
  * press began, on a ball or not (opposite to
  * the pull, faster the longer it is, hoop.ts slingVelocity), with a dotted arc of its flight while
- * pulling (hoop.ts throwPath), bounces off the walls, the hoop and its net included. The net stops a
+ * pulling (hoop.ts throwPath), bounces off the walls, the hoop and its net included. A pull taken back
+ * to within CANCEL_PULL of its press point ("release here to cancel") and let go throws nothing; the
+ * full-speed pull is shortened for a press low on the screen (pressFullPull), and the round's end
+ * ends an aim under way. The net stops a
  * ball from below or the side (hoop.ts netContact). The player's balls are basketballs, all the same
  * size (hoop.ts PLAYER_RADIUS). Holding still on a ball or crate for HOLD_MS, 1 s (a ring fills from
  * HOLD_RING_MS on, labelled), picks it up with a mouse joint to carry it around; any pull before then
@@ -119,6 +122,15 @@ const BALL_PALETTE = [0x4cc9f0, 0xf15bb5, 0x9b5de5, 0x00bbf9, 0x00f5d4, 0xb8a1ff
 const CLICK_SLOP = 6;
 /** The same for a finger, CSS px: a fingertip resting on glass wobbles a few pixels. */
 const TOUCH_SLOP = 12;
+/**
+ * A pull shorter than this, CSS px (or than the thrown ball's drawn radius, if that is larger), let
+ * go cancels the aim: no throw, no shot, the streak kept. Dragging back onto the ball takes it back.
+ */
+const CANCEL_PULL = 15;
+/** The shortest full-speed pull, CSS px, however little room there is under the press (see pressFullPull). */
+const MIN_FULL_PULL = 80;
+/** Kept free between the full-speed pull's end and the viewport's bottom edge, CSS px. */
+const EDGE_MARGIN = 2;
 
 /** A screen taller than wide (a phone held upright) gets the tall box, which fills it. */
 const TALL = window.innerHeight > 1.2 * window.innerWidth;
@@ -504,6 +516,8 @@ function playHoop(world: PhysicsWorld): void {
     }
   }
   if (roundTick(round, world.dt)) {
+    // Time is up: an aim under way ends with nothing thrown (its arc and ball went on being drawn under the end card).
+    endAim();
     keepBest();
     sound.chime(440, 0.6);
     setTimeout(() => sound.chime(554.37, 0.5), 160);
@@ -834,13 +848,51 @@ function fullPull(): number {
 }
 
 /**
+ * The full-speed pull, CSS px, of a press at viewport height `clientY`, CSS px: fullPull, or less
+ * when the viewport has less room than that under the press (down to MIN_FULL_PULL), so a straight
+ * pull down from a heap ball still reaches MAX_THROW_SPEED before the pointer meets the window's
+ * bottom edge, where a mouse stops.
+ */
+function pressFullPull(clientY: number): number {
+  const room = (window.innerHeight || clientY) - clientY - EDGE_MARGIN;
+  return Math.min(fullPull(), Math.max(MIN_FULL_PULL, room));
+}
+/** The current press's full-speed pull, CSS px (pressFullPull at the press). */
+let fullPullNow = 420;
+
+/** The cancel zone's radius round the press, CSS px: CANCEL_PULL, or the thrown ball's drawn radius if larger. */
+function cancelRadius(): number {
+  const c = shell.world.components;
+  const r = pressBall !== 0 && handles.balls.includes(pressBall) ? c.Ball.radius[slotOf(pressBall)]! : PLAYER_RADIUS;
+  return Math.max(CANCEL_PULL, renderer.camera.toScreenLength(r));
+}
+
+/** Whether the pull now is in the cancel zone: pulled (past the slop) and then back within cancelRadius of the press. */
+function inCancelZone(): boolean {
+  return dragged && Math.hypot(lastX - startX, lastY - startY) < cancelRadius();
+}
+
+/**
+ * Ends the current press with nothing done (no throw, no drop, no shot): the aim when the round ends
+ * under it. The pointer's later release is then ignored.
+ */
+function endAim(): void {
+  if (pointerId === -1) return;
+  if (canvas.hasPointerCapture(pointerId)) canvas.releasePointerCapture(pointerId);
+  pointerId = -1;
+  pressBall = 0;
+  dragged = false;
+  clearTimeout(holdTimer);
+}
+
+/**
  * The throw the pointer would make now: start (m), velocity (m/s) of the slingshot, and the ball's
  * radius (m) and mass (kg): from the pressed ball's centre when the press began on a ball (that ball
  * is thrown), else from the press point (a new basketball).
  */
 function currentThrow(): { x: number; y: number; vx: number; vy: number; radius: number; mass: number } {
   const cam = renderer.camera;
-  const [vx, vy] = slingVelocity(lastX - startX, lastY - startY, fullPull());
+  const [vx, vy] = slingVelocity(lastX - startX, lastY - startY, fullPullNow);
   if (pressBall !== 0 && handles.balls.includes(pressBall)) {
     const c = shell.world.components,
       s = slotOf(pressBall);
@@ -880,6 +932,7 @@ canvas.addEventListener('pointerdown', (event) => {
   dragged = false;
   pressBall = ballUnder(renderer.camera.toWorldX(startX), renderer.camera.toWorldY(startY));
   slop = event.pointerType === 'touch' ? TOUCH_SLOP : CLICK_SLOP;
+  fullPullNow = pressFullPull(event.clientY);
   holdStart = performance.now();
   clearTimeout(holdTimer);
   const { clientX, clientY, pointerId: id, pointerType, timeStamp } = event;
@@ -938,7 +991,7 @@ canvas.addEventListener('pointermove', (event) => {
 
 /**
  * Pointer released: a click drops a ball where it was pressed; a pull throws one from there,
- * slingshot-style. Only a throw counts as a shot (and the clock waits for the first basket).
+ * slingshot-style; a pull taken back into the cancel zone (inCancelZone) does nothing. Only a throw counts as a shot (and the clock waits for the first basket).
  */
 function release(event: PointerEvent, cancelled: boolean): void {
   if (event.pointerId !== pointerId) return;
@@ -949,7 +1002,9 @@ function release(event: PointerEvent, cancelled: boolean): void {
   if (Math.hypot(lastX - startX, lastY - startY) > slop) dragged = true;
   const t = currentThrow();
   const ball = pressBall;
+  const cancel = inCancelZone();
   pressBall = 0;
+  if (cancel) return;
   if (!dragged) shoot(cam().toWorldX(startX), cam().toWorldY(startY), 0, 0, false);
   else if (ball !== 0 && handles.balls.includes(ball)) throwBall(ball, t.vx, t.vy);
   else shoot(t.x, t.y, t.vx, t.vy);
@@ -1020,7 +1075,7 @@ canvas.addEventListener('pointercancel', (event) => release(event, true));
 
 /** The dotted arc of the throw the pointer would make now: its points, m (flat x, y pairs), or [] when not pulling. */
 function aimPath(): number[] {
-  if (pointerId === -1 || !dragged) return [];
+  if (pointerId === -1 || !dragged || inCancelZone()) return [];
   const t = currentThrow();
   return arcOf(t, pressBall);
 }
@@ -1130,6 +1185,14 @@ function drawPointer(): void {
       overlay.stroke({ width: 4, color: 0xffd166, alpha: 0.95 });
       showHoldLabel('hold still to pick up · pull to throw', startX, startY - r - 12);
     }
+    return;
+  }
+  // Pulled back into the cancel zone: a dashed ring round it and what letting go does, no arc.
+  if (inCancelZone()) {
+    const cr = cancelRadius();
+    overlay.circle(startX, startY, cr).stroke({ width: 2, color: 0xffffff, alpha: 0.8 });
+    overlay.circle(startX, startY, cr + 3).stroke({ width: 2, color: 0x0b0f16, alpha: 0.5 });
+    showHoldLabel('release here to cancel', startX, startY - cr - 8);
     return;
   }
   // From the ball being thrown: the pressed ball's centre, or the press point for a new basketball.
@@ -1617,7 +1680,7 @@ function updateStatus(): void {
         ? `Score once to start the ${round.seconds} s clock`
         : round.streak > 0
           ? `${round.streak} in a row: the next basket scores ×${streakMultiplier(round.streak)}`
-          : `Throw balls through the hoop! ${round.seconds} s`;
+          : 'Throw balls through the hoop!';
   const numbers = `Points ${round.points} · ×${streakMultiplier(round.streak)} · Time ${secs} s · Best ${best}`;
   const throwHow = touch ? 'Press, pull back and let go to throw' : 'Press, drag back and let go to throw';
   // While playing the hint takes turns (5 s each) between the heap's balls and the streak.
@@ -1729,8 +1792,14 @@ shell.expose({
       s = slotOf(eid);
     return arcOf({ x: c.Position.x[s]!, y: c.Position.y[s]!, vx, vy, radius: c.Ball.radius[s]!, mass: c.Mass.value[s]! }, eid);
   },
-  /** The dotted arc drawn while pulling a throw: its points, m (flat x, y pairs), or [] when not pulling. */
+  /** The dotted arc drawn while pulling a throw: its points, m (flat x, y pairs), or [] when not pulling or in the cancel zone. */
   aimPath: (): number[] => aimPath(),
+  /** Whether a press is under way (pressed and not yet released, cancelled or ended by the round's end). */
+  aiming: (): boolean => pointerId !== -1,
+  /** The label over the press or the carried ball ('' when none shows), e.g. 'release here to cancel'. */
+  aimLabel: (): string => (holdLabel.visible ? holdLabel.text : ''),
+  /** The full-speed pull of the current (or last) press, CSS px. */
+  fullPull: (): number => fullPullNow,
   /** The status row's text (goal, numbers, hint). */
   statusText: (): string => status.element.innerText,
   /** Removes ball `eid`. @throws RangeError if it is not a ball of the scene. */

@@ -7,7 +7,9 @@
  * trails, no plain physics walls), and the sandbox: a click (which starts no clock) and a slingshot
  * pull spawn balls (a pull that starts on a ball throws that ball, at once or after half a second held
  * still), holding still on a ball for 1 s drags it, P pauses (nothing moves while paused, motion
- * resumes after), N advances exactly one step, R rebuilds the same seeded scene.
+ * resumes after), N advances exactly one step, R rebuilds the same seeded scene. Aiming: a pull taken
+ * back onto its press point cancels (mouse and touch), a pull straight down from the lowest heap ball
+ * reaches the full speed inside the viewport, and the round's end ends an aim under way.
  * The tests share one page with a small ball count (?count=8); before each, the game is reset
  * (window.game.reset(), unpaused) and the page's error list emptied, so each starts from the
  * same seeded scene.
@@ -960,6 +962,198 @@ describe('bouncing balls: the hoop game', () => {
     await g.waitFor((t) => (window.game as unknown as { world: { time: number } }).world.time > t + 0.5, t1);
     expect(await g.page.evaluate(() => (window.game as unknown as HoopGame).round())).toMatchObject({ phase: 'ready', timeLeft: 60 });
     expect(await status.textContent()).toMatch(/Score once to start the 60 s clock.*Points 0 · ×1 · Time 60 s/s);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+});
+
+/** What the aim tests read from window.game besides HoopGame. */
+interface AimGame extends HoopGame {
+  paused: boolean;
+  aiming(): boolean;
+  aimLabel(): string;
+  remove(id: number): void;
+  positions(): number[];
+  world: HoopGame['world'] & { time: number };
+}
+
+describe('bouncing balls: cancelling, full-power pulls and the end of a round mid-aim', () => {
+  let h: Harness;
+  beforeAll(async () => {
+    h = await Harness.start();
+  }, START_TIMEOUT_MS);
+  afterAll(async () => {
+    await h?.close();
+  });
+
+  /** Pauses the game and takes out the balls within 3.5 m of (x, y), m; returns the balls left and the round's shots. */
+  const clearAround = (g: GamePage, x: number, y: number) =>
+    g.page.evaluate(
+      ([x, y]) => {
+        const game = window.game as unknown as AimGame;
+        game.paused = true;
+        const p = game.positions();
+        for (const id of game.ballIds().filter((_, i) => Math.hypot(p[2 * i]! - x!, p[2 * i + 1]! - y!) < 3.5)) game.remove(id);
+        return { balls: game.ballIds().length, shots: game.round().shots };
+      },
+      [x, y],
+    );
+  /** The arc, the aim's label and whether a press is under way. */
+  const aimState = (g: GamePage) =>
+    g.page.evaluate(() => {
+      const game = window.game as unknown as AimGame;
+      return { arc: game.aimPath().length, label: game.aimLabel(), aiming: game.aiming() };
+    });
+
+  it('desktop 1280 x 800, mouse: a pull taken back onto the press point shows "release here to cancel" and throws nothing', async () => {
+    const g = await h.openGame('bouncing-balls', { viewport: { width: 1280, height: 800 }, query: { count: 8 } });
+    const n0 = await clearAround(g, 3, 4);
+    const from = await g.worldToPage(3, 4);
+    const m = g.page.mouse;
+    await m.move(from.x, from.y);
+    await m.down();
+    await m.move(from.x - 60, from.y + 90, { steps: 6 });
+    await g.frames(2);
+    const pulled = await aimState(g);
+    expect(pulled.arc).toBeGreaterThan(6);
+    expect(pulled.label).not.toBe('release here to cancel');
+    // Back to 4 px from the press point: inside the cancel zone (15 px, or the ball's drawn radius).
+    await m.move(from.x - 3, from.y + 3, { steps: 6 });
+    await g.frames(2);
+    expect(await aimState(g)).toEqual({ arc: 0, label: 'release here to cancel', aiming: true });
+    await m.up();
+    await g.frames(3);
+    const after = await g.page.evaluate(() => {
+      const game = window.game as unknown as AimGame;
+      return { balls: game.ballIds().length, shots: game.round().shots, aiming: game.aiming() };
+    });
+    // No ball thrown (nor dropped), no shot counted: a thrown ball that missed would have ended a streak.
+    expect(after).toEqual({ balls: n0.balls, shots: n0.shots, aiming: false });
+    // The same pull let go outside the zone throws.
+    await m.move(from.x, from.y);
+    await m.down();
+    await m.move(from.x - 60, from.y + 90, { steps: 6 });
+    await m.up();
+    await g.waitFor((n) => (window.game as unknown as AimGame).round().shots === n + 1, n0.shots);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
+  it('phone 390 x 844, touch: a pull taken back onto the press point cancels: no throw, no shot', async () => {
+    const g = await h.openGame('bouncing-balls', { viewport: { width: 390, height: 844 }, touch: true, query: { count: 8 } });
+    const n0 = await clearAround(g, 3, 4);
+    const from = await g.worldToPage(3, 4);
+    let pulled = { arc: 0, label: '', aiming: false };
+    let back = { arc: 0, label: '', aiming: false };
+    const cdp = await g.page.context().newCDPSession(g.page);
+    const touch = (type: 'touchStart' | 'touchMove' | 'touchEnd', x?: number, y?: number) =>
+      cdp.send('Input.dispatchTouchEvent', { type, touchPoints: x === undefined ? [] : [{ x, y: y!, id: 1 }] });
+    await touch('touchStart', from.x, from.y);
+    for (const f of [0.25, 0.5, 0.75, 1]) await touch('touchMove', from.x - 50 * f, from.y + 80 * f);
+    await g.frames(2);
+    pulled = await aimState(g);
+    for (const f of [0.75, 0.5, 0.25, 0.05]) await touch('touchMove', from.x - 50 * f, from.y + 80 * f);
+    await g.frames(2);
+    back = await aimState(g);
+    await touch('touchEnd');
+    await cdp.detach();
+    expect(pulled.arc).toBeGreaterThan(6);
+    expect(back).toEqual({ arc: 0, label: 'release here to cancel', aiming: true });
+    await g.frames(3);
+    const after = await g.page.evaluate(() => {
+      const game = window.game as unknown as AimGame;
+      return { balls: game.ballIds().length, shots: game.round().shots, aiming: game.aiming() };
+    });
+    expect(after).toEqual({ balls: n0.balls, shots: n0.shots, aiming: false });
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
+  it('desktop 1280 x 800: from the lowest heap ball, a pull straight down kept inside the viewport throws at the full speed', async () => {
+    const g = await h.openGame('bouncing-balls', { viewport: { width: 1280, height: 800 }, query: { count: 8 } });
+    // The heap settles, then the lowest ball is pressed at its centre and pulled down to the viewport's last row.
+    await g.waitFor(() => (window.game as unknown as AimGame).world.time > 3, null, 30_000);
+    const low = await g.page.evaluate(() => {
+      const game = window.game as unknown as AimGame;
+      game.paused = true;
+      const ids = game.ballIds(),
+        p = game.positions();
+      let k = 0;
+      for (let i = 1; i < ids.length; i++) if (p[2 * i + 1]! < p[2 * k + 1]!) k = i;
+      return { id: ids[k]!, x: p[2 * k]!, y: p[2 * k + 1]! };
+    });
+    const at = await g.worldToPage(low.x, low.y);
+    const viewport = g.page.viewportSize()!;
+    const m = g.page.mouse;
+    await m.move(at.x, at.y);
+    await m.down();
+    await m.move(at.x, viewport.height - 1, { steps: 8 });
+    await m.up();
+    const v = await g.page.evaluate((id) => {
+      const game = window.game as unknown as AimGame;
+      const e = id % 2 ** 25;
+      return { vx: game.world.components.Velocity.x[e]!, vy: game.world.components.Velocity.y[e]!, shots: game.round().shots };
+    }, low.id);
+    // hoop.ts MAX_THROW_SPEED, 20 m/s, straight up (before, the window's edge stopped the pull at some 8 m/s).
+    expect(v.shots).toBe(1);
+    expect(Math.abs(v.vx)).toBeLessThan(1e-9);
+    expect(v.vy).toBeCloseTo(20, 9);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
+  it('desktop: when time runs out mid-aim, the aim ends (no arc, no press) and its release throws nothing', async () => {
+    const g = await h.openGame('bouncing-balls', { viewport: { width: 1280, height: 800 }, query: { count: 8, round: 5 } });
+    await g.page.evaluate(() => {
+      const game = window.game as unknown as AimGame;
+      for (const id of game.ballIds()) game.remove(id);
+    });
+    // A basket starts the clock (the drag-free arc of the hoop-game test above), up to three tries.
+    let score = 0;
+    for (let attempt = 0; attempt < 3 && score === 0; attempt++) {
+      const t0 = await g.page.evaluate(() => {
+        const game = window.game as unknown as AimGame;
+        const o = game.hoop();
+        const x = 0.5 * (o.minX + o.maxX),
+          T = 1.3;
+        game.shoot(8, 4, (x - 8) / T, (o.y - 4 + 0.5 * 9.81 * T * T) / T);
+        return game.world.time;
+      });
+      score = await g.waitFor(
+        (start) => {
+          const game = window.game as unknown as AimGame;
+          const n = game.round().score;
+          return n > 0 ? n : game.world.time > start + 1.7 ? -1 : 0;
+        },
+        t0,
+        30_000,
+      );
+      if (score < 0) score = 0;
+    }
+    expect(score).toBe(1);
+    // Aim from low on the left and hold the pull until the round is over.
+    const from = await g.worldToPage(3, 3);
+    const m = g.page.mouse;
+    await m.move(from.x, from.y);
+    await m.down();
+    await m.move(from.x - 60, from.y + 80, { steps: 6 });
+    await g.frames(2);
+    expect((await aimState(g)).aiming).toBe(true);
+    const shots = await g.waitFor(
+      () => {
+        const game = window.game as unknown as AimGame;
+        return game.round().phase === 'over' ? game.round().shots : null;
+      },
+      null,
+      30_000,
+    );
+    await g.frames(2);
+    expect(await aimState(g)).toEqual({ arc: 0, label: '', aiming: false });
+    const balls = await g.page.evaluate(() => (window.game as unknown as AimGame).ballIds().length);
+    await m.up();
+    await g.frames(3);
+    expect(await g.page.evaluate(() => (window.game as unknown as AimGame).ballIds().length)).toBe(balls);
+    expect(await g.page.evaluate(() => (window.game as unknown as AimGame).round().shots)).toBe(shots);
     expect(g.errors).toEqual([]);
     await g.close();
   });
