@@ -79,6 +79,8 @@ let best = readBest();
 /** After each game step (live or replayed): keeps the best score, and shows the points a crossing made. */
 function onGameStep(event: GameStepEvent): void {
   if (event === 'cleared' || event === 'scored' || event === 'over') recordScore(bh.score);
+  // The emptied field shows in the very next frame, even where a slow GPU has the pacer skip frames.
+  if (event === 'cleared') game.drawNext();
   if (event === 'cleared' || event === 'scored') {
     scorePop.points = event === 'cleared' ? (run?.summary?.points ?? 0) : bh.score - scorePop.scoreBefore;
     scorePop.x = lastShip[0]!;
@@ -231,6 +233,7 @@ const game = await startPixiGame({
 });
 const { shell, renderer, app } = game;
 shell.onWorldChange(() => {
+  game.drawNext();
   applyHeld();
   updateStatus(true);
 });
@@ -328,6 +331,8 @@ function advance(): void {
   } else if (run?.waiting) {
     replay.input('beginLevel');
     updateStatus(true);
+    // The new level's holes are drawn in the next frame, paused or not (the status already counts them).
+    game.drawNext();
   }
 }
 /** A key or finger presses arrow `dir`: it becomes the latest arrow held. */
@@ -971,7 +976,8 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
     O = world.components.PreviousPosition;
   const x = O.x[slotOf(s)]! + (P.x[slotOf(s)]! - O.x[slotOf(s)]!) * alpha,
     y = O.y[slotOf(s)]! + (P.y[slotOf(s)]! - O.y[slotOf(s)]!) * alpha;
-  if (params.path && !bh.over) {
+  // No path between levels: the ship waits at rest past the line.
+  if (params.path && !bh.over && !run?.waiting) {
     pathPoints = predictPath(bh, predictor, path, PATH_STEPS);
     // A path that stops short inside the field ends on a horizon: drawn red, with a ring where it
     // falls in, so the pull of a wall bending the ship into it shows 2 s ahead.
