@@ -384,7 +384,7 @@ style.textContent = `
 .bh-status.over .bh-message { color: #ff8c8c; cursor: pointer; }
 .bh-status.cleared .bh-message { color: #7ee787; cursor: pointer; font-weight: 600; }
 .bh-pad button { font-size: 22px; min-width: 56px; }
-/* The next-level / play-again button: over the middle of the field, which is empty between levels,
+/* The next-level / play-again button: over the field (placeActionButton moves it to a band no hole reaches),
    not at the stage's foot, where it covered the start pad and the ship waiting on it. */
 body .bp-touchbar.bp-action { top: 40%; bottom: auto; }
 /* The touch hint at the top of the stage, over the space above the finish line: at its foot (the
@@ -961,6 +961,40 @@ function placeTouchHint(): void {
   if (card.style.top !== want) card.style.top = want;
 }
 
+/** Gap kept between the next-level button and the holes, the line and the ship, px. */
+const ACTION_GAP = 8;
+/**
+ * Puts the next-level / continue button (over the field, by the page's style) in the tallest band
+ * across the field between the finish line and the start pad that no hole's drawing (disc and glow,
+ * `holeExtents`) reaches, centred in it, so it covers no hole (after a game over the holes stay). Where
+ * no band fits it, it stays where the style puts it. Checked every frame while the button shows.
+ */
+function placeActionButton(): void {
+  const el = document.querySelector<HTMLElement>('.bp-touchbar.bp-action');
+  if (!el?.isConnected || el.offsetHeight === 0) return;
+  const cam = renderer.camera;
+  const stage = pageLayout().stage.getBoundingClientRect(),
+    canvas = app.canvas.getBoundingClientRect();
+  const off = canvas.top - stage.top;
+  // Screen bands (px, y down) taken by the holes, sorted from the top.
+  const taken = holeExtents
+    .slice(0, bh.holes.length)
+    .map((e) => [cam.toScreenY(e[3]!) - ACTION_GAP, cam.toScreenY(e[2]!) + ACTION_GAP] as const)
+    .sort((a, b) => a[0] - b[0]);
+  let from = cam.toScreenY(bh.lineY) + ACTION_GAP;
+  const end = Math.min(cam.toScreenY(0.9), cam.toScreenY(lastShip[1]!)) - shipPx - ACTION_GAP;
+  let best = -1,
+    bestTop = 0;
+  for (const [top, bottom] of [...taken, [end, end] as const]) {
+    const to = Math.min(top, end);
+    if (to - from > best) [best, bestTop] = [to - from, from];
+    from = Math.max(from, bottom);
+  }
+  const h = el.offsetHeight;
+  const want = best >= h ? `${Math.round(off + bestTop + (best - h) / 2)}px` : '';
+  if (el.style.top !== want) el.style.top = want;
+}
+
 function drawFrame(alpha: number, world: PhysicsWorld): void {
   // The overlay stays the stage's last child (text added later would be drawn over it).
   if (pause.container.parent === app.stage && app.stage.children[app.stage.children.length - 1] !== pause.container)
@@ -1022,6 +1056,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   drawEdgeWarning(x, y);
   drawLevelBanner();
   placeTouchHint();
+  placeActionButton();
   drawScorePop();
   // The engine's thrust now (it spools up and down): the flame points against it, as long as it is
   // strong, and the ship leans into it (up to LEAN rad at full sideways thrust).

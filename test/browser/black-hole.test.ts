@@ -133,6 +133,30 @@ describe('black hole, between levels', () => {
     });
     expect(over).toBe(true);
     await g.page.getByRole('button', { name: 'Continue from level 2 ↺' }).waitFor({ state: 'visible', timeout: 10_000 });
+    // The button covers no hole of the wall left on the field (it sat on the middle of the field, over
+    // a hole): its box is clear of every hole's horizon, 1.5 radii round (the photon ring and disc).
+    const covered = await g.waitFor(() => {
+      type Cam = { toScreenX(x: number): number; toScreenY(y: number): number; toScreenLength(l: number): number };
+      const w = window.game as unknown as {
+        renderer: { camera: Cam };
+        bh: { holes: number[]; holeRadius: number[]; world: { components: { Position: { x: Float64Array; y: Float64Array } } } };
+      };
+      const button = [...document.querySelectorAll('button')].find((b) => b.textContent === 'Continue from level 2 ↺');
+      if (!button) return null;
+      const b = button.getBoundingClientRect(),
+        c = document.querySelector('canvas')!.getBoundingClientRect(),
+        cam = w.renderer.camera,
+        P = w.bh.world.components.Position;
+      const hits = w.bh.holes.filter((h, i) => {
+        const x = c.left + cam.toScreenX(P.x[h % 2 ** 25]!),
+          y = c.top + cam.toScreenY(P.y[h % 2 ** 25]!),
+          r = 1.5 * cam.toScreenLength(w.bh.holeRadius[i]!);
+        return x + r > b.left && x - r < b.right && y + r > b.top && y - r < b.bottom;
+      });
+      return { hits: hits.length, holes: w.bh.holes.length };
+    }, null);
+    expect(covered.holes).toBeGreaterThan(5);
+    expect(covered.hits).toBe(0);
     expect(await g.page.locator('[data-hud="message"]').textContent()).toContain('Enter: continue from level 2');
     await g.page.keyboard.press('Enter');
     const again = await g.waitFor(() => {
