@@ -25,7 +25,8 @@
  * Drawn: nebulae behind the stars; each hole as a black disc of its Schwarzschild radius with a
  * photon ring, an orange glow and a tilted disc of hot gas whose clumps go round it; the exhaust
  * (particles, additive); the ship with a flame opposite its thrust; its predicted path for the next 2 s, integrated in a small second world
- * (rules.ts `predictPath`) and drawn as fading dots.
+ * (rules.ts `predictPath`) and drawn as fading dots, red where it falls into a hole, blue where it
+ * stays clear (on the pad, before the first thrust, the path holding ↑ would take).
  */
 
 import {
@@ -200,7 +201,7 @@ const game = await startPixiGame({
       ? { keys: '← ↑ → ↓', action: 'thrust; seam of two: diagonal', touch: 'hold ← ↑ → ↓' }
       : { keys: '← ↑ → ↓', action: 'thrust (two at once: diagonal)', touch: 'hold, slide ← ↑ → ↓' },
     { keys: 'Enter', action: 'next level / continue from this level', touch: 'the big button' },
-    { keys: 'F', action: 'predicted path on / off' },
+    { keys: 'F', action: 'predicted path on / off (red: falls in, blue: clear)' },
     { keys: 'V', action: 'replay the run from the start' },
   ],
   keys: [
@@ -923,6 +924,9 @@ function startSwallow(): void {
   swallow.start = performance.now();
 }
 
+/** Whether the path drawn in the last frame was the one holding ↑ from the pad would take (the ship parked, no thrust). */
+let padPath = false;
+
 /** The ship's drawn height at the least, px (it is 1 m tall where a metre is more). */
 const SHIP_MIN_PX = 26;
 /** The ship's drawn height in the last frame, px. */
@@ -1012,7 +1016,17 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
     y = O.y[slotOf(s)]! + (P.y[slotOf(s)]! - O.y[slotOf(s)]!) * alpha;
   // No path between levels: the ship waits at rest past the line.
   if (params.path && !bh.over && !run?.waiting) {
-    pathPoints = predictPath(bh, predictor, path, PATH_STEPS);
+    // Parked on the pad with no thrust (the ship held at rest there shows no path): the path holding ↑
+    // would take, the engine spooling up from rest as in flight, so a newcomer sees the aid before
+    // moving. The thrust is set for the prediction only (the field, not setThrust: no exhaust, no
+    // input recorded) and put back at once.
+    const fromPad = run?.parked === true && bh.thrust === 'none' && canThrust(bh, run);
+    if (fromPad) {
+      bh.thrust = 'up';
+      pathPoints = predictPath(bh, predictor, path, PATH_STEPS);
+      bh.thrust = 'none';
+    } else pathPoints = predictPath(bh, predictor, path, PATH_STEPS);
+    padPath = fromPad;
     // A path that stops short inside the field ends on a horizon: drawn red, with a ring where it
     // falls in, so the pull of a wall bending the ship into it shows 2 s ahead.
     const lx = path[2 * pathPoints - 2]!,
@@ -1027,6 +1041,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
     if (falls) overlay.circle(cam.toScreenX(lx), cam.toScreenY(ly), 7).stroke({ width: 2, color, alpha: 0.9 });
   } else {
     pathPoints = 0;
+    padPath = false;
   }
   // The ship: a small arrowhead, nose up, 1 m tall, with a flame out of the side opposite the thrust.
   // The ship is drawn at least SHIP_MIN_PX tall (on a phone's narrow field it would be under 20 px).
@@ -1100,6 +1115,8 @@ shell.expose({
   shipPx: (): number => shipPx,
   /** Points of the predicted path drawn in the last frame. */
   pathPoints: (): number => pathPoints,
+  /** Whether that path was the one holding ↑ from the pad would take (the ship parked, no thrust). */
+  padPath: (): boolean => padPath,
   /** The level banner's text while it shows (at a level's start, until the first thrust), else ''. */
   levelBanner: (): string => (levelBanner.visible ? levelBanner.text : ''),
   /** How far each hole's drawing (disc and glow) reached in the last frame, m: [left, right, bottom, top], holes in order. */

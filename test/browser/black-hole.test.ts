@@ -40,6 +40,13 @@ describe('black hole', () => {
     expect(await g.page.evaluate(() => (window.game as unknown as BlackHolePage).levelBanner())).toBe(
       'Level 1\nsteer between the holes\n30 points at the line',
     );
+    // The predicted path shows from the pad before the first thrust (the path holding ↑ would take;
+    // it showed only once the ship moved), and the legend says what its colours mean.
+    await g.waitFor(() => {
+      const w = window.game as unknown as { padPath(): boolean; pathPoints(): number };
+      return w.padPath() && w.pathPoints() > 10;
+    }, null);
+    expect(await g.page.evaluate(() => document.body.textContent)).toContain('predicted path on / off (red: falls in, blue: clear)');
     await g.page.keyboard.down('ArrowUp');
     await g.waitFor(() => (window.game as unknown as BlackHolePage).levelBanner() === '', null);
     await g.waitFor(() => (window.game as unknown as BlackHolePage).swallowing(), null);
