@@ -694,7 +694,8 @@ function driftedX(x: number, i: number, r: number, vx: number[], width: number, 
  * (at zero the thrust stops and stays off), the game steps (./rules `stepBlackHole`), and a parked
  * ship (see `LevelRun.parked`) is put back at the start at rest. A crossing of
  * the line becomes 'cleared': a lost life comes back, the summary is kept, the field is emptied of
- * holes and exhaust (the next level is laid out by `beginLevel`) and the run waits with the ship at the start.
+ * holes and exhaust (the next level is laid out by `beginLevel`) and the run waits with the ship at
+ * rest where it crossed.
  * @returns the game's event, with 'scored' reported as 'cleared', or 'waiting'.
  */
 export function stepLevel(game: BlackHoleGame, run: LevelRun): BlackHoleEvent | 'cleared' | 'waiting' {
@@ -715,6 +716,15 @@ export function stepLevel(game: BlackHoleGame, run: LevelRun): BlackHoleEvent | 
   run.time = time;
   const scoreBefore = game.score,
     holes = game.holes.length;
+  // Where the ship was and how fast it went before the step: a crossing puts it back at the start
+  // (./rules), and a cleared level keeps it just past the line instead (below).
+  const ship = slotOf(game.ship),
+    Pos = game.world.components.Position,
+    Vel = game.world.components.Velocity;
+  const x0 = Pos.x[ship]!,
+    y0 = Pos.y[ship]!,
+    vx0 = Vel.x[ship]!,
+    vy0 = Vel.y[ship]!;
   const event = stepBlackHole(game);
   if (event === 'fell' || event === 'lost') run.parked = true;
   else if (event === 'none' && run.parked) {
@@ -741,12 +751,18 @@ export function stepLevel(game: BlackHoleGame, run: LevelRun): BlackHoleEvent | 
     falls: game.falls - run.fallsAtStart,
   });
   // ./rules scored one point per hole on screen and laid out one more hole: the levels lay out their
-  // own, when the next level begins; until then the field is empty and the ship parked at the start.
+  // own, when the next level begins; until then the field is empty.
   clearHoles(game, run);
   clearParticles(game);
   run.spec = levelSpec(run.spec.level + 1);
   run.parked = true;
-  resetShip(game);
+  // The ship stays where it crossed (the step's move from x0, y0; at the line at least), at rest,
+  // until the next level begins (`layLevel` puts it back at the start): put back at once, it seemed
+  // to fall back below the line it had just reached.
+  const crossX = Math.min(game.field.width, Math.max(0, x0 + vx0 * dt));
+  setPosition(game.world, game.ship, [crossX, Math.max(game.lineY, y0 + vy0 * dt)]);
+  setVelocity(game.world, game.ship, REST);
+  game.thrustVec[0] = game.thrustVec[1] = 0;
   setThrust(game, 'none');
   run.waiting = true;
   game.message = clearMessage(run.summary, lifeBack, run.spec.level);

@@ -25,7 +25,8 @@
  * Drawn: nebulae behind the stars; each hole as a black disc of its Schwarzschild radius with a
  * photon ring, an orange glow and a tilted disc of hot gas whose clumps go round it; the exhaust
  * (particles, additive); the ship with a flame opposite its thrust; its predicted path for the next 2 s, integrated in a small second world
- * (rules.ts `predictPath`) and drawn as fading dots.
+ * (rules.ts `predictPath`) and drawn as fading dots, red where it falls into a hole, blue where it
+ * stays clear (on the pad, before the first thrust, the path holding ↑ would take).
  */
 
 import {
@@ -79,6 +80,8 @@ let best = readBest();
 /** After each game step (live or replayed): keeps the best score, and shows the points a crossing made. */
 function onGameStep(event: GameStepEvent): void {
   if (event === 'cleared' || event === 'scored' || event === 'over') recordScore(bh.score);
+  // The emptied field shows in the very next frame, even where a slow GPU has the pacer skip frames.
+  if (event === 'cleared') game.drawNext();
   if (event === 'cleared' || event === 'scored') {
     scorePop.points = event === 'cleared' ? (run?.summary?.points ?? 0) : bh.score - scorePop.scoreBefore;
     scorePop.x = lastShip[0]!;
@@ -198,7 +201,7 @@ const game = await startPixiGame({
       ? { keys: '← ↑ → ↓', action: 'thrust; seam of two: diagonal', touch: 'hold ← ↑ → ↓' }
       : { keys: '← ↑ → ↓', action: 'thrust (two at once: diagonal)', touch: 'hold, slide ← ↑ → ↓' },
     { keys: 'Enter', action: 'next level / continue from this level', touch: 'the big button' },
-    { keys: 'F', action: 'predicted path on / off' },
+    { keys: 'F', action: 'predicted path on / off (red: falls in, blue: clear)' },
     { keys: 'V', action: 'replay the run from the start' },
   ],
   keys: [
@@ -231,6 +234,7 @@ const game = await startPixiGame({
 });
 const { shell, renderer, app } = game;
 shell.onWorldChange(() => {
+  game.drawNext();
   applyHeld();
   updateStatus(true);
 });
@@ -328,6 +332,8 @@ function advance(): void {
   } else if (run?.waiting) {
     replay.input('beginLevel');
     updateStatus(true);
+    // The new level's holes are drawn in the next frame, paused or not (the status already counts them).
+    game.drawNext();
   }
 }
 /** A key or finger presses arrow `dir`: it becomes the latest arrow held. */
@@ -379,7 +385,7 @@ style.textContent = `
 .bh-status.over .bh-message { color: #ff8c8c; cursor: pointer; }
 .bh-status.cleared .bh-message { color: #7ee787; cursor: pointer; font-weight: 600; }
 .bh-pad button { font-size: 22px; min-width: 56px; }
-/* The next-level / play-again button: over the middle of the field, which is empty between levels,
+/* The next-level / play-again button: over the field (placeActionButton moves it to a band no hole reaches),
    not at the stage's foot, where it covered the start pad and the ship waiting on it. */
 body .bp-touchbar.bp-action { top: 40%; bottom: auto; }
 /* The touch hint at the top of the stage, over the space above the finish line: at its foot (the
@@ -918,6 +924,9 @@ function startSwallow(): void {
   swallow.start = performance.now();
 }
 
+/** Whether the path drawn in the last frame was the one holding ↑ from the pad would take (the ship parked, no thrust). */
+let padPath = false;
+
 /** The ship's drawn height at the least, px (it is 1 m tall where a metre is more). */
 const SHIP_MIN_PX = 26;
 /** The ship's drawn height in the last frame, px. */
@@ -956,6 +965,40 @@ function placeTouchHint(): void {
   if (card.style.top !== want) card.style.top = want;
 }
 
+/** Gap kept between the next-level button and the holes, the line and the ship, px. */
+const ACTION_GAP = 8;
+/**
+ * Puts the next-level / continue button (over the field, by the page's style) in the tallest band
+ * across the field between the finish line and the start pad that no hole's drawing (disc and glow,
+ * `holeExtents`) reaches, centred in it, so it covers no hole (after a game over the holes stay). Where
+ * no band fits it, it stays where the style puts it. Checked every frame while the button shows.
+ */
+function placeActionButton(): void {
+  const el = document.querySelector<HTMLElement>('.bp-touchbar.bp-action');
+  if (!el?.isConnected || el.offsetHeight === 0) return;
+  const cam = renderer.camera;
+  const stage = pageLayout().stage.getBoundingClientRect(),
+    canvas = app.canvas.getBoundingClientRect();
+  const off = canvas.top - stage.top;
+  // Screen bands (px, y down) taken by the holes, sorted from the top.
+  const taken = holeExtents
+    .slice(0, bh.holes.length)
+    .map((e) => [cam.toScreenY(e[3]!) - ACTION_GAP, cam.toScreenY(e[2]!) + ACTION_GAP] as const)
+    .sort((a, b) => a[0] - b[0]);
+  let from = cam.toScreenY(bh.lineY) + ACTION_GAP;
+  const end = Math.min(cam.toScreenY(0.9), cam.toScreenY(lastShip[1]!)) - shipPx - ACTION_GAP;
+  let best = -1,
+    bestTop = 0;
+  for (const [top, bottom] of [...taken, [end, end] as const]) {
+    const to = Math.min(top, end);
+    if (to - from > best) [best, bestTop] = [to - from, from];
+    from = Math.max(from, bottom);
+  }
+  const h = el.offsetHeight;
+  const want = best >= h ? `${Math.round(off + bestTop + (best - h) / 2)}px` : '';
+  if (el.style.top !== want) el.style.top = want;
+}
+
 function drawFrame(alpha: number, world: PhysicsWorld): void {
   // The overlay stays the stage's last child (text added later would be drawn over it).
   if (pause.container.parent === app.stage && app.stage.children[app.stage.children.length - 1] !== pause.container)
@@ -971,8 +1014,19 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
     O = world.components.PreviousPosition;
   const x = O.x[slotOf(s)]! + (P.x[slotOf(s)]! - O.x[slotOf(s)]!) * alpha,
     y = O.y[slotOf(s)]! + (P.y[slotOf(s)]! - O.y[slotOf(s)]!) * alpha;
-  if (params.path && !bh.over) {
-    pathPoints = predictPath(bh, predictor, path, PATH_STEPS);
+  // No path between levels: the ship waits at rest past the line.
+  if (params.path && !bh.over && !run?.waiting) {
+    // Parked on the pad with no thrust (the ship held at rest there shows no path): the path holding ↑
+    // would take, the engine spooling up from rest as in flight, so a newcomer sees the aid before
+    // moving. The thrust is set for the prediction only (the field, not setThrust: no exhaust, no
+    // input recorded) and put back at once.
+    const fromPad = run?.parked === true && bh.thrust === 'none' && canThrust(bh, run);
+    if (fromPad) {
+      bh.thrust = 'up';
+      pathPoints = predictPath(bh, predictor, path, PATH_STEPS);
+      bh.thrust = 'none';
+    } else pathPoints = predictPath(bh, predictor, path, PATH_STEPS);
+    padPath = fromPad;
     // A path that stops short inside the field ends on a horizon: drawn red, with a ring where it
     // falls in, so the pull of a wall bending the ship into it shows 2 s ahead.
     const lx = path[2 * pathPoints - 2]!,
@@ -987,6 +1041,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
     if (falls) overlay.circle(cam.toScreenX(lx), cam.toScreenY(ly), 7).stroke({ width: 2, color, alpha: 0.9 });
   } else {
     pathPoints = 0;
+    padPath = false;
   }
   // The ship: a small arrowhead, nose up, 1 m tall, with a flame out of the side opposite the thrust.
   // The ship is drawn at least SHIP_MIN_PX tall (on a phone's narrow field it would be under 20 px).
@@ -1016,6 +1071,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   drawEdgeWarning(x, y);
   drawLevelBanner();
   placeTouchHint();
+  placeActionButton();
   drawScorePop();
   // The engine's thrust now (it spools up and down): the flame points against it, as long as it is
   // strong, and the ship leans into it (up to LEAN rad at full sideways thrust).
@@ -1059,6 +1115,8 @@ shell.expose({
   shipPx: (): number => shipPx,
   /** Points of the predicted path drawn in the last frame. */
   pathPoints: (): number => pathPoints,
+  /** Whether that path was the one holding ↑ from the pad would take (the ship parked, no thrust). */
+  padPath: (): boolean => padPath,
   /** The level banner's text while it shows (at a level's start, until the first thrust), else ''. */
   levelBanner: (): string => (levelBanner.visible ? levelBanner.text : ''),
   /** How far each hole's drawing (disc and glow) reached in the last frame, m: [left, right, bottom, top], holes in order. */

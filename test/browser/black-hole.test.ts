@@ -11,6 +11,7 @@
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
 import { checkPageContract } from './page-contract';
+import { decodePng } from './png';
 
 interface BlackHolePage {
   bh: { falls: number; message: string };
@@ -39,6 +40,13 @@ describe('black hole', () => {
     expect(await g.page.evaluate(() => (window.game as unknown as BlackHolePage).levelBanner())).toBe(
       'Level 1\nsteer between the holes\n30 points at the line',
     );
+    // The predicted path shows from the pad before the first thrust (the path holding ↑ would take;
+    // it showed only once the ship moved), and the legend says what its colours mean.
+    await g.waitFor(() => {
+      const w = window.game as unknown as { padPath(): boolean; pathPoints(): number };
+      return w.padPath() && w.pathPoints() > 10;
+    }, null);
+    expect(await g.page.evaluate(() => document.body.textContent)).toContain('predicted path on / off (red: falls in, blue: clear)');
     await g.page.keyboard.down('ArrowUp');
     await g.waitFor(() => (window.game as unknown as BlackHolePage).levelBanner() === '', null);
     await g.waitFor(() => (window.game as unknown as BlackHolePage).swallowing(), null);
@@ -93,9 +101,10 @@ describe('black hole, between levels', () => {
       return { during, later: w.bh.holes.length, line: w.bh.lineY };
     });
     // Waiting on level 2: no hole on the field (before, level 2's holes were laid out at once, round
-    // the frozen ship), the ship back below the line at the start.
+    // the frozen ship), the ship at rest where it crossed, at or past the line (it was put back at
+    // the start, which looked as if it fell back below the line it had reached).
     expect(cleared.during).toMatchObject({ waiting: true, next: 2, holes: 0 });
-    expect(cleared.during.y).toBeLessThan(cleared.line);
+    expect(cleared.during.y).toBeGreaterThanOrEqual(cleared.line);
     expect(cleared.later).toBe(0);
     // The points the clear made rise from the line (they were only in the status row's numbers).
     const pop = await g.waitFor(() => (window.game as unknown as Bh).scorePop(), null);
@@ -131,6 +140,30 @@ describe('black hole, between levels', () => {
     });
     expect(over).toBe(true);
     await g.page.getByRole('button', { name: 'Continue from level 2 ↺' }).waitFor({ state: 'visible', timeout: 10_000 });
+    // The button covers no hole of the wall left on the field (it sat on the middle of the field, over
+    // a hole): its box is clear of every hole's horizon, 1.5 radii round (the photon ring and disc).
+    const covered = await g.waitFor(() => {
+      type Cam = { toScreenX(x: number): number; toScreenY(y: number): number; toScreenLength(l: number): number };
+      const w = window.game as unknown as {
+        renderer: { camera: Cam };
+        bh: { holes: number[]; holeRadius: number[]; world: { components: { Position: { x: Float64Array; y: Float64Array } } } };
+      };
+      const button = [...document.querySelectorAll('button')].find((b) => b.textContent === 'Continue from level 2 ↺');
+      if (!button) return null;
+      const b = button.getBoundingClientRect(),
+        c = document.querySelector('canvas')!.getBoundingClientRect(),
+        cam = w.renderer.camera,
+        P = w.bh.world.components.Position;
+      const hits = w.bh.holes.filter((h, i) => {
+        const x = c.left + cam.toScreenX(P.x[h % 2 ** 25]!),
+          y = c.top + cam.toScreenY(P.y[h % 2 ** 25]!),
+          r = 1.5 * cam.toScreenLength(w.bh.holeRadius[i]!);
+        return x + r > b.left && x - r < b.right && y + r > b.top && y - r < b.bottom;
+      });
+      return { hits: hits.length, holes: w.bh.holes.length };
+    }, null);
+    expect(covered.holes).toBeGreaterThan(5);
+    expect(covered.hits).toBe(0);
     expect(await g.page.locator('[data-hud="message"]').textContent()).toContain('Enter: continue from level 2');
     await g.page.keyboard.press('Enter');
     const again = await g.waitFor(() => {
@@ -138,6 +171,83 @@ describe('black hole, between levels', () => {
       return w.bh.over ? null : { level: w.level.spec.level, lives: w.bh.lives, score: w.bh.score };
     }, null);
     expect(again).toEqual({ level: 2, lives: 3, score: 0 });
+    expect(g.errors).toEqual([]);
+  });
+  it('paused, the next level begun: its holes are drawn in the next frame, even with the frame pacer skipping every frame', async () => {
+    type Cam = { toScreenX(x: number): number; toScreenY(y: number): number; toScreenLength(l: number): number };
+    type Bh = {
+      paused: boolean;
+      reset(): void;
+      step(): void;
+      advance(): void;
+      renderer: { camera: Cam };
+      pacer: { drawn: number; mayDraw(): boolean };
+      bh: {
+        ship: number;
+        lineY: number;
+        holes: number[];
+        holeRadius: number[];
+        world: { components: { Position: { x: Float64Array; y: Float64Array } } };
+      };
+      level: { waiting: boolean };
+    };
+    // Level 1 cleared while paused; then the pacer refuses every frame (a GPU far behind), so only a
+    // frame the game asks for is drawn.
+    const drawnBefore = await g.page.evaluate(() => {
+      const w = window.game as unknown as Bh;
+      w.reset();
+      w.paused = true;
+      w.bh.world.components.Position.y[w.bh.ship % 2 ** 25] = w.bh.lineY + 0.3;
+      w.step();
+      (window as unknown as { keptMayDraw: () => boolean }).keptMayDraw = w.pacer.mayDraw;
+      w.pacer.mayDraw = () => false;
+      return w.pacer.drawn;
+    });
+    expect(await g.page.evaluate(() => (window.game as unknown as Bh).level.waiting)).toBe(true);
+    // The frame of the clear (the emptied field) is drawn.
+    await g.waitFor((n) => (window.game as unknown as Bh).pacer.drawn > n, drawnBefore);
+    // The canvas as it shows the empty field, before the level begins.
+    const before = decodePng(await g.page.screenshot());
+    const { holes, drawnAtBegin } = await g.page.evaluate(() => {
+      const w = window.game as unknown as Bh;
+      w.advance();
+      const cam = w.renderer.camera,
+        c = document.querySelector('canvas')!.getBoundingClientRect(),
+        P = w.bh.world.components.Position;
+      return {
+        drawnAtBegin: w.pacer.drawn,
+        holes: w.bh.holes.map((h, i) => ({
+          x: c.left + cam.toScreenX(P.x[h % 2 ** 25]!),
+          y: c.top + cam.toScreenY(P.y[h % 2 ** 25]!),
+          r: cam.toScreenLength(w.bh.holeRadius[i]!),
+        })),
+      };
+    });
+    expect(holes.length).toBeGreaterThan(5);
+    await g.waitFor((n) => (window.game as unknown as Bh).pacer.drawn > n, drawnAtBegin);
+    const after = decodePng(await g.page.screenshot());
+    expect([after.width, after.channels]).toEqual([before.width, before.channels]);
+    // The square round the first hole's centre, 2 radii each way.
+    const hole = holes[0]!;
+    const half = Math.max(6, Math.round(2 * hole.r));
+    let diff = 0,
+      n = 0;
+    for (let y = Math.round(hole.y) - half; y < Math.round(hole.y) + half; y++) {
+      for (let x = Math.round(hole.x) - half; x < Math.round(hole.x) + half; x++) {
+        if (x < 0 || y < 0 || x >= before.width || y >= before.height) continue;
+        const o = (y * before.width + x) * before.channels;
+        for (let k = 0; k < 3; k++) diff += Math.abs(before.data[o + k]! - after.data[o + k]!);
+        n += 3;
+      }
+    }
+    diff /= n;
+    // Mean difference per colour channel, 0 to 255: the hole's glow, ring and disc over the dark field.
+    expect(diff).toBeGreaterThan(8);
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as Bh;
+      w.pacer.mayDraw = (window as unknown as { keptMayDraw: () => boolean }).keptMayDraw;
+      w.paused = false;
+    });
     expect(g.errors).toEqual([]);
   });
   // The thrust pad cases below open pages of their own; this page would otherwise keep running

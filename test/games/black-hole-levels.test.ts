@@ -506,7 +506,9 @@ describe('levels', () => {
     expect(run.spec.level).toBe(5);
     // No hole on the field while it waits: level 5's holes come when it begins.
     expect(g.holes.length).toBe(0);
+    // The ship waits where it crossed, at or past the line (it was put back at the start, below it).
     const y = shipY(g);
+    expect(y).toBeGreaterThanOrEqual(LINE_Y);
     expect(stepLevel(g, run)).toBe('waiting');
     expect(shipY(g)).toBe(y);
     beginLevel(g, run);

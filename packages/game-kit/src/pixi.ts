@@ -95,6 +95,12 @@ export interface PixiGame {
   renderer: WorldRenderer;
   /** Paces `app.render()` to the GPU (frames drawn and skipped). */
   pacer: FramePacer;
+  /**
+   * Has the next frame drawn even if the pacer would skip it: call after a change the player must
+   * see at once (a new level's scenery while paused), which a slow GPU would otherwise show only
+   * frames later. One frame past the pacer's limit; use for rare events, not every frame.
+   */
+  drawNext(): void;
 }
 
 /**
@@ -119,8 +125,11 @@ export async function startPixiGame(options: PixiGameOptions): Promise<PixiGame>
   const { renderer: rendererOptions, app: appOptions, onFrame, beforeFrame, maxFramesInFlight, ...shellOptions } = options;
   const app = await createPixiApp(appOptions);
   const pacer = createFramePacer(webgl2Of(app), maxFramesInFlight ?? 2);
+  // Set by drawNext: the next frame is drawn whatever the pacer says.
+  let forced = false;
   const draw = (): void => {
-    if (!pacer.mayDraw()) return;
+    if (!forced && !pacer.mayDraw()) return;
+    forced = false;
     app.render();
     pacer.drew();
   };
@@ -133,5 +142,8 @@ export async function startPixiGame(options: PixiGameOptions): Promise<PixiGame>
   );
   const exposed = shell.expose({ renderer: worldRenderer, app, pacer });
   shell.start();
-  return { shell: exposed, app, renderer: worldRenderer, pacer };
+  const drawNext = (): void => {
+    forced = true;
+  };
+  return { shell: exposed, app, renderer: worldRenderer, pacer, drawNext };
 }
