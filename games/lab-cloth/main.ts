@@ -330,6 +330,24 @@ plot = createPlot({
 // at the top of the scene, clear of the card of stars on the lawn (at the bottom, on a desktop, it
 // covered the stars just won).
 const status = createStatusLine();
+// The status line keeps one height whatever it says (a message that wrapped to one more line moved the
+// scene down and rescaled it mid-cut): one line on a wide screen, two on a narrow one, the rest cut
+// with an ellipsis (the narrow screen's wording, `short`, fits in two). Its bottom padding is a
+// border, outside the box that clips the text, so no sliver of a third line shows there.
+{
+  const style = document.createElement('style');
+  style.textContent = `
+.lab-status { box-sizing: border-box; height: calc(2.8em + 8px); padding-bottom: 0 !important; border-bottom: 2px solid transparent;
+  display: -webkit-box; -webkit-box-orient: vertical; -webkit-line-clamp: 2; overflow: hidden; }
+@media (min-width: 900px) { .lab-status { height: calc(1.4em + 8px); -webkit-line-clamp: 1; } }`;
+  document.head.append(style);
+}
+/** Whether the screen is narrow (a phone held upright): the status line's shorter wording. */
+const narrowText = window.matchMedia('(max-width: 480px)');
+/** `long` on a wide screen, `brief` on a narrow one (narrowText). */
+const short = (long: string, brief: string): string => (narrowText.matches ? brief : long);
+/** Whether the page is used by touch (no keyboard to press P on). */
+const touchInput = window.matchMedia('(pointer: coarse)');
 const showNext = createActionButton('Next sheet ▶', () => nextSheet(), { at: 'top' });
 
 /** Hangs the next sheet (after the last, the first again) in its breeze. */
@@ -340,50 +358,7 @@ function nextSheet(): void {
   panel.refresh();
   resetReach();
   refitView();
-  coverScene();
   shell.reset();
-}
-
-/**
- * Where the GPU is slower than the page (software WebGL) the canvas keeps showing the old, cut sheet
- * and its stars for a second or more after a reset, while the status line above already names the
- * next sheet. This covers the scene at once with a sky-coloured veil that fades out once the first
- * frame of the new sheet has been drawn on the GPU (two frames later the frame pacer has waited for it,
- * ./frame-pacer); on a real GPU that is a blink. The veil lets touches through.
- */
-function coverScene(): void {
-  const stage = canvas.parentElement;
-  if (!stage) return;
-  stage.querySelector('.cl-veil')?.remove();
-  const veil = document.createElement('div');
-  veil.className = 'cl-veil';
-  veil.dataset.sceneOverlay = '';
-  const box = canvas.getBoundingClientRect(),
-    at = stage.getBoundingClientRect();
-  Object.assign(veil.style, {
-    position: 'absolute',
-    left: `${box.left - at.left}px`,
-    top: `${box.top - at.top}px`,
-    width: `${box.width}px`,
-    height: `${box.height}px`,
-    background: 'linear-gradient(#4a80c4, #9cc7e8)',
-    pointerEvents: 'none',
-    transition: 'opacity 0.25s',
-    zIndex: '1',
-  });
-  stage.append(veil);
-  // The first frame with the new world is the next one drawn; two frames after it, it is finished.
-  const until = game.pacer.drawn + 3;
-  const watch = (): void => {
-    if (!veil.isConnected) return;
-    if (game.pacer.drawn < until) {
-      requestAnimationFrame(watch);
-      return;
-    }
-    veil.style.opacity = '0';
-    setTimeout(() => veil.remove(), 300);
-  };
-  requestAnimationFrame(watch);
 }
 
 function announce(fresh: CutOut[]): void {
@@ -587,10 +562,17 @@ function strokeNote(scrapsBefore: number): string {
     return parts
       .map((p) => {
         const name = challenge.shapes[p.shape]!.name;
-        return `${name[0]!.toUpperCase()}${name.slice(1)}: cut off the line, ${Math.round(p.fell * 100)}% of it fell and ${Math.round(p.hangs * 100)}% still hangs: not cut out. Undo (↶) and cut along the dashes.`;
+        const fell = Math.round(p.fell * 100),
+          hangs = Math.round(p.hangs * 100);
+        return `${name[0]!.toUpperCase()}${name.slice(1)}: ${short(
+          `cut off the line, ${fell}% of it fell and ${hangs}% still hangs: not cut out. Undo (↶) and cut along the dashes.`,
+          `cut off the line, ${fell}% fell, ${hangs}% hangs. Undo (↶), cut on the dashes.`,
+        )}`;
       })
       .join(' ');
-  return challenge.scraps > scrapsBefore ? 'That piece held no shape: cut along a dashed line.' : '';
+  return challenge.scraps > scrapsBefore
+    ? short('That piece held no shape: cut along a dashed line.', 'That piece held no shape: cut on the dashes.')
+    : '';
 }
 /** The note after the status line's own words (' ' and the note), or ''. */
 const noteTail = (): string => (note ? ` ${note}` : '');
@@ -657,6 +639,10 @@ const release = (): void => {
 canvas.addEventListener('pointerup', release);
 canvas.addEventListener('pointercancel', release);
 shell.onWorldChange(() => {
+  // The new sheet is drawn in the very next frame (draw builds its view there), even where a GPU slower
+  // than the page has the frame pacer skip frames: the old, cut sheet would otherwise stay on the
+  // canvas for seconds while the status line already names the next one.
+  game.drawNext();
   resetReach();
   refitView();
   refreshTools();
@@ -877,7 +863,10 @@ function drawBasket(): void {
 function updateStatus(): void {
   if (!shell.paused) pausedStroke = false;
   else if (pausedStroke) {
-    status.set(`Paused: cut along the dashed lines, then press ▶ (or P) to let the pieces fall.${noteTail()}`);
+    const press = touchInput.matches ? 'press ▶' : 'press ▶ (or P)';
+    status.set(
+      `${short(`Paused: cut along the dashed lines, then ${press}`, `Paused: cut, then ${press}`)} to let the pieces fall.${noteTail()}`,
+    );
     return;
   }
   const level = LEVELS[levelIndex]!;
@@ -891,7 +880,7 @@ function updateStatus(): void {
     const missed = done.some((d) => d.drop === 'out');
     status.set(
       missed
-        ? `${head}: the peg bag missed the basket. Undo (↶) and cut again, or try the next sheet.`
+        ? `${head}: ${short('the peg bag missed the basket. Undo (↶) and cut again, or try the next sheet.', 'missed the basket. Undo (↶) and cut again, or go on.')}`
         : `${head}: done, ${challenge.stars()} of ${3 * shapes.length} stars. ${
             last
               ? `All sheets: ${levelStars.reduce((a, b) => a + Math.max(0, b), 0)} of ${3 * LEVELS.reduce((a, l) => a + l.shapes(params.size).length, 0)} stars.`
@@ -923,8 +912,14 @@ function updateStatus(): void {
   const tip =
     last.stars < 3
       ? ragged
-        ? ` A ragged edge: one smooth stroke along the dashes for ★★★${level.calm ? ' (pause to hold the sheet still)' : ''}.`
-        : ` Cut on the dashed line for ★★★${level.calm ? ' (pause to hold the sheet still)' : ''}.`
+        ? short(
+            ` A ragged edge: one smooth stroke along the dashes for ★★★${level.calm ? ' (pause to hold the sheet still)' : ''}.`,
+            ` Ragged: cut in one smooth stroke${level.calm ? ', paused' : ''}.`,
+          )
+        : short(
+            ` Cut on the dashed line for ★★★${level.calm ? ' (pause to hold the sheet still)' : ''}.`,
+            ` Cut on the dashes${level.calm ? ', paused,' : ''} for ★★★.`,
+          )
       : '';
   status.set(
     `${name[0]!.toUpperCase()}${name.slice(1)}: ${Math.round(last.fit * 100)}% ${stars(last.stars)}.${tip} Still to cut: ${left.join(', ')}.`,
@@ -1003,6 +998,8 @@ shell.expose({
   undoCount: () => history.count,
   /** Undoes the last cutting stroke (as the undo button). */
   undoCut,
+  /** Hangs the next sheet (as the Next sheet button). */
+  nextSheet,
   /** The challenge: shapes cut out ({ shape, fit, stars }), and pieces that came away. */
   cutOuts: () =>
     challenge.done.map((d) => ({

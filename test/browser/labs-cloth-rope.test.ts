@@ -11,6 +11,7 @@ import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
 import { checkPageContract } from './page-contract';
+import { decodePng } from './png';
 
 const DESKTOP = { viewport: { width: 1280, height: 800 }, locale: 'de-DE' } as const;
 const PHONE = { viewport: { width: 390, height: 844 }, touch: true, locale: 'en-US@posix' } as const;
@@ -167,13 +168,32 @@ for (const [device, options] of [
       // sheet, and the paused one used to refuse the cut); nothing moves until ▶, and the status line
       // says so, with what the cut did: the strip held part of a shape, or none.
       const [, yLow] = await clothPoint(g, cl.rows - 1, Math.floor(cl.columns / 2));
+      // Nothing moves or rescales the scene while the status line's words change during the level (a
+      // phone's status grew to three lines with the note after the cut and pushed the canvas down):
+      // the canvas's place on the page and the status line's height, before the cut, after it
+      // (paused, with its note) and once the strip has fallen.
+      const layout = () =>
+        g.page.evaluate(() => {
+          const c = document.querySelector('canvas')!.getBoundingClientRect();
+          return [c.left, c.top, c.width, c.height, document.querySelector('.lab-status')!.getBoundingClientRect().height];
+        });
+      const layoutBefore = await layout();
+      const saidBefore = await g.page.locator('.lab-status').textContent();
       await drag(g.page, await across(), 6);
       await g.frames(2);
+      expect(await g.page.locator('.lab-status').textContent()).not.toBe(saidBefore);
+      expect(await layout()).toEqual(layoutBefore);
       expect(await g.page.evaluate(() => (window.game as unknown as ClothLab).cut())).toBeGreaterThan(cl.columns);
       expect(await g.page.evaluate(() => (window.game as unknown as ClothLab).links())).toBeLessThan(before - cl.columns);
       const said = (await g.page.locator('.lab-status').textContent())!;
-      expect(said).toMatch(/^Paused: cut along the dashed lines, then press ▶ \(or P\) to let the pieces fall\. /);
-      expect(said).toMatch(/: cut off the line, \d+% of it fell and \d+% still hangs: not cut out\.|held no shape/);
+      // A phone has no P key: its status says only ▶, in its shorter wording (two lines at most).
+      if (device === 'phone') {
+        expect(said).toMatch(/^Paused: cut, then press ▶ to let the pieces fall\. /);
+        expect(said).toMatch(/: cut off the line, \d+% fell, \d+% hangs\.|held no shape/);
+      } else {
+        expect(said).toMatch(/^Paused: cut along the dashed lines, then press ▶ \(or P\) to let the pieces fall\. /);
+        expect(said).toMatch(/: cut off the line, \d+% of it fell and \d+% still hangs: not cut out\.|held no shape/);
+      }
       expect((await clothPoint(g, cl.rows - 1, Math.floor(cl.columns / 2)))[1]).toBe(yLow);
       await g.page.evaluate(() => {
         (window.game as unknown as Lab).paused = false;
@@ -195,6 +215,7 @@ for (const [device, options] of [
         [cl.rows - 1, Math.floor(cl.columns / 2), y0] as const,
         30_000,
       );
+      expect(await layout()).toEqual(layoutBefore);
       expect(g.errors).toEqual([]);
     });
 
@@ -362,6 +383,59 @@ for (const [device, options] of [
         expect(await g.page.evaluate(() => (window.game as unknown as ClothLab).scraps())).toBe(0);
         expect(await g.page.evaluate(() => (window.game as unknown as ClothLab).links())).toBe(before.links);
       }
+      expect(g.errors).toEqual([]);
+    });
+
+    // Last on this page: it leaves the second sheet up.
+    it('after Next sheet the new sheet is drawn in the very next frame, even with the frame pacer refusing every frame', async () => {
+      type Paced = ClothLab & { pacer: { drawn: number; mayDraw(): boolean }; nextSheet(): void };
+      // The pacer refuses every frame (a GPU far behind), so only a frame the lab asks for is drawn.
+      const { drawn, index } = await g.page.evaluate(() => {
+        const w = window.game as unknown as Paced;
+        w.paused = true;
+        (window as unknown as { keptMayDraw: () => boolean }).keptMayDraw = w.pacer.mayDraw;
+        w.pacer.mayDraw = () => false;
+        const index = w.level().index;
+        const drawn = w.pacer.drawn;
+        w.nextSheet();
+        return { drawn, index };
+      });
+      expect(await g.page.evaluate(() => (window.game as unknown as Paced).level().index)).toBe(index + 1);
+      await g.waitFor((n) => (window.game as unknown as Paced).pacer.drawn > n, drawn);
+      const shot = decodePng(await g.page.screenshot());
+      const scale = shot.width / g.page.viewportSize()!.width;
+      /** Mean colour (r, g, b) of the 7 x 7 CSS px square round page point p. */
+      const colour = (p: { x: number; y: number }): number[] => {
+        const sum = [0, 0, 0];
+        let n = 0;
+        for (let dy = -3; dy <= 3; dy++)
+          for (let dx = -3; dx <= 3; dx++) {
+            const o = (Math.round((p.y + dy) * scale) * shot.width + Math.round((p.x + dx) * scale)) * shot.channels;
+            for (let k = 0; k < 3; k++) sum[k]! += shot.data[o + k]!;
+            n++;
+          }
+        return sum.map((v) => v / n);
+      };
+      // Plain fabric near the new sheet's top corners (clear of the window printed in its middle),
+      // against the sky 0.3 m over the line above the sheet's middle.
+      const cl = await g.page.evaluate(() => {
+        const c = (window.game as unknown as ClothLab).cloth();
+        return { rows: c.rows, columns: c.columns };
+      });
+      const row = Math.max(2, Math.round(cl.rows * 0.12));
+      const sky = colour(await toPage(g, 2, 4.9 + 0.3));
+      for (const column of [Math.round(cl.columns * 0.1), Math.round(cl.columns * 0.9)]) {
+        const [x, y] = await clothPoint(g, row, column);
+        const cloth = colour(await toPage(g, x, y));
+        const diff = cloth.reduce((a, v, k) => a + Math.abs(v - sky[k]!), 0) / 3;
+        // Mean difference per colour channel, 0 to 255: the cream sheet against the blue sky.
+        expect(diff, JSON.stringify({ cloth, sky })).toBeGreaterThan(40);
+      }
+      await g.page.evaluate(() => {
+        const w = window.game as unknown as Paced;
+        w.pacer.mayDraw = (window as unknown as { keptMayDraw: () => boolean }).keptMayDraw;
+        w.paused = false;
+      });
       expect(g.errors).toEqual([]);
     });
   });
