@@ -559,3 +559,48 @@ export function predictThroughRing(
   }
   return none;
 }
+
+/** A course's kept best result: rings passed (0 to the course's count) and course time (s, misses' penalties in). */
+export interface BestResult {
+  passed: number;
+  time: number;
+}
+
+/**
+ * How a finished run compares with the best kept for its course: 'first' when none was kept (the
+ * run becomes the best, but beat nothing), 'better' when it passed more rings, or as many in a
+ * shorter course time (s), else 'not'. Only 'better' is a new best worth praise.
+ * @throws RangeError on a `passed` that is not a whole number >= 0 or a `time` that is not finite and >= 0.
+ */
+export function compareWithBest(previous: BestResult | null, passed: number, time: number): 'first' | 'better' | 'not' {
+  if (!Number.isInteger(passed) || passed < 0) throw new RangeError(`compareWithBest: passed must be a whole number >= 0, got ${passed}`);
+  if (!Number.isFinite(time) || time < 0) throw new RangeError(`compareWithBest: time must be a finite number >= 0 (s), got ${time}`);
+  if (!previous) return 'first';
+  return passed > previous.passed || (passed === previous.passed && time < previous.time) ? 'better' : 'not';
+}
+
+/** How far from the next ring (m) the aircraft may be before the turn-back cue shows. */
+export const TURN_BACK_DISTANCE = 3000;
+/** How long (s) the aircraft may fly away from the next ring (closing on it at under -5 m/s) before the cue shows. */
+export const TURN_BACK_AWAY_TIME = 6;
+
+/**
+ * Whether to tell the pilot to turn back to the next ring, and which way: after `awayFor` s of flying
+ * away from it, or farther than TURN_BACK_DISTANCE from it. `toRing` is the ring's centre minus the
+ * aircraft's position (m, world), `heading` the direction of its nose in the level plane (rad, from +x towards +z, as ./assist.ts flightState gives it).
+ * Returns null for no cue, else the side the ring lies on, 'left' or 'right' of the nose seen from
+ * above (+y up; the right of a nose along +x is +z), the way to turn; straight behind says 'left'.
+ * @throws RangeError on a `toRing` that is not 3 finite numbers or a `heading` that is not finite.
+ */
+export function turnBackCue(toRing: readonly number[], heading: number, awayFor: number): 'left' | 'right' | null {
+  if (toRing.length < 3 || !toRing.slice(0, 3).every(Number.isFinite))
+    throw new RangeError(`turnBackCue: toRing must be 3 finite numbers, got ${toRing.join(', ')}`);
+  if (!Number.isFinite(heading)) throw new RangeError(`turnBackCue: heading must be a finite number (rad), got ${heading}`);
+  const distance = Math.hypot(toRing[0]!, toRing[1]!, toRing[2]!);
+  if (distance <= TURN_BACK_DISTANCE && !(awayFor >= TURN_BACK_AWAY_TIME)) return null;
+  // The ring's bearing relative to the nose, in the level plane: the cross product's sign says the side.
+  const fx = Math.cos(heading),
+    fz = Math.sin(heading);
+  const cross = fx * toRing[2]! - fz * toRing[0]!;
+  return cross > 0 ? 'right' : 'left';
+}

@@ -63,6 +63,7 @@ import { approach, assist, CONTROL_AUTHORITY, createAssistState, type FlightStat
 import { createAttitudeIndicator } from './attitude-indicator';
 import { createCockpit } from './cockpit';
 import {
+  compareWithBest,
   courseStars,
   courseTime,
   flyRings,
@@ -77,6 +78,7 @@ import {
   type RingWay,
   ringBearing,
   ringWay,
+  turnBackCue,
 } from './course';
 import { createScenery, HORIZON_COLOUR, SUN_DIRECTION } from './scenery';
 
@@ -143,6 +145,8 @@ function createWorld(): PhysicsWorld {
   rings = layCourse({ terrain: handles.terrain, seed: params.seed + 7, count: params.rings, start: [0, START_ALTITUDE, 0] });
   events.length = 0;
   missedAt = -Infinity;
+  crashReadings = null;
+  awayFor = 0;
   // Where the aircraft is now (the marker, the ring's distance), before the first step.
   const P = world.components.Position,
     e = handles.body;
@@ -301,9 +305,12 @@ function stepWorld(world: PhysicsWorld): void {
   if (state.phase === 'flying') {
     state.time += dt;
     checkRings(world.time);
+    timeAway(world, dt);
   }
   const ground = Math.max(SEA_LEVEL, terrainHeight(handles.terrain, now[0]!, now[2]!));
   if (now[1]! < ground + 2) {
+    // The readouts stop at the values of the moment of the crash.
+    crashReadings = instruments(world);
     state.phase = 'crashed';
     state.warning = '';
     sound.explosion(1);
@@ -356,6 +363,26 @@ function checkRings(time: number): void {
 }
 /** Game time of the last miss, s (the clock flashes for a while after it). */
 let missedAt = -Infinity;
+/** The instruments read at the moment of the crash (the readouts then stay at them), or null. */
+let crashReadings: ReturnType<typeof instruments> | null = null;
+/** How long the aircraft has flown away from the next ring without a break, s (./course.ts turnBackCue). */
+let awayFor = 0;
+/** Adds a step of `dt` s to `awayFor` while the aircraft closes on the next ring at under -5 m/s, else clears it. */
+function timeAway(world: PhysicsWorld, dt: number): void {
+  const n = nextRing(rings);
+  if (n < 0) {
+    awayFor = 0;
+    return;
+  }
+  const r = rings[n]!,
+    V = world.components.Velocity,
+    e = handles.body;
+  const dx = r.x - now[0]!,
+    dy = r.y - now[1]!,
+    dz = r.z - now[2]!;
+  const closing = (V.x[e]! * dx + V.y[e]! * dy + V.z[e]! * dz) / Math.max(1e-9, Math.hypot(dx, dy, dz));
+  awayFor = closing < -5 ? awayFor + dt : 0;
+}
 
 /** Best result of this course (seed and ring count) in localStorage: rings passed, then the shorter course time (misses' penalties in). */
 const BEST_KEY = 'bitphysics.flight-simulator.best';
@@ -367,15 +394,16 @@ function bestOf(): { passed: number; time: number } | null {
     return null;
   }
 }
-/** Whether the last finish set a new best. */
-let newBest = false;
+/** How the last finish compared with the course's best kept before it (./course.ts compareWithBest). */
+let lastVsBest: 'first' | 'better' | 'not' = 'not';
 
 function finish(time: number): void {
   state.phase = 'done';
   const best = bestOf();
   const total = courseTime(state.time, state.missed);
-  newBest = !best || state.score > best.passed || (state.score === best.passed && total < best.time);
-  if (newBest) {
+  lastVsBest = compareWithBest(best, state.score, total);
+  // The first run is kept as the best to beat, but only a run that beats a kept best is praised.
+  if (lastVsBest !== 'not') {
     try {
       const all = JSON.parse(localStorage.getItem(BEST_KEY) ?? '{}') as Record<string, unknown>;
       all[`${params.seed}/${params.rings}`] = { passed: state.score, time: total };
@@ -728,11 +756,13 @@ function updateHud(i: ReturnType<typeof instruments>): void {
     const bestLine = document.createElement('div');
     bestLine.style.cssText = 'color: #c7d3e0; font-size: 14px;';
     bestLine.textContent =
-      state.phase === 'done' && newBest
+      state.phase === 'done' && lastVsBest === 'better'
         ? 'A new best for this course!'
-        : best
-          ? `Best: ${best.passed} of ${total} rings in ${clock(best.time)}`
-          : 'Watch the height: the hills reach 700 m.';
+        : state.phase === 'done' && lastVsBest === 'first'
+          ? 'Your first run on this course: the result to beat next time.'
+          : best
+            ? `Best: ${best.passed} of ${total} rings in ${clock(best.time)}`
+            : 'Watch the height: the hills reach 700 m.';
     endCard.append(title, line, bestLine);
     showAgain(true, state.phase === 'crashed' ? 'Try again ↺' : 'Fly again ▶');
   }
@@ -848,7 +878,9 @@ function pointToNextRing(): void {
     const coversRing = ([px, py]: [number, number]) =>
       Math.hypot(Math.max(Math.abs(px - x) - bw, 0), Math.max(Math.abs(py - y) - bh, 0)) < rPx + 2;
     const coversMarker = ([px, py]: [number, number]) =>
-      marker.style.display !== 'none' && Math.abs(px - pathAim.x) <= halfW + 17 && Math.abs(py - pathAim.y) <= half + 10;
+      marker.style.display !== 'none' &&
+      Math.abs(px - pathAim.x) <= halfW + MARKER_HALF[0] &&
+      Math.abs(py - pathAim.y) <= half + MARKER_HALF[1];
     [x, y] =
       places.find((p) => !coversRing(p) && !coversMarker(p)) ??
       places.find((p) => !coversRing(p)) ??
@@ -888,10 +920,45 @@ function keepInScene(x: number, y: number, w: number, bottom: number): [number, 
 }
 /** Least gap between the ring label and the scene's edges, px. */
 const EDGE_MARGIN = 10;
+/**
+ * Half the flight-path marker's box, px (wide, high): its drawing (34 x 20 units) scaled 1.5 on a
+ * desktop, 1.35 on a phone, so that it is seen at a glance.
+ */
+const MARKER_HALF: readonly [number, number] = compact ? [23, 13.5] : [25.5, 15];
 /** Gap between the ring label and the ring it labels, px. */
 const LABEL_GAP = 6;
 /** The next ring's outer edge from its centre, m: the pulsing halo's (RING_RADIUS + 12, tube 2.5, pulse 6 %). */
 const RING_OUTER = (RING_RADIUS + 12 + 2.5) * 1.06;
+
+/**
+ * A cue in the scene's middle when the aircraft has strayed from the next ring (farther than
+ * TURN_BACK_DISTANCE, or flying away from it for a while: ./course.ts turnBackCue): "Turn back:
+ * ring N is behind you", an arrow on the side to turn to. The ring label at the edge alone was
+ * missed by a stranger who flew on away from the course.
+ */
+const turnBack = overlay(
+  `left: 50%; top: ${compact ? 40 : 38}%; padding: ${compact ? '4px 12px' : '6px 18px'}; border-radius: 12px; background: rgba(8, 12, 20, 0.85); color: #ffb347; font: 800 ${compact ? 16 : 22}px system-ui, sans-serif; white-space: nowrap; display: none;`,
+);
+turnBack.dataset.hud = 'turn-back';
+/** The turn-back cue's text now ('' when it does not show). */
+let turnBackText = '';
+/** Shows the turn-back cue, or hides it, for the aircraft now. */
+function showTurnBack(): void {
+  const n = nextRing(rings);
+  let text = '';
+  if (n >= 0 && state.phase === 'flying' && !holding) {
+    const r = rings[n]!,
+      world = shell.world,
+      e = handles.body;
+    const side = turnBackCue([r.x - now[0]!, r.y - now[1]!, r.z - now[2]!], flightState(world, e).heading, awayFor);
+    if (side) text = side === 'left' ? `◀ Turn back: ring ${n + 1} is behind you` : `Turn back: ring ${n + 1} is behind you ▶`;
+  }
+  if (text !== turnBackText) {
+    turnBackText = text;
+    turnBack.textContent = text;
+    turnBack.style.display = text ? 'block' : 'none';
+  }
+}
 
 // ---- Lessons: what the first rings ask for, in plain words ----------------------------------------
 
@@ -1020,13 +1087,17 @@ function ringCoversTip(): boolean {
  * path flown if the pilot lets go now (the wings and the path roll level as the assist brings them),
  * so holding a turn until the marker is in the ring and letting go flies through it; without the
  * assist, the turn held as it is. (A straight line from the velocity ignored the turn: a stranger
- * banking towards ring 3 had the marker at its edge and missed it by far.) Green when it is inside
- * the ring, white when not; hidden when the ring's plane is not met.
+ * banking towards ring 3 had the marker at its edge and missed it by far.) Yellow when it is outside
+ * the ring, green when inside, each over a thick black outline so that it shows on sky, cloud,
+ * ground and the yellow ring alike (a thin white one was lost against the sky and the clouds);
+ * hidden when the ring's plane is not met.
  */
-const marker = overlay('width: 34px; height: 20px; display: none;');
+const marker = overlay(`width: ${2 * MARKER_HALF[0]}px; height: ${2 * MARKER_HALF[1]}px; display: none;`);
 marker.dataset.hud = 'path-marker';
-marker.innerHTML =
-  '<svg viewBox="-17 -10 34 20" width="34" height="20" style="overflow: visible"><g fill="none" stroke="currentColor" stroke-width="2.5" stroke-linecap="round"><circle r="5.5"/><path d="M-15 0H-6M6 0H15M0 -6V-10"/></g></svg>';
+{
+  const shape = '<circle r="5.5"/><path d="M-15 0H-6M6 0H15M0 -6V-10"/>';
+  marker.innerHTML = `<svg viewBox="-17 -10 34 20" width="${2 * MARKER_HALF[0]}" height="${2 * MARKER_HALF[1]}" style="overflow: visible"><g fill="none" stroke-linecap="round"><g stroke="#000" stroke-width="5.5">${shape}</g><g stroke="currentColor" stroke-width="2.6">${shape}</g></g></svg>`;
+}
 /** What the marker shows (tests): visible, inside the next ring, its offset from the ring's centre (m), its place (px). */
 const pathAim = { visible: false, inside: false, offset: Infinity, x: 0, y: 0 };
 const markAt = new Vector3();
@@ -1052,8 +1123,8 @@ function markPath(): void {
   marker.style.display = shown ? 'block' : 'none';
   marker.style.left = `${pathAim.x}px`;
   marker.style.top = `${pathAim.y}px`;
-  marker.style.color = pathAim.inside ? '#5dff8a' : '#ffffff';
-  marker.style.filter = 'drop-shadow(0 0 2px rgba(0, 0, 0, 0.9))';
+  marker.style.color = pathAim.inside ? '#5dff8a' : '#ffe14a';
+  marker.style.filter = 'drop-shadow(0 0 3px rgba(0, 0, 0, 0.7))';
 }
 
 // ---- Camera, every frame ------------------------------------------------------------------------
@@ -1103,6 +1174,8 @@ function chaseOffsetNow(): [number, number] {
 /** The camera's field of view, degrees: `base`, widened by up to `fast` more between `from` and `to` m/s (speed shows). */
 const FOV = Object.freeze({ base: 64, fast: 10, from: 110, to: 170 });
 let readoutFrame = 0;
+/** The phase the HUD showed last. */
+let shownPhase = '';
 
 function frame(): void {
   const world = shell.world;
@@ -1117,6 +1190,10 @@ function frame(): void {
   if (!app.pacer.mayDraw()) {
     updateBanner(world.time);
     updateGoal();
+    if (crashReadings && shownPhase !== state.phase) {
+      shownPhase = state.phase;
+      updateHud(crashReadings);
+    }
     showTip(false);
     return;
   }
@@ -1180,7 +1257,7 @@ function frame(): void {
   pointToNextRing();
   showTip();
   engine.set(state.phase === 'crashed' ? 0 : 0.25 + 0.75 * state.throttle);
-  const i = instruments(world);
+  const i = crashReadings ?? instruments(world);
   drawCockpit(state.camera === 'cockpit' && state.phase !== 'crashed', i);
   // Wider with speed, eased towards it.
   const fov = FOV.base + FOV.fast * Math.max(0, Math.min(1, (i.speed - FOV.from) / (FOV.to - FOV.from)));
@@ -1191,7 +1268,12 @@ function frame(): void {
   drawCrash();
   updateBanner(world.time);
   updateGoal();
-  if (readoutFrame++ % 6 === 0) updateHud(i);
+  // At once when the flight ends (the end card and the readouts at the crash), else every 6th frame.
+  if (readoutFrame++ % 6 === 0 || state.phase !== shownPhase) {
+    shownPhase = state.phase;
+    updateHud(i);
+  }
+  showTurnBack();
 }
 
 /** Instrument readings of the aircraft now: speed, altitude, attitude, heading, the wing's angle of attack (m/s, m, degrees). */
@@ -1288,6 +1370,8 @@ shell.expose({
     [0, 1, 2, 3].flatMap((i) => RING_WAYS.map((w) => lessonTipText(i, w, { touch: touchFirst, compact, pilotPitch: params.pilotPitch }))),
   /** Game time at which the tip now shown goes, s (Infinity: it stays while its ring is next). */
   tipUntil: () => tipGoneAt,
+  /** The turn-back cue's text now ('' when none shows) and how long the aircraft has flown away from the next ring, s. */
+  turnBack: () => ({ text: turnBackText, awayFor }),
   /** The banner's text now ('' when none shows) and the warning. */
   banner: () => ({ text: banner.style.display === 'none' ? '' : (banner.textContent ?? ''), warning: state.warning }),
   params,

@@ -898,6 +898,19 @@ describe('projects', () => {
       w.world.components.Position.y[w.aircraftBody()] = 1; // below every hill and the sea
     });
     await g.page.keyboard.press('Space'); // ring 3's tip waits
+    // The readouts give the crash's values as soon as the goal line says so, and keep them (they ran
+    // on after "Crashed", 166 -> 170 m/s and 309 -> 245 m: they were refreshed every 6th drawn frame).
+    const atCrash = await g.waitFor(
+      () =>
+        document.querySelector('[data-hud="goal"]')?.textContent?.startsWith('Crashed')
+          ? document.querySelector('[data-hud="readout"]')!.textContent
+          : null,
+      null,
+    );
+    const crashAlt = Number(atCrash.match(/alt (-?\d+) m/)?.[1]);
+    expect(Math.abs(crashAlt), atCrash).toBeLessThan(10); // put at 1 m, it crashes within a step
+    await g.frames(30);
+    expect(await g.page.locator('[data-hud="readout"]').textContent()).toBe(atCrash);
     await g.waitFor(() => (window.game as unknown as Flight).state.phase === 'crashed', null);
     const again = g.page.getByRole('button', { name: 'Try again ↺', exact: true });
     await again.waitFor({ state: 'visible' });
@@ -905,6 +918,43 @@ describe('projects', () => {
     await again.click();
     await g.waitFor(() => (window.game as unknown as Flight).state.phase === 'flying', null);
     expect(await g.page.evaluate(() => (window.game as unknown as Flight).state.score)).toBe(0);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
+  it('flight-simulator: far from the next ring a cue says to turn back, with the side to turn to; near it again the cue goes', async () => {
+    const g = await h.openGame('flight-simulator', { query: { rings: 3 } });
+    type Flight = Game & {
+      aircraftBody(): number;
+      rings(): { x: number; y: number; z: number }[];
+      turnBack(): { text: string; awayFor: number };
+    };
+    await g.page.keyboard.press('Space'); // the flight waits for the pilot
+    expect(await g.page.evaluate(() => (window.game as unknown as Flight).turnBack().text)).toBe('');
+    // 4 km past ring 1 (it lies along +x, the heading at the start), 300 m to its right (+z): ring 1 is behind, on the left.
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as Flight;
+      const r = w.rings()[0]!,
+        c = w.world.components,
+        e = w.aircraftBody();
+      c.Position.x[e] = r.x + 4000;
+      c.Position.y[e] = r.y + 300; // clear of the hills (700 m at most)
+      c.Position.z[e] = r.z + 300;
+    });
+    const text = await g.waitFor(() => (window.game as unknown as Flight).turnBack().text, null);
+    expect(text).toBe('◀ Turn back: ring 1 is behind you');
+    expect(await g.page.locator('[data-hud="turn-back"]').isVisible()).toBe(true);
+    // Back before the ring, flying towards it: the cue goes.
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as Flight;
+      const r = w.rings()[0]!,
+        c = w.world.components,
+        e = w.aircraftBody();
+      c.Position.x[e] = r.x - 500;
+      c.Position.z[e] = r.z;
+    });
+    await g.waitFor(() => (window.game as unknown as Flight).turnBack().text === '', null);
+    expect(await g.page.locator('[data-hud="turn-back"]').isVisible()).toBe(false);
     expect(g.errors).toEqual([]);
     await g.close();
   });

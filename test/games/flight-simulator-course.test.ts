@@ -4,7 +4,9 @@
  * flown as the game starts it with no input passes ring 1 within 5 s, a scripted pilot passes every
  * ring of the default course, a move through a ring's plane passes it inside the radius, misses it
  * outside, and counts nothing the wrong way or far off, each missed ring costs 20 s of course time and a
- * star, and the lesson tips' ways (left / right, higher / lower) are where the ring lies from the aircraft.
+ * star, and the lesson tips' ways (left / right, higher / lower) are where the ring lies from the aircraft;
+ * only a run that beats a kept best is a new best (not the first); the turn-back cue shows far from
+ * the ring or after flying away from it, on the side the ring lies.
  */
 
 import { createPhysicsWorld, setBodyThrust, setControlDeflection, step } from '@bitphysics/physics';
@@ -12,6 +14,7 @@ import { AIRCRAFT, aircraft, aircraftLevelDrag, terrainHeight } from '@bitphysic
 import { describe, expect, it } from 'vitest';
 import { ASSIST, assist, CONTROL_AUTHORITY, createAssistState, flightState } from '../../games/flight-simulator/assist';
 import {
+  compareWithBest,
   courseStars,
   courseTime,
   crossRing,
@@ -37,6 +40,9 @@ import {
   ringDifficulty,
   ringWay,
   TIP_OFFSET,
+  TURN_BACK_AWAY_TIME,
+  TURN_BACK_DISTANCE,
+  turnBackCue,
 } from '../../games/flight-simulator/course';
 
 const terrain = aircraft.build(createPhysicsWorld(aircraft.worldOptions()), { seed: 3 }).terrain;
@@ -372,5 +378,35 @@ describe('flight simulator course', () => {
     expect(longest).toBeLessThanOrEqual(90);
     expect(lessonTipText(0, worst, phone)).toMatch(/^Fly through the yellow rings\. ⊕ .*stick\.$/);
     expect(() => lessonTipText(4, worst, phone)).toThrow(/lessonTipText: ring must be an integer in \[0, 3\], got 4/);
+  });
+
+  it('a new best beats a kept best: the first run is kept but not praised, a worse or equal run is not a best', () => {
+    // A stranger's 1 of 10 on a first run was praised "A new best for this course!".
+    expect(compareWithBest(null, 1, 300)).toBe('first');
+    const kept = { passed: 6, time: 156 };
+    expect(compareWithBest(kept, 7, 400)).toBe('better'); // more rings, however slow
+    expect(compareWithBest(kept, 6, 150)).toBe('better'); // as many, faster
+    expect(compareWithBest(kept, 6, 156)).toBe('not'); // a tie is not a new best
+    expect(compareWithBest(kept, 6, 170)).toBe('not');
+    expect(compareWithBest(kept, 5, 60)).toBe('not'); // fewer rings, however fast
+    expect(() => compareWithBest(kept, 1.5, 60)).toThrow(/compareWithBest: passed must be a whole number >= 0, got 1.5/);
+    expect(() => compareWithBest(kept, 2, Number.NaN)).toThrow(/compareWithBest: time must be a finite number >= 0 \(s\), got NaN/);
+  });
+
+  it('the turn-back cue: none near the ring or briefly away, shown far off or long away, on the side the ring lies', () => {
+    // Heading along +x (0 rad); +z is the right of the nose seen from above.
+    expect(turnBackCue([1000, 0, 200], 0, 0)).toBeNull();
+    expect(turnBackCue([-1000, 0, 200], 0, TURN_BACK_AWAY_TIME - 0.1)).toBeNull();
+    // Flying away for TURN_BACK_AWAY_TIME: the ring behind and to the right says right, to the left says left.
+    expect(turnBackCue([-1000, 0, 200], 0, TURN_BACK_AWAY_TIME)).toBe('right');
+    expect(turnBackCue([-1000, 0, -200], 0, TURN_BACK_AWAY_TIME)).toBe('left');
+    // Farther than TURN_BACK_DISTANCE, whatever the time away.
+    expect(turnBackCue([TURN_BACK_DISTANCE + 10, 0, -50], 0, 0)).toBe('left');
+    expect(turnBackCue([TURN_BACK_DISTANCE - 10, 0, -50], 0, 0)).toBeNull();
+    // Heading along +z (pi/2): its right is -x.
+    expect(turnBackCue([-4000, 0, -10], Math.PI / 2, 0)).toBe('right');
+    expect(turnBackCue([4000, 0, -10], Math.PI / 2, 0)).toBe('left');
+    expect(() => turnBackCue([0, Number.NaN, 0], 0, 0)).toThrow(/turnBackCue: toRing must be 3 finite numbers/);
+    expect(() => turnBackCue([0, 0, 0], Number.NaN, 0)).toThrow(/turnBackCue: heading must be a finite number \(rad\), got NaN/);
   });
 });

@@ -61,7 +61,7 @@ const CSS = `
 .bp-hud, .bp-legend, .bp-error { font: 12px/1.45 ui-monospace, SFMono-Regular, Menlo, Consolas, monospace;
   color: #e8ecf1; border-radius: 6px; user-select: none; }
 .bp-hud h1 { font: 600 14px/1.3 system-ui, sans-serif; margin: 0 0 4px; }
-.bp-hud .bp-run-state { color: #ffd166; }
+.bp-hud .bp-run-state { color: #ffd166; min-height: 1.45em; }
 .bp-legend div { display: flex; gap: 6px; align-items: baseline; margin-bottom: 2px; }
 .bp-legend kbd { flex: none; display: inline-block; min-width: 1.4em; text-align: center; padding: 0 5px; border: 1px solid #8a94a6;
   border-radius: 4px; background: rgba(255, 255, 255, 0.08); font: inherit; white-space: nowrap; }
@@ -160,6 +160,7 @@ export function createHud(options: HudOptions): Hud {
   bodiesLine.dataset.hud = 'bodies';
   const stepsLine = document.createElement('div');
   stepsLine.dataset.hud = 'steps';
+  // The pause line keeps its height while empty (CSS min-height), so the legend under it stays put.
   const status = document.createElement('div');
   status.className = 'bp-run-state';
   status.dataset.hud = 'status';
