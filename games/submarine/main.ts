@@ -342,6 +342,8 @@ function stepWorld(world: PhysicsWorld): void {
       state.hits++;
       state.lastHit = 'seabed';
       hitMarks.push({ kind: 'seabed', x: seabedContact.x, y: seabedContact.y, time: world.time });
+      // The hit's first frame (its label) is drawn even when a busy GPU makes the pacer skip frames.
+      game.drawNext();
       if (state.hits >= 3) state.over = 'sunk';
     }
   }
@@ -362,6 +364,7 @@ function stepWorld(world: PhysicsWorld): void {
     applyImpulse(world, e, [(MINE_BLAST_IMPULSE * dx) / r, (MINE_BLAST_IMPULSE * dy) / r]);
     blasts.push({ x: m.x, y: m.y, time: world.time });
     hitMarks.push({ kind: 'mine', x: m.x, y: m.y, time: world.time });
+    game.drawNext();
     sound.explosion(0.9);
     if (state.hits >= 3) state.over = 'sunk';
   }
@@ -645,7 +648,7 @@ function showHull(): void {
   hullGauge.textContent = `hull ${'▮'.repeat(left)}${'▯'.repeat(3 - left)} ${left}/3`;
   hullGauge.style.color = left <= 1 ? '#ff8a7a' : '';
 }
-/** The label at a hit: what hit the hull ("MINE!", "SEABED SCRAPE") and its cost. */
+/** The label at a hit: what hit the hull ("MINE!", "SEABED!") and its cost. */
 const hitLabel = new Text({
   text: '',
   style: {
@@ -675,9 +678,19 @@ app.stage.addChild(mineTag);
 const pause = createPauseOverlay({ shadeAlpha: 0.5 });
 app.stage.addChild(pause.container);
 const touch = isTouchDevice();
-/** Shows or hides the pause overlay over a `W` x `H` px scene, on top of everything drawn on the stage. */
+/** Whether the pause overlay showed in the last frame drawn by drawPause. */
+let pauseShown = false;
+/**
+ * Shows or hides the pause overlay over a `W` x `H` px scene, on top of everything drawn on the stage.
+ * The frame where it comes or goes is drawn whatever the frame pacer says: on a busy GPU the pacer
+ * skips most frames, and a paused game draws nothing new that would make up for a skipped one.
+ */
 function drawPause(W: number, H: number): void {
   const on = shell.paused && !state.over;
+  if (on !== pauseShown) {
+    pauseShown = on;
+    game.drawNext();
+  }
   // Pools of labels are added to the stage as they are needed: kept under the overlay.
   if (on && app.stage.children[app.stage.children.length - 1] !== pause.container) app.stage.addChild(pause.container);
   pause.draw(on, W, H, touch);
@@ -766,7 +779,7 @@ function drawMineWarning(t: number, k: number, sx: (x: number) => number, sy: (y
   mineWarning.tail = tail;
 }
 /** The label's text for each cause of a hit. */
-const HIT_TEXT = { mine: 'MINE!\n−1 hull', seabed: 'SEABED SCRAPE\n−1 hull' } as const;
+const HIT_TEXT = { mine: 'MINE!\n−1 hull', seabed: 'SEABED!\n−1 hull' } as const;
 /**
  * Draws the newest hit's signs at game time `t` (s), `k` px a metre, through `sx`, `sy` (world m to
  * screen px) in a `W` x `H` px view: a red ring spreading from the place, a cloud of sand and a fan
@@ -1518,7 +1531,8 @@ function draw(): void {
   }
   const newest = pickups[pickups.length - 1];
   // The end card takes over from the banner once the run is over.
-  banner.visible = newest !== undefined && !state.over;
+  // Hidden while paused: the pause overlay's words are the only ones in the middle then.
+  banner.visible = newest !== undefined && !state.over && !shell.paused;
   if (newest) {
     const u = (t - newest.time) / PICKUP_LIFE;
     banner.text = newest.text;
