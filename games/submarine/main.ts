@@ -121,6 +121,19 @@ const BLAST_LIFE = 1.6;
 
 /** Game time the pointer last left an uncollected beacon for another, s (its label pulses for AIM_PULSE s). */
 let aimSwitchedAt = Number.NEGATIVE_INFINITY;
+/**
+ * The pointer label's hint when the boat comes in fast on its target (BRAKE_HINT): with the screw
+ * let go the boat glides 20-30 m, so a newcomer holding Ahead to the beacon overshoots it.
+ */
+const BRAKE_HINT = 'let go early; Astern brakes';
+/** The hint shows while the target is at most this far ahead along the heading, m, ... */
+const BRAKE_HINT_RANGE = 40;
+/** ... and the boat goes ahead faster than this, m/s. */
+const BRAKE_HINT_SPEED = 6;
+/** Times the hint comes on in a page, at most (a newcomer's lesson, not a nag). */
+const BRAKE_HINT_MAX = 3;
+/** Times the brake hint came on, and whether it shows now. */
+const brakeHint = { shown: 0, on: false };
 /** How long the pointer's label pulses after it switches beacon, s of game time. */
 const AIM_PULSE = 1.2;
 /**
@@ -1560,6 +1573,19 @@ function draw(): void {
     // A mine on the way is ringed where it is, and a mine on the boat's course is told by the hull
     // (drawMineWarning), where the player looks: the pointer at the screen's edge tells only the ridge.
     pointer.text = beaconLabel(wx - hxw, wy - hyw, c.Angle.value[e]!, ridge, '', beaconName(aim.index));
+    // Coming in fast with the target near ahead (no ridge line to show): the brake hint as the
+    // label's second line, each time it starts until it has come on BRAKE_HINT_MAX times.
+    const ca = Math.cos(c.Angle.value[e]!),
+      sa = Math.sin(c.Angle.value[e]!);
+    const along = (wx - hxw) * ca + (wy - hyw) * sa,
+      vAlong = c.Velocity.x[e]! * ca + c.Velocity.y[e]! * sa;
+    const fast = !ridge && !state.over && along > 0 && along < BRAKE_HINT_RANGE && vAlong > BRAKE_HINT_SPEED;
+    if (!fast) brakeHint.on = false;
+    else if (!brakeHint.on && brakeHint.shown < BRAKE_HINT_MAX) {
+      brakeHint.on = true;
+      brakeHint.shown++;
+    }
+    if (brakeHint.on) pointer.text += `\n${BRAKE_HINT}`;
     aim.dx = wx - hxw;
     aim.dy = wy - hyw;
     // The right margin leaves the depth gauge clear too (on a phone the badge sat over it). A beacon
@@ -1819,8 +1845,8 @@ const panel = createPanel(
 );
 
 shell.expose({
-  /** The beacon pointer: the beacon it leads to (-1: none), distance (m), offset (m), arrow angle and whether it is on screen. */
-  beaconPointer: () => ({ ...aim, visible: pointer.visible, text: pointer.text, zoom, otherTags }),
+  /** The beacon pointer: the beacon it leads to (-1: none), distance (m), offset (m), arrow angle, whether it is on screen, its label text and how many times the brake hint came on. */
+  beaconPointer: () => ({ ...aim, visible: pointer.visible, text: pointer.text, zoom, otherTags, brakeHints: brakeHint.shown }),
   /** The depth gauge's tags as last drawn: the boat's depth and the target's, each x, y, width, height, px (zeros while hidden). */
   gaugeTags: () => ({ depth: [...gauge_.depth], target: [...gauge_.target] }),
   /** The camera as last drawn: centre (x, y, m), zoom (px/m), look-ahead (m, before its limit) and shake (px). */

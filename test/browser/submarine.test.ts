@@ -803,4 +803,45 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     expect(g.errors).toEqual([]);
     await g.close();
   }, 180_000);
+
+  it('coming in fast on the target the label tells to let go early and that Astern brakes, at most 3 times; not when far or slow', async () => {
+    const g = await h.openGame('submarine', { viewport, touch, query: { waves: 0 } });
+    type P = Sub & { beaconPointer(): { index: number; text: string; brakeHints: number } };
+    // Paused: the label is drawn from the hull's place and velocity as set (nothing moves).
+    const at = async (before: number, speed: number) => {
+      await g.page.evaluate(
+        ([before, speed]) => {
+          const w = window.game as unknown as P;
+          w.paused = true;
+          const c = w.world.components,
+            e = w.hull(),
+            b = w.handles().beacons;
+          c.Position.x[e] = b[0]! - before!;
+          c.Position.y[e] = b[1]!;
+          c.Velocity.x[e] = speed!;
+          c.Velocity.y[e] = 0;
+          c.Angle.value[e] = 0;
+        },
+        [before, speed],
+      );
+      await g.frames(3);
+      return g.page.evaluate(() => (window.game as unknown as P).beaconPointer());
+    };
+    const hint = 'let go early; Astern brakes';
+    expect((await at(30, 3)).text).not.toContain(hint); // slow
+    expect((await at(70, 10)).text).not.toContain(hint); // far
+    for (let i = 1; i <= 3; i++) {
+      const p = await at(30, 10);
+      expect(p.index).toBe(0);
+      expect(p.text).toBe(`target A: 30 m ahead\n${hint}`);
+      expect(p.brakeHints).toBe(i);
+      expect((await at(30, 3)).text).toBe('target A: 30 m ahead');
+    }
+    // A fourth time in: no more.
+    const p = await at(30, 10);
+    expect(p.text).toBe('target A: 30 m ahead');
+    expect(p.brakeHints).toBe(3);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  }, 180_000);
 });
