@@ -121,6 +121,19 @@ const BLAST_LIFE = 1.6;
 
 /** Game time the pointer last left an uncollected beacon for another, s (its label pulses for AIM_PULSE s). */
 let aimSwitchedAt = Number.NEGATIVE_INFINITY;
+/**
+ * The pointer label's hint when the boat comes in fast on its target (BRAKE_HINT): with the screw
+ * let go the boat glides 20-30 m, so a newcomer holding Ahead to the beacon overshoots it.
+ */
+const BRAKE_HINT = 'let go early; Astern brakes';
+/** The hint shows while the target is at most this far ahead along the heading, m, ... */
+const BRAKE_HINT_RANGE = 40;
+/** ... and the boat goes ahead faster than this, m/s. */
+const BRAKE_HINT_SPEED = 6;
+/** Times the hint comes on in a page, at most (a newcomer's lesson, not a nag). */
+const BRAKE_HINT_MAX = 3;
+/** Times the brake hint came on, and whether it shows now. */
+const brakeHint = { shown: 0, on: false };
 /** How long the pointer's label pulses after it switches beacon, s of game time. */
 const AIM_PULSE = 1.2;
 /**
@@ -342,6 +355,8 @@ function stepWorld(world: PhysicsWorld): void {
       state.hits++;
       state.lastHit = 'seabed';
       hitMarks.push({ kind: 'seabed', x: seabedContact.x, y: seabedContact.y, time: world.time });
+      // The hit's first frame (its label) is drawn even when a busy GPU makes the pacer skip frames.
+      game.drawNext();
       if (state.hits >= 3) state.over = 'sunk';
     }
   }
@@ -362,6 +377,7 @@ function stepWorld(world: PhysicsWorld): void {
     applyImpulse(world, e, [(MINE_BLAST_IMPULSE * dx) / r, (MINE_BLAST_IMPULSE * dy) / r]);
     blasts.push({ x: m.x, y: m.y, time: world.time });
     hitMarks.push({ kind: 'mine', x: m.x, y: m.y, time: world.time });
+    game.drawNext();
     sound.explosion(0.9);
     if (state.hits >= 3) state.over = 'sunk';
   }
@@ -645,7 +661,7 @@ function showHull(): void {
   hullGauge.textContent = `hull ${'▮'.repeat(left)}${'▯'.repeat(3 - left)} ${left}/3`;
   hullGauge.style.color = left <= 1 ? '#ff8a7a' : '';
 }
-/** The label at a hit: what hit the hull ("MINE!", "SEABED SCRAPE") and its cost. */
+/** The label at a hit: what hit the hull ("MINE!", "SEABED!") and its cost. */
 const hitLabel = new Text({
   text: '',
   style: {
@@ -675,9 +691,19 @@ app.stage.addChild(mineTag);
 const pause = createPauseOverlay({ shadeAlpha: 0.5 });
 app.stage.addChild(pause.container);
 const touch = isTouchDevice();
-/** Shows or hides the pause overlay over a `W` x `H` px scene, on top of everything drawn on the stage. */
+/** Whether the pause overlay showed in the last frame drawn by drawPause. */
+let pauseShown = false;
+/**
+ * Shows or hides the pause overlay over a `W` x `H` px scene, on top of everything drawn on the stage.
+ * The frame where it comes or goes is drawn whatever the frame pacer says: on a busy GPU the pacer
+ * skips most frames, and a paused game draws nothing new that would make up for a skipped one.
+ */
 function drawPause(W: number, H: number): void {
   const on = shell.paused && !state.over;
+  if (on !== pauseShown) {
+    pauseShown = on;
+    game.drawNext();
+  }
   // Pools of labels are added to the stage as they are needed: kept under the overlay.
   if (on && app.stage.children[app.stage.children.length - 1] !== pause.container) app.stage.addChild(pause.container);
   pause.draw(on, W, H, touch);
@@ -766,7 +792,7 @@ function drawMineWarning(t: number, k: number, sx: (x: number) => number, sy: (y
   mineWarning.tail = tail;
 }
 /** The label's text for each cause of a hit. */
-const HIT_TEXT = { mine: 'MINE!\n−1 hull', seabed: 'SEABED SCRAPE\n−1 hull' } as const;
+const HIT_TEXT = { mine: 'MINE!\n−1 hull', seabed: 'SEABED!\n−1 hull' } as const;
 /**
  * Draws the newest hit's signs at game time `t` (s), `k` px a metre, through `sx`, `sy` (world m to
  * screen px) in a `W` x `H` px view: a red ring spreading from the place, a cloud of sand and a fan
@@ -1518,7 +1544,8 @@ function draw(): void {
   }
   const newest = pickups[pickups.length - 1];
   // The end card takes over from the banner once the run is over.
-  banner.visible = newest !== undefined && !state.over;
+  // Hidden while paused: the pause overlay's words are the only ones in the middle then.
+  banner.visible = newest !== undefined && !state.over && !shell.paused;
   if (newest) {
     const u = (t - newest.time) / PICKUP_LIFE;
     banner.text = newest.text;
@@ -1546,6 +1573,19 @@ function draw(): void {
     // A mine on the way is ringed where it is, and a mine on the boat's course is told by the hull
     // (drawMineWarning), where the player looks: the pointer at the screen's edge tells only the ridge.
     pointer.text = beaconLabel(wx - hxw, wy - hyw, c.Angle.value[e]!, ridge, '', beaconName(aim.index));
+    // Coming in fast with the target near ahead (no ridge line to show): the brake hint as the
+    // label's second line, each time it starts until it has come on BRAKE_HINT_MAX times.
+    const ca = Math.cos(c.Angle.value[e]!),
+      sa = Math.sin(c.Angle.value[e]!);
+    const along = (wx - hxw) * ca + (wy - hyw) * sa,
+      vAlong = c.Velocity.x[e]! * ca + c.Velocity.y[e]! * sa;
+    const fast = !ridge && !state.over && along > 0 && along < BRAKE_HINT_RANGE && vAlong > BRAKE_HINT_SPEED;
+    if (!fast) brakeHint.on = false;
+    else if (!brakeHint.on && brakeHint.shown < BRAKE_HINT_MAX) {
+      brakeHint.on = true;
+      brakeHint.shown++;
+    }
+    if (brakeHint.on) pointer.text += `\n${BRAKE_HINT}`;
     aim.dx = wx - hxw;
     aim.dy = wy - hyw;
     // The right margin leaves the depth gauge clear too (on a phone the badge sat over it). A beacon
@@ -1805,8 +1845,8 @@ const panel = createPanel(
 );
 
 shell.expose({
-  /** The beacon pointer: the beacon it leads to (-1: none), distance (m), offset (m), arrow angle and whether it is on screen. */
-  beaconPointer: () => ({ ...aim, visible: pointer.visible, text: pointer.text, zoom, otherTags }),
+  /** The beacon pointer: the beacon it leads to (-1: none), distance (m), offset (m), arrow angle, whether it is on screen, its label text and how many times the brake hint came on. */
+  beaconPointer: () => ({ ...aim, visible: pointer.visible, text: pointer.text, zoom, otherTags, brakeHints: brakeHint.shown }),
   /** The depth gauge's tags as last drawn: the boat's depth and the target's, each x, y, width, height, px (zeros while hidden). */
   gaugeTags: () => ({ depth: [...gauge_.depth], target: [...gauge_.target] }),
   /** The camera as last drawn: centre (x, y, m), zoom (px/m), look-ahead (m, before its limit) and shake (px). */

@@ -27,7 +27,17 @@ type Sub = {
   };
   hull(): number;
   handles(): { beacons: Float64Array; seabed: { x0: number; dx: number; y: Float64Array } };
-  state: { hits: number; holdY: number; throttle: number; mode: string; fill: number; glowsCaught: number; streak: number; score: number };
+  state: {
+    hits: number;
+    holdY: number;
+    throttle: number;
+    mode: string;
+    fill: number;
+    glowsCaught: number;
+    streak: number;
+    score: number;
+    collected: number;
+  };
   glows(): { x: number; y: number; leg: number; state: string }[];
   mines(): { x: number; y: number; live: boolean }[];
   camera(): Camera;
@@ -534,7 +544,7 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
       const py = r.cam.height / 2 - (r.hit.y - r.cam.y) * r.cam.zoom;
       expect(Math.abs(by + bh / 2 - py)).toBeLessThan(12 * r.cam.zoom + bh);
     };
-    await check('seabed', 'SEABED SCRAPE\n−1 hull', 'hull ▮▮▯ 2/3');
+    await check('seabed', 'SEABED!\n−1 hull', 'hull ▮▮▯ 2/3');
     // Level at 12 m/s, 45 m before the first mine at its depth: the warning comes by the hull at
     // once (contact in under 4 s), a tag telling which way to pass and an arrow from the hull to the
     // mine. Paused in the page on the first frame it is drawn.
@@ -732,6 +742,105 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     expect(p.ridge).toBe(true);
     expect(p.text).toMatch(/ridge/);
     expect(Math.abs(p.crest[0]! - ridge.x)).toBeLessThan(2);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  }, 180_000);
+
+  it('the pause button (a real tap on a phone) brings the Paused overlay on the next frame even while the frame pacer draws nothing, and the pickup banner hides under it', async () => {
+    const g = await h.openGame('submarine', { viewport, touch, query: { waves: 0 } });
+    // The pacer made to refuse every frame, as on a GPU too busy to finish any: only a frame the
+    // game forces (drawNext) is drawn. Before the overlay forced one, a pause showed nothing new.
+    const before = await g.page.evaluate(() => {
+      const w = window.game as unknown as Sub & { pacer: { drawn: number; mayDraw(): boolean } };
+      w.pacer.mayDraw = () => false;
+      return w.pacer.drawn;
+    });
+    await g.frames(3);
+    const button = g.page.locator('button[aria-label^="pause / resume"]');
+    const box = (await button.boundingBox())!;
+    if (touch) await g.page.touchscreen.tap(box.x + box.width / 2, box.y + box.height / 2);
+    else await button.click();
+    await g.waitFor(() => (window.game as unknown as Sub).paused, null);
+    await g.frames(3);
+    const r = await g.page.evaluate(() => {
+      const w = window.game as unknown as Sub & {
+        pacer: { drawn: number };
+        pauseOverlay(): { visible: boolean; text: string };
+      };
+      return { drawn: w.pacer.drawn, pause: w.pauseOverlay() };
+    });
+    expect(r.pause.visible).toBe(true);
+    expect(r.pause.text).toBe(touch ? 'Paused\n▶ to resume' : 'Paused\nP to resume');
+    // Exactly the one forced frame drawn since the pacer was stopped: the one with the overlay.
+    expect(r.drawn).toBe(before + 1);
+    // A beacon collected, paused on that frame: the banner hides while the overlay shows, and
+    // comes back on resume.
+    type Fx = Sub & { pickupEffect(): { count: number; banner: string } };
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as Fx;
+      const c = w.world.components,
+        e = w.hull(),
+        b = w.handles().beacons;
+      c.Position.x[e] = b[0]! - 3;
+      c.Position.y[e] = b[1]!;
+      const frame = () => {
+        if (w.state.collected === 1) w.paused = true;
+        else requestAnimationFrame(frame);
+      };
+      requestAnimationFrame(frame);
+      w.paused = false;
+    });
+    await g.waitFor(() => (window.game as unknown as Fx).state.collected === 1 && (window.game as unknown as Fx).paused, null, 60_000);
+    await g.frames(2);
+    const paused = await g.page.evaluate(() => (window.game as unknown as Fx).pickupEffect());
+    expect(paused.count).toBe(1);
+    expect(paused.banner).toBe('');
+    await g.page.evaluate(() => {
+      (window.game as unknown as Fx).paused = false;
+    });
+    await g.frames(2);
+    expect(await g.page.evaluate(() => (window.game as unknown as Fx).pickupEffect().banner)).toBe('Beacon 1 of 6');
+    expect(g.errors).toEqual([]);
+    await g.close();
+  }, 180_000);
+
+  it('coming in fast on the target the label tells to let go early and that Astern brakes, at most 3 times; not when far or slow', async () => {
+    const g = await h.openGame('submarine', { viewport, touch, query: { waves: 0 } });
+    type P = Sub & { beaconPointer(): { index: number; text: string; brakeHints: number } };
+    // Paused: the label is drawn from the hull's place and velocity as set (nothing moves).
+    const at = async (before: number, speed: number) => {
+      await g.page.evaluate(
+        ([before, speed]) => {
+          const w = window.game as unknown as P;
+          w.paused = true;
+          const c = w.world.components,
+            e = w.hull(),
+            b = w.handles().beacons;
+          c.Position.x[e] = b[0]! - before!;
+          c.Position.y[e] = b[1]!;
+          c.Velocity.x[e] = speed!;
+          c.Velocity.y[e] = 0;
+          c.Angle.value[e] = 0;
+        },
+        [before, speed],
+      );
+      await g.frames(3);
+      return g.page.evaluate(() => (window.game as unknown as P).beaconPointer());
+    };
+    const hint = 'let go early; Astern brakes';
+    expect((await at(30, 3)).text).not.toContain(hint); // slow
+    expect((await at(70, 10)).text).not.toContain(hint); // far
+    for (let i = 1; i <= 3; i++) {
+      const p = await at(30, 10);
+      expect(p.index).toBe(0);
+      expect(p.text).toBe(`target A: 30 m ahead\n${hint}`);
+      expect(p.brakeHints).toBe(i);
+      expect((await at(30, 3)).text).toBe('target A: 30 m ahead');
+    }
+    // A fourth time in: no more.
+    const p = await at(30, 10);
+    expect(p.text).toBe('target A: 30 m ahead');
+    expect(p.brakeHints).toBe(3);
     expect(g.errors).toEqual([]);
     await g.close();
   }, 180_000);
