@@ -249,6 +249,39 @@ describe('catapult', () => {
     expect(g.errors).toEqual([]);
   });
 
+  it('with the frame pacer drawing nothing (a GPU too busy to finish a frame), a pause, a resume and a reset are each drawn at once', async () => {
+    // game-kit's startPixiGame forces the first frame after a pause or resume and after a new world:
+    // a paused scene does not change, so before, a pause on a busy GPU left the old picture (no
+    // "Paused") until the pacer let a frame through, seconds later under software WebGL and load.
+    type Paced = { pacer: { drawn: number; mayDraw(): boolean }; paused: boolean; reset(): void };
+    const drawn = () => g.page.evaluate(() => (window.game as unknown as Paced).pacer.drawn);
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as Paced;
+      (window as unknown as { keptMayDraw: () => boolean }).keptMayDraw = w.pacer.mayDraw;
+      w.pacer.mayDraw = () => false;
+    });
+    await g.frames(3);
+    const start = await drawn();
+    await g.frames(3);
+    expect(await drawn()).toBe(start);
+    await g.page.keyboard.press('p');
+    await g.frames(3);
+    expect(await g.page.evaluate(() => (window.game as unknown as Paced).paused)).toBe(true);
+    expect(await drawn()).toBe(start + 1);
+    await g.page.keyboard.press('p');
+    await g.frames(3);
+    expect(await drawn()).toBe(start + 2);
+    await g.page.evaluate(() => (window.game as unknown as Paced).reset());
+    await g.frames(3);
+    expect(await drawn()).toBe(start + 3);
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as Paced;
+      w.pacer.mayDraw = (window as unknown as { keptMayDraw: () => boolean }).keptMayDraw;
+      w.paused = false;
+    });
+    expect(g.errors).toEqual([]);
+  });
+
   it('a drag back from the cup and release throws a projectile that flies', async () => {
     // A fresh level (a retry of this test starts from the same state), aimed at once the camera is at rest.
     await g.page.evaluate(() => {

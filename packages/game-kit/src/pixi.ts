@@ -117,7 +117,8 @@ function webgl2Of(app: Application): WebGL2RenderingContext | null {
  * WorldRenderer that follows the shell's world across resets. Each frame: the renderer places the
  * display objects for alpha (after `beforeFrame`), `onFrame` draws extras, `app.render()` presents, unless the GPU has not
  * finished `maxFramesInFlight` earlier frames (WebGL 2 fences, ./frame-pacer; never under WebGPU or
- * WebGL 1): then that frame is not drawn and the canvas keeps the last one.
+ * WebGL 1): then that frame is not drawn and the canvas keeps the last one. The first frame after a
+ * pause or resume, after a new world (reset, a level) and after `drawNext()` is always drawn.
  * @throws whatever createPixiApp, createGameShell or the WorldRenderer constructor throws (bad
  *   options); RangeError if maxFramesInFlight is not an integer in [1, 8].
  */
@@ -125,9 +126,18 @@ export async function startPixiGame(options: PixiGameOptions): Promise<PixiGame>
   const { renderer: rendererOptions, app: appOptions, onFrame, beforeFrame, maxFramesInFlight, ...shellOptions } = options;
   const app = await createPixiApp(appOptions);
   const pacer = createFramePacer(webgl2Of(app), maxFramesInFlight ?? 2);
-  // Set by drawNext: the next frame is drawn whatever the pacer says.
+  // Set by drawNext, a pause or resume, and a new world: the next frame is drawn whatever the pacer
+  // says. A paused scene does not change, so a skipped frame after the pause would otherwise leave the
+  // picture from before it (no pause overlay) until the GPU caught up, seconds on a busy one.
   let forced = false;
+  let shellRef: GameShell | null = null;
+  let wasPaused: boolean | null = null;
   const draw = (): void => {
+    const paused = shellRef?.paused ?? false;
+    if (paused !== wasPaused) {
+      wasPaused = paused;
+      forced = true;
+    }
     if (!forced && !pacer.mayDraw()) return;
     forced = false;
     app.render();
@@ -140,6 +150,10 @@ export async function startPixiGame(options: PixiGameOptions): Promise<PixiGame>
     onFrame,
     beforeFrame,
   );
+  shellRef = shell;
+  shell.onWorldChange(() => {
+    forced = true;
+  });
   const exposed = shell.expose({ renderer: worldRenderer, app, pacer });
   shell.start();
   const drawNext = (): void => {
