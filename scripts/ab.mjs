@@ -13,12 +13,12 @@
 // (default 330), --window a-b (default 150-250), --seed (default 1). Exit code 2 on a usage error.
 
 import { execFileSync } from 'node:child_process';
-import { mkdtempSync, rmSync, symlinkSync, writeFileSync } from 'node:fs';
+import { mkdtempSync, rmSync, symlinkSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { parseArgs } from 'node:util';
-import * as esbuild from 'esbuild';
 import { root } from './build.mjs';
+import { bundlePhysics } from './physics-bundle.mjs';
 
 /** A bad flag found only once the packages are built (an unknown scene): reported as a usage error. */
 class UsageError extends Error {}
@@ -74,26 +74,8 @@ try {
 try {
   // The revision's sources resolve their packages (bitecs) from this tree's node_modules.
   symlinkSync(join(root, 'node_modules'), join(base, 'node_modules'), 'dir');
-  const bundle = async (tree, name) => {
-    const entry = join(temp, `${name}.ts`),
-      out = join(temp, `${name}.mjs`);
-    writeFileSync(entry, `export * from ${JSON.stringify(join(tree, 'packages', 'physics', 'src', 'index.ts'))};\n`);
-    await esbuild.build({
-      entryPoints: [entry],
-      bundle: true,
-      platform: 'node',
-      format: 'esm',
-      conditions: ['bitphysics-source'],
-      // As the bench, the pages and the packages' dist/ ship the engine: constants folded into the
-      // code that reads them (layout offsets imported from their own modules included).
-      minifySyntax: true,
-      outfile: out,
-      logLevel: 'error',
-    });
-    return import(out);
-  };
-  const A = await bundle(base, 'rev'),
-    B = await bundle(root, 'tree');
+  const A = await bundlePhysics(temp, base, 'rev'),
+    B = await bundlePhysics(temp, root, 'tree');
   const make = (M) => {
     const scene = M.SCENES[values.scene];
     if (!scene) throw new UsageError(`unknown scene ${values.scene} (scenes: ${Object.keys(M.SCENES).join(', ')})`);

@@ -17,12 +17,12 @@
 // code 2 on a usage error.
 
 import { execFileSync } from 'node:child_process';
-import { mkdtempSync, rmSync, symlinkSync, writeFileSync } from 'node:fs';
+import { mkdtempSync, rmSync, symlinkSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { parseArgs } from 'node:util';
-import * as esbuild from 'esbuild';
 import { root } from './build.mjs';
+import { bundlePhysics } from './physics-bundle.mjs';
 
 function usage(message) {
   console.error(
@@ -94,23 +94,6 @@ function scene(M, name, count) {
   return w;
 }
 
-async function bundle(dir, tree, name) {
-  const entry = join(dir, `${name}.ts`),
-    out = join(dir, `${name}.mjs`);
-  writeFileSync(entry, `export * from ${JSON.stringify(join(tree, 'packages', 'physics', 'src', 'index.ts'))};\n`);
-  await esbuild.build({
-    entryPoints: [entry],
-    bundle: true,
-    platform: 'node',
-    format: 'esm',
-    conditions: ['bitphysics-source'],
-    minifySyntax: true,
-    outfile: out,
-    logLevel: 'error',
-  });
-  return import(out);
-}
-
 const median = (x) => {
   const y = [...x].sort((p, q) => p - q);
   return y.length === 0 ? Number.NaN : y[y.length >> 1];
@@ -140,9 +123,9 @@ try {
     }
     worktree = true;
     symlinkSync(join(root, 'node_modules'), join(base, 'node_modules'), 'dir');
-    builds.push([rev, await bundle(temp, base, 'rev')]);
+    builds.push([rev, await bundlePhysics(temp, base, 'rev')]);
   }
-  builds.push(['working tree', await bundle(temp, root, 'tree')]);
+  builds.push(['working tree', await bundlePhysics(temp, root, 'tree')]);
   const worlds = values.only === undefined ? WORLDS : WORLDS.filter(([n]) => n === values.only);
   if (worlds.length === 0) usage(`--only must name one of: ${WORLDS.map(([n]) => n).join('; ')}`);
   for (const [name, make] of worlds) {
