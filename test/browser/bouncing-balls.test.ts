@@ -423,6 +423,23 @@ interface HoopGame {
   ballIds(): number[];
 }
 
+/** The hoop game with what the heap-throw cases step, aim and read (window.game). */
+type HeapThrows = HoopGame & {
+  params: { gravity: number };
+  paused: boolean;
+  reset(): void;
+  step(): void;
+  aimFrom(e: number, vx: number, vy: number): number[];
+  throwBall(e: number, vx: number, vy: number): void;
+  world: {
+    components: {
+      Position: { x: Float64Array; y: Float64Array };
+      Velocity: { x: Float64Array; y: Float64Array };
+      Ball: { radius: Float64Array };
+    };
+  };
+};
+
 /** A finger down at the first point, through the others, then (after `before`, if given) lifted (CDP touch events). */
 async function swipe(page: Page, points: Array<[number, number]>, before?: () => Promise<void>): Promise<void> {
   const cdp = await page.context().newCDPSession(page);
@@ -638,21 +655,7 @@ describe('bouncing balls: the hoop game', () => {
     // least 90 % of their free rise in 0.25 s (1.94 m), and the aiming arc rises past that (it does
     // not end on the neighbour). Before, the neighbour took part of the throw and the arc ended on it.
     const wedged = await g.page.evaluate(() => {
-      const game = window.game as unknown as HoopGame & {
-        params: { gravity: number };
-        paused: boolean;
-        reset(): void;
-        step(): void;
-        aimFrom(e: number, vx: number, vy: number): number[];
-        throwBall(e: number, vx: number, vy: number): void;
-        world: {
-          components: {
-            Position: { x: Float64Array; y: Float64Array };
-            Velocity: { x: Float64Array; y: Float64Array };
-            Ball: { radius: Float64Array };
-          };
-        };
-      };
+      const game = window.game as unknown as HeapThrows;
       game.reset();
       game.paused = true;
       for (let k = 0; k < 600; k++) game.step();
@@ -706,21 +709,7 @@ describe('bouncing balls: the hoop game', () => {
     ];
     const rows = await g.page.evaluate(
       ({ walls, box }) => {
-        const game = window.game as unknown as HoopGame & {
-          params: { gravity: number };
-          paused: boolean;
-          reset(): void;
-          step(): void;
-          aimFrom(e: number, vx: number, vy: number): number[];
-          throwBall(e: number, vx: number, vy: number): void;
-          world: {
-            components: {
-              Position: { x: Float64Array; y: Float64Array };
-              Velocity: { x: Float64Array; y: Float64Array };
-              Ball: { radius: Float64Array };
-            };
-          };
-        };
+        const game = window.game as unknown as HeapThrows;
         const g = game.params.gravity;
         const out: { arcEnd: number; off: number }[] = [];
         for (let i = 0; i < 60; i++) {

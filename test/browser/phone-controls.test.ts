@@ -8,6 +8,7 @@
  */
 import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { pausedShade, resumedShade } from './dom-pause';
 import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
 import { checkLayout } from './layout-check';
 import { touchPath } from './touch';
@@ -174,24 +175,11 @@ describe('phone controls', () => {
       window.game!.paused = false;
     });
     await g.page.getByRole('button', { name: 'pause / resume (P)' }).tap();
-    const shade = await g.waitFor(() => {
-      const el = document.querySelector<HTMLElement>('[data-hud="paused"]');
-      if (!window.game!.paused || !el || el.style.display === 'none') return null;
-      const box = el.getBoundingClientRect(),
-        stage = document.querySelector('canvas')!.getBoundingClientRect();
-      return {
-        text: el.innerText,
-        box: [box.left, box.top, box.width, box.height],
-        stage: [stage.left, stage.top, stage.width, stage.height],
-      };
-    }, null);
+    const shade = await pausedShade(g);
     expect(shade.text.replace(/\s+/g, ' ')).toBe('Paused Tap to resume');
     for (let k = 0; k < 4; k++) expect(Math.abs(shade.box[k]! - shade.stage[k]!)).toBeLessThan(2);
     await g.page.touchscreen.tap(shade.box[0]! + shade.box[2]! / 2, shade.box[1]! + shade.box[3]! / 2);
-    await g.waitFor(
-      () => !window.game!.paused && document.querySelector<HTMLElement>('[data-hud="paused"]')!.style.display === 'none',
-      null,
-    );
+    await resumedShade(g);
     expect(g.errors).toEqual([]);
     await g.close();
   });

@@ -8,6 +8,7 @@
 
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { lowContrastText } from './contrast-check';
+import { pausedShade, resumedShade } from './dom-pause';
 import { Harness } from './harness';
 import { checkPageContract } from './page-contract';
 
@@ -788,24 +789,11 @@ describe('projects', () => {
     }
     // P pauses: the scene dims over the whole stage, "Paused" and how to resume in its middle; P again resumes.
     await g.page.keyboard.press('p');
-    const shade = await g.waitFor(() => {
-      const el = document.querySelector<HTMLElement>('[data-hud="paused"]');
-      if (!window.game!.paused || !el || el.style.display === 'none') return null;
-      const box = el.getBoundingClientRect(),
-        stage = document.querySelector('canvas')!.getBoundingClientRect();
-      return {
-        text: el.innerText,
-        box: [box.left, box.top, box.width, box.height],
-        stage: [stage.left, stage.top, stage.width, stage.height],
-      };
-    }, null);
+    const shade = await pausedShade(g);
     expect(shade.text.replace(/\s+/g, ' ')).toBe('Paused P to resume');
     for (let k = 0; k < 4; k++) expect(Math.abs(shade.box[k]! - shade.stage[k]!)).toBeLessThan(2);
     await g.page.keyboard.press('p');
-    await g.waitFor(
-      () => !window.game!.paused && document.querySelector<HTMLElement>('[data-hud="paused"]')!.style.display === 'none',
-      null,
-    );
+    await resumedShade(g);
     expect(g.errors).toEqual([]);
     await g.close();
   });
