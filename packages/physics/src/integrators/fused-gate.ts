@@ -15,7 +15,7 @@ import { vortexSystem } from '../forces/vortex.js';
 import { beginFusedSubstep } from '../world/fused-state.js';
 import type { PhysicsWorld, System } from '../world/options.js';
 import { query } from '../world/query.js';
-import type { ForcesPlan } from '../world/scratch.js';
+import { type ForcesPlan, sameEntries } from '../world/scratch.js';
 import { forcedBodies, fusedBareBodies, fusedLinearBodies, fusedQuadraticBodies } from './queries.js';
 
 /**
@@ -96,15 +96,7 @@ const IDLE_WHEN: ReadonlyMap<System, readonly [(c: Components) => object[], numb
  */
 function forcesPlan(world: PhysicsWorld, forces: readonly System[]): ForcesPlan<PhysicsWorld> {
   const plan = world.scratch.forcesPlan;
-  if (plan !== undefined && plan.forces.length === forces.length) {
-    let same = true;
-    for (let i = 0; i < forces.length; i++)
-      if (plan.forces[i] !== forces[i]) {
-        same = false;
-        break;
-      }
-    if (same) return plan;
-  }
+  if (plan !== undefined && sameEntries(plan.forces, forces)) return plan;
   const c = world.components;
   const made: ForcesPlan<PhysicsWorld> = { forces: forces.slice(), allowed: true, idle: [], least: [], force: query(world, [c.Force]) };
   let absorbed = 0;

@@ -1,7 +1,7 @@
 import type { QueryResult } from 'bitecs';
 import type { PhysicsWorld, System } from '../world/options.js';
 import { query } from '../world/query.js';
-import type { StagePlan as StagePlanOf, StagePlans as StagePlansOf } from '../world/scratch.js';
+import { type StagePlan as StagePlanOf, type StagePlans as StagePlansOf, sameEntries } from '../world/scratch.js';
 import { STAGES, type StageName } from '../world/stage-names.js';
 import { finiteTrustOf, idleGuardTerms, systemMarksVersion } from '../world/trusted-systems.js';
 
@@ -50,15 +50,7 @@ export function stagePlans(world: PhysicsWorld): StagePlans {
  */
 export function stagePlan(world: PhysicsWorld, plans: StagePlans, stage: StageName, systems: readonly System[]): StagePlan {
   const plan = plans[stage];
-  if (plan !== null && plan.version === systemMarksVersion() && plan.systems.length === systems.length) {
-    let same = true;
-    for (let i = 0; i < systems.length; i++)
-      if (plan.systems[i] !== systems[i]) {
-        same = false;
-        break;
-      }
-    if (same) return plan;
-  }
+  if (plan !== null && plan.version === systemMarksVersion() && sameEntries(plan.systems, systems)) return plan;
   return makePlan(world, plans, stage, systems);
 }
 

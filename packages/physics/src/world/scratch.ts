@@ -303,3 +303,14 @@ export function createWorldScratch<W>(): WorldScratch<W> {
     queryTwins: new Map(),
   };
 }
+
+/**
+ * Whether a cached list and a current one hold the same entries in the same order (by identity): the
+ * test a cached plan of a stage's systems (step/plan.ts, integrators/fused-gate.ts) is kept by.
+ * @category World and step
+ */
+export function sameEntries(cached: readonly unknown[], current: readonly unknown[]): boolean {
+  if (cached.length !== current.length) return false;
+  for (let i = 0; i < current.length; i++) if (cached[i] !== current[i]) return false;
+  return true;
+}
