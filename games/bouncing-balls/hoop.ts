@@ -1,7 +1,9 @@
 /**
  * The hoop game on top of the bouncing-balls sandbox: throw balls through a basketball hoop (a
  * backboard and a front rim, both static segments the balls bounce off with the scene's restitution)
- * as many times as you can in `ROUND_SECONDS`; the hoop moves to its next spot after each basket.
+ * as many times as you can in `ROUND_SECONDS`; the hoop moves to another spot after each basket
+ * (`nextSpot`: the page deals them in a seeded random order, different every round, after the
+ * warm-up's hoop at the layout's first spot).
  * Pure rules and the hoop's bodies: no DOM, no pixi (it runs in Node for the tests).
  *
  * A basket: the centre of one of the player's balls crosses the rim's line downwards between the
@@ -51,7 +53,8 @@ export interface HoopSpot {
 }
 
 /**
- * Hoop spots of the wide 16 x 10 m box (scene.ts BOX), in the order they come: clear of its inclined
+ * Hoop spots of the wide 16 x 10 m box (scene.ts BOX), the first the warm-up's (the page deals the
+ * rest in a random order, nextSpot): clear of its inclined
  * walls, rims 3 m or more under the top (room for an arc over the rim), and each reachable by a clean
  * throw with room for error from a fifth or more of the lower box (reach.ts; measured by
  * scripts/bouncing-balls-reach.mjs).
@@ -257,16 +260,64 @@ export interface HoopRound {
   readonly seconds: number;
   /** Seconds left on the clock, in [0, seconds]. */
   timeLeft: number;
-  /** Index of the hoop's spot in the layout's spots (advances with each basket, cycling). */
+  /** Index of the hoop's spot in the layout's spots (moves with each basket: `nextSpot`). */
   spot: number;
+  /** The spots still to come in this pass through the layout's spots, in order (`nextSpot` deals them; empty before the first basket). */
+  upcoming: number[];
   /** Balls the player threw this round: in the warm-up all of them; from the first basket on, that basket's throw and those after it. */
   shots: number;
 }
 
-/** A new round of `seconds` s (default ROUND_SECONDS), warming up until the first basket. @throws RangeError unless seconds is finite and > 0. */
-export function createRound(seconds = ROUND_SECONDS): HoopRound {
+/**
+ * A new round of `seconds` s (default ROUND_SECONDS), warming up until the first basket, its hoop at
+ * spot index `spot` (default 0).
+ * @throws RangeError unless seconds is finite and > 0, or if spot is not an integer >= 0.
+ */
+export function createRound(seconds = ROUND_SECONDS, spot = 0): HoopRound {
   if (!(seconds > 0 && Number.isFinite(seconds))) throw new RangeError(`createRound: seconds must be finite and > 0, got ${seconds}`);
-  return { phase: 'ready', score: 0, points: 0, streak: 0, bestStreak: 0, lastPoints: 0, seconds, timeLeft: seconds, spot: 0, shots: 0 };
+  if (!(Number.isInteger(spot) && spot >= 0)) throw new RangeError(`createRound: spot must be an integer >= 0, got ${spot}`);
+  return {
+    phase: 'ready',
+    score: 0,
+    points: 0,
+    streak: 0,
+    bestStreak: 0,
+    lastPoints: 0,
+    seconds,
+    timeLeft: seconds,
+    spot,
+    upcoming: [],
+    shots: 0,
+  };
+}
+
+/**
+ * Where the hoop of `round` goes after a basket, an index of the layout's `spotCount` spots. Without
+ * `random`, the next spot in turn (cycling). With `random` (a generator of numbers in [0, 1), e.g. a
+ * seeded Rng's next), the spots are dealt in passes: each pass is every spot but the current one in
+ * an order shuffled by `random` (Fisher-Yates), so the order differs from round to round and from
+ * pass to pass, every spot comes up within spotCount baskets and none twice in a row. Keeps the pass's
+ * rest in `round.upcoming`.
+ * @throws RangeError if spotCount is not a positive integer, or random returns a number outside [0, 1).
+ */
+export function nextSpot(round: HoopRound, spotCount: number, random?: () => number): number {
+  if (!(Number.isInteger(spotCount) && spotCount > 0))
+    throw new RangeError(`nextSpot: spotCount must be a positive integer, got ${spotCount}`);
+  if (!random || spotCount === 1) return (round.spot + 1) % spotCount;
+  // A pass dealt for another layout (more spots) is dropped.
+  if (round.upcoming.some((s) => s >= spotCount)) round.upcoming = [];
+  if (round.upcoming.length === 0) {
+    const pass: number[] = [];
+    for (let s = 0; s < spotCount; s++) if (s !== round.spot) pass.push(s);
+    for (let i = pass.length - 1; i > 0; i--) {
+      const u = random();
+      if (!(u >= 0 && u < 1)) throw new RangeError(`nextSpot: random must return numbers in [0, 1), got ${u}`);
+      const j = Math.floor(u * (i + 1));
+      [pass[i], pass[j]] = [pass[j]!, pass[i]!];
+    }
+    round.upcoming = pass;
+  }
+  return round.upcoming.shift()!;
 }
 
 /** The player threw a ball: counts the shot (the clock waits for the first basket). Nothing changes once time is up. */
@@ -290,12 +341,13 @@ export function roundTick(round: HoopRound, dt: number): boolean {
 
 /**
  * A basket with a ball of `kind`: BALL_POINTS[kind] times the streak's multiplier (streakMultiplier of
- * the baskets in a row before it), the streak grows and the hoop moves to its next spot (of
- * `spotCount`, cycling); the first one starts the clock and restarts the shot count at its own throw. Ignored once time is up. @returns whether it
- * counted (the points it made are in `lastPoints`).
+ * the baskets in a row before it), the streak grows and the hoop moves to its next spot of
+ * `spotCount` (`nextSpot`: in turn, or dealt at random by `random`, numbers in [0, 1)); the first one
+ * starts the clock and restarts the shot count at its own throw. Ignored once time is up. @returns
+ * whether it counted (the points it made are in `lastPoints`).
  * @throws RangeError if spotCount is not a positive integer or kind is not a key of BALL_POINTS.
  */
-export function roundBasket(round: HoopRound, spotCount: number, kind: BallKind = 'basketball'): boolean {
+export function roundBasket(round: HoopRound, spotCount: number, kind: BallKind = 'basketball', random?: () => number): boolean {
   if (!(Number.isInteger(spotCount) && spotCount > 0))
     throw new RangeError(`roundBasket: spotCount must be a positive integer, got ${spotCount}`);
   if (!Object.hasOwn(BALL_POINTS, kind)) throw new RangeError(`roundBasket: kind must be basketball, heap or gold, got ${kind}`);
@@ -308,7 +360,7 @@ export function roundBasket(round: HoopRound, spotCount: number, kind: BallKind 
   round.points += round.lastPoints;
   round.streak++;
   round.bestStreak = Math.max(round.bestStreak, round.streak);
-  round.spot = (round.spot + 1) % spotCount;
+  round.spot = nextSpot(round, spotCount, random);
   return true;
 }
 

@@ -15,10 +15,11 @@
  *
  * Input: a click drops a ball at the pointer, and a pull throws one slingshot-style from where the
  * press began, on a ball or not (opposite to
- * the pull, faster the longer it is, hoop.ts slingVelocity), with a dotted arc of its flight while
- * pulling (hoop.ts throwPath), bounces off the walls, the hoop and its net included. A pull taken back
+ * the pull, faster the longer it is, hoop.ts slingVelocity), with a dotted arc of the start of its
+ * flight while pulling (hoop.ts throwPath: AIM_SECONDS of it, twice that in the warm-up before the
+ * first basket, fading out, up to its first touch; the player judges the rest). A pull taken back
  * to within CANCEL_PULL of its press point ("release here to cancel") and let go throws nothing; the
- * full-speed pull is shortened for a press low on the screen (pressFullPull), and the round's end
+ * full-speed pull is shortened for a pull with little room to the window's edge (pullFullPull), and the round's end
  * ends an aim under way. The net stops a
  * ball from below or the side (hoop.ts netContact). The player's balls are basketballs, all the same
  * size (hoop.ts PLAYER_RADIUS). Holding still on a ball or crate for HOLD_MS, 1 s (a ring fills from
@@ -127,9 +128,13 @@ const TOUCH_SLOP = 12;
  * go cancels the aim: no throw, no shot, the streak kept. Dragging back onto the ball takes it back.
  */
 const CANCEL_PULL = 15;
-/** The shortest full-speed pull, CSS px, however little room there is under the press (see pressFullPull). */
-const MIN_FULL_PULL = 80;
-/** Kept free between the full-speed pull's end and the viewport's bottom edge, CSS px. */
+/**
+ * The shortest full-speed pull, CSS px, however little room there is beyond the press (pullFullPull):
+ * short enough that a heap ball by the window's side (the desktop's box reaches its right edge)
+ * still throws at full speed sideways, long enough that a px of pull is at most 1/40 of the top speed.
+ */
+const MIN_FULL_PULL = 40;
+/** Kept free between the full-speed pull's end and the viewport's edge, CSS px. */
 const EDGE_MARGIN = 2;
 
 /** A screen taller than wide (a phone held upright) gets the tall box, which fills it. */
@@ -223,6 +228,8 @@ function createWorld(): PhysicsWorld {
   const world = createPhysicsWorld(bouncingBallsWorldOptions(options));
   handles = buildBouncingBalls(world, options);
   crates = [];
+  // Each round's warm-up hoop is the layout's first spot; after it the spots come in an order of the
+  // round's own (hoopOrder).
   round = createRound(roundSeconds);
   flights = new Map();
   basketballs = new Set();
@@ -231,7 +238,7 @@ function createWorld(): PhysicsWorld {
   goldRng = new Rng(params.seed + 7);
   missAt = -1e9;
   lastBasket = { x: 0, y: 0, time: -10, spot: 0, score: 0, points: 0, kind: 'basketball' };
-  hoopIds = addHoop(world, hoopSpots(TALL)[0]!, params.restitution, params.friction);
+  hoopIds = addHoop(world, hoopSpots(TALL)[round.spot]!, params.restitution, params.friction);
   leaving = new Map();
   addSystem(world, 'integrate', keepLeavingFree);
   addSystem(world, 'collide', leaveFreely);
@@ -450,6 +457,14 @@ function pickGold(world: PhysicsWorld): void {
 }
 /** Picks the gold balls (seeded, so a seed's round is the same). */
 let goldRng = new Rng(1);
+/**
+ * Deals the hoop's spots after each basket (hoop.ts nextSpot): made once per page from the seed, not
+ * per world, so every new round (R, Play again) goes round the hoops in another order, and a page with
+ * a given ?seed plays the same rounds in the same order.
+ */
+const hoopOrder = new Rng(params.seed * 31 + 17);
+/** hoopOrder's next number in [0, 1), for nextSpot. */
+const hoopRandom = (): number => hoopOrder.next();
 
 /**
  * The hoop game after a step: a thrown ball whose centre went down through the hoop's opening is a
@@ -476,12 +491,13 @@ function playHoop(world: PhysicsWorld): void {
       tooHighAt = performance.now();
       hintReason = 'below';
     }
-    if (b.scores && crossing === -1 && roundBasket(round, spots.length, b.kind)) {
+    const wasSpot = round.spot;
+    if (b.scores && crossing === -1 && roundBasket(round, spots.length, b.kind, hoopRandom)) {
       lastBasket = {
         x: opening.minX + 0.5 * (opening.maxX - opening.minX),
         y: opening.y,
         time: world.time,
-        spot: (round.spot + spots.length - 1) % spots.length,
+        spot: wasSpot,
         score: round.score,
         points: round.lastPoints,
         kind: b.kind,
@@ -848,17 +864,28 @@ function fullPull(): number {
 }
 
 /**
- * The full-speed pull, CSS px, of a press at viewport height `clientY`, CSS px: fullPull, or less
- * when the viewport has less room than that under the press (down to MIN_FULL_PULL), so a straight
- * pull down from a heap ball still reaches MAX_THROW_SPEED before the pointer meets the window's
- * bottom edge, where a mouse stops.
+ * The full-speed pull, CSS px, of a pull from viewport point (clientX, clientY), CSS px, in direction
+ * (dx, dy) (any length; screen axes, y down): fullPull, or less when the viewport has less room than
+ * that from the press to its edge along the pull (down to MIN_FULL_PULL), so a pull from a heap ball
+ * low in the box or by the window's side still reaches MAX_THROW_SPEED before the pointer meets the
+ * window's edge, where a mouse may stop. fullPull for a zero direction (no pull yet).
  */
-function pressFullPull(clientY: number): number {
-  const room = (window.innerHeight || clientY) - clientY - EDGE_MARGIN;
-  return Math.min(fullPull(), Math.max(MIN_FULL_PULL, room));
+function pullFullPull(clientX: number, clientY: number, dx: number, dy: number): number {
+  const len = Math.hypot(dx, dy);
+  if (!(len > 0)) return fullPull();
+  const ux = dx / len,
+    uy = dy / len;
+  const w = window.innerWidth || clientX,
+    h = window.innerHeight || clientY;
+  const across = ux > 0 ? (w - EDGE_MARGIN - clientX) / ux : ux < 0 ? (clientX - EDGE_MARGIN) / -ux : Infinity,
+    down = uy > 0 ? (h - EDGE_MARGIN - clientY) / uy : uy < 0 ? (clientY - EDGE_MARGIN) / -uy : Infinity;
+  return Math.min(fullPull(), Math.max(MIN_FULL_PULL, Math.min(across, down)));
 }
-/** The current press's full-speed pull, CSS px (pressFullPull at the press). */
+/** The current press's full-speed pull, CSS px (pullFullPull at the press, along the pull now). */
 let fullPullNow = 420;
+/** Where the current press began in the viewport, CSS px (for pullFullPull). */
+let pressClientX = 0,
+  pressClientY = 0;
 
 /** The cancel zone's radius round the press, CSS px: CANCEL_PULL, or the thrown ball's drawn radius if larger. */
 function cancelRadius(): number {
@@ -892,6 +919,7 @@ function endAim(): void {
  */
 function currentThrow(): { x: number; y: number; vx: number; vy: number; radius: number; mass: number } {
   const cam = renderer.camera;
+  fullPullNow = pullFullPull(pressClientX, pressClientY, lastX - startX, lastY - startY);
   const [vx, vy] = slingVelocity(lastX - startX, lastY - startY, fullPullNow);
   if (pressBall !== 0 && handles.balls.includes(pressBall)) {
     const c = shell.world.components,
@@ -932,7 +960,9 @@ canvas.addEventListener('pointerdown', (event) => {
   dragged = false;
   pressBall = ballUnder(renderer.camera.toWorldX(startX), renderer.camera.toWorldY(startY));
   slop = event.pointerType === 'touch' ? TOUCH_SLOP : CLICK_SLOP;
-  fullPullNow = pressFullPull(event.clientY);
+  pressClientX = event.clientX;
+  pressClientY = event.clientY;
+  fullPullNow = fullPull();
   holdStart = performance.now();
   clearTimeout(holdTimer);
   const { clientX, clientY, pointerId: id, pointerType, timeStamp } = event;
@@ -1073,15 +1103,51 @@ function launch(e: number, thrown: boolean): void {
 canvas.addEventListener('pointerup', (event) => release(event, false));
 canvas.addEventListener('pointercancel', (event) => release(event, true));
 
-/** The dotted arc of the throw the pointer would make now: its points, m (flat x, y pairs), or [] when not pulling. */
+/**
+ * The dotted arc of the throw the pointer would make now: its points, m (flat x, y pairs), or [] when
+ * not pulling. Only the start of the flight (aimSeconds), so a basket is judged, not read off the screen.
+ */
 function aimPath(): number[] {
   if (pointerId === -1 || !dragged || inCancelZone()) return [];
-  const t = currentThrow();
-  return arcOf(t, pressBall);
+  return arcOf(currentThrow(), pressBall, aimSeconds(), 0);
 }
 
-/** The aiming arc of throw `t` (start, m; velocity, m/s; the ball's radius, m, and mass, kg), ending at any ball but `thrown` in its way. */
-function arcOf(t: { x: number; y: number; vx: number; vy: number; radius: number; mass: number }, thrown: number): number[] {
+/** The whole flight of the throw the pointer would make now (FLIGHT_SECONDS, AIM_BOUNCES bounces): points, m, or [] when not pulling. */
+function aimFlight(): number[] {
+  if (pointerId === -1 || !dragged || inCancelZone()) return [];
+  return arcOf(currentThrow(), pressBall, FLIGHT_SECONDS, AIM_BOUNCES);
+}
+
+/**
+ * How much of a throw's flight its aiming arc shows, s: AIM_SECONDS, or AIM_SECONDS_WARMUP in the
+ * warm-up (before the round's first basket), where a first-timer learns how the pull throws.
+ */
+function aimSeconds(): number {
+  return round.phase === 'ready' ? AIM_SECONDS_WARMUP : AIM_SECONDS;
+}
+/**
+ * The aiming arc's length once the clock runs, s of flight: about the first third of a basket's
+ * flight (a basket from the natural starts of reach.ts reaches the rim 0.8 to 2 s after its throw,
+ * 1.7 s the median), so the arc shows the throw's direction and strength and the player judges the
+ * rest. It also ends where the ball first touches anything: no bounce is shown.
+ */
+const AIM_SECONDS = 0.6;
+/** The aiming arc's length in the warm-up (before the round's first basket), s of flight: twice AIM_SECONDS, most of a basket's way. */
+const AIM_SECONDS_WARMUP = 1.2;
+/** The longest flight `aimFlight` and the test hook `aimFrom` follow, s. */
+const FLIGHT_SECONDS = 2.5;
+
+/**
+ * The aiming arc of throw `t` (start, m; velocity, m/s; the ball's radius, m, and mass, kg) for its
+ * first `seconds` s of flight and `bounces` bounces (hoop.ts throwPath), ending at any ball but
+ * `thrown` in its way.
+ */
+function arcOf(
+  t: { x: number; y: number; vx: number; vy: number; radius: number; mass: number },
+  thrown: number,
+  seconds = FLIGHT_SECONDS,
+  bounces = AIM_BOUNCES,
+): number[] {
   const p = handles.params;
   const spot = hoopSpots(TALL)[round.spot]!;
   const walls = [
@@ -1095,8 +1161,8 @@ function arcOf(t: { x: number; y: number; vx: number; vy: number; radius: number
     mass: t.mass,
     radius: t.radius,
     box: layoutOf(TALL).box,
-    seconds: 2.5,
-    bounces: AIM_BOUNCES,
+    seconds,
+    bounces,
     restitution: p.restitution,
     friction: p.friction,
     walls,
@@ -1128,7 +1194,7 @@ function arcStops(t: { x: number; y: number; vx: number; vy: number; radius: num
   const { met } = leaveOf(near, t.x, t.y, t.vx, t.vy, t.radius, shell.world.dt);
   return near.filter((b) => !met.has(b));
 }
-/** Bounces the aiming arc follows (off the walls, the hoop and its net) before it ends. */
+/** Bounces the whole predicted flight (aimFlight, aimFrom) follows (off the walls, the hoop and its net) before it ends; the shown arc follows none. */
 const AIM_BOUNCES = 2;
 
 /** The label over a press held on a ball (what the hold does) and over a ball picked up (how to let go). */
@@ -1209,12 +1275,13 @@ function drawPointer(): void {
   overlay.circle(ox + lastX - startX, oy + lastY - startY, 5).fill({ color: 0xffffff, alpha: 0.5 });
   const path = aimPath();
   const n = path.length / 2;
+  // The dots shrink and fade out along the arc (the shown arc is only the flight's start: aimSeconds).
   for (let i = 1; i < n; i++) {
     const f = i / n;
     overlay
-      .circle(cam.toScreenX(path[2 * i]!), cam.toScreenY(path[2 * i + 1]!), Math.max(3, 0.32 * r * (1 - 0.4 * f)))
-      .fill({ color: thrownColor, alpha: 1 - 0.55 * f })
-      .stroke({ width: 1.5, color: 0x0b0f16, alpha: 0.8 - 0.4 * f });
+      .circle(cam.toScreenX(path[2 * i]!), cam.toScreenY(path[2 * i + 1]!), Math.max(3, 0.32 * r * (1 - 0.45 * f)))
+      .fill({ color: thrownColor, alpha: 1 - 0.75 * f })
+      .stroke({ width: 1.5, color: 0x0b0f16, alpha: 0.8 - 0.6 * f });
   }
   if (pressBall !== 0 && handles.balls.includes(pressBall)) {
     // A ball of the scene is thrown: a ring round it and what it is worth.
@@ -1783,8 +1850,8 @@ shell.expose({
   /** A player's ball at (x, y) m with velocity (vx, vy) m/s, as a throw releases it (counts for the hoop). @returns its id. */
   shoot: (x: number, y: number, vx = 0, vy = 0): number => shoot(x, y, vx, vy),
   /**
-   * The dotted arc a pull starting on ball `eid` shows for a throw with velocity (vx, vy), m/s: its
-   * points, m (flat x, y pairs), ending at a ball in its way. @throws RangeError if `eid` is not a ball of the scene.
+   * The whole predicted flight of a throw of ball `eid` with velocity (vx, vy), m/s (2.5 s, two
+   * bounces; a pull starting on it shows the start of it): its points, m (flat x, y pairs), ending at a ball in its way. @throws RangeError if `eid` is not a ball of the scene.
    */
   aimFrom: (eid: number, vx: number, vy: number): number[] => {
     if (!handles.balls.includes(eid)) throw new RangeError(`aimFrom: ${eid} is not a ball of the scene`);
@@ -1792,13 +1859,20 @@ shell.expose({
       s = slotOf(eid);
     return arcOf({ x: c.Position.x[s]!, y: c.Position.y[s]!, vx, vy, radius: c.Ball.radius[s]!, mass: c.Mass.value[s]! }, eid);
   },
-  /** The dotted arc drawn while pulling a throw: its points, m (flat x, y pairs), or [] when not pulling or in the cancel zone. */
+  /**
+   * The dotted arc drawn while pulling a throw: its points, m (flat x, y pairs), or [] when not pulling
+   * or in the cancel zone; the first 0.6 s of the flight (1.2 s before the round's first basket), to its first touch.
+   */
   aimPath: (): number[] => aimPath(),
+  /** The whole predicted flight of the throw being pulled (2.5 s, two bounces; the arc shows its start): points, m, or [] as aimPath. */
+  aimFlight: (): number[] => aimFlight(),
+  /** How much of a throw's flight the aiming arc shows now, s (1.2 in the warm-up before the first basket, then 0.6). */
+  aimSeconds: (): number => aimSeconds(),
   /** Whether a press is under way (pressed and not yet released, cancelled or ended by the round's end). */
   aiming: (): boolean => pointerId !== -1,
   /** The label over the press or the carried ball ('' when none shows), e.g. 'release here to cancel'. */
   aimLabel: (): string => (holdLabel.visible ? holdLabel.text : ''),
-  /** The full-speed pull of the current (or last) press, CSS px. */
+  /** The full-speed pull of the current (or last) press, CSS px, along its pull (pullFullPull). */
   fullPull: (): number => fullPullNow,
   /** The status row's text (goal, numbers, hint). */
   statusText: (): string => status.element.innerText,

@@ -415,6 +415,8 @@ describe('bouncing balls', () => {
 interface HoopGame {
   round(): { phase: 'ready' | 'playing' | 'over'; score: number; timeLeft: number; spot: number; shots: number; seconds: number };
   aimPath(): number[];
+  aimFlight(): number[];
+  aimSeconds(): number;
   world: { components: { Velocity: { x: Float64Array; y: Float64Array } } };
   best(): number;
   hoop(): { y: number; minX: number; maxX: number };
@@ -556,18 +558,31 @@ describe('bouncing balls: the hoop game', () => {
     });
     expect(under.top).toBeLessThanOrEqual(under.rim - 1.1 + 1e-6);
     expect(under.top).toBeGreaterThan(under.rim - 1.1 - 0.05);
-    // The aiming arc bounces: pressed low in the box's right half and pulled left and down, the throw
-    // goes right into the wall and the arc comes back off it (it used to end at the wall).
+    // The predicted flight bounces: pressed low in the box's right half and pulled left and down, the
+    // throw goes right into the wall and the flight comes back off it. Once the clock runs the arc drawn
+    // is only the flight's start (it used to be the whole flight, bounces included): at most its first
+    // 0.6 s, point for point, and it ends at the wall, showing no bounce.
     const press = await g.worldToPage(9, 2),
       pull = await g.worldToPage(5, 1.6);
     await g.page.mouse.move(press.x, press.y);
     await g.page.mouse.down();
     await g.page.mouse.move(pull.x, pull.y, { steps: 4 });
-    const bank = await g.page.evaluate(() => (window.game as unknown as HoopGame).aimPath());
+    const aim = await g.page.evaluate(() => {
+      const game = window.game as unknown as HoopGame;
+      return { shown: game.aimPath(), flight: game.aimFlight(), seconds: game.aimSeconds(), phase: game.round().phase };
+    });
     await g.page.mouse.up();
-    const xs = bank.filter((_, i) => i % 2 === 0);
+    const xs = aim.flight.filter((_, i) => i % 2 === 0);
     expect(Math.max(...xs)).toBeGreaterThan(15.5);
     expect(xs.at(-1)!).toBeLessThan(Math.max(...xs) - 1);
+    expect(aim).toMatchObject({ phase: 'playing', seconds: 0.6 });
+    // A point every 4 steps of 1/60 s from the throw: 0.6 s is 10 points at most (one more at a touch).
+    expect(aim.shown.length).toBeGreaterThanOrEqual(8);
+    expect(aim.shown.length).toBeLessThanOrEqual(22);
+    expect(aim.shown.length).toBeLessThan(aim.flight.length - 4);
+    for (let i = 0; i < aim.shown.length; i++) expect(aim.shown[i]).toBeCloseTo(aim.flight[i]!, 9);
+    const shownXs = aim.shown.filter((_, i) => i % 2 === 0);
+    for (let i = 1; i < shownXs.length; i++) expect(shownXs[i]!).toBeGreaterThan(shownXs[i - 1]!);
     // A ball dropped from above the rim's line does not count.
     const shots = await g.page.evaluate(() => {
       const game = window.game as unknown as HoopGame;
@@ -1087,6 +1102,52 @@ describe('bouncing balls: cancelling, full-power pulls and the end of a round mi
     expect(v.shots).toBe(1);
     expect(Math.abs(v.vx)).toBeLessThan(1e-9);
     expect(v.vy).toBeCloseTo(20, 9);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
+  it("desktop 1280 x 800: from a heap ball by the window's right edge, a pull to that edge throws at the full speed", async () => {
+    const g = await h.openGame('bouncing-balls', { viewport: { width: 1280, height: 800 }, query: { count: 40 } });
+    // The box reaches the window's right edge: the heap balls by its right wall have a few tens of px
+    // of room to their right. The heap settles, then the rightmost ball with 45 px or more of room
+    // (main.ts MIN_FULL_PULL, 40 px, is the shortest full pull) is pressed at its centre and pulled
+    // right and a little down (20 degrees) to the viewport's last column.
+    await g.waitFor(() => (window.game as unknown as AimGame).world.time > 3, null, 30_000);
+    const right = await g.page.evaluate(() => {
+      const game = window.game as unknown as AimGame;
+      game.paused = true;
+      const cam = (game as unknown as { renderer: { camera: { toScreenX(x: number): number } } }).renderer.camera;
+      const left = document.querySelector('canvas')!.getBoundingClientRect().left;
+      const ids = game.ballIds(),
+        p = game.positions();
+      let k = -1;
+      for (let i = 0; i < ids.length; i++)
+        if (innerWidth - 1 - (left + cam.toScreenX(p[2 * i]!)) >= 45 && (k < 0 || p[2 * i]! > p[2 * k]!)) k = i;
+      return { id: ids[k]!, x: p[2 * k]!, y: p[2 * k + 1]! };
+    });
+    const at = await g.worldToPage(right.x, right.y);
+    const viewport = g.page.viewportSize()!;
+    const slope = Math.tan((20 * Math.PI) / 180);
+    const to = { x: viewport.width - 1, y: at.y + (viewport.width - 1 - at.x) * slope };
+    // Little room: less than a quarter of the 420 px full pull (before, the full pull was the room under
+    // the press, 80 px or more, and such a pull threw at 8.5 and 12.8 m/s in two runs).
+    expect(to.x - at.x).toBeLessThan(105);
+    expect(to.y).toBeLessThan(viewport.height);
+    const m = g.page.mouse;
+    await m.move(at.x, at.y);
+    await m.down();
+    await m.move(to.x, to.y, { steps: 8 });
+    await m.up();
+    const v = await g.page.evaluate((id) => {
+      const game = window.game as unknown as AimGame;
+      const e = id % 2 ** 25;
+      return { vx: game.world.components.Velocity.x[e]!, vy: game.world.components.Velocity.y[e]!, shots: game.round().shots };
+    }, right.id);
+    // hoop.ts MAX_THROW_SPEED, 20 m/s, up and to the left (opposite the pull).
+    expect(v.shots).toBe(1);
+    expect(Math.hypot(v.vx, v.vy)).toBeCloseTo(20, 6);
+    expect(v.vx).toBeLessThan(0);
+    expect(Math.atan2(v.vy, -v.vx) * (180 / Math.PI)).toBeCloseTo(20, 0);
     expect(g.errors).toEqual([]);
     await g.close();
   });

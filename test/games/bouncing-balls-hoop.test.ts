@@ -3,7 +3,7 @@
 // hoop (and one that hits the backboard and bounces back instead), the net that lets balls in only
 // from above, the slingshot's velocity, and the aiming arc against a real ball's flight, bounces
 // included.
-import { addBody, createPhysicsWorld, removeBody, slotOf, step } from '@bitphysics/physics';
+import { addBody, createPhysicsWorld, Rng, removeBody, slotOf, step } from '@bitphysics/physics';
 import { describe, expect, it } from 'vitest';
 import {
   addHoop,
@@ -22,6 +22,7 @@ import {
   NET,
   NET_BOUNCE,
   netContact,
+  nextSpot,
   PLAYER_RADIUS,
   ROUND_SECONDS,
   roundBasket,
@@ -129,6 +130,43 @@ describe('hoop round', () => {
     expect(streakMultiplier(0)).toBe(1);
     expect(() => streakMultiplier(-1)).toThrow(/streakMultiplier: streak/);
     expect(() => roundBasket(r, 5, 'crate' as 'heap')).toThrow(/roundBasket: kind/);
+  });
+  it('deals the hoop spots at random: none twice in a row, every one within a pass, an order of its own per seed', () => {
+    /** The first `n` spots of a round started at `first` whose baskets are dealt by a generator seeded with `seed`. */
+    const order = (seed: number, first: number, n: number): number[] => {
+      const rng = new Rng(seed);
+      const r = createRound(60, first);
+      const out = [r.spot];
+      for (let k = 1; k < n; k++) {
+        roundBasket(r, 5, 'basketball', () => rng.next());
+        out.push(r.spot);
+      }
+      return out;
+    };
+    const orders = new Set<string>();
+    for (let seed = 1; seed <= 200; seed++) {
+      const o = order(seed, seed % 5, 21);
+      // The same seed deals the same order (so a seeded page plays the same rounds).
+      expect(order(seed, seed % 5, 21)).toEqual(o);
+      for (let k = 1; k < o.length; k++) expect(o[k]).not.toBe(o[k - 1]);
+      // Each pass after the first spot is the other four spots: every spot within five baskets.
+      for (let p = 0; p < 5; p++) expect(new Set([o[4 * p]!, ...o.slice(4 * p + 1, 4 * p + 5)]).size).toBe(5);
+      orders.add(o.join(''));
+    }
+    // 5 first spots x 4! orders of the first pass x ...: 200 seeds, (nearly) 200 orders. In turn (no
+    // generator) every round went 0, 1, 2, 3, 4, 0, ...
+    expect(orders.size).toBeGreaterThanOrEqual(195);
+    const inTurn = createRound();
+    const turn = [inTurn.spot];
+    for (let k = 0; k < 6; k++) {
+      roundBasket(inTurn, 5);
+      turn.push(inTurn.spot);
+    }
+    expect(turn).toEqual([0, 1, 2, 3, 4, 0, 1]);
+    expect(nextSpot(createRound(60, 0), 1, () => 0.5)).toBe(0);
+    expect(() => nextSpot(createRound(), 5, () => 1)).toThrow(/nextSpot: random/);
+    expect(() => nextSpot(createRound(), 0)).toThrow(/nextSpot: spotCount/);
+    expect(() => createRound(60, -1)).toThrow(/createRound: spot/);
   });
   it('rejects a negative dt and a spot count of 0, naming them', () => {
     expect(() => roundTick(createRound(), -1)).toThrow(/roundTick: dt/);
