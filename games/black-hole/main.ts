@@ -205,7 +205,7 @@ const game = await startPixiGame({
     // finger on the seam between a side arrow and ↑ or ↓ holds both (`padDirsAt`).
     isTouchDevice()
       ? { keys: '← ↑ → ↓', action: 'thrust; seam of two: diagonal', touch: 'hold ← ↑ → ↓' }
-      : { keys: '← ↑ → ↓', action: 'thrust (two at once: diagonal)', touch: 'hold, slide ← ↑ → ↓' },
+      : { keys: '← ↑ → ↓', action: 'thrust: a tap nudges, a hold builds up (two at once: diagonal)', touch: 'hold, slide ← ↑ → ↓' },
     { keys: 'Enter', action: 'next level / continue from this level', touch: 'the big button' },
     { keys: 'F', action: 'predicted path on / off (red: falls in, blue: clear)' },
     { keys: 'V', action: 'replay the run from the start' },
