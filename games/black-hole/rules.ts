@@ -334,10 +334,10 @@ export function rampThrust(vec: [number, number], tx: number, ty: number, full: 
     big = Math.max(full, size);
   let rate: number;
   if (!held) rate = big / THRUST_RAMP.down;
-  // (Below trim by more than rounding: 18 steps of 0.1 make 1.7999999999999998, not 1.8.)
+  // (Below trim by more than rounding: a sum of equal steps can fall an ulp short of it.)
   else if (size < THRUST_RAMP.trim * big * (1 - 1e-9) && x0 * dx + y0 * dy >= 0) rate = (THRUST_RAMP.trim * big) / THRUST_RAMP.gentle;
   else rate = ((1 - THRUST_RAMP.trim) * big) / (THRUST_RAMP.up - THRUST_RAMP.gentle);
-  // Reached within rounding too (0.7 x 6 / 0.2 is 20.999999999999996, not 21).
+  // Reached within rounding too (a rate such as (1 - trim) x 6 / (up - gentle) can come out an ulp short).
   const most = rate * dt;
   if (gap <= most * (1 + 1e-9)) {
     vec[0] = tx;
