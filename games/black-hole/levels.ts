@@ -133,6 +133,15 @@ export const WALL_GAP = 0.5;
 export const LEVEL2_WALL_HEIGHT: readonly [number, number] = Object.freeze([16.5, 17.5]);
 
 /**
+ * Level 3's wall heights, m on the default field: lower than level 2's, so it pulls the waiting ship
+ * harder (2.3 to 3.1 m/s^2 on seeds 1 to 8, half the default thrust), but not so low that the
+ * engine's gentle start (./rules THRUST_RAMP) leaves a ship that sets off sideways for the gap in the
+ * wall's grip (at 10 to 12 m it pulled at up to 3.7 m/s^2, and scripts/black-hole-levels.mjs's
+ * steering pilots failed up to two seeds of eight).
+ */
+export const LEVEL3_WALL_HEIGHT: readonly [number, number] = Object.freeze([11, 13]);
+
+/**
  * Level 2's gap, m: under a wall that high a ship holding a diagonal arrow from the start meets the
  * wall's height about DIAGONAL_REACH of its height out to the side (bent in by the wall's longer
  * side), on the 32 m field inside any gap 9 m wide that fits; a gap this wide fits between 2 m out
@@ -155,8 +164,8 @@ const WALL_FILL_GAP = 0.4;
  * (one across the straight path up, one across each diagonal: steer into a gap beside the first);
  * level 2 a wall of holes across the field, high up (LEVEL2_WALL_HEIGHT: its pull at the start
  * weak, so taps steer the ship) with one gap of LEVEL2_GATE off to the side (fly across to it, then
- * up through it); level 3 a wall lower down (10 to 12 m: it pulls harder) with a 7 m gap and a hole
- * above it; level 4 three holes, two across the path one above the other;
+ * up through it); level 3 a wall lower down (LEVEL3_WALL_HEIGHT: it pulls harder) with a 7 m gap
+ * and a hole above it; level 4 three holes, two across the path one above the other;
  * level 5 a fourth hole; from level 6 the holes drift, slowly at first (0.35, then 0.6, 0.8 m/s);
  * from level 8 the fuel is limited (18 s, then 15 s down to 5 s); from level 9 a fifth hole, then a
  * hole more every second level (up to MAX_HOLES), bigger (radius up to 2 m) and faster (up to 3 m/s).
@@ -189,11 +198,11 @@ export function levelSpec(level: number): LevelSpec {
     });
   switch (level) {
     case 1:
-      return spec(3, [0.6, 0.75], 0, 1, 0, Infinity, 0, true);
+      return spec(3, [0.5, 0.6], 0, 1, 0, Infinity, 0, true);
     case 2:
       return spec(0, [0.45, 0.55], 0, 0, 0, Infinity, LEVEL2_GATE, false, [LEVEL2_WALL_HEIGHT[0], LEVEL2_WALL_HEIGHT[1]]);
     case 3:
-      return spec(1, [0.45, 0.55], 0, 1, 0, Infinity, 7);
+      return spec(1, [0.45, 0.55], 0, 1, 0, Infinity, 7, false, [LEVEL3_WALL_HEIGHT[0], LEVEL3_WALL_HEIGHT[1]]);
     case 4:
       return spec(4, [0.6, 1.1], 0, 1, 0, Infinity);
     case 5:
@@ -484,13 +493,15 @@ function layHoles(game: BlackHoleGame, run: LevelRun, spec: LevelSpec): void {
       const r = rng.range(r0, r1);
       let x: number, y: number;
       if (spec.fork) {
-        // The fork: the first hole across the straight path up, 10 to 12 m above the start (on the
-        // default field), the other two on the lines at 45 degrees, 7 to 8 m out and up (less on a
+        // The fork: the first hole across the straight path up, 12 to 14 m above the start (on the
+        // default field), the other two on the lines at 45 degrees, 8 to 9 m out and up (less on a
         // narrow field, so a hole stays 2 m clear of the edge: a ship held on the diagonal would
-        // leave the field before it, but a hole's pull could bend it back).
-        const out = Math.min(rng.range(7, 8), game.field.width / 2 - 2 - r);
+        // leave the field before it, but a hole's pull could bend it back). Small and far enough
+        // that together they pull the ship at the start at under 0.5 m/s^2, so a ship left to
+        // drift after a first tap takes 6 s or more to fall in: time for a newcomer to steer.
+        const out = Math.min(rng.range(8, 9), game.field.width / 2 - 2 - r);
         x = k === 0 ? game.start[0] + rng.range(-0.3, 0.3) * r : game.start[0] + (k === 1 ? -1 : 1) * out;
-        y = k === 0 ? game.start[1] + rng.range(10, 12) * s : game.start[1] + out + rng.range(-0.3, 0.3);
+        y = k === 0 ? game.start[1] + rng.range(12, 14) * s : game.start[1] + out + rng.range(-0.3, 0.3);
       } else if (k < spec.blockers && spec.gate > 0) {
         // Across the way up through the wall's gap: 6 to 7.5 m (on the default field) above the wall.
         x = gateX + rng.range(-0.5, 0.5) * r;

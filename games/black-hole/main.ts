@@ -26,7 +26,7 @@
  * photon ring, an orange glow and a tilted disc of hot gas whose clumps go round it; the exhaust
  * (particles, additive); the ship with a flame opposite its thrust; its predicted path for the next 2 s, integrated in a small second world
  * (rules.ts `predictPath`) and drawn as fading dots, red where it falls into a hole, blue where it
- * stays clear (on the pad, before the first thrust, the path holding ↑ would take).
+ * stays clear (on the pad, before the first thrust, the path holding ↑ would take, 3 s of it).
  */
 
 import {
@@ -138,7 +138,13 @@ let replay: BlackHoleReplay;
  * three times in three (every field of eight) seeing 1 s ahead, 0.75 times a level seeing 2 s.
  */
 const PATH_STEPS = 120;
-const path = new Float64Array(2 * (PATH_STEPS + 1));
+/**
+ * Steps of the path drawn from the pad before the first thrust (the one holding ↑ would take): 3 s,
+ * so on level 1 it reaches the hole across the straight climb and shows red; a 2 s path stops short
+ * of that hole and is drawn blue, as if the way straight up were clear.
+ */
+const PAD_PATH_STEPS = 180;
+const path = new Float64Array(2 * (Math.max(PATH_STEPS, PAD_PATH_STEPS) + 1));
 let pathPoints = 0;
 
 /**
@@ -199,7 +205,7 @@ const game = await startPixiGame({
     // finger on the seam between a side arrow and ↑ or ↓ holds both (`padDirsAt`).
     isTouchDevice()
       ? { keys: '← ↑ → ↓', action: 'thrust; seam of two: diagonal', touch: 'hold ← ↑ → ↓' }
-      : { keys: '← ↑ → ↓', action: 'thrust (two at once: diagonal)', touch: 'hold, slide ← ↑ → ↓' },
+      : { keys: '← ↑ → ↓', action: 'thrust: a tap nudges, a hold builds up (two at once: diagonal)', touch: 'hold, slide ← ↑ → ↓' },
     { keys: 'Enter', action: 'next level / continue from this level', touch: 'the big button' },
     { keys: 'F', action: 'predicted path on / off (red: falls in, blue: clear)' },
     { keys: 'V', action: 'replay the run from the start' },
@@ -1021,22 +1027,23 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
     // moving. The thrust is set for the prediction only (the field, not setThrust: no exhaust, no
     // input recorded) and put back at once.
     const fromPad = run?.parked === true && bh.thrust === 'none' && canThrust(bh, run);
+    const steps = fromPad ? PAD_PATH_STEPS : PATH_STEPS;
     if (fromPad) {
       bh.thrust = 'up';
-      pathPoints = predictPath(bh, predictor, path, PATH_STEPS);
+      pathPoints = predictPath(bh, predictor, path, steps);
       bh.thrust = 'none';
-    } else pathPoints = predictPath(bh, predictor, path, PATH_STEPS);
+    } else pathPoints = predictPath(bh, predictor, path, steps);
     padPath = fromPad;
     // A path that stops short inside the field ends on a horizon: drawn red, with a ring where it
     // falls in, so the pull of a wall bending the ship into it shows 2 s ahead.
     const lx = path[2 * pathPoints - 2]!,
       ly = path[2 * pathPoints - 1]!;
-    const falls = pathPoints < PATH_STEPS + 1 && lx > 0 && lx < bh.field.width && ly > 0 && ly < bh.field.height;
+    const falls = pathPoints < steps + 1 && lx > 0 && lx < bh.field.width && ly > 0 && ly < bh.field.height;
     const color = falls ? 0xff5a4a : 0x9fd3ff;
     for (let i = 1; i < pathPoints; i += 2) {
       overlay
         .circle(cam.toScreenX(path[2 * i]!), cam.toScreenY(path[2 * i + 1]!), falls ? 2.2 : 1.8)
-        .fill({ color, alpha: 0.5 * (1 - i / (PATH_STEPS + 1)) + 0.15 });
+        .fill({ color, alpha: 0.5 * (1 - i / (steps + 1)) + 0.15 });
     }
     if (falls) overlay.circle(cam.toScreenX(lx), cam.toScreenY(ly), 7).stroke({ width: 2, color, alpha: 0.9 });
   } else {

@@ -5,9 +5,9 @@
  * The rules:
  * - The player's ship starts near the bottom of a `FIELD` (32 m x 24 m) and thrusts with the arrow
  *   keys (two at right angles held together aim it between them: `heldThrust`) with acceleration
- *   `thrust` (m/s^2), whatever the direction. The engine spools up over
- *   `THRUST_RAMP.up` and down over `THRUST_RAMP.down` (`rampThrust`), so a tap is a nudge and a
- *   held arrow full thrust.
+ *   `thrust` (m/s^2), whatever the direction. The engine starts gently and then builds up to full
+ *   thrust over `THRUST_RAMP.up`, and dies over `THRUST_RAMP.down` (`rampThrust`), so a tap is a
+ *   small nudge and a held arrow full thrust.
  * - Black holes of random size pull it with Newtonian gravity F = G M m / d^2 (the physics package's
  *   attractors). Each hole's mass is set so that its drawn radius r is its Schwarzschild radius,
  *   r = 2 G M / c^2, that is M = c^2 r / (2 G) (Schwarzschild 1916; any general relativity text,
@@ -84,16 +84,21 @@ export const SHIP_MASS = 1;
 export const SHIP_RADIUS = 0.3;
 
 /**
- * How fast the engine answers, s: from nothing to full thrust in `up` (the thrust vector moves
- * towards the arrow's at thrust / up m/s^2 a second, so a change of direction swings it over in
- * about as long) and from full to nothing in `down` after the arrow is let go. With full thrust at
- * once a 0.1 s tap changed the speed by 0.6 m/s and the ship felt twitchy; now it gives 0.17 m/s.
+ * How the engine answers an arrow, from rest: it first builds gently, at `trim` x thrust / `gentle`
+ * m/s^3, up to `trim` of the thrust in `gentle` s, then quickly up to full thrust by `up` s; let go,
+ * it dies from full to nothing in `down` s. With the default 6 m/s^2 a 0.15 s tap changes the speed
+ * by 0.16 m/s (a small nudge a player can repeat to trim the course), a 0.3 s press by 0.7 m/s,
+ * and an arrow held for 1 s by 5 m/s (counting the die-away). The thrust vector moves towards
+ * the arrow's (a change of direction swings it over at the quick rate, unless it passes near
+ * nothing, as reversing does: then the new direction starts gently, as a fresh press would). See
+ * `rampThrust`.
  */
-export const THRUST_RAMP = Object.freeze({ up: 0.25, down: 0.1 });
+export const THRUST_RAMP = Object.freeze({ trim: 0.4, gentle: 0.2, up: 0.4, down: 0.1 });
 
 /**
- * The `sideRamp` (s) of a phone held upright, whose field is 20 m wide: a brief tap of ← or → a
- * small nudge there (at THRUST_RAMP.up, 0.2 s of → drifted off its edge in under 6 s).
+ * The `sideRamp` (s) of a phone held upright, whose field is 20 m wide: the sideways thrust builds
+ * more slowly there (at 10 m/s^3, below the engine's gentle rate: a 0.3 s press of → gains 0.53 m/s,
+ * not 0.72), so a short sideways press does not carry the ship off the narrow field's edge.
  */
 export const PHONE_SIDE_RAMP = 0.6;
 
@@ -302,12 +307,15 @@ export function gravitationalConstant(game: BlackHoleGame): number {
 
 /**
  * One step of the engine: moves `vec` (the thrust now, m/s^2) towards the target (tx, ty) m/s^2 by
- * at most `rate` x dt, where the rate is full / THRUST_RAMP.up while an arrow is held (the target is
- * not zero) and full / THRUST_RAMP.down when it is let go; `full` is the thrust acceleration (m/s^2,
- * the larger of it and |vec|, so a thrust slider set to 0 still lets the engine die away).
+ * at most `rate` x dt. While an arrow is held (the target is not zero) the rate is
+ * trim x full / gentle while |vec| is under trim x full and growing (the gentle start; growing: vec
+ * does not point away from the target, so a reversal first dies down at the quick rate), else
+ * (1 - trim) x full / (up - gentle), the constants those of `THRUST_RAMP`; when it is let go the
+ * rate is full / THRUST_RAMP.down. `full` is the thrust acceleration (m/s^2, the larger of it and
+ * |vec|, so a thrust slider set to 0 still lets the engine die away).
  * While an arrow is held the sideways part (x) grows in size by at most full / `sideUp` x dt a step
- * (`sideUp` s >= THRUST_RAMP.up, default THRUST_RAMP.up, where the cap never binds): a slower
- * sideways build-up, so a brief sideways tap is a small nudge; letting go is as quick as ever.
+ * (`sideUp` s >= THRUST_RAMP.up, default THRUST_RAMP.up, where the cap is not applied): a slower
+ * sideways build-up for a narrow field; letting go is as quick as ever.
  * @throws RangeError unless dt > 0, full >= 0 and sideUp >= THRUST_RAMP.up are finite.
  */
 export function rampThrust(vec: [number, number], tx: number, ty: number, full: number, dt: number, sideUp: number = THRUST_RAMP.up): void {
@@ -316,13 +324,22 @@ export function rampThrust(vec: [number, number], tx: number, ty: number, full: 
     throw new RangeError(
       `black-hole: rampThrust: dt must be > 0, full >= 0 and sideUp >= ${THRUST_RAMP.up}, got ${dt}, ${full}, ${sideUp}`,
     );
-  const x0 = vec[0];
-  const dx = tx - vec[0],
-    dy = ty - vec[1],
+  const x0 = vec[0],
+    y0 = vec[1];
+  const dx = tx - x0,
+    dy = ty - y0,
     gap = Math.hypot(dx, dy);
   const held = tx !== 0 || ty !== 0;
-  const most = (Math.max(full, Math.hypot(vec[0], vec[1])) / (held ? THRUST_RAMP.up : THRUST_RAMP.down)) * dt;
-  if (gap <= most) {
+  const size = Math.hypot(x0, y0),
+    big = Math.max(full, size);
+  let rate: number;
+  if (!held) rate = big / THRUST_RAMP.down;
+  // (Below trim by more than rounding: a sum of equal steps can fall an ulp short of it.)
+  else if (size < THRUST_RAMP.trim * big * (1 - 1e-9) && x0 * dx + y0 * dy >= 0) rate = (THRUST_RAMP.trim * big) / THRUST_RAMP.gentle;
+  else rate = ((1 - THRUST_RAMP.trim) * big) / (THRUST_RAMP.up - THRUST_RAMP.gentle);
+  // Reached within rounding too (a rate such as (1 - trim) x 6 / (up - gentle) can come out an ulp short).
+  const most = rate * dt;
+  if (gap <= most * (1 + 1e-9)) {
     vec[0] = tx;
     vec[1] = ty;
   } else {

@@ -153,6 +153,40 @@ describe('levels', () => {
     }
   });
 
+  test('level 1 leaves a newcomer time: its holes pull the waiting ship at under 0.5 m/s^2, and after a 0.15 s tap of up it drifts 5.5 s or more before it falls in', () => {
+    // The issue this answers: a stranger's 0.15 s tap of up sent the ship into level 1's middle hole
+    // within 4 s (the fork pulled the start at 0.65 to 0.77 m/s^2). The pull is summed from the holes'
+    // masses and places (G M / d^2 each, towards the hole), not taken from the game's step; the drift
+    // is played in the game.
+    for (const field of [FIELD, { width: 32, height: 30 }, { width: 20, height: 30 }])
+      for (let seed = 1; seed <= 4; seed++) {
+        const where = `${field.width}x${field.height} seed ${seed}`;
+        const g = createBlackHoleGame({ seed, field, ...engineFor(field) });
+        const run = startLevel(g, 1);
+        const P = g.world.components.Position,
+          G = gravitationalConstant(g);
+        let ax = 0,
+          ay = 0;
+        g.holes.forEach((h, i) => {
+          const dx = P.x[slotOf(h)]! - g.start[0],
+            dy = P.y[slotOf(h)]! - g.start[1],
+            d = Math.hypot(dx, dy);
+          ax += (G * g.holeMass[i]! * dx) / d ** 3;
+          ay += (G * g.holeMass[i]! * dy) / d ** 3;
+        });
+        expect(Math.hypot(ax, ay), where).toBeLessThan(0.5);
+        let e = 'none',
+          k = 0;
+        for (; k < 5.5 / g.world.dt && e === 'none'; k++) {
+          setThrust(g, k < 9 ? 'up' : 'none');
+          e = stepLevel(g, run);
+        }
+        expect(e, where).toBe('none');
+        // And it did leave the pad: it is on its way up.
+        expect(shipY(g), where).toBeGreaterThan(g.start[1] + 2);
+      }
+  });
+
   test('no arrow, nor two at right angles, held from the start clears a level of each kind on either field (played in the game, not predicted)', () => {
     // The fork, a wall, blockers with holes on the diagonals, drifting holes, a fuel limit. Only the
     // thrusts with some up in them are played: the others leave the field by a side or the bottom.

@@ -53,6 +53,20 @@ const expectSchwarzschild = (g: BlackHoleGame) => {
   }
 };
 
+/**
+ * The speed (m/s) an engine of thrust `a` m/s^2 gives from rest in `t` s held, from THRUST_RAMP's
+ * definition (not from rampThrust): the thrust grows evenly to trim x a in `gentle` s, then evenly
+ * to a by `up` s, then stays; the area under that curve.
+ */
+function rampGain(a: number, t: number): number {
+  const { trim, gentle, up } = THRUST_RAMP;
+  const slow = (trim * a) / gentle,
+    fast = ((1 - trim) * a) / (up - gentle);
+  if (t <= gentle) return (slow * t * t) / 2;
+  const u = Math.min(t, up) - gentle;
+  return (trim * a * gentle) / 2 + trim * a * u + (fast * u * u) / 2 + a * Math.max(0, t - up);
+}
+
 describe('Schwarzschild holes', () => {
   test('M = c^2 r / 2G and back; at the horizon the escape speed is c', () => {
     expect(schwarzschildMass(1, 10, 1)).toBe(50);
@@ -226,8 +240,8 @@ describe('thrust, exhaust, prediction', () => {
     const none = run('none'),
       right = run('right'),
       up = run('up');
-    // 0.5 s held: full thrust but for the spool-up, which costs half its time (within a step's 0.1 m/s).
-    const gained = 6 * (0.5 - THRUST_RAMP.up / 2);
+    // 0.5 s held: the engine's spool-up, gentle then quick (within a step's 0.1 m/s).
+    const gained = rampGain(6, 0.5);
     expect(Math.abs(right.v[0] - none.v[0] - gained)).toBeLessThan(0.1);
     expect(right.v[1] - none.v[1]).toBeCloseTo(0, 2);
     expect(Math.abs(up.v[1] - none.v[1] - gained)).toBeLessThan(0.1);
@@ -272,64 +286,90 @@ describe('thrust, exhaust, prediction', () => {
     expect(Math.abs(Math.atan2(dy, dx) - Math.PI / 4)).toBeLessThan(0.01);
   });
 
-  test('the engine spools up and down: a tap is a nudge, a held arrow full thrust, a new arrow swings the thrust over', () => {
-    // The issue this answers: thrust was full from the first step, so a 0.1 s tap changed the speed by
-    // 0.6 m/s and the ship felt twitchy. The engine (rampThrust) now builds up over THRUST_RAMP.up.
+  test('the engine spools up and down: gently at first, then quickly to full thrust; a new arrow swings the thrust over', () => {
+    // The issue this answers: a 0.15 s tap of up sent the ship on level 1 into its middle hole (the
+    // engine reached full thrust in 0.25 s at an even rate: the tap gained 0.45 m/s). It now builds to
+    // trim x thrust in THRUST_RAMP.gentle s, then to full by THRUST_RAMP.up.
     const dt = 1 / 60;
+    const { trim, gentle, up, down } = THRUST_RAMP;
     const v: [number, number] = [0, 0];
     rampThrust(v, 0, 6, 6, dt);
-    expect(v[1]).toBeCloseTo((6 * dt) / THRUST_RAMP.up, 12);
+    expect(v[1]).toBeCloseTo((trim * 6 * dt) / gentle, 12);
     let n = 1;
+    while (v[1] < trim * 6 - 1e-9) {
+      rampThrust(v, 0, 6, 6, dt);
+      n++;
+    }
+    expect(n).toBe(Math.round(gentle / dt));
     while (v[1] < 6) {
       rampThrust(v, 0, 6, 6, dt);
       n++;
     }
-    expect(n).toBe(Math.round(THRUST_RAMP.up / dt));
-    // Up to right: the thrust swings over, never more than full, and gets there in sqrt(2) x 0.25 s.
+    expect(n).toBe(Math.round(up / dt));
+    // Up to right: the thrust swings over at the quick rate (it stays above trim), never more than
+    // full, and gets there in sqrt(2) x 6 / quick s.
+    const quick = ((1 - trim) * 6) / (up - gentle);
     for (n = 0; v[0] !== 6 || v[1] !== 0; n++) {
       rampThrust(v, 6, 0, 6, dt);
       expect(Math.hypot(v[0], v[1])).toBeLessThanOrEqual(6 + 1e-12);
     }
-    expect(n).toBe(Math.ceil((Math.SQRT2 * THRUST_RAMP.up) / dt - 1e-9));
+    expect(n).toBe(Math.ceil((Math.SQRT2 * 6) / quick / dt - 1e-9));
+    // Right to left (a reversal): it dies at the quick rate, then starts gently as a fresh press (the
+    // quick step that passes through nothing can carry it up to a quick step's worth into the gentle
+    // stretch, which saves up to quick / slow gentle steps).
+    const slow = (trim * 6) / gentle;
+    for (n = 0; Number(v[0]) !== -6; n++) {
+      rampThrust(v, -6, 0, 6, dt);
+      expect(v[1]).toBe(0);
+    }
+    expect(n).toBeLessThanOrEqual(Math.ceil((6 / quick + up) / dt));
+    expect(n).toBeGreaterThanOrEqual(Math.floor((6 / quick + up) / dt - quick / slow));
     // Let go: gone in THRUST_RAMP.down.
     for (n = 0; Math.hypot(v[0], v[1]) > 0; n++) rampThrust(v, 0, 0, 6, dt);
-    expect(n).toBe(Math.round(THRUST_RAMP.down / dt));
-    expect(() => rampThrust(v, 0, 0, 6, 0)).toThrow(/rampThrust: dt must be > 0, full >= 0 and sideUp >= 0.25, got 0, 6, 0.25/);
-    // In the game: a 0.1 s tap of up changes the speed by 0.17 m/s (0.6 with full thrust at once).
-    const speedUp = (tap: boolean) => {
-      const h = createBlackHoleGame({ seed: 6, holes: 1, thrust: 6 });
-      for (let i = 0; i < 30; i++) {
-        setThrust(h, tap && i < 6 ? 'up' : 'none');
+    expect(n).toBe(Math.round(down / dt));
+    expect(() => rampThrust(v, 0, 0, 6, 0)).toThrow(/rampThrust: dt must be > 0, full >= 0 and sideUp >= 0.4, got 0, 6, 0.4/);
+    // In the game: a 0.15 s (9-step) tap of up changes the speed by slow x dt^2 x (1 + ... + 9) while
+    // held (0.15 m/s), and by what is left of the 1.8 m/s^2 as it dies at 6 / down m/s^3 after
+    // (0.8 m/s^2 for one step: 0.013 m/s); a 1 s hold by rampGain(6, 1) = 4.68 m/s. (Before: a tap
+    // of 0.38 m/s, a hold of 5.25 m/s.) Compared with the same steps and no thrust (the hole's pull, made
+    // 25 times weaker by c = 2 m/s: the pull is c^2 r / 2 d^2, and the 1 s hold flies 2 m).
+    const speedUp = (steps: number, held: number) => {
+      const h = createBlackHoleGame({ seed: 6, holes: 1, thrust: 6, c: 2 });
+      for (let i = 0; i < steps; i++) {
+        setThrust(h, i < held ? 'up' : 'none');
         stepBlackHole(h);
       }
       return h.world.components.Velocity.y[slotOf(h.ship)]!;
     };
-    expect(speedUp(true) - speedUp(false)).toBeCloseTo(0.17, 2);
+    let release = 0;
+    for (let a = slow * 9 * dt - (6 / down) * dt; a > 0; a -= (6 / down) * dt) release += a * dt;
+    expect(speedUp(30, 9) - speedUp(30, 0)).toBeCloseTo(slow * dt * dt * 45 + release, 4);
+    expect(Math.abs(speedUp(60, 60) - speedUp(60, 0) - rampGain(6, 1))).toBeLessThan(0.1);
   });
 
-  test('a gentler sideways engine (sideRamp): a brief tap of right is a small nudge, up is as before', () => {
-    // A 7-step (0.117 s) tap from rest. The engine's x part grows at 6 / sideRamp m/s^3 while held and
-    // dies at 6 / THRUST_RAMP.down after: dv = r T^2 / 2 + (r T)^2 / (2 x 60), r = 6 / sideRamp, T = 7/60,
-    // 0.069 m/s for sideRamp 0.6 (0.236 m/s at 0.25); the sum over steps differs by under 0.01 m/s.
-    const tapSpeed = (sideRamp: number, dir: 'right' | 'up', tap: boolean) => {
+  test('a gentler sideways engine (sideRamp): past the gentle start the sideways part grows at most at thrust / sideRamp; up is as before', () => {
+    // A 0.5 s (30-step) press of right from rest. The default engine starts gently (to trim x 6 m/s^2
+    // in THRUST_RAMP.gentle s) and reaches 6 m/s^2 by THRUST_RAMP.up; the phone's (sideRamp 0.6) x
+    // part grows at 6 / 0.6 = 10 m/s^3 all the way (the engine's own rates, gentle and quick, are
+    // both above that), reaching 5 m/s^2 at 0.5 s. The speed gained by then: rampGain(6, 0.5) =
+    // 1.68 m/s, and 10 x 0.5^2 / 2 = 1.25 m/s.
+    const pressSpeed = (sideRamp: number, dir: 'right' | 'up', press: boolean) => {
       const h = createBlackHoleGame({ seed: 6, holes: 1, thrust: 6, sideRamp });
-      for (let i = 0; i < 30; i++) {
-        setThrust(h, tap && i < 7 ? dir : 'none');
-        stepBlackHole(h);
-      }
+      setThrust(h, press ? dir : 'none');
+      for (let i = 0; i < 30; i++) stepBlackHole(h);
       const V = h.world.components.Velocity;
       return dir === 'right' ? V.x[slotOf(h.ship)]! : V.y[slotOf(h.ship)]!;
     };
-    const expected = (sideRamp: number) => {
-      const r = 6 / sideRamp,
-        T = 7 / 60;
-      return (r * T * T) / 2 + (r * T) ** 2 / (2 * (6 / THRUST_RAMP.down));
-    };
-    for (const ramp of [0.6, THRUST_RAMP.up])
-      expect(Math.abs(tapSpeed(ramp, 'right', true) - tapSpeed(ramp, 'right', false) - expected(ramp))).toBeLessThan(0.01);
+    expect(
+      Math.abs(pressSpeed(THRUST_RAMP.up, 'right', true) - pressSpeed(THRUST_RAMP.up, 'right', false) - rampGain(6, 0.5)),
+    ).toBeLessThan(0.1);
+    const { trim, gentle, up } = THRUST_RAMP;
+    expect(Math.min((trim * 6) / gentle, ((1 - trim) * 6) / (up - gentle))).toBeGreaterThan(10);
+    const phone = (10 * 0.5 ** 2) / 2;
+    expect(Math.abs(pressSpeed(0.6, 'right', true) - pressSpeed(0.6, 'right', false) - phone)).toBeLessThan(0.1);
     // Up is not sideways: the same with any sideRamp.
-    expect(tapSpeed(0.6, 'up', true)).toBe(tapSpeed(THRUST_RAMP.up, 'up', true));
-    expect(() => createBlackHoleGame({ sideRamp: 0.1 })).toThrow(/sideRamp must be in \[0.25, 2\] s, got 0.1/);
+    expect(pressSpeed(0.6, 'up', true)).toBe(pressSpeed(THRUST_RAMP.up, 'up', true));
+    expect(() => createBlackHoleGame({ sideRamp: 0.1 })).toThrow(/sideRamp must be in \[0.4, 2\] s, got 0.1/);
   });
 
   test('exhaust that crosses a horizon is swallowed', () => {
