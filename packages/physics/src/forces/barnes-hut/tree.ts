@@ -15,8 +15,7 @@ import * as TREE_GATHER from './slots/tree-gather.js';
 import { buildTreeWith } from './tree-build.js';
 import { f64, type GravityTree, MAX_PARTS, worldTree } from './tree-store.js';
 import * as WALK from './walk.js';
-import { barnesHutWalk2 } from './walk-2d.js';
-import { barnesHutWalk3 } from './walk-3d.js';
+import { barnesHutWalk } from './walk-kernel.js';
 
 /**
  * Tree code for mutual gravity: a quadtree in 2D, an octree in 3D, rebuilt over the bodies at every
@@ -201,7 +200,8 @@ function treeFieldsWith(
   P[WALK.ACC_Z] = accOffset + 2 * t.x.length;
   P[WALK.ADD_FORCES] = forces !== null ? 1 : 0;
   P[WALK.FORCES_AT] = WALK.SCRATCH + threads;
-  const kernel = t.dims === 3 ? barnesHutWalk3 : barnesHutWalk2;
+  P[WALK.DIMENSIONS] = t.dims;
+  const kernel = barnesHutWalk;
   const t0 = adaptive ? nowMs() : 0;
   if (threads > 1) pool!.run(system, kernel, arrays, P, threads, null);
   else kernel(arrays, P, null, 0, 1);
