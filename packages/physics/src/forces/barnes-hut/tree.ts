@@ -201,10 +201,9 @@ function treeFieldsWith(
   P[WALK.ADD_FORCES] = forces !== null ? 1 : 0;
   P[WALK.FORCES_AT] = WALK.SCRATCH + threads;
   P[WALK.DIMENSIONS] = t.dims;
-  const kernel = barnesHutWalk;
   const t0 = adaptive ? nowMs() : 0;
-  if (threads > 1) pool!.run(system, kernel, arrays, P, threads, null);
-  else kernel(arrays, P, null, 0, 1);
+  if (threads > 1) pool!.run(system, barnesHutWalk, arrays, P, threads, null);
+  else barnesHutWalk(arrays, P, null, 0, 1);
   if (adaptive) pool!.chooser.record(site, threads > 1, nowMs() - t0, n);
   const info = t.info;
   for (let p = 0; p < threads; p++) {

@@ -8,10 +8,11 @@ import * as WALK from './walk.js';
 /**
  * The dual-tree walk and downward pass of the Barnes-Hut evaluation (see walk.ts), one thread kernel
  * for 2D (expansions to order 4: forces/barnes-hut/node-2d.ts and field-2d.ts) and 3D (order 3:
- * node-3d.ts and field-3d.ts), P[WALK.DIMENSIONS] 2 or 3. The walk itself (parts, cell pairs, when
- * to expand, split or sum directly, the counts) is one code; a dimension has its own the cell-cell
- * expansion, the direct sum and the downward pass of a node, each a branch on the dimension taken
- * once a cell pair, a leaf pair or a node.
+ * node-3d.ts and field-3d.ts) by P[WALK.DIMENSIONS] (2 or 3). The walk itself (parts, the pair
+ * stack, when to expand, split or sum directly, the counts, the order of the downward pass) is
+ * written once; each dimension has its own cell-cell expansion, direct sum and node step of the
+ * downward pass, a branch on the dimension taken once a cell pair, a leaf pair or a node. A and P:
+ * walk.ts. Returns 0.
  * @category Forces
  */
 export function barnesHutWalk(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
