@@ -16,9 +16,8 @@ const MAX_LINES = 150;
  * split into calls needs a quiet machine to show it costs no speed, and those other work is splitting.
  */
 const LEFT: Readonly<Record<string, number>> = {
+  'forces/barnes-hut/walk-kernel.ts barnesHutWalk': 524,
   'solver/manifold-solve-3d.ts solveManifolds3D': 337,
-  'forces/barnes-hut/walk-2d.ts barnesHutWalk2': 327,
-  'forces/barnes-hut/walk-3d.ts barnesHutWalk3': 325,
   'solver/manifold-rows-2d.ts solveManifolds': 215,
   'solver/coloring-kernel.ts solveColored2D': 180,
   'solver/ball-sweeps.ts solve3D': 174,

@@ -24,8 +24,7 @@ import {
 } from '@bitphysics/physics';
 import { afterEach, expect, test } from 'vitest';
 import { BARNES_HUT_MIN_PER_THREAD } from '../../packages/physics/src/forces/barnes-hut/tree.js';
-import { barnesHutWalk2 } from '../../packages/physics/src/forces/barnes-hut/walk-2d.js';
-import { barnesHutWalk3 } from '../../packages/physics/src/forces/barnes-hut/walk-3d.js';
+import { barnesHutWalk } from '../../packages/physics/src/forces/barnes-hut/walk-kernel.js';
 import { Rng } from '../../packages/physics/src/math/rng.js';
 import { LoopChooser } from '../../packages/physics/src/threads/adaptive.js';
 import { stageNeedsCheck } from '../../packages/physics/src/world/trusted-systems.js';
@@ -85,7 +84,7 @@ test('Barnes-Hut evaluated in parts: every field identical to the one-part walk 
       t.ax.fill(NaN);
       t.ay.fill(NaN);
       t.az.fill(NaN);
-      (dims === 3 ? barnesHutWalk3 : barnesHutWalk2)(arrays, t.walkParams, null, 0, parts);
+      barnesHutWalk(arrays, t.walkParams, null, 0, parts);
       for (let i = 0; i < n; i++) {
         if (!Object.is(t.ax[i], ref[0]![i]) || !Object.is(t.ay[i], ref[1]![i]) || !Object.is(t.az[i], ref[2]![i])) {
           throw new Error(`${dims}D, ${parts} parts: slot ${i} differs`);

@@ -24,8 +24,7 @@ import { ballContacts } from '../collision/narrowphase/balls-kernel.js';
 import { angularDampingScalar } from '../forces/angular-damping.js';
 import { mortonBucketSort, mortonKeysHist, mortonScatter, treeForces, treeGather } from '../forces/barnes-hut/gather.js';
 import { treeMoments2, treeMoments3 } from '../forces/barnes-hut/moments.js';
-import { barnesHutWalk2 } from '../forces/barnes-hut/walk-2d.js';
-import { barnesHutWalk3 } from '../forces/barnes-hut/walk-3d.js';
+import { barnesHutWalk } from '../forces/barnes-hut/walk-kernel.js';
 import { centralForce } from '../forces/central.js';
 import { dragCalm } from '../forces/drag.js';
 import { attractors, gravityScale } from '../forces/gravity.js';
@@ -69,8 +68,7 @@ export const KERNELS: readonly Kernel[] = /* @__PURE__ */ Object.freeze([
   dragCalm,
   testKernel,
   finiteProbe,
-  barnesHutWalk2,
-  barnesHutWalk3,
+  barnesHutWalk,
   treeGather,
   mortonKeysHist,
   treeForces,

@@ -2,7 +2,7 @@
  * The layout of a 3D node's local field polynomial in a part's walk scratch (GravityTree.scratch,
  * forces/barnes-hut/walk.ts): node k's at k * STRIDE, the field about the cell's centre of mass c as a
  * polynomial in the offset d from c, a(d) = a0 + J d + K d d / 2, without the factor G
- * (forces/barnes-hut/tree.ts). The walk (walk-3d.ts) adds the cell-cell expansions into it, and its
+ * (forces/barnes-hut/tree.ts). The walk (walk-kernel.ts) adds the cell-cell expansions into it, and its
  * downward pass shifts it to the children and evaluates it at the bodies. Imported as `L3`
  * (`L[l + L3.JXY]`). A module of numeric constants only, which every build folds into the code that
  * reads it, the thread kernels included (threads/worker-source.ts).

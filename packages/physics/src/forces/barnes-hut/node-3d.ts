@@ -1,7 +1,7 @@
 /**
  * The layout of a 3D node of the Barnes-Hut tree (GravityTree.node, forces/barnes-hut/tree-store.ts):
  * node k's moments at k * STRIDE, about the cell's centre of mass c (forces/barnes-hut/tree.ts), written
- * by treeMoments (forces/barnes-hut/moments.ts) and read by the walk (walk-3d.ts) and treeField.
+ * by treeMoments (forces/barnes-hut/moments.ts) and read by the walk (walk-kernel.ts) and treeField.
  * Imported as `N3` (`F[o + N3.MASS]`). A module of numeric constants only, which every build folds into
  * the code that reads it, the thread kernels included (threads/worker-source.ts).
  */

@@ -15,8 +15,7 @@ import * as TREE_GATHER from './slots/tree-gather.js';
 import { buildTreeWith } from './tree-build.js';
 import { f64, type GravityTree, MAX_PARTS, worldTree } from './tree-store.js';
 import * as WALK from './walk.js';
-import { barnesHutWalk2 } from './walk-2d.js';
-import { barnesHutWalk3 } from './walk-3d.js';
+import { barnesHutWalk } from './walk-kernel.js';
 
 /**
  * Tree code for mutual gravity: a quadtree in 2D, an octree in 3D, rebuilt over the bodies at every
@@ -201,10 +200,10 @@ function treeFieldsWith(
   P[WALK.ACC_Z] = accOffset + 2 * t.x.length;
   P[WALK.ADD_FORCES] = forces !== null ? 1 : 0;
   P[WALK.FORCES_AT] = WALK.SCRATCH + threads;
-  const kernel = t.dims === 3 ? barnesHutWalk3 : barnesHutWalk2;
+  P[WALK.DIMENSIONS] = t.dims;
   const t0 = adaptive ? nowMs() : 0;
-  if (threads > 1) pool!.run(system, kernel, arrays, P, threads, null);
-  else kernel(arrays, P, null, 0, 1);
+  if (threads > 1) pool!.run(system, barnesHutWalk, arrays, P, threads, null);
+  else barnesHutWalk(arrays, P, null, 0, 1);
   if (adaptive) pool!.chooser.record(site, threads > 1, nowMs() - t0, n);
   const info = t.info;
   for (let p = 0; p < threads; p++) {

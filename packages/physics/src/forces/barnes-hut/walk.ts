@@ -1,7 +1,7 @@
 /**
  * The evaluation half of the Barnes-Hut tree code (forces/barnes-hut/tree.ts): the dual-tree walk and the
- * downward pass, written as thread kernels (step/kernel-table.ts: self-contained functions whose
- * source text the worker threads also run), so that the field can be evaluated on several threads.
+ * downward pass, written as one thread kernel (walk-kernel.ts; step/kernel-table.ts: a self-contained function
+ * whose source text the worker threads also run), so that the field can be evaluated on several threads.
  * The one-thread evaluation runs the very same kernel with one part.
  *
  * Parts. The bodies' slots (tree order) are cut into contiguous parts [s0, s1) at leaf boundaries.
@@ -15,7 +15,7 @@
  * The downward pass of a part visits only the nodes that hold some of its slots and writes the
  * fields of its own slots to the output arrays.
  *
- * The kernels' arguments are named below (imported as `WALK`: `A[WALK.NODE]`, `P[WALK.G]`); the
+ * The kernel's arguments are named below (imported as `WALK`: `A[WALK.NODE]`, `P[WALK.G]`); the
  * arrays are indexed as in forces/barnes-hut/tree-store.ts's GravityTree. The counts a part writes to
  * `info` (INFO_ offsets) are counted by the part that holds the first cell's first slot, so they sum
  * to the one-part walk's counts; its work counts its own, duplicates included, in the units of `WORK_*`.
@@ -106,8 +106,10 @@ export const ACC_Z = 7;
 export const ADD_FORCES = 8;
 /** The index in A of the force arrays (FORCE_X ...). */
 export const FORCES_AT = 9;
+/** The dimensions, 2 or 3: which expansions, direct sums and downward pass the kernel runs. */
+export const DIMENSIONS = 10;
 /** Numbers in P. */
-export const PARAMS = 10;
+export const PARAMS = 11;
 
 // info: a part's counts, INFO_STRIDE a part.
 /** Cell pairs expanded. */
