@@ -3,9 +3,10 @@
  * ordered (a dashed line by the hull and a cyan mark on the depth gauge, with figures, at the scene's right edge)
  * runs down or up at once, the vertical thrusters and (under way) the dive planes push at once and the
  * vents flood or blow the ballast tanks; let go and the boat stops on the ordered depth and holds it
- * (./helm.ts, ./planes.ts). Hold Nose down or up to pitch, and drive the screw ahead or astern. A trail
- * of glowing plankton leads from beacon to beacon round the mines (./trail.ts): each glow caught
- * scores, more for a streak of them. The hull floats by Archimedes (its submerged part of a 12 m x 3 m box), drags in proportion
+ * (./helm.ts, ./planes.ts), a depth ladder behind the stern sliding past it meanwhile. Hold Nose down
+ * or up to pitch, and drive the screw ahead or astern (let go, the boat glides about a hull's length
+ * and stops). A trail of glowing plankton leads from beacon to beacon round the mines (./trail.ts):
+ * each glow caught scores, more for a streak of them (a first-time hint over the scene says how much). The hull floats by Archimedes (its submerged part of a 12 m x 3 m box), drags in proportion
  * to how much of it is under water and bobs in the waves. Collect every beacon before three hits
  * (a scrape on the seabed, or a moored mine laid across the way between two beacons: ./mines.ts)
  * break the hull, inside the course's par time if you can: a won run earns a star for the beacons,
@@ -18,6 +19,7 @@
  * Sound: the screw's hum follows the throttle, a hiss when the vents open or the tanks blow, a sonar
  * ping that quickens as the next beacon nears, a rising chime for each beacon (rings spread from it
  * and a banner counts it), a thump on the seabed, a blast (a flash and bubbles) when a mine goes off.
+ * A scrape on the seabed shakes the view a little, a hit more; on a phone each also buzzes.
  */
 
 import {
@@ -36,7 +38,7 @@ import { applyImpulse, createPhysicsWorld, type PhysicsWorld, step } from '@bitp
 import { SUBMARINE, SUBMARINE_NEUTRAL_FILL, type SubmarineHandles, seabedHeight, submarine } from '@bitphysics/projects';
 import { Graphics, Text } from 'pixi.js';
 import { BEACON_CATCH, beaconLabel, beaconName, catchesBeacon, chooseBeacon, layCourse, seabedBetween } from './beacons';
-import { drawBoat } from './boat-drawing';
+import { drawBoat, HEADLIGHT, inHeadlight } from './boat-drawing';
 import { createHelmState, type HelmInput, keyHeaveShare, steer } from './helm';
 import {
   hullDistance,
@@ -160,6 +162,8 @@ const aim = {
   /** The label's box and the hull's (x, y, width, height, px), to check the label stays off the hull. */
   label: [0, 0, 0, 0],
   hull: [0, 0, 0, 0],
+  /** Whether the label was moved off the headlight's cone this frame. */
+  beam: false,
   /** The arrow's badge while drawn: its box (x, y, width, height, px; zeros while none) and the depth gauge's left edge (px). */
   badge: [0, 0, 0, 0],
   gaugeLeft: 0,
@@ -268,6 +272,7 @@ function createWorld(): PhysicsWorld {
   zoom = Number.NaN;
   Object.assign(camera, { leadX: 0, leadY: 0, time: 0, shake: 0 });
   hitMarks.length = 0;
+  scrapeAt = Number.NaN;
   pickups.length = 0;
   return world;
 }
@@ -320,6 +325,23 @@ function stickShare(v: number, key: boolean): number {
 
 /** Where the hull last touched the seabed (m), filled by touchSeabed. */
 const seabedContact = { x: 0, y: 0 };
+/** Game time the newest scrape on the seabed began (a contact that costs no hit), s; NaN before any. */
+let scrapeAt = Number.NaN;
+/** A scrape's shake of the view: its amplitude, px, and how long it lasts, s of game time. */
+const SCRAPE_SHAKE_PX = 4,
+  SCRAPE_SHAKE_LIFE = 0.35;
+/** How long a phone buzzes at a scrape, a seabed hit and a mine, ms. */
+const SCRAPE_BUZZ_MS = 25,
+  HIT_BUZZ_MS = 140,
+  MINE_BUZZ_MS = 260;
+/**
+ * Buzzes a phone for `ms` ms (navigator.vibrate), where it can and once the page has been touched
+ * (browsers refuse it before); nothing elsewhere.
+ */
+function buzz(ms: number): void {
+  const nav = navigator as Navigator & { userActivation?: { hasBeenActive: boolean } };
+  if (typeof nav.vibrate === 'function' && nav.maxTouchPoints > 0 && nav.userActivation?.hasBeenActive) nav.vibrate(ms);
+}
 /** The vertical command last step (-1 dive, 1 rise, 0 none): a hiss when it starts. */
 let lastVertical = 0;
 /** Game time of the last sonar ping, s. */
@@ -359,7 +381,11 @@ function stepWorld(world: PhysicsWorld): void {
   if (contact !== '') {
     // The helm brakes and holds the depth it stops at, above the contact.
     state.holdY = Number.NaN;
-    if (!wasTouching || contact === 'hit') sound.impact(contact === 'hit' ? 20 : 6, 'metal');
+    if (!wasTouching || contact === 'hit') {
+      sound.impact(contact === 'hit' ? 20 : 6, 'metal');
+      buzz(contact === 'hit' ? HIT_BUZZ_MS : SCRAPE_BUZZ_MS);
+      if (contact === 'touch') scrapeAt = world.time;
+    }
     if (contact === 'hit') {
       state.hits++;
       state.lastHit = 'seabed';
@@ -388,6 +414,7 @@ function stepWorld(world: PhysicsWorld): void {
     hitMarks.push({ kind: 'mine', x: m.x, y: m.y, time: world.time });
     game.drawNext();
     sound.explosion(0.9);
+    buzz(MINE_BUZZ_MS);
     if (state.hits >= 3) state.over = 'sunk';
   }
   if (state.over) {
@@ -1432,7 +1459,12 @@ function draw(): void {
   // A hit shakes the view (drawing only): SHAKE_PX px at the hit, decaying over HIT_SHAKE_LIFE s.
   const lastMark = hitMarks[hitMarks.length - 1];
   const shakeAge = lastMark ? world.time - lastMark.time : Number.POSITIVE_INFINITY;
-  const shake = shakeAge >= 0 && shakeAge < HIT_SHAKE_LIFE ? SHAKE_PX * (1 - shakeAge / HIT_SHAKE_LIFE) ** 2 : 0;
+  // A scrape (a contact that costs nothing) shakes it a little, so the bed is felt before it hurts.
+  const scrapeAge = world.time - scrapeAt;
+  const shake = Math.max(
+    shakeAge >= 0 && shakeAge < HIT_SHAKE_LIFE ? SHAKE_PX * (1 - shakeAge / HIT_SHAKE_LIFE) ** 2 : 0,
+    scrapeAge >= 0 && scrapeAge < SCRAPE_SHAKE_LIFE ? SCRAPE_SHAKE_PX * (1 - scrapeAge / SCRAPE_SHAKE_LIFE) ** 2 : 0,
+  );
   camera.shake = shake;
   const shakeX = shake * Math.sin(97 * world.time),
     shakeY = shake * Math.cos(71 * world.time);
@@ -1760,6 +1792,38 @@ function draw(): void {
       const above = hy0 - hr - pointer.height / 2 - 4,
         below = hy0 + hr + pointer.height / 2 + 4;
       pointer.y = (pointer.y < hy0 && above > pointer.height) || below > H - pointer.height ? above : below;
+    }
+    // Clear of the headlight's cone (boat-drawing.ts), where it shows: a label across it (a beacon's
+    // label over the lit water ahead of the bow) moves up or down, away from the cone's axis, until
+    // none of its points is in the cone.
+    aim.beam = false;
+    if (hyw < -HEADLIGHT.fromDepth) {
+      const ha = c.Angle.value[e]!,
+        hc = Math.cos(ha),
+        hs = Math.sin(ha);
+      const lit = () => {
+        for (let i = 0; i <= 4; i++)
+          for (let j = 0; j <= 2; j++) {
+            // A point of the label's pill, back in world metres, then in the hull's frame.
+            const wx = hxw + (pointer.x - pointer.width / 2 - 7 + ((pointer.width + 14) * i) / 4 - hx0) / k,
+              wy = hyw - (pointer.y - pointer.height / 2 - 2 + ((pointer.height + 4) * j) / 2 - hy0) / k;
+            if (inHeadlight((wx - hxw) * hc + (wy - hyw) * hs, -(wx - hxw) * hs + (wy - hyw) * hc, SUBMARINE.length)) return true;
+          }
+        return false;
+      };
+      if (lit()) {
+        aim.beam = true;
+        // Up if the label is above the axis where it is, else down; the other way if it would leave the view.
+        const axisY = hy0 - (pointer.x - hx0) * Math.tan(ha);
+        let dir = pointer.y < axisY ? -1 : 1;
+        const start = pointer.y;
+        for (let n = 0; n < 60 && lit(); n++) pointer.y += dir * 4;
+        if (pointer.y < pointer.height || pointer.y > H - pointer.height) {
+          dir = -dir;
+          pointer.y = start;
+          for (let n = 0; n < 60 && lit(); n++) pointer.y += dir * 4;
+        }
+      }
     }
     // Clear of the live mines in view: a label across one (on a phone the label of a beacon behind
     // spans most of the width at the boat's depth, over the mines ahead) moves past it, away from the hull.

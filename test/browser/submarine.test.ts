@@ -864,4 +864,49 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     expect(g.errors).toEqual([]);
     await g.close();
   }, 180_000);
+
+  it("the target's label keeps off the headlight's cone ahead of the bow", async () => {
+    // The hull parked (paused, level, at rest) 28 m short of the target and 4 m and 8 m above it,
+    // more than 10 m down, where the headlight shows (from 8 m): the label over the beacon sat in the lit cone.
+    // The cone, in the hull's frame, as boat-drawing.ts draws it: from the bow (6 m ahead of the
+    // centre) out to 26 m, spreading to 7 m either side, and its tip 2 m further.
+    const g = await h.openGame('submarine', { viewport, touch, query: { waves: 0, beacons: 1 } });
+    type P = Sub & { beaconPointer(): { label: number[]; beam: boolean } };
+    for (const above of [4, 8]) {
+      const r = await g.page.evaluate((above) => {
+        const w = window.game as unknown as P;
+        w.paused = true;
+        const c = w.world.components,
+          e = w.hull(),
+          b = w.handles().beacons;
+        c.Position.x[e] = b[0]! - 28;
+        c.Position.y[e] = b[1]! + above;
+        c.Velocity.x[e] = c.Velocity.y[e] = 0;
+        c.Angle.value[e] = 0;
+        w.state.holdY = b[1]! + above;
+        return { hx: c.Position.x[e]!, hy: c.Position.y[e]! };
+      }, above);
+      await g.frames(3);
+      const p = await g.page.evaluate(() => ({
+        ...(window.game as unknown as P).beaconPointer(),
+        cam: (window.game as unknown as P).camera(),
+      }));
+      expect(r.hy).toBeLessThan(-10);
+      const toWorld = (px: number, py: number) => [
+        p.cam.x + (px - p.cam.width / 2) / p.cam.zoom,
+        p.cam.y - (py - p.cam.height / 2) / p.cam.zoom,
+      ];
+      const [x, y, width, height] = p.label as [number, number, number, number];
+      for (let i = 0; i <= 8; i++)
+        for (let j = 0; j <= 2; j++) {
+          const [wx, wy] = toWorld(x + (width * i) / 8, y + (height * j) / 2);
+          const along = wx! - r.hx - 6,
+            across = Math.abs(wy! - r.hy);
+          const inCone = along >= 0 && (along <= 26 ? across <= 0.3 + (6.7 * along) / 26 : across <= (7 * (28.08 - along)) / 2.08);
+          expect(inCone, `${device}, ${above} m above: label point (${wx!.toFixed(1)}, ${wy!.toFixed(1)}) m in the cone`).toBe(false);
+        }
+    }
+    expect(g.errors).toEqual([]);
+    await g.close();
+  }, 180_000);
 });
