@@ -25,7 +25,7 @@
  *   is pushed (`HelmInput.heave`, `HelmInput.drive`), so a small push makes a small correction.
  * - Ahead / astern (held): the throttle moves at `HELM.throttleRate`. Released, the screw winds
  *   down to stop at `HELM.throttleRelease` and the boat glides on a short way: as the screw's push
- *   goes, the helm brakes the hull at up to `HELM.coastBrake` (the screw's blades feathered across the
+ *   goes, the helm brakes its way ahead at up to `HELM.coastBrake` (the screw's blades feathered across the
  *   flow and the planes set as brakes), fading out below `HELM.coastFade`, so a boat let go from full
  *   speed stops within about a hull's length instead of coasting on for a hundred metres on the
  *   water's drag alone (a telegraph that stayed at full ahead read as a stuck key; a screw that
@@ -174,15 +174,15 @@ export const HELM = Object.freeze({
    */
   coastBrake: 8,
   /**
-   * Speed along the hull under which the coasting brake fades in proportion to the speed, m/s, so it
+   * Horizontal speed under which the coasting brake fades in proportion to the speed, m/s, so it
    * slows the boat onto a stop without ever pushing it backwards.
    */
   coastFade: 1,
 });
 
 /**
- * The force along the hull the coasting brake gives, N (negative: against a boat moving ahead): a
- * boat of `mass` kg moving at `u` m/s along its hull with the screw at `throttle` (fraction of full,
+ * The horizontal force the coasting brake gives, N (negative: against a boat moving ahead): a
+ * boat of `mass` kg moving at `u` m/s ahead (horizontally) with the screw at `throttle` (fraction of full,
  * in [-0.5, 1]) is braked at `HELM.coastBrake` times the share of full throttle not pushing ahead,
  * and in proportion to its speed below `HELM.coastFade`. Zero for a boat at rest.
  * @throws RangeError when `mass` is not a finite positive number, or `u` or `throttle` is not finite.
@@ -368,7 +368,9 @@ export function steer(world: PhysicsWorld, handles: SubmarineHandles, input: Hel
   // At the surface with nothing asked the thrusters rest (they would only churn the water).
   if (state.mode === 'surfaced' && pitch === 0) state.fore = state.aft = 0;
   setSubmarineThrusters(handles, state.fore, state.aft);
-  // Ahead not held: the coasting brake on top of the screw (astern held, both brake together).
-  const brakeForce = input.ahead && !input.astern ? 0 : coastBrake(mass, u, state.throttle);
-  setBodyThrust(world, e, [state.throttle * S.maxThrust + brakeForce, 0]);
+  // Ahead not held: the coasting brake on top of the screw (astern held, both brake together). It
+  // brakes the way ahead only (the horizontal speed, pushing horizontally: in the hull's frame
+  // cos / -sin of its angle), so it never slows a dive or a climb of a pitched boat.
+  const brakeForce = input.ahead && !input.astern ? 0 : coastBrake(mass, c.Velocity.x[e]!, state.throttle);
+  setBodyThrust(world, e, [state.throttle * S.maxThrust + brakeForce * Math.cos(angle), -brakeForce * Math.sin(angle)]);
 }
