@@ -1,16 +1,18 @@
 // `node scripts/submarine-dive-curve.mjs`: the depth a held Dive key gives (games/submarine/helm.ts,
 // keyHeaveShare as the page applies it), headless on a calm sea: from a hover at 40 m, Dive held for
 // each time, let go, and the boat left to stop on its order. Prints the depth gone down (m) for each
-// hold time, and the same for Rise from 80 m.
+// hold time, and the same for Rise from 80 m. Then the glide: from a steady speed ahead at 40 m (full
+// ahead, and the screw at a share), Ahead let go (or Astern held) and the distance run until the boat
+// is slower than 0.2 m/s.
 import { importSource } from './build.mjs';
 
 const sub = await importSource(
   'submarine-dive-curve',
   `export * from './games/submarine/helm.ts';
-   export { SUBMARINE_NEUTRAL_FILL, submarine } from '@bitphysics/projects';
+   export { SUBMARINE, SUBMARINE_NEUTRAL_FILL, submarine } from '@bitphysics/projects';
    export { createPhysicsWorld, step } from '@bitphysics/physics';`,
 );
-const { createHelmState, keyHeaveShare, steer, NO_INPUT, SUBMARINE_NEUTRAL_FILL, submarine, createPhysicsWorld, step } = sub;
+const { createHelmState, keyHeaveShare, steer, NO_INPUT, SUBMARINE, SUBMARINE_NEUTRAL_FILL, submarine, createPhysicsWorld, step } = sub;
 
 /** Depth change (m, positive the way asked) after holding `key` ('dive' or 'rise') for `held` s from a hover at `y0` m. */
 function hold(key, held, y0) {
@@ -40,3 +42,35 @@ const times = [0.1, 0.25, 0.5, 1, 2, 3, 4, 6];
 console.log(`hold s  | ${times.map((t) => String(t).padStart(5)).join(' ')}`);
 console.log(`dive m  | ${times.map((t) => hold('dive', t, -40).toFixed(1).padStart(5)).join(' ')}`);
 console.log(`rise m  | ${times.map((t) => hold('rise', t, -90).toFixed(1).padStart(5)).join(' ')}`);
+
+/**
+ * From a hover at 40 m, the screw at `drive` (share of full ahead) for 15 s, then `input` held:
+ * the speed let go at (m/s), the distance run (m) and the time (s) until slower than 0.2 m/s.
+ */
+function glide(drive, input) {
+  const world = createPhysicsWorld(submarine.worldOptions());
+  const h = submarine.build(world, { seed: 1, count: 0, fill: SUBMARINE_NEUTRAL_FILL, position: [0, -40] });
+  world.components.FluidRegion.surface.fill(0);
+  const helm = createHelmState(SUBMARINE_NEUTRAL_FILL);
+  const P = world.components.Position.x,
+    V = world.components.Velocity.x,
+    e = h.hull;
+  for (let i = 0; i < Math.round(15 / world.dt); i++) {
+    steer(world, h, { ...NO_INPUT, ahead: true, drive }, helm);
+    step(world);
+  }
+  const x0 = P[e],
+    v0 = V[e];
+  let t = 0;
+  while (V[e] > 0.2 && t < 60) {
+    steer(world, h, { ...NO_INPUT, ...input }, helm);
+    step(world);
+    t += world.dt;
+  }
+  return `from ${v0.toFixed(1)} m/s: ${(P[e] - x0).toFixed(1)} m in ${t.toFixed(1)} s`;
+}
+const top = Math.sqrt(SUBMARINE.maxThrust / SUBMARINE.dragCoefficient);
+for (const v of [top, 9, 6, 3]) {
+  const drive = Math.min(1, (v / top) ** 2);
+  console.log(`let go ${glide(drive, {})} | Astern ${glide(drive, { astern: true })}`);
+}

@@ -3,8 +3,8 @@
 // the helm, the physics, the seabed contact and the mines) with a steady pilot on the keys, and counts
 // the mines it sets off and the time it takes. The pilot holds Ahead while the boat is slower than
 // lets it reach the next beacon's x as it reaches its depth, Astern (the brake) while it is 2 m/s
-// faster, and Dive or Rise (the keys' steady share, helm.ts keyHeaveShare) until the depth order is
-// at the beacon's depth; when the mine warning by the hull comes (mines.ts mineAhead, as the page
+// faster (between the two it lets go and glides), and Dive or Rise (the keys' steady share, helm.ts
+// keyHeaveShare) until the depth order is at the beacon's depth; when the mine warning by the hull comes (mines.ts mineAhead, as the page
 // computes it) it waits S s (default 1: mines.ts MINE_REACTION), then holds the Rise or Dive key as
 // told while the warning lasts and holds its depth until it is past the mine. It minds neither the
 // ridges nor the glow trail, and does not turn back for a beacon it passed. Courses: seeds 1 to N
@@ -106,7 +106,7 @@ function fly(seed, count) {
       const dy = by - y;
       // On the keys too: Ahead held while the boat is slower than lets it reach the beacon's x as
       // it reaches its depth (at about 3.5 m/s, the key's 6 m/s less the start, the stop and a margin),
-      // Astern (the brake) while it is 2 m/s or more faster, else it coasts.
+      // Astern (the brake) while it is 2 m/s or more faster, else it lets go (and glides, braking).
       const tv = Math.abs(dy) / 3.5 + 3,
         want = Math.max(3, Math.max(0, bx - x) / tv),
         vx = c.Velocity.x[e];

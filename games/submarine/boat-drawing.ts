@@ -10,6 +10,25 @@
 import type { Graphics } from 'pixi.js';
 
 /** What `drawBoat` needs: the hull's size, the mapping to the screen and the state to show. */
+/**
+ * The headlight's cone in the hull's frame: from the bow it reaches `reach` m ahead (its tip 8 %
+ * further) and spreads to `spread` m either side of the axis there; it shows below `fromDepth` m,
+ * brighter the deeper the boat.
+ */
+export const HEADLIGHT = Object.freeze({ reach: 26, spread: 7, fromDepth: 8 });
+
+/**
+ * Whether the point (u, v), m in the hull's frame (u along the hull from its centre, v across it),
+ * is inside the headlight's cone of a hull `length` m long (> 0).
+ */
+export function inHeadlight(u: number, v: number, length: number): boolean {
+  const along = u - length / 2;
+  if (along < 0) return false;
+  if (along <= HEADLIGHT.reach) return Math.abs(v) <= 0.3 + ((HEADLIGHT.spread - 0.3) * along) / HEADLIGHT.reach;
+  const tip = 0.08 * HEADLIGHT.reach;
+  return along <= HEADLIGHT.reach + tip && Math.abs(v) <= (HEADLIGHT.spread * (HEADLIGHT.reach + tip - along)) / tip;
+}
+
 export interface BoatPicture {
   /** Hull length and height, m. */
   length: number;
@@ -48,11 +67,11 @@ export function drawBoat(g: Graphics, b: BoatPicture): void {
   const poly = (points: number[][]): number[] => points.flatMap(([u, v]) => pt(u!, v!));
   // The headlight: a cone ahead of the bow in five nested layers (brightest along the axis), showing
   // only below the sunlit water and brighter the deeper the boat.
-  const glow = Math.max(0, Math.min(0.14, (b.depth - 8) / 300));
+  const glow = Math.max(0, Math.min(0.14, (b.depth - HEADLIGHT.fromDepth) / 300));
   if (glow > 0)
     for (let i = 0; i < 5; i++) {
-      const reach = 26 - 3 * i,
-        spread = 7 - 1.3 * i;
+      const reach = HEADLIGHT.reach - 3 * i,
+        spread = HEADLIGHT.spread - 1.3 * i;
       g.poly(
         poly([
           [L - 0.2, 0.3],

@@ -24,9 +24,13 @@
  * - The on-screen stick asks for part of the dive or climb speed and of the throttle, as far as it
  *   is pushed (`HelmInput.heave`, `HelmInput.drive`), so a small push makes a small correction.
  * - Ahead / astern (held): the throttle moves at `HELM.throttleRate`. Released, the screw winds
- *   down to stop at `HELM.throttleRelease` and the boat coasts, the water's drag slowing it
- *   gradually (a telegraph that stayed at full ahead read as a stuck key; a screw that backed on
- *   its own braked the boat as if it had hit something). Astern held is the brake.
+ *   down to stop at `HELM.throttleRelease` and the boat glides on a short way: as the screw's push
+ *   goes, the helm brakes its way ahead at up to `HELM.coastBrake` (the screw's blades feathered across the
+ *   flow and the planes set as brakes), fading out below `HELM.coastFade`, so a boat let go from full
+ *   speed stops within about a hull's length instead of coasting on for a hundred metres on the
+ *   water's drag alone (a telegraph that stayed at full ahead read as a stuck key; a screw that
+ *   backed on its own braked the boat as if it had hit something). Astern held is the harder brake:
+ *   the same brake and the screw backing.
  */
 
 import type { PhysicsWorld } from '@bitphysics/physics';
@@ -159,12 +163,37 @@ export const HELM = Object.freeze({
   /** Throttle change per second while Ahead or Astern is held. */
   throttleRate: 2.5,
   /**
-   * Throttle change per second towards stop while neither is held: the screw winds down over about
-   * a second and the boat coasts on, slowed by the drag k v^2 only (from 12.9 m/s to about 5 m/s
-   * in 5 s).
+   * Throttle change per second towards stop while neither is held: the screw winds down from full
+   * in a quarter of a second, and the coasting brake (`coastBrake`) takes over as it does.
    */
-  throttleRelease: 1,
+  throttleRelease: 4,
+  /**
+   * Deceleration the helm brakes a boat with while Ahead is not held, m/s^2, once the screw has wound
+   * down (scaled by the share of full throttle no longer pushing ahead): with the drag k v^2 a boat
+   * let go at full speed (12.9 m/s) glides about 10 m, one at 6 m/s about 4 m.
+   */
+  coastBrake: 8,
+  /**
+   * Horizontal speed under which the coasting brake fades in proportion to the speed, m/s, so it
+   * slows the boat onto a stop without ever pushing it backwards.
+   */
+  coastFade: 1,
 });
+
+/**
+ * The horizontal force the coasting brake gives, N (negative: against a boat moving ahead): a
+ * boat of `mass` kg moving at `u` m/s ahead (horizontally) with the screw at `throttle` (fraction of full,
+ * in [-0.5, 1]) is braked at `HELM.coastBrake` times the share of full throttle not pushing ahead,
+ * and in proportion to its speed below `HELM.coastFade`. Zero for a boat at rest.
+ * @throws RangeError when `mass` is not a finite positive number, or `u` or `throttle` is not finite.
+ */
+export function coastBrake(mass: number, u: number, throttle: number): number {
+  if (!(Number.isFinite(mass) && mass > 0)) throw new RangeError(`coastBrake: mass must be a finite number > 0 kg, got ${mass}`);
+  if (!Number.isFinite(u)) throw new RangeError(`coastBrake: u must be finite, got ${u}`);
+  if (!Number.isFinite(throttle)) throw new RangeError(`coastBrake: throttle must be finite, got ${throttle}`);
+  const share = 1 - clamp(throttle, -0.5, 1);
+  return -mass * HELM.coastBrake * share * clamp(u / HELM.coastFade, -1, 1);
+}
 
 /**
  * The share of full Dive / Rise (`HelmInput.heave`) a Dive or Rise key asks for: a steady 0.6
@@ -231,8 +260,10 @@ export function steer(world: PhysicsWorld, handles: SubmarineHandles, input: Hel
   // winds back at throttleRelease toward it when it is past it (a stick eased back) or to stop.
   // Neither held: the screw winds down to stop and the boat coasts, slowed by the water's drag.
   const asked = input.ahead === input.astern ? 0 : input.ahead ? driveAsked : -0.5 * driveAsked;
-  const pushing = (asked > 0 && state.throttle < asked) || (asked < 0 && state.throttle > asked);
-  const rate = (pushing ? HELM.throttleRate : HELM.throttleRelease) * dt;
+  // Winding towards stop (a key let go, or Astern from ahead) is at the faster of the two rates.
+  const pushing =
+    (asked > 0 && state.throttle < asked && state.throttle >= 0) || (asked < 0 && state.throttle > asked && state.throttle <= 0);
+  const rate = (pushing ? HELM.throttleRate : Math.max(HELM.throttleRate, HELM.throttleRelease)) * dt;
   state.throttle = state.throttle < asked ? Math.min(asked, state.throttle + rate) : Math.max(asked, state.throttle - rate);
 
   const y = c.Position.y[e]!,
@@ -337,5 +368,9 @@ export function steer(world: PhysicsWorld, handles: SubmarineHandles, input: Hel
   // At the surface with nothing asked the thrusters rest (they would only churn the water).
   if (state.mode === 'surfaced' && pitch === 0) state.fore = state.aft = 0;
   setSubmarineThrusters(handles, state.fore, state.aft);
-  setBodyThrust(world, e, [state.throttle * S.maxThrust, 0]);
+  // Ahead not held: the coasting brake on top of the screw (astern held, both brake together). It
+  // brakes the way ahead only (the horizontal speed, pushing horizontally: in the hull's frame
+  // cos / -sin of its angle), so it never slows a dive or a climb of a pitched boat.
+  const brakeForce = input.ahead && !input.astern ? 0 : coastBrake(mass, c.Velocity.x[e]!, state.throttle);
+  setBodyThrust(world, e, [state.throttle * S.maxThrust + brakeForce * Math.cos(angle), -brakeForce * Math.sin(angle)]);
 }

@@ -3,9 +3,10 @@
  * ordered (a dashed line by the hull and a cyan mark on the depth gauge, with figures, at the scene's right edge)
  * runs down or up at once, the vertical thrusters and (under way) the dive planes push at once and the
  * vents flood or blow the ballast tanks; let go and the boat stops on the ordered depth and holds it
- * (./helm.ts, ./planes.ts). Hold Nose down or up to pitch, and drive the screw ahead or astern. A trail
- * of glowing plankton leads from beacon to beacon round the mines (./trail.ts): each glow caught
- * scores, more for a streak of them. The hull floats by Archimedes (its submerged part of a 12 m x 3 m box), drags in proportion
+ * (./helm.ts, ./planes.ts), a depth ladder behind the stern sliding past it meanwhile. Hold Nose down
+ * or up to pitch, and drive the screw ahead or astern (let go, the boat glides about a hull's length
+ * and stops). A trail of glowing plankton leads from beacon to beacon round the mines (./trail.ts):
+ * each glow caught scores, more for a streak of them (a first-time hint over the scene says how much). The hull floats by Archimedes (its submerged part of a 12 m x 3 m box), drags in proportion
  * to how much of it is under water and bobs in the waves. Collect every beacon before three hits
  * (a scrape on the seabed, or a moored mine laid across the way between two beacons: ./mines.ts)
  * break the hull, inside the course's par time if you can: a won run earns a star for the beacons,
@@ -18,6 +19,7 @@
  * Sound: the screw's hum follows the throttle, a hiss when the vents open or the tanks blow, a sonar
  * ping that quickens as the next beacon nears, a rising chime for each beacon (rings spread from it
  * and a banner counts it), a thump on the seabed, a blast (a flash and bubbles) when a mine goes off.
+ * A scrape on the seabed shakes the view a little, a hit more; on a phone each also buzzes.
  */
 
 import {
@@ -36,7 +38,7 @@ import { applyImpulse, createPhysicsWorld, type PhysicsWorld, step } from '@bitp
 import { SUBMARINE, SUBMARINE_NEUTRAL_FILL, type SubmarineHandles, seabedHeight, submarine } from '@bitphysics/projects';
 import { Graphics, Text } from 'pixi.js';
 import { BEACON_CATCH, beaconLabel, beaconName, catchesBeacon, chooseBeacon, layCourse, seabedBetween } from './beacons';
-import { drawBoat } from './boat-drawing';
+import { drawBoat, HEADLIGHT, inHeadlight } from './boat-drawing';
 import { createHelmState, type HelmInput, keyHeaveShare, steer } from './helm';
 import {
   hullDistance,
@@ -102,7 +104,7 @@ const MINE_WARN_DISTANCE = 25;
 let glows: Glow[] = [];
 let glowState = new Uint8Array(0);
 /** Glows caught, for the sparkle drawn at each: where (m), when (game time, s) and the points it scored. */
-const glowPops: { x: number; y: number; time: number; points: number }[] = [];
+const glowPops: { x: number; y: number; time: number; points: number; times: number }[] = [];
 /** How long a caught glow's sparkle lasts, s of game time. */
 const GLOW_POP_LIFE = 0.7;
 /** Points: a glow (times the streak, up to GLOW_STREAK_MAX), a beacon, and each second a won run beats par by. */
@@ -110,6 +112,15 @@ const GLOW_POINTS = 10,
   GLOW_STREAK_MAX = 5,
   BEACON_POINTS = 100,
   PAR_POINTS = 5;
+/** What a glow is worth and when it counts, for the controls list and the first-time hint. */
+const GLOW_LEGEND = `glow: +${GLOW_POINTS} when touched; in a row ×2, ×3 … ×${GLOW_STREAK_MAX}; pass one and it is ×1 again`;
+/** The first-time hint's words: the glows' worth, the beacons' and par's. */
+const GLOW_HINT = `● glow +${GLOW_POINTS} when touched, ×2 … ×${GLOW_STREAK_MAX} in a row (pass one: ×1) · ◯ beacon +${BEACON_POINTS} · +${PAR_POINTS} a second under par`;
+/** How long the first-time hint stays once a glow is in view, and after the first glow caught, s of game time. */
+const GLOW_HINT_LIFE = 8,
+  GLOW_HINT_AFTER = 3;
+/** The first-time hint: the game time a glow was first in view and the first was caught (NaN: not yet), once a page. */
+const glowHint = { shown: Number.NaN, caught: Number.NaN };
 /** A glow the hull's centre has passed by this far along x without catching it is missed (the streak ends), m. */
 const GLOW_MISS = 10;
 /** The depth gauge's full scale: the deepest seabed of the course and 10 m, rounded up to 10 m. */
@@ -151,6 +162,8 @@ const aim = {
   /** The label's box and the hull's (x, y, width, height, px), to check the label stays off the hull. */
   label: [0, 0, 0, 0],
   hull: [0, 0, 0, 0],
+  /** Whether the label was moved off the headlight's cone this frame. */
+  beam: false,
   /** The arrow's badge while drawn: its box (x, y, width, height, px; zeros while none) and the depth gauge's left edge (px). */
   badge: [0, 0, 0, 0],
   gaugeLeft: 0,
@@ -259,6 +272,7 @@ function createWorld(): PhysicsWorld {
   zoom = Number.NaN;
   Object.assign(camera, { leadX: 0, leadY: 0, time: 0, shake: 0 });
   hitMarks.length = 0;
+  scrapeAt = Number.NaN;
   pickups.length = 0;
   return world;
 }
@@ -311,6 +325,23 @@ function stickShare(v: number, key: boolean): number {
 
 /** Where the hull last touched the seabed (m), filled by touchSeabed. */
 const seabedContact = { x: 0, y: 0 };
+/** Game time the newest scrape on the seabed began (a contact that costs no hit), s; NaN before any. */
+let scrapeAt = Number.NaN;
+/** A scrape's shake of the view: its amplitude, px, and how long it lasts, s of game time. */
+const SCRAPE_SHAKE_PX = 4,
+  SCRAPE_SHAKE_LIFE = 0.35;
+/** How long a phone buzzes at a scrape, a seabed hit and a mine, ms. */
+const SCRAPE_BUZZ_MS = 25,
+  HIT_BUZZ_MS = 140,
+  MINE_BUZZ_MS = 260;
+/**
+ * Buzzes a phone for `ms` ms (navigator.vibrate), where it can and once the page has been touched
+ * (browsers refuse it before); nothing elsewhere.
+ */
+function buzz(ms: number): void {
+  const nav = navigator as Navigator & { userActivation?: { hasBeenActive: boolean } };
+  if (typeof nav.vibrate === 'function' && nav.maxTouchPoints > 0 && nav.userActivation?.hasBeenActive) nav.vibrate(ms);
+}
 /** The vertical command last step (-1 dive, 1 rise, 0 none): a hiss when it starts. */
 let lastVertical = 0;
 /** Game time of the last sonar ping, s. */
@@ -350,7 +381,11 @@ function stepWorld(world: PhysicsWorld): void {
   if (contact !== '') {
     // The helm brakes and holds the depth it stops at, above the contact.
     state.holdY = Number.NaN;
-    if (!wasTouching || contact === 'hit') sound.impact(contact === 'hit' ? 20 : 6, 'metal');
+    if (!wasTouching || contact === 'hit') {
+      sound.impact(contact === 'hit' ? 20 : 6, 'metal');
+      buzz(contact === 'hit' ? HIT_BUZZ_MS : SCRAPE_BUZZ_MS);
+      if (contact === 'touch') scrapeAt = world.time;
+    }
     if (contact === 'hit') {
       state.hits++;
       state.lastHit = 'seabed';
@@ -379,6 +414,7 @@ function stepWorld(world: PhysicsWorld): void {
     hitMarks.push({ kind: 'mine', x: m.x, y: m.y, time: world.time });
     game.drawNext();
     sound.explosion(0.9);
+    buzz(MINE_BUZZ_MS);
     if (state.hits >= 3) state.over = 'sunk';
   }
   if (state.over) {
@@ -454,7 +490,8 @@ function catchGlows(world: PhysicsWorld): void {
     state.streak++;
     const points = GLOW_POINTS * Math.min(GLOW_STREAK_MAX, state.streak);
     state.score += points;
-    glowPops.push({ x: gl.x, y: gl.y, time: world.time, points });
+    glowPops.push({ x: gl.x, y: gl.y, time: world.time, points, times: Math.min(GLOW_STREAK_MAX, state.streak) });
+    if (Number.isNaN(glowHint.caught)) glowHint.caught = world.time;
     // Up a major scale from C6 as the streak grows (C D E G A C).
     const scale = [1047, 1175, 1319, 1568, 1760, 2093];
     sound.chime(scale[Math.min(scale.length - 1, state.streak - 1)]!, 0.12);
@@ -480,6 +517,7 @@ const game = await startPixiGame({
     { keys: '← → / A D', action: 'screw astern / ahead', touch: 'stick ← →' },
     { keys: 'Q / E', action: 'nose down / up', touch: 'Nose ↘ / ↗' },
     { keys: '◯', action: 'beacon: touch its ring with the boat to collect it', touch: '◯' },
+    { keys: '●', action: GLOW_LEGEND, touch: '●' },
   ],
   app: { background: 0x0b2340, antialias: true },
   renderer: { pixelsPerMeter: params.pixelsPerMeter },
@@ -558,6 +596,30 @@ endCard.style.cssText =
   'padding: 12px 16px; border-radius: 14px; background: rgba(4, 16, 30, 0.88); color: #e8f4ff; font: 16px/1.45 system-ui, sans-serif;' +
   'text-align: center; pointer-events: none; display: none;';
 pageLayout().stage.append(endCard);
+/** The first-time hint over the top of the scene: what a glow, a beacon and par are worth. */
+const glowNote = document.createElement('div');
+glowNote.dataset.sceneOverlay = '';
+glowNote.dataset.hud = 'glow-hint';
+glowNote.textContent = GLOW_HINT;
+glowNote.style.cssText =
+  // Centred in the band left of the depth gauge and its tags (70 px at the right edge).
+  'position: absolute; z-index: 4; left: 10px; right: 70px; top: 8px; width: fit-content; margin: 0 auto;' +
+  'box-sizing: border-box; padding: 5px 12px; border-radius: 10px; background: rgba(4, 16, 30, 0.82); color: #b8ffe9;' +
+  `font: 600 ${compact ? 13 : 14}px/1.35 system-ui, sans-serif; text-align: center; pointer-events: none; display: none;`;
+pageLayout().stage.append(glowNote);
+/**
+ * Shows the first-time hint from the moment a glow is first in view (`inView`) at game time `t`, s,
+ * for GLOW_HINT_LIFE s, and at least GLOW_HINT_AFTER s after the first glow caught; once a page.
+ */
+function showGlowHint(t: number, inView: boolean): void {
+  if (inView && Number.isNaN(glowHint.shown)) glowHint.shown = t;
+  const on =
+    !state.over &&
+    Number.isFinite(glowHint.shown) &&
+    (t - glowHint.shown < GLOW_HINT_LIFE || (Number.isFinite(glowHint.caught) && t - glowHint.caught < GLOW_HINT_AFTER));
+  const display = on ? 'block' : 'none';
+  if (glowNote.style.display !== display) glowNote.style.display = display;
+}
 const showAgain = createActionButton('Play again ▶', () => shell.reset());
 /** Best time of each course (seed and beacon count) that was won, s, in localStorage. */
 const BEST_KEY = 'bitphysics.submarine.best';
@@ -1052,7 +1114,7 @@ function drawGlows(t: number, k: number, sx: (x: number) => number, sy: (y: numb
       app.stage.addChild(label);
     }
     label.visible = true;
-    label.text = `+${p.points}`;
+    label.text = p.times > 1 ? `+${p.points} ×${p.times}` : `+${p.points}`;
     label.position.set(x, y - (1.5 + 2.5 * u) * k - 8);
     label.alpha = 1 - u * u;
     shown++;
@@ -1220,6 +1282,68 @@ const bubbles: { x: number; y: number; age: number; life: number; r: number }[] 
 let bubbleTime = 0;
 /** The screw's turn for drawing, rad. */
 let screwPhase = 0;
+
+/** The depth ladder by the boat (drawDepthLadder): its figures, a pool hidden when unused. */
+const ladderMarks: Text[] = [];
+/** The depth ladder's opacity in [0, 1] and the game time it was last eased at, s. */
+const ladder = { alpha: 0, time: 0 };
+/** How far the depth ladder reaches above and below the boat and its order, m. */
+const LADDER_REACH = 10;
+/** Seconds the depth ladder takes to fade in or out. */
+const LADDER_FADE = 0.4;
+/**
+ * Draws the depth ladder fixed in the water behind the boat's stern while it dives or rises or has
+ * yet to reach the depth ordered: a tick every 2 m, a longer one with its depth ("30 m") every
+ * 10 m, and the order's depth in cyan, so the ticks slide past the hull as it changes depth and the
+ * player sees how far it has gone and has to go. Fades in and out over LADDER_FADE s of game time
+ * `t`; `sx` / `sy` map world x / y (m) to screen px, (hxw, hyw) is the hull's centre, m.
+ */
+function drawDepthLadder(t: number, sx: (x: number) => number, sy: (y: number) => number, hxw: number, hyw: number): void {
+  const c = shell.world.components,
+    vy = c.Velocity.y[handles.hull]!;
+  const order = state.holdY;
+  const moving =
+    state.mode === 'diving' || state.mode === 'rising' || (Number.isFinite(order) && Math.abs(order - hyw) > 0.5) || Math.abs(vy) > 0.6;
+  const dt = Math.max(0, Math.min(0.1, t - ladder.time));
+  ladder.time = t;
+  ladder.alpha = Math.max(0, Math.min(1, ladder.alpha + ((moving ? 1 : -1) * dt) / LADDER_FADE));
+  let used = 0;
+  if (ladder.alpha > 0) {
+    const x = hxw - SUBMARINE.length / 2 - 3,
+      px = sx(x),
+      to = Number.isFinite(order) ? order : hyw;
+    const hi = Math.min(-1, Math.max(hyw, to) + LADDER_REACH),
+      lo = Math.min(hyw, to) - LADDER_REACH;
+    g.moveTo(px, sy(hi))
+      .lineTo(px, sy(lo))
+      .stroke({ color: 0xcfe6ff, width: 1, alpha: 0.35 * ladder.alpha });
+    for (let d = Math.ceil(-hi / 2) * 2; d <= -lo; d += 2) {
+      const y = -d,
+        // Faded towards the ladder's ends, so it reads as a scale round the boat, not a wall.
+        near = Math.max(0, 1 - Math.max(0, Math.max(y - Math.max(hyw, to), Math.min(hyw, to) - y)) / LADDER_REACH),
+        big = d % 10 === 0,
+        len = big ? 9 : 5,
+        a = ladder.alpha * near;
+      if (a <= 0.02) continue;
+      g.moveTo(px - len, sy(y))
+        .lineTo(px + len, sy(y))
+        .stroke({ color: 0xe8f4ff, width: big ? 2 : 1.2, alpha: 0.75 * a });
+      if (big) {
+        const mark = ladderMarks[used] ?? gaugeText(11);
+        ladderMarks[used++] = mark;
+        mark.text = `${d} m`;
+        mark.position.set(px - len - 3, sy(y));
+        mark.alpha = 0.9 * a;
+        mark.visible = true;
+      }
+    }
+    if (Number.isFinite(order) && Math.abs(order - hyw) > 0.3)
+      g.roundRect(px - 11, sy(order) - 2, 22, 4, 2)
+        .fill({ color: 0x7fe3ff, alpha: ladder.alpha })
+        .stroke({ color: 0x06213a, width: 1, alpha: ladder.alpha });
+  }
+  for (let i = used; i < ladderMarks.length; i++) ladderMarks[i]!.visible = false;
+}
 let lastFill = [0, 0];
 
 /**
@@ -1335,7 +1459,12 @@ function draw(): void {
   // A hit shakes the view (drawing only): SHAKE_PX px at the hit, decaying over HIT_SHAKE_LIFE s.
   const lastMark = hitMarks[hitMarks.length - 1];
   const shakeAge = lastMark ? world.time - lastMark.time : Number.POSITIVE_INFINITY;
-  const shake = shakeAge >= 0 && shakeAge < HIT_SHAKE_LIFE ? SHAKE_PX * (1 - shakeAge / HIT_SHAKE_LIFE) ** 2 : 0;
+  // A scrape (a contact that costs nothing) shakes it a little, so the bed is felt before it hurts.
+  const scrapeAge = world.time - scrapeAt;
+  const shake = Math.max(
+    shakeAge >= 0 && shakeAge < HIT_SHAKE_LIFE ? SHAKE_PX * (1 - shakeAge / HIT_SHAKE_LIFE) ** 2 : 0,
+    scrapeAge >= 0 && scrapeAge < SCRAPE_SHAKE_LIFE ? SCRAPE_SHAKE_PX * (1 - scrapeAge / SCRAPE_SHAKE_LIFE) ** 2 : 0,
+  );
   camera.shake = shake;
   const shakeX = shake * Math.sin(97 * world.time),
     shakeY = shake * Math.cos(71 * world.time);
@@ -1455,6 +1584,10 @@ function draw(): void {
   }
   drawFish(g, left, right, t, k, sx, sy, bedAt, hxw, hyw);
   drawGlows(t, k, sx, sy, left, right);
+  showGlowHint(
+    t,
+    glows.some((gl, i) => glowState[i] === 0 && gl.x > left && gl.x < right && sy(gl.y) > 0 && sy(gl.y) < H),
+  );
   drawMines(t, k, sx, sy, left, right, hxw, hyw, c.Angle.value[e]!);
   // Beacons: a lamp (at least 5 px, however far the camera zooms out) in a pulsing ring, inside a
   // ring of the catch radius (BEACON_CATCH: any part of the hull inside it collects), drawn as a
@@ -1660,6 +1793,38 @@ function draw(): void {
         below = hy0 + hr + pointer.height / 2 + 4;
       pointer.y = (pointer.y < hy0 && above > pointer.height) || below > H - pointer.height ? above : below;
     }
+    // Clear of the headlight's cone (boat-drawing.ts), where it shows: a label across it (a beacon's
+    // label over the lit water ahead of the bow) moves up or down, away from the cone's axis, until
+    // none of its points is in the cone.
+    aim.beam = false;
+    if (hyw < -HEADLIGHT.fromDepth) {
+      const ha = c.Angle.value[e]!,
+        hc = Math.cos(ha),
+        hs = Math.sin(ha);
+      const lit = () => {
+        for (let i = 0; i <= 4; i++)
+          for (let j = 0; j <= 2; j++) {
+            // A point of the label's pill, back in world metres, then in the hull's frame.
+            const wx = hxw + (pointer.x - pointer.width / 2 - 7 + ((pointer.width + 14) * i) / 4 - hx0) / k,
+              wy = hyw - (pointer.y - pointer.height / 2 - 2 + ((pointer.height + 4) * j) / 2 - hy0) / k;
+            if (inHeadlight((wx - hxw) * hc + (wy - hyw) * hs, -(wx - hxw) * hs + (wy - hyw) * hc, SUBMARINE.length)) return true;
+          }
+        return false;
+      };
+      if (lit()) {
+        aim.beam = true;
+        // Up if the label is above the axis where it is, else down; the other way if it would leave the view.
+        const axisY = hy0 - (pointer.x - hx0) * Math.tan(ha);
+        let dir = pointer.y < axisY ? -1 : 1;
+        const start = pointer.y;
+        for (let n = 0; n < 60 && lit(); n++) pointer.y += dir * 4;
+        if (pointer.y < pointer.height || pointer.y > H - pointer.height) {
+          dir = -dir;
+          pointer.y = start;
+          for (let n = 0; n < 60 && lit(); n++) pointer.y += dir * 4;
+        }
+      }
+    }
     // Clear of the live mines in view: a label across one (on a phone the label of a beacon behind
     // spans most of the width at the boat's depth, over the mines ahead) moves past it, away from the hull.
     for (let i = 0; i < mines.length; i++) {
@@ -1763,6 +1928,7 @@ function draw(): void {
         .stroke({ color: 0x7fe3ff, width: 2, alpha: 0.6 - 0.2 * j });
     }
   }
+  drawDepthLadder(t, sx, sy, hxw, hyw);
   drawMineWarning(t, k, sx, sy, hxw, hyw);
   spawnBubbles(world, a);
   for (const b of bubbles) {
@@ -1819,8 +1985,8 @@ function draw(): void {
   // The clock turns red once par has passed.
   goal.style.color = !state.over && state.time > state.par ? '#ff9e8a' : '#ffe066';
   readoutText.textContent = compact
-    ? `depth ${depth.toFixed(0)}${ordered} m · ${speed.toFixed(1)} m/s · `
-    : `depth ${depth.toFixed(0)}${ordered} m · speed ${speed.toFixed(1)} m/s · score ${state.score}${streak} · `;
+    ? `depth ${Math.max(0, depth).toFixed(0)}${ordered} m · ${speed.toFixed(1)} m/s · `
+    : `depth ${Math.max(0, depth).toFixed(0)}${ordered} m · speed ${speed.toFixed(1)} m/s · score ${state.score}${streak} · `;
   showHull();
   instruments.textContent = [
     `seabed ${(-floor).toFixed(0)} m`,
@@ -1847,6 +2013,10 @@ const panel = createPanel(
 shell.expose({
   /** The beacon pointer: the beacon it leads to (-1: none), distance (m), offset (m), arrow angle, whether it is on screen, its label text and how many times the brake hint came on. */
   beaconPointer: () => ({ ...aim, visible: pointer.visible, text: pointer.text, zoom, otherTags, brakeHints: brakeHint.shown }),
+  /** The first-time hint of the glows' worth: its words and whether it shows. */
+  glowHint: () => ({ text: glowNote.textContent ?? '', visible: glowNote.style.display !== 'none' }),
+  /** The depth ladder by the boat as last drawn: its opacity in [0, 1] and the figures shown ("30 m"). */
+  depthLadder: () => ({ alpha: ladder.alpha, marks: ladderMarks.filter((m) => m.visible).map((m) => m.text) }),
   /** The depth gauge's tags as last drawn: the boat's depth and the target's, each x, y, width, height, px (zeros while hidden). */
   gaugeTags: () => ({ depth: [...gauge_.depth], target: [...gauge_.target] }),
   /** The camera as last drawn: centre (x, y, m), zoom (px/m), look-ahead (m, before its limit) and shake (px). */

@@ -333,12 +333,12 @@ export function touchesMine(x: number, y: number, angle: number, mx: number, my:
 
 /**
  * What a steady pilot on the keys takes for a leg of the course (scripts/submarine-pilot.mjs: full
- * ahead, braking with Astern to reach the beacon's x as it reaches its depth, Dive / Rise held at
- * the keys' steady share, passing the mines as warned), fitted to its times on the 43 courses it won
- * of seeds 1 to 30 with 6 and 10 beacons (each within 11 % of it): the longer of the run ahead at
- * `ahead` m/s and the depth change at `depth` m/s, plus `perBeacon` s.
+ * ahead, letting go or braking with Astern to reach the beacon's x as it reaches its depth, Dive /
+ * Rise held at the keys' steady share, passing the mines as warned), fitted to its times on the 57
+ * courses it won of seeds 1 to 30 with 6 and 10 beacons (each within 12 % of it): the longer of the
+ * run ahead at `ahead` m/s and the depth change at `depth` m/s, plus `perBeacon` s.
  */
-export const PILOT_LEG = Object.freeze({ ahead: 12.5, depth: 4.5, perBeacon: 1.5 });
+export const PILOT_LEG = Object.freeze({ ahead: 12, depth: 4.8, perBeacon: 2.5 });
 /**
  * Par over the steady pilot's time: a newcomer who has to find the beacons, learn the helm and pass
  * the mines takes longer than a pilot that knows the way (the pilot itself is at most 1.11 times its

@@ -41,6 +41,8 @@ type Sub = {
   glows(): { x: number; y: number; leg: number; state: string }[];
   mines(): { x: number; y: number; live: boolean }[];
   camera(): Camera;
+  depthLadder(): { alpha: number; marks: string[] };
+  glowHint(): { text: string; visible: boolean };
   hitEffect(): Hit;
   mineAhead(): { index: number; side: string; time: number; text: string; box: number[]; tip: number[]; tail: number[] } | null;
 };
@@ -266,8 +268,18 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     // page records, every frame, the hull's depth, the order and the readout. The order is below the
     // boat before the boat has moved 5 cm; the readout shows both ("depth 31 → 34 m"); let go, the
     // boat passes the order by under 0.2 m and is within 0.2 m of it 2 s after (helm.ts: measured
-    // 0.00 m and 1.2 s headless from the full dive speed).
+    // 0.00 m and 1.2 s headless from the full dive speed). While it dives the depth ladder by the
+    // hull shows, with the 30 m figure; 2 s after it stopped on the order the ladder has faded out.
     const g = await h.openGame('submarine', { viewport, touch, query: { waves: 0, beacons: 1 } });
+    // From the start, with the first glows in view, a hint over the scene says what a glow is worth
+    // and when it counts (touched, and in a row), within the view's width.
+    await g.frames(3);
+    const hint = await g.page.evaluate(() => (window.game as unknown as Sub).glowHint());
+    expect(hint.visible).toBe(true);
+    expect(hint.text).toMatch(/glow \+10 when touched, ×2 … ×5 in a row/);
+    const hintBox = (await g.page.locator('[data-hud="glow-hint"]').boundingBox())!;
+    expect(hintBox.x).toBeGreaterThanOrEqual(0);
+    expect(hintBox.x + hintBox.width).toBeLessThanOrEqual(viewport.width - 60);
     if (touch) await stickOnPhone(g);
     await g.page.evaluate(() => {
       const w = window.game as unknown as Sub & { world: { components: { Ballast: { fore: Float64Array; aft: Float64Array } } } };
@@ -277,7 +289,7 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
       c.Velocity.y[e] = 0;
       c.Ballast.fore[e] = c.Ballast.aft[e] = 0.7675;
       Object.assign(w.state, { holdY: -30, mode: 'holding', fill: 0.7675 });
-      const trace: { t: number; y: number; order: number; text: string }[] = [];
+      const trace: { t: number; y: number; order: number; text: string; ladder: number; marks: string[] }[] = [];
       (window as unknown as { subTrace: typeof trace }).subTrace = trace;
       const frame = () => {
         trace.push({
@@ -285,6 +297,8 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
           y: c.Position.y[e]!,
           order: w.state.holdY,
           text: document.querySelector('[data-hud="readout"]')?.textContent ?? '',
+          ladder: w.depthLadder().alpha,
+          marks: w.depthLadder().marks,
         });
         if (trace.length < 20_000) requestAnimationFrame(frame);
       };
@@ -310,7 +324,9 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     const t1 = await g.page.evaluate(() => (window.game as unknown as Sub).world.time);
     await g.waitFor((t) => (window.game as unknown as Sub).world.time > t + 2, t1, 60_000);
     const r = await g.page.evaluate((t1) => {
-      const trace = (window as unknown as { subTrace: { t: number; y: number; order: number; text: string }[] }).subTrace;
+      const trace = (
+        window as unknown as { subTrace: { t: number; y: number; order: number; text: string; ladder: number; marks: string[] }[] }
+      ).subTrace;
       const y0 = trace[0]!.y;
       const first = trace.find((p) => p.order < y0 - 0.1);
       const after = trace.filter((p) => p.t > t1 + 0.1);
@@ -322,6 +338,8 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
         end: after[after.length - 1]!.y - order,
         orderKept: after.every((p) => p.order === order),
         deep: y0 - order,
+        ladderDiving: trace.some((p) => p.t < t1 && p.ladder > 0.9 && p.marks.includes('30 m')),
+        ladderEnd: after[after.length - 1]!.ladder,
       };
     }, t1);
     expect(r.movedWhenOrdered).toBeLessThan(0.05);
@@ -330,6 +348,8 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     expect(r.orderKept).toBe(true);
     expect(r.past).toBeLessThan(0.2);
     expect(Math.abs(r.end)).toBeLessThan(0.2);
+    expect(r.ladderDiving).toBe(true);
+    expect(r.ladderEnd).toBeLessThan(0.1);
     // A glow: the boat put at rest and level just behind the first one of the trail not caught yet,
     // in line with it (its bow 1 m short of it, inside the 2.5 m reach), catches it. On a phone the
     // stick's drive ahead (stickOnPhone) may already have carried the hull through the first glow,
@@ -841,6 +861,51 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     const p = await at(30, 10);
     expect(p.text).toBe('target A: 30 m ahead');
     expect(p.brakeHints).toBe(3);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  }, 180_000);
+
+  it("the target's label keeps off the headlight's cone ahead of the bow", async () => {
+    // The hull parked (paused, level, at rest) 28 m short of the target and 4 m and 8 m above it,
+    // more than 10 m down, where the headlight shows (from 8 m): the label over the beacon sat in the lit cone.
+    // The cone, in the hull's frame, as boat-drawing.ts draws it: from the bow (6 m ahead of the
+    // centre) out to 26 m, spreading to 7 m either side, and its tip 2 m further.
+    const g = await h.openGame('submarine', { viewport, touch, query: { waves: 0, beacons: 1 } });
+    type P = Sub & { beaconPointer(): { label: number[]; beam: boolean } };
+    for (const above of [4, 8]) {
+      const r = await g.page.evaluate((above) => {
+        const w = window.game as unknown as P;
+        w.paused = true;
+        const c = w.world.components,
+          e = w.hull(),
+          b = w.handles().beacons;
+        c.Position.x[e] = b[0]! - 28;
+        c.Position.y[e] = b[1]! + above;
+        c.Velocity.x[e] = c.Velocity.y[e] = 0;
+        c.Angle.value[e] = 0;
+        w.state.holdY = b[1]! + above;
+        return { hx: c.Position.x[e]!, hy: c.Position.y[e]! };
+      }, above);
+      await g.frames(3);
+      const p = await g.page.evaluate(() => ({
+        ...(window.game as unknown as P).beaconPointer(),
+        cam: (window.game as unknown as P).camera(),
+      }));
+      expect(r.hy).toBeLessThan(-10);
+      const toWorld = (px: number, py: number) => [
+        p.cam.x + (px - p.cam.width / 2) / p.cam.zoom,
+        p.cam.y - (py - p.cam.height / 2) / p.cam.zoom,
+      ];
+      const [x, y, width, height] = p.label as [number, number, number, number];
+      for (let i = 0; i <= 8; i++)
+        for (let j = 0; j <= 2; j++) {
+          const [wx, wy] = toWorld(x + (width * i) / 8, y + (height * j) / 2);
+          const along = wx! - r.hx - 6,
+            across = Math.abs(wy! - r.hy);
+          const inCone = along >= 0 && (along <= 26 ? across <= 0.3 + (6.7 * along) / 26 : across <= (7 * (28.08 - along)) / 2.08);
+          expect(inCone, `${device}, ${above} m above: label point (${wx!.toFixed(1)}, ${wy!.toFixed(1)}) m in the cone`).toBe(false);
+        }
+    }
     expect(g.errors).toEqual([]);
     await g.close();
   }, 180_000);

@@ -103,11 +103,11 @@ describe('submarine mines', () => {
     expect(touchesMine(10, -20, Math.PI / 2, 10 + H + R + 0.05, -20)).toBe(false);
   });
 
-  it('par: 1.6 times the steady pilot (each leg the longer of its run at 12.5 m/s and its depth change at 4.5 m/s, plus 1.5 s), rounded up to 5 s', () => {
-    // 1.6 x the steady pilot's legs: max(|dx| / 12.5, |dy| / 4.5) + 1.5 s each.
-    expect(parTime([60, -20])).toBe(15); // 1.6 x (max(4.8, 4.44) + 1.5) = 10.1
-    expect(parTime([60, -20, 300, -80])).toBe(45); // 1.6 x (6.3 + max(19.2, 13.3) + 1.5) = 43.2
-    expect(parTime([40, -60])).toBe(25); // 1.6 x (max(3.2, 13.3) + 1.5) = 23.7
+  it('par: 1.6 times the steady pilot (each leg the longer of its run at 12 m/s and its depth change at 4.8 m/s, plus 2.5 s), rounded up to 5 s', () => {
+    // 1.6 x the steady pilot's legs: max(|dx| / 12, |dy| / 4.8) + 2.5 s each.
+    expect(parTime([60, -20])).toBe(15); // 1.6 x (max(5, 4.17) + 2.5) = 12
+    expect(parTime([60, -20, 300, -80])).toBe(50); // 1.6 x (7.5 + max(20, 12.5) + 2.5) = 48
+    expect(parTime([40, -60])).toBe(25); // 1.6 x (max(3.33, 12.5) + 2.5) = 24
     expect(parTime([])).toBe(0);
   });
 
