@@ -389,8 +389,11 @@ export function emit(
     by = P.y[bodyB]!;
     bz = P.z[bodyB]!;
   }
-  if (bodyB !== 0 && !ballB) meridianPoints(world, s, eb, bodyB);
-  if (bodyA !== 0 && !ballA && plane === 0) meridianPoints(world, s, ea, bodyA);
+  // Cylinders only (a box pair has none).
+  if (boxRow.a < 0) {
+    if (bodyB !== 0 && !ballB) meridianPoints(world, s, eb, bodyB);
+    if (bodyA !== 0 && !ballA && plane === 0) meridianPoints(world, s, ea, bodyA);
+  }
   // A box pair's reuse fields (see REUSE_SHIFT); other rows are never reused.
   if (boxRow.a >= 0) storeLocal(st, buf, i);
   else buf.local[i] = 0;
