@@ -48,6 +48,8 @@ interface Scratch {
   pz: Float64Array;
   R: Float64Array;
   speed: Float64Array;
+  /** A box collider that is no sensor: its smallest half extent, m (the manifold reuse's scale); else -1. */
+  boxHalf: Float64Array;
   order: Int32Array;
   ball: Uint8Array;
   /** Per shape slot (a ball's body slot): its collider index this pass, valid where colliderStamp holds colliderPass. */
@@ -76,6 +78,7 @@ export const scratch: Scratch = {
   pz: new Float64Array(0),
   R: new Float64Array(0),
   speed: new Float64Array(0),
+  boxHalf: new Float64Array(0),
   order: new Int32Array(0),
   ball: new Uint8Array(0),
   colliderOf: new Int32Array(0),
@@ -101,7 +104,7 @@ export function ensure(n: number): void {
   sc.body = grow(sc.body, m);
   sc.order = grow(sc.order, m);
   sc.ball = grow(sc.ball, m);
-  for (const k of ['minX', 'maxX', 'minY', 'maxY', 'minZ', 'maxZ', 'px', 'py', 'pz', 'speed'] as const) sc[k] = grow(sc[k], m);
+  for (const k of ['minX', 'maxX', 'minY', 'maxY', 'minZ', 'maxZ', 'px', 'py', 'pz', 'speed', 'boxHalf'] as const) sc[k] = grow(sc[k], m);
   sc.R = grow(sc.R, 9 * m);
 }
 

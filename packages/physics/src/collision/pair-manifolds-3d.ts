@@ -42,24 +42,14 @@ export function pair(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, i
   const ea = sc.shape[a]!,
     eb = sc.shape[b]!;
   if (filtered(s, ea, eb, sc.ball[a] === 1, sc.ball[b] === 1)) return;
-  const sa = !sc.ball[a] && s.sensor[ea] === 1,
-    sb = !sc.ball[b] && s.sensor[eb] === 1;
-  if (sa && sb) return;
-  if (!sa && !sb && !sc.ball[a] && !sc.ball[b] && s.kind[ea] === Shape3DKind.Box && s.kind[eb] === Shape3DKind.Box) {
-    // Two boxes (the common case): straight from the scratch poses, or last step's manifold carried over.
+  const halfA = sc.boxHalf[a]!,
+    halfB = sc.boxHalf[b]!;
+  if (halfA >= 0 && halfB >= 0) {
+    // Two boxes, neither a sensor (the common case): straight from the scratch poses, or last step's
+    // manifold carried over.
     relativePose(a, b);
-    // The smaller box's smallest half extent (written out: Math.min of six arguments is not inlined).
-    let size = s.hx[ea]!,
-      h = s.hy[ea]!;
-    if (h < size) size = h;
-    h = s.hz[ea]!;
-    if (h < size) size = h;
-    h = s.hx[eb]!;
-    if (h < size) size = h;
-    h = s.hy[eb]!;
-    if (h < size) size = h;
-    h = s.hz[eb]!;
-    if (h < size) size = h;
+    // The smaller box's smallest half extent.
+    const size = halfA < halfB ? halfA : halfB;
     const prev = previousBoxRow(st, ea, eb, world.capacity);
     if (prev >= 0 && reusable(st.previous, prev, size)) {
       reuseManifold(st.previous, prev, a, b);
@@ -91,6 +81,9 @@ export function pair(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, i
     boxRow.a = -1;
     return;
   }
+  const sa = !sc.ball[a] && s.sensor[ea] === 1,
+    sb = !sc.ball[b] && s.sensor[eb] === 1;
+  if (sa && sb) return;
   collider(world, s, a, colA);
   collider(world, s, b, colB);
   if (sa || sb) {
@@ -396,8 +389,11 @@ export function emit(
     by = P.y[bodyB]!;
     bz = P.z[bodyB]!;
   }
-  if (bodyB !== 0 && !ballB) meridianPoints(world, s, eb, bodyB);
-  if (bodyA !== 0 && !ballA && plane === 0) meridianPoints(world, s, ea, bodyA);
+  // Cylinders only (a box pair has none).
+  if (boxRow.a < 0) {
+    if (bodyB !== 0 && !ballB) meridianPoints(world, s, eb, bodyB);
+    if (bodyA !== 0 && !ballA && plane === 0) meridianPoints(world, s, ea, bodyA);
+  }
   // A box pair's reuse fields (see REUSE_SHIFT); other rows are never reused.
   if (boxRow.a >= 0) storeLocal(st, buf, i);
   else buf.local[i] = 0;

@@ -346,10 +346,16 @@ function gather(world: PhysicsWorld, s: Shape3DStore): void {
     let wx = reach,
       wy = reach,
       wz = reach;
+    let boxHalf = -1;
     if (!isBall && s.kind[e] === Shape3DKind.Box) {
       const ex = s.hx[e]!,
         ey = s.hy[e]!,
         ez = s.hz[e]!;
+      // (Written out: Math.min of three arguments is a call.)
+      if (s.sensor[e] !== 1) {
+        boxHalf = ex < ey ? ex : ey;
+        if (ez < boxHalf) boxHalf = ez;
+      }
       wx = ex * Math.abs(R[o + M00]!) + ey * Math.abs(R[o + M01]!) + ez * Math.abs(R[o + M02]!);
       wy = ex * Math.abs(R[o + M10]!) + ey * Math.abs(R[o + M11]!) + ez * Math.abs(R[o + M12]!);
       wz = ex * Math.abs(R[o + M20]!) + ey * Math.abs(R[o + M21]!) + ez * Math.abs(R[o + M22]!);
@@ -358,6 +364,7 @@ function gather(world: PhysicsWorld, s: Shape3DStore): void {
     sc.body[n] = b;
     sc.ball[n] = isBall ? 1 : 0;
     sc.speed[n] = speed;
+    sc.boxHalf[n] = boxHalf;
     colliderOf[e] = n;
     colliderStamp[e] = pass;
     if (!isBall && s.sensor[e] === 1) scratch.anySensor = true;

@@ -7,7 +7,8 @@ import { planesAndMeshes } from '../planes-meshes-3d.js';
 import { BodyType } from '../state.js';
 
 /**
- * Broadphase of the 3D shape pass: a hashed uniform grid of the colliders' fattened boxes, searched by
+ * Broadphase of the 3D shape pass: a uniform grid (dense over the colliders' span, hashed when that
+ * span is sparse) of the colliders' fattened boxes, searched by
  * the moving colliders (resting ones search every few steps; pairs that touched last step are kept),
  * each overlapping pair handed to the narrowphase (collision/pair-manifolds-3d.ts).
  */
@@ -26,7 +27,7 @@ import { BodyType } from '../state.js';
  */
 const RESTING_SEARCH_PERIOD = 8;
 
-/** Broadphase scratch: a hashed uniform grid (counting sort of colliders by the cell of their box's low corner). */
+/** Broadphase scratch: a uniform grid, dense or hashed (counting sort of colliders by the cell of their box's low corner). */
 const grid = {
   start: new Int32Array(0),
   items: new Int32Array(0),
@@ -39,7 +40,22 @@ const grid = {
   firstRest: new Int32Array(0),
   /** How many of `large` are in use this step. */
   largeCount: 0,
+  /** The dense grid's first cell on each axis (cell coordinates, one below the lowest box's). */
+  ox: 0,
+  oy: 0,
+  oz: 0,
+  /** The dense grid's cells along x and y. */
+  gx: 0,
+  gy: 0,
 };
+
+/**
+ * A dense grid (every cell of the colliders' span its own bucket, no hashing) is used while it has at
+ * most DENSE_CELLS_PER_COLLIDER cells a collider (and DENSE_MIN_CELLS at least); a sparse world (bodies
+ * spread far apart) takes the hashed grid instead.
+ */
+const DENSE_CELLS_PER_COLLIDER = 8;
+const DENSE_MIN_CELLS = 4096;
 
 /** Bucket of cell (x, y, z) in a table of mask + 1 buckets (Teschner et al., "Optimized Spatial Hashing for Collision Detection of Deformable Objects", 2003). */
 function cellHash(x: number, y: number, z: number, mask: number): number {
@@ -57,16 +73,19 @@ enum PackedBox {
   MAX_Y = 3,
   MIN_Z = 4,
   MAX_Z = 5,
+  /** The collider's index if it searches this step, else Infinity: a searching collider i takes a neighbour only when KEY > i (the pair of two searching ones is taken from the lower index). */
+  KEY = 6,
   /** Numbers a box. */
-  STRIDE = 6,
+  STRIDE = 8,
 }
 
 /**
  * Broadphase: every collider's box goes into the cell of a uniform grid holding its low corner, with a
  * cell as wide as the widest ordinary box, so a box can only meet boxes whose low corner lies in its own
  * cell or one of the 26 around it; boxes more than four times the mean width ("large": a ground slab)
- * are tested against every collider instead. Each candidate pair is seen once (from its lower collider
- * index) and goes to `pair`. Then every collider against the meshes and the planes.
+ * are tested against every collider instead. The grid is dense (a bucket a cell, a box's neighbours in
+ * nine runs of consecutive cells) while the colliders' span has few enough cells (denseCells), else
+ * hashed. Each candidate pair is seen once (from its lower collider index) and goes to `pair`. Then every collider against the meshes and the planes.
  */
 export function pairs(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState): void {
   const n = scratch.n;
@@ -77,11 +96,17 @@ export function pairs(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState):
     return;
   }
   const inv = 1 / cell;
-  let size = 64;
-  while (size < 2 * n) size *= 2;
   markSearching(world, s, n);
-  fillGrid(n, inv, size);
-  searchNeighbours(world, s, st, n, inv, size - 1);
+  const cells = denseCells(n, inv);
+  if (cells > 0) {
+    fillGrid(n, inv, cells, true);
+    searchDense(world, s, st, n, inv);
+  } else {
+    let size = 64;
+    while (size < 2 * n) size *= 2;
+    fillGrid(n, inv, size, false);
+    searchNeighbours(world, s, st, n, inv, size - 1);
+  }
   restingPairs(world, s, st);
   largePairs(world, s, st, n);
   planesAndMeshes(world, s, st);
@@ -174,19 +199,69 @@ function markSearching(world: PhysicsWorld, s: Shape3DStore, n: number): void {
 }
 
 /**
- * The grid of `size` buckets (a power of two) of the ordinary colliders, by the cell (1 / inv wide) of
+ * The dense grid of the ordinary colliders (cells 1 / inv wide): its origin and x, y sizes into grid.ox,
+ * oy, oz, gx, gy, and its cell count, spanning one cell beyond the lowest and highest low corner on each
+ * axis (a search reaches one cell below a box's low corner and, no box being wider than a cell, at most
+ * one above); 0 when that is more than the dense limit (DENSE_CELLS_PER_COLLIDER) or a corner is not
+ * finite: then the hashed grid.
+ */
+function denseCells(n: number, inv: number): number {
+  const sc = scratch,
+    order = sc.order,
+    minX = sc.minX,
+    minY = sc.minY,
+    minZ = sc.minZ;
+  let x0 = Infinity,
+    x1 = -Infinity,
+    y0 = Infinity,
+    y1 = -Infinity,
+    z0 = Infinity,
+    z1 = -Infinity;
+  for (let i = 0; i < n; i++) {
+    if (order[i] === -1) continue;
+    const x = minX[i]!,
+      y = minY[i]!,
+      z = minZ[i]!;
+    // NaN fails every comparison: caught below as a non-finite span.
+    if (!(x >= -Infinity && y >= -Infinity && z >= -Infinity)) return 0;
+    if (x < x0) x0 = x;
+    if (x > x1) x1 = x;
+    if (y < y0) y0 = y;
+    if (y > y1) y1 = y;
+    if (z < z0) z0 = z;
+    if (z > z1) z1 = z;
+  }
+  if (x0 > x1) return 0;
+  const cx0 = Math.floor(x0 * inv) - 1,
+    cy0 = Math.floor(y0 * inv) - 1,
+    cz0 = Math.floor(z0 * inv) - 1;
+  const gx = Math.floor(x1 * inv) + 2 - cx0,
+    gy = Math.floor(y1 * inv) + 2 - cy0,
+    gz = Math.floor(z1 * inv) + 2 - cz0;
+  const cells = gx * gy * gz;
+  if (!(cells <= Math.max(DENSE_MIN_CELLS, DENSE_CELLS_PER_COLLIDER * n))) return 0;
+  grid.ox = cx0;
+  grid.oy = cy0;
+  grid.oz = cz0;
+  grid.gx = gx;
+  grid.gy = gy;
+  return cells;
+}
+
+/**
+ * The grid of `size` buckets (dense: one a cell of denseCells' grid; else hashed, a power of two) of the ordinary colliders, by the cell (1 / inv wide) of
  * their box's low corner: grid.items in bucket order from grid.start[b], the searching colliders of a
  * bucket first, then the others from grid.firstRest[b], each part in ascending collider index; and their
  * boxes packed in that order (grid.packed, PackedBox).
  */
-function fillGrid(n: number, inv: number, size: number): void {
+function fillGrid(n: number, inv: number, size: number, dense: boolean): void {
   const sc = scratch,
     mask = size - 1;
   if (grid.start.length < size + 1) {
     grid.start = new Int32Array(2 * size + 1);
     grid.seen = new Int32Array(2 * size + 1);
   }
-  grid.seen.fill(0, 0, size);
+  if (!dense) grid.seen.fill(0, 0, size);
   if (grid.items.length < n) {
     grid.items = new Int32Array(Math.max(64, 2 * n));
     grid.bucket = new Int32Array(Math.max(64, 2 * n));
@@ -201,6 +276,11 @@ function fillGrid(n: number, inv: number, size: number): void {
   const minX = sc.minX,
     minY = sc.minY,
     minZ = sc.minZ;
+  const ox = grid.ox,
+    oy = grid.oy,
+    oz = grid.oz,
+    gx = grid.gx,
+    gy = grid.gy;
   // Counting sort by bucket; within a bucket the searching colliders first, then the others (from
   // firstRest[b]), each part in ascending collider index, so a collider meets the searching ones above
   // its own index without testing those below (their own search finds the pair).
@@ -208,7 +288,10 @@ function fillGrid(n: number, inv: number, size: number): void {
   firstRest.fill(0, 0, size);
   for (let i = 0; i < n; i++) {
     if (order[i] === -1) continue;
-    const b = cellHash(Math.floor(minX[i]! * inv), Math.floor(minY[i]! * inv), Math.floor(minZ[i]! * inv), mask);
+    const x = Math.floor(minX[i]! * inv),
+      y = Math.floor(minY[i]! * inv),
+      z = Math.floor(minZ[i]! * inv);
+    const b = dense ? x - ox + gx * (y - oy + gy * (z - oz)) : cellHash(x, y, z, mask);
     bucket[i] = b;
     start[b + 1]!++;
     firstRest[b] = firstRest[b]! + searching[i]!;
@@ -244,6 +327,72 @@ function fillGrid(n: number, inv: number, size: number): void {
     pk[o + PackedBox.MAX_Y] = sc.maxY[j]!;
     pk[o + PackedBox.MIN_Z] = minZ[j]!;
     pk[o + PackedBox.MAX_Z] = sc.maxZ[j]!;
+    pk[o + PackedBox.KEY] = searching[j] === 1 ? j : Infinity;
+  }
+}
+
+/**
+ * The searching colliders against their neighbours in the dense grid (fillGrid's, denseCells' layout):
+ * as searchNeighbours, but the cells a box reaches along x are consecutive buckets, so each (y, z) row
+ * of its neighbourhood is one run of the packed boxes (a box's own row included), nine runs at most.
+ */
+function searchDense(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, n: number, inv: number): void {
+  const sc = scratch,
+    type = world.collision.bodyType;
+  const start = grid.start,
+    items = grid.items,
+    order = sc.order,
+    searching = grid.searching,
+    pk = grid.packed;
+  const minX = sc.minX,
+    maxX = sc.maxX,
+    minY = sc.minY,
+    maxY = sc.maxY,
+    minZ = sc.minZ,
+    maxZ = sc.maxZ;
+  const ox = grid.ox,
+    oy = grid.oy,
+    oz = grid.oz,
+    gx = grid.gx,
+    gy = grid.gy;
+  for (let i = 0; i < n; i++) {
+    if (order[i] === -1 || searching[i] === 0) continue;
+    const ti = type[sc.body[i]!]!;
+    const x0 = minX[i]!,
+      x1 = maxX[i]!,
+      y0 = minY[i]!,
+      y1 = maxY[i]!,
+      z0 = minZ[i]!,
+      z1 = maxZ[i]!;
+    const cx = Math.floor(x0 * inv) - ox,
+      cy = Math.floor(y0 * inv) - oy,
+      cz = Math.floor(z0 * inv) - oz;
+    // As in searchNeighbours: low corners in [min - cell, max] on each axis, cells c - 1 to the high
+    // corner's (at most c + 1; the grid spans one cell beyond every low corner).
+    // (At most c + 1 also when rounding puts a box's ends just over a cell apart.)
+    const hx = Math.min(Math.floor(x1 * inv) - ox - cx, 1),
+      hy = Math.min(Math.floor(y1 * inv) - oy - cy, 1),
+      hz = Math.min(Math.floor(z1 * inv) - oz - cz, 1);
+    for (let dz = -1; dz <= hz; dz++)
+      for (let dy = -1; dy <= hy; dy++) {
+        const row = cx + gx * (cy + dy + gy * (cz + dz));
+        for (let k = start[row - 1]!, e = start[row + hx + 1]!; k < e; k++) {
+          const o = PackedBox.STRIDE * k;
+          if (
+            !(pk[o + PackedBox.KEY]! > i) ||
+            pk[o + PackedBox.MIN_X]! > x1 ||
+            pk[o + PackedBox.MAX_X]! < x0 ||
+            pk[o + PackedBox.MIN_Y]! > y1 ||
+            pk[o + PackedBox.MAX_Y]! < y0 ||
+            pk[o + PackedBox.MIN_Z]! > z1 ||
+            pk[o + PackedBox.MAX_Z]! < z0
+          )
+            continue;
+          const j = items[k]!;
+          if (!meets(ti, type[sc.body[j]!]!)) continue;
+          pair(world, s, st, i, j);
+        }
+      }
   }
 }
 
