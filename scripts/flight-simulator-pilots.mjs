@@ -59,7 +59,7 @@ const pilots = {
     // Climbs or dives towards it while it is over 1.5 degrees off the path, no steeper than 10 degrees.
     const up = ready && Math.abs(seen.elevation) > 1.5 * DEG ? Math.sign(seen.elevation) : 0;
     const pitch = up !== 0 && up * s.path < 10 * DEG ? up : 0;
-    keys.roll = fs.rampKey(keys.roll, roll, dt);
+    keys.roll = fs.rampKey(keys.roll, roll, dt, fs.BANK_KEY_RAMP);
     keys.pitch = fs.rampKey(keys.pitch, pitch, dt);
     return { roll: keys.roll, pitch: keys.pitch, throttle: start };
   },
@@ -73,7 +73,7 @@ const pilots = {
     const pitch = ready && Math.abs(seen.elevation) > dead ? Math.sign(seen.elevation) : 0;
     if (roll !== 0 && roll !== keys.lastRoll) keys.reversals = (keys.reversals ?? 0) + 1;
     if (roll !== 0) keys.lastRoll = roll;
-    keys.roll = fs.rampKey(keys.roll, roll, dt);
+    keys.roll = fs.rampKey(keys.roll, roll, dt, fs.BANK_KEY_RAMP);
     keys.pitch = fs.rampKey(keys.pitch, pitch, dt);
     return { roll: keys.roll, pitch: keys.pitch, throttle: start };
   },
@@ -86,7 +86,7 @@ const pilots = {
     const dead = fs.RING_RADIUS / 3;
     const roll = ready && Math.abs(seenMarker.side) > dead ? Math.sign(seenMarker.side) : 0;
     const pitch = ready && Math.abs(seenMarker.up) > dead ? Math.sign(seenMarker.up) : 0;
-    keys.roll = fs.rampKey(keys.roll, roll, dt);
+    keys.roll = fs.rampKey(keys.roll, roll, dt, fs.BANK_KEY_RAMP);
     keys.pitch = fs.rampKey(keys.pitch, pitch, dt);
     return { roll: keys.roll, pitch: keys.pitch, throttle: start };
   },
@@ -134,6 +134,7 @@ const fly = (seed, pilot) => {
         bank: s.bank,
         rollRate: s.rollRate,
         pathRate: (s.path - lastPath) / world.dt,
+        held: fs.heldBank(state),
       },
       true,
     );
@@ -152,8 +153,8 @@ const fly = (seed, pilot) => {
     const c = fs.assist(s, { roll: c0.roll, pitch: c0.pitch, yaw: 0 }, state, world.dt);
     for (const k of ['aileron', 'elevator', 'rudder']) surface[k] += Math.max(-rate, Math.min(rate, c[k] - surface[k]));
     fs.setControlDeflection(world, h.surfaces.tail, -surface.elevator * full);
-    fs.setControlDeflection(world, h.surfaces.leftWing, surface.aileron * full);
-    fs.setControlDeflection(world, h.surfaces.rightWing, -surface.aileron * full);
+    fs.setControlDeflection(world, h.surfaces.leftWing, surface.aileron * full * fs.AILERON_SCALE);
+    fs.setControlDeflection(world, h.surfaces.rightWing, -surface.aileron * full * fs.AILERON_SCALE);
     fs.setControlDeflection(world, h.surfaces.fin, -surface.rudder * full);
     fs.setBodyThrust(world, e, [c0.throttle * fs.AIRCRAFT.maxThrust, 0, 0]);
     const a = [P.x[e], P.y[e], P.z[e]];
