@@ -1039,9 +1039,12 @@ function lessonTip(): string {
     tipRing = i;
     tipWay = ringWay(ringBearing(rings[i]!, now, [V.x[e]!, V.y[e]!, V.z[e]!]));
   }
+  // Once the turn-back cue shows, the ways the tip named are stale (a tip said "far to the right"
+  // 14 km from its ring): the tip goes for this ring and the cue says the way.
+  if (turnBackText) tipGoneAt = Math.min(tipGoneAt, shell.world.time);
   // Ring 1's tip is the start's, up while the flight waits; on a phone each tip goes a little after
   // the pilot has acted on it (TIP_LINGER), so it does not cover the sky all the way to its ring.
-  if ((i === 0 && !holding) || shell.world.time > tipGoneAt) return '';
+  if ((i === 0 && !holding) || shell.world.time >= tipGoneAt) return '';
   return lessonTipText(i, tipWay, { touch: touchFirst, compact, pilotPitch: params.pilotPitch });
 }
 
