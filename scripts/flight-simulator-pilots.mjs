@@ -1,14 +1,15 @@
 // `node scripts/flight-simulator-pilots.mjs [seed ...]`: how many of the first 10 rings of the flight
 // simulator's course (games/flight-simulator/course.ts, laid as the game lays it: seed + 7, from
 // 900 m) two headless pilots pass, flown as the game steps the aircraft (the assist on, the surfaces
-// following it at 6 per second, full stick CONTROL_AUTHORITY degrees). Default seeds 1 to 8 (the
+// following it at 6 per second, full stick CONTROL_AUTHORITY degrees, the ailerons AILERON_SCALE times
+// that; the marker follows the bank a short touch holds, assist.ts heldBank). Default seeds 1 to 8 (the
 // game's default seed is 1).
 // - `scripted`: the pilot of test/games/flight-simulator-course.test.ts (wings level in the last
 //   250 m, else the bank of the arc to the ring's centre; the path aimed at the ring's height; the
 //   throttle held near 125 m/s).
 // - `naive`: a newcomer. Sees only the next ring (the game's marker), reacts REACTION s after it
 //   becomes the next one and then steers on what it saw LAG s before, with the keys (ramped as the
-//   game ramps them, `rampKey`): banks towards the ring (three times its bearing, at most 35 degrees),
+//   game ramps them, `rampKey`, the bank keys on BANK_KEY_RAMP): banks towards the ring (three times its bearing, at most 35 degrees),
 //   climbs or dives while it is over 1.5 degrees off the flight path (no steeper than 10 degrees),
 //   else hands off (wings level); never touches the throttle.
 // - `keys`: a stranger on the keys. Holds ← / → and ↑ / ↓ (ramped) towards the next ring while it
