@@ -1,14 +1,15 @@
 // `node scripts/flight-simulator-pilots.mjs [seed ...]`: how many of the first 10 rings of the flight
 // simulator's course (games/flight-simulator/course.ts, laid as the game lays it: seed + 7, from
 // 900 m) two headless pilots pass, flown as the game steps the aircraft (the assist on, the surfaces
-// following it at 6 per second, full stick CONTROL_AUTHORITY degrees). Default seeds 1 to 8 (the
+// following it at 6 per second, full stick CONTROL_AUTHORITY degrees, the ailerons AILERON_SCALE times
+// that; the marker follows the bank a short touch holds, assist.ts heldBank). Default seeds 1 to 8 (the
 // game's default seed is 1).
 // - `scripted`: the pilot of test/games/flight-simulator-course.test.ts (wings level in the last
 //   250 m, else the bank of the arc to the ring's centre; the path aimed at the ring's height; the
 //   throttle held near 125 m/s).
 // - `naive`: a newcomer. Sees only the next ring (the game's marker), reacts REACTION s after it
 //   becomes the next one and then steers on what it saw LAG s before, with the keys (ramped as the
-//   game ramps them, `rampKey`): banks towards the ring (three times its bearing, at most 35 degrees),
+//   game ramps them, `rampKey`, the bank keys on BANK_KEY_RAMP): banks towards the ring (three times its bearing, at most 35 degrees),
 //   climbs or dives while it is over 1.5 degrees off the flight path (no steeper than 10 degrees),
 //   else hands off (wings level); never touches the throttle.
 // - `keys`: a stranger on the keys. Holds ← / → and ↑ / ↓ (ramped) towards the next ring while it
@@ -59,7 +60,7 @@ const pilots = {
     // Climbs or dives towards it while it is over 1.5 degrees off the path, no steeper than 10 degrees.
     const up = ready && Math.abs(seen.elevation) > 1.5 * DEG ? Math.sign(seen.elevation) : 0;
     const pitch = up !== 0 && up * s.path < 10 * DEG ? up : 0;
-    keys.roll = fs.rampKey(keys.roll, roll, dt);
+    keys.roll = fs.rampKey(keys.roll, roll, dt, fs.BANK_KEY_RAMP);
     keys.pitch = fs.rampKey(keys.pitch, pitch, dt);
     return { roll: keys.roll, pitch: keys.pitch, throttle: start };
   },
@@ -73,7 +74,7 @@ const pilots = {
     const pitch = ready && Math.abs(seen.elevation) > dead ? Math.sign(seen.elevation) : 0;
     if (roll !== 0 && roll !== keys.lastRoll) keys.reversals = (keys.reversals ?? 0) + 1;
     if (roll !== 0) keys.lastRoll = roll;
-    keys.roll = fs.rampKey(keys.roll, roll, dt);
+    keys.roll = fs.rampKey(keys.roll, roll, dt, fs.BANK_KEY_RAMP);
     keys.pitch = fs.rampKey(keys.pitch, pitch, dt);
     return { roll: keys.roll, pitch: keys.pitch, throttle: start };
   },
@@ -86,7 +87,7 @@ const pilots = {
     const dead = fs.RING_RADIUS / 3;
     const roll = ready && Math.abs(seenMarker.side) > dead ? Math.sign(seenMarker.side) : 0;
     const pitch = ready && Math.abs(seenMarker.up) > dead ? Math.sign(seenMarker.up) : 0;
-    keys.roll = fs.rampKey(keys.roll, roll, dt);
+    keys.roll = fs.rampKey(keys.roll, roll, dt, fs.BANK_KEY_RAMP);
     keys.pitch = fs.rampKey(keys.pitch, pitch, dt);
     return { roll: keys.roll, pitch: keys.pitch, throttle: start };
   },
@@ -134,6 +135,7 @@ const fly = (seed, pilot) => {
         bank: s.bank,
         rollRate: s.rollRate,
         pathRate: (s.path - lastPath) / world.dt,
+        held: fs.heldBank(state),
       },
       true,
     );
@@ -152,8 +154,8 @@ const fly = (seed, pilot) => {
     const c = fs.assist(s, { roll: c0.roll, pitch: c0.pitch, yaw: 0 }, state, world.dt);
     for (const k of ['aileron', 'elevator', 'rudder']) surface[k] += Math.max(-rate, Math.min(rate, c[k] - surface[k]));
     fs.setControlDeflection(world, h.surfaces.tail, -surface.elevator * full);
-    fs.setControlDeflection(world, h.surfaces.leftWing, surface.aileron * full);
-    fs.setControlDeflection(world, h.surfaces.rightWing, -surface.aileron * full);
+    fs.setControlDeflection(world, h.surfaces.leftWing, surface.aileron * full * fs.AILERON_SCALE);
+    fs.setControlDeflection(world, h.surfaces.rightWing, -surface.aileron * full * fs.AILERON_SCALE);
     fs.setControlDeflection(world, h.surfaces.fin, -surface.rudder * full);
     fs.setBodyThrust(world, e, [c0.throttle * fs.AIRCRAFT.maxThrust, 0, 0]);
     const a = [P.x[e], P.y[e], P.z[e]];

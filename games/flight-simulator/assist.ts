@@ -5,7 +5,8 @@
  * decides where the control surfaces point.
  *
  * - Stick sideways: a bank angle, up to `ASSIST.maxBank` at full stick (the ailerons roll the
- *   aircraft there and hold it); let go, the wings roll level.
+ *   aircraft there and hold it); let go, the wings roll level. A touch shorter than
+ *   `ASSIST.tapTime` holds its bank until then, so a tap turns the aircraft a few degrees.
  * - Stick forward and back: the stick moves the elevator itself in proportion to its deflection, so
  *   a held climb or dive gets the full response it has without the assist, up to a path of
  *   `ASSIST.maxPath` (45 degrees: no loop, no vertical dive); the rest of the elevator is a path
@@ -75,16 +76,22 @@ export interface FlightState {
  */
 export const CONTROL_AUTHORITY = 25;
 
+/**
+ * Full deflection of the ailerons as a multiple of the control authority (30 degrees at the default
+ * 25): they roll the aircraft at about 1 rad/s, so a 70 degree bank rolls level in about a second
+ * and the turn runs on only a few degrees past the release.
+ */
+export const AILERON_SCALE = 1.2;
+
 /** The assist's settings. */
 export const ASSIST = Object.freeze({
   /**
-   * Bank at full sideways stick, rad (45 degrees: a 1.4 g level turn, 4.3 degrees/s at 130 m/s; the
-   * course is laid for 40 degrees, see ./course.ts DESIGN_BANK). With 70 (12 degrees/s) a key held
-   * until the ring was ahead left the aircraft in a steep bank still turning, so it swung past: a
-   * pilot holding the key towards the ring while it is off the path, half a second late, passed 21
-   * of 80 rings; with 45, 76 (scripts/flight-simulator-pilots.mjs, the keys pilot).
+   * Bank at full sideways stick, rad (70 degrees: a 2.9 g level turn, about 14 degrees/s of heading
+   * at 110 m/s, so a held key turns half round in about 13 s; the wing stays under `alphaLimit`
+   * down to about 95 m/s). With 45 a half turn took 38 s and the turning circle (2 km) was wider
+   * than the rings are apart: strangers found it too slow to steer.
    */
-  maxBank: 45 * DEG,
+  maxBank: 70 * DEG,
   /** Flight-path angle the path hold asks for at full stick forward or back, rad (its share fades as the stick's grows). */
   maxClimb: 20 * DEG,
   /**
@@ -122,6 +129,12 @@ export const ASSIST = Object.freeze({
   sideslipGain: 3,
   /** Fastest change of the bank asked for, rad/s (a full stick's bank is reached smoothly). */
   bankRate: 120 * DEG,
+  /**
+   * How long a touch of the stick sideways holds its bank at least, s: a stick let go sooner keeps
+   * the largest bank it asked for until then, so a tap of a bank key (or a short touch of the phone's
+   * stick) rolls the aircraft far enough, for long enough, to turn it a few degrees.
+   */
+  tapTime: 0.9,
 });
 
 /** What the assist keeps between steps: the integral of the flight-path error and the bank asked for. */
@@ -130,11 +143,24 @@ export interface AssistState {
   integral: number;
   /** Bank asked for now, rad (moves towards the stick's at `ASSIST.bankRate`). */
   bankTarget: number;
+  /** How long the stick has been off centre sideways, s (0 while it is centred). */
+  rollHeld: number;
+  /** The largest sideways stick of this touch while it is younger than `ASSIST.tapTime`, signed, in [-1, 1]. */
+  rollPeak: number;
+}
+
+/**
+ * The bank a stick let go now would still hold, and for how long: the largest bank of a touch of
+ * the stick younger than `ASSIST.tapTime` (rad, + right; 0 when none) and the time left, s.
+ */
+export function heldBank(state: AssistState): { bank: number; time: number } {
+  if (state.rollPeak === 0 || state.rollHeld >= ASSIST.tapTime) return { bank: 0, time: 0 };
+  return { bank: ASSIST.maxBank * state.rollPeak, time: ASSIST.tapTime - state.rollHeld };
 }
 
 /** A new assist state: no integral, wings level asked for. */
 export function createAssistState(): AssistState {
-  return { integral: 0, bankTarget: 0 };
+  return { integral: 0, bankTarget: 0, rollHeld: 0, rollPeak: 0 };
 }
 
 const clamp = (v: number, lo: number, hi: number): number => (v < lo ? lo : v > hi ? hi : v);
@@ -188,7 +214,21 @@ export function flightState(world: PhysicsWorld, body: number): FlightState {
 export function assist(s: FlightState, input: PilotInput, state: AssistState, dt: number): ControlCommand {
   const A = ASSIST;
   // Bank: towards the stick's bank at a limited rate, the ailerons on the error and the roll rate.
-  const wanted = A.maxBank * clamp(input.roll, -1, 1);
+  // A touch of the stick holds the largest bank it asked for until it is `tapTime` old (a tap turns).
+  let roll = clamp(input.roll, -1, 1);
+  const reversed = state.rollPeak !== 0 && Math.sign(roll) === -Math.sign(state.rollPeak);
+  if (roll !== 0 && (state.rollHeld === 0 || reversed)) {
+    state.rollHeld = 0;
+    state.rollPeak = 0;
+  }
+  if (roll !== 0 || state.rollPeak !== 0) {
+    state.rollHeld += dt;
+    if (state.rollHeld > A.tapTime) state.rollPeak = 0;
+    else if (Math.abs(roll) >= Math.abs(state.rollPeak)) state.rollPeak = roll;
+    else roll = state.rollPeak;
+  }
+  if (roll === 0) state.rollHeld = 0;
+  const wanted = A.maxBank * roll;
   state.bankTarget += clamp(wanted - state.bankTarget, -A.bankRate * dt, A.bankRate * dt);
   const aileron = clamp(A.bankGain * (state.bankTarget - s.bank) - A.rollDamping * s.rollRate, -1, 1);
   // The stick's own share of the elevator: its deflection |pitch|, faded out over `pathFade` as the
@@ -237,7 +277,7 @@ export function approach(value: number, target: number, rate: number, dt: number
  * grows as from (e^(rise t) - 1), slowly at first and then faster, the way a keyboard-flown sim
  * moves its control surface, so a tap asks for a small correction and a held key for full stick.
  */
-export const KEY_RAMP = Object.freeze({
+export const KEY_RAMP: KeyRamp = Object.freeze({
   /**
    * Growth rate of a held key's input, 1/s: with `from` 0.25 it is full after ln 5 / 4 = 0.40 s of
    * holding (as the straight ramp was, so a held key banks as briskly), 0.12 after a 0.1 s tap and
@@ -249,32 +289,51 @@ export const KEY_RAMP = Object.freeze({
   from: 0.25,
   /** Rate a released key's input returns to 0, and a reversed one crosses 0, 1/s: neutral in 0.25 s. */
   fall: 4,
+  /** Input a press starts at, fraction of full stick. */
+  start: 0,
 });
 
+/** A key ramp (`rampKey`): growth rate `rise` 1/s from `from`, release rate `fall` 1/s, a press starting at `start` in [0, 1). */
+export interface KeyRamp {
+  readonly rise: number;
+  readonly from: number;
+  readonly fall: number;
+  readonly start: number;
+}
+
 /**
- * One step of a keyboard axis: `value` (the input now, in [-1, 1]) moved over `dt` s (>= 0)
- * towards `direction` (-1, 0 or 1: the key held, or none): back towards 0 at `KEY_RAMP.fall` per
- * second (released, or held the other way while still on the first side), else on towards the key
- * held, its size growing as |v| + from = (|v0| + from) e^(rise dt) (exact for any dt).
+ * How the bank keys move their input (`rampKey`): a press asks at once for `start` (0.3 of full
+ * stick, a bank of 21 degrees, which the assist holds for `ASSIST.tapTime`, so a 150 ms tap turns
+ * the aircraft about 2.4 degrees), full stick after ln(1.25 / 0.55) / 1.5 = 0.55 s held; released,
+ * neutral in 0.25 s.
+ */
+export const BANK_KEY_RAMP: KeyRamp = Object.freeze({ rise: 1.5, from: 0.25, fall: 4, start: 0.3 });
+
+/**
+ * One step of a keyboard axis on `ramp` (default KEY_RAMP; the bank keys use BANK_KEY_RAMP):
+ * `value` (the input now, in [-1, 1]) moved over `dt` s (>= 0) towards `direction` (-1, 0 or 1:
+ * the key held, or none): back towards 0 at `ramp.fall` per second (released, or held the other way
+ * while still on the first side), else on towards the key held, from at least `ramp.start`, its
+ * size growing as |v| + from = (max(|v0|, start) + from) e^(rise dt) (exact for any dt).
  * A key is not a stick: it is all or nothing, so a tap ramped this way asks for a small correction
- * (a 0.1 s tap: 0.12 of full stick) and only a key held 0.4 s asks for the full climb or bank.
+ * (KEY_RAMP: a 0.1 s tap is 0.12 of full stick) and only a key held 0.4 s asks for the full climb.
  * @returns the new input, in [-1, 1].
  * @throws RangeError on a value outside [-1, 1], a direction not in {-1, 0, 1} or a negative dt.
  */
-export function rampKey(value: number, direction: number, dt: number): number {
+export function rampKey(value: number, direction: number, dt: number, ramp: KeyRamp = KEY_RAMP): number {
   if (!(value >= -1 && value <= 1)) throw new RangeError(`rampKey: value must be in [-1, 1], got ${value}`);
   if (direction !== -1 && direction !== 0 && direction !== 1)
     throw new RangeError(`rampKey: direction must be -1, 0 or 1, got ${direction}`);
   if (!(dt >= 0)) throw new RangeError(`rampKey: dt must be >= 0 s, got ${dt}`);
   // Back towards 0 first when released or reversed; then on towards the key held.
   if (value !== 0 && Math.sign(value) !== direction) {
-    const back = Math.max(0, Math.abs(value) - KEY_RAMP.fall * dt);
+    const back = Math.max(0, Math.abs(value) - ramp.fall * dt);
     if (back > 0 || direction === 0) return Math.sign(value) * back;
     // Crossed 0 within the step: the rest of the step ramps the other way.
-    dt -= Math.abs(value) / KEY_RAMP.fall;
+    dt -= Math.abs(value) / ramp.fall;
     value = 0;
   }
   if (direction === 0) return value;
-  const size = (Math.abs(value) + KEY_RAMP.from) * Math.exp(KEY_RAMP.rise * dt) - KEY_RAMP.from;
+  const size = (Math.max(Math.abs(value), ramp.start) + ramp.from) * Math.exp(ramp.rise * dt) - ramp.from;
   return direction * Math.min(1, size);
 }

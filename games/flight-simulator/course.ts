@@ -9,6 +9,7 @@
 
 import { Rng } from '@bitphysics/physics';
 import { terrainHeight } from '@bitphysics/projects';
+import { ASSIST } from './assist';
 
 /**
  * Radius of a ring, m, to the middle of its tube: the aircraft passes when its centre crosses inside
@@ -467,7 +468,7 @@ export function pathThroughRing(
  * inputs fall back and the surfaces follow), then each returns to level, as fast as at `rollRate`
  * (rad/s) and `pathRate` (rad/s), within `bankTime` and `pathTime` (s, time constants) near level.
  */
-export const LET_GO = Object.freeze({ delay: 0.15, bankTime: 0.3, rollRate: 0.8, pathTime: 0.65, pathRate: 0.25 });
+export const LET_GO = Object.freeze({ delay: 0.15, bankTime: 0.3, heldTime: 0.37, rollRate: 0.7, pathTime: 0.65, pathRate: 0.25 });
 
 /** The aircraft's motion now for `predictThroughRing`. */
 export interface Motion {
@@ -481,6 +482,11 @@ export interface Motion {
   rollRate: number;
   /** Rate of the flight-path angle, rad/s. */
   pathRate: number;
+  /**
+   * The bank the assist still holds after a short touch of the stick (./assist.ts heldBank): rad,
+   * + right, for `time` s from now (none when absent or 0).
+   */
+  held?: { bank: number; time: number };
 }
 
 /** Largest bank the prediction turns with, rad (a steeper bank's tangent runs away). */
@@ -506,6 +512,7 @@ export function predictThroughRing(
   opts: { dt?: number; horizon?: number } = {},
 ): { time: number; offset: number; point: [number, number, number] } {
   const { position, velocity, bank, rollRate, pathRate } = motion;
+  const held = motion.held && motion.held.time > 0 && Number.isFinite(motion.held.bank) ? motion.held : null;
   for (const [name, v] of [
     ['position', position],
     ['velocity', velocity],
@@ -525,6 +532,8 @@ export function predictThroughRing(
     b = bank,
     path = Math.asin(Math.max(-1, Math.min(1, velocity[1]! / speed))),
     heading = Math.atan2(velocity[2]!, velocity[0]!);
+  let target = held ? held.bank : 0,
+    holding = held !== null;
   const gapOf = (px: number, py: number, pz: number) => (ring.x - px) * ring.nx + (ring.y - py) * ring.ny + (ring.z - pz) * ring.nz;
   let gap = gapOf(x, y, z);
   if (!(gap > 0)) return none;
@@ -533,7 +542,15 @@ export function predictThroughRing(
     v - Math.max(-fastest * dt, Math.min(fastest * dt, v * (1 - Math.exp(-dt / time))));
   for (let t = 0; t < horizon; t += dt) {
     if (letGo) {
-      if (t < LET_GO.delay) {
+      if (holding && !(t < held!.time || (Math.abs(target) > Math.abs(b) && Math.sign(target) === Math.sign(b)))) holding = false;
+      if (holding) {
+        // A touch's bank held (./assist.ts heldBank), then unwound at ASSIST.bankRate: the bank rolls
+        // towards it at the roll rate it has (at least LET_GO.rollRate) while it is short of it.
+        const fastest = Math.max(Math.abs(rollRate), LET_GO.rollRate) * dt;
+        b += Math.max(-fastest, Math.min(fastest, (target - b) * (1 - Math.exp(-dt / LET_GO.heldTime))));
+        path = settle(path, LET_GO.pathTime, LET_GO.pathRate);
+        if (t >= held!.time) target -= Math.sign(target) * Math.min(Math.abs(target), ASSIST.bankRate * dt);
+      } else if (t < LET_GO.delay) {
         b += rollRate * dt;
         path += pathRate * dt;
       } else {

@@ -19,7 +19,8 @@
  * altimeter, heading, vertical speed, throttle) with the attitude indicator in its middle. The chase
  * camera sits close behind and widens its view with speed, so the speed shows.
  * Keys: arrows or W/S/A/D: climb / dive and bank (with "pilot's pitch" in the panel, down pulls up),
- * ramped (./assist.ts rampKey: a tap is a small correction, slowly at first, full stick after 0.4 s held);
+ * ramped (./assist.ts rampKey: a tap is a small correction; climb and dive grow slowly at first to full
+ * stick after 0.4 s held, the bank keys start at 0.3 of full stick (BANK_KEY_RAMP) and are full after 0.55 s);
  * Q / E: rudder; X / Z (or Shift, + / -): faster / slower (the throttle: the only input that moves it;
  * no Ctrl, which with W closes the browser's tab);
  * C: camera (chase / cockpit); P pause, N step, R reset.
@@ -59,7 +60,19 @@ import {
   Vector3,
 } from 'three';
 import { aircraftGeometry } from './aircraft-model';
-import { approach, assist, CONTROL_AUTHORITY, createAssistState, type FlightState, flightState, rampKey, SURFACE_RATE } from './assist';
+import {
+  AILERON_SCALE,
+  approach,
+  assist,
+  BANK_KEY_RAMP,
+  CONTROL_AUTHORITY,
+  createAssistState,
+  type FlightState,
+  flightState,
+  heldBank,
+  rampKey,
+  SURFACE_RATE,
+} from './assist';
 import { createAttitudeIndicator } from './attitude-indicator';
 import { createCockpit } from './cockpit';
 import {
@@ -232,7 +245,7 @@ function rampKeys(dt: number): void {
     right = held.has('arrowright') || held.has('d') ? 1 : 0,
     left = held.has('arrowleft') || held.has('a') ? 1 : 0;
   keyInput.pitch = rampKey(keyInput.pitch, up - down, dt);
-  keyInput.roll = rampKey(keyInput.roll, right - left, dt);
+  keyInput.roll = rampKey(keyInput.roll, right - left, dt, BANK_KEY_RAMP);
 }
 
 /** The pilot's inputs now, keys (ramped) and stick added: roll + right, pitch + nose up, yaw + nose right. */
@@ -289,8 +302,8 @@ function stepWorld(world: PhysicsWorld): void {
   // Nose up: the elevator's trailing edge up, less tail lift.
   setControlDeflection(world, surfaces.tail, -state.elevator * full);
   // Roll right: the left aileron down (more lift), the right one up.
-  setControlDeflection(world, surfaces.leftWing, state.aileron * full);
-  setControlDeflection(world, surfaces.rightWing, -state.aileron * full);
+  setControlDeflection(world, surfaces.leftWing, state.aileron * full * AILERON_SCALE);
+  setControlDeflection(world, surfaces.rightWing, -state.aileron * full * AILERON_SCALE);
   // Right rudder: the fin's force to the left at the tail swings the nose right.
   setControlDeflection(world, surfaces.fin, -state.rudder * full);
   setBodyThrust(world, e, [state.throttle * AIRCRAFT.maxThrust, 0, 0]);
@@ -1026,9 +1039,12 @@ function lessonTip(): string {
     tipRing = i;
     tipWay = ringWay(ringBearing(rings[i]!, now, [V.x[e]!, V.y[e]!, V.z[e]!]));
   }
+  // Once the turn-back cue shows, the ways the tip named are stale (a tip said "far to the right"
+  // 14 km from its ring): the tip goes for this ring and the cue says the way.
+  if (turnBackText) tipGoneAt = Math.min(tipGoneAt, shell.world.time);
   // Ring 1's tip is the start's, up while the flight waits; on a phone each tip goes a little after
   // the pilot has acted on it (TIP_LINGER), so it does not cover the sky all the way to its ring.
-  if ((i === 0 && !holding) || shell.world.time > tipGoneAt) return '';
+  if ((i === 0 && !holding) || shell.world.time >= tipGoneAt) return '';
   return lessonTipText(i, tipWay, { touch: touchFirst, compact, pilotPitch: params.pilotPitch });
 }
 
@@ -1108,7 +1124,11 @@ function markPath(): void {
     V = world.components.Velocity;
   const through =
     i >= 0 && state.phase === 'flying'
-      ? predictThroughRing(rings[i]!, { position: now, velocity: [V.x[e]!, V.y[e]!, V.z[e]!], ...motion }, params.assist)
+      ? predictThroughRing(
+          rings[i]!,
+          { position: now, velocity: [V.x[e]!, V.y[e]!, V.z[e]!], ...motion, held: heldBank(assistState) },
+          params.assist,
+        )
       : null;
   pathAim.visible = !!through && Number.isFinite(through.offset);
   marker.style.display = pathAim.visible ? 'block' : 'none';

@@ -910,7 +910,7 @@ describe('projects', () => {
     await g.close();
   });
 
-  it('flight-simulator: far from the next ring a cue says to turn back, with the side to turn to; near it again the cue goes', async () => {
+  it('flight-simulator: far from the next ring a cue says to turn back, with the side to turn to; near it again the cue goes; a lesson tip goes when the cue shows', async () => {
     const g = await h.openGame('flight-simulator', { query: { rings: 3 } });
     type Flight = Game & {
       aircraftBody(): number;
@@ -943,6 +943,31 @@ describe('projects', () => {
     });
     await g.waitFor(() => (window.game as unknown as Flight).turnBack().text === '', null);
     expect(await g.page.locator('[data-hud="turn-back"]').isVisible()).toBe(false);
+    // Through ring 1's centre: ring 2, a lesson ring, is next and its tip shows; far from ring 2 the
+    // turn-back cue shows and the tip (whose ways were worked out before) goes.
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as Flight;
+      const r = w.rings()[0]!,
+        c = w.world.components,
+        e = w.aircraftBody();
+      c.Position.x[e] = r.x - 3;
+      c.Position.y[e] = r.y;
+      c.Position.z[e] = r.z;
+    });
+    const lesson = await g.waitFor(() => (window.game as unknown as Flight & { tip(): string }).tip() || null, null);
+    expect(lesson).toMatch(/Ring 2/);
+    await g.page.keyboard.press('x'); // the flight waits while the tip is read
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as Flight;
+      const r = w.rings()[1]!,
+        c = w.world.components,
+        e = w.aircraftBody();
+      c.Position.x[e] = r.x + 4000;
+      c.Position.y[e] = r.y + 300;
+      c.Position.z[e] = r.z + 300;
+    });
+    await g.waitFor(() => ((window.game as unknown as Flight).turnBack().text.includes('ring 2') ? true : null), null);
+    expect(await g.page.evaluate(() => (window.game as unknown as Flight & { tip(): string }).tip())).toBe('');
     expect(g.errors).toEqual([]);
     await g.close();
   });

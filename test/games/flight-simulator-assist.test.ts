@@ -1,8 +1,8 @@
 /**
  * The flight simulator's flight assist (games/flight-simulator/assist.ts), headless: the aircraft
  * scene flown by the assist's control law as the game flies it (CONTROL_AUTHORITY, 25 degrees of
- * control authority, the control surfaces set every 1/60 s step). A bank left alone rolls level, a
- * held key banks and turns briskly, full stick holds a 45 degree bank in a level turn at the rate a
+ * control authority, the ailerons AILERON_SCALE times that, the control surfaces set every 1/60 s step). A bank left alone rolls level, a
+ * held key banks and turns briskly, full stick holds a 70 degree bank in a level turn at the rate a
  * coordinated turn has, full stick back climbs steeply without a stall or a loop, and a held climb or
  * dive changes height as fast as without the assist.
  */
@@ -11,13 +11,16 @@ import { createPhysicsWorld, type PhysicsWorld, setBodyThrust, setControlDeflect
 import { AIRCRAFT, AIRCRAFT_TRIM_SPEED, type AircraftHandles, aircraft, aircraftLevelDrag } from '@bitphysics/projects';
 import { describe, expect, it } from 'vitest';
 import {
+  AILERON_SCALE,
   ASSIST,
   approach,
   assist,
+  BANK_KEY_RAMP,
   CONTROL_AUTHORITY,
   createAssistState,
   type FlightState,
   flightState,
+  heldBank,
   KEY_RAMP,
   type PilotInput,
   rampKey,
@@ -60,8 +63,8 @@ function fly(
     const s = flightState(f.world, f.h.body);
     const c = assist(s, pilot, f.state, f.world.dt);
     setControlDeflection(f.world, f.h.surfaces.tail, -c.elevator * FULL);
-    setControlDeflection(f.world, f.h.surfaces.leftWing, c.aileron * FULL);
-    setControlDeflection(f.world, f.h.surfaces.rightWing, -c.aileron * FULL);
+    setControlDeflection(f.world, f.h.surfaces.leftWing, c.aileron * FULL * AILERON_SCALE);
+    setControlDeflection(f.world, f.h.surfaces.rightWing, -c.aileron * FULL * AILERON_SCALE);
     setControlDeflection(f.world, f.h.surfaces.fin, -c.rudder * FULL);
     const throttle = opts.throttle ?? aircraftLevelDrag(AIRCRAFT_TRIM_SPEED) / AIRCRAFT.maxThrust;
     setBodyThrust(f.world, f.h.body, [throttle * AIRCRAFT.maxThrust, 0, 0]);
@@ -93,7 +96,7 @@ describe('flight assist', () => {
     expect(Math.abs(height(f) - 900)).toBeLessThan(5);
   });
 
-  it('a held key banks briskly to the full 45 degrees: 30 within 1 s, 40 within 2 s, the heading 9 degrees round within 3 s', () => {
+  it('a held key banks briskly: 30 degrees within 1 s, 40 within 2 s, the heading 9 degrees round within 3 s', () => {
     // Players found the aircraft floaty with 15 degrees of authority and the key ramped to full over
     // 1.25 s (1.4 s to 30 degrees, 10 degrees of heading in 3 s); then hard to aim with a 70 degree
     // full bank (a held key overshot every ring: scripts/flight-simulator-pilots.mjs, the keys pilot).
@@ -115,7 +118,7 @@ describe('flight assist', () => {
     expect(flightState(f.world, f.h.body).heading - h0).toBeGreaterThan(9 * DEG);
   });
 
-  it('full stick right: a 45 degree bank within 4 s and a level turn at the rate g tan(bank) / V', () => {
+  it('full stick right: the full bank (ASSIST.maxBank, 70 degrees) within 4 s and a level turn at the rate g tan(bank) / V', () => {
     const f = start();
     fly(f, { roll: 1 }, 4);
     expect(Math.abs(flightState(f.world, f.h.body).bank - ASSIST.maxBank)).toBeLessThan(3 * DEG);
@@ -135,6 +138,47 @@ describe('flight assist', () => {
     expect(turned / 6 / (rate / count)).toBeLessThan(1.1);
     // The assist pulls for the turn: at 1.4 g it loses a little height.
     expect(Math.abs(height(f) - y0)).toBeLessThan(35);
+  });
+
+  /**
+   * Flies from level at the trim speed with the game's starting throttle (130 m/s's) with the bank key (BANK_KEY_RAMP) held while
+   * `held(t, turned)` says so, for `seconds`; returns the heading turned, degrees, at each step.
+   */
+  function bankKey(held: (t: number, turned: number) => boolean, seconds: number): number[] {
+    const f = start();
+    const e = f.h.body;
+    const throttle = aircraftLevelDrag(130) / AIRCRAFT.maxThrust;
+    const h0 = flightState(f.world, e).heading;
+    let key = 0,
+      turned = 0,
+      last = h0;
+    const out: number[] = [];
+    for (let i = 0; i < Math.round(seconds * 60); i++) {
+      key = rampKey(key, held(i / 60, turned) ? 1 : 0, 1 / 60, BANK_KEY_RAMP);
+      fly(f, { roll: key }, 1 / 60, { throttle });
+      const h = flightState(f.world, e).heading;
+      turned += (((h - last + 3 * Math.PI) % (2 * Math.PI)) - Math.PI) / DEG;
+      last = h;
+      out.push(turned);
+    }
+    return out;
+  }
+
+  it('steering: a held key turns half round within 14 s; a 150 ms tap turns over a degree and a half; let go at a heading, the turn runs on under 4 degrees', () => {
+    // Strangers took 35 s for a half turn with the 45 degree full bank (measured 38 s from 130 m/s)
+    // and a tap turned 0.1 degrees (the wings levelled at once): now 13 s and 2.4 degrees.
+    const half = bankKey((_, turned) => turned < 180, 20).findIndex((x) => x >= 180);
+    expect(half).toBeGreaterThan(0);
+    expect(half / 60).toBeLessThan(14);
+    const tap = bankKey((t) => t < 0.15, 8);
+    expect(tap[tap.length - 1]).toBeGreaterThan(1.5);
+    expect(tap[tap.length - 1]).toBeLessThan(5);
+    for (const target of [30, 90]) {
+      let released = false;
+      const run = bankKey((_, turned) => !(released ||= turned >= target), 25);
+      expect(run[run.length - 1]! - target, `${target}`).toBeLessThan(4);
+      expect(run[run.length - 1]! - target, `${target}`).toBeGreaterThan(0);
+    }
   });
 
   it('full stick back: climbs past 17 degrees within 3 s, never past the 45 degree path (no loop); at idle it slows but does not stall', () => {
@@ -182,8 +226,8 @@ describe('held climb and dive: the assist does not fight them', () => {
       aileron = approach(aileron, c.aileron, rate, dt);
       rudder = approach(rudder, c.rudder, rate, dt);
       setControlDeflection(f.world, f.h.surfaces.tail, -elevator * FULL);
-      setControlDeflection(f.world, f.h.surfaces.leftWing, aileron * FULL);
-      setControlDeflection(f.world, f.h.surfaces.rightWing, -aileron * FULL);
+      setControlDeflection(f.world, f.h.surfaces.leftWing, aileron * FULL * AILERON_SCALE);
+      setControlDeflection(f.world, f.h.surfaces.rightWing, -aileron * FULL * AILERON_SCALE);
       setControlDeflection(f.world, f.h.surfaces.fin, -rudder * FULL);
       setBodyThrust(f.world, f.h.body, [throttle * AIRCRAFT.maxThrust, 0, 0]);
       step(f.world);
@@ -289,14 +333,14 @@ describe('the flight-path marker (course.ts predictThroughRing) against the flow
     const dt = f.world.dt;
     for (let i = 0; i < 20 * 60 && !crossed; i++) {
       const on = i < Math.round(hold * 60);
-      keys.roll = rampKey(keys.roll, on ? roll : 0, dt);
+      keys.roll = rampKey(keys.roll, on ? roll : 0, dt, BANK_KEY_RAMP);
       keys.pitch = rampKey(keys.pitch, on ? pitch : 0, dt);
       const s = flightState(f.world, e);
       const cmd = assist(s, { roll: keys.roll, pitch: keys.pitch, yaw: 0 }, f.state, dt);
       for (const k of ['aileron', 'elevator', 'rudder'] as const) surface[k] = approach(surface[k], cmd[k], SURFACE_RATE.assist, dt);
       setControlDeflection(f.world, f.h.surfaces.tail, -surface.elevator * FULL);
-      setControlDeflection(f.world, f.h.surfaces.leftWing, surface.aileron * FULL);
-      setControlDeflection(f.world, f.h.surfaces.rightWing, -surface.aileron * FULL);
+      setControlDeflection(f.world, f.h.surfaces.leftWing, surface.aileron * FULL * AILERON_SCALE);
+      setControlDeflection(f.world, f.h.surfaces.rightWing, -surface.aileron * FULL * AILERON_SCALE);
       setControlDeflection(f.world, f.h.surfaces.fin, -surface.rudder * FULL);
       setBodyThrust(f.world, e, [(aircraftLevelDrag(130) / AIRCRAFT.maxThrust) * AIRCRAFT.maxThrust, 0, 0]);
       const a = [c.Position.x[e]!, c.Position.y[e]!, c.Position.z[e]!];
@@ -311,7 +355,14 @@ describe('the flight-path marker (course.ts predictThroughRing) against the flow
         ring = { x: b[0]! + distance * nx, y: b[1]!, z: b[2]! + distance * nz, nx, ny: 0, nz, status: 'ahead' };
         guess = predictThroughRing(
           ring,
-          { position: b, velocity: v, bank: after.bank, rollRate: after.rollRate, pathRate: (after.path - s.path) / dt },
+          {
+            position: b,
+            velocity: v,
+            bank: after.bank,
+            rollRate: after.rollRate,
+            pathRate: (after.path - s.path) / dt,
+            held: heldBank(f.state),
+          },
           true,
         ).point;
         line = pathThroughRing(ring, b, v).point;
@@ -327,7 +378,10 @@ describe('the flight-path marker (course.ts predictThroughRing) against the flow
     return { predicted: gap(guess), straight: gap(line), runOn: flightState(f.world, f.h.body).heading - headingAtRelease };
   }
 
-  it('a turn let go: the marker is within 5 m of where the aircraft crosses a ring 300 to 1,000 m on (measured under 3); the straight line missed by up to 50 m', () => {
+  it('a turn let go: the marker is within 8 m of where the aircraft crosses a ring 300 to 1,000 m on (measured 6.0 at most); the straight line missed by up to 160 m', () => {
+    // With the 45 degree full bank it was within 5 m (measured under 3); the turn is three times as
+    // fast now and a key let go within ASSIST.tapTime holds its bank a moment (heldBank), so the worst
+    // case (let go after 0.8 s, 1,000 m on) is 6 m, under a tenth of the ring's radius.
     let worst = 0,
       worstLine = 0;
     for (const hold of [0.3, 0.8, 1.5, 3])
@@ -336,12 +390,14 @@ describe('the flight-path marker (course.ts predictThroughRing) against the flow
         worst = Math.max(worst, r.predicted);
         worstLine = Math.max(worstLine, r.straight);
       }
-    expect(worst).toBeLessThan(5);
+    expect(worst).toBeLessThan(8);
     // The straight line (the marker before) was off by most of a ring's radius: the test can tell them apart.
     expect(worstLine).toBeGreaterThan(0.6 * RING_RADIUS);
   });
 
-  it('a climb, a dive or a climbing turn let go: the marker within a third of the ring radius at 300 and 600 m (measured 11 m at most)', () => {
+  it('a climb, a dive or a climbing turn let go: the marker within half the ring radius at 300 and 600 m (measured 27 m at most)', () => {
+    // Within a third (measured 11 m) with the 45 degree full bank; the climbing turn into a 70 degree
+    // bank pulls round faster than the marker's level-turn rate g tan(bank) / V has it.
     let worst = 0;
     for (const [roll, pitch] of [
       [0, 1],
@@ -350,7 +406,7 @@ describe('the flight-path marker (course.ts predictThroughRing) against the flow
     ] as const)
       for (const hold of [0.3, 0.8, 1.5])
         for (const distance of [300, 600]) worst = Math.max(worst, release(roll, pitch, hold, distance).predicted);
-    expect(worst).toBeLessThan(RING_RADIUS / 3);
+    expect(worst).toBeLessThan(RING_RADIUS / 2);
   });
 
   it('predictThroughRing: a ring behind is never met; bad input is refused with the function and parameter named', () => {
@@ -368,9 +424,12 @@ describe('the flight-path marker (course.ts predictThroughRing) against the flow
     );
   });
 
-  it('a held key let go after 1.5 s: the wings level briskly, the turn runs on under 2.5 degrees of heading past the release (3.1 with the old gains)', () => {
+  it('a held key let go after 1.5 s, still rolling into a 70 degree bank: the wings level briskly, the turn runs on under 6 degrees of heading past the release (measured 5.0)', () => {
+    // With a 45 degree full bank and 25 degree ailerons it ran on 2.3 degrees (under 2.5); the full
+    // bank of 70 turns three times as fast, and the ailerons (30 degrees) roll it level in about a
+    // second: run on per degree of heading turned before the release, it is about half what it was.
     const { runOn } = release(1, 0, 1.5, 1000);
     expect(runOn).toBeGreaterThan(0);
-    expect(runOn).toBeLessThan(2.5 * DEG);
+    expect(runOn).toBeLessThan(6 * DEG);
   });
 });

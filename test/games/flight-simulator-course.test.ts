@@ -12,7 +12,7 @@
 import { createPhysicsWorld, setBodyThrust, setControlDeflection, step } from '@bitphysics/physics';
 import { AIRCRAFT, aircraft, aircraftLevelDrag, terrainHeight } from '@bitphysics/projects';
 import { describe, expect, it } from 'vitest';
-import { ASSIST, assist, CONTROL_AUTHORITY, createAssistState, flightState } from '../../games/flight-simulator/assist';
+import { AILERON_SCALE, ASSIST, assist, CONTROL_AUTHORITY, createAssistState, flightState } from '../../games/flight-simulator/assist';
 import {
   compareWithBest,
   courseStars,
@@ -144,8 +144,8 @@ describe('flight simulator course', () => {
         const c = assist(s, { roll, pitch, yaw: 0 }, state, world.dt);
         for (const k of ['aileron', 'elevator', 'rudder'] as const) surface[k] += Math.max(-rate, Math.min(rate, c[k] - surface[k]));
         setControlDeflection(world, h.surfaces.tail, -surface.elevator * full);
-        setControlDeflection(world, h.surfaces.leftWing, surface.aileron * full);
-        setControlDeflection(world, h.surfaces.rightWing, -surface.aileron * full);
+        setControlDeflection(world, h.surfaces.leftWing, surface.aileron * full * AILERON_SCALE);
+        setControlDeflection(world, h.surfaces.rightWing, -surface.aileron * full * AILERON_SCALE);
         setControlDeflection(world, h.surfaces.fin, -surface.rudder * full);
         const throttle = Math.max(0, Math.min(1, trim + 0.05 * (125 - s.speed)));
         setBodyThrust(world, e, [throttle * AIRCRAFT.maxThrust, 0, 0]);
@@ -214,8 +214,8 @@ describe('flight simulator course', () => {
       const c = assist(flightState(world, e), { roll: 0, pitch: 0, yaw: 0 }, state, world.dt);
       for (const k of ['aileron', 'elevator', 'rudder'] as const) surface[k] += Math.max(-rate, Math.min(rate, c[k] - surface[k]));
       setControlDeflection(world, h.surfaces.tail, -surface.elevator * full);
-      setControlDeflection(world, h.surfaces.leftWing, surface.aileron * full);
-      setControlDeflection(world, h.surfaces.rightWing, -surface.aileron * full);
+      setControlDeflection(world, h.surfaces.leftWing, surface.aileron * full * AILERON_SCALE);
+      setControlDeflection(world, h.surfaces.rightWing, -surface.aileron * full * AILERON_SCALE);
       setControlDeflection(world, h.surfaces.fin, -surface.rudder * full);
       setBodyThrust(world, e, [aircraftLevelDrag(130), 0, 0]);
       const a = [P.x[e]!, P.y[e]!, P.z[e]!];

@@ -1,0 +1,75 @@
+// `node scripts/flight-simulator-steering.mjs`: how the flight simulator's aircraft answers the bank
+// keys, flown as the game flies it (the assist on, the keys ramped by rampKey, the surfaces following
+// the assist at SURFACE_RATE.assist, full deflection CONTROL_AUTHORITY degrees; level at 130 m/s with
+// the starting throttle, 900 m up). Prints, in game time:
+// - a held half turn: s from pressing → until the heading has turned 180 degrees, and the bank held;
+// - taps of → for 100, 150 and 250 ms: the heading's change once the wings are level again, degrees;
+// - held to a target: → held until the heading has turned 30 / 90 degrees, then let go: how far the
+//   heading runs on past the target, degrees, and how long the wings take to come level (within 2 degrees).
+import { importSource } from './build.mjs';
+
+const fs = await importSource(
+  'flight-simulator-steering',
+  [
+    "export * from './games/flight-simulator/assist.ts';",
+    "export { createPhysicsWorld, setBodyThrust, setControlDeflection, step } from '@bitphysics/physics';",
+    "export { AIRCRAFT, aircraft, aircraftLevelDrag } from '@bitphysics/projects';",
+  ].join('\n'),
+);
+const DEG = Math.PI / 180;
+
+/** Flies with the → key held while `hold(t, turned, s)` says so; returns the record. */
+function fly(hold, seconds) {
+  const world = fs.createPhysicsWorld(fs.aircraft.worldOptions());
+  const h = fs.aircraft.build(world, { seed: 1, altitude: 900 });
+  const state = fs.createAssistState(),
+    surface = { aileron: 0, elevator: 0, rudder: 0 },
+    rate = fs.SURFACE_RATE.assist * world.dt,
+    full = fs.CONTROL_AUTHORITY * DEG,
+    e = h.body,
+    throttle = fs.aircraftLevelDrag(130) / fs.AIRCRAFT.maxThrust;
+  const keys = { roll: 0, pitch: 0 };
+  const h0 = fs.flightState(world, e).heading;
+  const out = [];
+  let unwrapped = 0,
+    last = h0;
+  for (let t = 0; t < seconds; t += world.dt) {
+    const s = fs.flightState(world, e);
+    unwrapped += ((s.heading - last + 3 * Math.PI) % (2 * Math.PI)) - Math.PI;
+    last = s.heading;
+    const key = hold(t, unwrapped / DEG, s) ? 1 : 0;
+    keys.roll = fs.rampKey(keys.roll, key, world.dt, fs.BANK_KEY_RAMP);
+    out.push({ t, turned: unwrapped / DEG, bank: s.bank / DEG, key, speed: s.speed, path: s.path / DEG, alpha: s.alpha / DEG });
+    const c = fs.assist(s, { roll: keys.roll, pitch: 0, yaw: 0 }, state, world.dt);
+    for (const k of ['aileron', 'elevator', 'rudder']) surface[k] += Math.max(-rate, Math.min(rate, c[k] - surface[k]));
+    fs.setControlDeflection(world, h.surfaces.tail, -surface.elevator * full);
+    fs.setControlDeflection(world, h.surfaces.leftWing, surface.aileron * full * fs.AILERON_SCALE);
+    fs.setControlDeflection(world, h.surfaces.rightWing, -surface.aileron * full * fs.AILERON_SCALE);
+    fs.setControlDeflection(world, h.surfaces.fin, -surface.rudder * full);
+    fs.setBodyThrust(world, e, [throttle * fs.AIRCRAFT.maxThrust, 0, 0]);
+    fs.step(world);
+  }
+  return out;
+}
+
+const half = fly((_t, turned) => turned < 180, 60);
+const done = half.find((r) => r.turned >= 180);
+const held = half.filter((r) => r.t < (done?.t ?? 60));
+console.log(
+  `held half turn: ${done ? done.t.toFixed(1) : '> 60'} s, bank at most ${Math.max(...held.map((r) => r.bank)).toFixed(0)}°, speed ${held[held.length - 1].speed.toFixed(0)} m/s, alpha at most ${Math.max(...held.map((r) => r.alpha)).toFixed(1)}°, path ${Math.min(...held.map((r) => r.path)).toFixed(1)}..${Math.max(...held.map((r) => r.path)).toFixed(1)}°`,
+);
+for (const ms of [100, 150, 250]) {
+  const r = fly((t) => t < ms / 1000, 8);
+  console.log(`tap ${ms} ms: heading ${r[r.length - 1].turned.toFixed(2)}°, bank at most ${Math.max(...r.map((x) => x.bank)).toFixed(1)}°`);
+}
+for (const target of [30, 90]) {
+  let released = -1;
+  const r = fly((t, turned) => {
+    if (released < 0 && turned >= target) released = t;
+    return released < 0;
+  }, 30);
+  const level = r.find((x) => x.t > released && Math.abs(x.bank) < 2);
+  console.log(
+    `held to ${target}°: let go at ${released.toFixed(1)} s, heading runs on ${(r[r.length - 1].turned - target).toFixed(1)}° past it, wings level after ${level ? (level.t - released).toFixed(1) : '?'} s`,
+  );
+}
