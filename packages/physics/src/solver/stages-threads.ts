@@ -78,6 +78,21 @@ function shareState(cs: CollisionState): void {
   cs.bodyImpact = sharedCopy(cs.bodyImpact);
 }
 
+/**
+ * The world's stage scratch (`scratch`) with its argument list emptied, for a per-body or per-row stage
+ * run on `pool` (null: on the calling thread): with a pool, the collision state's arrays and `buf`'s
+ * rows (when not null) are first moved onto shared memory, where the workers can read them.
+ */
+function stageScratch(world: PhysicsWorld, pool: ThreadPool | null, buf: ContactBuffer | null): SolverStageScratch {
+  if (pool !== null) {
+    shareState(world.collision);
+    if (buf !== null) shareContactBuffer(buf);
+  }
+  const s = scratch(world);
+  s.arrays.length = 0;
+  return s;
+}
+
 /** The world's pool if a 2D stage of `n` elements may go to its threads (see the file's header), else null. */
 function poolFor(world: PhysicsWorld, n: number): ThreadPool | null {
   const pool = world.threadPool;
@@ -142,11 +157,9 @@ export function gatherFillStage(world: PhysicsWorld, count: number, pushed: numb
   const pool = poolFor(world, count - 1);
   const cs = world.collision,
     c = world.components;
-  if (pool !== null) shareState(cs);
-  const s = scratch(world),
+  const s = stageScratch(world, pool, null),
     A = s.arrays,
     P = s.params;
-  A.length = 0;
   motionArrays(world, A, GATHER.PX, GATHER.PZ);
   A[GATHER.FX] = c.Force.x;
   A[GATHER.FY] = c.Force.y;
@@ -179,14 +192,9 @@ export function approachStage(world: PhysicsWorld, buf: ContactBuffer): void {
   const n = buf.count;
   const pool = poolFor(world, n);
   const cs = world.collision;
-  if (pool !== null) {
-    shareContactBuffer(buf);
-    shareState(cs);
-  }
-  const s = scratch(world),
+  const s = stageScratch(world, pool, buf),
     A = s.arrays,
     P = s.params;
-  A.length = 0;
   approachArguments(cs, buf, A);
   const g = world.gravity;
   P[APPROACH.GX] = g[0]!;
@@ -240,16 +248,11 @@ export function finishStage(world: PhysicsWorld, buf: ContactBuffer): void {
     count = cs.solverBodyCount;
   const pool = poolFor(world, count - 1);
   const c = world.components;
-  if (pool !== null) {
-    shareState(cs);
-    shareContactBuffer(buf);
-  }
-  const s = scratch(world),
+  const s = stageScratch(world, pool, buf),
     A = s.arrays,
     P = s.params,
     out = s.deepest;
   out.fill(0);
-  A.length = 0;
   motionArrays(world, A, FINISH.PX, FINISH.PZ);
   A[FINISH.ANGLE] = c.Angle.value;
   A[FINISH.BODY_TYPE] = cs.bodyType;
