@@ -30,7 +30,7 @@ import {
   BS3_WY,
   BS3_WZ,
 } from './body-state-layout.js';
-import { heavierAbove, holdsLower, SUPPORT_COS } from './support.js';
+import { holdsLower, lowerSupportBall, sweepRow } from './support.js';
 /** Applies every contact's accumulated impulse (Box2D v3 warm start, once per substep), 2D. */
 export function warmStart2D(cs: CollisionState, buf: ContactBuffer): void {
   const n = buf.count,
@@ -169,8 +169,8 @@ export function solve2D(cs: CollisionState, buf: ContactBuffer, useBias: boolean
   // floor, segments), which take out what the others pushed into them.
   const end = useBias ? n : 3 * n;
   for (let k = 0; k < end; k++) {
-    const i = k < n ? k : k < 2 * n ? k - n : k - 2 * n;
-    if (!useBias && (k < n ? first[i] === 0 : k < 2 * n === (IA[i] === 0))) continue;
+    const i = sweepRow(k, n, useBias, first, IA);
+    if (i < 0) continue;
     const a = IA[i]! * BS2_STRIDE,
       b = IB[i]! * BS2_STRIDE;
     const nx = NX[i]!,
@@ -187,12 +187,12 @@ export function solve2D(cs: CollisionState, buf: ContactBuffer, useBias: boolean
       jmB = imB,
       nm = NM[i]!;
     if (!useBias && imA > 0 && imB > 0 && nm > 0) {
-      const up = -(downX * nx + downY * ny);
-      if ((up > SUPPORT_COS || up < -SUPPORT_COS) && (FB[i] === 0 || (up > 0 ? heavierAbove(imA, imB) : heavierAbove(imB, imA)))) {
+      const lower = lowerSupportBall(-(downX * nx + downY * ny), FB[i]!, imA, imB);
+      if (lower !== 0) {
         const va = Math.abs(vax * nx + vay * ny),
           vb = Math.abs(vbx * nx + vby * ny);
-        if (up > 0 ? holdsLower(va, vb) : holdsLower(vb, va)) {
-          if (up > 0) jmA = 0;
+        if (lower === 1 ? holdsLower(va, vb) : holdsLower(vb, va)) {
+          if (lower === 1) jmA = 0;
           else jmB = 0;
           nm = 1 / (jmA + jmB);
         }
@@ -307,8 +307,8 @@ export function solve3D(cs: CollisionState, buf: ContactBuffer, useBias: boolean
   // Row order as in solve2D: the relax sweep takes the rows under heavier balls, the ball pairs, the static rows.
   const end = useBias ? n : 3 * n;
   for (let k = 0; k < end; k++) {
-    const i = k < n ? k : k < 2 * n ? k - n : k - 2 * n;
-    if (!useBias && (k < n ? first[i] === 0 : k < 2 * n === (IA[i] === 0))) continue;
+    const i = sweepRow(k, n, useBias, first, IA);
+    if (i < 0) continue;
     const a = IA[i]! * BS3_STRIDE,
       b = IB[i]! * BS3_STRIDE;
     const nx = NX[i]!,
@@ -327,12 +327,12 @@ export function solve3D(cs: CollisionState, buf: ContactBuffer, useBias: boolean
       jmB = imB,
       nm = NM[i]!;
     if (!useBias && imA > 0 && imB > 0 && nm > 0) {
-      const up = -(downX * nx + downY * ny + downZ * nz);
-      if ((up > SUPPORT_COS || up < -SUPPORT_COS) && (FB[i] === 0 || (up > 0 ? heavierAbove(imA, imB) : heavierAbove(imB, imA)))) {
+      const lower = lowerSupportBall(-(downX * nx + downY * ny + downZ * nz), FB[i]!, imA, imB);
+      if (lower !== 0) {
         const va = Math.abs(vax * nx + vay * ny + vaz * nz),
           vb = Math.abs(vbx * nx + vby * ny + vbz * nz);
-        if (up > 0 ? holdsLower(va, vb) : holdsLower(vb, va)) {
-          if (up > 0) jmA = 0;
+        if (lower === 1 ? holdsLower(va, vb) : holdsLower(vb, va)) {
+          if (lower === 1) jmA = 0;
           else jmB = 0;
           nm = 1 / (jmA + jmB);
         }

@@ -270,10 +270,12 @@ export function solveColoredBlocks2D(plan: Int32Array, rows: number, approach: b
 /**
  * Packs the contact buffer's rows of packing range `blk` (of `parts`) into the pack, each at its group's
  * next slot (solveColored2D's A and P layout: A 0 pack, 6 groups, 7 offsets, 8 to 20 the buffer's
- * arrays, 26 pair; P 11 rows, 12 group slots a range).
+ * arrays, 26 pair; P 11 rows, 12 group slots a range). With `again` (coloredRepack2D), packs
+ * again[0 .. parts - 1] instead, each into the pack row it was given before (A[SOLVE.SLOT]; `blk` and P
+ * unused): one row's packing, either way.
  * @category Collision
  */
-export function coloredPack2D(A: KernelArray[], P: Float64Array, blk: number, parts: number): void {
+export function coloredPack2D(A: KernelArray[], P: Float64Array, blk: number, parts: number, again: Int32Array | null = null): void {
   const pk = A[SOLVE.PACK] as Float64Array,
     color = A[SOLVE.GROUP] as Uint8Array,
     offsets = A[SOLVE.OFFSETS] as Int32Array;
@@ -294,19 +296,27 @@ export function coloredPack2D(A: KernelArray[], P: Float64Array, blk: number, pa
     tot = A[SOLVE.TOT] as Float64Array,
     row = A[SOLVE.ROW] as Int32Array;
   const slot = A[SOLVE.SLOT] as Int32Array;
-  const rows = P[SOLVE.ROWS]!,
-    W = P[SOLVE.GROUP_SLOTS]!;
-  const lo = Math.floor((rows * blk) / parts),
-    hi = Math.floor((rows * (blk + 1)) / parts),
+  const first = again === null;
+  const rows = first ? P[SOLVE.ROWS]! : parts,
+    W = first ? P[SOLVE.GROUP_SLOTS]! : 0;
+  const lo = first ? Math.floor((rows * blk) / parts) : 0,
+    hi = first ? Math.floor((rows * (blk + 1)) / parts) : parts,
     o0 = blk * W;
-  for (let i = lo; i < hi; i++) {
+  for (let j = lo; j < hi; j++) {
+    const i = first ? j : again[j]!;
     const c = color[i]!;
     if (c === 255) continue;
-    const k = offsets[o0 + c]!;
-    offsets[o0 + c] = k + 1;
+    let k = 0;
+    if (first) {
+      k = offsets[o0 + c]!;
+      offsets[o0 + c] = k + 1;
+      pair[2 * k] = IA[i]! * BS2_STRIDE;
+      pair[2 * k + 1] = IB[i]! * BS2_STRIDE;
+      tot[k] = 0;
+      row[k] = i;
+      slot[i] = k;
+    } else k = slot[i]!;
     const o = k * PACK_STRIDE;
-    pair[2 * k] = IA[i]! * BS2_STRIDE;
-    pair[2 * k + 1] = IB[i]! * BS2_STRIDE;
     pk[o + PK_NX] = NX[i]!;
     pk[o + PK_NY] = NY[i]!;
     pk[o + PK_RA] = RA[i]!;
@@ -319,11 +329,11 @@ export function coloredPack2D(A: KernelArray[], P: Float64Array, blk: number, pa
     pk[o + PK_TANGENT_IMPULSE] = LT[i]!;
     pk[o + PK_A_FIXED] = RP[i]!;
     pk[o + PK_MAX_NORMAL_IMPULSE] = 0;
-    tot[k] = 0;
-    row[k] = i;
-    slot[i] = k;
   }
 }
+
+/** An empty parameter list, for coloredRepack2D's call of coloredPack2D (which then reads no parameter). */
+const NO_PARAMS = /* @__PURE__ */ new Float64Array(0);
 
 /**
  * Packs rows[0 .. count - 1] of the contact buffer again, each into the pack row coloredPack2D gave it
@@ -332,37 +342,7 @@ export function coloredPack2D(A: KernelArray[], P: Float64Array, blk: number, pa
  * @category Collision
  */
 export function coloredRepack2D(A: KernelArray[], rows: Int32Array, count: number): void {
-  const pk = A[SOLVE.PACK] as Float64Array,
-    color = A[SOLVE.GROUP] as Uint8Array,
-    slot = A[SOLVE.SLOT] as Int32Array;
-  const NX = A[SOLVE.NX] as Float64Array,
-    NY = A[SOLVE.NY] as Float64Array,
-    RA = A[SOLVE.RA] as Float64Array,
-    RB = A[SOLVE.RB] as Float64Array;
-  const S0 = A[SOLVE.SEPARATION] as Float64Array,
-    NM = A[SOLVE.NORMAL_MASS] as Float64Array,
-    TM = A[SOLVE.TANGENT_MASS] as Float64Array,
-    FB = A[SOLVE.FRICTION_BOUND] as Float64Array;
-  const LN = A[SOLVE.NORMAL_IMPULSE] as Float64Array,
-    LT = A[SOLVE.TANGENT_IMPULSE] as Float64Array,
-    RP = A[SOLVE.RIGID_PARTNER] as Uint8Array;
-  for (let j = 0; j < count; j++) {
-    const i = rows[j]!;
-    if (color[i] === 255) continue;
-    const o = slot[i]! * PACK_STRIDE;
-    pk[o + PK_NX] = NX[i]!;
-    pk[o + PK_NY] = NY[i]!;
-    pk[o + PK_RA] = RA[i]!;
-    pk[o + PK_RB] = RB[i]!;
-    pk[o + PK_SEPARATION] = S0[i]!;
-    pk[o + PK_NORMAL_MASS] = NM[i]!;
-    pk[o + PK_TANGENT_MASS] = TM[i]!;
-    pk[o + PK_FRICTION] = FB[i]!;
-    pk[o + PK_NORMAL_IMPULSE] = LN[i]!;
-    pk[o + PK_TANGENT_IMPULSE] = LT[i]!;
-    pk[o + PK_A_FIXED] = RP[i]!;
-    pk[o + PK_MAX_NORMAL_IMPULSE] = 0;
-  }
+  coloredPack2D(A, NO_PARAMS, 0, count, rows);
 }
 
 /**

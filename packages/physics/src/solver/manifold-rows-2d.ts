@@ -112,6 +112,29 @@ export function storeManifoldImpulses(cs: CollisionState): void {
 }
 
 /**
+ * Writes the velocities a row's pass left in its locals back to its bodies' packed state (offsets `a`
+ * and `b`, BS2_STRIDE times the solver indices): velocity x and y (m/s) and spin (rad/s) of A, then of B.
+ */
+function storeVelocities(
+  sb: Float64Array,
+  a: number,
+  b: number,
+  vax: number,
+  vay: number,
+  wa: number,
+  vbx: number,
+  vby: number,
+  wb: number,
+): void {
+  sb[a + BS2_VX] = vax;
+  sb[a + BS2_VY] = vay;
+  sb[a + BS2_W] = wa;
+  sb[b + BS2_VX] = vbx;
+  sb[b + BS2_VY] = vby;
+  sb[b + BS2_W] = wb;
+}
+
+/**
  * Applies every manifold point's accumulated impulses (once per substep).
  * @category Collision
  */
@@ -165,12 +188,7 @@ export function warmStartManifolds(cs: CollisionState): void {
     const lr = R[r + MR_ROLLING_IMPULSE]!;
     wa -= iA * lr;
     wb += iB * lr;
-    sb[a + BS2_VX] = vax;
-    sb[a + BS2_VY] = vay;
-    sb[a + BS2_W] = wa;
-    sb[b + BS2_VX] = vbx;
-    sb[b + BS2_VY] = vby;
-    sb[b + BS2_W] = wb;
+    storeVelocities(sb, a, b, vax, vay, wa, vbx, vby, wb);
     if (carries || lr !== 0) {
       sb[a + BS2_PUSHED] = 1;
       sb[b + BS2_PUSHED] = 1;
@@ -442,12 +460,7 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean,
       wa -= iA * dl;
       wb += iB * dl;
     }
-    sb[a + BS2_VX] = vax;
-    sb[a + BS2_VY] = vay;
-    sb[a + BS2_W] = wa;
-    sb[b + BS2_VX] = vbx;
-    sb[b + BS2_VY] = vby;
-    sb[b + BS2_W] = wb;
+    storeVelocities(sb, a, b, vax, vay, wa, vbx, vby, wb);
     if (total > 0 || l1 !== 0 || f1 !== 0 || (two && (l2 !== 0 || f2 !== 0)) || R[r + MR_ROLLING_IMPULSE] !== 0) {
       sb[a + BS2_PUSHED] = 1;
       sb[b + BS2_PUSHED] = 1;
@@ -465,10 +478,7 @@ export function accumulateManifoldImpulses(cs: CollisionState): void {
   const R = cs.shapes.solverRows;
   for (let i = 0, n = Math.min(cs.shapes.manifolds.count, MAX_MANIFOLDS); i < n; i++) {
     const r = i * MR_STRIDE;
-    for (let p = 0, m = R[r + MR_POINT_COUNT]!; p < m; p++) {
-      const o = r + MR_POINT0 + p * MP_STRIDE;
-      R[o + MP_TOTAL_NORMAL_IMPULSE] = R[o + MP_TOTAL_NORMAL_IMPULSE]! + R[o + MP_NORMAL_IMPULSE]!;
-    }
+    accumulateRow(R, r + MR_POINT0, R[r + MR_POINT_COUNT] === 2);
   }
 }
 
@@ -542,12 +552,7 @@ export function applyManifoldRestitution(world: PhysicsWorld): void {
           vbx += mB * d * nx;
           vby += mB * d * ny;
           wb += iB * (d1 * n1b + d2 * n2b);
-          sb[a + BS2_VX] = vax;
-          sb[a + BS2_VY] = vay;
-          sb[a + BS2_W] = wa;
-          sb[b + BS2_VX] = vbx;
-          sb[b + BS2_VY] = vby;
-          sb[b + BS2_W] = wb;
+          storeVelocities(sb, a, b, vax, vay, wa, vbx, vby, wb);
           continue;
         }
       }
@@ -574,11 +579,6 @@ export function applyManifoldRestitution(world: PhysicsWorld): void {
       vby += mB * Py;
       wb += iB * dl * nb;
     }
-    sb[a + BS2_VX] = vax;
-    sb[a + BS2_VY] = vay;
-    sb[a + BS2_W] = wa;
-    sb[b + BS2_VX] = vbx;
-    sb[b + BS2_VY] = vby;
-    sb[b + BS2_W] = wb;
+    storeVelocities(sb, a, b, vax, vay, wa, vbx, vby, wb);
   }
 }

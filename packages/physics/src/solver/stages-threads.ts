@@ -78,6 +78,21 @@ function shareState(cs: CollisionState): void {
   cs.bodyImpact = sharedCopy(cs.bodyImpact);
 }
 
+/**
+ * The world's stage scratch (`scratch`) with its argument list emptied, for a per-body or per-row stage
+ * run on `pool` (null: on the calling thread): with a pool, the collision state's arrays and `buf`'s
+ * rows (when not null) are first moved onto shared memory, where the workers can read them.
+ */
+function stageScratch(world: PhysicsWorld, pool: ThreadPool | null, buf: ContactBuffer | null): SolverStageScratch {
+  if (pool !== null) {
+    shareState(world.collision);
+    if (buf !== null) shareContactBuffer(buf);
+  }
+  const s = scratch(world);
+  s.arrays.length = 0;
+  return s;
+}
+
 /** The world's pool if a 2D stage of `n` elements may go to its threads (see the file's header), else null. */
 function poolFor(world: PhysicsWorld, n: number): ThreadPool | null {
   const pool = world.threadPool;
@@ -113,6 +128,25 @@ function runStage(pool: ThreadPool | null, kernel: Kernel, A: KernelArray[], P: 
 }
 
 /**
+ * Puts the bodies' motion arrays into a stage kernel's arrays `A` at a slot module's places, which both
+ * such modules (slots/gather-fill.ts, slots/finish-bodies.ts) keep in this order: position x and y,
+ * velocity x and y, angular velocity z from slot `xy` on, and position z, velocity z, angular velocity
+ * x and y from slot `z` on.
+ */
+function motionArrays(world: PhysicsWorld, A: KernelArray[], xy: number, z: number): void {
+  const c = world.components;
+  A[xy] = c.Position.x;
+  A[xy + 1] = c.Position.y;
+  A[xy + 2] = c.Velocity.x;
+  A[xy + 3] = c.Velocity.y;
+  A[xy + 4] = c.AngularVelocity.z;
+  A[z] = c.Position.z;
+  A[z + 1] = c.Velocity.z;
+  A[z + 2] = c.AngularVelocity.x;
+  A[z + 3] = c.AngularVelocity.y;
+}
+
+/**
  * gatherBodies' fill of the solver rows of solver bodies 1 .. count - 1 (solver/contact-solver.ts;
  * kernel gatherFill, 2D or 3D), on a 2D world's threads when it pays, else on the calling thread; `pushed` 1
  * when joints are in the step (every body counts as pushed).
@@ -123,16 +157,10 @@ export function gatherFillStage(world: PhysicsWorld, count: number, pushed: numb
   const pool = poolFor(world, count - 1);
   const cs = world.collision,
     c = world.components;
-  if (pool !== null) shareState(cs);
-  const s = scratch(world),
+  const s = stageScratch(world, pool, null),
     A = s.arrays,
     P = s.params;
-  A.length = 0;
-  A[GATHER.PX] = c.Position.x;
-  A[GATHER.PY] = c.Position.y;
-  A[GATHER.VX] = c.Velocity.x;
-  A[GATHER.VY] = c.Velocity.y;
-  A[GATHER.WZ] = c.AngularVelocity.z;
+  motionArrays(world, A, GATHER.PX, GATHER.PZ);
   A[GATHER.FX] = c.Force.x;
   A[GATHER.FY] = c.Force.y;
   A[GATHER.FZ] = c.Force.z;
@@ -141,10 +169,6 @@ export function gatherFillStage(world: PhysicsWorld, count: number, pushed: numb
   A[GATHER.INV_INERTIA] = cs.invInertia;
   A[GATHER.BODY_STATE] = cs.bodyState;
   A[GATHER.BODY_EXTRA] = cs.bodyExtra;
-  A[GATHER.PZ] = c.Position.z;
-  A[GATHER.VZ] = c.Velocity.z;
-  A[GATHER.WX] = c.AngularVelocity.x;
-  A[GATHER.WY] = c.AngularVelocity.y;
   const h = world.h,
     g = world.gravity;
   P[GATHER.H] = h;
@@ -168,14 +192,9 @@ export function approachStage(world: PhysicsWorld, buf: ContactBuffer): void {
   const n = buf.count;
   const pool = poolFor(world, n);
   const cs = world.collision;
-  if (pool !== null) {
-    shareContactBuffer(buf);
-    shareState(cs);
-  }
-  const s = scratch(world),
+  const s = stageScratch(world, pool, buf),
     A = s.arrays,
     P = s.params;
-  A.length = 0;
   approachArguments(cs, buf, A);
   const g = world.gravity;
   P[APPROACH.GX] = g[0]!;
@@ -229,21 +248,12 @@ export function finishStage(world: PhysicsWorld, buf: ContactBuffer): void {
     count = cs.solverBodyCount;
   const pool = poolFor(world, count - 1);
   const c = world.components;
-  if (pool !== null) {
-    shareState(cs);
-    shareContactBuffer(buf);
-  }
-  const s = scratch(world),
+  const s = stageScratch(world, pool, buf),
     A = s.arrays,
     P = s.params,
     out = s.deepest;
   out.fill(0);
-  A.length = 0;
-  A[FINISH.PX] = c.Position.x;
-  A[FINISH.PY] = c.Position.y;
-  A[FINISH.VX] = c.Velocity.x;
-  A[FINISH.VY] = c.Velocity.y;
-  A[FINISH.WZ] = c.AngularVelocity.z;
+  motionArrays(world, A, FINISH.PX, FINISH.PZ);
   A[FINISH.ANGLE] = c.Angle.value;
   A[FINISH.BODY_TYPE] = cs.bodyType;
   A[FINISH.BODY_STATE] = cs.bodyState;
@@ -257,10 +267,6 @@ export function finishStage(world: PhysicsWorld, buf: ContactBuffer): void {
   A[FINISH.SEPARATION] = buf.separation;
   A[FINISH.NX] = buf.nx;
   A[FINISH.NY] = buf.ny;
-  A[FINISH.PZ] = c.Position.z;
-  A[FINISH.VZ] = c.Velocity.z;
-  A[FINISH.WX] = c.AngularVelocity.x;
-  A[FINISH.WY] = c.AngularVelocity.y;
   A[FINISH.QX] = c.Orientation.x;
   A[FINISH.QY] = c.Orientation.y;
   A[FINISH.QZ] = c.Orientation.z;

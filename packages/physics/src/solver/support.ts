@@ -83,6 +83,31 @@ export function holdsLower(speedLower: number, speedUpper: number): boolean {
 }
 
 /**
+ * Which ball of a row between two dynamic balls (inverse masses `imA`, `imB`, 1/kg, > 0) is the lower
+ * ball of a support row the relax sweep may hold (solver/ball-sweeps.ts): 1 ball A, 2 ball B, 0 neither.
+ * A support row is within SUPPORT_COS of vertical (`up` = -n . g / |g|, n from A to B: > 0 puts A
+ * below) and frictionless (`frictionBound` 0) or with the upper ball heavierAbove the lower; the sweep
+ * then holds the lower ball when holdsLower says so.
+ * @category Collision
+ */
+export function lowerSupportBall(up: number, frictionBound: number, imA: number, imB: number): number {
+  if (up > SUPPORT_COS) return frictionBound === 0 || heavierAbove(imA, imB) ? 1 : 0;
+  if (up < -SUPPORT_COS) return frictionBound === 0 || heavierAbove(imB, imA) ? 2 : 0;
+  return 0;
+}
+
+/**
+ * The contact row a ball sweep's k-th visit takes (solver/ball-sweeps.ts, `n` rows), or -1 when that
+ * visit skips it: with bias (n visits) row k; relaxing (3 n visits), first the rows `first` marks
+ * (markFirstRelaxRows), then the rows between two balls, then the rows against static bodies (`ia` 0).
+ * @category Collision
+ */
+export function sweepRow(k: number, n: number, useBias: boolean, first: Uint8Array, ia: Int32Array): number {
+  const i = k < n ? k : k < 2 * n ? k - n : k - 2 * n;
+  return !useBias && (k < n ? first[i] === 0 : k < 2 * n === (ia[i] === 0)) ? -1 : i;
+}
+
+/**
  * Writes the unit vector along `g` (m/s^2, 2 or 3 components; the first two used), or (0, 0) for no
  * gravity, into out[at] and out[at + 1] (no array made: the solvers ask once a step).
  * @category Collision
