@@ -72,6 +72,9 @@ function passOf(world: PhysicsWorld, useBias: boolean): JointPass2D {
 /** A row's reading (force, torque, error, strain; finishJoints). */
 const reading = new Float64Array(4);
 
+/** finishJoints' largest position error of the step (m) and its joint's entity id, as finishRows leaves them. */
+const worst = new Float64Array(2);
+
 enum Class {
   Dynamic = 0,
   Kinematic = 1,
@@ -252,22 +255,9 @@ export function prepareJoints(world: PhysicsWorld, hs: number): void {
   js.stats.rows = n;
   if (n === 0) return;
   startPoses(world);
-  const c = world.components;
-  const J = c.Joint;
-  const sb = world.collision.bodyState,
-    ex = world.collision.bodyExtra,
-    pose = js.startPose;
-  const rows = js.rows,
-    ri = js.rowInts,
-    imp = js.impulses,
-    f = frame;
-  const px = c.Position.x,
-    py = c.Position.y,
-    ang = c.Angle.value;
   // The rigid joint softness of this step (Box2D's joint softness, its rate capped at a quarter of the substep's).
   const jointHertz = Math.min(js.settings.hertz, 0.25 / hs),
     jointZeta = js.settings.dampingRatio;
-  const warm = js.settings.warmStarting;
   const omega = 2 * Math.PI * jointHertz;
   const ja1 = 2 * jointZeta + hs * omega,
     ja2 = hs * omega * ja1,
@@ -280,7 +270,32 @@ export function prepareJoints(world: PhysicsWorld, hs: number): void {
   js.softness[2] = jImp;
   js.linkCount = 0;
   js.pinCount = 0;
-  f[R.F_HS] = hs;
+  frame[R.F_HS] = hs;
+  prepareRows(world, hs, n, jBias, jMass, jImp);
+  js.generalCount = n - js.linkCount - js.pinCount;
+}
+
+/**
+ * prepareJoints' loop over rows 0 .. n - 1 with the step's rigid softness (jBias 1/s, jMass, jImp). A
+ * function of its own, ending with its loop: prepareJoints runs once a step, so V8 compiles this loop on
+ * the stack (OSR) before the code after it has run, and inline, that code would have no type feedback in
+ * the compiled loop: its first statement would deoptimise the loop's code at every step's exit.
+ */
+function prepareRows(world: PhysicsWorld, hs: number, n: number, jBias: number, jMass: number, jImp: number): void {
+  const js = world.joints;
+  const warm = js.settings.warmStarting;
+  const c = world.components;
+  const J = c.Joint;
+  const sb = world.collision.bodyState,
+    ex = world.collision.bodyExtra,
+    pose = js.startPose;
+  const rows = js.rows,
+    ri = js.rowInts,
+    imp = js.impulses,
+    f = frame;
+  const px = c.Position.x,
+    py = c.Position.y,
+    ang = c.Angle.value;
   for (let r = 0; r < n; r++) {
     const o = r * ROW_FLOATS,
       q = r * ROW_INTS;
@@ -380,7 +395,6 @@ export function prepareJoints(world: PhysicsWorld, hs: number): void {
     else if (type === JointType.Weld) WELD_ROWS_2D.prepare(js, J, j, r, f);
     else MOUSE_ROWS_2D.prepare(js, J, j, r, f);
   }
-  js.generalCount = n - js.linkCount - js.pinCount;
 }
 
 /**
@@ -508,18 +522,34 @@ export function finishJoints(world: PhysicsWorld, hs: number): void {
   js.stats.maxError = 0;
   js.stats.maxErrorJoint = 0;
   if (n === 0) return;
+  const p = passOf(world, false);
+  p.f[R.F_INVH] = 1 / hs;
+  finishPointLinks(js);
+  finishPins(js);
+  const best = worst;
+  best[0] = 0;
+  best[1] = 0;
+  const doomed = finishRows(world, p, n, best);
+  js.stats.maxError = best[0]!;
+  js.stats.maxErrorJoint = best[1]!;
+  if (doomed) for (const j of doomed) removeJointUnchecked(world, j);
+}
+
+/**
+ * finishJoints' loop over rows 0 .. n - 1 (pass `p`): each row's reading into its joint's force and
+ * torque, its impulses kept for the next step, the largest position error (m) and its joint into
+ * best[0] and best[1] (best[0] starts at 0); @returns the joints to break, or null. A function of its
+ * own, ending with its loop, for the reason prepareRows is.
+ */
+function finishRows(world: PhysicsWorld, p: JointPass2D, n: number, best: Float64Array): number[] | null {
+  const js = world.joints;
   const J = world.components.Joint;
-  const p = passOf(world, false),
-    rows = p.rows,
+  const rows = p.rows,
     ri = js.rowInts,
     imp = js.impulses,
     out = reading;
-  p.f[R.F_INVH] = 1 / hs;
-  let maxError = 0,
-    maxJoint = 0;
+  let maxError = 0;
   let doomed: number[] | null = null;
-  finishPointLinks(js);
-  finishPins(js);
   for (let r = 0; r < n; r++) {
     const o = r * ROW_FLOATS,
       q = r * ROW_INTS;
@@ -548,7 +578,8 @@ export function finishJoints(world: PhysicsWorld, hs: number): void {
     J.torque[j] = torque;
     if (error > maxError) {
       maxError = error;
-      maxJoint = j;
+      best[0] = error;
+      best[1] = j;
     }
     const base = j * IMPULSES;
     for (let s = 0; s < IMPULSES; s++) imp[base + s] = rows[o + R.ILX + s]!;
@@ -566,7 +597,5 @@ export function finishJoints(world: PhysicsWorld, hs: number): void {
       );
     }
   }
-  js.stats.maxError = maxError;
-  js.stats.maxErrorJoint = maxJoint;
-  if (doomed) for (const j of doomed) removeJointUnchecked(world, j);
+  return doomed;
 }
