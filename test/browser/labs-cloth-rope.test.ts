@@ -487,8 +487,10 @@ for (const [device, options] of [
       expect(landed.landedAt).toBeGreaterThan(0);
       expect(landed.stars > 0).toBe(landed.drop === 'in');
       expect(await g.page.locator('.lab-status').textContent()).toMatch(landed.drop === 'in' ? /done, \d of 3 stars/ : /missed the basket/);
-      // The button for the next sheet covers nothing of the card of stars just won.
-      const next = (await g.page.getByRole('button', { name: 'Next sheet ▶', exact: true }).boundingBox())!;
+      // The button for the next sheet (for the same one again after a miss: the sheet is failed)
+      // covers nothing of the card of stars just won.
+      const action = landed.drop === 'in' ? 'Next sheet ▶' : 'Try again ↺';
+      const next = (await g.page.getByRole('button', { name: action, exact: true }).boundingBox())!;
       const card = await g.page.evaluate(() => {
         const c = (window.game as unknown as ClothLab).starCard();
         const box = document.querySelector('canvas')!.getBoundingClientRect();
@@ -499,7 +501,8 @@ for (const [device, options] of [
         next.x >= card.x + card.width || card.x >= next.x + next.width || next.y >= card.y + card.height || card.y >= next.y + next.height;
       expect(apart, JSON.stringify({ next, card })).toBe(true);
       // The next sheet: the perforation, no scissors; the hand pulls the strip down from below the dots.
-      await press(g.page, 'Next sheet ▶');
+      if (landed.drop === 'in') await press(g.page, 'Next sheet ▶');
+      else await g.page.evaluate(() => (window.game as unknown as { nextSheet(): void }).nextSheet());
       await g.waitFor(() => (window.game as unknown as ClothLab).level().index === 3, null);
       expect(await g.page.getByRole('button', { name: 'scissors: drag to cut (C)', exact: true }).isDisabled()).toBe(true);
       expect(await g.page.evaluate(() => (window.game as unknown as ClothLab).tool())).toBe('pull');
