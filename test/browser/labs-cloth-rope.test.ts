@@ -365,9 +365,37 @@ for (const [device, options] of [
       for (const how of device === 'desktop' ? (['button', 'keys'] as const) : (['button'] as const)) {
         const before = await stroke();
         expect(await undo.isDisabled()).toBe(false);
+        // What reaches the page from the press (its target and time), for the message if the undo
+        // does not come (under load a phone's tap reached the button as a pointerdown and pointerup
+        // in one task and no click: the lab now acts on the pointerup, main.ts onPress).
+        await g.page.evaluate(() => {
+          const trace: string[] = [];
+          (window as unknown as { undoTrace: string[] }).undoTrace = trace;
+          for (const type of ['pointerdown', 'pointerup', 'pointercancel', 'click', 'keydown'])
+            window.addEventListener(
+              type,
+              (e) => {
+                const t = e.target as Element | null;
+                const key = e instanceof KeyboardEvent ? ` ${e.key}${e.ctrlKey ? '+ctrl' : ''}` : '';
+                trace.push(`${type}${key} on ${t?.getAttribute?.('aria-label') ?? t?.tagName ?? '?'} at ${Math.round(performance.now())}`);
+              },
+              { capture: true },
+            );
+        });
         if (how === 'button') await press(g.page, 'undo the last cut (Ctrl+Z)');
         else await g.page.keyboard.press('Control+z');
-        await g.waitFor(() => (window.game as unknown as ClothLab).undoCount() === 0, null);
+        try {
+          await g.waitFor(() => (window.game as unknown as ClothLab).undoCount() === 0, null);
+        } catch (error) {
+          const seen = await g.page.evaluate(() => ({
+            undoCount: (window.game as unknown as ClothLab).undoCount(),
+            stroking: (window.game as unknown as { stroking(): boolean }).stroking(),
+            focus: document.activeElement?.getAttribute('aria-label') ?? document.activeElement?.tagName,
+            trace: (window as unknown as { undoTrace: string[] }).undoTrace,
+            now: Math.round(performance.now()),
+          }));
+          throw new Error(`undo by ${how} did not come: ${JSON.stringify(seen)}; ${String(error)}`);
+        }
         const back = await state();
         // Exactly as before the stroke: every point's position and velocity (bit for bit: the world
         // was saved and put back, not rebuilt), the links, the count of cut links, the clock.
