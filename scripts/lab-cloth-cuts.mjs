@@ -3,8 +3,9 @@
 // first sheet and a pane of the window on the second. Each cut is a hand's trace of the printed line
 // (games/lab-cloth/traces.ts) cut on the still sheet of N points across (default the lab's 32): run
 // out of the line or inside it, wobbling across it, cutting across a star's points. Prints, for each
-// kind of cut, the stars it earned per shape (with --verbose, every cut's fit), then how many cuts of
-// each care earned 0, 1, 2 and 3 stars. --slack adds a finger's slack, m (the phone's: 0.09).
+// kind of cut, the stars it earned per shape (with --verbose, every cut's fit; with --flaws, its flaw
+// in spacings: Fit.flaw), then how many cuts of each care earned 0, 1, 2 and 3 stars. The notched cuts
+// follow the line but for one slip: a V notch or a slit cut into the shape. --slack adds a finger's slack, m (the phone's: 0.09).
 // Takes about half a minute.
 import { importSource } from './build.mjs';
 
@@ -18,7 +19,8 @@ const slack = option('slack', 0);
 if (!(Number.isInteger(size) && size >= 8 && size <= 48))
   throw new RangeError(`lab-cloth-cuts: --size must be an integer in [8, 48], got ${size}`);
 if (!(slack >= 0)) throw new RangeError(`lab-cloth-cuts: --slack must be >= 0 m, got ${slack}`);
-const verbose = args.includes('--verbose');
+/** --verbose: every cut's fit after its stars; --flaws: its flaw (Fit.flaw) in link spacings. */
+const verbose = args.includes('--flaws') ? 'flaw' : args.includes('--verbose');
 
 const lab = await importSource(
   'lab-cloth-cuts',
@@ -49,6 +51,11 @@ const CUTS = [
   { care: 'careless', name: '1 in', style: { offset: -1 * s } },
   { care: 'careless', name: '0.5 out, chop 2', style: { offset: 0.5 * s, chop: 2 * s } },
   { care: 'careless', name: '0.8 out, wobble 1, chop 1.5', style: { offset: 0.8 * s, wobble: 1 * s, chop: 1.5 * s } },
+  { care: 'notched', name: 'on the line, notch 1', style: { offset: 0, notch: 1 * s } },
+  { care: 'notched', name: 'on the line, notch 1.5', style: { offset: 0, notch: 1.5 * s } },
+  { care: 'notched', name: '0.3 out, notch 2', style: { offset: 0.3 * s, notch: 2 * s } },
+  { care: 'notched', name: 'on the line, slit 1.5', style: { offset: 0, slit: 1.5 * s } },
+  { care: 'notched', name: '0.3 out, slit 2.5', style: { offset: 0.3 * s, slit: 2.5 * s } },
   { care: 'sloppy', name: '2 out', style: { offset: 2 * s } },
   { care: 'sloppy', name: '1 out, wobble 2', style: { offset: 1 * s, wobble: 2 * s } },
   { care: 'sloppy', name: '3 out', style: { offset: 3 * s } },
@@ -85,11 +92,19 @@ for (const cut of CUTS) {
       const challenge = new Challenge(world, cloth, cells, shapes);
       challenge.setSlack(slack);
       challenge.update();
-      cutTrace(world, cloth, traceLine(t.shape.outline, { ...cut.style, seed }), challenge.marks);
+      // A notch or a slit along a side (a third of the way round; a pane's first third ends at a corner).
+      const at = t.shape.style === 'pane' ? 0.65 : 0.3;
+      cutTrace(world, cloth, traceLine(t.shape.outline, { at, ...cut.style, seed }), challenge.marks);
       cells.loosen(world);
       const d = challenge.update().find((x) => x.shape === t.i);
       const star = d ? d.stars : 0;
-      stars.push(verbose ? `${star}(${d ? d.fit.toFixed(2) : 'kept'})` : String(star));
+      stars.push(
+        verbose === 'flaw'
+          ? `${star}(${d?.flaw !== undefined ? (d.flaw / s).toFixed(2) : '-'})`
+          : verbose
+            ? `${star}(${d ? d.fit.toFixed(2) : 'kept'})`
+            : String(star),
+      );
       const k = tally.get(cut.care) ?? [0, 0, 0, 0];
       k[star]++;
       tally.set(cut.care, k);

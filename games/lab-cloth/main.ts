@@ -38,6 +38,7 @@ import { fabricTexture } from './fabric';
 import { ClothGrab, gripFor } from './grab';
 import { LEVELS } from './levels';
 import { Challenge, type CutOut } from './pattern';
+import { browserStore, loadProgress, passMark, saveProgress } from './progress';
 import { applyWind, CLOTH_SUBSTEPS, createClothScene, DEFAULTS, LINE_Y, SHEET_WIDTH, SHEET_X, SHEETS, sheetGrid, YARD } from './scene';
 import { SheetView } from './sheet-view';
 import { CutUndo } from './undo';
@@ -54,16 +55,28 @@ const url = readUrlParams(
   USAGE,
 );
 const params = { ...url, substeps: CLOTH_SUBSTEPS, reset: () => shell.reset() };
-/** Which of LEVELS is up (0-based): ?level (1 to 4), default the first. */
-let levelIndex = numberParam('level', { default: 1, min: 1, max: LEVELS.length, integer: true }) - 1;
+/** The browser's storage for the best stars per sheet (progress.ts), null where there is none. */
+const store = browserStore();
+/** The best stars won on each sheet, kept over a reload (-1: not finished). */
+const levelStars = loadProgress(store, LEVELS.length);
+/** Whether sheet `i` (0-based) was passed: its best stars reach its pass mark (progress.ts passMark). */
+const passed = (i: number): boolean => levelStars[i]! >= passMark(LEVELS[i]!.shapes(DEFAULTS.size).length);
+/**
+ * Which of LEVELS is up (0-based): ?level (1 to 4); without it the first sheet not passed yet (kept
+ * over a reload), the first when every one is.
+ */
+let levelIndex = new URLSearchParams(location.search).has('level')
+  ? numberParam('level', { default: 1, min: 1, max: LEVELS.length, integer: true }) - 1
+  : Math.max(
+      0,
+      LEVELS.findIndex((_, i) => !passed(i)),
+    );
 // A level's own breeze, unless the URL sets one (the first level's is the URL's defaults).
 {
   const search = new URLSearchParams(location.search);
   if (!search.has('wind')) params.wind = LEVELS[levelIndex]!.wind;
   if (!search.has('gusts')) params.gusts = LEVELS[levelIndex]!.gusts;
 }
-/** Stars won on each level (-1: not finished). */
-const levelStars = LEVELS.map(() => -1);
 
 /** How much the Gust button adds to the wind, m/s, and how fast it comes and goes (1/s). */
 const GUST = 5,
@@ -348,7 +361,9 @@ const narrowText = window.matchMedia('(max-width: 480px)');
 const short = (long: string, brief: string): string => (narrowText.matches ? brief : long);
 /** Whether the page is used by touch (no keyboard to press P on). */
 const touchInput = window.matchMedia('(pointer: coarse)');
-const showNext = createActionButton('Next sheet ▶', () => nextSheet(), { at: 'top' });
+/** Whether the sheet up was finished short of its pass mark: the action button hangs it again. */
+let failed = false;
+const showNext = createActionButton('Next sheet ▶', () => (failed ? shell.reset() : nextSheet()), { at: 'top' });
 
 /** Hangs the next sheet (after the last, the first again) in its breeze. */
 function nextSheet(): void {
@@ -424,8 +439,8 @@ const ICON_UNDO =
   '<svg viewBox="0 0 24 24" width="20" height="20" aria-hidden="true" style="vertical-align:-4px"><path d="M9 14L4 9l5-5M4 9h10a6 6 0 0 1 0 12h-3" fill="none" stroke="currentColor" stroke-width="2" stroke-linecap="round" stroke-linejoin="round"/></svg>';
 const tools = createButtonBar(
   [
-    { label: 'Scissors', name: 'scissors: drag to cut (C)', onTap: () => setTool('cut'), accent: '#ffd166' },
-    { label: 'Hand', name: 'hand: drag to pull (C)', onTap: () => setTool('pull'), accent: '#ffd166' },
+    { label: 'Scissors', name: 'scissors: drag to cut (C)', accent: '#ffd166' },
+    { label: 'Hand', name: 'hand: drag to pull (C)', accent: '#ffd166' },
     {
       label: 'Gust',
       name: 'gust of wind (hold G)',
@@ -433,10 +448,39 @@ const tools = createButtonBar(
       onRelease: () => setBlowing(false),
       accent: '#8ecbff',
     },
-    { label: 'Undo', name: 'undo the last cut (Ctrl+Z)', onTap: () => undoCut(), accent: '#ffd166' },
+    { label: 'Undo', name: 'undo the last cut (Ctrl+Z)', accent: '#ffd166' },
   ],
   { label: 'tools', touchOnly: false },
 );
+/**
+ * Runs `action` when `button` is pressed: as the pointer that went down on it comes up on it, or on a
+ * click of no pointer (Enter or Space on the focused button; `click()`). A tap is not left to the
+ * click the browser makes of it: on a busy page (the cloth's frames take a second under load)
+ * Chromium sometimes delivers a tap's pointerdown and pointerup together and no click at all.
+ */
+function onPress(button: HTMLButtonElement, action: () => void): void {
+  let down: number | null = null;
+  button.addEventListener('pointerdown', (e) => {
+    if (e.button === 0) down = e.pointerId;
+  });
+  button.addEventListener('pointerup', (e) => {
+    if (down !== e.pointerId) return;
+    down = null;
+    if (!button.disabled) action();
+  });
+  for (const type of ['pointercancel', 'pointerleave'] as const)
+    button.addEventListener(type, (e) => {
+      if (down === e.pointerId) down = null;
+    });
+  // A pointer's click (detail >= 1) is the press its pointerup ran.
+  button.addEventListener('click', (e) => {
+    e.preventDefault();
+    if (e.detail === 0) action();
+  });
+}
+onPress(tools.buttons[0]!, () => setTool('cut'));
+onPress(tools.buttons[1]!, () => setTool('pull'));
+onPress(tools.buttons[3]!, () => undoCut());
 tools.buttons[0]!.innerHTML = `${ICON_SCISSORS} Scissors`;
 tools.buttons[1]!.innerHTML = `${ICON_HAND} Hand`;
 tools.buttons[2]!.innerHTML = `${ICON_WIND} Gust`;
@@ -875,21 +919,33 @@ function updateStatus(): void {
   const head = `${levelIndex + 1}/${LEVELS.length} ${level.title}`;
   const stars = (n: number) => `${'★'.repeat(n)}${'☆'.repeat(3 - n)}`;
   if (challenge.finished()) {
-    levelStars[levelIndex] = Math.max(levelStars[levelIndex]!, challenge.stars());
+    const won = challenge.stars(),
+      need = passMark(shapes.length);
+    if (won > levelStars[levelIndex]!) {
+      levelStars[levelIndex] = won;
+      saveProgress(store, levelStars);
+    }
     const last = levelIndex === LEVELS.length - 1;
     const missed = done.some((d) => d.drop === 'out');
+    failed = missed || won < need;
     status.set(
       missed
-        ? `${head}: ${short('the peg bag missed the basket. Undo (↶) and cut again, or try the next sheet.', 'missed the basket. Undo (↶) and cut again, or go on.')}`
-        : `${head}: done, ${challenge.stars()} of ${3 * shapes.length} stars. ${
-            last
-              ? `All sheets: ${levelStars.reduce((a, b) => a + Math.max(0, b), 0)} of ${3 * LEVELS.reduce((a, l) => a + l.shapes(params.size).length, 0)} stars.`
-              : `Next: ${LEVELS[levelIndex + 1]!.title} (${LEVELS[levelIndex + 1]!.day}).`
-          }`,
+        ? `${head}: ${short('the peg bag missed the basket. Undo (↶) and cut again, or try again.', 'missed the basket. Undo (↶) or try again.')}`
+        : failed
+          ? `${head}: ${short(
+              `failed, ${won} of ${3 * shapes.length} stars (${need} to pass). Undo (↶) and cut again, or try again.`,
+              `failed, ${won}/${3 * shapes.length} ★ (${need} to pass). Undo (↶) or try again.`,
+            )}`
+          : `${head}: done, ${won} of ${3 * shapes.length} stars. ${
+              last
+                ? `All sheets: ${levelStars.reduce((a, b) => a + Math.max(0, b), 0)} of ${3 * LEVELS.reduce((a, l) => a + l.shapes(params.size).length, 0)} stars.`
+                : `Next: ${LEVELS[levelIndex + 1]!.title} (${LEVELS[levelIndex + 1]!.day}).`
+            }`,
     );
-    showNext(true, last ? 'Start again ▶' : 'Next sheet ▶');
+    showNext(true, failed ? 'Try again ↺' : last ? 'Start again ▶' : 'Next sheet ▶');
     return;
   }
+  failed = false;
   showNext(false);
   if (note) {
     status.set(`${head}: ${note}`);
@@ -897,7 +953,10 @@ function updateStatus(): void {
   }
   const last = done[done.length - 1];
   if (!last) {
-    status.set(`${head}: ${level.ask}`);
+    const best = levelStars[levelIndex]!;
+    status.set(
+      `${head}: ${level.ask}${best >= 0 ? short(` Best so far: ${best} of ${3 * shapes.length} stars.`, ` Best ${best}/${3 * shapes.length} ★.`) : ''}`,
+    );
     return;
   }
   if (last.drop === 'falling') {
@@ -909,17 +968,21 @@ function updateStatus(): void {
   // Short of three stars: how to get them (on a sheet in a breeze, the paused sheet holds still).
   // A ragged edge (Fit.steady) is told apart from one that strayed: it cost the stars, not the place.
   const ragged = (last.steady ?? 1) < 0.97;
+  // A notch or a tear into the shape (Fit.clean) is told apart too.
+  const notched = (last.clean ?? 1) < Math.min(0.97, last.steady ?? 1);
   const tip =
     last.stars < 3
-      ? ragged
-        ? short(
-            ` A ragged edge: one smooth stroke along the dashes for ★★★${level.calm ? ' (pause to hold the sheet still)' : ''}.`,
-            ` Ragged: cut in one smooth stroke${level.calm ? ', paused' : ''}.`,
-          )
-        : short(
-            ` Cut on the dashed line for ★★★${level.calm ? ' (pause to hold the sheet still)' : ''}.`,
-            ` Cut on the dashes${level.calm ? ', paused,' : ''} for ★★★.`,
-          )
+      ? notched
+        ? short(' A notch or a tear into it: keep the scissors on the dashes for ★★★.', ' A notch: keep on the dashes for ★★★.')
+        : ragged
+          ? short(
+              ` A ragged edge: one smooth stroke along the dashes for ★★★${level.calm ? ' (pause to hold the sheet still)' : ''}.`,
+              ` Ragged: cut in one smooth stroke${level.calm ? ', paused' : ''}.`,
+            )
+          : short(
+              ` Cut on the dashed line for ★★★${level.calm ? ' (pause to hold the sheet still)' : ''}.`,
+              ` Cut on the dashes${level.calm ? ', paused,' : ''} for ★★★.`,
+            )
       : '';
   status.set(
     `${name[0]!.toUpperCase()}${name.slice(1)}: ${Math.round(last.fit * 100)}% ${stars(last.stars)}.${tip} Still to cut: ${left.join(', ')}.`,
@@ -996,6 +1059,8 @@ shell.expose({
   cut: () => cut,
   /** Strokes that can be undone (undo button, Ctrl/Cmd+Z). */
   undoCount: () => history.count,
+  /** Whether a scissors stroke is under way (the pointer down; an undo waits for it to end). */
+  stroking: () => stroke !== null,
   /** Undoes the last cutting stroke (as the undo button). */
   undoCut,
   /** Hangs the next sheet (as the Next sheet button). */

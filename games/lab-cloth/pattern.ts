@@ -18,7 +18,8 @@
  * three (three for 7 of 12: a messy cut round the three shapes seldom scores 9 of 9, its steadiness
  * counts, `Fit.steady`); careless ones (1.2 spacings
  * out, a wobble of 1.2, 1 inside, the star's points cut across 2 spacings back) 0.57-0.82, mostly
- * one; 2 spacings out or more, 0-0.15.
+ * one; 2 spacings out or more, 0-0.15. A notch or a stray slit or tear into the shape (`Fit.clean`)
+ * costs a star from a link and a half deep: a cut on the line with a notch 1.5 spacings deep 0.79.
  */
 import { type Cloth, isAlive, type PhysicsWorld, slotOf } from '@bitphysics/physics';
 import type { ClothCells } from './cells';
@@ -91,8 +92,8 @@ export function insidePolygon(poly: readonly number[], x: number, y: number): bo
   return inside;
 }
 
-/** Distance from point (x, y) to the closed polygon `poly`'s outline, m. */
-function outlineDistance(poly: readonly number[], x: number, y: number): number {
+/** Distance from point (x, y) to the closed polygon `poly`'s outline, m; the nearest point of it is written to `at`, if given. */
+function outlineDistance(poly: readonly number[], x: number, y: number, at?: [number, number]): number {
   let best = Infinity;
   const n = poly.length / 2;
   for (let i = 0, j = n - 1; i < n; j = i++) {
@@ -102,7 +103,36 @@ function outlineDistance(poly: readonly number[], x: number, y: number): number 
       dy = poly[2 * i + 1]! - ay,
       l2 = dx * dx + dy * dy;
     const t = l2 > 0 ? Math.max(0, Math.min(1, ((x - ax) * dx + (y - ay) * dy) / l2)) : 0;
-    best = Math.min(best, Math.hypot(x - ax - t * dx, y - ay - t * dy));
+    const d = Math.hypot(x - ax - t * dx, y - ay - t * dy);
+    if (d < best) {
+      best = d;
+      if (at) {
+        at[0] = ax + t * dx;
+        at[1] = ay + t * dy;
+      }
+    }
+  }
+  return best;
+}
+
+/**
+ * How far the closed polygon `poly` reaches across from its outline point (qx, qy) in the direction
+ * (ux, uy) (a unit vector into it), m: the distance to the next crossing of its outline (Infinity if none).
+ */
+function across(poly: readonly number[], qx: number, qy: number, ux: number, uy: number): number {
+  let best = Infinity;
+  const n = poly.length / 2;
+  for (let i = 0, j = n - 1; i < n; j = i++) {
+    const ax = poly[2 * j]!,
+      ay = poly[2 * j + 1]!,
+      ex = poly[2 * i]! - ax,
+      ey = poly[2 * i + 1]! - ay;
+    // q + t u = a + v e, solved for t > 0 and v in [0, 1].
+    const den = ux * ey - uy * ex;
+    if (Math.abs(den) < 1e-12) continue;
+    const t = ((ax - qx) * ey - (ay - qy) * ex) / den,
+      v = ((ax - qx) * uy - (ay - qy) * ux) / den;
+    if (t > 1e-6 && v >= 0 && v <= 1) best = Math.min(best, t);
   }
   return best;
 }
@@ -170,6 +200,24 @@ export const WINDING_FREE = 1.8,
 export const STEADY_FREE = 0.35,
   RAGGED_FULL = 0.35,
   RAGGED_COST = 0.2;
+
+/**
+ * A notch's or a stray tear's cost (cutFit's `clean`): how deep into the shape the edge's FLAW_RANK-th
+ * deepest sample lies, from the line or, for a cut running inside it, from the edge's mean depth (a
+ * notch's or a slit's tip; one stray sample alone does not count, nor does a cut run evenly inside
+ * the line, which the rest of the fit scores, nor a stray mark outside: another shape's cut nearby). A sample's depth is its distance d into
+ * the shape (out of it: -d), deeper than d past FIT_FULL spacings where the shape is narrow:
+ * d / (1 - d / w), w its width across there (d / w at most FLAW_REACH: a notch three quarters across
+ * a star's arm counts four times its depth). The flaw
+ * costs nothing up to FLAW_FREE link spacings (+ half the slack), FLAW_COST of the fit FLAW_FULL
+ * spacings further, linearly between: a slip a link and a half deep into a shape cut along its line
+ * costs a star (scripts/lab-cloth-cuts.mjs).
+ */
+export const FLAW_RANK = 2,
+  FLAW_REACH = 0.75,
+  FLAW_FREE = 1,
+  FLAW_FULL = 0.6,
+  FLAW_COST = 0.2;
 
 /**
  * A scissors' mark (ScissorsStroke's `marks`) counts toward a piece's edge within MARK_REACH link
@@ -292,8 +340,18 @@ export function shapeMasks(size: number, shapes: readonly Shape[] = SHAPES): Sha
 
 /** How well a piece's edge follows a shape's line (cutFit). */
 export interface Fit {
-  /** The fit, in [0, 1]: the harmonic mean of `onLine` and `followed`, times `steady`. */
+  /**
+   * The fit, in [0, 1]: the harmonic mean of `onLine` and `followed`, times the lesser of `steady`
+   * and `clean` (a wobbling cut's inward swings are its raggedness, not a second fault).
+   */
   fit: number;
+  /**
+   * How free of a notch or a stray tear the edge is, in [1 - FLAW_COST, 1]: 1 while `flaw` is within
+   * FLAW_FREE spacings (+ half the slack), down by FLAW_COST over the next FLAW_FULL spacings.
+   */
+  clean: number;
+  /** How deep into the shape the edge's FLAW_RANK-th deepest sample lies (from the line, or the edge's mean depth inside it), m (>= 0; see FLAW_RANK). */
+  flaw: number;
   /**
    * How steady the edge is, in [(1 - RAGGED_COST)^2, 1]: 1 while the standard deviation of its
    * samples' distances from the line is within STEADY_FREE spacings (+ half the slack), down by
@@ -314,9 +372,10 @@ export interface Fit {
  * 1 up to FIT_FULL spacings + `slack` m, 0 from FIT_ZERO spacings + `slack`, linearly between.
  * `onLine` is the edge's mean score, `followed` the line's, and the fit their harmonic mean (both
  * must be good: a piece with the shape and cloth round it lies off the line; one cut inside the line,
- * or across a star's arms, leaves parts of the line unfollowed) times `steady`: a ragged edge (its
- * distance from the line wandering) costs up to RAGGED_COST, and so does a winding way of the
- * scissors along it, `path` m (pieceEdge's `path.length`; 0: not known) against the line's length.
+ * or across a star's arms, leaves parts of the line unfollowed) times the lesser of `steady` and
+ * `clean`: a ragged edge (its distance from the line wandering) costs up to RAGGED_COST, and so does
+ * a winding way of the scissors along it, `path` m (pieceEdge's `path.length`; 0: not known) against
+ * the line's length; a notch, a slit or a tear into the shape costs up to FLAW_COST (see FLAW_RANK).
  * 0 for an empty edge.
  * @throws RangeError if `spacing` is not positive or `slack` or `path` is negative or not finite.
  */
@@ -324,20 +383,44 @@ export function cutFit(shape: Shape, mask: ShapeMask, edge: readonly number[], s
   if (!(spacing > 0)) throw new RangeError(`cutFit: spacing must be > 0 m, got ${spacing}`);
   if (!(slack >= 0) || !Number.isFinite(slack)) throw new RangeError(`cutFit: slack must be a finite number >= 0, got ${slack}`);
   if (!(path >= 0) || !Number.isFinite(path)) throw new RangeError(`cutFit: path must be a finite length >= 0 m, got ${path}`);
-  if (edge.length === 0) return { fit: 0, onLine: 0, followed: 0, steady: 1 };
+  if (edge.length === 0) return { fit: 0, onLine: 0, followed: 0, steady: 1, clean: 1, flaw: 0 };
   const full = FIT_FULL * spacing + slack,
     zero = FIT_ZERO * spacing + slack;
   const score = (d: number): number => Math.max(0, Math.min(1, (zero - d) / (zero - full)));
   let onLine = 0,
     dSum = 0,
     dSum2 = 0;
+  // The FLAW_RANK largest depths inside the line (a sample outside it has a negative depth: its
+  // distance out), largest first, and the mean depth.
+  const worst = new Float64Array(FLAW_RANK).fill(-Infinity);
+  let depthSum = 0;
+  const q: [number, number] = [0, 0];
   for (let k = 0; k < edge.length; k += 2) {
-    const d = outlineDistance(shape.outline, edge[k]!, edge[k + 1]!);
+    const x = edge[k]!,
+      y = edge[k + 1]!;
+    const d = outlineDistance(shape.outline, x, y, q);
     onLine += score(d);
     dSum += d;
     dSum2 += d * d;
+    const inside = insidePolygon(shape.outline, x, y);
+    depthSum += inside ? d : -d;
+    // Into a narrow part (a star's arm), a notch is deeper than its distance from the line: it
+    // reaches across part of the cloth there (`across`), and one halfway across nearly parts it.
+    let depth = inside ? d : -d;
+    if (inside && d > FIT_FULL * spacing) {
+      const width = across(shape.outline, q[0], q[1], (x - q[0]) / d, (y - q[1]) / d);
+      depth = d / (1 - Math.min(FLAW_REACH, d / width));
+    }
+    if (depth > worst[FLAW_RANK - 1]!) {
+      let j = FLAW_RANK - 1;
+      for (; j > 0 && worst[j - 1]! < depth; j--) worst[j] = worst[j - 1]!;
+      worst[j] = depth;
+    }
   }
   const n = edge.length / 2;
+  // Measured from the line, or from the cut's mean depth where it runs inside the line.
+  const flaw = n >= FLAW_RANK ? Math.max(0, worst[FLAW_RANK - 1]! - Math.max(0, depthSum / n)) : 0;
+  const clean = 1 - FLAW_COST * Math.min(1, Math.max(0, flaw - FLAW_FREE * spacing - slack / 2) / (FLAW_FULL * spacing));
   onLine /= n;
   // How much the edge's distance from the line wanders (its standard deviation): a steady cut keeps
   // one distance, a ragged one zigzags across the line however near it stays on the whole.
@@ -361,8 +444,8 @@ export function cutFit(shape: Shape, mask: ShapeMask, edge: readonly number[], s
   // The sharp corners weigh as much as the rest of the line: cutting across a star's points misses
   // little of its line but much of its look.
   const followed = mask.corners.length > 0 ? (mean(mask.line) + mean(mask.corners)) / 2 : mean(mask.line);
-  const fit = onLine + followed > 0 ? (steady * 2 * onLine * followed) / (onLine + followed) : 0;
-  return { fit, onLine, followed, steady };
+  const fit = onLine + followed > 0 ? (Math.min(clean, steady) * 2 * onLine * followed) / (onLine + followed) : 0;
+  return { fit, onLine, followed, steady, clean, flaw };
 }
 
 /** Per shape, the cells (row-major indices) of a sheet of `size` points across whose centres at rest lie inside it. */
@@ -380,6 +463,10 @@ export interface CutOut {
   stars: number;
   /** How steady its edge is (Fit.steady), in [(1 - RAGGED_COST)^2, 1]; absent when no piece holds it. */
   steady?: number;
+  /** How free of a notch or a stray tear its edge is (Fit.clean), in [1 - FLAW_COST, 1]; absent when no piece holds it. */
+  clean?: number;
+  /** Its edge's flaw (Fit.flaw), m; absent when no piece holds it. */
+  flaw?: number;
   /** The piece it came away in (an index of that moment's ClothPieces), -1 if none holds any of it (cut to bits). */
   piece: number;
   /**
@@ -516,9 +603,9 @@ export function scoreCutOuts(
     }
     const path = { length: 0 };
     const edge = edgeOf(world, cloth, cells, pieces, best, how.marks ?? [], path);
-    const { fit, steady } = cutFit(shapes[s]!, mask, edge, sheetGrid(cloth.columns).spacing, how.slack, path.length);
+    const { fit, steady, clean, flaw } = cutFit(shapes[s]!, mask, edge, sheetGrid(cloth.columns).spacing, how.slack, path.length);
     if (shapes[s]?.drop) out.push({ shape: s, fit, stars: 0, piece: best, drop: 'falling', landedAt: Number.NaN });
-    else out.push({ shape: s, fit, stars: starsFor(fit), steady, piece: best });
+    else out.push({ shape: s, fit, stars: starsFor(fit), steady, clean, flaw, piece: best });
   }
   return out;
 }

@@ -20,6 +20,18 @@ export interface TraceStyle {
   chop?: number;
   /** Seed of the wobble's waves (an integer). */
   seed?: number;
+  /**
+   * Depth of a V-shaped notch cut into the shape (a slip of the scissors), m: the trace dips this far
+   * inside the line over as far each side along it, at `at` of the way round. 0: none.
+   */
+  notch?: number;
+  /**
+   * Length of a stray slit cut straight into the shape from the line (the scissors run in and come
+   * back out the same way), m, at `at` of the way round. 0: none.
+   */
+  slit?: number;
+  /** Where round the trace the notch or the slit is, a fraction of its points in [0, 1). Default 0.3. */
+  at?: number;
 }
 
 /** A small xorshift generator of numbers in [0, 1) from an integer seed. */
@@ -49,15 +61,18 @@ function area2(poly: readonly number[]): number {
  * @throws RangeError if the outline has fewer than 3 corners or a length of the style is negative (but `offset`) or not finite.
  */
 export function traceLine(outline: readonly number[], style: TraceStyle = {}): number[] {
-  const { offset = 0, wobble = 0, chop = 0, seed = 1 } = style;
+  const { offset = 0, wobble = 0, chop = 0, seed = 1, notch = 0, slit = 0, at: where = 0.3 } = style;
   if (outline.length < 6 || outline.length % 2)
     throw new RangeError(`traceLine: outline needs 3 or more corners (x, y pairs), got ${outline.length} numbers`);
   for (const [name, v] of [
     ['wobble', wobble],
     ['chop', chop],
+    ['notch', notch],
+    ['slit', slit],
   ] as const)
     if (!(v >= 0) || !Number.isFinite(v)) throw new RangeError(`traceLine: ${name} must be a finite number >= 0 m, got ${v}`);
   if (!Number.isFinite(offset)) throw new RangeError(`traceLine: offset must be finite, got ${offset}`);
+  if (!(where >= 0 && where < 1)) throw new RangeError(`traceLine: at must be in [0, 1), got ${where}`);
   const sign = Math.sign(area2(outline)) || 1;
   const n = outline.length / 2;
   const at = (k: number): [number, number] => [outline[2 * ((k + n) % n)]!, outline[2 * ((k + n) % n) + 1]!];
@@ -98,7 +113,10 @@ export function traceLine(outline: readonly number[], style: TraceStyle = {}): n
   const waves = Array.from({ length: 4 }, () => ({ f: 2 + Math.floor(rand() * 8), phase: rand() * 2 * Math.PI, a: 0.5 + rand() }));
   const rms = Math.sqrt(waves.reduce((s, w) => s + (w.a * w.a) / 2, 0));
   const count = pts.length / 2;
+  const k0 = Math.floor(where * count);
   const out: number[] = [];
+  /** The slit's points (in, then back out), spliced in at k0. */
+  let slitPoints: number[] = [];
   for (let k = 0; k < count; k++) {
     const a = (k - 4 + count) % count,
       b = (k + 4) % count;
@@ -110,10 +128,23 @@ export function traceLine(outline: readonly number[], style: TraceStyle = {}): n
     const u = k / count;
     let w = 0;
     for (const v of waves) w += v.a * Math.sin(2 * Math.PI * v.f * u + v.phase);
-    const d = offset + (wobble * w) / rms;
+    // The notch: a V into the shape, its sides about 1 cm apart per point (the points' spacing).
+    const along = Math.min(Math.abs(k - k0), count - Math.abs(k - k0)) * 0.01;
+    const d = offset + (wobble * w) / rms - (notch > 0 ? notch * Math.max(0, 1 - along / notch) : 0);
     // The outward normal: the tangent turned a quarter against the winding.
-    out.push(pts[2 * k]! + sign * ty * d, pts[2 * k + 1]! - sign * tx * d);
+    const x = pts[2 * k]! + sign * ty * d,
+      y = pts[2 * k + 1]! - sign * tx * d;
+    out.push(x, y);
+    if (k === k0 && slit > 0) {
+      const steps = Math.max(1, Math.ceil(slit / 0.01));
+      const go: number[] = [];
+      for (let i = 1; i <= steps; i++) go.push(x - (sign * ty * slit * i) / steps, y + (sign * tx * slit * i) / steps);
+      const back: number[] = [];
+      for (let i = steps - 1; i >= 0; i--) back.push(x - (sign * ty * slit * i) / steps, y + (sign * tx * slit * i) / steps);
+      slitPoints = [...go, ...back];
+    }
   }
+  if (slitPoints.length > 0) out.splice(2 * k0 + 2, 0, ...slitPoints);
   return out;
 }
 
