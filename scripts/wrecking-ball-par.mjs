@@ -1,18 +1,22 @@
-// `node scripts/wrecking-ball-par.mjs [--full] [level ...]`: how many taps the wrecking ball's levels
+// `node scripts/wrecking-ball-par.mjs [--full | --careful] [level ...]`: how many taps the wrecking ball's levels
 // (1-based; default 1 to 5) take a first-time player, headless. Three plain ways a stranger taps, each
 // tap 2 s after the last swing's moves end (once the count has settled; the ball still swinging from
 // its hit): `top` taps the highest standing piece of each structure in turn (what the eye goes to),
 // `biggest` the piece a third of the way up the structure with the most standing raised pieces (those
 // that stood above the ground), `near` the standing raised piece nearest the ball. Each way is played
 // from first taps a few steps apart (FIRST_TAP_STEPS). Prints, per level, way and start, the fallen
-// count after each tap until the level was cleared (or "not in 8"), a tap whose ball never touched
-// the structure of the piece tapped marked "(missed)"; then each level's budget
-// (games/wrecking-ball/scene.ts swingBudget) beside the most taps any game took, the taps that missed
-// and the median time from a tap to the ball's first touch of the structure. The ball touches the
+// count after each tap until the level was cleared (or "not in 8") and the stars it earned
+// (`swingStars`; none past the budget), a tap whose ball never touched the structure of the piece
+// tapped marked "(missed)"; then each level's budget (games/wrecking-ball/scene.ts swingBudget) and
+// par beside the most taps any game took, how many games earned each number of stars, the taps that
+// missed and the median time from a tap to the ball's first touch of the structure. The ball touches the
 // structure when a contact of the two begins, or when it is in contact with it as the swing arrives
 // or within half a second after (a ball left resting against a structure begins no contact when the
-// swing drives it in). With --full every game goes on to 8 taps (to compare clearing shares). Takes a
-// minute or two a level.
+// swing drives it in). With --full every game goes on to 8 taps (to compare clearing shares). With
+// --careful, instead, a careful player's game against the level's par (`swingPar`): each swing the
+// standing raised piece that brings down the most (every one tried, from the first start), and the
+// pieces a first swing at each raised piece brings down, best first. Takes a minute or two a level
+// (--careful a few minutes a swing; meant for the first levels).
 import { importSource } from './build.mjs';
 
 /** Most taps a way gets before it counts as not clearing the level. */
@@ -28,6 +32,7 @@ const wb = await importSource(
   "export * from './games/wrecking-ball/scene.ts'; export { contactEvents, createPhysicsWorld, forEachContact, step } from '@bitphysics/physics';",
 );
 const full = process.argv.includes('--full');
+const careful = process.argv.includes('--careful');
 const levels = process.argv
   .slice(2)
   .filter((a) => !a.startsWith('--'))
@@ -88,6 +93,7 @@ const ways = {
   },
 };
 const most = {},
+  stars = {},
   missed = {},
   tapped = {},
   toHit = {};
@@ -96,8 +102,59 @@ const median = (xs) => {
   const s = [...xs].sort((a, b) => a - b);
   return s.length ? s[Math.floor(s.length / 2)] : null;
 };
+/**
+ * Level `level` played from step FIRST_TAP_STEPS[0] by tapping the pieces at indices `taps` in turn,
+ * each tap once the last swing has settled as in the ways' games: the pieces and the fallen count.
+ */
+const playTaps = (level, taps) => {
+  const world = wb.createPhysicsWorld(wb.wreckingBallWorldOptions());
+  const h = wb.buildWreckingBall(world, { level });
+  const run = () => {
+    wb.step(world);
+    wb.scorePieces(world, h.pieces);
+  };
+  for (let k = 0; k < FIRST_TAP_STEPS[0]; k++) wb.step(world);
+  for (const index of taps) {
+    wb.aimAt(world, h, h.pieces[index].body);
+    let idle = 0;
+    for (let k = 0; k < 60 * 15 && (h.controls.moves.length > 0 || idle++ < 30); k++) run();
+    for (let k = 0; k < 90; k++) run();
+  }
+  return { pieces: h.pieces, down: wb.fallenCount(h.pieces) };
+};
+if (careful) {
+  for (const level of chosen) {
+    const first = playTaps(level, []);
+    const target = wb.clearTarget(first.pieces, level);
+    const taps = [],
+      downs = [],
+      alone = [];
+    let pieces = first.pieces,
+      down = 0;
+    while (down < target && taps.length < wb.swingBudget(level)) {
+      let best = null;
+      pieces.forEach((p, i) => {
+        if (p.fallen || !raised(p)) return;
+        const r = playTaps(level, [...taps, i]);
+        if (taps.length === 0) alone.push(r.down);
+        if (best === null || r.down > best.r.down) best = { i, r, kind: p.kind };
+      });
+      if (best === null) break;
+      taps.push(best.i);
+      pieces = best.r.pieces;
+      down = best.r.down;
+      downs.push(`${down} (${best.kind})`);
+    }
+    alone.sort((a, b) => b - a);
+    console.log(
+      `level ${level} careful: ${down >= target ? `cleared in ${taps.length}` : `not in ${taps.length}`} (par ${wb.swingPar(level)}, clear at ${target}; down after each swing ${downs.join(' ')}); a first swing at each of the ${alone.length} raised pieces downs ${alone.join(' ')}, ${alone.filter((d) => d >= target).length} of them clearing it alone`,
+    );
+  }
+  process.exit(0);
+}
 for (const level of chosen) {
   most[level] = 0;
+  stars[level] = [];
   missed[level] = 0;
   tapped[level] = 0;
   toHit[level] = [];
@@ -149,12 +206,14 @@ for (const level of chosen) {
         cleared = !full && wb.fallenCount(h.pieces) >= target;
       }
       most[level] = Math.max(most[level], cleared ? taps : MOST_TAPS + 1);
+      const earned = cleared && taps <= wb.swingBudget(level) ? wb.swingStars(taps, true, level) : 0;
+      stars[level].push(earned);
       console.log(
-        `level ${level} ${name.padEnd(7)} first tap at step ${String(first).padEnd(2)} ${cleared ? `cleared in ${taps} taps` : `not in ${MOST_TAPS}`} (${wb.fallenCount(h.pieces)} of ${h.pieces.length} down, clear at ${target}; down after each tap ${downs.join(' ')})`,
+        `level ${level} ${name.padEnd(7)} first tap at step ${String(first).padEnd(2)} ${cleared ? `cleared in ${taps} taps, ${earned} stars` : `not in ${MOST_TAPS}`} (${wb.fallenCount(h.pieces)} of ${h.pieces.length} down, clear at ${target}; down after each tap ${downs.join(' ')})`,
       );
     }
 }
 for (const level of chosen)
   console.log(
-    `level ${level}: budget ${wb.swingBudget(level)}, the most any way took ${most[level] > MOST_TAPS ? `over ${MOST_TAPS}` : most[level]}; missed ${missed[level]} of ${tapped[level]} taps; tap to touch median ${median(toHit[level])?.toFixed(2) ?? '-'} s, longest ${toHit[level].length ? Math.max(...toHit[level]).toFixed(2) : '-'} s`,
+    `level ${level}: budget ${wb.swingBudget(level)}, par ${wb.swingPar(level)}, the most any way took ${most[level] > MOST_TAPS ? `over ${MOST_TAPS}` : most[level]}; stars ${[3, 2, 1, 0].map((n) => `${n}: ${stars[level].filter((e) => e === n).length}`).join(', ')}; missed ${missed[level]} of ${tapped[level]} taps; tap to touch median ${median(toHit[level])?.toFixed(2) ?? '-'} s, longest ${toHit[level].length ? Math.max(...toHit[level]).toFixed(2) : '-'} s`,
   );

@@ -3,7 +3,7 @@
  * joints) into towers, brick walls and plank stacks of 3D boxes. Steer the crane: slew the jib, run the
  * trolley in and out, raise and lower the hook; the ball lags behind and swings, so pump it like a
  * pendulum. Or grab the ball with the mouse, pull it back and let go. Every piece that falls scores
- * (more for pieces that stood high); knock down 40 % of the pieces that stood above the ground on
+ * (more for pieces that stood high); knock down 45 % of the pieces that stood above the ground on
  * level 1, 60 % after (`clearTarget`), within the level's swings (`swingBudget`) to clear it; levels
  * are seeded.
  *

@@ -61,9 +61,9 @@ describe('wrecking-ball scene', () => {
   it('the clear target counts the pieces that stood above the ground, not the bottom row', () => {
     // A playtester flattened level 1 and stayed at 16 of the 19 then needed (70% of 27): its lowest
     // bricks, logs and blocks lay where they stood. The target is a share of the raised pieces, so
-    // the raised pieces alone can clear any level: 40% on level 1 (a first-time player lost it twice
-    // at 70%), 60% after.
-    expect([1, 2, 3, 4, 5, 9].map(clearShare)).toEqual([0.4, 0.6, 0.6, 0.6, 0.6, 0.6]);
+    // the raised pieces alone can clear any level: 45% on level 1 (a first-time player lost it twice
+    // at 70%; at 40% any swing into its wall or plank stack cleared it), 60% after.
+    expect([1, 2, 3, 4, 5, 9].map(clearShare)).toEqual([0.45, 0.6, 0.6, 0.6, 0.6, 0.6]);
     expect(() => clearShare(0)).toThrow(/level must be an integer >= 1, got 0/);
     for (let level = 1; level <= 5; level++) {
       const { h } = build(level);
@@ -71,8 +71,8 @@ describe('wrecking-ball scene', () => {
       expect(onGround).toBeGreaterThan(0);
       expect(clearTarget(h.pieces, level)).toBe(Math.ceil(clearShare(level) * (h.pieces.length - onGround)));
     }
-    // Level 1: 27 pieces, 6 of them on the ground; 9 of the 21 raised clear it.
-    expect(clearTarget(build(1).h.pieces, 1)).toBe(9);
+    // Level 1: 27 pieces, 6 of them on the ground; 10 of the 21 raised clear it.
+    expect(clearTarget(build(1).h.pieces, 1)).toBe(10);
   });
 
   it('keeps every structure standing without a hit, and slews with the mass of a crane: a ramp up, a coast, a brake', () => {
@@ -314,8 +314,8 @@ describe('wrecking-ball scene', () => {
     // lie within 2.5 m of each other) that still has one, 2 s after the last swing's moves are over
     // (once the count has settled): what the eye goes to, not the best plan. At 70% of the raised
     // pieces (15) this took 5 swings (5, 11, 11, 14, 15 down), one more than the level allowed: a
-    // first-time player lost level 1 twice. Measured at 40% (9): 9 down in 2 swings (the tower, then
-    // the wall); over first taps a few steps apart (scripts/wrecking-ball-par.mjs) 2 or 3.
+    // first-time player lost level 1 twice. At 45% (10) the script's way of this
+    // (scripts/wrecking-ball-par.mjs, first taps a few steps apart) takes 2 swings: 5 down, then 14 to 16.
     const { world, h } = build(1);
     const groups: (typeof h.pieces)[] = [];
     for (const p of h.pieces) {
@@ -380,12 +380,14 @@ describe('wrecking-ball scene', () => {
     expect(() => tally.add(0, 0, 0, -1, 0)).toThrow(/points must be >= 0, got -1/);
   });
 
-  it('swings and stars: level 1 allows 4 (3 stars in 2), levels 2 and 3 5 (in 3), later 6 (in 4); none uncleared', () => {
+  it('swings and stars: level 1 allows 4 (3 stars in 1), level 2 5 (in 2), level 3 5 (in 3), later 6 (in 4); none uncleared', () => {
     // Level 3 took a stranger's taps 4 to 6 swings against its 4 (scripts/wrecking-ball-par.mjs,
-    // 70% to clear); at 60% 3 to 5 in most games, and it allows 5.
+    // 70% to clear); at 60% 3 to 5 in most games, and it allows 5. Levels 1 and 2 had pars of 2 and
+    // 3, which every careless game of the script met on level 1; their pars now ask for aim.
     expect([1, 2, 3, 4, 5, 12].map(swingBudget)).toEqual([4, 5, 5, 6, 6, 6]);
-    expect([1, 3, 5].map(swingPar)).toEqual([2, 3, 4]);
-    expect([1, 2, 3, 4].map((n) => swingStars(n, true, 1))).toEqual([3, 3, 2, 1]);
+    expect([1, 2, 3, 4, 5, 12].map(swingPar)).toEqual([1, 2, 3, 4, 4, 4]);
+    expect([1, 2, 3, 4].map((n) => swingStars(n, true, 1))).toEqual([3, 2, 1, 1]);
+    expect([1, 2, 3, 4, 5].map((n) => swingStars(n, true, 2))).toEqual([3, 3, 2, 1, 1]);
     expect([1, 2, 3, 4, 5].map((n) => swingStars(n, true, 3))).toEqual([3, 3, 3, 2, 1]);
     expect(swingStars(2, false, 1)).toBe(0);
     expect(() => swingBudget(1.5)).toThrow(/swingBudget: level must be an integer >= 1, got 1.5/);
