@@ -37,6 +37,7 @@ import {
   getSound,
   isTouchDevice,
   numberParam,
+  onButtonPress,
   pageLayout,
   seedParam,
 } from '@bitphysics/game-kit';
@@ -506,7 +507,7 @@ message.className = 'bh-message';
 message.dataset.hud = 'message';
 status.append(numbers, message);
 pageLayout().status.append(status);
-message.addEventListener('click', () => advance());
+onButtonPress(message, () => advance());
 /** The big next-level / play-again button over the scene. */
 const setAction = createActionButton('Level 2 ▶', () => advance());
 let shownAction = '';

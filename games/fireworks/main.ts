@@ -53,6 +53,7 @@ import {
   flagParam,
   getSound,
   numberParam,
+  onButtonPress,
   pageLayout,
   plural,
   SHELL_CONTROLS,
@@ -1030,7 +1031,7 @@ function drawMeeting(t: number, r: number): void {
 const status = createStatusRow({ name: 'lanterns' });
 const modeButton = document.createElement('button');
 modeButton.type = 'button';
-modeButton.addEventListener('click', () => setLanternShow(!lanternShow));
+onButtonPress(modeButton, () => setLanternShow(!lanternShow));
 status.hint.append(modeButton);
 const touch = pageLayout().touch();
 // A finger's target: 44 x 44 px at least on a touch screen (game-kit's row buttons are 36 px tall there).

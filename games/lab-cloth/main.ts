@@ -439,8 +439,8 @@ const ICON_UNDO =
   '<svg viewBox="0 0 24 24" width="20" height="20" aria-hidden="true" style="vertical-align:-4px"><path d="M9 14L4 9l5-5M4 9h10a6 6 0 0 1 0 12h-3" fill="none" stroke="currentColor" stroke-width="2" stroke-linecap="round" stroke-linejoin="round"/></svg>';
 const tools = createButtonBar(
   [
-    { label: 'Scissors', name: 'scissors: drag to cut (C)', accent: '#ffd166' },
-    { label: 'Hand', name: 'hand: drag to pull (C)', accent: '#ffd166' },
+    { label: 'Scissors', name: 'scissors: drag to cut (C)', onTap: () => setTool('cut'), accent: '#ffd166' },
+    { label: 'Hand', name: 'hand: drag to pull (C)', onTap: () => setTool('pull'), accent: '#ffd166' },
     {
       label: 'Gust',
       name: 'gust of wind (hold G)',
@@ -448,39 +448,10 @@ const tools = createButtonBar(
       onRelease: () => setBlowing(false),
       accent: '#8ecbff',
     },
-    { label: 'Undo', name: 'undo the last cut (Ctrl+Z)', accent: '#ffd166' },
+    { label: 'Undo', name: 'undo the last cut (Ctrl+Z)', onTap: () => undoCut(), accent: '#ffd166' },
   ],
   { label: 'tools', touchOnly: false },
 );
-/**
- * Runs `action` when `button` is pressed: as the pointer that went down on it comes up on it, or on a
- * click of no pointer (Enter or Space on the focused button; `click()`). A tap is not left to the
- * click the browser makes of it: on a busy page (the cloth's frames take a second under load)
- * Chromium sometimes delivers a tap's pointerdown and pointerup together and no click at all.
- */
-function onPress(button: HTMLButtonElement, action: () => void): void {
-  let down: number | null = null;
-  button.addEventListener('pointerdown', (e) => {
-    if (e.button === 0) down = e.pointerId;
-  });
-  button.addEventListener('pointerup', (e) => {
-    if (down !== e.pointerId) return;
-    down = null;
-    if (!button.disabled) action();
-  });
-  for (const type of ['pointercancel', 'pointerleave'] as const)
-    button.addEventListener(type, (e) => {
-      if (down === e.pointerId) down = null;
-    });
-  // A pointer's click (detail >= 1) is the press its pointerup ran.
-  button.addEventListener('click', (e) => {
-    e.preventDefault();
-    if (e.detail === 0) action();
-  });
-}
-onPress(tools.buttons[0]!, () => setTool('cut'));
-onPress(tools.buttons[1]!, () => setTool('pull'));
-onPress(tools.buttons[3]!, () => undoCut());
 tools.buttons[0]!.innerHTML = `${ICON_SCISSORS} Scissors`;
 tools.buttons[1]!.innerHTML = `${ICON_HAND} Hand`;
 tools.buttons[2]!.innerHTML = `${ICON_WIND} Gust`;

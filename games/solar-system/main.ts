@@ -33,7 +33,16 @@
  * ?date=ISO date, ?distances=compressed|true.
  */
 
-import { choiceParam, createButtonBar, createPanel, flagParam, getSound, numberParam, pageLayout } from '@bitphysics/game-kit';
+import {
+  choiceParam,
+  createButtonBar,
+  createPanel,
+  flagParam,
+  getSound,
+  numberParam,
+  onButtonPress,
+  pageLayout,
+} from '@bitphysics/game-kit';
 import { startThreeGame } from '@bitphysics/game-kit/three';
 import {
   createPhysicsWorld,
@@ -1958,14 +1967,14 @@ function showCard(f: Flight): void {
   card.classList.toggle('bad', !won);
   const close = put(card, 'button', 'ss-card-close', '✕');
   close.setAttribute('aria-label', 'hide the result to see the map');
-  close.addEventListener('click', () => hideCard());
+  onButtonPress(close, () => hideCard());
   const buttons = document.createElement('div');
   buttons.className = 'ss-card-buttons';
   const button = (label: string, name: string, go: boolean, act: () => void): void => {
     const b = put(buttons, 'button', go ? 'ss-go' : '', label);
     b.setAttribute('aria-label', name);
     b.dataset.card = go ? 'go' : 'retry';
-    b.addEventListener('click', act);
+    onButtonPress(b, act);
   };
   if (won) {
     const r = lastResult!;

@@ -6,6 +6,7 @@
  * The pixi part lives in './pixi' (createPixiApp, startPixiGame) so 3D games need not load pixi.
  */
 
+export { onButtonPress } from './button-press.js';
 export type { GameHandle, GameStats } from './contract.js';
 export { exposeGame, markReady } from './contract.js';
 export type { DomPauseOverlay, DomPauseOverlayOptions } from './dom-pause-overlay.js';

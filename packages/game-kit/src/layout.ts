@@ -25,6 +25,7 @@
  * A readout a page appends straight to body with the HUD's class ('bp-hud') is moved into the side
  * column. DOM only. The first call of `pageLayout` builds it; later calls return the same one.
  */
+import { onButtonPress } from './button-press.js';
 
 /** Below this window width, CSS px, the layout is compact (toolbar and drawers). */
 export const COMPACT_MAX_WIDTH = 700;
@@ -213,10 +214,7 @@ export function pageLayout(): PageLayout {
     else b.textContent = icon;
     b.title = label;
     b.setAttribute('aria-label', label);
-    b.addEventListener('click', (e) => {
-      e.preventDefault();
-      onClick();
-    });
+    onButtonPress(b, onClick);
     buttons.append(b);
     return b;
   };

@@ -6,6 +6,8 @@
  * A button either holds a key (`key`: it sends the key's keydown when pressed and keyup when let go,
  * to `window`, so a game's own key handling runs unchanged) or calls `onPress` / `onRelease` / `onTap`.
  */
+
+import { onButtonPress } from './button-press.js';
 import { pageLayout } from './layout.js';
 
 /** Whether the device's main pointer is a finger (CSS `pointer: coarse`). */
@@ -104,7 +106,8 @@ function sendKey(type: 'keydown' | 'keyup', key: string): void {
 /**
  * Creates a bar of on-screen buttons in the controls row under the scene (on touch devices only,
  * unless `touchOnly` is false). A button with `key` holds that key while pressed; `onPress` /
- * `onRelease` run on finger down / up; `onTap` on a tap or click.
+ * `onRelease` run on finger down / up; `onTap` on a tap or click (`onButtonPress`: a tap counts even
+ * when a busy page gets no click of it).
  * @throws TypeError if a button has an empty label.
  */
 export function createButtonBar(buttons: readonly TouchButton[], options: ButtonBarOptions): ButtonBar {
@@ -146,13 +149,7 @@ export function createButtonBar(buttons: readonly TouchButton[], options: Button
       b.addEventListener('lostpointercapture', release);
       b.addEventListener('contextmenu', (e) => e.preventDefault());
     }
-    if (spec.onTap) {
-      const tap = spec.onTap;
-      b.addEventListener('click', (e) => {
-        e.preventDefault();
-        tap();
-      });
-    }
+    if (spec.onTap) onButtonPress(b, spec.onTap);
     return b;
   });
   bar.append(...els);
