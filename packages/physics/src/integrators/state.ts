@@ -132,15 +132,9 @@ export function gather(world: PhysicsWorld, s: IntegratorScratch): void {
  */
 export function saveState(world: PhysicsWorld, s: IntegratorScratch, setPrevious = true): void {
   const c = world.components;
-  const px = c.Position.x,
-    py = c.Position.y,
-    pz = c.Position.z;
-  const vx = c.Velocity.x,
-    vy = c.Velocity.y,
-    vz = c.Velocity.z;
-  const ox = c.PreviousPosition.x,
-    oy = c.PreviousPosition.y,
-    oz = c.PreviousPosition.z;
+  const { x: px, y: py, z: pz } = c.Position;
+  const { x: vx, y: vy, z: vz } = c.Velocity;
+  const { x: ox, y: oy, z: oz } = c.PreviousPosition;
   const [x0, y0, z0, u0, v0, w0] = s.x0 as [Float64Array, Float64Array, Float64Array, Float64Array, Float64Array, Float64Array];
   const m = s.movers;
   for (let i = 0; i < s.nMovers; i++) {
@@ -157,9 +151,7 @@ export function saveState(world: PhysicsWorld, s: IntegratorScratch, setPrevious
     v0[e] = vy[e]!;
     w0[e] = vz[e]!;
   }
-  const wx = c.AngularVelocity.x,
-    wy = c.AngularVelocity.y,
-    wz = c.AngularVelocity.z;
+  const { x: wx, y: wy, z: wz } = c.AngularVelocity;
   const [qa, qb, qc, qd] = s.q0 as [Float64Array, Float64Array, Float64Array, Float64Array];
   const [wa, wb, wc] = s.w0 as [Float64Array, Float64Array, Float64Array];
   const [ba, bb, bc] = s.wb0 as [Float64Array, Float64Array, Float64Array];
@@ -210,10 +202,8 @@ export function accelerationsAt(world: PhysicsWorld, s: IntegratorScratch, time:
  */
 export function accelerations(world: PhysicsWorld, s: IntegratorScratch): void {
   const c = world.components;
-  const fx = c.Force.x,
-    fy = c.Force.y,
-    fz = c.Force.z,
-    im = c.Mass.inv;
+  const { x: fx, y: fy, z: fz } = c.Force;
+  const im = c.Mass.inv;
   const g = world.gravity;
   const gx = g[0]!,
     gy = g[1]!,
@@ -247,10 +237,8 @@ const euler = new Float64Array(3);
  */
 export function angularAcceleration(world: PhysicsWorld, s: IntegratorScratch): void {
   const c = world.components;
-  const tx = c.Torque.x,
-    ty = c.Torque.y,
-    tz = c.Torque.z,
-    ii = c.Inertia.inv;
+  const { x: tx, y: ty, z: tz } = c.Torque;
+  const ii = c.Inertia.inv;
   const [bx, by, bz] = s.alpha as [Float64Array, Float64Array, Float64Array];
   const sp = s.spinners;
   const torqued = s.torqued;
@@ -297,12 +285,8 @@ export function writeTrial(
   dw: Float64Array[],
 ): void {
   const c = world.components;
-  const px = c.Position.x,
-    py = c.Position.y,
-    pz = c.Position.z;
-  const vx = c.Velocity.x,
-    vy = c.Velocity.y,
-    vz = c.Velocity.z;
+  const { x: px, y: py, z: pz } = c.Position;
+  const { x: vx, y: vy, z: vz } = c.Velocity;
   const [x0, y0, z0, u0, v0, w0] = s.x0 as [Float64Array, Float64Array, Float64Array, Float64Array, Float64Array, Float64Array];
   const [dxx, dxy, dxz] = dx as [Float64Array, Float64Array, Float64Array];
   const [dvx, dvy, dvz] = dv as [Float64Array, Float64Array, Float64Array];
@@ -339,9 +323,7 @@ export function writeAngularTrial(
 ): void {
   if (s.nSpinners === 0) return;
   const c = world.components;
-  const wx = c.AngularVelocity.x,
-    wy = c.AngularVelocity.y,
-    wz = c.AngularVelocity.z;
+  const { x: wx, y: wy, z: wz } = c.AngularVelocity;
   const [qa, qb, qc, qd] = s.q0 as [Float64Array, Float64Array, Float64Array, Float64Array];
   const [wa, wb, wc] = s.w0 as [Float64Array, Float64Array, Float64Array];
   const sp = s.spinners;
@@ -398,9 +380,7 @@ export function writeAngularTrial(
  */
 export function orientationSlope(world: PhysicsWorld, s: IntegratorScratch, out: Float64Array[]): void {
   const c = world.components;
-  const wx = c.AngularVelocity.x,
-    wy = c.AngularVelocity.y,
-    wz = c.AngularVelocity.z;
+  const { x: wx, y: wy, z: wz } = c.AngularVelocity;
   const sp = s.spinners;
   if (world.dimensions === 2) {
     const o = out[0]!;
@@ -439,9 +419,7 @@ export function stageSlopes(world: PhysicsWorld, s: IntegratorScratch, time: num
   if (evaluate) accelerationsAt(world, s, time);
   else accelerations(world, s);
   const c = world.components;
-  const vx = c.Velocity.x,
-    vy = c.Velocity.y,
-    vz = c.Velocity.z;
+  const { x: vx, y: vy, z: vz } = c.Velocity;
   const [kx, ky, kz] = s.kv as [Float64Array, Float64Array, Float64Array];
   const m = s.movers;
   for (let i = 0; i < s.nMovers; i++) {
@@ -525,13 +503,9 @@ export function shiftByGravity(world: PhysicsWorld, s: IntegratorScratch, k: num
     dz = k * g[2]!;
   if (dx === 0 && dy === 0 && dz === 0) return;
   const c = world.components;
-  const px = c.Position.x,
-    py = c.Position.y,
-    pz = c.Position.z;
+  const { x: px, y: py, z: pz } = c.Position;
   const m = s.movers;
-  const fx = c.Force.x,
-    fy = c.Force.y,
-    fz = c.Force.z;
+  const { x: fx, y: fy, z: fz } = c.Force;
   for (let i = 0; i < s.nMovers; i++) {
     const e = m[i]!;
     // A forced body (index < nForced) under any force keeps the scheme's own drift, so a body in
@@ -549,21 +523,15 @@ export function shiftByGravity(world: PhysicsWorld, s: IntegratorScratch, k: num
  */
 export function checkFinite(world: PhysicsWorld, s: IntegratorScratch): void {
   const c = world.components;
-  const px = c.Position.x,
-    py = c.Position.y,
-    pz = c.Position.z;
-  const vx = c.Velocity.x,
-    vy = c.Velocity.y,
-    vz = c.Velocity.z;
+  const { x: px, y: py, z: pz } = c.Position;
+  const { x: vx, y: vy, z: vz } = c.Velocity;
   let sum = 0;
   const m = s.movers;
   for (let i = 0; i < s.nMovers; i++) {
     const e = m[i]!;
     sum += px[e]! + py[e]! + pz[e]! + vx[e]! + vy[e]! + vz[e]!;
   }
-  const wx = c.AngularVelocity.x,
-    wy = c.AngularVelocity.y,
-    wz = c.AngularVelocity.z;
+  const { x: wx, y: wy, z: wz } = c.AngularVelocity;
   const sp = s.spinners;
   for (let i = 0; i < s.nSpinners; i++) {
     const e = sp[i]!;
