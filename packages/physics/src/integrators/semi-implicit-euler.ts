@@ -500,47 +500,21 @@ export function sieFree2(A: KernelArray[], P: Float64Array, ids: Int32Array | nu
     hy = P[SIE.HALF_GY_H]!,
     save = P[SIE.SAVE] === 1;
   let check = 0;
-  if (ids === null && save) {
-    for (let e = lo + 1; e <= hi; e++) {
-      const nvx = vx[e]! + gxh,
-        nvy = vy[e]! + gyh;
-      const x = px[e]!,
-        y = py[e]!;
+  for (let i = lo; i < hi; i++) {
+    const e = ids === null ? i + 1 : ids[i]!;
+    const nvx = vx[e]! + gxh,
+      nvy = vy[e]! + gyh;
+    const x = px[e]!,
+      y = py[e]!;
+    if (save) {
       ox[e] = x;
       oy[e] = y;
-      vx[e] = nvx;
-      vy[e] = nvy;
-      px[e] = x + (nvx - hx) * h;
-      py[e] = y + (nvy - hy) * h;
-      check += nvx + nvy + px[e]! * 0 + py[e]! * 0;
     }
-  } else if (ids === null) {
-    for (let e = lo + 1; e <= hi; e++) {
-      const nvx = vx[e]! + gxh,
-        nvy = vy[e]! + gyh;
-      vx[e] = nvx;
-      vy[e] = nvy;
-      px[e] = px[e]! + (nvx - hx) * h;
-      py[e] = py[e]! + (nvy - hy) * h;
-      check += nvx + nvy + px[e]! * 0 + py[e]! * 0;
-    }
-  } else {
-    for (let i = lo; i < hi; i++) {
-      const e = ids[i]!;
-      const nvx = vx[e]! + gxh,
-        nvy = vy[e]! + gyh;
-      const x = px[e]!,
-        y = py[e]!;
-      if (save) {
-        ox[e] = x;
-        oy[e] = y;
-      }
-      vx[e] = nvx;
-      vy[e] = nvy;
-      px[e] = x + (nvx - hx) * h;
-      py[e] = y + (nvy - hy) * h;
-      check += nvx + nvy + px[e]! * 0 + py[e]! * 0;
-    }
+    vx[e] = nvx;
+    vy[e] = nvy;
+    px[e] = x + (nvx - hx) * h;
+    py[e] = y + (nvy - hy) * h;
+    check += nvx + nvy + px[e]! * 0 + py[e]! * 0;
   }
   return check;
 }

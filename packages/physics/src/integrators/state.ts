@@ -3,7 +3,7 @@ import { evaluateForces } from '../forces/evaluate.js';
 import { rotateVector, rotateVectorInverse } from '../math/quaternion.js';
 import { reportNonFinite } from '../world/errors.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { eulerAcceleration, eulerBodyAcceleration } from './euler-equations.js';
+import { eulerAcceleration, eulerBodyAcceleration, storeUnitQuaternion } from './euler-equations.js';
 import { forcedBodies, freeBodies, spinningBodies } from './queries.js';
 
 /**
@@ -346,21 +346,9 @@ export function writeAngularTrial(
     torqued = s.torqued;
   for (let i = 0; i < s.nSpinners; i++) {
     const e = sp[i]!;
-    let x = qa[e]! + cq * d0[e]!,
-      y = qb[e]! + cq * d1[e]!,
-      z = qc[e]! + cq * d2[e]!,
-      w = qd[e]! + cq * d3[e]!;
-    const inv = 1 / Math.sqrt(x * x + y * y + z * z + w * w);
-    x *= inv;
-    y *= inv;
-    z *= inv;
-    w *= inv;
-    q.x[e] = x;
-    q.y[e] = y;
-    q.z[e] = z;
-    q.w[e] = w;
+    storeUnitQuaternion(q, e, qa[e]! + cq * d0[e]!, qb[e]! + cq * d1[e]!, qc[e]! + cq * d2[e]!, qd[e]! + cq * d3[e]!);
     if (body && torqued[e] === 2) {
-      rotateVector(x, y, z, w, ba[e]! + cw * e0[e]!, bb[e]! + cw * e1[e]!, bc[e]! + cw * e2[e]!, vec);
+      rotateVector(q.x[e]!, q.y[e]!, q.z[e]!, q.w[e]!, ba[e]! + cw * e0[e]!, bb[e]! + cw * e1[e]!, bc[e]! + cw * e2[e]!, vec);
       wx[e] = vec[0]!;
       wy[e] = vec[1]!;
       wz[e] = vec[2]!;
