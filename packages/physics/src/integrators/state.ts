@@ -426,39 +426,30 @@ export function stageSlopes(world: PhysicsWorld, s: IntegratorScratch, time: num
 export function accumulate(world: PhysicsWorld, s: IntegratorScratch, weight: number, reset: boolean): void {
   const S = s.sum;
   const lin = [s.kv[0]!, s.kv[1]!, s.kv[2]!, s.acc[0]!, s.acc[1]!, s.acc[2]!];
-  const m = s.movers;
-  for (let k = 0; k < 6; k++) {
-    const out = S[k]!,
-      src = lin[k]!;
-    if (reset)
-      for (let i = 0; i < s.nMovers; i++) {
-        const e = m[i]!;
-        out[e] = weight * src[e]!;
-      }
-    else
-      for (let i = 0; i < s.nMovers; i++) {
-        const e = m[i]!;
-        out[e] = out[e]! + weight * src[e]!;
-      }
-  }
+  for (let k = 0; k < 6; k++) addScaled(S[k]!, lin[k]!, weight, reset, s.movers, s.nMovers);
   const nq = world.dimensions === 2 ? 1 : 4;
   const ang = [s.kq[0]!, s.kq[1]!, s.kq[2]!, s.kq[3]!, s.alpha[0]!, s.alpha[1]!, s.alpha[2]!];
-  const sp = s.spinners;
   for (let k = 0; k < 7; k++) {
     if (k >= nq && k < 4) continue;
-    const out = S[6 + k]!,
-      src = ang[k]!;
-    if (reset)
-      for (let i = 0; i < s.nSpinners; i++) {
-        const e = sp[i]!;
-        out[e] = weight * src[e]!;
-      }
-    else
-      for (let i = 0; i < s.nSpinners; i++) {
-        const e = sp[i]!;
-        out[e] = out[e]! + weight * src[e]!;
-      }
+    addScaled(S[6 + k]!, ang[k]!, weight, reset, s.spinners, s.nSpinners);
   }
+}
+
+/**
+ * out[e] = (reset ? 0 : out[e]) + weight * src[e] for the first n entities e of `ids` (the reset form
+ * writes weight * src[e] itself, not 0 + weight * src[e], which would turn a -0 into +0).
+ */
+function addScaled(out: Float64Array, src: Float64Array, weight: number, reset: boolean, ids: Int32Array, n: number): void {
+  if (reset)
+    for (let i = 0; i < n; i++) {
+      const e = ids[i]!;
+      out[e] = weight * src[e]!;
+    }
+  else
+    for (let i = 0; i < n; i++) {
+      const e = ids[i]!;
+      out[e] = out[e]! + weight * src[e]!;
+    }
 }
 
 /**
