@@ -24,10 +24,8 @@ function massive(world: PhysicsWorld) {
  */
 export function kineticEnergy(world: PhysicsWorld): number {
   const c = world.components;
-  const vx = c.Velocity.x,
-    vy = c.Velocity.y,
-    vz = c.Velocity.z,
-    m = c.Mass.value;
+  const { x: vx, y: vy, z: vz } = c.Velocity;
+  const m = c.Mass.value;
   let ents = massive(world);
   let sum = 0;
   for (let i = 0; i < ents.length; i++) {
@@ -35,10 +33,8 @@ export function kineticEnergy(world: PhysicsWorld): number {
     sum += m[e]! * (vx[e]! * vx[e]! + vy[e]! * vy[e]! + vz[e]! * vz[e]!);
   }
   ents = query(world, [c.AngularVelocity, c.Inertia, Not(c.InertiaTensor), Not(c.Static), Not(c.Kinematic)]);
-  const wx = c.AngularVelocity.x,
-    wy = c.AngularVelocity.y,
-    wz = c.AngularVelocity.z,
-    I = c.Inertia.value;
+  const { x: wx, y: wy, z: wz } = c.AngularVelocity;
+  const I = c.Inertia.value;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
     sum += I[e]! * (wx[e]! * wx[e]! + wy[e]! * wy[e]! + wz[e]! * wz[e]!);
@@ -57,10 +53,8 @@ export function kineticEnergy(world: PhysicsWorld): number {
  */
 export function gravitationalPotentialEnergy(world: PhysicsWorld): number {
   const c = world.components;
-  const px = c.Position.x,
-    py = c.Position.y,
-    pz = c.Position.z,
-    m = c.Mass.value;
+  const { x: px, y: py, z: pz } = c.Position;
+  const m = c.Mass.value;
   const g = world.gravity;
   const gx = g[0]!,
     gy = g[1]!,
@@ -113,10 +107,8 @@ export function newtonianPotentialEnergy(world: PhysicsWorld): number {
   const L = world.laws;
   const G = L.gravitationalConstant,
     eps2 = L.gravitySoftening ** 2;
-  const px = c.Position.x,
-    py = c.Position.y,
-    pz = c.Position.z,
-    m = c.Mass.value;
+  const { x: px, y: py, z: pz } = c.Position;
+  const m = c.Mass.value;
   let sum = pairPotential(world, query(world, [c.MutualGravity, c.Position, c.Mass, c.Force]), m, -G, eps2);
   const sources = query(world, [c.Attractor, c.Position]);
   if (sources.length > 0) {
@@ -143,9 +135,7 @@ export function newtonianPotentialEnergy(world: PhysicsWorld): number {
 export function springPotentialEnergy(world: PhysicsWorld): number {
   const c = world.components;
   const S = c.Spring;
-  const px = c.Position.x,
-    py = c.Position.y,
-    pz = c.Position.z;
+  const { x: px, y: py, z: pz } = c.Position;
   const springs = query(world, [c.Spring]);
   let sum = 0;
   for (let i = 0; i < springs.length; i++) {
@@ -174,10 +164,8 @@ export function electricPotentialEnergy(world: PhysicsWorld): number {
   const c = world.components;
   const K = world.laws.coulombConstant,
     eps2 = world.laws.electricSoftening ** 2;
-  const px = c.Position.x,
-    py = c.Position.y,
-    pz = c.Position.z,
-    q = c.Charge.value;
+  const { x: px, y: py, z: pz } = c.Position;
+  const q = c.Charge.value;
   const ents = query(world, [c.Charge, c.Position]);
   let sum = pairPotential(world, ents, q, K, eps2);
   fieldsAt(world, world.time, E, B);
@@ -197,9 +185,7 @@ export function electricPotentialEnergy(world: PhysicsWorld): number {
 export function centralPotentialEnergy(world: PhysicsWorld): number {
   const c = world.components;
   const C = c.CentralForce;
-  const px = c.Position.x,
-    py = c.Position.y,
-    pz = c.Position.z;
+  const { x: px, y: py, z: pz } = c.Position;
   const ents = query(world, [c.CentralForce, c.Position]);
   let sum = 0;
   for (let i = 0; i < ents.length; i++) {
@@ -274,13 +260,9 @@ export function angularMomentum(
   out: Float64Array = new Float64Array(3),
 ): Float64Array {
   const c = world.components;
-  const px = c.Position.x,
-    py = c.Position.y,
-    pz = c.Position.z;
-  const vx = c.Velocity.x,
-    vy = c.Velocity.y,
-    vz = c.Velocity.z,
-    m = c.Mass.value;
+  const { x: px, y: py, z: pz } = c.Position;
+  const { x: vx, y: vy, z: vz } = c.Velocity;
+  const m = c.Mass.value;
   const ox = about[0] ?? 0,
     oy = about[1] ?? 0,
     oz = about[2] ?? 0;
@@ -330,10 +312,8 @@ export function angularMomentum(
  */
 export function linearMomentum(world: PhysicsWorld, out: Float64Array = new Float64Array(3)): Float64Array {
   const c = world.components;
-  const vx = c.Velocity.x,
-    vy = c.Velocity.y,
-    vz = c.Velocity.z,
-    m = c.Mass.value;
+  const { x: vx, y: vy, z: vz } = c.Velocity;
+  const m = c.Mass.value;
   const ents = massive(world);
   let x = 0,
     y = 0,

@@ -244,15 +244,11 @@ export function splitRigidRotations(world: PhysicsWorld, ents: ArrayLike<number>
       z = nz;
       w = nw;
     }
-    const n = 1 / Math.sqrt(x * x + y * y + z * z + w * w);
-    x *= n;
-    y *= n;
-    z *= n;
-    w *= n;
-    q.x[e] = x;
-    q.y[e] = y;
-    q.z[e] = z;
-    q.w[e] = w;
+    storeUnitQuaternion(q, e, x, y, z, w);
+    x = q.x[e]!;
+    y = q.y[e]!;
+    z = q.z[e]!;
+    w = q.w[e]!;
     // omega = R (I^-1 L_body).
     const ox = L0 * ix,
       oy = L1 * iy,
@@ -264,4 +260,25 @@ export function splitRigidRotations(world: PhysicsWorld, ents: ArrayLike<number>
     W.y[e] = oy + w * ty + (z * tx - x * tz);
     W.z[e] = oz + w * tz + (x * ty - y * tx);
   }
+}
+
+/**
+ * Writes the quaternion (x, y, z, w) scaled to unit length into entity `e`'s slots of `q` (an
+ * Orientation store): each component times 1 / |q|. The caller passes a finite, non-zero quaternion
+ * (a zero one writes NaN, which the integrators' finiteness checks then report).
+ * @category Integrators
+ */
+export function storeUnitQuaternion(
+  q: { x: Float64Array; y: Float64Array; z: Float64Array; w: Float64Array },
+  e: number,
+  x: number,
+  y: number,
+  z: number,
+  w: number,
+): void {
+  const n = 1 / Math.sqrt(x * x + y * y + z * z + w * w);
+  q.x[e] = x * n;
+  q.y[e] = y * n;
+  q.z[e] = z * n;
+  q.w[e] = w * n;
 }

@@ -195,12 +195,8 @@ function readAccelerations(s: IntegratorScratch, out: Float64Array): void {
 /** Writes the end state implied by end velocities u: v = u, x = x0 + h u; w = u, orientation turned by h w. */
 function writeState(world: PhysicsWorld, s: IntegratorScratch, h: number, u: Float64Array): void {
   const c = world.components;
-  const px = c.Position.x,
-    py = c.Position.y,
-    pz = c.Position.z;
-  const vx = c.Velocity.x,
-    vy = c.Velocity.y,
-    vz = c.Velocity.z;
+  const { x: px, y: py, z: pz } = c.Position;
+  const { x: vx, y: vy, z: vz } = c.Velocity;
   const [x0, y0, z0] = s.x0 as [Float64Array, Float64Array, Float64Array];
   const is2D = world.dimensions === 2;
   const m = s.movers;
@@ -220,9 +216,7 @@ function writeState(world: PhysicsWorld, s: IntegratorScratch, h: number, u: Flo
     }
   }
   if (s.nSpinners === 0) return;
-  const wx = c.AngularVelocity.x,
-    wy = c.AngularVelocity.y,
-    wz = c.AngularVelocity.z;
+  const { x: wx, y: wy, z: wz } = c.AngularVelocity;
   const [qa, qb, qc, qd] = s.q0 as [Float64Array, Float64Array, Float64Array, Float64Array];
   const ang = c.Angle.value,
     q = c.Orientation;

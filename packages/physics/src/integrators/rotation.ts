@@ -20,12 +20,8 @@ export function applyTorques(world: PhysicsWorld, h: number): void {
   }
   const ents = torquedBodies(world);
   if (ents.length === 0) return;
-  const wx = c.AngularVelocity.x,
-    wy = c.AngularVelocity.y,
-    wz = c.AngularVelocity.z;
-  const tx = c.Torque.x,
-    ty = c.Torque.y,
-    tz = c.Torque.z;
+  const { x: wx, y: wy, z: wz } = c.AngularVelocity;
+  const { x: tx, y: ty, z: tz } = c.Torque;
   const ii = c.Inertia.inv;
   if (world.dimensions === 2) {
     for (let i = 0; i < ents.length; i++) {
@@ -81,9 +77,7 @@ function advanceAngles(world: PhysicsWorld, ents: ArrayLike<number>, h: number):
 /** 3D: q <- exp(w h / 2) q for every body of `ents`; returns the sum of their w components (NaN if one is not finite). */
 function advanceQuaternions(world: PhysicsWorld, ents: ArrayLike<number>, h: number): number {
   const c = world.components;
-  const wx = c.AngularVelocity.x,
-    wy = c.AngularVelocity.y,
-    wz = c.AngularVelocity.z;
+  const { x: wx, y: wy, z: wz } = c.AngularVelocity;
   const qx = c.Orientation.x,
     qy = c.Orientation.y,
     qz = c.Orientation.z,

@@ -135,12 +135,8 @@ export function positionVerlet(world: PhysicsWorld, h: number): void {
     accelerationsAt(world, s, t + h / 2);
   }
   // Kick, then drift the second half with the new velocity: x = x0 + h/2 (v0 + v1).
-  const px = c.Position.x,
-    py = c.Position.y,
-    pz = c.Position.z;
-  const vx = c.Velocity.x,
-    vy = c.Velocity.y,
-    vz = c.Velocity.z;
+  const { x: px, y: py, z: pz } = c.Position;
+  const { x: vx, y: vy, z: vz } = c.Velocity;
   const [x0, y0, z0, u0, v0, w0] = s.x0 as [Float64Array, Float64Array, Float64Array, Float64Array, Float64Array, Float64Array];
   const [ax, ay, az] = s.acc as [Float64Array, Float64Array, Float64Array];
   const m = s.movers;
@@ -178,12 +174,8 @@ export function velocityVerlet(world: PhysicsWorld, h: number): void {
   // Keep a(t) in the sum arrays: acc is overwritten by the next evaluation.
   accumulate(world, s, 1, true);
   // Drift with the half-kicked velocity; predicted end velocity for velocity-dependent laws.
-  const px = c.Position.x,
-    py = c.Position.y,
-    pz = c.Position.z;
-  const vx = c.Velocity.x,
-    vy = c.Velocity.y,
-    vz = c.Velocity.z;
+  const { x: px, y: py, z: pz } = c.Position;
+  const { x: vx, y: vy, z: vz } = c.Velocity;
   const [x0, y0, z0, u0, v0, w0] = s.x0 as [Float64Array, Float64Array, Float64Array, Float64Array, Float64Array, Float64Array];
   const S = s.sum;
   const a0x = S[3]!,
@@ -224,9 +216,7 @@ export function velocityVerlet(world: PhysicsWorld, h: number): void {
 function spinHalfKickHalf(world: PhysicsWorld, s: IntegratorScratch, h: number, phase: 'dkd' | 'kdk-drift' | 'kdk-kick'): void {
   if (s.nSpinners === 0) return;
   const c = world.components;
-  const wx = c.AngularVelocity.x,
-    wy = c.AngularVelocity.y,
-    wz = c.AngularVelocity.z;
+  const { x: wx, y: wy, z: wz } = c.AngularVelocity;
   const [qa, qb, qc, qd] = s.q0 as [Float64Array, Float64Array, Float64Array, Float64Array];
   const [wa, wb, wc] = s.w0 as [Float64Array, Float64Array, Float64Array];
   const [bx, by, bz] = s.alpha as [Float64Array, Float64Array, Float64Array];

@@ -117,15 +117,11 @@ export function semiImplicitEuler(world: PhysicsWorld, h: number): void {
  */
 function fusedBare2(world: PhysicsWorld, ents: ArrayLike<number>, h: number): number {
   const c = world.components;
-  const px = c.Position.x,
-    py = c.Position.y,
-    vx = c.Velocity.x,
-    vy = c.Velocity.y;
-  const ox = c.PreviousPosition.x,
-    oy = c.PreviousPosition.y,
-    fx = c.Force.x,
-    fy = c.Force.y,
-    im = c.Mass.inv;
+  const { x: px, y: py } = c.Position;
+  const { x: vx, y: vy } = c.Velocity;
+  const { x: ox, y: oy } = c.PreviousPosition;
+  const { x: fx, y: fy } = c.Force;
+  const im = c.Mass.inv;
   const g = world.gravity;
   const gxh = g[0]! * h,
     gyh = g[1]! * h;
@@ -175,16 +171,10 @@ function fusedBare2(world: PhysicsWorld, ents: ArrayLike<number>, h: number): nu
  */
 function fusedForced2(world: PhysicsWorld, h: number): void {
   const c = world.components;
-  const px = c.Position.x,
-    py = c.Position.y;
-  const vx = c.Velocity.x,
-    vy = c.Velocity.y,
-    vz = c.Velocity.z;
-  const ox = c.PreviousPosition.x,
-    oy = c.PreviousPosition.y;
-  const fx = c.Force.x,
-    fy = c.Force.y,
-    fz = c.Force.z;
+  const { x: px, y: py } = c.Position;
+  const { x: vx, y: vy, z: vz } = c.Velocity;
+  const { x: ox, y: oy } = c.PreviousPosition;
+  const { x: fx, y: fy, z: fz } = c.Force;
   const im = c.Mass.inv;
   const g = world.gravity;
   const gxh = g[0]! * h,
@@ -265,18 +255,10 @@ function fusedForced2(world: PhysicsWorld, h: number): void {
  */
 function fusedForced3(world: PhysicsWorld, h: number): void {
   const c = world.components;
-  const px = c.Position.x,
-    py = c.Position.y,
-    pz = c.Position.z;
-  const vx = c.Velocity.x,
-    vy = c.Velocity.y,
-    vz = c.Velocity.z;
-  const ox = c.PreviousPosition.x,
-    oy = c.PreviousPosition.y,
-    oz = c.PreviousPosition.z;
-  const fx = c.Force.x,
-    fy = c.Force.y,
-    fz = c.Force.z;
+  const { x: px, y: py, z: pz } = c.Position;
+  const { x: vx, y: vy, z: vz } = c.Velocity;
+  const { x: ox, y: oy, z: oz } = c.PreviousPosition;
+  const { x: fx, y: fy, z: fz } = c.Force;
   const im = c.Mass.inv;
   const g = world.gravity;
   const gxh = g[0]! * h,
@@ -388,15 +370,9 @@ function nonFiniteForce(world: PhysicsWorld, e: number): never {
  */
 export function advanceKinematic(world: PhysicsWorld, h: number): void {
   const c = world.components;
-  const px = c.Position.x,
-    py = c.Position.y,
-    pz = c.Position.z;
-  const vx = c.Velocity.x,
-    vy = c.Velocity.y,
-    vz = c.Velocity.z;
-  const ox = c.PreviousPosition.x,
-    oy = c.PreviousPosition.y,
-    oz = c.PreviousPosition.z;
+  const { x: px, y: py, z: pz } = c.Position;
+  const { x: vx, y: vy, z: vz } = c.Velocity;
+  const { x: ox, y: oy, z: oz } = c.PreviousPosition;
   const ents = kinematicBodies(world);
   let check = 0;
   for (let i = 0; i < ents.length; i++) {
@@ -508,7 +484,9 @@ export function sieForced3(A: KernelArray[], P: Float64Array, ids: Int32Array | 
 
 /**
  * Semi-implicit Euler for bare particles (a = g), 2D. A and P: the SIE slots
- * (integrators/slots/semi-implicit-euler.ts). ids null: entities lo + 1 .. hi.
+ * (integrators/slots/semi-implicit-euler.ts). ids null: entities lo + 1 .. hi. The dense cases
+ * have loops of their own, without the per-particle id choice and save branch that sieFree3's one
+ * loop takes: a world of bare 2D particles spends its step here, and the single loop is slower on it.
  */
 export function sieFree2(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
   const px = A[SIE.PX] as Float64Array,

@@ -3,7 +3,7 @@ import { evaluateForces } from '../forces/evaluate.js';
 import { rotateVector, rotateVectorInverse } from '../math/quaternion.js';
 import { reportNonFinite } from '../world/errors.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { eulerAcceleration, eulerBodyAcceleration } from './euler-equations.js';
+import { eulerAcceleration, eulerBodyAcceleration, storeUnitQuaternion } from './euler-equations.js';
 import { forcedBodies, freeBodies, spinningBodies } from './queries.js';
 
 /**
@@ -132,15 +132,9 @@ export function gather(world: PhysicsWorld, s: IntegratorScratch): void {
  */
 export function saveState(world: PhysicsWorld, s: IntegratorScratch, setPrevious = true): void {
   const c = world.components;
-  const px = c.Position.x,
-    py = c.Position.y,
-    pz = c.Position.z;
-  const vx = c.Velocity.x,
-    vy = c.Velocity.y,
-    vz = c.Velocity.z;
-  const ox = c.PreviousPosition.x,
-    oy = c.PreviousPosition.y,
-    oz = c.PreviousPosition.z;
+  const { x: px, y: py, z: pz } = c.Position;
+  const { x: vx, y: vy, z: vz } = c.Velocity;
+  const { x: ox, y: oy, z: oz } = c.PreviousPosition;
   const [x0, y0, z0, u0, v0, w0] = s.x0 as [Float64Array, Float64Array, Float64Array, Float64Array, Float64Array, Float64Array];
   const m = s.movers;
   for (let i = 0; i < s.nMovers; i++) {
@@ -157,9 +151,7 @@ export function saveState(world: PhysicsWorld, s: IntegratorScratch, setPrevious
     v0[e] = vy[e]!;
     w0[e] = vz[e]!;
   }
-  const wx = c.AngularVelocity.x,
-    wy = c.AngularVelocity.y,
-    wz = c.AngularVelocity.z;
+  const { x: wx, y: wy, z: wz } = c.AngularVelocity;
   const [qa, qb, qc, qd] = s.q0 as [Float64Array, Float64Array, Float64Array, Float64Array];
   const [wa, wb, wc] = s.w0 as [Float64Array, Float64Array, Float64Array];
   const [ba, bb, bc] = s.wb0 as [Float64Array, Float64Array, Float64Array];
@@ -210,10 +202,8 @@ export function accelerationsAt(world: PhysicsWorld, s: IntegratorScratch, time:
  */
 export function accelerations(world: PhysicsWorld, s: IntegratorScratch): void {
   const c = world.components;
-  const fx = c.Force.x,
-    fy = c.Force.y,
-    fz = c.Force.z,
-    im = c.Mass.inv;
+  const { x: fx, y: fy, z: fz } = c.Force;
+  const im = c.Mass.inv;
   const g = world.gravity;
   const gx = g[0]!,
     gy = g[1]!,
@@ -247,10 +237,8 @@ const euler = new Float64Array(3);
  */
 export function angularAcceleration(world: PhysicsWorld, s: IntegratorScratch): void {
   const c = world.components;
-  const tx = c.Torque.x,
-    ty = c.Torque.y,
-    tz = c.Torque.z,
-    ii = c.Inertia.inv;
+  const { x: tx, y: ty, z: tz } = c.Torque;
+  const ii = c.Inertia.inv;
   const [bx, by, bz] = s.alpha as [Float64Array, Float64Array, Float64Array];
   const sp = s.spinners;
   const torqued = s.torqued;
@@ -297,12 +285,8 @@ export function writeTrial(
   dw: Float64Array[],
 ): void {
   const c = world.components;
-  const px = c.Position.x,
-    py = c.Position.y,
-    pz = c.Position.z;
-  const vx = c.Velocity.x,
-    vy = c.Velocity.y,
-    vz = c.Velocity.z;
+  const { x: px, y: py, z: pz } = c.Position;
+  const { x: vx, y: vy, z: vz } = c.Velocity;
   const [x0, y0, z0, u0, v0, w0] = s.x0 as [Float64Array, Float64Array, Float64Array, Float64Array, Float64Array, Float64Array];
   const [dxx, dxy, dxz] = dx as [Float64Array, Float64Array, Float64Array];
   const [dvx, dvy, dvz] = dv as [Float64Array, Float64Array, Float64Array];
@@ -339,9 +323,7 @@ export function writeAngularTrial(
 ): void {
   if (s.nSpinners === 0) return;
   const c = world.components;
-  const wx = c.AngularVelocity.x,
-    wy = c.AngularVelocity.y,
-    wz = c.AngularVelocity.z;
+  const { x: wx, y: wy, z: wz } = c.AngularVelocity;
   const [qa, qb, qc, qd] = s.q0 as [Float64Array, Float64Array, Float64Array, Float64Array];
   const [wa, wb, wc] = s.w0 as [Float64Array, Float64Array, Float64Array];
   const sp = s.spinners;
@@ -364,21 +346,9 @@ export function writeAngularTrial(
     torqued = s.torqued;
   for (let i = 0; i < s.nSpinners; i++) {
     const e = sp[i]!;
-    let x = qa[e]! + cq * d0[e]!,
-      y = qb[e]! + cq * d1[e]!,
-      z = qc[e]! + cq * d2[e]!,
-      w = qd[e]! + cq * d3[e]!;
-    const inv = 1 / Math.sqrt(x * x + y * y + z * z + w * w);
-    x *= inv;
-    y *= inv;
-    z *= inv;
-    w *= inv;
-    q.x[e] = x;
-    q.y[e] = y;
-    q.z[e] = z;
-    q.w[e] = w;
+    storeUnitQuaternion(q, e, qa[e]! + cq * d0[e]!, qb[e]! + cq * d1[e]!, qc[e]! + cq * d2[e]!, qd[e]! + cq * d3[e]!);
     if (body && torqued[e] === 2) {
-      rotateVector(x, y, z, w, ba[e]! + cw * e0[e]!, bb[e]! + cw * e1[e]!, bc[e]! + cw * e2[e]!, vec);
+      rotateVector(q.x[e]!, q.y[e]!, q.z[e]!, q.w[e]!, ba[e]! + cw * e0[e]!, bb[e]! + cw * e1[e]!, bc[e]! + cw * e2[e]!, vec);
       wx[e] = vec[0]!;
       wy[e] = vec[1]!;
       wz[e] = vec[2]!;
@@ -398,9 +368,7 @@ export function writeAngularTrial(
  */
 export function orientationSlope(world: PhysicsWorld, s: IntegratorScratch, out: Float64Array[]): void {
   const c = world.components;
-  const wx = c.AngularVelocity.x,
-    wy = c.AngularVelocity.y,
-    wz = c.AngularVelocity.z;
+  const { x: wx, y: wy, z: wz } = c.AngularVelocity;
   const sp = s.spinners;
   if (world.dimensions === 2) {
     const o = out[0]!;
@@ -439,9 +407,7 @@ export function stageSlopes(world: PhysicsWorld, s: IntegratorScratch, time: num
   if (evaluate) accelerationsAt(world, s, time);
   else accelerations(world, s);
   const c = world.components;
-  const vx = c.Velocity.x,
-    vy = c.Velocity.y,
-    vz = c.Velocity.z;
+  const { x: vx, y: vy, z: vz } = c.Velocity;
   const [kx, ky, kz] = s.kv as [Float64Array, Float64Array, Float64Array];
   const m = s.movers;
   for (let i = 0; i < s.nMovers; i++) {
@@ -460,39 +426,30 @@ export function stageSlopes(world: PhysicsWorld, s: IntegratorScratch, time: num
 export function accumulate(world: PhysicsWorld, s: IntegratorScratch, weight: number, reset: boolean): void {
   const S = s.sum;
   const lin = [s.kv[0]!, s.kv[1]!, s.kv[2]!, s.acc[0]!, s.acc[1]!, s.acc[2]!];
-  const m = s.movers;
-  for (let k = 0; k < 6; k++) {
-    const out = S[k]!,
-      src = lin[k]!;
-    if (reset)
-      for (let i = 0; i < s.nMovers; i++) {
-        const e = m[i]!;
-        out[e] = weight * src[e]!;
-      }
-    else
-      for (let i = 0; i < s.nMovers; i++) {
-        const e = m[i]!;
-        out[e] = out[e]! + weight * src[e]!;
-      }
-  }
+  for (let k = 0; k < 6; k++) addScaled(S[k]!, lin[k]!, weight, reset, s.movers, s.nMovers);
   const nq = world.dimensions === 2 ? 1 : 4;
   const ang = [s.kq[0]!, s.kq[1]!, s.kq[2]!, s.kq[3]!, s.alpha[0]!, s.alpha[1]!, s.alpha[2]!];
-  const sp = s.spinners;
   for (let k = 0; k < 7; k++) {
     if (k >= nq && k < 4) continue;
-    const out = S[6 + k]!,
-      src = ang[k]!;
-    if (reset)
-      for (let i = 0; i < s.nSpinners; i++) {
-        const e = sp[i]!;
-        out[e] = weight * src[e]!;
-      }
-    else
-      for (let i = 0; i < s.nSpinners; i++) {
-        const e = sp[i]!;
-        out[e] = out[e]! + weight * src[e]!;
-      }
+    addScaled(S[6 + k]!, ang[k]!, weight, reset, s.spinners, s.nSpinners);
   }
+}
+
+/**
+ * out[e] = (reset ? 0 : out[e]) + weight * src[e] for the first n entities e of `ids` (the reset form
+ * writes weight * src[e] itself, not 0 + weight * src[e], which would turn a -0 into +0).
+ */
+function addScaled(out: Float64Array, src: Float64Array, weight: number, reset: boolean, ids: Int32Array, n: number): void {
+  if (reset)
+    for (let i = 0; i < n; i++) {
+      const e = ids[i]!;
+      out[e] = weight * src[e]!;
+    }
+  else
+    for (let i = 0; i < n; i++) {
+      const e = ids[i]!;
+      out[e] = out[e]! + weight * src[e]!;
+    }
 }
 
 /**
@@ -525,13 +482,9 @@ export function shiftByGravity(world: PhysicsWorld, s: IntegratorScratch, k: num
     dz = k * g[2]!;
   if (dx === 0 && dy === 0 && dz === 0) return;
   const c = world.components;
-  const px = c.Position.x,
-    py = c.Position.y,
-    pz = c.Position.z;
+  const { x: px, y: py, z: pz } = c.Position;
   const m = s.movers;
-  const fx = c.Force.x,
-    fy = c.Force.y,
-    fz = c.Force.z;
+  const { x: fx, y: fy, z: fz } = c.Force;
   for (let i = 0; i < s.nMovers; i++) {
     const e = m[i]!;
     // A forced body (index < nForced) under any force keeps the scheme's own drift, so a body in
@@ -549,21 +502,15 @@ export function shiftByGravity(world: PhysicsWorld, s: IntegratorScratch, k: num
  */
 export function checkFinite(world: PhysicsWorld, s: IntegratorScratch): void {
   const c = world.components;
-  const px = c.Position.x,
-    py = c.Position.y,
-    pz = c.Position.z;
-  const vx = c.Velocity.x,
-    vy = c.Velocity.y,
-    vz = c.Velocity.z;
+  const { x: px, y: py, z: pz } = c.Position;
+  const { x: vx, y: vy, z: vz } = c.Velocity;
   let sum = 0;
   const m = s.movers;
   for (let i = 0; i < s.nMovers; i++) {
     const e = m[i]!;
     sum += px[e]! + py[e]! + pz[e]! + vx[e]! + vy[e]! + vz[e]!;
   }
-  const wx = c.AngularVelocity.x,
-    wy = c.AngularVelocity.y,
-    wz = c.AngularVelocity.z;
+  const { x: wx, y: wy, z: wz } = c.AngularVelocity;
   const sp = s.spinners;
   for (let i = 0; i < s.nSpinners; i++) {
     const e = sp[i]!;
