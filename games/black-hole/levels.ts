@@ -125,12 +125,14 @@ export function levelPoints(holes: number, time: number): LevelPoints {
 export const WALL_GAP = 0.5;
 
 /**
- * Level 2's wall heights, m on the default field (see `LevelSpec.wallHeight`): high up, so the start
- * is not deep in the wall's well. A wall pulls like a line of mass (about 18 kg/m), some 2 G lambda / d:
- * at 10 to 12 m up it pulled the waiting ship at 2.7 to 3 m/s^2 (half the default thrust), and a ship
- * nudged by taps was drawn up into it; at 16.5 to 17.5 m the pull at the start is 1.4 to 1.6 m/s^2.
+ * Level 2's wall heights, m on the default field (see `LevelSpec.wallHeight`): as high as the field
+ * allows (3 m below the line), so the start is as far out of the wall's well as it can be. A wall
+ * pulls like a line of mass (about 20 kg/m: closed to the ship, its holes cannot be thinner), some
+ * 2 G lambda / d: at 10 to 12 m up it pulled the waiting ship at 2.7 to 3 m/s^2 (half the default
+ * thrust), and a ship nudged by taps was drawn up into it within 3.6 s at 16.5 to 17.5 m; at 18.5 to
+ * 19 m a ship let drift after a tap reaches the wall in 4.1 s or more (7.5 s on the phone's field).
  */
-export const LEVEL2_WALL_HEIGHT: readonly [number, number] = Object.freeze([16.5, 17.5]);
+export const LEVEL2_WALL_HEIGHT: readonly [number, number] = Object.freeze([18.5, 19]);
 
 /**
  * Level 3's wall heights, m on the default field: lower than level 2's, so it pulls the waiting ship

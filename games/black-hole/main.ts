@@ -24,9 +24,9 @@
  *
  * Drawn: nebulae behind the stars; each hole as a black disc of its Schwarzschild radius with a
  * photon ring, an orange glow and a tilted disc of hot gas whose clumps go round it; the exhaust
- * (particles, additive); the ship with a flame opposite its thrust; its predicted path for the next 2 s, integrated in a small second world
- * (rules.ts `predictPath`) and drawn as fading dots, red where it falls into a hole, blue where it
- * stays clear (on the pad, before the first thrust, the path holding ↑ would take, 3 s of it).
+ * (particles, additive); the ship with a flame opposite its thrust; its predicted path for the next 3 s, integrated in a small second world
+ * (rules.ts `predictPath`) and drawn as fading dots, red where it falls into a hole (a ring) or leaves the
+ * field (a cross at the edge: the ship would be lost), blue where it stays clear (on the pad, before the first thrust, the path holding ↑ would take, 3 s of it).
  */
 
 import {
@@ -55,8 +55,10 @@ import {
   FIELD,
   heldThrust,
   MAX_HOLES,
+  type PathEnd,
   PHONE_SIDE_RAMP,
   type Predictor,
+  pathEnd,
   predictPath,
   THRUST_RAMP,
 } from './rules';
@@ -133,12 +135,14 @@ let predictor: Predictor;
 /** Records every input of the run (V plays it back from the start). */
 let replay: BlackHoleReplay;
 /**
- * Steps of the predicted path drawn ahead of the ship: 2 s. A wall of holes (levels 2 and 3) pulls
- * like a line of mass, harder than the thrust within some 6 m; a pilot that flies up and steers by
- * the path to keep it clear (scripts/black-hole-levels.mjs, reacting every 0.3 s) fell in on level 2
- * three times in three (every field of eight) seeing 1 s ahead, 0.75 times a level seeing 2 s.
+ * Steps of the predicted path drawn ahead of the ship: 3 s, as long as the pad's. A wall of holes
+ * (levels 2 and 3) pulls like a line of mass, harder than the thrust within some 6 m; a pilot that
+ * flies up and steers by the path to keep it clear (scripts/black-hole-levels.mjs, reacting every
+ * 0.3 s) fell in on level 2 three times in three (every field of eight) seeing 1 s ahead, 0.75 times
+ * a level seeing 2 s. A 2 s path stopped mid-field, short of the wall's gap, and did not say whether
+ * the ship would make it; 3 s of it reaches the wall from the pad.
  */
-const PATH_STEPS = 120;
+const PATH_STEPS = 180;
 /**
  * Steps of the path drawn from the pad before the first thrust (the one holding ↑ would take): 3 s,
  * so on level 1 it reaches the hole across the straight climb and shows red; a 2 s path stops short
@@ -147,6 +151,8 @@ const PATH_STEPS = 120;
 const PAD_PATH_STEPS = 180;
 const path = new Float64Array(2 * (Math.max(PATH_STEPS, PAD_PATH_STEPS) + 1));
 let pathPoints = 0;
+/** How the path drawn in the last frame ends (./rules.ts `pathEnd`). */
+let pathKind: PathEnd = 'clear';
 
 /**
  * The field for the stage's shape: on a wide screen 32 m across and as tall as the stage allows
@@ -208,7 +214,7 @@ const game = await startPixiGame({
       ? { keys: '← ↑ → ↓', action: 'thrust; seam of two: diagonal', touch: 'hold ← ↑ → ↓' }
       : { keys: '← ↑ → ↓', action: 'thrust: a tap nudges, a hold builds up (two at once: diagonal)', touch: 'hold, slide ← ↑ → ↓' },
     { keys: 'Enter', action: 'next level / continue from this level', touch: 'the big button' },
-    { keys: 'F', action: 'predicted path on / off (red: falls in, blue: clear)' },
+    { keys: 'F', action: 'predicted path on / off (red: falls in or lost, blue: clear)' },
     { keys: 'V', action: 'replay the run from the start' },
   ],
   keys: [
@@ -1035,20 +1041,34 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
       bh.thrust = 'none';
     } else pathPoints = predictPath(bh, predictor, path, steps);
     padPath = fromPad;
-    // A path that stops short inside the field ends on a horizon: drawn red, with a ring where it
-    // falls in, so the pull of a wall bending the ship into it shows 2 s ahead.
+    // A path that ends on a horizon is drawn red with a ring where it falls in, so the pull of a wall
+    // bending the ship into it shows ahead; one that leaves the field (the ship would be lost) red
+    // with a cross where it leaves; a clear one blue.
     const lx = path[2 * pathPoints - 2]!,
       ly = path[2 * pathPoints - 1]!;
-    const falls = pathPoints < steps + 1 && lx > 0 && lx < bh.field.width && ly > 0 && ly < bh.field.height;
-    const color = falls ? 0xff5a4a : 0x9fd3ff;
+    pathKind = pathEnd(bh, path, pathPoints, steps);
+    const warn = pathKind !== 'clear';
+    const color = warn ? 0xff5a4a : 0x9fd3ff;
     for (let i = 1; i < pathPoints; i += 2) {
       overlay
-        .circle(cam.toScreenX(path[2 * i]!), cam.toScreenY(path[2 * i + 1]!), falls ? 2.2 : 1.8)
+        .circle(cam.toScreenX(path[2 * i]!), cam.toScreenY(path[2 * i + 1]!), warn ? 2.2 : 1.8)
         .fill({ color, alpha: 0.5 * (1 - i / (steps + 1)) + 0.15 });
     }
-    if (falls) overlay.circle(cam.toScreenX(lx), cam.toScreenY(ly), 7).stroke({ width: 2, color, alpha: 0.9 });
+    if (pathKind === 'falls') overlay.circle(cam.toScreenX(lx), cam.toScreenY(ly), 7).stroke({ width: 2, color, alpha: 0.9 });
+    else if (pathKind === 'lost') {
+      // The cross sits where the path leaves, pulled back onto the field's edge so it is seen.
+      const ex = cam.toScreenX(Math.min(bh.field.width, Math.max(0, lx))),
+        ey = cam.toScreenY(Math.min(bh.field.height, Math.max(0, ly)));
+      overlay
+        .moveTo(ex - 7, ey - 7)
+        .lineTo(ex + 7, ey + 7)
+        .moveTo(ex + 7, ey - 7)
+        .lineTo(ex - 7, ey + 7)
+        .stroke({ width: 3, color, alpha: 0.95 });
+    }
   } else {
     pathPoints = 0;
+    pathKind = 'clear';
     padPath = false;
   }
   // The ship: a small arrowhead, nose up, 1 m tall, with a flame out of the side opposite the thrust.
@@ -1125,6 +1145,8 @@ shell.expose({
   pathPoints: (): number => pathPoints,
   /** Whether that path was the one holding ↑ from the pad would take (the ship parked, no thrust). */
   padPath: (): boolean => padPath,
+  /** How that path ended (./rules.ts `pathEnd`: drawn blue when 'clear', red when it 'falls' or is 'lost'); 'clear' when none was drawn. */
+  pathEnd: (): PathEnd => pathKind,
   /** The level banner's text while it shows (at a level's start, until the first thrust), else ''. */
   levelBanner: (): string => (levelBanner.visible ? levelBanner.text : ''),
   /** How far each hole's drawing (disc and glow) reached in the last frame, m: [left, right, bottom, top], holes in order. */

@@ -28,7 +28,8 @@
  *
  * Beyond the book: exhaust particles from an emitter attached to the ship (enabled while thrusting,
  * pointing against the thrust; they feel the holes too and vanish into horizons), and the ship's
- * predicted path for the next second, integrated in a small second world that holds copies of the
+ * predicted path for the next seconds (the page draws 3 s of it; `pathEnd` says whether it falls in, is
+ * lost off the field or stays clear), integrated in a small second world that holds copies of the
  * holes and of the ship (`createPredictor`), with the same force laws, step and integrator, so with
  * the input held it is exactly the path the ship will take.
  */
@@ -766,4 +767,26 @@ export function predictPath(game: BlackHoleGame, pred: Predictor, out: Float64Ar
     if (inside || x < 0 || x > game.field.width || y < 0 || y > game.field.height) break;
   }
   return n;
+}
+
+/** How a predicted path ends (`pathEnd`). */
+export type PathEnd = 'clear' | 'falls' | 'lost';
+
+/**
+ * How the predicted path of `n` points in `out` (x0, y0, x1, y1, ... m, as `predictPath` writes them,
+ * asked for `steps` steps) ends: 'falls' when it stops short inside the field (on a horizon);
+ * 'lost' when it leaves the field (x < 0, x > width or y < 0, or above the field) before reaching
+ * the finish line, where the game would put the ship back at the start ("Lost in space");
+ * 'clear' otherwise (it runs its full length, or reaches the line first).
+ * @throws RangeError unless n is an integer in [1, out.length / 2] and steps an integer >= 1.
+ */
+export function pathEnd(game: BlackHoleGame, out: Float64Array, n: number, steps: number): PathEnd {
+  check(Number.isInteger(n) && n >= 1 && 2 * n <= out.length, `pathEnd: n must be an integer in [1, ${out.length >> 1}], got ${n}`);
+  check(Number.isInteger(steps) && steps >= 1, `pathEnd: steps must be an integer >= 1, got ${steps}`);
+  for (let i = 0; i < n; i++) if (out[2 * i + 1]! >= game.lineY) return 'clear';
+  const x = out[2 * n - 2]!,
+    y = out[2 * n - 1]!;
+  const outside = x < 0 || x > game.field.width || y < 0 || y > game.field.height;
+  if (outside) return 'lost';
+  return n < steps + 1 ? 'falls' : 'clear';
 }

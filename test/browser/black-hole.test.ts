@@ -18,6 +18,7 @@ interface BlackHolePage {
   levelBanner(): string;
   swallowing(): boolean;
   edgeWarning(): boolean;
+  pathEnd(): 'clear' | 'falls' | 'lost';
 }
 
 let h: Harness;
@@ -46,7 +47,9 @@ describe('black hole', () => {
       const w = window.game as unknown as { padPath(): boolean; pathPoints(): number };
       return w.padPath() && w.pathPoints() > 10;
     }, null);
-    expect(await g.page.evaluate(() => document.body.textContent)).toContain('predicted path on / off (red: falls in, blue: clear)');
+    expect(await g.page.evaluate(() => document.body.textContent)).toContain(
+      'predicted path on / off (red: falls in or lost, blue: clear)',
+    );
     await g.page.keyboard.down('ArrowUp');
     await g.waitFor(() => (window.game as unknown as BlackHolePage).levelBanner() === '', null);
     await g.waitFor(() => (window.game as unknown as BlackHolePage).swallowing(), null);
@@ -63,6 +66,8 @@ describe('black hole', () => {
       if (w.edgeWarning()) w.paused = true;
       return w.paused;
     }, null);
+    // The path with ← held runs off the field's edge: drawn as lost (red, a cross at the edge), not blue.
+    await g.waitFor(() => (window.game as unknown as BlackHolePage).pathEnd() === 'lost', null);
     const thrust = () => g.page.evaluate(() => (window.game as unknown as { bh: { thrust: string } }).bh.thrust);
     await g.page.keyboard.down('ArrowUp');
     expect(await thrust()).toBe('up-left');

@@ -258,6 +258,28 @@ describe('levels', () => {
       }
   });
 
+  test("level 2 leaves a newcomer time: after a tap (up, a side, or down on the pad) the ship drifts 4 s or more before the wall takes it (7 s on the phone's field)", () => {
+    // The issue this answers: a stranger's side tap, or a tap of down on the pad, left the ship to
+    // the wall's pull, which took it within 3.6 s of the tap (16.5 to 17.5 m up).
+    for (const field of [FIELD, { width: 32, height: 30 }, { width: 20, height: 30 }])
+      for (const tap of ['up', 'left', 'right', 'down'] as const)
+        for (let seed = 1; seed <= 4; seed++) {
+          const where = `${field.width}x${field.height} ${tap} seed ${seed}`;
+          const g = createBlackHoleGame({ seed, field, ...engineFor(field) });
+          const run = startLevel(g, 2);
+          const least = field.width < FIELD.width ? 7 : 4;
+          let e = 'none',
+            k = 0;
+          for (; k < least / g.world.dt && e === 'none'; k++) {
+            setThrust(g, k < 9 ? tap : 'none');
+            e = stepLevel(g, run);
+          }
+          expect(e, where).toBe('none');
+          // And it did leave the pad.
+          expect(shipY(g), where).toBeGreaterThan(g.start[1] + 2);
+        }
+  });
+
   test("a held flight (the layout check's) is the game's own flight: the same path, ended by the same event", () => {
     // heldFlight integrates the ship without a physics world; the game steps its world. Every held
     // thrust on a level of each kind (the fork, a wall, drifting holes, a fuel limit; drifting holes

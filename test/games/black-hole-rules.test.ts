@@ -21,6 +21,7 @@ import {
   LINE_Y,
   layoutHoles,
   MAX_HOLES,
+  pathEnd,
   predictPath,
   rampThrust,
   resolveBlackHoleOptions,
@@ -432,6 +433,40 @@ describe('thrust, exhaust, prediction', () => {
       y = out[2 * (n - 1) + 1]!;
     // Where the ship (SHIP_RADIUS round its centre) touches the horizon.
     expect(Math.hypot(x - P.x[slotOf(h)]!, y - P.y[slotOf(h)]!)).toBeLessThan(g.holeRadius[0]! + SHIP_RADIUS);
+  });
+
+  test('a predicted path that leaves the field ends lost, as the game then loses the ship', () => {
+    const g = createBlackHoleGame({ seed: 9, holes: 1 });
+    const pred = createPredictor(g);
+    // Near the left edge, low (holes lie 5 m up or more), moving out.
+    place(g, 1, 2.5, -4, 0);
+    const out = new Float64Array(2 * 61);
+    const n = predictPath(g, pred, out, 60);
+    expect(n).toBeLessThan(61);
+    expect(pathEnd(g, out, n, 60)).toBe('lost');
+    // The game's own rule, step by step: the ship is lost on the path's last step.
+    const events: string[] = [];
+    for (let i = 1; i < n; i++) events.push(stepBlackHole(g));
+    expect(events.at(-1)).toBe('lost');
+    expect(events.slice(0, -1).every((e) => e === 'none')).toBe(true);
+  });
+
+  test('pathEnd: on a horizon falls, past the line or full length clear, off the field lost', () => {
+    const g = createBlackHoleGame({ seed: 9, holes: 1 });
+    const pred = createPredictor(g);
+    const P = g.world.components.Position,
+      h = g.holes[0]!;
+    place(g, P.x[slotOf(h)]! + g.holeRadius[0]! + 1, P.y[slotOf(h)]!, -4, 0);
+    const out = new Float64Array(2 * 61);
+    expect(pathEnd(g, out, predictPath(g, pred, out, 60), 60)).toBe('falls');
+    // Hand-made paths (x, y, m) of 3 points asked for 2 steps, on the 32 x 24 field with the line at 22.
+    const path = (...xy: number[]) => Float64Array.from(xy);
+    expect(pathEnd(g, path(16, 1.5, 16, 2, 16, 2.5), 3, 2)).toBe('clear');
+    expect(pathEnd(g, path(31, 3, 31.8, 3, 32.2, 3), 3, 2)).toBe('lost');
+    expect(pathEnd(g, path(16, 1, 16, 0.4, 16, -0.1), 3, 2)).toBe('lost');
+    // Past the line first, then off the top: the ship scores before it could be lost.
+    expect(pathEnd(g, path(16, 21.5, 16, 22.5, 16, 24.5), 3, 2)).toBe('clear');
+    expect(() => pathEnd(g, path(16, 1), 2, 1)).toThrow(/pathEnd: n must be an integer in \[1, 1\], got 2/);
   });
 
   test('bad options are rejected by name', () => {
