@@ -237,6 +237,8 @@ function createWorld(): PhysicsWorld {
   goldBall = 0;
   goldRng = new Rng(params.seed + 7);
   missAt = -1e9;
+  ruleHint = '';
+  lastThrown = 0;
   lastBasket = { x: 0, y: 0, time: -10, spot: 0, score: 0, points: 0, kind: 'basketball' };
   hoopIds = addHoop(world, hoopSpots(TALL)[round.spot]!, params.restitution, params.friction);
   leaving = new Map();
@@ -488,8 +490,7 @@ function playHoop(world: PhysicsWorld): void {
       // Up through the hoop from below: no basket when it comes back down.
       b.scores = false;
       if (basketballs.has(e)) renderer.setColor(e, HIGH_COLOR);
-      tooHighAt = performance.now();
-      hintReason = 'below';
+      if (e === lastThrown) ruleHint = 'below';
     }
     const wasSpot = round.spot;
     if (b.scores && crossing === -1 && roundBasket(round, spots.length, b.kind, hoopRandom)) {
@@ -1094,10 +1095,9 @@ function launch(e: number, thrown: boolean): void {
   else flights.delete(e);
   if (round.phase !== 'over' && thrown) {
     roundShot(round);
-    if (!scores) {
-      tooHighAt = performance.now();
-      hintReason = 'high';
-    }
+    // Each throw replaces the last one's reminder: a throw from below the line clears it.
+    lastThrown = e;
+    ruleHint = scores ? '' : 'high';
   }
 }
 canvas.addEventListener('pointerup', (event) => release(event, false));
@@ -1363,10 +1363,14 @@ const CONFETTI = (() => {
     };
   });
 })();
-/** When a ball was last released too high to score (performance.now() ms), for the status row's reminder. */
-let tooHighAt = -1e9;
-/** Why the last ball cannot score: released above the line, or went up through the hoop from below. */
-let hintReason: 'high' | 'below' = 'high';
+/**
+ * Why the player's last throw cannot score, for the status row's reminder ('' when it may): released
+ * above the line ('high'), or went up through the hoop from below ('below'). Kept until the next
+ * throw, so the reminder stays on the row however long the ball flies (a rotating tip replaced it).
+ */
+let ruleHint: '' | 'high' | 'below' = '';
+/** The ball of the player's last throw (0 before the first): only its rule breaks set ruleHint. */
+let lastThrown = 0;
 
 /**
  * Draws the hoop each frame: the backboard (a white board with its target square, on a bracket
@@ -1749,8 +1753,8 @@ function updateStatus(): void {
           ? `${round.streak} in a row: the next basket scores ×${streakMultiplier(round.streak)}`
           : 'Throw balls through the hoop!';
   const numbers = `Points ${round.points} · ×${streakMultiplier(round.streak)} · Time ${secs} s · Best ${best}`;
-  const throwHow = touch ? 'Press, pull back and let go to throw' : 'Press, drag back and let go to throw';
-  // While playing the hint takes turns (5 s each) between the heap's balls and the streak.
+  // The last throw's rule break (ruleHint) stays until the next throw; otherwise, while playing, the
+  // hint takes turns (5 s each) between the heap's balls and the streak.
   const teach =
     Math.floor(shell.world.time / 5) % 2 === 0
       ? touch
@@ -1761,14 +1765,16 @@ function updateStatus(): void {
     ? `${touch ? 'Tap' : 'R or'} Play again for a new round`
     : performance.now() - missAt < 2500
       ? 'Missed: the streak is over'
-      : performance.now() - tooHighAt < 2500
-        ? hintReason === 'high'
-          ? 'Too high: throw from below the orange line to score'
-          : `Up through the net does not count${touch ? '' : ': drop it in from above'}`
-        : round.phase === 'ready' && round.shots === 0
-          ? // One line on a phone too: a second line there moved the box down the moment it changed.
-            `${throwHow} through the hoop${touch ? '' : ' from below the orange line'}`
-          : teach;
+      : ruleHint === 'high'
+        ? 'Too high: throw from below the orange line to score'
+        : ruleHint === 'below'
+          ? `Up through the net does not count${touch ? '' : ': drop it in from above'}`
+          : round.phase === 'ready' && round.shots === 0
+            ? // One line on a phone too (a second line there moved the box down the moment it changed), so the phone's is shorter.
+              touch
+              ? 'Throw through the hoop from below the orange line'
+              : 'Press, drag back and let go to throw through the hoop from below the orange line'
+            : teach;
   if (status.set({ goal, numbers, hint }, over)) setAction(over);
   drawEndCard(over);
 }

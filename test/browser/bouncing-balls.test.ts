@@ -848,8 +848,9 @@ describe('bouncing balls: the hoop game', () => {
   it('phone 390 x 844, touch: nothing moves the field while aiming, as the hint changes mid-drag; every line fits on one line', async () => {
     const g = await h.openGame('bouncing-balls', { viewport: { width: 390, height: 844 }, touch: true, query: { count: 8 } });
     await expect.poll(() => g.page.locator('[data-hud="hoop"]').isVisible()).toBe(true);
-    // A throw from above the line: the hint says "Too high" for 2.5 s, then the teaching hints take
-    // turns every 5 s of world time (the longest of them wrapped to two lines at 390 px).
+    // A throw from above the line: the hint says "Too high" until the next throw; a throw from below
+    // the line mid-drag ends it, and then the teaching hints take turns every 5 s of world time (the
+    // longest of them wrapped to two lines at 390 px).
     await g.page.evaluate(() => (window.game as unknown as HoopGame).shoot(5, 14, 0, 0));
     const sample = () =>
       g.page.evaluate(() => {
@@ -870,6 +871,7 @@ describe('bouncing balls: the hoop game', () => {
     await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: [{ x: from.x, y: from.y, id: 1 }] });
     const seen: { field: number; hint: string; cut: (string | null)[] }[] = [];
     for (let i = 0; i < 400 && new Set(seen.map((s) => s.hint)).size < 3; i++) {
+      if (i === 5) await g.page.evaluate(() => (window.game as unknown as HoopGame).shoot(1, 2, 0, 0));
       await cdp.send('Input.dispatchTouchEvent', {
         type: 'touchMove',
         touchPoints: [{ x: from.x - 20 + (i % 10), y: from.y + 60 + (i % 7), id: 1 }],
@@ -888,11 +890,34 @@ describe('bouncing balls: the hoop game', () => {
     await g.close();
   });
 
+  it('desktop 1280 x 800: "Too high" stays on the status row until the next throw, which ends it', async () => {
+    const g = await h.openGame('bouncing-balls', { viewport: { width: 1280, height: 800 }, query: { count: 8 } });
+    await expect.poll(() => g.page.locator('[data-hud="hoop"]').isVisible()).toBe(true);
+    const hint = () => g.page.locator('[data-hud="hoop"] [data-hud="hint"]').textContent();
+    // A throw 1 m above the rim's line (straight up, so it lands in the box and lies there).
+    const t0 = await g.page.evaluate(() => {
+      const game = window.game as unknown as HoopGame & { world: { time: number } };
+      game.shoot(2, game.hoop().y + 1, 0, 3);
+      return game.world.time;
+    });
+    await expect.poll(hint).toMatch(/^Too high: throw from below the orange line/);
+    // 6 s of world time later (more than one turn of the teaching hints, 5 s; before, the reminder
+    // gave way to them after 2.5 s) the reminder is still there.
+    await g.waitFor((t) => (window.game as unknown as { world: { time: number } }).world.time > t + 6, t0, 30_000);
+    expect(await hint()).toMatch(/^Too high: throw from below the orange line/);
+    // A throw from below the line ends it.
+    await g.page.evaluate(() => (window.game as unknown as HoopGame).shoot(2, 1.5, 0, 3));
+    await expect.poll(hint).not.toMatch(/Too high/);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
   it('phone 390 x 844, touch: the goal shows above the box; a tap does not start the clock; a pull from below the line shows the arc, throws a ball up and away, and the clock waits for the first basket', async () => {
     const g = await h.openGame('bouncing-balls', { viewport: { width: 390, height: 844 }, touch: true, query: { count: 8 } });
     const status = g.page.locator('[data-hud="hoop"]');
     await expect.poll(() => status.isVisible()).toBe(true);
-    expect(await status.textContent()).toMatch(/pull back and let go to throw through the hoop/);
+    // The opening hint says the rule too (it said how to throw, not from where, and a stranger threw from anywhere).
+    expect(await status.textContent()).toMatch(/through the hoop from below the orange line/);
     const row = (await status.boundingBox())!;
     const top = await g.worldToPage(0, 16);
     expect(row.y + row.height).toBeLessThanOrEqual(top.y + 1);
