@@ -1694,21 +1694,31 @@ function placeTouchHint(): void {
 placeTouchHint();
 
 /**
- * On a tall page the box is narrower than the canvas is tall, so a centred fit leaves a band above and
- * below it; the band above sat between the status row and the box. This frames the box at the top of the
- * canvas (the camera's padding under the status row) and leaves the spare height under the floor.
+ * Room to pull back into under the wide box's floor on a desktop, m: a pull from a heap ball lying on the
+ * floor goes down, and with the floor near the window's bottom the mouse met the window's edge some 65 px
+ * under the lowest ball, so a full-speed throw (pullFullPull) was a 65 px flick. This strip (the
+ * court's stand) gives it about 160 px at 1280 x 800, for a box 16 % smaller. The phone's box is
+ * narrower than its screen is tall and leaves a strip of its own.
+ */
+const DESK_PULL_ROOM = 2.5;
+
+/**
+ * Frames the box at the top of the canvas (the camera's padding under the status row) with spare height
+ * under the floor to pull back into. On a tall page the box is narrower than the canvas is tall, so a
+ * centred fit left a band above and below it, the band above between the status row and the box; on a
+ * wide one the view reaches DESK_PULL_ROOM under the floor (centred across the canvas).
  * The camera's view is a rectangle as wide as the box, ending at its top and reaching down as far as
- * the canvas's aspect allows; refitted only when the canvas size changes the wanted rectangle.
+ * the canvas's aspect allows (at least DESK_PULL_ROOM under the floor on a wide page); refitted only
+ * when the canvas size changes the wanted rectangle.
  */
 function anchorCourt(): void {
-  if (!TALL) return;
   const cam = renderer.camera;
   const { box } = layoutOf(TALL);
   const w = box.max[0] - box.min[0],
-    h = box.max[1] - box.min[1];
+    h = box.max[1] - box.min[1] + (TALL ? 0 : DESK_PULL_ROOM);
   const pad = cam.padding;
   if (cam.width <= 2 * pad || cam.height <= 2 * pad) return;
-  // The scale a centred fit of the box gives, and the height in m the canvas shows at that scale.
+  // The scale a centred fit of the box (and the strip) gives, and the height in m the canvas shows at that scale.
   const ppm = Math.min((cam.width - 2 * pad) / w, (cam.height - 2 * pad) / h);
   const shown = Math.max(h, (cam.height - 2 * pad) / ppm);
   const minY = box.max[1] - shown;

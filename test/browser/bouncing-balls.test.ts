@@ -1113,6 +1113,9 @@ describe('bouncing balls: cancelling, full-power pulls and the end of a round mi
     });
     const at = await g.worldToPage(low.x, low.y);
     const viewport = g.page.viewportSize()!;
+    // The strip under the box (main.ts DESK_PULL_ROOM) leaves room to pull back into: 150 px or more
+    // under the lowest ball (with the floor near the window's bottom it was some 65 px).
+    expect(viewport.height - at.y).toBeGreaterThan(150);
     const m = g.page.mouse;
     await m.move(at.x, at.y);
     await m.down();
@@ -1131,8 +1134,10 @@ describe('bouncing balls: cancelling, full-power pulls and the end of a round mi
     await g.close();
   });
 
-  it("desktop 1280 x 800: from a heap ball by the window's right edge, a pull to that edge throws at the full speed", async () => {
-    const g = await h.openGame('bouncing-balls', { viewport: { width: 1280, height: 800 }, query: { count: 40 } });
+  it("desktop 1280 x 1000: from a heap ball by the window's right edge, a pull to that edge throws at the full speed", async () => {
+    // 1000 px tall: the box (with the strip to pull into under it) is as wide as the canvas, so it
+    // reaches the window's right edge (at 800 px the strip's height leaves a band either side of it).
+    const g = await h.openGame('bouncing-balls', { viewport: { width: 1280, height: 1000 }, query: { count: 40 } });
     // The box reaches the window's right edge: the heap balls by its right wall have a few tens of px
     // of room to their right. The heap settles, then the rightmost ball with 45 px or more of room
     // (main.ts MIN_FULL_PULL, 40 px, is the shortest full pull) is pressed at its centre and pulled
