@@ -952,6 +952,10 @@ function ballUnder(x: number, y: number): number {
 }
 
 canvas.addEventListener('pointerdown', (event) => {
+  // On a small screen a drawer (the parameters, the controls) lies over the top of the box, where the
+  // hoop is: a press on the field closes it, so the game is played in full view.
+  const page = pageLayout();
+  if (page.compact() && page.root.dataset.open) page.open(null);
   if (grabbing || event.button !== 0 || pointerId !== -1 || drag.joint !== 0) return;
   pointerId = event.pointerId;
   canvas.setPointerCapture(event.pointerId);

@@ -9,7 +9,8 @@
  * still), holding still on a ball for 1 s drags it, P pauses (nothing moves while paused, motion
  * resumes after), N advances exactly one step, R rebuilds the same seeded scene. Aiming: a pull taken
  * back onto its press point cancels (mouse and touch), a pull straight down from the lowest heap ball
- * reaches the full speed inside the viewport, and the round's end ends an aim under way.
+ * reaches the full speed inside the viewport, and the round's end ends an aim under way. A rule reminder
+ * ("Too high") stays until the next throw; on a phone a press on the field closes the parameters drawer.
  * The tests share one page with a small ball count (?count=8); before each, the game is reset
  * (window.game.reset(), unpaused) and the page's error list emptied, so each starts from the
  * same seeded scene.
@@ -908,6 +909,20 @@ describe('bouncing balls: the hoop game', () => {
     // A throw from below the line ends it.
     await g.page.evaluate(() => (window.game as unknown as HoopGame).shoot(2, 1.5, 0, 3));
     await expect.poll(hint).not.toMatch(/Too high/);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
+  it('phone 390 x 844, touch: the parameters drawer over the hoop closes when the field is pressed', async () => {
+    const g = await h.openGame('bouncing-balls', { viewport: { width: 390, height: 844 }, touch: true, query: { count: 8 } });
+    await expect.poll(() => g.page.locator('[data-hud="hoop"]').isVisible()).toBe(true);
+    const open = () => g.page.evaluate(() => document.querySelector<HTMLElement>('.bp-app')?.dataset.open ?? '');
+    await g.page.getByRole('button', { name: 'parameters and charts' }).tap();
+    expect(await open()).toBe('side');
+    // A tap on the field low in the box (under the drawer), 1 m over the floor.
+    const at = await g.worldToPage(5, 1);
+    await g.page.touchscreen.tap(at.x, at.y);
+    await expect.poll(open).toBe('');
     expect(g.errors).toEqual([]);
     await g.close();
   });
