@@ -237,6 +237,8 @@ function createWorld(): PhysicsWorld {
   goldBall = 0;
   goldRng = new Rng(params.seed + 7);
   missAt = -1e9;
+  ruleHint = '';
+  lastThrown = 0;
   lastBasket = { x: 0, y: 0, time: -10, spot: 0, score: 0, points: 0, kind: 'basketball' };
   hoopIds = addHoop(world, hoopSpots(TALL)[round.spot]!, params.restitution, params.friction);
   leaving = new Map();
@@ -488,8 +490,7 @@ function playHoop(world: PhysicsWorld): void {
       // Up through the hoop from below: no basket when it comes back down.
       b.scores = false;
       if (basketballs.has(e)) renderer.setColor(e, HIGH_COLOR);
-      tooHighAt = performance.now();
-      hintReason = 'below';
+      if (e === lastThrown) ruleHint = 'below';
     }
     const wasSpot = round.spot;
     if (b.scores && crossing === -1 && roundBasket(round, spots.length, b.kind, hoopRandom)) {
@@ -951,6 +952,10 @@ function ballUnder(x: number, y: number): number {
 }
 
 canvas.addEventListener('pointerdown', (event) => {
+  // On a small screen a drawer (the parameters, the controls) lies over the top of the box, where the
+  // hoop is: a press on the field closes it, so the game is played in full view.
+  const page = pageLayout();
+  if (page.compact() && page.root.dataset.open) page.open(null);
   if (grabbing || event.button !== 0 || pointerId !== -1 || drag.joint !== 0) return;
   pointerId = event.pointerId;
   canvas.setPointerCapture(event.pointerId);
@@ -1094,10 +1099,9 @@ function launch(e: number, thrown: boolean): void {
   else flights.delete(e);
   if (round.phase !== 'over' && thrown) {
     roundShot(round);
-    if (!scores) {
-      tooHighAt = performance.now();
-      hintReason = 'high';
-    }
+    // Each throw replaces the last one's reminder: a throw from below the line clears it.
+    lastThrown = e;
+    ruleHint = scores ? '' : 'high';
   }
 }
 canvas.addEventListener('pointerup', (event) => release(event, false));
@@ -1363,10 +1367,14 @@ const CONFETTI = (() => {
     };
   });
 })();
-/** When a ball was last released too high to score (performance.now() ms), for the status row's reminder. */
-let tooHighAt = -1e9;
-/** Why the last ball cannot score: released above the line, or went up through the hoop from below. */
-let hintReason: 'high' | 'below' = 'high';
+/**
+ * Why the player's last throw cannot score, for the status row's reminder ('' when it may): released
+ * above the line ('high'), or went up through the hoop from below ('below'). Kept until the next
+ * throw, so the reminder stays on the row however long the ball flies (a rotating tip replaced it).
+ */
+let ruleHint: '' | 'high' | 'below' = '';
+/** The ball of the player's last throw (0 before the first): only its rule breaks set ruleHint. */
+let lastThrown = 0;
 
 /**
  * Draws the hoop each frame: the backboard (a white board with its target square, on a bracket
@@ -1690,21 +1698,31 @@ function placeTouchHint(): void {
 placeTouchHint();
 
 /**
- * On a tall page the box is narrower than the canvas is tall, so a centred fit leaves a band above and
- * below it; the band above sat between the status row and the box. This frames the box at the top of the
- * canvas (the camera's padding under the status row) and leaves the spare height under the floor.
+ * Room to pull back into under the wide box's floor on a desktop, m: a pull from a heap ball lying on the
+ * floor goes down, and with the floor near the window's bottom the mouse met the window's edge some 65 px
+ * under the lowest ball, so a full-speed throw (pullFullPull) was a 65 px flick. This strip (the
+ * court's stand) gives it about 160 px at 1280 x 800, for a box 16 % smaller. The phone's box is
+ * narrower than its screen is tall and leaves a strip of its own.
+ */
+const DESK_PULL_ROOM = 2.5;
+
+/**
+ * Frames the box at the top of the canvas (the camera's padding under the status row) with spare height
+ * under the floor to pull back into. On a tall page the box is narrower than the canvas is tall, so a
+ * centred fit left a band above and below it, the band above between the status row and the box; on a
+ * wide one the view reaches DESK_PULL_ROOM under the floor (centred across the canvas).
  * The camera's view is a rectangle as wide as the box, ending at its top and reaching down as far as
- * the canvas's aspect allows; refitted only when the canvas size changes the wanted rectangle.
+ * the canvas's aspect allows (at least DESK_PULL_ROOM under the floor on a wide page); refitted only
+ * when the canvas size changes the wanted rectangle.
  */
 function anchorCourt(): void {
-  if (!TALL) return;
   const cam = renderer.camera;
   const { box } = layoutOf(TALL);
   const w = box.max[0] - box.min[0],
-    h = box.max[1] - box.min[1];
+    h = box.max[1] - box.min[1] + (TALL ? 0 : DESK_PULL_ROOM);
   const pad = cam.padding;
   if (cam.width <= 2 * pad || cam.height <= 2 * pad) return;
-  // The scale a centred fit of the box gives, and the height in m the canvas shows at that scale.
+  // The scale a centred fit of the box (and the strip) gives, and the height in m the canvas shows at that scale.
   const ppm = Math.min((cam.width - 2 * pad) / w, (cam.height - 2 * pad) / h);
   const shown = Math.max(h, (cam.height - 2 * pad) / ppm);
   const minY = box.max[1] - shown;
@@ -1749,8 +1767,8 @@ function updateStatus(): void {
           ? `${round.streak} in a row: the next basket scores ×${streakMultiplier(round.streak)}`
           : 'Throw balls through the hoop!';
   const numbers = `Points ${round.points} · ×${streakMultiplier(round.streak)} · Time ${secs} s · Best ${best}`;
-  const throwHow = touch ? 'Press, pull back and let go to throw' : 'Press, drag back and let go to throw';
-  // While playing the hint takes turns (5 s each) between the heap's balls and the streak.
+  // The last throw's rule break (ruleHint) stays until the next throw; otherwise, while playing, the
+  // hint takes turns (5 s each) between the heap's balls and the streak.
   const teach =
     Math.floor(shell.world.time / 5) % 2 === 0
       ? touch
@@ -1761,14 +1779,16 @@ function updateStatus(): void {
     ? `${touch ? 'Tap' : 'R or'} Play again for a new round`
     : performance.now() - missAt < 2500
       ? 'Missed: the streak is over'
-      : performance.now() - tooHighAt < 2500
-        ? hintReason === 'high'
-          ? 'Too high: throw from below the orange line to score'
-          : `Up through the net does not count${touch ? '' : ': drop it in from above'}`
-        : round.phase === 'ready' && round.shots === 0
-          ? // One line on a phone too: a second line there moved the box down the moment it changed.
-            `${throwHow} through the hoop${touch ? '' : ' from below the orange line'}`
-          : teach;
+      : ruleHint === 'high'
+        ? 'Too high: throw from below the orange line to score'
+        : ruleHint === 'below'
+          ? `Up through the net does not count${touch ? '' : ': drop it in from above'}`
+          : round.phase === 'ready' && round.shots === 0
+            ? // One line on a phone too (a second line there moved the box down the moment it changed), so the phone's is shorter.
+              touch
+              ? 'Throw through the hoop from below the orange line'
+              : 'Press, drag back and let go to throw through the hoop from below the orange line'
+            : teach;
   if (status.set({ goal, numbers, hint }, over)) setAction(over);
   drawEndCard(over);
 }

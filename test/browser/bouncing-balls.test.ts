@@ -9,7 +9,8 @@
  * still), holding still on a ball for 1 s drags it, P pauses (nothing moves while paused, motion
  * resumes after), N advances exactly one step, R rebuilds the same seeded scene. Aiming: a pull taken
  * back onto its press point cancels (mouse and touch), a pull straight down from the lowest heap ball
- * reaches the full speed inside the viewport, and the round's end ends an aim under way.
+ * reaches the full speed inside the viewport, and the round's end ends an aim under way. A rule reminder
+ * ("Too high") stays until the next throw; on a phone a press on the field closes the parameters drawer.
  * The tests share one page with a small ball count (?count=8); before each, the game is reset
  * (window.game.reset(), unpaused) and the page's error list emptied, so each starts from the
  * same seeded scene.
@@ -848,8 +849,9 @@ describe('bouncing balls: the hoop game', () => {
   it('phone 390 x 844, touch: nothing moves the field while aiming, as the hint changes mid-drag; every line fits on one line', async () => {
     const g = await h.openGame('bouncing-balls', { viewport: { width: 390, height: 844 }, touch: true, query: { count: 8 } });
     await expect.poll(() => g.page.locator('[data-hud="hoop"]').isVisible()).toBe(true);
-    // A throw from above the line: the hint says "Too high" for 2.5 s, then the teaching hints take
-    // turns every 5 s of world time (the longest of them wrapped to two lines at 390 px).
+    // A throw from above the line: the hint says "Too high" until the next throw; a throw from below
+    // the line mid-drag ends it, and then the teaching hints take turns every 5 s of world time (the
+    // longest of them wrapped to two lines at 390 px).
     await g.page.evaluate(() => (window.game as unknown as HoopGame).shoot(5, 14, 0, 0));
     const sample = () =>
       g.page.evaluate(() => {
@@ -870,6 +872,7 @@ describe('bouncing balls: the hoop game', () => {
     await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: [{ x: from.x, y: from.y, id: 1 }] });
     const seen: { field: number; hint: string; cut: (string | null)[] }[] = [];
     for (let i = 0; i < 400 && new Set(seen.map((s) => s.hint)).size < 3; i++) {
+      if (i === 5) await g.page.evaluate(() => (window.game as unknown as HoopGame).shoot(1, 2, 0, 0));
       await cdp.send('Input.dispatchTouchEvent', {
         type: 'touchMove',
         touchPoints: [{ x: from.x - 20 + (i % 10), y: from.y + 60 + (i % 7), id: 1 }],
@@ -888,11 +891,48 @@ describe('bouncing balls: the hoop game', () => {
     await g.close();
   });
 
+  it('desktop 1280 x 800: "Too high" stays on the status row until the next throw, which ends it', async () => {
+    const g = await h.openGame('bouncing-balls', { viewport: { width: 1280, height: 800 }, query: { count: 8 } });
+    await expect.poll(() => g.page.locator('[data-hud="hoop"]').isVisible()).toBe(true);
+    const hint = () => g.page.locator('[data-hud="hoop"] [data-hud="hint"]').textContent();
+    // A throw 1 m above the rim's line (straight up, so it lands in the box and lies there).
+    const t0 = await g.page.evaluate(() => {
+      const game = window.game as unknown as HoopGame & { world: { time: number } };
+      game.shoot(2, game.hoop().y + 1, 0, 3);
+      return game.world.time;
+    });
+    await expect.poll(hint).toMatch(/^Too high: throw from below the orange line/);
+    // 6 s of world time later (more than one turn of the teaching hints, 5 s; before, the reminder
+    // gave way to them after 2.5 s) the reminder is still there.
+    await g.waitFor((t) => (window.game as unknown as { world: { time: number } }).world.time > t + 6, t0, 30_000);
+    expect(await hint()).toMatch(/^Too high: throw from below the orange line/);
+    // A throw from below the line ends it.
+    await g.page.evaluate(() => (window.game as unknown as HoopGame).shoot(2, 1.5, 0, 3));
+    await expect.poll(hint).not.toMatch(/Too high/);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
+  it('phone 390 x 844, touch: the parameters drawer over the hoop closes when the field is pressed', async () => {
+    const g = await h.openGame('bouncing-balls', { viewport: { width: 390, height: 844 }, touch: true, query: { count: 8 } });
+    await expect.poll(() => g.page.locator('[data-hud="hoop"]').isVisible()).toBe(true);
+    const open = () => g.page.evaluate(() => document.querySelector<HTMLElement>('.bp-app')?.dataset.open ?? '');
+    await g.page.getByRole('button', { name: 'parameters and charts' }).tap();
+    expect(await open()).toBe('side');
+    // A tap on the field low in the box (under the drawer), 1 m over the floor.
+    const at = await g.worldToPage(5, 1);
+    await g.page.touchscreen.tap(at.x, at.y);
+    await expect.poll(open).toBe('');
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
   it('phone 390 x 844, touch: the goal shows above the box; a tap does not start the clock; a pull from below the line shows the arc, throws a ball up and away, and the clock waits for the first basket', async () => {
     const g = await h.openGame('bouncing-balls', { viewport: { width: 390, height: 844 }, touch: true, query: { count: 8 } });
     const status = g.page.locator('[data-hud="hoop"]');
     await expect.poll(() => status.isVisible()).toBe(true);
-    expect(await status.textContent()).toMatch(/pull back and let go to throw through the hoop/);
+    // The opening hint says the rule too (it said how to throw, not from where, and a stranger threw from anywhere).
+    expect(await status.textContent()).toMatch(/through the hoop from below the orange line/);
     const row = (await status.boundingBox())!;
     const top = await g.worldToPage(0, 16);
     expect(row.y + row.height).toBeLessThanOrEqual(top.y + 1);
@@ -1088,6 +1128,9 @@ describe('bouncing balls: cancelling, full-power pulls and the end of a round mi
     });
     const at = await g.worldToPage(low.x, low.y);
     const viewport = g.page.viewportSize()!;
+    // The strip under the box (main.ts DESK_PULL_ROOM) leaves room to pull back into: 150 px or more
+    // under the lowest ball (with the floor near the window's bottom it was some 65 px).
+    expect(viewport.height - at.y).toBeGreaterThan(150);
     const m = g.page.mouse;
     await m.move(at.x, at.y);
     await m.down();
@@ -1106,8 +1149,10 @@ describe('bouncing balls: cancelling, full-power pulls and the end of a round mi
     await g.close();
   });
 
-  it("desktop 1280 x 800: from a heap ball by the window's right edge, a pull to that edge throws at the full speed", async () => {
-    const g = await h.openGame('bouncing-balls', { viewport: { width: 1280, height: 800 }, query: { count: 40 } });
+  it("desktop 1280 x 1000: from a heap ball by the window's right edge, a pull to that edge throws at the full speed", async () => {
+    // 1000 px tall: the box (with the strip to pull into under it) is as wide as the canvas, so it
+    // reaches the window's right edge (at 800 px the strip's height leaves a band either side of it).
+    const g = await h.openGame('bouncing-balls', { viewport: { width: 1280, height: 1000 }, query: { count: 40 } });
     // The box reaches the window's right edge: the heap balls by its right wall have a few tens of px
     // of room to their right. The heap settles, then the rightmost ball with 45 px or more of room
     // (main.ts MIN_FULL_PULL, 40 px, is the shortest full pull) is pressed at its centre and pulled
