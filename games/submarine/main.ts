@@ -1243,6 +1243,14 @@ function drawDepthGauge(W: number, H: number, depth: number, order: number, bed:
     // Moved, the target's tag may now cross the boat's: the boat's depth is kept.
     if (gaugeTarget.visible && overlaps(textBox(gaugeTarget), textBox(gaugeDepth), 2)) gaugeTarget.visible = false;
   }
+  // Off the pointer's label pill and badge at the view's edge (on a phone the label ran into the
+  // scale's figures): the boat's depth moves above or below them, a figure of the scale there is hidden.
+  for (const [bx, by, bw, bh] of [aim.label, aim.badge] as [number, number, number, number][]) {
+    if (!pointer.visible || bw <= 0) continue;
+    const box = [bx - 7, by - 2, bw + 14, bh + 4];
+    if (gaugeDepth.visible) offFrame(gaugeDepth, box, top, bottom);
+    for (const mark of gaugeMarks) if (mark.visible && overlaps(textBox(mark), box, 2)) mark.visible = false;
+  }
   gauge_.depth = gaugeDepth.visible ? textBox(gaugeDepth) : [0, 0, 0, 0];
   gauge_.target = gaugeTarget.visible ? textBox(gaugeTarget) : [0, 0, 0, 0];
 }
@@ -1316,8 +1324,10 @@ function drawDepthLadder(t: number, sx: (x: number) => number, sy: (y: number) =
   ladder.alpha = Math.max(0, Math.min(1, ladder.alpha + ((moving ? 1 : -1) * dt) / LADDER_FADE));
   let used = 0;
   if (ladder.alpha > 0) {
+    // Kept far enough in from the view's left edge for its widest figure ("100 m", 11 px bold, about
+    // 36 px) left of the longer ticks: on a phone with the boat near the edge the figures were cut off.
     const x = hxw - SUBMARINE.length / 2 - 3,
-      px = sx(x),
+      px = Math.max(sx(x), 9 + 3 + 40),
       to = Number.isFinite(order) ? order : hyw;
     const hi = Math.min(-1, Math.max(hyw, to) + LADDER_REACH),
       lo = Math.min(hyw, to) - LADDER_REACH;
@@ -1744,6 +1754,24 @@ function draw(): void {
       );
       px = hx + dx * t;
       py = hy + dy * t;
+      // Slid along its edge off any live mine in view (a badge drawn over a mine hid it): away from
+      // the mine, by the badge's half size (30 px) plus the mine's halo and 4 px.
+      const side = px >= right - 1 || px <= m + 1;
+      for (let i = 0; i < mines.length; i++) {
+        if (!mineLive[i]) continue;
+        const mx = sx(mines[i]!.x),
+          my = sy(mines[i]!.y),
+          clear = 30 + Math.max(12, 1.9 * MINE_RADIUS * k) + 4;
+        if (Math.abs(mx - px) >= clear || Math.abs(my - py) >= clear) continue;
+        // The way off it that stays inside the view (the other way when that one leaves it).
+        if (side) {
+          const to = my + (py >= my ? clear : -clear);
+          py = to >= m && to <= H - m ? to : my + (py >= my ? -clear : clear);
+        } else {
+          const to = mx + (px >= mx ? clear : -clear);
+          px = to >= m && to <= right ? to : mx + (px >= mx ? -clear : clear);
+        }
+      }
       const ang = Math.atan2(dy, dx),
         ca = Math.cos(ang),
         sa = Math.sin(ang);
@@ -1851,6 +1879,16 @@ function draw(): void {
       pointer.y = pointer.y < ty + th / 2 ? ty - pointer.height / 2 - 6 : ty + th + pointer.height / 2 + 6;
     aim.label = [pointer.x - pointer.width / 2, pointer.y - pointer.height / 2, pointer.width, pointer.height];
     aim.hull = [hx0 - hr, hy0 - hr, 2 * hr, 2 * hr];
+    // The pickup banner ("Beacon 3 of 6") off the label's pill (on a phone it was drawn over it):
+    // moved just above the pill, or below it where above leaves the view.
+    if (banner.visible) {
+      const pill = [pointer.x - pointer.width / 2 - 7, pointer.y - pointer.height / 2 - 2, pointer.width + 14, pointer.height + 4];
+      const bb = [banner.x - banner.width / 2, banner.y - banner.height / 2, banner.width, banner.height];
+      if (overlaps(bb, pill, 4)) {
+        const above = pill[1]! - banner.height / 2 - 6;
+        banner.y = above >= banner.height / 2 + 4 ? above : pill[1]! + pill[3]! + banner.height / 2 + 6;
+      }
+    }
     // The label on a dark pill, readable over the bright surface water and the sky.
     const pw = pointer.width + 14,
       ph = pointer.height + 4;
