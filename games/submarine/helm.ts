@@ -30,7 +30,8 @@
  *   speed stops within about a hull's length instead of coasting on for a hundred metres on the
  *   water's drag alone (a telegraph that stayed at full ahead read as a stuck key; a screw that
  *   backed on its own braked the boat as if it had hit something). Astern held is the harder brake:
- *   the same brake and the screw backing.
+ *   the same brake and the screw backing; once the boat is stopped the brake lets the screw back it
+ *   (to recover a beacon overshot: the boat always faces ahead), and let go it stops the backing.
  */
 
 import type { PhysicsWorld } from '@bitphysics/physics';
@@ -181,17 +182,22 @@ export const HELM = Object.freeze({
 });
 
 /**
- * The horizontal force the coasting brake gives, N (negative: against a boat moving ahead): a
- * boat of `mass` kg moving at `u` m/s ahead (horizontally) with the screw at `throttle` (fraction of full,
- * in [-0.5, 1]) is braked at `HELM.coastBrake` times the share of full throttle not pushing ahead,
- * and in proportion to its speed below `HELM.coastFade`. Zero for a boat at rest.
+ * The horizontal force the coasting brake gives, N (against the motion: negative for a boat moving
+ * ahead, positive for one backing): a boat of `mass` kg moving at `u` m/s horizontally (positive
+ * ahead) with the screw at `throttle` (fraction of full, in [-0.5, 1]) is braked at
+ * `HELM.coastBrake` times the share of the screw not pushing the way it moves, and in proportion to
+ * its speed below `HELM.coastFade`. Moving ahead the share is 1 - throttle (0 at full ahead, 1.5 at
+ * full astern: Astern brakes harder); backing it is 1 + throttle / 0.5, in [0, 1.5] (0 at full
+ * astern, so the brake never fights the screw backing the boat; 1 with the screw stopped, so a boat
+ * let go while backing stops too). Zero for a boat at rest.
  * @throws RangeError when `mass` is not a finite positive number, or `u` or `throttle` is not finite.
  */
 export function coastBrake(mass: number, u: number, throttle: number): number {
   if (!(Number.isFinite(mass) && mass > 0)) throw new RangeError(`coastBrake: mass must be a finite number > 0 kg, got ${mass}`);
   if (!Number.isFinite(u)) throw new RangeError(`coastBrake: u must be finite, got ${u}`);
   if (!Number.isFinite(throttle)) throw new RangeError(`coastBrake: throttle must be finite, got ${throttle}`);
-  const share = 1 - clamp(throttle, -0.5, 1);
+  const t = clamp(throttle, -0.5, 1);
+  const share = u >= 0 ? 1 - t : clamp(1 + t / 0.5, 0, 1.5);
   return -mass * HELM.coastBrake * share * clamp(u / HELM.coastFade, -1, 1);
 }
 
@@ -368,9 +374,13 @@ export function steer(world: PhysicsWorld, handles: SubmarineHandles, input: Hel
   // At the surface with nothing asked the thrusters rest (they would only churn the water).
   if (state.mode === 'surfaced' && pitch === 0) state.fore = state.aft = 0;
   setSubmarineThrusters(handles, state.fore, state.aft);
-  // Ahead not held: the coasting brake on top of the screw (astern held, both brake together). It
-  // brakes the way ahead only (the horizontal speed, pushing horizontally: in the hull's frame
-  // cos / -sin of its angle), so it never slows a dive or a climb of a pitched boat.
-  const brakeForce = input.ahead && !input.astern ? 0 : coastBrake(mass, c.Velocity.x[e]!, state.throttle);
+  // The coasting brake on top of the screw, except while the key held pushes the way the boat
+  // moves (Ahead going ahead, Astern backing): let go, it stops the boat either way; Astern held
+  // going ahead (or Ahead backing), brake and screw stop it together. It brakes the horizontal
+  // speed only (pushing horizontally: in the hull's frame cos / -sin of its angle), so it never
+  // slows a dive or a climb of a pitched boat.
+  const ux = c.Velocity.x[e]!;
+  const along = (input.ahead && !input.astern && ux >= 0) || (input.astern && !input.ahead && ux <= 0);
+  const brakeForce = along ? 0 : coastBrake(mass, ux, state.throttle);
   setBodyThrust(world, e, [state.throttle * S.maxThrust + brakeForce * Math.cos(angle), -brakeForce * Math.sin(angle)]);
 }

@@ -9,7 +9,7 @@
  * each glow caught scores, more for a streak of them (a first-time hint over the scene says how much). The hull floats by Archimedes (its submerged part of a 12 m x 3 m box), drags in proportion
  * to how much of it is under water and bobs in the waves. Collect every beacon before three hits
  * (a scrape on the seabed, or a moored mine laid across the way between two beacons: ./mines.ts)
- * break the hull, inside the course's par time if you can: a won run earns a star for the beacons,
+ * break the hull, inside the course's par time if you can (the clock starts at the first control held): a won run earns a star for the beacons,
  * one for par and one for an unhurt hull (the best time of each course is kept). A mine on the
  * boat's course within MINE_WARN_TIME s is told by the hull: a red arrow from it to the mine, a tag
  * over the sail ("rise over") or under the keel ("dive under") and a low two-note call.
@@ -77,7 +77,10 @@ const state = {
   touching: false,
   diveStopped: false,
   over: '' as '' | 'won' | 'sunk',
+  /** The run's clock, s of game time since the first control was held (0 until then: the help can be read first). */
   time: 0,
+  /** Game time the first control was held (the clock's start), s; NaN until then. */
+  startedAt: Number.NaN,
   par: 0,
   lastHit: '' as '' | 'seabed' | 'mine',
   minesHit: 0,
@@ -249,6 +252,7 @@ function createWorld(): PhysicsWorld {
     diveStopped: false,
     over: '',
     time: 0,
+    startedAt: Number.NaN,
     par: parTime(handles.beacons),
     lastHit: '',
     minesHit: 0,
@@ -359,7 +363,10 @@ function stepWorld(world: PhysicsWorld): void {
   sea.surface[handles.sea] = params.waveHeight * 0.5 * Math.sin(0.9 * world.time);
   step(world);
   if (state.over) return;
-  state.time = world.time;
+  // The clock starts with the first control held, not when the page loads.
+  const anyHeld = input.dive || input.rise || input.noseDown || input.noseUp || input.ahead || input.astern;
+  if (Number.isNaN(state.startedAt) && anyHeld) state.startedAt = world.time;
+  state.time = Number.isNaN(state.startedAt) ? 0 : world.time - state.startedAt;
   // Sonar: a ping towards the next beacon, quicker the nearer it is (every 0.7 s near, 2.5 s far),
   // under water only.
   const next = aim.index;
@@ -456,8 +463,8 @@ function stepWorld(world: PhysicsWorld): void {
       }
       if (state.collected === taken.length) {
         state.over = 'won';
-        state.score += PAR_POINTS * Math.max(0, Math.floor(state.par - world.time));
-        recordWin(world.time);
+        state.score += PAR_POINTS * Math.max(0, Math.floor(state.par - state.time));
+        recordWin(state.time);
       }
     }
   }
@@ -516,7 +523,7 @@ const game = await startPixiGame({
     { keys: '↓ ↑ / S W', action: 'dive / rise (let go: stop at the line)', touch: 'stick ↓ ↑' },
     { keys: '← → / A D', action: 'screw astern / ahead', touch: 'stick ← →' },
     { keys: 'Q / E', action: 'nose down / up', touch: 'Nose ↘ / ↗' },
-    { keys: '◯', action: 'beacon: touch its ring with the boat to collect it', touch: '◯' },
+    { keys: '◯', action: 'beacon: touch its yellow ring with any part of the boat to collect it', touch: '◯' },
     { keys: '●', action: GLOW_LEGEND, touch: '●' },
   ],
   app: { background: 0x0b2340, antialias: true },
@@ -1236,6 +1243,14 @@ function drawDepthGauge(W: number, H: number, depth: number, order: number, bed:
     // Moved, the target's tag may now cross the boat's: the boat's depth is kept.
     if (gaugeTarget.visible && overlaps(textBox(gaugeTarget), textBox(gaugeDepth), 2)) gaugeTarget.visible = false;
   }
+  // Off the pointer's label pill and badge at the view's edge (on a phone the label ran into the
+  // scale's figures): the boat's depth moves above or below them, a figure of the scale there is hidden.
+  for (const [bx, by, bw, bh] of [aim.label, aim.badge] as [number, number, number, number][]) {
+    if (!pointer.visible || bw <= 0) continue;
+    const box = [bx - 7, by - 2, bw + 14, bh + 4];
+    if (gaugeDepth.visible) offFrame(gaugeDepth, box, top, bottom);
+    for (const mark of gaugeMarks) if (mark.visible && overlaps(textBox(mark), box, 2)) mark.visible = false;
+  }
   gauge_.depth = gaugeDepth.visible ? textBox(gaugeDepth) : [0, 0, 0, 0];
   gauge_.target = gaugeTarget.visible ? textBox(gaugeTarget) : [0, 0, 0, 0];
 }
@@ -1309,8 +1324,10 @@ function drawDepthLadder(t: number, sx: (x: number) => number, sy: (y: number) =
   ladder.alpha = Math.max(0, Math.min(1, ladder.alpha + ((moving ? 1 : -1) * dt) / LADDER_FADE));
   let used = 0;
   if (ladder.alpha > 0) {
+    // Kept far enough in from the view's left edge for its widest figure ("100 m", 11 px bold, about
+    // 36 px) left of the longer ticks: on a phone with the boat near the edge the figures were cut off.
     const x = hxw - SUBMARINE.length / 2 - 3,
-      px = sx(x),
+      px = Math.max(sx(x), 9 + 3 + 40),
       to = Number.isFinite(order) ? order : hyw;
     const hi = Math.min(-1, Math.max(hyw, to) + LADDER_REACH),
       lo = Math.min(hyw, to) - LADDER_REACH;
@@ -1589,9 +1606,10 @@ function draw(): void {
     glows.some((gl, i) => glowState[i] === 0 && gl.x > left && gl.x < right && sy(gl.y) > 0 && sy(gl.y) < H),
   );
   drawMines(t, k, sx, sy, left, right, hxw, hyw, c.Angle.value[e]!);
-  // Beacons: a lamp (at least 5 px, however far the camera zooms out) in a pulsing ring, inside a
-  // ring of the catch radius (BEACON_CATCH: any part of the hull inside it collects), drawn as a
-  // bright dashed ring round a faint disc, brighter as the hull nears it; each one
+  // Beacons: a lamp (at least 5 px, however far the camera zooms out) in a soft pulsing glow, inside
+  // its one ring, the catch radius (BEACON_CATCH: any part of the hull inside it collects; the help
+  // tells the player to touch it), drawn solid round a faint disc with the stroke's outer edge on the catch
+  // radius (so the boat touching the line drawn is inside it), brighter as the hull nears it; each one
   // on screen but the pointer's is tagged "beacon" under it, so a yellow light elsewhere in the view
   // reads as another beacon to collect, not as something unexplained.
   let tagged = 0;
@@ -1606,16 +1624,11 @@ function draw(): void {
     const rk = BEACON_CATCH * k,
       near = Math.max(0, 1 - Math.hypot(handles.beacons[2 * i]! - hxw, handles.beacons[2 * i + 1]! - hyw) / (4 * BEACON_CATCH));
     g.circle(bx, by, rk).fill({ color: 0xffe066, alpha: (0.08 + 0.08 * near) * dim });
-    // 24 dashes turning slowly, so the ring reads as a zone's edge, not a lamp's halo.
-    for (let j = 0; j < 24; j++) {
-      const a0 = (j / 24) * 2 * Math.PI + 0.25 * t,
-        a1 = a0 + (0.6 * 2 * Math.PI) / 24;
-      g.moveTo(bx + rk * Math.cos(a0), by + rk * Math.sin(a0))
-        .arc(bx, by, rk, a0, a1)
-        .stroke({ color: 0xffe066, alpha: (0.55 + 0.45 * near) * dim, width: 2 + near });
-    }
+    const ringWidth = 2.5 + near;
+    g.circle(bx, by, Math.max(1, rk - ringWidth / 2)).stroke({ color: 0xffe066, alpha: (0.6 + 0.4 * near) * dim, width: ringWidth });
+    // The lamp's glow: filled discs (no second ring to mistake for the one to touch).
+    g.circle(bx, by, Math.max(9, (2 + Math.sin(3 * t)) * k)).fill({ color: 0xffe066, alpha: 0.14 * dim });
     g.circle(bx, by, Math.max(5, 1.2 * k)).fill({ color: 0xffe066, alpha: dim * (0.9 + 0.1 * Math.sin(4 * t)) });
-    g.circle(bx, by, Math.max(9, (2 + Math.sin(3 * t)) * k)).stroke({ color: 0xffe066, alpha: 0.4 * dim, width: 2 });
     if (i === aim.index && aim.onScreen) {
       const r = Math.max(14, BEACON_CATCH * k) + 6 + 3 * Math.sin(3 * t),
         arm = Math.max(6, 0.35 * r);
@@ -1741,6 +1754,24 @@ function draw(): void {
       );
       px = hx + dx * t;
       py = hy + dy * t;
+      // Slid along its edge off any live mine in view (a badge drawn over a mine hid it): away from
+      // the mine, by the badge's half size (30 px) plus the mine's halo and 4 px.
+      const side = px >= right - 1 || px <= m + 1;
+      for (let i = 0; i < mines.length; i++) {
+        if (!mineLive[i]) continue;
+        const mx = sx(mines[i]!.x),
+          my = sy(mines[i]!.y),
+          clear = 30 + Math.max(12, 1.9 * MINE_RADIUS * k) + 4;
+        if (Math.abs(mx - px) >= clear || Math.abs(my - py) >= clear) continue;
+        // The way off it that stays inside the view (the other way when that one leaves it).
+        if (side) {
+          const to = my + (py >= my ? clear : -clear);
+          py = to >= m && to <= H - m ? to : my + (py >= my ? -clear : clear);
+        } else {
+          const to = mx + (px >= mx ? clear : -clear);
+          px = to >= m && to <= right ? to : mx + (px >= mx ? -clear : clear);
+        }
+      }
       const ang = Math.atan2(dy, dx),
         ca = Math.cos(ang),
         sa = Math.sin(ang);
@@ -1848,6 +1879,16 @@ function draw(): void {
       pointer.y = pointer.y < ty + th / 2 ? ty - pointer.height / 2 - 6 : ty + th + pointer.height / 2 + 6;
     aim.label = [pointer.x - pointer.width / 2, pointer.y - pointer.height / 2, pointer.width, pointer.height];
     aim.hull = [hx0 - hr, hy0 - hr, 2 * hr, 2 * hr];
+    // The pickup banner ("Beacon 3 of 6") off the label's pill (on a phone it was drawn over it):
+    // moved just above the pill, or below it where above leaves the view.
+    if (banner.visible) {
+      const pill = [pointer.x - pointer.width / 2 - 7, pointer.y - pointer.height / 2 - 2, pointer.width + 14, pointer.height + 4];
+      const bb = [banner.x - banner.width / 2, banner.y - banner.height / 2, banner.width, banner.height];
+      if (overlaps(bb, pill, 4)) {
+        const above = pill[1]! - banner.height / 2 - 6;
+        banner.y = above >= banner.height / 2 + 4 ? above : pill[1]! + pill[3]! + banner.height / 2 + 6;
+      }
+    }
     // The label on a dark pill, readable over the bright surface water and the sky.
     const pw = pointer.width + 14,
       ph = pointer.height + 4;

@@ -29,6 +29,7 @@ type Sub = {
   handles(): { beacons: Float64Array; seabed: { x0: number; dx: number; y: Float64Array } };
   state: {
     hits: number;
+    time: number;
     holdY: number;
     throttle: number;
     mode: string;
@@ -457,6 +458,40 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     await g.frames(40);
     const far = await g.page.evaluate(() => (window.game as unknown as Sub).camera().zoom);
     expect(far).toBeGreaterThan(device === 'desktop' ? 4.9 : 3.9);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
+  it.runIf(device === 'desktop')("the run's clock starts at the first key, and Astern from rest backs the boat", async () => {
+    // A stranger's clock ran while they read the help; and Astern held the boat to 0.2 m/s backing
+    // (the coasting brake fought the screw), so a beacon overshot could not be recovered.
+    const g = await h.openGame('submarine', { viewport, touch, query: { waves: 0, beacons: 1 } });
+    const t0 = await g.page.evaluate(() => (window.game as unknown as Sub).world.time);
+    await g.waitFor((start) => (window.game as unknown as Sub).world.time > start + 1, t0, 60_000);
+    const idle = await g.page.evaluate(() => (window.game as unknown as Sub).state.time);
+    expect(idle).toBe(0);
+    // Astern (A) held for 2 s of game time from rest, 20 m down (clear of the surface and seabed).
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as Sub;
+      const c = w.world.components,
+        e = w.hull();
+      c.Position.y[e] = -20;
+      c.Velocity.x[e] = 0;
+      c.Velocity.y[e] = 0;
+      w.state.holdY = -20;
+    });
+    await g.page.keyboard.down('a');
+    const pressed = await g.page.evaluate(() => (window.game as unknown as Sub).world.time);
+    await g.waitFor((start) => (window.game as unknown as Sub).world.time > start + 2, pressed, 60_000);
+    const r = await g.page.evaluate(() => {
+      const w = window.game as unknown as Sub;
+      return { clock: w.state.time, time: w.world.time, vx: w.world.components.Velocity.x[w.hull()]! };
+    });
+    await g.page.keyboard.up('a');
+    // The clock counts from the key (a frame or two after it was read), not from the page's load.
+    expect(r.clock).toBeGreaterThan(r.time - pressed - 0.2);
+    expect(r.clock).toBeLessThan(r.time - pressed + 0.2);
+    expect(r.vx).toBeLessThan(-2.5);
     expect(g.errors).toEqual([]);
     await g.close();
   });

@@ -191,9 +191,34 @@ describe('submarine helm', () => {
     expect(coastBrake(1e5, HELM.coastFade / 2, 0)).toBeCloseTo((-1e5 * HELM.coastBrake) / 2, 6);
     expect(coastBrake(1e5, 10, 1)).toBeCloseTo(0, 9);
     expect(coastBrake(1e5, 10, -0.5)).toBeCloseTo(-1.5e5 * HELM.coastBrake, 6);
+    // Backing: none with the screw at full astern (it must not fight the screw), all of it with the
+    // screw stopped (let go, the backing stops too), more with the screw ahead.
+    expect(coastBrake(1e5, -10, -0.5)).toBeCloseTo(0, 9);
+    expect(coastBrake(1e5, -HELM.coastFade / 2, 0)).toBeCloseTo((1e5 * HELM.coastBrake) / 2, 6);
+    expect(coastBrake(1e5, -10, 0.25)).toBeCloseTo(1.5e5 * HELM.coastBrake, 6);
     expect(() => coastBrake(0, 1, 0)).toThrow(/coastBrake: mass/);
     expect(() => coastBrake(1e5, Number.NaN, 0)).toThrow(/coastBrake: u/);
     expect(() => coastBrake(1e5, 1, Number.POSITIVE_INFINITY)).toThrow(/coastBrake: throttle/);
+  });
+
+  it('Astern from a hover backs the boat: 3 m/s within 2.5 s, 25 m within 10 s; let go, it stops within 8 m', () => {
+    // The boat always faces ahead, so backing is how a player recovers a beacon overshot (a
+    // stranger backed at 0.2 m/s when the coasting brake fought the screw: 3 m in 18 s).
+    const b = boat(-30);
+    const x = () => b.world.components.Position.x[b.h.hull]!,
+      vx = () => b.world.components.Velocity.x[b.h.hull]!;
+    const x0 = x();
+    let three = Number.NaN;
+    run(b, { astern: true }, 10, (t) => {
+      if (Number.isNaN(three) && vx() <= -3) three = t;
+    });
+    expect(three).toBeLessThan(2.5);
+    expect(x0 - x()).toBeGreaterThan(25);
+    const x1 = x();
+    run(b, {}, 5);
+    expect(Math.abs(vx())).toBeLessThan(0.2);
+    expect(x1 - x()).toBeLessThan(8);
+    expect(x1 - x()).toBeGreaterThan(0); // it glides on backwards, never lurches ahead
   });
 
   it('Rise while diving at full speed turns the boat up within 4.5 s', () => {
