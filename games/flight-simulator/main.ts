@@ -1210,6 +1210,14 @@ function frame(): void {
   if (!app.pacer.mayDraw()) {
     updateBanner(world.time);
     updateGoal();
+    // The ring label is placed on drawn frames only: once its ring is passed or missed (the banner
+    // and the goal already say so) it goes at once, not after the next drawn frame.
+    if (ringAim.index !== nextRing(rings) && ringPointer.style.display !== 'none') {
+      ringPointer.style.display = 'none';
+      ringAim.index = nextRing(rings);
+      ringAim.inView = false;
+      ringAim.text = '';
+    }
     if (crashReadings && shownPhase !== state.phase) {
       shownPhase = state.phase;
       updateHud(crashReadings);
