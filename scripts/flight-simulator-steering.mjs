@@ -10,7 +10,8 @@
 //   read once a frame; at most 9 steps of 1/60 s a frame, so at 5 fps the game runs at 0.75 of the
 //   clock): the heading's run-on after the release is seen, degrees, and how far from the path
 //   marker's "let go now" point (predictThroughRing, from the last frame before the release) the
-//   aircraft crosses a ring plane 800 m ahead, m (a ring's radius is 65 m).
+//   aircraft crosses a ring plane 800 m ahead, m (a ring's radius is 65 m). "keys timed": each step
+//   of a frame takes the key as it was at its moment since the last frame (the page's axisKeysAt).
 import { importSource } from './build.mjs';
 
 const fs = await importSource(
@@ -81,7 +82,7 @@ for (const target of [30, 90]) {
 }
 
 /** Flies a hold of → for `holdReal` s of the clock at `fps` frames a second; see the header. */
-function flyFrames(fps, holdReal) {
+function flyFrames(fps, holdReal, timed) {
   const world = fs.createPhysicsWorld(fs.aircraft.worldOptions());
   const h = fs.aircraft.build(world, { seed: 1, altitude: 900 });
   const state = fs.createAssistState(),
@@ -103,11 +104,15 @@ function flyFrames(fps, holdReal) {
   for (let frame = 0; frame * (1 / fps) < 40; frame++) {
     const clock = frame / fps;
     const key = clock >= press && clock < press + holdReal ? 1 : 0;
-    if (key === 1) marker = motion; // the marker the pilot sees when letting go: the last frame's
+    if (clock < press + holdReal && motion) marker = motion; // the marker the pilot sees when letting go: the last frame's
     if (key === 0 && clock >= press + holdReal && turnedAtRelease === 0) turnedAtRelease = unwrapped / DEG || 1e-9;
     for (let k = 0; k < steps; k++) {
       const s = fs.flightState(world, e);
-      roll = fs.rampKey(roll, key, world.dt, fs.BANK_KEY_RAMP);
+      // Timed (the page's axisKeysAt): each step takes the key as it was at its moment of the span
+      // since the last frame; else the key as it is at the frame.
+      const at = clock - 1 / fps + ((k + 1) / steps) * (1 / fps);
+      const stepKey = timed ? (at >= press && at < press + holdReal ? 1 : 0) : key;
+      roll = fs.rampKey(roll, stepKey, world.dt, fs.BANK_KEY_RAMP);
       const c = fs.assist(s, { roll, pitch: 0, yaw: 0 }, state, world.dt);
       for (const q of ['aileron', 'elevator', 'rudder']) surface[q] += Math.max(-rate, Math.min(rate, c[q] - surface[q]));
       fs.setControlDeflection(world, h.surfaces.tail, -surface.elevator * full);
@@ -131,6 +136,7 @@ function flyFrames(fps, holdReal) {
       };
     }
   }
+  if (!marker) return { runOn: unwrapped / DEG - turnedAtRelease, turned: unwrapped / DEG, miss: Number.NaN };
   // A ring plane 800 m ahead of the marker's frame, across its level velocity, centred where the marker points.
   const v = marker.velocity,
     n = Math.hypot(v[0], v[2]);
@@ -158,10 +164,14 @@ function flyFrames(fps, holdReal) {
   }
   return { runOn: unwrapped / DEG - turnedAtRelease, turned: unwrapped / DEG, miss };
 }
-for (const hold of [0.5, 1, 2])
-  for (const fps of [60, 5]) {
-    const r = flyFrames(fps, hold);
+for (const hold of [0.15, 0.5, 1, 2])
+  for (const [fps, timed] of [
+    [60, false],
+    [5, false],
+    [5, true],
+  ]) {
+    const r = flyFrames(fps, hold, timed);
     console.log(
-      `held ${hold} s at ${fps} fps: turned ${r.turned.toFixed(1)}°, ${r.runOn.toFixed(1)}° of it after the release was seen; ring plane 800 m ahead crossed ${r.miss.toFixed(0)} m from the marker's point`,
+      `held ${hold} s at ${fps} fps${timed ? ', keys timed' : ''}: turned ${r.turned.toFixed(1)}°, ${r.runOn.toFixed(1)}° of it after the release was seen; ${Number.isNaN(r.miss) ? 'no frame saw the key held' : `ring plane 800 m ahead crossed ${r.miss.toFixed(0)} m from the marker's point`}`,
     );
   }
