@@ -6,12 +6,19 @@
 // - taps of → for 100, 150 and 250 ms: the heading's change once the wings are level again, degrees;
 // - held to a target: → held until the heading has turned 30 / 90 degrees, then let go: how far the
 //   heading runs on past the target, degrees, and how long the wings take to come level (within 2 degrees).
+// - a 1 s hold (0.5 and 2 s too) at 60 and 5 frames a second, as the page's loop runs it (the keys
+//   read once a frame; at most 9 steps of 1/60 s a frame, so at 5 fps the game runs at 0.75 of the
+//   clock): the heading's run-on after the release is seen, degrees, and how far from the path
+//   marker's "let go now" point (predictThroughRing, from the last frame before the release) the
+//   aircraft crosses a ring plane 800 m ahead, m (a ring's radius is 65 m). "keys timed": each step
+//   of a frame takes the key as it was at its moment since the last frame (the page's axisKeysAt).
 import { importSource } from './build.mjs';
 
 const fs = await importSource(
   'flight-simulator-steering',
   [
     "export * from './games/flight-simulator/assist.ts';",
+    "export { predictThroughRing } from './games/flight-simulator/course.ts';",
     "export { createPhysicsWorld, setBodyThrust, setControlDeflection, step } from '@bitphysics/physics';",
     "export { AIRCRAFT, aircraft, aircraftLevelDrag } from '@bitphysics/projects';",
   ].join('\n'),
@@ -73,3 +80,98 @@ for (const target of [30, 90]) {
     `held to ${target}°: let go at ${released.toFixed(1)} s, heading runs on ${(r[r.length - 1].turned - target).toFixed(1)}° past it, wings level after ${level ? (level.t - released).toFixed(1) : '?'} s`,
   );
 }
+
+/** Flies a hold of → for `holdReal` s of the clock at `fps` frames a second; see the header. */
+function flyFrames(fps, holdReal, timed) {
+  const world = fs.createPhysicsWorld(fs.aircraft.worldOptions());
+  const h = fs.aircraft.build(world, { seed: 1, altitude: 900 });
+  const state = fs.createAssistState(),
+    surface = { aileron: 0, elevator: 0, rudder: 0 },
+    rate = fs.SURFACE_RATE.assist * world.dt,
+    full = fs.CONTROL_AUTHORITY * DEG,
+    e = h.body,
+    throttle = fs.aircraftLevelDrag(130) / fs.AIRCRAFT.maxThrust;
+  const C = world.components;
+  let roll = 0,
+    unwrapped = 0,
+    last = fs.flightState(world, e).heading,
+    motion = null,
+    marker = null,
+    turnedAtRelease = 0;
+  const track = [];
+  const press = 0.05; // the clock's time of the press, s: between frames
+  const steps = Math.min(9, Math.round(60 / fps));
+  for (let frame = 0; frame * (1 / fps) < 40; frame++) {
+    const clock = frame / fps;
+    const key = clock >= press && clock < press + holdReal ? 1 : 0;
+    if (clock < press + holdReal && motion) marker = motion; // the marker the pilot sees when letting go: the last frame's
+    if (key === 0 && clock >= press + holdReal && turnedAtRelease === 0) turnedAtRelease = unwrapped / DEG || 1e-9;
+    for (let k = 0; k < steps; k++) {
+      const s = fs.flightState(world, e);
+      // Timed (the page's axisKeysAt): each step takes the key as it was at its moment of the span
+      // since the last frame; else the key as it is at the frame.
+      const at = clock - 1 / fps + ((k + 1) / steps) * (1 / fps);
+      const stepKey = timed ? (at >= press && at < press + holdReal ? 1 : 0) : key;
+      roll = fs.rampKey(roll, stepKey, world.dt, fs.BANK_KEY_RAMP);
+      const c = fs.assist(s, { roll, pitch: 0, yaw: 0 }, state, world.dt);
+      for (const q of ['aileron', 'elevator', 'rudder']) surface[q] += Math.max(-rate, Math.min(rate, c[q] - surface[q]));
+      fs.setControlDeflection(world, h.surfaces.tail, -surface.elevator * full);
+      fs.setControlDeflection(world, h.surfaces.leftWing, surface.aileron * full * fs.AILERON_SCALE);
+      fs.setControlDeflection(world, h.surfaces.rightWing, -surface.aileron * full * fs.AILERON_SCALE);
+      fs.setControlDeflection(world, h.surfaces.fin, -surface.rudder * full);
+      fs.setBodyThrust(world, e, [throttle * fs.AIRCRAFT.maxThrust, 0, 0]);
+      fs.step(world);
+      const a = fs.flightState(world, e);
+      unwrapped += ((a.heading - last + 3 * Math.PI) % (2 * Math.PI)) - Math.PI;
+      last = a.heading;
+      track.push([C.Position.x[e], C.Position.y[e], C.Position.z[e]]);
+      motion = {
+        position: [C.Position.x[e], C.Position.y[e], C.Position.z[e]],
+        velocity: [C.Velocity.x[e], C.Velocity.y[e], C.Velocity.z[e]],
+        bank: a.bank,
+        rollRate: a.rollRate,
+        pathRate: (a.path - s.path) / world.dt,
+        held: fs.heldBank(state),
+        at: track.length - 1,
+      };
+    }
+  }
+  if (!marker) return { runOn: unwrapped / DEG - turnedAtRelease, turned: unwrapped / DEG, miss: Number.NaN };
+  // A ring plane 800 m ahead of the marker's frame, across its level velocity, centred where the marker points.
+  const v = marker.velocity,
+    n = Math.hypot(v[0], v[2]);
+  const ring0 = {
+    x: marker.position[0] + (v[0] / n) * 800,
+    y: marker.position[1],
+    z: marker.position[2] + (v[2] / n) * 800,
+    nx: v[0] / n,
+    ny: 0,
+    nz: v[2] / n,
+  };
+  const p = fs.predictThroughRing(ring0, marker, true).point;
+  const ring = { ...ring0, x: p[0], y: p[1], z: p[2] };
+  let miss = Infinity;
+  for (let i = marker.at + 1; i < track.length; i++) {
+    const g = (q) => (ring.x - q[0]) * ring.nx + (ring.y - q[1]) * ring.ny + (ring.z - q[2]) * ring.nz;
+    const a = g(track[i - 1]),
+      b = g(track[i]);
+    if (a > 0 && b <= 0) {
+      const f = a / (a - b),
+        q = [0, 1, 2].map((k) => track[i - 1][k] + f * (track[i][k] - track[i - 1][k]));
+      miss = Math.hypot(q[0] - ring.x, q[1] - ring.y, q[2] - ring.z);
+      break;
+    }
+  }
+  return { runOn: unwrapped / DEG - turnedAtRelease, turned: unwrapped / DEG, miss };
+}
+for (const hold of [0.15, 0.5, 1, 2])
+  for (const [fps, timed] of [
+    [60, false],
+    [5, false],
+    [5, true],
+  ]) {
+    const r = flyFrames(fps, hold, timed);
+    console.log(
+      `held ${hold} s at ${fps} fps${timed ? ', keys timed' : ''}: turned ${r.turned.toFixed(1)}°, ${r.runOn.toFixed(1)}° of it after the release was seen; ${Number.isNaN(r.miss) ? 'no frame saw the key held' : `ring plane 800 m ahead crossed ${r.miss.toFixed(0)} m from the marker's point`}`,
+    );
+  }

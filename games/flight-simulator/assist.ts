@@ -5,8 +5,9 @@
  * decides where the control surfaces point.
  *
  * - Stick sideways: a bank angle, up to `ASSIST.maxBank` at full stick (the ailerons roll the
- *   aircraft there and hold it); let go, the wings roll level. A touch shorter than
- *   `ASSIST.tapTime` holds its bank until then, so a tap turns the aircraft a few degrees.
+ *   aircraft there and hold it); let go, the wings roll level at once. A touch let go within
+ *   `ASSIST.tapLength` holds its bank until it is `ASSIST.tapTime` old, so a tap turns the aircraft
+ *   a few degrees.
  * - Stick forward and back: the stick moves the elevator itself in proportion to its deflection, so
  *   a held climb or dive gets the full response it has without the assist, up to a path of
  *   `ASSIST.maxPath` (45 degrees: no loop, no vertical dive); the rest of the elevator is a path
@@ -135,6 +136,12 @@ export const ASSIST = Object.freeze({
    * stick) rolls the aircraft far enough, for long enough, to turn it a few degrees.
    */
   tapTime: 0.9,
+  /**
+   * Longest touch of the stick sideways that is a tap, s: one eased off later holds nothing (a held
+   * key let go rolls level at once, so the turn stops where the flight-path marker said). 0.35 s
+   * keeps a tap of two frames at 5 frames a second (0.3 s of game time) a tap.
+   */
+  tapLength: 0.35,
 });
 
 /** What the assist keeps between steps: the integral of the flight-path error and the bank asked for. */
@@ -145,22 +152,26 @@ export interface AssistState {
   bankTarget: number;
   /** How long the stick has been off centre sideways, s (0 while it is centred). */
   rollHeld: number;
-  /** The largest sideways stick of this touch while it is younger than `ASSIST.tapTime`, signed, in [-1, 1]. */
+  /** The largest sideways stick of this touch while it is younger than `ASSIST.tapTime` (0 once it is no tap), signed, in [-1, 1]. */
   rollPeak: number;
+  /** Whether this touch eased off within `ASSIST.tapLength` (a tap: its peak is held until `ASSIST.tapTime`). */
+  rollTap: boolean;
 }
 
 /**
  * The bank a stick let go now would still hold, and for how long: the largest bank of a touch of
- * the stick younger than `ASSIST.tapTime` (rad, + right; 0 when none) and the time left, s.
+ * the stick younger than `ASSIST.tapTime` and let go (or to be let go now) within `ASSIST.tapLength`
+ * (rad, + right; 0 when none) and the time left, s.
  */
 export function heldBank(state: AssistState): { bank: number; time: number } {
-  if (state.rollPeak === 0 || state.rollHeld >= ASSIST.tapTime) return { bank: 0, time: 0 };
+  if (state.rollPeak === 0 || state.rollHeld >= ASSIST.tapTime || (!state.rollTap && state.rollHeld > ASSIST.tapLength))
+    return { bank: 0, time: 0 };
   return { bank: ASSIST.maxBank * state.rollPeak, time: ASSIST.tapTime - state.rollHeld };
 }
 
 /** A new assist state: no integral, wings level asked for. */
 export function createAssistState(): AssistState {
-  return { integral: 0, bankTarget: 0, rollHeld: 0, rollPeak: 0 };
+  return { integral: 0, bankTarget: 0, rollHeld: 0, rollPeak: 0, rollTap: false };
 }
 
 const clamp = (v: number, lo: number, hi: number): number => (v < lo ? lo : v > hi ? hi : v);
@@ -220,14 +231,25 @@ export function assist(s: FlightState, input: PilotInput, state: AssistState, dt
   if (roll !== 0 && (state.rollHeld === 0 || reversed)) {
     state.rollHeld = 0;
     state.rollPeak = 0;
+    state.rollTap = false;
   }
   if (roll !== 0 || state.rollPeak !== 0) {
     state.rollHeld += dt;
     if (state.rollHeld > A.tapTime) state.rollPeak = 0;
     else if (Math.abs(roll) >= Math.abs(state.rollPeak)) state.rollPeak = roll;
-    else roll = state.rollPeak;
+    else if (!state.rollTap && state.rollHeld > A.tapLength) {
+      // Eased off after `tapLength`: a hold, not a tap. Nothing is held: the wings roll level at once.
+      state.rollPeak = 0;
+      state.rollHeld = A.tapTime;
+    } else {
+      state.rollTap = true;
+      roll = state.rollPeak;
+    }
   }
-  if (roll === 0) state.rollHeld = 0;
+  if (roll === 0) {
+    state.rollHeld = 0;
+    state.rollTap = false;
+  }
   const wanted = A.maxBank * roll;
   state.bankTarget += clamp(wanted - state.bankTarget, -A.bankRate * dt, A.bankRate * dt);
   const aileron = clamp(A.bankGain * (state.bankTarget - s.bank) - A.rollDamping * s.rollRate, -1, 1);

@@ -602,10 +602,11 @@ export const TURN_BACK_DISTANCE = 3000;
 export const TURN_BACK_AWAY_TIME = 6;
 
 /**
- * Whether to tell the pilot to turn back to the next ring, and which way: after `awayFor` s of flying
- * away from it, or farther than TURN_BACK_DISTANCE from it. `toRing` is the ring's centre minus the
+ * Whether to tell the pilot to turn back to the next ring, and which way: when the ring lies behind
+ * the wing line (its bearing from the nose more than 90 degrees) and the aircraft has flown away
+ * from it for `awayFor` s, or is farther than TURN_BACK_DISTANCE from it. `toRing` is the ring's centre minus the
  * aircraft's position (m, world), `heading` the direction of its nose in the level plane (rad, from +x towards +z, as ./assist.ts flightState gives it).
- * Returns null for no cue, else the side the ring lies on, 'left' or 'right' of the nose seen from
+ * Returns null for no cue (always for a ring ahead of the wing line), else the side the ring lies on, 'left' or 'right' of the nose seen from
  * above (+y up; the right of a nose along +x is +z), the way to turn; straight behind says 'left'.
  * @throws RangeError on a `toRing` that is not 3 finite numbers or a `heading` that is not finite.
  */
@@ -615,9 +616,12 @@ export function turnBackCue(toRing: readonly number[], heading: number, awayFor:
   if (!Number.isFinite(heading)) throw new RangeError(`turnBackCue: heading must be a finite number (rad), got ${heading}`);
   const distance = Math.hypot(toRing[0]!, toRing[1]!, toRing[2]!);
   if (distance <= TURN_BACK_DISTANCE && !(awayFor >= TURN_BACK_AWAY_TIME)) return null;
-  // The ring's bearing relative to the nose, in the level plane: the cross product's sign says the side.
   const fx = Math.cos(heading),
     fz = Math.sin(heading);
+  // The cue says "behind you": a ring ahead of the wing line (in the view, its label on screen, or
+  // just off it to the side, where the edge arrow points to it) never has it, however far it is.
+  if (fx * toRing[0]! + fz * toRing[2]! >= 0) return null;
+  // The ring's bearing relative to the nose, in the level plane: the cross product's sign says the side.
   const cross = fx * toRing[2]! - fz * toRing[0]!;
   return cross > 0 ? 'right' : 'left';
 }

@@ -222,16 +222,64 @@ function steering(): boolean {
 const held = new Set<string>();
 /** The on-screen stick's deflection (x right, y up, in [-1, 1]). */
 const stickInput = { x: 0, y: 0 };
+/** The climb / dive and bank keys (./assist.ts rampKey ramps them step by step). */
+const AXIS_KEYS = new Set(['arrowup', 'arrowdown', 'arrowleft', 'arrowright', 'w', 's', 'a', 'd']);
+/**
+ * The axis keys' presses and releases not yet seen by the steps, oldest first: the key, pressed or
+ * released, and when (ms, the clock of performance.now). The steps of a frame run together after
+ * the frame's events came in; each step takes the events up to its own moment of the frame's span
+ * (`axisKeysAt`), so at a low frame rate a key let go stops its input where it was let go, not up to
+ * a frame later, and a tap shorter than a frame still ramps.
+ */
+const axisEvents: { key: string; down: boolean; time: number }[] = [];
+/** The axis keys held as the steps see them (`axisEvents` applied up to the step's moment). */
+const axisHeld = new Set<string>();
+/** The span of the clock the steps running now stand for, ms: from the last batch's end to this one's. */
+const batch = { start: 0, end: 0, step: 0, lastWall: -Infinity };
+/**
+ * Brings `axisHeld` to the moment of the frame's span this step stands for: the steps of a frame
+ * (run back to back, less than 4 ms apart) share its span, at most 0.15 s (the loop's maxFrameTime),
+ * evenly. A key released in the step it was pressed in is released in the next step.
+ */
+function axisKeysAt(dt: number): void {
+  const wall = performance.now();
+  if (wall - batch.lastWall > 4) {
+    batch.start = Math.max(batch.end, wall - 150);
+    batch.end = wall;
+    batch.step = 0;
+  }
+  batch.lastWall = wall;
+  const n = Math.max(1, Math.min(9, Math.round((batch.end - batch.start) / (1000 * dt))));
+  batch.step++;
+  const upTo = batch.step >= n ? Number.POSITIVE_INFINITY : batch.start + (batch.step * (batch.end - batch.start)) / n;
+  const pressed = new Set<string>();
+  while (axisEvents.length > 0 && axisEvents[0]!.time <= upTo) {
+    const ev = axisEvents[0]!;
+    if (!ev.down && pressed.has(ev.key)) break;
+    axisEvents.shift();
+    if (ev.down) {
+      axisHeld.add(ev.key);
+      pressed.add(ev.key);
+    } else axisHeld.delete(ev.key);
+  }
+}
 addEventListener('keydown', (e) => {
   const key = e.key.toLowerCase();
+  if (AXIS_KEYS.has(key) && !e.repeat) axisEvents.push({ key, down: true, time: e.timeStamp });
   held.add(key);
   if (e.key === 'Shift' || e.key.startsWith('Arrow') || e.key === ' ') e.preventDefault();
   if (FLIGHT_KEYS.has(key)) pilotGoes();
 });
 addEventListener('keyup', (e) => {
-  held.delete(e.key.toLowerCase());
+  const key = e.key.toLowerCase();
+  if (AXIS_KEYS.has(key)) axisEvents.push({ key, down: false, time: e.timeStamp });
+  held.delete(key);
 });
-addEventListener('blur', () => held.clear());
+addEventListener('blur', () => {
+  held.clear();
+  axisEvents.length = 0;
+  axisHeld.clear();
+});
 
 const clamp1 = (x: number): number => Math.max(-1, Math.min(1, x));
 
@@ -240,10 +288,12 @@ const keyInput = { pitch: 0, roll: 0 };
 
 /** Moves the keyboard's ramped inputs over a step of `dt` s towards the keys held now. */
 function rampKeys(dt: number): void {
-  const up = held.has('arrowup') || held.has('w') ? 1 : 0,
-    down = held.has('arrowdown') || held.has('s') ? 1 : 0,
-    right = held.has('arrowright') || held.has('d') ? 1 : 0,
-    left = held.has('arrowleft') || held.has('a') ? 1 : 0;
+  axisKeysAt(dt);
+  const k = axisHeld;
+  const up = k.has('arrowup') || k.has('w') ? 1 : 0,
+    down = k.has('arrowdown') || k.has('s') ? 1 : 0,
+    right = k.has('arrowright') || k.has('d') ? 1 : 0,
+    left = k.has('arrowleft') || k.has('a') ? 1 : 0;
   keyInput.pitch = rampKey(keyInput.pitch, up - down, dt);
   keyInput.roll = rampKey(keyInput.roll, right - left, dt, BANK_KEY_RAMP);
 }
@@ -1210,6 +1260,14 @@ function frame(): void {
   if (!app.pacer.mayDraw()) {
     updateBanner(world.time);
     updateGoal();
+    // The ring label is placed on drawn frames only: once its ring is passed or missed (the banner
+    // and the goal already say so) it goes at once, not after the next drawn frame.
+    if (ringAim.index !== nextRing(rings) && ringPointer.style.display !== 'none') {
+      ringPointer.style.display = 'none';
+      ringAim.index = nextRing(rings);
+      ringAim.inView = false;
+      ringAim.text = '';
+    }
     if (crashReadings && shownPhase !== state.phase) {
       shownPhase = state.phase;
       updateHud(crashReadings);

@@ -393,7 +393,7 @@ describe('flight simulator course', () => {
     expect(() => compareWithBest(kept, 2, Number.NaN)).toThrow(/compareWithBest: time must be a finite number >= 0 \(s\), got NaN/);
   });
 
-  it('the turn-back cue: none near the ring or briefly away, shown far off or long away, on the side the ring lies', () => {
+  it('the turn-back cue: none near the ring, briefly away or with the ring ahead, shown far off or long away behind, on the side the ring lies', () => {
     // Heading along +x (0 rad); +z is the right of the nose seen from above.
     expect(turnBackCue([1000, 0, 200], 0, 0)).toBeNull();
     expect(turnBackCue([-1000, 0, 200], 0, TURN_BACK_AWAY_TIME - 0.1)).toBeNull();
@@ -401,8 +401,14 @@ describe('flight simulator course', () => {
     expect(turnBackCue([-1000, 0, 200], 0, TURN_BACK_AWAY_TIME)).toBe('right');
     expect(turnBackCue([-1000, 0, -200], 0, TURN_BACK_AWAY_TIME)).toBe('left');
     // Farther than TURN_BACK_DISTANCE, whatever the time away.
-    expect(turnBackCue([TURN_BACK_DISTANCE + 10, 0, -50], 0, 0)).toBe('left');
-    expect(turnBackCue([TURN_BACK_DISTANCE - 10, 0, -50], 0, 0)).toBeNull();
+    expect(turnBackCue([-TURN_BACK_DISTANCE - 10, 0, -50], 0, 0)).toBe('left');
+    expect(turnBackCue([-TURN_BACK_DISTANCE + 10, 0, -50], 0, 0)).toBeNull();
+    // A ring ahead of the wing line is never "behind you", however far or long away (a stranger saw
+    // the cue with ring 3 on screen ahead and to the right, 3 km off).
+    expect(turnBackCue([TURN_BACK_DISTANCE + 10, 0, -50], 0, 0)).toBeNull();
+    expect(turnBackCue([4000, 0, 3000], 0, TURN_BACK_AWAY_TIME + 5)).toBeNull();
+    expect(turnBackCue([1, 0, 5000], 0, TURN_BACK_AWAY_TIME + 5)).toBeNull();
+    expect(turnBackCue([-1, 0, 5000], 0, 0)).toBe('right');
     // Heading along +z (pi/2): its right is -x.
     expect(turnBackCue([-4000, 0, -10], Math.PI / 2, 0)).toBe('right');
     expect(turnBackCue([4000, 0, -10], Math.PI / 2, 0)).toBe('left');
