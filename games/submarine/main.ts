@@ -429,11 +429,12 @@ function stepWorld(world: PhysicsWorld): void {
     return;
   }
   // The course ahead (./mines.ts mineAhead): toward the ordered depth, and while Dive or Rise is
-  // held on at the climb rate too. A new warning sounds a low two-note call.
+  // held on at the speed it asks for too. A new warning sounds a low two-note call.
   const was = ahead?.index ?? -1;
   ahead = mineAhead(c.Position.x[e]!, c.Position.y[e]!, c.Velocity.x[e]!, c.Velocity.y[e]!, state.holdY, mines, mineLive, handles.seabed, {
     prefer: ahead,
     heaving: state.mode === 'diving' || state.mode === 'rising',
+    heave: Math.max(0.01, Math.min(1, input.heave ?? 1)),
   });
   if (ahead && ahead.index !== was) {
     sound.chime(330, 0.18);

@@ -189,8 +189,9 @@ export interface MineAhead {
  * (m/s; at least 2 m/s the way it goes, ahead when it is still), and in depth on toward the ordered
  * depth `holdY` (m; NaN: none, surfaced or steering by the nose) at up to the helm's climb or dive
  * speed; and, while Dive or Rise is held (`options.heaving`: on the way it goes, speeding up to the
- * helm's dive or climb speed) or no depth is ordered (on at its vertical speed `vy`, m/s), also on:
- * the first contact on either course. Null when the course is clear.
+ * share `options.heave` of the helm's dive or climb speed that the control asks for) or no depth is
+ * ordered (on at its vertical speed `vy`, m/s), also on: the first contact on either course. Null
+ * when the course is clear.
  * Which side to pass: the one the hull can clear with more to spare by the time it gets there,
  * rising or diving flat out from its vertical speed now (HELM.climbSpeed, HELM.diveSpeed, reached at
  * HELM.brake), that does not run it into another mine on the way; under only where the hull has
@@ -199,8 +200,11 @@ export interface MineAhead {
  * @param options `horizon`: how far ahead to look, s (default MINE_WARN_TIME); `prefer`: the last
  * warning (a mine's index and the side told), whose side is kept for that mine while the hull can
  * still make it (or can make neither) and it runs into no other mine, so the warning does not flip
- * as the hull turns to it; `heaving`: Dive or Rise is held (default false).
- * @throws RangeError when x, y, vx or vy is not finite or `horizon` is not positive.
+ * as the hull turns to it; `heaving`: Dive or Rise is held (default false); `heave`: the share of
+ * the helm's dive or climb speed that the held Dive or Rise asks for, in (0, 1] (default 1; a key
+ * asks for KEY_HEAVE_SHARE, 0.6, ./helm.ts): a course that took a key's dive at the full 10 m/s ran
+ * under a mine that the boat, diving at 6 m/s, met, and the warning came only at the mine.
+ * @throws RangeError when x, y, vx or vy is not finite, `horizon` is not positive or `heave` is not in (0, 1].
  */
 export function mineAhead(
   x: number,
@@ -215,9 +219,12 @@ export function mineAhead(
     readonly horizon?: number;
     readonly prefer?: { readonly index: number; readonly side: 'over' | 'under' } | null;
     readonly heaving?: boolean;
+    readonly heave?: number;
   } = {},
 ): MineAhead | null {
   const horizon = options.horizon ?? MINE_WARN_TIME;
+  const share = options.heave ?? 1;
+  if (!(share > 0 && share <= 1)) throw new RangeError(`mineAhead: options.heave must be in (0, 1], got ${share}`);
   for (const [name, v] of [
     ['x', x],
     ['y', y],
@@ -269,8 +276,9 @@ export function mineAhead(
       found = touching(cx, cy, -1);
     }
     if (found < 0 && onAsGoing) {
-      // Held on: speeding up to the helm's climb or dive speed the way it goes (HELM.brake).
-      const on = !options.heaving ? vy * t : vy >= 0 ? heave(vy, HELM.climbSpeed, t) : -heave(-vy, HELM.diveSpeed, t);
+      // Held on: speeding up (or slowing) to the share asked of the helm's climb or dive speed the
+      // way it goes (HELM.brake).
+      const on = !options.heaving ? vy * t : vy >= 0 ? heave(vy, share * HELM.climbSpeed, t) : -heave(-vy, share * HELM.diveSpeed, t);
       cy = Math.min(0, y + on);
       found = touching(cx, cy, -1);
     }
@@ -303,13 +311,14 @@ export function mineAhead(
 }
 
 /**
- * How far a boat rises in `t` s (m; negative: it sinks) rising flat out from a vertical speed `v`
- * (m/s, up): the helm's speed asked for, `most` (m/s), reached at HELM.brake (m/s^2).
+ * How far a boat rises in `t` s (m; negative: it sinks) rising from a vertical speed `v` (m/s, up)
+ * at the helm's speed asked for, `most` (m/s), reached at HELM.brake (m/s^2): speeding up to it, or
+ * slowing to it from a faster `v`.
  */
 function heave(v: number, most: number, t: number): number {
-  const a = HELM.brake,
-    t1 = Math.min(t, Math.max(0, (most - v) / a));
-  return v * t1 + 0.5 * a * t1 * t1 + Math.min(v + a * t1, most) * (t - t1);
+  const a = most >= v ? HELM.brake : -HELM.brake,
+    t1 = Math.min(t, (most - v) / a);
+  return v * t1 + 0.5 * a * t1 * t1 + most * (t - t1);
 }
 
 /** How long a boat rising flat out as `heave` takes to rise `d` m (0 if d <= 0; s). */
