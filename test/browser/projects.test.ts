@@ -578,7 +578,8 @@ describe('projects', () => {
       const w = window.game as unknown as { ringPointer(): { index: number; text: string }; world: { time: number } };
       const p = w.ringPointer(),
         goal = document.querySelector('[data-hud="goal"]')?.textContent ?? '';
-      return w.world.time === 0 && p.index === 0 ? { label: p.text, goal } : null;
+      // An undrawn frame hides the label (text '') until a drawn one places ring 1's.
+      return w.world.time === 0 && p.index === 0 && p.text !== '' ? { label: p.text, goal } : null;
     }, null);
     expect(agree.goal).toContain(` · ${agree.label.match(/\d+(\.\d)? k?m/)![0]} · `);
     const h0 = await g.page.evaluate(() => (window.game as unknown as Flight).instruments().heading);
