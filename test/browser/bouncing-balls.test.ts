@@ -443,6 +443,23 @@ type HeapThrows = HoopGame & {
   };
 };
 
+/**
+ * Presses the mouse at `at`, drags to `to` in 8 moves and lets go; returns ball `id`'s velocity (m/s)
+ * and the round's shot count just after the release.
+ */
+async function mouseThrow(g: GamePage, id: number, at: { x: number; y: number }, to: { x: number; y: number }) {
+  const m = g.page.mouse;
+  await m.move(at.x, at.y);
+  await m.down();
+  await m.move(to.x, to.y, { steps: 8 });
+  await m.up();
+  return g.page.evaluate((id) => {
+    const game = window.game as unknown as AimGame;
+    const e = id % 2 ** 25;
+    return { vx: game.world.components.Velocity.x[e]!, vy: game.world.components.Velocity.y[e]!, shots: game.round().shots };
+  }, id);
+}
+
 /** A finger down at the first point, through the others, then (after `before`, if given) lifted (CDP touch events). */
 async function swipe(page: Page, points: Array<[number, number]>, before?: () => Promise<void>): Promise<void> {
   const cdp = await page.context().newCDPSession(page);
@@ -1131,16 +1148,7 @@ describe('bouncing balls: cancelling, full-power pulls and the end of a round mi
     // The strip under the box (main.ts DESK_PULL_ROOM) leaves room to pull back into: 150 px or more
     // under the lowest ball (with the floor near the window's bottom it was some 65 px).
     expect(viewport.height - at.y).toBeGreaterThan(150);
-    const m = g.page.mouse;
-    await m.move(at.x, at.y);
-    await m.down();
-    await m.move(at.x, viewport.height - 1, { steps: 8 });
-    await m.up();
-    const v = await g.page.evaluate((id) => {
-      const game = window.game as unknown as AimGame;
-      const e = id % 2 ** 25;
-      return { vx: game.world.components.Velocity.x[e]!, vy: game.world.components.Velocity.y[e]!, shots: game.round().shots };
-    }, low.id);
+    const v = await mouseThrow(g, low.id, at, { x: at.x, y: viewport.height - 1 });
     // hoop.ts MAX_THROW_SPEED, 20 m/s, straight up (before, the window's edge stopped the pull at some 8 m/s).
     expect(v.shots).toBe(1);
     expect(Math.abs(v.vx)).toBeLessThan(1e-9);
@@ -1178,16 +1186,7 @@ describe('bouncing balls: cancelling, full-power pulls and the end of a round mi
     // the press, 80 px or more, and such a pull threw at 8.5 and 12.8 m/s in two runs).
     expect(to.x - at.x).toBeLessThan(105);
     expect(to.y).toBeLessThan(viewport.height);
-    const m = g.page.mouse;
-    await m.move(at.x, at.y);
-    await m.down();
-    await m.move(to.x, to.y, { steps: 8 });
-    await m.up();
-    const v = await g.page.evaluate((id) => {
-      const game = window.game as unknown as AimGame;
-      const e = id % 2 ** 25;
-      return { vx: game.world.components.Velocity.x[e]!, vy: game.world.components.Velocity.y[e]!, shots: game.round().shots };
-    }, right.id);
+    const v = await mouseThrow(g, right.id, at, to);
     // hoop.ts MAX_THROW_SPEED, 20 m/s, up and to the left (opposite the pull).
     expect(v.shots).toBe(1);
     expect(Math.hypot(v.vx, v.vy)).toBeCloseTo(20, 6);

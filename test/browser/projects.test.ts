@@ -918,55 +918,38 @@ describe('projects', () => {
       rings(): { x: number; y: number; z: number }[];
       turnBack(): { text: string; awayFor: number };
     };
+    /** Puts the aircraft at ring `ring` plus (dx, dy, dz) m (dy null: its height kept). */
+    const place = (ring: number, dx: number, dy: number | null, dz: number) =>
+      g.page.evaluate(
+        ([ring, dx, dy, dz]) => {
+          const w = window.game as unknown as Flight;
+          const r = w.rings()[ring]!,
+            c = w.world.components,
+            e = w.aircraftBody();
+          c.Position.x[e] = r.x + dx;
+          if (dy !== null) c.Position.y[e] = r.y + dy;
+          c.Position.z[e] = r.z + dz;
+        },
+        [ring, dx, dy, dz] as const,
+      );
     await g.page.keyboard.press('Space'); // the flight waits for the pilot
     expect(await g.page.evaluate(() => (window.game as unknown as Flight).turnBack().text)).toBe('');
     // 4 km past ring 1 (it lies along +x, the heading at the start), 300 m to its right (+z): ring 1 is behind, on the left.
-    await g.page.evaluate(() => {
-      const w = window.game as unknown as Flight;
-      const r = w.rings()[0]!,
-        c = w.world.components,
-        e = w.aircraftBody();
-      c.Position.x[e] = r.x + 4000;
-      c.Position.y[e] = r.y + 300; // clear of the hills (700 m at most)
-      c.Position.z[e] = r.z + 300;
-    });
+    await place(0, 4000, 300, 300); // 300 m up: clear of the hills (700 m at most)
     const text = await g.waitFor(() => (window.game as unknown as Flight).turnBack().text, null);
     expect(text).toBe('◀ Turn back: ring 1 is behind you');
     expect(await g.page.locator('[data-hud="turn-back"]').isVisible()).toBe(true);
     // Back before the ring, flying towards it: the cue goes.
-    await g.page.evaluate(() => {
-      const w = window.game as unknown as Flight;
-      const r = w.rings()[0]!,
-        c = w.world.components,
-        e = w.aircraftBody();
-      c.Position.x[e] = r.x - 500;
-      c.Position.z[e] = r.z;
-    });
+    await place(0, -500, null, 0);
     await g.waitFor(() => (window.game as unknown as Flight).turnBack().text === '', null);
     expect(await g.page.locator('[data-hud="turn-back"]').isVisible()).toBe(false);
     // Through ring 1's centre: ring 2, a lesson ring, is next and its tip shows; far from ring 2 the
     // turn-back cue shows and the tip (whose ways were worked out before) goes.
-    await g.page.evaluate(() => {
-      const w = window.game as unknown as Flight;
-      const r = w.rings()[0]!,
-        c = w.world.components,
-        e = w.aircraftBody();
-      c.Position.x[e] = r.x - 3;
-      c.Position.y[e] = r.y;
-      c.Position.z[e] = r.z;
-    });
+    await place(0, -3, 0, 0);
     const lesson = await g.waitFor(() => (window.game as unknown as Flight & { tip(): string }).tip() || null, null);
     expect(lesson).toMatch(/Ring 2/);
     await g.page.keyboard.press('x'); // the flight waits while the tip is read
-    await g.page.evaluate(() => {
-      const w = window.game as unknown as Flight;
-      const r = w.rings()[1]!,
-        c = w.world.components,
-        e = w.aircraftBody();
-      c.Position.x[e] = r.x + 4000;
-      c.Position.y[e] = r.y + 300;
-      c.Position.z[e] = r.z + 300;
-    });
+    await place(1, 4000, 300, 300);
     await g.waitFor(() => ((window.game as unknown as Flight).turnBack().text.includes('ring 2') ? true : null), null);
     expect(await g.page.evaluate(() => (window.game as unknown as Flight & { tip(): string }).tip())).toBe('');
     expect(g.errors).toEqual([]);
