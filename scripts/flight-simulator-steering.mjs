@@ -25,8 +25,12 @@ const fs = await importSource(
 );
 const DEG = Math.PI / 180;
 
-/** Flies with the → key held while `hold(t, turned, s)` says so; returns the record. */
-function fly(hold, seconds) {
+/**
+ * The aircraft level at 130 m/s, 900 m up, with the assist: `steer(s, roll)` asks the assist for the
+ * bank stick `roll` from flight state `s`, moves the surfaces towards its answer at SURFACE_RATE.assist,
+ * holds the starting throttle and steps the world once (as the page does each step).
+ */
+function createFlight() {
   const world = fs.createPhysicsWorld(fs.aircraft.worldOptions());
   const h = fs.aircraft.build(world, { seed: 1, altitude: 900 });
   const state = fs.createAssistState(),
@@ -35,6 +39,22 @@ function fly(hold, seconds) {
     full = fs.CONTROL_AUTHORITY * DEG,
     e = h.body,
     throttle = fs.aircraftLevelDrag(130) / fs.AIRCRAFT.maxThrust;
+  const steer = (s, roll) => {
+    const c = fs.assist(s, { roll, pitch: 0, yaw: 0 }, state, world.dt);
+    for (const q of ['aileron', 'elevator', 'rudder']) surface[q] += Math.max(-rate, Math.min(rate, c[q] - surface[q]));
+    fs.setControlDeflection(world, h.surfaces.tail, -surface.elevator * full);
+    fs.setControlDeflection(world, h.surfaces.leftWing, surface.aileron * full * fs.AILERON_SCALE);
+    fs.setControlDeflection(world, h.surfaces.rightWing, -surface.aileron * full * fs.AILERON_SCALE);
+    fs.setControlDeflection(world, h.surfaces.fin, -surface.rudder * full);
+    fs.setBodyThrust(world, e, [throttle * fs.AIRCRAFT.maxThrust, 0, 0]);
+    fs.step(world);
+  };
+  return { world, state, e, steer };
+}
+
+/** Flies with the → key held while `hold(t, turned, s)` says so; returns the record. */
+function fly(hold, seconds) {
+  const { world, e, steer } = createFlight();
   const keys = { roll: 0, pitch: 0 };
   const h0 = fs.flightState(world, e).heading;
   const out = [];
@@ -47,14 +67,7 @@ function fly(hold, seconds) {
     const key = hold(t, unwrapped / DEG, s) ? 1 : 0;
     keys.roll = fs.rampKey(keys.roll, key, world.dt, fs.BANK_KEY_RAMP);
     out.push({ t, turned: unwrapped / DEG, bank: s.bank / DEG, key, speed: s.speed, path: s.path / DEG, alpha: s.alpha / DEG });
-    const c = fs.assist(s, { roll: keys.roll, pitch: 0, yaw: 0 }, state, world.dt);
-    for (const k of ['aileron', 'elevator', 'rudder']) surface[k] += Math.max(-rate, Math.min(rate, c[k] - surface[k]));
-    fs.setControlDeflection(world, h.surfaces.tail, -surface.elevator * full);
-    fs.setControlDeflection(world, h.surfaces.leftWing, surface.aileron * full * fs.AILERON_SCALE);
-    fs.setControlDeflection(world, h.surfaces.rightWing, -surface.aileron * full * fs.AILERON_SCALE);
-    fs.setControlDeflection(world, h.surfaces.fin, -surface.rudder * full);
-    fs.setBodyThrust(world, e, [throttle * fs.AIRCRAFT.maxThrust, 0, 0]);
-    fs.step(world);
+    steer(s, keys.roll);
   }
   return out;
 }
@@ -83,14 +96,7 @@ for (const target of [30, 90]) {
 
 /** Flies a hold of → for `holdReal` s of the clock at `fps` frames a second; see the header. */
 function flyFrames(fps, holdReal, timed) {
-  const world = fs.createPhysicsWorld(fs.aircraft.worldOptions());
-  const h = fs.aircraft.build(world, { seed: 1, altitude: 900 });
-  const state = fs.createAssistState(),
-    surface = { aileron: 0, elevator: 0, rudder: 0 },
-    rate = fs.SURFACE_RATE.assist * world.dt,
-    full = fs.CONTROL_AUTHORITY * DEG,
-    e = h.body,
-    throttle = fs.aircraftLevelDrag(130) / fs.AIRCRAFT.maxThrust;
+  const { world, state, e, steer } = createFlight();
   const C = world.components;
   let roll = 0,
     unwrapped = 0,
@@ -113,14 +119,7 @@ function flyFrames(fps, holdReal, timed) {
       const at = clock - 1 / fps + ((k + 1) / steps) * (1 / fps);
       const stepKey = timed ? (at >= press && at < press + holdReal ? 1 : 0) : key;
       roll = fs.rampKey(roll, stepKey, world.dt, fs.BANK_KEY_RAMP);
-      const c = fs.assist(s, { roll, pitch: 0, yaw: 0 }, state, world.dt);
-      for (const q of ['aileron', 'elevator', 'rudder']) surface[q] += Math.max(-rate, Math.min(rate, c[q] - surface[q]));
-      fs.setControlDeflection(world, h.surfaces.tail, -surface.elevator * full);
-      fs.setControlDeflection(world, h.surfaces.leftWing, surface.aileron * full * fs.AILERON_SCALE);
-      fs.setControlDeflection(world, h.surfaces.rightWing, -surface.aileron * full * fs.AILERON_SCALE);
-      fs.setControlDeflection(world, h.surfaces.fin, -surface.rudder * full);
-      fs.setBodyThrust(world, e, [throttle * fs.AIRCRAFT.maxThrust, 0, 0]);
-      fs.step(world);
+      steer(s, roll);
       const a = fs.flightState(world, e);
       unwrapped += ((a.heading - last + 3 * Math.PI) % (2 * Math.PI)) - Math.PI;
       last = a.heading;
