@@ -1,5 +1,4 @@
 import { assertFinite, assertNonNegative, describe } from '../validation/validate.js';
-import { resolveEntity } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { requireJoint3D, wakeJoint3D } from './joint-3d.js';
 import { Joint3DFlag, Joint3DType, joints3DOf, removeJoint3DUnchecked } from './store-3d.js';
@@ -104,10 +103,7 @@ export function setJoint3DMotor(world: PhysicsWorld, joint: number, speed: numbe
  * @category Joints and ropes
  */
 export function removeJoint3D(world: PhysicsWorld, joint: number): void {
-  const j = resolveEntity(world, joint, 'removeJoint3D', 'joint');
-  const s = joints3DOf(world);
-  if (s === undefined || !s.list.includes(j))
-    throw new RangeError(`removeJoint3D: joint must be a 3D joint, got entity ${describe(joint)}`);
+  const { s, j } = requireJoint3D('removeJoint3D', world, joint);
   removeJoint3DUnchecked(world, s, j);
 }
 

@@ -2,8 +2,8 @@ import { assertNonNegative, assertPositive } from '../validation/validate.js';
 import { currentHandle } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import type { DistanceJointOptions } from './distance-joint.js';
-import { centre, make, point, requireJoint3D, wakeJoint3D } from './joint-3d.js';
-import { checkEnds, lengthLimits } from './joint-base.js';
+import { centre, make, requireJoint3D, wakeJoint3D } from './joint-3d.js';
+import { checkEnds, lengthLimits, optionalPoint } from './joint-base.js';
 import { type JointPass3D, type JointRows3D, limitSoft, limitSoftness } from './rows-3d.js';
 import { anchorSpeed, applyLinear, linearK, pa, pb, ra, rb, referenceK, row3D } from './rows-3d-math.js';
 import { fixedSpring } from './softness.js';
@@ -41,8 +41,8 @@ export function addDistanceJoint3D(world: PhysicsWorld, options: DistanceJoint3D
   const where = 'addDistanceJoint3D';
   const e = checkEnds(where, world, options, 3, ['anchorA', 'anchorB', 'length', 'minLength', 'maxLength', 'hertz', 'dampingRatio']);
   if (e.a === 0 && options.anchorA === undefined) throw new RangeError(`${where}: anchorA (a world point) is required when a is the world`);
-  const pa = options.anchorA === undefined ? centre(world, e.a) : point(where, 'anchorA', options.anchorA);
-  const pb = options.anchorB === undefined ? centre(world, e.b) : point(where, 'anchorB', options.anchorB);
+  const pa = optionalPoint(where, 'anchorA', options.anchorA, centre(world, e.a));
+  const pb = optionalPoint(where, 'anchorB', options.anchorB, centre(world, e.b));
   const length = options.length ?? Math.hypot(pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]);
   assertPositive(where, 'length', length);
   const hertz = options.hertz ?? 0,

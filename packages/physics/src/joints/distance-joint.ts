@@ -1,11 +1,11 @@
 import * as BS from '../solver/body-state-layout.js';
-import { assertKnownKeys, assertNonNegative, assertPositive } from '../validation/validate.js';
+import { assertNonNegative, assertPositive } from '../validation/validate.js';
 import type { JointState } from '../world/joint-state-2d.js';
 import { JointFlag, type JointStore, JointType } from '../world/joint-store-2d.js';
 import { IMPULSES, LINK_FLOATS, LINK_INTS, ROW_FLOATS, ROW_INTS } from '../world/joint-strides-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { centre, handle, makeJoint, optionalPoint } from './joint-2d.js';
-import { assertBreakLimit, BASE_KEYS, checkEnds, type JointBaseOptions, lengthLimits } from './joint-base.js';
+import { centre, checkEnds2D, handle, makeJoint } from './joint-2d.js';
+import { assertBreakLimit, type JointBaseOptions, lengthLimits, optionalPoint } from './joint-base.js';
 import * as R from './layout-2d.js';
 import {
   anchorsFrame,
@@ -67,16 +67,11 @@ export interface DistanceJointOptions extends JointBaseOptions {
  */
 export function addDistanceJoint(world: PhysicsWorld, options: DistanceJointOptions): number {
   const where = 'addDistanceJoint';
-  const ends = checkEnds(where, world, options, 2);
-  assertKnownKeys(
-    where,
-    options,
-    [...BASE_KEYS, 'anchorA', 'anchorB', 'length', 'minLength', 'maxLength', 'hertz', 'dampingRatio', 'breakStretch'],
-    ['a'],
-  );
+  const keys = ['anchorA', 'anchorB', 'length', 'minLength', 'maxLength', 'hertz', 'dampingRatio', 'breakStretch'];
+  const ends = checkEnds2D(where, world, options, keys);
   if (ends.a === 0 && options.anchorA === undefined)
     throw new RangeError(`${where}: anchorA (a world point) is required when a is the world`);
-  const pa = optionalPoint(where, 'anchorA', options.anchorA, ends.a === 0 ? [0, 0] : centre(world, ends.a));
+  const pa = optionalPoint(where, 'anchorA', options.anchorA, centre(world, ends.a));
   const pb = optionalPoint(where, 'anchorB', options.anchorB, centre(world, ends.b));
   const length = options.length ?? Math.hypot(pb[0] - pa[0], pb[1] - pa[1]);
   assertPositive(where, 'length', length);
@@ -290,16 +285,19 @@ export function warmStartPointLinks(world: PhysicsWorld): void {
       dy = sb[oB + BS.BS2_DY]! - sb[oA + BS.BS2_DY]! + lf[f + R.LK_DY]!;
     const L = Math.sqrt(dx * dx + dy * dy);
     if (L < 1e-12) continue;
-    const s = acc / L,
-      Px = s * dx,
-      Py = s * dy,
-      mA = sb[oA + BS.BS2_INV_MASS]!,
-      mB = sb[oB + BS.BS2_INV_MASS]!;
-    sb[oA + BS.BS2_VX] = sb[oA + BS.BS2_VX]! - mA * Px;
-    sb[oA + BS.BS2_VY] = sb[oA + BS.BS2_VY]! - mA * Py;
-    sb[oB + BS.BS2_VX] = sb[oB + BS.BS2_VX]! + mB * Px;
-    sb[oB + BS.BS2_VY] = sb[oB + BS.BS2_VY]! + mB * Py;
+    const s = acc / L;
+    linkImpulse(sb, oA, oB, s * dx, s * dy);
   }
+}
+
+/** A point link's linear impulse P (N s): -P to the body at body-state offset oA, +P to oB's (neither turns). */
+function linkImpulse(sb: Float64Array, oA: number, oB: number, px: number, py: number): void {
+  const mA = sb[oA + BS.BS2_INV_MASS]!,
+    mB = sb[oB + BS.BS2_INV_MASS]!;
+  sb[oA + BS.BS2_VX] = sb[oA + BS.BS2_VX]! - mA * px;
+  sb[oA + BS.BS2_VY] = sb[oA + BS.BS2_VY]! - mA * py;
+  sb[oB + BS.BS2_VX] = sb[oB + BS.BS2_VX]! + mB * px;
+  sb[oB + BS.BS2_VY] = sb[oB + BS.BS2_VY]! + mB * py;
 }
 
 /**
@@ -356,14 +354,7 @@ export function solvePointLinks(world: PhysicsWorld, invH: number, useBias: bool
       lf[f + R.LK_ACC] = -next;
       impulse = old - next;
     }
-    const Px = impulse * ux,
-      Py = impulse * uy,
-      mA = sb[oA + BS.BS2_INV_MASS]!,
-      mB = sb[oB + BS.BS2_INV_MASS]!;
-    sb[oA + BS.BS2_VX] = vAx - mA * Px;
-    sb[oA + BS.BS2_VY] = vAy - mA * Py;
-    sb[oB + BS.BS2_VX] = vBx + mB * Px;
-    sb[oB + BS.BS2_VY] = vBy + mB * Py;
+    linkImpulse(sb, oA, oB, impulse * ux, impulse * uy);
     if (lf[f + R.LK_ACC] !== 0) {
       sb[oA + BS.BS2_PUSHED] = 1;
       sb[oB + BS.BS2_PUSHED] = 1;

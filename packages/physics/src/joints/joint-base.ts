@@ -1,5 +1,6 @@
 import { hasComponent } from 'bitecs';
-import { assertKnownKeys, assertNonNegative, assertOptionalBoolean, describe } from '../validation/validate.js';
+import { wakeIsland } from '../islands/sleep.js';
+import { assertKnownKeys, assertNonNegative, assertOptionalBoolean, assertVector, describe } from '../validation/validate.js';
 import { resolveEntity } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 
@@ -88,6 +89,27 @@ export function checkEnds(where: string, world: PhysicsWorld, options: JointBase
   if (options.breakTorque !== undefined) assertBreakLimit(where, 'breakTorque', options.breakTorque);
   assertOptionalBoolean(where, 'collideConnected', options.collideConnected);
   return { a, b };
+}
+
+/**
+ * `value` as a point of `fallback`'s dimensions (2 or 3 numbers, world, m), or `fallback` when undefined.
+ * @throws TypeError | RangeError naming `where` and `param` on a malformed vector.
+ */
+export function optionalPoint<P extends [number, number] | [number, number, number]>(
+  where: string,
+  param: string,
+  value: unknown,
+  fallback: P,
+): P {
+  if (value === undefined) return fallback;
+  assertVector(where, param, value, fallback.length);
+  return (fallback.length === 2 ? [value[0]!, value[1]!] : [value[0]!, value[1]!, value[2]!]) as P;
+}
+
+/** Wakes the islands of a joint's bodies `a` and `b` (entity slots; 0, the fixed world, has none). */
+export function wakeEnds(world: PhysicsWorld, a: number, b: number): void {
+  if (a !== 0) wakeIsland(world, a);
+  if (b !== 0) wakeIsland(world, b);
 }
 
 /**
