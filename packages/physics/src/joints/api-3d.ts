@@ -1,6 +1,7 @@
-import { assertFinite, assertNonNegative, describe } from '../validation/validate.js';
+import { assertFinite, assertNonNegative } from '../validation/validate.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { requireJoint3D, wakeJoint3D } from './joint-3d.js';
+import { assertBreakLimit } from './joint-base.js';
 import { Joint3DFlag, Joint3DType, joints3DOf, removeJoint3DUnchecked } from './store-3d.js';
 
 /**
@@ -26,12 +27,8 @@ import { Joint3DFlag, Joint3DType, joints3DOf, removeJoint3DUnchecked } from './
 export function setJoint3DBreak(world: PhysicsWorld, joint: number, breakForce: number, breakTorque?: number): void {
   const where = 'setJoint3DBreak';
   const { s, j } = requireJoint3D(where, world, joint);
-  const check = (param: string, v: unknown): void => {
-    if (typeof v !== 'number') throw new TypeError(`${where}: ${param} must be a number, got ${describe(v)}`);
-    if (!(v > 0)) throw new RangeError(`${where}: ${param} must be > 0 (Infinity: never), got ${describe(v)}`);
-  };
-  check('breakForce', breakForce);
-  if (breakTorque !== undefined) check('breakTorque', breakTorque);
+  assertBreakLimit(where, 'breakForce', breakForce, 'never');
+  if (breakTorque !== undefined) assertBreakLimit(where, 'breakTorque', breakTorque, 'never');
   s.breakForce[j] = breakForce;
   if (breakTorque !== undefined) s.breakTorque[j] = breakTorque;
 }

@@ -14,7 +14,6 @@ import {
   warmStartPointAndLock,
 } from './rows-3d.js';
 import { applyAngular, ax, bx, qa, qb, relativeSpin, rot, row3D } from './rows-3d-math.js';
-import { useJointType3D } from './solver-3d.js';
 import { Joint3DFlag, Joint3DType, joints3DOf } from './store-3d.js';
 
 /**
@@ -50,8 +49,7 @@ export function addBallJoint3D(world: PhysicsWorld, options: BallJoint3DOptions)
   const p = optionalPoint(where, 'anchor', options.anchor, centre(world, e.b));
   const axis = options.axis === undefined ? ([0, 1, 0] as [number, number, number]) : unit(where, 'axis', options.axis);
   if (options.coneAngle !== undefined) checkConeAngle(where, options.coneAngle);
-  const j = make(world, where, Joint3DType.Ball, e, options, p, p, axis);
-  useJointType3D(Joint3DType.Ball, BALL_ROWS_3D);
+  const j = make(world, where, Joint3DType.Ball, BALL_ROWS_3D, e, options, p, p, axis);
   const s = joints3DOf(world, true);
   if (options.coneAngle !== undefined) {
     s.flags[j] = Joint3DFlag.Cone;

@@ -1,11 +1,10 @@
 import * as BS from '../solver/body-state-layout.js';
-import { assertNonNegative, assertPositive } from '../validation/validate.js';
 import type { JointState } from '../world/joint-state-2d.js';
 import { JointFlag, type JointStore, JointType } from '../world/joint-store-2d.js';
 import { IMPULSES, LINK_FLOATS, LINK_INTS, ROW_FLOATS, ROW_INTS } from '../world/joint-strides-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { centre, checkEnds2D, handle, makeJoint } from './joint-2d.js';
-import { assertBreakLimit, type JointBaseOptions, lengthLimits, optionalPoint } from './joint-base.js';
+import { assertBreakLimit, checkDistance, type JointBaseOptions } from './joint-base.js';
 import * as R from './layout-2d.js';
 import {
   anchorsFrame,
@@ -69,26 +68,16 @@ export function addDistanceJoint(world: PhysicsWorld, options: DistanceJointOpti
   const where = 'addDistanceJoint';
   const keys = ['anchorA', 'anchorB', 'length', 'minLength', 'maxLength', 'hertz', 'dampingRatio', 'breakStretch'];
   const ends = checkEnds2D(where, world, options, keys);
-  if (ends.a === 0 && options.anchorA === undefined)
-    throw new RangeError(`${where}: anchorA (a world point) is required when a is the world`);
-  const pa = optionalPoint(where, 'anchorA', options.anchorA, centre(world, ends.a));
-  const pb = optionalPoint(where, 'anchorB', options.anchorB, centre(world, ends.b));
-  const length = options.length ?? Math.hypot(pb[0] - pa[0], pb[1] - pa[1]);
-  assertPositive(where, 'length', length);
-  const hertz = options.hertz ?? 0;
-  assertNonNegative(where, 'hertz', hertz);
-  const zeta = options.dampingRatio ?? 0;
-  assertNonNegative(where, 'dampingRatio', zeta);
-  const [minL, maxL] = lengthLimits(where, length, hertz > 0, options.minLength, options.maxLength);
+  const d = checkDistance(where, options, ends.a, centre(world, ends.a), centre(world, ends.b));
   if (options.breakStretch !== undefined) assertBreakLimit(where, 'breakStretch', options.breakStretch);
-  const j = makeJoint(world, JointType.Distance, ends, pa, pb, options);
+  const j = makeJoint(world, JointType.Distance, ends, d.pa, d.pb, options);
   const J = world.components.Joint;
-  J.length[j] = length;
-  J.minLength[j] = minL;
-  J.maxLength[j] = maxL;
-  J.hertz[j] = hertz;
-  J.dampingRatio[j] = zeta;
-  J.flags[j] = (hertz > 0 ? JointFlag.Spring : 0) | (minL < maxL ? JointFlag.Limit : 0);
+  J.length[j] = d.length;
+  J.minLength[j] = d.minLength;
+  J.maxLength[j] = d.maxLength;
+  J.hertz[j] = d.hertz;
+  J.dampingRatio[j] = d.zeta;
+  J.flags[j] = (d.hertz > 0 ? JointFlag.Spring : 0) | (d.minLength < d.maxLength ? JointFlag.Limit : 0);
   J.breakStretch[j] = options.breakStretch ?? Infinity;
   return handle(world, j);
 }

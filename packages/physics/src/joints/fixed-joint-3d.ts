@@ -12,7 +12,6 @@ import {
   solvePointRows,
   warmStartPointAndLock,
 } from './rows-3d.js';
-import { useJointType3D } from './solver-3d.js';
 import { Joint3DType } from './store-3d.js';
 
 /**
@@ -37,8 +36,7 @@ export function addFixedJoint3D(world: PhysicsWorld, options: FixedJoint3DOption
   const where = 'addFixedJoint3D';
   const e = checkEnds(where, world, options, 3, ['anchor']);
   const p = optionalPoint(where, 'anchor', options.anchor, centre(world, e.b));
-  const j = make(world, where, Joint3DType.Fixed, e, options, p, p, [0, 1, 0]);
-  useJointType3D(Joint3DType.Fixed, FIXED_ROWS_3D);
+  const j = make(world, where, Joint3DType.Fixed, FIXED_ROWS_3D, e, options, p, p, [0, 1, 0]);
   return currentHandle(world, j);
 }
 

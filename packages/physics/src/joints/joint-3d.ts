@@ -65,11 +65,12 @@ export function centre(world: PhysicsWorld, e: number): [number, number, number]
   return e === 0 ? [0, 0, 0] : [P.x[e]!, P.y[e]!, P.z[e]!];
 }
 
-/** Makes the joint entity and its common fields; anchors pa, pb (world), axis (world). */
+/** Makes the joint entity of `type` and its common fields, anchors pa, pb (world) and axis (world), and hands the solver the type's `rows`. */
 export function make(
   world: PhysicsWorld,
   where: string,
   type: number,
+  rows: JointRows3D,
   e: { a: number; b: number },
   o: Joint3DBaseOptions,
   pa: [number, number, number],
@@ -120,6 +121,7 @@ export function make(
   if (o.collideConnected !== true) addNoCollide(world.joints, j, e.a, e.b);
   // A sleeping body newly held (or pulled) by a joint wakes, with its island (as 2D joints).
   wakeEnds(world, e.a, e.b);
+  useJointType3D(type, rows);
   return j;
 }
 
@@ -204,8 +206,7 @@ export function addAxisJoint3D(world: PhysicsWorld, kind: AxisJoint3DKind, optio
   const p = optionalPoint(where, 'anchor', options.anchor, centre(world, e.b));
   const axis = unit(where, 'axis', options.axis);
   const lm = limitAndMotor(where, options.lower, options.upper, options.motorSpeed, options[kind.maxName], kind.maxName);
-  const j = make(world, where, kind.type, e, options, p, p, axis);
-  useJointType3D(kind.type, kind.rows);
+  const j = make(world, where, kind.type, kind.rows, e, options, p, p, axis);
   storeLimitAndMotor(joints3DOf(world, true), j, lm);
   return currentHandle(world, j);
 }

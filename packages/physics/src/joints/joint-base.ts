@@ -1,6 +1,13 @@
 import { hasComponent } from 'bitecs';
 import { wakeIsland } from '../islands/sleep.js';
-import { assertKnownKeys, assertNonNegative, assertOptionalBoolean, assertVector, describe } from '../validation/validate.js';
+import {
+  assertKnownKeys,
+  assertNonNegative,
+  assertOptionalBoolean,
+  assertPositive,
+  assertVector,
+  describe,
+} from '../validation/validate.js';
 import { resolveEntity } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 
@@ -41,12 +48,13 @@ export interface Ends {
 }
 
 /**
- * A break limit: a number > 0, Infinity (the default: never breaks) included. @throws TypeError | RangeError
+ * A break limit: a number > 0, Infinity (the default: never breaks) included; `never` is the message's
+ * name for Infinity. @throws TypeError | RangeError naming `where`, `param` and the value.
  * @category Joints and ropes
  */
-export function assertBreakLimit(where: string, param: string, value: unknown): void {
+export function assertBreakLimit(where: string, param: string, value: unknown, never = 'never breaks'): void {
   if (typeof value !== 'number') throw new TypeError(`${where}: ${param} must be a number, got ${describe(value)}`);
-  if (!(value > 0)) throw new RangeError(`${where}: ${param} must be > 0 (Infinity: never breaks), got ${describe(value)}`);
+  if (!(value > 0)) throw new RangeError(`${where}: ${param} must be > 0 (Infinity: ${never}), got ${describe(value)}`);
 }
 
 /** The slot of body `id` (param `param` of `where`): an entity with position, mass and an angle (2D) or orientation (3D). @throws RangeError otherwise. */
@@ -110,6 +118,55 @@ export function optionalPoint<P extends [number, number] | [number, number, numb
 export function wakeEnds(world: PhysicsWorld, a: number, b: number): void {
   if (a !== 0) wakeIsland(world, a);
   if (b !== 0) wakeIsland(world, b);
+}
+
+/** The options of a distance joint that checkDistance reads (DistanceJointOptions, DistanceJoint3DOptions; documented there). */
+interface DistanceShapeOptions {
+  anchorA?: unknown;
+  anchorB?: unknown;
+  length?: number;
+  minLength?: number;
+  maxLength?: number;
+  hertz?: number;
+  dampingRatio?: number;
+}
+
+/** A distance joint's checked anchors (world, m), rest length and limits (m) and spring (Hz, damping ratio): checkDistance. */
+export interface DistanceShape<P> {
+  pa: P;
+  pb: P;
+  length: number;
+  minLength: number;
+  maxLength: number;
+  hertz: number;
+  zeta: number;
+}
+
+/**
+ * Checks the options of a 2D or 3D distance joint with body A `a` (0: the world): its anchors (default
+ * the centres `centreA`, `centreB`; anchorA required when A is the world), its rest length (> 0, default
+ * the anchors' distance), its spring (hertz and dampingRatio >= 0, default 0) and its limits
+ * (lengthLimits).
+ * @throws TypeError | RangeError naming `where`, the parameter and the value.
+ */
+export function checkDistance<P extends [number, number] | [number, number, number]>(
+  where: string,
+  options: DistanceShapeOptions,
+  a: number,
+  centreA: P,
+  centreB: P,
+): DistanceShape<P> {
+  if (a === 0 && options.anchorA === undefined) throw new RangeError(`${where}: anchorA (a world point) is required when a is the world`);
+  const pa = optionalPoint(where, 'anchorA', options.anchorA, centreA);
+  const pb = optionalPoint(where, 'anchorB', options.anchorB, centreB);
+  const length = options.length ?? Math.hypot(...pb.map((v, i) => v - pa[i]!));
+  assertPositive(where, 'length', length);
+  const hertz = options.hertz ?? 0;
+  assertNonNegative(where, 'hertz', hertz);
+  const zeta = options.dampingRatio ?? 0;
+  assertNonNegative(where, 'dampingRatio', zeta);
+  const [minLength, maxLength] = lengthLimits(where, length, hertz > 0, options.minLength, options.maxLength);
+  return { pa, pb, length, minLength, maxLength, hertz, zeta };
 }
 
 /**
