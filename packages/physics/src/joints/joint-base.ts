@@ -121,26 +121,12 @@ export function wakeEnds(world: PhysicsWorld, a: number, b: number): void {
 }
 
 /** The options of a distance joint that checkDistance reads (DistanceJointOptions, DistanceJoint3DOptions; documented there). */
-interface DistanceShapeOptions {
-  anchorA?: unknown;
-  anchorB?: unknown;
-  length?: number;
-  minLength?: number;
-  maxLength?: number;
-  hertz?: number;
-  dampingRatio?: number;
-}
+type DistanceShapeOptions = Partial<
+  Record<'anchorA' | 'anchorB', unknown> & Record<'length' | 'minLength' | 'maxLength' | 'hertz' | 'dampingRatio', number>
+>;
 
-/** A distance joint's checked anchors (world, m), rest length and limits (m) and spring (Hz, damping ratio): checkDistance. */
-export interface DistanceShape<P> {
-  pa: P;
-  pb: P;
-  length: number;
-  minLength: number;
-  maxLength: number;
-  hertz: number;
-  zeta: number;
-}
+/** A distance joint's checked anchors pa, pb (world, m), rest length and limits (m) and spring (hertz, Hz; zeta, its damping ratio). */
+export type DistanceShape<P> = { pa: P; pb: P } & Record<'length' | 'minLength' | 'maxLength' | 'hertz' | 'zeta', number>;
 
 /**
  * Checks the options of a 2D or 3D distance joint with body A `a` (0: the world): its anchors (default
