@@ -15,8 +15,8 @@ import { BASE_KEYS, checkEnds, type Ends, type JointBaseOptions, optionalPoint, 
  * and B (a body). Anchors are given in world coordinates where the bodies are when the joint is made;
  * the joint keeps them in the bodies' frames. Removing a body removes its joints. A joint may break:
  * past `breakForce` (N) or `breakTorque` (N m) it is removed and reported in `world.joints.breaks`
- * after the step. Here: the anchors' and axis' checks and storage, the limits, motor and spring, the
- * joint along an axis (prismatic, wheel), and finding a joint by its handle.
+ * after the step. Here: the bodies' and option keys' check, the anchors' and axis' storage, the limits,
+ * motor and spring, the joint along an axis (prismatic, wheel), and finding a joint by its handle.
  */
 
 /** The position of body slot `e`, m (its centre of mass; the origin for 0, the fixed world). */

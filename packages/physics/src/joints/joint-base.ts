@@ -13,7 +13,8 @@ import type { PhysicsWorld } from '../world/options.js';
 
 /**
  * What every joint shares, 2D and 3D: the options of its two bodies, breaking and collisions, their
- * checks, and the check of a distance joint's length and limits.
+ * checks, an optional anchor point, waking its bodies, and the checks of a distance joint's anchors,
+ * length, spring and limits.
  */
 
 /**
