@@ -1,7 +1,7 @@
-import { assertFinite, assertNonNegative, describe } from '../validation/validate.js';
-import { resolveEntity } from '../world/handles.js';
+import { assertFinite, assertNonNegative } from '../validation/validate.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { requireJoint3D, wakeJoint3D } from './joint-3d.js';
+import { assertBreakLimit } from './joint-base.js';
 import { Joint3DFlag, Joint3DType, joints3DOf, removeJoint3DUnchecked } from './store-3d.js';
 
 /**
@@ -27,12 +27,8 @@ import { Joint3DFlag, Joint3DType, joints3DOf, removeJoint3DUnchecked } from './
 export function setJoint3DBreak(world: PhysicsWorld, joint: number, breakForce: number, breakTorque?: number): void {
   const where = 'setJoint3DBreak';
   const { s, j } = requireJoint3D(where, world, joint);
-  const check = (param: string, v: unknown): void => {
-    if (typeof v !== 'number') throw new TypeError(`${where}: ${param} must be a number, got ${describe(v)}`);
-    if (!(v > 0)) throw new RangeError(`${where}: ${param} must be > 0 (Infinity: never), got ${describe(v)}`);
-  };
-  check('breakForce', breakForce);
-  if (breakTorque !== undefined) check('breakTorque', breakTorque);
+  assertBreakLimit(where, 'breakForce', breakForce, 'never');
+  if (breakTorque !== undefined) assertBreakLimit(where, 'breakTorque', breakTorque, 'never');
   s.breakForce[j] = breakForce;
   if (breakTorque !== undefined) s.breakTorque[j] = breakTorque;
 }
@@ -104,10 +100,7 @@ export function setJoint3DMotor(world: PhysicsWorld, joint: number, speed: numbe
  * @category Joints and ropes
  */
 export function removeJoint3D(world: PhysicsWorld, joint: number): void {
-  const j = resolveEntity(world, joint, 'removeJoint3D', 'joint');
-  const s = joints3DOf(world);
-  if (s === undefined || !s.list.includes(j))
-    throw new RangeError(`removeJoint3D: joint must be a 3D joint, got entity ${describe(joint)}`);
+  const { s, j } = requireJoint3D('removeJoint3D', world, joint);
   removeJoint3DUnchecked(world, s, j);
 }
 

@@ -1,8 +1,8 @@
 import { assertFinite, describe } from '../validation/validate.js';
 import { currentHandle } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { centre, type Joint3DBaseOptions, make, point, requireJoint3D, unit, wakeJoint3D } from './joint-3d.js';
-import { checkEnds } from './joint-base.js';
+import { centre, type Joint3DBaseOptions, make, requireJoint3D, unit, wakeJoint3D } from './joint-3d.js';
+import { checkEnds, optionalPoint } from './joint-base.js';
 import {
   type JointPass3D,
   type JointRows3D,
@@ -14,7 +14,6 @@ import {
   warmStartPointAndLock,
 } from './rows-3d.js';
 import { applyAngular, ax, bx, qa, qb, relativeSpin, rot, row3D } from './rows-3d-math.js';
-import { useJointType3D } from './solver-3d.js';
 import { Joint3DFlag, Joint3DType, joints3DOf } from './store-3d.js';
 
 /**
@@ -47,15 +46,10 @@ export interface BallJoint3DOptions extends Joint3DBaseOptions {
 export function addBallJoint3D(world: PhysicsWorld, options: BallJoint3DOptions): number {
   const where = 'addBallJoint3D';
   const e = checkEnds(where, world, options, 3, ['anchor', 'axis', 'coneAngle']);
-  const p = options.anchor === undefined ? centre(world, e.b) : point(where, 'anchor', options.anchor);
+  const p = optionalPoint(where, 'anchor', options.anchor, centre(world, e.b));
   const axis = options.axis === undefined ? ([0, 1, 0] as [number, number, number]) : unit(where, 'axis', options.axis);
-  if (options.coneAngle !== undefined) {
-    assertFinite(where, 'coneAngle', options.coneAngle);
-    if (!(options.coneAngle > 0 && options.coneAngle < Math.PI))
-      throw new RangeError(`${where}: coneAngle must be in (0, pi), got ${describe(options.coneAngle)}`);
-  }
-  const j = make(world, where, Joint3DType.Ball, e, options, p, p, axis);
-  useJointType3D(Joint3DType.Ball, BALL_ROWS_3D);
+  if (options.coneAngle !== undefined) checkConeAngle(where, options.coneAngle);
+  const j = make(world, where, Joint3DType.Ball, BALL_ROWS_3D, e, options, p, p, axis);
   const s = joints3DOf(world, true);
   if (options.coneAngle !== undefined) {
     s.flags[j] = Joint3DFlag.Cone;
@@ -81,8 +75,7 @@ export function setBallJoint3DCone(world: PhysicsWorld, joint: number, coneAngle
   const where = 'setBallJoint3DCone';
   const { s, j } = requireJoint3D(where, world, joint, [Joint3DType.Ball]);
   if (coneAngle !== null) {
-    assertFinite(where, 'coneAngle', coneAngle);
-    if (!(coneAngle > 0 && coneAngle < Math.PI)) throw new RangeError(`${where}: coneAngle must be in (0, pi), got ${describe(coneAngle)}`);
+    checkConeAngle(where, coneAngle);
     s.flags[j] = s.flags[j]! | Joint3DFlag.Cone;
     s.upper[j] = coneAngle;
   } else s.flags[j] = s.flags[j]! & ~Joint3DFlag.Cone;
@@ -90,15 +83,33 @@ export function setBallJoint3DCone(world: PhysicsWorld, joint: number, coneAngle
   wakeJoint3D(world, s, j);
 }
 
-/** A ball joint's cone: the angle between A's axis and B's stays within the half angle (s.upper). */
-function solveCone(p: JointPass3D, j: number, a: number, b: number): void {
+/** A cone half angle, rad, finite and in (0, pi). @throws TypeError | RangeError `<where>: coneAngle must be ...` naming the value. */
+function checkConeAngle(where: string, coneAngle: unknown): void {
+  assertFinite(where, 'coneAngle', coneAngle);
+  if (!(coneAngle > 0 && coneAngle < Math.PI)) throw new RangeError(`${where}: coneAngle must be in (0, pi), got ${describe(coneAngle)}`);
+}
+
+/** The cone's swing axis n = a_A x a_B, not normalised, into n3, of ball joint j's cone axis turned with A (into ax) and with B (into bx); @returns |n|. */
+function coneNormal(p: JointPass3D, j: number): number {
   const s = p.s;
   rot(qa, s.uax[j]!, s.uay[j]!, s.uaz[j]!, ax);
   rot(qb, s.ubx[j]!, s.uby[j]!, s.ubz[j]!, bx);
-  let nx = ax[1]! * bx[2]! - ax[2]! * bx[1]!,
-    ny = ax[2]! * bx[0]! - ax[0]! * bx[2]!,
-    nz = ax[0]! * bx[1]! - ax[1]! * bx[0]!;
-  const sn = Math.hypot(nx, ny, nz);
+  n3[0] = ax[1]! * bx[2]! - ax[2]! * bx[1]!;
+  n3[1] = ax[2]! * bx[0]! - ax[0]! * bx[2]!;
+  n3[2] = ax[0]! * bx[1]! - ax[1]! * bx[0]!;
+  return Math.hypot(n3[0]!, n3[1]!, n3[2]!);
+}
+
+/** coneNormal's n. */
+const n3 = new Float64Array(3);
+
+/** A ball joint's cone: the angle between A's axis and B's stays within the half angle (s.upper). */
+function solveCone(p: JointPass3D, j: number, a: number, b: number): void {
+  const s = p.s;
+  const sn = coneNormal(p, j);
+  let nx = n3[0]!,
+    ny = n3[1]!,
+    nz = n3[2]!;
   if (sn > 1e-9) {
     nx /= sn;
     ny /= sn;
@@ -144,14 +155,9 @@ export function warmStartBallRow3D(p: JointPass3D, j: number, a: number, b: numb
   warmStartPointAndLock(p, j, a, b);
   const { s, sb, T } = p;
   if (s.limit[j]! !== 0) {
-    rot(qa, s.uax[j]!, s.uay[j]!, s.uaz[j]!, ax);
-    rot(qb, s.ubx[j]!, s.uby[j]!, s.ubz[j]!, bx);
-    const nx = ax[1]! * bx[2]! - ax[2]! * bx[1]!,
-      ny = ax[2]! * bx[0]! - ax[0]! * bx[2]!,
-      nz = ax[0]! * bx[1]! - ax[1]! * bx[0]!;
-    const sn = Math.hypot(nx, ny, nz),
+    const sn = coneNormal(p, j),
       l = -s.limit[j]! / sn;
-    if (sn > 1e-9) applyAngular(sb, T, a, b, l * nx, l * ny, l * nz);
+    if (sn > 1e-9) applyAngular(sb, T, a, b, l * n3[0]!, l * n3[1]!, l * n3[2]!);
   }
 }
 

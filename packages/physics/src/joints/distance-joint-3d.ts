@@ -2,12 +2,11 @@ import { assertNonNegative, assertPositive } from '../validation/validate.js';
 import { currentHandle } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import type { DistanceJointOptions } from './distance-joint.js';
-import { centre, make, point, requireJoint3D, wakeJoint3D } from './joint-3d.js';
-import { checkEnds, lengthLimits } from './joint-base.js';
+import { centre, make, requireJoint3D, wakeJoint3D } from './joint-3d.js';
+import { checkDistance, checkEnds, lengthLimits } from './joint-base.js';
 import { type JointPass3D, type JointRows3D, limitSoft, limitSoftness } from './rows-3d.js';
 import { anchorSpeed, applyLinear, linearK, pa, pb, ra, rb, referenceK, row3D } from './rows-3d-math.js';
 import { fixedSpring } from './softness.js';
-import { useJointType3D } from './solver-3d.js';
 import { Joint3DFlag, type Joint3DStore, Joint3DType, joints3DOf } from './store-3d.js';
 
 /**
@@ -40,26 +39,21 @@ export interface DistanceJoint3DOptions extends Omit<DistanceJointOptions, 'brea
 export function addDistanceJoint3D(world: PhysicsWorld, options: DistanceJoint3DOptions): number {
   const where = 'addDistanceJoint3D';
   const e = checkEnds(where, world, options, 3, ['anchorA', 'anchorB', 'length', 'minLength', 'maxLength', 'hertz', 'dampingRatio']);
-  if (e.a === 0 && options.anchorA === undefined) throw new RangeError(`${where}: anchorA (a world point) is required when a is the world`);
-  const pa = options.anchorA === undefined ? centre(world, e.a) : point(where, 'anchorA', options.anchorA);
-  const pb = options.anchorB === undefined ? centre(world, e.b) : point(where, 'anchorB', options.anchorB);
-  const length = options.length ?? Math.hypot(pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]);
-  assertPositive(where, 'length', length);
-  const hertz = options.hertz ?? 0,
-    zeta = options.dampingRatio ?? 0;
-  assertNonNegative(where, 'hertz', hertz);
-  assertNonNegative(where, 'dampingRatio', zeta);
-  const [minL, maxL] = lengthLimits(where, length, hertz > 0, options.minLength, options.maxLength);
-  const j = make(world, where, Joint3DType.Distance, e, options, pa, pb, [0, 1, 0]);
-  useJointType3D(Joint3DType.Distance, DISTANCE_ROWS_3D);
+  const d = checkDistance(where, options, e.a, centre(world, e.a), centre(world, e.b));
+  const j = make(world, where, Joint3DType.Distance, DISTANCE_ROWS_3D, e, options, d.pa, d.pb, [0, 1, 0]);
   const s = joints3DOf(world, true);
+  storeLength(s, j, d.length, d.minLength, d.maxLength, d.hertz > 0);
+  s.hertz[j] = d.hertz;
+  s.dampingRatio[j] = d.zeta;
+  return currentHandle(world, j);
+}
+
+/** Writes distance joint j's rest length and limits (m), and its Spring (`spring`) and Limit (minL < maxL) flags. */
+function storeLength(s: Joint3DStore, j: number, length: number, minL: number, maxL: number, spring: boolean): void {
   s.length[j] = length;
   s.lower[j] = minL;
   s.upper[j] = maxL;
-  s.hertz[j] = hertz;
-  s.dampingRatio[j] = zeta;
-  s.flags[j] = (hertz > 0 ? Joint3DFlag.Spring : 0) | (minL < maxL ? Joint3DFlag.Limit : 0);
-  return currentHandle(world, j);
+  s.flags[j] = (spring ? Joint3DFlag.Spring : 0) | (minL < maxL ? Joint3DFlag.Limit : 0);
 }
 
 /**
@@ -100,10 +94,7 @@ export function setDistanceJoint3DLength(world: PhysicsWorld, joint: number, len
   const spring = (s.flags[j]! & Joint3DFlag.Spring) !== 0;
   const [minL, maxL] = lengthLimits(where, length, spring, minLength, maxLength);
   const limitsChanged = s.lower[j] !== minL || s.upper[j] !== maxL;
-  s.length[j] = length;
-  s.lower[j] = minL;
-  s.upper[j] = maxL;
-  s.flags[j] = (spring ? Joint3DFlag.Spring : 0) | (minL < maxL ? Joint3DFlag.Limit : 0);
+  storeLength(s, j, length, minL, maxL, spring);
   if (limitsChanged) {
     s.limit[j] = 0;
     s.ly[j] = 0;

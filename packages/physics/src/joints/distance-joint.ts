@@ -1,11 +1,10 @@
 import * as BS from '../solver/body-state-layout.js';
-import { assertKnownKeys, assertNonNegative, assertPositive } from '../validation/validate.js';
 import type { JointState } from '../world/joint-state-2d.js';
 import { JointFlag, type JointStore, JointType } from '../world/joint-store-2d.js';
 import { IMPULSES, LINK_FLOATS, LINK_INTS, ROW_FLOATS, ROW_INTS } from '../world/joint-strides-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { centre, handle, makeJoint, optionalPoint } from './joint-2d.js';
-import { assertBreakLimit, BASE_KEYS, checkEnds, type JointBaseOptions, lengthLimits } from './joint-base.js';
+import { centre, checkEnds2D, handle, makeJoint } from './joint-2d.js';
+import { assertBreakLimit, checkDistance, type JointBaseOptions } from './joint-base.js';
 import * as R from './layout-2d.js';
 import {
   anchorsFrame,
@@ -67,33 +66,18 @@ export interface DistanceJointOptions extends JointBaseOptions {
  */
 export function addDistanceJoint(world: PhysicsWorld, options: DistanceJointOptions): number {
   const where = 'addDistanceJoint';
-  const ends = checkEnds(where, world, options, 2);
-  assertKnownKeys(
-    where,
-    options,
-    [...BASE_KEYS, 'anchorA', 'anchorB', 'length', 'minLength', 'maxLength', 'hertz', 'dampingRatio', 'breakStretch'],
-    ['a'],
-  );
-  if (ends.a === 0 && options.anchorA === undefined)
-    throw new RangeError(`${where}: anchorA (a world point) is required when a is the world`);
-  const pa = optionalPoint(where, 'anchorA', options.anchorA, ends.a === 0 ? [0, 0] : centre(world, ends.a));
-  const pb = optionalPoint(where, 'anchorB', options.anchorB, centre(world, ends.b));
-  const length = options.length ?? Math.hypot(pb[0] - pa[0], pb[1] - pa[1]);
-  assertPositive(where, 'length', length);
-  const hertz = options.hertz ?? 0;
-  assertNonNegative(where, 'hertz', hertz);
-  const zeta = options.dampingRatio ?? 0;
-  assertNonNegative(where, 'dampingRatio', zeta);
-  const [minL, maxL] = lengthLimits(where, length, hertz > 0, options.minLength, options.maxLength);
+  const keys = ['anchorA', 'anchorB', 'length', 'minLength', 'maxLength', 'hertz', 'dampingRatio', 'breakStretch'];
+  const ends = checkEnds2D(where, world, options, keys);
+  const d = checkDistance(where, options, ends.a, centre(world, ends.a), centre(world, ends.b));
   if (options.breakStretch !== undefined) assertBreakLimit(where, 'breakStretch', options.breakStretch);
-  const j = makeJoint(world, JointType.Distance, ends, pa, pb, options);
+  const j = makeJoint(world, JointType.Distance, ends, d.pa, d.pb, options);
   const J = world.components.Joint;
-  J.length[j] = length;
-  J.minLength[j] = minL;
-  J.maxLength[j] = maxL;
-  J.hertz[j] = hertz;
-  J.dampingRatio[j] = zeta;
-  J.flags[j] = (hertz > 0 ? JointFlag.Spring : 0) | (minL < maxL ? JointFlag.Limit : 0);
+  J.length[j] = d.length;
+  J.minLength[j] = d.minLength;
+  J.maxLength[j] = d.maxLength;
+  J.hertz[j] = d.hertz;
+  J.dampingRatio[j] = d.zeta;
+  J.flags[j] = (d.hertz > 0 ? JointFlag.Spring : 0) | (d.minLength < d.maxLength ? JointFlag.Limit : 0);
   J.breakStretch[j] = options.breakStretch ?? Infinity;
   return handle(world, j);
 }
@@ -290,16 +274,19 @@ export function warmStartPointLinks(world: PhysicsWorld): void {
       dy = sb[oB + BS.BS2_DY]! - sb[oA + BS.BS2_DY]! + lf[f + R.LK_DY]!;
     const L = Math.sqrt(dx * dx + dy * dy);
     if (L < 1e-12) continue;
-    const s = acc / L,
-      Px = s * dx,
-      Py = s * dy,
-      mA = sb[oA + BS.BS2_INV_MASS]!,
-      mB = sb[oB + BS.BS2_INV_MASS]!;
-    sb[oA + BS.BS2_VX] = sb[oA + BS.BS2_VX]! - mA * Px;
-    sb[oA + BS.BS2_VY] = sb[oA + BS.BS2_VY]! - mA * Py;
-    sb[oB + BS.BS2_VX] = sb[oB + BS.BS2_VX]! + mB * Px;
-    sb[oB + BS.BS2_VY] = sb[oB + BS.BS2_VY]! + mB * Py;
+    const s = acc / L;
+    linkImpulse(sb, oA, oB, s * dx, s * dy);
   }
+}
+
+/** A point link's linear impulse P (N s): -P to the body at body-state offset oA, +P to oB's (neither turns). */
+function linkImpulse(sb: Float64Array, oA: number, oB: number, px: number, py: number): void {
+  const mA = sb[oA + BS.BS2_INV_MASS]!,
+    mB = sb[oB + BS.BS2_INV_MASS]!;
+  sb[oA + BS.BS2_VX] = sb[oA + BS.BS2_VX]! - mA * px;
+  sb[oA + BS.BS2_VY] = sb[oA + BS.BS2_VY]! - mA * py;
+  sb[oB + BS.BS2_VX] = sb[oB + BS.BS2_VX]! + mB * px;
+  sb[oB + BS.BS2_VY] = sb[oB + BS.BS2_VY]! + mB * py;
 }
 
 /**
@@ -356,14 +343,7 @@ export function solvePointLinks(world: PhysicsWorld, invH: number, useBias: bool
       lf[f + R.LK_ACC] = -next;
       impulse = old - next;
     }
-    const Px = impulse * ux,
-      Py = impulse * uy,
-      mA = sb[oA + BS.BS2_INV_MASS]!,
-      mB = sb[oB + BS.BS2_INV_MASS]!;
-    sb[oA + BS.BS2_VX] = vAx - mA * Px;
-    sb[oA + BS.BS2_VY] = vAy - mA * Py;
-    sb[oB + BS.BS2_VX] = vBx + mB * Px;
-    sb[oB + BS.BS2_VY] = vBy + mB * Py;
+    linkImpulse(sb, oA, oB, impulse * ux, impulse * uy);
     if (lf[f + R.LK_ACC] !== 0) {
       sb[oA + BS.BS2_PUSHED] = 1;
       sb[oB + BS.BS2_PUSHED] = 1;

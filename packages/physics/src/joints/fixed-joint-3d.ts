@@ -1,7 +1,7 @@
 import { currentHandle } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { centre, type Joint3DBaseOptions, make, point } from './joint-3d.js';
-import { checkEnds } from './joint-base.js';
+import { centre, type Joint3DBaseOptions, make } from './joint-3d.js';
+import { checkEnds, optionalPoint } from './joint-base.js';
 import {
   errorRotation,
   type JointPass3D,
@@ -12,7 +12,6 @@ import {
   solvePointRows,
   warmStartPointAndLock,
 } from './rows-3d.js';
-import { useJointType3D } from './solver-3d.js';
 import { Joint3DType } from './store-3d.js';
 
 /**
@@ -36,9 +35,8 @@ export interface FixedJoint3DOptions extends Joint3DBaseOptions {
 export function addFixedJoint3D(world: PhysicsWorld, options: FixedJoint3DOptions): number {
   const where = 'addFixedJoint3D';
   const e = checkEnds(where, world, options, 3, ['anchor']);
-  const p = options.anchor === undefined ? centre(world, e.b) : point(where, 'anchor', options.anchor);
-  const j = make(world, where, Joint3DType.Fixed, e, options, p, p, [0, 1, 0]);
-  useJointType3D(Joint3DType.Fixed, FIXED_ROWS_3D);
+  const p = optionalPoint(where, 'anchor', options.anchor, centre(world, e.b));
+  const j = make(world, where, Joint3DType.Fixed, FIXED_ROWS_3D, e, options, p, p, [0, 1, 0]);
   return currentHandle(world, j);
 }
 

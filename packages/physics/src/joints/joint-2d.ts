@@ -1,13 +1,13 @@
 import { addComponent, hasComponent } from 'bitecs';
 import { wakeIsland } from '../islands/sleep.js';
-import { assertFinite, assertKnownKeys, assertNonNegative, assertVector, describe } from '../validation/validate.js';
+import { assertFinite, assertKnownKeys, assertNonNegative, describe } from '../validation/validate.js';
 import { createSlot, currentHandle, resolveEntity } from '../world/handles.js';
 import { addNoCollide } from '../world/joint-no-collide.js';
 import { ensureJointArrays } from '../world/joint-state-2d.js';
 import { JOINT_TYPE_NAMES, JointFlag, type JointTypeCode } from '../world/joint-store-2d.js';
 import { IMPULSES } from '../world/joint-strides-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { BASE_KEYS, checkEnds, type Ends, type JointBaseOptions } from './joint-base.js';
+import { BASE_KEYS, checkEnds, type Ends, type JointBaseOptions, optionalPoint, wakeEnds } from './joint-base.js';
 
 /**
  * The add-time code the 2D joint types share (their rows are in rows-2d.ts): every joint is an entity
@@ -15,20 +15,24 @@ import { BASE_KEYS, checkEnds, type Ends, type JointBaseOptions } from './joint-
  * and B (a body). Anchors are given in world coordinates where the bodies are when the joint is made;
  * the joint keeps them in the bodies' frames. Removing a body removes its joints. A joint may break:
  * past `breakForce` (N) or `breakTorque` (N m) it is removed and reported in `world.joints.breaks`
- * after the step. Here: the anchors' and axis' checks and storage, the limits, motor and spring, the
- * joint along an axis (prismatic, wheel), and finding a joint by its handle.
+ * after the step. Here: the bodies' and option keys' check, the anchors' and axis' storage, the limits,
+ * motor and spring, the joint along an axis (prismatic, wheel), and finding a joint by its handle.
  */
 
-/** `value` as a 2D point, m, or `fallback` when undefined. @throws TypeError | RangeError on a malformed vector. */
-export function optionalPoint(where: string, param: string, value: unknown, fallback: [number, number]): [number, number] {
-  if (value === undefined) return fallback;
-  assertVector(where, param, value, 2);
-  return [value[0]!, value[1]!];
+/** The position of body slot `e`, m (its centre of mass; the origin for 0, the fixed world). */
+export function centre(world: PhysicsWorld, e: number): [number, number] {
+  return e === 0 ? [0, 0] : [world.components.Position.x[e]!, world.components.Position.y[e]!];
 }
 
-/** The position of body slot `e`, m (its centre of mass). */
-export function centre(world: PhysicsWorld, e: number): [number, number] {
-  return [world.components.Position.x[e]!, world.components.Position.y[e]!];
+/**
+ * Checks a 2D joint's world, options, bodies, break limits and collideConnected (joint-base.ts
+ * checkEnds), then its option keys: JointBaseOptions' and `keys`; returns the bodies' slots.
+ * @throws TypeError | RangeError naming `where`, the parameter and the value.
+ */
+export function checkEnds2D(where: string, world: PhysicsWorld, options: JointBaseOptions, keys: readonly string[]): Ends {
+  const ends = checkEnds(where, world, options, 2);
+  assertKnownKeys(where, options, [...BASE_KEYS, ...keys], ['a']);
+  return ends;
 }
 
 /** `value` (an axis, 2 numbers, not zero) normalised, or `fallback` when undefined. @throws TypeError | RangeError naming `where`. */
@@ -205,9 +209,8 @@ type AxisJointOptions = JointBaseOptions &
  */
 export function addAxisJoint(world: PhysicsWorld, kind: AxisJointKind, options: AxisJointOptions): number {
   const where = kind.where;
-  const ends = checkEnds(where, world, options, 2);
   const keys = ['anchor', 'axis', 'lower', 'upper', 'motorSpeed', kind.maxName, 'hertz', 'dampingRatio'];
-  assertKnownKeys(where, options, [...BASE_KEYS, ...keys], ['a']);
+  const ends = checkEnds2D(where, world, options, keys);
   const p = optionalPoint(where, 'anchor', options.anchor, centre(world, ends.b));
   const axis = unitAxis(where, options.axis, kind.axis);
   const limit = checkLimits(where, options.lower, options.upper, 'lower', 'upper', Infinity);
@@ -236,7 +239,5 @@ export function requireJoint(where: string, world: PhysicsWorld, joint: unknown,
 
 /** Wakes the islands of a joint's bodies. */
 export function wakeJoint(world: PhysicsWorld, j: number): void {
-  const J = world.components.Joint;
-  if (J.a[j] !== 0) wakeIsland(world, J.a[j]!);
-  wakeIsland(world, J.b[j]!);
+  wakeEnds(world, world.components.Joint.a[j]!, world.components.Joint.b[j]!);
 }

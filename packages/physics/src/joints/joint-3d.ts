@@ -1,13 +1,13 @@
 import { install3D } from '../collision/install-3d.js';
-import { wakeIsland } from '../islands/sleep.js';
 import { rotateVectorInverse } from '../math/quaternion.js';
 import { assertFinite, assertNonNegative, assertVector, describe } from '../validation/validate.js';
 import { createSlot, currentHandle, resolveEntity } from '../world/handles.js';
 import { addNoCollide } from '../world/joint-no-collide.js';
 import { ensureJointArrays } from '../world/joint-state-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { checkEnds, type JointBaseOptions } from './joint-base.js';
+import { checkEnds, type JointBaseOptions, optionalPoint, wakeEnds } from './joint-base.js';
 import type { JointRows3D } from './rows-3d.js';
+import { relativeRotation } from './rows-3d-math.js';
 import { useJointType3D } from './solver-3d.js';
 import { Joint3DFlag, type Joint3DStore, joints3DOf, removeJoints3DOf } from './store-3d.js';
 
@@ -65,11 +65,12 @@ export function centre(world: PhysicsWorld, e: number): [number, number, number]
   return e === 0 ? [0, 0, 0] : [P.x[e]!, P.y[e]!, P.z[e]!];
 }
 
-/** Makes the joint entity and its common fields; anchors pa, pb (world), axis (world). */
+/** Makes the joint entity of `type` and its common fields, anchors pa, pb (world) and axis (world), and hands the solver the type's `rows`. */
 export function make(
   world: PhysicsWorld,
   where: string,
   type: number,
+  rows: JointRows3D,
   e: { a: number; b: number },
   o: Joint3DBaseOptions,
   pa: [number, number, number],
@@ -104,13 +105,12 @@ export function make(
   s.ubx[j] = ub[0];
   s.uby[j] = ub[1];
   s.ubz[j] = ub[2];
-  // conj(qa) qb
-  const [x1, y1, z1, w1] = [-qa[0], -qa[1], -qa[2], qa[3]],
-    [x2, y2, z2, w2] = qb;
-  s.rx[j] = w1 * x2 + x1 * w2 + y1 * z2 - z1 * y2;
-  s.ry[j] = w1 * y2 - x1 * z2 + y1 * w2 + z1 * x2;
-  s.rz[j] = w1 * z2 + x1 * y2 - y1 * x2 + z1 * w2;
-  s.rw[j] = w1 * w2 - x1 * x2 - y1 * y2 - z1 * z2;
+  const rel = new Float64Array(4);
+  relativeRotation(qa, qb, rel);
+  s.rx[j] = rel[0]!;
+  s.ry[j] = rel[1]!;
+  s.rz[j] = rel[2]!;
+  s.rw[j] = rel[3]!;
   for (const k of ['lower', 'upper', 'motorSpeed', 'maxMotorTorque', 'length', 'hertz', 'dampingRatio'] as const) s[k][j] = 0;
   for (const k of ['lx', 'ly', 'lz', 'wx', 'wy', 'wz', 'limit', 'motor'] as const) s[k][j] = 0;
   s.breakForce[j] = o.breakForce ?? Infinity;
@@ -120,8 +120,8 @@ export function make(
   world.joints.noCollideJoint[j] = 0;
   if (o.collideConnected !== true) addNoCollide(world.joints, j, e.a, e.b);
   // A sleeping body newly held (or pulled) by a joint wakes, with its island (as 2D joints).
-  if (e.a !== 0) wakeIsland(world, e.a);
-  wakeIsland(world, e.b);
+  wakeEnds(world, e.a, e.b);
+  useJointType3D(type, rows);
   return j;
 }
 
@@ -203,11 +203,10 @@ type AxisJoint3DOptions = JointBaseOptions &
 export function addAxisJoint3D(world: PhysicsWorld, kind: AxisJoint3DKind, options: AxisJoint3DOptions): number {
   const where = kind.where;
   const e = checkEnds(where, world, options, 3, ['anchor', 'axis', 'lower', 'upper', 'motorSpeed', kind.maxName]);
-  const p = options.anchor === undefined ? centre(world, e.b) : point(where, 'anchor', options.anchor);
+  const p = optionalPoint(where, 'anchor', options.anchor, centre(world, e.b));
   const axis = unit(where, 'axis', options.axis);
   const lm = limitAndMotor(where, options.lower, options.upper, options.motorSpeed, options[kind.maxName], kind.maxName);
-  const j = make(world, where, kind.type, e, options, p, p, axis);
-  useJointType3D(kind.type, kind.rows);
+  const j = make(world, where, kind.type, kind.rows, e, options, p, p, axis);
   storeLimitAndMotor(joints3DOf(world, true), j, lm);
   return currentHandle(world, j);
 }
@@ -237,6 +236,5 @@ export function requireJoint3D(
 
 /** Wakes the islands of a joint's two bodies (a setter changed what holds them). */
 export function wakeJoint3D(world: PhysicsWorld, s: Joint3DStore, j: number): void {
-  if (s.a[j] !== 0) wakeIsland(world, s.a[j]!);
-  if (s.b[j] !== 0) wakeIsland(world, s.b[j]!);
+  wakeEnds(world, s.a[j]!, s.b[j]!);
 }

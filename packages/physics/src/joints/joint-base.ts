@@ -1,11 +1,20 @@
 import { hasComponent } from 'bitecs';
-import { assertKnownKeys, assertNonNegative, assertOptionalBoolean, describe } from '../validation/validate.js';
+import { wakeIsland } from '../islands/sleep.js';
+import {
+  assertKnownKeys,
+  assertNonNegative,
+  assertOptionalBoolean,
+  assertPositive,
+  assertVector,
+  describe,
+} from '../validation/validate.js';
 import { resolveEntity } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 
 /**
  * What every joint shares, 2D and 3D: the options of its two bodies, breaking and collisions, their
- * checks, and the check of a distance joint's length and limits.
+ * checks, an optional anchor point, waking its bodies, and the checks of a distance joint's anchors,
+ * length, spring and limits.
  */
 
 /**
@@ -40,12 +49,13 @@ export interface Ends {
 }
 
 /**
- * A break limit: a number > 0, Infinity (the default: never breaks) included. @throws TypeError | RangeError
+ * A break limit: a number > 0, Infinity (the default: never breaks) included; `never` is the message's
+ * name for Infinity. @throws TypeError | RangeError naming `where`, `param` and the value.
  * @category Joints and ropes
  */
-export function assertBreakLimit(where: string, param: string, value: unknown): void {
+export function assertBreakLimit(where: string, param: string, value: unknown, never = 'never breaks'): void {
   if (typeof value !== 'number') throw new TypeError(`${where}: ${param} must be a number, got ${describe(value)}`);
-  if (!(value > 0)) throw new RangeError(`${where}: ${param} must be > 0 (Infinity: never breaks), got ${describe(value)}`);
+  if (!(value > 0)) throw new RangeError(`${where}: ${param} must be > 0 (Infinity: ${never}), got ${describe(value)}`);
 }
 
 /** The slot of body `id` (param `param` of `where`): an entity with position, mass and an angle (2D) or orientation (3D). @throws RangeError otherwise. */
@@ -88,6 +98,62 @@ export function checkEnds(where: string, world: PhysicsWorld, options: JointBase
   if (options.breakTorque !== undefined) assertBreakLimit(where, 'breakTorque', options.breakTorque);
   assertOptionalBoolean(where, 'collideConnected', options.collideConnected);
   return { a, b };
+}
+
+/**
+ * `value` as a point of `fallback`'s dimensions (2 or 3 numbers, world, m), or `fallback` when undefined.
+ * @throws TypeError | RangeError naming `where` and `param` on a malformed vector.
+ */
+export function optionalPoint<P extends [number, number] | [number, number, number]>(
+  where: string,
+  param: string,
+  value: unknown,
+  fallback: P,
+): P {
+  if (value === undefined) return fallback;
+  assertVector(where, param, value, fallback.length);
+  return (fallback.length === 2 ? [value[0]!, value[1]!] : [value[0]!, value[1]!, value[2]!]) as P;
+}
+
+/** Wakes the islands of a joint's bodies `a` and `b` (entity slots; 0, the fixed world, has none). */
+export function wakeEnds(world: PhysicsWorld, a: number, b: number): void {
+  if (a !== 0) wakeIsland(world, a);
+  if (b !== 0) wakeIsland(world, b);
+}
+
+/** The options of a distance joint that checkDistance reads (DistanceJointOptions, DistanceJoint3DOptions; documented there). */
+type DistanceShapeOptions = Partial<
+  Record<'anchorA' | 'anchorB', unknown> & Record<'length' | 'minLength' | 'maxLength' | 'hertz' | 'dampingRatio', number>
+>;
+
+/** A distance joint's checked anchors pa, pb (world, m), rest length and limits (m) and spring (hertz, Hz; zeta, its damping ratio). */
+export type DistanceShape<P> = { pa: P; pb: P } & Record<'length' | 'minLength' | 'maxLength' | 'hertz' | 'zeta', number>;
+
+/**
+ * Checks the options of a 2D or 3D distance joint with body A `a` (0: the world): its anchors (default
+ * the centres `centreA`, `centreB`; anchorA required when A is the world), its rest length (> 0, default
+ * the anchors' distance), its spring (hertz and dampingRatio >= 0, default 0) and its limits
+ * (lengthLimits).
+ * @throws TypeError | RangeError naming `where`, the parameter and the value.
+ */
+export function checkDistance<P extends [number, number] | [number, number, number]>(
+  where: string,
+  options: DistanceShapeOptions,
+  a: number,
+  centreA: P,
+  centreB: P,
+): DistanceShape<P> {
+  if (a === 0 && options.anchorA === undefined) throw new RangeError(`${where}: anchorA (a world point) is required when a is the world`);
+  const pa = optionalPoint(where, 'anchorA', options.anchorA, centreA);
+  const pb = optionalPoint(where, 'anchorB', options.anchorB, centreB);
+  const length = options.length ?? Math.hypot(...pb.map((v, i) => v - pa[i]!));
+  assertPositive(where, 'length', length);
+  const hertz = options.hertz ?? 0;
+  assertNonNegative(where, 'hertz', hertz);
+  const zeta = options.dampingRatio ?? 0;
+  assertNonNegative(where, 'dampingRatio', zeta);
+  const [minLength, maxLength] = lengthLimits(where, length, hertz > 0, options.minLength, options.maxLength);
+  return { pa, pb, length, minLength, maxLength, hertz, zeta };
 }
 
 /**

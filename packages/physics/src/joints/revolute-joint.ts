@@ -1,11 +1,10 @@
 import * as BS from '../solver/body-state-layout.js';
-import { assertKnownKeys } from '../validation/validate.js';
 import type { JointState } from '../world/joint-state-2d.js';
 import { JointFlag, type JointStore, JointType } from '../world/joint-store-2d.js';
 import { PIN_FLOATS, PIN_INTS, ROW_FLOATS, ROW_INTS } from '../world/joint-strides-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { centre, checkDrive, checkLimits, handle, makeJoint, optionalPoint, storeDrive } from './joint-2d.js';
-import { BASE_KEYS, checkEnds, type JointBaseOptions } from './joint-base.js';
+import { centre, checkDrive, checkEnds2D, checkLimits, handle, makeJoint, storeDrive } from './joint-2d.js';
+import { type JointBaseOptions, optionalPoint } from './joint-base.js';
 import * as R from './layout-2d.js';
 import {
   angularMass,
@@ -61,13 +60,8 @@ export interface RevoluteJointOptions extends JointBaseOptions {
  */
 export function addRevoluteJoint(world: PhysicsWorld, options: RevoluteJointOptions): number {
   const where = 'addRevoluteJoint';
-  const ends = checkEnds(where, world, options, 2);
-  assertKnownKeys(
-    where,
-    options,
-    [...BASE_KEYS, 'anchor', 'lowerAngle', 'upperAngle', 'motorSpeed', 'maxMotorTorque', 'hertz', 'dampingRatio'],
-    ['a'],
-  );
+  const keys = ['anchor', 'lowerAngle', 'upperAngle', 'motorSpeed', 'maxMotorTorque', 'hertz', 'dampingRatio'];
+  const ends = checkEnds2D(where, world, options, keys);
   const p = optionalPoint(where, 'anchor', options.anchor, centre(world, ends.b));
   const limit = checkLimits(where, options.lowerAngle, options.upperAngle, 'lowerAngle', 'upperAngle', Math.PI);
   const drive = checkDrive(where, options.motorSpeed, options.maxMotorTorque, 'maxMotorTorque', options.hertz, options.dampingRatio);

@@ -242,9 +242,10 @@ export function solvePointRow(p: JointPass2D, oA: number, oB: number, o: number,
 }
 
 /**
- * A rotation motor (revolute, wheel): the change of its accumulated impulse (N m s) driving the
- * relative spin `spin` = wB - wA toward the row's motor speed with effective mass `k`, the impulse
- * capped at the largest a substep (MMAX).
+ * A motor (a revolute or wheel joint's about its pin, a prismatic joint's along its axis): the change
+ * of its accumulated impulse (N m s or N s) driving the relative speed `spin` (wB - wA, rad/s; or along
+ * the axis, m/s) toward the row's motor speed with effective mass `k`, the impulse capped at the
+ * largest a substep (MMAX).
  */
 export function motorImpulse(rows: Float64Array, o: number, k: number, spin: number): number {
   const max = rows[o + R.MMAX]!;
@@ -432,12 +433,7 @@ export function solveAlongAxis(p: JointPass2D, ia: number, ib: number, o: number
       rows[o + R.ISPR] = rows[o + R.ISPR]! + impulse;
     } else if (row === 1) {
       if (wheel || !(flags & JointFlag.Motor)) continue;
-      const max = rows[o + R.MMAX]!;
-      const old = rows[o + R.IMOT]!;
-      let next = old + kax * (rows[o + R.MSPD]! - cdot);
-      next = next < -max ? -max : next > max ? max : next;
-      rows[o + R.IMOT] = next;
-      impulse = next - old;
+      impulse = motorImpulse(rows, o, kax, cdot);
     } else {
       if (!(flags & JointFlag.Limit)) continue;
       // Lower: C = translation - lower >= 0. Upper (signs flipped): C = upper - translation >= 0.

@@ -16,6 +16,7 @@ import {
   qb,
   ra,
   rb,
+  relativeRotation,
   relativeSpin,
   restrictToPlane,
   rot,
@@ -76,18 +77,11 @@ export const C3 = new Float64Array(3);
 /** The error rotation E = conj(q_A) q_B conj(q_rest) (A's frame) into E, w >= 0. */
 export function errorRotation(p: JointPass3D, j: number): void {
   const { s } = p;
-  const x1 = -qa[0]!,
-    y1 = -qa[1]!,
-    z1 = -qa[2]!,
-    w1 = qa[3]!,
-    x2 = qb[0]!,
-    y2 = qb[1]!,
-    z2 = qb[2]!,
-    w2 = qb[3]!;
-  const rx = w1 * x2 + x1 * w2 + y1 * z2 - z1 * y2,
-    ry = w1 * y2 - x1 * z2 + y1 * w2 + z1 * x2,
-    rz = w1 * z2 + x1 * y2 - y1 * x2 + z1 * w2,
-    rw = w1 * w2 - x1 * x2 - y1 * y2 - z1 * z2;
+  relativeRotation(qa, qb, E);
+  const rx = E[0]!,
+    ry = E[1]!,
+    rz = E[2]!,
+    rw = E[3]!;
   const cx = -s.rx[j]!,
     cy = -s.ry[j]!,
     cz = -s.rz[j]!,

@@ -1,7 +1,7 @@
 import { entityExists, removeEntity } from 'bitecs';
 import { addIslandEdge, EdgeFlag, type IslandEdges } from '../islands/edges.js';
 import { wakeIsland } from '../islands/sleep.js';
-import { registerExternalWorldState } from '../world/external-state.js';
+import { registerFeatureState } from '../world/external-state.js';
 import { removeNoCollide } from '../world/joint-no-collide.js';
 import type { PhysicsWorld } from '../world/options.js';
 
@@ -133,21 +133,11 @@ function create(capacity: number): Joint3DStore {
 export function joints3DOf(world: PhysicsWorld, create_: true): Joint3DStore;
 export function joints3DOf(world: PhysicsWorld, create_?: boolean): Joint3DStore | undefined;
 export function joints3DOf(world: PhysicsWorld, create_ = false): Joint3DStore | undefined {
-  let s = world.features.joints3d as Joint3DStore | undefined;
-  if (s === undefined && create_) {
-    s = create(world.capacity);
-    world.features.joints3d = s;
-  }
-  return s;
+  return joints3D(world, create_);
 }
 
-registerExternalWorldState({
-  name: 'joints3d',
-  get: (world, c) => joints3DOf(world, c),
-  clear: (world) => {
-    world.features.joints3d = undefined;
-  },
-});
+/** The world's 3D joint store, registered for snapshots under `joints3d`. */
+const joints3D = registerFeatureState('joints3d', (world) => create(world.capacity));
 
 /**
  * Adds the 3D joints' edges to the step's island graph `e` (islands/edges.ts): every joint ties its

@@ -1,11 +1,11 @@
 import * as BS from '../solver/body-state-layout.js';
-import { assertKnownKeys, assertNonNegative } from '../validation/validate.js';
+import { assertNonNegative } from '../validation/validate.js';
 import type { JointState } from '../world/joint-state-2d.js';
 import { JointFlag, type JointStore, JointType } from '../world/joint-store-2d.js';
 import { ROW_FLOATS, ROW_INTS } from '../world/joint-strides-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { centre, handle, makeJoint, optionalPoint } from './joint-2d.js';
-import { BASE_KEYS, checkEnds, type JointBaseOptions } from './joint-base.js';
+import { centre, checkEnds2D, handle, makeJoint } from './joint-2d.js';
+import { type JointBaseOptions, optionalPoint } from './joint-base.js';
 import * as R from './layout-2d.js';
 import { angularMass, applyImpulse, type JointPass2D, type JointTypeRows2D, pointForce, solvePointRow } from './rows-2d.js';
 import { soft } from './softness.js';
@@ -41,8 +41,7 @@ export interface WeldJointOptions extends JointBaseOptions {
  */
 export function addWeldJoint(world: PhysicsWorld, options: WeldJointOptions): number {
   const where = 'addWeldJoint';
-  const ends = checkEnds(where, world, options, 2);
-  assertKnownKeys(where, options, [...BASE_KEYS, 'anchor', 'hertz', 'dampingRatio', 'angularHertz', 'angularDampingRatio'], ['a']);
+  const ends = checkEnds2D(where, world, options, ['anchor', 'hertz', 'dampingRatio', 'angularHertz', 'angularDampingRatio']);
   const p = optionalPoint(where, 'anchor', options.anchor, centre(world, ends.b));
   const vals = [options.hertz ?? 0, options.dampingRatio ?? 0, options.angularHertz ?? 0, options.angularDampingRatio ?? 0];
   ['hertz', 'dampingRatio', 'angularHertz', 'angularDampingRatio'].forEach((name, i) => {

@@ -1,4 +1,4 @@
-import { registerExternalWorldState } from '../world/external-state.js';
+import { registerFeatureState } from '../world/external-state.js';
 import type { PhysicsWorld } from '../world/options.js';
 import type { Hull } from './hull-3d.js';
 
@@ -119,18 +119,8 @@ function createStore(capacity: number): Shape3DStore {
 export function shapes3DOf(world: PhysicsWorld, create: true): Shape3DStore;
 export function shapes3DOf(world: PhysicsWorld, create?: boolean): Shape3DStore | undefined;
 export function shapes3DOf(world: PhysicsWorld, create = false): Shape3DStore | undefined {
-  let s = world.features.shapes3d as Shape3DStore | undefined;
-  if (s === undefined && create) {
-    s = createStore(world.capacity);
-    world.features.shapes3d = s;
-  }
-  return s;
+  return shapes3D(world, create);
 }
 
-registerExternalWorldState({
-  name: 'shapes3d',
-  get: (world, create) => shapes3DOf(world, create),
-  clear: (world) => {
-    world.features.shapes3d = undefined;
-  },
-});
+/** The world's 3D shape store, registered for snapshots under `shapes3d`. */
+const shapes3D = registerFeatureState('shapes3d', (world) => createStore(world.capacity));

@@ -33,6 +33,34 @@ export function registerExternalWorldState(state: ExternalWorldState): void {
 }
 
 /**
+ * Registers per-world state kept in `world.features` under `name` (see ExternalWorldState), made by
+ * `make` on first use. @returns its getter: the state of a world, made if missing when `create` is
+ * true, else undefined when the world has none. @throws Error on a duplicate name.
+ * @category Snapshots
+ */
+export function registerFeatureState<T extends object>(
+  name: string,
+  make: (world: PhysicsWorld) => T,
+): (world: PhysicsWorld, create: boolean) => T | undefined {
+  const get = (world: PhysicsWorld, create: boolean): T | undefined => {
+    let s = world.features[name] as T | undefined;
+    if (s === undefined && create) {
+      s = make(world);
+      world.features[name] = s;
+    }
+    return s;
+  };
+  registerExternalWorldState({
+    name,
+    get,
+    clear: (world) => {
+      world.features[name] = undefined;
+    },
+  });
+  return get;
+}
+
+/**
  * Every registered external state, in registration order.
  * @category Snapshots
  */
