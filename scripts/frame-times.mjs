@@ -15,6 +15,8 @@
 //   requestAnimationFrame before the page's scripts load), with the physics steps each frame took;
 // - the wall time between frames, and the browser's long animation frames after the first (the Long
 //   Animation Frames API: frames whose main-thread span, tasks to the end of rendering, passed 50 ms).
+// A run in which the page drew fewer than 10 frames (a machine too busy to draw for seconds) is
+// flagged and left out of the medians printed after several runs.
 // With --profile a CPU profile (the DevTools protocol's Profiler, 0.2 ms samples) runs through each
 // recording, and the first frame and the three costliest after it are broken down by where their
 // samples fall: the physics' source folders, the game kit, the renderer, pixi.js, bitecs, the game's
@@ -97,6 +99,8 @@ if (!registry.some((e) => e.folder === folder)) fail(`${folder} is not a registe
 
 /** Frames over this took too long (issue 36), ms. */
 const LONG_MS = 50;
+/** Fewest frames a run must record to be judged (see `tooFew`). */
+const MIN_FRAMES = 10;
 /** The CPU profile's sampling interval, µs. */
 const SAMPLE_US = 200;
 
@@ -506,16 +510,24 @@ try {
       longFramesAfterFirst: log.noLoaf ? null : long.length,
       worstLongFrameMs: long.length ? Math.round(Math.max(...long.map((l) => l.duration))) : 0,
     };
+    // A run whose page drew fewer frames than this (a machine too busy to draw: no animation frames
+    // for seconds) says nothing about the frames' cost: flagged, and left out of the medians.
+    result.tooFew = rows.length < MIN_FRAMES;
     summary.push(result);
     if (values.json) console.log(JSON.stringify(result));
     else {
       const f = result.first;
-      console.log(
-        `${folder}${query} ${values.size} ${action} run ${run + 1}${level ? ` (${level})` : ''}: ${rows.length} frames; main-thread CPU: the first frame ${f?.cpuMs} ms (GC ${f?.gcMs}, ${f?.steps} steps), ` +
-          `after it worst ${result.worstCpuAfterFirstMs} ms, median ${result.medianCpuMs}, ${result.cpuOver50AfterFirst} over 50 ms; ` +
-          `frame callbacks: first ${f?.callbackMs} ms, after it worst ${result.worstCallbackAfterFirstMs}, median ${result.medianCallbackMs}, ${result.callbackOver50AfterFirst} over 50 ms (slowest step ${result.slowestStepMs}); ` +
-          `wall: gaps median ${result.medianGapMs} ms, worst ${result.worstGapMs}; ${result.longFramesAfterFirst ?? '?'} long animation frames after the first (worst ${result.worstLongFrameMs} ms)`,
-      );
+      if (result.tooFew)
+        console.log(
+          `${folder}${query} ${values.size} ${action} run ${run + 1}: only ${rows.length} frames in ${seconds} s (the machine drew too few to judge; left out of the medians)`,
+        );
+      else
+        console.log(
+          `${folder}${query} ${values.size} ${action} run ${run + 1}${level ? ` (${level})` : ''}: ${rows.length} frames; main-thread CPU: the first frame ${f?.cpuMs} ms (GC ${f?.gcMs}, ${f?.steps} steps), ` +
+            `after it worst ${result.worstCpuAfterFirstMs} ms, median ${result.medianCpuMs}, ${result.cpuOver50AfterFirst} over 50 ms; ` +
+            `frame callbacks: first ${f?.callbackMs} ms, after it worst ${result.worstCallbackAfterFirstMs}, median ${result.medianCallbackMs}, ${result.callbackOver50AfterFirst} over 50 ms (slowest step ${result.slowestStepMs}); ` +
+            `wall: gaps median ${result.medianGapMs} ms, worst ${result.worstGapMs}; ${result.longFramesAfterFirst ?? '?'} long animation frames after the first (worst ${result.worstLongFrameMs} ms)`,
+        );
       const show = (name, d) => {
         console.log(`  ${name} (frame ${d.frame}): CPU ${d.cpuMs} ms, GC ${d.gcMs}, callbacks ${d.callbackMs} ms, ${d.steps} steps`);
         if (d.areas) console.log(`    profile samples ${d.sampledMs} ms: ${d.areas.map((x) => `${x.name} ${x.ms}`).join(', ')}`);
@@ -531,10 +543,11 @@ try {
       context = null;
     }
   }
-  if (!values.json && runs > 1) {
-    const med = (get) => round1(median(summary.map(get)));
+  const judged = summary.filter((r) => !r.tooFew);
+  if (!values.json && judged.length > 1) {
+    const med = (get) => round1(median(judged.map(get)));
     console.log(
-      `median of ${runs} runs: main-thread CPU of the first frame ${med((r) => r.first?.cpuMs ?? 0)} ms; after it worst ${med((r) => r.worstCpuAfterFirstMs)} ms, ` +
+      `median of ${judged.length} runs${judged.length < runs ? ` (${runs - judged.length} with too few frames left out)` : ''}: main-thread CPU of the first frame ${med((r) => r.first?.cpuMs ?? 0)} ms; after it worst ${med((r) => r.worstCpuAfterFirstMs)} ms, ` +
         `${med((r) => r.cpuOver50AfterFirst)} over 50 ms; frame callbacks after the first worst ${med((r) => r.worstCallbackAfterFirstMs)} ms, ${med((r) => r.callbackOver50AfterFirst)} over 50 ms; ` +
         `long animation frames after the first ${med((r) => r.longFramesAfterFirst ?? 0)}`,
     );
