@@ -137,6 +137,15 @@ function recordFrames(recordFromStart) {
         }
       }
     });
+  // The time the action's key reached the page (before the page's own handlers: capture on window).
+  window.addEventListener(
+    'keydown',
+    () => {
+      const log = window.__frameLog;
+      if (log.recording && log.keyAt === undefined) log.keyAt = performance.now();
+    },
+    true,
+  );
   try {
     new PerformanceObserver((list) => {
       if (!window.__frameLog.recording) return;
@@ -406,15 +415,22 @@ try {
         window.__frameLog.frames.length = 0;
         window.__frameLog.loafs.length = 0;
         window.__frameLog.recording = true;
+        window.__frameLog.keyAt = undefined;
         return performance.now();
       });
-      if (action === 'reset')
-        actionMs = await page.evaluate(() => {
+      if (action === 'reset') {
+        const span = await page.evaluate(() => {
           const t0 = performance.now();
           window.game.reset();
-          return performance.now() - t0;
+          return [t0, performance.now()];
         });
-      else if (action.startsWith('key:')) await page.keyboard.press(action.slice(4));
+        actionAt = span[0];
+        actionMs = span[1] - span[0];
+      } else if (action.startsWith('key:')) {
+        await page.keyboard.press(action.slice(4));
+        // When the page's key handler ran (recorded by recordFrames' keydown listener).
+        actionAt = await page.evaluate(() => window.__frameLog.keyAt ?? Number.NEGATIVE_INFINITY);
+      }
     }
     await page.waitForTimeout(seconds * 1000);
     const log = await page.evaluate(() => {
@@ -436,7 +452,8 @@ try {
       }
     });
     const { loafs } = log;
-    // A fresh page's frames before the game's shell existed (a library's own frame callbacks) are not its frames.
+    // A fresh page's frames before the game's shell existed (a library's own frame callbacks) are not
+    // its frames; after a key or a reset, the frames that began before the action are the old world's.
     const frames = load
       ? log.frames.slice(
           Math.max(
@@ -444,7 +461,7 @@ try {
             log.frames.findIndex((f) => f.steps >= 0),
           ),
         )
-      : log.frames;
+      : log.frames.filter((f) => f.start >= actionAt);
     // steps taken in a frame: the world's step count at the next frame's start minus this one's (a reset
     // in between makes it negative: the new world's count is then the steps).
     const rows = frames.map((f, i) => {
