@@ -1,6 +1,6 @@
 /**
  * the game kit's createGameLoop in Node with a fake frame scheduler: steps per frame from real time,
- * alpha, pause (alpha 1, no steps), single steps, fps, error handling, bad options.
+ * alpha, pause (alpha 1, no steps), single steps, the clock after a reset, fps, error handling, bad options.
  */
 import { describe, expect, it } from 'vitest';
 import { createGameLoop } from '../../packages/game-kit/src/loop';
@@ -89,6 +89,19 @@ describe('createGameLoop', () => {
     frames.tick(16);
     frames.tick(5000); // a stalled tab: at most maxStepsPerFrame (4) steps
     expect(steps()).toBe(4);
+  });
+
+  it('after resetClock the next frame takes no steps for the time before it, the frames after it step again', () => {
+    const { frames, loop, steps } = setup(0.01);
+    loop.start();
+    frames.tick(16);
+    frames.tick(20); // 2 steps
+    expect(steps()).toBe(2);
+    loop.resetClock(); // a new world, built in the 60 ms before the next frame
+    frames.tick(60);
+    expect(steps()).toBe(2);
+    frames.tick(35); // 3 steps of the new world, 5 ms left
+    expect(steps()).toBe(5);
   });
 
   it('measures frames per second', () => {

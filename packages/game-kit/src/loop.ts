@@ -37,7 +37,12 @@ export interface GameLoop {
   paused: boolean;
   /** Runs exactly one step now, paused or not (the single-step key). Errors go to `onError` and stop the loop. */
   stepOnce(): void;
-  /** Empties the accumulator (after a reset, so the new world does not inherit a backlog). */
+  /**
+   * Empties the accumulator and forgets the last frame's time (after a reset): the new world neither
+   * inherits a backlog nor simulates the time before it existed (the old world's last frame to the
+   * first frame after the reset, which holds the new level's build); its first frame draws it as
+   * built, with no steps, as the loop's first frame does, and the frames after it step as usual.
+   */
   resetClock(): void;
   /** Changes the fixed step, s (> 0), e.g. for a rebuilt world. @throws RangeError if not finite and > 0. */
   setTimeStep(dt: number): void;
@@ -159,6 +164,7 @@ export function createGameLoop(options: GameLoopOptions): GameLoop {
     },
     resetClock() {
       fixed.reset();
+      last = -1;
     },
     setTimeStep(dt: number) {
       fixed = makeFixed(dt);
