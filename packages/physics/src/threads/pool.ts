@@ -456,8 +456,11 @@ export class ThreadPool {
     return k;
   }
 
-  /** The kernel `start` left running on a worker (with its system, arrays and generation), or null. */
-  private pending: { system: string; kernel: Kernel; arrays: KernelArray[]; gen: number } | null = null;
+  /** The system of the kernel `start` left running on a worker, or null; its kernel, arrays (a copy: callers reuse theirs) and generation. */
+  private pending: string | null = null;
+  private pendingKernel: Kernel | null = null;
+  private readonly pendingArrays: KernelArray[] = [];
+  private pendingGen = 0;
 
   /**
    * Starts `kernel` (a function of the pool's kernel table) over all of [0, n) on the first worker alone and returns at
@@ -477,8 +480,12 @@ export class ThreadPool {
     ctl[CONTROL.BOUNDS] = 0;
     ctl[CONTROL.BOUNDS + 1] = 0;
     for (let i = 2; i <= this.threads; i++) ctl[CONTROL.BOUNDS + i] = n;
-    const gen = this.dispatch(COMMAND.RUN);
-    this.pending = { system, kernel, arrays, gen };
+    const kept = this.pendingArrays;
+    kept.length = arrays.length;
+    for (let i = 0; i < arrays.length; i++) kept[i] = arrays[i]!;
+    this.pending = system;
+    this.pendingKernel = kernel;
+    this.pendingGen = this.dispatch(COMMAND.RUN);
     this.runs++;
   }
 
@@ -488,11 +495,11 @@ export class ThreadPool {
    * @throws Error naming the started kernel's system if its kernel threw.
    */
   join(): number {
-    const p = this.pending;
-    if (p === null) return 0;
+    const system = this.pending;
+    if (system === null) return 0;
     this.pending = null;
-    this.settle(p.system, p.gen, p.kernel, p.arrays, null);
-    if (this.ctl[CONTROL.ERROR] !== 0) throw new Error(`${p.system}: a worker thread failed: ${this.workerError()}`);
+    this.settle(system, this.pendingGen, this.pendingKernel, this.pendingArrays, null);
+    if (this.ctl[CONTROL.ERROR] !== 0) throw new Error(`${system}: a worker thread failed: ${this.workerError()}`);
     return this.results[1]!;
   }
 
