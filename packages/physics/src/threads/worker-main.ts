@@ -3,20 +3,26 @@
  * together with the kernels (worker-source.ts).
  *
  * Protocol (WORKER_MAIN_SOURCE below), over the control Int32Array `ctl` on a SharedArrayBuffer (slots in `CONTROL`):
+ * - the pool opens command g: it writes the command, then `CLAIM + i` = g for every worker i (range i
+ *   open), `PENDING` = the workers, and raises `GEN` to g;
  * - the worker waits for `GEN` to change: it watches it for `SPIN` microseconds, then blocks in
- *   Atomics.wait; then it writes the generation it saw into `ACK + index` (the pool takes a worker
- *   that has not done so soon after a command for dead) and reads `CMD`;
- * - RUN: it runs kernel `KERNEL` with the arrays whose ids are in `ARRAYS..`, over its range of the
- *   loop, from `BOUNDS + index` to `BOUNDS + index + 1` (thread `index`, passed to the kernel as
- *   `part`; the main thread is thread 0), stores its kernel's return value in
- *   `results[index]` and when it finished in `finished[index]` (ms since the epoch,
- *   performance.timeOrigin + now(): one clock across threads), and decrements `PENDING` (notifying at 0);
- * - SYNC: new shared arrays were posted as messages; the worker returns to its event loop to receive
- *   them, and reports done once it holds `EXPECT` arrays;
+ *   Atomics.wait. It then claims its range of the generation g it saw: Atomics.compareExchange of
+ *   `CLAIM + index` from g to ~g. Only a claim that succeeds lets it read the command and write
+ *   anything; a claim that fails means the calling thread took the range over (the worker was late)
+ *   or a later command is open, and the worker writes nothing but a count in `STALE`, then looks at
+ *   `GEN` again. The calling thread claims a range the same way, so each range of each command runs once;
+ * - RUN (claimed): it runs kernel `KERNEL` with the arrays whose ids are in `ARRAYS..`, over its range
+ *   of the loop, from `BOUNDS + index` to `BOUNDS + index + 1` (thread `index`, passed to the kernel
+ *   as `part`; the main thread is thread 0), stores its kernel's return value in `results[index]`
+ *   and when it finished in `finished[index]` (ms since the epoch, performance.timeOrigin + now():
+ *   one clock across threads), writes g into `DONE + index` and decrements `PENDING` (notifying at 0);
+ * - a worker that holds fewer arrays than `EXPECT` (new shared arrays were posted as messages) does not
+ *   claim: it returns to its event loop to receive them, then tries the claim of g;
  * - QUIT: it leaves the loop (the pool then terminates it).
  * A kernel that throws sets `ERROR` and writes its message (char codes) into `errorText`. A Node
  * worker whose thread ends (process.exit, an uncaught error) writes its index into `DEAD` on its way
- * out and wakes the pool.
+ * out and wakes the pool. `HOLD + index` is a test hook (pool.ts holdWorkerForTests): while it is
+ * not 0 the worker blocks before it claims, as a worker the system does not schedule would.
  * No message is sent per step or per entity: the arrays travel once, when first used.
  */
 
@@ -34,6 +40,8 @@ export const CONTROL = Object.freeze({
   READY: 6,
   /** Index of a worker whose thread ended (its exit hook wrote it), or 0. */
   DEAD: 7,
+  /** Claims that failed: wake-ups of workers whose range the calling thread had taken over, or of a command already finished. */
+  STALE: 8,
   IDS: 9,
   NARRAYS: 10,
   ARRAYS: 11,
@@ -46,17 +54,21 @@ export const CONTROL = Object.freeze({
   BOUNDS: 187,
   /** Microseconds an idle worker watches `GEN` before it blocks in Atomics.wait (ThreadPool.idleSpin); after 65 bounds. */
   SPIN: 252,
-  /** First slot of the workers' acknowledgements: worker i writes the generation it took into ACK + i. */
-  ACK: 253,
-  /** Length of the control array (room for the acknowledgements of 64 threads). */
-  LENGTH: 253 + 64,
+  /** First slot of the ranges' claims: range i of command g is open while CLAIM + i holds g, taken once it holds ~g. */
+  CLAIM: 253,
+  /** First slot of the ranges' completions: worker i writes g into DONE + i when it finished its range of command g. */
+  DONE: 253 + 64,
+  /** First slot of the test hook: worker i blocks before it claims while HOLD + i is not 0 (pool.ts holdWorkerForTests). */
+  HOLD: 253 + 128,
+  /** Length of the control array (room for the claims, completions and holds of 64 threads). */
+  LENGTH: 253 + 192,
 });
 
 /**
  * Commands in `CONTROL.CMD`.
  * @category Threads
  */
-export const COMMAND = Object.freeze({ RUN: 0, SYNC: 1, QUIT: 2 });
+export const COMMAND = Object.freeze({ RUN: 0, QUIT: 2 });
 
 /**
  * Port of a worker: the browser's worker global or Node's parentPort.
@@ -94,13 +106,10 @@ export type PoolMessage =
  */
 export const WORKER_MAIN_SOURCE = `
 function workerMain(kernels, helpers, nodePort) {
-  var GEN = ${CONTROL.GEN}, CMD = ${CONTROL.CMD}, KERNEL = ${CONTROL.KERNEL}, PENDING = ${CONTROL.PENDING}, ERROR = ${CONTROL.ERROR}, EXPECT = ${CONTROL.EXPECT}, READY = ${CONTROL.READY}, DEAD = ${CONTROL.DEAD}, IDS = ${CONTROL.IDS}, NARRAYS = ${CONTROL.NARRAYS}, ARRAYS = ${CONTROL.ARRAYS}, BOUNDS = ${CONTROL.BOUNDS}, SPIN = ${CONTROL.SPIN}, ACK = ${CONTROL.ACK};
-  var RUN = 0, SYNC = 1, QUIT = 2;
+  var GEN = ${CONTROL.GEN}, CMD = ${CONTROL.CMD}, KERNEL = ${CONTROL.KERNEL}, PENDING = ${CONTROL.PENDING}, ERROR = ${CONTROL.ERROR}, EXPECT = ${CONTROL.EXPECT}, READY = ${CONTROL.READY}, DEAD = ${CONTROL.DEAD}, STALE = ${CONTROL.STALE}, IDS = ${CONTROL.IDS}, NARRAYS = ${CONTROL.NARRAYS}, ARRAYS = ${CONTROL.ARRAYS}, BOUNDS = ${CONTROL.BOUNDS}, SPIN = ${CONTROL.SPIN}, CLAIM = ${CONTROL.CLAIM}, DONE = ${CONTROL.DONE}, HOLD = ${CONTROL.HOLD};
+  var RUN = ${COMMAND.RUN}, QUIT = ${COMMAND.QUIT};
   var arrays = [], have = 0, ctl = null, params = null, results = null, finished = null, errorText = null, index = 0, seen = 0, waiting = false, args = [];
   var clock = globalThis.performance;
-  function finish() {
-    if (Atomics.sub(ctl, PENDING, 1) === 1) Atomics.notify(ctl, PENDING);
-  }
   function fail(e) {
     var text = String(e instanceof Error ? e.message : e);
     var n = Math.min(text.length, errorText.length - 1);
@@ -120,41 +129,55 @@ function workerMain(kernels, helpers, nodePort) {
     }
     Atomics.wait(ctl, GEN, seen);
   }
-  function loop() {
+  // Serves command g: false when the worker must leave its loop (QUIT, or arrays to receive first).
+  function serve(g) {
+    if (ctl[CMD] === QUIT) return false;
+    // The test hook: block here, before the claim, while the pool holds this worker.
+    for (var h; (h = Atomics.load(ctl, HOLD + index)) !== 0; ) Atomics.wait(ctl, HOLD + index, h);
+    if (have < ctl[EXPECT]) {
+      waiting = true;
+      return false;
+    }
+    // The claim: nothing of command g is read or written unless this range of g is still open.
+    if (Atomics.compareExchange(ctl, CLAIM + index, g, ~g) !== g) {
+      Atomics.add(ctl, STALE, 1);
+      return true;
+    }
+    if (ctl[CMD] !== RUN) return true;
+    try {
+      var na = ctl[NARRAYS];
+      args.length = na;
+      for (var i = 0; i < na; i++) args[i] = arrays[ctl[ARRAYS + i]];
+      var idsId = ctl[IDS];
+      var ids = idsId < 0 ? null : arrays[idsId];
+      var lo = ctl[BOUNDS + index], hi = ctl[BOUNDS + index + 1];
+      results[index] = kernels[ctl[KERNEL]](args, params, ids, lo, hi, index, helpers);
+      finished[index] = clock !== undefined ? clock.timeOrigin + clock.now() : Date.now();
+    } catch (e) {
+      fail(e);
+    }
+    Atomics.store(ctl, DONE + index, g);
+    if (Atomics.sub(ctl, PENDING, 1) === 1) Atomics.notify(ctl, PENDING);
+    return true;
+  }
+  // The loop; 'again' serves the generation already seen first (after the arrays it waited for came).
+  function loop(again) {
     for (;;) {
-      idle();
-      var g = Atomics.load(ctl, GEN);
-      if (g === seen) continue;
-      seen = g;
-      Atomics.store(ctl, ACK + index, g);
-      var cmd = ctl[CMD];
-      if (cmd === QUIT) return;
-      if (cmd === SYNC) {
-        if (have >= ctl[EXPECT]) { finish(); continue; }
-        waiting = true;
-        return;
+      if (!again) {
+        idle();
+        var g = Atomics.load(ctl, GEN);
+        if (g === seen) continue;
+        seen = g;
       }
-      if (cmd !== RUN) continue;
-      try {
-        var na = ctl[NARRAYS];
-        args.length = na;
-        for (var i = 0; i < na; i++) args[i] = arrays[ctl[ARRAYS + i]];
-        var idsId = ctl[IDS];
-        var ids = idsId < 0 ? null : arrays[idsId];
-        var lo = ctl[BOUNDS + index], hi = ctl[BOUNDS + index + 1];
-        results[index] = kernels[ctl[KERNEL]](args, params, ids, lo, hi, index, helpers);
-        finished[index] = clock !== undefined ? clock.timeOrigin + clock.now() : Date.now();
-      } catch (e) {
-        fail(e);
-      }
-      finish();
+      again = false;
+      if (!serve(seen)) return;
     }
   }
   function onMessage(m) {
     if (m.type === 'init') {
       ctl = m.ctl; params = m.params; results = m.results; finished = m.finished; errorText = m.errorText; index = m.index;
+      // A command already open when this worker starts (it replaces a dead one) is the caller's.
       seen = Atomics.load(ctl, GEN);
-      Atomics.store(ctl, ACK + index, seen);
       // A thread that ends says so (the pool would otherwise wait for its range forever).
       if (nodePort !== null && typeof process === 'object' && typeof process.on === 'function') {
         process.on('exit', function () {
@@ -167,7 +190,7 @@ function workerMain(kernels, helpers, nodePort) {
       // One message at start-up, so the pool's ready promise resolves without a timer.
       if (nodePort !== null) nodePort.postMessage({ type: 'ready' });
       else globalThis.postMessage({ type: 'ready' });
-      loop();
+      loop(false);
       return;
     }
     if (m.type === 'array') {
@@ -175,8 +198,7 @@ function workerMain(kernels, helpers, nodePort) {
       have++;
       if (waiting && ctl !== null && have >= ctl[EXPECT]) {
         waiting = false;
-        finish();
-        loop();
+        loop(true);
       }
     }
   }
