@@ -1175,28 +1175,42 @@ function arcOf(
   });
 }
 
-/** How far from a throw's start the other balls end its aiming arc, m: the heap round it (balls further off move before the ball gets there). */
+/** How far from a throw's start the other balls end its aiming arc, m: the heap round it (balls further off that move get out of the way before the ball gets there). */
 const STOP_REACH = 3;
+/**
+ * How far from a throw's start the balls at rest (under REST_SPEED) end its aiming arc too, m: a
+ * throw skimming the heap met a resting ball 4 m on, under the arc it showed.
+ */
+const REST_REACH = 8;
+/** Balls slower than this, m/s, are at rest for REST_REACH. */
+const REST_SPEED = 0.5;
 
-/** The balls within STOP_REACH of (x, y), m, but `except`: [x, y, radius] each, for the aiming arc's stops. */
+/** The balls within STOP_REACH of (x, y), m, or at rest within REST_REACH of it, but `except`: [x, y, radius] each, for the aiming arc's stops. */
 function nearBalls(x: number, y: number, except: number): [number, number, number][] {
-  const c = shell.world.components;
+  const c = shell.world.components,
+    V = c.Velocity;
   const out: [number, number, number][] = [];
   for (const e of handles.balls) {
     if (e === except) continue;
     const s = slotOf(e);
     const bx = c.Position.x[s]!,
       by = c.Position.y[s]!;
-    if (Math.abs(bx - x) < STOP_REACH && Math.abs(by - y) < STOP_REACH) out.push([bx, by, c.Ball.radius[s]!]);
+    const d = Math.max(Math.abs(bx - x), Math.abs(by - y));
+    if (d < STOP_REACH || (d < REST_REACH && V.x[s]! ** 2 + V.y[s]! ** 2 < REST_SPEED ** 2)) out.push([bx, by, c.Ball.radius[s]!]);
   }
   return out;
 }
-/** The balls that end throw `t`'s aiming arc: those near its start but, for a ball of the scene (`thrown`), the ones it passes as it leaves. */
-function arcStops(t: { x: number; y: number; vx: number; vy: number; radius: number }, thrown: number): [number, number, number][] {
+/**
+ * The balls that end throw `t`'s aiming arc, [x, y, radius, from step] each: those near its start; for
+ * a ball of the scene (`thrown`), the ones it passes as it leaves the heap stop it only after the
+ * leave (from its last step on): a shallow throw that still grazes one of them when the leave ends
+ * (LEAVE_MAX_SECONDS) meets it there, and its arc ends there with the red cross.
+ */
+function arcStops(t: { x: number; y: number; vx: number; vy: number; radius: number }, thrown: number): [number, number, number, number][] {
   const near = nearBalls(t.x, t.y, thrown);
-  if (thrown === 0) return near;
-  const { met } = leaveOf(near, t.x, t.y, t.vx, t.vy, t.radius, shell.world.dt);
-  return near.filter((b) => !met.has(b));
+  if (thrown === 0) return near.map(([x, y, r]) => [x, y, r, 0]);
+  const { steps, met } = leaveOf(near, t.x, t.y, t.vx, t.vy, t.radius, shell.world.dt);
+  return near.map(([x, y, r], i) => [x, y, r, met.has(near[i]!) ? steps + 1 : 0]);
 }
 /** Bounces the whole predicted flight (aimFlight, aimFrom) follows (off the walls, the hoop and its net) before it ends; the shown arc follows none. */
 const AIM_BOUNCES = 2;
