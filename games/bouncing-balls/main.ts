@@ -19,8 +19,9 @@
  * flight while pulling (hoop.ts throwPath: AIM_SECONDS of it, twice that in the warm-up before the
  * first basket, fading out, up to its first touch; the player judges the rest). A pull taken back
  * to within CANCEL_PULL of its press point ("release here to cancel") and let go throws nothing; the
- * full-speed pull is shortened for a pull with little room to the window's edge (pullFullPull), and the round's end
- * ends an aim under way. The net stops a
+ * full-speed pull is shortened for a pull with little room to the window's edge (pullFullPull). A pull
+ * under way as the clock runs out is the round's last throw: the round waits for it and its ball
+ * (lastCall), under a big "Last throw!"; the last 10 s the clock is red, the last 5 a big countdown ticks. The net stops a
  * ball from below or the side (hoop.ts netContact). The player's balls are basketballs, all the same
  * size (hoop.ts PLAYER_RADIUS). Holding still on a ball or crate for HOLD_MS, 1 s (a ring fills from
  * HOLD_RING_MS on, labelled), picks it up with a mouse joint to carry it around; any pull before then
@@ -237,6 +238,7 @@ function createWorld(): PhysicsWorld {
   goldBall = 0;
   goldRng = new Rng(params.seed + 7);
   missAt = -1e9;
+  lastCall = { aiming: false, ball: 0 };
   ruleHint = '';
   lastThrown = 0;
   lastBasket = { x: 0, y: 0, time: -10, spot: 0, score: 0, points: 0, kind: 'basketball' };
@@ -532,14 +534,41 @@ function playHoop(world: PhysicsWorld): void {
       }
     }
   }
-  if (roundTick(round, world.dt)) {
-    // Time is up: an aim under way ends with nothing thrown (its arc and ball went on being drawn under the end card).
+  if (lastThrowPending(world.dt)) round.timeLeft = Math.max(0, round.timeLeft - world.dt);
+  else if (roundTick(round, world.dt)) {
+    // Time is up: a press under way that was not a pull ends with nothing done.
     endAim();
     keepBest();
     sound.chime(440, 0.6);
     setTimeout(() => sound.chime(554.37, 0.5), 160);
     setTimeout(() => sound.chime(659.25, 0.9), 320);
   }
+}
+
+/**
+ * The round's last throw: when the clock reaches 0 with a pull under way, the round waits for it to be
+ * let go (`aiming`), then for the ball it throws (`ball`, its id) to score or miss, and only then is
+ * time up: a throw being aimed as time ran out was lost. No new press starts meanwhile.
+ */
+let lastCall = { aiming: false, ball: 0 };
+
+/**
+ * Whether the round's end waits for its last throw (lastCall) after this step of `dt` s: the pull
+ * under way as the clock reaches 0, then its ball while it is in flight and may still score.
+ */
+function lastThrowPending(dt: number): boolean {
+  if (round.phase !== 'playing') return false;
+  if (lastCall.aiming) return true;
+  if (lastCall.ball !== 0) {
+    if (flights.get(lastCall.ball)?.scores) return true;
+    lastCall.ball = 0;
+    return false;
+  }
+  if (round.timeLeft <= dt && pointerId !== -1 && dragged) {
+    lastCall.aiming = true;
+    return true;
+  }
+  return false;
 }
 
 /**
@@ -957,6 +986,8 @@ canvas.addEventListener('pointerdown', (event) => {
   const page = pageLayout();
   if (page.compact() && page.root.dataset.open) page.open(null);
   if (grabbing || event.button !== 0 || pointerId !== -1 || drag.joint !== 0) return;
+  // The clock is out and the round waits for its last throw: no new one.
+  if (lastCall.aiming || lastCall.ball !== 0) return;
   pointerId = event.pointerId;
   canvas.setPointerCapture(event.pointerId);
   [startX, startY] = local(event);
@@ -1032,6 +1063,9 @@ function release(event: PointerEvent, cancelled: boolean): void {
   if (event.pointerId !== pointerId) return;
   pointerId = -1;
   clearTimeout(holdTimer);
+  // The round's last throw (the clock ran out during its pull): the round waits for its ball, if any.
+  const last = lastCall.aiming;
+  lastCall.aiming = false;
   if (cancelled) return;
   [lastX, lastY] = local(event);
   if (Math.hypot(lastX - startX, lastY - startY) > slop) dragged = true;
@@ -1041,8 +1075,13 @@ function release(event: PointerEvent, cancelled: boolean): void {
   pressBall = 0;
   if (cancel) return;
   if (!dragged) shoot(cam().toWorldX(startX), cam().toWorldY(startY), 0, 0, false);
-  else if (ball !== 0 && handles.balls.includes(ball)) throwBall(ball, t.vx, t.vy);
-  else shoot(t.x, t.y, t.vx, t.vy);
+  else if (ball !== 0 && handles.balls.includes(ball)) {
+    throwBall(ball, t.vx, t.vy);
+    if (last) lastCall.ball = ball;
+  } else {
+    const e = shoot(t.x, t.y, t.vx, t.vy);
+    if (last) lastCall.ball = e;
+  }
 }
 /** The renderer's camera. */
 function cam() {
@@ -1755,7 +1794,8 @@ const bumpStyle = document.createElement('style');
 bumpStyle.textContent = `@keyframes bb-bump { 0% { transform: scale(1); color: inherit; } 20% { transform: scale(1.3); color: #ffd166; }
   70% { color: #ffd166; } 100% { transform: scale(1); color: inherit; } }
 [data-hud="hoop"] [data-hud="numbers"].bb-bump { animation: bb-bump 0.9s ease-out; }
-[data-hud="hoop"] > div { white-space: nowrap; overflow: hidden; text-overflow: ellipsis; }`;
+[data-hud="hoop"] > div { white-space: nowrap; overflow: hidden; text-overflow: ellipsis; }
+[data-hud="hoop"] [data-hud="numbers"].bb-hurry { color: #ff6b6b; }`;
 document.head.append(bumpStyle);
 /** Bumps the status row's numbers line (a basket scored). */
 function bumpScore(): void {
@@ -1773,13 +1813,17 @@ function updateStatus(): void {
   const cheering = shell.world.time - lastBasket.time < CELEBRATE_SECONDS && lastBasket.score === round.score;
   const goal = over
     ? `Time! ${plural(round.points, 'point', 'points')}${round.points > 0 && round.points >= best ? ' — best yet!' : ''}`
-    : cheering
-      ? `${praiseFor(lastBasket)} +${lastBasket.points} · the hoop moved`
-      : round.phase === 'ready'
-        ? `Score once to start the ${round.seconds} s clock`
-        : round.streak > 0
-          ? `${round.streak} in a row: the next basket scores ×${streakMultiplier(round.streak)}`
-          : 'Throw balls through the hoop!';
+    : lastCall.aiming
+      ? 'Time! Let go: this last throw still counts'
+      : lastCall.ball !== 0
+        ? 'Last throw…'
+        : cheering
+          ? `${praiseFor(lastBasket)} +${lastBasket.points} · the hoop moved`
+          : round.phase === 'ready'
+            ? `Score once to start the ${round.seconds} s clock`
+            : round.streak > 0
+              ? `${round.streak} in a row: the next basket scores ×${streakMultiplier(round.streak)}`
+              : 'Throw balls through the hoop!';
   const numbers = `Points ${round.points} · ×${streakMultiplier(round.streak)} · Time ${secs} s · Best ${best}`;
   // The last throw's rule break (ruleHint) stays until the next throw; otherwise, while playing, the
   // hint takes turns (5 s each) between the heap's balls and the streak.
@@ -1804,7 +1848,70 @@ function updateStatus(): void {
               : 'Press, drag back and let go to throw through the hoop from below the orange line'
             : teach;
   if (status.set({ goal, numbers, hint }, over)) setAction(over);
+  // The last HURRY_SECONDS: the numbers line turns red.
+  status.numbers.classList.toggle('bb-hurry', round.phase === 'playing' && round.timeLeft <= HURRY_SECONDS);
+  drawCountdown();
   drawEndCard(over);
+}
+
+// ---- The last seconds: a red clock, a big countdown and a tick -------------------------------------
+
+/** The numbers line (points, time) turns red for the last this many seconds of the clock. */
+const HURRY_SECONDS = 10;
+/** A big countdown over the box, and a tick each second, for the last this many seconds. */
+const COUNTDOWN_SECONDS = 5;
+const countdownText = new Text({
+  text: '',
+  style: { fontFamily: 'system-ui, sans-serif', fontSize: 96, fontWeight: '800', fill: 0xff6b6b, stroke: { color: 0x0b0f16, width: 8 } },
+});
+countdownText.anchor.set(0.5);
+countdownText.visible = false;
+app.stage.addChild(countdownText);
+/** Sets the countdown's text and font size, px, when they change (a change redraws the text). */
+function setCountdown(text: string, size: number): void {
+  if (countdownText.text !== text) countdownText.text = text;
+  if (countdownText.style.fontSize !== size) countdownText.style.fontSize = size;
+}
+/** The countdown's last second shown (for the tick once a second); 0 when none. */
+let countdownShown = 0;
+
+/**
+ * The last COUNTDOWN_SECONDS of a round: each second's number big in the box's upper part, on the side
+ * away from the hoop (the middle on a phone),
+ * shrinking and fading through its second, with a tick; at 0 with the last throw under way (lastCall),
+ * "Last throw!" instead.
+ */
+function drawCountdown(): void {
+  const playing = round.phase === 'playing';
+  const secs = Math.ceil(round.timeLeft);
+  const last = lastCall.aiming || lastCall.ball !== 0;
+  countdownText.visible = playing && (last || (secs >= 1 && secs <= COUNTDOWN_SECONDS));
+  if (!countdownText.visible) {
+    countdownShown = 0;
+    return;
+  }
+  const cam = renderer.camera;
+  const { box } = layoutOf(TALL);
+  // Over the half of the box away from the hoop, so it never covers the hoop being aimed at.
+  const o = hoopOpening(hoopSpots(TALL)[round.spot]!);
+  const mid = 0.5 * (box.min[0] + box.max[0]),
+    across = 0.5 * (o.minX + o.maxX) > mid ? 0.3 : 0.7;
+  const x = box.min[0] + across * (box.max[0] - box.min[0]);
+  countdownText.position.set(cam.toScreenX(TALL ? mid : x), cam.toScreenY(box.max[1] - 0.3 * (box.max[1] - box.min[1])));
+  if (last) {
+    setCountdown('Last throw!', TALL ? 44 : 56);
+    countdownText.alpha = 0.8;
+    countdownText.scale.set(1);
+    return;
+  }
+  setCountdown(String(secs), TALL ? 72 : 96);
+  const f = secs - round.timeLeft;
+  countdownText.alpha = 0.75 * (1 - 0.6 * f);
+  countdownText.scale.set(1.15 - 0.3 * f);
+  if (secs !== countdownShown) {
+    countdownShown = secs;
+    sound.chime(secs === 1 ? 988 : 784, 0.08);
+  }
 }
 
 // ---- The end of a round: a card with the points and what made them ------------------------------
@@ -1902,6 +2009,10 @@ shell.expose({
   aimFlight: (): number[] => aimFlight(),
   /** How much of a throw's flight the aiming arc shows now, s (1.2 in the warm-up before the first basket, then 0.6). */
   aimSeconds: (): number => aimSeconds(),
+  /** The round's last throw (the clock ran out during its pull): whether its pull is under way, and its ball (0 when none). */
+  lastThrow: () => ({ ...lastCall }),
+  /** The big countdown over the box ('' when none shows): the last seconds, or 'Last throw!'. */
+  countdown: (): string => (countdownText.visible ? countdownText.text : ''),
   /** Whether a press is under way (pressed and not yet released, cancelled or ended by the round's end). */
   aiming: (): boolean => pointerId !== -1,
   /** The label over the press or the carried ball ('' when none shows), e.g. 'release here to cancel'. */
