@@ -82,6 +82,7 @@ import {
   hoopOpening,
   hoopSegments,
   hoopSpots,
+  MAX_THROW_SPEED,
   MISS_SECONDS,
   mayScore,
   NET,
@@ -1074,6 +1075,7 @@ function release(event: PointerEvent, cancelled: boolean): void {
   const cancel = inCancelZone();
   pressBall = 0;
   if (cancel) return;
+  if (dragged) released(t);
   if (!dragged) shoot(cam().toWorldX(startX), cam().toWorldY(startY), 0, 0, false);
   else if (ball !== 0 && handles.balls.includes(ball)) {
     throwBall(ball, t.vx, t.vy);
@@ -1083,6 +1085,21 @@ function release(event: PointerEvent, cancelled: boolean): void {
     if (last) lastCall.ball = e;
   }
 }
+/**
+ * A throw's release, heard and seen: the slingshot's snap and a whoosh, louder the faster the throw,
+ * and a ring bursting from the ball's start (drawPointer, RELEASE_MS).
+ */
+function released(t: { x: number; y: number; vx: number; vy: number; radius: number }): void {
+  const f = Math.min(1, Math.hypot(t.vx, t.vy) / MAX_THROW_SPEED);
+  sound.snap(0.15 + 0.35 * f);
+  sound.launch(0.3 + 0.7 * f);
+  releaseFx = { x: t.x, y: t.y, r: t.radius, at: performance.now(), power: f };
+}
+/** How long a release's ring bursts, ms. */
+const RELEASE_MS = 260;
+/** The last throw's release (its start, m, the ball's radius, m, when, performance.now() ms, and its speed / MAX_THROW_SPEED). */
+let releaseFx = { x: 0, y: 0, r: 0, at: -1e9, power: 0 };
+
 /** The renderer's camera. */
 function cam() {
   return renderer.camera;
@@ -1254,6 +1271,11 @@ function arcStops(t: { x: number; y: number; vx: number; vy: number; radius: num
 /** Bounces the whole predicted flight (aimFlight, aimFrom) follows (off the walls, the hoop and its net) before it ends; the shown arc follows none. */
 const AIM_BOUNCES = 2;
 
+/** The band's colour for a pull of `power` (speed / MAX_THROW_SPEED, [0, 1]): white, to gold at half, to red at full. */
+function powerColor(power: number): number {
+  return power < 0.5 ? mixColor(0xffffff, 0xffd166, power / 0.5) : mixColor(0xffd166, 0xff4d4d, (power - 0.5) / 0.5);
+}
+
 /** The label over a press held on a ball (what the hold does) and over a ball picked up (how to let go). */
 const holdLabel = new Text({
   text: '',
@@ -1280,6 +1302,14 @@ function drawPointer(): void {
   overlay.clear();
   holdLabel.visible = false;
   const cam = renderer.camera;
+  // A release's ring, bursting out from where the ball left and fading.
+  const age = (performance.now() - releaseFx.at) / RELEASE_MS;
+  if (age >= 0 && age < 1) {
+    const rr = cam.toScreenLength(releaseFx.r) * (1 + 1.2 * age) + 4;
+    overlay
+      .circle(cam.toScreenX(releaseFx.x), cam.toScreenY(releaseFx.y), rr)
+      .stroke({ width: 3 + 3 * releaseFx.power, color: powerColor(releaseFx.power), alpha: 0.9 * (1 - age) });
+  }
   if (pointerId === -1) {
     // A ball picked up: say how to let it go, over it.
     if (drag.joint !== 0 && drag.body !== 0) {
@@ -1325,11 +1355,13 @@ function drawPointer(): void {
     or = cam.toScreenLength(t.radius);
   // A grey (too high) throw's dots are drawn lighter than its ball: grey dots were lost on the wall.
   const thrownColor = mayScore(hoopSpots(TALL)[round.spot]!, t.y) ? PLAYER_COLOR : HIGH_AIM_COLOR;
+  // The band: thicker and warmer the harder the pull (white, gold, red at full power).
+  const power = Math.min(1, Math.hypot(t.vx, t.vy) / MAX_THROW_SPEED);
   overlay
     .moveTo(ox, oy)
     .lineTo(ox + lastX - startX, oy + lastY - startY)
-    .stroke({ width: 3, color: 0xffffff, alpha: 0.6 });
-  overlay.circle(ox + lastX - startX, oy + lastY - startY, 5).fill({ color: 0xffffff, alpha: 0.5 });
+    .stroke({ width: 3 + 3 * power, color: powerColor(power), alpha: 0.75 });
+  overlay.circle(ox + lastX - startX, oy + lastY - startY, 5 + 2 * power).fill({ color: powerColor(power), alpha: 0.7 });
   const path = aimPath();
   const n = path.length / 2;
   // The dots shrink and fade out along the arc (the shown arc is only the flight's start: aimSeconds).
