@@ -25,7 +25,9 @@
  * ball from below or the side (hoop.ts netContact). The player's balls are basketballs, all the same
  * size (hoop.ts PLAYER_RADIUS). Holding still on a ball or crate for HOLD_MS, 1 s (a ring fills from
  * HOLD_RING_MS on, labelled), picks it up with a mouse joint to carry it around; any pull before then
- * throws, so a press on the pile throws unless the pickup is meant. A basket is celebrated: a swish
+ * throws, so a press on the pile throws unless the pickup is meant. The band from the ball to the
+ * pointer warms from white to gold to red with the pull's power; a release snaps and whooshes (louder
+ * the faster) and a ring bursts from the ball. A basket is celebrated: a swish
  * and a rising chord, confetti from the rim, "+1" and the old hoop glowing out as the new one is
  * ringed, and the status row's score bumps. Knocks: the loudest few collisions a step (knocks.ts), so
  * a pile does not roar. When time is up, the Play-again button floats at the top of the box,
