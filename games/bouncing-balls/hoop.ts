@@ -433,8 +433,11 @@ export interface ThrowPathOptions {
   /**
    * Balls the path ends at, m: [x, y, radius] each (the other balls near the throw, which move when
    * hit, so no bounce off them is predicted): the path's last point is where the ball first touches one.
+   * An optional fourth number, an integer step count >= 0 (default 0), is the step from which that
+   * ball stops the path: a ball the throw passes as it leaves the heap (main.ts leaveOf) stops it
+   * only if the path still touches it once the leave is over.
    */
-  stops?: readonly (readonly [number, number, number])[];
+  stops?: readonly (readonly [number, number, number, number?])[];
 }
 
 /**
@@ -447,7 +450,7 @@ export interface ThrowPathOptions {
  * engine's 0.5 m/s restitution threshold) and, with `friction`, takes the impulse along the surface
  * that stops the contact point's slip (m / 3 of it for a disc), at most friction times the normal
  * impulse, which also spins the ball (tracked from 0 at the throw). The path ends where the ball
- * first touches one of `stops` (the other balls) moving into it.
+ * first touches one of `stops` (the other balls) moving into it, from that stop's step on.
  * @throws RangeError on a non-finite start or velocity, or a bad option.
  */
 export function throwPath(x: number, y: number, vx: number, vy: number, o: ThrowPathOptions): number[] {
@@ -550,7 +553,7 @@ export function throwPath(x: number, y: number, vx: number, vy: number, o: Throw
     }
     // Touching a stop while moving into it (a ball resting against the thrown one and left behind does not stop it).
     const stopped = (o.stops ?? []).some(
-      ([sx, sy, sr]) => (x - sx) ** 2 + (y - sy) ** 2 < (r + sr) ** 2 && (x - sx) * vx + (y - sy) * vy < 0,
+      ([sx, sy, sr, from = 0]) => n >= from && (x - sx) ** 2 + (y - sy) ** 2 < (r + sr) ** 2 && (x - sx) * vx + (y - sy) * vy < 0,
     );
     if (touches || stopped || n % perPoint === 0) out.push(x, y);
     if (stopped || (touches && ++bounced > most)) break;

@@ -19,12 +19,15 @@
  * flight while pulling (hoop.ts throwPath: AIM_SECONDS of it, twice that in the warm-up before the
  * first basket, fading out, up to its first touch; the player judges the rest). A pull taken back
  * to within CANCEL_PULL of its press point ("release here to cancel") and let go throws nothing; the
- * full-speed pull is shortened for a pull with little room to the window's edge (pullFullPull), and the round's end
- * ends an aim under way. The net stops a
+ * full-speed pull is shortened for a pull with little room to the window's edge (pullFullPull). A pull
+ * under way as the clock runs out is the round's last throw: the round waits for it and its ball
+ * (lastCall), under a big "Last throw!"; the last 10 s the clock is red, the last 5 a big countdown ticks. The net stops a
  * ball from below or the side (hoop.ts netContact). The player's balls are basketballs, all the same
  * size (hoop.ts PLAYER_RADIUS). Holding still on a ball or crate for HOLD_MS, 1 s (a ring fills from
  * HOLD_RING_MS on, labelled), picks it up with a mouse joint to carry it around; any pull before then
- * throws, so a press on the pile throws unless the pickup is meant. A basket is celebrated: a swish
+ * throws, so a press on the pile throws unless the pickup is meant. The band from the ball to the
+ * pointer warms from white to gold to red with the pull's power; a release snaps and whooshes (louder
+ * the faster) and a ring bursts from the ball. A basket is celebrated: a swish
  * and a rising chord, confetti from the rim, "+1" and the old hoop glowing out as the new one is
  * ringed, and the status row's score bumps. Knocks: the loudest few collisions a step (knocks.ts), so
  * a pile does not roar. When time is up, the Play-again button floats at the top of the box,
@@ -81,6 +84,7 @@ import {
   hoopOpening,
   hoopSegments,
   hoopSpots,
+  MAX_THROW_SPEED,
   MISS_SECONDS,
   mayScore,
   NET,
@@ -237,6 +241,7 @@ function createWorld(): PhysicsWorld {
   goldBall = 0;
   goldRng = new Rng(params.seed + 7);
   missAt = -1e9;
+  lastCall = { aiming: false, ball: 0 };
   ruleHint = '';
   lastThrown = 0;
   lastBasket = { x: 0, y: 0, time: -10, spot: 0, score: 0, points: 0, kind: 'basketball' };
@@ -532,14 +537,41 @@ function playHoop(world: PhysicsWorld): void {
       }
     }
   }
-  if (roundTick(round, world.dt)) {
-    // Time is up: an aim under way ends with nothing thrown (its arc and ball went on being drawn under the end card).
+  if (lastThrowPending(world.dt)) round.timeLeft = Math.max(0, round.timeLeft - world.dt);
+  else if (roundTick(round, world.dt)) {
+    // Time is up: a press under way that was not a pull ends with nothing done.
     endAim();
     keepBest();
     sound.chime(440, 0.6);
     setTimeout(() => sound.chime(554.37, 0.5), 160);
     setTimeout(() => sound.chime(659.25, 0.9), 320);
   }
+}
+
+/**
+ * The round's last throw: when the clock reaches 0 with a pull under way, the round waits for it to be
+ * let go (`aiming`), then for the ball it throws (`ball`, its id) to score or miss, and only then is
+ * time up: a throw being aimed as time ran out was lost. No new press starts meanwhile.
+ */
+let lastCall = { aiming: false, ball: 0 };
+
+/**
+ * Whether the round's end waits for its last throw (lastCall) after this step of `dt` s: the pull
+ * under way as the clock reaches 0, then its ball while it is in flight and may still score.
+ */
+function lastThrowPending(dt: number): boolean {
+  if (round.phase !== 'playing') return false;
+  if (lastCall.aiming) return true;
+  if (lastCall.ball !== 0) {
+    if (flights.get(lastCall.ball)?.scores) return true;
+    lastCall.ball = 0;
+    return false;
+  }
+  if (round.timeLeft <= dt && pointerId !== -1 && dragged) {
+    lastCall.aiming = true;
+    return true;
+  }
+  return false;
 }
 
 /**
@@ -957,6 +989,8 @@ canvas.addEventListener('pointerdown', (event) => {
   const page = pageLayout();
   if (page.compact() && page.root.dataset.open) page.open(null);
   if (grabbing || event.button !== 0 || pointerId !== -1 || drag.joint !== 0) return;
+  // The clock is out and the round waits for its last throw: no new one.
+  if (lastCall.aiming || lastCall.ball !== 0) return;
   pointerId = event.pointerId;
   canvas.setPointerCapture(event.pointerId);
   [startX, startY] = local(event);
@@ -1032,6 +1066,9 @@ function release(event: PointerEvent, cancelled: boolean): void {
   if (event.pointerId !== pointerId) return;
   pointerId = -1;
   clearTimeout(holdTimer);
+  // The round's last throw (the clock ran out during its pull): the round waits for its ball, if any.
+  const last = lastCall.aiming;
+  lastCall.aiming = false;
   if (cancelled) return;
   [lastX, lastY] = local(event);
   if (Math.hypot(lastX - startX, lastY - startY) > slop) dragged = true;
@@ -1040,10 +1077,31 @@ function release(event: PointerEvent, cancelled: boolean): void {
   const cancel = inCancelZone();
   pressBall = 0;
   if (cancel) return;
+  if (dragged) released(t);
   if (!dragged) shoot(cam().toWorldX(startX), cam().toWorldY(startY), 0, 0, false);
-  else if (ball !== 0 && handles.balls.includes(ball)) throwBall(ball, t.vx, t.vy);
-  else shoot(t.x, t.y, t.vx, t.vy);
+  else if (ball !== 0 && handles.balls.includes(ball)) {
+    throwBall(ball, t.vx, t.vy);
+    if (last) lastCall.ball = ball;
+  } else {
+    const e = shoot(t.x, t.y, t.vx, t.vy);
+    if (last) lastCall.ball = e;
+  }
 }
+/**
+ * A throw's release, heard and seen: the slingshot's snap and a whoosh, louder the faster the throw,
+ * and a ring bursting from the ball's start (drawPointer, RELEASE_MS).
+ */
+function released(t: { x: number; y: number; vx: number; vy: number; radius: number }): void {
+  const f = Math.min(1, Math.hypot(t.vx, t.vy) / MAX_THROW_SPEED);
+  sound.snap(0.15 + 0.35 * f);
+  sound.launch(0.3 + 0.7 * f);
+  releaseFx = { x: t.x, y: t.y, r: t.radius, at: performance.now(), power: f };
+}
+/** How long a release's ring bursts, ms. */
+const RELEASE_MS = 260;
+/** The last throw's release (its start, m, the ball's radius, m, when, performance.now() ms, and its speed / MAX_THROW_SPEED). */
+let releaseFx = { x: 0, y: 0, r: 0, at: -1e9, power: 0 };
+
 /** The renderer's camera. */
 function cam() {
   return renderer.camera;
@@ -1175,31 +1233,50 @@ function arcOf(
   });
 }
 
-/** How far from a throw's start the other balls end its aiming arc, m: the heap round it (balls further off move before the ball gets there). */
+/** How far from a throw's start the other balls end its aiming arc, m: the heap round it (balls further off that move get out of the way before the ball gets there). */
 const STOP_REACH = 3;
+/**
+ * How far from a throw's start the balls at rest (under REST_SPEED) end its aiming arc too, m: a
+ * throw skimming the heap met a resting ball 4 m on, under the arc it showed.
+ */
+const REST_REACH = 8;
+/** Balls slower than this, m/s, are at rest for REST_REACH. */
+const REST_SPEED = 0.5;
 
-/** The balls within STOP_REACH of (x, y), m, but `except`: [x, y, radius] each, for the aiming arc's stops. */
+/** The balls within STOP_REACH of (x, y), m, or at rest within REST_REACH of it, but `except`: [x, y, radius] each, for the aiming arc's stops. */
 function nearBalls(x: number, y: number, except: number): [number, number, number][] {
-  const c = shell.world.components;
+  const c = shell.world.components,
+    V = c.Velocity;
   const out: [number, number, number][] = [];
   for (const e of handles.balls) {
     if (e === except) continue;
     const s = slotOf(e);
     const bx = c.Position.x[s]!,
       by = c.Position.y[s]!;
-    if (Math.abs(bx - x) < STOP_REACH && Math.abs(by - y) < STOP_REACH) out.push([bx, by, c.Ball.radius[s]!]);
+    const d = Math.max(Math.abs(bx - x), Math.abs(by - y));
+    if (d < STOP_REACH || (d < REST_REACH && V.x[s]! ** 2 + V.y[s]! ** 2 < REST_SPEED ** 2)) out.push([bx, by, c.Ball.radius[s]!]);
   }
   return out;
 }
-/** The balls that end throw `t`'s aiming arc: those near its start but, for a ball of the scene (`thrown`), the ones it passes as it leaves. */
-function arcStops(t: { x: number; y: number; vx: number; vy: number; radius: number }, thrown: number): [number, number, number][] {
+/**
+ * The balls that end throw `t`'s aiming arc, [x, y, radius, from step] each: those near its start; for
+ * a ball of the scene (`thrown`), the ones it passes as it leaves the heap stop it only after the
+ * leave (from its last step on): a shallow throw that still grazes one of them when the leave ends
+ * (LEAVE_MAX_SECONDS) meets it there, and its arc ends there with the red cross.
+ */
+function arcStops(t: { x: number; y: number; vx: number; vy: number; radius: number }, thrown: number): [number, number, number, number][] {
   const near = nearBalls(t.x, t.y, thrown);
-  if (thrown === 0) return near;
-  const { met } = leaveOf(near, t.x, t.y, t.vx, t.vy, t.radius, shell.world.dt);
-  return near.filter((b) => !met.has(b));
+  if (thrown === 0) return near.map(([x, y, r]) => [x, y, r, 0]);
+  const { steps, met } = leaveOf(near, t.x, t.y, t.vx, t.vy, t.radius, shell.world.dt);
+  return near.map(([x, y, r], i) => [x, y, r, met.has(near[i]!) ? steps + 1 : 0]);
 }
 /** Bounces the whole predicted flight (aimFlight, aimFrom) follows (off the walls, the hoop and its net) before it ends; the shown arc follows none. */
 const AIM_BOUNCES = 2;
+
+/** The band's colour for a pull of `power` (speed / MAX_THROW_SPEED, [0, 1]): white, to gold at half, to red at full. */
+function powerColor(power: number): number {
+  return power < 0.5 ? mixColor(0xffffff, 0xffd166, power / 0.5) : mixColor(0xffd166, 0xff4d4d, (power - 0.5) / 0.5);
+}
 
 /** The label over a press held on a ball (what the hold does) and over a ball picked up (how to let go). */
 const holdLabel = new Text({
@@ -1227,6 +1304,14 @@ function drawPointer(): void {
   overlay.clear();
   holdLabel.visible = false;
   const cam = renderer.camera;
+  // A release's ring, bursting out from where the ball left and fading.
+  const age = (performance.now() - releaseFx.at) / RELEASE_MS;
+  if (age >= 0 && age < 1) {
+    const rr = cam.toScreenLength(releaseFx.r) * (1 + 1.2 * age) + 4;
+    overlay
+      .circle(cam.toScreenX(releaseFx.x), cam.toScreenY(releaseFx.y), rr)
+      .stroke({ width: 3 + 3 * releaseFx.power, color: powerColor(releaseFx.power), alpha: 0.9 * (1 - age) });
+  }
   if (pointerId === -1) {
     // A ball picked up: say how to let it go, over it.
     if (drag.joint !== 0 && drag.body !== 0) {
@@ -1272,11 +1357,13 @@ function drawPointer(): void {
     or = cam.toScreenLength(t.radius);
   // A grey (too high) throw's dots are drawn lighter than its ball: grey dots were lost on the wall.
   const thrownColor = mayScore(hoopSpots(TALL)[round.spot]!, t.y) ? PLAYER_COLOR : HIGH_AIM_COLOR;
+  // The band: thicker and warmer the harder the pull (white, gold, red at full power).
+  const power = Math.min(1, Math.hypot(t.vx, t.vy) / MAX_THROW_SPEED);
   overlay
     .moveTo(ox, oy)
     .lineTo(ox + lastX - startX, oy + lastY - startY)
-    .stroke({ width: 3, color: 0xffffff, alpha: 0.6 });
-  overlay.circle(ox + lastX - startX, oy + lastY - startY, 5).fill({ color: 0xffffff, alpha: 0.5 });
+    .stroke({ width: 3 + 3 * power, color: powerColor(power), alpha: 0.75 });
+  overlay.circle(ox + lastX - startX, oy + lastY - startY, 5 + 2 * power).fill({ color: powerColor(power), alpha: 0.7 });
   const path = aimPath();
   const n = path.length / 2;
   // The dots shrink and fade out along the arc (the shown arc is only the flight's start: aimSeconds).
@@ -1741,7 +1828,8 @@ const bumpStyle = document.createElement('style');
 bumpStyle.textContent = `@keyframes bb-bump { 0% { transform: scale(1); color: inherit; } 20% { transform: scale(1.3); color: #ffd166; }
   70% { color: #ffd166; } 100% { transform: scale(1); color: inherit; } }
 [data-hud="hoop"] [data-hud="numbers"].bb-bump { animation: bb-bump 0.9s ease-out; }
-[data-hud="hoop"] > div { white-space: nowrap; overflow: hidden; text-overflow: ellipsis; }`;
+[data-hud="hoop"] > div { white-space: nowrap; overflow: hidden; text-overflow: ellipsis; }
+[data-hud="hoop"] [data-hud="numbers"].bb-hurry { color: #ff6b6b; }`;
 document.head.append(bumpStyle);
 /** Bumps the status row's numbers line (a basket scored). */
 function bumpScore(): void {
@@ -1759,13 +1847,17 @@ function updateStatus(): void {
   const cheering = shell.world.time - lastBasket.time < CELEBRATE_SECONDS && lastBasket.score === round.score;
   const goal = over
     ? `Time! ${plural(round.points, 'point', 'points')}${round.points > 0 && round.points >= best ? ' — best yet!' : ''}`
-    : cheering
-      ? `${praiseFor(lastBasket)} +${lastBasket.points} · the hoop moved`
-      : round.phase === 'ready'
-        ? `Score once to start the ${round.seconds} s clock`
-        : round.streak > 0
-          ? `${round.streak} in a row: the next basket scores ×${streakMultiplier(round.streak)}`
-          : 'Throw balls through the hoop!';
+    : lastCall.aiming
+      ? 'Time! Let go: this last throw still counts'
+      : lastCall.ball !== 0
+        ? 'Last throw…'
+        : cheering
+          ? `${praiseFor(lastBasket)} +${lastBasket.points} · the hoop moved`
+          : round.phase === 'ready'
+            ? `Score once to start the ${round.seconds} s clock`
+            : round.streak > 0
+              ? `${round.streak} in a row: the next basket scores ×${streakMultiplier(round.streak)}`
+              : 'Throw balls through the hoop!';
   const numbers = `Points ${round.points} · ×${streakMultiplier(round.streak)} · Time ${secs} s · Best ${best}`;
   // The last throw's rule break (ruleHint) stays until the next throw; otherwise, while playing, the
   // hint takes turns (5 s each) between the heap's balls and the streak.
@@ -1790,7 +1882,70 @@ function updateStatus(): void {
               : 'Press, drag back and let go to throw through the hoop from below the orange line'
             : teach;
   if (status.set({ goal, numbers, hint }, over)) setAction(over);
+  // The last HURRY_SECONDS: the numbers line turns red.
+  status.numbers.classList.toggle('bb-hurry', round.phase === 'playing' && round.timeLeft <= HURRY_SECONDS);
+  drawCountdown();
   drawEndCard(over);
+}
+
+// ---- The last seconds: a red clock, a big countdown and a tick -------------------------------------
+
+/** The numbers line (points, time) turns red for the last this many seconds of the clock. */
+const HURRY_SECONDS = 10;
+/** A big countdown over the box, and a tick each second, for the last this many seconds. */
+const COUNTDOWN_SECONDS = 5;
+const countdownText = new Text({
+  text: '',
+  style: { fontFamily: 'system-ui, sans-serif', fontSize: 96, fontWeight: '800', fill: 0xff6b6b, stroke: { color: 0x0b0f16, width: 8 } },
+});
+countdownText.anchor.set(0.5);
+countdownText.visible = false;
+app.stage.addChild(countdownText);
+/** Sets the countdown's text and font size, px, when they change (a change redraws the text). */
+function setCountdown(text: string, size: number): void {
+  if (countdownText.text !== text) countdownText.text = text;
+  if (countdownText.style.fontSize !== size) countdownText.style.fontSize = size;
+}
+/** The countdown's last second shown (for the tick once a second); 0 when none. */
+let countdownShown = 0;
+
+/**
+ * The last COUNTDOWN_SECONDS of a round: each second's number big in the box's upper part, on the side
+ * away from the hoop (the middle on a phone),
+ * shrinking and fading through its second, with a tick; at 0 with the last throw under way (lastCall),
+ * "Last throw!" instead.
+ */
+function drawCountdown(): void {
+  const playing = round.phase === 'playing';
+  const secs = Math.ceil(round.timeLeft);
+  const last = lastCall.aiming || lastCall.ball !== 0;
+  countdownText.visible = playing && (last || (secs >= 1 && secs <= COUNTDOWN_SECONDS));
+  if (!countdownText.visible) {
+    countdownShown = 0;
+    return;
+  }
+  const cam = renderer.camera;
+  const { box } = layoutOf(TALL);
+  // Over the half of the box away from the hoop, so it never covers the hoop being aimed at.
+  const o = hoopOpening(hoopSpots(TALL)[round.spot]!);
+  const mid = 0.5 * (box.min[0] + box.max[0]),
+    across = 0.5 * (o.minX + o.maxX) > mid ? 0.3 : 0.7;
+  const x = box.min[0] + across * (box.max[0] - box.min[0]);
+  countdownText.position.set(cam.toScreenX(TALL ? mid : x), cam.toScreenY(box.max[1] - 0.3 * (box.max[1] - box.min[1])));
+  if (last) {
+    setCountdown('Last throw!', TALL ? 44 : 56);
+    countdownText.alpha = 0.8;
+    countdownText.scale.set(1);
+    return;
+  }
+  setCountdown(String(secs), TALL ? 72 : 96);
+  const f = secs - round.timeLeft;
+  countdownText.alpha = 0.75 * (1 - 0.6 * f);
+  countdownText.scale.set(1.15 - 0.3 * f);
+  if (secs !== countdownShown) {
+    countdownShown = secs;
+    sound.chime(secs === 1 ? 988 : 784, 0.08);
+  }
 }
 
 // ---- The end of a round: a card with the points and what made them ------------------------------
@@ -1888,6 +2043,10 @@ shell.expose({
   aimFlight: (): number[] => aimFlight(),
   /** How much of a throw's flight the aiming arc shows now, s (1.2 in the warm-up before the first basket, then 0.6). */
   aimSeconds: (): number => aimSeconds(),
+  /** The round's last throw (the clock ran out during its pull): whether its pull is under way, and its ball (0 when none). */
+  lastThrow: () => ({ ...lastCall }),
+  /** The big countdown over the box ('' when none shows): the last seconds, or 'Last throw!'. */
+  countdown: (): string => (countdownText.visible ? countdownText.text : ''),
   /** Whether a press is under way (pressed and not yet released, cancelled or ended by the round's end). */
   aiming: (): boolean => pointerId !== -1,
   /** The label over the press or the carried ball ('' when none shows), e.g. 'release here to cancel'. */

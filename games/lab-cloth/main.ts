@@ -88,6 +88,17 @@ const GUST = 5,
  */
 const CALM_RATE = 4;
 /**
+ * After a stroke that cut something on such a sheet, the air stays still this long, s (world time),
+ * and the sheet's sway is damped (CALM_DAMPING): the piece cut away changes how the sheet hangs, and
+ * as the breeze came back at once the sheet swung the next shape away from the scissors.
+ */
+const CALM_HOLD = 8;
+/**
+ * Extra air damping of the sheet's points while the air is still for the scissors, 1/s (times `calm`):
+ * the swing a cut sets off dies in about half a second instead of swaying on.
+ */
+const CALM_DAMPING = 3;
+/**
  * A finger's stroke (pointer type 'touch') is given this much slack, CSS px: its cut may stray this
  * much further from a line at no cost to the fit (Challenge.setSlack), and it closes within
  * FINGER_CLOSE_PX of its start. Measured on a 390 x 844 phone (a link spacing is 10 px there) with a
@@ -154,7 +165,9 @@ let blow = 0,
 /** How far the breeze has dropped for the scissors, 0 (blowing) to 1 (still air; see CALM_RATE). */
 let calm = 0,
   /** Whether the scissors are down (a stroke is under way). */
-  cutting = false;
+  cutting = false,
+  /** World time, s, until which the air stays still after a stroke that cut (CALM_HOLD). */
+  calmUntil = -1;
 
 function createWorld(): PhysicsWorld {
   const level = LEVELS[levelIndex]!;
@@ -168,6 +181,7 @@ function createWorld(): PhysicsWorld {
   cut = 0;
   blow = 0;
   calm = 0;
+  calmUntil = -1;
   plot?.clear();
   for (const l of labels.splice(0)) l.text.destroy({ children: true });
   return scene.world;
@@ -182,14 +196,26 @@ function blowNow(world: PhysicsWorld): void {
   applyWind(world, { wind: params.wind * (1 - calm), gusts: params.gusts * (1 - calm) }, GUST * blow);
 }
 
+/** Scales the velocity of every point of the sheet by `keep`, in [0, 1] (air damping while the air is still). */
+function dampSheet(world: PhysicsWorld, keep: number): void {
+  const V = world.components.Velocity;
+  for (const e of cloth.points) {
+    const s = slotOf(e);
+    V.x[s] = V.x[s]! * keep;
+    V.y[s] = V.y[s]! * keep;
+  }
+}
+
 function labStep(world: PhysicsWorld): void {
   const target = blowing ? 1 : 0;
-  const calmTarget = cutting && LEVELS[levelIndex]!.calm ? 1 : 0;
+  const calmTarget = (cutting || world.time < calmUntil) && LEVELS[levelIndex]!.calm ? 1 : 0;
   if (blow !== target || calm !== calmTarget) {
     blow = target > blow ? Math.min(1, blow + GUST_RATE * world.dt) : Math.max(0, blow - GUST_RATE * world.dt);
     calm = calmTarget > calm ? Math.min(1, calm + CALM_RATE * world.dt) : Math.max(0, calm - CALM_RATE * world.dt);
     blowNow(world);
   }
+  // Still air for the scissors: the sheet's swing is damped too (not a gust the player blows).
+  if (calm > 0 && blow === 0) dampSheet(world, Math.exp(-CALM_DAMPING * calm * world.dt));
   // The hand's pull follows how far it leads the patch it holds (grab.ts).
   grab?.update();
   const t0 = performance.now();
@@ -217,6 +243,7 @@ const game = await startPixiGame({
     { keys: 'G (hold)', action: 'a gust of wind', touch: 'Gust (hold)' },
     { keys: 'Right drag', action: 'cut, with either tool', touch: '' },
     { keys: 'Ctrl+Z', action: 'undo the last cut', touch: 'Undo' },
+    { keys: 'Paused', touch: 'Paused', action: 'the sheet holds still and the scissors still cut: a steady hand for ★★★' },
   ],
   renderer: { view },
   onFrame: (alpha, world) => draw(alpha, world),
@@ -644,6 +671,8 @@ const release = (): void => {
     if (history.end()) {
       if (challenge.done.length === doneBefore) note = strokeNote(scrapsBefore);
       refreshUndo();
+      // It cut: the air stays still a while, so the sheet hangs still for the next shape.
+      calmUntil = shell.world.time + CALM_HOLD;
     }
   }
   grab?.release();
@@ -926,7 +955,7 @@ function updateStatus(): void {
   if (!last) {
     const best = levelStars[levelIndex]!;
     status.set(
-      `${head}: ${level.ask}${best >= 0 ? short(` Best so far: ${best} of ${3 * shapes.length} stars.`, ` Best ${best}/${3 * shapes.length} ★.`) : ''}`,
+      `${head}: ${level.ask}${best >= 0 ? short(` Best so far: ${best} of ${3 * shapes.length} stars.`, ` Best ${best}/${3 * shapes.length} ★.`) : ''}${level.calm ? pauseTip() : ''}`,
     );
     return;
   }
@@ -955,9 +984,19 @@ function updateStatus(): void {
               ` Cut on the dashes${level.calm ? ', paused,' : ''} for ★★★.`,
             )
       : '';
+  // Three stars: the tip to pause stays in view for the shapes still to cut.
   status.set(
-    `${name[0]!.toUpperCase()}${name.slice(1)}: ${Math.round(last.fit * 100)}% ${stars(last.stars)}.${tip} Still to cut: ${left.join(', ')}.`,
+    `${name[0]!.toUpperCase()}${name.slice(1)}: ${Math.round(last.fit * 100)}% ${stars(last.stars)}.${tip} Still to cut: ${left.join(', ')}.${
+      last.stars === 3 && level.calm && left.length > 0 ? pauseTip() : ''
+    }`,
   );
+}
+
+/** The tip to cut on the paused sheet, for the sheets of careful cuts (' ' first). */
+function pauseTip(): string {
+  return touchInput.matches
+    ? short(' Tip: pause and the sheet holds still; the scissors still cut.', ' Tip: pause, it holds still.')
+    : short(' Tip: pause (P) and the sheet holds still; the scissors still cut.', ' Tip: P holds it still.');
 }
 
 let lastFrame = performance.now() / 1000;
@@ -1067,6 +1106,8 @@ shell.expose({
   /** Removes one link (a link handle of `cloth().links`), as a tear would (tests). */
   removeLink: (h: number) => removeJoint(shell.world, h),
   /** Runs the lab's step n times (tests). */
+  /** How still the air is for the scissors, 0 (the breeze blows) to 1 (still), and how long it stays still after the last cut, s of world time. */
+  calm: () => ({ calm, hold: Math.max(0, calmUntil - shell.world.time) }),
   advance: (n: number) => {
     for (let i = 0; i < n; i++) labStep(shell.world);
   },

@@ -9,7 +9,8 @@
  * still), holding still on a ball for 1 s drags it, P pauses (nothing moves while paused, motion
  * resumes after), N advances exactly one step, R rebuilds the same seeded scene. Aiming: a pull taken
  * back onto its press point cancels (mouse and touch), a pull straight down from the lowest heap ball
- * reaches the full speed inside the viewport, and the round's end ends an aim under way. A rule reminder
+ * reaches the full speed inside the viewport, and a pull under way as the clock runs out is the round's
+ * last throw, which counts (the round ends once its ball scores or misses). A rule reminder
  * ("Too high") stays until the next throw; on a phone a press on the field closes the parameters drawer.
  * The tests share one page with a small ball count (?count=8); before each, the game is reset
  * (window.game.reset(), unpaused) and the page's error list emptied, so each starts from the
@@ -1032,6 +1033,8 @@ describe('bouncing balls: the hoop game', () => {
 interface AimGame extends HoopGame {
   paused: boolean;
   aiming(): boolean;
+  lastThrow(): { aiming: boolean; ball: number };
+  countdown(): string;
   aimLabel(): string;
   remove(id: number): void;
   positions(): number[];
@@ -1196,7 +1199,7 @@ describe('bouncing balls: cancelling, full-power pulls and the end of a round mi
     await g.close();
   });
 
-  it('desktop: when time runs out mid-aim, the aim ends (no arc, no press) and its release throws nothing', async () => {
+  it('desktop: when time runs out mid-aim, the pull goes on as the last throw, which counts; the round ends once its ball scores or misses', async () => {
     const g = await h.openGame('bouncing-balls', { viewport: { width: 1280, height: 800 }, query: { count: 8, round: 5 } });
     await g.page.evaluate(() => {
       const game = window.game as unknown as AimGame;
@@ -1225,29 +1228,67 @@ describe('bouncing balls: cancelling, full-power pulls and the end of a round mi
       if (score < 0) score = 0;
     }
     expect(score).toBe(1);
-    // Aim from low on the left and hold the pull until the round is over.
-    const from = await g.worldToPage(3, 3);
+    // Aim from low on the left, below the rim's line (so the throw may score and the round waits for
+    // its ball), and hold the pull past the clock's end.
+    const low = await g.page.evaluate(() => Math.max(0.8, Math.min(3, (window.game as unknown as AimGame).hoop().y - 1)));
+    const from = await g.worldToPage(9, low);
     const m = g.page.mouse;
     await m.move(from.x, from.y);
     await m.down();
     await m.move(from.x - 60, from.y + 80, { steps: 6 });
     await g.frames(2);
     expect((await aimState(g)).aiming).toBe(true);
+    // The clock reaches 0 under the pull: the round waits for this last throw (it used to end the aim,
+    // and the throw being aimed was lost).
     const shots = await g.waitFor(
       () => {
         const game = window.game as unknown as AimGame;
-        return game.round().phase === 'over' ? game.round().shots : null;
+        return game.round().timeLeft === 0 && game.lastThrow().aiming ? game.round().shots : null;
       },
       null,
       30_000,
     );
-    await g.frames(2);
-    expect(await aimState(g)).toEqual({ arc: 0, label: '', aiming: false });
-    const balls = await g.page.evaluate(() => (window.game as unknown as AimGame).ballIds().length);
-    await m.up();
     await g.frames(3);
-    expect(await g.page.evaluate(() => (window.game as unknown as AimGame).ballIds().length)).toBe(balls);
-    expect(await g.page.evaluate(() => (window.game as unknown as AimGame).round().shots)).toBe(shots);
+    const waiting = await g.page.evaluate(() => {
+      const game = window.game as unknown as AimGame;
+      return {
+        phase: game.round().phase,
+        countdown: game.countdown(),
+        status: game.statusText(),
+        red: document.querySelector('[data-hud="hoop"] [data-hud="numbers"]')!.classList.contains('bb-hurry'),
+      };
+    });
+    expect(waiting).toEqual({
+      phase: 'playing',
+      countdown: 'Last throw!',
+      status: expect.stringMatching(/last throw still counts/),
+      red: true,
+    });
+    // Its arc is still drawn.
+    expect((await aimState(g)).arc).toBeGreaterThan(2);
+    // Let go: it throws, and counts as a shot.
+    await m.up();
+    const thrown = await g.page.evaluate(() => {
+      const game = window.game as unknown as AimGame;
+      game.paused = true;
+      return { shots: game.round().shots, last: game.lastThrow(), phase: game.round().phase };
+    });
+    expect(thrown.shots).toBe(shots + 1);
+    expect(thrown.last.aiming).toBe(false);
+    expect(thrown.last.ball).toBeGreaterThan(0);
+    expect(thrown.phase).toBe('playing');
+    // No new press while the last ball flies.
+    await m.move(from.x + 100, from.y);
+    await m.down();
+    await m.move(from.x + 40, from.y + 80, { steps: 4 });
+    expect((await aimState(g)).aiming).toBe(false);
+    await m.up();
+    // The round ends once the last ball has scored or missed.
+    await g.page.evaluate(() => {
+      (window.game as unknown as AimGame).paused = false;
+    });
+    await g.waitFor(() => (window.game as unknown as AimGame).round().phase === 'over', null, 30_000);
+    expect(await g.page.evaluate(() => (window.game as unknown as AimGame).round().shots)).toBe(shots + 1);
     expect(g.errors).toEqual([]);
     await g.close();
   });

@@ -141,6 +141,53 @@ for (const [device, options] of [
       await g?.close();
     });
 
+    it('the shapes sheet tells how to hold it still from the start; after a stroke that cuts, the air stays still for the next shape', async () => {
+      await g.page.evaluate(() => {
+        const w = window.game as unknown as ClothLab & { reset(): void };
+        w.reset();
+        w.paused = false;
+      });
+      await g.frames(2);
+      // The first sheet (the shapes): its opening line says that the paused sheet holds still (the tip
+      // used to show only once paused, where a player who struggled never looked).
+      expect(await g.page.evaluate(() => (window.game as unknown as ClothLab).level().index)).toBe(0);
+      expect(await g.page.locator('.lab-status').textContent()).toMatch(/Tip: pause/);
+      await g.page.evaluate(() => {
+        (window.game as unknown as Lab).paused = true;
+      });
+      const cl = await g.page.evaluate(() => {
+        const c = (window.game as unknown as ClothLab).cloth();
+        return { rows: c.rows, columns: c.columns };
+      });
+      // A stroke across the sheet's bottom rows (below the shapes): it cuts links.
+      const row = cl.rows - 3;
+      const [lx, ly] = await clothPoint(g, row, 0),
+        [rx, ry] = await clothPoint(g, row, cl.columns - 1);
+      const spacing = 4 / (cl.columns - 1);
+      const cut0 = await g.page.evaluate(() => (window.game as unknown as ClothLab).cut());
+      await drag(g.page, [await toPage(g, lx - 0.3, ly - spacing / 2), await toPage(g, rx + 0.3, ry - spacing / 2)], 12);
+      const after = await g.page.evaluate(() => {
+        const w = window.game as unknown as ClothLab & { calm(): { calm: number; hold: number } };
+        return { cut: w.cut(), calm: w.calm() };
+      });
+      expect(after.cut).toBeGreaterThan(cut0);
+      // The air stays still for 8 s of the sheet's time after the cut (main.ts CALM_HOLD; paused, none has passed).
+      expect(after.calm.hold).toBeCloseTo(8, 6);
+      // Half a second of steps on: the breeze has dropped all the way (it picked up again at once
+      // after a stroke before, and the sheet swayed the next shape away), the hold counting down.
+      const later = await g.page.evaluate(() => {
+        const w = window.game as unknown as ClothLab & { calm(): { calm: number; hold: number }; advance(n: number): void };
+        w.advance(30);
+        return w.calm();
+      });
+      expect(later.calm).toBe(1);
+      expect(later.hold).toBeCloseTo(7.5, 6);
+      await g.page.evaluate(() => {
+        (window.game as unknown as Lab).paused = false;
+      });
+      expect(g.errors).toEqual([]);
+    });
+
     it('a stroke on the paused sheet cuts it and says the pieces fall on ▶; running, the part below falls away and the status says what it held', async () => {
       // A whole sheet to start from, on a retry too (a first try that timed out left its cut sheet).
       await g.page.evaluate(() => (window.game as unknown as { reset(): void }).reset());

@@ -393,6 +393,21 @@ describe('the slingshot and its aiming arc', () => {
       /bounces/,
     );
   });
+
+  it('a stop ends the arc where the ball first moves into it, and only from its own step on (a ball passed as it leaves the heap)', () => {
+    // Flat along y = 5 at 6 m/s from x = 2, no gravity: 0.1 m a step. A ball of radius 0.5 at x = 4.05:
+    // touched (centres under 0.9 m apart) once x > 3.15, after 12 steps (x = 3.2).
+    const o = { gravity: 0, drag: 'none' as const, k: 0, mass: 1, radius: 0.4, box: BOX, every: 1 / 60 };
+    const at = throwPath(2, 5, 6, 0, { ...o, stops: [[4.05, 5, 0.5]] });
+    expect(at.length / 2 - 1).toBe(12);
+    expect(at.at(-2)!).toBeCloseTo(3.2, 9);
+    // From step 12 on: the same; from step 13 on: still inside it and moving into it, so it ends there.
+    expect(throwPath(2, 5, 6, 0, { ...o, stops: [[4.05, 5, 0.5, 12]] }).at(-2)!).toBeCloseTo(3.2, 9);
+    expect(throwPath(2, 5, 6, 0, { ...o, stops: [[4.05, 5, 0.5, 13]] }).at(-2)!).toBeCloseTo(3.3, 9);
+    // From step 30 on (x = 5, past its centre, moving away from it): the path goes on past it to the box's side.
+    const past = throwPath(2, 5, 6, 0, { ...o, seconds: 3, stops: [[4.05, 5, 0.5, 30]] });
+    expect(past.at(-2)!).toBeCloseTo(BOX.max[0] - 0.4, 9);
+  });
 });
 
 describe('every hoop spot can be reached from where a stranger throws (reach.ts)', () => {
