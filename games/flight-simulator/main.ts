@@ -1157,6 +1157,19 @@ const planeBox: [number, number, number, number] = [0, 0, 0, 0];
 const corner = new Vector3();
 planeGeometry.computeBoundingBox();
 const modelBox = planeGeometry.boundingBox!;
+/**
+ * The model's outermost points (body frame, m): nose, tail, fin top, keel and the wing tips, so
+ * that the box round them on the screen is the aircraft's (the corners of its 3D bounding box, most
+ * of them empty air, made a box twice as tall that faded the aircraft in a bank with the ring well above it).
+ */
+const PLANE_POINTS: readonly (readonly [number, number, number])[] = [
+  [modelBox.max.x, 0, 0],
+  [modelBox.min.x, 0, 0],
+  [modelBox.min.x, modelBox.max.y, 0],
+  [0, modelBox.min.y, 0],
+  [0, 0, modelBox.max.z],
+  [0, 0, modelBox.min.z],
+];
 /** Fades the aircraft while the next ring is behind it on the screen (chase view), eased over `dt` s. */
 function fadeOverRing(dt: number): void {
   let behind = false;
@@ -1167,12 +1180,8 @@ function fadeOverRing(dt: number): void {
       y1 = -Infinity;
     const w = app.canvas.clientWidth,
       h = app.canvas.clientHeight;
-    for (let k = 0; k < 8; k++) {
-      corner
-        .set(k & 1 ? modelBox.max.x : modelBox.min.x, k & 2 ? modelBox.max.y : modelBox.min.y, k & 4 ? modelBox.max.z : modelBox.min.z)
-        .applyQuaternion(drawnQ)
-        .add(at)
-        .project(app.camera);
+    for (const [px, py, pz] of PLANE_POINTS) {
+      corner.set(px, py, pz).applyQuaternion(drawnQ).add(at).project(app.camera);
       const x = ((corner.x + 1) / 2) * w,
         y = ((1 - corner.y) / 2) * h;
       x0 = Math.min(x0, x);
@@ -1232,20 +1241,26 @@ function showThrottleNote(): void {
  * lesson tip, in that order) sits in one column, one under the other, never on each other: at the
  * scene's top, or in its low lane (above the cockpit's instrument panel in that view, so the gauges
  * stay clear) while the top one would cover the next ring, its label or the flight-path marker and
- * the low one would not. (Each had its own fixed place: the banner and the turn-back cue sat over the
- * ring ahead, the warning over the cockpit's gauges.) It stays in its lane until that lane is covered
- * and the other is clear, so it does not jump back and forth as the ring moves.
+ * the low one would not, and back up once the top is clear by LANE_RETURN px (the margin keeps the
+ * column from jumping back and forth as the ring moves). Each had its own fixed place: the banner
+ * and the turn-back cue sat over the ring ahead, the warning over the cockpit's gauges.
  */
 let messagesLow = false;
 /** Gap between the messages, and between them and the scene's edge or the cockpit's panel, px. */
 const LANE_GAP = compact ? 6 : 8;
+/** How far clear of the ring, its label and the marker the top lane must be for the messages to go back up to it, px. */
+const LANE_RETURN = 40;
 /** How far over the cockpit's panel top its rim and the figures on it reach, px. */
 const PANEL_RIM = 18;
 /** Where the messages sat last (tests): in the low lane or not, and each shown one's name and box (px in the stage: left, top, width, height). */
 const messageLayout = { low: false, boxes: [] as { hud: string; box: [number, number, number, number] }[] };
 /** What the messages must not cover, as boxes (px: left, top, width, height) and the ring's circle. */
-function coveredBy(box: readonly number[]): number {
-  const [x, y, bw, bh] = box as [number, number, number, number];
+function coveredBy(box: readonly number[], pad = 0): number {
+  const [x0, y0, w0, h0] = box as [number, number, number, number];
+  const x = x0 - pad,
+    y = y0 - pad,
+    bw = w0 + 2 * pad,
+    bh = h0 + 2 * pad;
   let n = 0;
   const boxHit = (o: readonly number[]) => x < o[0]! + o[2]! && o[0]! < x + bw && y < o[1]! + o[3]! && o[1]! < y + bh;
   if (ringAim.inView && ringPointer.style.display !== 'none') {
@@ -1277,10 +1292,11 @@ function placeMessages(): void {
       return box;
     });
   };
-  const covers = (low: boolean) => boxesAt(low).reduce((n, b) => n + coveredBy(b), 0);
+  const covers = (low: boolean, pad = 0) => boxesAt(low).reduce((n, b) => n + coveredBy(b, pad), 0);
   if (items.length > 0) {
     const here = covers(messagesLow);
-    if (here > 0 && covers(!messagesLow) < here) {
+    // Back to the top once it is clear by LANE_RETURN px (the low lane covers the aircraft in the chase view).
+    if ((here > 0 && covers(!messagesLow) < here) || (messagesLow && covers(false, LANE_RETURN) === 0)) {
       messagesLow = !messagesLow;
       // On a phone the kit's card of touch gestures (game-kit hud.ts showTouchHint) may still be up
       // over the scene's bottom for a few seconds: it goes now, as it does at a touch on the scene.

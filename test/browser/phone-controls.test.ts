@@ -279,7 +279,7 @@ describe('phone controls', () => {
     // In the cockpit, a ring high ahead: the messages (the engine's note after a tap) sit in the low
     // lane, above the instrument panel, clear of the ring and of each other.
     await hold(g.page, 'camera: chase / cockpit', 100);
-    await place(-230, 700);
+    await place(-280, 700);
     await g.waitFor(() => ((window.game as unknown as Fly).cockpit().visible ? true : null), null);
     await g.page.touchscreen.tap(faster.x + faster.width / 2, faster.y + faster.height / 2);
     const lane = await g.waitFor(() => {
