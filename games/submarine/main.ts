@@ -2107,7 +2107,8 @@ function draw(): void {
   // answered shows at once, before the depth has gone far.
   const sink = -c.Velocity.y[e]!;
   const rate = Math.abs(sink) >= 0.5 ? ` ${sink > 0 ? '↓' : '↑'}${Math.abs(sink).toFixed(0)} m/s` : '';
-  // The goal and a short readout first; the instruments (tanks, pitch, climb, helm) after, small and dim.
+  // The goal and a short readout first (on a phone the speed in whole m/s, so the line keeps to the
+  // width with the depth rate on it); the instruments (tanks, pitch, climb, helm) after, small and dim.
   // On a phone the score goes on the goal's line (the readout's would wrap).
   goal.textContent =
     end ||
@@ -2117,7 +2118,7 @@ function draw(): void {
   // The clock turns red once par has passed.
   goal.style.color = !state.over && state.time > state.par ? '#ff9e8a' : '#ffe066';
   readoutText.textContent = compact
-    ? `depth ${Math.max(0, depth).toFixed(0)}${ordered} m${rate} · ${speed.toFixed(1)} m/s · `
+    ? `depth ${Math.max(0, depth).toFixed(0)}${ordered} m${rate} · ${speed.toFixed(0)} m/s · `
     : `depth ${Math.max(0, depth).toFixed(0)}${ordered} m${rate} · speed ${speed.toFixed(1)} m/s · score ${state.score}${streak} · `;
   showHull();
   instruments.textContent = [
