@@ -3,7 +3,8 @@
 // each time, let go, and the boat left to stop on its order. Prints the depth gone down (m) for each
 // hold time, and the same for Rise from 80 m. Then the glide: from a steady speed ahead at 40 m (full
 // ahead, and the screw at a share), Ahead let go (or Astern held) and the distance run until the boat
-// is slower than 0.2 m/s.
+// is slower than 0.2 m/s. Last, Dive held (as a key, at the boat's speed) for 1.5 s from a steady
+// speed at 31 m, with the screw stopped, at half and at full ahead: the depth gone at 0.25 to 1.5 s.
 import { importSource } from './build.mjs';
 
 const sub = await importSource(
@@ -74,3 +75,33 @@ for (const v of [top, 9, 6, 3]) {
   const drive = Math.min(1, (v / top) ** 2);
   console.log(`let go ${glide(drive, {})} | Astern ${glide(drive, { astern: true })}`);
 }
+
+/**
+ * From a steady speed at 31 m (the screw at `drive`, share of full ahead, for 15 s), Dive held (as a
+ * key) with Ahead for `held` s: the depth gone at each of `marks` s (m) and the speed down at the end (m/s).
+ */
+function diveUnderWay(drive, held, marks) {
+  const world = createPhysicsWorld(submarine.worldOptions());
+  const h = submarine.build(world, { seed: 1, count: 0, fill: SUBMARINE_NEUTRAL_FILL, position: [0, -31] });
+  world.components.FluidRegion.surface.fill(0);
+  const helm = createHelmState(SUBMARINE_NEUTRAL_FILL);
+  const Y = world.components.Position.y,
+    e = h.hull;
+  for (let i = 0; i < Math.round(15 / world.dt); i++) {
+    steer(world, h, { ...NO_INPUT, ahead: true, drive }, helm);
+    step(world);
+  }
+  const y0 = Y[e];
+  const out = [];
+  let t = 0;
+  for (let i = 0; i < Math.round(held / world.dt); i++) {
+    steer(world, h, { ...NO_INPUT, ahead: true, drive, dive: true, heave: keyHeaveShare(0, t, world.components.Velocity.x[e]) }, helm);
+    step(world);
+    t += world.dt;
+    for (const m of marks) if (Math.abs(t - m) < world.dt / 2) out.push((y0 - Y[e]).toFixed(1).padStart(5));
+  }
+  return `${out.join(' ')} | ${(-world.components.Velocity.y[e]).toFixed(1)} m/s down, ${world.components.Velocity.x[e].toFixed(1)} m/s ahead`;
+}
+const marks = [0.25, 0.5, 0.75, 1, 1.5];
+console.log(`Dive held under way, m gone at ${marks.join(', ')} s:`);
+for (const drive of [0, 0.5, 1]) console.log(`screw ${drive}: ${diveUnderWay(drive, 1.5, marks)}`);

@@ -4,8 +4,8 @@
 // the mines it sets off and the time it takes. The pilot holds Ahead while the boat is slower than
 // lets it reach the next beacon's x as it reaches its depth, Astern (the brake) while it is 2 m/s
 // faster (between the two it lets go and glides), and Dive or Rise (the keys' steady share, helm.ts
-// keyHeaveShare) until the depth order is at the beacon's depth; when the mine warning by the hull comes (mines.ts mineAhead, as the page
-// computes it) it waits S s (default 1: mines.ts MINE_REACTION), then holds the Rise or Dive key as
+// keyHeaveShare at the boat's speed) until the depth order is at the beacon's depth; when the mine warning by the hull comes (mines.ts mineAhead, as the page
+// computes it, on at the share the keys ask for) it waits S s (default 1: mines.ts MINE_REACTION), then holds the Rise or Dive key as
 // told while the warning lasts and holds its depth until it is past the mine. It minds neither the
 // ridges nor the glow trail, and does not turn back for a beacon it passed. Courses: seeds 1 to N
 // (default 20) with 6 and with 10 beacons. --warn: how far ahead the warning looks, s (default
@@ -83,10 +83,13 @@ function fly(seed, count) {
       bx = h.beacons[2 * b],
       by = h.beacons[2 * b + 1];
     const was = told?.index ?? -1;
+    // The warning as the page works it out: on at the share a held key asks for now (keyHeaveShare
+    // at the boat's speed), the pilot being on the keys.
     told = mineAhead(x, y, c.Velocity.x[e], c.Velocity.y[e], state.holdY, mines, live, h.seabed, {
       prefer: told,
       ...(Number.isNaN(warn) ? {} : { horizon: warn }),
       heaving: state.mode === 'diving' || state.mode === 'rising',
+      heave: keyHeaveShare(0, t, c.Velocity.x[e]),
     });
     if (told && told.index !== was) warnedAt = t;
     if (told && t - warnedAt >= react && evade?.index !== told.index) evade = { ...told, warned: warnedAt };
@@ -99,7 +102,7 @@ function fly(seed, count) {
       input.dive = on && evade.side === 'under';
       if (input.rise || input.dive) {
         if (Number.isNaN(keySince)) keySince = t;
-        input.heave = keyHeaveShare(keySince, t);
+        input.heave = keyHeaveShare(keySince, t, c.Velocity.x[e]);
       } else keySince = Number.NaN;
     } else {
       keySince = Number.NaN;
@@ -119,7 +122,7 @@ function fly(seed, count) {
       if (Math.abs(dy) > 2 && !(Math.abs(err) < 2)) {
         input.rise = dy > 0;
         input.dive = dy < 0;
-        input.heave = keyHeaveShare(0, t);
+        input.heave = keyHeaveShare(0, t, c.Velocity.x[e]);
       }
     }
     const held = seabedInput(state, input);

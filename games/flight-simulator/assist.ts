@@ -359,3 +359,30 @@ export function rampKey(value: number, direction: number, dt: number, ramp: KeyR
   const size = (Math.max(Math.abs(value), ramp.start) + ramp.from) * Math.exp(ramp.rise * dt) - ramp.from;
   return direction * Math.min(1, size);
 }
+
+/**
+ * The throttle's response to Faster / Slower, fraction of full thrust: a press steps it at once to
+ * the next multiple of `step` at least `least` away (28 % goes to 40 %, 35 % to 40 %), so a tap on
+ * the phone's button changes the engine by a figure the readout shows (a held button moving it at
+ * `rate` per second moved it 3 % in a short tap, or not at all when the press and release came in
+ * one frame); held past `hold` s it goes on at `rate` per second.
+ */
+export const THROTTLE_KEY = Object.freeze({ step: 0.1, least: 0.05, hold: 0.35, rate: 0.4 });
+
+/**
+ * The throttle after one press of Faster (`direction` 1) or Slower (-1) from `throttle`: the next
+ * multiple of THROTTLE_KEY.step that way, at least THROTTLE_KEY.least away, within [0, 1].
+ * @param throttle the throttle now, fraction of full thrust, in [0, 1].
+ * @param direction 1 (Faster) or -1 (Slower).
+ * @returns the new throttle, in [0, 1].
+ * @throws RangeError on a throttle outside [0, 1] or a direction not 1 or -1.
+ */
+export function throttleStep(throttle: number, direction: number): number {
+  if (!(throttle >= 0 && throttle <= 1)) throw new RangeError(`throttleStep: throttle must be in [0, 1], got ${throttle}`);
+  if (direction !== 1 && direction !== -1) throw new RangeError(`throttleStep: direction must be 1 or -1, got ${direction}`);
+  const { step, least } = THROTTLE_KEY;
+  // In whole steps, rounded to 1e-9 so that 0.3 + 0.1 lands on 4 steps, not just past it.
+  const k = (throttle + direction * least) / step;
+  const n = direction > 0 ? Math.ceil(k - 1e-9) : Math.floor(k + 1e-9);
+  return Math.min(1, Math.max(0, Math.round(n * step * 1e9) / 1e9));
+}

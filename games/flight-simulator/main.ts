@@ -22,7 +22,8 @@
  * ramped (./assist.ts rampKey: a tap is a small correction; climb and dive grow slowly at first to full
  * stick after 0.4 s held, the bank keys start at 0.3 of full stick (BANK_KEY_RAMP) and are full after 0.55 s);
  * Q / E: rudder; X / Z (or Shift, + / -): faster / slower (the throttle: the only input that moves it;
- * no Ctrl, which with W closes the browser's tab);
+ * a press steps it a tenth at once, held it goes on: ./assist.ts throttleStep; no Ctrl, which with W
+ * closes the browser's tab);
  * C: camera (chase / cockpit); P pause, N step, R reset.
  * Touch: a stick under the scene (up climbs, sideways banks), buttons for speed, rudder and camera.
  * Sound: the engine follows the throttle; chimes for rings, a low tone for a miss, a stall horn,
@@ -72,6 +73,8 @@ import {
   heldBank,
   rampKey,
   SURFACE_RATE,
+  THROTTLE_KEY,
+  throttleStep,
 } from './assist';
 import { createAttitudeIndicator } from './attitude-indicator';
 import { createCockpit } from './cockpit';
@@ -220,6 +223,13 @@ function steering(): boolean {
 }
 
 const held = new Set<string>();
+/** The keys (and the phone's Faster / Slower buttons, '+' and '-') that open and close the throttle. */
+const FASTER_KEYS = new Set(['x', 'shift', '+', '=']),
+  SLOWER_KEYS = new Set(['z', '-']);
+/** Game time of the last press of Faster or Slower, s: the held ramp starts THROTTLE_KEY.hold s after it. */
+let throttlePressedAt = -Infinity;
+/** When the throttle last moved by Faster or Slower, ms (performance.now): its note shows THROTTLE_NOTE_MS after. */
+let throttleShownAt = -Infinity;
 /** The on-screen stick's deflection (x right, y up, in [-1, 1]). */
 const stickInput = { x: 0, y: 0 };
 /** The climb / dive and bank keys (./assist.ts rampKey ramps them step by step). */
@@ -269,6 +279,16 @@ addEventListener('keydown', (e) => {
   held.add(key);
   if (e.key === 'Shift' || e.key.startsWith('Arrow') || e.key === ' ') e.preventDefault();
   if (FLIGHT_KEYS.has(key)) pilotGoes();
+  // A press of Faster or Slower steps the throttle at once (./assist.ts throttleStep); held, it
+  // goes on after THROTTLE_KEY.hold s (stepWorld).
+  const way = FASTER_KEYS.has(key) ? 1 : SLOWER_KEYS.has(key) ? -1 : 0;
+  if (way !== 0 && !e.repeat && !e.ctrlKey && !e.metaKey && shellReady && state.phase === 'flying') {
+    state.throttle = throttleStep(state.throttle, way);
+    throttlePressedAt = shell.world.time;
+    throttleShownAt = performance.now();
+    // The readout says the new setting on the next frame too.
+    readoutFrame = 0;
+  }
 });
 addEventListener('keyup', (e) => {
   const key = e.key.toLowerCase();
@@ -331,8 +351,10 @@ function stepWorld(world: PhysicsWorld): void {
   rampKeys(dt);
   const input = pilotInput();
   const s = flightState(world, e);
-  const faster = held.has('x') || held.has('shift') || held.has('+') || held.has('='),
-    slower = held.has('z') || held.has('-');
+  // Held past THROTTLE_KEY.hold s after its press (which stepped it), Faster or Slower moves the throttle on.
+  const ramping = world.time - throttlePressedAt >= THROTTLE_KEY.hold;
+  const faster = ramping && [...FASTER_KEYS].some((k) => held.has(k)),
+    slower = ramping && [...SLOWER_KEYS].some((k) => held.has(k));
   if (params.assist) {
     const c = assist(s, input, assistState, dt);
     state.aileron = approach(state.aileron, c.aileron, SURFACE_RATE.assist, dt);
@@ -345,8 +367,9 @@ function stepWorld(world: PhysicsWorld): void {
     state.rudder = approach(state.rudder, input.yaw, SURFACE_RATE.direct, dt);
   }
   // The throttle stays where the pilot puts it, with or without the assist: the stick never moves it.
-  if (faster) state.throttle = Math.min(1, state.throttle + 0.4 * dt);
-  if (slower) state.throttle = Math.max(0, state.throttle - 0.4 * dt);
+  if (faster) state.throttle = Math.min(1, state.throttle + THROTTLE_KEY.rate * dt);
+  if (slower) state.throttle = Math.max(0, state.throttle - THROTTLE_KEY.rate * dt);
+  if (faster || slower) throttleShownAt = performance.now();
   const full = (params.authority * Math.PI) / 180;
   const surfaces = handles.surfaces;
   // Nose up: the elevator's trailing edge up, less tail lift.
@@ -693,9 +716,13 @@ statusEl.dataset.hud = 'flight-status';
 statusEl.style.cssText = `font: ${compact ? 13 : 14}px/1.4 system-ui, sans-serif; color: #eef3f8; padding: 4px 10px;`;
 const goalLine = document.createElement('div');
 goalLine.dataset.hud = 'goal';
-goalLine.style.cssText = 'font-weight: 700; color: #ffd166;';
+// One line each, whatever they say: the header keeps its two lines (a phone's goal line wrapped to
+// two after a miss added its penalty, and pushed the scene down); on a phone the words are shorter.
+const ONE_LINE = 'white-space: nowrap; overflow: hidden; text-overflow: ellipsis;';
+goalLine.style.cssText = `font-weight: 700; color: #ffd166; ${ONE_LINE}`;
 const readLine = document.createElement('div');
 readLine.dataset.hud = 'readout';
+readLine.style.cssText = ONE_LINE;
 statusEl.append(goalLine, readLine);
 layout.status.append(statusEl);
 
@@ -767,12 +794,15 @@ function updateGoal(): void {
   const penalty = state.missed > 0 ? ` (+${MISS_PENALTY * state.missed} s)` : '';
   const stars = courseStars(state.missed);
   const courseClock = `${clock(courseTime(state.time, state.missed))}${penalty} · ${'★'.repeat(stars)}${'☆'.repeat(3 - stars)}`;
+  const distance = n < 0 ? '' : distanceText(Math.hypot(rings[n]!.x - at.x, rings[n]!.y - at.y, rings[n]!.z - at.z));
   const text =
     state.phase === 'crashed'
       ? `Crashed · ${state.score} of ${total} rings`
       : n < 0
-        ? `Course done · ${state.score} of ${total} rings in ${courseClock}`
-        : `Fly through ring ${n + 1} of ${total} · ${distanceText(Math.hypot(rings[n]!.x - at.x, rings[n]!.y - at.y, rings[n]!.z - at.z))} · ${courseClock}`;
+        ? `${compact ? 'Done' : 'Course done'} · ${state.score} of ${total} rings in ${courseClock}`
+        : compact
+          ? `Ring ${n + 1} of ${total} · ${distance} · ${courseClock}`
+          : `Fly through ring ${n + 1} of ${total} · ${distance} · ${courseClock}`;
   if (goalLine.textContent !== text) goalLine.textContent = text;
   // Red for 2 s after a miss: the time it cost shows where the clock is.
   goalLine.style.color = shell.world.time - missedAt < 2 ? '#ff8a5a' : '#ffd166';
@@ -782,8 +812,9 @@ function updateHud(i: ReturnType<typeof instruments>): void {
   const total = rings.length;
   const speed = `${i.speed.toFixed(0)} m/s`;
   const missedNote = state.missed > 0 ? ` · missed ${state.missed}` : '';
+  // On a phone the misses are said by the goal line's penalty and stars, not again here.
   readLine.textContent = compact
-    ? `${speed} · alt ${i.altitude.toFixed(0)} m · engine ${(state.throttle * 100).toFixed(0)}% · rings ${state.score}/${total}${missedNote}`
+    ? `${speed} · alt ${i.altitude.toFixed(0)} m · engine ${(state.throttle * 100).toFixed(0)}% · rings ${state.score}/${total}`
     : `${speed} · alt ${i.altitude.toFixed(0)} m · throttle ${(state.throttle * 100).toFixed(0)}% · rings ${state.score}/${total}${missedNote}`;
   if (!compact)
     panelEl.textContent = [
@@ -1059,15 +1090,6 @@ let tipText = '';
  */
 let tipRing = -1,
   tipWay: RingWay = { side: 0, up: 0, sideAmount: '', upAmount: '' };
-/**
- * Whether the tip has moved to the scene's bottom for ring `tipRing`: it does when the ring on the
- * screen runs under it (a ring above the aircraft sat behind the tip box), and stays there until the
- * next lesson ring, so it does not jump back and forth as the ring moves.
- */
-let tipLow = false;
-/** Where the tip sits, % of the scene's height from its top: over the sky, or low while `tipLow`. */
-const TIP_TOP = compact ? 11 : 12,
-  TIP_LOW = compact ? 90 : 91;
 
 /** The key that climbs (up, or down with the pilot's pitch) or dives, for `up` +1 or -1. */
 function climbKey(up: number): string {
@@ -1082,7 +1104,6 @@ function lessonTip(): string {
     return '';
   }
   if (tipRing !== i) {
-    tipLow = false;
     tipGoneAt = Infinity;
     const V = shell.world.components.Velocity,
       e = handles.body;
@@ -1106,11 +1127,8 @@ function waitLine(): string {
   return touchFirst ? 'Paused: move the stick to fly on.' : `Paused: press ${key} to fly on.`;
 }
 
-/**
- * Shows the lesson tip for the next ring, if any; with `placed` (the ring's place on the screen,
- * `ringAim`, is this frame's) it moves the tip low when the ring runs under it.
- */
-function showTip(placed = true): void {
+/** Shows the lesson tip for the next ring, if any (its place: `placeMessages`). */
+function showTip(): void {
   const text = lessonTip();
   const wait = text ? waitLine() : '';
   if (text !== tipText || wait !== tipWait) {
@@ -1121,28 +1139,178 @@ function showTip(placed = true): void {
     tipWaitEl.style.display = wait ? 'block' : 'none';
     tip.style.display = text ? 'block' : 'none';
   }
-  if (placed && text && !tipLow && ringAim.inView && ringCoversTip()) {
-    tipLow = true;
-    // On a phone the kit's card of touch gestures (game-kit hud.ts showTouchHint) may still be up
-    // over the scene's bottom for a few seconds: it goes now, as it does at a touch on the scene;
-    // the tip says what to do with the stick for this ring.
-    layout.stage.querySelector('.bp-touch-hint')?.classList.add('bp-gone');
-  }
-  // The cockpit's instrument panel covers the scene's bottom: there the tip stays on top.
-  const top = `${tipLow && state.camera !== 'cockpit' ? TIP_LOW : TIP_TOP}%`;
-  if (tip.style.top !== top) tip.style.top = top;
 }
 
-/** Whether the next ring's circle on the screen (`ringAim.ring`, halo included) reaches into the tip's box. */
-function ringCoversTip(): boolean {
-  const stage = layout.stage.getBoundingClientRect(),
-    box = tip.getBoundingClientRect();
-  const [cx, cy, r] = ringAim.ring as [number, number, number];
-  const x0 = box.left - stage.left,
-    y0 = box.top - stage.top;
-  const dx = Math.max(x0 - cx, 0, cx - (x0 + box.width)),
-    dy = Math.max(y0 - cy, 0, cy - (y0 + box.height));
-  return Math.hypot(dx, dy) < r;
+// ---- A ring behind the aircraft: the aircraft fades so the ring shows through --------------------
+
+/**
+ * The drawn aircraft's opacity now, in [PLANE_FADED, 1] (tests). In the chase view a ring low ahead
+ * sits behind the aircraft on the screen (a stranger lost a low ring there): while the next ring's
+ * centre is within half its radius of the aircraft's box on the screen, the aircraft eases to
+ * PLANE_FADED, see-through, and back once it is clear.
+ */
+let planeOpacity = 1;
+/** The aircraft's opacity while a ring is behind it. */
+const PLANE_FADED = 0.3;
+/** The aircraft's box on the screen as last drawn (px: left, top, width, height; tests). */
+const planeBox: [number, number, number, number] = [0, 0, 0, 0];
+const corner = new Vector3();
+planeGeometry.computeBoundingBox();
+const modelBox = planeGeometry.boundingBox!;
+/**
+ * The model's outermost points (body frame, m): nose, tail, fin top, keel and the wing tips, so
+ * that the box round them on the screen is the aircraft's (the corners of its 3D bounding box, most
+ * of them empty air, made a box twice as tall that faded the aircraft in a bank with the ring well above it).
+ */
+const PLANE_POINTS: readonly (readonly [number, number, number])[] = [
+  [modelBox.max.x, 0, 0],
+  [modelBox.min.x, 0, 0],
+  [modelBox.min.x, modelBox.max.y, 0],
+  [0, modelBox.min.y, 0],
+  [0, 0, modelBox.max.z],
+  [0, 0, modelBox.min.z],
+];
+/** Fades the aircraft while the next ring is behind it on the screen (chase view), eased over `dt` s. */
+function fadeOverRing(dt: number): void {
+  let behind = false;
+  if (state.camera === 'chase' && state.phase === 'flying') {
+    let x0 = Infinity,
+      y0 = Infinity,
+      x1 = -Infinity,
+      y1 = -Infinity;
+    const w = app.canvas.clientWidth,
+      h = app.canvas.clientHeight;
+    for (const [px, py, pz] of PLANE_POINTS) {
+      corner.set(px, py, pz).applyQuaternion(drawnQ).add(at).project(app.camera);
+      const x = ((corner.x + 1) / 2) * w,
+        y = ((1 - corner.y) / 2) * h;
+      x0 = Math.min(x0, x);
+      x1 = Math.max(x1, x);
+      y0 = Math.min(y0, y);
+      y1 = Math.max(y1, y);
+    }
+    planeBox.splice(0, 4, x0, y0, x1 - x0, y1 - y0);
+    if (ringAim.inView) {
+      const [cx, cy, r] = ringAim.ring as [number, number, number];
+      behind = cx > x0 - r / 2 && cx < x1 + r / 2 && cy > y0 - r / 2 && cy < y1 + r / 2;
+    }
+  }
+  const target = behind ? PLANE_FADED : 1;
+  planeOpacity = approach(planeOpacity, target, 4, dt);
+  const see = planeOpacity < 1;
+  if (planeMaterial.transparent !== see) {
+    planeMaterial.transparent = see;
+    planeMaterial.depthWrite = !see;
+    planeMaterial.needsUpdate = true;
+  }
+  planeMaterial.opacity = planeOpacity;
+}
+
+// ---- The engine's note and the message lane ------------------------------------------------------
+
+/**
+ * A note of the engine's setting for THROTTLE_NOTE_MS after Faster or Slower moved it ("Engine 40 %"
+ * and a bar of tenths): a tap of the phone's Faster button shows what it did where the eye is.
+ */
+const throttleNote = overlay(
+  `left: 50%; padding: 2px 12px; border-radius: 10px; background: rgba(8, 12, 20, 0.8); color: #8fe3ff; font: 700 ${compact ? 15 : 17}px system-ui, sans-serif; white-space: nowrap; display: none;`,
+);
+throttleNote.dataset.hud = 'throttle-note';
+const throttleWords = document.createElement('span'),
+  throttleBar = document.createElement('span'),
+  throttleFill = document.createElement('span');
+throttleBar.style.cssText = `display: inline-block; vertical-align: middle; margin-left: 8px; width: ${compact ? 70 : 90}px; height: 8px; border-radius: 4px; background: rgba(143, 227, 255, 0.25); overflow: hidden;`;
+throttleFill.style.cssText = 'display: block; height: 100%; background: #8fe3ff;';
+throttleBar.append(throttleFill);
+throttleNote.append(throttleWords, throttleBar);
+/** How long the engine's note stays after the throttle last moved, ms. */
+const THROTTLE_NOTE_MS = 1500;
+/** Shows the engine's note while the throttle moved by Faster or Slower less than THROTTLE_NOTE_MS ago. */
+function showThrottleNote(): void {
+  const on = state.phase === 'flying' && performance.now() - throttleShownAt < THROTTLE_NOTE_MS;
+  const text = on ? `Engine ${(state.throttle * 100).toFixed(0)} %` : '';
+  if (throttleWords.textContent !== text) throttleWords.textContent = text;
+  const fill = `${(state.throttle * 100).toFixed(0)}%`;
+  if (throttleFill.style.width !== fill) throttleFill.style.width = fill;
+  const display = on ? 'block' : 'none';
+  if (throttleNote.style.display !== display) throttleNote.style.display = display;
+}
+
+/**
+ * Every message over the scene (the warning, the banner, the turn-back cue, the engine's note and the
+ * lesson tip, in that order) sits in one column, one under the other, never on each other: at the
+ * scene's top, or in its low lane (above the cockpit's instrument panel in that view, so the gauges
+ * stay clear) while the top one would cover the next ring, its label or the flight-path marker and
+ * the low one would not, and back up once the top is clear by LANE_RETURN px (the margin keeps the
+ * column from jumping back and forth as the ring moves). Each had its own fixed place: the banner
+ * and the turn-back cue sat over the ring ahead, the warning over the cockpit's gauges.
+ */
+let messagesLow = false;
+/** Gap between the messages, and between them and the scene's edge or the cockpit's panel, px. */
+const LANE_GAP = compact ? 6 : 8;
+/** How far clear of the ring, its label and the marker the top lane must be for the messages to go back up to it, px. */
+const LANE_RETURN = 40;
+/** How far over the cockpit's panel top its rim and the figures on it reach, px. */
+const PANEL_RIM = 18;
+/** Where the messages sat last (tests): in the low lane or not, and each shown one's name and box (px in the stage: left, top, width, height). */
+const messageLayout = { low: false, boxes: [] as { hud: string; box: [number, number, number, number] }[] };
+/** What the messages must not cover, as boxes (px: left, top, width, height) and the ring's circle. */
+function coveredBy(box: readonly number[], pad = 0): number {
+  const [x0, y0, w0, h0] = box as [number, number, number, number];
+  const x = x0 - pad,
+    y = y0 - pad,
+    bw = w0 + 2 * pad,
+    bh = h0 + 2 * pad;
+  let n = 0;
+  const boxHit = (o: readonly number[]) => x < o[0]! + o[2]! && o[0]! < x + bw && y < o[1]! + o[3]! && o[1]! < y + bh;
+  if (ringAim.inView && ringPointer.style.display !== 'none') {
+    const [cx, cy, r] = ringAim.ring as [number, number, number];
+    const dx = Math.max(x - cx, 0, cx - (x + bw)),
+      dy = Math.max(y - cy, 0, cy - (y + bh));
+    if (Math.hypot(dx, dy) < r) n++;
+    if (boxHit(ringAim.box)) n++;
+  }
+  if (marker.style.display !== 'none')
+    if (boxHit([pathAim.x - MARKER_HALF[0], pathAim.y - MARKER_HALF[1], 2 * MARKER_HALF[0], 2 * MARKER_HALF[1]])) n++;
+  return n;
+}
+/** Places the messages shown now in their lane (`messagesLow`), after the ring's label and the marker are placed. */
+function placeMessages(): void {
+  const items = [warningEl, banner, turnBack, throttleNote, tip].filter((el) => el.style.display !== 'none');
+  const w = app.canvas.clientWidth,
+    h = app.canvas.clientHeight;
+  // In the cockpit view the lane ends over the panel's rim (the phone's heading figure sits on it).
+  const cockpitOn = state.camera === 'cockpit' && state.phase !== 'crashed' && cockpit.panelTop() > 0;
+  const bottom = cockpitOn ? cockpit.panelTop() - LANE_GAP - PANEL_RIM : h - LANE_GAP;
+  const sizes = items.map((el) => [el.offsetWidth, el.offsetHeight] as const);
+  const total = sizes.reduce((sum, [, bh]) => sum + bh + LANE_GAP, -LANE_GAP);
+  const boxesAt = (low: boolean): [number, number, number, number][] => {
+    let y = low ? Math.max(LANE_GAP, bottom - total) : LANE_GAP;
+    return sizes.map(([bw, bh]) => {
+      const box: [number, number, number, number] = [w / 2 - bw / 2, y, bw, bh];
+      y += bh + LANE_GAP;
+      return box;
+    });
+  };
+  const covers = (low: boolean, pad = 0) => boxesAt(low).reduce((n, b) => n + coveredBy(b, pad), 0);
+  if (items.length > 0) {
+    const here = covers(messagesLow);
+    // Back to the top once it is clear by LANE_RETURN px (the low lane covers the aircraft in the chase view).
+    if ((here > 0 && covers(!messagesLow) < here) || (messagesLow && covers(false, LANE_RETURN) === 0)) {
+      messagesLow = !messagesLow;
+      // On a phone the kit's card of touch gestures (game-kit hud.ts showTouchHint) may still be up
+      // over the scene's bottom for a few seconds: it goes now, as it does at a touch on the scene.
+      if (messagesLow) layout.stage.querySelector('.bp-touch-hint')?.classList.add('bp-gone');
+    }
+  }
+  const boxes = boxesAt(messagesLow);
+  messageLayout.low = messagesLow;
+  messageLayout.boxes = items.map((el, k) => ({ hud: el.dataset.hud ?? '', box: boxes[k]! }));
+  items.forEach((el, k) => {
+    const top = `${boxes[k]![1]}px`;
+    if (el.style.top !== top) el.style.top = top;
+    if (el.style.transform !== 'translate(-50%, 0px)') el.style.transform = 'translate(-50%, 0px)';
+  });
 }
 
 // ---- The flight-path marker: where the aircraft is going, at the next ring's distance ------------
@@ -1244,6 +1412,8 @@ function chaseOffsetNow(): [number, number] {
 /** The camera's field of view, degrees: `base`, widened by up to `fast` more between `from` and `to` m/s (speed shows). */
 const FOV = Object.freeze({ base: 64, fast: 10, from: 110, to: 170 });
 let readoutFrame = 0;
+/** performance.now() of the last frame the aircraft's fade was eased in, ms. */
+let lastFade = 0;
 /** The phase the HUD showed last. */
 let shownPhase = '';
 
@@ -1272,7 +1442,9 @@ function frame(): void {
       shownPhase = state.phase;
       updateHud(crashReadings);
     }
-    showTip(false);
+    showTip();
+    showThrottleNote();
+    placeMessages();
     return;
   }
   if (!renderer.drawnPosition(handles.body, p3) || !renderer.drawnOrientation(handles.body, q4)) return;
@@ -1333,6 +1505,8 @@ function frame(): void {
   drawGuide(at);
   markPath();
   pointToNextRing();
+  fadeOverRing(Math.min(0.2, Math.max(0, (performance.now() - lastFade) / 1000)));
+  lastFade = performance.now();
   showTip();
   engine.set(state.phase === 'crashed' ? 0 : 0.25 + 0.75 * state.throttle);
   const i = crashReadings ?? instruments(world);
@@ -1352,6 +1526,8 @@ function frame(): void {
     updateHud(i);
   }
   showTurnBack();
+  showThrottleNote();
+  placeMessages();
 }
 
 /** Instrument readings of the aircraft now: speed, altitude, attitude, heading, the wing's angle of attack (m/s, m, degrees). */
@@ -1450,6 +1626,12 @@ shell.expose({
   tipUntil: () => tipGoneAt,
   /** The turn-back cue's text now ('' when none shows) and how long the aircraft has flown away from the next ring, s. */
   turnBack: () => ({ text: turnBackText, awayFor }),
+  /** The messages over the scene as last placed: in the low lane or not, each shown one's name (data-hud) and box (px: left, top, width, height). */
+  messages: () => ({ low: messageLayout.low, boxes: messageLayout.boxes.map((m) => ({ hud: m.hud, box: [...m.box] })) }),
+  /** The engine's note now ('' when it does not show). */
+  throttleNote: () => (throttleNote.style.display === 'none' ? '' : (throttleNote.textContent ?? '')),
+  /** The drawn aircraft's opacity (below 1 while the next ring is behind it on the screen) and its box on the screen (px). */
+  planeFade: () => ({ opacity: planeOpacity, box: [...planeBox] }),
   /** The banner's text now ('' when none shows) and the warning. */
   banner: () => ({ text: banner.style.display === 'none' ? '' : (banner.textContent ?? ''), warning: state.warning }),
   params,

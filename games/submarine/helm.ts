@@ -13,7 +13,7 @@
  * - Dive / Rise (held): the vertical thrusters and the planes push at once, so the boat starts to
  *   move before the water in the tanks has moved; the tanks go heavier / lighter than neutral
  *   (enough to carry the boat at the asked speed against drag, more while it is slower than that);
- *   the bow dips (rises) by `HELM.diveAngle`. On the surface Dive floods the tanks from empty, the
+ *   the bow dips (rises) by `HELM.diveAngle`, twice that at full speed. On the surface Dive floods the tanks from empty, the
  *   fore tank first. Rise slows the climb near the surface and blows the tanks dry once the deck is
  *   out. Released on the surface: the tanks stay blown and the boat floats.
  * - Under way the planes give first what they can of the push across the hull (their lift grows
@@ -136,7 +136,11 @@ export const HELM = Object.freeze({
   ballastGain: 0.2,
   /** Pitch while a Nose key is held, rad (15 degrees). */
   noseAngle: 15 * DEG,
-  /** Pitch diving (bow down) or rising (bow up) adds, rad (5 degrees). */
+  /**
+   * Pitch diving (bow down) or rising (bow up) adds at rest, rad (5 degrees); twice that at
+   * KEY_HEAVE_FULL_SPEED and faster, in proportion to the speed, so a dive under way shows in the
+   * bow at once.
+   */
   diveAngle: 5 * DEG,
   /** Time constant of the vertical speed loop, s: the thrusters push m dv / heaveTime. */
   heaveTime: 0.2,
@@ -202,25 +206,40 @@ export function coastBrake(mass: number, u: number, throttle: number): number {
 }
 
 /**
- * The share of full Dive / Rise (`HelmInput.heave`) a Dive or Rise key asks for: a steady 0.6
+ * The share of full Dive / Rise (`HelmInput.heave`) a Dive or Rise key asks for at rest: a steady 0.6
  * (6 m/s down, 4.8 m/s up), from the first moment it is held, so the depth gone grows in step with
  * the time held (from a hover about 5 m for 1 s, 12 m for 2 s, 24 m for 4 s) and a short tap still
  * moves the depth order by most of a metre. (A key that asked for the full 10 m/s at once took the boat
  * 11 m in 1.5 s; one that ramped up from a tenth made the depth grow with the square of the time.)
- * The on-screen stick asks for as much as it is pushed, up to all of it.
+ * Under way the key asks for more (`KEY_HEAVE_SHARE_FAST`). The on-screen stick asks for as much as it
+ * is pushed, up to all of it.
  */
 export const KEY_HEAVE_SHARE = 0.6;
 
 /**
- * The share of full Dive / Rise (`HelmInput.heave`) a key held since game time `since` asks for at
- * game time `now` (s): `KEY_HEAVE_SHARE`, whatever the time held (kept as a function of the hold so
- * that the page and the pilot script ask the helm the same way).
- * @throws RangeError when `since` or `now` is not finite.
+ * The share a Dive or Rise key asks for at `KEY_HEAVE_FULL_SPEED` ahead or faster: 0.8 (8 m/s down).
+ * At full ahead a boat diving at the rest share's 6 m/s ran 18 m ahead for 5 m down in 1.5 s, and a
+ * stranger found the dive slow to answer. (All of it, 10 m/s, took a pilot on the keys into more
+ * mines and seabed slopes: scripts/submarine-pilot.mjs.)
  */
-export function keyHeaveShare(since: number, now: number): number {
+export const KEY_HEAVE_SHARE_FAST = 0.8;
+
+/** The speed ahead (or astern) at which a key's share reaches `KEY_HEAVE_SHARE_FAST`, m/s (the boat's top speed is 12.9 m/s). */
+export const KEY_HEAVE_FULL_SPEED = 12;
+
+/**
+ * The share of full Dive / Rise (`HelmInput.heave`) a key held since game time `since` asks for at
+ * game time `now` (s) with the boat moving at `u` m/s along its hull (ahead or astern): from
+ * `KEY_HEAVE_SHARE` at rest up to `KEY_HEAVE_SHARE_FAST` at `KEY_HEAVE_FULL_SPEED` and faster, in
+ * proportion to the speed, whatever the time held (a function of the hold so that the page and the
+ * pilot script ask the helm the same way).
+ * @throws RangeError when `since`, `now` or `u` is not finite.
+ */
+export function keyHeaveShare(since: number, now: number, u = 0): number {
   if (!Number.isFinite(since)) throw new RangeError(`keyHeaveShare: since must be finite, got ${since}`);
   if (!Number.isFinite(now)) throw new RangeError(`keyHeaveShare: now must be finite, got ${now}`);
-  return KEY_HEAVE_SHARE;
+  if (!Number.isFinite(u)) throw new RangeError(`keyHeaveShare: u must be finite m/s, got ${u}`);
+  return KEY_HEAVE_SHARE + (KEY_HEAVE_SHARE_FAST - KEY_HEAVE_SHARE) * Math.min(1, Math.abs(u) / KEY_HEAVE_FULL_SPEED);
 }
 
 const clamp = (v: number, lo: number, hi: number): number => (v < lo ? lo : v > hi ? hi : v);
@@ -352,7 +371,9 @@ export function steer(world: PhysicsWorld, handles: SubmarineHandles, input: Hel
   // Pitch: the angle asked for (positive: nose up), by the thrusters now and by the water for good.
   const pitch =
     HELM.noseAngle * (Number(input.noseUp) - Number(input.noseDown)) +
-    HELM.diveAngle * (Number(state.mode === 'rising') - Number(state.mode === 'diving'));
+    HELM.diveAngle *
+      (1 + Math.min(1, Math.abs(u) / KEY_HEAVE_FULL_SPEED)) *
+      (Number(state.mode === 'rising') - Number(state.mode === 'diving'));
   // Static trim (forces/ballast.ts): arm capacity (f_fore - f_aft) g cos = -M g GM sin, so the
   // half difference is -tan(pitch) M GM / (2 arm capacity).
   // Limited so that both tanks stay within [0, 1] around the mean (the thrusters give the rest).

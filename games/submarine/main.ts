@@ -300,6 +300,11 @@ addEventListener('blur', () => held.clear());
 /** Game time a Dive or Rise key was first held (s), NaN while none is. */
 let heaveKeySince = Number.NaN;
 
+/** The boat's horizontal speed now, m/s (positive ahead): a held Dive or Rise key asks for more under way (./helm.ts keyHeaveShare). */
+function speedAhead(): number {
+  return shell.world.components.Velocity.x[handles.hull]!;
+}
+
 /** The controls held now, at game time `now` (s): keys, the on-screen buttons, which send the same keys, and the stick. */
 function heldInput(now: number): HelmInput {
   const heaveKey = held.has('s') || held.has('w') || held.has('arrowdown') || held.has('arrowup');
@@ -312,7 +317,7 @@ function heldInput(now: number): HelmInput {
     noseUp: held.has('e'),
     ahead: held.has('d') || held.has('arrowright') || stickInput.x > STICK_DEAD,
     astern: held.has('a') || held.has('arrowleft') || stickInput.x < -STICK_DEAD,
-    heave: heaveKey ? keyHeaveShare(heaveKeySince, now) : stickShare(stickInput.y, false),
+    heave: heaveKey ? keyHeaveShare(heaveKeySince, now, speedAhead()) : stickShare(stickInput.y, false),
     drive: stickShare(stickInput.x, held.has('a') || held.has('d') || held.has('arrowleft') || held.has('arrowright')),
   };
 }
@@ -1256,6 +1261,86 @@ function drawDepthGauge(W: number, H: number, depth: number, order: number, bed:
   gauge_.target = gaugeTarget.visible ? textBox(gaugeTarget) : [0, 0, 0, 0];
 }
 
+/** A text's box on the screen (x, y, width, height, px). */
+function boxOf(t: Text): [number, number, number, number] {
+  const b = t.getBounds();
+  return [b.x, b.y, b.width, b.height];
+}
+/**
+ * The words over the scene as last drawn, after `declutter` (tests): each shown one's name and box
+ * (x, y, width, height, px).
+ */
+const shownLabels: { name: string; box: number[] }[] = [];
+/**
+ * Keeps the words over a scene `H` px high off each other, once everything is drawn. First what the
+ * player acts on: the mine warning's tag, the beacon pointer's label and its badge, the boat's depth
+ * on the gauge. Then the messages, in one area: the first-time hint at the scene's top, the pickup
+ * banner under it on a phone (in the scene's upper part on a desktop), each moved down past anything
+ * it would cover; the hit's label stays over its place, moved up or down past what it would cover.
+ * Last the tags that only add to what the scene shows (the target's depth on the gauge, the gauge's
+ * and the ladder's figures, the other beacons' tags, the glows' points), each hidden where it would
+ * cover anything placed before it. (On a phone they were drawn on each other: the banner over the
+ * mine's tag, the ladder's figures through the hint.)
+ */
+function declutter(H: number): void {
+  const taken: number[][] = [];
+  shownLabels.length = 0;
+  const take = (name: string, box: number[]) => {
+    taken.push(box);
+    shownLabels.push({ name, box: [...box] });
+  };
+  const clear = (box: readonly number[]) => !taken.some((b) => overlaps(box, b, 2));
+  if (mineTag.visible && mineWarning.text) take('mine warning', mineWarning.box);
+  if (pointer.visible && pointer.text) {
+    take('pointer', [pointer.x - pointer.width / 2 - 7, pointer.y - pointer.height / 2 - 2, pointer.width + 14, pointer.height + 4]);
+    if (aim.badge[2]! > 0) take('badge', aim.badge);
+  }
+  if (gaugeDepth?.visible) take('depth', boxOf(gaugeDepth));
+  if (glowNote.style.display !== 'none') {
+    const stage = app.canvas.getBoundingClientRect(),
+      b = glowNote.getBoundingClientRect();
+    take('glow hint', [b.left - stage.left, b.top - stage.top, b.width, b.height]);
+  }
+  // A text moved down (or up: `dir` -1) past every box it covers, inside the scene.
+  const slide = (t: Text, dir: number) => {
+    for (let n = 0; n < 8; n++) {
+      const box = boxOf(t),
+        hit = taken.find((b) => overlaps(box, b, 2));
+      if (!hit) return;
+      const to = dir > 0 ? hit[1]! + hit[3]! + 6 + box[3] / 2 : hit[1]! - 6 - box[3] / 2;
+      if (to < box[3] / 2 + 4 || to > H - box[3] / 2 - 4) return;
+      t.y = to;
+    }
+  };
+  if (banner.visible) {
+    // On a phone the banner sits at the top of the scene with the other messages, under the hint.
+    if (compact) banner.y = 8 + banner.height / 2;
+    slide(banner, 1);
+    take('banner', boxOf(banner));
+  }
+  if (hitLabel.visible && hitLabel.alpha > 0) {
+    const y0 = hitLabel.y;
+    slide(hitLabel, -1);
+    if (!clear(boxOf(hitLabel))) {
+      hitLabel.y = y0;
+      slide(hitLabel, 1);
+    }
+    take('hit', boxOf(hitLabel));
+  }
+  const minor: [string, Text][] = [];
+  if (gaugeTarget) minor.push(['target depth', gaugeTarget]);
+  for (const m of ladderMarks) minor.push(['ladder', m]);
+  for (let i = 0; i < otherTags; i++) minor.push(['beacon tag', tags[i]!]);
+  for (const l of popLabels) minor.push(['glow points', l]);
+  for (const m of gaugeMarks) minor.push(['gauge figure', m]);
+  for (const [name, t] of minor) {
+    if (!t.visible || t.alpha <= 0) continue;
+    const box = boxOf(t);
+    if (box[2] <= 0 || !clear(box)) t.visible = false;
+    else take(name, box);
+  }
+}
+
 /** The depth gauge's tags as last drawn (tests): the boat's depth and the target's, each x, y, width, height, px (zeros while hidden). */
 const gauge_ = { depth: [0, 0, 0, 0], target: [0, 0, 0, 0] };
 
@@ -1992,6 +2077,7 @@ function draw(): void {
     aim.index >= 0 ? -handles.beacons[2 * aim.index + 1]! : Number.NaN,
   );
   drawHits(t, k, sx, sy, W, H, sy(hyw) - (Hh + 2.5) * k);
+  declutter(H);
   drawPause(W, H);
   // The hull gauge at a hit: red and enlarged, fading over GAUGE_FLASH s of game time.
   const hitAge = hitMarks.length > 0 ? t - hitMarks[hitMarks.length - 1]!.time : Number.POSITIVE_INFINITY;
@@ -2017,7 +2103,12 @@ function draw(): void {
   // The depth, and the depth ordered while the boat is a metre or more from it ("depth 30 → 34 m").
   const ordered = Number.isFinite(state.holdY) && Math.abs(state.holdY + depth) >= 1 ? ` → ${(-state.holdY).toFixed(0)}` : '';
   const streak = state.streak > 1 ? ` ×${Math.min(GLOW_STREAK_MAX, state.streak)}` : '';
-  // The goal and a short readout first; the instruments (tanks, pitch, climb, helm) after, small and dim.
+  // The rate the depth changes, while it does by half a metre a second or more ("↓6 m/s"): a dive
+  // answered shows at once, before the depth has gone far.
+  const sink = -c.Velocity.y[e]!;
+  const rate = Math.abs(sink) >= 0.5 ? ` ${sink > 0 ? '↓' : '↑'}${Math.abs(sink).toFixed(0)} m/s` : '';
+  // The goal and a short readout first (on a phone the speed in whole m/s, so the line keeps to the
+  // width with the depth rate on it); the instruments (tanks, pitch, climb, helm) after, small and dim.
   // On a phone the score goes on the goal's line (the readout's would wrap).
   goal.textContent =
     end ||
@@ -2027,8 +2118,8 @@ function draw(): void {
   // The clock turns red once par has passed.
   goal.style.color = !state.over && state.time > state.par ? '#ff9e8a' : '#ffe066';
   readoutText.textContent = compact
-    ? `depth ${Math.max(0, depth).toFixed(0)}${ordered} m · ${speed.toFixed(1)} m/s · `
-    : `depth ${Math.max(0, depth).toFixed(0)}${ordered} m · speed ${speed.toFixed(1)} m/s · score ${state.score}${streak} · `;
+    ? `depth ${Math.max(0, depth).toFixed(0)}${ordered} m${rate} · ${speed.toFixed(0)} m/s · `
+    : `depth ${Math.max(0, depth).toFixed(0)}${ordered} m${rate} · speed ${speed.toFixed(1)} m/s · score ${state.score}${streak} · `;
   showHull();
   instruments.textContent = [
     `seabed ${(-floor).toFixed(0)} m`,
@@ -2059,6 +2150,8 @@ shell.expose({
   glowHint: () => ({ text: glowNote.textContent ?? '', visible: glowNote.style.display !== 'none' }),
   /** The depth ladder by the boat as last drawn: its opacity in [0, 1] and the figures shown ("30 m"). */
   depthLadder: () => ({ alpha: ladder.alpha, marks: ladderMarks.filter((m) => m.visible).map((m) => m.text) }),
+  /** The words over the scene as last drawn, kept off each other: each shown one's name and box (x, y, width, height, px). */
+  labels: () => shownLabels.map((l) => ({ name: l.name, box: [...l.box] })),
   /** The depth gauge's tags as last drawn: the boat's depth and the target's, each x, y, width, height, px (zeros while hidden). */
   gaugeTags: () => ({ depth: [...gauge_.depth], target: [...gauge_.target] }),
   /** The camera as last drawn: centre (x, y, m), zoom (px/m), look-ahead (m, before its limit) and shake (px). */

@@ -202,8 +202,9 @@ export interface MineAhead {
  * still make it (or can make neither) and it runs into no other mine, so the warning does not flip
  * as the hull turns to it; `heaving`: Dive or Rise is held (default false); `heave`: the share of
  * the helm's dive or climb speed that the held Dive or Rise asks for, in (0, 1] (default 1; a key
- * asks for KEY_HEAVE_SHARE, 0.6, ./helm.ts): a course that took a key's dive at the full 10 m/s ran
- * under a mine that the boat, diving at 6 m/s, met, and the warning came only at the mine.
+ * asks for ./helm.ts keyHeaveShare, 0.6 at rest to 0.8 at full speed): a course that took a key's
+ * dive at the full 10 m/s ran under a mine that the boat, diving at 6 m/s, met, and the warning came
+ * only at the mine.
  * @throws RangeError when x, y, vx or vy is not finite, `horizon` is not positive or `heave` is not in (0, 1].
  */
 export function mineAhead(

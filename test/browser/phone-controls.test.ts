@@ -215,6 +215,105 @@ describe('phone controls', () => {
     expect(Math.max(...fits.measured.map((m) => m.lines))).toBe(2);
   });
 
+  it('flight simulator: a tap of Faster steps the engine and says so; the header keeps two lines after misses; a ring under the nose shows through the aircraft; messages keep clear of the ring and the gauges', async () => {
+    const g = await h.openGame('flight-simulator', PHONE);
+    type Box = [number, number, number, number];
+    type Fly = {
+      state: { throttle: number; missed: number; time: number };
+      rings(): { x: number; y: number; z: number }[];
+      aircraftBody(): number;
+      world: { time: number; components: { Position: { x: Float64Array; y: Float64Array; z: Float64Array } } };
+      planeFade(): { opacity: number; box: number[] };
+      ringPointer(): { inView: boolean; ring: number[] };
+      messages(): { low: boolean; boxes: { hud: string; box: Box }[] };
+      cockpit(): { visible: boolean; panelTop: number };
+    };
+    const header = () =>
+      g.page.evaluate(() => {
+        const el = document.querySelector<HTMLElement>('[data-hud="flight-status"]')!;
+        const lines = [...el.children].map((c) => ({ text: c.textContent ?? '', fits: c.scrollWidth <= c.clientWidth }));
+        return { height: el.getBoundingClientRect().height, lines };
+      });
+    const before = await header();
+    // The aircraft put 70 m over ring 1's line, 500 m before it: the ring lies under the nose, behind
+    // the aircraft on the screen, and the aircraft fades until the ring shows through it.
+    const place = (up: number, back: number) =>
+      g.page.evaluate(
+        ([up, back]) => {
+          const w = window.game as unknown as Fly;
+          const r = w.rings()[0]!,
+            c = w.world.components,
+            e = w.aircraftBody();
+          c.Position.x[e] = r.x - back!;
+          c.Position.y[e] = r.y + up!;
+          c.Position.z[e] = r.z;
+        },
+        [up, back],
+      );
+    await place(70, 500);
+    const t0 = await read(g, 'state.throttle');
+    expect(t0).toBeCloseTo(0.28, 2);
+    // One short tap of Faster (a real touch): the engine steps at once to the next tenth at least 5 %
+    // up (28 % to 40 %), and the readout and the engine's note say it.
+    const faster = (await g.page.getByRole('button', { name: 'faster', exact: true }).boundingBox())!;
+    await g.page.touchscreen.tap(faster.x + faster.width / 2, faster.y + faster.height / 2);
+    expect(await read(g, 'state.throttle')).toBeCloseTo(0.4, 9);
+    await g.waitFor(() => (document.querySelector('[data-hud="readout"]')?.textContent ?? '').includes('engine 40%') || null, null);
+    const faded = await g.waitFor(() => {
+      const w = window.game as unknown as Fly;
+      const f = w.planeFade(),
+        p = w.ringPointer();
+      return f.opacity <= 0.31 ? { ...f, ring: p.ring, inView: p.inView } : null;
+    }, null);
+    // The ring's centre is within half its radius of the aircraft's box on the screen (behind it).
+    const [x, y, bw, bh] = faded.box as Box,
+      [cx, cy, r] = faded.ring as [number, number, number];
+    expect(faded.inView).toBe(true);
+    expect(cx).toBeGreaterThan(x - r / 2);
+    expect(cx).toBeLessThan(x + bw + r / 2);
+    expect(cy).toBeGreaterThan(y - r / 2);
+    expect(cy).toBeLessThan(y + bh + r / 2);
+    // Far above ring 1 it is no longer behind the aircraft: the aircraft is solid again.
+    await place(-250, 900);
+    await g.waitFor(() => ((window.game as unknown as Fly).planeFade().opacity === 1 ? true : null), null);
+    // In the cockpit, a ring high ahead: the messages (the engine's note after a tap) sit in the low
+    // lane, above the instrument panel, clear of the ring and of each other.
+    await hold(g.page, 'camera: chase / cockpit', 100);
+    await place(-280, 700);
+    await g.waitFor(() => ((window.game as unknown as Fly).cockpit().visible ? true : null), null);
+    await g.page.touchscreen.tap(faster.x + faster.width / 2, faster.y + faster.height / 2);
+    const lane = await g.waitFor(() => {
+      const w = window.game as unknown as Fly;
+      const m = w.messages(),
+        p = w.ringPointer();
+      return m.boxes.some((b) => b.hud === 'throttle-note') && p.inView ? { ...m, ring: p.ring, panelTop: w.cockpit().panelTop } : null;
+    }, null);
+    expect(lane.low).toBe(true);
+    const [rx, ry, rr] = lane.ring as [number, number, number];
+    for (const { box } of lane.boxes) {
+      const [bx, by, w, hh] = box;
+      expect(by + hh).toBeLessThanOrEqual(lane.panelTop);
+      expect(Math.hypot(Math.max(bx - rx, 0, rx - (bx + w)), Math.max(by - ry, 0, ry - (by + hh)))).toBeGreaterThanOrEqual(rr);
+    }
+    // Misses lengthen the goal line (the penalty, the stars): the header keeps its two lines, each fitting.
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as Fly;
+      w.state.missed = 3;
+      w.state.time = 754;
+    });
+    const after = await g.waitFor(() => {
+      const el = document.querySelector<HTMLElement>('[data-hud="flight-status"]')!;
+      if (!(el.children[0]!.textContent ?? '').includes('(+60 s)')) return null;
+      const lines = [...el.children].map((c) => ({ text: c.textContent ?? '', fits: c.scrollWidth <= c.clientWidth }));
+      return { height: el.getBoundingClientRect().height, lines };
+    }, null);
+    expect(after.height).toBe(before.height);
+    expect(before.lines.every((l) => l.fits)).toBe(true);
+    expect(after.lines.filter((l) => !l.fits)).toEqual([]);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
   it('rotating cube: holding Yaw ▶ spins the cube', async () => {
     const g = await h.openGame('rotating-cube', { ...PHONE, query: { mode: 'cube' } });
     await hold(g.page, 'stop spinning', 100);

@@ -859,6 +859,84 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     await g.close();
   }, 180_000);
 
+  it('the words over the scene never lie on each other: a pickup banner with a mine warning, then a hit; on a phone the banner sits at the top with the hint', async () => {
+    const g = await h.openGame('submarine', { viewport, touch, query: { waves: 0 } });
+    type Words = Sub & {
+      labels(): { name: string; box: number[] }[];
+      pickupEffect(): { banner: string };
+      handles(): { beacons: Float64Array };
+    };
+    // Beacon 1 collected (the hull put 3 m from it), then the hull put 40 m before the first mine at
+    // its depth, running at it at 10 m/s: the banner, the mine's warning, the beacon pointer and the
+    // gauges' tags are all up in one frame.
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as Words;
+      const c = w.world.components,
+        e = w.hull(),
+        b = w.handles().beacons;
+      c.Position.x[e] = b[0]! - 3;
+      c.Position.y[e] = b[1]!;
+    });
+    await g.waitFor(() => (window.game as unknown as Words).state.collected === 1 || null, null, 60_000);
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as Words;
+      const c = w.world.components,
+        e = w.hull(),
+        m = w.mines()[0]!;
+      c.Position.x[e] = m.x - 40;
+      c.Position.y[e] = m.y;
+      c.Velocity.x[e] = 10;
+      c.Velocity.y[e] = 0;
+      // The depth ordered is the mine's (it was the beacon's: the course rose over the mine).
+      w.state.holdY = m.y;
+    });
+    const snapshot = (want: string[]) =>
+      g.waitFor(
+        (names) => {
+          const w = window.game as unknown as Words;
+          const labels = w.labels();
+          return names.every((name) => labels.some((l) => l.name === name)) ? { labels, height: w.camera().height } : null;
+        },
+        want,
+        60_000,
+      );
+    // Two boxes (x, y, width, height, px) that share any area; the beacon pointer's label and its
+    // arrow's badge are one sign, drawn joined.
+    const crossing = (labels: { name: string; box: number[] }[]) => {
+      const out: string[] = [];
+      for (let i = 0; i < labels.length; i++)
+        for (let j = i + 1; j < labels.length; j++) {
+          const [a, b] = [labels[i]!, labels[j]!];
+          if ([a.name, b.name].sort().join() === 'badge,pointer') continue;
+          const [ax, ay, aw, ah] = a.box as [number, number, number, number],
+            [bx, by, bw, bh] = b.box as [number, number, number, number];
+          if (ax < bx + bw && bx < ax + aw && ay < by + bh && by < ay + ah)
+            out.push(`${a.name} [${a.box.map(Math.round)}] on ${b.name} [${b.box.map(Math.round)}]`);
+        }
+      return out;
+    };
+    const warned = await snapshot(['banner', 'mine warning']);
+    expect(crossing(warned.labels)).toEqual([]);
+    if (touch) {
+      // On a phone the banner is in the message area at the scene's top.
+      const banner = warned.labels.find((l) => l.name === 'banner')!;
+      expect(banner.box[1]!).toBeLessThan(0.2 * warned.height);
+    }
+    // Onto the mine: the hit's label by the place, kept off the other words.
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as Words;
+      const c = w.world.components,
+        e = w.hull(),
+        m = w.mines()[0]!;
+      c.Position.x[e] = m.x - 2;
+      c.Position.y[e] = m.y;
+    });
+    const hit = await snapshot(['hit']);
+    expect(crossing(hit.labels)).toEqual([]);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  }, 180_000);
+
   it('coming in fast on the target the label tells to let go early and that Astern brakes, at most 3 times; not when far or slow', async () => {
     const g = await h.openGame('submarine', { viewport, touch, query: { waves: 0 } });
     type P = Sub & { beaconPointer(): { index: number; text: string; brakeHints: number } };

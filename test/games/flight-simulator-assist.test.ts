@@ -25,6 +25,7 @@ import {
   type PilotInput,
   rampKey,
   SURFACE_RATE,
+  throttleStep,
 } from '../../games/flight-simulator/assist';
 import { pathThroughRing, predictThroughRing, RING_RADIUS, type Ring } from '../../games/flight-simulator/course';
 
@@ -474,5 +475,26 @@ describe('the flight-path marker (course.ts predictThroughRing) against the flow
     const { runOn } = release(1, 0, 1.5, 1000);
     expect(runOn).toBeGreaterThan(0);
     expect(runOn).toBeLessThan(6 * DEG);
+  });
+});
+
+describe('throttleStep', () => {
+  it('a press of Faster or Slower steps the throttle to the next tenth at least 5 % away, within [0, 1]', () => {
+    // The game's start (28 %) goes to 40 % with Faster, 20 % with Slower: a change the readout shows.
+    expect(throttleStep(0.28, 1)).toBeCloseTo(0.4, 12);
+    expect(throttleStep(0.28, -1)).toBeCloseTo(0.2, 12);
+    // On a tenth it goes a whole tenth; within 5 % of the next tenth, it goes to that tenth.
+    expect(throttleStep(0.3, 1)).toBeCloseTo(0.4, 12);
+    expect(throttleStep(0.4, -1)).toBeCloseTo(0.3, 12);
+    expect(throttleStep(0.35, 1)).toBeCloseTo(0.4, 12);
+    expect(throttleStep(0.36, 1)).toBeCloseTo(0.5, 12);
+    // Ten presses from idle reach full, never past it; and back.
+    let t = 0;
+    for (let k = 0; k < 12; k++) t = throttleStep(t, 1);
+    expect(t).toBe(1);
+    for (let k = 0; k < 12; k++) t = throttleStep(t, -1);
+    expect(t).toBe(0);
+    expect(() => throttleStep(1.2, 1)).toThrow(/throttleStep: throttle must be in \[0, 1\], got 1.2/);
+    expect(() => throttleStep(0.5, 0)).toThrow(/throttleStep: direction must be 1 or -1, got 0/);
   });
 });
