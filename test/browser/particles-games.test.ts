@@ -366,7 +366,7 @@ describe('fireworks: the lantern show', () => {
     await g.close();
   });
 
-  it('phone 390 x 844, touch: the goal shows above the sky; a tap on a lantern lights it and counts a shell, the row counting it lit once its glow is full; a tap on empty sky is a miss, said', async () => {
+  it('phone 390 x 844, touch: the goal shows above the sky; a tap on a lantern lights it and counts a shell, the row counting it lit as it lights; a tap on empty sky is a miss, said; level 1 survives a stray shell', async () => {
     const g = await h.openGame('fireworks', {
       viewport: { width: 390, height: 844 },
       touch: true,
