@@ -103,6 +103,8 @@ const lastThrow = {
   time: 0,
   /** What the throw did ('' until it settles), where to show it (m) and when it was decided (s). */
   verdict: '',
+  /** A miss in brief ('long 6 m', 'short 3 m', 'no damage'; '' for a hit or before the verdict), shown with the last throw's numbers while aiming. */
+  brief: '',
   good: false,
   at: [0, 0] as [number, number],
   decidedAt: 0,
@@ -302,7 +304,7 @@ const panel = createPanel(
     {
       type: 'slider',
       key: 'jointStrength',
-      label: 'joint strength (N, rebuilds)',
+      label: 'weld strength (N)',
       min: 50,
       max: 3000,
       step: 10,
@@ -576,7 +578,8 @@ function fullPullPx(): number {
 /** Screen pixels per metre of pull. */
 const aimScale = (): number => fullPullPx() / PULL.max;
 app.canvas.addEventListener('pointerdown', (e) => {
-  if (shell.paused || shotsLeft <= 0 || (e.pointerType === 'mouse' && e.button !== 0)) return;
+  // No aim where no throw can follow: paused, out of shots, or the level over (its result showing).
+  if (shell.paused || shotsLeft <= 0 || levelEnded || (e.pointerType === 'mouse' && e.button !== 0)) return;
   pointerOnCanvas(app.canvas, e, pointer);
   shotView = false;
   lastThrow.hidden = true;
@@ -625,6 +628,7 @@ function fire(dx: number, dy: number): number {
   lastThrow.scoreBefore = tally(shell.world, lv).score;
   lastThrow.time = shell.world.time;
   lastThrow.verdict = '';
+  lastThrow.brief = '';
   lastThrow.farthest = LAUNCH.x;
   lastThrow.vx = vx;
   lastThrow.vy = vy;
@@ -698,12 +702,15 @@ function followThrow(world: PhysicsWorld, t: Tally): void {
     vy = lastThrow.vy;
   const ground = LAUNCH.x + (lastThrow.vx * (vy + Math.sqrt(vy * vy + 2 * g * LAUNCH.y))) / g;
   const by = (d: number): number => Math.max(1, Math.round(d));
-  lastThrow.verdict =
-    landX < lv.castleMinX - 0.3
-      ? `Short by ${by(lv.castleMinX - Math.min(ground, landX))} m: pull further back`
-      : landX > lv.castleMaxX + 0.3
-        ? `Long by ${by(ground - lv.castleMaxX)} m: pull less, or aim lower`
-        : 'No damage: throw harder, or hit lower';
+  const short = landX < lv.castleMinX - 0.3,
+    long = landX > lv.castleMaxX + 0.3;
+  const d = short ? by(lv.castleMinX - Math.min(ground, landX)) : long ? by(ground - lv.castleMaxX) : 0;
+  lastThrow.verdict = short
+    ? `Short by ${d} m: pull further back`
+    : long
+      ? `Long by ${d} m: pull less, or aim lower`
+      : 'No damage: throw harder, or hit lower';
+  lastThrow.brief = short ? `short ${d} m` : long ? `long ${d} m` : 'no damage';
   lastThrow.at = [Math.min(Math.max(x, lv.castleMinX - 4), lv.castleMaxX), Math.max(y, 0) + 2.2];
 }
 
@@ -777,7 +784,11 @@ function positionOf(h: number): [number, number] {
   return [P.x[s]!, P.y[s]!];
 }
 
-/** Draws the last throw's trail and, for VERDICT_SHOWN seconds, its verdict. */
+/**
+ * Draws the last throw's trail and its verdict: a hit's points for VERDICT_SHOWN seconds; a miss's
+ * hint ("Long by 6 m: pull less, or aim lower") until the player presses to aim again (it faded
+ * with the hit's time, and a stranger who looked back at the castle after a later miss saw none).
+ */
 function drawThrow(world: PhysicsWorld): void {
   const cam = renderer.camera;
   // The trail stays while the player aims the next throw (a guide: higher or lower than that one).
@@ -794,7 +805,8 @@ function drawThrow(world: PhysicsWorld): void {
   drawOffscreen(world);
   drawCastleMarker();
   const age = world.time - lastThrow.decidedAt;
-  if (!lastThrow.verdict || age > VERDICT_SHOWN) {
+  const gone = lastThrow.good ? age > VERDICT_SHOWN : lastThrow.hidden || levelEnded;
+  if (!lastThrow.verdict || gone) {
     verdictText.visible = false;
     return;
   }
@@ -804,7 +816,9 @@ function drawThrow(world: PhysicsWorld): void {
   verdictText.style.fontSize = lastThrow.good ? 34 : app.screen.width < 600 ? 16 : 20;
   const half = verdictText.width / 2 + 8;
   verdictText.x = Math.min(Math.max(cam.toScreenX(lastThrow.at[0]), half), app.screen.width - half);
-  verdictText.y = Math.max(cam.toScreenY(lastThrow.at[1]) - 18 * age, 70);
+  // A hit's points rise as they fade; a miss's hint rises for its first second, then holds.
+  const rise = lastThrow.good ? age : Math.min(age, 1);
+  verdictText.y = Math.max(cam.toScreenY(lastThrow.at[1]) - 18 * rise, 70);
   // Clear of the off-screen marker's label ("12 m past ▸") at the right edge: a verdict that starts
   // under the label stops rising under it, one that starts level with or over it stays over it.
   if (offscreenText.visible) {
@@ -816,13 +830,32 @@ function drawThrow(world: PhysicsWorld): void {
       verdictText.y = under ? Math.max(verdictText.y, oBottom + verdictText.height) : Math.min(verdictText.y, oTop);
     }
   }
-  verdictText.alpha = Math.min(1, 3 * (1 - age / VERDICT_SHOWN));
+  verdictText.alpha = lastThrow.good ? Math.min(1, 3 * (1 - age / VERDICT_SHOWN)) : 1;
 }
 
 /** Dots of the last throw's trail drawn in the last frame. */
 let trailDots = 0;
-/** The level score shown in the last frame (banner and readout). */
+/** The level score the readout shows (the banner showed it in the frame drawn before). */
 let shownScore = 0;
+/**
+ * The readout's rows (and level score) computed in the last frame, and the frames drawn before it
+ * (the pacer's count). They are written once that frame has been drawn: a frame the GPU was too
+ * busy for is skipped and the canvas keeps the one before, and the readout must not run ahead of the
+ * banner (it said "score 50" beside a banner's "Score 0"). Where every frame is drawn the readout
+ * follows one frame behind.
+ */
+let pendingRows: { score: number; rows: string[] } | null = null;
+let pendingDrawn = -1;
+/** Writes the last frame's rows to the readout if that frame was drawn, and keeps this frame's. */
+function writeReadout(score: number, rows: string[]): void {
+  const drawn = game.pacer.drawn;
+  if (pendingRows && drawn !== pendingDrawn) {
+    shownScore = pendingRows.score;
+    for (const [k, r] of pendingRows.rows.entries()) readout.set(k, r);
+  }
+  pendingRows = { score, rows };
+  pendingDrawn = drawn;
+}
 
 /** The on-screen "Next level" button, shown when a level is over. */
 const showNextButton = createActionButton('Next level ▶', () => nextLevel());
@@ -1111,7 +1144,9 @@ function drawAim(world: PhysicsWorld): void {
   overlay.roundRect(x - 2, y - 2, w + 4, h + 4, 5).fill({ color: 0x000000, alpha: 0.55 });
   overlay.roundRect(x, y, Math.max(2, w * power), h, 4).fill(color);
   // Over this throw's numbers the last throw's: the player corrects from them ("long: a little less").
-  const last = lastThrow.body ? `last ${Math.round(100 * lastThrow.power)} %  ${Math.round(lastThrow.angle)}°\n` : '';
+  // With a miss's brief: what that throw did, while the hint over the scene is gone.
+  const brief = lastThrow.brief ? `: ${lastThrow.brief}` : '';
+  const last = lastThrow.body ? `last ${Math.round(100 * lastThrow.power)} %  ${Math.round(lastThrow.angle)}°${brief}\n` : '';
   const label = `${last}${Math.round(100 * power)} %  ${Math.round(aimShown.angle)}°`;
   if (aimText.text !== label) aimText.text = label;
   // Centred over the bar, and all on the screen (the last throw's line is wider than the bar).
@@ -1378,13 +1413,14 @@ function draw(world: PhysicsWorld, alpha: number): void {
   const i = params.level - 1;
   const score = levelEnded ? campaign.scores[i]! : t.score;
   const runningTotal = total() - (levelEnded ? 0 : campaign.scores[i]!) + (levelEnded ? 0 : score);
-  shownScore = score;
-  readout.set(0, `${params.level} / ${LEVEL_COUNT} ${lv.name}`);
-  readout.set(1, String(shotsLeft));
-  readout.set(2, String(score));
-  readout.set(3, String(runningTotal));
-  readout.set(4, `${t.fallen} / ${lv.pieces.length}`);
-  readout.set(5, `${t.broken} / ${lv.joints.length}`);
+  writeReadout(score, [
+    `${params.level} / ${LEVEL_COUNT} ${lv.name}`,
+    String(shotsLeft),
+    String(score),
+    String(runningTotal),
+    `${t.fallen} / ${lv.pieces.length}`,
+    `${t.broken} / ${lv.joints.length}`,
+  ]);
   banner.x = app.screen.width / 2;
   banner.y = 16;
   // Narrow screens (phones): smaller type, wrapped inside the canvas.
@@ -1483,6 +1519,8 @@ function recordLevel(t: Tally): void {
   const score = t.score + (earned > 0 ? shotsLeft * SHOT_BONUS : 0);
   const i = params.level - 1;
   levelEnded = true;
+  // A drag under way when the level ended throws nothing: its aim goes.
+  aim.active = false;
   if (score > campaign.scores[i]!) campaign.scores[i] = score;
   if (earned > campaign.stars[i]!) campaign.stars[i] = earned;
 }
@@ -1497,6 +1535,10 @@ shell.expose({
   levelEnded: (): boolean => levelEnded,
   /** What the last throw did once it settled ('' before): '+N' points, or why it missed. */
   lastVerdict: (): string => lastThrow.verdict,
+  /** The verdict's words over the scene in the last frame ('' while hidden). */
+  verdictShown: (): string => (verdictText.visible ? verdictText.text : ''),
+  /** The aim's numbers over the catapult in the last frame ('' while not aiming). */
+  aimLabel: (): string => (aimText.visible ? aimText.text : ''),
   /** The effects now: bits of debris in flight and score popups showing. */
   effects: (): { bits: number; popups: number } => ({ bits: effects!.bitCount, popups: effects!.popupCount }),
   /** The catapult's arm angle, rad (see CATAPULT in ./look: cocked at pi, upright at pi / 2). */

@@ -246,6 +246,8 @@ describe('catapult', () => {
     // (800 - 220 px here; a right-hand panel column left it 255 px).
     expect(await g.page.locator('.bp-info .lil-gui').count()).toBe(1);
     expect(canvas.width).toBe(800 - 220);
+    // The weld slider's label leaves its slider room ("joint strength (N, rebuilds)" squeezed it).
+    expect(await g.page.locator('.lil-gui').getByText('weld strength (N)', { exact: true }).count()).toBe(1);
     expect(g.errors).toEqual([]);
   });
 
@@ -441,6 +443,16 @@ describe('catapult', () => {
     const [a0, a1, a2, a3] = words.verdict!,
       [b0, b1, b2, b3] = words.offscreen!;
     expect(a2 <= b0! || b2! <= a0! || a3! <= b1! || b3! <= a1!, JSON.stringify(words)).toBe(true);
+    // A miss's hint stays up (it faded after 2.5 s and a stranger's later misses showed none):
+    // 6 s on it still shows.
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as CatapultGame;
+      w.paused = true;
+      w.advance(360);
+      w.paused = false;
+    });
+    await g.frames(2);
+    expect(await g.page.evaluate(() => (window.game as unknown as { verdictShown(): string }).verdictShown())).toBe(verdict);
     // A new aim drops the last throw's marker but keeps its trail (a guide for the next throw); a
     // press without a pull throws nothing. A press anywhere on the scene starts an aim.
     const trail = await g.page.evaluate(() => (window.game as unknown as { trailDots(): number }).trailDots());
@@ -450,6 +462,16 @@ describe('catapult', () => {
     await g.page.mouse.down();
     await g.waitFor(() => (window.game as unknown as { offscreen(): string }).offscreen() === '', null);
     expect(await g.page.evaluate(() => (window.game as unknown as { trailDots(): number }).trailDots())).toBeGreaterThanOrEqual(trail);
+    // While aiming, the hint over the scene goes and the last throw's numbers say what it did.
+    await g.page.mouse.move(box.x + box.width / 2 - 30, box.y + box.height / 2 + 20, { steps: 3 });
+    await g.waitFor(() => (window.game as unknown as { aimLabel(): string }).aimLabel() !== '', null);
+    const aiming = await g.page.evaluate(() => {
+      const w = window.game as unknown as { aimLabel(): string; verdictShown(): string };
+      return { label: w.aimLabel(), verdict: w.verdictShown() };
+    });
+    expect(aiming.label).toMatch(new RegExp(`^last \\d+ % {2}\\d+°: long ${long![1]} m\n`));
+    expect(aiming.verdict).toBe('');
+    await g.page.mouse.move(box.x + box.width / 2, box.y + box.height / 2, { steps: 3 });
     await g.page.mouse.up();
     // Paused (P): an overlay says so and a drag throws nothing.
     await g.page.keyboard.press('p');
@@ -518,6 +540,19 @@ describe('catapult', () => {
     expect(end.banner).toContain(`Score ${end.shown}`);
     expect(end.banner).toMatch(/★★★\s95\s%/);
     expect(await g.page.locator('[data-readout="2"]').textContent()).toBe(String(end.shown));
+    // The level over, a drag aims nothing: no pull band, power bar or arc where no throw follows
+    // (a stranger's drag after "Level 1 cleared" drew them, and the release threw nothing).
+    const canvas = (await g.page.locator('canvas').boundingBox())!;
+    await g.page.mouse.move(canvas.x + canvas.width / 2, canvas.y + canvas.height / 2);
+    await g.page.mouse.down();
+    await g.page.mouse.move(canvas.x + canvas.width / 2 - 120, canvas.y + canvas.height / 2 + 60, { steps: 4 });
+    await g.frames(2);
+    const dragged = await g.page.evaluate(() => {
+      const w = window.game as unknown as W & { aimLabel(): string; aimShown(): { dots: number } };
+      return { label: w.aimLabel(), dots: w.aimShown().dots };
+    });
+    await g.page.mouse.up();
+    expect(dragged).toEqual({ label: '', dots: 0 });
     // R: the level again, and Total back to its value at the level's start (0).
     await g.page.keyboard.press('r');
     await g.waitFor(() => !(window.game as unknown as CatapultGame).levelEnded(), null);
