@@ -376,14 +376,15 @@ shell.onWorldChange(() => {
  * the way up the screen, earth below it and sky above. The view eases a tenth of the way each frame;
  * it jumps when the screen's size changes.
  *
- * On an upright phone (a screen taller than wide) the whole play area fitted to the width leaves the
- * scene a strip, so the camera works as close as it can while the catapult and the castle both show:
- * the aim view is the overview, from just behind the catapult's stacked stones to just past the
- * castle, with the ground GROUND_AT_UPRIGHT of the way up (a strip of earth under it); the shot
- * view holds the castle and the rock with a little room either side, and in between the camera
- * follows the stone: the view slides from the overview to the shot view as the stone crosses the
- * field (by the farthest it got), so the stone stays in sight all the way, and stays there (the
- * castle and the wreck in view) until the next press eases it out to the overview.
+ * On an upright phone (a screen taller than wide) the whole play area fitted to the width drew the
+ * scene as a strip in the screen's bottom fifth under a tall empty sky, so the camera frames the
+ * play for the tall screen, the ground UPRIGHT_GROUND of the way up (the scene in the screen's
+ * middle, earth under it): the aim view is AIM_WIDTH_UPRIGHT metres from behind the catapult's
+ * stacked stones, the catapult large, with the castle shown close up in the sky over it
+ * (drawCloseUp); the shot view holds the castle and the rock; in between the camera follows the
+ * stone: the view slides from the aim view to the shot view as the stone crosses the field (by the
+ * farthest it got), keeping it in sight, and stays on the castle and the wreck until the next press
+ * eases it back to the aim view.
  */
 const cameraView = { minX: -4, minY: -1, maxX: 30, maxY: 14 };
 /**
@@ -401,6 +402,15 @@ const GROUND_AT = 0.18;
  * gives up holds the castle's close-up (drawCloseUp), which grows with it.
  */
 const GROUND_AT_UPRIGHT = 0.11;
+/**
+ * On an upright phone, where the ground (the lowest surface: a pit's floor) sits: this fraction of
+ * the screen's height from the bottom, so the catapult, the flight and the castle use the screen's
+ * middle, with the banner and the castle's close-up in the sky over them. At 0.11 the scene sat in
+ * the bottom fifth under 70 % of empty sky.
+ */
+const UPRIGHT_GROUND = 0.38;
+/** On an upright phone, the aim view's width, m: the catapult and its stones about 4 m of it (some 150 px of 390). */
+const AIM_WIDTH_UPRIGHT = 10.5;
 /** Screens narrower than this (CSS px) get the tighter aim view. */
 const NARROW = 600;
 /** Screen size the view was framed for; the view jumps (no easing) when it changes. */
@@ -455,31 +465,35 @@ function viewFor(minX: number, maxX: number): View {
 const rockRight = (): number => lv.castleMaxX + ROCK.gap + 2 * ROCK.hx;
 /** The aim view (see above). */
 function aimView(): View {
-  // Before the level's first throw the overview: the player sees the castle they are to aim at.
-  // Upright, the overview throughout: the castle and what the last throw did stay in sight while
-  // aiming (a close view of the catapult left the castle off-screen behind an arrow).
-  if (upright()) return overviewRect();
+  // Upright: the catapult large, the castle in the close-up over it (drawCloseUp); a castle's
+  // front within a third more of that width is taken in whole (a sliver of it at the edge read as
+  // a glitch).
+  if (upright()) {
+    const front = lv.castleMinX + 1.6 - OVERVIEW_LEFT;
+    return uprightView(
+      OVERVIEW_LEFT,
+      OVERVIEW_LEFT + (front <= (4 / 3) * AIM_WIDTH_UPRIGHT ? Math.max(front, AIM_WIDTH_UPRIGHT) : AIM_WIDTH_UPRIGHT),
+    );
+  }
   // Room behind the catapult for its stones where the screen is wide enough.
   const behind = renderer.camera.width < NARROW ? 1.6 : 3.1;
   return viewFor(LAUNCH.x - behind, rockRight() + 0.6);
 }
 /**
- * The overview while aiming on an upright phone: from just behind the catapult to past the castle's
- * far end, so the player sees where the throw must go while pulling.
+ * An upright phone's view of the span [minX, maxX], m, fitted to the screen's width, its lowest
+ * surface (a pit's floor, or the ground) UPRIGHT_GROUND of the way up the screen.
  */
-function overviewRect(): View {
-  return viewFor(OVERVIEW_LEFT, lv.castleMaxX + OVERVIEW_PAST);
+function uprightView(minX: number, maxX: number): View {
+  const cam = renderer.camera;
+  const height = ((maxX - minX) * Math.max(1, cam.height)) / Math.max(1, cam.width);
+  const minY = Math.min(0, ...lv.terrain.map((t) => t.maxY)) - UPRIGHT_GROUND * height;
+  return { minX, minY, maxX, maxY: minY + height };
 }
-/**
- * The overview's left edge (behind the catapult's stacked stones) and its room past the castle's far
- * end, m: every metre left out draws the catapult, the flight and the castle larger on a 390 px wide
- * screen.
- */
-const OVERVIEW_LEFT = LAUNCH.x - 3.1,
-  OVERVIEW_PAST = 0.3;
-/** The shot view (see above): the castle, the rock and room either side for debris (2.5 m; 1.5 and 1.2 m upright). */
+/** The upright aim view's left edge, m: just behind the catapult's stacked stones. */
+const OVERVIEW_LEFT = LAUNCH.x - 3.4;
+/** The shot view (see above): the castle, the rock and room either side for debris (2.5 m; 0.8 and 1 m upright). */
 function shotViewRect(): View {
-  return upright() ? viewFor(lv.castleMinX - 1.5, rockRight() + 1.2) : viewFor(lv.castleMinX - 2.5, rockRight() + 2.5);
+  return upright() ? uprightView(lv.castleMinX - 0.8, rockRight() + 1) : viewFor(lv.castleMinX - 2.5, rockRight() + 2.5);
 }
 /** Screen pixels a metre in view `v`, fitted (letterboxed) to the screen. */
 function pxPerM(v: View): number {
@@ -492,21 +506,19 @@ function pxPerM(v: View): number {
  */
 const zoomsIn = (): boolean => upright() || (renderer.camera.width < NARROW && pxPerM(shotViewRect()) >= 1.5 * pxPerM(aimView()));
 /**
- * The view while the stone flies, upright: between the overview (u = 0) and the shot view (u = 1),
- * u the share of the way from the catapult to the castle's front the stone has got (smoothed, so the
- * camera starts and ends the slide gently).
+ * The view while the stone flies, upright: between the aim view (u = 0) and the shot view (u = 1),
+ * u the share of the way from the catapult to the castle's front the stone has got (its farthest
+ * x), and shifted where needed so the stone stays at least 15 % of the view's width inside it.
  */
 function followView(): View {
-  const a = overviewRect(),
+  const a = aimView(),
     s = shotViewRect();
-  const u0 = Math.min(1, Math.max(0, (lastThrow.farthest - LAUNCH.x) / Math.max(1, lv.castleMinX - 1 - LAUNCH.x)));
-  const u = u0 * u0 * (3 - 2 * u0);
-  return {
-    minX: a.minX + u * (s.minX - a.minX),
-    minY: a.minY + u * (s.minY - a.minY),
-    maxX: a.maxX + u * (s.maxX - a.maxX),
-    maxY: a.maxY + u * (s.maxY - a.maxY),
-  };
+  const x = lastThrow.farthest;
+  const u = Math.min(1, Math.max(0, (x - LAUNCH.x) / Math.max(1, lv.castleMinX - 1 - LAUNCH.x)));
+  const w = a.maxX - a.minX + u * (s.maxX - s.minX - (a.maxX - a.minX));
+  let c = (a.minX + a.maxX) / 2 + u * ((s.minX + s.maxX) / 2 - (a.minX + a.maxX) / 2);
+  c = Math.min(Math.max(c, x - 0.35 * w), x + 0.35 * w);
+  return uprightView(c - w / 2, c + w / 2);
 }
 function frameCamera(): void {
   const cam = renderer.camera;
@@ -517,15 +529,7 @@ function frameCamera(): void {
   if (shotView && lastThrow.verdict && (read || levelEnded)) shotView = false;
   // A level over: the wreck stays in view with its result (on a phone the shot view, not the catapult).
   const wreck = levelEnded && shots.length > 0 && zoomsIn();
-  const target = wreck
-    ? shotViewRect()
-    : shotView && zoomsIn()
-      ? upright()
-        ? followView()
-        : shotViewRect()
-      : aim.active && upright()
-        ? overviewRect()
-        : aimView();
+  const target = wreck ? shotViewRect() : shotView && zoomsIn() ? (upright() ? followView() : shotViewRect()) : aimView();
   const size = `${cam.width}x${cam.height}`;
   const k = size === framedFor ? 0.1 : 1;
   if (size !== framedFor) sizesFramed.add(size);
@@ -1090,10 +1094,8 @@ function drawAim(world: PhysicsWorld): void {
   // Green to yellow at half power, to red at full.
   const color = power < 0.5 ? mixColor(0x5cd65c, 0xffd23b, 2 * power) : mixColor(0xffd23b, 0xff5040, 2 * power - 1);
   // The band and the ring, in screen pixels from the press.
-  const R = fullPullPx(),
-    k = (Math.min(pull, PULL.max) * aimScale()) / Math.max(pull, 1e-9);
-  const ex = aim.x0 + aim.dx * k,
-    ey = aim.y0 - aim.dy * k;
+  const R = fullPullPx();
+  const [ex, ey] = aimEnd();
   overlay.circle(aim.x0, aim.y0, R).stroke({ width: 2, color: 0xffffff, alpha: 0.35 });
   overlay.circle(aim.x0, aim.y0, R / 2).stroke({ width: 1, color: 0xffffff, alpha: 0.2 });
   overlay.moveTo(aim.x0, aim.y0).lineTo(ex, ey).stroke({ width: 5, color: 0x000000, alpha: 0.35 });
@@ -1155,6 +1157,13 @@ function drawAim(world: PhysicsWorld): void {
   aimText.y = y - 4;
 }
 
+/** The screen end of the pull's band (px): the finger, or a full pull's length from the press along the pull. */
+function aimEnd(): [number, number] {
+  const pull = Math.hypot(aim.dx, aim.dy);
+  const k = (Math.min(pull, PULL.max) * aimScale()) / Math.max(pull, 1e-9);
+  return [aim.x0 + aim.dx * k, aim.y0 - aim.dy * k];
+}
+
 /** Shows or hides the pause overlay. */
 function drawPause(): void {
   pause.draw(shell.paused, app.screen.width, app.screen.height, touch);
@@ -1184,8 +1193,12 @@ const CLOSE_MAX = 3,
   CLOSE_MIN = 1.4;
 /** Pixels between the close-up's foot and the top of the castle on the screen. */
 const CLOSE_GAP = 36;
+/** Pixels over the aim's power bar (3.2 m up) kept clear for its two lines of numbers. */
+const AIM_LABEL_ROOM = 64;
 /** The close-up's box on the screen (px: x, y, width, height) and its magnification; null while hidden. */
 let closeShown: { box: [number, number, number, number]; zoom: number } | null = null;
+/** Whether the close-up sits in the earth under the ground (out of a pull's way), not in the sky. */
+let closeLow = false;
 /**
  * The close-up is drawn again every CLOSE_EVERY frames (and at once when its size changes): it shows
  * the castle at rest while the player aims, and a second pass over the whole scene every frame was
@@ -1210,11 +1223,29 @@ function drawCloseUp(): void {
       sy = cam.toScreenY(y1),
       w = cam.toScreenLength(x1 - x0),
       h = cam.toScreenLength(y1 - y0);
-    // Under the banner, over the scene: the band from the banner's foot to 40 % of the way down to the castle's top.
-    const top = (banner.text !== '' ? banner.y + banner.height : 0) + 14,
-      bottom = top + 0.6 * (sy - top);
+    // Two places: in the sky, the band from the banner's foot to CLOSE_GAP px over the castle's top
+    // or, lower, the catapult's arm (3.2 m up); and in the earth under the ground, over the card
+    // saying how to play while it shows. The sky's, unless a pull's band crosses it and not the
+    // earth's: the close-up moves out of the aim's way (it hid the band a stranger pulled).
+    const ground = cam.toScreenY(floor);
+    const sky: [number, number] = [
+      (banner.text !== '' ? banner.y + banner.height : 0) + 14,
+      Math.min(sy - CLOSE_GAP, cam.toScreenY(3.2) - AIM_LABEL_ROOM),
+    ];
+    // (While a finger pulls, the card saying how to play is on its way out.)
+    const earth: [number, number] = [ground + 12, cam.height - (aim.active ? 8 : Math.max(8, hintReserve()))];
+    const crosses = (band: [number, number]): boolean => {
+      if (!aim.active) return false;
+      const ey = aimEnd()[1];
+      return Math.max(aim.y0, ey) + 12 > band[0] && Math.min(aim.y0, ey) - 12 < band[1];
+    };
+    const slot = crosses(sky) && !crosses(earth) ? earth : sky;
+    closeLow = slot === earth;
+    const [top, bottom] = slot;
     const zoom = Math.min(CLOSE_MAX, (cam.width - 24) / w, (bottom - top) / h);
-    if (zoom >= CLOSE_MIN) {
+    // Shown when it magnifies enough, or whenever the castle is off the screen (upright, the aim view
+    // frames the catapult: the close-up is where the castle shows).
+    if (zoom >= CLOSE_MIN || (zoom > 0.5 && sx + w > cam.width)) {
       const bw = Math.round(w * zoom),
         bh = Math.round(h * zoom);
       closeAge++;
@@ -1232,16 +1263,19 @@ function drawCloseUp(): void {
           container: renderer.root,
           target: closeTexture,
           clear: true,
+          // The sky behind the castle where the backdrop (drawn for the screen) does not reach: the
+          // castle lies off the screen in the upright aim view.
+          clearColor: SKY,
           transform: new Matrix().translate(-sx, -sy).scale(zoom, zoom),
         });
         words.forEach((o, k) => {
           o.visible = was[k]!;
         });
       }
-      // Low in its band, CLOSE_GAP px over the castle it magnifies (the two read together; at the
-      // band's top it hung under the banner with a screen of empty sky between it and the castle).
+      // Low in its band (the two read together with the castle when it shows; at the band's top it
+      // hung under the banner with a screen of empty sky between it and the castle).
       const bx = Math.round((cam.width - bw) / 2),
-        by = Math.round(Math.max(top, sy - CLOSE_GAP - bh));
+        by = Math.round(Math.max(top, bottom - bh));
       closeSprite.position.set(bx, by);
       closeFrame
         .clear()
@@ -1558,8 +1592,8 @@ shell.expose({
   level: (): Level => lv,
   /** Throws with a pull (dx, dy), m (tests). @returns the projectile's handle, or 0 if none was thrown. */
   fire,
-  /** The castle's close-up on an upright phone (see drawCloseUp): its box (px) and magnification, or null while hidden. */
-  closeUp: () => closeShown,
+  /** The castle's close-up on an upright phone (see drawCloseUp): its box (px), magnification and whether it sits low (in the earth), or null while hidden. */
+  closeUp: () => (closeShown ? { ...closeShown, low: closeLow } : null),
   /** The screen sizes (CSS px, 'WxH') the camera has framed since the page loaded. */
   sizesFramed: (): string[] => [...sizesFramed],
   /** Position of a body by handle, m (tests). */
