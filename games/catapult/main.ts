@@ -1175,7 +1175,8 @@ function drawPause(): void {
  * metre in the screen's lower quarter under a tall empty sky; the close-up draws the same scene
  * (the castle, the aim's dashes reaching it, a stone arriving) CLOSE_MAX times as large or less, as
  * wide as the screen allows, framed and labelled. Hidden while the camera follows a throw or holds
- * the wreck (it is then as close), and on other screens.
+ * the wreck (it is then as close), unless a throw stopped short with the castle off the screen,
+ * and on other screens.
  */
 const closeTexture = RenderTexture.create({ width: 16, height: 16, resolution: Math.min(2, window.devicePixelRatio || 1) });
 const closeSprite = new Sprite(closeTexture);
@@ -1210,7 +1211,9 @@ let closeAge = CLOSE_EVERY;
 /** Draws the close-up (see above) for this frame, or hides it. */
 function drawCloseUp(): void {
   const cam = renderer.camera;
-  const show = upright() && !levelEnded && !(shotView && zoomsIn());
+  // In the shot view too once a throw that stopped short has settled with the castle off the screen.
+  const castleOff = cam.toScreenX(lv.castleMaxX) > cam.width && lastThrow.verdict !== '';
+  const show = upright() && !levelEnded && (!(shotView && zoomsIn()) || castleOff);
   closeShown = null;
   if (show) {
     // The castle with room round it for what falls, from the ground (or a pit's floor) up.
