@@ -278,11 +278,20 @@ describe('catapult', () => {
     await g.page.evaluate(() => (window.game as unknown as Paced).reset());
     await g.frames(3);
     expect(await drawn()).toBe(start + 3);
+    // A throw while no frame is drawn: the readout does not run ahead of the canvas's banner (it
+    // said 'score 50' beside the banner's 'Score 0'); once a frame is drawn it follows.
+    const shotsRow = g.page.locator('[data-readout="1"]');
+    expect(await shotsRow.textContent()).toBe('3');
+    await g.page.evaluate(() => (window.game as unknown as CatapultGame).fire(-1, -1));
+    await g.frames(3);
+    expect(await drawn()).toBe(start + 3);
+    expect(await shotsRow.textContent()).toBe('3');
     await g.page.evaluate(() => {
       const w = window.game as unknown as Paced;
       w.pacer.mayDraw = (window as unknown as { keptMayDraw: () => boolean }).keptMayDraw;
       w.paused = false;
     });
+    await g.waitFor(() => document.querySelector('[data-readout="1"]')?.textContent === '2', null);
     expect(g.errors).toEqual([]);
   });
 
