@@ -395,18 +395,10 @@ const aim = { active: false, dx: 0, dy: 0, x0: 0, y0: 0 };
 /** On a tall screen, where the ground line sits: this fraction of the screen's height from the bottom. */
 const GROUND_AT = 0.18;
 /**
- * On an upright phone, where the ground line sits: this fraction of the screen's height from the
- * bottom, a strip of earth as tall as the touch hint (about 7 % of a 390 x 844 phone's canvas) and
- * a margin. At 0.26 the earth under the ground was a quarter of the screen, a third with a hill's
- * mound over it: a stranger saw a band of dirt under the castle before the castle; the sky it
- * gives up holds the castle's close-up (drawCloseUp), which grows with it.
- */
-const GROUND_AT_UPRIGHT = 0.11;
-/**
- * On an upright phone, where the ground (the lowest surface: a pit's floor) sits: this fraction of
- * the screen's height from the bottom, so the catapult, the flight and the castle use the screen's
- * middle, with the banner and the castle's close-up in the sky over them. At 0.11 the scene sat in
- * the bottom fifth under 70 % of empty sky.
+ * On a screen taller than wide (an upright phone or tablet), where the ground (the lowest surface:
+ * a pit's floor) sits: this fraction of the screen's height from the bottom, so the catapult, the
+ * flight and the castle use the screen's middle, with the banner and (on a phone) the castle's
+ * close-up in the sky over them. At 0.11 the scene sat in the bottom fifth under 70 % of empty sky.
  */
 const UPRIGHT_GROUND = 0.38;
 /** On an upright phone, the aim view's width, m: the catapult and its stones about 4 m of it (some 150 px of 390). */
@@ -445,13 +437,13 @@ function viewFor(minX: number, maxX: number): View {
   const top = lv.castleTop + 4;
   // The lowest surface (a pit's floor) shows with 0.6 m of earth under it.
   const floor = Math.min(0, ...lv.terrain.map((t) => t.maxY)) - 0.6;
-  // Tall (or a screen taller than wide): the ground GROUND_AT (upright GROUND_AT_UPRIGHT) up, earth below it.
+  // Tall (or a screen taller than wide): the ground GROUND_AT (upright UPRIGHT_GROUND) up, earth below it.
   if (aspect > 1.2 || height > 3 * top) {
-    // Upright, the lowest surface (a pit's floor, where the stones and the wreck lie) GROUND_AT_UPRIGHT
-    // up too: the strip under the ground is where the card saying how to play and the next-level
-    // button lie, and under them a pit's floor was hidden.
+    // Upright, the lowest surface (a pit's floor, where the stones and the wreck lie) UPRIGHT_GROUND
+    // up: under it lie the card saying how to play and the next-level button, and under them a pit's
+    // floor was hidden.
     const low =
-      aspect > 1.2 ? Math.min(0, ...lv.terrain.map((t) => t.maxY)) - GROUND_AT_UPRIGHT * height : Math.min(-GROUND_AT * height, floor);
+      aspect > 1.2 ? Math.min(0, ...lv.terrain.map((t) => t.maxY)) - UPRIGHT_GROUND * height : Math.min(-GROUND_AT * height, floor);
     return { minX, minY: low, maxX, maxY: Math.max(low + height, top) };
   }
   // Wide: from just under the ground up, taller than the castle; the ground above the touch hint
