@@ -103,6 +103,8 @@ const lastThrow = {
   time: 0,
   /** What the throw did ('' until it settles), where to show it (m) and when it was decided (s). */
   verdict: '',
+  /** A miss in brief ('long 6 m', 'short 3 m', 'no damage'; '' for a hit or before the verdict), shown with the last throw's numbers while aiming. */
+  brief: '',
   good: false,
   at: [0, 0] as [number, number],
   decidedAt: 0,
@@ -302,7 +304,7 @@ const panel = createPanel(
     {
       type: 'slider',
       key: 'jointStrength',
-      label: 'joint strength (N, rebuilds)',
+      label: 'weld strength (N)',
       min: 50,
       max: 3000,
       step: 10,
@@ -374,14 +376,15 @@ shell.onWorldChange(() => {
  * the way up the screen, earth below it and sky above. The view eases a tenth of the way each frame;
  * it jumps when the screen's size changes.
  *
- * On an upright phone (a screen taller than wide) the whole play area fitted to the width leaves the
- * scene a strip, so the camera works as close as it can while the catapult and the castle both show:
- * the aim view is the overview, from just behind the catapult's stacked stones to just past the
- * castle, with the ground GROUND_AT_UPRIGHT of the way up (a strip of earth under it); the shot
- * view holds the castle and the rock with a little room either side, and in between the camera
- * follows the stone: the view slides from the overview to the shot view as the stone crosses the
- * field (by the farthest it got), so the stone stays in sight all the way, and stays there (the
- * castle and the wreck in view) until the next press eases it out to the overview.
+ * On an upright phone (a screen taller than wide) the whole play area fitted to the width drew the
+ * scene as a strip in the screen's bottom fifth under a tall empty sky, so the camera frames the
+ * play for the tall screen, the ground UPRIGHT_GROUND of the way up (the scene in the screen's
+ * middle, earth under it): the aim view is AIM_WIDTH_UPRIGHT metres from behind the catapult's
+ * stacked stones, the catapult large, with the castle shown close up in the sky over it
+ * (drawCloseUp); the shot view holds the castle and the rock; in between the camera follows the
+ * stone: the view slides from the aim view to the shot view as the stone crosses the field (by the
+ * farthest it got), keeping it in sight, and stays on the castle and the wreck until the next press
+ * eases it back to the aim view.
  */
 const cameraView = { minX: -4, minY: -1, maxX: 30, maxY: 14 };
 /**
@@ -392,13 +395,14 @@ const aim = { active: false, dx: 0, dy: 0, x0: 0, y0: 0 };
 /** On a tall screen, where the ground line sits: this fraction of the screen's height from the bottom. */
 const GROUND_AT = 0.18;
 /**
- * On an upright phone, where the ground line sits: this fraction of the screen's height from the
- * bottom, a strip of earth as tall as the touch hint (about 7 % of a 390 x 844 phone's canvas) and
- * a margin. At 0.26 the earth under the ground was a quarter of the screen, a third with a hill's
- * mound over it: a stranger saw a band of dirt under the castle before the castle; the sky it
- * gives up holds the castle's close-up (drawCloseUp), which grows with it.
+ * On a screen taller than wide (an upright phone or tablet), where the ground (the lowest surface:
+ * a pit's floor) sits: this fraction of the screen's height from the bottom, so the catapult, the
+ * flight and the castle use the screen's middle, with the banner and (on a phone) the castle's
+ * close-up in the sky over them. At 0.11 the scene sat in the bottom fifth under 70 % of empty sky.
  */
-const GROUND_AT_UPRIGHT = 0.11;
+const UPRIGHT_GROUND = 0.38;
+/** On an upright phone, the aim view's width, m: the catapult and its stones about 4 m of it (some 150 px of 390). */
+const AIM_WIDTH_UPRIGHT = 10.5;
 /** Screens narrower than this (CSS px) get the tighter aim view. */
 const NARROW = 600;
 /** Screen size the view was framed for; the view jumps (no easing) when it changes. */
@@ -433,13 +437,13 @@ function viewFor(minX: number, maxX: number): View {
   const top = lv.castleTop + 4;
   // The lowest surface (a pit's floor) shows with 0.6 m of earth under it.
   const floor = Math.min(0, ...lv.terrain.map((t) => t.maxY)) - 0.6;
-  // Tall (or a screen taller than wide): the ground GROUND_AT (upright GROUND_AT_UPRIGHT) up, earth below it.
+  // Tall (or a screen taller than wide): the ground GROUND_AT (upright UPRIGHT_GROUND) up, earth below it.
   if (aspect > 1.2 || height > 3 * top) {
-    // Upright, the lowest surface (a pit's floor, where the stones and the wreck lie) GROUND_AT_UPRIGHT
-    // up too: the strip under the ground is where the card saying how to play and the next-level
-    // button lie, and under them a pit's floor was hidden.
+    // Upright, the lowest surface (a pit's floor, where the stones and the wreck lie) UPRIGHT_GROUND
+    // up: under it lie the card saying how to play and the next-level button, and under them a pit's
+    // floor was hidden.
     const low =
-      aspect > 1.2 ? Math.min(0, ...lv.terrain.map((t) => t.maxY)) - GROUND_AT_UPRIGHT * height : Math.min(-GROUND_AT * height, floor);
+      aspect > 1.2 ? Math.min(0, ...lv.terrain.map((t) => t.maxY)) - UPRIGHT_GROUND * height : Math.min(-GROUND_AT * height, floor);
     return { minX, minY: low, maxX, maxY: Math.max(low + height, top) };
   }
   // Wide: from just under the ground up, taller than the castle; the ground above the touch hint
@@ -453,31 +457,35 @@ function viewFor(minX: number, maxX: number): View {
 const rockRight = (): number => lv.castleMaxX + ROCK.gap + 2 * ROCK.hx;
 /** The aim view (see above). */
 function aimView(): View {
-  // Before the level's first throw the overview: the player sees the castle they are to aim at.
-  // Upright, the overview throughout: the castle and what the last throw did stay in sight while
-  // aiming (a close view of the catapult left the castle off-screen behind an arrow).
-  if (upright()) return overviewRect();
+  // Upright: the catapult large, the castle in the close-up over it (drawCloseUp); a castle's
+  // front within a third more of that width is taken in whole (a sliver of it at the edge read as
+  // a glitch).
+  if (upright()) {
+    const front = lv.castleMinX + 1.6 - OVERVIEW_LEFT;
+    return uprightView(
+      OVERVIEW_LEFT,
+      OVERVIEW_LEFT + (front <= (4 / 3) * AIM_WIDTH_UPRIGHT ? Math.max(front, AIM_WIDTH_UPRIGHT) : AIM_WIDTH_UPRIGHT),
+    );
+  }
   // Room behind the catapult for its stones where the screen is wide enough.
   const behind = renderer.camera.width < NARROW ? 1.6 : 3.1;
   return viewFor(LAUNCH.x - behind, rockRight() + 0.6);
 }
 /**
- * The overview while aiming on an upright phone: from just behind the catapult to past the castle's
- * far end, so the player sees where the throw must go while pulling.
+ * An upright phone's view of the span [minX, maxX], m, fitted to the screen's width, its lowest
+ * surface (a pit's floor, or the ground) UPRIGHT_GROUND of the way up the screen.
  */
-function overviewRect(): View {
-  return viewFor(OVERVIEW_LEFT, lv.castleMaxX + OVERVIEW_PAST);
+function uprightView(minX: number, maxX: number): View {
+  const cam = renderer.camera;
+  const height = ((maxX - minX) * Math.max(1, cam.height)) / Math.max(1, cam.width);
+  const minY = Math.min(0, ...lv.terrain.map((t) => t.maxY)) - UPRIGHT_GROUND * height;
+  return { minX, minY, maxX, maxY: minY + height };
 }
-/**
- * The overview's left edge (behind the catapult's stacked stones) and its room past the castle's far
- * end, m: every metre left out draws the catapult, the flight and the castle larger on a 390 px wide
- * screen.
- */
-const OVERVIEW_LEFT = LAUNCH.x - 3.1,
-  OVERVIEW_PAST = 0.3;
-/** The shot view (see above): the castle, the rock and room either side for debris (2.5 m; 1.5 and 1.2 m upright). */
+/** The upright aim view's left edge, m: just behind the catapult's stacked stones. */
+const OVERVIEW_LEFT = LAUNCH.x - 3.4;
+/** The shot view (see above): the castle, the rock and room either side for debris (2.5 m; 0.8 and 1 m upright). */
 function shotViewRect(): View {
-  return upright() ? viewFor(lv.castleMinX - 1.5, rockRight() + 1.2) : viewFor(lv.castleMinX - 2.5, rockRight() + 2.5);
+  return upright() ? uprightView(lv.castleMinX - 0.8, rockRight() + 1) : viewFor(lv.castleMinX - 2.5, rockRight() + 2.5);
 }
 /** Screen pixels a metre in view `v`, fitted (letterboxed) to the screen. */
 function pxPerM(v: View): number {
@@ -490,21 +498,19 @@ function pxPerM(v: View): number {
  */
 const zoomsIn = (): boolean => upright() || (renderer.camera.width < NARROW && pxPerM(shotViewRect()) >= 1.5 * pxPerM(aimView()));
 /**
- * The view while the stone flies, upright: between the overview (u = 0) and the shot view (u = 1),
- * u the share of the way from the catapult to the castle's front the stone has got (smoothed, so the
- * camera starts and ends the slide gently).
+ * The view while the stone flies, upright: between the aim view (u = 0) and the shot view (u = 1),
+ * u the share of the way from the catapult to the castle's front the stone has got (its farthest
+ * x), and shifted where needed so the stone stays at least 15 % of the view's width inside it.
  */
 function followView(): View {
-  const a = overviewRect(),
+  const a = aimView(),
     s = shotViewRect();
-  const u0 = Math.min(1, Math.max(0, (lastThrow.farthest - LAUNCH.x) / Math.max(1, lv.castleMinX - 1 - LAUNCH.x)));
-  const u = u0 * u0 * (3 - 2 * u0);
-  return {
-    minX: a.minX + u * (s.minX - a.minX),
-    minY: a.minY + u * (s.minY - a.minY),
-    maxX: a.maxX + u * (s.maxX - a.maxX),
-    maxY: a.maxY + u * (s.maxY - a.maxY),
-  };
+  const x = lastThrow.farthest;
+  const u = Math.min(1, Math.max(0, (x - LAUNCH.x) / Math.max(1, lv.castleMinX - 1 - LAUNCH.x)));
+  const w = a.maxX - a.minX + u * (s.maxX - s.minX - (a.maxX - a.minX));
+  let c = (a.minX + a.maxX) / 2 + u * ((s.minX + s.maxX) / 2 - (a.minX + a.maxX) / 2);
+  c = Math.min(Math.max(c, x - 0.35 * w), x + 0.35 * w);
+  return uprightView(c - w / 2, c + w / 2);
 }
 function frameCamera(): void {
   const cam = renderer.camera;
@@ -515,15 +521,7 @@ function frameCamera(): void {
   if (shotView && lastThrow.verdict && (read || levelEnded)) shotView = false;
   // A level over: the wreck stays in view with its result (on a phone the shot view, not the catapult).
   const wreck = levelEnded && shots.length > 0 && zoomsIn();
-  const target = wreck
-    ? shotViewRect()
-    : shotView && zoomsIn()
-      ? upright()
-        ? followView()
-        : shotViewRect()
-      : aim.active && upright()
-        ? overviewRect()
-        : aimView();
+  const target = wreck ? shotViewRect() : shotView && zoomsIn() ? (upright() ? followView() : shotViewRect()) : aimView();
   const size = `${cam.width}x${cam.height}`;
   const k = size === framedFor ? 0.1 : 1;
   if (size !== framedFor) sizesFramed.add(size);
@@ -576,7 +574,8 @@ function fullPullPx(): number {
 /** Screen pixels per metre of pull. */
 const aimScale = (): number => fullPullPx() / PULL.max;
 app.canvas.addEventListener('pointerdown', (e) => {
-  if (shell.paused || shotsLeft <= 0 || (e.pointerType === 'mouse' && e.button !== 0)) return;
+  // No aim where no throw can follow: paused, out of shots, or the level over (its result showing).
+  if (shell.paused || shotsLeft <= 0 || levelEnded || (e.pointerType === 'mouse' && e.button !== 0)) return;
   pointerOnCanvas(app.canvas, e, pointer);
   shotView = false;
   lastThrow.hidden = true;
@@ -625,6 +624,7 @@ function fire(dx: number, dy: number): number {
   lastThrow.scoreBefore = tally(shell.world, lv).score;
   lastThrow.time = shell.world.time;
   lastThrow.verdict = '';
+  lastThrow.brief = '';
   lastThrow.farthest = LAUNCH.x;
   lastThrow.vx = vx;
   lastThrow.vy = vy;
@@ -698,12 +698,15 @@ function followThrow(world: PhysicsWorld, t: Tally): void {
     vy = lastThrow.vy;
   const ground = LAUNCH.x + (lastThrow.vx * (vy + Math.sqrt(vy * vy + 2 * g * LAUNCH.y))) / g;
   const by = (d: number): number => Math.max(1, Math.round(d));
-  lastThrow.verdict =
-    landX < lv.castleMinX - 0.3
-      ? `Short by ${by(lv.castleMinX - Math.min(ground, landX))} m: pull further back`
-      : landX > lv.castleMaxX + 0.3
-        ? `Long by ${by(ground - lv.castleMaxX)} m: pull less, or aim lower`
-        : 'No damage: throw harder, or hit lower';
+  const short = landX < lv.castleMinX - 0.3,
+    long = landX > lv.castleMaxX + 0.3;
+  const d = short ? by(lv.castleMinX - Math.min(ground, landX)) : long ? by(ground - lv.castleMaxX) : 0;
+  lastThrow.verdict = short
+    ? `Short by ${d} m: pull further back`
+    : long
+      ? `Long by ${d} m: pull less, or aim lower`
+      : 'No damage: throw harder, or hit lower';
+  lastThrow.brief = short ? `short ${d} m` : long ? `long ${d} m` : 'no damage';
   lastThrow.at = [Math.min(Math.max(x, lv.castleMinX - 4), lv.castleMaxX), Math.max(y, 0) + 2.2];
 }
 
@@ -777,7 +780,11 @@ function positionOf(h: number): [number, number] {
   return [P.x[s]!, P.y[s]!];
 }
 
-/** Draws the last throw's trail and, for VERDICT_SHOWN seconds, its verdict. */
+/**
+ * Draws the last throw's trail and its verdict: a hit's points for VERDICT_SHOWN seconds; a miss's
+ * hint ("Long by 6 m: pull less, or aim lower") until the player presses to aim again (it faded
+ * with the hit's time, and a stranger who looked back at the castle after a later miss saw none).
+ */
 function drawThrow(world: PhysicsWorld): void {
   const cam = renderer.camera;
   // The trail stays while the player aims the next throw (a guide: higher or lower than that one).
@@ -794,7 +801,8 @@ function drawThrow(world: PhysicsWorld): void {
   drawOffscreen(world);
   drawCastleMarker();
   const age = world.time - lastThrow.decidedAt;
-  if (!lastThrow.verdict || age > VERDICT_SHOWN) {
+  const gone = lastThrow.good ? age > VERDICT_SHOWN : lastThrow.hidden || levelEnded;
+  if (!lastThrow.verdict || gone) {
     verdictText.visible = false;
     return;
   }
@@ -804,7 +812,9 @@ function drawThrow(world: PhysicsWorld): void {
   verdictText.style.fontSize = lastThrow.good ? 34 : app.screen.width < 600 ? 16 : 20;
   const half = verdictText.width / 2 + 8;
   verdictText.x = Math.min(Math.max(cam.toScreenX(lastThrow.at[0]), half), app.screen.width - half);
-  verdictText.y = Math.max(cam.toScreenY(lastThrow.at[1]) - 18 * age, 70);
+  // A hit's points rise as they fade; a miss's hint rises for its first second, then holds.
+  const rise = lastThrow.good ? age : Math.min(age, 1);
+  verdictText.y = Math.max(cam.toScreenY(lastThrow.at[1]) - 18 * rise, 70);
   // Clear of the off-screen marker's label ("12 m past ▸") at the right edge: a verdict that starts
   // under the label stops rising under it, one that starts level with or over it stays over it.
   if (offscreenText.visible) {
@@ -816,13 +826,32 @@ function drawThrow(world: PhysicsWorld): void {
       verdictText.y = under ? Math.max(verdictText.y, oBottom + verdictText.height) : Math.min(verdictText.y, oTop);
     }
   }
-  verdictText.alpha = Math.min(1, 3 * (1 - age / VERDICT_SHOWN));
+  verdictText.alpha = lastThrow.good ? Math.min(1, 3 * (1 - age / VERDICT_SHOWN)) : 1;
 }
 
 /** Dots of the last throw's trail drawn in the last frame. */
 let trailDots = 0;
-/** The level score shown in the last frame (banner and readout). */
+/** The level score the readout shows (the banner showed it in the frame drawn before). */
 let shownScore = 0;
+/**
+ * The readout's rows (and level score) computed in the last frame, and the frames drawn before it
+ * (the pacer's count). They are written once that frame has been drawn: a frame the GPU was too
+ * busy for is skipped and the canvas keeps the one before, and the readout must not run ahead of the
+ * banner (it said "score 50" beside a banner's "Score 0"). Where every frame is drawn the readout
+ * follows one frame behind.
+ */
+let pendingRows: { score: number; rows: string[] } | null = null;
+let pendingDrawn = -1;
+/** Writes the last frame's rows to the readout if that frame was drawn, and keeps this frame's. */
+function writeReadout(score: number, rows: string[]): void {
+  const drawn = game.pacer.drawn;
+  if (pendingRows && drawn !== pendingDrawn) {
+    shownScore = pendingRows.score;
+    for (const [k, r] of pendingRows.rows.entries()) readout.set(k, r);
+  }
+  pendingRows = { score, rows };
+  pendingDrawn = drawn;
+}
 
 /** The on-screen "Next level" button, shown when a level is over. */
 const showNextButton = createActionButton('Next level ▶', () => nextLevel());
@@ -1057,10 +1086,8 @@ function drawAim(world: PhysicsWorld): void {
   // Green to yellow at half power, to red at full.
   const color = power < 0.5 ? mixColor(0x5cd65c, 0xffd23b, 2 * power) : mixColor(0xffd23b, 0xff5040, 2 * power - 1);
   // The band and the ring, in screen pixels from the press.
-  const R = fullPullPx(),
-    k = (Math.min(pull, PULL.max) * aimScale()) / Math.max(pull, 1e-9);
-  const ex = aim.x0 + aim.dx * k,
-    ey = aim.y0 - aim.dy * k;
+  const R = fullPullPx();
+  const [ex, ey] = aimEnd();
   overlay.circle(aim.x0, aim.y0, R).stroke({ width: 2, color: 0xffffff, alpha: 0.35 });
   overlay.circle(aim.x0, aim.y0, R / 2).stroke({ width: 1, color: 0xffffff, alpha: 0.2 });
   overlay.moveTo(aim.x0, aim.y0).lineTo(ex, ey).stroke({ width: 5, color: 0x000000, alpha: 0.35 });
@@ -1111,13 +1138,22 @@ function drawAim(world: PhysicsWorld): void {
   overlay.roundRect(x - 2, y - 2, w + 4, h + 4, 5).fill({ color: 0x000000, alpha: 0.55 });
   overlay.roundRect(x, y, Math.max(2, w * power), h, 4).fill(color);
   // Over this throw's numbers the last throw's: the player corrects from them ("long: a little less").
-  const last = lastThrow.body ? `last ${Math.round(100 * lastThrow.power)} %  ${Math.round(lastThrow.angle)}°\n` : '';
+  // With a miss's brief: what that throw did, while the hint over the scene is gone.
+  const brief = lastThrow.brief ? `: ${lastThrow.brief}` : '';
+  const last = lastThrow.body ? `last ${Math.round(100 * lastThrow.power)} %  ${Math.round(lastThrow.angle)}°${brief}\n` : '';
   const label = `${last}${Math.round(100 * power)} %  ${Math.round(aimShown.angle)}°`;
   if (aimText.text !== label) aimText.text = label;
   // Centred over the bar, and all on the screen (the last throw's line is wider than the bar).
   const half = aimText.width / 2 + 4;
   aimText.x = Math.min(Math.max(x + w / 2, half), cam.width - half);
   aimText.y = y - 4;
+}
+
+/** The screen end of the pull's band (px): the finger, or a full pull's length from the press along the pull. */
+function aimEnd(): [number, number] {
+  const pull = Math.hypot(aim.dx, aim.dy);
+  const k = (Math.min(pull, PULL.max) * aimScale()) / Math.max(pull, 1e-9);
+  return [aim.x0 + aim.dx * k, aim.y0 - aim.dy * k];
 }
 
 /** Shows or hides the pause overlay. */
@@ -1131,7 +1167,8 @@ function drawPause(): void {
  * metre in the screen's lower quarter under a tall empty sky; the close-up draws the same scene
  * (the castle, the aim's dashes reaching it, a stone arriving) CLOSE_MAX times as large or less, as
  * wide as the screen allows, framed and labelled. Hidden while the camera follows a throw or holds
- * the wreck (it is then as close), and on other screens.
+ * the wreck (it is then as close), unless a throw stopped short with the castle off the screen,
+ * and on other screens.
  */
 const closeTexture = RenderTexture.create({ width: 16, height: 16, resolution: Math.min(2, window.devicePixelRatio || 1) });
 const closeSprite = new Sprite(closeTexture);
@@ -1149,8 +1186,12 @@ const CLOSE_MAX = 3,
   CLOSE_MIN = 1.4;
 /** Pixels between the close-up's foot and the top of the castle on the screen. */
 const CLOSE_GAP = 36;
+/** Pixels over the aim's power bar (3.2 m up) kept clear for its two lines of numbers. */
+const AIM_LABEL_ROOM = 64;
 /** The close-up's box on the screen (px: x, y, width, height) and its magnification; null while hidden. */
 let closeShown: { box: [number, number, number, number]; zoom: number } | null = null;
+/** Whether the close-up sits in the earth under the ground (out of a pull's way), not in the sky. */
+let closeLow = false;
 /**
  * The close-up is drawn again every CLOSE_EVERY frames (and at once when its size changes): it shows
  * the castle at rest while the player aims, and a second pass over the whole scene every frame was
@@ -1162,7 +1203,9 @@ let closeAge = CLOSE_EVERY;
 /** Draws the close-up (see above) for this frame, or hides it. */
 function drawCloseUp(): void {
   const cam = renderer.camera;
-  const show = upright() && !levelEnded && !(shotView && zoomsIn());
+  // In the shot view too once a throw that stopped short has settled with the castle off the screen.
+  const castleOff = cam.toScreenX(lv.castleMaxX) > cam.width && lastThrow.verdict !== '';
+  const show = upright() && !levelEnded && (!(shotView && zoomsIn()) || castleOff);
   closeShown = null;
   if (show) {
     // The castle with room round it for what falls, from the ground (or a pit's floor) up.
@@ -1175,11 +1218,29 @@ function drawCloseUp(): void {
       sy = cam.toScreenY(y1),
       w = cam.toScreenLength(x1 - x0),
       h = cam.toScreenLength(y1 - y0);
-    // Under the banner, over the scene: the band from the banner's foot to 40 % of the way down to the castle's top.
-    const top = (banner.text !== '' ? banner.y + banner.height : 0) + 14,
-      bottom = top + 0.6 * (sy - top);
+    // Two places: in the sky, the band from the banner's foot to CLOSE_GAP px over the castle's top
+    // or, lower, the catapult's arm (3.2 m up); and in the earth under the ground, over the card
+    // saying how to play while it shows. The sky's, unless a pull's band crosses it and not the
+    // earth's: the close-up moves out of the aim's way (it hid the band a stranger pulled).
+    const ground = cam.toScreenY(floor);
+    const sky: [number, number] = [
+      (banner.text !== '' ? banner.y + banner.height : 0) + 14,
+      Math.min(sy - CLOSE_GAP, cam.toScreenY(3.2) - AIM_LABEL_ROOM),
+    ];
+    // (While a finger pulls, the card saying how to play is on its way out.)
+    const earth: [number, number] = [ground + 12, cam.height - (aim.active ? 8 : Math.max(8, hintReserve()))];
+    const crosses = (band: [number, number]): boolean => {
+      if (!aim.active) return false;
+      const ey = aimEnd()[1];
+      return Math.max(aim.y0, ey) + 12 > band[0] && Math.min(aim.y0, ey) - 12 < band[1];
+    };
+    const slot = crosses(sky) && !crosses(earth) ? earth : sky;
+    closeLow = slot === earth;
+    const [top, bottom] = slot;
     const zoom = Math.min(CLOSE_MAX, (cam.width - 24) / w, (bottom - top) / h);
-    if (zoom >= CLOSE_MIN) {
+    // Shown when it magnifies enough, or whenever the castle is off the screen (upright, the aim view
+    // frames the catapult: the close-up is where the castle shows).
+    if (zoom >= CLOSE_MIN || (zoom > 0.5 && sx + w > cam.width)) {
       const bw = Math.round(w * zoom),
         bh = Math.round(h * zoom);
       closeAge++;
@@ -1197,16 +1258,19 @@ function drawCloseUp(): void {
           container: renderer.root,
           target: closeTexture,
           clear: true,
+          // The sky behind the castle where the backdrop (drawn for the screen) does not reach: the
+          // castle lies off the screen in the upright aim view.
+          clearColor: SKY,
           transform: new Matrix().translate(-sx, -sy).scale(zoom, zoom),
         });
         words.forEach((o, k) => {
           o.visible = was[k]!;
         });
       }
-      // Low in its band, CLOSE_GAP px over the castle it magnifies (the two read together; at the
-      // band's top it hung under the banner with a screen of empty sky between it and the castle).
+      // Low in its band (the two read together with the castle when it shows; at the band's top it
+      // hung under the banner with a screen of empty sky between it and the castle).
       const bx = Math.round((cam.width - bw) / 2),
-        by = Math.round(Math.max(top, sy - CLOSE_GAP - bh));
+        by = Math.round(Math.max(top, bottom - bh));
       closeSprite.position.set(bx, by);
       closeFrame
         .clear()
@@ -1378,13 +1442,14 @@ function draw(world: PhysicsWorld, alpha: number): void {
   const i = params.level - 1;
   const score = levelEnded ? campaign.scores[i]! : t.score;
   const runningTotal = total() - (levelEnded ? 0 : campaign.scores[i]!) + (levelEnded ? 0 : score);
-  shownScore = score;
-  readout.set(0, `${params.level} / ${LEVEL_COUNT} ${lv.name}`);
-  readout.set(1, String(shotsLeft));
-  readout.set(2, String(score));
-  readout.set(3, String(runningTotal));
-  readout.set(4, `${t.fallen} / ${lv.pieces.length}`);
-  readout.set(5, `${t.broken} / ${lv.joints.length}`);
+  writeReadout(score, [
+    `${params.level} / ${LEVEL_COUNT} ${lv.name}`,
+    String(shotsLeft),
+    String(score),
+    String(runningTotal),
+    `${t.fallen} / ${lv.pieces.length}`,
+    `${t.broken} / ${lv.joints.length}`,
+  ]);
   banner.x = app.screen.width / 2;
   banner.y = 16;
   // Narrow screens (phones): smaller type, wrapped inside the canvas.
@@ -1483,6 +1548,8 @@ function recordLevel(t: Tally): void {
   const score = t.score + (earned > 0 ? shotsLeft * SHOT_BONUS : 0);
   const i = params.level - 1;
   levelEnded = true;
+  // A drag under way when the level ended throws nothing: its aim goes.
+  aim.active = false;
   if (score > campaign.scores[i]!) campaign.scores[i] = score;
   if (earned > campaign.stars[i]!) campaign.stars[i] = earned;
 }
@@ -1497,6 +1564,10 @@ shell.expose({
   levelEnded: (): boolean => levelEnded,
   /** What the last throw did once it settled ('' before): '+N' points, or why it missed. */
   lastVerdict: (): string => lastThrow.verdict,
+  /** The verdict's words over the scene in the last frame ('' while hidden). */
+  verdictShown: (): string => (verdictText.visible ? verdictText.text : ''),
+  /** The aim's numbers over the catapult in the last frame ('' while not aiming). */
+  aimLabel: (): string => (aimText.visible ? aimText.text : ''),
   /** The effects now: bits of debris in flight and score popups showing. */
   effects: (): { bits: number; popups: number } => ({ bits: effects!.bitCount, popups: effects!.popupCount }),
   /** The catapult's arm angle, rad (see CATAPULT in ./look: cocked at pi, upright at pi / 2). */
@@ -1516,8 +1587,8 @@ shell.expose({
   level: (): Level => lv,
   /** Throws with a pull (dx, dy), m (tests). @returns the projectile's handle, or 0 if none was thrown. */
   fire,
-  /** The castle's close-up on an upright phone (see drawCloseUp): its box (px) and magnification, or null while hidden. */
-  closeUp: () => closeShown,
+  /** The castle's close-up on an upright phone (see drawCloseUp): its box (px), magnification and whether it sits low (in the earth), or null while hidden. */
+  closeUp: () => (closeShown ? { ...closeShown, low: closeLow } : null),
   /** The screen sizes (CSS px, 'WxH') the camera has framed since the page loaded. */
   sizesFramed: (): string[] => [...sizesFramed],
   /** Position of a body by handle, m (tests). */

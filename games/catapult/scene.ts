@@ -352,13 +352,14 @@ export function surfaceAt(lv: Pick<Level, 'terrain'>, x: number): number {
 const LEVELS: ReadonlyArray<{ name: string; shots: number; build: (b: Builder) => void }> = [
   {
     name: 'Watchtower',
-    // A low tower near by and a hut behind it: a flat throw through both brings all down; a hard,
-    // flat throw meant for a farther castle flies over them.
+    // A low tower near by and a hut 5.5 m behind it: a throw at either clears the level, and three
+    // stars take both, each aimed (a careless pull toppled both at 3.3 m apart); a hard, flat throw
+    // meant for a farther castle flies over them.
     shots: 3,
     build: (b) => {
       const x = 8.5 + b.rng.range(-0.5, 0.5);
       tower(b, x, 0, 1, { stones: 2 });
-      tower(b, x + 3.3, 0, 1, { stones: 1, span: 1.6 });
+      tower(b, x + 5.5, 0, 1, { stones: 1, span: 1.6 });
     },
   },
   {

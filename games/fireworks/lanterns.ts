@@ -19,8 +19,9 @@
  *
  * A level is shown as lit (`clearShown`) CLEAR_DELAY after its last lantern lit, once every
  * lantern's glow (`glowOf`, rising over GLOW_RISE) is full: the banner no longer comes up while the
- * last burst still hides the lantern it lit. The lit count the page shows counts a lantern once its
- * glow is full (`shownLit`), for the same reason. A burst whose hot stars go cold having lit
+ * last burst still hides the lantern it lit. The lit count the page shows counts a lantern from the
+ * moment it lights (`shownLit`), with its glow coming up and the "Double!" over a burst that lit
+ * two. A burst whose hot stars go cold having lit
  * nothing is a miss (`watchBursts`), which the page says near it.
  * Pure rules: no DOM, no pixi.
  */
@@ -99,10 +100,10 @@ export interface LanternLevel {
  * (3 seeds, 64 m phone sky and 120 m desktop sky, every 0.01 W, five holds), searched for the fewest
  * shells; "spray" is the chance that par shells at random points of the band, at random holds,
  * light everything.
- * 1. Quick shells only, four lanterns and three shells: two far apart, one shell each, and a close
- *    pair (0.18 W) a quick burst right between lights together: par 3, and a shell a lantern runs
- *    out (the playtest's "no skill" with three lanterns, one shell each; a later one's "too easy"
- *    with a spare shell a lantern). The tip says to light two at once.
+ * 1. Quick shells only, four lanterns and four shells: two far apart, one shell each, and a close
+ *    pair (0.18 W) a quick burst right between lights together: par 3, so three stars take the
+ *    pair lit with one shell, and the spare shell lets a first level survive one stray tap (with
+ *    par shells only, one miss lost it). The tip says to light two at once.
  * 2. Two pairs 0.4 W apart, three shells: only a held burst between a pair lights both (0.2 W away,
  *    beyond a quick burst's 0.17); the two middle lanterns, one above the other, are an easy pair
  *    that leaves the outer two for a shell each (3, not 2): a shell a lantern runs out again, and
@@ -123,7 +124,7 @@ export const LEVELS: readonly LanternLevel[] = Object.freeze([
     name: 'First light',
     tip: 'between a close pair: both light',
     par: 3,
-    shells: 3,
+    shells: 4,
     shell: 'peony',
     hold: false,
     lanterns: [
@@ -531,13 +532,17 @@ export function lightFromSparks(world: PhysicsWorld, show: FireworksShow, run: L
 }
 
 /**
- * How many lanterns of `run` the player sees lit at world time `time` s: those whose glow is full
- * (GLOW_RISE after they lit). The page's "Lit n/m" counts these, so it never runs ahead of a lantern
- * the burst that lit it still hides.
+ * How many lanterns of `run` the player sees lit at world time `time` s: those lit at or before
+ * `time` (their glow coming up). The page's "Lit n/m" counts these, in step with the lanterns'
+ * glow and the "Double!" over a burst that lit two (counted once the glow was full, it said
+ * "Lit 0/4" under a "Double!" and two glowing lanterns).
  */
 export function shownLit(run: LanternRun, time: number): number {
   let n = 0;
-  for (let i = 0; i < run.lit.length; i++) if (glowOf(run, i, time) >= 1) n++;
+  for (let i = 0; i < run.lit.length; i++) {
+    const at = run.litAt[i];
+    if (run.lit[i] && at !== undefined && at <= time) n++;
+  }
   return n;
 }
 

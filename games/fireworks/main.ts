@@ -59,7 +59,7 @@ import {
   SHELL_CONTROLS,
   seedParam,
 } from '@bitphysics/game-kit';
-import { createResultCard, startPixiGame } from '@bitphysics/game-kit/pixi';
+import { createPauseOverlay, createResultCard, startPixiGame } from '@bitphysics/game-kit/pixi';
 import {
   createPhysicsWorld,
   disposeWorld,
@@ -250,6 +250,12 @@ function levelLit(): void {
 }
 /** World time the level was first shown as lit (NaN until then), s. */
 let clearShownAt = Number.NaN;
+/**
+ * Set by a fresh world (a new level, a retry, R): the status row, the card and the action button are
+ * written for it with the next frame, not the last frame's lines for the level before (the old
+ * level's card stayed up over the new one until a frame had been drawn).
+ */
+let freshWorld = false;
 
 /**
  * The sky for this screen, m, shaped like the stage so no band of it is left black: about 6.2 px a
@@ -297,6 +303,7 @@ function createWorld(): PhysicsWorld {
   missCount = 0;
   combos.length = 0;
   lostAt = Number.NaN;
+  freshWorld = true;
   return world;
 }
 
@@ -621,6 +628,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   // The status row in both modes (it was written only while lanterns were drawn, so free play kept
   // the lantern show's lines).
   updateStatus();
+  drawPause();
   drawCharge();
   // Where each of the player's shells will burst: a ring that closes in as its fuse burns down.
   let k = 0;
@@ -945,6 +953,11 @@ function drawLanterns(world: PhysicsWorld): void {
       overlay.ellipse(x, y, 0.4 * r, r).stroke({ width: 1, color: 0xd0601c, alpha: 0.35 });
     } else {
       glowShown[i] = 0;
+      // The level lost: a pulsing coral ring round each lantern left dark, the ones that were missed.
+      if (!Number.isNaN(lostAt)) {
+        const pulse = 0.5 + 0.5 * Math.sin(5 * performance.now() * 1e-3);
+        overlay.circle(x, y, (1.7 + 0.25 * pulse) * r).stroke({ width: 3, color: 0xff8a7a, alpha: 0.6 + 0.35 * pulse });
+      }
       overlay
         .ellipse(x, y, 0.8 * r, r)
         .fill({ color: 0x6a2a12, alpha: 0.9 })
@@ -1053,6 +1066,33 @@ function starText(n: number): string {
 const card = createResultCard(app.stage, { label: 'level-card', bigSize: 48, background: 0x060914, backgroundAlpha: 0.97 });
 /** Room left under the card for the big action button at the stage's bottom, CSS px. */
 const CARD_BOTTOM = 96;
+/** Where the card was placed (its top, CSS px) for what it says and the screen's size (`key`). */
+const cardPlaced = { key: '', top: 0 };
+/** The screen boxes (px: x0, y0, x1, y1, string and tassel included) of the level's lanterns still dark. */
+function darkLanternBoxes(): [number, number, number, number][] {
+  const cam = renderer.camera;
+  const sky = show.params.sky;
+  const r = cam.toScreenLength(lanternRadius(sky.width));
+  const out: [number, number, number, number][] = [];
+  for (const [i, l] of lanternsOf(run.level, sky).entries()) {
+    if (run.lit[i]) continue;
+    const [wx, wy] = lanternAt(l, sky, shell.world.time - run.start);
+    const x = cam.toScreenX(wx),
+      y = cam.toScreenY(wy);
+    out.push([x - 1.6 * r, y - 2.2 * r, x + 1.6 * r, y + 1.8 * r]);
+  }
+  return out;
+}
+/** Over the sky while the player has paused: the sky dimmed and "Paused" (a click then launches nothing, and said nothing). */
+const pause = createPauseOverlay();
+app.stage.addChild(pause.container);
+/** Shows the pause overlay while the player has paused (P or the pause button), on top of everything. */
+function drawPause(): void {
+  const cam = renderer.camera;
+  pause.draw(shell.paused && playerPaused, cam.width, cam.height, touch);
+  const top = app.stage.children.length - 1;
+  if (pause.visible && app.stage.getChildIndex(pause.container) !== top) app.stage.setChildIndex(pause.container, top);
+}
 
 /**
  * The card over the sky when a level is shown as lit or is lost (`f`): lit, its stars, the shells it
@@ -1080,11 +1120,36 @@ function drawCard(f: StatusFrame): void {
       lines.push(LEVELS.map((_, i) => `${i + 1} ${starText(bestStars[i]!)}`).join('  '), `Stars ${total} of ${3 * LEVELS.length}`);
   }
   const cam = renderer.camera;
-  // Low in the sky, just over the big button at the stage's bottom: the lanterns it is about stay in sight.
-  card.show(
-    { title, big, lines, edge: f.lost ? 0xff8a7a : 0xffd166 },
-    { cx: cam.width / 2, bottom: cam.height - CARD_BOTTOM, maxWidth: cam.width - 24, wrapWidth: Math.min(520, cam.width - 56) },
-  );
+  const content = { title, big, lines, edge: f.lost ? 0xff8a7a : 0xffd166 };
+  const wrap = { cx: cam.width / 2, maxWidth: cam.width - 24, wrapWidth: Math.min(520, cam.width - 56) };
+  // Low in the sky, just over the big button at the stage's bottom: the lanterns it is about stay in
+  // sight. A lost level's card goes where it covers the fewest dark lanterns (the lowest such place),
+  // chosen once for what it says and the screen's size, so the player sees which lantern was missed
+  // (low, it covered the one dark lantern on a phone).
+  const key = `${JSON.stringify(content)} ${cam.width}x${cam.height}`;
+  if (key !== cardPlaced.key) {
+    card.show(content, { ...wrap, bottom: cam.height - CARD_BOTTOM });
+    const h = card.box.height;
+    const low = card.box.y;
+    let best = low;
+    if (f.lost) {
+      const dark = darkLanternBoxes();
+      const covered = (top: number) =>
+        dark.filter(([x0, y0, x1, y1]) => x1 > card.box.x && x0 < card.box.x + card.box.width && y1 > top && y0 < top + h).length;
+      // Tops from the low place up to the sky's top, 8 px apart: the lowest that covers the fewest.
+      let fewest = covered(low);
+      for (let top = low - 8; top >= 8 && fewest > 0; top -= 8) {
+        const n = covered(top);
+        if (n < fewest) {
+          fewest = n;
+          best = top;
+        }
+      }
+    }
+    cardPlaced.key = key;
+    cardPlaced.top = best;
+  }
+  card.show(content, { ...wrap, top: cardPlaced.top });
   // Above everything in the sky, labels made after the card included.
   const top = app.stage.children.length - 1;
   if (app.stage.getChildIndex(card.container) !== top) app.stage.setChildIndex(card.container, top);
@@ -1093,6 +1158,9 @@ function drawCard(f: StatusFrame): void {
 /** Goes on to the next level (or back to the first after the last) with a fresh sky. */
 function nextLevel(): void {
   level = run.stars > 0 ? (run.level + 1) % LEVELS.length : run.level;
+  // The card and its button go at once, before the new level's world is built and drawn.
+  card.hide();
+  setAction(false);
   shell.reset();
 }
 
@@ -1190,6 +1258,12 @@ function writeStatus(f: StatusFrame): void {
  */
 function updateStatus(now = false): void {
   const drawn = game.pacer.drawn;
+  if (freshWorld) {
+    // A new world's lines at once: the last frame's were the level before's.
+    freshWorld = false;
+    pendingStatus = null;
+    now = true;
+  }
   if (pendingStatus && drawn !== pendingDrawn) writeStatus(pendingStatus);
   pendingStatus = statusFrame();
   pendingDrawn = drawn;
@@ -1218,6 +1292,10 @@ shell.expose({
   flashing: (): number => flashing,
   /** Markers drawn where the player's shells in flight will burst: their targets, m. */
   targetMarkers: (): { x: number; y: number }[] => targets.map((m) => ({ x: m.x, y: m.y })),
+  /** The level's result card as last drawn: whether it shows and its box on the canvas (px). */
+  resultCard: () => ({ visible: card.container.visible, box: { ...card.box } }),
+  /** Whether the pause overlay showed in the last frame (the player paused with P or the pause button). */
+  pauseShown: (): boolean => pause.visible,
   /** The finale's meeting cue as drawn last frame: release (how near a shell let go now bursts to the meeting, 0 none), burst point (m), label. */
   meeting: () => ({ ...meetShown }),
   /** The lantern show: mode, level (0-based), lit lanterns, shells, stars (0 while playing), best stars per level, lantern positions (m). */
@@ -1233,7 +1311,7 @@ shell.expose({
     litAt: run.litAt.slice(),
     clearShownAt,
     glow: glowShown.slice(0, run.lit.length),
-    /** Lanterns the row counts as lit now (their glow full), and the bursts that lit nothing since the level started. */
+    /** Lanterns the row counts as lit now (lit, their glow coming up or full), and the bursts that lit nothing since the level started. */
     shownLit: shownLit(run, shell.world.time),
     misses: missCount,
     /** Shells the level has left to launch, whether it is lost (its shells spent, a lantern dark) and the bursts that lit two or more. */

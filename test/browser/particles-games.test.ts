@@ -273,7 +273,7 @@ function litCount(page: Page): Promise<number> {
 
 describe('fireworks: the lantern show', () => {
   // The file's harness (one site lock a browser lane: a second Harness.start here waits for it forever).
-  it('desktop 1280 x 800: the goal shows above the sky; clicks on the lanterns light them (4 lanterns, one click between the close pair: 3 shells, par 3: 3 stars, kept); Next level; Free play turns the auto-show on', async () => {
+  it('desktop 1280 x 800: the goal shows above the sky; clicks on the lanterns light them (4 lanterns and 4 shells, one click between the close pair: 3 shells, par 3: 3 stars, kept); Next level; Free play turns the auto-show on', async () => {
     const g = await h.openGame('fireworks', {
       viewport: { width: 1280, height: 800 },
       locale: 'de-DE',
@@ -282,7 +282,7 @@ describe('fireworks: the lantern show', () => {
     await checkPageContract(g, 'fireworks', 'desktop');
     const status = g.page.locator('[data-hud="lanterns"]');
     expect(await status.isVisible()).toBe(true);
-    expect(await status.textContent()).toMatch(/Light 4 lanterns with 3 shells.*Level 1\/5 · Lit 0\/4 · Shells 3 · Par 3/s);
+    expect(await status.textContent()).toMatch(/Light 4 lanterns with 4 shells.*Level 1\/5 · Lit 0\/4 · Shells 4 · Par 3/s);
     const row = (await status.boundingBox())!;
     const canvas = await g.canvasBox();
     expect(row.y + row.height).toBeLessThanOrEqual(canvas.y + 1);
@@ -335,13 +335,29 @@ describe('fireworks: the lantern show', () => {
     const shown = await g.page.evaluate(() => (window.game as unknown as LanternGame).lanterns());
     expect(shown.clearShownAt - Math.max(...shown.litAt)).toBeGreaterThanOrEqual(1.2 - 1e-6);
     expect(shown.glow).toEqual([1, 1, 1, 1]);
+    type Carded = LanternGame & { resultCard(): { visible: boolean }; pauseShown(): boolean };
+    expect(await g.page.evaluate(() => (window.game as unknown as Carded).resultCard().visible)).toBe(true);
     await g.page.getByRole('button', { name: 'Next level ▶' }).click();
+    // The lit card goes with the click, and no frame after brings it back (the last frame's lines for
+    // the level before put it up again over the new level for a second or two).
+    expect(await g.page.evaluate(() => (window.game as unknown as Carded).resultCard().visible)).toBe(false);
+    await g.frames(2);
+    expect(await g.page.evaluate(() => (window.game as unknown as Carded).resultCard().visible)).toBe(false);
     await g.waitFor(() => (window.game as unknown as LanternGame).lanterns().level === 1, null);
     // The row is written with the next frame.
     await g.waitFor(
       () => /Level 2\/5 · Lit 0\/4 · Shells 3 · Par 2/.test(document.querySelector('[data-hud="lanterns"]')?.textContent ?? ''),
       null,
     );
+    // P pauses: the sky says so ("Paused", how to resume), and a click launches nothing; P again resumes.
+    await g.page.keyboard.press('p');
+    await g.frames(2);
+    expect(await g.page.evaluate(() => (window.game as unknown as Carded).pauseShown())).toBe(true);
+    await g.page.mouse.click(canvas.x + 0.5 * canvas.width, canvas.y + 0.3 * canvas.height);
+    expect(await g.page.evaluate(() => (window.game as unknown as { show: { shellCount: number } }).show.shellCount)).toBe(0);
+    await g.page.keyboard.press('p');
+    await g.frames(2);
+    expect(await g.page.evaluate(() => (window.game as unknown as Carded).pauseShown())).toBe(false);
     await g.page.getByRole('button', { name: 'Free play' }).click();
     await g.waitFor(() => !(window.game as unknown as LanternGame).lanterns().on, null);
     expect(await g.page.evaluate(() => (window.game as unknown as LanternGame).params.autoShow)).toBe(true);
@@ -350,14 +366,14 @@ describe('fireworks: the lantern show', () => {
     await g.close();
   });
 
-  it('phone 390 x 844, touch: the goal shows above the sky; a tap on a lantern lights it and counts a shell, the row counting it lit once its glow is full; a tap on empty sky is a miss, said', async () => {
+  it('phone 390 x 844, touch: the goal shows above the sky; a tap on a lantern lights it and counts a shell, the row counting it lit as it lights; a tap on empty sky is a miss, said; level 1 survives a stray shell', async () => {
     const g = await h.openGame('fireworks', {
       viewport: { width: 390, height: 844 },
       touch: true,
       query: { opening: 0, sparks: 60, generations: 1 },
     });
     const status = g.page.locator('[data-hud="lanterns"]');
-    expect(await status.textContent()).toMatch(/Light 4 lanterns with 3 shells.*Tap between a close pair/s);
+    expect(await status.textContent()).toMatch(/Light 4 lanterns with 4 shells.*Tap between a close pair/s);
     const row = (await status.boundingBox())!;
     const canvas = await g.canvasBox();
     expect(row.y + row.height).toBeLessThanOrEqual(canvas.y + 1);
@@ -396,17 +412,13 @@ describe('fireworks: the lantern show', () => {
       return game.lanterns().litAt[0]!;
     });
     expect(await litCount(g.page)).toBe(1);
-    // Just lit, its glow still coming up under the burst: the row does not count it yet (it said
-    // "Lit 4/4" before the last lantern could be seen lit).
+    // Just lit, its glow still coming up: the row counts it already, with the lantern's glow (counted
+    // once the glow was full, it said "Lit 0/4" under a "Double!" and two glowing lanterns).
     // (Paused there: whenever a frame is drawn, the row it writes says so.)
-    await g.waitFor(() => /Shells 2/.test(document.querySelector('[data-hud="lanterns"]')?.textContent ?? ''), null);
-    expect(await status.textContent()).toMatch(/Lit 0\/4 · Shells 2/);
-    // Its glow full (GLOW_RISE, 0.5 s, later): counted.
-    await g.page.evaluate((t) => {
-      const game = window.game as unknown as Stepping;
-      while (game.world.time < t + 0.5 + 1e-9) game.step();
-    }, litAt);
-    await g.waitFor(() => /Lit 1\/4 · Shells 2/.test(document.querySelector('[data-hud="lanterns"]')?.textContent ?? ''), null);
+    expect(await g.page.evaluate((t) => (window.game as unknown as Stepping).world.time - t, litAt)).toBeLessThan(0.5);
+    expect(await g.page.evaluate(() => (window.game as unknown as LanternGame).lanterns().glow[0])).toBeLessThan(1);
+    await g.waitFor(() => /Shells 3/.test(document.querySelector('[data-hud="lanterns"]')?.textContent ?? ''), null);
+    expect(await status.textContent()).toMatch(/Lit 1\/4 · Shells 3/);
     // A tap on empty sky, far from every lantern: when its burst's stars are cold it has lit nothing,
     // and the page says so near it and in the row.
     const empty = await g.page.evaluate(() => (window.game as unknown as LanternGame).show.params.sky.width);
@@ -422,11 +434,22 @@ describe('fireworks: the lantern show', () => {
     // FUSE (72 steps) and the peony's hot stars (0.88 s): the first step past them, the 125th.
     expect(missed).toMatchObject({ steps: 125, misses: 1, lit: [true, false, false, false] });
     await g.waitFor(() => /Missed/.test(document.querySelector('[data-hud="lanterns"] [data-hud="hint"]')?.textContent ?? ''), null);
-    // Level 1 gives 3 shells for its 4 lanterns: a third one on empty sky spends them with three dark,
-    // and once its stars are cold the level is lost: a fourth tap launches nothing, the row and a card
+    // Level 1 gives 4 shells for its 4 lanterns (one to spare over par 3): a third shell on empty sky
+    // leaves one, and the level goes on once its stars are cold; a fourth spends them with three dark,
+    // and once its stars are cold the level is lost: a fifth tap launches nothing, the row and a card
     // say so, and Try again plays the level afresh.
     await g.page.touchscreen.tap(q.x, q.y);
     await g.waitFor(() => (window.game as unknown as LanternGame).lanterns().shells === 3, null);
+    expect(
+      await g.page.evaluate(() => {
+        const game = window.game as unknown as Stepping;
+        for (let k = 0; k < 300 && game.lanterns().misses < 2; k++) game.step();
+        for (let k = 0; k < 60; k++) game.step();
+        return [game.lanterns().misses, game.lanterns().lost, game.lanterns().shellsLeft];
+      }),
+    ).toEqual([2, false, 1]);
+    await g.page.touchscreen.tap(q.x, q.y);
+    await g.waitFor(() => (window.game as unknown as LanternGame).lanterns().shells === 4, null);
     expect(
       await g.page.evaluate(() => {
         const game = window.game as unknown as Stepping;
@@ -437,7 +460,7 @@ describe('fireworks: the lantern show', () => {
     ).toBe(true);
     await g.page.touchscreen.tap(q.x, q.y);
     await g.waitFor(() => /Out of shells! 1 of 4 lit/.test(document.querySelector('[data-hud="lanterns"]')?.textContent ?? ''), null);
-    expect(await g.page.evaluate(() => (window.game as unknown as LanternGame).lanterns().shells)).toBe(3);
+    expect(await g.page.evaluate(() => (window.game as unknown as LanternGame).lanterns().shells)).toBe(4);
     expect(await status.textContent()).toMatch(/Lit 1\/4 · Shells 0/);
     // A lost level's goal line is the lost card's coral (#ff8a7a), not the done green a lit one gets.
     expect(await g.page.locator('[data-hud="lanterns"] [data-hud="goal"]').evaluate((e) => getComputedStyle(e).color)).toBe(

@@ -172,9 +172,10 @@ describe('lantern rules', () => {
     expect(clearShown(run, 3 + CLEAR_DELAY)).toBe(true);
     for (let i = 0; i < 4; i++) expect(glowOf(run, i, 3 + CLEAR_DELAY)).toBe(1);
   });
-  it('shells: each level gives par or more; the first two fewer than lanterns (one a lantern runs out); spent with a lantern dark and nothing pending, the level is lost', () => {
+  it('shells: each level gives par or more; the first one spare over par (a stray tap does not lose it); the second fewer than lanterns (one a lantern runs out); spent with a lantern dark and nothing pending, the level is lost', () => {
     for (const lv of LEVELS) expect(lv.shells).toBeGreaterThanOrEqual(lv.par);
-    expect(LEVELS[0]!.shells).toBeLessThan(LEVELS[0]!.lanterns.length);
+    expect(LEVELS[0]!.shells).toBe(LEVELS[0]!.par + 1);
+    expect(LEVELS[0]!.par).toBeLessThan(LEVELS[0]!.lanterns.length);
     expect(LEVELS[1]!.shells).toBeLessThan(LEVELS[1]!.lanterns.length);
     const run = startLevel(0, 0);
     expect(shellsLeft(run)).toBe(LEVELS[0]!.shells);
@@ -275,11 +276,11 @@ describe('real shells in the show (64 m x 108 m phone sky, 300 stars a burst)', 
     expect(m.until).toBeCloseTo(FUSE + HOT_FRACTION * 2.2, 1);
     expect(m.time).toBeGreaterThan(m.until);
     expect(m.time).toBeLessThan(m.until + 1.5 / 60);
-    // "Lit n/4" counts a lantern only once its glow is full (GLOW_RISE after it lit).
+    // "Lit n/4" counts a lantern from the moment it lights (with its glow and the "Double!"), not before.
     const first = Math.min(...r.litAt.filter((t) => !Number.isNaN(t)));
-    expect(shownLit(r.run, first)).toBe(0);
-    expect(shownLit(r.run, first + GLOW_RISE - 0.02)).toBe(0);
-    expect(shownLit(r.run, first + GLOW_RISE)).toBeGreaterThanOrEqual(1);
+    expect(shownLit(r.run, first - 0.01)).toBe(0);
+    expect(shownLit(r.run, first)).toBeGreaterThanOrEqual(1);
+    expect(glowOf(r.run, r.litAt.indexOf(first), first + GLOW_RISE / 2)).toBeLessThan(1);
     expect(shownLit(r.run, 100)).toBe(3);
   });
   it("level 3: a shell fired at each drifting lantern's ghost (where it will be after the fuse, as the page draws it) lights it; one fired at the lantern does not", () => {
