@@ -33,6 +33,7 @@ import {
   clearParticles,
   gravitationalConstant,
   LINE_Y,
+  MAX_FIELD_HOLES,
   MAX_HOLES,
   rampThrust,
   resetShip,
@@ -144,12 +145,22 @@ export const LEVEL2_WALL_HEIGHT: readonly [number, number] = Object.freeze([18.5
 export const LEVEL3_WALL_HEIGHT: readonly [number, number] = Object.freeze([11, 13]);
 
 /**
- * Level 2's gap, m: under a wall that high a ship holding a diagonal arrow from the start meets the
- * wall's height about DIAGONAL_REACH of its height out to the side (bent in by the wall's longer
- * side), on the 32 m field inside any gap 9 m wide that fits; a gap this wide fits between 2 m out
- * and there, so the diagonal meets a hole.
+ * Level 2's gap, m (on a field narrower than 25 m, 0.32 of its width): under a wall that high a ship
+ * holding a diagonal arrow from the start meets the wall's height about DIAGONAL_REACH of its height
+ * out to the side (bent in by the wall's longer side), 10.7 m on the 32 m field; a gap this wide fits
+ * between 2 m out and there, so the diagonal meets a hole (and the layout check, `heldThrustClears`,
+ * draws again where it does not). With the wall's small holes (`LEVEL2_RADIUS`) most of it shows clear
+ * between the discs drawn round them.
  */
-export const LEVEL2_GATE = 6;
+export const LEVEL2_GATE = 8;
+
+/**
+ * Radii of level 2's wall holes, m: small, so the wall pulls like a light line of mass (about 13 kg/m,
+ * level 3's some 18) and its discs leave the gap in plain sight. (Holes of 0.45 to 0.55 m, grown to
+ * 0.75 to 0.92 m to close the field with at most 16, left some 70 px of a 6 m gap between their discs
+ * on a desktop, and scripts/black-hole-levels.mjs's route-flying newcomers cleared none of 8 seeds.)
+ */
+export const LEVEL2_RADIUS: readonly [number, number] = Object.freeze([0.2, 0.25]);
 
 /**
  * How far to the side of the start a ship holding a diagonal arrow from it meets a wall's height, as a
@@ -164,9 +175,9 @@ const WALL_FILL_GAP = 0.4;
 /**
  * The spec of level `level`, one new difficulty at a time: level 1 a fork of three small holes
  * (one across the straight path up, one across each diagonal: steer into a gap beside the first);
- * level 2 a wall of holes across the field, high up (LEVEL2_WALL_HEIGHT: its pull at the start
- * weak, so taps steer the ship) with one gap of LEVEL2_GATE off to the side (fly across to it, then
- * up through it); level 3 a wall lower down (LEVEL3_WALL_HEIGHT: it pulls harder) with a 7 m gap
+ * level 2 a wall of small holes (LEVEL2_RADIUS) across the field, high up (LEVEL2_WALL_HEIGHT: its
+ * pull at the start weak, so taps steer the ship) with one gap of LEVEL2_GATE off to the side (fly
+ * across to it, then up through it); level 3 a wall lower down (LEVEL3_WALL_HEIGHT: it pulls harder) with a 7 m gap
  * and a hole above it; level 4 three holes, two across the path one above the other;
  * level 5 a fourth hole; from level 6 the holes drift, slowly at first (0.35, then 0.6, 0.8 m/s);
  * from level 8 the fuel is limited (18 s, then 15 s down to 5 s); from level 9 a fifth hole, then a
@@ -202,7 +213,10 @@ export function levelSpec(level: number): LevelSpec {
     case 1:
       return spec(3, [0.5, 0.6], 0, 1, 0, Infinity, 0, true);
     case 2:
-      return spec(0, [0.45, 0.55], 0, 0, 0, Infinity, LEVEL2_GATE, false, [LEVEL2_WALL_HEIGHT[0], LEVEL2_WALL_HEIGHT[1]]);
+      return spec(0, [LEVEL2_RADIUS[0], LEVEL2_RADIUS[1]], 0, 0, 0, Infinity, LEVEL2_GATE, false, [
+        LEVEL2_WALL_HEIGHT[0],
+        LEVEL2_WALL_HEIGHT[1],
+      ]);
     case 3:
       return spec(1, [0.45, 0.55], 0, 1, 0, Infinity, 7, false, [LEVEL3_WALL_HEIGHT[0], LEVEL3_WALL_HEIGHT[1]]);
     case 4:
@@ -568,7 +582,7 @@ function layHoles(game: BlackHoleGame, run: LevelRun, spec: LevelSpec): void {
  * on the gap's edge and the last one's that gap from the field's edge: as many as fit at radii drawn
  * in spec.radius, then all scaled to fill the stretch exactly. Of up to 40 draws of the gap's place, the one that puts a hole's
  * centre nearest the start's x (in radii) is laid, so the straight climb runs into a hole and not up
- * a narrow gap. On a field so wide that the wall would need more than MAX_HOLES - spec.holes - 4
+ * a narrow gap. On a field so wide that the wall would need more than MAX_FIELD_HOLES - spec.holes - 4
  * holes, all of them are larger in proportion. Pushes the holes into the game.
  * @returns the gap's centre, m (x).
  */
@@ -579,7 +593,7 @@ function layWall(game: BlackHoleGame, run: LevelRun, spec: LevelSpec): number {
     x0 = game.start[0];
   const gate = Math.min(spec.gate, 0.32 * W);
   // Four spare: the rounding up on each side of the gap, and the hole more each side may need.
-  const room = MAX_HOLES - spec.holes - 4;
+  const room = MAX_FIELD_HOLES - spec.holes - 4;
   const grow = Math.max(1, ((W - gate) / room - WALL_GAP) / (spec.radius[0] + spec.radius[1]));
   const r0 = grow * spec.radius[0],
     r1 = grow * spec.radius[1];
