@@ -145,7 +145,7 @@ export const LEVEL2_WALL_HEIGHT: readonly [number, number] = Object.freeze([18.5
 export const LEVEL3_WALL_HEIGHT: readonly [number, number] = Object.freeze([11, 13]);
 
 /**
- * Level 2's gap, m (on a field narrower than 25 m, 0.32 of its width): under a wall that high a ship
+ * Level 2's gap, m (on a field narrower than 20 m, 0.4 of its width): under a wall that high a ship
  * holding a diagonal arrow from the start meets the wall's height about DIAGONAL_REACH of its height
  * out to the side (bent in by the wall's longer side), 10.7 m on the 32 m field; a gap this wide fits
  * between 2 m out and there, so the diagonal meets a hole (and the layout check, `heldThrustClears`,
@@ -168,6 +168,13 @@ export const LEVEL2_RADIUS: readonly [number, number] = Object.freeze([0.2, 0.25
  * line would be 1). `layWall` keeps the gap away from there.
  */
 const DIAGONAL_REACH = 0.62;
+
+/**
+ * The widest a wall's gap may be, as a share of the field's width: on the phone's 20 m field level
+ * 2's gap is 8 m and runs to the field's edge (with 0.32, 6.4 m between two stretches of wall, the
+ * bold route-flying newcomer of scripts/black-hole-levels.mjs cleared 4 % of its tries there; now 50 %).
+ */
+export const WALL_GATE_SHARE = 0.4;
 
 /** The gap a wall is laid with, m (below WALL_GAP): its holes are scaled to fill each stretch with gaps of this. */
 const WALL_FILL_GAP = 0.4;
@@ -575,7 +582,7 @@ function layHoles(game: BlackHoleGame, run: LevelRun, spec: LevelSpec): void {
 /**
  * Lays a gate level's wall (see `LevelSpec.gate`): a row of holes across the whole field at a height
  * drawn in spec.wallHeight (on the default field; scaled to this field's climb), with one gap of clear
- * width min(spec.gate, 0.32 x the field's width) m off to one side of the start (either side, at
+ * width min(spec.gate, WALL_GATE_SHARE x the field's width) m off to one side of the start (either side, at
  * random; its near edge at least 2 m from the start's x; not where a held diagonal meets the wall,
  * `DIAGONAL_REACH`, unless no draw avoids it). From each edge of the gap out to the field's edge,
  * holes follow one another at equal gaps of WALL_FILL_GAP m (under WALL_GAP), the first one's horizon
@@ -591,7 +598,7 @@ function layWall(game: BlackHoleGame, run: LevelRun, spec: LevelSpec): number {
     rng = game.rng;
   const W = game.field.width,
     x0 = game.start[0];
-  const gate = Math.min(spec.gate, 0.32 * W);
+  const gate = Math.min(spec.gate, WALL_GATE_SHARE * W);
   // Four spare: the rounding up on each side of the gap, and the hole more each side may need.
   const room = MAX_FIELD_HOLES - spec.holes - 4;
   const grow = Math.max(1, ((W - gate) / room - WALL_GAP) / (spec.radius[0] + spec.radius[1]));

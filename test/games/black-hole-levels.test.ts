@@ -22,6 +22,7 @@ import {
   startLevel,
   stepLevel,
   WALL_GAP,
+  WALL_GATE_SHARE,
 } from '../../games/black-hole/levels';
 import {
   type BlackHoleGame,
@@ -394,7 +395,7 @@ describe('levels', () => {
           const g = createBlackHoleGame({ seed, field, ...engineFor(field) });
           const spec = startLevel(g, level).spec;
           const gap = wallGap(g);
-          expect(gap.width, `level ${level} seed ${seed}`).toBeCloseTo(Math.min(spec.gate, 0.32 * field.width), 9);
+          expect(gap.width, `level ${level} seed ${seed}`).toBeCloseTo(Math.min(spec.gate, WALL_GATE_SHARE * field.width), 9);
           expect(gap.others).toBeLessThanOrEqual(WALL_GAP + 1e-9);
           expect(gap.edge).toBeGreaterThanOrEqual(2 - 1e-9);
           // A wall of small holes needs more than the classic game's MAX_HOLES: the cap is the predictor's.
