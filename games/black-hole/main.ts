@@ -555,11 +555,15 @@ function updateStatus(force = false): void {
   }
   if (force || bh.message !== shownMessage) {
     shownMessage = bh.message;
-    // The rules speak of keys; on a touch screen a tap does the same.
+    // The rules speak of keys; on a touch screen a tap does the same. There a clear's line leaves out
+    // the time in all and how the points were made (the "+N" rising from the line shows them), so it
+    // keeps to the two lines the status row holds: a third pushed the field's foot under the pad.
     message.textContent = touch
       ? overMessage(bh.message)
           .replace('Press Enter or R to play again.', 'Tap to play again.')
           .replace('Press Enter for level', 'Tap for level')
+          .replace(/ \(\d+\.\d s in all, \d+ falls?\)/, '')
+          .replace(/ \(\d+ holes? × \d+( \+ \d+ speed bonus)?\)/, '')
       : overMessage(bh.message);
   }
   status.classList.toggle('over', bh.over);
