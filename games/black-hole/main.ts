@@ -807,8 +807,8 @@ edgeText.visible = false;
 app.stage.addChild(edgeText);
 
 /**
- * The level's title under the finish line while the ship waits for its first thrust of the level:
- * "Level N" and its holes, white on a dark outline.
+ * The level's title at a level's start (`drawLevelBanner`: clear of the holes, fading after
+ * BANNER_MS or at the first thrust): "Level N" and its holes, white on a dark outline.
  */
 const levelBanner = new Text({
   text: '',
