@@ -1,6 +1,6 @@
-// `node scripts/black-hole-levels.mjs [--levels 1-10] [--seeds 8] [--fields 32x24,20x30] [--tables held,pilot,simple]
+// `node scripts/black-hole-levels.mjs [--levels 1-10] [--seeds 8] [--fields 32x24,20x30] [--tables held,pilot,route,simple] [--pilots TEXT]
 // [--source games/black-hole]`: what black hole's levels ask of a player, level by level, on each field (the desktop's
-// 32 x 24 m and the upright phone's 20 x 30 m by default). Three tables:
+// 32 x 24 m and the upright phone's 20 x 30 m by default). Four tables:
 // - held: every arrow and every pair of arrows at right angles held from the start, never changed
 //   (up, the four diagonals, left, right, down), on every seed, until the line, a fall, an exit or
 //   20 s: how many of these clear (a level that needs no steering shows a count above 0);
@@ -12,6 +12,12 @@
 //   longest time to the line, falls a level (the difficulty curve). The tapper is a newcomer on a
 //   phone: it chooses the same way every 0.4 s looking 1 s ahead, but only taps (thrusts for 0.15 s,
 //   then lets go until its next choice);
+//   `--pilots TEXT` keeps the pilots (of both tables) whose name holds TEXT. The newcomers choose
+//   the same way but act 0.3 or 0.5 s late (a player's reaction); a fall or an exit lets go of the
+//   arrows (as the page does). Each pilot's line ends with the share of its tries that cleared;
+// - route: newcomers who fly by eye, not by the predicted path (`flyRoute`): a route kept some horizon
+//   radii clear of every hole, followed with a reaction lag; per level the seeds cleared, the falls
+//   and the share of tries that cleared (the difficulty curve as a newcomer meets it);
 // - simple: a sideways nudge of 0 to 2.4 s, then up: the share of such tries that clear.
 // The game runs at its 60 Hz step, so game time is what a player's clock shows. `--source` plays
 // another copy of the game's levels.ts and rules.ts (a folder inside the repository, e.g. an older
@@ -33,6 +39,7 @@ const fields = arg('--fields', '32x24,20x30')
   .split(',')
   .map((f) => f.split('x').map(Number));
 const tables = arg('--tables', 'held,pilot').split(',');
+const pilotFilter = arg('--pilots', '');
 if (!(lo >= 1 && hi >= lo && seeds >= 1 && fields.every(([w, h]) => w > 0 && h > 0)))
   throw new RangeError('black-hole-levels: --levels a-b (1 <= a <= b), --seeds n >= 1, --fields WxH,WxH');
 
@@ -83,8 +90,11 @@ function held(level, seed, width, height, thrust) {
  * Plays level `level` of seed `seed` with a pilot that chooses every `react` s looking `look` s ahead
  * (see the file's comment). Lives never run out (a fall counts and the ship starts again).
  */
-function play(level, seed, width, height, react, look, tap = Infinity) {
+function play(level, seed, width, height, react, look, tap = Infinity, lag = 0) {
   const { g, run } = newLevel(level, seed, width, height);
+  // The choices made, applied `lag` s later (a player's reaction time): step -> thrust.
+  const lagSteps = Math.round(lag / g.world.dt);
+  const queue = new Map();
   const pred = m.createPredictor(g);
   const ahead = Math.round(look / g.world.dt),
     every = Math.max(1, Math.round(react / g.world.dt));
@@ -94,10 +104,12 @@ function play(level, seed, width, height, react, look, tap = Infinity) {
     V = g.world.components.Velocity;
   const steps = Math.round(60 / g.world.dt),
     tapSteps = Math.round(tap / g.world.dt);
+  let chosen = 'none',
+    chosenAt = -Infinity;
   for (let k = 0; k < steps; k++) {
-    let want = k % every >= tapSteps ? 'none' : g.thrust;
+    const thrustNow = g.thrust;
     if (k % every === 0 && m.canThrust(g, run)) {
-      want = 'none';
+      let want = 'none';
       let first = 'up';
       const s = m.slotOf(g.ship);
       if (gap && P.y[s] < gap.y) {
@@ -115,14 +127,188 @@ function play(level, seed, width, height, react, look, tap = Infinity) {
           break;
         }
       }
+      m.setThrust(g, thrustNow);
+      queue.set(k + lagSteps, want);
     }
+    if (queue.has(k)) {
+      chosen = queue.get(k);
+      chosenAt = k;
+      queue.delete(k);
+    }
+    let want = k - chosenAt >= tapSteps ? 'none' : chosen;
     if (!m.canThrust(g, run)) want = 'none';
     if (g.thrust !== want) m.setThrust(g, want);
     const e = m.stepLevel(g, run);
     if (e === 'cleared') return { time: run.summary.totalTime, falls: run.summary.falls };
+    if (e === 'fell' || e === 'lost') {
+      // The page lets go of every arrow after a fall or an exit: choices still pending are dropped.
+      queue.clear();
+      chosen = 'none';
+    }
     if (g.lives < 3) g.lives = 9;
   }
   return { time: Number.NaN, falls: g.falls };
+}
+
+/**
+ * A route on the field from the start to the line that keeps `margin(r)` m clear of each hole's
+ * centre (r its horizon radius, m) and prefers to stay wide of them, as a player steers by eye: the
+ * cheapest way on a 0.5 m grid (8 neighbours; cells within that reach of a hole, or within 0.5 m of a
+ * side edge, closed), a step costing its length times 1 + 4 / (1 + the cell's clearance beyond the
+ * margin, m). The route is the cells' centres from the start, m ([x, y] pairs); empty if none
+ * reaches the line.
+ */
+function route(g, margin) {
+  const cell = 0.5,
+    nx = Math.floor(g.field.width / cell),
+    ny = Math.ceil(g.lineY / cell) + 1;
+  const P = g.world.components.Position;
+  const hs = g.holes.map((h, i) => [P.x[m.slotOf(h)], P.y[m.slotOf(h)], margin(g.holeRadius[i])]);
+  const weight = new Float64Array(nx * ny);
+  for (let j = 0; j < ny; j++)
+    for (let i = 0; i < nx; i++) {
+      const x = (i + 0.5) * cell,
+        y = j * cell;
+      let clear = Math.min(x - 0.5, g.field.width - 0.5 - x) + 2;
+      for (const [hx, hy, r] of hs) clear = Math.min(clear, Math.hypot(x - hx, y - hy) - r);
+      weight[j * nx + i] = clear > 0 ? 1 + 4 / (1 + clear) : Infinity;
+    }
+  const si = Math.floor(g.start[0] / cell),
+    sj = Math.round(g.start[1] / cell);
+  const startCell = sj * nx + si;
+  weight[startCell] = 1;
+  const cost = new Float64Array(nx * ny).fill(Infinity),
+    from = new Int32Array(nx * ny).fill(-1);
+  cost[startCell] = 0;
+  // A binary heap of [cost, cell].
+  const heap = [[0, startCell]];
+  const push = (item) => {
+    heap.push(item);
+    for (let i = heap.length - 1; i > 0; ) {
+      const p = (i - 1) >> 1;
+      if (heap[p][0] <= heap[i][0]) break;
+      [heap[p], heap[i]] = [heap[i], heap[p]];
+      i = p;
+    }
+  };
+  const pop = () => {
+    const top = heap[0],
+      last = heap.pop();
+    if (heap.length > 0) {
+      heap[0] = last;
+      for (let i = 0; ; ) {
+        const a = 2 * i + 1,
+          b = a + 1;
+        let k = i;
+        if (a < heap.length && heap[a][0] < heap[k][0]) k = a;
+        if (b < heap.length && heap[b][0] < heap[k][0]) k = b;
+        if (k === i) break;
+        [heap[k], heap[i]] = [heap[i], heap[k]];
+        i = k;
+      }
+    }
+    return top;
+  };
+  let end = -1;
+  while (heap.length > 0) {
+    const [c0, c] = pop();
+    if (c0 > cost[c]) continue;
+    const i = c % nx,
+      j = (c - i) / nx;
+    if (j === ny - 1) {
+      end = c;
+      break;
+    }
+    for (let di = -1; di <= 1; di++)
+      for (let dj = -1; dj <= 1; dj++) {
+        const a = i + di,
+          b = j + dj;
+        if ((di === 0 && dj === 0) || a < 0 || a >= nx || b < 0 || b >= ny) continue;
+        const d = b * nx + a;
+        const w = weight[d];
+        if (w === Infinity) continue;
+        const next = c0 + cell * Math.hypot(di, dj) * w;
+        if (next < cost[d]) {
+          cost[d] = next;
+          from[d] = c;
+          push([next, d]);
+        }
+      }
+  }
+  if (end < 0) return [];
+  const cells = [];
+  for (let c = end; c !== startCell; c = from[c]) cells.push(c);
+  cells.reverse();
+  return cells.map((c) => [((c % nx) + 0.5) * cell, Math.floor(c / nx) * cell]);
+}
+
+/**
+ * A newcomer who plans a way by eye and flies it by hand: at the level's start (and again after each
+ * fall or exit, and every choice when holes drift) it finds a route (`route`) keeping `keep` horizon
+ * radii (plus the ship's size and 0.5 m) from every hole's centre, as a player gives the glowing discs
+ * a wide berth. Every `react` s it picks the thrust (of the eight arrows and pairs, or none) that best
+ * turns its velocity towards `speed` m/s along the route (aimed 3 m ahead of the nearest point),
+ * and presses it `lag` s later (a player's reaction). It never reads the predicted path. Lives never
+ * run out, as in `play`.
+ */
+function flyRoute(level, seed, width, height, { react, lag, keep, speed }) {
+  const { g, run } = newLevel(level, seed, width, height);
+  const dt = g.world.dt;
+  const every = Math.max(1, Math.round(react / dt)),
+    lagSteps = Math.round(lag / dt);
+  const margin = (r) => keep * r + m.SHIP_RADIUS + 0.5;
+  const P = g.world.components.Position,
+    V = g.world.components.Velocity;
+  let way = route(g, margin);
+  const queue = new Map();
+  let chosen = 'none';
+  const thrusts = ['none', 'up', 'down', 'left', 'right', 'up-left', 'up-right', 'down-left', 'down-right'];
+  for (let k = 0; k < Math.round(60 / dt); k++) {
+    if (k % every === 0 && m.canThrust(g, run)) {
+      if (run.spec.drift > 0) way = route(g, margin);
+      // Where the ship will be when the choice acts, as a player allows for the engine still pushing.
+      const s = m.slotOf(g.ship),
+        vx = V.x[s] + g.thrustVec[0] * lag,
+        vy = V.y[s] + g.thrustVec[1] * lag,
+        x = P.x[s] + V.x[s] * lag,
+        y = P.y[s] + V.y[s] * lag;
+      // The nearest route point, then the one 3 m further along the route (its points are 0.5 to 0.7 m apart).
+      let near = 0;
+      for (let i = 1; i < way.length; i++)
+        if (Math.hypot(way[i][0] - x, way[i][1] - y) < Math.hypot(way[near][0] - x, way[near][1] - y)) near = i;
+      let aim = near;
+      for (let along = 0; aim + 1 < way.length && along < 3; aim++)
+        along += Math.hypot(way[aim + 1][0] - way[aim][0], way[aim + 1][1] - way[aim][1]);
+      const [ax, ay] = way.length ? way[aim] : [x, g.lineY];
+      const d = Math.hypot(ax - x, ay - y) || 1;
+      const ex = (speed * (ax - x)) / d - vx,
+        ey = (speed * (ay - y)) / d - vy;
+      let want = 'none';
+      if (Math.hypot(ex, ey) > 0.6) {
+        let best = -Infinity;
+        for (const t of thrusts.slice(1)) {
+          const [tx, ty] = m.THRUST_DIRECTION[t];
+          const dot = (tx * ex + ty * ey) / Math.hypot(ex, ey);
+          if (dot > best) [best, want] = [dot, t];
+        }
+      }
+      queue.set(k + lagSteps, want);
+    }
+    if (queue.has(k)) {
+      chosen = queue.get(k);
+      queue.delete(k);
+    }
+    const want = m.canThrust(g, run) ? chosen : 'none';
+    if (g.thrust !== want) m.setThrust(g, want);
+    const e = m.stepLevel(g, run);
+    if (e === 'cleared') return { time: run.summary.totalTime, falls: run.summary.falls, routed: way.length > 0 };
+    if (e === 'fell' || e === 'lost') {
+      queue.clear();
+      chosen = 'none';
+    }
+    if (g.lives < 3) g.lives = 9;
+  }
+  return { time: Number.NaN, falls: g.falls, routed: way.length > 0 };
 }
 
 /**
@@ -154,6 +340,22 @@ function simpleTries(level, seed, width, height) {
   return { fraction: cleared / tries, time: cleared ? time / cleared : Number.NaN };
 }
 
+/** The pilots: name, seconds between choices, seconds looked ahead, tap length (s; Infinity: holds), reaction lag (s). */
+const PILOTS = [
+  ['sharp pilot (0.1 s, 1.5 s ahead)', 0.1, 1.5, Infinity, 0],
+  ['stranger pilot (0.25 s, 1 s ahead)', 0.25, 1, Infinity, 0],
+  ['newcomer (0.3 s, 1 s ahead, acts 0.3 s late)', 0.3, 1, Infinity, 0.3],
+  ['slow newcomer (0.4 s, 1 s ahead, acts 0.5 s late)', 0.4, 1, Infinity, 0.5],
+  ['tapper (0.15 s taps every 0.4 s, 1 s ahead)', 0.4, 1, 0.15, 0],
+].filter(([name]) => pilotFilter === '' || name.includes(pilotFilter));
+
+/** The route pilots (`flyRoute`): name and style. */
+const ROUTE_PILOTS = [
+  ['careful newcomer (route 2.6 radii clear, 3 m/s, choices every 0.3 s, 0.35 s late)', { react: 0.3, lag: 0.35, keep: 2.6, speed: 3 }],
+  ['bold newcomer (route 1.5 radii clear, 4.5 m/s, choices every 0.3 s, 0.35 s late)', { react: 0.3, lag: 0.35, keep: 1.5, speed: 4.5 }],
+  ['slow thumb (route 2 radii clear, 3.5 m/s, choices every 0.4 s, 0.5 s late)', { react: 0.4, lag: 0.5, keep: 2, speed: 3.5 }],
+].filter(([name]) => pilotFilter === '' || name.includes(pilotFilter));
+
 const levels = Array.from({ length: hi - lo + 1 }, (_, i) => lo + i);
 const seedList = Array.from({ length: seeds }, (_, i) => i + 1);
 for (const [width, height] of fields) {
@@ -176,22 +378,38 @@ for (const [width, height] of fields) {
     }
   }
   if (tables.includes('pilot')) {
-    for (const [name, react, look, tap] of [
-      ['sharp pilot (0.1 s, 1.5 s ahead)', 0.1, 1.5],
-      ['stranger pilot (0.25 s, 1 s ahead)', 0.25, 1],
-      ['tapper (0.15 s taps every 0.4 s, 1 s ahead)', 0.4, 1, 0.15],
-    ]) {
+    for (const [name, react, look, tap, lag] of PILOTS) {
       console.log(`  ${name}:`);
       for (const level of levels) {
-        const rs = seedList.map((seed) => play(level, seed, width, height, react, look, tap));
+        const rs = seedList.map((seed) => play(level, seed, width, height, react, look, tap, lag));
         const ok = rs.filter((r) => Number.isFinite(r.time));
         const mean = ok.reduce((a, r) => a + r.time, 0) / Math.max(1, ok.length);
         const longest = Math.max(0, ...ok.map((r) => r.time));
         const falls = rs.reduce((a, r) => a + r.falls, 0) / seeds;
+        // Of all the tries (each fall ends one; a clear ends the last), the share that cleared.
+        const rate = ok.length / Math.max(1, ok.length + rs.reduce((a, r) => a + r.falls, 0));
         const failed = rs.flatMap((r, i) => (Number.isFinite(r.time) ? [] : [seedList[i]]));
         console.log(
           `    level ${level}: cleared ${ok.length}/${seeds}${failed.length ? ` (not seeds ${failed.join(' ')})` : ''}, ` +
-            `time mean ${mean.toFixed(1)} s, longest ${longest.toFixed(1)} s, falls ${falls.toFixed(2)} a level`,
+            `time mean ${mean.toFixed(1)} s, longest ${longest.toFixed(1)} s, falls ${falls.toFixed(2)} a level, ` +
+            `${(100 * rate).toFixed(0)} % of tries clear`,
+        );
+      }
+    }
+  }
+  if (tables.includes('route')) {
+    for (const [name, style] of ROUTE_PILOTS) {
+      console.log(`  ${name}:`);
+      for (const level of levels) {
+        const rs = seedList.map((seed) => flyRoute(level, seed, width, height, style));
+        const ok = rs.filter((r) => Number.isFinite(r.time));
+        const falls = rs.reduce((a, r) => a + r.falls, 0);
+        const failed = rs.flatMap((r, i) => (Number.isFinite(r.time) ? [] : [seedList[i]]));
+        const noRoute = rs.filter((r) => !r.routed).length;
+        console.log(
+          `    level ${level}: cleared ${ok.length}/${seeds}${failed.length ? ` (not seeds ${failed.join(' ')})` : ''}, ` +
+            `falls ${(falls / seeds).toFixed(2)} a level, ${((100 * ok.length) / Math.max(1, ok.length + falls)).toFixed(0)} % of tries clear` +
+            (noRoute ? `, no route found on ${noRoute}` : ''),
         );
       }
     }

@@ -33,6 +33,7 @@ import {
   clearParticles,
   gravitationalConstant,
   LINE_Y,
+  MAX_FIELD_HOLES,
   MAX_HOLES,
   rampThrust,
   resetShip,
@@ -144,12 +145,22 @@ export const LEVEL2_WALL_HEIGHT: readonly [number, number] = Object.freeze([18.5
 export const LEVEL3_WALL_HEIGHT: readonly [number, number] = Object.freeze([11, 13]);
 
 /**
- * Level 2's gap, m: under a wall that high a ship holding a diagonal arrow from the start meets the
- * wall's height about DIAGONAL_REACH of its height out to the side (bent in by the wall's longer
- * side), on the 32 m field inside any gap 9 m wide that fits; a gap this wide fits between 2 m out
- * and there, so the diagonal meets a hole.
+ * Level 2's gap, m (on a field narrower than 20 m, 0.4 of its width): under a wall that high a ship
+ * holding a diagonal arrow from the start meets the wall's height about DIAGONAL_REACH of its height
+ * out to the side (bent in by the wall's longer side), 10.7 m on the 32 m field; a gap this wide fits
+ * between 2 m out and there, so the diagonal meets a hole (and the layout check, `heldThrustClears`,
+ * draws again where it does not). With the wall's small holes (`LEVEL2_RADIUS`) most of it shows clear
+ * between the discs drawn round them.
  */
-export const LEVEL2_GATE = 6;
+export const LEVEL2_GATE = 8;
+
+/**
+ * Radii of level 2's wall holes, m: small, so the wall pulls like a light line of mass (about 13 kg/m,
+ * level 3's some 18) and its discs leave the gap in plain sight. (Holes of 0.45 to 0.55 m, grown to
+ * 0.75 to 0.92 m to close the field with at most 16, left some 70 px of a 6 m gap between their discs
+ * on a desktop, and scripts/black-hole-levels.mjs's route-flying newcomers cleared none of 8 seeds.)
+ */
+export const LEVEL2_RADIUS: readonly [number, number] = Object.freeze([0.2, 0.25]);
 
 /**
  * How far to the side of the start a ship holding a diagonal arrow from it meets a wall's height, as a
@@ -158,15 +169,22 @@ export const LEVEL2_GATE = 6;
  */
 const DIAGONAL_REACH = 0.62;
 
+/**
+ * The widest a wall's gap may be, as a share of the field's width: on the phone's 20 m field level
+ * 2's gap is 8 m and runs to the field's edge (with 0.32, 6.4 m between two stretches of wall, the
+ * bold route-flying newcomer of scripts/black-hole-levels.mjs cleared 4 % of its tries there; now 50 %).
+ */
+export const WALL_GATE_SHARE = 0.4;
+
 /** The gap a wall is laid with, m (below WALL_GAP): its holes are scaled to fill each stretch with gaps of this. */
 const WALL_FILL_GAP = 0.4;
 
 /**
  * The spec of level `level`, one new difficulty at a time: level 1 a fork of three small holes
  * (one across the straight path up, one across each diagonal: steer into a gap beside the first);
- * level 2 a wall of holes across the field, high up (LEVEL2_WALL_HEIGHT: its pull at the start
- * weak, so taps steer the ship) with one gap of LEVEL2_GATE off to the side (fly across to it, then
- * up through it); level 3 a wall lower down (LEVEL3_WALL_HEIGHT: it pulls harder) with a 7 m gap
+ * level 2 a wall of small holes (LEVEL2_RADIUS) across the field, high up (LEVEL2_WALL_HEIGHT: its
+ * pull at the start weak, so taps steer the ship) with one gap of LEVEL2_GATE off to the side (fly
+ * across to it, then up through it); level 3 a wall lower down (LEVEL3_WALL_HEIGHT: it pulls harder) with a 7 m gap
  * and a hole above it; level 4 three holes, two across the path one above the other;
  * level 5 a fourth hole; from level 6 the holes drift, slowly at first (0.35, then 0.6, 0.8 m/s);
  * from level 8 the fuel is limited (18 s, then 15 s down to 5 s); from level 9 a fifth hole, then a
@@ -202,7 +220,10 @@ export function levelSpec(level: number): LevelSpec {
     case 1:
       return spec(3, [0.5, 0.6], 0, 1, 0, Infinity, 0, true);
     case 2:
-      return spec(0, [0.45, 0.55], 0, 0, 0, Infinity, LEVEL2_GATE, false, [LEVEL2_WALL_HEIGHT[0], LEVEL2_WALL_HEIGHT[1]]);
+      return spec(0, [LEVEL2_RADIUS[0], LEVEL2_RADIUS[1]], 0, 0, 0, Infinity, LEVEL2_GATE, false, [
+        LEVEL2_WALL_HEIGHT[0],
+        LEVEL2_WALL_HEIGHT[1],
+      ]);
     case 3:
       return spec(1, [0.45, 0.55], 0, 1, 0, Infinity, 7, false, [LEVEL3_WALL_HEIGHT[0], LEVEL3_WALL_HEIGHT[1]]);
     case 4:
@@ -561,14 +582,14 @@ function layHoles(game: BlackHoleGame, run: LevelRun, spec: LevelSpec): void {
 /**
  * Lays a gate level's wall (see `LevelSpec.gate`): a row of holes across the whole field at a height
  * drawn in spec.wallHeight (on the default field; scaled to this field's climb), with one gap of clear
- * width min(spec.gate, 0.32 x the field's width) m off to one side of the start (either side, at
+ * width min(spec.gate, WALL_GATE_SHARE x the field's width) m off to one side of the start (either side, at
  * random; its near edge at least 2 m from the start's x; not where a held diagonal meets the wall,
  * `DIAGONAL_REACH`, unless no draw avoids it). From each edge of the gap out to the field's edge,
  * holes follow one another at equal gaps of WALL_FILL_GAP m (under WALL_GAP), the first one's horizon
  * on the gap's edge and the last one's that gap from the field's edge: as many as fit at radii drawn
  * in spec.radius, then all scaled to fill the stretch exactly. Of up to 40 draws of the gap's place, the one that puts a hole's
  * centre nearest the start's x (in radii) is laid, so the straight climb runs into a hole and not up
- * a narrow gap. On a field so wide that the wall would need more than MAX_HOLES - spec.holes - 4
+ * a narrow gap. On a field so wide that the wall would need more than MAX_FIELD_HOLES - spec.holes - 4
  * holes, all of them are larger in proportion. Pushes the holes into the game.
  * @returns the gap's centre, m (x).
  */
@@ -577,9 +598,9 @@ function layWall(game: BlackHoleGame, run: LevelRun, spec: LevelSpec): number {
     rng = game.rng;
   const W = game.field.width,
     x0 = game.start[0];
-  const gate = Math.min(spec.gate, 0.32 * W);
+  const gate = Math.min(spec.gate, WALL_GATE_SHARE * W);
   // Four spare: the rounding up on each side of the gap, and the hole more each side may need.
-  const room = MAX_HOLES - spec.holes - 4;
+  const room = MAX_FIELD_HOLES - spec.holes - 4;
   const grow = Math.max(1, ((W - gate) / room - WALL_GAP) / (spec.radius[0] + spec.radius[1]));
   const r0 = grow * spec.radius[0],
     r1 = grow * spec.radius[1];

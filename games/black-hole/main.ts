@@ -92,11 +92,14 @@ function onGameStep(event: GameStepEvent): void {
   }
   scorePop.scoreBefore = bh.score;
   // Sound (not while a replay plays the run back silently fast).
-  if (event === 'fell' || event === 'over') startSwallow();
+  if (event === 'fell' || event === 'over') {
+    startSwallow();
+    startDeath();
+  }
   if (event === 'fell' || event === 'lost') restarted = true;
   if (event === 'scored') sound.chime(880);
   else if (event === 'cleared') sound.chime(1320, 0.6);
-  else if (event === 'lost' || event === 'over') sound.explosion(event === 'over' ? 1 : 0.6);
+  else if (event === 'fell' || event === 'lost' || event === 'over') sound.explosion(event === 'over' ? 1 : event === 'fell' ? 0.8 : 0.6);
 }
 /**
  * Set by a fall or an exit: the keys and buttons held are let go, so the ship waits at the start
@@ -247,6 +250,8 @@ const game = await startPixiGame({
 });
 const { shell, renderer, app } = game;
 shell.onWorldChange(() => {
+  // A new world is a new start: the level's title shows again.
+  bannerWorld++;
   game.drawNext();
   applyHeld();
   updateStatus(true);
@@ -550,11 +555,15 @@ function updateStatus(force = false): void {
   }
   if (force || bh.message !== shownMessage) {
     shownMessage = bh.message;
-    // The rules speak of keys; on a touch screen a tap does the same.
+    // The rules speak of keys; on a touch screen a tap does the same. There a clear's line leaves out
+    // the time in all and how the points were made (the "+N" rising from the line shows them), so it
+    // keeps to the two lines the status row holds: a third pushed the field's foot under the pad.
     message.textContent = touch
       ? overMessage(bh.message)
           .replace('Press Enter or R to play again.', 'Tap to play again.')
           .replace('Press Enter for level', 'Tap for level')
+          .replace(/ \(\d+\.\d s in all, \d+ falls?\)/, '')
+          .replace(/ \(\d+ holes? × \d+( \+ \d+ speed bonus)?\)/, '')
       : overMessage(bh.message);
   }
   status.classList.toggle('over', bh.over);
@@ -798,8 +807,8 @@ edgeText.visible = false;
 app.stage.addChild(edgeText);
 
 /**
- * The level's title under the finish line while the ship waits for its first thrust of the level:
- * "Level N" and its holes, white on a dark outline.
+ * The level's title at a level's start (`drawLevelBanner`: clear of the holes, fading after
+ * BANNER_MS or at the first thrust): "Level N" and its holes, white on a dark outline.
  */
 const levelBanner = new Text({
   text: '',
@@ -835,21 +844,53 @@ function levelNews(spec: LevelRun['spec']): string {
   return `${holes}${extra.length ? `, ${extra.join(', ')}` : ''}\n${POINTS_PER_HOLE * n} points at the line`;
 }
 
-/** Shows the banner at a level's start, until the first thrust. */
+/** How long the level's title shows at full strength, then how long it takes to fade, ms. */
+const BANNER_MS = 2200,
+  BANNER_FADE_MS = 600;
+/** The level start the banner is showing for (level, falls and the world: a reset is a new start) and since when (performance.now(), ms). */
+const bannerShown = { key: '', since: 0 };
+let bannerWorld = 0;
+
+/**
+ * Shows the banner at a level's start, for BANNER_MS and then fading over BANNER_FADE_MS, or until the
+ * first thrust if that comes sooner. It sits centred in the tallest band across the field that no
+ * hole's drawing reaches (`freeBand`: on a wall level the open field under the wall, so it never covers
+ * the wall's gap), its letters smaller where the band is short (down to 13 px), or, where there is no
+ * band at all, under the finish line.
+ */
 function drawLevelBanner(): void {
   const show = run?.parked === true && run.attemptStart === 0 && !run.waiting && !bh.over && bh.falls === run.fallsAtStart;
-  levelBanner.visible = show;
-  if (!show || !run) return;
+  if (!show || !run) {
+    levelBanner.visible = false;
+    bannerShown.key = '';
+    return;
+  }
+  const key = `${bannerWorld}:${run.spec.level}:${run.fallsAtStart}`;
+  const now = performance.now();
+  if (bannerShown.key !== key) [bannerShown.key, bannerShown.since] = [key, now];
+  const age = now - bannerShown.since;
+  // Laid out while due even once faded, so the page hooks report its text and place.
+  levelBanner.visible = true;
+  levelBanner.alpha = age < BANNER_MS ? 1 : Math.max(0, 1 - (age - BANNER_MS) / BANNER_FADE_MS);
   const text = `Level ${run.spec.level}\n${levelNews(run.spec)}`;
   if (levelBanner.text !== text) levelBanner.text = text;
   const cam = renderer.camera;
-  levelBanner.style.fontSize = Math.max(18, Math.min(26, cam.toScreenLength(playField.width) / 14));
-  levelBanner.style.lineHeight = 1.2 * levelBanner.style.fontSize;
-  // Wrapped to the field (a phone's is narrow), growing downwards from just under the line.
+  const size = Math.max(18, Math.min(26, cam.toScreenLength(playField.width) / 14));
+  const fit = (px: number): number => {
+    if (levelBanner.style.fontSize !== px) {
+      levelBanner.style.fontSize = px;
+      levelBanner.style.lineHeight = 1.2 * px;
+    }
+    return levelBanner.height;
+  };
+  // Wrapped to the field (a phone's is narrow).
   levelBanner.style.wordWrap = true;
   levelBanner.style.wordWrapWidth = Math.max(160, cam.toScreenLength(playField.width) - 24);
-  // Just under the line, above every hole (holes keep 3 m clear of it).
-  levelBanner.position.set(cam.toScreenX(playField.width / 2), cam.toScreenY(bh.lineY) + 8);
+  const [top, room] = freeBand(Math.min(cam.toScreenY(0.9), cam.toScreenY(lastShip[1]!)) - shipPx - ACTION_GAP);
+  let h = fit(size);
+  // Smaller where the band is short (a small window), down to 13 px.
+  if (room > 0 && h > room) h = fit(Math.max(13, Math.floor((size * room) / h)));
+  levelBanner.position.set(cam.toScreenX(playField.width / 2), room > 0 ? top + (room - h) / 2 : cam.toScreenY(bh.lineY) + 8);
 }
 
 /** Draws the edges the ship is within EDGE_WARN m of, brighter the nearer, and shows the warning. */
@@ -937,6 +978,76 @@ function startSwallow(): void {
   swallow.start = performance.now();
 }
 
+/** How long a fall's red flash lasts, the shake, and the words over the field, ms. */
+const DEATH_FLASH_MS = 450,
+  DEATH_SHAKE_MS = 400,
+  DEATH_TEXT_MS = 1500;
+/** The shake's largest offset, px. */
+const DEATH_SHAKE_PX = 10;
+/** How long the ring round the ship back at the start pulses after a fall (once the swallow is over), ms. */
+const RESPAWN_MS = 700;
+/**
+ * A fall's effect: when it began (performance.now(), ms; -Infinity: none yet), how many have begun,
+ * and the strongest flash drawn since the last began (0 to 1: a frame drew it).
+ */
+const death = { start: -Infinity, count: 0, flashPeak: 0 };
+/** The red flash over the field (above the holes and the ship, under the words). */
+const flashLayer = new Graphics({ label: 'death-flash' });
+app.stage.addChild(flashLayer);
+/** The words of a fall over the field: "Swallowed!" and the lives left. */
+const deathText = new Text({
+  text: '',
+  style: {
+    fill: 0xff8c8c,
+    fontSize: 34,
+    fontFamily: 'sans-serif',
+    fontWeight: 'bold',
+    stroke: { color: 0x000000, width: 6 },
+    align: 'center',
+    lineHeight: 40,
+  },
+});
+deathText.anchor.set(0.5);
+deathText.visible = false;
+app.stage.addChild(deathText);
+
+/** Starts a fall's effect: a red flash over the field, a shake, the words (the sound is played by `onGameStep`). */
+function startDeath(): void {
+  // At the swallow's start (when one plays), so the ring at the start can follow the swallow.
+  death.start = swallow.active ? swallow.start : performance.now();
+  death.count++;
+  death.flashPeak = 0;
+  deathText.text = bh.over ? 'Swallowed!\nGame over' : `Swallowed!\n${bh.lives} ${bh.lives === 1 ? 'life' : 'lives'} left`;
+}
+
+/**
+ * Draws a fall's effect for its age: the field flashes red (fading over DEATH_FLASH_MS), the scene
+ * shakes (DEATH_SHAKE_PX, dying away over DEATH_SHAKE_MS) and the words show in the middle of the
+ * field (fading out at the end of DEATH_TEXT_MS).
+ */
+function drawDeath(): void {
+  const cam = renderer.camera;
+  const age = performance.now() - death.start;
+  flashLayer.clear();
+  if (age >= 0 && age < DEATH_FLASH_MS) {
+    const a = 0.45 * (1 - age / DEATH_FLASH_MS);
+    death.flashPeak = Math.max(death.flashPeak, a);
+    flashLayer
+      .rect(cam.toScreenX(0), cam.toScreenY(playField.height), cam.toScreenLength(playField.width), cam.toScreenLength(playField.height))
+      .fill({ color: 0xff2a2a, alpha: a });
+  }
+  if (age >= 0 && age < DEATH_SHAKE_MS) {
+    const amp = DEATH_SHAKE_PX * (1 - age / DEATH_SHAKE_MS);
+    app.stage.position.set(amp * Math.sin(age * 0.09), amp * Math.cos(age * 0.07));
+  } else if (app.stage.position.x !== 0 || app.stage.position.y !== 0) app.stage.position.set(0, 0);
+  deathText.visible = age >= 0 && age < DEATH_TEXT_MS;
+  if (!deathText.visible) return;
+  deathText.style.fontSize = Math.max(24, Math.min(40, cam.toScreenLength(playField.width) / 12));
+  deathText.style.lineHeight = 1.2 * deathText.style.fontSize;
+  deathText.alpha = age < DEATH_TEXT_MS - 400 ? 1 : (DEATH_TEXT_MS - age) / 400;
+  deathText.position.set(cam.toScreenX(playField.width / 2), cam.toScreenY(playField.height / 2));
+}
+
 /** Whether the path drawn in the last frame was the one holding ↑ from the pad would take (the ship parked, no thrust). */
 let padPath = false;
 
@@ -954,6 +1065,90 @@ function drawShip(sx: number, sy: number, k: number, turn: number, color: number
   overlay.poly(out).fill(color);
 }
 
+/** The word by the end of a path that stops short: why it stops (on a horizon, or off the field). */
+const pathLabel = new Text({
+  text: '',
+  style: { fill: 0xff6b5b, fontSize: 14, fontFamily: 'sans-serif', fontWeight: 'bold', stroke: { color: 0x000000, width: 4 } },
+});
+pathLabel.visible = false;
+app.stage.addChild(pathLabel);
+
+/**
+ * Marks how the path drawn this frame ends (`pathKind`; its last point lx, ly, m), so the end says
+ * why it ends: where it falls in, a ring (dark under red, seen over the hole's orange disc) round the
+ * horizon of the hole that takes it, a cross at the point and the words "falls in"; where it leaves
+ * the field, a cross on the edge and "lost"; a clear path ends in a small arrowhead along its last
+ * stretch (it goes on beyond what is drawn).
+ */
+function drawPathEnd(lx: number, ly: number, color: number): void {
+  const cam = renderer.camera;
+  pathLabel.visible = pathKind !== 'clear';
+  const cross = (ex: number, ey: number, size: number): void => {
+    overlay
+      .moveTo(ex - size, ey - size)
+      .lineTo(ex + size, ey + size)
+      .moveTo(ex + size, ey - size)
+      .lineTo(ex - size, ey + size);
+    overlay.stroke({ width: 6, color: 0x000000, alpha: 0.7 });
+    overlay
+      .moveTo(ex - size, ey - size)
+      .lineTo(ex + size, ey + size)
+      .moveTo(ex + size, ey - size)
+      .lineTo(ex - size, ey + size);
+    overlay.stroke({ width: 3, color, alpha: 1 });
+  };
+  let ex = cam.toScreenX(lx),
+    ey = cam.toScreenY(ly);
+  if (pathKind === 'falls') {
+    // The hole whose horizon (plus the ship's size) the end is nearest.
+    const P = bh.world.components.Position;
+    let best = Infinity,
+      hx = 0,
+      hy = 0,
+      hr = 0;
+    for (let i = 0; i < bh.holes.length; i++) {
+      const h = bh.holes[i]!;
+      const d = Math.hypot(P.x[slotOf(h)]! - lx, P.y[slotOf(h)]! - ly) - bh.holeRadius[i]!;
+      if (d < best) [best, hx, hy, hr] = [d, P.x[slotOf(h)]!, P.y[slotOf(h)]!, bh.holeRadius[i]!];
+    }
+    if (best < Infinity) {
+      const rr = cam.toScreenLength(hr) + 5;
+      overlay.circle(cam.toScreenX(hx), cam.toScreenY(hy), rr).stroke({ width: 6, color: 0x000000, alpha: 0.6 });
+      overlay.circle(cam.toScreenX(hx), cam.toScreenY(hy), rr).stroke({ width: 3, color, alpha: 1 });
+    }
+    cross(ex, ey, 7);
+  } else if (pathKind === 'lost') {
+    // The cross sits where the path leaves, pulled back onto the field's edge so it is seen.
+    ex = cam.toScreenX(Math.min(bh.field.width, Math.max(0, lx)));
+    ey = cam.toScreenY(Math.min(bh.field.height, Math.max(0, ly)));
+    cross(ex, ey, 7);
+  } else if (pathPoints >= 3) {
+    // An arrowhead along the last stretch: the path goes on.
+    const px = cam.toScreenX(path[2 * pathPoints - 6]!),
+      py = cam.toScreenY(path[2 * pathPoints - 5]!);
+    const len = Math.hypot(ex - px, ey - py);
+    if (len > 0) {
+      const ux = (ex - px) / len,
+        uy = (ey - py) / len;
+      overlay
+        .moveTo(ex - 8 * ux + 5 * uy, ey - 8 * uy - 5 * ux)
+        .lineTo(ex, ey)
+        .lineTo(ex - 8 * ux - 5 * uy, ey - 8 * uy + 5 * ux)
+        .stroke({ width: 2, color, alpha: 0.8 });
+    }
+  }
+  if (!pathLabel.visible) return;
+  const word = pathKind === 'falls' ? 'falls in' : 'lost';
+  if (pathLabel.text !== word) pathLabel.text = word;
+  // Beside the cross, on the side towards the field's middle, kept inside the field.
+  const left = ex > cam.toScreenX(playField.width / 2);
+  pathLabel.anchor.set(left ? 1 : 0, 0.5);
+  const x0 = cam.toScreenX(0) + 4,
+    x1 = cam.toScreenX(playField.width) - 4;
+  const at = left ? Math.max(x0 + pathLabel.width, ex - 12) : Math.min(x1 - pathLabel.width, ex + 12);
+  pathLabel.position.set(at, Math.max(cam.toScreenY(playField.height) + 10, Math.min(cam.toScreenY(0) - 10, ey)));
+}
+
 /** Over the field while paused: the scene dimmed and "Paused", so a pause is not taken for a hang. */
 const pause = createPauseOverlay({ label: 'paused' });
 app.stage.addChild(pause.container);
@@ -962,8 +1157,8 @@ app.stage.addChild(pause.container);
 const HINT_LINE_GAP = 4;
 /**
  * Keeps the kit's touch card (at the top of the stage, by the page's style) off the finish line: where
- * the card's foot would reach the line it goes under the line instead, and under the level's title
- * while that shows. Checked every frame while the card is up (the stage and the field can resize).
+ * the card's foot would reach the line it goes under the line instead. Checked every frame while the
+ * card is up (the stage and the field can resize).
  */
 function placeTouchHint(): void {
   const card = document.querySelector<HTMLElement>('[data-hud="touch-hint"]');
@@ -973,13 +1168,36 @@ function placeTouchHint(): void {
   const line = canvas.top + renderer.camera.toScreenY(bh.lineY) - stage.top;
   const h = card.offsetHeight;
   let top = 6;
-  if (top + h + HINT_LINE_GAP > line) top = line + HINT_LINE_GAP + (levelBanner.visible ? levelBanner.height + 8 : 0);
+  if (top + h + HINT_LINE_GAP > line) top = line + HINT_LINE_GAP;
   const want = `${Math.round(top)}px`;
   if (card.style.top !== want) card.style.top = want;
 }
 
-/** Gap kept between the next-level button and the holes, the line and the ship, px. */
+/** Gap kept between the next-level button (and the level's title) and the holes, the line and the ship, px. */
 const ACTION_GAP = 8;
+
+/**
+ * The tallest band across the field, between the finish line and `end` (screen px, y down), that no
+ * hole's drawing (disc and glow, `holeExtents` of the last frame) reaches within ACTION_GAP px:
+ * [top, height], px in the canvas (height < 0 when there is none).
+ */
+function freeBand(end: number): [number, number] {
+  const cam = renderer.camera;
+  // Screen bands (px, y down) taken by the holes, sorted from the top.
+  const taken = holeExtents
+    .slice(0, bh.holes.length)
+    .map((e) => [cam.toScreenY(e[3]!) - ACTION_GAP, cam.toScreenY(e[2]!) + ACTION_GAP] as const)
+    .sort((a, b) => a[0] - b[0]);
+  let from = cam.toScreenY(bh.lineY) + ACTION_GAP;
+  let best = -1,
+    bestTop = 0;
+  for (const [top, bottom] of [...taken, [end, end] as const]) {
+    const to = Math.min(top, end);
+    if (to - from > best) [best, bestTop] = [to - from, from];
+    from = Math.max(from, bottom);
+  }
+  return [bestTop, best];
+}
 /**
  * Puts the next-level / continue button (over the field, by the page's style) in the tallest band
  * across the field between the finish line and the start pad that no hole's drawing (disc and glow,
@@ -993,20 +1211,7 @@ function placeActionButton(): void {
   const stage = pageLayout().stage.getBoundingClientRect(),
     canvas = app.canvas.getBoundingClientRect();
   const off = canvas.top - stage.top;
-  // Screen bands (px, y down) taken by the holes, sorted from the top.
-  const taken = holeExtents
-    .slice(0, bh.holes.length)
-    .map((e) => [cam.toScreenY(e[3]!) - ACTION_GAP, cam.toScreenY(e[2]!) + ACTION_GAP] as const)
-    .sort((a, b) => a[0] - b[0]);
-  let from = cam.toScreenY(bh.lineY) + ACTION_GAP;
-  const end = Math.min(cam.toScreenY(0.9), cam.toScreenY(lastShip[1]!)) - shipPx - ACTION_GAP;
-  let best = -1,
-    bestTop = 0;
-  for (const [top, bottom] of [...taken, [end, end] as const]) {
-    const to = Math.min(top, end);
-    if (to - from > best) [best, bestTop] = [to - from, from];
-    from = Math.max(from, bottom);
-  }
+  const [bestTop, best] = freeBand(Math.min(cam.toScreenY(0.9), cam.toScreenY(lastShip[1]!)) - shipPx - ACTION_GAP);
   const h = el.offsetHeight;
   const want = best >= h ? `${Math.round(off + bestTop + (best - h) / 2)}px` : '';
   if (el.style.top !== want) el.style.top = want;
@@ -1049,27 +1254,18 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
     pathKind = pathEnd(bh, path, pathPoints, steps);
     const warn = pathKind !== 'clear';
     const color = warn ? 0xff5a4a : 0x9fd3ff;
+    // Dots fade along the path but stay plain to the end (faded to nothing, a path seemed to stop short).
     for (let i = 1; i < pathPoints; i += 2) {
       overlay
-        .circle(cam.toScreenX(path[2 * i]!), cam.toScreenY(path[2 * i + 1]!), warn ? 2.2 : 1.8)
-        .fill({ color, alpha: 0.5 * (1 - i / (steps + 1)) + 0.15 });
+        .circle(cam.toScreenX(path[2 * i]!), cam.toScreenY(path[2 * i + 1]!), warn ? 2.4 : 1.9)
+        .fill({ color, alpha: 0.4 * (1 - i / (steps + 1)) + 0.35 });
     }
-    if (pathKind === 'falls') overlay.circle(cam.toScreenX(lx), cam.toScreenY(ly), 7).stroke({ width: 2, color, alpha: 0.9 });
-    else if (pathKind === 'lost') {
-      // The cross sits where the path leaves, pulled back onto the field's edge so it is seen.
-      const ex = cam.toScreenX(Math.min(bh.field.width, Math.max(0, lx))),
-        ey = cam.toScreenY(Math.min(bh.field.height, Math.max(0, ly)));
-      overlay
-        .moveTo(ex - 7, ey - 7)
-        .lineTo(ex + 7, ey + 7)
-        .moveTo(ex + 7, ey - 7)
-        .lineTo(ex - 7, ey + 7)
-        .stroke({ width: 3, color, alpha: 0.95 });
-    }
+    drawPathEnd(lx, ly, color);
   } else {
     pathPoints = 0;
     pathKind = 'clear';
     padPath = false;
+    pathLabel.visible = false;
   }
   // The ship: a small arrowhead, nose up, 1 m tall, with a flame out of the side opposite the thrust.
   // The ship is drawn at least SHIP_MIN_PX tall (on a phone's narrow field it would be under 20 px).
@@ -1077,6 +1273,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
     sy = cam.toScreenY(y),
     k = Math.max(SHIP_MIN_PX, cam.toScreenLength(1));
   shipPx = k;
+  drawDeath();
   const age = performance.now() - swallow.start;
   if (swallow.active && age > SWALLOW_MS) swallow.active = false;
   if (swallow.active) {
@@ -1096,6 +1293,12 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   }
   lastShip[0] = x;
   lastShip[1] = y;
+  // Back at the start after a fall: a ring closes in on the ship, so the eye finds it there.
+  const back = age - SWALLOW_MS;
+  if (!bh.over && back >= 0 && back < RESPAWN_MS && death.start === swallow.start) {
+    const u = back / RESPAWN_MS;
+    overlay.circle(sx, sy, k * (2.2 - 1.4 * u)).stroke({ width: 3, color: 0x9fd3ff, alpha: 1 - u });
+  }
   drawEdgeWarning(x, y);
   drawLevelBanner();
   placeTouchHint();
@@ -1147,14 +1350,35 @@ shell.expose({
   padPath: (): boolean => padPath,
   /** How that path ended (./rules.ts `pathEnd`: drawn blue when 'clear', red when it 'falls' or is 'lost'); 'clear' when none was drawn. */
   pathEnd: (): PathEnd => pathKind,
-  /** The level banner's text while it shows (at a level's start, until the first thrust), else ''. */
-  levelBanner: (): string => (levelBanner.visible ? levelBanner.text : ''),
+  /**
+   * The level's title while it is due (at a level's start, until the first thrust; it fades from the
+   * screen after BANNER_MS, see `levelBannerAlpha`), else ''.
+   */
+  levelBanner: (): string => (bannerShown.key !== '' ? levelBanner.text : ''),
+  /** How strongly the title shows in the last frame: 1 at first, fading to 0 after BANNER_MS (0 when it is not due). */
+  levelBannerAlpha: (): number => (levelBanner.visible ? levelBanner.alpha : 0),
+  /** The title's box in the last frame, px in the canvas: [left, top, right, bottom] (while due, faded or not). */
+  levelBannerBox: (): number[] => {
+    const b = levelBanner.getBounds();
+    return [b.x, b.y, b.x + b.width, b.y + b.height];
+  },
   /** How far each hole's drawing (disc and glow) reached in the last frame, m: [left, right, bottom, top], holes in order. */
   holeExtents: (): number[][] => holeExtents.map((e) => e.slice()),
   /** The ship's lean in the last frame, rad (+ leaning right, into thrust to the right). */
   shipLean: (): number => shipLean,
   /** The rising "+N" of the last crossing while it shows, else ''. */
   scorePop: (): string => (scoreText.visible ? scoreText.text : ''),
+  /** Why the path drawn in the last frame stops short, by its end ('falls in' or 'lost'), else ''. */
+  pathLabel: (): string => (pathLabel.visible ? pathLabel.text : ''),
+  /**
+   * The falls' effect: how many have begun, the words of the last one, and the strongest red flash
+   * drawn for it (0 to 0.45; 0 until a frame drew it).
+   */
+  deathEffect: (): { count: number; text: string; flashPeak: number } => ({
+    count: death.count,
+    text: deathText.text,
+    flashPeak: death.flashPeak,
+  }),
   /** Whether the swallow effect (the ship spiralling into a hole) plays, and whether the edge warning shows. */
   swallowing: (): boolean => swallow.active,
   edgeWarning: (): boolean => edgeText.visible,

@@ -71,8 +71,14 @@ export const C_GAME = 10;
 /** Radius range of a new hole, m. */
 export const HOLE_RADIUS: readonly [number, number] = Object.freeze([0.5, 1.4]);
 
-/** Most holes on the field; scoring beyond it keeps the count. */
+/** Most holes on the field in the classic game and in a level's scattered holes; scoring beyond it keeps the count. */
 export const MAX_HOLES = 16;
+
+/**
+ * Most holes any layout puts on the field, a level's wall of small holes included (./levels.ts): the
+ * predictor's world holds this many.
+ */
+export const MAX_FIELD_HOLES = 40;
 
 /** The ship's mass, kg. */
 export const SHIP_MASS = 1;
@@ -687,7 +693,7 @@ export function createPredictor(game: BlackHoleGame): Predictor {
   const world = createPhysicsWorld({
     dimensions: 2,
     gravity: [0, 0],
-    capacity: MAX_HOLES + 4,
+    capacity: MAX_FIELD_HOLES + 4,
     dt: game.world.dt,
     integrator: game.world.integrator,
   });

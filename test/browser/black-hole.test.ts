@@ -19,6 +19,28 @@ interface BlackHolePage {
   swallowing(): boolean;
   edgeWarning(): boolean;
   pathEnd(): 'clear' | 'falls' | 'lost';
+  pathLabel(): string;
+  deathEffect(): { count: number; text: string; flashPeak: number };
+}
+
+/**
+ * In the page: the holes whose drawing (disc and glow, `holeExtents`, m) the level's title box
+ * (`levelBannerBox`, canvas px) overlaps, and how many holes there are. Run by `page.evaluate`.
+ */
+function bannerOverHoles(): { hits: number; holes: number; text: string } {
+  type Cam = { toScreenX(x: number): number; toScreenY(y: number): number };
+  const w = window.game as unknown as {
+    renderer: { camera: Cam };
+    levelBanner(): string;
+    levelBannerBox(): number[];
+    holeExtents(): number[][];
+  };
+  const cam = w.renderer.camera;
+  const [l, t, r, b] = w.levelBannerBox();
+  const hits = w
+    .holeExtents()
+    .filter(([x0, x1, y0, y1]) => cam.toScreenX(x1!) > l! && cam.toScreenX(x0!) < r! && cam.toScreenY(y0!) > t! && cam.toScreenY(y1!) < b!);
+  return { hits: hits.length, holes: w.holeExtents().length, text: w.levelBanner() };
 }
 
 let h: Harness;
@@ -50,12 +72,27 @@ describe('black hole', () => {
     expect(await g.page.evaluate(() => document.body.textContent)).toContain(
       'predicted path on / off (red: falls in or lost, blue: clear)',
     );
+    // The title covers none of the holes (it was printed under the finish line, over the holes and a
+    // wall's gap): it sits in the open field below them.
+    const banner = await g.page.evaluate(bannerOverHoles);
+    expect(banner).toMatchObject({ hits: 0, holes: 3 });
+    // The path from the pad runs into the hole across the climb: its end says so in words by a cross.
+    await g.waitFor(() => (window.game as unknown as BlackHolePage).pathLabel() === 'falls in', null);
+    expect(await g.page.evaluate(() => (window.game as unknown as BlackHolePage).pathEnd())).toBe('falls');
     await g.page.keyboard.down('ArrowUp');
     await g.waitFor(() => (window.game as unknown as BlackHolePage).levelBanner() === '', null);
     await g.waitFor(() => (window.game as unknown as BlackHolePage).swallowing(), null);
     await g.page.keyboard.up('ArrowUp');
     expect(await g.page.evaluate(() => (window.game as unknown as BlackHolePage).bh.falls)).toBe(1);
     expect(await g.page.locator('[data-hud="message"]').textContent()).toMatch(/^Swallowed/);
+    // The fall flashes the field red and says so over it, with the lives left (it had no feedback
+    // but the spiral and the status line).
+    const death = await g.waitFor(() => {
+      const d = (window.game as unknown as BlackHolePage).deathEffect();
+      return d.flashPeak > 0 ? d : null;
+    }, null);
+    expect(death.count).toBe(1);
+    expect(death.text).toBe('Swallowed!\n2 lives left');
     await g.page.keyboard.down('ArrowLeft');
     await g.waitFor(() => !(window.game as unknown as BlackHolePage).bh.message.startsWith('Swallowed'), null);
     // Paused as soon as the edge warns, so the ship cannot leave the field meanwhile: ↑ pressed
@@ -68,6 +105,7 @@ describe('black hole', () => {
     }, null);
     // The path with ← held runs off the field's edge: drawn as lost (red, a cross at the edge), not blue.
     await g.waitFor(() => (window.game as unknown as BlackHolePage).pathEnd() === 'lost', null);
+    expect(await g.page.evaluate(() => (window.game as unknown as BlackHolePage).pathLabel())).toBe('lost');
     const thrust = () => g.page.evaluate(() => (window.game as unknown as { bh: { thrust: string } }).bh.thrust);
     await g.page.keyboard.down('ArrowUp');
     expect(await thrust()).toBe('up-left');
@@ -125,6 +163,13 @@ describe('black hole, between levels', () => {
     // Level 2: a wall of holes across the field (how many depends on the field's width).
     expect(begun.level).toBe(2);
     expect(begun.holes).toBeGreaterThan(5);
+    // Its title shows in the open field under the wall, over none of its holes (it covered the gap).
+    const wallBanner = await g.waitFor(() => {
+      const w = window.game as unknown as { holeExtents(): number[][]; levelBanner(): string; bh: { holes: number[] } };
+      return w.holeExtents().length === w.bh.holes.length && w.levelBanner().startsWith('Level 2') ? true : null;
+    }, null);
+    expect(wallBanner).toBe(true);
+    expect(await g.page.evaluate(bannerOverHoles)).toMatchObject({ hits: 0, holes: begun.holes });
     // The last life lost on level 2 (the ship put into a hole): the button and Enter go on from level 2
     // with three lives and a score of 0, not back to level 1.
     const over = await g.page.evaluate(() => {

@@ -22,6 +22,7 @@ import {
   startLevel,
   stepLevel,
   WALL_GAP,
+  WALL_GATE_SHARE,
 } from '../../games/black-hole/levels';
 import {
   type BlackHoleGame,
@@ -30,7 +31,7 @@ import {
   FIELD,
   gravitationalConstant,
   LINE_Y,
-  MAX_HOLES,
+  MAX_FIELD_HOLES,
   PHONE_SIDE_RAMP,
   predictPath,
   START,
@@ -241,6 +242,29 @@ describe('levels', () => {
     expect(found).toEqual([]);
   }, 120_000);
 
+  test("level 2's wall is of small holes, lighter than level 3's, so its gap shows wide between their discs", () => {
+    // The issue this answers: level 2 (after an easy level 1) cost a stranger three lives; its wall's
+    // holes, grown to fit the old cap of 16, drew discs (2.6 radii across each side, main.ts DISC)
+    // that left about 70 px of the 6 m gap in sight. The wall's mass per metre, summed from the holes'
+    // masses, is what pulls a ship near it (a line of mass): level 2's is the lighter.
+    const perMetre = (g: BlackHoleGame) => g.holeMass.reduce((a, m) => a + m, 0) / g.field.width;
+    for (const field of [FIELD, { width: 32, height: 30 }, { width: 20, height: 30 }])
+      for (let seed = 1; seed <= 3; seed++) {
+        const where = `${field.width}x${field.height} seed ${seed}`;
+        const g2 = createBlackHoleGame({ seed, field, ...engineFor(field) });
+        startLevel(g2, 2);
+        const g3 = createBlackHoleGame({ seed, field, ...engineFor(field) });
+        startLevel(g3, 3);
+        // Drawn at 0.2 to 0.25 m, each stretch's holes then scaled a little to fill it exactly.
+        const r = Math.max(...g2.holeRadius);
+        expect(r, where).toBeLessThanOrEqual(0.3);
+        const gap = wallGap(g2);
+        // Clear of the discs drawn round the holes either side: 6 m or more on a desktop field, 4.5 on a phone's.
+        expect(gap.width - 2 * 2.6 * r, where).toBeGreaterThanOrEqual(field.width < 32 ? 4.5 : 6);
+        expect(perMetre(g2), where).toBeLessThan(0.8 * perMetre(g3));
+      }
+  });
+
   test("level 2's wall is far enough up that its pull on the ship waiting at the start is under a third of the thrust", () => {
     // The issue this answers: a newcomer's taps barely moved the ship against the wall's pull (about
     // half the thrust at the start), which drew it up into the wall. The pull is summed here from the
@@ -371,10 +395,11 @@ describe('levels', () => {
           const g = createBlackHoleGame({ seed, field, ...engineFor(field) });
           const spec = startLevel(g, level).spec;
           const gap = wallGap(g);
-          expect(gap.width, `level ${level} seed ${seed}`).toBeCloseTo(Math.min(spec.gate, 0.32 * field.width), 9);
+          expect(gap.width, `level ${level} seed ${seed}`).toBeCloseTo(Math.min(spec.gate, WALL_GATE_SHARE * field.width), 9);
           expect(gap.others).toBeLessThanOrEqual(WALL_GAP + 1e-9);
           expect(gap.edge).toBeGreaterThanOrEqual(2 - 1e-9);
-          expect(g.holes.length).toBeLessThanOrEqual(MAX_HOLES);
+          // A wall of small holes needs more than the classic game's MAX_HOLES: the cap is the predictor's.
+          expect(g.holes.length).toBeLessThanOrEqual(MAX_FIELD_HOLES);
           // Level 3's hole above the gap, across the way up through it.
           const P = g.world.components.Position;
           const above = g.holes.filter((h) => P.y[slotOf(h)]! > gap.y + 2);
