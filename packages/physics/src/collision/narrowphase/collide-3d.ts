@@ -33,20 +33,14 @@ function polyhedronVsPolyhedron(A: Collider3D, B: Collider3D, margin: number, ou
 /** Kinds in ColliderKind3D. */
 const KINDS = 3;
 
-/** PAIRS[KINDS * A.kind + B.kind] for A.kind <= B.kind; the pairs below the diagonal are collided swapped. */
+/**
+ * PAIRS[KINDS * A.kind + B.kind] for A.kind <= B.kind, rows and columns sphere, capsule, polyhedron;
+ * the pairs below the diagonal (null) are collided swapped.
+ */
 const PAIRS: readonly (PairFunction | null)[] = [
-  // Sphere against sphere, capsule, polyhedron.
-  segmentSegment,
-  segmentSegment,
-  sphereVsPolyhedron,
-  // Capsule against (sphere: swapped), capsule, polyhedron.
-  null,
-  segmentSegment,
-  capsuleVsPolyhedron,
-  // Polyhedron against (sphere, capsule: swapped), polyhedron.
-  null,
-  null,
-  polyhedronVsPolyhedron,
+  ...[segmentSegment, segmentSegment, sphereVsPolyhedron],
+  ...[null, segmentSegment, capsuleVsPolyhedron],
+  ...[null, null, polyhedronVsPolyhedron],
 ];
 
 /**

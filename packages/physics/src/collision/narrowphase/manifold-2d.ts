@@ -136,21 +136,26 @@ function shapeClass(g: ConvexGeometry): number {
 /** The manifold of A against B for one pair of shape classes (`collideShapesAt`'s arguments). */
 type PairFunction = (out: Manifold, A: ConvexGeometry, B: ConvexGeometry, pose: Float64Array) => void;
 
+/** World position of a circle's centre (`circleCentre`): x, y. */
+const centre = new Float64Array(2);
+
+/** Writes into `centre` the world position of circle g's centre, placed by the pose at `pose[o]` (o: PairPose.XA or XB). */
+function circleCentre(g: ConvexGeometry, pose: Float64Array, o: number): void {
+  const x = pose[o]!,
+    y = pose[o + 1]!,
+    c = pose[o + 2]!,
+    s = pose[o + 3]!;
+  centre[0] = x + c * g.vx[0]! - s * g.vy[0]!;
+  centre[1] = y + s * g.vx[0]! + c * g.vy[0]!;
+}
+
 /** Two circles, in the world frame. */
 function circleCircle(out: Manifold, A: ConvexGeometry, B: ConvexGeometry, pose: Float64Array): void {
-  const xa = pose[PairPose.XA]!,
-    ya = pose[PairPose.YA]!,
-    ca = pose[PairPose.CA]!,
-    sa = pose[PairPose.SA]!,
-    xb = pose[PairPose.XB]!,
-    yb = pose[PairPose.YB]!,
-    cb = pose[PairPose.CB]!,
-    sb = pose[PairPose.SB]!;
-  const ax = xa + ca * A.vx[0]! - sa * A.vy[0]!,
-    ay = ya + sa * A.vx[0]! + ca * A.vy[0]!;
-  const bx = xb + cb * B.vx[0]! - sb * B.vy[0]!,
-    by = yb + sb * B.vx[0]! + cb * B.vy[0]!;
-  collideCircles(out, ax, ay, A.radius, bx, by, B.radius, pose[PairPose.SPECULATIVE]!);
+  circleCentre(A, pose, PairPose.XA);
+  const ax = centre[0]!,
+    ay = centre[1]!;
+  circleCentre(B, pose, PairPose.XB);
+  collideCircles(out, ax, ay, A.radius, centre[0]!, centre[1]!, B.radius, pose[PairPose.SPECULATIVE]!);
 }
 
 /** A circle against a capsule, segment or polygon: collided the other way round, then flipped. */
@@ -172,14 +177,11 @@ function convexCircle(out: Manifold, A: ConvexGeometry, B: ConvexGeometry, pose:
     ya = pose[PairPose.YA]!,
     ca = pose[PairPose.CA]!,
     sa = pose[PairPose.SA]!,
-    xb = pose[PairPose.XB]!,
-    yb = pose[PairPose.YB]!,
-    cb = pose[PairPose.CB]!,
-    sb = pose[PairPose.SB]!,
     speculative = pose[PairPose.SPECULATIVE]!;
   // Circle centre in A's frame.
-  const wx = xb + cb * B.vx[0]! - sb * B.vy[0]! - xa,
-    wy = yb + sb * B.vx[0]! + cb * B.vy[0]! - ya;
+  circleCentre(B, pose, PairPose.XB);
+  const wx = centre[0]! - xa,
+    wy = centre[1]! - ya;
   const lx = ca * wx + sa * wy,
     ly = -sa * wx + ca * wy;
   if (A.count === 2) collideSegmentCircleLocal(out, A, lx, ly, B.radius, speculative);
@@ -224,15 +226,9 @@ function convexConvex(out: Manifold, A: ConvexGeometry, B: ConvexGeometry, pose:
 
 /** PAIRS[3 * shapeClass(A) + shapeClass(B)]: rows A circle, capsule or segment, polygon; columns B likewise. */
 const PAIRS: readonly PairFunction[] = [
-  circleCircle,
-  circleFirst,
-  circleFirst,
-  convexCircle,
-  convexConvex,
-  convexConvex,
-  convexCircle,
-  convexConvex,
-  convexConvex,
+  ...[circleCircle, circleFirst, circleFirst],
+  ...[convexCircle, convexConvex, convexConvex],
+  ...[convexCircle, convexConvex, convexConvex],
 ];
 
 /**
