@@ -167,20 +167,12 @@ export function boxBox3DAt(RA: Float64Array, oa: number, RB: Float64Array, ob: n
     }
   }
   // t in A's frame and in B's frame.
-  const ta0 = tx * RA[oa + M00]! + ty * RA[oa + M10]! + tz * RA[oa + M20]!;
-  const ta1 = tx * RA[oa + M01]! + ty * RA[oa + M11]! + tz * RA[oa + M21]!;
-  const ta2 = tx * RA[oa + M02]! + ty * RA[oa + M12]! + tz * RA[oa + M22]!;
-  const tb0 = tx * RB[ob + M00]! + ty * RB[ob + M10]! + tz * RB[ob + M20]!;
-  const tb1 = tx * RB[ob + M01]! + ty * RB[ob + M11]! + tz * RB[ob + M21]!;
-  const tb2 = tx * RB[ob + M02]! + ty * RB[ob + M12]! + tz * RB[ob + M22]!;
-  // A's faces, then B's.
   const t = faceT;
-  t[0] = ta0;
-  t[1] = ta1;
-  t[2] = ta2;
-  t[3] = tb0;
-  t[4] = tb1;
-  t[5] = tb2;
+  for (let k = 0; k < 3; k++) {
+    t[k] = tx * RA[oa + M00 + k]! + ty * RA[oa + M10 + k]! + tz * RA[oa + M20 + k]!;
+    t[3 + k] = tx * RB[ob + M00 + k]! + ty * RB[ob + M10 + k]! + tz * RB[ob + M20 + k]!;
+  }
+  // A's faces, then B's.
   const fA = bestFace(0),
     sA = faceT[6]!;
   if (sA > margin) return;
@@ -196,8 +188,8 @@ export function boxBox3DAt(RA: Float64Array, oa: number, RB: Float64Array, ob: n
       i2 = i === 0 ? 2 : i - 1;
     const eai1 = i1 === 0 ? ea0 : i1 === 1 ? ea1 : ea2,
       eai2 = i2 === 0 ? ea0 : i2 === 1 ? ea1 : ea2;
-    const tai1 = i1 === 0 ? ta0 : i1 === 1 ? ta1 : ta2,
-      tai2 = i2 === 0 ? ta0 : i2 === 1 ? ta1 : ta2;
+    const tai1 = t[i1]!,
+      tai2 = t[i2]!;
     for (let j = 0; j < 3; j++) {
       const cij = C[3 * i + j]!;
       const len2 = 1 - cij * cij;
@@ -227,13 +219,13 @@ export function boxBox3DAt(RA: Float64Array, oa: number, RB: Float64Array, ob: n
   // faceContact reads the boxes' numbers from boxArgs: reference first when flipped is 0, else incident first.
   if (sB > sA + FACE_BIAS * size) {
     // B's face is the reference: A is the incident box; the normal comes out of B, flipped to A -> B.
-    const tb = fB === 0 ? tb0 : fB === 1 ? tb1 : tb2;
+    const tb = t[3 + fB]!;
     faceContact(RB, ob, fB, tb > 0 ? -1 : 1, RA, oa, out, 1);
     out.nx = -out.nx;
     out.ny = -out.ny;
     out.nz = -out.nz;
   } else {
-    const tf = fA === 0 ? ta0 : fA === 1 ? ta1 : ta2;
+    const tf = t[fA]!;
     faceContact(RA, oa, fA, tf >= 0 ? 1 : -1, RB, ob, out, 0);
   }
 }
