@@ -167,17 +167,48 @@ export function boxBox3DAt(RA: Float64Array, oa: number, RB: Float64Array, ob: n
     }
   }
   // t in A's frame and in B's frame.
-  const t = faceT;
-  for (let k = 0; k < 3; k++) {
-    t[k] = tx * RA[oa + M00 + k]! + ty * RA[oa + M10 + k]! + tz * RA[oa + M20 + k]!;
-    t[3 + k] = tx * RB[ob + M00 + k]! + ty * RB[ob + M10 + k]! + tz * RB[ob + M20 + k]!;
+  const ta0 = tx * RA[oa + M00]! + ty * RA[oa + M10]! + tz * RA[oa + M20]!;
+  const ta1 = tx * RA[oa + M01]! + ty * RA[oa + M11]! + tz * RA[oa + M21]!;
+  const ta2 = tx * RA[oa + M02]! + ty * RA[oa + M12]! + tz * RA[oa + M22]!;
+  const tb0 = tx * RB[ob + M00]! + ty * RB[ob + M10]! + tz * RB[ob + M20]!;
+  const tb1 = tx * RB[ob + M01]! + ty * RB[ob + M11]! + tz * RB[ob + M21]!;
+  const tb2 = tx * RB[ob + M02]! + ty * RB[ob + M12]! + tz * RB[ob + M22]!;
+  // A's faces.
+  let sA = -Infinity,
+    fA = 0;
+  {
+    const s0 = Math.abs(ta0) - ea0 - (eb0 * AC[0]! + eb1 * AC[1]! + eb2 * AC[2]!);
+    const s1 = Math.abs(ta1) - ea1 - (eb0 * AC[3]! + eb1 * AC[4]! + eb2 * AC[5]!);
+    const s2 = Math.abs(ta2) - ea2 - (eb0 * AC[6]! + eb1 * AC[7]! + eb2 * AC[8]!);
+    sA = s0;
+    fA = 0;
+    if (s1 > sA) {
+      sA = s1;
+      fA = 1;
+    }
+    if (s2 > sA) {
+      sA = s2;
+      fA = 2;
+    }
   }
-  // A's faces, then B's.
-  const fA = bestFace(0),
-    sA = faceT[6]!;
   if (sA > margin) return;
-  const fB = bestFace(1),
-    sB = faceT[6]!;
+  let sB = -Infinity,
+    fB = 0;
+  {
+    const s0 = Math.abs(tb0) - eb0 - (ea0 * AC[0]! + ea1 * AC[3]! + ea2 * AC[6]!);
+    const s1 = Math.abs(tb1) - eb1 - (ea0 * AC[1]! + ea1 * AC[4]! + ea2 * AC[7]!);
+    const s2 = Math.abs(tb2) - eb2 - (ea0 * AC[2]! + ea1 * AC[5]! + ea2 * AC[8]!);
+    sB = s0;
+    fB = 0;
+    if (s1 > sB) {
+      sB = s1;
+      fB = 1;
+    }
+    if (s2 > sB) {
+      sB = s2;
+      fB = 2;
+    }
+  }
   if (sB > margin) return;
   // Edge axes a_i x b_j.
   let sE = -Infinity,
@@ -188,8 +219,8 @@ export function boxBox3DAt(RA: Float64Array, oa: number, RB: Float64Array, ob: n
       i2 = i === 0 ? 2 : i - 1;
     const eai1 = i1 === 0 ? ea0 : i1 === 1 ? ea1 : ea2,
       eai2 = i2 === 0 ? ea0 : i2 === 1 ? ea1 : ea2;
-    const tai1 = t[i1]!,
-      tai2 = t[i2]!;
+    const tai1 = i1 === 0 ? ta0 : i1 === 1 ? ta1 : ta2,
+      tai2 = i2 === 0 ? ta0 : i2 === 1 ? ta1 : ta2;
     for (let j = 0; j < 3; j++) {
       const cij = C[3 * i + j]!;
       const len2 = 1 - cij * cij;
@@ -219,53 +250,15 @@ export function boxBox3DAt(RA: Float64Array, oa: number, RB: Float64Array, ob: n
   // faceContact reads the boxes' numbers from boxArgs: reference first when flipped is 0, else incident first.
   if (sB > sA + FACE_BIAS * size) {
     // B's face is the reference: A is the incident box; the normal comes out of B, flipped to A -> B.
-    const tb = t[3 + fB]!;
+    const tb = fB === 0 ? tb0 : fB === 1 ? tb1 : tb2;
     faceContact(RB, ob, fB, tb > 0 ? -1 : 1, RA, oa, out, 1);
     out.nx = -out.nx;
     out.ny = -out.ny;
     out.nz = -out.nz;
   } else {
-    const tf = t[fA]!;
+    const tf = fA === 0 ? ta0 : fA === 1 ? ta1 : ta2;
     faceContact(RA, oa, fA, tf >= 0 ? 1 : -1, RB, ob, out, 0);
   }
-}
-
-/** bestFace's input, the centres' offset t in A's frame [0..2] and in B's [3..5], and its result, the best separation [6] (m). */
-const faceT = new Float64Array(7);
-
-/**
- * The face axis of box A (`b` 0) or B (`b` 1) along which the boxes in boxArgs separate most (its
- * index 0 to 2, the first of equals), that separation into faceT[6]: |t_i| less the box's own half
- * extent and the other box's projected radius, read from |C| (row i of |C| for A's axis i, column i
- * for B's).
- */
-function bestFace(b: number): number {
-  const g = boxArgs,
-    own = b === 0 ? BOX_A : BOX_B,
-    other = b === 0 ? BOX_B : BOX_A,
-    t = 3 * b;
-  // |C| index of (this box's axis i, the other's axis k): along * i + across * k.
-  const along = b === 0 ? 3 : 1,
-    across = b === 0 ? 1 : 3;
-  const o0 = g[other + BOX_HX]!,
-    o1 = g[other + BOX_HY]!,
-    o2 = g[other + BOX_HZ]!;
-  const s0 = Math.abs(faceT[t]!) - g[own + BOX_HX]! - (o0 * AC[0]! + o1 * AC[across]! + o2 * AC[2 * across]!);
-  const s1 = Math.abs(faceT[t + 1]!) - g[own + BOX_HY]! - (o0 * AC[along]! + o1 * AC[along + across]! + o2 * AC[along + 2 * across]!);
-  const s2 =
-    Math.abs(faceT[t + 2]!) - g[own + BOX_HZ]! - (o0 * AC[2 * along]! + o1 * AC[2 * along + across]! + o2 * AC[2 * along + 2 * across]!);
-  let best = s0,
-    face = 0;
-  if (s1 > best) {
-    best = s1;
-    face = 1;
-  }
-  if (s2 > best) {
-    best = s2;
-    face = 2;
-  }
-  faceT[6] = best;
-  return face;
 }
 
 /**
