@@ -528,22 +528,39 @@ export function collidePolygonsLocal(out: Manifold, A: ConvexGeometry, B: Convex
   ly += kL * rny;
   ux += kU * rnx;
   uy += kU * rny;
-  // The lower point (reference vertex i11, incident vertex i22), then the upper one (i12, i21); when B
-  // holds the reference face, the normal turns to run from A to B, the points come upper first, and
-  // each id names A's feature first.
-  out.nx = flip ? -rnx : rnx;
-  out.ny = flip ? -rny : rny;
   let count = 0;
-  for (let k = 0; k < 2; k++) {
-    const upper = flip ? k === 0 : k === 1;
-    const sep = (upper ? sepU : sepL) - radius;
-    if (sep <= speculative) {
-      const ir = upper ? i12 : i11,
-        ii = upper ? i21 : i22;
-      out.px[count] = upper ? ux : lx;
-      out.py[count] = upper ? uy : ly;
-      out.separation[count] = sep;
-      out.id[count] = flip ? featureId(ii, ir) : featureId(ir, ii);
+  if (!flip) {
+    out.nx = rnx;
+    out.ny = rny;
+    if (sepL - radius <= speculative) {
+      out.px[count] = lx;
+      out.py[count] = ly;
+      out.separation[count] = sepL - radius;
+      out.id[count] = featureId(i11, i22);
+      count++;
+    }
+    if (sepU - radius <= speculative) {
+      out.px[count] = ux;
+      out.py[count] = uy;
+      out.separation[count] = sepU - radius;
+      out.id[count] = featureId(i12, i21);
+      count++;
+    }
+  } else {
+    out.nx = -rnx;
+    out.ny = -rny;
+    if (sepU - radius <= speculative) {
+      out.px[count] = ux;
+      out.py[count] = uy;
+      out.separation[count] = sepU - radius;
+      out.id[count] = featureId(i21, i12);
+      count++;
+    }
+    if (sepL - radius <= speculative) {
+      out.px[count] = lx;
+      out.py[count] = ly;
+      out.separation[count] = sepL - radius;
+      out.id[count] = featureId(i22, i11);
       count++;
     }
   }
