@@ -6,19 +6,7 @@ import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
 import { colB, collider, manifold, scratch } from './colliders-3d.js';
 import type { Contact3DState } from './manifolds-3d.js';
-import {
-  PLANE_BOX_CX,
-  PLANE_BOX_CY,
-  PLANE_BOX_CZ,
-  PLANE_BOX_HX,
-  PLANE_BOX_HY,
-  PLANE_BOX_HZ,
-  PLANE_D,
-  PLANE_MARGIN,
-  PLANE_NX,
-  PLANE_NY,
-  PLANE_NZ,
-} from './narrowphase/box-args-3d.js';
+import * as ARGS from './narrowphase/box-args-3d.js';
 import { planeArgs, planeBox3DAt } from './narrowphase/box-box-3d.js';
 import { collidePlane3D } from './narrowphase/collide-3d.js';
 import { ColliderKind3D } from './narrowphase/manifold-3d.js';
@@ -99,17 +87,17 @@ function collidePlaneAt(
   if (nx * sc.px[i]! + ny * sc.py[i]! + nz * sc.pz[i]! - d - s.reach[e]! > margin) return false;
   if (s.kind[e] === Shape3DKind.Box) {
     const g = planeArgs;
-    g[PLANE_NX] = nx;
-    g[PLANE_NY] = ny;
-    g[PLANE_NZ] = nz;
-    g[PLANE_D] = d;
-    g[PLANE_BOX_CX] = sc.px[i]!;
-    g[PLANE_BOX_CY] = sc.py[i]!;
-    g[PLANE_BOX_CZ] = sc.pz[i]!;
-    g[PLANE_BOX_HX] = s.hx[e]!;
-    g[PLANE_BOX_HY] = s.hy[e]!;
-    g[PLANE_BOX_HZ] = s.hz[e]!;
-    g[PLANE_MARGIN] = margin;
+    g[ARGS.PLANE_NX] = nx;
+    g[ARGS.PLANE_NY] = ny;
+    g[ARGS.PLANE_NZ] = nz;
+    g[ARGS.PLANE_D] = d;
+    g[ARGS.PLANE_BOX_CX] = sc.px[i]!;
+    g[ARGS.PLANE_BOX_CY] = sc.py[i]!;
+    g[ARGS.PLANE_BOX_CZ] = sc.pz[i]!;
+    g[ARGS.PLANE_BOX_HX] = s.hx[e]!;
+    g[ARGS.PLANE_BOX_HY] = s.hy[e]!;
+    g[ARGS.PLANE_BOX_HZ] = s.hz[e]!;
+    g[ARGS.PLANE_MARGIN] = margin;
     planeBox3DAt(sc.R, MAT3_STRIDE * i, manifold);
   } else {
     if (!posed) {

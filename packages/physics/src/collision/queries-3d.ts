@@ -50,6 +50,15 @@ export interface RayHit3D {
 
 const hit = { t: 0, nx: 0, ny: 0, nz: 0 };
 
+/** Fills `hit` with fraction t and unit normal n; returns true (a hit). */
+function setHit(t: number, nx: number, ny: number, nz: number): boolean {
+  hit.t = t;
+  hit.nx = nx;
+  hit.ny = ny;
+  hit.nz = nz;
+  return true;
+}
+
 function checkRay(where: string, world: PhysicsWorld, origin: ArrayLike<number>, translation: ArrayLike<number>): void {
   if (world.dimensions !== 3) throw new TypeError(`${where}: needs a 3D world (use rayCast in 2D), got dimensions ${world.dimensions}`);
   assertVector(where, 'origin', origin, 3);
@@ -86,11 +95,7 @@ function raySphere(
     y = my + t * dy,
     z = mz + t * dz,
     l = Math.hypot(x, y, z);
-  hit.t = t;
-  hit.nx = x / l;
-  hit.ny = y / l;
-  hit.nz = z / l;
-  return true;
+  return setHit(t, x / l, y / l, z / l);
 }
 
 /** Ray against a capsule of segment p q and radius r: nearest of the end spheres and the side. */
@@ -162,12 +167,7 @@ function rayCapsule(
       bz = nz / l;
     }
   }
-  if (best === Infinity) return false;
-  hit.t = best;
-  hit.nx = bx;
-  hit.ny = by;
-  hit.nz = bz;
-  return true;
+  return best !== Infinity && setHit(best, bx, by, bz);
 }
 
 /** Ray against a convex polyhedron given by world face normals and offsets (n . x <= d inside). */
@@ -206,12 +206,7 @@ function rayPolyhedron(
     } else if (t < tout) tout = t;
     if (tin > tout) return false;
   }
-  if (inside || face < 0) return false;
-  hit.t = tin;
-  hit.nx = fn[3 * face]!;
-  hit.ny = fn[3 * face + 1]!;
-  hit.nz = fn[3 * face + 2]!;
-  return true;
+  return !(inside || face < 0) && setHit(tin, fn[3 * face]!, fn[3 * face + 1]!, fn[3 * face + 2]!);
 }
 
 /**
@@ -258,12 +253,7 @@ function rayCylinder(ox: number, oy: number, oz: number, dx: number, dy: number,
       bz = 0;
     }
   }
-  if (best === Infinity) return false;
-  hit.t = best;
-  hit.nx = bx;
-  hit.ny = by;
-  hit.nz = bz;
-  return true;
+  return best !== Infinity && setHit(best, bx, by, bz);
 }
 
 /** A shape's pose (posed by `poseShape`): centre, m (world), and the rotation of its frame into the world (unit quaternion x, y, z, w). */
@@ -362,9 +352,7 @@ export function rayCastAll3D(world: PhysicsWorld, origin: ArrayLike<number>, tra
         ok = rayCylinder(lx, ly, lz, v3[0]!, v3[1]!, v3[2]!, s.radius[e]!, s.hy[e]!);
         if (ok) {
           rotate(hit.nx, hit.ny, hit.nz, x, y, z, w);
-          hit.nx = v3[0]!;
-          hit.ny = v3[1]!;
-          hit.nz = v3[2]!;
+          setHit(hit.t, v3[0]!, v3[1]!, v3[2]!);
         }
       } else {
         const h = s.hulls[s.hull[e]!]!,
@@ -398,17 +386,14 @@ export function rayCastAll3D(world: PhysicsWorld, origin: ArrayLike<number>, tra
     if (dist <= 0 || den >= 0) continue;
     const t = -dist / den;
     if (t > 1) continue;
-    hit.t = t;
-    hit.nx = nx;
-    hit.ny = ny;
-    hit.nz = nz;
+    setHit(t, nx, ny, nz);
     push(p, 0);
   }
   for (const m of meshesOf(world)) {
     const V = m.vertices,
       T = m.triangles;
-    let best = Infinity,
-      bn = [0, 0, 0];
+    // `hit` holds the nearest triangle hit so far.
+    let best = Infinity;
     for (let k = 0; k < T.length; k += 3) {
       const a = 3 * T[k]!,
         b = 3 * T[k + 1]!,
@@ -442,15 +427,9 @@ export function rayCastAll3D(world: PhysicsWorld, origin: ArrayLike<number>, tra
         ny = e1z * e2x - e1x * e2z,
         nz = e1x * e2y - e1y * e2x,
         l = Math.hypot(nx, ny, nz);
-      bn = [nx / l, ny / l, nz / l];
+      setHit(t, nx / l, ny / l, nz / l);
     }
-    if (best <= 1) {
-      hit.t = best;
-      hit.nx = bn[0]!;
-      hit.ny = bn[1]!;
-      hit.nz = bn[2]!;
-      push(m.entity, 0);
-    }
+    if (best <= 1) push(m.entity, 0);
   }
   out.sort((a, b) => a.fraction - b.fraction);
   return out;
@@ -496,18 +475,23 @@ function shapeContains(s: Shape3DStore, e: number, px: number, py: number, pz: n
   }
 }
 
+/** Fills `box` (min x, y, z, max x, y, z; m) with the bounding box of the sphere of centre c and radius r (m). */
+function sphereBounds(cx: number, cy: number, cz: number, r: number, box: Float64Array): void {
+  box[0] = cx - r;
+  box[1] = cy - r;
+  box[2] = cz - r;
+  box[3] = cx + r;
+  box[4] = cy + r;
+  box[5] = cz + r;
+}
+
 /** Fills `box` (min x, y, z, max x, y, z; m) with the world bounding box of shape `e` (posed in `pose`). */
 function shapeBounds(s: Shape3DStore, e: number, box: Float64Array): void {
   const { cx, cy, cz, x, y, z, w } = pose,
     kind = s.kind[e]!,
     r = s.radius[e]!;
   if (kind === Shape3DKind.Sphere) {
-    box[0] = cx - r;
-    box[1] = cy - r;
-    box[2] = cz - r;
-    box[3] = cx + r;
-    box[4] = cy + r;
-    box[5] = cz + r;
+    sphereBounds(cx, cy, cz, r, box);
     return;
   }
   if (kind === Shape3DKind.Capsule || kind === Shape3DKind.Cylinder) {
@@ -642,16 +626,7 @@ export function overlapAABB3D(world: PhysicsWorld, min: ArrayLike<number>, max: 
       return meets(bounds);
     },
     (b) => {
-      const r = c.Ball.radius[b]!,
-        x = P.x[b]!,
-        y = P.y[b]!,
-        z = P.z[b]!;
-      bounds[0] = x - r;
-      bounds[1] = y - r;
-      bounds[2] = z - r;
-      bounds[3] = x + r;
-      bounds[4] = y + r;
-      bounds[5] = z + r;
+      sphereBounds(P.x[b]!, P.y[b]!, P.z[b]!, c.Ball.radius[b]!, bounds);
       return meets(bounds);
     },
   );

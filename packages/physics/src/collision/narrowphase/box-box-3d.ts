@@ -23,19 +23,7 @@ import {
   PLANE_NY,
   PLANE_NZ,
 } from './box-args-3d.js';
-
-/** Where the manifold goes: collision/narrowphase/manifold-3d.ts's Manifold3D (declared here by shape, so the two modules do not import each other). */
-interface Manifold3D {
-  count: number;
-  nx: number;
-  ny: number;
-  nz: number;
-  x: Float64Array;
-  y: Float64Array;
-  z: Float64Array;
-  sep: Float64Array;
-  id: Float64Array;
-}
+import type { Manifold3D } from './manifold-3d.js';
 
 /**
  * Box against box and box against plane, the common case of a pile, without posing either box's

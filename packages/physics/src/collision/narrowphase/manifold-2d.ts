@@ -119,11 +119,78 @@ export function collideShapes(
 
 /**
  * `collideShapes` with the poses and the speculative distance read from `pose` (slots `PairPose`);
- * `pose` is not changed.
+ * `pose` is not changed. Dispatches through `PAIRS`, one function per pair of shape classes.
  * @param out overwritten; its normal points from A to B.
  * @category Collision
  */
 export function collideShapesAt(out: Manifold, A: ConvexGeometry, B: ConvexGeometry, pose: Float64Array): void {
+  out.count = 0;
+  PAIRS[3 * shapeClass(A) + shapeClass(B)]!(out, A, B, pose);
+}
+
+/** A shape's class for `PAIRS`: 0 circle (1 vertex), 1 capsule or segment (2), 2 polygon (3 to 8). */
+function shapeClass(g: ConvexGeometry): number {
+  return g.count > 2 ? 2 : g.count - 1;
+}
+
+/** The manifold of A against B for one pair of shape classes (`collideShapesAt`'s arguments). */
+type PairFunction = (out: Manifold, A: ConvexGeometry, B: ConvexGeometry, pose: Float64Array) => void;
+
+/** World position of a circle's centre (`circleCentre`): x, y. */
+const centre = new Float64Array(2);
+
+/** Writes into `centre` the world position of circle g's centre, placed by the pose at `pose[o]` (o: PairPose.XA or XB). */
+function circleCentre(g: ConvexGeometry, pose: Float64Array, o: number): void {
+  const x = pose[o]!,
+    y = pose[o + 1]!,
+    c = pose[o + 2]!,
+    s = pose[o + 3]!;
+  centre[0] = x + c * g.vx[0]! - s * g.vy[0]!;
+  centre[1] = y + s * g.vx[0]! + c * g.vy[0]!;
+}
+
+/** Two circles, in the world frame. */
+function circleCircle(out: Manifold, A: ConvexGeometry, B: ConvexGeometry, pose: Float64Array): void {
+  circleCentre(A, pose, PairPose.XA);
+  const ax = centre[0]!,
+    ay = centre[1]!;
+  circleCentre(B, pose, PairPose.XB);
+  collideCircles(out, ax, ay, A.radius, centre[0]!, centre[1]!, B.radius, pose[PairPose.SPECULATIVE]!);
+}
+
+/** A circle against a capsule, segment or polygon: collided the other way round, then flipped. */
+function circleFirst(out: Manifold, A: ConvexGeometry, B: ConvexGeometry, pose: Float64Array): void {
+  // B's pose (slots 4 to 7) and A's (0 to 3) trade places.
+  const f = flippedPose;
+  for (let k = 0; k < 4; k++) {
+    f[PairPose.XA + k] = pose[PairPose.XB + k]!;
+    f[PairPose.XB + k] = pose[PairPose.XA + k]!;
+  }
+  f[PairPose.SPECULATIVE] = pose[PairPose.SPECULATIVE]!;
+  collideShapesAt(out, B, A, f);
+  flipManifold(out);
+}
+
+/** A capsule, segment or polygon A against a circle B, in A's frame. */
+function convexCircle(out: Manifold, A: ConvexGeometry, B: ConvexGeometry, pose: Float64Array): void {
+  const xa = pose[PairPose.XA]!,
+    ya = pose[PairPose.YA]!,
+    ca = pose[PairPose.CA]!,
+    sa = pose[PairPose.SA]!,
+    speculative = pose[PairPose.SPECULATIVE]!;
+  // Circle centre in A's frame.
+  circleCentre(B, pose, PairPose.XB);
+  const wx = centre[0]! - xa,
+    wy = centre[1]! - ya;
+  const lx = ca * wx + sa * wy,
+    ly = -sa * wx + ca * wy;
+  if (A.count === 2) collideSegmentCircleLocal(out, A, lx, ly, B.radius, speculative);
+  else collidePolygonCircleLocal(out, A, lx, ly, B.radius, speculative);
+  toWorld(out, xa, ya, ca, sa);
+}
+
+/** Two capsules, segments or polygons: B moved into A's frame, then `collidePolygonsLocal`. */
+function convexConvex(out: Manifold, A: ConvexGeometry, B: ConvexGeometry, pose: Float64Array): void {
   const xa = pose[PairPose.XA]!,
     ya = pose[PairPose.YA]!,
     ca = pose[PairPose.CA]!,
@@ -131,43 +198,7 @@ export function collideShapesAt(out: Manifold, A: ConvexGeometry, B: ConvexGeome
     xb = pose[PairPose.XB]!,
     yb = pose[PairPose.YB]!,
     cb = pose[PairPose.CB]!,
-    sb = pose[PairPose.SB]!,
-    speculative = pose[PairPose.SPECULATIVE]!;
-  out.count = 0;
-  if (A.count === 1 && B.count === 1) {
-    const ax = xa + ca * A.vx[0]! - sa * A.vy[0]!,
-      ay = ya + sa * A.vx[0]! + ca * A.vy[0]!;
-    const bx = xb + cb * B.vx[0]! - sb * B.vy[0]!,
-      by = yb + sb * B.vx[0]! + cb * B.vy[0]!;
-    collideCircles(out, ax, ay, A.radius, bx, by, B.radius, speculative);
-    return;
-  }
-  if (A.count === 1) {
-    const f = flippedPose;
-    f[PairPose.XA] = xb;
-    f[PairPose.YA] = yb;
-    f[PairPose.CA] = cb;
-    f[PairPose.SA] = sb;
-    f[PairPose.XB] = xa;
-    f[PairPose.YB] = ya;
-    f[PairPose.CB] = ca;
-    f[PairPose.SB] = sa;
-    f[PairPose.SPECULATIVE] = speculative;
-    collideShapesAt(out, B, A, f);
-    flipManifold(out);
-    return;
-  }
-  if (B.count === 1) {
-    // Circle centre in A's frame.
-    const wx = xb + cb * B.vx[0]! - sb * B.vy[0]! - xa,
-      wy = yb + sb * B.vx[0]! + cb * B.vy[0]! - ya;
-    const lx = ca * wx + sa * wy,
-      ly = -sa * wx + ca * wy;
-    if (A.count === 2) collideSegmentCircleLocal(out, A, lx, ly, B.radius, speculative);
-    else collidePolygonCircleLocal(out, A, lx, ly, B.radius, speculative);
-    toWorld(out, xa, ya, ca, sa);
-    return;
-  }
+    sb = pose[PairPose.SB]!;
   // B in A's frame: p_A = R_A^T (R_B p + x_B - x_A).
   const g = scratchB;
   g.count = B.count;
@@ -189,9 +220,16 @@ export function collideShapesAt(out: Manifold, A: ConvexGeometry, B: ConvexGeome
     g.nx[i] = c * nx - s * ny;
     g.ny[i] = s * nx + c * ny;
   }
-  collidePolygonsLocal(out, A, g, speculative);
+  collidePolygonsLocal(out, A, g, pose[PairPose.SPECULATIVE]!);
   toWorld(out, xa, ya, ca, sa);
 }
+
+/** PAIRS[3 * shapeClass(A) + shapeClass(B)]: rows A circle, capsule or segment, polygon; columns B likewise. */
+const PAIRS: readonly PairFunction[] = [
+  ...[circleCircle, circleFirst, circleFirst],
+  ...[convexCircle, convexConvex, convexConvex],
+  ...[convexCircle, convexConvex, convexConvex],
+];
 
 /**
  * Circle (centre a, radius ra) against circle (b, rb), world frame.
