@@ -13,7 +13,8 @@
  * shows w in the body frame.
  * Keys: W/S, A/D, Q/E torque about the camera's right, up and viewing axes; X stops the spin;
  * Space jump (room); M switches mode (room, cube on a pivot, flip); P pause, N single step, R reset.
- * Click a face: an impulse there. Drag: orbit.
+ * Click a face: an impulse there (in the room a flick away from the point clicked). Drag: orbit.
+ * Challenges: room: rest the cube on five pads in turn (stars by time); flip: 10 flips in 20 s.
  * URL: ?mode=room|cube|flip (default room), ?spin=rad/s (flip).
  */
 
@@ -129,7 +130,7 @@ const game = await startThreeGame({
   createWorld,
   bodies: () => 1,
   controls: [
-    { keys: 'Click', action: 'impulse at the point clicked' },
+    { keys: 'Click', action: 'poke a face: the cube is flicked away from it' },
     { keys: 'W S', action: 'torque: pitch', touch: 'Pitch' },
     { keys: 'A D', action: 'torque: yaw', touch: 'Yaw' },
     { keys: 'Q E', action: 'torque: roll', touch: 'Roll' },
@@ -316,14 +317,22 @@ const rayDir = new Vector3();
 /**
  * Casts a ray from the camera through (ndcX, ndcY); if it hits the body, applies an impulse of
  * params.impulse N s (times ROOM_PUSH in the room) at the hit point: on the pivot along the ray; in
- * the room a flick, along the ray's horizontal direction tilted FLICK_LIFT up (the steep camera's ray
- * points mostly down, and pressing the cube into the floor would only feed friction).
+ * the room a flick away from the point poked: horizontally from the hit point towards the cube's
+ * centre (along the ray's horizontal direction when the hit is within 10 cm of above the centre),
+ * tilted FLICK_LIFT up. So a poke at the cube's west side sends it east, whichever way the camera
+ * looks (the steep camera's ray points mostly down: along it the cube would only be pressed into
+ * the floor).
  * @returns whether the body was hit.
  */
 function clickAt(ndcX: number, ndcY: number): boolean {
   const hit = renderer.pick(ndcX, ndcY, app.camera);
   if (!hit || hit.eid !== handles.body) return false;
   rayDir.set(ndcX, ndcY, 0.5).unproject(app.camera).sub(app.camera.position).normalize();
+  const P = shell.world.components.Position,
+    e = handles.body;
+  const hx = P.x[e]! - hit.point[0]!,
+    hz = P.z[e]! - hit.point[2]!;
+  if (params.mode === 'room' && Math.hypot(hx, hz) > 0.1) rayDir.set(hx, 0, hz);
   if (params.mode === 'room' && Math.hypot(rayDir.x, rayDir.z) > 1e-6) {
     rayDir.y = 0;
     rayDir.normalize();
