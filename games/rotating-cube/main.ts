@@ -3,14 +3,15 @@
  * room and collides with the floor and the walls (a box collider and 3D box contacts): it lands,
  * tumbles, slides and bounces off them; torques from the keys (a couple of forces from
  * `applyForceAtPoint` in a forces-stage system) and impulses from clicks (`applyImpulseAtPoint` at
- * the point of the face clicked, along the view direction) push it about, and Space makes it jump.
+ * the point of the face clicked, a flick away from it) push it about, and Space makes it jump. The
+ * challenge: rest it on five glowing pads in turn, against the clock.
  * Arrows show its angular momentum L (`spinAngularMomentum`, yellow) and angular velocity w (magenta).
  *
  * Mode 'cube' takes gravity away and holds the cube at its centre of mass on a frictionless pivot:
  * it tumbles slowly in place, and with no torque L stays fixed while w moves whenever the body is not
  * spinning about a principal axis. Mode 'flip' spins a box with three distinct moments about its
  * intermediate axis on the pivot: it flips over again and again (the Dzhanibekov effect); the plot
- * shows w in the body frame.
+ * shows w in the body frame. The challenge: 10 flips within 20 s (spin it up with the yaw keys).
  * Keys: W/S, A/D, Q/E torque about the camera's right, up and viewing axes; X stops the spin;
  * Space jump (room); M switches mode (room, cube on a pivot, flip); P pause, N single step, R reset.
  * Click a face: an impulse there (in the room a flick away from the point clicked). Drag: orbit.
