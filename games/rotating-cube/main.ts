@@ -533,7 +533,7 @@ function frame(): void {
         : params.mode === 'room'
           ? `height ${P.y[e]!.toFixed(2)} m · speed ${Math.hypot(c.Velocity.x[e]!, c.Velocity.y[e]!, c.Velocity.z[e]!).toFixed(2)} m/s`
           : `I = ${handles.inertia.map((v) => v.toFixed(3)).join(', ')} kg m²`;
-    lines[4]!.textContent = `arrows: 1 rad/s = ${omegaScale.toFixed(2)} m`;
+    lines[4]!.textContent = `arrows: L yellow, ω magenta; 1 rad/s = ${omegaScale.toFixed(2)} m`;
     // For a cube (equal moments) L stays parallel to w; for other boxes it does not.
     const lw = Math.hypot(L[0]!, L[1]!, L[2]!) * Math.hypot(wx, wy, wz);
     const angle = lw > 0 ? (Math.acos(Math.min(1, (L[0]! * wx + L[1]! * wy + L[2]! * wz) / lw)) * 180) / Math.PI : 0;
