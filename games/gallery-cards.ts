@@ -21,7 +21,8 @@ export const CARD_LINES: Readonly<Record<string, string>> = {
   // Three toys without a goal to win, listed here with what to try (a score or a finish line for a
   // spinning cube, a box of balls or the Moon's orbit would be made up): each line says what to explore.
   'earth-moon': 'Speed up time and follow the Moon round the Earth: see the Earth wobble round the point they both circle.',
-  'rotating-cube': 'Spin a cube and watch its spin axis wander; spin a box in space and see it flip over by itself.',
+  'rotating-cube':
+    'Flick a cube onto five glowing pads against the clock, watch its spin axis wander, and make a box flip over by itself 10 times in 20 s.',
   'balls-3d': 'Throw balls into a glass box of hundreds more: turn gravity and bounce up or down and watch the pile settle.',
   'lab-floating': 'Drop balls and a box into water and see which float, which sink and how deep they ride.',
   'lab-balloon-parachute': 'Open a parachute mid-fall, and let a balloon rise until the thin air stops it.',

@@ -3,21 +3,23 @@
  * room and collides with the floor and the walls (a box collider and 3D box contacts): it lands,
  * tumbles, slides and bounces off them; torques from the keys (a couple of forces from
  * `applyForceAtPoint` in a forces-stage system) and impulses from clicks (`applyImpulseAtPoint` at
- * the point of the face clicked, along the view direction) push it about, and Space makes it jump.
+ * the point of the face clicked, a flick away from it) push it about, and Space makes it jump. The
+ * challenge: rest it on five glowing pads in turn, against the clock.
  * Arrows show its angular momentum L (`spinAngularMomentum`, yellow) and angular velocity w (magenta).
  *
  * Mode 'cube' takes gravity away and holds the cube at its centre of mass on a frictionless pivot:
  * it tumbles slowly in place, and with no torque L stays fixed while w moves whenever the body is not
  * spinning about a principal axis. Mode 'flip' spins a box with three distinct moments about its
  * intermediate axis on the pivot: it flips over again and again (the Dzhanibekov effect); the plot
- * shows w in the body frame.
+ * shows w in the body frame. The challenge: 10 flips within 20 s (spin it up with the yaw keys).
  * Keys: W/S, A/D, Q/E torque about the camera's right, up and viewing axes; X stops the spin;
  * Space jump (room); M switches mode (room, cube on a pivot, flip); P pause, N single step, R reset.
- * Click a face: an impulse there. Drag: orbit.
+ * Click a face: an impulse there (in the room a flick away from the point clicked). Drag: orbit.
+ * Challenges: room: rest the cube on five pads in turn (stars by time); flip: 10 flips in 20 s.
  * URL: ?mode=room|cube|flip (default room), ?spin=rad/s (flip).
  */
 
-import { choiceParam, createButtonBar, createPanel, numberParam, pageLayout } from '@bitphysics/game-kit';
+import { choiceParam, createButtonBar, createPanel, createStatusRow, numberParam, pageLayout } from '@bitphysics/game-kit';
 import type { Plot } from '@bitphysics/game-kit/plot';
 import { ORBIT_CONTROLS, startThreeGame } from '@bitphysics/game-kit/three';
 import {
@@ -32,12 +34,20 @@ import {
   spinKineticEnergy,
 } from '@bitphysics/physics';
 import { VectorArrow } from '@bitphysics/render-three';
-import { BoxGeometry, Color, Float32BufferAttribute, MeshStandardMaterial, Vector3 } from 'three';
+import { BoxGeometry, Color, Float32BufferAttribute, Mesh, MeshStandardMaterial, Vector3 } from 'three';
 import {
   buildRotatingCube,
+  FLIP_GOAL,
+  FLIP_TIME,
+  FlipChallenge,
   JUMP_IMPULSE,
   MODES,
   type Mode,
+  PAD_HALF,
+  PAD_STAR_TIMES,
+  PADS,
+  PadChallenge,
+  padStars,
   ROOM_HALF,
   ROOM_PUSH,
   type RotatingCubeHandles,
@@ -48,6 +58,8 @@ import {
 
 /** A press that moves more than this, CSS px, is a camera drag, not a click. */
 const CLICK_SLOP = 5;
+/** Room mode: a click's flick rises this much per unit of its horizontal direction (0.5: about 27 degrees up). */
+const FLICK_LIFT = 0.5;
 /** Length of the angular-velocity arrow at the starting spin (or at 1 rad/s if slower), m. */
 const ARROW_LENGTH = 1.6;
 
@@ -64,6 +76,12 @@ const params = {
 };
 
 let handles: RotatingCubeHandles;
+/** Room mode's challenge (the pads) and flip mode's (flips in FLIP_TIME); reset with the world. */
+const pads = new PadChallenge(),
+  flips = new FlipChallenge();
+/** Best round of this page visit: pad round time, s, and most flips. */
+let bestPadTime = Infinity,
+  bestFlips = 0;
 /** Arrow length per rad/s of angular velocity, m: set per world so the starting spin shows as ARROW_LENGTH. */
 let omegaScale = 1;
 /** Torque the keys ask for now, N m, world frame (read by the forces-stage system). */
@@ -81,23 +99,39 @@ function createWorld(): PhysicsWorld {
     'forces',
     torqueCouple(handles.body, () => keyTorque),
   );
+  // The challenges are checked after every step (a system at the end of the step), so they count
+  // the same whether the page runs, single-steps or is stepped by a test.
+  pads.reset();
+  flips.reset();
+  addSystem(world, 'finalize', (w) => {
+    if (params.mode === 'room') pads.update(w, handles.body);
+    else if (params.mode === 'flip') flips.update(w, handles.body);
+  });
   // Held at its pivot, the box has no collider: a floor far below only catches the shadow. The room has its own floor.
   if (params.mode !== 'room') addPlane(world, { normal: [0, 1, 0], point: [0, -1.6, 0] });
   return world;
 }
 
+/**
+ * The walls' material (the renderer's box material, which only the walls use: the body has its own):
+ * light and half see-through, so the cube stays in sight behind the near wall from any side.
+ */
+const wallMaterial = new MeshStandardMaterial({ roughness: 0.75, metalness: 0, transparent: true, opacity: 0.5, depthWrite: false });
+
 // Read by frame(), which the shell may call before this module's code after the await below has run.
 const L = new Float64Array(3),
   wb = new Float64Array(3);
 let lastPlotted = -1,
-  frames = 0;
+  frames = 0,
+  /** Angle between L and w, degrees (the readout's, for the status row). */
+  angleLw = 0;
 
 const game = await startThreeGame({
   title: 'Rotating cube',
   createWorld,
   bodies: () => 1,
   controls: [
-    { keys: 'Click', action: 'impulse at the point clicked' },
+    { keys: 'Click', action: 'poke a face: the cube is flicked away from it' },
     { keys: 'W S', action: 'torque: pitch', touch: 'Pitch' },
     { keys: 'A D', action: 'torque: yaw', touch: 'Yaw' },
     { keys: 'Q E', action: 'torque: roll', touch: 'Roll' },
@@ -111,28 +145,55 @@ const game = await startThreeGame({
     { key: 'm', label: 'mode', action: () => setMode(MODES[(MODES.indexOf(params.mode) + 1) % MODES.length]!) },
     { key: ' ', label: 'jump', action: () => jump() },
   ],
-  app: { controls: { minDistance: 1.5, maxDistance: 30 } },
-  renderer: { debug: params.axes ? debugOptions() : false, planeSize: 14, boundary: 'none' },
+  app: { background: 0x1a2232, controls: { minDistance: 1.5, maxDistance: 30 } },
+  renderer: {
+    debug: params.axes ? debugOptions() : false,
+    planeSize: 14,
+    boundary: 'none',
+    floorColor: 0x3c4660,
+    boxMaterial: wallMaterial,
+    lights: { intensity: 2.4, hemisphereIntensity: 1.2, skyColor: 0xeaf2ff, groundColor: 0x5a4e40, direction: [0.5, 1, 0.35] },
+  },
   view: viewOf(params.mode),
-  viewDirection: [1, 0.7, 1.4],
+  viewDirection: viewDirectionOf(params.mode),
   onFrame: () => frame(),
 });
 const { shell, renderer, app } = game;
+clampOrbit();
 
-/** What the camera frames in each mode, m. */
+/** What the camera frames in each mode, m: the room with its walls, or the box on its pivot. */
 function viewOf(mode: Mode): { min: [number, number, number]; max: [number, number, number] } {
   return mode === 'room'
     ? { min: [-ROOM_HALF, 0, -ROOM_HALF], max: [ROOM_HALF, WALL_HEIGHT, ROOM_HALF] }
-    : { min: [-1.3, -1.3, -1.3], max: [1.3, 1.3, 1.3] };
+    : { min: [-1.3, -1.3, -1.3], max: [1.3, 1.8, 1.3] };
+}
+
+/**
+ * Direction the camera looks from in each mode: the room from high up (about 50 degrees), so a cube
+ * against the near wall stays in sight over it; the pivot from a little above.
+ */
+function viewDirectionOf(mode: Mode): [number, number, number] {
+  return mode === 'room' ? [1, 2.1, 1.4] : [1, 0.7, 1.4];
+}
+
+/**
+ * Keeps the orbiting camera above the floor: in the room at most 80 degrees from straight down onto
+ * the target (it stays over the walls' feet), on the pivot at most 100 degrees (the floor is 1.6 m below).
+ */
+function clampOrbit(): void {
+  if (!app.controls) return;
+  app.controls.maxPolarAngle = ((params.mode === 'room' ? 80 : 100) * Math.PI) / 180;
+  app.controls.update();
 }
 
 /**
  * Debug layer: on the pivot the body's axes; in the room the contact points instead (the layer draws
- * axes for every body, 1.5 times its size: the walls' would cross the whole room).
+ * axes for every body, 1.5 times its size: the walls' would cross the whole room). Never the planes'
+ * normals: the floor's would stand unlabelled in the middle of the scene.
  */
 function debugOptions() {
   const room = params.mode === 'room';
-  return { axes: !room, velocities: false, contacts: room, joints: false };
+  return { axes: !room, velocities: false, contacts: room, joints: false, planes: false };
 }
 
 /** Room mode: the key torque and click impulse scale. */
@@ -146,9 +207,10 @@ function jump(): void {
   applyImpulse(shell.world, handles.body, [0, JUMP_IMPULSE, 0]);
 }
 
-// The body: a unit box with one colour per face (x red, y green, z blue; darker on the negative
-// side), scaled by the renderer to the body's equivalent-inertia box.
-const faceColors = [0xe4572e, 0x7a2a17, 0x6cc04a, 0x2f5e22, 0x3d7be0, 0x1d3b6e];
+// The body: a unit box with one colour per face (x red, y green, z blue; a pale tint of it on the
+// negative side, so every face reads in the light), scaled by the renderer to the body's
+// equivalent-inertia box.
+const faceColors = [0xef5b3a, 0xf6b09a, 0x5cc043, 0xbde8a4, 0x3d7be0, 0xa9c6f7];
 const boxGeometry = new BoxGeometry(1, 1, 1);
 {
   // Vertex colours are linear in three.js; Color converts from sRGB hex.
@@ -163,13 +225,21 @@ const boxGeometry = new BoxGeometry(1, 1, 1);
 const boxMaterial = new MeshStandardMaterial({ vertexColors: true, roughness: 0.55, metalness: 0.05 });
 const dress = (): void => {
   renderer.setShape(handles.body, { geometry: boxGeometry, material: boxMaterial, scale: 'inertia' });
-  for (const wall of handles.walls) renderer.setColor(wall, 0x5a6478);
+  for (const wall of handles.walls) renderer.setColor(wall, 0xb9c8e6);
 };
 dress();
 shell.onWorldChange(() => {
   dress();
   plot?.clear();
 });
+
+// The lit pad of the room's challenge: a glowing square on the floor (drawn only; the physics knows nothing of it).
+const padMesh = new Mesh(
+  new BoxGeometry(2 * PAD_HALF, 0.02, 2 * PAD_HALF),
+  new MeshStandardMaterial({ color: 0x0c8f52, emissive: 0x12c46e, emissiveIntensity: 0.9, roughness: 0.4 }),
+);
+padMesh.receiveShadow = true;
+app.scene.add(padMesh);
 
 const lArrow = new VectorArrow({ color: 0xffd166, radius: 0.025, headLength: 0.14 });
 const wArrow = new VectorArrow({ color: 0xff5ce1, radius: 0.02, headLength: 0.12 });
@@ -247,12 +317,29 @@ canvas.addEventListener('pointerup', (event) => {
 const rayDir = new Vector3();
 /**
  * Casts a ray from the camera through (ndcX, ndcY); if it hits the body, applies an impulse of
- * params.impulse N s along the ray at the hit point. @returns whether the body was hit.
+ * params.impulse N s (times ROOM_PUSH in the room) at the hit point: on the pivot along the ray; in
+ * the room a flick away from the point poked: horizontally from the hit point towards the cube's
+ * centre (along the ray's horizontal direction when the hit is within 10 cm of above the centre),
+ * tilted FLICK_LIFT up. So a poke at the cube's west side sends it east, whichever way the camera
+ * looks (the steep camera's ray points mostly down: along it the cube would only be pressed into
+ * the floor).
+ * @returns whether the body was hit.
  */
 function clickAt(ndcX: number, ndcY: number): boolean {
   const hit = renderer.pick(ndcX, ndcY, app.camera);
   if (!hit || hit.eid !== handles.body) return false;
   rayDir.set(ndcX, ndcY, 0.5).unproject(app.camera).sub(app.camera.position).normalize();
+  const P = shell.world.components.Position,
+    e = handles.body;
+  const hx = P.x[e]! - hit.point[0]!,
+    hz = P.z[e]! - hit.point[2]!;
+  if (params.mode === 'room' && Math.hypot(hx, hz) > 0.1) rayDir.set(hx, 0, hz);
+  if (params.mode === 'room' && Math.hypot(rayDir.x, rayDir.z) > 1e-6) {
+    rayDir.y = 0;
+    rayDir.normalize();
+    rayDir.y = FLICK_LIFT;
+    rayDir.normalize();
+  }
   const J = params.impulse * push();
   applyImpulseAtPoint(shell.world, handles.body, [rayDir.x * J, rayDir.y * J, rayDir.z * J], hit.point);
   flash = 12;
@@ -274,7 +361,8 @@ function setMode(mode: Mode): void {
   panel.refresh();
   shell.reset();
   const v = viewOf(mode);
-  app.frame(v.min, v.max, [1, 0.7, 1.4]);
+  app.frame(v.min, v.max, viewDirectionOf(mode));
+  clampOrbit();
   if (params.axes) renderer.setDebug(debugOptions());
 }
 
@@ -314,6 +402,67 @@ const panel = createPanel(
   ],
   { title: 'Rotating cube' },
 );
+
+// ---- The challenge's status row (above the scene, on every screen) ---------------------------------
+
+const status = createStatusRow({ name: 'challenge' });
+const touch = pageLayout().touch();
+const stars = (n: number): string => '★'.repeat(n) + '☆'.repeat(3 - n);
+
+/** Writes the status row: the mode's goal, its numbers (the key readout) and how to play. */
+function updateStatus(wx: number, wy: number, wz: number): void {
+  const world = shell.world,
+    t = world.time,
+    w = Math.hypot(wx, wy, wz);
+  if (params.mode === 'room') {
+    const flick = touch ? 'Tap a face to flick it · hold Pitch, Yaw, Roll' : 'Click a face to flick it · W A S D Q E turn it · Space jumps';
+    if (pads.done) {
+      const time = pads.doneAt;
+      if (time < bestPadTime) bestPadTime = time;
+      status.set(
+        {
+          goal: `All ${PADS.length} pads in ${time.toFixed(1)} s ${stars(padStars(time))}`,
+          numbers: `best ${bestPadTime.toFixed(1)} s · ★★★ within ${PAD_STAR_TIMES[0]} s`,
+          hint: 'R: play again · M: next mode (free spin, then the flip challenge)',
+        },
+        true,
+      );
+    } else
+      status.set({
+        goal: `Land the cube on the glowing pad (${pads.pad + 1} of ${PADS.length})`,
+        numbers: `Pads ${pads.pad}/${PADS.length} · ${t.toFixed(1)} s · ${stars(padStars(Math.max(t, 0)))}`,
+        hint: flick,
+      });
+  } else if (params.mode === 'flip') {
+    const n = flips.counter.count;
+    const over = flips.over(world);
+    if (over && n > bestFlips) bestFlips = n;
+    const spin = touch ? 'hold Yaw' : 'hold A or D';
+    status.set(
+      over
+        ? {
+            goal:
+              flips.wonAt >= 0
+                ? `${FLIP_GOAL} flips in ${flips.wonAt.toFixed(1)} s ${stars(3)}`
+                : `Time! ${n} flips ${stars(flips.stars())}`,
+            numbers: `best ${bestFlips} flips · |ω| ${w.toFixed(1)} rad/s`,
+            hint: 'R: try again · M: back to the pads',
+          }
+        : {
+            goal: `Make the box flip over ${FLIP_GOAL} times in ${FLIP_TIME} s`,
+            numbers: `Flips ${n}/${FLIP_GOAL} · ${Math.max(0, FLIP_TIME - t).toFixed(1)} s left · |ω| ${w.toFixed(1)} rad/s`,
+            hint: `It flips by itself; spun faster it flips faster: ${spin}`,
+          },
+      over && flips.wonAt >= 0,
+    );
+  } else {
+    status.set({
+      goal: 'Free spin: push the cube and watch ω (magenta) wander round L (yellow)',
+      numbers: `|ω| ${w.toFixed(2)} rad/s · angle L–ω ${angleLw.toFixed(1)}°`,
+      hint: 'M: the flip challenge',
+    });
+  }
+}
 
 // ---- Readout and plot (bottom right) -------------------------------------------------------------
 
@@ -384,11 +533,21 @@ function frame(): void {
         : params.mode === 'room'
           ? `height ${P.y[e]!.toFixed(2)} m · speed ${Math.hypot(c.Velocity.x[e]!, c.Velocity.y[e]!, c.Velocity.z[e]!).toFixed(2)} m/s`
           : `I = ${handles.inertia.map((v) => v.toFixed(3)).join(', ')} kg m²`;
-    lines[4]!.textContent = `arrows: 1 rad/s = ${omegaScale.toFixed(2)} m`;
+    lines[4]!.textContent = `arrows: L yellow, ω magenta; 1 rad/s = ${omegaScale.toFixed(2)} m`;
     // For a cube (equal moments) L stays parallel to w; for other boxes it does not.
     const lw = Math.hypot(L[0]!, L[1]!, L[2]!) * Math.hypot(wx, wy, wz);
     const angle = lw > 0 ? (Math.acos(Math.min(1, (L[0]! * wx + L[1]! * wy + L[2]! * wz) / lw)) * 180) / Math.PI : 0;
     lines[5]!.textContent = `angle between L and ω ${angle.toFixed(1)}°`;
+    angleLw = angle;
+  }
+  if (frames % 5 === 0) updateStatus(wx, wy, wz);
+  // The lit pad glows (pulsing) while the room's round runs.
+  const padLit = params.mode === 'room' && !pads.done;
+  padMesh.visible = padLit;
+  if (padLit) {
+    const spot = PADS[pads.pad]!;
+    padMesh.position.set(spot[0], 0.02, spot[1]);
+    (padMesh.material as MeshStandardMaterial).emissiveIntensity = 0.8 + 0.4 * Math.sin(performance.now() / 250);
   }
   if (flash > 0) flash--;
 }
@@ -417,6 +576,19 @@ shell.expose({
     rotateVectorInverse(-q.x[e]!, -q.y[e]!, -q.z[e]!, q.w[e]!, 0, 1, 0, out);
     return Array.from(out);
   },
+  /**
+   * The challenge's state: room: the lit pad's index (PADS.length when the round is over), the round's
+   * time (s, -1 while it runs) and the pads' centres (x, z, m); flip: the flips counted and the time
+   * the goal was reached (s, -1 if not yet).
+   */
+  challenge: () => ({
+    mode: params.mode,
+    pad: pads.pad,
+    padsDoneAt: pads.doneAt,
+    pads: PADS.map((p) => [p[0], p[1]]),
+    flips: flips.counter.count,
+    flipsWonAt: flips.wonAt,
+  }),
   /** Clicks at (ndcX, ndcY) as the mouse would; returns whether the body was hit. */
   clickAt,
   /** Switches mode ('room', 'cube' or 'flip') and rebuilds. @throws RangeError on an unknown mode. */

@@ -25,8 +25,10 @@ import {
   inertiaOfSolidBox,
   type PhysicsWorld,
   type PhysicsWorldOptions,
+  rotateVectorInverse,
   type System,
   setAngularVelocity,
+  spinAngularMomentum,
 } from '@bitphysics/physics';
 
 /** The modes, the default first (the M key cycles through them in this order). */
@@ -220,4 +222,148 @@ export function torqueCouple(body: number, torque: () => ArrayLike<number>): Sys
     point[2] = cz - d * uz;
     applyForceAtPoint(world, body, force, point);
   };
+}
+
+// ---- Challenges -------------------------------------------------------------------------------
+
+/**
+ * Room mode's challenge: the pads' centres (x, z), m, in the order they light up. Each is a square
+ * of half edge PAD_HALF on the floor, clear of the walls by more than the cube's half diagonal.
+ */
+export const PADS: readonly (readonly [number, number])[] = Object.freeze([
+  [1.6, -1.5],
+  [-1.7, 1.4],
+  [1.5, 1.7],
+  [-1.6, -1.6],
+  [0, 0.9],
+]);
+/** Half edge of a pad, m: the cube scores when its centre rests within this of the pad's centre on x and z. */
+export const PAD_HALF = 0.6;
+/** Room challenge: the time of three stars and of two, s (over: one star). */
+export const PAD_STAR_TIMES: readonly [number, number] = Object.freeze([45, 90]) as readonly [number, number];
+
+/**
+ * Whether `body` rests on the pad centred at (px, pz) (m): its centre within PAD_HALF of the pad on x
+ * and z, at most 0.6 m up (a 1 m cube lying on a face sits at 0.5 m), moving slower than 0.2 m/s and
+ * turning slower than 0.5 rad/s.
+ */
+export function restsOnPad(world: PhysicsWorld, body: number, px: number, pz: number): boolean {
+  const c = world.components,
+    P = c.Position,
+    V = c.Velocity,
+    W = c.AngularVelocity;
+  if (Math.abs(P.x[body]! - px) > PAD_HALF || Math.abs(P.z[body]! - pz) > PAD_HALF || P.y[body]! > 0.6) return false;
+  return Math.hypot(V.x[body]!, V.y[body]!, V.z[body]!) < 0.2 && Math.hypot(W.x[body]!, W.y[body]!, W.z[body]!) < 0.5;
+}
+
+/** Stars for a pad round finished in `seconds` (s): 3 within PAD_STAR_TIMES[0], 2 within [1], else 1. */
+export function padStars(seconds: number): number {
+  return seconds <= PAD_STAR_TIMES[0] ? 3 : seconds <= PAD_STAR_TIMES[1] ? 2 : 1;
+}
+
+/** Flip mode's challenge: flips to make, and the time allowed, s. */
+export const FLIP_GOAL = 10;
+export const FLIP_TIME = 20;
+
+/**
+ * Counts flips of a spinning box: the cosine between its intermediate (y) axis and its angular
+ * momentum L swings between about +1 and -1 as it turns over; a flip is counted each time the cosine
+ * crosses from beyond +0.5 to beyond -0.5 or back (the gap keeps a wobble near zero from counting).
+ */
+export class FlipCounter {
+  /** Flips counted since construction or `reset`, >= 0. */
+  count = 0;
+  /** Sign of the last cosine beyond 0.5 in magnitude: +1, -1, or 0 before the first. */
+  private side = 0;
+  /** Forgets the flips and the side. */
+  reset(): void {
+    this.count = 0;
+    this.side = 0;
+  }
+  /**
+   * Feeds the cosine between the box's y axis and L (in [-1, 1]; a non-finite value is ignored).
+   * @returns the flips counted so far.
+   */
+  update(cosine: number): number {
+    if (cosine > 0.5) {
+      if (this.side < 0) this.count++;
+      this.side = 1;
+    } else if (cosine < -0.5) {
+      if (this.side > 0) this.count++;
+      this.side = -1;
+    }
+    return this.count;
+  }
+}
+
+/**
+ * Room mode's challenge, a round of PADS.length pads: the pad `pad` is lit; when the cube rests on it
+ * (`restsOnPad`) the next one lights; after the last the round is over at `doneAt` (world time, s).
+ */
+export class PadChallenge {
+  /** Index of the lit pad in PADS, in [0, PADS.length] (PADS.length: the round is over). */
+  pad = 0;
+  /** World time the last pad was reached, s, or -1 while the round runs. */
+  doneAt = -1;
+  /** Starts the round again (pad 0). */
+  reset(): void {
+    this.pad = 0;
+    this.doneAt = -1;
+  }
+  /** Whether the round is over. */
+  get done(): boolean {
+    return this.doneAt >= 0;
+  }
+  /**
+   * Checks `body` against the lit pad after a step of `world` and lights the next one when it rests
+   * there. @returns whether a pad was reached by this call.
+   */
+  update(world: PhysicsWorld, body: number): boolean {
+    if (this.done) return false;
+    const spot = PADS[this.pad]!;
+    if (!restsOnPad(world, body, spot[0], spot[1])) return false;
+    this.pad++;
+    if (this.pad === PADS.length) this.doneAt = world.time;
+    return true;
+  }
+}
+
+/**
+ * Flip mode's challenge: count the box's flips (`FlipCounter`) over the first FLIP_TIME seconds of the
+ * world; won when FLIP_GOAL flips come within the time (`wonAt`), lost when the time runs out first.
+ */
+export class FlipChallenge {
+  /** The flips counted. */
+  readonly counter = new FlipCounter();
+  /** World time the goal was reached, s, or -1. */
+  wonAt = -1;
+  private readonly L = new Float64Array(3);
+  private readonly axis = new Float64Array(3);
+  /** Starts again. */
+  reset(): void {
+    this.counter.reset();
+    this.wonAt = -1;
+  }
+  /** Whether the round is over (won, or FLIP_TIME passed). */
+  over(world: PhysicsWorld): boolean {
+    return this.wonAt >= 0 || world.time >= FLIP_TIME;
+  }
+  /** Stars of the round so far: 3 for FLIP_GOAL flips, 2 for FLIP_GOAL - 2, 1 for FLIP_GOAL - 4, else 0. */
+  stars(): number {
+    const n = this.counter.count;
+    return n >= FLIP_GOAL ? 3 : n >= FLIP_GOAL - 2 ? 2 : n >= FLIP_GOAL - 4 ? 1 : 0;
+  }
+  /** Feeds the body's state after a step of `world` (nothing once the round is over). */
+  update(world: PhysicsWorld, body: number): void {
+    if (this.over(world)) return;
+    const L = this.L,
+      a = this.axis,
+      q = world.components.Orientation;
+    spinAngularMomentum(world, body, L);
+    const l = Math.hypot(L[0]!, L[1]!, L[2]!);
+    if (!(l > 0)) return;
+    // The body's y axis in the world frame: (0, 1, 0) rotated by q, the inverse rotation by its conjugate.
+    rotateVectorInverse(-q.x[body]!, -q.y[body]!, -q.z[body]!, q.w[body]!, 0, 1, 0, a);
+    if (this.counter.update((a[0]! * L[0]! + a[1]! * L[1]! + a[2]! * L[2]!) / l) >= FLIP_GOAL) this.wonAt = world.time;
+  }
 }

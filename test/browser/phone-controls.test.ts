@@ -325,6 +325,39 @@ describe('phone controls', () => {
     await g.close();
   });
 
+  it('rotating cube: the pad goal is on screen, and a tap on the cube flicks it away from the finger', async () => {
+    const g = await h.openGame('rotating-cube', PHONE);
+    await g.waitFor(() => document.querySelector('[data-hud="challenge"]')?.textContent?.includes('glowing pad') ?? false, null);
+    // Landed and paused; then the screen point of the cube's top face 0.3 m on its -x side.
+    const at = await g.page.evaluate(() => {
+      type V = { x: number; y: number; project(c: unknown): V };
+      const game = window.game as unknown as {
+        paused: boolean;
+        step(): void;
+        body(): number;
+        world: { components: { Position: Record<'x' | 'y' | 'z', Float64Array> } };
+        app: { camera: { position: { constructor: new (x: number, y: number, z: number) => V } } };
+      };
+      game.paused = true;
+      for (let i = 0; i < 150; i++) game.step();
+      const P = game.world.components.Position,
+        e = game.body();
+      const v = new game.app.camera.position.constructor(P.x[e]! - 0.3, P.y[e]! + 0.5, P.z[e]!).project(game.app.camera);
+      const r = document.querySelector('canvas')!.getBoundingClientRect();
+      return { x: r.left + ((v.x + 1) / 2) * r.width, y: r.top + ((1 - v.y) / 2) * r.height };
+    });
+    const vx0 = await read(g, 'world.components.Velocity.x[window.game.body()]');
+    expect(Math.abs(vx0)).toBeLessThan(0.05);
+    await g.page.touchscreen.tap(at.x, at.y);
+    // Away from the finger: towards +x, at about J / m = 3 N s / 1 kg times cos 27 degrees.
+    await g.waitFor(() => {
+      const game = window.game as unknown as { body(): number; world: { components: { Velocity: { x: Float64Array } } } };
+      return game.world.components.Velocity.x[game.body()]! > 1;
+    }, null);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
   it('wrecking ball: holding Slew turns the jib; Next level shows once the level is cleared', async () => {
     const g = await h.openGame('wrecking-ball', { ...PHONE, query: { shadows: 0 } });
     // ?shadows=0 draws lite (games/wrecking-ball/main.ts Quality): no shadow map, no physically based

@@ -638,6 +638,38 @@ describe('3D games in headless Chromium', () => {
     await g.close();
   });
 
+  it('rotating-cube: the flip challenge is lost left alone and won holding D; the status row says so', async () => {
+    const g = await open('rotating-cube', { mode: 'flip' });
+    type Cube = ThreeGame & { challenge(): { flips: number; flipsWonAt: number } };
+    // 21 s of steps from a fresh world (the round is 20 s), paused so that only the steps count.
+    const round = () =>
+      g.page.evaluate(() => {
+        const game = window.game as unknown as Cube;
+        game.paused = true;
+        game.reset();
+        for (let i = 0; i < 1260; i++) game.step();
+        return game.challenge();
+      });
+    const idle = await round();
+    expect(idle.flipsWonAt).toBe(-1);
+    expect(idle.flips).toBeLessThan(10);
+    await g.waitFor(() => document.querySelector('[data-hud="challenge"]')?.textContent?.includes('Time!') ?? false, null);
+    // Running again, D held: a frame turns the keys held into the torque, which the steps then apply.
+    await g.page.evaluate(() => {
+      (window.game as unknown as Cube).paused = false;
+    });
+    await g.page.keyboard.down('d');
+    await g.frames(3);
+    const held = await round();
+    await g.page.keyboard.up('d');
+    expect(held.flips).toBe(10);
+    expect(held.flipsWonAt).toBeGreaterThan(0);
+    expect(held.flipsWonAt).toBeLessThan(20);
+    await g.waitFor(() => document.querySelector('[data-hud="challenge"]')?.textContent?.includes('10 flips in') ?? false, null);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
   it('earth-moon: pause stops the clock, the time scale sets the simulated time a step', async () => {
     const g = await open('earth-moon', { texture: 256 });
     const day = 86_400;

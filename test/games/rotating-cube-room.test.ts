@@ -5,10 +5,24 @@
  */
 
 import { readFileSync } from 'node:fs';
-import { createPhysicsWorld, setAngularVelocity, setVelocity, step } from '@bitphysics/physics';
+import { addSystem, createPhysicsWorld, setAngularVelocity, setVelocity, step } from '@bitphysics/physics';
 import { describe, expect, it } from 'vitest';
 import { CARD_LINES } from '../../games/gallery-cards';
-import { buildRotatingCube, EDGES, ROOM_HALF, rotatingCubeWorldOptions } from '../../games/rotating-cube/scene';
+import {
+  buildRotatingCube,
+  EDGES,
+  FLIP_GOAL,
+  FLIP_TIME,
+  FlipChallenge,
+  FlipCounter,
+  PAD_HALF,
+  PADS,
+  PadChallenge,
+  padStars,
+  ROOM_HALF,
+  rotatingCubeWorldOptions,
+  torqueCouple,
+} from '../../games/rotating-cube/scene';
 
 describe('rotating-cube room mode', () => {
   it('the cube falls, lands and rests on a face; thrown at a wall it stays in the room', () => {
@@ -53,6 +67,82 @@ describe('rotating-cube room mode', () => {
     expect(maxX).toBeLessThan(ROOM_HALF - half + 0.02);
     expect(maxX).toBeGreaterThan(ROOM_HALF - 0.9);
     expect(V.x[h.body]).toBeLessThan(0.5);
+  });
+});
+
+describe('rotating-cube challenges', () => {
+  it('the pad round: a cube dropped beside the lit pad scores nothing, dropped on it lights the next; five end the round', () => {
+    const world = createPhysicsWorld(rotatingCubeWorldOptions());
+    const h = buildRotatingCube(world);
+    const pads = new PadChallenge();
+    addSystem(world, 'finalize', (w) => {
+      pads.update(w, h.body);
+    });
+    const P = world.components.Position;
+    const drop = (x: number, z: number): void => {
+      P.x[h.body] = x;
+      P.y[h.body] = 0.6;
+      P.z[h.body] = z;
+      setVelocity(world, h.body, [0, 0, 0]);
+      setAngularVelocity(world, h.body, [0, 0, 0]);
+      for (let i = 0; i < 90; i++) step(world);
+    };
+    // The pads are inside the room, clear of the walls by more than the cube's half diagonal (0.71 m).
+    for (const [x, z] of PADS) expect(Math.max(Math.abs(x), Math.abs(z)) + PAD_HALF).toBeLessThan(ROOM_HALF - 0.2);
+    // Beside the first pad (0.3 m past its edge): still pad 0.
+    drop(PADS[0]![0] - PAD_HALF - 0.3, PADS[0]![1]);
+    expect(pads.pad).toBe(0);
+    for (let k = 0; k < PADS.length; k++) {
+      expect(pads.done).toBe(false);
+      drop(PADS[k]![0] + 0.2, PADS[k]![1] - 0.2);
+      expect(pads.pad).toBe(k + 1);
+    }
+    expect(pads.done).toBe(true);
+    expect(pads.doneAt).toBeGreaterThan(0);
+    expect(pads.doneAt).toBeLessThanOrEqual(world.time);
+    // Over: resting on a pad again changes nothing.
+    drop(PADS[0]![0], PADS[0]![1]);
+    expect(pads.pad).toBe(PADS.length);
+    pads.reset();
+    expect([pads.pad, pads.done]).toEqual([0, false]);
+    expect([padStars(30), padStars(45), padStars(60), padStars(200)]).toEqual([3, 3, 2, 1]);
+  });
+
+  it('a flip counts when the cosine crosses from beyond +0.5 to beyond -0.5 or back, not on a wobble about zero', () => {
+    const c = new FlipCounter();
+    for (const v of [0.9, 0.2, -0.3, 0.4, 0.6]) c.update(v);
+    expect(c.count).toBe(0);
+    for (const v of [-0.7, -0.9, 0.1, 0.8, Number.NaN, -0.6]) c.update(v);
+    expect(c.count).toBe(3);
+    c.reset();
+    expect(c.update(-0.9)).toBe(0);
+  });
+
+  it('the flip round: left alone at 6 rad/s the box flips fewer than 10 times in 20 s; a yaw torque along L wins it', () => {
+    const run = (torque: number): FlipChallenge => {
+      const world = createPhysicsWorld(rotatingCubeWorldOptions('flip'));
+      const h = buildRotatingCube(world, { mode: 'flip', spin: 6 });
+      const flips = new FlipChallenge();
+      addSystem(
+        world,
+        'forces',
+        torqueCouple(h.body, () => [0, torque, 0]),
+      );
+      addSystem(world, 'finalize', (w) => flips.update(w, h.body));
+      while (world.time < FLIP_TIME + 1) step(world);
+      expect(flips.over(world)).toBe(true);
+      return flips;
+    };
+    const idle = run(0);
+    expect(idle.wonAt).toBe(-1);
+    expect(idle.counter.count).toBeGreaterThanOrEqual(3); // it does flip by itself (measured 5)
+    expect(idle.counter.count).toBeLessThan(FLIP_GOAL);
+    // The keys' torque (0.5 N m) held about the starting spin axis the whole time.
+    const spun = run(0.5);
+    expect(spun.counter.count).toBe(FLIP_GOAL); // counting stops at the win
+    expect(spun.wonAt).toBeGreaterThan(0);
+    expect(spun.wonAt).toBeLessThan(FLIP_TIME);
+    expect(spun.stars()).toBe(3);
   });
 });
 
