@@ -135,7 +135,11 @@ const WAIT_RATE = 40;
  * few seconds (at a constant rate Venus's 300 days took 30 s where frames come slowly).
  */
 const WAIT_RAMP = 20;
-const WAIT_MAX_GAIN = 8;
+const WAIT_MAX_GAIN = 4;
+/** Days per real second of a tapped Wait, which runs time to the next launch window and stops there. */
+const WINDOW_RATE = 160;
+/** A press of Wait (W or the button) shorter than this, ms, is a tap: time runs to the next launch window. */
+const WAIT_TAP_MS = 250;
 /**
  * Real time forecasting may take a frame, ms (in slices of FORECAST_SLICE steps), or a third of the
  * time between frames where they come slowly (at most 40 ms): a longer forecast goes on over the
@@ -230,17 +234,35 @@ const TICK = 1 / 60;
 const BURN_SLOW_MS = 800;
 const BURN_SLOW = 0.2;
 
+/** The flying probe's distance from the mission's target, AU (Infinity with no flight). */
+function targetDistance(): number {
+  if (!flight) return Number.POSITIVE_INFINITY;
+  const P = shell.world.components.Position;
+  const t = slotOf(handles.bodies[flight.mission.target]),
+    p = slotOf(flight.probe);
+  return Math.hypot(P.x[t]! - P.x[p]!, P.y[t]! - P.y[p]!, P.z[t]! - P.z[p]!);
+}
+
 /**
  * Days per real second now: the aiming rate (WAIT_RATE or 4 times it while Wait is held, ramping up to
- * WAIT_MAX_GAIN times that with the days waited), a flight's
- * rate (3 times it while held, at most 400; BURN_SLOW of it just after a burn), nothing after a flight ends.
+ * WAIT_MAX_GAIN times that with the days waited; nothing once a held wait reached the launch window),
+ * WINDOW_RATE while a tapped Wait runs to the window, a flight's rate (3 times it in the cruise far
+ * from the target, 3 times that while held, at most 400; BURN_SLOW of it just after a burn), nothing
+ * after a flight ends.
  */
 function currentRate(): number {
   if (phase === 'done') return 0;
   if (phase === 'flight') {
-    const rate = waiting ? Math.min(400, 3 * flightDaysPerSecond) : flightDaysPerSecond;
+    // The cruise runs 3 times faster while the probe is far from the target (over 4 rings away and
+    // the forecast's meeting over 40 days ahead), at the flight's own rate for the approach.
+    let cruise = flightDaysPerSecond;
+    if (flight && forecastKey !== '' && forecast.end - flight.elapsed > 40 && targetDistance() > 4 * flight.mission.zone)
+      cruise = Math.min(400, 3 * flightDaysPerSecond);
+    const rate = waiting ? Math.min(400, 3 * cruise) : cruise;
     return performance.now() - lastBurn < BURN_SLOW_MS ? BURN_SLOW * rate : rate;
   }
+  if (!Number.isNaN(windowAt) && !waiting) return WINDOW_RATE;
+  if (waitHeldStopped) return 0;
   if (!waiting) return params.rate;
   const waited = Number.isNaN(waitFrom) ? 0 : Math.max(0, shell.world.time - waitFrom);
   return Math.max(WAIT_RATE, 4 * params.rate) * Math.min(WAIT_MAX_GAIN, 1 + waited / WAIT_RAMP);
@@ -255,11 +277,30 @@ const baseStep = (): number => Number(params.step) / 24;
  * next forecast too), at most MAX_STEPS_PER_TICK; during a flight the probe is checked after every step.
  */
 function stepWorld(world: PhysicsWorld): void {
-  // The wait's ramp counts from the first step with Wait held, while aiming.
-  if (!(waiting && phase === 'aim')) waitFrom = Number.NaN;
-  else if (Number.isNaN(waitFrom)) waitFrom = world.time;
+  // The wait's ramp counts from the first step with Wait held, while aiming; a held wait stops at
+  // the next launch window (windowAt) until Wait is let go.
+  if (!(waiting && phase === 'aim')) {
+    waitFrom = Number.NaN;
+    waitHeldStopped = false;
+  } else if (Number.isNaN(waitFrom)) {
+    waitFrom = world.time;
+    windowAt = world.time + nextWindowDays();
+  }
+  if (phase !== 'aim') windowAt = Number.NaN;
   const dt = flight && phase === 'flight' ? flight.dt : missionTimeStep(mission(), baseStep());
   carry += currentRate() * TICK;
+  if (phase === 'aim' && !Number.isNaN(windowAt)) {
+    carry = Math.min(carry, Math.max(0, windowAt - world.time));
+    // Within a step of the window: stop here (a whole step more would pass it).
+    if (windowAt - world.time < dt * (1 - 1e-9)) {
+      windowAt = Number.NaN;
+      carry = 0;
+      if (waiting) waitHeldStopped = true;
+      atWindow = world.time;
+      sound.chime(988, 0.15);
+      return;
+    }
+  }
   let n = Math.floor(carry / dt + 1e-9);
   if (n > MAX_STEPS_PER_TICK) {
     n = MAX_STEPS_PER_TICK;
@@ -316,6 +357,67 @@ let flightDaysPerSecond = 30;
 let waiting = false;
 /** World time, days, Wait began to be held while aiming (its ramp counts from there); NaN while it is not. */
 let waitFrom = Number.NaN;
+/** World time, days, of the launch window time runs to (a tapped Wait, or a held one stops there); NaN for none. */
+let windowAt = Number.NaN;
+/** Whether a held Wait reached the launch window: time stays there until Wait is let go. */
+let waitHeldStopped = false;
+/** World time, days, a wait last stopped at a launch window (NaN for none): the date line says so. */
+let atWindow = Number.NaN;
+/** performance.now() Wait was last pressed (a short press is a tap: to the next window). */
+let waitPressedAt = -Infinity;
+
+/** Presses Wait (W or the button): time runs while it is held. */
+function pressWait(): void {
+  if (waiting) return;
+  waiting = true;
+  waitPressedAt = performance.now();
+}
+/** Lets Wait go: after a tap (shorter than WAIT_TAP_MS) while aiming, time runs on to the next launch window. */
+function releaseWait(): void {
+  if (!waiting) return;
+  waiting = false;
+  if (phase === 'aim' && performance.now() - waitPressedAt < WAIT_TAP_MS && !waitHeldStopped) waitForWindow();
+}
+/** Runs time (WINDOW_RATE) to the next launch window of the mission's target and stops there. No effect unless aiming. */
+function waitForWindow(): void {
+  if (phase !== 'aim') return;
+  windowAt = shell.world.time + nextWindowDays();
+}
+
+/**
+ * Days from now to the next launch window for the mission's target: when the target leads (or, for
+ * an inner planet, trails) the Earth by the angle a Hohmann transfer needs (the target moves by its
+ * mean motion over the transfer's half orbit), on circular orbits
+ * in the ecliptic plane, each at its mean pace (its orbit's semi-major axis). A window less than 2 days off counts as now: the next one is given. Days > 0.
+ */
+function nextWindowDays(): number {
+  const world = shell.world;
+  const m = mission();
+  const mu = world.laws.gravitationalConstant * world.components.Mass.value[slotOf(handles.bodies.Sun)]!;
+  heliocentricState(world, handles, handles.bodies.Earth, earthHelio);
+  const ex = earthHelio[0]!,
+    ez = earthHelio[2]!;
+  // The sense the planets go round in the x-z plane (+1 where the angle atan2(z, x) grows).
+  const sense = Math.sign(ex * earthHelio[5]! - ez * earthHelio[3]!) || 1;
+  heliocentricState(world, handles, handles.bodies[m.target], state6);
+  // Each orbit's semi-major axis (vis-viva): its mean motion is the planet's average pace (the
+  // distance now gave the Earth's pace in January 2.6 % fast, the window 20 days late).
+  const semiMajor = (st: ArrayLike<number>): number =>
+    1 / (2 / Math.hypot(st[0]!, st[1]!, st[2]!) - (st[3]! ** 2 + st[4]! ** 2 + st[5]! ** 2) / mu);
+  const rE = semiMajor(earthHelio),
+    rT = semiMajor(state6);
+  const lead = sense * (Math.atan2(state6[2]!, state6[0]!) - Math.atan2(ez, ex));
+  const nE = Math.sqrt(mu / rE ** 3),
+    nT = Math.sqrt(mu / rT ** 3);
+  const a = (rE + rT) / 2;
+  const transfer = Math.PI * Math.sqrt(a ** 3 / mu);
+  const need = Math.PI - nT * transfer;
+  const rel = nT - nE;
+  const synodic = (2 * Math.PI) / Math.abs(rel);
+  let days = ((need - lead) / rel) % synodic;
+  if (days < 0) days += synodic;
+  return days < 2 ? days + synodic : days;
+}
 /** The date a mission began, ms (the panel's restart goes back there). */
 let missionStartMs = startMs;
 const STARS_KEY = 'bitphysics.solar-system.stars';
@@ -572,7 +674,7 @@ const game = await startThreeGame({
     { keys: '← →', action: 'turn the launch arrow; in flight, burn in / out', touch: 'bottom ↺ ↻ buttons' },
     { keys: '↑ ↓', action: 'launch speed; in flight, burn faster / slower', touch: '− + buttons' },
     { keys: 'Space', action: 'launch the probe', touch: 'Launch button' },
-    { keys: 'W (hold)', action: 'wait: time runs fast', touch: 'hold the Wait button' },
+    { keys: 'W', action: 'wait: tap for the next launch window; hold to run time', touch: 'Wait button' },
     { keys: 'H', action: 'hint: what to try', touch: 'Hint button' },
     { keys: 'Click', action: 'aim the launch at a point', touch: 'Tap' },
   ],
@@ -623,10 +725,10 @@ const sound = getSound();
 
 // W held: wait (time runs faster).
 window.addEventListener('keydown', (e) => {
-  if ((e.key === 'w' || e.key === 'W') && !e.ctrlKey && !e.metaKey) waiting = true;
+  if ((e.key === 'w' || e.key === 'W') && !e.ctrlKey && !e.metaKey && !e.repeat) pressWait();
 });
 window.addEventListener('keyup', (e) => {
-  if (e.key === 'w' || e.key === 'W') waiting = false;
+  if (e.key === 'w' || e.key === 'W') releaseWait();
 });
 window.addEventListener('blur', () => {
   waiting = false;
@@ -1168,6 +1270,34 @@ const dots = Object.fromEntries(
   }),
 ) as Record<LabelName, { el: HTMLDivElement; size: number }>;
 
+/**
+ * The forecast's two marks named on the map while aiming: the ring where the target will be when the
+ * probe comes closest ("Mars at arrival") and the probe's place then ("probe then"). Without them a
+ * path running through the target's ring of now read as a hit.
+ */
+const forecastTags = (['target-then', 'probe-then'] as const).map((name) => {
+  const el = document.createElement('div');
+  el.dataset.tag = name;
+  el.style.cssText =
+    'position: absolute; white-space: nowrap; padding: 0 4px; border-radius: 3px; background: rgba(8, 10, 16, 0.78); line-height: 16px; font-style: italic; display: none; pointer-events: none';
+  labelLayer.append(el);
+  return el;
+});
+
+/** Shows forecast tag `i` (0 the target then, 1 the probe then) with `text` beside scene point (x, y, z), `below` px under it; hides it when `text` is ''. */
+function placeTag(i: number, text: string, x: number, y: number, z: number, below: number): void {
+  const el = forecastTags[i]!;
+  v.set(x, y, z).project(app.camera);
+  const show = text !== '' && v.z < 1 && Math.abs(v.x) < 1 && Math.abs(v.y) < 1;
+  el.style.display = show ? '' : 'none';
+  if (!show) return;
+  if (el.textContent !== text) el.textContent = text;
+  const sx = ((v.x + 1) / 2) * app.canvas.clientWidth,
+    sy = ((1 - v.y) / 2) * app.canvas.clientHeight;
+  el.style.left = `${Math.round(sx - el.offsetWidth / 2)}px`;
+  el.style.top = `${Math.round(sy + below)}px`;
+}
+
 /** Labels placed this frame: left, top, right, bottom (px), four numbers each. */
 const placed: number[] = [];
 /** Labels the last frame showed. */
@@ -1392,6 +1522,7 @@ function drawLaunch(world: PhysicsWorld): void {
   ghostRing.visible = planned;
   trackDots.visible = false;
   probeThen.visible = false;
+  if (!planned) for (const el of forecastTags) el.style.display = 'none';
   missLine.visible = false;
   if (aiming) {
     heliocentricState(world, handles, handles.bodies.Earth, earthHelio);
@@ -1428,17 +1559,26 @@ function drawLaunch(world: PhysicsWorld): void {
     track.needsUpdate = true;
     (trackDots.material as PointsMaterial).color.setHex(hexColor(m.target));
     trackDots.visible = !sun && !cruising;
-    probeThen.visible = !arrived && !sun;
+    probeThen.visible = !sun && (aiming || !arrived);
     const then = probeThen.geometry.getAttribute('position') as Float32BufferAttribute;
     place(f.probeAt[0]!, f.probeAt[1]!, f.probeAt[2]!, then.array as Float32Array, 0);
     then.needsUpdate = true;
-    (planDots.material as PointsMaterial).color.setHex(arrived ? 0x7ee787 : sun ? 0xffb4a8 : 0x9fd3ff);
+    // While aiming the dots do not say whether it arrives (the player judges); in flight they do.
+    const judged = arrived && !aiming;
+    (planDots.material as PointsMaterial).color.setHex(judged ? 0x7ee787 : sun ? 0xffb4a8 : 0x9fd3ff);
     place(f.targetAt[0]!, f.targetAt[1]!, f.targetAt[2]!, scratch3);
     ghostRing.position.set(scratch3[0]!, scratch3[1]!, scratch3[2]!);
     ghostRing.scale.setScalar(zone);
-    (ghostRing.material as LineBasicMaterial).color.setHex(arrived ? 0x7ee787 : hexColor(m.target));
+    (ghostRing.material as LineBasicMaterial).color.setHex(judged ? 0x7ee787 : hexColor(m.target));
     ghostRing.visible = !sun;
-    if (!arrived && !sun) {
+    // Named while aiming: the ring is where the target will be, the white dot where the probe is then.
+    const ringPx =
+      (zone * app.canvas.clientHeight) /
+      (2 * app.camera.position.distanceTo(ghostRing.position) * Math.tan((app.camera.fov * Math.PI) / 360));
+    placeTag(0, aiming && !sun ? `${m.target} at arrival` : '', scratch3[0]!, scratch3[1]!, scratch3[2]!, ringPx + 2);
+    place(f.probeAt[0]!, f.probeAt[1]!, f.probeAt[2]!, scratch3);
+    placeTag(1, aiming && !sun ? 'probe then' : '', scratch3[0]!, scratch3[1]!, scratch3[2]!, -ringPx - 20);
+    if ((aiming || !arrived) && !sun) {
       missLine.visible = true;
       const attr = missLine.geometry.getAttribute('position') as Float32BufferAttribute;
       const arr = attr.array as Float32Array;
@@ -1517,6 +1657,7 @@ style.textContent = `
 .ss-status .ss-stars { color: #ffd166; letter-spacing: 1px; }
 .ss-status .ss-brief { color: #cfd8e6; font-size: 12px; min-height: 1.4em; }
 .ss-status .ss-line.ok { color: #7ee787; }
+.ss-status .ss-line.judge { color: #cfe3ff; }
 .ss-status .ss-line.bad { color: #ffb4a8; }
 .ss-status .ss-line.edge { color: #ffd479; }
 .ss-status .ss-line.won { color: #7ee787; font-weight: 700; }
@@ -1598,12 +1739,13 @@ function holdRepeat(action: () => void): void {
   again(350);
 }
 const stopRepeat = (): void => window.clearTimeout(repeatTimer);
-/** Whether the hint line shows (the Hint button or H). */
+/** Whether the hint line shows (the Hint button or H; it stays, worked out again as things change). */
 let hinting = false;
 /** Whether the Hint button has been used: until then it pulses on the first mission. */
 let hintUsed = false;
+/** Shows the hint, or works it out again for now if it shows (H, the Hint button). */
 function toggleHint(): void {
-  hinting = !hinting;
+  hinting = true;
   hintUsed = true;
   adviceKey = '';
   updateStatus(true);
@@ -1614,13 +1756,9 @@ const pad = createButtonBar(
     { label: 'Launch', name: 'launch the probe (Space)', onTap: () => launch() },
     {
       label: 'Wait',
-      name: 'wait: time runs fast while held (W)',
-      onPress: () => {
-        waiting = true;
-      },
-      onRelease: () => {
-        waiting = false;
-      },
+      name: 'wait: tap for the next launch window, hold to run time (W)',
+      onPress: () => pressWait(),
+      onRelease: () => releaseWait(),
     },
     { label: 'Abort', name: 'abort the flight: back to the launch', onTap: () => retry() },
     { label: 'Try again', name: 'try again from the launch (Enter)', onTap: () => retry() },
@@ -1701,32 +1839,25 @@ function hint(m: Mission): string {
       adviceKey = forecastKey;
     }
     const a = aimAdvice;
+    const t = m.target;
+    const ahead = `${t} moves while the probe flies: aim where ${t} will be, not where it is.`;
     if (a.kind === 'launch') {
       const s = starsFor(m, aim.speed);
-      const more = s < 3 ? ` For ${starText(3)} it needs ${m.stars3} km/s or less: try a slower launch.` : '';
-      return `This launch arrives: ${named('press Space', 'tap Launch')}.${more}`;
+      const more = s < 3 ? ` ${starText(3)} needs ${m.stars3} km/s or less.` : '';
+      return `Look where the dots end: if the probe is inside the ring of “${t} at arrival”, ${named('press Space', 'tap Launch')}.${more}`;
     }
     if (a.kind === 'change') {
-      const days = `then it arrives in ${Math.round(a.forecast.end)} days`;
       if (a.turn !== 0) {
         const cw = a.turn > 0;
-        return `Turn the arrow ${Math.abs(a.turn)}° ${cw ? 'clockwise' : 'anticlockwise'} (${named(`press ${cw ? '→' : '←'}`, `tap ${cw ? '↻' : '↺'}`)} ${times(a.presses)}): ${days}.`;
+        return `${ahead} Try turning the arrow ${cw ? 'clockwise' : 'anticlockwise'} (${named(cw ? '→' : '←', cw ? '↻' : '↺')}) and watch the probe’s last dot.`;
       }
       const up = a.speed > 0;
-      return `${up ? 'Speed up' : 'Slow down'} by ${Math.abs(a.speed).toFixed(1)} km/s (${named(`press ${up ? '↑' : '↓'}`, `tap ${up ? '+' : '−'}`)} ${times(a.presses)}): ${days}.`;
+      return up
+        ? `A faster launch (${named('↑', '+')}) flies farther ${distanceFromSun(t) > 1 ? 'out' : 'in'} and sooner: watch the probe’s last dot close on the ring.`
+        : `A slower launch (${named('↓', '−')}) costs less and arrives later: watch the probe’s last dot close on the ring.`;
     }
-    if (a.kind === 'wait') {
-      const faster =
-        a.speed > 0
-          ? `, and speed up by ${a.speed.toFixed(1)} km/s (${named('press ↑', 'tap +')} ${times(Math.round(a.speed / SPEED_STEP))})`
-          : '';
-      // Said as the date on screen to wait for, not in seconds: time runs slower than asked where
-      // frames come slowly, so a count of seconds would be false on a slow machine.
-      // Non-breaking hyphens: a phone wrapped the date as "2013-10-" / "07".
-      const until = new Date(handles.epoch + (world.time + a.days) * 86_400_000).toISOString().slice(0, 10).replaceAll('-', '\u2011');
-      return `No small turn or speed change arrives now. Hold Wait (${named('W', 'the Wait button')}) until the date shown reads ${until} (${a.days} days from now) while ${m.target} comes round${faster}; then ask again.`;
-    }
-    return `Nothing near this launch arrives now: hold Wait (${named('W', 'the Wait button')}) and watch the line, or ${named('click', 'tap')} elsewhere to aim another way.`;
+    if (a.kind === 'wait' || a.kind === 'none')
+      return `${ahead} Now it is in the wrong place: ${named('tap W', 'tap Wait')} for the next launch window, when ${t} is the right way ahead, then aim.`;
   }
   if (phase === 'flight' && flight) {
     if (forecastKey !== wantedKey()) return hintText;
@@ -1747,26 +1878,30 @@ function hint(m: Mission): string {
     : `Try again from the launch: ${named('Enter', 'tap Try again')}.`;
 }
 
-/** The verdict of the forecast shown on `m` (the status line's end), and its class. */
+/**
+ * The line's end for the forecast shown on `m`, and its class. While aiming it does not say whether
+ * the launch arrives (the player judges that from the dots, the probe's place at the closest
+ * approach and the target's ring there): it names the stars a launch of this speed earns if it
+ * arrives, and says so when the path cannot reach the target's orbit or falls into the Sun. In
+ * flight it gives the course's verdict (burns are judged by it).
+ */
 function verdict(m: Mission): [string, string] {
   const f = forecast;
   const scheme = f.scheme === 'rk4' ? '' : ` (forecast with rk4; this flight uses ${f.scheme})`;
-  if (f.outcome === 'arrived')
-    return [
-      phase === 'aim'
-        ? `✓ arrives at ${m.target} in ${Math.round(f.end)} days · ${starText(starsFor(m, aim.speed))} · ${missionScore(m, Math.max(aim.speed, 1e-3), Math.max(f.end, 1e-3)).total} points${scheme}`
-        : `✓ arrives on day ${Math.round(f.end)}${scheme}`,
-      'ok',
-    ];
   if (f.outcome === 'sun') return [`✗ falls into the Sun${scheme}`, 'bad'];
   if (phase === 'aim') {
     const rT = distanceFromSun(m.target);
     const outward = rT > distanceFromSun('Earth');
-    if (outward && f.farthest < rT - m.zone)
+    if (outward && f.outcome !== 'arrived' && f.farthest < rT - m.zone)
       return [`✗ goes out only to ${f.farthest.toFixed(2)} AU from the Sun; ${m.target} is at ${rT.toFixed(2)} AU${scheme}`, 'bad'];
-    if (!outward && f.nearest > rT + m.zone)
+    if (!outward && f.outcome !== 'arrived' && f.nearest > rT + m.zone)
       return [`✗ falls in only to ${f.nearest.toFixed(2)} AU from the Sun; ${m.target} is at ${rT.toFixed(2)} AU${scheme}`, 'bad'];
+    return [
+      `reaches ${m.target}’s orbit: is the probe in ${m.target}’s ring at arrival? · ${starText(starsFor(m, aim.speed))} if it arrives${scheme}`,
+      'judge',
+    ];
   }
+  if (f.outcome === 'arrived') return [`✓ arrives on day ${Math.round(f.end)}${scheme}`, 'ok'];
   return [`✗ misses ${m.target}: closest ${f.closest.toFixed(2)} AU (the ring is ${m.zone} AU)${scheme}`, 'bad'];
 }
 
@@ -1842,9 +1977,11 @@ function updateStatus(force = false): void {
   const clock =
     rate === 0
       ? phase === 'aim'
-        ? 'time waits while you aim'
+        ? Math.abs(world.time - atWindow) < 1
+          ? `launch window for ${m.target}: aim ahead of it`
+          : 'time waits while you aim'
         : 'time stopped'
-      : `${rate < 10 ? rate.toFixed(1) : Math.round(rate)} days a second${waiting ? ' (waiting)' : ''}`;
+      : `${rate < 10 ? rate.toFixed(1) : Math.round(rate)} days a second${!Number.isNaN(windowAt) && !waiting ? ' to the next launch window' : waiting ? ' (waiting)' : ''}`;
   const dateLine = `${date} · ${clock} · ${stars}`;
   const shownHint = hinting ? hintText : '';
   const key = `${goal}|${m.brief}|${line}|${cls}|${dateLine}|${phase}|${shownHint}`;
@@ -2144,6 +2281,10 @@ shell.expose({
   },
   /** Sets the aiming rate, simulated days per real second, clamped to [0, 400]. */
   setRate,
+  /** Runs time to the next launch window and stops there (a tap of W or of the Wait button). */
+  waitForWindow,
+  /** A body's heliocentric state now: position (AU) then velocity (AU/day), six numbers. */
+  heliocentric: (name: SolarSystemBody): number[] => [...heliocentricState(shell.world, handles, handles.bodies[name])],
   /** Orbit lines drawn (one a planet). */
   orbitCount: (): number => orbitsDrawn,
   /** Labels the last frame showed (overlapping ones hidden). */
