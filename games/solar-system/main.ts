@@ -1612,9 +1612,35 @@ const ndc = new Vector2();
 const hitPoint = new Vector3();
 const aimAt = [0, 0, 0];
 
-/** Turns the launch towards the display point under the pointer (on the ecliptic). */
-function aimAtPointer(clientX: number, clientY: number): void {
+/** A note the brief's line shows while aiming until performance.now() passes `aimNoteUntil` (ms). */
+let aimNote = '';
+let aimNoteUntil = -Infinity;
+
+/**
+ * Turns the launch towards the display point under the pointer (on the ecliptic). A press on the
+ * target itself (`first`, within 30 px of it) does not point the launch at the planet, a course no
+ * probe flies (it curves round the Sun while the planet moves on): it turns the arrow along the
+ * Earth's path (against it for an inner planet), the way a transfer starts, and says why.
+ */
+function aimAtPointer(clientX: number, clientY: number, first = false): void {
   if (phase !== 'aim') return;
+  const ti = LABELS.indexOf(mission().target);
+  const rect = app.canvas.getBoundingClientRect();
+  if (
+    first &&
+    onScreen[4 * ti + 3] === 1 &&
+    Math.hypot(clientX - rect.left - onScreen[4 * ti]!, clientY - rect.top - onScreen[4 * ti + 1]!) < 30 + onScreen[4 * ti + 2]!
+  ) {
+    const t = mission().target;
+    const outward = distanceFromSun(t) > distanceFromSun('Earth');
+    aim.angle = outward ? 0 : 180;
+    aimChangedAt = performance.now();
+    aimNote = `A probe does not fly straight at ${t}: it curves round the Sun while ${t} moves on. Launched ${outward ? 'along' : 'against'} the Earth’s path; now time it so the probe meets ${t} at arrival.`;
+    aimNoteUntil = performance.now() + 6000;
+    aiming = -1;
+    updateStatus(true);
+    return;
+  }
   const [x, y] = app.toNdc(clientX, clientY);
   ndc.set(x, y);
   raycaster.setFromCamera(ndc, app.camera);
@@ -1638,7 +1664,7 @@ let aiming = -1;
 app.canvas.addEventListener('pointerdown', (e) => {
   if (e.button !== 0 || !e.isPrimary) return;
   aiming = e.pointerId;
-  aimAtPointer(e.clientX, e.clientY);
+  aimAtPointer(e.clientX, e.clientY, true);
 });
 app.canvas.addEventListener('pointermove', (e) => {
   if (e.pointerId === aiming) aimAtPointer(e.clientX, e.clientY);
@@ -1665,6 +1691,13 @@ style.textContent = `
 /* The hint's line is kept (empty) when the hint is off, so pressing Hint does not move the stage. */
 .ss-status .ss-hint { color: #9fd3ff; font-style: italic; min-height: 1.4em; }
 .ss-pad button.ss-hint-button.ss-pulse { animation: ss-pulse 1.2s ease-in-out infinite; }
+.ss-arrival { position: absolute; left: 0; right: 0; top: 38%; text-align: center; font: 700 28px system-ui, sans-serif;
+  color: #ffe066; text-shadow: 0 0 12px rgba(0, 0, 0, 0.9), 0 0 24px rgba(255, 224, 102, 0.5); animation: ss-rise 0.5s ease-out; }
+.ss-arrival .ss-arrival-stars { font-size: 44px; letter-spacing: 6px; }
+.ss-arrival .ss-arrival-stars span { display: inline-block; animation: ss-star-pop 0.45s ease-out backwards; }
+.ss-arrival .ss-arrival-stars span.off { color: #4a5568; }
+@keyframes ss-rise { from { transform: translateY(20px); opacity: 0; } }
+@keyframes ss-star-pop { from { transform: scale(0.1) rotate(-40deg); opacity: 0; } 70% { transform: scale(1.4); } }
 @keyframes ss-pulse { 50% { box-shadow: 0 0 0 4px rgba(159, 211, 255, 0.55); } }
 .ss-pad button { min-width: 48px; }
 .ss-pad button.ss-go { background: #1f7a3a; border-color: #7ee2a0; min-width: 76px; }
@@ -1984,11 +2017,12 @@ function updateStatus(force = false): void {
       : `${rate < 10 ? rate.toFixed(1) : Math.round(rate)} days a second${!Number.isNaN(windowAt) && !waiting ? ' to the next launch window' : waiting ? ' (waiting)' : ''}`;
   const dateLine = `${date} · ${clock} · ${stars}`;
   const shownHint = hinting ? hintText : '';
-  const key = `${goal}|${m.brief}|${line}|${cls}|${dateLine}|${phase}|${shownHint}`;
+  const brief = phase === 'aim' ? (performance.now() < aimNoteUntil ? aimNote : m.brief) : '';
+  const key = `${goal}|${brief}|${line}|${cls}|${dateLine}|${phase}|${shownHint}`;
   if (!force && key === shownStatus) return;
   shownStatus = key;
   goalLine.textContent = goal;
-  briefLine.textContent = phase === 'aim' ? m.brief : '';
+  briefLine.textContent = brief;
   planText.textContent = line;
   planText.className = `ss-line ${cls}`;
   hintLine.textContent = shownHint;
@@ -2010,8 +2044,16 @@ function updateStatus(force = false): void {
 
 /** What the last arrival earned (null after a miss): shown on the result card. */
 let lastResult: { stars: number; score: ReturnType<typeof missionScore>; record: boolean; before: number } | null = null;
-/** Real time between the end of a flight and its card, ms: the arrival's flash shows first. */
+/** Real time between the end of a flight and its card, ms: the arrival's flash and banner show first. */
 const CARD_DELAY_MS = 900;
+/** The same after an arrival, ms: the flash, then the stars earned over the scene. */
+const ARRIVAL_CARD_DELAY_MS = 1800;
+/** The arrival's banner over the scene ("Mars reached!" and the stars, popping in one by one) until the card shows. */
+const arrivalBanner = document.createElement('div');
+arrivalBanner.dataset.hud = 'arrival-banner';
+arrivalBanner.className = 'ss-arrival';
+arrivalBanner.hidden = true;
+labelLayer.append(arrivalBanner);
 const cardStyle = document.createElement('style');
 cardStyle.textContent = `
 .ss-card { position: absolute; left: 50%; top: 50%; transform: translate(-50%, -50%); z-index: 6; width: min(380px, calc(100% - 24px));
@@ -2063,6 +2105,7 @@ function put(parent: HTMLElement, tag: string, cls: string, text = ''): HTMLElem
 /** Hides the result card (a new flight, a retry, another mission, or the ✕ to see the map). */
 function hideCard(): void {
   window.clearTimeout(cardTimer);
+  arrivalBanner.hidden = true;
   card.hidden = true;
 }
 
@@ -2175,9 +2218,25 @@ function showCard(f: Flight): void {
   } else button(named('Try again (Enter)', 'Try again'), 'try again from the launch (Enter)', true, () => retry());
   card.append(buttons);
   const ended = f;
-  cardTimer = window.setTimeout(() => {
-    if (phase === 'done' && flight === ended) card.hidden = false;
-  }, CARD_DELAY_MS);
+  // An arrival gets its moment: the flash at the planet, then the stars one by one over the scene.
+  if (won && lastResult) {
+    arrivalBanner.replaceChildren();
+    put(arrivalBanner, 'div', '', `${m.target} reached!`);
+    const row = put(arrivalBanner, 'div', 'ss-arrival-stars');
+    for (let i = 0; i < 3; i++) {
+      const star = put(row, 'span', i < lastResult.stars ? '' : 'off', i < lastResult.stars ? '★' : '☆');
+      star.style.animationDelay = `${300 + 250 * i}ms`;
+      if (i < lastResult.stars) window.setTimeout(() => sound.chime(880 * 1.26 ** i, 0.25), 300 + 250 * i);
+    }
+    arrivalBanner.hidden = false;
+  }
+  cardTimer = window.setTimeout(
+    () => {
+      arrivalBanner.hidden = true;
+      if (phase === 'done' && flight === ended) card.hidden = false;
+    },
+    won ? ARRIVAL_CARD_DELAY_MS : CARD_DELAY_MS,
+  );
 }
 
 // ---- The engineer's comparison with the ephemeris (folded) ------------------------------------------

@@ -216,8 +216,27 @@ describe('projects', () => {
       setAim(a: number, s: number): void;
       launch(): void;
       finishFlight(): string;
-      mission(): { number: number; target: string; phase: string; plan: { hit: boolean; current: boolean; time: number } };
+      mission(): {
+        number: number;
+        target: string;
+        phase: string;
+        aim: { angle: number };
+        plan: { hit: boolean; current: boolean; time: number };
+      };
     };
+    // A click on Mars itself does not aim the launch at Mars (24 degrees outwards from the Earth, a
+    // course no transfer flies): it turns the arrow along the Earth's path and says why.
+    await g.page.evaluate(() => (window.game as unknown as Flow).setAim(30, 3));
+    await g.press('3');
+    await g.frames(3);
+    const mars = await g.page.evaluate(() => {
+      const m = (window.game as unknown as { markers(): Record<string, Marker> }).markers().Mars!;
+      const stage = document.querySelector('.bp-stage')!.getBoundingClientRect();
+      return { x: stage.left + m.x, y: stage.top + m.y };
+    });
+    await g.page.mouse.click(mars.x, mars.y);
+    expect((await g.page.evaluate(() => (window.game as unknown as Flow).mission())).aim.angle).toBe(0);
+    expect(await g.page.locator('[data-hud="brief"]').textContent()).toMatch(/^A probe does not fly straight at Mars/);
     await g.page.evaluate(() => (window.game as unknown as Flow).setAim(0, 3));
     const aimed = await g.waitFor(() => {
       const m = (window.game as unknown as Flow).mission();
@@ -227,7 +246,14 @@ describe('projects', () => {
     // The forecast is the flight flown ahead: the card's flight days are the forecast's, within a day.
     // (The line promised the score before the launch; it no longer says whether it arrives.)
     await g.page.evaluate(() => (window.game as unknown as Flow).launch());
-    expect(await g.page.evaluate(() => (window.game as unknown as Flow).finishFlight())).toBe('arrived');
+    // The arrival gets its moment before the card: "Mars reached!" and the three stars over the scene.
+    const ended = await g.page.evaluate(() => {
+      const state = (window.game as unknown as Flow).finishFlight();
+      const banner = document.querySelector<HTMLElement>('[data-hud="arrival-banner"]')!;
+      const card = document.querySelector<HTMLElement>('[data-hud="result-card"]')!;
+      return { state, banner: banner.hidden ? null : banner.textContent, card: card.hidden };
+    });
+    expect(ended).toEqual({ state: 'arrived', banner: 'Mars reached!★★★', card: true });
     const card = g.page.locator('[data-hud="result-card"]');
     await card.waitFor({ state: 'visible' });
     expect(await card.locator('h2').textContent()).toBe('Mars reached!');
