@@ -1575,9 +1575,11 @@ function drawLaunch(world: PhysicsWorld): void {
     const ringPx =
       (zone * app.canvas.clientHeight) /
       (2 * app.camera.position.distanceTo(ghostRing.position) * Math.tan((app.camera.fov * Math.PI) / 360));
-    placeTag(0, aiming && !sun ? `${m.target} at arrival` : '', scratch3[0]!, scratch3[1]!, scratch3[2]!, ringPx + 2);
+    // Not while time runs (the forecast drawn lags the moment; the names would jump about).
+    const tagged = aiming && !sun && currentRate() === 0;
+    placeTag(0, tagged ? `${m.target} at arrival` : '', scratch3[0]!, scratch3[1]!, scratch3[2]!, ringPx + 2);
     place(f.probeAt[0]!, f.probeAt[1]!, f.probeAt[2]!, scratch3);
-    placeTag(1, aiming && !sun ? 'probe then' : '', scratch3[0]!, scratch3[1]!, scratch3[2]!, -ringPx - 20);
+    placeTag(1, tagged ? 'probe then' : '', scratch3[0]!, scratch3[1]!, scratch3[2]!, -ringPx - 20);
     if ((aiming || !arrived) && !sun) {
       missLine.visible = true;
       const attr = missLine.geometry.getAttribute('position') as Float32BufferAttribute;
@@ -1691,7 +1693,8 @@ style.textContent = `
 /* The hint's line is kept (empty) when the hint is off, so pressing Hint does not move the stage. */
 .ss-status .ss-hint { color: #9fd3ff; font-style: italic; min-height: 1.4em; }
 .ss-pad button.ss-hint-button.ss-pulse { animation: ss-pulse 1.2s ease-in-out infinite; }
-.ss-arrival { position: absolute; left: 0; right: 0; top: 38%; text-align: center; font: 700 28px system-ui, sans-serif;
+.ss-arrival { position: absolute; z-index: 3; left: 0; right: 0; top: 38%; padding: 10px 0; text-align: center;
+  background: radial-gradient(ellipse at center, rgba(2, 3, 8, 0.75), rgba(2, 3, 8, 0) 70%); font: 700 28px system-ui, sans-serif;
   color: #ffe066; text-shadow: 0 0 12px rgba(0, 0, 0, 0.9), 0 0 24px rgba(255, 224, 102, 0.5); animation: ss-rise 0.5s ease-out; }
 .ss-arrival .ss-arrival-stars { font-size: 44px; letter-spacing: 6px; }
 .ss-arrival .ss-arrival-stars span { display: inline-block; animation: ss-star-pop 0.45s ease-out backwards; }
@@ -1929,10 +1932,7 @@ function verdict(m: Mission): [string, string] {
       return [`✗ goes out only to ${f.farthest.toFixed(2)} AU from the Sun; ${m.target} is at ${rT.toFixed(2)} AU${scheme}`, 'bad'];
     if (!outward && f.outcome !== 'arrived' && f.nearest > rT + m.zone)
       return [`✗ falls in only to ${f.nearest.toFixed(2)} AU from the Sun; ${m.target} is at ${rT.toFixed(2)} AU${scheme}`, 'bad'];
-    return [
-      `reaches ${m.target}’s orbit: is the probe in ${m.target}’s ring at arrival? · ${starText(starsFor(m, aim.speed))} if it arrives${scheme}`,
-      'judge',
-    ];
+    return [`reaches ${m.target}’s orbit · ${starText(starsFor(m, aim.speed))} if it arrives${scheme}`, 'judge'];
   }
   if (f.outcome === 'arrived') return [`✓ arrives on day ${Math.round(f.end)}${scheme}`, 'ok'];
   return [`✗ misses ${m.target}: closest ${f.closest.toFixed(2)} AU (the ring is ${m.zone} AU)${scheme}`, 'bad'];
