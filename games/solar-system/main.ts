@@ -6,15 +6,20 @@
  *
  * The game (./missions.ts): each mission names a planet. The player turns the launch arrow at the
  * Earth and sets the launch speed while time waits; dots show at once where the probe will go and a
- * ghost ring where the planet will be then, and the status line says whether it arrives. That
+ * ghost ring where the planet will be then ("Mars at arrival") with the probe's place then; the
+ * player judges from them whether it arrives (the status line says only whether the path reaches
+ * the planet's orbit, and the stars the speed earns; in flight it gives the course's verdict). That
  * forecast (./forecast.ts) is the flight itself, flown ahead with the world's scheme and the
  * flight's step, so what it says is what the launch does. Launch, and the probe flies in the physics
  * world, pulled by the Sun and every planet, while time speeds up; mid-course burns (the same keys
  * and buttons) change its course, from a small tank of fuel, and the forecast follows each burn.
  * Reaching the ring round the planet wins the mission, with stars for a cheap mission (the launch
  * speed plus the burns; 3 stars want a good moment) and a score (./missions.ts missionScore) shown
- * on a result card with the best so far, every mission's stars and the next mission's brief. Waiting (Wait held: time runs) lets the planets line up. The Hint button
- * (H) says which change, or which burn, arrives and how many presses it takes (./advice.ts).
+ * on a result card with the best so far, every mission's stars and the next mission's brief.
+ * Waiting lets the planets line up: a tap of Wait (W) runs time to the next launch window (the
+ * Hohmann transfer's phase angle), held it runs time until the window. The Hint button (H) says
+ * which way to change the launch and what to watch (./advice.ts finds the change), or in flight
+ * which burn arrives and how many presses it takes.
  *
  * Drawn on a compressed distance scale (./distance-scale.ts), so the eight planets fit on one screen
  * with room between the inner four (D switches to the true scale); orbit lines are each planet's
@@ -26,7 +31,7 @@
  * of the mission's step (./missions.ts missionTimeStep: the chosen step, longer for the outer
  * planets), at most MAX_STEPS_PER_TICK of them (a faster rate then runs slower than asked).
  * Keys: ← → turn the launch, ↑ ↓ its speed (in flight: burns in / out, faster / slower), Space
- * launch, W (held) wait, H hint, Enter next mission or try again, T try again, [ ] slower / faster, D distances,
+ * launch, W wait (tap: to the next launch window; held: time runs, stopping there), H hint, Enter next mission or try again, T try again, [ ] slower / faster, D distances,
  * 1 2 3 views, E sizes, P pause, N single step, R reset (back to the last start: the first date, or
  * the last launch after a Try again).
  * URL: ?mission=1..7, ?rate=days-per-second while aiming (0..400, default 0), ?step=hours (0.25|1|6|24), ?integrator=name,
