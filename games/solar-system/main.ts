@@ -6,15 +6,20 @@
  *
  * The game (./missions.ts): each mission names a planet. The player turns the launch arrow at the
  * Earth and sets the launch speed while time waits; dots show at once where the probe will go and a
- * ghost ring where the planet will be then, and the status line says whether it arrives. That
+ * ghost ring where the planet will be then ("Mars at arrival") with the probe's place then; the
+ * player judges from them whether it arrives (the status line says only whether the path reaches
+ * the planet's orbit, and the stars the speed earns; in flight it gives the course's verdict). That
  * forecast (./forecast.ts) is the flight itself, flown ahead with the world's scheme and the
  * flight's step, so what it says is what the launch does. Launch, and the probe flies in the physics
  * world, pulled by the Sun and every planet, while time speeds up; mid-course burns (the same keys
  * and buttons) change its course, from a small tank of fuel, and the forecast follows each burn.
  * Reaching the ring round the planet wins the mission, with stars for a cheap mission (the launch
  * speed plus the burns; 3 stars want a good moment) and a score (./missions.ts missionScore) shown
- * on a result card with the best so far, every mission's stars and the next mission's brief. Waiting (Wait held: time runs) lets the planets line up. The Hint button
- * (H) says which change, or which burn, arrives and how many presses it takes (./advice.ts).
+ * on a result card with the best so far, every mission's stars and the next mission's brief.
+ * Waiting lets the planets line up: a tap of Wait (W) runs time to the next launch window (the
+ * Hohmann transfer's phase angle), held it runs time until the window. The Hint button (H) says
+ * which way to change the launch and what to watch (./advice.ts finds the change), or in flight
+ * which burn arrives and how many presses it takes.
  *
  * Drawn on a compressed distance scale (./distance-scale.ts), so the eight planets fit on one screen
  * with room between the inner four (D switches to the true scale); orbit lines are each planet's
@@ -26,7 +31,7 @@
  * of the mission's step (./missions.ts missionTimeStep: the chosen step, longer for the outer
  * planets), at most MAX_STEPS_PER_TICK of them (a faster rate then runs slower than asked).
  * Keys: ← → turn the launch, ↑ ↓ its speed (in flight: burns in / out, faster / slower), Space
- * launch, W (held) wait, H hint, Enter next mission or try again, T try again, [ ] slower / faster, D distances,
+ * launch, W wait (tap: to the next launch window; held: time runs, stopping there), H hint, Enter next mission or try again, T try again, [ ] slower / faster, D distances,
  * 1 2 3 views, E sizes, P pause, N single step, R reset (back to the last start: the first date, or
  * the last launch after a Try again).
  * URL: ?mission=1..7, ?rate=days-per-second while aiming (0..400, default 0), ?step=hours (0.25|1|6|24), ?integrator=name,
@@ -135,7 +140,11 @@ const WAIT_RATE = 40;
  * few seconds (at a constant rate Venus's 300 days took 30 s where frames come slowly).
  */
 const WAIT_RAMP = 20;
-const WAIT_MAX_GAIN = 8;
+const WAIT_MAX_GAIN = 4;
+/** Days per real second of a tapped Wait, which runs time to the next launch window and stops there. */
+const WINDOW_RATE = 160;
+/** A press of Wait (W or the button) shorter than this, ms, is a tap: time runs to the next launch window. */
+const WAIT_TAP_MS = 250;
 /**
  * Real time forecasting may take a frame, ms (in slices of FORECAST_SLICE steps), or a third of the
  * time between frames where they come slowly (at most 40 ms): a longer forecast goes on over the
@@ -230,17 +239,35 @@ const TICK = 1 / 60;
 const BURN_SLOW_MS = 800;
 const BURN_SLOW = 0.2;
 
+/** The flying probe's distance from the mission's target, AU (Infinity with no flight). */
+function targetDistance(): number {
+  if (!flight) return Number.POSITIVE_INFINITY;
+  const P = shell.world.components.Position;
+  const t = slotOf(handles.bodies[flight.mission.target]),
+    p = slotOf(flight.probe);
+  return Math.hypot(P.x[t]! - P.x[p]!, P.y[t]! - P.y[p]!, P.z[t]! - P.z[p]!);
+}
+
 /**
  * Days per real second now: the aiming rate (WAIT_RATE or 4 times it while Wait is held, ramping up to
- * WAIT_MAX_GAIN times that with the days waited), a flight's
- * rate (3 times it while held, at most 400; BURN_SLOW of it just after a burn), nothing after a flight ends.
+ * WAIT_MAX_GAIN times that with the days waited; nothing once a held wait reached the launch window),
+ * WINDOW_RATE while a tapped Wait runs to the window, a flight's rate (3 times it in the cruise far
+ * from the target, 3 times that while held, at most 400; BURN_SLOW of it just after a burn), nothing
+ * after a flight ends.
  */
 function currentRate(): number {
   if (phase === 'done') return 0;
   if (phase === 'flight') {
-    const rate = waiting ? Math.min(400, 3 * flightDaysPerSecond) : flightDaysPerSecond;
+    // The cruise runs 3 times faster while the probe is far from the target (over 4 rings away and
+    // the forecast's meeting over 40 days ahead), at the flight's own rate for the approach.
+    let cruise = flightDaysPerSecond;
+    if (flight && forecastKey !== '' && forecast.end - flight.elapsed > 40 && targetDistance() > 4 * flight.mission.zone)
+      cruise = Math.min(400, 3 * flightDaysPerSecond);
+    const rate = waiting ? Math.min(400, 3 * cruise) : cruise;
     return performance.now() - lastBurn < BURN_SLOW_MS ? BURN_SLOW * rate : rate;
   }
+  if (!Number.isNaN(windowAt) && !waiting) return WINDOW_RATE;
+  if (waitHeldStopped) return 0;
   if (!waiting) return params.rate;
   const waited = Number.isNaN(waitFrom) ? 0 : Math.max(0, shell.world.time - waitFrom);
   return Math.max(WAIT_RATE, 4 * params.rate) * Math.min(WAIT_MAX_GAIN, 1 + waited / WAIT_RAMP);
@@ -255,11 +282,30 @@ const baseStep = (): number => Number(params.step) / 24;
  * next forecast too), at most MAX_STEPS_PER_TICK; during a flight the probe is checked after every step.
  */
 function stepWorld(world: PhysicsWorld): void {
-  // The wait's ramp counts from the first step with Wait held, while aiming.
-  if (!(waiting && phase === 'aim')) waitFrom = Number.NaN;
-  else if (Number.isNaN(waitFrom)) waitFrom = world.time;
+  // The wait's ramp counts from the first step with Wait held, while aiming; a held wait stops at
+  // the next launch window (windowAt) until Wait is let go.
+  if (!(waiting && phase === 'aim')) {
+    waitFrom = Number.NaN;
+    waitHeldStopped = false;
+  } else if (Number.isNaN(waitFrom)) {
+    waitFrom = world.time;
+    windowAt = world.time + nextWindowDays();
+  }
+  if (phase !== 'aim') windowAt = Number.NaN;
   const dt = flight && phase === 'flight' ? flight.dt : missionTimeStep(mission(), baseStep());
   carry += currentRate() * TICK;
+  if (phase === 'aim' && !Number.isNaN(windowAt)) {
+    carry = Math.min(carry, Math.max(0, windowAt - world.time));
+    // Within a step of the window: stop here (a whole step more would pass it).
+    if (windowAt - world.time < dt * (1 - 1e-9)) {
+      windowAt = Number.NaN;
+      carry = 0;
+      if (waiting) waitHeldStopped = true;
+      atWindow = world.time;
+      sound.chime(988, 0.15);
+      return;
+    }
+  }
   let n = Math.floor(carry / dt + 1e-9);
   if (n > MAX_STEPS_PER_TICK) {
     n = MAX_STEPS_PER_TICK;
@@ -316,6 +362,67 @@ let flightDaysPerSecond = 30;
 let waiting = false;
 /** World time, days, Wait began to be held while aiming (its ramp counts from there); NaN while it is not. */
 let waitFrom = Number.NaN;
+/** World time, days, of the launch window time runs to (a tapped Wait, or a held one stops there); NaN for none. */
+let windowAt = Number.NaN;
+/** Whether a held Wait reached the launch window: time stays there until Wait is let go. */
+let waitHeldStopped = false;
+/** World time, days, a wait last stopped at a launch window (NaN for none): the date line says so. */
+let atWindow = Number.NaN;
+/** performance.now() Wait was last pressed (a short press is a tap: to the next window). */
+let waitPressedAt = -Infinity;
+
+/** Presses Wait (W or the button): time runs while it is held. */
+function pressWait(): void {
+  if (waiting) return;
+  waiting = true;
+  waitPressedAt = performance.now();
+}
+/** Lets Wait go: after a tap (shorter than WAIT_TAP_MS) while aiming, time runs on to the next launch window. */
+function releaseWait(): void {
+  if (!waiting) return;
+  waiting = false;
+  if (phase === 'aim' && performance.now() - waitPressedAt < WAIT_TAP_MS && !waitHeldStopped) waitForWindow();
+}
+/** Runs time (WINDOW_RATE) to the next launch window of the mission's target and stops there. No effect unless aiming. */
+function waitForWindow(): void {
+  if (phase !== 'aim') return;
+  windowAt = shell.world.time + nextWindowDays();
+}
+
+/**
+ * Days from now to the next launch window for the mission's target: when the target leads (or, for
+ * an inner planet, trails) the Earth by the angle a Hohmann transfer needs (the target moves by its
+ * mean motion over the transfer's half orbit), on circular orbits
+ * in the ecliptic plane, each at its mean pace (its orbit's semi-major axis). A window less than 2 days off counts as now: the next one is given. Days > 0.
+ */
+function nextWindowDays(): number {
+  const world = shell.world;
+  const m = mission();
+  const mu = world.laws.gravitationalConstant * world.components.Mass.value[slotOf(handles.bodies.Sun)]!;
+  heliocentricState(world, handles, handles.bodies.Earth, earthHelio);
+  const ex = earthHelio[0]!,
+    ez = earthHelio[2]!;
+  // The sense the planets go round in the x-z plane (+1 where the angle atan2(z, x) grows).
+  const sense = Math.sign(ex * earthHelio[5]! - ez * earthHelio[3]!) || 1;
+  heliocentricState(world, handles, handles.bodies[m.target], state6);
+  // Each orbit's semi-major axis (vis-viva): its mean motion is the planet's average pace (the
+  // distance now gave the Earth's pace in January 2.6 % fast, the window 20 days late).
+  const semiMajor = (st: ArrayLike<number>): number =>
+    1 / (2 / Math.hypot(st[0]!, st[1]!, st[2]!) - (st[3]! ** 2 + st[4]! ** 2 + st[5]! ** 2) / mu);
+  const rE = semiMajor(earthHelio),
+    rT = semiMajor(state6);
+  const lead = sense * (Math.atan2(state6[2]!, state6[0]!) - Math.atan2(ez, ex));
+  const nE = Math.sqrt(mu / rE ** 3),
+    nT = Math.sqrt(mu / rT ** 3);
+  const a = (rE + rT) / 2;
+  const transfer = Math.PI * Math.sqrt(a ** 3 / mu);
+  const need = Math.PI - nT * transfer;
+  const rel = nT - nE;
+  const synodic = (2 * Math.PI) / Math.abs(rel);
+  let days = ((need - lead) / rel) % synodic;
+  if (days < 0) days += synodic;
+  return days < 2 ? days + synodic : days;
+}
 /** The date a mission began, ms (the panel's restart goes back there). */
 let missionStartMs = startMs;
 const STARS_KEY = 'bitphysics.solar-system.stars';
@@ -572,7 +679,7 @@ const game = await startThreeGame({
     { keys: '← →', action: 'turn the launch arrow; in flight, burn in / out', touch: 'bottom ↺ ↻ buttons' },
     { keys: '↑ ↓', action: 'launch speed; in flight, burn faster / slower', touch: '− + buttons' },
     { keys: 'Space', action: 'launch the probe', touch: 'Launch button' },
-    { keys: 'W (hold)', action: 'wait: time runs fast', touch: 'hold the Wait button' },
+    { keys: 'W', action: 'wait: tap for the next launch window; hold to run time', touch: 'Wait button' },
     { keys: 'H', action: 'hint: what to try', touch: 'Hint button' },
     { keys: 'Click', action: 'aim the launch at a point', touch: 'Tap' },
   ],
@@ -623,10 +730,10 @@ const sound = getSound();
 
 // W held: wait (time runs faster).
 window.addEventListener('keydown', (e) => {
-  if ((e.key === 'w' || e.key === 'W') && !e.ctrlKey && !e.metaKey) waiting = true;
+  if ((e.key === 'w' || e.key === 'W') && !e.ctrlKey && !e.metaKey && !e.repeat) pressWait();
 });
 window.addEventListener('keyup', (e) => {
-  if (e.key === 'w' || e.key === 'W') waiting = false;
+  if (e.key === 'w' || e.key === 'W') releaseWait();
 });
 window.addEventListener('blur', () => {
   waiting = false;
@@ -1168,6 +1275,34 @@ const dots = Object.fromEntries(
   }),
 ) as Record<LabelName, { el: HTMLDivElement; size: number }>;
 
+/**
+ * The forecast's two marks named on the map while aiming: the ring where the target will be when the
+ * probe comes closest ("Mars at arrival") and the probe's place then ("probe then"). Without them a
+ * path running through the target's ring of now read as a hit.
+ */
+const forecastTags = (['target-then', 'probe-then'] as const).map((name) => {
+  const el = document.createElement('div');
+  el.dataset.tag = name;
+  el.style.cssText =
+    'position: absolute; white-space: nowrap; padding: 0 4px; border-radius: 3px; background: rgba(8, 10, 16, 0.78); line-height: 16px; font-style: italic; display: none; pointer-events: none';
+  labelLayer.append(el);
+  return el;
+});
+
+/** Shows forecast tag `i` (0 the target then, 1 the probe then) with `text` beside scene point (x, y, z), `below` px under it; hides it when `text` is ''. */
+function placeTag(i: number, text: string, x: number, y: number, z: number, below: number): void {
+  const el = forecastTags[i]!;
+  v.set(x, y, z).project(app.camera);
+  const show = text !== '' && v.z < 1 && Math.abs(v.x) < 1 && Math.abs(v.y) < 1;
+  el.style.display = show ? '' : 'none';
+  if (!show) return;
+  if (el.textContent !== text) el.textContent = text;
+  const sx = ((v.x + 1) / 2) * app.canvas.clientWidth,
+    sy = ((1 - v.y) / 2) * app.canvas.clientHeight;
+  el.style.left = `${Math.round(sx - el.offsetWidth / 2)}px`;
+  el.style.top = `${Math.round(sy + below)}px`;
+}
+
 /** Labels placed this frame: left, top, right, bottom (px), four numbers each. */
 const placed: number[] = [];
 /** Labels the last frame showed. */
@@ -1392,6 +1527,7 @@ function drawLaunch(world: PhysicsWorld): void {
   ghostRing.visible = planned;
   trackDots.visible = false;
   probeThen.visible = false;
+  if (!planned) for (const el of forecastTags) el.style.display = 'none';
   missLine.visible = false;
   if (aiming) {
     heliocentricState(world, handles, handles.bodies.Earth, earthHelio);
@@ -1428,17 +1564,28 @@ function drawLaunch(world: PhysicsWorld): void {
     track.needsUpdate = true;
     (trackDots.material as PointsMaterial).color.setHex(hexColor(m.target));
     trackDots.visible = !sun && !cruising;
-    probeThen.visible = !arrived && !sun;
+    probeThen.visible = !sun && (aiming || !arrived);
     const then = probeThen.geometry.getAttribute('position') as Float32BufferAttribute;
     place(f.probeAt[0]!, f.probeAt[1]!, f.probeAt[2]!, then.array as Float32Array, 0);
     then.needsUpdate = true;
-    (planDots.material as PointsMaterial).color.setHex(arrived ? 0x7ee787 : sun ? 0xffb4a8 : 0x9fd3ff);
+    // While aiming the dots do not say whether it arrives (the player judges); in flight they do.
+    const judged = arrived && !aiming;
+    (planDots.material as PointsMaterial).color.setHex(judged ? 0x7ee787 : sun ? 0xffb4a8 : 0x9fd3ff);
     place(f.targetAt[0]!, f.targetAt[1]!, f.targetAt[2]!, scratch3);
     ghostRing.position.set(scratch3[0]!, scratch3[1]!, scratch3[2]!);
     ghostRing.scale.setScalar(zone);
-    (ghostRing.material as LineBasicMaterial).color.setHex(arrived ? 0x7ee787 : hexColor(m.target));
+    (ghostRing.material as LineBasicMaterial).color.setHex(judged ? 0x7ee787 : hexColor(m.target));
     ghostRing.visible = !sun;
-    if (!arrived && !sun) {
+    // Named while aiming: the ring is where the target will be, the white dot where the probe is then.
+    const ringPx =
+      (zone * app.canvas.clientHeight) /
+      (2 * app.camera.position.distanceTo(ghostRing.position) * Math.tan((app.camera.fov * Math.PI) / 360));
+    // Not while time runs (the forecast drawn lags the moment; the names would jump about).
+    const tagged = aiming && !sun && currentRate() === 0;
+    placeTag(0, tagged ? `${m.target} at arrival` : '', scratch3[0]!, scratch3[1]!, scratch3[2]!, ringPx + 2);
+    place(f.probeAt[0]!, f.probeAt[1]!, f.probeAt[2]!, scratch3);
+    placeTag(1, tagged ? 'probe then' : '', scratch3[0]!, scratch3[1]!, scratch3[2]!, -ringPx - 20);
+    if ((aiming || !arrived) && !sun) {
       missLine.visible = true;
       const attr = missLine.geometry.getAttribute('position') as Float32BufferAttribute;
       const arr = attr.array as Float32Array;
@@ -1472,9 +1619,35 @@ const ndc = new Vector2();
 const hitPoint = new Vector3();
 const aimAt = [0, 0, 0];
 
-/** Turns the launch towards the display point under the pointer (on the ecliptic). */
-function aimAtPointer(clientX: number, clientY: number): void {
+/** A note the brief's line shows while aiming until performance.now() passes `aimNoteUntil` (ms). */
+let aimNote = '';
+let aimNoteUntil = -Infinity;
+
+/**
+ * Turns the launch towards the display point under the pointer (on the ecliptic). A press on the
+ * target itself (`first`, within 30 px of it) does not point the launch at the planet, a course no
+ * probe flies (it curves round the Sun while the planet moves on): it turns the arrow along the
+ * Earth's path (against it for an inner planet), the way a transfer starts, and says why.
+ */
+function aimAtPointer(clientX: number, clientY: number, first = false): void {
   if (phase !== 'aim') return;
+  const ti = LABELS.indexOf(mission().target);
+  const rect = app.canvas.getBoundingClientRect();
+  if (
+    first &&
+    onScreen[4 * ti + 3] === 1 &&
+    Math.hypot(clientX - rect.left - onScreen[4 * ti]!, clientY - rect.top - onScreen[4 * ti + 1]!) < 30 + onScreen[4 * ti + 2]!
+  ) {
+    const t = mission().target;
+    const outward = distanceFromSun(t) > distanceFromSun('Earth');
+    aim.angle = outward ? 0 : 180;
+    aimChangedAt = performance.now();
+    aimNote = `A probe does not fly straight at ${t}: it curves round the Sun while ${t} moves on. Launched ${outward ? 'along' : 'against'} the Earth’s path; now time it so the probe meets ${t} at arrival.`;
+    aimNoteUntil = performance.now() + 6000;
+    aiming = -1;
+    updateStatus(true);
+    return;
+  }
   const [x, y] = app.toNdc(clientX, clientY);
   ndc.set(x, y);
   raycaster.setFromCamera(ndc, app.camera);
@@ -1498,7 +1671,7 @@ let aiming = -1;
 app.canvas.addEventListener('pointerdown', (e) => {
   if (e.button !== 0 || !e.isPrimary) return;
   aiming = e.pointerId;
-  aimAtPointer(e.clientX, e.clientY);
+  aimAtPointer(e.clientX, e.clientY, true);
 });
 app.canvas.addEventListener('pointermove', (e) => {
   if (e.pointerId === aiming) aimAtPointer(e.clientX, e.clientY);
@@ -1517,6 +1690,7 @@ style.textContent = `
 .ss-status .ss-stars { color: #ffd166; letter-spacing: 1px; }
 .ss-status .ss-brief { color: #cfd8e6; font-size: 12px; min-height: 1.4em; }
 .ss-status .ss-line.ok { color: #7ee787; }
+.ss-status .ss-line.judge { color: #cfe3ff; }
 .ss-status .ss-line.bad { color: #ffb4a8; }
 .ss-status .ss-line.edge { color: #ffd479; }
 .ss-status .ss-line.won { color: #7ee787; font-weight: 700; }
@@ -1524,6 +1698,14 @@ style.textContent = `
 /* The hint's line is kept (empty) when the hint is off, so pressing Hint does not move the stage. */
 .ss-status .ss-hint { color: #9fd3ff; font-style: italic; min-height: 1.4em; }
 .ss-pad button.ss-hint-button.ss-pulse { animation: ss-pulse 1.2s ease-in-out infinite; }
+.ss-arrival { position: absolute; z-index: 3; left: 0; right: 0; top: 38%; padding: 10px 0; text-align: center;
+  background: radial-gradient(ellipse at center, rgba(2, 3, 8, 0.75), rgba(2, 3, 8, 0) 70%); font: 700 28px system-ui, sans-serif;
+  color: #ffe066; text-shadow: 0 0 12px rgba(0, 0, 0, 0.9), 0 0 24px rgba(255, 224, 102, 0.5); animation: ss-rise 0.5s ease-out; }
+.ss-arrival .ss-arrival-stars { font-size: 44px; letter-spacing: 6px; }
+.ss-arrival .ss-arrival-stars span { display: inline-block; animation: ss-star-pop 0.45s ease-out backwards; }
+.ss-arrival .ss-arrival-stars span.off { color: #4a5568; }
+@keyframes ss-rise { from { transform: translateY(20px); opacity: 0; } }
+@keyframes ss-star-pop { from { transform: scale(0.1) rotate(-40deg); opacity: 0; } 70% { transform: scale(1.4); } }
 @keyframes ss-pulse { 50% { box-shadow: 0 0 0 4px rgba(159, 211, 255, 0.55); } }
 .ss-pad button { min-width: 48px; }
 .ss-pad button.ss-go { background: #1f7a3a; border-color: #7ee2a0; min-width: 76px; }
@@ -1598,12 +1780,13 @@ function holdRepeat(action: () => void): void {
   again(350);
 }
 const stopRepeat = (): void => window.clearTimeout(repeatTimer);
-/** Whether the hint line shows (the Hint button or H). */
+/** Whether the hint line shows (the Hint button or H; it stays, worked out again as things change). */
 let hinting = false;
 /** Whether the Hint button has been used: until then it pulses on the first mission. */
 let hintUsed = false;
+/** Shows the hint, or works it out again for now if it shows (H, the Hint button). */
 function toggleHint(): void {
-  hinting = !hinting;
+  hinting = true;
   hintUsed = true;
   adviceKey = '';
   updateStatus(true);
@@ -1614,13 +1797,9 @@ const pad = createButtonBar(
     { label: 'Launch', name: 'launch the probe (Space)', onTap: () => launch() },
     {
       label: 'Wait',
-      name: 'wait: time runs fast while held (W)',
-      onPress: () => {
-        waiting = true;
-      },
-      onRelease: () => {
-        waiting = false;
-      },
+      name: 'wait: tap for the next launch window, hold to run time (W)',
+      onPress: () => pressWait(),
+      onRelease: () => releaseWait(),
     },
     { label: 'Abort', name: 'abort the flight: back to the launch', onTap: () => retry() },
     { label: 'Try again', name: 'try again from the launch (Enter)', onTap: () => retry() },
@@ -1701,32 +1880,25 @@ function hint(m: Mission): string {
       adviceKey = forecastKey;
     }
     const a = aimAdvice;
+    const t = m.target;
+    const ahead = `${t} moves while the probe flies: aim where ${t} will be, not where it is.`;
     if (a.kind === 'launch') {
       const s = starsFor(m, aim.speed);
-      const more = s < 3 ? ` For ${starText(3)} it needs ${m.stars3} km/s or less: try a slower launch.` : '';
-      return `This launch arrives: ${named('press Space', 'tap Launch')}.${more}`;
+      const more = s < 3 ? ` ${starText(3)} needs ${m.stars3} km/s or less.` : '';
+      return `Look where the dots end: if the probe is inside the ring of “${t} at arrival”, ${named('press Space', 'tap Launch')}.${more}`;
     }
     if (a.kind === 'change') {
-      const days = `then it arrives in ${Math.round(a.forecast.end)} days`;
       if (a.turn !== 0) {
         const cw = a.turn > 0;
-        return `Turn the arrow ${Math.abs(a.turn)}° ${cw ? 'clockwise' : 'anticlockwise'} (${named(`press ${cw ? '→' : '←'}`, `tap ${cw ? '↻' : '↺'}`)} ${times(a.presses)}): ${days}.`;
+        return `${ahead} Try turning the arrow ${cw ? 'clockwise' : 'anticlockwise'} (${named(cw ? '→' : '←', cw ? '↻' : '↺')}) and watch the probe’s last dot.`;
       }
       const up = a.speed > 0;
-      return `${up ? 'Speed up' : 'Slow down'} by ${Math.abs(a.speed).toFixed(1)} km/s (${named(`press ${up ? '↑' : '↓'}`, `tap ${up ? '+' : '−'}`)} ${times(a.presses)}): ${days}.`;
+      return up
+        ? `A faster launch (${named('↑', '+')}) flies farther ${distanceFromSun(t) > 1 ? 'out' : 'in'} and sooner: watch the probe’s last dot close on the ring.`
+        : `A slower launch (${named('↓', '−')}) costs less and arrives later: watch the probe’s last dot close on the ring.`;
     }
-    if (a.kind === 'wait') {
-      const faster =
-        a.speed > 0
-          ? `, and speed up by ${a.speed.toFixed(1)} km/s (${named('press ↑', 'tap +')} ${times(Math.round(a.speed / SPEED_STEP))})`
-          : '';
-      // Said as the date on screen to wait for, not in seconds: time runs slower than asked where
-      // frames come slowly, so a count of seconds would be false on a slow machine.
-      // Non-breaking hyphens: a phone wrapped the date as "2013-10-" / "07".
-      const until = new Date(handles.epoch + (world.time + a.days) * 86_400_000).toISOString().slice(0, 10).replaceAll('-', '\u2011');
-      return `No small turn or speed change arrives now. Hold Wait (${named('W', 'the Wait button')}) until the date shown reads ${until} (${a.days} days from now) while ${m.target} comes round${faster}; then ask again.`;
-    }
-    return `Nothing near this launch arrives now: hold Wait (${named('W', 'the Wait button')}) and watch the line, or ${named('click', 'tap')} elsewhere to aim another way.`;
+    if (a.kind === 'wait' || a.kind === 'none')
+      return `${ahead} Now it is in the wrong place: ${named('tap W', 'tap Wait')} for the next launch window, when ${t} is the right way ahead, then aim.`;
   }
   if (phase === 'flight' && flight) {
     if (forecastKey !== wantedKey()) return hintText;
@@ -1747,26 +1919,27 @@ function hint(m: Mission): string {
     : `Try again from the launch: ${named('Enter', 'tap Try again')}.`;
 }
 
-/** The verdict of the forecast shown on `m` (the status line's end), and its class. */
+/**
+ * The line's end for the forecast shown on `m`, and its class. While aiming it does not say whether
+ * the launch arrives (the player judges that from the dots, the probe's place at the closest
+ * approach and the target's ring there): it names the stars a launch of this speed earns if it
+ * arrives, and says so when the path cannot reach the target's orbit or falls into the Sun. In
+ * flight it gives the course's verdict (burns are judged by it).
+ */
 function verdict(m: Mission): [string, string] {
   const f = forecast;
   const scheme = f.scheme === 'rk4' ? '' : ` (forecast with rk4; this flight uses ${f.scheme})`;
-  if (f.outcome === 'arrived')
-    return [
-      phase === 'aim'
-        ? `✓ arrives at ${m.target} in ${Math.round(f.end)} days · ${starText(starsFor(m, aim.speed))} · ${missionScore(m, Math.max(aim.speed, 1e-3), Math.max(f.end, 1e-3)).total} points${scheme}`
-        : `✓ arrives on day ${Math.round(f.end)}${scheme}`,
-      'ok',
-    ];
   if (f.outcome === 'sun') return [`✗ falls into the Sun${scheme}`, 'bad'];
   if (phase === 'aim') {
     const rT = distanceFromSun(m.target);
     const outward = rT > distanceFromSun('Earth');
-    if (outward && f.farthest < rT - m.zone)
+    if (outward && f.outcome !== 'arrived' && f.farthest < rT - m.zone)
       return [`✗ goes out only to ${f.farthest.toFixed(2)} AU from the Sun; ${m.target} is at ${rT.toFixed(2)} AU${scheme}`, 'bad'];
-    if (!outward && f.nearest > rT + m.zone)
+    if (!outward && f.outcome !== 'arrived' && f.nearest > rT + m.zone)
       return [`✗ falls in only to ${f.nearest.toFixed(2)} AU from the Sun; ${m.target} is at ${rT.toFixed(2)} AU${scheme}`, 'bad'];
+    return [`reaches ${m.target}’s orbit · ${starText(starsFor(m, aim.speed))} if it arrives${scheme}`, 'judge'];
   }
+  if (f.outcome === 'arrived') return [`✓ arrives on day ${Math.round(f.end)}${scheme}`, 'ok'];
   return [`✗ misses ${m.target}: closest ${f.closest.toFixed(2)} AU (the ring is ${m.zone} AU)${scheme}`, 'bad'];
 }
 
@@ -1842,16 +2015,19 @@ function updateStatus(force = false): void {
   const clock =
     rate === 0
       ? phase === 'aim'
-        ? 'time waits while you aim'
+        ? Math.abs(world.time - atWindow) < 1
+          ? `launch window for ${m.target}: aim ahead of it`
+          : 'time waits while you aim'
         : 'time stopped'
-      : `${rate < 10 ? rate.toFixed(1) : Math.round(rate)} days a second${waiting ? ' (waiting)' : ''}`;
+      : `${rate < 10 ? rate.toFixed(1) : Math.round(rate)} days a second${!Number.isNaN(windowAt) && !waiting ? ' to the next launch window' : waiting ? ' (waiting)' : ''}`;
   const dateLine = `${date} · ${clock} · ${stars}`;
   const shownHint = hinting ? hintText : '';
-  const key = `${goal}|${m.brief}|${line}|${cls}|${dateLine}|${phase}|${shownHint}`;
+  const brief = phase === 'aim' ? (performance.now() < aimNoteUntil ? aimNote : m.brief) : '';
+  const key = `${goal}|${brief}|${line}|${cls}|${dateLine}|${phase}|${shownHint}`;
   if (!force && key === shownStatus) return;
   shownStatus = key;
   goalLine.textContent = goal;
-  briefLine.textContent = phase === 'aim' ? m.brief : '';
+  briefLine.textContent = brief;
   planText.textContent = line;
   planText.className = `ss-line ${cls}`;
   hintLine.textContent = shownHint;
@@ -1873,8 +2049,16 @@ function updateStatus(force = false): void {
 
 /** What the last arrival earned (null after a miss): shown on the result card. */
 let lastResult: { stars: number; score: ReturnType<typeof missionScore>; record: boolean; before: number } | null = null;
-/** Real time between the end of a flight and its card, ms: the arrival's flash shows first. */
+/** Real time between the end of a flight and its card, ms: the arrival's flash and banner show first. */
 const CARD_DELAY_MS = 900;
+/** The same after an arrival, ms: the flash, then the stars earned over the scene. */
+const ARRIVAL_CARD_DELAY_MS = 1800;
+/** The arrival's banner over the scene ("Mars reached!" and the stars, popping in one by one) until the card shows. */
+const arrivalBanner = document.createElement('div');
+arrivalBanner.dataset.hud = 'arrival-banner';
+arrivalBanner.className = 'ss-arrival';
+arrivalBanner.hidden = true;
+labelLayer.append(arrivalBanner);
 const cardStyle = document.createElement('style');
 cardStyle.textContent = `
 .ss-card { position: absolute; left: 50%; top: 50%; transform: translate(-50%, -50%); z-index: 6; width: min(380px, calc(100% - 24px));
@@ -1926,6 +2110,7 @@ function put(parent: HTMLElement, tag: string, cls: string, text = ''): HTMLElem
 /** Hides the result card (a new flight, a retry, another mission, or the ✕ to see the map). */
 function hideCard(): void {
   window.clearTimeout(cardTimer);
+  arrivalBanner.hidden = true;
   card.hidden = true;
 }
 
@@ -2038,9 +2223,25 @@ function showCard(f: Flight): void {
   } else button(named('Try again (Enter)', 'Try again'), 'try again from the launch (Enter)', true, () => retry());
   card.append(buttons);
   const ended = f;
-  cardTimer = window.setTimeout(() => {
-    if (phase === 'done' && flight === ended) card.hidden = false;
-  }, CARD_DELAY_MS);
+  // An arrival gets its moment: the flash at the planet, then the stars one by one over the scene.
+  if (won && lastResult) {
+    arrivalBanner.replaceChildren();
+    put(arrivalBanner, 'div', '', `${m.target} reached!`);
+    const row = put(arrivalBanner, 'div', 'ss-arrival-stars');
+    for (let i = 0; i < 3; i++) {
+      const star = put(row, 'span', i < lastResult.stars ? '' : 'off', i < lastResult.stars ? '★' : '☆');
+      star.style.animationDelay = `${300 + 250 * i}ms`;
+      if (i < lastResult.stars) window.setTimeout(() => sound.chime(880 * 1.26 ** i, 0.25), 300 + 250 * i);
+    }
+    arrivalBanner.hidden = false;
+  }
+  cardTimer = window.setTimeout(
+    () => {
+      arrivalBanner.hidden = true;
+      if (phase === 'done' && flight === ended) card.hidden = false;
+    },
+    won ? ARRIVAL_CARD_DELAY_MS : CARD_DELAY_MS,
+  );
 }
 
 // ---- The engineer's comparison with the ephemeris (folded) ------------------------------------------
@@ -2144,6 +2345,10 @@ shell.expose({
   },
   /** Sets the aiming rate, simulated days per real second, clamped to [0, 400]. */
   setRate,
+  /** Runs time to the next launch window and stops there (a tap of W or of the Wait button). */
+  waitForWindow,
+  /** A body's heliocentric state now: position (AU) then velocity (AU/day), six numbers. */
+  heliocentric: (name: SolarSystemBody): number[] => [...heliocentricState(shell.world, handles, handles.bodies[name])],
   /** Orbit lines drawn (one a planet). */
   orbitCount: (): number => orbitsDrawn,
   /** Labels the last frame showed (overlapping ones hidden). */

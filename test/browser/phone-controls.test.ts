@@ -625,20 +625,20 @@ describe('phone controls', () => {
     expect(await g.page.locator('[data-hud="brief"]').textContent()).toMatch(/^Mars is farther out/);
     const legend = (await g.page.locator('.bp-legend').textContent()) ?? '';
     expect([legend.includes('top ↺ button'), legend.includes('bottom ↺ ↻ buttons')]).toEqual([true, true]);
-    // Mission 1 starts too slow; the Hint button names the button that fixes it and how many taps:
-    // 8 taps of + arrive.
+    // Mission 1 starts too slow; the Hint button names the button that fixes it (not how many taps:
+    // counting taps to a green line was the whole game); 8 taps of + arrive.
     await g.page.getByRole('button', { name: 'hint: what to try (H)', exact: true }).tap();
     await g.waitFor(() => document.querySelector('[data-hud="touch-hint"]')?.classList.contains('bp-gone') ?? true, null);
     await g.waitFor(
-      () =>
-        /^Speed up by 0\.8 km\/s \(tap \+ 8 times\): then it arrives/.test(document.querySelector('[data-hud="hint"]')!.textContent ?? ''),
+      () => /^A faster launch \(\+\) flies farther out/.test(document.querySelector('[data-hud="hint"]')!.textContent ?? ''),
       null,
     );
     for (let i = 0; i < 8; i++) await g.page.getByRole('button', { name: 'faster launch (↑)', exact: true }).tap();
     await g.waitFor((s) => (window.game as unknown as Solar).mission().aim.speed > s + 0.75, speed);
     await g.waitFor(() => (window.game as unknown as Solar).mission().plan.hit, null);
     await g.waitFor(() => /tap Launch/.test(document.querySelector('[data-hud="hint"]')!.textContent ?? ''), null);
-    expect(await g.page.locator('[data-hud="plan"]').textContent()).toMatch(/ → ✓ arrives at Mars in \d+ days · ★★★ · \d+ points$/);
+    // The line leaves the verdict to the player before the launch: it reaches Mars's orbit, and the stars if it arrives.
+    expect(await g.page.locator('[data-hud="plan"]').textContent()).toMatch(/ → reaches Mars’s orbit · ★★★ if it arrives$/);
     // The buttons of every phase sit on one row, each at least 44 x 44 px, Wait in the same place (in
     // flight they took two rows, Hint alone on the second, and Wait moved under a held finger).
     const bar = () =>
