@@ -11,6 +11,8 @@ export const CARD_LINES: Readonly<Record<string, string>> = {
   submarine: 'Dive, trim and steer a submarine to every beacon on the sea floor.',
   'flight-simulator': 'Fly a jet over the hills and through the rings without stalling.',
   'bouncing-balls': 'Throw balls through a hoop that moves after every basket: how many can you score in 60 seconds?',
+  'rotating-cube':
+    'Flick a cube onto five glowing pads against the clock, watch its spin axis wander, and make a box flip over by itself 10 times in 20 s.',
   'solar-system': 'Launch a probe from the Earth to the planets: aim, pick your moment, then steer it there.',
   'lab-projectile-drag': 'Fire a ball off a cliff with and without air resistance and see where it lands.',
   'lab-orbits': 'Flick planets into orbit around a sun and watch their paths.',
@@ -18,11 +20,9 @@ export const CARD_LINES: Readonly<Record<string, string>> = {
   'lab-spring-chain': 'Pull a chain of springy weights and let it bounce.',
   'lab-bungee': 'Drop a jumper off a bridge on a bungee cord: how close to the river do they get?',
   'lab-pendulum': 'Swing a pendulum, big or small, and time its beat.',
-  // Three toys without a goal to win, listed here with what to try (a score or a finish line for a
-  // spinning cube, a box of balls or the Moon's orbit would be made up): each line says what to explore.
+  // Two toys without a goal to win, listed here with what to try (a score or a finish line for a box
+  // of balls or the Moon's orbit would be made up): each line says what to explore.
   'earth-moon': 'Speed up time and follow the Moon round the Earth: see the Earth wobble round the point they both circle.',
-  'rotating-cube':
-    'Flick a cube onto five glowing pads against the clock, watch its spin axis wander, and make a box flip over by itself 10 times in 20 s.',
   'balls-3d': 'Throw balls into a glass box of hundreds more: turn gravity and bounce up or down and watch the pile settle.',
   'lab-floating': 'Drop balls and a box into water and see which float, which sink and how deep they ride.',
   'lab-balloon-parachute': 'Open a parachute mid-fall, and let a balloon rise until the thin air stops it.',

@@ -147,11 +147,10 @@ describe('rotating-cube challenges', () => {
 });
 
 describe('pages without a goal in the gallery', () => {
-  it('rotating-cube, balls-3d and earth-moon are listed in the physics playground, their cards saying what to explore', () => {
+  it('balls-3d and earth-moon are listed in the physics playground, their cards saying what to explore', () => {
     // A stranger found them under Games with nothing to win. Each is a toy to explore (a score for a
-    // spinning cube, a box of balls or the Moon's orbit would be made up), so each is a lab now.
+    // box of balls or the Moon's orbit would be made up), so each is a lab.
     const explore: Record<string, RegExp> = {
-      'rotating-cube': /spin axis wander.*flip over by itself/,
       'balls-3d': /gravity and bounce.*watch the pile settle/,
       'earth-moon': /speed up time.*Earth wobble/i,
     };
@@ -160,5 +159,11 @@ describe('pages without a goal in the gallery', () => {
       expect(entry.category, folder).toBe('Labs');
       expect(CARD_LINES[folder], folder).toMatch(line);
     }
+  });
+
+  it('rotating-cube, which has rounds to win (pads against the clock, flips in 20 s), is listed under Games', () => {
+    const entry = JSON.parse(readFileSync(new URL('../../games/rotating-cube/game.json', import.meta.url), 'utf8')) as { category: string };
+    expect(entry.category).toBe('Games');
+    expect(CARD_LINES['rotating-cube']).toMatch(/five glowing pads.*flip over by itself 10 times/);
   });
 });
