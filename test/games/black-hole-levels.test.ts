@@ -380,6 +380,29 @@ describe('levels', () => {
     expect(g.message).toMatch(/^Level 1 cleared in \d+\.\d s \(\d+\.\d s in all, 1 fall\): \+\d+ \(3 holes × 10 \+ \d+ speed bonus\)/);
   });
 
+  test('level 3: three holes up the straight path, each to the other side of the start than the one below', () => {
+    // Measured from the holes' places alone: the three nearest the start's x, sorted by height, sit
+    // within 2 m of it, on alternate sides, each 2.5 m or more above the one below.
+    for (const field of [FIELD, { width: 20, height: 30 }])
+      for (let seed = 1; seed <= 4; seed++) {
+        const g = createBlackHoleGame({ seed, field, ...engineFor(field) });
+        startLevel(g, 3);
+        const P = g.world.components.Position;
+        const hs = g.holes
+          .map((h) => ({ dx: P.x[slotOf(h)]! - g.start[0], y: P.y[slotOf(h)]! }))
+          .sort((a, b) => Math.abs(a.dx) - Math.abs(b.dx))
+          .slice(0, 3)
+          .sort((a, b) => a.y - b.y);
+        const where = `${field.width}x${field.height} seed ${seed}`;
+        for (const h of hs) expect(Math.abs(h.dx), where).toBeLessThan(2);
+        for (const h of hs) expect(Math.abs(h.dx), where).toBeGreaterThan(0.5);
+        expect(Math.sign(hs[0]!.dx) * Math.sign(hs[1]!.dx), where).toBe(-1);
+        expect(Math.sign(hs[1]!.dx) * Math.sign(hs[2]!.dx), where).toBe(-1);
+        expect(hs[1]!.y - hs[0]!.y, where).toBeGreaterThan(2.5);
+        expect(hs[2]!.y - hs[1]!.y, where).toBeGreaterThan(2.5);
+      }
+  });
+
   test('level 2: a wall across the field, closed but for one gap off to the side', () => {
     // The issue this answers: levels 1 to 3 were cleared in seconds (a nudge, then up). The wall is
     // measured from the holes alone (wallGap): its widest stretch is the level's gap, every other one
