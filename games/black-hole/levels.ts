@@ -2,7 +2,7 @@
  * Levels for black hole, DOM-free (Node tests run them): a first level that asks for one steering
  * decision (a fork: a hole across the straight path up and one across each diagonal, so no arrow or
  * pair of arrows held from the start gets through), then two set pieces (a wall of holes across the field with one gap off to
- * the side, high up; then a lower wall, pulling harder, with a hole above its gap), then holes across the straight path up, more
+ * the side, high up; then a zig-zag of small holes up the straight path, to weave between), then holes across the straight path up, more
  * and bigger holes, holes that drift, and a fuel limit. Each cleared level gives a lost life back (up
  * to the starting three). The ship waits at the start until the player thrusts. The page (main.ts)
  * shows the level, the fuel, an end-of-level summary and the best score.
@@ -85,7 +85,28 @@ export interface LevelSpec {
    * to the line; scaled to other fields'): [low, high], low < high. Unused without a wall.
    */
   readonly wallHeight: readonly [number, number];
+  /**
+   * Lay the holes as a zig-zag (no wall): `holes - 2` of them one above another up the straight path,
+   * each ZIGZAG_OFFSET m (scaled to the field's climb) to alternate sides of the start's x (the first
+   * to a side drawn at random), in equal bands of ZIGZAG_HEIGHT, so the way up weaves between them:
+   * round the first on its far side, across above it, round the next on the other side; and the last
+   * two far out on the 45-degree lines up from the start, so no held diagonal clears. Blockers unused.
+   */
+  readonly zigzag: boolean;
 }
+
+/**
+ * How far a zig-zag's holes (`LevelSpec.zigzag`) sit to the side of the start's x, m on the default
+ * field (scaled to other fields' climbs): near enough that the straight climb passes within their
+ * pull's grip (holding up falls in), far enough apart (twice this across) for a ship to weave between.
+ */
+export const ZIGZAG_OFFSET = 1.2;
+
+/**
+ * Heights, m on the default field's 22 m climb (scaled to other fields'), between which a zig-zag's
+ * holes are laid, one to each equal band.
+ */
+export const ZIGZAG_HEIGHT: readonly [number, number] = Object.freeze([6, 18]);
 
 /** Points for each hole on the field when the ship reaches the line. */
 export const POINTS_PER_HOLE = 10;
@@ -136,15 +157,6 @@ export const WALL_GAP = 0.5;
 export const LEVEL2_WALL_HEIGHT: readonly [number, number] = Object.freeze([18.5, 19]);
 
 /**
- * Level 3's wall heights, m on the default field: lower than level 2's, so it pulls the waiting ship
- * harder (2.3 to 3.1 m/s^2 on seeds 1 to 8, half the default thrust), but not so low that the
- * engine's gentle start (./rules THRUST_RAMP) leaves a ship that sets off sideways for the gap in the
- * wall's grip (at 10 to 12 m it pulled at up to 3.7 m/s^2, and scripts/black-hole-levels.mjs's
- * steering pilots failed up to two seeds of eight).
- */
-export const LEVEL3_WALL_HEIGHT: readonly [number, number] = Object.freeze([11, 13]);
-
-/**
  * Level 2's gap, m (on a field narrower than 20 m, 0.4 of its width): under a wall that high a ship
  * holding a diagonal arrow from the start meets the wall's height about DIAGONAL_REACH of its height
  * out to the side (bent in by the wall's longer side), 10.7 m on the 32 m field; a gap this wide fits
@@ -184,8 +196,8 @@ const WALL_FILL_GAP = 0.4;
  * (one across the straight path up, one across each diagonal: steer into a gap beside the first);
  * level 2 a wall of small holes (LEVEL2_RADIUS) across the field, high up (LEVEL2_WALL_HEIGHT: its
  * pull at the start weak, so taps steer the ship) with one gap of LEVEL2_GATE off to the side (fly
- * across to it, then up through it); level 3 a wall lower down (LEVEL3_WALL_HEIGHT: it pulls harder) with a 7 m gap
- * and a hole above it; level 4 three holes, two across the path one above the other;
+ * across to it, then up through it); level 3 a zig-zag of small holes up the straight path (`zigzag`: weave
+ * between them); level 4 three holes, two across the path one above the other;
  * level 5 a fourth hole; from level 6 the holes drift, slowly at first (0.35, then 0.6, 0.8 m/s);
  * from level 8 the fuel is limited (18 s, then 15 s down to 5 s); from level 9 a fifth hole, then a
  * hole more every second level (up to MAX_HOLES), bigger (radius up to 2 m) and faster (up to 3 m/s).
@@ -203,6 +215,7 @@ export function levelSpec(level: number): LevelSpec {
     gate = 0,
     fork = false,
     wallHeight: [number, number] = [10, 12],
+    zigzag = false,
   ): LevelSpec =>
     Object.freeze({
       level,
@@ -215,6 +228,7 @@ export function levelSpec(level: number): LevelSpec {
       gate,
       fork,
       wallHeight: Object.freeze(wallHeight) as readonly [number, number],
+      zigzag,
     });
   switch (level) {
     case 1:
@@ -225,7 +239,7 @@ export function levelSpec(level: number): LevelSpec {
         LEVEL2_WALL_HEIGHT[1],
       ]);
     case 3:
-      return spec(1, [0.45, 0.55], 0, 1, 0, Infinity, 7, false, [LEVEL3_WALL_HEIGHT[0], LEVEL3_WALL_HEIGHT[1]]);
+      return spec(5, [0.4, 0.5], 0, 0, 0, Infinity, 0, false, [10, 12], true);
     case 4:
       return spec(4, [0.6, 1.1], 0, 1, 0, Infinity);
     case 5:
@@ -339,6 +353,7 @@ export function levelMessage(spec: LevelSpec, holes: number): string {
   const parts = [`Level ${spec.level}: reach the green line for ${worth} points (${POINTS_PER_HOLE} a hole), more if fast.`];
   if (spec.gate > 0)
     parts.push(spec.blockers > 0 ? 'Find the gap in the wall, then steer round the hole above it.' : 'Find the gap in the wall.');
+  if (spec.zigzag) parts.push('Weave between the holes.');
   if (spec.drift > 0) parts.push('The holes drift.');
   if (Number.isFinite(spec.fuel)) parts.push(`${spec.fuel} s of fuel.`);
   return parts.join(' ');
@@ -507,6 +522,8 @@ function layHoles(game: BlackHoleGame, run: LevelRun, spec: LevelSpec): void {
   // The wall first (gate levels): its gap's centre, m, where the blockers go above it.
   const gateX = spec.gate > 0 ? layWall(game, run, spec) : game.start[0];
   const wallY = game.holes.length > 0 ? world.components.Position.y[slotOf(game.holes[0]!)]! : 0;
+  // A zig-zag's first side (drawn only on a zig-zag level, so other levels' layouts keep their draws).
+  const zig = spec.zigzag ? (rng.range(0, 1) < 0.5 ? -1 : 1) : 0;
   for (let k = 0; k < spec.holes; k++) {
     let bestX = 0,
       bestY = 0,
@@ -525,6 +542,18 @@ function layHoles(game: BlackHoleGame, run: LevelRun, spec: LevelSpec): void {
         const out = Math.min(rng.range(8, 9), game.field.width / 2 - 2 - r);
         x = k === 0 ? game.start[0] + rng.range(-0.3, 0.3) * r : game.start[0] + (k === 1 ? -1 : 1) * out;
         y = k === 0 ? game.start[1] + rng.range(12, 14) * s : game.start[1] + out + rng.range(-0.3, 0.3);
+      } else if (spec.zigzag && k < spec.holes - 2) {
+        // The zig-zag: hole k in the k-th of `holes - 2` equal bands of height, a little above its
+        // middle or below, to alternate sides of the straight path up.
+        const band = (ZIGZAG_HEIGHT[1] - ZIGZAG_HEIGHT[0]) / (spec.holes - 2);
+        x = game.start[0] + (k % 2 === 0 ? zig : -zig) * ZIGZAG_OFFSET * s + rng.range(-0.2, 0.2) * r;
+        y = game.start[1] + (ZIGZAG_HEIGHT[0] + band * (k + 0.5) + rng.range(-0.2, 0.2) * band) * s;
+      } else if (spec.zigzag) {
+        // Its last two on the lines at 45 degrees up from the start, one each side, far out (the
+        // zig-zag's pull bends a held diagonal back in towards the middle).
+        const out = Math.max(4, Math.min(rng.range(9, 11), game.field.width / 2 - 2 - r, game.lineY - 4 - r - game.start[1]));
+        x = game.start[0] + (k === spec.holes - 2 ? -1 : 1) * out;
+        y = game.start[1] + out + rng.range(-0.3, 0.3);
       } else if (k < spec.blockers && spec.gate > 0) {
         // Across the way up through the wall's gap: 6 to 7.5 m (on the default field) above the wall.
         x = gateX + rng.range(-0.5, 0.5) * r;
