@@ -1169,8 +1169,12 @@ function drawPause(): void {
  * wide as the screen allows, framed and labelled. Hidden while the camera follows a throw or holds
  * the wreck (it is then as close), unless a throw stopped short with the castle off the screen,
  * and on other screens.
+ *
+ * The close-up's texture has one texel per CSS pixel whatever the screen's pixel ratio: at a phone's
+ * ratio of 2 it would hold four times the texels, and under software WebGL (SwiftShader) rendering
+ * that into a texture every few frames can hold the GPU process up for seconds with no frame drawn.
  */
-const closeTexture = RenderTexture.create({ width: 16, height: 16, resolution: Math.min(2, window.devicePixelRatio || 1) });
+const closeTexture = RenderTexture.create({ width: 16, height: 16, resolution: 1 });
 const closeSprite = new Sprite(closeTexture);
 const closeFrame = new Graphics({ label: 'close-up frame' });
 const closeLabel = new Text({
