@@ -167,10 +167,9 @@ export const LEVEL2_WALL_HEIGHT: readonly [number, number] = Object.freeze([18.5
 export const LEVEL2_GATE = 8;
 
 /**
- * Radii of level 2's wall holes, m: small, so the wall pulls like a light line of mass (about 13 kg/m,
- * level 3's some 18) and its discs leave the gap in plain sight. (Holes of 0.45 to 0.55 m, grown to
- * 0.75 to 0.92 m to close the field with at most 16, left some 70 px of a 6 m gap between their discs
- * on a desktop, and scripts/black-hole-levels.mjs's route-flying newcomers cleared none of 8 seeds.)
+ * Radii of level 2's wall holes, m: small, so the wall pulls like a light line of mass (about 13 kg/m)
+ * and the gap between their drawn discs is in plain sight. Larger holes, fewer of them, would close the
+ * field with discs that hide most of the gap.
  */
 export const LEVEL2_RADIUS: readonly [number, number] = Object.freeze([0.2, 0.25]);
 
