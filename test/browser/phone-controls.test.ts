@@ -286,7 +286,11 @@ describe('phone controls', () => {
       const w = window.game as unknown as Fly;
       const m = w.messages(),
         p = w.ringPointer();
-      return m.boxes.some((b) => b.hud === 'throttle-note') && p.inView ? { ...m, ring: p.ring, panelTop: w.cockpit().panelTop } : null;
+      // The lane moves on a drawn frame after the note appears: wait for that frame (a lane that never
+      // moves low times the wait out and fails the case).
+      return m.low && m.boxes.some((b) => b.hud === 'throttle-note') && p.inView
+        ? { ...m, ring: p.ring, panelTop: w.cockpit().panelTop }
+        : null;
     }, null);
     expect(lane.low).toBe(true);
     const [rx, ry, rr] = lane.ring as [number, number, number];
