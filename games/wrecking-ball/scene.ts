@@ -245,6 +245,33 @@ export interface WreckingBallOptions {
   ballWeight?: number;
   /** Where the crane starts (slew angle, trolley radius, hook height; clamped to their ranges). Default angle 0, radius 4 m, height 7.5 m. */
   crane?: Partial<CraneState>;
+  /**
+   * Whether the jib starts pointing into the widest gap between the level's structures (`openingAngle`)
+   * rather than at `crane.angle`: the ball then hangs clear of every target, not in front of one.
+   * Default false (angle 0, as the tests and scripts were measured from).
+   */
+  openStart?: boolean;
+}
+
+/**
+ * The slew angle, rad, half way across the widest gap between the directions (about the mast) of
+ * structures at angles `angles` (rad, any range; at least one): where a ball hangs clear of them all.
+ * @throws RangeError on an empty list or an angle that is not finite.
+ */
+export function openingAngle(angles: readonly number[]): number {
+  if (angles.length === 0 || !angles.every(Number.isFinite))
+    throw new RangeError(`openingAngle: angles must be a non-empty list of finite numbers, got ${JSON.stringify(angles)}`);
+  const a = angles.map((x) => ((x % (2 * Math.PI)) + 2 * Math.PI) % (2 * Math.PI)).sort((x, y) => x - y);
+  let best = 0,
+    at = a[0]! + Math.PI;
+  for (let i = 0; i < a.length; i++) {
+    const next = i + 1 < a.length ? a[i + 1]! : a[0]! + 2 * Math.PI;
+    if (next - a[i]! > best) {
+      best = next - a[i]!;
+      at = (a[i]! + next) / 2;
+    }
+  }
+  return wrap(at);
 }
 
 /** World options: 3D, Earth gravity, room for the chain and up to a few hundred pieces; 4 substeps for the chain. */
@@ -341,9 +368,38 @@ export function buildWreckingBall(world: PhysicsWorld, options: WreckingBallOpti
   const mast = addBody(world, { position: [0, JIB_HEIGHT / 2, 0], static: true });
   addShape3D(world, mast, { type: 'box', halfExtents: [0.4, JIB_HEIGHT / 2, 0.4] });
 
+  // The layout first (its random draws in the order the pieces are built in below), so the crane
+  // may start pointing between the structures (openStart).
+  const rng = seededRandom(seed * 7919 + level * 104729);
+  const layout = ((level - 1) % LEVELS) + 1;
+  const extra = Math.floor((level - 1) / LEVELS);
+  const kinds: Array<'tower' | 'wall' | 'planks'> = (
+    [
+      ['tower', 'wall', 'planks'],
+      ['tower', 'planks', 'wall', 'tower'],
+      ['wall', 'tower', 'tower', 'planks'],
+      ['tower', 'wall', 'planks', 'wall', 'tower'],
+      ['tower', 'tower', 'wall', 'planks', 'wall'],
+    ] as const
+  )[layout - 1]!.slice();
+  for (let i = 0; i < extra && kinds.length < 7; i++) kinds.push(i % 2 === 0 ? 'tower' : 'wall');
+  const spread = (2 * Math.PI) / Math.max(3, kinds.length);
+  const start = rng() * 2 * Math.PI;
+  const placed = kinds.map((kind, i) => {
+    const a = start + i * spread + (rng() - 0.5) * 0.3 * spread;
+    const r = 5.5 + rng() * 3.5;
+    const sizes =
+      kind === 'tower'
+        ? [4 + Math.floor(rng() * (2 + layout)), rng() * Math.PI]
+        : kind === 'wall'
+          ? [3 + Math.floor(rng() * 2), 3 + Math.floor(rng() * 2)]
+          : [4 + Math.floor(rng() * 3), rng() * Math.PI];
+    return { kind, a, r, sizes };
+  });
+
   const at = options.crane ?? {};
   const crane: CraneState = {
-    angle: wrap(at.angle ?? 0),
+    angle: wrap(options.openStart ? openingAngle(placed.map((p) => p.a)) : (at.angle ?? 0)),
     radius: Math.min(RADIUS_RANGE[1], Math.max(RADIUS_RANGE[0], at.radius ?? 4)),
     height: Math.min(HOOK_RANGE[1], Math.max(HOOK_RANGE[0], at.height ?? 7.5)),
   };
@@ -378,31 +434,14 @@ export function buildWreckingBall(world: PhysicsWorld, options: WreckingBallOpti
   addDistanceJoint3D(world, { a: trolley, b: ball, anchorA: [hx, hy, hz], anchorB: [hx, top - BALL_RADIUS, hz], minLength: 0 });
 
   const pieces: Piece[] = [];
-  const rng = seededRandom(seed * 7919 + level * 104729);
-  const layout = ((level - 1) % LEVELS) + 1;
-  const extra = Math.floor((level - 1) / LEVELS);
-  const kinds: Array<'tower' | 'wall' | 'planks'> = (
-    [
-      ['tower', 'wall', 'planks'],
-      ['tower', 'planks', 'wall', 'tower'],
-      ['wall', 'tower', 'tower', 'planks'],
-      ['tower', 'wall', 'planks', 'wall', 'tower'],
-      ['tower', 'tower', 'wall', 'planks', 'wall'],
-    ] as const
-  )[layout - 1]!.slice();
-  for (let i = 0; i < extra && kinds.length < 7; i++) kinds.push(i % 2 === 0 ? 'tower' : 'wall');
-  const spread = (2 * Math.PI) / Math.max(3, kinds.length);
-  const start = rng() * 2 * Math.PI;
-  kinds.forEach((kind, i) => {
-    const a = start + i * spread + (rng() - 0.5) * 0.3 * spread;
-    const r = 5.5 + rng() * 3.5;
+  for (const { kind, a, r, sizes } of placed) {
     const x = r * Math.cos(a),
       z = -r * Math.sin(a);
     const facing = a + Math.PI / 2; // walls across the ball's swing about the mast
-    if (kind === 'tower') tower(world, pieces, x, z, 4 + Math.floor(rng() * (2 + layout)), 0.7, rng() * Math.PI);
-    else if (kind === 'wall') wall(world, pieces, x, z, 3 + Math.floor(rng() * 2), 3 + Math.floor(rng() * 2), facing);
-    else planks(world, pieces, x, z, 4 + Math.floor(rng() * 3), rng() * Math.PI);
-  });
+    if (kind === 'tower') tower(world, pieces, x, z, sizes[0]!, 0.7, sizes[1]!);
+    else if (kind === 'wall') wall(world, pieces, x, z, sizes[0]!, sizes[1]!, facing);
+    else planks(world, pieces, x, z, sizes[0]!, sizes[1]!);
+  }
   const handles: WreckingBallHandles = { trolley, links, ball, pieces, crane, controls, level, seed, mast, drive: { slew: 0, trolley: 0 } };
   addSystem(world, 'forces', craneSystem(handles));
   return handles;
