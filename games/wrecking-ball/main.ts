@@ -1917,12 +1917,11 @@ hint.style.cssText =
   'position: absolute; left: 0; right: 0; top: 10px; margin: 0 auto; width: fit-content; max-width: 90%; padding: 6px 12px; border-radius: 16px; background: rgba(16, 20, 28, 0.78); color: #ffe08a; font: 600 15px/1.3 system-ui, sans-serif; text-align: center; pointer-events: none; z-index: 2';
 pageLayout().stage.append(hint);
 
-/** Over the scene while paused: a dimmed view and the word (game-kit's), so a pause is not missed; a tap on it resumes. */
-const pauseOverlay = createDomPauseOverlay(pageLayout().stage, {
-  onResume: () => {
-    shell.paused = false;
-  },
-});
+/**
+ * Over the scene while paused: a dimmed view and the word (game-kit's), so a pause is not missed. It
+ * lets pointer events through: a swing may still be aimed while paused (P or ▶ resumes).
+ */
+const pauseOverlay = createDomPauseOverlay(pageLayout().stage);
 
 /**
  * The legend led by the one move a level needs (dragging a target), the rest (the shell's P, N, R and
@@ -2154,8 +2153,10 @@ function swayHint(): string {
 }
 
 /**
- * What the crane is doing for a swing at a target, for the status line: a swing takes a wind-up of
- * a few seconds before the run, which a player looking after 5 s would take for a miss.
+ * What the crane is doing for a swing at a target, for the status line. From the release the crane
+ * is already swinging the ball back to build up its swing (the hook moves at once): the line says so
+ * and counts down to the hit, to a tenth of a second, rather than "winding up, swing in 2 s", which
+ * read as a wait between the release and the swing.
  */
 function swingPhase(): string {
   const moves = handles.controls.moves;
@@ -2164,9 +2165,14 @@ function swingPhase(): string {
     retargeted = false;
     return ' · swinging!';
   }
+  return ` · ${retargeted ? 'new target, same swing' : 'swinging back'}… hit in ${timeToHit(moves).toFixed(1)} s`;
+}
+
+/** Seconds until the ball reaches its target on timed moves `moves`: what is left of those before the follow-through. */
+function timeToHit(moves: readonly { duration: number; elapsed: number; follow?: boolean }[]): number {
   let left = 0;
-  for (const m of moves) if (!m.run) left += m.duration - m.elapsed;
-  return ` · ${retargeted ? 'new target, same swing' : 'target set'}: winding up, swing in ${Math.max(1, Math.ceil(left))} s`;
+  for (const m of moves) if (!m.follow) left += m.duration - m.elapsed;
+  return Math.max(0, left);
 }
 
 // ---- window.game ---------------------------------------------------------------------------

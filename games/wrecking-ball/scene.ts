@@ -89,21 +89,19 @@ export const KNOCK_DISTANCE = 1;
 export const TIP_ANGLE = Math.PI / 3;
 /**
  * Fraction of a level's raised pieces (those not standing on the ground) whose count must fall to
- * clear it: 0.45 on level 1 (a first level a newcomer clears in two swings, and a well-aimed one
- * clears in one), 0.6 after. At 0.4 (9 of level 1's 21 raised pieces) 11 of the 21 pieces, tapped
- * once, cleared it: any swing into the wall or the plank stack did, and there was nothing to aim
- * for; at 0.45 (10) 8 of them do (scripts/wrecking-ball-par.mjs --one), a tower's top (5) never. The bottom row (a wall's
- * lowest bricks, a crib's lowest logs, a tower's base) rarely falls, tips or slides a metre however
- * it is hit, so counted against all pieces a flattened level could still fall short of the share
- * needed. At 0.7 on every level, players tapping the way a stranger does
- * (scripts/wrecking-ball-par.mjs: the top of each structure in turn, the biggest structure, the
- * piece nearest the ball) needed up to 5 taps on level 1 and 4 to 6 on levels 2 to 5, over their 4
- * swings; at these shares most games take 2 to 5 (see `swingBudget`).
+ * clear it, growing level by level: 0.5 on level 1, 0.65 on level 2, 0.7 on level 3 and 0.72 after.
+ * The bottom row (a wall's lowest bricks, a crib's lowest logs, a tower's base) rarely falls, tips or
+ * slides a metre however it is hit, so the share counts raised pieces only. With the pars of
+ * `swingPar`, a careless player (scripts/wrecking-ball-par.mjs: the top of each structure in turn,
+ * the biggest structure, the piece nearest the ball) rarely earns three stars, and a careful one
+ * (its --careful player) can: on level 1 at 0.45 (10 of 21) 4 of 9 careless games cleared it in one
+ * swing and 10 of the 21 raised pieces, swung at once, did; at 0.5 (11) none of the 9 games and 2 of
+ * the 21 pieces (the plank stack's) do.
  * @throws RangeError on a level that is not an integer >= 1.
  */
 export function clearShare(level: number): number {
   if (!Number.isInteger(level) || level < 1) throw new RangeError(`clearShare: level must be an integer >= 1, got ${level}`);
-  return level === 1 ? 0.45 : 0.6;
+  return level === 1 ? 0.5 : level === 2 ? 0.65 : level === 3 ? 0.7 : 0.72;
 }
 
 /**
@@ -1238,15 +1236,14 @@ export function swingBudget(level: number): number {
 }
 
 /**
- * Swings that clear level `level` for three stars: 1 on level 1, 2 on level 2, then two fewer than
- * its budget (3 on level 3, 4 after). The first two levels' pars ask for aim: at two fewer than the
- * budget (2 and 3) every stranger's game of scripts/wrecking-ball-par.mjs earned three stars on
- * level 1 and most on level 2, tapping without looking where.
+ * Swings that clear level `level` for three stars: 1 on level 1, 2 on levels 2 and 3, 3 after. With
+ * the shares of `clearShare` they ask for aim: at the earlier pars (1, 2, 3, 4 on levels 1 to 4, and
+ * 0.45 then 0.6 to clear) the careless games of scripts/wrecking-ball-par.mjs earned three stars in
+ * 4, 2, 6 and 9 of 9 games on levels 1 to 4.
  * @throws RangeError on a level that is not an integer >= 1.
  */
 export function swingPar(level: number): number {
-  const budget = swingBudget(level);
-  return level <= 2 ? level : budget - 2;
+  return level <= 3 ? Math.min(level, 2) : 3;
 }
 
 /**
