@@ -347,7 +347,9 @@ describe('3D rigid-body games in headless Chromium', () => {
     expect(Math.hypot(after[0]! - framed[0]!, after[1]! - framed[1]!, after[2]! - framed[2]!)).toBeLessThan(1e-3);
     await g.page.setViewportSize({ width: 1280, height: 800 });
     await g.page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+    // (Measured with "more controls" unfolded: folded, the legend is one line and the column has room.)
     const column = await g.page.evaluate(() => {
+      document.querySelector<HTMLDetailsElement>('details[data-hud="more-controls"]')!.open = true;
       const info = document.querySelector('.bp-info')!;
       const last = info.lastElementChild!.getBoundingClientRect();
       return {
