@@ -1,5 +1,6 @@
 // `node scripts/wrecking-ball-par.mjs [--full | --careful] [level ...]`: how many taps the wrecking ball's levels
-// (1-based; default 1 to 5) take a first-time player, headless. Three plain ways a stranger taps, each
+// (1-based; default 1 to 5) take a first-time player, headless, from the page's start (the jib
+// between the structures, `openStart`). Three plain ways a stranger taps, each
 // tap 2 s after the last swing's moves end (once the count has settled; the ball still swinging from
 // its hit): `top` taps the highest standing piece of each structure in turn (what the eye goes to),
 // `biggest` the piece a third of the way up the structure with the most standing raised pieces (those
@@ -108,7 +109,7 @@ const median = (xs) => {
  */
 const playTaps = (level, taps) => {
   const world = wb.createPhysicsWorld(wb.wreckingBallWorldOptions());
-  const h = wb.buildWreckingBall(world, { level });
+  const h = wb.buildWreckingBall(world, { level, openStart: true });
   const run = () => {
     wb.step(world);
     wb.scorePieces(world, h.pieces);
@@ -161,7 +162,7 @@ for (const level of chosen) {
   for (const [name, choose] of Object.entries(ways))
     for (const first of FIRST_TAP_STEPS) {
       const world = wb.createPhysicsWorld(wb.wreckingBallWorldOptions());
-      const h = wb.buildWreckingBall(world, { level });
+      const h = wb.buildWreckingBall(world, { level, openStart: true });
       const groups = structures(h.pieces);
       const target = wb.clearTarget(h.pieces, level);
       for (let k = 0; k < first; k++) wb.step(world);

@@ -24,6 +24,7 @@ import {
   choiceParam,
   createActionButton,
   createButtonBar,
+  createDomPauseOverlay,
   createPanel,
   flagParam,
   forEachImpact,
@@ -170,7 +171,9 @@ function createWorld(): PhysicsWorld {
   // Once a page: the physics code compiled while the page loads, not in the level's first frames.
   warmUp(3);
   const world = createPhysicsWorld(wreckingBallWorldOptions());
-  handles = buildWreckingBall(world, { level: params.level, seed: params.seed, ballWeight: params.ballWeight });
+  // The jib starts between the structures, its ball clear of them (one hanging in front of the
+  // first level's plank stack hid half of it on a phone).
+  handles = buildWreckingBall(world, { level: params.level, seed: params.seed, ballWeight: params.ballWeight, openStart: true });
   levelScore = 0;
   cleared = false;
   reachedAt = -1;
@@ -753,6 +756,16 @@ const jibMaterial = new MeshStandardMaterial({
 });
 // Alpha from the texture's own brightness: the lattice's bars opaque, the panels clear.
 jibMaterial.alphaMap = jibMaterial.map;
+/**
+ * The jib drawn see-through (a faint lattice, no depth write) while it points toward the camera: seen
+ * end-on from above, its lattice lies between the camera and the ground the ball is swinging over
+ * and covered the very piece being aimed at (see placeJibFade).
+ */
+const jibFadedMaterial = jibMaterial.clone();
+jibFadedMaterial.transparent = true;
+jibFadedMaterial.opacity = 0.22;
+jibFadedMaterial.alphaTest = 0.05;
+jibFadedMaterial.depthWrite = false;
 const jib = new Mesh(new BoxGeometry(JIB_LENGTH, 0.55, 0.55), jibMaterial);
 jib.castShadow = true;
 app.scene.add(jib);
@@ -807,6 +820,28 @@ tieGeometry.setAttribute('position', new BufferAttribute(tiePositions, 3));
 const ties = new LineSegments(tieGeometry, new LineBasicMaterial({ color: 0x3b3f46 }));
 ties.frustumCulled = false;
 app.scene.add(ties);
+/**
+ * Cosine of the largest angle, across the ground, between the jib's direction and the direction from
+ * the mast to the camera at which the jib is drawn faded (JIB_UNFADE: back to solid, a margin so it
+ * does not flicker at the edge).
+ */
+const JIB_FADE = Math.cos((55 * Math.PI) / 180);
+const JIB_UNFADE = Math.cos((62 * Math.PI) / 180);
+/** Whether the jib is drawn faded (see jibFadedMaterial). */
+let jibFaded = false;
+/** Fades the jib while it points toward the camera within about 55 degrees across the ground (slew angle `a`, rad). */
+function placeJibFade(a: number): void {
+  const cx = app.camera.position.x,
+    cz = app.camera.position.z;
+  const d = Math.hypot(cx, cz);
+  const facing = d > 1e-6 ? (Math.cos(a) * cx - Math.sin(a) * cz) / d : 0;
+  const fade = jibFaded ? facing > JIB_UNFADE : facing > JIB_FADE;
+  if (fade === jibFaded) return;
+  jibFaded = fade;
+  jib.material = fade ? jibFadedMaterial : jibMaterial;
+  jib.castShadow = true;
+}
+
 /** Sets the tie bars' ends for the jib's slew angle `a`, rad. */
 function placeTies(a: number): void {
   const ca = Math.cos(a),
@@ -1881,6 +1916,33 @@ hint.setAttribute('role', 'status');
 hint.style.cssText =
   'position: absolute; left: 0; right: 0; top: 10px; margin: 0 auto; width: fit-content; max-width: 90%; padding: 6px 12px; border-radius: 16px; background: rgba(16, 20, 28, 0.78); color: #ffe08a; font: 600 15px/1.3 system-ui, sans-serif; text-align: center; pointer-events: none; z-index: 2';
 pageLayout().stage.append(hint);
+
+/**
+ * Over the scene while paused: a dimmed view and the word (game-kit's), so a pause is not missed. It
+ * lets pointer events through: a swing may still be aimed while paused (P or ▶ resumes).
+ */
+const pauseOverlay = createDomPauseOverlay(pageLayout().stage);
+
+/**
+ * The legend led by the one move a level needs (dragging a target), the rest (the shell's P, N, R and
+ * the crane's own controls) folded under "more controls": a stranger reads one line, not twelve.
+ */
+function foldLegend(): void {
+  const legend = shell.hud.legend;
+  const lines = [...legend.children].filter((e): e is HTMLElement => e instanceof HTMLElement && e.tagName === 'DIV');
+  const lead = lines.find((e) => /drag a target/i.test(e.textContent ?? ''));
+  if (!lead) return;
+  const more = document.createElement('details');
+  more.dataset.hud = 'more-controls';
+  const summary = document.createElement('summary');
+  summary.textContent = 'more controls';
+  summary.style.cssText = 'cursor: pointer; margin: 4px 0 2px; color: #cfd8e6;';
+  more.append(summary);
+  for (const e of lines) if (e !== lead) more.append(e);
+  legend.prepend(lead);
+  legend.append(more);
+}
+foldLegend();
 const compactStyle = document.createElement('style');
 compactStyle.textContent =
   '[data-hud="tap-hint"].compact { top: 4px !important; padding: 2px 8px !important; font-size: 12px !important; line-height: 1.25 !important; max-width: 80% !important; border-radius: 10px !important; }';
@@ -1971,6 +2033,7 @@ const hookAt = new Float64Array(3);
 let lastFrameTime = 0;
 function frame(): void {
   updateControls();
+  pauseOverlay.update(shell.paused, touch);
   if (swapDue) {
     swapDue = false;
     swapMaterials();
@@ -2002,6 +2065,7 @@ function frame(): void {
   const mid = (RADIUS_RANGE[1] + 2 - 2) / 2;
   jib.position.set(mid * ca, JIB_HEIGHT + 0.2, -mid * sa);
   jib.rotation.set(0, c.angle, 0);
+  placeJibFade(c.angle);
   counterweight.position.set(-2.6 * ca, JIB_HEIGHT - 0.35, 2.6 * sa);
   counterweight.rotation.set(0, c.angle, 0);
   placeTies(c.angle);
@@ -2089,8 +2153,10 @@ function swayHint(): string {
 }
 
 /**
- * What the crane is doing for a swing at a target, for the status line: a swing takes a wind-up of
- * a few seconds before the run, which a player looking after 5 s would take for a miss.
+ * What the crane is doing for a swing at a target, for the status line. From the release the crane
+ * is already swinging the ball back to build up its swing (the hook moves at once): the line says so
+ * and counts down to the hit, to a tenth of a second, rather than "winding up, swing in 2 s", which
+ * read as a wait between the release and the swing.
  */
 function swingPhase(): string {
   const moves = handles.controls.moves;
@@ -2099,14 +2165,21 @@ function swingPhase(): string {
     retargeted = false;
     return ' · swinging!';
   }
+  return ` · ${retargeted ? 'new target, same swing' : 'swinging back'}… hit in ${timeToHit(moves).toFixed(1)} s`;
+}
+
+/** Seconds until the ball reaches its target on timed moves `moves`: what is left of those before the follow-through. */
+function timeToHit(moves: readonly { duration: number; elapsed: number; follow?: boolean }[]): number {
   let left = 0;
-  for (const m of moves) if (!m.run) left += m.duration - m.elapsed;
-  return ` · ${retargeted ? 'new target, same swing' : 'target set'}: winding up, swing in ${Math.max(1, Math.ceil(left))} s`;
+  for (const m of moves) if (!m.follow) left += m.duration - m.elapsed;
+  return Math.max(0, left);
 }
 
 // ---- window.game ---------------------------------------------------------------------------
 
 shell.expose({
+  /** Whether the jib is drawn faded, as it is while it points toward the camera (see placeJibFade). */
+  jibFaded: (): boolean => jibFaded,
   /** The camera's orbit target, m (it follows the ball; see followAction). */
   cameraTarget: (): number[] => (app.controls ? app.controls.target.toArray() : []),
   /** The orbit target of the site's framing the camera returns to, m (null once the player has moved the camera). */

@@ -137,7 +137,7 @@ describe('3D rigid-body games in headless Chromium', () => {
     // Before the first swing a hint over the scene says what a click does.
     const hint = g.page.locator('[data-hud="tap-hint"]');
     expect(await hint.textContent()).toBe('Drag back from a block and let go: the ball swings into it along the arrow');
-    // A click on open ground (in front of the crane, the farthest from every piece) sends the hook
+    // A click on open ground (in front of the crane, the farthest from every piece and the ball) sends the hook
     // there (the goal is set at once), and the hint says so, and what to click instead.
     await g.press('p');
     const ground = await g.page.evaluate(() => {
@@ -151,7 +151,12 @@ describe('3D rigid-body games in headless Chromium', () => {
           if (r < 3.5 || r > 10) continue;
           const s = game.app.camera.position.clone().set(x, 0, z).project(game.app.camera);
           if (Math.abs(s.x) > 0.8 || s.y > 0 || s.y < -0.8) continue;
-          const d = Math.min(...game.handles().pieces.map((p) => Math.hypot(P.x[p.body]! - x, P.z[p.body]! - z)));
+          // (Open ground: away from the pieces and from the ball, which hangs between the structures.)
+          const b = game.handles().ball;
+          const d = Math.min(
+            ...game.handles().pieces.map((p) => Math.hypot(P.x[p.body]! - x, P.z[p.body]! - z)),
+            Math.hypot(P.x[b]! - x, P.z[b]! - z),
+          );
           if (d > best[2]!) best = [x, z, d];
         }
       const s = game.app.camera.position.clone().set(best[0]!, 0, best[1]!).project(game.app.camera);
@@ -342,7 +347,9 @@ describe('3D rigid-body games in headless Chromium', () => {
     expect(Math.hypot(after[0]! - framed[0]!, after[1]! - framed[1]!, after[2]! - framed[2]!)).toBeLessThan(1e-3);
     await g.page.setViewportSize({ width: 1280, height: 800 });
     await g.page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+    // (Measured with "more controls" unfolded: folded, the legend is one line and the column has room.)
     const column = await g.page.evaluate(() => {
+      document.querySelector<HTMLDetailsElement>('details[data-hud="more-controls"]')!.open = true;
       const info = document.querySelector('.bp-info')!;
       const last = info.lastElementChild!.getBoundingClientRect();
       return {
@@ -409,6 +416,65 @@ describe('3D rigid-body games in headless Chromium', () => {
     expect((await hint.textContent())!.startsWith(banner!)).toBe(true);
     expect(g.errors).toEqual([]);
     await g.close();
+  });
+
+  it('wrecking-ball: P dims the view and says paused; the legend leads with the drag; the jib fades toward the camera; the ball starts clear', async () => {
+    const g = await open('wrecking-ball', { shadows: 0 });
+    type WB = Game3D & {
+      jibFaded(): boolean;
+      handles(): { ball: number; crane: { angle: number }; pieces: { x0: number; z0: number }[] };
+      app: { camera: { position: { x: number; z: number } } };
+    };
+    // The pause overlay over the view (not only a word in the sidebar).
+    const overlay = g.page.locator('[data-hud="paused"]');
+    expect(await overlay.isVisible()).toBe(false);
+    await g.page.keyboard.press('p');
+    await g.frames(2);
+    expect(await overlay.isVisible()).toBe(true);
+    expect(await overlay.textContent()).toContain('Paused');
+    await g.page.keyboard.press('p');
+    await g.frames(2);
+    expect(await overlay.isVisible()).toBe(false);
+    // The legend: the drag first, the other controls folded (closed) under "more controls".
+    const legend = await g.page.evaluate(() => {
+      const el = document.querySelector('.bp-legend')!;
+      const more = el.querySelector<HTMLDetailsElement>('details[data-hud="more-controls"]');
+      return {
+        first: el.firstElementChild?.textContent ?? '',
+        folded: more ? more.querySelectorAll(':scope > div').length : -1,
+        open: more?.open ?? null,
+        all: el.textContent ?? '',
+      };
+    });
+    expect(legend.first).toContain('Drag a target');
+    expect(legend.folded).toBeGreaterThanOrEqual(8);
+    expect(legend.open).toBe(false);
+    for (const key of ['P', 'R', 'Space', 'Right-drag']) expect(legend.all).toContain(key);
+    // The ball hangs clear of every structure at the start (2.5 m or more across the ground from
+    // each piece's place): it hung in front of level 1's plank stack.
+    const clearance = await g.page.evaluate(() => {
+      const game = window.game as unknown as WB;
+      const P = game.world.components.Position;
+      const b = game.handles().ball;
+      return Math.min(...game.handles().pieces.map((p) => Math.hypot(P.x[b]! - p.x0, P.z[b]! - p.z0)));
+    });
+    expect(clearance).toBeGreaterThan(2.5);
+    // The jib turned to point at the camera is drawn faded; turned away from it, solid.
+    const faded = async (toward: boolean) => {
+      await g.page.evaluate((toward) => {
+        const game = window.game as unknown as WB;
+        const c = game.app.camera.position;
+        game.handles().crane.angle = Math.atan2(-c.z, c.x) + (toward ? 0 : Math.PI);
+      }, toward);
+      await g.frames(2);
+      return g.page.evaluate(() => (window.game as unknown as WB).jibFaded());
+    };
+    await g.page.evaluate(() => {
+      (window.game as unknown as WB).paused = true;
+    });
+    expect(await faded(true)).toBe(true);
+    expect(await faded(false)).toBe(false);
+    expect(g.errors).toEqual([]);
   });
 
   it('lab-rigid-3d: keys switch scenes, a mouse drag lifts a box, dominoes fall in turn', async () => {
