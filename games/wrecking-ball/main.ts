@@ -766,7 +766,7 @@ jibFadedMaterial.transparent = true;
 jibFadedMaterial.opacity = 0.22;
 jibFadedMaterial.alphaTest = 0.05;
 jibFadedMaterial.depthWrite = false;
-const jib = new Mesh(new BoxGeometry(JIB_LENGTH, 0.55, 0.55), jibMaterial);
+const jib = new Mesh<BoxGeometry, Material>(new BoxGeometry(JIB_LENGTH, 0.55, 0.55), jibMaterial);
 jib.castShadow = true;
 app.scene.add(jib);
 // The counter-jib's concrete counterweight and the operator's cab at the top of the mast, turning with the jib.
@@ -838,7 +838,7 @@ function placeJibFade(a: number): void {
   const fade = jibFaded ? facing > JIB_UNFADE : facing > JIB_FADE;
   if (fade === jibFaded) return;
   jibFaded = fade;
-  jib.material = fade ? jibFadedMaterial : jibMaterial;
+  jib.material = asDrawn(fade ? jibFadedMaterial : jibMaterial);
   jib.castShadow = true;
 }
 
@@ -1721,6 +1721,9 @@ function swapMaterials(): void {
       o.material = stand;
     }
   });
+  // The jib's faded or solid material as the quality draws it (placeJibFade sets it as drawn, so a
+  // lite jib's stand-in has no entry to swap back from).
+  jib.material = asDrawn(jibFaded ? jibFadedMaterial : jibMaterial);
 }
 /** Frames a second under which a page drawing at full quality steps down to lite by itself. */
 const AUTO_LITE_FPS = 20;
