@@ -457,9 +457,11 @@ function updateStatus(wx: number, wy: number, wz: number): void {
     );
   } else {
     status.set({
-      goal: 'Free spin: push the cube and watch ω (magenta) wander round L (yellow)',
+      // A cube's inertia is the same about every axis, so its ω stays along L; the box (M) is the one
+      // whose ω wanders and flips.
+      goal: 'Free spin: a cube turns alike about every axis, so ω (magenta) stays on L (yellow)',
       numbers: `|ω| ${w.toFixed(2)} rad/s · angle L–ω ${angleLw.toFixed(1)}°`,
-      hint: 'M: the flip challenge',
+      hint: 'M: a box, whose ω wanders and flips',
     });
   }
 }
