@@ -228,12 +228,23 @@ describe('projects', () => {
     // course no transfer flies): it turns the arrow along the Earth's path and says why.
     await g.page.evaluate(() => (window.game as unknown as Flow).setAim(30, 3));
     await g.press('3');
-    await g.frames(3);
-    const mars = await g.page.evaluate(() => {
-      const m = (window.game as unknown as { markers(): Record<string, Marker> }).markers().Mars!;
-      const stage = document.querySelector('.bp-stage')!.getBoundingClientRect();
-      return { x: stage.left + m.x, y: stage.top + m.y };
-    });
+    // The markers are where the last drawn frame put them, and the view eases to its new zoom: click
+    // where Mars is once two drawn frames in a row show it in the same place.
+    const marsAt = () =>
+      g.page.evaluate(() => {
+        const game = window.game as unknown as { markers(): Record<string, Marker>; pacer: { drawn: number } };
+        const m = game.markers().Mars!;
+        const stage = document.querySelector('.bp-stage')!.getBoundingClientRect();
+        return { x: stage.left + m.x, y: stage.top + m.y, drawn: game.pacer.drawn };
+      });
+    let mars = await marsAt();
+    for (let tries = 0; tries < 100; tries++) {
+      await g.waitFor((d) => (window.game as unknown as { pacer: { drawn: number } }).pacer.drawn > d, mars.drawn);
+      const next = await marsAt();
+      const still = Math.hypot(next.x - mars.x, next.y - mars.y) < 0.5;
+      mars = next;
+      if (still) break;
+    }
     await g.page.mouse.click(mars.x, mars.y);
     expect((await g.page.evaluate(() => (window.game as unknown as Flow).mission())).aim.angle).toBe(0);
     expect(await g.page.locator('[data-hud="brief"]').textContent()).toMatch(/^A probe does not fly straight at Mars/);
