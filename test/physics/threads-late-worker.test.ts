@@ -1,9 +1,10 @@
-import { createPhysicsWorld, disposeWorld, enableThreads, type PhysicsWorld, SCENES, stateHash, stepMany } from '@bitphysics/physics';
-import { afterEach, expect, test } from 'vitest';
+import { createPhysicsWorld, enableThreads, type PhysicsWorld, SCENES, stateHash, stepMany } from '@bitphysics/physics';
+import { expect, test } from 'vitest';
 import { stageThreading } from '../../packages/physics/src/solver/stages-threads.js';
 import { testKernel } from '../../packages/physics/src/step/kernel-table.js';
 import { holdWorkerForTests, sharedFloat64, type ThreadPool } from '../../packages/physics/src/threads/pool.js';
 import { CONTROL } from '../../packages/physics/src/threads/worker-main.js';
+import { threadTestWorlds } from './thread-worlds';
 
 // A late worker (one the system does not schedule for a while) costs time, never an error (issue 32;
 // threads/pool.ts): the calling thread runs every range a worker has not claimed when it has finished
@@ -15,12 +16,7 @@ import { CONTROL } from '../../packages/physics/src/threads/worker-main.js';
 
 enableThreads();
 
-const worlds: PhysicsWorld[] = [];
-const saved = stageThreading.minPerThread;
-afterEach(() => {
-  for (const w of worlds.splice(0)) disposeWorld(w);
-  stageThreading.minPerThread = saved;
-});
+const worlds = threadTestWorlds();
 
 const pause = (ms: number): void => {
   Atomics.wait(new Int32Array(new SharedArrayBuffer(4)), 0, 0, ms);

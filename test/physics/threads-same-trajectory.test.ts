@@ -2,18 +2,18 @@ import {
   addBody,
   addDistanceJoint,
   createPhysicsWorld,
-  disposeWorld,
   enableThreads,
   type PhysicsWorld,
   SCENES,
   stateHash,
   stepMany,
 } from '@bitphysics/physics';
-import { afterEach, expect, test } from 'vitest';
+import { expect, test } from 'vitest';
 import { CONTACTS_MIN_PER_THREAD } from '../../packages/physics/src/collision/narrowphase/balls-threads.js';
 import { Rng } from '../../packages/physics/src/math/rng.js';
 import { lastColorCount } from '../../packages/physics/src/solver/coloring.js';
 import { stageThreading } from '../../packages/physics/src/solver/stages-threads.js';
+import { threadTestWorlds } from './thread-worlds';
 
 // One trajectory on any thread count (issue 32): every stage's order is the same with `threads: 1` and
 // `threads: n`, so stateHash (every bit of every body) after a run must be equal on 1, 2, 3 and 4
@@ -27,12 +27,7 @@ import { stageThreading } from '../../packages/physics/src/solver/stages-threads
 
 enableThreads();
 
-const worlds: PhysicsWorld[] = [];
-const saved = stageThreading.minPerThread;
-afterEach(() => {
-  for (const w of worlds.splice(0)) disposeWorld(w);
-  stageThreading.minPerThread = saved;
-});
+const worlds = threadTestWorlds();
 
 /** `scene` with `count` bodies on `threads` threads, stepped `steps` times; its state hash. */
 function run(scene: string, count: number, steps: number, threads: number, adaptive: boolean): { hash: string; world: PhysicsWorld } {

@@ -1,7 +1,8 @@
-import { createPhysicsWorld, disposeWorld, enableThreads, type PhysicsWorld, SCENES, stateHash, step, stepMany } from '@bitphysics/physics';
-import { afterEach, expect, test } from 'vitest';
+import { createPhysicsWorld, enableThreads, type PhysicsWorld, SCENES, stateHash, step, stepMany } from '@bitphysics/physics';
+import { expect, test } from 'vitest';
 import { stageThreading } from '../../packages/physics/src/solver/stages-threads.js';
 import { warmStartTable } from '../../packages/physics/src/solver/warm-start-kernel.js';
+import { threadTestWorlds } from './thread-worlds';
 
 // Worlds with threads > 1 need the thread pool (step/enable-threads.ts).
 enableThreads();
@@ -14,12 +15,7 @@ enableThreads();
 // checked against the conservation law rather than another run, a pile falling from rest never holds
 // more mechanical energy than it started with (tolerance 1e-9 of it: rounding).
 
-const worlds: PhysicsWorld[] = [];
-const saved = stageThreading.minPerThread;
-afterEach(() => {
-  for (const w of worlds.splice(0)) disposeWorld(w);
-  stageThreading.minPerThread = saved;
-});
+const worlds = threadTestWorlds();
 
 const scene = SCENES['balls-in-box']!;
 
