@@ -1925,8 +1925,6 @@ pageLayout().stage.append(hint);
  * lets pointer events through: a swing may still be aimed while paused (P or ▶ resumes).
  */
 const pauseOverlay = createDomPauseOverlay(pageLayout().stage);
-// It covers the scene on purpose, only while paused: part of the scene, not page furniture over it.
-pauseOverlay.element.dataset.sceneOverlay = '';
 
 /**
  * The legend led by the one move a level needs (dragging a target), the rest (the shell's P, N, R and

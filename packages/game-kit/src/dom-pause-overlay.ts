@@ -17,7 +17,11 @@ export interface DomPauseOverlayOptions {
 
 /** A pause overlay made by `createDomPauseOverlay`. */
 export interface DomPauseOverlay {
-  /** The overlay's element (data-hud="paused"), a child of the parent given. */
+  /**
+   * The overlay's element (data-hud="paused", and data-scene-overlay: it covers the scene on purpose,
+   * only while paused, so a check for page furniture over the scene passes it by), a child of the
+   * parent given.
+   */
   readonly element: HTMLDivElement;
   /** Whether the overlay shows (as last updated). */
   readonly visible: boolean;
@@ -45,6 +49,7 @@ export function createDomPauseOverlay(parent: HTMLElement, options: DomPauseOver
   if (!(alpha >= 0 && alpha <= 1)) throw new RangeError(`createDomPauseOverlay: shadeAlpha must be in [0, 1], got ${alpha}`);
   const element = document.createElement('div');
   element.dataset.hud = 'paused';
+  element.dataset.sceneOverlay = '';
   element.setAttribute('role', 'status');
   // Above the scene's other overlays (labels, tips: z-index 6), under the page's menus.
   element.style.cssText = `position: absolute; inset: 0; z-index: 20; display: none; flex-direction: column; align-items: center; justify-content: center; gap: 6px; background: rgba(0, 0, 0, ${alpha}); color: #fff; font: 800 40px/1.15 system-ui, sans-serif; text-align: center; text-shadow: 0 0 6px #000, 0 2px 3px #000; user-select: none; pointer-events: ${options.onResume ? 'auto' : 'none'}; cursor: ${options.onResume ? 'pointer' : 'default'};`;
