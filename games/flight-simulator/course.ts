@@ -464,11 +464,22 @@ export function pathThroughRing(
 
 /**
  * How the assisted aircraft settles when the stick is let go (./assist.ts; fitted to the flown
- * response at the trim speed): the bank and the flight path keep their rates for `delay` s (the keys'
- * inputs fall back and the surfaces follow), then each returns to level, as fast as at `rollRate`
- * (rad/s) and `pathRate` (rad/s), within `bankTime` and `pathTime` (s, time constants) near level.
+ * response at the trim speed): the roll rate turns from what it is towards a roll back to level, as
+ * fast as `rollRate` (rad/s) and within `bankTime` (s, time constant) near level, over the time
+ * constant `rollLag` (s: the aircraft's roll inertia and the ailerons' travel); the flight path keeps
+ * its rate for `delay` s (the keys' inputs fall back and the elevator follows), then returns to
+ * level as fast as `pathRate` (rad/s), within `pathTime` (s) near level. A touch's held bank
+ * (./assist.ts heldBank) is rolled to within `heldTime` (s).
  */
-export const LET_GO = Object.freeze({ delay: 0.15, bankTime: 0.3, heldTime: 0.37, rollRate: 0.7, pathTime: 0.65, pathRate: 0.25 });
+export const LET_GO = Object.freeze({
+  delay: 0.15,
+  rollLag: 0.12,
+  bankTime: 0.3,
+  heldTime: 0.37,
+  rollRate: 0.9,
+  pathTime: 0.65,
+  pathRate: 0.25,
+});
 
 /** The aircraft's motion now for `predictThroughRing`. */
 export interface Motion {
@@ -495,8 +506,8 @@ const PREDICT_BANK = (75 * Math.PI) / 180;
 /**
  * Where the aircraft's path meets `ring`'s plane: the time to get there (s), the point (m, world)
  * and its distance from the ring's centre (m), like `pathThroughRing`, but along the curved path the
- * aircraft flies. With `letGo` (the assist on) the pilot lets go now: the bank and the flight path
- * go on at their rates for LET_GO.delay s, then settle to level (LET_GO), the path turning at
+ * aircraft flies. With `letGo` (the assist on) the pilot lets go now: the bank's roll turns back
+ * to level and the flight path settles (LET_GO), the path turning at
  * g tan(bank) / V the while (a coordinated turn); without, the bank and the flight path are held as
  * they are (a steady turn). The speed is kept. Stepped every `dt` s (default 1/30) for at most
  * `horizon` s (default 20): a plane not met by then gives { time: Infinity, offset: Infinity }.
@@ -532,6 +543,8 @@ export function predictThroughRing(
     b = bank,
     path = Math.asin(Math.max(-1, Math.min(1, velocity[1]! / speed))),
     heading = Math.atan2(velocity[2]!, velocity[0]!);
+  // The predicted roll rate, rad/s.
+  let omega = rollRate;
   let target = held ? held.bank : 0,
     holding = held !== null;
   const gapOf = (px: number, py: number, pz: number) => (ring.x - px) * ring.nx + (ring.y - py) * ring.ny + (ring.z - pz) * ring.nz;
@@ -547,15 +560,20 @@ export function predictThroughRing(
         // A touch's bank held (./assist.ts heldBank), then unwound at ASSIST.bankRate: the bank rolls
         // towards it at the roll rate it has (at least LET_GO.rollRate) while it is short of it.
         const fastest = Math.max(Math.abs(rollRate), LET_GO.rollRate) * dt;
-        b += Math.max(-fastest, Math.min(fastest, (target - b) * (1 - Math.exp(-dt / LET_GO.heldTime))));
+        const roll = Math.max(-fastest, Math.min(fastest, (target - b) * (1 - Math.exp(-dt / LET_GO.heldTime))));
+        b += roll;
+        omega = roll / dt;
         path = settle(path, LET_GO.pathTime, LET_GO.pathRate);
         if (t >= held!.time) target -= Math.sign(target) * Math.min(Math.abs(target), ASSIST.bankRate * dt);
-      } else if (t < LET_GO.delay) {
-        b += rollRate * dt;
-        path += pathRate * dt;
       } else {
-        b = settle(b, LET_GO.bankTime, LET_GO.rollRate);
-        path = settle(path, LET_GO.pathTime, LET_GO.pathRate);
+        // The roll rate turns from what it is towards the roll back to level (at most
+        // LET_GO.rollRate, within LET_GO.bankTime near level) over the time constant LET_GO.rollLag;
+        // the flight path keeps its rate for LET_GO.delay s, then settles.
+        const wanted = -Math.sign(b) * Math.min(LET_GO.rollRate, Math.abs(b) / LET_GO.bankTime);
+        omega += (wanted - omega) * (1 - Math.exp(-dt / LET_GO.rollLag));
+        b += omega * dt;
+        if (t < LET_GO.delay) path += pathRate * dt;
+        else path = settle(path, LET_GO.pathTime, LET_GO.pathRate);
       }
     }
     const turn = (9.81 * Math.tan(Math.max(-PREDICT_BANK, Math.min(PREDICT_BANK, b)))) / speed;
