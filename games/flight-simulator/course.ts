@@ -618,20 +618,28 @@ export function compareWithBest(previous: BestResult | null, passed: number, tim
 export const TURN_BACK_DISTANCE = 3000;
 /** How long (s) the aircraft may fly away from the next ring (closing on it at under -5 m/s) before the cue shows. */
 export const TURN_BACK_AWAY_TIME = 6;
+/**
+ * A bank towards the ring at least this steep, rad (15 degrees), is the pilot turning back already:
+ * the cue does not show (a stranger was told to turn back while banked round towards the ring).
+ */
+export const TURN_BACK_BANK = (15 * Math.PI) / 180;
 
 /**
  * Whether to tell the pilot to turn back to the next ring, and which way: when the ring lies behind
  * the wing line (its bearing from the nose more than 90 degrees) and the aircraft has flown away
  * from it for `awayFor` s, or is farther than TURN_BACK_DISTANCE from it. `toRing` is the ring's centre minus the
  * aircraft's position (m, world), `heading` the direction of its nose in the level plane (rad, from +x towards +z, as ./assist.ts flightState gives it).
+ * `bank` is the aircraft's bank (rad, + right wing down; default 0): banked TURN_BACK_BANK or more
+ * towards the side the ring lies on, the pilot is turning back already and no cue shows.
  * Returns null for no cue (always for a ring ahead of the wing line), else the side the ring lies on, 'left' or 'right' of the nose seen from
  * above (+y up; the right of a nose along +x is +z), the way to turn; straight behind says 'left'.
- * @throws RangeError on a `toRing` that is not 3 finite numbers or a `heading` that is not finite.
+ * @throws RangeError on a `toRing` that is not 3 finite numbers or a `heading` or `bank` that is not finite.
  */
-export function turnBackCue(toRing: readonly number[], heading: number, awayFor: number): 'left' | 'right' | null {
+export function turnBackCue(toRing: readonly number[], heading: number, awayFor: number, bank = 0): 'left' | 'right' | null {
   if (toRing.length < 3 || !toRing.slice(0, 3).every(Number.isFinite))
     throw new RangeError(`turnBackCue: toRing must be 3 finite numbers, got ${toRing.join(', ')}`);
   if (!Number.isFinite(heading)) throw new RangeError(`turnBackCue: heading must be a finite number (rad), got ${heading}`);
+  if (!Number.isFinite(bank)) throw new RangeError(`turnBackCue: bank must be a finite number (rad), got ${bank}`);
   const distance = Math.hypot(toRing[0]!, toRing[1]!, toRing[2]!);
   if (distance <= TURN_BACK_DISTANCE && !(awayFor >= TURN_BACK_AWAY_TIME)) return null;
   const fx = Math.cos(heading),
@@ -641,5 +649,28 @@ export function turnBackCue(toRing: readonly number[], heading: number, awayFor:
   if (fx * toRing[0]! + fz * toRing[2]! >= 0) return null;
   // The ring's bearing relative to the nose, in the level plane: the cross product's sign says the side.
   const cross = fx * toRing[2]! - fz * toRing[0]!;
-  return cross > 0 ? 'right' : 'left';
+  const side = cross > 0 ? 'right' : 'left';
+  // Already banked round towards it: the pilot is turning back.
+  if ((side === 'right' ? bank : -bank) >= TURN_BACK_BANK) return null;
+  return side;
+}
+
+/**
+ * Turns `ring` to face an aircraft at `from` (m, world): its way through becomes the line from
+ * `from` to its centre, so that a ring met after a miss, or flown past far off and come back to, is
+ * seen face on, not edge on, and is flown through the way the aircraft comes. Changes the ring's
+ * normal only (its centre stays); nothing changes when `from` is at the centre.
+ * @throws RangeError on a `from` that is not 3 finite numbers.
+ */
+export function faceRing(ring: Ring, from: readonly number[]): void {
+  if (from.length < 3 || !from.slice(0, 3).every(Number.isFinite))
+    throw new RangeError(`faceRing: from must be 3 finite numbers, got ${from.join(', ')}`);
+  const dx = ring.x - from[0]!,
+    dy = ring.y - from[1]!,
+    dz = ring.z - from[2]!,
+    length = Math.hypot(dx, dy, dz);
+  if (!(length > 0)) return;
+  ring.nx = dx / length;
+  ring.ny = dy / length;
+  ring.nz = dz / length;
 }

@@ -82,6 +82,7 @@ import {
   compareWithBest,
   courseStars,
   courseTime,
+  faceRing,
   flyRings,
   layCourse,
   lessonTipText,
@@ -438,6 +439,17 @@ function checkRings(time: number): void {
     }
   }
   const next = nextRing(rings);
+  // Recovering from a miss: the ring now next turns to face the aircraft (a ring met at an angle
+  // was seen edge on), and so does one whose plane the aircraft crossed far off (beyond MISS_RANGE:
+  // neither passed nor missed), so that coming back to it flies through it the way it comes.
+  if (next >= 0) {
+    const r = rings[next]!;
+    const behind = (r.x - now[0]!) * r.nx + (r.y - now[1]!) * r.ny + (r.z - now[2]!) * r.nz <= 0;
+    if ((next !== before && rings[next - 1]?.status === 'missed') || behind) {
+      faceRing(r, now);
+      ringMeshes[next]?.quaternion.setFromUnitVectors(zAxis, ringNormal.set(r.nx, r.ny, r.nz));
+    }
+  }
   if (next < 0) finish(time);
   // A lesson's ring next (2 to 4): the flight waits while its tip is read, unless the pilot is
   // flying it already (a key or the stick held: no key would come to go on with).
@@ -1044,7 +1056,8 @@ function showTurnBack(): void {
     const r = rings[n]!,
       world = shell.world,
       e = handles.body;
-    const side = turnBackCue([r.x - now[0]!, r.y - now[1]!, r.z - now[2]!], flightState(world, e).heading, awayFor);
+    const s = flightState(world, e);
+    const side = turnBackCue([r.x - now[0]!, r.y - now[1]!, r.z - now[2]!], s.heading, awayFor, s.bank);
     if (side) text = side === 'left' ? `◀ Turn back: ring ${n + 1} is behind you` : `Turn back: ring ${n + 1} is behind you ▶`;
   }
   if (text !== turnBackText) {
