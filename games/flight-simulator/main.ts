@@ -287,8 +287,6 @@ addEventListener('keydown', (e) => {
     state.throttle = throttleStep(state.throttle, way);
     throttlePressedAt = shell.world.time;
     throttleShownAt = performance.now();
-    // The readout says the new setting on the next frame too.
-    readoutFrame = 0;
   }
 });
 addEventListener('keyup', (e) => {
@@ -820,16 +818,20 @@ function updateGoal(): void {
   goalLine.style.color = shell.world.time - missedAt < 2 ? '#ff8a5a' : '#ffd166';
 }
 
+/** What the end card says now ('' while flying): it is built again only when this changes. */
+let shownCard = '';
+/** The readout, the side panel and the end card for the readings `i`, every frame, so that they agree with the goal line and the banner. */
 function updateHud(i: ReturnType<typeof instruments>): void {
   const total = rings.length;
   const speed = `${i.speed.toFixed(0)} m/s`;
   const missedNote = state.missed > 0 ? ` · missed ${state.missed}` : '';
   // On a phone the misses are said by the goal line's penalty and stars, not again here.
-  readLine.textContent = compact
+  const read = compact
     ? `${speed} · alt ${i.altitude.toFixed(0)} m · engine ${(state.throttle * 100).toFixed(0)}% · rings ${state.score}/${total}`
     : `${speed} · alt ${i.altitude.toFixed(0)} m · throttle ${(state.throttle * 100).toFixed(0)}% · rings ${state.score}/${total}${missedNote}`;
-  if (!compact)
-    panelEl.textContent = [
+  if (readLine.textContent !== read) readLine.textContent = read;
+  if (!compact) {
+    const text = [
       `airspeed  ${i.speed.toFixed(0).padStart(4)} m/s  ${(i.speed * 1.944).toFixed(0).padStart(4)} kt`,
       `altitude  ${i.altitude.toFixed(0).padStart(5)} m   above ground ${i.agl.toFixed(0)} m`,
       `climb     ${i.climb.toFixed(1).padStart(6)} m/s`,
@@ -839,7 +841,12 @@ function updateHud(i: ReturnType<typeof instruments>): void {
       `throttle  ${(state.throttle * 100).toFixed(0).padStart(4)}%`,
       `assist    ${params.assist ? 'on' : 'off'}`,
     ].join('\n');
-  // The end card and its button.
+    if (panelEl.textContent !== text) panelEl.textContent = text;
+  }
+  // The end card and its button (built again only when what it says changes).
+  const card = state.phase === 'flying' ? '' : `${state.phase} ${state.score} ${state.missed} ${state.time} ${lastVsBest}`;
+  if (card === shownCard) return;
+  shownCard = card;
   if (state.phase === 'flying') {
     endCard.style.display = 'none';
     showAgain(false);
@@ -1241,7 +1248,8 @@ const THROTTLE_NOTE_MS = 1500;
 /** Shows the engine's note while the throttle moved by Faster or Slower less than THROTTLE_NOTE_MS ago. */
 function showThrottleNote(): void {
   const on = state.phase === 'flying' && performance.now() - throttleShownAt < THROTTLE_NOTE_MS;
-  const text = on ? `Engine ${(state.throttle * 100).toFixed(0)} %` : '';
+  // The word the readout uses for it (a desktop's "throttle", a phone's "engine").
+  const text = on ? `${compact ? 'Engine' : 'Throttle'} ${(state.throttle * 100).toFixed(0)} %` : '';
   if (throttleWords.textContent !== text) throttleWords.textContent = text;
   const fill = `${(state.throttle * 100).toFixed(0)}%`;
   if (throttleFill.style.width !== fill) throttleFill.style.width = fill;
@@ -1424,11 +1432,8 @@ function chaseOffsetNow(): [number, number] {
 }
 /** The camera's field of view, degrees: `base`, widened by up to `fast` more between `from` and `to` m/s (speed shows). */
 const FOV = Object.freeze({ base: 64, fast: 10, from: 110, to: 170 });
-let readoutFrame = 0;
 /** performance.now() of the last frame the aircraft's fade was eased in, ms. */
 let lastFade = 0;
-/** The phase the HUD showed last. */
-let shownPhase = '';
 
 function frame(): void {
   const world = shell.world;
@@ -1451,10 +1456,9 @@ function frame(): void {
       ringAim.inView = false;
       ringAim.text = '';
     }
-    if (crashReadings && shownPhase !== state.phase) {
-      shownPhase = state.phase;
-      updateHud(crashReadings);
-    }
+    // The readouts too: every figure over and beside the scene says the same moment (the readout
+    // kept every 6th drawn frame said "rings 0/10" under the banner's "Ring 1 ✓").
+    updateHud(crashReadings ?? instruments(world));
     showTip();
     showThrottleNote();
     placeMessages();
@@ -1533,11 +1537,7 @@ function frame(): void {
   drawCrash();
   updateBanner(world.time);
   updateGoal();
-  // At once when the flight ends (the end card and the readouts at the crash), else every 6th frame.
-  if (readoutFrame++ % 6 === 0 || state.phase !== shownPhase) {
-    shownPhase = state.phase;
-    updateHud(i);
-  }
+  updateHud(i);
   showTurnBack();
   showThrottleNote();
   placeMessages();
