@@ -1,7 +1,7 @@
 // `node scripts/flight-simulator-pilots.mjs [seed ...]`: how many of the first 10 rings of the flight
 // simulator's course (games/flight-simulator/course.ts, laid as the game lays it: seed + 7, from
 // 900 m) two headless pilots pass, flown as the game steps the aircraft (the assist on, the surfaces
-// following it at 6 per second, full stick CONTROL_AUTHORITY degrees, the ailerons AILERON_SCALE times
+// following it at SURFACE_RATE.assist, full stick CONTROL_AUTHORITY degrees, the ailerons AILERON_SCALE times
 // that; the marker follows the bank a short touch holds, assist.ts heldBank). Default seeds 1 to 8 (the
 // game's default seed is 1).
 // - `scripted`: the pilot of test/games/flight-simulator-course.test.ts (wings level in the last
@@ -99,7 +99,7 @@ const fly = (seed, pilot) => {
   const rings = fs.layCourse({ terrain: h.terrain, seed: seed + 7, count: 10, start: [0, 900, 0] });
   const state = fs.createAssistState(),
     surface = { aileron: 0, elevator: 0, rudder: 0 },
-    rate = 6 * world.dt,
+    rate = fs.SURFACE_RATE.assist * world.dt,
     full = fs.CONTROL_AUTHORITY * DEG;
   const P = world.components.Position,
     e = h.body;

@@ -78,11 +78,12 @@ export interface FlightState {
 export const CONTROL_AUTHORITY = 25;
 
 /**
- * Full deflection of the ailerons as a multiple of the control authority (30 degrees at the default
- * 25): they roll the aircraft at about 1 rad/s, so a 70 degree bank rolls level in about a second
- * and the turn runs on only a few degrees past the release.
+ * Full deflection of the ailerons as a multiple of the control authority (40 degrees at the default
+ * 25, within the 45 the lifting surfaces take): they roll the aircraft at up to about 1.35 rad/s, so
+ * a bank rolls level soon after the key is let go and the turn stops there (at 1.2 the roll was
+ * 1 rad/s and a 0.7 s hold turned 80 % of its heading after the release).
  */
-export const AILERON_SCALE = 1.2;
+export const AILERON_SCALE = 1.6;
 
 /** The assist's settings. */
 export const ASSIST = Object.freeze({
@@ -103,14 +104,14 @@ export const ASSIST = Object.freeze({
   /** Width of the fade below `maxPath`, rad. */
   pathFade: 10 * DEG,
   /**
-   * Aileron per radian of bank error (1/rad): full aileron rolls at about 0.8 rad/s at cruise, and
-   * full aileron is asked for until the bank is within 10 degrees of the one asked for, so the wings
-   * roll level briskly when the stick is let go (with 2.5 the last 15 degrees took 1.4 s, and the
-   * turn ran on 3 degrees of heading past the release: players overshot).
+   * Aileron per radian of bank error (1/rad): full aileron is asked for until the bank is within 6
+   * degrees of the one asked for, so the wings roll level briskly when the stick is let go (with 2.5
+   * the last 15 degrees took 1.4 s, and the turn ran on 3 degrees of heading past the release:
+   * players overshot).
    */
-  bankGain: 6,
+  bankGain: 10,
   /** Aileron per rad/s of roll rate, s: damps the roll so that it stops at the bank asked for, not past it. */
-  rollDamping: 0.8,
+  rollDamping: 0.6,
   /** Elevator per radian of flight-path error (1/rad). */
   pathGain: 5,
   /** Elevator per radian-second of flight-path error (1/(rad s)): the integral that finds the trim. */
@@ -251,6 +252,16 @@ export function assist(s: FlightState, input: PilotInput, state: AssistState, dt
     state.rollTap = false;
   }
   const wanted = A.maxBank * roll;
+  // Eased off or let go: the bank asked for never lies beyond the bank the aircraft has (nor short
+  // of the stick's), so the wings stop rolling into the turn at once and roll back from where they
+  // are, and the turn stops soon after the release (a target still 20 degrees ahead of the bank
+  // rolled the aircraft on into the turn for 0.3 s after the key was let go).
+  if (
+    Math.abs(wanted) < Math.abs(state.bankTarget) &&
+    Math.sign(s.bank) === Math.sign(state.bankTarget) &&
+    Math.abs(s.bank) < Math.abs(state.bankTarget)
+  )
+    state.bankTarget = Math.sign(s.bank) * Math.max(Math.abs(s.bank), Math.sign(s.bank) * wanted);
   state.bankTarget += clamp(wanted - state.bankTarget, -A.bankRate * dt, A.bankRate * dt);
   const aileron = clamp(A.bankGain * (state.bankTarget - s.bank) - A.rollDamping * s.rollRate, -1, 1);
   // The stick's own share of the elevator: its deflection |pitch|, faded out over `pathFade` as the
@@ -280,9 +291,11 @@ export function assist(s: FlightState, input: PilotInput, state: AssistState, dt
 
 /**
  * How fast the control surfaces move towards what they are asked, fraction of full deflection per
- * second: to the assist's command, and (without the assist) to the stick's input.
+ * second: to the assist's command (12: the ailerons reverse in a sixth of a second when a bank key
+ * is let go; at 6 the aircraft rolled on into the turn meanwhile), and (without the assist) to the
+ * stick's input.
  */
-export const SURFACE_RATE = Object.freeze({ assist: 6, direct: 3 });
+export const SURFACE_RATE = Object.freeze({ assist: 12, direct: 3 });
 
 /**
  * `value` moved towards `target` by at most `rate` x `dt` (a control surface over a step).
@@ -327,9 +340,9 @@ export interface KeyRamp {
  * How the bank keys move their input (`rampKey`): a press asks at once for `start` (0.3 of full
  * stick, a bank of 21 degrees, which the assist holds for `ASSIST.tapTime`, so a 150 ms tap turns
  * the aircraft about 2.4 degrees), full stick after ln(1.25 / 0.55) / 1.5 = 0.55 s held; released,
- * neutral in 0.25 s.
+ * neutral in 1/12 s, so that the wings start back to level at once (in 0.25 s they first rolled on).
  */
-export const BANK_KEY_RAMP: KeyRamp = Object.freeze({ rise: 1.5, from: 0.25, fall: 4, start: 0.3 });
+export const BANK_KEY_RAMP: KeyRamp = Object.freeze({ rise: 1.5, from: 0.25, fall: 12, start: 0.3 });
 
 /**
  * One step of a keyboard axis on `ramp` (default KEY_RAMP; the bank keys use BANK_KEY_RAMP):

@@ -464,11 +464,22 @@ export function pathThroughRing(
 
 /**
  * How the assisted aircraft settles when the stick is let go (./assist.ts; fitted to the flown
- * response at the trim speed): the bank and the flight path keep their rates for `delay` s (the keys'
- * inputs fall back and the surfaces follow), then each returns to level, as fast as at `rollRate`
- * (rad/s) and `pathRate` (rad/s), within `bankTime` and `pathTime` (s, time constants) near level.
+ * response at the trim speed): the roll rate turns from what it is towards a roll back to level, as
+ * fast as `rollRate` (rad/s) and within `bankTime` (s, time constant) near level, over the time
+ * constant `rollLag` (s: the aircraft's roll inertia and the ailerons' travel); the flight path keeps
+ * its rate for `delay` s (the keys' inputs fall back and the elevator follows), then returns to
+ * level as fast as `pathRate` (rad/s), within `pathTime` (s) near level. A touch's held bank
+ * (./assist.ts heldBank) is rolled to within `heldTime` (s).
  */
-export const LET_GO = Object.freeze({ delay: 0.15, bankTime: 0.3, heldTime: 0.37, rollRate: 0.7, pathTime: 0.65, pathRate: 0.25 });
+export const LET_GO = Object.freeze({
+  delay: 0.15,
+  rollLag: 0.12,
+  bankTime: 0.3,
+  heldTime: 0.37,
+  rollRate: 0.9,
+  pathTime: 0.65,
+  pathRate: 0.25,
+});
 
 /** The aircraft's motion now for `predictThroughRing`. */
 export interface Motion {
@@ -495,8 +506,8 @@ const PREDICT_BANK = (75 * Math.PI) / 180;
 /**
  * Where the aircraft's path meets `ring`'s plane: the time to get there (s), the point (m, world)
  * and its distance from the ring's centre (m), like `pathThroughRing`, but along the curved path the
- * aircraft flies. With `letGo` (the assist on) the pilot lets go now: the bank and the flight path
- * go on at their rates for LET_GO.delay s, then settle to level (LET_GO), the path turning at
+ * aircraft flies. With `letGo` (the assist on) the pilot lets go now: the bank's roll turns back
+ * to level and the flight path settles (LET_GO), the path turning at
  * g tan(bank) / V the while (a coordinated turn); without, the bank and the flight path are held as
  * they are (a steady turn). The speed is kept. Stepped every `dt` s (default 1/30) for at most
  * `horizon` s (default 20): a plane not met by then gives { time: Infinity, offset: Infinity }.
@@ -532,6 +543,8 @@ export function predictThroughRing(
     b = bank,
     path = Math.asin(Math.max(-1, Math.min(1, velocity[1]! / speed))),
     heading = Math.atan2(velocity[2]!, velocity[0]!);
+  // The predicted roll rate, rad/s.
+  let omega = rollRate;
   let target = held ? held.bank : 0,
     holding = held !== null;
   const gapOf = (px: number, py: number, pz: number) => (ring.x - px) * ring.nx + (ring.y - py) * ring.ny + (ring.z - pz) * ring.nz;
@@ -547,15 +560,20 @@ export function predictThroughRing(
         // A touch's bank held (./assist.ts heldBank), then unwound at ASSIST.bankRate: the bank rolls
         // towards it at the roll rate it has (at least LET_GO.rollRate) while it is short of it.
         const fastest = Math.max(Math.abs(rollRate), LET_GO.rollRate) * dt;
-        b += Math.max(-fastest, Math.min(fastest, (target - b) * (1 - Math.exp(-dt / LET_GO.heldTime))));
+        const roll = Math.max(-fastest, Math.min(fastest, (target - b) * (1 - Math.exp(-dt / LET_GO.heldTime))));
+        b += roll;
+        omega = roll / dt;
         path = settle(path, LET_GO.pathTime, LET_GO.pathRate);
         if (t >= held!.time) target -= Math.sign(target) * Math.min(Math.abs(target), ASSIST.bankRate * dt);
-      } else if (t < LET_GO.delay) {
-        b += rollRate * dt;
-        path += pathRate * dt;
       } else {
-        b = settle(b, LET_GO.bankTime, LET_GO.rollRate);
-        path = settle(path, LET_GO.pathTime, LET_GO.pathRate);
+        // The roll rate turns from what it is towards the roll back to level (at most
+        // LET_GO.rollRate, within LET_GO.bankTime near level) over the time constant LET_GO.rollLag;
+        // the flight path keeps its rate for LET_GO.delay s, then settles.
+        const wanted = -Math.sign(b) * Math.min(LET_GO.rollRate, Math.abs(b) / LET_GO.bankTime);
+        omega += (wanted - omega) * (1 - Math.exp(-dt / LET_GO.rollLag));
+        b += omega * dt;
+        if (t < LET_GO.delay) path += pathRate * dt;
+        else path = settle(path, LET_GO.pathTime, LET_GO.pathRate);
       }
     }
     const turn = (9.81 * Math.tan(Math.max(-PREDICT_BANK, Math.min(PREDICT_BANK, b)))) / speed;
@@ -600,20 +618,28 @@ export function compareWithBest(previous: BestResult | null, passed: number, tim
 export const TURN_BACK_DISTANCE = 3000;
 /** How long (s) the aircraft may fly away from the next ring (closing on it at under -5 m/s) before the cue shows. */
 export const TURN_BACK_AWAY_TIME = 6;
+/**
+ * A bank towards the ring at least this steep, rad (15 degrees), is the pilot turning back already:
+ * the cue does not show (a stranger was told to turn back while banked round towards the ring).
+ */
+export const TURN_BACK_BANK = (15 * Math.PI) / 180;
 
 /**
  * Whether to tell the pilot to turn back to the next ring, and which way: when the ring lies behind
  * the wing line (its bearing from the nose more than 90 degrees) and the aircraft has flown away
  * from it for `awayFor` s, or is farther than TURN_BACK_DISTANCE from it. `toRing` is the ring's centre minus the
  * aircraft's position (m, world), `heading` the direction of its nose in the level plane (rad, from +x towards +z, as ./assist.ts flightState gives it).
+ * `bank` is the aircraft's bank (rad, + right wing down; default 0): banked TURN_BACK_BANK or more
+ * towards the side the ring lies on, the pilot is turning back already and no cue shows.
  * Returns null for no cue (always for a ring ahead of the wing line), else the side the ring lies on, 'left' or 'right' of the nose seen from
  * above (+y up; the right of a nose along +x is +z), the way to turn; straight behind says 'left'.
- * @throws RangeError on a `toRing` that is not 3 finite numbers or a `heading` that is not finite.
+ * @throws RangeError on a `toRing` that is not 3 finite numbers or a `heading` or `bank` that is not finite.
  */
-export function turnBackCue(toRing: readonly number[], heading: number, awayFor: number): 'left' | 'right' | null {
+export function turnBackCue(toRing: readonly number[], heading: number, awayFor: number, bank = 0): 'left' | 'right' | null {
   if (toRing.length < 3 || !toRing.slice(0, 3).every(Number.isFinite))
     throw new RangeError(`turnBackCue: toRing must be 3 finite numbers, got ${toRing.join(', ')}`);
   if (!Number.isFinite(heading)) throw new RangeError(`turnBackCue: heading must be a finite number (rad), got ${heading}`);
+  if (!Number.isFinite(bank)) throw new RangeError(`turnBackCue: bank must be a finite number (rad), got ${bank}`);
   const distance = Math.hypot(toRing[0]!, toRing[1]!, toRing[2]!);
   if (distance <= TURN_BACK_DISTANCE && !(awayFor >= TURN_BACK_AWAY_TIME)) return null;
   const fx = Math.cos(heading),
@@ -623,5 +649,28 @@ export function turnBackCue(toRing: readonly number[], heading: number, awayFor:
   if (fx * toRing[0]! + fz * toRing[2]! >= 0) return null;
   // The ring's bearing relative to the nose, in the level plane: the cross product's sign says the side.
   const cross = fx * toRing[2]! - fz * toRing[0]!;
-  return cross > 0 ? 'right' : 'left';
+  const side = cross > 0 ? 'right' : 'left';
+  // Already banked round towards it: the pilot is turning back.
+  if ((side === 'right' ? bank : -bank) >= TURN_BACK_BANK) return null;
+  return side;
+}
+
+/**
+ * Turns `ring` to face an aircraft at `from` (m, world): its way through becomes the line from
+ * `from` to its centre, so that a ring met after a miss, or flown past far off and come back to, is
+ * seen face on, not edge on, and is flown through the way the aircraft comes. Changes the ring's
+ * normal only (its centre stays); nothing changes when `from` is at the centre.
+ * @throws RangeError on a `from` that is not 3 finite numbers.
+ */
+export function faceRing(ring: Ring, from: readonly number[]): void {
+  if (from.length < 3 || !from.slice(0, 3).every(Number.isFinite))
+    throw new RangeError(`faceRing: from must be 3 finite numbers, got ${from.join(', ')}`);
+  const dx = ring.x - from[0]!,
+    dy = ring.y - from[1]!,
+    dz = ring.z - from[2]!,
+    length = Math.hypot(dx, dy, dz);
+  if (!(length > 0)) return;
+  ring.nx = dx / length;
+  ring.ny = dy / length;
+  ring.nz = dz / length;
 }

@@ -82,6 +82,7 @@ import {
   compareWithBest,
   courseStars,
   courseTime,
+  faceRing,
   flyRings,
   layCourse,
   lessonTipText,
@@ -286,8 +287,6 @@ addEventListener('keydown', (e) => {
     state.throttle = throttleStep(state.throttle, way);
     throttlePressedAt = shell.world.time;
     throttleShownAt = performance.now();
-    // The readout says the new setting on the next frame too.
-    readoutFrame = 0;
   }
 });
 addEventListener('keyup', (e) => {
@@ -438,6 +437,17 @@ function checkRings(time: number): void {
     }
   }
   const next = nextRing(rings);
+  // Recovering from a miss: the ring now next turns to face the aircraft (a ring met at an angle
+  // was seen edge on), and so does one whose plane the aircraft crossed far off (beyond MISS_RANGE:
+  // neither passed nor missed), so that coming back to it flies through it the way it comes.
+  if (next >= 0) {
+    const r = rings[next]!;
+    const behind = (r.x - now[0]!) * r.nx + (r.y - now[1]!) * r.ny + (r.z - now[2]!) * r.nz <= 0;
+    if ((next !== before && rings[next - 1]?.status === 'missed') || behind) {
+      faceRing(r, now);
+      ringMeshes[next]?.quaternion.setFromUnitVectors(zAxis, ringNormal.set(r.nx, r.ny, r.nz));
+    }
+  }
   if (next < 0) finish(time);
   // A lesson's ring next (2 to 4): the flight waits while its tip is read, unless the pilot is
   // flying it already (a key or the stick held: no key would come to go on with).
@@ -808,16 +818,20 @@ function updateGoal(): void {
   goalLine.style.color = shell.world.time - missedAt < 2 ? '#ff8a5a' : '#ffd166';
 }
 
+/** What the end card says now ('' while flying): it is built again only when this changes. */
+let shownCard = '';
+/** The readout, the side panel and the end card for the readings `i`, every frame, so that they agree with the goal line and the banner. */
 function updateHud(i: ReturnType<typeof instruments>): void {
   const total = rings.length;
   const speed = `${i.speed.toFixed(0)} m/s`;
   const missedNote = state.missed > 0 ? ` · missed ${state.missed}` : '';
   // On a phone the misses are said by the goal line's penalty and stars, not again here.
-  readLine.textContent = compact
+  const read = compact
     ? `${speed} · alt ${i.altitude.toFixed(0)} m · engine ${(state.throttle * 100).toFixed(0)}% · rings ${state.score}/${total}`
     : `${speed} · alt ${i.altitude.toFixed(0)} m · throttle ${(state.throttle * 100).toFixed(0)}% · rings ${state.score}/${total}${missedNote}`;
-  if (!compact)
-    panelEl.textContent = [
+  if (readLine.textContent !== read) readLine.textContent = read;
+  if (!compact) {
+    const text = [
       `airspeed  ${i.speed.toFixed(0).padStart(4)} m/s  ${(i.speed * 1.944).toFixed(0).padStart(4)} kt`,
       `altitude  ${i.altitude.toFixed(0).padStart(5)} m   above ground ${i.agl.toFixed(0)} m`,
       `climb     ${i.climb.toFixed(1).padStart(6)} m/s`,
@@ -827,7 +841,12 @@ function updateHud(i: ReturnType<typeof instruments>): void {
       `throttle  ${(state.throttle * 100).toFixed(0).padStart(4)}%`,
       `assist    ${params.assist ? 'on' : 'off'}`,
     ].join('\n');
-  // The end card and its button.
+    if (panelEl.textContent !== text) panelEl.textContent = text;
+  }
+  // The end card and its button (built again only when what it says changes).
+  const card = state.phase === 'flying' ? '' : `${state.phase} ${state.score} ${state.missed} ${state.time} ${lastVsBest}`;
+  if (card === shownCard) return;
+  shownCard = card;
   if (state.phase === 'flying') {
     endCard.style.display = 'none';
     showAgain(false);
@@ -1044,7 +1063,8 @@ function showTurnBack(): void {
     const r = rings[n]!,
       world = shell.world,
       e = handles.body;
-    const side = turnBackCue([r.x - now[0]!, r.y - now[1]!, r.z - now[2]!], flightState(world, e).heading, awayFor);
+    const s = flightState(world, e);
+    const side = turnBackCue([r.x - now[0]!, r.y - now[1]!, r.z - now[2]!], s.heading, awayFor, s.bank);
     if (side) text = side === 'left' ? `◀ Turn back: ring ${n + 1} is behind you` : `Turn back: ring ${n + 1} is behind you ▶`;
   }
   if (text !== turnBackText) {
@@ -1228,7 +1248,8 @@ const THROTTLE_NOTE_MS = 1500;
 /** Shows the engine's note while the throttle moved by Faster or Slower less than THROTTLE_NOTE_MS ago. */
 function showThrottleNote(): void {
   const on = state.phase === 'flying' && performance.now() - throttleShownAt < THROTTLE_NOTE_MS;
-  const text = on ? `Engine ${(state.throttle * 100).toFixed(0)} %` : '';
+  // The word the readout uses for it (a desktop's "throttle", a phone's "engine").
+  const text = on ? `${compact ? 'Engine' : 'Throttle'} ${(state.throttle * 100).toFixed(0)} %` : '';
   if (throttleWords.textContent !== text) throttleWords.textContent = text;
   const fill = `${(state.throttle * 100).toFixed(0)}%`;
   if (throttleFill.style.width !== fill) throttleFill.style.width = fill;
@@ -1411,11 +1432,8 @@ function chaseOffsetNow(): [number, number] {
 }
 /** The camera's field of view, degrees: `base`, widened by up to `fast` more between `from` and `to` m/s (speed shows). */
 const FOV = Object.freeze({ base: 64, fast: 10, from: 110, to: 170 });
-let readoutFrame = 0;
 /** performance.now() of the last frame the aircraft's fade was eased in, ms. */
 let lastFade = 0;
-/** The phase the HUD showed last. */
-let shownPhase = '';
 
 function frame(): void {
   const world = shell.world;
@@ -1438,10 +1456,9 @@ function frame(): void {
       ringAim.inView = false;
       ringAim.text = '';
     }
-    if (crashReadings && shownPhase !== state.phase) {
-      shownPhase = state.phase;
-      updateHud(crashReadings);
-    }
+    // The readouts too: every figure over and beside the scene says the same moment (the readout
+    // kept every 6th drawn frame said "rings 0/10" under the banner's "Ring 1 ✓").
+    updateHud(crashReadings ?? instruments(world));
     showTip();
     showThrottleNote();
     placeMessages();
@@ -1520,11 +1537,7 @@ function frame(): void {
   drawCrash();
   updateBanner(world.time);
   updateGoal();
-  // At once when the flight ends (the end card and the readouts at the crash), else every 6th frame.
-  if (readoutFrame++ % 6 === 0 || state.phase !== shownPhase) {
-    shownPhase = state.phase;
-    updateHud(i);
-  }
+  updateHud(i);
   showTurnBack();
   showThrottleNote();
   placeMessages();

@@ -184,6 +184,60 @@ describe('phone controls', () => {
     await g.close();
   });
 
+  it('flight simulator: the stick let go, the wings stop rolling and level; the engine note and the readout say the same figure', async () => {
+    const g = await h.openGame('flight-simulator', PHONE);
+    type Fly = { world: { time: number }; instruments(): { roll: number }; throttleNote(): string };
+    await g.waitFor(() => (window.game as unknown as { pathMarker(): { visible: boolean } }).pathMarker().visible || null, null);
+    // Every frame's bank, with the game time.
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as Fly;
+      const log: [number, number][] = [];
+      (window as unknown as { bankLog: typeof log }).bankLog = log;
+      const rec = () => {
+        log.push([w.world.time, w.instruments().roll]);
+        requestAnimationFrame(rec);
+      };
+      requestAnimationFrame(rec);
+    });
+    // A real finger pushes the stick left until the aircraft banks 30 degrees, then lifts: from the
+    // lift the wings roll at most 4 degrees further and come level within 1.3 s of game time.
+    const stick = (await g.page.getByRole('slider', { name: 'stick: bank and climb' }).boundingBox())!;
+    const cx = stick.x + stick.width / 2,
+      cy = stick.y + stick.height / 2;
+    const cdp = await g.page.context().newCDPSession(g.page);
+    await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: [{ x: cx, y: cy, id: 1 }] });
+    await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: [{ x: cx - 30, y: cy, id: 1 }] });
+    await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: [{ x: cx - 60, y: cy, id: 1 }] });
+    await g.waitFor(() => (window.game as unknown as Fly).instruments().roll < -30 || null, null, 60_000);
+    await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
+    await cdp.detach();
+    const release = await g.page.evaluate(() => {
+      const w = window.game as unknown as Fly;
+      return { time: w.world.time, bank: w.instruments().roll };
+    });
+    const levelAt = await g.waitFor(
+      (t0) => (window as unknown as { bankLog: [number, number][] }).bankLog.find(([t, b]) => t > t0 && Math.abs(b) < 3)?.[0] ?? null,
+      release.time,
+      60_000,
+    );
+    const after = await g.page.evaluate(
+      ([t0, t1]) => (window as unknown as { bankLog: [number, number][] }).bankLog.filter(([t]) => t >= t0! && t <= t1!).map(([, b]) => b),
+      [release.time, levelAt],
+    );
+    expect(Math.max(...after.map(Math.abs)) - Math.abs(release.bank)).toBeLessThan(4);
+    expect(levelAt - release.time).toBeLessThan(1.3);
+    // A tap of Faster: the note and the readout, read in one frame, give the same engine figure.
+    const faster = (await g.page.getByRole('button', { name: 'faster', exact: true }).boundingBox())!;
+    await g.page.touchscreen.tap(faster.x + faster.width / 2, faster.y + faster.height / 2);
+    const said = await g.waitFor(() => {
+      const note = (window.game as unknown as Fly).throttleNote();
+      return note ? { note, read: document.querySelector('[data-hud="readout"]')?.textContent ?? '' } : null;
+    }, null);
+    expect(said.read).toContain(`engine ${said.note.match(/(\d+) %/)?.[1]}%`);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
   it('flight simulator: every lesson tip the phone can show (all rings, both ways named, far or a little) fits in two lines', async () => {
     const g = await h.openGame('flight-simulator', PHONE);
     // Each text the game can write (./course.ts lessonTipText over every ring and way), put in the

@@ -21,6 +21,7 @@ import {
   DESIGN_BANK,
   designArrival,
   FIRST_RING_DISTANCE,
+  faceRing,
   flyRings,
   LESSONS,
   layCourse,
@@ -41,6 +42,7 @@ import {
   ringWay,
   TIP_OFFSET,
   TURN_BACK_AWAY_TIME,
+  TURN_BACK_BANK,
   TURN_BACK_DISTANCE,
   turnBackCue,
 } from '../../games/flight-simulator/course';
@@ -412,7 +414,38 @@ describe('flight simulator course', () => {
     // Heading along +z (pi/2): its right is -x.
     expect(turnBackCue([-4000, 0, -10], Math.PI / 2, 0)).toBe('right');
     expect(turnBackCue([4000, 0, -10], Math.PI / 2, 0)).toBe('left');
+    // Banked 15 degrees or more towards the ring, the pilot is turning back already: no cue; banked
+    // the other way, or less, the cue stays (a stranger was told to turn back while banked round).
+    expect(turnBackCue([-1000, 0, 200], 0, TURN_BACK_AWAY_TIME, TURN_BACK_BANK)).toBeNull();
+    expect(turnBackCue([-1000, 0, 200], 0, TURN_BACK_AWAY_TIME, TURN_BACK_BANK - 0.01)).toBe('right');
+    expect(turnBackCue([-1000, 0, 200], 0, TURN_BACK_AWAY_TIME, -1)).toBe('right');
+    expect(turnBackCue([-1000, 0, -200], 0, TURN_BACK_AWAY_TIME, -TURN_BACK_BANK)).toBeNull();
+    expect(turnBackCue([-1000, 0, -200], 0, TURN_BACK_AWAY_TIME, 1)).toBe('left');
+    expect(() => turnBackCue([0, 0, 0], 0, 0, Number.NaN)).toThrow(/turnBackCue: bank must be a finite number \(rad\), got NaN/);
     expect(() => turnBackCue([0, Number.NaN, 0], 0, 0)).toThrow(/turnBackCue: toRing must be 3 finite numbers/);
     expect(() => turnBackCue([0, 0, 0], Number.NaN, 0)).toThrow(/turnBackCue: heading must be a finite number \(rad\), got NaN/);
+  });
+
+  it('faceRing: a ring met after a miss faces the aircraft: its way through is the line from the aircraft, its centre stays, and it is passed flying on', () => {
+    // Ring 2 of a course laid along +x, met from 700 m to the side (the aircraft missed ring 1 wide):
+    // its plane is seen edge on (the way through along +x, the aircraft off along +z).
+    const ring: Ring = { x: 2000, y: 900, z: 0, nx: 1, ny: 0, nz: 0, status: 'ahead' };
+    const from = [1400, 900, 700];
+    const edgeOn =
+      Math.abs((ring.x - from[0]!) * ring.nx + (ring.z - from[2]!) * ring.nz) / Math.hypot(ring.x - from[0]!, ring.z - from[2]!);
+    expect(edgeOn).toBeLessThan(0.7);
+    faceRing(ring, from);
+    expect([ring.x, ring.y, ring.z]).toEqual([2000, 900, 0]);
+    expect(Math.hypot(ring.nx, ring.ny, ring.nz)).toBeCloseTo(1, 12);
+    const d = Math.hypot(600, 700);
+    expect(ring.nx).toBeCloseTo(600 / d, 12);
+    expect(ring.nz).toBeCloseTo(-700 / d, 12);
+    // Flown straight on from there, the aircraft goes through it.
+    const through = [from[0]! + 2 * 600, 900, from[2]! - 2 * 700];
+    expect(crossRing(ring, from, through)).toBe('passed');
+    // At its centre nothing changes; bad input is refused with the function and parameter named.
+    faceRing(ring, [2000, 900, 0]);
+    expect(ring.nx).toBeCloseTo(600 / d, 12);
+    expect(() => faceRing(ring, [0, Number.NaN, 0])).toThrow(/faceRing: from must be 3 finite numbers/);
   });
 });
