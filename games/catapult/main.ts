@@ -108,6 +108,8 @@ const lastThrow = {
   good: false,
   at: [0, 0] as [number, number],
   decidedAt: 0,
+  /** For a throw judged long, how far past the castle it came down, whole m (the verdict's and the off-screen label's number); else 0. */
+  pastBy: 0,
   /** Set when the player starts aiming again: the off-screen marker goes (the trail stays as a guide). */
   hidden: false,
 };
@@ -220,8 +222,8 @@ function stepWorld(world: PhysicsWorld): void {
 /**
  * The campaign: each level's best score and stars once it is over, and the total. A level is cleared
  * when at least PASS_SHARE of its pieces fell (one star; two from 75 %, three from 95 %), with
- * SHOT_BONUS points for each shot not thrown; it ends once the shots are spent or three stars' worth
- * is down, 4 s after the last throw. A level not cleared is played again, and after the last level
+ * SHOT_BONUS points for each shot not thrown when three stars' worth is down; it ends once the
+ * shots are spent or three stars' worth is down, 4 s after the last throw. A level not cleared is played again, and after the last level
  * the end screen shows the total.
  */
 const PASS_SHARE = 0.5;
@@ -376,22 +378,22 @@ shell.onWorldChange(() => {
  * the way up the screen, earth below it and sky above. The view eases a tenth of the way each frame;
  * it jumps when the screen's size changes.
  *
- * On an upright phone (a screen taller than wide) the whole play area fitted to the width drew the
- * scene as a strip in the screen's bottom fifth under a tall empty sky, so the camera frames the
- * play for the tall screen, the ground UPRIGHT_GROUND of the way up (the scene in the screen's
- * middle, earth under it): the aim view is AIM_WIDTH_UPRIGHT metres from behind the catapult's
- * stacked stones, the catapult large, with the castle shown close up in the sky over it
- * (drawCloseUp); the shot view holds the castle and the rock; in between the camera follows the
+ * On an upright phone (a screen taller than wide) the camera frames the play for the tall screen,
+ * the ground UPRIGHT_GROUND of the way up (the scene low in the screen, a strip of earth under it
+ * for the card saying how to play and the next-level button): the aim view spans from behind the
+ * catapult's stacked stones to just past the castle, so the player sees the catapult, the arc and
+ * what it aims at together, with the castle shown close up in the sky over them (drawCloseUp); the
+ * shot view holds the castle and the rock; in between the camera follows the
  * stone: the view slides from the aim view to the shot view as the stone crosses the field (by the
  * farthest it got), keeping it in sight, and stays on the castle and the wreck until the next press
  * eases it back to the aim view.
  */
 const cameraView = { minX: -4, minY: -1, maxX: 30, maxY: 14 };
 /**
- * The aim in progress: whether a press is pulling, the pull (dx, dy), m (x right, y up), and where
- * the press went down on the canvas, px.
+ * The aim in progress: whether a press is pulling, the pull (dx, dy), m (x right, y up), where
+ * the press went down on the canvas, px, and whether the pointer has moved since.
  */
-const aim = { active: false, dx: 0, dy: 0, x0: 0, y0: 0 };
+const aim = { active: false, dx: 0, dy: 0, x0: 0, y0: 0, moved: false };
 /** On a tall screen, where the ground line sits: this fraction of the screen's height from the bottom. */
 const GROUND_AT = 0.18;
 /**
@@ -400,9 +402,7 @@ const GROUND_AT = 0.18;
  * flight and the castle use the screen's middle, with the banner and (on a phone) the castle's
  * close-up in the sky over them. At 0.11 the scene sat in the bottom fifth under 70 % of empty sky.
  */
-const UPRIGHT_GROUND = 0.38;
-/** On an upright phone, the aim view's width, m: the catapult and its stones about 4 m of it (some 150 px of 390). */
-const AIM_WIDTH_UPRIGHT = 10.5;
+const UPRIGHT_GROUND = 0.28;
 /** Screens narrower than this (CSS px) get the tighter aim view. */
 const NARROW = 600;
 /** Screen size the view was framed for; the view jumps (no easing) when it changes. */
@@ -457,16 +457,10 @@ function viewFor(minX: number, maxX: number): View {
 const rockRight = (): number => lv.castleMaxX + ROCK.gap + 2 * ROCK.hx;
 /** The aim view (see above). */
 function aimView(): View {
-  // Upright: the catapult large, the castle in the close-up over it (drawCloseUp); a castle's
-  // front within a third more of that width is taken in whole (a sliver of it at the edge read as
-  // a glitch).
-  if (upright()) {
-    const front = lv.castleMinX + 1.6 - OVERVIEW_LEFT;
-    return uprightView(
-      OVERVIEW_LEFT,
-      OVERVIEW_LEFT + (front <= (4 / 3) * AIM_WIDTH_UPRIGHT ? Math.max(front, AIM_WIDTH_UPRIGHT) : AIM_WIDTH_UPRIGHT),
-    );
-  }
+  // Upright: the catapult and the whole castle it aims at (the catapult framed large with the
+  // castle off the screen showed a stranger the edge of a tower and not the target), the castle
+  // also in the close-up over them (drawCloseUp).
+  if (upright()) return uprightView(OVERVIEW_LEFT, lv.castleMaxX + 0.8);
   // Room behind the catapult for its stones where the screen is wide enough.
   const behind = renderer.camera.width < NARROW ? 1.6 : 3.1;
   return viewFor(LAUNCH.x - behind, rockRight() + 0.6);
@@ -482,7 +476,7 @@ function uprightView(minX: number, maxX: number): View {
   return { minX, minY, maxX, maxY: minY + height };
 }
 /** The upright aim view's left edge, m: just behind the catapult's stacked stones. */
-const OVERVIEW_LEFT = LAUNCH.x - 3.4;
+const OVERVIEW_LEFT = LAUNCH.x - 3.2;
 /** The shot view (see above): the castle, the rock and room either side for debris (2.5 m; 0.8 and 1 m upright). */
 function shotViewRect(): View {
   return upright() ? uprightView(lv.castleMinX - 0.8, rockRight() + 1) : viewFor(lv.castleMinX - 2.5, rockRight() + 2.5);
@@ -583,7 +577,11 @@ app.canvas.addEventListener('pointerdown', (e) => {
   aim.x0 = pointer.x;
   aim.y0 = pointer.y;
   aim.dx = aim.dy = 0;
+  aim.moved = false;
   app.canvas.setPointerCapture(e.pointerId);
+  // The aim shows in the next frame even when the GPU is behind (the pacer would skip it): a quick
+  // drag showed no band and no arc at all.
+  game.drawNext();
 });
 /** Sets the pull from the pointer's position in `e` (the drag from where it went down). */
 function pullTo(e: PointerEvent): void {
@@ -592,7 +590,11 @@ function pullTo(e: PointerEvent): void {
   aim.dy = -(pointer.y - aim.y0) / aimScale();
 }
 app.canvas.addEventListener('pointermove', (e) => {
-  if (aim.active) pullTo(e);
+  if (!aim.active) return;
+  pullTo(e);
+  // The first move's pull too (the press alone draws no arc).
+  if (!aim.moved) game.drawNext();
+  aim.moved = true;
 });
 const release = (e: PointerEvent): void => {
   if (!aim.active) return;
@@ -625,6 +627,7 @@ function fire(dx: number, dy: number): number {
   lastThrow.time = shell.world.time;
   lastThrow.verdict = '';
   lastThrow.brief = '';
+  lastThrow.pastBy = 0;
   lastThrow.farthest = LAUNCH.x;
   lastThrow.vx = vx;
   lastThrow.vy = vy;
@@ -692,15 +695,28 @@ function followThrow(world: PhysicsWorld, t: Tally): void {
       break;
     }
   }
-  // By how far: where the throw would have come down on open ground (drag-free), from the castle's
-  // near or far end, in whole metres (at least 1).
+  // By how far: short, from where the throw would have come down on open ground (drag-free) or came
+  // down, to the castle's near end; long, from the castle's far end to where it first came down past
+  // it (on the path), or on open ground when the path ends before it does; in whole metres (at least
+  // 1). A throw that got past the rock is long whatever it touched on its way (one that bounced on a
+  // hill fort's top and flew on read "No damage: throw harder" beside "17 m past").
   const g = -world.gravity[1]!,
     vy = lastThrow.vy;
   const ground = LAUNCH.x + (lastThrow.vx * (vy + Math.sqrt(vy * vy + 2 * g * LAUNCH.y))) / g;
   const by = (d: number): number => Math.max(1, Math.round(d));
-  const short = landX < lv.castleMinX - 0.3,
-    long = landX > lv.castleMaxX + 0.3;
-  const d = short ? by(lv.castleMinX - Math.min(ground, landX)) : long ? by(ground - lv.castleMaxX) : 0;
+  const long = landX > lv.castleMaxX + 0.3 || lastThrow.farthest > rockRight() + 0.3,
+    short = !long && landX < lv.castleMinX - 0.3;
+  let landed = Math.max(ground, lastThrow.farthest);
+  for (let i = 2; long && i < path.length; i += 2) {
+    const px = path[i]!,
+      py = path[i + 1]!;
+    if (px > lv.castleMaxX + 0.3 && py < path[i - 1]! && py < surfaceAt(lv, px) + PROJECTILE_RADIUS + 0.3) {
+      landed = px;
+      break;
+    }
+  }
+  const d = short ? by(lv.castleMinX - Math.min(ground, landX)) : long ? by(landed - lv.castleMaxX) : 0;
+  lastThrow.pastBy = long ? d : 0;
   lastThrow.verdict = short
     ? `Short by ${d} m: pull further back`
     : long
@@ -742,8 +758,12 @@ function drawOffscreen(world: PhysicsWorld): void {
     .poly([...tip(10, 0), ...tip(-10, 9), ...tip(-5, 0), ...tip(-10, -9)])
     .fill({ color: 0xffe066 })
     .stroke({ width: 2, color: 0x000000 });
-  const past = lastThrow.farthest - lv.castleMaxX;
+  // Once a long throw's verdict is out, the verdict's number (the two agree); before it, how far the
+  // stone has got.
+  const past = lastThrow.pastBy > 0 ? lastThrow.pastBy : lastThrow.farthest - lv.castleMaxX;
   if (px <= W || past < 1) return;
+  // A verdict other than long (points, short, no damage) has no distance past the castle to show.
+  if (lastThrow.verdict !== '' && lastThrow.pastBy === 0) return;
   offscreenText.visible = true;
   const label = `${Math.round(past)} m past ▸`;
   if (offscreenText.text !== label) offscreenText.text = label;
@@ -864,6 +884,8 @@ const showNext = (visible: boolean, text?: string): void => {
 };
 
 const overlay = new Graphics({ label: 'catapult' });
+/** The aim while a press pulls (see drawAim), in screen pixels over the scene and its close-up. */
+const aimLayer = new Graphics({ label: 'aim' });
 const banner = new Text({
   text: '',
   style: {
@@ -1078,6 +1100,7 @@ const aimShown: { power: number; angle: number; dots: number; reach: number } = 
 function drawAim(world: PhysicsWorld): void {
   aimText.visible = aim.active;
   aimShown.dots = 0;
+  aimLayer.clear();
   if (!aim.active) return;
   const cam = renderer.camera;
   const [vx, vy] = launchVelocity(aim.dx, aim.dy);
@@ -1088,12 +1111,12 @@ function drawAim(world: PhysicsWorld): void {
   // The band and the ring, in screen pixels from the press.
   const R = fullPullPx();
   const [ex, ey] = aimEnd();
-  overlay.circle(aim.x0, aim.y0, R).stroke({ width: 2, color: 0xffffff, alpha: 0.35 });
-  overlay.circle(aim.x0, aim.y0, R / 2).stroke({ width: 1, color: 0xffffff, alpha: 0.2 });
-  overlay.moveTo(aim.x0, aim.y0).lineTo(ex, ey).stroke({ width: 5, color: 0x000000, alpha: 0.35 });
-  overlay.moveTo(aim.x0, aim.y0).lineTo(ex, ey).stroke({ width: 3, color });
-  overlay.circle(aim.x0, aim.y0, 4).fill({ color: 0xffffff, alpha: 0.8 });
-  overlay.circle(ex, ey, 9).fill(color).stroke({ width: 2, color: 0x000000, alpha: 0.6 });
+  aimLayer.circle(aim.x0, aim.y0, R).stroke({ width: 2, color: 0xffffff, alpha: 0.35 });
+  aimLayer.circle(aim.x0, aim.y0, R / 2).stroke({ width: 1, color: 0xffffff, alpha: 0.2 });
+  aimLayer.moveTo(aim.x0, aim.y0).lineTo(ex, ey).stroke({ width: 5, color: 0x000000, alpha: 0.35 });
+  aimLayer.moveTo(aim.x0, aim.y0).lineTo(ex, ey).stroke({ width: 3, color });
+  aimLayer.circle(aim.x0, aim.y0, 4).fill({ color: 0xffffff, alpha: 0.8 });
+  aimLayer.circle(ex, ey, 9).fill(color).stroke({ width: 2, color: 0x000000, alpha: 0.6 });
   // The arc to a little past its top (see PREVIEW_PAST).
   const g = -world.gravity[1]!;
   const arc = predictArc(LAUNCH.x, LAUNCH.y, vx, vy, g, Math.round(PREVIEW_TIME / 0.05) + 1, 0.05);
@@ -1117,7 +1140,7 @@ function drawAim(world: PhysicsWorld): void {
     lastX = px;
     lastY = py;
     const fade = 1 - i / arc.length;
-    overlay
+    aimLayer
       .circle(px, py, dotR)
       .fill({ color: 0xffffff, alpha: 0.35 + 0.6 * fade })
       .stroke({
@@ -1135,8 +1158,8 @@ function drawAim(world: PhysicsWorld): void {
     h = 10;
   const x = Math.min(Math.max(6, cam.toScreenX(-0.3) - w / 2), cam.width - w - 6),
     y = Math.max(60, cam.toScreenY(3.2));
-  overlay.roundRect(x - 2, y - 2, w + 4, h + 4, 5).fill({ color: 0x000000, alpha: 0.55 });
-  overlay.roundRect(x, y, Math.max(2, w * power), h, 4).fill(color);
+  aimLayer.roundRect(x - 2, y - 2, w + 4, h + 4, 5).fill({ color: 0x000000, alpha: 0.55 });
+  aimLayer.roundRect(x, y, Math.max(2, w * power), h, 4).fill(color);
   // Over this throw's numbers the last throw's: the player corrects from them ("long: a little less").
   // With a miss's brief: what that throw did, while the hint over the scene is gone.
   const brief = lastThrow.brief ? `: ${lastThrow.brief}` : '';
@@ -1174,7 +1197,7 @@ function drawPause(): void {
  * ratio of 2 it would hold four times the texels, and under software WebGL (SwiftShader) rendering
  * that into a texture every few frames can hold the GPU process up for seconds with no frame drawn.
  */
-const closeTexture = RenderTexture.create({ width: 16, height: 16, resolution: 1 });
+let closeTexture = RenderTexture.create({ width: 16, height: 16, resolution: 1 });
 const closeSprite = new Sprite(closeTexture);
 const closeFrame = new Graphics({ label: 'close-up frame' });
 const closeLabel = new Text({
@@ -1183,8 +1206,10 @@ const closeLabel = new Text({
 });
 closeSprite.visible = closeFrame.visible = closeLabel.visible = false;
 app.stage.addChild(closeSprite, closeFrame, closeLabel);
-// The aim's numbers over the close-up (two lines with the last throw's reached up under it).
-app.stage.addChild(aimText);
+// The aim (its band, ring, arc and power bar) and its numbers over the close-up: a pull's band
+// crossing the close-up stays in sight, and the close-up, which draws the scene under them, does not
+// show them (nor change with every move of the finger).
+app.stage.addChild(aimLayer, aimText);
 /** Largest magnification of the close-up, and the smallest worth showing. */
 const CLOSE_MAX = 3,
   CLOSE_MIN = 1.4;
@@ -1194,16 +1219,60 @@ const CLOSE_GAP = 36;
 const AIM_LABEL_ROOM = 64;
 /** The close-up's box on the screen (px: x, y, width, height) and its magnification; null while hidden. */
 let closeShown: { box: [number, number, number, number]; zoom: number } | null = null;
+/** How many times the close-up's texture has been drawn since the page loaded. */
+let closeDraws = 0;
 /** Whether the close-up sits in the earth under the ground (out of a pull's way), not in the sky. */
 let closeLow = false;
 /**
- * The close-up is drawn again every CLOSE_EVERY frames (and at once when its size changes): it shows
- * the castle at rest while the player aims, and a second pass over the whole scene every frame was
- * most of the phone's frame time.
+ * What the close-up showed when it was last drawn (its box, zoom and the camera; each piece's and
+ * stone's place and turn; the trail's length and look, larger while aiming), compared each frame by closeChanged: the texture is
+ * drawn again only when one of them moved by more than a fraction of a close-up pixel, or while
+ * bits of debris or popups are in the air, and then at most every CLOSE_EVERY frames. While the
+ * player aims at a castle at rest it is drawn once; under software WebGL a render to a texture every
+ * few frames held the GPU process up for seconds with no frame drawn.
  */
-const CLOSE_EVERY = 4;
+const closeSeen: number[] = [];
+const CLOSE_EVERY = 3;
 /** Frames since the close-up was last drawn. */
 let closeAge = CLOSE_EVERY;
+/** Whether the close-up must be drawn again (see closeSeen); takes the new state when it must. */
+function closeChanged(box: [number, number, number, number], zoom: number, tolerance: number): boolean {
+  const now: number[] = [
+    ...box,
+    zoom,
+    cameraView.minX,
+    cameraView.minY,
+    cameraView.maxX,
+    cameraView.maxY,
+    lastThrow.path.length + (aim.active ? 0.5 : 0),
+  ];
+  const world = shell.world;
+  const P = world.components.Position,
+    A = world.components.Angle.value;
+  for (const list of [lv.pieces.map((p) => p.body), shots]) {
+    for (const b of list) {
+      if (!isAlive(world, b)) {
+        now.push(Number.NaN, Number.NaN, Number.NaN);
+        continue;
+      }
+      const k = slotOf(b);
+      now.push(P.x[k]!, P.y[k]!, A[k]!);
+    }
+  }
+  let changed = now.length !== closeSeen.length || effects!.bitCount > 0 || effects!.popupCount > 0;
+  for (let i = 0; !changed && i < now.length; i++) {
+    const a = now[i]!,
+      b = closeSeen[i]!;
+    // Box and camera to a tenth of a pixel or metre; places to `tolerance` m; turns to a hundredth of a radian.
+    const tol = i < 5 ? 0.1 : i < 9 ? 1e-4 : i === 9 ? 0 : (i - 10) % 3 === 2 ? 0.01 : tolerance;
+    if (Number.isNaN(a) !== Number.isNaN(b) || Math.abs(a - b) > tol) changed = true;
+  }
+  if (changed) {
+    closeSeen.length = 0;
+    closeSeen.push(...now);
+  }
+  return changed;
+}
 /** Draws the close-up (see above) for this frame, or hides it. */
 function drawCloseUp(): void {
   const cam = renderer.camera;
@@ -1222,10 +1291,11 @@ function drawCloseUp(): void {
       sy = cam.toScreenY(y1),
       w = cam.toScreenLength(x1 - x0),
       h = cam.toScreenLength(y1 - y0);
-    // Two places: in the sky, the band from the banner's foot to CLOSE_GAP px over the castle's top
-    // or, lower, the catapult's arm (3.2 m up); and in the earth under the ground, over the card
-    // saying how to play while it shows. The sky's, unless a pull's band crosses it and not the
-    // earth's: the close-up moves out of the aim's way (it hid the band a stranger pulled).
+    // Two places: in the earth under the ground, over the card saying how to play while it shows;
+    // and in the sky, the band from the banner's foot to CLOSE_GAP px over the castle's top or, lower,
+    // the catapult's arm (3.2 m up). The earth's (it was a third of the screen of plain earth, and
+    // the sky is where the stone flies), unless a pull's band crosses it and not the sky's or it has
+    // too little room: the close-up moves out of the aim's way (it hid the band a stranger pulled).
     const ground = cam.toScreenY(floor);
     const sky: [number, number] = [
       (banner.text !== '' ? banner.y + banner.height : 0) + 14,
@@ -1238,10 +1308,11 @@ function drawCloseUp(): void {
       const ey = aimEnd()[1];
       return Math.max(aim.y0, ey) + 12 > band[0] && Math.min(aim.y0, ey) - 12 < band[1];
     };
-    const slot = crosses(sky) && !crosses(earth) ? earth : sky;
+    const zoomIn = (band: [number, number]): number => Math.min(CLOSE_MAX, (cam.width - 24) / w, (band[1] - band[0]) / h);
+    const slot = (crosses(earth) && !crosses(sky)) || (zoomIn(earth) < CLOSE_MIN && zoomIn(sky) > zoomIn(earth)) ? sky : earth;
     closeLow = slot === earth;
     const [top, bottom] = slot;
-    const zoom = Math.min(CLOSE_MAX, (cam.width - 24) / w, (bottom - top) / h);
+    const zoom = zoomIn(slot);
     // Shown when it magnifies enough, or whenever the castle is off the screen (upright, the aim view
     // frames the catapult: the close-up is where the castle shows).
     if (zoom >= CLOSE_MIN || (zoom > 0.5 && sx + w > cam.width)) {
@@ -1249,21 +1320,29 @@ function drawCloseUp(): void {
         bh = Math.round(h * zoom);
       closeAge++;
       if (closeTexture.width !== bw || closeTexture.height !== bh) {
-        closeTexture.resize(bw, bh);
+        // A new texture of the new size (a texture resized under the sprite left the sprite showing
+        // its old size's corner of the new picture).
+        const old = closeTexture;
+        closeTexture = RenderTexture.create({ width: bw, height: bh, resolution: 1 });
+        closeSprite.texture = closeTexture;
+        old.destroy(true);
+        closeSeen.length = 0;
         closeAge = CLOSE_EVERY;
       }
-      // The screen-space words over the scene are not part of the close-up.
-      if (closeAge >= CLOSE_EVERY) {
+      // A quarter of a close-up pixel in metres: smaller moves are not drawn.
+      const tolerance = 0.25 / Math.max(1e-6, zoom * cam.toScreenLength(1));
+      if (closeAge >= CLOSE_EVERY && closeChanged([sx, sy, bw, bh], zoom, tolerance)) {
         closeAge = 0;
-        const words = [banner, bannerPanel, verdictText, offscreenText, castleText, aimText, pause.container];
+        closeDraws++;
+        // The screen-space words over the scene and the drifting clouds are not part of the close-up.
+        const words = [banner, bannerPanel, verdictText, offscreenText, castleText, pause.container, cloudLayer];
         const was = words.map((o) => o.visible);
         for (const o of words) o.visible = false;
         app.renderer.render({
           container: renderer.root,
           target: closeTexture,
           clear: true,
-          // The sky behind the castle where the backdrop (drawn for the screen) does not reach: the
-          // castle lies off the screen in the upright aim view.
+          // The sky behind the castle where the backdrop (drawn for the screen) does not reach.
           clearColor: SKY,
           transform: new Matrix().translate(-sx, -sy).scale(zoom, zoom),
         });
@@ -1271,10 +1350,11 @@ function drawCloseUp(): void {
           o.visible = was[k]!;
         });
       }
-      // Low in its band (the two read together with the castle when it shows; at the band's top it
-      // hung under the banner with a screen of empty sky between it and the castle).
+      // Next to the ground: low in the sky's band (at the band's top it hung under the banner with a
+      // screen of empty sky between it and the castle), high in the earth's (it stays put when the
+      // card under it goes).
       const bx = Math.round((cam.width - bw) / 2),
-        by = Math.round(Math.max(top, bottom - bh));
+        by = Math.round(closeLow ? top : Math.max(top, bottom - bh));
       closeSprite.position.set(bx, by);
       closeFrame
         .clear()
@@ -1284,7 +1364,10 @@ function drawCloseUp(): void {
       closeShown = { box: [bx, by, bw, bh], zoom };
     }
   }
-  if (closeShown === null) closeAge = CLOSE_EVERY;
+  if (closeShown === null) {
+    closeAge = CLOSE_EVERY;
+    closeSeen.length = 0;
+  }
   closeSprite.visible = closeFrame.visible = closeLabel.visible = closeShown !== null;
 }
 
@@ -1292,10 +1375,13 @@ function drawCloseUp(): void {
  * The backdrop behind the castle: a sky shading from deep blue overhead to a pale horizon, the sun,
  * two ranges of hills and drifting clouds. The hills and clouds are scenery at a distance: they move
  * by a fraction of the camera's pan (parallax: far hills 0.3, near 0.6, clouds 0.15), so a pan to the
- * castle and back reads as depth.
+ * castle and back reads as depth. The sky is drawn again only when the screen's size or the horizon
+ * moves, and each range of hills is one shape built once (in metres) and only moved and scaled, so a
+ * frame does not cut the hills into triangles again; the clouds, which drift, are drawn every frame.
  */
-const backdrop = new Graphics({ label: 'backdrop' });
-renderer.root.addChildAt(backdrop, 0);
+const backdrop = new Container({ label: 'backdrop' });
+const skyLayer = new Graphics({ label: 'sky' });
+const cloudLayer = new Graphics({ label: 'clouds' });
 const SKY_TOP = 0x3d7ccc,
   SKY_HORIZON = 0xd8eefb;
 /** Clouds: x (m along their band, which repeats every CLOUD_SPAN), height (m), size (m). */
@@ -1308,53 +1394,68 @@ const CLOUDS: ReadonlyArray<readonly [number, number, number]> = [
   [45, 15, 1.5],
 ];
 const CLOUD_SPAN = 54;
-
-/** A range of hills at parallax `p` (0 far, 1 near): height `amp` m above the ground, in `color`. */
-function hills(p: number, amp: number, seed: number, color: number): void {
-  const cam = renderer.camera;
-  const scale = cam.toScreenLength(1),
-    left = cam.toWorldX(0);
-  const ground = cam.toScreenY(0);
-  backdrop.moveTo(0, ground);
-  for (let px = 0; px <= cam.width + 8; px += 8) {
-    const u = px / scale + p * left;
+/** Where the hills' shapes run along their band, m: wider than any view plus its parallax shift. */
+const HILLS_FROM = -30,
+  HILLS_TO = 110;
+/**
+ * A range of hills at parallax `p` (0 far, 1 near): height `amp` m above the ground, in `color`, as
+ * a shape in metres along its band (x) and up from the ground (-y), placed each frame by placeHills.
+ */
+function hillShape(amp: number, seed: number, color: number): Graphics {
+  const g = new Graphics({ label: 'hills' });
+  g.moveTo(HILLS_FROM, 0);
+  for (let u = HILLS_FROM; u <= HILLS_TO; u += 0.25) {
     const h = amp * (0.55 + 0.25 * Math.sin(0.21 * u + seed) + 0.2 * Math.sin(0.53 * u + 2 * seed));
-    backdrop.lineTo(px, ground - h * scale);
+    g.lineTo(u, -h);
   }
-  backdrop
-    .lineTo(cam.width + 8, ground)
-    .closePath()
-    .fill(color);
+  g.lineTo(HILLS_TO, 0).closePath().fill(color);
+  return g;
 }
+const HILLS: ReadonlyArray<{ p: number; g: Graphics }> = [
+  { p: 0.3, g: hillShape(3.4, 0.7, 0x9cc3d2) },
+  { p: 0.6, g: hillShape(1.9, 2.1, 0x79ad73) },
+];
+backdrop.addChild(skyLayer, cloudLayer, ...HILLS.map((h) => h.g));
+renderer.root.addChildAt(backdrop, 0);
+/** Screen width and horizon (px) the sky was drawn for. */
+let skyFor = '';
 
 function drawBackdrop(world: PhysicsWorld): void {
   const cam = renderer.camera;
   const W = cam.width,
     horizon = Math.min(cam.height, cam.toScreenY(0));
-  backdrop.clear();
-  const bands = 40;
-  for (let i = 0; i < bands; i++) {
-    const y0 = (horizon * i) / bands;
-    backdrop.rect(0, y0, W, horizon / bands + 1).fill(mixColor(SKY_TOP, SKY_HORIZON, (i + 0.5) / bands));
+  const key = `${W} ${Math.round(horizon)}`;
+  if (key !== skyFor) {
+    skyFor = key;
+    skyLayer.clear();
+    const bands = 40;
+    for (let i = 0; i < bands; i++) {
+      const y0 = (horizon * i) / bands;
+      skyLayer.rect(0, y0, W, horizon / bands + 1).fill(mixColor(SKY_TOP, SKY_HORIZON, (i + 0.5) / bands));
+    }
+    const sunX = W * 0.82,
+      sunY = Math.max(70, horizon * 0.2);
+    for (let r = 84; r > 34; r -= 10) skyLayer.circle(sunX, sunY, r).fill({ color: 0xfff4cc, alpha: 0.07 });
+    skyLayer.circle(sunX, sunY, 30).fill(0xfff6d8);
   }
-  const sunX = W * 0.82,
-    sunY = Math.max(70, horizon * 0.2);
-  for (let r = 84; r > 34; r -= 10) backdrop.circle(sunX, sunY, r).fill({ color: 0xfff4cc, alpha: 0.07 });
-  backdrop.circle(sunX, sunY, 30).fill(0xfff6d8);
   const scale = cam.toScreenLength(1),
     left = cam.toWorldX(0);
+  cloudLayer.clear();
   for (const [x, y, r] of CLOUDS) {
     const u = (((x + 0.35 * world.time - 0.15 * left) % CLOUD_SPAN) + CLOUD_SPAN) % CLOUD_SPAN;
     const cx = (u - 6) * scale,
       cy = cam.toScreenY(y),
       k = r * scale;
     if (cx < -4 * k || cx > W + 4 * k) continue;
-    backdrop.ellipse(cx, cy, 1.6 * k, 0.55 * k).fill({ color: 0xffffff, alpha: 0.85 });
-    backdrop.circle(cx - 0.55 * k, cy - 0.25 * k, 0.55 * k).fill({ color: 0xffffff, alpha: 0.9 });
-    backdrop.circle(cx + 0.25 * k, cy - 0.45 * k, 0.7 * k).fill({ color: 0xffffff, alpha: 0.9 });
+    cloudLayer.ellipse(cx, cy, 1.6 * k, 0.55 * k).fill({ color: 0xffffff, alpha: 0.85 });
+    cloudLayer.circle(cx - 0.55 * k, cy - 0.25 * k, 0.55 * k).fill({ color: 0xffffff, alpha: 0.9 });
+    cloudLayer.circle(cx + 0.25 * k, cy - 0.45 * k, 0.7 * k).fill({ color: 0xffffff, alpha: 0.9 });
   }
-  hills(0.3, 3.4, 0.7, 0x9cc3d2);
-  hills(0.6, 1.9, 2.1, 0x79ad73);
+  // A hill's band point u is at screen x (u - p * left) * scale (see hillShape).
+  for (const { p, g } of HILLS) {
+    g.position.set(-p * left * scale, cam.toScreenY(0));
+    g.scale.set(scale);
+  }
 }
 
 /** The level is over when no shots are left and 4 s passed since the last, or everything fell. */
@@ -1365,7 +1466,11 @@ function levelOver(world: PhysicsWorld, t: Tally): boolean {
   return t.fallen === lv.pieces.length || (settled && (shotsLeft === 0 || starsOf(t.fallen / Math.max(1, lv.pieces.length)) === 3));
 }
 
-/** Points for each shot not thrown when a level is cleared (fewer shots, more points). */
+/**
+ * Points for each shot not thrown when a level ends with three stars (fewer shots, more points). Only
+ * for three stars: paid on any clear, it made moving on after a rough first clear ("+300 for shots
+ * left if you move on now") worth more than throwing them for more stars.
+ */
 const SHOT_BONUS = 150;
 
 /** Pebbles in the earth under the ground: x, y and radius, m (fixed, from a seeded generator). */
@@ -1465,7 +1570,7 @@ function draw(world: PhysicsWorld, alpha: number): void {
   const starRule = narrow ? STAR_RULE_SHORT : STAR_RULE;
   if (levelEnded) {
     const earned = campaign.stars[i]!;
-    const bonus = earned > 0 ? shotsLeft * SHOT_BONUS : 0;
+    const bonus = earned === 3 ? shotsLeft * SHOT_BONUS : 0;
     const stars = '★'.repeat(earned) + '☆'.repeat(3 - earned);
     const last = params.level === LEVEL_COUNT;
     const starsWon = campaign.stars.reduce((a, b) => a + b, 0);
@@ -1499,16 +1604,15 @@ function draw(world: PhysicsWorld, alpha: number): void {
     // "shots left", not "shots": a stranger read "shots 2" as the shots thrown.
     const running = `${head}  Total ${runningTotal}  ${shotsLeft} ${shotsLeft === 1 ? 'shot' : 'shots'} left${rule}`;
     if (clearedEarly(world)) {
-      // Cleared with shots to spare: the player may move on now (the shots left score their bonus) or
-      // throw again for more stars.
+      // Cleared with shots to spare: the player may move on now or throw again for more stars (the
+      // shots left score a bonus only with three stars, so throwing them is never worth less).
       const earned = starsOf(t.fallen / Math.max(1, lv.pieces.length));
       const stars = '★'.repeat(earned) + '☆'.repeat(3 - earned);
-      const n = shotsLeft * SHOT_BONUS;
       const bonus = touch
-        ? `Move on now: +${n}`
+        ? 'Throw for ★ or move on'
         : narrow
-          ? `Move on now (Enter): +${n}`
-          : `+${n} for shots left if you move on now (Enter)`;
+          ? 'Throw for ★ or move on (Enter)'
+          : 'Throw again for more stars, or move on (Enter)';
       banner.text = `Cleared!  ${stars}   ${bonus}\n${running}`;
       showNext(true, params.level === LEVEL_COUNT ? 'Finish ▶' : `Level ${params.level + 1} ▶`);
     } else {
@@ -1546,10 +1650,10 @@ function celebrate(): void {
   effects!.burst('confetti', (lv.castleMinX + lv.castleMaxX) / 2, lv.castleTop + 1.5, 60, 7);
 }
 
-/** Ends the level on screen: its score (with the unused shots' bonus once cleared) and stars count, once and only its best try. */
+/** Ends the level on screen: its score (with the unused shots' bonus for three stars) and stars count, once and only its best try. */
 function recordLevel(t: Tally): void {
   const earned = starsOf(t.fallen / Math.max(1, lv.pieces.length));
-  const score = t.score + (earned > 0 ? shotsLeft * SHOT_BONUS : 0);
+  const score = t.score + (earned === 3 ? shotsLeft * SHOT_BONUS : 0);
   const i = params.level - 1;
   levelEnded = true;
   // A drag under way when the level ended throws nothing: its aim goes.
@@ -1593,6 +1697,8 @@ shell.expose({
   fire,
   /** The castle's close-up on an upright phone (see drawCloseUp): its box (px), magnification and whether it sits low (in the earth), or null while hidden. */
   closeUp: () => (closeShown ? { ...closeShown, low: closeLow } : null),
+  /** How many times the close-up's texture has been drawn since the page loaded (it is drawn only when its scene changed). */
+  closeDraws: (): number => closeDraws,
   /** The screen sizes (CSS px, 'WxH') the camera has framed since the page loaded. */
   sizesFramed: (): string[] => [...sizesFramed],
   /** Position of a body by handle, m (tests). */
