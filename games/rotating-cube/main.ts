@@ -2,7 +2,8 @@
  * Rotating cube: rigid-body rotation in 3D. By default (mode 'room') a 1 m cube falls tumbling into a
  * room and collides with the floor and the walls (a box collider and 3D box contacts): it lands,
  * tumbles, slides and bounces off them. The challenge: rest it on five glowing pads in turn, against
- * the clock. A click or tap on the floor pushes the cube towards that point, just hard enough that
+ * the clock, the last three with a given face on top (PAD_FACES: roll it to turn that face up, slide
+ * it there). A click or tap on the floor pushes the cube towards that point, just hard enough that
  * sliding on a face it stops there (`slideSpeed`); a click on the cube flicks it away from the point
  * clicked at a fixed speed; W A S D roll it over its edges in the screen's directions and Q E spin it
  * (a couple of forces from `applyForceAtPoint` in a forces-stage system, which stops pushing once it
@@ -20,7 +21,8 @@
  * spin; Space jump (room); M switches mode (room, cube on a pivot, flip); P pause, N single step, R reset.
  * Click: room: the floor, a push there; the cube, a flick away from the point; pivot: an impulse at the
  * point of the face clicked along the ray. Drag: orbit.
- * Challenges: room: rest the cube on five pads in turn (stars by time); flip: 10 flips in 20 s.
+ * Challenges: room: rest the cube on five pads in turn, the last three with a given face up (stars by
+ * time); flip: 10 flips in 20 s.
  * URL: ?mode=room|cube|flip (default room), ?spin=rad/s (flip).
  */
 
@@ -73,6 +75,7 @@ import {
   JUMP_IMPULSE,
   MODES,
   type Mode,
+  PAD_FACES,
   PAD_HALF,
   PAD_STAR_TIMES,
   PADS,
@@ -86,12 +89,14 @@ import {
   type RotatingCubeHandles,
   rotatingCubeWorldOptions,
   slideSpeed,
+  topFace,
   torqueCouple,
   WALL_HEIGHT,
 } from './scene';
 
-/** A press that moves more than this, CSS px, is a camera drag, not a click. */
+/** A press that moves more than this, CSS px, is a camera drag, not a click (a finger: TAP_SLOP, fingers wobble more). */
 const CLICK_SLOP = 5;
+const TAP_SLOP = 12;
 /** Room mode: a push lands within this of its target, m, for a "perfect" (the pad's pop says so). */
 const PERFECT = 0.25;
 /** Room mode: the cube's centre height resting on a face, m (a push aims from there). */
@@ -143,6 +148,17 @@ function torqueNow(world: PhysicsWorld): Float64Array {
   stepTorque[2] = T * rollAxis[2]!;
   return stepTorque;
 }
+/**
+ * Room mode: a roll key pressed keeps rolling the cube until it has turned ROLL_LATCH_ANGLE (past
+ * its tipping point, 45 degrees, from where it falls onto the next face by itself) or for
+ * ROLL_LATCH_TIME s, so a short tap rolls it over one edge instead of rocking it back.
+ */
+const ROLL_LATCH_ANGLE = (55 * Math.PI) / 180,
+  ROLL_LATCH_TIME = 1.5;
+/** The latched roll: its axis (a level unit vector), the orientation at the press and the world time it ends; on while `latchUntil` > now. */
+const latchAxis = new Float64Array(3),
+  latchQ = new Float64Array(4);
+let latchUntil = -1;
 /** Pads reached and not yet celebrated: the pad's index, the world time, s, and the miss from its centre, m. */
 const padsReached: { pad: number; time: number; miss: number }[] = [];
 
@@ -163,6 +179,7 @@ function createWorld(): PhysicsWorld {
   pads.reset();
   flips.reset();
   padsReached.length = 0;
+  latchUntil = -1;
   addSystem(world, 'finalize', (w) => {
     if (params.mode === 'room') {
       const spot = PADS[pads.pad];
@@ -286,6 +303,8 @@ function jump(): void {
 // negative side, so every face reads in the light), scaled by the renderer to the body's
 // equivalent-inertia box.
 const faceColors = [0xef5b3a, 0xf6b09a, 0x5cc043, 0xbde8a4, 0x3d7be0, 0xa9c6f7];
+/** The faces' colours in words, in the order of FACES (a pale face is opposite its colour). */
+const FACE_NAMES = ['red', 'pale red', 'green', 'pale green', 'blue', 'pale blue'];
 const boxGeometry = new BoxGeometry(1, 1, 1);
 {
   // Vertex colours are linear in three.js; Color converts from sRGB hex.
@@ -318,8 +337,13 @@ padMesh.receiveShadow = true;
 app.scene.add(padMesh);
 const padOutline = new EdgesGeometry(new PlaneGeometry(2 * PAD_HALF, 2 * PAD_HALF).rotateX(-Math.PI / 2));
 const padDoneMaterial = new MeshBasicMaterial({ color: 0xc9a43a, transparent: true, opacity: 0.55 });
-const padMarks = PADS.map(([x, z]) => {
-  const outline = new LineSegments(padOutline, new LineBasicMaterial({ color: 0x9fe8c0, transparent: true, opacity: 0.5 }));
+const padMarks = PADS.map(([x, z], i) => {
+  // Outlined in the colour of the face it wants (mint: any face).
+  const want = PAD_FACES[i]!;
+  const outline = new LineSegments(
+    padOutline,
+    new LineBasicMaterial({ color: want >= 0 ? faceColors[want]! : 0x9fe8c0, transparent: true, opacity: 0.7 }),
+  );
   const done = new Mesh(new PlaneGeometry(2 * PAD_HALF, 2 * PAD_HALF).rotateX(-Math.PI / 2), padDoneMaterial);
   outline.position.set(x, 0.015, z);
   done.position.set(x, 0.012, z);
@@ -354,7 +378,7 @@ const pop = document.createElement('div');
 pop.dataset.hud = 'pad-pop';
 pop.setAttribute('aria-live', 'polite');
 pop.style.cssText =
-  'position: absolute; left: 50%; top: 38%; transform: translate(-50%, -50%); pointer-events: none; opacity: 0;' +
+  'position: absolute; left: 50%; top: 22%; transform: translate(-50%, -50%); pointer-events: none; opacity: 0;' +
   'font: 700 clamp(18px, 5.5vw, 28px) system-ui, sans-serif; color: #ffe27a; text-shadow: 0 2px 6px #000, 0 0 2px #000; text-align: center;' +
   'white-space: nowrap; transition: opacity 0.25s, transform 0.9s ease-out';
 {
@@ -407,6 +431,8 @@ app.scene.add(lArrow.object, wArrow.object);
 // ---- Keys held: in the room the cube rolls in the screen's directions; on the pivot torque about the camera's axes
 
 const held = new Set<string>();
+/** Keys pressed since the last frame (a press and release between two frames still counts once). */
+const pressed = new Set<string>();
 const TORQUE_KEYS = ['w', 's', 'a', 'd', 'q', 'e'];
 function typing(target: EventTarget | null): boolean {
   const el = target as HTMLElement | null;
@@ -416,6 +442,7 @@ window.addEventListener('keydown', (event) => {
   const k = event.key.toLowerCase();
   if (!TORQUE_KEYS.includes(k) || typing(event.target) || event.ctrlKey || event.metaKey || event.altKey) return;
   held.add(k);
+  pressed.add(k);
   event.preventDefault();
 });
 window.addEventListener('keyup', (event) => held.delete(event.key.toLowerCase()));
@@ -490,6 +517,38 @@ function snapToEdge(ax: number, az: number): void {
 }
 
 /**
+ * Room mode, after rollAxis is set from the keys held: on a new roll key press (`fresh`) latches the
+ * level part of rollAxis; while no roll key is held (`rolling` false) and the latch is on, rolls on
+ * about the latched axis until the cube has turned ROLL_LATCH_ANGLE since the press or
+ * ROLL_LATCH_TIME s have passed (against a wall it may never turn that far).
+ */
+function latchRoll(fresh: boolean, rolling: boolean): void {
+  const q = shell.world.components.Orientation,
+    e = handles.body,
+    t = shell.world.time;
+  if (fresh && rolling) {
+    const l = Math.hypot(rollAxis[0]!, rollAxis[2]!);
+    latchAxis[0] = rollAxis[0]! / l;
+    latchAxis[1] = 0;
+    latchAxis[2] = rollAxis[2]! / l;
+    latchQ[0] = q.x[e]!;
+    latchQ[1] = q.y[e]!;
+    latchQ[2] = q.z[e]!;
+    latchQ[3] = q.w[e]!;
+    latchUntil = t + ROLL_LATCH_TIME;
+  }
+  if (rolling || t >= latchUntil) return;
+  const dot = Math.abs(latchQ[0]! * q.x[e]! + latchQ[1]! * q.y[e]! + latchQ[2]! * q.z[e]! + latchQ[3]! * q.w[e]!);
+  if (2 * Math.acos(Math.min(1, dot)) >= ROLL_LATCH_ANGLE) {
+    latchUntil = -1;
+    return;
+  }
+  rollAxis[0] = latchAxis[0]!;
+  rollAxis[1] = 0;
+  rollAxis[2] = latchAxis[2]!;
+}
+
+/**
  * Updates keyTorque (pivot) and rollAxis (room) from the keys held and the camera's axes (called every
  * frame). In the room W A S D roll the cube towards the screen's up, left, down and right along the
  * floor: about the axis y x d (d the direction of travel on the floor, the camera's right and its view
@@ -497,9 +556,12 @@ function snapToEdge(ax: number, az: number): void {
  * (`snapToEdge`: it goes over the edge facing most nearly that way); Q E spin it about the vertical.
  */
 function updateKeyTorque(): void {
-  const pitch = (held.has('s') ? 1 : 0) - (held.has('w') ? 1 : 0);
-  const yaw = (held.has('d') ? 1 : 0) - (held.has('a') ? 1 : 0);
-  const roll = (held.has('q') ? 1 : 0) - (held.has('e') ? 1 : 0);
+  const on = (k: string): boolean => held.has(k) || pressed.has(k);
+  const newRoll = pressed.has('w') || pressed.has('a') || pressed.has('s') || pressed.has('d');
+  const pitch = (on('s') ? 1 : 0) - (on('w') ? 1 : 0);
+  const yaw = (on('d') ? 1 : 0) - (on('a') ? 1 : 0);
+  const roll = (on('q') ? 1 : 0) - (on('e') ? 1 : 0);
+  pressed.clear();
   app.camera.matrixWorld.extractBasis(right, up, back);
   if (params.mode === 'room') {
     // Travel d = yaw right_flat - pitch forward_flat (forward = -back); axis = y x d = (d.z, 0, -d.x).
@@ -512,6 +574,7 @@ function updateKeyTorque(): void {
       az = -dx;
     // A cube rolls cleanly only over an edge: turn about the near-level body axis nearest that axis.
     if (ax !== 0 || az !== 0) snapToEdge(ax, az);
+    else snapped[3] = 0;
     if (snapped[3]! > 0) {
       ax = snapped[0]!;
       az = snapped[2]!;
@@ -527,6 +590,7 @@ function updateKeyTorque(): void {
     rollAxis[1] = ay;
     rollAxis[2] = az;
     keyTorque.fill(0);
+    latchRoll(newRoll, pitch !== 0 || yaw !== 0);
     return;
   }
   rollAxis.fill(0);
@@ -552,7 +616,7 @@ canvas.addEventListener('pointerdown', (event) => {
 canvas.addEventListener('pointerup', (event) => {
   if (event.pointerId !== downId) return;
   downId = -1;
-  if (Math.hypot(event.clientX - downX, event.clientY - downY) > CLICK_SLOP) return;
+  if (Math.hypot(event.clientX - downX, event.clientY - downY) > (event.pointerType === 'mouse' ? CLICK_SLOP : TAP_SLOP)) return;
   app.toNdc(event.clientX, event.clientY, ndc);
   if (clickAt(ndc[0], ndc[1]) && event.pointerType !== 'mouse') aimUntil = performance.now() + 600;
 });
@@ -736,9 +800,14 @@ function updateStatus(wx: number, wy: number, wz: number): void {
     t = world.time,
     w = Math.hypot(wx, wy, wz);
   if (params.mode === 'room') {
-    const flick = touch
+    let flick = touch
       ? 'Tap the floor: the cube slides there · ▲◀▼▶ roll it'
       : 'Click the floor: the cube slides there · W A S D roll it · Space jumps';
+    const want = PAD_FACES[pads.pad] ?? -1;
+    if (want >= 0 && !pads.done)
+      flick = touch
+        ? `Roll it (▲◀▼▶) till ${FACE_NAMES[want]} is on top, then tap the pad`
+        : `Roll it (W A S D) till ${FACE_NAMES[want]} is on top, then click the pad`;
     if (pads.done) {
       const time = pads.doneAt;
       if (time < bestPadTime) bestPadTime = time;
@@ -746,13 +815,15 @@ function updateStatus(wx: number, wy: number, wz: number): void {
         {
           goal: `All ${PADS.length} pads in ${time.toFixed(1)} s ${stars(padStars(time))}`,
           numbers: `best ${bestPadTime.toFixed(1)} s · ★★★ within ${PAD_STAR_TIMES[0]} s`,
-          hint: 'R: play again · M: next mode (free spin, then the flip challenge)',
+          hint: touch
+            ? '↻: play again · Mode: free spin, then the flip challenge'
+            : 'R: play again · M: next mode (free spin, then the flip challenge)',
         },
         true,
       );
     } else
       status.set({
-        goal: `Land the cube on the glowing pad (${pads.pad + 1} of ${PADS.length})`,
+        goal: `Land the cube on the glowing pad${want >= 0 ? `, ${FACE_NAMES[want]} face up` : ''} (${pads.pad + 1} of ${PADS.length})`,
         numbers: `Pads ${'●'.repeat(pads.pad)}${'○'.repeat(PADS.length - pads.pad)} ${pads.pad}/${PADS.length} · ${t.toFixed(1)} s · ${stars(padStars(Math.max(t, 0)))}`,
         hint: flick,
       });
@@ -769,7 +840,7 @@ function updateStatus(wx: number, wy: number, wz: number): void {
                 ? `${FLIP_GOAL} flips in ${flips.wonAt.toFixed(1)} s ${stars(3)}`
                 : `Time! ${n} flips ${stars(flips.stars())}`,
             numbers: `best ${bestFlips} flips · |ω| ${w.toFixed(1)} rad/s`,
-            hint: 'R: try again · M: back to the pads',
+            hint: touch ? '↻: try again · Mode: back to the pads' : 'R: try again · M: back to the pads',
           }
         : {
             goal: `Make the box flip over ${FLIP_GOAL} times in ${FLIP_TIME} s`,
@@ -784,7 +855,7 @@ function updateStatus(wx: number, wy: number, wz: number): void {
       // whose ω wanders and flips.
       goal: 'Free spin: a cube turns alike about every axis, so ω (magenta) stays on L (yellow)',
       numbers: `|ω| ${w.toFixed(2)} rad/s · angle L–ω ${angleLw.toFixed(1)}°`,
-      hint: 'M: a box, whose ω wanders and flips',
+      hint: touch ? 'Mode: a box, whose ω wanders and flips' : 'M: a box, whose ω wanders and flips',
     });
   }
 }
@@ -874,7 +945,13 @@ function frame(): void {
   if (padLit) {
     const spot = PADS[pads.pad]!;
     padMesh.position.set(spot[0], 0.02, spot[1]);
-    (padMesh.material as MeshStandardMaterial).emissiveIntensity = 0.8 + 0.4 * Math.sin(now / 250);
+    // A pad that takes any face glows mint; one that wants a face glows in that face's colour
+    const material = padMesh.material as MeshStandardMaterial,
+      want = PAD_FACES[pads.pad]!;
+    // (a face colour glows faintly, so the pad reads as the same colour as the face, not washed out).
+    material.color.setHex(want >= 0 ? faceColors[want]! : 0x0c8f52);
+    material.emissive.setHex(want >= 0 ? faceColors[want]! : 0x12c46e);
+    material.emissiveIntensity = want >= 0 ? 0.3 + 0.15 * Math.sin(now / 250) : 0.8 + 0.4 * Math.sin(now / 250);
   }
   padMarks.forEach((mark, i) => {
     mark.outline.visible = room && i > pads.pad;
@@ -927,13 +1004,17 @@ shell.expose({
     return Array.from(out);
   },
   /**
-   * The challenge's state: room: the lit pad's index (PADS.length when the round is over), the round's
+   * The challenge's state: room: the lit pad's index (PADS.length when the round is over), the face
+   * on top and the face the lit pad wants, the round's
    * time (s, -1 while it runs) and the pads' centres (x, z, m); flip: the flips counted and the time
    * the goal was reached (s, -1 if not yet).
    */
   challenge: () => ({
     mode: params.mode,
     pad: pads.pad,
+    /** The face of the cube on top now and the one the lit pad wants (indices into FACES; -1: any). */
+    face: topFace(shell.world, handles.body),
+    wants: PAD_FACES[pads.pad] ?? -1,
     padsDoneAt: pads.doneAt,
     pads: PADS.map((p) => [p[0], p[1]]),
     flips: flips.counter.count,

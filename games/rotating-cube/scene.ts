@@ -268,10 +268,39 @@ export const PADS: readonly (readonly [number, number])[] = Object.freeze([
 /** Half edge of a pad, m: the cube scores when its centre rests within this of the pad's centre on x and z. */
 export const PAD_HALF = 0.6;
 /**
- * Room challenge: the time of three stars and of two, s (over: one star). A click on each pad in turn,
- * as soon as the cube rests, finishes in about 13 s (the cube slides there in 1 to 2 s each).
+ * The faces of the cube, in the order of its body axes and of three.js's BoxGeometry groups: +x, -x,
+ * +y, -y, +z, -z (the game paints them red, pale red, green, pale green, blue, pale blue).
  */
-export const PAD_STAR_TIMES: readonly [number, number] = Object.freeze([20, 35]) as readonly [number, number];
+export const FACES = Object.freeze(['+x', '-x', '+y', '-y', '+z', '-z'] as const);
+/**
+ * The face each pad wants on top (an index into FACES), or -1 for any: the first two pads take any
+ * face (a slide is enough); the last three want +x, +z and +y up, which takes rolling the cube over
+ * its edges (a slide keeps the face up).
+ */
+export const PAD_FACES: readonly number[] = Object.freeze([-1, -1, 0, 4, 2]);
+
+/**
+ * The face of `body` on top: the index into FACES of its body axis (either way) pointing most nearly
+ * up in the world, from its orientation.
+ */
+export function topFace(world: PhysicsWorld, body: number): number {
+  const q = world.components.Orientation;
+  const x = q.x[body]!,
+    y = q.y[body]!,
+    z = q.z[body]!,
+    w = q.w[body]!;
+  // The world y components of the body's x, y and z axes: row y of its rotation matrix.
+  const up = [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)];
+  let best = 0;
+  for (let i = 1; i < 3; i++) if (Math.abs(up[i]!) > Math.abs(up[best]!)) best = i;
+  return 2 * best + (up[best]! < 0 ? 1 : 0);
+}
+/**
+ * Room challenge: the time of three stars and of two, s (over: one star). The first two pads take a
+ * click each (the cube slides there in 1 to 2 s); the last three a roll or two each to turn the wanted
+ * face up (about 0.6 s a roll) and a click.
+ */
+export const PAD_STAR_TIMES: readonly [number, number] = Object.freeze([30, 60]) as readonly [number, number];
 
 /**
  * Whether `body` rests on the pad centred at (px, pz) (m): its centre within PAD_HALF of the pad on x
@@ -329,7 +358,8 @@ export class FlipCounter {
 
 /**
  * Room mode's challenge, a round of PADS.length pads: the pad `pad` is lit; when the cube rests on it
- * (`restsOnPad`) the next one lights; after the last the round is over at `doneAt` (world time, s).
+ * (`restsOnPad`) with the face the pad wants on top (PAD_FACES, `topFace`) the next one lights; after
+ * the last the round is over at `doneAt` (world time, s).
  */
 export class PadChallenge {
   /** Index of the lit pad in PADS, in [0, PADS.length] (PADS.length: the round is over). */
@@ -351,8 +381,10 @@ export class PadChallenge {
    */
   update(world: PhysicsWorld, body: number): boolean {
     if (this.done) return false;
-    const spot = PADS[this.pad]!;
+    const spot = PADS[this.pad]!,
+      face = PAD_FACES[this.pad]!;
     if (!restsOnPad(world, body, spot[0], spot[1])) return false;
+    if (face >= 0 && topFace(world, body) !== face) return false;
     this.pad++;
     if (this.pad === PADS.length) this.doneAt = world.time;
     return true;

@@ -415,6 +415,14 @@ describe('phone controls', () => {
     const p1 = await pageOf(g, after.x, after.y, after.z);
     expect(p1.x).toBeLessThan(p0.x - 5);
     expect(Math.abs(p1.y - p0.y)).toBeLessThan(Math.abs(p1.x - p0.x));
+    // A quick tap on ▲ rolls it over one edge: another face on top.
+    await waitCubeAtRest(g);
+    const face = await read(g, 'challenge().face');
+    const up = (await g.page.getByRole('button', { name: 'turn forward', exact: true }).boundingBox())!;
+    await touchPath(g.page, [[up.x + up.width / 2, up.y + up.height / 2]], 0);
+    await g.waitFor((f) => (window.game as unknown as { challenge(): { face: number } }).challenge().face !== f, face, 60_000);
+    await waitCubeAtRest(g);
+    expect(await read(g, 'challenge().face')).not.toBe(face);
     expect(g.errors).toEqual([]);
     await g.close();
   });

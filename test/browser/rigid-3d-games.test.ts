@@ -614,6 +614,13 @@ describe('3D rigid-body games in headless Chromium', () => {
     // Mostly leftwards on the screen (the room is about 150 px across in this 800 px page).
     expect(left1.x).toBeLessThan(left0.x - 5);
     expect(Math.abs(left1.y - left0.y)).toBeLessThan(Math.abs(left1.x - left0.x));
+    // A short press of W rolls it over one edge (it keeps rolling past its tipping point): another face on top.
+    await waitCubeAtRest(g);
+    const face = await g.page.evaluate(() => (window.game as unknown as { challenge(): { face: number } }).challenge().face);
+    await g.press('w');
+    await g.waitFor((f) => (window.game as unknown as { challenge(): { face: number } }).challenge().face !== f, face, 60_000);
+    await waitCubeAtRest(g);
+    expect(await g.page.evaluate(() => (window.game as unknown as { challenge(): { face: number } }).challenge().face)).not.toBe(face);
     expect(g.errors).toEqual([]);
     await g.close();
   });
