@@ -1,25 +1,41 @@
 /**
  * Rotating cube: rigid-body rotation in 3D. By default (mode 'room') a 1 m cube falls tumbling into a
  * room and collides with the floor and the walls (a box collider and 3D box contacts): it lands,
- * tumbles, slides and bounces off them; torques from the keys (a couple of forces from
- * `applyForceAtPoint` in a forces-stage system) and impulses from clicks (`applyImpulseAtPoint` at
- * the point of the face clicked, a flick away from it) push it about, and Space makes it jump. The
- * challenge: rest it on five glowing pads in turn, against the clock.
- * Arrows show its angular momentum L (`spinAngularMomentum`, yellow) and angular velocity w (magenta).
+ * tumbles, slides and bounces off them. The challenge: rest it on five glowing pads in turn, against
+ * the clock, the last three with a given face on top (PAD_FACES: roll it to turn that face up, slide
+ * it there). A click or tap on the floor pushes the cube towards that point, just hard enough that
+ * sliding on a face it stops there (`slideSpeed`); a click on the cube flicks it away from the point
+ * clicked at a fixed speed; W A S D roll it over its edges in the screen's directions and Q E spin it
+ * (a couple of forces from `applyForceAtPoint` in a forces-stage system, which stops pushing once it
+ * turns at ROLL_SPIN_MAX); Space makes it jump. A pad reached chimes, flashes and pops its number.
+ * Arrows show its angular momentum L (`spinAngularMomentum`, yellow) and angular velocity w (magenta)
+ * on the pivot (and in the room when ticked in the panel).
  *
  * Mode 'cube' takes gravity away and holds the cube at its centre of mass on a frictionless pivot:
  * it tumbles slowly in place, and with no torque L stays fixed while w moves whenever the body is not
  * spinning about a principal axis. Mode 'flip' spins a box with three distinct moments about its
  * intermediate axis on the pivot: it flips over again and again (the Dzhanibekov effect); the plot
  * shows w in the body frame. The challenge: 10 flips within 20 s (spin it up with the yaw keys).
- * Keys: W/S, A/D, Q/E torque about the camera's right, up and viewing axes; X stops the spin;
- * Space jump (room); M switches mode (room, cube on a pivot, flip); P pause, N single step, R reset.
- * Click a face: an impulse there (in the room a flick away from the point clicked). Drag: orbit.
- * Challenges: room: rest the cube on five pads in turn (stars by time); flip: 10 flips in 20 s.
+ * Keys: room: W A S D roll the cube away, left, towards the viewer, right; Q E spin it about the
+ * vertical; pivot: W/S, A/D, Q/E torque about the camera's right, up and viewing axes. X stops the
+ * spin; Space jump (room); M switches mode (room, cube on a pivot, flip); P pause, N single step, R reset.
+ * Click: room: the floor, a push there; the cube, a flick away from the point; pivot: an impulse at the
+ * point of the face clicked along the ray. Drag: orbit.
+ * Challenges: room: rest the cube on five pads in turn, the last three with a given face up (stars by
+ * time); flip: 10 flips in 20 s.
  * URL: ?mode=room|cube|flip (default room), ?spin=rad/s (flip).
  */
 
-import { choiceParam, createButtonBar, createPanel, createStatusRow, numberParam, pageLayout } from '@bitphysics/game-kit';
+import {
+  choiceParam,
+  createButtonBar,
+  createPanel,
+  createStatusRow,
+  forEachImpact,
+  getSound,
+  numberParam,
+  pageLayout,
+} from '@bitphysics/game-kit';
 import type { Plot } from '@bitphysics/game-kit/plot';
 import { ORBIT_CONTROLS, startThreeGame } from '@bitphysics/game-kit/three';
 import {
@@ -29,12 +45,28 @@ import {
   applyImpulseAtPoint,
   createPhysicsWorld,
   type PhysicsWorld,
+  step as physicsStep,
+  rayCastAll3D,
   rotateVectorInverse,
   spinAngularMomentum,
   spinKineticEnergy,
 } from '@bitphysics/physics';
 import { VectorArrow } from '@bitphysics/render-three';
-import { BoxGeometry, Color, Float32BufferAttribute, Mesh, MeshStandardMaterial, Vector3 } from 'three';
+import {
+  BoxGeometry,
+  Color,
+  DoubleSide,
+  EdgesGeometry,
+  Float32BufferAttribute,
+  LineBasicMaterial,
+  LineSegments,
+  Mesh,
+  MeshBasicMaterial,
+  MeshStandardMaterial,
+  PlaneGeometry,
+  RingGeometry,
+  Vector3,
+} from 'three';
 import {
   buildRotatingCube,
   FLIP_GOAL,
@@ -43,23 +75,32 @@ import {
   JUMP_IMPULSE,
   MODES,
   type Mode,
+  PAD_FACES,
   PAD_HALF,
   PAD_STAR_TIMES,
   PADS,
   PadChallenge,
   padStars,
+  ROLL_SPIN_MAX,
+  ROLL_TORQUE,
+  ROOM_FRICTION,
   ROOM_HALF,
   ROOM_PUSH,
   type RotatingCubeHandles,
   rotatingCubeWorldOptions,
+  slideSpeed,
+  topFace,
   torqueCouple,
   WALL_HEIGHT,
 } from './scene';
 
-/** A press that moves more than this, CSS px, is a camera drag, not a click. */
+/** A press that moves more than this, CSS px, is a camera drag, not a click (a finger: TAP_SLOP, fingers wobble more). */
 const CLICK_SLOP = 5;
-/** Room mode: a click's flick rises this much per unit of its horizontal direction (0.5: about 27 degrees up). */
-const FLICK_LIFT = 0.5;
+const TAP_SLOP = 12;
+/** Room mode: a push lands within this of its target, m, for a "perfect" (the pad's pop says so). */
+const PERFECT = 0.25;
+/** Room mode: the cube's centre height resting on a face, m (a push aims from there). */
+const REST_HEIGHT = 0.5;
 /** Length of the angular-velocity arrow at the starting spin (or at 1 rad/s if slower), m. */
 const ARROW_LENGTH = 1.6;
 
@@ -68,8 +109,9 @@ const params = {
   torque: 0.5,
   impulse: 0.3,
   spin: numberParam('spin', { default: 6, min: 0.5, max: 30 }),
-  showL: true,
-  showOmega: true,
+  // The arrows explain the pivot modes; in the room they would cover the pads.
+  showL: choiceParam('mode', MODES, 'room') !== 'room',
+  showOmega: choiceParam('mode', MODES, 'room') !== 'room',
   axes: true,
   stop: () => stopSpin(),
   reset: () => game.shell.reset(),
@@ -86,6 +128,39 @@ let bestPadTime = Infinity,
 let omegaScale = 1;
 /** Torque the keys ask for now, N m, world frame (read by the forces-stage system). */
 const keyTorque = new Float64Array(3);
+/** Room mode: the unit axis the roll keys turn the cube about (world frame), or zero when none is held. */
+const rollAxis = new Float64Array(3);
+/** Torque handed to the forces stage each step, N m (keyTorque, or in the room the governed roll torque). */
+const stepTorque = new Float64Array(3);
+/**
+ * The torque of this step, N m, world frame: on the pivot keyTorque; in the room ROLL_TORQUE (times
+ * the panel's key torque over its default) about rollAxis while the cube turns about that axis slower
+ * than ROLL_SPIN_MAX, else none (a held key rolls it at a steady pace).
+ */
+function torqueNow(world: PhysicsWorld): Float64Array {
+  if (params.mode !== 'room') return keyTorque;
+  const W = world.components.AngularVelocity,
+    e = handles.body;
+  const along = W.x[e]! * rollAxis[0]! + W.y[e]! * rollAxis[1]! + W.z[e]! * rollAxis[2]!;
+  const T = along < ROLL_SPIN_MAX ? (ROLL_TORQUE * params.torque) / 0.5 : 0;
+  stepTorque[0] = T * rollAxis[0]!;
+  stepTorque[1] = T * rollAxis[1]!;
+  stepTorque[2] = T * rollAxis[2]!;
+  return stepTorque;
+}
+/**
+ * Room mode: a roll key pressed keeps rolling the cube until it has turned ROLL_LATCH_ANGLE (past
+ * its tipping point, 45 degrees, from where it falls onto the next face by itself) or for
+ * ROLL_LATCH_TIME s, so a short tap rolls it over one edge instead of rocking it back.
+ */
+const ROLL_LATCH_ANGLE = (55 * Math.PI) / 180,
+  ROLL_LATCH_TIME = 1.5;
+/** The latched roll: its axis (a level unit vector), the orientation at the press and the world time it ends; on while `latchUntil` > now. */
+const latchAxis = new Float64Array(3),
+  latchQ = new Float64Array(4);
+let latchUntil = -1;
+/** Pads reached and not yet celebrated: the pad's index, the world time, s, and the miss from its centre, m. */
+const padsReached: { pad: number; time: number; miss: number }[] = [];
 
 /** A fresh world with the body of the current mode (the shell calls it at start and on R). */
 function createWorld(): PhysicsWorld {
@@ -97,15 +172,23 @@ function createWorld(): PhysicsWorld {
   addSystem(
     world,
     'forces',
-    torqueCouple(handles.body, () => keyTorque),
+    torqueCouple(handles.body, () => torqueNow(world)),
   );
   // The challenges are checked after every step (a system at the end of the step), so they count
   // the same whether the page runs, single-steps or is stepped by a test.
   pads.reset();
   flips.reset();
+  padsReached.length = 0;
+  latchUntil = -1;
   addSystem(world, 'finalize', (w) => {
-    if (params.mode === 'room') pads.update(w, handles.body);
-    else if (params.mode === 'flip') flips.update(w, handles.body);
+    if (params.mode === 'room') {
+      const spot = PADS[pads.pad];
+      if (spot && pads.update(w, handles.body)) {
+        const P = w.components.Position;
+        const miss = Math.hypot(P.x[handles.body]! - spot[0], P.z[handles.body]! - spot[1]);
+        padsReached.push({ pad: pads.pad - 1, time: w.time, miss });
+      }
+    } else if (params.mode === 'flip') flips.update(w, handles.body);
   });
   // Held at its pivot, the box has no collider: a floor far below only catches the shadow. The room has its own floor.
   if (params.mode !== 'room') addPlane(world, { normal: [0, 1, 0], point: [0, -1.6, 0] });
@@ -118,7 +201,9 @@ function createWorld(): PhysicsWorld {
  */
 const wallMaterial = new MeshStandardMaterial({ roughness: 0.75, metalness: 0, transparent: true, opacity: 0.5, depthWrite: false });
 
-// Read by frame(), which the shell may call before this module's code after the await below has run.
+// Read by frame() and the step, which the shell may call before this module's code after the await below has run.
+/** The page's sound (impacts, pushes, the pads' chimes). */
+const sound = getSound();
 const L = new Float64Array(3),
   wb = new Float64Array(3);
 let lastPlotted = -1,
@@ -130,11 +215,18 @@ const game = await startThreeGame({
   title: 'Rotating cube',
   createWorld,
   bodies: () => 1,
+  // Every step's impacts of the cube on the floor and the walls knock, louder the harder.
+  step: (world) => {
+    physicsStep(world);
+    if (params.mode === 'room')
+      forEachImpact(world, (a, b, impulse) => {
+        if (a === handles.body || b === handles.body) sound.impact(impulse, 'wood', { threshold: 0.4, loud: 6 });
+      });
+  },
   controls: [
-    { keys: 'Click', action: 'poke a face: the cube is flicked away from it' },
-    { keys: 'W S', action: 'torque: pitch', touch: 'Pitch' },
-    { keys: 'A D', action: 'torque: yaw', touch: 'Yaw' },
-    { keys: 'Q E', action: 'torque: roll', touch: 'Roll' },
+    { keys: 'Click', action: 'the floor: push the cube there; the cube: flick it away', touch: 'Tap' },
+    { keys: 'W A S D', action: 'roll the cube (pivot: pitch, yaw)', touch: '▲ ◀ ▼ ▶' },
+    { keys: 'Q E', action: 'spin it (pivot: roll)', touch: '⟲ ⟳' },
     { keys: 'X', action: 'stop spinning', touch: 'Stop' },
     { keys: 'Space', action: 'jump (room mode)', touch: 'Jump' },
     { keys: 'M', action: 'mode: room / cube on a pivot / Dzhanibekov flip', touch: 'Mode' },
@@ -211,6 +303,8 @@ function jump(): void {
 // negative side, so every face reads in the light), scaled by the renderer to the body's
 // equivalent-inertia box.
 const faceColors = [0xef5b3a, 0xf6b09a, 0x5cc043, 0xbde8a4, 0x3d7be0, 0xa9c6f7];
+/** The faces' colours in words, in the order of FACES (a pale face is opposite its colour). */
+const FACE_NAMES = ['red', 'pale red', 'green', 'pale green', 'blue', 'pale blue'];
 const boxGeometry = new BoxGeometry(1, 1, 1);
 {
   // Vertex colours are linear in three.js; Color converts from sRGB hex.
@@ -233,21 +327,112 @@ shell.onWorldChange(() => {
   plot?.clear();
 });
 
-// The lit pad of the room's challenge: a glowing square on the floor (drawn only; the physics knows nothing of it).
+// The room's pads (drawn only; the physics knows nothing of them): the lit one a glowing square, the
+// ones to come outlined, the ones reached a dim gold; a ring bursts from a pad when it is reached.
 const padMesh = new Mesh(
   new BoxGeometry(2 * PAD_HALF, 0.02, 2 * PAD_HALF),
   new MeshStandardMaterial({ color: 0x0c8f52, emissive: 0x12c46e, emissiveIntensity: 0.9, roughness: 0.4 }),
 );
 padMesh.receiveShadow = true;
 app.scene.add(padMesh);
+const padOutline = new EdgesGeometry(new PlaneGeometry(2 * PAD_HALF, 2 * PAD_HALF).rotateX(-Math.PI / 2));
+const padDoneMaterial = new MeshBasicMaterial({ color: 0xc9a43a, transparent: true, opacity: 0.55 });
+const padMarks = PADS.map(([x, z], i) => {
+  // Outlined in the colour of the face it wants (mint: any face).
+  const want = PAD_FACES[i]!;
+  const outline = new LineSegments(
+    padOutline,
+    new LineBasicMaterial({ color: want >= 0 ? faceColors[want]! : 0x9fe8c0, transparent: true, opacity: 0.7 }),
+  );
+  const done = new Mesh(new PlaneGeometry(2 * PAD_HALF, 2 * PAD_HALF).rotateX(-Math.PI / 2), padDoneMaterial);
+  outline.position.set(x, 0.015, z);
+  done.position.set(x, 0.012, z);
+  app.scene.add(outline, done);
+  return { outline, done };
+});
+const burst = new Mesh(
+  new RingGeometry(0.85, 1, 48).rotateX(-Math.PI / 2),
+  new MeshBasicMaterial({ color: 0xffe27a, transparent: true, side: DoubleSide, depthWrite: false }),
+);
+burst.visible = false;
+app.scene.add(burst);
+/** performance.now() of the last pad reached, ms (the burst and the pop run from it). */
+let burstAt = -Infinity;
+/** A burst lasts this long, ms. */
+const BURST_MS = 700;
+
+// Room mode: where a click would push the cube (an arrow on the floor from the cube) and the point aimed at.
+const aimArrow = new VectorArrow({ color: 0x7fe3ff, radius: 0.035, headLength: 0.22 });
+const aimRing = new Mesh(
+  new RingGeometry(0.12, 0.18, 32).rotateX(-Math.PI / 2),
+  new MeshBasicMaterial({ color: 0x7fe3ff, transparent: true, opacity: 0.9, side: DoubleSide, depthWrite: false }),
+);
+aimRing.visible = false;
+app.scene.add(aimArrow.object, aimRing);
+aimArrow.hide();
+/** performance.now() until which the aim of the last tap stays shown (touch has no hover), ms. */
+let aimUntil = 0;
+
+// The pop over the scene when a pad is reached ("Pad 2 of 5 · 6.4 s", "Perfect!").
+const pop = document.createElement('div');
+pop.dataset.hud = 'pad-pop';
+pop.setAttribute('aria-live', 'polite');
+pop.style.cssText =
+  'position: absolute; left: 50%; top: 22%; transform: translate(-50%, -50%); pointer-events: none; opacity: 0;' +
+  'font: 700 clamp(18px, 5.5vw, 28px) system-ui, sans-serif; color: #ffe27a; text-shadow: 0 2px 6px #000, 0 0 2px #000; text-align: center;' +
+  'white-space: nowrap; transition: opacity 0.25s, transform 0.9s ease-out';
+{
+  const stage = app.canvas.parentElement ?? document.body;
+  if (getComputedStyle(stage).position === 'static') stage.style.position = 'relative';
+  stage.append(pop);
+}
+let popHideTimer = 0;
+/** Shows `text` in the pop, rising and fading after `ms` ms. */
+function showPop(text: string, ms = 1100): void {
+  pop.textContent = text;
+  pop.style.transition = 'none';
+  pop.style.opacity = '1';
+  pop.style.transform = 'translate(-50%, -50%) scale(1.15)';
+  void pop.offsetWidth;
+  pop.style.transition = 'opacity 0.4s, transform 0.9s ease-out';
+  pop.style.transform = 'translate(-50%, -90%) scale(1)';
+  clearTimeout(popHideTimer);
+  popHideTimer = window.setTimeout(() => {
+    pop.style.opacity = '0';
+  }, ms);
+}
+/** The chimes of pads 1 to 5 (a rising C major arpeggio, Hz); the round's end rings the octave above. */
+const PAD_PITCHES = [523, 659, 784, 988, 1175];
+
+/** Celebrates the pads reached since the last frame: chime, burst ring, pop. */
+function celebrate(): void {
+  while (padsReached.length > 0) {
+    const r = padsReached.shift()!;
+    const last = r.pad === PADS.length - 1;
+    const spot = PADS[r.pad]!;
+    burst.position.set(spot[0], 0.03, spot[1]);
+    burstAt = performance.now();
+    sound.chime(PAD_PITCHES[r.pad] ?? 880, last ? 0.3 : 0.35);
+    if (last) window.setTimeout(() => sound.chime(1568, 0.8), 180);
+    const perfect = r.miss <= PERFECT ? ' · Perfect!' : '';
+    showPop(
+      last
+        ? `All ${PADS.length} pads! ${r.time.toFixed(1)} s ${stars(padStars(r.time))}`
+        : `Pad ${r.pad + 1} of ${PADS.length} ✓${perfect}`,
+      last ? 2600 : 1100,
+    );
+  }
+}
 
 const lArrow = new VectorArrow({ color: 0xffd166, radius: 0.025, headLength: 0.14 });
 const wArrow = new VectorArrow({ color: 0xff5ce1, radius: 0.02, headLength: 0.12 });
 app.scene.add(lArrow.object, wArrow.object);
 
-// ---- Keys held: torque about the camera's axes ------------------------------------------------
+// ---- Keys held: in the room the cube rolls in the screen's directions; on the pivot torque about the camera's axes
 
 const held = new Set<string>();
+/** Keys pressed since the last frame (a press and release between two frames still counts once). */
+const pressed = new Set<string>();
 const TORQUE_KEYS = ['w', 's', 'a', 'd', 'q', 'e'];
 function typing(target: EventTarget | null): boolean {
   const el = target as HTMLElement | null;
@@ -257,43 +442,165 @@ window.addEventListener('keydown', (event) => {
   const k = event.key.toLowerCase();
   if (!TORQUE_KEYS.includes(k) || typing(event.target) || event.ctrlKey || event.metaKey || event.altKey) return;
   held.add(k);
+  pressed.add(k);
   event.preventDefault();
 });
 window.addEventListener('keyup', (event) => held.delete(event.key.toLowerCase()));
 window.addEventListener('blur', () => held.clear());
 
-// Touch: the torque keys as hold buttons, and stop, jump and mode (the same keys).
-createButtonBar(
+// Touch: the turn keys as hold buttons (in the room arrows that roll the cube, on the pivot the
+// torques' names), and stop, jump and mode (the same keys).
+const turnButtons = createButtonBar(
   [
-    { label: 'Pitch ▲', name: 'torque: pitch forward', key: 'w' },
-    { label: 'Pitch ▼', name: 'torque: pitch back', key: 's' },
-    { label: 'Yaw ◀', name: 'torque: yaw left', key: 'a' },
-    { label: 'Yaw ▶', name: 'torque: yaw right', key: 'd' },
-    { label: 'Roll ⟲', name: 'torque: roll left', key: 'q' },
-    { label: 'Roll ⟳', name: 'torque: roll right', key: 'e' },
+    { label: '▲', name: 'turn forward', key: 'w' },
+    { label: '▼', name: 'turn back', key: 's' },
+    { label: '◀', name: 'turn left', key: 'a' },
+    { label: '▶', name: 'turn right', key: 'd' },
+    { label: '⟲', name: 'spin left', key: 'q' },
+    { label: '⟳', name: 'spin right', key: 'e' },
     { label: 'Stop', name: 'stop spinning', key: 'x' },
     { label: 'Jump', name: 'jump (room mode)', key: ' ' },
     { label: 'Mode', name: 'mode: room / pivot / flip', key: 'm' },
   ],
-  { label: 'torques and modes' },
+  { label: 'turns and modes' },
 );
+/** Labels of the six turn buttons in the room and on the pivot. */
+const TURN_LABELS = {
+  room: ['▲', '▼', '◀', '▶', '⟲', '⟳'],
+  pivot: ['Pitch ▲', 'Pitch ▼', 'Yaw ◀', 'Yaw ▶', 'Roll ⟲', 'Roll ⟳'],
+};
+/** Labels the turn buttons for the current mode. */
+function labelTurnButtons(): void {
+  const labels = params.mode === 'room' ? TURN_LABELS.room : TURN_LABELS.pivot;
+  labels.forEach((label, i) => {
+    turnButtons.buttons[i]!.textContent = label;
+  });
+}
+labelTurnButtons();
 
 const right = new Vector3(),
   up = new Vector3(),
   back = new Vector3();
-/** Updates keyTorque from the keys held and the camera's axes (called every frame). */
+/** snapToEdge's answer: a level unit axis (x, y = 0, z) and 1, or 0 in [3] when there is none. */
+const snapped = new Float64Array(4);
+/**
+ * Into `snapped`: of the cube's three body axes (the columns of its rotation matrix) those lying
+ * within 30 degrees of level, the one (either way) most nearly along the level direction (ax, 0, az),
+ * flattened to level and made unit; snapped[3] = 0 if no axis lies that level (the cube on an edge
+ * or a corner: the axis is then used as it is).
+ */
+function snapToEdge(ax: number, az: number): void {
+  const q = shell.world.components.Orientation,
+    e = handles.body;
+  const x = q.x[e]!,
+    y = q.y[e]!,
+    z = q.z[e]!,
+    w = q.w[e]!;
+  const cols = [
+    [1 - 2 * (y * y + z * z), 2 * (x * y + w * z), 2 * (x * z - w * y)],
+    [2 * (x * y - w * z), 1 - 2 * (x * x + z * z), 2 * (y * z + w * x)],
+    [2 * (x * z + w * y), 2 * (y * z - w * x), 1 - 2 * (x * x + y * y)],
+  ];
+  let best = 0;
+  snapped[3] = 0;
+  for (const c of cols) {
+    if (Math.abs(c[1]!) > 0.5) continue;
+    const l = Math.hypot(c[0]!, c[2]!);
+    const dot = (c[0]! * ax + c[2]! * az) / l;
+    if (Math.abs(dot) <= best) continue;
+    best = Math.abs(dot);
+    const sign = dot < 0 ? -1 : 1;
+    snapped[0] = (sign * c[0]!) / l;
+    snapped[2] = (sign * c[2]!) / l;
+    snapped[3] = 1;
+  }
+}
+
+/**
+ * Room mode, after rollAxis is set from the keys held: on a new roll key press (`fresh`) latches the
+ * level part of rollAxis; while no roll key is held (`rolling` false) and the latch is on, rolls on
+ * about the latched axis until the cube has turned ROLL_LATCH_ANGLE since the press or
+ * ROLL_LATCH_TIME s have passed (against a wall it may never turn that far).
+ */
+function latchRoll(fresh: boolean, rolling: boolean): void {
+  const q = shell.world.components.Orientation,
+    e = handles.body,
+    t = shell.world.time;
+  if (fresh && rolling) {
+    const l = Math.hypot(rollAxis[0]!, rollAxis[2]!);
+    latchAxis[0] = rollAxis[0]! / l;
+    latchAxis[1] = 0;
+    latchAxis[2] = rollAxis[2]! / l;
+    latchQ[0] = q.x[e]!;
+    latchQ[1] = q.y[e]!;
+    latchQ[2] = q.z[e]!;
+    latchQ[3] = q.w[e]!;
+    latchUntil = t + ROLL_LATCH_TIME;
+  }
+  if (rolling || t >= latchUntil) return;
+  const dot = Math.abs(latchQ[0]! * q.x[e]! + latchQ[1]! * q.y[e]! + latchQ[2]! * q.z[e]! + latchQ[3]! * q.w[e]!);
+  if (2 * Math.acos(Math.min(1, dot)) >= ROLL_LATCH_ANGLE) {
+    latchUntil = -1;
+    return;
+  }
+  rollAxis[0] = latchAxis[0]!;
+  rollAxis[1] = 0;
+  rollAxis[2] = latchAxis[2]!;
+}
+
+/**
+ * Updates keyTorque (pivot) and rollAxis (room) from the keys held and the camera's axes (called every
+ * frame). In the room W A S D roll the cube towards the screen's up, left, down and right along the
+ * floor: about the axis y x d (d the direction of travel on the floor, the camera's right and its view
+ * flattened onto the floor), so the top goes that way, snapped to the cube's nearest level edge
+ * (`snapToEdge`: it goes over the edge facing most nearly that way); Q E spin it about the vertical.
+ */
 function updateKeyTorque(): void {
-  const pitch = (held.has('s') ? 1 : 0) - (held.has('w') ? 1 : 0);
-  const yaw = (held.has('d') ? 1 : 0) - (held.has('a') ? 1 : 0);
-  const roll = (held.has('q') ? 1 : 0) - (held.has('e') ? 1 : 0);
+  const on = (k: string): boolean => held.has(k) || pressed.has(k);
+  const newRoll = pressed.has('w') || pressed.has('a') || pressed.has('s') || pressed.has('d');
+  const pitch = (on('s') ? 1 : 0) - (on('w') ? 1 : 0);
+  const yaw = (on('d') ? 1 : 0) - (on('a') ? 1 : 0);
+  const roll = (on('q') ? 1 : 0) - (on('e') ? 1 : 0);
+  pressed.clear();
   app.camera.matrixWorld.extractBasis(right, up, back);
+  if (params.mode === 'room') {
+    // Travel d = yaw right_flat - pitch forward_flat (forward = -back); axis = y x d = (d.z, 0, -d.x).
+    const rl = Math.hypot(right.x, right.z) || 1,
+      bl = Math.hypot(back.x, back.z) || 1;
+    const dx = (yaw * right.x) / rl + (pitch * back.x) / bl,
+      dz = (yaw * right.z) / rl + (pitch * back.z) / bl;
+    let ax = dz,
+      ay = 0,
+      az = -dx;
+    // A cube rolls cleanly only over an edge: turn about the near-level body axis nearest that axis.
+    if (ax !== 0 || az !== 0) snapToEdge(ax, az);
+    else snapped[3] = 0;
+    if (snapped[3]! > 0) {
+      ax = snapped[0]!;
+      az = snapped[2]!;
+    }
+    ay = roll;
+    const n = Math.hypot(ax, ay, az);
+    if (n > 0) {
+      ax /= n;
+      ay /= n;
+      az /= n;
+    }
+    rollAxis[0] = ax;
+    rollAxis[1] = ay;
+    rollAxis[2] = az;
+    keyTorque.fill(0);
+    latchRoll(newRoll, pitch !== 0 || yaw !== 0);
+    return;
+  }
+  rollAxis.fill(0);
   const T = params.torque * push();
   keyTorque[0] = T * (pitch * right.x + yaw * up.x + roll * back.x);
   keyTorque[1] = T * (pitch * right.y + yaw * up.y + roll * back.y);
   keyTorque[2] = T * (pitch * right.z + yaw * up.z + roll * back.z);
 }
 
-// ---- Clicks: an impulse at the point of the face clicked ----------------------------------------
+// ---- Clicks: in the room a push towards the floor point clicked (or away from the cube's face); on the pivot an impulse at the face
 
 const canvas = app.canvas;
 const ndc: [number, number] = [0, 0];
@@ -309,39 +616,115 @@ canvas.addEventListener('pointerdown', (event) => {
 canvas.addEventListener('pointerup', (event) => {
   if (event.pointerId !== downId) return;
   downId = -1;
-  if (Math.hypot(event.clientX - downX, event.clientY - downY) > CLICK_SLOP) return;
+  if (Math.hypot(event.clientX - downX, event.clientY - downY) > (event.pointerType === 'mouse' ? CLICK_SLOP : TAP_SLOP)) return;
   app.toNdc(event.clientX, event.clientY, ndc);
-  clickAt(ndc[0], ndc[1]);
+  if (clickAt(ndc[0], ndc[1]) && event.pointerType !== 'mouse') aimUntil = performance.now() + 600;
 });
+// A mouse shows where a click would push the cube; a finger (no hover) sees it after its tap.
+canvas.addEventListener('pointermove', (event) => {
+  if (event.pointerType !== 'mouse' || downId !== -1) return;
+  app.toNdc(event.clientX, event.clientY, ndc);
+  hover = aimAt(ndc[0], ndc[1]) !== null;
+  if (hover) aimUntil = Infinity;
+});
+canvas.addEventListener('pointerleave', () => {
+  hover = false;
+  aimUntil = 0;
+});
+/** Whether the mouse hovers over a point a click would push the cube to. */
+let hover = false;
 
 const rayDir = new Vector3();
+/** What a room click at a point does: a push of the cube at `speed` m/s along (dx, dz) (unit), aiming at (x, z). */
+interface Push {
+  kind: 'floor' | 'cube';
+  dx: number;
+  dz: number;
+  speed: number;
+  x: number;
+  z: number;
+}
+const aim: Push = { kind: 'floor', dx: 0, dz: 0, speed: 0, x: 0, z: 0 };
+/** The last push given (for tests and the console), or null. */
+let lastPush: Push | null = null;
+const origin = new Float64Array(3),
+  span = new Float64Array(3);
 /**
- * Casts a ray from the camera through (ndcX, ndcY); if it hits the body, applies an impulse of
- * params.impulse N s (times ROOM_PUSH in the room) at the hit point: on the pivot along the ray; in
- * the room a flick away from the point poked: horizontally from the hit point towards the cube's
- * centre (along the ray's horizontal direction when the hit is within 10 cm of above the centre),
- * tilted FLICK_LIFT up. So a poke at the cube's west side sends it east, whichever way the camera
- * looks (the steep camera's ray points mostly down: along it the cube would only be pressed into
- * the floor).
- * @returns whether the body was hit.
+ * Room mode: what a click at (ndcX, ndcY) would do, into `aim`: on the cube (a ray cast through the
+ * physics that looks past the see-through walls) a flick away from the point hit, horizontally from
+ * it towards the cube's centre (along the ray when it hits the top within 10 cm of the centre), at
+ * params.impulse ROOM_PUSH / m m/s; elsewhere a push towards where the ray meets the floor (kept
+ * inside the room) at `slideSpeed` of the distance, so a cube sliding on a face stops there.
+ * @returns `aim`, or null when the click would do nothing (not the room, or the ray misses the floor).
  */
-function clickAt(ndcX: number, ndcY: number): boolean {
-  const hit = renderer.pick(ndcX, ndcY, app.camera);
-  if (!hit || hit.eid !== handles.body) return false;
+function aimAt(ndcX: number, ndcY: number): Push | null {
+  if (params.mode !== 'room') return null;
   rayDir.set(ndcX, ndcY, 0.5).unproject(app.camera).sub(app.camera.position).normalize();
+  const cam = app.camera.position;
   const P = shell.world.components.Position,
     e = handles.body;
-  const hx = P.x[e]! - hit.point[0]!,
-    hz = P.z[e]! - hit.point[2]!;
-  if (params.mode === 'room' && Math.hypot(hx, hz) > 0.1) rayDir.set(hx, 0, hz);
-  if (params.mode === 'room' && Math.hypot(rayDir.x, rayDir.z) > 1e-6) {
-    rayDir.y = 0;
-    rayDir.normalize();
-    rayDir.y = FLICK_LIFT;
-    rayDir.normalize();
+  const cx = P.x[e]!,
+    cz = P.z[e]!;
+  origin[0] = cam.x;
+  origin[1] = cam.y;
+  origin[2] = cam.z;
+  span[0] = rayDir.x * 200;
+  span[1] = rayDir.y * 200;
+  span[2] = rayDir.z * 200;
+  const hit = rayCastAll3D(shell.world, origin, span).find((h) => h.body === e);
+  if (hit) {
+    let hx = cx - hit.x,
+      hz = cz - hit.z;
+    if (Math.hypot(hx, hz) <= 0.1) {
+      hx = rayDir.x;
+      hz = rayDir.z;
+    }
+    const l = Math.hypot(hx, hz);
+    if (!(l > 1e-9)) return null;
+    const speed = (params.impulse * ROOM_PUSH) / shell.world.components.Mass.value[e]!;
+    Object.assign(aim, { kind: 'cube', dx: hx / l, dz: hz / l, speed });
+    const d = speed ** 2 / (2 * ROOM_FRICTION * 9.81);
+    aim.x = cx + aim.dx * d;
+    aim.z = cz + aim.dz * d;
+    return aim;
   }
+  // The floor point: where the ray falls to the height of the cube's centre (so a click on the pad's
+  // drawing aims where the cube's centre should stop), kept inside the room.
+  if (!(rayDir.y < -1e-6)) return null;
+  const t = (REST_HEIGHT - cam.y) / rayDir.y;
+  const inside = ROOM_HALF - 0.5;
+  const x = Math.max(-inside, Math.min(inside, cam.x + rayDir.x * t)),
+    z = Math.max(-inside, Math.min(inside, cam.z + rayDir.z * t));
+  const dist = Math.hypot(x - cx, z - cz);
+  if (!(dist > 0.05)) return null;
+  Object.assign(aim, { kind: 'floor', dx: (x - cx) / dist, dz: (z - cz) / dist, speed: slideSpeed(dist), x, z });
+  return aim;
+}
+
+/**
+ * A click at (ndcX, ndcY). Room: the push of `aimAt`, an impulse at the centre of mass that sets the
+ * cube's horizontal velocity to the push's (whatever it had: the same click always does the same
+ * thing). Pivot: if the ray hits the body, an impulse of params.impulse N s along it at the point hit.
+ * @returns whether the cube was pushed.
+ */
+function clickAt(ndcX: number, ndcY: number): boolean {
+  const e = handles.body;
+  if (params.mode === 'room') {
+    const p = aimAt(ndcX, ndcY);
+    if (!p) return false;
+    const c = shell.world.components,
+      m = c.Mass.value[e]!;
+    applyImpulse(shell.world, e, [m * (p.dx * p.speed - c.Velocity.x[e]!), 0, m * (p.dz * p.speed - c.Velocity.z[e]!)]);
+    lastPush = { ...p };
+    sound.launch(0.25 + (0.5 * p.speed) / 7);
+    flash = 12;
+    return true;
+  }
+  const hit = renderer.pick(ndcX, ndcY, app.camera);
+  if (!hit || hit.eid !== e) return false;
+  rayDir.set(ndcX, ndcY, 0.5).unproject(app.camera).sub(app.camera.position).normalize();
   const J = params.impulse * push();
-  applyImpulseAtPoint(shell.world, handles.body, [rayDir.x * J, rayDir.y * J, rayDir.z * J], hit.point);
+  applyImpulseAtPoint(shell.world, e, [rayDir.x * J, rayDir.y * J, rayDir.z * J], hit.point);
   flash = 12;
   return true;
 }
@@ -358,6 +741,8 @@ function stopSpin(): void {
 /** Switches mode, rebuilds the world and frames it. */
 function setMode(mode: Mode): void {
   params.mode = mode;
+  params.showL = params.showOmega = mode !== 'room';
+  labelTurnButtons();
   panel.refresh();
   shell.reset();
   const v = viewOf(mode);
@@ -415,7 +800,14 @@ function updateStatus(wx: number, wy: number, wz: number): void {
     t = world.time,
     w = Math.hypot(wx, wy, wz);
   if (params.mode === 'room') {
-    const flick = touch ? 'Tap a face to flick it · hold Pitch, Yaw, Roll' : 'Click a face to flick it · W A S D Q E turn it · Space jumps';
+    let flick = touch
+      ? 'Tap the floor: the cube slides there · ▲◀▼▶ roll it'
+      : 'Click the floor: the cube slides there · W A S D roll it · Space jumps';
+    const want = PAD_FACES[pads.pad] ?? -1;
+    if (want >= 0 && !pads.done)
+      flick = touch
+        ? `Roll it (▲◀▼▶) till ${FACE_NAMES[want]} is on top, then tap the pad`
+        : `Roll it (W A S D) till ${FACE_NAMES[want]} is on top, then click the pad`;
     if (pads.done) {
       const time = pads.doneAt;
       if (time < bestPadTime) bestPadTime = time;
@@ -423,14 +815,16 @@ function updateStatus(wx: number, wy: number, wz: number): void {
         {
           goal: `All ${PADS.length} pads in ${time.toFixed(1)} s ${stars(padStars(time))}`,
           numbers: `best ${bestPadTime.toFixed(1)} s · ★★★ within ${PAD_STAR_TIMES[0]} s`,
-          hint: 'R: play again · M: next mode (free spin, then the flip challenge)',
+          hint: touch
+            ? '↻: play again · Mode: free spin, then the flip challenge'
+            : 'R: play again · M: next mode (free spin, then the flip challenge)',
         },
         true,
       );
     } else
       status.set({
-        goal: `Land the cube on the glowing pad (${pads.pad + 1} of ${PADS.length})`,
-        numbers: `Pads ${pads.pad}/${PADS.length} · ${t.toFixed(1)} s · ${stars(padStars(Math.max(t, 0)))}`,
+        goal: `Land the cube on the glowing pad${want >= 0 ? `, ${FACE_NAMES[want]} face up` : ''} (${pads.pad + 1} of ${PADS.length})`,
+        numbers: `Pads ${'●'.repeat(pads.pad)}${'○'.repeat(PADS.length - pads.pad)} ${pads.pad}/${PADS.length} · ${t.toFixed(1)} s · ${stars(padStars(Math.max(t, 0)))}`,
         hint: flick,
       });
   } else if (params.mode === 'flip') {
@@ -446,7 +840,7 @@ function updateStatus(wx: number, wy: number, wz: number): void {
                 ? `${FLIP_GOAL} flips in ${flips.wonAt.toFixed(1)} s ${stars(3)}`
                 : `Time! ${n} flips ${stars(flips.stars())}`,
             numbers: `best ${bestFlips} flips · |ω| ${w.toFixed(1)} rad/s`,
-            hint: 'R: try again · M: back to the pads',
+            hint: touch ? '↻: try again · Mode: back to the pads' : 'R: try again · M: back to the pads',
           }
         : {
             goal: `Make the box flip over ${FLIP_GOAL} times in ${FLIP_TIME} s`,
@@ -461,7 +855,7 @@ function updateStatus(wx: number, wy: number, wz: number): void {
       // whose ω wanders and flips.
       goal: 'Free spin: a cube turns alike about every axis, so ω (magenta) stays on L (yellow)',
       numbers: `|ω| ${w.toFixed(2)} rad/s · angle L–ω ${angleLw.toFixed(1)}°`,
-      hint: 'M: a box, whose ω wanders and flips',
+      hint: touch ? 'Mode: a box, whose ω wanders and flips' : 'M: a box, whose ω wanders and flips',
     });
   }
 }
@@ -543,13 +937,44 @@ function frame(): void {
     angleLw = angle;
   }
   if (frames % 5 === 0) updateStatus(wx, wy, wz);
-  // The lit pad glows (pulsing) while the room's round runs.
-  const padLit = params.mode === 'room' && !pads.done;
+  // The lit pad glows (pulsing) while the room's round runs; the ones to come are outlined, the ones reached gold.
+  const room = params.mode === 'room';
+  const padLit = room && !pads.done;
   padMesh.visible = padLit;
+  const now = performance.now();
   if (padLit) {
     const spot = PADS[pads.pad]!;
     padMesh.position.set(spot[0], 0.02, spot[1]);
-    (padMesh.material as MeshStandardMaterial).emissiveIntensity = 0.8 + 0.4 * Math.sin(performance.now() / 250);
+    // A pad that takes any face glows mint; one that wants a face glows in that face's colour
+    const material = padMesh.material as MeshStandardMaterial,
+      want = PAD_FACES[pads.pad]!;
+    // (a face colour glows faintly, so the pad reads as the same colour as the face, not washed out).
+    material.color.setHex(want >= 0 ? faceColors[want]! : 0x0c8f52);
+    material.emissive.setHex(want >= 0 ? faceColors[want]! : 0x12c46e);
+    material.emissiveIntensity = want >= 0 ? 0.3 + 0.15 * Math.sin(now / 250) : 0.8 + 0.4 * Math.sin(now / 250);
+  }
+  padMarks.forEach((mark, i) => {
+    mark.outline.visible = room && i > pads.pad;
+    mark.done.visible = room && i < pads.pad;
+  });
+  celebrate();
+  const age = (now - burstAt) / BURST_MS;
+  burst.visible = room && age >= 0 && age < 1;
+  if (burst.visible) {
+    burst.scale.setScalar(PAD_HALF * (1 + 1.6 * age));
+    (burst.material as MeshBasicMaterial).opacity = 1 - age;
+  }
+  // The aim: an arrow on the floor from the cube the way a click would push it, to the point it would stop.
+  const aimed = room && now < aimUntil && (hover ? aim : lastPush);
+  if (aimed) {
+    const ox = P.x[e]!,
+      oz = P.z[e]!;
+    aimArrow.set(ox, 0.06, oz, aimed.x - ox, 0, aimed.z - oz, 1);
+    aimRing.position.set(aimed.x, 0.03, aimed.z);
+    aimRing.visible = true;
+  } else {
+    aimArrow.hide();
+    aimRing.visible = false;
   }
   if (flash > 0) flash--;
 }
@@ -579,20 +1004,33 @@ shell.expose({
     return Array.from(out);
   },
   /**
-   * The challenge's state: room: the lit pad's index (PADS.length when the round is over), the round's
+   * The challenge's state: room: the lit pad's index (PADS.length when the round is over), the face
+   * on top and the face the lit pad wants, the round's
    * time (s, -1 while it runs) and the pads' centres (x, z, m); flip: the flips counted and the time
    * the goal was reached (s, -1 if not yet).
    */
   challenge: () => ({
     mode: params.mode,
     pad: pads.pad,
+    /** The face of the cube on top now and the one the lit pad wants (indices into FACES; -1: any). */
+    face: topFace(shell.world, handles.body),
+    wants: PAD_FACES[pads.pad] ?? -1,
     padsDoneAt: pads.doneAt,
     pads: PADS.map((p) => [p[0], p[1]]),
     flips: flips.counter.count,
     flipsWonAt: flips.wonAt,
   }),
-  /** Clicks at (ndcX, ndcY) as the mouse would; returns whether the body was hit. */
+  /** Clicks at (ndcX, ndcY) as the mouse would; returns whether the cube was pushed (on the pivot: hit). */
   clickAt,
+  /**
+   * Room mode: the last push of a click or tap: 'floor' (towards the point clicked) or 'cube' (away
+   * from the face), its unit direction (dx, dz), speed (m/s) and the point it aims at (x, z, m); or null.
+   */
+  lastPush: (): Push | null => (lastPush ? { ...lastPush } : null),
+  /** The pop over the scene: its text and whether it shows. */
+  pop: () => ({ text: pop.textContent ?? '', shown: pop.style.opacity === '1' }),
+  /** Sounds played so far (the pads' chimes, pushes, impacts; 0 until the first input starts the audio). */
+  soundsPlayed: (): number => sound.played,
   /** Switches mode ('room', 'cube' or 'flip') and rebuilds. @throws RangeError on an unknown mode. */
   setMode: (mode: Mode): void => {
     if (!MODES.includes(mode)) throw new RangeError(`setMode: mode must be one of ${MODES.join(', ')}, got ${String(mode)}`);

@@ -54,6 +54,33 @@ export const WALL_HALF_THICKNESS = 0.2;
 export const ROOM_PUSH = 10;
 /** Room mode: the jump's impulse, N s (a 1 kg cube leaves the floor at 4 m/s, rising 0.8 m). */
 export const JUMP_IMPULSE = 4;
+/** Room mode: the friction coefficient of the floor, the walls and the cube (a cube sliding on a face slows at ROOM_FRICTION g). */
+export const ROOM_FRICTION = 0.5;
+/** Room mode: the fastest push, m/s (a push towards a point farther away than this reaches stops short of it). */
+export const PUSH_SPEED_MAX = 7;
+/**
+ * Room mode: the roll keys' torque, N m (twice what tips a 1 kg, 1 m cube over an edge, m g / 2), and
+ * the spin about the key's axis, rad/s, above which the keys stop pushing: a held key rolls the cube
+ * along at a steady pace (a face in about 0.6 s), and let go it stops after the face it is rolling
+ * over (at 2.6 rad/s a cube turning about its edge has 2.3 J, short of the 2.0 J plus the landing's
+ * loss that would lift it over the next edge).
+ */
+export const ROLL_TORQUE = 10;
+export const ROLL_SPIN_MAX = 2.6;
+
+/**
+ * Room mode: the speed, m/s, that a cube sliding on a face across the room's floor needs to stop after
+ * `distance` m: sqrt(2 ROOM_FRICTION g d) (uniform deceleration by kinetic friction), at most PUSH_SPEED_MAX.
+ * @param distance the slide, m, >= 0.
+ * @param gravity the magnitude of gravity, m/s^2, > 0 (default 9.81).
+ * @throws RangeError if `distance` is negative or not finite, or `gravity` is not positive and finite.
+ */
+export function slideSpeed(distance: number, gravity = 9.81): number {
+  if (!(distance >= 0) || !Number.isFinite(distance))
+    throw new RangeError(`slideSpeed: distance must be a finite number >= 0, got ${distance}`);
+  if (!(gravity > 0) || !Number.isFinite(gravity)) throw new RangeError(`slideSpeed: gravity must be a finite number > 0, got ${gravity}`);
+  return Math.min(PUSH_SPEED_MAX, Math.sqrt(2 * ROOM_FRICTION * gravity * distance));
+}
 
 /** Options of `buildRotatingCube`. */
 export interface RotatingCubeOptions {
@@ -121,11 +148,12 @@ export function buildRotatingCube(world: PhysicsWorld, options: RotatingCubeOpti
 }
 
 /**
- * Room mode: a floor (plane y = 0, friction 0.5) and four static box walls around a 2 ROOM_HALF square,
- * and the cube (1 kg, a 1 m box collider of density 1 kg/m^3, restitution 0.3) dropped tumbling from 1.5 m.
+ * Room mode: a floor (plane y = 0) and four static box walls around a 2 ROOM_HALF square, and the cube
+ * (1 kg, a 1 m box collider of density 1 kg/m^3) dropped tumbling from 1.5 m; friction ROOM_FRICTION and
+ * restitution 0.3 everywhere.
  */
 function buildRoom(world: PhysicsWorld, tumble: ArrayLike<number>): RotatingCubeHandles {
-  addPlane(world, { normal: [0, 1, 0], point: [0, 0, 0], friction: 0.5, restitution: 0.3 });
+  addPlane(world, { normal: [0, 1, 0], point: [0, 0, 0], friction: ROOM_FRICTION, restitution: 0.3 });
   const walls: number[] = [];
   const h = WALL_HEIGHT / 2,
     t = WALL_HALF_THICKNESS,
@@ -138,11 +166,11 @@ function buildRoom(world: PhysicsWorld, tumble: ArrayLike<number>): RotatingCube
     [0, -a, l, t],
   ] as const) {
     const wall = addBody(world, { position: [x, h, z], static: true });
-    addShape3D(world, wall, { type: 'box', halfExtents: [hx, h, hz], friction: 0.5, restitution: 0.3 });
+    addShape3D(world, wall, { type: 'box', halfExtents: [hx, h, hz], friction: ROOM_FRICTION, restitution: 0.3 });
     walls.push(wall);
   }
   const body = addBody(world, { position: [0, 1.5, 0], orientation: [0.2, 0.1, 0.15, 0.96] });
-  addShape3D(world, body, { type: 'box', halfExtents: [0.5, 0.5, 0.5], density: MASS.room, friction: 0.5, restitution: 0.3 });
+  addShape3D(world, body, { type: 'box', halfExtents: [0.5, 0.5, 0.5], density: MASS.room, friction: ROOM_FRICTION, restitution: 0.3 });
   setAngularVelocity(world, body, tumble);
   return { body, mode: 'room', inertia: inertiaOfSolidBox(MASS.room, EDGES.room), pivot: [0, 1.5, 0], walls };
 }
@@ -239,8 +267,40 @@ export const PADS: readonly (readonly [number, number])[] = Object.freeze([
 ]);
 /** Half edge of a pad, m: the cube scores when its centre rests within this of the pad's centre on x and z. */
 export const PAD_HALF = 0.6;
-/** Room challenge: the time of three stars and of two, s (over: one star). */
-export const PAD_STAR_TIMES: readonly [number, number] = Object.freeze([45, 90]) as readonly [number, number];
+/**
+ * The faces of the cube, in the order of its body axes and of three.js's BoxGeometry groups: +x, -x,
+ * +y, -y, +z, -z (the game paints them red, pale red, green, pale green, blue, pale blue).
+ */
+export const FACES = Object.freeze(['+x', '-x', '+y', '-y', '+z', '-z'] as const);
+/**
+ * The face each pad wants on top (an index into FACES), or -1 for any: the first two pads take any
+ * face (a slide is enough); the last three want +x, +z and +y up, which takes rolling the cube over
+ * its edges (a slide keeps the face up).
+ */
+export const PAD_FACES: readonly number[] = Object.freeze([-1, -1, 0, 4, 2]);
+
+/**
+ * The face of `body` on top: the index into FACES of its body axis (either way) pointing most nearly
+ * up in the world, from its orientation.
+ */
+export function topFace(world: PhysicsWorld, body: number): number {
+  const q = world.components.Orientation;
+  const x = q.x[body]!,
+    y = q.y[body]!,
+    z = q.z[body]!,
+    w = q.w[body]!;
+  // The world y components of the body's x, y and z axes: row y of its rotation matrix.
+  const up = [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)];
+  let best = 0;
+  for (let i = 1; i < 3; i++) if (Math.abs(up[i]!) > Math.abs(up[best]!)) best = i;
+  return 2 * best + (up[best]! < 0 ? 1 : 0);
+}
+/**
+ * Room challenge: the time of three stars and of two, s (over: one star). The first two pads take a
+ * click each (the cube slides there in 1 to 2 s); the last three a roll or two each to turn the wanted
+ * face up (about 0.6 s a roll) and a click.
+ */
+export const PAD_STAR_TIMES: readonly [number, number] = Object.freeze([30, 60]) as readonly [number, number];
 
 /**
  * Whether `body` rests on the pad centred at (px, pz) (m): its centre within PAD_HALF of the pad on x
@@ -298,7 +358,8 @@ export class FlipCounter {
 
 /**
  * Room mode's challenge, a round of PADS.length pads: the pad `pad` is lit; when the cube rests on it
- * (`restsOnPad`) the next one lights; after the last the round is over at `doneAt` (world time, s).
+ * (`restsOnPad`) with the face the pad wants on top (PAD_FACES, `topFace`) the next one lights; after
+ * the last the round is over at `doneAt` (world time, s).
  */
 export class PadChallenge {
   /** Index of the lit pad in PADS, in [0, PADS.length] (PADS.length: the round is over). */
@@ -320,8 +381,10 @@ export class PadChallenge {
    */
   update(world: PhysicsWorld, body: number): boolean {
     if (this.done) return false;
-    const spot = PADS[this.pad]!;
+    const spot = PADS[this.pad]!,
+      face = PAD_FACES[this.pad]!;
     if (!restsOnPad(world, body, spot[0], spot[1])) return false;
+    if (face >= 0 && topFace(world, body) !== face) return false;
     this.pad++;
     if (this.pad === PADS.length) this.doneAt = world.time;
     return true;

@@ -11,6 +11,7 @@ import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { pausedShade, resumedShade } from './dom-pause';
 import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
 import { checkLayout } from './layout-check';
+import { cubeState, pageOf, stillPageOf, waitCubeAtRest } from './rotating-cube';
 import { touchPath } from './touch';
 
 const PHONE = { viewport: { width: 390, height: 844 }, touch: true } as const;
@@ -374,9 +375,11 @@ describe('phone controls', () => {
 
   it('rotating cube: holding Yaw ▶ spins the cube', async () => {
     const g = await h.openGame('rotating-cube', { ...PHONE, query: { mode: 'cube' } });
+    // On the pivot the turn buttons name the torques.
+    expect(await g.page.getByRole('button', { name: 'turn right', exact: true }).textContent()).toBe('Yaw ▶');
     await hold(g.page, 'stop spinning', 100);
     await g.waitFor(() => Math.hypot(...(window.game as unknown as { angularVelocity(): number[] }).angularVelocity()) === 0, null);
-    await hold(g.page, 'torque: yaw right', 500);
+    await hold(g.page, 'turn right', 500);
     const w = await g.page.evaluate(() => (window.game as unknown as { angularVelocity(): number[] }).angularVelocity());
     expect(Math.hypot(...w)).toBeGreaterThan(0.05);
     expect(g.errors).toEqual([]);
@@ -423,6 +426,57 @@ describe('phone controls', () => {
       const game = window.game as unknown as { body(): number; world: { components: { Velocity: { x: Float64Array } } } };
       return game.world.components.Velocity.x[game.body()]! > 1;
     }, null);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
+  it('rotating cube: a tap on the lit pad slides the cube onto it, which scores with a pop; holding ◀ rolls it to the screen left', async () => {
+    const g = await h.openGame('rotating-cube', PHONE);
+    await waitCubeAtRest(g);
+    const s0 = await cubeState(g);
+    const pad = s0.pads[0]!;
+    const at = await stillPageOf(g, pad[0]!, 0.5, pad[1]!);
+    await g.page.touchscreen.tap(at.x, at.y);
+    await g.waitFor(() => (window.game as unknown as { challenge(): { pad: number } }).challenge().pad === 1, null, 60_000);
+    const pop = await g.waitFor(() => {
+      const p = (window.game as unknown as { pop(): { text: string; shown: boolean } }).pop();
+      return p.shown ? p.text : null;
+    }, null);
+    expect(pop).toContain('Pad 1 of 5');
+    // The pop fits the phone's width.
+    const popBox = (await g.page.locator('[data-hud="pad-pop"]').boundingBox())!;
+    expect(popBox.x).toBeGreaterThanOrEqual(0);
+    expect(popBox.x + popBox.width).toBeLessThanOrEqual(390);
+    // In the room the turn buttons are arrows: ◀ held rolls the cube towards the screen's left.
+    const left = g.page.getByRole('button', { name: 'turn left', exact: true });
+    expect(await left.textContent()).toBe('◀');
+    await waitCubeAtRest(g);
+    const before = await cubeState(g);
+    const p0 = await pageOf(g, before.x, before.y, before.z);
+    const box = (await left.boundingBox())!;
+    await touchPath(g.page, [[box.x + box.width / 2, box.y + box.height / 2]], 0, async () => {
+      await g.waitFor(
+        ([x0, z0]) => {
+          const game = window.game as unknown as { body(): number; world: { components: { Position: Record<'x' | 'z', Float64Array> } } };
+          const P = game.world.components.Position;
+          return Math.hypot(P.x[game.body()]! - x0!, P.z[game.body()]! - z0!) > 0.8;
+        },
+        [before.x, before.z],
+        60_000,
+      );
+    });
+    const after = await cubeState(g);
+    const p1 = await pageOf(g, after.x, after.y, after.z);
+    expect(p1.x).toBeLessThan(p0.x - 5);
+    expect(Math.abs(p1.y - p0.y)).toBeLessThan(Math.abs(p1.x - p0.x));
+    // A quick tap on ▲ rolls it over one edge: another face on top.
+    await waitCubeAtRest(g);
+    const face = await read(g, 'challenge().face');
+    const up = (await g.page.getByRole('button', { name: 'turn forward', exact: true }).boundingBox())!;
+    await touchPath(g.page, [[up.x + up.width / 2, up.y + up.height / 2]], 0);
+    await g.waitFor((f) => (window.game as unknown as { challenge(): { face: number } }).challenge().face !== f, face, 60_000);
+    await waitCubeAtRest(g);
+    expect(await read(g, 'challenge().face')).not.toBe(face);
     expect(g.errors).toEqual([]);
     await g.close();
   });

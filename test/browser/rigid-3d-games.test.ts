@@ -4,6 +4,7 @@
  */
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
+import { cubeState, pageOf, stillPageOf, waitCubeAtRest } from './rotating-cube';
 
 interface Game3D {
   paused: boolean;
@@ -564,6 +565,62 @@ describe('3D rigid-body games in headless Chromium', () => {
       return game.world.components.Position.y[game.body()]!;
     });
     expect(up).toBeGreaterThan(landed.y + 0.2);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+  it('rotating-cube (room): a mouse click on the lit pad slides the cube onto it, which scores with a pop; A rolls it to the screen left', async () => {
+    const g = await open('rotating-cube', {});
+    await waitCubeAtRest(g);
+    const s0 = await cubeState(g);
+    expect(s0.pad).toBe(0);
+    const pad = s0.pads[0]!;
+    // The lit pad is more than a metre from where the cube landed: a click on its centre (drawn at the
+    // cube's centre height) pushes the cube there, and it comes to rest on it.
+    expect(Math.hypot(pad[0]! - s0.x, pad[1]! - s0.z)).toBeGreaterThan(1);
+    const at = await stillPageOf(g, pad[0]!, 0.5, pad[1]!);
+    await g.page.mouse.click(at.x, at.y);
+    const push = await g.page.evaluate(() =>
+      (window.game as unknown as { lastPush(): { kind: string; x: number; z: number } | null }).lastPush(),
+    );
+    expect(push?.kind).toBe('floor');
+    expect(Math.hypot(push!.x - pad[0]!, push!.z - pad[1]!)).toBeLessThan(0.1);
+    await g.waitFor(() => (window.game as unknown as { challenge(): { pad: number } }).challenge().pad === 1, null, 60_000);
+    const s1 = await cubeState(g);
+    expect(Math.hypot(s1.x - pad[0]!, s1.z - pad[1]!)).toBeLessThan(0.6);
+    // The reward: the pop says so, the status row counts it.
+    const pop = await g.waitFor(() => {
+      const p = (window.game as unknown as { pop(): { text: string; shown: boolean } }).pop();
+      return p.shown ? p.text : null;
+    }, null);
+    expect(pop).toContain('Pad 1 of 5');
+    await g.waitFor(() => document.querySelector('[data-hud="challenge"]')?.textContent?.includes('1/5') ?? false, null);
+    // A held: the cube rolls along the floor towards the screen's left (its centre drawn farther left).
+    await waitCubeAtRest(g);
+    const before = await cubeState(g);
+    const left0 = await pageOf(g, before.x, before.y, before.z);
+    await g.page.keyboard.down('a');
+    await g.waitFor(
+      ([x0, z0]) => {
+        const game = window.game as unknown as { body(): number; world: { components: { Position: Record<'x' | 'z', Float64Array> } } };
+        const P = game.world.components.Position;
+        return Math.hypot(P.x[game.body()]! - x0!, P.z[game.body()]! - z0!) > 0.8;
+      },
+      [before.x, before.z],
+      60_000,
+    );
+    await g.page.keyboard.up('a');
+    const after = await cubeState(g);
+    const left1 = await pageOf(g, after.x, after.y, after.z);
+    // Mostly leftwards on the screen (the room is about 150 px across in this 800 px page).
+    expect(left1.x).toBeLessThan(left0.x - 5);
+    expect(Math.abs(left1.y - left0.y)).toBeLessThan(Math.abs(left1.x - left0.x));
+    // A short press of W rolls it over one edge (it keeps rolling past its tipping point): another face on top.
+    await waitCubeAtRest(g);
+    const face = await g.page.evaluate(() => (window.game as unknown as { challenge(): { face: number } }).challenge().face);
+    await g.press('w');
+    await g.waitFor((f) => (window.game as unknown as { challenge(): { face: number } }).challenge().face !== f, face, 60_000);
+    await waitCubeAtRest(g);
+    expect(await g.page.evaluate(() => (window.game as unknown as { challenge(): { face: number } }).challenge().face)).not.toBe(face);
     expect(g.errors).toEqual([]);
     await g.close();
   });

@@ -5,24 +5,42 @@
  */
 
 import { readFileSync } from 'node:fs';
-import { addSystem, createPhysicsWorld, setAngularVelocity, setVelocity, step } from '@bitphysics/physics';
+import { addSystem, applyImpulse, createPhysicsWorld, setAngularVelocity, setVelocity, step } from '@bitphysics/physics';
 import { describe, expect, it } from 'vitest';
 import { CARD_LINES } from '../../games/gallery-cards';
 import {
   buildRotatingCube,
   EDGES,
+  FACES,
   FLIP_GOAL,
   FLIP_TIME,
   FlipChallenge,
   FlipCounter,
+  PAD_FACES,
   PAD_HALF,
   PADS,
   PadChallenge,
+  PUSH_SPEED_MAX,
   padStars,
+  ROLL_TORQUE,
   ROOM_HALF,
+  restsOnPad,
   rotatingCubeWorldOptions,
+  slideSpeed,
+  topFace,
   torqueCouple,
 } from '../../games/rotating-cube/scene';
+
+const S = Math.SQRT1_2;
+/** An orientation (x, y, z, w) with face `f` of FACES on top, worked out by hand: +x up is +90 degrees about z, and so on. */
+const FACE_UP: readonly (readonly [number, number, number, number])[] = [
+  [0, 0, S, S],
+  [0, 0, -S, S],
+  [0, 0, 0, 1],
+  [1, 0, 0, 0],
+  [-S, 0, 0, S],
+  [S, 0, 0, S],
+];
 
 describe('rotating-cube room mode', () => {
   it('the cube falls, lands and rests on a face; thrown at a wall it stays in the room', () => {
@@ -70,19 +88,69 @@ describe('rotating-cube room mode', () => {
   });
 });
 
+describe('rotating-cube room pushes', () => {
+  it('a push at slideSpeed(d) stops the resting cube d away (a click aims it at its target), in any direction', () => {
+    // slideSpeed is sqrt(2 mu g d), capped: 1 m at mu 0.5 needs sqrt(9.81) m/s.
+    expect(slideSpeed(1)).toBeCloseTo(Math.sqrt(9.81), 12);
+    expect(slideSpeed(0)).toBe(0);
+    expect(slideSpeed(100)).toBe(PUSH_SPEED_MAX);
+    expect(() => slideSpeed(-1)).toThrow(/slideSpeed: distance .* got -1/);
+    expect(() => slideSpeed(1, 0)).toThrow(/slideSpeed: gravity .* got 0/);
+    for (const [d, angle] of [
+      [0.6, 0],
+      [1.5, 2],
+      [2.2, 4],
+    ] as const) {
+      const world = createPhysicsWorld(rotatingCubeWorldOptions());
+      const h = buildRotatingCube(world);
+      for (let i = 0; i < 180; i++) step(world);
+      const P = world.components.Position;
+      const x0 = P.x[h.body]!,
+        z0 = P.z[h.body]!;
+      const dx = Math.cos(angle),
+        dz = Math.sin(angle),
+        v = slideSpeed(d);
+      applyImpulse(world, h.body, [dx * v, 0, dz * v]); // 1 kg: the impulse is the speed
+      for (let i = 0; i < 240; i++) step(world);
+      // It slides on its face (no tumble) and stops within 5 cm of the point aimed at: resting on a pad there.
+      expect(Math.hypot(P.x[h.body]! - (x0 + dx * d), P.z[h.body]! - (z0 + dz * d))).toBeLessThan(0.05);
+      expect(restsOnPad(world, h.body, x0 + dx * d, z0 + dz * d)).toBe(true);
+    }
+  });
+
+  it('ROLL_TORQUE held about a level axis tips the resting cube over its edge and rolls it along', () => {
+    const world = createPhysicsWorld(rotatingCubeWorldOptions());
+    const h = buildRotatingCube(world);
+    for (let i = 0; i < 180; i++) step(world);
+    const P = world.components.Position;
+    const x0 = P.x[h.body]!;
+    // About -z: the top goes towards +x (y x (+x) = -z).
+    addSystem(
+      world,
+      'forces',
+      torqueCouple(h.body, () => [0, 0, -ROLL_TORQUE]),
+    );
+    for (let i = 0; i < 60; i++) step(world); // 1 s
+    // Over at least one edge (a roll onto the next face carries the centre 1 m).
+    expect(P.x[h.body]! - x0).toBeGreaterThan(0.9);
+  });
+});
+
 describe('rotating-cube challenges', () => {
-  it('the pad round: a cube dropped beside the lit pad scores nothing, dropped on it lights the next; five end the round', () => {
+  it('the pad round: a cube dropped beside the lit pad scores nothing, dropped on it (with the face the pad wants on top) lights the next; five end the round', () => {
     const world = createPhysicsWorld(rotatingCubeWorldOptions());
     const h = buildRotatingCube(world);
     const pads = new PadChallenge();
     addSystem(world, 'finalize', (w) => {
       pads.update(w, h.body);
     });
-    const P = world.components.Position;
-    const drop = (x: number, z: number): void => {
+    const P = world.components.Position,
+      O = world.components.Orientation;
+    const drop = (x: number, z: number, face = 2): void => {
       P.x[h.body] = x;
       P.y[h.body] = 0.6;
       P.z[h.body] = z;
+      [O.x[h.body], O.y[h.body], O.z[h.body], O.w[h.body]] = FACE_UP[face]!;
       setVelocity(world, h.body, [0, 0, 0]);
       setAngularVelocity(world, h.body, [0, 0, 0]);
       for (let i = 0; i < 90; i++) step(world);
@@ -94,9 +162,20 @@ describe('rotating-cube challenges', () => {
     expect(pads.pad).toBe(0);
     for (let k = 0; k < PADS.length; k++) {
       expect(pads.done).toBe(false);
-      drop(PADS[k]![0] + 0.2, PADS[k]![1] - 0.2);
+      const want = PAD_FACES[k]!;
+      // A pad that wants a face: on it with another face up (the opposite one, then a side) scores nothing.
+      if (want >= 0)
+        for (const wrong of [want ^ 1, (want + 2) % 6]) {
+          drop(PADS[k]![0] + 0.2, PADS[k]![1] - 0.2, wrong);
+          expect(topFace(world, h.body)).toBe(wrong);
+          expect(pads.pad).toBe(k);
+        }
+      drop(PADS[k]![0] + 0.2, PADS[k]![1] - 0.2, want >= 0 ? want : k % 6);
       expect(pads.pad).toBe(k + 1);
     }
+    // The first two pads take any face; the others want one each.
+    expect(PAD_FACES.slice(0, 2)).toEqual([-1, -1]);
+    expect(PAD_FACES.slice(2).every((f) => f >= 0 && f < FACES.length)).toBe(true);
     expect(pads.done).toBe(true);
     expect(pads.doneAt).toBeGreaterThan(0);
     expect(pads.doneAt).toBeLessThanOrEqual(world.time);
@@ -105,7 +184,7 @@ describe('rotating-cube challenges', () => {
     expect(pads.pad).toBe(PADS.length);
     pads.reset();
     expect([pads.pad, pads.done]).toEqual([0, false]);
-    expect([padStars(30), padStars(45), padStars(60), padStars(200)]).toEqual([3, 3, 2, 1]);
+    expect([padStars(15), padStars(30), padStars(45), padStars(60), padStars(61), padStars(200)]).toEqual([3, 3, 2, 2, 1, 1]);
   });
 
   it('a flip counts when the cosine crosses from beyond +0.5 to beyond -0.5 or back, not on a wobble about zero', () => {

@@ -1,0 +1,94 @@
+/**
+ * Helpers for the rotating cube's browser cases (rigid-3d-games and phone-controls): where a world
+ * point of its room shows on the page, and the cube's state, read through `window.game`.
+ */
+import type { GamePage } from './harness';
+
+/** The cube's state: centre (x, y, z), m; speed, m/s; spin, rad/s; world time, s; the challenge's lit pad. */
+export interface CubeState {
+  x: number;
+  y: number;
+  z: number;
+  speed: number;
+  spin: number;
+  time: number;
+  pad: number;
+  pads: number[][];
+}
+
+/** Reads the cube's state (see CubeState). */
+export function cubeState(g: GamePage): Promise<CubeState> {
+  return g.page.evaluate(() => {
+    const game = window.game as unknown as {
+      body(): number;
+      world: { time: number; components: Record<'Position' | 'Velocity' | 'AngularVelocity', Record<'x' | 'y' | 'z', Float64Array>> };
+      challenge(): { pad: number; pads: number[][] };
+    };
+    const c = game.world.components,
+      e = game.body();
+    const ch = game.challenge();
+    return {
+      x: c.Position.x[e]!,
+      y: c.Position.y[e]!,
+      z: c.Position.z[e]!,
+      speed: Math.hypot(c.Velocity.x[e]!, c.Velocity.y[e]!, c.Velocity.z[e]!),
+      spin: Math.hypot(c.AngularVelocity.x[e]!, c.AngularVelocity.y[e]!, c.AngularVelocity.z[e]!),
+      time: game.world.time,
+      pad: ch.pad,
+      pads: ch.pads,
+    };
+  });
+}
+
+/** Waits (in world time, up to `timeoutMs` of the clock) until the cube rests: slower than 0.05 m/s and 0.1 rad/s. */
+export async function waitCubeAtRest(g: GamePage, timeoutMs = 60_000): Promise<void> {
+  await g.waitFor(
+    () => {
+      const game = window.game as unknown as {
+        body?(): number;
+        world: { time: number; components: Record<'Velocity' | 'AngularVelocity', Record<'x' | 'y' | 'z', Float64Array>> };
+      };
+      // The page's own hooks come after the kit's (its module has more to set up once the shell is ready).
+      if (typeof game?.body !== 'function') return false;
+      const c = game.world.components,
+        e = game.body();
+      return (
+        game.world.time > 1 &&
+        Math.hypot(c.Velocity.x[e]!, c.Velocity.y[e]!, c.Velocity.z[e]!) < 0.05 &&
+        Math.hypot(c.AngularVelocity.x[e]!, c.AngularVelocity.y[e]!, c.AngularVelocity.z[e]!) < 0.1
+      );
+    },
+    null,
+    timeoutMs,
+  );
+}
+
+/** Page position (CSS px) of world point (x, y, z), m, through the game's three.js camera and the canvas' box. */
+export function pageOf(g: GamePage, x: number, y: number, z: number): Promise<{ x: number; y: number }> {
+  return g.page.evaluate(
+    ([x, y, z]) => {
+      type V = { x: number; y: number; project(c: unknown): V };
+      const game = window.game as unknown as { app: { camera: { position: { constructor: new (x: number, y: number, z: number) => V } } } };
+      const v = new game.app.camera.position.constructor(x!, y!, z!).project(game.app.camera);
+      const r = document.querySelector('canvas')!.getBoundingClientRect();
+      return { x: r.left + ((v.x + 1) / 2) * r.width, y: r.top + ((1 - v.y) / 2) * r.height };
+    },
+    [x, y, z],
+  );
+}
+
+/**
+ * Page position of world point (x, y, z) once two animation frames in a row put it within half a
+ * pixel of each other (the camera may still be easing into its framing).
+ */
+export async function stillPageOf(g: GamePage, x: number, y: number, z: number): Promise<{ x: number; y: number }> {
+  let at = await pageOf(g, x, y, z);
+  for (let tries = 0; tries < 100; tries++) {
+    await g.frames(1);
+    const next = await pageOf(g, x, y, z);
+    const still = Math.hypot(next.x - at.x, next.y - at.y) < 0.5;
+    at = next;
+    if (still) break;
+  }
+  return at;
+}
