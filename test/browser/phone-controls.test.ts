@@ -379,7 +379,15 @@ describe('phone controls', () => {
     expect(await g.page.getByRole('button', { name: 'turn right', exact: true }).textContent()).toBe('Yaw ▶');
     await hold(g.page, 'stop spinning', 100);
     await g.waitFor(() => Math.hypot(...(window.game as unknown as { angularVelocity(): number[] }).angularVelocity()) === 0, null);
-    await hold(g.page, 'turn right', 500);
+    // Held until the cube turns (a loaded machine may draw few frames in a fixed half second).
+    const yaw = (await g.page.getByRole('button', { name: 'turn right', exact: true }).boundingBox())!;
+    await touchPath(g.page, [[yaw.x + yaw.width / 2, yaw.y + yaw.height / 2]], 100, async () => {
+      await g.waitFor(
+        () => Math.hypot(...(window.game as unknown as { angularVelocity(): number[] }).angularVelocity()) > 0.05,
+        null,
+        60_000,
+      );
+    });
     const w = await g.page.evaluate(() => (window.game as unknown as { angularVelocity(): number[] }).angularVelocity());
     expect(Math.hypot(...w)).toBeGreaterThan(0.05);
     expect(g.errors).toEqual([]);
@@ -649,7 +657,15 @@ describe('phone controls', () => {
       (window.game as unknown as { handles(): { controls: { moves: unknown[] } } }).handles().controls.moves = [];
     });
     const a0 = await read(g, 'handles().crane.angle');
-    await hold(g.page, 'slew the jib left', 500);
+    // Held until the jib has turned (a loaded machine may draw few frames in a fixed half second).
+    const slew = (await g.page.getByRole('button', { name: 'slew the jib left', exact: true }).boundingBox())!;
+    await touchPath(g.page, [[slew.x + slew.width / 2, slew.y + slew.height / 2]], 100, async () => {
+      await g.waitFor(
+        (a) => (window.game as unknown as { handles(): { crane: { angle: number } } }).handles().crane.angle > a + 0.02,
+        a0,
+        60_000,
+      );
+    });
     expect(await read(g, 'handles().crane.angle')).toBeGreaterThan(a0 + 0.02);
     // The crane's seven hold buttons, Steady among them, fit one row under the scene (at the kit's
     // padding the seventh wrapped to a second row, 48 px taken from the scene).
