@@ -229,9 +229,15 @@ for (const [device, options] of [
       const layoutBefore = await layout();
       const saidBefore = await g.page.locator('.lab-status').textContent();
       await drag(g.page, await across(), 6);
-      // The status changes on a frame after the stroke (a frame may go undrawn on a busy page): wait
-      // for it; a status that never changes times the wait out and fails the case.
-      await g.waitFor((said) => (document.querySelector('.lab-status')?.textContent ?? said) !== said || null, saidBefore);
+      // The status changes on a frame after the stroke (a frame may go undrawn on a busy page, and a
+      // finger's last moves and its lift may reach the page a frame after `drag` returns): wait until
+      // the stroke has ended and the status says what it cut (the note the release writes), not only
+      // that it changed (the paused sheet's own words may come first); a status that never says so
+      // times the wait out and fails the case.
+      await g.waitFor((said) => {
+        const now = document.querySelector('.lab-status')?.textContent ?? said ?? '';
+        return (now !== said && !(window.game as unknown as ClothLab).stroking() && /cut off the line|held no shape/.test(now)) || null;
+      }, saidBefore);
       expect(await layout()).toEqual(layoutBefore);
       expect(await g.page.evaluate(() => (window.game as unknown as ClothLab).cut())).toBeGreaterThan(cl.columns);
       expect(await g.page.evaluate(() => (window.game as unknown as ClothLab).links())).toBeLessThan(before - cl.columns);
