@@ -418,6 +418,13 @@ export interface ThrowPathOptions {
    * the next touch ends it. Default 0: the path ends at the first touch of the box, as without walls.
    */
   bounces?: number;
+  /**
+   * Bounces off the box's top (the ceiling) to follow besides `bounces`, integer >= 0: a touch of the
+   * ceiling alone (no wall, floor or net in the same step) is followed without counting towards
+   * `bounces` while any are left. Default 0. An aiming arc that would end where a high throw meets
+   * the ceiling shows where the ball goes from there.
+   */
+  ceilingBounces?: number;
   /** Restitution of the bounces, [0, 1]. Default 0.8 (the scene's). */
   restitution?: number;
   /**
@@ -473,6 +480,9 @@ export function throwPath(x: number, y: number, vx: number, vy: number, o: Throw
     mu = o.friction ?? 0;
   if (!(mu >= 0 && Number.isFinite(mu))) throw new RangeError(`throwPath: friction must be finite and >= 0, got ${mu}`);
   if (!(Number.isInteger(most) && most >= 0)) throw new RangeError(`throwPath: bounces must be an integer >= 0, got ${most}`);
+  let ceilingLeft = o.ceilingBounces ?? 0;
+  if (!(Number.isInteger(ceilingLeft) && ceilingLeft >= 0))
+    throw new RangeError(`throwPath: ceilingBounces must be an integer >= 0, got ${ceilingLeft}`);
   if (!(e >= 0 && e <= 1)) throw new RangeError(`throwPath: restitution must be in [0, 1], got ${e}`);
   const perPoint = Math.max(1, Math.round(every / h));
   const r = o.radius,
@@ -500,9 +510,11 @@ export function throwPath(x: number, y: number, vx: number, vy: number, o: Throw
     vx += ax * h;
     vy += ay * h;
     // Touches: the box's sides (normal into the box), each wall (normal from the wall to the ball), the net.
-    let touches = false;
-    const bounce = (nx: number, ny: number): void => {
+    let touches = false,
+      other = false;
+    const bounce = (nx: number, ny: number, ceiling = false): void => {
       touches = true;
+      if (!ceiling) other = true;
       const into = vx * nx + vy * ny;
       if (into >= 0) return;
       const jn = (1 + (-into > RESTITUTION_THRESHOLD ? e : 0)) * -into;
@@ -530,7 +542,7 @@ export function throwPath(x: number, y: number, vx: number, vy: number, o: Throw
       bounce(0, 1);
     } else if (y + r >= max[1]) {
       y = max[1] - r;
-      bounce(0, -1);
+      bounce(0, -1, true);
     }
     for (const [wax, way, wbx, wby, wr] of walls) {
       const ex = wbx - wax,
@@ -548,6 +560,7 @@ export function throwPath(x: number, y: number, vx: number, vy: number, o: Throw
       const net = netContact(o.hoop, r, px, py, x, y, vx, vy);
       if (net) {
         touches = true;
+        other = true;
         [x, y, vx, vy] = net;
       }
     }
@@ -556,7 +569,9 @@ export function throwPath(x: number, y: number, vx: number, vy: number, o: Throw
       ([sx, sy, sr, from = 0]) => n >= from && (x - sx) ** 2 + (y - sy) ** 2 < (r + sr) ** 2 && (x - sx) * vx + (y - sy) * vy < 0,
     );
     if (touches || stopped || n % perPoint === 0) out.push(x, y);
-    if (stopped || (touches && ++bounced > most)) break;
+    if (stopped) break;
+    if (touches && !other && ceilingLeft > 0) ceilingLeft--;
+    else if (touches && ++bounced > most) break;
   }
   return out;
 }

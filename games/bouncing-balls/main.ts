@@ -138,6 +138,13 @@ const CANCEL_PULL = 15;
  * still throws at full speed sideways, long enough that a px of pull is at most 1/40 of the top speed.
  */
 const MIN_FULL_PULL = 40;
+/**
+ * A finger's shortest full-speed pull, as a share of fullPull (117 px on a 390 x 844 phone): a thumb
+ * needs room to set a throw's power, and at MIN_FULL_PULL (a heap ball by the phone's side pulled
+ * towards it) 30 px of drag went from a lob to the top speed. A finger lifted at the screen's edge
+ * before that throws slower: pulled from a ball by the side, the pull goes down more than sideways.
+ */
+const TOUCH_FULL_PULL_SHARE = 0.5;
 /** Kept free between the full-speed pull's end and the viewport's edge, CSS px. */
 const EDGE_MARGIN = 2;
 
@@ -585,8 +592,11 @@ const HOOP_REACH = 0.8;
  */
 const MISS_SECONDS_OVER_HOOP = 3 * MISS_SECONDS;
 
-/** Basketballs left lying about that the court keeps; past this many the oldest at rest fades out. */
-const MAX_LOOSE = 12;
+/**
+ * Basketballs left lying about that the court keeps; past this many the oldest at rest fade out: the
+ * player's misses (at 12 kept) piled up among the heap's balls and buried them.
+ */
+const MAX_LOOSE = 2;
 /** How long a basketball takes to fade out, s. */
 const FADE_SECONDS = 1;
 /** The court's wall near the floor, which a fading basketball's colour goes to. */
@@ -595,9 +605,9 @@ const FADE_TO = 0x2c3a56;
 let fading = new Map<number, { at: number; color: number }>();
 
 /**
- * Keeps the player's loose basketballs to MAX_LOOSE: past that the oldest one at rest (not in flight,
- * not held, under 0.5 m/s) fades to the wall's colour over FADE_SECONDS and is removed, so thrown balls
- * do not pile up for ever. One starts fading at a time.
+ * Keeps the player's loose basketballs to MAX_LOOSE: past that the oldest ones at rest (not in flight,
+ * not held, under 0.5 m/s) fade to the wall's colour over FADE_SECONDS and are removed, so thrown balls
+ * do not pile up in the heap. As many fade at once as there are over MAX_LOOSE.
  */
 function clearLoose(world: PhysicsWorld): void {
   const V = world.components.Velocity;
@@ -616,14 +626,14 @@ function clearLoose(world: PhysicsWorld): void {
     }
     renderer.setColor(e, mixColor(f.color, FADE_TO, t));
   }
-  let loose = 0;
-  for (const e of basketballs) if (!flights.has(e) && !fading.has(e)) loose++;
-  if (loose <= MAX_LOOSE || fading.size > 0) return;
+  let over = -MAX_LOOSE;
+  for (const e of basketballs) if (!flights.has(e) && !fading.has(e)) over++;
   for (const e of basketballs) {
+    if (over <= 0) return;
     const s = slotOf(e);
-    if (flights.has(e) || drag.body === e || Math.hypot(V.x[s]!, V.y[s]!) > 0.5) continue;
+    if (flights.has(e) || fading.has(e) || drag.body === e || Math.hypot(V.x[s]!, V.y[s]!) > 0.5) continue;
     fading.set(e, { at: world.time, color: renderer.colorOf(e) });
-    return;
+    over--;
   }
 }
 
@@ -901,9 +911,10 @@ function fullPull(): number {
  * (dx, dy) (any length; screen axes, y down): fullPull, or less when the viewport has less room than
  * that from the press to its edge along the pull (down to MIN_FULL_PULL), so a pull from a heap ball
  * low in the box or by the window's side still reaches MAX_THROW_SPEED before the pointer meets the
- * window's edge, where a mouse may stop. fullPull for a zero direction (no pull yet).
+ * window's edge, where a mouse may stop. A `finger`'s is never shorter than TOUCH_FULL_PULL_SHARE of
+ * fullPull. fullPull for a zero direction (no pull yet).
  */
-function pullFullPull(clientX: number, clientY: number, dx: number, dy: number): number {
+function pullFullPull(clientX: number, clientY: number, dx: number, dy: number, finger = false): number {
   const len = Math.hypot(dx, dy);
   if (!(len > 0)) return fullPull();
   const ux = dx / len,
@@ -912,8 +923,11 @@ function pullFullPull(clientX: number, clientY: number, dx: number, dy: number):
     h = window.innerHeight || clientY;
   const across = ux > 0 ? (w - EDGE_MARGIN - clientX) / ux : ux < 0 ? (clientX - EDGE_MARGIN) / -ux : Infinity,
     down = uy > 0 ? (h - EDGE_MARGIN - clientY) / uy : uy < 0 ? (clientY - EDGE_MARGIN) / -uy : Infinity;
-  return Math.min(fullPull(), Math.max(MIN_FULL_PULL, Math.min(across, down)));
+  const least = finger ? Math.max(MIN_FULL_PULL, TOUCH_FULL_PULL_SHARE * fullPull()) : MIN_FULL_PULL;
+  return Math.min(fullPull(), Math.max(least, Math.min(across, down)));
 }
+/** Whether the current press is a finger's (pointer type 'touch'). */
+let pressFinger = false;
 /** The current press's full-speed pull, CSS px (pullFullPull at the press, along the pull now). */
 let fullPullNow = 420;
 /** Where the current press began in the viewport, CSS px (for pullFullPull). */
@@ -948,11 +962,10 @@ function endAim(): void {
 /**
  * The throw the pointer would make now: start (m), velocity (m/s) of the slingshot, and the ball's
  * radius (m) and mass (kg): from the pressed ball's centre when the press began on a ball (that ball
- * is thrown), else from the press point (a new basketball).
+ * is thrown), else from the press's start spot (pressSpot: a new basketball).
  */
 function currentThrow(): { x: number; y: number; vx: number; vy: number; radius: number; mass: number } {
-  const cam = renderer.camera;
-  fullPullNow = pullFullPull(pressClientX, pressClientY, lastX - startX, lastY - startY);
+  fullPullNow = pullFullPull(pressClientX, pressClientY, lastX - startX, lastY - startY, pressFinger);
   const [vx, vy] = slingVelocity(lastX - startX, lastY - startY, fullPullNow);
   if (pressBall !== 0 && handles.balls.includes(pressBall)) {
     const c = shell.world.components,
@@ -960,7 +973,62 @@ function currentThrow(): { x: number; y: number; vx: number; vy: number; radius:
     return { x: c.Position.x[s]!, y: c.Position.y[s]!, vx, vy, radius: c.Ball.radius[s]!, mass: c.Mass.value[s]! };
   }
   const mass = Math.PI * PLAYER_RADIUS * PLAYER_RADIUS * DENSITIES.normal;
-  return { x: cam.toWorldX(startX), y: cam.toWorldY(startY), vx, vy, radius: PLAYER_RADIUS, mass };
+  return { x: pressSpot[0], y: pressSpot[1], vx, vy, radius: PLAYER_RADIUS, mass };
+}
+
+/** Where the current press's new basketball starts, m (startSpot of the press point): a pull throws it from there, a click drops it there. */
+let pressSpot: [number, number] = [0, 0];
+
+/** How far a new basketball starts clear of a ramp or the hoop it was pressed on, m. */
+const START_CLEARANCE = 0.02;
+
+/**
+ * Where a new basketball pressed at (x, y), m, starts, m: the press point, moved off a ramp, the
+ * backboard or the rim it would overlap (straight out from it, on the press's side) and in from the
+ * box's walls; null where no ball can start: outside the box (the stand under its floor is room to
+ * pull a throw back into, not to start one) or where moving it off one wall puts it into another.
+ * A press there starts nothing: a ball dropped in the box's corner or pushed off a ramp by the
+ * solver, never thrown, read as a broken throw.
+ */
+function startSpot(x: number, y: number): [number, number] | null {
+  const { box, segments } = layoutOf(TALL);
+  const r = PLAYER_RADIUS;
+  if (!(x >= box.min[0] && x <= box.max[0] && y >= box.min[1] && y <= box.max[1])) return null;
+  const walls = [
+    ...segments.map(([ax, ay, bx, by]) => [ax, ay, bx, by, SEGMENT_RADIUS] as const),
+    ...hoopSegments(hoopSpots(TALL)[round.spot]!).map(([ax, ay, bx, by]) => [ax, ay, bx, by, HOOP_RADIUS] as const),
+  ];
+  const closest = (px: number, py: number, [ax, ay, bx, by]: readonly number[]): [number, number] => {
+    const ex = bx! - ax!,
+      ey = by! - ay!;
+    const t = Math.max(0, Math.min(1, ((px - ax!) * ex + (py - ay!) * ey) / (ex * ex + ey * ey || 1)));
+    return [ax! + t * ex, ay! + t * ey];
+  };
+  let sx = Math.min(box.max[0] - r, Math.max(box.min[0] + r, x)),
+    sy = Math.min(box.max[1] - r, Math.max(box.min[1] + r, y));
+  for (const w of walls) {
+    const [cx, cy] = closest(sx, sy, w);
+    const need = r + w[4] + START_CLEARANCE;
+    let dx = sx - cx,
+      dy = sy - cy;
+    const d = Math.hypot(dx, dy);
+    if (d >= need) continue;
+    if (d < 1e-9) {
+      // On the wall's line: out on its upper side (the wall's normal pointing up).
+      const ex = w[2] - w[0],
+        ey = w[3] - w[1];
+      [dx, dy] = ex >= 0 ? [-ey, ex] : [ey, -ex];
+    }
+    const len = Math.hypot(dx, dy);
+    sx = cx + (dx / len) * need;
+    sy = cy + (dy / len) * need;
+  }
+  if (sx < box.min[0] + r || sx > box.max[0] - r || sy < box.min[1] + r || sy > box.max[1] - r) return null;
+  for (const w of walls) {
+    const [cx, cy] = closest(sx, sy, w);
+    if (Math.hypot(sx - cx, sy - cy) < r + w[4]) return null;
+  }
+  return [sx, sy];
 }
 
 /** The ball a press began on (a pull throws it), 0 when it began on empty space (a pull throws a new basketball). */
@@ -991,14 +1059,24 @@ canvas.addEventListener('pointerdown', (event) => {
   if (grabbing || event.button !== 0 || pointerId !== -1 || drag.joint !== 0) return;
   // The clock is out and the round waits for its last throw: no new one.
   if (lastCall.aiming || lastCall.ball !== 0) return;
+  const [px, py] = local(event);
+  const wx = renderer.camera.toWorldX(px),
+    wy = renderer.camera.toWorldY(py);
+  const onBall = ballUnder(wx, wy);
+  const spot = onBall === 0 ? startSpot(wx, wy) : null;
+  // Where no ball can start (the stand under the floor, a ramp's far side) and nothing to pick up:
+  // the press does nothing, seen or heard.
+  if (onBall === 0 && spot === null && !bodyUnder(wx, wy)) return;
+  pressSpot = spot ?? [wx, wy];
   pointerId = event.pointerId;
   canvas.setPointerCapture(event.pointerId);
-  [startX, startY] = local(event);
+  [startX, startY] = [px, py];
   lastX = startX;
   lastY = startY;
   dragged = false;
-  pressBall = ballUnder(renderer.camera.toWorldX(startX), renderer.camera.toWorldY(startY));
+  pressBall = onBall;
   slop = event.pointerType === 'touch' ? TOUCH_SLOP : CLICK_SLOP;
+  pressFinger = event.pointerType === 'touch';
   pressClientX = event.clientX;
   pressClientY = event.clientY;
   fullPullNow = fullPull();
@@ -1078,7 +1156,7 @@ function release(event: PointerEvent, cancelled: boolean): void {
   pressBall = 0;
   if (cancel) return;
   if (dragged) released(t);
-  if (!dragged) shoot(cam().toWorldX(startX), cam().toWorldY(startY), 0, 0, false);
+  if (!dragged) shoot(pressSpot[0], pressSpot[1], 0, 0, false);
   else if (ball !== 0 && handles.balls.includes(ball)) {
     throwBall(ball, t.vx, t.vy);
     if (last) lastCall.ball = ball;
@@ -1102,10 +1180,6 @@ const RELEASE_MS = 260;
 /** The last throw's release (its start, m, the ball's radius, m, when, performance.now() ms, and its speed / MAX_THROW_SPEED). */
 let releaseFx = { x: 0, y: 0, r: 0, at: -1e9, power: 0 };
 
-/** The renderer's camera. */
-function cam() {
-  return renderer.camera;
-}
 // A long press on a touch screen may open the browser's menu: the hold picks a ball up instead.
 canvas.addEventListener('contextmenu', (event) => event.preventDefault());
 
@@ -1171,8 +1245,13 @@ canvas.addEventListener('pointercancel', (event) => release(event, true));
  */
 function aimPath(): number[] {
   if (pointerId === -1 || !dragged || inCancelZone()) return [];
-  return arcOf(currentThrow(), pressBall, aimSeconds(), 0);
+  return arcOf(currentThrow(), pressBall, aimSeconds(), 0, AIM_CEILING_BOUNCES);
 }
+/**
+ * Bounces off the box's top the aiming arc follows (hoop.ts throwPath ceilingBounces): a high throw's
+ * arc ended where it met the ceiling, and the player could not see where it went from there.
+ */
+const AIM_CEILING_BOUNCES = 1;
 
 /** The whole flight of the throw the pointer would make now (FLIGHT_SECONDS, AIM_BOUNCES bounces): points, m, or [] when not pulling. */
 function aimFlight(): number[] {
@@ -1201,14 +1280,15 @@ const FLIGHT_SECONDS = 2.5;
 
 /**
  * The aiming arc of throw `t` (start, m; velocity, m/s; the ball's radius, m, and mass, kg) for its
- * first `seconds` s of flight and `bounces` bounces (hoop.ts throwPath), ending at any ball but
- * `thrown` in its way.
+ * first `seconds` s of flight and `bounces` bounces, besides `ceilingBounces` off the box's top
+ * (hoop.ts throwPath), ending at any ball but `thrown` in its way.
  */
 function arcOf(
   t: { x: number; y: number; vx: number; vy: number; radius: number; mass: number },
   thrown: number,
   seconds = FLIGHT_SECONDS,
   bounces = AIM_BOUNCES,
+  ceilingBounces = 0,
 ): number[] {
   const p = handles.params;
   const spot = hoopSpots(TALL)[round.spot]!;
@@ -1225,6 +1305,7 @@ function arcOf(
     box: layoutOf(TALL).box,
     seconds,
     bounces,
+    ceilingBounces,
     restitution: p.restitution,
     friction: p.friction,
     walls,

@@ -80,6 +80,29 @@ function bag(g: CanvasRenderingContext2D, outline: readonly number[], px: number
   scissors(g, rx0 - 52, my, 0, 38, 'rgba(255, 255, 255, 0.95)');
 }
 
+/** How strongly a window's pane is tinted with its colour over the cloth, 0 to 1. */
+const PANE_TINT = 0.12;
+
+/** Paints the sheet's cloth over `g`'s W x H px (within its clip): the cream ground, pale blue stripes, then the weave, fine threads both ways. */
+function cloth(g: CanvasRenderingContext2D, W: number, H: number): void {
+  g.fillStyle = '#f3ecdc';
+  g.fillRect(0, 0, W, H);
+  for (let x = 0; x < W; x += 64) {
+    g.fillStyle = 'rgba(96, 140, 190, 0.16)';
+    g.fillRect(x + 6, 0, 20, H);
+    g.fillStyle = 'rgba(96, 140, 190, 0.1)';
+    g.fillRect(x + 30, 0, 4, H);
+  }
+  for (let y = 0; y < H; y += 3) {
+    g.fillStyle = `rgba(90, 70, 50, ${0.035 + 0.03 * ((y * 7) % 5 === 0 ? 1 : 0)})`;
+    g.fillRect(0, y, W, 1);
+  }
+  for (let x = 0; x < W; x += 3) {
+    g.fillStyle = 'rgba(90, 70, 50, 0.03)';
+    g.fillRect(x, 0, 1, H);
+  }
+}
+
 /** Hex colour 0xRRGGBB as CSS rgba with alpha `a`. */
 function rgba(c: number, a: number): string {
   return `rgba(${(c >> 16) & 255}, ${(c >> 8) & 255}, ${c & 255}, ${a})`;
@@ -104,23 +127,7 @@ export function fabricTexture(
   canvas.width = W;
   canvas.height = H;
   const g = canvas.getContext('2d')!;
-  g.fillStyle = '#f3ecdc';
-  g.fillRect(0, 0, W, H);
-  // Pale blue stripes, then the weave: fine threads both ways.
-  for (let x = 0; x < W; x += 64) {
-    g.fillStyle = 'rgba(96, 140, 190, 0.16)';
-    g.fillRect(x + 6, 0, 20, H);
-    g.fillStyle = 'rgba(96, 140, 190, 0.1)';
-    g.fillRect(x + 30, 0, 4, H);
-  }
-  for (let y = 0; y < H; y += 3) {
-    g.fillStyle = `rgba(90, 70, 50, ${0.035 + 0.03 * ((y * 7) % 5 === 0 ? 1 : 0)})`;
-    g.fillRect(0, y, W, 1);
-  }
-  for (let x = 0; x < W; x += 3) {
-    g.fillStyle = 'rgba(90, 70, 50, 0.03)';
-    g.fillRect(x, 0, 1, H);
-  }
+  cloth(g, W, H);
   // The hem: a folded band with a row of stitches under it.
   const hem = hemHeight * px;
   g.fillStyle = 'rgba(120, 96, 70, 0.16)';
@@ -191,12 +198,15 @@ export function fabricTexture(
     for (let i = 2; i < o.length; i += 2) g.lineTo(o[i]! * px, o[i + 1]! * px);
     g.closePath();
     g.setLineDash([]);
-    // A pane: pale glass over the frame's wood, then the tint.
+    // A pane: the sheet's own cloth again over the frame's wood, lightly tinted: cut out, it falls
+    // and lies as a piece of the same cloth (pale glass read as a ghost of a quad on the lawn).
     if (s.style === 'pane') {
-      g.fillStyle = '#eef3f7';
-      g.fill();
+      g.save();
+      g.clip();
+      cloth(g, W, H);
+      g.restore();
     }
-    g.fillStyle = rgba(s.color, 0.3);
+    g.fillStyle = rgba(s.color, s.style === 'pane' ? PANE_TINT : 0.3);
     g.fill();
     g.setLineDash([14, 9]);
     g.lineWidth = 4;

@@ -39,7 +39,7 @@ import { ClothGrab, gripFor } from './grab';
 import { LEVELS } from './levels';
 import { Challenge, type CutOut } from './pattern';
 import { browserStore, loadProgress, passMark, saveProgress } from './progress';
-import { applyWind, CLOTH_SUBSTEPS, createClothScene, DEFAULTS, LINE_Y, SHEET_WIDTH, SHEET_X, SHEETS, sheetGrid, YARD } from './scene';
+import { applyWind, CLOTH_SUBSTEPS, createClothScene, DEFAULTS, LINE_Y, SHEET_WIDTH, SHEET_X, sheetGrid, YARD } from './scene';
 import { SheetView } from './sheet-view';
 import { CutUndo } from './undo';
 import { Yard } from './yard';
@@ -99,6 +99,16 @@ const CALM_HOLD = 8;
  */
 const CALM_DAMPING = 3;
 /**
+ * Whether the world holds still for the scissors: a stroke is under way on a sheet for careful cuts
+ * (Level.calm; not while the Gust button blows). The sheet hangs as if paused until the scissors lift,
+ * then runs on (the pieces cut away fall) in still air (CALM_HOLD): with the breeze only dropping
+ * (CALM_RATE, CALM_DAMPING) the window's corner still moved 10 to 15 px on a desktop in the second
+ * after the scissors went down, as the sheet's lean in the breeze relaxed.
+ */
+function heldForScissors(): boolean {
+  return cutting && !blowing && blow === 0 && LEVELS[levelIndex]!.calm;
+}
+/**
  * A finger's stroke (pointer type 'touch') is given this much slack, CSS px: its cut may stray this
  * much further from a line at no cost to the fit (Challenge.setSlack), and it closes within
  * FINGER_CLOSE_PX of its start. Measured on a 390 x 844 phone (a link spacing is 10 px there) with a
@@ -118,25 +128,30 @@ const STROKE_FRAME = 0.9;
 const view: WorldRect = { minX: YARD.minX - 0.25, minY: -0.65, maxX: YARD.maxX + 0.25, maxY: LINE_Y + 0.55 };
 /**
  * On a screen taller than wide (a phone held upright) the width sets the scale: the camera shows the
- * sheet and its posts, the walls left out, so the sheet is drawn as large as the screen allows.
+ * sheet and its posts, the left wall left out, and the yard out to its right wall, as far as a gust
+ * (or a windy day's breeze) blows the sheet. It holds still: the framing changes only with a new
+ * sheet or a new screen size (a view that followed the blowing sheet panned and zoomed under the
+ * scissors).
  */
-const narrowView: WorldRect = { ...view, minX: SHEET_X - 0.2, maxX: SHEET_X + SHEET_WIDTH + 0.2 };
-/**
- * The upright view for a breeze of `wind` m/s: in more than the first sheet's calm the sheet blows out
- * to the right, up to the yard's wall, so the view reaches that wall (the sheet is drawn smaller).
- */
-function narrowViewFor(wind: number): WorldRect {
-  return wind > SHEETS[0]!.wind ? { ...narrowView, maxX: YARD.maxX + 0.1 } : narrowView;
-}
+const narrowView: WorldRect = { ...view, minX: SHEET_X - 0.2, maxX: YARD.maxX + 0.1 };
 
 /** Floating words over the scene: a shape cut out, with its fit and stars. */
 interface Label {
   /** The words and the stars under them. */
   text: Container;
+  /** Where it shows, m: x over the piece; y where a dropped piece landed, or NaN for the sky over the line (Label's `sky`). */
   x: number;
   y: number;
+  /** When it appeared, s (performance.now() / 1000). */
   born: number;
 }
+/**
+ * How far above the washing line a cut-out's label sits, CSS px (its bottom edge, over the pegs): a
+ * label over the piece it named, rising, covered the panes still to cut on a phone.
+ */
+const LABEL_OVER_LINE = 14;
+/** The highest a label's bottom edge goes on the canvas, CSS px from its top (the words and stars are some 52 px tall). */
+const LABEL_TOP = 56;
 const labels: Label[] = [];
 const LABEL_LIFE = 2.6;
 
@@ -196,6 +211,17 @@ function blowNow(world: PhysicsWorld): void {
   applyWind(world, { wind: params.wind * (1 - calm), gusts: params.gusts * (1 - calm) }, GUST * blow);
 }
 
+/** Sets the sheet's points' previous positions to their positions, so the drawing (which interpolates between the two) holds still while no step runs. */
+function holdSheetStill(world: PhysicsWorld): void {
+  const P = world.components.Position,
+    O = world.components.PreviousPosition;
+  for (const e of cloth.points) {
+    const s = slotOf(e);
+    O.x[s] = P.x[s]!;
+    O.y[s] = P.y[s]!;
+  }
+}
+
 /** Scales the velocity of every point of the sheet by `keep`, in [0, 1] (air damping while the air is still). */
 function dampSheet(world: PhysicsWorld, keep: number): void {
   const V = world.components.Velocity;
@@ -214,6 +240,8 @@ function labStep(world: PhysicsWorld): void {
     calm = calmTarget > calm ? Math.min(1, calm + CALM_RATE * world.dt) : Math.max(0, calm - CALM_RATE * world.dt);
     blowNow(world);
   }
+  // On a sheet for careful cuts the sheet holds still while the scissors are down: no step at all.
+  if (heldForScissors()) return;
   // Still air for the scissors: the sheet's swing is damped too (not a gust the player blows).
   if (calm > 0 && blow === 0) dampSheet(world, Math.exp(-CALM_DAMPING * calm * world.dt));
   // The hand's pull follows how far it leads the patch it holds (grab.ts).
@@ -254,54 +282,9 @@ const { shell, renderer, app } = game;
 const touchHint = document.querySelector<HTMLElement>('[data-hud="touch-hint"]');
 if (touchHint) Object.assign(touchHint.style, { top: '12px', bottom: 'auto' });
 const dock = createLabDock();
-/**
- * The upright view's sides as drawn, m: they widen from narrowViewFor's, up to the yard's walls,
- * to keep the cloth on the screen when a gust blows it out past them, and come back once it is in.
- */
-const reach = { minX: narrowViewFor(params.wind).minX, maxX: narrowViewFor(params.wind).maxX };
-/** Puts the upright view's sides back to narrowViewFor's (a new sheet hangs at rest). */
-function resetReach(): void {
-  const base = narrowViewFor(params.wind);
-  reach.minX = base.minX;
-  reach.maxX = base.maxX;
-}
 /** Whether the screen is taller than wide (the upright view). */
 const upright = (): boolean => app.screen.width < app.screen.height;
-const refitView = followView(app, renderer.camera, dock, () =>
-  upright() ? { ...narrowViewFor(params.wind), minX: reach.minX, maxX: reach.maxX } : view,
-);
-/** How much room the cloth is given past the view's side, m. */
-const REACH_MARGIN = 0.2;
-/** How fast the upright view widens to follow the cloth out, and comes back in, 1/s. */
-const REACH_OUT = 10,
-  REACH_IN = 1.5;
-/**
- * Eases the upright view's sides (`reach`) toward the cloth's reach over `dt` s: out to REACH_MARGIN
- * past its outermost point (at most the walls), in to narrowViewFor's sides. Held still during a
- * scissors stroke, so the cut keeps under the finger. @returns whether the view changed.
- */
-function followReach(world: PhysicsWorld, dt: number): boolean {
-  if (!upright() || stroke) return false;
-  const base = narrowViewFor(params.wind);
-  const P = world.components.Position,
-    pts = cloth.points;
-  let lo = Infinity,
-    hi = -Infinity;
-  for (let i = 0; i < pts.length; i++) {
-    const x = P.x[slotOf(pts[i]!)]!;
-    if (x < lo) lo = x;
-    if (x > hi) hi = x;
-  }
-  const wantMin = Math.max(YARD.minX - 0.1, Math.min(base.minX, lo - REACH_MARGIN)),
-    wantMax = Math.min(YARD.maxX + 0.1, Math.max(base.maxX, hi + REACH_MARGIN));
-  const ease = (from: number, to: number, out: boolean): number => from + (to - from) * (1 - Math.exp(-dt * (out ? REACH_OUT : REACH_IN)));
-  const minX = ease(reach.minX, wantMin, wantMin < reach.minX),
-    maxX = ease(reach.maxX, wantMax, wantMax > reach.maxX);
-  if (Math.abs(minX - reach.minX) < 1e-4 && Math.abs(maxX - reach.maxX) < 1e-4) return false;
-  reach.minX = minX;
-  reach.maxX = maxX;
-  return true;
-}
+const refitView = followView(app, renderer.camera, dock, () => (upright() ? narrowView : view));
 
 const panel = createPanel(
   params,
@@ -398,7 +381,6 @@ function nextSheet(): void {
   params.wind = LEVELS[levelIndex]!.wind;
   params.gusts = LEVELS[levelIndex]!.gusts;
   panel.refresh();
-  resetReach();
   refitView();
   shell.reset();
 }
@@ -409,11 +391,12 @@ function announce(fresh: CutOut[]): void {
     if (d.drop === 'falling') continue;
     // Over the piece it came away in (a dropped one: where it landed); one cut to bits has none: over
     // the middle of the sheet.
+    // A cut-out's label shows over the washing line, clear of the shapes still to cut.
     const at: [number, number] = d.drop
       ? [d.landedAt!, 0.5]
       : d.piece >= 0
-        ? challenge.centre(d.piece, [0, 0])
-        : [SHEET_X + SHEET_WIDTH / 2, LINE_Y - 1.5];
+        ? [challenge.centre(d.piece, [0, 0])[0], Number.NaN]
+        : [SHEET_X + SHEET_WIDTH / 2, Number.NaN];
     const name = challenge.shapes[d.shape]!.name;
     const text = new Container({ label: 'cut out' });
     const words = new Text({
@@ -429,7 +412,7 @@ function announce(fresh: CutOut[]): void {
     words.y = -30;
     text.addChild(words, starRow(d.stars, 13));
     labelLayer.addChild(text);
-    labels.push({ text, x: at[0], y: at[1] + 0.4, born: performance.now() / 1000 });
+    labels.push({ text, x: at[0], y: Number.isNaN(at[1]) ? at[1] : at[1] + 0.4, born: performance.now() / 1000 });
     sound.chime([440, 660, 880, 1046][d.stars]!, 0.5);
   }
 }
@@ -650,6 +633,15 @@ canvas.addEventListener('pointerdown', (e) => {
       finger,
     };
     cutting = true;
+    // On a sheet for careful cuts the sheet holds still under the scissors (heldForScissors), drawn
+    // where it is now (not between its last two steps), and the air is still when it runs on.
+    if (heldForScissors()) {
+      holdSheetStill(shell.world);
+      if (calm < 1) {
+        calm = 1;
+        blowNow(shell.world);
+      }
+    }
     slash.length = 0;
     slash.push({ x: at.x, y: at.y, t: performance.now() / 1000 });
   } else if (e.button === 0) grab = ClothGrab.at(shell.world, cloth, x, y, gripFor(params.size));
@@ -687,7 +679,6 @@ shell.onWorldChange(() => {
   // than the page has the frame pacer skip frames: the old, cut sheet would otherwise stay on the
   // canvas for seconds while the status line already names the next one.
   game.drawNext();
-  resetReach();
   refitView();
   refreshTools();
   grab = null;
@@ -794,7 +785,7 @@ function drawSlash(now: number): void {
   }
 }
 
-/** Moves the floating labels up as they fade. */
+/** Places the floating labels (a dropped piece's rising as it fades; a cut-out's over the line, still) and fades them. */
 function drawLabels(now: number): void {
   const cam = renderer.camera;
   for (let i = labels.length - 1; i >= 0; i--) {
@@ -807,7 +798,9 @@ function drawLabels(now: number): void {
     }
     const half = l.text.width / 2 + 6;
     l.text.x = Math.min(Math.max(cam.toScreenX(l.x), half), cam.width - half);
-    l.text.y = Math.max(cam.toScreenY(l.y) - 30 * age, 64);
+    l.text.y = Number.isNaN(l.y)
+      ? Math.max(cam.toScreenY(LINE_Y) - LABEL_OVER_LINE, LABEL_TOP)
+      : Math.max(cam.toScreenY(l.y) - 30 * age, LABEL_TOP + 8);
     l.text.alpha = Math.min(1, 3 * (1 - age / LABEL_LIFE));
   }
 }
@@ -1028,7 +1021,6 @@ function draw(alpha: number, world: PhysicsWorld): void {
     }
     layerWorld = world;
   }
-  if (followReach(world, dt)) refitView();
   yard.update(world, renderer.camera, dt, app.screen.width, app.screen.height);
   sheet!.update(renderer.camera, alpha);
   drawPegs(world);
@@ -1092,6 +1084,12 @@ shell.expose({
   basket: () => challenge.shapes.find((sh) => sh.drop)?.drop ?? null,
   scraps: () => challenge.scraps,
   /** The card of targets and their stars on the lawn, on the canvas (CSS px: x, y, width, height). */
+  /** The floating labels showing now (a cut-out's words and stars), on the canvas (CSS px: x, y, width, height each). */
+  labels: () =>
+    labels.map((l) => {
+      const b = l.text.getBounds();
+      return { x: b.x, y: b.y, width: b.width, height: b.height };
+    }),
   starCard: () => {
     const b = card.getBounds();
     return { x: b.x, y: b.y, width: b.width, height: b.height };

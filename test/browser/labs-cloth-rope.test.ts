@@ -41,6 +41,8 @@ interface ClothLab extends Lab {
   targets(): number[][];
   cutOuts(): { shape: string; fit: number; stars: number; drop: string; landedAt: number }[];
   starCard(): { x: number; y: number; width: number; height: number };
+  labels(): { x: number; y: number; width: number; height: number }[];
+  stroking(): boolean;
 }
 interface RopeLab extends Lab {
   ids(): { ball: number; ropes: { anchor: number[]; bodies: number[]; links: number[] }[] };
@@ -227,9 +229,15 @@ for (const [device, options] of [
       const layoutBefore = await layout();
       const saidBefore = await g.page.locator('.lab-status').textContent();
       await drag(g.page, await across(), 6);
-      // The status changes on a frame after the stroke (a frame may go undrawn on a busy page): wait
-      // for it; a status that never changes times the wait out and fails the case.
-      await g.waitFor((said) => (document.querySelector('.lab-status')?.textContent ?? said) !== said || null, saidBefore);
+      // The status changes on a frame after the stroke (a frame may go undrawn on a busy page, and a
+      // finger's last moves and its lift may reach the page a frame after `drag` returns): wait until
+      // the stroke has ended and the status says what it cut (the note the release writes), not only
+      // that it changed (the paused sheet's own words may come first); a status that never says so
+      // times the wait out and fails the case.
+      await g.waitFor((said) => {
+        const now = document.querySelector('.lab-status')?.textContent ?? said ?? '';
+        return (now !== said && !(window.game as unknown as ClothLab).stroking() && /cut off the line|held no shape/.test(now)) || null;
+      }, saidBefore);
       expect(await layout()).toEqual(layoutBefore);
       expect(await g.page.evaluate(() => (window.game as unknown as ClothLab).cut())).toBeGreaterThan(cl.columns);
       expect(await g.page.evaluate(() => (window.game as unknown as ClothLab).links())).toBeLessThan(before - cl.columns);
@@ -308,12 +316,15 @@ for (const [device, options] of [
       // Every frame, how far the cloth's outermost points are past the canvas's sides (CSS px, > 0: off it).
       await g.page.evaluate(() => {
         const w = window.game as unknown as ClothLab & { renderer: { camera: Cam & { width: number } } };
-        const out = { right: -1e9, left: -1e9, reach: -1e9 };
+        const out = { right: -1e9, left: -1e9, reach: -1e9, panned: 0 };
         (window as unknown as { gustOut: typeof out }).gustOut = out;
         const x0 = w.world.components.Position.x[w.cloth().points[0]! % 2 ** 25]!;
+        const cam0 = [w.renderer.camera.toScreenX(0), w.renderer.camera.toScreenX(1)];
         const frame = (): void => {
           const P = w.world.components.Position,
             cam = w.renderer.camera;
+          // How far the view moved, CSS px: the world's x = 0 and x = 1 m on the screen.
+          out.panned = Math.max(out.panned, Math.abs(cam.toScreenX(0) - cam0[0]!), Math.abs(cam.toScreenX(1) - cam0[1]!));
           for (const h of Array.from(w.cloth().points)) {
             const x = P.x[h % 2 ** 25]!;
             out.right = Math.max(out.right, cam.toScreenX(x) - cam.width);
@@ -330,13 +341,17 @@ for (const [device, options] of [
       await drag(g.page, [{ x: box.x + box.width / 2, y: box.y + box.height / 2 }], 1, async () => {
         await g.waitFor((t) => (window.game as unknown as Lab).world.time > t + 2.5, t0, 30_000);
       });
-      const out = await g.page.evaluate(() => (window as unknown as { gustOut: { right: number; left: number; reach: number } }).gustOut);
+      const out = await g.page.evaluate(
+        () => (window as unknown as { gustOut: { right: number; left: number; reach: number; panned: number } }).gustOut,
+      );
       // The gust blew the sheet out, more than 4.5 m right of its left peg (on a phone, before the
       // upright view followed it, 46 px of it went off the screen's right edge) ...
       expect(out.reach).toBeGreaterThan(4.5);
-      // ... and the view kept all of it on the screen.
+      // ... and the view kept all of it on the screen, holding still (on a phone it used to pan and
+      // zoom out after the sheet, and back, under the player's scissors).
       expect(out.right).toBeLessThanOrEqual(0);
       expect(out.left).toBeLessThanOrEqual(0);
+      expect(out.panned).toBe(0);
       expect(g.errors).toEqual([]);
     });
 
@@ -459,6 +474,70 @@ for (const [device, options] of [
         expect(await g.page.evaluate(() => (window.game as unknown as ClothLab).scraps())).toBe(0);
         expect(await g.page.evaluate(() => (window.game as unknown as ClothLab).links())).toBe(before.links);
       }
+      expect(g.errors).toEqual([]);
+    });
+
+    it('the running sheet holds still under the scissors; a shape cut out shows its label over the washing line, clear of the shapes', async () => {
+      await g.page.evaluate(() => {
+        const w = window.game as unknown as ClothLab & { reset(): void };
+        w.reset();
+        w.paused = false;
+      });
+      // Running: the sheet sways in the breeze (the first sheet's shapes).
+      const t0 = await g.page.evaluate(() => (window.game as unknown as Lab).world.time);
+      await g.waitFor((t) => (window.game as unknown as Lab).world.time > t + 1, t0, 30_000);
+      const cl = await g.page.evaluate(() => {
+        const c = (window.game as unknown as ClothLab).cloth();
+        return { rows: c.rows, columns: c.columns, outline: (window.game as unknown as ClothLab).targets()[0]! };
+      });
+      const spacing = 4 / (cl.columns - 1);
+      // The first shape's outline, by the nearest cloth points (sheet coordinates: x, y down, m).
+      const ring: [number, number][] = [];
+      for (let i = 0; i < cl.outline.length; i += 2)
+        ring.push([Math.round(cl.outline[i + 1]! / spacing), Math.round(cl.outline[i]! / spacing)]);
+      ring.push(ring[0]!);
+      const onPage = async ([r, c]: [number, number]) => {
+        const [x, y] = await clothPoint(g, r, c);
+        return toPage(g, x, y);
+      };
+      const camera = () =>
+        g.page.evaluate(() => {
+          const cam = (window.game as unknown as Lab).renderer.camera;
+          return [cam.toScreenX(0), cam.toScreenY(0), cam.toScreenX(1)];
+        });
+      const view0 = await camera();
+      /** The sheet's lower corner, m, and the world's clock, s. */
+      const sheetNow = async () => [
+        ...(await clothPoint(g, cl.rows - 1, cl.columns - 1)),
+        await g.page.evaluate(() => (window.game as unknown as Lab).world.time),
+      ];
+      const held: number[][] = [];
+      const points = [];
+      for (const p of ring) points.push(await onPage(p));
+      // Round the outline with the scissors (the sheet held still: the points read before stand);
+      // before they lift, the sheet is read twice, frames apart.
+      await drag(g.page, points, 4, async () => {
+        await g.waitFor(() => (window.game as unknown as ClothLab).stroking() || null, null);
+        held.push(await sheetNow());
+        await g.frames(4);
+        held.push(await sheetNow());
+      });
+      // Held still under the scissors: not a step (the clock stopped), not a point moved.
+      expect(held[1]).toEqual(held[0]);
+      // Once the scissors lift the sheet runs on and the shape comes away.
+      await g.waitFor(() => (window.game as unknown as ClothLab).cutOuts().length > 0 || null, null, 30_000);
+      const label = await g.waitFor(() => (window.game as unknown as ClothLab).labels()[0] ?? null, null);
+      // The label's bottom is above the washing line's pegged points (the shapes hang below them).
+      let top = Infinity;
+      for (let c = 0; c < cl.columns; c += 4) {
+        const [x, y] = await clothPoint(g, 0, c);
+        const p = await toPage(g, x, y);
+        top = Math.min(top, p.y);
+      }
+      const canvasTop = await g.page.evaluate(() => document.querySelector('canvas')!.getBoundingClientRect().top);
+      expect(canvasTop + label.y + label.height).toBeLessThanOrEqual(top);
+      // The view held still through it all.
+      expect(await camera()).toEqual(view0);
       expect(g.errors).toEqual([]);
     });
 

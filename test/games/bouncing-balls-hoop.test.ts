@@ -394,6 +394,45 @@ describe('the slingshot and its aiming arc', () => {
     );
   });
 
+  it('with ceilingBounces a high arc goes on off the ceiling, following a real ball, and ends at the next touch', () => {
+    // The issue this answers: a high throw's aiming arc ended where it met the box's top, so where the
+    // throw went from there was not shown. Thrown up and a little left from the floor at 17.4 m/s,
+    // between the ramps, in the box without its balls.
+    const [x0, y0, vx, vy] = [5, 1, -2, 17.3];
+    const walls = SEGMENTS.map(([ax, ay, bx, by]) => [ax, ay, bx, by, SEGMENT_RADIUS] as const);
+    const options = { count: 1, seed: 1 };
+    const world = createPhysicsWorld(bouncingBallsWorldOptions(options));
+    const h = buildBouncingBalls(world, options);
+    for (const b of h.balls) removeBody(world, b);
+    const e = addBody(world, {
+      position: [x0, y0],
+      velocity: [vx, vy],
+      radius: PLAYER_RADIUS,
+      density: 1,
+      restitution: 0.8,
+      friction: 0.2,
+    });
+    const o = { gravity: 9.81, drag: 'none', k: 0, mass: 1, radius: PLAYER_RADIUS, box: BOX, every: 1 / 60, seconds: 1.2, walls } as const;
+    const cut = throwPath(x0, y0, vx, vy, { ...o, restitution: 0.8, friction: 0.2 });
+    const path = throwPath(x0, y0, vx, vy, { ...o, restitution: 0.8, friction: 0.2, ceilingBounces: 1 });
+    // Without: the arc ends at the ceiling (its last point touches it). With: it comes back down from it.
+    expect(cut.at(-1)! + PLAYER_RADIUS).toBeCloseTo(BOX.max[1], 9);
+    const ys = path.filter((_, i) => i % 2 === 1);
+    expect(path.length).toBeGreaterThan(cut.length + 10);
+    expect(Math.max(...ys) + PLAYER_RADIUS).toBeCloseTo(BOX.max[1], 9);
+    expect(ys.at(-1)!).toBeLessThan(BOX.max[1] - PLAYER_RADIUS - 1);
+    // The real ball follows the arc through its bounce off the ceiling (within 0.15 m: the bounce comes a part of a step sooner).
+    const P = world.components.Position;
+    for (let i = 1; i < path.length / 2; i++) {
+      step(world);
+      expect(Math.hypot(path[2 * i]! - P.x[slotOf(e)]!, path[2 * i + 1]! - P.y[slotOf(e)]!), `step ${i}`).toBeLessThan(0.15);
+    }
+    // The ceiling's bounce is its own: the next touch (a wall, here the right one) still ends the arc.
+    const side = throwPath(12, 5, 6, 12, { ...o, seconds: 3, ceilingBounces: 1 });
+    expect(side.at(-2)! + PLAYER_RADIUS).toBeCloseTo(BOX.max[0], 9);
+    expect(() => throwPath(0, 0, 0, 0, { ...o, ceilingBounces: 0.5 })).toThrow(/ceilingBounces/);
+  });
+
   it('a stop ends the arc where the ball first moves into it, and only from its own step on (a ball passed as it leaves the heap)', () => {
     // Flat along y = 5 at 6 m/s from x = 2, no gravity: 0.1 m a step. A ball of radius 0.5 at x = 4.05:
     // touched (centres under 0.9 m apart) once x > 3.15, after 12 steps (x = 3.2).
