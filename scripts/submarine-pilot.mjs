@@ -6,7 +6,8 @@
 // faster (between the two it lets go and glides), and Dive or Rise (the keys' steady share, helm.ts
 // keyHeaveShare at the boat's speed) until the depth order is at the beacon's depth; when the mine warning by the hull comes (mines.ts mineAhead, as the page
 // computes it, on at the share the keys ask for) it waits S s (default 1: mines.ts MINE_REACTION), then holds the Rise or Dive key as
-// told while the warning lasts and holds its depth until it is past the mine. It minds neither the
+// told while the warning lasts and holds its depth until it is past the mine; when the seabed has
+// stopped its dive it lets go of Dive once off the bed and presses it again. It minds neither the
 // ridges nor the glow trail, and does not turn back for a beacon it passed. Courses: seeds 1 to N
 // (default 20) with 6 and with 10 beacons. --warn: how far ahead the warning looks, s (default
 // mines.ts MINE_WARN_TIME). Prints the mines hit (and how long before each the warning came), the
@@ -125,6 +126,9 @@ function fly(seed, count) {
         input.heave = keyHeaveShare(0, t, c.Velocity.x[e]);
       }
     }
+    // The bed stopped a dive (seabed.ts seabedInput) and the hull is off it again: Dive is let go
+    // for a step, as a player presses it again once the boat has cleared the bed.
+    if (state.diveStopped && !state.touching && input.dive) input.dive = false;
     const held = seabedInput(state, input);
     steer(world, h, held, state);
     step(world);

@@ -244,3 +244,46 @@ export function tutorialAim(
 }
 const tutorialForecast = createForecast();
 const state6 = new Float64Array(6);
+
+/**
+ * How far short of the target's orbit the starting aim of missions 2 on keeps the probe's path, as a
+ * share of the orbit's semi-major axis, beyond the arrival ring and the orbit's nearest (farthest)
+ * point from the Sun: a path this short meets the target at no launch date.
+ */
+export const START_SHORT = 0.05;
+
+/**
+ * The starting aim of missions 2 on, which the player has to change to arrive: along the Earth's
+ * motion (outwards) or against it (inwards), at a speed at least `TUTORIAL_SHORTFALL` km/s under
+ * the Hohmann transfer's (rounded down to 0.1 km/s), lowered 0.1 km/s at a time (to no less than
+ * 0) until the forecast's path turns back `START_SHORT` of the orbit's size (and the ring) short of
+ * the target's orbit at its nearest to the Earth's (its perihelion going out, its aphelion going
+ * in; the orbit from the target's state now, two-body): it does not arrive, now or after any wait
+ * (at the Hohmann speed it did at the launch window, and a tap of Wait then Space won three
+ * stars). `baseStep` as forecastLaunch's.
+ */
+export function startAim(world: PhysicsWorld, handles: SolarSystemHandles, mission: Mission, baseStep: number): Aim {
+  const mu = world.laws.gravitationalConstant * world.components.Mass.value[slotOf(handles.bodies.Sun)]!;
+  const earth = heliocentricState(world, handles, handles.bodies.Earth, state6);
+  const rE = Math.hypot(earth[0]!, earth[1]!, earth[2]!);
+  const t = heliocentricState(world, handles, handles.bodies[mission.target], state6);
+  const r = Math.hypot(t[0]!, t[1]!, t[2]!),
+    v2 = t[3]! ** 2 + t[4]! ** 2 + t[5]! ** 2;
+  // The target's orbit: semi-major axis (vis-viva) and eccentricity (from the angular momentum).
+  const hx = t[1]! * t[5]! - t[2]! * t[4]!,
+    hy = t[2]! * t[3]! - t[0]! * t[5]!,
+    hz = t[0]! * t[4]! - t[1]! * t[3]!;
+  const a = 1 / (2 / r - v2 / mu),
+    e = Math.sqrt(Math.max(0, 1 - (hx * hx + hy * hy + hz * hz) / (mu * a)));
+  const v = hohmannSpeed(rE, r, mu);
+  const outward = v >= 0,
+    angle = outward ? 0 : 180;
+  let speed = Math.max(0, Math.floor((Math.abs(v) - TUTORIAL_SHORTFALL) * 10 + 1e-9) / 10);
+  for (; speed > 0; speed = Math.max(0, Math.round((speed - 0.1) * 10) / 10)) {
+    const f = forecastLaunch(world, handles, mission, { angle, speed }, baseStep, startForecast);
+    const short = outward ? f.farthest < a * (1 - e - START_SHORT) - mission.zone : f.nearest > a * (1 + e + START_SHORT) + mission.zone;
+    if (short && f.outcome !== 'arrived') break;
+  }
+  return { angle, speed };
+}
+const startForecast = createForecast();

@@ -95,7 +95,7 @@ import {
   Vector2,
   Vector3,
 } from 'three';
-import { adviseAim, adviseBurn, createAimAdvice, createBurnAdvice, SPEED_STEP, TURN_STEP, tutorialAim } from './advice';
+import { adviseAim, adviseBurn, createAimAdvice, createBurnAdvice, SPEED_STEP, startAim, TURN_STEP, tutorialAim } from './advice';
 import { displayRadius, fromDisplay, toDisplay } from './distance-scale';
 import { copyForecast, createForecast, ForecastJob } from './forecast';
 import {
@@ -473,7 +473,9 @@ const state6 = new Float64Array(6);
 
 /**
  * Starts mission `index` (0-based) where the world is: the launch arrow along the Earth's motion
- * (outwards) or against it (inwards) at a round Hohmann transfer speed, the view framing its planets.
+ * (outwards) or against it (inwards), the speed short of an arriving course (mission 1 a little
+ * short, ./advice.ts tutorialAim; the others short of the target's orbit, startAim), the view
+ * framing its planets.
  */
 function startMission(index: number): void {
   hideCard();
@@ -488,6 +490,9 @@ function startMission(index: number): void {
   const v = hohmannSpeed(distanceFromSun('Earth'), distanceFromSun(m.target), mu);
   aim.angle = v >= 0 ? 0 : 180;
   aim.speed = Math.min(MAX_SPEED, Math.round(Math.abs(v) * 10) / 10);
+  // Missions 2 on start short of the target's orbit (./advice.ts startAim): the player has to aim
+  // (at the Hohmann speed, a tap of Wait to the launch window and Space won three stars).
+  if (missionIndex > 0) Object.assign(aim, startAim(shell.world, handles, m, baseStep()));
   // The first mission is a lesson in one change: the arrow points the way of an arriving course,
   // with the speed a little short of it (./advice.ts tutorialAim); the line shows it falling short
   // of Mars (the Hint button says how much to speed up).
@@ -1289,7 +1294,16 @@ const forecastTags = (['target-then', 'probe-then'] as const).map((name) => {
   return el;
 });
 
-/** Shows forecast tag `i` (0 the target then, 1 the probe then) with `text` beside scene point (x, y, z), `below` px under it; hides it when `text` is ''. */
+/** The forecast tags shown this frame: left, top, right, bottom (px), four numbers each; the names keep clear of them (placeLabels). */
+const tagBoxes: number[] = [];
+/**
+ * Shows forecast tag `i` (0 the target then, 1 the probe then) with `text` by scene point (x, y, z):
+ * centred `below` px under it (over it when negative) where that is clear, else over (under) it, to
+ * its right or to its left, the first place that keeps clear of the other tag, the dots and the
+ * names as last placed; each place moved inside the view (on a phone "Mars at arrival" was cut off
+ * at the left edge, and "probe then" sat on other names). Hides it when `text` is ''. `frame`
+ * clears `tagBoxes` before the tags are placed.
+ */
 function placeTag(i: number, text: string, x: number, y: number, z: number, below: number): void {
   const el = forecastTags[i]!;
   v.set(x, y, z).project(app.camera);
@@ -1297,10 +1311,33 @@ function placeTag(i: number, text: string, x: number, y: number, z: number, belo
   el.style.display = show ? '' : 'none';
   if (!show) return;
   if (el.textContent !== text) el.textContent = text;
-  const sx = ((v.x + 1) / 2) * app.canvas.clientWidth,
-    sy = ((1 - v.y) / 2) * app.canvas.clientHeight;
-  el.style.left = `${Math.round(sx - el.offsetWidth / 2)}px`;
-  el.style.top = `${Math.round(sy + below)}px`;
+  const w = app.canvas.clientWidth,
+    h = app.canvas.clientHeight;
+  const sx = ((v.x + 1) / 2) * w,
+    sy = ((1 - v.y) / 2) * h;
+  const tw = el.offsetWidth,
+    th = el.offsetHeight || LABEL_HEIGHT;
+  const off = Math.abs(below);
+  const places = [
+    [sx - tw / 2, below >= 0 ? sy + off : sy - off],
+    [sx - tw / 2, below >= 0 ? sy - off - th : sy + off - th],
+    [sx + Math.max(8, off * 0.7), sy - th / 2],
+    [sx - Math.max(8, off * 0.7) - tw, sy - th / 2],
+  ];
+  let x0 = 0,
+    y0 = 0;
+  for (let k = 0; k < places.length; k++) {
+    const cx = Math.max(2, Math.min(w - tw - 2, places[k]![0]!)),
+      cy = Math.max(2, Math.min(h - th - 2, places[k]![1]!));
+    let clear = labelFree(cx, cy, cx + tw, cy + th, -1);
+    for (let b = 0; b < tagBoxes.length && clear; b += 4)
+      if (cx < tagBoxes[b + 2]! && cx + tw > tagBoxes[b]! && cy < tagBoxes[b + 3]! && cy + th > tagBoxes[b + 1]!) clear = false;
+    if (k === 0 || clear) [x0, y0] = [cx, cy];
+    if (clear) break;
+  }
+  tagBoxes.push(x0, y0, x0 + tw, y0 + th);
+  el.style.left = `${Math.round(x0)}px`;
+  el.style.top = `${Math.round(y0)}px`;
 }
 
 /** Labels placed this frame: left, top, right, bottom (px), four numbers each. */
@@ -1378,7 +1415,9 @@ function placeLabels(): void {
     return Math.hypot(onScreen[4 * i]! - onScreen[0]!, onScreen[4 * i + 1]! - onScreen[1]!);
   };
   labelOrder.sort((a, b) => rank(b) - rank(a));
+  // The forecast's tags (placeTag) are placed first this frame: the names keep clear of them.
   placed.length = 0;
+  for (let b = 0; b < tagBoxes.length; b++) placed.push(tagBoxes[b]!);
   for (const i of labelOrder) {
     const name = LABELS[i]!;
     const el = labels[name];
@@ -1409,7 +1448,7 @@ function placeLabels(): void {
     labelAt[2 * i + 1] = y0;
     if (free) placed.push(x0, y0, x0 + width, y0 + LABEL_HEIGHT);
   }
-  shownLabels = placed.length / 4;
+  shownLabels = (placed.length - tagBoxes.length) / 4;
 }
 
 /** `onScreen` as of the last frame drawn (what `showOverlay` showed). */
@@ -1481,6 +1520,7 @@ function frame(): void {
     orbitsAt = world.time;
     orbitsScale = trueScale;
   }
+  tagBoxes.length = 0;
   drawLaunch(world);
   placeLabels();
   // The dots and names are HTML over the canvas: they move only when this frame's scene is drawn.
@@ -1922,8 +1962,9 @@ function hint(m: Mission): string {
 /**
  * The line's end for the forecast shown on `m`, and its class. While aiming it does not say whether
  * the launch arrives (the player judges that from the dots, the probe's place at the closest
- * approach and the target's ring there): it names the stars a launch of this speed earns if it
- * arrives, and says so when the path cannot reach the target's orbit or falls into the Sun. In
+ * approach and the target's ring there): it says the path crosses the target's orbit and asks
+ * whether the target is there then, and names the stars a launch of this speed earns if it
+ * arrives, or says so when the path cannot reach the target's orbit or falls into the Sun. In
  * flight it gives the course's verdict (burns are judged by it).
  */
 function verdict(m: Mission): [string, string] {
@@ -1937,7 +1978,12 @@ function verdict(m: Mission): [string, string] {
       return [`✗ goes out only to ${f.farthest.toFixed(2)} AU from the Sun; ${m.target} is at ${rT.toFixed(2)} AU${scheme}`, 'bad'];
     if (!outward && f.outcome !== 'arrived' && f.nearest > rT + m.zone)
       return [`✗ falls in only to ${f.nearest.toFixed(2)} AU from the Sun; ${m.target} is at ${rT.toFixed(2)} AU${scheme}`, 'bad'];
-    return [`reaches ${m.target}’s orbit · ${starText(starsFor(m, aim.speed))} if it arrives${scheme}`, 'judge'];
+    // Not a verdict: the path gets as far as the orbit, and whether the target is there then is for
+    // the player to judge from the map ("reaches Venus's orbit" read as a hit for a launch that missed).
+    return [
+      `crosses ${m.target}’s orbit: is ${m.target} there then? · ${starText(starsFor(m, aim.speed))} if it arrives${scheme}`,
+      'judge',
+    ];
   }
   if (f.outcome === 'arrived') return [`✓ arrives on day ${Math.round(f.end)}${scheme}`, 'ok'];
   return [`✗ misses ${m.target}: closest ${f.closest.toFixed(2)} AU (the ring is ${m.zone} AU)${scheme}`, 'bad'];
@@ -2010,12 +2056,17 @@ function updateStatus(force = false): void {
   // The hint, worked out again (./advice.ts) when what it is for has changed.
   if (hinting) hintText = hint(m) || (phase === 'aim' ? 'Hint: working it out…' : hintText);
   const date = new Date(handles.epoch + world.time * 86_400_000).toISOString().slice(0, 10);
-  const rate = shownRate(world.time, currentRate());
+  // Paused, no days run whatever rate is set: the line says so (it said "11 days a second").
+  const rate = shell.paused ? 0 : shownRate(world.time, currentRate());
   const stars = `Stars ${total} / ${3 * MISSIONS.length}`;
-  const clock =
-    rate === 0
+  const atTheWindow = phase === 'aim' && Math.abs(world.time - atWindow) < 1;
+  const clock = shell.paused
+    ? atTheWindow
+      ? `launch window for ${m.target}: aim ahead of it (paused)`
+      : 'paused'
+    : rate === 0
       ? phase === 'aim'
-        ? Math.abs(world.time - atWindow) < 1
+        ? atTheWindow
           ? `launch window for ${m.target}: aim ahead of it`
           : 'time waits while you aim'
         : 'time stopped'

@@ -36,7 +36,7 @@
 
 import type { PhysicsWorld } from '@bitphysics/physics';
 import { setBallastTarget, setBodyThrust } from '@bitphysics/physics';
-import { SUBMARINE, SUBMARINE_NEUTRAL_FILL, type SubmarineHandles, setSubmarineThrusters } from '@bitphysics/projects';
+import { SUBMARINE, SUBMARINE_NEUTRAL_FILL, type SubmarineHandles, seabedHeight, setSubmarineThrusters } from '@bitphysics/projects';
 import { divePlanes, PLANES, planeLift } from './planes';
 
 /** Held controls this step: each true while its key or on-screen button is down. */
@@ -157,6 +157,22 @@ export const HELM = Object.freeze({
   orderLead: 0.5,
   /** Vertical speed under which braking after a bounce off the seabed ends and that depth is held, m/s. */
   holdSpeed: 0.3,
+  /**
+   * A held depth keeps the keel at least this far over the seabed under the hull and ahead of it
+   * (`holdFloor`), m: the order is raised to clear a ridge, never left to drive the hull into it.
+   */
+  bedClearance: 2.5,
+  /**
+   * How far ahead the held depth looks for the seabed, s at the boat's speed ahead (`holdFloor`): at
+   * full ahead (12.9 m/s) 52 m. As far as the seabed warning looks (./seabed.ts BED_WARN_TIME), so a
+   * held course is never warned of a ridge: the helm is already raising the order over it.
+   */
+  bedLookAhead: 4,
+  /**
+   * The climb a held depth counts on to clear a ridge ahead, m/s (`holdFloor`): half the hold's
+   * 8 m/s, for the time the boat takes to start climbing.
+   */
+  bedClimb: 4,
   /** Pitch loop of the thrusters: torque per radian of pitch error, N m / rad. */
   pitchGain: 3e6,
   /** Pitch loop of the thrusters: torque per rad/s of pitch rate, N m s / rad. */
@@ -270,6 +286,27 @@ export function approach(error: number, most: number, brake: number = HELM.brake
 }
 
 /**
+ * The lowest a held depth may go, as the hull's centre y, m (y up): `HELM.bedClearance` plus half
+ * the hull's height over the seabed (`seabed`, the scene's) under a level hull centred at `x` (m),
+ * and over the seabed up to `HELM.bedLookAhead` s ahead of its bow at its speed `vx` (m/s; astern
+ * the same way behind the stern) less the climb `HELM.bedClimb` makes in the time it takes to get
+ * there: the order rises as late as still clears a ridge, so a beacon low in a valley before a
+ * slope can still be reached. Sampled every 2 m.
+ * @throws RangeError when `x` or `vx` is not finite.
+ */
+export function holdFloor(seabed: SubmarineHandles['seabed'], x: number, vx: number): number {
+  if (!Number.isFinite(x)) throw new RangeError(`holdFloor: x must be finite m, got ${x}`);
+  if (!Number.isFinite(vx)) throw new RangeError(`holdFloor: vx must be finite m/s, got ${vx}`);
+  const L = SUBMARINE.length / 2,
+    speed = Math.abs(vx),
+    dir = vx < 0 ? -1 : 1;
+  let bed = Math.max(seabedHeight(seabed, x - L), seabedHeight(seabed, x), seabedHeight(seabed, x + L));
+  const reach = speed * HELM.bedLookAhead;
+  for (let d = 2; d <= reach; d += 2) bed = Math.max(bed, seabedHeight(seabed, x + dir * (L + d)) - (HELM.bedClimb * d) / speed);
+  return bed + SUBMARINE.height / 2 + HELM.bedClearance;
+}
+
+/**
  * One step of the helm: reads the hull (position, velocity, angle, mass) and the sea's surface,
  * updates `state` from `input` and writes the ballast targets, the vertical thrusters and the screw
  * into the world. Call it before each `step(world)`.
@@ -339,6 +376,8 @@ export function steer(world: PhysicsWorld, handles: SubmarineHandles, input: Hel
     if (state.mode === 'steering' || (state.mode === 'surfaced' && Number.isNaN(state.holdY)))
       state.holdY = y + Math.sign(vy) * stopping(vy, brake);
     if (Number.isNaN(state.holdY) && Math.abs(vy) < HELM.holdSpeed) state.holdY = y;
+    // A held depth never drives the hull into the seabed: over a ridge ahead the order is raised.
+    if (!Number.isNaN(state.holdY)) state.holdY = Math.max(state.holdY, holdFloor(handles.seabed, c.Position.x[e]!, c.Velocity.x[e]!));
     state.mode = Number.isNaN(state.holdY) ? 'braking' : 'holding';
     vCmd = Number.isNaN(state.holdY) ? 0 : approach(state.holdY - y, HELM.climbSpeed, brake);
   }

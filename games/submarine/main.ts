@@ -39,7 +39,7 @@ import { SUBMARINE, SUBMARINE_NEUTRAL_FILL, type SubmarineHandles, seabedHeight,
 import { Graphics, Text } from 'pixi.js';
 import { BEACON_CATCH, beaconLabel, beaconName, catchesBeacon, chooseBeacon, layCourse, seabedBetween } from './beacons';
 import { drawBoat, HEADLIGHT, inHeadlight } from './boat-drawing';
-import { createHelmState, type HelmInput, keyHeaveShare, steer } from './helm';
+import { createHelmState, HELM, type HelmInput, keyHeaveShare, steer } from './helm';
 import {
   hullDistance,
   layMines,
@@ -53,7 +53,7 @@ import {
   touchesMine,
 } from './mines';
 import { drawFish } from './sea-life';
-import { seabedInput, touchSeabed } from './seabed';
+import { type BedAhead, bedAhead, seabedInput, touchSeabed } from './seabed';
 import { type Glow, layTrail, touchesGlow } from './trail';
 
 const params = {
@@ -101,6 +101,11 @@ let wayMine = -1;
  * drawn ringed, with a warning by the hull (an arrow from it to the mine and which way to pass).
  */
 let ahead: MineAhead | null = null;
+/**
+ * The seabed on the boat's course within BED_WARN_TIME s (./seabed.ts bedAhead) while no mine is
+ * warned of, null for none: told by the hull as a mine is (a ridge to rise over).
+ */
+let bedWarn: BedAhead | null = null;
 /** Within this distance of the hull, m, a mine is drawn with a pulsing warning ring. */
 const MINE_WARN_DISTANCE = 25;
 /** The course's glow trail (./trail.ts), and each glow's state: 0 to catch, 1 caught, 2 missed (passed by). */
@@ -265,6 +270,7 @@ function createWorld(): PhysicsWorld {
   mineLive = mines.map(() => true);
   wayMine = -1;
   ahead = null;
+  bedWarn = null;
   glows = layTrail(handles.beacons, handles.seabed, mines);
   glowState = new Uint8Array(glows.length);
   glowPops.length = 0;
@@ -431,6 +437,7 @@ function stepWorld(world: PhysicsWorld): void {
   }
   if (state.over) {
     ahead = null;
+    bedWarn = null;
     return;
   }
   // The course ahead (./mines.ts mineAhead): toward the ordered depth, and while Dive or Rise is
@@ -445,6 +452,26 @@ function stepWorld(world: PhysicsWorld): void {
     sound.chime(330, 0.18);
     setTimeout(() => sound.chime(262, 0.25), 150);
   }
+  // The seabed on the course (./seabed.ts bedAhead), told by the hull as a mine is while no mine is
+  // (a ridge ahead in time to rise over it): a new warning sounds one low note.
+  const hadBed = bedWarn !== null;
+  bedWarn = ahead
+    ? null
+    : bedAhead(
+        c.Position.x[e]!,
+        c.Position.y[e]!,
+        c.Velocity.x[e]!,
+        c.Velocity.y[e]!,
+        state.holdY,
+        handles.seabed,
+        HELM.climbSpeed,
+        HELM.diveSpeed,
+        {
+          heaving: state.mode === 'diving' || state.mode === 'rising',
+          heave: Math.max(0.01, Math.min(1, input.heave ?? 1)),
+        },
+      );
+  if (bedWarn && !hadBed && !state.touching) sound.chime(294, 0.2);
   catchGlows(world);
   for (let i = 0; i < taken.length; i++) {
     if (taken[i]) continue;
@@ -785,8 +812,19 @@ function drawPause(W: number, H: number): void {
 }
 /** The warning's words for each side to pass the mine on (placeMineTag adds how far ahead the mine is: "MINE 40 m"). */
 const MINE_TAG_TEXT = { over: '⚠ MINE: rise over ▲', under: '⚠ MINE: dive under ▼' } as const;
-/** The mine warning as last drawn (tests): its words ('' while none), the tag's box and the arrow's tip and tail (px). */
-const mineWarning = { text: '', box: [0, 0, 0, 0], tip: [0, 0], tail: [0, 0] };
+/** The seabed warning's words (placeMineTag adds how far ahead a ridge is: "RIDGE 40 m"). */
+const BED_TAG_TEXT = { ridge: '⚠ RIDGE: rise ▲', floor: '⚠ SEABED: rise ▲' } as const;
+/**
+ * The warning by the hull as last drawn (tests): what of ('mine', 'seabed', '' while none), its
+ * words, the tag's box and the arrow's tip and tail (px).
+ */
+const mineWarning: { kind: '' | 'mine' | 'seabed'; text: string; box: number[]; tip: number[]; tail: number[] } = {
+  kind: '',
+  text: '',
+  box: [0, 0, 0, 0],
+  tip: [0, 0],
+  tail: [0, 0],
+};
 /**
  * Places the tag of the warning of a mine on the boat's course (`ahead`) by the hull at screen
  * (`hx`, `hy`, px), `k` px a metre, in a view `W` x `H` px: on the side to pass, over the sail (rise
@@ -794,19 +832,31 @@ const mineWarning = { text: '', box: [0, 0, 0, 0], tip: [0, 0], tail: [0, 0] };
  * before the beacon pointer's label, which keeps clear of it.
  */
 function placeMineTag(k: number, hx: number, hy: number, W: number, H: number): void {
-  mineTag.visible = ahead !== null && !state.over;
+  mineTag.visible = (ahead !== null || bedWarn !== null) && !state.over;
   mineWarning.text = '';
   mineWarning.box = [0, 0, 0, 0];
-  if (!ahead || state.over) return;
-  // How far ahead the mine is, along x to its near side, so an early warning reads as early.
-  const m = mines[ahead.index]!,
-    away = Math.max(0, Math.abs(m.x - shell.world.components.Position.x[handles.hull]!) - SUBMARINE.length / 2 - MINE_RADIUS);
-  mineTag.text = MINE_TAG_TEXT[ahead.side].replace('MINE', `MINE ${away.toFixed(0)} m`);
+  mineWarning.kind = '';
+  if ((!ahead && !bedWarn) || state.over) return;
+  const hullX = shell.world.components.Position.x[handles.hull]!;
+  let side: 'over' | 'under' = 'over';
+  if (ahead) {
+    // How far ahead the mine is, along x to its near side, so an early warning reads as early.
+    const m = mines[ahead.index]!,
+      away = Math.max(0, Math.abs(m.x - hullX) - SUBMARINE.length / 2 - MINE_RADIUS);
+    mineTag.text = MINE_TAG_TEXT[ahead.side].replace('MINE', `MINE ${away.toFixed(0)} m`);
+    side = ahead.side;
+    mineWarning.kind = 'mine';
+  } else if (bedWarn) {
+    // A ridge: how far ahead (to where the bow meets it); the floor below: just the word.
+    const away = Math.max(0, Math.abs(bedWarn.x - hullX));
+    mineTag.text = bedWarn.ridge ? BED_TAG_TEXT.ridge.replace('RIDGE', `RIDGE ${away.toFixed(0)} m`) : BED_TAG_TEXT.floor;
+    mineWarning.kind = 'seabed';
+  }
   const w = mineTag.width + 16,
     h = mineTag.height + 6;
-  const off = (SUBMARINE.height / 2) * k + (ahead.side === 'over' ? 1.6 * k + 6 : 6) + h / 2;
+  const off = (SUBMARINE.height / 2) * k + (side === 'over' ? 1.6 * k + 6 : 6) + h / 2;
   mineTag.x = Math.max(w / 2 + 4, Math.min(W - GAUGE_WIDTH - w / 2 - 4, hx));
-  mineTag.y = Math.max(h / 2 + 4, Math.min(H - h / 2 - 4, ahead.side === 'over' ? hy - off : hy + off));
+  mineTag.y = Math.max(h / 2 + 4, Math.min(H - h / 2 - 4, side === 'over' ? hy - off : hy + off));
   // Clear of the beacon arrow's badge at the view's edge (as last drawn): moved along x past it,
   // toward the view's middle (on a phone, with the boat near the left edge, the two overlapped).
   const [bx, by, bw, bh] = aim.badge as [number, number, number, number];
@@ -821,7 +871,7 @@ function placeMineTag(k: number, hx: number, hy: number, W: number, H: number): 
     const lw = label.width / 2 + 3,
       lh = label.height / 2 + 3;
     if (Math.abs(label.x - mineTag.x) < w / 2 + lw && Math.abs(label.y - mineTag.y) < h / 2 + lh)
-      label.y = ahead.side === 'over' ? Math.max(lh, mineTag.y - h / 2 - lh) : Math.min(H - lh, mineTag.y + h / 2 + lh);
+      label.y = side === 'over' ? Math.max(lh, mineTag.y - h / 2 - lh) : Math.min(H - lh, mineTag.y + h / 2 + lh);
   }
 }
 /**
@@ -831,19 +881,21 @@ function placeMineTag(k: number, hx: number, hy: number, W: number, H: number): 
  * last 2 s before contact.
  */
 function drawMineWarning(t: number, k: number, sx: (x: number) => number, sy: (y: number) => number, hxw: number, hyw: number): void {
-  if (!ahead || state.over) return;
-  const m = mines[ahead.index]!;
+  if ((!ahead && !bedWarn) || state.over) return;
+  // Toward the mine, or toward the seabed where the course meets it (orange: a ridge, not a mine).
+  const [tx, ty, time] = ahead ? [mines[ahead.index]!.x, mines[ahead.index]!.y, ahead.time] : [bedWarn!.x, bedWarn!.bed, bedWarn!.time];
+  const [red, pill] = ahead ? [0xff3b30, 0xc62a20] : [0xff8a3d, 0xb8561a];
   const hx = sx(hxw),
     hy = sy(hyw),
-    dx = sx(m.x) - hx,
-    dy = sy(m.y) - hy,
+    dx = sx(tx) - hx,
+    dy = sy(ty) - hy,
     d = Math.max(1e-6, Math.hypot(dx, dy));
   const ux = dx / d,
     uy = dy / d;
-  const pulse = 0.5 + 0.5 * Math.sin(2 * Math.PI * (ahead.time < 2 ? 4 : 2) * t);
-  // The arrow: from just off the hull toward the mine, short of its ring.
+  const pulse = 0.5 + 0.5 * Math.sin(2 * Math.PI * (time < 2 ? 4 : 2) * t);
+  // The arrow: from just off the hull toward the mine (short of its ring) or the bed.
   const r0 = Math.max((SUBMARINE.length / 2) * k * Math.abs(ux) + (SUBMARINE.height / 2) * k * Math.abs(uy) + 8, 28),
-    r1 = Math.max(r0 + 18, Math.min(d - (MINE_RADIUS + 2) * k, r0 + Math.max(40, 4 * k)));
+    r1 = Math.max(r0 + 18, Math.min(d - (ahead ? MINE_RADIUS + 2 : 1) * k, r0 + Math.max(40, 4 * k)));
   const tail: [number, number] = [hx + ux * r0, hy + uy * r0],
     tip: [number, number] = [hx + ux * r1, hy + uy * r1];
   const head = 11,
@@ -851,17 +903,17 @@ function drawMineWarning(t: number, k: number, sx: (x: number) => number, sy: (y
   const base: [number, number] = [tip[0] - ux * head, tip[1] - uy * head];
   for (const [width, color] of [
     [7, 0x1a0606],
-    [3.5, 0xff3b30],
+    [3.5, red],
   ] as const)
     g.moveTo(...tail)
       .lineTo(...base)
       .stroke({ color, width, alpha: 0.75 + 0.25 * pulse, cap: 'round' });
   g.poly([...tip, base[0] - uy * wide, base[1] + ux * wide, base[0] + uy * wide, base[1] - ux * wide])
-    .fill({ color: 0xff3b30, alpha: 0.8 + 0.2 * pulse })
+    .fill({ color: red, alpha: 0.8 + 0.2 * pulse })
     .stroke({ color: 0x1a0606, width: 2 });
   const [bx, by, bw, bh] = mineWarning.box as [number, number, number, number];
   g.roundRect(bx, by, bw, bh, bh / 2)
-    .fill({ color: 0xc62a20, alpha: 0.8 + 0.2 * pulse })
+    .fill({ color: pill, alpha: 0.8 + 0.2 * pulse })
     .stroke({ color: 0xffd0c8, width: 1.5, alpha: 0.9 });
   mineWarning.tip = tip;
   mineWarning.tail = tail;
@@ -1290,7 +1342,7 @@ function declutter(H: number): void {
     shownLabels.push({ name, box: [...box] });
   };
   const clear = (box: readonly number[]) => !taken.some((b) => overlaps(box, b, 2));
-  if (mineTag.visible && mineWarning.text) take('mine warning', mineWarning.box);
+  if (mineTag.visible && mineWarning.text) take(mineWarning.kind === 'seabed' ? 'seabed warning' : 'mine warning', mineWarning.box);
   if (pointer.visible && pointer.text) {
     take('pointer', [pointer.x - pointer.width / 2 - 7, pointer.y - pointer.height / 2 - 2, pointer.width + 14, pointer.height + 4]);
     if (aim.badge[2]! > 0) take('badge', aim.badge);
@@ -2187,6 +2239,12 @@ shell.expose({
    * for none) and its warning by the hull as last drawn: words, tag box, arrow tip and tail (px).
    */
   mineAhead: () => (ahead ? { ...ahead, ...mineWarning } : null),
+  /**
+   * The seabed on the boat's course (./seabed.ts bedAhead: seconds to it, where, the bed's height,
+   * whether a ridge; null for none, or while a mine is warned of) and its warning by the hull as last
+   * drawn: words, tag box, arrow tip and tail (px).
+   */
+  bedAhead: () => (bedWarn ? { ...bedWarn, ...mineWarning } : null),
   /** The course's mines: centre (x, y, m), anchor height (m) and whether each is still live. */
   mines: () => mines.map((m, i) => ({ ...m, live: mineLive[i]! })),
   /** The scene's handles: hull, sea, seabed, beacons (x, y pairs, m) and vertical thrusters. */

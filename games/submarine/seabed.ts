@@ -4,12 +4,16 @@
  * drawing or sound), so it is tested in node.
  *
  * A contact costs a hit only when the hull comes in faster than `SEABED.hitSpeed` along the bed's
- * normal, and at most one per `SEABED.cooldown`: a boat resting on the bed, or bumping along it after
- * an impact, is not hurt again.
+ * normal, and at most one per `SEABED.cooldown`, which every contact after a hit renews: a boat
+ * resting on the bed, or bumping along a ridge after an impact, is not hurt again until it has been
+ * clear of the bed for the cooldown (one contact, one hit).
+ *
+ * Also the warning of the seabed on the boat's course (`bedAhead`), told by the hull as the mines are.
  */
 
 import { applyImpulse, type PhysicsWorld } from '@bitphysics/physics';
 import { SUBMARINE, type SubmarineHandles, seabedHeight } from '@bitphysics/projects';
+import { HELM, holdFloor } from './helm';
 
 /** The seabed contact's settings. */
 export const SEABED = Object.freeze({
@@ -19,7 +23,7 @@ export const SEABED = Object.freeze({
   friction: 0.3,
   /** Approach speed along the bed's normal above which a contact damages the hull, m/s. */
   hitSpeed: 1.5,
-  /** After a hit, further contacts cost nothing for this long, s. */
+  /** After a hit, further contacts cost nothing until the hull has been off the bed this long, s. */
   cooldown: 2,
   /**
    * Speed at which the contact pushes a hull that has sunk into the bed back out, m/s per m of
@@ -35,7 +39,7 @@ export const SEABED = Object.freeze({
 export interface SeabedState {
   /** Whether the hull touched the bed last step. */
   touching: boolean;
-  /** Game time until which contacts cost no hit, s. */
+  /** Game time until which contacts cost no hit, s (a contact before it renews it). */
   spared: number;
   /**
    * Whether the bed stopped a dive: set when the hull touches it with Dive held; until Dive is let
@@ -64,7 +68,8 @@ export type SeabedContact = '' | 'touch' | 'hit';
  * larger), plus friction along the bed up to `friction` times that impulse. Updates `state` (a
  * contact while `diving`, Dive held, sets `state.diveStopped`) and says
  * whether the contact costs a hit (approach speed over `SEABED.hitSpeed`, and the game time `time`,
- * s, past `state.spared`; a hit sets `state.spared` to `time + SEABED.cooldown`). On a contact,
+ * s, past `state.spared`; a hit sets `state.spared` to `time + SEABED.cooldown`, and so does any
+ * contact while it is spared, so bumping on along the bed after a hit costs nothing). On a contact,
  * `at` (if given) is set to the point of the hull that is deepest in the bed (bow, stern or keel
  * centre; x, y, m), where the hull struck it.
  */
@@ -127,9 +132,101 @@ export function touchSeabed(
     const jt = -Math.sign(vt) * Math.min(m * Math.abs(vt), SEABED.friction * jn);
     applyImpulse(world, e, [jn * nx + jt * tx, jn * ny + jt * ty]);
   }
-  if (-vn > SEABED.hitSpeed && time >= state.spared) {
+  if (time < state.spared) {
+    // Still the contact that cost the last hit (or one within the cooldown of it): it costs none.
+    state.spared = Math.max(state.spared, time + SEABED.cooldown);
+    return 'touch';
+  }
+  if (-vn > SEABED.hitSpeed) {
     state.spared = time + SEABED.cooldown;
     return 'hit';
   }
   return 'touch';
+}
+
+/** How far ahead the seabed warning looks along the boat's course, s (`bedAhead`): as far as a held depth looks (HELM.bedLookAhead). */
+export const BED_WARN_TIME = HELM.bedLookAhead;
+/** The seabed warning's room under the keel, m: a course that takes the keel nearer the bed than this is warned of. */
+export const BED_WARN_MARGIN = 0.5;
+
+/**
+ * How far ahead the warning looks along a course held on at its vertical speed while Dive or Rise is held, s: a dive stops in about a second at the helm's brake, so 2 s tells of the floor
+ * in time without calling every dive toward a deep beacon a danger.
+ */
+export const BED_HEAVE_TIME = 2;
+
+/** The seabed on the boat's course (`bedAhead`). */
+export interface BedAhead {
+  /** In how long the course reaches the bed (with `BED_WARN_MARGIN` to spare), s. */
+  time: number;
+  /** Where: x, m, the hull's centre then. */
+  x: number;
+  /** The highest seabed under the hull there, m (y up). */
+  bed: number;
+  /** Whether the bed there stands 1 m or more over the bed under the hull now (a ridge ahead, not the floor below). */
+  ridge: boolean;
+}
+
+/**
+ * When the seabed comes within `BED_WARN_MARGIN` of the keel of a level hull on its course within
+ * `options.horizon` s (default `BED_WARN_TIME`), so the pilot is told while there is time to rise:
+ * from its centre at (x, y), m (y up), along x at its speed `vx` (m/s), and in depth on toward the
+ * ordered depth `holdY` (m; NaN: none; raised over the bed ahead as the helm raises it, ./helm.ts
+ * holdFloor) at up to the helm's climb or dive speed (`climb`, `dive`,
+ * m/s) and, while Dive or Rise is held (`options.heaving`, at the share `options.heave` of those
+ * speeds, in (0, 1], default 1, from the first moment) or no depth is ordered, on at its vertical
+ * speed `vy` (m/s; held Dive or Rise only for `BED_HEAVE_TIME` s): the first contact on either
+ * course. Null when the course is clear.
+ * @throws RangeError when x, y, vx, vy, climb or dive is not finite, `horizon` is not positive or
+ * `heave` is not in (0, 1].
+ */
+export function bedAhead(
+  x: number,
+  y: number,
+  vx: number,
+  vy: number,
+  holdY: number,
+  seabed: SubmarineHandles['seabed'],
+  climb: number,
+  dive: number,
+  options: { readonly horizon?: number; readonly heaving?: boolean; readonly heave?: number } = {},
+): BedAhead | null {
+  for (const [name, v] of [
+    ['x', x],
+    ['y', y],
+    ['vx', vx],
+    ['vy', vy],
+    ['climb', climb],
+    ['dive', dive],
+  ] as const)
+    if (!Number.isFinite(v)) throw new RangeError(`bedAhead: ${name} must be finite, got ${v}`);
+  const horizon = options.horizon ?? BED_WARN_TIME;
+  if (!(horizon > 0)) throw new RangeError(`bedAhead: options.horizon must be > 0 s, got ${horizon}`);
+  const share = options.heave ?? 1;
+  if (!(share > 0 && share <= 1)) throw new RangeError(`bedAhead: options.heave must be in (0, 1], got ${share}`);
+  const L = SUBMARINE.length / 2,
+    H = SUBMARINE.height / 2;
+  const bedUnder = (cx: number): number => Math.max(seabedHeight(seabed, cx - L), seabedHeight(seabed, cx), seabedHeight(seabed, cx + L));
+  const now = bedUnder(x);
+  const toOrder = !Number.isNaN(holdY),
+    onAsGoing = options.heaving === true || !toOrder;
+  const dt = 0.05;
+  for (let t = dt; t <= horizon + 1e-9; t += dt) {
+    const cx = x + vx * t,
+      bed = bedUnder(cx);
+    let hit = false;
+    // Toward the order, which the helm raises over the bed ahead as it goes (./helm.ts holdFloor).
+    if (toOrder) {
+      const order = Math.max(holdY, holdFloor(seabed, cx, vx));
+      hit = y + Math.max(-dive * t, Math.min(climb * t, order - y)) - H < bed + BED_WARN_MARGIN;
+    }
+    // Held Dive or Rise (within `BED_HEAVE_TIME`: a dive toward a deep beacon is not warned of the
+    // floor while there is room to stop over it), or no order: on as it goes.
+    if (!hit && onAsGoing && (!options.heaving || t <= BED_HEAVE_TIME)) {
+      const v = options.heaving ? (vy >= 0 ? Math.max(vy, share * climb) : Math.min(vy, -share * dive)) : vy;
+      hit = y + v * t - H < bed + BED_WARN_MARGIN;
+    }
+    if (hit) return { time: t, x: cx, bed, ridge: bed >= now + 1 };
+  }
+  return null;
 }

@@ -14,7 +14,7 @@
 
 import type { SubmarineHandles } from '@bitphysics/projects';
 import { SUBMARINE, seabedHeight } from '@bitphysics/projects';
-import { courseOrder, hullDistance, MINE_RADIUS, type Mine } from './mines';
+import { courseOrder, hullDistance, MINE_RADIUS, MINE_WARN_MARGIN, type Mine } from './mines';
 
 /** The trail's settings. */
 export const TRAIL = Object.freeze({
@@ -31,11 +31,16 @@ export const TRAIL = Object.freeze({
   slopes: [0.4, 0.7, 1.2, 3] as readonly number[],
   /**
    * The way keeps out of a box round each mine: this far from its centre along x (half the hull, the
-   * contact radius and a margin), m.
+   * contact radius, the mine warning's margin and 2 m more), m. A hull on the way is never warned of
+   * a mine (./mines.ts mineAhead warns within MINE_WARN_MARGIN of contact), so following the trail
+   * never leads into a warning too late to act on.
    */
-  mineHalfWidth: SUBMARINE.length / 2 + MINE_RADIUS + 2,
-  /** ... and this far across (half the hull's height, the contact radius and room for a pitched hull), m. */
-  mineHalfHeight: SUBMARINE.height / 2 + MINE_RADIUS + 3,
+  mineHalfWidth: SUBMARINE.length / 2 + MINE_RADIUS + MINE_WARN_MARGIN + 2,
+  /**
+   * ... and this far across (half the hull's height, the contact radius, the warning's margin and
+   * room for a pitched hull or a pilot a little off the way), m.
+   */
+  mineHalfHeight: SUBMARINE.height / 2 + MINE_RADIUS + MINE_WARN_MARGIN + 3,
   /** The way keeps this far over the seabed, m (the hull's centre). */
   bedClearance: 6,
   /** The way keeps this far under the surface, m (the hull's centre). */
@@ -57,8 +62,9 @@ export interface Glow {
 
 /**
  * Whether a level hull running straight from (x0, y0) to (x1, y1), m, stays out of every mine's box
- * (`TRAIL.mineHalfWidth` less half the hull: the run is the hull's centre, the box allows for its
- * length) and at least half the bed's margin over the bed, sampled every metre.
+ * less 2 m along x and 1 m across (the grid's way keeps the whole box at its columns; a run between
+ * two glows may cut its corner by that much, still clear of the mine warning's reach) and at least
+ * half the bed's margin over the bed, sampled every metre.
  */
 function clearRun(x0: number, y0: number, x1: number, y1: number, seabed: SubmarineHandles['seabed'], mines: readonly Mine[]): boolean {
   const n = Math.max(1, Math.ceil(Math.hypot(x1 - x0, y1 - y0)));
@@ -66,7 +72,7 @@ function clearRun(x0: number, y0: number, x1: number, y1: number, seabed: Submar
     const x = x0 + ((x1 - x0) * i) / n,
       y = y0 + ((y1 - y0) * i) / n;
     if (y < seabedHeight(seabed, x) + TRAIL.bedClearance / 2) return false;
-    for (const m of mines) if (Math.abs(x - m.x) < TRAIL.mineHalfWidth - 2 && Math.abs(y - m.y) < TRAIL.mineHalfHeight - 2) return false;
+    for (const m of mines) if (Math.abs(x - m.x) < TRAIL.mineHalfWidth - 2 && Math.abs(y - m.y) < TRAIL.mineHalfHeight - 1) return false;
   }
   return true;
 }

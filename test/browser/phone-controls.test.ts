@@ -777,8 +777,11 @@ describe('phone controls', () => {
     await g.waitFor((s) => (window.game as unknown as Solar).mission().aim.speed > s + 0.75, speed);
     await g.waitFor(() => (window.game as unknown as Solar).mission().plan.hit, null);
     await g.waitFor(() => /tap Launch/.test(document.querySelector('[data-hud="hint"]')!.textContent ?? ''), null);
-    // The line leaves the verdict to the player before the launch: it reaches Mars's orbit, and the stars if it arrives.
-    expect(await g.page.locator('[data-hud="plan"]').textContent()).toMatch(/ → reaches Mars’s orbit · ★★★ if it arrives$/);
+    // The line leaves the verdict to the player before the launch: the path crosses Mars's orbit (is
+    // Mars there then?), and the stars if it arrives.
+    expect(await g.page.locator('[data-hud="plan"]').textContent()).toMatch(
+      / → crosses Mars’s orbit: is Mars there then\? · ★★★ if it arrives$/,
+    );
     // The buttons of every phase sit on one row, each at least 44 x 44 px, Wait in the same place (in
     // flight they took two rows, Hint alone on the second, and Wait moved under a held finger).
     const bar = () =>
@@ -816,6 +819,53 @@ describe('phone controls', () => {
     await g.page.getByRole('button', { name: 'abort the flight: back to the launch', exact: true }).tap();
     await g.waitFor(() => (window.game as unknown as Solar).mission().phase === 'aim', null);
     expect(await read(g, 'mission().aim.speed')).toBeGreaterThan(speed);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
+  it('solar system: the forecast’s tags ("Mars at arrival", "probe then") stay inside the phone’s view, apart from each other and from the names, wherever the aim puts them', async () => {
+    const g = await h.openGame('solar-system', { ...PHONE, query: { rate: 0 } });
+    type Solar = { mission(): { plan: { current: boolean } }; setAim(angle: number, speed: number): void };
+    type Box = { text: string; left: number; top: number; right: number; bottom: number };
+    const cross = (a: Box, b: Box) => a.left < b.right && b.left < a.right && a.top < b.bottom && b.top < a.bottom;
+    let tagged = 0;
+    for (const [angle, speed] of [
+      [0, 3],
+      [-30, 3],
+      [30, 3.2],
+      [-60, 4],
+      [60, 4],
+      [-100, 5],
+      [100, 5],
+      [180, 3],
+    ] as const) {
+      await g.page.evaluate(([a, s]) => (window.game as unknown as Solar).setAim(a, s), [angle, speed] as const);
+      await g.waitFor(() => (window.game as unknown as Solar).mission().plan.current, null);
+      await g.frames(3);
+      const r = await g.page.evaluate(() => {
+        const box = (el: HTMLElement) => {
+          const b = el.getBoundingClientRect();
+          return { text: el.textContent ?? '', left: b.left, top: b.top, right: b.right, bottom: b.bottom };
+        };
+        const shown = (sel: string) =>
+          [...document.querySelectorAll<HTMLElement>(sel)].filter((el) => el.style.display !== 'none').map(box);
+        const c = document.querySelector('canvas')!.getBoundingClientRect();
+        return { tags: shown('[data-tag]'), names: shown('[data-label]'), canvas: { top: c.top, bottom: c.bottom } };
+      });
+      const where = `aim ${angle} deg ${speed} km/s`;
+      for (const t of r.tags) {
+        expect(t.left, `${where}: ${t.text}`).toBeGreaterThanOrEqual(0);
+        expect(t.right, `${where}: ${t.text}`).toBeLessThanOrEqual(390);
+        expect(t.top, `${where}: ${t.text}`).toBeGreaterThanOrEqual(r.canvas.top);
+        expect(t.bottom, `${where}: ${t.text}`).toBeLessThanOrEqual(r.canvas.bottom);
+        for (const n of r.names) expect(cross(t, n), `${where}: ${t.text} on ${n.text}`).toBe(false);
+      }
+      if (r.tags.length === 2) {
+        tagged++;
+        expect(cross(r.tags[0]!, r.tags[1]!), `${where}: the two tags`).toBe(false);
+      }
+    }
+    expect(tagged).toBeGreaterThanOrEqual(4);
     expect(g.errors).toEqual([]);
     await g.close();
   });

@@ -79,7 +79,7 @@ describe('projects', () => {
     await g.press('h');
     await g.waitFor(() => /^A faster launch/.test(document.querySelector('[data-hud="hint"]')?.textContent ?? ''), null);
     // Paused (P), the aim still moves the forecast: up twice more. It arrives, but the line does not
-    // say so before the launch (the player judges from the map): it says the path reaches Mars's
+    // say so before the launch (the player judges from the map): it says the path crosses Mars's
     // orbit and the stars this speed earns if it arrives; the hint says what to look at.
     await g.press('p');
     for (let i = 0; i < 2; i++) await g.press('ArrowUp');
@@ -88,7 +88,9 @@ describe('projects', () => {
     expect(m1.aim.speed).toBeCloseTo(m0.aim.speed + 0.8, 9);
     expect(m1.plan.hit).toBe(true);
     const judged = (await g.page.locator('[data-hud="plan"]').textContent()) ?? '';
-    expect(judged).toMatch(/ → reaches Mars’s orbit · ★★★ if it arrives$/);
+    // Not a verdict (it read as one for a launch that missed): the path crosses the orbit, and the
+    // line asks whether Mars is there then.
+    expect(judged).toMatch(/ → crosses Mars’s orbit: is Mars there then\? · ★★★ if it arrives$/);
     expect(judged).not.toMatch(/✓|arrives at|points/);
     expect(await g.page.locator('[data-hud="plan"]').getAttribute('class')).toBe('ss-line judge');
     await g.waitFor(
@@ -125,6 +127,15 @@ describe('projects', () => {
     const before = await g.page.evaluate(() => (window.game as unknown as Solar).params.rate);
     await g.press(']');
     expect(await g.page.evaluate(() => (window.game as unknown as Solar).params.rate)).toBeGreaterThan(before);
+    // Time runs at the rate now, and the line says how fast; paused (P), it says paused, not the
+    // rate (it said "11 days a second" with nothing moving); P again and the rate is back.
+    const dateLine = () => g.page.locator('[data-hud="date"]').textContent();
+    await g.waitFor(() => /days a second/.test(document.querySelector('[data-hud="date"]')?.textContent ?? ''), null);
+    await g.press('p');
+    await g.waitFor(() => / · paused · /.test(document.querySelector('[data-hud="date"]')?.textContent ?? ''), null);
+    expect(await dateLine()).not.toMatch(/days a second/);
+    await g.press('p');
+    await g.waitFor(() => /days a second/.test(document.querySelector('[data-hud="date"]')?.textContent ?? ''), null);
     // Time waits again while aiming (the forecast is for the moment of the launch).
     await g.page.evaluate(() => (window.game as unknown as { setRate(days: number): void }).setRate(0));
     const errors = await g.page.evaluate(() => (window.game as unknown as { errors(): Record<string, number> }).errors());

@@ -1022,4 +1022,71 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     expect(g.errors).toEqual([]);
     await g.close();
   }, 180_000);
+
+  it('a ridge on the course is told by the hull while there is time to rise: an orange tag saying how far, an arrow to the bed', async () => {
+    const g = await h.openGame('submarine', { viewport, touch, query: { waves: 0 } });
+    type B = Sub & {
+      step(): void;
+      labels(): { name: string; box: number[] }[];
+      bedAhead(): { time: number; x: number; bed: number; ridge: boolean; kind: string; text: string; box: number[]; tip: number[] } | null;
+    };
+    // Paused: the hull put level 5 m over the bed 25 m short of the place within 400 m of the start
+    // where the bed rises most over the next 40 m, at 12 m/s ahead and climbing 0.5 m/s (braking, no
+    // depth ordered: the course runs on level into the ridge); one step.
+    const r = await g.page.evaluate(() => {
+      const w = window.game as unknown as B;
+      w.paused = true;
+      const bed = w.handles().seabed;
+      const at = (x: number) => {
+        const u = (x - bed.x0) / bed.dx,
+          i = Math.max(0, Math.min(bed.y.length - 2, Math.floor(u)));
+        return bed.y[i]! + (u - i) * (bed.y[i + 1]! - bed.y[i]!);
+      };
+      let best = 0,
+        ridgeX = 0;
+      for (let x = 40; x <= 400; x += 2) {
+        let top = -Infinity;
+        for (let d = 10; d <= 40; d++) top = Math.max(top, at(x + d));
+        if (top - at(x) > best) [best, ridgeX] = [top - at(x), x];
+      }
+      const c = w.world.components,
+        e = w.hull(),
+        x = ridgeX - 25;
+      c.Position.x[e] = x;
+      c.Position.y[e] = Math.max(at(x - 6), at(x), at(x + 6)) + 1.5 + 5;
+      c.Velocity.x[e] = 12;
+      c.Velocity.y[e] = 0.5;
+      c.Angle.value[e] = 0;
+      w.state.holdY = Number.NaN;
+      w.state.mode = 'braking';
+      w.step();
+      return { rise: best, x };
+    });
+    expect(r.rise).toBeGreaterThan(8);
+    const warned = await g.waitFor(() => {
+      const w = window.game as unknown as B;
+      const b = w.bedAhead();
+      return b && b.box[2]! > 0 && w.labels().some((l) => l.name === 'seabed warning')
+        ? { ...b, cam: w.camera(), labels: w.labels() }
+        : null;
+    }, null);
+    expect(warned.ridge).toBe(true);
+    expect(warned.kind).toBe('seabed');
+    expect(warned.text).toMatch(/^⚠ RIDGE \d+ m: rise ▲$/);
+    // In time: more than a second's reaction before the course meets it.
+    expect(warned.time).toBeGreaterThan(1.5);
+    // The tag inside the view, clear of every other word over the scene.
+    const [bx, by, bw, bh] = warned.box as [number, number, number, number];
+    expect(bx).toBeGreaterThanOrEqual(0);
+    expect(by).toBeGreaterThanOrEqual(0);
+    expect(bx + bw).toBeLessThanOrEqual(warned.cam.width);
+    expect(by + bh).toBeLessThanOrEqual(warned.cam.height);
+    const cross = (a: number[], b: number[]) =>
+      a[0]! < b[0]! + b[2]! && b[0]! < a[0]! + a[2]! && a[1]! < b[1]! + b[3]! && b[1]! < a[1]! + a[3]!;
+    for (const l of warned.labels) if (l.name !== 'seabed warning') expect(cross(l.box, warned.box), l.name).toBe(false);
+    // The arrow points ahead (right) and down-range toward the ridge.
+    expect(warned.tip[0]!).toBeGreaterThan(warned.cam.width / 2 - 10);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  }, 180_000);
 });

@@ -10,7 +10,7 @@
 import { createPhysicsWorld, type PhysicsWorld, setTimeStep, setVelocity, slotOf, step } from '@bitphysics/physics';
 import { type SolarSystemHandles, solarSystem } from '@bitphysics/projects';
 import { describe, expect, test } from 'vitest';
-import { adviseAim, adviseBurn, SPEED_STEP, TURN_STEP, TUTORIAL_SHORTFALL, tutorialAim } from '../../games/solar-system/advice';
+import { adviseAim, adviseBurn, SPEED_STEP, startAim, TURN_STEP, TUTORIAL_SHORTFALL, tutorialAim } from '../../games/solar-system/advice';
 import { COMPRESSION_LENGTH, displayRadius, fromDisplay, toDisplay, trueRadius } from '../../games/solar-system/distance-scale';
 import { forecastCourse, forecastLaunch } from '../../games/solar-system/forecast';
 import { keplerState } from '../../games/solar-system/kepler';
@@ -251,6 +251,46 @@ describe('missions', () => {
     expect(forecastLaunch(world, handles, m, named, 1 / 24).outcome).toBe('arrived');
     expect(back.presses).toBe(Math.abs(back.turn) / TURN_STEP + Math.round(Math.abs(back.speed) / SPEED_STEP));
   });
+
+  test('missions 2 on start short of the target’s orbit: the starting aim arrives at no launch date, where the Hohmann aim won at Venus’s window', () => {
+    const { world, handles } = solarWorld(6);
+    const mu = world.laws.gravitationalConstant * world.components.Mass.value[slotOf(handles.bodies.Sun)]!;
+    const r = (body: number) => {
+      const s = heliocentricState(world, handles, body);
+      return Math.hypot(s[0]!, s[1]!, s[2]!);
+    };
+    for (const m of MISSIONS.slice(1)) {
+      const aim = startAim(world, handles, m, 1 / 24);
+      const v = hohmannSpeed(r(handles.bodies.Earth), r(handles.bodies[m.target]), mu);
+      expect(aim.angle, m.target).toBe(v >= 0 ? 0 : 180);
+      expect(aim.speed, m.target).toBeLessThanOrEqual(Math.abs(v) - TUTORIAL_SHORTFALL + 1e-9);
+      // Its path turns back short of the target's orbit (less the ring): the line reads "goes out
+      // only to" ("falls in only to"), and no wait makes it arrive.
+      const f = forecastLaunch(world, handles, m, aim, 1 / 24);
+      expect(f.outcome, m.target).not.toBe('arrived');
+      if (v >= 0) expect(f.farthest, m.target).toBeLessThan(r(handles.bodies[m.target]) - m.zone);
+      else expect(f.nearest, m.target).toBeGreaterThan(r(handles.bodies[m.target]) + m.zone);
+    }
+    // Venus over a synodic period (584 days), every 16 days (forecasts in 6 hour steps): the old
+    // start (against the Earth's motion at the round Hohmann speed, 2.5 km/s) arrives near the
+    // window, for three stars; the start aim never does.
+    const venus = MISSIONS.find((m) => m.target === 'Venus')!;
+    const start = startAim(world, handles, venus, 1 / 24);
+    const hohmann = {
+      angle: 180,
+      speed: Math.round(Math.abs(hohmannSpeed(r(handles.bodies.Earth), r(handles.bodies.Venus), mu)) * 10) / 10,
+    };
+    let oldWins = 0,
+      startArrives = 0;
+    for (let day = 0; day <= 584; day += 16) {
+      if (forecastLaunch(world, handles, venus, hohmann, 1 / 4).outcome === 'arrived') oldWins++;
+      if (forecastLaunch(world, handles, venus, start, 1 / 4).outcome === 'arrived') startArrives++;
+      for (let k = 0; k < 16 * 4; k++) step(world);
+    }
+    expect(starsFor(venus, hohmann.speed)).toBe(3);
+    expect(oldWins).toBeGreaterThan(0);
+    expect(startArrives).toBe(0);
+  }, 240_000);
 
   test('the burn hint: the short launch’s course misses; the hint names a burn in presses now, and after those burns the course arrives', () => {
     const { world, handles } = solarWorld(1);

@@ -41,6 +41,10 @@ function boat(y?: number): Boat {
       ? submarine.build(world, { seed: 1, count: 0 })
       : submarine.build(world, { seed: 1, count: 0, fill: SUBMARINE_NEUTRAL_FILL, position: [0, y] });
   world.components.FluidRegion.surface.fill(0);
+  // Open water: the seabed out of reach. These cases test the helm alone (no seabed contact is
+  // resolved); a held depth is raised over the seabed ahead (helm.ts holdFloor), tested in
+  // submarine-seabed.test.ts.
+  h.seabed.y.fill(-1000);
   const helm = createHelmState(y === undefined ? 0 : SUBMARINE_NEUTRAL_FILL);
   const b = { world, h, helm };
   run(b, {}, 2); // settle: afloat, or holding the hover depth

@@ -1,14 +1,16 @@
 /**
  * The hull on the seabed (games/submarine/seabed.ts), headless with the helm on a calm sea: a dive
  * into the bed at speed costs one hit, resting on it (Dive still held, or let go) costs nothing
- * more, a slow landing costs nothing, and the hull neither sinks into the bed nor is thrown off it.
+ * more, a slow landing costs nothing, and the hull neither sinks into the bed nor is thrown off it;
+ * a held depth rises over a ridge instead of driving into it, one contact costs one hit, and the
+ * seabed warning comes in time to rise.
  */
 
 import { createPhysicsWorld, type PhysicsWorld, step } from '@bitphysics/physics';
 import { SUBMARINE, SUBMARINE_NEUTRAL_FILL, type SubmarineHandles, seabedHeight, submarine } from '@bitphysics/projects';
 import { describe, expect, it } from 'vitest';
-import { createHelmState, HELM, type HelmInput, type HelmState, NO_INPUT, steer } from '../../games/submarine/helm';
-import { SEABED, type SeabedState, seabedInput, touchSeabed } from '../../games/submarine/seabed';
+import { createHelmState, HELM, type HelmInput, type HelmState, holdFloor, NO_INPUT, steer } from '../../games/submarine/helm';
+import { BED_WARN_TIME, bedAhead, SEABED, type SeabedState, seabedInput, touchSeabed } from '../../games/submarine/seabed';
 
 interface Boat {
   world: PhysicsWorld;
@@ -123,5 +125,79 @@ describe('submarine on the seabed', () => {
     const after = c.Velocity.y[b.h.hull]!;
     expect(after).toBeGreaterThan(0);
     expect(after).toBeLessThan(-before * SEABED.restitution * 1.35);
+  });
+
+  /** The place on seed 1's bed within 300 m of the start where it rises most over the next 40 m: x (m) and the rise (m). */
+  function steepestRise(): [number, number] {
+    const probe = submarine.build(createPhysicsWorld(submarine.worldOptions()), { seed: 1, count: 0 });
+    let rise = 0,
+      at = 0;
+    for (let x = -300; x <= 300; x += 2) {
+      let top = -Infinity;
+      for (let d = 10; d <= 40; d += 1) top = Math.max(top, seabedHeight(probe.seabed, x + d));
+      const r = top - seabedHeight(probe.seabed, x);
+      if (r > rise) [rise, at] = [r, x];
+    }
+    return [at, rise];
+  }
+
+  it('a depth held at full ahead toward a ridge that rises over it: the order is raised over the ridge, no contact', () => {
+    const [at, rise] = steepestRise();
+    // The bed rises by much more than the keel's room over it: held level, the hull would run into it.
+    expect(rise).toBeGreaterThan(10);
+    const b = boat(3, at - 60);
+    const c = b.world.components;
+    run(b, {}, 0.5); // let go: the helm holds the depth it is at
+    expect(b.helm.mode).toBe('holding');
+    const held = b.helm.holdY;
+    run(b, { ahead: true }, 12);
+    expect(c.Position.x[b.h.hull]!).toBeGreaterThan(at + 40); // it went past the ridge
+    expect(b.touched).toBe(false);
+    expect(b.hits).toBe(0);
+    expect(b.helm.holdY).toBeGreaterThan(held + 5); // the order was raised, not the hull knocked up
+  });
+
+  it('one contact, one hit: bumping on along the bed after a hit costs none until it has been clear of it for the cooldown', () => {
+    const b = boat(0.5);
+    const c = b.world.components,
+      e = b.h.hull;
+    const x = c.Position.x[e]!,
+      bed = seabedHeight(b.h.seabed, x);
+    /** The hull's keel 0.2 m in the bed, coming in at 3 m/s (twice the hit speed), at game time t (s). */
+    const bump = (t: number) => {
+      c.Position.x[e] = x;
+      c.Position.y[e] = bed + SUBMARINE.height / 2 - 0.2;
+      c.Angle.value[e] = 0;
+      c.Velocity.x[e] = 0;
+      c.Velocity.y[e] = -2 * SEABED.hitSpeed;
+      return touchSeabed(b.world, b.h, b.bed, t);
+    };
+    expect(bump(10)).toBe('hit');
+    // Bumps 1.5 s apart, each within the cooldown of the one before: the same contact, no hit.
+    expect(bump(11.5)).toBe('touch');
+    expect(bump(13)).toBe('touch');
+    expect(bump(14.5)).toBe('touch');
+    // Clear of the bed for longer than the cooldown: a new contact, a new hit.
+    expect(bump(14.5 + SEABED.cooldown + 0.1)).toBe('hit');
+  });
+
+  it('the seabed warning: a level course toward a ridge is warned of in time to rise; a hovering boat and a held order over it are not', () => {
+    const [at] = steepestRise();
+    const probe = submarine.build(createPhysicsWorld(submarine.worldOptions()), { seed: 1, count: 0 });
+    const x = at - 20,
+      y = seabedHeight(probe.seabed, x) + SUBMARINE.height / 2 + 3;
+    // No order (steering by the nose), level at full ahead: the ridge is ahead within the horizon.
+    const w = bedAhead(x, y, 12.9, 0, Number.NaN, probe.seabed, HELM.climbSpeed, HELM.diveSpeed);
+    expect(w).not.toBeNull();
+    expect(w!.ridge).toBe(true);
+    expect(w!.time).toBeGreaterThan(1); // more than a reaction time to rise
+    expect(w!.time).toBeLessThanOrEqual(BED_WARN_TIME);
+    // Time enough to climb over it at the climb speed: the bed there is no higher than the climb in
+    // the time left after a second's reaction lifts the keel.
+    expect(w!.bed - (y - SUBMARINE.height / 2)).toBeLessThan(HELM.climbSpeed * (w!.time - 1) + 3);
+    // Still, or with the order raised over the ridge as the helm raises it: no warning.
+    expect(bedAhead(x, y, 0, 0, y, probe.seabed, HELM.climbSpeed, HELM.diveSpeed)).toBeNull();
+    expect(bedAhead(x, y, 12.9, 0, holdFloor(probe.seabed, x, 12.9) + 1, probe.seabed, HELM.climbSpeed, HELM.diveSpeed)).toBeNull();
+    expect(() => bedAhead(x, Number.NaN, 0, 0, y, probe.seabed, 8, 10)).toThrow(/bedAhead: y must be finite, got NaN/);
   });
 });
