@@ -171,7 +171,7 @@ test.each(Object.keys(SCENES))('scene %s: the same state to the bit as with ever
 });
 
 test('in a fresh process: threads > 1 without enableThreads() throws an Error that names it, and bundles no pool; boxes and joints step as with the ball rows installed, a 3D ball world as with the 3D rows', async () => {
-  // A fresh process, since the 3D rows' and the ball rows' tables (solver/rows-3d.ts, rows-balls.ts)
+  // A fresh process, since the 3D rows' and the ball rows' families (solver/row-families.ts)
   // and the pool maker are set for the whole process once installed. pyramid and joint-grid (no
   // ball) run before the ball rows exist, then with them installed: the same state to the bit. spheres-in-box (3D balls, no 3D shape or joint) runs first on the
   // rows' stand-ins, then again with install3D: the same state to the bit (stateHash).
@@ -184,7 +184,7 @@ test('in a fresh process: threads > 1 without enableThreads() throws an Error th
       `import { createPhysicsWorld, SCENES, stateHash, stepMany } from '@bitphysics/physics';`,
       `import { installBalls } from '${src}/collision/install-balls.ts';`,
       `import { install3D } from '${src}/collision/install-3d.ts';`,
-      `import { ballRows } from '${src}/solver/rows-balls.ts';`,
+      `import { rowFamilies } from '${src}/solver/row-families.ts';`,
       `try { createPhysicsWorld({ threads: 2 }); console.log('made'); } catch (e) { console.log((e as Error).message); }`,
       // Boxes and joints before any ball exists (the solver skips its ball rows), then with them installed.
       `const runWithout = (name: string, installed: boolean) => {`,
@@ -194,7 +194,7 @@ test('in a fresh process: threads > 1 without enableThreads() throws an Error th
       `  stepMany(world, 120);`,
       `  return stateHash(world);`,
       `};`,
-      `const boxes = [runWithout('pyramid', false), runWithout('joint-grid', false), ballRows() === null];`,
+      `const boxes = [runWithout('pyramid', false), runWithout('joint-grid', false), rowFamilies(2).balls === null];`,
       `const boxesAfter = [runWithout('pyramid', true), runWithout('joint-grid', true)];`,
       `console.log(boxes[2] && boxes[0] === boxesAfter[0] && boxes[1] === boxesAfter[1] ? 'same' : 'differ ' + boxes + ' ' + boxesAfter);`,
       `const scene = SCENES['spheres-in-box']!;`,

@@ -19,7 +19,7 @@ import {
   warmStartJoints,
 } from './joints/solver-2d.js';
 import { Rng } from './math/rng.js';
-import { setJointRows2D } from './solver/rows-joints-2d.js';
+import { setRowFamily } from './solver/row-families.js';
 import { createStages, STAGES } from './step/stages.js';
 import { makeThreadPool } from './threads/pool-maker.js';
 import { shareStores } from './threads/shared-stores.js';
@@ -52,8 +52,20 @@ import {
 } from './world/options.js';
 import { createWorldScratch } from './world/scratch.js';
 
-// The contact solver runs the 2D joints' stages through this table (solver/rows-joints-2d.ts).
-setJointRows2D({ jointsToSolve, gatherJointBodies, prepareJoints, warmStartJoints, integrateJointRotations, solveJoints, finishJoints });
+// The contact solver runs the 2D joints' stages as a row family (solver/row-families.ts).
+setRowFamily('joints2D', {
+  dimensions: 2,
+  pushesUnmarked: true,
+  toSolve: jointsToSolve,
+  gather: gatherJointBodies,
+  prepare: prepareJoints,
+  warmStart: warmStartJoints,
+  solve: (world, hs, useBias) => solveJoints(world, hs, useBias),
+  integrate: integrateJointRotations,
+  endSubstep: () => {},
+  restitution: () => {},
+  finish: finishJoints,
+});
 
 const KNOWN_OPTIONS = [
   'dimensions',

@@ -20,7 +20,7 @@ import { shapes3DOf } from '../shapes/store-3d.js';
 import { prepareManifolds3D } from '../solver/manifold-prepare-3d.js';
 import { finishManifolds3D, gatherManifold3DBodies, manifolds3DToSolve } from '../solver/manifold-rows-3d.js';
 import { applyManifold3DRestitution, solveManifolds3D, warmStartManifolds3D } from '../solver/manifold-solve-3d.js';
-import { setRows3D } from '../solver/rows-3d.js';
+import { setRowFamily } from '../solver/row-families.js';
 import { installSystem } from '../world/install.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { trustFiniteOutput } from '../world/trusted-systems.js';
@@ -37,20 +37,31 @@ let loaded = false;
 export function install3D(world: PhysicsWorld): void {
   if (!loaded) {
     loaded = true;
-    setRows3D({
-      joints3DToSolve,
-      gatherJoint3DBodies,
-      prepareJoints3D,
-      warmStartJoints3D,
-      solveJoints3D,
-      finishJoints3D,
-      manifolds3DToSolve,
-      gatherManifold3DBodies,
-      prepareManifolds3D,
-      finishManifolds3D,
-      warmStartManifolds3D,
-      solveManifolds3D,
-      applyManifold3DRestitution,
+    setRowFamily('joints3D', {
+      dimensions: 3,
+      pushesUnmarked: false,
+      toSolve: joints3DToSolve,
+      gather: gatherJoint3DBodies,
+      prepare: prepareJoints3D,
+      warmStart: warmStartJoints3D,
+      solve: (w, hs, useBias) => solveJoints3D(w, hs, useBias),
+      integrate: () => {},
+      endSubstep: () => {},
+      restitution: () => {},
+      finish: finishJoints3D,
+    });
+    setRowFamily('manifolds3D', {
+      dimensions: 3,
+      pushesUnmarked: false,
+      toSolve: manifolds3DToSolve,
+      gather: gatherManifold3DBodies,
+      prepare: (w) => prepareManifolds3D(w),
+      warmStart: warmStartManifolds3D,
+      solve: (w, hs, useBias) => solveManifolds3D(w, hs, useBias),
+      integrate: () => {},
+      endSubstep: () => {},
+      restitution: applyManifold3DRestitution,
+      finish: finishManifolds3D,
     });
     setIslands3D({
       withShape3DBodies,

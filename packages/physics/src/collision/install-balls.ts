@@ -17,7 +17,7 @@ import {
   storeBallRows,
   warmStartBallRows,
 } from '../solver/ball-rows.js';
-import { setBallRows } from '../solver/rows-balls.js';
+import { setRowFamily } from '../solver/row-families.js';
 import { installSystem } from '../world/install.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { trustFiniteOutput } from '../world/trusted-systems.js';
@@ -37,14 +37,22 @@ let loaded = false;
 export function installBalls(world: PhysicsWorld): void {
   if (!loaded) {
     loaded = true;
-    setBallRows({
-      prepare: prepareBallRows,
+    // The ball rows' stages read the step's contact buffer (solver/ball-rows.ts).
+    setRowFamily('balls', {
+      dimensions: 0,
+      pushesUnmarked: false,
+      toSolve: (w) => w.collision.contacts.count > 0,
+      // Their bodies are gathered first, from the contact buffer (solver/contact-solver.ts gatherBodies).
+      gather: (_w, count) => count,
+      prepare: (w) => prepareBallRows(w, w.collision.contacts),
+      warmStart: (w) => warmStartBallRows(w, w.collision.contacts),
+      solve: (w, _hs, useBias) => solveBallRows(w, w.collision.contacts, useBias),
+      integrate: () => {},
+      endSubstep: (w) => endBallSubstep(w.collision.contacts),
+      restitution: (w) => ballRestitution(w, w.collision.contacts),
+      finish: () => {},
       approach: approachBallRows,
       plan: planBallRows,
-      warmStart: warmStartBallRows,
-      solve: solveBallRows,
-      endSubstep: endBallSubstep,
-      restitution: ballRestitution,
       events: ballContactEvents,
       store: storeBallRows,
     });

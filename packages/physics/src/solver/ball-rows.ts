@@ -2,7 +2,7 @@
  * The ball contacts' rows of the contact solver (solver/contact-solver.ts): the rows between balls
  * (2D discs and 3D spheres), and between a ball and a segment or the boundary box. Each function here
  * is one of the solver's named stages for these rows; the solver calls them through the table of
- * solver/rows-balls.ts, which `installBalls` (collision/install-balls.ts) fills when a program first
+ * solver/row-families.ts, where `installBalls` (collision/install-balls.ts) puts them when a program first
  * makes a ball, so a program of shapes and joints only does not bring them into its bundle.
  *
  * Stages, in the solver's order: `prepareBallRows` (combined material, effective masses, tangent

@@ -37,38 +37,14 @@ import {
   storeManifoldImpulses,
   warmStartManifolds,
 } from './manifold-rows-2d.js';
-import {
-  applyManifold3DRestitution,
-  finishJoints3D,
-  finishManifolds3D,
-  gatherJoint3DBodies,
-  gatherManifold3DBodies,
-  joints3DToSolve,
-  manifolds3DToSolve,
-  prepareJoints3D,
-  prepareManifolds3D,
-  solveJoints3D,
-  solveManifolds3D,
-  warmStartJoints3D,
-  warmStartManifolds3D,
-} from './rows-3d.js';
-import { ballRows } from './rows-balls.js';
-import {
-  finishJoints,
-  gatherJointBodies,
-  integrateJointRotations,
-  jointsToSolve,
-  prepareJoints,
-  solveJoints,
-  warmStartJoints,
-} from './rows-joints-2d.js';
+import { type RowFamilies, type RowFamily, rowFamilies, setRowFamily } from './row-families.js';
 import { finishStage, gatherFillStage } from './stages-threads.js';
 
 /**
  * Collide stage, part 3: the contact solver, Box2D v3's "soft step" (Catto, "Solver2D", 2024; Box2D
  * v3.0 solver.c and contact_solver.c) with an impact stage before it, fitted to a pipeline where the
- * integrate stage has already run. Its named stages, in order (other solver rows, such as joints, add
- * their calls next to the contacts' in the stages marked *):
+ * integrate stage has already run. Its named stages, in order (each stage marked * runs over every row
+ * family, solver/row-families.ts: the joints', the ball contacts', the shape contacts', in FAMILY_ORDER):
  *
  * 1. `gatherBodies`: the moving bodies that have contacts go into a packed solver state (one row per
  *    body, kept apart from the components: Box2D's b2BodyState); this step's gravity is rewound from
@@ -82,15 +58,15 @@ import { finishStage, gatherFillStage } from './stages-threads.js';
  * 5. `solverSubsteps` times, with h_s = h / substeps:
  *    `integrateVelocities` (v += g h_s); `warmStart`*; `solve`* with soft bias (non-penetration, then
  *    Coulomb friction |lambda_t| <= mu lambda_n, mu_s while sticking); `integratePositions`
- *    (dx += v h_s); relax (`solve`* without bias, so push-out velocity does not survive as kinetic
+ *    (dx += v h_s), then `integrate`* (the rotation joints owe); relax (`solve`* without bias, so push-out velocity does not survive as kinetic
  *    energy; in 2D a frictionless row with one ball resting on another may hold the lower one, so one
  *    sweep clears a tall column: solver/support.ts). A row that applies an impulse to a body marks it (the `pushed` slot of its packed row);
- * 6. `applyRestitution`: contacts the impact stage did not resolve (still approaching after its
+ * 6. `restitution`*: contacts the impact stage did not resolve (still approaching after its
  *    passes, e.g. deep in a dense pile) bounce as a small LCP;
  * 7. `finishBodies`: velocities and positions (with the impact corrections) back to the components;
  *    a body no row pushed during the substeps was in free flight: its position gets -g h h_s / 2, which
  *    makes the substeps' sum of v_k h_s the exact parabola v0 h + g h^2 / 2 (as the integrate stage's);
- *    the impulses stored for the next step's warm start;
+ *    then `finish`*: the impulses stored for the next step's warm start, touch events;
  * 8. `containInBoundary`: a body the step's impulses sent through a wall of the boundary box that it
  *    had no contact with (a fast ball knocked sideways by another) is put back on the wall with its
  *    outward normal velocity reflected and scaled by the restitution, so nothing leaves the box; the
@@ -109,82 +85,76 @@ export function contactSolverSystem(world: PhysicsWorld): void {
   withScaledSubsteps(world, solveContacts);
 }
 
+/** The 2D shape contacts' rows (solver/manifold-prepare-2d.ts, solver/manifold-rows-2d.ts) as a row family. */
+const manifolds2D: RowFamily = {
+  dimensions: 2,
+  pushesUnmarked: false,
+  toSolve: (world) => world.collision.shapes.manifolds.count > 0,
+  gather: gatherManifoldBodies,
+  prepare: (world) => prepareManifolds(world),
+  warmStart: (world) => warmStartManifolds(world.collision),
+  // The substep's last pass over the manifolds also adds their impulses to the step's totals.
+  solve: (world, hs, useBias, last) => solveManifolds(world.collision, hs, useBias, last),
+  integrate: () => {},
+  // Without relax passes (whose last adds them), the substep's impulses are added to the step's totals here.
+  endSubstep: (world) => {
+    if (world.collision.settings.relaxIterations === 0) accumulateManifoldImpulses(world.collision);
+  },
+  restitution: (world) => {
+    applyManifoldRestitution(world);
+    storeManifoldImpulses(world.collision);
+  },
+  finish: (world) => finishManifolds(world),
+};
+setRowFamily('manifolds2D', manifolds2D);
+
 /** The contact solver stage at the step's `settings.solverSubsteps` (see contactSolverSystem). */
 function solveContacts(world: PhysicsWorld): void {
   const cs = world.collision;
   const buf = cs.contacts;
-  // The ball rows (solver/ball-rows.ts), null until the program makes a ball (solver/rows-balls.ts).
-  const balls = ballRows();
+  // The row families of this world's dimension (solver/row-families.ts), in the order every stage runs
+  // them; the ball rows (null until the program makes a ball) also have stages of their own.
+  const families = rowFamilies(world.dimensions);
+  const { list, balls } = families;
   cs.stats.maxOverlap = 0;
-  if (
-    !jointsToSolve(world) &&
-    buf.count === 0 &&
-    cs.shapes.manifolds.count === 0 &&
-    !manifolds3DToSolve(world) &&
-    !joints3DToSolve(world)
-  ) {
+  // Whether joints or shape contacts share the solve (each family is asked: the 2D joints' check also
+  // clears last step's break events).
+  let others = false;
+  for (const f of list) if (f !== balls && f.toSolve(world)) others = true;
+  if (!others && buf.count === 0) {
     if (balls !== null) {
       balls.events(world, buf, false);
       cs.contacts = balls.store(world, buf, false);
     }
-    finishManifolds(world);
-    if (world.dimensions === 3) finishManifolds3D(world);
+    for (const f of list) f.finish(world, world.h);
     endWokenContacts(world);
     return;
   }
-  gatherBodies(world, buf);
-  clearBodyImpacts(world);
-  balls?.prepare(world, buf);
-  prepareManifolds(world);
-  if (world.dimensions === 3) prepareManifolds3D(world);
-  const is2D = world.dimensions === 2;
-  const others = jointsToSolve(world) || cs.shapes.manifolds.count > 0;
   const st = cs.settings;
   const substeps = st.solverSubsteps;
   const hs = world.h / substeps;
+  gatherBodies(world, buf, families);
+  clearBodyImpacts(world);
+  for (const f of list) f.prepare(world, hs);
   // A threaded 2D world with only ball contacts solves them colour by colour on its threads
   // (solver/coloring.ts): then the substeps below do not run.
   const colored = balls?.approach(world, buf, others, hs) === true;
-  prepareJoints(world, hs);
-  prepareJoints3D(world, hs);
   balls?.plan(world, buf, colored, hs);
   for (let s = 0; s < (colored ? 0 : substeps); s++) {
     integrateVelocities(world, hs);
-    warmStartJoints(world);
-    warmStartJoints3D(world);
-    balls?.warmStart(world, buf);
-    if (is2D) warmStartManifolds(cs);
-    else warmStartManifolds3D(world);
-    for (let it = 0; it < st.solverIterations; it++) {
-      solveJoints(world, hs, true);
-      solveJoints3D(world, hs, true);
-      balls?.solve(world, buf, true);
-      if (is2D) solveManifolds(cs, hs, true);
-      else solveManifolds3D(world, hs, true);
-    }
+    for (const f of list) f.warmStart(world);
+    for (let it = 0; it < st.solverIterations; it++) for (const f of list) f.solve(world, hs, true, false);
     integratePositions(world, hs);
-    integrateJointRotations(world, hs);
+    for (const f of list) f.integrate(world, hs);
     for (let it = 0; it < st.relaxIterations; it++) {
-      solveJoints(world, hs, false);
-      solveJoints3D(world, hs, false);
-      balls?.solve(world, buf, false);
-      // The substep's last pass over the manifolds also adds their impulses to the step's totals.
-      if (is2D) solveManifolds(cs, hs, false, it === st.relaxIterations - 1);
-      else solveManifolds3D(world, hs, false);
+      const last = it === st.relaxIterations - 1;
+      for (const f of list) f.solve(world, hs, false, last);
     }
-    if (is2D && st.relaxIterations === 0) accumulateManifoldImpulses(cs);
-    balls?.endSubstep(buf);
+    for (const f of list) f.endSubstep(world);
   }
-  balls?.restitution(world, buf);
-  if (is2D) {
-    applyManifoldRestitution(world);
-    storeManifoldImpulses(cs);
-  } else applyManifold3DRestitution(world);
+  for (const f of list) f.restitution(world);
   finishBodies(world, buf);
-  finishManifolds(world);
-  if (world.dimensions === 3) finishManifolds3D(world);
-  finishJoints(world, hs);
-  finishJoints3D(world, hs);
+  for (const f of list) f.finish(world, hs);
   if (balls !== null) {
     balls.events(world, buf, true);
     // A threaded 2D world builds the warm-start table on a worker while the step finishes (solver/stages-threads.ts).
@@ -217,7 +187,7 @@ function stride(world: PhysicsWorld): number {
  * inertia) and its extra row (where the integrator put it, beyond x0 + v h; the rotation still owed),
  * and writes each contact's solver indices.
  */
-function gatherBodies(world: PhysicsWorld, buf: ContactBuffer): void {
+function gatherBodies(world: PhysicsWorld, buf: ContactBuffer, families: RowFamilies): void {
   const cs = world.collision;
   const n = buf.count;
   const mark = cs.solverMark,
@@ -260,10 +230,9 @@ function gatherBodies(world: PhysicsWorld, buf: ContactBuffer): void {
     IB[i] = index[b]!;
   }
   cs.solverBodies = list;
-  count = gatherManifoldBodies(world, count); // the shapes' manifolds join (solver/manifold-prepare-2d.ts)
-  if (world.dimensions === 3) count = gatherManifold3DBodies(world, count); // and the 3D shapes' (solver/manifold-rows-3d.ts)
-  if (world.dimensions === 3) count = gatherJoint3DBodies(world, count); // and the 3D joints' (joints/solver-3d.ts)
-  count = gatherJointBodies(world, count); // the joints' bodies join the contacts'
+  // Then the other families' bodies (the ball rows' gather adds none: theirs are the buffer's, above).
+  const rows = families.list;
+  for (const f of rows) count = f.gather(world, count);
   cs.solverBodyCount = count;
 
   const S = stride(world);
@@ -277,7 +246,8 @@ function gatherBodies(world: PhysicsWorld, buf: ContactBuffer): void {
   }
   cs.bodyState.fill(0, 0, S);
   // Joint rows push their bodies without marking them: with joints, no body counts as free flying.
-  const pushed = jointsToSolve(world) ? 1 : 0;
+  let pushed = 0;
+  for (const f of rows) if (f.pushesUnmarked && f.toSolve(world)) pushed = 1;
   // The fill is a range kernel, run on a 2D world's threads or inline (solver/stages-threads.ts).
   gatherFillStage(world, count, pushed);
 }

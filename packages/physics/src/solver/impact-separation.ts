@@ -15,8 +15,7 @@ import {
 } from './body-state-layout.js';
 import { contactState, sweep } from './impact-contact.js';
 import { impactScalars, impactScratch, markChanged, sweepIO } from './impact-state.js';
-import { joints3DToSolve } from './rows-3d.js';
-import { jointsToSolve } from './rows-joints-2d.js';
+import { jointsToSolve } from './row-families.js';
 
 /**
  * The impact stage's separation pass (solver/impacts.ts): after the impacts, which bodies the soft
@@ -68,7 +67,7 @@ export function separateImpactedBodies(world: PhysicsWorld, buf: ContactBuffer, 
   // substeps' look-ahead a substep before its hit, across the gap, and the chain behind it was lost.
   // Without joints the band is not widened: in a pile many rows fall in it (mostly balls falling onto
   // the floor), and taking them from the substeps changed how an 800-ball pile settles.
-  const within = jointsToSolve(world) || joints3DToSolve(world) ? 1.1 : 1;
+  const within = jointsToSolve(world) ? 1.1 : 1;
   // First, while BI_TIME still holds each body's latest impact time: which rows stay active, into
   // the spent order array (1 active, 0 not). BI_ALONE of a body's row: 1 clean, 0 not (the static world
   // is clean), marked here as rows are found active; the corrections of unclean bodies are dropped
