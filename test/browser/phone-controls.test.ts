@@ -9,6 +9,7 @@
 import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { pausedShade, resumedShade } from './dom-pause';
+import { afterRelease, recordBank } from './flight-bank';
 import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
 import { checkLayout } from './layout-check';
 import { cubeState, pageOf, stillPageOf, waitCubeAtRest } from './rotating-cube';
@@ -190,16 +191,7 @@ describe('phone controls', () => {
     type Fly = { world: { time: number }; instruments(): { roll: number }; throttleNote(): string };
     await g.waitFor(() => (window.game as unknown as { pathMarker(): { visible: boolean } }).pathMarker().visible || null, null);
     // Every frame's bank, with the game time.
-    await g.page.evaluate(() => {
-      const w = window.game as unknown as Fly;
-      const log: [number, number][] = [];
-      (window as unknown as { bankLog: typeof log }).bankLog = log;
-      const rec = () => {
-        log.push([w.world.time, w.instruments().roll]);
-        requestAnimationFrame(rec);
-      };
-      requestAnimationFrame(rec);
-    });
+    await recordBank(g);
     // A real finger pushes the stick left until the aircraft banks 30 degrees, then lifts: from the
     // lift the wings roll at most 4 degrees further and come level within 1.3 s of game time.
     const stick = (await g.page.getByRole('slider', { name: 'stick: bank and climb' }).boundingBox())!;
@@ -212,21 +204,9 @@ describe('phone controls', () => {
     await g.waitFor(() => (window.game as unknown as Fly).instruments().roll < -30 || null, null, 60_000);
     await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
     await cdp.detach();
-    const release = await g.page.evaluate(() => {
-      const w = window.game as unknown as Fly;
-      return { time: w.world.time, bank: w.instruments().roll };
-    });
-    const levelAt = await g.waitFor(
-      (t0) => (window as unknown as { bankLog: [number, number][] }).bankLog.find(([t, b]) => t > t0 && Math.abs(b) < 3)?.[0] ?? null,
-      release.time,
-      60_000,
-    );
-    const after = await g.page.evaluate(
-      ([t0, t1]) => (window as unknown as { bankLog: [number, number][] }).bankLog.filter(([t]) => t >= t0! && t <= t1!).map(([, b]) => b),
-      [release.time, levelAt],
-    );
-    expect(Math.max(...after.map(Math.abs)) - Math.abs(release.bank)).toBeLessThan(4);
-    expect(levelAt - release.time).toBeLessThan(1.3);
+    const { rolledOn, levelIn } = await afterRelease(g);
+    expect(rolledOn).toBeLessThan(4);
+    expect(levelIn).toBeLessThan(1.3);
     // A tap of Faster: the note and the readout, read in one frame, give the same engine figure.
     const faster = (await g.page.getByRole('button', { name: 'faster', exact: true }).boundingBox())!;
     await g.page.touchscreen.tap(faster.x + faster.width / 2, faster.y + faster.height / 2);

@@ -9,6 +9,7 @@
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { lowContrastText } from './contrast-check';
 import { pausedShade, resumedShade } from './dom-pause';
+import { afterRelease, recordBank } from './flight-bank';
 import { Harness } from './harness';
 import { checkPageContract } from './page-contract';
 
@@ -1154,34 +1155,13 @@ describe('projects', () => {
     // ← held until the aircraft banks 30 degrees, then let go: from the release the wings roll at
     // most 4 degrees further (they rolled on 8 degrees when the bank asked for stayed ahead of the
     // aircraft's) and come level within 1.3 s of game time. Every frame's bank is recorded.
-    await g.page.evaluate(() => {
-      const w = window.game as unknown as Flight;
-      const log: [number, number][] = [];
-      (window as unknown as { bankLog: typeof log }).bankLog = log;
-      const rec = () => {
-        log.push([w.world.time, w.instruments().roll]);
-        requestAnimationFrame(rec);
-      };
-      requestAnimationFrame(rec);
-    });
+    await recordBank(g);
     await g.page.keyboard.down('ArrowLeft');
     await g.waitFor(() => (window.game as unknown as Flight).instruments().roll < -30 || null, null, 60_000);
     await g.page.keyboard.up('ArrowLeft');
-    const release = await g.page.evaluate(() => {
-      const w = window.game as unknown as Flight;
-      return { time: w.world.time, bank: w.instruments().roll };
-    });
-    const levelAt = await g.waitFor(
-      (t0) => (window as unknown as { bankLog: [number, number][] }).bankLog.find(([t, b]) => t > t0 && Math.abs(b) < 3)?.[0] ?? null,
-      release.time,
-      60_000,
-    );
-    const after = await g.page.evaluate(
-      ([t0, t1]) => (window as unknown as { bankLog: [number, number][] }).bankLog.filter(([t]) => t >= t0! && t <= t1!).map(([, b]) => b),
-      [release.time, levelAt],
-    );
-    expect(Math.max(...after.map(Math.abs)) - Math.abs(release.bank)).toBeLessThan(4);
-    expect(levelAt - release.time).toBeLessThan(1.3);
+    const { rolledOn, levelIn } = await afterRelease(g);
+    expect(rolledOn).toBeLessThan(4);
+    expect(levelIn).toBeLessThan(1.3);
     expect(g.errors).toEqual([]);
     await g.close();
   });
