@@ -42,7 +42,7 @@ export const FRICTION_STRIDE = 12;
 export const FRICTION_INV_STRIDE = 18;
 
 // A manifold's head in `solveHead` (at HEAD_STRIDE i): the numbers the solve reads once per manifold and
-// pass, side by side (copied from the manifold buffer's columns by prepareManifolds3D).
+// pass, side by side (written by prepareManifolds3D).
 /** The normal n, x (unit). */
 export const HEAD_NX = 0;
 /** n, y. */
