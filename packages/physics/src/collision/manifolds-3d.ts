@@ -1,3 +1,4 @@
+import { ANCHOR_STRIDE } from '../solver/manifold-layout-3d.js';
 import { registerExternalWorldState } from '../world/external-state.js';
 import type { PhysicsWorld } from '../world/options.js';
 
@@ -32,13 +33,12 @@ export interface Manifold3DBuffer {
   t1z: Float64Array;
   friction: Float64Array;
   restitution: Float64Array;
-  /** Per point (4 i + k): anchors from the centres of mass (m, world), separation at the step's start (m), feature id. */
-  rax: Float64Array;
-  ray: Float64Array;
-  raz: Float64Array;
-  rbx: Float64Array;
-  rby: Float64Array;
-  rbz: Float64Array;
+  /**
+   * Per point (4 i + k): anchors from the centres of mass (m, world), r_A then r_B side by side
+   * (solver/manifold-layout-3d.ts ANCHOR_*, ANCHOR_STRIDE numbers a point); separation at the step's
+   * start (m); feature id.
+   */
+  anchors: Float64Array;
   sep: Float64Array;
   id: Float64Array;
   /**
@@ -94,12 +94,7 @@ function createBuffer(n: number): Manifold3DBuffer {
     t1z: f(n),
     friction: f(n),
     restitution: f(n),
-    rax: f(p),
-    ray: f(p),
-    raz: f(p),
-    rbx: f(p),
-    rby: f(p),
-    rbz: f(p),
+    anchors: f(ANCHOR_STRIDE * p),
     sep: f(p),
     id: f(p),
     ln: f(p),

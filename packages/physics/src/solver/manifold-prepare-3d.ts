@@ -26,6 +26,13 @@ import {
   II3_ZZ,
 } from './body-state-layout.js';
 import {
+  ANCHOR_AX,
+  ANCHOR_AY,
+  ANCHOR_AZ,
+  ANCHOR_BX,
+  ANCHOR_BY,
+  ANCHOR_BZ,
+  ANCHOR_STRIDE,
   FRICTION_INV_STRIDE,
   FRICTION_STRIDE,
   FRICTION_T1,
@@ -109,7 +116,8 @@ export function prepareManifolds3D(world: PhysicsWorld): void {
     st.frictionInv = new Float32Array(FRICTION_INV_STRIDE * rows);
     st.solveHead = new Float64Array(HEAD_STRIDE * rows);
   }
-  const J = st.jacobians,
+  const RA = buf.anchors,
+    J = st.jacobians,
     JI = st.jacobiansInv;
   const ox = c.PreviousPosition.x,
     oy = c.PreviousPosition.y,
@@ -152,12 +160,13 @@ export function prepareManifolds3D(world: PhysicsWorld): void {
       const q = 4 * i + k,
         o = JAC_STRIDE * q;
       buf.sep[q] = buf.sep[q]! + shift;
-      const rax = buf.rax[q]!,
-        ray = buf.ray[q]!,
-        raz = buf.raz[q]!,
-        rbx = buf.rbx[q]!,
-        rby = buf.rby[q]!,
-        rbz = buf.rbz[q]!;
+      const r = ANCHOR_STRIDE * q;
+      const rax = RA[r + ANCHOR_AX]!,
+        ray = RA[r + ANCHOR_AY]!,
+        raz = RA[r + ANCHOR_AZ]!,
+        rbx = RA[r + ANCHOR_BX]!,
+        rby = RA[r + ANCHOR_BY]!,
+        rbz = RA[r + ANCHOR_BZ]!;
       if (buf.sep[q]! < minSep) minSep = buf.sep[q]!;
       reachA = Math.max(reachA, rax * rax + ray * ray + raz * raz);
       reachB = Math.max(reachB, rbx * rbx + rby * rby + rbz * rbz);
@@ -216,6 +225,7 @@ export function prepareManifolds3D(world: PhysicsWorld): void {
  */
 function prepareFriction3D(st: Contact3DState, i: number, iso: boolean, mA: number, mB: number, ta: number, tb: number): void {
   const buf = st.current,
+    RA = buf.anchors,
     T = st.invInertia,
     F = st.frictionJacobians,
     FV = st.frictionInv;
@@ -232,12 +242,13 @@ function prepareFriction3D(st: Contact3DState, i: number, iso: boolean, mA: numb
     cbz = 0;
   for (let k = 0; k < m; k++) {
     const q = 4 * i + k;
-    cax += buf.rax[q]!;
-    cay += buf.ray[q]!;
-    caz += buf.raz[q]!;
-    cbx += buf.rbx[q]!;
-    cby += buf.rby[q]!;
-    cbz += buf.rbz[q]!;
+    const r = ANCHOR_STRIDE * q;
+    cax += RA[r + ANCHOR_AX]!;
+    cay += RA[r + ANCHOR_AY]!;
+    caz += RA[r + ANCHOR_AZ]!;
+    cbx += RA[r + ANCHOR_BX]!;
+    cby += RA[r + ANCHOR_BY]!;
+    cbz += RA[r + ANCHOR_BZ]!;
   }
   const iw = 1 / m;
   cax *= iw;
@@ -250,9 +261,10 @@ function prepareFriction3D(st: Contact3DState, i: number, iso: boolean, mA: numb
   let arm = 0;
   for (let k = 0; k < m; k++) {
     const q = 4 * i + k;
-    const dx = buf.rax[q]! - cax,
-      dy = buf.ray[q]! - cay,
-      dz = buf.raz[q]! - caz,
+    const r = ANCHOR_STRIDE * q;
+    const dx = RA[r + ANCHOR_AX]! - cax,
+      dy = RA[r + ANCHOR_AY]! - cay,
+      dz = RA[r + ANCHOR_AZ]! - caz,
       dn = dx * nx + dy * ny + dz * nz;
     arm += Math.sqrt(Math.max(dx * dx + dy * dy + dz * dz - dn * dn, 0));
   }
