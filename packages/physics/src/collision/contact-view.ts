@@ -4,6 +4,7 @@
  * shape manifolds (collision/manifolds-3d.ts), handed out as one kind of view.
  */
 
+import { ANCHOR_BX, ANCHOR_BY, ANCHOR_BZ, ANCHOR_STRIDE } from '../solver/manifold-layout-3d.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { ContactKind } from './contacts.js';
 import { contact3DStateOf } from './manifolds-3d.js';
@@ -157,10 +158,17 @@ interface ManifoldColumns {
   points: ArrayLike<number>;
   /** Point slots a manifold (point p of manifold i is at stride i + p). */
   stride: number;
-  /** Point anchors from body B's centre of mass, m; rz null in 2D. */
+  /**
+   * Point anchors from body B's centre of mass, m; rz null in 2D. Point slot q's x is at rx[rStride q + rx0]
+   * (y, z likewise: columns have rStride 1 and offsets 0; an interleaved array is passed as all three).
+   */
   rx: ArrayLike<number>;
   ry: ArrayLike<number>;
   rz: ArrayLike<number> | null;
+  rStride: number;
+  rx0: number;
+  ry0: number;
+  rz0: number;
   /** Normal impulse of each point, N s. */
   impulse: ArrayLike<number>;
   /** Separation of each point, m. */
@@ -185,10 +193,11 @@ function shapeContacts(world: PhysicsWorld, buf: ManifoldColumns, fn: (contact: 
     view.ny = buf.ny[i]!;
     if (nz !== null) view.nz = nz[i]!;
     for (let p = 0, m = buf.points[i]!; p < m; p++) {
-      const q = buf.stride * i + p;
-      view.x = P.x[b]! + buf.rx[q]!;
-      view.y = P.y[b]! + buf.ry[q]!;
-      if (rz !== null) view.z = P.z[b]! + rz[q]!;
+      const q = buf.stride * i + p,
+        r = buf.rStride * q;
+      view.x = P.x[b]! + buf.rx[r + buf.rx0]!;
+      view.y = P.y[b]! + buf.ry[r + buf.ry0]!;
+      if (rz !== null) view.z = P.z[b]! + rz[r + buf.rz0]!;
       view.impulse = buf.impulse[q]!;
       view.separation = buf.separation[q]!;
       view.kind = ContactKind.Shape;
@@ -206,7 +215,20 @@ function shapeContacts2D(world: PhysicsWorld, fn: (contact: Readonly<ContactView
   const b = st.previous;
   return shapeContacts(
     world,
-    { ...b, nz: null, points: b.pointCount, stride: 2, rx: b.rBx, ry: b.rBy, rz: null, impulse: b.totalNormalImpulse },
+    {
+      ...b,
+      nz: null,
+      points: b.pointCount,
+      stride: 2,
+      rx: b.rBx,
+      ry: b.rBy,
+      rz: null,
+      rStride: 1,
+      rx0: 0,
+      ry0: 0,
+      rz0: 0,
+      impulse: b.totalNormalImpulse,
+    },
     fn,
   );
 }
@@ -216,5 +238,22 @@ function shapeContacts3D(world: PhysicsWorld, fn: (contact: Readonly<ContactView
   const st = contact3DStateOf(world);
   if (st === undefined) return 0;
   const b = st.current;
-  return shapeContacts(world, { ...b, stride: 4, rx: b.rbx, ry: b.rby, rz: b.rbz, impulse: b.ln, separation: b.sep }, fn);
+  const R = b.anchors;
+  return shapeContacts(
+    world,
+    {
+      ...b,
+      stride: 4,
+      rx: R,
+      ry: R,
+      rz: R,
+      rStride: ANCHOR_STRIDE,
+      rx0: ANCHOR_BX,
+      ry0: ANCHOR_BY,
+      rz0: ANCHOR_BZ,
+      impulse: b.ln,
+      separation: b.sep,
+    },
+    fn,
+  );
 }

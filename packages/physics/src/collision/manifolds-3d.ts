@@ -1,3 +1,4 @@
+import { ANCHOR_STRIDE } from '../solver/manifold-layout-3d.js';
 import { registerExternalWorldState } from '../world/external-state.js';
 import type { PhysicsWorld } from '../world/options.js';
 
@@ -24,10 +25,6 @@ export interface Manifold3DBuffer {
   points: Uint8Array;
   /** 1 when both bodies' world inverse inertia is isotropic (i 1) this step (solver/manifold-rows-3d.ts reads fewer numbers), else 0. */
   iso: Uint8Array;
-  /** Per row, set by the solver's prepare: the least start separation of its points (m) and the longest anchor on A and on B (m, slightly padded). */
-  minSep: Float64Array;
-  reachA: Float64Array;
-  reachB: Float64Array;
   nx: Float64Array;
   ny: Float64Array;
   nz: Float64Array;
@@ -36,13 +33,12 @@ export interface Manifold3DBuffer {
   t1z: Float64Array;
   friction: Float64Array;
   restitution: Float64Array;
-  /** Per point (4 i + k): anchors from the centres of mass (m, world), separation at the step's start (m), feature id. */
-  rax: Float64Array;
-  ray: Float64Array;
-  raz: Float64Array;
-  rbx: Float64Array;
-  rby: Float64Array;
-  rbz: Float64Array;
+  /**
+   * Per point (4 i + k): anchors from the centres of mass (m, world), r_A then r_B side by side
+   * (solver/manifold-layout-3d.ts ANCHOR_*, ANCHOR_STRIDE numbers a point); separation at the step's
+   * start (m); feature id.
+   */
+  anchors: Float64Array;
   sep: Float64Array;
   id: Float64Array;
   /**
@@ -56,16 +52,12 @@ export interface Manifold3DBuffer {
   maxLn: Float64Array;
   /**
    * Per row, the manifold's friction (solver/manifold-rows-3d.ts: one anchor a manifold): accumulated impulses
-   * along t1 and t2 (N s) and about n (twist, N m s); their effective masses (kg, kg m^2; rebuilt by the
-   * prepare); the twist arm (m: the points' mean distance from the anchor, the twist limit mu arm sum(ln)).
+   * along t1 and t2 (N s) and about n (twist, N m s). Their effective masses and the twist arm are rebuilt
+   * every step by the prepare, straight into the solve's head (solver/manifold-layout-3d.ts HEAD_MT1 ..).
    */
   ft1: Float64Array;
   ft2: Float64Array;
   ftw: Float64Array;
-  mt1: Float32Array;
-  mt2: Float32Array;
-  mtw: Float32Array;
-  arm: Float64Array;
   /**
    * Box-box rows (collision/shapes-3d.ts reuses them while the pair's relative pose barely changes): 1 when
    * the row carries the fields below, else 0. `relPose` (12 a row): B's centre in A's frame, m, then
@@ -94,9 +86,6 @@ function createBuffer(n: number): Manifold3DBuffer {
     ib: i(n),
     points: new Uint8Array(n),
     iso: new Uint8Array(n),
-    minSep: f(n),
-    reachA: f(n),
-    reachB: f(n),
     nx: f(n),
     ny: f(n),
     nz: f(n),
@@ -105,12 +94,7 @@ function createBuffer(n: number): Manifold3DBuffer {
     t1z: f(n),
     friction: f(n),
     restitution: f(n),
-    rax: f(p),
-    ray: f(p),
-    raz: f(p),
-    rbx: f(p),
-    rby: f(p),
-    rbz: f(p),
+    anchors: f(ANCHOR_STRIDE * p),
     sep: f(p),
     id: f(p),
     ln: f(p),
@@ -120,10 +104,6 @@ function createBuffer(n: number): Manifold3DBuffer {
     ft1: f(n),
     ft2: f(n),
     ftw: f(n),
-    mt1: new Float32Array(n),
-    mt2: new Float32Array(n),
-    mtw: new Float32Array(n),
-    arm: f(n),
     local: new Uint8Array(n),
     relPose: f(12 * n),
     localNormal: f(3 * n),
@@ -182,7 +162,7 @@ export interface Contact3DState {
   /**
    * Per row of `current` (solver/manifold-layout-3d.ts HEAD_STRIDE numbers each): the numbers of the row
    * the solve reads every pass (normal, tangent, friction, effective masses, the speculative skip's
-   * bounds, isotropic inverse inertias), copied there by prepareManifolds3D. Rebuilt every step.
+   * bounds, isotropic inverse inertias), written there by prepareManifolds3D. Rebuilt every step.
    */
   solveHead: Float64Array;
   /** 0 or 1, flipped at every biased solve pass: the order the points of a manifold are solved in (solver/manifold-rows-3d.ts). */

@@ -1,6 +1,7 @@
 import { wakesSleeper3D } from '../islands/shapes-3d.js';
 import { M00, M01, M02, M10, M11, M12, M20, M21, M22, MAT3_STRIDE } from '../math/mat3-layout.js';
 import { Shape3DKind, type Shape3DStore } from '../shapes/store-3d.js';
+import { ANCHOR_AX, ANCHOR_AY, ANCHOR_AZ, ANCHOR_BX, ANCHOR_BY, ANCHOR_BZ, ANCHOR_STRIDE } from '../solver/manifold-layout-3d.js';
 import { jointKeepsApart } from '../world/joint-no-collide.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { colA, colB, collider, manifold, queueWake, scratch } from './colliders-3d.js';
@@ -399,15 +400,17 @@ export function emit(
   else buf.local[i] = 0;
   const prev = boxRow.a >= 0 ? boxRow.prev : lookupRow(st.previousIndex, rowKey(world.capacity, ea, eb, sub));
   const P = st.previous,
-    reused = boxRow.a >= 0 && boxRow.from >= 0;
+    reused = boxRow.a >= 0 && boxRow.from >= 0,
+    R = buf.anchors;
   for (let k = 0; k < m.count; k++) {
     const q = 4 * i + k;
-    buf.rax[q] = m.x[k]! - ax;
-    buf.ray[q] = m.y[k]! - ay;
-    buf.raz[q] = m.z[k]! - az;
-    buf.rbx[q] = m.x[k]! - bx;
-    buf.rby[q] = m.y[k]! - by;
-    buf.rbz[q] = m.z[k]! - bz;
+    const o = ANCHOR_STRIDE * q;
+    R[o + ANCHOR_AX] = m.x[k]! - ax;
+    R[o + ANCHOR_AY] = m.y[k]! - ay;
+    R[o + ANCHOR_AZ] = m.z[k]! - az;
+    R[o + ANCHOR_BX] = m.x[k]! - bx;
+    R[o + ANCHOR_BY] = m.y[k]! - by;
+    R[o + ANCHOR_BZ] = m.z[k]! - bz;
     buf.sep[q] = m.sep[k]!;
     buf.id[q] = m.id[k]!;
     buf.ln[q] = 0;

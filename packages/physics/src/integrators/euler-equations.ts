@@ -151,7 +151,8 @@ export function implicitGyroscopicStep(world: PhysicsWorld, e: number, h: number
  * Wanner, Geometric Numerical Integration, VII.5). Symplectic and second order for the free flow:
  * |L| is conserved exactly, the energy error stays bounded (no drift), orientation and angular
  * velocity stay consistent. Updates both the angular velocity and the orientation. Axes with a zero
- * moment stay locked. The orientation is renormalised at the end (divided by its length, the square
+ * moment stay locked. An isotropic body (equal principal moments, none zero) takes the exact flow
+ * instead, which the splitting only approximates: w fixed in the world, one turn by |w| h about it. The orientation is renormalised at the end (divided by its length, the square
  * root of its components' squares). Runs over the bodies `ents` (entity ids, each with a principal
  * inertia tensor), the torque read from each body's `Torque` (zero for a body without one), rad/s and
  * unit quaternions written in place. The loop is here, not in the caller, and no double crosses a
@@ -181,6 +182,34 @@ export function splitRigidRotations(world: PhysicsWorld, ents: ArrayLike<number>
       y = q.y[e]!,
       z = q.z[e]!,
       w = q.w[e]!;
+    if (ix === iy && iy === iz && ix > 0) {
+      // Isotropic (a cube, a sphere): I^-1 L is parallel to L, so the free flow keeps w fixed in the world
+      // and turns the body by |w| h about it; the five turns below would approximate that to O(h^3).
+      // The kick (w += h I^-1 tau), then that one exact turn: q <- (sin(|w| h / 2) w / |w|, cos(|w| h / 2)) q.
+      const ox = W.x[e]! + h * torqueX * ix,
+        oy = W.y[e]! + h * torqueY * ix,
+        oz = W.z[e]! + h * torqueZ * ix;
+      const angle = Math.sqrt(ox * ox + oy * oy + oz * oz) * h;
+      if (angle > 0) {
+        const k = (Math.sin(0.5 * angle) / angle) * h,
+          dx = ox * k,
+          dy = oy * k,
+          dz = oz * k,
+          dw = Math.cos(0.5 * angle);
+        storeUnitQuaternion(
+          q,
+          e,
+          dw * x + dx * w + dy * z - dz * y,
+          dw * y - dx * z + dy * w + dz * x,
+          dw * z + dx * y - dy * x + dz * w,
+          dw * w - dx * x - dy * y - dz * z,
+        );
+      }
+      W.x[e] = ox;
+      W.y[e] = oy;
+      W.z[e] = oz;
+      continue;
+    }
     // World momentum plus the torque kick, then into the body frame (v' = v + w t + u x t, t = 2 u x v,
     // u the quaternion's vector part; its conjugate for world to body).
     const wx = W.x[e]!,

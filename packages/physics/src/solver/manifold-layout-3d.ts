@@ -26,6 +26,24 @@ export const ROW_BY = 4;
 /** Body B's part, z. */
 export const ROW_BZ = 5;
 
+// A contact point's anchors in the manifold buffer's `anchors` (collision/manifolds-3d.ts), point q's at
+// ANCHOR_STRIDE q: r_A then r_B, from each body's centre of mass to the point (m, world), side by side so
+// the narrowphase writes and the prepare reads one run of memory a point.
+/** r_A, x. */
+export const ANCHOR_AX = 0;
+/** r_A, y. */
+export const ANCHOR_AY = 1;
+/** r_A, z. */
+export const ANCHOR_AZ = 2;
+/** r_B, x. */
+export const ANCHOR_BX = 3;
+/** r_B, y. */
+export const ANCHOR_BY = 4;
+/** r_B, z. */
+export const ANCHOR_BZ = 5;
+/** Numbers a point keeps in `anchors`. */
+export const ANCHOR_STRIDE = 6;
+
 /** Numbers a contact point keeps in `jacobians` and in `jacobiansInv` (one row, u = n): point q's at q * JAC_STRIDE. */
 export const JAC_STRIDE = 6;
 
@@ -42,7 +60,7 @@ export const FRICTION_STRIDE = 12;
 export const FRICTION_INV_STRIDE = 18;
 
 // A manifold's head in `solveHead` (at HEAD_STRIDE i): the numbers the solve reads once per manifold and
-// pass, side by side (copied from the manifold buffer's columns by prepareManifolds3D).
+// pass, side by side (written by prepareManifolds3D).
 /** The normal n, x (unit). */
 export const HEAD_NX = 0;
 /** n, y. */

@@ -26,6 +26,13 @@ import {
   II3_ZZ,
 } from './body-state-layout.js';
 import {
+  ANCHOR_AX,
+  ANCHOR_AY,
+  ANCHOR_AZ,
+  ANCHOR_BX,
+  ANCHOR_BY,
+  ANCHOR_BZ,
+  ANCHOR_STRIDE,
   FRICTION_INV_STRIDE,
   FRICTION_STRIDE,
   FRICTION_T1,
@@ -109,7 +116,8 @@ export function prepareManifolds3D(world: PhysicsWorld): void {
     st.frictionInv = new Float32Array(FRICTION_INV_STRIDE * rows);
     st.solveHead = new Float64Array(HEAD_STRIDE * rows);
   }
-  const J = st.jacobians,
+  const RA = buf.anchors,
+    J = st.jacobians,
     JI = st.jacobiansInv;
   const ox = c.PreviousPosition.x,
     oy = c.PreviousPosition.y,
@@ -152,12 +160,13 @@ export function prepareManifolds3D(world: PhysicsWorld): void {
       const q = 4 * i + k,
         o = JAC_STRIDE * q;
       buf.sep[q] = buf.sep[q]! + shift;
-      const rax = buf.rax[q]!,
-        ray = buf.ray[q]!,
-        raz = buf.raz[q]!,
-        rbx = buf.rbx[q]!,
-        rby = buf.rby[q]!,
-        rbz = buf.rbz[q]!;
+      const r = ANCHOR_STRIDE * q;
+      const rax = RA[r + ANCHOR_AX]!,
+        ray = RA[r + ANCHOR_AY]!,
+        raz = RA[r + ANCHOR_AZ]!,
+        rbx = RA[r + ANCHOR_BX]!,
+        rby = RA[r + ANCHOR_BY]!,
+        rbz = RA[r + ANCHOR_BZ]!;
       if (buf.sep[q]! < minSep) minSep = buf.sep[q]!;
       reachA = Math.max(reachA, rax * rax + ray * ray + raz * raz);
       reachB = Math.max(reachB, rbx * rbx + rby * rby + rbz * rbz);
@@ -190,37 +199,21 @@ export function prepareManifolds3D(world: PhysicsWorld): void {
         sb[a + BS3_WY]! * xay -
         sb[a + BS3_WZ]! * xaz;
     }
-    // For the solver's skip of a speculative manifold (solveManifolds3D); padded for the single-precision crosses.
-    buf.minSep[i] = minSep;
-    buf.reachA[i] = Math.sqrt(reachA) * (1 + 1e-5) + 1e-9;
-    buf.reachB[i] = Math.sqrt(reachB) * (1 + 1e-5) + 1e-9;
+    // The manifold's head (HEAD_*), written here and by prepareFriction3D: the speculative skip's bounds
+    // (padded for the single-precision crosses), the normal, tangent, friction and isotropic inertias.
+    const H = st.solveHead,
+      h = HEAD_STRIDE * i;
+    H[h + HEAD_MIN_SEP] = minSep;
+    H[h + HEAD_REACH_A] = Math.sqrt(reachA) * (1 + 1e-5) + 1e-9;
+    H[h + HEAD_REACH_B] = Math.sqrt(reachB) * (1 + 1e-5) + 1e-9;
+    H[h + HEAD_NX] = nx;
+    H[h + HEAD_NY] = ny;
+    H[h + HEAD_NZ] = nz;
+    H[h + HEAD_MU] = buf.friction[i]!;
+    H[h + HEAD_INV_IA] = iso ? T[ta + II3_XX]! : 0;
+    H[h + HEAD_INV_IB] = iso ? T[tb + II3_XX]! : 0;
     prepareFriction3D(st, i, iso, mA, mB, ta, tb);
-    writeHead(st, i, iso, ta, tb);
   }
-}
-
-/** Manifold i's head in st.solveHead (HEAD_*), from its columns once they are all written; ta, tb its bodies' rows of st.invInertia. */
-function writeHead(st: Contact3DState, i: number, iso: boolean, ta: number, tb: number): void {
-  const buf = st.current,
-    H = st.solveHead,
-    T = st.invInertia,
-    h = HEAD_STRIDE * i;
-  H[h + HEAD_NX] = buf.nx[i]!;
-  H[h + HEAD_NY] = buf.ny[i]!;
-  H[h + HEAD_NZ] = buf.nz[i]!;
-  H[h + HEAD_T1X] = buf.t1x[i]!;
-  H[h + HEAD_T1Y] = buf.t1y[i]!;
-  H[h + HEAD_T1Z] = buf.t1z[i]!;
-  H[h + HEAD_MU] = buf.friction[i]!;
-  H[h + HEAD_ARM] = buf.arm[i]!;
-  H[h + HEAD_MT1] = buf.mt1[i]!;
-  H[h + HEAD_MT2] = buf.mt2[i]!;
-  H[h + HEAD_MTW] = buf.mtw[i]!;
-  H[h + HEAD_MIN_SEP] = buf.minSep[i]!;
-  H[h + HEAD_REACH_A] = buf.reachA[i]!;
-  H[h + HEAD_REACH_B] = buf.reachB[i]!;
-  H[h + HEAD_INV_IA] = iso ? T[ta + II3_XX]! : 0;
-  H[h + HEAD_INV_IB] = iso ? T[tb + II3_XX]! : 0;
 }
 
 /**
@@ -232,6 +225,7 @@ function writeHead(st: Contact3DState, i: number, iso: boolean, ta: number, tb: 
  */
 function prepareFriction3D(st: Contact3DState, i: number, iso: boolean, mA: number, mB: number, ta: number, tb: number): void {
   const buf = st.current,
+    RA = buf.anchors,
     T = st.invInertia,
     F = st.frictionJacobians,
     FV = st.frictionInv;
@@ -248,12 +242,13 @@ function prepareFriction3D(st: Contact3DState, i: number, iso: boolean, mA: numb
     cbz = 0;
   for (let k = 0; k < m; k++) {
     const q = 4 * i + k;
-    cax += buf.rax[q]!;
-    cay += buf.ray[q]!;
-    caz += buf.raz[q]!;
-    cbx += buf.rbx[q]!;
-    cby += buf.rby[q]!;
-    cbz += buf.rbz[q]!;
+    const r = ANCHOR_STRIDE * q;
+    cax += RA[r + ANCHOR_AX]!;
+    cay += RA[r + ANCHOR_AY]!;
+    caz += RA[r + ANCHOR_AZ]!;
+    cbx += RA[r + ANCHOR_BX]!;
+    cby += RA[r + ANCHOR_BY]!;
+    cbz += RA[r + ANCHOR_BZ]!;
   }
   const iw = 1 / m;
   cax *= iw;
@@ -266,16 +261,22 @@ function prepareFriction3D(st: Contact3DState, i: number, iso: boolean, mA: numb
   let arm = 0;
   for (let k = 0; k < m; k++) {
     const q = 4 * i + k;
-    const dx = buf.rax[q]! - cax,
-      dy = buf.ray[q]! - cay,
-      dz = buf.raz[q]! - caz,
+    const r = ANCHOR_STRIDE * q;
+    const dx = RA[r + ANCHOR_AX]! - cax,
+      dy = RA[r + ANCHOR_AY]! - cay,
+      dz = RA[r + ANCHOR_AZ]! - caz,
       dn = dx * nx + dy * ny + dz * nz;
     arm += Math.sqrt(Math.max(dx * dx + dy * dy + dz * dz - dn * dn, 0));
   }
-  buf.arm[i] = arm / m;
+  const H = st.solveHead,
+    h = HEAD_STRIDE * i;
+  H[h + HEAD_ARM] = arm / m;
   const t1x = buf.t1x[i]!,
     t1y = buf.t1y[i]!,
     t1z = buf.t1z[i]!;
+  H[h + HEAD_T1X] = t1x;
+  H[h + HEAD_T1Y] = t1y;
+  H[h + HEAD_T1Z] = t1z;
   const t2x = ny * t1z - nz * t1y,
     t2y = nz * t1x - nx * t1z,
     t2z = nx * t1y - ny * t1x;
@@ -303,14 +304,14 @@ function prepareFriction3D(st: Contact3DState, i: number, iso: boolean, mA: numb
     const k0 = iso
       ? mA + mB + T[ta + II3_XX]! * (xax * xax + xay * xay + xaz * xaz) + T[tb + II3_XX]! * (xbx * xbx + xby * xby + xbz * xbz)
       : mA + mB + inertiaInto(FV, ov + ROW_AX, T, ta, xax, xay, xaz) + inertiaInto(FV, ov + ROW_BX, T, tb, xbx, xby, xbz);
-    if (d === 0) buf.mt1[i] = k0 > 0 ? 1 / k0 : 0;
-    else buf.mt2[i] = k0 > 0 ? 1 / k0 : 0;
+    // Effective masses in single precision (as the normal rows' mn): the same numbers every build.
+    H[h + (d === 0 ? HEAD_MT1 : HEAD_MT2)] = Math.fround(k0 > 0 ? 1 / k0 : 0);
   }
   // Twist about n: 1 / (n . I_A^-1 n + n . I_B^-1 n).
   const kw = iso
     ? T[ta + II3_XX]! + T[tb + II3_XX]!
     : inertiaInto(FV, fv + FRICTION_TWIST + ROW_AX, T, ta, nx, ny, nz) + inertiaInto(FV, fv + FRICTION_TWIST + ROW_BX, T, tb, nx, ny, nz);
-  buf.mtw[i] = kw > 0 ? 1 / kw : 0;
+  H[h + HEAD_MTW] = Math.fround(kw > 0 ? 1 / kw : 0);
 }
 
 /** Writes I^-1 x (I^-1 the invInertia row at T[t]) into out[o..o+2] (a row's part, x, y, z) and returns x . I^-1 x. */

@@ -1,6 +1,7 @@
 import { keepWhileAsleep, pushEvent, resumeAfterSleep } from '../collision/events.js';
 import { clearRowIndex, contact3DStateOf, insertRow, lookupRow, pushTouch } from '../collision/manifolds-3d.js';
 import type { PhysicsWorld } from '../world/options.js';
+import { ANCHOR_BX, ANCHOR_BY, ANCHOR_BZ, ANCHOR_STRIDE } from './manifold-layout-3d.js';
 import { joinSolverBodies } from './solver-bodies.js';
 /**
  * The 3D shape contacts' rows of the contact solver (solver/contact-solver.ts calls these next to the ball contacts',
@@ -93,9 +94,10 @@ export function finishManifolds3D(world: PhysicsWorld): void {
     const r = pushEvent(world, ev, buf.shapeA[i]!, buf.shapeB[i]!, buf.bodyA[i]!, buf.bodyB[i]!);
     const c = world.components,
       b = buf.bodyB[i]!;
-    ev.px[r] = c.PreviousPosition.x[b]! + buf.rbx[touch]!;
-    ev.py[r] = c.PreviousPosition.y[b]! + buf.rby[touch]!;
-    ev.pz[r] = c.PreviousPosition.z[b]! + buf.rbz[touch]!;
+    const o = ANCHOR_STRIDE * touch;
+    ev.px[r] = c.PreviousPosition.x[b]! + buf.anchors[o + ANCHOR_BX]!;
+    ev.py[r] = c.PreviousPosition.y[b]! + buf.anchors[o + ANCHOR_BY]!;
+    ev.pz[r] = c.PreviousPosition.z[b]! + buf.anchors[o + ANCHOR_BZ]!;
     ev.nx[r] = buf.nx[i]!;
     ev.ny[r] = buf.ny[i]!;
     ev.nz[r] = buf.nz[i]!;
