@@ -1,5 +1,6 @@
 import { addComponent, hasComponent, removeEntity } from 'bitecs';
 import { installBalls } from '../collision/install-balls.js';
+import { writeDrag } from '../forces/api.js';
 import { wakeIsland } from '../islands/sleep.js';
 import { shapes3DOf } from '../shapes/store-3d.js';
 import { createSlot, currentHandle, resolveEntity, resolveKind } from '../world/handles.js';
@@ -191,14 +192,7 @@ export function addBodyAs(world: PhysicsWorld, options: BodyOptions, where: stri
     addComponent(world, eid, c.Material);
     writeMaterial(world, eid, options);
   }
-  if (options.linearDrag !== undefined) {
-    addComponent(world, eid, c.LinearDrag);
-    c.LinearDrag.k[eid] = options.linearDrag;
-  }
-  if (options.quadraticDrag !== undefined) {
-    addComponent(world, eid, c.QuadraticDrag);
-    c.QuadraticDrag.k[eid] = options.quadraticDrag;
-  }
+  writeDrag(world, eid, options.linearDrag, options.quadraticDrag);
   if (d === 2) {
     addComponent(world, eid, c.Angle);
     if (options.angle !== undefined) c.Angle.value[eid] = options.angle;
