@@ -1,16 +1,18 @@
 import { addComponent, hasComponent, removeEntity } from 'bitecs';
 import { installBalls } from '../collision/install-balls.js';
+import { writeDrag } from '../forces/api.js';
 import { wakeIsland } from '../islands/sleep.js';
 import { shapes3DOf } from '../shapes/store-3d.js';
 import { createSlot, currentHandle, resolveEntity, resolveKind } from '../world/handles.js';
 import { assertTimeStep, type PhysicsWorld } from '../world/options.js';
+import { assertMaterial, type MaterialOptions, writeMaterial } from './material.js';
 import { checkInertia, setInertiaUnchecked } from './rigid.js';
 
 export { assertRoom, createSlot } from '../world/handles.js';
+export type { MaterialOptions } from './material.js';
 
 import {
   assertFinite,
-  assertInRange,
   assertNonNegative,
   assertOptionalBoolean,
   assertOptions,
@@ -35,7 +37,7 @@ export function createEntity(world: PhysicsWorld): number {
  * Options of `addBody`. Vectors have `world.dimensions` components. Unknown fields are rejected.
  * @category Bodies
  */
-export interface BodyOptions {
+export interface BodyOptions extends MaterialOptions {
   /** Centre of mass, m. Default origin. */
   position?: ArrayLike<number>;
   /** Linear velocity, m/s. Default 0. */
@@ -46,12 +48,6 @@ export interface BodyOptions {
   density?: number;
   /** Collision radius, m, > 0: the body becomes a ball (circle in 2D, sphere in 3D). Without it the body does not collide (unless given shapes). A 3D ball body takes no shapes (addShape3D throws): give a compound's sphere as a 'sphere' shape. */
   radius?: number;
-  /** Restitution in [0, 1]. Default 0. */
-  restitution?: number;
-  /** Kinetic friction coefficient mu_k >= 0. Default 0.6. */
-  friction?: number;
-  /** Static friction coefficient mu_s >= 0. Default equal to `friction`. */
-  staticFriction?: number;
   /** Never moves; infinite mass. Default false. */
   static?: boolean;
   /** Moves with its velocity only; infinite mass in contacts. Default false. */
@@ -139,9 +135,7 @@ export function addBodyAs(world: PhysicsWorld, options: BodyOptions, where: stri
     assertPositive(where, 'density', options.density);
     if (options.radius === undefined) throw new RangeError(`${where}: density needs a radius`);
   }
-  if (options.restitution !== undefined) assertInRange(where, 'restitution', options.restitution, 0, 1);
-  if (options.friction !== undefined) assertNonNegative(where, 'friction', options.friction);
-  if (options.staticFriction !== undefined) assertNonNegative(where, 'staticFriction', options.staticFriction);
+  assertMaterial(where, options);
   if (options.linearDrag !== undefined) assertNonNegative(where, 'linearDrag', options.linearDrag);
   if (options.quadraticDrag !== undefined) assertNonNegative(where, 'quadraticDrag', options.quadraticDrag);
   if (options.angle !== undefined) assertFinite(where, 'angle', options.angle);
@@ -196,16 +190,9 @@ export function addBodyAs(world: PhysicsWorld, options: BodyOptions, where: stri
     addComponent(world, eid, c.Ball);
     c.Ball.radius[eid] = options.radius;
     addComponent(world, eid, c.Material);
-    setMaterialUnchecked(world, eid, options.restitution, options.friction, options.staticFriction);
+    writeMaterial(world, eid, options);
   }
-  if (options.linearDrag !== undefined) {
-    addComponent(world, eid, c.LinearDrag);
-    c.LinearDrag.k[eid] = options.linearDrag;
-  }
-  if (options.quadraticDrag !== undefined) {
-    addComponent(world, eid, c.QuadraticDrag);
-    c.QuadraticDrag.k[eid] = options.quadraticDrag;
-  }
+  writeDrag(world, eid, options.linearDrag, options.quadraticDrag);
   if (d === 2) {
     addComponent(world, eid, c.Angle);
     if (options.angle !== undefined) c.Angle.value[eid] = options.angle;
@@ -294,19 +281,13 @@ export function addParticle(world: PhysicsWorld, options: ParticleOptions = {}):
  * Options of `addSegment`.
  * @category Bodies
  */
-export interface SegmentOptions {
+export interface SegmentOptions extends MaterialOptions {
   /** First end point, m. */
   a: ArrayLike<number>;
   /** Second end point, m. */
   b: ArrayLike<number>;
   /** Thickness radius, m, >= 0 (a capsule). Default 0. */
   radius?: number;
-  /** Restitution in [0, 1]. Default 0. */
-  restitution?: number;
-  /** Kinetic friction coefficient >= 0. Default 0.6. */
-  friction?: number;
-  /** Static friction coefficient >= 0. Default equal to `friction`. */
-  staticFriction?: number;
 }
 
 /**
@@ -323,9 +304,7 @@ export function addSegment(world: PhysicsWorld, options: SegmentOptions): number
   assertVector(where, 'a', options.a, d);
   assertVector(where, 'b', options.b, d);
   if (options.radius !== undefined) assertNonNegative(where, 'radius', options.radius);
-  if (options.restitution !== undefined) assertInRange(where, 'restitution', options.restitution, 0, 1);
-  if (options.friction !== undefined) assertNonNegative(where, 'friction', options.friction);
-  if (options.staticFriction !== undefined) assertNonNegative(where, 'staticFriction', options.staticFriction);
+  assertMaterial(where, options);
   const eid = createSlot(world, where);
   const c = world.components;
   addComponent(world, eid, c.Segment);
@@ -339,7 +318,7 @@ export function addSegment(world: PhysicsWorld, options: SegmentOptions): number
   S.by[eid] = options.b[1]!;
   S.bz[eid] = d === 3 ? options.b[2]! : 0;
   S.radius[eid] = options.radius ?? 0;
-  setMaterialUnchecked(world, eid, options.restitution, options.friction, options.staticFriction);
+  writeMaterial(world, eid, options);
   return currentHandle(world, eid);
 }
 
@@ -347,17 +326,11 @@ export function addSegment(world: PhysicsWorld, options: SegmentOptions): number
  * Options of `setBoundary`.
  * @category Bodies
  */
-export interface BoundaryOptions {
+export interface BoundaryOptions extends MaterialOptions {
   /** Inner corner with the smallest coordinates, m. */
   min: ArrayLike<number>;
   /** Inner corner with the largest coordinates, m; each component > min's. */
   max: ArrayLike<number>;
-  /** Restitution of the walls in [0, 1]. Default 0. */
-  restitution?: number;
-  /** Kinetic friction coefficient of the walls, >= 0. Default 0.6. */
-  friction?: number;
-  /** Static friction coefficient of the walls, >= 0. Default equal to friction. */
-  staticFriction?: number;
 }
 
 /**
@@ -379,9 +352,7 @@ export function setBoundary(world: PhysicsWorld, options: BoundaryOptions): void
       throw new RangeError(`${where}: max[${i}] must be > min[${i}], got min ${describe(options.min)}, max ${describe(options.max)}`);
     }
   }
-  if (options.restitution !== undefined) assertInRange(where, 'restitution', options.restitution, 0, 1);
-  if (options.friction !== undefined) assertNonNegative(where, 'friction', options.friction);
-  if (options.staticFriction !== undefined) assertNonNegative(where, 'staticFriction', options.staticFriction);
+  assertMaterial(where, options);
   const box = world.collision.boundary;
   box.enabled = true;
   for (let i = 0; i < 3; i++) {
@@ -457,29 +428,6 @@ export function setMass(world: PhysicsWorld, eid: number, mass: number): void {
   }
 }
 
-function setMaterialUnchecked(world: PhysicsWorld, eid: number, restitution?: number, friction?: number, staticFriction?: number): void {
-  const M = world.components.Material;
-  if (restitution !== undefined) M.restitution[eid] = restitution;
-  if (friction !== undefined) {
-    M.friction[eid] = friction;
-    M.staticFriction[eid] = friction;
-  }
-  if (staticFriction !== undefined) M.staticFriction[eid] = staticFriction;
-}
-
-/**
- * Material fields for `setMaterial`; omitted fields keep their value.
- * @category Bodies
- */
-export interface MaterialOptions {
-  /** Restitution in [0, 1]. */
-  restitution?: number;
-  /** Kinetic friction coefficient >= 0 (also sets static friction unless that is given). */
-  friction?: number;
-  /** Static friction coefficient >= 0. */
-  staticFriction?: number;
-}
-
 /**
  * Sets the surface material of a body, segment or plane.
  * @param eid the handle of a body, segment or plane.
@@ -491,12 +439,10 @@ export function setMaterial(world: PhysicsWorld, eid: number, material: Material
   const where = 'setMaterial';
   const slot = resolveKind(world, eid, 'collider', where);
   assertOptions(where, material, ['restitution', 'friction', 'staticFriction']);
-  if (material.restitution !== undefined) assertInRange(where, 'restitution', material.restitution, 0, 1);
-  if (material.friction !== undefined) assertNonNegative(where, 'friction', material.friction);
-  if (material.staticFriction !== undefined) assertNonNegative(where, 'staticFriction', material.staticFriction);
+  assertMaterial(where, material);
   const c = world.components;
   if (!hasComponent(world, slot, c.Material)) addComponent(world, slot, c.Material);
-  setMaterialUnchecked(world, slot, material.restitution, material.friction, material.staticFriction);
+  writeMaterial(world, slot, material);
 }
 
 /**

@@ -1,18 +1,11 @@
 import { addComponent, hasComponent } from 'bitecs';
 import { wakeIsland } from '../islands/sleep.js';
 import { rotateVector, rotateVectorInverse } from '../math/quaternion.js';
-import {
-  assertFinite,
-  assertInRange,
-  assertNonNegative,
-  assertOptions,
-  assertPositive,
-  assertVector,
-  describe,
-} from '../validation/validate.js';
+import { assertFinite, assertNonNegative, assertOptions, assertPositive, assertVector, describe } from '../validation/validate.js';
 import { createSlot, currentHandle, resolveKind } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { addComponentIfMissing } from '../world/options.js';
+import { assertMaterial, type MaterialOptions, writeMaterial } from './material.js';
 
 /**
  * Rigid-body rotation helpers: moments of inertia of standard solids, setting a body's inertia,
@@ -298,17 +291,11 @@ export function setAngularDamping(world: PhysicsWorld, eid: number, k: number): 
  * Options of `addPlane`.
  * @category Bodies
  */
-export interface PlaneOptions {
+export interface PlaneOptions extends MaterialOptions {
   /** Normal pointing out of the solid side (normalised here; 2 components in 2D, 3 in 3D). */
   normal: ArrayLike<number>;
   /** A point on the plane, m. Default origin. */
   point?: ArrayLike<number>;
-  /** Restitution in [0, 1]. Default 0. */
-  restitution?: number;
-  /** Kinetic friction coefficient >= 0. Default 0.6. */
-  friction?: number;
-  /** Static friction coefficient >= 0. Default equal to friction. */
-  staticFriction?: number;
 }
 
 /**
@@ -324,9 +311,7 @@ export function addPlane(world: PhysicsWorld, options: PlaneOptions): number {
   const d = world.dimensions;
   assertVector(where, 'normal', options.normal, d);
   if (options.point !== undefined) assertVector(where, 'point', options.point, d);
-  if (options.restitution !== undefined) assertInRange(where, 'restitution', options.restitution, 0, 1);
-  if (options.friction !== undefined) assertNonNegative(where, 'friction', options.friction);
-  if (options.staticFriction !== undefined) assertNonNegative(where, 'staticFriction', options.staticFriction);
+  assertMaterial(where, options);
   const nx0 = options.normal[0]!,
     ny0 = options.normal[1]!,
     nz0 = d === 3 ? options.normal[2]! : 0;
@@ -347,11 +332,6 @@ export function addPlane(world: PhysicsWorld, options: PlaneOptions): number {
   c.Plane.ny[eid] = ny;
   c.Plane.nz[eid] = nz;
   c.Plane.d[eid] = dist;
-  if (options.restitution !== undefined) c.Material.restitution[eid] = options.restitution;
-  if (options.friction !== undefined) {
-    c.Material.friction[eid] = options.friction;
-    c.Material.staticFriction[eid] = options.friction;
-  }
-  if (options.staticFriction !== undefined) c.Material.staticFriction[eid] = options.staticFriction;
+  writeMaterial(world, eid, options);
   return currentHandle(world, eid);
 }

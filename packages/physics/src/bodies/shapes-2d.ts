@@ -4,8 +4,6 @@ import { type ConvexGeometry, makeBox, makeCapsule, makeCircle, makePolygon, tra
 import { shapeMassProperties } from '../shapes/mass-2d.js';
 import {
   assertFinite,
-  assertInRange,
-  assertInteger,
   assertNonNegative,
   assertOptionalBoolean,
   assertOptions,
@@ -18,6 +16,7 @@ import type { PhysicsWorld } from '../world/options.js';
 import { addComponentIfMissing } from '../world/options.js';
 import { ensureShapeStore, SHAPE_STRIDE } from '../world/shape-store-2d.js';
 import { addBodyAs, type BodyOptions, createSlot } from './api.js';
+import { assertFilter, assertMaterial, type FilterOptions, type MaterialOptions, writeMaterial } from './material.js';
 import { unlinkShape } from './shape-list.js';
 
 /**
@@ -33,7 +32,7 @@ import { unlinkShape } from './shape-list.js';
  * Options of `addShape`. Exactly one of `radius` (circle), `halfExtents` (box), `vertices` (polygon) or `center1`/`center2` (capsule, with `radius`) describes the geometry.
  * @category Shapes
  */
-export interface ShapeOptions {
+export interface ShapeOptions extends MaterialOptions, FilterOptions {
   /** 'circle', 'box', 'polygon' or 'capsule'. */
   type: 'circle' | 'box' | 'polygon' | 'capsule';
   /** Circle or capsule radius, m, > 0; polygon or box corner rounding, m, >= 0 (default 0). */
@@ -52,22 +51,10 @@ export interface ShapeOptions {
   angle?: number;
   /** Areal density, kg/m^2, >= 0. Default 1. A dynamic body's mass and inertia become the sum over its shapes. */
   density?: number;
-  /** Kinetic friction coefficient, >= 0. Default 0.6. */
-  friction?: number;
-  /** Static friction coefficient, >= 0. Default equal to `friction`. */
-  staticFriction?: number;
-  /** Restitution in [0, 1]. Default 0. */
-  restitution?: number;
   /** Rolling resistance coefficient (circles and capsules), >= 0: the contact resists rolling with a torque up to coefficient x radius x normal force. Default 0. */
   rollingResistance?: number;
   /** A sensor reports overlaps (sensor events) and pushes nothing. Default false. */
   sensor?: boolean;
-  /** Category bits, integer in [0, 2^32 - 1]. Default 1. */
-  category?: number;
-  /** Mask bits: the categories this shape collides with, integer in [0, 2^32 - 1]. Default 0xFFFFFFFF (all). */
-  mask?: number;
-  /** Group, integer in [-2^31, 2^31 - 1]: shapes of the same non-zero group always collide (> 0) or never (< 0). Default 0. */
-  group?: number;
 }
 
 const SHAPE_OPTIONS = [
@@ -162,13 +149,9 @@ function checkShapeOptions(where: string, options: ShapeOptions): void {
   if (options.offset !== undefined) assertVector(where, 'offset', options.offset, 2);
   if (options.angle !== undefined) assertFinite(where, 'angle', options.angle);
   if (options.density !== undefined) assertNonNegative(where, 'density', options.density);
-  if (options.friction !== undefined) assertNonNegative(where, 'friction', options.friction);
-  if (options.staticFriction !== undefined) assertNonNegative(where, 'staticFriction', options.staticFriction);
-  if (options.restitution !== undefined) assertInRange(where, 'restitution', options.restitution, 0, 1);
+  assertMaterial(where, options);
   if (options.rollingResistance !== undefined) assertNonNegative(where, 'rollingResistance', options.rollingResistance);
-  if (options.category !== undefined) assertInteger(where, 'category', options.category, 0, 0xffffffff);
-  if (options.mask !== undefined) assertInteger(where, 'mask', options.mask, 0, 0xffffffff);
-  if (options.group !== undefined) assertInteger(where, 'group', options.group, -0x80000000, 0x7fffffff);
+  assertFilter(where, options);
 }
 
 /** `addShape` on the body in slot `body` (already resolved); returns the shape's slot. */
@@ -179,29 +162,15 @@ function addShapeToSlot(world: PhysicsWorld, body: number, options: ShapeOptions
     oy = 0,
     angle = 0;
   if (options.offset !== undefined) {
-    assertVector(where, 'offset', options.offset, 2);
     ox = options.offset[0]!;
     oy = options.offset[1]!;
   }
-  if (options.angle !== undefined) {
-    assertFinite(where, 'angle', options.angle);
-    angle = options.angle;
-  }
-  const density = options.density ?? 1;
-  assertNonNegative(where, 'density', density);
-  if (options.friction !== undefined) assertNonNegative(where, 'friction', options.friction);
-  if (options.staticFriction !== undefined) assertNonNegative(where, 'staticFriction', options.staticFriction);
-  if (options.restitution !== undefined) assertInRange(where, 'restitution', options.restitution, 0, 1);
-  const rolling = options.rollingResistance ?? 0;
-  assertNonNegative(where, 'rollingResistance', rolling);
-  if (options.sensor !== undefined && typeof options.sensor !== 'boolean')
-    throw new TypeError(`${where}: sensor must be a boolean, got ${describe(options.sensor)}`);
+  if (options.angle !== undefined) angle = options.angle;
+  const density = options.density ?? 1,
+    rolling = options.rollingResistance ?? 0;
   const category = options.category ?? 1,
     mask = options.mask ?? 0xffffffff,
     group = options.group ?? 0;
-  assertInteger(where, 'category', category, 0, 0xffffffff);
-  assertInteger(where, 'mask', mask, 0, 0xffffffff);
-  assertInteger(where, 'group', group, -0x80000000, 0x7fffffff);
 
   const c = world.components;
   const onBody = !hasComponent(world, body, c.Shape) && !hasComponent(world, body, c.Ball);
@@ -241,13 +210,7 @@ function addShapeToSlot(world: PhysicsWorld, body: number, options: ShapeOptions
   S.rollingResistance[e] = rolling;
   S.next[e] = 0;
   addComponentIfMissing(world, e, c.Material);
-  const M = c.Material;
-  if (options.restitution !== undefined) M.restitution[e] = options.restitution;
-  if (options.friction !== undefined) {
-    M.friction[e] = options.friction;
-    M.staticFriction[e] = options.friction;
-  }
-  if (options.staticFriction !== undefined) M.staticFriction[e] = options.staticFriction;
+  writeMaterial(world, e, options);
   if (!onBody) {
     // Append to the body's list of extra shapes.
     let last = st.firstShape[body]!;
@@ -434,7 +397,7 @@ function removeShapesOf(world: PhysicsWorld, eid: number): void {
  *   entity, one that is not a 2D shape, or bits that are not integers in range.
  * @category Shapes
  */
-export function setShapeFilter(world: PhysicsWorld, shape: number, filter: { category?: number; mask?: number; group?: number }): void {
+export function setShapeFilter(world: PhysicsWorld, shape: number, filter: FilterOptions): void {
   const where = 'setShapeFilter';
   const e = resolveEntity(world, shape, where, 'shape');
   if (world.dimensions !== 2 || !hasComponent(world, e, world.components.Shape)) {
@@ -443,9 +406,7 @@ export function setShapeFilter(world: PhysicsWorld, shape: number, filter: { cat
     );
   }
   assertOptions(where, filter, ['category', 'mask', 'group'], 'filter');
-  if (filter.category !== undefined) assertInteger(where, 'category', filter.category, 0, 0xffffffff);
-  if (filter.mask !== undefined) assertInteger(where, 'mask', filter.mask, 0, 0xffffffff);
-  if (filter.group !== undefined) assertInteger(where, 'group', filter.group, -0x80000000, 0x7fffffff);
+  assertFilter(where, filter);
   const S = world.components.Shape;
   if (filter.category !== undefined) S.category[e] = filter.category;
   if (filter.mask !== undefined) S.mask[e] = filter.mask;
@@ -456,25 +417,13 @@ export function setShapeFilter(world: PhysicsWorld, shape: number, filter: { cat
  * Options of `addBox`: those of `addBody` (no `radius`, `mass` or `density`) plus the box's.
  * @category Shapes
  */
-export interface BoxOptions extends Omit<BodyOptions, 'radius' | 'mass' | 'density' | 'restitution' | 'friction' | 'staticFriction'> {
+export interface BoxOptions extends Omit<BodyOptions, 'radius' | 'mass' | 'density'>, FilterOptions {
   /** Half extents (hx, hy), m, each > 0. */
   halfExtents: ArrayLike<number>;
   /** Corner rounding, m, >= 0. Default 0. */
   radius?: number;
   /** Areal density, kg/m^2, >= 0. Default 1. */
   density?: number;
-  /** Kinetic friction coefficient, >= 0. Default 0.6. */
-  friction?: number;
-  /** Static friction coefficient, >= 0. Default equal to `friction`. */
-  staticFriction?: number;
-  /** Restitution in [0, 1]. Default 0. */
-  restitution?: number;
-  /** Category bits (see ShapeOptions.category). Default 1. */
-  category?: number;
-  /** Mask bits (see ShapeOptions.mask). Default all. */
-  mask?: number;
-  /** Group (see ShapeOptions.group). Default 0. */
-  group?: number;
   /** A sensor box: reports overlaps, pushes nothing. Default false. */
   sensor?: boolean;
 }

@@ -14,8 +14,6 @@ import {
 import { Shape3DKind, type Shape3DStore, shapes3DOf } from '../shapes/store-3d.js';
 import {
   assertFinite,
-  assertInRange,
-  assertInteger,
   assertKnownKeys,
   assertNonNegative,
   assertOptionalBoolean,
@@ -25,6 +23,7 @@ import {
 } from '../validation/validate.js';
 import { createSlot, currentHandle, resolveEntity, resolveKind } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
+import { assertFilter, assertMaterial, type FilterOptions } from './material.js';
 import { setInertiaUnchecked } from './rigid.js';
 import { unlinkShape } from './shape-list.js';
 
@@ -37,7 +36,7 @@ import { unlinkShape } from './shape-list.js';
  * Options of `addShape3D`. `type` says which of `radius`, `halfExtents`, `halfHeight` and `vertices` apply.
  * @category Shapes
  */
-export interface Shape3DOptions {
+export interface Shape3DOptions extends FilterOptions {
   /** 'sphere' (radius), 'box' (halfExtents), 'capsule' and 'cylinder' (radius, halfHeight, along the shape's y axis), 'hull' (vertices). */
   type: 'sphere' | 'box' | 'capsule' | 'cylinder' | 'hull';
   /** Sphere, capsule or cylinder radius, m, > 0. */
@@ -60,12 +59,6 @@ export interface Shape3DOptions {
   restitution?: number;
   /** A sensor reports overlaps and pushes nothing. Default false. */
   sensor?: boolean;
-  /** Category bits, integer in [0, 2^32 - 1]. Default 1. */
-  category?: number;
-  /** Mask bits, integer in [0, 2^32 - 1]. Default 0xFFFFFFFF. */
-  mask?: number;
-  /** Group, integer in [-2^31, 2^31 - 1] (same non-zero group: > 0 always collide, < 0 never). Default 0. */
-  group?: number;
 }
 
 const OPTIONS = [
@@ -231,18 +224,13 @@ export function addShape3D(world: PhysicsWorld, body: number, options: Shape3DOp
   }
   const density = options.density ?? 1000;
   assertNonNegative(where, 'density', density);
-  const friction = options.friction ?? 0.6;
-  assertNonNegative(where, 'friction', friction);
-  const restitution = options.restitution ?? 0;
-  assertInRange(where, 'restitution', restitution, 0, 1);
-  if (options.sensor !== undefined && typeof options.sensor !== 'boolean')
-    throw new TypeError(`${where}: sensor must be a boolean, got ${describe(options.sensor)}`);
+  assertMaterial(where, options);
+  assertFilter(where, options);
+  const friction = options.friction ?? 0.6,
+    restitution = options.restitution ?? 0;
   const category = options.category ?? 1,
     mask = options.mask ?? 0xffffffff,
     group = options.group ?? 0;
-  assertInteger(where, 'category', category, 0, 0xffffffff);
-  assertInteger(where, 'mask', mask, 0, 0xffffffff);
-  assertInteger(where, 'group', group, -0x80000000, 0x7fffffff);
   for (const v of [ox, oy, oz]) assertFinite(where, 'offset', v);
 
   const e = createSlot(world, where); // throws on a full world before anything changed

@@ -141,13 +141,10 @@ function gatherPoints(cl: ClothState, c: Components, from: number, to: number): 
     U = VELOCITY_AT * cl.pointCount,
     gxh = cl.scalars[SC_GX_H]!,
     gyh = cl.scalars[SC_GY_H]!;
-  const px = c.Position.x,
-    py = c.Position.y,
+  const { x: px, y: py } = c.Position,
     inv = c.Mass.inv;
-  const ox = c.PreviousPosition.x,
-    oy = c.PreviousPosition.y,
-    vx = c.Velocity.x,
-    vy = c.Velocity.y;
+  const { x: ox, y: oy } = c.PreviousPosition,
+    { x: vx, y: vy } = c.Velocity;
   let changed = false;
   for (let i = from; i < to; i++) {
     const e = P[i]!,
@@ -343,10 +340,8 @@ function scatterPoints(cl: ClothState, c: Components, from: number, to: number):
     xb = cl.buffer,
     Q = BEFORE_AT * cl.pointCount,
     ihs = cl.scalars[SC_INV_HS]!;
-  const px = c.Position.x,
-    py = c.Position.y,
-    vx = c.Velocity.x,
-    vy = c.Velocity.y;
+  const { x: px, y: py } = c.Position,
+    { x: vx, y: vy } = c.Velocity;
   for (let i = from; i < to; i++) {
     const o = PT_STRIDE * i;
     if (xb[o + PT_INV_MASS] === 0) continue;

@@ -1,4 +1,5 @@
 import { hasComponent } from 'bitecs';
+import { rotateVector } from '../math/quaternion.js';
 import { meshesOf } from '../shapes/mesh-3d.js';
 import { Shape3DKind, type Shape3DStore, shapes3DOf } from '../shapes/store-3d.js';
 import { assertVector, describe } from '../validation/validate.js';
@@ -258,18 +259,8 @@ function rayCylinder(ox: number, oy: number, oz: number, dx: number, dy: number,
 
 /** A shape's pose (posed by `poseShape`): centre, m (world), and the rotation of its frame into the world (unit quaternion x, y, z, w). */
 const pose = { cx: 0, cy: 0, cz: 0, x: 0, y: 0, z: 0, w: 1 };
-/** Result of `rotate`. */
+/** A vector rotated by a shape's pose (math/quaternion.ts rotateVector; -x, -y, -z for the inverse). */
 const v3 = new Float64Array(3);
-
-/** v3 = the vector (vx, vy, vz) rotated by the unit quaternion (x, y, z, w) (pass -x, -y, -z for the inverse). */
-function rotate(vx: number, vy: number, vz: number, x: number, y: number, z: number, w: number): void {
-  const tx = 2 * (y * vz - z * vy),
-    ty = 2 * (z * vx - x * vz),
-    tz = 2 * (x * vy - y * vx);
-  v3[0] = vx + w * tx + (y * tz - z * ty);
-  v3[1] = vy + w * ty + (z * tx - x * tz);
-  v3[2] = vz + w * tz + (x * ty - y * tx);
-}
 
 /** Fills `pose` with shape `e`'s pose where its body `b` is now: the body's pose composed with the shape's placement. */
 function poseShape(world: PhysicsWorld, s: Shape3DStore, e: number, b: number): void {
@@ -281,7 +272,7 @@ function poseShape(world: PhysicsWorld, s: Shape3DStore, e: number, b: number): 
     qy = has ? Q.y[b]! : 0,
     qz = has ? Q.z[b]! : 0,
     qw = has ? Q.w[b]! : 1;
-  rotate(s.px[e]!, s.py[e]!, s.pz[e]!, qx, qy, qz, qw);
+  rotateVector(qx, qy, qz, qw, s.px[e]!, s.py[e]!, s.pz[e]!, v3);
   pose.cx = P.x[b]! + v3[0]!;
   pose.cy = P.y[b]! + v3[1]!;
   pose.cz = P.z[b]! + v3[2]!;
@@ -337,28 +328,28 @@ export function rayCastAll3D(world: PhysicsWorld, origin: ArrayLike<number>, tra
       let ok = false;
       if (kind === Shape3DKind.Sphere) ok = raySphere(ox, oy, oz, dx, dy, dz, cx, cy, cz, s.radius[e]!);
       else if (kind === Shape3DKind.Capsule) {
-        rotate(0, s.hy[e]!, 0, x, y, z, w);
+        rotateVector(x, y, z, w, 0, s.hy[e]!, 0, v3);
         const ux = v3[0]!,
           uy = v3[1]!,
           uz = v3[2]!;
         ok = rayCapsule(ox, oy, oz, dx, dy, dz, cx - ux, cy - uy, cz - uz, cx + ux, cy + uy, cz + uz, s.radius[e]!);
       } else if (kind === Shape3DKind.Cylinder) {
         // In the cylinder's frame, then the normal back to the world.
-        rotate(ox - cx, oy - cy, oz - cz, -x, -y, -z, w);
+        rotateVector(-x, -y, -z, w, ox - cx, oy - cy, oz - cz, v3);
         const lx = v3[0]!,
           ly = v3[1]!,
           lz = v3[2]!;
-        rotate(dx, dy, dz, -x, -y, -z, w);
+        rotateVector(-x, -y, -z, w, dx, dy, dz, v3);
         ok = rayCylinder(lx, ly, lz, v3[0]!, v3[1]!, v3[2]!, s.radius[e]!, s.hy[e]!);
         if (ok) {
-          rotate(hit.nx, hit.ny, hit.nz, x, y, z, w);
+          rotateVector(x, y, z, w, hit.nx, hit.ny, hit.nz, v3);
           setHit(hit.t, v3[0]!, v3[1]!, v3[2]!);
         }
       } else {
         const h = s.hulls[s.hull[e]!]!,
           nf = h.faceOffsets.length;
         for (let f = 0; f < nf; f++) {
-          rotate(h.faceNormals[3 * f]!, h.faceNormals[3 * f + 1]!, h.faceNormals[3 * f + 2]!, x, y, z, w);
+          rotateVector(x, y, z, w, h.faceNormals[3 * f]!, h.faceNormals[3 * f + 1]!, h.faceNormals[3 * f + 2]!, v3);
           fn[3 * f] = v3[0]!;
           fn[3 * f + 1] = v3[1]!;
           fn[3 * f + 2] = v3[2]!;
@@ -447,7 +438,7 @@ export function rayCast3D(world: PhysicsWorld, origin: ArrayLike<number>, transl
 /** Whether the point (px, py, pz), m, lies in shape `e` (posed in `pose`), boundary included. */
 function shapeContains(s: Shape3DStore, e: number, px: number, py: number, pz: number): boolean {
   const { cx, cy, cz, x, y, z, w } = pose;
-  rotate(px - cx, py - cy, pz - cz, -x, -y, -z, w);
+  rotateVector(-x, -y, -z, w, px - cx, py - cy, pz - cz, v3);
   const lx = v3[0]!,
     ly = v3[1]!,
     lz = v3[2]!,
@@ -497,7 +488,7 @@ function shapeBounds(s: Shape3DStore, e: number, box: Float64Array): void {
   if (kind === Shape3DKind.Capsule || kind === Shape3DKind.Cylinder) {
     // The axis u = R (0, 1, 0): the segment's ends reach |u_i| hh along world axis i; a capsule's
     // sphere adds r, a cylinder's end disc r sqrt(1 - u_i^2).
-    rotate(0, 1, 0, x, y, z, w);
+    rotateVector(x, y, z, w, 0, 1, 0, v3);
     const hh = s.hy[e]!,
       cap = kind === Shape3DKind.Capsule;
     for (let i = 0; i < 3; i++) {
@@ -514,7 +505,7 @@ function shapeBounds(s: Shape3DStore, e: number, box: Float64Array): void {
   box[0] = box[1] = box[2] = Infinity;
   box[3] = box[4] = box[5] = -Infinity;
   for (let k = 0; k < V.length; k += 3) {
-    rotate(V[k]!, V[k + 1]!, V[k + 2]!, x, y, z, w);
+    rotateVector(x, y, z, w, V[k]!, V[k + 1]!, V[k + 2]!, v3);
     for (let i = 0; i < 3; i++) {
       const c = (i === 0 ? cx : i === 1 ? cy : cz) + v3[i]!;
       if (c < box[i]!) box[i] = c;

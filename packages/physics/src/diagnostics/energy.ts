@@ -81,9 +81,7 @@ export function gravitationalPotentialEnergy(world: PhysicsWorld): number {
  */
 function pairPotential(world: PhysicsWorld, ents: ArrayLike<number>, w: Float64Array, k: number, eps2: number): number {
   const P = world.components.Position;
-  const px = P.x,
-    py = P.y,
-    pz = P.z;
+  const { x: px, y: py, z: pz } = P;
   let sum = 0;
   for (let i = 0; i < ents.length; i++) {
     const a = ents[i]!;
@@ -282,9 +280,7 @@ export function angularMomentum(
   }
   ents = query(world, [c.AngularVelocity, c.Inertia, Not(c.InertiaTensor), Not(c.Static), Not(c.Kinematic)]);
   const I = c.Inertia.value,
-    wx = c.AngularVelocity.x,
-    wy = c.AngularVelocity.y,
-    wz = c.AngularVelocity.z;
+    { x: wx, y: wy, z: wz } = c.AngularVelocity;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
     lx += I[e]! * wx[e]!;

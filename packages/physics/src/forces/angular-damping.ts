@@ -40,12 +40,8 @@ export const angularDampingSystem: ForceLaw = (world: PhysicsWorld): void => {
   const ents = query(world, [c.AngularDamping, c.AngularVelocity, c.Torque]);
   if (ents.length === 0) return;
   const k = c.AngularDamping.k,
-    wx = c.AngularVelocity.x,
-    wy = c.AngularVelocity.y,
-    wz = c.AngularVelocity.z;
-  const tx = c.Torque.x,
-    ty = c.Torque.y,
-    tz = c.Torque.z;
+    { x: wx, y: wy, z: wz } = c.AngularVelocity;
+  const { x: tx, y: ty, z: tz } = c.Torque;
   const h = world.h;
   const is2D = world.dimensions === 2;
   const ii = c.Inertia.inv;
@@ -108,9 +104,7 @@ export const stiffAngularDampingSystem = (world: PhysicsWorld): void => {
   ]);
   const h = world.h,
     k = c.AngularDamping.k;
-  const wx = c.AngularVelocity.x,
-    wy = c.AngularVelocity.y,
-    wz = c.AngularVelocity.z;
+  const { x: wx, y: wy, z: wz } = c.AngularVelocity;
   const angle = c.Angle.value,
     q = c.Orientation,
     T = c.InertiaTensor;

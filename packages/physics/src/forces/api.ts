@@ -243,14 +243,23 @@ export function setDrag(world: PhysicsWorld, body: number, options: { linear?: n
   assertOptions(where, options, ['linear', 'quadratic']);
   if (options.linear !== undefined) assertNonNegative(where, 'linear', options.linear);
   if (options.quadratic !== undefined) assertNonNegative(where, 'quadratic', options.quadratic);
+  writeDrag(world, eid, options.linear, options.quadratic);
+}
+
+/**
+ * Gives body `eid` (a slot) the drag coefficients that are defined, already checked (>= 0): linear k in
+ * F = -k v (N s/m, the LinearDrag component) and quadratic k in F = -k |v| v (kg/m, QuadraticDrag),
+ * adding the components it lacks. An undefined coefficient leaves that drag as it is.
+ */
+export function writeDrag(world: PhysicsWorld, eid: number, linear: number | undefined, quadratic: number | undefined): void {
   const c = world.components;
-  if (options.linear !== undefined) {
+  if (linear !== undefined) {
     addComponentIfMissing(world, eid, c.LinearDrag);
-    c.LinearDrag.k[eid] = options.linear;
+    c.LinearDrag.k[eid] = linear;
   }
-  if (options.quadratic !== undefined) {
+  if (quadratic !== undefined) {
     addComponentIfMissing(world, eid, c.QuadraticDrag);
-    c.QuadraticDrag.k[eid] = options.quadratic;
+    c.QuadraticDrag.k[eid] = quadratic;
   }
 }
 

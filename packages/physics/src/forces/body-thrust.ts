@@ -40,9 +40,7 @@ export const bodyThrustSystem: ForceLaw = (world: PhysicsWorld): void => {
   const ents = query(world, [c.BodyThrust, c.Force]);
   if (ents.length === 0) return;
   const T = c.BodyThrust,
-    fx = c.Force.x,
-    fy = c.Force.y,
-    fz = c.Force.z;
+    { x: fx, y: fy, z: fz } = c.Force;
   if (world.dimensions === 2) {
     const angle = c.Angle.value;
     for (let i = 0; i < ents.length; i++) {

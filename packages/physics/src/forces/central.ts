@@ -18,12 +18,8 @@ export const centralForceSystem: ForceLaw = (world: PhysicsWorld): void => {
   const ents = query(world, [c.CentralForce, c.Position, c.Force]);
   if (ents.length === 0) return;
   const C = c.CentralForce;
-  const px = c.Position.x,
-    py = c.Position.y,
-    pz = c.Position.z;
-  const fx = c.Force.x,
-    fy = c.Force.y,
-    fz = c.Force.z;
+  const { x: px, y: py, z: pz } = c.Position;
+  const { x: fx, y: fy, z: fz } = c.Force;
   // Kernel `centralForce`, on the world's threads when that pays.
   runParallel(
     world,

@@ -23,9 +23,7 @@ function clearTerms(world: PhysicsWorld): ClearTerms {
  */
 export function clearForcesSystem(world: PhysicsWorld): void {
   const { Force, Torque } = world.components;
-  const fx = Force.x,
-    fy = Force.y,
-    fz = Force.z;
+  const { x: fx, y: fy, z: fz } = Force;
   if (!fusedForcesOn(world)) {
     const ents = query(world, clearTerms(world).force);
     if (world.dimensions === 2) {
@@ -44,9 +42,7 @@ export function clearForcesSystem(world: PhysicsWorld): void {
     }
   }
   const ents = query(world, clearTerms(world).torque);
-  const tx = Torque.x,
-    ty = Torque.y,
-    tz = Torque.z;
+  const { x: tx, y: ty, z: tz } = Torque;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
     tx[e] = 0;

@@ -72,12 +72,8 @@ function dragForces(world: PhysicsWorld, quadratic: boolean): void {
   if (ents.length === 0) return;
   const k = Drag.k,
     inv = Mass.inv,
-    vx = Velocity.x,
-    vy = Velocity.y,
-    vz = Velocity.z;
-  const fx = Force.x,
-    fy = Force.y,
-    fz = Force.z;
+    { x: vx, y: vy, z: vz } = Velocity;
+  const { x: fx, y: fy, z: fz } = Force;
   // Stiff when c h / m >= STIFF_RATE, i.e. c / m >= limit.
   const limit = STIFF_RATE / world.h;
   let stiff = 0;
@@ -103,9 +99,7 @@ function dragForces(world: PhysicsWorld, quadratic: boolean): void {
     }
   } else {
     const t = world.time,
-      px = Position.x,
-      py = Position.y,
-      pz = Position.z;
+      { x: px, y: py, z: pz } = Position;
     for (let i = 0; i < ents.length; i++) {
       const e = ents[i]!;
       // Linear drag's stiffness does not depend on the wind: such a body skips the wind.
@@ -164,12 +158,8 @@ export const stiffDragSystem = (world: PhysicsWorld): void => {
   const h = world.h,
     t = world.time + h;
   const calm = calmAir(world);
-  const px = c.Position.x,
-    py = c.Position.y,
-    pz = c.Position.z;
-  const vx = c.Velocity.x,
-    vy = c.Velocity.y,
-    vz = c.Velocity.z,
+  const { x: px, y: py, z: pz } = c.Position;
+  const { x: vx, y: vy, z: vz } = c.Velocity,
     inv = c.Mass.inv;
   const is2D = world.dimensions === 2;
   wind[0] = 0;
@@ -223,15 +213,9 @@ export const liftSystem: ForceLaw = (world: PhysicsWorld): void => {
   if (ents.length === 0) return;
   const calm = calmAir(world);
   const t = world.time,
-    px = Position.x,
-    py = Position.y,
-    pz = Position.z;
-  const vx = Velocity.x,
-    vy = Velocity.y,
-    vz = Velocity.z,
-    fx = Force.x,
-    fy = Force.y,
-    fz = Force.z;
+    { x: px, y: py, z: pz } = Position;
+  const { x: vx, y: vy, z: vz } = Velocity,
+    { x: fx, y: fy, z: fz } = Force;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
     let x = vx[e]!,

@@ -13,9 +13,7 @@ export const drivingForceSystem: ForceLaw = (world: PhysicsWorld): void => {
   if (ents.length === 0) return;
   const D = c.DrivingForce,
     t = world.time;
-  const fx = c.Force.x,
-    fy = c.Force.y,
-    fz = c.Force.z;
+  const { x: fx, y: fy, z: fz } = c.Force;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
     const k = Math.cos(D.omega[e]! * t + D.phase[e]!);
@@ -64,9 +62,7 @@ export const randomForceSystem: ForceLaw = (world: PhysicsWorld): void => {
   if (ents.length === 0) return;
   const R = c.RandomForce,
     t = world.time;
-  const fx = c.Force.x,
-    fy = c.Force.y,
-    fz = c.Force.z;
+  const { x: fx, y: fy, z: fz } = c.Force;
   const is3D = world.dimensions === 3;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;

@@ -66,12 +66,8 @@ export const lorentzSystem: ForceLaw = (world: PhysicsWorld): void => {
     by = is2D ? 0 : B[1]!,
     bz = B[2]!;
   const q = c.Charge.value,
-    vx = c.Velocity.x,
-    vy = c.Velocity.y,
-    vz = c.Velocity.z;
-  const fx = c.Force.x,
-    fy = c.Force.y,
-    fz = c.Force.z;
+    { x: vx, y: vy, z: vz } = c.Velocity;
+  const { x: fx, y: fy, z: fz } = c.Force;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
     const qe = q[e]!;

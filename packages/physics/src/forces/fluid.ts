@@ -71,15 +71,9 @@ export const buoyancySystem: ForceLaw = (world: PhysicsWorld): void => {
   if (ents.length === 0) return;
   const Fl = c.FluidRegion,
     Bu = c.Buoyancy;
-  const px = c.Position.x,
-    py = c.Position.y,
-    pz = c.Position.z;
-  const vx = c.Velocity.x,
-    vy = c.Velocity.y,
-    vz = c.Velocity.z;
-  const fx = c.Force.x,
-    fy = c.Force.y,
-    fz = c.Force.z;
+  const { x: px, y: py, z: pz } = c.Position;
+  const { x: vx, y: vy, z: vz } = c.Velocity;
+  const { x: fx, y: fy, z: fz } = c.Force;
   const g = world.gravity;
   const d = world.dimensions;
   const inv = c.Mass.inv;
@@ -148,9 +142,7 @@ export const stiffFluidDragSystem = (world: PhysicsWorld): void => {
     stamp = st.fluidStamp,
     stiffK = st.fluidK,
     inv = c.Mass.inv;
-  const vx = c.Velocity.x,
-    vy = c.Velocity.y,
-    vz = c.Velocity.z;
+  const { x: vx, y: vy, z: vz } = c.Velocity;
   const is2D = world.dimensions === 2;
   let check = 0;
   for (let i = 0; i < ents.length; i++) {

@@ -121,9 +121,7 @@ export function gravityFieldError(world: PhysicsWorld, sample = 1000): FieldErro
   const ents = mutualBodies(world);
   const n = ents.length;
   const c = world.components;
-  const px = c.Position.x,
-    py = c.Position.y,
-    pz = c.Position.z,
+  const { x: px, y: py, z: pz } = c.Position,
     pm = c.Mass.value;
   const x = new Float64Array(n),
     y = new Float64Array(n),
@@ -201,9 +199,7 @@ export function gravityMomentumRate(world: PhysicsWorld): GravityMomentumRate {
         fz[i] = w * t.az[s]!;
       }
     } else {
-      const px = c.Position.x,
-        py = c.Position.y,
-        pz = c.Position.z;
+      const { x: px, y: py, z: pz } = c.Position;
       const L = world.laws;
       const G = L.gravitationalConstant,
         eps2 = L.gravitySoftening ** 2;

@@ -38,9 +38,7 @@ export const gravityScaleSystem: ForceLaw = (world: PhysicsWorld): void => {
     gz = g[2]!;
   const s = c.GravityScale.value,
     m = c.Mass.value,
-    fx = c.Force.x,
-    fy = c.Force.y,
-    fz = c.Force.z;
+    { x: fx, y: fy, z: fz } = c.Force;
   runParallel(world, 'gravityScaleSystem', gravityScale, [s, m, fx, fy, fz], [gx, gy, gz], ents.length, ents);
 };
 gravityScaleSystem.velocityDependent = false;
@@ -108,13 +106,9 @@ export const attractorSystem: ForceLaw = (world: PhysicsWorld): void => {
   if (sources.length === 0) return;
   const bodies = query(world, pulledTerms(world));
   const G = world.laws.gravitationalConstant;
-  const px = c.Position.x,
-    py = c.Position.y,
-    pz = c.Position.z,
+  const { x: px, y: py, z: pz } = c.Position,
     m = c.Mass.value;
-  const fx = c.Force.x,
-    fy = c.Force.y,
-    fz = c.Force.z;
+  const { x: fx, y: fy, z: fz } = c.Force;
   const M = c.Attractor.mass,
     soft = c.Attractor.softening;
   // Each body sums its sources in their order (kernel `attractors`), on the world's threads when that pays.

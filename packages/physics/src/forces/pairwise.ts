@@ -15,12 +15,8 @@ import type { PhysicsWorld } from '../world/options.js';
 export function inverseSquarePairs(world: PhysicsWorld, ents: ArrayLike<number>, s: ArrayLike<number>, scale: number, eps2: number): void {
   const c = world.components;
   const n = ents.length;
-  const px = c.Position.x,
-    py = c.Position.y,
-    pz = c.Position.z;
-  const fx = c.Force.x,
-    fy = c.Force.y,
-    fz = c.Force.z;
+  const { x: px, y: py, z: pz } = c.Position;
+  const { x: fx, y: fy, z: fz } = c.Force;
   for (let i = 0; i < n; i++) {
     const a = ents[i]!;
     const sa = scale * s[a]!;

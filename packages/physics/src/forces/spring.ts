@@ -25,15 +25,9 @@ export const springSystem: ForceLaw = (world: PhysicsWorld): void => {
   const inv = c.Mass.inv;
   const limit = STIFF_RATE / world.h;
   let stiff = 0;
-  const px = c.Position.x,
-    py = c.Position.y,
-    pz = c.Position.z;
-  const vx = c.Velocity.x,
-    vy = c.Velocity.y,
-    vz = c.Velocity.z;
-  const fx = c.Force.x,
-    fy = c.Force.y,
-    fz = c.Force.z;
+  const { x: px, y: py, z: pz } = c.Position;
+  const { x: vx, y: vy, z: vz } = c.Velocity;
+  const { x: fx, y: fy, z: fz } = c.Force;
   for (let i = 0; i < springs.length; i++) {
     const s = springs[i]!;
     const a = S.a[s]!,
@@ -103,12 +97,8 @@ export const stiffSpringDampingSystem = (world: PhysicsWorld): void => {
   const S = c.Spring,
     inv = c.Mass.inv,
     h = world.h;
-  const px = c.Position.x,
-    py = c.Position.y,
-    pz = c.Position.z;
-  const vx = c.Velocity.x,
-    vy = c.Velocity.y,
-    vz = c.Velocity.z;
+  const { x: px, y: py, z: pz } = c.Position;
+  const { x: vx, y: vy, z: vz } = c.Velocity;
   const is2D = world.dimensions === 2;
   let check = 0;
   const move = (e: number, j: number, ux: number, uy: number, uz: number): void => {

@@ -20,9 +20,7 @@ export const thrustSystem: ForceLaw = (world: PhysicsWorld): void => {
   const T = c.Thrust,
     m = c.Mass.value;
   const elapsed = world.time - world.substepStart;
-  const fx = c.Force.x,
-    fy = c.Force.y,
-    fz = c.Force.z;
+  const { x: fx, y: fy, z: fz } = c.Force;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
     const mdot = T.massFlowRate[e]!;

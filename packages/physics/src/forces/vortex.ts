@@ -14,12 +14,8 @@ export const vortexSystem: ForceLaw = (world: PhysicsWorld): void => {
   const ents = query(world, [c.Vortex, c.Position, c.Force]);
   if (ents.length === 0) return;
   const V = c.Vortex;
-  const px = c.Position.x,
-    py = c.Position.y,
-    pz = c.Position.z;
-  const fx = c.Force.x,
-    fy = c.Force.y,
-    fz = c.Force.z;
+  const { x: px, y: py, z: pz } = c.Position;
+  const { x: fx, y: fy, z: fz } = c.Force;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
     const ax = V.axisX[e]!,

@@ -78,9 +78,7 @@ function advanceAngles(world: PhysicsWorld, ents: ArrayLike<number>, h: number):
 function advanceQuaternions(world: PhysicsWorld, ents: ArrayLike<number>, h: number): number {
   const c = world.components;
   const { x: wx, y: wy, z: wz } = c.AngularVelocity;
-  const qx = c.Orientation.x,
-    qy = c.Orientation.y,
-    qz = c.Orientation.z,
+  const { x: qx, y: qy, z: qz } = c.Orientation,
     qw = c.Orientation.w;
   let check = 0;
   for (let i = 0; i < ents.length; i++) {

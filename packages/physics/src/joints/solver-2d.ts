@@ -293,8 +293,7 @@ function prepareRows(world: PhysicsWorld, hs: number, n: number, jBias: number, 
     ri = js.rowInts,
     imp = js.impulses,
     f = frame;
-  const px = c.Position.x,
-    py = c.Position.y,
+  const { x: px, y: py } = c.Position,
     ang = c.Angle.value;
   for (let r = 0; r < n; r++) {
     const o = r * ROW_FLOATS,

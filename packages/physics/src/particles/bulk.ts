@@ -175,9 +175,7 @@ function fillRecycled(job: BulkJob, done: number): number {
   if (recycled <= 0) return done;
   const slots = new Int32Array(recycled);
   bornSlots(world, job.archetype, recycled, slots);
-  const OX = c.PreviousPosition.x,
-    OY = c.PreviousPosition.y,
-    OZ = c.PreviousPosition.z;
+  const { x: OX, y: OY, z: OZ } = c.PreviousPosition;
   const prev = job.prev;
   for (let k = 0; k < recycled; k++) {
     const e = slots[k]!;
@@ -227,12 +225,8 @@ function fillFresh(job: BulkJob, done: number): void {
   const { world, handles, options, propertyOf, key, p, v } = job;
   const d = world.dimensions;
   const c = world.components;
-  const X = c.Position.x,
-    Y = c.Position.y,
-    Z = c.Position.z,
-    VX = c.Velocity.x,
-    VY = c.Velocity.y,
-    VZ = c.Velocity.z;
+  const { x: X, y: Y, z: Z } = c.Position,
+    { x: VX, y: VY, z: VZ } = c.Velocity;
   const m = job.count - done;
   const first = bornFresh(world, job.archetype, m);
   const end = first + m;

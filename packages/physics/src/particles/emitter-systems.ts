@@ -48,12 +48,8 @@ export function lifetimeSystem(world: PhysicsWorld): void {
     }
   }
   if (n === 0) return;
-  const px = c.Position.x,
-    py = c.Position.y,
-    pz = c.Position.z,
-    vx = c.Velocity.x,
-    vy = c.Velocity.y,
-    vz = c.Velocity.z;
+  const { x: px, y: py, z: pz } = c.Position,
+    { x: vx, y: vy, z: vz } = c.Velocity;
   b.burstCount = 0;
   const hooks = b.hooks,
     removeHooks = world.removeHooks;
@@ -185,12 +181,8 @@ export function emitterSystem(world: PhysicsWorld): void {
   const b = book(world);
   const E = c.Emitter;
   const dt = world.dt;
-  const px = c.Position.x,
-    py = c.Position.y,
-    pz = c.Position.z,
-    vx = c.Velocity.x,
-    vy = c.Velocity.y,
-    vz = c.Velocity.z;
+  const { x: px, y: py, z: pz } = c.Position,
+    { x: vx, y: vy, z: vz } = c.Velocity;
   for (let i = 0; i < ems.length; i++) {
     const em = ems[i]!;
     if (!entityExists(world, em) || !hasComponent(world, em, E)) continue;

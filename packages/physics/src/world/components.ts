@@ -511,15 +511,6 @@ export function storesAllocatedWith(name: keyof Components): ReadonlyArray<keyof
 type TypedArray = Float64Array | Int32Array | Uint32Array | Uint8Array;
 
 /**
- * Whether every array of `store` has room for `capacity` entities (a store that has no arrays counts as allocated).
- * @category Bodies
- */
-export function isStoreAllocated(store: object, capacity: number): boolean {
-  for (const arr of Object.values(store)) if (ArrayBuffer.isView(arr) && (arr as TypedArray).length < capacity + 1) return false;
-  return true;
-}
-
-/**
  * Gives every array of `store` room for `capacity` entities if it has none yet (see LAZY_GROUPS): the
  * store object keeps its identity, only its empty arrays are replaced by zero-filled ones, on a
  * SharedArrayBuffer if `shared` (a world with threads > 1). @returns whether it allocated anything.

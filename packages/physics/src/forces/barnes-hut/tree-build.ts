@@ -294,9 +294,7 @@ function splitCells(t: GravityTree, n: number, cx: number, cy: number, cz: numbe
     t.parent[k] = parent;
     if (hi - lo <= LEAF_SIZE || !(h > minHalf) || depth >= MAX_DEPTH - 1) {
       if (!inA) {
-        const x = t.x,
-          y = t.y,
-          z = t.z,
+        const { x, y, z } = t,
           m = t.m,
           p = t.perm,
           x2 = t.x2,

@@ -364,9 +364,7 @@ export function treeField(t: GravityTree, i: number, G: number, eps2: number, th
     skip = t.skip,
     start = t.start,
     end = t.end,
-    X = t.x,
-    Y = t.y,
-    Z = t.z,
+    { x: X, y: Y, z: Z } = t,
     Mb = t.m;
   const xi = X[s]!,
     yi = Y[s]!,
