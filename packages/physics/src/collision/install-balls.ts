@@ -11,6 +11,7 @@ import {
   approachBallRows,
   ballRestitution,
   endBallSubstep,
+  gatherBallBodies,
   planBallRows,
   prepareBallRows,
   solveBallRows,
@@ -42,8 +43,7 @@ export function installBalls(world: PhysicsWorld): void {
       dimensions: 0,
       pushesUnmarked: false,
       toSolve: (w) => w.collision.contacts.count > 0,
-      // Their bodies are gathered first, from the contact buffer (solver/contact-solver.ts gatherBodies).
-      gather: (_w, count) => count,
+      gather: (w, count) => gatherBallBodies(w, w.collision.contacts, count),
       prepare: (w) => prepareBallRows(w, w.collision.contacts),
       warmStart: (w) => warmStartBallRows(w, w.collision.contacts),
       solve: (w, _hs, useBias) => solveBallRows(w, w.collision.contacts, useBias),

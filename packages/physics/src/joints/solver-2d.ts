@@ -99,8 +99,8 @@ export function jointsToSolve(world: PhysicsWorld): boolean {
 }
 
 /**
- * Builds this step's joint rows and gives the moving bodies of every joint a solver index (after the
- * contacts' bodies, in `world.collision.solverBodies`, marked with the current `solverStamp`). Also
+ * Builds this step's joint rows and gives the moving bodies of every joint a solver index (from `count`
+ * on, in `world.collision.solverBodies`, marked with the current `solverStamp`). Also
  * writes, for those bodies, the per-entity scratch the contact solver's gather reads (inverse mass and
  * inertia, body type), since bodies without colliders are not seen by the broadphase.
  * @returns the new solver body count.

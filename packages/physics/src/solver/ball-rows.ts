@@ -5,7 +5,7 @@
  * solver/row-families.ts, where `installBalls` (collision/install-balls.ts) puts them when a program first
  * makes a ball, so a program of shapes and joints only does not bring them into its bundle.
  *
- * Stages, in the solver's order: `prepareBallRows` (combined material, effective masses, tangent
+ * Stages, in the solver's order: `gatherBallBodies` (the rows' bodies into the solver's list); `prepareBallRows` (combined material, effective masses, tangent
  * basis, last step's impulses: warm start); `approachBallRows` (the impact stage of solver/impacts.ts,
  * the coloured solve's plan on a threaded 2D world, the approach speeds for restitution, the soft
  * coefficients); `planBallRows` (the relax sweep's first rows, the coloured substeps when they take the
@@ -24,9 +24,53 @@ import { solveColoredSubsteps, startStripPlan, useColoredSolve } from './colorin
 import { ballContactHertz, ballContactPushSpeed, ballStickSpeed, contactLength } from './contact-scale.js';
 import { applyImpacts, releaseImpactedRows } from './impacts.js';
 import * as RESTITUTION from './slots/restitution.js';
+import { withRoom } from './solver-bodies.js';
 import { restitutionTargets } from './stages-kernel.js';
 import { restitutionOnThreads, storeWarmStartOnThreads } from './stages-threads.js';
 import { downward3Into, downwardInto, markFirstRelaxRows } from './support.js';
+
+/**
+ * Stage 1 for the ball rows: gives the bodies of the rows of `buf` solver indices from `count` on (each
+ * body once a step, marked with `solverStamp` in `solverMark`, appended to `solverBodies`) and writes
+ * each row's indices to `buf.ia` and `buf.ib` (0, the static row, for a wall or segment on side a;
+ * side b is always a moving ball). Returns the new solver body count.
+ * @category Collision
+ */
+export function gatherBallBodies(world: PhysicsWorld, buf: ContactBuffer, count: number): number {
+  const cs = world.collision;
+  const n = buf.count;
+  const mark = cs.solverMark,
+    index = cs.solverIndex,
+    stamp = cs.solverStamp;
+  // Room for both bodies of every row, made before the loop (solver/solver-bodies.ts withRoom).
+  const list = withRoom(cs.solverBodies, count + 2 * n);
+  const A = buf.a,
+    B = buf.b,
+    IA = buf.ia,
+    IB = buf.ib;
+  for (let i = 0; i < n; i++) {
+    const a = A[i]!,
+      b = B[i]!;
+    if (a === 0) {
+      IA[i] = 0;
+    } else {
+      if (mark[a] !== stamp) {
+        mark[a] = stamp;
+        index[a] = count;
+        list[count++] = a;
+      }
+      IA[i] = index[a]!;
+    }
+    if (mark[b] !== stamp) {
+      mark[b] = stamp;
+      index[b] = count;
+      list[count++] = b;
+    }
+    IB[i] = index[b]!;
+  }
+  cs.solverBodies = list;
+  return count;
+}
 
 /**
  * Stage 2 for the ball rows: prepares this step's rows (prepareContacts) with the friction stick

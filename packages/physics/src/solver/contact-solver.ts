@@ -46,9 +46,10 @@ import { finishStage, gatherFillStage } from './stages-threads.js';
  * integrate stage has already run. Its named stages, in order (each stage marked * runs over every row
  * family, solver/row-families.ts: the joints', the ball contacts', the shape contacts', in FAMILY_ORDER):
  *
- * 1. `gatherBodies`: the moving bodies that have contacts go into a packed solver state (one row per
- *    body, kept apart from the components: Box2D's b2BodyState); this step's gravity is rewound from
- *    their velocity (the integrate stage added g h; the substeps add it back in pieces);
+ * 1. `gatherBodies`: `gather`* gives the moving bodies of the rows solver indices; they go into a
+ *    packed solver state (one row per body, kept apart from the components: Box2D's b2BodyState); this
+ *    step's gravity is rewound from their velocity (the integrate stage added g h; the substeps add it
+ *    back in pieces);
  * 2. `prepareContacts`*: combined material, effective masses, tangent basis, last step's impulses
  *    (warm start);
  * 3. `applyImpacts` (solver/impacts.ts): every contact with restitution e > 0 that closes within the step
@@ -133,7 +134,7 @@ function solveContacts(world: PhysicsWorld): void {
   const st = cs.settings;
   const substeps = st.solverSubsteps;
   const hs = world.h / substeps;
-  gatherBodies(world, buf, families);
+  gatherBodies(world, families);
   clearBodyImpacts(world);
   for (const f of list) f.prepare(world, hs);
   // A threaded 2D world with only ball contacts solves them colour by colour on its threads
@@ -182,62 +183,27 @@ function stride(world: PhysicsWorld): number {
 }
 
 /**
- * Gives every moving body touched by a contact a solver index (0 is the static world), fills its
- * packed row (velocity with this step's gravity rewound, zero displacement, inverse mass and
- * inertia) and its extra row (where the integrator put it, beyond x0 + v h; the rotation still owed),
- * and writes each contact's solver indices.
+ * Gives every moving body of this step's rows a solver index (0 is the static world): each family's
+ * `gather`, in FAMILY_ORDER, continues the list (and writes its rows' solver indices); then fills each
+ * body's packed row (velocity with this step's gravity rewound, zero displacement, inverse mass and
+ * inertia) and its extra row (where the integrator put it, beyond x0 + v h; the rotation still owed).
  */
-function gatherBodies(world: PhysicsWorld, buf: ContactBuffer, families: RowFamilies): void {
+function gatherBodies(world: PhysicsWorld, families: RowFamilies): void {
   const cs = world.collision;
-  const n = buf.count;
-  const mark = cs.solverMark,
-    index = cs.solverIndex;
-  const stamp = ++cs.solverStamp;
-  // Room for both bodies of every row, on shared memory in a threaded 2D world: the coloured solve's
-  // stages read the list on the workers (solver/coloring.ts startStripPlan, solver/stages-threads.ts).
-  const shareList = world.threadPool !== null && world.dimensions === 2;
-  let list = cs.solverBodies;
-  if (list.length < 2 * n + 1 || (shareList && !isShared(list))) {
-    // Doubling: a threaded pool keeps every array it has been given (threads/pool.ts), so the list must
-    // not grow a little every step while a pile's rows grow.
-    const size = list.length < 2 * n + 1 ? Math.max(2 * n + 1, 2 * list.length) : list.length;
-    list = shareList ? sharedLike(list, size) : new Int32Array(size);
-  }
+  // A threaded 2D world keeps the body list and the solver state on shared memory: the coloured solve's
+  // stages read them on the workers (solver/coloring.ts, solver/stages-threads.ts); growth keeps the
+  // list there (solver/solver-bodies.ts withRoom).
+  const shared = world.threadPool !== null && world.dimensions === 2;
+  // The families mark their bodies with this stamp (solverMark).
+  cs.solverStamp++;
+  if (shared && !isShared(cs.solverBodies)) cs.solverBodies = sharedLike(cs.solverBodies, cs.solverBodies.length);
+  cs.solverBodies[0] = 0;
   let count = 1;
-  list[0] = 0;
-  const A = buf.a,
-    B = buf.b,
-    IA = buf.ia,
-    IB = buf.ib;
-  for (let i = 0; i < n; i++) {
-    const a = A[i]!,
-      b = B[i]!;
-    if (a === 0) {
-      IA[i] = 0;
-    } else {
-      if (mark[a] !== stamp) {
-        mark[a] = stamp;
-        index[a] = count;
-        list[count++] = a;
-      }
-      IA[i] = index[a]!;
-    }
-    if (mark[b] !== stamp) {
-      mark[b] = stamp;
-      index[b] = count;
-      list[count++] = b;
-    }
-    IB[i] = index[b]!;
-  }
-  cs.solverBodies = list;
-  // Then the other families' bodies (the ball rows' gather adds none: theirs are the buffer's, above).
   const rows = families.list;
   for (const f of rows) count = f.gather(world, count);
   cs.solverBodyCount = count;
 
   const S = stride(world);
-  // A threaded world keeps the solver state on shared memory (the coloured solve, solver/coloring.ts).
-  const shared = world.threadPool !== null && world.dimensions === 2;
   if (cs.bodyState.length < count * BS3_STRIDE || (shared && !isShared(cs.bodyState))) {
     const sizeS = Math.max(count * BS3_STRIDE, cs.bodyState.length * 2),
       sizeE = Math.max(count * BX_STRIDE, cs.bodyExtra.length * 2);

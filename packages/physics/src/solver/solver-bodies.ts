@@ -1,4 +1,5 @@
 import { BodyType, type CollisionState } from '../collision/state.js';
+import { isShared, sharedLike } from '../threads/pool.js';
 
 /**
  * The solver's body list (`CollisionState.solverBodies`): every store of rows (ball contacts, 2D and
@@ -6,14 +7,16 @@ import { BodyType, type CollisionState } from '../collision/state.js';
  */
 
 /**
- * `list` if it holds `n` entries, else a copy in an array of at least n (twice its length). Callers grow
+ * `list` if it holds `n` entries, else a copy in an array of at least n (twice its length), on shared
+ * memory if `list` is (a threaded 2D world's list, which its workers read: solver/coloring.ts). Callers grow
  * the list before their loops: growth runs only in a world's first steps, before V8 records type
  * feedback, and inside a loop it would be compiled as a deoptimisation that throws the whole loop back
  * to the interpreter in a later world.
  */
 export function withRoom(list: Int32Array, n: number): Int32Array {
   if (list.length >= n) return list;
-  const grown = new Int32Array(Math.max(n, 2 * list.length));
+  const size = Math.max(n, 2 * list.length);
+  const grown = isShared(list) ? sharedLike(list, size) : new Int32Array(size);
   grown.set(list);
   return grown;
 }
