@@ -26,7 +26,7 @@
  * photon ring, an orange glow and a tilted disc of hot gas whose clumps go round it; the exhaust
  * (particles, additive); the ship with a flame opposite its thrust; its predicted path for the next 3 s, integrated in a small second world
  * (rules.ts `predictPath`) and drawn as fading dots, red where it falls into a hole (a ring) or leaves the
- * field (a cross at the edge: the ship would be lost), blue where it stays clear (on the pad, before the first thrust, the path holding ↑ would take, 3 s of it).
+ * field (a cross at the edge: the ship would be lost), blue where it reaches the finish line, grey where it runs on mid-field, undecided (on the pad, before the first thrust, the path holding ↑ would take, 3 s of it).
  */
 
 import {
@@ -156,6 +156,16 @@ const path = new Float64Array(2 * (Math.max(PATH_STEPS, PAD_PATH_STEPS) + 1));
 let pathPoints = 0;
 /** How the path drawn in the last frame ends (./rules.ts `pathEnd`). */
 let pathKind: PathEnd = 'clear';
+/**
+ * Whether the path drawn in the last frame reaches the finish line. A 'clear' path that does not (it
+ * runs its full 3 s mid-field) is undecided, not safe: it may still run into a hole beyond its end, so
+ * it is drawn in a neutral grey (PATH_OPEN), and blue (PATH_CLEAR) only when it reaches the line.
+ */
+let pathReachesLine = false;
+/** Colours of the predicted path: falls in or lost; reaches the line; runs on, undecided. */
+const PATH_WARN = 0xff5a4a,
+  PATH_CLEAR = 0x9fd3ff,
+  PATH_OPEN = 0xb4b4b4;
 
 /**
  * The field for the stage's shape: on a wide screen 32 m across and as tall as the stage allows
@@ -217,7 +227,7 @@ const game = await startPixiGame({
       ? { keys: '← ↑ → ↓', action: 'thrust; seam of two: diagonal', touch: 'hold ← ↑ → ↓' }
       : { keys: '← ↑ → ↓', action: 'thrust: a tap nudges, a hold builds up (two at once: diagonal)', touch: 'hold, slide ← ↑ → ↓' },
     { keys: 'Enter', action: 'next level / continue from this level', touch: 'the big button' },
-    { keys: 'F', action: 'predicted path on / off (red: falls in or lost, blue: clear)' },
+    { keys: 'F', action: 'predicted path on / off (red: falls in or lost, blue: reaches the line, grey: undecided)' },
     { keys: 'V', action: 'replay the run from the start' },
   ],
   keys: [
@@ -711,6 +721,17 @@ function arc(g: Graphics, x: number, y: number, a: number, b: number, t0: number
 const holeExtents: number[][] = [];
 
 /**
+ * The holes drawn in the last frame that had any, m: x, y, horizon radius of each in turn. A cleared
+ * level takes its holes off the field (./levels.ts) until the next begins; meanwhile these are drawn
+ * dimmed (at GHOST_ALPHA) under the level's summary, so the field does not go empty round the ship.
+ */
+const shownHoles: number[] = [];
+/** How strongly the cleared level's holes show while the next level waits (0 to 1). */
+const GHOST_ALPHA = 0.3;
+/** Whether the last frame drew the cleared level's holes dimmed (no live holes, a level waiting). */
+let ghostHoles = false;
+
+/**
  * Each hole, every frame: an orange glow, the far half of a tilted disc of hot gas, the horizon (a
  * black disc of the Schwarzschild radius with a thin bright photon ring), then the near half of the
  * disc across its face. Clumps of gas ride the disc, faster near the hole. The disc and the glow
@@ -722,18 +743,24 @@ function drawHoles(world: PhysicsWorld): void {
   holesLayer.clear();
   const P = world.components.Position;
   const t = world.time;
-  while (holeGlows.length < bh.holes.length) {
+  if (bh.holes.length > 0) {
+    shownHoles.length = 0;
+    for (let i = 0; i < bh.holes.length; i++) shownHoles.push(P.x[slotOf(bh.holes[i]!)]!, P.y[slotOf(bh.holes[i]!)]!, bh.holeRadius[i]!);
+  } else if (!run?.waiting || bh.over) shownHoles.length = 0;
+  ghostHoles = bh.holes.length === 0 && shownHoles.length > 0;
+  holeField.alpha = ghostHoles ? GHOST_ALPHA : 1;
+  const n = shownHoles.length / 3;
+  while (holeGlows.length < n) {
     const sprite = new Sprite({ texture: glow, anchor: 0.5, blendMode: 'add', tint: 0xff7a2a, alpha: 0.75 });
     holeGlows.push(sprite);
     holeGlowLayer.addChild(sprite);
   }
-  for (let i = 0; i < holeGlows.length; i++) holeGlows[i]!.visible = i < bh.holes.length;
+  for (let i = 0; i < holeGlows.length; i++) holeGlows[i]!.visible = i < n;
   holeExtents.length = bh.holes.length;
-  for (let i = 0; i < bh.holes.length; i++) {
-    const h = bh.holes[i]!;
-    const hx = P.x[slotOf(h)]!,
-      hy = P.y[slotOf(h)]!,
-      hr = bh.holeRadius[i]!;
+  for (let i = 0; i < n; i++) {
+    const hx = shownHoles[3 * i]!,
+      hy = shownHoles[3 * i + 1]!,
+      hr = shownHoles[3 * i + 2]!;
     const x = cam.toScreenX(hx),
       y = cam.toScreenY(hy),
       r = cam.toScreenLength(hr);
@@ -741,12 +768,13 @@ function drawHoles(world: PhysicsWorld): void {
     const room = Math.max(1.05 * hr, Math.min(hx, playField.width - hx));
     const aM = Math.min(DISC.outer * hr, room),
       glowM = Math.min(3.5 * hr, room, hy, playField.height - hy);
-    holeExtents[i] = [
-      hx - Math.max(aM, glowM),
-      hx + Math.max(aM, glowM),
-      hy - Math.max(DISC.tilt * aM, glowM),
-      hy + Math.max(DISC.tilt * aM, glowM),
-    ];
+    if (!ghostHoles)
+      holeExtents[i] = [
+        hx - Math.max(aM, glowM),
+        hx + Math.max(aM, glowM),
+        hy - Math.max(DISC.tilt * aM, glowM),
+        hy + Math.max(DISC.tilt * aM, glowM),
+      ];
     const sprite = holeGlows[i]!;
     sprite.position.set(x, y);
     // The glow texture fades to nothing at its rim: 2 x glowM across.
@@ -1099,6 +1127,8 @@ function drawPathEnd(lx: number, ly: number, color: number): void {
   };
   let ex = cam.toScreenX(lx),
     ey = cam.toScreenY(ly);
+  // How far the ring round the hole reaches from the end, px (0 with no ring).
+  let endRing = 0;
   if (pathKind === 'falls') {
     // The hole whose horizon (plus the ship's size) the end is nearest.
     const P = bh.world.components.Position;
@@ -1113,6 +1143,7 @@ function drawPathEnd(lx: number, ly: number, color: number): void {
     }
     if (best < Infinity) {
       const rr = cam.toScreenLength(hr) + 5;
+      endRing = rr + Math.hypot(cam.toScreenX(hx) - ex, cam.toScreenY(hy) - ey);
       overlay.circle(cam.toScreenX(hx), cam.toScreenY(hy), rr).stroke({ width: 6, color: 0x000000, alpha: 0.6 });
       overlay.circle(cam.toScreenX(hx), cam.toScreenY(hy), rr).stroke({ width: 3, color, alpha: 1 });
     }
@@ -1140,13 +1171,22 @@ function drawPathEnd(lx: number, ly: number, color: number): void {
   if (!pathLabel.visible) return;
   const word = pathKind === 'falls' ? 'falls in' : 'lost';
   if (pathLabel.text !== word) pathLabel.text = word;
-  // Beside the cross, on the side towards the field's middle, kept inside the field.
+  // Beside the cross, on the side towards the field's middle, kept inside the field; and set back
+  // from the end towards where the path came from, clear of the ring and the end's surroundings (beside
+  // the end on a wall of holes it covered the wall's gap, the way the player looks for).
   const left = ex > cam.toScreenX(playField.width / 2);
-  pathLabel.anchor.set(left ? 1 : 0, 0.5);
+  const back = Math.max(0, pathPoints - 31);
+  const by = cam.toScreenY(path[2 * back + 1]!);
+  const down = by >= ey; // the path came up from below on screen: the label goes below the end
+  pathLabel.anchor.set(left ? 1 : 0, down ? 0 : 1);
   const x0 = cam.toScreenX(0) + 4,
     x1 = cam.toScreenX(playField.width) - 4;
-  const at = left ? Math.max(x0 + pathLabel.width, ex - 12) : Math.min(x1 - pathLabel.width, ex + 12);
-  pathLabel.position.set(at, Math.max(cam.toScreenY(playField.height) + 10, Math.min(cam.toScreenY(0) - 10, ey)));
+  const at = left ? Math.max(x0 + pathLabel.width, ex - 10) : Math.min(x1 - pathLabel.width, ex + 10);
+  const off = Math.max(16, endRing + 8);
+  const top = cam.toScreenY(playField.height) + 4,
+    bottom = cam.toScreenY(0) - 4;
+  const ly2 = down ? Math.min(bottom - pathLabel.height, ey + off) : Math.max(top + pathLabel.height, ey - off);
+  pathLabel.position.set(at, ly2);
 }
 
 /** Over the field while paused: the scene dimmed and "Paused", so a pause is not taken for a hang. */
@@ -1248,12 +1288,14 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
     padPath = fromPad;
     // A path that ends on a horizon is drawn red with a ring where it falls in, so the pull of a wall
     // bending the ship into it shows ahead; one that leaves the field (the ship would be lost) red
-    // with a cross where it leaves; a clear one blue.
+    // with a cross where it leaves; one that reaches the line blue; one that runs on mid-field grey.
     const lx = path[2 * pathPoints - 2]!,
       ly = path[2 * pathPoints - 1]!;
     pathKind = pathEnd(bh, path, pathPoints, steps);
+    pathReachesLine = false;
+    for (let i = 0; i < pathPoints && !pathReachesLine; i++) pathReachesLine = path[2 * i + 1]! >= bh.lineY;
     const warn = pathKind !== 'clear';
-    const color = warn ? 0xff5a4a : 0x9fd3ff;
+    const color = warn ? PATH_WARN : pathReachesLine ? PATH_CLEAR : PATH_OPEN;
     // Dots fade along the path but stay plain to the end (faded to nothing, a path seemed to stop short).
     for (let i = 1; i < pathPoints; i += 2) {
       overlay
@@ -1264,6 +1306,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   } else {
     pathPoints = 0;
     pathKind = 'clear';
+    pathReachesLine = false;
     padPath = false;
     pathLabel.visible = false;
   }
@@ -1350,6 +1393,14 @@ shell.expose({
   padPath: (): boolean => padPath,
   /** How that path ended (./rules.ts `pathEnd`: drawn blue when 'clear', red when it 'falls' or is 'lost'); 'clear' when none was drawn. */
   pathEnd: (): PathEnd => pathKind,
+  /**
+   * How the path drawn in the last frame reads by its colour: 'warn' (red: falls in or lost), 'clear'
+   * (blue: it reaches the finish line), 'open' (grey: it runs on mid-field, undecided), '' when none was drawn.
+   */
+  pathShade: (): 'warn' | 'clear' | 'open' | '' =>
+    pathPoints === 0 ? '' : pathKind !== 'clear' ? 'warn' : pathReachesLine ? 'clear' : 'open',
+  /** Whether the last frame drew the cleared level's holes dimmed while the next level waits. */
+  ghostHoles: (): boolean => ghostHoles,
   /**
    * The level's title while it is due (at a level's start, until the first thrust; it fades from the
    * screen after BANNER_MS, see `levelBannerAlpha`), else ''.

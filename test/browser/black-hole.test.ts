@@ -20,6 +20,8 @@ interface BlackHolePage {
   edgeWarning(): boolean;
   pathEnd(): 'clear' | 'falls' | 'lost';
   pathLabel(): string;
+  pathShade(): 'warn' | 'clear' | 'open' | '';
+  ghostHoles(): boolean;
   deathEffect(): { count: number; text: string; flashPeak: number };
 }
 
@@ -70,7 +72,7 @@ describe('black hole', () => {
       return w.padPath() && w.pathPoints() > 10;
     }, null);
     expect(await g.page.evaluate(() => document.body.textContent)).toContain(
-      'predicted path on / off (red: falls in or lost, blue: clear)',
+      'predicted path on / off (red: falls in or lost, blue: reaches the line, grey: undecided)',
     );
     // The title covers none of the holes (it was printed under the finish line, over the holes and a
     // wall's gap): it sits in the open field below them.
@@ -119,10 +121,47 @@ describe('black hole', () => {
     });
     expect(g.errors).toEqual([]);
   });
+
+  it('a path that runs its length mid-field, short of a hole straight ahead, is grey, not blue', async () => {
+    type Bh = BlackHolePage & {
+      paused: boolean;
+      reset(): void;
+      bh: { ship: number; holes: number[]; lineY: number; world: { components: Record<string, { x: Float64Array; y: Float64Array }> } };
+      level: { parked: boolean };
+      pathPoints(): number;
+      padPath(): boolean;
+    };
+    // The ship put 9 m straight below level 1's first hole, creeping up at 0.2 m/s: 3 s of path stop
+    // well short of the hole and of the line, so whether it clears is not decided yet.
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as Bh;
+      w.reset();
+      w.paused = true;
+      const c = w.bh.world.components,
+        s = w.bh.ship % 2 ** 25,
+        hole = w.bh.holes[0]! % 2 ** 25;
+      c.Position!.x[s] = c.PreviousPosition!.x[s] = c.Position!.x[hole]!;
+      c.Position!.y[s] = c.PreviousPosition!.y[s] = c.Position!.y[hole]! - 9;
+      c.Velocity!.x[s] = 0;
+      c.Velocity!.y[s] = 0.2;
+      w.level.parked = false;
+    });
+    const drawn = await g.waitFor(() => {
+      const w = window.game as unknown as Bh;
+      return !w.padPath() && w.pathPoints() > 100 ? { shade: w.pathShade(), end: w.pathEnd(), label: w.pathLabel() } : null;
+    }, null);
+    expect(drawn).toEqual({ shade: 'open', end: 'clear', label: '' });
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as Bh;
+      w.reset();
+      w.paused = false;
+    });
+    expect(g.errors).toEqual([]);
+  });
 });
 
 describe('black hole, between levels', () => {
-  it('a cleared level leaves the field empty while the ship waits; Enter lays out the next level', async () => {
+  it('a cleared level takes its holes off the field (drawn dimmed) while the ship waits; Enter lays out the next', async () => {
     type Bh = BlackHolePage & {
       paused: boolean;
       reset(): void;
@@ -143,7 +182,7 @@ describe('black hole, between levels', () => {
       for (let i = 0; i < 30; i++) w.step();
       return { during, later: w.bh.holes.length, line: w.bh.lineY };
     });
-    // Waiting on level 2: no hole on the field (before, level 2's holes were laid out at once, round
+    // Waiting on level 2: no live hole on the field (before, level 2's holes were laid out at once, round
     // the frozen ship), the ship at rest where it crossed, at or past the line (it was put back at
     // the start, which looked as if it fell back below the line it had reached).
     expect(cleared.during).toMatchObject({ waiting: true, next: 2, holes: 0 });
@@ -152,6 +191,10 @@ describe('black hole, between levels', () => {
     // The points the clear made rise from the line (they were only in the status row's numbers).
     const pop = await g.waitFor(() => (window.game as unknown as Bh).scorePop(), null);
     expect(pop).toBe(`+${await g.page.evaluate(() => (window.game as unknown as Bh).level.summary!.points)}`);
+    // The cleared level's holes stay on the field, dimmed, under the summary (an empty field round the
+    // ship looked like a glitch); no live hole is on it meanwhile.
+    expect(await g.waitFor(() => (window.game as unknown as Bh).ghostHoles() || null, null)).toBe(true);
+    expect(await g.page.evaluate(() => (window.game as unknown as Bh).bh.holes.length)).toBe(0);
     await g.page.evaluate(() => {
       (window.game as unknown as Bh).paused = false;
     });
@@ -169,6 +212,7 @@ describe('black hole, between levels', () => {
       return w.holeExtents().length === w.bh.holes.length && w.levelBanner().startsWith('Level 2') ? true : null;
     }, null);
     expect(wallBanner).toBe(true);
+    expect(await g.page.evaluate(() => (window.game as unknown as Bh).ghostHoles())).toBe(false);
     expect(await g.page.evaluate(bannerOverHoles)).toMatchObject({ hits: 0, holes: begun.holes });
     // The last life lost on level 2 (the ship put into a hole): the button and Enter go on from level 2
     // with three lives and a score of 0, not back to level 1.
