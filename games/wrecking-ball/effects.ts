@@ -351,6 +351,17 @@ export class SiteEffects {
     return { bits: this.bits.filter((b) => b.life > 0).length, popups: this.popups.filter((p) => p.sprite.visible).length };
   }
 
+  /**
+   * The visible popups' label boxes on the screen as last stacked (tests): centre (sx, sy) and half
+   * size (hw, hh) in normalised device coordinates, oldest first; all 0 until stacked with another.
+   */
+  popupBoxes(): Array<{ sx: number; sy: number; hw: number; hh: number }> {
+    return this.popups
+      .filter((p) => p.sprite.visible)
+      .sort((a, b) => a.seq - b.seq)
+      .map(({ sx, sy, hw, hh }) => ({ sx, sy, hw, hh }));
+  }
+
   /** Hides everything (a new level). */
   clear(): void {
     for (const b of this.bits) b.life = 0;

@@ -2250,6 +2250,10 @@ shell.expose({
   swingResult: (): string => swing.result,
   /** The effects showing now: dust and chips in the air, score popups. */
   effects: () => effects.counts(),
+  /** Shows score popup `text` rising from (x, y, z), m, as a fall does (tests). */
+  popup: (x: number, y: number, z: number, text: string): void => effects.popup(x, y, z, text),
+  /** The visible popups' label boxes on the screen (see SiteEffects.popupBoxes). */
+  popupBoxes: () => effects.popupBoxes(),
   /** Goes to the next level (banks the score). */
   nextLevel,
   /** The drawing quality now ('full' or 'lite'; see Quality). */
