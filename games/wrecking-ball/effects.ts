@@ -8,6 +8,7 @@
 import {
   BufferAttribute,
   BufferGeometry,
+  type Camera,
   CanvasTexture,
   Color,
   DynamicDrawUsage,
@@ -18,6 +19,7 @@ import {
   SpriteMaterial,
   SRGBColorSpace,
   Vector2,
+  Vector3,
 } from 'three';
 
 /**
@@ -27,6 +29,10 @@ import {
  */
 const BITS = 160,
   POPUPS = 4;
+
+/** The part of a popup's sprite its text covers, across (LABEL_W) and up (LABEL_H). */
+const LABEL_W = 0.7,
+  LABEL_H = 0.7;
 
 /** Seconds a dust puff lives; a chip lives CHIP_LIFE; a popup POPUP_LIFE. */
 const DUST_LIFE = 1.4,
@@ -113,7 +119,29 @@ export class SiteEffects {
   private readonly color = new Color();
   /** Whether a bit showed at the last update (its buffers need one more upload to hide it). */
   private drawn = false;
-  private readonly popups: Array<{ sprite: Sprite; age: number; y0: number }> = [];
+  /**
+   * The popups' sprites: `age` s since shown, `y0` the height it rose from and `lift` m it was raised
+   * by to clear the labels shown before it (never lowered, so a stacked label does not jump back),
+   * `seq` the order it was shown in; `sx`, `sy`, `hw`, `hh` its label's centre and half size on the
+   * screen this frame (normalised device coordinates).
+   */
+  private readonly popups: Array<{
+    sprite: Sprite;
+    age: number;
+    y0: number;
+    lift: number;
+    seq: number;
+    sx: number;
+    sy: number;
+    hw: number;
+    hh: number;
+  }> = [];
+  /** Popups shown so far (their `seq`). */
+  private shownPopups = 0;
+  /** The visible popups, oldest first (reused each frame). */
+  private readonly stack: Array<(typeof this.popups)[number]> = [];
+  private readonly at = new Vector3();
+  private readonly up = new Vector3();
   private readonly labels = new Map<string, CanvasTexture>();
   private next = 0;
   private nextPopup = 0;
@@ -162,7 +190,7 @@ export class SiteEffects {
       sprite.visible = false;
       sprite.renderOrder = 10;
       root.add(sprite);
-      this.popups.push({ sprite, age: 0, y0: 0 });
+      this.popups.push({ sprite, age: 0, y0: 0, lift: 0, seq: 0, sx: 0, sy: 0, hw: 0, hh: 0 });
     }
   }
 
@@ -215,11 +243,16 @@ export class SiteEffects {
     p.sprite.position.set(x, y, z);
     p.y0 = y;
     p.age = 0;
+    p.lift = 0;
+    p.seq = this.shownPopups++;
     p.sprite.visible = true;
   }
 
-  /** Advances every bit and popup by `dt` s. */
-  update(dt: number): void {
+  /**
+   * Advances every bit and popup by `dt` s. With `camera` (the view they are drawn in), labels that
+   * would overlap on the screen are stacked: each is raised over those shown before it.
+   */
+  update(dt: number, camera?: Camera): void {
     let shown = 0;
     for (let i = 0; i < BITS; i++) {
       const b = this.bits[i]!;
@@ -262,15 +295,71 @@ export class SiteEffects {
         continue;
       }
       const t = p.age / POPUP_LIFE;
-      p.sprite.position.y = p.y0 + 1.6 * this.popupScale * (1 - (1 - t) * (1 - t));
+      p.sprite.position.y = p.y0 + p.lift + 1.6 * this.popupScale * (1 - (1 - t) * (1 - t));
       p.sprite.scale.set(3, 1.2, 1).multiplyScalar(this.popupScale * (t < 0.15 ? 0.6 + (0.4 * t) / 0.15 : 1));
       p.sprite.material.opacity = t < 0.7 ? 1 : (1 - t) / 0.3;
     }
+    if (camera) this.unstack(camera);
+  }
+
+  /**
+   * Raises each visible popup, oldest first, until its label's box on the screen (the text's part of
+   * the sprite: LABEL_W of its width, LABEL_H of its height) clears the boxes of those before it.
+   */
+  private unstack(camera: Camera): void {
+    const stack = this.stack;
+    stack.length = 0;
+    for (const p of this.popups) if (p.sprite.visible) stack.push(p);
+    if (stack.length < 2) return;
+    stack.sort((a, b) => a.seq - b.seq);
+    this.up.setFromMatrixColumn(camera.matrixWorld, 1).normalize();
+    for (let i = 0; i < stack.length; i++) {
+      const p = stack[i]!;
+      this.screenBox(p, camera);
+      // Each rise clears one earlier label; at most one rise per label shown (perspective can leave a
+      // sliver of overlap after a rise, which the 1e-3 margin ignores).
+      for (let j = 0, rises = 0; j < i && rises < stack.length; j++) {
+        const q = stack[j]!;
+        if (Math.abs(p.sx - q.sx) >= p.hw + q.hw - 1e-3 || Math.abs(p.sy - q.sy) >= p.hh + q.hh - 1e-3 || p.hh <= 0) continue;
+        rises++;
+        // Screen height to rise by, as metres at the label's distance (its full height is scale.y m).
+        const rise = ((q.sy + q.hh + p.hh - p.sy) / (2 * p.hh)) * p.sprite.scale.y * LABEL_H;
+        p.lift += rise;
+        p.sprite.position.y += rise;
+        this.screenBox(p, camera);
+        j = -1; // it moved: check it against every earlier label again
+      }
+    }
+  }
+
+  /** Popup `p`'s label centre and half size on the screen of `camera`, normalised device coordinates. */
+  private screenBox(p: (typeof this.popups)[number], camera: Camera): void {
+    const c = this.at.copy(p.sprite.position).project(camera);
+    p.sx = c.x;
+    p.sy = c.y;
+    const top = this.at
+      .copy(p.sprite.position)
+      .addScaledVector(this.up, 0.5 * p.sprite.scale.y)
+      .project(camera);
+    p.hh = Math.abs(top.y - p.sy) * LABEL_H;
+    const aspect = (camera as { aspect?: number }).aspect ?? 1;
+    p.hw = ((p.hh / LABEL_H) * (p.sprite.scale.x / p.sprite.scale.y) * LABEL_W) / aspect;
   }
 
   /** Bits and popups showing now (tests). */
   counts(): { bits: number; popups: number } {
     return { bits: this.bits.filter((b) => b.life > 0).length, popups: this.popups.filter((p) => p.sprite.visible).length };
+  }
+
+  /**
+   * The visible popups' label boxes on the screen as last stacked (tests): centre (sx, sy) and half
+   * size (hw, hh) in normalised device coordinates, oldest first; all 0 until stacked with another.
+   */
+  popupBoxes(): Array<{ sx: number; sy: number; hw: number; hh: number }> {
+    return this.popups
+      .filter((p) => p.sprite.visible)
+      .sort((a, b) => a.seq - b.seq)
+      .map(({ sx, sy, hw, hh }) => ({ sx, sy, hw, hh }));
   }
 
   /** Hides everything (a new level). */

@@ -211,8 +211,6 @@ function gameStep(world: PhysicsWorld): void {
   if (gained > 0) {
     if (!cleared) levelScore += gained;
     if (reachedAt >= 0) reachedAt = world.time;
-    // A fallen piece keeps its material, darkened (grey read as a different material).
-    for (const p of handles.pieces) if (p.fallen && isAlive(world, p.body) && p.body !== lit) tint(p.body, FALLEN_TINT);
   }
   if (!cleared && reachedAt < 0 && fallenCount(handles.pieces) >= clearTarget(handles.pieces, handles.level)) {
     reachedAt = world.time;
@@ -382,9 +380,12 @@ function asDrawn(m: MeshStandardMaterial): Material {
   }
   return c;
 }
-/** Instance tints: a standing piece as painted, a fallen one darker, the target of a swing lit. */
-const STANDING_TINT = 0xffffff,
-  FALLEN_TINT = 0x8c8c8c,
+/**
+ * Instance tints: a piece as painted, standing or fallen (the sun on its turned faces shades a fallen
+ * one; a grey tint is read as sRGB and made linear, so even a light grey such as 0x8c8c8c would draw
+ * it at a quarter of its brightness, near black), the target of a swing lit.
+ */
+const PIECE_TINT = 0xffffff,
   LIT_TINT = 0xffe08a;
 /** Each piece's half extents along its body's axes (for its box geometry), by body handle. */
 const bodyHalf = new Map<number, [number, number, number]>();
@@ -415,7 +416,7 @@ function dress(): void {
           ? [2 * (x * y - w * z), 1 - 2 * (x * x + z * z), 2 * (y * z + w * x)]
           : [2 * (x * z + w * y), 2 * (y * z - w * x), 1 - 2 * (x * x + y * y)];
     bodyHalf.set(e, bodyHalfExtents(p.half, p.yaw, axis));
-    tint(e, STANDING_TINT);
+    tint(e, PIECE_TINT);
   }
   renderer.setShape(h.ball, { geometry: ballGeometry, material: asDrawn(ballMaterial), scale: 'radius' });
   effects.clear();
@@ -1486,7 +1487,7 @@ let lit = 0;
 function light(piece: number): void {
   const before = handles.pieces.find((p) => p.body === lit);
   lit = piece;
-  if (before && isAlive(shell.world, before.body)) tint(before.body, before.fallen ? FALLEN_TINT : STANDING_TINT);
+  if (before && isAlive(shell.world, before.body)) tint(before.body, PIECE_TINT);
   if (piece !== 0) tint(piece, LIT_TINT);
 }
 /** Whether the last tap re-aimed a swing still winding up (the status line says so). */
@@ -1695,7 +1696,7 @@ function setQuality(q: Quality): void {
   if (renderer.lights) renderer.lights.sun.castShadow = full;
   app.renderer.setPixelRatio(!full && SMALL_SCREEN ? LITE_PHONE_PIXEL_RATIO : startPixelRatio);
   swapMaterials();
-  for (const p of handles.pieces) tint(p.body, p.body === lit ? LIT_TINT : p.fallen ? FALLEN_TINT : STANDING_TINT);
+  for (const p of handles.pieces) tint(p.body, p.body === lit ? LIT_TINT : PIECE_TINT);
   renderer.setShape(handles.ball, { geometry: ballGeometry, material: asDrawn(ballMaterial), scale: 'radius' });
   groundShadows.visible = !full;
   if (!full) placeGroundShadows();
@@ -2060,7 +2061,7 @@ function frame(): void {
     tally.add(P.x[p.body]!, P.y[p.body]! + 0.9, P.z[p.body]!, p.points, shell.world.time);
   }
   for (const t of tally.due(shell.world.time)) effects.popup(t.x, t.y, t.z, `+${t.points}`);
-  effects.update(dt);
+  effects.update(dt, app.camera);
   const c = handles.crane;
   // Jib: along the slew direction through the mast top, reaching RADIUS_RANGE[1] + 2 out and 2 back.
   const ca = Math.cos(c.angle),
@@ -2249,6 +2250,10 @@ shell.expose({
   swingResult: (): string => swing.result,
   /** The effects showing now: dust and chips in the air, score popups. */
   effects: () => effects.counts(),
+  /** Shows score popup `text` rising from (x, y, z), m, as a fall does (tests). */
+  popup: (x: number, y: number, z: number, text: string): void => effects.popup(x, y, z, text),
+  /** The visible popups' label boxes on the screen (see SiteEffects.popupBoxes). */
+  popupBoxes: () => effects.popupBoxes(),
   /** Goes to the next level (banks the score). */
   nextLevel,
   /** The drawing quality now ('full' or 'lite'; see Quality). */

@@ -475,6 +475,28 @@ describe('3D rigid-body games in headless Chromium', () => {
     });
     expect(await faded(true)).toBe(true);
     expect(await faded(false)).toBe(false);
+    // Three popups shown at one place at once (three falls scored together) are stacked on the
+    // screen: no two labels' boxes overlap (all three drawn at the same spot, they did).
+    await g.page.evaluate(() => {
+      const game = window.game as unknown as WB & { popup(x: number, y: number, z: number, t: string): void };
+      const p = game.handles().pieces[0]!;
+      for (const t of ['+110', '+85', '+40']) game.popup(p.x0, 1.5, p.z0, t);
+    });
+    type Box = { sx: number; sy: number; hw: number; hh: number };
+    await g.waitFor(() => {
+      const boxes = (window.game as unknown as { popupBoxes(): Box[] }).popupBoxes();
+      return boxes.length === 3 && boxes.every((b) => b.hh > 0);
+    }, null);
+    const boxes = await g.page.evaluate(() => (window.game as unknown as { popupBoxes(): Box[] }).popupBoxes());
+    for (let i = 0; i < 3; i++)
+      for (let j = 0; j < i; j++) {
+        const [a, b] = [boxes[i]!, boxes[j]!];
+        const apart = Math.abs(a.sx - b.sx) >= a.hw + b.hw - 2e-3 || Math.abs(a.sy - b.sy) >= a.hh + b.hh - 2e-3;
+        expect(apart, JSON.stringify(boxes)).toBe(true);
+      }
+    // Stacked upward in the order shown, the newest on top.
+    expect(boxes[1]!.sy).toBeGreaterThan(boxes[0]!.sy);
+    expect(boxes[2]!.sy).toBeGreaterThan(boxes[1]!.sy);
     expect(g.errors).toEqual([]);
   });
 
