@@ -755,8 +755,13 @@ const banner = overlay(
   `left: 50%; top: ${compact ? 27 : 24}%; padding: ${compact ? '3px 12px' : '6px 18px'}; border-radius: 14px; background: rgba(8, 12, 20, 0.78); font: 800 ${compact ? 18 : 26}px system-ui, sans-serif; white-space: nowrap; display: none;`,
 );
 banner.dataset.hud = 'banner';
+/**
+ * The warning (STALL, PULL UP): one fixed place, the scene's top middle, over every other overlay
+ * (the next ring's label was drawn over it, and it moved with the message column between the top
+ * and the bottom). It flashes by its visibility, so that the column under it keeps still.
+ */
 const warningEl = overlay(
-  'left: 50%; top: 62%; padding: 4px 16px; border-radius: 10px; background: rgba(120, 10, 10, 0.88); color: #fff; font: 800 22px system-ui, sans-serif; letter-spacing: 2px; display: none;',
+  `left: 50%; top: ${compact ? 6 : 8}px; transform: translate(-50%, 0px); z-index: 8; padding: 4px 16px; border-radius: 10px; background: rgba(120, 10, 10, 0.92); color: #fff; font: 800 22px system-ui, sans-serif; letter-spacing: 2px; white-space: nowrap; display: none;`,
 );
 warningEl.dataset.hud = 'warning';
 const endCard = overlay(
@@ -825,15 +830,20 @@ function updateHud(i: ReturnType<typeof instruments>): void {
   const total = rings.length;
   const speed = `${i.speed.toFixed(0)} m/s`;
   const missedNote = state.missed > 0 ? ` · missed ${state.missed}` : '';
-  // On a phone the misses are said by the goal line's penalty and stars, not again here.
+  // The height above the ground (or the sea) under the aircraft, what keeps it off the hills: "alt"
+  // counts from sea level, and a pilot reading it alone flew into a hill. Never below 0 (a crash).
+  const aboveGround = `${Math.max(0, i.agl).toFixed(0)} m above ground`;
+  // On a phone the misses are said by the goal line's penalty and stars, not again here, and the
+  // height above the ground takes the sea-level altitude's place (the cockpit's gauge reads that).
   const read = compact
-    ? `${speed} · alt ${i.altitude.toFixed(0)} m · engine ${(state.throttle * 100).toFixed(0)}% · rings ${state.score}/${total}`
-    : `${speed} · alt ${i.altitude.toFixed(0)} m · throttle ${(state.throttle * 100).toFixed(0)}% · rings ${state.score}/${total}${missedNote}`;
+    ? `${speed} · ${aboveGround} · engine ${(state.throttle * 100).toFixed(0)}% · rings ${state.score}/${total}`
+    : `${speed} · alt ${i.altitude.toFixed(0)} m · ${aboveGround} · throttle ${(state.throttle * 100).toFixed(0)}% · rings ${state.score}/${total}${missedNote}`;
   if (readLine.textContent !== read) readLine.textContent = read;
   if (!compact) {
     const text = [
       `airspeed  ${i.speed.toFixed(0).padStart(4)} m/s  ${(i.speed * 1.944).toFixed(0).padStart(4)} kt`,
-      `altitude  ${i.altitude.toFixed(0).padStart(5)} m   above ground ${i.agl.toFixed(0)} m`,
+      `altitude  ${i.altitude.toFixed(0).padStart(5)} m (sea level)`,
+      `          ${aboveGround}`,
       `climb     ${i.climb.toFixed(1).padStart(6)} m/s`,
       `pitch ${i.pitch.toFixed(1).padStart(6)}°  bank ${i.roll.toFixed(1).padStart(6)}°`,
       `heading   ${i.heading.toFixed(0).padStart(4)}°`,
@@ -875,13 +885,13 @@ function updateHud(i: ReturnType<typeof instruments>): void {
           ? 'Your first run on this course: the result to beat next time.'
           : best
             ? `Best: ${best.passed} of ${total} rings in ${clock(best.time)}`
-            : 'Watch the height: the hills reach 700 m.';
+            : 'Watch the height above ground: alt counts from sea level, and the hills reach 700 m.';
     endCard.append(title, line, bestLine);
     showAgain(true, state.phase === 'crashed' ? 'Try again ↺' : 'Fly again ▶');
   }
 }
 
-/** Shows the newest event in the banner for BANNER_LIFE s, and the warning, flashing. */
+/** Shows the newest event in the banner for BANNER_LIFE s, and the red glow of a miss. */
 function updateBanner(t: number): void {
   const last = events[events.length - 1];
   const age = last ? t - last.time : Infinity;
@@ -895,8 +905,19 @@ function updateBanner(t: number): void {
   const flash = state.phase === 'flying' ? Math.max(0, 1 - (t - missedAt) / MISS_FLASH) : 0;
   const opacity = flash > 0 ? flash.toFixed(2) : '0';
   if (missFlash.style.opacity !== opacity) missFlash.style.opacity = opacity;
-  warningEl.style.display = state.warning && state.phase === 'flying' && Math.floor(t * 3) % 2 === 0 ? 'block' : 'none';
-  warningEl.textContent = state.warning;
+}
+
+/**
+ * Shows the warning (flashing) while there is one, in its fixed place; on drawn frames, before the
+ * ring label is placed, which keeps clear of it.
+ */
+function showWarning(t: number): void {
+  const warned = state.warning !== '' && state.phase === 'flying';
+  const display = warned ? 'block' : 'none';
+  if (warningEl.style.display !== display) warningEl.style.display = display;
+  const visibility = Math.floor(t * 3) % 2 === 0 ? 'visible' : 'hidden';
+  if (warningEl.style.visibility !== visibility) warningEl.style.visibility = visibility;
+  if (warningEl.textContent !== state.warning) warningEl.textContent = state.warning;
 }
 
 // ---- The attitude indicator (cockpit view), drawn at the top of the scene -------------------------
@@ -1024,12 +1045,16 @@ function pointToNextRing(): void {
 
 /**
  * The ring label's centre (px) moved inside the scene `w` px wide, `bottom` px high (above the
- * cockpit's panel), its box EDGE_MARGIN px from each edge (it touched the phone's right edge).
+ * cockpit's panel), its box EDGE_MARGIN px from each edge (it touched the phone's right edge), and
+ * below the warning while that is on and the label would reach under it.
  */
 function keepInScene(x: number, y: number, w: number, bottom: number): [number, number] {
   const hw = ringPointer.offsetWidth / 2 + EDGE_MARGIN,
     hh = ringPointer.offsetHeight / 2 + EDGE_MARGIN;
-  return [Math.max(hw, Math.min(w - hw, x)), Math.max(hh, Math.min(bottom - hh, y))];
+  const cx = Math.max(hw, Math.min(w - hw, x));
+  const underWarning = warningEl.style.display !== 'none' && Math.abs(cx - w / 2) < hw + warningEl.offsetWidth / 2;
+  const top = underWarning ? warningEl.offsetTop + warningEl.offsetHeight + hh : hh;
+  return [cx, Math.max(top, Math.min(bottom - hh, y))];
 }
 /** Least gap between the ring label and the scene's edges, px. */
 const EDGE_MARGIN = 10;
@@ -1258,12 +1283,13 @@ function showThrottleNote(): void {
 }
 
 /**
- * Every message over the scene (the warning, the banner, the turn-back cue, the engine's note and the
- * lesson tip, in that order) sits in one column, one under the other, never on each other: at the
+ * Every message over the scene but the warning (the banner, the turn-back cue, the engine's note and
+ * the lesson tip, in that order) sits in one column, one under the other, never on each other: at the
  * scene's top, or in its low lane (above the cockpit's instrument panel in that view, so the gauges
  * stay clear) while the top one would cover the next ring, its label or the flight-path marker and
  * the low one would not, and back up once the top is clear by LANE_RETURN px (the margin keeps the
- * column from jumping back and forth as the ring moves). Each had its own fixed place: the banner
+ * column from jumping back and forth as the ring moves). The warning keeps one place at the scene's
+ * top, over everything; while it is on, the top lane starts under it. Each had its own fixed place: the banner
  * and the turn-back cue sat over the ring ahead, the warning over the cockpit's gauges.
  */
 let messagesLow = false;
@@ -1274,7 +1300,12 @@ const LANE_RETURN = 40;
 /** How far over the cockpit's panel top its rim and the figures on it reach, px. */
 const PANEL_RIM = 18;
 /** Where the messages sat last (tests): in the low lane or not, and each shown one's name and box (px in the stage: left, top, width, height). */
-const messageLayout = { low: false, boxes: [] as { hud: string; box: [number, number, number, number] }[] };
+const messageLayout = {
+  low: false,
+  boxes: [] as { hud: string; box: [number, number, number, number] }[],
+  /** The warning's box while it is on (px in the stage: left, top, width, height), else null. */
+  warning: null as [number, number, number, number] | null,
+};
 /** What the messages must not cover, as boxes (px: left, top, width, height) and the ring's circle. */
 function coveredBy(box: readonly number[], pad = 0): number {
   const [x0, y0, w0, h0] = box as [number, number, number, number];
@@ -1297,7 +1328,13 @@ function coveredBy(box: readonly number[], pad = 0): number {
 }
 /** Places the messages shown now in their lane (`messagesLow`), after the ring's label and the marker are placed. */
 function placeMessages(): void {
-  const items = [warningEl, banner, turnBack, throttleNote, tip].filter((el) => el.style.display !== 'none');
+  const items = [banner, turnBack, throttleNote, tip].filter((el) => el.style.display !== 'none');
+  // The warning keeps its own place at the top: while it is on, the top lane starts under it.
+  const warned = warningEl.style.display !== 'none';
+  const topLane = warned ? warningEl.offsetTop + warningEl.offsetHeight + LANE_GAP : LANE_GAP;
+  messageLayout.warning = warned
+    ? [warningEl.offsetLeft - warningEl.offsetWidth / 2, warningEl.offsetTop, warningEl.offsetWidth, warningEl.offsetHeight]
+    : null;
   const w = app.canvas.clientWidth,
     h = app.canvas.clientHeight;
   // In the cockpit view the lane ends over the panel's rim (the phone's heading figure sits on it).
@@ -1306,7 +1343,7 @@ function placeMessages(): void {
   const sizes = items.map((el) => [el.offsetWidth, el.offsetHeight] as const);
   const total = sizes.reduce((sum, [, bh]) => sum + bh + LANE_GAP, -LANE_GAP);
   const boxesAt = (low: boolean): [number, number, number, number][] => {
-    let y = low ? Math.max(LANE_GAP, bottom - total) : LANE_GAP;
+    let y = low ? Math.max(topLane, bottom - total) : topLane;
     return sizes.map(([bw, bh]) => {
       const box: [number, number, number, number] = [w / 2 - bw / 2, y, bw, bh];
       y += bh + LANE_GAP;
@@ -1521,6 +1558,7 @@ function frame(): void {
   paintRings(world.time);
   drawGuide(at);
   markPath();
+  showWarning(world.time);
   pointToNextRing();
   fadeOverRing(Math.min(0.2, Math.max(0, (performance.now() - lastFade) / 1000)));
   lastFade = performance.now();
@@ -1639,8 +1677,12 @@ shell.expose({
   tipUntil: () => tipGoneAt,
   /** The turn-back cue's text now ('' when none shows) and how long the aircraft has flown away from the next ring, s. */
   turnBack: () => ({ text: turnBackText, awayFor }),
-  /** The messages over the scene as last placed: in the low lane or not, each shown one's name (data-hud) and box (px: left, top, width, height). */
-  messages: () => ({ low: messageLayout.low, boxes: messageLayout.boxes.map((m) => ({ hud: m.hud, box: [...m.box] })) }),
+  /** The messages over the scene as last placed: in the low lane or not, each shown one's name (data-hud) and box (px: left, top, width, height), and the warning's box while it is on (else null). */
+  messages: () => ({
+    low: messageLayout.low,
+    boxes: messageLayout.boxes.map((m) => ({ hud: m.hud, box: [...m.box] })),
+    warning: messageLayout.warning ? [...messageLayout.warning] : null,
+  }),
   /** The engine's note now ('' when it does not show). */
   throttleNote: () => (throttleNote.style.display === 'none' ? '' : (throttleNote.textContent ?? '')),
   /** The drawn aircraft's opacity (below 1 while the next ring is behind it on the screen) and its box on the screen (px). */

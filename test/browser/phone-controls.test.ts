@@ -215,6 +215,15 @@ describe('phone controls', () => {
       return note ? { note, read: document.querySelector('[data-hud="readout"]')?.textContent ?? '' } : null;
     }, null);
     expect(said.read).toContain(`engine ${said.note.match(/(\d+) %/)?.[1]}%`);
+    // The readout gives the height above the ground under the aircraft (a stranger read the sea-level
+    // "alt 108 m" and flew into a hill), the instruments' figure, and still fits the phone's width.
+    const height = await g.page.evaluate(() => ({
+      read: document.querySelector('[data-hud="readout"]')?.textContent ?? '',
+      agl: (window.game as unknown as { instruments(): { agl: number } }).instruments().agl,
+    }));
+    const aboveGround = Number(height.read.match(/· (\d+) m above ground ·/)?.[1] ?? Number.NaN);
+    expect(Math.abs(aboveGround - height.agl), height.read).toBeLessThan(3);
+    expect((await checkLayout(g.page)).clipped).toEqual([]);
     expect(g.errors).toEqual([]);
     await g.close();
   });

@@ -1072,7 +1072,7 @@ describe('projects', () => {
     // (a stranger saw "+60 s ☆☆☆" with "missed 1", "Ring 1 ✓" with "rings 0/10", "Engine 66 %" with
     // "throttle 43 %": the readout was refreshed every 6th drawn frame).
     await g.page.evaluate(() => {
-      const hud = { bad: [] as string[], seen: [] as string[], frames: 0 };
+      const hud = { bad: [] as string[], seen: [] as string[], frames: 0, warningAt: '' };
       (window as unknown as { hud: typeof hud }).hud = hud;
       const text = (n: string) => {
         const el = document.querySelector<HTMLElement>(`[data-hud="${n}"]`);
@@ -1107,6 +1107,31 @@ describe('projects', () => {
         if (note) {
           hud.seen.push('note');
           if (Number(note.match(/(\d+) %/)?.[1]) !== throttle) hud.bad.push(`engine: ${said}`);
+        }
+        // The height above the ground: in the readout beside the sea-level altitude, the same figure
+        // as the side panel's, and the two apart by the ground's height (the sea at 60 m, the hills
+        // up to 700 m: a stranger read "alt 108 m" as clear of hills that reach 700 m).
+        const agl = Number(read.match(/· (\d+) m above ground ·/)?.[1] ?? Number.NaN),
+          alt = Number(read.match(/alt (-?\d+) m/)?.[1] ?? Number.NaN),
+          panelAgl = Number(text('instruments').match(/(\d+) m above ground/)?.[1] ?? Number.NaN);
+        if (read && !(agl >= 0)) hud.bad.push(`no height above ground: ${said}`);
+        if (read && agl !== panelAgl) hud.bad.push(`above ground ${agl} in the readout, ${panelAgl} in the panel`);
+        if (agl > 0 && !(alt - agl >= 59 && alt - agl <= 760)) hud.bad.push(`ground at ${alt - agl} m: ${said}`);
+        // The warning, while it shows, stays in one place and nothing over the scene overlaps it.
+        const warning = document.querySelector<HTMLElement>('[data-hud="warning"]')!;
+        if (warning.style.display !== 'none' && warning.style.visibility !== 'hidden') {
+          hud.seen.push('warning');
+          const w = warning.getBoundingClientRect();
+          const at = `${Math.round(w.left)},${Math.round(w.top)}`;
+          hud.warningAt ||= at;
+          if (at !== hud.warningAt) hud.bad.push(`the warning moved from ${hud.warningAt} to ${at}`);
+          for (const n of ['ring-pointer', 'banner', 'turn-back', 'throttle-note', 'tip', 'end']) {
+            const el = document.querySelector<HTMLElement>(`[data-hud="${n}"]`);
+            if (!el || el.style.display === 'none') continue;
+            const o = el.getBoundingClientRect();
+            if (o.left < w.right && w.left < o.right && o.top < w.bottom && w.top < o.bottom)
+              hud.bad.push(`${n} over the warning: ${said}`);
+          }
         }
         requestAnimationFrame(check);
       };
@@ -1166,6 +1191,24 @@ describe('projects', () => {
     const { rolledOn, levelIn } = await afterRelease(g);
     expect(rolledOn).toBeLessThan(4);
     expect(levelIn).toBeLessThan(1.3);
+    // 500 m before ring 3, 60 m over the ground, sinking and ↓ held to dive: "PULL UP" shows (the
+    // checks above run on every frame it shows).
+    await place(2, 500, 0, 0);
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as Flight;
+      const c = w.world.components,
+        e = w.aircraftBody();
+      c.Position.y[e] = c.Position.y[e]! - (w.instruments() as unknown as { agl: number }).agl + 60;
+      c.Velocity.y[e] = -12;
+    });
+    await g.page.keyboard.down('ArrowDown');
+    const warned = await g.waitFor(() => {
+      const h = (window as unknown as { hud: { bad: string[]; seen: string[]; frames: number } }).hud;
+      return h.seen.includes('warning') ? h : null;
+    }, null);
+    await g.page.keyboard.up('ArrowDown');
+    expect(warned.bad.slice(0, 5)).toEqual([]);
+    expect(new Set(warned.seen)).toEqual(new Set(['pass', 'note', 'miss', 'warning']));
     expect(g.errors).toEqual([]);
     await g.close();
   });
