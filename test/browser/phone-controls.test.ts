@@ -193,7 +193,8 @@ describe('phone controls', () => {
     // Every frame's bank, with the game time.
     await recordBank(g);
     // A real finger pushes the stick left until the aircraft banks 30 degrees, then lifts: from the
-    // lift the wings roll at most 4 degrees further and come level within 1.3 s of game time.
+    // lift the wings roll at most 5 degrees further and come level within 1.3 s of game time (as the
+    // desktop case in projects.test.ts, which says why 5).
     const stick = (await g.page.getByRole('slider', { name: 'stick: bank and climb' }).boundingBox())!;
     const cx = stick.x + stick.width / 2,
       cy = stick.y + stick.height / 2;
@@ -205,7 +206,7 @@ describe('phone controls', () => {
     await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
     await cdp.detach();
     const { rolledOn, levelIn } = await afterRelease(g);
-    expect(rolledOn).toBeLessThan(4);
+    expect(rolledOn).toBeLessThan(5);
     expect(levelIn).toBeLessThan(1.3);
     // A tap of Faster: the note and the readout, read in one frame, give the same engine figure.
     const faster = (await g.page.getByRole('button', { name: 'faster', exact: true }).boundingBox())!;
