@@ -273,6 +273,31 @@ describe('the net', () => {
   });
 });
 
+/**
+ * A player ball thrown from (x0, y0) m at (vx, vy) m/s in the scene's box with its other balls taken
+ * away (restitution 0.8, friction 0.2): steps it along `path` (x, y pairs a step apart) and asserts
+ * it stays within `within` m of each point.
+ */
+function followsPath(x0: number, y0: number, vx: number, vy: number, path: number[], within: number): void {
+  const options = { count: 1, seed: 1 };
+  const world = createPhysicsWorld(bouncingBallsWorldOptions(options));
+  const h = buildBouncingBalls(world, options);
+  for (const b of h.balls) removeBody(world, b);
+  const e = addBody(world, {
+    position: [x0, y0],
+    velocity: [vx, vy],
+    radius: PLAYER_RADIUS,
+    density: 1,
+    restitution: 0.8,
+    friction: 0.2,
+  });
+  const P = world.components.Position;
+  for (let i = 1; i < path.length / 2; i++) {
+    step(world);
+    expect(Math.hypot(path[2 * i]! - P.x[slotOf(e)]!, path[2 * i + 1]! - P.y[slotOf(e)]!), `(${x0}, ${y0}) step ${i}`).toBeLessThan(within);
+  }
+}
+
 describe('the slingshot and its aiming arc', () => {
   it('throws opposite to the pull, MAX_THROW_SPEED at the full pull, in proportion below it, capped above', () => {
     // Pulled 60 px left and 80 px down (screen y down): thrown right and up, 3 : 4.
@@ -339,29 +364,11 @@ describe('the slingshot and its aiming arc', () => {
       [9.5, 8, 12, 0, 0.15],
       [6, 2, -6, 10, 0.25],
     ] as const) {
-      const options = { count: 1, seed: 1 };
-      const world = createPhysicsWorld(bouncingBallsWorldOptions(options));
-      const h = buildBouncingBalls(world, options);
-      for (const b of h.balls) removeBody(world, b);
-      const e = addBody(world, {
-        position: [x0, y0],
-        velocity: [vx, vy],
-        radius: PLAYER_RADIUS,
-        density: 1,
-        restitution: 0.8,
-        friction: 0.2,
-      });
       const o = { gravity: 9.81, drag: 'none', k: 0, mass: 1, radius: PLAYER_RADIUS, box: BOX, every: 1 / 60, seconds: 2 } as const;
       const path = throwPath(x0, y0, vx, vy, { ...o, bounces: 1, restitution: 0.8, friction: 0.2, walls });
       // Without bounces (the default) the arc still ends at the first touch, much sooner.
       expect(throwPath(x0, y0, vx, vy, { ...o, walls }).length).toBeLessThan(path.length - 10);
-      const P = world.components.Position;
-      for (let i = 1; i < path.length / 2; i++) {
-        step(world);
-        expect(Math.hypot(path[2 * i]! - P.x[slotOf(e)]!, path[2 * i + 1]! - P.y[slotOf(e)]!), `(${x0}, ${y0}) step ${i}`).toBeLessThan(
-          within,
-        );
-      }
+      followsPath(x0, y0, vx, vy, path, within);
     }
     // The flat throw came back off the right wall: it ends left of where it touched.
     const flat = throwPath(9.5, 8, 12, 0, {
@@ -400,18 +407,6 @@ describe('the slingshot and its aiming arc', () => {
     // between the ramps, in the box without its balls.
     const [x0, y0, vx, vy] = [5, 1, -2, 17.3];
     const walls = SEGMENTS.map(([ax, ay, bx, by]) => [ax, ay, bx, by, SEGMENT_RADIUS] as const);
-    const options = { count: 1, seed: 1 };
-    const world = createPhysicsWorld(bouncingBallsWorldOptions(options));
-    const h = buildBouncingBalls(world, options);
-    for (const b of h.balls) removeBody(world, b);
-    const e = addBody(world, {
-      position: [x0, y0],
-      velocity: [vx, vy],
-      radius: PLAYER_RADIUS,
-      density: 1,
-      restitution: 0.8,
-      friction: 0.2,
-    });
     const o = { gravity: 9.81, drag: 'none', k: 0, mass: 1, radius: PLAYER_RADIUS, box: BOX, every: 1 / 60, seconds: 1.2, walls } as const;
     const cut = throwPath(x0, y0, vx, vy, { ...o, restitution: 0.8, friction: 0.2 });
     const path = throwPath(x0, y0, vx, vy, { ...o, restitution: 0.8, friction: 0.2, ceilingBounces: 1 });
@@ -422,11 +417,7 @@ describe('the slingshot and its aiming arc', () => {
     expect(Math.max(...ys) + PLAYER_RADIUS).toBeCloseTo(BOX.max[1], 9);
     expect(ys.at(-1)!).toBeLessThan(BOX.max[1] - PLAYER_RADIUS - 1);
     // The real ball follows the arc through its bounce off the ceiling (within 0.15 m: the bounce comes a part of a step sooner).
-    const P = world.components.Position;
-    for (let i = 1; i < path.length / 2; i++) {
-      step(world);
-      expect(Math.hypot(path[2 * i]! - P.x[slotOf(e)]!, path[2 * i + 1]! - P.y[slotOf(e)]!), `step ${i}`).toBeLessThan(0.15);
-    }
+    followsPath(x0, y0, vx, vy, path, 0.15);
     // The ceiling's bounce is its own: the next touch (a wall, here the right one) still ends the arc.
     const side = throwPath(12, 5, 6, 12, { ...o, seconds: 3, ceilingBounces: 1 });
     expect(side.at(-2)! + PLAYER_RADIUS).toBeCloseTo(BOX.max[0], 9);
