@@ -12,7 +12,7 @@ import { pausedShade, resumedShade } from './dom-pause';
 import { afterRelease, recordBank } from './flight-bank';
 import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
 import { checkLayout } from './layout-check';
-import { cubeState, pageOf, stillPageOf, waitCubeAtRest } from './rotating-cube';
+import { cubeState, pageOf, stillPageOf, waitCubeAtRest, waitCubeMoved } from './rotating-cube';
 import { touchPath } from './touch';
 
 const PHONE = { viewport: { width: 390, height: 844 }, touch: true } as const;
@@ -453,15 +453,7 @@ describe('phone controls', () => {
     const p0 = await pageOf(g, before.x, before.y, before.z);
     const box = (await left.boundingBox())!;
     await touchPath(g.page, [[box.x + box.width / 2, box.y + box.height / 2]], 0, async () => {
-      await g.waitFor(
-        ([x0, z0]) => {
-          const game = window.game as unknown as { body(): number; world: { components: { Position: Record<'x' | 'z', Float64Array> } } };
-          const P = game.world.components.Position;
-          return Math.hypot(P.x[game.body()]! - x0!, P.z[game.body()]! - z0!) > 0.8;
-        },
-        [before.x, before.z],
-        60_000,
-      );
+      await waitCubeMoved(g, before.x, before.z);
     });
     const after = await cubeState(g);
     const p1 = await pageOf(g, after.x, after.y, after.z);

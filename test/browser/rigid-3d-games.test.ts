@@ -4,7 +4,7 @@
  */
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
-import { cubeState, pageOf, stillPageOf, waitCubeAtRest } from './rotating-cube';
+import { cubeState, pageOf, stillPageOf, waitCubeAtRest, waitCubeMoved } from './rotating-cube';
 
 interface Game3D {
   paused: boolean;
@@ -621,15 +621,7 @@ describe('3D rigid-body games in headless Chromium', () => {
     const before = await cubeState(g);
     const left0 = await pageOf(g, before.x, before.y, before.z);
     await g.page.keyboard.down('a');
-    await g.waitFor(
-      ([x0, z0]) => {
-        const game = window.game as unknown as { body(): number; world: { components: { Position: Record<'x' | 'z', Float64Array> } } };
-        const P = game.world.components.Position;
-        return Math.hypot(P.x[game.body()]! - x0!, P.z[game.body()]! - z0!) > 0.8;
-      },
-      [before.x, before.z],
-      60_000,
-    );
+    await waitCubeMoved(g, before.x, before.z);
     await g.page.keyboard.up('a');
     const after = await cubeState(g);
     const left1 = await pageOf(g, after.x, after.y, after.z);

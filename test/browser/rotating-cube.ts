@@ -63,6 +63,19 @@ export async function waitCubeAtRest(g: GamePage, timeoutMs = 60_000): Promise<v
   );
 }
 
+/** Waits (up to 60 s of the clock) until the cube's centre is over 0.8 m along the floor from (x, z), m. */
+export async function waitCubeMoved(g: GamePage, x: number, z: number): Promise<void> {
+  await g.waitFor(
+    ([x0, z0]) => {
+      const game = window.game as unknown as { body(): number; world: { components: { Position: Record<'x' | 'z', Float64Array> } } };
+      const P = game.world.components.Position;
+      return Math.hypot(P.x[game.body()]! - x0!, P.z[game.body()]! - z0!) > 0.8;
+    },
+    [x, z],
+    60_000,
+  );
+}
+
 /** Page position (CSS px) of world point (x, y, z), m, through the game's three.js camera and the canvas' box. */
 export function pageOf(g: GamePage, x: number, y: number, z: number): Promise<{ x: number; y: number }> {
   return g.page.evaluate(
