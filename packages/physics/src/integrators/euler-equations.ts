@@ -1,5 +1,5 @@
 import { hasComponent } from 'bitecs';
-import { rotateFrom, rotateVector, rotateVectorInverse } from '../math/quaternion.js';
+import { rotateVector, rotateVectorInverse } from '../math/quaternion.js';
 import type { PhysicsWorld } from '../world/options.js';
 
 const b = new Float64Array(3),
@@ -152,11 +152,10 @@ export function implicitGyroscopicStep(world: PhysicsWorld, e: number, h: number
  * |L| is conserved exactly, the energy error stays bounded (no drift), orientation and angular
  * velocity stay consistent. Updates both the angular velocity and the orientation. Axes with a zero
  * moment stay locked. An isotropic body (equal principal moments, none zero) takes the exact flow
- * instead, which the splitting only approximates: w fixed in the world, one turn by |w| h about it.
- * The orientation is renormalised at the end (divided by its length, the square root of its
- * components' squares). Runs over the bodies `ents` (entity ids, each with a principal inertia
- * tensor), the torque read from each body's `Torque` (zero for a body without one), rad/s and unit
- * quaternions written in place. The loop is here, not in the caller, and no double crosses a
+ * instead, which the splitting only approximates: w fixed in the world, one turn by |w| h about it. The orientation is renormalised at the end (divided by its length, the square
+ * root of its components' squares). Runs over the bodies `ents` (entity ids, each with a principal
+ * inertia tensor), the torque read from each body's `Torque` (zero for a body without one), rad/s and
+ * unit quaternions written in place. The loop is here, not in the caller, and no double crosses a
  * call: everything is in locals, the five turns included (one loop over the axes): no allocation
  * per body (heap use over repeated calls, node 20).
  * @category Integrators
@@ -186,11 +185,26 @@ export function splitRigidRotations(world: PhysicsWorld, ents: ArrayLike<number>
     if (ix === iy && iy === iz && ix > 0) {
       // Isotropic (a cube, a sphere): I^-1 L is parallel to L, so the free flow keeps w fixed in the world
       // and turns the body by |w| h about it; the five turns below would approximate that to O(h^3).
-      // The kick (w += h I^-1 tau), then that one exact turn: q <- exp(w h / 2) q (math/quaternion.ts rotateFrom).
+      // The kick (w += h I^-1 tau), then that one exact turn: q <- (sin(|w| h / 2) w / |w|, cos(|w| h / 2)) q.
       const ox = W.x[e]! + h * torqueX * ix,
         oy = W.y[e]! + h * torqueY * ix,
         oz = W.z[e]! + h * torqueZ * ix;
-      rotateFrom(q.x, q.y, q.z, q.w, e, x, y, z, w, ox * h, oy * h, oz * h);
+      const angle = Math.sqrt(ox * ox + oy * oy + oz * oz) * h;
+      if (angle > 0) {
+        const k = (Math.sin(0.5 * angle) / angle) * h,
+          dx = ox * k,
+          dy = oy * k,
+          dz = oz * k,
+          dw = Math.cos(0.5 * angle);
+        storeUnitQuaternion(
+          q,
+          e,
+          dw * x + dx * w + dy * z - dz * y,
+          dw * y - dx * z + dy * w + dz * x,
+          dw * z + dx * y - dy * x + dz * w,
+          dw * w - dx * x - dy * y - dz * z,
+        );
+      }
       W.x[e] = ox;
       W.y[e] = oy;
       W.z[e] = oz;
