@@ -34,6 +34,9 @@ const BITS = 160,
 const LABEL_W = 0.7,
   LABEL_H = 0.7;
 
+/** Gap left between two stacked popup labels, in normalised device coordinates (0.004: 1.6 px of an 800 px screen). */
+const CLEARANCE = 0.004;
+
 /** Seconds a dust puff lives; a chip lives CHIP_LIFE; a popup POPUP_LIFE. */
 const DUST_LIFE = 1.4,
   CHIP_LIFE = 1.2,
@@ -316,14 +319,15 @@ export class SiteEffects {
     for (let i = 0; i < stack.length; i++) {
       const p = stack[i]!;
       this.screenBox(p, camera);
-      // Each rise clears one earlier label; at most one rise per label shown (perspective can leave a
-      // sliver of overlap after a rise, which the 1e-3 margin ignores).
-      for (let j = 0, rises = 0; j < i && rises < stack.length; j++) {
+      // Each rise clears one earlier label with CLEARANCE to spare (a label raised farther from the camera
+      // draws a little smaller, so a rise to the exact edge can leave a sliver of overlap); at most two
+      // rises per label shown (the 1e-3 margin ignores what is left then).
+      for (let j = 0, rises = 0; j < i && rises < 2 * stack.length; j++) {
         const q = stack[j]!;
         if (Math.abs(p.sx - q.sx) >= p.hw + q.hw - 1e-3 || Math.abs(p.sy - q.sy) >= p.hh + q.hh - 1e-3 || p.hh <= 0) continue;
         rises++;
         // Screen height to rise by, as metres at the label's distance (its full height is scale.y m).
-        const rise = ((q.sy + q.hh + p.hh - p.sy) / (2 * p.hh)) * p.sprite.scale.y * LABEL_H;
+        const rise = ((q.sy + q.hh + p.hh + CLEARANCE - p.sy) / (2 * p.hh)) * p.sprite.scale.y * LABEL_H;
         p.lift += rise;
         p.sprite.position.y += rise;
         this.screenBox(p, camera);
