@@ -327,7 +327,7 @@ function jump(): void {
 // The body: a unit box with one colour per face, six hues a player names at a glance (red, yellow,
 // green, purple, blue, white: no two tints of one hue), scaled by the renderer to the body's
 // equivalent-inertia box.
-const faceColors = [0xe53935, 0xfdd835, 0x43a047, 0x8e44ad, 0x1e88e5, 0xf5f5f5];
+const faceColors = [0xe53935, 0xfdd835, 0x43a047, 0xb05cd6, 0x1e88e5, 0xf5f5f5];
 /** The faces' colours in words, in the order of FACES (+x red, -x yellow, +y green, -y purple, +z blue, -z white). */
 const FACE_NAMES = ['red', 'yellow', 'green', 'purple', 'blue', 'white'];
 /** CSS colour of face `f`. */
