@@ -406,7 +406,8 @@ function press(dir: Arrow): void {
 }
 /**
  * A key or finger lets go of arrow `dir`: the arrow stays held while another key or finger holds it;
- * the last one let go within TAP_MS of its press is a tap, which thrusts on to TAP_STEPS steps.
+ * the last one let go within TAP_MS of its press is a tap, which thrusts on to TAP_STEPS steps
+ * (while the game runs: paused, no game time passes and a key let go lets go at once).
  */
 function release(dir: Arrow): void {
   const at = pressedAt.get(dir);
@@ -416,7 +417,8 @@ function release(dir: Arrow): void {
     performance.now() - at.ms < TAP_MS &&
     bh.world.steps < at.step + TAP_STEPS &&
     held.includes(dir) &&
-    !replay.player
+    !replay.player &&
+    !game.shell.paused
   ) {
     tapEnds.set(dir, at.step + TAP_STEPS);
     return;

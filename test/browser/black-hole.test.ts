@@ -643,25 +643,24 @@ describe.each([
     const legend = await p.page.locator('.bp-legend').textContent();
     expect(legend).not.toContain('big button');
     if (touch) expect(legend).toContain('Level ▶ or Continue ↺ button');
-    // Paused: a tap of ↑ (a finger's tap, or a key pressed and let go at once) thrusts for exactly 9
-    // steps of the game, counted as the test steps it (the thrust stood for no step at all from a finger).
-    await p.page.evaluate(() => {
-      (window.game as unknown as Bh).paused = true;
-    });
+    // A tap of ↑ (a finger's tap, or a key pressed and let go at once) thrusts for exactly 9 steps of
+    // the game: the run's recording (V replays it) holds the thrust 'up' and, 9 steps later, 'none'
+    // (a finger's tap thrust for no step at all; a key's for as many steps as the frames between).
     const upBox = (await p.page.getByRole('button', { name: 'thrust up', exact: true }).boundingBox())!;
     if (touch) await p.page.touchscreen.tap(upBox.x + upBox.width / 2, upBox.y + upBox.height / 2);
     else await p.page.keyboard.press('ArrowUp');
-    const steps = await p.page.evaluate(() => {
-      const w = window.game as unknown as Bh;
-      let n = 0;
-      for (let i = 0; i < 30; i++) {
-        w.step();
-        if (w.bh.thrust !== 'none') n++;
-      }
-      return n;
+    type Events = { replay: { recorder: { replay: { events: { step: number; name: string; args: unknown[] }[] } } } };
+    const thrusts = await p.waitFor(() => {
+      const events = (window.game as unknown as Events).replay.recorder.replay.events.filter((e) => e.name === 'thrust');
+      return events.length >= 2 ? events.map((e) => [e.step, e.args[0]]) : null;
+    }, null);
+    expect(thrusts.map((t) => t[1])).toEqual(['up', 'none']);
+    expect(thrusts[1]![0]! as number, device).toBe((thrusts[0]![0]! as number) + 9);
+    await p.page.evaluate(() => {
+      (window.game as unknown as Bh).paused = true;
     });
-    expect(steps, device).toBe(9);
-    // Path off and on, and the replay of the run so far (the tap): the buttons on a phone, F and V on the desktop.
+    // Path off and on, and the replay of the run so far (the tap; it waits while paused): the buttons on a
+    // phone, F and V on the desktop.
     const act = async (key: string, name: string) => {
       if (touch) await p.page.getByRole('button', { name, exact: true }).tap();
       else await p.page.keyboard.press(key);
