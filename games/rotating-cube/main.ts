@@ -894,7 +894,7 @@ function updateStatus(wx: number, wy: number, wz: number): void {
           }
         : {
             goal: `Make the box flip ${FLIP_GOAL} times in ${FLIP_TIME} s, spinning at ${lo} to ${hi} rad/s`,
-            numbers: `Flips ${n}/${FLIP_GOAL} · ${Math.max(0, FLIP_TIME - t).toFixed(1)} s left · |ω| ${w.toFixed(1)} rad/s ${inBand ? '✓' : '✗'}`,
+            numbers: `Flips ${n}/${FLIP_GOAL} · ${Math.max(0, FLIP_TIME - t).toFixed(1)} s left · |ω| ${w.toFixed(1)} ${inBand ? '✓' : '✗'}`,
             hint: `Flips count only in the band: ${band}`,
           },
       over && flips.wonAt >= 0,
@@ -921,6 +921,8 @@ function updateStatus(wx: number, wy: number, wz: number): void {
  */
 const net = document.createElement('div');
 net.dataset.hud = 'face-net';
+// Part of the scene's drawing (like a label on it), not page furniture covering the scene.
+net.dataset.sceneOverlay = '';
 net.setAttribute('aria-label', 'faces of the cube');
 net.style.cssText =
   'position: absolute; left: 8px; top: 8px; z-index: 4; pointer-events: none; display: grid; gap: 3px;' +
@@ -944,8 +946,14 @@ const netCells = NET_CELLS.map((c) => {
   cell.dataset.cell = c.name;
   cell.style.cssText =
     `grid-row: ${c.row}; grid-column: ${c.col}; border-radius: 4px; display: flex; align-items: center; justify-content: center;` +
-    'font: 700 10px system-ui, sans-serif; color: #111; box-sizing: border-box; border: 2px solid rgba(0, 0, 0, 0.5)';
-  cell.textContent = c.key;
+    'font: 700 10px system-ui, sans-serif; box-sizing: border-box; border: 2px solid rgba(0, 0, 0, 0.5)';
+  // The key on a dark chip: legible on every face colour (WCAG AA), light or dark.
+  if (c.key !== '') {
+    const chip = document.createElement('span');
+    chip.textContent = c.key;
+    chip.style.cssText = 'background: #0b0f18; color: #fff; border-radius: 3px; padding: 0 3px; line-height: 1.3';
+    cell.append(chip);
+  }
   net.append(cell);
   return cell;
 });
@@ -1002,7 +1010,6 @@ function updateNet(): void {
     netFaces[i] = f;
     const cell = netCells[i]!;
     cell.style.background = faceCss(f);
-    cell.style.color = f === 3 || f === 4 ? '#fff' : '#111';
     cell.style.outline = f === want ? '3px solid #fff' : 'none';
     cell.style.outlineOffset = '1px';
     cell.title = FACE_NAMES[f]!;
