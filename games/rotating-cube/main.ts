@@ -926,7 +926,7 @@ net.dataset.sceneOverlay = '';
 net.setAttribute('aria-label', 'faces of the cube');
 net.style.cssText =
   'position: absolute; left: 8px; top: 8px; z-index: 4; pointer-events: none; display: grid; gap: 3px;' +
-  'grid-template-columns: repeat(3, var(--cell)); grid-template-rows: auto repeat(4, var(--cell)); --cell: clamp(20px, 5.2vmin, 30px);' +
+  'grid-template-columns: repeat(3, var(--cell)); grid-template-rows: auto repeat(4, var(--cell)); --cell: clamp(28px, 7vmin, 34px);' +
   'padding: 6px; border-radius: 8px; background: rgba(8, 12, 20, 0.78); font: 600 11px system-ui, sans-serif; color: #e8ecf1;';
 const netTitle = document.createElement('div');
 netTitle.style.cssText = 'grid-column: 1 / 4; text-align: center; white-space: nowrap; padding-bottom: 2px';
