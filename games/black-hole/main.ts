@@ -209,6 +209,8 @@ const game = await startPixiGame({
   title: 'Black hole',
   createWorld,
   step: () => {
+    // A tap's thrust ends TAP_STEPS steps after it began (here, at a step, so it is recorded there).
+    if (!replay.player) endTaps();
     replay.step();
     if (run && !canThrust(bh, run) && held.length > 0) letGo();
     if (restarted) {
@@ -226,9 +228,13 @@ const game = await startPixiGame({
     isTouchDevice()
       ? { keys: '← ↑ → ↓', action: 'thrust; seam of two: diagonal', touch: 'hold ← ↑ → ↓' }
       : { keys: '← ↑ → ↓', action: 'thrust: a tap nudges, a hold builds up (two at once: diagonal)', touch: 'hold, slide ← ↑ → ↓' },
-    { keys: 'Enter', action: 'next level / continue from this level', touch: 'the big button' },
-    { keys: 'F', action: 'predicted path on / off (red: falls in or lost, blue: reaches the line, grey: undecided)' },
-    { keys: 'V', action: 'replay the run from the start' },
+    { keys: 'Enter', action: 'next level / continue from this level', touch: 'tap the Level ▶ or Continue ↺ button' },
+    {
+      keys: 'F',
+      action: 'predicted path on / off (red: falls in or lost, blue: reaches the line, grey: undecided)',
+      touch: 'the Path button',
+    },
+    { keys: 'V', action: 'replay the run from the start', touch: 'the Replay button' },
   ],
   keys: [
     { key: 'Enter', label: 'next level / restart', action: () => advance() },
@@ -341,6 +347,30 @@ const keysDown = new Set<Arrow>();
 function letGo(): void {
   held.length = 0;
   holds.clear();
+  tapEnds.clear();
+}
+
+/**
+ * A tap: an arrow let go within TAP_MS (wall clock) of its press thrusts for exactly TAP_STEPS steps
+ * from the step it began (0.15 s: from rest a nudge of about 0.16 m/s, ./rules.ts THRUST_RAMP), however
+ * short the press and however many steps a slow frame ran meanwhile. A finger's tap (down and up
+ * between two steps) thrust for no step at all; a key's thrust ran as many steps as the frames
+ * between its press and release held, so the same tap nudged the ship more on a loaded machine.
+ */
+const TAP_STEPS = 9,
+  TAP_MS = 250;
+/** Each arrow's last press: the world's step count and performance.now() then, ms. */
+const pressedAt = new Map<Arrow, { step: number; ms: number }>();
+/** Arrows let go as taps, thrusting on: the step count at which each lets go. */
+const tapEnds = new Map<Arrow, number>();
+/** Lets go of the tapped arrows whose TAP_STEPS are up (called at the start of every step). */
+function endTaps(): void {
+  if (tapEnds.size === 0) return;
+  for (const [dir, end] of tapEnds) {
+    if (bh.world.steps < end) continue;
+    tapEnds.delete(dir);
+    letGoOf(dir);
+  }
 }
 
 function applyHeld(): void {
@@ -366,14 +396,37 @@ function advance(): void {
 }
 /** A key or finger presses arrow `dir`: it becomes the latest arrow held. */
 function press(dir: Arrow): void {
-  holds.set(dir, (holds.get(dir) ?? 0) + 1);
+  pressedAt.set(dir, { step: bh.world.steps, ms: performance.now() });
+  // Pressed again while a tap of it thrusts on: the tap's hold becomes this press's.
+  if (!tapEnds.delete(dir)) holds.set(dir, (holds.get(dir) ?? 0) + 1);
   const i = held.indexOf(dir);
   if (i >= 0) held.splice(i, 1);
   held.push(dir);
   applyHeld();
 }
-/** A key or finger lets go of arrow `dir`: the arrow stays held while another key or finger holds it. */
+/**
+ * A key or finger lets go of arrow `dir`: the arrow stays held while another key or finger holds it;
+ * the last one let go within TAP_MS of its press is a tap, which thrusts on to TAP_STEPS steps
+ * (while the game runs: paused, no game time passes and a key let go lets go at once).
+ */
 function release(dir: Arrow): void {
+  const at = pressedAt.get(dir);
+  if (
+    (holds.get(dir) ?? 0) === 1 &&
+    at &&
+    performance.now() - at.ms < TAP_MS &&
+    bh.world.steps < at.step + TAP_STEPS &&
+    held.includes(dir) &&
+    !replay.player &&
+    !game.shell.paused
+  ) {
+    tapEnds.set(dir, at.step + TAP_STEPS);
+    return;
+  }
+  letGoOf(dir);
+}
+/** Lets go of one hold of arrow `dir` (see `release`). */
+function letGoOf(dir: Arrow): void {
   const n = holds.get(dir) ?? 0;
   if (n > 1) holds.set(dir, n - 1);
   else {
@@ -434,6 +487,10 @@ body .bp-touch-hint { top: 6px; bottom: auto; }
   .bp-touchbar.bh-pad button[data-dir='up'] { grid-area: up; }
   .bp-touchbar.bh-pad button[data-dir='down'] { grid-area: down; }
   .bp-touchbar.bh-pad button[data-dir='right'] { grid-area: right; }
+  /* Path and Replay (F, V) in a column at the pad's right, the pad centred in the rest of the row. */
+  .bp-touchbar.bh-pad { flex: 1 1 0; padding-right: 0; }
+  .bp-touchbar.bh-extras { flex: 0 0 auto; display: grid; grid-template-rows: 54px 54px; gap: 6px; padding: 2px 8px 4px 0; }
+  .bp-touchbar.bh-extras button { min-width: 0; min-height: 0; width: 74px; height: 100%; font-size: 15px; border-radius: 14px; padding: 0; }
 }
 `;
 document.head.append(style);
@@ -450,6 +507,15 @@ const pad = createButtonBar(
   { label: 'thrust buttons', touchOnly: false },
 );
 pad.element.classList.add('bh-pad');
+// Touch: the keys' other actions, F (path on / off) and V (replay), as buttons beside the pad.
+const extras = createButtonBar(
+  [
+    { label: 'Path', name: 'predicted path on / off (F)', key: 'f' },
+    { label: 'Replay', name: 'replay the run (V)', key: 'v' },
+  ],
+  { label: 'path and replay' },
+);
+extras.element.classList.add('bh-extras');
 for (const [i, dir] of DIRS.entries()) pad.buttons[i]!.dataset.dir = dir;
 // A finger (or the mouse) held on the pad slides from arrow to arrow: the thrust follows the arrows
 // under it, so the thumb steers without lifting (each button alone keeps its pointer captured and
@@ -1257,7 +1323,17 @@ function placeActionButton(): void {
   if (el.style.top !== want) el.style.top = want;
 }
 
+/** Whether the last frame was drawn paused, and the thrust when the pause began (the paused path's). */
+let wasPaused = false,
+  pausedThrust: BlackHoleGame['thrust'] = 'none',
+  /** The game the pause's thrust was taken from (a reset while paused makes a new one). */
+  pausedGame: BlackHoleGame | null = null;
 function drawFrame(alpha: number, world: PhysicsWorld): void {
+  if (shell.paused && (!wasPaused || pausedGame !== bh)) {
+    pausedThrust = bh.thrust;
+    pausedGame = bh;
+  }
+  wasPaused = shell.paused;
   // The overlay stays the stage's last child (text added later would be drawn over it).
   if (pause.container.parent === app.stage && app.stage.children[app.stage.children.length - 1] !== pause.container)
     app.stage.addChild(pause.container);
@@ -1278,13 +1354,17 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
     // would take, the engine spooling up from rest as in flight, so a newcomer sees the aid before
     // moving. The thrust is set for the prediction only (the field, not setThrust: no exhaust, no
     // input recorded) and put back at once.
+    // Paused, the path is the course at the moment of the pause: arrows pressed while the world
+    // stands still do not redraw it (trying each way with the clock stopped made levels 1-3 trivial).
+    const liveThrust = bh.thrust;
+    if (shell.paused) bh.thrust = pausedThrust;
     const fromPad = run?.parked === true && bh.thrust === 'none' && canThrust(bh, run);
     const steps = fromPad ? PAD_PATH_STEPS : PATH_STEPS;
     if (fromPad) {
       bh.thrust = 'up';
       pathPoints = predictPath(bh, predictor, path, steps);
-      bh.thrust = 'none';
     } else pathPoints = predictPath(bh, predictor, path, steps);
+    bh.thrust = liveThrust;
     padPath = fromPad;
     // A path that ends on a horizon is drawn red with a ring where it falls in, so the pull of a wall
     // bending the ship into it shows ahead; one that leaves the field (the ship would be lost) red
@@ -1389,6 +1469,8 @@ shell.expose({
   shipPx: (): number => shipPx,
   /** Points of the predicted path drawn in the last frame. */
   pathPoints: (): number => pathPoints,
+  /** The last point of the path drawn in the last frame, m ([x, y]; [] when none was drawn). */
+  pathTip: (): number[] => (pathPoints > 0 ? [path[2 * pathPoints - 2]!, path[2 * pathPoints - 1]!] : []),
   /** Whether that path was the one holding ↑ from the pad would take (the ship parked, no thrust). */
   padPath: (): boolean => padPath,
   /** How that path ended (./rules.ts `pathEnd`: drawn blue when 'clear', red when it 'falls' or is 'lost'); 'clear' when none was drawn. */

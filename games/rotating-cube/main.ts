@@ -2,8 +2,8 @@
  * Rotating cube: rigid-body rotation in 3D. By default (mode 'room') a 1 m cube falls tumbling into a
  * room and collides with the floor and the walls (a box collider and 3D box contacts): it lands,
  * tumbles, slides and bounces off them. The challenge: rest it on five glowing pads in turn, against
- * the clock, the last three with a given face on top (PAD_FACES: roll it to turn that face up, slide
- * it there). A click or tap on the floor pushes the cube towards that point, just hard enough that
+ * the clock (from the first move), the last four with a given face on top (roll it to turn that face
+ * up, slide it there), each pad smaller than the one before. A click or tap on the floor pushes the cube towards that point, just hard enough that
  * sliding on a face it stops there (`slideSpeed`); a click on the cube flicks it away from the point
  * clicked at a fixed speed; W A S D roll it over its edges in the screen's directions and Q E spin it
  * (a couple of forces from `applyForceAtPoint` in a forces-stage system, which stops pushing once it
@@ -21,9 +21,11 @@
  * spin; Space jump (room); M switches mode (room, cube on a pivot, flip); P pause, N single step, R reset.
  * Click: room: the floor, a push there; the cube, a flick away from the point; pivot: an impulse at the
  * point of the face clicked along the ray. Drag: orbit.
- * Challenges: room: rest the cube on five pads in turn, the last three with a given face up (stars by
- * time); flip: 10 flips in 20 s.
- * URL: ?mode=room|cube|flip (default room), ?spin=rad/s (flip).
+ * Challenges: room: rest the cube on five pads in turn, the last four with a given face up (stars by
+ * time); flip: 10 flips in 20 s, counted only while the spin is within FLIP_BAND.
+ * Each run (page load or R) lays the pads out afresh from a seed (scene.ts `padLayout`); the face net at
+ * the top left of the stage shows which colour each roll key brings on top.
+ * URL: ?mode=room|cube|flip (default room), ?spin=rad/s (flip), ?seed=N (the same pad layout every run).
  */
 
 import {
@@ -69,17 +71,20 @@ import {
 } from 'three';
 import {
   buildRotatingCube,
+  FACES,
+  FLIP_BAND,
   FLIP_GOAL,
   FLIP_TIME,
   FlipChallenge,
   JUMP_IMPULSE,
   MODES,
   type Mode,
-  PAD_FACES,
+  PAD_COUNT,
   PAD_HALF,
   PAD_STAR_TIMES,
-  PADS,
   PadChallenge,
+  type PadLayout,
+  padLayout,
   padStars,
   ROLL_SPIN_MAX,
   ROLL_TORQUE,
@@ -118,6 +123,10 @@ const params = {
 };
 
 let handles: RotatingCubeHandles;
+/** ?seed=N: every run lays out the same pads; without it each run (load or R) draws a new seed. */
+const fixedSeed = new URLSearchParams(location.search).has('seed') ? numberParam('seed', { default: 1, min: 0, max: 2 ** 31 }) : null;
+/** The pads of this run (`padLayout` of a fresh seed per world). */
+let layout: PadLayout = padLayout(fixedSeed ?? Math.floor(Math.random() * 2 ** 31));
 /** Room mode's challenge (the pads) and flip mode's (flips in FLIP_TIME); reset with the world. */
 const pads = new PadChallenge(),
   flips = new FlipChallenge();
@@ -176,13 +185,14 @@ function createWorld(): PhysicsWorld {
   );
   // The challenges are checked after every step (a system at the end of the step), so they count
   // the same whether the page runs, single-steps or is stepped by a test.
-  pads.reset();
+  layout = padLayout(fixedSeed ?? Math.floor(Math.random() * 2 ** 31));
+  pads.reset(layout);
   flips.reset();
   padsReached.length = 0;
   latchUntil = -1;
   addSystem(world, 'finalize', (w) => {
     if (params.mode === 'room') {
-      const spot = PADS[pads.pad];
+      const spot = layout.pads[pads.pad];
       if (spot && pads.update(w, handles.body)) {
         const P = w.components.Position;
         const miss = Math.hypot(P.x[handles.body]! - spot[0], P.z[handles.body]! - spot[1]);
@@ -253,19 +263,33 @@ const game = await startThreeGame({
 const { shell, renderer, app } = game;
 clampOrbit();
 
-/** What the camera frames in each mode, m: the room with its walls, or the box on its pivot. */
+/**
+ * Whether the stage is a tall one (a phone held upright): there the room is seen from the front and
+ * high up, framed by its floor, so it fills the width of the screen (seen from a corner, it framed its
+ * diagonal and filled half the screen, the cube some 40 px).
+ */
+function tallStage(): boolean {
+  const stage = pageLayout().stage;
+  const w = stage.clientWidth || window.innerWidth,
+    h = stage.clientHeight || window.innerHeight;
+  return h > 1.2 * w;
+}
+
+/** What the camera frames in each mode, m: the room with its walls (on a tall stage its floor), or the box on its pivot. */
 function viewOf(mode: Mode): { min: [number, number, number]; max: [number, number, number] } {
-  return mode === 'room'
-    ? { min: [-ROOM_HALF, 0, -ROOM_HALF], max: [ROOM_HALF, WALL_HEIGHT, ROOM_HALF] }
-    : { min: [-1.3, -1.3, -1.3], max: [1.3, 1.8, 1.3] };
+  if (mode !== 'room') return { min: [-1.3, -1.3, -1.3], max: [1.3, 1.8, 1.3] };
+  const edge = tallStage() ? ROOM_HALF - 0.3 : ROOM_HALF;
+  return { min: [-edge, 0, -edge], max: [edge, tallStage() ? 1 : WALL_HEIGHT, edge] };
 }
 
 /**
  * Direction the camera looks from in each mode: the room from high up (about 50 degrees), so a cube
- * against the near wall stays in sight over it; the pivot from a little above.
+ * against the near wall stays in sight over it (on a tall stage from the front, about 65 degrees);
+ * the pivot from a little above.
  */
 function viewDirectionOf(mode: Mode): [number, number, number] {
-  return mode === 'room' ? [1, 2.1, 1.4] : [1, 0.7, 1.4];
+  if (mode !== 'room') return [1, 0.7, 1.4];
+  return tallStage() ? [0, 2.2, 1] : [1, 2.1, 1.4];
 }
 
 /**
@@ -296,15 +320,20 @@ function push(): number {
 /** Space: in room mode, a jump (an impulse up at the centre of mass). */
 function jump(): void {
   if (params.mode !== 'room') return;
+  pads.start(shell.world.time);
   applyImpulse(shell.world, handles.body, [0, JUMP_IMPULSE, 0]);
 }
 
-// The body: a unit box with one colour per face (x red, y green, z blue; a pale tint of it on the
-// negative side, so every face reads in the light), scaled by the renderer to the body's
+// The body: a unit box with one colour per face, six hues a player names at a glance (red, yellow,
+// green, purple, blue, white: no two tints of one hue), scaled by the renderer to the body's
 // equivalent-inertia box.
-const faceColors = [0xef5b3a, 0xf6b09a, 0x5cc043, 0xbde8a4, 0x3d7be0, 0xa9c6f7];
-/** The faces' colours in words, in the order of FACES (a pale face is opposite its colour). */
-const FACE_NAMES = ['red', 'pale red', 'green', 'pale green', 'blue', 'pale blue'];
+const faceColors = [0xe53935, 0xfdd835, 0x43a047, 0xb05cd6, 0x1e88e5, 0xf5f5f5];
+/** The faces' colours in words, in the order of FACES (+x red, -x yellow, +y green, -y purple, +z blue, -z white). */
+const FACE_NAMES = ['red', 'yellow', 'green', 'purple', 'blue', 'white'];
+/** CSS colour of face `f`. */
+const faceCss = (f: number): string => `#${faceColors[f]!.toString(16).padStart(6, '0')}`;
+/** The glow of a pad that takes any face (cyan: none of the faces' hues). */
+const ANY_COLOR = 0x22d3ee;
 const boxGeometry = new BoxGeometry(1, 1, 1);
 {
   // Vertex colours are linear in three.js; Color converts from sRGB hex.
@@ -337,19 +366,27 @@ padMesh.receiveShadow = true;
 app.scene.add(padMesh);
 const padOutline = new EdgesGeometry(new PlaneGeometry(2 * PAD_HALF, 2 * PAD_HALF).rotateX(-Math.PI / 2));
 const padDoneMaterial = new MeshBasicMaterial({ color: 0xc9a43a, transparent: true, opacity: 0.55 });
-const padMarks = PADS.map(([x, z], i) => {
-  // Outlined in the colour of the face it wants (mint: any face).
-  const want = PAD_FACES[i]!;
-  const outline = new LineSegments(
-    padOutline,
-    new LineBasicMaterial({ color: want >= 0 ? faceColors[want]! : 0x9fe8c0, transparent: true, opacity: 0.7 }),
-  );
+const padMarks = Array.from({ length: PAD_COUNT }, () => {
+  const outline = new LineSegments(padOutline, new LineBasicMaterial({ color: ANY_COLOR, transparent: true, opacity: 0.8 }));
   const done = new Mesh(new PlaneGeometry(2 * PAD_HALF, 2 * PAD_HALF).rotateX(-Math.PI / 2), padDoneMaterial);
-  outline.position.set(x, 0.015, z);
-  done.position.set(x, 0.012, z);
   app.scene.add(outline, done);
   return { outline, done };
 });
+/** Places the pads' marks for this run's layout: each outlined in the colour of the face it wants (cyan: any face), sized to its pad. */
+function placePadMarks(): void {
+  padMarks.forEach((mark, i) => {
+    const [x, z] = layout.pads[i]!,
+      want = layout.faces[i]!,
+      k = layout.halves[i]! / PAD_HALF;
+    (mark.outline.material as LineBasicMaterial).color.setHex(want >= 0 ? faceColors[want]! : ANY_COLOR);
+    mark.outline.position.set(x, 0.015, z);
+    mark.outline.scale.set(k, 1, k);
+    mark.done.position.set(x, 0.012, z);
+    mark.done.scale.set(k, 1, k);
+  });
+}
+placePadMarks();
+shell.onWorldChange(placePadMarks);
 const burst = new Mesh(
   new RingGeometry(0.85, 1, 48).rotateX(-Math.PI / 2),
   new MeshBasicMaterial({ color: 0xffe27a, transparent: true, side: DoubleSide, depthWrite: false }),
@@ -408,17 +445,18 @@ const PAD_PITCHES = [523, 659, 784, 988, 1175];
 function celebrate(): void {
   while (padsReached.length > 0) {
     const r = padsReached.shift()!;
-    const last = r.pad === PADS.length - 1;
-    const spot = PADS[r.pad]!;
+    const last = r.pad === layout.pads.length - 1;
+    const spot = layout.pads[r.pad]!;
     burst.position.set(spot[0], 0.03, spot[1]);
     burstAt = performance.now();
     sound.chime(PAD_PITCHES[r.pad] ?? 880, last ? 0.3 : 0.35);
     if (last) window.setTimeout(() => sound.chime(1568, 0.8), 180);
     const perfect = r.miss <= PERFECT ? ' · Perfect!' : '';
+    const time = pads.time(r.time);
     showPop(
       last
-        ? `All ${PADS.length} pads! ${r.time.toFixed(1)} s ${stars(padStars(r.time))}`
-        : `Pad ${r.pad + 1} of ${PADS.length} ✓${perfect}`,
+        ? `All ${layout.pads.length} pads! ${time.toFixed(1)} s ${stars(padStars(time))}`
+        : `Pad ${r.pad + 1} of ${layout.pads.length} ✓${perfect}`,
       last ? 2600 : 1100,
     );
   }
@@ -441,6 +479,8 @@ function typing(target: EventTarget | null): boolean {
 window.addEventListener('keydown', (event) => {
   const k = event.key.toLowerCase();
   if (!TORQUE_KEYS.includes(k) || typing(event.target) || event.ctrlKey || event.metaKey || event.altKey) return;
+  // The round's clock starts with the player's first move.
+  if (params.mode === 'room') pads.start(shell.world.time);
   held.add(k);
   pressed.add(k);
   event.preventDefault();
@@ -714,6 +754,7 @@ function clickAt(ndcX: number, ndcY: number): boolean {
     if (!p) return false;
     const c = shell.world.components,
       m = c.Mass.value[e]!;
+    pads.start(shell.world.time);
     applyImpulse(shell.world, e, [m * (p.dx * p.speed - c.Velocity.x[e]!), 0, m * (p.dz * p.speed - c.Velocity.z[e]!)]);
     lastPush = { ...p };
     sound.launch(0.25 + (0.5 * p.speed) / 7);
@@ -803,35 +844,44 @@ function updateStatus(wx: number, wy: number, wz: number): void {
     let flick = touch
       ? 'Tap the floor: the cube slides there · ▲◀▼▶ roll it'
       : 'Click the floor: the cube slides there · W A S D roll it · Space jumps';
-    const want = PAD_FACES[pads.pad] ?? -1;
+    const want = layout.faces[pads.pad] ?? -1;
     if (want >= 0 && !pads.done)
       flick = touch
-        ? `Roll it (▲◀▼▶) till ${FACE_NAMES[want]} is on top, then tap the pad`
-        : `Roll it (W A S D) till ${FACE_NAMES[want]} is on top, then click the pad`;
+        ? `Roll it (▲◀▼▶) till ${FACE_NAMES[want]} is on top (the net shows which), then tap the pad`
+        : `Roll it (W A S D) till ${FACE_NAMES[want]} is on top (the net shows which), then click the pad`;
+    const time = pads.time(t);
+    if (pads.startedAt < 0 && !pads.done)
+      flick = touch ? `Clock starts at your first tap · ${flick}` : `Clock starts at your first move · ${flick}`;
     if (pads.done) {
-      const time = pads.doneAt;
       if (time < bestPadTime) bestPadTime = time;
       status.set(
         {
-          goal: `All ${PADS.length} pads in ${time.toFixed(1)} s ${stars(padStars(time))}`,
+          goal: `All ${layout.pads.length} pads in ${time.toFixed(1)} s ${stars(padStars(time))}`,
           numbers: `best ${bestPadTime.toFixed(1)} s · ★★★ within ${PAD_STAR_TIMES[0]} s`,
           hint: touch
-            ? '↻: play again · Mode: free spin, then the flip challenge'
-            : 'R: play again · M: next mode (free spin, then the flip challenge)',
+            ? '↻: a new layout · Mode: free spin, then the flip challenge'
+            : 'R: a new layout · M: next mode (free spin, then the flip challenge)',
         },
         true,
       );
     } else
       status.set({
-        goal: `Land the cube on the glowing pad${want >= 0 ? `, ${FACE_NAMES[want]} face up` : ''} (${pads.pad + 1} of ${PADS.length})`,
-        numbers: `Pads ${'●'.repeat(pads.pad)}${'○'.repeat(PADS.length - pads.pad)} ${pads.pad}/${PADS.length} · ${t.toFixed(1)} s · ${stars(padStars(Math.max(t, 0)))}`,
+        goal: `Land the cube on the glowing pad${want >= 0 ? `, ${FACE_NAMES[want]} face up` : ', any face up'} (${pads.pad + 1} of ${layout.pads.length})`,
+        numbers: `Pads ${'●'.repeat(pads.pad)}${'○'.repeat(layout.pads.length - pads.pad)} ${pads.pad}/${layout.pads.length} · ${time.toFixed(1)} s · ${stars(padStars(time))}`,
         hint: flick,
       });
   } else if (params.mode === 'flip') {
     const n = flips.counter.count;
     const over = flips.over(world);
     if (over && n > bestFlips) bestFlips = n;
-    const spin = touch ? 'hold Yaw' : 'hold A or D';
+    const [lo, hi] = FLIP_BAND;
+    const inBand = w >= lo && w <= hi;
+    const band =
+      w < lo
+        ? `too slow: spin it up (${touch ? 'Yaw ▶' : 'D'})`
+        : w > hi
+          ? `too fast: brake (${touch ? 'Yaw ◀' : 'A'})`
+          : `in the band ✓ · a kick (${touch ? 'Pitch' : 'W or S'}) makes it flip sooner`;
     status.set(
       over
         ? {
@@ -843,9 +893,9 @@ function updateStatus(wx: number, wy: number, wz: number): void {
             hint: touch ? '↻: try again · Mode: back to the pads' : 'R: try again · M: back to the pads',
           }
         : {
-            goal: `Make the box flip over ${FLIP_GOAL} times in ${FLIP_TIME} s`,
-            numbers: `Flips ${n}/${FLIP_GOAL} · ${Math.max(0, FLIP_TIME - t).toFixed(1)} s left · |ω| ${w.toFixed(1)} rad/s`,
-            hint: `It flips by itself; spun faster it flips faster: ${spin}`,
+            goal: `Make the box flip ${FLIP_GOAL} times in ${FLIP_TIME} s, spinning at ${lo} to ${hi} rad/s`,
+            numbers: `Flips ${n}/${FLIP_GOAL} · ${Math.max(0, FLIP_TIME - t).toFixed(1)} s left · |ω| ${w.toFixed(1)} ${inBand ? '✓' : '✗'}`,
+            hint: `Flips count only in the band: ${band}`,
           },
       over && flips.wonAt >= 0,
     );
@@ -858,6 +908,113 @@ function updateStatus(wx: number, wy: number, wz: number): void {
       hint: touch ? 'Mode: a box, whose ω wanders and flips' : 'M: a box, whose ω wanders and flips',
     });
   }
+}
+
+// ---- The face net (top left of the stage): which colour each roll brings on top ------------------
+
+/**
+ * A cross of six small squares over the stage's top left corner: in the middle the face on top now,
+ * around it the face each roll key would bring on top (▲/W: the face towards the viewer, ▼/S: the one
+ * facing away, ◀/A: the one on the right, ▶/D: the one on the left: a cube rolls over the edge it
+ * tips towards), and under ▼ the face underneath (two rolls away). The face the lit pad wants wears
+ * a ring, so the player plans the rolls before making them. Room mode only.
+ */
+const net = document.createElement('div');
+net.dataset.hud = 'face-net';
+// Part of the scene's drawing (like a label on it), not page furniture covering the scene.
+net.dataset.sceneOverlay = '';
+net.setAttribute('aria-label', 'faces of the cube');
+net.style.cssText =
+  'position: absolute; left: 8px; top: 8px; z-index: 4; pointer-events: none; display: grid; gap: 3px;' +
+  'grid-template-columns: repeat(3, var(--cell)); grid-template-rows: auto repeat(4, var(--cell)); --cell: clamp(28px, 7vmin, 34px);' +
+  'padding: 6px; border-radius: 8px; background: rgba(8, 12, 20, 0.78); font: 600 11px system-ui, sans-serif; color: #e8ecf1;';
+const netTitle = document.createElement('div');
+netTitle.style.cssText = 'grid-column: 1 / 4; text-align: center; white-space: nowrap; padding-bottom: 2px';
+netTitle.textContent = 'rolls bring up';
+net.append(netTitle);
+/** The net's cells: top (on top now), and the faces ▲ ▼ ◀ ▶ would bring up, and the bottom. */
+const NET_CELLS = [
+  { name: 'w', row: 2, col: 2, key: touch ? '▲' : 'W' },
+  { name: 'a', row: 3, col: 1, key: touch ? '◀' : 'A' },
+  { name: 'top', row: 3, col: 2, key: '' },
+  { name: 'd', row: 3, col: 3, key: touch ? '▶' : 'D' },
+  { name: 's', row: 4, col: 2, key: touch ? '▼' : 'S' },
+  { name: 'bottom', row: 5, col: 2, key: '2×' },
+] as const;
+const netCells = NET_CELLS.map((c) => {
+  const cell = document.createElement('div');
+  cell.dataset.cell = c.name;
+  cell.style.cssText =
+    `grid-row: ${c.row}; grid-column: ${c.col}; border-radius: 4px; display: flex; align-items: center; justify-content: center;` +
+    'font: 700 10px system-ui, sans-serif; box-sizing: border-box; border: 2px solid rgba(0, 0, 0, 0.5)';
+  // The key on a dark chip: legible on every face colour (WCAG AA), light or dark.
+  if (c.key !== '') {
+    const chip = document.createElement('span');
+    chip.textContent = c.key;
+    chip.style.cssText = 'background: #0b0f18; color: #fff; border-radius: 3px; padding: 0 3px; line-height: 1.3';
+    cell.append(chip);
+  }
+  net.append(cell);
+  return cell;
+});
+{
+  const stage = app.canvas.parentElement ?? document.body;
+  stage.append(net);
+}
+/** The faces in the net's cells last drawn (index into FACES per cell), for `faces()` and to skip redraws. */
+const netFaces: number[] = NET_CELLS.map(() => -1);
+let netWant = -2;
+/** Of the cube's six faces, the one whose outward normal points most nearly along level (dx, 0, dz). */
+function faceToward(cols: number[][], dx: number, dz: number): number {
+  let best = 0,
+    bestDot = -Infinity;
+  for (let f = 0; f < FACES.length; f++) {
+    const c = cols[f >> 1]!,
+      sign = f & 1 ? -1 : 1;
+    const dot = sign * (c[0]! * dx + c[2]! * dz);
+    if (dot > bestDot) [best, bestDot] = [f, dot];
+  }
+  return best;
+}
+/** Redraws the net from the cube's orientation and the camera (every few frames). */
+function updateNet(): void {
+  const room = params.mode === 'room';
+  net.style.display = room ? 'grid' : 'none';
+  if (!room) return;
+  const q = shell.world.components.Orientation,
+    e = handles.body;
+  const x = q.x[e]!,
+    y = q.y[e]!,
+    z = q.z[e]!,
+    w = q.w[e]!;
+  // The body's axes in the world: the columns of its rotation matrix.
+  const cols = [
+    [1 - 2 * (y * y + z * z), 2 * (x * y + w * z), 2 * (x * z - w * y)],
+    [2 * (x * y - w * z), 1 - 2 * (x * x + z * z), 2 * (y * z + w * x)],
+    [2 * (x * z + w * y), 2 * (y * z - w * x), 1 - 2 * (x * x + y * y)],
+  ];
+  app.camera.matrixWorld.extractBasis(right, up, back);
+  const rl = Math.hypot(right.x, right.z) || 1,
+    bl = Math.hypot(back.x, back.z) || 1;
+  const rx = right.x / rl,
+    rz = right.z / rl,
+    bx = back.x / bl,
+    bz = back.z / bl;
+  const top = topFace(shell.world, e);
+  // W rolls away: the face towards the viewer comes up; S the far one; A (left) the right one; D the left one.
+  const faces = [faceToward(cols, bx, bz), faceToward(cols, rx, rz), top, faceToward(cols, -rx, -rz), faceToward(cols, -bx, -bz), top ^ 1];
+  const want = pads.done ? -1 : (layout.faces[pads.pad] ?? -1);
+  if (faces.every((f, i) => f === netFaces[i]) && want === netWant) return;
+  netWant = want;
+  faces.forEach((f, i) => {
+    netFaces[i] = f;
+    const cell = netCells[i]!;
+    cell.style.background = faceCss(f);
+    cell.style.outline = f === want ? '3px solid #fff' : 'none';
+    cell.style.outlineOffset = '1px';
+    cell.title = FACE_NAMES[f]!;
+  });
+  netCells[2]!.style.border = '2px solid #fff';
 }
 
 // ---- Readout and plot (bottom right) -------------------------------------------------------------
@@ -937,21 +1094,24 @@ function frame(): void {
     angleLw = angle;
   }
   if (frames % 5 === 0) updateStatus(wx, wy, wz);
+  if (frames % 3 === 0) updateNet();
   // The lit pad glows (pulsing) while the room's round runs; the ones to come are outlined, the ones reached gold.
   const room = params.mode === 'room';
   const padLit = room && !pads.done;
   padMesh.visible = padLit;
   const now = performance.now();
   if (padLit) {
-    const spot = PADS[pads.pad]!;
+    const spot = layout.pads[pads.pad]!,
+      k = layout.halves[pads.pad]! / PAD_HALF;
+    padMesh.scale.set(k, 1, k);
     padMesh.position.set(spot[0], 0.02, spot[1]);
-    // A pad that takes any face glows mint; one that wants a face glows in that face's colour
+    // A pad that takes any face glows cyan; one that wants a face glows in that face's colour
     const material = padMesh.material as MeshStandardMaterial,
-      want = PAD_FACES[pads.pad]!;
+      want = layout.faces[pads.pad]!;
     // (a face colour glows faintly, so the pad reads as the same colour as the face, not washed out).
-    material.color.setHex(want >= 0 ? faceColors[want]! : 0x0c8f52);
-    material.emissive.setHex(want >= 0 ? faceColors[want]! : 0x12c46e);
-    material.emissiveIntensity = want >= 0 ? 0.3 + 0.15 * Math.sin(now / 250) : 0.8 + 0.4 * Math.sin(now / 250);
+    material.color.setHex(want >= 0 ? faceColors[want]! : ANY_COLOR);
+    material.emissive.setHex(want >= 0 ? faceColors[want]! : ANY_COLOR);
+    material.emissiveIntensity = 0.3 + 0.15 * Math.sin(now / 250);
   }
   padMarks.forEach((mark, i) => {
     mark.outline.visible = room && i > pads.pad;
@@ -1004,19 +1164,24 @@ shell.expose({
     return Array.from(out);
   },
   /**
-   * The challenge's state: room: the lit pad's index (PADS.length when the round is over), the face
-   * on top and the face the lit pad wants, the round's
-   * time (s, -1 while it runs) and the pads' centres (x, z, m); flip: the flips counted and the time
-   * the goal was reached (s, -1 if not yet).
+   * The challenge's state: room: the lit pad's index (the pads' count when the round is over), the
+   * face on top and the face the lit pad wants, the world time the round ended (s, -1 while it runs),
+   * the round's clock, the layout's seed, the pads' centres (x, z, m), wanted faces and half edges (m);
+   * flip: the flips counted and the time the goal was reached (s, -1 if not yet).
    */
   challenge: () => ({
     mode: params.mode,
     pad: pads.pad,
     /** The face of the cube on top now and the one the lit pad wants (indices into FACES; -1: any). */
     face: topFace(shell.world, handles.body),
-    wants: PAD_FACES[pads.pad] ?? -1,
+    wants: layout.faces[pads.pad] ?? -1,
     padsDoneAt: pads.doneAt,
-    pads: PADS.map((p) => [p[0], p[1]]),
+    /** The round's clock, s (0 until the first input starts it). */
+    padTime: pads.time(shell.world.time),
+    seed: layout.seed,
+    pads: layout.pads.map((p) => [p[0], p[1]]),
+    faces: [...layout.faces],
+    halves: [...layout.halves],
     flips: flips.counter.count,
     flipsWonAt: flips.wonAt,
   }),
@@ -1031,6 +1196,12 @@ shell.expose({
   pop: () => ({ text: pop.textContent ?? '', shown: pop.style.opacity === '1' }),
   /** Sounds played so far (the pads' chimes, pushes, impacts; 0 until the first input starts the audio). */
   soundsPlayed: (): number => sound.played,
+  /**
+   * The face net: the face on top ('top'), the face each roll key would bring up ('w', 'a', 'd', 's')
+   * and the one underneath ('bottom'), as colour names (FACE_NAMES), as last drawn.
+   */
+  faceNet: (): Record<string, string> =>
+    Object.fromEntries(NET_CELLS.map((c, i) => [c.name, netFaces[i]! >= 0 ? FACE_NAMES[netFaces[i]!]! : ''])),
   /** Switches mode ('room', 'cube' or 'flip') and rebuilds. @throws RangeError on an unknown mode. */
   setMode: (mode: Mode): void => {
     if (!MODES.includes(mode)) throw new RangeError(`setMode: mode must be one of ${MODES.join(', ')}, got ${String(mode)}`);

@@ -255,8 +255,9 @@ export function torqueCouple(body: number, torque: () => ArrayLike<number>): Sys
 // ---- Challenges -------------------------------------------------------------------------------
 
 /**
- * Room mode's challenge: the pads' centres (x, z), m, in the order they light up. Each is a square
- * of half edge PAD_HALF on the floor, clear of the walls by more than the cube's half diagonal.
+ * Room mode's challenge: the classic pads' centres (x, z), m, in the order they light up (the layout
+ * of `padLayout` before seeds: the game now lays out a fresh round per run with `padLayout`). Each is a
+ * square of half edge PAD_HALF on the floor, clear of the walls by more than the cube's half diagonal.
  */
 export const PADS: readonly (readonly [number, number])[] = Object.freeze([
   [1.6, -1.5],
@@ -265,19 +266,94 @@ export const PADS: readonly (readonly [number, number])[] = Object.freeze([
   [-1.6, -1.6],
   [0, 0.9],
 ]);
-/** Half edge of a pad, m: the cube scores when its centre rests within this of the pad's centre on x and z. */
+/** Largest half edge of a pad, m (the first pad's): the cube scores when its centre rests within a pad's half edge of its centre on x and z. */
 export const PAD_HALF = 0.6;
 /**
  * The faces of the cube, in the order of its body axes and of three.js's BoxGeometry groups: +x, -x,
- * +y, -y, +z, -z (the game paints them red, pale red, green, pale green, blue, pale blue).
+ * +y, -y, +z, -z (the game paints them red, yellow, green, purple, blue, white).
  */
 export const FACES = Object.freeze(['+x', '-x', '+y', '-y', '+z', '-z'] as const);
-/**
- * The face each pad wants on top (an index into FACES), or -1 for any: the first two pads take any
- * face (a slide is enough); the last three want +x, +z and +y up, which takes rolling the cube over
- * its edges (a slide keeps the face up).
- */
+/** The classic layout's wanted faces (an index into FACES, -1 for any), kept beside PADS. */
 export const PAD_FACES: readonly number[] = Object.freeze([-1, -1, 0, 4, 2]);
+
+/** A round of pads: centres (x, z), m; the face each wants on top (index into FACES, -1: any); half edges, m. */
+export interface PadLayout {
+  /** The seed it was laid out from (an integer). */
+  readonly seed: number;
+  /** Pad centres (x, z), m, in the order they light up; PAD_COUNT of them. */
+  readonly pads: readonly (readonly [number, number])[];
+  /** The face each pad wants on top: an index into FACES, or -1 for any face. */
+  readonly faces: readonly number[];
+  /** Each pad's half edge, m, in (0, PAD_HALF]: the pads shrink as the round goes on. */
+  readonly halves: readonly number[];
+}
+/** Pads in a round. */
+export const PAD_COUNT = 5;
+/** Half edges of the pads in a round, m: the later pads are smaller targets. */
+export const PAD_HALVES: readonly number[] = Object.freeze([0.6, 0.55, 0.5, 0.45, 0.42]);
+/** A pad centre lies within this of the room's centre on x and z, m (clear of the walls by more than a pad and the cube's half diagonal). */
+export const PAD_REACH = 2.1;
+/** The face the room's cube lands with on top when dropped at the start (+y: it is dropped nearly level). */
+export const LANDING_FACE = 2;
+/** The classic layout (PADS, PAD_FACES, every pad PAD_HALF), seed -1. */
+export const CLASSIC_LAYOUT: PadLayout = Object.freeze({
+  seed: -1,
+  pads: PADS,
+  faces: PAD_FACES,
+  halves: Object.freeze(PADS.map(() => PAD_HALF)),
+});
+
+/**
+ * A round's layout from `seed` (the same seed, the same round): PAD_COUNT pads within PAD_REACH of
+ * the centre, the first at least 1.5 m from where the cube lands (the centre), each at least 2 m from
+ * the one before and 1.4 m from every other (none overlap); the first takes any face, the others each want one, in a sequence that grows
+ * harder: the second a face beside LANDING_FACE (one roll), then the face opposite the previous
+ * pad's (two rolls), then one beside it, then the opposite again; the pads shrink (PAD_HALVES).
+ * Always solvable: a slide keeps the face on top, and from the room's centre any face comes up in at
+ * most two rolls (2 m, inside the 6 m room), so slide to the centre, roll, slide onto the pad.
+ * @param seed any finite number (floored to an integer).
+ * @throws RangeError if `seed` is not finite.
+ */
+export function padLayout(seed: number): PadLayout {
+  if (!Number.isFinite(seed)) throw new RangeError(`padLayout: seed must be a finite number, got ${seed}`);
+  const s = Math.floor(seed);
+  // mulberry32: a small, well-mixed 32-bit generator (Tommy Ettinger's), enough for a layout.
+  let a = s >>> 0;
+  const random = (): number => {
+    a = (a + 0x6d2b79f5) >>> 0;
+    let t = a;
+    t = Math.imul(t ^ (t >>> 15), t | 1);
+    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
+    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
+  };
+  const pads: [number, number][] = [];
+  for (let k = 0; k < PAD_COUNT; k++) {
+    for (let tries = 0; ; tries++) {
+      const x = Math.round((2 * random() - 1) * PAD_REACH * 10) / 10,
+        z = Math.round((2 * random() - 1) * PAD_REACH * 10) / 10;
+      const prev = k > 0 ? pads[k - 1]! : null;
+      // Apart from every pad before it by 1.4 m (no two overlap), from the one before by 2 m.
+      const ok =
+        (prev ? Math.hypot(x - prev[0], z - prev[1]) >= 2 : Math.hypot(x, z) >= 1.5) &&
+        pads.every(([px, pz]) => Math.hypot(x - px, z - pz) >= 1.4);
+      if (ok || tries > 200) {
+        pads.push([x, z]);
+        break;
+      }
+    }
+  }
+  const faces = [-1];
+  // Beside a face: the four faces on the other two axes.
+  const beside = (f: number): number => {
+    const axes = [0, 1, 2].filter((i) => i !== f >> 1);
+    return 2 * axes[Math.floor(random() * 2)]! + (random() < 0.5 ? 1 : 0);
+  };
+  faces.push(beside(LANDING_FACE));
+  faces.push(faces[1]! ^ 1);
+  faces.push(beside(faces[2]!));
+  faces.push(faces[3]! ^ 1);
+  return Object.freeze({ seed: s, pads: Object.freeze(pads), faces: Object.freeze(faces), halves: PAD_HALVES });
+}
 
 /**
  * The face of `body` on top: the index into FACES of its body axis (either way) pointing most nearly
@@ -303,16 +379,16 @@ export function topFace(world: PhysicsWorld, body: number): number {
 export const PAD_STAR_TIMES: readonly [number, number] = Object.freeze([30, 60]) as readonly [number, number];
 
 /**
- * Whether `body` rests on the pad centred at (px, pz) (m): its centre within PAD_HALF of the pad on x
- * and z, at most 0.6 m up (a 1 m cube lying on a face sits at 0.5 m), moving slower than 0.2 m/s and
- * turning slower than 0.5 rad/s.
+ * Whether `body` rests on the pad centred at (px, pz) (m): its centre within `half` (m, default
+ * PAD_HALF) of the pad on x and z, at most 0.6 m up (a 1 m cube lying on a face sits at 0.5 m),
+ * moving slower than 0.2 m/s and turning slower than 0.5 rad/s.
  */
-export function restsOnPad(world: PhysicsWorld, body: number, px: number, pz: number): boolean {
+export function restsOnPad(world: PhysicsWorld, body: number, px: number, pz: number, half = PAD_HALF): boolean {
   const c = world.components,
     P = c.Position,
     V = c.Velocity,
     W = c.AngularVelocity;
-  if (Math.abs(P.x[body]! - px) > PAD_HALF || Math.abs(P.z[body]! - pz) > PAD_HALF || P.y[body]! > 0.6) return false;
+  if (Math.abs(P.x[body]! - px) > half || Math.abs(P.z[body]! - pz) > half || P.y[body]! > 0.6) return false;
   return Math.hypot(V.x[body]!, V.y[body]!, V.z[body]!) < 0.2 && Math.hypot(W.x[body]!, W.y[body]!, W.z[body]!) < 0.5;
 }
 
@@ -324,6 +400,13 @@ export function padStars(seconds: number): number {
 /** Flip mode's challenge: flips to make, and the time allowed, s. */
 export const FLIP_GOAL = 10;
 export const FLIP_TIME = 20;
+/**
+ * Flip mode: a flip counts only while the spin |w| is within this band, rad/s. The box starts below
+ * it (6 rad/s), a held yaw key spins it up through the band in about 3 s and out of it; so the player
+ * spins it up, lets go (or brakes) to stay in the band, and kicks it with a pitch or roll key, which
+ * tips w off the intermediate axis so it flips sooner.
+ */
+export const FLIP_BAND: readonly [number, number] = Object.freeze([8, 12]) as readonly [number, number];
 
 /**
  * Counts flips of a spinning box: the cosine between its intermediate (y) axis and its angular
@@ -338,18 +421,22 @@ export class FlipCounter {
   /** Forgets the flips and the side. */
   reset(): void {
     this.count = 0;
+    this.missed = 0;
     this.side = 0;
   }
+  /** Flips made while `counts` was false (out of the band): seen, not counted. */
+  missed = 0;
   /**
-   * Feeds the cosine between the box's y axis and L (in [-1, 1]; a non-finite value is ignored).
+   * Feeds the cosine between the box's y axis and L (in [-1, 1]; a non-finite value is ignored); a
+   * flip completed while `counts` is false (default true) goes to `missed` instead of `count`.
    * @returns the flips counted so far.
    */
-  update(cosine: number): number {
+  update(cosine: number, counts = true): number {
     if (cosine > 0.5) {
-      if (this.side < 0) this.count++;
+      if (this.side < 0) counts ? this.count++ : this.missed++;
       this.side = 1;
     } else if (cosine < -0.5) {
-      if (this.side > 0) this.count++;
+      if (this.side > 0) counts ? this.count++ : this.missed++;
       this.side = -1;
     }
     return this.count;
@@ -357,43 +444,67 @@ export class FlipCounter {
 }
 
 /**
- * Room mode's challenge, a round of PADS.length pads: the pad `pad` is lit; when the cube rests on it
- * (`restsOnPad`) with the face the pad wants on top (PAD_FACES, `topFace`) the next one lights; after
- * the last the round is over at `doneAt` (world time, s).
+ * Room mode's challenge, a round of pads laid out by a `PadLayout` (default CLASSIC_LAYOUT): the pad
+ * `pad` is lit; when the cube rests on it (`restsOnPad`, within its half edge) with the face the pad
+ * wants on top (`topFace`) the next one lights; after the last the round is over at `doneAt` (world
+ * time, s). The round's clock runs from `startedAt`, the world time of the player's first input
+ * (`start`), not from the world's start, so reading the help costs nothing.
  */
 export class PadChallenge {
-  /** Index of the lit pad in PADS, in [0, PADS.length] (PADS.length: the round is over). */
+  /** The round's pads. */
+  layout: PadLayout;
+  /** Index of the lit pad, in [0, layout.pads.length] (the length: the round is over). */
   pad = 0;
   /** World time the last pad was reached, s, or -1 while the round runs. */
   doneAt = -1;
-  /** Starts the round again (pad 0). */
-  reset(): void {
+  /** World time the round's clock started (the first input), s, or -1 before it. */
+  startedAt = -1;
+  /** @param layout the round's pads (default CLASSIC_LAYOUT). */
+  constructor(layout: PadLayout = CLASSIC_LAYOUT) {
+    this.layout = layout;
+  }
+  /** Starts the round again (pad 0, clock stopped), with `layout` when given. */
+  reset(layout?: PadLayout): void {
+    if (layout) this.layout = layout;
     this.pad = 0;
     this.doneAt = -1;
+    this.startedAt = -1;
+  }
+  /** Starts the round's clock at world time `time`, s (only the first call counts). */
+  start(time: number): void {
+    if (this.startedAt < 0) this.startedAt = time;
   }
   /** Whether the round is over. */
   get done(): boolean {
     return this.doneAt >= 0;
   }
+  /** The round's clock at world time `now`, s: 0 before the start, the time taken once over. */
+  time(now: number): number {
+    if (this.startedAt < 0) return 0;
+    return Math.max(0, (this.done ? this.doneAt : now) - this.startedAt);
+  }
   /**
    * Checks `body` against the lit pad after a step of `world` and lights the next one when it rests
-   * there. @returns whether a pad was reached by this call.
+   * there (a pad reached before `start` starts the clock then). @returns whether a pad was reached by this call.
    */
   update(world: PhysicsWorld, body: number): boolean {
+    const { pads, faces, halves } = this.layout;
     if (this.done) return false;
-    const spot = PADS[this.pad]!,
-      face = PAD_FACES[this.pad]!;
-    if (!restsOnPad(world, body, spot[0], spot[1])) return false;
+    const spot = pads[this.pad]!,
+      face = faces[this.pad]!;
+    if (!restsOnPad(world, body, spot[0], spot[1], halves[this.pad]!)) return false;
     if (face >= 0 && topFace(world, body) !== face) return false;
+    this.start(world.time);
     this.pad++;
-    if (this.pad === PADS.length) this.doneAt = world.time;
+    if (this.pad === pads.length) this.doneAt = world.time;
     return true;
   }
 }
 
 /**
- * Flip mode's challenge: count the box's flips (`FlipCounter`) over the first FLIP_TIME seconds of the
- * world; won when FLIP_GOAL flips come within the time (`wonAt`), lost when the time runs out first.
+ * Flip mode's challenge: count the box's flips (`FlipCounter`) made with its spin inside FLIP_BAND
+ * over the first FLIP_TIME seconds of the world; won when FLIP_GOAL flips come within the time
+ * (`wonAt`), lost when the time runs out first.
  */
 export class FlipChallenge {
   /** The flips counted. */
@@ -427,6 +538,9 @@ export class FlipChallenge {
     if (!(l > 0)) return;
     // The body's y axis in the world frame: (0, 1, 0) rotated by q, the inverse rotation by its conjugate.
     rotateVectorInverse(-q.x[body]!, -q.y[body]!, -q.z[body]!, q.w[body]!, 0, 1, 0, a);
-    if (this.counter.update((a[0]! * L[0]! + a[1]! * L[1]! + a[2]! * L[2]!) / l) >= FLIP_GOAL) this.wonAt = world.time;
+    const W = world.components.AngularVelocity,
+      w = Math.hypot(W.x[body]!, W.y[body]!, W.z[body]!);
+    const inBand = w >= FLIP_BAND[0] && w <= FLIP_BAND[1];
+    if (this.counter.update((a[0]! * L[0]! + a[1]! * L[1]! + a[2]! * L[2]!) / l, inBand) >= FLIP_GOAL) this.wonAt = world.time;
   }
 }

@@ -621,3 +621,94 @@ describe.each([
     await p.close();
   });
 });
+
+describe.each([
+  { device: 'desktop', viewport: { width: 1280, height: 800 }, touch: false },
+  { device: 'phone', viewport: { width: 390, height: 844 }, touch: true },
+] as const)('black hole taps, the paused path, path and replay buttons ($device)', ({ device, viewport, touch }) => {
+  it('a tap thrusts exactly 9 steps; paused, arrows do not redraw the path; Path and Replay (F, V) work; the legend names real controls', async () => {
+    const p = await h.openGame('black-hole', { viewport, touch, query: { level: 1 } });
+    type Bh = {
+      paused: boolean;
+      step(): void;
+      reset(): void;
+      params: { path: boolean };
+      replay: { player: unknown };
+      pathPoints(): number;
+      pathTip(): number[];
+      bh: { ship: number; thrust: string; world: { components: Record<string, { x: Float64Array; y: Float64Array }> } };
+      level: { parked: boolean };
+    };
+    // The legend names the on-screen controls, not "the big button".
+    const legend = await p.page.locator('.bp-legend').textContent();
+    expect(legend).not.toContain('big button');
+    if (touch) expect(legend).toContain('Level ▶ or Continue ↺ button');
+    // A tap of ↑ (a finger's tap, or a key pressed and let go at once) thrusts for exactly 9 steps of
+    // the game: the run's recording (V replays it) holds the thrust 'up' and, 9 steps later, 'none'
+    // (a finger's tap thrust for no step at all; a key's for as many steps as the frames between).
+    const upBox = (await p.page.getByRole('button', { name: 'thrust up', exact: true }).boundingBox())!;
+    if (touch) await p.page.touchscreen.tap(upBox.x + upBox.width / 2, upBox.y + upBox.height / 2);
+    else await p.page.keyboard.press('ArrowUp');
+    type Events = { replay: { recorder: { replay: { events: { step: number; name: string; args: unknown[] }[] } } } };
+    const thrusts = await p.waitFor(() => {
+      const events = (window.game as unknown as Events).replay.recorder.replay.events.filter((e) => e.name === 'thrust');
+      return events.length >= 2 ? events.map((e) => [e.step, e.args[0]]) : null;
+    }, null);
+    expect(thrusts.map((t) => t[1])).toEqual(['up', 'none']);
+    expect(thrusts[1]![0]! as number, device).toBe((thrusts[0]![0]! as number) + 9);
+    await p.page.evaluate(() => {
+      (window.game as unknown as Bh).paused = true;
+    });
+    // Path off and on, and the replay of the run so far (the tap; it waits while paused): the buttons on a
+    // phone, F and V on the desktop.
+    const act = async (key: string, name: string) => {
+      if (touch) await p.page.getByRole('button', { name, exact: true }).tap();
+      else await p.page.keyboard.press(key);
+    };
+    await act('f', 'predicted path on / off (F)');
+    await p.waitFor(() => !(window.game as unknown as Bh).params.path, null);
+    await act('f', 'predicted path on / off (F)');
+    await p.waitFor(() => (window.game as unknown as Bh).params.path, null);
+    await act('v', 'replay the run (V)');
+    await p.waitFor(() => (window.game as unknown as Bh).replay.player !== null, null);
+    // The ship mid-field, moving: paused, the path is the course at the pause; an arrow held (or a
+    // thrust set) while paused does not redraw it; resumed, the thrust bends it.
+    await p.page.evaluate(() => {
+      const w = window.game as unknown as Bh;
+      w.reset();
+      const c = w.bh.world.components,
+        s = w.bh.ship % 2 ** 25;
+      c.Position!.x[s] = c.PreviousPosition!.x[s] = 6;
+      c.Position!.y[s] = c.PreviousPosition!.y[s] = 5;
+      c.Velocity!.x[s] = 0;
+      c.Velocity!.y[s] = 1;
+      w.level.parked = false;
+    });
+    const tip = async () => {
+      await p.frames(3);
+      return p.page.evaluate(() => (window.game as unknown as Bh).pathTip());
+    };
+    const before = await tip();
+    expect(before.length).toBe(2);
+    await p.page.evaluate(() => {
+      (window.game as unknown as Bh).bh.thrust = 'right';
+    });
+    expect(await tip()).toEqual(before);
+    await p.page.evaluate(() => {
+      (window.game as unknown as Bh).paused = false;
+    });
+    await p.waitFor((b) => {
+      const t = (window.game as unknown as Bh).pathTip();
+      return t.length === 2 && Math.abs(t[0]! - b[0]!) > 0.5;
+    }, before);
+    if (touch)
+      for (const name of ['predicted path on / off (F)', 'replay the run (V)']) {
+        const b = (await p.page.getByRole('button', { name, exact: true }).boundingBox())!;
+        expect(b.width, name).toBeGreaterThanOrEqual(44);
+        expect(b.height, name).toBeGreaterThanOrEqual(44);
+        expect(b.x + b.width, name).toBeLessThanOrEqual(390);
+      }
+    expect(p.errors).toEqual([]);
+    await p.close();
+  });
+});

@@ -433,6 +433,9 @@ describe('phone controls', () => {
     await waitCubeAtRest(g);
     const s0 = await cubeState(g);
     const pad = s0.pads[0]!;
+    // The round's clock waits for the first touch (the cube landed over a second ago).
+    expect(s0.time).toBeGreaterThan(1);
+    expect(await read(g, 'challenge().padTime')).toBe(0);
     const at = await stillPageOf(g, pad[0]!, 0.5, pad[1]!);
     await g.page.touchscreen.tap(at.x, at.y);
     await g.waitFor(() => (window.game as unknown as { challenge(): { pad: number } }).challenge().pad === 1, null, 60_000);
@@ -459,14 +462,21 @@ describe('phone controls', () => {
     const p1 = await pageOf(g, after.x, after.y, after.z);
     expect(p1.x).toBeLessThan(p0.x - 5);
     expect(Math.abs(p1.y - p0.y)).toBeLessThan(Math.abs(p1.x - p0.x));
-    // A quick tap on ▲ rolls it over one edge: another face on top.
+    // A quick tap on ▲ rolls it over one edge: another face on top, the one the face net showed at ▲.
     await waitCubeAtRest(g);
+    expect(await read(g, 'challenge().padTime')).toBeGreaterThan(0);
     const face = await read(g, 'challenge().face');
+    type Net = { faceNet(): Record<string, string>; challenge(): { face: number } };
+    const net = await g.waitFor(() => {
+      const n = (window.game as unknown as Net).faceNet();
+      return n.top !== '' ? n : null;
+    }, null);
     const up = (await g.page.getByRole('button', { name: 'turn forward', exact: true }).boundingBox())!;
     await touchPath(g.page, [[up.x + up.width / 2, up.y + up.height / 2]], 0);
     await g.waitFor((f) => (window.game as unknown as { challenge(): { face: number } }).challenge().face !== f, face, 60_000);
     await waitCubeAtRest(g);
     expect(await read(g, 'challenge().face')).not.toBe(face);
+    expect(await g.waitFor((w) => (window.game as unknown as Net).faceNet().top === w || null, net.w)).toBe(true);
     expect(g.errors).toEqual([]);
     await g.close();
   });

@@ -596,6 +596,9 @@ describe('3D rigid-body games in headless Chromium', () => {
     const s0 = await cubeState(g);
     expect(s0.pad).toBe(0);
     const pad = s0.pads[0]!;
+    // The round's clock waits for the first input (the cube landed over a second ago).
+    expect(s0.time).toBeGreaterThan(1);
+    expect(await g.page.evaluate(() => (window.game as unknown as { challenge(): { padTime: number } }).challenge().padTime)).toBe(0);
     // The lit pad is more than a metre from where the cube landed: a click on its centre (drawn at the
     // cube's centre height) pushes the cube there, and it comes to rest on it.
     expect(Math.hypot(pad[0]! - s0.x, pad[1]! - s0.z)).toBeGreaterThan(1);
@@ -628,13 +631,20 @@ describe('3D rigid-body games in headless Chromium', () => {
     // Mostly leftwards on the screen (the room is about 150 px across in this 800 px page).
     expect(left1.x).toBeLessThan(left0.x - 5);
     expect(Math.abs(left1.y - left0.y)).toBeLessThan(Math.abs(left1.x - left0.x));
-    // A short press of W rolls it over one edge (it keeps rolling past its tipping point): another face on top.
+    // A short press of W rolls it over one edge (it keeps rolling past its tipping point): another face
+    // on top, the one the face net showed at W.
     await waitCubeAtRest(g);
     const face = await g.page.evaluate(() => (window.game as unknown as { challenge(): { face: number } }).challenge().face);
+    type Net = { faceNet(): Record<string, string> };
+    const net = await g.waitFor(() => {
+      const n = (window.game as unknown as Net).faceNet();
+      return n.top !== '' ? n : null;
+    }, null);
     await g.press('w');
     await g.waitFor((f) => (window.game as unknown as { challenge(): { face: number } }).challenge().face !== f, face, 60_000);
     await waitCubeAtRest(g);
     expect(await g.page.evaluate(() => (window.game as unknown as { challenge(): { face: number } }).challenge().face)).not.toBe(face);
+    expect(await g.waitFor((w) => (window.game as unknown as Net).faceNet().top === w || null, net.w)).toBe(true);
     expect(g.errors).toEqual([]);
     await g.close();
   });

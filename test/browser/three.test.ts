@@ -638,7 +638,7 @@ describe('3D games in headless Chromium', () => {
     await g.close();
   });
 
-  it('rotating-cube: the flip challenge is lost left alone and won holding D; the status row says so', async () => {
+  it('rotating-cube: the flip challenge is lost left alone and holding D (it spins out of the band); the status row says so', async () => {
     const g = await open('rotating-cube', { mode: 'flip' });
     type Cube = ThreeGame & { challenge(): { flips: number; flipsWonAt: number } };
     // 21 s of steps from a fresh world (the round is 20 s), paused so that only the steps count.
@@ -662,10 +662,21 @@ describe('3D games in headless Chromium', () => {
     await g.frames(3);
     const held = await round();
     await g.page.keyboard.up('d');
-    expect(held.flips).toBe(10);
-    expect(held.flipsWonAt).toBeGreaterThan(0);
-    expect(held.flipsWonAt).toBeLessThan(20);
-    await g.waitFor(() => document.querySelector('[data-hud="challenge"]')?.textContent?.includes('10 flips in') ?? false, null);
+    // Flips count only with the spin in FLIP_BAND (8 to 12 rad/s): held through it and beyond, the box
+    // makes few that count (scene.ts FlipChallenge; the headless test wins it by keeping in the band).
+    expect(held.flipsWonAt).toBe(-1);
+    expect(held.flips).toBeLessThan(5);
+    await g.waitFor(() => document.querySelector('[data-hud="challenge"]')?.textContent?.includes('Time!') ?? false, null);
+    // Held again for 6 s of a fresh round (spun up past 12 rad/s): the status row says to brake.
+    await g.page.keyboard.down('d');
+    await g.frames(3);
+    await g.page.evaluate(() => {
+      const game = window.game as unknown as Cube;
+      game.reset();
+      for (let i = 0; i < 360; i++) game.step();
+    });
+    await g.waitFor(() => document.querySelector('[data-hud="challenge"]')?.textContent?.includes('too fast') ?? false, null);
+    await g.page.keyboard.up('d');
     expect(g.errors).toEqual([]);
     await g.close();
   });

@@ -12,15 +12,19 @@ import {
   buildRotatingCube,
   EDGES,
   FACES,
+  FLIP_BAND,
   FLIP_GOAL,
   FLIP_TIME,
   FlipChallenge,
   FlipCounter,
+  LANDING_FACE,
+  PAD_COUNT,
   PAD_FACES,
   PAD_HALF,
   PADS,
   PadChallenge,
   PUSH_SPEED_MAX,
+  padLayout,
   padStars,
   ROLL_TORQUE,
   ROOM_HALF,
@@ -137,54 +141,106 @@ describe('rotating-cube room pushes', () => {
 });
 
 describe('rotating-cube challenges', () => {
-  it('the pad round: a cube dropped beside the lit pad scores nothing, dropped on it (with the face the pad wants on top) lights the next; five end the round', () => {
+  it.each([
+    ['the classic layout', -1],
+    ['seed 1', 1],
+    ['seed 77', 77],
+  ])(
+    'the pad round (%s): a cube dropped beside the lit pad scores nothing, dropped on it (with the face the pad wants on top) lights the next; five end the round',
+    (_, seed) => {
+      const world = createPhysicsWorld(rotatingCubeWorldOptions());
+      const h = buildRotatingCube(world);
+      const layout = seed < 0 ? undefined : padLayout(seed);
+      const PADS_ = layout?.pads ?? PADS,
+        FACES_ = layout?.faces ?? PAD_FACES;
+      const pads = new PadChallenge(layout);
+      addSystem(world, 'finalize', (w) => {
+        pads.update(w, h.body);
+      });
+      const P = world.components.Position,
+        O = world.components.Orientation;
+      const drop = (x: number, z: number, face = 2): void => {
+        P.x[h.body] = x;
+        P.y[h.body] = 0.6;
+        P.z[h.body] = z;
+        [O.x[h.body], O.y[h.body], O.z[h.body], O.w[h.body]] = FACE_UP[face]!;
+        setVelocity(world, h.body, [0, 0, 0]);
+        setAngularVelocity(world, h.body, [0, 0, 0]);
+        for (let i = 0; i < 90; i++) step(world);
+      };
+      // The pads are inside the room, clear of the walls by more than the cube's half diagonal (0.71 m).
+      for (const [x, z] of PADS_) expect(Math.max(Math.abs(x), Math.abs(z)) + PAD_HALF).toBeLessThan(ROOM_HALF - 0.2);
+      // Beside the first pad (0.3 m past its edge): still pad 0.
+      drop(PADS_[0]![0] - PAD_HALF - 0.3, PADS_[0]![1]);
+      expect(pads.pad).toBe(0);
+      for (let k = 0; k < PADS_.length; k++) {
+        expect(pads.done).toBe(false);
+        const want = FACES_[k]!;
+        // A pad that wants a face: on it with another face up (the opposite one, then a side) scores nothing.
+        if (want >= 0)
+          for (const wrong of [want ^ 1, (want + 2) % 6]) {
+            drop(PADS_[k]![0] + 0.2, PADS_[k]![1] - 0.2, wrong);
+            expect(topFace(world, h.body)).toBe(wrong);
+            expect(pads.pad).toBe(k);
+          }
+        drop(PADS_[k]![0] + 0.2, PADS_[k]![1] - 0.2, want >= 0 ? want : k % 6);
+        expect(pads.pad).toBe(k + 1);
+      }
+      // The first pad takes any face (the classic layout's first two); the others want one each.
+      expect(FACES_.slice(0, seed < 0 ? 2 : 1).every((f) => f === -1)).toBe(true);
+      expect(FACES_.slice(2).every((f) => f >= 0 && f < FACES.length)).toBe(true);
+      expect(pads.done).toBe(true);
+      expect(pads.doneAt).toBeGreaterThan(0);
+      expect(pads.doneAt).toBeLessThanOrEqual(world.time);
+      // Over: resting on a pad again changes nothing.
+      drop(PADS_[0]![0], PADS_[0]![1]);
+      expect(pads.pad).toBe(PADS_.length);
+      pads.reset();
+      expect([pads.pad, pads.done, pads.startedAt]).toEqual([0, false, -1]);
+      expect([padStars(15), padStars(30), padStars(45), padStars(60), padStars(61), padStars(200)]).toEqual([3, 3, 2, 2, 1, 1]);
+    },
+  );
+
+  it('padLayout: the same seed lays out the same round; every seed a solvable one that grows harder', () => {
+    expect(padLayout(42)).toEqual(padLayout(42));
+    expect(padLayout(42).pads).not.toEqual(padLayout(43).pads);
+    expect(() => padLayout(Number.NaN)).toThrow(/padLayout: seed/);
+    const firsts = new Set<string>();
+    for (let seed = 0; seed < 400; seed++) {
+      const { pads, faces, halves } = padLayout(seed);
+      expect(pads.length).toBe(PAD_COUNT);
+      firsts.add(pads[0]!.join());
+      // Inside the room, clear of the walls by more than the cube's half diagonal; the first away from the landing spot.
+      for (const [x, z] of pads) expect(Math.max(Math.abs(x), Math.abs(z)) + PAD_HALF).toBeLessThan(ROOM_HALF - 0.2);
+      expect(Math.hypot(pads[0]![0], pads[0]![1])).toBeGreaterThanOrEqual(1.5);
+      for (let i = 0; i < PAD_COUNT; i++)
+        for (let j = 0; j < i; j++)
+          expect(Math.hypot(pads[i]![0] - pads[j]![0], pads[i]![1] - pads[j]![1])).toBeGreaterThanOrEqual(j === i - 1 ? 2 : 1.4);
+      // Faces: any, then one beside the landing face (one roll), the opposite of it (two), one beside, the opposite again.
+      expect(faces[0]).toBe(-1);
+      expect(faces[1]! >> 1).not.toBe(LANDING_FACE >> 1);
+      expect(faces[2]).toBe(faces[1]! ^ 1);
+      expect(faces[3]! >> 1).not.toBe(faces[2]! >> 1);
+      expect(faces[4]).toBe(faces[3]! ^ 1);
+      // The pads shrink.
+      for (let i = 1; i < PAD_COUNT; i++) expect(halves[i]!).toBeLessThan(halves[i - 1]!);
+    }
+    expect(firsts.size).toBeGreaterThan(100);
+  });
+
+  it('the cube dropped at the start lands with LANDING_FACE on top', () => {
     const world = createPhysicsWorld(rotatingCubeWorldOptions());
     const h = buildRotatingCube(world);
-    const pads = new PadChallenge();
-    addSystem(world, 'finalize', (w) => {
-      pads.update(w, h.body);
-    });
-    const P = world.components.Position,
-      O = world.components.Orientation;
-    const drop = (x: number, z: number, face = 2): void => {
-      P.x[h.body] = x;
-      P.y[h.body] = 0.6;
-      P.z[h.body] = z;
-      [O.x[h.body], O.y[h.body], O.z[h.body], O.w[h.body]] = FACE_UP[face]!;
-      setVelocity(world, h.body, [0, 0, 0]);
-      setAngularVelocity(world, h.body, [0, 0, 0]);
-      for (let i = 0; i < 90; i++) step(world);
-    };
-    // The pads are inside the room, clear of the walls by more than the cube's half diagonal (0.71 m).
-    for (const [x, z] of PADS) expect(Math.max(Math.abs(x), Math.abs(z)) + PAD_HALF).toBeLessThan(ROOM_HALF - 0.2);
-    // Beside the first pad (0.3 m past its edge): still pad 0.
-    drop(PADS[0]![0] - PAD_HALF - 0.3, PADS[0]![1]);
-    expect(pads.pad).toBe(0);
-    for (let k = 0; k < PADS.length; k++) {
-      expect(pads.done).toBe(false);
-      const want = PAD_FACES[k]!;
-      // A pad that wants a face: on it with another face up (the opposite one, then a side) scores nothing.
-      if (want >= 0)
-        for (const wrong of [want ^ 1, (want + 2) % 6]) {
-          drop(PADS[k]![0] + 0.2, PADS[k]![1] - 0.2, wrong);
-          expect(topFace(world, h.body)).toBe(wrong);
-          expect(pads.pad).toBe(k);
-        }
-      drop(PADS[k]![0] + 0.2, PADS[k]![1] - 0.2, want >= 0 ? want : k % 6);
-      expect(pads.pad).toBe(k + 1);
-    }
-    // The first two pads take any face; the others want one each.
-    expect(PAD_FACES.slice(0, 2)).toEqual([-1, -1]);
-    expect(PAD_FACES.slice(2).every((f) => f >= 0 && f < FACES.length)).toBe(true);
-    expect(pads.done).toBe(true);
-    expect(pads.doneAt).toBeGreaterThan(0);
-    expect(pads.doneAt).toBeLessThanOrEqual(world.time);
-    // Over: resting on a pad again changes nothing.
-    drop(PADS[0]![0], PADS[0]![1]);
-    expect(pads.pad).toBe(PADS.length);
-    pads.reset();
-    expect([pads.pad, pads.done]).toEqual([0, false]);
-    expect([padStars(15), padStars(30), padStars(45), padStars(60), padStars(61), padStars(200)]).toEqual([3, 3, 2, 2, 1, 1]);
+    while (world.time < 3) step(world);
+    expect(topFace(world, h.body)).toBe(LANDING_FACE);
+  });
+
+  it("the pad round's clock starts at the first input, not at the world's start", () => {
+    const pads = new PadChallenge(padLayout(3));
+    expect(pads.time(5)).toBe(0);
+    pads.start(5);
+    pads.start(7); // only the first start counts
+    expect(pads.time(9.5)).toBeCloseTo(4.5, 12);
   });
 
   it('a flip counts when the cosine crosses from beyond +0.5 to beyond -0.5 or back, not on a wobble about zero', () => {
@@ -197,31 +253,43 @@ describe('rotating-cube challenges', () => {
     expect(c.update(-0.9)).toBe(0);
   });
 
-  it('the flip round: left alone at 6 rad/s the box flips fewer than 10 times in 20 s; a yaw torque along L wins it', () => {
-    const run = (torque: number): FlipChallenge => {
+  it('the flip round: flips count only with the spin in FLIP_BAND: left alone or with yaw held it is lost; kept in the band it is won, with a kick sooner', () => {
+    // (Before the band, holding yaw alone won it: the round asked for nothing but one key.)
+    const run = (pilot: (t: number, w: number) => [number, number, number]): FlipChallenge => {
       const world = createPhysicsWorld(rotatingCubeWorldOptions('flip'));
       const h = buildRotatingCube(world, { mode: 'flip', spin: 6 });
       const flips = new FlipChallenge();
+      const W = world.components.AngularVelocity;
       addSystem(
         world,
         'forces',
-        torqueCouple(h.body, () => [0, torque, 0]),
+        torqueCouple(h.body, () => pilot(world.time, Math.hypot(W.x[h.body]!, W.y[h.body]!, W.z[h.body]!))),
       );
       addSystem(world, 'finalize', (w) => flips.update(w, h.body));
       while (world.time < FLIP_TIME + 1) step(world);
       expect(flips.over(world)).toBe(true);
       return flips;
     };
-    const idle = run(0);
+    const [lo, hi] = FLIP_BAND;
+    expect(lo).toBeGreaterThan(6); // the start spin is below the band
+    const idle = run(() => [0, 0, 0]);
     expect(idle.wonAt).toBe(-1);
-    expect(idle.counter.count).toBeGreaterThanOrEqual(3); // it does flip by itself (measured 5)
-    expect(idle.counter.count).toBeLessThan(FLIP_GOAL);
-    // The keys' torque (0.5 N m) held about the starting spin axis the whole time.
-    const spun = run(0.5);
-    expect(spun.counter.count).toBe(FLIP_GOAL); // counting stops at the win
-    expect(spun.wonAt).toBeGreaterThan(0);
-    expect(spun.wonAt).toBeLessThan(FLIP_TIME);
-    expect(spun.stars()).toBe(3);
+    expect(idle.counter.count).toBe(0);
+    expect(idle.counter.missed).toBeGreaterThanOrEqual(3); // it does flip by itself (measured 5), out of the band
+    // The keys' torque (0.5 N m) held about the starting spin axis the whole time: through the band and out.
+    const held = run(() => [0, 0.5, 0]);
+    expect(held.wonAt).toBe(-1);
+    expect(held.counter.count).toBeLessThan(FLIP_GOAL / 2);
+    // Spun up to the band's middle and let go there (yaw held only while slower than 10 rad/s).
+    const kept = run((_, w) => [0, w < (lo + hi) / 2 ? 0.5 : 0, 0]);
+    expect(kept.counter.count).toBe(FLIP_GOAL); // counting stops at the win
+    expect(kept.wonAt).toBeGreaterThan(0);
+    expect(kept.wonAt).toBeLessThan(FLIP_TIME);
+    expect(kept.stars()).toBe(3);
+    // The same with a 0.4 s pitch kick once in the band: the box tips off its intermediate axis and flips sooner.
+    const kicked = run((t, w) => [t > 1.2 && t < 1.6 ? 0.5 : 0, w < (lo + hi) / 2 ? 0.5 : 0, 0]);
+    expect(kicked.wonAt).toBeGreaterThan(0);
+    expect(kicked.wonAt).toBeLessThan(kept.wonAt - 3);
   });
 });
 
