@@ -394,7 +394,7 @@ const LIFT_CLEARANCE = 0.01;
  * Where ball `e` starts its throw, m: where it is unless it is buried (`buried`); then the lowest spot
  * straight above it that is clear of every other ball (by LIFT_CLEARANCE), of the ramps and the hoop,
  * and inside the box: on top of the heap over it. null when a buried ball has no such spot (the heap
- * reaches the box's top, or a ramp covers it): the press is refused.
+ * reaches the box's top, or a ramp or the hoop lies over it): the press is refused.
  */
 function liftSpot(e: number): [number, number] | null {
   const c = shell.world.components,
@@ -425,8 +425,15 @@ function liftSpot(e: number): [number, number] | null {
     if (top > y) heights.push(top + 1e-6);
   }
   heights.sort((u, v) => u - v);
+  // Not through a ramp or the hoop: the way straight up (past the first 0.05 m, where a ball resting on
+  // a ramp still touches it) must stay a ball's radius clear of them.
+  const through = (h: number): boolean => {
+    for (let yy = y + 0.05; yy < h; yy += 0.05)
+      if (walls.some(([ax, ay, bx, by, wr]) => distanceToSegment(x, yy, ax, ay, bx, by) < r + wr - 0.01)) return true;
+    return false;
+  };
   for (const h of heights) {
-    if (h + r > box.max[1]) return null;
+    if (h + r > box.max[1] || through(h)) return null;
     if (column.some((q) => (P.x[q]! - x) ** 2 + (P.y[q]! - h) ** 2 < (r + R[q]! + LIFT_CLEARANCE) ** 2 - 1e-9)) continue;
     if (walls.some(([ax, ay, bx, by, wr]) => distanceToSegment(x, h, ax, ay, bx, by) < r + wr)) continue;
     return [x, h];
