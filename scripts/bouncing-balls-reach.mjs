@@ -9,7 +9,8 @@
 // 40 (to choose spots from). --pull desk,phone (full pulls, px; default 420,234) measures how
 // forgiving the slingshot is: for baskets from every third natural start, the window of pull lengths
 // (speed, at the basket's angle) and of sideways pull (angle, at its speed) that still score, in px
-// of pull at that full pull (games/bouncing-balls/main.ts fullPull). Takes a second or so a spot.
+// of pull at that full pull (games/bouncing-balls/main.ts fullPull; the pull for a speed from hoop.ts
+// slingPull). Takes a second or so a spot.
 import { importSource } from './build.mjs';
 
 const r = await importSource(
@@ -47,8 +48,9 @@ if (pullAt >= 0) {
     throw new RangeError(`bouncing-balls-reach: --pull wants desk,phone px > 0, got ${process.argv[pullAt + 1]}`);
   const median = (a) => [...a].sort((x, y) => x - y)[Math.floor(a.length / 2)];
   for (const tall of [false, true]) {
-    const full = tall ? phone : desk,
-      perPx = r.MAX_THROW_SPEED / full;
+    const full = tall ? phone : desk;
+    // Pull length, px, of a throw at `speed` m/s (hoop.ts slingPull, the inverse of the slingshot's curve).
+    const pullOf = (speed) => r.slingPull(Math.min(r.MAX_THROW_SPEED, speed), full);
     const speedPx = [],
       anglePx = [],
       pulls = [];
@@ -62,9 +64,9 @@ if (pullAt >= 0) {
           while (Math.abs(v - t[key]) < 5 && r.cleanBasket(spot, tall, { ...t, [key]: v + d })) v += d;
           return v;
         };
-        const pull = t.speed / perPx;
+        const pull = pullOf(t.speed);
         pulls.push(pull);
-        speedPx.push((edge('speed', 0.02) - edge('speed', -0.02)) / perPx);
+        speedPx.push(pullOf(edge('speed', 0.02)) - pullOf(edge('speed', -0.02)));
         anglePx.push((pull * (edge('angle', 0.05) - edge('angle', -0.05)) * Math.PI) / 180);
       }
     }

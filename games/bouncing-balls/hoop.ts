@@ -378,9 +378,49 @@ const RESTITUTION_THRESHOLD = 0.5;
 export const MAX_THROW_SPEED = 20;
 
 /**
+ * The share of the full pull, (0, 1), up to which a throw's speed grows in step with the pull
+ * (slingSpeed); past it the square of the speed does.
+ */
+export const SLING_KNEE = 0.5;
+/** The speed at SLING_KNEE of the full pull, m/s: MAX_THROW_SPEED sqrt(knee / (2 - knee)), so the curve reaches MAX_THROW_SPEED at the full pull. */
+const KNEE_SPEED = MAX_THROW_SPEED * Math.sqrt(SLING_KNEE / (2 - SLING_KNEE));
+/** Speed per share of the full pull below the knee, m/s. */
+const KNEE_SLOPE = KNEE_SPEED / SLING_KNEE;
+
+/**
+ * The speed of a slingshot throw, m/s, for a pull of `length` px when `fullPull` px throws at
+ * MAX_THROW_SPEED: in step with the pull up to SLING_KNEE of fullPull (where the baskets are, a px
+ * worth the same speed throughout), then with its square growing evenly (the height a ball reaches,
+ * v^2 / 2g, gains the same per px up to the full pull, and as much as at the knee), capped at
+ * MAX_THROW_SPEED. A speed linear to the full pull made the height grow with the pull's square: its
+ * last px swung a throw from mid-box to the ceiling (twice the height per px of the average).
+ * @throws RangeError unless length is finite and >= 0 and fullPull is finite and > 0.
+ */
+export function slingSpeed(length: number, fullPull: number): number {
+  if (!(length >= 0 && Number.isFinite(length))) throw new RangeError(`slingSpeed: length must be finite and >= 0 px, got ${length}`);
+  if (!(fullPull > 0 && Number.isFinite(fullPull))) throw new RangeError(`slingSpeed: fullPull must be finite and > 0 px, got ${fullPull}`);
+  const p = Math.min(1, length / fullPull);
+  if (p <= SLING_KNEE) return KNEE_SLOPE * p;
+  return Math.min(MAX_THROW_SPEED, Math.sqrt(KNEE_SPEED * KNEE_SPEED + 2 * KNEE_SPEED * KNEE_SLOPE * (p - SLING_KNEE)));
+}
+
+/**
+ * The pull, px, that throws at `speed` m/s when `fullPull` px throws at MAX_THROW_SPEED: the inverse
+ * of slingSpeed.
+ * @throws RangeError unless speed is in [0, MAX_THROW_SPEED] and fullPull is finite and > 0.
+ */
+export function slingPull(speed: number, fullPull: number): number {
+  if (!(speed >= 0 && speed <= MAX_THROW_SPEED))
+    throw new RangeError(`slingPull: speed must be in [0, ${MAX_THROW_SPEED}] m/s, got ${speed}`);
+  if (!(fullPull > 0 && Number.isFinite(fullPull))) throw new RangeError(`slingPull: fullPull must be finite and > 0 px, got ${fullPull}`);
+  if (speed <= KNEE_SPEED) return (fullPull * speed) / KNEE_SLOPE;
+  return fullPull * (SLING_KNEE + (speed * speed - KNEE_SPEED * KNEE_SPEED) / (2 * KNEE_SPEED * KNEE_SLOPE));
+}
+
+/**
  * The velocity of a slingshot throw, m/s (y up): the ball leaves opposite to the pull (pullX,
- * pullY), px on screen (the pointer minus where the ball starts; y down), at MAX_THROW_SPEED x
- * pull length / `fullPull`, capped at MAX_THROW_SPEED.
+ * pullY), px on screen (the pointer minus where the ball starts; y down), at slingSpeed of the pull's
+ * length (MAX_THROW_SPEED at `fullPull` and beyond).
  * @throws RangeError unless the pull is finite and fullPull > 0.
  */
 export function slingVelocity(pullX: number, pullY: number, fullPull: number): [number, number] {
@@ -390,7 +430,7 @@ export function slingVelocity(pullX: number, pullY: number, fullPull: number): [
     throw new RangeError(`slingVelocity: fullPull must be finite and > 0 px, got ${fullPull}`);
   const length = Math.hypot(pullX, pullY);
   if (length === 0) return [0, 0];
-  const speed = MAX_THROW_SPEED * Math.min(1, length / fullPull);
+  const speed = slingSpeed(length, fullPull);
   return [(-pullX / length) * speed, (pullY / length) * speed];
 }
 

@@ -8,16 +8,20 @@
  * them is gold (a halo, worth 5; a new one after it scores); a pull from empty space throws a new
  * basketball, worth 1. Baskets in a row multiply (x2, x3, x4: hoop.ts streakMultiplier); a thrown
  * ball that falls below the rim beside the hoop is a miss and ends the streak (falling notes). The
- * aiming arc ends with a red cross at a ball in its way (a heap ball thrown passes the neighbours it leaves). The best
+ * aiming arc ends with a red cross at a ball in its way; a heap ball buried under others is lifted to
+ * the top of the heap over it first (liftSpot: its arc and its throw start there; with no room there
+ * the pull is refused in red), and it leaves the balls it rests on freely (leaveOf). The best
  * round's points are kept in localStorage; when time is up an end card over the box shows the points,
  * baskets, throws and longest streak, and R or the Play-again button starts a new round. The status
  * row above the box says the goal and shows points, the next basket's multiplier, time and best.
  *
  * Input: a click drops a ball at the pointer, and a pull throws one slingshot-style from where the
  * press began, on a ball or not (opposite to
- * the pull, faster the longer it is, hoop.ts slingVelocity), with a dotted arc of the start of its
+ * the pull, faster the longer it is, hoop.ts slingVelocity: the height it reaches grows evenly over
+ * the second half of the pull), with a power gauge round the ball and a dotted arc of the start of its
  * flight while pulling (hoop.ts throwPath: AIM_SECONDS of it, twice that in the warm-up before the
- * first basket, fading out, up to its first touch; the player judges the rest). A pull taken back
+ * first basket, or to just past its apex if later, fading out, up to its first touch; the player
+ * judges the rest). Each basketball thrown or dropped fades out once it has come to rest (MAX_LOOSE). A pull taken back
  * to within CANCEL_PULL of its press point ("release here to cancel") and let go throws nothing; the
  * full-speed pull is shortened for a pull with little room to the window's edge (pullFullPull). A pull
  * under way as the clock runs out is the round's last throw: the round waits for it and its ball
@@ -28,7 +32,7 @@
  * throws, so a press on the pile throws unless the pickup is meant. The band from the ball to the
  * pointer warms from white to gold to red with the pull's power; a release snaps and whooshes (louder
  * the faster) and a ring bursts from the ball. A basket is celebrated: a swish
- * and a rising chord, confetti from the rim, "+1" and the old hoop glowing out as the new one is
+ * and a rising chord, confetti from the rim (kept inside the court), "+1" and the old hoop glowing out as the new one is
  * ringed, and the status row's score bumps. Knocks: the loudest few collisions a step (knocks.ts), so
  * a pile does not roar. When time is up, the Play-again button floats at the top of the box,
  * clear of the balls piled at its bottom.
@@ -66,6 +70,7 @@ import {
   Rng,
   setAngularVelocity,
   setMaterial as setBodyMaterial,
+  setPosition,
   setVelocity,
   slotOf,
   step,
@@ -259,16 +264,13 @@ function createWorld(): PhysicsWorld {
   return world;
 }
 
-// ---- A thrown heap ball leaves the heap on its arc ------------------------------------------------
+// ---- A thrown ball leaves the balls it rests on freely ------------------------------------------
 
 /**
- * The longest a thrown ball of the scene passes through the balls in its way as it leaves the heap,
- * s: its neighbours in the heap pressed on it as it rose and knocked it off the aimed arc (at 9 m/s,
- * 0.4 m off in 0.1 s). A path still inside a ball then goes on passing it for up to LEAVE_MAX_SECONDS.
+ * The longest a thrown ball of the scene flies free of the balls it rested on as it leaves them, s:
+ * their contacts, still in the solver for a step or two, pushed it off its aimed arc.
  */
-const LEAVE_SECONDS = 0.3;
-/** The hard end of a leave, s: a path that is still inside balls by then (a long drive through the heap) meets them. */
-const LEAVE_MAX_SECONDS = 0.5;
+const LEAVE_MAX_SECONDS = 0.2;
 
 /**
  * The thrown balls leaving the heap: until (world time, s), their state after the last integrate (m,
@@ -359,6 +361,86 @@ function leaveFreely(world: PhysicsWorld): void {
   }
 }
 
+// ---- A buried ball is lifted to the top of the heap before it is thrown ------------------------------
+
+/**
+ * Whether ball `e` of the scene is buried: another ball touches it (within 0.03 m) from above, its
+ * centre higher by more than 0.15 of their radii's sum (some 80 degrees or less from straight up). A
+ * throw from there would drive into that ball at once: a buried ball is lifted first (liftSpot), and
+ * its arc and its throw both start where it is lifted to.
+ */
+function buried(e: number): boolean {
+  const c = shell.world.components,
+    P = c.Position,
+    R = c.Ball.radius,
+    s = slotOf(e);
+  const x = P.x[s]!,
+    y = P.y[s]!;
+  for (const o of handles.balls) {
+    if (o === e) continue;
+    const q = slotOf(o);
+    const dx = P.x[q]! - x,
+      dy = P.y[q]! - y,
+      d = Math.hypot(dx, dy);
+    if (dy > 0.15 * (R[s]! + R[q]!) && d < R[s]! + R[q]! + 0.03) return true;
+  }
+  return false;
+}
+
+/** How far clear of every other ball a lifted ball is put, m. */
+const LIFT_CLEARANCE = 0.01;
+
+/**
+ * Where ball `e` starts its throw, m: where it is unless it is buried (`buried`); then the lowest spot
+ * straight above it that is clear of every other ball (by LIFT_CLEARANCE), of the ramps and the hoop,
+ * and inside the box: on top of the heap over it. null when a buried ball has no such spot (the heap
+ * reaches the box's top, or a ramp or the hoop lies over it): the press is refused.
+ */
+function liftSpot(e: number): [number, number] | null {
+  const c = shell.world.components,
+    P = c.Position,
+    R = c.Ball.radius,
+    s = slotOf(e);
+  const x = P.x[s]!,
+    y = P.y[s]!,
+    r = R[s]!;
+  if (!buried(e)) return [x, y];
+  const { box, segments } = layoutOf(TALL);
+  const walls = [
+    ...segments.map(([ax, ay, bx, by]) => [ax, ay, bx, by, SEGMENT_RADIUS] as const),
+    ...hoopSegments(hoopSpots(TALL)[round.spot]!).map(([ax, ay, bx, by]) => [ax, ay, bx, by, HOOP_RADIUS] as const),
+  ];
+  // The column over the ball: the balls it would meet going straight up, and the heights (centre, m)
+  // at which it would rest on each of them.
+  const column: number[] = [];
+  const heights: number[] = [];
+  for (const o of handles.balls) {
+    if (o === e) continue;
+    const q = slotOf(o);
+    const dx = P.x[q]! - x,
+      reach = r + R[q]! + LIFT_CLEARANCE;
+    if (Math.abs(dx) >= reach) continue;
+    column.push(q);
+    const top = P.y[q]! + Math.sqrt(reach * reach - dx * dx);
+    if (top > y) heights.push(top + 1e-6);
+  }
+  heights.sort((u, v) => u - v);
+  // Not through a ramp or the hoop: the way straight up (past the first 0.05 m, where a ball resting on
+  // a ramp still touches it) must stay a ball's radius clear of them.
+  const through = (h: number): boolean => {
+    for (let yy = y + 0.05; yy < h; yy += 0.05)
+      if (walls.some(([ax, ay, bx, by, wr]) => distanceToSegment(x, yy, ax, ay, bx, by) < r + wr - 0.01)) return true;
+    return false;
+  };
+  for (const h of heights) {
+    if (h + r > box.max[1] || through(h)) return null;
+    if (column.some((q) => (P.x[q]! - x) ** 2 + (P.y[q]! - h) ** 2 < (r + R[q]! + LIFT_CLEARANCE) ** 2 - 1e-9)) continue;
+    if (walls.some(([ax, ay, bx, by, wr]) => distanceToSegment(x, h, ax, ay, bx, by) < r + wr)) continue;
+    return [x, h];
+  }
+  return null;
+}
+
 /** Distance from (px, py) to the segment (ax, ay)-(bx, by), m. */
 function distanceToSegment(px: number, py: number, ax: number, ay: number, bx: number, by: number): number {
   const ex = bx - ax,
@@ -368,15 +450,12 @@ function distanceToSegment(px: number, py: number, ax: number, ay: number, bx: n
 }
 
 /**
- * How a ball of radius `r`, m, thrown from (x, y), m, with velocity (vx, vy), m/s, leaves the heap
- * round it (`near`, the balls near its start, [x, y, radius] each, m): the world steps (of `h` s) its
- * leave lasts, and the balls its drag-free path touches in them (or comes within a step's travel
- * of), which it passes (they are pushed
- * aside) and which so do not end its aiming arc either. The leave lasts to the last step within
- * LEAVE_SECONDS whose point is inside a ball, and on while the path stays inside balls, to
- * LEAVE_MAX_SECONDS at most: a throw from inside the heap passes every ball above it on its way
- * out, and a gap between two of them does not end the leave early. The page's throw and its aiming
- * arc both use this, so the arc shown is the way the ball goes.
+ * How a ball of radius `r`, m, thrown from (x, y), m, with velocity (vx, vy), m/s, leaves the balls
+ * it rests on (`near`, the balls near its start, [x, y, radius] each, m): those it touches (within
+ * 0.02 m and a step's travel, as the engine's contacts begin) and moves away from are `met`; the leave
+ * lasts the world steps (of `h` s) its drag-free path stays within that reach of one of them, up to
+ * LEAVE_MAX_SECONDS, and ends at the first step clear of them all. It passes no ball it moves into:
+ * that ball ends its aiming arc at once (arcStops). The page's throw and its aiming arc both use this.
  */
 function leaveOf(
   near: readonly [number, number, number][],
@@ -388,24 +467,19 @@ function leaveOf(
   h: number,
 ): { steps: number; met: Set<[number, number, number]> } {
   const g = handles.params.gravity;
-  const met = new Set<[number, number, number]>();
-  const soft = Math.round(LEAVE_SECONDS / h),
-    hard = Math.round(LEAVE_MAX_SECONDS / h);
-  // The engine's contacts begin a little before two balls touch (within about a step's travel): so does a leave's.
   const reach = r + Math.hypot(vx, vy) * h + 0.02;
+  const met = new Set<[number, number, number]>();
+  for (const b of near) if ((x - b[0]) ** 2 + (y - b[1]) ** 2 < (reach + b[2]) ** 2 && (b[0] - x) * vx + (b[1] - y) * vy <= 0) met.add(b);
+  const hard = Math.round(LEAVE_MAX_SECONDS / h);
   let steps = 0;
-  for (let n = 0; n <= hard; n++) {
+  for (let n = 1; n <= hard && met.size > 0; n++) {
     const t = n * h;
     const px = x + vx * t,
       py = y + vy * t - 0.5 * g * t * t;
     let inside = false;
-    for (const b of near)
-      if ((px - b[0]) ** 2 + (py - b[1]) ** 2 < (reach + b[2]) ** 2) {
-        inside = true;
-        met.add(b);
-      }
-    if (inside) steps = n;
-    else if (n > soft) break;
+    for (const b of met) if ((px - b[0]) ** 2 + (py - b[1]) ** 2 < (reach + b[2]) ** 2) inside = true;
+    if (!inside) break;
+    steps = n;
   }
   return { steps, met };
 }
@@ -593,10 +667,11 @@ const HOOP_REACH = 0.8;
 const MISS_SECONDS_OVER_HOOP = 3 * MISS_SECONDS;
 
 /**
- * Basketballs left lying about that the court keeps; past this many the oldest at rest fade out: the
- * player's misses (at 12 kept) piled up among the heap's balls and buried them.
+ * Basketballs left lying about that the court keeps; past this many the oldest at rest fade out: none,
+ * so each throw's ball (and a click's dropped one) is taken away once it has scored or missed and come
+ * to rest. Kept ones (12, then 2) grew the heap by a ball a throw, burying the heap's balls.
  */
-const MAX_LOOSE = 2;
+const MAX_LOOSE = 0;
 /** How long a basketball takes to fade out, s. */
 const FADE_SECONDS = 1;
 /** The court's wall near the floor, which a fading basketball's colour goes to. */
@@ -626,6 +701,8 @@ function clearLoose(world: PhysicsWorld): void {
     }
     renderer.setColor(e, mixColor(f.color, FADE_TO, t));
   }
+  // A basketball removed otherwise (by the page's API) is no longer the court's to fade.
+  for (const e of basketballs) if (!handles.balls.includes(e)) basketballs.delete(e);
   let over = -MAX_LOOSE;
   for (const e of basketballs) if (!flights.has(e) && !fading.has(e)) over++;
   for (const e of basketballs) {
@@ -962,7 +1039,7 @@ function endAim(): void {
 /**
  * The throw the pointer would make now: start (m), velocity (m/s) of the slingshot, and the ball's
  * radius (m) and mass (kg): from the pressed ball's centre when the press began on a ball (that ball
- * is thrown), else from the press's start spot (pressSpot: a new basketball).
+ * is thrown), lifted to the top of the heap over it if it is buried (liftSpot), else from the press's start spot (pressSpot: a new basketball).
  */
 function currentThrow(): { x: number; y: number; vx: number; vy: number; radius: number; mass: number } {
   fullPullNow = pullFullPull(pressClientX, pressClientY, lastX - startX, lastY - startY, pressFinger);
@@ -970,7 +1047,9 @@ function currentThrow(): { x: number; y: number; vx: number; vy: number; radius:
   if (pressBall !== 0 && handles.balls.includes(pressBall)) {
     const c = shell.world.components,
       s = slotOf(pressBall);
-    return { x: c.Position.x[s]!, y: c.Position.y[s]!, vx, vy, radius: c.Ball.radius[s]!, mass: c.Mass.value[s]! };
+    // A buried ball is thrown from the top of the heap over it (liftSpot); one with no room there stays.
+    const [x, y] = liftSpot(pressBall) ?? [c.Position.x[s]!, c.Position.y[s]!];
+    return { x, y, vx, vy, radius: c.Ball.radius[s]!, mass: c.Mass.value[s]! };
   }
   const mass = Math.PI * PLAYER_RADIUS * PLAYER_RADIUS * DENSITIES.normal;
   return { x: pressSpot[0], y: pressSpot[1], vx, vy, radius: PLAYER_RADIUS, mass };
@@ -1155,12 +1234,14 @@ function release(event: PointerEvent, cancelled: boolean): void {
   const cancel = inCancelZone();
   pressBall = 0;
   if (cancel) return;
-  if (dragged) released(t);
   if (!dragged) shoot(pressSpot[0], pressSpot[1], 0, 0, false);
   else if (ball !== 0 && handles.balls.includes(ball)) {
-    throwBall(ball, t.vx, t.vy);
+    // A buried ball with no room over it is not thrown (its pull said so: drawPointer).
+    if (!throwBall(ball, t.vx, t.vy)) return;
+    released(t);
     if (last) lastCall.ball = ball;
   } else {
+    released(t);
     const e = shoot(t.x, t.y, t.vx, t.vy);
     if (last) lastCall.ball = e;
   }
@@ -1195,25 +1276,29 @@ function shoot(x: number, y: number, vx: number, vy: number, thrown = true): num
 }
 
 /**
- * Ball `e` of the scene (a heap ball, the gold one or a basketball lying about) thrown from where it
- * is with velocity (vx, vy), m/s, as the slingshot throws: its spin stopped, it counts as a shot and
- * may score its BALL_POINTS if it is below the rim. @throws RangeError if it is not a ball of the scene.
+ * Ball `e` of the scene (a heap ball, the gold one or a basketball lying about) thrown with velocity
+ * (vx, vy), m/s, as the slingshot throws: from where it is, or lifted first to the top of the heap over
+ * it if it is buried (liftSpot, where its aiming arc starts too); its spin stopped, it counts as a shot
+ * and may score its BALL_POINTS if it is below the rim. A buried ball with nowhere to go is not thrown.
+ * @returns whether it was thrown. @throws RangeError if it is not a ball of the scene.
  */
-function throwBall(e: number, vx: number, vy: number): void {
+function throwBall(e: number, vx: number, vy: number): boolean {
   if (!handles.balls.includes(e)) throw new RangeError(`throwBall: ${e} is not a ball of the scene`);
-  setVelocity(shell.world, e, [vx, vy]);
-  setAngularVelocity(shell.world, e, 0);
+  const from = liftSpot(e);
+  if (from === null) return false;
   const c = shell.world.components,
     s = slotOf(e);
-  const x = c.Position.x[s]!,
-    y = c.Position.y[s]!;
-  // Free of the heap round it while it leaves (leaveOf, as its aiming arc showed): its neighbours
-  // would take the throw's push and fly instead, and the balls above it would stop it.
+  if (from[0] !== c.Position.x[s] || from[1] !== c.Position.y[s]) setPosition(shell.world, e, from);
+  setVelocity(shell.world, e, [vx, vy]);
+  setAngularVelocity(shell.world, e, 0);
+  // Free of the balls it rested on while it leaves them (leaveOf, as its aiming arc showed): their
+  // contacts would push it off its arc.
   const dt = shell.world.dt;
-  const { steps } = leaveOf(nearBalls(x, y, e), x, y, vx, vy, c.Ball.radius[s]!, dt);
+  const { steps } = leaveOf(nearBalls(from[0], from[1], e), from[0], from[1], vx, vy, c.Ball.radius[s]!, dt);
   // Free through the integrate of the leave's last step (world time is a step behind there).
-  if (steps > 0) leaving.set(e, { until: shell.world.time + (steps - 0.5) * dt, x, y, vx, vy, near: [] });
+  if (steps > 0) leaving.set(e, { until: shell.world.time + (steps - 0.5) * dt, x: from[0], y: from[1], vx, vy, near: [] });
   launch(e, true);
+  return true;
 }
 
 /**
@@ -1241,21 +1326,39 @@ canvas.addEventListener('pointercancel', (event) => release(event, true));
 
 /**
  * The dotted arc of the throw the pointer would make now: its points, m (flat x, y pairs), or [] when
- * not pulling. Only the start of the flight (aimSeconds), so a basket is judged, not read off the screen.
+ * not pulling. Only the start of the flight (arcSeconds: to just past its apex), so a basket is judged, not read off the screen.
  */
 function aimPath(): number[] {
-  if (pointerId === -1 || !dragged || inCancelZone()) return [];
-  return arcOf(currentThrow(), pressBall, aimSeconds(), 0, AIM_CEILING_BOUNCES);
+  if (pointerId === -1 || !dragged || inCancelZone() || refused()) return [];
+  const t = currentThrow();
+  return arcOf(t, pressBall, arcSeconds(t.vy), 0, AIM_CEILING_BOUNCES);
 }
+/**
+ * How much of a throw's flight (vertical speed `vy`, m/s, up) its aiming arc shows, s: aimSeconds, or
+ * to the drag-free apex and APEX_MORE past it if that is later (at most FLIGHT_SECONDS), so a weak
+ * throw's arc is seen to turn over, not cut off while it still rises. It ends sooner at a first touch.
+ */
+function arcSeconds(vy: number): number {
+  const g = handles.params.gravity;
+  const apex = g > 0 && vy > 0 ? vy / g : 0;
+  return Math.min(FLIGHT_SECONDS, Math.max(aimSeconds(), apex + APEX_MORE));
+}
+/** How far past its apex the aiming arc goes on, s of flight. */
+const APEX_MORE = 0.2;
 /**
  * Bounces off the box's top the aiming arc follows (hoop.ts throwPath ceilingBounces): a high throw's
  * arc ended where it met the ceiling, and the player could not see where it went from there.
  */
 const AIM_CEILING_BOUNCES = 1;
 
+/** Whether the press is on a buried ball with no room over it (liftSpot null): its pull throws nothing. */
+function refused(): boolean {
+  return pressBall !== 0 && handles.balls.includes(pressBall) && liftSpot(pressBall) === null;
+}
+
 /** The whole flight of the throw the pointer would make now (FLIGHT_SECONDS, AIM_BOUNCES bounces): points, m, or [] when not pulling. */
 function aimFlight(): number[] {
-  if (pointerId === -1 || !dragged || inCancelZone()) return [];
+  if (pointerId === -1 || !dragged || inCancelZone() || refused()) return [];
   return arcOf(currentThrow(), pressBall, FLIGHT_SECONDS, AIM_BOUNCES);
 }
 
@@ -1340,10 +1443,9 @@ function nearBalls(x: number, y: number, except: number): [number, number, numbe
   return out;
 }
 /**
- * The balls that end throw `t`'s aiming arc, [x, y, radius, from step] each: those near its start; for
- * a ball of the scene (`thrown`), the ones it passes as it leaves the heap stop it only after the
- * leave (from its last step on): a shallow throw that still grazes one of them when the leave ends
- * (LEAVE_MAX_SECONDS) meets it there, and its arc ends there with the red cross.
+ * The balls that end throw `t`'s aiming arc, [x, y, radius, from step] each: those near its start but
+ * ball `thrown`; for a ball of the scene, the ones it rests on and leaves (leaveOf) only after the
+ * leave, the others (a ball it is thrown into) from its first step.
  */
 function arcStops(t: { x: number; y: number; vx: number; vy: number; radius: number }, thrown: number): [number, number, number, number][] {
   const near = nearBalls(t.x, t.y, thrown);
@@ -1378,8 +1480,9 @@ function showHoldLabel(text: string, x: number, y: number): void {
 
 /**
  * Draws the pointer preview: the ball to be dropped; while pulling, the ball at its spot (orange if
- * it may score, grey if above the rim's line), the slingshot's band to the pointer, and a dotted arc
- * of where the ball will fly, its dots fading along it.
+ * it may score, grey if above the rim's line; a buried ball lifted to the top of the heap, or refused
+ * in red with no room there), the slingshot's band to the pointer, a power gauge round the ball with
+ * its percentage, and a dotted arc of where the ball will fly, its dots fading along it.
  */
 function drawPointer(): void {
   overlay.clear();
@@ -1431,8 +1534,34 @@ function drawPointer(): void {
     showHoldLabel('release here to cancel', startX, startY - cr - 8);
     return;
   }
-  // From the ball being thrown: the pressed ball's centre, or the press point for a new basketball.
+  // A buried ball with no room over it: a red ring round it and why nothing will be thrown.
+  const pressed = pressBall !== 0 && handles.balls.includes(pressBall) ? pressBall : 0;
+  const lift = pressed !== 0 ? liftSpot(pressed) : null;
+  const P = shell.world.components.Position;
+  if (pressed !== 0 && lift === null) {
+    const s = slotOf(pressed);
+    const bx = cam.toScreenX(P.x[s]!),
+      by = cam.toScreenY(P.y[s]!),
+      br = cam.toScreenLength(shell.world.components.Ball.radius[s]!);
+    overlay.circle(bx, by, br + 4).stroke({ width: 4, color: 0xff4d4d, alpha: 0.95 });
+    showHoldLabel('buried · pull a ball on top', bx, by - br - 8);
+    return;
+  }
+  // From the ball being thrown: the pressed ball's centre (lifted to the top of the heap if it is
+  // buried), or the press point for a new basketball.
   const t = currentThrow();
+  if (pressed !== 0 && lift !== null) {
+    const s = slotOf(pressed);
+    const bx = cam.toScreenX(P.x[s]!),
+      by = cam.toScreenY(P.y[s]!);
+    if (Math.hypot(cam.toScreenX(lift[0]) - bx, cam.toScreenY(lift[1]) - by) > 1) {
+      // Lifted: a dashed line up from where it lies to where it will be thrown from, and its ghost there.
+      const ty = cam.toScreenY(lift[1]);
+      for (let yy = by; yy > ty; yy -= 10) overlay.moveTo(bx, yy).lineTo(bx, Math.max(ty, yy - 5));
+      overlay.stroke({ width: 2, color: 0xffffff, alpha: 0.7 });
+      overlay.circle(cam.toScreenX(lift[0]), ty, cam.toScreenLength(t.radius)).fill({ color: renderer.colorOf(pressed), alpha: 0.55 });
+    }
+  }
   const ox = cam.toScreenX(t.x),
     oy = cam.toScreenY(t.y),
     or = cam.toScreenLength(t.radius);
@@ -1458,9 +1587,25 @@ function drawPointer(): void {
   if (pressBall !== 0 && handles.balls.includes(pressBall)) {
     // A ball of the scene is thrown: a ring round it and what it is worth.
     overlay.circle(ox, oy, or + 4).stroke({ width: 3, color: 0xffffff, alpha: 0.9 });
-    const points = BALL_POINTS[kindOf(pressBall)];
-    showHoldLabel(`${points} ${points === 1 ? 'point' : 'points'}`, ox, oy - or - 8);
   } else overlay.circle(ox, oy, or).fill({ color: thrownColor, alpha: 0.85 }).stroke({ width: 2, color: 0xffffff, alpha: 0.9 });
+  // The power gauge: a ring round the ball filling clockwise from the top with the throw's speed (of
+  // MAX_THROW_SPEED) in the band's colour, on a dark track, and the percentage over it.
+  const gr = or + 10;
+  overlay.circle(ox, oy, gr).stroke({ width: 6, color: 0x0b0f16, alpha: 0.55 });
+  const arcSteps = Math.max(1, Math.ceil(60 * power));
+  overlay.moveTo(ox, oy - gr);
+  for (let k = 1; k <= arcSteps; k++) {
+    const a = -Math.PI / 2 + (2 * Math.PI * power * k) / arcSteps;
+    overlay.lineTo(ox + gr * Math.cos(a), oy + gr * Math.sin(a));
+  }
+  overlay.stroke({ width: 4, color: powerColor(power), alpha: 0.95 });
+  let label = `power ${Math.round(100 * power)}%`;
+  if (pressed !== 0) {
+    const points = BALL_POINTS[kindOf(pressed)];
+    const lifted = lift !== null && (lift[0] !== P.x[slotOf(pressed)] || lift[1] !== P.y[slotOf(pressed)]);
+    label = `${lifted ? 'lifted out · ' : ''}${label} · ${points} ${points === 1 ? 'point' : 'points'}`;
+  }
+  showHoldLabel(label, ox, oy - gr - 6);
   // The arc ends on another ball: a red cross there (that ball is in the way), over the thrown
   // ball's disc (a throw blocked at once ends its arc inside that disc).
   if (n > 1) {
@@ -1497,7 +1642,10 @@ const praiseText = new Text({
 });
 praiseText.anchor.set(0.5, 1);
 praiseText.visible = false;
-app.stage.addChild(confetti, popText, praiseText);
+/** The court's rectangle on screen, the mask that keeps a basket's effects (confetti, rings, the old hoop's glow) inside the box. */
+const courtMask = new Graphics({ label: 'confetti-mask' });
+confetti.mask = courtMask;
+app.stage.addChild(courtMask, confetti, popText, praiseText);
 /** How long a basket's celebration lasts, s (world time). */
 const CELEBRATE_SECONDS = 1.6;
 /** What the praise line says for the n-th basket of a round (1-based): the first few differ. */
@@ -1604,7 +1752,8 @@ function drawHoop(): void {
  * A basket's celebration, `age` s (world time) after it (nothing outside [0, CELEBRATE_SECONDS)): the
  * hoop it went through glows gold and fades where it was (the hoop has moved on), a gold ring widens
  * from the rim, confetti flies up from it and falls under gravity, a big "+1" and a word of praise
- * rise over it, and a ring closes in on the new hoop so the eye finds it.
+ * rise over it, and a ring closes in on the new hoop so the eye finds it. All of it is kept inside
+ * the court (courtMask; the words are moved in).
  */
 function drawCelebration(age: number): void {
   confetti.clear();
@@ -1613,6 +1762,13 @@ function drawCelebration(age: number): void {
   if (!on) return;
   const cam = renderer.camera;
   const f = age / CELEBRATE_SECONDS;
+  const { box } = layoutOf(TALL);
+  const left = cam.toScreenX(box.min[0]),
+    top = cam.toScreenY(box.max[1]);
+  courtMask
+    .clear()
+    .rect(left, top, cam.toScreenX(box.max[0]) - left, cam.toScreenY(box.min[1]) - top)
+    .fill({ color: 0xffffff });
   const x = cam.toScreenX(lastBasket.x),
     y = cam.toScreenY(lastBasket.y);
   // The old hoop glowing out over 0.8 s: its rim and net in gold.
@@ -1676,10 +1832,14 @@ function drawCelebration(age: number): void {
   const pop = age < 0.12 ? 0.6 + (0.4 * age) / 0.12 : 1;
   popText.text = `+${lastBasket.points}`;
   popText.scale.set(pop);
-  popText.position.set(x, y - rise);
-  popText.alpha = fade;
   praiseText.text = praiseFor(lastBasket);
-  praiseText.position.set(x, y - rise - popText.height - 2);
+  // Inside the court too: held down under its top, and in from its sides.
+  const textY = Math.max(y - rise, top + 4 + praiseText.height + 2 + popText.height);
+  const half = Math.max(popText.width, praiseText.width) / 2 + 4;
+  const textX = Math.min(cam.toScreenX(box.max[0]) - half, Math.max(left + half, x));
+  popText.position.set(textX, textY);
+  popText.alpha = fade;
+  praiseText.position.set(textX, textY - popText.height - 2);
   praiseText.alpha = fade;
 }
 
@@ -2099,25 +2259,32 @@ shell.expose({
   best: (): number => best,
   /** The heap's gold ball (0 when none). */
   goldBall: (): number => goldBall,
-  /** Throws ball `eid` of the scene from where it is with velocity (vx, vy) m/s, as a pull that starts on it does. */
-  throwBall: (eid: number, vx: number, vy: number): void => throwBall(eid, vx, vy),
+  /**
+   * Throws ball `eid` of the scene with velocity (vx, vy) m/s, as a pull that starts on it does: from
+   * where it is, or from the top of the heap over it if it is buried. @returns whether it was thrown
+   * (false: buried with no room above it).
+   */
+  throwBall: (eid: number, vx: number, vy: number): boolean => throwBall(eid, vx, vy),
   /** The hoop's opening now: rim height y and the x range, m. */
   hoop: () => hoopOpening(hoopSpots(TALL)[round.spot]!),
   /** A player's ball at (x, y) m with velocity (vx, vy) m/s, as a throw releases it (counts for the hoop). @returns its id. */
   shoot: (x: number, y: number, vx = 0, vy = 0): number => shoot(x, y, vx, vy),
   /**
    * The whole predicted flight of a throw of ball `eid` with velocity (vx, vy), m/s (2.5 s, two
-   * bounces; a pull starting on it shows the start of it): its points, m (flat x, y pairs), ending at a ball in its way. @throws RangeError if `eid` is not a ball of the scene.
+   * bounces; a pull starting on it shows the start of it), from the top of the heap over it if it is
+   * buried (liftSpot): its points, m (flat x, y pairs), ending at a ball in its way. @throws RangeError if `eid` is not a ball of the scene.
    */
   aimFrom: (eid: number, vx: number, vy: number): number[] => {
     if (!handles.balls.includes(eid)) throw new RangeError(`aimFrom: ${eid} is not a ball of the scene`);
     const c = shell.world.components,
       s = slotOf(eid);
-    return arcOf({ x: c.Position.x[s]!, y: c.Position.y[s]!, vx, vy, radius: c.Ball.radius[s]!, mass: c.Mass.value[s]! }, eid);
+    const [x, y] = liftSpot(eid) ?? [c.Position.x[s]!, c.Position.y[s]!];
+    return arcOf({ x, y, vx, vy, radius: c.Ball.radius[s]!, mass: c.Mass.value[s]! }, eid);
   },
   /**
    * The dotted arc drawn while pulling a throw: its points, m (flat x, y pairs), or [] when not pulling
-   * or in the cancel zone; the first 0.6 s of the flight (1.2 s before the round's first basket), to its first touch.
+   * or in the cancel zone; the first 0.6 s of the flight (1.2 s before the round's first basket), or to
+   * 0.2 s past its apex if later, to its first touch.
    */
   aimPath: (): number[] => aimPath(),
   /** The whole predicted flight of the throw being pulled (2.5 s, two bounces; the arc shows its start): points, m, or [] as aimPath. */

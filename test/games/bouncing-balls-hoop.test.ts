@@ -29,6 +29,7 @@ import {
   roundMiss,
   roundShot,
   roundTick,
+  slingPull,
   slingVelocity,
   streakMultiplier,
   throwPath,
@@ -299,12 +300,20 @@ function followsPath(x0: number, y0: number, vx: number, vy: number, path: numbe
 }
 
 describe('the slingshot and its aiming arc', () => {
-  it('throws opposite to the pull, MAX_THROW_SPEED at the full pull, in proportion below it, capped above', () => {
+  it('throws opposite to the pull, MAX_THROW_SPEED at the full pull, in proportion to half of it, then its square even, capped above', () => {
     // Pulled 60 px left and 80 px down (screen y down): thrown right and up, 3 : 4.
     const [vx, vy] = slingVelocity(-60, 80, 100);
     expect(vx).toBeCloseTo(0.6 * MAX_THROW_SPEED, 12);
     expect(vy).toBeCloseTo(0.8 * MAX_THROW_SPEED, 12);
-    expect(Math.hypot(...slingVelocity(0, 50, 100))).toBeCloseTo(MAX_THROW_SPEED / 2, 12);
+    // In step with the pull to half the full pull, then the speed's square (the height a throw
+    // reaches) even in the pull: a third, two thirds and all of MAX_THROW_SPEED^2 at 1/2, 3/4 and the
+    // full pull. (It was linear to the full pull: half the speed at half the pull, and a quarter of
+    // the height, so the last px of a pull swung a throw the most.)
+    expect(Math.hypot(...slingVelocity(0, 25, 100))).toBeCloseTo(MAX_THROW_SPEED / Math.sqrt(12), 12);
+    expect(Math.hypot(...slingVelocity(0, 50, 100)) ** 2).toBeCloseTo(MAX_THROW_SPEED ** 2 / 3, 9);
+    expect(Math.hypot(...slingVelocity(0, 75, 100)) ** 2).toBeCloseTo((2 * MAX_THROW_SPEED ** 2) / 3, 9);
+    expect(Math.hypot(...slingVelocity(0, 99.9, 100))).toBeLessThan(MAX_THROW_SPEED);
+    for (const v of [0, 3, 11, 11.6, 15, 20]) expect(Math.hypot(...slingVelocity(0, slingPull(v, 100), 100))).toBeCloseTo(v, 9);
     expect(Math.hypot(...slingVelocity(300, 0, 100))).toBeCloseTo(MAX_THROW_SPEED, 12);
     expect(slingVelocity(0, 0, 100)).toEqual([0, 0]);
     expect(() => slingVelocity(1, 1, 0)).toThrow(/slingVelocity: fullPull/);
