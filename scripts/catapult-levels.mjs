@@ -41,11 +41,13 @@ if (args.includes('--spread')) {
     for (let angle = 10; angle <= 60; angle += 10)
       for (let p = 50; p <= 100; p += 10) {
         const r = playThrows(n - 1, seed, [{ angle, power: p / 100 }]);
-        pieces = r.pieces;
-        best = Math.max(best, r.fallen);
+        pieces = r.counted;
+        best = Math.max(best, r.down);
         if (r.cleared) clear++;
       }
-    console.log(`level ${n} ${levelName(n - 1)}: ${clear} of 36 single throws clear it; the best brings down ${best} of ${pieces}`);
+    console.log(
+      `level ${n} ${levelName(n - 1)}: ${clear} of 36 single throws clear it; the best brings down ${best} of the ${pieces} that count`,
+    );
   }
 }
 if (args.includes('--grid')) {
@@ -64,7 +66,7 @@ if (args.includes('--grid')) {
           const key = `${angle}° ${p} %`;
           clears.set(key, [...(clears.get(key) ?? []), n]);
         }
-        if (r.fallen >= Math.ceil(0.95 * r.pieces)) three++;
+        if (r.down >= Math.ceil(0.95 * r.counted)) three++;
       }
     console.log(
       `level ${n} ${levelName(n - 1)}: ${clear} of ${total} single throws clear it (${((100 * clear) / total).toFixed(1)} %), ${three} earn three stars (${((100 * three) / total).toFixed(1)} %) (${((performance.now() - t0) / 1000).toFixed(1)} s)`,

@@ -35,12 +35,14 @@ import { CATAPULT, cupAt, drawBrick, drawCatapult, drawGlass, drawHill, drawMoun
 import {
   angleForRange,
   buildLevel,
+  countedDown,
   FALL_POINTS,
   LAUNCH,
   LEVEL_COUNT,
   type Level,
   launch,
   launchVelocity,
+  type Piece,
   PROJECTILE_RADIUS,
   PULL,
   predictArc,
@@ -112,6 +114,21 @@ const lastThrow = {
   pastBy: 0,
   /** Set when the player starts aiming again: the off-screen marker goes (the trail stays as a guide). */
   hidden: false,
+  /**
+   * What the throw's stone first touched of the castle and what stands before it: a castle piece's
+   * kind, 'hill' for a bank of earth (a hill fort's mound, the earth pillar before a keep), '' while
+   * it has touched neither.
+   */
+  touched: '' as Piece['kind'] | 'hill' | '',
+};
+/** What the player calls each kind of castle piece and a bank of earth, in a throw's verdict. */
+const PIECE_NAME: Record<Piece['kind'] | 'hill', string> = {
+  hill: 'the earth bank',
+  post: 'a wooden post',
+  plank: 'a plank',
+  block: 'the glass',
+  brick: 'a stone block',
+  stone: 'a stone',
 };
 /** A fresh world with the current level (the shell calls it at start and on R). */
 function createWorld(): PhysicsWorld {
@@ -194,6 +211,17 @@ function stepWorld(world: PhysicsWorld): void {
     const m = ma === 'wood' || mb === 'wood' ? 'wood' : ma === 'glass' || mb === 'glass' ? 'glass' : 'stone';
     sound.impact(impulse, m, { threshold: 2, loud: 60 });
   });
+  // The first castle piece the last throw's stone touches: its verdict says it hit that piece, not
+  // that it fell short or long of the castle.
+  const touch = contactEvents(world).begin;
+  for (let i = 0; lastThrow.body !== 0 && lastThrow.touched === '' && i < touch.count; i++) {
+    const a = touch.bodyA[i]!,
+      b = touch.bodyB[i]!;
+    const other = a === lastThrow.body ? b : b === lastThrow.body ? a : 0;
+    const piece = other === 0 ? undefined : lv.pieces.find((p) => p.body === other);
+    if (piece) lastThrow.touched = piece.kind;
+    else if (other !== 0 && lv.terrain.some((t) => t.body === other && t.kind === 'hill')) lastThrow.touched = 'hill';
+  }
   if (!effects) return;
   const ev = contactEvents(world).begin;
   for (let i = 0; i < ev.count; i++) {
@@ -230,6 +258,20 @@ const PASS_SHARE = 0.5;
 const campaign = { scores: new Array<number>(LEVEL_COUNT).fill(0), stars: new Array<number>(LEVEL_COUNT).fill(0) };
 const starsOf = (share: number): number => (share >= 0.95 ? 3 : share >= 0.75 ? 2 : share >= PASS_SHARE ? 1 : 0);
 const total = (): number => campaign.scores.reduce((a, b) => a + b, 0);
+/**
+ * Share of the level's pieces that count (`countsTowardStars`: all but a bottom row lying flat on
+ * the ground) marked down by the last tally, in [0, 1]: what the stars and the clear are judged on.
+ */
+const downShare = (): number => {
+  const c = countedDown(lv);
+  return c.of === 0 ? 1 : c.down / c.of;
+};
+/**
+ * What "down" means, as the player is told: the rule of scene.ts hasFallen (FALL_DROP, TIP_ANGLE,
+ * KNOCK_DISTANCE) and countsTowardStars, in words; a piece down turns darker.
+ */
+const DOWN_RULE = 'Down: dropped, tipped or knocked 1 m (it darkens); a flat bottom row does not count';
+const DOWN_RULE_SHORT = 'Down: dropped, tipped or knocked 1 m (darkens); not a flat bottom row';
 /**
  * What earns the stars, shown on the level's start hint and its end card (no-break spaces inside each
  * entry: a narrow screen wraps between entries, not inside one), and its short form for a narrow
@@ -403,6 +445,13 @@ const GROUND_AT = 0.18;
  * close-up in the sky over them. At 0.11 the scene sat in the bottom fifth under 70 % of empty sky.
  */
 const UPRIGHT_GROUND = 0.28;
+/**
+ * Upright, while aiming (the whole field in view, fitted to the screen's width at about 13 px a
+ * metre), the ground sits this fraction of the screen's height from the bottom: the earth under it
+ * holds the castle's close-up as wide as the screen (drawCloseUp), over the card saying how to play.
+ * At UPRIGHT_GROUND the field was a strip under 60 % of empty sky with a small close-up under it.
+ */
+const UPRIGHT_AIM_GROUND = 0.5;
 /** Screens narrower than this (CSS px) get the tighter aim view. */
 const NARROW = 600;
 /** Screen size the view was framed for; the view jumps (no easing) when it changes. */
@@ -460,20 +509,39 @@ function aimView(): View {
   // Upright: the catapult and the whole castle it aims at (the catapult framed large with the
   // castle off the screen showed a stranger the edge of a tower and not the target), the castle
   // also in the close-up over them (drawCloseUp).
-  if (upright()) return uprightView(OVERVIEW_LEFT, lv.castleMaxX + 0.8);
+  if (upright()) return uprightView(OVERVIEW_LEFT, lv.castleMaxX + 0.8, aimGround());
   // Room behind the catapult for its stones where the screen is wide enough.
   const behind = renderer.camera.width < NARROW ? 1.6 : 3.1;
   return viewFor(LAUNCH.x - behind, rockRight() + 0.6);
 }
 /**
  * An upright phone's view of the span [minX, maxX], m, fitted to the screen's width, its lowest
- * surface (a pit's floor, or the ground) UPRIGHT_GROUND of the way up the screen.
+ * surface (a pit's floor, or the ground) `ground` of the way up the screen (UPRIGHT_GROUND unless given).
  */
-function uprightView(minX: number, maxX: number): View {
+function uprightView(minX: number, maxX: number, ground = UPRIGHT_GROUND): View {
   const cam = renderer.camera;
   const height = ((maxX - minX) * Math.max(1, cam.height)) / Math.max(1, cam.width);
-  const minY = Math.min(0, ...lv.terrain.map((t) => t.maxY)) - UPRIGHT_GROUND * height;
+  const minY = Math.min(0, ...lv.terrain.map((t) => t.maxY)) - ground * height;
   return { minX, minY, maxX, maxY: minY + height };
+}
+/** Largest magnification of the castle's close-up (drawCloseUp): as wide as the phone's screen for most castles. */
+const CLOSE_MAX = 6;
+/**
+ * Upright, the aim view's ground height (a fraction of the screen's height from the bottom): room
+ * under the ground for the castle's close-up at its size (drawCloseUp: as wide as the screen, at
+ * most CLOSE_MAX times) and the card saying how to play, between UPRIGHT_GROUND and
+ * UPRIGHT_AIM_GROUND (a wide, low castle's close-up is short: the field sits lower).
+ */
+function aimGround(): number {
+  const cam = renderer.camera;
+  const W = Math.max(1, cam.width),
+    H = Math.max(1, cam.height);
+  const scale = W / (lv.castleMaxX + 0.8 - OVERVIEW_LEFT);
+  const floor = Math.min(0, ...lv.terrain.map((t) => t.maxY));
+  const w = (lv.castleMaxX - lv.castleMinX + 1.2) * scale,
+    h = (lv.castleTop + 1.1 - floor) * scale;
+  const need = Math.min(CLOSE_MAX, (W - 24) / w) * h + 12 + 96;
+  return Math.min(UPRIGHT_AIM_GROUND, Math.max(UPRIGHT_GROUND, need / H));
 }
 /** The upright aim view's left edge, m: just behind the catapult's stacked stones. */
 const OVERVIEW_LEFT = LAUNCH.x - 3.2;
@@ -504,7 +572,10 @@ function followView(): View {
   const w = a.maxX - a.minX + u * (s.maxX - s.minX - (a.maxX - a.minX));
   let c = (a.minX + a.maxX) / 2 + u * ((s.minX + s.maxX) / 2 - (a.minX + a.maxX) / 2);
   c = Math.min(Math.max(c, x - 0.35 * w), x + 0.35 * w);
-  return uprightView(c - w / 2, c + w / 2);
+  // Never past the shot view's right edge: a long throw is followed to the rock, and the arrow at the
+  // screen's edge points on at it (followed on, the view left the castle for the ground's bare end).
+  c = Math.min(c, s.maxX - w / 2);
+  return uprightView(c - w / 2, c + w / 2, aimGround() + u * (UPRIGHT_GROUND - aimGround()));
 }
 function frameCamera(): void {
   const cam = renderer.camera;
@@ -539,7 +610,7 @@ framing = true;
 // Framed now, not at the first frame: the camera holds the aim view from the start.
 frameCamera();
 
-const readout = createReadout(shell.hud.readout, ['level', 'shots left', 'score', 'total', 'pieces fallen', 'welds broken']);
+const readout = createReadout(shell.hud.readout, ['level', 'shots left', 'score', 'total', 'pieces down', 'welds broken']);
 
 // Aiming: press anywhere, drag back, release: the pull is the drag, measured on the screen. A full
 // pull (PULL.max) is a drag of FULL_PULL_SHARE of the canvas's diagonal (kept within
@@ -627,6 +698,7 @@ function fire(dx: number, dy: number): number {
   lastThrow.time = shell.world.time;
   lastThrow.verdict = '';
   lastThrow.brief = '';
+  lastThrow.touched = '';
   lastThrow.pastBy = 0;
   lastThrow.farthest = LAUNCH.x;
   lastThrow.vx = vx;
@@ -715,14 +787,22 @@ function followThrow(world: PhysicsWorld, t: Tally): void {
       break;
     }
   }
-  const d = short ? by(lv.castleMinX - Math.min(ground, landX)) : long ? by(landed - lv.castleMaxX) : 0;
-  lastThrow.pastBy = long ? d : 0;
-  lastThrow.verdict = short
-    ? `Short by ${d} m: pull further back`
-    : long
-      ? `Long by ${d} m: pull less, or aim lower`
-      : 'No damage: throw harder, or hit lower';
-  lastThrow.brief = short ? `short ${d} m` : long ? `long ${d} m` : 'no damage';
+  // A stone that touched a piece of the castle hit it, whatever its path did after: it was neither
+  // short nor long (one that glanced off a post and rolled back read "Short by 4 m").
+  const hit = lastThrow.touched !== '' && !(lastThrow.farthest > rockRight() + 0.3);
+  const bank = lastThrow.touched === 'hill';
+  const d = hit ? 0 : short ? by(lv.castleMinX - Math.min(ground, landX)) : long ? by(landed - lv.castleMaxX) : 0;
+  lastThrow.pastBy = !hit && long ? d : 0;
+  lastThrow.verdict = hit
+    ? bank
+      ? 'Hit the earth bank in front: throw higher or harder'
+      : `Hit ${PIECE_NAME[lastThrow.touched as Piece['kind']]}, nothing fell: throw harder`
+    : short
+      ? `Short by ${d} m: pull further back`
+      : long
+        ? `Long by ${d} m: pull less, or aim lower`
+        : 'No damage: throw harder, or hit lower';
+  lastThrow.brief = hit ? (bank ? 'hit the bank' : 'hit, none fell') : short ? `short ${d} m` : long ? `long ${d} m` : 'no damage';
   lastThrow.at = [Math.min(Math.max(x, lv.castleMinX - 4), lv.castleMaxX), Math.max(y, 0) + 2.2];
 }
 
@@ -1210,9 +1290,8 @@ app.stage.addChild(closeSprite, closeFrame, closeLabel);
 // crossing the close-up stays in sight, and the close-up, which draws the scene under them, does not
 // show them (nor change with every move of the finger).
 app.stage.addChild(aimLayer, aimText);
-/** Largest magnification of the close-up, and the smallest worth showing. */
-const CLOSE_MAX = 3,
-  CLOSE_MIN = 1.4;
+/** The smallest magnification of the close-up worth showing (its largest: CLOSE_MAX). */
+const CLOSE_MIN = 1.4;
 /** Pixels between the close-up's foot and the top of the castle on the screen. */
 const CLOSE_GAP = 36;
 /** Pixels over the aim's power bar (3.2 m up) kept clear for its two lines of numbers. */
@@ -1309,7 +1388,10 @@ function drawCloseUp(): void {
       return Math.max(aim.y0, ey) + 12 > band[0] && Math.min(aim.y0, ey) - 12 < band[1];
     };
     const zoomIn = (band: [number, number]): number => Math.min(CLOSE_MAX, (cam.width - 24) / w, (band[1] - band[0]) / h);
-    const slot = (crosses(earth) && !crosses(sky)) || (zoomIn(earth) < CLOSE_MIN && zoomIn(sky) > zoomIn(earth)) ? sky : earth;
+    // The place where it is the larger (the sky's when they are alike: a wide, low castle's close-up
+    // there fills the sky over the field), unless a pull crosses it and not the other.
+    const skyFirst = zoomIn(sky) >= 0.98 * zoomIn(earth);
+    const slot = crosses(skyFirst ? sky : earth) && !crosses(skyFirst ? earth : sky) ? (skyFirst ? earth : sky) : skyFirst ? sky : earth;
     closeLow = slot === earth;
     const [top, bottom] = slot;
     const zoom = zoomIn(slot);
@@ -1458,12 +1540,13 @@ function drawBackdrop(world: PhysicsWorld): void {
   }
 }
 
-/** The level is over when no shots are left and 4 s passed since the last, or everything fell. */
+/** The level is over when no shots are left and 4 s passed since the last, or everything (or everything that counts) fell. */
 function levelOver(world: PhysicsWorld, t: Tally): boolean {
   // Three stars' worth down (nothing more to win but the unused shots' bonus) ends it too, so the
   // player need not throw the shots left after the castle is down.
   const settled = world.time - lastShotTime > 4;
-  return t.fallen === lv.pieces.length || (settled && (shotsLeft === 0 || starsOf(t.fallen / Math.max(1, lv.pieces.length)) === 3));
+  const c = countedDown(lv);
+  return t.fallen === lv.pieces.length || c.down === c.of || (settled && (shotsLeft === 0 || starsOf(downShare()) === 3));
 }
 
 /**
@@ -1556,7 +1639,7 @@ function draw(world: PhysicsWorld, alpha: number): void {
     String(shotsLeft),
     String(score),
     String(runningTotal),
-    `${t.fallen} / ${lv.pieces.length}`,
+    `${countedDown(lv).down} / ${countedDown(lv).of}`,
     `${t.broken} / ${lv.joints.length}`,
   ]);
   banner.x = app.screen.width / 2;
@@ -1576,7 +1659,8 @@ function draw(world: PhysicsWorld, alpha: number): void {
     const starsWon = campaign.stars.reduce((a, b) => a + b, 0);
     if (earned === 0) {
       const keys = touch ? 'Tap the button below to try again' : 'Enter, L or the button below: try again';
-      banner.text = `Level ${params.level} not cleared  ${stars}\n${t.fallen} of ${lv.pieces.length} pieces fell: bring down half to pass\n${starRule}\n${keys}`;
+      const c = countedDown(lv);
+      banner.text = `Level ${params.level} not cleared  ${stars}\n${c.down} of ${c.of} pieces down: bring down half to pass\n${narrow ? DOWN_RULE_SHORT : DOWN_RULE}\n${starRule}\n${keys}`;
       showNext(true, 'Try again ↺');
     } else if (last) {
       // Levels skipped (L before a clear, the level slider or ?level) have no stars: the end screen
@@ -1599,14 +1683,14 @@ function draw(world: PhysicsWorld, alpha: number): void {
   } else {
     // The total counts this level's score as it grows; before the first throw, the star rule.
     // Before the first throw the level's name stands where its score (0) will be.
-    const rule = shots.length === 0 ? `\nStars: ${starRule}` : '';
+    const rule = shots.length === 0 ? `\nStars: ${starRule}\n${narrow ? DOWN_RULE_SHORT : DOWN_RULE}` : '';
     const head = shots.length === 0 ? `Level ${params.level}: ${lv.name}` : `Score ${score}`;
     // "shots left", not "shots": a stranger read "shots 2" as the shots thrown.
     const running = `${head}  Total ${runningTotal}  ${shotsLeft} ${shotsLeft === 1 ? 'shot' : 'shots'} left${rule}`;
     if (clearedEarly(world)) {
       // Cleared with shots to spare: the player may move on now or throw again for more stars (the
       // shots left score a bonus only with three stars, so throwing them is never worth less).
-      const earned = starsOf(t.fallen / Math.max(1, lv.pieces.length));
+      const earned = starsOf(downShare());
       const stars = '★'.repeat(earned) + '☆'.repeat(3 - earned);
       const bonus = touch
         ? 'Throw for ★ or move on'
@@ -1638,7 +1722,8 @@ function draw(world: PhysicsWorld, alpha: number): void {
  */
 function clearedEarly(world: PhysicsWorld): boolean {
   if (levelEnded || shots.length === 0 || world.time - lastShotTime <= 4) return false;
-  return starsOf(tally(world, lv).fallen / Math.max(1, lv.pieces.length)) > 0;
+  tally(world, lv);
+  return starsOf(downShare()) > 0;
 }
 
 /** Whether this level's clear has been celebrated (once a level). */
@@ -1652,7 +1737,7 @@ function celebrate(): void {
 
 /** Ends the level on screen: its score (with the unused shots' bonus for three stars) and stars count, once and only its best try. */
 function recordLevel(t: Tally): void {
-  const earned = starsOf(t.fallen / Math.max(1, lv.pieces.length));
+  const earned = starsOf(downShare());
   const score = t.score + (earned === 3 ? shotsLeft * SHOT_BONUS : 0);
   const i = params.level - 1;
   levelEnded = true;
@@ -1670,6 +1755,8 @@ shell.expose({
   campaign,
   /** Whether the level on screen is over. */
   levelEnded: (): boolean => levelEnded,
+  /** Share of the pieces that count (all but a flat bottom row on the ground) down, in [0, 1]: what the stars are judged on. */
+  downShare: (): number => downShare(),
   /** What the last throw did once it settled ('' before): '+N' points, or why it missed. */
   lastVerdict: (): string => lastThrow.verdict,
   /** The verdict's words over the scene in the last frame ('' while hidden). */

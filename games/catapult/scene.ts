@@ -692,6 +692,33 @@ export function hasFallen(world: PhysicsWorld, p: Piece): boolean {
 }
 
 /**
+ * Whether piece `p` counts toward its level's share of pieces down (the stars and the clear): every
+ * piece but one lying flat where the level's ground (a hill's top, a pit's floor) holds it at the
+ * start, a box at least as wide as it is tall (a bottom row's block or plank): it can neither drop
+ * nor tip, and counted it kept three stars out of reach however the castle above it was brought
+ * down. A post standing on the ground counts (it tips over).
+ */
+export function countsTowardStars(lv: Pick<Level, 'terrain'>, p: Piece): boolean {
+  const onGround = p.startY - p.half[1] - surfaceAt(lv, p.startX) < 0.05;
+  return !(onGround && p.half[0] >= p.half[1]);
+}
+
+/**
+ * The pieces of `lv` that count toward its share (`countsTowardStars`): how many there are (`of`)
+ * and how many of them are marked down by the last `tally` (`down`).
+ */
+export function countedDown(lv: Level): { down: number; of: number } {
+  let down = 0,
+    of = 0;
+  for (const p of lv.pieces)
+    if (countsTowardStars(lv, p)) {
+      of++;
+      if (p.down) down++;
+    }
+  return { down, of };
+}
+
+/**
  * The tally now. `fallen` counts the pieces that have fallen at any call so far (marked `down` on the
  * piece), so it never decreases; `broken` is the count of weld joints of the level no longer alive
  * (broken ones are removed by the solver). Score = FALL_POINTS x fallen + BREAK_POINTS x broken.

@@ -6,7 +6,7 @@
  * (`LEVEL_SOLUTIONS`) and runs the search on the first level only.
  */
 import { createPhysicsWorld, type PhysicsWorld, restore, snapshot, step } from '@bitphysics/physics';
-import { buildLevel, LEVEL_COUNT, type Level, launch, PULL, rollingBodies, tally, worldOptions } from './scene';
+import { buildLevel, countedDown, LEVEL_COUNT, type Level, launch, PULL, rollingBodies, tally, worldOptions } from './scene';
 
 export { LEVEL_COUNT, levelName } from './scene';
 
@@ -44,7 +44,7 @@ export const LEVEL_SOLUTIONS: ReadonlyArray<readonly Throw[]> = [
   ],
 ];
 
-/** The pieces that must fall to clear a level of `pieces` pieces (CLEAR_SHARE, rounded up). */
+/** The pieces that must fall to clear a level of `pieces` pieces that count (CLEAR_SHARE, rounded up). */
 export function clearTarget(pieces: number): number {
   return Math.ceil(CLEAR_SHARE * pieces);
 }
@@ -75,10 +75,15 @@ function run(world: PhysicsWorld, lv: Level, n: number): void {
 /**
  * Plays `throws` at level `level` (0-based) of seed `seed`: each throw STEPS_BETWEEN steps after the
  * last (1 s after the start for the first), and STEPS_AFTER steps after the last.
- * @returns the pieces fallen, the level's piece count and whether that clears it.
+ * @returns the pieces fallen and the level's piece count; of the pieces that count toward its share
+ * (`countsTowardStars`), how many are down and how many there are; and whether that clears it.
  * @throws RangeError on a level out of range or a throw out of range (angle in [-90, 90], power in (0, 1]).
  */
-export function playThrows(level: number, seed: number, throws: readonly Throw[]): { fallen: number; pieces: number; cleared: boolean } {
+export function playThrows(
+  level: number,
+  seed: number,
+  throws: readonly Throw[],
+): { fallen: number; pieces: number; down: number; counted: number; cleared: boolean } {
   for (const t of throws)
     if (!(t.angle >= -90 && t.angle <= 90 && t.power > 0 && t.power <= 1))
       throw new RangeError(`playThrows: each throw needs angle in [-90, 90] and power in (0, 1], got ${JSON.stringify(t)}`);
@@ -89,7 +94,8 @@ export function playThrows(level: number, seed: number, throws: readonly Throw[]
     run(world, lv, i === throws.length - 1 ? STEPS_AFTER : STEPS_BETWEEN);
   });
   const fallen = tally(world, lv).fallen;
-  return { fallen, pieces: lv.pieces.length, cleared: fallen >= clearTarget(lv.pieces.length) };
+  const counted = countedDown(lv);
+  return { fallen, pieces: lv.pieces.length, down: counted.down, counted: counted.of, cleared: counted.down >= clearTarget(counted.of) };
 }
 
 /** Options of `searchLevel`. */
@@ -140,10 +146,14 @@ export function searchLevel(level: number, seed: number, o: SearchOptions = {}):
       }
       if (meets) candidates.push({ angle, power });
     }
-  const need = Math.ceil((o.share ?? CLEAR_SHARE) * lv.pieces.length);
+  const need = Math.ceil((o.share ?? CLEAR_SHARE) * countedDown(lv).of);
   const throws: Throw[] = [];
   const rolling = rollingBodies(world);
-  for (let k = 0; k < lv.shots && tally(world, lv).fallen < need; k++) {
+  const downNow = (): number => {
+    tally(world, lv);
+    return countedDown(lv).down;
+  };
+  for (let k = 0; k < lv.shots && downNow() < need; k++) {
     const saved = snapshot(world),
       down = lv.pieces.map((p) => p.down === true),
       rollingLength = rolling.length;
@@ -162,7 +172,7 @@ export function searchLevel(level: number, seed: number, o: SearchOptions = {}):
       const c = candidates[(k + i * stride) % candidates.length]!;
       fire(world, c);
       run(world, lv, STEPS_BETWEEN);
-      const fallen = tally(world, lv).fallen;
+      const fallen = downNow();
       back();
       if (fallen > bestFallen) {
         bestFallen = fallen;
@@ -176,5 +186,5 @@ export function searchLevel(level: number, seed: number, o: SearchOptions = {}):
     run(world, lv, STEPS_BETWEEN);
   }
   const check = playThrows(level, seed, throws);
-  return { throws, cleared: check.fallen >= need, fallen: check.fallen };
+  return { throws, cleared: check.down >= need, fallen: check.fallen };
 }

@@ -757,16 +757,6 @@ const jibMaterial = new MeshStandardMaterial({
 });
 // Alpha from the texture's own brightness: the lattice's bars opaque, the panels clear.
 jibMaterial.alphaMap = jibMaterial.map;
-/**
- * The jib drawn see-through (a faint lattice, no depth write) while it points toward the camera: seen
- * end-on from above, its lattice lies between the camera and the ground the ball is swinging over
- * and covered the very piece being aimed at (see placeJibFade).
- */
-const jibFadedMaterial = jibMaterial.clone();
-jibFadedMaterial.transparent = true;
-jibFadedMaterial.opacity = 0.22;
-jibFadedMaterial.alphaTest = 0.05;
-jibFadedMaterial.depthWrite = false;
 const jib = new Mesh<BoxGeometry, Material>(new BoxGeometry(JIB_LENGTH, 0.55, 0.55), jibMaterial);
 jib.castShadow = true;
 app.scene.add(jib);
@@ -821,28 +811,6 @@ tieGeometry.setAttribute('position', new BufferAttribute(tiePositions, 3));
 const ties = new LineSegments(tieGeometry, new LineBasicMaterial({ color: 0x3b3f46 }));
 ties.frustumCulled = false;
 app.scene.add(ties);
-/**
- * Cosine of the largest angle, across the ground, between the jib's direction and the direction from
- * the mast to the camera at which the jib is drawn faded (JIB_UNFADE: back to solid, a margin so it
- * does not flicker at the edge).
- */
-const JIB_FADE = Math.cos((55 * Math.PI) / 180);
-const JIB_UNFADE = Math.cos((62 * Math.PI) / 180);
-/** Whether the jib is drawn faded (see jibFadedMaterial). */
-let jibFaded = false;
-/** Fades the jib while it points toward the camera within about 55 degrees across the ground (slew angle `a`, rad). */
-function placeJibFade(a: number): void {
-  const cx = app.camera.position.x,
-    cz = app.camera.position.z;
-  const d = Math.hypot(cx, cz);
-  const facing = d > 1e-6 ? (Math.cos(a) * cx - Math.sin(a) * cz) / d : 0;
-  const fade = jibFaded ? facing > JIB_UNFADE : facing > JIB_FADE;
-  if (fade === jibFaded) return;
-  jibFaded = fade;
-  jib.material = asDrawn(fade ? jibFadedMaterial : jibMaterial);
-  jib.castShadow = true;
-}
-
 /** Sets the tie bars' ends for the jib's slew angle `a`, rad. */
 function placeTies(a: number): void {
   const ca = Math.cos(a),
@@ -1722,9 +1690,8 @@ function swapMaterials(): void {
       o.material = stand;
     }
   });
-  // The jib's faded or solid material as the quality draws it (placeJibFade sets it as drawn, so a
-  // lite jib's stand-in has no entry to swap back from).
-  jib.material = asDrawn(jibFaded ? jibFadedMaterial : jibMaterial);
+  // The jib's material as the quality draws it.
+  jib.material = asDrawn(jibMaterial);
 }
 /** Frames a second under which a page drawing at full quality steps down to lite by itself. */
 const AUTO_LITE_FPS = 20;
@@ -1764,7 +1731,7 @@ const panel = createPanel(
     {
       type: 'slider',
       key: 'ballWeight',
-      label: 'ball weight (× 5.4 t, rebuilds)',
+      label: 'ball (× 5.4 t)',
       min: 0.1,
       max: 3,
       step: 0.1,
@@ -2069,7 +2036,6 @@ function frame(): void {
   const mid = (RADIUS_RANGE[1] + 2 - 2) / 2;
   jib.position.set(mid * ca, JIB_HEIGHT + 0.2, -mid * sa);
   jib.rotation.set(0, c.angle, 0);
-  placeJibFade(c.angle);
   counterweight.position.set(-2.6 * ca, JIB_HEIGHT - 0.35, 2.6 * sa);
   counterweight.rotation.set(0, c.angle, 0);
   placeTies(c.angle);
@@ -2182,8 +2148,11 @@ function timeToHit(moves: readonly { duration: number; elapsed: number; follow?:
 // ---- window.game ---------------------------------------------------------------------------
 
 shell.expose({
-  /** Whether the jib is drawn faded, as it is while it points toward the camera (see placeJibFade). */
-  jibFaded: (): boolean => jibFaded,
+  /**
+   * Whether the jib is drawn solid (opaque, writing depth) as it is whichever way it points: its
+   * lattice's open panels show what lies behind it (drawn faded toward the camera, it looked ghostly).
+   */
+  jibSolid: (): boolean => !jib.material.transparent && jib.material.opacity === 1 && jib.material.depthWrite,
   /** The camera's orbit target, m (it follows the ball; see followAction). */
   cameraTarget: (): number[] => (app.controls ? app.controls.target.toArray() : []),
   /** The orbit target of the site's framing the camera returns to, m (null once the player has moved the camera). */

@@ -100,12 +100,16 @@ async function phoneBeforeTouch(p: GamePage): Promise<{ hint: Locator; box: DOMR
   expect(aim.bottom).toBeLessThan(aim.hintTop);
   expect(aim.bottom / aim.H).toBeGreaterThan(0.5);
   expect(aim.bottom / aim.H).toBeLessThan(0.75);
-  // The score and the star rule: two lines of text, narrower than the canvas (a line is about
-  // 1.3 x the type size and the outline adds 4 px: two lines 2.7 x, three 4 x; bound 3.2 x).
-  expect(aim.banner.height).toBeLessThan(3.2 * aim.banner.fontSize);
+  // The score, the star rule and what "down" means: four lines of text at most, narrower than the
+  // canvas (a line is about 1.3 x the type size and the outline adds 4 px: four lines 5.4 x, five
+  // 6.7 x; bound 6 x). (It was two lines, the star rule only; a stranger was never told what
+  // counted as fallen.)
+  expect(aim.banner.height).toBeLessThan(6 * aim.banner.fontSize);
   expect(aim.banner.width).toBeLessThanOrEqual(aim.W);
   // The castle shows in a close-up too, drawn at 1.4 times the scene's scale or more, on the canvas
-  // in the earth under the ground (a third of the screen was plain earth) and above the card.
+  // clear of the field: in the earth under the ground (a third of the screen was plain earth) and
+  // above the card, or in the sky under the banner and over the castle's top (a wide, low castle's
+  // close-up there fills the sky: the field under 60 % of empty sky was a stranger's complaint).
   const close = await p.page.evaluate(() => {
     const w = window.game as unknown as PhoneGame & { closeUp(): { box: number[]; zoom: number } | null };
     const cam = w.renderer.camera;
@@ -115,8 +119,9 @@ async function phoneBeforeTouch(p: GamePage): Promise<{ hint: Locator; box: DOMR
   const [cx, cy, cw, ch] = close.close!.box as [number, number, number, number];
   expect(cx).toBeGreaterThanOrEqual(0);
   expect(cx + cw).toBeLessThanOrEqual(aim.W);
-  expect(cy).toBeGreaterThan(aim.bottom);
-  expect(cy + ch).toBeLessThanOrEqual(aim.hintTop);
+  const inEarth = cy > aim.bottom && cy + ch <= aim.hintTop;
+  const inSky = cy >= aim.banner.height && cy + ch < aim.castle[2]!;
+  expect(inEarth || inSky, JSON.stringify({ box: close.close!.box, aim })).toBe(true);
   // The legend is behind the menu button on a phone: a card over the scene says how to play until
   // the first touch.
   const hint = p.page.locator('[data-hud="touch-hint"]');
@@ -390,7 +395,7 @@ describe('catapult', () => {
         before,
         after: w.tally().score,
         fallen: w.tally().fallen,
-        pieces: (w.level() as unknown as { pieces: unknown[] }).pieces.length,
+        share: (w as unknown as { downShare(): number }).downShare(),
       };
     });
     expect(t.before).toBe(0);
@@ -408,7 +413,9 @@ describe('catapult', () => {
     // That throw brought down over half the castle with two shots left: the level is cleared and the
     // player may move on at once; the level then counts its score, with 150 a shot left only for
     // three stars (paid on any clear, it made moving on worth more than throwing for more stars).
-    expect(t.fallen / t.pieces).toBeGreaterThanOrEqual(0.5);
+    // (The share is of the pieces that count: a bottom row lying flat on the ground cannot fall and
+    // does not.)
+    expect(t.share).toBeGreaterThanOrEqual(0.5);
     // Enter moves on as the button does (before, only L or the button did), and the banner says so.
     const next = g.page.getByRole('button', { name: /Level 2/ });
     await next.waitFor({ state: 'visible' });
@@ -417,7 +424,7 @@ describe('catapult', () => {
     await g.waitFor(() => (window.game as unknown as CatapultGame).params.level === 2, null);
     const campaign = await g.page.evaluate(() => (window.game as unknown as CatapultGame).campaign);
     expect(campaign.stars[0]).toBeGreaterThan(0);
-    const three = t.fallen / t.pieces >= 0.95;
+    const three = t.share >= 0.95;
     expect(campaign.stars[0] === 3).toBe(three);
     expect(campaign.scores[0]).toBe(t.after + (three ? 2 * 150 : 0));
     // Back to a new campaign at level 1 for the next test.
@@ -790,7 +797,10 @@ describe('catapult', () => {
     expect(inside(rest.catapult, rest.W, rest.H)).toBe(true);
     const restClose = await p.page.evaluate(() => (window.game as unknown as Close).closeUp());
     expect(restClose).not.toBeNull();
-    expect(restClose!.low).toBe(true);
+    // Clear of the field: under the ground (in the earth) or over the castle's top (in the sky).
+    const clearOfField = (c: { box: [number, number, number, number]; low: boolean }, at: { castle: number[] }) =>
+      c.low ? c.box[1] > at.castle[3]! : c.box[1] + c.box[3] < at.castle[2]!;
+    expect(clearOfField(restClose!, rest)).toBe(true);
     // The close-up's texture is drawn again only when its scene changes: over 30 frames drawn with
     // the castle at rest and the camera still, at most once (it was every fourth frame, and under
     // software WebGL those renders held the GPU up for seconds).
@@ -835,7 +845,7 @@ describe('catapult', () => {
     expect(band[2]! < bx || band[0]! > bx + bw || band[3]! < by || band[1]! > by + bh, JSON.stringify({ band, box: aimClose!.box })).toBe(
       true,
     );
-    expect(aimClose!.low).toBe(true);
+    expect(clearOfField(aimClose!, aiming)).toBe(true);
     const shown = await p.page.evaluate(() => (window.game as unknown as W).aimShown());
     expect(Math.abs(shown.power - len / full)).toBeLessThan(0.02);
     expect(shown.power).toBeLessThan(0.65);
