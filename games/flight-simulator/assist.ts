@@ -5,9 +5,9 @@
  * decides where the control surfaces point.
  *
  * - Stick sideways: a bank angle, up to `ASSIST.maxBank` at full stick (the ailerons roll the
- *   aircraft there and hold it, the rudder turning the nose with them); let go, the wings roll
- *   level. A touch let go before it is `ASSIST.tapTime` old holds a bank until then, so a tap turns
- *   the aircraft a few degrees and a longer touch never turns it less.
+ *   aircraft there and hold it); let go, the wings roll level at once. A touch let go within
+ *   `ASSIST.tapLength` holds its bank until it is `ASSIST.tapTime` old, so a tap turns the aircraft
+ *   a few degrees.
  * - Stick forward and back: the stick moves the elevator itself in proportion to its deflection, so
  *   a held climb or dive gets the full response it has without the assist, up to a path of
  *   `ASSIST.maxPath` (45 degrees: no loop, no vertical dive); the rest of the elevator is a path
@@ -129,32 +129,20 @@ export const ASSIST = Object.freeze({
   alphaGain: 8,
   /** Rudder per radian of sideslip (1/rad): turns the nose into the air. */
   sideslipGain: 3,
-  /**
-   * Rudder per unit of aileron: cancels the ailerons' adverse yaw, so the nose swings into the turn
-   * as the wings roll (without it the nose first swung 0.6 degrees the other way over 0.4 s).
-   */
-  aileronRudder: 0.5,
   /** Fastest change of the bank asked for, rad/s (a full stick's bank is reached smoothly). */
   bankRate: 120 * DEG,
   /**
    * How long a touch of the stick sideways holds its bank at least, s: a stick let go sooner keeps
-   * a bank until then (a tap the one it asked for, at most `tapBank`; a longer touch the one the
-   * aircraft has, at least `tapBank`), so a tap of a bank key (or a short touch of the phone's stick)
-   * rolls the aircraft far enough, for long enough, to turn it a few degrees, and the heading a touch
-   * turns grows steadily with its length (2.9 degrees at 0.1 s, 3.5 at 0.4, 5.7 at 0.6, 11 at 1 s).
+   * the largest bank it asked for until then, so a tap of a bank key (or a short touch of the phone's
+   * stick) rolls the aircraft far enough, for long enough, to turn it a few degrees.
    */
-  tapTime: 1.1,
+  tapTime: 0.9,
   /**
-   * Longest touch of the stick sideways that is a tap, s: one eased off later never rolls on past
-   * the bank it has (beyond `tapBank`), so the turn stops where the flight-path marker said. 0.35 s
+   * Longest touch of the stick sideways that is a tap, s: one eased off later holds nothing (a held
+   * key let go rolls level at once, so the turn stops where the flight-path marker said). 0.35 s
    * keeps a tap of two frames at 5 frames a second (0.3 s of game time) a tap.
    */
   tapLength: 0.35,
-  /**
-   * Largest bank a tap holds, rad (32 degrees): a 150 ms tap turns the aircraft about 3 degrees, and
-   * a short hold let go keeps at least this much, so no hold turns less than a shorter one.
-   */
-  tapBank: 32 * DEG,
 });
 
 /** What the assist keeps between steps: the integral of the flight-path error and the bank asked for. */
@@ -165,39 +153,21 @@ export interface AssistState {
   bankTarget: number;
   /** How long the stick has been off centre sideways, s (0 while it is centred). */
   rollHeld: number;
-  /** The largest sideways stick of this touch while it is younger than `ASSIST.tapTime`, or once let go the stick it holds (0 once past `tapTime`), signed, in [-1, 1]. */
+  /** The largest sideways stick of this touch while it is younger than `ASSIST.tapTime` (0 once it is no tap), signed, in [-1, 1]. */
   rollPeak: number;
-  /** Whether this touch has eased off before `ASSIST.tapTime` (its `rollPeak` is held until then). */
+  /** Whether this touch eased off within `ASSIST.tapLength` (a tap: its peak is held until `ASSIST.tapTime`). */
   rollTap: boolean;
 }
 
 /**
- * The bank a stick let go now would still hold, and for how long (rad, + right; 0 when none, and
- * the time left, s): a touch younger than `ASSIST.tapTime` holds its bank until then (see
- * `ASSIST.tapTime`); `bank` is the aircraft's bank now, rad (what a touch longer than
- * `ASSIST.tapLength` keeps; default 0).
+ * The bank a stick let go now would still hold, and for how long: the largest bank of a touch of
+ * the stick younger than `ASSIST.tapTime` and let go (or to be let go now) within `ASSIST.tapLength`
+ * (rad, + right; 0 when none) and the time left, s.
  */
-export function heldBank(state: AssistState, bank = 0): { bank: number; time: number } {
-  if (state.rollPeak === 0 || state.rollHeld >= ASSIST.tapTime) return { bank: 0, time: 0 };
-  const peak = ASSIST.maxBank * state.rollPeak;
-  // A hold past `tapLength` let go now keeps the bank it has (never more than the stick asked for).
-  if (!state.rollTap && state.rollHeld > ASSIST.tapLength)
-    return {
-      bank: ASSIST.maxBank * Math.sign(peak) * shortHold(Math.abs(state.rollPeak), Math.sign(peak) * bank),
-      time: ASSIST.tapTime - state.rollHeld,
-    };
-  // Let go already: the bank it holds; a touch still within `tapLength`: a tap's.
-  const bankHeld = state.rollTap ? peak : Math.sign(peak) * Math.min(Math.abs(peak), ASSIST.tapBank);
-  return { bank: bankHeld, time: ASSIST.tapTime - state.rollHeld };
-}
-
-/**
- * The stick (fraction of full, >= 0) a short hold let go keeps until `ASSIST.tapTime`: the bank the
- * aircraft has, `bank` rad the way of the stick, or a tap's `ASSIST.tapBank` if that is more (so a
- * short hold turns at least as far as a tap), never more than the stick's `peak` asked for.
- */
-function shortHold(peak: number, bank: number): number {
-  return Math.min(peak, Math.max(bank, ASSIST.tapBank) / ASSIST.maxBank);
+export function heldBank(state: AssistState): { bank: number; time: number } {
+  if (state.rollPeak === 0 || state.rollHeld >= ASSIST.tapTime || (!state.rollTap && state.rollHeld > ASSIST.tapLength))
+    return { bank: 0, time: 0 };
+  return { bank: ASSIST.maxBank * state.rollPeak, time: ASSIST.tapTime - state.rollHeld };
 }
 
 /** A new assist state: no integral, wings level asked for. */
@@ -256,7 +226,7 @@ export function flightState(world: PhysicsWorld, body: number): FlightState {
 export function assist(s: FlightState, input: PilotInput, state: AssistState, dt: number): ControlCommand {
   const A = ASSIST;
   // Bank: towards the stick's bank at a limited rate, the ailerons on the error and the roll rate.
-  // A touch of the stick let go holds a bank until it is `tapTime` old (a tap turns; see ASSIST.tapTime).
+  // A touch of the stick holds the largest bank it asked for until it is `tapTime` old (a tap turns).
   let roll = clamp(input.roll, -1, 1);
   const reversed = state.rollPeak !== 0 && Math.sign(roll) === -Math.sign(state.rollPeak);
   if (roll !== 0 && (state.rollHeld === 0 || reversed)) {
@@ -269,15 +239,10 @@ export function assist(s: FlightState, input: PilotInput, state: AssistState, dt
     if (state.rollHeld > A.tapTime) state.rollPeak = 0;
     else if (Math.abs(roll) >= Math.abs(state.rollPeak)) state.rollPeak = roll;
     else if (!state.rollTap && state.rollHeld > A.tapLength) {
-      // Eased off after `tapLength`, before `tapTime`: a short hold. The bank the aircraft has is
-      // held (never rolled on past it) until the touch is `tapTime` old, so a hold turns at least
-      // as far as a shorter one and the heading turned grows steadily with the hold.
-      state.rollPeak = Math.sign(state.rollPeak) * shortHold(Math.abs(state.rollPeak), Math.sign(state.rollPeak) * s.bank);
-      state.rollTap = true;
-      roll = state.rollPeak;
+      // Eased off after `tapLength`: a hold, not a tap. Nothing is held: the wings roll level at once.
+      state.rollPeak = 0;
+      state.rollHeld = A.tapTime;
     } else {
-      // Eased off within `tapLength`: a tap. Its bank (at most `tapBank`) is held until `tapTime`.
-      if (!state.rollTap) state.rollPeak = Math.sign(state.rollPeak) * Math.min(Math.abs(state.rollPeak), A.tapBank / A.maxBank);
       state.rollTap = true;
       roll = state.rollPeak;
     }
@@ -320,7 +285,7 @@ export function assist(s: FlightState, input: PilotInput, state: AssistState, dt
   // Angle of attack limit: past it, nose-up elevator is taken off (never beyond what brings it back).
   if (s.alpha > A.alphaLimit) elevator = Math.min(elevator, -A.alphaGain * (s.alpha - A.alphaLimit));
   elevator = clamp(elevator, -1, 1);
-  const rudder = clamp(input.yaw + A.sideslipGain * s.sideslip + A.aileronRudder * aileron, -1, 1);
+  const rudder = clamp(input.yaw + A.sideslipGain * s.sideslip, -1, 1);
   return { aileron, elevator, rudder };
 }
 

@@ -182,59 +182,47 @@ describe('flight assist', () => {
     }
   });
 
-  it('a touch younger than ASSIST.tapTime holds a bank until then: a tap the one it asked for (at most tapBank), a longer touch the one the aircraft has', () => {
-    /** The assist's state after full stick right for `held` s in a bank of `bank` rad, then `after` s let go (steps of 1/60 s). */
-    const touch = (held: number, after: number, bank = 0) => {
-      const s: FlightState = {
-        speed: 110,
-        bank,
-        pitch: 0,
-        path: 0,
-        heading: 0,
-        alpha: 0,
-        sideslip: 0,
-        rollRate: 0,
-        pitchRate: 0,
-        yawRate: 0,
-      };
+  it('only a tap holds its bank: a touch eased off past ASSIST.tapLength holds nothing: let go, the bank asked for unwinds from then', () => {
+    const s: FlightState = {
+      speed: 110,
+      bank: 0,
+      pitch: 0,
+      path: 0,
+      heading: 0,
+      alpha: 0,
+      sideslip: 0,
+      rollRate: 0,
+      pitchRate: 0,
+      yawRate: 0,
+    };
+    /** The assist's state after full stick right for `held` s, then `after` s let go (steps of 1/60 s). */
+    const touch = (held: number, after: number) => {
       const state = createAssistState();
       for (let i = 0; i < Math.round(held * 60); i++) assist(s, { roll: 1, pitch: 0, yaw: 0 }, state, 1 / 60);
-      const before = heldBank(state, bank);
+      const before = heldBank(state);
       for (let i = 0; i < Math.round(after * 60); i++) assist(s, { roll: 0, pitch: 0, yaw: 0 }, state, 1 / 60);
-      return { before, after: heldBank(state, bank), target: state.bankTarget };
+      return { before, after: heldBank(state), target: state.bankTarget };
     };
-    // A 0.2 s touch is a tap: let go, the bank it asked for (at most ASSIST.tapBank) is held until
-    // the touch is ASSIST.tapTime old.
+    // A 0.2 s touch is a tap: let go, its bank is held until the touch is ASSIST.tapTime old.
     const tap = touch(0.2, 0.3);
-    expect(tap.before.bank).toBeCloseTo(ASSIST.tapBank, 12);
-    expect(tap.after.bank).toBeCloseTo(ASSIST.tapBank, 12);
+    expect(tap.before.bank).toBeCloseTo(ASSIST.maxBank, 12);
+    expect(tap.after.bank).toBeCloseTo(ASSIST.maxBank, 12);
     expect(tap.after.time).toBeCloseTo(ASSIST.tapTime - 0.5, 6);
-    // Held 0.5 s (and 0.8 s) in a 50 degree bank: a short hold. Let go, the bank the aircraft has is
-    // held (not the full stick's 70 degrees: no roll on) until ASSIST.tapTime; in a 10 degree bank,
-    // a tap's ASSIST.tapBank.
+    // Held 0.5 s (and 0.8 s, as a 1 s hold reads at 5 frames a second): a hold, not a tap. Nothing is
+    // held, and the bank asked for falls to level at ASSIST.bankRate from the release.
     for (const held of [0.5, 0.8]) {
-      const h = touch(held, 0.1, 50 * DEG);
-      expect(h.after.bank, `${held}`).toBeCloseTo(50 * DEG, 9);
-      expect(h.after.time, `${held}`).toBeCloseTo(ASSIST.tapTime - held - 0.1, 6);
-      expect(h.target, `${held}`).toBeLessThanOrEqual(50 * DEG + 1e-9);
-      expect(touch(held, 0.1, 10 * DEG).after.bank, `${held}`).toBeCloseTo(ASSIST.tapBank, 9);
-      // Past ASSIST.tapTime nothing is held and the bank asked for unwinds to level.
-      const late = touch(held, ASSIST.tapTime - held + (50 * DEG) / ASSIST.bankRate + 0.1, 50 * DEG);
-      expect(late.after, `${held}`).toEqual({ bank: 0, time: 0 });
-      expect(late.target, `${held}`).toBe(0);
+      const h = touch(held, 0);
+      expect(h.before, `${held}`).toEqual({ bank: 0, time: 0 });
+      expect(h.target, `${held}`).toBeGreaterThan(0);
+      expect(touch(held, 1 / 60).target, `${held}`).toBeCloseTo(Math.max(0, h.target - ASSIST.bankRate / 60), 9);
+      expect(touch(held, 0.1).after, `${held}`).toEqual({ bank: 0, time: 0 });
+      expect(touch(held, h.target / ASSIST.bankRate + 0.05).target, `${held}`).toBe(0);
     }
-    // Held ASSIST.tapTime or longer: nothing is held.
-    expect(touch(ASSIST.tapTime + 0.1, 1 / 60, 50 * DEG).after).toEqual({ bank: 0, time: 0 });
-    // Flown: the heading a touch turns grows with its length, never less for a longer one (a 0.4 s
-    // hold turned 1.5 degrees, less than half a 250 ms tap's 3.3, when only a tap held its bank),
-    // and a 0.5 s hold stays a small turn (measured 4.5 degrees).
-    const turned = [0.1, 0.15, 0.25, 0.4, 0.5, 0.6, 0.8, 1, 1.5].map((t) => {
-      const r = bankKey((time) => time < t, 12);
-      return r[r.length - 1]!;
-    });
-    for (let i = 1; i < turned.length; i++) expect(turned[i]!, `${turned.map((x) => x.toFixed(1))}`).toBeGreaterThan(turned[i - 1]!);
-    expect(turned[4]).toBeLessThan(6);
-    expect(turned[0]).toBeGreaterThan(2);
+    // Flown: a key held 0.5 s turns the aircraft under 3.5 degrees in all (measured 2.1; 5.8 when the
+    // held bank was kept until 0.9 s), a 150 ms tap still over 1.5 (the test above).
+    const half = bankKey((t) => t < 0.5, 8);
+    expect(half[half.length - 1]).toBeLessThan(3.5);
+    expect(half[half.length - 1]).toBeGreaterThan(0.5);
   });
 
   it('full stick back: climbs past 17 degrees within 3 s, never past the 45 degree path (no loop); at idle it slows but does not stall', () => {
@@ -417,7 +405,7 @@ describe('the flight-path marker (course.ts predictThroughRing) against the flow
             bank: after.bank,
             rollRate: after.rollRate,
             pathRate: (after.path - s.path) / dt,
-            held: heldBank(f.state, after.bank),
+            held: heldBank(f.state),
           },
           true,
         ).point;
