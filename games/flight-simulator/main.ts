@@ -1403,7 +1403,7 @@ function markPath(): void {
     i >= 0 && state.phase === 'flying'
       ? predictThroughRing(
           rings[i]!,
-          { position: now, velocity: [V.x[e]!, V.y[e]!, V.z[e]!], ...motion, held: heldBank(assistState) },
+          { position: now, velocity: [V.x[e]!, V.y[e]!, V.z[e]!], ...motion, held: heldBank(assistState, motion) },
           params.assist,
         )
       : null;
