@@ -1497,6 +1497,9 @@ function frame(alpha = 1): void {
     // The readouts too: every figure over and beside the scene says the same moment (the readout
     // kept every 6th drawn frame said "rings 0/10" under the banner's "Ring 1 ✓").
     updateHud(crashReadings ?? instruments(world));
+    // The warning too (it sits in a fixed place, nothing to project): a loaded machine that drew no
+    // frame between "PULL UP" and the ground never showed it.
+    showWarning(world.time);
     showTip();
     showThrottleNote();
     placeMessages();
