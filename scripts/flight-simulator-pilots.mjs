@@ -135,7 +135,7 @@ const fly = (seed, pilot) => {
         bank: s.bank,
         rollRate: s.rollRate,
         pathRate: (s.path - lastPath) / world.dt,
-        held: fs.heldBank(state),
+        held: fs.heldBank(state, s),
       },
       true,
     );

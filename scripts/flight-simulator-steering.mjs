@@ -4,6 +4,7 @@
 // the starting throttle, 900 m up). Prints, in game time:
 // - a held half turn: s from pressing → until the heading has turned 180 degrees, and the bank held;
 // - taps of → for 100, 150 and 250 ms: the heading's change once the wings are level again, degrees;
+// - holds of → from 100 ms to 2 s: the heading each turns in all, degrees;
 // - held to a target: → held until the heading has turned 30 / 90 degrees, then let go: how far the
 //   heading runs on past the target, degrees, and how long the wings take to come level (within 2 degrees).
 // - a 1 s hold (0.5 and 2 s too) at 60 and 5 frames a second, as the page's loop runs it (the keys
@@ -82,6 +83,13 @@ for (const ms of [100, 150, 250]) {
   const r = fly((t) => t < ms / 1000, 8);
   console.log(`tap ${ms} ms: heading ${r[r.length - 1].turned.toFixed(2)}°, bank at most ${Math.max(...r.map((x) => x.bank)).toFixed(1)}°`);
 }
+// The heading a hold of → of each length turns in all (the wings level again): proportional and
+// predictable when it grows steadily with the hold, with no jump.
+const sweep = [100, 150, 250, 400, 500, 600, 800, 1000, 1500, 2000].map((ms) => {
+  const r = fly((t) => t < ms / 1000, 12);
+  return `${ms} ${r[r.length - 1].turned.toFixed(1)}°`;
+});
+console.log(`hold (ms) → heading turned: ${sweep.join(', ')}`);
 for (const target of [30, 90]) {
   let released = -1;
   const r = fly((t, turned) => {
@@ -130,7 +138,7 @@ function flyFrames(fps, holdReal, timed) {
         bank: a.bank,
         rollRate: a.rollRate,
         pathRate: (a.path - s.path) / world.dt,
-        held: fs.heldBank(state),
+        held: fs.heldBank(state, a),
         at: track.length - 1,
       };
     }

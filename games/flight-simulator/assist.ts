@@ -5,9 +5,9 @@
  * decides where the control surfaces point.
  *
  * - Stick sideways: a bank angle, up to `ASSIST.maxBank` at full stick (the ailerons roll the
- *   aircraft there and hold it); let go, the wings roll level at once. A touch let go within
- *   `ASSIST.tapLength` holds its bank until it is `ASSIST.tapTime` old, so a tap turns the aircraft
- *   a few degrees.
+ *   aircraft there and hold it, the rudder turning the nose with them); let go, the wings roll
+ *   level. A tap holds its bank a moment (`ASSIST.tapTime`), so it turns the aircraft a few
+ *   degrees; a longer touch up to `ASSIST.holdFade` holds less for less time (letGoHold).
  * - Stick forward and back: the stick moves the elevator itself in proportion to its deflection, so
  *   a held climb or dive gets the full response it has without the assist, up to a path of
  *   `ASSIST.maxPath` (45 degrees: no loop, no vertical dive); the rest of the elevator is a path
@@ -129,20 +129,39 @@ export const ASSIST = Object.freeze({
   alphaGain: 8,
   /** Rudder per radian of sideslip (1/rad): turns the nose into the air. */
   sideslipGain: 3,
+  /**
+   * Rudder per unit of aileron: cancels the ailerons' adverse yaw, so the nose swings into the turn
+   * as the wings roll (without it the nose first swung 0.6 degrees the other way over 0.4 s).
+   */
+  aileronRudder: 0.5,
   /** Fastest change of the bank asked for, rad/s (a full stick's bank is reached smoothly). */
   bankRate: 120 * DEG,
   /**
-   * How long a touch of the stick sideways holds its bank at least, s: a stick let go sooner keeps
-   * the largest bank it asked for until then, so a tap of a bank key (or a short touch of the phone's
-   * stick) rolls the aircraft far enough, for long enough, to turn it a few degrees.
+   * How long a tap of the stick sideways holds its bank, s (its age): a tap of a bank key (or a
+   * short touch of the phone's stick) rolls the aircraft far enough, for long enough, to turn it
+   * about 3 degrees; a touch up to `holdFade` holds less for less time (assist.ts letGoHold), so the
+   * heading turned grows with the hold (2.9 degrees at 0.1 s, 3.0 at 0.4, 4.2 at 0.5, 10 at 1 s).
    */
-  tapTime: 0.9,
+  tapTime: 1.1,
   /**
-   * Longest touch of the stick sideways that is a tap, s: one eased off later holds nothing (a held
-   * key let go rolls level at once, so the turn stops where the flight-path marker said). 0.35 s
+   * Longest touch of the stick sideways that is a tap, s: one eased off later holds less
+   * (letGoHold) and its wings never roll on past the bank they have, so the turn stops where the
+   * flight-path marker said. 0.35 s
    * keeps a tap of two frames at 5 frames a second (0.3 s of game time) a tap.
    */
   tapLength: 0.35,
+  /**
+   * Largest bank a tap holds, rad (32 degrees): a 150 ms tap turns the aircraft about 3 degrees (2.5
+   * when it held 31 degrees for 0.9 s).
+   */
+  tapBank: 32 * DEG,
+  /**
+   * Age of a touch of the stick sideways, s, from which one let go holds nothing: between
+   * `tapLength` and this a touch holds less bank for less time the longer it was (assist.ts letGoHold).
+   */
+  holdFade: 0.9,
+  /** Lead on the roll rate when a short hold is let go, s: it holds the bank where the roll stops, not the one it has. */
+  rollLead: 0.2,
 });
 
 /** What the assist keeps between steps: the integral of the flight-path error and the bank asked for. */
@@ -153,26 +172,53 @@ export interface AssistState {
   bankTarget: number;
   /** How long the stick has been off centre sideways, s (0 while it is centred). */
   rollHeld: number;
-  /** The largest sideways stick of this touch while it is younger than `ASSIST.tapTime` (0 once it is no tap), signed, in [-1, 1]. */
+  /** The largest sideways stick of this touch while it is held, or once let go the stick it holds (0 once past `rollUntil`), signed, in [-1, 1]. */
   rollPeak: number;
-  /** Whether this touch eased off within `ASSIST.tapLength` (a tap: its peak is held until `ASSIST.tapTime`). */
+  /** Whether this touch has eased off while it still holds a bank (its `rollPeak` is held until `rollUntil`). */
   rollTap: boolean;
+  /** The touch's age until which a stick let go is held, s (`ASSIST.tapTime` until it is let go). */
+  rollUntil: number;
 }
 
 /**
- * The bank a stick let go now would still hold, and for how long: the largest bank of a touch of
- * the stick younger than `ASSIST.tapTime` and let go (or to be let go now) within `ASSIST.tapLength`
- * (rad, + right; 0 when none) and the time left, s.
+ * The bank a stick let go now would still hold, and for how long (rad, + right; 0 when none, and
+ * the time left, s; see letGoHold). `now` is the aircraft's bank, rad, and roll rate, rad/s (what
+ * a touch longer than `ASSIST.tapLength` keeps depends on them; default level and still).
  */
-export function heldBank(state: AssistState): { bank: number; time: number } {
-  if (state.rollPeak === 0 || state.rollHeld >= ASSIST.tapTime || (!state.rollTap && state.rollHeld > ASSIST.tapLength))
-    return { bank: 0, time: 0 };
-  return { bank: ASSIST.maxBank * state.rollPeak, time: ASSIST.tapTime - state.rollHeld };
+export function heldBank(
+  state: AssistState,
+  now: { bank: number; rollRate: number } = { bank: 0, rollRate: 0 },
+): { bank: number; time: number } {
+  if (state.rollPeak === 0 || state.rollHeld >= state.rollUntil) return { bank: 0, time: 0 };
+  if (state.rollTap) return { bank: ASSIST.maxBank * state.rollPeak, time: state.rollUntil - state.rollHeld };
+  const h = letGoHold(state.rollHeld, state.rollPeak, now.bank, now.rollRate);
+  return { bank: ASSIST.maxBank * h.stick, time: h.until - state.rollHeld };
+}
+
+/**
+ * What a touch of the stick `age` s old at its largest `peak` (signed, in [-1, 1]) holds when let
+ * go in a bank of `bank` rad rolling at `rollRate` rad/s: the stick held (signed, never more than
+ * `peak`, never the other way) and the age until which it is held, s. A tap (`age` up to
+ * `ASSIST.tapLength`) holds its bank, at most `ASSIST.tapBank`, until `ASSIST.tapTime`. A longer
+ * touch holds less the longer it was, for less time: the share (holdFade - age) / (holdFade -
+ * tapLength) of a tap's hold time, at the larger of that share of `tapBank` and the bank where the
+ * roll stops (`bank` less `rollRate` x `ASSIST.rollLead`: the ailerons reverse at once, so the wings
+ * never roll on past the release); from `ASSIST.holdFade` on, nothing (the wings roll level at once).
+ */
+function letGoHold(age: number, peak: number, bank: number, rollRate: number): { stick: number; until: number } {
+  const A = ASSIST,
+    sign = Math.sign(peak),
+    size = Math.abs(peak);
+  if (age <= A.tapLength) return { stick: sign * Math.min(size, A.tapBank / A.maxBank), until: A.tapTime };
+  const share = clamp((A.holdFade - age) / (A.holdFade - A.tapLength), 0, 1);
+  if (share === 0) return { stick: 0, until: age };
+  const stops = Math.max(0, sign * (bank - rollRate * A.rollLead));
+  return { stick: sign * Math.min(size, Math.max(stops, share * A.tapBank) / A.maxBank), until: age + share * (A.tapTime - A.tapLength) };
 }
 
 /** A new assist state: no integral, wings level asked for. */
 export function createAssistState(): AssistState {
-  return { integral: 0, bankTarget: 0, rollHeld: 0, rollPeak: 0, rollTap: false };
+  return { integral: 0, bankTarget: 0, rollHeld: 0, rollPeak: 0, rollTap: false, rollUntil: ASSIST.tapTime };
 }
 
 const clamp = (v: number, lo: number, hi: number): number => (v < lo ? lo : v > hi ? hi : v);
@@ -226,30 +272,36 @@ export function flightState(world: PhysicsWorld, body: number): FlightState {
 export function assist(s: FlightState, input: PilotInput, state: AssistState, dt: number): ControlCommand {
   const A = ASSIST;
   // Bank: towards the stick's bank at a limited rate, the ailerons on the error and the roll rate.
-  // A touch of the stick holds the largest bank it asked for until it is `tapTime` old (a tap turns).
+  // A touch of the stick let go holds a bank a moment (letGoHold: a tap turns).
   let roll = clamp(input.roll, -1, 1);
   const reversed = state.rollPeak !== 0 && Math.sign(roll) === -Math.sign(state.rollPeak);
   if (roll !== 0 && (state.rollHeld === 0 || reversed)) {
     state.rollHeld = 0;
     state.rollPeak = 0;
     state.rollTap = false;
+    state.rollUntil = ASSIST.tapTime;
   }
   if (roll !== 0 || state.rollPeak !== 0) {
     state.rollHeld += dt;
-    if (state.rollHeld > A.tapTime) state.rollPeak = 0;
+    if (state.rollHeld > state.rollUntil) state.rollPeak = 0;
     else if (Math.abs(roll) >= Math.abs(state.rollPeak)) state.rollPeak = roll;
-    else if (!state.rollTap && state.rollHeld > A.tapLength) {
-      // Eased off after `tapLength`: a hold, not a tap. Nothing is held: the wings roll level at once.
-      state.rollPeak = 0;
-      state.rollHeld = A.tapTime;
-    } else {
-      state.rollTap = true;
-      roll = state.rollPeak;
+    else {
+      // Eased off: a tap or a short hold keeps a bank a while (letGoHold), so a tap turns a few
+      // degrees and a longer touch never turns less than a shorter one.
+      if (!state.rollTap) {
+        const h = letGoHold(state.rollHeld, state.rollPeak, s.bank, s.rollRate);
+        state.rollPeak = h.stick;
+        state.rollUntil = h.until;
+        state.rollTap = true;
+      }
+      if (state.rollPeak !== 0 && state.rollHeld <= state.rollUntil) roll = state.rollPeak;
+      else state.rollPeak = 0;
     }
   }
   if (roll === 0) {
     state.rollHeld = 0;
     state.rollTap = false;
+    state.rollUntil = ASSIST.tapTime;
   }
   const wanted = A.maxBank * roll;
   // Eased off or let go: the bank asked for never lies beyond the bank the aircraft has (nor short
@@ -285,7 +337,7 @@ export function assist(s: FlightState, input: PilotInput, state: AssistState, dt
   // Angle of attack limit: past it, nose-up elevator is taken off (never beyond what brings it back).
   if (s.alpha > A.alphaLimit) elevator = Math.min(elevator, -A.alphaGain * (s.alpha - A.alphaLimit));
   elevator = clamp(elevator, -1, 1);
-  const rudder = clamp(input.yaw + A.sideslipGain * s.sideslip, -1, 1);
+  const rudder = clamp(input.yaw + A.sideslipGain * s.sideslip + A.aileronRudder * aileron, -1, 1);
   return { aileron, elevator, rudder };
 }
 

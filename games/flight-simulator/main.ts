@@ -551,7 +551,7 @@ const game = await startThreeGame({
     lights: { direction: [...SUN_DIRECTION], intensity: 2.2, hemisphereIntensity: 0.6, ambientIntensity: 0.2, shadows: false },
   },
   view: null,
-  onFrame: () => frame(),
+  onFrame: (alpha) => frame(alpha),
 });
 const { shell, renderer, app } = game;
 shellReady = true;
@@ -1127,11 +1127,10 @@ const touchFirst = matchMedia('(pointer: coarse)').matches;
 /** What the tip shows now ('' when none; tests). */
 let tipText = '';
 /**
- * The lesson ring the tip was worked out for (-1: none), and which ways it lay from the line flown
- * then (./course.ts ringBearing, ringWay: right or left, higher or lower, and how much), worked out
- * from where the aircraft is when the tip first shows, not written per ring (a tip said "higher"
- * while the ring lay to the left). Fixed while that ring is next, so the tip does not turn round as
- * the aircraft turns towards the ring.
+ * The lesson ring the tip is for (-1: none), and which ways it lies from the line flown now
+ * (./course.ts ringBearing, ringWay: right or left, higher or lower, and how much), worked out every
+ * frame from where the aircraft is and flies, not written per ring (a tip said "higher" while the
+ * ring lay to the left).
  */
 let tipRing = -1,
   tipWay: RingWay = { side: 0, up: 0, sideAmount: '', upAmount: '' };
@@ -1150,11 +1149,13 @@ function lessonTip(): string {
   }
   if (tipRing !== i) {
     tipGoneAt = Infinity;
-    const V = shell.world.components.Velocity,
-      e = handles.body;
     tipRing = i;
-    tipWay = ringWay(ringBearing(rings[i]!, now, [V.x[e]!, V.y[e]!, V.z[e]!]));
   }
+  // The ways are worked out afresh every frame from where the aircraft is and flies now: a tip
+  // kept from when it first showed said "Ring 2 is to the left" with the ring already to the right.
+  const V = shell.world.components.Velocity,
+    e = handles.body;
+  tipWay = ringWay(ringBearing(rings[i]!, now, [V.x[e]!, V.y[e]!, V.z[e]!]));
   // Once the turn-back cue shows, the ways the tip named are stale (a tip said "far to the right"
   // 14 km from its ring): the tip goes for this ring and the cue says the way.
   if (turnBackText) tipGoneAt = Math.min(tipGoneAt, shell.world.time);
@@ -1402,7 +1403,7 @@ function markPath(): void {
     i >= 0 && state.phase === 'flying'
       ? predictThroughRing(
           rings[i]!,
-          { position: now, velocity: [V.x[e]!, V.y[e]!, V.z[e]!], ...motion, held: heldBank(assistState) },
+          { position: now, velocity: [V.x[e]!, V.y[e]!, V.z[e]!], ...motion, held: heldBank(assistState, motion) },
           params.assist,
         )
       : null;
@@ -1434,7 +1435,7 @@ const drawnQ = new Quaternion(),
   nose = new Vector3(),
   smoothOffset = new Vector3();
 let smoothReady = false;
-/** performance.now() of the last frame, ms (the chase camera's smoothing is per second, not per frame). */
+/** Game time drawn by the last frame, s (the chase camera's smoothing is per second of game time, not per frame). */
 let lastFrame = 0;
 /** The chase camera's distance from the drawn aircraft now, m (tests; 0 in the other views). */
 let chaseDistance = 0;
@@ -1472,7 +1473,7 @@ const FOV = Object.freeze({ base: 64, fast: 10, from: 110, to: 170 });
 /** performance.now() of the last frame the aircraft's fade was eased in, ms. */
 let lastFade = 0;
 
-function frame(): void {
+function frame(alpha = 1): void {
   const world = shell.world;
   // Everything here is what the frame shows: the camera, the labels and tips over the scene, the
   // HUD. The frame pacer skips drawing while the GPU is behind (often several frames in a row on a
@@ -1496,6 +1497,9 @@ function frame(): void {
     // The readouts too: every figure over and beside the scene says the same moment (the readout
     // kept every 6th drawn frame said "rings 0/10" under the banner's "Ring 1 ✓").
     updateHud(crashReadings ?? instruments(world));
+    // The warning too (it sits in a fixed place, nothing to project): a loaded machine that drew no
+    // frame between "PULL UP" and the ground never showed it.
+    showWarning(world.time);
     showTip();
     showThrottleNote();
     placeMessages();
@@ -1528,8 +1532,11 @@ function frame(): void {
     chaseOffset.copy(nose).multiplyScalar(back).y += up;
     // Its length is the offset's whatever the pitch (the sum of the two is not).
     chaseOffset.setLength(Math.hypot(back, up));
-    const t = performance.now();
-    const dt = Math.min(0.2, Math.max(0, (t - lastFrame) / 1000));
+    // Smoothed over the game time drawn (the interpolated state's), not the clock's: the aircraft
+    // moves by game time, so on uneven frames a clock-timed lag swung the camera, and the path
+    // marker with it, by a different share each frame (it jittered 11 to 22 px in a held bank).
+    const t = world.time - world.dt * (1 - alpha);
+    const dt = Math.min(0.2, Math.max(0, t - lastFrame));
     lastFrame = t;
     if (!smoothReady) {
       smoothOffset.copy(chaseOffset);

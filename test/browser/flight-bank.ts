@@ -24,7 +24,8 @@ export async function recordBank(g: GamePage): Promise<void> {
 /**
  * Call right after the bank input is let go (recordBank running): waits until the wings are within
  * 3 degrees of level and returns how many degrees further than at the release they rolled meanwhile
- * (`rolledOn`) and how long they took to level (`levelIn`, s of game time). For a key, the release
+ * (`rolledOn`) and how long they took to level (`levelIn`, s of game time, to where the bank crossed
+ * 3 degrees between two recorded frames). For a key, the release
  * is the last recorded frame before the keys' input began to fall: the page applies a let-go key on
  * its next frame, and on a loaded machine that frame steps the game up to 4 steps (67 ms, 5 degrees
  * of roll) after the test's own reading. A stick has no ramp: its release is the test's reading.
@@ -43,5 +44,15 @@ export async function afterRelease(g: GamePage): Promise<{ rolledOn: number; lev
   const fall = log.findIndex(([, , k], i) => i > 0 && Math.abs(k) < Math.abs(log[i - 1]![2]));
   const release = fall > 0 && log[fall - 1]![0] <= read.time + 0.5 ? { time: log[fall - 1]![0], bank: log[fall - 1]![1] } : read;
   const after = log.filter(([t]) => t >= release.time && t <= levelAt).map(([, b]) => b);
-  return { rolledOn: Math.max(...after.map(Math.abs)) - Math.abs(release.bank), levelIn: levelAt - release.time };
+  // The wings came level between the last frame still past 3 degrees and the first within: the
+  // crossing is put on the straight line between the two, not at the later frame (on a loaded
+  // machine a frame steps up to 9 steps, 0.15 s, and the later frame alone read late by that much).
+  const at = log.findIndex(([t]) => t === levelAt);
+  let levelTime = levelAt;
+  if (at > 0 && log[at - 1]![0] >= release.time) {
+    const [t0, b0] = log[at - 1]!,
+      [t1, b1] = log[at]!;
+    if (Math.abs(b0) > Math.abs(b1)) levelTime = t0 + ((t1 - t0) * (Math.abs(b0) - 3)) / (Math.abs(b0) - Math.abs(b1));
+  }
+  return { rolledOn: Math.max(...after.map(Math.abs)) - Math.abs(release.bank), levelIn: levelTime - release.time };
 }

@@ -1118,8 +1118,10 @@ describe('projects', () => {
         if (read && agl !== panelAgl) hud.bad.push(`above ground ${agl} in the readout, ${panelAgl} in the panel`);
         if (agl > 0 && !(alt - agl >= 59 && alt - agl <= 760)) hud.bad.push(`ground at ${alt - agl} m: ${said}`);
         // The warning, while it shows, stays in one place and nothing over the scene overlaps it.
+        // It blinks (hidden every other third of a second): a frame in its hidden phase counts too,
+        // its box is the same, so a loaded machine drawing a few frames before the crash still sees it.
         const warning = document.querySelector<HTMLElement>('[data-hud="warning"]')!;
-        if (warning.style.display !== 'none' && warning.style.visibility !== 'hidden') {
+        if (warning.style.display !== 'none') {
           hud.seen.push('warning');
           const w = warning.getBoundingClientRect();
           const at = `${Math.round(w.left)},${Math.round(w.top)}`;
@@ -1154,31 +1156,39 @@ describe('projects', () => {
       );
     await place(0, 150, 0, 0);
     await g.page.keyboard.press('Space'); // the flight waits for the pilot
-    await g.waitFor(() => (window.game as unknown as Flight).banner().text === 'Ring 1 ✓', null);
+    await g.waitFor(() => (window.game as unknown as Flight).banner().text === 'Ring 1 ✓', null, 60_000);
     // Faster: the engine's note and the readout say the same figure.
     await g.page.keyboard.press('x');
-    await g.waitFor(() => (window as unknown as { hud: { seen: string[] } }).hud.seen.includes('note') || null, null);
+    await g.waitFor(() => (window as unknown as { hud: { seen: string[] } }).hud.seen.includes('note') || null, null, 60_000);
     // Ring 2 missed 250 m to its right and 100 m above (the lesson's tip waits: Space goes on): ring 3,
     // laid on the line from ring 2's centre, was seen 15 degrees off its way through from there.
     await place(1, 150, 100, 250);
     await g.page.keyboard.press('Space');
-    const missed = await g.waitFor(() => {
-      const w = window.game as unknown as Flight;
-      if (!w.banner().text.startsWith('Missed ring 2')) return null;
-      const r = w.rings()[2]!,
-        c = w.world.components,
-        e = w.aircraftBody();
-      const dx = r.x - c.Position.x[e]!,
-        dy = r.y - c.Position.y[e]!,
-        dz = r.z - c.Position.z[e]!;
-      // How squarely ring 3 faces the aircraft: the cosine between its way through and the line to it.
-      return { facing: (dx * r.nx + dy * r.ny + dz * r.nz) / Math.hypot(dx, dy, dz) };
-    }, null);
+    const missed = await g.waitFor(
+      () => {
+        const w = window.game as unknown as Flight;
+        if (!w.banner().text.startsWith('Missed ring 2')) return null;
+        const r = w.rings()[2]!,
+          c = w.world.components,
+          e = w.aircraftBody();
+        const dx = r.x - c.Position.x[e]!,
+          dy = r.y - c.Position.y[e]!,
+          dz = r.z - c.Position.z[e]!;
+        // How squarely ring 3 faces the aircraft: the cosine between its way through and the line to it.
+        return { facing: (dx * r.nx + dy * r.ny + dz * r.nz) / Math.hypot(dx, dy, dz) };
+      },
+      null,
+      60_000,
+    );
     expect(missed.facing).toBeGreaterThan(0.995);
-    const hud = await g.waitFor(() => {
-      const h = (window as unknown as { hud: { bad: string[]; seen: string[]; frames: number } }).hud;
-      return h.seen.includes('miss') ? h : null;
-    }, null);
+    const hud = await g.waitFor(
+      () => {
+        const h = (window as unknown as { hud: { bad: string[]; seen: string[]; frames: number } }).hud;
+        return h.seen.includes('miss') ? h : null;
+      },
+      null,
+      60_000,
+    );
     expect(hud.bad.slice(0, 5)).toEqual([]);
     expect(new Set(hud.seen)).toEqual(new Set(['pass', 'note', 'miss']));
     // ← held until the aircraft banks 30 degrees, then let go: from the release the wings roll at
@@ -1205,14 +1215,19 @@ describe('projects', () => {
       c.Velocity.y[e] = -12;
     });
     await g.page.keyboard.down('ArrowDown');
-    const warned = await g.waitFor(() => {
-      const h = (window as unknown as { hud: { bad: string[]; seen: string[]; frames: number } }).hud;
-      return h.seen.includes('warning') ? h : null;
-    }, null);
+    const warned = await g.waitFor(
+      () => {
+        const h = (window as unknown as { hud: { bad: string[]; seen: string[]; frames: number } }).hud;
+        return h.seen.includes('warning') ? h : null;
+      },
+      null,
+      60_000,
+    );
     await g.page.keyboard.up('ArrowDown');
     expect(warned.bad.slice(0, 5)).toEqual([]);
     expect(new Set(warned.seen)).toEqual(new Set(['pass', 'note', 'miss', 'warning']));
     expect(g.errors).toEqual([]);
     await g.close();
-  });
+    // A long case (two rings, a let-go and a dive): 23 s on a quiet machine, 50 s and more under load.
+  }, 180_000);
 });
