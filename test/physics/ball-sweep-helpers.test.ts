@@ -1,32 +1,24 @@
 import { describe, expect, test } from 'vitest';
 import * as FINISH from '../../packages/physics/src/solver/slots/finish-bodies.js';
 import * as GATHER from '../../packages/physics/src/solver/slots/gather-fill.js';
-import { lowerSupportBall, SUPPORT_COS, sweepRow } from '../../packages/physics/src/solver/support.js';
+import { lowerSupportBall, relaxOrderInto, SUPPORT_COS } from '../../packages/physics/src/solver/support.js';
 
 // The pieces the 2D and 3D ball sweeps (solver/ball-sweeps.ts) and the solver's stages
 // (solver/stages-threads.ts motionArrays) share, against what each is documented to do.
 
-describe('sweepRow: the ball sweeps row order', () => {
+describe('relaxOrderInto: the ball sweeps row order', () => {
   const n = 7;
   const ia = Int32Array.from([0, 3, 0, 5, 2, 0, 4]);
   const first = Uint8Array.from([1, 0, 0, 0, 0, 1, 0]);
-  const visits = (useBias: boolean): number[] => {
-    const out: number[] = [];
-    for (let k = 0; k < (useBias ? n : 3 * n); k++) {
-      const i = sweepRow(k, n, useBias, first, ia);
-      if (i >= 0) out.push(i);
-    }
-    return out;
-  };
-
-  test('with bias, every row once in buffer order', () => {
-    expect(visits(true)).toEqual([0, 1, 2, 3, 4, 5, 6]);
-  });
 
   test('relaxing: the marked rows, then the rows between two balls, then the rows against static bodies', () => {
+    const out = new Int32Array(2 * n).fill(-1);
+    const count = relaxOrderInto(first, ia, n, out);
     const rows = [...Array(n).keys()];
     const expected = [...rows.filter((i) => first[i] === 1), ...rows.filter((i) => ia[i] !== 0), ...rows.filter((i) => ia[i] === 0)];
-    expect(visits(false)).toEqual(expected);
+    expect(count).toBe(n + 2);
+    expect([...out.subarray(0, count)]).toEqual(expected);
+    expect(out[count]).toBe(-1);
   });
 });
 

@@ -27,7 +27,7 @@ import * as RESTITUTION from './slots/restitution.js';
 import { withRoom } from './solver-bodies.js';
 import { restitutionTargets } from './stages-kernel.js';
 import { restitutionOnThreads, storeWarmStartOnThreads } from './stages-threads.js';
-import { downward3Into, downwardInto, markFirstRelaxRows } from './support.js';
+import { downward3Into, downwardInto, markFirstRelaxRows, relaxOrderInto } from './support.js';
 
 /**
  * Stage 1 for the ball rows: gives the bodies of the rows of `buf` solver indices from `count` on (each
@@ -120,7 +120,7 @@ export function planBallRows(world: PhysicsWorld, buf: ContactBuffer, colored: b
   const sp = solveParams;
   downwardInto(world.gravity, sp, 2);
   if (!is2D) downward3Into(world.gravity, sp, 10);
-  relaxFirst = markFirstRelaxRows(
+  const first = markFirstRelaxRows(
     buf.ia,
     buf.ib,
     buf.nx,
@@ -133,6 +133,8 @@ export function planBallRows(world: PhysicsWorld, buf: ContactBuffer, colored: b
     sp,
     is2D ? 2 : 10,
   );
+  if (relaxOrder.length < 2 * buf.count) relaxOrder = new Int32Array(Math.max(2 * buf.count, 2 * relaxOrder.length));
+  relaxCount = relaxOrderInto(first, buf.ia, buf.count, relaxOrder);
   // The coloured solve takes the impacted rows out after it plans (solver/coloring.ts), the others now.
   if (colored) solveColoredSubsteps(world, buf, hs, [sp[4]!, sp[5]!, sp[6]!, sp[7]!, sp[8]!, sp[9]!], sp[1]!);
   else releaseImpactedRows(buf);
@@ -152,8 +154,8 @@ export function warmStartBallRows(world: PhysicsWorld, buf: ContactBuffer): void
  * @category Collision
  */
 export function solveBallRows(world: PhysicsWorld, buf: ContactBuffer, useBias: boolean): void {
-  if (world.dimensions === 2) solve2D(world.collision, buf, useBias, solveParams, relaxFirst);
-  else solve3D(world.collision, buf, useBias, solveParams, relaxFirst);
+  if (world.dimensions === 2) solve2D(world.collision, buf, useBias, solveParams, relaxOrder, relaxCount);
+  else solve3D(world.collision, buf, useBias, solveParams, relaxOrder, relaxCount);
 }
 
 /**
@@ -198,8 +200,10 @@ export function storeBallRows(world: PhysicsWorld, buf: ContactBuffer, onThreads
  */
 const solveParams = new Float64Array(13);
 
-/** Per ball contact row of the step: 1 for the rows the relax sweep takes first (solver/support.ts markFirstRelaxRows). Not world state. */
-let relaxFirst: Uint8Array = new Uint8Array(0);
+/** The relax sweep's row order of the step, its first `relaxCount` entries (solver/support.ts relaxOrderInto). Not world state. */
+let relaxOrder = new Int32Array(64);
+/** The length of the step's relax order. Not world state. */
+let relaxCount = 0;
 
 /**
  * Writes the coefficients of a soft constraint, a spring of frequency `hertz` (Hz, >= 0) and damping

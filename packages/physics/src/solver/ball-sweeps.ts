@@ -30,7 +30,7 @@ import {
   BS3_WY,
   BS3_WZ,
 } from './body-state-layout.js';
-import { holdsLower, lowerSupportBall, sweepRow } from './support.js';
+import { holdsLower, lowerSupportBall } from './support.js';
 /** Applies every contact's accumulated impulse (Box2D v3 warm start, once per substep), 2D. */
 export function warmStart2D(cs: CollisionState, buf: ContactBuffer): void {
   const n = buf.count,
@@ -131,9 +131,17 @@ export function warmStart3D(cs: CollisionState, buf: ContactBuffer): void {
  * which takes the rows against static bodies first and last and solves the support rows (frictionless,
  * or with the heavier ball above) with the lower ball held when that only slows the upper one
  * (solver/support.ts; (downX, downY) is the unit vector along gravity, (0, 0) without). The substep,
- * push-out cap, down vector and soft coefficients are read from `sp` (ball-rows.ts solveParams); `first` marks the rows the relax sweep takes first (solver/support.ts markFirstRelaxRows).
+ * push-out cap, down vector and soft coefficients are read from `sp` (ball-rows.ts solveParams); the relax
+ * sweep takes the rows in `order`'s first `orderCount` entries (solver/support.ts relaxOrderInto).
  */
-export function solve2D(cs: CollisionState, buf: ContactBuffer, useBias: boolean, sp: Float64Array, first: Uint8Array): void {
+export function solve2D(
+  cs: CollisionState,
+  buf: ContactBuffer,
+  useBias: boolean,
+  sp: Float64Array,
+  order: Int32Array,
+  orderCount: number,
+): void {
   const hs = sp[0]!,
     push = sp[1]!,
     downX = sp[2]!,
@@ -167,10 +175,9 @@ export function solve2D(cs: CollisionState, buf: ContactBuffer, useBias: boolean
   // is at rest when the support row above it is relaxed and may hold it, taking the heavy ball's
   // push-out speed away; then the rows between two balls; then the rows against static bodies (walls,
   // floor, segments), which take out what the others pushed into them.
-  const end = useBias ? n : 3 * n;
+  const end = useBias ? n : orderCount;
   for (let k = 0; k < end; k++) {
-    const i = sweepRow(k, n, useBias, first, IA);
-    if (i < 0) continue;
+    const i = useBias ? k : order[k]!;
     const a = IA[i]! * BS2_STRIDE,
       b = IB[i]! * BS2_STRIDE;
     const nx = NX[i]!,
@@ -272,10 +279,17 @@ export function solve2D(cs: CollisionState, buf: ContactBuffer, useBias: boolean
 
 /**
  * One Gauss-Seidel sweep over the 3D ball contacts (with soft bias if `useBias`); parameters from
- * `sp` and `first` as solve2D, and its relax sweep as solve2D's: static rows first and last, support rows
+ * `sp`, `order` and `orderCount` as solve2D, and its relax sweep as solve2D's: static rows first and last, support rows
  * (frictionless or with the heavier ball above) holding their lower ball when that only slows the upper.
  */
-export function solve3D(cs: CollisionState, buf: ContactBuffer, useBias: boolean, sp: Float64Array, first: Uint8Array): void {
+export function solve3D(
+  cs: CollisionState,
+  buf: ContactBuffer,
+  useBias: boolean,
+  sp: Float64Array,
+  order: Int32Array,
+  orderCount: number,
+): void {
   const hs = sp[0]!,
     push = sp[1]!,
     downX = sp[10]!,
@@ -305,10 +319,9 @@ export function solve3D(cs: CollisionState, buf: ContactBuffer, useBias: boolean
     MAXN = buf.maxNormalImpulse;
 
   // Row order as in solve2D: the relax sweep takes the rows under heavier balls, the ball pairs, the static rows.
-  const end = useBias ? n : 3 * n;
+  const end = useBias ? n : orderCount;
   for (let k = 0; k < end; k++) {
-    const i = sweepRow(k, n, useBias, first, IA);
-    if (i < 0) continue;
+    const i = useBias ? k : order[k]!;
     const a = IA[i]! * BS3_STRIDE,
       b = IB[i]! * BS3_STRIDE;
     const nx = NX[i]!,
@@ -322,23 +335,6 @@ export function solve3D(cs: CollisionState, buf: ContactBuffer, useBias: boolean
       vbx = sb[b + BS3_VX]!,
       vby = sb[b + BS3_VY]!,
       vbz = sb[b + BS3_VZ]!;
-    // A support row of the relax sweep may hold its lower ball (solver/support.ts), as in solve2D.
-    let jmA = imA,
-      jmB = imB,
-      nm = NM[i]!;
-    if (!useBias && imA > 0 && imB > 0 && nm > 0) {
-      const lower = lowerSupportBall(-(downX * nx + downY * ny + downZ * nz), FB[i]!, imA, imB);
-      if (lower !== 0) {
-        const va = Math.abs(vax * nx + vay * ny + vaz * nz),
-          vb = Math.abs(vbx * nx + vby * ny + vbz * nz);
-        if (lower === 1 ? holdsLower(va, vb) : holdsLower(vb, va)) {
-          if (lower === 1) jmA = 0;
-          else jmB = 0;
-          nm = 1 / (jmA + jmB);
-        }
-      }
-    }
-
     const s =
       S0[i]! +
       (sb[b + BS3_DX]! - sb[a + BS3_DX]!) * nx +
@@ -358,6 +354,26 @@ export function solve3D(cs: CollisionState, buf: ContactBuffer, useBias: boolean
     }
     const vn = (vbx - vax) * nx + (vby - vay) * ny + (vbz - vaz) * nz;
     const oldN = LN[i]!;
+    // A speculative row with no impulse whose gap stays open this substep does nothing (as in solve2D:
+    // its normal impulse stays 0, so its friction cone is a point and every impulse below is 0).
+    if (s > 0 && oldN === 0 && vn + bias >= 0 && L1[i] === 0 && L2[i] === 0) continue;
+    // A support row of the relax sweep may hold its lower ball (solver/support.ts), as in solve2D.
+    let jmA = imA,
+      jmB = imB,
+      nm = NM[i]!;
+    if (!useBias && imA > 0 && imB > 0 && nm > 0) {
+      const lower = lowerSupportBall(-(downX * nx + downY * ny + downZ * nz), FB[i]!, imA, imB);
+      if (lower !== 0) {
+        const va = Math.abs(vax * nx + vay * ny + vaz * nz),
+          vb = Math.abs(vbx * nx + vby * ny + vbz * nz);
+        if (lower === 1 ? holdsLower(va, vb) : holdsLower(vb, va)) {
+          if (lower === 1) jmA = 0;
+          else jmB = 0;
+          nm = 1 / (jmA + jmB);
+        }
+      }
+    }
+
     let newN = oldN - nm * massScale * (vn + bias) - impulseScale * oldN;
     if (newN < 0) newN = 0;
     const dl = newN - oldN;

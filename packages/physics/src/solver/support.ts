@@ -97,14 +97,18 @@ export function lowerSupportBall(up: number, frictionBound: number, imA: number,
 }
 
 /**
- * The contact row a ball sweep's k-th visit takes (solver/ball-sweeps.ts, `n` rows), or -1 when that
- * visit skips it: with bias (n visits) row k; relaxing (3 n visits), first the rows `first` marks
- * (markFirstRelaxRows), then the rows between two balls, then the rows against static bodies (`ia` 0).
+ * Writes the relax sweep's row order (solver/ball-sweeps.ts, `n` rows) into out[0 ..] and returns its
+ * length, n plus the number of marked rows: first the rows `first` marks (markFirstRelaxRows), then the
+ * rows between two balls, then the rows against static bodies (`ia` 0), the marked ones among them
+ * again. `out` needs room for 2 n indices. The sweep with bias takes the rows in buffer order.
  * @category Collision
  */
-export function sweepRow(k: number, n: number, useBias: boolean, first: Uint8Array, ia: Int32Array): number {
-  const i = k < n ? k : k < 2 * n ? k - n : k - 2 * n;
-  return !useBias && (k < n ? first[i] === 0 : k < 2 * n === (ia[i] === 0)) ? -1 : i;
+export function relaxOrderInto(first: Uint8Array, ia: Int32Array, n: number, out: Int32Array): number {
+  let k = 0;
+  for (let i = 0; i < n; i++) if (first[i] !== 0) out[k++] = i;
+  for (let i = 0; i < n; i++) if (ia[i] !== 0) out[k++] = i;
+  for (let i = 0; i < n; i++) if (ia[i] === 0) out[k++] = i;
+  return k;
 }
 
 /**
