@@ -14,7 +14,7 @@ const INTEGRATE = 'integrate (semi-implicit Euler)';
 
 /** The kernels' arguments (the SIE slots), filled by each call of semiImplicitEuler. Not state. */
 const sieArrays: KernelArray[] = [];
-const sieParams = new Float64Array(8);
+const sieParams = new Float64Array(SIE.PARAMS);
 
 /**
  * Semi-implicit (symplectic) Euler: v(t+h) = v(t) + a(t) h, then x(t+h) = x(t) + v(t+h) h, with
@@ -39,7 +39,7 @@ const sieParams = new Float64Array(8);
  * new velocity or position is NaN or infinite (x * 0 is NaN exactly then, so the positions join the
  * running check without overflowing it).
  *
- * The two body loops are kernels (`sieForced2` and `sieForced3`, `sieFree2` and `sieFree3`), run
+ * The two body loops are kernels (`sie2` and `sie3`, each for forced bodies or bare particles), run
  * inline or split over the world's threads when that pays: each body's arithmetic is the same either
  * way, so the state is identical to the bit on any thread count.
  *
@@ -88,7 +88,10 @@ export function semiImplicitEuler(world: PhysicsWorld, h: number): void {
     setFusedForces(world, false);
     if (is2D) fusedForced2(world, h);
     else fusedForced3(world, h);
-  } else check = runParallel(world, INTEGRATE, is2D ? sieForced2 : sieForced3, A, P, ents.length, ents);
+  } else {
+    P[SIE.FORCED] = 1;
+    check = runParallel(world, INTEGRATE, is2D ? sie2 : sie3, A, P, ents.length, ents);
+  }
   if (check - check !== 0) reportNonFinite(world, ents, 'integrate');
 
   // Bare particles: a = g. When the query holds every live id (a world of particles), its ids are
@@ -98,9 +101,10 @@ export function semiImplicitEuler(world: PhysicsWorld, h: number): void {
   const n = ents.length;
   const dense = n > 0 && n === world.entityIndex.maxId;
   P[SIE.SAVE] = world.interpolation ? 1 : 0;
+  P[SIE.FORCED] = 0;
   // Bare particles have no force or mass to pass (a world of them may never allocate those stores).
   A.length = SIE.FX;
-  check = runParallel(world, INTEGRATE, is2D ? sieFree2 : sieFree3, A, P, n, dense ? null : ents);
+  check = runParallel(world, INTEGRATE, is2D ? sie2 : sie3, A, P, n, dense ? null : ents);
   if (check - check !== 0) reportNonFinite(world, ents, 'integrate');
 
   advanceKinematic(world, h);
@@ -392,103 +396,14 @@ export function advanceKinematic(world: PhysicsWorld, h: number): void {
 }
 
 /**
- * Semi-implicit Euler for bodies with a force accumulator, 2D (see integrators/semi-implicit-euler.ts).
- * A and P: the SIE slots (integrators/slots/semi-implicit-euler.ts). Returns the finiteness check sum.
+ * Semi-implicit Euler, 2D (see integrators/semi-implicit-euler.ts): with P[SIE.FORCED] = 1 the bodies
+ * with a force accumulator (a = F / m + g; ids required), else bare particles (a = g; ids null:
+ * entities lo + 1 .. hi). A and P: the SIE slots (integrators/slots/semi-implicit-euler.ts). Returns
+ * the finiteness check sum. The bare particles' dense cases have loops of their own, without the
+ * per-particle id choice and save branch that sie3's one loop takes: a world of bare 2D particles
+ * spends its step here, and the single loop is slower on it.
  */
-export function sieForced2(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
-  const px = A[SIE.PX] as Float64Array,
-    py = A[SIE.PY] as Float64Array,
-    vx = A[SIE.VX] as Float64Array,
-    vy = A[SIE.VY] as Float64Array;
-  const ox = A[SIE.OX] as Float64Array,
-    oy = A[SIE.OY] as Float64Array,
-    fx = A[SIE.FX] as Float64Array,
-    fy = A[SIE.FY] as Float64Array;
-  const im = A[SIE.INV_MASS] as Float64Array;
-  const h = P[SIE.H]!,
-    gxh = P[SIE.GX_H]!,
-    gyh = P[SIE.GY_H]!,
-    hx = P[SIE.HALF_GX_H]!,
-    hy = P[SIE.HALF_GY_H]!;
-  const list = ids as Int32Array;
-  let check = 0;
-  for (let i = lo; i < hi; i++) {
-    const e = list[i]!;
-    const w = im[e]! * h;
-    const nvx = vx[e]! + fx[e]! * w + gxh;
-    const nvy = vy[e]! + fy[e]! * w + gyh;
-    const x = px[e]!,
-      y = py[e]!;
-    ox[e] = x;
-    oy[e] = y;
-    vx[e] = nvx;
-    vy[e] = nvy;
-    const k = fx[e] === 0 && fy[e] === 0 ? 1 : 0;
-    px[e] = x + (nvx - k * hx) * h;
-    py[e] = y + (nvy - k * hy) * h;
-    check += nvx + nvy + px[e]! * 0 + py[e]! * 0;
-  }
-  return check;
-}
-
-/**
- * Semi-implicit Euler for bodies with a force accumulator, 3D.
- * A and P: the SIE slots (integrators/slots/semi-implicit-euler.ts).
- */
-export function sieForced3(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
-  const px = A[SIE.PX] as Float64Array,
-    py = A[SIE.PY] as Float64Array,
-    pz = A[SIE.PZ] as Float64Array;
-  const vx = A[SIE.VX] as Float64Array,
-    vy = A[SIE.VY] as Float64Array,
-    vz = A[SIE.VZ] as Float64Array;
-  const ox = A[SIE.OX] as Float64Array,
-    oy = A[SIE.OY] as Float64Array,
-    oz = A[SIE.OZ] as Float64Array;
-  const fx = A[SIE.FX] as Float64Array,
-    fy = A[SIE.FY] as Float64Array,
-    fz = A[SIE.FZ] as Float64Array;
-  const im = A[SIE.INV_MASS] as Float64Array;
-  const h = P[SIE.H]!,
-    gxh = P[SIE.GX_H]!,
-    gyh = P[SIE.GY_H]!,
-    gzh = P[SIE.GZ_H]!,
-    hx = P[SIE.HALF_GX_H]!,
-    hy = P[SIE.HALF_GY_H]!,
-    hz = P[SIE.HALF_GZ_H]!;
-  const list = ids as Int32Array;
-  let check = 0;
-  for (let i = lo; i < hi; i++) {
-    const e = list[i]!;
-    const w = im[e]! * h;
-    const nvx = vx[e]! + fx[e]! * w + gxh;
-    const nvy = vy[e]! + fy[e]! * w + gyh;
-    const nvz = vz[e]! + fz[e]! * w + gzh;
-    const x = px[e]!,
-      y = py[e]!,
-      z = pz[e]!;
-    ox[e] = x;
-    oy[e] = y;
-    oz[e] = z;
-    vx[e] = nvx;
-    vy[e] = nvy;
-    vz[e] = nvz;
-    const k = fx[e] === 0 && fy[e] === 0 && fz[e] === 0 ? 1 : 0;
-    px[e] = x + (nvx - k * hx) * h;
-    py[e] = y + (nvy - k * hy) * h;
-    pz[e] = z + (nvz - k * hz) * h;
-    check += nvx + nvy + nvz + px[e]! * 0 + py[e]! * 0 + pz[e]! * 0;
-  }
-  return check;
-}
-
-/**
- * Semi-implicit Euler for bare particles (a = g), 2D. A and P: the SIE slots
- * (integrators/slots/semi-implicit-euler.ts). ids null: entities lo + 1 .. hi. The dense cases
- * have loops of their own, without the per-particle id choice and save branch that sieFree3's one
- * loop takes: a world of bare 2D particles spends its step here, and the single loop is slower on it.
- */
-export function sieFree2(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
+export function sie2(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
   const px = A[SIE.PX] as Float64Array,
     py = A[SIE.PY] as Float64Array,
     vx = A[SIE.VX] as Float64Array,
@@ -502,7 +417,28 @@ export function sieFree2(A: KernelArray[], P: Float64Array, ids: Int32Array | nu
     hy = P[SIE.HALF_GY_H]!,
     save = P[SIE.SAVE] === 1;
   let check = 0;
-  if (ids === null && save) {
+  if (P[SIE.FORCED] === 1) {
+    const fx = A[SIE.FX] as Float64Array,
+      fy = A[SIE.FY] as Float64Array,
+      im = A[SIE.INV_MASS] as Float64Array;
+    const list = ids as Int32Array;
+    for (let i = lo; i < hi; i++) {
+      const e = list[i]!;
+      const w = im[e]! * h;
+      const nvx = vx[e]! + fx[e]! * w + gxh;
+      const nvy = vy[e]! + fy[e]! * w + gyh;
+      const x = px[e]!,
+        y = py[e]!;
+      ox[e] = x;
+      oy[e] = y;
+      vx[e] = nvx;
+      vy[e] = nvy;
+      const k = fx[e] === 0 && fy[e] === 0 ? 1 : 0;
+      px[e] = x + (nvx - k * hx) * h;
+      py[e] = y + (nvy - k * hy) * h;
+      check += nvx + nvy + px[e]! * 0 + py[e]! * 0;
+    }
+  } else if (ids === null && save) {
     for (let e = lo + 1; e <= hi; e++) {
       const nvx = vx[e]! + gxh,
         nvy = vy[e]! + gyh;
@@ -548,10 +484,10 @@ export function sieFree2(A: KernelArray[], P: Float64Array, ids: Int32Array | nu
 }
 
 /**
- * Semi-implicit Euler for bare particles, 3D. A and P: the SIE slots
- * (integrators/slots/semi-implicit-euler.ts). ids null: entities lo + 1 .. hi.
+ * Semi-implicit Euler, 3D: sie2's two cases (P[SIE.FORCED]) in three dimensions. A and P: the SIE
+ * slots (integrators/slots/semi-implicit-euler.ts). Returns the finiteness check sum.
  */
-export function sieFree3(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
+export function sie3(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
   const px = A[SIE.PX] as Float64Array,
     py = A[SIE.PY] as Float64Array,
     pz = A[SIE.PZ] as Float64Array;
@@ -570,26 +506,55 @@ export function sieFree3(A: KernelArray[], P: Float64Array, ids: Int32Array | nu
     hz = P[SIE.HALF_GZ_H]!,
     save = P[SIE.SAVE] === 1;
   let check = 0;
-  for (let i = lo; i < hi; i++) {
-    const e = ids === null ? i + 1 : ids[i]!;
-    const nvx = vx[e]! + gxh,
-      nvy = vy[e]! + gyh,
-      nvz = vz[e]! + gzh;
-    const x = px[e]!,
-      y = py[e]!,
-      z = pz[e]!;
-    if (save) {
+  if (P[SIE.FORCED] === 1) {
+    const fx = A[SIE.FX] as Float64Array,
+      fy = A[SIE.FY] as Float64Array,
+      fz = A[SIE.FZ] as Float64Array,
+      im = A[SIE.INV_MASS] as Float64Array;
+    const list = ids as Int32Array;
+    for (let i = lo; i < hi; i++) {
+      const e = list[i]!;
+      const w = im[e]! * h;
+      const nvx = vx[e]! + fx[e]! * w + gxh;
+      const nvy = vy[e]! + fy[e]! * w + gyh;
+      const nvz = vz[e]! + fz[e]! * w + gzh;
+      const x = px[e]!,
+        y = py[e]!,
+        z = pz[e]!;
       ox[e] = x;
       oy[e] = y;
       oz[e] = z;
+      vx[e] = nvx;
+      vy[e] = nvy;
+      vz[e] = nvz;
+      const k = fx[e] === 0 && fy[e] === 0 && fz[e] === 0 ? 1 : 0;
+      px[e] = x + (nvx - k * hx) * h;
+      py[e] = y + (nvy - k * hy) * h;
+      pz[e] = z + (nvz - k * hz) * h;
+      check += nvx + nvy + nvz + px[e]! * 0 + py[e]! * 0 + pz[e]! * 0;
     }
-    vx[e] = nvx;
-    vy[e] = nvy;
-    vz[e] = nvz;
-    px[e] = x + (nvx - hx) * h;
-    py[e] = y + (nvy - hy) * h;
-    pz[e] = z + (nvz - hz) * h;
-    check += nvx + nvy + nvz + px[e]! * 0 + py[e]! * 0 + pz[e]! * 0;
+  } else {
+    for (let i = lo; i < hi; i++) {
+      const e = ids === null ? i + 1 : ids[i]!;
+      const nvx = vx[e]! + gxh,
+        nvy = vy[e]! + gyh,
+        nvz = vz[e]! + gzh;
+      const x = px[e]!,
+        y = py[e]!,
+        z = pz[e]!;
+      if (save) {
+        ox[e] = x;
+        oy[e] = y;
+        oz[e] = z;
+      }
+      vx[e] = nvx;
+      vy[e] = nvy;
+      vz[e] = nvz;
+      px[e] = x + (nvx - hx) * h;
+      py[e] = y + (nvy - hy) * h;
+      pz[e] = z + (nvz - hz) * h;
+      check += nvx + nvy + nvz + px[e]! * 0 + py[e]! * 0 + pz[e]! * 0;
+    }
   }
   return check;
 }

@@ -28,7 +28,7 @@ import { barnesHutWalk } from '../forces/barnes-hut/walk-kernel.js';
 import { centralForce } from '../forces/central.js';
 import { dragCalm } from '../forces/drag.js';
 import { attractors, gravityScale } from '../forces/gravity.js';
-import { sieForced2, sieForced3, sieFree2, sieFree3 } from '../integrators/semi-implicit-euler.js';
+import { sie2, sie3 } from '../integrators/semi-implicit-euler.js';
 import { solveColored2D } from '../solver/coloring-kernel.js';
 import { prepareContactRows } from '../solver/prepare-contacts-kernel.js';
 import { approachSpeeds, finishBodies, gatherFill, restitutionColored2D } from '../solver/stages-kernel.js';
@@ -60,10 +60,8 @@ export function testKernel(A: KernelArray[], P: Float64Array, ids: Int32Array | 
  * @category Threads
  */
 export const KERNELS: readonly Kernel[] = /* @__PURE__ */ Object.freeze([
-  sieForced2,
-  sieForced3,
-  sieFree2,
-  sieFree3,
+  sie2,
+  sie3,
   gravityScale,
   dragCalm,
   testKernel,

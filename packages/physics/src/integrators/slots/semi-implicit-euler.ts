@@ -1,6 +1,6 @@
 /**
- * The argument slots of the semi-implicit Euler kernels (sieForced2, sieForced3, sieFree2, sieFree3 in
- * integrators/semi-implicit-euler.ts), one layout for the four: where each array sits in a kernel's
+ * The argument slots of the semi-implicit Euler kernels (sie2 and sie3 in
+ * integrators/semi-implicit-euler.ts), one layout for the two: where each array sits in a kernel's
  * `A` and each number in its `P`, imported as `SIE` (`A[SIE.PX]`) by the kernels and by their caller.
  * A 2D kernel reads no z slot, a free-particle kernel no force or mass. A module of numeric constants
  * only, which every build folds into the code (threads/worker-source.ts).
@@ -50,3 +50,7 @@ export const HALF_GY_H = 5;
 export const HALF_GZ_H = 6;
 /** 1: keep PreviousPosition (free particles of a world that interpolates), 0: not. */
 export const SAVE = 7;
+/** 1: the bodies with a force accumulator (ids given), 0: bare particles (no force or mass slot). */
+export const FORCED = 8;
+/** Numbers in P. */
+export const PARAMS = 9;
