@@ -401,8 +401,7 @@ export function deepestRow(A: KernelArray[], P: Float64Array, lo: number, hi: nu
  * the pool at once (or by one thread alone), 2D or 3D (P[RESTITUTION.THREE_D]). First the rows' targets
  * and caps (restitutionTargets, blocks of 1,024 rows); then, if any row bounces, `restitutionIterations`
  * sequential-impulse passes (restitutionRows) colour by colour: the blocks of a colour share no movable
- * body (solver/coloring.ts: strips or graph colours; the overflow colour one block; in buffer order, the
- * plan is that one colour), so they may go to any thread. Threads claim blocks by flags, each from its own
+ * body (solver/coloring.ts: strips or graph colours; the overflow colour one block), so they may go to any thread. Threads claim blocks by flags, each from its own
  * share of a unit first, and start a unit (the first stage, or a colour of a pass) once every block of
  * the earlier units is done, as solveColored2D (spinning up to P[RESTITUTION.SPIN_US] microseconds, then blocking).
  * A and P: the RESTITUTION slots (solver/slots/restitution.ts). Returns 0 (-1 if another thread failed and

@@ -44,7 +44,15 @@ import * as PLAN from './slots/colored-plan.js';
 import * as FINISH from './slots/finish-bodies.js';
 import * as GATHER from './slots/gather-fill.js';
 import * as RESTITUTION from './slots/restitution.js';
-import { approachSpeeds, finishBodies, gatherFill, restitutionBlocks, restitutionColored } from './stages-kernel.js';
+import {
+  approachSpeeds,
+  finishBodies,
+  gatherFill,
+  restitutionBlocks,
+  restitutionColored,
+  restitutionRows,
+  restitutionTargets,
+} from './stages-kernel.js';
 import { warmStartTable } from './warm-start-kernel.js';
 
 /**
@@ -303,21 +311,16 @@ export function finishStage(world: PhysicsWorld, buf: ContactBuffer): void {
   cs.stats.maxOverlap = -deepest;
 }
 
-/** The one-colour plan of a restitution stage in buffer order (restitutionStage): its plan, bounds, rows 0 .. n - 1, counters and claim flags. Not world state. */
-const inOrder = {
-  plan: new Int32Array(PLAN.COLOR_BLOCKS + 2),
-  bounds: new Int32Array(2),
-  row: new Int32Array(0),
-  bar: new Int32Array(4),
-  claim: new Int32Array(0),
-};
+/** restitutionStage's scratch in buffer order: the rows that take part, in row order. Not world state. */
+let inOrder = new Int32Array(0);
 
 /**
- * The ball rows' restitution stage (solver/ball-rows.ts), one kernel either way (restitutionColored,
- * solver/stages-kernel.ts): in a 2D world whose substeps of this step ran by colours (solver/coloring.ts),
- * its passes go colour by colour on the world's threads (or inline on the calling thread without a pool,
- * or when the adaptive pool prefers it: the same results either way; see the file's header); otherwise
- * inline, in buffer order (one colour of one block).
+ * The ball rows' restitution stage (solver/ball-rows.ts), by the kernels restitutionTargets and
+ * restitutionRows (solver/stages-kernel.ts): in a 2D world whose substeps of this step ran by colours
+ * (solver/coloring.ts), restitutionColored runs its passes colour by colour on the world's threads (or
+ * inline on the calling thread without a pool, or when the adaptive pool prefers it: the same results
+ * either way; see the file's header); otherwise its passes run inline over the rows that take part, in
+ * buffer order.
  * @throws Error naming contactSolverSystem if a worker thread failed.
  * @category Collision
  */
@@ -327,26 +330,12 @@ export function restitutionStage(world: PhysicsWorld, buf: ContactBuffer): void 
     n = buf.count;
   const plan2D = coloredPlan(world);
   const colored = world.dimensions === 2 ? plan2D : null;
-  const order = colored ?? inOrder;
-  if (colored === null) {
-    if (inOrder.row.length < n) {
-      inOrder.row = new Int32Array(Math.max(n, 2 * inOrder.row.length));
-      for (let i = 0; i < inOrder.row.length; i++) inOrder.row[i] = i;
-    }
-    inOrder.plan[PLAN.COLORS] = 0;
-    inOrder.plan[PLAN.COLOR_BLOCKS] = 0;
-    inOrder.plan[PLAN.COLOR_BLOCKS + 1] = 1;
-    inOrder.bounds[1] = n;
-  } else if (pool !== null) shareContactBuffer(buf);
+  if (colored !== null && pool !== null) shareContactBuffer(buf);
   const st = cs.settings;
   const s = scratch(world),
     A = s.arrays,
     P = s.params;
-  const blocks = restitutionBlocks(order.plan, n, st.restitutionIterations);
-  if (order.claim.length < blocks) order.claim = grown(order.claim, Math.max(blocks, 2 * order.claim.length));
   A.length = 0;
-  A[RESTITUTION.PLAN] = order.plan;
-  A[RESTITUTION.COUNTERS] = order.bar;
   A[RESTITUTION.BODY_STATE] = cs.bodyState;
   A[RESTITUTION.IA] = buf.ia;
   A[RESTITUTION.IB] = buf.ib;
@@ -359,25 +348,38 @@ export function restitutionStage(world: PhysicsWorld, buf: ContactBuffer): void 
   A[RESTITUTION.MAX_NORMAL_IMPULSE] = buf.maxNormalImpulse;
   A[RESTITUTION.TOTAL_NORMAL_IMPULSE] = buf.totalNormalImpulse;
   A[RESTITUTION.IMPULSE] = buf.impulse;
-  A[RESTITUTION.BOUNDS] = order.bounds;
-  A[RESTITUTION.ROW] = order.row;
-  A[RESTITUTION.CLAIM] = order.claim;
   A[RESTITUTION.NZ] = buf.nz;
   P[RESTITUTION.ROWS] = n;
   P[RESTITUTION.THRESHOLD] = st.restitutionThreshold;
   P[RESTITUTION.ELASTIC_THRESHOLD] = st.elasticRestitutionThreshold;
   P[RESTITUTION.ITERATIONS] = st.restitutionIterations;
+  P[RESTITUTION.THREE_D] = world.dimensions === 2 ? 0 : 1;
+  if (colored === null) {
+    if (restitutionTargets(A, P, 0, n, KERNEL_HELPERS) === 0) return;
+    if (inOrder.length < n) inOrder = new Int32Array(Math.max(n, 2 * inOrder.length));
+    const RV = buf.relativeVelocity;
+    let taking = 0;
+    for (let i = 0; i < n; i++) if (RV[i]! >= 0) inOrder[taking++] = i;
+    A[RESTITUTION.ROW] = inOrder;
+    for (let it = 0; it < st.restitutionIterations; it++) restitutionRows(A, P, 0, taking);
+    return;
+  }
+  const blocks = restitutionBlocks(colored.plan, n, st.restitutionIterations);
+  if (colored.claim.length < blocks) colored.claim = grown(colored.claim, Math.max(blocks, 2 * colored.claim.length));
+  A[RESTITUTION.PLAN] = colored.plan;
+  A[RESTITUTION.COUNTERS] = colored.bar;
+  A[RESTITUTION.BOUNDS] = colored.bounds;
+  A[RESTITUTION.ROW] = colored.row;
+  A[RESTITUTION.CLAIM] = colored.claim;
   P[RESTITUTION.MAY_WAIT] = callerMayWait() ? 1 : 0;
   P[RESTITUTION.SPIN_US] = SPIN_MICROSECONDS;
-  P[RESTITUTION.THREE_D] = world.dimensions === 2 ? 0 : 1;
-  const bar = order.bar,
-    plan = order.plan;
+  const bar = colored.bar,
+    plan = colored.plan;
   const site = 'contactSolverSystem#restitution';
-  const parallel =
-    colored !== null && pool !== null && pool.threads <= 16 && pool.usable() && (!pool.adaptive || pool.chooser.choose(site));
+  const parallel = pool !== null && pool.threads <= 16 && pool.usable() && (!pool.adaptive || pool.chooser.choose(site));
   const t0 = nowMs();
   bar.fill(0);
-  order.claim.fill(0, 0, blocks);
+  colored.claim.fill(0, 0, blocks);
   if (parallel) {
     plan[PLAN.THREADS] = pool.threads;
     pool.run('contactSolverSystem', restitutionColored, A, P, pool.threads, null);
@@ -385,7 +387,6 @@ export function restitutionStage(world: PhysicsWorld, buf: ContactBuffer): void 
     plan[PLAN.THREADS] = 1;
     restitutionColored(A, P, null, 0, 1, 0, KERNEL_HELPERS);
   }
-  if (colored === null) return;
   if (pool?.adaptive === true) pool.chooser.record(site, parallel, nowMs() - t0, n);
   stageThreading.runs++;
   stageThreading.bouncing += bar[3]!;

@@ -7,7 +7,7 @@
  */
 
 // A: the arrays.
-/** The coloured solve's plan, or a one-colour plan in buffer order (Int32, the PLAN slots of solver/slots/colored-plan.ts). */
+/** The coloured solve's plan (Int32, the PLAN slots of solver/slots/colored-plan.ts). */
 export const PLAN = 0;
 /** Counters (Int32, 0 on entry: 0 unused, 1 blocks done, 2 abort, 3 bouncing rows). */
 export const COUNTERS = 1;
