@@ -15,18 +15,15 @@
  */
 
 import { type ContactBuffer, storeWarmStart } from '../collision/contacts.js';
-import type { KernelArray } from '../threads/kernel-types.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { measureApproach, prepareContacts } from './ball-prepare.js';
 import { solve2D, solve3D, warmStart2D, warmStart3D } from './ball-sweeps.js';
-import { BS2_INV_MASS, BS2_STRIDE, BS2_VX, BS2_VY, BS3_INV_MASS, BS3_STRIDE, BS3_VZ } from './body-state-layout.js';
+import { BS2_STRIDE, BS3_STRIDE } from './body-state-layout.js';
 import { solveColoredSubsteps, startStripPlan, useColoredSolve } from './coloring.js';
 import { ballContactHertz, ballContactPushSpeed, ballStickSpeed, contactLength } from './contact-scale.js';
 import { applyImpacts, releaseImpactedRows } from './impacts.js';
-import * as RESTITUTION from './slots/restitution.js';
 import { withRoom } from './solver-bodies.js';
-import { restitutionTargets } from './stages-kernel.js';
-import { restitutionOnThreads, storeWarmStartOnThreads } from './stages-threads.js';
+import { restitutionStage, storeWarmStartOnThreads } from './stages-threads.js';
 import { downward3Into, downwardInto, markFirstRelaxRows, relaxOrderInto } from './support.js';
 
 /**
@@ -170,14 +167,19 @@ export function endBallSubstep(buf: ContactBuffer): void {
 }
 
 /**
- * Stage 6 for the ball rows: the step's impulses are added up and the rows bounce (applyRestitution).
+ * Stage 6 for the ball rows: the step's impulses are added up and the rows bounce, by the one
+ * definition of solver/restitution.ts (solver/stages-threads.ts restitutionStage): a row that carried an
+ * impulse takes part; one that bounces must leave with v_n >= -e v_impact (v_impact: the start-of-step
+ * speed plus gravity across the speculative gap), the others must not approach; `restitutionIterations`
+ * passes solve these together (coupled bounces in a dense pile share the rebound), each rebound within
+ * Poisson's cap.
  * @category Collision
  */
 export function ballRestitution(world: PhysicsWorld, buf: ContactBuffer): void {
   const IMP = buf.impulse,
     TOT = buf.totalNormalImpulse;
   for (let i = 0, n = buf.count; i < n; i++) IMP[i] = IMP[i]! + TOT[i]!;
-  applyRestitution(world, buf);
+  restitutionStage(world, buf);
 }
 
 /**
@@ -224,105 +226,4 @@ function makeSoftInto(out: Float64Array, at: number, hertz: number, zeta: number
   out[at] = omega / a1;
   out[at + 1] = a2 * a3;
   out[at + 2] = a3;
-}
-
-/** Scratch of applyRestitution: the indices of the rows that take part, in row order. Not world state. */
-let restitutionRows = new Int32Array(256);
-
-/** Scratch of applyRestitution: restitutionTargets' arrays (the RESTITUTION slots it reads) and numbers. Not world state. */
-const targetArgs: KernelArray[] = [];
-const targetParams = new Float64Array(RESTITUTION.THREE_D + 1);
-
-/**
- * Restitution, after Box2D v3 b2ApplyRestitution but solved as a small LCP rather than one pass.
- * A contact that approached faster than the threshold and carried an impulse this step must leave
- * with normal speed v_n >= -e v_impact, where v_impact is the approach speed at impact (start-of-step
- * speed plus gravity across the speculative gap); every other contact that carried an impulse must
- * not approach (v_n >= 0). `restitutionIterations` sequential-impulse passes solve these together with
- * a non-negative accumulated impulse, so coupled bounces in a dense pile share the rebound instead of
- * each contact adding its own on top of its neighbours'. A contact's rebound impulse is capped at e
- * times its compression impulse (delivered this step, plus what still stops a residual approach):
- * Poisson's hypothesis (Stronge, Impact Mechanics, 2000, ch. 2), which keeps a perfectly elastic
- * pile from creating energy.
- */
-function applyRestitution(world: PhysicsWorld, buf: ContactBuffer): void {
-  if (restitutionOnThreads(world, buf)) return; // after a coloured solve: by colours (solver/stages-threads.ts)
-  const cs = world.collision;
-  const iterations = cs.settings.restitutionIterations;
-  const n = buf.count,
-    sb = cs.bodyState;
-  const S = world.dimensions === 2 ? BS2_STRIDE : BS3_STRIDE,
-    is2D = S === BS2_STRIDE,
-    im = is2D ? BS2_INV_MASS : BS3_INV_MASS;
-  const IA = buf.ia,
-    IB = buf.ib,
-    NX = buf.nx,
-    NY = buf.ny,
-    NZ = buf.nz;
-  const NM = buf.normalMass,
-    RV = buf.relativeVelocity;
-  const MAXN = buf.maxNormalImpulse,
-    TOT = buf.totalNormalImpulse,
-    IMP = buf.impulse;
-  // The rows' targets and caps (solver/stages-kernel.ts restitutionTargets, the coloured stage's first
-  // unit too): relativeVelocity becomes the target speed (-1: the row takes no part), maxNormalImpulse
-  // the rebound's accumulated impulse and totalNormalImpulse its cap (all spent by now). A contact that
-  // closed its gap only in the last substep may still be approaching: the impulse to stop that is part
-  // of its compression, so it counts toward the cap too.
-  const TA = targetArgs;
-  TA.length = 0;
-  TA[RESTITUTION.BODY_STATE] = sb;
-  TA[RESTITUTION.IA] = IA;
-  TA[RESTITUTION.IB] = IB;
-  TA[RESTITUTION.NX] = NX;
-  TA[RESTITUTION.NY] = NY;
-  TA[RESTITUTION.NZ] = NZ;
-  TA[RESTITUTION.NORMAL_MASS] = NM;
-  TA[RESTITUTION.RESTITUTION] = buf.restitution;
-  TA[RESTITUTION.RELATIVE_VELOCITY] = RV;
-  TA[RESTITUTION.IMPACT_VELOCITY] = buf.impactVelocity;
-  TA[RESTITUTION.MAX_NORMAL_IMPULSE] = MAXN;
-  TA[RESTITUTION.TOTAL_NORMAL_IMPULSE] = TOT;
-  const TP = targetParams;
-  TP[RESTITUTION.THRESHOLD] = cs.settings.restitutionThreshold;
-  TP[RESTITUTION.ELASTIC_THRESHOLD] = cs.settings.elasticRestitutionThreshold;
-  TP[RESTITUTION.THREE_D] = is2D ? 0 : 1;
-  const bouncing = restitutionTargets(TA, TP, 0, n);
-  if (bouncing === 0) return;
-  // The rows that take part (a target >= 0), in row order: the passes below visit only these.
-  if (restitutionRows.length < n) restitutionRows = new Int32Array(Math.max(n, 2 * restitutionRows.length));
-  const rows = restitutionRows;
-  let taking = 0;
-  for (let i = 0; i < n; i++) if (RV[i]! >= 0) rows[taking++] = i;
-  for (let it = 0; it < iterations; it++) {
-    for (let k = 0; k < taking; k++) {
-      const i = rows[k]!;
-      const target = RV[i]!;
-      const a = IA[i]! * S,
-        b = IB[i]! * S;
-      const nx = NX[i]!,
-        ny = NY[i]!,
-        nz = NZ[i]!;
-      let vn = (sb[b + BS2_VX]! - sb[a + BS2_VX]!) * nx + (sb[b + BS2_VY]! - sb[a + BS2_VY]!) * ny;
-      if (!is2D) vn += (sb[b + BS3_VZ]! - sb[a + BS3_VZ]!) * nz;
-      const old = MAXN[i]!;
-      let acc = old - NM[i]! * (vn - target);
-      if (acc < 0) acc = 0;
-      if (target > 0 && acc > TOT[i]!) acc = TOT[i]!;
-      const dl = acc - old;
-      if (dl === 0) continue;
-      MAXN[i] = acc;
-      IMP[i] = IMP[i]! + dl;
-      const ka = sb[a + im]! * dl,
-        kb = sb[b + im]! * dl;
-      sb[a + BS2_VX] = sb[a + BS2_VX]! - ka * nx;
-      sb[a + BS2_VY] = sb[a + BS2_VY]! - ka * ny;
-      sb[b + BS2_VX] = sb[b + BS2_VX]! + kb * nx;
-      sb[b + BS2_VY] = sb[b + BS2_VY]! + kb * ny;
-      if (!is2D) {
-        sb[a + BS3_VZ] = sb[a + BS3_VZ]! - ka * nz;
-        sb[b + BS3_VZ] = sb[b + BS3_VZ]! + kb * nz;
-      }
-    }
-  }
 }

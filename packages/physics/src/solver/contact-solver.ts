@@ -63,7 +63,8 @@ import { finishStage, gatherFillStage } from './stages-threads.js';
  *    energy; in 2D a frictionless row with one ball resting on another may hold the lower one, so one
  *    sweep clears a tall column: solver/support.ts). A row that applies an impulse to a body marks it (the `pushed` slot of its packed row);
  * 6. `restitution`*: contacts the impact stage did not resolve (still approaching after its
- *    passes, e.g. deep in a dense pile) bounce as a small LCP;
+ *    passes, e.g. deep in a dense pile) bounce, every family by the one definition of
+ *    solver/restitution.ts (threshold, target -e v_impact, Poisson's cap, `restitutionIterations` passes);
  * 7. `finishBodies`: velocities and positions (with the impact corrections) back to the components;
  *    a body no row pushed during the substeps was in free flight: its position gets -g h h_s / 2, which
  *    makes the substeps' sum of v_k h_s the exact parabola v0 h + g h^2 / 2 (as the integrate stage's);

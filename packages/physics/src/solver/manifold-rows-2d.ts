@@ -49,6 +49,7 @@ import {
   MR_ROLLING_MASS,
   MR_STRIDE,
 } from './manifold-layout-2d.js';
+import { restitutionCap, restitutionImpulse, restitutionTarget } from './restitution.js';
 
 /**
  * The shape contacts' rows of the contact solver (solver/contact-solver.ts runs these calls next to the ball
@@ -76,8 +77,9 @@ import {
  *   substeps of 1/60 s that the contact then pushes back: on a slope, a creep of mm a second;
  * - rolling resistance (circles and capsules): a torque row on w_B - w_A bounded by the coefficient
  *   times the rolling radius times the manifold's normal impulse (Box2D v3.1's rolling resistance);
- * - restitution after the substeps (Box2D v3 b2ApplyRestitution): a point that approached faster than
- *   the threshold and carried an impulse leaves with v_n >= -e v_n0;
+ * - restitution after the substeps, by the one definition every row family shares (solver/restitution.ts,
+ *   after Box2D v3 b2ApplyRestitution): a point that approached faster than the threshold and carried an
+ *   impulse leaves with v_n >= -e v_n0, its rebound within Poisson's cap;
  * - finally, which pairs touch (a point carried a normal impulse, or overlapped) gives the begin and
  *   end touch events, and the rows become the warm-start cache of the next step.
  */
@@ -482,103 +484,122 @@ export function accumulateManifoldImpulses(cs: CollisionState): void {
   }
 }
 
+/** applyManifoldRestitution's scratch: the cap of each point's accumulated impulse (two a manifold), and the manifolds with a bouncing point, in order. Not world state. */
+let restitutionCaps = new Float64Array(0);
+let restitutionList = new Int32Array(0);
+
 /**
- * Restitution (Box2D v3 b2ApplyRestitution): every point that approached faster than the threshold at
- * the start of the step and carried an impulse gets the normal impulse that makes it leave with
- * v_n = -e v_n0 (the accumulated normal impulse stays >= 0). The two points of a manifold with a valid
- * block (see `prepareManifolds`) that both qualify are solved together, as the 2 x 2 complementarity
- * problem of Box2D 2.x's block solver, so a face-on hit rebounds without spin.
+ * The 2D manifolds' restitution stage, by the one definition of solver/restitution.ts: a point that
+ * carried an impulse and approached faster than its threshold at the start of the step bounces; its
+ * accumulated normal impulse is moved toward the target v_n = -e v_n0 by `restitutionIterations`
+ * sequential-impulse passes, kept >= 0 and at most its start plus Poisson's cap. The first pass visits
+ * every manifold and lists those with a bouncing point, the others only those. The two points of a
+ * manifold with a valid block (see `prepareManifolds`) that both bounce are solved together, as the
+ * 2 x 2 complementarity problem of Box2D 2.x's block solver, so a face-on hit rebounds without spin;
+ * if that solution passes a cap, the points go one after the other.
  * @category Collision
  */
 export function applyManifoldRestitution(world: PhysicsWorld): void {
   const cs = world.collision,
     R = cs.shapes.solverRows,
     sb = cs.bodyState;
-  const threshold = cs.settings.restitutionThreshold;
-  for (let i = 0, n = cs.shapes.manifolds.count; i < n; i++) {
-    const r = i * MR_STRIDE;
-    const e = R[r + MR_RESTITUTION]!;
-    if (e === 0) continue;
-    const a = (R[r + MR_BODY_A]! & MR_BODY_MASK) * BS2_STRIDE,
-      b = (R[r + MR_BODY_B]! & MR_BODY_MASK) * BS2_STRIDE;
-    const mA = sb[a + BS2_INV_MASS]!,
-      iA = sb[a + BS2_INV_INERTIA]!,
-      mB = sb[b + BS2_INV_MASS]!,
-      iB = sb[b + BS2_INV_INERTIA]!;
-    const nx = R[r + MR_NX]!,
-      ny = R[r + MR_NY]!;
-    let vax = sb[a + BS2_VX]!,
-      vay = sb[a + BS2_VY]!,
-      wa = sb[a + BS2_W]!,
-      vbx = sb[b + BS2_VX]!,
-      vby = sb[b + BS2_VY]!,
-      wb = sb[b + BS2_W]!;
-    const m = R[r + MR_POINT_COUNT]!;
-    const o1 = r + MR_POINT0,
-      o2 = o1 + MP_STRIDE;
-    if (m === 2 && R[r + MR_BLOCK_VALID] === 1) {
-      // Both points at once (the linear complementarity problem of the block solve, with the target
-      // v_n,i = -e v_n0,i), so symmetric points get symmetric impulses: point after point, the first
-      // takes the whole rebound, turns the body and leaves the second less to do.
+  const threshold = cs.settings.restitutionThreshold,
+    elasticThreshold = cs.settings.elasticRestitutionThreshold;
+  const n = cs.shapes.manifolds.count;
+  if (restitutionList.length < n) {
+    restitutionList = new Int32Array(2 * n);
+    restitutionCaps = new Float64Array(4 * n);
+  }
+  const list = restitutionList,
+    caps = restitutionCaps;
+  let listed = 0;
+  for (let pass = 0, passes = cs.settings.restitutionIterations; pass < passes; pass++) {
+    const all = pass === 0;
+    for (let k = 0, count = all ? n : listed; k < count; k++) {
+      const i = all ? k : list[k]!;
+      const r = i * MR_STRIDE;
+      const e = R[r + MR_RESTITUTION]!;
+      if (e === 0) continue;
+      const m = R[r + MR_POINT_COUNT]!;
+      const o1 = r + MR_POINT0,
+        o2 = o1 + MP_STRIDE;
       const v1 = R[o1 + MP_RELATIVE_VELOCITY]!,
         v2 = R[o2 + MP_RELATIVE_VELOCITY]!;
-      const on1 = v1 <= -threshold && R[o1 + MP_MAX_NORMAL_IMPULSE]! > 0,
-        on2 = v2 <= -threshold && R[o2 + MP_MAX_NORMAL_IMPULSE]! > 0;
-      if (on1 && on2) {
-        const n1a = R[o1 + MP_RNA]!,
-          n1b = R[o1 + MP_RNB]!,
-          n2a = R[o2 + MP_RNA]!,
-          n2b = R[o2 + MP_RNB]!;
-        const dvn = (vbx - vax) * nx + (vby - vay) * ny;
-        const vn1 = dvn + wb * n1b - wa * n1a;
-        const vn2 = dvn + wb * n2b - wa * n2a;
-        const l1 = R[o1 + MP_NORMAL_IMPULSE]!,
-          l2 = R[o2 + MP_NORMAL_IMPULSE]!;
-        const K11 = R[r + MR_K11]!,
-          K22 = R[r + MR_K22]!,
-          K12 = R[r + MR_K12]!;
-        // K x + c = w >= 0, x >= 0, x . w = 0, with w_i = v_n,i + e v_n0,i after the impulses x.
-        const c1 = vn1 + e * v1 - (K11 * l1 + K12 * l2),
-          c2 = vn2 + e * v2 - (K12 * l1 + K22 * l2);
-        if (solveBlock(R, r, c1, c2)) {
-          const d1 = R[o1 + MP_NORMAL_IMPULSE]! - l1,
-            d2 = R[o2 + MP_NORMAL_IMPULSE]! - l2;
-          R[o1 + MP_TOTAL_NORMAL_IMPULSE] = R[o1 + MP_TOTAL_NORMAL_IMPULSE]! + d1;
-          R[o2 + MP_TOTAL_NORMAL_IMPULSE] = R[o2 + MP_TOTAL_NORMAL_IMPULSE]! + d2;
-          const d = d1 + d2;
-          vax -= mA * d * nx;
-          vay -= mA * d * ny;
-          wa -= iA * (d1 * n1a + d2 * n2a);
-          vbx += mB * d * nx;
-          vby += mB * d * ny;
-          wb += iB * (d1 * n1b + d2 * n2b);
-          storeVelocities(sb, a, b, vax, vay, wa, vbx, vby, wb);
-          continue;
+      const t1 = m > 0 && R[o1 + MP_MAX_NORMAL_IMPULSE]! > 0 ? restitutionTarget(e, v1, v1, threshold, elasticThreshold) : -1,
+        t2 = m > 1 && R[o2 + MP_MAX_NORMAL_IMPULSE]! > 0 ? restitutionTarget(e, v2, v2, threshold, elasticThreshold) : -1;
+      if (t1 < 0 && t2 < 0) continue;
+      const a = (R[r + MR_BODY_A]! & MR_BODY_MASK) * BS2_STRIDE,
+        b = (R[r + MR_BODY_B]! & MR_BODY_MASK) * BS2_STRIDE;
+      const mA = sb[a + BS2_INV_MASS]!,
+        iA = sb[a + BS2_INV_INERTIA]!,
+        mB = sb[b + BS2_INV_MASS]!,
+        iB = sb[b + BS2_INV_INERTIA]!;
+      const nx = R[r + MR_NX]!,
+        ny = R[r + MR_NY]!;
+      let vax = sb[a + BS2_VX]!,
+        vay = sb[a + BS2_VY]!,
+        wa = sb[a + BS2_W]!,
+        vbx = sb[b + BS2_VX]!,
+        vby = sb[b + BS2_VY]!,
+        wb = sb[b + BS2_W]!;
+      const dvn = (vbx - vax) * nx + (vby - vay) * ny;
+      if (all) {
+        // Each point's cap: its impulse now plus Poisson's rebound; its compression is what it delivered
+        // over the substeps plus what stops its approach now (in a block, with the other: -K^-1 v_n).
+        list[listed++] = i;
+        const vn1 = dvn + wb * R[o1 + MP_RNB]! - wa * R[o1 + MP_RNA]!,
+          vn2 = m > 1 ? dvn + wb * R[o2 + MP_RNB]! - wa * R[o2 + MP_RNA]! : 0;
+        let s1 = -R[o1 + MP_NORMAL_MASS]! * vn1,
+          s2 = -R[o2 + MP_NORMAL_MASS]! * vn2;
+        if (m > 1 && R[r + MR_BLOCK_VALID] === 1) {
+          s1 = -(R[r + MR_B11]! * vn1 + R[r + MR_B12]! * vn2);
+          s2 = -(R[r + MR_B12]! * vn1 + R[r + MR_B22]! * vn2);
+        }
+        caps[2 * i] = R[o1 + MP_NORMAL_IMPULSE]! + restitutionCap(e, R[o1 + MP_TOTAL_NORMAL_IMPULSE]!, s1 > 0 ? s1 : 0);
+        caps[2 * i + 1] = R[o2 + MP_NORMAL_IMPULSE]! + restitutionCap(e, R[o2 + MP_TOTAL_NORMAL_IMPULSE]!, s2 > 0 ? s2 : 0);
+      }
+      const l1 = R[o1 + MP_NORMAL_IMPULSE]!,
+        l2 = R[o2 + MP_NORMAL_IMPULSE]!;
+      let block = false;
+      if (t1 >= 0 && t2 >= 0 && R[r + MR_BLOCK_VALID] === 1) {
+        // Both points at once: K x + c = w >= 0, x >= 0, x . w = 0, with w_i = v_n,i - t_i after the
+        // impulses x (the linear complementarity problem of the block solve), within the caps.
+        const K12 = R[r + MR_K12]!;
+        const c1 = dvn + wb * R[o1 + MP_RNB]! - wa * R[o1 + MP_RNA]! - t1 - (R[r + MR_K11]! * l1 + K12 * l2),
+          c2 = dvn + wb * R[o2 + MP_RNB]! - wa * R[o2 + MP_RNA]! - t2 - (K12 * l1 + R[r + MR_K22]! * l2);
+        block = solveBlock(R, r, c1, c2) && R[o1 + MP_NORMAL_IMPULSE]! <= caps[2 * i]! && R[o2 + MP_NORMAL_IMPULSE]! <= caps[2 * i + 1]!;
+        if (!block) {
+          R[o1 + MP_NORMAL_IMPULSE] = l1;
+          R[o2 + MP_NORMAL_IMPULSE] = l2;
         }
       }
+      // Point after point (the block's impulses, or each point's own step toward its target).
+      for (let p = 0; p < m; p++) {
+        const o = o1 + p * MP_STRIDE;
+        const target = p === 0 ? t1 : t2;
+        if (target < 0) continue;
+        const na = R[o + MP_RNA]!,
+          nb = R[o + MP_RNB]!;
+        const old = p === 0 ? l1 : l2;
+        let next = R[o + MP_NORMAL_IMPULSE]!;
+        if (!block) {
+          const vn = (vbx - vax) * nx + (vby - vay) * ny + wb * nb - wa * na;
+          next = restitutionImpulse(old, R[o + MP_NORMAL_MASS]!, vn, target, caps[2 * i + p]!);
+          R[o + MP_NORMAL_IMPULSE] = next;
+        }
+        const dl = next - old;
+        R[o + MP_TOTAL_NORMAL_IMPULSE] = R[o + MP_TOTAL_NORMAL_IMPULSE]! + dl;
+        const Px = dl * nx,
+          Py = dl * ny;
+        vax -= mA * Px;
+        vay -= mA * Py;
+        wa -= iA * dl * na;
+        vbx += mB * Px;
+        vby += mB * Py;
+        wb += iB * dl * nb;
+      }
+      storeVelocities(sb, a, b, vax, vay, wa, vbx, vby, wb);
     }
-    for (let p = 0; p < m; p++) {
-      const o = o1 + p * MP_STRIDE;
-      const v0 = R[o + MP_RELATIVE_VELOCITY]!;
-      if (v0 > -threshold || R[o + MP_MAX_NORMAL_IMPULSE]! === 0) continue;
-      const na = R[o + MP_RNA]!,
-        nb = R[o + MP_RNB]!;
-      const vn = (vbx - vax) * nx + (vby - vay) * ny + wb * nb - wa * na;
-      const old = R[o + MP_NORMAL_IMPULSE]!;
-      let next = old - R[o + MP_NORMAL_MASS]! * (vn + e * v0);
-      if (next < 0) next = 0;
-      const dl = next - old;
-      R[o + MP_NORMAL_IMPULSE] = next;
-      R[o + MP_TOTAL_NORMAL_IMPULSE] = R[o + MP_TOTAL_NORMAL_IMPULSE]! + dl;
-      const Px = dl * nx,
-        Py = dl * ny;
-      vax -= mA * Px;
-      vay -= mA * Py;
-      wa -= iA * dl * na;
-      vbx += mB * Px;
-      vby += mB * Py;
-      wb += iB * dl * nb;
-    }
-    storeVelocities(sb, a, b, vax, vay, wa, vbx, vby, wb);
+    if (listed === 0) break;
   }
 }

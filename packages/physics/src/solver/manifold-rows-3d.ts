@@ -35,8 +35,9 @@ import { joinSolverBodies } from './solver-bodies.js';
  *   substep to substep; a manifold whose normal rows are all rigid in a pass (speculative, or a relax
  *   pass) is swept until they agree (NORMAL_SWEEPS), so a flat hit does not spin the boxes;
  * - warm start from the previous step's point with the same feature id (collision/shapes-3d.ts);
- * - restitution after the substeps (Box2D v3 b2ApplyRestitution): a point that approached faster than
- *   the world's restitution threshold and carried an impulse leaves with v_n >= -e v_n0.
+ * - restitution after the substeps, by the one definition every row family shares (solver/restitution.ts,
+ *   after Box2D v3 b2ApplyRestitution): a point that approached faster than the threshold and carried an
+ *   impulse leaves with v_n >= -e v_n0.
  */
 
 /**

@@ -52,6 +52,7 @@ import {
   ROW_BZ,
 } from './manifold-layout-3d.js';
 import { rigid, soft } from './manifold-softness-3d.js';
+import { restitutionImpulse, restitutionTarget } from './restitution.js';
 
 /** The 3D manifold rows' substep stages (solver/manifold-rows-3d.ts): warm start, the solve (normal rows with their sweeps, the friction patch and twist), and restitution after the substeps. */
 
@@ -531,12 +532,42 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
   }
 }
 
+/**
+ * Adds the impulse `dl` (N s) along the normal n to the body at packed state offset `s` and marks it pushed; its spin
+ * change is dl `invI` L[at..at + 2] (isotropic inverse inertia times r x n) if `iso`, else dl L[at..at + 2] (I^-1 (r x n)).
+ */
+function pushAlongNormal(
+  sb: Float64Array,
+  s: number,
+  dl: number,
+  nx: number,
+  ny: number,
+  nz: number,
+  iso: boolean,
+  invI: number,
+  L: Float32Array,
+  at: number,
+): void {
+  const f = sb[s + BS3_INV_MASS]! * dl,
+    g = iso ? invI * dl : dl;
+  sb[s + BS3_VX] = sb[s + BS3_VX]! + f * nx;
+  sb[s + BS3_VY] = sb[s + BS3_VY]! + f * ny;
+  sb[s + BS3_VZ] = sb[s + BS3_VZ]! + f * nz;
+  sb[s + BS3_WX] = sb[s + BS3_WX]! + g * L[at]!;
+  sb[s + BS3_WY] = sb[s + BS3_WY]! + g * L[at + 1]!;
+  sb[s + BS3_WZ] = sb[s + BS3_WZ]! + g * L[at + 2]!;
+  sb[s + BS3_PUSHED] = 1;
+}
+
 /** applyManifold3DRestitution's scratch: the manifolds with a bouncing point, in order. */
 let restitutionList = new Int32Array(0);
 
 /**
- * Restitution after the substeps: points that approached faster than the threshold and carried impulse
- * leave at >= e times that speed. (Written out in place: a call passing or returning doubles boxes each one.)
+ * The 3D manifolds' restitution stage, by the one definition of solver/restitution.ts: a point that
+ * carried an impulse and approached faster than its threshold at the start of the step bounces; its
+ * accumulated normal impulse is moved toward the target v_n = -e v_n0 by `restitutionIterations`
+ * sequential-impulse passes, kept >= 0. Uncapped: the 3D points keep no impulse total over the step,
+ * the compression Poisson's cap needs. (Velocities written out in place.)
  * @category Collision
  */
 export function applyManifold3DRestitution(world: PhysicsWorld): void {
@@ -548,7 +579,8 @@ export function applyManifold3DRestitution(world: PhysicsWorld): void {
     J = st.jacobians,
     JI = st.jacobiansInv,
     T = st.invInertia;
-  const threshold = cs.settings.restitutionThreshold;
+  const threshold = cs.settings.restitutionThreshold,
+    elasticThreshold = cs.settings.elasticRestitutionThreshold;
   const VN0 = buf.vn0,
     MAX = buf.maxLn,
     LN = buf.ln,
@@ -559,7 +591,7 @@ export function applyManifold3DRestitution(world: PhysicsWorld): void {
   if (restitutionList.length < buf.count) restitutionList = new Int32Array(2 * buf.count);
   const list = restitutionList;
   let listed = 0;
-  for (let pass = 0; pass < 4; pass++) {
+  for (let pass = 0, passes = cs.settings.restitutionIterations; pass < passes; pass++) {
     const all = pass === 0;
     for (let r = 0, count = all ? buf.count : listed; r < count; r++) {
       const i = all ? r : list[r]!;
@@ -579,7 +611,9 @@ export function applyManifold3DRestitution(world: PhysicsWorld): void {
       let bounces = false;
       for (let k = 0, m = buf.points[i]!; k < m; k++) {
         const q = 4 * i + k;
-        if (VN0[q]! > -threshold || MAX[q] === 0) continue;
+        if (MAX[q] === 0) continue;
+        const target = restitutionTarget(e, VN0[q]!, VN0[q]!, threshold, elasticThreshold);
+        if (target < 0) continue;
         bounces = true;
         const o = JAC_STRIDE * q;
         const vn =
@@ -593,45 +627,13 @@ export function applyManifold3DRestitution(world: PhysicsWorld): void {
           sb[a + BS3_WY]! * J[o + ROW_AY]! -
           sb[a + BS3_WZ]! * J[o + ROW_AZ]!;
         const old = LN[q]!;
-        const lam = Math.max(old - MN[q]! * (vn + e * VN0[q]!), 0);
+        const lam = restitutionImpulse(old, MN[q]!, vn, target, Number.POSITIVE_INFINITY);
         const dl = lam - old;
         LN[q] = lam;
         if (dl === 0) continue;
         // Body row 0 (the static world) is never written.
-        if (ka > 0) {
-          const f = sb[a + BS3_INV_MASS]! * dl;
-          sb[a + BS3_VX] = sb[a + BS3_VX]! - f * nx;
-          sb[a + BS3_VY] = sb[a + BS3_VY]! - f * ny;
-          sb[a + BS3_VZ] = sb[a + BS3_VZ]! - f * nz;
-          if (iso) {
-            const g = iA * dl;
-            sb[a + BS3_WX] = sb[a + BS3_WX]! - g * J[o + ROW_AX]!;
-            sb[a + BS3_WY] = sb[a + BS3_WY]! - g * J[o + ROW_AY]!;
-            sb[a + BS3_WZ] = sb[a + BS3_WZ]! - g * J[o + ROW_AZ]!;
-          } else {
-            sb[a + BS3_WX] = sb[a + BS3_WX]! - dl * JI[o + ROW_AX]!;
-            sb[a + BS3_WY] = sb[a + BS3_WY]! - dl * JI[o + ROW_AY]!;
-            sb[a + BS3_WZ] = sb[a + BS3_WZ]! - dl * JI[o + ROW_AZ]!;
-          }
-          sb[a + BS3_PUSHED] = 1;
-        }
-        if (kb > 0) {
-          const f = sb[b + BS3_INV_MASS]! * dl;
-          sb[b + BS3_VX] = sb[b + BS3_VX]! + f * nx;
-          sb[b + BS3_VY] = sb[b + BS3_VY]! + f * ny;
-          sb[b + BS3_VZ] = sb[b + BS3_VZ]! + f * nz;
-          if (iso) {
-            const g = iB * dl;
-            sb[b + BS3_WX] = sb[b + BS3_WX]! + g * J[o + ROW_BX]!;
-            sb[b + BS3_WY] = sb[b + BS3_WY]! + g * J[o + ROW_BY]!;
-            sb[b + BS3_WZ] = sb[b + BS3_WZ]! + g * J[o + ROW_BZ]!;
-          } else {
-            sb[b + BS3_WX] = sb[b + BS3_WX]! + dl * JI[o + ROW_BX]!;
-            sb[b + BS3_WY] = sb[b + BS3_WY]! + dl * JI[o + ROW_BY]!;
-            sb[b + BS3_WZ] = sb[b + BS3_WZ]! + dl * JI[o + ROW_BZ]!;
-          }
-          sb[b + BS3_PUSHED] = 1;
-        }
+        if (ka > 0) pushAlongNormal(sb, a, -dl, nx, ny, nz, iso, iA, iso ? J : JI, o + ROW_AX);
+        if (kb > 0) pushAlongNormal(sb, b, dl, nx, ny, nz, iso, iB, iso ? J : JI, o + ROW_BX);
       }
       if (all && bounces) list[listed++] = i;
     }

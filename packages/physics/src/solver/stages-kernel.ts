@@ -46,7 +46,7 @@ import {
   BX_ROT_Z,
   BX_STRIDE,
 } from './body-state-layout.js';
-import { PACK_STRIDE, PK_NORMAL_MASS, PK_NX, PK_NY } from './contact-pack-2d.js';
+import type { restitutionCap, restitutionTarget } from './restitution.js';
 import * as APPROACH from './slots/approach.js';
 import * as PLAN from './slots/colored-plan.js';
 import * as FINISH from './slots/finish-bodies.js';
@@ -397,21 +397,18 @@ export function deepestRow(A: KernelArray[], P: Float64Array, lo: number, hi: nu
 }
 
 /**
- * The restitution stage of a 2D world whose substeps ran by colours (applyRestitution in solver/contact-solver.ts, with
- * its sequential passes visiting the rows colour by colour), run by every thread of the pool at once
- * (or by one thread alone). First, per row (blocks of 1,024 rows, each row on its own as in solver/contact-solver.ts):
- * a row that carried no impulse takes no part (target -1); one that approached faster than its
- * threshold gets the target -e v_impact and the cap of Poisson's hypothesis; the rest the target 0.
- * Then, if any row bounces, `restitutionIterations` sequential-impulse passes, colour by colour: the
- * blocks of a colour share no movable body (solver/coloring.ts: strips or graph colours; the overflow
- * colour one block), so they may go to any thread. Threads claim blocks by flags, each from its own
+ * The ball rows' restitution stage (solver/stages-threads.ts restitutionStage), run by every thread of
+ * the pool at once (or by one thread alone), 2D or 3D (P[RESTITUTION.THREE_D]). First the rows' targets
+ * and caps (restitutionTargets, blocks of 1,024 rows); then, if any row bounces, `restitutionIterations`
+ * sequential-impulse passes (restitutionRows) colour by colour: the blocks of a colour share no movable
+ * body (solver/coloring.ts: strips or graph colours; the overflow colour one block), so they may go to any thread. Threads claim blocks by flags, each from its own
  * share of a unit first, and start a unit (the first stage, or a colour of a pass) once every block of
  * the earlier units is done, as solveColored2D (spinning up to P[RESTITUTION.SPIN_US] microseconds, then blocking).
  * A and P: the RESTITUTION slots (solver/slots/restitution.ts). Returns 0 (-1 if another thread failed and
  * this one stopped).
  * @category Collision
  */
-export function restitutionColored2D(
+export function restitutionColored(
   A: KernelArray[],
   P: Float64Array,
   _ids: Int32Array | null,
@@ -472,9 +469,9 @@ export function restitutionColored2D(
           if (c < 0) {
             const lo = blk * FIRST,
               hi = Math.min(n, lo + FIRST);
-            const bouncing = (H[7] as typeof restitutionTargets)(A, P, lo, hi);
+            const bouncing = (H[7] as typeof restitutionTargets)(A, P, lo, hi, H);
             if (bouncing > 0) Atomics.add(bar, 3, bouncing);
-          } else (H[8] as typeof restitutionRows2D)(A, bounds[first + blk]!, bounds[first + blk + 1]!);
+          } else (H[8] as typeof restitutionRows)(A, P, bounds[first + blk]!, bounds[first + blk + 1]!);
         } catch (e) {
           Atomics.store(bar, 2, 1);
           Atomics.notify(bar, 1);
@@ -489,25 +486,22 @@ export function restitutionColored2D(
 }
 
 /**
- * The blocks of every unit of restitutionColored2D over `n` rows with `plan` (the colours' layout) and `iterations` passes: the size its claim array needs.
+ * The blocks of every unit of restitutionColored over `n` rows with `plan` (the colours' layout) and `iterations` passes: the size its claim array needs.
  * @category Collision
  */
-export function restitutionBlocks2D(plan: Int32Array, n: number, iterations: number): number {
+export function restitutionBlocks(plan: Int32Array, n: number, iterations: number): number {
   const C = plan[PLAN.COLORS]!;
   return Math.ceil(n / 1024) + iterations * (plan[PLAN.COLOR_BLOCKS + C + 1]! - plan[PLAN.COLOR_BLOCKS]!);
 }
 
 /**
- * The restitution stage's targets and caps over rows [lo, hi) (restitutionColored2D's first unit, and
- * solver/ball-rows.ts applyRestitution's in buffer order), 2D or 3D (P[RESTITUTION.THREE_D]): a row that
- * carried no impulse takes no part (target -1); one that approached faster than its threshold gets the
- * target -e v_impact and the cap of Poisson's hypothesis (e times its compression impulse, delivered plus
- * what still stops a residual approach); the rest the target 0. The relative velocity, largest pass
- * impulse and delivered total of each row are spent by now and hold the target, the rebound's
- * accumulated impulse (0) and the cap. A and P: the RESTITUTION slots the loop reads. Returns how many rows bounce.
+ * The targets and caps of ball rows [lo, hi) (restitutionColored's first unit), 2D or 3D, by solver/restitution.ts
+ * (KERNEL_HELPERS 17 and 18 in `H`): a row that carried no impulse takes no part (target -1), one that bounces gets
+ * its target and cap, the rest the target 0. Each row's relative velocity, largest pass impulse and delivered total
+ * are spent by now and hold the target, the rebound's impulse (0) and the cap. Returns how many rows bounce.
  * @category Collision
  */
-export function restitutionTargets(A: KernelArray[], P: Float64Array, lo: number, hi: number): number {
+export function restitutionTargets(A: KernelArray[], P: Float64Array, lo: number, hi: number, H: readonly KernelHelper[]): number {
   const sb = A[RESTITUTION.BODY_STATE] as Float64Array,
     IA = A[RESTITUTION.IA] as Int32Array,
     IB = A[RESTITUTION.IB] as Int32Array,
@@ -522,67 +516,87 @@ export function restitutionTargets(A: KernelArray[], P: Float64Array, lo: number
     TOT = A[RESTITUTION.TOTAL_NORMAL_IMPULSE] as Float64Array;
   const threshold = P[RESTITUTION.THRESHOLD]!,
     elasticThreshold = P[RESTITUTION.ELASTIC_THRESHOLD]!;
+  const targetOf = H[17] as typeof restitutionTarget,
+    capOf = H[18] as typeof restitutionCap;
   // vx and vy sit at the same offsets in both layouts.
   const is3D = P[RESTITUTION.THREE_D] === 1,
     S = is3D ? BS3_STRIDE : BS2_STRIDE;
   let bouncing = 0;
   for (let i = lo; i < hi; i++) {
-    const e = E[i]!;
     if (MAXN[i] === 0) {
       RV[i] = -1;
       continue;
     }
     MAXN[i] = 0;
-    if (e > 0 && RV[i]! < -(e >= 1 ? elasticThreshold : threshold)) {
-      RV[i] = -e * IV[i]!;
-      const a = IA[i]! * S,
-        bb = IB[i]! * S;
-      let vn = (sb[bb + BS2_VX]! - sb[a + BS2_VX]!) * NX[i]! + (sb[bb + BS2_VY]! - sb[a + BS2_VY]!) * NY[i]!;
-      if (is3D) vn += (sb[bb + BS3_VZ]! - sb[a + BS3_VZ]!) * NZ[i]!;
-      const stop = vn < 0 ? -NM[i]! * vn : 0;
-      TOT[i] = stop + e * (TOT[i]! + stop);
-      bouncing++;
-    } else RV[i] = 0;
+    const e = E[i]!;
+    const target = targetOf(e, RV[i]!, IV[i]!, threshold, elasticThreshold);
+    if (target < 0) {
+      RV[i] = 0;
+      continue;
+    }
+    RV[i] = target;
+    const a = IA[i]! * S,
+      bb = IB[i]! * S;
+    let vn = (sb[bb + BS2_VX]! - sb[a + BS2_VX]!) * NX[i]! + (sb[bb + BS2_VY]! - sb[a + BS2_VY]!) * NY[i]!;
+    if (is3D) vn += (sb[bb + BS3_VZ]! - sb[a + BS3_VZ]!) * NZ[i]!;
+    TOT[i] = capOf(e, TOT[i]!, vn < 0 ? -NM[i]! * vn : 0);
+    bouncing++;
   }
   return bouncing;
 }
 
 /**
- * One block of a restitution pass: pack rows [r0, r1) (A as restitutionColored2D's).
+ * One block of a restitution pass over the ball rows ROW[r0 .. r1) (buffer rows; A and P as
+ * restitutionColored's, 2D or 3D by P[RESTITUTION.THREE_D]): each row that takes part moves its
+ * rebound impulse toward its target as restitutionImpulse (solver/restitution.ts) does,
+ * capped for a bouncing row, and its bodies' velocities by the change.
  * @category Collision
  */
-export function restitutionRows2D(A: KernelArray[], r0: number, r1: number): void {
-  const pk = A[RESTITUTION.PACK] as Float64Array,
-    sb = A[RESTITUTION.BODY_STATE] as Float64Array,
+export function restitutionRows(A: KernelArray[], P: Float64Array, r0: number, r1: number): void {
+  const sb = A[RESTITUTION.BODY_STATE] as Float64Array,
+    IA = A[RESTITUTION.IA] as Int32Array,
+    IB = A[RESTITUTION.IB] as Int32Array,
+    NX = A[RESTITUTION.NX] as Float64Array,
+    NY = A[RESTITUTION.NY] as Float64Array,
+    NZ = A[RESTITUTION.NZ] as Float64Array,
+    NM = A[RESTITUTION.NORMAL_MASS] as Float64Array,
     RV = A[RESTITUTION.RELATIVE_VELOCITY] as Float64Array;
   const MAXN = A[RESTITUTION.MAX_NORMAL_IMPULSE] as Float64Array,
     TOT = A[RESTITUTION.TOTAL_NORMAL_IMPULSE] as Float64Array,
-    IMP = A[RESTITUTION.IMPULSE] as Float64Array;
-  const pair = A[RESTITUTION.PAIR] as Int32Array,
+    IMP = A[RESTITUTION.IMPULSE] as Float64Array,
     row = A[RESTITUTION.ROW] as Int32Array;
+  const is3D = P[RESTITUTION.THREE_D] === 1,
+    S = is3D ? BS3_STRIDE : BS2_STRIDE,
+    im = is3D ? BS3_INV_MASS : BS2_INV_MASS;
   for (let k = r0; k < r1; k++) {
-    const o = k * PACK_STRIDE;
     const i = row[k]!;
     const target = RV[i]!;
     if (target < 0) continue;
-    const a = pair[2 * k]!,
-      bb = pair[2 * k + 1]!;
-    const nx = pk[o + PK_NX]!,
-      ny = pk[o + PK_NY]!;
-    const vn = (sb[bb + BS2_VX]! - sb[a + BS2_VX]!) * nx + (sb[bb + BS2_VY]! - sb[a + BS2_VY]!) * ny;
+    const a = IA[i]! * S,
+      bb = IB[i]! * S;
+    const nx = NX[i]!,
+      ny = NY[i]!;
+    let vn = (sb[bb + BS2_VX]! - sb[a + BS2_VX]!) * nx + (sb[bb + BS2_VY]! - sb[a + BS2_VY]!) * ny;
+    if (is3D) vn += (sb[bb + BS3_VZ]! - sb[a + BS3_VZ]!) * NZ[i]!;
     const old = MAXN[i]!;
-    let acc = old - pk[o + PK_NORMAL_MASS]! * (vn - target);
+    // solver/restitution.ts restitutionImpulse, written out: a helper call per row and pass is not inlined here.
+    let acc = old - NM[i]! * (vn - target);
     if (acc < 0) acc = 0;
     if (target > 0 && acc > TOT[i]!) acc = TOT[i]!;
     const dl = acc - old;
     if (dl === 0) continue;
     MAXN[i] = acc;
     IMP[i] = IMP[i]! + dl;
-    const ka = sb[a + BS2_INV_MASS]! * dl,
-      kb = sb[bb + BS2_INV_MASS]! * dl;
+    const ka = sb[a + im]! * dl,
+      kb = sb[bb + im]! * dl;
     sb[a + BS2_VX] = sb[a + BS2_VX]! - ka * nx;
     sb[a + BS2_VY] = sb[a + BS2_VY]! - ka * ny;
     sb[bb + BS2_VX] = sb[bb + BS2_VX]! + kb * nx;
     sb[bb + BS2_VY] = sb[bb + BS2_VY]! + kb * ny;
+    if (is3D) {
+      const nz = NZ[i]!;
+      sb[a + BS3_VZ] = sb[a + BS3_VZ]! - ka * nz;
+      sb[bb + BS3_VZ] = sb[bb + BS3_VZ]! + kb * nz;
+    }
   }
 }

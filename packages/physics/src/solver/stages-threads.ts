@@ -8,7 +8,7 @@
  * - `approachStage`: measureApproach (2D and 3D), a range of rows a thread;
  * - `finishStage`: finishBodies, 2D and 3D (velocities, positions and angles back to the components; the
  *   deepest overlap left) and containInBoundary, a range of bodies and of rows a thread;
- * - `restitutionOnThreads`: the restitution stage after a coloured solve, its passes colour by colour;
+ * - `restitutionStage`: the ball rows' restitution, its passes colour by colour after a coloured solve;
  * - `storeWarmStartOnThreads`: the warm-start table of the step's contacts, built on a worker while
  *   the calling thread finishes the step (the same table).
  *
@@ -44,7 +44,15 @@ import * as PLAN from './slots/colored-plan.js';
 import * as FINISH from './slots/finish-bodies.js';
 import * as GATHER from './slots/gather-fill.js';
 import * as RESTITUTION from './slots/restitution.js';
-import { approachSpeeds, finishBodies, gatherFill, restitutionBlocks2D, restitutionColored2D } from './stages-kernel.js';
+import {
+  approachSpeeds,
+  finishBodies,
+  gatherFill,
+  restitutionBlocks,
+  restitutionColored,
+  restitutionRows,
+  restitutionTargets,
+} from './stages-kernel.js';
 import { warmStartTable } from './warm-start-kernel.js';
 
 /**
@@ -303,30 +311,31 @@ export function finishStage(world: PhysicsWorld, buf: ContactBuffer): void {
   cs.stats.maxOverlap = -deepest;
 }
 
+/** restitutionStage's scratch in buffer order: the rows that take part, in row order. Not world state. */
+let inOrder = new Int32Array(0);
+
 /**
- * The restitution stage of a 2D world whose substeps of this step ran by colours (solver/coloring.ts),
- * its passes colour by colour on the world's threads (or inline on the calling thread without a pool,
- * or when the adaptive pool prefers it: the same results either way); see the file's header for the
- * order. False when the step's substeps did not run by colours (the caller's one-thread stage then runs).
+ * The ball rows' restitution stage (solver/ball-rows.ts), by the kernels restitutionTargets and
+ * restitutionRows (solver/stages-kernel.ts): in a 2D world whose substeps of this step ran by colours
+ * (solver/coloring.ts), restitutionColored runs its passes colour by colour on the world's threads (or
+ * inline on the calling thread without a pool, or when the adaptive pool prefers it: the same results
+ * either way; see the file's header); otherwise its passes run inline over the rows that take part, in
+ * buffer order.
  * @throws Error naming contactSolverSystem if a worker thread failed.
  * @category Collision
  */
-export function restitutionOnThreads(world: PhysicsWorld, buf: ContactBuffer): boolean {
+export function restitutionStage(world: PhysicsWorld, buf: ContactBuffer): void {
   const cs = world.collision,
-    pool = world.threadPool;
-  const colored = coloredPlan(world);
-  if (colored === null || world.dimensions !== 2) return false;
-  if (pool !== null) shareContactBuffer(buf);
+    pool = world.threadPool,
+    n = buf.count;
+  const plan2D = coloredPlan(world);
+  const colored = world.dimensions === 2 ? plan2D : null;
+  if (colored !== null && pool !== null) shareContactBuffer(buf);
   const st = cs.settings;
   const s = scratch(world),
     A = s.arrays,
     P = s.params;
-  const blocks = restitutionBlocks2D(colored.plan, buf.count, st.restitutionIterations);
-  if (colored.claim.length < blocks) colored.claim = grown(colored.claim, Math.max(blocks, 2 * colored.claim.length));
   A.length = 0;
-  A[RESTITUTION.PACK] = colored.pack;
-  A[RESTITUTION.PLAN] = colored.plan;
-  A[RESTITUTION.COUNTERS] = colored.bar;
   A[RESTITUTION.BODY_STATE] = cs.bodyState;
   A[RESTITUTION.IA] = buf.ia;
   A[RESTITUTION.IB] = buf.ib;
@@ -339,37 +348,46 @@ export function restitutionOnThreads(world: PhysicsWorld, buf: ContactBuffer): b
   A[RESTITUTION.MAX_NORMAL_IMPULSE] = buf.maxNormalImpulse;
   A[RESTITUTION.TOTAL_NORMAL_IMPULSE] = buf.totalNormalImpulse;
   A[RESTITUTION.IMPULSE] = buf.impulse;
-  A[RESTITUTION.BOUNDS] = colored.bounds;
-  A[RESTITUTION.PAIR] = colored.pair;
-  A[RESTITUTION.ROW] = colored.row;
-  A[RESTITUTION.CLAIM] = colored.claim;
   A[RESTITUTION.NZ] = buf.nz;
-  P[RESTITUTION.ROWS] = buf.count;
+  P[RESTITUTION.ROWS] = n;
   P[RESTITUTION.THRESHOLD] = st.restitutionThreshold;
   P[RESTITUTION.ELASTIC_THRESHOLD] = st.elasticRestitutionThreshold;
   P[RESTITUTION.ITERATIONS] = st.restitutionIterations;
+  P[RESTITUTION.THREE_D] = world.dimensions === 2 ? 0 : 1;
+  if (colored === null) {
+    if (restitutionTargets(A, P, 0, n, KERNEL_HELPERS) === 0) return;
+    if (inOrder.length < n) inOrder = new Int32Array(Math.max(n, 2 * inOrder.length));
+    const RV = buf.relativeVelocity;
+    let taking = 0;
+    for (let i = 0; i < n; i++) if (RV[i]! >= 0) inOrder[taking++] = i;
+    A[RESTITUTION.ROW] = inOrder;
+    for (let it = 0; it < st.restitutionIterations; it++) restitutionRows(A, P, 0, taking);
+    return;
+  }
+  const blocks = restitutionBlocks(colored.plan, n, st.restitutionIterations);
+  if (colored.claim.length < blocks) colored.claim = grown(colored.claim, Math.max(blocks, 2 * colored.claim.length));
+  A[RESTITUTION.PLAN] = colored.plan;
+  A[RESTITUTION.COUNTERS] = colored.bar;
+  A[RESTITUTION.BOUNDS] = colored.bounds;
+  A[RESTITUTION.ROW] = colored.row;
+  A[RESTITUTION.CLAIM] = colored.claim;
   P[RESTITUTION.MAY_WAIT] = callerMayWait() ? 1 : 0;
   P[RESTITUTION.SPIN_US] = SPIN_MICROSECONDS;
-  P[RESTITUTION.THREE_D] = 0;
   const bar = colored.bar,
     plan = colored.plan;
   const site = 'contactSolverSystem#restitution';
   const parallel = pool !== null && pool.threads <= 16 && pool.usable() && (!pool.adaptive || pool.chooser.choose(site));
   const t0 = nowMs();
-  bar[0] = 0;
-  bar[1] = 0;
-  bar[2] = 0;
-  bar[3] = 0;
+  bar.fill(0);
   colored.claim.fill(0, 0, blocks);
   if (parallel) {
     plan[PLAN.THREADS] = pool.threads;
-    pool.run('contactSolverSystem', restitutionColored2D, A, P, pool.threads, null);
+    pool.run('contactSolverSystem', restitutionColored, A, P, pool.threads, null);
   } else {
     plan[PLAN.THREADS] = 1;
-    restitutionColored2D(A, P, null, 0, 1, 0, KERNEL_HELPERS);
+    restitutionColored(A, P, null, 0, 1, 0, KERNEL_HELPERS);
   }
-  if (pool?.adaptive === true) pool.chooser.record(site, parallel, nowMs() - t0, buf.count);
+  if (pool?.adaptive === true) pool.chooser.record(site, parallel, nowMs() - t0, n);
   stageThreading.runs++;
   stageThreading.bouncing += bar[3]!;
-  return true;
 }

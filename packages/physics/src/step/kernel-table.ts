@@ -31,7 +31,7 @@ import { attractors, gravityScale } from '../forces/gravity.js';
 import { sie2, sie3 } from '../integrators/semi-implicit-euler.js';
 import { solveColored2D } from '../solver/coloring-kernel.js';
 import { prepareContactRows } from '../solver/prepare-contacts-kernel.js';
-import { approachSpeeds, finishBodies, gatherFill, restitutionColored2D } from '../solver/stages-kernel.js';
+import { approachSpeeds, finishBodies, gatherFill, restitutionColored } from '../solver/stages-kernel.js';
 import { stripPlan2D } from '../solver/strip-plan-kernel.js';
 import { stripCut2D } from '../solver/strips-kernel.js';
 import { warmStartTable } from '../solver/warm-start-kernel.js';
@@ -84,7 +84,7 @@ export const KERNELS: readonly Kernel[] = /* @__PURE__ */ Object.freeze([
   gatherFill,
   approachSpeeds,
   finishBodies,
-  restitutionColored2D,
+  restitutionColored,
   stripCut2D,
   warmStartTable,
   stripPlan2D,

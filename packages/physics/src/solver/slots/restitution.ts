@@ -1,53 +1,48 @@
 /**
- * The argument slots of restitutionColored2D and its loops (solver/stages-kernel.ts), filled by
- * restitutionOnThreads (solver/stages-threads.ts) and, for restitutionTargets alone, applyRestitution
- * (solver/ball-rows.ts): where each array sits in the kernel's `A` and
+ * The argument slots of restitutionColored and its loops restitutionTargets and restitutionRows
+ * (solver/stages-kernel.ts), filled by restitutionStage (solver/stages-threads.ts): where each array sits in the kernel's `A` and
  * each number in its `P`, imported as `RESTITUTION` (`A[RESTITUTION.NAME]`) by the kernel and by
  * its caller. A module of numeric constants only, which every build folds into the code
  * (threads/worker-source.ts).
  */
 
 // A: the arrays.
-/** The packed contact rows (solver/contact-pack-2d.ts), colour by colour. */
-export const PACK = 0;
 /** The coloured solve's plan (Int32, the PLAN slots of solver/slots/colored-plan.ts). */
-export const PLAN = 1;
+export const PLAN = 0;
 /** Counters (Int32, 0 on entry: 0 unused, 1 blocks done, 2 abort, 3 bouncing rows). */
-export const COUNTERS = 2;
-/** The solver body state (rows of BS2_STRIDE). */
-export const BODY_STATE = 3;
+export const COUNTERS = 1;
+/** The solver body state (rows of BS2_STRIDE, or of BS3_STRIDE in 3D). */
+export const BODY_STATE = 2;
 /** Solver index of body A of each contact row (Int32). */
-export const IA = 4;
+export const IA = 3;
 /** Solver index of body B (Int32). */
-export const IB = 5;
+export const IB = 4;
 /** Contact normal x. */
-export const NX = 6;
+export const NX = 5;
 /** Contact normal y. */
-export const NY = 7;
+export const NY = 6;
 /** Normal effective mass, kg. */
-export const NORMAL_MASS = 8;
+export const NORMAL_MASS = 7;
 /** Combined restitution. */
-export const RESTITUTION = 9;
+export const RESTITUTION = 8;
 /** Normal relative velocity, m/s. */
-export const RELATIVE_VELOCITY = 10;
+export const RELATIVE_VELOCITY = 9;
 /** Normal speed at impact, m/s. */
-export const IMPACT_VELOCITY = 11;
+export const IMPACT_VELOCITY = 10;
 /** Largest normal impulse of a pass, N s. */
-export const MAX_NORMAL_IMPULSE = 12;
+export const MAX_NORMAL_IMPULSE = 11;
 /** Normal impulse delivered over the step, N s. */
-export const TOTAL_NORMAL_IMPULSE = 13;
+export const TOTAL_NORMAL_IMPULSE = 12;
 /** The impact stage's impulse, N s. */
-export const IMPULSE = 14;
-/** Block j is pack rows bounds[j] .. bounds[j + 1] - 1 (Int32). */
-export const BOUNDS = 15;
-/** Two a pack row: its bodies' solver state offsets (Int32). */
-export const PAIR = 16;
-/** A pack row's row in the contact buffer (Int32). */
-export const ROW = 17;
-/** A flag a block, numbered across the units (Int32, 0 on entry; restitutionBlocks2D of them). */
-export const CLAIM = 18;
+export const IMPULSE = 13;
+/** Block j is the rows ROW[bounds[j] .. bounds[j + 1]) (Int32). */
+export const BOUNDS = 14;
+/** The contact buffer rows a pass visits, in its order (Int32): colour by colour, or in buffer order. */
+export const ROW = 15;
+/** A flag a block, numbered across the units (Int32, 0 on entry; restitutionBlocks of them). */
+export const CLAIM = 16;
 /** Contact normal z (read by restitutionTargets in 3D). */
-export const NZ = 19;
+export const NZ = 17;
 // P: the numbers.
 /** Contact rows. */
 export const ROWS = 0;
