@@ -13,13 +13,14 @@
  * is taken from where the scissors went (Challenge.marks: finer than the grid, whose points lie too
  * far apart to hold a star's points) and, where it tore, from the links it parted along.
  * Measured over a spread of hand-like cuts on the still sheet at 32 points across (a spacing is
- * 0.13 m: 14 px on a desktop; scripts/lab-cloth-cuts.mjs): careful cuts (within half a spacing of
- * the line) 0.93-1.00, three stars; a ragged one (0.3 out, wobbling 0.7 across it) 0.85-0.94, two or
- * three (three for 7 of 12: a messy cut round the three shapes seldom scores 9 of 9, its steadiness
- * counts, `Fit.steady`); careless ones (1.2 spacings
- * out, a wobble of 1.2, 1 inside, the star's points cut across 2 spacings back) 0.57-0.82, mostly
- * one; 2 spacings out or more, 0-0.15. A notch or a stray slit or tear into the shape (`Fit.clean`)
- * costs a star from a link and a half deep: a cut on the line with a notch 1.5 spacings deep 0.79.
+ * 0.13 m: 14 px on a desktop; scripts/lab-cloth-cuts.mjs): careful cuts (0.3 spacings off the line,
+ * wobbling 0.3) 0.96-1.00, three stars; 0.5 out wobbling 0.4 0.89-0.93; a ragged one (0.3 out,
+ * wobbling 0.7 across it) 0.71-0.90, two (its steadiness counts, `Fit.steady`); 0.8 out 0.77-0.80,
+ * two; careless ones (1.2 spacings out, a wobble of 1.2, 1 inside) 0.52-0.73, mostly one; the star's
+ * points cut across 2 spacings back 0.79; 2 spacings out or more, 0-0.14. The score falls with the
+ * distance from 0.45 of a spacing (about 6 px) on, so its percentage says how closely the cut
+ * followed the line. A notch or a stray slit or tear into the shape (`Fit.clean`) costs a star from
+ * a link and a half deep: a cut on the line with a notch 1.5 spacings deep 0.79.
  */
 import { type Cloth, isAlive, type PhysicsWorld, slotOf } from '@bitphysics/physics';
 import type { ClothCells } from './cells';
@@ -178,9 +179,10 @@ export const LINE_SAMPLE = 0.02;
 /**
  * The fit's tolerance, in link spacings: a stretch of the cut (or of the line) up to FIT_FULL spacings
  * from the line (from the cut) counts whole, one FIT_ZERO spacings off or more counts nothing, and
- * linearly between. The grid puts a cut right on the line up to half a spacing off it.
+ * linearly between: a hand's trace of the line is seldom nearer than half a spacing (6 px on a
+ * desktop), and every spacing further off costs 0.65 of the sample's score.
  */
-export const FIT_FULL = 0.6,
+export const FIT_FULL = 0.45,
   FIT_ZERO = 2;
 
 /**
