@@ -950,11 +950,14 @@ function updateStatus(): void {
   // The shapes left cannot bring the stars up to the pass mark (a pull of the hand tore through
   // them, or they scored too few): the level cannot be won any more, so say so and offer a retry.
   const need = passMark(shapes.length);
-  if (challenge.stars() + 3 * challenge.pending().length < need && done.every((d) => d.drop !== 'falling')) {
+  const spoilt = stroke ? [] : challenge.spoilt();
+  const open = challenge.pending().length - spoilt.length;
+  if (challenge.stars() + 3 * open < need && done.every((d) => d.drop !== 'falling')) {
     failed = true;
+    const torn = spoilt.length > 0 ? `the ${spoilt.map((i) => shapes[i]!.name).join(' and the ')} torn, ` : '';
     status.set(
       `${head}: ${short(
-        `this sheet can no longer reach ${need} stars (${challenge.stars()} so far). Undo (↶) the last tear or cut, or try again.`,
+        `${torn}this sheet can no longer reach ${need} stars (${challenge.stars()} so far). Undo (↶) the last tear or cut, or try again.`,
         `can't reach ${need} ★ now. Undo (↶) or try again.`,
       )}`,
     );

@@ -480,6 +480,9 @@ export interface CutOut {
   landedAt?: number;
 }
 
+/** A shape not cut out yet is spoilt (Challenge.spoilt) once more than this share of its inner cells is torn. */
+export const SPOILT_SHARE = 0.2;
+
 /** Stars for a fit in [0, 1]: 3 from 0.9, 2 from 0.7, 1 from 0.4, else none. */
 export function starsFor(fit: number): number {
   return fit >= 0.9 ? 3 : fit >= 0.7 ? 2 : fit >= 0.4 ? 1 : 0;
@@ -654,6 +657,32 @@ export class Challenge {
     if (!(slack >= 0) || !Number.isFinite(slack))
       throw new RangeError(`Challenge.setSlack: slack must be a finite number >= 0, got ${slack}`);
     this.slack = slack;
+  }
+
+  /**
+   * Indices of the shapes not cut out yet that are torn inside: more than SPOILT_SHARE of their cells
+   * a link spacing or more within the line have a triangle broken (a pull of the hand tore through
+   * them, or a stroke cut across them). Such a shape can no longer come away with a clean edge.
+   */
+  spoilt(): number[] {
+    const { columns, spacing } = sheetGrid(this.cloth.columns);
+    return this.pending().filter((s) => {
+      const mask = this.masks[s]!;
+      let deep = 0,
+        broken = 0;
+      for (const cell of mask.inside) {
+        const c = cell % (columns - 1),
+          r = Math.floor(cell / (columns - 1));
+        const x = (c + 0.5) * spacing,
+          y = (r + 0.5) * spacing;
+        let near = Infinity;
+        for (let k = 0; k < mask.line.length; k += 2) near = Math.min(near, (mask.line[k]! - x) ** 2 + (mask.line[k + 1]! - y) ** 2);
+        if (near < spacing * spacing) continue;
+        deep++;
+        if (this.cells.triangles(this.world, cell) !== 3) broken++;
+      }
+      return deep > 0 && broken > SPOILT_SHARE * deep;
+    });
   }
 
   /** Indices of the shapes not cut out yet. */

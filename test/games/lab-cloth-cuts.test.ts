@@ -145,6 +145,32 @@ describe('lab-cloth flaws', () => {
     }
   });
 
+  it('a shape torn across inside its line is spoilt; a clean cut round another spoils nothing', () => {
+    const challenge = fresh();
+    expect(challenge.spoilt()).toEqual([]);
+    // A careful star: cut out, and the circle and the heart untouched.
+    cut(challenge, traceLine(SHAPES[STAR]!.outline));
+    expect(challenge.spoilt()).toEqual([]);
+    // A slash straight across the circle's middle (as a pull of the hand tears it).
+    const o = SHAPES[CIRCLE]!.outline,
+      n = o.length / 2;
+    let cx = 0,
+      cy = 0;
+    for (let i = 0; i < n; i++) {
+      cx += o[2 * i]! / n;
+      cy += o[2 * i + 1]! / n;
+    }
+    const radius = Math.hypot(o[0]! - cx, o[1]! - cy);
+    const P = sheet.world.components.Position;
+    const corner = slotOf(sheet.cloth.points[0]!);
+    // Sheet coordinates at rest to the world: the sheet hangs still, its first point at its top left.
+    const wx = (u: number) => P.x[corner]! + u,
+      wy = (v: number) => P.y[corner]! - v;
+    cutAlong(sheet.world, wx(cx - 0.8 * radius), wy(cy + 0.1 * S), wx(cx + 0.8 * radius), wy(cy + 0.1 * S));
+    sheet.cells.loosen(sheet.world);
+    expect(challenge.spoilt()).toEqual([CIRCLE]);
+  });
+
   it('a tear into the piece is a flaw as a slit is', () => {
     // The circle cut on its line, then two links across its edge torn (removed, no scissors' marks):
     // the tear's links are on the piece's edge, 1 and 2 spacings inside the line.
