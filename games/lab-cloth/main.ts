@@ -167,6 +167,20 @@ interface Counts {
 }
 /** Undo of the scissors (undo.ts): a new one with each sheet. */
 let history: CutUndo<Counts>;
+/**
+ * A pull of the hand stays one open action from its pointerdown until the next action begins or an
+ * undo (the sheet it loosened may tear on after the hand lets go, and undo takes that back with it);
+ * `tornAtPull` is the count of torn links as it began.
+ */
+let pullOpen = false,
+  tornAtPull = 0;
+/** Ends the pull left open (pullOpen), keeping it for undo if it tore the sheet. */
+function closePull(): void {
+  if (!pullOpen) return;
+  pullOpen = false;
+  history.end();
+  refreshUndo();
+}
 /** How many strokes can be undone, at most. */
 const UNDO_DEPTH = 10;
 let sheet: SheetView | null = null;
@@ -192,6 +206,7 @@ function createWorld(): PhysicsWorld {
   cells = new ClothCells(cloth);
   challenge = new Challenge(scene.world, cloth, cells, level.shapes(params.size));
   history = new CutUndo(scene.world, cells, challenge, UNDO_DEPTH);
+  pullOpen = false;
   grab = null;
   torn = 0;
   cut = 0;
@@ -253,6 +268,8 @@ function labStep(world: PhysicsWorld): void {
   const broke = world.joints.breaks.count;
   if (broke > 0) {
     torn += broke;
+    // A pull left open (pullOpen) that tears the sheet can now be undone.
+    if (pullOpen) refreshUndo();
     ripped += broke;
   }
   cells.loosen(world);
@@ -536,7 +553,7 @@ function slashTo(s: ScissorsStroke): void {
 }
 /** Greys the undo button out when there is nothing to undo. */
 function refreshUndo(): void {
-  const none = history.count === 0;
+  const none = history.count === 0 && !(pullOpen && torn > tornAtPull);
   undoButton.disabled = none;
   undoButton.style.opacity = none ? '0.45' : '';
 }
@@ -546,11 +563,9 @@ function refreshUndo(): void {
  */
 function undoCut(): void {
   if (stroke) return;
-  if (grab) {
-    grab.release();
-    grab = null;
-    if (history.end()) refreshUndo();
-  }
+  grab?.release();
+  grab = null;
+  closePull();
   const done = history.undo();
   if (!done) return;
   note = '';
@@ -614,6 +629,7 @@ canvas.addEventListener('pointerdown', (e) => {
   const [x, y] = pointerWorld(e);
   grab?.release();
   grab = null;
+  closePull();
   stroke = null;
   const scissors = LEVELS[levelIndex]!.scissors;
   if ((tool === 'cut' || e.button === 2) && scissors) {
@@ -649,7 +665,11 @@ canvas.addEventListener('pointerdown', (e) => {
   } else if (e.button === 0) {
     grab = ClothGrab.at(shell.world, cloth, x, y, gripFor(params.size));
     // A pull that tears the sheet is an action undo takes back, as a stroke is.
-    if (grab) history.begin({ cut, torn, scraps: challenge.scraps });
+    if (grab) {
+      history.begin({ cut, torn, scraps: challenge.scraps });
+      pullOpen = true;
+      tornAtPull = torn;
+    }
   }
   if (stroke || grab) canvas.setPointerCapture(e.pointerId);
 });
@@ -673,11 +693,8 @@ const release = (): void => {
       calmUntil = shell.world.time + CALM_HOLD;
     }
   }
-  if (grab) {
-    grab.release();
-    grab = null;
-    if (history.end()) refreshUndo();
-  }
+  grab?.release();
+  grab = null;
   stroke = null;
   cutting = false;
 };
