@@ -18,9 +18,10 @@
  * the lines and closes from FINGER_CLOSE_PX off (a fingertip hides the line it traces). Drag with the hand to
  * take hold of the sheet and pull it (grab.ts: a soft grip, so it stretches before it tears). The tool
  * buttons under the scene switch (key C); a right-button drag always cuts. Hold Gust (key G) to blow.
- * Undo (Ctrl/Cmd+Z) puts the sheet back as it was just before the last stroke that cut it and cut
- * out no shape with ★★★, the strokes after it cut again (undo.ts: the whole world restored from a
- * snapshot taken when the stroke began; up to UNDO_DEPTH strokes).
+ * Undo (Ctrl/Cmd+Z) puts the sheet back as it was just before the last action that cut or tore it (a
+ * scissors stroke or a pull of the hand; undo.ts: the whole world restored from a snapshot taken when
+ * the action began; up to UNDO_DEPTH actions). When the shapes left cannot bring the stars up to the
+ * pass mark (a pull tore through them), the status line says so and offers a retry.
  * Keys: P pause, N step, R new sheet. URL: ?level (1-4), ?size (8-48 points across), ?wind (0-10 m/s),
  * ?gusts (0-5 m/s), ?tear (0.1-2).
  */
@@ -166,6 +167,20 @@ interface Counts {
 }
 /** Undo of the scissors (undo.ts): a new one with each sheet. */
 let history: CutUndo<Counts>;
+/**
+ * A pull of the hand stays one open action from its pointerdown until the next action begins or an
+ * undo (the sheet it loosened may tear on after the hand lets go, and undo takes that back with it);
+ * `tornAtPull` is the count of torn links as it began.
+ */
+let pullOpen = false,
+  tornAtPull = 0;
+/** Ends the pull left open (pullOpen), keeping it for undo if it tore the sheet. */
+function closePull(): void {
+  if (!pullOpen) return;
+  pullOpen = false;
+  history.end();
+  refreshUndo();
+}
 /** How many strokes can be undone, at most. */
 const UNDO_DEPTH = 10;
 let sheet: SheetView | null = null;
@@ -191,6 +206,7 @@ function createWorld(): PhysicsWorld {
   cells = new ClothCells(cloth);
   challenge = new Challenge(scene.world, cloth, cells, level.shapes(params.size));
   history = new CutUndo(scene.world, cells, challenge, UNDO_DEPTH);
+  pullOpen = false;
   grab = null;
   torn = 0;
   cut = 0;
@@ -252,6 +268,8 @@ function labStep(world: PhysicsWorld): void {
   const broke = world.joints.breaks.count;
   if (broke > 0) {
     torn += broke;
+    // A pull left open (pullOpen) that tears the sheet can now be undone.
+    if (pullOpen) refreshUndo();
     ripped += broke;
   }
   cells.loosen(world);
@@ -535,27 +553,26 @@ function slashTo(s: ScissorsStroke): void {
 }
 /** Greys the undo button out when there is nothing to undo. */
 function refreshUndo(): void {
-  const none = history.count === 0;
+  const none = history.count === 0 && !(pullOpen && torn > tornAtPull);
   undoButton.disabled = none;
   undoButton.style.opacity = none ? '0.45' : '';
 }
 /**
- * Undoes the last stroke that did not cut out a shape with ★★★ (CutUndo.undo: the strokes after it
- * are cut again), and says what was kept. Does nothing while a stroke is under way.
+ * Undoes the last action that cut or tore the sheet (CutUndo.undo: a scissors stroke or a pull of the
+ * hand). A pull under way ends first, so undo takes it back. Does nothing while a stroke is under way.
  */
 function undoCut(): void {
   if (stroke) return;
   grab?.release();
   grab = null;
-  const done = history.undo((extra, recut) => ({ ...extra, cut: extra.cut + recut, scraps: challenge.scraps }));
+  closePull();
+  const done = history.undo();
   if (!done) return;
   note = '';
-  cut = done.extra.cut + done.recut;
+  cut = done.extra.cut;
   torn = done.extra.torn;
   sheet?.invalidate();
   refreshUndo();
-  const kept = done.cutOut.map((d) => `the ${challenge.shapes[d.shape]!.name} (${Math.round(d.fit * 100)}%)`);
-  if (done.redone > 0) note = `Undid the cut before the last; kept ${kept.length > 0 ? kept.join(', ') : 'the cuts after it'}.`;
   slash.length = 0;
   sound.snap(0.2);
 }
@@ -612,6 +629,7 @@ canvas.addEventListener('pointerdown', (e) => {
   const [x, y] = pointerWorld(e);
   grab?.release();
   grab = null;
+  closePull();
   stroke = null;
   const scissors = LEVELS[levelIndex]!.scissors;
   if ((tool === 'cut' || e.button === 2) && scissors) {
@@ -644,7 +662,15 @@ canvas.addEventListener('pointerdown', (e) => {
     }
     slash.length = 0;
     slash.push({ x: at.x, y: at.y, t: performance.now() / 1000 });
-  } else if (e.button === 0) grab = ClothGrab.at(shell.world, cloth, x, y, gripFor(params.size));
+  } else if (e.button === 0) {
+    grab = ClothGrab.at(shell.world, cloth, x, y, gripFor(params.size));
+    // A pull that tears the sheet is an action undo takes back, as a stroke is.
+    if (grab) {
+      history.begin({ cut, torn, scraps: challenge.scraps });
+      pullOpen = true;
+      tornAtPull = torn;
+    }
+  }
   if (stroke || grab) canvas.setPointerCapture(e.pointerId);
 });
 canvas.addEventListener('pointermove', (e) => {
@@ -936,6 +962,23 @@ function updateStatus(): void {
             }`,
     );
     showNext(true, failed ? 'Try again ↺' : last ? 'Start again ▶' : 'Next sheet ▶');
+    return;
+  }
+  // The shapes left cannot bring the stars up to the pass mark (a pull of the hand tore through
+  // them, or they scored too few): the level cannot be won any more, so say so and offer a retry.
+  const need = passMark(shapes.length);
+  const spoilt = stroke ? [] : challenge.spoilt();
+  const open = challenge.pending().length - spoilt.length;
+  if (challenge.stars() + 3 * open < need && done.every((d) => d.drop !== 'falling')) {
+    failed = true;
+    const torn = spoilt.length > 0 ? `the ${spoilt.map((i) => shapes[i]!.name).join(' and the ')} torn, ` : '';
+    status.set(
+      `${head}: ${short(
+        `${torn}this sheet can no longer reach ${need} stars (${challenge.stars()} so far). Undo (↶) the last tear or cut, or try again.`,
+        `can't reach ${need} ★ now. Undo (↶) or try again.`,
+      )}`,
+    );
+    showNext(true, 'Try again ↺');
     return;
   }
   failed = false;

@@ -13,13 +13,14 @@
  * is taken from where the scissors went (Challenge.marks: finer than the grid, whose points lie too
  * far apart to hold a star's points) and, where it tore, from the links it parted along.
  * Measured over a spread of hand-like cuts on the still sheet at 32 points across (a spacing is
- * 0.13 m: 14 px on a desktop; scripts/lab-cloth-cuts.mjs): careful cuts (within half a spacing of
- * the line) 0.93-1.00, three stars; a ragged one (0.3 out, wobbling 0.7 across it) 0.85-0.94, two or
- * three (three for 7 of 12: a messy cut round the three shapes seldom scores 9 of 9, its steadiness
- * counts, `Fit.steady`); careless ones (1.2 spacings
- * out, a wobble of 1.2, 1 inside, the star's points cut across 2 spacings back) 0.57-0.82, mostly
- * one; 2 spacings out or more, 0-0.15. A notch or a stray slit or tear into the shape (`Fit.clean`)
- * costs a star from a link and a half deep: a cut on the line with a notch 1.5 spacings deep 0.79.
+ * 0.13 m: 14 px on a desktop; scripts/lab-cloth-cuts.mjs): careful cuts (0.3 spacings off the line,
+ * wobbling 0.3) 0.96-1.00, three stars; 0.5 out wobbling 0.4 0.89-0.93; a ragged one (0.3 out,
+ * wobbling 0.7 across it) 0.71-0.90, two (its steadiness counts, `Fit.steady`); 0.8 out 0.77-0.80,
+ * two; careless ones (1.2 spacings out, a wobble of 1.2, 1 inside) 0.52-0.73, mostly one; the star's
+ * points cut across 2 spacings back 0.79; 2 spacings out or more, 0-0.14. The score falls with the
+ * distance from 0.45 of a spacing (about 6 px) on, so its percentage says how closely the cut
+ * followed the line. A notch or a stray slit or tear into the shape (`Fit.clean`) costs a star from
+ * a link and a half deep: a cut on the line with a notch 1.5 spacings deep 0.79.
  */
 import { type Cloth, isAlive, type PhysicsWorld, slotOf } from '@bitphysics/physics';
 import type { ClothCells } from './cells';
@@ -178,9 +179,10 @@ export const LINE_SAMPLE = 0.02;
 /**
  * The fit's tolerance, in link spacings: a stretch of the cut (or of the line) up to FIT_FULL spacings
  * from the line (from the cut) counts whole, one FIT_ZERO spacings off or more counts nothing, and
- * linearly between. The grid puts a cut right on the line up to half a spacing off it.
+ * linearly between: a hand's trace of the line is seldom nearer than half a spacing (6 px on a
+ * desktop), and every spacing further off costs 0.65 of the sample's score.
  */
-export const FIT_FULL = 0.6,
+export const FIT_FULL = 0.45,
   FIT_ZERO = 2;
 
 /**
@@ -478,6 +480,9 @@ export interface CutOut {
   landedAt?: number;
 }
 
+/** A shape not cut out yet is spoilt (Challenge.spoilt) once more than this share of its inner cells is torn. */
+export const SPOILT_SHARE = 0.2;
+
 /** Stars for a fit in [0, 1]: 3 from 0.9, 2 from 0.7, 1 from 0.4, else none. */
 export function starsFor(fit: number): number {
   return fit >= 0.9 ? 3 : fit >= 0.7 ? 2 : fit >= 0.4 ? 1 : 0;
@@ -652,6 +657,32 @@ export class Challenge {
     if (!(slack >= 0) || !Number.isFinite(slack))
       throw new RangeError(`Challenge.setSlack: slack must be a finite number >= 0, got ${slack}`);
     this.slack = slack;
+  }
+
+  /**
+   * Indices of the shapes not cut out yet that are torn inside: more than SPOILT_SHARE of their cells
+   * a link spacing or more within the line have a triangle broken (a pull of the hand tore through
+   * them, or a stroke cut across them). Such a shape can no longer come away with a clean edge.
+   */
+  spoilt(): number[] {
+    const { columns, spacing } = sheetGrid(this.cloth.columns);
+    return this.pending().filter((s) => {
+      const mask = this.masks[s]!;
+      let deep = 0,
+        broken = 0;
+      for (const cell of mask.inside) {
+        const c = cell % (columns - 1),
+          r = Math.floor(cell / (columns - 1));
+        const x = (c + 0.5) * spacing,
+          y = (r + 0.5) * spacing;
+        let near = Infinity;
+        for (let k = 0; k < mask.line.length; k += 2) near = Math.min(near, (mask.line[k]! - x) ** 2 + (mask.line[k + 1]! - y) ** 2);
+        if (near < spacing * spacing) continue;
+        deep++;
+        if (this.cells.triangles(this.world, cell) !== 3) broken++;
+      }
+      return deep > 0 && broken > SPOILT_SHARE * deep;
+    });
   }
 
   /** Indices of the shapes not cut out yet. */
