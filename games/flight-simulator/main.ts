@@ -7,12 +7,14 @@
  * go, the wings roll level) and gives a held climb or dive the elevator's full response, flying
  * level when the stick is let go; it leaves the throttle to the pilot. Without it the stick moves
  * the surfaces directly.
- * Fly through every ring (./course.ts) as fast as you can; each ring missed costs a star (three to
+ * Fly through every ring (./course.ts) as fast as you can; after a miss the course moves on (the
+ * next ring is laid just ahead: ./course.ts relayAfterMiss); each ring missed costs a star (three to
  * start with, shown on the goal line) and adds MISS_PENALTY (20) s to the course clock, said in the
  * banner and by a red glow round the scene the moment it is missed; do not hit the ground. P (or the
  * toolbar's button) pauses: the scene dims and says so (game-kit's createDomPauseOverlay).
- * Guidance: thick bright rings, a chain of beads through the next two, a label above the next one
- * (clear of the ring and of the marker; an edge arrow when it is out of view), and a flight-path
+ * Guidance: thick bright rings, a chain of beads through the next two, an outline round the next one
+ * on the screen (at least OUTLINE_LEAST px in radius, so a ring far off or edge on still reads), a label
+ * above it (clear of the ring and of the marker; an edge arrow when it is out of view), and a flight-path
  * marker where the aircraft's path, curved by its turn and climb, meets the next ring's plane if the
  * pilot lets go now (green when it is inside the ring). The flight waits for the pilot's first input
  * at the start and while the tips of the lesson rings (2 to 4) are read. The cockpit view (C) has a canopy frame and an instrument panel (./cockpit.ts: airspeed,
