@@ -687,14 +687,17 @@ export const RECOVERY_DISTANCE = 800;
  */
 export const RECOVERY_TURN = (15 * Math.PI) / 180;
 
+/** Steepest change of height from the aircraft the ring laid after a miss asks for, as a rise over RECOVERY_DISTANCE. */
+export const RECOVERY_GRADIENT = 0.15;
+
 /**
  * After a miss the course moves on: the rest of it (`rings` from `from`, 0-based, to the end) is
  * carried as one piece, turned about the vertical and moved, so that ring `from` lies
  * RECOVERY_DISTANCE m ahead of the aircraft at `position` (m, world) flying along `heading` (rad,
  * in the level plane from +x towards +z, as ./assist.ts flightState gives it), turned towards where
  * it was by at most RECOVERY_TURN (less where the design turn would not reach it from the heading
- * flown now: `designArrival`), at
- * the aircraft's height kept between 400 and 1,300 m. The rings after it keep their spacing, turns
+ * flown now: `designArrival`), at its own height kept within RECOVERY_GRADIENT times
+ * RECOVERY_DISTANCE of the aircraft's and between 400 and 1,300 m. The rings after it keep their spacing, turns
  * and climbs (each was laid reachable from the one before); each is then raised to RING_CLEARANCE
  * above the ground under its new place where it would be lower. Ring `from` faces the aircraft.
  * Changes the rings in place; nothing when `from` is not a ring still ahead. Without this a miss
@@ -720,7 +723,12 @@ export function relayAfterMiss(rings: Ring[], from: number, position: readonly n
   const way = heading + turn;
   const qx = px + RECOVERY_DISTANCE * Math.cos(way),
     qz = pz + RECOVERY_DISTANCE * Math.sin(way),
-    qy = Math.max(terrainHeight(terrain, qx, qz) + RING_CLEARANCE, Math.min(1300, Math.max(400, py)));
+    // Its own height, kept within a climb or dive of RECOVERY_GRADIENT from the aircraft's.
+    reach = RECOVERY_GRADIENT * RECOVERY_DISTANCE,
+    qy = Math.max(
+      terrainHeight(terrain, qx, qz) + RING_CLEARANCE,
+      Math.min(1300, Math.max(400, py - reach, Math.min(py + reach, first.y))),
+    );
   // The rest of the course turned by `spin` about the vertical through the ring, which then moves to (qx, qy, qz).
   const spin = way - Math.atan2(first.nz, first.nx);
   const c = Math.cos(spin),
