@@ -18,6 +18,8 @@
 //   answers late. Prints how often it reversed the bank key.
 // - `marker`: the same stranger steering by the game's flight-path marker (where the aircraft
 //   crosses the ring's plane if it lets go now) instead of the ring's bearing.
+// After a miss the course moves on as in the game (course.ts relayAfterMiss; env RELAY=0 flies
+// without it), and the time from each miss to the next ring passed is printed (median, max).
 // Prints per seed and pilot the rings passed of 10 and each ring's status (P passed, m missed), then
 // each ring's turn (degrees) and change of height (m) for the default seed. Env PILOTS=keys,naive
 // flies only those; DEBUG=1 prints where each missed ring's plane was crossed.
@@ -36,6 +38,10 @@ const fs = await importSource(
   ].join('\n'),
 );
 const DEG = Math.PI / 180;
+/** Whether the course moves on after a miss (course.ts relayAfterMiss): env RELAY=0 flies the old rule. */
+const RELAY = process.env.RELAY !== '0';
+/** Seconds from each miss to the next ring passed (Infinity: none passed after it, rings left), all pilots; a miss of the last ring is not counted. */
+const recoveries = [];
 const seeds = process.argv.slice(2).map(Number);
 const chosen = seeds.length ? seeds : [1, 2, 3, 4, 5, 6, 7, 8];
 
@@ -107,6 +113,7 @@ const fly = (seed, pilot) => {
   const start = fs.aircraftLevelDrag(130) / fs.AIRCRAFT.maxThrust;
   const history = [];
   const keys = { roll: 0, pitch: 0 };
+  let missedAt = null;
   let current = 0,
     since = 0,
     lastPath = 0;
@@ -160,7 +167,20 @@ const fly = (seed, pilot) => {
     fs.setBodyThrust(world, e, [c0.throttle * fs.AIRCRAFT.maxThrust, 0, 0]);
     const a = [P.x[e], P.y[e], P.z[e]];
     fs.step(world);
-    for (const ev of fs.flyRings(rings, a, [P.x[e], P.y[e], P.z[e]]))
+    const events = fs.flyRings(rings, a, [P.x[e], P.y[e], P.z[e]]);
+    for (const ev of events) {
+      if (ev.result === 'missed') missedAt ??= t;
+      else if (missedAt !== null) {
+        recoveries.push(t - missedAt);
+        missedAt = null;
+      }
+    }
+    // After a miss the course moves on, as the game does (course.ts relayAfterMiss; env RELAY=0: the old rule, none).
+    if (RELAY && events.at(-1)?.result === 'missed') {
+      const after = fs.flightState(world, e);
+      fs.relayAfterMiss(rings, fs.nextRing(rings), [P.x[e], P.y[e], P.z[e]], after.heading, h.terrain);
+    }
+    for (const ev of events)
       if (process.env.DEBUG && ev.result === 'missed') {
         const r = rings[ev.ring];
         console.log(
@@ -170,6 +190,8 @@ const fly = (seed, pilot) => {
     if (P.y[e] < 0) break;
   }
   rings.reversals = keys.reversals ?? 0;
+  // A miss with rings still ahead and none passed after it before the flight ended: never recovered.
+  if (missedAt !== null && fs.nextRing(rings) >= 0) recoveries.push(Infinity);
   return rings;
 };
 
@@ -187,6 +209,13 @@ for (const seed of chosen)
   }
 for (const [name, n] of Object.entries(totals))
   if (!only || only.includes(name)) console.log(`${name}: ${n} of ${10 * chosen.length} rings`);
+{
+  const sorted = [...recoveries].sort((p, q) => p - q);
+  const median = sorted.length ? sorted[Math.floor((sorted.length - 1) / 2)] : NaN;
+  console.log(
+    `miss to next ring passed: ${sorted.length} misses, median ${median.toFixed(1)} s, 90th percentile ${(sorted[Math.floor(0.9 * (sorted.length - 1))] ?? NaN).toFixed(1)} s, never ${sorted.filter((v) => v === Infinity).length} (course ${RELAY ? 'moves on after a miss' : 'not moved'})`,
+  );
+}
 const world = fs.createPhysicsWorld(fs.aircraft.worldOptions());
 const h = fs.aircraft.build(world, { seed: 1, altitude: 900 });
 const rings = fs.layCourse({ terrain: h.terrain, seed: 8, count: 10, start: [0, 900, 0] });

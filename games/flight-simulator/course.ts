@@ -674,3 +674,78 @@ export function faceRing(ring: Ring, from: readonly number[]): void {
   ring.ny = dy / length;
   ring.nz = dz / length;
 }
+
+/**
+ * How far ahead of the aircraft the next ring is laid after a miss, m (`relayAfterMiss`): about 6 s
+ * at the trim speed, time to see it and line up.
+ */
+export const RECOVERY_DISTANCE = 800;
+
+/**
+ * Largest turn off the aircraft's heading the ring laid after a miss asks for, rad (15 degrees): it
+ * leans towards where the course went, eased until the design turn reaches it (`designArrival`).
+ */
+export const RECOVERY_TURN = (15 * Math.PI) / 180;
+
+/** Steepest change of height from the aircraft the ring laid after a miss asks for, as a rise over RECOVERY_DISTANCE. */
+export const RECOVERY_GRADIENT = 0.15;
+
+/**
+ * After a miss the course moves on: the rest of it (`rings` from `from`, 0-based, to the end) is
+ * carried as one piece, turned about the vertical and moved, so that ring `from` lies
+ * RECOVERY_DISTANCE m ahead of the aircraft at `position` (m, world) flying along `heading` (rad,
+ * in the level plane from +x towards +z, as ./assist.ts flightState gives it), turned towards where
+ * it was by at most RECOVERY_TURN (less where the design turn would not reach it from the heading
+ * flown now: `designArrival`), at its own height kept within RECOVERY_GRADIENT times
+ * RECOVERY_DISTANCE of the aircraft's and between 400 and 1,300 m. The rings after it keep their spacing, turns
+ * and climbs (each was laid reachable from the one before); each is then raised to RING_CLEARANCE
+ * above the ground under its new place where it would be lower. Ring `from` faces the aircraft.
+ * Changes the rings in place; nothing when `from` is not a ring still ahead. Without this a miss
+ * left the next ring laid from the missed one, often inside the aircraft's turning circle, and
+ * turning round to it took half a minute.
+ * @throws RangeError on a `position` that is not 3 finite numbers, a `heading` that is not finite,
+ * or a `from` that is not an integer.
+ */
+export function relayAfterMiss(rings: Ring[], from: number, position: readonly number[], heading: number, terrain: Float64Array): void {
+  if (position.length < 3 || !position.slice(0, 3).every(Number.isFinite))
+    throw new RangeError(`relayAfterMiss: position must be 3 finite numbers, got ${position.join(', ')}`);
+  if (!Number.isFinite(heading)) throw new RangeError(`relayAfterMiss: heading must be a finite number (rad), got ${heading}`);
+  if (!Number.isInteger(from)) throw new RangeError(`relayAfterMiss: from must be an integer, got ${from}`);
+  const first = rings[from];
+  if (first?.status !== 'ahead') return;
+  const [px, py, pz] = position as [number, number, number];
+  // Towards where the ring was, within RECOVERY_TURN, eased until the design turn reaches it.
+  const bearing = Math.atan2(first.z - pz, first.x - px) - heading;
+  let turn = Math.max(-RECOVERY_TURN, Math.min(RECOVERY_TURN, Math.atan2(Math.sin(bearing), Math.cos(bearing))));
+  // Met from the heading flown now (no EXIT_SLACK: the aircraft is not leaving a ring).
+  while (Math.abs(turn) > 1e-3 && designArrival(RECOVERY_DISTANCE * Math.cos(turn), RECOVERY_DISTANCE * Math.sin(turn)) === null)
+    turn *= 0.9;
+  const way = heading + turn;
+  const qx = px + RECOVERY_DISTANCE * Math.cos(way),
+    qz = pz + RECOVERY_DISTANCE * Math.sin(way),
+    // Its own height, kept within a climb or dive of RECOVERY_GRADIENT from the aircraft's.
+    reach = RECOVERY_GRADIENT * RECOVERY_DISTANCE,
+    qy = Math.max(
+      terrainHeight(terrain, qx, qz) + RING_CLEARANCE,
+      Math.min(1300, Math.max(400, py - reach, Math.min(py + reach, first.y))),
+    );
+  // The rest of the course turned by `spin` about the vertical through the ring, which then moves to (qx, qy, qz).
+  const spin = way - Math.atan2(first.nz, first.nx);
+  const c = Math.cos(spin),
+    s = Math.sin(spin);
+  const ox = first.x,
+    oy = first.y,
+    oz = first.z;
+  for (let k = from; k < rings.length; k++) {
+    const r = rings[k]!;
+    const dx = r.x - ox,
+      dz = r.z - oz;
+    r.x = qx + c * dx - s * dz;
+    r.z = qz + s * dx + c * dz;
+    r.y = Math.max(terrainHeight(terrain, r.x, r.z) + RING_CLEARANCE, qy + (r.y - oy));
+    const nx = c * r.nx - s * r.nz;
+    r.nz = s * r.nx + c * r.nz;
+    r.nx = nx;
+  }
+  faceRing(first, position);
+}

@@ -7,12 +7,14 @@
  * go, the wings roll level) and gives a held climb or dive the elevator's full response, flying
  * level when the stick is let go; it leaves the throttle to the pilot. Without it the stick moves
  * the surfaces directly.
- * Fly through every ring (./course.ts) as fast as you can; each ring missed costs a star (three to
+ * Fly through every ring (./course.ts) as fast as you can; after a miss the course moves on (the
+ * next ring is laid just ahead: ./course.ts relayAfterMiss); each ring missed costs a star (three to
  * start with, shown on the goal line) and adds MISS_PENALTY (20) s to the course clock, said in the
  * banner and by a red glow round the scene the moment it is missed; do not hit the ground. P (or the
  * toolbar's button) pauses: the scene dims and says so (game-kit's createDomPauseOverlay).
- * Guidance: thick bright rings, a chain of beads through the next two, a label above the next one
- * (clear of the ring and of the marker; an edge arrow when it is out of view), and a flight-path
+ * Guidance: thick bright rings, a chain of beads through the next two, an outline round the next one
+ * on the screen (at least OUTLINE_LEAST px in radius, so a ring far off or edge on still reads), a label
+ * above it (clear of the ring and of the marker; an edge arrow when it is out of view), and a flight-path
  * marker where the aircraft's path, curved by its turn and climb, meets the next ring's plane if the
  * pilot lets go now (green when it is inside the ring). The flight waits for the pilot's first input
  * at the start and while the tips of the lesson rings (2 to 4) are read. The cockpit view (C) has a canopy frame and an instrument panel (./cockpit.ts: airspeed,
@@ -93,6 +95,7 @@ import {
   RING_WAYS,
   type Ring,
   type RingWay,
+  relayAfterMiss,
   ringBearing,
   ringWay,
   turnBackCue,
@@ -420,7 +423,8 @@ function stepWorld(world: PhysicsWorld): void {
 /** Passes or misses rings (./course.ts flyRings) on the move from `prev` to `now`: counts, banners, sounds. */
 function checkRings(time: number): void {
   const before = nextRing(rings);
-  for (const { ring, result } of flyRings(rings, prev, now)) {
+  const happened = flyRings(rings, prev, now);
+  for (const { ring, result } of happened) {
     if (result === 'passed') {
       state.score++;
       const last = nextRing(rings) < 0;
@@ -437,6 +441,18 @@ function checkRings(time: number): void {
     }
   }
   const next = nextRing(rings);
+  // After a miss the course moves on: the next ring (and the rest of the course with it) is laid
+  // just ahead, where the aircraft is heading, so that a miss costs a star and not a long turn back.
+  if (next >= 0 && happened.at(-1)?.result === 'missed') {
+    relayAfterMiss(rings, next, now, Math.atan2(now[2]! - prev[2]!, now[0]! - prev[0]!), handles.terrain);
+    rings.forEach((r, k) => {
+      if (k < next) return;
+      ringMeshes[k]?.position.set(r.x, r.y, r.z);
+      ringMeshes[k]?.quaternion.setFromUnitVectors(zAxis, ringNormal.set(r.nx, r.ny, r.nz));
+    });
+    // Said once the miss's banner has been read.
+    events.push({ text: `Ring ${next + 1} moved ahead`, colour: '#ffd166', time: time + 1.4 });
+  }
   // Recovering from a miss: the ring now next turns to face the aircraft (a ring met at an angle
   // was seen edge on), and so does one whose plane the aircraft crossed far off (beyond MISS_RANGE:
   // neither passed nor missed), so that coming back to it flies through it the way it comes.
@@ -891,9 +907,14 @@ function updateHud(i: ReturnType<typeof instruments>): void {
   }
 }
 
-/** Shows the newest event in the banner for BANNER_LIFE s, and the red glow of a miss. */
+/** Shows the newest event due in the banner for BANNER_LIFE s, and the red glow of a miss. */
 function updateBanner(t: number): void {
-  const last = events[events.length - 1];
+  // The newest event already due (a note may be queued to follow the one on show).
+  let last: (typeof events)[number] | undefined;
+  for (let k = events.length - 1; k >= Math.max(0, events.length - 4); k--) {
+    const ev = events[k]!;
+    if (ev.time <= t && (!last || ev.time > last.time)) last = ev;
+  }
   const age = last ? t - last.time : Infinity;
   // On a phone the banner gives way to a tip the flight waits on (the two covered the top third).
   if (last && age >= 0 && age < BANNER_LIFE && state.phase === 'flying' && !(compact && holding && tipText)) {
@@ -955,6 +976,18 @@ const ringPointer = overlay(
   'padding: 2px 8px; border-radius: 10px; background: rgba(10, 14, 22, 0.85); color: #ffcf5a; font: 700 14px system-ui, sans-serif; white-space: nowrap;',
 );
 ringPointer.dataset.hud = 'ring-pointer';
+/**
+ * An outline round the next ring on the screen, drawn while it is in view: a circle at the ring's
+ * projected centre, the ring's outer edge on the screen (RING_OUTER) but never smaller than
+ * OUTLINE_LEAST px, so that a ring far off or seen edge on (a thin line a few px long on a phone)
+ * still reads where it is. It fades as the ring grows on the screen, where the ring reads itself.
+ */
+const ringOutline = overlay(
+  'box-sizing: border-box; border: 3px solid #ffd21f; border-radius: 50%; box-shadow: 0 0 0 1.5px rgba(10, 14, 22, 0.8), inset 0 0 0 1.5px rgba(10, 14, 22, 0.8); display: none;',
+);
+ringOutline.dataset.hud = 'ring-outline';
+/** Least radius of the next ring's outline on the screen, px. */
+const OUTLINE_LEAST = compact ? 13 : 15;
 const ringAt = new Vector3(),
   rimAt = new Vector3(),
   camUp = new Vector3();
@@ -968,6 +1001,7 @@ function pointToNextRing(): void {
   const i = nextRing(rings);
   ringAim.index = i;
   ringPointer.style.display = i < 0 || state.phase !== 'flying' ? 'none' : 'block';
+  ringOutline.style.display = 'none';
   if (i < 0 || state.phase !== 'flying') return;
   const ring = rings[i]!;
   ringAt.set(ring.x, ring.y, ring.z);
@@ -991,6 +1025,12 @@ function pointToNextRing(): void {
     rimAt.project(app.camera);
     const rPx = Math.hypot(((rimAt.x - ringAt.x) / 2) * w, ((rimAt.y - ringAt.y) / 2) * h);
     ringAim.ring = [x, y, rPx];
+    const r = Math.max(OUTLINE_LEAST, rPx);
+    ringOutline.style.display = 'block';
+    ringOutline.style.left = `${x}px`;
+    ringOutline.style.top = `${y}px`;
+    ringOutline.style.width = ringOutline.style.height = `${2 * r}px`;
+    ringOutline.style.opacity = String(Math.max(0.3, Math.min(1, 1 - (rPx - 40) / 120)));
     ringPointer.textContent = ringAim.text;
     const bw = ringPointer.offsetWidth / 2,
       bh = ringPointer.offsetHeight / 2;

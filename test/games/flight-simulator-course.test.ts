@@ -30,6 +30,8 @@ import {
   MISS_RANGE,
   nextRing,
   pathThroughRing,
+  RECOVERY_DISTANCE,
+  RECOVERY_TURN,
   RING_CLEARANCE,
   RING_GRADIENT,
   RING_RADIUS,
@@ -37,6 +39,7 @@ import {
   RING_WAYS,
   type Ring,
   reachable,
+  relayAfterMiss,
   ringBearing,
   ringDifficulty,
   ringWay,
@@ -447,5 +450,55 @@ describe('flight simulator course', () => {
     faceRing(ring, [2000, 900, 0]);
     expect(ring.nx).toBeCloseTo(600 / d, 12);
     expect(() => faceRing(ring, [0, Number.NaN, 0])).toThrow(/faceRing: from must be 3 finite numbers/);
+  });
+
+  it('relayAfterMiss: after a miss the rest of the course is carried ahead of the aircraft, reachable, its shape kept', () => {
+    const rings = layCourse({ terrain, seed: 11, count: 10, start: [0, 900, 0] });
+    const before = rings.map((r) => ({ ...r }));
+    rings[0]!.status = 'passed';
+    rings[1]!.status = 'passed';
+    rings[2]!.status = 'missed';
+    // Missed ring 3 wide, 400 m to one side, flying 70 degrees off the way the course went.
+    const r3 = rings[2]!;
+    const way = Math.atan2(rings[3]!.z - r3.z, rings[3]!.x - r3.x);
+    const heading = way + (70 * Math.PI) / 180;
+    const at = [r3.x - 400 * Math.sin(way), 950, r3.z + 400 * Math.cos(way)];
+    relayAfterMiss(rings, 3, at, heading, terrain);
+    // The rings before stay as they were.
+    for (let k = 0; k < 3; k++) expect([rings[k]!.x, rings[k]!.y, rings[k]!.z]).toEqual([before[k]!.x, before[k]!.y, before[k]!.z]);
+    // Ring 4: RECOVERY_DISTANCE ahead, within RECOVERY_TURN of the heading, within the design turn's reach, facing the aircraft.
+    const r = rings[3]!;
+    const dx = r.x - at[0]!,
+      dz = r.z - at[2]!;
+    expect(Math.hypot(dx, dz)).toBeCloseTo(RECOVERY_DISTANCE, 6);
+    const off = Math.atan2(Math.sin(Math.atan2(dz, dx) - heading), Math.cos(Math.atan2(dz, dx) - heading));
+    expect(Math.abs(off)).toBeLessThanOrEqual(RECOVERY_TURN + 1e-9);
+    expect(designArrival(RECOVERY_DISTANCE * Math.cos(off), RECOVERY_DISTANCE * Math.sin(off))).not.toBeNull();
+    const d = Math.hypot(dx, r.y - at[1]!, dz);
+    expect((dx * r.nx + (r.y - at[1]!) * r.ny + dz * r.nz) / d).toBeCloseTo(1, 9);
+    expect(crossRing(r, at, [at[0]! + 2 * dx, at[1]! + 2 * (r.y - at[1]!), at[2]! + 2 * dz])).toBe('passed');
+    // The rings after keep their spacing and turns (level distances; the angle between legs), and their clearance.
+    const leg = (rs: readonly Ring[], k: number) => [rs[k + 1]!.x - rs[k]!.x, rs[k + 1]!.z - rs[k]!.z] as const;
+    for (let k = 3; k < 9; k++) {
+      const [ax, az] = leg(rings, k),
+        [bx, bz] = leg(before, k);
+      expect(Math.hypot(ax, az)).toBeCloseTo(Math.hypot(bx, bz), 6);
+      if (k < 8) {
+        const turn = (rs: readonly Ring[]) => {
+          const [px, pz] = leg(rs, k),
+            [qx, qz] = leg(rs, k + 1);
+          return Math.atan2(px * qz - pz * qx, px * qx + pz * qz);
+        };
+        expect(turn(rings)).toBeCloseTo(turn(before), 9);
+      }
+    }
+    for (const q of rings.slice(3)) expect(q.y).toBeGreaterThanOrEqual(terrainHeight(terrain, q.x, q.z) + RING_CLEARANCE - 1e-9);
+    // A ring not ahead is left alone; bad input is refused with the function and parameter named.
+    const passed = rings.map((q) => ({ ...q }));
+    relayAfterMiss(rings, 2, at, heading, terrain);
+    expect(rings).toEqual(passed);
+    expect(() => relayAfterMiss(rings, 3, [0, Number.NaN, 0], 0, terrain)).toThrow(/relayAfterMiss: position must be 3 finite numbers/);
+    expect(() => relayAfterMiss(rings, 3, [0, 0, 0], Number.NaN, terrain)).toThrow(/relayAfterMiss: heading must be a finite number/);
+    expect(() => relayAfterMiss(rings, 3.5, [0, 0, 0], 0, terrain)).toThrow(/relayAfterMiss: from must be an integer, got 3.5/);
   });
 });
