@@ -1,9 +1,10 @@
 /**
  * Rotating cube: rigid-body rotation in 3D. By default (mode 'room') a 1 m cube falls tumbling into a
  * room and collides with the floor and the walls (a box collider and 3D box contacts): it lands,
- * tumbles, slides and bounces off them. The challenge: rest it on five glowing pads in turn, against
- * the clock (from the first move), the last four with a given face on top (roll it to turn that face
- * up, slide it there), each pad smaller than the one before. A click or tap on the floor pushes the cube towards that point, just hard enough that
+ * tumbles, slides and bounces off them. The challenge: rest it on five glowing pads in turn, the last
+ * four with a given face on top and reached by a roll (a slide keeps the top face, so the player slides
+ * to the side of the pad from which a roll brings that face up), each pad smaller than the one before;
+ * stars by rolls against the layout's par (scene.ts `padPar`). A click or tap on the floor pushes the cube towards that point, just hard enough that
  * sliding on a face it stops there (`slideSpeed`); a click on the cube flicks it away from the point
  * clicked at a fixed speed; W A S D roll it over its edges in the screen's directions and Q E spin it
  * (a couple of forces from `applyForceAtPoint` in a forces-stage system, which stops pushing once it
@@ -21,8 +22,8 @@
  * spin; Space jump (room); M switches mode (room, cube on a pivot, flip); P pause, N single step, R reset.
  * Click: room: the floor, a push there; the cube, a flick away from the point; pivot: an impulse at the
  * point of the face clicked along the ray. Drag: orbit.
- * Challenges: room: rest the cube on five pads in turn, the last four with a given face up (stars by
- * time); flip: 10 flips in 20 s, counted only while the spin is within FLIP_BAND.
+ * Challenges: room: rest the cube on five pads in turn, the last four rolled onto with a given face up
+ * (stars by rolls against par); flip: 10 flips in 20 s, counted only while the spin is within FLIP_BAND.
  * Each run (page load or R) lays the pads out afresh from a seed (scene.ts `padLayout`); the face net at
  * the top left of the stage shows which colour each roll key brings on top.
  * URL: ?mode=room|cube|flip (default room), ?spin=rad/s (flip), ?seed=N (the same pad layout every run).
@@ -81,10 +82,11 @@ import {
   type Mode,
   PAD_COUNT,
   PAD_HALF,
-  PAD_STAR_TIMES,
+  PAR_SLACK,
   PadChallenge,
   type PadLayout,
   padLayout,
+  padPar,
   padStars,
   ROLL_SPIN_MAX,
   ROLL_TORQUE,
@@ -130,8 +132,8 @@ let layout: PadLayout = padLayout(fixedSeed ?? Math.floor(Math.random() * 2 ** 3
 /** Room mode's challenge (the pads) and flip mode's (flips in FLIP_TIME); reset with the world. */
 const pads = new PadChallenge(),
   flips = new FlipChallenge();
-/** Best round of this page visit: pad round time, s, and most flips. */
-let bestPadTime = Infinity,
+/** Best round of this page visit: fewest rolls in a pad round, and most flips. */
+let bestRolls = Infinity,
   bestFlips = 0;
 /** Arrow length per rad/s of angular velocity, m: set per world so the starting spin shows as ARROW_LENGTH. */
 let omegaScale = 1;
@@ -452,10 +454,9 @@ function celebrate(): void {
     sound.chime(PAD_PITCHES[r.pad] ?? 880, last ? 0.3 : 0.35);
     if (last) window.setTimeout(() => sound.chime(1568, 0.8), 180);
     const perfect = r.miss <= PERFECT ? ' · Perfect!' : '';
-    const time = pads.time(r.time);
     showPop(
       last
-        ? `All ${layout.pads.length} pads! ${time.toFixed(1)} s ${stars(padStars(time))}`
+        ? `All ${layout.pads.length} pads! ${pads.rolls} rolls (par ${padPar(layout)}) ${stars(padStars(pads.rolls, padPar(layout)))}`
         : `Pad ${r.pad + 1} of ${layout.pads.length} ✓${perfect}`,
       last ? 2600 : 1100,
     );
@@ -755,6 +756,8 @@ function clickAt(ndcX: number, ndcY: number): boolean {
     const c = shell.world.components,
       m = c.Mass.value[e]!;
     pads.start(shell.world.time);
+    // A slide keeps the top face: the next pad that wants a face must be rolled onto after it.
+    pads.slid();
     applyImpulse(shell.world, e, [m * (p.dx * p.speed - c.Velocity.x[e]!), 0, m * (p.dz * p.speed - c.Velocity.z[e]!)]);
     lastPush = { ...p };
     sound.launch(0.25 + (0.5 * p.speed) / 7);
@@ -845,19 +848,18 @@ function updateStatus(wx: number, wy: number, wz: number): void {
       ? 'Tap the floor: the cube slides there · ▲◀▼▶ roll it'
       : 'Click the floor: the cube slides there · W A S D roll it · Space jumps';
     const want = layout.faces[pads.pad] ?? -1;
+    const par = padPar(layout);
     if (want >= 0 && !pads.done)
-      flick = touch
-        ? `Roll it (▲◀▼▶) till ${FACE_NAMES[want]} is on top (the net shows which), then tap the pad`
-        : `Roll it (W A S D) till ${FACE_NAMES[want]} is on top (the net shows which), then click the pad`;
+      flick = `${touch ? 'Tap' : 'Click'} beside the pad to slide there, then ROLL on (${touch ? '▲◀▼▶' : 'W A S D'}) so ${FACE_NAMES[want]} lands on top: a slide onto it does not count`;
     const time = pads.time(t);
     if (pads.startedAt < 0 && !pads.done)
       flick = touch ? `Clock starts at your first tap · ${flick}` : `Clock starts at your first move · ${flick}`;
     if (pads.done) {
-      if (time < bestPadTime) bestPadTime = time;
+      if (pads.rolls < bestRolls) bestRolls = pads.rolls;
       status.set(
         {
-          goal: `All ${layout.pads.length} pads in ${time.toFixed(1)} s ${stars(padStars(time))}`,
-          numbers: `best ${bestPadTime.toFixed(1)} s · ★★★ within ${PAD_STAR_TIMES[0]} s`,
+          goal: `All ${layout.pads.length} pads in ${pads.rolls} rolls (par ${par}), ${time.toFixed(1)} s ${stars(padStars(pads.rolls, par))}`,
+          numbers: `best ${bestRolls} rolls · ★★★ within ${par + PAR_SLACK[0]} rolls`,
           hint: touch
             ? '↻: a new layout · Mode: free spin, then the flip challenge'
             : 'R: a new layout · M: next mode (free spin, then the flip challenge)',
@@ -866,8 +868,8 @@ function updateStatus(wx: number, wy: number, wz: number): void {
       );
     } else
       status.set({
-        goal: `Land the cube on the glowing pad${want >= 0 ? `, ${FACE_NAMES[want]} face up` : ', any face up'} (${pads.pad + 1} of ${layout.pads.length})`,
-        numbers: `Pads ${'●'.repeat(pads.pad)}${'○'.repeat(layout.pads.length - pads.pad)} ${pads.pad}/${layout.pads.length} · ${time.toFixed(1)} s · ${stars(padStars(time))}`,
+        goal: `Land the cube on the glowing pad${want >= 0 ? `, rolling on with ${FACE_NAMES[want]} up` : ', any face up'} (${pads.pad + 1} of ${layout.pads.length})`,
+        numbers: `Pads ${'●'.repeat(pads.pad)}${'○'.repeat(layout.pads.length - pads.pad)} ${pads.pad}/${layout.pads.length} · rolls ${pads.rolls} (par ${par}) ${stars(padStars(pads.rolls, par))} · ${time.toFixed(1)} s`,
         hint: flick,
       });
   } else if (params.mode === 'flip') {
@@ -1182,6 +1184,10 @@ shell.expose({
     pads: layout.pads.map((p) => [p[0], p[1]]),
     faces: [...layout.faces],
     halves: [...layout.halves],
+    /** Rolls made in the round (changes of the face on top), the round's par (`padPar`), and whether the cube rolled since its last slide. */
+    rolls: pads.rolls,
+    par: padPar(layout),
+    rolled: pads.rolled,
     flips: flips.counter.count,
     flipsWonAt: flips.wonAt,
   }),
