@@ -319,6 +319,12 @@ function push(): number {
   return params.mode === 'room' ? ROOM_PUSH : 1;
 }
 
+/** The first input of a round starts its clock: the pads' in the room, the flips' in flip mode. */
+function startClock(): void {
+  if (params.mode === 'room') pads.start(shell.world.time);
+  else if (params.mode === 'flip') flips.start(shell.world.time);
+}
+
 /** Space: in room mode, a jump (an impulse up at the centre of mass). */
 function jump(): void {
   if (params.mode !== 'room') return;
@@ -481,7 +487,7 @@ window.addEventListener('keydown', (event) => {
   const k = event.key.toLowerCase();
   if (!TORQUE_KEYS.includes(k) || typing(event.target) || event.ctrlKey || event.metaKey || event.altKey) return;
   // The round's clock starts with the player's first move.
-  if (params.mode === 'room') pads.start(shell.world.time);
+  startClock();
   held.add(k);
   pressed.add(k);
   event.preventDefault();
@@ -768,6 +774,7 @@ function clickAt(ndcX: number, ndcY: number): boolean {
   if (!hit || hit.eid !== e) return false;
   rayDir.set(ndcX, ndcY, 0.5).unproject(app.camera).sub(app.camera.position).normalize();
   const J = params.impulse * push();
+  startClock();
   applyImpulseAtPoint(shell.world, e, [rayDir.x * J, rayDir.y * J, rayDir.z * J], hit.point);
   flash = 12;
   return true;
@@ -889,15 +896,18 @@ function updateStatus(wx: number, wy: number, wz: number): void {
         ? {
             goal:
               flips.wonAt >= 0
-                ? `${FLIP_GOAL} flips in ${flips.wonAt.toFixed(1)} s ${stars(3)}`
+                ? `${FLIP_GOAL} flips in ${flips.time(t).toFixed(1)} s ${stars(3)}`
                 : `Time! ${n} flips ${stars(flips.stars())}`,
             numbers: `best ${bestFlips} flips · |ω| ${w.toFixed(1)} rad/s`,
             hint: touch ? '↻: try again · Mode: back to the pads' : 'R: try again · M: back to the pads',
           }
         : {
             goal: `Make the box flip ${FLIP_GOAL} times in ${FLIP_TIME} s, spinning at ${lo} to ${hi} rad/s`,
-            numbers: `Flips ${n}/${FLIP_GOAL} · ${Math.max(0, FLIP_TIME - t).toFixed(1)} s left · |ω| ${w.toFixed(1)} ${inBand ? '✓' : '✗'}`,
-            hint: `Flips count only in the band: ${band}`,
+            numbers: `Flips ${n}/${FLIP_GOAL} · ${(FLIP_TIME - flips.time(t)).toFixed(1)} s left · |ω| ${w.toFixed(1)} ${inBand ? '✓' : '✗'}`,
+            hint:
+              flips.startedAt < 0
+                ? `Clock starts at your first ${touch ? 'tap' : 'key'} · ${band}`
+                : `Flips count only in the band: ${band}`,
           },
       over && flips.wonAt >= 0,
     );
@@ -1191,6 +1201,8 @@ shell.expose({
     flips: flips.counter.count,
     flipsWonAt: flips.wonAt,
   }),
+  /** Starts the round's clock (the pads' or the flips'), as the player's first input does. */
+  startClock,
   /** Clicks at (ndcX, ndcY) as the mouse would; returns whether the cube was pushed (on the pivot: hit). */
   clickAt,
   /**

@@ -545,33 +545,46 @@ export class PadChallenge {
 
 /**
  * Flip mode's challenge: count the box's flips (`FlipCounter`) made with its spin inside FLIP_BAND
- * over the first FLIP_TIME seconds of the world; won when FLIP_GOAL flips come within the time
- * (`wonAt`), lost when the time runs out first.
+ * over FLIP_TIME seconds from `startedAt`, the world time of the player's first input (`start`: like
+ * the pads' clock, reading the goal costs nothing; nothing counts before it); won when FLIP_GOAL
+ * flips come within the time (`wonAt`), lost when the time runs out first.
  */
 export class FlipChallenge {
   /** The flips counted. */
   readonly counter = new FlipCounter();
   /** World time the goal was reached, s, or -1. */
   wonAt = -1;
+  /** World time the round's clock started (the first input), s, or -1 before it. */
+  startedAt = -1;
   private readonly L = new Float64Array(3);
   private readonly axis = new Float64Array(3);
   /** Starts again. */
   reset(): void {
     this.counter.reset();
     this.wonAt = -1;
+    this.startedAt = -1;
   }
-  /** Whether the round is over (won, or FLIP_TIME passed). */
+  /** Starts the round's clock at world time `time`, s (only the first call counts). */
+  start(time: number): void {
+    if (this.startedAt < 0) this.startedAt = time;
+  }
+  /** The round's clock at world time `now`, s: 0 before the start, at most FLIP_TIME, the time taken once won. */
+  time(now: number): number {
+    if (this.startedAt < 0) return 0;
+    return Math.min(FLIP_TIME, Math.max(0, (this.wonAt >= 0 ? this.wonAt : now) - this.startedAt));
+  }
+  /** Whether the round is over (won, or FLIP_TIME passed since the start). */
   over(world: PhysicsWorld): boolean {
-    return this.wonAt >= 0 || world.time >= FLIP_TIME;
+    return this.wonAt >= 0 || (this.startedAt >= 0 && world.time - this.startedAt >= FLIP_TIME);
   }
   /** Stars of the round so far: 3 for FLIP_GOAL flips, 2 for FLIP_GOAL - 2, 1 for FLIP_GOAL - 4, else 0. */
   stars(): number {
     const n = this.counter.count;
     return n >= FLIP_GOAL ? 3 : n >= FLIP_GOAL - 2 ? 2 : n >= FLIP_GOAL - 4 ? 1 : 0;
   }
-  /** Feeds the body's state after a step of `world` (nothing once the round is over). */
+  /** Feeds the body's state after a step of `world` (nothing before the start or once the round is over). */
   update(world: PhysicsWorld, body: number): void {
-    if (this.over(world)) return;
+    if (this.startedAt < 0 || this.over(world)) return;
     const L = this.L,
       a = this.axis,
       q = world.components.Orientation;

@@ -354,12 +354,28 @@ describe('rotating-cube challenges', () => {
         torqueCouple(h.body, () => pilot(world.time, Math.hypot(W.x[h.body]!, W.y[h.body]!, W.z[h.body]!))),
       );
       addSystem(world, 'finalize', (w) => flips.update(w, h.body));
+      flips.start(world.time); // the first input at the world's start
       while (world.time < FLIP_TIME + 1) step(world);
       expect(flips.over(world)).toBe(true);
       return flips;
     };
     const [lo, hi] = FLIP_BAND;
     expect(lo).toBeGreaterThan(6); // the start spin is below the band
+    // The clock starts at the first input, not at the mode switch: 25 s untouched and the round is
+    // neither over nor counting; started at 25 s, it ends FLIP_TIME later.
+    {
+      const world = createPhysicsWorld(rotatingCubeWorldOptions('flip'));
+      const h = buildRotatingCube(world, { mode: 'flip', spin: 10 });
+      const flips = new FlipChallenge();
+      addSystem(world, 'finalize', (w) => flips.update(w, h.body));
+      while (world.time < 25) step(world);
+      expect([flips.over(world), flips.counter.count, flips.time(world.time)]).toEqual([false, 0, 0]);
+      flips.start(world.time);
+      while (world.time < 25 + FLIP_TIME - 0.1) step(world);
+      expect(flips.over(world)).toBe(false);
+      while (world.time < 25 + FLIP_TIME + 0.1) step(world);
+      expect(flips.over(world)).toBe(true);
+    }
     const idle = run(() => [0, 0, 0]);
     expect(idle.wonAt).toBe(-1);
     expect(idle.counter.count).toBe(0);
