@@ -486,8 +486,9 @@ function typing(target: EventTarget | null): boolean {
 window.addEventListener('keydown', (event) => {
   const k = event.key.toLowerCase();
   if (!TORQUE_KEYS.includes(k) || typing(event.target) || event.ctrlKey || event.metaKey || event.altKey) return;
-  // The round's clock starts with the player's first move.
+  // The round's clock starts with the player's first move; a roll or spin leaves the last aim stale.
   startClock();
+  clearAim();
   held.add(k);
   pressed.add(k);
   event.preventDefault();
@@ -665,7 +666,11 @@ canvas.addEventListener('pointerup', (event) => {
   downId = -1;
   if (Math.hypot(event.clientX - downX, event.clientY - downY) > (event.pointerType === 'mouse' ? CLICK_SLOP : TAP_SLOP)) return;
   app.toNdc(event.clientX, event.clientY, ndc);
-  if (clickAt(ndc[0], ndc[1]) && event.pointerType !== 'mouse') aimUntil = performance.now() + 600;
+  // After a push its aim shows briefly (until the cube gets there, or a roll), then only a new hover shows one.
+  if (clickAt(ndc[0], ndc[1])) {
+    hover = false;
+    aimUntil = performance.now() + 600;
+  }
 });
 // A mouse shows where a click would push the cube; a finger (no hover) sees it after its tap.
 canvas.addEventListener('pointermove', (event) => {
@@ -680,6 +685,11 @@ canvas.addEventListener('pointerleave', () => {
 });
 /** Whether the mouse hovers over a point a click would push the cube to. */
 let hover = false;
+/** Hides the aim marker (the arrow and the ring) until the mouse moves again: a roll makes it stale. */
+function clearAim(): void {
+  hover = false;
+  aimUntil = 0;
+}
 
 const rayDir = new Vector3();
 /** What a room click at a point does: a push of the cube at `speed` m/s along (dx, dz) (unit), aiming at (x, z). */
@@ -1137,7 +1147,12 @@ function frame(): void {
     (burst.material as MeshBasicMaterial).opacity = 1 - age;
   }
   // The aim: an arrow on the floor from the cube the way a click would push it, to the point it would stop.
-  const aimed = room && now < aimUntil && (hover ? aim : lastPush);
+  let aimed = room && now < aimUntil && (hover ? aim : lastPush);
+  // A push's aim goes once the cube has got there.
+  if (aimed && !hover && Math.hypot(P.x[e]! - aimed.x, P.z[e]! - aimed.z) < 0.3) {
+    aimUntil = 0;
+    aimed = false;
+  }
   if (aimed) {
     const ox = P.x[e]!,
       oz = P.z[e]!;
@@ -1210,6 +1225,8 @@ shell.expose({
    * from the face), its unit direction (dx, dz), speed (m/s) and the point it aims at (x, z, m); or null.
    */
   lastPush: (): Push | null => (lastPush ? { ...lastPush } : null),
+  /** Whether the aim marker (the arrow from the cube and the ring where a push would stop it) is drawn. */
+  aimShown: (): boolean => aimRing.visible,
   /** The pop over the scene: its text and whether it shows. */
   pop: () => ({ text: pop.textContent ?? '', shown: pop.style.opacity === '1' }),
   /** Sounds played so far (the pads' chimes, pushes, impacts; 0 until the first input starts the audio). */
