@@ -1,9 +1,10 @@
 /**
  * Rotating cube: rigid-body rotation in 3D. By default (mode 'room') a 1 m cube falls tumbling into a
  * room and collides with the floor and the walls (a box collider and 3D box contacts): it lands,
- * tumbles, slides and bounces off them. The challenge: rest it on five glowing pads in turn, against
- * the clock (from the first move), the last four with a given face on top (roll it to turn that face
- * up, slide it there), each pad smaller than the one before. A click or tap on the floor pushes the cube towards that point, just hard enough that
+ * tumbles, slides and bounces off them. The challenge: rest it on five glowing pads in turn, the last
+ * four with a given face on top and reached by a roll (a slide keeps the top face, so the player slides
+ * to the side of the pad from which a roll brings that face up), each pad smaller than the one before;
+ * stars by rolls against the layout's par (scene.ts `padPar`). A click or tap on the floor pushes the cube towards that point, just hard enough that
  * sliding on a face it stops there (`slideSpeed`); a click on the cube flicks it away from the point
  * clicked at a fixed speed; W A S D roll it over its edges in the screen's directions and Q E spin it
  * (a couple of forces from `applyForceAtPoint` in a forces-stage system, which stops pushing once it
@@ -21,8 +22,8 @@
  * spin; Space jump (room); M switches mode (room, cube on a pivot, flip); P pause, N single step, R reset.
  * Click: room: the floor, a push there; the cube, a flick away from the point; pivot: an impulse at the
  * point of the face clicked along the ray. Drag: orbit.
- * Challenges: room: rest the cube on five pads in turn, the last four with a given face up (stars by
- * time); flip: 10 flips in 20 s, counted only while the spin is within FLIP_BAND.
+ * Challenges: room: rest the cube on five pads in turn, the last four rolled onto with a given face up
+ * (stars by rolls against par); flip: 10 flips in 20 s, counted only while the spin is within FLIP_BAND.
  * Each run (page load or R) lays the pads out afresh from a seed (scene.ts `padLayout`); the face net at
  * the top left of the stage shows which colour each roll key brings on top.
  * URL: ?mode=room|cube|flip (default room), ?spin=rad/s (flip), ?seed=N (the same pad layout every run).
@@ -81,10 +82,11 @@ import {
   type Mode,
   PAD_COUNT,
   PAD_HALF,
-  PAD_STAR_TIMES,
+  PAR_SLACK,
   PadChallenge,
   type PadLayout,
   padLayout,
+  padPar,
   padStars,
   ROLL_SPIN_MAX,
   ROLL_TORQUE,
@@ -130,8 +132,8 @@ let layout: PadLayout = padLayout(fixedSeed ?? Math.floor(Math.random() * 2 ** 3
 /** Room mode's challenge (the pads) and flip mode's (flips in FLIP_TIME); reset with the world. */
 const pads = new PadChallenge(),
   flips = new FlipChallenge();
-/** Best round of this page visit: pad round time, s, and most flips. */
-let bestPadTime = Infinity,
+/** Best round of this page visit: fewest rolls in a pad round, and most flips. */
+let bestRolls = Infinity,
   bestFlips = 0;
 /** Arrow length per rad/s of angular velocity, m: set per world so the starting spin shows as ARROW_LENGTH. */
 let omegaScale = 1;
@@ -317,6 +319,12 @@ function push(): number {
   return params.mode === 'room' ? ROOM_PUSH : 1;
 }
 
+/** The first input of a round starts its clock: the pads' in the room, the flips' in flip mode. */
+function startClock(): void {
+  if (params.mode === 'room') pads.start(shell.world.time);
+  else if (params.mode === 'flip') flips.start(shell.world.time);
+}
+
 /** Space: in room mode, a jump (an impulse up at the centre of mass). */
 function jump(): void {
   if (params.mode !== 'room') return;
@@ -452,10 +460,9 @@ function celebrate(): void {
     sound.chime(PAD_PITCHES[r.pad] ?? 880, last ? 0.3 : 0.35);
     if (last) window.setTimeout(() => sound.chime(1568, 0.8), 180);
     const perfect = r.miss <= PERFECT ? ' · Perfect!' : '';
-    const time = pads.time(r.time);
     showPop(
       last
-        ? `All ${layout.pads.length} pads! ${time.toFixed(1)} s ${stars(padStars(time))}`
+        ? `All ${layout.pads.length} pads! ${pads.rolls} rolls (par ${padPar(layout)}) ${stars(padStars(pads.rolls, padPar(layout)))}`
         : `Pad ${r.pad + 1} of ${layout.pads.length} ✓${perfect}`,
       last ? 2600 : 1100,
     );
@@ -479,8 +486,9 @@ function typing(target: EventTarget | null): boolean {
 window.addEventListener('keydown', (event) => {
   const k = event.key.toLowerCase();
   if (!TORQUE_KEYS.includes(k) || typing(event.target) || event.ctrlKey || event.metaKey || event.altKey) return;
-  // The round's clock starts with the player's first move.
-  if (params.mode === 'room') pads.start(shell.world.time);
+  // The round's clock starts with the player's first move; a roll or spin leaves the last aim stale.
+  startClock();
+  clearAim();
   held.add(k);
   pressed.add(k);
   event.preventDefault();
@@ -658,7 +666,11 @@ canvas.addEventListener('pointerup', (event) => {
   downId = -1;
   if (Math.hypot(event.clientX - downX, event.clientY - downY) > (event.pointerType === 'mouse' ? CLICK_SLOP : TAP_SLOP)) return;
   app.toNdc(event.clientX, event.clientY, ndc);
-  if (clickAt(ndc[0], ndc[1]) && event.pointerType !== 'mouse') aimUntil = performance.now() + 600;
+  // After a push its aim shows briefly (until the cube gets there, or a roll), then only a new hover shows one.
+  if (clickAt(ndc[0], ndc[1])) {
+    hover = false;
+    aimUntil = performance.now() + 600;
+  }
 });
 // A mouse shows where a click would push the cube; a finger (no hover) sees it after its tap.
 canvas.addEventListener('pointermove', (event) => {
@@ -673,6 +685,11 @@ canvas.addEventListener('pointerleave', () => {
 });
 /** Whether the mouse hovers over a point a click would push the cube to. */
 let hover = false;
+/** Hides the aim marker (the arrow and the ring) until the mouse moves again: a roll makes it stale. */
+function clearAim(): void {
+  hover = false;
+  aimUntil = 0;
+}
 
 const rayDir = new Vector3();
 /** What a room click at a point does: a push of the cube at `speed` m/s along (dx, dz) (unit), aiming at (x, z). */
@@ -755,6 +772,8 @@ function clickAt(ndcX: number, ndcY: number): boolean {
     const c = shell.world.components,
       m = c.Mass.value[e]!;
     pads.start(shell.world.time);
+    // A slide keeps the top face: the next pad that wants a face must be rolled onto after it.
+    pads.slid();
     applyImpulse(shell.world, e, [m * (p.dx * p.speed - c.Velocity.x[e]!), 0, m * (p.dz * p.speed - c.Velocity.z[e]!)]);
     lastPush = { ...p };
     sound.launch(0.25 + (0.5 * p.speed) / 7);
@@ -765,6 +784,7 @@ function clickAt(ndcX: number, ndcY: number): boolean {
   if (!hit || hit.eid !== e) return false;
   rayDir.set(ndcX, ndcY, 0.5).unproject(app.camera).sub(app.camera.position).normalize();
   const J = params.impulse * push();
+  startClock();
   applyImpulseAtPoint(shell.world, e, [rayDir.x * J, rayDir.y * J, rayDir.z * J], hit.point);
   flash = 12;
   return true;
@@ -845,19 +865,18 @@ function updateStatus(wx: number, wy: number, wz: number): void {
       ? 'Tap the floor: the cube slides there · ▲◀▼▶ roll it'
       : 'Click the floor: the cube slides there · W A S D roll it · Space jumps';
     const want = layout.faces[pads.pad] ?? -1;
+    const par = padPar(layout);
     if (want >= 0 && !pads.done)
-      flick = touch
-        ? `Roll it (▲◀▼▶) till ${FACE_NAMES[want]} is on top (the net shows which), then tap the pad`
-        : `Roll it (W A S D) till ${FACE_NAMES[want]} is on top (the net shows which), then click the pad`;
+      flick = `${touch ? 'Tap' : 'Click'} beside the pad to slide there, then ROLL on (${touch ? '▲◀▼▶' : 'W A S D'}) so ${FACE_NAMES[want]} lands on top: a slide onto it does not count`;
     const time = pads.time(t);
     if (pads.startedAt < 0 && !pads.done)
       flick = touch ? `Clock starts at your first tap · ${flick}` : `Clock starts at your first move · ${flick}`;
     if (pads.done) {
-      if (time < bestPadTime) bestPadTime = time;
+      if (pads.rolls < bestRolls) bestRolls = pads.rolls;
       status.set(
         {
-          goal: `All ${layout.pads.length} pads in ${time.toFixed(1)} s ${stars(padStars(time))}`,
-          numbers: `best ${bestPadTime.toFixed(1)} s · ★★★ within ${PAD_STAR_TIMES[0]} s`,
+          goal: `All ${layout.pads.length} pads in ${pads.rolls} rolls (par ${par}), ${time.toFixed(1)} s ${stars(padStars(pads.rolls, par))}`,
+          numbers: `best ${bestRolls} rolls · ★★★ within ${par + PAR_SLACK[0]} rolls`,
           hint: touch
             ? '↻: a new layout · Mode: free spin, then the flip challenge'
             : 'R: a new layout · M: next mode (free spin, then the flip challenge)',
@@ -866,8 +885,8 @@ function updateStatus(wx: number, wy: number, wz: number): void {
       );
     } else
       status.set({
-        goal: `Land the cube on the glowing pad${want >= 0 ? `, ${FACE_NAMES[want]} face up` : ', any face up'} (${pads.pad + 1} of ${layout.pads.length})`,
-        numbers: `Pads ${'●'.repeat(pads.pad)}${'○'.repeat(layout.pads.length - pads.pad)} ${pads.pad}/${layout.pads.length} · ${time.toFixed(1)} s · ${stars(padStars(time))}`,
+        goal: `Land the cube on the glowing pad${want >= 0 ? `, rolling on with ${FACE_NAMES[want]} up` : ', any face up'} (${pads.pad + 1} of ${layout.pads.length})`,
+        numbers: `Pads ${'●'.repeat(pads.pad)}${'○'.repeat(layout.pads.length - pads.pad)} ${pads.pad}/${layout.pads.length} · rolls ${pads.rolls} (par ${par}) ${stars(padStars(pads.rolls, par))} · ${time.toFixed(1)} s`,
         hint: flick,
       });
   } else if (params.mode === 'flip') {
@@ -887,15 +906,18 @@ function updateStatus(wx: number, wy: number, wz: number): void {
         ? {
             goal:
               flips.wonAt >= 0
-                ? `${FLIP_GOAL} flips in ${flips.wonAt.toFixed(1)} s ${stars(3)}`
+                ? `${FLIP_GOAL} flips in ${flips.time(t).toFixed(1)} s ${stars(3)}`
                 : `Time! ${n} flips ${stars(flips.stars())}`,
             numbers: `best ${bestFlips} flips · |ω| ${w.toFixed(1)} rad/s`,
             hint: touch ? '↻: try again · Mode: back to the pads' : 'R: try again · M: back to the pads',
           }
         : {
             goal: `Make the box flip ${FLIP_GOAL} times in ${FLIP_TIME} s, spinning at ${lo} to ${hi} rad/s`,
-            numbers: `Flips ${n}/${FLIP_GOAL} · ${Math.max(0, FLIP_TIME - t).toFixed(1)} s left · |ω| ${w.toFixed(1)} ${inBand ? '✓' : '✗'}`,
-            hint: `Flips count only in the band: ${band}`,
+            numbers: `Flips ${n}/${FLIP_GOAL} · ${(FLIP_TIME - flips.time(t)).toFixed(1)} s left · |ω| ${w.toFixed(1)} ${inBand ? '✓' : '✗'}`,
+            hint:
+              flips.startedAt < 0
+                ? `Clock starts at your first ${touch ? 'tap' : 'key'} · ${band}`
+                : `Flips count only in the band: ${band}`,
           },
       over && flips.wonAt >= 0,
     );
@@ -1125,7 +1147,12 @@ function frame(): void {
     (burst.material as MeshBasicMaterial).opacity = 1 - age;
   }
   // The aim: an arrow on the floor from the cube the way a click would push it, to the point it would stop.
-  const aimed = room && now < aimUntil && (hover ? aim : lastPush);
+  let aimed = room && now < aimUntil && (hover ? aim : lastPush);
+  // A push's aim goes once the cube has got there.
+  if (aimed && !hover && Math.hypot(P.x[e]! - aimed.x, P.z[e]! - aimed.z) < 0.3) {
+    aimUntil = 0;
+    aimed = false;
+  }
   if (aimed) {
     const ox = P.x[e]!,
       oz = P.z[e]!;
@@ -1182,9 +1209,15 @@ shell.expose({
     pads: layout.pads.map((p) => [p[0], p[1]]),
     faces: [...layout.faces],
     halves: [...layout.halves],
+    /** Rolls made in the round (changes of the face on top), the round's par (`padPar`), and whether the cube rolled since its last slide. */
+    rolls: pads.rolls,
+    par: padPar(layout),
+    rolled: pads.rolled,
     flips: flips.counter.count,
     flipsWonAt: flips.wonAt,
   }),
+  /** Starts the round's clock (the pads' or the flips'), as the player's first input does. */
+  startClock,
   /** Clicks at (ndcX, ndcY) as the mouse would; returns whether the cube was pushed (on the pivot: hit). */
   clickAt,
   /**
@@ -1192,6 +1225,8 @@ shell.expose({
    * from the face), its unit direction (dx, dz), speed (m/s) and the point it aims at (x, z, m); or null.
    */
   lastPush: (): Push | null => (lastPush ? { ...lastPush } : null),
+  /** Whether the aim marker (the arrow from the cube and the ring where a push would stop it) is drawn. */
+  aimShown: (): boolean => aimRing.visible,
   /** The pop over the scene: its text and whether it shows. */
   pop: () => ({ text: pop.textContent ?? '', shown: pop.style.opacity === '1' }),
   /** Sounds played so far (the pads' chimes, pushes, impacts; 0 until the first input starts the audio). */

@@ -309,8 +309,10 @@ export const CLASSIC_LAYOUT: PadLayout = Object.freeze({
  * the one before and 1.4 m from every other (none overlap); the first takes any face, the others each want one, in a sequence that grows
  * harder: the second a face beside LANDING_FACE (one roll), then the face opposite the previous
  * pad's (two rolls), then one beside it, then the opposite again; the pads shrink (PAD_HALVES).
- * Always solvable: a slide keeps the face on top, and from the room's centre any face comes up in at
- * most two rolls (2 m, inside the 6 m room), so slide to the centre, roll, slide onto the pad.
+ * Always solvable by rolling on (`PadChallenge`): a pad lies within PAD_REACH of the centre, so along
+ * each axis the spot 1 m to one side of it (a roll's length) lies within ROOM_HALF - 0.9 m of the
+ * centre, where the cube fits; set the wanted face up as a side facing away from the pad (rolls
+ * elsewhere, Q/E spins), slide to that spot (a slide keeps the faces) and roll on.
  * @param seed any finite number (floored to an integer).
  * @throws RangeError if `seed` is not finite.
  */
@@ -372,11 +374,23 @@ export function topFace(world: PhysicsWorld, body: number): number {
   return 2 * best + (up[best]! < 0 ? 1 : 0);
 }
 /**
- * Room challenge: the time of three stars and of two, s (over: one star). The first two pads take a
- * click each (the cube slides there in 1 to 2 s); the last three a roll or two each to turn the wanted
- * face up (about 0.6 s a roll) and a click.
+ * The fewest rolls that can finish a round of `layout`: a pad that takes any face, or comes after one
+ * that does, 1 (roll onto it; the player chose the face before); a pad whose face lies beside the one
+ * the pad before wanted (on top when the cube left it), 1 (slide to the pad's side where that face
+ * faces away from the pad, turning it with Q/E if need be, and roll on: a slide and a spin keep the
+ * top); the same face or the opposite one, 2 (one roll to put it on a side first).
+ * @returns an integer >= the layout's pad count.
  */
-export const PAD_STAR_TIMES: readonly [number, number] = Object.freeze([30, 60]) as readonly [number, number];
+export function padPar(layout: PadLayout): number {
+  let par = 0;
+  layout.faces.forEach((face, k) => {
+    const prev = k > 0 ? layout.faces[k - 1]! : -1;
+    par += face < 0 || prev < 0 || face >> 1 !== prev >> 1 ? 1 : 2;
+  });
+  return par;
+}
+/** Room challenge: three stars for a round within par + PAR_SLACK[0] rolls, two within par + PAR_SLACK[1], else one. */
+export const PAR_SLACK: readonly [number, number] = Object.freeze([1, 5]) as readonly [number, number];
 
 /**
  * Whether `body` rests on the pad centred at (px, pz) (m): its centre within `half` (m, default
@@ -392,9 +406,15 @@ export function restsOnPad(world: PhysicsWorld, body: number, px: number, pz: nu
   return Math.hypot(V.x[body]!, V.y[body]!, V.z[body]!) < 0.2 && Math.hypot(W.x[body]!, W.y[body]!, W.z[body]!) < 0.5;
 }
 
-/** Stars for a pad round finished in `seconds` (s): 3 within PAD_STAR_TIMES[0], 2 within [1], else 1. */
-export function padStars(seconds: number): number {
-  return seconds <= PAD_STAR_TIMES[0] ? 3 : seconds <= PAD_STAR_TIMES[1] ? 2 : 1;
+/**
+ * Stars for a pad round finished in `rolls` rolls against `par` (`padPar`): 3 within par +
+ * PAR_SLACK[0], 2 within par + PAR_SLACK[1], else 1.
+ * @throws RangeError if `rolls` or `par` is not a finite number >= 0.
+ */
+export function padStars(rolls: number, par: number): number {
+  if (!(rolls >= 0) || !Number.isFinite(rolls)) throw new RangeError(`padStars: rolls must be a finite number >= 0, got ${rolls}`);
+  if (!(par >= 0) || !Number.isFinite(par)) throw new RangeError(`padStars: par must be a finite number >= 0, got ${par}`);
+  return rolls <= par + PAR_SLACK[0] ? 3 : rolls <= par + PAR_SLACK[1] ? 2 : 1;
 }
 
 /** Flip mode's challenge: flips to make, and the time allowed, s. */
@@ -446,7 +466,10 @@ export class FlipCounter {
 /**
  * Room mode's challenge, a round of pads laid out by a `PadLayout` (default CLASSIC_LAYOUT): the pad
  * `pad` is lit; when the cube rests on it (`restsOnPad`, within its half edge) with the face the pad
- * wants on top (`topFace`) the next one lights; after the last the round is over at `doneAt` (world
+ * wants on top (`topFace`) the next one lights. A pad that wants a face counts only when the cube
+ * ROLLED onto it: its top face changed after the last slide (`slid`), so the route to it matters (a
+ * slide keeps the top face, and rolling on changes it: the player picks the side to roll on from).
+ * The rolls (changes of the top face) are counted for the stars against `padPar`; after the last the round is over at `doneAt` (world
  * time, s). The round's clock runs from `startedAt`, the world time of the player's first input
  * (`start`), not from the world's start, so reading the help costs nothing.
  */
@@ -459,6 +482,12 @@ export class PadChallenge {
   doneAt = -1;
   /** World time the round's clock started (the first input), s, or -1 before it. */
   startedAt = -1;
+  /** Rolls made in the round so far (changes of the face on top), >= 0. */
+  rolls = 0;
+  /** Whether the top face changed since the last slide (`slid`): a pad that wants a face counts only then. */
+  rolled = false;
+  /** The face on top at the last `update` (index into FACES), or -1 before the first. */
+  private lastTop = -1;
   /** @param layout the round's pads (default CLASSIC_LAYOUT). */
   constructor(layout: PadLayout = CLASSIC_LAYOUT) {
     this.layout = layout;
@@ -469,6 +498,13 @@ export class PadChallenge {
     this.pad = 0;
     this.doneAt = -1;
     this.startedAt = -1;
+    this.rolls = 0;
+    this.rolled = false;
+    this.lastTop = -1;
+  }
+  /** Marks a slide (a push of the cube): the next pad that wants a face needs a roll onto it first. */
+  slid(): void {
+    this.rolled = false;
   }
   /** Starts the round's clock at world time `time`, s (only the first call counts). */
   start(time: number): void {
@@ -490,10 +526,16 @@ export class PadChallenge {
   update(world: PhysicsWorld, body: number): boolean {
     const { pads, faces, halves } = this.layout;
     if (this.done) return false;
+    const top = topFace(world, body);
+    if (this.lastTop >= 0 && top !== this.lastTop) {
+      this.rolls++;
+      this.rolled = true;
+    }
+    this.lastTop = top;
     const spot = pads[this.pad]!,
       face = faces[this.pad]!;
     if (!restsOnPad(world, body, spot[0], spot[1], halves[this.pad]!)) return false;
-    if (face >= 0 && topFace(world, body) !== face) return false;
+    if (face >= 0 && (top !== face || !this.rolled)) return false;
     this.start(world.time);
     this.pad++;
     if (this.pad === pads.length) this.doneAt = world.time;
@@ -503,33 +545,46 @@ export class PadChallenge {
 
 /**
  * Flip mode's challenge: count the box's flips (`FlipCounter`) made with its spin inside FLIP_BAND
- * over the first FLIP_TIME seconds of the world; won when FLIP_GOAL flips come within the time
- * (`wonAt`), lost when the time runs out first.
+ * over FLIP_TIME seconds from `startedAt`, the world time of the player's first input (`start`: like
+ * the pads' clock, reading the goal costs nothing; nothing counts before it); won when FLIP_GOAL
+ * flips come within the time (`wonAt`), lost when the time runs out first.
  */
 export class FlipChallenge {
   /** The flips counted. */
   readonly counter = new FlipCounter();
   /** World time the goal was reached, s, or -1. */
   wonAt = -1;
+  /** World time the round's clock started (the first input), s, or -1 before it. */
+  startedAt = -1;
   private readonly L = new Float64Array(3);
   private readonly axis = new Float64Array(3);
   /** Starts again. */
   reset(): void {
     this.counter.reset();
     this.wonAt = -1;
+    this.startedAt = -1;
   }
-  /** Whether the round is over (won, or FLIP_TIME passed). */
+  /** Starts the round's clock at world time `time`, s (only the first call counts). */
+  start(time: number): void {
+    if (this.startedAt < 0) this.startedAt = time;
+  }
+  /** The round's clock at world time `now`, s: 0 before the start, at most FLIP_TIME, the time taken once won. */
+  time(now: number): number {
+    if (this.startedAt < 0) return 0;
+    return Math.min(FLIP_TIME, Math.max(0, (this.wonAt >= 0 ? this.wonAt : now) - this.startedAt));
+  }
+  /** Whether the round is over (won, or FLIP_TIME passed since the start). */
   over(world: PhysicsWorld): boolean {
-    return this.wonAt >= 0 || world.time >= FLIP_TIME;
+    return this.wonAt >= 0 || (this.startedAt >= 0 && world.time - this.startedAt >= FLIP_TIME);
   }
   /** Stars of the round so far: 3 for FLIP_GOAL flips, 2 for FLIP_GOAL - 2, 1 for FLIP_GOAL - 4, else 0. */
   stars(): number {
     const n = this.counter.count;
     return n >= FLIP_GOAL ? 3 : n >= FLIP_GOAL - 2 ? 2 : n >= FLIP_GOAL - 4 ? 1 : 0;
   }
-  /** Feeds the body's state after a step of `world` (nothing once the round is over). */
+  /** Feeds the body's state after a step of `world` (nothing before the start or once the round is over). */
   update(world: PhysicsWorld, body: number): void {
-    if (this.over(world)) return;
+    if (this.startedAt < 0 || this.over(world)) return;
     const L = this.L,
       a = this.axis,
       q = world.components.Orientation;

@@ -628,6 +628,8 @@ describe('3D rigid-body games in headless Chromium', () => {
     await g.page.keyboard.down('a');
     await waitCubeMoved(g, before.x, before.z);
     await g.page.keyboard.up('a');
+    // The click's aim marker (an arrow from the cube, a ring at the point) is gone: reached, and a roll made it stale.
+    await g.waitFor(() => !(window.game as unknown as { aimShown(): boolean }).aimShown(), null);
     const after = await cubeState(g);
     const left1 = await pageOf(g, after.x, after.y, after.z);
     // Mostly leftwards on the screen (the room is about 150 px across in this 800 px page).
