@@ -106,6 +106,16 @@ function onGameStep(event: GameStepEvent): void {
  * (and the message says what happened) until the player thrusts again.
  */
 let restarted = false;
+/**
+ * Steps of the ready moment after a fall or an exit (1 s at 60 Hz, about the swallow's length): the
+ * new ship waits at the start, whatever is pressed, so a press made in the fall's flurry does not fly
+ * it straight into a hole. Arrows pressed meanwhile thrust when it ends.
+ */
+const READY_STEPS = 60;
+/** The world's step count at which the ready moment ends (0: none yet). */
+let readyUntil = 0;
+/** Whether the ready moment after a respawn lasts (no thrust yet). */
+const readying = (): boolean => bh.world.steps < readyUntil;
 const sound = getSound();
 /** The ship's engine: hums while thrusting. */
 const engine = sound.engine('propeller');
@@ -200,6 +210,7 @@ function createWorld(): PhysicsWorld {
   });
   run = levels ? startLevel(bh, continueLevel ?? params.level) : null;
   continueLevel = null;
+  readyUntil = 0;
   predictor = createPredictor(bh);
   replay = createBlackHoleReplay(bh, run, onGameStep);
   return bh.world;
@@ -211,12 +222,20 @@ const game = await startPixiGame({
   step: () => {
     // A tap's thrust ends TAP_STEPS steps after it began (here, at a step, so it is recorded there).
     if (!replay.player) endTaps();
+    // The ready moment after a respawn is over: arrows pressed during it thrust from this step.
+    if (!replay.player && bh.world.steps === readyUntil) applyHeld();
     replay.step();
     if (run && !canThrust(bh, run) && held.length > 0) letGo();
     if (restarted) {
       restarted = false;
       // Not while a replay plays: its inputs are the recorded ones.
-      if (!replay.player && held.length > 0) {
+      if (!replay.player) {
+        // Keys and fingers down now were pressed for the ship just lost: they are forgotten (their
+        // key-up or lift is ignored, a finger sliding on does not press), so only a press begun after
+        // the respawn thrusts, and none before READY_STEPS have passed.
+        keysDown.clear();
+        padPointers.clear();
+        readyUntil = bh.world.steps + READY_STEPS;
         letGo();
         applyHeld();
       }
@@ -374,7 +393,7 @@ function endTaps(): void {
 }
 
 function applyHeld(): void {
-  const allowed = !run || canThrust(bh, run);
+  const allowed = (!run || canThrust(bh, run)) && !readying();
   const want = allowed ? heldThrust(held) : 'none';
   if (want !== bh.thrust) replay.input('thrust', want);
 }
@@ -396,7 +415,8 @@ function advance(): void {
 }
 /** A key or finger presses arrow `dir`: it becomes the latest arrow held. */
 function press(dir: Arrow): void {
-  pressedAt.set(dir, { step: bh.world.steps, ms: performance.now() });
+  // A tap in the ready moment thrusts its TAP_STEPS from the moment's end.
+  pressedAt.set(dir, { step: Math.max(bh.world.steps, readyUntil), ms: performance.now() });
   // Pressed again while a tap of it thrusts on: the tap's hold becomes this press's.
   if (!tapEnds.delete(dir)) holds.set(dir, (holds.get(dir) ?? 0) + 1);
   const i = held.indexOf(dir);
