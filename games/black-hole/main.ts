@@ -1417,6 +1417,8 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
     k = Math.max(SHIP_MIN_PX, cam.toScreenLength(1));
   shipPx = k;
   drawDeath();
+  // The words of a fall are not drawn over the path's label ("falls in" under "Swallowed!").
+  if (deathText.visible) pathLabel.visible = false;
   const age = performance.now() - swallow.start;
   if (swallow.active && age > SWALLOW_MS) swallow.active = false;
   if (swallow.active) {
@@ -1524,14 +1526,17 @@ shell.expose({
   /** Why the path drawn in the last frame stops short, by its end ('falls in' or 'lost'), else ''. */
   pathLabel: (): string => (pathLabel.visible ? pathLabel.text : ''),
   /**
-   * The falls' effect: how many have begun, the words of the last one, and the strongest red flash
-   * drawn for it (0 to 0.45; 0 until a frame drew it).
+   * The falls' effect: how many have begun, the words of the last one, the strongest red flash
+   * drawn for it (0 to 0.45; 0 until a frame drew it), and whether the last frame showed the words.
    */
-  deathEffect: (): { count: number; text: string; flashPeak: number } => ({
+  deathEffect: (): { count: number; text: string; flashPeak: number; shown: boolean } => ({
     count: death.count,
     text: deathText.text,
     flashPeak: death.flashPeak,
+    shown: deathText.visible,
   }),
+  /** Steps left of the ready moment after a respawn (no thrust until 0; ./main.ts READY_STEPS). */
+  readyLeft: (): number => Math.max(0, readyUntil - bh.world.steps),
   /** Whether the swallow effect (the ship spiralling into a hole) plays, and whether the edge warning shows. */
   swallowing: (): boolean => swallow.active,
   edgeWarning: (): boolean => edgeText.visible,
