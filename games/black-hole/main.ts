@@ -164,6 +164,10 @@ const PATH_STEPS = 180;
 const PAD_PATH_STEPS = 180;
 const path = new Float64Array(2 * (Math.max(PATH_STEPS, PAD_PATH_STEPS) + 1));
 let pathPoints = 0;
+/** The diagonal holds whose paths the pad also shows before the first thrust (fainter than ↑'s). */
+const PAD_SIDE_THRUSTS = ['up-left', 'up-right'] as const;
+/** Points of one of those paths, m (x0, y0, x1, y1, ...). */
+const sidePath = new Float64Array(2 * (PAD_PATH_STEPS + 1));
 /** How the path drawn in the last frame ends (./rules.ts `pathEnd`). */
 let pathKind: PathEnd = 'clear';
 /**
@@ -1381,6 +1385,18 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
     const fromPad = run?.parked === true && bh.thrust === 'none' && canThrust(bh, run);
     const steps = fromPad ? PAD_PATH_STEPS : PATH_STEPS;
     if (fromPad) {
+      // Beside the path holding ↑, fainter: the paths holding ↖ and ↗, so the pad shows which way
+      // round the hole ahead is open (one red path straight up said only where not to go).
+      for (const side of PAD_SIDE_THRUSTS) {
+        bh.thrust = side;
+        const n = predictPath(bh, predictor, sidePath, steps);
+        const kind = pathEnd(bh, sidePath, n, steps);
+        let line = false;
+        for (let i = 0; i < n && !line; i++) line = sidePath[2 * i + 1]! >= bh.lineY;
+        const c = kind !== 'clear' ? PATH_WARN : line ? PATH_CLEAR : PATH_OPEN;
+        for (let i = 3; i < n; i += 4)
+          overlay.circle(cam.toScreenX(sidePath[2 * i]!), cam.toScreenY(sidePath[2 * i + 1]!), 1.6).fill({ color: c, alpha: 0.35 });
+      }
       bh.thrust = 'up';
       pathPoints = predictPath(bh, predictor, path, steps);
     } else pathPoints = predictPath(bh, predictor, path, steps);
