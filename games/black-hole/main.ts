@@ -246,10 +246,11 @@ const game = await startPixiGame({
     }
   },
   controls: [
-    // On a phone the card says it in one line (it fits above the finish line) and names the seam: a
-    // finger on the seam between a side arrow and ↑ or ↓ holds both (`padDirsAt`).
+    // On a phone the card says it in one line (it fits above the finish line), teaches taps (on the
+    // narrow upright field a held diagonal soon leaves it) and names the seam: a finger on the seam
+    // between a side arrow and ↑ or ↓ holds both (`padDirsAt`).
     isTouchDevice()
-      ? { keys: '← ↑ → ↓', action: 'thrust; seam of two: diagonal', touch: 'hold ← ↑ → ↓' }
+      ? { keys: '← ↑ → ↓', action: 'nudge; seam of two: diagonal', touch: 'tap ← ↑ → ↓' }
       : { keys: '← ↑ → ↓', action: 'thrust: a tap nudges, a hold builds up (two at once: diagonal)', touch: 'hold, slide ← ↑ → ↓' },
     { keys: 'Enter', action: 'next level / continue from this level', touch: 'tap the Level ▶ or Continue ↺ button' },
     {
