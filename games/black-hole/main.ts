@@ -106,6 +106,16 @@ function onGameStep(event: GameStepEvent): void {
  * (and the message says what happened) until the player thrusts again.
  */
 let restarted = false;
+/**
+ * Steps of the ready moment after a fall or an exit (1 s at 60 Hz, about the swallow's length): the
+ * new ship waits at the start, whatever is pressed, so a press made in the fall's flurry does not fly
+ * it straight into a hole. Arrows pressed meanwhile thrust when it ends.
+ */
+const READY_STEPS = 60;
+/** The world's step count at which the ready moment ends (0: none yet). */
+let readyUntil = 0;
+/** Whether the ready moment after a respawn lasts (no thrust yet). */
+const readying = (): boolean => bh.world.steps < readyUntil;
 const sound = getSound();
 /** The ship's engine: hums while thrusting. */
 const engine = sound.engine('propeller');
@@ -154,6 +164,10 @@ const PATH_STEPS = 180;
 const PAD_PATH_STEPS = 180;
 const path = new Float64Array(2 * (Math.max(PATH_STEPS, PAD_PATH_STEPS) + 1));
 let pathPoints = 0;
+/** The diagonal holds whose paths the pad also shows before the first thrust (fainter than ↑'s). */
+const PAD_SIDE_THRUSTS = ['up-left', 'up-right'] as const;
+/** Points of one of those paths, m (x0, y0, x1, y1, ...). */
+const sidePath = new Float64Array(2 * (PAD_PATH_STEPS + 1));
 /** How the path drawn in the last frame ends (./rules.ts `pathEnd`). */
 let pathKind: PathEnd = 'clear';
 /**
@@ -200,6 +214,7 @@ function createWorld(): PhysicsWorld {
   });
   run = levels ? startLevel(bh, continueLevel ?? params.level) : null;
   continueLevel = null;
+  readyUntil = 0;
   predictor = createPredictor(bh);
   replay = createBlackHoleReplay(bh, run, onGameStep);
   return bh.world;
@@ -211,22 +226,31 @@ const game = await startPixiGame({
   step: () => {
     // A tap's thrust ends TAP_STEPS steps after it began (here, at a step, so it is recorded there).
     if (!replay.player) endTaps();
+    // The ready moment after a respawn is over: arrows pressed during it thrust from this step.
+    if (!replay.player && bh.world.steps === readyUntil) applyHeld();
     replay.step();
     if (run && !canThrust(bh, run) && held.length > 0) letGo();
     if (restarted) {
       restarted = false;
       // Not while a replay plays: its inputs are the recorded ones.
-      if (!replay.player && held.length > 0) {
+      if (!replay.player) {
+        // Keys and fingers down now were pressed for the ship just lost: they are forgotten (their
+        // key-up or lift is ignored, a finger sliding on does not press), so only a press begun after
+        // the respawn thrusts, and none before READY_STEPS have passed.
+        keysDown.clear();
+        padPointers.clear();
+        readyUntil = bh.world.steps + READY_STEPS;
         letGo();
         applyHeld();
       }
     }
   },
   controls: [
-    // On a phone the card says it in one line (it fits above the finish line) and names the seam: a
-    // finger on the seam between a side arrow and ↑ or ↓ holds both (`padDirsAt`).
+    // On a phone the card says it in one line (it fits above the finish line), teaches taps (on the
+    // narrow upright field a held diagonal soon leaves it) and names the seam: a finger on the seam
+    // between a side arrow and ↑ or ↓ holds both (`padDirsAt`).
     isTouchDevice()
-      ? { keys: '← ↑ → ↓', action: 'thrust; seam of two: diagonal', touch: 'hold ← ↑ → ↓' }
+      ? { keys: '← ↑ → ↓', action: 'nudge; seam of two: diagonal', touch: 'tap ← ↑ → ↓' }
       : { keys: '← ↑ → ↓', action: 'thrust: a tap nudges, a hold builds up (two at once: diagonal)', touch: 'hold, slide ← ↑ → ↓' },
     { keys: 'Enter', action: 'next level / continue from this level', touch: 'tap the Level ▶ or Continue ↺ button' },
     {
@@ -374,7 +398,7 @@ function endTaps(): void {
 }
 
 function applyHeld(): void {
-  const allowed = !run || canThrust(bh, run);
+  const allowed = (!run || canThrust(bh, run)) && !readying();
   const want = allowed ? heldThrust(held) : 'none';
   if (want !== bh.thrust) replay.input('thrust', want);
 }
@@ -396,7 +420,8 @@ function advance(): void {
 }
 /** A key or finger presses arrow `dir`: it becomes the latest arrow held. */
 function press(dir: Arrow): void {
-  pressedAt.set(dir, { step: bh.world.steps, ms: performance.now() });
+  // A tap in the ready moment thrusts its TAP_STEPS from the moment's end.
+  pressedAt.set(dir, { step: Math.max(bh.world.steps, readyUntil), ms: performance.now() });
   // Pressed again while a tap of it thrusts on: the tap's hold becomes this press's.
   if (!tapEnds.delete(dir)) holds.set(dir, (holds.get(dir) ?? 0) + 1);
   const i = held.indexOf(dir);
@@ -1361,6 +1386,18 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
     const fromPad = run?.parked === true && bh.thrust === 'none' && canThrust(bh, run);
     const steps = fromPad ? PAD_PATH_STEPS : PATH_STEPS;
     if (fromPad) {
+      // Beside the path holding ↑, fainter: the paths holding ↖ and ↗, so the pad shows which way
+      // round the hole ahead is open (one red path straight up said only where not to go).
+      for (const side of PAD_SIDE_THRUSTS) {
+        bh.thrust = side;
+        const n = predictPath(bh, predictor, sidePath, steps);
+        const kind = pathEnd(bh, sidePath, n, steps);
+        let line = false;
+        for (let i = 0; i < n && !line; i++) line = sidePath[2 * i + 1]! >= bh.lineY;
+        const c = kind !== 'clear' ? PATH_WARN : line ? PATH_CLEAR : PATH_OPEN;
+        for (let i = 3; i < n; i += 4)
+          overlay.circle(cam.toScreenX(sidePath[2 * i]!), cam.toScreenY(sidePath[2 * i + 1]!), 1.6).fill({ color: c, alpha: 0.35 });
+      }
       bh.thrust = 'up';
       pathPoints = predictPath(bh, predictor, path, steps);
     } else pathPoints = predictPath(bh, predictor, path, steps);
@@ -1397,6 +1434,8 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
     k = Math.max(SHIP_MIN_PX, cam.toScreenLength(1));
   shipPx = k;
   drawDeath();
+  // The words of a fall are not drawn over the path's label ("falls in" under "Swallowed!").
+  if (deathText.visible) pathLabel.visible = false;
   const age = performance.now() - swallow.start;
   if (swallow.active && age > SWALLOW_MS) swallow.active = false;
   if (swallow.active) {
@@ -1504,14 +1543,17 @@ shell.expose({
   /** Why the path drawn in the last frame stops short, by its end ('falls in' or 'lost'), else ''. */
   pathLabel: (): string => (pathLabel.visible ? pathLabel.text : ''),
   /**
-   * The falls' effect: how many have begun, the words of the last one, and the strongest red flash
-   * drawn for it (0 to 0.45; 0 until a frame drew it).
+   * The falls' effect: how many have begun, the words of the last one, the strongest red flash
+   * drawn for it (0 to 0.45; 0 until a frame drew it), and whether the last frame showed the words.
    */
-  deathEffect: (): { count: number; text: string; flashPeak: number } => ({
+  deathEffect: (): { count: number; text: string; flashPeak: number; shown: boolean } => ({
     count: death.count,
     text: deathText.text,
     flashPeak: death.flashPeak,
+    shown: deathText.visible,
   }),
+  /** Steps left of the ready moment after a respawn (no thrust until 0; ./main.ts READY_STEPS). */
+  readyLeft: (): number => Math.max(0, readyUntil - bh.world.steps),
   /** Whether the swallow effect (the ship spiralling into a hole) plays, and whether the edge warning shows. */
   swallowing: (): boolean => swallow.active,
   edgeWarning: (): boolean => edgeText.visible,

@@ -22,7 +22,8 @@ interface BlackHolePage {
   pathLabel(): string;
   pathShade(): 'warn' | 'clear' | 'open' | '';
   ghostHoles(): boolean;
-  deathEffect(): { count: number; text: string; flashPeak: number };
+  deathEffect(): { count: number; text: string; flashPeak: number; shown: boolean };
+  pathPoints(): number;
 }
 
 /**
@@ -95,6 +96,13 @@ describe('black hole', () => {
     }, null);
     expect(death.count).toBe(1);
     expect(death.text).toBe('Swallowed!\n2 lives left');
+    // While the words of the fall show, the path's label is not drawn under them.
+    const shown = await g.waitFor(() => {
+      const w = window.game as unknown as BlackHolePage;
+      return w.deathEffect().shown ? { label: w.pathLabel(), path: w.pathPoints() } : null;
+    }, null);
+    expect(shown.path).toBeGreaterThan(0);
+    expect(shown.label).toBe('');
     await g.page.keyboard.down('ArrowLeft');
     await g.waitFor(() => !(window.game as unknown as BlackHolePage).bh.message.startsWith('Swallowed'), null);
     // Paused as soon as the edge warns, so the ship cannot leave the field meanwhile: ↑ pressed
