@@ -952,6 +952,8 @@ let holdTimer = 0;
 /** How far the current press may wander and still be a click or a hold, CSS px (CLICK_SLOP, or TOUCH_SLOP for a finger). */
 let slop = CLICK_SLOP;
 
+/** The ball the aiming overlay last drew lifted out of the heap (0: none): its halo is drawn there, not where it lies. */
+let liftedShown = 0;
 const overlay = new Graphics({ label: 'pointer' });
 app.stage.addChild(overlay);
 let pointerId = -1;
@@ -1486,6 +1488,7 @@ function showHoldLabel(text: string, x: number, y: number): void {
  */
 function drawPointer(): void {
   overlay.clear();
+  liftedShown = 0;
   holdLabel.visible = false;
   const cam = renderer.camera;
   // A release's ring, bursting out from where the ball left and fading.
@@ -1555,11 +1558,20 @@ function drawPointer(): void {
     const bx = cam.toScreenX(P.x[s]!),
       by = cam.toScreenY(P.y[s]!);
     if (Math.hypot(cam.toScreenX(lift[0]) - bx, cam.toScreenY(lift[1]) - by) > 1) {
-      // Lifted: a dashed line up from where it lies to where it will be thrown from, and its ghost there.
-      const ty = cam.toScreenY(lift[1]);
-      for (let yy = by; yy > ty; yy -= 10) overlay.moveTo(bx, yy).lineTo(bx, Math.max(ty, yy - 5));
+      // Lifted: the ball is drawn where it will be thrown from, in full, and where it lies is shown
+      // empty (dimmed to the court's colour, its halo too, inside a dashed outline), with a dashed line
+      // up between them: one ball of its colour on the screen, not two.
+      const ty = cam.toScreenY(lift[1]),
+        br = cam.toScreenLength(t.radius);
+      overlay.circle(bx, by, br + 9).fill({ color: 0x0b0f18, alpha: 0.8 });
+      for (let k = 0; k < 16; k += 2)
+        overlay.arc(bx, by, br, (k * Math.PI) / 8, ((k + 1) * Math.PI) / 8).stroke({ width: 2, color: 0xffffff, alpha: 0.6 });
+      for (let yy = by - br; yy > ty + br; yy -= 10) overlay.moveTo(bx, yy).lineTo(bx, Math.max(ty + br, yy - 5));
       overlay.stroke({ width: 2, color: 0xffffff, alpha: 0.7 });
-      overlay.circle(cam.toScreenX(lift[0]), ty, cam.toScreenLength(t.radius)).fill({ color: renderer.colorOf(pressed), alpha: 0.55 });
+      liftedShown = pressed;
+      const lx = cam.toScreenX(lift[0]);
+      if (pressed === goldBall) overlay.circle(lx, ty, br + 5).stroke({ width: 3, color: GOLD_COLOR, alpha: 0.9 });
+      overlay.circle(lx, ty, br).fill({ color: renderer.colorOf(pressed), alpha: 1 });
     }
   }
   const ox = cam.toScreenX(t.x),
@@ -1998,7 +2010,7 @@ function drawBasketballs(alpha: number, world: PhysicsWorld): void {
     seams.circle(x, y, r - w / 2).stroke({ width: w, color: 0x5a2a08, alpha: 0.7 * shown });
   }
   // The gold ball: a pulsing halo and a glint, so the eye finds it in the heap.
-  if (goldBall !== 0 && handles.balls.includes(goldBall)) {
+  if (goldBall !== 0 && handles.balls.includes(goldBall) && liftedShown !== goldBall) {
     const s = slotOf(goldBall);
     const x = cam.toScreenX(O.x[s]! + (P.x[s]! - O.x[s]!) * alpha),
       y = cam.toScreenY(O.y[s]! + (P.y[s]! - O.y[s]!) * alpha);
