@@ -20,8 +20,8 @@
  * the pull, faster the longer it is, hoop.ts slingVelocity: the height it reaches grows evenly over
  * the second half of the pull), with a power gauge round the ball and a dotted arc of the start of its
  * flight while pulling (hoop.ts throwPath: AIM_SECONDS of it, twice that in the warm-up before the
- * first basket, or to just past its apex if later, fading out, up to its first touch; the player
- * judges the rest). Each basketball thrown or dropped fades out once it has come to rest (MAX_LOOSE). A pull taken back
+ * first basket, or to just past its apex if later, fading out, up to a ball in its way or through
+ * a first bounce off a wall, a ramp or the hoop and AFTER_BOUNCE on; the player judges the rest). Each basketball thrown or dropped fades out once it has come to rest (MAX_LOOSE). A pull taken back
  * to within CANCEL_PULL of its press point ("release here to cancel") and let go throws nothing; the
  * full-speed pull is shortened for a pull with little room to the window's edge (pullFullPull). A pull
  * under way as the clock runs out is the round's last throw: the round waits for it and its ball
@@ -1333,12 +1333,21 @@ canvas.addEventListener('pointercancel', (event) => release(event, true));
 function aimPath(): number[] {
   if (pointerId === -1 || !dragged || inCancelZone() || refused()) return [];
   const t = currentThrow();
-  return arcOf(t, pressBall, arcSeconds(t.vy), 0, AIM_CEILING_BOUNCES);
+  const seconds = arcSeconds(t.vy);
+  const arc = arcOf(t, pressBall, seconds, 0, AIM_CEILING_BOUNCES);
+  // An arc that ends at a touch before its time (given more time, it is no longer) met a wall, a ramp
+  // or the hoop: it goes on through that first bounce for AFTER_BOUNCE s more, so a throw at the rim
+  // is seen to drop in or off it. One that ends at a ball (the red cross) stays ended there.
+  if (arcOf(t, pressBall, seconds + AFTER_BOUNCE, 0, AIM_CEILING_BOUNCES).length !== arc.length) return arc;
+  return arcOf(t, pressBall, seconds + AFTER_BOUNCE, 1, AIM_CEILING_BOUNCES);
 }
+/** How much longer than its usual length the aiming arc goes on when it bounces off a wall, a ramp or the hoop, s of flight: to show where the bounce sends it. */
+const AFTER_BOUNCE = 0.5;
 /**
  * How much of a throw's flight (vertical speed `vy`, m/s, up) its aiming arc shows, s: aimSeconds, or
  * to the drag-free apex and APEX_MORE past it if that is later (at most FLIGHT_SECONDS), so a weak
- * throw's arc is seen to turn over, not cut off while it still rises. It ends sooner at a first touch.
+ * throw's arc is seen to turn over, not cut off while it still rises. It ends sooner at a ball in its
+ * way, and goes on longer through a bounce (aimPath).
  */
 function arcSeconds(vy: number): number {
   const g = handles.params.gravity;
@@ -1375,7 +1384,8 @@ function aimSeconds(): number {
  * The aiming arc's length once the clock runs, s of flight: about the first third of a basket's
  * flight (a basket from the natural starts of reach.ts reaches the rim 0.8 to 2 s after its throw,
  * 1.7 s the median), so the arc shows the throw's direction and strength and the player judges the
- * rest. It also ends where the ball first touches anything: no bounce is shown.
+ * rest. It ends at a ball in its way; at a wall, a ramp or the hoop it goes on through that bounce
+ * for AFTER_BOUNCE s more (aimPath).
  */
 const AIM_SECONDS = 0.6;
 /** The aiming arc's length in the warm-up (before the round's first basket), s of flight: twice AIM_SECONDS, most of a basket's way. */
@@ -2296,7 +2306,8 @@ shell.expose({
   /**
    * The dotted arc drawn while pulling a throw: its points, m (flat x, y pairs), or [] when not pulling
    * or in the cancel zone; the first 0.6 s of the flight (1.2 s before the round's first basket), or to
-   * 0.2 s past its apex if later, to its first touch.
+   * 0.2 s past its apex if later, to a ball in its way, or on through a first bounce off a wall, a
+   * ramp or the hoop and 0.5 s of flight past its usual end.
    */
   aimPath: (): number[] => aimPath(),
   /** The whole predicted flight of the throw being pulled (2.5 s, two bounces; the arc shows its start): points, m, or [] as aimPath. */
