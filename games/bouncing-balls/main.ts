@@ -20,8 +20,8 @@
  * the pull, faster the longer it is, hoop.ts slingVelocity: the height it reaches grows evenly over
  * the second half of the pull), with a power gauge round the ball and a dotted arc of the start of its
  * flight while pulling (hoop.ts throwPath: AIM_SECONDS of it, twice that in the warm-up before the
- * first basket, or to just past its apex if later, fading out, up to its first touch; the player
- * judges the rest). Each basketball thrown or dropped fades out once it has come to rest (MAX_LOOSE). A pull taken back
+ * first basket, or to just past its apex if later, fading out, up to a ball in its way or through
+ * a first bounce off a wall, a ramp or the hoop and AFTER_BOUNCE on; the player judges the rest). Each basketball thrown or dropped fades out once it has come to rest (MAX_LOOSE). A pull taken back
  * to within CANCEL_PULL of its press point ("release here to cancel") and let go throws nothing; the
  * full-speed pull is shortened for a pull with little room to the window's edge (pullFullPull). A pull
  * under way as the clock runs out is the round's last throw: the round waits for it and its ball
@@ -952,6 +952,8 @@ let holdTimer = 0;
 /** How far the current press may wander and still be a click or a hold, CSS px (CLICK_SLOP, or TOUCH_SLOP for a finger). */
 let slop = CLICK_SLOP;
 
+/** The ball the aiming overlay last drew lifted out of the heap (0: none): its halo is drawn there, not where it lies. */
+let liftedShown = 0;
 const overlay = new Graphics({ label: 'pointer' });
 app.stage.addChild(overlay);
 let pointerId = -1;
@@ -1331,12 +1333,21 @@ canvas.addEventListener('pointercancel', (event) => release(event, true));
 function aimPath(): number[] {
   if (pointerId === -1 || !dragged || inCancelZone() || refused()) return [];
   const t = currentThrow();
-  return arcOf(t, pressBall, arcSeconds(t.vy), 0, AIM_CEILING_BOUNCES);
+  const seconds = arcSeconds(t.vy);
+  const arc = arcOf(t, pressBall, seconds, 0, AIM_CEILING_BOUNCES);
+  // An arc that ends at a touch before its time (given more time, it is no longer) met a wall, a ramp
+  // or the hoop: it goes on through that first bounce for AFTER_BOUNCE s more, so a throw at the rim
+  // is seen to drop in or off it. One that ends at a ball (the red cross) stays ended there.
+  if (arcOf(t, pressBall, seconds + AFTER_BOUNCE, 0, AIM_CEILING_BOUNCES).length !== arc.length) return arc;
+  return arcOf(t, pressBall, seconds + AFTER_BOUNCE, 1, AIM_CEILING_BOUNCES);
 }
+/** How much longer than its usual length the aiming arc goes on when it bounces off a wall, a ramp or the hoop, s of flight: to show where the bounce sends it. */
+const AFTER_BOUNCE = 0.5;
 /**
  * How much of a throw's flight (vertical speed `vy`, m/s, up) its aiming arc shows, s: aimSeconds, or
  * to the drag-free apex and APEX_MORE past it if that is later (at most FLIGHT_SECONDS), so a weak
- * throw's arc is seen to turn over, not cut off while it still rises. It ends sooner at a first touch.
+ * throw's arc is seen to turn over, not cut off while it still rises. It ends sooner at a ball in its
+ * way, and goes on longer through a bounce (aimPath).
  */
 function arcSeconds(vy: number): number {
   const g = handles.params.gravity;
@@ -1373,7 +1384,8 @@ function aimSeconds(): number {
  * The aiming arc's length once the clock runs, s of flight: about the first third of a basket's
  * flight (a basket from the natural starts of reach.ts reaches the rim 0.8 to 2 s after its throw,
  * 1.7 s the median), so the arc shows the throw's direction and strength and the player judges the
- * rest. It also ends where the ball first touches anything: no bounce is shown.
+ * rest. It ends at a ball in its way; at a wall, a ramp or the hoop it goes on through that bounce
+ * for AFTER_BOUNCE s more (aimPath).
  */
 const AIM_SECONDS = 0.6;
 /** The aiming arc's length in the warm-up (before the round's first basket), s of flight: twice AIM_SECONDS, most of a basket's way. */
@@ -1486,6 +1498,7 @@ function showHoldLabel(text: string, x: number, y: number): void {
  */
 function drawPointer(): void {
   overlay.clear();
+  liftedShown = 0;
   holdLabel.visible = false;
   const cam = renderer.camera;
   // A release's ring, bursting out from where the ball left and fading.
@@ -1555,11 +1568,20 @@ function drawPointer(): void {
     const bx = cam.toScreenX(P.x[s]!),
       by = cam.toScreenY(P.y[s]!);
     if (Math.hypot(cam.toScreenX(lift[0]) - bx, cam.toScreenY(lift[1]) - by) > 1) {
-      // Lifted: a dashed line up from where it lies to where it will be thrown from, and its ghost there.
-      const ty = cam.toScreenY(lift[1]);
-      for (let yy = by; yy > ty; yy -= 10) overlay.moveTo(bx, yy).lineTo(bx, Math.max(ty, yy - 5));
+      // Lifted: the ball is drawn where it will be thrown from, in full, and where it lies is shown
+      // empty (dimmed to the court's colour, its halo too, inside a dashed outline), with a dashed line
+      // up between them: one ball of its colour on the screen, not two.
+      const ty = cam.toScreenY(lift[1]),
+        br = cam.toScreenLength(t.radius);
+      overlay.circle(bx, by, br + 9).fill({ color: 0x0b0f18, alpha: 0.8 });
+      for (let k = 0; k < 16; k += 2)
+        overlay.arc(bx, by, br, (k * Math.PI) / 8, ((k + 1) * Math.PI) / 8).stroke({ width: 2, color: 0xffffff, alpha: 0.6 });
+      for (let yy = by - br; yy > ty + br; yy -= 10) overlay.moveTo(bx, yy).lineTo(bx, Math.max(ty + br, yy - 5));
       overlay.stroke({ width: 2, color: 0xffffff, alpha: 0.7 });
-      overlay.circle(cam.toScreenX(lift[0]), ty, cam.toScreenLength(t.radius)).fill({ color: renderer.colorOf(pressed), alpha: 0.55 });
+      liftedShown = pressed;
+      const lx = cam.toScreenX(lift[0]);
+      if (pressed === goldBall) overlay.circle(lx, ty, br + 5).stroke({ width: 3, color: GOLD_COLOR, alpha: 0.9 });
+      overlay.circle(lx, ty, br).fill({ color: renderer.colorOf(pressed), alpha: 1 });
     }
   }
   const ox = cam.toScreenX(t.x),
@@ -1998,7 +2020,7 @@ function drawBasketballs(alpha: number, world: PhysicsWorld): void {
     seams.circle(x, y, r - w / 2).stroke({ width: w, color: 0x5a2a08, alpha: 0.7 * shown });
   }
   // The gold ball: a pulsing halo and a glint, so the eye finds it in the heap.
-  if (goldBall !== 0 && handles.balls.includes(goldBall)) {
+  if (goldBall !== 0 && handles.balls.includes(goldBall) && liftedShown !== goldBall) {
     const s = slotOf(goldBall);
     const x = cam.toScreenX(O.x[s]! + (P.x[s]! - O.x[s]!) * alpha),
       y = cam.toScreenY(O.y[s]! + (P.y[s]! - O.y[s]!) * alpha);
@@ -2284,7 +2306,8 @@ shell.expose({
   /**
    * The dotted arc drawn while pulling a throw: its points, m (flat x, y pairs), or [] when not pulling
    * or in the cancel zone; the first 0.6 s of the flight (1.2 s before the round's first basket), or to
-   * 0.2 s past its apex if later, to its first touch.
+   * 0.2 s past its apex if later, to a ball in its way, or on through a first bounce off a wall, a
+   * ramp or the hoop and 0.5 s of flight past its usual end.
    */
   aimPath: (): number[] => aimPath(),
   /** The whole predicted flight of the throw being pulled (2.5 s, two bounces; the arc shows its start): points, m, or [] as aimPath. */
