@@ -531,6 +531,21 @@ const right = new Vector3(),
   back = new Vector3();
 /** snapToEdge's answer: a level unit axis (x, y = 0, z) and 1, or 0 in [3] when there is none. */
 const snapped = new Float64Array(4);
+/** The cube's body axes x, y, z in the world: the columns of its orientation's rotation matrix (unit vectors). */
+function bodyAxes(): number[][] {
+  const q = shell.world.components.Orientation,
+    e = handles.body;
+  const x = q.x[e]!,
+    y = q.y[e]!,
+    z = q.z[e]!,
+    w = q.w[e]!;
+  return [
+    [1 - 2 * (y * y + z * z), 2 * (x * y + w * z), 2 * (x * z - w * y)],
+    [2 * (x * y - w * z), 1 - 2 * (x * x + z * z), 2 * (y * z + w * x)],
+    [2 * (x * z + w * y), 2 * (y * z - w * x), 1 - 2 * (x * x + y * y)],
+  ];
+}
+
 /**
  * Into `snapped`: of the cube's three body axes (the columns of its rotation matrix) those lying
  * within 30 degrees of level, the one (either way) most nearly along the level direction (ax, 0, az),
@@ -538,17 +553,7 @@ const snapped = new Float64Array(4);
  * or a corner: the axis is then used as it is).
  */
 function snapToEdge(ax: number, az: number): void {
-  const q = shell.world.components.Orientation,
-    e = handles.body;
-  const x = q.x[e]!,
-    y = q.y[e]!,
-    z = q.z[e]!,
-    w = q.w[e]!;
-  const cols = [
-    [1 - 2 * (y * y + z * z), 2 * (x * y + w * z), 2 * (x * z - w * y)],
-    [2 * (x * y - w * z), 1 - 2 * (x * x + z * z), 2 * (y * z + w * x)],
-    [2 * (x * z + w * y), 2 * (y * z - w * x), 1 - 2 * (x * x + y * y)],
-  ];
+  const cols = bodyAxes();
   let best = 0;
   snapped[3] = 0;
   for (const c of cols) {
@@ -1003,18 +1008,8 @@ function updateNet(): void {
   const room = params.mode === 'room';
   net.style.display = room ? 'grid' : 'none';
   if (!room) return;
-  const q = shell.world.components.Orientation,
-    e = handles.body;
-  const x = q.x[e]!,
-    y = q.y[e]!,
-    z = q.z[e]!,
-    w = q.w[e]!;
   // The body's axes in the world: the columns of its rotation matrix.
-  const cols = [
-    [1 - 2 * (y * y + z * z), 2 * (x * y + w * z), 2 * (x * z - w * y)],
-    [2 * (x * y - w * z), 1 - 2 * (x * x + z * z), 2 * (y * z + w * x)],
-    [2 * (x * z + w * y), 2 * (y * z - w * x), 1 - 2 * (x * x + y * y)],
-  ];
+  const cols = bodyAxes();
   app.camera.matrixWorld.extractBasis(right, up, back);
   const rl = Math.hypot(right.x, right.z) || 1,
     bl = Math.hypot(back.x, back.z) || 1;
@@ -1022,7 +1017,7 @@ function updateNet(): void {
     rz = right.z / rl,
     bx = back.x / bl,
     bz = back.z / bl;
-  const top = topFace(shell.world, e);
+  const top = topFace(shell.world, handles.body);
   // W rolls away: the face towards the viewer comes up; S the far one; A (left) the right one; D the left one.
   const faces = [faceToward(cols, bx, bz), faceToward(cols, rx, rz), top, faceToward(cols, -rx, -rz), faceToward(cols, -bx, -bz), top ^ 1];
   const want = pads.done ? -1 : (layout.faces[pads.pad] ?? -1);
