@@ -263,6 +263,33 @@ describe('catapult', () => {
     expect(g.errors).toEqual([]);
   });
 
+  it('left alone before the first throw (a page in the background for minutes), no piece moves and nothing scores', async () => {
+    const r = await g.page.evaluate(() => {
+      const w = window.game as unknown as Omit<CatapultGame, 'level'> & {
+        positionOf(h: number): [number, number];
+        level(): { pieces: Array<{ body: number; startX: number; startY: number }> };
+        total(): number;
+      };
+      w.paused = true;
+      w.reset();
+      // Two minutes of steps with no throw.
+      w.advance(60 * 120);
+      let moved = 0;
+      for (const p of w.level().pieces) {
+        const [x, y] = w.positionOf(p.body);
+        moved = Math.max(moved, Math.hypot(x - p.startX, y - p.startY));
+      }
+      const out = { tally: w.tally(), moved, total: w.total(), shotsLeft: w.shotsLeft() };
+      w.reset();
+      w.paused = false;
+      return out;
+    });
+    expect(r.tally).toEqual({ fallen: 0, broken: 0, score: 0 });
+    expect(r.total).toBe(0);
+    expect(r.moved).toBeLessThan(0.01);
+    expect(r.shotsLeft).toBeGreaterThan(0);
+  });
+
   it('with the frame pacer drawing nothing (a GPU too busy to finish a frame), a pause, a resume and a reset are each drawn at once', async () => {
     // game-kit's startPixiGame forces the first frame after a pause or resume and after a new world:
     // a paused scene does not change, so before, a pause on a busy GPU left the old picture (no
