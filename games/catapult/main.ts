@@ -45,7 +45,6 @@ import {
   type Piece,
   PROJECTILE_RADIUS,
   PULL,
-  predictArc,
   ROCK,
   surfaceAt,
   type Tally,
@@ -192,12 +191,19 @@ const weldsHeld: boolean[] = [];
 const DEBRIS: Record<SoundMaterial, DebrisKind> = { wood: 'wood', glass: 'glass', stone: 'stone', metal: 'stone', soft: 'dust' };
 
 /**
- * One step, then for each impact a sound (wood over glass over stone, the louder material of the two
+ * One step (before the first throw only the clock advances), then for each impact a sound (wood over glass over stone, the louder material of the two
  * bodies, as loud as the impulse) and what it throws up where the bodies met: dust where something
  * lands on the grass, splinters, shards or chips of what a stone hits, and a shake of the camera
  * for a hard hit by a thrown stone (its size from the approach speed).
  */
 function stepWorld(world: PhysicsWorld): void {
+  // Before the first throw the castle holds still: its clock runs (clouds, the demo's timer) but
+  // nothing moves, so no piece can fall and score before a stone is thrown, however long the page is
+  // left open (a phone left in the background showed "Total 300" and stones off their beams).
+  if (shots.length === 0 && !DEMO) {
+    world.time += world.dt;
+    return;
+  }
   step(world);
   if (DEMO && shots.length === 0 && world.time > 0.3) {
     // At the castle's front at 19 m/s, the low angle.
@@ -1154,18 +1160,13 @@ function showBreaks(world: PhysicsWorld): void {
 }
 
 /**
- * The arc preview covers the rise of the flight and the start of its fall: to PREVIEW_PAST of the
- * way from the catapult to the arc's top beyond it (so the player sees where it tops out and turns
- * down, and judges the landing by symmetry: an arc that tops out halfway to the castle comes down
- * about at it), at least PREVIEW_SHARE of the way to the castle's front and never past PREVIEW_CAP
- * of it, nor PREVIEW_TIME s of flight. The landing is left to the player, helped by the last throw's
- * trail and its power and angle, which show while aiming (a whole arc to the castle made every
- * throw a sure hit; one cut at 55 % of the way hid whether a strong throw was still rising there).
+ * The arc preview runs the drag-free flight from the cup to its first hit: where the stone (radius
+ * PROJECTILE_RADIUS) first touches the ground, a bank of earth, the rock or a castle piece where it
+ * stands this frame, at most PREVIEW_TIME s of flight. A preview cut partway along the arc left a
+ * player guessing where the stone would land.
  */
-const PREVIEW_SHARE = 0.45,
-  PREVIEW_CAP = 0.8,
-  PREVIEW_PAST = 1.3,
-  PREVIEW_TIME = 3;
+const PREVIEW_TIME = 6,
+  PREVIEW_DT = 0.02;
 /** Least distance between two dots of the arc preview on the screen, px. */
 const PREVIEW_GAP = 11;
 /** What the aim shows in the last frame (tests): power (0 to 1), angle (degrees above level), preview dots and the preview's farthest x, m. */
@@ -1197,36 +1198,34 @@ function drawAim(world: PhysicsWorld): void {
   aimLayer.moveTo(aim.x0, aim.y0).lineTo(ex, ey).stroke({ width: 3, color });
   aimLayer.circle(aim.x0, aim.y0, 4).fill({ color: 0xffffff, alpha: 0.8 });
   aimLayer.circle(ex, ey, 9).fill(color).stroke({ width: 2, color: 0x000000, alpha: 0.6 });
-  // The arc to a little past its top (see PREVIEW_PAST).
+  // The arc to its first hit (see PREVIEW_TIME).
   const g = -world.gravity[1]!;
-  const arc = predictArc(LAUNCH.x, LAUNCH.y, vx, vy, g, Math.round(PREVIEW_TIME / 0.05) + 1, 0.05);
-  const span = lv.castleMinX - LAUNCH.x,
-    apex = vy > 0 ? (PREVIEW_PAST * vx * vy) / g : 0;
-  const reachX = LAUNCH.x + Math.min(PREVIEW_CAP * span, Math.max(PREVIEW_SHARE * span, apex));
+  const arc = previewArc(world, vx, vy, g);
   let reach: number = LAUNCH.x;
   // Dots at least PREVIEW_GAP px apart (a small scene, an upright phone's, crowded them into a
-  // rope), and the arc's last point within reach always drawn; smaller on a narrow screen.
+  // rope), and the arc's last point (the hit) always drawn; smaller on a narrow screen.
   const dotR = cam.width < NARROW ? 3.5 : 4.5;
   let lastX = Number.NEGATIVE_INFINITY,
     lastY = 0;
-  for (let i = 1; i < arc.length; i++) {
-    const [x, y] = arc[i]!;
-    if (x > reachX) break;
+  const n = arc.length / 2;
+  for (let i = 1; i < n; i++) {
+    const x = arc[2 * i]!,
+      y = arc[2 * i + 1]!;
     const px = cam.toScreenX(x),
       py = cam.toScreenY(y);
-    const end = i + 1 >= arc.length || arc[i + 1]![0] > reachX;
+    const end = i === n - 1;
     reach = x;
     if (!end && Math.hypot(px - lastX, py - lastY) < PREVIEW_GAP) continue;
     lastX = px;
     lastY = py;
-    const fade = 1 - i / arc.length;
+    const fade = 1 - i / n;
     aimLayer
-      .circle(px, py, dotR)
-      .fill({ color: 0xffffff, alpha: 0.35 + 0.6 * fade })
+      .circle(px, py, end ? dotR + 1.5 : dotR)
+      .fill({ color: 0xffffff, alpha: 0.45 + 0.5 * fade })
       .stroke({
         width: 1.5,
         color: 0x000000,
-        alpha: 0.3 + 0.4 * fade,
+        alpha: 0.35 + 0.35 * fade,
       });
     aimShown.dots++;
   }
@@ -1250,6 +1249,49 @@ function drawAim(world: PhysicsWorld): void {
   const half = aimText.width / 2 + 4;
   aimText.x = Math.min(Math.max(x + w / 2, half), cam.width - half);
   aimText.y = y - 4;
+}
+
+/**
+ * The drag-free flight of a stone launched from the cup at (vx, vy), m/s, under gravity g, m/s^2:
+ * x, y pairs (m) every PREVIEW_DT s from LAUNCH up to and including the first point where the stone
+ * touches the terrain, the rock or a castle piece as it stands in `world` now (a box in its own
+ * turned frame, a stone as a circle), at most PREVIEW_TIME s of flight.
+ */
+function previewArc(world: PhysicsWorld, vx: number, vy: number, g: number): number[] {
+  const P = world.components.Position,
+    A = world.components.Angle.value;
+  const r = PROJECTILE_RADIUS;
+  const out: number[] = [LAUNCH.x, LAUNCH.y];
+  const rockX = lv.castleMaxX + ROCK.gap + ROCK.hx;
+  const floor = Math.min(0, ...lv.terrain.map((t) => t.maxY)) - 5;
+  const steps = Math.round(PREVIEW_TIME / PREVIEW_DT);
+  for (let i = 1; i <= steps; i++) {
+    const t = i * PREVIEW_DT,
+      x = LAUNCH.x + vx * t,
+      y = LAUNCH.y + vy * t - 0.5 * g * t * t;
+    out.push(x, y);
+    if (y - r <= surfaceAt(lv, x) || y < floor) break;
+    if (lv.rock && Math.abs(x - rockX) <= ROCK.hx + r && y - r <= surfaceAt(lv, rockX) + 2 * ROCK.hy) break;
+    let hit = false;
+    for (const p of lv.pieces) {
+      if (!isAlive(world, p.body)) continue;
+      const s = slotOf(p.body);
+      const dx = x - P.x[s]!,
+        dy = y - P.y[s]!;
+      if (p.kind === 'stone') {
+        hit = Math.hypot(dx, dy) <= p.half[0] + r;
+      } else {
+        const c = Math.cos(A[s]!),
+          sn = Math.sin(A[s]!);
+        const lx = c * dx + sn * dy,
+          ly = -sn * dx + c * dy;
+        hit = Math.abs(lx) <= p.half[0] + r && Math.abs(ly) <= p.half[1] + r;
+      }
+      if (hit) break;
+    }
+    if (hit) break;
+  }
+  return out;
 }
 
 /** The screen end of the pull's band (px): the finger, or a full pull's length from the press along the pull. */
