@@ -151,8 +151,8 @@ export function warmStartBallRows(world: PhysicsWorld, buf: ContactBuffer): void
  * @category Collision
  */
 export function solveBallRows(world: PhysicsWorld, buf: ContactBuffer, useBias: boolean): void {
-  if (world.dimensions === 2) solve2D(world.collision, buf, useBias, solveParams, relaxOrder, relaxCount);
-  else solve3D(world.collision, buf, useBias, solveParams, relaxOrder, relaxCount);
+  if (world.dimensions === 2) solve2D(world.collision.bodyState, buf, useBias, solveParams, relaxOrder, relaxCount);
+  else solve3D(world.collision.bodyState, buf, useBias, solveParams, relaxOrder, relaxCount);
 }
 
 /**

@@ -127,27 +127,19 @@ export function warmStart3D(cs: CollisionState, buf: ContactBuffer): void {
 }
 
 /**
- * One Gauss-Seidel sweep over the 2D ball contacts: with soft bias if `useBias`, else the relax sweep,
+ * One Gauss-Seidel sweep over the 2D ball contacts, on the packed solver body state `sb` (CollisionState.bodyState): with soft bias if `useBias`, else the relax sweep,
  * which takes the rows against static bodies first and last and solves the support rows (frictionless,
  * or with the heavier ball above) with the lower ball held when that only slows the upper one
  * (solver/support.ts; (downX, downY) is the unit vector along gravity, (0, 0) without). The substep,
  * push-out cap, down vector and soft coefficients are read from `sp` (ball-rows.ts solveParams); the relax
- * sweep takes the rows in `order`'s first `orderCount` entries (solver/support.ts relaxOrderInto).
+ * sweep takes the rows in `order`'s first `count` entries (solver/support.ts relaxOrderInto).
  */
-export function solve2D(
-  cs: CollisionState,
-  buf: ContactBuffer,
-  useBias: boolean,
-  sp: Float64Array,
-  order: Int32Array,
-  orderCount: number,
-): void {
+export function solve2D(sb: Float64Array, buf: ContactBuffer, useBias: boolean, sp: Float64Array, order: Int32Array, count: number): void {
   const hs = sp[0]!,
     push = sp[1]!,
     downX = sp[2]!,
     downY = sp[3]!;
-  const n = buf.count,
-    sb = cs.bodyState;
+  const n = buf.count;
   const invH = 1 / hs;
   const IA = buf.ia,
     IB = buf.ib,
@@ -175,7 +167,7 @@ export function solve2D(
   // is at rest when the support row above it is relaxed and may hold it, taking the heavy ball's
   // push-out speed away; then the rows between two balls; then the rows against static bodies (walls,
   // floor, segments), which take out what the others pushed into them.
-  const end = useBias ? n : orderCount;
+  const end = useBias ? n : count;
   for (let k = 0; k < end; k++) {
     const i = useBias ? k : order[k]!;
     const a = IA[i]! * BS2_STRIDE,
@@ -279,24 +271,16 @@ export function solve2D(
 
 /**
  * One Gauss-Seidel sweep over the 3D ball contacts (with soft bias if `useBias`); parameters from
- * `sp`, `order` and `orderCount` as solve2D, and its relax sweep as solve2D's: static rows first and last, support rows
+ * `sp`, `order` and `count` as solve2D, and its relax sweep as solve2D's: static rows first and last, support rows
  * (frictionless or with the heavier ball above) holding their lower ball when that only slows the upper.
  */
-export function solve3D(
-  cs: CollisionState,
-  buf: ContactBuffer,
-  useBias: boolean,
-  sp: Float64Array,
-  order: Int32Array,
-  orderCount: number,
-): void {
+export function solve3D(sb: Float64Array, buf: ContactBuffer, useBias: boolean, sp: Float64Array, order: Int32Array, count: number): void {
   const hs = sp[0]!,
     push = sp[1]!,
     downX = sp[10]!,
     downY = sp[11]!,
     downZ = sp[12]!;
-  const n = buf.count,
-    sb = cs.bodyState;
+  const n = buf.count;
   const invH = 1 / hs;
   const IA = buf.ia,
     IB = buf.ib,
@@ -319,7 +303,7 @@ export function solve3D(
     MAXN = buf.maxNormalImpulse;
 
   // Row order as in solve2D: the relax sweep takes the rows under heavier balls, the ball pairs, the static rows.
-  const end = useBias ? n : orderCount;
+  const end = useBias ? n : count;
   for (let k = 0; k < end; k++) {
     const i = useBias ? k : order[k]!;
     const a = IA[i]! * BS3_STRIDE,
@@ -354,8 +338,7 @@ export function solve3D(
     }
     const vn = (vbx - vax) * nx + (vby - vay) * ny + (vbz - vaz) * nz;
     const oldN = LN[i]!;
-    // A speculative row with no impulse whose gap stays open this substep does nothing (as in solve2D:
-    // its normal impulse stays 0, so its friction cone is a point and every impulse below is 0).
+    // A speculative row with no impulse whose gap stays open does nothing (as in solve2D: every impulse is 0).
     if (s > 0 && oldN === 0 && vn + bias >= 0 && L1[i] === 0 && L2[i] === 0) continue;
     // A support row of the relax sweep may hold its lower ball (solver/support.ts), as in solve2D.
     let jmA = imA,
