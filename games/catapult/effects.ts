@@ -120,7 +120,13 @@ export class Effects {
       this.spare.pop() ??
       new Text({
         text: '',
-        style: { fill: 0xffffff, fontSize: 18, fontFamily: 'sans-serif', fontWeight: 'bold', stroke: { color: 0x000000, width: 4 } },
+        style: {
+          fill: 0xffffff,
+          fontSize: 18,
+          fontFamily: 'sans-serif',
+          fontWeight: 'bold',
+          stroke: { color: 0x000000, width: 4, join: 'round' },
+        },
       });
     text.anchor.set(0.5);
     text.text = label;

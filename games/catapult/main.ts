@@ -979,7 +979,7 @@ const banner = new Text({
     fontSize: 22,
     fontFamily: 'sans-serif',
     align: 'center',
-    stroke: { color: 0x000000, width: 4 },
+    stroke: { color: 0x000000, width: 4, join: 'round' },
     wordWrap: true,
     wordWrapWidth: 600,
   },
@@ -994,21 +994,39 @@ const bannerPanel = new Graphics({ label: 'banner panel' });
 const BANNER_PANEL_ALPHA = 0.62;
 const verdictText = new Text({
   text: '',
-  style: { fill: 0xffffff, fontSize: 20, fontFamily: 'sans-serif', fontWeight: 'bold', stroke: { color: 0x000000, width: 5 } },
+  style: {
+    fill: 0xffffff,
+    fontSize: 20,
+    fontFamily: 'sans-serif',
+    fontWeight: 'bold',
+    stroke: { color: 0x000000, width: 5, join: 'round' },
+  },
 });
 verdictText.anchor.set(0.5, 1);
 verdictText.visible = false;
 /** How far past the castle an off-screen throw came down (see drawOffscreen). */
 const offscreenText = new Text({
   text: '',
-  style: { fill: 0xffe066, fontSize: 15, fontFamily: 'sans-serif', fontWeight: 'bold', stroke: { color: 0x000000, width: 4 } },
+  style: {
+    fill: 0xffe066,
+    fontSize: 15,
+    fontFamily: 'sans-serif',
+    fontWeight: 'bold',
+    stroke: { color: 0x000000, width: 4, join: 'round' },
+  },
 });
 offscreenText.anchor.set(1, 0.5);
 offscreenText.visible = false;
 /** Where the castle is while it is off the screen (see drawCastleMarker). */
 const castleText = new Text({
   text: '',
-  style: { fill: 0xffe066, fontSize: 15, fontFamily: 'sans-serif', fontWeight: 'bold', stroke: { color: 0x000000, width: 4 } },
+  style: {
+    fill: 0xffe066,
+    fontSize: 15,
+    fontFamily: 'sans-serif',
+    fontWeight: 'bold',
+    stroke: { color: 0x000000, width: 4, join: 'round' },
+  },
 });
 castleText.anchor.set(1, 0.5);
 castleText.visible = false;
@@ -1021,7 +1039,7 @@ const aimText = new Text({
     fontFamily: 'sans-serif',
     fontWeight: 'bold',
     align: 'center',
-    stroke: { color: 0x000000, width: 4 },
+    stroke: { color: 0x000000, width: 4, join: 'round' },
   },
 });
 aimText.anchor.set(0.5, 1);
@@ -1324,7 +1342,13 @@ const closeSprite = new Sprite(closeTexture);
 const closeFrame = new Graphics({ label: 'close-up frame' });
 const closeLabel = new Text({
   text: 'castle, close up',
-  style: { fill: 0xffffff, fontSize: 13, fontFamily: 'sans-serif', fontWeight: 'bold', stroke: { color: 0x000000, width: 3 } },
+  style: {
+    fill: 0xffffff,
+    fontSize: 13,
+    fontFamily: 'sans-serif',
+    fontWeight: 'bold',
+    stroke: { color: 0x000000, width: 3, join: 'round' },
+  },
 });
 closeSprite.visible = closeFrame.visible = closeLabel.visible = false;
 app.stage.addChild(closeSprite, closeFrame, closeLabel);
