@@ -1004,29 +1004,25 @@ const verdictText = new Text({
 });
 verdictText.anchor.set(0.5, 1);
 verdictText.visible = false;
+/** The yellow outlined style of the labels at the screen's edge (off-screen throw, castle marker). */
+const EDGE_LABEL_STYLE = {
+  fill: 0xffe066,
+  fontSize: 15,
+  fontFamily: 'sans-serif',
+  fontWeight: 'bold',
+  stroke: { color: 0x000000, width: 4, join: 'round' },
+} as const;
 /** How far past the castle an off-screen throw came down (see drawOffscreen). */
 const offscreenText = new Text({
   text: '',
-  style: {
-    fill: 0xffe066,
-    fontSize: 15,
-    fontFamily: 'sans-serif',
-    fontWeight: 'bold',
-    stroke: { color: 0x000000, width: 4, join: 'round' },
-  },
+  style: EDGE_LABEL_STYLE,
 });
 offscreenText.anchor.set(1, 0.5);
 offscreenText.visible = false;
 /** Where the castle is while it is off the screen (see drawCastleMarker). */
 const castleText = new Text({
   text: '',
-  style: {
-    fill: 0xffe066,
-    fontSize: 15,
-    fontFamily: 'sans-serif',
-    fontWeight: 'bold',
-    stroke: { color: 0x000000, width: 4, join: 'round' },
-  },
+  style: EDGE_LABEL_STYLE,
 });
 castleText.anchor.set(1, 0.5);
 castleText.visible = false;
