@@ -227,7 +227,13 @@ for (const [device, options] of [
           return [c.left, c.top, c.width, c.height, document.querySelector('.lab-status')!.getBoundingClientRect().height];
         });
       const layoutBefore = await layout();
-      const saidBefore = await g.page.locator('.lab-status').textContent();
+      // The status line is refreshed by a frame: until one runs after the reset it may still show the
+      // last case's words, the same note this stroke writes (then the wait below could never see a change).
+      // The reset cleared the note, so wait for a status without one.
+      const saidBefore = await g.waitFor(() => {
+        const now = document.querySelector('.lab-status')?.textContent ?? '';
+        return (!/cut off the line|held no shape/.test(now) && now) || null;
+      }, null);
       await drag(g.page, await across(), 6);
       // The status changes on a frame after the stroke (a frame may go undrawn on a busy page, and a
       // finger's last moves and its lift may reach the page a frame after `drag` returns): wait until
