@@ -8,7 +8,8 @@
  * level when the stick is let go; it leaves the throttle to the pilot. Without it the stick moves
  * the surfaces directly.
  * Fly through every ring (./course.ts) as fast as you can; a ring flown past to the side, left
- * behind, is missed (./course.ts leaveBehind); after a miss the course moves on (the
+ * behind, is missed (./course.ts leaveBehind; one laid ahead after a miss is laid ahead again
+ * instead, so one over-correction costs one star); after a miss the course moves on (the
  * next ring is laid just ahead: ./course.ts relayAfterMiss); each ring missed costs a star (three to
  * start with, shown on the goal line) and adds MISS_PENALTY (20) s to the course clock, said in the
  * banner and by a red glow round the scene the moment it is missed; do not hit the ground. P (or the
@@ -89,6 +90,7 @@ import {
   faceRing,
   flyRings,
   LEFT_BEHIND_SPEED,
+  LEFT_BEHIND_TIME,
   layCourse,
   leaveBehind,
   lessonTipText,
@@ -169,6 +171,7 @@ function createWorld(): PhysicsWorld {
   rings = layCourse({ terrain: handles.terrain, seed: params.seed + 7, count: params.rings, start: [0, START_ALTITUDE, 0] });
   events.length = 0;
   doneAt.clear();
+  movedAhead = -1;
   missedAt = -Infinity;
   crashReadings = null;
   awayFor = 0;
@@ -436,9 +439,13 @@ function checkRings(time: number): void {
   // A ring flown through or its plane crossed; else one left behind (./course.ts leaveBehind: flown
   // past to the side, it never counted, and turning back to it took a stranger a minute).
   let happened = flyRings(rings, prev, now);
-  if (happened.length === 0) happened = leaveBehind(rings, awayFor);
+  // A ring laid ahead after a miss and left behind before it was reached (the pilot still turning
+  // hard, over-correcting) is laid ahead again, with no miss: one over-correction costs one star (a
+  // newcomer holding a bank key lost a star every 6 s as each new ring fell behind the turn).
+  const again = happened.length === 0 && before >= 0 && before === movedAhead && awayFor >= LEFT_BEHIND_TIME;
+  if (happened.length === 0 && !again) happened = leaveBehind(rings, awayFor);
   // The next ring starts afresh.
-  if (happened.length > 0) awayFor = 0;
+  if (happened.length > 0 || again) awayFor = 0;
   for (const { ring, result } of happened) {
     doneAt.set(ring, performance.now());
     if (result === 'passed') {
@@ -459,15 +466,16 @@ function checkRings(time: number): void {
   const next = nextRing(rings);
   // After a miss the course moves on: the next ring (and the rest of the course with it) is laid
   // just ahead, where the aircraft is heading, so that a miss costs a star and not a long turn back.
-  if (next >= 0 && happened.at(-1)?.result === 'missed') {
+  if (next >= 0 && (again || happened.at(-1)?.result === 'missed')) {
     relayAfterMiss(rings, next, now, Math.atan2(now[2]! - prev[2]!, now[0]! - prev[0]!), handles.terrain);
+    movedAhead = next;
     rings.forEach((r, k) => {
       if (k < next) return;
       ringMeshes[k]?.position.set(r.x, r.y, r.z);
       ringMeshes[k]?.quaternion.setFromUnitVectors(zAxis, ringNormal.set(r.nx, r.ny, r.nz));
     });
-    // Said once the miss's banner has been read.
-    events.push({ text: `Ring ${next + 1} moved ahead`, colour: '#ffd166', time: time + 1.4 });
+    // Said once the miss's banner has been read (at once when no miss came with it).
+    events.push({ text: `Ring ${next + 1} moved ahead`, colour: '#ffd166', time: again ? time : time + 1.4 });
   }
   // Recovering from a miss: the ring now next turns to face the aircraft (a ring met at an angle
   // was seen edge on), and so does one whose plane the aircraft crossed far off (beyond MISS_RANGE:
@@ -497,6 +505,8 @@ let missedAt = -Infinity;
 let crashReadings: ReturnType<typeof instruments> | null = null;
 /** How long the next ring has fallen behind without a break, s (./course.ts leaveBehind). */
 let awayFor = 0;
+/** The ring last laid ahead after a miss (./course.ts relayAfterMiss), -1 for none: left behind, it is laid ahead again with no miss. */
+let movedAhead = -1;
 /** Adds a step of `dt` s to `awayFor` while the aircraft draws away from the next ring faster than LEFT_BEHIND_SPEED, else clears it. */
 function timeAway(world: PhysicsWorld, dt: number): void {
   const n = nextRing(rings);
