@@ -1204,6 +1204,12 @@ let tipWait = '';
 let tipGoneAt = Infinity;
 /** How long a tip stays after the pilot acts on it, s of game time: on a phone, and ring 1's start tip. */
 const TIP_LINGER = 3;
+/**
+ * How long a lesson tip the flight does not wait for (rings 3 and 4) stays on a phone, s of game
+ * time from when it shows: long enough to read two lines, and then the sky is clear again for the
+ * rest of the way to the ring, as after a tip that waited (TIP_LINGER).
+ */
+const TIP_READ = 5;
 /** Whether the page is used by touch first (a phone): the tips name the stick, not the keys. */
 const touchFirst = matchMedia('(pointer: coarse)').matches;
 /** What the tip shows now ('' when none; tests). */
@@ -1230,7 +1236,7 @@ function lessonTip(): string {
     return '';
   }
   if (tipRing !== i) {
-    tipGoneAt = Infinity;
+    tipGoneAt = compact && !holding && i >= 2 ? shell.world.time + TIP_READ : Infinity;
     tipRing = i;
   }
   // The ways are worked out afresh every frame from where the aircraft is and flies now: a tip
