@@ -1223,7 +1223,7 @@ describe('projects', () => {
           const at = `${Math.round(w.left)},${Math.round(w.top)}`;
           hud.warningAt ||= at;
           if (at !== hud.warningAt) hud.bad.push(`the warning moved from ${hud.warningAt} to ${at}`);
-          for (const n of ['ring-pointer', 'banner', 'turn-back', 'throttle-note', 'tip', 'end']) {
+          for (const n of ['ring-pointer', 'banner', 'throttle-note', 'tip', 'end']) {
             const el = document.querySelector<HTMLElement>(`[data-hud="${n}"]`);
             if (!el || el.style.display === 'none') continue;
             const o = el.getBoundingClientRect();

@@ -5,8 +5,8 @@
  * ring of the default course, a move through a ring's plane passes it inside the radius, misses it
  * outside, and counts nothing the wrong way or far off, each missed ring costs 20 s of course time and a
  * star, and the lesson tips' ways (left / right, higher / lower) are where the ring lies from the aircraft;
- * only a run that beats a kept best is a new best (not the first); the turn-back cue shows far from
- * the ring or after flying away from it, on the side the ring lies.
+ * only a run that beats a kept best is a new best (not the first); a ring that has fallen behind for
+ * LEFT_BEHIND_TIME is missed, once.
  */
 
 import { createPhysicsWorld, setBodyThrust, setControlDeflection, step } from '@bitphysics/physics';
