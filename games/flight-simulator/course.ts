@@ -614,45 +614,56 @@ export function compareWithBest(previous: BestResult | null, passed: number, tim
   return passed > previous.passed || (passed === previous.passed && time < previous.time) ? 'better' : 'not';
 }
 
-/** How far from the next ring (m) the aircraft may be before the turn-back cue shows. */
-export const TURN_BACK_DISTANCE = 3000;
-/** How long (s) the aircraft may fly away from the next ring (closing on it at under -5 m/s) before the cue shows. */
-export const TURN_BACK_AWAY_TIME = 6;
 /**
- * A bank towards the ring at least this steep, rad (15 degrees), is the pilot turning back already:
- * the cue does not show (a stranger was told to turn back while banked round towards the ring).
+ * How fast the aircraft must draw away from the next ring's centre, m/s, for the ring to count as
+ * falling behind (`recedingSpeed`, `leaveBehind`): a little over 0, so a ring alongside in a turn
+ * towards it does not count.
  */
-export const TURN_BACK_BANK = (15 * Math.PI) / 180;
+export const LEFT_BEHIND_SPEED = 5;
+/**
+ * How long the next ring may fall behind (the aircraft drawing away from it faster than
+ * LEFT_BEHIND_SPEED) before it counts as missed, s (`leaveBehind`): a ring flown past to the side is
+ * left behind, and the course moves on (./course.ts relayAfterMiss). Turning back to it took a
+ * stranger about a minute (the design turn comes round at 3.6 degrees/s).
+ */
+export const LEFT_BEHIND_TIME = 1.5;
 
 /**
- * Whether to tell the pilot to turn back to the next ring, and which way: when the ring lies behind
- * the wing line (its bearing from the nose more than 90 degrees) and the aircraft has flown away
- * from it for `awayFor` s, or is farther than TURN_BACK_DISTANCE from it. `toRing` is the ring's centre minus the
- * aircraft's position (m, world), `heading` the direction of its nose in the level plane (rad, from +x towards +z, as ./assist.ts flightState gives it).
- * `bank` is the aircraft's bank (rad, + right wing down; default 0): banked TURN_BACK_BANK or more
- * towards the side the ring lies on, the pilot is turning back already and no cue shows.
- * Returns null for no cue (always for a ring ahead of the wing line), else the side the ring lies on, 'left' or 'right' of the nose seen from
- * above (+y up; the right of a nose along +x is +z), the way to turn; straight behind says 'left'.
- * @throws RangeError on a `toRing` that is not 3 finite numbers or a `heading` or `bank` that is not finite.
+ * How fast an aircraft at `position` (m, world) flying along `velocity` (m/s, world) draws away from
+ * `ring`'s centre, m/s: + away from it, - closing on it (0 at the centre).
+ * @throws RangeError on a position or velocity that is not 3 finite numbers.
  */
-export function turnBackCue(toRing: readonly number[], heading: number, awayFor: number, bank = 0): 'left' | 'right' | null {
-  if (toRing.length < 3 || !toRing.slice(0, 3).every(Number.isFinite))
-    throw new RangeError(`turnBackCue: toRing must be 3 finite numbers, got ${toRing.join(', ')}`);
-  if (!Number.isFinite(heading)) throw new RangeError(`turnBackCue: heading must be a finite number (rad), got ${heading}`);
-  if (!Number.isFinite(bank)) throw new RangeError(`turnBackCue: bank must be a finite number (rad), got ${bank}`);
-  const distance = Math.hypot(toRing[0]!, toRing[1]!, toRing[2]!);
-  if (distance <= TURN_BACK_DISTANCE && !(awayFor >= TURN_BACK_AWAY_TIME)) return null;
-  const fx = Math.cos(heading),
-    fz = Math.sin(heading);
-  // The cue says "behind you": a ring ahead of the wing line (in the view, its label on screen, or
-  // just off it to the side, where the edge arrow points to it) never has it, however far it is.
-  if (fx * toRing[0]! + fz * toRing[2]! >= 0) return null;
-  // The ring's bearing relative to the nose, in the level plane: the cross product's sign says the side.
-  const cross = fx * toRing[2]! - fz * toRing[0]!;
-  const side = cross > 0 ? 'right' : 'left';
-  // Already banked round towards it: the pilot is turning back.
-  if ((side === 'right' ? bank : -bank) >= TURN_BACK_BANK) return null;
-  return side;
+export function recedingSpeed(ring: Ring, position: readonly number[], velocity: readonly number[]): number {
+  for (const [name, v] of [
+    ['position', position],
+    ['velocity', velocity],
+  ] as const)
+    if (v.length < 3 || !v.slice(0, 3).every(Number.isFinite))
+      throw new RangeError(`recedingSpeed: ${name} must be 3 finite numbers, got ${v.join(', ')}`);
+  const dx = ring.x - position[0]!,
+    dy = ring.y - position[1]!,
+    dz = ring.z - position[2]!,
+    d = Math.hypot(dx, dy, dz);
+  if (!(d > 0)) return 0;
+  return -(velocity[0]! * dx + velocity[1]! * dy + velocity[2]! * dz) / d;
+}
+
+/**
+ * The rule for a ring left behind: when the next ring still ahead (`nextRing`) has fallen behind for
+ * `behindFor` s (the aircraft drawing away from it faster than LEFT_BEHIND_SPEED without a break),
+ * LEFT_BEHIND_TIME or more, it is missed (its status set) as if its plane were crossed outside it.
+ * Returns what happened (empty when nothing did), as `flyRings` does: a ring passed to the side
+ * beyond MISS_RANGE, or flown by without crossing its plane, was never counted, and the pilot had to
+ * turn back to it.
+ * @throws RangeError on a `behindFor` that is not finite and >= 0.
+ */
+export function leaveBehind(rings: Ring[], behindFor: number): RingEvent[] {
+  if (!(behindFor >= 0 && Number.isFinite(behindFor)))
+    throw new RangeError(`leaveBehind: behindFor must be finite and >= 0 s, got ${behindFor}`);
+  const i = nextRing(rings);
+  if (i < 0 || behindFor < LEFT_BEHIND_TIME) return [];
+  rings[i]!.status = 'missed';
+  return [{ ring: i, result: 'missed' }];
 }
 
 /**

@@ -7,7 +7,9 @@
  * go, the wings roll level) and gives a held climb or dive the elevator's full response, flying
  * level when the stick is let go; it leaves the throttle to the pilot. Without it the stick moves
  * the surfaces directly.
- * Fly through every ring (./course.ts) as fast as you can; after a miss the course moves on (the
+ * Fly through every ring (./course.ts) as fast as you can; a ring flown past to the side, left
+ * behind, is missed (./course.ts leaveBehind; one laid ahead after a miss is laid ahead again
+ * instead, so one over-correction costs one star); after a miss the course moves on (the
  * next ring is laid just ahead: ./course.ts relayAfterMiss); each ring missed costs a star (three to
  * start with, shown on the goal line) and adds MISS_PENALTY (20) s to the course clock, said in the
  * banner and by a red glow round the scene the moment it is missed; do not hit the ground. P (or the
@@ -17,7 +19,8 @@
  * above it (clear of the ring and of the marker; an edge arrow when it is out of view), and a flight-path
  * marker where the aircraft's path, curved by its turn and climb, meets the next ring's plane if the
  * pilot lets go now (green when it is inside the ring). The flight waits for the pilot's first input
- * at the start and while the tips of the lesson rings (2 to 4) are read. The cockpit view (C) has a canopy frame and an instrument panel (./cockpit.ts: airspeed,
+ * at the start and while the first lesson's tip (ring 2: a plane turns by banking) is read; the
+ * later lessons' tips (rings 3, 4) show while it flies on. The cockpit view (C) has a canopy frame and an instrument panel (./cockpit.ts: airspeed,
  * altimeter, heading, vertical speed, throttle) with the attitude indicator in its middle. The chase
  * camera sits close behind and widens its view with speed, so the speed shows.
  * Keys: arrows or W/S/A/D: climb / dive and bank (with "pilot's pitch" in the panel, down pulls up),
@@ -86,7 +89,10 @@ import {
   courseTime,
   faceRing,
   flyRings,
+  LEFT_BEHIND_SPEED,
+  LEFT_BEHIND_TIME,
   layCourse,
+  leaveBehind,
   lessonTipText,
   MISS_PENALTY,
   nextRing,
@@ -95,10 +101,10 @@ import {
   RING_WAYS,
   type Ring,
   type RingWay,
+  recedingSpeed,
   relayAfterMiss,
   ringBearing,
   ringWay,
-  turnBackCue,
 } from './course';
 import { createScenery, HORIZON_COLOUR, SUN_DIRECTION } from './scenery';
 
@@ -164,6 +170,8 @@ function createWorld(): PhysicsWorld {
   keyInput.pitch = keyInput.roll = 0;
   rings = layCourse({ terrain: handles.terrain, seed: params.seed + 7, count: params.rings, start: [0, START_ALTITUDE, 0] });
   events.length = 0;
+  doneAt.clear();
+  movedAhead = -1;
   missedAt = -Infinity;
   crashReadings = null;
   awayFor = 0;
@@ -183,8 +191,8 @@ function createWorld(): PhysicsWorld {
 const motion = { bank: 0, rollRate: 0, pathRate: 0 };
 
 /**
- * Whether the flight waits for the pilot: at the start and after a reset, and when a lesson's tip
- * first shows (`showTip`), the game pauses until the pilot's first flight key or touch of the stick
+ * Whether the flight waits for the pilot: at the start and after a reset, and when the first lesson's
+ * tip (ring 2) first shows (`showTip`), the game pauses until the pilot's first flight key or touch of the stick
  * (or P), so the tip is read before the ring comes (a stranger read the tips while the aircraft flew
  * on, and missed rings 2 to 6 in a row).
  */
@@ -331,6 +339,11 @@ function pilotInput(): { roll: number; pitch: number; yaw: number } {
   };
 }
 
+/**
+ * When each ring was passed or missed, ms (performance.now; absent while it is ahead): it fades out
+ * over RING_FADE_MS from then (`paintRings`).
+ */
+const doneAt = new Map<number, number>();
 /** Game events for the banner and the sounds, newest last: text, colour, game time. */
 const events: { text: string; colour: string; time: number }[] = [];
 const sound = getSound();
@@ -392,8 +405,8 @@ function stepWorld(world: PhysicsWorld): void {
   now[2] = P.z[e]!;
   if (state.phase === 'flying') {
     state.time += dt;
-    checkRings(world.time);
     timeAway(world, dt);
+    checkRings(world.time);
   }
   const ground = Math.max(SEA_LEVEL, terrainHeight(handles.terrain, now[0]!, now[2]!));
   if (now[1]! < ground + 2) {
@@ -423,8 +436,18 @@ function stepWorld(world: PhysicsWorld): void {
 /** Passes or misses rings (./course.ts flyRings) on the move from `prev` to `now`: counts, banners, sounds. */
 function checkRings(time: number): void {
   const before = nextRing(rings);
-  const happened = flyRings(rings, prev, now);
+  // A ring flown through or its plane crossed; else one left behind (./course.ts leaveBehind: flown
+  // past to the side, it never counted, and turning back to it took a stranger a minute).
+  let happened = flyRings(rings, prev, now);
+  // A ring laid ahead after a miss and left behind before it was reached (the pilot still turning
+  // hard, over-correcting) is laid ahead again, with no miss: one over-correction costs one star (a
+  // newcomer holding a bank key lost a star every 6 s as each new ring fell behind the turn).
+  const again = happened.length === 0 && before >= 0 && before === movedAhead && awayFor >= LEFT_BEHIND_TIME;
+  if (happened.length === 0 && !again) happened = leaveBehind(rings, awayFor);
+  // The next ring starts afresh.
+  if (happened.length > 0 || again) awayFor = 0;
   for (const { ring, result } of happened) {
+    doneAt.set(ring, performance.now());
     if (result === 'passed') {
       state.score++;
       const last = nextRing(rings) < 0;
@@ -443,15 +466,16 @@ function checkRings(time: number): void {
   const next = nextRing(rings);
   // After a miss the course moves on: the next ring (and the rest of the course with it) is laid
   // just ahead, where the aircraft is heading, so that a miss costs a star and not a long turn back.
-  if (next >= 0 && happened.at(-1)?.result === 'missed') {
+  if (next >= 0 && (again || happened.at(-1)?.result === 'missed')) {
     relayAfterMiss(rings, next, now, Math.atan2(now[2]! - prev[2]!, now[0]! - prev[0]!), handles.terrain);
+    movedAhead = next;
     rings.forEach((r, k) => {
       if (k < next) return;
       ringMeshes[k]?.position.set(r.x, r.y, r.z);
       ringMeshes[k]?.quaternion.setFromUnitVectors(zAxis, ringNormal.set(r.nx, r.ny, r.nz));
     });
-    // Said once the miss's banner has been read.
-    events.push({ text: `Ring ${next + 1} moved ahead`, colour: '#ffd166', time: time + 1.4 });
+    // Said once the miss's banner has been read (at once when no miss came with it).
+    events.push({ text: `Ring ${next + 1} moved ahead`, colour: '#ffd166', time: again ? time : time + 1.4 });
   }
   // Recovering from a miss: the ring now next turns to face the aircraft (a ring met at an angle
   // was seen edge on), and so does one whose plane the aircraft crossed far off (beyond MISS_RANGE:
@@ -465,9 +489,11 @@ function checkRings(time: number): void {
     }
   }
   if (next < 0) finish(time);
-  // A lesson's ring next (2 to 4): the flight waits while its tip is read, unless the pilot is
-  // flying it already (a key or the stick held: no key would come to go on with).
-  else if (next !== before && next >= 1 && next <= 3 && !steering()) {
+  // The first lesson's ring next (ring 2, the first turn: a plane turns by banking): the flight
+  // waits while its tip is read, unless the pilot is flying it already (a key or the stick held: no
+  // key would come to go on with). The later lessons' tips show while the flight goes on (a
+  // stranger found a pause at every lesson ring broke the flow).
+  else if (next !== before && next === 1 && !steering()) {
     // Paused at once, not at the next step: the tip and the pause show in the same frame.
     holding = true;
     shell.paused = true;
@@ -477,23 +503,20 @@ function checkRings(time: number): void {
 let missedAt = -Infinity;
 /** The instruments read at the moment of the crash (the readouts then stay at them), or null. */
 let crashReadings: ReturnType<typeof instruments> | null = null;
-/** How long the aircraft has flown away from the next ring without a break, s (./course.ts turnBackCue). */
+/** How long the next ring has fallen behind without a break, s (./course.ts leaveBehind). */
 let awayFor = 0;
-/** Adds a step of `dt` s to `awayFor` while the aircraft closes on the next ring at under -5 m/s, else clears it. */
+/** The ring last laid ahead after a miss (./course.ts relayAfterMiss), -1 for none: left behind, it is laid ahead again with no miss. */
+let movedAhead = -1;
+/** Adds a step of `dt` s to `awayFor` while the aircraft draws away from the next ring faster than LEFT_BEHIND_SPEED, else clears it. */
 function timeAway(world: PhysicsWorld, dt: number): void {
   const n = nextRing(rings);
   if (n < 0) {
     awayFor = 0;
     return;
   }
-  const r = rings[n]!,
-    V = world.components.Velocity,
+  const V = world.components.Velocity,
     e = handles.body;
-  const dx = r.x - now[0]!,
-    dy = r.y - now[1]!,
-    dz = r.z - now[2]!;
-  const closing = (V.x[e]! * dx + V.y[e]! * dy + V.z[e]! * dz) / Math.max(1e-9, Math.hypot(dx, dy, dz));
-  awayFor = closing < -5 ? awayFor + dt : 0;
+  awayFor = recedingSpeed(rings[n]!, now, [V.x[e]!, V.y[e]!, V.z[e]!]) > LEFT_BEHIND_SPEED ? awayFor + dt : 0;
 }
 
 /** Best result of this course (seed and ring count) in localStorage: rings passed, then the shorter course time (misses' penalties in). */
@@ -610,12 +633,22 @@ const materials = {
   missed: new MeshBasicMaterial({ color: 0xff5a4a, transparent: true, opacity: 0.3 }),
 };
 let ringMeshes: Mesh[] = [];
+/** Each passed or missed ring's own material while it fades (a copy of its status's), by ring index. */
+const fadeMaterials = new Map<number, MeshBasicMaterial>();
+/**
+ * How long a ring passed or missed takes to fade out and go, ms of the clock (it fades while the
+ * flight waits too). Drawn on, the ring just flown through lay as a big green arc across the chase
+ * view, and over the whole wait for the next lesson's tip.
+ */
+const RING_FADE_MS = 600;
 const halo = new Mesh(haloGeometry, materials.halo);
 app.scene.add(halo);
 const zAxis = new Vector3(0, 0, 1),
   ringNormal = new Vector3();
 function placeRings(): void {
   for (const m of ringMeshes) app.scene.remove(m);
+  for (const m of fadeMaterials.values()) m.dispose();
+  fadeMaterials.clear();
   ringMeshes = rings.map((ring) => {
     const m = new Mesh(ringGeometry, materials.ahead);
     m.position.set(ring.x, ring.y, ring.z);
@@ -642,7 +675,12 @@ const beadMatrix = new Matrix4(),
   beadTo = new Vector3(),
   beadStep = new Vector3();
 
-/** Lays the guide's beads from `from` (the aircraft, m) through the next ring to the one after it. */
+/**
+ * Lays the guide's beads from `from` (the aircraft, m) through the next ring to the one after it; in
+ * the cockpit view from the next ring on only: seen from the aircraft, the beads to the next ring
+ * lie on the line of sight to it, and the nearest (5 m across, 50 m off) covered a ring 2 km away
+ * (130 m across) whole, so that it showed only as its outline.
+ */
 function drawGuide(from: Vector3): void {
   const i = nextRing(rings);
   guide.visible = i >= 0 && state.phase === 'flying';
@@ -650,8 +688,13 @@ function drawGuide(from: Vector3): void {
   let n = 0;
   // From 60 m ahead of the aircraft (clear of the model) to the next ring, then from it to the one after.
   beadAt.copy(from);
+  const cockpitView = state.camera === 'cockpit';
   for (const ring of [rings[i]!, rings[i + 1]]) {
     if (!ring) break;
+    if (cockpitView && ring === rings[i]) {
+      beadAt.set(ring.x, ring.y, ring.z);
+      continue;
+    }
     beadTo.set(ring.x, ring.y, ring.z);
     const length = beadAt.distanceTo(beadTo);
     beadStep.subVectors(beadTo, beadAt).normalize();
@@ -664,13 +707,43 @@ function drawGuide(from: Vector3): void {
   guide.count = n;
   guide.instanceMatrix.needsUpdate = true;
 }
+/** The guide's beads drawn now, each centre (m, world; tests). */
+function guideBeads(): [number, number, number][] {
+  if (!guide.visible) return [];
+  return Array.from({ length: guide.count }, (_, k) => {
+    guide.getMatrixAt(k, beadMatrix);
+    beadAt.setFromMatrixPosition(beadMatrix);
+    return [beadAt.x, beadAt.y, beadAt.z];
+  });
+}
 
-/** Colours the rings by their status, the next one brightest with a pulsing halo. */
+/**
+ * Colours the rings by their status, the next one brightest with a pulsing halo; a ring passed or
+ * missed fades out over RING_FADE_MS and goes.
+ */
 function paintRings(t: number): void {
   const i = nextRing(rings);
+  const wall = performance.now();
   rings.forEach((ring, k) => {
-    ringMeshes[k]!.material = k === i ? materials.next : materials[ring.status];
-    ringMeshes[k]!.geometry = k === i ? ringGeometry : laterGeometry;
+    const m = ringMeshes[k]!;
+    m.geometry = k === i ? ringGeometry : laterGeometry;
+    if (ring.status === 'ahead') {
+      m.visible = true;
+      m.material = k === i ? materials.next : materials.ahead;
+      return;
+    }
+    const left = 1 - (wall - (doneAt.get(k) ?? -Infinity)) / RING_FADE_MS;
+    m.visible = left > 0;
+    if (!m.visible) return;
+    const base = materials[ring.status];
+    let own = fadeMaterials.get(k);
+    if (!own || own.color.getHex() !== base.color.getHex()) {
+      own?.dispose();
+      own = base.clone();
+      fadeMaterials.set(k, own);
+    }
+    own.opacity = base.opacity * left;
+    m.material = own;
   });
   halo.visible = i >= 0 && state.phase !== 'crashed';
   if (i >= 0) {
@@ -1108,37 +1181,6 @@ const LABEL_GAP = 6;
 /** The next ring's outer edge from its centre, m: the pulsing halo's (RING_RADIUS + 12, tube 2.5, pulse 6 %). */
 const RING_OUTER = (RING_RADIUS + 12 + 2.5) * 1.06;
 
-/**
- * A cue in the scene's middle when the aircraft has strayed from the next ring (farther than
- * TURN_BACK_DISTANCE, or flying away from it for a while: ./course.ts turnBackCue): "Turn back:
- * ring N is behind you", an arrow on the side to turn to. The ring label at the edge alone was
- * missed by a stranger who flew on away from the course.
- */
-const turnBack = overlay(
-  `left: 50%; top: ${compact ? 40 : 38}%; padding: ${compact ? '4px 12px' : '6px 18px'}; border-radius: 12px; background: rgba(8, 12, 20, 0.85); color: #ffb347; font: 800 ${compact ? 16 : 22}px system-ui, sans-serif; white-space: nowrap; display: none;`,
-);
-turnBack.dataset.hud = 'turn-back';
-/** The turn-back cue's text now ('' when it does not show). */
-let turnBackText = '';
-/** Shows the turn-back cue, or hides it, for the aircraft now. */
-function showTurnBack(): void {
-  const n = nextRing(rings);
-  let text = '';
-  if (n >= 0 && state.phase === 'flying' && !holding) {
-    const r = rings[n]!,
-      world = shell.world,
-      e = handles.body;
-    const s = flightState(world, e);
-    const side = turnBackCue([r.x - now[0]!, r.y - now[1]!, r.z - now[2]!], s.heading, awayFor, s.bank);
-    if (side) text = side === 'left' ? `◀ Turn back: ring ${n + 1} is behind you` : `Turn back: ring ${n + 1} is behind you ▶`;
-  }
-  if (text !== turnBackText) {
-    turnBackText = text;
-    turnBack.textContent = text;
-    turnBack.style.display = text ? 'block' : 'none';
-  }
-}
-
 // ---- Lessons: what the first rings ask for, in plain words ----------------------------------------
 
 /**
@@ -1162,6 +1204,12 @@ let tipWait = '';
 let tipGoneAt = Infinity;
 /** How long a tip stays after the pilot acts on it, s of game time: on a phone, and ring 1's start tip. */
 const TIP_LINGER = 3;
+/**
+ * How long a lesson tip the flight does not wait for (rings 3 and 4) stays on a phone, s of game
+ * time from when it shows: long enough to read two lines, and then the sky is clear again for the
+ * rest of the way to the ring, as after a tip that waited (TIP_LINGER).
+ */
+const TIP_READ = 5;
 /** Whether the page is used by touch first (a phone): the tips name the stick, not the keys. */
 const touchFirst = matchMedia('(pointer: coarse)').matches;
 /** What the tip shows now ('' when none; tests). */
@@ -1188,7 +1236,7 @@ function lessonTip(): string {
     return '';
   }
   if (tipRing !== i) {
-    tipGoneAt = Infinity;
+    tipGoneAt = compact && !holding && i >= 2 ? shell.world.time + TIP_READ : Infinity;
     tipRing = i;
   }
   // The ways are worked out afresh every frame from where the aircraft is and flies now: a tip
@@ -1196,9 +1244,6 @@ function lessonTip(): string {
   const V = shell.world.components.Velocity,
     e = handles.body;
   tipWay = ringWay(ringBearing(rings[i]!, now, [V.x[e]!, V.y[e]!, V.z[e]!]));
-  // Once the turn-back cue shows, the ways the tip named are stale (a tip said "far to the right"
-  // 14 km from its ring): the tip goes for this ring and the cue says the way.
-  if (turnBackText) tipGoneAt = Math.min(tipGoneAt, shell.world.time);
   // Ring 1's tip is the start's, up while the flight waits; on a phone each tip goes a little after
   // the pilot has acted on it (TIP_LINGER), so it does not cover the sky all the way to its ring.
   if ((i === 0 && !holding) || shell.world.time >= tipGoneAt) return '';
@@ -1324,14 +1369,14 @@ function showThrottleNote(): void {
 }
 
 /**
- * Every message over the scene but the warning (the banner, the turn-back cue, the engine's note and
- * the lesson tip, in that order) sits in one column, one under the other, never on each other: at the
+ * Every message over the scene but the warning (the banner, the engine's note and the lesson tip,
+ * in that order) sits in one column, one under the other, never on each other: at the
  * scene's top, or in its low lane (above the cockpit's instrument panel in that view, so the gauges
  * stay clear) while the top one would cover the next ring, its label or the flight-path marker and
  * the low one would not, and back up once the top is clear by LANE_RETURN px (the margin keeps the
  * column from jumping back and forth as the ring moves). The warning keeps one place at the scene's
  * top, over everything; while it is on, the top lane starts under it. Each had its own fixed place: the banner
- * and the turn-back cue sat over the ring ahead, the warning over the cockpit's gauges.
+ * sat over the ring ahead, the warning over the cockpit's gauges.
  */
 let messagesLow = false;
 /** Gap between the messages, and between them and the scene's edge or the cockpit's panel, px. */
@@ -1369,7 +1414,7 @@ function coveredBy(box: readonly number[], pad = 0): number {
 }
 /** Places the messages shown now in their lane (`messagesLow`), after the ring's label and the marker are placed. */
 function placeMessages(): void {
-  const items = [banner, turnBack, throttleNote, tip].filter((el) => el.style.display !== 'none');
+  const items = [banner, throttleNote, tip].filter((el) => el.style.display !== 'none');
   // The warning keeps its own place at the top: while it is on, the top lane starts under it.
   const warned = warningEl.style.display !== 'none';
   const topLane = warned ? warningEl.offsetTop + warningEl.offsetHeight + LANE_GAP : LANE_GAP;
@@ -1431,14 +1476,19 @@ marker.dataset.hud = 'path-marker';
   const shape = '<circle r="5.5"/><path d="M-15 0H-6M6 0H15M0 -6V-10"/>';
   marker.innerHTML = `<svg viewBox="-17 -10 34 20" width="${2 * MARKER_HALF[0]}" height="${2 * MARKER_HALF[1]}" style="overflow: visible"><g fill="none" stroke-linecap="round"><g stroke="#000" stroke-width="5.5">${shape}</g><g stroke="currentColor" stroke-width="2.6">${shape}</g></g></svg>`;
 }
-/** What the marker shows (tests): visible, inside the next ring, its offset from the ring's centre (m), its place (px). */
-const pathAim = { visible: false, inside: false, offset: Infinity, x: 0, y: 0 };
+/**
+ * What the marker shows (tests): visible, inside the next ring, its offset from the ring's centre
+ * (m), its place (px), and the game time of the drawn frame that placed it last (s; frames the pacer
+ * does not draw leave it where it was).
+ */
+const pathAim = { visible: false, inside: false, offset: Infinity, x: 0, y: 0, drawnAt: -1 };
 const markAt = new Vector3();
 function markPath(): void {
   const i = nextRing(rings);
   const world = shell.world,
     e = handles.body,
     V = world.components.Velocity;
+  pathAim.drawnAt = world.time;
   const through =
     i >= 0 && state.phase === 'flying'
       ? predictThroughRing(
@@ -1623,7 +1673,6 @@ function frame(alpha = 1): void {
   updateBanner(world.time);
   updateGoal();
   updateHud(i);
-  showTurnBack();
   showThrottleNote();
   placeMessages();
 }
@@ -1691,7 +1740,7 @@ const panel = createPanel(
 shell.expose({
   /** The pointer to the next ring: its index (-1: none left), whether it is in view, its text and box (px). */
   ringPointer: () => ({ ...ringAim }),
-  /** The flight-path marker: visible, inside the next ring, its offset from the ring's centre (m), its place (px). */
+  /** The flight-path marker: visible, inside the next ring, its offset from the ring's centre (m), its place (px), the game time of the drawn frame that placed it (s). */
   pathMarker: () => ({ ...pathAim }),
   /** Trees, houses and cloud puffs drawn now, the cloud layers' lowest and highest base (m). */
   scenery: () => scenery.counts(),
@@ -1713,6 +1762,10 @@ shell.expose({
   keyInput: () => ({ ...keyInput }),
   /** The attitude indicator: shown (cockpit view) and the pitch and roll it drew last, degrees. */
   attitude: () => ({ ...shownAttitude }),
+  /** The guide's beads drawn now, each centre (m, world). */
+  guideBeads,
+  /** Each ring's drawn opacity now (0: not drawn; a ring passed or missed fades out and goes). */
+  ringOpacity: () => ringMeshes.map((m) => (m.visible ? (m.material as MeshBasicMaterial).opacity : 0)),
   /** The course: each ring's centre (m), normal and status. */
   rings: () => rings.map((r) => ({ ...r })),
   /** The lesson tip over the scene now ('' when none shows). */
@@ -1722,8 +1775,8 @@ shell.expose({
     [0, 1, 2, 3].flatMap((i) => RING_WAYS.map((w) => lessonTipText(i, w, { touch: touchFirst, compact, pilotPitch: params.pilotPitch }))),
   /** Game time at which the tip now shown goes, s (Infinity: it stays while its ring is next). */
   tipUntil: () => tipGoneAt,
-  /** The turn-back cue's text now ('' when none shows) and how long the aircraft has flown away from the next ring, s. */
-  turnBack: () => ({ text: turnBackText, awayFor }),
+  /** How long the next ring has fallen behind without a break, s (at LEFT_BEHIND_TIME it is missed: ./course.ts leaveBehind). */
+  behindFor: () => awayFor,
   /** The messages over the scene as last placed: in the low lane or not, each shown one's name (data-hud) and box (px: left, top, width, height), and the warning's box while it is on (else null). */
   messages: () => ({
     low: messageLayout.low,

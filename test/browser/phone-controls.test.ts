@@ -260,6 +260,59 @@ describe('phone controls', () => {
     expect(Math.max(...fits.measured.map((m) => m.lines))).toBe(2);
   });
 
+  it('flight simulator: the tip of ring 3 shows while the flight goes on (no wait) and goes after 5 s, clearing the sky before the ring', async () => {
+    const g = await h.openGame('flight-simulator', PHONE);
+    type Flight = {
+      paused: boolean;
+      step(): void;
+      // biome-ignore lint/suspicious/noExplicitAny: the page's stores are read loosely here
+      world: { time: number; components: any };
+      rings(): { x: number; y: number; z: number; nx: number; ny: number; nz: number }[];
+      aircraftBody(): number;
+      tip(): string;
+      tipUntil(): number;
+    };
+    // While the flight waits at the start (no step runs), put the aircraft 60 m before ring 2 on
+    // its line, flying along it: it passes ring 2 and ring 3's tip shows.
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as Flight;
+      const r = w.rings()[1]!,
+        c = w.world.components,
+        e = w.aircraftBody();
+      const speed = Math.hypot(c.Velocity.x[e], c.Velocity.y[e], c.Velocity.z[e]);
+      c.Position.x[e] = r.x - 60 * r.nx;
+      c.Position.y[e] = r.y - 60 * r.ny;
+      c.Position.z[e] = r.z - 60 * r.nz;
+      c.Velocity.x[e] = speed * r.nx;
+      c.Velocity.y[e] = speed * r.ny;
+      c.Velocity.z[e] = speed * r.nz;
+    });
+    await g.page.keyboard.press('Space');
+    const shown = await g.waitFor(() => {
+      const w = window.game as unknown as Flight;
+      return w.tip().startsWith('Ring 3') ? { paused: w.paused, time: w.world.time, until: w.tipUntil() } : null;
+    }, null);
+    // The flight goes on (only ring 2's tip waits), and the tip is set to go 5 s after it showed (it
+    // stayed all the way to the ring, two lines over the sky for 7 s).
+    expect(shown.paused).toBe(false);
+    expect(shown.until).toBeGreaterThan(shown.time + 4);
+    expect(shown.until).toBeLessThanOrEqual(shown.time + 5 + 1e-9);
+    // Paused and stepped (deterministic game time): up 0.2 s before then, gone 0.1 s after.
+    const tipAt = async (t: number) => {
+      await g.page.evaluate((to) => {
+        const w = window.game as unknown as Flight;
+        w.paused = true;
+        while (w.world.time < to) w.step();
+      }, t);
+      await g.frames(2);
+      return g.page.evaluate(() => (window.game as unknown as Flight).tip());
+    };
+    expect(await tipAt(shown.until - 0.2)).toMatch(/^Ring 3/);
+    expect(await tipAt(shown.until + 0.1)).toBe('');
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
   it('flight simulator: a tap of Faster steps the engine and says so; the header keeps two lines after misses; a ring under the nose shows through the aircraft; messages keep clear of the ring and the gauges', async () => {
     const g = await h.openGame('flight-simulator', PHONE);
     type Box = [number, number, number, number];

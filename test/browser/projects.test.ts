@@ -588,6 +588,34 @@ describe('projects', () => {
     expect(gauge('speed')).toBeCloseTo(panel.i.speed, -1);
     expect(gauge('altitude')).toBeCloseTo(panel.i.altitude, -1);
     expect(panel.gauges.map((x) => x.name)).toEqual(expect.arrayContaining(['speed', 'altitude', 'heading', 'throttle']));
+    // Seen from the cockpit no bead of the guide lies in front of the next ring, within its radius
+    // (77 m with the halo) of the line of sight to it: the chain from the aircraft to the ring lay
+    // on that line, and its nearest bead (5 m across, 50 m off) covered a ring 2 km off whole. The
+    // chain on from the ring to the one after is still drawn.
+    const sight = await g.page.evaluate(() => {
+      const w = window.game as unknown as Att & {
+        guideBeads(): [number, number, number][];
+        rings(): { x: number; y: number; z: number }[];
+        aircraftBody(): number;
+        world: { components: { Position: { x: Float64Array; y: Float64Array; z: Float64Array } } };
+      };
+      const P = w.world.components.Position,
+        e = w.aircraftBody();
+      const a = [P.x[e]!, P.y[e]!, P.z[e]!],
+        r = w.rings()[0]!;
+      const to = [r.x - a[0]!, r.y - a[1]!, r.z - a[2]!],
+        d = Math.hypot(to[0]!, to[1]!, to[2]!);
+      // Each bead's angle off the line of sight to the ring's centre, against the ring's angular radius.
+      return w.guideBeads().map((b) => {
+        const v = [b[0] - a[0]!, b[1] - a[1]!, b[2] - a[2]!],
+          dv = Math.hypot(v[0]!, v[1]!, v[2]!);
+        const cos = (v[0]! * to[0]! + v[1]! * to[1]! + v[2]! * to[2]!) / (dv * d);
+        return { nearer: dv < d, off: Math.acos(Math.min(1, cos)), ring: Math.atan(77 / d) };
+      });
+    });
+    expect(sight.length).toBeGreaterThan(0);
+    const inFront = sight.filter((b) => b.nearer && b.off < b.ring);
+    expect(inFront, JSON.stringify(inFront.slice(0, 3))).toEqual([]);
     // Banking left: the indicator's roll goes negative (the instruments' sign), by more than 5 degrees.
     await g.page.keyboard.down('ArrowLeft');
     await g.waitFor(() => (window.game as unknown as Att).attitude().roll < -5, null, 30_000);
@@ -762,7 +790,7 @@ describe('projects', () => {
       aircraftBody(): number;
       rings(): { x: number; y: number; z: number; nx: number; ny: number; nz: number }[];
       tip(): string;
-      pathMarker(): { visible: boolean; x: number; y: number };
+      pathMarker(): { visible: boolean; x: number; y: number; drawnAt: number };
       ringPointer(): { ring: number[] };
       keyInput(): { roll: number };
       world: {
@@ -809,12 +837,12 @@ describe('projects', () => {
         },
         [k, yaw, climb] as const,
       );
-      // Space goes on from the wait (the start's, or the last lesson's) without steering.
+      // Space goes on from the wait (the start's, or ring 2's) without steering.
       await g.page.keyboard.press('Space');
       const seen = await g.waitFor(
         (k) => {
           const w = window.game as unknown as Flight;
-          if (!w.paused || !w.tip().startsWith(`Ring ${k + 1} `)) return null;
+          if (!w.tip().startsWith(`Ring ${k + 1} `)) return null;
           // Where the ring lies from the aircraft, worked out here: across the line flown (right +)
           // and above it, m at the ring's distance.
           const r = w.rings()[k]!,
@@ -832,11 +860,15 @@ describe('projects', () => {
           // Above the line along the velocity: the part of (dx, dy, dz) along the velocity's "up"
           // (-vy vx, vh^2, -vy vz) / (v vh).
           const up = (-vy * vx * dx + vh * vh * dy - vy * vz * dz) / (v * vh);
-          return { tip: w.tip(), wait: document.querySelector('[data-hud="tip-wait"]')?.textContent ?? '', right, up };
+          return { tip: w.tip(), wait: document.querySelector('[data-hud="tip-wait"]')?.textContent ?? '', right, up, paused: w.paused };
         },
         k,
         30_000,
       );
+      // Only the first lesson (ring 2: a plane turns by banking) waits while its tip is read; the
+      // tips of rings 3 and 4 show while the flight goes on (a stranger found a pause at every
+      // lesson ring broke the flow).
+      expect(seen.paused, `ring ${k + 1}`).toBe(k === 1);
       const r3 = 65 / 3; // a third of the ring's radius: nearer the line flown, no way is named
       const words = seen.tip.split(/[:.]/)[0]!;
       const message = `${seen.tip} (ring ${seen.right.toFixed(0)} m right, ${seen.up.toFixed(0)} m up)`;
@@ -854,7 +886,9 @@ describe('projects', () => {
     }
     // A bank held from level flight: the path marker moves on the screen the way of the bank, 10 px
     // within 1 s of game time, never the other way first (it slid 34 px the wrong way first, as the
-    // chase camera swung with the bank). Read every drawn frame.
+    // chase camera swung with the bank). Read every drawn frame, and only those: a frame the pacer
+    // does not draw (the software GPU behind, under load) leaves the marker where it was, and such
+    // frames read as a marker stuck for up to half a second while the key's input grew.
     for (const key of ['ArrowRight', 'ArrowLeft']) {
       await g.press('r');
       await g.page.keyboard.press('Space');
@@ -865,12 +899,13 @@ describe('projects', () => {
         const tick = () => {
           const w = window.game as unknown as Flight;
           const m = w.pathMarker();
-          if (m.visible) log.push({ t: w.world.time, x: m.x, k: w.keyInput().roll });
+          if (m.visible && m.drawnAt === w.world.time) log.push({ t: w.world.time, x: m.x, k: w.keyInput().roll });
           if (log.length < 2000) requestAnimationFrame(tick);
         };
         requestAnimationFrame(tick);
       });
-      await g.frames(3);
+      // Two drawn frames before the key (the base to measure from).
+      await g.waitFor(() => (window as unknown as { markerLog: unknown[] }).markerLog.length >= 2 || null, null);
       const t0 = await g.page.evaluate(() => (window.game as unknown as Flight).world.time);
       await g.page.keyboard.down(key);
       await g.waitFor((t) => (window.game as unknown as Flight).world.time > t + 1.5, t0, 60_000);
@@ -929,6 +964,10 @@ describe('projects', () => {
     }, null);
     expect(passed.status).toBe('passed');
     expect(passed.banner).toBe('Ring 1 ✓');
+    // The ring flown through fades out and goes (it lay on as a big green arc across the chase view,
+    // and over the whole wait for ring 2's tip, which follows at once).
+    await g.waitFor(() => (window.game as unknown as Flight & { ringOpacity(): number[] }).ringOpacity()[0] === 0, null);
+    expect(await g.page.evaluate(() => (window.game as unknown as Flight & { ringOpacity(): number[] }).ringOpacity()[1])).toBe(1);
     // Ring 2, the first turn, comes with a tip over the scene in plain words: which side it is on
     // (the side the course lays it, from the aircraft's heading), that a plane turns by tipping its
     // wings, and the key for it.
@@ -990,7 +1029,7 @@ describe('projects', () => {
       const w = window.game as unknown as Flight;
       w.world.components.Position.y[w.aircraftBody()] = 1; // below every hill and the sea
     });
-    await g.page.keyboard.press('Space'); // ring 3's tip waits
+    await g.page.keyboard.press('Space'); // harmless: ring 3's tip does not wait
     // The readouts give the crash's values as soon as the goal line says so, and keep them (they ran
     // on after "Crashed", 166 -> 170 m/s and 309 -> 245 m: they were refreshed every 6th drawn frame).
     const atCrash = await g.waitFor(
@@ -1015,47 +1054,104 @@ describe('projects', () => {
     await g.close();
   });
 
-  it('flight-simulator: far from the next ring a cue says to turn back, with the side to turn to; near it again the cue goes; a lesson tip goes when the cue shows', async () => {
-    const g = await h.openGame('flight-simulator', { query: { rings: 3 } });
+  it('flight-simulator: a ring flown past to the side, beyond the miss range, is left behind: missed once, and the next ring is laid ahead; left behind too, that one is laid ahead again with no second miss', async () => {
+    const g = await h.openGame('flight-simulator', { viewport: { width: 1280, height: 800 }, query: { rings: 3 } });
     type Flight = Game & {
       aircraftBody(): number;
-      rings(): { x: number; y: number; z: number }[];
-      turnBack(): { text: string; awayFor: number };
+      rings(): { x: number; y: number; z: number; status: string }[];
+      state: { missed: number; score: number };
+      behindFor(): number;
+      banner(): { text: string };
     };
-    /** Puts the aircraft at ring `ring` plus (dx, dy, dz) m (dy null: its height kept). */
-    const place = (ring: number, dx: number, dy: number | null, dz: number) =>
-      g.page.evaluate(
-        ([ring, dx, dy, dz]) => {
-          const w = window.game as unknown as Flight;
-          const r = w.rings()[ring]!,
-            c = w.world.components,
-            e = w.aircraftBody();
-          c.Position.x[e] = r.x + dx;
-          if (dy !== null) c.Position.y[e] = r.y + dy;
-          c.Position.z[e] = r.z + dz;
-        },
-        [ring, dx, dy, dz] as const,
-      );
-    await g.page.keyboard.press('Space'); // the flight waits for the pilot
-    expect(await g.page.evaluate(() => (window.game as unknown as Flight).turnBack().text)).toBe('');
-    // 4 km past ring 1 (it lies along +x, the heading at the start), 300 m to its right (+z): ring 1 is behind, on the left.
-    await place(0, 4000, 300, 300); // 300 m up: clear of the hills (700 m at most)
-    const text = await g.waitFor(() => (window.game as unknown as Flight).turnBack().text, null);
-    expect(text).toBe('◀ Turn back: ring 1 is behind you');
-    expect(await g.page.locator('[data-hud="turn-back"]').isVisible()).toBe(true);
-    // Back before the ring, flying towards it: the cue goes.
-    await place(0, -500, null, 0);
-    await g.waitFor(() => (window.game as unknown as Flight).turnBack().text === '', null);
-    expect(await g.page.locator('[data-hud="turn-back"]').isVisible()).toBe(false);
-    // Through ring 1's centre: ring 2, a lesson ring, is next and its tip shows; far from ring 2 the
-    // turn-back cue shows and the tip (whose ways were worked out before) goes.
-    await place(0, -3, 0, 0);
-    const lesson = await g.waitFor(() => (window.game as unknown as Flight & { tip(): string }).tip() || null, null);
-    expect(lesson).toMatch(/Ring 2/);
-    await g.page.keyboard.press('x'); // the flight waits while the tip is read
-    await place(1, 4000, 300, 300);
-    await g.waitFor(() => ((window.game as unknown as Flight).turnBack().text.includes('ring 2') ? true : null), null);
-    expect(await g.page.evaluate(() => (window.game as unknown as Flight & { tip(): string }).tip())).toBe('');
+    // Before the first input the flight waits (no step runs): the aircraft is put 800 m to the right
+    // of ring 1 (+z; past MISS_RANGE, 600 m, so crossing its plane there counts nothing) and 100 m
+    // short of its plane, flying on along +x as it starts. A stranger flew past a ring far to the
+    // side and took about a minute to come round to it.
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as Flight;
+      const r = w.rings()[0]!,
+        c = w.world.components,
+        e = w.aircraftBody();
+      c.Position.x[e] = r.x - 100;
+      c.Position.y[e] = r.y;
+      c.Position.z[e] = r.z + 800;
+    });
+    await g.page.keyboard.press('Space');
+    // Past its plane the ring falls behind; 1.5 s of game time later (LEFT_BEHIND_TIME) it is
+    // missed, said at once, and counted once.
+    const missed = await g.waitFor(
+      () => {
+        const w = window.game as unknown as Flight;
+        const r = w.rings()[0]!,
+          c = w.world.components,
+          e = w.aircraftBody();
+        if (r.status === 'ahead') return null;
+        return { status: r.status, missed: w.state.missed, score: w.state.score, past: c.Position.x[e]! - r.x, banner: w.banner().text };
+      },
+      null,
+      60_000,
+    );
+    expect(missed).toMatchObject({ status: 'missed', missed: 1, score: 0, banner: 'Missed ring 1 · −1 ★ · +20 s' });
+    // Counted when it had fallen behind: flown on past its plane, at 110 to 170 m/s for 1.5 s at least.
+    expect(missed.past).toBeGreaterThan(150);
+    // The course moved on: ring 2 now lies ahead of the aircraft (along +x, within 30 degrees),
+    // 600 to 1,000 m off (laid 800 m ahead: ./course.ts RECOVERY_DISTANCE).
+    const next = await g.page.evaluate(() => {
+      const w = window.game as unknown as Flight;
+      const r = w.rings()[1]!,
+        c = w.world.components,
+        e = w.aircraftBody();
+      const dx = r.x - c.Position.x[e]!,
+        dz = r.z - c.Position.z[e]!;
+      return { status: r.status, distance: Math.hypot(dx, r.y - c.Position.y[e]!, dz), bearing: (Math.atan2(dz, dx) * 180) / Math.PI };
+    });
+    expect(next.status).toBe('ahead');
+    expect(next.distance).toBeGreaterThan(600);
+    expect(next.distance).toBeLessThan(1000);
+    expect(Math.abs(next.bearing)).toBeLessThan(30);
+    // Ring 2, laid ahead after the miss, left behind too before it was reached (the pilot still
+    // turning away, over-correcting: put 300 m past it and 800 m to its side while ring 2's tip
+    // waits): it is laid ahead again, said at once, with no second miss (a newcomer holding a bank
+    // key lost a star every 6 s as each new ring fell behind the turn).
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as Flight;
+      const r = w.rings()[1]! as unknown as { x: number; y: number; z: number; nx: number; nz: number },
+        c = w.world.components,
+        e = w.aircraftBody();
+      const across = Math.hypot(r.nx, r.nz);
+      c.Position.x[e] = r.x + (300 * r.nx) / across - (800 * r.nz) / across;
+      c.Position.z[e] = r.z + (300 * r.nz) / across + (800 * r.nx) / across;
+      c.Position.y[e] = r.y;
+    });
+    const before = await g.page.evaluate(() => ({ ...(window.game as unknown as Flight).rings()[1]! }));
+    await g.page.keyboard.press('Space');
+    const again = await g.waitFor(
+      (before) => {
+        const w = window.game as unknown as Flight;
+        const r = w.rings()[1]!,
+          c = w.world.components,
+          e = w.aircraftBody();
+        if (r.x === before.x && r.z === before.z && w.state.missed === 1) return null;
+        const dx = r.x - c.Position.x[e]!,
+          dz = r.z - c.Position.z[e]!,
+          vx = c.Velocity.x[e]!,
+          vz = c.Velocity.z[e]!;
+        return {
+          missed: w.state.missed,
+          status: r.status,
+          banner: w.banner().text,
+          distance: Math.hypot(dx, r.y - c.Position.y[e]!, dz),
+          // The angle between the way flown and the line to the ring, degrees.
+          off: (Math.acos((dx * vx + dz * vz) / (Math.hypot(dx, dz) * Math.hypot(vx, vz))) * 180) / Math.PI,
+        };
+      },
+      before,
+      60_000,
+    );
+    expect(again).toMatchObject({ missed: 1, status: 'ahead', banner: 'Ring 2 moved ahead' });
+    expect(again.distance).toBeGreaterThan(600);
+    expect(again.distance).toBeLessThan(1000);
+    expect(again.off).toBeLessThan(30);
     expect(g.errors).toEqual([]);
     await g.close();
   });
@@ -1127,7 +1223,7 @@ describe('projects', () => {
           const at = `${Math.round(w.left)},${Math.round(w.top)}`;
           hud.warningAt ||= at;
           if (at !== hud.warningAt) hud.bad.push(`the warning moved from ${hud.warningAt} to ${at}`);
-          for (const n of ['ring-pointer', 'banner', 'turn-back', 'throttle-note', 'tip', 'end']) {
+          for (const n of ['ring-pointer', 'banner', 'throttle-note', 'tip', 'end']) {
             const el = document.querySelector<HTMLElement>(`[data-hud="${n}"]`);
             if (!el || el.style.display === 'none') continue;
             const o = el.getBoundingClientRect();

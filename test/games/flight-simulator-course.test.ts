@@ -5,8 +5,8 @@
  * ring of the default course, a move through a ring's plane passes it inside the radius, misses it
  * outside, and counts nothing the wrong way or far off, each missed ring costs 20 s of course time and a
  * star, and the lesson tips' ways (left / right, higher / lower) are where the ring lies from the aircraft;
- * only a run that beats a kept best is a new best (not the first); the turn-back cue shows far from
- * the ring or after flying away from it, on the side the ring lies.
+ * only a run that beats a kept best is a new best (not the first); a ring that has fallen behind for
+ * LEFT_BEHIND_TIME is missed, once.
  */
 
 import { createPhysicsWorld, setBodyThrust, setControlDeflection, step } from '@bitphysics/physics';
@@ -23,8 +23,11 @@ import {
   FIRST_RING_DISTANCE,
   faceRing,
   flyRings,
+  LEFT_BEHIND_SPEED,
+  LEFT_BEHIND_TIME,
   LESSONS,
   layCourse,
+  leaveBehind,
   lessonTipText,
   MISS_PENALTY,
   MISS_RANGE,
@@ -39,15 +42,12 @@ import {
   RING_WAYS,
   type Ring,
   reachable,
+  recedingSpeed,
   relayAfterMiss,
   ringBearing,
   ringDifficulty,
   ringWay,
   TIP_OFFSET,
-  TURN_BACK_AWAY_TIME,
-  TURN_BACK_BANK,
-  TURN_BACK_DISTANCE,
-  turnBackCue,
 } from '../../games/flight-simulator/course';
 
 const terrain = aircraft.build(createPhysicsWorld(aircraft.worldOptions()), { seed: 3 }).terrain;
@@ -398,35 +398,34 @@ describe('flight simulator course', () => {
     expect(() => compareWithBest(kept, 2, Number.NaN)).toThrow(/compareWithBest: time must be a finite number >= 0 \(s\), got NaN/);
   });
 
-  it('the turn-back cue: none near the ring, briefly away or with the ring ahead, shown far off or long away behind, on the side the ring lies', () => {
-    // Heading along +x (0 rad); +z is the right of the nose seen from above.
-    expect(turnBackCue([1000, 0, 200], 0, 0)).toBeNull();
-    expect(turnBackCue([-1000, 0, 200], 0, TURN_BACK_AWAY_TIME - 0.1)).toBeNull();
-    // Flying away for TURN_BACK_AWAY_TIME: the ring behind and to the right says right, to the left says left.
-    expect(turnBackCue([-1000, 0, 200], 0, TURN_BACK_AWAY_TIME)).toBe('right');
-    expect(turnBackCue([-1000, 0, -200], 0, TURN_BACK_AWAY_TIME)).toBe('left');
-    // Farther than TURN_BACK_DISTANCE, whatever the time away.
-    expect(turnBackCue([-TURN_BACK_DISTANCE - 10, 0, -50], 0, 0)).toBe('left');
-    expect(turnBackCue([-TURN_BACK_DISTANCE + 10, 0, -50], 0, 0)).toBeNull();
-    // A ring ahead of the wing line is never "behind you", however far or long away (a stranger saw
-    // the cue with ring 3 on screen ahead and to the right, 3 km off).
-    expect(turnBackCue([TURN_BACK_DISTANCE + 10, 0, -50], 0, 0)).toBeNull();
-    expect(turnBackCue([4000, 0, 3000], 0, TURN_BACK_AWAY_TIME + 5)).toBeNull();
-    expect(turnBackCue([1, 0, 5000], 0, TURN_BACK_AWAY_TIME + 5)).toBeNull();
-    expect(turnBackCue([-1, 0, 5000], 0, 0)).toBe('right');
-    // Heading along +z (pi/2): its right is -x.
-    expect(turnBackCue([-4000, 0, -10], Math.PI / 2, 0)).toBe('right');
-    expect(turnBackCue([4000, 0, -10], Math.PI / 2, 0)).toBe('left');
-    // Banked 15 degrees or more towards the ring, the pilot is turning back already: no cue; banked
-    // the other way, or less, the cue stays (a stranger was told to turn back while banked round).
-    expect(turnBackCue([-1000, 0, 200], 0, TURN_BACK_AWAY_TIME, TURN_BACK_BANK)).toBeNull();
-    expect(turnBackCue([-1000, 0, 200], 0, TURN_BACK_AWAY_TIME, TURN_BACK_BANK - 0.01)).toBe('right');
-    expect(turnBackCue([-1000, 0, 200], 0, TURN_BACK_AWAY_TIME, -1)).toBe('right');
-    expect(turnBackCue([-1000, 0, -200], 0, TURN_BACK_AWAY_TIME, -TURN_BACK_BANK)).toBeNull();
-    expect(turnBackCue([-1000, 0, -200], 0, TURN_BACK_AWAY_TIME, 1)).toBe('left');
-    expect(() => turnBackCue([0, 0, 0], 0, 0, Number.NaN)).toThrow(/turnBackCue: bank must be a finite number \(rad\), got NaN/);
-    expect(() => turnBackCue([0, Number.NaN, 0], 0, 0)).toThrow(/turnBackCue: toRing must be 3 finite numbers/);
-    expect(() => turnBackCue([0, 0, 0], Number.NaN, 0)).toThrow(/turnBackCue: heading must be a finite number \(rad\), got NaN/);
+  it('a ring left behind: the speed away from it, and after LEFT_BEHIND_TIME falling behind it is missed, once', () => {
+    const ring: Ring = { x: 1000, y: 500, z: 0, nx: 1, ny: 0, nz: 0, status: 'ahead' };
+    // Flying at it along +x: closing at the full speed; flying away along -x: drawing away at it.
+    expect(recedingSpeed(ring, [0, 500, 0], [130, 0, 0])).toBeCloseTo(-130, 9);
+    expect(recedingSpeed(ring, [0, 500, 0], [-130, 0, 0])).toBeCloseTo(130, 9);
+    // Past it 300 m, 800 m to its side, flying on along +x: drawing away at 130 x 300 / 854.4 m/s.
+    expect(recedingSpeed(ring, [1300, 500, 800], [130, 0, 0])).toBeCloseTo((130 * 300) / Math.hypot(300, 800), 9);
+    // Alongside (square to the line to it): neither.
+    expect(Math.abs(recedingSpeed(ring, [1000, 500, 800], [130, 0, 0]))).toBeLessThan(1e-9);
+    expect(recedingSpeed(ring, [1000, 500, 0], [130, 0, 0])).toBe(0);
+    expect(LEFT_BEHIND_SPEED).toBeGreaterThan(0);
+    expect(() => recedingSpeed(ring, [0, Number.NaN, 0], [1, 0, 0])).toThrow(/recedingSpeed: position must be 3 finite numbers/);
+    const rings = (): Ring[] => [
+      { ...ring, status: 'passed' },
+      { ...ring, status: 'ahead' },
+      { ...ring, status: 'ahead' },
+    ];
+    // Not long enough: nothing.
+    const a = rings();
+    expect(leaveBehind(a, LEFT_BEHIND_TIME - 0.01)).toEqual([]);
+    expect(a.map((r) => r.status)).toEqual(['passed', 'ahead', 'ahead']);
+    // Long enough: the next ring (not the one after) is missed, once.
+    expect(leaveBehind(a, LEFT_BEHIND_TIME)).toEqual([{ ring: 1, result: 'missed' }]);
+    expect(a.map((r) => r.status)).toEqual(['passed', 'missed', 'ahead']);
+    expect(leaveBehind(a, LEFT_BEHIND_TIME)).toEqual([{ ring: 2, result: 'missed' }]);
+    expect(leaveBehind(a, 100)).toEqual([]);
+    expect(() => leaveBehind(rings(), Number.NaN)).toThrow(/leaveBehind: behindFor must be finite and >= 0 s, got NaN/);
+    expect(() => leaveBehind(rings(), -1)).toThrow(/leaveBehind: behindFor must be finite and >= 0 s, got -1/);
   });
 
   it('faceRing: a ring met after a miss faces the aircraft: its way through is the line from the aircraft, its centre stays, and it is passed flying on', () => {
