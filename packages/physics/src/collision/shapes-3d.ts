@@ -346,7 +346,7 @@ function gather(world: PhysicsWorld, s: Shape3DStore): void {
     if (moving) {
       const V = c.Velocity,
         W = c.AngularVelocity;
-      // (Math.sqrt of the sum of squares: Math.hypot is several times slower in V8, and these never overflow.)
+      // (Math.sqrt of the sum of squares: Math.hypot is slower in V8, and these never overflow.)
       const vx = V.x[b]!,
         vy = V.y[b]!,
         vz = V.z[b]!;

@@ -28,8 +28,8 @@ import type { PhysicsWorld } from '../world/options.js';
  * (bitecs' queryAddEntity rule); bitecs hands out the slot freed last first, so a step whose births
  * follow its deaths before any query (the spawn stage: expiries, their bursts, then the emitters'
  * births) moves nothing in the query arrays. They stay in slot order and the systems' loops walk
- * memory in order (a query in random slot order made every loop over 50,000 particles about five
- * times slower); `defragment` restores the order when births and deaths that could not be matched
+ * memory in order (a query in random slot order makes every loop over the particles jump around
+ * memory, several times slower); `defragment` restores the order when births and deaths that could not be matched
  * have stirred it.
  *
  * What a fast birth does not do: run bitecs onAdd observers. The component defaults the world's

@@ -27,12 +27,11 @@ import type { PhysicsWorld } from '../world/options.js';
  * f above AUTO_HERTZ_FRACTION of the substep rate, the step takes more solver substeps
  * (`solverSubstepsFor`, at most MAX_AUTO_SUBSTEPS): every ball contact then gets its full stiffness,
  * at f h_s <= 0.6, where piles settle. At dt 1/60 and contactHertz 60 this starts below a radius of
- * 17.4 cm (10 cm: 6 substeps; 4 cm: 9; 2 cm: 12; 1.1 cm and less: 16). Measured on the bench's Galton
- * board of 2,000 balls of 2 cm (`--scene galton`, seeds 1, 2, 3): deepest overlap 8.4 / 10.6 / 15.2 %
- * of a radius with 4 substeps, 1.6 / 1.6 / 1.5 % with the automatic 12; the board's step costs
- * more in proportion to the contact solver's share (see the report of issue 13 for the ratio).
+ * 17.4 cm (10 cm: 6 substeps; 4 cm: 9; 2 cm: 12; 1.1 cm and less: 16). Small balls then overlap
+ * far less (a Galton board of 2 cm balls: a few percent of a radius instead of about ten), at a step
+ * cost that grows with the contact solver's share.
  * Big balls (balls-in-box's 0.5 m: 3 would do) keep the world's count. `CollisionSettings.autoSubsteps`
- * false keeps exactly `solverSubsteps` (the stiffness then capped at the substep rate, as before).
+ * false keeps exactly `solverSubsteps` (the stiffness then capped at the substep rate).
  * The length moves toward a new smallest radius gradually (LENGTH_RAMP), so a scene whose smallest
  * ball comes and goes does not jolt the contacts of the others.
  */

@@ -13,7 +13,7 @@ import { $internal, query as bitecsQuery, Prefab, type QueryResult } from 'bitec
  * relation cleanup on removeEntity, `getAllEntities`) list the components whose bit is set, in the
  * order the components were registered with the world, and the live ids of the entity index.
  * Nothing is allocated per entity or per call except by iteration (`getEntityComponents` returns a
- * new array, as before).
+ * new array, as bitecs' does).
  *
  * 2. Fixed typed arrays where bitecs grows JS arrays indexed by entity id: the entity index's `sparse`
  * (id -> position in `dense`), every generation of component masks (31 components each; the core
