@@ -237,3 +237,45 @@ export function ballContactPushSpeed(settings: CollisionSettings, length: number
 export function ballStickSpeed(settings: CollisionSettings, length: number): number {
   return settings.stickSpeed * speedScale(length);
 }
+
+/**
+ * Stiffness of shape contacts (2D and 3D), as a fraction of the solver substep rate: the world's
+ * `contactHertz` is capped at this fraction (contacts against infinite mass get twice it). Box2D caps
+ * contact stiffness at a quarter of the substep rate; with flat, two-point manifolds that is unstable in
+ * tall pyramids here (sequential impulses ring and the pile shears), and an eighth is stable: 30 Hz at
+ * 4 substeps of 1/60 s (Box2D's default contact stiffness), 60 Hz at 8.
+ * @category Collision
+ */
+export const SHAPE_HERTZ_FRACTION = 0.125;
+
+/**
+ * Shape contact frequency at substep `hs` (s), Hz: the world's contactHertz, at most
+ * SHAPE_HERTZ_FRACTION / hs.
+ * @category Collision
+ */
+export function shapeContactHertz(settings: CollisionSettings, hs: number): number {
+  return Math.min(settings.contactHertz, SHAPE_HERTZ_FRACTION / hs);
+}
+
+/**
+ * Writes the coefficients of a soft constraint, a spring of frequency `hertz` (Hz, >= 0) and damping
+ * ratio `zeta` integrated implicitly over `h` (s), into out[at..at+2]: bias rate (1/s), mass scale and
+ * impulse scale (Catto, "Soft Constraints", GDC 2011; Box2D v3 b2MakeSoft, in its arithmetic); hertz 0
+ * gives 0, 1, 0. The contact rows' softness, once a step (joints/softness.ts `soft` is the joints').
+ * @category Collision
+ */
+export function makeSoftInto(out: Float64Array, at: number, hertz: number, zeta: number, h: number): void {
+  if (hertz === 0) {
+    out[at] = 0;
+    out[at + 1] = 1;
+    out[at + 2] = 0;
+    return;
+  }
+  const omega = 2 * Math.PI * hertz;
+  const a1 = 2 * zeta + h * omega;
+  const a2 = h * omega * a1;
+  const a3 = 1 / (1 + a2);
+  out[at] = omega / a1;
+  out[at + 1] = a2 * a3;
+  out[at + 2] = a3;
+}
