@@ -226,7 +226,7 @@ function refreshQueries(ecs: EcsInternals, a: Archetype): void {
 }
 
 /** The archetype of component masks `masks` (one word a generation), registered on first use. */
-function archetypeOfMasks(world: PhysicsWorld, ecs: EcsInternals, table: ArchetypeTable, masks: Int32Array): Archetype {
+function archetypeOfMasks(ecs: EcsInternals, table: ArchetypeTable, masks: Int32Array): Archetype {
   for (let i = 0; i < table.list.length; i++) if (sameMasks(table.list[i]!.masks, masks)) return table.list[i]!;
   const components: object[] = [];
   for (const d of ecs.componentMap.values()) {
@@ -240,7 +240,6 @@ function archetypeOfMasks(world: PhysicsWorld, ecs: EcsInternals, table: Archety
   const a: Archetype = { id: table.list.length, components, masks: masks.slice(), probes, queries: [], queryCount: -1, table };
   refreshQueries(ecs, a);
   table.list.push(a);
-  void world;
   return a;
 }
 
@@ -269,7 +268,7 @@ export function pendingArchetype(table: ArchetypeTable, slot: number): number {
  */
 export function archetypeFromEntity(world: PhysicsWorld, table: ArchetypeTable, key: number, slot: number, pending: number): Archetype {
   const ecs = ecsOf(world);
-  const a = archetypeOfMasks(world, ecs, table, masksOf(ecs, slot));
+  const a = archetypeOfMasks(ecs, table, masksOf(ecs, slot));
   if (a.queryCount !== ecs.queries.size) refreshQueries(ecs, a);
   table.byKey.set(key, a);
   const mark = a.id + 1;
@@ -525,7 +524,7 @@ export function killSlot(world: PhysicsWorld, ecs: EcsInternals, table: Archetyp
   let a = mark > 0 ? table.list[mark - 1] : undefined;
   if (a === undefined || !hasMasks(em, e, a.masks)) {
     // Any component set works (a user may have changed the particle's): its archetype is made once.
-    a = archetypeOfMasks(world, ecs, table, masksOf(ecs, e));
+    a = archetypeOfMasks(ecs, table, masksOf(ecs, e));
     mark = a.id + 1;
   }
   if (a.queryCount !== ecs.queries.size) refreshQueries(ecs, a);
