@@ -50,8 +50,8 @@ export const CLEAR_PROBE_EVERY = 64;
 /**
  * Ratio of the two ways' estimates above which the choice is clear (probed at most every
  * CLEAR_PROBE_EVERY calls). A probe of the slower way costs the difference once: at 1.25 and
- * CLEAR_PROBE_EVERY that is under 0.4 % of the loop's time, where probing every PROBE_EVERY calls cost
- * 3 % of balls-in-box's coloured solve (20,000 balls, 2 threads, 6 ms a probe at a ratio of 1.48).
+ * CLEAR_PROBE_EVERY that is under 0.4 % of the loop's time, where probing every PROBE_EVERY calls
+ * costs several percent.
  * @category Threads
  */
 export const CLEAR_RATIO = 1.25;
@@ -60,9 +60,7 @@ export const CLEAR_RATIO = 1.25;
  * Calls until the next probe after a probe that confirmed the choice, from the calls `period` before
  * it and the two ways' estimates `a` and `b` (ms per element, positive): when one estimate is more
  * than CLEAR_RATIO times the other, four times `period`, at most CLEAR_PROBE_EVERY (a probe of a clearly
- * slower way costs the most and tells the least: balls-in-box's coloured solve, 20,000 balls on 2
- * threads, paid 6 ms a probe at 4, 8, 16 and 32 calls, in the steps the bench's median falls in; four
- * times made a step 0.981, 0.989 and 0.984 of twice, in process); else twice `period`, at most PROBE_EVERY.
+ * slower way costs the most and tells the least); else twice `period`, at most PROBE_EVERY.
  * @category Threads
  */
 export function nextProbePeriod(period: number, a: number, b: number): number {
