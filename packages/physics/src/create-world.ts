@@ -150,9 +150,9 @@ export function createPhysicsWorld(options: PhysicsWorldOptions = {}): PhysicsWo
 /**
  * Whether this program has made a world. V8 (Node, Chrome) makes an object literal's boilerplate the
  * second time the literal runs and then widens the field types of the literal's map, which throws
- * away every optimised function that relied on them: the second world a program made used to stop
- * the physics code's optimised code at once (40 functions of a pyramid's step; its first step took
- * 120 to 195 ms instead of 20). Making the first world twice runs every literal of a world's
+ * away every optimised function that relied on them: without priming, the second world a program
+ * makes would throw away the physics code's optimised code at once (its first step then runs several
+ * times slower). Making the first world twice runs every literal of a world's
  * creation twice before any physics code is optimised.
  */
 let literalsPrimed = false;

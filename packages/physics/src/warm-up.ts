@@ -146,11 +146,9 @@ function warmScene(dimensions: 2 | 3): void {
   // put to sleep (the sleep system's last branch, a component added to each of its bodies) and the
   // sleeping steps after it. It runs first, while the stages are still interpreted and record the
   // types they meet (type feedback): code compiled before a branch has run leaves that branch out,
-  // and the first time it runs the compiled code is thrown away. Run after the scene, the sleep threw
-  // away the compiled sleep system and force clearing, which were compiled again only in a program's
-  // own first steps (on a background thread, while its first steps ran the slower code). Cold, a
-  // pyramid of 820 boxes spent 28 to 32 ms of CPU in the step it fell asleep; after a small pile
-  // slept first, 17 ms.
+  // and the first time it runs the compiled code is thrown away. Run after the scene, the sleep would
+  // throw away the compiled sleep system and force clearing, to be compiled again only in a program's
+  // own first steps (on a background thread, while those steps run the slower code).
   if (dimensions === 2) {
     const resting = restingPyramid();
     for (let i = 0; i < REST_STEPS && resting.collision.stats.sleeping === 0; i++) step(resting);

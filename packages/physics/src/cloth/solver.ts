@@ -115,16 +115,12 @@ export function clothSystem(world: PhysicsWorld): void {
 
 /**
  * Links, or points, a call of one of the passes below handles. Each pass is its own function, called for
- * one chunk at a time, and ends with its loop. The solver used to be one function, called once a step,
- * whose loops V8 compiled while they ran (on-stack replacement) before the interpreter had recorded type
- * feedback for the code after them; that code gave its compiled version up ("insufficient type
- * feedback") 3 to 10 times in the first steps, a different number each run, and a stack-replaced loop
- * whose tail lacked feedback could keep doing so on every call (seen with a strain scan so compiled: in
- * one run of six it deoptimised in every one of 200 steps). Called dozens of times a step, each pass is
- * compiled whole, with the feedback
- * of all its lines, within the first step. The passes read their scalars from `ClothState.scalars`: with
- * the doubles passed as arguments the same loops measured about 4% slower (likely converted from their
- * boxed form inside the loops). The arithmetic is the same, operation for operation, in the same order:
+ * one chunk at a time, and ends with its loop: called dozens of times a step, each pass is compiled
+ * whole, with the type feedback of all its lines, within the first step. (One function called once a
+ * step would have its loops compiled while they run, on-stack replacement, before the code after them
+ * has feedback, and that code then gives its compiled version up, a different number of times each
+ * run.) The passes read their scalars from `ClothState.scalars` rather than taking them as arguments,
+ * so the loops read unboxed doubles. The arithmetic is the same, operation for operation, in the same order:
  * same results to the bit.
  */
 const CHUNK = 2048;
@@ -483,8 +479,8 @@ function pack(world: PhysicsWorld): void {
  * Reorders the packed links [from, to) by colour: a greedy colouring gives each link the smallest colour
  * that neither of its points has yet, and the links are then laid out colour by colour (in their old
  * order within a colour). Consecutive links of one colour share no point, so a projection need not wait
- * for the one before it to store its point: the solver's pass runs several at once, about twice as fast
- * on a 64 x 64 cloth. Each point still sees its links in one fixed order (Gauss-Seidel, as before).
+ * for the one before it to store its point: the solver's pass runs several at once. Each point still
+ * sees its links in one fixed order (Gauss-Seidel).
  */
 function colourOrder(cl: ClothState, from: number, to: number, pointCount: number): void {
   const m = to - from;

@@ -30,7 +30,7 @@ export interface ContactView {
   /** Shape B's slot (a shape entity, or a ball body). */
   shapeB: number;
   /**
-   * For ball contacts, as before shapes had contacts: body A's slot, or the static feature's (static
+   * For ball contacts: body A's slot, or the static feature's (static
    * ball, segment or plane); 0 for the boundary box. For shape contacts, `bodyA`.
    */
   a: number;

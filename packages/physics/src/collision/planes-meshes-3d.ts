@@ -259,8 +259,7 @@ function collideMesh(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, m
       const h = colB.hull!,
         HV = h.vertices,
         R = colB.R;
-      let best = -1,
-        cnt = 0;
+      let best = -1;
       for (let v = 0, nv = HV.length / 3; v < nv; v++) {
         const lx = HV[3 * v]!,
           ly = HV[3 * v + 1]!,
@@ -289,7 +288,6 @@ function collideMesh(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, m
           }
         }
         if (!inside) continue;
-        cnt++;
         if (out.count < 4) {
           const k = out.count++;
           out.x[k] = wx - (nx * sep) / 2;
@@ -310,7 +308,6 @@ function collideMesh(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, m
           }
         }
       }
-      void cnt;
     }
     if (out.count > 0) emit(world, s, st, 0, b, m.entity, e, false, sc.ball[i] === 1, m.entity, t + 1);
   }

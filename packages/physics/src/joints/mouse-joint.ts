@@ -1,11 +1,12 @@
 import { hasComponent } from 'bitecs';
 import * as BS from '../solver/body-state-layout.js';
 import { assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe } from '../validation/validate.js';
+import { currentHandle } from '../world/handles.js';
 import type { JointState } from '../world/joint-state-2d.js';
 import { JointFlag, type JointStore, JointType } from '../world/joint-store-2d.js';
 import { ROW_FLOATS } from '../world/joint-strides-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { centre, handle, makeJoint, requireJoint, wakeJoint } from './joint-2d.js';
+import { centre, makeJoint, requireJoint, wakeJoint } from './joint-2d.js';
 import { checkEnds, optionalPoint } from './joint-base.js';
 import * as R from './layout-2d.js';
 import { type JointPass2D, type JointTypeRows2D, pointForce } from './rows-2d.js';
@@ -74,7 +75,7 @@ export function addMouseJoint(world: PhysicsWorld, options: MouseJointOptions): 
   J.dampingRatio[j] = zeta;
   J.maxForce[j] = maxForce;
   J.flags[j] = JointFlag.Spring;
-  return handle(world, j);
+  return currentHandle(world, j);
 }
 
 /**

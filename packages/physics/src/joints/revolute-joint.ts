@@ -1,9 +1,10 @@
 import * as BS from '../solver/body-state-layout.js';
+import { currentHandle } from '../world/handles.js';
 import type { JointState } from '../world/joint-state-2d.js';
 import { JointFlag, type JointStore, JointType } from '../world/joint-store-2d.js';
 import { PIN_FLOATS, PIN_INTS, ROW_FLOATS, ROW_INTS } from '../world/joint-strides-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { centre, checkDrive, checkEnds2D, checkLimits, handle, makeJoint, storeDrive } from './joint-2d.js';
+import { centre, checkDrive, checkEnds2D, checkLimits, makeJoint, storeDrive } from './joint-2d.js';
 import { type JointBaseOptions, optionalPoint } from './joint-base.js';
 import * as R from './layout-2d.js';
 import {
@@ -67,7 +68,7 @@ export function addRevoluteJoint(world: PhysicsWorld, options: RevoluteJointOpti
   const drive = checkDrive(where, options.motorSpeed, options.maxMotorTorque, 'maxMotorTorque', options.hertz, options.dampingRatio);
   const j = makeJoint(world, JointType.Revolute, ends, p, p, options);
   storeDrive(world, j, limit, options.lowerAngle, options.upperAngle, drive);
-  return handle(world, j);
+  return currentHandle(world, j);
 }
 
 /**

@@ -1,5 +1,6 @@
 import { BodyType } from '../collision/broadphase/grid.js';
 import * as BS from '../solver/body-state-layout.js';
+import { atLeast } from '../solver/manifold-rows-2d.js';
 import { withRoom } from '../solver/solver-bodies.js';
 import { currentHandle } from '../world/handles.js';
 import { ensureRows, pushBreak } from '../world/joint-state-2d.js';
@@ -206,11 +207,6 @@ export function gatherJointBodies(world: PhysicsWorld, count: number): number {
   cs.solverBodies = list;
   js.rowCount = rows;
   return count;
-}
-
-/** `a` if it holds `n` numbers, else a new array of at least n (twice a's length): its contents are not kept. */
-function atLeast(a: Float64Array, n: number): Float64Array {
-  return a.length >= n ? a : new Float64Array(Math.max(n, 2 * a.length));
 }
 
 /**

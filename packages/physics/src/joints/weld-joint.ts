@@ -1,10 +1,11 @@
 import * as BS from '../solver/body-state-layout.js';
 import { assertNonNegative } from '../validation/validate.js';
+import { currentHandle } from '../world/handles.js';
 import type { JointState } from '../world/joint-state-2d.js';
 import { JointFlag, type JointStore, JointType } from '../world/joint-store-2d.js';
 import { ROW_FLOATS, ROW_INTS } from '../world/joint-strides-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { centre, checkEnds2D, handle, makeJoint } from './joint-2d.js';
+import { centre, checkEnds2D, makeJoint } from './joint-2d.js';
 import { type JointBaseOptions, optionalPoint } from './joint-base.js';
 import * as R from './layout-2d.js';
 import { angularMass, applyImpulse, type JointPass2D, type JointTypeRows2D, pointForce, solvePointRow } from './rows-2d.js';
@@ -53,7 +54,7 @@ export function addWeldJoint(world: PhysicsWorld, options: WeldJointOptions): nu
   J.dampingRatio[j] = vals[1]!;
   J.angularHertz[j] = vals[2]!;
   J.angularDampingRatio[j] = vals[3]!;
-  return handle(world, j);
+  return currentHandle(world, j);
 }
 
 /**

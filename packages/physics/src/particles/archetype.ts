@@ -28,8 +28,8 @@ import type { PhysicsWorld } from '../world/options.js';
  * (bitecs' queryAddEntity rule); bitecs hands out the slot freed last first, so a step whose births
  * follow its deaths before any query (the spawn stage: expiries, their bursts, then the emitters'
  * births) moves nothing in the query arrays. They stay in slot order and the systems' loops walk
- * memory in order (a query in random slot order made every loop over 50,000 particles about five
- * times slower); `defragment` restores the order when births and deaths that could not be matched
+ * memory in order (a query in random slot order makes every loop over the particles jump around
+ * memory, several times slower); `defragment` restores the order when births and deaths that could not be matched
  * have stirred it.
  *
  * What a fast birth does not do: run bitecs onAdd observers. The component defaults the world's
@@ -226,7 +226,7 @@ function refreshQueries(ecs: EcsInternals, a: Archetype): void {
 }
 
 /** The archetype of component masks `masks` (one word a generation), registered on first use. */
-function archetypeOfMasks(world: PhysicsWorld, ecs: EcsInternals, table: ArchetypeTable, masks: Int32Array): Archetype {
+function archetypeOfMasks(ecs: EcsInternals, table: ArchetypeTable, masks: Int32Array): Archetype {
   for (let i = 0; i < table.list.length; i++) if (sameMasks(table.list[i]!.masks, masks)) return table.list[i]!;
   const components: object[] = [];
   for (const d of ecs.componentMap.values()) {
@@ -240,7 +240,6 @@ function archetypeOfMasks(world: PhysicsWorld, ecs: EcsInternals, table: Archety
   const a: Archetype = { id: table.list.length, components, masks: masks.slice(), probes, queries: [], queryCount: -1, table };
   refreshQueries(ecs, a);
   table.list.push(a);
-  void world;
   return a;
 }
 
@@ -269,7 +268,7 @@ export function pendingArchetype(table: ArchetypeTable, slot: number): number {
  */
 export function archetypeFromEntity(world: PhysicsWorld, table: ArchetypeTable, key: number, slot: number, pending: number): Archetype {
   const ecs = ecsOf(world);
-  const a = archetypeOfMasks(world, ecs, table, masksOf(ecs, slot));
+  const a = archetypeOfMasks(ecs, table, masksOf(ecs, slot));
   if (a.queryCount !== ecs.queries.size) refreshQueries(ecs, a);
   table.byKey.set(key, a);
   const mark = a.id + 1;
@@ -525,7 +524,7 @@ export function killSlot(world: PhysicsWorld, ecs: EcsInternals, table: Archetyp
   let a = mark > 0 ? table.list[mark - 1] : undefined;
   if (a === undefined || !hasMasks(em, e, a.masks)) {
     // Any component set works (a user may have changed the particle's): its archetype is made once.
-    a = archetypeOfMasks(world, ecs, table, masksOf(ecs, e));
+    a = archetypeOfMasks(ecs, table, masksOf(ecs, e));
     mark = a.id + 1;
   }
   if (a.queryCount !== ecs.queries.size) refreshQueries(ecs, a);

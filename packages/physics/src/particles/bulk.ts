@@ -367,7 +367,7 @@ const BULK_APPEND = 1 << 12;
  * hold it). A long run sets the length once and writes the ids in place: pushing a million ids
  * regrows the array's storage about 35 times (each a copy and garbage), which took about three
  * quarters of the bulk creation's bookkeeping. The array's elements kind becomes holey (V8), which a
- * loop over it reads as fast (measured on a million-entity integration loop: no difference beyond noise).
+ * loop over it reads as fast.
  */
 function appendRange(list: number[], from: number, m: number): void {
   const n = list.length;

@@ -96,7 +96,7 @@ export interface PyramidHandles {
  * friction 0.6, restitution 0) on a static ground; rows rest exactly on each other with a 1.05 m
  * pitch. The world takes 8 solver substeps (shape contacts are stiff enough to hold a 40-high
  * pyramid to a few centimetres only at 60 Hz, and are stable at 60 Hz with 8 substeps; see
- * solver/manifold-prepare-2d.ts); everything else is the world's default.
+ * solver/contact-scale.ts SHAPE_HERTZ_FRACTION); everything else is the world's default.
  * @category Scenes
  */
 export const pyramid: SceneDefinition<PyramidOptions, PyramidHandles> = {

@@ -94,8 +94,8 @@ export function bitIndex(bitflag: number): number {
 
 /**
  * Whether two id lists hold the same ids in the same order. Two copies, each with one pair of array
- * kinds, so the element reads stay monomorphic (a shared one mixing JS and typed arrays ran several
- * times slower on the 100,000-entity lists); four ids a step, XOR-ed and OR-ed (ids are small integers).
+ * kinds, so the element reads stay monomorphic (a shared one mixing JS and typed arrays would read
+ * them through a slow generic path); four ids a step, XOR-ed and OR-ed (ids are small integers).
  */
 function sameLists(a: readonly number[], b: readonly number[]): boolean {
   const n = a.length;

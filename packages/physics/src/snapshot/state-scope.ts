@@ -75,7 +75,7 @@ function PER_STEP_SCRATCH(): string[] {
  * row 0; `growContactBuffer` keeps rows below count only). A snapshot stores each column up to its
  * count (up to its last non-zero row below it), and restore writes those rows and zeroes the rest
  * below count, leaving the world's rows from count on as they are. `contacts` holds no rows between
- * steps: about 40 % of a settled 100,000-ball snapshot before this.
+ * steps, so a snapshot stores none of its capacity.
  */
 export const CONTACT_BUFFERS = new Set(['world.collision.contacts', 'world.collision.cache.rows']);
 

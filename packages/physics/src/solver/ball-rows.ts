@@ -20,7 +20,7 @@ import { measureApproach, prepareContacts } from './ball-prepare.js';
 import { solve2D, solve3D, warmStart2D, warmStart3D } from './ball-sweeps.js';
 import { BS2_STRIDE, BS3_STRIDE } from './body-state-layout.js';
 import { solveColoredSubsteps, startStripPlan, useColoredSolve } from './coloring.js';
-import { ballContactHertz, ballContactPushSpeed, ballStickSpeed, contactLength } from './contact-scale.js';
+import { ballContactHertz, ballContactPushSpeed, ballStickSpeed, contactLength, makeSoftInto } from './contact-scale.js';
 import { applyImpacts, releaseImpactedRows } from './impacts.js';
 import { withRoom } from './solver-bodies.js';
 import { restitutionStage, storeWarmStartOnThreads } from './stages-threads.js';
@@ -206,24 +206,3 @@ const solveParams = new Float64Array(13);
 let relaxOrder = new Int32Array(64);
 /** The length of the step's relax order. Not world state. */
 let relaxCount = 0;
-
-/**
- * Writes the coefficients of a soft constraint, a spring of frequency `hertz` (Hz, >= 0) and damping
- * ratio `zeta` integrated implicitly over `h` (s), into out[at..at+2]: bias rate (1/s), mass scale and
- * impulse scale (Catto, "Soft Constraints", GDC 2011; Box2D v3 b2MakeSoft); hertz 0 gives 0, 1, 0.
- */
-function makeSoftInto(out: Float64Array, at: number, hertz: number, zeta: number, h: number): void {
-  if (hertz === 0) {
-    out[at] = 0;
-    out[at + 1] = 1;
-    out[at + 2] = 0;
-    return;
-  }
-  const omega = 2 * Math.PI * hertz;
-  const a1 = 2 * zeta + h * omega;
-  const a2 = h * omega * a1;
-  const a3 = 1 / (1 + a2);
-  out[at] = omega / a1;
-  out[at + 1] = a2 * a3;
-  out[at + 2] = a3;
-}

@@ -103,9 +103,9 @@ export function solveColored2D(
   const spinMs = P[SOLVE.SPIN_US]! / 1000;
   // The blocks' loops, each a function of its own (KERNEL_HELPERS, passed in as H): called thousands
   // of times a step, V8 compiles them whole, with every branch's type feedback. Inline in this
-  // function, which runs once a step, they ran in code compiled on the stack (OSR) partway through a
-  // call, which every branch first reached later threw away: 14 recompiles of ~50 ms each in 100
-  // steps of balls-in-box 20,000 on 2 threads, on the cores the threads need.
+  // function, which runs once a step, they would run in code compiled on the stack (OSR) partway
+  // through a call, which every branch first reached later throws away, recompiling again and again
+  // on the cores the threads need.
   // (Indices of KERNEL_HELPERS, solver/kernel-helpers.ts; the kernel may name nothing outside itself.)
   const packRows = H[0] as typeof coloredPack2D,
     unpackRows = H[1] as typeof coloredUnpack2D;

@@ -27,12 +27,11 @@ import type { PhysicsWorld } from '../world/options.js';
  * f above AUTO_HERTZ_FRACTION of the substep rate, the step takes more solver substeps
  * (`solverSubstepsFor`, at most MAX_AUTO_SUBSTEPS): every ball contact then gets its full stiffness,
  * at f h_s <= 0.6, where piles settle. At dt 1/60 and contactHertz 60 this starts below a radius of
- * 17.4 cm (10 cm: 6 substeps; 4 cm: 9; 2 cm: 12; 1.1 cm and less: 16). Measured on the bench's Galton
- * board of 2,000 balls of 2 cm (`--scene galton`, seeds 1, 2, 3): deepest overlap 8.4 / 10.6 / 15.2 %
- * of a radius with 4 substeps, 1.6 / 1.6 / 1.5 % with the automatic 12; the board's step costs
- * more in proportion to the contact solver's share (see the report of issue 13 for the ratio).
+ * 17.4 cm (10 cm: 6 substeps; 4 cm: 9; 2 cm: 12; 1.1 cm and less: 16). Small balls then overlap
+ * far less (a Galton board of 2 cm balls: a few percent of a radius instead of about ten), at a step
+ * cost that grows with the contact solver's share.
  * Big balls (balls-in-box's 0.5 m: 3 would do) keep the world's count. `CollisionSettings.autoSubsteps`
- * false keeps exactly `solverSubsteps` (the stiffness then capped at the substep rate, as before).
+ * false keeps exactly `solverSubsteps` (the stiffness then capped at the substep rate).
  * The length moves toward a new smallest radius gradually (LENGTH_RAMP), so a scene whose smallest
  * ball comes and goes does not jolt the contacts of the others.
  */
@@ -237,4 +236,46 @@ export function ballContactPushSpeed(settings: CollisionSettings, length: number
  */
 export function ballStickSpeed(settings: CollisionSettings, length: number): number {
   return settings.stickSpeed * speedScale(length);
+}
+
+/**
+ * Stiffness of shape contacts (2D and 3D), as a fraction of the solver substep rate: the world's
+ * `contactHertz` is capped at this fraction (contacts against infinite mass get twice it). Box2D caps
+ * contact stiffness at a quarter of the substep rate; with flat, two-point manifolds that is unstable in
+ * tall pyramids here (sequential impulses ring and the pile shears), and an eighth is stable: 30 Hz at
+ * 4 substeps of 1/60 s (Box2D's default contact stiffness), 60 Hz at 8.
+ * @category Collision
+ */
+export const SHAPE_HERTZ_FRACTION = 0.125;
+
+/**
+ * Shape contact frequency at substep `hs` (s), Hz: the world's contactHertz, at most
+ * SHAPE_HERTZ_FRACTION / hs.
+ * @category Collision
+ */
+export function shapeContactHertz(settings: CollisionSettings, hs: number): number {
+  return Math.min(settings.contactHertz, SHAPE_HERTZ_FRACTION / hs);
+}
+
+/**
+ * Writes the coefficients of a soft constraint, a spring of frequency `hertz` (Hz, >= 0) and damping
+ * ratio `zeta` integrated implicitly over `h` (s), into out[at..at+2]: bias rate (1/s), mass scale and
+ * impulse scale (Catto, "Soft Constraints", GDC 2011; Box2D v3 b2MakeSoft, in its arithmetic); hertz 0
+ * gives 0, 1, 0. The contact rows' softness, once a step (joints/softness.ts `soft` is the joints').
+ * @category Collision
+ */
+export function makeSoftInto(out: Float64Array, at: number, hertz: number, zeta: number, h: number): void {
+  if (hertz === 0) {
+    out[at] = 0;
+    out[at + 1] = 1;
+    out[at + 2] = 0;
+    return;
+  }
+  const omega = 2 * Math.PI * hertz;
+  const a1 = 2 * zeta + h * omega;
+  const a2 = h * omega * a1;
+  const a3 = 1 / (1 + a2);
+  out[at] = omega / a1;
+  out[at + 1] = a2 * a3;
+  out[at + 2] = a3;
 }

@@ -62,11 +62,11 @@ export function separateImpactedBodies(world: PhysicsWorld, buf: ContactBuffer, 
   impactScalars[2] = reach;
   // A row is given the spare gap below if its gap is within the linear model's closure or, in a world
   // with joints, within 1.1 times it: a joint row turns gravity toward the row's normal within the step
-  // (a pendulum's string speeds the ball up as it swings down), which the model does not see. A hanging
-  // Newton's cradle's lifted ball whose gap was 0.14 % wider than the closure was stopped by the soft
-  // substeps' look-ahead a substep before its hit, across the gap, and the chain behind it was lost.
+  // (a pendulum's string speeds the ball up as it swings down), which the model does not see: a hanging
+  // Newton's cradle's lifted ball whose gap is a little wider than the closure would be stopped by the
+  // soft substeps' look-ahead a substep before its hit, across the gap, and the chain behind it lost.
   // Without joints the band is not widened: in a pile many rows fall in it (mostly balls falling onto
-  // the floor), and taking them from the substeps changed how an 800-ball pile settles.
+  // the floor), and they are better left to the substeps.
   const within = jointsToSolve(world) ? 1.1 : 1;
   // First, while BI_TIME still holds each body's latest impact time: which rows stay active, into
   // the spent order array (1 active, 0 not). BI_ALONE of a body's row: 1 clean, 0 not (the static world
@@ -218,8 +218,8 @@ const LEVEL = 1e-9;
  * it is above LOAD_FLOOR. A smaller one is the push-out of a rounding-level overlap, and it does not
  * count:
  * - without gravity, always: nothing rests there; counting such a push kept both
- *   balls of two touching movers out of the impact stage, and a Newton's cradle hit by them lost 15
- *   to 30 % of its energy at some phases of the step (issue 13);
+ *   balls of two touching movers out of the impact stage, and a Newton's cradle hit by them would
+ *   lose energy at some phases of the step;
  * - under gravity (the world's, m/s^2), only on a ball-ball row that touches to rounding
  *   (|s0| <= ROUNDING (ra + rb)), whose bodies do not move relative to each other along the normal
  *   (|v_n| h <= ROUNDING (ra + rb), v_n at the start of the step) and whose normal is level (gravity

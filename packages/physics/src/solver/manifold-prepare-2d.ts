@@ -14,6 +14,7 @@ import {
   BX_ROT_Z,
   BX_STRIDE,
 } from './body-state-layout.js';
+import { makeSoftInto, shapeContactHertz } from './contact-scale.js';
 import {
   MP_MAX_NORMAL_IMPULSE,
   MP_NORMAL_IMPULSE,
@@ -59,33 +60,6 @@ import { joinSolverBodies } from './solver-bodies.js';
  * packed into the solver rows, and after the solve its touch events are written and it becomes the
  * next step's warm-start cache.
  */
-
-/**
- * Stiffness of shape contacts, as a fraction of the solver substep rate: the world's `contactHertz`
- * is capped at this fraction (contacts against infinite mass get twice it). Box2D caps contact
- * stiffness at a quarter of the substep rate; with flat, two-point manifolds that is unstable in tall
- * pyramids here (sequential impulses ring and the pile shears), and an eighth is stable: 30 Hz at 4
- * substeps of 1/60 s (Box2D's default contact stiffness), 60 Hz at 8. Measured on the `pyramid`
- * scene, base 40: kinetic energy decays at an eighth and persists at 0.19 and 0.25.
- */
-const SHAPE_HERTZ_FRACTION = 0.125;
-
-/** Writes Box2D's soft-constraint coefficients (b2MakeSoft) for `hertz` and damping ratio `zeta` over step `h` into out[0..2]: bias rate, mass scale, impulse scale. */
-function makeSoftInto(out: Float64Array, hertz: number, zeta: number, h: number): void {
-  if (hertz === 0) {
-    out[0] = 0;
-    out[1] = 1;
-    out[2] = 0;
-    return;
-  }
-  const omega = 2 * Math.PI * hertz;
-  const a1 = 2 * zeta + h * omega;
-  const a2 = h * omega * a1;
-  const a3 = 1 / (1 + a2);
-  out[0] = omega / a1;
-  out[1] = a2 * a3;
-  out[2] = a3;
-}
 
 /**
  * The previous step's row of shape pair (a, b), or -1: row `guess` if it holds that pair, else the
@@ -134,9 +108,9 @@ export function prepareManifolds(world: PhysicsWorld): void {
   if (n === 0) return;
   const set = cs.settings;
   const hs = world.h / set.solverSubsteps;
-  const hertz = Math.min(set.contactHertz, SHAPE_HERTZ_FRACTION / hs);
-  makeSoftInto(st.softness, hertz, set.contactDampingRatio, hs);
-  makeSoftInto(st.rigidSoftness, 2 * hertz, set.contactDampingRatio, hs);
+  const hertz = shapeContactHertz(set, hs);
+  makeSoftInto(st.softness, 0, hertz, set.contactDampingRatio, hs);
+  makeSoftInto(st.rigidSoftness, 0, 2 * hertz, set.contactDampingRatio, hs);
   const R = atLeast(st.solverRows, n * MR_STRIDE);
   st.solverRows = R;
   prepareRows(world, R, n);

@@ -25,6 +25,7 @@ import {
   II3_YZ,
   II3_ZZ,
 } from './body-state-layout.js';
+import { makeSoftInto, shapeContactHertz } from './contact-scale.js';
 import {
   ANCHOR_AX,
   ANCHOR_AY,
@@ -67,25 +68,6 @@ import { rigid, soft } from './manifold-softness-3d.js';
 
 /** Preparation of the 3D manifold rows at the start of a step (solver/manifold-rows-3d.ts): world inverse inertia tensors of the solver bodies, Jacobians, effective masses, softness and separations on the solver's base. */
 
-/** Stiffness as a fraction of the substep rate (as the 2D shape contacts: solver/manifold-prepare-2d.ts). */
-const HERTZ_FRACTION = 0.125;
-
-function makeSoftInto(out: Float64Array, hertz: number, zeta: number, h: number): void {
-  if (hertz === 0) {
-    out[0] = 0;
-    out[1] = 1;
-    out[2] = 0;
-    return;
-  }
-  const omega = 2 * Math.PI * hertz,
-    a1 = 2 * zeta + h * omega,
-    a2 = h * omega * a1,
-    a3 = 1 / (1 + a2);
-  out[0] = omega / a1;
-  out[1] = a2 * a3;
-  out[2] = a3;
-}
-
 /**
  * World inverse inertia tensors of the solver bodies, effective masses, separations corrected to the solver's base, approach speeds.
  * @category Collision
@@ -96,17 +78,15 @@ export function prepareManifolds3D(world: PhysicsWorld): void {
   const cs = world.collision,
     buf = st.current,
     n = buf.count;
-  const count = cs.solverBodyCount;
   const c = world.components,
     sb = cs.bodyState,
     ex = cs.bodyExtra,
     T = st.invInertia;
   const set = cs.settings,
     hs = world.h / set.solverSubsteps;
-  const hertz = Math.min(set.contactHertz, HERTZ_FRACTION / hs);
-  makeSoftInto(soft, hertz, set.contactDampingRatio, hs);
-  makeSoftInto(rigid, 2 * hertz, set.contactDampingRatio, hs);
-  void count;
+  const hertz = shapeContactHertz(set, hs);
+  makeSoftInto(soft, 0, hertz, set.contactDampingRatio, hs);
+  makeSoftInto(rigid, 0, 2 * hertz, set.contactDampingRatio, hs);
   if (n === 0) return;
   if (st.jacobians.length < JAC_STRIDE * 4 * n) {
     const rows = Math.max(n, (2 * st.jacobians.length) / (4 * JAC_STRIDE));

@@ -1,7 +1,7 @@
 /**
  * The contact solver's per-body and per-row stages beside the coloured substeps (solver/coloring.ts)
  * and the rows' preparation, each one range kernel (solver/stages-kernel.ts) run on a 2D world's threads
- * when that pays and inline on the calling thread otherwise, and inline in 3D (one code path; issue 32):
+ * when that pays and inline on the calling thread otherwise, and inline in 3D (one code path for both):
  *
  * - `gatherFillStage`: the solver rows of the step's bodies, 2D and 3D (gatherBodies' fill,
  *   solver/contact-solver.ts), a range of bodies a thread;
@@ -58,8 +58,7 @@ import { warmStartTable } from './warm-start-kernel.js';
 /**
  * Tuning and counters of the threaded solver stages (every world of the process). `minPerThread`:
  * fewest bodies or contact rows a thread for a stage to go to the threads (integer >= 1; default 8192:
- * these stages do little a body or row, and balls-in-box 5,000 (14,000 rows) measured no faster with
- * them on 2 threads; 20,000 balls have 20,000 bodies and 55,000 rows); tests
+ * these stages do little a body or row, so only large worlds gain from splitting them); tests
  * lower it to run the kernels on small worlds. `runs`: stages run by a kernel (on the threads, or on
  * one thread where the adaptive pool chose so), `bouncing`: rows the restitution kernel found bouncing,
  * both summed since the process started (for tests and the bench).

@@ -10,35 +10,26 @@ import { BS2_INV_MASS, BS2_STRIDE, BS3_INV_MASS } from './body-state-layout.js';
  * out), then one relax sweep without bias that should take the push-out velocity away again. Along a
  * tall chain of contacts one relax sweep cannot: relaxing the row under a ball only moves that ball's
  * velocity into the ball below, so the push-out of a 60-layer column stays in it as kinetic energy.
- * With the stiff contacts of issue 13 (frequency f up to 0.6 of the substep rate, solver/contact-scale.ts)
- * a column whose rows have no friction to damp them boiled: 120 frictionless balls of 2 cm zigzagging
- * between walls 5 radii apart kept their fastest ball at 5 to 11 sqrt(g r) for as long as they ran,
- * 0.5 m balls at 1 sqrt(g r), and 120 balls stacked straight up in a tube threw balls at 28 sqrt(g r);
- * the exact equilibrium of the zigzag column grew unstable above f h_s ~ 0.27 (the code before issue 13
- * ran at f h_s 0.25, seven times softer at 2 cm, and settled). Rows with friction settle at f h_s 0.6
- * (their tangent rows damp the column), and are left as they were, unless the upper ball is at least
- * HEAVY_RATIO times heavier: a relax update moves the upper ball by only m_lower / (m_lower + m_upper) of the relative
- * speed, so a heavy ball resting on a light one kept the push-out speed of every substep. Resting 100,
- * 300 and 1,000 kg balls on a 1 kg ball (restitution 0, the defaults) rose 27, 320 and 37 mm above
- * where they started and kept bouncing; with these rows held (and the relax sweep taking the floor and
- * wall rows of such light balls first, `markFirstRelaxRows`, so the light ball is at rest when its row
- * above is relaxed) they
- * settle and never rise, at mass ratios up to 3,000 (test/physics/heavy-on-light.test.ts).
+ * With stiff contacts (frequency f up to 0.6 of the substep rate, solver/contact-scale.ts) a column
+ * whose rows have no friction to damp them boils: its exact equilibrium is unstable above f h_s ~ 0.27,
+ * and balls zigzagging between walls or stacked in a tube keep being thrown up. Rows with friction
+ * settle at f h_s 0.6 (their tangent rows damp the column), and are left as they are, unless the upper
+ * ball is at least HEAVY_RATIO times heavier: a relax update moves the upper ball by only
+ * m_lower / (m_lower + m_upper) of the relative speed, so a heavy ball resting on a light one would keep
+ * the push-out speed of every substep and rise. With these rows held (and the relax sweep taking the
+ * floor and wall rows of such light balls first, `markFirstRelaxRows`, so the light ball is at rest when
+ * its row above is relaxed) such stacks settle and never rise, at mass ratios up to 3,000
+ * (test/physics/heavy-on-light.test.ts).
  *
  * In the relax sweep, a row between two dynamic balls with no friction (bound 0) or whose upper ball is
  * at least HEAVY_RATIO times heavier, and whose normal is within acos(SUPPORT_COS) of gravity (one ball rests on the other), is solved with the lower ball held
  * (inverse mass 0, `holdsLower`) when that only slows the ball above: when the lower ball's speed along
  * the normal is at most the upper one's, so making the upper ball move with the lower one along the
  * normal cannot raise its kinetic energy, and the lower ball is not touched. One sweep then clears the
- * push-out speed of a whole column. Otherwise (and always in the sweep with bias, and for the impact
- * stage and restitution) both masses count, so momentum is exchanged as it should be.
- * Measured (fastest ball over the last 100 of 400 steps, sqrt(g r), sleep off): 120 balls zigzagging,
- * 2 cm 3.89 -> 0.0024, 0.5 m 1.10 -> 0.0034 (the code before issue 13: 0.038 and 0.127); 60 balls of
- * 2 cm in a tube, 300 steps: 4.04 -> 0.0001 (test/physics/support-rows.test.ts); on 2 threads with
- * the coloured solve, 6.88 -> 0.0022 and 3.30 -> 0.0002. Not everything: the
- * same 120 balls put exactly touching in their ideal lattice (pairs on the walls, one ball between)
- * came to rest from one start (0.007) but kept swaying at 0.2 to 0.46 sqrt(g r) in place from another
- * (the rows with the walls are horizontal, not support rows; the code before issue 13: at rest).
+ * push-out speed of a whole column (test/physics/support-rows.test.ts). Otherwise (and always in the
+ * sweep with bias, and for the impact stage and restitution) both masses count, so momentum is exchanged
+ * as it should be. Balls put exactly touching in an ideal lattice may still sway in place: their rows with the walls are
+ * horizontal, not support rows.
  *
  * The trade-off: in such a row the relax sweep does not conserve momentum (the ball above is stopped
  * against the ball below as if that one were immovable). The relax sweep exists to remove speed the
@@ -56,9 +47,9 @@ export const SUPPORT_COS = 0.3;
 /**
  * Least mass ratio, upper ball over lower ball (dimensionless), for which a support row with friction
  * holds its lower ball in the relax sweep: 4, where a relax update moves the upper ball by a fifth of
- * the relative speed or less. Heavy balls from 30 times the lower one's mass gained energy without it;
- * below, the two-mass relax with friction settles as it did (a 2 kg ball rolling onto a column of
- * 1 kg balls, test/physics/collision-accuracy.test.ts's marble run, is left as it was).
+ * the relative speed or less. Below it the two-mass relax with friction settles (a 2 kg ball rolling
+ * onto a column of 1 kg balls, test/physics/collision-accuracy.test.ts's marble run, keeps exchanging
+ * momentum).
  * @category Collision
  */
 export const HEAVY_RATIO = 4;

@@ -13,10 +13,9 @@
  * ways are within CLEAR_RATIO of each other, and quadruples them up to CLEAR_PROBE_EVERY once one is
  * clearly faster (nextProbePeriod); a change of the preferred way, by a probe or by the preferred
  * way's own calls getting slower, resets them to MIN_PROBE_PERIOD. So a switch that a passing delay
- * caused is undone within a few calls, and a choice that holds is probed rarely. (A fixed period let
- * WINDOW delayed calls of the threads in a row put a loop on one thread for a whole CLEAR_PROBE_EVERY
- * calls: balls-in-box's narrowphase, 20,000 balls on 2 threads, steps 150 to 190, ran 15 of 40 calls
- * on one thread at 2.35 ms against 1.47 on the threads.) The way not preferred takes over only when
+ * caused is undone within a few calls, and a choice that holds is probed rarely (with a fixed period,
+ * WINDOW delayed calls of the threads in a row would put a loop on the slower way for a whole
+ * CLEAR_PROBE_EVERY calls). The way not preferred takes over only when
  * its estimate is below SWITCH_RATIO times the preferred way's, so close ways do not trade places
  * back and forth.
  *
@@ -28,15 +27,9 @@
  * probes tell what it cost long ago: a time older than MAX_AGE calls counts only while it is its way's
  * newest. And when the preferred way's own calls have grown past the other way's estimate and the
  * other way's newest time is older than MIN_PROBE_PERIOD calls, the call runs the other way as a probe
- * instead of switching, its time replaces that way's window, and the two estimates then decide.
- * (Switching on the old times moved loops whose work grows on both ways to the slower way:
- * balls-in-box's cell pass, 20,000 balls on 2 threads, ran 11 of 45 calls in steps 120 to 165 on one
- * thread at 8.7 ms against 4.4 ms on the threads, and the rows' preparation 4 at 15.7 ms against 4.8,
- * while the pile formed.)
- * The average this replaced (a faster time taken at once, a slower one weighted 0.3) let one delayed
- * call switch a loop to the other way until the next probe, up to PROBE_EVERY calls: balls-in-box's
- * cell pass (20,000 balls, 2 threads) ran 92 of 181 steps on one thread at 4.8 ms a call against 2.6
- * ms on the threads, after delays of 5 to 40 ms in single calls of the threads.
+ * instead of switching, its time replaces that way's window, and the two estimates then decide
+ * (switching on the old times would move a loop whose work grows on both ways, a pile forming, to the
+ * slower way). A least-of-window estimate, unlike an average, cannot be switched by one delayed call.
  */
 
 /**
@@ -57,8 +50,8 @@ export const CLEAR_PROBE_EVERY = 64;
 /**
  * Ratio of the two ways' estimates above which the choice is clear (probed at most every
  * CLEAR_PROBE_EVERY calls). A probe of the slower way costs the difference once: at 1.25 and
- * CLEAR_PROBE_EVERY that is under 0.4 % of the loop's time, where probing every PROBE_EVERY calls cost
- * 3 % of balls-in-box's coloured solve (20,000 balls, 2 threads, 6 ms a probe at a ratio of 1.48).
+ * CLEAR_PROBE_EVERY that is under 0.4 % of the loop's time, where probing every PROBE_EVERY calls
+ * costs several percent.
  * @category Threads
  */
 export const CLEAR_RATIO = 1.25;
@@ -67,9 +60,7 @@ export const CLEAR_RATIO = 1.25;
  * Calls until the next probe after a probe that confirmed the choice, from the calls `period` before
  * it and the two ways' estimates `a` and `b` (ms per element, positive): when one estimate is more
  * than CLEAR_RATIO times the other, four times `period`, at most CLEAR_PROBE_EVERY (a probe of a clearly
- * slower way costs the most and tells the least: balls-in-box's coloured solve, 20,000 balls on 2
- * threads, paid 6 ms a probe at 4, 8, 16 and 32 calls, in the steps the bench's median falls in; four
- * times made a step 0.981, 0.989 and 0.984 of twice, in process); else twice `period`, at most PROBE_EVERY.
+ * slower way costs the most and tells the least); else twice `period`, at most PROBE_EVERY.
  * @category Threads
  */
 export function nextProbePeriod(period: number, a: number, b: number): number {

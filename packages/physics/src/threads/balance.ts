@@ -1,10 +1,8 @@
 /**
  * How a pool cuts a loop of n elements into its threads' ranges (pool.ts). The threads are not equally
  * fast at a loop: a worker reads data the calling thread has just written (the grid, the contacts),
- * which its core fetches from the other core's cache, and it starts only once it has been woken.
- * Measured on balls-in-box at 20,000 balls, 2 threads, equal halves: the worker's half of the
- * broadphase's cell pass took 1.56 ms against the caller's 0.91 ms, of the narrowphase 0.83 against
- * 0.53 ms, so the caller waited out most of the difference.
+ * which its core fetches from the other core's cache, and it starts only once it has been woken. With
+ * equal ranges the worker's half of a loop can take well over the caller's, which then waits.
  *
  * So each kernel keeps a share of the elements per thread, learnt from when each thread finished:
  * after a run, thread i's time is from the caller waking the workers to the end of its range
@@ -17,7 +15,7 @@
  * per-range buffers appended in range order (the one-thread order), as it must for its results not to
  * depend on the number of threads (step/kernel-table.ts). Loops shorter than `BALANCE_MIN_PER_THREAD`
  * elements a thread (such as the coloured solve's, whose n is the thread count and whose blocks are
- * claimed dynamically) are cut equally, as before.
+ * claimed dynamically) are cut equally.
  */
 
 /**

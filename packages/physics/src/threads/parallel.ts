@@ -16,9 +16,9 @@ import { isShared, type ThreadPool } from './pool.js';
  * Fewest entities per thread for a loop to run on several threads. Waking a worker and waiting for
  * it costs some tens of microseconds; the cheapest kernel (free particles) does about 4,000 entities
  * in that time on one core. Since the workers spin a while between loops (pool.ts idleSpin) and the
- * ranges follow each thread's speed (balance.ts), 8,192 a thread pays: balls-in-box at 20,000 balls
- * on 2 threads, whose integration then splits, ran 2.4 to 7 % faster a step than at 16,384
- * (alternate steps in one process); an adaptive pool still keeps a loop that does not pay to one thread.
+ * ranges follow each thread's speed (balance.ts), 8,192 a thread pays (a 20,000-ball world's
+ * integration then splits over 2 threads); an adaptive pool still keeps a loop that does not pay to one
+ * thread.
  * @category Threads
  */
 export const MIN_PARALLEL_PER_THREAD = 8192;
@@ -41,28 +41,10 @@ export function runParallel(
   n: number,
   ids: ArrayLike<number> | null,
 ): number {
-  return runKernel(world.threadPool, system, kernel, arrays, params, n, ids, MIN_PARALLEL_PER_THREAD);
-}
-
-/**
- * runOnPool, and when the pool does not take the loop, `kernel` inline over [0, n) (range 0, with
- * `helpers`: the pool's when there is one). Returns the summed kernel result.
- * @throws Error naming `system` if a worker's range threw.
- * @category Threads
- */
-export function runKernel(
-  pool: ThreadPool | null,
-  system: string,
-  kernel: Kernel,
-  arrays: KernelArray[],
-  params: ArrayLike<number>,
-  n: number,
-  ids: ArrayLike<number> | null,
-  minPerThread: number,
-  helpers: readonly KernelHelper[] = pool === null ? NO_HELPERS : pool.helpers,
-): number {
-  const result = runOnPool(pool, system, kernel, arrays, params, n, ids, minPerThread);
-  return result !== null ? result : kernel(arrays, params as Float64Array, ids as Int32Array | null, 0, n, 0, helpers);
+  const pool = world.threadPool;
+  const result = runOnPool(pool, system, kernel, arrays, params, n, ids, MIN_PARALLEL_PER_THREAD);
+  if (result !== null) return result;
+  return kernel(arrays, params as Float64Array, ids as Int32Array | null, 0, n, 0, pool === null ? NO_HELPERS : pool.helpers);
 }
 
 /** The helper list of a kernel run inline without a pool (the kernels that call helpers pass their own). */
@@ -73,7 +55,7 @@ const NO_HELPERS: readonly KernelHelper[] = Object.freeze([]);
  * that pays: n at least `minPerThread` times the pool's threads, every array shared and the workers
  * started; an adaptive pool may still run it inline over [0, n) when that has been faster
  * (threads/adaptive.ts). Returns the summed kernel result, or null when the pool (null: none) did not
- * take the loop, for a caller that then runs the kernel itself (runKernel does).
+ * take the loop, for a caller that then runs the kernel itself (runParallel does).
  * @throws Error naming `system` if a worker's range threw.
  * @category Threads
  */

@@ -1,5 +1,5 @@
 /**
- * A pool of worker threads that run ranges of a system's loop on shared memory (issue: every core).
+ * A pool of worker threads that run ranges of a system's loop on shared memory.
  * Thread 0 is the calling (main) thread; threads 1 .. n-1 are workers (Node `worker_threads` or the
  * browser's `Worker`), each built from the same source (worker-source.ts) and holding views of the
  * same SharedArrayBuffers. A `run` writes the kernel, the ranges and the array ids into a small

@@ -13,7 +13,7 @@ import { $internal, query as bitecsQuery, Prefab, type QueryResult } from 'bitec
  * relation cleanup on removeEntity, `getAllEntities`) list the components whose bit is set, in the
  * order the components were registered with the world, and the live ids of the entity index.
  * Nothing is allocated per entity or per call except by iteration (`getEntityComponents` returns a
- * new array, as before).
+ * new array, as bitecs' does).
  *
  * 2. Fixed typed arrays where bitecs grows JS arrays indexed by entity id: the entity index's `sparse`
  * (id -> position in `dense`), every generation of component masks (31 components each; the core
@@ -31,7 +31,7 @@ import { $internal, query as bitecsQuery, Prefab, type QueryResult } from 'bitec
  * 4. A query made while entities exist is filled by one loop over the typed masks (`leanQuery`)
  * instead of bitecs' scan, which calls a generic component check per entity (a Map look-up and an
  * `Object.keys` array each): a world's first step makes its systems' queries (about 45), and in a
- * world of 30,000 entities (joint-grid 100: its bodies and joints) bitecs' scans took about 80 ms of it.
+ * world of tens of thousands of entities bitecs' scans would be most of that step.
  * Ids above the capacity are never made (createSlot refuses them).
  */
 

@@ -57,7 +57,7 @@ export function finishCandidates(out: Manifold3D, nx: number, ny: number, nz: nu
   // touch) within the tie tolerance of the deepest. Equally deep corners (a box turned 45 degrees on
   // another: an octagon whose corners agree to ~1e-8 m) would otherwise be picked by rounding noise,
   // and the four kept would alternate between the two interleaved sets, each switch starting the new
-  // points without warm start (issue 9: the cube dropped ~5 um and was kicked at ~5.6e-5 m/s).
+  // points without warm start (the cube would sink and be kicked a little every switch).
   let a = 0;
   for (let i = 1; i < n; i++) if (cs[i]! < cs[a]!) a = i;
   const tie = cs[a]! + DEPTH_TIE * margin + 1e-6;

@@ -1,4 +1,5 @@
 import { type ConvexGeometry, createGeometry } from '../../shapes/geometry-2d.js';
+import { clamp01 } from './segments-3d.js';
 
 /**
  * Contact manifolds of 2D convex shapes: pure functions, no world. A manifold is the contact between
@@ -624,10 +625,6 @@ export function segmentFractions(
   }
   res[0] = s;
   res[1] = t;
-}
-
-function clamp01(x: number): number {
-  return x < 0 ? 0 : x > 1 ? 1 : x;
 }
 
 /**

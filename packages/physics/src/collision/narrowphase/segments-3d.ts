@@ -82,6 +82,7 @@ export function closestSegmentParams(
   st[1] = t;
 }
 
+/** `x` clamped to [0, 1] (a segment parameter; NaN stays NaN). Shared with the 2D segment pair (manifold-2d.ts). */
 export function clamp01(x: number): number {
   return x < 0 ? 0 : x > 1 ? 1 : x;
 }
