@@ -69,6 +69,15 @@ export interface Manifold3DBuffer {
   localNormal: Float64Array;
   localA: Float64Array;
   localB: Float64Array;
+  /**
+   * Per row: the previous step's row of the same key (`previous`, for warm starting), or -1; written
+   * when the row is made. `touch`: the pair's entry in the touch list the row's step ended with
+   * (Contact3DState.touching), or -1 if the row did not touch; written by finishManifolds3D
+   * (solver/manifold-rows-3d.ts), which reads the previous row's to find, without a hash look-up, a
+   * pair that touched last step too.
+   */
+  prevRow: Int32Array;
+  touch: Int32Array;
 }
 
 function createBuffer(n: number): Manifold3DBuffer {
@@ -109,6 +118,8 @@ function createBuffer(n: number): Manifold3DBuffer {
     localNormal: f(3 * n),
     localA: f(3 * p),
     localB: f(3 * p),
+    prevRow: i(n),
+    touch: i(n),
   };
 }
 
@@ -231,6 +242,22 @@ export function insertRow(index: RowIndex, key: number, row: number): void {
   K[h] = key;
   index.rows[h] = row;
   index.count++;
+}
+
+/**
+ * The slot of `key` in the index: where it is, or the empty slot an insert would put it in (the caller
+ * tells them apart by index.keys[slot] === key, and fills an empty one: keys, rows and count).
+ * @category Collision
+ */
+export function slotOfRow(index: RowIndex, key: number): number {
+  const K = index.keys,
+    mask = index.mask;
+  let h = slotOfKey(key, mask);
+  for (;;) {
+    const k = K[h]!;
+    if (k === key || k !== k) return h;
+    h = (h + 1) & mask;
+  }
 }
 
 /**

@@ -399,6 +399,7 @@ export function emit(
   if (boxRow.a >= 0) storeLocal(st, buf, i);
   else buf.local[i] = 0;
   const prev = boxRow.a >= 0 ? boxRow.prev : lookupRow(st.previousIndex, rowKey(world.capacity, ea, eb, sub));
+  buf.prevRow[i] = prev;
   const P = st.previous,
     reused = boxRow.a >= 0 && boxRow.from >= 0,
     R = buf.anchors;

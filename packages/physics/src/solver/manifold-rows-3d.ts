@@ -1,5 +1,5 @@
 import { keepWhileAsleep, pushEvent, resumeAfterSleep } from '../collision/events.js';
-import { clearRowIndex, contact3DStateOf, insertRow, lookupRow, pushTouch } from '../collision/manifolds-3d.js';
+import { clearRowIndex, contact3DStateOf, lookupRow, pushTouch, slotOfRow } from '../collision/manifolds-3d.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { ANCHOR_BX, ANCHOR_BY, ANCHOR_BZ, ANCHOR_STRIDE } from './manifold-layout-3d.js';
 import { joinSolverBodies } from './solver-bodies.js';
@@ -60,6 +60,9 @@ export function gatherManifold3DBodies(world: PhysicsWorld, count: number): numb
   return joinSolverBodies(world.collision, buf.bodyA, buf.bodyB, buf.ia, buf.ib, buf.count, count);
 }
 
+/** finishManifolds3D's scratch: 1 for each entry of last step's touch list that a row touching now continues. */
+let continued = new Uint8Array(0);
+
 /**
  * After the solve: which pairs touch (a point carried a normal impulse, or overlapped at the start of
  * the step) against those of the last step gives the begin and end touch events. Called at the end of
@@ -70,13 +73,18 @@ export function finishManifolds3D(world: PhysicsWorld): void {
   const st = contact3DStateOf(world);
   if (st === undefined) return;
   const buf = st.current,
+    P = st.previous,
     key = world.capacity + 1,
     prev = st.touching,
     now = st.touchingNext;
   const events = world.collision.events;
   now.count = 0;
   clearRowIndex(now.index, buf.count);
+  if (continued.length < prev.count) continued = new Uint8Array(2 * prev.count);
+  continued.fill(0, 0, prev.count);
+  const NK = now.index.keys;
   for (let i = 0; i < buf.count; i++) {
+    buf.touch[i] = -1;
     let touch = -1;
     for (let k = 0, m = buf.points[i]!; k < m; k++) {
       const q = 4 * i + k;
@@ -87,9 +95,26 @@ export function finishManifolds3D(world: PhysicsWorld): void {
     }
     if (touch < 0) continue;
     const k = buf.shapeA[i]! * key + buf.shapeB[i]!;
-    if (lookupRow(now.index, k) >= 0) continue;
-    insertRow(now.index, k, pushTouch(now, k, buf.shapeA[i]!, buf.shapeB[i]!, buf.bodyA[i]!, buf.bodyB[i]!));
-    if (lookupRow(prev.index, k) >= 0) continue;
+    // One probe finds the pair among this step's touching pairs, or where it goes.
+    const slot = slotOfRow(now.index, k);
+    if (NK[slot] === k) {
+      buf.touch[i] = now.index.rows[slot]!;
+      continue;
+    }
+    const entry = pushTouch(now, k, buf.shapeA[i]!, buf.shapeB[i]!, buf.bodyA[i]!, buf.bodyB[i]!);
+    NK[slot] = k;
+    now.index.rows[slot] = entry;
+    now.index.count++;
+    buf.touch[i] = entry;
+    // Whether the pair touched last step: its previous row's entry in that step's list when it holds
+    // this pair (a row that did not touch, or a buffer no finish wrote, falls back to the look-up).
+    const p = buf.prevRow[i]!;
+    let was = p >= 0 ? P.touch[p]! : -1;
+    if (!(was >= 0 && was < prev.count && prev.keys[was] === k)) was = lookupRow(prev.index, k);
+    if (was >= 0) {
+      continued[was] = 1;
+      continue;
+    }
     if (resumeAfterSleep(world, buf.shapeA[i]!, buf.shapeB[i]!)) continue;
     const ev = events.begin;
     const r = pushEvent(world, ev, buf.shapeA[i]!, buf.shapeB[i]!, buf.bodyA[i]!, buf.bodyB[i]!);
@@ -107,8 +132,9 @@ export function finishManifolds3D(world: PhysicsWorld): void {
     for (let k = 0, m = buf.points[i]!; k < m; k++) impulse += buf.ln[4 * i + k]!;
     ev.impulse[r] = impulse;
   }
+  // A pair of last step's list not continued by a row touching now has ended.
   for (let i = 0; i < prev.count; i++) {
-    if (lookupRow(now.index, prev.keys[i]!) >= 0) continue;
+    if (continued[i] === 1) continue;
     if (keepWhileAsleep(world, prev.shapeA[i]!, prev.shapeB[i]!, prev.bodyA[i]!, prev.bodyB[i]!)) continue;
     pushEvent(world, events.end, prev.shapeA[i]!, prev.shapeB[i]!, prev.bodyA[i]!, prev.bodyB[i]!);
   }
