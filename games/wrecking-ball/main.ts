@@ -1621,7 +1621,9 @@ function placeGroundShadows(): void {
     if (!half || !renderer.drawnPosition(p.body, shadowAt)) continue;
     groundShadows.add(shadowAt[0]!, shadowAt[1]!, shadowAt[2]!, O.x[p.body]!, O.y[p.body]!, O.z[p.body]!, O.w[p.body]!, half);
   }
-  // The mast and the jib, narrower than their boxes (a lattice lets light through), the counterweight and the cab.
+  // The mast, narrower than its box (a lattice lets light through), the counterweight and the cab.
+  // Not the jib: flattened as a solid strip its shadow was a thin dark line 15 m long across the
+  // site, read as a cable on the ground (its lattice lets most of the light through).
   groundShadows.add(0, JIB_HEIGHT / 2, 0, 0, 0, 0, 1, MAST_SHADOW_HALF);
   for (const [mesh, half] of craneShadows) {
     mesh.updateMatrix();
@@ -1635,7 +1637,6 @@ function placeGroundShadows(): void {
 const MAST_SHADOW_HALF: [number, number, number] = [0.22, JIB_HEIGHT / 2, 0.22];
 /** The crane's parts at the mast's top that cast ground shadows, and their boxes' half extents in their own frames, m. */
 const craneShadows: Array<[Mesh, [number, number, number]]> = [
-  [jib, [JIB_LENGTH / 2, 0.1, 0.1]],
   [counterweight, [0.6, 0.55, 0.5]],
   [cab, [0.45, 0.4, 0.45]],
 ];
