@@ -667,6 +667,18 @@ describe('phone controls', () => {
     });
     const a0 = await read(g, 'handles().crane.angle');
     // Held until the jib has turned (a loaded machine may draw few frames in a fixed half second).
+    // Each of the crane's buttons says under its symbol what it moves (the bar was unexplained once
+    // the card saying how to play had gone), and the seven still fit one row.
+    const bar = await g.page.evaluate(() =>
+      [...document.querySelectorAll<HTMLElement>('.bp-touchbar[aria-label="crane"] button')].map((b) => ({
+        caption: b.querySelector('[data-caption]')?.textContent ?? '',
+        top: b.getBoundingClientRect().top,
+        right: b.getBoundingClientRect().right,
+      })),
+    );
+    expect(bar.map((b) => b.caption)).toEqual(['turn', 'turn', 'hook', 'hook', 'ball', 'ball', 'stop swing']);
+    expect(new Set(bar.map((b) => Math.round(b.top))).size).toBe(1);
+    expect(Math.max(...bar.map((b) => b.right))).toBeLessThanOrEqual(390);
     const slew = (await g.page.getByRole('button', { name: 'slew the jib left', exact: true }).boundingBox())!;
     await touchPath(g.page, [[slew.x + slew.width / 2, slew.y + slew.height / 2]], 100, async () => {
       await g.waitFor(
