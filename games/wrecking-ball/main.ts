@@ -275,7 +275,7 @@ const game = await startThreeGame({
   controls: [
     { keys: 'Drag a target', action: 'aim back, let go to swing', touch: 'Drag a target' },
     { keys: 'A D / ← →', action: 'turn the crane', touch: '⟲ ⟳' },
-    { keys: 'W S / ↑ ↓', action: 'hook out / in along the arm', touch: 'Out / In' },
+    { keys: 'W S / ↑ ↓', action: 'hook out / in', touch: 'Out / In' },
     { keys: 'Space', action: 'hold to stop the ball swinging', touch: 'Steady' },
     { keys: 'Q E', action: 'ball up / down', touch: 'Up / Down' },
     { keys: 'Click ground', action: 'send the hook there' },
@@ -1927,7 +1927,7 @@ function foldLegend(): void {
   const more = document.createElement('details');
   more.dataset.hud = 'more-controls';
   const summary = document.createElement('summary');
-  summary.textContent = 'more controls: hook, camera, pause';
+  summary.textContent = 'more: hook, camera, pause';
   summary.style.cssText = 'cursor: pointer; margin: 4px 0 2px; color: #cfd8e6;';
   more.append(summary);
   for (const e of lines) if (!lead.includes(e)) more.append(e);

@@ -436,7 +436,7 @@ describe('3D rigid-body games in headless Chromium', () => {
     await g.page.keyboard.press('p');
     await g.frames(2);
     expect(await overlay.isVisible()).toBe(false);
-    // The legend: the drag first, the other controls folded (closed) under "more controls".
+    // The legend: the drag first, the other controls folded (closed) under "more: hook, camera, pause".
     const legend = await g.page.evaluate(() => {
       const el = document.querySelector('.bp-legend')!;
       const more = el.querySelector<HTMLDetailsElement>('details[data-hud="more-controls"]');
