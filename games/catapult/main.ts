@@ -400,6 +400,27 @@ const MATERIAL_COLORS: Record<Level['pieces'][number]['kind'], number> = {
   brick: 0xa39e94,
   stone: 0x8b929c,
 };
+/**
+ * On a small screen a drawer (the menu, or the settings) opened over the scene pauses the game, and
+ * closing it resumes the game if the drawer paused it: a stone flying or a castle falling under a
+ * menu was play the player did not see. (A pause the player made stays.)
+ */
+function pauseUnderDrawers(): void {
+  const root = pageLayout().root;
+  let pausedByDrawer = false;
+  new MutationObserver(() => {
+    const open = root.dataset.open !== undefined && pageLayout().compact();
+    if (open && !shell.paused) {
+      shell.paused = true;
+      pausedByDrawer = true;
+    } else if (!open && pausedByDrawer) {
+      pausedByDrawer = false;
+      if (shell.paused) shell.paused = false;
+    }
+  }).observe(root, { attributes: true, attributeFilter: ['data-open'] });
+}
+pauseUnderDrawers();
+
 /** Gives the level's bodies the colours of what they are made of. */
 function paint(): void {
   for (const p of lv.pieces) if (isAlive(shell.world, p.body)) renderer.setColor(p.body, MATERIAL_COLORS[p.kind]);
@@ -656,6 +677,7 @@ app.canvas.addEventListener('pointerdown', (e) => {
   aim.dx = aim.dy = 0;
   aim.moved = false;
   app.canvas.setPointerCapture(e.pointerId);
+  showAimDom();
   // The aim shows in the next frame even when the GPU is behind (the pacer would skip it): a quick
   // drag showed no band and no arc at all.
   game.drawNext();
@@ -665,6 +687,7 @@ function pullTo(e: PointerEvent): void {
   pointerOnCanvas(app.canvas, e, pointer);
   aim.dx = (pointer.x - aim.x0) / aimScale();
   aim.dy = -(pointer.y - aim.y0) / aimScale();
+  showAimDom();
 }
 app.canvas.addEventListener('pointermove', (e) => {
   if (!aim.active) return;
@@ -679,12 +702,14 @@ const release = (e: PointerEvent): void => {
   // just before a release (a busy page gets fewer), so the last move can lag the hand.
   pullTo(e);
   aim.active = false;
+  showAimDom();
   // Paused mid-drag: the pull is dropped, not thrown.
   if (!shell.paused) fire(aim.dx, aim.dy);
 };
 app.canvas.addEventListener('pointerup', release);
 app.canvas.addEventListener('pointercancel', () => {
   aim.active = false;
+  showAimDom();
 });
 
 /** Throws with the pull (dx, dy), m, if the level is on, shots are left and the pull is long enough (0.3 m). */
@@ -967,6 +992,16 @@ let nextShown = false;
 const showNext = (visible: boolean, text?: string): void => {
   nextShown = visible;
   showNextButton(visible, text);
+  const bar = visible ? pageLayout().stage.querySelector<HTMLElement>('.bp-action') : null;
+  if (!bar) return;
+  // Not upright, the strip under the ground is thin and the button at the bottom sat over the wreck:
+  // it goes in the sky just under the banner that names it ("the button below"). Upright it stays in
+  // the earth under the scene.
+  const top = upright() ? '' : `${Math.round(banner.y + banner.height + 14)}px`;
+  if (bar.style.top !== top) {
+    bar.style.top = top;
+    bar.style.bottom = top === '' ? '' : 'auto';
+  }
 };
 
 const overlay = new Graphics({ label: 'catapult' });
@@ -1026,36 +1061,11 @@ const castleText = new Text({
 });
 castleText.anchor.set(1, 0.5);
 castleText.visible = false;
-/** The power and angle over the power bar while aiming (see drawAim). */
-const aimText = new Text({
-  text: '',
-  style: {
-    fill: 0xffffff,
-    fontSize: 16,
-    fontFamily: 'sans-serif',
-    fontWeight: 'bold',
-    align: 'center',
-    stroke: { color: 0x000000, width: 4, join: 'round' },
-  },
-});
-aimText.anchor.set(0.5, 1);
-aimText.visible = false;
 /** Over the play area while paused: a dimmed scene and the word, so a pause is not mistaken for a hang. */
 const pause = createPauseOverlay();
 const popupLayer = new Container({ label: 'popups' });
 effects = new Effects(popupLayer);
-renderer.root.addChild(
-  overlay,
-  effects.graphics,
-  popupLayer,
-  bannerPanel,
-  banner,
-  verdictText,
-  offscreenText,
-  castleText,
-  aimText,
-  pause.container,
-);
+renderer.root.addChild(overlay, effects.graphics, popupLayer, bannerPanel, banner, verdictText, offscreenText, castleText, pause.container);
 
 /** Whether a stone sits in the cup: shots are left and the arm is back from its last throw. */
 function loaded(): boolean {
@@ -1183,35 +1193,24 @@ const PREVIEW_TIME = 6,
   PREVIEW_DT = 0.02;
 /** Least distance between two dots of the arc preview on the screen, px. */
 const PREVIEW_GAP = 11;
-/** What the aim shows in the last frame (tests): power (0 to 1), angle (degrees above level), preview dots and the preview's farthest x, m. */
+/**
+ * What the aim shows (tests): power (0 to 1) and angle (degrees above level) as the page shows them
+ * now, the preview's dots in the last frame and its farthest x, m.
+ */
 const aimShown: { power: number; angle: number; dots: number; reach: number } = { power: 0, angle: 0, dots: 0, reach: 0 };
 
 /**
- * While aiming: the pull as a band from where the press went down to the finger, inside a ring
- * whose radius is a full pull (so the player sees how much further the pull can go); the first part
- * of the arc (dots fading along it); and over the catapult a power bar with the power and the angle
- * in numbers, so a throw can be repeated or changed by a little.
+ * While aiming, the first part of the arc (dots fading along it) to its first hit, and the aim in the
+ * page (showAimDom) placed for the camera of this frame.
  */
 function drawAim(world: PhysicsWorld): void {
-  aimText.visible = aim.active;
   aimShown.dots = 0;
   aimLayer.clear();
+  // The band, the ring and the power bar follow the camera too (it may ease while the player pulls).
+  showAimDom();
   if (!aim.active) return;
   const cam = renderer.camera;
   const [vx, vy] = launchVelocity(aim.dx, aim.dy);
-  const pull = Math.hypot(aim.dx, aim.dy);
-  const power = Math.min(1, pull / PULL.max);
-  // Green to yellow at half power, to red at full.
-  const color = power < 0.5 ? mixColor(0x5cd65c, 0xffd23b, 2 * power) : mixColor(0xffd23b, 0xff5040, 2 * power - 1);
-  // The band and the ring, in screen pixels from the press.
-  const R = fullPullPx();
-  const [ex, ey] = aimEnd();
-  aimLayer.circle(aim.x0, aim.y0, R).stroke({ width: 2, color: 0xffffff, alpha: 0.35 });
-  aimLayer.circle(aim.x0, aim.y0, R / 2).stroke({ width: 1, color: 0xffffff, alpha: 0.2 });
-  aimLayer.moveTo(aim.x0, aim.y0).lineTo(ex, ey).stroke({ width: 5, color: 0x000000, alpha: 0.35 });
-  aimLayer.moveTo(aim.x0, aim.y0).lineTo(ex, ey).stroke({ width: 3, color });
-  aimLayer.circle(aim.x0, aim.y0, 4).fill({ color: 0xffffff, alpha: 0.8 });
-  aimLayer.circle(ex, ey, 9).fill(color).stroke({ width: 2, color: 0x000000, alpha: 0.6 });
   // The arc to its first hit (see PREVIEW_TIME).
   const g = -world.gravity[1]!;
   const arc = previewArc(world, vx, vy, g);
@@ -1243,26 +1242,103 @@ function drawAim(world: PhysicsWorld): void {
       });
     aimShown.dots++;
   }
+  aimShown.reach = reach;
+}
+
+const SVG_NS = 'http://www.w3.org/2000/svg';
+/** An SVG element `tag` with attributes `attrs`. */
+function svgChild(tag: string, attrs: Record<string, string | number>): SVGElement {
+  const e = document.createElementNS(SVG_NS, tag);
+  for (const [k, v] of Object.entries(attrs)) e.setAttribute(k, String(v));
+  return e;
+}
+/**
+ * The aim's band, ring and power bar with its numbers, in the page over the canvas (not drawn on
+ * it): they change on every pointer move, at once, whether or not a frame is drawn. The kit's frame
+ * pacer draws no frame while the GPU has two unfinished (software WebGL: often for a whole quick
+ * drag), and a drawn label read "6 %" at the release of a 59 % throw.
+ */
+const aimDom = (() => {
+  const svg = svgChild('svg', { 'data-hud': 'aim-band', 'aria-hidden': 'true' }) as SVGSVGElement;
+  svg.style.cssText = 'position:absolute;left:0;top:0;width:100%;height:100%;pointer-events:none;overflow:visible;display:none';
+  const ring = svgChild('circle', { fill: 'none', stroke: '#fff', 'stroke-opacity': 0.35, 'stroke-width': 2 });
+  const half = svgChild('circle', { fill: 'none', stroke: '#fff', 'stroke-opacity': 0.2, 'stroke-width': 1 });
+  const shade = svgChild('line', { stroke: '#000', 'stroke-opacity': 0.35, 'stroke-width': 5, 'stroke-linecap': 'round' });
+  const band = svgChild('line', { 'stroke-width': 3, 'stroke-linecap': 'round' });
+  const press = svgChild('circle', { r: 4, fill: '#fff', 'fill-opacity': 0.8 });
+  const end = svgChild('circle', { r: 9, stroke: '#000', 'stroke-opacity': 0.6, 'stroke-width': 2 });
+  svg.append(ring, half, shade, band, press, end);
+  const box = document.createElement('div');
+  box.dataset.hud = 'aim';
+  box.setAttribute('aria-live', 'off');
+  box.style.cssText =
+    'position:absolute;pointer-events:none;display:none;font:bold 16px/1.25 sans-serif;color:#fff;text-align:center;white-space:pre;' +
+    'text-shadow:0 0 3px #000,1px 1px 0 #000,-1px -1px 0 #000,1px -1px 0 #000,-1px 1px 0 #000';
+  const label = document.createElement('div');
+  label.style.cssText = 'position:absolute;bottom:100%;margin-bottom:4px;left:0';
+  const bar = document.createElement('div');
+  bar.style.cssText = 'height:10px;padding:2px;border-radius:5px;background:rgba(0,0,0,0.55)';
+  const fill = document.createElement('div');
+  fill.style.cssText = 'height:10px;border-radius:4px';
+  bar.append(fill);
+  box.append(label, bar);
+  pageLayout().stage.append(svg, box);
+  return { svg, ring, half, shade, band, press, end, box, label, bar, fill };
+})();
+
+/** Sets an SVG element's attributes. */
+function setAttrs(e: SVGElement, attrs: Record<string, number | string>): void {
+  for (const [k, v] of Object.entries(attrs)) e.setAttribute(k, String(v));
+}
+/** The aim's colour: green to yellow at half power, to red at full. */
+const powerColor = (power: number): number =>
+  power < 0.5 ? mixColor(0x5cd65c, 0xffd23b, 2 * power) : mixColor(0xffd23b, 0xff5040, 2 * power - 1);
+/**
+ * Shows the aim in the page (see aimDom) while a press pulls, else hides it: the band from the
+ * press to the finger inside a ring whose radius is a full pull (so the player sees how much further
+ * the pull can go), and over the catapult a power bar with the power and the angle in numbers (and
+ * the last throw's over them), so a throw can be repeated or changed by a little. Called on every
+ * pointer move and every frame.
+ */
+function showAimDom(): void {
+  const d = aimDom;
+  const on = aim.active && !shell.paused;
+  const display = on ? '' : 'none';
+  if (d.svg.style.display !== display) d.svg.style.display = d.box.style.display = display;
+  if (!on) return;
+  const cam = renderer.camera;
+  const [vx, vy] = launchVelocity(aim.dx, aim.dy);
+  const power = Math.min(1, Math.hypot(aim.dx, aim.dy) / PULL.max);
+  const color = `#${powerColor(power).toString(16).padStart(6, '0')}`;
   aimShown.power = power;
   aimShown.angle = (Math.atan2(vy, vx) * 180) / Math.PI;
-  aimShown.reach = reach;
-  // The power bar and its numbers over the catapult, kept on the screen.
-  const w = Math.max(90, cam.toScreenLength(2)),
-    h = 10;
+  const R = fullPullPx();
+  const [ex, ey] = aimEnd();
+  setAttrs(d.ring, { cx: aim.x0, cy: aim.y0, r: R });
+  setAttrs(d.half, { cx: aim.x0, cy: aim.y0, r: R / 2 });
+  setAttrs(d.shade, { x1: aim.x0, y1: aim.y0, x2: ex, y2: ey });
+  setAttrs(d.band, { x1: aim.x0, y1: aim.y0, x2: ex, y2: ey, stroke: color });
+  setAttrs(d.press, { cx: aim.x0, cy: aim.y0 });
+  setAttrs(d.end, { cx: ex, cy: ey, fill: color });
+  // The power bar over the catapult, kept on the screen.
+  const w = Math.max(90, cam.toScreenLength(2));
   const x = Math.min(Math.max(6, cam.toScreenX(-0.3) - w / 2), cam.width - w - 6),
     y = Math.max(60, cam.toScreenY(3.2));
-  aimLayer.roundRect(x - 2, y - 2, w + 4, h + 4, 5).fill({ color: 0x000000, alpha: 0.55 });
-  aimLayer.roundRect(x, y, Math.max(2, w * power), h, 4).fill(color);
+  d.box.style.left = `${x - 2}px`;
+  d.box.style.top = `${y - 2}px`;
+  d.bar.style.width = `${w}px`;
+  d.fill.style.width = `${Math.max(2, w * power)}px`;
+  d.fill.style.background = color;
   // Over this throw's numbers the last throw's: the player corrects from them ("long: a little less").
   // With a miss's brief: what that throw did, while the hint over the scene is gone.
   const brief = lastThrow.brief ? `: ${lastThrow.brief}` : '';
   const last = lastThrow.body ? `last ${Math.round(100 * lastThrow.power)} %  ${Math.round(lastThrow.angle)}°${brief}\n` : '';
-  const label = `${last}${Math.round(100 * power)} %  ${Math.round(aimShown.angle)}°`;
-  if (aimText.text !== label) aimText.text = label;
+  const text = `${last}${Math.round(100 * power)} %  ${Math.round(aimShown.angle)}°`;
+  if (d.label.textContent !== text) d.label.textContent = text;
   // Centred over the bar, and all on the screen (the last throw's line is wider than the bar).
-  const half = aimText.width / 2 + 4;
-  aimText.x = Math.min(Math.max(x + w / 2, half), cam.width - half);
-  aimText.y = y - 4;
+  const lw = d.label.offsetWidth;
+  const centre = Math.min(Math.max(x + w / 2, lw / 2 + 4), cam.width - lw / 2 - 4);
+  d.label.style.left = `${centre - lw / 2 - (x - 2)}px`;
 }
 
 /**
@@ -1348,10 +1424,10 @@ const closeLabel = new Text({
 });
 closeSprite.visible = closeFrame.visible = closeLabel.visible = false;
 app.stage.addChild(closeSprite, closeFrame, closeLabel);
-// The aim (its band, ring, arc and power bar) and its numbers over the close-up: a pull's band
-// crossing the close-up stays in sight, and the close-up, which draws the scene under them, does not
-// show them (nor change with every move of the finger).
-app.stage.addChild(aimLayer, aimText);
+// The aim's arc over the close-up (the band, ring, power bar and numbers are in the page over the
+// canvas, see aimDom): the close-up, which draws the scene under it, does not show it (nor change
+// with every move of the finger).
+app.stage.addChild(aimLayer);
 /** The smallest magnification of the close-up worth showing (its largest: CLOSE_MAX). */
 const CLOSE_MIN = 1.4;
 /** Pixels between the close-up's foot and the top of the castle on the screen. */
@@ -1824,7 +1900,7 @@ shell.expose({
   /** The verdict's words over the scene in the last frame ('' while hidden). */
   verdictShown: (): string => (verdictText.visible ? verdictText.text : ''),
   /** The aim's numbers over the catapult in the last frame ('' while not aiming). */
-  aimLabel: (): string => (aimText.visible ? aimText.text : ''),
+  aimLabel: (): string => (aimDom.box.style.display === 'none' ? '' : (aimDom.label.textContent ?? '')),
   /** The effects now: bits of debris in flight and score popups showing. */
   effects: (): { bits: number; popups: number } => ({ bits: effects!.bitCount, popups: effects!.popupCount }),
   /** The catapult's arm angle, rad (see CATAPULT in ./look: cocked at pi, upright at pi / 2). */

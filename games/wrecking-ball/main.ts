@@ -274,10 +274,10 @@ const game = await startThreeGame({
   // The one move a level needs first (the scene's hint says it too), then the crane's own controls.
   controls: [
     { keys: 'Drag a target', action: 'aim back, let go to swing', touch: 'Drag a target' },
-    { keys: 'A D / ← →', action: 'slew the jib', touch: '⟲ ⟳' },
-    { keys: 'W S / ↑ ↓', action: 'trolley out / in', touch: 'Out / In' },
-    { keys: 'Space', action: 'hold to steady the ball', touch: 'Steady' },
-    { keys: 'Q E', action: 'hook up / down', touch: 'Up / Down' },
+    { keys: 'A D / ← →', action: 'turn the crane', touch: '⟲ ⟳' },
+    { keys: 'W S / ↑ ↓', action: 'hook out / in', touch: 'Out / In' },
+    { keys: 'Space', action: 'hold to stop the ball swinging', touch: 'Steady' },
+    { keys: 'Q E', action: 'ball up / down', touch: 'Up / Down' },
     { keys: 'Click ground', action: 'send the hook there' },
     { keys: 'Drag ball', action: 'pull the ball, release to swing' },
     { keys: 'L', action: 'next level (once cleared)', touch: 'Next level' },
@@ -1181,10 +1181,25 @@ const craneBar = createButtonBar(
   { label: 'crane' },
 );
 craneBar.element.style.gap = '4px';
-for (const b of craneBar.buttons) {
+/**
+ * Under each button's symbol, what it moves in a word a player knows (the bar was unexplained once
+ * the card saying how to play had gone): the crane turns, the hook runs out and in along the arm,
+ * the ball goes up and down, Steady stops its swing.
+ */
+const CRANE_CAPTIONS = ['turn', 'turn', 'hook', 'hook', 'ball', 'ball', 'stop swing'];
+craneBar.buttons.forEach((b, i) => {
   b.style.padding = '0 4px';
   b.style.minWidth = '44px';
-}
+  b.style.display = 'inline-flex';
+  b.style.flexDirection = 'column';
+  b.style.justifyContent = 'center';
+  b.style.lineHeight = '1.05';
+  const caption = document.createElement('small');
+  caption.dataset.caption = '';
+  caption.textContent = CRANE_CAPTIONS[i] ?? '';
+  caption.style.cssText = 'font-size: 10px; font-weight: 500; opacity: 0.8;';
+  b.append(caption);
+});
 const showNext = createActionButton('Next level ▶', () => {
   if (cleared) nextLevel();
 });
@@ -1621,7 +1636,9 @@ function placeGroundShadows(): void {
     if (!half || !renderer.drawnPosition(p.body, shadowAt)) continue;
     groundShadows.add(shadowAt[0]!, shadowAt[1]!, shadowAt[2]!, O.x[p.body]!, O.y[p.body]!, O.z[p.body]!, O.w[p.body]!, half);
   }
-  // The mast and the jib, narrower than their boxes (a lattice lets light through), the counterweight and the cab.
+  // The mast, narrower than its box (a lattice lets light through), the counterweight and the cab.
+  // Not the jib: flattened as a solid strip its shadow was a thin dark line 15 m long across the
+  // site, read as a cable on the ground (its lattice lets most of the light through).
   groundShadows.add(0, JIB_HEIGHT / 2, 0, 0, 0, 0, 1, MAST_SHADOW_HALF);
   for (const [mesh, half] of craneShadows) {
     mesh.updateMatrix();
@@ -1635,7 +1652,6 @@ function placeGroundShadows(): void {
 const MAST_SHADOW_HALF: [number, number, number] = [0.22, JIB_HEIGHT / 2, 0.22];
 /** The crane's parts at the mast's top that cast ground shadows, and their boxes' half extents in their own frames, m. */
 const craneShadows: Array<[Mesh, [number, number, number]]> = [
-  [jib, [JIB_LENGTH / 2, 0.1, 0.1]],
   [counterweight, [0.6, 0.55, 0.5]],
   [cab, [0.45, 0.4, 0.45]],
 ];
@@ -1895,22 +1911,27 @@ pageLayout().stage.append(hint);
 const pauseOverlay = createDomPauseOverlay(pageLayout().stage);
 
 /**
- * The legend led by the one move a level needs (dragging a target), the rest (the shell's P, N, R and
- * the crane's own controls) folded under "more controls": a stranger reads one line, not twelve.
+ * The legend led by the moves that matter (dragging a target, turning the crane, steadying the
+ * ball), the rest (the shell's P, N, R, the hook's and the camera's controls) folded under a
+ * summary that says what is in it: a stranger reads three lines, not twelve, and with only the drag
+ * shown found the crane's keys hidden.
  */
 function foldLegend(): void {
   const legend = shell.hud.legend;
   const lines = [...legend.children].filter((e): e is HTMLElement => e instanceof HTMLElement && e.tagName === 'DIV');
-  const lead = lines.find((e) => /drag a target/i.test(e.textContent ?? ''));
-  if (!lead) return;
+  const lead = [/drag a target/i, /turn the crane/i, /stop the ball swinging/i].flatMap((re) => {
+    const line = lines.find((e) => re.test(e.textContent ?? ''));
+    return line ? [line] : [];
+  });
+  if (lead.length === 0) return;
   const more = document.createElement('details');
   more.dataset.hud = 'more-controls';
   const summary = document.createElement('summary');
-  summary.textContent = 'more controls';
+  summary.textContent = 'more: hook, camera, pause';
   summary.style.cssText = 'cursor: pointer; margin: 4px 0 2px; color: #cfd8e6;';
   more.append(summary);
-  for (const e of lines) if (e !== lead) more.append(e);
-  legend.prepend(lead);
+  for (const e of lines) if (!lead.includes(e)) more.append(e);
+  legend.prepend(...lead);
   legend.append(more);
 }
 foldLegend();

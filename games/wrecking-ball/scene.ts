@@ -512,9 +512,17 @@ export interface SwingRequest {
 }
 /**
  * Seconds of plan cost per radian an approach strays from the player's direction (`aimAt` with a
- * SwingRequest): larger than any other cost, so the nearest direction the crane can swing wins.
+ * SwingRequest) by more than AIM_FREE: larger than any other cost, so beyond AIM_FREE the nearest
+ * direction the crane can swing wins.
  */
 const AIM_COST = 200;
+/**
+ * How far, rad, an approach may stray from the player's direction at no cost: one of the
+ * APPROACH_DIRECTIONS steps (15 degrees), so of the directions either side of the player's the
+ * quicker plan wins. Held to the nearest direction, a light drag at a tower waited 6.3 s for its hit
+ * where the direction beside it took 2.5 s.
+ */
+const AIM_FREE = (2 * Math.PI) / APPROACH_DIRECTIONS;
 /** Seconds of plan time a ball along a long piece's length costs (see `aimAt`). */
 const GLANCE_COST = 2;
 /** Seconds before the arrival in which pieces near the ball's path count as in the way of the hit. */
@@ -813,7 +821,8 @@ function reachAlong(p: Piece, ux: number, uz: number): number {
  * after the hit the hook follows through (FOLLOW_SPEED), so the ball swings on through the structure
  * and comes to rest past it. `craneSystem` makes the plan again from where the ball is every
  * REPLAN_EVERY s. With `request` (the player's swing) the ball arrives at request.speed instead of
- * HIT_SPEED, from the direction nearest request.direction the crane can swing it (AIM_COST); without it, from the
+ * HIT_SPEED, from the quickest direction within AIM_FREE of request.direction, else the nearest the crane can
+ * swing it (AIM_COST); without it, from the
  * direction of the lowest cost (the level scripts' and ?demo's swings). Throws a RangeError for a request
  * whose direction is not finite or whose speed is outside (0, 2 HIT_SPEED].
  */
@@ -895,7 +904,8 @@ export function aimAt(world: PhysicsWorld, h: WreckingBallHandles, piece: number
     const t = (2 * Math.PI * d) / APPROACH_DIRECTIONS;
     let cost = time + (long ? GLANCE_COST * Math.abs(Math.cos(t) * long[0] + Math.sin(t) * long[1]) : 0);
     // The player's direction: the feasible one nearest it, whatever the others would cost.
-    if (request) cost += AIM_COST * Math.abs(Math.atan2(Math.sin(t - request.direction), Math.cos(t - request.direction)));
+    if (request)
+      cost += AIM_COST * Math.max(0, Math.abs(Math.atan2(Math.sin(t - request.direction), Math.cos(t - request.direction))) - AIM_FREE);
     const [fx, fz] = follow[d]!,
       fr = Math.hypot(fx, fz);
     cost += REACH_COST * (Math.max(0, fr - RADIUS_RANGE[1]) + Math.max(0, RADIUS_RANGE[0] - fr));

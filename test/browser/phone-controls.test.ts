@@ -576,7 +576,19 @@ describe('phone controls', () => {
       const p = game.handles().pieces[0]!.body;
       const m = (shadows as O | null)?.instanceMatrix.array;
       const off = m ? Math.hypot(m[12]! - (P.x[p]! - (P.y[p]! * lx) / ly), m[14]! - (P.z[p]! - (P.y[p]! * lz) / ly)) : -1;
-      const lite = { quality: game.quality(), sunShadow: game.renderer.lights.sun.castShadow, standard: standard(), off };
+      // The longest ground shadow, m: the greatest distance between two of a box's 8 corners flattened
+      // onto the ground (x, z). The jib's, a 15 m strip 0.2 m wide, was a dark line across the site.
+      let longest = 0;
+      for (let i = 0; m && i < (shadows as unknown as O).count; i++) {
+        const e = m.subarray(16 * i, 16 * i + 16);
+        const corners: number[][] = [];
+        for (let c = 0; c < 8; c++) {
+          const [a, b, d] = [c & 1 ? 1 : -1, c & 2 ? 1 : -1, c & 4 ? 1 : -1];
+          corners.push([e[0]! * a + e[4]! * b + e[8]! * d + e[12]!, e[2]! * a + e[6]! * b + e[10]! * d + e[14]!]);
+        }
+        for (const u of corners) for (const v of corners) longest = Math.max(longest, Math.hypot(u[0]! - v[0]!, u[1]! - v[1]!));
+      }
+      const lite = { quality: game.quality(), sunShadow: game.renderer.lights.sun.castShadow, standard: standard(), off, longest };
       game.setQuality('full');
       const full = { quality: game.quality(), sunShadow: game.renderer.lights.sun.castShadow, standard: standard() };
       game.setQuality('lite');
@@ -585,6 +597,9 @@ describe('phone controls', () => {
     expect(drawing.lite).toMatchObject({ quality: 'lite', sunShadow: false, standard: 0 });
     expect(drawing.lite.off).toBeGreaterThanOrEqual(0);
     expect(drawing.lite.off).toBeLessThan(1e-3);
+    // No ground shadow as long as the jib (15 m): the mast's, the longest left, is about 7 m.
+    expect(drawing.lite.longest).toBeGreaterThan(3);
+    expect(drawing.lite.longest).toBeLessThan(10);
     expect(drawing.full.quality).toBe('full');
     expect(drawing.full.sunShadow).toBe(true);
     expect(drawing.full.standard).toBeGreaterThan(5);
@@ -705,6 +720,18 @@ describe('phone controls', () => {
     });
     const a0 = await read(g, 'handles().crane.angle');
     // Held until the jib has turned (a loaded machine may draw few frames in a fixed half second).
+    // Each of the crane's buttons says under its symbol what it moves (the bar was unexplained once
+    // the card saying how to play had gone), and the seven still fit one row.
+    const bar = await g.page.evaluate(() =>
+      [...document.querySelectorAll<HTMLElement>('.bp-touchbar[aria-label="crane"] button')].map((b) => ({
+        caption: b.querySelector('[data-caption]')?.textContent ?? '',
+        top: b.getBoundingClientRect().top,
+        right: b.getBoundingClientRect().right,
+      })),
+    );
+    expect(bar.map((b) => b.caption)).toEqual(['turn', 'turn', 'hook', 'hook', 'ball', 'ball', 'stop swing']);
+    expect(new Set(bar.map((b) => Math.round(b.top))).size).toBe(1);
+    expect(Math.max(...bar.map((b) => b.right))).toBeLessThanOrEqual(390);
     const slew = (await g.page.getByRole('button', { name: 'slew the jib left', exact: true }).boundingBox())!;
     await touchPath(g.page, [[slew.x + slew.width / 2, slew.y + slew.height / 2]], 100, async () => {
       await g.waitFor(

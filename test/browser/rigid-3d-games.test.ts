@@ -436,18 +436,24 @@ describe('3D rigid-body games in headless Chromium', () => {
     await g.page.keyboard.press('p');
     await g.frames(2);
     expect(await overlay.isVisible()).toBe(false);
-    // The legend: the drag first, the other controls folded (closed) under "more controls".
+    // The legend: the drag first, the other controls folded (closed) under "more: hook, camera, pause".
     const legend = await g.page.evaluate(() => {
       const el = document.querySelector('.bp-legend')!;
       const more = el.querySelector<HTMLDetailsElement>('details[data-hud="more-controls"]');
       return {
         first: el.firstElementChild?.textContent ?? '',
+        shown: [...el.querySelectorAll(':scope > div')].map((d) => d.textContent ?? ''),
         folded: more ? more.querySelectorAll(':scope > div').length : -1,
         open: more?.open ?? null,
         all: el.textContent ?? '',
       };
     });
     expect(legend.first).toContain('Drag a target');
+    // Shown too, in a player's words: turning the crane and steadying the ball (a stranger found every
+    // control but the drag under "more controls").
+    expect(legend.shown.length).toBe(3);
+    expect(legend.shown[1]).toContain('turn the crane');
+    expect(legend.shown[2]).toContain('stop the ball swinging');
     expect(legend.folded).toBeGreaterThanOrEqual(8);
     expect(legend.open).toBe(false);
     for (const key of ['P', 'R', 'Space', 'Right-drag']) expect(legend.all).toContain(key);

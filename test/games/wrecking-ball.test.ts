@@ -3,7 +3,17 @@
  * moves at its rated speeds, and a swing of the ball through a tower that knocks it down and scores.
  */
 
-import { addBody, addDistanceJoint3D, createPhysicsWorld, isSleeping, removeBody, removeJoint3D, slotOf, step } from '@bitphysics/physics';
+import {
+  addBody,
+  addDistanceJoint3D,
+  contactEvents,
+  createPhysicsWorld,
+  isSleeping,
+  removeBody,
+  removeJoint3D,
+  slotOf,
+  step,
+} from '@bitphysics/physics';
 import { describe, expect, it } from 'vitest';
 import { ScoreTally, TALLY_TIME } from '../../games/wrecking-ball/effects';
 import {
@@ -14,6 +24,7 @@ import {
   clearTarget,
   fallenCount,
   HANG,
+  HIT_SPEED,
   HOOK_RANGE,
   pieceOnSwing,
   SLEW_RATE,
@@ -421,5 +432,60 @@ describe('wrecking-ball wind-up', () => {
     expect(h.controls.moves[0]?.run).toBe(true);
     step(world);
     expect(h.controls.released).toBe(1);
+  });
+});
+
+describe('wrecking-ball: a drag-aimed swing', () => {
+  /**
+   * Level `level` (its default seed) settled for 0.5 s, then a swing aimed as a drag aims it (power
+   * `power`, the page's speed 0.45 + 0.7 power of HIT_SPEED) at the piece a third of the way up
+   * structure `index` (pieces grouped by start centre within 2.5 m), from straight where the ball
+   * hangs, turned `turn` rad. Returns the seconds to the ball's first touch of that structure (within
+   * 12 s) and the angle, rad, between the ball's horizontal velocity then and the direction asked.
+   */
+  function dragSwing(level: number, index: number, power: number, turn: number): { toHit: number; off: number } {
+    const world = createPhysicsWorld(wreckingBallWorldOptions());
+    const h = buildWreckingBall(world, { level });
+    for (let k = 0; k < 30; k++) step(world);
+    const groups: (typeof h.pieces)[] = [];
+    for (const p of h.pieces) {
+      const g = groups.find((q) => Math.hypot(q[0]!.x0 - p.x0, q[0]!.z0 - p.z0) < 2.5);
+      if (g) g.push(p);
+      else groups.push([p]);
+    }
+    const g = groups[index % groups.length]!;
+    const piece = [...g].sort((a, b) => a.y0 - b.y0)[Math.floor(g.length / 3)]!;
+    const P = world.components.Position,
+      V = world.components.Velocity;
+    const direction = Math.atan2(P.z[piece.body]! - P.z[h.ball]!, P.x[piece.body]! - P.x[h.ball]!) + turn;
+    aimAt(world, h, piece.body, { direction, speed: HIT_SPEED * (0.45 + 0.7 * power) });
+    for (let t = 0; t < 12; t += world.dt) {
+      step(world);
+      const ev = contactEvents(world).begin;
+      for (let i = 0; i < ev.count; i++) {
+        const other = ev.bodyA[i] === h.ball ? ev.bodyB[i] : ev.bodyB[i] === h.ball ? ev.bodyA[i] : -1;
+        if (!g.some((q) => q.body === other)) continue;
+        const along = Math.atan2(V.z[h.ball]!, V.x[h.ball]!);
+        return { toHit: t + world.dt, off: Math.abs(Math.atan2(Math.sin(along - direction), Math.cos(along - direction))) };
+      }
+    }
+    return { toHit: Number.POSITIVE_INFINITY, off: Math.PI };
+  }
+
+  it('takes the quicker of the directions beside the arrow: light drags at a tower and a turned drag at a wall hit within 4 s, the ball within 30 degrees of the arrow', {
+    timeout: 300_000,
+  }, () => {
+    // Held to the approach direction nearest the arrow (of 24), these took 6.3 s (level 5's tower,
+    // power 0.2), 6.3 s (level 4's) and 7.3 s (level 2's wall, turned 0.6 rad); the direction one step
+    // beside it, 2.5, 2.5 and 2.4 s.
+    for (const [level, index, power, turn] of [
+      [5, 7, 0.2, 0],
+      [4, 6, 0.2, 0],
+      [2, 7, 0.45, 0.6],
+    ] as const) {
+      const swing = dragSwing(level, index, power, turn);
+      expect(swing.toHit, `level ${level}`).toBeLessThan(4);
+      expect(swing.off, `level ${level}`).toBeLessThan((30 * Math.PI) / 180);
+    }
   });
 });
