@@ -1,6 +1,6 @@
 /**
- * Rotating cube: rigid-body rotation in 3D. By default (mode 'room') a 1 m cube falls tumbling into a
- * room and collides with the floor and the walls (a box collider and 3D box contacts): it lands,
+ * Rotating cube: rigid-body rotation in 3D. By default (mode 'room') a 1 m cube falls tipped into a
+ * room, square to the camera (so each roll key rolls it the way its arrow points), and collides with the floor and the walls (a box collider and 3D box contacts): it lands,
  * tumbles, slides and bounces off them. The challenge: rest it on five glowing pads in turn, the last
  * four with a given face on top and reached by a roll (a slide keeps the top face, so the player slides
  * to the side of the pad from which a roll brings that face up), each pad smaller than the one before;
@@ -173,10 +173,33 @@ let latchUntil = -1;
 /** Pads reached and not yet celebrated: the pad's index, the world time, s, and the miss from its centre, m. */
 const padsReached: { pad: number; time: number; miss: number }[] = [];
 
+/** The three.js app once the game has started (null while `startThreeGame` builds the first world). */
+let threeApp: { camera: { matrixWorld: { extractBasis(x: Vector3, y: Vector3, z: Vector3): unknown } } } | null = null;
+/** The mode the camera was last framed for (null before the start): a world of another mode takes that mode's default view. */
+let framedMode: Mode | null = null;
+/**
+ * The camera's heading about the vertical, rad: the angle from +z to the level part of its view from
+ * the target (the default view's before the game has started). The room's cube is dropped at it
+ * (scene.ts `heading`), so its edges run along the screen's left-right and up-down and each roll key
+ * rolls it the way its arrow points.
+ */
+function cameraHeading(): number {
+  let bx: number, bz: number;
+  if (threeApp && framedMode === params.mode) {
+    const x = new Vector3(),
+      y = new Vector3(),
+      z = new Vector3();
+    threeApp.camera.matrixWorld.extractBasis(x, y, z);
+    bx = z.x;
+    bz = z.z;
+  } else [bx, , bz] = viewDirectionOf(params.mode);
+  return Math.hypot(bx, bz) > 1e-6 ? Math.atan2(bx, bz) : 0;
+}
+
 /** A fresh world with the body of the current mode (the shell calls it at start and on R). */
 function createWorld(): PhysicsWorld {
   const world = createPhysicsWorld(rotatingCubeWorldOptions(params.mode));
-  handles = buildRotatingCube(world, { mode: params.mode, spin: params.spin });
+  handles = buildRotatingCube(world, { mode: params.mode, spin: params.spin, heading: cameraHeading() });
   const w = world.components.AngularVelocity,
     e = handles.body;
   omegaScale = ARROW_LENGTH / Math.max(1, Math.hypot(w.x[e]!, w.y[e]!, w.z[e]!));
@@ -263,6 +286,8 @@ const game = await startThreeGame({
   onFrame: () => frame(),
 });
 const { shell, renderer, app } = game;
+threeApp = app;
+framedMode = params.mode;
 clampOrbit();
 
 /**
@@ -813,6 +838,7 @@ function setMode(mode: Mode): void {
   shell.reset();
   const v = viewOf(mode);
   app.frame(v.min, v.max, viewDirectionOf(mode));
+  framedMode = mode;
   clampOrbit();
   if (params.axes) renderer.setDebug(debugOptions());
 }
