@@ -107,15 +107,19 @@ function onGameStep(event: GameStepEvent): void {
  */
 let restarted = false;
 /**
- * Steps of the ready moment after a fall or an exit (1 s at 60 Hz, about the swallow's length): the
- * new ship waits at the start, whatever is pressed, so a press made in the fall's flurry does not fly
- * it straight into a hole. Arrows pressed meanwhile thrust when it ends.
+ * The ready moment after a fall or an exit, ms of the wall clock (about the swallow's length): the new
+ * ship waits at the start, whatever is pressed, so a press made in the fall's flurry does not fly it
+ * straight into a hole. Arrows pressed meanwhile thrust from the first step after it ends. Timed by the
+ * wall clock, not by steps: after a slow frame the pacer runs a burst of steps to catch up, and a
+ * moment of 60 steps could pass in two or three drawn frames.
  */
-const READY_STEPS = 60;
-/** The world's step count at which the ready moment ends (0: none yet). */
-let readyUntil = 0;
+const READY_MS = 1000;
+/** performance.now() at which the ready moment ends, ms (0: none). */
+let readyEndsAt = 0;
 /** Whether the ready moment after a respawn lasts (no thrust yet). */
-const readying = (): boolean => bh.world.steps < readyUntil;
+const readying = (): boolean => readyEndsAt > 0 && performance.now() < readyEndsAt;
+/** A press's step while the ready moment lasts: it counts from the step the moment ends (`endReady`). */
+const READY_PENDING = 2 ** 40;
 const sound = getSound();
 /** The ship's engine: hums while thrusting. */
 const engine = sound.engine('propeller');
@@ -214,7 +218,7 @@ function createWorld(): PhysicsWorld {
   });
   run = levels ? startLevel(bh, continueLevel ?? params.level) : null;
   continueLevel = null;
-  readyUntil = 0;
+  readyEndsAt = 0;
   predictor = createPredictor(bh);
   replay = createBlackHoleReplay(bh, run, onGameStep);
   return bh.world;
@@ -227,7 +231,7 @@ const game = await startPixiGame({
     // A tap's thrust ends TAP_STEPS steps after it began (here, at a step, so it is recorded there).
     if (!replay.player) endTaps();
     // The ready moment after a respawn is over: arrows pressed during it thrust from this step.
-    if (!replay.player && bh.world.steps === readyUntil) applyHeld();
+    if (!replay.player && readyEndsAt > 0 && performance.now() >= readyEndsAt) endReady();
     replay.step();
     if (run && !canThrust(bh, run) && held.length > 0) letGo();
     if (restarted) {
@@ -236,10 +240,10 @@ const game = await startPixiGame({
       if (!replay.player) {
         // Keys and fingers down now were pressed for the ship just lost: they are forgotten (their
         // key-up or lift is ignored, a finger sliding on does not press), so only a press begun after
-        // the respawn thrusts, and none before READY_STEPS have passed.
+        // the respawn thrusts, and none before READY_MS have passed.
         keysDown.clear();
         padPointers.clear();
-        readyUntil = bh.world.steps + READY_STEPS;
+        readyEndsAt = performance.now() + READY_MS;
         letGo();
         applyHeld();
       }
@@ -397,6 +401,18 @@ function endTaps(): void {
   }
 }
 
+/**
+ * Ends the ready moment (at the first step after READY_MS): the presses and taps made during it count
+ * from this step, and the arrows held thrust.
+ */
+function endReady(): void {
+  readyEndsAt = 0;
+  const now = bh.world.steps;
+  for (const at of pressedAt.values()) if (at.step >= READY_PENDING) at.step = now;
+  for (const [dir, end] of tapEnds) if (end >= READY_PENDING) tapEnds.set(dir, now + TAP_STEPS);
+  applyHeld();
+}
+
 function applyHeld(): void {
   const allowed = (!run || canThrust(bh, run)) && !readying();
   const want = allowed ? heldThrust(held) : 'none';
@@ -421,7 +437,7 @@ function advance(): void {
 /** A key or finger presses arrow `dir`: it becomes the latest arrow held. */
 function press(dir: Arrow): void {
   // A tap in the ready moment thrusts its TAP_STEPS from the moment's end.
-  pressedAt.set(dir, { step: Math.max(bh.world.steps, readyUntil), ms: performance.now() });
+  pressedAt.set(dir, { step: readying() ? READY_PENDING : bh.world.steps, ms: performance.now() });
   // Pressed again while a tap of it thrusts on: the tap's hold becomes this press's.
   if (!tapEnds.delete(dir)) holds.set(dir, (holds.get(dir) ?? 0) + 1);
   const i = held.indexOf(dir);
@@ -1552,8 +1568,8 @@ shell.expose({
     flashPeak: death.flashPeak,
     shown: deathText.visible,
   }),
-  /** Steps left of the ready moment after a respawn (no thrust until 0; ./main.ts READY_STEPS). */
-  readyLeft: (): number => Math.max(0, readyUntil - bh.world.steps),
+  /** Wall-clock time left of the ready moment after a respawn, ms (no thrust until 0; ./main.ts READY_MS). */
+  readyLeft: (): number => (readyEndsAt > 0 ? Math.max(0, readyEndsAt - performance.now()) : 0),
   /** Whether the swallow effect (the ship spiralling into a hole) plays, and whether the edge warning shows. */
   swallowing: (): boolean => swallow.active,
   edgeWarning: (): boolean => edgeText.visible,
