@@ -613,20 +613,25 @@ body .bp-touch-hint { font-size: 13px; padding: 6px 10px; bottom: 6px; }
 `;
   document.head.append(style);
 }
-// The kit's touch card (up to four lines over the stage's foot, fading at the first touch) covered
-// the front of the room's floor: in the room it keeps its first two lines (tap, arrows), in a smaller
-// type, and goes at the first press of a button too (a d-pad press is no touch on the stage).
+// The kit's touch card (up to four lines over the stage's foot, fading at the first touch or after
+// 9 s) covered the front of the room's floor. In the room it is swapped for a copy of its first two
+// lines (tap, arrows), in a smaller type, that stays until the player's first touch, on the stage or
+// on a button (a newcomer reading the goal first still finds it there).
 {
-  const card = document.querySelector<HTMLElement>('[data-hud="touch-hint"]');
-  if (card) {
-    if (params.mode === 'room') {
-      [...card.children].slice(2).forEach((line) => {
-        line.remove();
-      });
-      const arrows = card.children[1]?.lastElementChild;
-      if (arrows) arrows.textContent = 'roll the cube';
-    }
-    const hide = (): void => card.classList.add('bp-gone');
+  const kitCard = document.querySelector<HTMLElement>('[data-hud="touch-hint"]');
+  if (kitCard && params.mode === 'room') {
+    const card = kitCard.cloneNode(true) as HTMLElement;
+    kitCard.replaceWith(card);
+    [...card.children].slice(2).forEach((line) => {
+      line.remove();
+    });
+    const arrows = card.children[1]?.lastElementChild;
+    if (arrows) arrows.textContent = 'roll the cube';
+    const hide = (): void => {
+      card.classList.add('bp-gone');
+      window.setTimeout(() => card.remove(), 700);
+    };
+    (app.canvas.parentElement ?? document.body).addEventListener('pointerdown', hide, { capture: true, once: true });
     for (const bar of [dpad.element, extras.element]) bar.addEventListener('pointerdown', hide, { once: true });
   }
 }

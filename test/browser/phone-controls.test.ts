@@ -432,7 +432,7 @@ describe('phone controls', () => {
   it('rotating cube: the arrows make a d-pad; the touch card leaves the floor clear and goes at the first arrow press', async () => {
     const g = await h.openGame('rotating-cube', { ...PHONE, query: { seed: 11 } });
     const box = async (name: string) => (await g.page.getByRole('button', { name, exact: true }).boundingBox())!;
-    // The touch card (read first: it fades by itself 9 s after the page starts): two lines.
+    // The touch card: two lines, there until the player's first touch (not fading after 9 s as the kit's).
     const card = await g.page.evaluate(() => {
       const el = document.querySelector('[data-hud="touch-hint"]')!;
       return { lines: el.children.length, top: el.getBoundingClientRect().top };
