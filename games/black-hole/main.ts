@@ -53,8 +53,10 @@ import {
   createBlackHoleGame,
   createPredictor,
   FIELD,
+  findPadRoute,
   heldThrust,
   MAX_HOLES,
+  type PadRoute,
   type PathEnd,
   PHONE_SIDE_RAMP,
   type Predictor,
@@ -107,15 +109,19 @@ function onGameStep(event: GameStepEvent): void {
  */
 let restarted = false;
 /**
- * Steps of the ready moment after a fall or an exit (1 s at 60 Hz, about the swallow's length): the
- * new ship waits at the start, whatever is pressed, so a press made in the fall's flurry does not fly
- * it straight into a hole. Arrows pressed meanwhile thrust when it ends.
+ * The ready moment after a fall or an exit, ms of the wall clock (about the swallow's length): the new
+ * ship waits at the start, whatever is pressed, so a press made in the fall's flurry does not fly it
+ * straight into a hole. Arrows pressed meanwhile thrust from the first step after it ends. Timed by the
+ * wall clock, not by steps: after a slow frame the pacer runs a burst of steps to catch up, and a
+ * moment of 60 steps could pass in two or three drawn frames.
  */
-const READY_STEPS = 60;
-/** The world's step count at which the ready moment ends (0: none yet). */
-let readyUntil = 0;
+const READY_MS = 1000;
+/** performance.now() at which the ready moment ends, ms (0: none). */
+let readyEndsAt = 0;
 /** Whether the ready moment after a respawn lasts (no thrust yet). */
-const readying = (): boolean => bh.world.steps < readyUntil;
+const readying = (): boolean => readyEndsAt > 0 && performance.now() < readyEndsAt;
+/** A press's step while the ready moment lasts: it counts from the step the moment ends (`endReady`). */
+const READY_PENDING = 2 ** 40;
 const sound = getSound();
 /** The ship's engine: hums while thrusting. */
 const engine = sound.engine('propeller');
@@ -168,6 +174,21 @@ let pathPoints = 0;
 const PAD_SIDE_THRUSTS = ['up-left', 'up-right'] as const;
 /** Points of one of those paths, m (x0, y0, x1, y1, ...). */
 const sidePath = new Float64Array(2 * (PAD_PATH_STEPS + 1));
+/**
+ * Level 1's pad route: on that level the pad's three held paths (↑, ↖, ↗) all end in a hole, so
+ * while the ship waits there it also shows a way through (./rules.ts `findPadRoute`: a tap or hold of
+ * a side or diagonal, then ↑), dotted in the clear path's blue up to the line, with its recipe in
+ * words. Found once per layout (`routeKey`).
+ */
+const ROUTE_STEPS = 600;
+const routePath = new Float64Array(2 * (ROUTE_STEPS + 1));
+let route: PadRoute | null = null;
+/** The layout the route was found for (the game's version and level), '' for none yet. */
+let routeKey = '';
+/** Whether the route was drawn in the last frame. */
+let routeShown = false;
+/** The arrow each first thrust of a route is pressed with. */
+const ROUTE_ARROWS: Readonly<Record<string, string>> = { 'up-left': '↖', 'up-right': '↗', left: '←', right: '→' };
 /** How the path drawn in the last frame ends (./rules.ts `pathEnd`). */
 let pathKind: PathEnd = 'clear';
 /**
@@ -214,7 +235,7 @@ function createWorld(): PhysicsWorld {
   });
   run = levels ? startLevel(bh, continueLevel ?? params.level) : null;
   continueLevel = null;
-  readyUntil = 0;
+  readyEndsAt = 0;
   predictor = createPredictor(bh);
   replay = createBlackHoleReplay(bh, run, onGameStep);
   return bh.world;
@@ -227,7 +248,7 @@ const game = await startPixiGame({
     // A tap's thrust ends TAP_STEPS steps after it began (here, at a step, so it is recorded there).
     if (!replay.player) endTaps();
     // The ready moment after a respawn is over: arrows pressed during it thrust from this step.
-    if (!replay.player && bh.world.steps === readyUntil) applyHeld();
+    if (!replay.player && readyEndsAt > 0 && performance.now() >= readyEndsAt) endReady();
     replay.step();
     if (run && !canThrust(bh, run) && held.length > 0) letGo();
     if (restarted) {
@@ -236,10 +257,10 @@ const game = await startPixiGame({
       if (!replay.player) {
         // Keys and fingers down now were pressed for the ship just lost: they are forgotten (their
         // key-up or lift is ignored, a finger sliding on does not press), so only a press begun after
-        // the respawn thrusts, and none before READY_STEPS have passed.
+        // the respawn thrusts, and none before READY_MS have passed.
         keysDown.clear();
         padPointers.clear();
-        readyUntil = bh.world.steps + READY_STEPS;
+        readyEndsAt = performance.now() + READY_MS;
         letGo();
         applyHeld();
       }
@@ -397,6 +418,18 @@ function endTaps(): void {
   }
 }
 
+/**
+ * Ends the ready moment (at the first step after READY_MS): the presses and taps made during it count
+ * from this step, and the arrows held thrust.
+ */
+function endReady(): void {
+  readyEndsAt = 0;
+  const now = bh.world.steps;
+  for (const at of pressedAt.values()) if (at.step >= READY_PENDING) at.step = now;
+  for (const [dir, end] of tapEnds) if (end >= READY_PENDING) tapEnds.set(dir, now + TAP_STEPS);
+  applyHeld();
+}
+
 function applyHeld(): void {
   const allowed = (!run || canThrust(bh, run)) && !readying();
   const want = allowed ? heldThrust(held) : 'none';
@@ -421,7 +454,7 @@ function advance(): void {
 /** A key or finger presses arrow `dir`: it becomes the latest arrow held. */
 function press(dir: Arrow): void {
   // A tap in the ready moment thrusts its TAP_STEPS from the moment's end.
-  pressedAt.set(dir, { step: Math.max(bh.world.steps, readyUntil), ms: performance.now() });
+  pressedAt.set(dir, { step: readying() ? READY_PENDING : bh.world.steps, ms: performance.now() });
   // Pressed again while a tap of it thrusts on: the tap's hold becomes this press's.
   if (!tapEnds.delete(dir)) holds.set(dir, (holds.get(dir) ?? 0) + 1);
   const i = held.indexOf(dir);
@@ -1192,6 +1225,45 @@ const pathLabel = new Text({
 pathLabel.visible = false;
 app.stage.addChild(pathLabel);
 
+/** The words of level 1's pad route ("a way through: tap ←, then hold ↑"), beside the pad. */
+const routeLabel = new Text({
+  text: '',
+  style: { fill: 0x9fd3ff, fontSize: 14, fontFamily: 'sans-serif', fontWeight: 'bold', stroke: { color: 0x000000, width: 4 } },
+});
+routeLabel.visible = false;
+app.stage.addChild(routeLabel);
+
+/**
+ * On level 1, with the ship waiting on the pad: finds the pad route once per layout and draws it,
+ * blue dots to the line and its recipe in words beside the pad (see ROUTE_STEPS).
+ */
+function drawPadRoute(): void {
+  routeShown = false;
+  if (run?.spec.level !== 1) return;
+  const key = `${bh.version}:${run.spec.level}`;
+  if (key !== routeKey) {
+    routeKey = key;
+    route = findPadRoute(bh, predictor, routePath, ROUTE_STEPS);
+  }
+  if (!route) return;
+  const cam = renderer.camera;
+  for (let i = 2; i < route.points; i += 3)
+    overlay.circle(cam.toScreenX(routePath[2 * i]!), cam.toScreenY(routePath[2 * i + 1]!), 2.2).fill({ color: PATH_CLEAR, alpha: 0.8 });
+  const arrow = ROUTE_ARROWS[route.first] ?? route.first;
+  const text =
+    route.hold <= 9
+      ? `a way through:\ntap ${arrow}, then hold ↑`
+      : `a way through:\nhold ${arrow} ${(route.hold / 60).toFixed(1)} s, then ↑`;
+  if (routeLabel.text !== text) routeLabel.text = text;
+  // Just above the pad, on the side away from the route's first move (it does not cover the route's start).
+  const leftward = route.first.includes('left');
+  const sx = cam.toScreenX(routePath[0]!),
+    sy = cam.toScreenY(routePath[1]!);
+  routeLabel.anchor.set(leftward ? 0 : 1, 1);
+  routeLabel.position.set(leftward ? sx + 24 : sx - 24, sy - 8);
+  routeShown = true;
+}
+
 /**
  * Marks how the path drawn this frame ends (`pathKind`; its last point lx, ly, m), so the end says
  * why it ends: where it falls in, a ring (dark under red, seen over the hole's orange disc) round the
@@ -1400,7 +1472,11 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
       }
       bh.thrust = 'up';
       pathPoints = predictPath(bh, predictor, path, steps);
-    } else pathPoints = predictPath(bh, predictor, path, steps);
+      drawPadRoute();
+    } else {
+      pathPoints = predictPath(bh, predictor, path, steps);
+      routeShown = false;
+    }
     bh.thrust = liveThrust;
     padPath = fromPad;
     // A path that ends on a horizon is drawn red with a ring where it falls in, so the pull of a wall
@@ -1425,8 +1501,10 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
     pathKind = 'clear';
     pathReachesLine = false;
     padPath = false;
+    routeShown = false;
     pathLabel.visible = false;
   }
+  routeLabel.visible = routeShown && !deathText.visible;
   // The ship: a small arrowhead, nose up, 1 m tall, with a flame out of the side opposite the thrust.
   // The ship is drawn at least SHIP_MIN_PX tall (on a phone's narrow field it would be under 20 px).
   const sx = cam.toScreenX(x),
@@ -1543,6 +1621,19 @@ shell.expose({
   /** Why the path drawn in the last frame stops short, by its end ('falls in' or 'lost'), else ''. */
   pathLabel: (): string => (pathLabel.visible ? pathLabel.text : ''),
   /**
+   * Level 1's pad route as drawn in the last frame: the first thrust, how many steps it is held, its
+   * words, and its points (x, y, m); null when none is drawn.
+   */
+  padRoute: () =>
+    routeShown && route
+      ? {
+          first: route.first,
+          hold: route.hold,
+          text: routeLabel.text,
+          points: Array.from({ length: route.points }, (_, i) => [routePath[2 * i]!, routePath[2 * i + 1]!]),
+        }
+      : null,
+  /**
    * The falls' effect: how many have begun, the words of the last one, the strongest red flash
    * drawn for it (0 to 0.45; 0 until a frame drew it), and whether the last frame showed the words.
    */
@@ -1552,8 +1643,8 @@ shell.expose({
     flashPeak: death.flashPeak,
     shown: deathText.visible,
   }),
-  /** Steps left of the ready moment after a respawn (no thrust until 0; ./main.ts READY_STEPS). */
-  readyLeft: (): number => Math.max(0, readyUntil - bh.world.steps),
+  /** Wall-clock time left of the ready moment after a respawn, ms (no thrust until 0; ./main.ts READY_MS). */
+  readyLeft: (): number => (readyEndsAt > 0 ? Math.max(0, readyEndsAt - performance.now()) : 0),
   /** Whether the swallow effect (the ship spiralling into a hole) plays, and whether the edge warning shows. */
   swallowing: (): boolean => swallow.active,
   edgeWarning: (): boolean => edgeText.visible,

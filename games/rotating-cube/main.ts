@@ -1,6 +1,6 @@
 /**
- * Rotating cube: rigid-body rotation in 3D. By default (mode 'room') a 1 m cube falls tumbling into a
- * room and collides with the floor and the walls (a box collider and 3D box contacts): it lands,
+ * Rotating cube: rigid-body rotation in 3D. By default (mode 'room') a 1 m cube falls tipped into a
+ * room, square to the camera (so each roll key rolls it the way its arrow points), and collides with the floor and the walls (a box collider and 3D box contacts): it lands,
  * tumbles, slides and bounces off them. The challenge: rest it on five glowing pads in turn, the last
  * four with a given face on top and reached by a roll (a slide keeps the top face, so the player slides
  * to the side of the pad from which a roll brings that face up), each pad smaller than the one before;
@@ -57,17 +57,16 @@ import {
 import { VectorArrow } from '@bitphysics/render-three';
 import {
   BoxGeometry,
+  CanvasTexture,
   Color,
   DoubleSide,
-  EdgesGeometry,
   Float32BufferAttribute,
-  LineBasicMaterial,
-  LineSegments,
   Mesh,
   MeshBasicMaterial,
   MeshStandardMaterial,
   PlaneGeometry,
   RingGeometry,
+  SRGBColorSpace,
   Vector3,
 } from 'three';
 import {
@@ -173,10 +172,33 @@ let latchUntil = -1;
 /** Pads reached and not yet celebrated: the pad's index, the world time, s, and the miss from its centre, m. */
 const padsReached: { pad: number; time: number; miss: number }[] = [];
 
+/** The three.js app once the game has started (null while `startThreeGame` builds the first world). */
+let threeApp: { camera: { matrixWorld: { extractBasis(x: Vector3, y: Vector3, z: Vector3): unknown } } } | null = null;
+/** The mode the camera was last framed for (null before the start): a world of another mode takes that mode's default view. */
+let framedMode: Mode | null = null;
+/**
+ * The camera's heading about the vertical, rad: the angle from +z to the level part of its view from
+ * the target (the default view's before the game has started). The room's cube is dropped at it
+ * (scene.ts `heading`), so its edges run along the screen's left-right and up-down and each roll key
+ * rolls it the way its arrow points.
+ */
+function cameraHeading(): number {
+  let bx: number, bz: number;
+  if (threeApp && framedMode === params.mode) {
+    const x = new Vector3(),
+      y = new Vector3(),
+      z = new Vector3();
+    threeApp.camera.matrixWorld.extractBasis(x, y, z);
+    bx = z.x;
+    bz = z.z;
+  } else [bx, , bz] = viewDirectionOf(params.mode);
+  return Math.hypot(bx, bz) > 1e-6 ? Math.atan2(bx, bz) : 0;
+}
+
 /** A fresh world with the body of the current mode (the shell calls it at start and on R). */
 function createWorld(): PhysicsWorld {
   const world = createPhysicsWorld(rotatingCubeWorldOptions(params.mode));
-  handles = buildRotatingCube(world, { mode: params.mode, spin: params.spin });
+  handles = buildRotatingCube(world, { mode: params.mode, spin: params.spin, heading: cameraHeading() });
   const w = world.components.AngularVelocity,
     e = handles.body;
   omegaScale = ARROW_LENGTH / Math.max(1, Math.hypot(w.x[e]!, w.y[e]!, w.z[e]!));
@@ -263,6 +285,8 @@ const game = await startThreeGame({
   onFrame: () => frame(),
 });
 const { shell, renderer, app } = game;
+threeApp = app;
+framedMode = params.mode;
 clampOrbit();
 
 /**
@@ -366,17 +390,64 @@ shell.onWorldChange(() => {
 
 // The room's pads (drawn only; the physics knows nothing of them): the lit one a glowing square, the
 // ones to come outlined, the ones reached a dim gold; a ring bursts from a pad when it is reached.
+/**
+ * A pad's picture, white on clear (a material's colour tints it): a rounded square, filled or a frame,
+ * with a soft edge PAD_TEX_MARGIN px wide inside a PAD_TEX px texture. Drawn in a texture (filtered and
+ * mipmapped), its edges stay smooth where a box's or a line's would be drawn in stair steps (a
+ * software renderer draws without antialiasing, at half the pixels).
+ */
+const PAD_TEX = 128,
+  PAD_TEX_MARGIN = 8;
+function padTexture(filled: boolean): CanvasTexture {
+  const c = document.createElement('canvas');
+  c.width = c.height = PAD_TEX;
+  const g = c.getContext('2d')!;
+  const m = PAD_TEX_MARGIN,
+    size = PAD_TEX - 2 * m;
+  g.shadowColor = '#fff';
+  g.shadowBlur = 5;
+  g.fillStyle = g.strokeStyle = '#fff';
+  g.beginPath();
+  g.roundRect(m + (filled ? 0 : 5), m + (filled ? 0 : 5), size - (filled ? 0 : 10), size - (filled ? 0 : 10), 12);
+  if (filled) g.fill();
+  else {
+    g.lineWidth = 9;
+    g.stroke();
+  }
+  const texture = new CanvasTexture(c);
+  texture.colorSpace = SRGBColorSpace;
+  texture.anisotropy = 4;
+  return texture;
+}
+/** A flat square on the floor carrying a pad picture: 2 PAD_HALF across the picture's square, wider by its margin. */
+const padPlane = new PlaneGeometry(
+  (2 * PAD_HALF * PAD_TEX) / (PAD_TEX - 2 * PAD_TEX_MARGIN),
+  (2 * PAD_HALF * PAD_TEX) / (PAD_TEX - 2 * PAD_TEX_MARGIN),
+).rotateX(-Math.PI / 2);
+const padFill = padTexture(true),
+  padFrame = padTexture(false);
 const padMesh = new Mesh(
-  new BoxGeometry(2 * PAD_HALF, 0.02, 2 * PAD_HALF),
-  new MeshStandardMaterial({ color: 0x0c8f52, emissive: 0x12c46e, emissiveIntensity: 0.9, roughness: 0.4 }),
+  padPlane,
+  new MeshStandardMaterial({
+    color: 0x0c8f52,
+    map: padFill,
+    emissive: 0x12c46e,
+    emissiveMap: padFill,
+    emissiveIntensity: 0.9,
+    roughness: 0.4,
+    transparent: true,
+    depthWrite: false,
+  }),
 );
 padMesh.receiveShadow = true;
 app.scene.add(padMesh);
-const padOutline = new EdgesGeometry(new PlaneGeometry(2 * PAD_HALF, 2 * PAD_HALF).rotateX(-Math.PI / 2));
-const padDoneMaterial = new MeshBasicMaterial({ color: 0xc9a43a, transparent: true, opacity: 0.55 });
+const padDoneMaterial = new MeshBasicMaterial({ color: 0xc9a43a, map: padFill, transparent: true, opacity: 0.55, depthWrite: false });
 const padMarks = Array.from({ length: PAD_COUNT }, () => {
-  const outline = new LineSegments(padOutline, new LineBasicMaterial({ color: ANY_COLOR, transparent: true, opacity: 0.8 }));
-  const done = new Mesh(new PlaneGeometry(2 * PAD_HALF, 2 * PAD_HALF).rotateX(-Math.PI / 2), padDoneMaterial);
+  const outline = new Mesh(
+    padPlane,
+    new MeshBasicMaterial({ color: ANY_COLOR, map: padFrame, transparent: true, opacity: 0.9, depthWrite: false }),
+  );
+  const done = new Mesh(padPlane, padDoneMaterial);
   app.scene.add(outline, done);
   return { outline, done };
 });
@@ -386,7 +457,7 @@ function placePadMarks(): void {
     const [x, z] = layout.pads[i]!,
       want = layout.faces[i]!,
       k = layout.halves[i]! / PAD_HALF;
-    (mark.outline.material as LineBasicMaterial).color.setHex(want >= 0 ? faceColors[want]! : ANY_COLOR);
+    (mark.outline.material as MeshBasicMaterial).color.setHex(want >= 0 ? faceColors[want]! : ANY_COLOR);
     mark.outline.position.set(x, 0.015, z);
     mark.outline.scale.set(k, 1, k);
     mark.done.position.set(x, 0.012, z);
@@ -497,21 +568,75 @@ window.addEventListener('keyup', (event) => held.delete(event.key.toLowerCase())
 window.addEventListener('blur', () => held.clear());
 
 // Touch: the turn keys as hold buttons (in the room arrows that roll the cube, on the pivot the
-// torques' names), and stop, jump and mode (the same keys).
-const turnButtons = createButtonBar(
+// torques' names), and stop, jump and mode (the same keys). The four arrows make a d-pad: ▲ over ▼ in
+// the middle, ◀ and ▶ the height of both either side (a thumb finds each by where it is, as the arrow
+// points); the spins, Stop, Jump and Mode in a block of their own at its right.
+const dpad = createButtonBar(
   [
     { label: '▲', name: 'turn forward', key: 'w' },
     { label: '▼', name: 'turn back', key: 's' },
     { label: '◀', name: 'turn left', key: 'a' },
     { label: '▶', name: 'turn right', key: 'd' },
+  ],
+  { label: 'roll arrows' },
+);
+dpad.element.classList.add('rc-dpad');
+const extras = createButtonBar(
+  [
     { label: '⟲', name: 'spin left', key: 'q' },
     { label: '⟳', name: 'spin right', key: 'e' },
-    { label: 'Stop', name: 'stop spinning', key: 'x' },
     { label: 'Jump', name: 'jump (room mode)', key: ' ' },
+    { label: 'Stop', name: 'stop spinning', key: 'x' },
     { label: 'Mode', name: 'mode: room / pivot / flip', key: 'm' },
   ],
-  { label: 'turns and modes' },
+  { label: 'spins and modes' },
 );
+extras.element.classList.add('rc-extras');
+for (const [i, dir] of ['up', 'down', 'left', 'right'].entries()) dpad.buttons[i]!.dataset.dir = dir;
+{
+  const style = document.createElement('style');
+  style.textContent = `
+.bp-touchbar.rc-dpad { flex: 0 0 auto; display: grid; grid-template-columns: 56px 66px 56px; grid-template-rows: 50px 50px;
+  grid-template-areas: 'left up right' 'left down right'; gap: 6px; padding: 2px 0 4px; }
+.bp-touchbar.rc-dpad button, .bp-touchbar.rc-extras button { min-width: 0; min-height: 0; width: 100%; height: 100%; padding: 0; border-radius: 12px; }
+.bp-touchbar.rc-dpad button { font-size: 24px; }
+.bp-touchbar.rc-dpad button[data-dir='up'] { grid-area: up; }
+.bp-touchbar.rc-dpad button[data-dir='down'] { grid-area: down; }
+.bp-touchbar.rc-dpad button[data-dir='left'] { grid-area: left; }
+.bp-touchbar.rc-dpad button[data-dir='right'] { grid-area: right; }
+.bp-touchbar.rc-extras { flex: 0 0 auto; display: grid; grid-template-columns: repeat(3, 48px); grid-template-rows: 50px 50px; gap: 6px;
+  padding: 2px 0 4px 12px; }
+.bp-touchbar.rc-extras button { font-size: 14px; }
+.bp-touchbar.rc-extras button:nth-child(-n + 2) { font-size: 20px; }
+/* The touch card, two lines in a smaller type at the stage's foot: it covered the front of the floor. */
+body .bp-touch-hint { font-size: 13px; padding: 6px 10px; bottom: 6px; }
+`;
+  document.head.append(style);
+}
+// The kit's touch card (up to four lines over the stage's foot, fading at the first touch or after
+// 9 s) covered the front of the room's floor. In the room it is swapped for a copy of its first two
+// lines (tap, arrows), in a smaller type, that stays until the player's first touch, on the stage or
+// on a button (a newcomer reading the goal first still finds it there).
+{
+  const kitCard = document.querySelector<HTMLElement>('[data-hud="touch-hint"]');
+  if (kitCard && params.mode === 'room') {
+    const card = kitCard.cloneNode(true) as HTMLElement;
+    kitCard.replaceWith(card);
+    [...card.children].slice(2).forEach((line) => {
+      line.remove();
+    });
+    const arrows = card.children[1]?.lastElementChild;
+    if (arrows) arrows.textContent = 'roll the cube';
+    const hide = (): void => {
+      card.classList.add('bp-gone');
+      window.setTimeout(() => card.remove(), 700);
+    };
+    (app.canvas.parentElement ?? document.body).addEventListener('pointerdown', hide, { capture: true, once: true });
+    for (const bar of [dpad.element, extras.element]) bar.addEventListener('pointerdown', hide, { once: true });
+  }
+}
+/** The six turn buttons in the order of TURN_LABELS: the d-pad's four arrows and the two spins. */
+const turnButtons = [...dpad.buttons, extras.buttons[0]!, extras.buttons[1]!];
 /** Labels of the six turn buttons in the room and on the pivot. */
 const TURN_LABELS = {
   room: ['▲', '▼', '◀', '▶', '⟲', '⟳'],
@@ -521,7 +646,7 @@ const TURN_LABELS = {
 function labelTurnButtons(): void {
   const labels = params.mode === 'room' ? TURN_LABELS.room : TURN_LABELS.pivot;
   labels.forEach((label, i) => {
-    turnButtons.buttons[i]!.textContent = label;
+    turnButtons[i]!.textContent = label;
   });
 }
 labelTurnButtons();
@@ -813,6 +938,7 @@ function setMode(mode: Mode): void {
   shell.reset();
   const v = viewOf(mode);
   app.frame(v.min, v.max, viewDirectionOf(mode));
+  framedMode = mode;
   clampOrbit();
   if (params.axes) renderer.setDebug(debugOptions());
 }

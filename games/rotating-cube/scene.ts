@@ -92,6 +92,13 @@ export interface RotatingCubeOptions {
   perturbation?: number;
   /** Cube mode: the starting angular velocity, rad/s, world frame. Default (0.35, 0.8, 0.2). */
   tumble?: ArrayLike<number>;
+  /**
+   * Room mode: the heading of the dropped cube about the vertical, rad, finite (default 0: its faces
+   * square to the walls). The cube is dropped tipped and turning about one of its level edges only,
+   * so it lands still at this heading: a game passes the camera's heading, so the roll keys' screen
+   * directions run straight along the cube's edges.
+   */
+  heading?: number;
 }
 
 /** What `buildRotatingCube` returns. */
@@ -120,7 +127,7 @@ export function rotatingCubeWorldOptions(mode: Mode = 'room'): PhysicsWorldOptio
  * body at the origin (inertia from `inertiaOfSolidBox`) and a constraints-stage system that holds its
  * centre of mass at the pivot: a frictionless ball joint at the centre of mass takes the linear part
  * of every force and impulse and leaves the turning (torque about the centre of mass) untouched.
- * @throws RangeError on an unknown mode, a non-finite spin, perturbation or tumble, or a 2D world.
+ * @throws RangeError on an unknown mode, a non-finite spin, perturbation, tumble or heading, or a 2D world.
  */
 export function buildRotatingCube(world: PhysicsWorld, options: RotatingCubeOptions = {}): RotatingCubeHandles {
   const mode = options.mode ?? 'room';
@@ -133,9 +140,11 @@ export function buildRotatingCube(world: PhysicsWorld, options: RotatingCubeOpti
     throw new RangeError(`rotating-cube: tumble must be 3 finite numbers, got ${JSON.stringify(Array.from(tumble))}`);
   if (!Number.isFinite(spin)) throw new RangeError(`rotating-cube: spin must be finite, got ${spin}`);
   if (!Number.isFinite(perturbation)) throw new RangeError(`rotating-cube: perturbation must be finite, got ${perturbation}`);
+  const heading = options.heading ?? 0;
+  if (!Number.isFinite(heading)) throw new RangeError(`rotating-cube: heading must be finite, got ${heading}`);
   const mass = MASS[mode];
   const inertia = inertiaOfSolidBox(mass, EDGES[mode]);
-  if (mode === 'room') return buildRoom(world, tumble);
+  if (mode === 'room') return buildRoom(world, heading);
   const body = addBody(world, {
     position: [0, 0, 0],
     mass,
@@ -147,12 +156,18 @@ export function buildRotatingCube(world: PhysicsWorld, options: RotatingCubeOpti
   return { body, mode, inertia, pivot, walls: [] };
 }
 
+/** Room mode: the dropped cube's tip about its level x edge, rad, and its turning about that edge, rad/s (it lands on the edge and falls back flat). */
+const DROP_TIP = 0.3,
+  DROP_SPIN = 0.8;
+
 /**
  * Room mode: a floor (plane y = 0) and four static box walls around a 2 ROOM_HALF square, and the cube
- * (1 kg, a 1 m box collider of density 1 kg/m^3) dropped tumbling from 1.5 m; friction ROOM_FRICTION and
- * restitution 0.3 everywhere.
+ * (1 kg, a 1 m box collider of density 1 kg/m^3) dropped from 1.5 m at `heading` (rad about the
+ * vertical), tipped DROP_TIP about its level x axis and turning about it at DROP_SPIN: it lands on an
+ * edge and falls back flat with +y up, still at `heading` (a turn about one level axis has no part
+ * about the vertical); friction ROOM_FRICTION and restitution 0.3 everywhere.
  */
-function buildRoom(world: PhysicsWorld, tumble: ArrayLike<number>): RotatingCubeHandles {
+function buildRoom(world: PhysicsWorld, heading: number): RotatingCubeHandles {
   addPlane(world, { normal: [0, 1, 0], point: [0, 0, 0], friction: ROOM_FRICTION, restitution: 0.3 });
   const walls: number[] = [];
   const h = WALL_HEIGHT / 2,
@@ -169,9 +184,14 @@ function buildRoom(world: PhysicsWorld, tumble: ArrayLike<number>): RotatingCube
     addShape3D(world, wall, { type: 'box', halfExtents: [hx, h, hz], friction: ROOM_FRICTION, restitution: 0.3 });
     walls.push(wall);
   }
-  const body = addBody(world, { position: [0, 1.5, 0], orientation: [0.2, 0.1, 0.15, 0.96] });
+  // q = (heading about y) (tip about x): the body's x axis, level, along (cos h, 0, -sin h).
+  const ch = Math.cos(heading / 2),
+    sh = Math.sin(heading / 2),
+    ct = Math.cos(DROP_TIP / 2),
+    st = Math.sin(DROP_TIP / 2);
+  const body = addBody(world, { position: [0, 1.5, 0], orientation: [ch * st, sh * ct, -sh * st, ch * ct] });
   addShape3D(world, body, { type: 'box', halfExtents: [0.5, 0.5, 0.5], density: MASS.room, friction: ROOM_FRICTION, restitution: 0.3 });
-  setAngularVelocity(world, body, tumble);
+  setAngularVelocity(world, body, [DROP_SPIN * Math.cos(heading), 0, -DROP_SPIN * Math.sin(heading)]);
   return { body, mode: 'room', inertia: inertiaOfSolidBox(MASS.room, EDGES.room), pivot: [0, 1.5, 0], walls };
 }
 

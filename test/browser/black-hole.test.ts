@@ -168,6 +168,69 @@ describe('black hole', () => {
   });
 });
 
+describe('black hole, the way through level 1', () => {
+  it('on level 1 the pad shows a way through in blue to the line, and says it in words: the held paths all fall in', async () => {
+    type Route = { first: string; hold: number; text: string; points: number[][] };
+    await g.page.evaluate(() => (window.game as unknown as { reset(): void }).reset());
+    const route = await g.waitFor(() => (window.game as unknown as { padRoute(): Route | null }).padRoute(), null);
+    // A tap (9 steps) of a side arrow, then ↑ held: level 1's fork is passed beside its middle hole
+    // (played in the game by test/games/black-hole-levels.test.ts).
+    expect(route.hold).toBeLessThanOrEqual(9);
+    expect(route.text).toMatch(/^a way through:\ntap [←→↖↗], then hold ↑$/);
+    const lineY = await g.page.evaluate(() => (window.game as unknown as { bh: { lineY: number } }).bh.lineY);
+    expect(route.points.at(-1)![1]).toBeGreaterThanOrEqual(lineY);
+    // The held path straight up falls in (the route is shown because it does).
+    expect(await g.page.evaluate(() => (window.game as unknown as BlackHolePage).pathEnd())).toBe('falls');
+    expect(g.errors).toEqual([]);
+  });
+});
+
+describe('black hole, the ready moment', () => {
+  it('after a fall the new ship waits a second of the wall clock, however many steps a slow frame runs meanwhile; an arrow pressed then thrusts once it ends', async () => {
+    type Bh = BlackHolePage & {
+      paused: boolean;
+      reset(): void;
+      step(): void;
+      readyLeft(): number;
+      bh: { ship: number; holes: number[]; thrust: string; world: { components: Record<string, { x: Float64Array; y: Float64Array }> } };
+      level: { parked: boolean };
+    };
+    // In one task (no wall-clock time to speak of passes): the ship put on level 1's first hole falls
+    // in; then 120 steps (2 s of game time, as a burst of catch-up steps after a slow frame would
+    // run), and ← pressed. The ship still waits (by steps, the moment of 60 steps was over).
+    const early = await g.page.evaluate(() => {
+      const w = window.game as unknown as Bh;
+      w.reset();
+      w.paused = true;
+      const c = w.bh.world.components,
+        s = w.bh.ship % 2 ** 25,
+        hole = w.bh.holes[0]! % 2 ** 25;
+      const falls = w.bh.falls;
+      c.Position!.x[s] = c.PreviousPosition!.x[s] = c.Position!.x[hole]!;
+      c.Position!.y[s] = c.PreviousPosition!.y[s] = c.Position!.y[hole]!;
+      w.level.parked = false;
+      for (let i = 0; i < 600 && w.bh.falls === falls; i++) w.step();
+      const fell = w.bh.falls > falls;
+      for (let i = 0; i < 120; i++) w.step();
+      window.dispatchEvent(new KeyboardEvent('keydown', { key: 'ArrowLeft' }));
+      return { fell, left: w.readyLeft(), thrust: w.bh.thrust };
+    });
+    expect(early.fell).toBe(true);
+    expect(early.left).toBeGreaterThan(0);
+    expect(early.thrust).toBe('none');
+    // Running again, the arrow held thrusts once the moment is over.
+    await g.page.evaluate(() => {
+      (window.game as unknown as Bh).paused = false;
+    });
+    await g.waitFor(() => (window.game as unknown as Bh).bh.thrust === 'left', null);
+    await g.page.evaluate(() => {
+      window.dispatchEvent(new KeyboardEvent('keyup', { key: 'ArrowLeft' }));
+      (window.game as unknown as Bh).reset();
+    });
+    expect(g.errors).toEqual([]);
+  });
+});
+
 describe('black hole, between levels', () => {
   it('a cleared level takes its holes off the field (drawn dimmed) while the ship waits; Enter lays out the next', async () => {
     type Bh = BlackHolePage & {

@@ -482,6 +482,38 @@ describe('phone controls', () => {
     await g.close();
   });
 
+  it('rotating cube: the arrows make a d-pad; the touch card leaves the floor clear and goes at the first arrow press', async () => {
+    const g = await h.openGame('rotating-cube', { ...PHONE, query: { seed: 11 } });
+    const box = async (name: string) => (await g.page.getByRole('button', { name, exact: true }).boundingBox())!;
+    // The touch card: two lines, there until the player's first touch (not fading after 9 s as the kit's).
+    const card = await g.page.evaluate(() => {
+      const el = document.querySelector('[data-hud="touch-hint"]')!;
+      return { lines: el.children.length, top: el.getBoundingClientRect().top };
+    });
+    expect(card.lines).toBe(2);
+    const [up, down, left, right] = [await box('turn forward'), await box('turn back'), await box('turn left'), await box('turn right')];
+    // ▲ above ▼ in one column; ◀ to the left of both and ▶ to the right, each spanning their height.
+    expect(Math.abs(up.x - down.x)).toBeLessThan(1);
+    expect(up.y + up.height).toBeLessThanOrEqual(down.y);
+    expect(left.x + left.width).toBeLessThanOrEqual(up.x);
+    expect(right.x).toBeGreaterThanOrEqual(up.x + up.width);
+    for (const side of [left, right]) {
+      expect(side.y).toBeLessThanOrEqual(up.y + 1);
+      expect(side.y + side.height).toBeGreaterThanOrEqual(down.y + down.height - 1);
+    }
+    // Every button inside the phone's width.
+    const spin = await box('mode: room / pivot / flip');
+    expect(spin.x + spin.width).toBeLessThanOrEqual(390);
+    // The card's top under the near edge of the room's floor (drawn once the camera holds still).
+    const nearEdge = await stillPageOf(g, 0, 0, 3);
+    expect(card.top).toBeGreaterThan(nearEdge.y);
+    // A press of an arrow (no touch on the stage) sends it away.
+    await touchPath(g.page, [[down.x + down.width / 2, down.y + down.height / 2]], 0);
+    await g.waitFor(() => document.querySelector('[data-hud="touch-hint"]')?.classList.contains('bp-gone') ?? true, null);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
   it('rotating cube: a tap on the lit pad slides the cube onto it, which scores with a pop; holding ◀ rolls it to the screen left', async () => {
     // A fixed layout (?seed=11: the first pad at x = 1.5 m, z = 0.2 m), room to roll left: a random one may put the pad by a wall.
     const g = await h.openGame('rotating-cube', { ...PHONE, query: { seed: 11 } });
@@ -526,12 +558,20 @@ describe('phone controls', () => {
       const n = (window.game as unknown as Net).faceNet();
       return n.top !== '' ? n : null;
     }, null);
+    const s2 = await cubeState(g);
+    const p2 = await pageOf(g, s2.x, s2.y, s2.z);
     const up = (await g.page.getByRole('button', { name: 'turn forward', exact: true }).boundingBox())!;
     await touchPath(g.page, [[up.x + up.width / 2, up.y + up.height / 2]], 0);
     await g.waitFor((f) => (window.game as unknown as { challenge(): { face: number } }).challenge().face !== f, face, 60_000);
     await waitCubeAtRest(g);
     expect(await read(g, 'challenge().face')).not.toBe(face);
     expect(await g.waitFor((w) => (window.game as unknown as Net).faceNet().top === w || null, net.w)).toBe(true);
+    // ▲ rolls it the way the arrow points: straight up the screen (the cube was dropped square to the
+    // camera, so one of its edges faces the screen's up), not off to a side by the cube's heading.
+    const s3 = await cubeState(g);
+    const p3 = await pageOf(g, s3.x, s3.y, s3.z);
+    expect(p3.y).toBeLessThan(p2.y - 20);
+    expect(Math.abs(p3.x - p2.x)).toBeLessThan(0.2 * Math.abs(p3.y - p2.y));
     expect(g.errors).toEqual([]);
     await g.close();
   });

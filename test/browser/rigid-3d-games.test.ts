@@ -598,6 +598,35 @@ describe('3D rigid-body games in headless Chromium', () => {
     expect(g.errors).toEqual([]);
     await g.close();
   });
+  it('rotating-cube (room): the lab panel waits in a drawer, so the room takes the width; the pads are drawn as smooth pictures, not lines', async () => {
+    const g = await open('rotating-cube', { seed: 11 });
+    // The panel and the readout are in the side drawer, closed at the start; the settings button opens it.
+    expect(await g.page.locator('.bp-side').isVisible()).toBe(false);
+    // The canvas reaches the window's right edge (a side column would stand between).
+    const canvas = (await g.page.locator('canvas').first().boundingBox())!;
+    const width = await g.page.evaluate(() => window.innerWidth);
+    expect(canvas.x + canvas.width).toBeGreaterThan(width - 2);
+    // The pads' marks are flat meshes carrying a filtered picture (lines would be drawn in stair
+    // steps without antialiasing); nothing drawn as lines lies on the floor.
+    const marks = await g.page.evaluate(() => {
+      type O = { isMesh?: boolean; isLine?: boolean; visible: boolean; position: { y: number }; material: { map: unknown } };
+      const game = window.game as unknown as { app: { scene: { traverse(f: (o: O) => void): void } } };
+      let textured = 0,
+        bare = 0,
+        lines = 0;
+      game.app.scene.traverse((o) => {
+        if (!o.visible || o.position.y < 0.005 || o.position.y > 0.025) return;
+        if (o.isLine) lines++;
+        else if (o.isMesh) o.material.map ? textured++ : bare++;
+      });
+      return { textured, bare, lines };
+    });
+    expect(marks.textured).toBeGreaterThanOrEqual(5);
+    expect(marks.bare).toBe(0);
+    expect(marks.lines).toBe(0);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
   it('rotating-cube (room): a mouse click on the lit pad slides the cube onto it, which scores with a pop; A rolls it to the screen left', async () => {
     const g = await open('rotating-cube', {});
     await waitCubeAtRest(g);
@@ -650,11 +679,18 @@ describe('3D rigid-body games in headless Chromium', () => {
       const n = (window.game as unknown as Net).faceNet();
       return n.top !== '' ? n : null;
     }, null);
+    const s2 = await cubeState(g);
+    const p2 = await pageOf(g, s2.x, s2.y, s2.z);
     await g.press('w');
     await g.waitFor((f) => (window.game as unknown as { challenge(): { face: number } }).challenge().face !== f, face, 60_000);
     await waitCubeAtRest(g);
     expect(await g.page.evaluate(() => (window.game as unknown as { challenge(): { face: number } }).challenge().face)).not.toBe(face);
     expect(await g.waitFor((w) => (window.game as unknown as Net).faceNet().top === w || null, net.w)).toBe(true);
+    // W rolls it straight up the screen: the cube was dropped square to the camera's heading.
+    const s3 = await cubeState(g);
+    const p3 = await pageOf(g, s3.x, s3.y, s3.z);
+    expect(p3.y).toBeLessThan(p2.y - 20);
+    expect(Math.abs(p3.x - p2.x)).toBeLessThan(0.2 * Math.abs(p3.y - p2.y));
     expect(g.errors).toEqual([]);
     await g.close();
   });

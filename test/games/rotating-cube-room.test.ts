@@ -323,6 +323,26 @@ describe('rotating-cube challenges', () => {
     expect(topFace(world, h.body)).toBe(LANDING_FACE);
   });
 
+  it('the dropped cube lands at the heading asked for (square to the camera), not turned by a spin about the vertical', () => {
+    for (const heading of [0, 0.62, -1, 2]) {
+      const world = createPhysicsWorld(rotatingCubeWorldOptions());
+      const h = buildRotatingCube(world, { heading });
+      while (world.time < 3) step(world);
+      expect(topFace(world, h.body)).toBe(LANDING_FACE);
+      // The body's x axis (the first column of its rotation matrix) lies level along (cos h, 0, -sin h).
+      const q = world.components.Orientation,
+        e = h.body;
+      const x = q.x[e]!,
+        y = q.y[e]!,
+        z = q.z[e]!,
+        w = q.w[e]!;
+      const bx = [1 - 2 * (y * y + z * z), 2 * (x * y + w * z), 2 * (x * z - w * y)];
+      expect(Math.abs(bx[1]!)).toBeLessThan(0.01);
+      expect(Math.abs(Math.atan2(-bx[2]!, bx[0]!) - heading)).toBeLessThan(0.01);
+    }
+    expect(() => buildRotatingCube(createPhysicsWorld(rotatingCubeWorldOptions()), { heading: Number.NaN })).toThrow(/heading/);
+  });
+
   it("the pad round's clock starts at the first input, not at the world's start", () => {
     const pads = new PadChallenge(padLayout(3));
     expect(pads.time(5)).toBe(0);
