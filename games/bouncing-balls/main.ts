@@ -243,6 +243,7 @@ function createWorld(): PhysicsWorld {
   };
   const world = createPhysicsWorld(bouncingBallsWorldOptions(options));
   handles = buildBouncingBalls(world, options);
+  settleHeap(world, handles, options);
   crates = [];
   // Each round's warm-up hoop is the layout's first spot; after it the spots come in an order of the
   // round's own (hoopOrder).
@@ -262,6 +263,54 @@ function createWorld(): PhysicsWorld {
   addSystem(world, 'integrate', keepLeavingFree);
   addSystem(world, 'collide', leaveFreely);
   return world;
+}
+
+// ---- The heap starts settled ---------------------------------------------------------------------
+
+/** Most balls whose heap is settled before the world is shown (settleHeap); more start on their grid and fall. */
+const SETTLE_MAX_BALLS = 200;
+/** The longest settle, s of simulated time (settleHeap stops sooner once every ball is slower than SETTLE_SPEED). */
+const SETTLE_SECONDS = 10;
+/** A settling ball whose bottom is this close to the floor, m, is on it (settleHeap stops it turning). */
+const SETTLE_FLOOR_GAP = 0.02;
+/** A settling ball slower than this, m/s, is at rest. */
+const SETTLE_SPEED = 0.1;
+
+/**
+ * Starts the balls of a new `world` (built by buildBouncingBalls with `options`) where they have
+ * fallen to: the scene is built again in a world of its own with no bounce (restitution 0, so the
+ * balls land and stay) and no hoop (on whose rim and backboard balls came to rest), stepped until
+ * every ball is slower than SETTLE_SPEED (at most SETTLE_SECONDS), and each ball of `world` takes its
+ * twin's place and motion (a ball still rolling off a ramp rolls on). The twin's balls on the floor
+ * do not turn (rolling, they crossed the box for seconds). `world` itself takes no step:
+ * its step 0 is the fallen heap, the same for a seed every time (R). A page opened on a grid of balls
+ * hanging in the air for the seconds they took to fall and stop bouncing. Nothing is done past
+ * SETTLE_MAX_BALLS balls (the sandbox's thousands fall as built).
+ */
+function settleHeap(world: PhysicsWorld, h: BouncingBallsHandles, options: Parameters<typeof buildBouncingBalls>[1]): void {
+  if (h.balls.length > SETTLE_MAX_BALLS) return;
+  const calm = { ...options, restitution: 0 };
+  const twin = createPhysicsWorld(bouncingBallsWorldOptions(calm));
+  const twins = buildBouncingBalls(twin, calm);
+  const P = twin.components.Position,
+    V = twin.components.Velocity,
+    W = twin.components.AngularVelocity;
+  const most = Math.round(SETTLE_SECONDS / twin.dt);
+  const floor = layoutOf(TALL).box.min[1],
+    R = twin.components.Ball.radius;
+  for (let n = 1; n <= most; n++) {
+    step(twin);
+    // A ball on the floor stops turning, so it slides to a stop: one rolling there rolled for ever.
+    for (const e of twins.balls) if (P.y[slotOf(e)]! - R[slotOf(e)]! < floor + SETTLE_FLOOR_GAP) W.z[slotOf(e)] = 0;
+    if (n % 10 === 0 && twins.balls.every((e) => V.x[slotOf(e)]! ** 2 + V.y[slotOf(e)]! ** 2 < SETTLE_SPEED ** 2)) break;
+  }
+  for (let i = 0; i < h.balls.length; i++) {
+    const e = h.balls[i]!,
+      s = slotOf(twins.balls[i]!);
+    setPosition(world, e, [P.x[s]!, P.y[s]!]);
+    setVelocity(world, e, [V.x[s]!, V.y[s]!]);
+    setAngularVelocity(world, e, W.z[s]!);
+  }
 }
 
 // ---- A thrown ball leaves the balls it rests on freely ------------------------------------------

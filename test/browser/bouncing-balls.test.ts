@@ -254,6 +254,31 @@ describe('bouncing balls', () => {
     expect(g.errors).toEqual([]);
   });
 
+  it('the heap has fallen at step 0: the page opens (and R resets) on the balls at rest low in the box, not a grid in the air', async () => {
+    const g = await open();
+    await g.press('p');
+    await g.waitFor(() => window.game!.paused, null);
+    await g.press('r');
+    const state = await g.page.evaluate(() => {
+      const game = window.game as unknown as BallsGame;
+      const V = game.world.components.Velocity;
+      return {
+        steps: game.world.steps,
+        heights: game.positions().filter((_, i) => i % 2 === 1),
+        speeds: game.ballIds().map((e) => Math.hypot(V.x[e % 2 ** 25]!, V.y[e % 2 ** 25]!)),
+      };
+    });
+    // Built, the balls hang on a grid from the box's top (up to 1.5 m/s each way); settled, the 8
+    // balls of this page lie on the floor of the 10 m box (radii up to 0.6 m: two layers at most).
+    expect(state.steps).toBe(0);
+    expect(state.heights.length).toBe(COUNT);
+    for (const y of state.heights) expect(y).toBeLessThan(BOX.max[1] / 4);
+    for (const v of state.speeds) expect(v).toBeLessThan(0.5);
+    await g.press('p');
+    await g.waitFor(() => !window.game!.paused, null);
+    expect(g.errors).toEqual([]);
+  });
+
   it('the panel sets gravity, drag and restitution, and rebuilds with a new ball count', async () => {
     const g = await open();
     // The game keeps its panel in the settings drawer (the game arrangement); the toolbar button opens it.
