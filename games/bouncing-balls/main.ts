@@ -133,8 +133,9 @@ const CLICK_SLOP = 6;
 /** The same for a finger, CSS px: a fingertip resting on glass wobbles a few pixels. */
 const TOUCH_SLOP = 12;
 /**
- * A pull shorter than this, CSS px (or than the thrown ball's drawn radius, if that is larger), let
- * go cancels the aim: no throw, no shot, the streak kept. Dragging back onto the ball takes it back.
+ * A pull shorter than this, CSS px (for a finger, or than the thrown ball's drawn radius, if that is
+ * larger: cancelRadius), let go cancels the aim: no throw, no shot, the streak kept. Dragging back
+ * onto the press point takes it back.
  */
 const CANCEL_PULL = 15;
 /**
@@ -1062,8 +1063,13 @@ let fullPullNow = 420;
 let pressClientX = 0,
   pressClientY = 0;
 
-/** The cancel zone's radius round the press, CSS px: CANCEL_PULL, or the thrown ball's drawn radius if larger. */
+/**
+ * The cancel zone's radius round the press, CSS px: CANCEL_PULL for a mouse; for a finger, the thrown
+ * ball's drawn radius if larger (the thumb covers the ball it took back). A mouse's zone as wide as
+ * a big heap ball (33 px on a desktop) showed no arc for pulls of 30 px and less.
+ */
 function cancelRadius(): number {
+  if (!pressFinger) return CANCEL_PULL;
   const c = shell.world.components;
   const r = pressBall !== 0 && handles.balls.includes(pressBall) ? c.Ball.radius[slotOf(pressBall)]! : PLAYER_RADIUS;
   return Math.max(CANCEL_PULL, renderer.camera.toScreenLength(r));
@@ -1623,8 +1629,13 @@ function drawPointer(): void {
       const ty = cam.toScreenY(lift[1]),
         br = cam.toScreenLength(t.radius);
       overlay.circle(bx, by, br + 9).fill({ color: 0x0b0f18, alpha: 0.8 });
-      for (let k = 0; k < 16; k += 2)
-        overlay.arc(bx, by, br, (k * Math.PI) / 8, ((k + 1) * Math.PI) / 8).stroke({ width: 2, color: 0xffffff, alpha: 0.6 });
+      // Each dash from its own start point: pixi's arc joins the path's current point (the canvas's
+      // corner when there is none) to the arc's start with a line.
+      for (let k = 0; k < 16; k += 2) {
+        const a0 = (k * Math.PI) / 8;
+        overlay.moveTo(bx + br * Math.cos(a0), by + br * Math.sin(a0)).arc(bx, by, br, a0, ((k + 1) * Math.PI) / 8);
+      }
+      overlay.stroke({ width: 2, color: 0xffffff, alpha: 0.6 });
       for (let yy = by - br; yy > ty + br; yy -= 10) overlay.moveTo(bx, yy).lineTo(bx, Math.max(ty + br, yy - 5));
       overlay.stroke({ width: 2, color: 0xffffff, alpha: 0.7 });
       liftedShown = pressed;

@@ -1194,6 +1194,98 @@ describe('bouncing balls: cancelling, full-power pulls and the end of a round mi
     await g.close();
   });
 
+  /** The biggest ball of the (settled) heap that no ball touches from above: its id, centre and radius, m. */
+  const biggestFree = (g: GamePage) =>
+    g.page.evaluate(() => {
+      const game = window.game as unknown as AimGame & { world: { components: { Ball: { radius: Float64Array } } } };
+      game.paused = true;
+      const ids = game.ballIds(),
+        p = game.positions(),
+        R = game.world.components.Ball.radius;
+      let best = { id: 0, x: 0, y: 0, r: 0 };
+      ids.forEach((e, i) => {
+        const r = R[e % 2 ** 25]!,
+          x = p[2 * i]!,
+          y = p[2 * i + 1]!;
+        const covered = ids.some(
+          (o, j) => o !== e && p[2 * j + 1]! > y && Math.hypot(p[2 * j]! - x, p[2 * j + 1]! - y) < r + R[o % 2 ** 25]! + 0.05,
+        );
+        if (!covered && r > best.r) best = { id: e, x, y, r };
+      });
+      return best;
+    });
+
+  it('desktop 1280 x 800, mouse: a 29 px pull from a big heap ball shows its arc (the cancel zone is 15 px, not the ball)', async () => {
+    const g = await h.openGame('bouncing-balls', { viewport: { width: 1280, height: 800 }, query: { count: 40 } });
+    const ball = await biggestFree(g);
+    const at = await g.worldToPage(ball.x, ball.y);
+    const edge = await g.worldToPage(ball.x + ball.r, ball.y);
+    // Drawn wider than the pull: the zone was the ball's drawn radius, so this pull showed no arc.
+    expect(edge.x - at.x).toBeGreaterThan(29);
+    const m = g.page.mouse;
+    await m.move(at.x, at.y);
+    await m.down();
+    await m.move(at.x - 14, at.y + 25, { steps: 4 });
+    await g.waitFor(() => (window.game as unknown as AimGame).aimPath().length > 2, null);
+    expect((await aimState(g)).label).toMatch(/^power \d+% · 2 points$/);
+    // Back within 15 px: cancelled.
+    await m.move(at.x - 6, at.y + 8, { steps: 4 });
+    await g.waitFor(() => (window.game as unknown as AimGame).aimLabel() === 'release here to cancel', null);
+    await m.up();
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
+  it('desktop 1280 x 800: aiming a buried ball lifted out draws nothing out to the canvas corner (no stray line)', async () => {
+    const g = await h.openGame('bouncing-balls', { viewport: { width: 1280, height: 800 }, query: { count: 40 } });
+    // The lowest ball with another ball touching it from above: pressed, it is lifted to the top of the heap.
+    const ball = await g.page.evaluate(() => {
+      const game = window.game as unknown as AimGame & { world: { components: { Ball: { radius: Float64Array } } } };
+      game.paused = true;
+      const ids = game.ballIds(),
+        p = game.positions(),
+        R = game.world.components.Ball.radius;
+      let best = { x: 0, y: Infinity };
+      ids.forEach((e, i) => {
+        const x = p[2 * i]!,
+          y = p[2 * i + 1]!;
+        const buried = ids.some(
+          (o, j) =>
+            o !== e && p[2 * j + 1]! > y + 0.2 && Math.hypot(p[2 * j]! - x, p[2 * j + 1]! - y) < R[e % 2 ** 25]! + R[o % 2 ** 25]! + 0.03,
+        );
+        if (buried && x > 4 && x < 12 && y < best.y) best = { x, y };
+      });
+      return best;
+    });
+    const at = await g.worldToPage(ball.x, ball.y);
+    const m = g.page.mouse;
+    await m.move(at.x, at.y);
+    await m.down();
+    await m.move(at.x - 40, at.y + 80, { steps: 6 });
+    await g.waitFor(() => (window.game as unknown as AimGame).aimLabel().startsWith('lifted out'), null);
+    // What the pointer overlay holds: the empty place, the lifted ball, the band, the gauge and the
+    // arc, all near the ball and its arc. Pixi's arc, drawn with no point before it, joined the
+    // canvas's corner (0, 0) to the empty place's dashed outline with a thin white line.
+    const bounds = await g.page.evaluate(() => {
+      const game = window.game as unknown as AimGame & {
+        app: { stage: { children: { label: string; getBounds(): { minX: number; minY: number } }[] } };
+        renderer: { camera: { toScreenX(x: number): number; toScreenY(y: number): number } };
+      };
+      const b = game.app.stage.children.find((c) => c.label === 'pointer')!.getBounds();
+      const cam = game.renderer.camera,
+        arc = game.aimPath();
+      const xs = arc.filter((_, i) => i % 2 === 0).map((x) => cam.toScreenX(x)),
+        ys = arc.filter((_, i) => i % 2 === 1).map((y) => cam.toScreenY(y));
+      return { minX: b.minX, minY: b.minY, arcX: Math.min(...xs), arcY: Math.min(...ys) };
+    });
+    const canvas = (await g.page.locator('canvas').first().boundingBox())!;
+    expect(bounds.minX).toBeGreaterThan(Math.min(bounds.arcX, at.x - 40 - canvas.x) - 60);
+    expect(bounds.minY).toBeGreaterThan(bounds.arcY - 60);
+    await m.up();
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
   it('phone 390 x 844, touch: a pull taken back onto the press point cancels: no throw, no shot', async () => {
     const g = await h.openGame('bouncing-balls', { viewport: { width: 390, height: 844 }, touch: true, query: { count: 8 } });
     const n0 = await clearAround(g, 3, 4);
