@@ -6,7 +6,8 @@
  * each basket, the clock starts with the first basket (a warm-up until then). The heap matters: a
  * pull that starts on one of its balls throws that ball, worth 2 (hoop.ts BALL_POINTS), and one of
  * them is gold (a halo, worth 5; a new one after it scores); a pull from empty space throws a new
- * basketball, worth 1. Baskets in a row multiply (x2, x3, x4: hoop.ts streakMultiplier); a thrown
+ * basketball, worth 1. A swish (touching nothing on its way) adds 1, a trick shot off a wall of the box or
+ * a ramp adds 3 (hoop.ts SHOT_BONUS, markTouches). Baskets in a row multiply (x2, x3, x4: hoop.ts streakMultiplier); a thrown
  * ball that falls below the rim beside the hoop is a miss and ends the streak (falling notes). The
  * aiming arc ends with a red cross at a ball in its way; a heap ball buried under others is lifted to
  * the top of the heap over it first (liftSpot: its arc and its throw start there; with no room there
@@ -101,6 +102,8 @@ import {
   roundMiss,
   roundShot,
   roundTick,
+  SHOT_BONUS,
+  type ShotStyle,
   slingVelocity,
   streakMultiplier,
   throwPath,
@@ -187,10 +190,12 @@ let round: HoopRound = createRound(roundSeconds);
 let hoopIds: number[] = [];
 /**
  * The balls in flight after a throw: whether each may still score (released below the rim, not up
- * through the net), its centre after the last step, m, what it is worth (BALL_POINTS) and the world
- * time it was thrown, s. A ball that has not gone in MISS_SECONDS after its throw is a miss and leaves.
+ * through the net), its centre after the last step, m, what it is worth (BALL_POINTS), the world
+ * time it was thrown, s, and what it has touched since (markTouches): anything (`touched`: no swish)
+ * and a wall of the box or a ramp (`trick`). A ball that has not gone in MISS_SECONDS after its throw
+ * is a miss and leaves.
  */
-let flights = new Map<number, { scores: boolean; x: number; y: number; kind: BallKind; at: number }>();
+let flights = new Map<number, { scores: boolean; x: number; y: number; kind: BallKind; at: number; touched: boolean; trick: boolean }>();
 /** The player's basketballs (made by a throw or a click from empty space): drawn orange with seams. */
 let basketballs = new Set<number>();
 /** The heap's gold ball (0 when the heap is empty): worth BALL_POINTS.gold. */
@@ -218,7 +223,7 @@ let best = readBest();
  * The last basket, for its celebration: where it went in (the rim's centre, m), the world time it was
  * scored (s), the hoop's spot it went through (an index of hoopSpots) and the score it made.
  */
-let lastBasket: { x: number; y: number; time: number; spot: number; score: number; points: number; kind: BallKind } = {
+let lastBasket: { x: number; y: number; time: number; spot: number; score: number; points: number; kind: BallKind; style: ShotStyle } = {
   x: 0,
   y: 0,
   time: -10,
@@ -226,6 +231,7 @@ let lastBasket: { x: number; y: number; time: number; spot: number; score: numbe
   score: 0,
   points: 0,
   kind: 'basketball',
+  style: 'plain',
 };
 /** When a miss last broke a streak (performance.now() ms), for the status row's word. */
 let missAt = -1e9;
@@ -258,7 +264,7 @@ function createWorld(): PhysicsWorld {
   lastCall = { aiming: false, ball: 0 };
   ruleHint = '';
   lastThrown = 0;
-  lastBasket = { x: 0, y: 0, time: -10, spot: 0, score: 0, points: 0, kind: 'basketball' };
+  lastBasket = { x: 0, y: 0, time: -10, spot: 0, score: 0, points: 0, kind: 'basketball', style: 'plain' };
   hoopIds = addHoop(world, hoopSpots(TALL)[round.spot]!, params.restitution, params.friction);
   leaving = new Map();
   addSystem(world, 'integrate', keepLeavingFree);
@@ -629,7 +635,8 @@ function playHoop(world: PhysicsWorld): void {
       if (e === lastThrown) ruleHint = 'below';
     }
     const wasSpot = round.spot;
-    if (b.scores && crossing === -1 && roundBasket(round, spots.length, b.kind, hoopRandom)) {
+    const style: ShotStyle = b.trick ? 'trick' : b.touched ? 'plain' : 'swish';
+    if (b.scores && crossing === -1 && roundBasket(round, spots.length, b.kind, hoopRandom, style)) {
       lastBasket = {
         x: opening.minX + 0.5 * (opening.maxX - opening.minX),
         y: opening.y,
@@ -638,6 +645,7 @@ function playHoop(world: PhysicsWorld): void {
         score: round.score,
         points: round.lastPoints,
         kind: b.kind,
+        style,
       };
       flights.delete(e);
       basketballs.delete(e);
@@ -827,12 +835,35 @@ function applyNet(world: PhysicsWorld): void {
 /** Half the hoop's width with its net, m (for applyNet's quick test). */
 const HOOP_HALF_SPAN = 1.5;
 
+/**
+ * Marks what each ball in flight touched in the last step (from the step's contact begin events), for
+ * its basket's style (hoop.ts ShotStyle): a wall of the box (a boundary face) or a ramp makes it a
+ * trick shot; anything else but the balls round it as it leaves the heap (its first
+ * LEAVE_MAX_SECONDS) ends its swish.
+ */
+function markTouches(world: PhysicsWorld): void {
+  if (flights.size === 0) return;
+  const touch = (e: number, other: number): void => {
+    const f = flights.get(e);
+    if (!f) return;
+    const wall = other <= 0 || handles.segments.includes(other);
+    if (wall) f.trick = true;
+    else if (!hoopIds.includes(other) && !crates.includes(other) && world.time - f.at < LEAVE_MAX_SECONDS) return;
+    f.touched = true;
+  };
+  forEachImpact(world, (a, b) => {
+    touch(a, b);
+    touch(b, a);
+  });
+}
+
 /** Which impacts are heard (knocks.ts): the loudest few a step, a cooldown per body, a budget a second. */
 const knocks = createKnockLimiter(KNOCK_LIMITS);
 
 /** One step, then a knock for each impact the limiter keeps: loudness from its impulse, the harder of the two materials. */
 function stepWorld(world: PhysicsWorld): void {
   step(world);
+  markTouches(world);
   applyNet(world);
   playHoop(world);
   clearLoose(world);
@@ -1369,7 +1400,7 @@ function launch(e: number, thrown: boolean): void {
   const scores = mayScore(hoopSpots(TALL)[round.spot]!, by);
   if (basketballs.has(e)) renderer.setColor(e, scores ? PLAYER_COLOR : HIGH_COLOR);
   // A drop falls: it cannot go down through the hoop from below the rim, nor be a miss.
-  if (thrown) flights.set(e, { scores, x: bx, y: by, kind: kindOf(e), at: shell.world.time });
+  if (thrown) flights.set(e, { scores, x: bx, y: by, kind: kindOf(e), at: shell.world.time, touched: false, trick: false });
   else flights.delete(e);
   if (round.phase !== 'over' && thrown) {
     roundShot(round);
@@ -1733,9 +1764,15 @@ const CELEBRATE_SECONDS = 1.6;
 /** What the praise line says for the n-th basket of a round (1-based): the first few differ. */
 const PRAISE = ['Basket!', 'Again!', 'Hat trick!', 'On fire!'];
 
-/** The word over a basket: the gold ball's, a streak's multiplier, or PRAISE for the n-th basket. */
-function praiseFor(b: { score: number; points: number; kind: BallKind }): string {
-  const mult = Math.round(b.points / BALL_POINTS[b.kind]);
+/**
+ * The word over a basket: a trick shot's or a swish's, else the gold ball's, else a streak's
+ * multiplier, else PRAISE for the n-th basket; with the multiplier when above 1.
+ */
+function praiseFor(b: { score: number; points: number; kind: BallKind; style: ShotStyle }): string {
+  const mult = Math.round(b.points / (BALL_POINTS[b.kind] + SHOT_BONUS[b.style]));
+  const times = mult > 1 ? ` ×${mult}` : '';
+  if (b.style === 'trick') return `Trick shot!${times}`;
+  if (b.style === 'swish') return `Swish!${times}`;
   if (b.kind === 'gold') return mult > 1 ? `Gold ×${mult}!` : 'Gold ball!';
   if (mult > 1) return `Streak ×${mult}!`;
   return PRAISE[Math.min(PRAISE.length, b.score) - 1]!;
@@ -2183,13 +2220,18 @@ function updateStatus(): void {
               : 'Throw balls through the hoop!';
   const numbers = `Points ${round.points} · ×${streakMultiplier(round.streak)} · Time ${secs} s · Best ${best}`;
   // The last throw's rule break (ruleHint) stays until the next throw; otherwise, while playing, the
-  // hint takes turns (5 s each) between the heap's balls and the streak.
+  // hint takes turns (5 s each) between the heap's balls, the streak and the bonus shots.
+  const turn = Math.floor(shell.world.time / 5) % 3;
   const teach =
-    Math.floor(shell.world.time / 5) % 2 === 0
+    turn === 0
       ? touch
         ? `Pull a heap ball back to throw it: ${BALL_POINTS.heap} points, gold ${BALL_POINTS.gold}`
         : `Press on a heap ball and pull back to throw it: ${BALL_POINTS.heap} points, the gold one ${BALL_POINTS.gold}`
-      : 'Baskets in a row multiply, up to ×4; a miss ends it';
+      : turn === 1
+        ? 'Baskets in a row multiply, up to ×4; a miss ends it'
+        : touch
+          ? `Swish +${SHOT_BONUS.swish} · off a wall or ramp +${SHOT_BONUS.trick}`
+          : `Bonus: a swish (touching nothing) +${SHOT_BONUS.swish}, a trick shot off a wall or ramp +${SHOT_BONUS.trick}`;
   const hint = over
     ? `${touch ? 'Tap' : 'R or'} Play again for a new round`
     : performance.now() - missAt < 2500
@@ -2291,9 +2333,15 @@ function drawEndCard(over: boolean): void {
   const tip =
     round.bestStreak < 3
       ? 'Tip: baskets in a row multiply points'
-      : round.score < 6
-        ? `Tip: the gold ball is worth ${BALL_POINTS.gold}`
-        : 'Can you beat it?';
+      : round.tricks === 0
+        ? `Tip: a trick shot off a wall or a ramp scores +${SHOT_BONUS.trick}`
+        : round.score < 6
+          ? `Tip: the gold ball is worth ${BALL_POINTS.gold}`
+          : 'Can you beat it?';
+  const bonus =
+    round.swishes + round.tricks > 0
+      ? [`${plural(round.swishes, 'swish', 'swishes')} · ${plural(round.tricks, 'trick shot', 'trick shots')}`]
+      : [];
   const room = cam.toScreenX(box.max[0]) - cam.toScreenX(box.min[0]) - 24;
   // Under the Play-again button at the box's top: the middle of the box's upper half.
   endCard.show(
@@ -2303,6 +2351,7 @@ function drawEndCard(over: boolean): void {
       lines: [
         `${plural(round.score, 'basket', 'baskets')} from ${plural(round.shots, 'throw', 'throws')}`,
         `Longest streak ${round.bestStreak} · ${newBest ? 'your best round yet!' : `best ${best}`}`,
+        ...bonus,
         tip,
       ],
     },

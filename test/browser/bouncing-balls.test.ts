@@ -146,6 +146,11 @@ describe('bouncing balls', () => {
     const g = await open();
     type Sounding = { sound: { running: boolean; played: number } };
     await g.clickCanvas(0.5, 0.2);
+    // The heap starts at rest (and the click's ball fades out at once): three sandbox balls thrown
+    // down from the top land on it.
+    await g.page.evaluate(() => {
+      for (const x of [4, 8, 12]) (window.game as unknown as BallsGame).spawn(x, 8, 0, -5);
+    });
     const before = await g.page.evaluate(() => (window.game as unknown as Sounding).sound.played);
     // The bouncing balls hit each other and the walls: begin events of ball contacts (contactEvents),
     // each a knock unless quieter than the threshold. Balls alone gave no events and no sound.
@@ -208,6 +213,9 @@ describe('bouncing balls', () => {
 
   it('N advances exactly one step (and pauses)', async () => {
     const g = await open();
+    // The heap starts at rest: a ball dropped from the top falls, and a step moves it.
+    await g.clickCanvas(0.5, 0.2);
+    await g.waitFor((n) => window.game!.stats().entities === n + 1, COUNT + SEGMENTS);
     await g.press('p');
     await g.waitFor(() => window.game!.paused, null);
     const a = await balls(g);
@@ -555,17 +563,18 @@ describe('bouncing balls: the hoop game', () => {
     }
     expect(score).toBe(1);
     // The basket is celebrated: the status row says so and its score line bumps; over the old
-    // hoop, "+1" and a word of praise (before, a small +1 and a ring for 0.8 s were all).
+    // hoop, "+2" and a word of praise (before, a small +1 and a ring for 0.8 s were all). The throw
+    // touched nothing on its way: a swish, its basketball's 1 point and 1 more (hoop.ts SHOT_BONUS).
     const cheer = await g.waitFor(() => {
       const game = window.game as unknown as HoopGame & {
         app: { stage: { children: { label: string; visible: boolean; text?: string }[] } };
       };
       const texts = game.app.stage.children.filter((c) => c.visible && typeof c.text === 'string').map((c) => c.text);
       const numbers = document.querySelector('[data-hud="hoop"] [data-hud="numbers"]')!;
-      return /Basket! \+1 · the hoop moved/.test(game.statusText()) ? { texts, bump: numbers.classList.contains('bb-bump') } : null;
+      return /Swish! \+2 · the hoop moved/.test(game.statusText()) ? { texts, bump: numbers.classList.contains('bb-bump') } : null;
     }, null);
     expect(cheer.bump).toBe(true);
-    expect(cheer.texts).toEqual(expect.arrayContaining(['+1', 'Basket!']));
+    expect(cheer.texts).toEqual(expect.arrayContaining(['+2', 'Swish!']));
     await g.page.evaluate(() => {
       (window.game as unknown as { paused: boolean }).paused = false;
     });
@@ -576,10 +585,10 @@ describe('bouncing balls: the hoop game', () => {
       text: (window.game as unknown as HoopGame).statusText(),
     }));
     expect(after.hoop).not.toEqual(before);
-    expect(after.best).toBe(1);
-    expect(after.stored).toBe('1');
-    // A basketball's basket is 1 point (x1, the streak's first); the next one would score x2.
-    expect(after.text).toMatch(/Points 1 · ×2 .*Best 1/);
+    expect(after.best).toBe(2);
+    expect(after.stored).toBe('2');
+    // A basketball's swish is 2 points (x1, the streak's first); the next basket would score x2.
+    expect(after.text).toMatch(/Points 2 · ×2 .*Best 2/);
     // Thrown straight up from under the hoop: the net stops it (its top at the net's bottom, 1.1 m under
     // the rim) and it falls back; before, it flew up through the drawn net and the rim's opening.
     const under = await g.page.evaluate(() => {
@@ -657,7 +666,7 @@ describe('bouncing balls: the hoop game', () => {
       return { visible: c?.visible, texts: (c?.children ?? []).map((k) => k.text).filter(Boolean) };
     });
     expect(card.visible).toBe(true);
-    expect(card.texts).toEqual(expect.arrayContaining(['1 point']));
+    expect(card.texts).toEqual(expect.arrayContaining(['2 points']));
     expect(card.texts.join(' ')).toMatch(/1 basket from \d+ throws/);
     const again = g.page.getByRole('button', { name: 'Play again ▶' });
     // Over the top of the box (above 8 m of its 10), clear of the balls piled at its bottom.
@@ -665,7 +674,7 @@ describe('bouncing balls: the hoop game', () => {
     expect(button.y + button.height).toBeLessThan((await g.worldToPage(0, 8)).y);
     await again.click();
     await g.waitFor(() => (window.game as unknown as HoopGame).round().phase === 'ready', null);
-    expect(await g.page.evaluate(() => (window.game as unknown as HoopGame).best())).toBe(1);
+    expect(await g.page.evaluate(() => (window.game as unknown as HoopGame).best())).toBe(2);
     expect(await again.count()).toBe(0);
     // Heap throws fly their shown arc: the default heap of 40 balls settled 10 s (paused, stepped),
     // then the first two heap balls (in a fixed order) with an arc clean for 0.5 s (no red cross, no
@@ -788,6 +797,46 @@ describe('bouncing balls: the hoop game', () => {
     await g.close();
   });
 
+  it("desktop 1280 x 800: a throw off the box's top into the hoop is a trick shot, worth 3 more", async () => {
+    const g = await h.openGame('bouncing-balls', { viewport: { width: 1280, height: 800 }, query: { count: 8 } });
+    await g.page.evaluate(() => {
+      const game = window.game as unknown as HoopGame & { remove(id: number): void };
+      for (const id of game.ballIds()) game.remove(id);
+    });
+    // From (8, 4) m at (5.5, 12.5) m/s: its top meets the ceiling at about x 11 m and it comes down
+    // through the first hoop's opening (hoop.ts throwPath with one ceiling bounce scores for vy 11.8
+    // to 13.3 m/s at this vx). Up to three throws, each given 2.5 s of world time.
+    let score = 0;
+    for (let attempt = 0; attempt < 3 && score === 0; attempt++) {
+      const t0 = await g.page.evaluate(() => {
+        const game = window.game as unknown as HoopGame & { world: { time: number } };
+        game.shoot(8, 4, 5.5, 12.5);
+        return game.world.time;
+      });
+      score = await g.waitFor(
+        (start) => {
+          const game = window.game as unknown as HoopGame & { world: { time: number }; paused: boolean };
+          const n = game.round().score;
+          if (n > 0) game.paused = true;
+          return n > 0 ? n : game.world.time > start + 2.5 ? -1 : 0;
+        },
+        t0,
+        30_000,
+      );
+      if (score < 0) score = 0;
+    }
+    expect(score).toBe(1);
+    const r = await g.page.evaluate(() => {
+      const game = window.game as unknown as HoopGame & { round(): { lastStyle: string; lastPoints: number; tricks: number } };
+      return { ...game.round(), text: game.statusText() };
+    });
+    // A basketball's 1 point and the trick shot's 3, x1 (the streak's first basket).
+    expect(r).toMatchObject({ lastStyle: 'trick', lastPoints: 4, tricks: 1 });
+    expect(r.text).toMatch(/Trick shot! \+4/);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
   it('desktop: a ball buried in the heap is lifted to the top of the heap over it; its arc starts there and it flies it, or the arc ends on the ball in its way', async () => {
     const g = await h.openGame('bouncing-balls', { viewport: { width: 1280, height: 800 }, query: { count: 40 } });
     // The walls a throw may bounce off (the box's ramps and the first hoop), [ax, ay, bx, by, radius], m:
@@ -839,7 +888,8 @@ describe('bouncing balls: the hoop game', () => {
           const at = (t: number): [number, number] => [x + vx * t, y + vy * t - 0.5 * g * t * t];
           let clear = true,
             free = true;
-          for (let k = 1; k <= 30 && clear; k++) {
+          // To 32 steps: the arc's first point at or past 0.5 s (its points are 4 steps apart).
+          for (let k = 1; k <= 32 && clear; k++) {
             const [px, py] = at(k / 60);
             if (px - r < box.min[0] || px + r > box.max[0] || py - r < box.min[1] || py + r > box.max[1]) clear = false;
             for (const [ax, ay, bx, by, wr] of walls) {
