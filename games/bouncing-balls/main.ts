@@ -21,7 +21,7 @@
  * the pull, faster the longer it is, hoop.ts slingVelocity: the height it reaches grows evenly over
  * the second half of the pull), with a power gauge round the ball and a dotted arc of the start of its
  * flight while pulling (hoop.ts throwPath: AIM_SECONDS of it, twice that in the warm-up before the
- * first basket, or to just past its apex if later, fading out, up to a ball in its way or through
+ * first basket, 1.5 times as long on a phone held upright (TALL_AIM_SCALE), or to just past its apex if later, fading out, up to a ball in its way or through
  * a first bounce off a wall, a ramp or the hoop and AFTER_BOUNCE on; the player judges the rest). Each basketball thrown or dropped fades out once it has come to rest (MAX_LOOSE). A pull taken back
  * to within CANCEL_PULL of its press point ("release here to cancel") and let go throws nothing; the
  * full-speed pull is shortened for a pull with little room to the window's edge (pullFullPull). A pull
@@ -1461,11 +1461,18 @@ function aimFlight(): number[] {
 
 /**
  * How much of a throw's flight its aiming arc shows, s: AIM_SECONDS, or AIM_SECONDS_WARMUP in the
- * warm-up (before the round's first basket), where a first-timer learns how the pull throws.
+ * warm-up (before the round's first basket), where a first-timer learns how the pull throws; both
+ * TALL_AIM_SCALE times longer in the tall box (a phone held upright).
  */
 function aimSeconds(): number {
-  return round.phase === 'ready' ? AIM_SECONDS_WARMUP : AIM_SECONDS;
+  return (round.phase === 'ready' ? AIM_SECONDS_WARMUP : AIM_SECONDS) * (TALL ? TALL_AIM_SCALE : 1);
 }
+/**
+ * How much longer the aiming arc is in the tall box: a phone draws the court at some 36 px a metre
+ * (a desktop 56), so the same 0.6 s of flight was a third shorter on its screen, most of it under the
+ * thumb's side of the ball, and the strangers found the phone the hardest to aim (2 of 5 for fun).
+ */
+const TALL_AIM_SCALE = 1.5;
 /**
  * The aiming arc's length once the clock runs, s of flight: about the first third of a basket's
  * flight (a basket from the natural starts of reach.ts reaches the rim 0.8 to 2 s after its throw,
@@ -2421,7 +2428,7 @@ shell.expose({
   aimPath: (): number[] => aimPath(),
   /** The whole predicted flight of the throw being pulled (2.5 s, two bounces; the arc shows its start): points, m, or [] as aimPath. */
   aimFlight: (): number[] => aimFlight(),
-  /** How much of a throw's flight the aiming arc shows now, s (1.2 in the warm-up before the first basket, then 0.6). */
+  /** How much of a throw's flight the aiming arc shows now, s (1.2 in the warm-up before the first basket, then 0.6; 1.5 times that in the tall box). */
   aimSeconds: (): number => aimSeconds(),
   /** The round's last throw (the clock ran out during its pull): whether its pull is under way, and its ball (0 when none). */
   lastThrow: () => ({ ...lastCall }),

@@ -1134,13 +1134,18 @@ describe('bouncing balls: the hoop game', () => {
       return game.ballIds().length;
     });
     let arc: number[] = [];
+    let seconds = 0;
     await swipe(
       g.page,
       [0, 0.25, 0.5, 0.75, 1].map((f) => [from.x + f * (to.x - from.x), from.y + f * (to.y - from.y)] as [number, number]),
       async () => {
         arc = await g.page.evaluate(() => (window.game as unknown as HoopGame).aimPath());
+        seconds = await g.page.evaluate(() => (window.game as unknown as HoopGame).aimSeconds());
       },
     );
+    // The phone's arc shows 1.5 times the desktop's flight (main.ts TALL_AIM_SCALE): 1.8 s in the
+    // warm-up (1.2 s on a desktop), as the phone draws each metre a third shorter.
+    expect(seconds).toBeCloseTo(1.8, 9);
     expect(arc.length).toBeGreaterThan(6);
     expect(arc[0]).toBeCloseTo(3, 1);
     expect(arc[1]).toBeCloseTo(4, 1);
