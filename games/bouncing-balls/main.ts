@@ -1561,6 +1561,9 @@ function arcStops(t: { x: number; y: number; vx: number; vy: number; radius: num
 /** Bounces the whole predicted flight (aimFlight, aimFrom) follows (off the walls, the hoop and its net) before it ends; the shown arc follows none. */
 const AIM_BOUNCES = 2;
 
+/** An aiming arc that ends on a ball less than this far from the throw's start, m, is labelled blocked. */
+const BLOCKED_SOON_M = 1.5;
+
 /** The band's colour for a pull of `power` (speed / MAX_THROW_SPEED, [0, 1]): white, to gold at half, to red at full. */
 function powerColor(power: number): number {
   return power < 0.5 ? mixColor(0xffffff, 0xffd166, power / 0.5) : mixColor(0xffd166, 0xff4d4d, (power - 0.5) / 0.5);
@@ -1719,29 +1722,32 @@ function drawPointer(): void {
     overlay.lineTo(ox + gr * Math.cos(a), oy + gr * Math.sin(a));
   }
   overlay.stroke({ width: 4, color: powerColor(power), alpha: 0.95 });
-  let label = `power ${Math.round(100 * power)}%`;
+  // The arc ends on another ball: a red cross there (that ball is in the way), over the thrown
+  // ball's disc (a throw blocked at once ends its arc inside that disc).
+  const ex = path[2 * n - 2] ?? t.x,
+    ey = path[2 * n - 1] ?? t.y;
+  const blocked = n > 1 && nearBalls(t.x, t.y, pressBall).some(([bx, by, br]) => Math.hypot(ex - bx, ey - by) < t.radius + br + 0.02);
+  // Blocked within the ball's first BLOCKED_SOON_M of flight: the label says so, as the cross is small
+  // and under the gauge (a heap ball thrown into its neighbour rolled off along the heap, a throw
+  // "that moved and fell back").
+  const soon = blocked && Math.hypot(ex - t.x, ey - t.y) < BLOCKED_SOON_M;
+  let label = `${soon ? 'blocked by a ball · ' : ''}power ${Math.round(100 * power)}%`;
   if (pressed !== 0) {
     const points = BALL_POINTS[kindOf(pressed)];
     const lifted = lift !== null && (lift[0] !== P.x[slotOf(pressed)] || lift[1] !== P.y[slotOf(pressed)]);
     label = `${lifted ? 'lifted out · ' : ''}${label} · ${points} ${points === 1 ? 'point' : 'points'}`;
   }
   showHoldLabel(label, ox, oy - gr - 6);
-  // The arc ends on another ball: a red cross there (that ball is in the way), over the thrown
-  // ball's disc (a throw blocked at once ends its arc inside that disc).
-  if (n > 1) {
-    const ex = path[2 * n - 2]!,
-      ey = path[2 * n - 1]!;
-    if (nearBalls(t.x, t.y, pressBall).some(([bx, by, br]) => Math.hypot(ex - bx, ey - by) < t.radius + br + 0.02)) {
-      const sx = cam.toScreenX(ex),
-        sy = cam.toScreenY(ey),
-        k = 7;
-      overlay
-        .moveTo(sx - k, sy - k)
-        .lineTo(sx + k, sy + k)
-        .moveTo(sx + k, sy - k)
-        .lineTo(sx - k, sy + k)
-        .stroke({ width: 4, color: 0xff4d4d, alpha: 0.95 });
-    }
+  if (blocked) {
+    const sx = cam.toScreenX(ex),
+      sy = cam.toScreenY(ey),
+      k = 7;
+    overlay
+      .moveTo(sx - k, sy - k)
+      .lineTo(sx + k, sy + k)
+      .moveTo(sx + k, sy - k)
+      .lineTo(sx - k, sy + k)
+      .stroke({ width: 4, color: 0xff4d4d, alpha: 0.95 });
   }
 }
 

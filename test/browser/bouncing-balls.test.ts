@@ -1282,10 +1282,38 @@ describe('bouncing balls: cancelling, full-power pulls and the end of a round mi
     await m.down();
     await m.move(at.x - 14, at.y + 25, { steps: 4 });
     await g.waitFor(() => (window.game as unknown as AimGame).aimPath().length > 2, null);
-    expect((await aimState(g)).label).toMatch(/^power \d+% · 2 points$/);
+    expect((await aimState(g)).label).toMatch(/power \d+% · 2 points$/);
     // Back within 15 px: cancelled.
     await m.move(at.x - 6, at.y + 8, { steps: 4 });
     await g.waitFor(() => (window.game as unknown as AimGame).aimLabel() === 'release here to cancel', null);
+    await m.up();
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
+  it('desktop 1280 x 800, mouse: a throw straight into the ball beside it says "blocked by a ball" over the gauge', async () => {
+    const g = await h.openGame('bouncing-balls', { viewport: { width: 1280, height: 800 }, query: { count: 8 } });
+    // Two balls 1.2 m apart in the air, alone in the box, the world paused (they stay there).
+    const at = await g.page.evaluate(() => {
+      const game = window.game as unknown as AimGame & { spawn(x: number, y: number): number };
+      game.paused = true;
+      for (const id of game.ballIds()) game.remove(id);
+      game.spawn(6, 4);
+      game.spawn(7.2, 4);
+      const p = game.positions();
+      return { x: p[0]!, y: p[1]! };
+    });
+    const from = await g.worldToPage(at.x, at.y);
+    const m = g.page.mouse;
+    await m.move(from.x, from.y);
+    await m.down();
+    // Pulled straight left: thrown straight right, into the other ball a metre on.
+    await m.move(from.x - 80, from.y, { steps: 6 });
+    await g.waitFor(() => (window.game as unknown as AimGame).aimPath().length > 2, null);
+    expect((await aimState(g)).label).toMatch(/^blocked by a ball · power \d+% · 2 points$/);
+    // Pulled down instead: thrown up, clear of it.
+    await m.move(from.x, from.y + 80, { steps: 6 });
+    await g.waitFor(() => /^power \d+% · 2 points$/.test((window.game as unknown as AimGame).aimLabel()), null);
     await m.up();
     expect(g.errors).toEqual([]);
     await g.close();
