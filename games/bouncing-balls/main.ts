@@ -292,10 +292,34 @@ const SETTLE_SPEED = 0.1;
  * do not turn (rolling, they crossed the box for seconds). `world` itself takes no step:
  * its step 0 is the fallen heap, the same for a seed every time (R). A page opened on a grid of balls
  * hanging in the air for the seconds they took to fall and stop bouncing. Nothing is done past
- * SETTLE_MAX_BALLS balls (the sandbox's thousands fall as built).
+ * SETTLE_MAX_BALLS balls (the sandbox's thousands fall as built). Each heap is settled once a page
+ * (settled).
  */
 function settleHeap(world: PhysicsWorld, h: BouncingBallsHandles, options: Parameters<typeof buildBouncingBalls>[1]): void {
   if (h.balls.length > SETTLE_MAX_BALLS) return;
+  const key = JSON.stringify(options);
+  let fallen = settled.get(key);
+  if (!fallen) {
+    fallen = fallenHeap(options);
+    settled.set(key, fallen);
+  }
+  for (let i = 0; i < h.balls.length; i++) {
+    const e = h.balls[i]!;
+    setPosition(world, e, [fallen[5 * i]!, fallen[5 * i + 1]!]);
+    setVelocity(world, e, [fallen[5 * i + 2]!, fallen[5 * i + 3]!]);
+    setAngularVelocity(world, e, fallen[5 * i + 4]!);
+  }
+}
+
+/**
+ * The fallen heaps made so far, by their scene's options (JSON): each ball's x, y (m), vx, vy (m/s)
+ * and spin (rad/s), five numbers a ball in build order. A heap is the same every time for the same
+ * options, so R and Play again reuse it instead of settling it again.
+ */
+const settled = new Map<string, Float64Array>();
+
+/** The twin world of settleHeap for a scene built with `options`, stepped until its heap has fallen: fallen's five numbers a ball. */
+function fallenHeap(options: Parameters<typeof buildBouncingBalls>[1]): Float64Array {
   const calm = { ...options, restitution: 0 };
   const twin = createPhysicsWorld(bouncingBallsWorldOptions(calm));
   const twins = buildBouncingBalls(twin, calm);
@@ -311,13 +335,12 @@ function settleHeap(world: PhysicsWorld, h: BouncingBallsHandles, options: Param
     for (const e of twins.balls) if (P.y[slotOf(e)]! - R[slotOf(e)]! < floor + SETTLE_FLOOR_GAP) W.z[slotOf(e)] = 0;
     if (n % 10 === 0 && twins.balls.every((e) => V.x[slotOf(e)]! ** 2 + V.y[slotOf(e)]! ** 2 < SETTLE_SPEED ** 2)) break;
   }
-  for (let i = 0; i < h.balls.length; i++) {
-    const e = h.balls[i]!,
-      s = slotOf(twins.balls[i]!);
-    setPosition(world, e, [P.x[s]!, P.y[s]!]);
-    setVelocity(world, e, [V.x[s]!, V.y[s]!]);
-    setAngularVelocity(world, e, W.z[s]!);
-  }
+  const out = new Float64Array(5 * twins.balls.length);
+  twins.balls.forEach((e, i) => {
+    const s = slotOf(e);
+    out.set([P.x[s]!, P.y[s]!, V.x[s]!, V.y[s]!, W.z[s]!], 5 * i);
+  });
+  return out;
 }
 
 // ---- A thrown ball leaves the balls it rests on freely ------------------------------------------
