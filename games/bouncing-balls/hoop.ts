@@ -224,6 +224,17 @@ export const BALL_POINTS = Object.freeze({ basketball: 1, heap: 2, gold: 5 });
 /** The kinds of ball a basket can be made with (keys of BALL_POINTS). */
 export type BallKind = keyof typeof BALL_POINTS;
 
+/**
+ * How a basket went in: a `swish` touched nothing between its throw and the basket (not the rim, the
+ * backboard, a wall of the box, a ramp or another ball once it had left the heap; the net does not
+ * count), a `trick` shot bounced off a wall of the box (the floor included) or a ramp on its way, and
+ * a `plain` one did neither (off the rim or the backboard, say).
+ */
+export type ShotStyle = 'plain' | 'swish' | 'trick';
+
+/** Points a basket's style adds to its ball's, before the streak multiplier: a swish +1, a trick shot +3. */
+export const SHOT_BONUS = Object.freeze({ plain: 0, swish: 1, trick: 3 });
+
 /** The largest streak multiplier (reached with the fourth basket in a row). */
 export const MAX_MULTIPLIER = 4;
 
@@ -256,6 +267,11 @@ export interface HoopRound {
   bestStreak: number;
   /** Points the last basket made (0 before the first). */
   lastPoints: number;
+  /** How the last basket went in ('plain' before the first). */
+  lastStyle: ShotStyle;
+  /** Swishes and trick shots this round. */
+  swishes: number;
+  tricks: number;
   /** Length of the round, s. */
   readonly seconds: number;
   /** Seconds left on the clock, in [0, seconds]. */
@@ -283,6 +299,9 @@ export function createRound(seconds = ROUND_SECONDS, spot = 0): HoopRound {
     streak: 0,
     bestStreak: 0,
     lastPoints: 0,
+    lastStyle: 'plain',
+    swishes: 0,
+    tricks: 0,
     seconds,
     timeLeft: seconds,
     spot,
@@ -340,23 +359,34 @@ export function roundTick(round: HoopRound, dt: number): boolean {
 }
 
 /**
- * A basket with a ball of `kind`: BALL_POINTS[kind] times the streak's multiplier (streakMultiplier of
- * the baskets in a row before it), the streak grows and the hoop moves to its next spot of
- * `spotCount` (`nextSpot`: in turn, or dealt at random by `random`, numbers in [0, 1)); the first one
- * starts the clock and restarts the shot count at its own throw. Ignored once time is up. @returns
- * whether it counted (the points it made are in `lastPoints`).
- * @throws RangeError if spotCount is not a positive integer or kind is not a key of BALL_POINTS.
+ * A basket with a ball of `kind` that went in `style`: BALL_POINTS[kind] plus SHOT_BONUS[style], times
+ * the streak's multiplier (streakMultiplier of the baskets in a row before it), the streak grows and
+ * the hoop moves to its next spot of `spotCount` (`nextSpot`: in turn, or dealt at random by `random`,
+ * numbers in [0, 1)); the first one starts the clock and restarts the shot count at its own throw.
+ * Ignored once time is up. @returns whether it counted (the points it made are in `lastPoints`).
+ * @throws RangeError if spotCount is not a positive integer, kind is not a key of BALL_POINTS or style
+ * not one of SHOT_BONUS.
  */
-export function roundBasket(round: HoopRound, spotCount: number, kind: BallKind = 'basketball', random?: () => number): boolean {
+export function roundBasket(
+  round: HoopRound,
+  spotCount: number,
+  kind: BallKind = 'basketball',
+  random?: () => number,
+  style: ShotStyle = 'plain',
+): boolean {
   if (!(Number.isInteger(spotCount) && spotCount > 0))
     throw new RangeError(`roundBasket: spotCount must be a positive integer, got ${spotCount}`);
   if (!Object.hasOwn(BALL_POINTS, kind)) throw new RangeError(`roundBasket: kind must be basketball, heap or gold, got ${kind}`);
+  if (!Object.hasOwn(SHOT_BONUS, style)) throw new RangeError(`roundBasket: style must be plain, swish or trick, got ${style}`);
   if (round.phase === 'over') return false;
   // The clock starts now: of the warm-up's throws only this one counts.
   if (round.phase === 'ready') round.shots = 1;
   round.phase = 'playing';
   round.score++;
-  round.lastPoints = BALL_POINTS[kind] * streakMultiplier(round.streak);
+  round.lastPoints = (BALL_POINTS[kind] + SHOT_BONUS[style]) * streakMultiplier(round.streak);
+  round.lastStyle = style;
+  if (style === 'swish') round.swishes++;
+  if (style === 'trick') round.tricks++;
   round.points += round.lastPoints;
   round.streak++;
   round.bestStreak = Math.max(round.bestStreak, round.streak);

@@ -6,7 +6,8 @@
  * each basket, the clock starts with the first basket (a warm-up until then). The heap matters: a
  * pull that starts on one of its balls throws that ball, worth 2 (hoop.ts BALL_POINTS), and one of
  * them is gold (a halo, worth 5; a new one after it scores); a pull from empty space throws a new
- * basketball, worth 1. Baskets in a row multiply (x2, x3, x4: hoop.ts streakMultiplier); a thrown
+ * basketball, worth 1. A swish (touching nothing on its way) adds 1, a trick shot off a wall of the box or
+ * a ramp adds 3 (hoop.ts SHOT_BONUS, markTouches). Baskets in a row multiply (x2, x3, x4: hoop.ts streakMultiplier); a thrown
  * ball that falls below the rim beside the hoop is a miss and ends the streak (falling notes). The
  * aiming arc ends with a red cross at a ball in its way; a heap ball buried under others is lifted to
  * the top of the heap over it first (liftSpot: its arc and its throw start there; with no room there
@@ -20,7 +21,7 @@
  * the pull, faster the longer it is, hoop.ts slingVelocity: the height it reaches grows evenly over
  * the second half of the pull), with a power gauge round the ball and a dotted arc of the start of its
  * flight while pulling (hoop.ts throwPath: AIM_SECONDS of it, twice that in the warm-up before the
- * first basket, or to just past its apex if later, fading out, up to a ball in its way or through
+ * first basket, 1.5 times as long on a phone held upright (TALL_AIM_SCALE), or to just past its apex if later, fading out, up to a ball in its way or through
  * a first bounce off a wall, a ramp or the hoop and AFTER_BOUNCE on; the player judges the rest). Each basketball thrown or dropped fades out once it has come to rest (MAX_LOOSE). A pull taken back
  * to within CANCEL_PULL of its press point ("release here to cancel") and let go throws nothing; the
  * full-speed pull is shortened for a pull with little room to the window's edge (pullFullPull). A pull
@@ -101,6 +102,8 @@ import {
   roundMiss,
   roundShot,
   roundTick,
+  SHOT_BONUS,
+  type ShotStyle,
   slingVelocity,
   streakMultiplier,
   throwPath,
@@ -133,8 +136,9 @@ const CLICK_SLOP = 6;
 /** The same for a finger, CSS px: a fingertip resting on glass wobbles a few pixels. */
 const TOUCH_SLOP = 12;
 /**
- * A pull shorter than this, CSS px (or than the thrown ball's drawn radius, if that is larger), let
- * go cancels the aim: no throw, no shot, the streak kept. Dragging back onto the ball takes it back.
+ * A pull shorter than this, CSS px (for a finger, or than the thrown ball's drawn radius, if that is
+ * larger: cancelRadius), let go cancels the aim: no throw, no shot, the streak kept. Dragging back
+ * onto the press point takes it back.
  */
 const CANCEL_PULL = 15;
 /**
@@ -186,10 +190,12 @@ let round: HoopRound = createRound(roundSeconds);
 let hoopIds: number[] = [];
 /**
  * The balls in flight after a throw: whether each may still score (released below the rim, not up
- * through the net), its centre after the last step, m, what it is worth (BALL_POINTS) and the world
- * time it was thrown, s. A ball that has not gone in MISS_SECONDS after its throw is a miss and leaves.
+ * through the net), its centre after the last step, m, what it is worth (BALL_POINTS), the world
+ * time it was thrown, s, and what it has touched since (markTouches): anything (`touched`: no swish)
+ * and a wall of the box or a ramp (`trick`). A ball that has not gone in MISS_SECONDS after its throw
+ * is a miss and leaves.
  */
-let flights = new Map<number, { scores: boolean; x: number; y: number; kind: BallKind; at: number }>();
+let flights = new Map<number, { scores: boolean; x: number; y: number; kind: BallKind; at: number; touched: boolean; trick: boolean }>();
 /** The player's basketballs (made by a throw or a click from empty space): drawn orange with seams. */
 let basketballs = new Set<number>();
 /** The heap's gold ball (0 when the heap is empty): worth BALL_POINTS.gold. */
@@ -217,7 +223,7 @@ let best = readBest();
  * The last basket, for its celebration: where it went in (the rim's centre, m), the world time it was
  * scored (s), the hoop's spot it went through (an index of hoopSpots) and the score it made.
  */
-let lastBasket: { x: number; y: number; time: number; spot: number; score: number; points: number; kind: BallKind } = {
+let lastBasket: { x: number; y: number; time: number; spot: number; score: number; points: number; kind: BallKind; style: ShotStyle } = {
   x: 0,
   y: 0,
   time: -10,
@@ -225,6 +231,7 @@ let lastBasket: { x: number; y: number; time: number; spot: number; score: numbe
   score: 0,
   points: 0,
   kind: 'basketball',
+  style: 'plain',
 };
 /** When a miss last broke a streak (performance.now() ms), for the status row's word. */
 let missAt = -1e9;
@@ -243,6 +250,7 @@ function createWorld(): PhysicsWorld {
   };
   const world = createPhysicsWorld(bouncingBallsWorldOptions(options));
   handles = buildBouncingBalls(world, options);
+  settleHeap(world, handles, options);
   crates = [];
   // Each round's warm-up hoop is the layout's first spot; after it the spots come in an order of the
   // round's own (hoopOrder).
@@ -256,12 +264,83 @@ function createWorld(): PhysicsWorld {
   lastCall = { aiming: false, ball: 0 };
   ruleHint = '';
   lastThrown = 0;
-  lastBasket = { x: 0, y: 0, time: -10, spot: 0, score: 0, points: 0, kind: 'basketball' };
+  lastBasket = { x: 0, y: 0, time: -10, spot: 0, score: 0, points: 0, kind: 'basketball', style: 'plain' };
   hoopIds = addHoop(world, hoopSpots(TALL)[round.spot]!, params.restitution, params.friction);
   leaving = new Map();
   addSystem(world, 'integrate', keepLeavingFree);
   addSystem(world, 'collide', leaveFreely);
   return world;
+}
+
+// ---- The heap starts settled ---------------------------------------------------------------------
+
+/** Most balls whose heap is settled before the world is shown (settleHeap); more start on their grid and fall. */
+const SETTLE_MAX_BALLS = 200;
+/** The longest settle, s of simulated time (settleHeap stops sooner once every ball is slower than SETTLE_SPEED). */
+const SETTLE_SECONDS = 10;
+/** A settling ball whose bottom is this close to the floor, m, is on it (settleHeap stops it turning). */
+const SETTLE_FLOOR_GAP = 0.02;
+/** A settling ball slower than this, m/s, is at rest. */
+const SETTLE_SPEED = 0.1;
+
+/**
+ * Starts the balls of a new `world` (built by buildBouncingBalls with `options`) where they have
+ * fallen to: the scene is built again in a world of its own with no bounce (restitution 0, so the
+ * balls land and stay) and no hoop (on whose rim and backboard balls came to rest), stepped until
+ * every ball is slower than SETTLE_SPEED (at most SETTLE_SECONDS), and each ball of `world` takes its
+ * twin's place and motion (a ball still rolling off a ramp rolls on). The twin's balls on the floor
+ * do not turn (rolling, they crossed the box for seconds). `world` itself takes no step:
+ * its step 0 is the fallen heap, the same for a seed every time (R). A page opened on a grid of balls
+ * hanging in the air for the seconds they took to fall and stop bouncing. Nothing is done past
+ * SETTLE_MAX_BALLS balls (the sandbox's thousands fall as built). Each heap is settled once a page
+ * (settled).
+ */
+function settleHeap(world: PhysicsWorld, h: BouncingBallsHandles, options: Parameters<typeof buildBouncingBalls>[1]): void {
+  if (h.balls.length > SETTLE_MAX_BALLS) return;
+  const key = JSON.stringify(options);
+  let fallen = settled.get(key);
+  if (!fallen) {
+    fallen = fallenHeap(options);
+    settled.set(key, fallen);
+  }
+  for (let i = 0; i < h.balls.length; i++) {
+    const e = h.balls[i]!;
+    setPosition(world, e, [fallen[5 * i]!, fallen[5 * i + 1]!]);
+    setVelocity(world, e, [fallen[5 * i + 2]!, fallen[5 * i + 3]!]);
+    setAngularVelocity(world, e, fallen[5 * i + 4]!);
+  }
+}
+
+/**
+ * The fallen heaps made so far, by their scene's options (JSON): each ball's x, y (m), vx, vy (m/s)
+ * and spin (rad/s), five numbers a ball in build order. A heap is the same every time for the same
+ * options, so R and Play again reuse it instead of settling it again.
+ */
+const settled = new Map<string, Float64Array>();
+
+/** The twin world of settleHeap for a scene built with `options`, stepped until its heap has fallen: fallen's five numbers a ball. */
+function fallenHeap(options: Parameters<typeof buildBouncingBalls>[1]): Float64Array {
+  const calm = { ...options, restitution: 0 };
+  const twin = createPhysicsWorld(bouncingBallsWorldOptions(calm));
+  const twins = buildBouncingBalls(twin, calm);
+  const P = twin.components.Position,
+    V = twin.components.Velocity,
+    W = twin.components.AngularVelocity;
+  const most = Math.round(SETTLE_SECONDS / twin.dt);
+  const floor = layoutOf(TALL).box.min[1],
+    R = twin.components.Ball.radius;
+  for (let n = 1; n <= most; n++) {
+    step(twin);
+    // A ball on the floor stops turning, so it slides to a stop: one rolling there rolled for ever.
+    for (const e of twins.balls) if (P.y[slotOf(e)]! - R[slotOf(e)]! < floor + SETTLE_FLOOR_GAP) W.z[slotOf(e)] = 0;
+    if (n % 10 === 0 && twins.balls.every((e) => V.x[slotOf(e)]! ** 2 + V.y[slotOf(e)]! ** 2 < SETTLE_SPEED ** 2)) break;
+  }
+  const out = new Float64Array(5 * twins.balls.length);
+  twins.balls.forEach((e, i) => {
+    const s = slotOf(e);
+    out.set([P.x[s]!, P.y[s]!, V.x[s]!, V.y[s]!, W.z[s]!], 5 * i);
+  });
+  return out;
 }
 
 // ---- A thrown ball leaves the balls it rests on freely ------------------------------------------
@@ -579,7 +658,8 @@ function playHoop(world: PhysicsWorld): void {
       if (e === lastThrown) ruleHint = 'below';
     }
     const wasSpot = round.spot;
-    if (b.scores && crossing === -1 && roundBasket(round, spots.length, b.kind, hoopRandom)) {
+    const style: ShotStyle = b.trick ? 'trick' : b.touched ? 'plain' : 'swish';
+    if (b.scores && crossing === -1 && roundBasket(round, spots.length, b.kind, hoopRandom, style)) {
       lastBasket = {
         x: opening.minX + 0.5 * (opening.maxX - opening.minX),
         y: opening.y,
@@ -588,6 +668,7 @@ function playHoop(world: PhysicsWorld): void {
         score: round.score,
         points: round.lastPoints,
         kind: b.kind,
+        style,
       };
       flights.delete(e);
       basketballs.delete(e);
@@ -777,12 +858,35 @@ function applyNet(world: PhysicsWorld): void {
 /** Half the hoop's width with its net, m (for applyNet's quick test). */
 const HOOP_HALF_SPAN = 1.5;
 
+/**
+ * Marks what each ball in flight touched in the last step (from the step's contact begin events), for
+ * its basket's style (hoop.ts ShotStyle): a wall of the box (a boundary face) or a ramp makes it a
+ * trick shot; anything else but the balls round it as it leaves the heap (its first
+ * LEAVE_MAX_SECONDS) ends its swish.
+ */
+function markTouches(world: PhysicsWorld): void {
+  if (flights.size === 0) return;
+  const touch = (e: number, other: number): void => {
+    const f = flights.get(e);
+    if (!f) return;
+    const wall = other <= 0 || handles.segments.includes(other);
+    if (wall) f.trick = true;
+    else if (!hoopIds.includes(other) && !crates.includes(other) && world.time - f.at < LEAVE_MAX_SECONDS) return;
+    f.touched = true;
+  };
+  forEachImpact(world, (a, b) => {
+    touch(a, b);
+    touch(b, a);
+  });
+}
+
 /** Which impacts are heard (knocks.ts): the loudest few a step, a cooldown per body, a budget a second. */
 const knocks = createKnockLimiter(KNOCK_LIMITS);
 
 /** One step, then a knock for each impact the limiter keeps: loudness from its impulse, the harder of the two materials. */
 function stepWorld(world: PhysicsWorld): void {
   step(world);
+  markTouches(world);
   applyNet(world);
   playHoop(world);
   clearLoose(world);
@@ -1013,8 +1117,13 @@ let fullPullNow = 420;
 let pressClientX = 0,
   pressClientY = 0;
 
-/** The cancel zone's radius round the press, CSS px: CANCEL_PULL, or the thrown ball's drawn radius if larger. */
+/**
+ * The cancel zone's radius round the press, CSS px: CANCEL_PULL for a mouse; for a finger, the thrown
+ * ball's drawn radius if larger (the thumb covers the ball it took back). A mouse's zone as wide as
+ * a big heap ball (33 px on a desktop) showed no arc for pulls of 30 px and less.
+ */
 function cancelRadius(): number {
+  if (!pressFinger) return CANCEL_PULL;
   const c = shell.world.components;
   const r = pressBall !== 0 && handles.balls.includes(pressBall) ? c.Ball.radius[slotOf(pressBall)]! : PLAYER_RADIUS;
   return Math.max(CANCEL_PULL, renderer.camera.toScreenLength(r));
@@ -1314,7 +1423,7 @@ function launch(e: number, thrown: boolean): void {
   const scores = mayScore(hoopSpots(TALL)[round.spot]!, by);
   if (basketballs.has(e)) renderer.setColor(e, scores ? PLAYER_COLOR : HIGH_COLOR);
   // A drop falls: it cannot go down through the hoop from below the rim, nor be a miss.
-  if (thrown) flights.set(e, { scores, x: bx, y: by, kind: kindOf(e), at: shell.world.time });
+  if (thrown) flights.set(e, { scores, x: bx, y: by, kind: kindOf(e), at: shell.world.time, touched: false, trick: false });
   else flights.delete(e);
   if (round.phase !== 'over' && thrown) {
     roundShot(round);
@@ -1375,11 +1484,18 @@ function aimFlight(): number[] {
 
 /**
  * How much of a throw's flight its aiming arc shows, s: AIM_SECONDS, or AIM_SECONDS_WARMUP in the
- * warm-up (before the round's first basket), where a first-timer learns how the pull throws.
+ * warm-up (before the round's first basket), where a first-timer learns how the pull throws; both
+ * TALL_AIM_SCALE times longer in the tall box (a phone held upright).
  */
 function aimSeconds(): number {
-  return round.phase === 'ready' ? AIM_SECONDS_WARMUP : AIM_SECONDS;
+  return (round.phase === 'ready' ? AIM_SECONDS_WARMUP : AIM_SECONDS) * (TALL ? TALL_AIM_SCALE : 1);
 }
+/**
+ * How much longer the aiming arc is in the tall box: a phone draws the court at some 36 px a metre
+ * (a desktop 56), so the same 0.6 s of flight was a third shorter on its screen, most of it under the
+ * thumb's side of the ball, and the strangers found the phone the hardest to aim (2 of 5 for fun).
+ */
+const TALL_AIM_SCALE = 1.5;
 /**
  * The aiming arc's length once the clock runs, s of flight: about the first third of a basket's
  * flight (a basket from the natural starts of reach.ts reaches the rim 0.8 to 2 s after its throw,
@@ -1467,6 +1583,9 @@ function arcStops(t: { x: number; y: number; vx: number; vy: number; radius: num
 }
 /** Bounces the whole predicted flight (aimFlight, aimFrom) follows (off the walls, the hoop and its net) before it ends; the shown arc follows none. */
 const AIM_BOUNCES = 2;
+
+/** An aiming arc that ends on a ball less than this far from the throw's start, m, is labelled blocked. */
+const BLOCKED_SOON_M = 1.5;
 
 /** The band's colour for a pull of `power` (speed / MAX_THROW_SPEED, [0, 1]): white, to gold at half, to red at full. */
 function powerColor(power: number): number {
@@ -1574,8 +1693,13 @@ function drawPointer(): void {
       const ty = cam.toScreenY(lift[1]),
         br = cam.toScreenLength(t.radius);
       overlay.circle(bx, by, br + 9).fill({ color: 0x0b0f18, alpha: 0.8 });
-      for (let k = 0; k < 16; k += 2)
-        overlay.arc(bx, by, br, (k * Math.PI) / 8, ((k + 1) * Math.PI) / 8).stroke({ width: 2, color: 0xffffff, alpha: 0.6 });
+      // Each dash from its own start point: pixi's arc joins the path's current point (the canvas's
+      // corner when there is none) to the arc's start with a line.
+      for (let k = 0; k < 16; k += 2) {
+        const a0 = (k * Math.PI) / 8;
+        overlay.moveTo(bx + br * Math.cos(a0), by + br * Math.sin(a0)).arc(bx, by, br, a0, ((k + 1) * Math.PI) / 8);
+      }
+      overlay.stroke({ width: 2, color: 0xffffff, alpha: 0.6 });
       for (let yy = by - br; yy > ty + br; yy -= 10) overlay.moveTo(bx, yy).lineTo(bx, Math.max(ty + br, yy - 5));
       overlay.stroke({ width: 2, color: 0xffffff, alpha: 0.7 });
       liftedShown = pressed;
@@ -1621,29 +1745,32 @@ function drawPointer(): void {
     overlay.lineTo(ox + gr * Math.cos(a), oy + gr * Math.sin(a));
   }
   overlay.stroke({ width: 4, color: powerColor(power), alpha: 0.95 });
-  let label = `power ${Math.round(100 * power)}%`;
+  // The arc ends on another ball: a red cross there (that ball is in the way), over the thrown
+  // ball's disc (a throw blocked at once ends its arc inside that disc).
+  const ex = path[2 * n - 2] ?? t.x,
+    ey = path[2 * n - 1] ?? t.y;
+  const blocked = n > 1 && nearBalls(t.x, t.y, pressBall).some(([bx, by, br]) => Math.hypot(ex - bx, ey - by) < t.radius + br + 0.02);
+  // Blocked within the ball's first BLOCKED_SOON_M of flight: the label says so, as the cross is small
+  // and under the gauge (a heap ball thrown into its neighbour rolled off along the heap, a throw
+  // "that moved and fell back").
+  const soon = blocked && Math.hypot(ex - t.x, ey - t.y) < BLOCKED_SOON_M;
+  let label = `${soon ? 'blocked by a ball · ' : ''}power ${Math.round(100 * power)}%`;
   if (pressed !== 0) {
     const points = BALL_POINTS[kindOf(pressed)];
     const lifted = lift !== null && (lift[0] !== P.x[slotOf(pressed)] || lift[1] !== P.y[slotOf(pressed)]);
     label = `${lifted ? 'lifted out · ' : ''}${label} · ${points} ${points === 1 ? 'point' : 'points'}`;
   }
   showHoldLabel(label, ox, oy - gr - 6);
-  // The arc ends on another ball: a red cross there (that ball is in the way), over the thrown
-  // ball's disc (a throw blocked at once ends its arc inside that disc).
-  if (n > 1) {
-    const ex = path[2 * n - 2]!,
-      ey = path[2 * n - 1]!;
-    if (nearBalls(t.x, t.y, pressBall).some(([bx, by, br]) => Math.hypot(ex - bx, ey - by) < t.radius + br + 0.02)) {
-      const sx = cam.toScreenX(ex),
-        sy = cam.toScreenY(ey),
-        k = 7;
-      overlay
-        .moveTo(sx - k, sy - k)
-        .lineTo(sx + k, sy + k)
-        .moveTo(sx + k, sy - k)
-        .lineTo(sx - k, sy + k)
-        .stroke({ width: 4, color: 0xff4d4d, alpha: 0.95 });
-    }
+  if (blocked) {
+    const sx = cam.toScreenX(ex),
+      sy = cam.toScreenY(ey),
+      k = 7;
+    overlay
+      .moveTo(sx - k, sy - k)
+      .lineTo(sx + k, sy + k)
+      .moveTo(sx + k, sy - k)
+      .lineTo(sx - k, sy + k)
+      .stroke({ width: 4, color: 0xff4d4d, alpha: 0.95 });
   }
 }
 
@@ -1673,9 +1800,15 @@ const CELEBRATE_SECONDS = 1.6;
 /** What the praise line says for the n-th basket of a round (1-based): the first few differ. */
 const PRAISE = ['Basket!', 'Again!', 'Hat trick!', 'On fire!'];
 
-/** The word over a basket: the gold ball's, a streak's multiplier, or PRAISE for the n-th basket. */
-function praiseFor(b: { score: number; points: number; kind: BallKind }): string {
-  const mult = Math.round(b.points / BALL_POINTS[b.kind]);
+/**
+ * The word over a basket: a trick shot's or a swish's, else the gold ball's, else a streak's
+ * multiplier, else PRAISE for the n-th basket; with the multiplier when above 1.
+ */
+function praiseFor(b: { score: number; points: number; kind: BallKind; style: ShotStyle }): string {
+  const mult = Math.round(b.points / (BALL_POINTS[b.kind] + SHOT_BONUS[b.style]));
+  const times = mult > 1 ? ` ×${mult}` : '';
+  if (b.style === 'trick') return `Trick shot!${times}`;
+  if (b.style === 'swish') return `Swish!${times}`;
   if (b.kind === 'gold') return mult > 1 ? `Gold ×${mult}!` : 'Gold ball!';
   if (mult > 1) return `Streak ×${mult}!`;
   return PRAISE[Math.min(PRAISE.length, b.score) - 1]!;
@@ -2123,13 +2256,18 @@ function updateStatus(): void {
               : 'Throw balls through the hoop!';
   const numbers = `Points ${round.points} · ×${streakMultiplier(round.streak)} · Time ${secs} s · Best ${best}`;
   // The last throw's rule break (ruleHint) stays until the next throw; otherwise, while playing, the
-  // hint takes turns (5 s each) between the heap's balls and the streak.
+  // hint takes turns (5 s each) between the heap's balls, the streak and the bonus shots.
+  const turn = Math.floor(shell.world.time / 5) % 3;
   const teach =
-    Math.floor(shell.world.time / 5) % 2 === 0
+    turn === 0
       ? touch
         ? `Pull a heap ball back to throw it: ${BALL_POINTS.heap} points, gold ${BALL_POINTS.gold}`
         : `Press on a heap ball and pull back to throw it: ${BALL_POINTS.heap} points, the gold one ${BALL_POINTS.gold}`
-      : 'Baskets in a row multiply, up to ×4; a miss ends it';
+      : turn === 1
+        ? 'Baskets in a row multiply, up to ×4; a miss ends it'
+        : touch
+          ? `Swish +${SHOT_BONUS.swish} · off a wall or ramp +${SHOT_BONUS.trick}`
+          : `Bonus: a swish (touching nothing) +${SHOT_BONUS.swish}, a trick shot off a wall or ramp +${SHOT_BONUS.trick}`;
   const hint = over
     ? `${touch ? 'Tap' : 'R or'} Play again for a new round`
     : performance.now() - missAt < 2500
@@ -2231,9 +2369,15 @@ function drawEndCard(over: boolean): void {
   const tip =
     round.bestStreak < 3
       ? 'Tip: baskets in a row multiply points'
-      : round.score < 6
-        ? `Tip: the gold ball is worth ${BALL_POINTS.gold}`
-        : 'Can you beat it?';
+      : round.tricks === 0
+        ? `Tip: a trick shot off a wall or a ramp scores +${SHOT_BONUS.trick}`
+        : round.score < 6
+          ? `Tip: the gold ball is worth ${BALL_POINTS.gold}`
+          : 'Can you beat it?';
+  const bonus =
+    round.swishes + round.tricks > 0
+      ? [`${plural(round.swishes, 'swish', 'swishes')} · ${plural(round.tricks, 'trick shot', 'trick shots')}`]
+      : [];
   const room = cam.toScreenX(box.max[0]) - cam.toScreenX(box.min[0]) - 24;
   // Under the Play-again button at the box's top: the middle of the box's upper half.
   endCard.show(
@@ -2243,6 +2387,7 @@ function drawEndCard(over: boolean): void {
       lines: [
         `${plural(round.score, 'basket', 'baskets')} from ${plural(round.shots, 'throw', 'throws')}`,
         `Longest streak ${round.bestStreak} · ${newBest ? 'your best round yet!' : `best ${best}`}`,
+        ...bonus,
         tip,
       ],
     },
@@ -2312,7 +2457,7 @@ shell.expose({
   aimPath: (): number[] => aimPath(),
   /** The whole predicted flight of the throw being pulled (2.5 s, two bounces; the arc shows its start): points, m, or [] as aimPath. */
   aimFlight: (): number[] => aimFlight(),
-  /** How much of a throw's flight the aiming arc shows now, s (1.2 in the warm-up before the first basket, then 0.6). */
+  /** How much of a throw's flight the aiming arc shows now, s (1.2 in the warm-up before the first basket, then 0.6; 1.5 times that in the tall box). */
   aimSeconds: (): number => aimSeconds(),
   /** The round's last throw (the clock ran out during its pull): whether its pull is under way, and its ball (0 when none). */
   lastThrow: () => ({ ...lastCall }),

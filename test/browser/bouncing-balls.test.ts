@@ -146,6 +146,11 @@ describe('bouncing balls', () => {
     const g = await open();
     type Sounding = { sound: { running: boolean; played: number } };
     await g.clickCanvas(0.5, 0.2);
+    // The heap starts at rest (and the click's ball fades out at once): three sandbox balls thrown
+    // down from the top land on it.
+    await g.page.evaluate(() => {
+      for (const x of [4, 8, 12]) (window.game as unknown as BallsGame).spawn(x, 8, 0, -5);
+    });
     const before = await g.page.evaluate(() => (window.game as unknown as Sounding).sound.played);
     // The bouncing balls hit each other and the walls: begin events of ball contacts (contactEvents),
     // each a knock unless quieter than the threshold. Balls alone gave no events and no sound.
@@ -208,6 +213,9 @@ describe('bouncing balls', () => {
 
   it('N advances exactly one step (and pauses)', async () => {
     const g = await open();
+    // The heap starts at rest: a ball dropped from the top falls, and a step moves it.
+    await g.clickCanvas(0.5, 0.2);
+    await g.waitFor((n) => window.game!.stats().entities === n + 1, COUNT + SEGMENTS);
     await g.press('p');
     await g.waitFor(() => window.game!.paused, null);
     const a = await balls(g);
@@ -251,6 +259,31 @@ describe('bouncing balls', () => {
     expect(second.positions).toEqual(first.positions);
     expect(second.paused).toBe(true);
     await g.waitFor(() => (window.game as unknown as BallsGame).renderer.stats.balls === 8, null);
+    expect(g.errors).toEqual([]);
+  });
+
+  it('the heap has fallen at step 0: the page opens (and R resets) on the balls at rest low in the box, not a grid in the air', async () => {
+    const g = await open();
+    await g.press('p');
+    await g.waitFor(() => window.game!.paused, null);
+    await g.press('r');
+    const state = await g.page.evaluate(() => {
+      const game = window.game as unknown as BallsGame;
+      const V = game.world.components.Velocity;
+      return {
+        steps: game.world.steps,
+        heights: game.positions().filter((_, i) => i % 2 === 1),
+        speeds: game.ballIds().map((e) => Math.hypot(V.x[e % 2 ** 25]!, V.y[e % 2 ** 25]!)),
+      };
+    });
+    // Built, the balls hang on a grid from the box's top (up to 1.5 m/s each way); settled, the 8
+    // balls of this page lie on the floor of the 10 m box (radii up to 0.6 m: two layers at most).
+    expect(state.steps).toBe(0);
+    expect(state.heights.length).toBe(COUNT);
+    for (const y of state.heights) expect(y).toBeLessThan(BOX.max[1] / 4);
+    for (const v of state.speeds) expect(v).toBeLessThan(0.5);
+    await g.press('p');
+    await g.waitFor(() => !window.game!.paused, null);
     expect(g.errors).toEqual([]);
   });
 
@@ -530,17 +563,18 @@ describe('bouncing balls: the hoop game', () => {
     }
     expect(score).toBe(1);
     // The basket is celebrated: the status row says so and its score line bumps; over the old
-    // hoop, "+1" and a word of praise (before, a small +1 and a ring for 0.8 s were all).
+    // hoop, "+2" and a word of praise (before, a small +1 and a ring for 0.8 s were all). The throw
+    // touched nothing on its way: a swish, its basketball's 1 point and 1 more (hoop.ts SHOT_BONUS).
     const cheer = await g.waitFor(() => {
       const game = window.game as unknown as HoopGame & {
         app: { stage: { children: { label: string; visible: boolean; text?: string }[] } };
       };
       const texts = game.app.stage.children.filter((c) => c.visible && typeof c.text === 'string').map((c) => c.text);
       const numbers = document.querySelector('[data-hud="hoop"] [data-hud="numbers"]')!;
-      return /Basket! \+1 · the hoop moved/.test(game.statusText()) ? { texts, bump: numbers.classList.contains('bb-bump') } : null;
+      return /Swish! \+2 · the hoop moved/.test(game.statusText()) ? { texts, bump: numbers.classList.contains('bb-bump') } : null;
     }, null);
     expect(cheer.bump).toBe(true);
-    expect(cheer.texts).toEqual(expect.arrayContaining(['+1', 'Basket!']));
+    expect(cheer.texts).toEqual(expect.arrayContaining(['+2', 'Swish!']));
     await g.page.evaluate(() => {
       (window.game as unknown as { paused: boolean }).paused = false;
     });
@@ -551,10 +585,10 @@ describe('bouncing balls: the hoop game', () => {
       text: (window.game as unknown as HoopGame).statusText(),
     }));
     expect(after.hoop).not.toEqual(before);
-    expect(after.best).toBe(1);
-    expect(after.stored).toBe('1');
-    // A basketball's basket is 1 point (x1, the streak's first); the next one would score x2.
-    expect(after.text).toMatch(/Points 1 · ×2 .*Best 1/);
+    expect(after.best).toBe(2);
+    expect(after.stored).toBe('2');
+    // A basketball's swish is 2 points (x1, the streak's first); the next basket would score x2.
+    expect(after.text).toMatch(/Points 2 · ×2 .*Best 2/);
     // Thrown straight up from under the hoop: the net stops it (its top at the net's bottom, 1.1 m under
     // the rim) and it falls back; before, it flew up through the drawn net and the rim's opening.
     const under = await g.page.evaluate(() => {
@@ -632,7 +666,7 @@ describe('bouncing balls: the hoop game', () => {
       return { visible: c?.visible, texts: (c?.children ?? []).map((k) => k.text).filter(Boolean) };
     });
     expect(card.visible).toBe(true);
-    expect(card.texts).toEqual(expect.arrayContaining(['1 point']));
+    expect(card.texts).toEqual(expect.arrayContaining(['2 points']));
     expect(card.texts.join(' ')).toMatch(/1 basket from \d+ throws/);
     const again = g.page.getByRole('button', { name: 'Play again ▶' });
     // Over the top of the box (above 8 m of its 10), clear of the balls piled at its bottom.
@@ -640,7 +674,7 @@ describe('bouncing balls: the hoop game', () => {
     expect(button.y + button.height).toBeLessThan((await g.worldToPage(0, 8)).y);
     await again.click();
     await g.waitFor(() => (window.game as unknown as HoopGame).round().phase === 'ready', null);
-    expect(await g.page.evaluate(() => (window.game as unknown as HoopGame).best())).toBe(1);
+    expect(await g.page.evaluate(() => (window.game as unknown as HoopGame).best())).toBe(2);
     expect(await again.count()).toBe(0);
     // Heap throws fly their shown arc: the default heap of 40 balls settled 10 s (paused, stepped),
     // then the first two heap balls (in a fixed order) with an arc clean for 0.5 s (no red cross, no
@@ -763,6 +797,46 @@ describe('bouncing balls: the hoop game', () => {
     await g.close();
   });
 
+  it("desktop 1280 x 800: a throw off the box's top into the hoop is a trick shot, worth 3 more", async () => {
+    const g = await h.openGame('bouncing-balls', { viewport: { width: 1280, height: 800 }, query: { count: 8 } });
+    await g.page.evaluate(() => {
+      const game = window.game as unknown as HoopGame & { remove(id: number): void };
+      for (const id of game.ballIds()) game.remove(id);
+    });
+    // From (8, 4) m at (5.5, 12.5) m/s: its top meets the ceiling at about x 11 m and it comes down
+    // through the first hoop's opening (hoop.ts throwPath with one ceiling bounce scores for vy 11.8
+    // to 13.3 m/s at this vx). Up to three throws, each given 2.5 s of world time.
+    let score = 0;
+    for (let attempt = 0; attempt < 3 && score === 0; attempt++) {
+      const t0 = await g.page.evaluate(() => {
+        const game = window.game as unknown as HoopGame & { world: { time: number } };
+        game.shoot(8, 4, 5.5, 12.5);
+        return game.world.time;
+      });
+      score = await g.waitFor(
+        (start) => {
+          const game = window.game as unknown as HoopGame & { world: { time: number }; paused: boolean };
+          const n = game.round().score;
+          if (n > 0) game.paused = true;
+          return n > 0 ? n : game.world.time > start + 2.5 ? -1 : 0;
+        },
+        t0,
+        30_000,
+      );
+      if (score < 0) score = 0;
+    }
+    expect(score).toBe(1);
+    const r = await g.page.evaluate(() => {
+      const game = window.game as unknown as HoopGame & { round(): { lastStyle: string; lastPoints: number; tricks: number } };
+      return { ...game.round(), text: game.statusText() };
+    });
+    // A basketball's 1 point and the trick shot's 3, x1 (the streak's first basket).
+    expect(r).toMatchObject({ lastStyle: 'trick', lastPoints: 4, tricks: 1 });
+    expect(r.text).toMatch(/Trick shot! \+4/);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
   it('desktop: a ball buried in the heap is lifted to the top of the heap over it; its arc starts there and it flies it, or the arc ends on the ball in its way', async () => {
     const g = await h.openGame('bouncing-balls', { viewport: { width: 1280, height: 800 }, query: { count: 40 } });
     // The walls a throw may bounce off (the box's ramps and the first hoop), [ax, ay, bx, by, radius], m:
@@ -814,7 +888,8 @@ describe('bouncing balls: the hoop game', () => {
           const at = (t: number): [number, number] => [x + vx * t, y + vy * t - 0.5 * g * t * t];
           let clear = true,
             free = true;
-          for (let k = 1; k <= 30 && clear; k++) {
+          // To 32 steps: the arc's first point at or past 0.5 s (its points are 4 steps apart).
+          for (let k = 1; k <= 32 && clear; k++) {
             const [px, py] = at(k / 60);
             if (px - r < box.min[0] || px + r > box.max[0] || py - r < box.min[1] || py + r > box.max[1]) clear = false;
             for (const [ax, ay, bx, by, wr] of walls) {
@@ -1059,13 +1134,18 @@ describe('bouncing balls: the hoop game', () => {
       return game.ballIds().length;
     });
     let arc: number[] = [];
+    let seconds = 0;
     await swipe(
       g.page,
       [0, 0.25, 0.5, 0.75, 1].map((f) => [from.x + f * (to.x - from.x), from.y + f * (to.y - from.y)] as [number, number]),
       async () => {
         arc = await g.page.evaluate(() => (window.game as unknown as HoopGame).aimPath());
+        seconds = await g.page.evaluate(() => (window.game as unknown as HoopGame).aimSeconds());
       },
     );
+    // The phone's arc shows 1.5 times the desktop's flight (main.ts TALL_AIM_SCALE): 1.8 s in the
+    // warm-up (1.2 s on a desktop), as the phone draws each metre a third shorter.
+    expect(seconds).toBeCloseTo(1.8, 9);
     expect(arc.length).toBeGreaterThan(6);
     expect(arc[0]).toBeCloseTo(3, 1);
     expect(arc[1]).toBeCloseTo(4, 1);
@@ -1165,6 +1245,126 @@ describe('bouncing balls: cancelling, full-power pulls and the end of a round mi
     await m.move(from.x - 60, from.y + 90, { steps: 6 });
     await m.up();
     await g.waitFor((n) => (window.game as unknown as AimGame).round().shots === n + 1, n0.shots);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
+  /** The biggest ball of the (settled) heap that no ball touches from above: its id, centre and radius, m. */
+  const biggestFree = (g: GamePage) =>
+    g.page.evaluate(() => {
+      const game = window.game as unknown as AimGame & { world: { components: { Ball: { radius: Float64Array } } } };
+      game.paused = true;
+      const ids = game.ballIds(),
+        p = game.positions(),
+        R = game.world.components.Ball.radius;
+      let best = { id: 0, x: 0, y: 0, r: 0 };
+      ids.forEach((e, i) => {
+        const r = R[e % 2 ** 25]!,
+          x = p[2 * i]!,
+          y = p[2 * i + 1]!;
+        const covered = ids.some(
+          (o, j) => o !== e && p[2 * j + 1]! > y && Math.hypot(p[2 * j]! - x, p[2 * j + 1]! - y) < r + R[o % 2 ** 25]! + 0.05,
+        );
+        if (!covered && r > best.r) best = { id: e, x, y, r };
+      });
+      return best;
+    });
+
+  it('desktop 1280 x 800, mouse: a 29 px pull from a big heap ball shows its arc (the cancel zone is 15 px, not the ball)', async () => {
+    const g = await h.openGame('bouncing-balls', { viewport: { width: 1280, height: 800 }, query: { count: 40 } });
+    const ball = await biggestFree(g);
+    const at = await g.worldToPage(ball.x, ball.y);
+    const edge = await g.worldToPage(ball.x + ball.r, ball.y);
+    // Drawn wider than the pull: the zone was the ball's drawn radius, so this pull showed no arc.
+    expect(edge.x - at.x).toBeGreaterThan(29);
+    const m = g.page.mouse;
+    await m.move(at.x, at.y);
+    await m.down();
+    await m.move(at.x - 14, at.y + 25, { steps: 4 });
+    await g.waitFor(() => (window.game as unknown as AimGame).aimPath().length > 2, null);
+    expect((await aimState(g)).label).toMatch(/power \d+% · 2 points$/);
+    // Back within 15 px: cancelled.
+    await m.move(at.x - 6, at.y + 8, { steps: 4 });
+    await g.waitFor(() => (window.game as unknown as AimGame).aimLabel() === 'release here to cancel', null);
+    await m.up();
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
+  it('desktop 1280 x 800, mouse: a throw straight into the ball beside it says "blocked by a ball" over the gauge', async () => {
+    const g = await h.openGame('bouncing-balls', { viewport: { width: 1280, height: 800 }, query: { count: 8 } });
+    // Two balls 1.2 m apart in the air, alone in the box, the world paused (they stay there).
+    const at = await g.page.evaluate(() => {
+      const game = window.game as unknown as AimGame & { spawn(x: number, y: number): number };
+      game.paused = true;
+      for (const id of game.ballIds()) game.remove(id);
+      game.spawn(6, 4);
+      game.spawn(7.2, 4);
+      const p = game.positions();
+      return { x: p[0]!, y: p[1]! };
+    });
+    const from = await g.worldToPage(at.x, at.y);
+    const m = g.page.mouse;
+    await m.move(from.x, from.y);
+    await m.down();
+    // Pulled straight left: thrown straight right, into the other ball a metre on.
+    await m.move(from.x - 80, from.y, { steps: 6 });
+    await g.waitFor(() => (window.game as unknown as AimGame).aimPath().length > 2, null);
+    expect((await aimState(g)).label).toMatch(/^blocked by a ball · power \d+% · 2 points$/);
+    // Pulled down instead: thrown up, clear of it.
+    await m.move(from.x, from.y + 80, { steps: 6 });
+    await g.waitFor(() => /^power \d+% · 2 points$/.test((window.game as unknown as AimGame).aimLabel()), null);
+    await m.up();
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
+  it('desktop 1280 x 800: aiming a buried ball lifted out draws nothing out to the canvas corner (no stray line)', async () => {
+    const g = await h.openGame('bouncing-balls', { viewport: { width: 1280, height: 800 }, query: { count: 40 } });
+    // The lowest ball with another ball touching it from above: pressed, it is lifted to the top of the heap.
+    const ball = await g.page.evaluate(() => {
+      const game = window.game as unknown as AimGame & { world: { components: { Ball: { radius: Float64Array } } } };
+      game.paused = true;
+      const ids = game.ballIds(),
+        p = game.positions(),
+        R = game.world.components.Ball.radius;
+      let best = { x: 0, y: Infinity };
+      ids.forEach((e, i) => {
+        const x = p[2 * i]!,
+          y = p[2 * i + 1]!;
+        const buried = ids.some(
+          (o, j) =>
+            o !== e && p[2 * j + 1]! > y + 0.2 && Math.hypot(p[2 * j]! - x, p[2 * j + 1]! - y) < R[e % 2 ** 25]! + R[o % 2 ** 25]! + 0.03,
+        );
+        if (buried && x > 4 && x < 12 && y < best.y) best = { x, y };
+      });
+      return best;
+    });
+    const at = await g.worldToPage(ball.x, ball.y);
+    const m = g.page.mouse;
+    await m.move(at.x, at.y);
+    await m.down();
+    await m.move(at.x - 40, at.y + 80, { steps: 6 });
+    await g.waitFor(() => (window.game as unknown as AimGame).aimLabel().startsWith('lifted out'), null);
+    // What the pointer overlay holds: the empty place, the lifted ball, the band, the gauge and the
+    // arc, all near the ball and its arc. Pixi's arc, drawn with no point before it, joined the
+    // canvas's corner (0, 0) to the empty place's dashed outline with a thin white line.
+    const bounds = await g.page.evaluate(() => {
+      const game = window.game as unknown as AimGame & {
+        app: { stage: { children: { label: string; getBounds(): { minX: number; minY: number } }[] } };
+        renderer: { camera: { toScreenX(x: number): number; toScreenY(y: number): number } };
+      };
+      const b = game.app.stage.children.find((c) => c.label === 'pointer')!.getBounds();
+      const cam = game.renderer.camera,
+        arc = game.aimPath();
+      const xs = arc.filter((_, i) => i % 2 === 0).map((x) => cam.toScreenX(x)),
+        ys = arc.filter((_, i) => i % 2 === 1).map((y) => cam.toScreenY(y));
+      return { minX: b.minX, minY: b.minY, arcX: Math.min(...xs), arcY: Math.min(...ys) };
+    });
+    const canvas = (await g.page.locator('canvas').first().boundingBox())!;
+    expect(bounds.minX).toBeGreaterThan(Math.min(bounds.arcX, at.x - 40 - canvas.x) - 60);
+    expect(bounds.minY).toBeGreaterThan(bounds.arcY - 60);
+    await m.up();
     expect(g.errors).toEqual([]);
     await g.close();
   });

@@ -295,6 +295,8 @@ describe('WorldRenderer in the browser', () => {
       const game = window.game as unknown as Host;
       game.renderer.setDebug(true);
       game.renderer.setTrails({ length: 20 });
+      // The page's heap starts at rest (asleep: no arrows): balls thrown down onto it move and touch.
+      for (const x of [4, 8, 12]) game.spawn(x, 8, 0, -5);
       game.paused = false;
     });
     const s = await g.waitFor(

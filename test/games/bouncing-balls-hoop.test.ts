@@ -29,6 +29,7 @@ import {
   roundMiss,
   roundShot,
   roundTick,
+  SHOT_BONUS,
   slingPull,
   slingVelocity,
   streakMultiplier,
@@ -131,6 +132,27 @@ describe('hoop round', () => {
     expect(streakMultiplier(0)).toBe(1);
     expect(() => streakMultiplier(-1)).toThrow(/streakMultiplier: streak/);
     expect(() => roundBasket(r, 5, 'crate' as 'heap')).toThrow(/roundBasket: kind/);
+  });
+  it('bonus shots: a swish adds 1 and a trick shot 3 to the ball, both times the streak; the round counts them', () => {
+    const r = createRound();
+    const gains: number[] = [];
+    for (const [kind, style] of [
+      ['basketball', 'swish'],
+      ['heap', 'trick'],
+      ['gold', 'plain'],
+      ['heap', 'swish'],
+    ] as const) {
+      roundBasket(r, 5, kind, undefined, style);
+      gains.push(r.lastPoints);
+      expect(r.lastStyle).toBe(style);
+    }
+    // (1 + 1) x1, (2 + 3) x2, 5 x3, (2 + 1) x4.
+    expect(gains).toEqual([2, 10, 15, 12]);
+    expect(SHOT_BONUS).toEqual({ plain: 0, swish: 1, trick: 3 });
+    expect(r).toMatchObject({ points: 39, swishes: 2, tricks: 1 });
+    expect(() => roundBasket(r, 5, 'heap', undefined, 'dunk' as 'swish')).toThrow(
+      /roundBasket: style must be plain, swish or trick, got dunk/,
+    );
   });
   it('deals the hoop spots at random: none twice in a row, every one within a pass, an order of its own per seed', () => {
     /** The first `n` spots of a round started at `first` whose baskets are dealt by a generator seeded with `seed`. */
