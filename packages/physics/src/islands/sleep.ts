@@ -1,10 +1,20 @@
 import { addComponent, hasComponent, removeComponent } from 'bitecs';
+import { keepSleepingManifolds } from '../collision/dormant-manifolds-2d.js';
 import { ecsOf } from '../world/ecs-internals.js';
 import { resolveKind } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { Not, query } from '../world/query.js';
 import type { SleepTerms } from '../world/scratch.js';
-import { addBallEdges, addIslandEdges2D, emptyIslandEdges, findRoot, joinContactEdges, joinJointEdges, markSupport } from './edges.js';
+import {
+  addBallEdges,
+  addIslandEdges2D,
+  emptyIslandEdges,
+  findRoot,
+  joinContactEdges,
+  joinJointEdges,
+  markSupport,
+  pushedSleepers2D,
+} from './edges.js';
 import { addIslandEdges3D, wakeTouching3D, withShape3DBodies } from './hooks-3d.js';
 
 /**
@@ -167,6 +177,8 @@ export function sleepSystem(world: PhysicsWorld): void {
   const lin2 = sl.linearSpeed * sl.linearSpeed,
     ang2 = sl.angularSpeed * sl.angularSpeed;
   const dt = world.dt;
+  // Sleepers a resting body leaned on: woken for the next step (islands/edges.ts pushedSleepers2D).
+  if (world.dimensions === 2) wakeIslandsOf(world, pushedSleepers2D(world));
   // The island graph of this step: every contact and joint, from every store (islands/edges.ts).
   const edges = emptyIslandEdges();
   addBallEdges(world, edges);
@@ -251,6 +263,8 @@ export function sleepSystem(world: PhysicsWorld): void {
       addComponent(world, e, c.Sleeping);
     }
     sl.anyAsleep = true;
+    // Their contacts' impulses, for the step they wake in (collision/dormant-manifolds-2d.ts).
+    if (world.dimensions === 2) keepSleepingManifolds(world);
   }
   cs.stats.sleeping = sl.anyAsleep ? query(world, terms.sleeping).length : 0;
 }
