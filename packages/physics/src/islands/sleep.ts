@@ -22,12 +22,15 @@ import { addIslandEdges3D, wakeTouching3D, withShape3DBodies } from './hooks-3d.
  * costing anything. A dynamic collider whose speed stays below `linearSpeed` and spin below
  * `angularSpeed` accumulates rest time; islands are the bodies joined by contacts that carried an
  * impulse this step (union-find); when every body of an island has rested `timeToSleep`, the island
- * sleeps: velocities zeroed, the `Sleeping` tag added, and integration and the contact solver skip it.
+ * sleeps: velocities zeroed, the `Sleeping` tag added, and integration and the contact solver skip it;
+ * in 2D its shape contacts' impulses are kept for the step it wakes in (collision/dormant-manifolds-2d.ts).
  * Only a supported body rests: one that carried a contact impulse this step. A body in free flight
  * (a balloon creeping to its equilibrium height, a projectile at its apex) never sleeps, however slow.
  *
- * A sleeping body wakes when an awake or kinematic body comes into contact range (the broadphase
- * wakes it for that step), when its velocity is written (`setVelocity`, `applyImpulse`, or a direct
+ * A sleeping body wakes when a moving (kinematic, or dynamic and not resting) body comes into
+ * contact range (the broadphase wakes it for that step), in 2D when a resting body leans on it (their
+ * shape contact pushed: woken for the next step, so the two rest as one island; a resting neighbour
+ * that does not push leaves it asleep, and in 3D a resting body never wakes it), when its velocity is written (`setVelocity`, `applyImpulse`, or a direct
  * write to the store, noticed at the next step), when `wakeBody` is called, when gravity changes, or
  * when a body it touched is removed. Bodies driven by time-varying forces (driving or random forces,
  * thrust) or held by springs never sleep: their forces would be ignored while asleep.
