@@ -191,19 +191,12 @@ const weldsHeld: boolean[] = [];
 const DEBRIS: Record<SoundMaterial, DebrisKind> = { wood: 'wood', glass: 'glass', stone: 'stone', metal: 'stone', soft: 'dust' };
 
 /**
- * One step (before the first throw only the clock advances), then for each impact a sound (wood over glass over stone, the louder material of the two
+ * One step, then for each impact a sound (wood over glass over stone, the louder material of the two
  * bodies, as loud as the impulse) and what it throws up where the bodies met: dust where something
  * lands on the grass, splinters, shards or chips of what a stone hits, and a shake of the camera
  * for a hard hit by a thrown stone (its size from the approach speed).
  */
 function stepWorld(world: PhysicsWorld): void {
-  // Before the first throw the castle holds still: its clock runs (clouds, the demo's timer) but
-  // nothing moves, so no piece can fall and score before a stone is thrown, however long the page is
-  // left open (a phone left in the background showed "Total 300" and stones off their beams).
-  if (shots.length === 0 && !DEMO) {
-    world.time += world.dt;
-    return;
-  }
   step(world);
   if (DEMO && shots.length === 0 && world.time > 0.3) {
     // At the castle's front at 19 m/s, the low angle.

@@ -125,9 +125,14 @@ export interface Level {
 /** The rock behind the castle: its gap from the castle's right end, half width and half height, m. */
 export const ROCK = { gap: 1.9, hx: 0.5, hy: 1.4 } as const;
 
-/** The world options: 2D, 4 contact substeps, room for the castle and shots. */
+/**
+ * The world options: 2D, room for the castle and shots, resting islands asleep (the default). A
+ * castle left alone falls asleep within about a second of its build and stays where it stands
+ * until something hits it: kept awake, its round stones, neutral on their planks, would roll off
+ * (0.2 to 6 m in two minutes, as in planck.js and Rapier kept awake) and score by themselves.
+ */
 export function worldOptions(o: { gravity: number }): PhysicsWorldOptions {
-  return { dimensions: 2, capacity: 1000, gravity: [0, -o.gravity], sleep: false };
+  return { dimensions: 2, capacity: 1000, gravity: [0, -o.gravity] };
 }
 
 /** A post (wood, or a glass pane) of a storey, half extents (m). */
@@ -221,21 +226,25 @@ function tower(b: Builder, cx: number, base: number, storeys: number, o: TowerOp
     y += 2 * PLANK.hy;
     below = roof;
     const blocks = o.blocks ?? 'seeded';
-    if (s > 0 && (blocks === 'seeded' ? b.rng.next() < 0.5 : s <= blocks)) b.box('block', cx, storeyBase + 0.31, 0.3, 0.3);
+    if (s > 0 && (blocks === 'seeded' ? b.rng.next() < 0.5 : s <= blocks)) b.box('block', cx, storeyBase + 0.3, 0.3, 0.3);
   }
   const stones = o.stones ?? 1;
   const r = 0.3 + 0.02 * b.level;
-  for (let k = 0; k < stones; k++) b.stone(cx + (stones === 1 ? 0 : (k - 0.5) * 1.1), y + r + 0.01, r, o.stoneMass ?? 2 + 0.5 * b.level);
+  for (let k = 0; k < stones; k++) b.stone(cx + (stones === 1 ? 0 : (k - 0.5) * 1.1), y + r, r, o.stoneMass ?? 2 + 0.5 * b.level);
   return { body: roof, x: cx, y };
 }
 
-/** A bridge plank between two roofs of the same height, welded to both. */
-function bridge(b: Builder, a: Roof, c: Roof): void {
+/**
+ * A bridge plank between two roofs of the same height, welded to both; it lies on the roofs' inner
+ * 0.55 m (a crown stone must stay out of there). @returns the middle of its top (x, y), m.
+ */
+function bridge(b: Builder, a: Roof, c: Roof): [number, number] {
   const mid = (a.x + c.x) / 2;
   const half = (c.x - a.x) / 2 - SPAN / 2 + 0.35;
   const body = b.box('plank', mid, a.y + PLANK.hy, half, PLANK.hy);
   b.weld(a.body, body, [mid - half + 0.15, a.y]);
   b.weld(c.body, body, [mid + half - 0.15, a.y]);
+  return [mid, a.y + 2 * PLANK.hy];
 }
 
 /**
@@ -291,8 +300,8 @@ function hall(b: Builder, x0: number, base: number, bays: number, floors: number
     y += 2 * PLANK.hy;
     if (f === floors - 2) {
       const r = 0.3 + 0.02 * b.level;
-      b.stone(x0 + 0.5 * BAY, y + r + 0.01, r, 2 + 0.5 * b.level);
-      b.stone(x0 + (bays - 0.5) * BAY, y + r + 0.01, r, 2 + 0.5 * b.level);
+      b.stone(x0 + 0.5 * BAY, y + r, r, 2 + 0.5 * b.level);
+      b.stone(x0 + (bays - 0.5) * BAY, y + r, r, 2 + 0.5 * b.level);
     }
   }
   const mid = x0 + (bays / 2) * BAY;
@@ -408,7 +417,7 @@ const LEVELS: ReadonlyArray<{ name: string; shots: number; build: (b: Builder) =
       const on = deckY + 2 * PLANK.hy;
       b.box('block', mid - 0.7, on + 0.3, 0.3, 0.3);
       b.box('block', mid + 0.7, on + 0.3, 0.3, 0.3);
-      b.stone(mid, on + 0.36, 0.35, 3);
+      b.stone(mid, on + 0.35, 0.35, 3);
       tower(b, x, on, 1, { stones: 1, span: 1.4, on: deck });
       tower(b, x + span, on, 1, { stones: 1, span: 1.4, on: deck });
     },
@@ -425,7 +434,7 @@ const LEVELS: ReadonlyArray<{ name: string; shots: number; build: (b: Builder) =
       tower(b, x, -depth, 3, { stones: 2, blocks: 2 });
       const wallX = x + 3.4;
       const top = brickBlock(b, wallX, 0, 2, 3, BRICK);
-      b.stone(wallX, top + 0.36, 0.35, 3);
+      b.stone(wallX, top + 0.35, 0.35, 3);
     },
   },
   {
@@ -441,7 +450,7 @@ const LEVELS: ReadonlyArray<{ name: string; shots: number; build: (b: Builder) =
       tower(b, x + 2.6, H, 2, { stones: 1, blocks: 1 });
       b.box('block', x + 4.7, H + 0.3, 0.3, 0.3);
       b.box('block', x + 4.7, H + 0.9, 0.3, 0.3);
-      b.stone(x + 5.6, H + 0.36, 0.35, 3);
+      b.stone(x + 5.6, H + 0.35, 0.35, 3);
     },
   },
   {
@@ -476,8 +485,15 @@ const LEVELS: ReadonlyArray<{ name: string; shots: number; build: (b: Builder) =
       for (let t = 0; t < 4; t++) {
         const cx = x0 + t * TOWER_PITCH;
         const base = t === 0 || t === 3 ? brickBlock(b, cx, 0, 4, 2, BRICK) : 0;
-        const roof = tower(b, cx, base, base > 0 ? 3 : 4, { stones: 2, blocks: 1, stoneMass: 5 });
-        if (last && Math.abs(last.y - roof.y) < 1e-6) bridge(b, last, roof);
+        // The middle two (on the ground, four storeys) are bridged: one stone each, in the middle,
+        // and one on the bridge (a pair's inner stone, 0.46 m in radius, would stand on the
+        // bridge's end, overlapping it, and be pushed off as the level starts).
+        const roof = tower(b, cx, base, base > 0 ? 3 : 4, { stones: base > 0 ? 2 : 1, blocks: 1, stoneMass: 5 });
+        if (last && Math.abs(last.y - roof.y) < 1e-6) {
+          const [mx, my] = bridge(b, last, roof);
+          const r = 0.3 + 0.02 * b.level;
+          b.stone(mx, my + r, r, 5);
+        }
         last = roof;
       }
     },

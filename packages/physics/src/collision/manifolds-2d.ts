@@ -240,6 +240,15 @@ export interface ShapeCollisionState {
   previous: ManifoldBuffer;
   /** Hash of `previous` by (shapeA, shapeB): power-of-two slots, row + 1 (0 empty). */
   slots: Int32Array;
+  /**
+   * The warm start of the contacts of sleeping bodies: their touching rows of the step they fell
+   * asleep in, read by the first step after their wake (collision/dormant-manifolds-2d.ts).
+   */
+  dormant: ManifoldBuffer;
+  /** Hash of `dormant` by (shapeA, shapeB), as `slots` is of `previous`. */
+  dormantSlots: Int32Array;
+  /** `sleep.wakes` when `dormant` was last pruned of the rows of woken bodies. */
+  dormantWakes: number;
   /** Sensor overlaps of the last step, as keys shapeA * 2^25 + shapeB. */
   sensorPairs: Set<number>;
   /** Broadphase scratch. */
@@ -261,8 +270,6 @@ export interface ShapeCollisionState {
   originX: Float64Array;
   /** Per entity: the reference point's offset from the centre of mass, y, m (`originX` its x). */
   originY: Float64Array;
-  /** Sleeping bodies leaning on resting ones this step (woken after the step's collisions, for the next step). */
-  wake: number[];
   /** Sleeping bodies reached by moving ones in this pass of the shape collision (woken within the step). */
   wakeNow: number[];
   /** Rows the emptied buffer held before `rotateManifolds` (the step before's, for end events). */
@@ -293,6 +300,9 @@ export function createShapeCollisionState(): ShapeCollisionState {
     manifolds: createManifoldBuffer(),
     previous: createManifoldBuffer(),
     slots: new Int32Array(0),
+    dormant: createManifoldBuffer(16),
+    dormantSlots: new Int32Array(0),
+    dormantWakes: 0,
     sensorPairs: new Set(),
     scratch: createShapeScratch(),
     softness: new Float64Array(3),
@@ -302,7 +312,6 @@ export function createShapeCollisionState(): ShapeCollisionState {
     firstShape: new Int32Array(0),
     originX: new Float64Array(0),
     originY: new Float64Array(0),
-    wake: [],
     wakeNow: [],
     lastCount: 0,
     sensorNow: new Set(),

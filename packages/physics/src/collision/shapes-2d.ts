@@ -1,5 +1,4 @@
 import { hasComponent } from 'bitecs';
-import { wakeIsland } from '../islands/sleep.js';
 import { wakeIslandForStep } from '../islands/step-wake.js';
 import { type ConvexGeometry, createGeometry, ShapeKind } from '../shapes/geometry-2d.js';
 import { jointKeepsApart } from '../world/joint-no-collide.js';
@@ -50,7 +49,6 @@ export function shapeCollisionSystem(world: PhysicsWorld): void {
   const c = world.components;
   for (let pass = 0; ; pass++) {
     st.manifolds.count = 0;
-    st.wake.length = 0;
     st.wakeNow.length = 0;
     gatherColliders(world, st);
     findPairs(st.scratch, st.anyMoving);
@@ -78,11 +76,6 @@ export function shapeCollisionSystem(world: PhysicsWorld): void {
   const m = st.manifolds;
   for (let i = 0; i < m.count; i++) points += m.pointCount[i]!;
   cs.stats.contacts = cs.contacts.count + points;
-  if (st.wake.length > 0) {
-    // Sleeping bodies leaning on a resting body: woken for the next step (this step they held still).
-    for (const e of st.wake) if (hasComponent(world, e, c.Sleeping)) wakeIsland(world, e);
-    st.wake.length = 0;
-  }
 }
 
 /** Passes of the shape collision after which no more sleeping islands are woken within the step. */
@@ -310,7 +303,10 @@ function collidePairs(world: PhysicsWorld, st: ShapeCollisionState): void {
     if (tA === BodyType.Sleeping || tB === BodyType.Sleeping) {
       // A sleeping body reached by a moving (kinematic, or dynamic and not resting) one wakes now and
       // takes part in this step's solve (the pass is run again). Met by a resting body it holds still
-      // as immovable geometry this step, and wakes for the next.
+      // as immovable geometry this step, and wakes for the next only if the resting body leaned on
+      // it (the contact pushed: islands/sleep.ts wakePushedSleepers2D); a resting neighbour within
+      // the speculative distance but not touching leaves it asleep (woken, it would rest apart from
+      // the neighbour's island, fall asleep after it and wake it in turn, for ever).
       const sleeper = tA === BodyType.Sleeping ? ba : bb,
         other = sleeper === ba ? bb : ba,
         tOther = sleeper === ba ? tB : tA;
@@ -318,7 +314,6 @@ function collidePairs(world: PhysicsWorld, st: ShapeCollisionState): void {
         st.wakeNow.push(sleeper);
         continue;
       }
-      st.wake.push(sleeper);
     }
     const mo = rowMotion;
     mo[RowMotion.XA] = X[i]!;

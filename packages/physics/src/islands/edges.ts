@@ -113,6 +113,33 @@ export function addIslandEdges2D(world: PhysicsWorld, e: IslandEdges): void {
 }
 
 /**
+ * The sleeping bodies that an awake dynamic body leaned on this step through a 2D shape contact (one
+ * of its points carried a normal impulse; the sleeper held still as immovable geometry): their
+ * islands are woken for the next step, so that the two rest, and sleep, as one island. A contact
+ * that did not push (a neighbour within the speculative distance) wakes nothing. Returns them, or
+ * null when there is none.
+ * @category Sleep
+ */
+export function pushedSleepers2D(world: PhysicsWorld): number[] | null {
+  const st = world.collision.shapes;
+  if (!st.active || !world.collision.sleep.anyAsleep) return null;
+  const type = world.collision.bodyType;
+  const m = st.previous; // this step's rows (finishManifolds made them the cache)
+  let out: number[] | null = null;
+  for (let i = 0, n = m.count; i < n; i++) {
+    const a = m.bodyA[i]!,
+      b = m.bodyB[i]!;
+    const ta = a === 0 ? BodyType.Static : type[a],
+      tb = type[b];
+    if (ta !== BodyType.Sleeping && tb !== BodyType.Sleeping) continue;
+    let pushed = false;
+    for (let p = 0, k = m.pointCount[i]!; p < k; p++) if (m.normalImpulse[2 * i + p]! > 0) pushed = true;
+    if (pushed) (out ??= []).push(ta === BodyType.Sleeping ? a : b);
+  }
+  return out;
+}
+
+/**
  * Marks `supported[x] = stamp` for both bodies of every `SUPPORTS` edge.
  * @category Sleep
  */

@@ -1,10 +1,20 @@
 import { addComponent, hasComponent, removeComponent } from 'bitecs';
+import { keepSleepingManifolds } from '../collision/dormant-manifolds-2d.js';
 import { ecsOf } from '../world/ecs-internals.js';
 import { resolveKind } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { Not, query } from '../world/query.js';
 import type { SleepTerms } from '../world/scratch.js';
-import { addBallEdges, addIslandEdges2D, emptyIslandEdges, findRoot, joinContactEdges, joinJointEdges, markSupport } from './edges.js';
+import {
+  addBallEdges,
+  addIslandEdges2D,
+  emptyIslandEdges,
+  findRoot,
+  joinContactEdges,
+  joinJointEdges,
+  markSupport,
+  pushedSleepers2D,
+} from './edges.js';
 import { addIslandEdges3D, wakeTouching3D, withShape3DBodies } from './hooks-3d.js';
 
 /**
@@ -12,12 +22,15 @@ import { addIslandEdges3D, wakeTouching3D, withShape3DBodies } from './hooks-3d.
  * costing anything. A dynamic collider whose speed stays below `linearSpeed` and spin below
  * `angularSpeed` accumulates rest time; islands are the bodies joined by contacts that carried an
  * impulse this step (union-find); when every body of an island has rested `timeToSleep`, the island
- * sleeps: velocities zeroed, the `Sleeping` tag added, and integration and the contact solver skip it.
+ * sleeps: velocities zeroed, the `Sleeping` tag added, and integration and the contact solver skip it;
+ * in 2D its shape contacts' impulses are kept for the step it wakes in (collision/dormant-manifolds-2d.ts).
  * Only a supported body rests: one that carried a contact impulse this step. A body in free flight
  * (a balloon creeping to its equilibrium height, a projectile at its apex) never sleeps, however slow.
  *
- * A sleeping body wakes when an awake or kinematic body comes into contact range (the broadphase
- * wakes it for that step), when its velocity is written (`setVelocity`, `applyImpulse`, or a direct
+ * A sleeping body wakes when a moving (kinematic, or dynamic and not resting) body comes into
+ * contact range (the broadphase wakes it for that step), in 2D when a resting body leans on it (their
+ * shape contact pushed: woken for the next step, so the two rest as one island; a resting neighbour
+ * that does not push leaves it asleep, and in 3D a resting body never wakes it), when its velocity is written (`setVelocity`, `applyImpulse`, or a direct
  * write to the store, noticed at the next step), when `wakeBody` is called, when gravity changes, or
  * when a body it touched is removed. Bodies driven by time-varying forces (driving or random forces,
  * thrust) or held by springs never sleep: their forces would be ignored while asleep.
@@ -167,6 +180,8 @@ export function sleepSystem(world: PhysicsWorld): void {
   const lin2 = sl.linearSpeed * sl.linearSpeed,
     ang2 = sl.angularSpeed * sl.angularSpeed;
   const dt = world.dt;
+  // Sleepers a resting body leaned on: woken for the next step (islands/edges.ts pushedSleepers2D).
+  if (world.dimensions === 2) wakeIslandsOf(world, pushedSleepers2D(world));
   // The island graph of this step: every contact and joint, from every store (islands/edges.ts).
   const edges = emptyIslandEdges();
   addBallEdges(world, edges);
@@ -251,6 +266,8 @@ export function sleepSystem(world: PhysicsWorld): void {
       addComponent(world, e, c.Sleeping);
     }
     sl.anyAsleep = true;
+    // Their contacts' impulses, for the step they wake in (collision/dormant-manifolds-2d.ts).
+    if (world.dimensions === 2) keepSleepingManifolds(world);
   }
   cs.stats.sleeping = sl.anyAsleep ? query(world, terms.sleeping).length : 0;
 }

@@ -1,6 +1,7 @@
+import { findDormant, pruneDormant } from '../collision/dormant-manifolds-2d.js';
 import { keepWhileAsleep, pushEvent, resumeAfterSleep } from '../collision/events.js';
 import { MAX_MANIFOLDS } from '../collision/manifold-limits-2d.js';
-import { findPrevious, rotateManifolds, type ShapeCollisionState } from '../collision/manifolds-2d.js';
+import { findPrevious, type ManifoldBuffer, rotateManifolds, type ShapeCollisionState } from '../collision/manifolds-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
 import {
   BS2_INV_INERTIA,
@@ -74,6 +75,12 @@ function previousRow(st: ShapeCollisionState, guess: number, a: number, b: numbe
   return findPrevious(st, a, b);
 }
 
+/** The point of row j of `src` with feature id `id`, as its index 2 j + k in the point arrays, or -1. */
+function samePoint(src: ManifoldBuffer, j: number, id: number): number {
+  for (let k = 0, pm = src.pointCount[j]!; k < pm; k++) if (src.id[2 * j + k] === id) return 2 * j + k;
+  return -1;
+}
+
 /**
  * Gives every moving body of a shape manifold a solver index (continuing the list the ball contacts
  * started, same stamp), writes the rows' indices, and returns the new solver body count.
@@ -115,6 +122,7 @@ export function prepareManifolds(world: PhysicsWorld): void {
   st.solverRows = R;
   prepareRows(world, R, n);
   prepareBlocks(cs, R, n);
+  pruneDormant(world);
 }
 
 /** prepareManifolds, per manifold: its bodies, normal, material, warm start and points (all but the block). */
@@ -138,7 +146,8 @@ function prepareRows(world: PhysicsWorld, R: Float64Array, n: number): void {
   const box = cs.boundary;
   const stamp = world.spawnStamp;
   const stick = cs.settings.stickSpeed;
-  const prev = st.previous;
+  const prev = st.previous,
+    dormant = st.dormant;
   const shapeA = buf.shapeA,
     shapeB = buf.shapeB,
     IA = buf.ia,
@@ -203,8 +212,14 @@ function prepareRows(world: PhysicsWorld, R: Float64Array, n: number): void {
     stampB[i] = stamp[eb]!;
     let j = previousRow(st, i + shift, ea, eb);
     if (j >= 0) shift = j - i;
-    if (j >= 0 && (prev.stampA[j] !== stampA[i] || prev.stampB[j] !== stampB[i])) j = -1;
-    R[r + MR_ROLLING_IMPULSE] = j >= 0 ? prev.rollingImpulse[j]! : 0;
+    // The warm start: last step's row, or for a pair that just woke the row it fell asleep with.
+    let src = prev;
+    if (j < 0 && dormant.count > 0) {
+      j = findDormant(st, ea, eb);
+      src = dormant;
+    }
+    if (j >= 0 && (src.stampA[j] !== stampA[i] || src.stampB[j] !== stampB[i])) j = -1;
+    R[r + MR_ROLLING_IMPULSE] = j >= 0 ? src.rollingImpulse[j]! : 0;
     const vax = sb[oa + BS2_VX]!,
       vay = sb[oa + BS2_VY]!,
       wa = sb[oa + BS2_W]!,
@@ -239,19 +254,10 @@ function prepareRows(world: PhysicsWorld, R: Float64Array, n: number): void {
       VN[q] = vn;
       const vt = Math.abs(-dvx * ny + dvy * nx);
       if (vt > vtMax) vtMax = vt;
-      // Warm start: last step's impulses of the point with the same feature id.
-      let ln = 0,
-        lt = 0;
-      if (j >= 0) {
-        const id = ID[q]!;
-        for (let k = 0, pm = prev.pointCount[j]!; k < pm; k++) {
-          if (prev.id[2 * j + k] === id) {
-            ln = prev.normalImpulse[2 * j + k]!;
-            lt = prev.tangentImpulse[2 * j + k]!;
-            break;
-          }
-        }
-      }
+      // Warm start: the impulses of the warm-start row's point with the same feature id.
+      const w = j >= 0 ? samePoint(src, j, ID[q]!) : -1;
+      const ln = w >= 0 ? src.normalImpulse[w]! : 0,
+        lt = w >= 0 ? src.tangentImpulse[w]! : 0;
       R[o + MP_RNA] = rnA;
       R[o + MP_RNB] = rnB;
       R[o + MP_RTA] = rtA;
