@@ -5,10 +5,9 @@ import { growManifoldBuffer, type ManifoldBuffer, pairHash, type ShapeCollisionS
 /**
  * The warm start of sleeping 2D shape contacts. A pair of sleeping bodies (or a sleeping body and
  * static geometry) is not collided, so its manifold drops out of the previous step's rows, which are
- * the only warm start the solver reads (solver/manifold-prepare-2d.ts). Woken, a resting pile then
- * started its contacts from zero impulse: every body fell a step's worth of gravity before its
- * contacts caught it (a castle of four storeys jumped to 0.07 m/s, over the sleep threshold, and
- * moved 0.3 mm at each wake). Box2D v3 keeps a sleeping island's contact constraints, impulses
+ * the only warm start the solver reads (solver/manifold-prepare-2d.ts). Without these rows a woken
+ * resting pile would start its contacts from zero impulse: every body falls a step's worth of gravity
+ * before its contacts catch it, which can lift a tall stack over the sleep threshold. Box2D v3 keeps a sleeping island's contact constraints, impulses
  * included, in its sleeping solver set and restores them when the island wakes; here the touching
  * rows of the bodies that fall asleep are copied to `ShapeCollisionState.dormant`, where the first
  * step after their wake finds them (`findDormant`), and are dropped once their bodies are awake
