@@ -1124,6 +1124,25 @@ function circle(color: number, opacity: number): LineLoop {
 /** The arrival zone round the target, and the ghost of the target where the plan meets it. */
 const zoneRing = circle(0x7ee787, 0.9);
 const ghostRing = circle(0xffffff, 0.8);
+
+/**
+ * Draws `line` (a CIRCLE-point loop) as the true edge of a capture zone: the heliocentric circle of
+ * radius `r` AU round (cx, cz) in the plane y = `cy` (AU), each point carried to the display by
+ * `place`. The display squeezes distances (./distance-scale.ts), differently along and across the
+ * radius, so a circle scaled by one number is not the zone's edge; drawn point by point it is, and a
+ * place inside the zone is drawn inside the ring. `grow` widens it (the live ring's pulse).
+ */
+function zoneEdge(line: LineLoop, cx: number, cy: number, cz: number, r: number, grow = 1): void {
+  const attr = line.geometry.getAttribute('position') as Float32BufferAttribute;
+  const arr = attr.array as Float32Array;
+  for (let i = 0; i < CIRCLE; i++) {
+    const a = (2 * Math.PI * i) / CIRCLE;
+    place(cx + r * grow * Math.cos(a), cy, cz + r * grow * Math.sin(a), arr, 3 * i);
+  }
+  attr.needsUpdate = true;
+  line.position.set(0, 0, 0);
+  line.scale.setScalar(1);
+}
 const trailLine = dynamicLine(TRAIL_POINTS, new LineBasicMaterial({ color: 0xfff1b8, transparent: true, opacity: 0.85 }));
 const probeMesh = new Mesh(sphere, new MeshBasicMaterial({ color: 0xffffff }));
 app.scene.add(probeMesh);
@@ -1536,6 +1555,9 @@ function frame(): void {
   if (tableFrame++ % 15 === 0 && table.open) updateTable();
 }
 
+/** The forecast (its key) whose closest approach the ghost ring was last drawn for. */
+let ghostKey = '';
+
 /** The aim arrow, the plan, the ghost and the zone (aiming), or the probe and its trail (flying). */
 function drawLaunch(world: PhysicsWorld): void {
   const m = mission();
@@ -1546,14 +1568,14 @@ function drawLaunch(world: PhysicsWorld): void {
   heliocentricState(world, handles, handles.bodies[m.target], state6);
   const rT = Math.hypot(state6[0]!, state6[1]!, state6[2]!);
   const zoneShown = ((displayRadius(rT + m.zone, trueScale) - displayRadius(Math.max(0, rT - m.zone), trueScale)) / 2) * UNITS_PER_AU;
-  const zone = Math.max(zoneShown, drawnRadius(m.target) * UNITS_PER_AU * 1.6);
-  zoneRing.position.set(shown[3 * targetI]!, shown[3 * targetI + 1]!, shown[3 * targetI + 2]!);
-  zoneRing.scale.setScalar(zone * (1 + 0.06 * Math.sin(performance.now() / 250)));
+  // The ring is the zone itself (the flight's arrival test), not a size chosen to look right.
+  const zone = zoneShown;
+  zoneEdge(zoneRing, state6[0]!, state6[1]!, state6[2]!, m.zone, 1 + 0.06 * Math.sin(performance.now() / 250));
   (zoneRing.material as LineBasicMaterial).color.setHex(phase === 'done' && flight?.state === 'arrived' ? 0xffe066 : 0x7ee787);
   const flashAge = (performance.now() - arrivalAt) / ARRIVAL_FLASH_MS;
   arrivalGlow.visible = flashAge >= 0 && flashAge < 1;
   if (arrivalGlow.visible) {
-    arrivalGlow.position.copy(zoneRing.position);
+    arrivalGlow.position.set(shown[3 * targetI]!, shown[3 * targetI + 1]!, shown[3 * targetI + 2]!);
     arrivalGlow.scale.setScalar(zone * (2 + 10 * flashAge));
     arrivalGlow.material.opacity = 1 - flashAge;
   }
@@ -1611,15 +1633,18 @@ function drawLaunch(world: PhysicsWorld): void {
     // While aiming the dots do not say whether it arrives (the player judges); in flight they do.
     const judged = arrived && !aiming;
     (planDots.material as PointsMaterial).color.setHex(judged ? 0x7ee787 : sun ? 0xffb4a8 : 0x9fd3ff);
+    // The zone's edge where the target is at the closest approach, cut at the probe's height there:
+    // the probe's place then (the white dot) is inside this ring exactly when it comes within the
+    // zone, which is when the forecast, and the flight, arrive.
+    const dy = f.probeAt[1]! - f.targetAt[1]!;
+    zoneEdge(ghostRing, f.targetAt[0]!, f.probeAt[1]!, f.targetAt[2]!, Math.sqrt(Math.max(0, m.zone * m.zone - dy * dy)));
+    ghostKey = forecastKey;
     place(f.targetAt[0]!, f.targetAt[1]!, f.targetAt[2]!, scratch3);
-    ghostRing.position.set(scratch3[0]!, scratch3[1]!, scratch3[2]!);
-    ghostRing.scale.setScalar(zone);
     (ghostRing.material as LineBasicMaterial).color.setHex(judged ? 0x7ee787 : hexColor(m.target));
     ghostRing.visible = !sun;
     // Named while aiming: the ring is where the target will be, the white dot where the probe is then.
-    const ringPx =
-      (zone * app.canvas.clientHeight) /
-      (2 * app.camera.position.distanceTo(ghostRing.position) * Math.tan((app.camera.fov * Math.PI) / 360));
+    v.set(scratch3[0]!, scratch3[1]!, scratch3[2]!);
+    const ringPx = (zone * app.canvas.clientHeight) / (2 * app.camera.position.distanceTo(v) * Math.tan((app.camera.fov * Math.PI) / 360));
     // Not while time runs (the forecast drawn lags the moment; the names would jump about).
     const tagged = aiming && !sun && currentRate() === 0;
     placeTag(0, tagged ? `${m.target} at arrival` : '', scratch3[0]!, scratch3[1]!, scratch3[2]!, ringPx + 2);
@@ -1960,30 +1985,27 @@ function hint(m: Mission): string {
 }
 
 /**
- * The line's end for the forecast shown on `m`, and its class. While aiming it does not say whether
- * the launch arrives (the player judges that from the dots, the probe's place at the closest
- * approach and the target's ring there): it says the path crosses the target's orbit and asks
- * whether the target is there then, and names the stars a launch of this speed earns if it
- * arrives, or says so when the path cannot reach the target's orbit or falls into the Sun. In
- * flight it gives the course's verdict (burns are judged by it).
+ * The line's end for the forecast shown on `m`, and its class: the forecast's verdict (the flight
+ * flown ahead with its own physics, ./forecast.ts; the flight does the same). The ring "at arrival"
+ * and the white dot on the map are drawn from the same closest approach, so the line and the map
+ * agree: ✓ exactly when the dot is inside the ring. A launch that does not get out (or in) as far as
+ * the target will be then says how far it gets; otherwise the line says by how much it misses.
  */
 function verdict(m: Mission): [string, string] {
   const f = forecast;
   const scheme = f.scheme === 'rk4' ? '' : ` (forecast with rk4; this flight uses ${f.scheme})`;
   if (f.outcome === 'sun') return [`✗ falls into the Sun${scheme}`, 'bad'];
   if (phase === 'aim') {
-    const rT = distanceFromSun(m.target);
+    if (f.outcome === 'arrived')
+      return [`✓ meets ${m.target} on day ${Math.round(f.end)} · ${starText(starsFor(m, aim.speed))}${scheme}`, 'ok'];
+    // The target's distance from the Sun when the probe comes closest (not now: it moves meanwhile).
+    const rT = Math.hypot(f.targetAt[0]!, f.targetAt[1]!, f.targetAt[2]!);
     const outward = rT > distanceFromSun('Earth');
-    if (outward && f.outcome !== 'arrived' && f.farthest < rT - m.zone)
-      return [`✗ goes out only to ${f.farthest.toFixed(2)} AU from the Sun; ${m.target} is at ${rT.toFixed(2)} AU${scheme}`, 'bad'];
-    if (!outward && f.outcome !== 'arrived' && f.nearest > rT + m.zone)
-      return [`✗ falls in only to ${f.nearest.toFixed(2)} AU from the Sun; ${m.target} is at ${rT.toFixed(2)} AU${scheme}`, 'bad'];
-    // Not a verdict: the path gets as far as the orbit, and whether the target is there then is for
-    // the player to judge from the map ("reaches Venus's orbit" read as a hit for a launch that missed).
-    return [
-      `crosses ${m.target}’s orbit: is ${m.target} there then? · ${starText(starsFor(m, aim.speed))} if it arrives${scheme}`,
-      'judge',
-    ];
+    if (outward && f.farthest < rT - m.zone)
+      return [`✗ goes out only to ${f.farthest.toFixed(2)} AU from the Sun; ${m.target} will be at ${rT.toFixed(2)} AU${scheme}`, 'bad'];
+    if (!outward && f.nearest > rT + m.zone)
+      return [`✗ falls in only to ${f.nearest.toFixed(2)} AU from the Sun; ${m.target} will be at ${rT.toFixed(2)} AU${scheme}`, 'bad'];
+    return [`✗ misses ${m.target} by ${f.closest.toFixed(2)} AU (the ring is ${m.zone} AU)${scheme}`, 'bad'];
   }
   if (f.outcome === 'arrived') return [`✓ arrives on day ${Math.round(f.end)}${scheme}`, 'ok'];
   return [`✗ misses ${m.target}: closest ${f.closest.toFixed(2)} AU (the ring is ${m.zone} AU)${scheme}`, 'bad'];
@@ -2445,6 +2467,7 @@ shell.expose({
       distance: forecast.closest,
       sun: forecast.outcome === 'sun',
       current: forecastKey !== '' && forecastKey === wantedKey(),
+      key: forecastKey,
     },
     flight: flight
       ? { state: flight.state, elapsed: flight.elapsed, closest: flight.closest, fuelUsed: flight.fuelUsed, burns: flight.burns }
@@ -2485,6 +2508,24 @@ shell.expose({
    * the probe at the closest approach (a miss) and the target's own dots (while aiming) show, and the
    * forecast's points up to that time and in all.
    */
+  /**
+   * The ghost ring and the white dot as the last frame drew them, canvas px: the ring's points (x, y
+   * pairs) and the dot, with the key of the forecast they were drawn for (`mission().plan.key`).
+   */
+  ghost: () => {
+    const attr = ghostRing.geometry.getAttribute('position') as Float32BufferAttribute;
+    const w = app.canvas.clientWidth,
+      h = app.canvas.clientHeight;
+    const px = (p: Vector3): [number, number] => {
+      p.project(app.camera);
+      return [((p.x + 1) / 2) * w, ((1 - p.y) / 2) * h];
+    };
+    ghostRing.updateMatrixWorld();
+    const ring: [number, number][] = [];
+    for (let i = 0; i < CIRCLE; i++) ring.push(px(new Vector3().fromBufferAttribute(attr, i).applyMatrix4(ghostRing.matrixWorld)));
+    const dot = new Vector3().fromBufferAttribute(probeThen.geometry.getAttribute('position') as Float32BufferAttribute, 0);
+    return { key: ghostKey, visible: ghostRing.visible, ring, dot: px(dot) };
+  },
   preview: () => ({
     dots: planDotsShown,
     shownPoints: planPointsShown,
