@@ -6,9 +6,9 @@
  *
  * The game (./missions.ts): each mission names a planet. The player turns the launch arrow at the
  * Earth and sets the launch speed while time waits; dots show at once where the probe will go and a
- * ghost ring where the planet will be then ("Mars at arrival") with the probe's place then; the
- * player judges from them whether it arrives (the status line says only whether the path reaches
- * the planet's orbit, and the stars the speed earns; in flight it gives the course's verdict). That
+ * ghost ring, the arrival zone's true edge, where the planet will be then ("Mars at arrival") with
+ * the probe's place then, inside the ring exactly when it arrives; the status line gives the same
+ * verdict (and the stars the speed earns), and in flight the course's. That
  * forecast (./forecast.ts) is the flight itself, flown ahead with the world's scheme and the
  * flight's step, so what it says is what the launch does. Launch, and the probe flies in the physics
  * world, pulled by the Sun and every planet, while time speeds up; mid-course burns (the same keys
@@ -1630,7 +1630,7 @@ function drawLaunch(world: PhysicsWorld): void {
     const then = probeThen.geometry.getAttribute('position') as Float32BufferAttribute;
     place(f.probeAt[0]!, f.probeAt[1]!, f.probeAt[2]!, then.array as Float32Array, 0);
     then.needsUpdate = true;
-    // While aiming the dots do not say whether it arrives (the player judges); in flight they do.
+    // The dots turn green on an arriving course in flight (while aiming the line and ring say it).
     const judged = arrived && !aiming;
     (planDots.material as PointsMaterial).color.setHex(judged ? 0x7ee787 : sun ? 0xffb4a8 : 0x9fd3ff);
     // The zone's edge where the target is at the closest approach, cut at the probe's height there:
@@ -1755,7 +1755,6 @@ style.textContent = `
 .ss-status .ss-stars { color: #ffd166; letter-spacing: 1px; }
 .ss-status .ss-brief { color: #cfd8e6; font-size: 12px; min-height: 1.4em; }
 .ss-status .ss-line.ok { color: #7ee787; }
-.ss-status .ss-line.judge { color: #cfe3ff; }
 .ss-status .ss-line.bad { color: #ffb4a8; }
 .ss-status .ss-line.edge { color: #ffd479; }
 .ss-status .ss-line.won { color: #7ee787; font-weight: 700; }
