@@ -2134,7 +2134,7 @@ labelLayer.append(arrivalBanner);
 const cardStyle = document.createElement('style');
 cardStyle.textContent = `
 .ss-card { position: absolute; left: 50%; top: 50%; transform: translate(-50%, -50%); z-index: 6; width: min(380px, calc(100% - 24px));
-  box-sizing: border-box; padding: 14px 16px 12px; border-radius: 14px; background: rgba(10, 14, 24, 0.94); border: 1px solid #4a5a78;
+  box-sizing: border-box; padding: 14px 16px 12px; border-radius: 14px; background: rgb(10, 14, 24); border: 1px solid #4a5a78;
   color: #e8ecf1; font: 14px/1.45 system-ui, sans-serif; text-align: center; box-shadow: 0 8px 30px rgba(0, 0, 0, 0.6); }
 .ss-card[hidden] { display: none; }
 .ss-card h2 { margin: 0 0 2px; font-size: 20px; color: #ffe066; }

@@ -247,6 +247,12 @@ describe('projects', () => {
     await g.waitFor(() => (window.game as unknown as Solar).mission().plan.current || null, null);
     await g.page.evaluate(() => (window.game as unknown as Solar).launch());
     expect(await g.page.evaluate(() => (window.game as unknown as Solar).finishFlight())).toBe('arrived');
+    // The result card hides the map under it: its ground is opaque (the planets' names showed through).
+    const ground = await g.waitFor(() => {
+      const card = document.querySelector<HTMLElement>('.ss-card');
+      return card && !card.hidden ? getComputedStyle(card).backgroundColor : null;
+    }, null);
+    expect(ground).toMatch(/^rgb\(\d+, \d+, \d+\)$/);
     expect(g.errors).toEqual([]);
     await g.close();
   });
