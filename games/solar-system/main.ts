@@ -232,12 +232,14 @@ function createWorld(): PhysicsWorld {
 const TICK = 1 / 60;
 
 /**
- * How long a flight's time runs slow after a burn, ms, and how slow (a share of its rate): a player
- * tapping a burn the hint asks for six times takes two seconds, 50 days of a flight to Mars, and the
- * later burns did less than the hint (worked out for burns now) said.
+ * How long a flight's time holds still after a burn, ms, and the share of its rate it runs at then
+ * (none): the hint's "Press ↓ 4 times now" is worked out for burns all made now, and a player's
+ * taps come a fraction of a second apart. With time running on (at a fifth of the rate it did) the
+ * later burns did less than the hint said and it asked for more once the fuel was gone; held still,
+ * taps less than BURN_SLOW_MS apart all act at the same moment of the flight.
  */
 const BURN_SLOW_MS = 800;
-const BURN_SLOW = 0.2;
+const BURN_SLOW = 0;
 
 /** The flying probe's distance from the mission's target, AU (Infinity with no flight). */
 function targetDistance(): number {
@@ -2415,6 +2417,8 @@ shell.expose({
     solarSystemErrors(shell.world, handles, errors);
     return Object.fromEntries(SOLAR_SYSTEM_PLANETS.map((p, i) => [p, errors[i]!]));
   },
+  /** Days per real second time runs at now, and real ms since the last burn (Infinity: none). */
+  rate: () => ({ days: currentRate(), sinceBurn: performance.now() - lastBurn }),
   /** Sets the aiming rate, simulated days per real second, clamped to [0, 400]. */
   setRate,
   /** Runs time to the next launch window and stops there (a tap of W or of the Wait button). */

@@ -174,7 +174,7 @@ describe('projects', () => {
     type Plan = { hit: boolean; distance: number; current: boolean; key: string };
     type Ghost = { key: string; visible: boolean; ring: [number, number][]; dot: [number, number] };
     type Solar = {
-      mission(): { phase: string; plan: Plan };
+      mission(): { phase: string; plan: Plan; flight: { burns: number } | null };
       ghost(): Ghost;
       startMission(i: number): void;
       waitForWindow(): void;
@@ -253,6 +253,22 @@ describe('projects', () => {
       return card && !card.hidden ? getComputedStyle(card).backgroundColor : null;
     }, null);
     expect(ground).toMatch(/^rgb\(\d+, \d+, \d+\)$/);
+    // In flight a burn holds time still for a moment, so the taps of a hint's "Press ↓ 4 times now"
+    // all act at the moment it was worked out for (time ran on at a fifth of its rate and the hint
+    // then asked for more burns than the fuel allowed).
+    await g.page.evaluate(() => (window.game as unknown as Solar).startMission(1));
+    await g.page.evaluate(([a, s]) => (window.game as unknown as Solar).setAim(a!, s!), hitAim!);
+    await g.waitFor(() => (window.game as unknown as Solar).mission().plan.current || null, null);
+    await g.page.evaluate(() => (window.game as unknown as Solar).launch());
+    type Rate = { rate(): { days: number; sinceBurn: number } };
+    await g.waitFor(() => (window.game as unknown as Rate).rate().days > 0 || null, null);
+    await g.press('ArrowDown');
+    const held = await g.waitFor(() => {
+      const game = window.game as unknown as Solar & Rate;
+      return game.mission().flight?.burns === 1 ? game.rate() : null;
+    }, null);
+    // Read in the same moment as the burn count; only meaningful within the hold (800 ms).
+    expect(held.sinceBurn >= 800 || held.days === 0, JSON.stringify(held)).toBe(true);
     expect(g.errors).toEqual([]);
     await g.close();
   });
