@@ -1017,6 +1017,16 @@ for (const [device, options] of [
         return { row: w.banner().stars, stars: w.stars() };
       });
       expect(won.row).toEqual([won.stars, 3]);
+      // The ball lies in the basket, drawn behind its front (see-through wicker, the rim over it): it
+      // read as resting on the rim with the whole basket drawn behind it.
+      type OverBall = { overBall(): { above: string[]; front: number[]; ball: number[] } };
+      const over = await g.page.evaluate(() => (window.game as unknown as OverBall).overBall());
+      expect(over.above).toContain('basket front');
+      const [fx, fy, fw, fh] = over.front as [number, number, number, number];
+      expect(over.ball[0]).toBeGreaterThan(fx);
+      expect(over.ball[0]).toBeLessThan(fx + fw);
+      expect(over.ball[1]).toBeGreaterThan(fy);
+      expect(over.ball[1]).toBeLessThan(fy + fh);
       // The cut snapped and the win chimed.
       await g.waitFor((n) => (window.game as unknown as { sound: { played: number } }).sound.played >= n + 2, played);
       // The button leaves the basket and the ball landing in it in sight: it keeps 40 px or more to
