@@ -769,6 +769,20 @@ shell.expose({
   starsAt: () => scene.level.stars.map(([x, y], i) => ({ x, y, caught: game.caught[i]! })),
   /** Rope pieces drawn in the last frame (one a whole rope; each cut adds one). */
   ropePieces: () => view.pieces,
+  /**
+   * The drawing order over the ball as last drawn: the layers drawn after the ball's sprite (by
+   * label), the basket front's box (x, y, width, height, canvas px) and the ball's drawn centre (px).
+   */
+  overBall: () => {
+    const layers = view.container.children;
+    const ballAt = layers.findIndex((c) => c.label === 'ball');
+    const sprite = layers[ballAt];
+    return {
+      above: layers.slice(ballAt + 1).map((c) => c.label),
+      front: [...view.frontBox],
+      ball: sprite ? [sprite.x, sprite.y] : [Number.NaN, Number.NaN],
+    };
+  },
   /** Goes to level n (1-based). */
   goTo: (n: number) => {
     params.level = Math.min(LEVELS.length, Math.max(1, Math.round(n)));

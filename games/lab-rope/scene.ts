@@ -74,19 +74,20 @@ export const LEVELS: readonly Level[] = Object.freeze([
     hint: 'Swipe across the rope to cut it. Time the cut so the ball falls into the basket.',
     anchors: [[0, 8.4]],
     ball: [-2, 6.7],
-    // The basket stands away from the swing's ends and from the wall, 1.3 m wide: a first level a
-    // phone's finger lands. On the first swing cuts win from 0.5 to 0.64 s (0 to 2 stars), from 0.94
-    // to 1.38 s (over the basket on the way back, 2 stars) and from 1.8 to 2.26 s (just after the
-    // ball turns back at the right end); the three stars, off the path to either side, only from
-    // 1.96 to 2.12 s (scripts/lab-rope-cuts.mjs 1; test/games/lab-rope.test.ts). At 1 m wide only the
-    // last window won, 1.84 to 2.21 s: a stranger on a phone found it too fiddly.
-    basket: [1, 0],
+    // The basket stands under the right end of the swing, where the ball slows, stops and turns
+    // back (as in the wide room's first level): a cut on the way up to that end or at it drops the
+    // ball in, from 0.6 to 2.06 s, and the three stars hang along the drop from there (3 stars 1.0 to
+    // 1.88 s; scripts/lab-rope-cuts.mjs 1; test/games/lab-rope.test.ts). The basket stood at x = 1,
+    // left of that end, won only after the ball turned back (1.8 to 2.26 s), with the stars
+    // zigzagging: a stranger on a phone cut at the far end and missed right, then a little later
+    // missed left.
+    basket: [1.75, 0],
     basketWidth: 1.3,
     basketDepth: 0.75,
     stars: [
-      [1.8, 5.2],
-      [1, 3.1],
-      [1.55, 1.85],
+      [2.0, 5.3],
+      [2.03, 4.0],
+      [2.06, 2.7],
     ],
     view: VIEW,
   },

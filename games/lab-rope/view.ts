@@ -95,8 +95,16 @@ export class RopeView {
   private readonly room = new Graphics({ label: 'room' });
   private readonly cords = new Graphics({ label: 'ropes' });
   private readonly shadow = new Graphics({ label: 'shadow' });
-  private readonly ballSprite = new Sprite(ballTexture());
+  private readonly ballSprite = Object.assign(new Sprite(ballTexture()), { label: 'ball' });
   private readonly front = new Graphics({ label: 'front' });
+  /**
+   * The basket's front, drawn over the ball: a ball in the basket shows through the wicker below
+   * the rim instead of sitting on top of the whole basket drawn behind it (on the win screen it read
+   * as resting on the rim).
+   */
+  private readonly basketFront = new Graphics({ label: 'basket front' });
+  /** The basket front's box as last drawn: x, y, width, height, px. */
+  readonly frontBox = [0, 0, 0, 0];
   private roomKey = '';
 
   /** The wall and the room, drawn into one texture when the view changes (one quad a frame, not their many shapes). */
@@ -106,7 +114,7 @@ export class RopeView {
     this.ballSprite.anchor.set(0.5);
     this.still.addChild(this.wall, this.room);
     this.still.cacheAsTexture(true);
-    this.container.addChild(this.still, this.shadow, this.cords, this.ballSprite, this.front);
+    this.container.addChild(this.still, this.shadow, this.cords, this.ballSprite, this.basketFront, this.front);
   }
 
   /**
@@ -181,6 +189,7 @@ export class RopeView {
     this.ballSprite.width = 2 * r;
     this.ballSprite.height = 2 * r;
     this.ballSprite.rotation = world.components.Angle.value[be]! * -1;
+    this.drawBasketFront(level, cam);
     // Stars, turning and pulsing; caught ones are gone.
     const f = this.front;
     f.clear();
@@ -200,6 +209,34 @@ export class RopeView {
         .fill({ color: 0xffd23f })
         .stroke({ width: Math.max(1.5, R * 0.12), color: 0xb07a00 });
     });
+  }
+
+  /**
+   * The basket's front over the ball: the wicker see-through (a ball inside shows dimmed behind it),
+   * its weave and the rim band solid, on the room's basket (drawRoom) in the same place.
+   */
+  private drawBasketFront(level: Level, cam: Camera): void {
+    const g = this.basketFront;
+    g.clear();
+    const X = (x: number) => cam.toScreenX(x),
+      Y = (y: number) => cam.toScreenY(y),
+      S = (l: number) => cam.toScreenLength(l);
+    const [bx, by] = level.basket,
+      half = level.basketWidth / 2 + WALL;
+    const l = X(bx - half),
+      r = X(bx + half),
+      t = Y(by + level.basketDepth),
+      b = Y(by);
+    g.poly([l, t, r, t, r - S(0.06), b, l + S(0.06), b])
+      .fill({ color: 0xb9853f, alpha: 0.55 })
+      .stroke({ width: 2, color: 0x6e4a1c });
+    for (let y = t + S(0.12); y < b; y += S(0.12)) g.moveTo(l + S(0.03), y).lineTo(r - S(0.03), y);
+    g.stroke({ width: Math.max(1, S(0.025)), color: 0x8a5f26, alpha: 0.8 });
+    g.rect(l - S(0.03), t - S(0.05), r - l + S(0.06), S(0.1)).fill({ color: 0x8a5f26 });
+    this.frontBox[0] = l - S(0.03);
+    this.frontBox[1] = t - S(0.05);
+    this.frontBox[2] = r - l + S(0.06);
+    this.frontBox[3] = b - t + S(0.05);
   }
 
   /** A twisted cord through `pts` (screen px), frayed at an end that was cut. */

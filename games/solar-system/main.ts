@@ -6,9 +6,9 @@
  *
  * The game (./missions.ts): each mission names a planet. The player turns the launch arrow at the
  * Earth and sets the launch speed while time waits; dots show at once where the probe will go and a
- * ghost ring where the planet will be then ("Mars at arrival") with the probe's place then; the
- * player judges from them whether it arrives (the status line says only whether the path reaches
- * the planet's orbit, and the stars the speed earns; in flight it gives the course's verdict). That
+ * ghost ring, the arrival zone's true edge, where the planet will be then ("Mars at arrival") with
+ * the probe's place then, inside the ring exactly when it arrives; the status line gives the same
+ * verdict (and the stars the speed earns), and in flight the course's. That
  * forecast (./forecast.ts) is the flight itself, flown ahead with the world's scheme and the
  * flight's step, so what it says is what the launch does. Launch, and the probe flies in the physics
  * world, pulled by the Sun and every planet, while time speeds up; mid-course burns (the same keys
@@ -232,12 +232,14 @@ function createWorld(): PhysicsWorld {
 const TICK = 1 / 60;
 
 /**
- * How long a flight's time runs slow after a burn, ms, and how slow (a share of its rate): a player
- * tapping a burn the hint asks for six times takes two seconds, 50 days of a flight to Mars, and the
- * later burns did less than the hint (worked out for burns now) said.
+ * How long a flight's time holds still after a burn, ms, and the share of its rate it runs at then
+ * (none): the hint's "Press ↓ 4 times now" is worked out for burns all made now, and a player's
+ * taps come a fraction of a second apart. With time running on (at a fifth of the rate it did) the
+ * later burns did less than the hint said and it asked for more once the fuel was gone; held still,
+ * taps less than BURN_SLOW_MS apart all act at the same moment of the flight.
  */
 const BURN_SLOW_MS = 800;
-const BURN_SLOW = 0.2;
+const BURN_SLOW = 0;
 
 /** The flying probe's distance from the mission's target, AU (Infinity with no flight). */
 function targetDistance(): number {
@@ -1124,6 +1126,25 @@ function circle(color: number, opacity: number): LineLoop {
 /** The arrival zone round the target, and the ghost of the target where the plan meets it. */
 const zoneRing = circle(0x7ee787, 0.9);
 const ghostRing = circle(0xffffff, 0.8);
+
+/**
+ * Draws `line` (a CIRCLE-point loop) as the true edge of a capture zone: the heliocentric circle of
+ * radius `r` AU round (cx, cz) in the plane y = `cy` (AU), each point carried to the display by
+ * `place`. The display squeezes distances (./distance-scale.ts), differently along and across the
+ * radius, so a circle scaled by one number is not the zone's edge; drawn point by point it is, and a
+ * place inside the zone is drawn inside the ring. `grow` widens it (the live ring's pulse).
+ */
+function zoneEdge(line: LineLoop, cx: number, cy: number, cz: number, r: number, grow = 1): void {
+  const attr = line.geometry.getAttribute('position') as Float32BufferAttribute;
+  const arr = attr.array as Float32Array;
+  for (let i = 0; i < CIRCLE; i++) {
+    const a = (2 * Math.PI * i) / CIRCLE;
+    place(cx + r * grow * Math.cos(a), cy, cz + r * grow * Math.sin(a), arr, 3 * i);
+  }
+  attr.needsUpdate = true;
+  line.position.set(0, 0, 0);
+  line.scale.setScalar(1);
+}
 const trailLine = dynamicLine(TRAIL_POINTS, new LineBasicMaterial({ color: 0xfff1b8, transparent: true, opacity: 0.85 }));
 const probeMesh = new Mesh(sphere, new MeshBasicMaterial({ color: 0xffffff }));
 app.scene.add(probeMesh);
@@ -1536,6 +1557,9 @@ function frame(): void {
   if (tableFrame++ % 15 === 0 && table.open) updateTable();
 }
 
+/** The forecast (its key) whose closest approach the ghost ring was last drawn for. */
+let ghostKey = '';
+
 /** The aim arrow, the plan, the ghost and the zone (aiming), or the probe and its trail (flying). */
 function drawLaunch(world: PhysicsWorld): void {
   const m = mission();
@@ -1546,14 +1570,14 @@ function drawLaunch(world: PhysicsWorld): void {
   heliocentricState(world, handles, handles.bodies[m.target], state6);
   const rT = Math.hypot(state6[0]!, state6[1]!, state6[2]!);
   const zoneShown = ((displayRadius(rT + m.zone, trueScale) - displayRadius(Math.max(0, rT - m.zone), trueScale)) / 2) * UNITS_PER_AU;
-  const zone = Math.max(zoneShown, drawnRadius(m.target) * UNITS_PER_AU * 1.6);
-  zoneRing.position.set(shown[3 * targetI]!, shown[3 * targetI + 1]!, shown[3 * targetI + 2]!);
-  zoneRing.scale.setScalar(zone * (1 + 0.06 * Math.sin(performance.now() / 250)));
+  // The ring is the zone itself (the flight's arrival test), not a size chosen to look right.
+  const zone = zoneShown;
+  zoneEdge(zoneRing, state6[0]!, state6[1]!, state6[2]!, m.zone, 1 + 0.06 * Math.sin(performance.now() / 250));
   (zoneRing.material as LineBasicMaterial).color.setHex(phase === 'done' && flight?.state === 'arrived' ? 0xffe066 : 0x7ee787);
   const flashAge = (performance.now() - arrivalAt) / ARRIVAL_FLASH_MS;
   arrivalGlow.visible = flashAge >= 0 && flashAge < 1;
   if (arrivalGlow.visible) {
-    arrivalGlow.position.copy(zoneRing.position);
+    arrivalGlow.position.set(shown[3 * targetI]!, shown[3 * targetI + 1]!, shown[3 * targetI + 2]!);
     arrivalGlow.scale.setScalar(zone * (2 + 10 * flashAge));
     arrivalGlow.material.opacity = 1 - flashAge;
   }
@@ -1608,18 +1632,21 @@ function drawLaunch(world: PhysicsWorld): void {
     const then = probeThen.geometry.getAttribute('position') as Float32BufferAttribute;
     place(f.probeAt[0]!, f.probeAt[1]!, f.probeAt[2]!, then.array as Float32Array, 0);
     then.needsUpdate = true;
-    // While aiming the dots do not say whether it arrives (the player judges); in flight they do.
+    // The dots turn green on an arriving course in flight (while aiming the line and ring say it).
     const judged = arrived && !aiming;
     (planDots.material as PointsMaterial).color.setHex(judged ? 0x7ee787 : sun ? 0xffb4a8 : 0x9fd3ff);
+    // The zone's edge where the target is at the closest approach, cut at the probe's height there:
+    // the probe's place then (the white dot) is inside this ring exactly when it comes within the
+    // zone, which is when the forecast, and the flight, arrive.
+    const dy = f.probeAt[1]! - f.targetAt[1]!;
+    zoneEdge(ghostRing, f.targetAt[0]!, f.probeAt[1]!, f.targetAt[2]!, Math.sqrt(Math.max(0, m.zone * m.zone - dy * dy)));
+    ghostKey = forecastKey;
     place(f.targetAt[0]!, f.targetAt[1]!, f.targetAt[2]!, scratch3);
-    ghostRing.position.set(scratch3[0]!, scratch3[1]!, scratch3[2]!);
-    ghostRing.scale.setScalar(zone);
     (ghostRing.material as LineBasicMaterial).color.setHex(judged ? 0x7ee787 : hexColor(m.target));
     ghostRing.visible = !sun;
     // Named while aiming: the ring is where the target will be, the white dot where the probe is then.
-    const ringPx =
-      (zone * app.canvas.clientHeight) /
-      (2 * app.camera.position.distanceTo(ghostRing.position) * Math.tan((app.camera.fov * Math.PI) / 360));
+    v.set(scratch3[0]!, scratch3[1]!, scratch3[2]!);
+    const ringPx = (zone * app.canvas.clientHeight) / (2 * app.camera.position.distanceTo(v) * Math.tan((app.camera.fov * Math.PI) / 360));
     // Not while time runs (the forecast drawn lags the moment; the names would jump about).
     const tagged = aiming && !sun && currentRate() === 0;
     placeTag(0, tagged ? `${m.target} at arrival` : '', scratch3[0]!, scratch3[1]!, scratch3[2]!, ringPx + 2);
@@ -1730,7 +1757,6 @@ style.textContent = `
 .ss-status .ss-stars { color: #ffd166; letter-spacing: 1px; }
 .ss-status .ss-brief { color: #cfd8e6; font-size: 12px; min-height: 1.4em; }
 .ss-status .ss-line.ok { color: #7ee787; }
-.ss-status .ss-line.judge { color: #cfe3ff; }
 .ss-status .ss-line.bad { color: #ffb4a8; }
 .ss-status .ss-line.edge { color: #ffd479; }
 .ss-status .ss-line.won { color: #7ee787; font-weight: 700; }
@@ -1960,30 +1986,27 @@ function hint(m: Mission): string {
 }
 
 /**
- * The line's end for the forecast shown on `m`, and its class. While aiming it does not say whether
- * the launch arrives (the player judges that from the dots, the probe's place at the closest
- * approach and the target's ring there): it says the path crosses the target's orbit and asks
- * whether the target is there then, and names the stars a launch of this speed earns if it
- * arrives, or says so when the path cannot reach the target's orbit or falls into the Sun. In
- * flight it gives the course's verdict (burns are judged by it).
+ * The line's end for the forecast shown on `m`, and its class: the forecast's verdict (the flight
+ * flown ahead with its own physics, ./forecast.ts; the flight does the same). The ring "at arrival"
+ * and the white dot on the map are drawn from the same closest approach, so the line and the map
+ * agree: ✓ exactly when the dot is inside the ring. A launch that does not get out (or in) as far as
+ * the target will be then says how far it gets; otherwise the line says by how much it misses.
  */
 function verdict(m: Mission): [string, string] {
   const f = forecast;
   const scheme = f.scheme === 'rk4' ? '' : ` (forecast with rk4; this flight uses ${f.scheme})`;
   if (f.outcome === 'sun') return [`✗ falls into the Sun${scheme}`, 'bad'];
   if (phase === 'aim') {
-    const rT = distanceFromSun(m.target);
+    if (f.outcome === 'arrived')
+      return [`✓ meets ${m.target} on day ${Math.round(f.end)} · ${starText(starsFor(m, aim.speed))}${scheme}`, 'ok'];
+    // The target's distance from the Sun when the probe comes closest (not now: it moves meanwhile).
+    const rT = Math.hypot(f.targetAt[0]!, f.targetAt[1]!, f.targetAt[2]!);
     const outward = rT > distanceFromSun('Earth');
-    if (outward && f.outcome !== 'arrived' && f.farthest < rT - m.zone)
-      return [`✗ goes out only to ${f.farthest.toFixed(2)} AU from the Sun; ${m.target} is at ${rT.toFixed(2)} AU${scheme}`, 'bad'];
-    if (!outward && f.outcome !== 'arrived' && f.nearest > rT + m.zone)
-      return [`✗ falls in only to ${f.nearest.toFixed(2)} AU from the Sun; ${m.target} is at ${rT.toFixed(2)} AU${scheme}`, 'bad'];
-    // Not a verdict: the path gets as far as the orbit, and whether the target is there then is for
-    // the player to judge from the map ("reaches Venus's orbit" read as a hit for a launch that missed).
-    return [
-      `crosses ${m.target}’s orbit: is ${m.target} there then? · ${starText(starsFor(m, aim.speed))} if it arrives${scheme}`,
-      'judge',
-    ];
+    if (outward && f.farthest < rT - m.zone)
+      return [`✗ goes out only to ${f.farthest.toFixed(2)} AU from the Sun; ${m.target} will be at ${rT.toFixed(2)} AU${scheme}`, 'bad'];
+    if (!outward && f.nearest > rT + m.zone)
+      return [`✗ falls in only to ${f.nearest.toFixed(2)} AU from the Sun; ${m.target} will be at ${rT.toFixed(2)} AU${scheme}`, 'bad'];
+    return [`✗ misses ${m.target} by ${f.closest.toFixed(2)} AU (the ring is ${m.zone} AU)${scheme}`, 'bad'];
   }
   if (f.outcome === 'arrived') return [`✓ arrives on day ${Math.round(f.end)}${scheme}`, 'ok'];
   return [`✗ misses ${m.target}: closest ${f.closest.toFixed(2)} AU (the ring is ${m.zone} AU)${scheme}`, 'bad'];
@@ -2113,7 +2136,7 @@ labelLayer.append(arrivalBanner);
 const cardStyle = document.createElement('style');
 cardStyle.textContent = `
 .ss-card { position: absolute; left: 50%; top: 50%; transform: translate(-50%, -50%); z-index: 6; width: min(380px, calc(100% - 24px));
-  box-sizing: border-box; padding: 14px 16px 12px; border-radius: 14px; background: rgba(10, 14, 24, 0.94); border: 1px solid #4a5a78;
+  box-sizing: border-box; padding: 14px 16px 12px; border-radius: 14px; background: rgb(10, 14, 24); border: 1px solid #4a5a78;
   color: #e8ecf1; font: 14px/1.45 system-ui, sans-serif; text-align: center; box-shadow: 0 8px 30px rgba(0, 0, 0, 0.6); }
 .ss-card[hidden] { display: none; }
 .ss-card h2 { margin: 0 0 2px; font-size: 20px; color: #ffe066; }
@@ -2394,6 +2417,8 @@ shell.expose({
     solarSystemErrors(shell.world, handles, errors);
     return Object.fromEntries(SOLAR_SYSTEM_PLANETS.map((p, i) => [p, errors[i]!]));
   },
+  /** Days per real second time runs at now, and real ms since the last burn (Infinity: none). */
+  rate: () => ({ days: currentRate(), sinceBurn: performance.now() - lastBurn }),
   /** Sets the aiming rate, simulated days per real second, clamped to [0, 400]. */
   setRate,
   /** Runs time to the next launch window and stops there (a tap of W or of the Wait button). */
@@ -2445,6 +2470,7 @@ shell.expose({
       distance: forecast.closest,
       sun: forecast.outcome === 'sun',
       current: forecastKey !== '' && forecastKey === wantedKey(),
+      key: forecastKey,
     },
     flight: flight
       ? { state: flight.state, elapsed: flight.elapsed, closest: flight.closest, fuelUsed: flight.fuelUsed, burns: flight.burns }
@@ -2485,6 +2511,24 @@ shell.expose({
    * the probe at the closest approach (a miss) and the target's own dots (while aiming) show, and the
    * forecast's points up to that time and in all.
    */
+  /**
+   * The ghost ring and the white dot as the last frame drew them, canvas px: the ring's points (x, y
+   * pairs) and the dot, with the key of the forecast they were drawn for (`mission().plan.key`).
+   */
+  ghost: () => {
+    const attr = ghostRing.geometry.getAttribute('position') as Float32BufferAttribute;
+    const w = app.canvas.clientWidth,
+      h = app.canvas.clientHeight;
+    const px = (p: Vector3): [number, number] => {
+      p.project(app.camera);
+      return [((p.x + 1) / 2) * w, ((1 - p.y) / 2) * h];
+    };
+    ghostRing.updateMatrixWorld();
+    const ring: [number, number][] = [];
+    for (let i = 0; i < CIRCLE; i++) ring.push(px(new Vector3().fromBufferAttribute(attr, i).applyMatrix4(ghostRing.matrixWorld)));
+    const dot = new Vector3().fromBufferAttribute(probeThen.geometry.getAttribute('position') as Float32BufferAttribute, 0);
+    return { key: ghostKey, visible: ghostRing.visible, ring, dot: px(dot) };
+  },
   preview: () => ({
     dots: planDotsShown,
     shownPoints: planPointsShown,

@@ -73,10 +73,10 @@ describe('lab-rope levels', () => {
     /** The index of a `win` schedule that wins with fewer stars than `stars`. */
     fewer?: number;
   }[] = [
-    // 1: cut just after the ball turns back at the right end of its first swing (won 1.8-2.26 s,
-    // 3 stars 1.96-2.12 s: a cut at 2.02 s wins them, one at 2.17 s fewer). A cut 1.5 s in, the
-    // ball past the basket on its way back, sends it on to the wall.
-    { level: 0, win: [[[2.02, 0]], [[2.17, 0]]], lose: [[1.5, 0]], fewer: 1, stars: 3 },
+    // 1: cut as the ball rises to the right end of its first swing or at the end (won 0.6-2.06 s,
+    // 3 stars 1.0-1.88 s: a cut at 1.4 s wins them, one at 1.96 s fewer). A cut 2.5 s in, the ball
+    // on its way back, throws it to the left of the basket.
+    { level: 0, win: [[[1.4, 0]], [[1.96, 0]]], lose: [[2.5, 0]], fewer: 1, stars: 3 },
     // 2: the left rope first, the right one 0.4-1.9 s later (3 stars from 0.85 s later).
     {
       level: 1,
@@ -135,10 +135,11 @@ describe('lab-rope levels', () => {
   it('where along the rope a cut is made does not change the throw: the same outcome and stars for a cut near the pin, midway and near the ball', () => {
     // Before, the rope below the cut stayed on the ball (a fifth of its mass, whipping): on level 3 a
     // cut 1.2 s in won 3 stars near the ball and fell short of the wall near the pin (the three
-    // places agreed at 77 % of the cut times searched; now at all). Level 3 won at 1.2 s, level 1 lost at 1.5 s.
+    // places agreed at 77 % of the cut times searched; now at all). Level 3 won at 1.2 s, level 1 lost at 2.5 s (its basket
+    // moved under the swing's right end, where a cut at 1.5 s now wins).
     for (const [level, t, outcome] of [
       [2, 1.2, 'won'],
-      [0, 1.5, 'lost'],
+      [0, 2.5, 'lost'],
     ] as const) {
       const r = [0.1, 0.5, 0.9].map((at) => play(level, [[t, 0]], 0, at));
       for (const x of r) expect(x, `level ${level + 1}, a cut at ${t} s`).toMatchObject({ outcome, stars: r[0]!.stars });
@@ -205,6 +206,15 @@ describe('lab-rope levels', () => {
     for (const r of at) expect(r.outcome).toBe('won');
     expect(at[0]!.stars).toBe(3);
     expect(at[2]!.stars).toBeLessThan(3);
+  });
+
+  it("the upright room's first level (a phone) is won like the wide room's: a cut at the swing's far end drops the ball in", () => {
+    // A stranger on a phone cut level 1 at the far end of the swing and missed right (the basket
+    // stood left of that end, won only 1.8-2.26 s in, as the ball came back): now the basket is under
+    // that end, and a cut on the way up to it or at it wins (scripts/lab-rope-cuts.mjs 1).
+    const at = [1.0, 1.4, 1.8].map((t) => play(0, [[t, 0]], 0));
+    for (const r of at) expect(r.outcome).toBe('won');
+    expect(at.map((r) => r.stars)).toEqual([3, 3, 3]);
   });
 
   it('no level gives a star before the player acts: 8 s of swinging untouched catches none', () => {
