@@ -16,6 +16,40 @@ interface Entry {
 /** Games shown as large cards at the top of their section. */
 const FEATURED = 3;
 
+/**
+ * Fills the bands round a screenshot not of the card's 16:10 shape (the card shows it whole:
+ * object-fit contain, gallery.css) with its own edge colours: the mean of its top row above it and
+ * of its bottom row below (left and right columns beside a narrow one), so they read as more sky or
+ * ground rather than bars. A screenshot of 16:10 is left as it is.
+ */
+function matchEdges(img: HTMLImageElement): void {
+  const w = img.naturalWidth,
+    h = img.naturalHeight;
+  if (!(w > 0 && h > 0) || Math.abs(w / h - 1.6) < 0.02) return;
+  const c = document.createElement('canvas');
+  c.width = w;
+  c.height = h;
+  const g = c.getContext('2d', { willReadFrequently: true });
+  if (!g) return;
+  g.drawImage(img, 0, 0);
+  const wide = w / h > 1.6;
+  const mean = (x: number, y: number, cw: number, ch: number): string => {
+    const d = g.getImageData(x, y, cw, ch).data;
+    let r = 0,
+      gr = 0,
+      b = 0;
+    for (let k = 0; k < d.length; k += 4) {
+      r += d[k]!;
+      gr += d[k + 1]!;
+      b += d[k + 2]!;
+    }
+    const n = d.length / 4;
+    return `rgb(${Math.round(r / n)}, ${Math.round(gr / n)}, ${Math.round(b / n)})`;
+  };
+  const [first, last] = wide ? [mean(0, 0, w, 2), mean(0, h - 2, w, 2)] : [mean(0, 0, 2, h), mean(w - 2, 0, 2, h)];
+  img.style.background = `linear-gradient(${wide ? 'to bottom' : 'to right'}, ${first} 50%, ${last} 50%)`;
+}
+
 /** A card linking to `e`: screenshot, title, one line. */
 function card(e: Entry, featured: boolean): HTMLAnchorElement {
   const a = document.createElement('a');
@@ -26,6 +60,7 @@ function card(e: Entry, featured: boolean): HTMLAnchorElement {
   img.src = `./${e.folder}/thumbnail.png`;
   img.alt = `${e.title}: screenshot`;
   img.loading = featured ? 'eager' : 'lazy';
+  img.addEventListener('load', () => matchEdges(img), { once: true });
   const text = document.createElement('div');
   text.className = 'text';
   const title = document.createElement('h3');

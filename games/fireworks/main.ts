@@ -730,7 +730,7 @@ function drawCharge(): void {
     overlay.stroke({ width: 1.5, color: 0xffd27a, alpha: 0.9 * pop });
   }
   overlay.circle(pointerX, pointerY, 3).fill({ color: 0xffe8a0, alpha: 0.9 });
-  const text = !holds ? 'let go to launch' : full ? 'biggest burst · let go' : 'hold: a bigger burst';
+  const text = !holds ? 'quick shells only · let go' : full ? 'biggest burst · let go' : 'hold: a bigger burst';
   if (chargeLabel.text !== text) chargeLabel.text = text;
   chargeLabel.position.set(
     Math.min(cam.width - chargeLabel.width / 2 - 4, Math.max(chargeLabel.width / 2 + 4, pointerX)),
@@ -1068,14 +1068,14 @@ const card = createResultCard(app.stage, { label: 'level-card', bigSize: 48, bac
 const CARD_BOTTOM = 96;
 /** Where the card was placed (its top, CSS px) for what it says and the screen's size (`key`). */
 const cardPlaced = { key: '', top: 0 };
-/** The screen boxes (px: x0, y0, x1, y1, string and tassel included) of the level's lanterns still dark. */
-function darkLanternBoxes(): [number, number, number, number][] {
+/** The screen boxes (px: x0, y0, x1, y1, string and tassel included) of the level's lanterns still dark (`all`: every one). */
+function lanternBoxes(all: boolean): [number, number, number, number][] {
   const cam = renderer.camera;
   const sky = show.params.sky;
   const r = cam.toScreenLength(lanternRadius(sky.width));
   const out: [number, number, number, number][] = [];
   for (const [i, l] of lanternsOf(run.level, sky).entries()) {
-    if (run.lit[i]) continue;
+    if (run.lit[i] && !all) continue;
     const [wx, wy] = lanternAt(l, sky, shell.world.time - run.start);
     const x = cam.toScreenX(wx),
       y = cam.toScreenY(wy);
@@ -1122,27 +1122,28 @@ function drawCard(f: StatusFrame): void {
   const cam = renderer.camera;
   const content = { title, big, lines, edge: f.lost ? 0xff8a7a : 0xffd166 };
   const wrap = { cx: cam.width / 2, maxWidth: cam.width - 24, wrapWidth: Math.min(520, cam.width - 56) };
-  // Low in the sky, just over the big button at the stage's bottom: the lanterns it is about stay in
-  // sight. A lost level's card goes where it covers the fewest dark lanterns (the lowest such place),
-  // chosen once for what it says and the screen's size, so the player sees which lantern was missed
-  // (low, it covered the one dark lantern on a phone).
+  // Low in the sky, just over the big button at the stage's bottom, where it covers the fewest of the
+  // lanterns it is about (the lowest such place): a lost level's dark ones, so the player sees which
+  // was missed, and a lit level's every one, its glow the reward (low, it covered a lantern on a
+  // phone). Chosen once for what it says and the screen's size.
   const key = `${JSON.stringify(content)} ${cam.width}x${cam.height}`;
   if (key !== cardPlaced.key) {
     card.show(content, { ...wrap, bottom: cam.height - CARD_BOTTOM });
     const h = card.box.height;
     const low = card.box.y;
     let best = low;
-    if (f.lost) {
-      const dark = darkLanternBoxes();
+    {
+      const dark = lanternBoxes(!f.lost);
       const covered = (top: number) =>
         dark.filter(([x0, y0, x1, y1]) => x1 > card.box.x && x0 < card.box.x + card.box.width && y1 > top && y0 < top + h).length;
-      // Tops from the low place up to the sky's top, 8 px apart: the lowest that covers the fewest.
+      // Tops from the low place up to the sky's top (8 px), 4 px apart and the top itself: the
+      // lowest that covers the fewest.
       let fewest = covered(low);
-      for (let top = low - 8; top >= 8 && fewest > 0; top -= 8) {
-        const n = covered(top);
+      for (let top = low - 4; top >= 4 && fewest > 0; top -= 4) {
+        const n = covered(Math.max(8, top));
         if (n < fewest) {
           fewest = n;
-          best = top;
+          best = Math.max(8, top);
         }
       }
     }
@@ -1245,12 +1246,18 @@ function writeStatus(f: StatusFrame): void {
   const mode = lanternShow ? 'Free play' : 'Lantern show';
   if (modeButton.textContent !== mode) modeButton.textContent = mode;
   // Green (the row's done colour) only for a level lit; a lost one says so in the card's coral.
-  if (status.set({ goal: f.goal, numbers: f.numbers, hint: f.hint }, f.cleared)) {
-    status.goal.style.color = f.lost ? LOST_GOAL_COLOR : '';
-    setAction(f.cleared || f.lost, f.lost ? 'Try again ▶' : f.last ? 'Play again ▶' : 'Next level ▶');
-  }
+  if (status.set({ goal: f.goal, numbers: f.numbers, hint: f.hint }, f.cleared)) status.goal.style.color = f.lost ? LOST_GOAL_COLOR : '';
   drawCard(f);
+  // The button comes up once a frame has drawn the card over it (on the canvas, a frame later than
+  // the page's button: at a few frames a second the button stood alone under an empty sky).
+  const up = card.container.visible;
+  const drawn = game.pacer.drawn;
+  if (!up) cardUpDrawn = -1;
+  else if (cardUpDrawn < 0) cardUpDrawn = drawn;
+  setAction(up && drawn > cardUpDrawn, f.lost ? 'Try again ▶' : f.last ? 'Play again ▶' : 'Next level ▶');
 }
+/** The count of drawn frames (game.pacer.drawn) when the level's card was put up, -1 while it is down. */
+let cardUpDrawn = -1;
 
 /**
  * Each frame: writes the lines computed in the frame before if that frame was drawn, and computes
@@ -1292,8 +1299,17 @@ shell.expose({
   flashing: (): number => flashing,
   /** Markers drawn where the player's shells in flight will burst: their targets, m. */
   targetMarkers: (): { x: number; y: number }[] => targets.map((m) => ({ x: m.x, y: m.y })),
-  /** The level's result card as last drawn: whether it shows and its box on the canvas (px). */
-  resultCard: () => ({ visible: card.container.visible, box: { ...card.box } }),
+  /**
+   * The level's result card as last drawn: whether it shows, its box on the canvas (px) and the frames
+   * drawn since it went up (-1 while down).
+   */
+  resultCard: () => ({
+    visible: card.container.visible,
+    box: { ...card.box },
+    drawnSince: cardUpDrawn < 0 ? -1 : game.pacer.drawn - cardUpDrawn,
+  }),
+  /** The screen boxes (canvas px: x0, y0, x1, y1) of the level's lanterns, lit or not. */
+  lanternBoxes: () => lanternBoxes(true),
   /** Whether the pause overlay showed in the last frame (the player paused with P or the pause button). */
   pauseShown: (): boolean => pause.visible,
   /** The finale's meeting cue as drawn last frame: release (how near a shell let go now bursts to the meeting, 0 none), burst point (m), label. */

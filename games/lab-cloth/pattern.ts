@@ -20,7 +20,9 @@
  * points cut across 2 spacings back 0.79; 2 spacings out or more, 0-0.14. The score falls with the
  * distance from 0.45 of a spacing (about 6 px) on, so its percentage says how closely the cut
  * followed the line. A notch or a stray slit or tear into the shape (`Fit.clean`) costs a star from
- * a link and a half deep: a cut on the line with a notch 1.5 spacings deep 0.79.
+ * a link and a half deep: a cut on the line with a notch 1.5 spacings deep 0.79. A cut that runs
+ * short of the line along a stretch, a corner or a lobe cut off (`Fit.whole`), costs a star too: a
+ * heart cut as a 7-sided polygon through its line 0.83 (0.94 on the marks' distances alone).
  */
 import { type Cloth, isAlive, type PhysicsWorld, slotOf } from '@bitphysics/physics';
 import type { ClothCells } from './cells';
@@ -222,6 +224,20 @@ export const FLAW_RANK = 2,
   FLAW_COST = 0.2;
 
 /**
+ * A cut short of the line's cost (cutFit's `whole`): how far inside the line the cut runs along its
+ * worst stretch of a link spacing, the line's samples along it measured to the nearest point of the
+ * piece's edge where that point lies inside the shape (a chord across a heart's lobe or a star's
+ * point, a corner cut off: the piece the player sees misses that part of the shape). Free up to
+ * SHORT_FREE link spacings (+ half the slack), SHORT_COST of the fit SHORT_FULL spacings further,
+ * linearly between: a heart cut as a 7-sided polygon through its line (1.05 spacings short at the
+ * lobes) loses its third star, a careful trace (under 0.3 spacings short) keeps it.
+ */
+export const SHORT_FREE = 0.5,
+  SHORT_FULL = 0.4,
+  SHORT_COST = 0.2,
+  SHORT_CORNER = 1.5;
+
+/**
  * A scissors' mark (ScissorsStroke's `marks`) counts toward a piece's edge within MARK_REACH link
  * spacings of the middle of a link on the edge (the end of a star's point lies up to 1.5 spacings
  * beyond the grid's last point in it), and stands for that link's cut within MARK_COVER spacings
@@ -343,8 +359,8 @@ export function shapeMasks(size: number, shapes: readonly Shape[] = SHAPES): Sha
 /** How well a piece's edge follows a shape's line (cutFit). */
 export interface Fit {
   /**
-   * The fit, in [0, 1]: the harmonic mean of `onLine` and `followed`, times the lesser of `steady`
-   * and `clean` (a wobbling cut's inward swings are its raggedness, not a second fault).
+   * The fit, in [0, 1]: the harmonic mean of `onLine` and `followed`, times `whole` and the lesser
+   * of `steady` and `clean` (a wobbling cut's inward swings are its raggedness, not a second fault).
    */
   fit: number;
   /**
@@ -361,6 +377,13 @@ export interface Fit {
    * of the scissors (WINDING_FREE, WINDING_FULL).
    */
   steady: number;
+  /**
+   * How whole the piece is, in [1 - SHORT_COST, 1]: 1 while `short` is within SHORT_FREE spacings
+   * (+ half the slack), down by SHORT_COST over the next SHORT_FULL spacings.
+   */
+  whole: number;
+  /** How far inside the line the cut runs along its worst link spacing of line, m (>= 0; see SHORT_FREE). */
+  short: number;
   /** How much of the piece's edge lies on the line (each sample scored by its distance from the line), in [0, 1]. */
   onLine: number;
   /** How much of the line the piece's edge follows (each sample scored by its distance from the edge), in [0, 1]. */
@@ -377,7 +400,8 @@ export interface Fit {
  * or across a star's arms, leaves parts of the line unfollowed) times the lesser of `steady` and
  * `clean`: a ragged edge (its distance from the line wandering) costs up to RAGGED_COST, and so does
  * a winding way of the scissors along it, `path` m (pieceEdge's `path.length`; 0: not known) against
- * the line's length; a notch, a slit or a tear into the shape costs up to FLAW_COST (see FLAW_RANK).
+ * the line's length; a notch, a slit or a tear into the shape costs up to FLAW_COST (see FLAW_RANK);
+ * and a stretch of the line the cut runs short of, a corner cut off, up to SHORT_COST (`whole`).
  * 0 for an empty edge.
  * @throws RangeError if `spacing` is not positive or `slack` or `path` is negative or not finite.
  */
@@ -385,7 +409,7 @@ export function cutFit(shape: Shape, mask: ShapeMask, edge: readonly number[], s
   if (!(spacing > 0)) throw new RangeError(`cutFit: spacing must be > 0 m, got ${spacing}`);
   if (!(slack >= 0) || !Number.isFinite(slack)) throw new RangeError(`cutFit: slack must be a finite number >= 0, got ${slack}`);
   if (!(path >= 0) || !Number.isFinite(path)) throw new RangeError(`cutFit: path must be a finite length >= 0 m, got ${path}`);
-  if (edge.length === 0) return { fit: 0, onLine: 0, followed: 0, steady: 1, clean: 1, flaw: 0 };
+  if (edge.length === 0) return { fit: 0, onLine: 0, followed: 0, steady: 1, clean: 1, flaw: 0, short: 0, whole: 1 };
   const full = FIT_FULL * spacing + slack,
     zero = FIT_ZERO * spacing + slack;
   const score = (d: number): number => Math.max(0, Math.min(1, (zero - d) / (zero - full)));
@@ -446,8 +470,38 @@ export function cutFit(shape: Shape, mask: ShapeMask, edge: readonly number[], s
   // The sharp corners weigh as much as the rest of the line: cutting across a star's points misses
   // little of its line but much of its look.
   const followed = mask.corners.length > 0 ? (mean(mask.line) + mean(mask.corners)) / 2 : mean(mask.line);
-  const fit = onLine + followed > 0 ? (Math.min(clean, steady) * 2 * onLine * followed) / (onLine + followed) : 0;
-  return { fit, onLine, followed, steady, clean, flaw };
+  // How far short of the line the piece falls along its worst stretch (SHORT_FREE): per sample of the
+  // line, its distance to the nearest sample of the edge if that one lies inside the shape (else 0),
+  // and of those the k-th largest, k the samples in a link spacing of line (one stray sample, or a
+  // notch's narrow tip, which `clean` scores, does not count).
+  const shortBy = new Float64Array(mask.line.length / 2);
+  const pointReach2 = (SHORT_CORNER * spacing) ** 2;
+  let shortSum = 0;
+  for (let k = 0; k < shortBy.length; k++) {
+    const x = mask.line[2 * k]!,
+      y = mask.line[2 * k + 1]!;
+    let nearCorner = false;
+    for (let j = 0; j < mask.corners.length; j += 2)
+      if ((mask.corners[j]! - x) ** 2 + (mask.corners[j + 1]! - y) ** 2 < pointReach2) nearCorner = true;
+    if (nearCorner) continue;
+    let best = Infinity,
+      at = -1;
+    for (let j = 0; j < edge.length; j += 2) {
+      const d2 = (edge[j]! - x) ** 2 + (edge[j + 1]! - y) ** 2;
+      if (d2 < best) {
+        best = d2;
+        at = j;
+      }
+    }
+    shortBy[k] = at >= 0 && insidePolygon(shape.outline, edge[at]!, edge[at + 1]!) ? Math.sqrt(best) : 0;
+    shortSum += shortBy[k]!;
+  }
+  shortBy.sort();
+  const rank = Math.min(shortBy.length, Math.max(1, Math.round(spacing / LINE_SAMPLE)));
+  const short = Math.max(0, (shortBy[shortBy.length - rank] ?? 0) - shortSum / shortBy.length);
+  const whole = 1 - SHORT_COST * Math.min(1, Math.max(0, short - SHORT_FREE * spacing - slack / 2) / (SHORT_FULL * spacing));
+  const fit = onLine + followed > 0 ? (Math.min(whole, clean, steady) * 2 * onLine * followed) / (onLine + followed) : 0;
+  return { fit, onLine, followed, steady, clean, flaw, short, whole };
 }
 
 /** Per shape, the cells (row-major indices) of a sheet of `size` points across whose centres at rest lie inside it. */

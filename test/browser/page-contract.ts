@@ -242,6 +242,28 @@ export function describePages(shard: number, shards: number): void {
           return bad;
         });
         expect(undecodable, 'thumbnails that are not pictures').toEqual([]);
+        // Every card shows its whole screenshot: one wider than the card's 16:10 lost its sides under
+        // object-fit cover, and the words drawn there ("target A: 67 m ahead, 27 m do…"). The bands
+        // round one of another shape take its edge colours (gallery.ts matchEdges), not black bars.
+        await g.page.waitForFunction(() =>
+          Array.from(document.querySelectorAll<HTMLImageElement>('#gallery a.card img')).every(
+            (i) => Math.abs(i.naturalWidth / i.naturalHeight - 1.6) < 0.02 || i.style.background !== '',
+          ),
+        );
+        const cropped = await g.page.$$eval('#gallery a.card img', (imgs) =>
+          (imgs as HTMLImageElement[])
+            .map((i) => {
+              const box = i.getBoundingClientRect();
+              const shown =
+                getComputedStyle(i).objectFit === 'cover'
+                  ? Math.min(box.width / box.height, i.naturalWidth / i.naturalHeight) /
+                    Math.max(box.width / box.height, i.naturalWidth / i.naturalHeight)
+                  : 1;
+              return { src: i.src, shown };
+            })
+            .filter((x) => x.shown < 0.98),
+        );
+        expect(cropped, 'thumbnails cropped by their card').toEqual([]);
         expect(await cutCardLines(g.page), 'card lines cut off on a desktop').toEqual([]);
         expect(g.errors).toEqual([]);
         await g.close();

@@ -366,6 +366,57 @@ describe('fireworks: the lantern show', () => {
     await g.close();
   });
 
+  it('phone 390 x 844, touch: a held finger on a quick-shell level says so; level 1 lit, its card comes up before the Next-level button and covers no lantern', async () => {
+    const g = await h.openGame('fireworks', {
+      viewport: { width: 390, height: 844 },
+      touch: true,
+      query: { opening: 0, sparks: 60, generations: 1 },
+    });
+    type Carded = LanternGame & {
+      resultCard(): { visible: boolean; box: { x: number; y: number; width: number; height: number }; drawnSince: number };
+      lanternBoxes(): [number, number, number, number][];
+      charge(): { label: string };
+    };
+    // The button's first appearance records how many frames had drawn the card by then.
+    await g.page.evaluate(() => {
+      const w = window as unknown as { buttonSawCard?: number };
+      new MutationObserver(() => {
+        if (w.buttonSawCard === undefined && [...document.querySelectorAll('button')].some((b) => b.textContent === 'Next level ▶'))
+          w.buttonSawCard = (window.game as unknown as Carded).resultCard().drawnSince;
+      }).observe(document.body, { childList: true, subtree: true });
+    });
+    const [p0, p1, p2, p3] = [await lanternOnPage(g, 0), await lanternOnPage(g, 1), await lanternOnPage(g, 2), await lanternOnPage(g, 3)];
+    // A finger held on lantern 0: level 1's shells are quick, and the label says so (it said "let go
+    // to launch", and a stranger holding for a bigger burst did not know a hold did nothing here).
+    const cdp = await g.page.context().newCDPSession(g.page);
+    await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: [{ x: p0.x, y: p0.y, id: 1 }] });
+    const label = await g.waitFor(() => (window.game as unknown as Carded).charge().label || null, null);
+    expect(label).toBe('quick shells only · let go');
+    await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
+    await cdp.detach();
+    await g.waitFor(() => (window.game as unknown as LanternGame).lanterns().shells === 1, null);
+    await g.page.touchscreen.tap(0.5 * (p1.x + p2.x), 0.5 * (p1.y + p2.y));
+    await g.waitFor(() => (window.game as unknown as LanternGame).lanterns().shells === 2, null);
+    await g.page.touchscreen.tap(p3.x, p3.y);
+    await g.waitFor(() => (window.game as unknown as LanternGame).lanterns().shells === 3, null);
+    await g.waitFor(() => (window as unknown as { buttonSawCard?: number }).buttonSawCard !== undefined, null, 60_000);
+    // The card had been drawn in a frame before the button came up (the button stood alone under an
+    // empty sky for a moment at a few frames a second).
+    expect(await g.page.evaluate(() => (window as unknown as { buttonSawCard: number }).buttonSawCard)).toBeGreaterThanOrEqual(1);
+    const { card, boxes } = await g.page.evaluate(() => {
+      const w = window.game as unknown as Carded;
+      return { card: w.resultCard(), boxes: w.lanternBoxes() };
+    });
+    expect(card.visible).toBe(true);
+    // It covers none of the lanterns just lit (low on the phone, it covered the bottom one).
+    const over = boxes.filter(
+      ([x0, y0, x1, y1]) => x1 > card.box.x && x0 < card.box.x + card.box.width && y1 > card.box.y && y0 < card.box.y + card.box.height,
+    );
+    expect(over).toEqual([]);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
   it('phone 390 x 844, touch: the goal shows above the sky; a tap on a lantern lights it and counts a shell, the row counting it lit as it lights; a tap on empty sky is a miss, said; level 1 survives a stray shell', async () => {
     const g = await h.openGame('fireworks', {
       viewport: { width: 390, height: 844 },
