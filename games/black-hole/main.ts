@@ -53,10 +53,8 @@ import {
   createBlackHoleGame,
   createPredictor,
   FIELD,
-  findPadRoute,
   heldThrust,
   MAX_HOLES,
-  type PadRoute,
   type PathEnd,
   PHONE_SIDE_RAMP,
   type Predictor,
@@ -174,21 +172,6 @@ let pathPoints = 0;
 const PAD_SIDE_THRUSTS = ['up-left', 'up-right'] as const;
 /** Points of one of those paths, m (x0, y0, x1, y1, ...). */
 const sidePath = new Float64Array(2 * (PAD_PATH_STEPS + 1));
-/**
- * Level 1's pad route: on that level the pad's three held paths (↑, ↖, ↗) all end in a hole, so
- * while the ship waits there it also shows a way through (./rules.ts `findPadRoute`: a tap or hold of
- * a side or diagonal, then ↑), dotted in the clear path's blue up to the line, with its recipe in
- * words. Found once per layout (`routeKey`).
- */
-const ROUTE_STEPS = 600;
-const routePath = new Float64Array(2 * (ROUTE_STEPS + 1));
-let route: PadRoute | null = null;
-/** The layout the route was found for (the game's version and level), '' for none yet. */
-let routeKey = '';
-/** Whether the route was drawn in the last frame. */
-let routeShown = false;
-/** The arrow each first thrust of a route is pressed with. */
-const ROUTE_ARROWS: Readonly<Record<string, string>> = { 'up-left': '↖', 'up-right': '↗', left: '←', right: '→' };
 /** How the path drawn in the last frame ends (./rules.ts `pathEnd`). */
 let pathKind: PathEnd = 'clear';
 /**
@@ -1225,45 +1208,6 @@ const pathLabel = new Text({
 pathLabel.visible = false;
 app.stage.addChild(pathLabel);
 
-/** The words of level 1's pad route ("a way through: tap ←, then hold ↑"), beside the pad. */
-const routeLabel = new Text({
-  text: '',
-  style: { fill: 0x9fd3ff, fontSize: 14, fontFamily: 'sans-serif', fontWeight: 'bold', stroke: { color: 0x000000, width: 4 } },
-});
-routeLabel.visible = false;
-app.stage.addChild(routeLabel);
-
-/**
- * On level 1, with the ship waiting on the pad: finds the pad route once per layout and draws it,
- * blue dots to the line and its recipe in words beside the pad (see ROUTE_STEPS).
- */
-function drawPadRoute(): void {
-  routeShown = false;
-  if (run?.spec.level !== 1) return;
-  const key = `${bh.version}:${run.spec.level}`;
-  if (key !== routeKey) {
-    routeKey = key;
-    route = findPadRoute(bh, predictor, routePath, ROUTE_STEPS);
-  }
-  if (!route) return;
-  const cam = renderer.camera;
-  for (let i = 2; i < route.points; i += 3)
-    overlay.circle(cam.toScreenX(routePath[2 * i]!), cam.toScreenY(routePath[2 * i + 1]!), 2.2).fill({ color: PATH_CLEAR, alpha: 0.8 });
-  const arrow = ROUTE_ARROWS[route.first] ?? route.first;
-  const text =
-    route.hold <= 9
-      ? `a way through:\ntap ${arrow}, then hold ↑`
-      : `a way through:\nhold ${arrow} ${(route.hold / 60).toFixed(1)} s, then ↑`;
-  if (routeLabel.text !== text) routeLabel.text = text;
-  // Just above the pad, on the side away from the route's first move (it does not cover the route's start).
-  const leftward = route.first.includes('left');
-  const sx = cam.toScreenX(routePath[0]!),
-    sy = cam.toScreenY(routePath[1]!);
-  routeLabel.anchor.set(leftward ? 0 : 1, 1);
-  routeLabel.position.set(leftward ? sx + 24 : sx - 24, sy - 8);
-  routeShown = true;
-}
-
 /**
  * Marks how the path drawn this frame ends (`pathKind`; its last point lx, ly, m), so the end says
  * why it ends: where it falls in, a ring (dark under red, seen over the hole's orange disc) round the
@@ -1472,11 +1416,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
       }
       bh.thrust = 'up';
       pathPoints = predictPath(bh, predictor, path, steps);
-      drawPadRoute();
-    } else {
-      pathPoints = predictPath(bh, predictor, path, steps);
-      routeShown = false;
-    }
+    } else pathPoints = predictPath(bh, predictor, path, steps);
     bh.thrust = liveThrust;
     padPath = fromPad;
     // A path that ends on a horizon is drawn red with a ring where it falls in, so the pull of a wall
@@ -1501,10 +1441,8 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
     pathKind = 'clear';
     pathReachesLine = false;
     padPath = false;
-    routeShown = false;
     pathLabel.visible = false;
   }
-  routeLabel.visible = routeShown && !deathText.visible;
   // The ship: a small arrowhead, nose up, 1 m tall, with a flame out of the side opposite the thrust.
   // The ship is drawn at least SHIP_MIN_PX tall (on a phone's narrow field it would be under 20 px).
   const sx = cam.toScreenX(x),
@@ -1620,19 +1558,6 @@ shell.expose({
   scorePop: (): string => (scoreText.visible ? scoreText.text : ''),
   /** Why the path drawn in the last frame stops short, by its end ('falls in' or 'lost'), else ''. */
   pathLabel: (): string => (pathLabel.visible ? pathLabel.text : ''),
-  /**
-   * Level 1's pad route as drawn in the last frame: the first thrust, how many steps it is held, its
-   * words, and its points (x, y, m); null when none is drawn.
-   */
-  padRoute: () =>
-    routeShown && route
-      ? {
-          first: route.first,
-          hold: route.hold,
-          text: routeLabel.text,
-          points: Array.from({ length: route.points }, (_, i) => [routePath[2 * i]!, routePath[2 * i + 1]!]),
-        }
-      : null,
   /**
    * The falls' effect: how many have begun, the words of the last one, the strongest red flash
    * drawn for it (0 to 0.45; 0 until a frame drew it), and whether the last frame showed the words.

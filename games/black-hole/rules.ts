@@ -727,32 +727,8 @@ function syncPredictor(game: BlackHoleGame, pred: Predictor): void {
  * @returns the number of points written (1 + steps taken), at most out.length / 2.
  * @throws RangeError unless steps is an integer in [1, 10_000].
  */
-export function predictPath(game: BlackHoleGame, pred: Predictor, out: Float64Array, steps = 60, then?: ThrustChange): number {
+export function predictPath(game: BlackHoleGame, pred: Predictor, out: Float64Array, steps = 60): number {
   check(Number.isInteger(steps) && steps >= 1 && steps <= 10_000, `predictPath: steps must be an integer in [1, 10000], got ${steps}`);
-  if (then) {
-    check(Number.isInteger(then.at) && then.at >= 0, `predictPath: then.at must be an integer >= 0, got ${then.at}`);
-    check(then.thrust in THRUST_DIRECTION, `predictPath: then.thrust must be a Thrust, got ${String(then.thrust)}`);
-    // The thrust law reads game.thrust each step: switched for the prediction, put back after it.
-    const held = game.thrust;
-    try {
-      return predictSteps(game, pred, out, steps, then);
-    } finally {
-      game.thrust = held;
-    }
-  }
-  return predictSteps(game, pred, out, steps);
-}
-
-/** A change of thrust part-way along a predicted path: from step `at` (0: the first) on, `thrust` is held. */
-export interface ThrustChange {
-  /** The step the change comes at, an integer >= 0. */
-  at: number;
-  /** The thrust held from then on. */
-  thrust: Thrust;
-}
-
-/** `predictPath` without the checks; with `then`, switches game.thrust at its step (the caller puts it back). */
-function predictSteps(game: BlackHoleGame, pred: Predictor, out: Float64Array, steps: number, then?: ThrustChange): number {
   if (pred.version !== game.version) syncPredictor(game, pred);
   const w = pred.world,
     s = pred.ship;
@@ -777,7 +753,6 @@ function predictSteps(game: BlackHoleGame, pred: Predictor, out: Float64Array, s
   const radius = game.holeRadius;
   const HP = P;
   while (n < max) {
-    if (then && n - 1 === then.at) game.thrust = then.thrust;
     step(w);
     const x = P.x[s]!,
       y = P.y[s]!;
@@ -798,45 +773,6 @@ function predictSteps(game: BlackHoleGame, pred: Predictor, out: Float64Array, s
     if (inside || x < 0 || x > game.field.width || y < 0 || y > game.field.height) break;
   }
   return n;
-}
-
-/** A way from the pad to the line (`findPadRoute`): `first` held for `hold` steps, then ↑. */
-export interface PadRoute {
-  /** The thrust held first (a diagonal or a side). */
-  first: Thrust;
-  /** Steps it is held, > 0 (at 60 Hz, hold / 60 s). */
-  hold: number;
-  /** Points of the route written to `out` (x0, y0, ... m), up to the first at or past the line. */
-  points: number;
-}
-/** The first thrusts `findPadRoute` tries, and how long it holds each, steps (shortest first). */
-const ROUTE_FIRSTS: readonly Thrust[] = ['up-left', 'up-right', 'left', 'right'];
-const ROUTE_HOLDS: readonly number[] = [9, 18, 30, 45, 60, 80, 100];
-
-/**
- * From where the ship is now (on the pad, at rest), the simplest two-part way to the finish line:
- * each of ↖ ↗ ← → held for 9 steps (a tap) to 100 (the shortest hold first), then ↑ held, predicted
- * (`predictPath`) for up to `steps` steps; the first that reaches the line without falling in or
- * leaving the field. Its points go into `out` (x0, y0, ..., m), cut at the first point on the line.
- * Levels 1 and 2 put a hole across the climb straight up and one beside each diagonal: the pad's
- * three held paths all end red there, and this shows a way through.
- * @returns the route, or null if none of those reaches the line.
- * @throws RangeError unless steps is an integer in [1, 10000].
- */
-export function findPadRoute(game: BlackHoleGame, pred: Predictor, out: Float64Array, steps = 600): PadRoute | null {
-  check(Number.isInteger(steps) && steps >= 1 && steps <= 10_000, `findPadRoute: steps must be an integer in [1, 10000], got ${steps}`);
-  const held = game.thrust;
-  try {
-    for (const hold of ROUTE_HOLDS)
-      for (const first of ROUTE_FIRSTS) {
-        game.thrust = first;
-        const n = predictPath(game, pred, out, steps, { at: hold, thrust: 'up' });
-        for (let i = 0; i < n; i++) if (out[2 * i + 1]! >= game.lineY) return { first, hold, points: i + 1 };
-      }
-    return null;
-  } finally {
-    game.thrust = held;
-  }
 }
 
 /** How a predicted path ends (`pathEnd`). */

@@ -168,23 +168,6 @@ describe('black hole', () => {
   });
 });
 
-describe('black hole, the way through level 1', () => {
-  it('on level 1 the pad shows a way through in blue to the line, and says it in words: the held paths all fall in', async () => {
-    type Route = { first: string; hold: number; text: string; points: number[][] };
-    await g.page.evaluate(() => (window.game as unknown as { reset(): void }).reset());
-    const route = await g.waitFor(() => (window.game as unknown as { padRoute(): Route | null }).padRoute(), null);
-    // A tap (9 steps) of a side arrow, then ↑ held: level 1's fork is passed beside its middle hole
-    // (played in the game by test/games/black-hole-levels.test.ts).
-    expect(route.hold).toBeLessThanOrEqual(9);
-    expect(route.text).toMatch(/^a way through:\ntap [←→↖↗], then hold ↑$/);
-    const lineY = await g.page.evaluate(() => (window.game as unknown as { bh: { lineY: number } }).bh.lineY);
-    expect(route.points.at(-1)![1]).toBeGreaterThanOrEqual(lineY);
-    // The held path straight up falls in (the route is shown because it does).
-    expect(await g.page.evaluate(() => (window.game as unknown as BlackHolePage).pathEnd())).toBe('falls');
-    expect(g.errors).toEqual([]);
-  });
-});
-
 describe('black hole, the ready moment', () => {
   it('after a fall the new ship waits a second of the wall clock, however many steps a slow frame runs meanwhile; an arrow pressed then thrusts once it ends', async () => {
     type Bh = BlackHolePage & {
