@@ -482,6 +482,40 @@ type HeapThrows = HoopGame & {
  * Presses the mouse at `at`, drags to `to` in 8 moves and lets go; returns ball `id`'s velocity (m/s)
  * and the round's shot count just after the release.
  */
+/**
+ * Up to three throws from (8, 4) m, each given `seconds` of world time, until one scores: at
+ * `velocity` (m/s), or with null the drag-free arc that comes down on the hoop's rim centre after
+ * 1.3 s. The game is paused at the basket, so its celebration is read before it ends. Returns the
+ * round's score (0 if no throw scored).
+ */
+async function shootUntilScored(g: GamePage, velocity: [number, number] | null, seconds: number): Promise<number> {
+  for (let attempt = 0; attempt < 3; attempt++) {
+    const t0 = await g.page.evaluate((v) => {
+      const game = window.game as unknown as HoopGame & { world: { time: number } };
+      if (v) game.shoot(8, 4, v[0], v[1]);
+      else {
+        const o = game.hoop();
+        const x = 0.5 * (o.minX + o.maxX),
+          T = 1.3;
+        game.shoot(8, 4, (x - 8) / T, (o.y - 4 + 0.5 * 9.81 * T * T) / T);
+      }
+      return game.world.time;
+    }, velocity);
+    const score = await g.waitFor(
+      ([start, window_]) => {
+        const game = window.game as unknown as HoopGame & { world: { time: number }; paused: boolean };
+        const n = game.round().score;
+        if (n > 0) game.paused = true;
+        return n > 0 ? n : game.world.time > start! + window_! ? -1 : 0;
+      },
+      [t0, seconds],
+      30_000,
+    );
+    if (score > 0) return score;
+  }
+  return 0;
+}
+
 async function mouseThrow(g: GamePage, id: number, at: { x: number; y: number }, to: { x: number; y: number }) {
   const m = g.page.mouse;
   await m.move(at.x, at.y);
@@ -538,29 +572,7 @@ describe('bouncing balls: the hoop game', () => {
       for (const id of game.ballIds()) game.remove(id);
     });
     const before = await g.page.evaluate(() => (window.game as unknown as HoopGame).hoop());
-    let score = 0;
-    for (let attempt = 0; attempt < 3 && score === 0; attempt++) {
-      const t0 = await g.page.evaluate(() => {
-        const game = window.game as unknown as HoopGame & { world: { time: number } };
-        const o = game.hoop();
-        const x = 0.5 * (o.minX + o.maxX),
-          T = 1.3;
-        game.shoot(8, 4, (x - 8) / T, (o.y - 4 + 0.5 * 9.81 * T * T) / T);
-        return game.world.time;
-      });
-      score = await g.waitFor(
-        (start) => {
-          const game = window.game as unknown as HoopGame & { world: { time: number }; paused: boolean };
-          const n = game.round().score;
-          // Paused at the basket, so its celebration is read before it ends.
-          if (n > 0) game.paused = true;
-          return n > 0 ? n : game.world.time > start + 1.7 ? -1 : 0;
-        },
-        t0,
-        30_000,
-      );
-      if (score < 0) score = 0;
-    }
+    const score = await shootUntilScored(g, null, 1.7);
     expect(score).toBe(1);
     // The basket is celebrated: the status row says so and its score line bumps; over the old
     // hoop, "+2" and a word of praise (before, a small +1 and a ring for 0.8 s were all). The throw
@@ -806,25 +818,7 @@ describe('bouncing balls: the hoop game', () => {
     // From (8, 4) m at (5.5, 12.5) m/s: its top meets the ceiling at about x 11 m and it comes down
     // through the first hoop's opening (hoop.ts throwPath with one ceiling bounce scores for vy 11.8
     // to 13.3 m/s at this vx). Up to three throws, each given 2.5 s of world time.
-    let score = 0;
-    for (let attempt = 0; attempt < 3 && score === 0; attempt++) {
-      const t0 = await g.page.evaluate(() => {
-        const game = window.game as unknown as HoopGame & { world: { time: number } };
-        game.shoot(8, 4, 5.5, 12.5);
-        return game.world.time;
-      });
-      score = await g.waitFor(
-        (start) => {
-          const game = window.game as unknown as HoopGame & { world: { time: number }; paused: boolean };
-          const n = game.round().score;
-          if (n > 0) game.paused = true;
-          return n > 0 ? n : game.world.time > start + 2.5 ? -1 : 0;
-        },
-        t0,
-        30_000,
-      );
-      if (score < 0) score = 0;
-    }
+    const score = await shootUntilScored(g, [5.5, 12.5], 2.5);
     expect(score).toBe(1);
     const r = await g.page.evaluate(() => {
       const game = window.game as unknown as HoopGame & { round(): { lastStyle: string; lastPoints: number; tricks: number } };

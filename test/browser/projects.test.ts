@@ -10,7 +10,7 @@ import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { lowContrastText } from './contrast-check';
 import { pausedShade, resumedShade } from './dom-pause';
 import { afterRelease, recordBank } from './flight-bank';
-import { Harness } from './harness';
+import { type GamePage, Harness } from './harness';
 import { checkPageContract } from './page-contract';
 
 interface Game {
@@ -18,6 +18,25 @@ interface Game {
   // biome-ignore lint/suspicious/noExplicitAny: the page's stores are read loosely here
   world: { time: number; components: any };
   step(): void;
+}
+
+/**
+ * Puts the flight simulator's aircraft at ring 1's centre plus (dx, dz), m (the course's first ring
+ * lies along +x), before the first input starts the flight.
+ */
+async function placeBeforeRing1(g: GamePage, dx: number, dz: number): Promise<void> {
+  await g.page.evaluate(
+    ([ox, oz]) => {
+      const w = window.game as unknown as Game & { aircraftBody(): number; rings(): { x: number; y: number; z: number }[] };
+      const r = w.rings()[0]!,
+        c = w.world.components,
+        e = w.aircraftBody();
+      c.Position.x[e] = r.x + ox!;
+      c.Position.y[e] = r.y;
+      c.Position.z[e] = r.z + oz!;
+    },
+    [dx, dz],
+  );
 }
 
 describe('projects', () => {
@@ -1048,15 +1067,7 @@ describe('projects', () => {
       banner(): { text: string };
     };
     // The aircraft put 150 m before ring 1, on its line (the course's first ring lies along +x).
-    await g.page.evaluate(() => {
-      const w = window.game as unknown as Flight;
-      const r = w.rings()[0]!,
-        c = w.world.components,
-        e = w.aircraftBody();
-      c.Position.x[e] = r.x - 150;
-      c.Position.y[e] = r.y;
-      c.Position.z[e] = r.z;
-    });
+    await placeBeforeRing1(g, -150, 0);
     // The flight waits for the pilot: Space starts it.
     await g.page.keyboard.press('Space');
     const passed = await g.waitFor(() => {
@@ -1168,15 +1179,7 @@ describe('projects', () => {
     // of ring 1 (+z; past MISS_RANGE, 600 m, so crossing its plane there counts nothing) and 100 m
     // short of its plane, flying on along +x as it starts. A stranger flew past a ring far to the
     // side and took about a minute to come round to it.
-    await g.page.evaluate(() => {
-      const w = window.game as unknown as Flight;
-      const r = w.rings()[0]!,
-        c = w.world.components,
-        e = w.aircraftBody();
-      c.Position.x[e] = r.x - 100;
-      c.Position.y[e] = r.y;
-      c.Position.z[e] = r.z + 800;
-    });
+    await placeBeforeRing1(g, -100, 800);
     await g.page.keyboard.press('Space');
     // Past its plane the ring falls behind; 1.5 s of game time later (LEFT_BEHIND_TIME) it is
     // missed, said at once, and counted once.

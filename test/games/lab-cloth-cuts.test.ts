@@ -59,6 +59,19 @@ function traced(shape: number, style: TraceStyle, outline = SHAPES[shape]!.outli
   return cut(fresh(), traceLine(outline, scaled)).find((d) => d.shape === shape) ?? null;
 }
 
+/** The first sheet's circle shape: its centre (the mean of its outline's points) and radius, m, as [x, y, r]. */
+function circleOfCircle(): [number, number, number] {
+  const o = SHAPES[CIRCLE]!.outline,
+    n = o.length / 2;
+  let cx = 0,
+    cy = 0;
+  for (let i = 0; i < n; i++) {
+    cx += o[2 * i]! / n;
+    cy += o[2 * i + 1]! / n;
+  }
+  return [cx, cy, Math.hypot(o[0]! - cx, o[1]! - cy)];
+}
+
 describe('lab-cloth fit', () => {
   it("a star's narrow points: cut along its line, 3 stars; across its points or round them, 2", () => {
     // Measured fits: 1.00 on the line and 0.3 spacings inside it; across the points 2 spacings back
@@ -125,15 +138,7 @@ describe('lab-cloth fit', () => {
     // Nor does a zigzag over the circle's line, 0.7 spacings either side of 0.3 out every 5 degrees:
     // near the line all along, but the scissors go about 4 times as far as the line (in the lab
     // at 1280 x 800 it scored 0.97, three stars; now 0.78 there and 0.74 here, two).
-    const o = SHAPES[CIRCLE]!.outline,
-      n = o.length / 2;
-    let cx = 0,
-      cy = 0;
-    for (let i = 0; i < n; i++) {
-      cx += o[2 * i]! / n;
-      cy += o[2 * i + 1]! / n;
-    }
-    const radius = Math.hypot(o[0]! - cx, o[1]! - cy);
+    const [cx, cy, radius] = circleOfCircle();
     const zigzag: number[] = [];
     for (let k = 0; k <= 72; k++) {
       const r = radius + S * (0.3 + (k % 2 === 0 ? 0.7 : -0.7)),
@@ -176,15 +181,7 @@ describe('lab-cloth flaws', () => {
     cut(challenge, traceLine(SHAPES[STAR]!.outline));
     expect(challenge.spoilt()).toEqual([]);
     // A slash straight across the circle's middle (as a pull of the hand tears it).
-    const o = SHAPES[CIRCLE]!.outline,
-      n = o.length / 2;
-    let cx = 0,
-      cy = 0;
-    for (let i = 0; i < n; i++) {
-      cx += o[2 * i]! / n;
-      cy += o[2 * i + 1]! / n;
-    }
-    const radius = Math.hypot(o[0]! - cx, o[1]! - cy);
+    const [cx, cy, radius] = circleOfCircle();
     const P = sheet.world.components.Position;
     const corner = slotOf(sheet.cloth.points[0]!);
     // Sheet coordinates at rest to the world: the sheet hangs still, its first point at its top left.
