@@ -2,7 +2,7 @@
 // ESM bundles (packages/*/dist). Run directly (`npm run build`) or import the functions.
 
 import { execFileSync } from 'node:child_process';
-import { existsSync, mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
+import { existsSync, mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { dirname, join, resolve } from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
@@ -42,8 +42,11 @@ export async function importSource(name, contents) {
 
 /** Every game folder: games/<name>/ holding main.ts and index.html. @param {string} games the games folder (default games/). */
 export function gameFolders(games = join(root, 'games')) {
-  return readdirSync(games)
-    .filter((name) => statSync(join(games, name)).isDirectory())
+  // Dirent types, not a stat per name: a file that vanishes between the listing and a stat (an
+  // editor's temp file) must not throw while `npm start` watches this folder.
+  return readdirSync(games, { withFileTypes: true })
+    .filter((entry) => entry.isDirectory())
+    .map((entry) => entry.name)
     .filter((name) => existsSync(join(games, name, 'main.ts')) && existsSync(join(games, name, 'index.html')))
     .sort();
 }

@@ -240,8 +240,8 @@ export async function startServer({
   if (watch) {
     dirWatcher = watchDir(join(root, 'games'), () => {
       restarting = restarting.then(async () => {
-        if (gameFolders().join(',') === folders) return;
         try {
+          if (gameFolders().join(',') === folders) return;
           const cached = cache && !watch ? readCache(cacheDir) : null;
           if (cached) {
             files = cached;

@@ -10,6 +10,7 @@
  * slowest page is printed.
  */
 
+import { rmSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { pathToFileURL } from 'node:url';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
@@ -81,5 +82,23 @@ describe('npm start (scripts/serve.mjs, watching)', () => {
     expect(res.headers.get('location')).toBe(`/${folder}/`);
     expect((await fetch(`${server.url}no-such-page/`)).status).toBe(404);
     expect((await fetch(`${server.url}${folder}/main.js`)).headers.get('content-type')).toContain('javascript');
+  });
+
+  it('keeps serving while files appear and vanish in games/ (an editor saving through temp files)', async () => {
+    // Each create and delete fires the folder watcher, whose listing of game folders must not stat
+    // a name deleted in between (ENOENT, an unhandled rejection that ends the server).
+    const temp = (i: number) => join(repoRoot, 'games', `.serve-test-${process.pid}-${i}.tmp`);
+    try {
+      for (let i = 0; i < 300; i++) {
+        writeFileSync(temp(i), '');
+        rmSync(temp(i), { force: true });
+      }
+    } finally {
+      for (let i = 0; i < 300; i++) rmSync(temp(i), { force: true });
+    }
+    // Let the watcher's queued listings run, then the server must still answer a page.
+    await new Promise((done) => setTimeout(done, 500));
+    const folder = registry[0]!.folder;
+    expect((await fetch(`${server.url}${folder}/`)).status).toBe(200);
   });
 });
