@@ -1217,7 +1217,11 @@ function statusFrame(): StatusFrame {
   } else if (cleared) {
     goal = last ? `Show complete! ${starText(run.stars)}` : `All lanterns lit! ${starText(run.stars)}`;
     numbers = `${plural(run.shells, 'shell', 'shells')} (par ${lv.par}) · Stars ${total}/${3 * LEVELS.length}`;
-    hint = last ? 'Play again, or try for 3 stars' : 'Fewer shells, more stars';
+    // Which levels can still earn a star, so the last card never asks for stars already won.
+    const short = bestStars.flatMap((stars, i) => (stars < 3 ? [i + 1] : []));
+    if (!last) hint = run.stars === 3 ? 'Perfect: every lantern at par' : 'Fewer shells, more stars';
+    else if (short.length === 0) hint = 'A perfect show: 3 stars on every level';
+    else hint = `Play again: ${short.length === 1 ? 'level' : 'levels'} ${short.join(', ')} can still earn stars`;
   } else {
     // The shells still to launch count down in the numbers (one line on a phone); the goal says how many the level gives.
     goal = lost
