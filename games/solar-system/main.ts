@@ -1899,6 +1899,15 @@ function setPadLabels(which: 'aim' | 'burn'): void {
 }
 
 const starText = (n: number): string => '★'.repeat(n) + '☆'.repeat(3 - n);
+/**
+ * A miss put in words: the closest approach (AU) with enough decimals that it reads as outside the
+ * ring's radius `zone` (0.104 against 0.1 must not show as "0.10 ... the ring is 0.1").
+ */
+function missWords(closest: number, zone: number): string {
+  let digits = 2;
+  while (digits < 4 && Number(closest.toFixed(digits)) <= zone) digits++;
+  return `closest ${closest.toFixed(digits)} AU, the ring reaches ${zone} AU`;
+}
 const aimWords = (a: number): string =>
   Math.abs(a) < 1
     ? 'along the Earth’s path'
@@ -2006,10 +2015,10 @@ function verdict(m: Mission): [string, string] {
       return [`✗ goes out only to ${f.farthest.toFixed(2)} AU from the Sun; ${m.target} will be at ${rT.toFixed(2)} AU${scheme}`, 'bad'];
     if (!outward && f.nearest > rT + m.zone)
       return [`✗ falls in only to ${f.nearest.toFixed(2)} AU from the Sun; ${m.target} will be at ${rT.toFixed(2)} AU${scheme}`, 'bad'];
-    return [`✗ misses ${m.target} by ${f.closest.toFixed(2)} AU (the ring is ${m.zone} AU)${scheme}`, 'bad'];
+    return [`✗ misses ${m.target}: ${missWords(f.closest, m.zone)}${scheme}`, 'bad'];
   }
   if (f.outcome === 'arrived') return [`✓ arrives on day ${Math.round(f.end)}${scheme}`, 'ok'];
-  return [`✗ misses ${m.target}: closest ${f.closest.toFixed(2)} AU (the ring is ${m.zone} AU)${scheme}`, 'bad'];
+  return [`✗ misses ${m.target}: ${missWords(f.closest, m.zone)}${scheme}`, 'bad'];
 }
 
 /** The simulated days per real second measured over the last second or so (eased), and the last sample: world time (days) and real time (ms). */
@@ -2072,7 +2081,7 @@ function updateStatus(force = false): void {
       line = '✗ The probe fell into the Sun.';
       cls = 'bad';
     } else {
-      line = `✗ Missed ${m.target}: closest ${flight.closest.toFixed(2)} AU (the ring is ${m.zone} AU).`;
+      line = `✗ Missed ${m.target}: ${missWords(flight.closest, m.zone)}.`;
       cls = 'bad';
     }
   }
@@ -2205,7 +2214,7 @@ function missAdvice(f: Flight): string {
   }
   const rT = launchTargetR;
   const outward = m.distance > 1;
-  const near2 = `closest ${f.closest.toFixed(2)} AU; the ring is ${m.zone} AU`;
+  const near2 = missWords(f.closest, m.zone);
   if (outward && far < rT - m.zone)
     return `It turned back ${far.toFixed(2)} AU from the Sun, short of ${m.target}’s orbit (${rT.toFixed(2)} AU): launch faster.`;
   if (!outward && near > rT + m.zone)
@@ -2240,8 +2249,9 @@ function showCard(f: Flight): void {
     put(card, 'h2', '', `${m.target} reached!`);
     const stars = put(card, 'div', 'ss-card-stars');
     for (let i = 0; i < 3; i++) {
-      const star = put(stars, 'span', i < r.stars ? '' : 'off', i < r.stars ? '★' : '☆');
-      star.style.animationDelay = `${0.15 + 0.25 * i}s`;
+      // No delay: the arrival banner has already popped the stars in one by one; a delayed
+      // (invisible) star here read as an empty row.
+      put(stars, 'span', i < r.stars ? '' : 'off', i < r.stars ? '★' : '☆');
     }
     put(card, 'div', 'ss-card-score', `${r.score.total} points`);
     put(
