@@ -503,8 +503,11 @@ pop.style.cssText =
   stage.append(pop);
 }
 let popHideTimer = 0;
+/** Pops shown since the page loaded (a test reads it: a pop lasts about a second, gone before a loaded machine looks). */
+let popsShown = 0;
 /** Shows `text` in the pop, rising and fading after `ms` ms. */
 function showPop(text: string, ms = 1100): void {
+  popsShown++;
   pop.textContent = text;
   pop.style.transition = 'none';
   pop.style.opacity = '1';
@@ -1348,8 +1351,11 @@ shell.expose({
   lastPush: (): Push | null => (lastPush ? { ...lastPush } : null),
   /** Whether the aim marker (the arrow from the cube and the ring where a push would stop it) is drawn. */
   aimShown: (): boolean => aimRing.visible,
-  /** The pop over the scene: its text and whether it shows. */
-  pop: () => ({ text: pop.textContent ?? '', shown: pop.style.opacity === '1' }),
+  /**
+   * The pop over the scene: the text it shows or last showed, whether it shows now, and how many pops
+   * have been shown since the page loaded (a pop fades after 1.1 to 2.6 s of the clock).
+   */
+  pop: () => ({ text: pop.textContent ?? '', shown: pop.style.opacity === '1', count: popsShown }),
   /** Sounds played so far (the pads' chimes, pushes, impacts; 0 until the first input starts the audio). */
   soundsPlayed: (): number => sound.played,
   /**

@@ -523,12 +523,15 @@ describe('phone controls', () => {
     // The round's clock waits for the first touch (the cube landed over a second ago).
     expect(s0.time).toBeGreaterThan(1);
     expect(await read(g, 'challenge().padTime')).toBe(0);
+    expect(await read(g, 'pop().count')).toBe(0);
     const at = await stillPageOf(g, pad[0]!, 0.5, pad[1]!);
     await g.page.touchscreen.tap(at.x, at.y);
     await g.waitFor(() => (window.game as unknown as { challenge(): { pad: number } }).challenge().pad === 1, null, 60_000);
+    // The pop fades after about a second of the clock: the wait reads the count of pops shown (a
+    // loaded machine may take longer than that to look), and the text it showed.
     const pop = await g.waitFor(() => {
-      const p = (window.game as unknown as { pop(): { text: string; shown: boolean } }).pop();
-      return p.shown ? p.text : null;
+      const p = (window.game as unknown as { pop(): { text: string; count: number } }).pop();
+      return p.count > 0 ? p.text : null;
     }, null);
     expect(pop).toContain('Pad 1 of 5');
     // The pop fits the phone's width.

@@ -639,6 +639,7 @@ describe('3D rigid-body games in headless Chromium', () => {
     // The lit pad is more than a metre from where the cube landed: a click on its centre (drawn at the
     // cube's centre height) pushes the cube there, and it comes to rest on it.
     expect(Math.hypot(pad[0]! - s0.x, pad[1]! - s0.z)).toBeGreaterThan(1);
+    expect(await g.page.evaluate(() => (window.game as unknown as { pop(): { count: number } }).pop().count)).toBe(0);
     const at = await stillPageOf(g, pad[0]!, 0.5, pad[1]!);
     await g.page.mouse.click(at.x, at.y);
     const push = await g.page.evaluate(() =>
@@ -650,9 +651,11 @@ describe('3D rigid-body games in headless Chromium', () => {
     const s1 = await cubeState(g);
     expect(Math.hypot(s1.x - pad[0]!, s1.z - pad[1]!)).toBeLessThan(0.6);
     // The reward: the pop says so, the status row counts it.
+    // The pop fades after about a second of the clock: the wait reads the count of pops shown (a
+    // loaded machine may take longer than that to look), and the text it showed.
     const pop = await g.waitFor(() => {
-      const p = (window.game as unknown as { pop(): { text: string; shown: boolean } }).pop();
-      return p.shown ? p.text : null;
+      const p = (window.game as unknown as { pop(): { text: string; count: number } }).pop();
+      return p.count > 0 ? p.text : null;
     }, null);
     expect(pop).toContain('Pad 1 of 5');
     await g.waitFor(() => document.querySelector('[data-hud="challenge"]')?.textContent?.includes('1/5') ?? false, null);

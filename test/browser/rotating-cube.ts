@@ -40,13 +40,18 @@ export function cubeState(g: GamePage): Promise<CubeState> {
   });
 }
 
-/** Waits (in world time, up to `timeoutMs` of the clock) until the cube rests: slower than 0.05 m/s and 0.1 rad/s. */
+/**
+ * Waits (up to `timeoutMs` of the clock) until the cube rests flat on a face: its centre under 0.51 m
+ * (a 1 m cube on a face sits at 0.5 m; tipped 2 degrees onto an edge, at 0.52 m), slower than 0.05 m/s
+ * and 0.1 rad/s. A cube that rolled short of its tipping point stands still for a moment at the top of
+ * its swing back, tipped (its centre up to 0.71 m high), before it falls back onto its face.
+ */
 export async function waitCubeAtRest(g: GamePage, timeoutMs = 60_000): Promise<void> {
   await g.waitFor(
     () => {
       const game = window.game as unknown as {
         body?(): number;
-        world: { time: number; components: Record<'Velocity' | 'AngularVelocity', Record<'x' | 'y' | 'z', Float64Array>> };
+        world: { time: number; components: Record<'Position' | 'Velocity' | 'AngularVelocity', Record<'x' | 'y' | 'z', Float64Array>> };
       };
       // The page's own hooks come after the kit's (its module has more to set up once the shell is ready).
       if (typeof game?.body !== 'function') return false;
@@ -54,6 +59,7 @@ export async function waitCubeAtRest(g: GamePage, timeoutMs = 60_000): Promise<v
         e = game.body();
       return (
         game.world.time > 1 &&
+        c.Position.y[e]! < 0.51 &&
         Math.hypot(c.Velocity.x[e]!, c.Velocity.y[e]!, c.Velocity.z[e]!) < 0.05 &&
         Math.hypot(c.AngularVelocity.x[e]!, c.AngularVelocity.y[e]!, c.AngularVelocity.z[e]!) < 0.1
       );
