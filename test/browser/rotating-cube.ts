@@ -111,3 +111,36 @@ export async function stillPageOf(g: GamePage, x: number, y: number, z: number):
   }
   return at;
 }
+
+/**
+ * Sets the cube down by hand in the page: its centre at (x, 0.51, z), m, resting (no velocity or
+ * spin), with face `face` of the game's FACES (+x, -x, +y, -y, +z, -z) on top, square to the world's axes.
+ */
+export async function placeCube(g: GamePage, x: number, z: number, face: number): Promise<void> {
+  await g.page.evaluate(
+    ([x, z, face]) => {
+      const S = Math.SQRT1_2;
+      // (x, y, z, w) with each face on top: +x up is +90 degrees about z, and so on.
+      const up = [
+        [0, 0, S, S],
+        [0, 0, -S, S],
+        [0, 0, 0, 1],
+        [1, 0, 0, 0],
+        [-S, 0, 0, S],
+        [S, 0, 0, S],
+      ][face!]!;
+      const game = window.game as unknown as {
+        body(): number;
+        world: { components: Record<'Position' | 'Velocity' | 'AngularVelocity' | 'Orientation', Record<string, Float64Array>> };
+      };
+      const c = game.world.components,
+        e = game.body();
+      c.Position.x![e] = x!;
+      c.Position.y![e] = 0.51;
+      c.Position.z![e] = z!;
+      [c.Orientation.x![e], c.Orientation.y![e], c.Orientation.z![e], c.Orientation.w![e]] = up as [number, number, number, number];
+      for (const v of [c.Velocity, c.AngularVelocity]) v.x![e] = v.y![e] = v.z![e] = 0;
+    },
+    [x, z, face],
+  );
+}
