@@ -25,7 +25,10 @@
  * Challenges: room: rest the cube on five pads in turn, the last four rolled onto with a given face up
  * (stars by rolls against par); flip: 10 flips in 20 s, counted only while the spin is within FLIP_BAND.
  * Each run (page load or R) lays the pads out afresh from a seed (scene.ts `padLayout`); the face net at
- * the top left of the stage shows which colour each roll key brings on top.
+ * the top left of the stage shows which colour each roll key brings on top, and until the first roll a
+ * card at the top right shows the round (each pad's colour to land with on top) and the rule. The lit
+ * pad's rim lights while the cube's centre is near enough to count (scene.ts PAD_GRACE); resting there
+ * with the wrong face up (or slid on) the pop says why it does not count.
  * URL: ?mode=room|cube|flip (default room), ?spin=rad/s (flip), ?seed=N (the same pad layout every run).
  */
 
@@ -80,6 +83,7 @@ import {
   MODES,
   type Mode,
   PAD_COUNT,
+  PAD_GRACE,
   PAD_HALF,
   PAR_SLACK,
   PadChallenge,
@@ -441,6 +445,13 @@ const padMesh = new Mesh(
 );
 padMesh.receiveShadow = true;
 app.scene.add(padMesh);
+/**
+ * The lit pad's rim: a white frame as wide as the pad's counting square (its half edge plus
+ * PAD_GRACE), shown while the cube's centre is over that square, so the player sees when it counts.
+ */
+const padRim = new Mesh(padPlane, new MeshBasicMaterial({ color: 0xffffff, map: padFrame, transparent: true, depthWrite: false }));
+padRim.visible = false;
+app.scene.add(padRim);
 const padDoneMaterial = new MeshBasicMaterial({ color: 0xc9a43a, map: padFill, transparent: true, opacity: 0.55, depthWrite: false });
 const padMarks = Array.from({ length: PAD_COUNT }, () => {
   const outline = new Mesh(
@@ -493,19 +504,25 @@ let aimUntil = 0;
 const pop = document.createElement('div');
 pop.dataset.hud = 'pad-pop';
 pop.setAttribute('aria-live', 'polite');
+// Over the face net and the rules card (z-index 5), and on a phone below them (they fill the stage's
+// top there); a long line (the round's end) wraps inside the stage.
 pop.style.cssText =
-  'position: absolute; left: 50%; top: 22%; transform: translate(-50%, -50%); pointer-events: none; opacity: 0;' +
+  `position: absolute; left: 50%; top: ${pageLayout().touch() ? '48%' : '22%'}; transform: translate(-50%, -50%); pointer-events: none; opacity: 0;` +
   'font: 700 clamp(18px, 5.5vw, 28px) system-ui, sans-serif; color: #ffe27a; text-shadow: 0 2px 6px #000, 0 0 2px #000; text-align: center;' +
-  'white-space: nowrap; transition: opacity 0.25s, transform 0.9s ease-out';
+  'z-index: 5; width: max-content; max-width: calc(100% - 24px); transition: opacity 0.25s, transform 0.9s ease-out';
 {
   const stage = app.canvas.parentElement ?? document.body;
   if (getComputedStyle(stage).position === 'static') stage.style.position = 'relative';
   stage.append(pop);
 }
 let popHideTimer = 0;
-/** Shows `text` in the pop, rising and fading after `ms` ms. */
-function showPop(text: string, ms = 1100): void {
+/** Pops shown since the page loaded (a test reads it: a pop lasts about a second, gone before a loaded machine looks). */
+let popsShown = 0;
+/** Shows `text` in the pop (in CSS colour `color`), rising and fading after `ms` ms. */
+function showPop(text: string, ms = 1100, color = '#ffe27a'): void {
+  popsShown++;
   pop.textContent = text;
+  pop.style.color = color;
   pop.style.transition = 'none';
   pop.style.opacity = '1';
   pop.style.transform = 'translate(-50%, -50%) scale(1.15)';
@@ -519,6 +536,21 @@ function showPop(text: string, ms = 1100): void {
 }
 /** The chimes of pads 1 to 5 (a rising C major arpeggio, Hz); the round's end rings the octave above. */
 const PAD_PITCHES = [523, 659, 784, 988, 1175];
+
+/** The reason (PadChallenge `blocked`) the last pop said a resting cube did not count, or '' (none said since it last moved). */
+let blockedSaid: '' | 'face' | 'slide' = '';
+/**
+ * Says once, in the pop, why the cube resting on the lit pad does not count: another face on top than
+ * the pad wants, or the wanted face slid on instead of rolled on.
+ */
+function sayBlocked(): void {
+  const why = params.mode === 'room' ? pads.blocked : '';
+  if (why === blockedSaid) return;
+  blockedSaid = why;
+  const want = FACE_NAMES[layout.faces[pads.pad] ?? -1];
+  if (why === 'face' && want) showPop(`✗ This pad needs ${want} on top`, 1800, '#ffb4a8');
+  else if (why === 'slide') showPop(`✗ Slid on: roll onto it to count`, 1800, '#ffb4a8');
+}
 
 /** Celebrates the pads reached since the last frame: chime, burst ring, pop. */
 function celebrate(): void {
@@ -560,6 +592,7 @@ window.addEventListener('keydown', (event) => {
   // The round's clock starts with the player's first move; a roll or spin leaves the last aim stale.
   startClock();
   clearAim();
+  if (k !== 'q' && k !== 'e') hideRules();
   held.add(k);
   pressed.add(k);
   event.preventDefault();
@@ -940,6 +973,7 @@ function setMode(mode: Mode): void {
   app.frame(v.min, v.max, viewDirectionOf(mode));
   framedMode = mode;
   clampOrbit();
+  fitBesideDrawer();
   if (params.axes) renderer.setDebug(debugOptions());
 }
 
@@ -984,6 +1018,13 @@ const panel = createPanel(
 
 const status = createStatusRow({ name: 'challenge' });
 const touch = pageLayout().touch();
+// On a phone each of the row's three lines keeps two lines' height (the texts there fit in two): a
+// row that grew with a longer hint shrank the stage and moved the whole view 20 to 50 px.
+if (touch)
+  for (const line of [status.goal, status.numbers, status.hint]) {
+    line.style.minHeight = '2.8em';
+    line.style.boxSizing = 'border-box';
+  }
 const stars = (n: number): string => '★'.repeat(n) + '☆'.repeat(3 - n);
 
 /** Writes the status row: the mode's goal, its numbers (the key readout) and how to play. */
@@ -997,8 +1038,11 @@ function updateStatus(wx: number, wy: number, wz: number): void {
       : 'Click the floor: the cube slides there · W A S D roll it · Space jumps';
     const want = layout.faces[pads.pad] ?? -1;
     const par = padPar(layout);
+    // On a phone in two lines at most (the status row keeps its height: a taller one moved the view).
     if (want >= 0 && !pads.done)
-      flick = `${touch ? 'Tap' : 'Click'} beside the pad to slide there, then ROLL on (${touch ? '▲◀▼▶' : 'W A S D'}) so ${FACE_NAMES[want]} lands on top: a slide onto it does not count`;
+      flick = touch
+        ? `Tap beside the pad, then ROLL on (▲◀▼▶) with ${FACE_NAMES[want]} on top`
+        : `Click beside the pad to slide there, then ROLL on (W A S D) so ${FACE_NAMES[want]} lands on top: a slide onto it does not count`;
     const time = pads.time(t);
     if (pads.startedAt < 0 && !pads.done)
       flick = touch ? `Clock starts at your first tap · ${flick}` : `Clock starts at your first move · ${flick}`;
@@ -1160,6 +1204,69 @@ function updateNet(): void {
   netCells[2]!.style.border = '2px solid #fff';
 }
 
+// ---- The pads' rules (top right of the stage, until the round's first roll) ------------------------
+
+/**
+ * A card that shows the round before the player makes a roll: the five pads in turn, each as the
+ * colour that must be on top there (the first: any face), and the rule in one line (from pad 2, roll
+ * onto the pad with its colour on top; a slide keeps the top face and does not count). A stranger
+ * learnt the face rule only by failing at pad 2. It goes at the first roll key (W A S D, ▲◀▼▶) and
+ * comes back with a new layout (R). Room mode only.
+ */
+const rules = document.createElement('div');
+rules.dataset.hud = 'pad-rules';
+rules.dataset.sceneOverlay = '';
+rules.style.cssText =
+  'position: absolute; right: 8px; top: 8px; z-index: 4; pointer-events: none; box-sizing: border-box;' +
+  `width: ${touch ? 'min(262px, calc(100% - 128px))' : '300px'}; padding: 8px 10px; border-radius: 8px;` +
+  'background: rgba(8, 12, 20, 0.82); color: #e8ecf1; font: 500 12px/1.35 system-ui, sans-serif; transition: opacity 0.5s';
+const rulesTitle = document.createElement('div');
+rulesTitle.style.cssText = 'font-weight: 700; font-size: 13px; margin-bottom: 5px';
+rulesTitle.textContent = touch ? '5 pads in turn, this colour on top:' : 'Land on 5 pads in turn, this colour on top:';
+const rulesChips = document.createElement('div');
+rulesChips.style.cssText = 'display: flex; gap: 6px; margin-bottom: 6px';
+const rulesText = document.createElement('div');
+rules.append(rulesTitle, rulesChips, rulesText);
+(app.canvas.parentElement ?? document.body).append(rules);
+/** Whether the rules card shows (until the round's first roll key). */
+let rulesShown = true;
+/** Fills the rules card for this run's layout and shows it (room mode). */
+function showRules(): void {
+  rulesChips.replaceChildren(
+    ...layout.faces.map((f, i) => {
+      const chip = document.createElement('div');
+      chip.dataset.face = f >= 0 ? FACE_NAMES[f]! : 'any';
+      chip.title = f >= 0 ? `pad ${i + 1}: ${FACE_NAMES[f]} on top` : `pad ${i + 1}: any face`;
+      chip.style.cssText =
+        'flex: 1 1 0; height: 30px; border-radius: 5px; display: flex; align-items: center; justify-content: center;' +
+        (f >= 0 ? `background: ${faceCss(f)}; border: 2px solid rgba(0, 0, 0, 0.5)` : `border: 2px dashed ${'#22d3ee'}`);
+      const label = document.createElement('span');
+      label.textContent = f >= 0 ? `${i + 1}` : `${i + 1} any`;
+      label.style.cssText =
+        'background: #0b0f18; color: #fff; border-radius: 3px; padding: 0 4px; font: 700 11px system-ui, sans-serif; white-space: nowrap';
+      chip.append(label);
+      return chip;
+    }),
+  );
+  rulesText.textContent = touch
+    ? 'From pad 2, ROLL on (▲◀▼▶) with its colour on top: a slide on does not count. The net shows what rolls bring up.'
+    : 'From pad 2, ROLL onto the pad (W A S D) with its colour on top: a slide onto it does not count. The net at the left shows what each roll brings up.';
+  rulesShown = params.mode === 'room';
+  rules.style.display = rulesShown ? 'block' : 'none';
+  rules.style.opacity = '1';
+}
+/** Fades the rules card out (the player's first roll). */
+function hideRules(): void {
+  if (!rulesShown) return;
+  rulesShown = false;
+  rules.style.opacity = '0';
+  window.setTimeout(() => {
+    if (!rulesShown) rules.style.display = 'none';
+  }, 500);
+}
+showRules();
+shell.onWorldChange(showRules);
+
 // ---- Readout and plot (bottom right) -------------------------------------------------------------
 
 const box = document.createElement('div');
@@ -1254,13 +1361,24 @@ function frame(): void {
     // (a face colour glows faintly, so the pad reads as the same colour as the face, not washed out).
     material.color.setHex(want >= 0 ? faceColors[want]! : ANY_COLOR);
     material.emissive.setHex(want >= 0 ? faceColors[want]! : ANY_COLOR);
-    material.emissiveIntensity = 0.3 + 0.15 * Math.sin(now / 250);
+    // Brighter, steady, with its rim drawn, while the cube's centre is over the counting square.
+    material.emissiveIntensity = pads.over ? 0.9 : 0.3 + 0.15 * Math.sin(now / 250);
+    const rim = (layout.halves[pads.pad]! + PAD_GRACE) / PAD_HALF;
+    padRim.scale.set(rim, 1, rim);
+    padRim.position.set(spot[0], 0.025, spot[1]);
   }
+  padRim.visible = padLit && pads.over;
   padMarks.forEach((mark, i) => {
     mark.outline.visible = room && i > pads.pad;
     mark.done.visible = room && i < pads.pad;
   });
+  // The round won: every pad, the last one too, glows gold (pulsing) until the next round; while it
+  // runs the pads reached are a dim gold, so the lit pad stands out.
+  padDoneMaterial.color.setHex(pads.done ? 0xffd34d : 0xc9a43a);
+  padDoneMaterial.opacity = pads.done ? 0.75 + 0.25 * Math.sin(now / 220) : 0.55;
+  if (pads.done && rulesShown) hideRules();
   celebrate();
+  sayBlocked();
   const age = (now - burstAt) / BURST_MS;
   burst.visible = room && age >= 0 && age < 1;
   if (burst.visible) {
@@ -1286,6 +1404,46 @@ function frame(): void {
   }
   if (flash > 0) flash--;
 }
+
+// ---- The settings drawer: on a wide window it opens over the stage's right, so the room moves aside
+
+const corner = new Vector3();
+/**
+ * With the settings drawer open over the stage (a wide window: the game arrangement's drawer), shifts
+ * the picture left and, when it would not fit, zooms it out (the camera's view offset and zoom), so the
+ * room's box (floor and walls) lies in the part of the stage the drawer leaves free; closed, the
+ * camera's own framing again. The camera's position and the orbit stay as they are.
+ */
+function fitBesideDrawer(): void {
+  const cam = app.camera;
+  cam.clearViewOffset();
+  cam.zoom = 1;
+  cam.updateProjectionMatrix();
+  const open = pageLayout().root.dataset.open === 'side';
+  const c = app.canvas.getBoundingClientRect(),
+    d = pageLayout().side.getBoundingClientRect();
+  const covered = open && d.width > 0 ? Math.max(0, c.right - d.left + 8) : 0;
+  if (params.mode !== 'room' || covered === 0 || covered > 0.7 * c.width) return;
+  cam.updateMatrixWorld();
+  let a = Infinity,
+    b = -Infinity;
+  for (const x of [-ROOM_HALF, ROOM_HALF])
+    for (const y of [0, WALL_HEIGHT])
+      for (const z of [-ROOM_HALF, ROOM_HALF]) {
+        const nx = corner.set(x, y, z).project(cam).x;
+        a = Math.min(a, nx);
+        b = Math.max(b, nx);
+      }
+  // The free part of the stage in normalised device x: [-1, r].
+  const r = 1 - (2 * covered) / c.width;
+  const k = Math.min(1, (0.96 * (r + 1)) / (b - a));
+  const shift = (r - 1) / 2 - (k * (a + b)) / 2;
+  cam.zoom = k;
+  cam.setViewOffset(c.width, c.height, (-shift * c.width) / 2, 0, c.width, c.height);
+  cam.updateProjectionMatrix();
+}
+new MutationObserver(fitBesideDrawer).observe(pageLayout().root, { attributes: true, attributeFilter: ['data-open'] });
+window.addEventListener('resize', fitBesideDrawer);
 
 // ---- Test and console hooks on window.game ---------------------------------------------------
 
@@ -1346,10 +1504,21 @@ shell.expose({
    * from the face), its unit direction (dx, dz), speed (m/s) and the point it aims at (x, z, m); or null.
    */
   lastPush: (): Push | null => (lastPush ? { ...lastPush } : null),
+  /**
+   * The lit pad's state: whether the cube's centre is over its counting square (its rim drawn), and
+   * why a cube resting there does not count ('face', 'slide'; '' when it does or does not rest there);
+   * and the opacity of the pads reached, in [0, 1] (0.55 while the round runs, pulsing 0.5 to 1 once won).
+   */
+  padState: () => ({ over: pads.over, rim: padRim.visible, blocked: pads.blocked, goldOpacity: padDoneMaterial.opacity }),
+  /** The rules card: whether it shows, and the face each pad wants as its chips name it (a colour name or 'any'). */
+  rules: () => ({ shown: rulesShown, chips: [...rulesChips.children].map((c) => (c as HTMLElement).dataset.face ?? '') }),
   /** Whether the aim marker (the arrow from the cube and the ring where a push would stop it) is drawn. */
   aimShown: (): boolean => aimRing.visible,
-  /** The pop over the scene: its text and whether it shows. */
-  pop: () => ({ text: pop.textContent ?? '', shown: pop.style.opacity === '1' }),
+  /**
+   * The pop over the scene: the text it shows or last showed, whether it shows now, and how many pops
+   * have been shown since the page loaded (a pop fades after 1.1 to 2.6 s of the clock).
+   */
+  pop: () => ({ text: pop.textContent ?? '', shown: pop.style.opacity === '1', count: popsShown }),
   /** Sounds played so far (the pads' chimes, pushes, impacts; 0 until the first input starts the audio). */
   soundsPlayed: (): number => sound.played,
   /**

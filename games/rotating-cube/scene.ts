@@ -286,8 +286,14 @@ export const PADS: readonly (readonly [number, number])[] = Object.freeze([
   [-1.6, -1.6],
   [0, 0.9],
 ]);
-/** Largest half edge of a pad, m (the first pad's): the cube scores when its centre rests within a pad's half edge of its centre on x and z. */
+/** Largest half edge of a pad, m (the first pad's): the cube scores when its centre rests within a pad's half edge plus PAD_GRACE of its centre on x and z. */
 export const PAD_HALF = 0.6;
+/**
+ * How far past a pad's drawn edge the cube's centre may rest and still count, m: a quarter of the
+ * cube's 1 m edge, so a cube with at least a quarter of its width over the pad counts (players took a
+ * cube half on a pad for landed). The game lights the pad's rim while the centre is that near.
+ */
+export const PAD_GRACE = 0.25;
 /**
  * The faces of the cube, in the order of its body axes and of three.js's BoxGeometry groups: +x, -x,
  * +y, -y, +z, -z (the game paints them red, yellow, green, purple, blue, white).
@@ -506,6 +512,14 @@ export class PadChallenge {
   rolls = 0;
   /** Whether the top face changed since the last slide (`slid`): a pad that wants a face counts only then. */
   rolled = false;
+  /** Whether, at the last `update`, the cube's centre was within the lit pad's half edge plus PAD_GRACE of its centre on x and z (resting or not). */
+  over = false;
+  /**
+   * Why the cube resting on the lit pad at the last `update` did not count: 'face' (another face on
+   * top than the pad wants), 'slide' (the wanted face on top, but slid on, not rolled), or '' (it
+   * counted, or it does not rest on the pad).
+   */
+  blocked: '' | 'face' | 'slide' = '';
   /** The face on top at the last `update` (index into FACES), or -1 before the first. */
   private lastTop = -1;
   /** @param layout the round's pads (default CLASSIC_LAYOUT). */
@@ -520,6 +534,8 @@ export class PadChallenge {
     this.startedAt = -1;
     this.rolls = 0;
     this.rolled = false;
+    this.over = false;
+    this.blocked = '';
     this.lastTop = -1;
   }
   /** Marks a slide (a push of the cube): the next pad that wants a face needs a roll onto it first. */
@@ -541,11 +557,16 @@ export class PadChallenge {
   }
   /**
    * Checks `body` against the lit pad after a step of `world` and lights the next one when it rests
-   * there (a pad reached before `start` starts the clock then). @returns whether a pad was reached by this call.
+   * there, its centre within the pad's half edge plus PAD_GRACE (a pad reached before `start` starts
+   * the clock then); sets `over` and `blocked`. @returns whether a pad was reached by this call.
    */
   update(world: PhysicsWorld, body: number): boolean {
     const { pads, faces, halves } = this.layout;
-    if (this.done) return false;
+    this.blocked = '';
+    if (this.done) {
+      this.over = false;
+      return false;
+    }
     const top = topFace(world, body);
     if (this.lastTop >= 0 && top !== this.lastTop) {
       this.rolls++;
@@ -553,9 +574,20 @@ export class PadChallenge {
     }
     this.lastTop = top;
     const spot = pads[this.pad]!,
-      face = faces[this.pad]!;
-    if (!restsOnPad(world, body, spot[0], spot[1], halves[this.pad]!)) return false;
-    if (face >= 0 && (top !== face || !this.rolled)) return false;
+      face = faces[this.pad]!,
+      reach = halves[this.pad]! + PAD_GRACE;
+    const P = world.components.Position;
+    this.over = Math.abs(P.x[body]! - spot[0]) <= reach && Math.abs(P.z[body]! - spot[1]) <= reach;
+    if (!restsOnPad(world, body, spot[0], spot[1], reach)) return false;
+    if (face >= 0 && top !== face) {
+      this.blocked = 'face';
+      return false;
+    }
+    if (face >= 0 && !this.rolled) {
+      this.blocked = 'slide';
+      return false;
+    }
+    this.over = false;
     this.start(world.time);
     this.pad++;
     if (this.pad === pads.length) this.doneAt = world.time;

@@ -12,7 +12,7 @@ import { pausedShade, resumedShade } from './dom-pause';
 import { afterRelease, recordBank } from './flight-bank';
 import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
 import { checkLayout } from './layout-check';
-import { cubeState, pageOf, stillPageOf, waitCubeAtRest, waitCubeMoved } from './rotating-cube';
+import { cubeState, pageOf, placeCube, stillPageOf, waitCubeAtRest, waitCubeMoved } from './rotating-cube';
 import { touchPath } from './touch';
 
 const PHONE = { viewport: { width: 390, height: 844 }, touch: true } as const;
@@ -482,8 +482,24 @@ describe('phone controls', () => {
     await g.close();
   });
 
-  it('rotating cube: the arrows make a d-pad; the touch card leaves the floor clear and goes at the first arrow press', async () => {
+  it("rotating cube: the arrows make a d-pad; the touch card leaves the floor clear and goes at the first arrow press; so does the rules card, which shows each pad's colour before any roll", async () => {
     const g = await h.openGame('rotating-cube', { ...PHONE, query: { seed: 11 } });
+    // The rules card: the pads in turn, each chip the colour the pad wants on top (the first: any),
+    // inside the phone's width beside the face net (not over it), before the player's first roll.
+    type Rules = { rules(): { shown: boolean; chips: string[] }; challenge(): { faces: number[] } };
+    // The page's own hooks come after the kit's (its module has more to set up once the shell is ready).
+    await g.waitFor(() => typeof (window.game as unknown as { rules?: unknown }).rules === 'function', null);
+    const rules = await g.page.evaluate(() => {
+      const game = window.game as unknown as Rules;
+      return { ...game.rules(), faces: game.challenge().faces };
+    });
+    const names = ['red', 'yellow', 'green', 'purple', 'blue', 'white'];
+    expect(rules.shown).toBe(true);
+    expect(rules.chips).toEqual(rules.faces.map((f) => (f >= 0 ? names[f] : 'any')));
+    const rulesBox = (await g.page.locator('[data-hud="pad-rules"]').boundingBox())!;
+    const netBox = (await g.page.locator('[data-hud="face-net"]').boundingBox())!;
+    expect(rulesBox.x).toBeGreaterThanOrEqual(netBox.x + netBox.width);
+    expect(rulesBox.x + rulesBox.width).toBeLessThanOrEqual(390);
     const box = async (name: string) => (await g.page.getByRole('button', { name, exact: true }).boundingBox())!;
     // The touch card: two lines, there until the player's first touch (not fading after 9 s as the kit's).
     const card = await g.page.evaluate(() => {
@@ -510,6 +526,7 @@ describe('phone controls', () => {
     // A press of an arrow (no touch on the stage) sends it away.
     await touchPath(g.page, [[down.x + down.width / 2, down.y + down.height / 2]], 0);
     await g.waitFor(() => document.querySelector('[data-hud="touch-hint"]')?.classList.contains('bp-gone') ?? true, null);
+    await g.waitFor(() => !(window.game as unknown as { rules(): { shown: boolean } }).rules().shown, null);
     expect(g.errors).toEqual([]);
     await g.close();
   });
@@ -523,12 +540,15 @@ describe('phone controls', () => {
     // The round's clock waits for the first touch (the cube landed over a second ago).
     expect(s0.time).toBeGreaterThan(1);
     expect(await read(g, 'challenge().padTime')).toBe(0);
+    expect(await read(g, 'pop().count')).toBe(0);
     const at = await stillPageOf(g, pad[0]!, 0.5, pad[1]!);
     await g.page.touchscreen.tap(at.x, at.y);
     await g.waitFor(() => (window.game as unknown as { challenge(): { pad: number } }).challenge().pad === 1, null, 60_000);
+    // The pop fades after about a second of the clock: the wait reads the count of pops shown (a
+    // loaded machine may take longer than that to look), and the text it showed.
     const pop = await g.waitFor(() => {
-      const p = (window.game as unknown as { pop(): { text: string; shown: boolean } }).pop();
-      return p.shown ? p.text : null;
+      const p = (window.game as unknown as { pop(): { text: string; count: number } }).pop();
+      return p.count > 0 ? p.text : null;
     }, null);
     expect(pop).toContain('Pad 1 of 5');
     // The pop fits the phone's width.
@@ -572,6 +592,55 @@ describe('phone controls', () => {
     const p3 = await pageOf(g, s3.x, s3.y, s3.z);
     expect(p3.y).toBeLessThan(p2.y - 20);
     expect(Math.abs(p3.x - p2.x)).toBeLessThan(0.2 * Math.abs(p3.y - p2.y));
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
+  it('rotating cube: the status row keeps its height through a round (the cube set on each pad by hand); won, every pad glows gold and the pop shows clear of the face net', async () => {
+    const g = await h.openGame('rotating-cube', { ...PHONE, query: { seed: 11 } });
+    await waitCubeAtRest(g);
+    type Game = {
+      challenge(): { pad: number; pads: number[][]; faces: number[]; padsDoneAt: number };
+      padState(): { goldOpacity: number };
+      pop(): { count: number; text: string };
+    };
+    const { pads, faces } = await g.page.evaluate(() => (window.game as unknown as Game).challenge());
+    /** The status row's height and the canvas's top, CSS px, once the row says `text`. */
+    const geometry = async (text: string) => {
+      await g.waitFor((t) => document.querySelector('[data-hud="challenge"]')?.textContent?.includes(t) ?? false, text);
+      return g.page.evaluate(() => ({
+        row: document.querySelector('[data-hud="challenge"]')!.getBoundingClientRect().height,
+        top: document.querySelector('canvas')!.getBoundingClientRect().top,
+      }));
+    };
+    const start = await geometry('(1 of 5)');
+    for (let k = 0; k < pads.length; k++) {
+      // Beside the pad with another face up, then on it with the face it wants (the change of the top face is a roll).
+      const want = faces[k]! >= 0 ? faces[k]! : 2;
+      await placeCube(g, pads[k]![0]! + (pads[k]![0]! > 0 ? -1.2 : 1.2), pads[k]![1]!, want ^ 1);
+      await g.waitFor((f) => (window.game as unknown as { challenge(): { face: number } }).challenge().face === f, want ^ 1);
+      await placeCube(g, pads[k]![0]!, pads[k]![1]!, want);
+      await g.waitFor((n) => (window.game as unknown as Game).challenge().pad === n, k + 1, 60_000);
+      const now = await geometry(k + 1 < pads.length ? `(${k + 2} of 5)` : 'All 5 pads');
+      expect(now).toEqual(start);
+    }
+    // Won: the pads reached glow a pulsing gold (0.55 while the round runs), the last one too.
+    await g.waitFor(() => (window.game as unknown as Game).padState().goldOpacity > 0.6, null);
+    const pop = await g.waitFor(() => {
+      const p = (window.game as unknown as Game).pop();
+      return p.text.startsWith('All 5 pads') ? p : null;
+    }, null);
+    expect(pop.count).toBe(5);
+    // Measured once it has risen to its full size (it starts 15 % larger and shrinks as it rises).
+    await g.waitFor(() => {
+      const m = getComputedStyle(document.querySelector('[data-hud="pad-pop"]')!).transform;
+      return /^matrix\(1, 0, 0, 1,/.test(m);
+    }, null);
+    const popBox = (await g.page.locator('[data-hud="pad-pop"]').boundingBox())!;
+    const netBox = (await g.page.locator('[data-hud="face-net"]').boundingBox())!;
+    expect(popBox.y).toBeGreaterThan(netBox.y + netBox.height);
+    expect(popBox.x).toBeGreaterThanOrEqual(0);
+    expect(popBox.x + popBox.width).toBeLessThanOrEqual(390);
     expect(g.errors).toEqual([]);
     await g.close();
   });

@@ -639,6 +639,7 @@ describe('3D rigid-body games in headless Chromium', () => {
     // The lit pad is more than a metre from where the cube landed: a click on its centre (drawn at the
     // cube's centre height) pushes the cube there, and it comes to rest on it.
     expect(Math.hypot(pad[0]! - s0.x, pad[1]! - s0.z)).toBeGreaterThan(1);
+    expect(await g.page.evaluate(() => (window.game as unknown as { pop(): { count: number } }).pop().count)).toBe(0);
     const at = await stillPageOf(g, pad[0]!, 0.5, pad[1]!);
     await g.page.mouse.click(at.x, at.y);
     const push = await g.page.evaluate(() =>
@@ -650,9 +651,11 @@ describe('3D rigid-body games in headless Chromium', () => {
     const s1 = await cubeState(g);
     expect(Math.hypot(s1.x - pad[0]!, s1.z - pad[1]!)).toBeLessThan(0.6);
     // The reward: the pop says so, the status row counts it.
+    // The pop fades after about a second of the clock: the wait reads the count of pops shown (a
+    // loaded machine may take longer than that to look), and the text it showed.
     const pop = await g.waitFor(() => {
-      const p = (window.game as unknown as { pop(): { text: string; shown: boolean } }).pop();
-      return p.shown ? p.text : null;
+      const p = (window.game as unknown as { pop(): { text: string; count: number } }).pop();
+      return p.count > 0 ? p.text : null;
     }, null);
     expect(pop).toContain('Pad 1 of 5');
     await g.waitFor(() => document.querySelector('[data-hud="challenge"]')?.textContent?.includes('1/5') ?? false, null);
@@ -691,6 +694,93 @@ describe('3D rigid-body games in headless Chromium', () => {
     const p3 = await pageOf(g, s3.x, s3.y, s3.z);
     expect(p3.y).toBeLessThan(p2.y - 20);
     expect(Math.abs(p3.x - p2.x)).toBeLessThan(0.2 * Math.abs(p3.y - p2.y));
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+  it("rotating-cube (room): a cube slid to rest a quarter past a pad's edge counts; on the next pad with the wrong face up its rim lights and the pop says which face it needs", async () => {
+    const g = await open('rotating-cube', { seed: 11 });
+    await waitCubeAtRest(g);
+    type Game = {
+      challenge(): { pad: number; pads: number[][]; halves: number[]; faces: number[] };
+      padState(): { over: boolean; rim: boolean; blocked: string };
+      pop(): { text: string; count: number };
+    };
+    const { pads, halves, faces } = await g.page.evaluate(() => (window.game as unknown as Game).challenge());
+    // A click 0.15 m past pad 1's edge on the side facing the room's centre: the cube's centre rests
+    // there (within 0.1 m), off the drawn pad, and it counts (within PAD_GRACE, 0.25 m, of the edge).
+    const [x0, z0] = pads[0]!;
+    const aimX = x0! - Math.sign(x0!) * (halves[0]! + 0.15);
+    const at = await stillPageOf(g, aimX, 0.5, z0!);
+    await g.page.mouse.click(at.x, at.y);
+    await g.waitFor(() => (window.game as unknown as Game).challenge().pad === 1, null, 60_000);
+    const s1 = await cubeState(g);
+    expect(Math.abs(s1.x - x0!)).toBeGreaterThan(halves[0]!);
+    // Pad 2 wants a face the cube does not show: slid to its edge, the cube's centre is over the
+    // counting square (the rim lights), and resting there the pop says the face it needs.
+    await waitCubeAtRest(g);
+    const [x1, z1] = pads[1]!;
+    const pops = await g.page.evaluate(() => (window.game as unknown as Game).pop().count);
+    const at2 = await stillPageOf(g, x1! - Math.sign(x1!) * halves[1]!, 0.5, z1!);
+    await g.page.mouse.click(at2.x, at2.y);
+    const state = await g.waitFor(
+      () => {
+        const p = (window.game as unknown as Game).padState();
+        return p.blocked !== '' ? p : null;
+      },
+      null,
+      60_000,
+    );
+    expect(state).toEqual({ over: true, rim: true, blocked: 'face', goldOpacity: 0.55 });
+    const pop = await g.waitFor((n) => {
+      const p = (window.game as unknown as Game).pop();
+      return p.count > n ? p.text : null;
+    }, pops);
+    const names = ['red', 'yellow', 'green', 'purple', 'blue', 'white'];
+    expect(pop).toContain(`needs ${names[faces[1]!]} on top`);
+    expect(await g.page.evaluate(() => (window.game as unknown as Game).challenge().pad)).toBe(1);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+  it('rotating-cube (room): the settings drawer, open over the stage, moves the room into the part it leaves free; closed, the view is whole again', async () => {
+    // At the desktop size a stranger played (the drawer is 380 px of the 1280).
+    const g = await h.openGame('rotating-cube', { query: { seed: 11 }, viewport: { width: 1280, height: 800 }, readyTimeoutMs: 60_000 });
+    await g.waitFor(() => typeof (window.game as unknown as { padState?: unknown }).padState === 'function', null);
+    /** The page x span of the room's box (floor and 1.5 m walls, 3 m half edge) and the drawer's left edge. */
+    const spans = () =>
+      g.page.evaluate(() => {
+        type V = { x: number; project(c: unknown): V };
+        const game = window.game as unknown as {
+          app: { camera: { zoom: number; position: { constructor: new (x: number, y: number, z: number) => V } } };
+        };
+        const cam = game.app.camera;
+        const r = document.querySelector('canvas')!.getBoundingClientRect();
+        const xs: number[] = [];
+        for (const x of [-3, 3])
+          for (const y of [0, 1.5])
+            for (const z of [-3, 3]) xs.push(r.left + ((new cam.position.constructor(x, y, z).project(cam).x + 1) / 2) * r.width);
+        const side = document.querySelector('.bp-side')!.getBoundingClientRect();
+        return {
+          left: Math.min(...xs),
+          right: Math.max(...xs),
+          drawer: side.width > 0 ? side.left : Infinity,
+          zoom: cam.zoom,
+          stage: r.left,
+        };
+      });
+    const closed = await spans();
+    await g.page.locator('.bp-side-button').click();
+    const open_ = await g.waitFor(() => (document.querySelector('.bp-app') as HTMLElement).dataset.open === 'side' || null, null);
+    expect(open_).toBe(true);
+    const aside = await spans();
+    // The room was drawn where the drawer opens (the reason to move it); now it is clear of it.
+    expect(closed.right).toBeGreaterThan(aside.drawer + 50);
+    expect(aside.right).toBeLessThan(aside.drawer);
+    expect(aside.left).toBeGreaterThanOrEqual(aside.stage);
+    await g.page.locator('.bp-side-button').click();
+    await g.waitFor(() => (document.querySelector('.bp-app') as HTMLElement).dataset.open === undefined || null, null);
+    const again = await spans();
+    expect(again.zoom).toBe(1);
+    expect(again.right).toBeCloseTo(closed.right, 0);
     expect(g.errors).toEqual([]);
     await g.close();
   });

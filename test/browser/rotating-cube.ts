@@ -40,13 +40,18 @@ export function cubeState(g: GamePage): Promise<CubeState> {
   });
 }
 
-/** Waits (in world time, up to `timeoutMs` of the clock) until the cube rests: slower than 0.05 m/s and 0.1 rad/s. */
+/**
+ * Waits (up to `timeoutMs` of the clock) until the cube rests flat on a face: its centre under 0.51 m
+ * (a 1 m cube on a face sits at 0.5 m; tipped 2 degrees onto an edge, at 0.52 m), slower than 0.05 m/s
+ * and 0.1 rad/s. A cube that rolled short of its tipping point stands still for a moment at the top of
+ * its swing back, tipped (its centre up to 0.71 m high), before it falls back onto its face.
+ */
 export async function waitCubeAtRest(g: GamePage, timeoutMs = 60_000): Promise<void> {
   await g.waitFor(
     () => {
       const game = window.game as unknown as {
         body?(): number;
-        world: { time: number; components: Record<'Velocity' | 'AngularVelocity', Record<'x' | 'y' | 'z', Float64Array>> };
+        world: { time: number; components: Record<'Position' | 'Velocity' | 'AngularVelocity', Record<'x' | 'y' | 'z', Float64Array>> };
       };
       // The page's own hooks come after the kit's (its module has more to set up once the shell is ready).
       if (typeof game?.body !== 'function') return false;
@@ -54,6 +59,7 @@ export async function waitCubeAtRest(g: GamePage, timeoutMs = 60_000): Promise<v
         e = game.body();
       return (
         game.world.time > 1 &&
+        c.Position.y[e]! < 0.51 &&
         Math.hypot(c.Velocity.x[e]!, c.Velocity.y[e]!, c.Velocity.z[e]!) < 0.05 &&
         Math.hypot(c.AngularVelocity.x[e]!, c.AngularVelocity.y[e]!, c.AngularVelocity.z[e]!) < 0.1
       );
@@ -104,4 +110,37 @@ export async function stillPageOf(g: GamePage, x: number, y: number, z: number):
     if (still) break;
   }
   return at;
+}
+
+/**
+ * Sets the cube down by hand in the page: its centre at (x, 0.51, z), m, resting (no velocity or
+ * spin), with face `face` of the game's FACES (+x, -x, +y, -y, +z, -z) on top, square to the world's axes.
+ */
+export async function placeCube(g: GamePage, x: number, z: number, face: number): Promise<void> {
+  await g.page.evaluate(
+    ([x, z, face]) => {
+      const S = Math.SQRT1_2;
+      // (x, y, z, w) with each face on top: +x up is +90 degrees about z, and so on.
+      const up = [
+        [0, 0, S, S],
+        [0, 0, -S, S],
+        [0, 0, 0, 1],
+        [1, 0, 0, 0],
+        [-S, 0, 0, S],
+        [S, 0, 0, S],
+      ][face!]!;
+      const game = window.game as unknown as {
+        body(): number;
+        world: { components: Record<'Position' | 'Velocity' | 'AngularVelocity' | 'Orientation', Record<string, Float64Array>> };
+      };
+      const c = game.world.components,
+        e = game.body();
+      c.Position.x![e] = x!;
+      c.Position.y![e] = 0.51;
+      c.Position.z![e] = z!;
+      [c.Orientation.x![e], c.Orientation.y![e], c.Orientation.z![e], c.Orientation.w![e]] = up as [number, number, number, number];
+      for (const v of [c.Velocity, c.AngularVelocity]) v.x![e] = v.y![e] = v.z![e] = 0;
+    },
+    [x, z, face],
+  );
 }

@@ -20,6 +20,7 @@ import {
   LANDING_FACE,
   PAD_COUNT,
   PAD_FACES,
+  PAD_GRACE,
   PAD_HALF,
   PADS,
   PadChallenge,
@@ -341,6 +342,50 @@ describe('rotating-cube challenges', () => {
       expect(Math.abs(Math.atan2(-bx[2]!, bx[0]!) - heading)).toBeLessThan(0.01);
     }
     expect(() => buildRotatingCube(createPhysicsWorld(rotatingCubeWorldOptions()), { heading: Number.NaN })).toThrow(/heading/);
+  });
+
+  it('a cube resting a quarter of its width over a pad counts (PAD_GRACE), a fifth does not; over and blocked say why one does not', () => {
+    const layout = padLayout(11);
+    const run = (k: number, x: number, z: number, face: number, before = -1) => {
+      const world = createPhysicsWorld(rotatingCubeWorldOptions());
+      const h = buildRotatingCube(world);
+      const pads = new PadChallenge(layout);
+      pads.pad = k;
+      addSystem(world, 'finalize', (w) => {
+        pads.update(w, h.body);
+      });
+      const P = world.components.Position,
+        O = world.components.Orientation;
+      const drop = (f: number): void => {
+        P.x[h.body] = x;
+        P.y[h.body] = 0.51;
+        P.z[h.body] = z;
+        [O.x[h.body], O.y[h.body], O.z[h.body], O.w[h.body]] = FACE_UP[f]!;
+        setVelocity(world, h.body, [0, 0, 0]);
+        setAngularVelocity(world, h.body, [0, 0, 0]);
+        for (let i = 0; i < 60; i++) step(world);
+      };
+      // A face set up before (another top face: the change counts as a roll), then the one on the pad.
+      if (before >= 0) drop(before);
+      drop(face);
+      return pads;
+    };
+    const [x0, z0] = layout.pads[0]!,
+      half0 = layout.halves[0]!;
+    // Pad 1 (any face): the centre 0.05 m inside the grace counts; 0.05 m past it does not, and is not over.
+    expect(run(0, x0 + half0 + PAD_GRACE - 0.05, z0, 2).pad).toBe(1);
+    expect(run(0, x0 - half0 - PAD_GRACE + 0.05, z0, 2).pad).toBe(1);
+    const far = run(0, x0, z0 + half0 + PAD_GRACE + 0.05, 2);
+    expect([far.pad, far.over, far.blocked]).toEqual([0, false, '']);
+    // Pad 2 (wants a face): over it with another face up, 'face'; the wanted face slid on, 'slide'; rolled on, it counts.
+    const [x1, z1] = layout.pads[1]!,
+      want = layout.faces[1]!,
+      near = layout.halves[1]! + PAD_GRACE - 0.05;
+    const wrong = run(1, x1 + near, z1, want ^ 1);
+    expect([wrong.pad, wrong.over, wrong.blocked]).toEqual([1, true, 'face']);
+    const slid = run(1, x1, z1 - near, want, want);
+    expect([slid.pad, slid.over, slid.blocked]).toEqual([1, true, 'slide']);
+    expect(run(1, x1, z1 - near, want, want ^ 1).pad).toBe(2);
   });
 
   it("the pad round's clock starts at the first input, not at the world's start", () => {
