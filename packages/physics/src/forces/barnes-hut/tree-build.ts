@@ -4,7 +4,7 @@ import { MIN_PARALLEL_PER_THREAD } from '../../threads/parallel.js';
 import type { ThreadPool } from '../../threads/pool.js';
 import * as BOX from './bounds.js';
 import * as TASK from './build-task.js';
-import { BUCKET_RADIX, mortonBucketSort, mortonKeysHist, mortonScatter, sortDigitBits } from './gather.js';
+import { mortonBucketSort, mortonKeysHist, mortonScatter, sortDigitBits } from './gather.js';
 import { treeMoments2, treeMoments3 } from './moments.js';
 import * as MOMENTS from './slots/moments.js';
 import * as SORT from './slots/morton-sort.js';
@@ -175,7 +175,7 @@ function mortonSort(
     t.sortOffset = i32(t, size);
   }
   if (t.sortBucket.length < R + 1) t.sortBucket = i32(t, R + 1);
-  if (t.sortLocal.length < parts * BUCKET_RADIX) t.sortLocal = i32(t, Math.max(parts, pool?.threads ?? 1) * BUCKET_RADIX);
+  if (t.sortLocal.length < parts * SORT.BUCKET_RADIX) t.sortLocal = i32(t, Math.max(parts, pool?.threads ?? 1) * SORT.BUCKET_RADIX);
   const hist = t.sortHist,
     offset = t.sortOffset,
     bucket = t.sortBucket,

@@ -88,3 +88,9 @@ export const SHIFT = 8;
 export const BITS = 9;
 /** Numbers in P. */
 export const PARAMS = 10;
+
+// The buckets' sort (mortonBucketSort).
+/** Digits of the passes that sort a large bucket (the bits below the first digit, 8 at a time). */
+export const BUCKET_RADIX = 256;
+/** Buckets of at most this many keys are sorted by insertion, larger ones by radix passes. */
+export const BUCKET_INSERTION_MAX = 48;
