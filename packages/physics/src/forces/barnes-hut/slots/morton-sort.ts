@@ -1,6 +1,6 @@
 /**
  * The argument slots of the Morton sort's three kernels (forces/barnes-hut/gather.ts: mortonKeysHist,
- * mortonScatter, mortonBucketSort), filled by mortonSort and buildTreeWith (forces/barnes-hut/tree-build.ts):
+ * mortonScatter, mortonBucketSort), filled by mortonSort and buildTree (forces/barnes-hut/tree-build.ts):
  * where each array sits in a kernel's `A` (a kernel's own slots, named after it) and each number in the
  * `P` the three share, imported as `SORT` (`A[SORT.KEYS_HIST]`, `P[SORT.SCALE]`) by the kernels and by
  * their caller. A module of numeric constants only, which every build folds into the code
