@@ -45,8 +45,8 @@ import {
  *    about q = 1, s = 2 (1 - q) / (1 + 3 q) = 2 (r^2 - L^2) / (r^2 + 3 L^2) (Baker and Graves-Morris,
  *    "Pade Approximants", 1996), which needs no square root: it is off by (1 - u)^3 / (u (1 + 3 u^2)),
  *    u = L / r, a third-order error (6e-4 of s at 5% strain, so a compliant link keeps Hooke's law to
- *    that), is exact at the rest length and never overshoots (|s| is always a little too small). A
- *    square root and a division cost about 20% more a step on the bench's cloth. (Jakobsen's
+ *    that), is exact at the rest length and never overshoots (|s| is always a little too small), and
+ *    costs less than the square root and division of the exact factor. (Jakobsen's
  *    (r^2 - L^2) / (r^2 + L^2), "Advanced Character Physics", 2001, costs the same but is only
  *    first-order right: 2.5% off at 5% strain.)
  *    Before the links, each soft pin (pinClothPoint with options) pulls its point toward its target: for
