@@ -55,6 +55,24 @@ export interface Vec3Store {
   z: Float64Array;
 }
 
+/**
+ * A uniform field oscillating in time, per field entity: F(t) = F0 + A cos(omega t + phase), in the
+ * field's unit (ElectricField V/m, MagneticField T); x, y, z hold F0.
+ * @category Forces
+ */
+export interface OscillatingField extends Vec3Store {
+  /** Amplitude A, x component. */
+  ampX: Float64Array;
+  /** Amplitude A, y component. */
+  ampY: Float64Array;
+  /** Amplitude A, z component. */
+  ampZ: Float64Array;
+  /** Angular frequency omega, rad/s. */
+  omega: Float64Array;
+  /** Phase, rad. */
+  phase: Float64Array;
+}
+
 function vec3(n: number): Vec3Store {
   return { x: new Float64Array(n), y: new Float64Array(n), z: new Float64Array(n) };
 }
@@ -154,30 +172,12 @@ export interface Components {
    * A uniform electric field, V/m, filling the world: E(t) = E0 + A cos(omega t + phase), with E0 =
    * (x, y, z), A = (ampX, ampY, ampZ), `omega` rad/s, `phase` rad. Charged bodies feel q E.
    */
-  ElectricField: {
-    x: Float64Array;
-    y: Float64Array;
-    z: Float64Array;
-    ampX: Float64Array;
-    ampY: Float64Array;
-    ampZ: Float64Array;
-    omega: Float64Array;
-    phase: Float64Array;
-  };
+  ElectricField: OscillatingField;
   /**
    * A uniform magnetic field, T: B(t) = B0 + A cos(omega t + phase), fields as ElectricField. In a 2D
    * world only z is used (B out of the screen). Charged bodies feel the Lorentz force q v x B.
    */
-  MagneticField: {
-    x: Float64Array;
-    y: Float64Array;
-    z: Float64Array;
-    ampX: Float64Array;
-    ampY: Float64Array;
-    ampZ: Float64Array;
-    omega: Float64Array;
-    phase: Float64Array;
-  };
+  MagneticField: OscillatingField;
   /**
    * General central force about the point (cx, cy, cz): F = k r^(n-1) r_hat, r the distance from the
    * centre. k < 0 attracts. n = 2 is Hooke's law (k = -stiffness), n = -1 inverse-square gravity
