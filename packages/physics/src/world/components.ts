@@ -73,6 +73,26 @@ export interface OscillatingField extends Vec3Store {
   phase: Float64Array;
 }
 
+/**
+ * What a particle looks like at birth and at death (an emitter's for the particles it makes, a
+ * particle's own), interpolated linearly in age / duration by renderers.
+ * @category Particles
+ */
+export interface ParticleLooks {
+  /** Colour at birth, 0xRRGGBB. */
+  colorStart: Uint32Array;
+  /** Colour at death, 0xRRGGBB. */
+  colorEnd: Uint32Array;
+  /** Size at birth, m. */
+  sizeStart: Float64Array;
+  /** Size at death, m. */
+  sizeEnd: Float64Array;
+  /** Alpha at birth, 0..1. */
+  alphaStart: Float64Array;
+  /** Alpha at death, 0..1. */
+  alphaEnd: Float64Array;
+}
+
 function vec3(n: number): Vec3Store {
   return { x: new Float64Array(n), y: new Float64Array(n), z: new Float64Array(n) };
 }
@@ -303,19 +323,13 @@ export interface Components {
     quadraticDrag: Float64Array;
     gravityScale: Float64Array;
     radius: Float64Array;
-    colorStart: Uint32Array;
-    colorEnd: Uint32Array;
-    sizeStart: Float64Array;
-    sizeEnd: Float64Array;
-    alphaStart: Float64Array;
-    alphaEnd: Float64Array;
     deathEmitter: Int32Array;
     deathCount: Float64Array;
     maxGeneration: Float64Array;
     policy: Uint8Array;
     spawned: Float64Array;
     dropped: Float64Array;
-  };
+  } & ParticleLooks;
   /** Age and lifetime of a particle, s: it is removed when `age` reaches `duration`. */
   Lifetime: { age: Float64Array; duration: Float64Array };
   /**
@@ -328,13 +342,7 @@ export interface Components {
     emitter: Int32Array;
     emitterStamp: Uint32Array;
     generation: Float64Array;
-    colorStart: Uint32Array;
-    colorEnd: Uint32Array;
-    sizeStart: Float64Array;
-    sizeEnd: Float64Array;
-    alphaStart: Float64Array;
-    alphaEnd: Float64Array;
-  };
+  } & ParticleLooks;
   /** Rotation angle in a 2D world, rad, counter-clockwise. Default 0. */
   Angle: { value: Float64Array };
   /**
