@@ -97,6 +97,12 @@ function vec3(n: number): Vec3Store {
   return { x: new Float64Array(n), y: new Float64Array(n), z: new Float64Array(n) };
 }
 
+/** Empty ParticleLooks arrays (a store's group allocates them, materializeGroup). */
+function looks(): ParticleLooks {
+  const z = (): Float64Array => new Float64Array(0);
+  return { colorStart: new Uint32Array(0), colorEnd: new Uint32Array(0), sizeStart: z(), sizeEnd: z(), alphaStart: z(), alphaEnd: z() };
+}
+
 /**
  * The stores of one world; see each field for meaning, unit and default.
  * @category Bodies
@@ -625,12 +631,7 @@ export function createComponents(capacity: number, previousPosition = true): Com
       quadraticDrag: z(),
       gravityScale: z(),
       radius: z(),
-      colorStart: new Uint32Array(0),
-      colorEnd: new Uint32Array(0),
-      sizeStart: z(),
-      sizeEnd: z(),
-      alphaStart: z(),
-      alphaEnd: z(),
+      ...looks(),
       deathEmitter: new Int32Array(0),
       deathCount: z(),
       maxGeneration: z(),
@@ -643,12 +644,7 @@ export function createComponents(capacity: number, previousPosition = true): Com
       emitter: new Int32Array(0),
       emitterStamp: new Uint32Array(0),
       generation: z(),
-      colorStart: new Uint32Array(0),
-      colorEnd: new Uint32Array(0),
-      sizeStart: z(),
-      sizeEnd: z(),
-      alphaStart: z(),
-      alphaEnd: z(),
+      ...looks(),
     },
     Angle: { value: z() },
     Orientation: { x: z(), y: z(), z: z(), w: z() },
