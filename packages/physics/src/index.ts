@@ -252,7 +252,7 @@ export { WARM_UP_PILE_BALLS, WARM_UP_STEPS, type WarmUpOptions, warmUp } from '.
 export type { ClothState } from './world/cloth-state.js';
 export type { ClothLinkStore } from './world/cloth-store.js';
 export { ClothLinkKind } from './world/cloth-store.js';
-export type { Components, Vec3Store } from './world/components.js';
+export type { Components, OscillatingField, ParticleLooks, Vec3Store } from './world/components.js';
 export {
   createComponents,
   DEFAULT_MATERIAL,

@@ -321,7 +321,7 @@ const scratchGeometry: ConvexGeometry = {
  * Copies shape entity `e`'s stored geometry (body frame) into `g`.
  * @category Shapes
  */
-export function readGeometry(S: PhysicsWorld['components']['Shape'], e: number, g: ConvexGeometry): void {
+function readGeometry(S: PhysicsWorld['components']['Shape'], e: number, g: ConvexGeometry): void {
   const n = S.count[e]!,
     o = SHAPE_STRIDE * e;
   g.kind = S.kind[e]!;
@@ -339,7 +339,7 @@ export function readGeometry(S: PhysicsWorld['components']['Shape'], e: number, 
  * Calls `fn` with every shape entity of `body` (its own shape first, then the extra ones).
  * @category Shapes
  */
-export function forEachShape(world: PhysicsWorld, body: number, fn: (shape: number) => void): void {
+function forEachShape(world: PhysicsWorld, body: number, fn: (shape: number) => void): void {
   const c = world.components,
     st = world.collision.shapes;
   if (hasComponent(world, body, c.Shape)) fn(body);

@@ -455,7 +455,7 @@ function removeShapes3DOf(world: PhysicsWorld, eid: number): void {
  * v rotated by the unit quaternion q.
  * @category Shapes
  */
-export function rotate(qx: number, qy: number, qz: number, qw: number, vx: number, vy: number, vz: number): [number, number, number] {
+function rotate(qx: number, qy: number, qz: number, qw: number, vx: number, vy: number, vz: number): [number, number, number] {
   const tx = 2 * (qy * vz - qz * vy),
     ty = 2 * (qz * vx - qx * vz),
     tz = 2 * (qx * vy - qy * vx);
@@ -466,7 +466,7 @@ export function rotate(qx: number, qy: number, qz: number, qw: number, vx: numbe
  * The Hamilton product a b (rotate by b, then by a).
  * @category Shapes
  */
-export function mul(
+function mul(
   ax: number,
   ay: number,
   az: number,
@@ -488,7 +488,7 @@ export function mul(
  * The rotation matrix (row-major) of a unit quaternion.
  * @category Shapes
  */
-export function matrixOf(x: number, y: number, z: number, w: number, R: Float64Array): void {
+function matrixOf(x: number, y: number, z: number, w: number, R: Float64Array): void {
   R[0] = 1 - 2 * (y * y + z * z);
   R[1] = 2 * (x * y - z * w);
   R[2] = 2 * (x * z + y * w);
@@ -504,7 +504,7 @@ export function matrixOf(x: number, y: number, z: number, w: number, R: Float64A
  * The unit quaternion of a rotation matrix (row-major, det +1); Shepperd's method (J. Guidance and Control 1(3), 1978).
  * @category Shapes
  */
-export function quaternionOf(R: Float64Array): [number, number, number, number] {
+function quaternionOf(R: Float64Array): [number, number, number, number] {
   const tr = R[0]! + R[4]! + R[8]!;
   let x: number, y: number, z: number, w: number;
   if (tr > 0) {

@@ -53,7 +53,5 @@ export const SC_GY_HS = 3;
 export const SC_GX_H = 4;
 /** g_y h, m/s. */
 export const SC_GY_H = 5;
-/** 1 / h_s^2, 1/s^2. */
+/** 1 / h_s^2, 1/s^2 (the last: `scalars` holds 7 numbers, world/cloth-state.ts). */
 export const SC_INV_HS2 = 6;
-/** Numbers in `scalars`. */
-export const SCALARS = 7;

@@ -45,8 +45,8 @@ import {
  *    about q = 1, s = 2 (1 - q) / (1 + 3 q) = 2 (r^2 - L^2) / (r^2 + 3 L^2) (Baker and Graves-Morris,
  *    "Pade Approximants", 1996), which needs no square root: it is off by (1 - u)^3 / (u (1 + 3 u^2)),
  *    u = L / r, a third-order error (6e-4 of s at 5% strain, so a compliant link keeps Hooke's law to
- *    that), is exact at the rest length and never overshoots (|s| is always a little too small). A
- *    square root and a division cost about 20% more a step on the bench's cloth. (Jakobsen's
+ *    that), is exact at the rest length and never overshoots (|s| is always a little too small), and
+ *    costs less than the square root and division of the exact factor. (Jakobsen's
  *    (r^2 - L^2) / (r^2 + L^2), "Advanced Character Physics", 2001, costs the same but is only
  *    first-order right: 2.5% off at 5% strain.)
  *    Before the links, each soft pin (pinClothPoint with options) pulls its point toward its target: for
@@ -350,17 +350,21 @@ function scatterPoints(cl: ClothState, c: Components, from: number, to: number):
   }
 }
 
-/** The larger of `maxQ` and the largest q = (L / r)^2 of links [from, to). */
-function largestStretch(cl: ClothState, from: number, to: number, maxQ: number): number {
+/** Packed link l's stretch q = (L / r)^2: its length over its rest length, squared (SOLVE_P holds r^2 / 3). */
+function stretchOf(cl: ClothState, l: number): number {
   const xb = cl.buffer,
-    I = cl.pair,
-    F = cl.solve;
+    I = cl.pair;
+  const oa = I[PAIR_STRIDE * l + PAIR_A]!,
+    ob = I[PAIR_STRIDE * l + PAIR_B]!;
+  const dx = xb[ob + PT_X]! - xb[oa + PT_X]!,
+    dy = xb[ob + PT_Y]! - xb[oa + PT_Y]!;
+  return (dx * dx + dy * dy) / (3 * cl.solve[SOLVE_STRIDE * l + SOLVE_P]!);
+}
+
+/** The larger of `maxQ` and the largest stretch q = (L / r)^2 of links [from, to). */
+function largestStretch(cl: ClothState, from: number, to: number, maxQ: number): number {
   for (let l = from; l < to; l++) {
-    const oa = I[PAIR_STRIDE * l + PAIR_A]!,
-      ob = I[PAIR_STRIDE * l + PAIR_B]!;
-    const dx = xb[ob + PT_X]! - xb[oa + PT_X]!,
-      dy = xb[ob + PT_Y]! - xb[oa + PT_Y]!;
-    const q = (dx * dx + dy * dy) / (3 * F[SOLVE_STRIDE * l + SOLVE_P]!);
+    const q = stretchOf(cl, l);
     if (q > maxQ) maxQ = q;
   }
   return maxQ;
@@ -372,19 +376,12 @@ function tearLinks(world: PhysicsWorld, ihs2: number): void {
     c = world.components,
     n = cl.count,
     rigid = cl.rigidCount;
-  const I = cl.pair,
-    F = cl.solve,
-    T = cl.tear,
+  const T = cl.tear,
     E = cl.link,
-    lam = cl.lambda,
-    xb = cl.buffer;
+    lam = cl.lambda;
   const doomed: number[] = [];
   for (let l = 0; l < n; l++) {
-    const oa = I[PAIR_STRIDE * l + PAIR_A]!,
-      ob = I[PAIR_STRIDE * l + PAIR_B]!;
-    const dx = xb[ob + PT_X]! - xb[oa + PT_X]!,
-      dy = xb[ob + PT_Y]! - xb[oa + PT_Y]!;
-    const q = (dx * dx + dy * dy) / (3 * F[SOLVE_STRIDE * l + SOLVE_P]!),
+    const q = stretchOf(cl, l),
       t1 = 1 + T[l]!;
     if (q > t1 * t1) {
       const strain = Math.sqrt(q) - 1;

@@ -1,11 +1,11 @@
 import { hasComponent } from 'bitecs';
 import { rotateInPlace, rotateVector, rotateVectorInverse } from '../math/quaternion.js';
-import type { KernelArray } from '../threads/kernel-types.js';
 import { runParallel } from '../threads/parallel.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { Not, query } from '../world/query.js';
 import { idleWithout } from '../world/trusted-systems.js';
 import { dissipationState, linearDecay, STIFF_RATE } from './dissipation.js';
+import { velocityDamping } from './drag.js';
 import type { ForceLaw } from './law.js';
 
 /**
@@ -45,15 +45,16 @@ export const angularDampingSystem: ForceLaw = (world: PhysicsWorld): void => {
   const h = world.h;
   const is2D = world.dimensions === 2;
   const ii = c.Inertia.inv;
-  // 2D (a scalar moment of inertia): kernel `angularDampingScalar`, on the world's threads when that pays.
+  // 2D (a scalar moment of inertia): the linear drag kernel with inertia for mass (forces/drag.ts
+  // `velocityDamping`: stiff when k I^-1 h >= STIFF_RATE), on the world's threads when that pays.
   let stiff = 0;
   if (is2D) {
     stiff = runParallel(
       world,
       'angularDampingSystem',
-      angularDampingScalar,
+      velocityDamping,
       [k, ii, wx, wy, wz, tx, ty, tz],
-      [h, STIFF_RATE],
+      [STIFF_RATE, 0, h],
       ents.length,
       ents,
     );
@@ -149,38 +150,6 @@ export const stiffAngularDampingSystem = (world: PhysicsWorld): void => {
     rotateInPlace(q.x, q.y, q.z, q.w, e, h * (wx[e]! - ox), h * (wy[e]! - oy), h * (wz[e]! - oz));
   }
 };
-
-/**
- * Angular damping with a scalar moment of inertia (forces/angular-damping.ts, 2D): tau -= k w unless
- * k h / I >= the stiff rate. A: k, inv (Inertia.inv), wx, wy, wz, tx, ty, tz. P: h, stiff rate.
- * Returns the count of stiff bodies.
- */
-export function angularDampingScalar(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
-  const k = A[0] as Float64Array,
-    inv = A[1] as Float64Array;
-  const wx = A[2] as Float64Array,
-    wy = A[3] as Float64Array,
-    wz = A[4] as Float64Array;
-  const tx = A[5] as Float64Array,
-    ty = A[6] as Float64Array,
-    tz = A[7] as Float64Array;
-  const h = P[0]!,
-    rate = P[1]!;
-  const list = ids as Int32Array;
-  let stiff = 0;
-  for (let i = lo; i < hi; i++) {
-    const e = list[i]!;
-    const d = k[e]!;
-    if (d * inv[e]! * h >= rate) {
-      stiff++;
-      continue;
-    }
-    tx[e] = tx[e]! - d * wx[e]!;
-    ty[e] = ty[e]! - d * wy[e]!;
-    tz[e] = tz[e]! - d * wz[e]!;
-  }
-  return stiff;
-}
 
 // What makes each system of this module idle (world/trusted-systems.ts idleWithout): its first query.
 idleWithout(angularDampingSystem, (w) => [[w.components.AngularDamping, w.components.AngularVelocity, w.components.Torque]]);

@@ -61,7 +61,7 @@ export const quadraticDragSystem: ForceLaw = (world: PhysicsWorld): void => drag
  * The force of linear drag (`quadratic` false: c = k) or quadratic drag (true: c = k |v - u|),
  * F = -c (v - u), on every body with the law's component, and the stiff bodies left to
  * `stiffDragSystem` (c / m >= STIFF_RATE / h): linear drag records that some body was stiff, quadratic
- * drag stamps each stiff body. In still air the kernel `dragCalm` adds the forces, on the world's
+ * drag stamps each stiff body. In still air the kernel `velocityDamping` adds the forces, on the world's
  * threads when that pays. Does nothing in a substep that runs the fused pass.
  */
 function dragForces(world: PhysicsWorld, quadratic: boolean): void {
@@ -81,9 +81,9 @@ function dragForces(world: PhysicsWorld, quadratic: boolean): void {
     stiff = runParallel(
       world,
       quadratic ? 'quadraticDragSystem' : 'linearDragSystem',
-      dragCalm,
+      velocityDamping,
       [k, inv, vx, vy, vz, fx, fy, fz],
-      [limit, quadratic ? 1 : 0],
+      [limit, quadratic ? 1 : 0, 1],
       ents.length,
       ents,
     );
@@ -238,12 +238,14 @@ export const liftSystem: ForceLaw = (world: PhysicsWorld): void => {
 };
 
 /**
- * Drag in still air (forces/drag.ts): F -= c v with c = k (linear, P[1] = 0) or c = k |v| (quadratic,
- * P[1] = 1), unless c / m >= limit (then the body is stiff: no force here; it is left to the exact
- * update, quadratic bodies stamped by the caller). A: k, inv, vx, vy, vz, fx, fy, fz. P: limit,
- * quadratic. Returns the count of stiff bodies.
+ * Damping proportional to a velocity, the one kernel of drag in still air (forces/drag.ts: F -= c v,
+ * inv = 1 / m, scale 1, limit STIFF_RATE / h) and of 2D angular damping (forces/angular-damping.ts:
+ * tau -= k w, inv = 1 / I, scale h, limit STIFF_RATE): c = k (linear, P[1] = 0) or c = k |v|
+ * (quadratic, P[1] = 1); the body is stiff when c inv scale >= limit (then no force here: it is left
+ * to the exact update, quadratic bodies stamped by the caller). A: k, inv, vx, vy, vz, fx, fy, fz.
+ * P: limit, quadratic, scale. Returns the count of stiff bodies.
  */
-export function dragCalm(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
+export function velocityDamping(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
   const k = A[0] as Float64Array,
     inv = A[1] as Float64Array;
   const vx = A[2] as Float64Array,
@@ -253,7 +255,8 @@ export function dragCalm(A: KernelArray[], P: Float64Array, ids: Int32Array | nu
     fy = A[6] as Float64Array,
     fz = A[7] as Float64Array;
   const limit = P[0]!,
-    quadratic = P[1] === 1;
+    quadratic = P[1] === 1,
+    scale = P[2]!;
   const list = ids as Int32Array;
   let stiff = 0;
   for (let i = lo; i < hi; i++) {
@@ -262,7 +265,7 @@ export function dragCalm(A: KernelArray[], P: Float64Array, ids: Int32Array | nu
       y = vy[e]!,
       z = vz[e]!;
     const c = quadratic ? k[e]! * Math.sqrt(x * x + y * y + z * z) : k[e]!;
-    if (c * inv[e]! >= limit) {
+    if (c * inv[e]! * scale >= limit) {
       stiff++;
       continue;
     }

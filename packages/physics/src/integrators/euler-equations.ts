@@ -4,7 +4,6 @@ import type { PhysicsWorld } from '../world/options.js';
 
 const b = new Float64Array(3),
   t = new Float64Array(3),
-  out = new Float64Array(3),
   ab = new Float64Array(3);
 
 /**
@@ -24,10 +23,7 @@ export function eulerAcceleration(
 ): void {
   eulerBodyAcceleration(world, e, torqueX, torqueY, torqueZ, ab);
   const q = world.components.Orientation;
-  rotateVector(q.x[e]!, q.y[e]!, q.z[e]!, q.w[e]!, ab[0]!, ab[1]!, ab[2]!, out);
-  res[0] = out[0]!;
-  res[1] = out[1]!;
-  res[2] = out[2]!;
+  rotateVector(q.x[e]!, q.y[e]!, q.z[e]!, q.w[e]!, ab[0]!, ab[1]!, ab[2]!, res);
 }
 
 /**

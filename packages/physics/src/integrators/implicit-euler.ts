@@ -113,8 +113,8 @@ function implicitStep(world: PhysicsWorld, h: number, t: number, evaluate: boole
   const { u, u0, A, R, d } = W;
 
   // u0: start velocities; u: explicit Euler guess u0 + h a0.
-  readVelocities(s, u0);
-  readAccelerations(s, A);
+  pack(s, s.x0, 3, s.w0, u0);
+  pack(s, s.acc, 0, s.alpha, A);
   let scale = 0;
   for (let i = 0; i < n; i++) {
     u[i] = u0[i]! + h * A[i]!;
@@ -125,7 +125,7 @@ function implicitStep(world: PhysicsWorld, h: number, t: number, evaluate: boole
   for (let it = 0; it <= MAX_NEWTON; it++) {
     writeState(world, s, h, u);
     accelerationsAt(world, s, t + h);
-    readAccelerations(s, A);
+    pack(s, s.acc, 0, s.alpha, A);
     let residual = 0;
     for (let i = 0; i < n; i++) {
       const r = u[i]! - u0[i]! - h * A[i]!;
@@ -150,29 +150,16 @@ function implicitStep(world: PhysicsWorld, h: number, t: number, evaluate: boole
   return false;
 }
 
-function readVelocities(s: IntegratorScratch, out: Float64Array): void {
-  const [, , , u0, v0, w0] = s.x0 as [Float64Array, Float64Array, Float64Array, Float64Array, Float64Array, Float64Array];
-  const m = s.movers;
-  let k = 0;
-  for (let i = 0; i < s.nMovers; i++) {
-    const e = m[i]!;
-    out[k++] = u0[e]!;
-    out[k++] = v0[e]!;
-    out[k++] = w0[e]!;
-  }
-  const [wa, wb, wc] = s.w0 as [Float64Array, Float64Array, Float64Array];
-  const sp = s.spinners;
-  for (let i = 0; i < s.nSpinners; i++) {
-    const e = sp[i]!;
-    out[k++] = wa[e]!;
-    out[k++] = wb[e]!;
-    out[k++] = wc[e]!;
-  }
-}
-
-function readAccelerations(s: IntegratorScratch, out: Float64Array): void {
-  const [ax, ay, az] = s.acc as [Float64Array, Float64Array, Float64Array];
-  const [bx, by, bz] = s.alpha as [Float64Array, Float64Array, Float64Array];
+/**
+ * Packs 3 numbers a body into `out`: each mover's linear[at], linear[at + 1], linear[at + 2], then each
+ * spinner's angular[0], angular[1], angular[2] (the layout of u: start velocities from x0 and w0,
+ * accelerations from acc and alpha).
+ */
+function pack(s: IntegratorScratch, linear: Float64Array[], at: number, angular: Float64Array[], out: Float64Array): void {
+  const ax = linear[at]!,
+    ay = linear[at + 1]!,
+    az = linear[at + 2]!;
+  const [bx, by, bz] = angular as [Float64Array, Float64Array, Float64Array];
   const m = s.movers;
   let k = 0;
   for (let i = 0; i < s.nMovers; i++) {
@@ -267,7 +254,7 @@ function jacobianTimes(
   for (let i = 0; i < n; i++) w[i] = u[i]! + eps * p[i]!;
   writeState(world, s, h, w);
   accelerationsAt(world, s, t + h);
-  readAccelerations(s, W.Ap);
+  pack(s, s.acc, 0, s.alpha, W.Ap);
   const Ap = W.Ap;
   for (let i = 0; i < n; i++) out[i] = p[i]! - (h * (Ap[i]! - A[i]!)) / eps;
 }

@@ -102,7 +102,7 @@ export function rk4(world: PhysicsWorld, h: number): void {
  * on velocity.
  * @category Integrators
  */
-export function hasVelocityDependentForces(world: PhysicsWorld): boolean {
+function hasVelocityDependentForces(world: PhysicsWorld): boolean {
   const list = world.stages.forces;
   for (let i = 0; i < list.length; i++) {
     if ((list[i] as System & { velocityDependent?: boolean }).velocityDependent !== false) return true;

@@ -116,8 +116,8 @@ export function semiImplicitEuler(world: PhysicsWorld, h: number): void {
  * fusedForced2's pass over the bodies without drag (force 0, exact free fall); returns the running
  * finiteness sum of their new velocities and positions. A loop of its own, with nothing after it but
  * the return: the pass runs once a step, V8 compiles a long loop on the stack (OSR) during its first
- * call, and an operation after the loop that had not run by then threw that code away at every later
- * call (70 times in 100 steps of a threaded balls-in-box at 20,000 balls).
+ * call, and an operation after the loop that had not run by then would throw that code away at
+ * every later call.
  */
 function fusedBare2(world: PhysicsWorld, ents: ArrayLike<number>, h: number): number {
   const c = world.components;
@@ -354,7 +354,7 @@ function stampLinear(world: PhysicsWorld): void {
  * The fused pass found body `e`'s force NaN or infinite, before moving it: throws what the forces
  * stage's check would (as step/finite.ts `reportNonFiniteForces`: Force.x, Force.y or Force.z, stage
  * 'forces', this body). Called after the loop has stopped at the body, so the loop's only cost is
- * one well-predicted branch a body (fireworks: no measurable change, see the commit).
+ * one well-predicted branch a body.
  * @throws NonFiniteStateError always.
  */
 function nonFiniteForce(world: PhysicsWorld, e: number): never {

@@ -235,7 +235,7 @@ const euler = new Float64Array(3);
  * `s.bodyFrameSpin` (see `eulerBodyAcceleration`).
  * @category Integrators
  */
-export function angularAcceleration(world: PhysicsWorld, s: IntegratorScratch): void {
+function angularAcceleration(world: PhysicsWorld, s: IntegratorScratch): void {
   const c = world.components;
   const { x: tx, y: ty, z: tz } = c.Torque;
   const ii = c.Inertia.inv;
@@ -313,7 +313,7 @@ export function writeTrial(
  * w = R(q) (w_b0 + cw dw) with dw a body-frame slope.
  * @category Integrators
  */
-export function writeAngularTrial(
+function writeAngularTrial(
   world: PhysicsWorld,
   s: IntegratorScratch,
   cq: number,
@@ -366,7 +366,7 @@ export function writeAngularTrial(
  * into out[0..3].
  * @category Integrators
  */
-export function orientationSlope(world: PhysicsWorld, s: IntegratorScratch, out: Float64Array[]): void {
+function orientationSlope(world: PhysicsWorld, s: IntegratorScratch, out: Float64Array[]): void {
   const c = world.components;
   const { x: wx, y: wy, z: wz } = c.AngularVelocity;
   const sp = s.spinners;

@@ -278,7 +278,7 @@ export function spawnOne(
  * stores and add dependent components), and its component set registered as the kind's archetype.
  * Returns its slot; the caller writes position, velocity, lifetime and look.
  */
-export function spawnThroughBitecs(world: PhysicsWorld, em: number): number {
+function spawnThroughBitecs(world: PhysicsWorld, em: number): number {
   const pending = pendingArchetype(archetypes(world), nextSlot(world));
   const c = world.components;
   const E = c.Emitter;

@@ -21,12 +21,11 @@
 
 import { ballPairs } from '../collision/broadphase/grid-pairs-kernel.js';
 import { ballContacts } from '../collision/narrowphase/balls-kernel.js';
-import { angularDampingScalar } from '../forces/angular-damping.js';
 import { mortonBucketSort, mortonKeysHist, mortonScatter, treeForces, treeGather } from '../forces/barnes-hut/gather.js';
 import { treeMoments2, treeMoments3 } from '../forces/barnes-hut/moments.js';
 import { barnesHutWalk } from '../forces/barnes-hut/walk-kernel.js';
 import { centralForce } from '../forces/central.js';
-import { dragCalm } from '../forces/drag.js';
+import { velocityDamping } from '../forces/drag.js';
 import { attractors, gravityScale } from '../forces/gravity.js';
 import { sie2, sie3 } from '../integrators/semi-implicit-euler.js';
 import { solveColored2D } from '../solver/coloring-kernel.js';
@@ -63,14 +62,13 @@ export const KERNELS: readonly Kernel[] = /* @__PURE__ */ Object.freeze([
   sie2,
   sie3,
   gravityScale,
-  dragCalm,
+  velocityDamping,
   testKernel,
   finiteProbe,
   barnesHutWalk,
   treeGather,
   mortonKeysHist,
   treeForces,
-  angularDampingScalar,
   ballPairs,
   ballContacts,
   mortonBucketSort,

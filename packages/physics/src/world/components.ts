@@ -55,8 +55,52 @@ export interface Vec3Store {
   z: Float64Array;
 }
 
+/**
+ * A uniform field oscillating in time, per field entity: F(t) = F0 + A cos(omega t + phase), in the
+ * field's unit (ElectricField V/m, MagneticField T); x, y, z hold F0.
+ * @category Forces
+ */
+export interface OscillatingField extends Vec3Store {
+  /** Amplitude A, x component. */
+  ampX: Float64Array;
+  /** Amplitude A, y component. */
+  ampY: Float64Array;
+  /** Amplitude A, z component. */
+  ampZ: Float64Array;
+  /** Angular frequency omega, rad/s. */
+  omega: Float64Array;
+  /** Phase, rad. */
+  phase: Float64Array;
+}
+
+/**
+ * What a particle looks like at birth and at death (an emitter's for the particles it makes, a
+ * particle's own), interpolated linearly in age / duration by renderers.
+ * @category Particles
+ */
+export interface ParticleLooks {
+  /** Colour at birth, 0xRRGGBB. */
+  colorStart: Uint32Array;
+  /** Colour at death, 0xRRGGBB. */
+  colorEnd: Uint32Array;
+  /** Size at birth, m. */
+  sizeStart: Float64Array;
+  /** Size at death, m. */
+  sizeEnd: Float64Array;
+  /** Alpha at birth, 0..1. */
+  alphaStart: Float64Array;
+  /** Alpha at death, 0..1. */
+  alphaEnd: Float64Array;
+}
+
 function vec3(n: number): Vec3Store {
   return { x: new Float64Array(n), y: new Float64Array(n), z: new Float64Array(n) };
+}
+
+/** Empty ParticleLooks arrays (a store's group allocates them, materializeGroup). */
+function looks(): ParticleLooks {
+  const z = (): Float64Array => new Float64Array(0);
+  return { colorStart: new Uint32Array(0), colorEnd: new Uint32Array(0), sizeStart: z(), sizeEnd: z(), alphaStart: z(), alphaEnd: z() };
 }
 
 /**
@@ -154,30 +198,12 @@ export interface Components {
    * A uniform electric field, V/m, filling the world: E(t) = E0 + A cos(omega t + phase), with E0 =
    * (x, y, z), A = (ampX, ampY, ampZ), `omega` rad/s, `phase` rad. Charged bodies feel q E.
    */
-  ElectricField: {
-    x: Float64Array;
-    y: Float64Array;
-    z: Float64Array;
-    ampX: Float64Array;
-    ampY: Float64Array;
-    ampZ: Float64Array;
-    omega: Float64Array;
-    phase: Float64Array;
-  };
+  ElectricField: OscillatingField;
   /**
    * A uniform magnetic field, T: B(t) = B0 + A cos(omega t + phase), fields as ElectricField. In a 2D
    * world only z is used (B out of the screen). Charged bodies feel the Lorentz force q v x B.
    */
-  MagneticField: {
-    x: Float64Array;
-    y: Float64Array;
-    z: Float64Array;
-    ampX: Float64Array;
-    ampY: Float64Array;
-    ampZ: Float64Array;
-    omega: Float64Array;
-    phase: Float64Array;
-  };
+  MagneticField: OscillatingField;
   /**
    * General central force about the point (cx, cy, cz): F = k r^(n-1) r_hat, r the distance from the
    * centre. k < 0 attracts. n = 2 is Hooke's law (k = -stiffness), n = -1 inverse-square gravity
@@ -303,19 +329,13 @@ export interface Components {
     quadraticDrag: Float64Array;
     gravityScale: Float64Array;
     radius: Float64Array;
-    colorStart: Uint32Array;
-    colorEnd: Uint32Array;
-    sizeStart: Float64Array;
-    sizeEnd: Float64Array;
-    alphaStart: Float64Array;
-    alphaEnd: Float64Array;
     deathEmitter: Int32Array;
     deathCount: Float64Array;
     maxGeneration: Float64Array;
     policy: Uint8Array;
     spawned: Float64Array;
     dropped: Float64Array;
-  };
+  } & ParticleLooks;
   /** Age and lifetime of a particle, s: it is removed when `age` reaches `duration`. */
   Lifetime: { age: Float64Array; duration: Float64Array };
   /**
@@ -328,13 +348,7 @@ export interface Components {
     emitter: Int32Array;
     emitterStamp: Uint32Array;
     generation: Float64Array;
-    colorStart: Uint32Array;
-    colorEnd: Uint32Array;
-    sizeStart: Float64Array;
-    sizeEnd: Float64Array;
-    alphaStart: Float64Array;
-    alphaEnd: Float64Array;
-  };
+  } & ParticleLooks;
   /** Rotation angle in a 2D world, rad, counter-clockwise. Default 0. */
   Angle: { value: Float64Array };
   /**
@@ -617,12 +631,7 @@ export function createComponents(capacity: number, previousPosition = true): Com
       quadraticDrag: z(),
       gravityScale: z(),
       radius: z(),
-      colorStart: new Uint32Array(0),
-      colorEnd: new Uint32Array(0),
-      sizeStart: z(),
-      sizeEnd: z(),
-      alphaStart: z(),
-      alphaEnd: z(),
+      ...looks(),
       deathEmitter: new Int32Array(0),
       deathCount: z(),
       maxGeneration: z(),
@@ -635,12 +644,7 @@ export function createComponents(capacity: number, previousPosition = true): Com
       emitter: new Int32Array(0),
       emitterStamp: new Uint32Array(0),
       generation: z(),
-      colorStart: new Uint32Array(0),
-      colorEnd: new Uint32Array(0),
-      sizeStart: z(),
-      sizeEnd: z(),
-      alphaStart: z(),
-      alphaEnd: z(),
+      ...looks(),
     },
     Angle: { value: z() },
     Orientation: { x: z(), y: z(), z: z(), w: z() },

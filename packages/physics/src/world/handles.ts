@@ -147,7 +147,7 @@ export function kindOf(world: PhysicsWorld, slot: number): string {
  * Whether the entity in `slot` is of `kind` (see EntityKind).
  * @category Bodies
  */
-export function isKind(world: PhysicsWorld, slot: number, kind: EntityKind): boolean {
+function isKind(world: PhysicsWorld, slot: number, kind: EntityKind): boolean {
   const c = world.components;
   switch (kind) {
     case 'body':

@@ -91,16 +91,6 @@ export const SORT_RADIX_BITS = 16,
 export function sortDigitBits(n: number): number {
   return Math.min(SORT_RADIX_BITS, Math.max(1, Math.ceil(Math.log2(Math.max(2, n / 8)))));
 }
-/**
- * Digits of the passes that sort a large bucket (the bits below the first digit, 8 at a time).
- * @category Forces
- */
-export const BUCKET_RADIX = 256;
-/**
- * Buckets of at most this many keys are sorted by insertion, larger ones by radix passes.
- * @category Forces
- */
-export const BUCKET_INSERTION_MAX = 48;
 
 /**
  * Morton sort, pass 1: the Morton (Z-order) keys of a part's bodies in the root cube (16 bits per
@@ -233,8 +223,8 @@ export function mortonScatter(A: KernelArray[], P: Float64Array, ids: Int32Array
 
 /**
  * Morton sort, pass 3, and the bodies into tree order: each bucket of a part (its bodies share the
- * first digit) sorted by the bits below it, stably (insertion for BUCKET_INSERTION_MAX keys or
- * fewer, else least-significant-digit radix passes of 8 bits, each skipped when all its digits are
+ * first digit) sorted by the bits below it, stably (insertion for SORT.BUCKET_INSERTION_MAX keys or
+ * fewer, else least-significant-digit radix passes of 8 bits (SORT.BUCKET_RADIX digits), each skipped when all its digits are
  * equal), so the keys end in (key, input index) order, the order of a stable sort of the whole
  * array; then slot s of the bucket gets input body perm[s]'s position and mass.
  * A (the BUCKETS_ slots) and P: forces/barnes-hut/slots/morton-sort.ts. Returns 0.
@@ -259,12 +249,12 @@ export function mortonBucketSort(A: KernelArray[], P: Float64Array, ids: Int32Ar
   const is3D = P[SORT.DIMENSIONS] === 3,
     topShift = P[SORT.SHIFT]!;
   for (let part = lo; part < hi; part++) {
-    const base = part * 256;
+    const base = part * SORT.BUCKET_RADIX;
     for (let r = group[part]!, rEnd = group[part + 1]!; r < rEnd; r++) {
       const a = bucket[r]!,
         b = bucket[r + 1]!;
       if (a === b) continue;
-      if (b - a <= 48) {
+      if (b - a <= SORT.BUCKET_INSERTION_MAX) {
         // Insertion into key, perm (strictly larger keys move up: stable).
         for (let s = a; s < b; s++) {
           const k = key2[s]!,
@@ -286,11 +276,11 @@ export function mortonBucketSort(A: KernelArray[], P: Float64Array, ids: Int32Ar
             si = inKey2 ? idx2 : perm,
             dk = inKey2 ? key : key2,
             di = inKey2 ? perm : idx2;
-          local.fill(0, base, base + 256);
+          local.fill(0, base, base + SORT.BUCKET_RADIX);
           for (let s = a; s < b; s++) local[base + ((sk[s]! >>> shift) & 255)]!++;
           if (local[base + ((sk[a]! >>> shift) & 255)] === b - a) continue;
           let acc = a;
-          for (let d = 0; d < 256; d++) {
+          for (let d = 0; d < SORT.BUCKET_RADIX; d++) {
             const c = local[base + d]!;
             local[base + d] = acc;
             acc += c;

@@ -4,7 +4,7 @@ import { MIN_PARALLEL_PER_THREAD } from '../../threads/parallel.js';
 import type { ThreadPool } from '../../threads/pool.js';
 import * as BOX from './bounds.js';
 import * as TASK from './build-task.js';
-import { BUCKET_RADIX, mortonBucketSort, mortonKeysHist, mortonScatter, sortDigitBits } from './gather.js';
+import { mortonBucketSort, mortonKeysHist, mortonScatter, sortDigitBits } from './gather.js';
 import { treeMoments2, treeMoments3 } from './moments.js';
 import * as MOMENTS from './slots/moments.js';
 import * as SORT from './slots/morton-sort.js';
@@ -29,6 +29,11 @@ const KEY_BITS2 = 16,
  * 10 in 3D) by a stable least-significant-digit radix sort, so the quadtree's cells down to the key
  * resolution are contiguous key ranges; cells still holding more than LEAF_SIZE bodies below that
  * resolution are split further by a stable counting sort on the positions.
+ *
+ * `bounds`, when given, is the bodies' bounding box already known (a gathered range's box,
+ * forces/barnes-hut/bounds.ts; default null: computed here); with `pool` (default null: this thread)
+ * the Morton keys are computed on its threads when the arrays are shared and the bodies many enough
+ * (MIN_PARALLEL_PER_THREAD a thread).
  * @category Forces
  */
 export function buildTree(
@@ -38,24 +43,8 @@ export function buildTree(
   y: ArrayLike<number>,
   z: ArrayLike<number>,
   m: ArrayLike<number>,
-): void {
-  buildTreeWith(t, n, x, y, z, m, null, null);
-}
-
-/**
- * buildTree, with the bounding box already known (`bounds`: a gathered range's box,
- * forces/barnes-hut/bounds.ts; null: computed here) and the Morton keys computed on `pool`'s threads when the arrays are
- * shared and the bodies many enough (MIN_PARALLEL_PER_THREAD a thread).
- */
-export function buildTreeWith(
-  t: GravityTree,
-  n: number,
-  x: ArrayLike<number>,
-  y: ArrayLike<number>,
-  z: ArrayLike<number>,
-  m: ArrayLike<number>,
-  bounds: Float64Array | null,
-  pool: ThreadPool | null,
+  bounds: Float64Array | null = null,
+  pool: ThreadPool | null = null,
 ): void {
   const is3D = t.dims === 3;
   growBodies(t, n);
@@ -141,7 +130,7 @@ export function buildTreeWith(
 }
 
 /**
- * The Morton sort of buildTreeWith and the bodies into tree order: keys (t.key, t.perm) in (key, input
+ * The Morton sort of buildTree and the bodies into tree order: keys (t.key, t.perm) in (key, input
  * index) order, the order of a stable sort, and t.x, t.y, t.z, t.m, t.perm in that order. Three
  * kernels (forces/barnes-hut/gather.ts): the keys with each part's histogram of the first digit (the top
  * sortDigitBits(n) bits), the parts' bodies to their buckets in order, then the buckets sorted by
@@ -175,7 +164,7 @@ function mortonSort(
     t.sortOffset = i32(t, size);
   }
   if (t.sortBucket.length < R + 1) t.sortBucket = i32(t, R + 1);
-  if (t.sortLocal.length < parts * BUCKET_RADIX) t.sortLocal = i32(t, Math.max(parts, pool?.threads ?? 1) * BUCKET_RADIX);
+  if (t.sortLocal.length < parts * SORT.BUCKET_RADIX) t.sortLocal = i32(t, Math.max(parts, pool?.threads ?? 1) * SORT.BUCKET_RADIX);
   const hist = t.sortHist,
     offset = t.sortOffset,
     bucket = t.sortBucket,

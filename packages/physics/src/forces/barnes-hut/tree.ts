@@ -12,7 +12,7 @@ import * as N2 from './node-2d.js';
 import * as N3 from './node-3d.js';
 import * as TREE_FORCES from './slots/tree-forces.js';
 import * as TREE_GATHER from './slots/tree-gather.js';
-import { buildTreeWith } from './tree-build.js';
+import { buildTree } from './tree-build.js';
 import { f64, type GravityTree, MAX_PARTS, worldTree } from './tree-store.js';
 import * as WALK from './walk.js';
 import { barnesHutWalk } from './walk-kernel.js';
@@ -489,7 +489,7 @@ function worldTreeFieldsWith(world: PhysicsWorld, ents: ArrayLike<number>, addFo
   arrays[TREE_GATHER.GM] = gm;
   arrays[TREE_GATHER.BOX] = box;
   arrays[TREE_GATHER.ENTS] = gathered.ents;
-  // The gather's numbers, in the sort's parameter array (buildTreeWith writes the sort's over them).
+  // The gather's numbers, in the sort's parameter array (buildTree writes the sort's over them).
   const P = t.keyParams;
   P[TREE_GATHER.DIMENSIONS] = world.dimensions;
   const system = 'mutualGravitySystem (Barnes-Hut)';
@@ -521,7 +521,7 @@ function worldTreeFieldsWith(world: PhysicsWorld, ents: ArrayLike<number>, addFo
     }
     if (box[o + BOX.NON_FINITE] !== 0) box[BOX.NON_FINITE] = 1;
   }
-  buildTreeWith(t, n, gx, gy, gz, gm, box, world.threadPool);
+  buildTree(t, n, gx, gy, gz, gm, box, world.threadPool);
   const L = world.laws;
   const forces = addForces ? { fx: c.Force.x, fy: c.Force.y, fz: c.Force.z, ents: gathered.ents } : null;
   treeFieldsWith(t, L.gravitationalConstant, L.gravitySoftening * L.gravitySoftening, L.openingAngle, world.threadPool, system, forces);

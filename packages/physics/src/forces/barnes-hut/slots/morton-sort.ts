@@ -1,6 +1,6 @@
 /**
  * The argument slots of the Morton sort's three kernels (forces/barnes-hut/gather.ts: mortonKeysHist,
- * mortonScatter, mortonBucketSort), filled by mortonSort and buildTreeWith (forces/barnes-hut/tree-build.ts):
+ * mortonScatter, mortonBucketSort), filled by mortonSort and buildTree (forces/barnes-hut/tree-build.ts):
  * where each array sits in a kernel's `A` (a kernel's own slots, named after it) and each number in the
  * `P` the three share, imported as `SORT` (`A[SORT.KEYS_HIST]`, `P[SORT.SCALE]`) by the kernels and by
  * their caller. A module of numeric constants only, which every build folds into the code
@@ -88,3 +88,9 @@ export const SHIFT = 8;
 export const BITS = 9;
 /** Numbers in P. */
 export const PARAMS = 10;
+
+// The buckets' sort (mortonBucketSort).
+/** Digits of the passes that sort a large bucket (the bits below the first digit, 8 at a time). */
+export const BUCKET_RADIX = 256;
+/** Buckets of at most this many keys are sorted by insertion, larger ones by radix passes. */
+export const BUCKET_INSERTION_MAX = 48;
