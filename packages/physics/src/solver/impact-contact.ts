@@ -143,12 +143,7 @@ export function contactState(world: PhysicsWorld, buf: ContactBuffer, i: number,
       nz = rz / d;
     const vn = ux * nx + uy * ny + uz * nz;
     if (!(vn < 0)) return false;
-    hit[0] = t0 + t;
-    hit[1] = nx;
-    hit[2] = ny;
-    hit[3] = nz;
-    hit[4] = vn;
-    return true;
+    return hitAt(t0 + t, nx, ny, nz, vn);
   }
   // Fixed normal: boundary face, plane, segment.
   const nx = buf.nx[i]!,
@@ -174,7 +169,12 @@ export function contactState(world: PhysicsWorld, buf: ContactBuffer, i: number,
   }
   const vn = v + an * t;
   if (!(vn < 0)) return false;
-  hit[0] = t0 + t;
+  return hitAt(t0 + t, nx, ny, nz, vn);
+}
+
+/** Writes a contact's time of impact t (s), normal n and relative normal velocity vn (m/s) into `hit`; returns true. */
+function hitAt(t: number, nx: number, ny: number, nz: number, vn: number): boolean {
+  hit[0] = t;
   hit[1] = nx;
   hit[2] = ny;
   hit[3] = nz;
