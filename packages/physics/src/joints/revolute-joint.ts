@@ -10,6 +10,7 @@ import * as R from './layout-2d.js';
 import {
   angularMass,
   applyImpulse,
+  driveImpulse,
   type JointPass2D,
   type JointTypeRows2D,
   limitRow,
@@ -137,7 +138,7 @@ export function revoluteReading(p: JointPass2D, _ia: number, _ib: number, o: num
   const dx = f[R.F_DX]!,
     dy = f[R.F_DY]!;
   out[0] = pointForce(p, o);
-  out[1] = Math.abs(rows[o + R.ISPR]! + rows[o + R.IMOT]! + rows[o + R.ILOW]! - rows[o + R.IUP]!) * f[R.F_INVH]!;
+  out[1] = Math.abs(driveImpulse(rows, o)) * f[R.F_INVH]!;
   out[2] = Math.sqrt(dx * dx + dy * dy);
 }
 

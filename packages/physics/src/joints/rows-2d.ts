@@ -196,7 +196,7 @@ export function solvePointRow(p: JointPass2D, oA: number, oB: number, o: number,
     rAy = f[R.F_RAY]!,
     rBx = f[R.F_RBX]!,
     rBy = f[R.F_RBY]!;
-  let vAx = sb[oA + BS.BS2_VX]!,
+  const vAx = sb[oA + BS.BS2_VX]!,
     vAy = sb[oA + BS.BS2_VY]!,
     wA = sb[oA + BS.BS2_W]!,
     vBx = sb[oB + BS.BS2_VX]!,
@@ -227,18 +227,7 @@ export function solvePointRow(p: JointPass2D, oA: number, oB: number, o: number,
     iy = -ms * sy - is * rows[o + R.ILY]!;
   rows[o + R.ILX] = rows[o + R.ILX]! + ix;
   rows[o + R.ILY] = rows[o + R.ILY]! + iy;
-  vAx -= mA * ix;
-  vAy -= mA * iy;
-  wA -= iA * (rAx * iy - rAy * ix);
-  vBx += mB * ix;
-  vBy += mB * iy;
-  wB += iB * (rBx * iy - rBy * ix);
-  sb[oA + BS.BS2_VX] = vAx;
-  sb[oA + BS.BS2_VY] = vAy;
-  sb[oA + BS.BS2_W] = wA;
-  sb[oB + BS.BS2_VX] = vBx;
-  sb[oB + BS.BS2_VY] = vBy;
-  sb[oB + BS.BS2_W] = wB;
+  applyImpulse(sb, oA, oB, ix, iy, rAx * iy - rAy * ix, rBx * iy - rBy * ix);
 }
 
 /**

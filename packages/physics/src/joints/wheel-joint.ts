@@ -4,7 +4,7 @@ import type { PhysicsWorld } from '../world/options.js';
 import { type AxisJointKind, addAxisJoint } from './joint-2d.js';
 import type { JointBaseOptions } from './joint-base.js';
 import * as R from './layout-2d.js';
-import { type JointPass2D, type JointTypeRows2D, prepareAxisRow, solveAlongAxis } from './rows-2d.js';
+import { applyImpulse, type JointPass2D, type JointTypeRows2D, prepareAxisRow, solveAlongAxis } from './rows-2d.js';
 
 /**
  * The 2D wheel joint (a suspension spring along an axis, free rotation with an optional motor): its
@@ -78,14 +78,7 @@ export function solveWheelRow(p: JointPass2D, ia: number, ib: number, o: number,
   const i1 = -ms * mass * (f[R.F_CD]! + f[R.F_BIAS]!) - is * rows[o + R.ILX]!;
   rows[o + R.ILX] = rows[o + R.ILX]! + i1;
   // The impulse i1 across the axis (-axy, axx) on B, minus on A, and its angular impulses i1 s1 on A and i1 s2 on B.
-  const px = i1 * -f[R.F_AXY]!,
-    py = i1 * f[R.F_AXX]!;
-  sb[oA + BS.BS2_VX] = sb[oA + BS.BS2_VX]! - mA * px;
-  sb[oA + BS.BS2_VY] = sb[oA + BS.BS2_VY]! - mA * py;
-  sb[oA + BS.BS2_W] = sb[oA + BS.BS2_W]! - iA * i1 * s1;
-  sb[oB + BS.BS2_VX] = sb[oB + BS.BS2_VX]! + mB * px;
-  sb[oB + BS.BS2_VY] = sb[oB + BS.BS2_VY]! + mB * py;
-  sb[oB + BS.BS2_W] = sb[oB + BS.BS2_W]! + iB * i1 * s2;
+  applyImpulse(sb, oA, oB, i1 * -f[R.F_AXY]!, i1 * f[R.F_AXX]!, i1 * s1, i1 * s2);
   return R.ROW_PUSHED;
 }
 

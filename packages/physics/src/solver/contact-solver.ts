@@ -1,4 +1,3 @@
-import type { ContactBuffer } from '../collision/contacts.js';
 import { endWokenContacts } from '../collision/events.js';
 import { BodyType } from '../collision/state.js';
 import { isShared, sharedFloat64, sharedLike } from '../threads/pool.js';
@@ -65,7 +64,7 @@ import { finishStage, gatherFillStage } from './stages-threads.js';
  * 6. `restitution`*: contacts the impact stage did not resolve (still approaching after its
  *    passes, e.g. deep in a dense pile) bounce, every family by the one definition of
  *    solver/restitution.ts (threshold, target -e v_impact, Poisson's cap, `restitutionIterations` passes);
- * 7. `finishBodies`: velocities and positions (with the impact corrections) back to the components;
+ * 7. `finishBodies` (finishStage): velocities and positions (with the impact corrections) back to the components;
  *    a body no row pushed during the substeps was in free flight: its position gets -g h h_s / 2, which
  *    makes the substeps' sum of v_k h_s the exact parabola v0 h + g h^2 / 2 (as the integrate stage's);
  *    then `finish`*: the impulses stored for the next step's warm start, touch events;
@@ -155,7 +154,8 @@ function solveContacts(world: PhysicsWorld): void {
     for (const f of list) f.endSubstep(world);
   }
   for (const f of list) f.restitution(world);
-  finishBodies(world, buf);
+  // Stages 7 and 8: range kernels, on a 2D world's threads or inline (solver/stages-threads.ts).
+  finishStage(world, buf);
   for (const f of list) f.finish(world, hs);
   if (balls !== null) {
     balls.events(world, buf, true);
@@ -268,14 +268,4 @@ function integratePositions(world: PhysicsWorld, hs: number): void {
       ex[q + BX_ROT_Z] = ex[q + BX_ROT_Z]! + sb[o + BS3_WZ]! * hs;
     }
   }
-}
-
-/**
- * Stages 7 and 8 of the solver (see contactSolverSystem): writes the solver bodies back (velocities;
- * positions, base + displacement, and angles or orientations, turned by the rotation owed, of dynamic
- * bodies), keeps them inside the boundary box, and records the deepest overlap left, measured linearly
- * as in the solve: range kernels, run on a 2D world's threads or inline (solver/stages-threads.ts finishStage).
- */
-function finishBodies(world: PhysicsWorld, buf: ContactBuffer): void {
-  finishStage(world, buf);
 }

@@ -143,12 +143,7 @@ export function contactState(world: PhysicsWorld, buf: ContactBuffer, i: number,
       nz = rz / d;
     const vn = ux * nx + uy * ny + uz * nz;
     if (!(vn < 0)) return false;
-    hit[0] = t0 + t;
-    hit[1] = nx;
-    hit[2] = ny;
-    hit[3] = nz;
-    hit[4] = vn;
-    return true;
+    return hitAt(t0 + t, nx, ny, nz, vn);
   }
   // Fixed normal: boundary face, plane, segment.
   const nx = buf.nx[i]!,
@@ -174,7 +169,12 @@ export function contactState(world: PhysicsWorld, buf: ContactBuffer, i: number,
   }
   const vn = v + an * t;
   if (!(vn < 0)) return false;
-  hit[0] = t0 + t;
+  return hitAt(t0 + t, nx, ny, nz, vn);
+}
+
+/** Writes a contact's time of impact t (s), normal n and relative normal velocity vn (m/s) into `hit`; returns true. */
+function hitAt(t: number, nx: number, ny: number, nz: number, vn: number): boolean {
+  hit[0] = t;
   hit[1] = nx;
   hit[2] = ny;
   hit[3] = nz;
@@ -349,22 +349,8 @@ export function impact(world: PhysicsWorld, buf: ContactBuffer, i: number, S: nu
     sb[ob + BS3_VZ] = sb[ob + BS3_VZ]! + imB * Pz;
     imp[qa + BI_CORR_Z] = imp[qa + BI_CORR_Z]! + imA * Pz * t;
     imp[qb + BI_CORR_Z] = imp[qb + BI_CORR_Z]! - imB * Pz * t;
-    if (iiA > 0) {
-      sb[oa + BS3_WX] = sb[oa + BS3_WX]! + dwa0;
-      sb[oa + BS3_WY] = sb[oa + BS3_WY]! + dwa1;
-      sb[oa + BS3_WZ] = sb[oa + BS3_WZ]! + dwa2;
-      ex[xa + BX_ROT_X] = ex[xa + BX_ROT_X]! - dwa0 * t;
-      ex[xa + BX_ROT_Y] = ex[xa + BX_ROT_Y]! - dwa1 * t;
-      ex[xa + BX_ROT_Z] = ex[xa + BX_ROT_Z]! - dwa2 * t;
-    }
-    if (iiB > 0) {
-      sb[ob + BS3_WX] = sb[ob + BS3_WX]! + dwb0;
-      sb[ob + BS3_WY] = sb[ob + BS3_WY]! + dwb1;
-      sb[ob + BS3_WZ] = sb[ob + BS3_WZ]! + dwb2;
-      ex[xb + BX_ROT_X] = ex[xb + BX_ROT_X]! - dwb0 * t;
-      ex[xb + BX_ROT_Y] = ex[xb + BX_ROT_Y]! - dwb1 * t;
-      ex[xb + BX_ROT_Z] = ex[xb + BX_ROT_Z]! - dwb2 * t;
-    }
+    if (iiA > 0) spinChange3D(sb, ex, oa, xa, dwa0, dwa1, dwa2, t);
+    if (iiB > 0) spinChange3D(sb, ex, ob, xb, dwb0, dwb1, dwb2, t);
   }
   if (ia !== 0 && imA > 0) imp[qa + BI_TIME] = t;
   if (imB > 0) imp[qb + BI_TIME] = t;
@@ -374,4 +360,18 @@ export function impact(world: PhysicsWorld, buf: ContactBuffer, i: number, S: nu
   markChanged(i);
   buf.impulse[i] = buf.impulse[i]! + J;
   return true;
+}
+
+/**
+ * Adds an impact's spin change (d0, d1, d2), rad/s, to the 3D solver body whose packed state starts at
+ * `o` and extra row at `x`, and takes d t off the rotation it still owes (rad): it kept its old spin
+ * until the time of impact t (s).
+ */
+function spinChange3D(sb: Float64Array, ex: Float64Array, o: number, x: number, d0: number, d1: number, d2: number, t: number): void {
+  sb[o + BS3_WX] = sb[o + BS3_WX]! + d0;
+  sb[o + BS3_WY] = sb[o + BS3_WY]! + d1;
+  sb[o + BS3_WZ] = sb[o + BS3_WZ]! + d2;
+  ex[x + BX_ROT_X] = ex[x + BX_ROT_X]! - d0 * t;
+  ex[x + BX_ROT_Y] = ex[x + BX_ROT_Y]! - d1 * t;
+  ex[x + BX_ROT_Z] = ex[x + BX_ROT_Z]! - d2 * t;
 }

@@ -36,7 +36,6 @@ import {
   MR_BLOCK_VALID,
   MR_BODY_A,
   MR_BODY_B,
-  MR_BODY_MASK,
   MR_FRICTION_BOUND,
   MR_K11,
   MR_K12,
@@ -121,11 +120,10 @@ export function prepareManifolds(world: PhysicsWorld): void {
   const R = atLeast(st.solverRows, n * MR_STRIDE);
   st.solverRows = R;
   prepareRows(world, R, n);
-  prepareBlocks(cs, R, n);
   pruneDormant(world);
 }
 
-/** prepareManifolds, per manifold: its bodies, normal, material, warm start and points (all but the block). */
+/** prepareManifolds, per manifold: its bodies, normal, material, warm start, points and block (prepareBlock). */
 function prepareRows(world: PhysicsWorld, R: Float64Array, n: number): void {
   const cs = world.collision,
     st = cs.shapes,
@@ -272,53 +270,46 @@ function prepareRows(world: PhysicsWorld, R: Float64Array, n: number): void {
       R[o + MP_RELATIVE_VELOCITY] = vn;
     }
     R[r + MR_FRICTION_BOUND] = vtMax < stick ? Math.max(mus, mu) : mu;
+    if (m === 2) prepareBlock(R, r, mA, iA, mB, iB);
+    else R[r + MR_BLOCK_VALID] = 0;
   }
 }
 
 /**
- * prepareManifolds, the block of each two-point manifold (Catto's block solver of Box2D 2.x):
+ * prepareManifolds, the block of the two-point manifold whose packed row starts at `r` (Catto's block
+ * solver of Box2D 2.x), of inverse masses mA, mB (1/kg) and inverse inertias iA, iB (1/(kg m^2)):
  * K = J M^-1 J^T over the two normal rows, its inverse, and K again as the inverse of that inverse
- * (what the solve reads), if the rows are not nearly parallel.
+ * (what the solve reads), if the rows are not nearly parallel; else the row's block is marked invalid.
  */
-function prepareBlocks(cs: PhysicsWorld['collision'], R: Float64Array, n: number): void {
-  const sb = cs.bodyState;
-  for (let i = 0; i < n; i++) {
-    const r = i * MR_STRIDE;
-    R[r + MR_BLOCK_VALID] = 0;
-    if (R[r + MR_POINT_COUNT] !== 2) continue;
-    const oa = (R[r + MR_BODY_A]! & MR_BODY_MASK) * BS2_STRIDE,
-      ob = (R[r + MR_BODY_B]! & MR_BODY_MASK) * BS2_STRIDE;
-    const mA = sb[oa + BS2_INV_MASS]!,
-      iA = sb[oa + BS2_INV_INERTIA]!,
-      mB = sb[ob + BS2_INV_MASS]!,
-      iB = sb[ob + BS2_INV_INERTIA]!;
-    const o1 = r + MR_POINT0,
-      o2 = o1 + MP_STRIDE;
-    const rn1A = R[o1 + MP_RNA]!,
-      rn1B = R[o1 + MP_RNB]!;
-    const rn2A = R[o2 + MP_RNA]!,
-      rn2B = R[o2 + MP_RNB]!;
-    const k11 = mA + mB + iA * rn1A * rn1A + iB * rn1B * rn1B;
-    const k22 = mA + mB + iA * rn2A * rn2A + iB * rn2B * rn2B;
-    const k12 = mA + mB + iA * rn1A * rn2A + iB * rn1B * rn2B;
-    const det = k11 * k22 - k12 * k12;
-    // Box2D's condition-number guard: the rows must not be nearly parallel.
-    if (k11 * k11 < 1000 * det && det > 0) {
-      const inv = 1 / det;
-      const b11 = k22 * inv,
-        b12 = -k12 * inv,
-        b22 = k11 * inv;
-      const back = 1 / (b11 * b22 - b12 * b12);
-      R[r + MR_BLOCK_VALID] = 1;
-      R[r + MR_B11] = b11;
-      R[r + MR_B12] = b12;
-      R[r + MR_B22] = b22;
-      R[r + MR_K11] = b22 * back;
-      R[r + MR_K12] = -b12 * back;
-      R[r + MR_K22] = b11 * back;
-    }
+function prepareBlock(R: Float64Array, r: number, mA: number, iA: number, mB: number, iB: number): void {
+  R[r + MR_BLOCK_VALID] = 0;
+  const o1 = r + MR_POINT0,
+    o2 = o1 + MP_STRIDE;
+  const rn1A = R[o1 + MP_RNA]!,
+    rn1B = R[o1 + MP_RNB]!;
+  const rn2A = R[o2 + MP_RNA]!,
+    rn2B = R[o2 + MP_RNB]!;
+  const k11 = mA + mB + iA * rn1A * rn1A + iB * rn1B * rn1B;
+  const k22 = mA + mB + iA * rn2A * rn2A + iB * rn2B * rn2B;
+  const k12 = mA + mB + iA * rn1A * rn2A + iB * rn1B * rn2B;
+  const det = k11 * k22 - k12 * k12;
+  // Box2D's condition-number guard: the rows must not be nearly parallel.
+  if (k11 * k11 < 1000 * det && det > 0) {
+    const inv = 1 / det;
+    const b11 = k22 * inv,
+      b12 = -k12 * inv,
+      b22 = k11 * inv;
+    const back = 1 / (b11 * b22 - b12 * b12);
+    R[r + MR_BLOCK_VALID] = 1;
+    R[r + MR_B11] = b11;
+    R[r + MR_B12] = b12;
+    R[r + MR_B22] = b22;
+    R[r + MR_K11] = b22 * back;
+    R[r + MR_K12] = -b12 * back;
+    R[r + MR_K22] = b11 * back;
   }
 }
+
 /**
  * After the solve: marks the manifolds that touch, writes begin and end touch events against the
  * previous step's, and keeps this step's rows as the next step's warm-start cache.
