@@ -5,7 +5,7 @@ import { Shape3DKind, type Shape3DStore, shapes3DOf } from '../shapes/store-3d.j
 import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
 import { pairs } from './broadphase/pairs-3d.js';
-import { ensure, SHAPE_SPECULATIVE_DISTANCE, scratch, wakes } from './colliders-3d.js';
+import { ensure, keptPose, notePose, ownPoses, SHAPE_SPECULATIVE_DISTANCE, scratch, wakes } from './colliders-3d.js';
 import { pushEvent } from './events.js';
 import { type Contact3DState, clearRowIndex, contact3DStateOf, growManifold3DBuffer, insertRow, rowKey } from './manifolds-3d.js';
 import { BodyType } from './state.js';
@@ -322,6 +322,11 @@ function gather(world: PhysicsWorld, s: Shape3DStore): void {
       world.collision.invMass[b] = 0;
       world.collision.invInertia[b] = 0;
     } else t = classifyDynamic3D(world, b); // not static, kinematic or sleeping by this step's queries
+    const asleep = t === BodyType.Sleeping && !isBall;
+    if (asleep && keepSleeping(world, s, spec, n, e, b, pass)) {
+      n++;
+      continue;
+    }
     const moving = t === BodyType.Dynamic || t === BodyType.Kinematic;
     const turning = (moving && invInertia[b]! > 0) || (t === BodyType.Kinematic && hasComponent(world, b, c.AngularVelocity));
     const x0 = t === BodyType.Static ? c.Position.x[b]! : ox[b]!,
@@ -399,9 +404,28 @@ function gather(world: PhysicsWorld, s: Shape3DStore): void {
     sc.maxY[n] = cy + wy + pad;
     sc.minZ[n] = cz - wz - pad;
     sc.maxZ[n] = cz + wz + pad;
+    if (asleep) notePose(n, e, x0, y0, z0, bodyQ[0]!, bodyQ[1]!, bodyQ[2]!, bodyQ[3]!);
+    else sc.posed[n] = 0;
     n++;
   }
   scratch.n = n;
+  ownPoses(s, spec);
+}
+
+/**
+ * A sleeping shape collider at index `n` whose pose the index kept from the last pass (keptPose: its
+ * body, sleeping and not turning, starts the step at PreviousPosition with its Orientation): marks shape
+ * `e` as collider `n` of pass `pass` and returns true; else false, and gather poses it.
+ */
+function keepSleeping(world: PhysicsWorld, s: Shape3DStore, spec: number, n: number, e: number, b: number, pass: number): boolean {
+  const c = world.components,
+    P = c.PreviousPosition,
+    Q = c.Orientation;
+  if (!keptPose(s, spec, n, e, P.x[b]!, P.y[b]!, P.z[b]!, Q.x[b]!, Q.y[b]!, Q.z[b]!, Q.w[b]!)) return false;
+  scratch.colliderOf[e] = n;
+  scratch.colliderStamp[e] = pass;
+  if (s.sensor[e] === 1) scratch.anySensor = true;
+  return true;
 }
 
 /** Whether a 3D shape or shapeless ball's body is dynamic or kinematic (not static or sleeping by markClasses' `stamp`). */
