@@ -133,7 +133,7 @@ export function ensure(n: number): void {
 
 /**
  * Whether the sleeping collider of shape `e` at index `n` keeps the pose, rotation and fattened box the
- * index got in the last pass: the scratch is still `s`'s (no other world's pass wrote it since, no
+ * index got in the last pass (never for `e` = -1, an awake collider's): the scratch is still `s`'s (no other world's pass wrote it since, no
  * shape was placed or resized, the same speculative distance `spec`), the index then held `e` asleep,
  * and its body starts the step where it did, (x, y, z) turned by the unit quaternion (qx, qy, qz, qw).
  * A sleeping body moves only if something sets its pose, so a settled pile is posed once.
@@ -151,11 +151,24 @@ export function keptPose(
   qz: number,
   qw: number,
 ): boolean {
-  const sc = scratch;
-  if (sc.posed[n] !== e || sc.poseOf !== s || sc.poseEdits !== shapeEdits.count || sc.poseSpec !== spec) return false;
-  const K = sc.poseKey,
+  const sc = scratch,
+    K = sc.poseKey,
     o = POSE_KEY * n;
-  return K[o] === x && K[o + 1] === y && K[o + 2] === z && K[o + 3] === qx && K[o + 4] === qy && K[o + 5] === qz && K[o + 6] === qw;
+  // Every comparison made (bitwise &, no early return): gather asks for every collider, awake ones
+  // included, so the compiled code has seen all of this before the first body of a pile falls asleep.
+  const same =
+    +(sc.posed[n] === e) &
+    +(sc.poseOf === s) &
+    +(sc.poseEdits === shapeEdits.count) &
+    +(sc.poseSpec === spec) &
+    +(K[o] === x) &
+    +(K[o + 1] === y) &
+    +(K[o + 2] === z) &
+    +(K[o + 3] === qx) &
+    +(K[o + 4] === qy) &
+    +(K[o + 5] === qz) &
+    +(K[o + 6] === qw);
+  return same === 1;
 }
 
 /** Records at index `n` the pose a sleeping collider of shape `e` was posed from (keptPose), or with `e` = 0 that the index holds none. */
