@@ -1,5 +1,6 @@
 import { addComponent, entityExists, hasComponent, removeEntity } from 'bitecs';
 import { install3D } from '../collision/install-3d.js';
+import { shapeEdits } from '../shapes/edits-3d.js';
 import { type Hull, quickhull } from '../shapes/hull-3d.js';
 import {
   addMovedInertia,
@@ -235,6 +236,7 @@ export function addShape3D(world: PhysicsWorld, body: number, options: Shape3DOp
 
   const e = createSlot(world, where); // throws on a full world before anything changed
   const s = shapes3DOf(world, true);
+  shapeEdits.count++;
   if (!s.active) {
     install3D(world);
     s.active = true;
@@ -315,6 +317,7 @@ export function updateMassFromShapes3D(world: PhysicsWorld, body: number): void 
   const b = resolveKind(world, body, 'body', 'updateMassFromShapes3D', 'body');
   const s = shapes3DOf(world);
   if (s === undefined || s.first[b] === 0) return;
+  shapeEdits.count++;
   let m = 0,
     sx = 0,
     sy = 0,

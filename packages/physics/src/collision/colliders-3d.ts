@@ -1,3 +1,4 @@
+import { shapeEdits } from '../shapes/edits-3d.js';
 import { Shape3DKind, type Shape3DStore } from '../shapes/store-3d.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { type Collider3D, ColliderKind3D, createManifold3D, type Manifold3D } from './narrowphase/manifold-3d.js';
@@ -62,6 +63,18 @@ interface Scratch {
   anySensor: boolean;
   /** Rows written minus the previous step's row of the last box pair found (the guess for the next pair's row). */
   rowShift: number;
+  /**
+   * Per collider index: the shape slot whose sleeping pose the index holds from the last pass (0: none),
+   * with the body pose it was made from in `poseKey` (POSE_KEY numbers: start position x, y, z, then the
+   * orientation x, y, z, w); valid while `poseOf` is the shape store of the pass and `poseEdits` and
+   * `poseSpec` match (keptPose).
+   */
+  posed: Int32Array;
+  poseKey: Float64Array;
+  /** The shape store whose pass last wrote the scratch (null before any), the shape edit count then, and its speculative distance, m. */
+  poseOf: Shape3DStore | null;
+  poseEdits: number;
+  poseSpec: number;
 }
 export const scratch: Scratch = {
   n: 0,
@@ -87,7 +100,15 @@ export const scratch: Scratch = {
   spec: 0.02,
   anySensor: false,
   rowShift: 0,
+  posed: new Int32Array(0),
+  poseKey: new Float64Array(0),
+  poseOf: null,
+  poseEdits: -1,
+  poseSpec: 0,
 };
+
+/** Numbers of a collider's entry in `scratch.poseKey`. */
+const POSE_KEY = 7;
 
 export function ensure(n: number): void {
   if (scratch.shape.length >= n) return;
@@ -104,8 +125,72 @@ export function ensure(n: number): void {
   sc.body = grow(sc.body, m);
   sc.order = grow(sc.order, m);
   sc.ball = grow(sc.ball, m);
+  sc.posed = grow(sc.posed, m);
+  sc.poseKey = grow(sc.poseKey, POSE_KEY * m);
   for (const k of ['minX', 'maxX', 'minY', 'maxY', 'minZ', 'maxZ', 'px', 'py', 'pz', 'speed', 'boxHalf'] as const) sc[k] = grow(sc[k], m);
   sc.R = grow(sc.R, 9 * m);
+}
+
+/**
+ * Whether the sleeping collider of shape `e` at index `n` keeps the pose, rotation and fattened box the
+ * index got in the last pass (never for `e` = -1, an awake collider's): the scratch is still `s`'s (no other world's pass wrote it since, no
+ * shape was placed or resized, the same speculative distance `spec`), the index then held `e` asleep,
+ * and its body starts the step where it did, (x, y, z) turned by the unit quaternion (qx, qy, qz, qw).
+ * A sleeping body moves only if something sets its pose, so a settled pile is posed once.
+ */
+export function keptPose(
+  s: Shape3DStore,
+  spec: number,
+  n: number,
+  e: number,
+  x: number,
+  y: number,
+  z: number,
+  qx: number,
+  qy: number,
+  qz: number,
+  qw: number,
+): boolean {
+  const sc = scratch,
+    K = sc.poseKey,
+    o = POSE_KEY * n;
+  // Every comparison made (bitwise &, no early return): gather asks for every collider, awake ones
+  // included, so the compiled code has seen all of this before the first body of a pile falls asleep.
+  const same =
+    +(sc.posed[n] === e) &
+    +(sc.poseOf === s) &
+    +(sc.poseEdits === shapeEdits.count) &
+    +(sc.poseSpec === spec) &
+    +(K[o] === x) &
+    +(K[o + 1] === y) &
+    +(K[o + 2] === z) &
+    +(K[o + 3] === qx) &
+    +(K[o + 4] === qy) &
+    +(K[o + 5] === qz) &
+    +(K[o + 6] === qw);
+  return same === 1;
+}
+
+/** Records at index `n` the pose a sleeping collider of shape `e` was posed from (keptPose), or with `e` = 0 that the index holds none. */
+export function notePose(n: number, e: number, x: number, y: number, z: number, qx: number, qy: number, qz: number, qw: number): void {
+  const sc = scratch,
+    K = sc.poseKey,
+    o = POSE_KEY * n;
+  sc.posed[n] = e;
+  K[o] = x;
+  K[o + 1] = y;
+  K[o + 2] = z;
+  K[o + 3] = qx;
+  K[o + 4] = qy;
+  K[o + 5] = qz;
+  K[o + 6] = qw;
+}
+
+/** Marks the scratch as written by a pass over `s` with speculative distance `spec` (keptPose's validity). */
+export function ownPoses(s: Shape3DStore, spec: number): void {
+  scratch.poseOf = s;
+  scratch.poseEdits = shapeEdits.count;
+  scratch.poseSpec = spec;
 }
 
 /**

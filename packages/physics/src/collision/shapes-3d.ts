@@ -5,7 +5,7 @@ import { Shape3DKind, type Shape3DStore, shapes3DOf } from '../shapes/store-3d.j
 import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
 import { pairs } from './broadphase/pairs-3d.js';
-import { ensure, SHAPE_SPECULATIVE_DISTANCE, scratch, wakes } from './colliders-3d.js';
+import { ensure, keptPose, notePose, ownPoses, SHAPE_SPECULATIVE_DISTANCE, scratch, wakes } from './colliders-3d.js';
 import { pushEvent } from './events.js';
 import { type Contact3DState, clearRowIndex, contact3DStateOf, growManifold3DBuffer, insertRow, rowKey } from './manifolds-3d.js';
 import { BodyType } from './state.js';
@@ -277,18 +277,17 @@ function gather(world: PhysicsWorld, s: Shape3DStore): void {
   scratch.anySensor = false;
   const c = world.components,
     cs = world.collision;
-  const invInertia = cs.invInertia;
   const balls = query(world, [c.Position, c.Ball]);
   const cap = world.capacity;
   let n = 0;
   ensure(64);
-  const h = world.h,
-    spec = cs.settings.speculativeDistance < SHAPE_SPECULATIVE_DISTANCE ? cs.settings.speculativeDistance : SHAPE_SPECULATIVE_DISTANCE;
+  const spec = cs.settings.speculativeDistance < SHAPE_SPECULATIVE_DISTANCE ? cs.settings.speculativeDistance : SHAPE_SPECULATIVE_DISTANCE;
   const halfSpec = 0.5 * spec;
   scratch.spec = spec;
   const ox = c.PreviousPosition.x,
     oy = c.PreviousPosition.y,
-    oz = c.PreviousPosition.z;
+    oz = c.PreviousPosition.z,
+    Q = c.Orientation;
   // Only static and sleeping colliders (a settled pile): no pair can collide (pairs need a dynamic or
   // kinematic body), so none is posed (posing would be most of a sleeping pile's step).
   if (!anyMoving(s, balls, cap, stamp)) {
@@ -313,95 +312,128 @@ function gather(world: PhysicsWorld, s: Shape3DStore): void {
       isBall = true;
     }
     ensure(n + 1);
-    const sc = scratch;
     // Static, kinematic and sleeping bodies from this step's queries (no component lookups); dynamic ones classified.
-    let t: number;
-    if (classStamp[b] === stamp) {
-      t = classKind[b]!;
-      world.collision.bodyType[b] = t;
-      world.collision.invMass[b] = 0;
-      world.collision.invInertia[b] = 0;
-    } else t = classifyDynamic3D(world, b); // not static, kinematic or sleeping by this step's queries
-    const moving = t === BodyType.Dynamic || t === BodyType.Kinematic;
-    const turning = (moving && invInertia[b]! > 0) || (t === BodyType.Kinematic && hasComponent(world, b, c.AngularVelocity));
-    const x0 = t === BodyType.Static ? c.Position.x[b]! : ox[b]!,
-      y0 = t === BodyType.Static ? c.Position.y[b]! : oy[b]!,
-      z0 = t === BodyType.Static ? c.Position.z[b]! : oz[b]!;
-    startOrientation(world, b, turning, isBall);
-    const R = sc.R,
-      o = MAT3_STRIDE * n;
-    colliderRotation(s, e, isBall, R, o);
-    let cx = x0,
-      cy = y0,
-      cz = z0,
-      reach: number;
-    if (isBall) reach = c.Ball.radius[b]!;
-    else {
-      cx += shapeShift[0]!;
-      cy += shapeShift[1]!;
-      cz += shapeShift[2]!;
-      reach = s.reach[e]!;
-    }
-    let speed = 0;
-    if (moving) {
-      const V = c.Velocity,
-        W = c.AngularVelocity;
-      // (Math.sqrt of the sum of squares: Math.hypot is slower in V8, and these never overflow.)
-      const vx = V.x[b]!,
-        vy = V.y[b]!,
-        vz = V.z[b]!;
-      speed = Math.sqrt(vx * vx + vy * vy + vz * vz);
-      if (turning) {
-        const wx = W.x[b]!,
-          wy = W.y[b]!,
-          wz = W.z[b]!,
-          dx = cx - x0,
-          dy = cy - y0,
-          dz = cz - z0;
-        speed += Math.sqrt(wx * wx + wy * wy + wz * wz) * (reach + Math.sqrt(dx * dx + dy * dy + dz * dz));
-      }
-    }
-    // Half its speculative distance on each box: two boxes' fattened boxes overlap exactly when they are
-    // within spec + (|v_a| + |v_b|) h of each other along every axis, the pair's narrowphase margin.
-    const pad = speed * h + halfSpec;
-    // Half widths of the box: a box's own (sum of h_k |R_ak|, tight), else the bounding sphere's.
-    let wx = reach,
-      wy = reach,
-      wz = reach;
-    let boxHalf = -1;
-    if (!isBall && s.kind[e] === Shape3DKind.Box) {
-      const ex = s.hx[e]!,
-        ey = s.hy[e]!,
-        ez = s.hz[e]!;
-      // (Written out: Math.min of three arguments is a call.)
-      if (s.sensor[e] !== 1) {
-        boxHalf = ex < ey ? ex : ey;
-        if (ez < boxHalf) boxHalf = ez;
-      }
-      wx = ex * Math.abs(R[o + M00]!) + ey * Math.abs(R[o + M01]!) + ez * Math.abs(R[o + M02]!);
-      wy = ex * Math.abs(R[o + M10]!) + ey * Math.abs(R[o + M11]!) + ez * Math.abs(R[o + M12]!);
-      wz = ex * Math.abs(R[o + M20]!) + ey * Math.abs(R[o + M21]!) + ez * Math.abs(R[o + M22]!);
-    }
-    sc.shape[n] = e;
-    sc.body[n] = b;
-    sc.ball[n] = isBall ? 1 : 0;
-    sc.speed[n] = speed;
-    sc.boxHalf[n] = boxHalf;
+    // Written for every body, then overwritten for a dynamic one (one not static, kinematic or sleeping by
+    // this step's queries): no branch first taken when the first body of a pile falls asleep.
+    let t: number = classKind[b]!;
+    cs.bodyType[b] = t;
+    cs.invMass[b] = 0;
+    cs.invInertia[b] = 0;
+    if (classStamp[b] !== stamp) t = classifyDynamic3D(world, b);
+    // A sleeping shape collider keeps what its index holds from the last pass while its body starts the
+    // step where it did (keptPose); every other one is posed. (The check and the writes run for every
+    // collider: no branch first taken when the first body of a pile falls asleep.)
+    const asleep = t === BodyType.Sleeping && !isBall;
+    const kept = keptPose(s, spec, n, asleep ? e : -1, ox[b]!, oy[b]!, oz[b]!, Q.x[b]!, Q.y[b]!, Q.z[b]!, Q.w[b]!);
     colliderOf[e] = n;
     colliderStamp[e] = pass;
     if (!isBall && s.sensor[e] === 1) scratch.anySensor = true;
-    sc.px[n] = cx;
-    sc.py[n] = cy;
-    sc.pz[n] = cz;
-    sc.minX[n] = cx - wx - pad;
-    sc.maxX[n] = cx + wx + pad;
-    sc.minY[n] = cy - wy - pad;
-    sc.maxY[n] = cy + wy + pad;
-    sc.minZ[n] = cz - wz - pad;
-    sc.maxZ[n] = cz + wz + pad;
+    if (!kept) poseCollider(world, s, n, e, b, t, isBall, asleep, halfSpec);
     n++;
   }
   scratch.n = n;
+  ownPoses(s, spec);
+}
+
+/**
+ * Poses collider `n` (shape slot `e`, or ball body `b` when `isBall`) of body `b` of type `t`: its
+ * start-of-step position and rotation, speed and box fattened by its speed over the step and
+ * `halfSpec`, into the scratch at index n; `asleep` notes the pose a sleeping shape was posed from.
+ */
+function poseCollider(
+  world: PhysicsWorld,
+  s: Shape3DStore,
+  n: number,
+  e: number,
+  b: number,
+  t: number,
+  isBall: boolean,
+  asleep: boolean,
+  halfSpec: number,
+): void {
+  const c = world.components,
+    sc = scratch,
+    h = world.h,
+    invInertia = world.collision.invInertia,
+    ox = c.PreviousPosition.x,
+    oy = c.PreviousPosition.y,
+    oz = c.PreviousPosition.z;
+  const moving = t === BodyType.Dynamic || t === BodyType.Kinematic;
+  const turning = (moving && invInertia[b]! > 0) || (t === BodyType.Kinematic && hasComponent(world, b, c.AngularVelocity));
+  const x0 = t === BodyType.Static ? c.Position.x[b]! : ox[b]!,
+    y0 = t === BodyType.Static ? c.Position.y[b]! : oy[b]!,
+    z0 = t === BodyType.Static ? c.Position.z[b]! : oz[b]!;
+  startOrientation(world, b, turning, isBall);
+  const R = sc.R,
+    o = MAT3_STRIDE * n;
+  colliderRotation(s, e, isBall, R, o);
+  let cx = x0,
+    cy = y0,
+    cz = z0,
+    reach: number;
+  if (isBall) reach = c.Ball.radius[b]!;
+  else {
+    cx += shapeShift[0]!;
+    cy += shapeShift[1]!;
+    cz += shapeShift[2]!;
+    reach = s.reach[e]!;
+  }
+  let speed = 0;
+  if (moving) {
+    const V = c.Velocity,
+      W = c.AngularVelocity;
+    // (Math.sqrt of the sum of squares: Math.hypot is slower in V8, and these never overflow.)
+    const vx = V.x[b]!,
+      vy = V.y[b]!,
+      vz = V.z[b]!;
+    speed = Math.sqrt(vx * vx + vy * vy + vz * vz);
+    if (turning) {
+      const wx = W.x[b]!,
+        wy = W.y[b]!,
+        wz = W.z[b]!,
+        dx = cx - x0,
+        dy = cy - y0,
+        dz = cz - z0;
+      speed += Math.sqrt(wx * wx + wy * wy + wz * wz) * (reach + Math.sqrt(dx * dx + dy * dy + dz * dz));
+    }
+  }
+  // Half its speculative distance on each box: two boxes' fattened boxes overlap exactly when they are
+  // within spec + (|v_a| + |v_b|) h of each other along every axis, the pair's narrowphase margin.
+  const pad = speed * h + halfSpec;
+  // Half widths of the box: a box's own (sum of h_k |R_ak|, tight), else the bounding sphere's.
+  let wx = reach,
+    wy = reach,
+    wz = reach;
+  let boxHalf = -1;
+  if (!isBall && s.kind[e] === Shape3DKind.Box) {
+    const ex = s.hx[e]!,
+      ey = s.hy[e]!,
+      ez = s.hz[e]!;
+    // (Written out: Math.min of three arguments is a call.)
+    if (s.sensor[e] !== 1) {
+      boxHalf = ex < ey ? ex : ey;
+      if (ez < boxHalf) boxHalf = ez;
+    }
+    wx = ex * Math.abs(R[o + M00]!) + ey * Math.abs(R[o + M01]!) + ez * Math.abs(R[o + M02]!);
+    wy = ex * Math.abs(R[o + M10]!) + ey * Math.abs(R[o + M11]!) + ez * Math.abs(R[o + M12]!);
+    wz = ex * Math.abs(R[o + M20]!) + ey * Math.abs(R[o + M21]!) + ez * Math.abs(R[o + M22]!);
+  }
+  sc.shape[n] = e;
+  sc.body[n] = b;
+  sc.ball[n] = isBall ? 1 : 0;
+  sc.speed[n] = speed;
+  sc.boxHalf[n] = boxHalf;
+  sc.px[n] = cx;
+  sc.py[n] = cy;
+  sc.pz[n] = cz;
+  sc.minX[n] = cx - wx - pad;
+  sc.maxX[n] = cx + wx + pad;
+  sc.minY[n] = cy - wy - pad;
+  sc.maxY[n] = cy + wy + pad;
+  sc.minZ[n] = cz - wz - pad;
+  sc.maxZ[n] = cz + wz + pad;
+  // A sleeping collider's pose is noted for the next pass (keptPose); another index holds none.
+  notePose(n, asleep ? e : 0, x0, y0, z0, bodyQ[0]!, bodyQ[1]!, bodyQ[2]!, bodyQ[3]!);
 }
 
 /** Whether a 3D shape or shapeless ball's body is dynamic or kinematic (not static or sleeping by markClasses' `stamp`). */

@@ -5,6 +5,7 @@ import { barnesHutGravity } from '../forces/barnes-hut/tree.js';
 import { setBarnesHutGravity } from '../forces/gravity.js';
 import { useEveryJointType3D } from '../joints/types-3d.js';
 import { installEmitters } from '../particles/emitter-systems.js';
+import { shapeEdits } from '../shapes/edits-3d.js';
 import { shareStores } from '../threads/shared-stores.js';
 import { describe } from '../validation/validate.js';
 import { externalWorldStates } from '../world/external-state.js';
@@ -185,6 +186,8 @@ export function restore(world: PhysicsWorld, snap: WorldSnapshot): void {
       target = parent(world);
     if (typeof own === 'number' && typeof target[counter] === 'number' && own > (target[counter] as number)) target[counter] = own;
   }
+  // Shape placements may change below: no collider keeps a pose from before (shapes/edits-3d.ts).
+  shapeEdits.count++;
   for (const ext of externalWorldStates()) {
     const enc = h.external[ext.name]!;
     if (enc === null) {

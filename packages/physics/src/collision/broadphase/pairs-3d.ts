@@ -300,18 +300,25 @@ function fillGrid(n: number, inv: number, size: number, dense: boolean): void {
     start[b + 1] = start[b + 1]! + start[b]!;
     firstRest[b] = firstRest[b]! + start[b]!;
   }
-  // Fill (start[b] is advanced while filling, then restored from the next bucket's start).
+  // Fill: a searching collider at start[b], another at firstRest[b], each cursor advanced past it (one
+  // pass without a branch on `searching`: the colliders of a pile are all searching until the first of
+  // them rests, and code compiled without the other branch was thrown away then). Then start[b] is the
+  // bucket's first resting place and firstRest[b] the next bucket's start: swapped back into place.
   for (let i = 0; i < n; i++) {
-    if (order[i] === -1 || searching[i] === 0) continue;
-    const b = bucket[i]!;
-    items[start[b]!++] = i;
+    if (order[i] === -1) continue;
+    const b = bucket[i]!,
+      on = searching[i]!,
+      s = start[b]!,
+      r = firstRest[b]!;
+    items[on * s + (1 - on) * r] = i;
+    start[b] = s + on;
+    firstRest[b] = r + 1 - on;
   }
-  for (let i = 0; i < n; i++) {
-    if (order[i] === -1 || searching[i] === 1) continue;
-    const b = bucket[i]!;
-    items[start[b]!++] = i;
+  for (let b = size; b > 0; b--) {
+    const rest = start[b - 1]!;
+    start[b] = firstRest[b - 1]!;
+    firstRest[b - 1] = rest;
   }
-  for (let b = size; b > 0; b--) start[b] = start[b - 1]!;
   start[0] = 0;
   // The boxes in bucket order, packed, so the neighbour search reads memory in sequence instead of
   // jumping through the collider arrays.
