@@ -25,9 +25,9 @@ const worktrees = (): number => execFileSync('git', ['-C', root, 'worktree', 'li
 
 test('HEAD against the working tree: both worlds step the window, the same state when the physics is unchanged, the worktree removed', async () => {
   const before = worktrees();
-  const run = await ab(['HEAD', '--count', '300', '--steps', '30', '--window', '10-30']);
+  const run = await ab(['HEAD', '--count', '300', '--steps', '30', '--window', '10-30', '--clock', 'cpu']);
   expect(run.code).toBe(0);
-  expect(run.stdout).toMatch(/^balls-in-box 300, threads 1, steps 10-30 of 30:$/m);
+  expect(run.stdout).toMatch(/^balls-in-box 300, threads 1, steps 10-30 of 30, cpu clock:$/m);
   expect(run.stdout).toMatch(/^ {2}HEAD: mean \d+\.\d\d ms, median \d+\.\d\d ms$/m);
   expect(run.stdout).toMatch(/^ {2}working tree \/ HEAD: mean \d+\.\d{3}, median of the steps' ratios \d+\.\d{3}$/m);
   const hashes = /state hashes after 30 steps: ([0-9a-f]{16}) ([0-9a-f]{16}) \((equal|different)\)/.exec(run.stdout);
@@ -52,6 +52,9 @@ test('bad flags: exit code 2 and a message naming the flag', async () => {
   const window = await ab(['HEAD', '--steps', '10', '--window', '5-20']);
   expect(window.code).toBe(2);
   expect(window.stderr).toMatch(/ab: --window must be a-b with a < b <= steps, got 5-20/);
+  const clock = await ab(['HEAD', '--clock', 'sundial']);
+  expect(clock.code).toBe(2);
+  expect(clock.stderr).toMatch(/ab: --clock must be wall or cpu, got sundial/);
   const threads = await ab(['HEAD', '--threads', '0']);
   expect(threads.code).toBe(2);
   expect(threads.stderr).toMatch(/ab: --threads must be an integer >= 1, got 0/);
