@@ -45,6 +45,7 @@ import {
   type Piece,
   PROJECTILE_RADIUS,
   PULL,
+  previewFlight,
   ROCK,
   surfaceAt,
   type Tally,
@@ -119,6 +120,11 @@ const lastThrow = {
    * it has touched neither.
    */
   touched: '' as Piece['kind'] | 'hill' | '',
+  /**
+   * The step in which the stone first touched anything (the ground, the rock, a piece): where it was
+   * before and after that step, m [x0, y0, x1, y1]; null until it has.
+   */
+  touchStep: null as [number, number, number, number] | null,
 };
 /** What the player calls each kind of castle piece and a bank of earth, in a throw's verdict. */
 const PIECE_NAME: Record<Piece['kind'] | 'hill', string> = {
@@ -197,6 +203,8 @@ const DEBRIS: Record<SoundMaterial, DebrisKind> = { wood: 'wood', glass: 'glass'
  * for a hard hit by a thrown stone (its size from the approach speed).
  */
 function stepWorld(world: PhysicsWorld): void {
+  const flying = lastThrow.body !== 0 && lastThrow.touchStep === null && isAlive(world, lastThrow.body);
+  const before = flying ? positionOf(lastThrow.body) : null;
   step(world);
   if (DEMO && shots.length === 0 && world.time > 0.3) {
     // At the castle's front at 19 m/s, the low angle.
@@ -213,6 +221,9 @@ function stepWorld(world: PhysicsWorld): void {
   // The first castle piece the last throw's stone touches: its verdict says it hit that piece, not
   // that it fell short or long of the castle.
   const touch = contactEvents(world).begin;
+  for (let i = 0; before && lastThrow.touchStep === null && i < touch.count; i++)
+    if (touch.bodyA[i] === lastThrow.body || touch.bodyB[i] === lastThrow.body)
+      lastThrow.touchStep = [...before, ...positionOf(lastThrow.body)];
   for (let i = 0; lastThrow.body !== 0 && lastThrow.touched === '' && i < touch.count; i++) {
     const a = touch.bodyA[i]!,
       b = touch.bodyB[i]!;
@@ -723,6 +734,7 @@ function fire(dx: number, dy: number): number {
   lastThrow.verdict = '';
   lastThrow.brief = '';
   lastThrow.touched = '';
+  lastThrow.touchStep = null;
   lastThrow.pastBy = 0;
   lastThrow.farthest = LAUNCH.x;
   lastThrow.vx = vx;
@@ -998,8 +1010,6 @@ const showNext = (visible: boolean, text?: string): void => {
 };
 
 const overlay = new Graphics({ label: 'catapult' });
-/** The aim while a press pulls (see drawAim), in screen pixels over the scene and its close-up. */
-const aimLayer = new Graphics({ label: 'aim' });
 const banner = new Text({
   text: '',
   style: {
@@ -1177,65 +1187,25 @@ function showBreaks(world: PhysicsWorld): void {
 }
 
 /**
- * The arc preview runs the drag-free flight from the cup to its first hit: where the stone (radius
- * PROJECTILE_RADIUS) first touches the ground, a bank of earth, the rock or a castle piece where it
- * stands this frame, at most PREVIEW_TIME s of flight. A preview cut partway along the arc left a
- * player guessing where the stone would land.
+ * The arc preview: the stone's flight from the cup to where it first touches the ground, a bank of
+ * earth, the rock or a castle piece as it stands now (previewFlight, at most PREVIEW_TIME s), drawn as
+ * dots in the page over the canvas (aimDom) on every pointer move and every frame: drawn on the
+ * canvas at the frame's pace it lagged the finger (a page at 3 fps while a stranger aimed showed the
+ * arc of an earlier, weaker pull ending at the first tower; the stone flew to the far one).
  */
-const PREVIEW_TIME = 6,
-  PREVIEW_DT = 0.02;
+const PREVIEW_TIME = 6;
 /** Least distance between two dots of the arc preview on the screen, px. */
 const PREVIEW_GAP = 11;
 /**
  * What the aim shows (tests): power (0 to 1) and angle (degrees above level) as the page shows them
- * now, the preview's dots in the last frame and its farthest x, m.
+ * now, the preview's dots on the screen now (and in the phone's close-up), its farthest x, m, and
+ * its end, the point (m) where the stone first touches something.
  */
-const aimShown: { power: number; angle: number; dots: number; reach: number } = { power: 0, angle: 0, dots: 0, reach: 0 };
+const aimShown = { power: 0, angle: 0, dots: 0, closeDots: 0, reach: 0, end: [0, 0] as [number, number] };
 
-/**
- * While aiming, the first part of the arc (dots fading along it) to its first hit, and the aim in the
- * page (showAimDom) placed for the camera of this frame.
- */
-function drawAim(world: PhysicsWorld): void {
-  aimShown.dots = 0;
-  aimLayer.clear();
-  // The band, the ring and the power bar follow the camera too (it may ease while the player pulls).
+/** Once a frame: the aim in the page (showAimDom) placed for the camera of this frame. */
+function drawAim(): void {
   showAimDom();
-  if (!aim.active) return;
-  const cam = renderer.camera;
-  const [vx, vy] = launchVelocity(aim.dx, aim.dy);
-  // The arc to its first hit (see PREVIEW_TIME).
-  const g = -world.gravity[1]!;
-  const arc = previewArc(world, vx, vy, g);
-  let reach: number = LAUNCH.x;
-  // Dots at least PREVIEW_GAP px apart (a small scene, an upright phone's, crowded them into a
-  // rope), and the arc's last point (the hit) always drawn; smaller on a narrow screen.
-  const dotR = cam.width < NARROW ? 3.5 : 4.5;
-  let lastX = Number.NEGATIVE_INFINITY,
-    lastY = 0;
-  const n = arc.length / 2;
-  for (let i = 1; i < n; i++) {
-    const x = arc[2 * i]!,
-      y = arc[2 * i + 1]!;
-    const px = cam.toScreenX(x),
-      py = cam.toScreenY(y);
-    const end = i === n - 1;
-    reach = x;
-    if (!end && Math.hypot(px - lastX, py - lastY) < PREVIEW_GAP) continue;
-    lastX = px;
-    lastY = py;
-    const fade = 1 - i / n;
-    aimLayer
-      .circle(px, py, end ? dotR + 1.5 : dotR)
-      .fill({ color: 0xffffff, alpha: 0.45 + 0.5 * fade })
-      .stroke({
-        width: 1.5,
-        color: 0x000000,
-        alpha: 0.35 + 0.35 * fade,
-      });
-    aimShown.dots++;
-  }
-  aimShown.reach = reach;
 }
 
 const SVG_NS = 'http://www.w3.org/2000/svg';
@@ -1260,7 +1230,10 @@ const aimDom = (() => {
   const band = svgChild('line', { 'stroke-width': 3, 'stroke-linecap': 'round' });
   const press = svgChild('circle', { r: 4, fill: '#fff', 'fill-opacity': 0.8 });
   const end = svgChild('circle', { r: 9, stroke: '#000', 'stroke-opacity': 0.6, 'stroke-width': 2 });
-  svg.append(ring, half, shade, band, press, end);
+  // The arc preview's dots on the scene, and on an upright phone in the castle's close-up too.
+  const dots = svgChild('g', { 'data-hud': 'aim-arc' });
+  const closeDots = svgChild('g', { 'data-hud': 'aim-arc-close' });
+  svg.append(dots, closeDots, ring, half, shade, band, press, end);
   const box = document.createElement('div');
   box.dataset.hud = 'aim';
   box.setAttribute('aria-live', 'off');
@@ -1276,7 +1249,7 @@ const aimDom = (() => {
   bar.append(fill);
   box.append(label, bar);
   pageLayout().stage.append(svg, box);
-  return { svg, ring, half, shade, band, press, end, box, label, bar, fill };
+  return { svg, dots, closeDots, ring, half, shade, band, press, end, box, label, bar, fill };
 })();
 
 /** Sets an SVG element's attributes. */
@@ -1298,7 +1271,10 @@ function showAimDom(): void {
   const on = aim.active && !shell.paused;
   const display = on ? '' : 'none';
   if (d.svg.style.display !== display) d.svg.style.display = d.box.style.display = display;
-  if (!on) return;
+  if (!on) {
+    aimShown.dots = aimShown.closeDots = 0;
+    return;
+  }
   const cam = renderer.camera;
   const [vx, vy] = launchVelocity(aim.dx, aim.dy);
   const power = Math.min(1, Math.hypot(aim.dx, aim.dy) / PULL.max);
@@ -1313,6 +1289,7 @@ function showAimDom(): void {
   setAttrs(d.band, { x1: aim.x0, y1: aim.y0, x2: ex, y2: ey, stroke: color });
   setAttrs(d.press, { cx: aim.x0, cy: aim.y0 });
   setAttrs(d.end, { cx: ex, cy: ey, fill: color });
+  drawArc(vx, vy);
   // The power bar over the catapult, kept on the screen.
   const w = Math.max(90, cam.toScreenLength(2));
   const x = Math.min(Math.max(6, cam.toScreenX(-0.3) - w / 2), cam.width - w - 6),
@@ -1335,46 +1312,76 @@ function showAimDom(): void {
 }
 
 /**
- * The drag-free flight of a stone launched from the cup at (vx, vy), m/s, under gravity g, m/s^2:
- * x, y pairs (m) every PREVIEW_DT s from LAUNCH up to and including the first point where the stone
- * touches the terrain, the rock or a castle piece as it stands in `world` now (a box in its own
- * turned frame, a stone as a circle), at most PREVIEW_TIME s of flight.
+ * Sets `n` dots (SVG circles, made as needed) in `group`, hiding the rest: `at(i)` gives dot i's
+ * centre (px) and radius, its fill and outline opacity.
  */
-function previewArc(world: PhysicsWorld, vx: number, vy: number, g: number): number[] {
-  const P = world.components.Position,
-    A = world.components.Angle.value;
-  const r = PROJECTILE_RADIUS;
-  const out: number[] = [LAUNCH.x, LAUNCH.y];
-  const rockX = lv.castleMaxX + ROCK.gap + ROCK.hx;
-  const floor = Math.min(0, ...lv.terrain.map((t) => t.maxY)) - 5;
-  const steps = Math.round(PREVIEW_TIME / PREVIEW_DT);
-  for (let i = 1; i <= steps; i++) {
-    const t = i * PREVIEW_DT,
-      x = LAUNCH.x + vx * t,
-      y = LAUNCH.y + vy * t - 0.5 * g * t * t;
-    out.push(x, y);
-    if (y - r <= surfaceAt(lv, x) || y < floor) break;
-    if (lv.rock && Math.abs(x - rockX) <= ROCK.hx + r && y - r <= surfaceAt(lv, rockX) + 2 * ROCK.hy) break;
-    let hit = false;
-    for (const p of lv.pieces) {
-      if (!isAlive(world, p.body)) continue;
-      const s = slotOf(p.body);
-      const dx = x - P.x[s]!,
-        dy = y - P.y[s]!;
-      if (p.kind === 'stone') {
-        hit = Math.hypot(dx, dy) <= p.half[0] + r;
-      } else {
-        const c = Math.cos(A[s]!),
-          sn = Math.sin(A[s]!);
-        const lx = c * dx + sn * dy,
-          ly = -sn * dx + c * dy;
-        hit = Math.abs(lx) <= p.half[0] + r && Math.abs(ly) <= p.half[1] + r;
-      }
-      if (hit) break;
+function placeDots(group: SVGElement, n: number, at: (i: number) => [number, number, number, number]): void {
+  while (group.childElementCount < n) group.append(svgChild('circle', { fill: '#fff', stroke: '#000', 'stroke-width': 1.5 }));
+  for (let i = 0; i < group.childElementCount; i++) {
+    const c = group.children[i] as SVGElement;
+    if (i >= n) {
+      if (c.getAttribute('display') !== 'none') c.setAttribute('display', 'none');
+      continue;
     }
-    if (hit) break;
+    const [x, y, r, fade] = at(i);
+    setAttrs(c, {
+      display: 'inline',
+      cx: x.toFixed(1),
+      cy: y.toFixed(1),
+      r,
+      'fill-opacity': (0.45 + 0.5 * fade).toFixed(2),
+      'stroke-opacity': (0.35 + 0.35 * fade).toFixed(2),
+    });
   }
-  return out;
+}
+
+/**
+ * The arc preview for a throw at (vx, vy), m/s (see PREVIEW_TIME): dots fading along the flight to
+ * its first touch, at least PREVIEW_GAP px apart (a small scene, an upright phone's, crowded them
+ * into a rope), the last one (the touch) always drawn and larger; and, while the castle's close-up
+ * shows (an upright phone), the same flight's dots where it crosses the close-up, at its scale.
+ */
+function drawArc(vx: number, vy: number): void {
+  const world = shell.world;
+  const cam = renderer.camera;
+  const arc = previewFlight(world, lv, vx, vy, -world.gravity[1]!, PREVIEW_TIME);
+  const n = arc.length / 2;
+  aimShown.reach = arc[arc.length - 2]!;
+  aimShown.end = [arc[arc.length - 2]!, arc[arc.length - 1]!];
+  const dotR = cam.width < NARROW ? 3.5 : 4.5;
+  /** Dots (screen px x, y, radius, fade) of the flight mapped by `map`, inside `keep`. */
+  const dotsOf = (map: (x: number, y: number) => [number, number], keep: (x: number, y: number) => boolean): number[][] => {
+    const out: number[][] = [];
+    let lastX = Number.NEGATIVE_INFINITY,
+      lastY = 0;
+    for (let i = 1; i < n; i++) {
+      const [px, py] = map(arc[2 * i]!, arc[2 * i + 1]!);
+      const end = i === n - 1;
+      if (!keep(px, py) || (!end && Math.hypot(px - lastX, py - lastY) < PREVIEW_GAP)) continue;
+      lastX = px;
+      lastY = py;
+      out.push([px, py, end ? dotR + 1.5 : dotR, 1 - i / n]);
+    }
+    return out;
+  };
+  const main = dotsOf(
+    (x, y) => [cam.toScreenX(x), cam.toScreenY(y)],
+    () => true,
+  );
+  placeDots(aimDom.dots, main.length, (i) => main[i] as [number, number, number, number]);
+  aimShown.dots = main.length;
+  let close: number[][] = [];
+  if (closeShown) {
+    const [bx, by, bw, bh] = closeShown.box,
+      [sx, sy] = closeShown.src,
+      z = closeShown.zoom;
+    close = dotsOf(
+      (x, y) => [bx + (cam.toScreenX(x) - sx) * z, by + (cam.toScreenY(y) - sy) * z],
+      (x, y) => x >= bx && x <= bx + bw && y >= by && y <= by + bh,
+    );
+  }
+  placeDots(aimDom.closeDots, close.length, (i) => close[i] as [number, number, number, number]);
+  aimShown.closeDots = close.length;
 }
 
 /** The screen end of the pull's band (px): the finger, or a full pull's length from the press along the pull. */
@@ -1417,10 +1424,6 @@ const closeLabel = new Text({
 });
 closeSprite.visible = closeFrame.visible = closeLabel.visible = false;
 app.stage.addChild(closeSprite, closeFrame, closeLabel);
-// The aim's arc over the close-up (the band, ring, power bar and numbers are in the page over the
-// canvas, see aimDom): the close-up, which draws the scene under it, does not show it (nor change
-// with every move of the finger).
-app.stage.addChild(aimLayer);
 /** The smallest magnification of the close-up worth showing (its largest: CLOSE_MAX). */
 const CLOSE_MIN = 1.4;
 /** Pixels between the close-up's foot and the top of the castle on the screen. */
@@ -1428,7 +1431,7 @@ const CLOSE_GAP = 36;
 /** Pixels over the aim's power bar (3.2 m up) kept clear for its two lines of numbers. */
 const AIM_LABEL_ROOM = 64;
 /** The close-up's box on the screen (px: x, y, width, height) and its magnification; null while hidden. */
-let closeShown: { box: [number, number, number, number]; zoom: number } | null = null;
+let closeShown: { box: [number, number, number, number]; zoom: number; src: [number, number] } | null = null;
 /** How many times the close-up's texture has been drawn since the page loaded. */
 let closeDraws = 0;
 /** Whether the close-up sits in the earth under the ground (out of a pull's way), not in the sky. */
@@ -1574,7 +1577,7 @@ function drawCloseUp(): void {
         .roundRect(bx - 1, by - 1, bw + 2, bh + 2, 6)
         .stroke({ width: 2, color: 0xffffff, alpha: 0.9 });
       closeLabel.position.set(bx + 6, by + 4);
-      closeShown = { box: [bx, by, bw, bh], zoom };
+      closeShown = { box: [bx, by, bw, bh], zoom, src: [sx, sy] };
     }
   }
   if (closeShown === null) {
@@ -1754,7 +1757,7 @@ function draw(world: PhysicsWorld, alpha: number): void {
   // A good throw's points keep counting what falls after it was decided.
   if (lastThrow.good && lastThrow.verdict) lastThrow.verdict = `+${t.score - lastThrow.scoreBefore}`;
   drawThrow(world);
-  drawAim(world);
+  drawAim();
   effects!.update(dt, -world.gravity[1]!);
   effects!.draw(cam);
   drawPause();
@@ -1900,6 +1903,8 @@ shell.expose({
   armAngle: (): number => arm.angle,
   /** Screen pixels a metre of pull (a drag this many px long pulls 1 m; PULL.max m is a full pull). */
   aimPxPerM: aimScale,
+  /** Where the last throw's stone was before and after the step it first touched anything in, m [x0, y0, x1, y1]; null until it has. */
+  firstTouch: (): [number, number, number, number] | null => lastThrow.touchStep,
   /** The last throw's launch velocity [vx, vy], m/s ([0, 0] before a throw). */
   lastLaunch: (): [number, number] => (lastThrow.body ? [lastThrow.vx, lastThrow.vy] : [0, 0]),
   /** Whether the camera is at rest (tests aim at the cup once it is). */
@@ -1942,10 +1947,13 @@ shell.expose({
     return { verdict: box(verdictText), offscreen: box(offscreenText) };
   },
   /**
-   * What the aim showed in the last frame: power (0 to 1), angle (degrees above level), dots of the
-   * arc preview (0 when not aiming) and the preview's farthest x, m.
+   * What the aim shows now: power (0 to 1), angle (degrees above level), dots of the arc preview on
+   * the scene and in the phone's close-up (0 when not aiming), the preview's farthest x, m, and its
+   * end (m), where the stone will first touch something.
    */
-  aimShown: (): { power: number; angle: number; dots: number; reach: number } => ({ ...aimShown }),
+  aimShown: (): { power: number; angle: number; dots: number; closeDots: number; reach: number; end: [number, number] } => ({
+    ...aimShown,
+  }),
   /** Screen pixels of drag for a full pull. */
   fullPullPx,
   /** The level score shown in the last frame, and the running total. */

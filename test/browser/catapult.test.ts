@@ -243,6 +243,93 @@ async function phoneThrows(p: GamePage, hint: Locator, box: DOMRect): Promise<vo
   else await p.waitFor(() => (window.game as unknown as { shotsLeft(): number }).shotsLeft() === 3, null);
 }
 
+/**
+ * With the frame pacer drawing nothing (a GPU too busy to finish a frame), a drag on `p` that throws
+ * at `power` (0 to 1) and `deg` degrees above level: the arc preview's dots (in the page) follow every
+ * move at once, its last dot sits at the end the game reports; released, the stone first touches
+ * something within 0.3 m of that end (issue 34: a stranger's preview ended at the first tower, and
+ * the stone flew to the far one). `touch` drags with a finger (CDP touch events), else the mouse.
+ * @returns the preview's end and how many of its dots showed in the phone's close-up.
+ */
+async function previewMatchesThrow(
+  p: GamePage,
+  power: number,
+  deg: number,
+  touch: boolean,
+): Promise<{ end: [number, number]; closeDots: number }> {
+  type W = CatapultGame & {
+    pacer: { mayDraw(): boolean };
+    fullPullPx(): number;
+    cameraSettled(): boolean;
+    firstTouch(): [number, number, number, number] | null;
+    aimShown(): { power: number; angle: number; dots: number; closeDots: number; reach: number; end: [number, number] };
+  };
+  await p.waitFor(() => {
+    const w = window.game as unknown as W;
+    return w.cameraSettled() && !w.levelEnded() && w.shotsLeft() > 0;
+  }, null);
+  const box = (await p.page.locator('canvas').boundingBox())!;
+  const full = await p.page.evaluate(() => (window.game as unknown as W).fullPullPx());
+  await p.page.evaluate(() => {
+    const w = window.game as unknown as W;
+    (window as unknown as { keptMayDraw: () => boolean }).keptMayDraw = w.pacer.mayDraw;
+    w.pacer.mayDraw = () => false;
+  });
+  const from = { x: box.x + box.width * 0.7, y: box.y + box.height * 0.45 };
+  const a = (deg * Math.PI) / 180;
+  const cdp = touch ? await p.page.context().newCDPSession(p.page) : null;
+  const point = (x: number, y: number) => [{ x, y, id: 1 }];
+  if (cdp) await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: point(from.x, from.y) });
+  else {
+    await p.page.mouse.move(from.x, from.y);
+    await p.page.mouse.down();
+  }
+  let shown = { power: 0, angle: 0, dots: 0, closeDots: 0, reach: 0, end: [0, 0] as [number, number] };
+  // Two pulls, the second the throw: the arc's end moves with the pull, no frame drawn.
+  for (const k of [0.6, 1]) {
+    const len = k * power * full;
+    const to = { x: from.x - len * Math.cos(a), y: from.y + len * Math.sin(a) };
+    if (cdp) await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: point(to.x, to.y) });
+    else await p.page.mouse.move(to.x, to.y);
+    const before = shown.end[0];
+    shown = await p.waitFor(
+      ([want, before]) => {
+        const s = (window.game as unknown as W).aimShown();
+        return Math.abs(s.power - want) < 0.01 && s.end[0] !== before ? s : null;
+      },
+      [k * power, before] as const,
+    );
+    // The arc's last dot on the page is the end the game reports (canvas px, to a pixel).
+    const dot = await p.page.evaluate(([x, y]) => {
+      const cam = (window.game as unknown as W).renderer.camera;
+      const dots = [...document.querySelectorAll('[data-hud="aim-arc"] circle')].filter((c) => c.getAttribute('display') !== 'none');
+      const last = dots[dots.length - 1];
+      return {
+        count: dots.length,
+        dx: Number(last?.getAttribute('cx')) - cam.toScreenX(x),
+        dy: Number(last?.getAttribute('cy')) - cam.toScreenY(y),
+      };
+    }, shown.end);
+    expect(dot.count).toBe(shown.dots);
+    expect(dot.count).toBeGreaterThan(4);
+    expect(Math.hypot(dot.dx, dot.dy)).toBeLessThan(1);
+  }
+  if (cdp) {
+    await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
+    await cdp.detach();
+  } else await p.page.mouse.up();
+  await p.page.evaluate(() => {
+    (window.game as unknown as W).pacer.mayDraw = (window as unknown as { keptMayDraw: () => boolean }).keptMayDraw;
+  });
+  const seg = await p.waitFor(() => (window.game as unknown as W).firstTouch(), null);
+  // The preview's end against the segment of the step in which the stone first touched anything.
+  const [x0, y0, x1, y1] = seg;
+  const [ex, ey] = shown.end;
+  const u = Math.max(0, Math.min(1, ((ex - x0) * (x1 - x0) + (ey - y0) * (y1 - y0)) / Math.max(1e-12, (x1 - x0) ** 2 + (y1 - y0) ** 2)));
+  expect(Math.hypot(x0 + u * (x1 - x0) - ex, y0 + u * (y1 - y0) - ey), JSON.stringify({ seg, end: shown.end })).toBeLessThanOrEqual(0.3);
+  return { end: shown.end, closeDots: shown.closeDots };
+}
+
 describe('catapult', () => {
   it('draws, shows its controls and panel', async () => {
     expect(await g.canvasColors()).toBeGreaterThan(4);
@@ -899,6 +986,30 @@ describe('catapult', () => {
     await d.waitFor(() => (window.game as unknown as W).aimShown().dots === 0, null);
     expect(d.errors).toEqual([]);
     await d.close();
+  });
+
+  it('desktop 1280 x 800: the arc preview follows the mouse with no frame drawn and ends where the stone first touches (level 2: the bank, then the keep)', async () => {
+    const d = await h.openGame('catapult', { query: { level: 2 }, viewport: { width: 1280, height: 800 } });
+    // Low and half power: the stone meets the earth bank's face (the preview ended 0.3 m past it);
+    // then the stranger's 58 % at 40 degrees.
+    const bank = await previewMatchesThrow(d, 0.5, 25, false);
+    const lv = await d.page.evaluate(
+      () => (window.game as unknown as { level(): { terrain: { kind: string; minX: number }[] } }).level().terrain,
+    );
+    const hill = lv.find((t) => t.kind === 'hill')!;
+    expect(Math.abs(bank.end[0] + 0.3 - hill.minX)).toBeLessThan(0.05);
+    await previewMatchesThrow(d, 0.58, 40, false);
+    expect(d.errors).toEqual([]);
+    await d.close();
+  });
+
+  it('phone 390 x 844 (touch): the arc preview follows the finger with no frame drawn, shows in the castle close-up and ends where the stone first touches', async () => {
+    const p = await h.openGame('catapult', { query: { level: 1 }, viewport: { width: 390, height: 844 }, touch: true });
+    const shown = await previewMatchesThrow(p, 0.5, 30, true);
+    // The end is on the castle's first tower: its dots show in the close-up too.
+    expect(shown.closeDots).toBeGreaterThan(0);
+    expect(p.errors).toEqual([]);
+    await p.close();
   });
 
   it('phone 390 x 844 (touch): upright and sideways the start view and the card saying how to play; the catapult and the castle framed together with the castle close up in the earth, kept out of the pull and drawn again only when it changes; the pull is long and the release throws; played again, the camera follows the stone to a large tower, a drag from anywhere throws and the next-level (or try-again) button goes on', async () => {
