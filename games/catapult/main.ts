@@ -105,7 +105,7 @@ const lastThrow = {
   time: 0,
   /** What the throw did ('' until it settles), where to show it (m) and when it was decided (s). */
   verdict: '',
-  /** A miss in brief ('long 6 m', 'short 3 m', 'no damage'; '' for a hit or before the verdict), shown with the last throw's numbers while aiming. */
+  /** A miss in brief ('long 6 m', 'short 3 m', 'fell in a gap'; '' for a hit or before the verdict), shown with the last throw's numbers while aiming. */
   brief: '',
   good: false,
   at: [0, 0] as [number, number],
@@ -125,6 +125,8 @@ const lastThrow = {
    * before and after that step, m [x0, y0, x1, y1]; null until it has.
    */
   touchStep: null as [number, number, number, number] | null,
+  /** The body the stone first touched (a piece, the ground, a bank, the rock); 0 until it has. */
+  firstBody: 0,
 };
 /** What the player calls each kind of castle piece and a bank of earth, in a throw's verdict. */
 const PIECE_NAME: Record<Piece['kind'] | 'hill', string> = {
@@ -222,8 +224,10 @@ function stepWorld(world: PhysicsWorld): void {
   // that it fell short or long of the castle.
   const touch = contactEvents(world).begin;
   for (let i = 0; before && lastThrow.touchStep === null && i < touch.count; i++)
-    if (touch.bodyA[i] === lastThrow.body || touch.bodyB[i] === lastThrow.body)
+    if (touch.bodyA[i] === lastThrow.body || touch.bodyB[i] === lastThrow.body) {
       lastThrow.touchStep = [...before, ...positionOf(lastThrow.body)];
+      lastThrow.firstBody = touch.bodyA[i] === lastThrow.body ? touch.bodyB[i]! : touch.bodyA[i]!;
+    }
   for (let i = 0; lastThrow.body !== 0 && lastThrow.touched === '' && i < touch.count; i++) {
     const a = touch.bodyA[i]!,
       b = touch.bodyB[i]!;
@@ -735,6 +739,7 @@ function fire(dx: number, dy: number): number {
   lastThrow.brief = '';
   lastThrow.touched = '';
   lastThrow.touchStep = null;
+  lastThrow.firstBody = 0;
   lastThrow.pastBy = 0;
   lastThrow.farthest = LAUNCH.x;
   lastThrow.vx = vx;
@@ -812,10 +817,19 @@ function followThrow(world: PhysicsWorld, t: Tally): void {
     vy = lastThrow.vy;
   const ground = LAUNCH.x + (lastThrow.vx * (vy + Math.sqrt(vy * vy + 2 * g * LAUNCH.y))) / g;
   const by = (d: number): number => Math.max(1, Math.round(d));
-  const long = landX > lv.castleMaxX + 0.3 || lastThrow.farthest > rockRight() + 0.3,
+  // Long too when the stone first came down past the castle or on the rock behind it, whatever it
+  // touched after: a stone that flew over the castle and bounced off the rock onto a post read
+  // "Hit a wooden post, nothing fell: throw harder".
+  const first = lastThrow.touchStep,
+    firstPast =
+      first !== null &&
+      !lv.pieces.some((p) => p.body === lastThrow.firstBody) &&
+      (lastThrow.firstBody === lv.rock || first[2] > lv.castleMaxX + 0.3);
+  const long = landX > lv.castleMaxX + 0.3 || lastThrow.farthest > rockRight() + 0.3 || firstPast,
     short = !long && landX < lv.castleMinX - 0.3;
   let landed = Math.max(ground, lastThrow.farthest);
-  for (let i = 2; long && i < path.length; i += 2) {
+  if (firstPast && first) landed = Math.min(landed, first[2]);
+  for (let i = 2; long && !firstPast && i < path.length; i += 2) {
     const px = path[i]!,
       py = path[i + 1]!;
     if (px > lv.castleMaxX + 0.3 && py < path[i - 1]! && py < surfaceAt(lv, px) + PROJECTILE_RADIUS + 0.3) {
@@ -825,7 +839,7 @@ function followThrow(world: PhysicsWorld, t: Tally): void {
   }
   // A stone that touched a piece of the castle hit it, whatever its path did after: it was neither
   // short nor long (one that glanced off a post and rolled back read "Short by 4 m").
-  const hit = lastThrow.touched !== '' && !(lastThrow.farthest > rockRight() + 0.3);
+  const hit = lastThrow.touched !== '' && !long;
   const bank = lastThrow.touched === 'hill';
   const d = hit ? 0 : short ? by(lv.castleMinX - Math.min(ground, landX)) : long ? by(landed - lv.castleMaxX) : 0;
   lastThrow.pastBy = !hit && long ? d : 0;
@@ -837,8 +851,8 @@ function followThrow(world: PhysicsWorld, t: Tally): void {
       ? `Short by ${d} m: pull further back`
       : long
         ? `Long by ${d} m: pull less, or aim lower`
-        : 'No damage: throw harder, or hit lower';
-  lastThrow.brief = hit ? (bank ? 'hit the bank' : 'hit, none fell') : short ? `short ${d} m` : long ? `long ${d} m` : 'no damage';
+        : 'No damage: it fell through a gap, aim at a piece';
+  lastThrow.brief = hit ? (bank ? 'hit the bank' : 'hit, none fell') : short ? `short ${d} m` : long ? `long ${d} m` : 'fell in a gap';
   lastThrow.at = [Math.min(Math.max(x, lv.castleMinX - 4), lv.castleMaxX), Math.max(y, 0) + 2.2];
 }
 

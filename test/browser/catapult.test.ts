@@ -764,6 +764,41 @@ describe('catapult', () => {
     expect(g.errors).toEqual([]);
   });
 
+  it('a throw over the castle that comes down on the rock and bounces back onto it is long, not "throw harder"', async () => {
+    // Levels 1 and 2: these throws fly over the castle, first touch the rock behind it, then fall back
+    // onto a piece (they read "Hit a wooden post, nothing fell: throw harder", the wrong way).
+    for (const [level, power, angle] of [
+      [1, 0.7, 30],
+      [2, 0.62, 40],
+    ] as const) {
+      await g.page.evaluate(
+        ([level, power, angle]) => {
+          const w = window.game as unknown as CatapultGame;
+          w.paused = false;
+          w.params.level = level;
+          w.reset();
+          const th = (angle * Math.PI) / 180;
+          w.fire(-3 * power * Math.cos(th), -3 * power * Math.sin(th));
+        },
+        [level, power, angle],
+      );
+      await g.waitFor(() => (window.game as unknown as CatapultGame).lastVerdict() !== '', null);
+      const said = await g.page.evaluate(() => {
+        const w = window.game as unknown as CatapultGame & { firstTouch(): number[] | null };
+        return { verdict: w.lastVerdict(), first: w.firstTouch(), castleMaxX: w.level().castleMaxX };
+      });
+      // The stone's first touch was past the castle's far end (on the rock), independent of the verdict.
+      expect(said.first![2]!, JSON.stringify(said)).toBeGreaterThan(said.castleMaxX + 0.3);
+      expect(said.verdict, JSON.stringify({ level, power, angle, ...said })).toMatch(/^Long by \d+ m: pull less, or aim lower$/);
+    }
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as CatapultGame;
+      w.params.level = 1;
+      w.reset();
+    });
+    expect(g.errors).toEqual([]);
+  });
+
   it('a low throw that comes down short says by how much it fell short, not where it topped out', async () => {
     // 7 m/s at 5 degrees comes down about 4.3 m out (drag-free), 2.3 to 3.3 m short of level 1's
     // castle (at 6.6 to 7.6 m). The verdict took where the throw first went down under the castle's
