@@ -580,9 +580,13 @@ function aimGround(): number {
 }
 /** The upright aim view's left edge, m: just behind the catapult's stacked stones. */
 const OVERVIEW_LEFT = LAUNCH.x - 3.2;
-/** The shot view (see above): the castle, the rock and room either side for debris (2.5 m; 0.8 and 1 m upright). */
+/** The shot view (see above): the castle, the rock and room either side for debris (2.5 m; 0.8 and 1 m upright; on a desktop 1.2 m and the rock's near half). */
 function shotViewRect(): View {
-  return upright() ? uprightView(lv.castleMinX - 0.8, rockRight() + 1) : viewFor(lv.castleMinX - 2.5, rockRight() + 2.5);
+  if (upright()) return uprightView(lv.castleMinX - 0.8, rockRight() + 1);
+  if (renderer.camera.width < NARROW) return viewFor(lv.castleMinX - 2.5, rockRight() + 2.5);
+  // A desktop: the castle close, the rock's near half at the right edge (with 2.5 m either side and
+  // the whole rock it was hardly closer than the aim view, the castle a strip under 80 % of sky).
+  return viewFor(lv.castleMinX - 1.2, lv.castleMaxX + ROCK.gap + ROCK.hx + 0.2);
 }
 /** Screen pixels a metre in view `v`, fitted (letterboxed) to the screen. */
 function pxPerM(v: View): number {
@@ -590,12 +594,13 @@ function pxPerM(v: View): number {
   return Math.min(cam.width / (v.maxX - v.minX), cam.height / (v.maxY - v.minY));
 }
 /**
- * Whether the shot view is used: upright on a phone, and on any narrow screen where it shows the
- * castle at least 1.5 x as large as the aim view. A desktop's aim view shows the castle large enough.
+ * Whether the shot view is used: upright on a phone, and on any other screen where it shows the
+ * castle at least 1.25 x as large as the aim view (a desktop's aim view, the whole field fitted to
+ * its width, drew the castle as a strip under 80 % of sky after a throw).
  */
-const zoomsIn = (): boolean => upright() || (renderer.camera.width < NARROW && pxPerM(shotViewRect()) >= 1.5 * pxPerM(aimView()));
+const zoomsIn = (): boolean => upright() || pxPerM(shotViewRect()) >= 1.25 * pxPerM(aimView());
 /**
- * The view while the stone flies, upright: between the aim view (u = 0) and the shot view (u = 1),
+ * The view while the stone flies: between the aim view (u = 0) and the shot view (u = 1),
  * u the share of the way from the catapult to the castle's front the stone has got (its farthest
  * x), and shifted where needed so the stone stays at least 15 % of the view's width inside it.
  */
@@ -610,6 +615,7 @@ function followView(): View {
   // Never past the shot view's right edge: a long throw is followed to the rock, and the arrow at the
   // screen's edge points on at it (followed on, the view left the castle for the ground's bare end).
   c = Math.min(c, s.maxX - w / 2);
+  if (!upright()) return viewFor(c - w / 2, c + w / 2);
   return uprightView(c - w / 2, c + w / 2, aimGround() + u * (UPRIGHT_GROUND - aimGround()));
 }
 function frameCamera(): void {
@@ -621,7 +627,7 @@ function frameCamera(): void {
   if (shotView && lastThrow.verdict && (read || levelEnded)) shotView = false;
   // A level over: the wreck stays in view with its result (on a phone the shot view, not the catapult).
   const wreck = levelEnded && shots.length > 0 && zoomsIn();
-  const target = wreck ? shotViewRect() : shotView && zoomsIn() ? (upright() ? followView() : shotViewRect()) : aimView();
+  const target = wreck ? shotViewRect() : shotView && zoomsIn() ? followView() : aimView();
   const size = `${cam.width}x${cam.height}`;
   const k = size === framedFor ? 0.1 : 1;
   if (size !== framedFor) sizesFramed.add(size);
@@ -1082,6 +1088,8 @@ castleText.visible = false;
 const pause = createPauseOverlay();
 const popupLayer = new Container({ label: 'popups' });
 effects = new Effects(popupLayer);
+// Past the ground's ends (no surface) bits fall on out of sight.
+effects.surface = (x) => Math.max(-50, surfaceAt(lv, x));
 renderer.root.addChild(overlay, effects.graphics, popupLayer, bannerPanel, banner, verdictText, offscreenText, castleText, pause.container);
 
 /** Whether a stone sits in the cup: shots are left and the arm is back from its last throw. */
@@ -1913,6 +1921,8 @@ shell.expose({
   aimLabel: (): string => (aimDom.box.style.display === 'none' ? '' : (aimDom.label.textContent ?? '')),
   /** The effects now: bits of debris in flight and score popups showing. */
   effects: (): { bits: number; popups: number } => ({ bits: effects!.bitCount, popups: effects!.popupCount }),
+  /** The least height (m) of a chip or bit of confetti over the ground under it (Infinity when none; see Effects.lowestOverGround). */
+  debrisOverGround: (): number => effects!.lowestOverGround(),
   /** The catapult's arm angle, rad (see CATAPULT in ./look: cocked at pi, upright at pi / 2). */
   armAngle: (): number => arm.angle,
   /** Screen pixels a metre of pull (a drag this many px long pulls 1 m; PULL.max m is a full pull). */

@@ -292,24 +292,26 @@ async function previewMatchesThrow(
     if (cdp) await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: point(to.x, to.y) });
     else await p.page.mouse.move(to.x, to.y);
     const before = shown.end[0];
-    shown = await p.waitFor(
+    // The aim and the arc's dots on the page read together (the camera may ease between two reads).
+    const seen = await p.waitFor(
       ([want, before]) => {
         const s = (window.game as unknown as W).aimShown();
-        return Math.abs(s.power - want) < 0.01 && s.end[0] !== before ? s : null;
+        if (Math.abs(s.power - want) >= 0.01 || s.end[0] === before) return null;
+        const cam = (window.game as unknown as W).renderer.camera;
+        const dots = [...document.querySelectorAll('[data-hud="aim-arc"] circle')].filter((c) => c.getAttribute('display') !== 'none');
+        const last = dots[dots.length - 1];
+        const dot = {
+          count: dots.length,
+          dx: Number(last?.getAttribute('cx')) - cam.toScreenX(s.end[0]),
+          dy: Number(last?.getAttribute('cy')) - cam.toScreenY(s.end[1]),
+        };
+        return { s, dot };
       },
       [k * power, before] as const,
     );
+    shown = seen.s;
     // The arc's last dot on the page is the end the game reports (canvas px, to a pixel).
-    const dot = await p.page.evaluate(([x, y]) => {
-      const cam = (window.game as unknown as W).renderer.camera;
-      const dots = [...document.querySelectorAll('[data-hud="aim-arc"] circle')].filter((c) => c.getAttribute('display') !== 'none');
-      const last = dots[dots.length - 1];
-      return {
-        count: dots.length,
-        dx: Number(last?.getAttribute('cx')) - cam.toScreenX(x),
-        dy: Number(last?.getAttribute('cy')) - cam.toScreenY(y),
-      };
-    }, shown.end);
+    const dot = seen.dot;
     expect(dot.count).toBe(shown.dots);
     expect(dot.count).toBeGreaterThan(4);
     expect(Math.hypot(dot.dx, dot.dy)).toBeLessThan(1);
@@ -799,6 +801,55 @@ describe('catapult', () => {
     expect(g.errors).toEqual([]);
   });
 
+  it('a level cleared throws confetti that comes to rest on the ground, not in the earth under it', async () => {
+    // Level 5: a tower in a pit (the ground's height changes under the confetti). On a phone the
+    // confetti fell on through the earth (it had no floor).
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as CatapultGame;
+      w.paused = false;
+      w.params.level = 5;
+      w.reset();
+    });
+    await g.waitFor(() => !(window.game as unknown as CatapultGame).levelEnded(), null);
+    // Every drawn frame the lowest bit over the ground, from the level's end until the bits are gone.
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as CatapultGame & {
+        debrisOverGround(): number;
+        effects(): { bits: number };
+      };
+      const box = window as unknown as { lowestBit: number; bitsSeen: number };
+      box.lowestBit = Number.POSITIVE_INFINITY;
+      box.bitsSeen = 0;
+      const sample = (): void => {
+        box.lowestBit = Math.min(box.lowestBit, w.debrisOverGround());
+        box.bitsSeen = Math.max(box.bitsSeen, w.effects().bits);
+        if (box.bitsSeen === 0 || w.effects().bits > 0) requestAnimationFrame(sample);
+      };
+      requestAnimationFrame(sample);
+      w.fire(-1, -1);
+      for (const piece of (w as unknown as { level(): { pieces: { down: boolean }[] } }).level().pieces) piece.down = true;
+    });
+    await g.waitFor(
+      () => {
+        const box = window as unknown as { lowestBit: number; bitsSeen: number };
+        return box.bitsSeen >= 40 && (window.game as unknown as { effects(): { bits: number } }).effects().bits === 0;
+      },
+      null,
+      60_000,
+    );
+    const lowest = await g.page.evaluate(() => (window as unknown as { lowestBit: number }).lowestBit);
+    expect(lowest).toBeGreaterThanOrEqual(0);
+    expect(lowest).toBeLessThan(0.05);
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as CatapultGame;
+      w.campaign.scores.fill(0);
+      w.campaign.stars.fill(0);
+      w.params.level = 1;
+      w.reset();
+    });
+    expect(g.errors).toEqual([]);
+  });
+
   it('a low throw that comes down short says by how much it fell short, not where it topped out', async () => {
     // 7 m/s at 5 degrees comes down about 4.3 m out (drag-free), 2.3 to 3.3 m short of level 1's
     // castle (at 6.6 to 7.6 m). The verdict took where the throw first went down under the castle's
@@ -1023,8 +1074,13 @@ describe('catapult', () => {
     await d.close();
   });
 
-  it('desktop 1280 x 800: the arc preview follows the mouse with no frame drawn and ends where the stone first touches (level 2: the bank, then the keep)', async () => {
+  it('desktop 1280 x 800: the arc preview follows the mouse with no frame drawn and ends where the stone first touches (level 2: the bank, then the keep); after a throw the camera frames the castle', async () => {
     const d = await h.openGame('catapult', { query: { level: 2 }, viewport: { width: 1280, height: 800 } });
+    await d.waitFor(() => (window.game as unknown as { cameraSettled(): boolean }).cameraSettled(), null);
+    const aimPerM = await d.page.evaluate(() => {
+      const cam = (window.game as unknown as CatapultGame).renderer.camera;
+      return cam.toScreenX(1) - cam.toScreenX(0);
+    });
     // Low and half power: the stone meets the earth bank's face (the preview ended 0.3 m past it);
     // then the stranger's 58 % at 40 degrees.
     const bank = await previewMatchesThrow(d, 0.5, 25, false);
@@ -1034,6 +1090,24 @@ describe('catapult', () => {
     const hill = lv.find((t) => t.kind === 'hill')!;
     expect(Math.abs(bank.end[0] + 0.3 - hill.minX)).toBeLessThan(0.05);
     await previewMatchesThrow(d, 0.58, 40, false);
+    // After the throw the camera frames the castle (the whole field fitted to the width drew it as a
+    // strip under 80 % of sky): at least 1.4 x the aim view's pixels a metre, the sky over the
+    // castle's top under 65 % of the canvas.
+    type V = {
+      shotView(): boolean;
+      cameraSettled(): boolean;
+      renderer: { camera: Cam & { height: number } };
+      level(): { castleTop: number };
+    };
+    const framed = await d.waitFor(() => {
+      const w = window.game as unknown as V;
+      const cam = w.renderer.camera;
+      return w.shotView() && w.cameraSettled()
+        ? { perM: cam.toScreenX(1) - cam.toScreenX(0), sky: cam.toScreenY(w.level().castleTop) / cam.height }
+        : null;
+    }, null);
+    expect(framed.perM).toBeGreaterThanOrEqual(1.4 * aimPerM);
+    expect(framed.sky).toBeLessThan(0.65);
     expect(d.errors).toEqual([]);
     await d.close();
   });
