@@ -829,8 +829,10 @@ let mastGhosted = false;
 function ghostMast(): void {
   const P = shell.world.components.Position;
   const b = handles.ball;
-  let hides = isAlive(shell.world, b) && mastBetween(P.x[b]!, P.y[b]!, P.z[b]!, BALL_RADIUS);
-  if (!hides && aimed !== 0 && isAlive(shell.world, aimed)) hides = mastBetween(P.x[aimed]!, P.y[aimed]!, P.z[aimed]!, 0.5);
+  // Once faint, it stays so until the ball is 0.3 m further clear (no flicker as it swings at the edge).
+  const margin = mastGhosted ? 0.3 : 0;
+  let hides = isAlive(shell.world, b) && mastBetween(P.x[b]!, P.y[b]!, P.z[b]!, BALL_RADIUS + margin);
+  if (!hides && aimed !== 0 && isAlive(shell.world, aimed)) hides = mastBetween(P.x[aimed]!, P.y[aimed]!, P.z[aimed]!, 0.5 + margin);
   mastGhosted = hides;
   const m = mastLattice.material as Material;
   if (m.transparent === hides && (m.opacity === 0.25) === hides) return;
