@@ -70,6 +70,11 @@ export class Effects {
   private readonly spare: Text[] = [];
   private shakePx = 0;
   private seed = 1;
+  /**
+   * The ground's height (m) at x (m), where falling chips and confetti come to rest: 0 (flat
+   * ground) unless the game sets its level's surface.
+   */
+  surface: (x: number) => number = () => 0;
 
   /** `popups` is the container the popup texts go in (over the scene). */
   constructor(popups: Container) {
@@ -112,6 +117,18 @@ export class Effects {
       b.color[k] = colors[i % colors.length]!;
       b.dust[k] = dust ? 1 : confetti ? 2 : 0;
     }
+  }
+
+  /**
+   * The least height (m) of any chip, splinter or bit of confetti over the surface under it (see
+   * `surface`; negative when one is under the ground), Infinity when there is none (dust, which
+   * drifts, is not counted).
+   */
+  lowestOverGround(): number {
+    const b = this.bits;
+    let low = Number.POSITIVE_INFINITY;
+    for (let k = 0; k < b.count; k++) if (b.dust[k] !== 1) low = Math.min(low, b.y[k]! - this.surface(b.x[k]!));
+    return low;
   }
 
   /** A score popup ("+100") rising from (x, y), m, in `color` (0xRRGGBB). */
@@ -158,15 +175,16 @@ export class Effects {
         const damp = Math.exp(-3 * dt);
         b.vx[k] = b.vx[k]! * damp;
         b.vy[k] = b.vy[k]! * damp + 0.4 * dt;
-      } else if (b.dust[k] === 2) {
-        // Confetti flutters down: strong drag, a slow fall.
-        const damp = Math.exp(-2.5 * dt);
-        b.vx[k] = b.vx[k]! * damp;
-        b.vy[k] = (b.vy[k]! - g * dt) * damp;
       } else {
-        b.vy[k] = b.vy[k]! - g * dt;
-        // A chip that reaches the grass stops there.
-        if (b.y[k]! + b.vy[k]! * dt < 0.02) {
+        if (b.dust[k] === 2) {
+          // Confetti flutters down: strong drag, a slow fall.
+          const damp = Math.exp(-2.5 * dt);
+          b.vx[k] = b.vx[k]! * damp;
+          b.vy[k] = (b.vy[k]! - g * dt) * damp;
+        } else b.vy[k] = b.vy[k]! - g * dt;
+        // A chip or a bit of confetti that reaches the ground (a hill's top, a pit's floor) lies
+        // there: confetti fell on through the earth on a phone's screen.
+        if (b.y[k]! + b.vy[k]! * dt < this.surface(b.x[k]!) + 0.02) {
           b.vy[k] = 0;
           b.vx[k] = 0;
           b.w[k] = 0;

@@ -45,6 +45,7 @@ import {
   type Piece,
   PROJECTILE_RADIUS,
   PULL,
+  previewFlight,
   ROCK,
   surfaceAt,
   type Tally,
@@ -104,7 +105,7 @@ const lastThrow = {
   time: 0,
   /** What the throw did ('' until it settles), where to show it (m) and when it was decided (s). */
   verdict: '',
-  /** A miss in brief ('long 6 m', 'short 3 m', 'no damage'; '' for a hit or before the verdict), shown with the last throw's numbers while aiming. */
+  /** A miss in brief ('long 6 m', 'short 3 m', 'fell in a gap'; '' for a hit or before the verdict), shown with the last throw's numbers while aiming. */
   brief: '',
   good: false,
   at: [0, 0] as [number, number],
@@ -119,6 +120,13 @@ const lastThrow = {
    * it has touched neither.
    */
   touched: '' as Piece['kind'] | 'hill' | '',
+  /**
+   * The step in which the stone first touched anything (the ground, the rock, a piece): where it was
+   * before and after that step, m [x0, y0, x1, y1]; null until it has.
+   */
+  touchStep: null as [number, number, number, number] | null,
+  /** The body the stone first touched (a piece, the ground, a bank, the rock); 0 until it has. */
+  firstBody: 0,
 };
 /** What the player calls each kind of castle piece and a bank of earth, in a throw's verdict. */
 const PIECE_NAME: Record<Piece['kind'] | 'hill', string> = {
@@ -197,6 +205,8 @@ const DEBRIS: Record<SoundMaterial, DebrisKind> = { wood: 'wood', glass: 'glass'
  * for a hard hit by a thrown stone (its size from the approach speed).
  */
 function stepWorld(world: PhysicsWorld): void {
+  const flying = lastThrow.body !== 0 && lastThrow.touchStep === null && isAlive(world, lastThrow.body);
+  const before = flying ? positionOf(lastThrow.body) : null;
   step(world);
   if (DEMO && shots.length === 0 && world.time > 0.3) {
     // At the castle's front at 19 m/s, the low angle.
@@ -213,6 +223,11 @@ function stepWorld(world: PhysicsWorld): void {
   // The first castle piece the last throw's stone touches: its verdict says it hit that piece, not
   // that it fell short or long of the castle.
   const touch = contactEvents(world).begin;
+  for (let i = 0; before && lastThrow.touchStep === null && i < touch.count; i++)
+    if (touch.bodyA[i] === lastThrow.body || touch.bodyB[i] === lastThrow.body) {
+      lastThrow.touchStep = [...before, ...positionOf(lastThrow.body)];
+      lastThrow.firstBody = touch.bodyA[i] === lastThrow.body ? touch.bodyB[i]! : touch.bodyA[i]!;
+    }
   for (let i = 0; lastThrow.body !== 0 && lastThrow.touched === '' && i < touch.count; i++) {
     const a = touch.bodyA[i]!,
       b = touch.bodyB[i]!;
@@ -565,9 +580,13 @@ function aimGround(): number {
 }
 /** The upright aim view's left edge, m: just behind the catapult's stacked stones. */
 const OVERVIEW_LEFT = LAUNCH.x - 3.2;
-/** The shot view (see above): the castle, the rock and room either side for debris (2.5 m; 0.8 and 1 m upright). */
+/** The shot view (see above): the castle, the rock and room either side for debris (2.5 m; 0.8 and 1 m upright; on a desktop 1.2 m and the rock's near half). */
 function shotViewRect(): View {
-  return upright() ? uprightView(lv.castleMinX - 0.8, rockRight() + 1) : viewFor(lv.castleMinX - 2.5, rockRight() + 2.5);
+  if (upright()) return uprightView(lv.castleMinX - 0.8, rockRight() + 1);
+  if (renderer.camera.width < NARROW) return viewFor(lv.castleMinX - 2.5, rockRight() + 2.5);
+  // A desktop: the castle close, the rock's near half at the right edge (with 2.5 m either side and
+  // the whole rock it was hardly closer than the aim view, the castle a strip under 80 % of sky).
+  return viewFor(lv.castleMinX - 1.2, lv.castleMaxX + ROCK.gap + ROCK.hx + 0.2);
 }
 /** Screen pixels a metre in view `v`, fitted (letterboxed) to the screen. */
 function pxPerM(v: View): number {
@@ -575,12 +594,13 @@ function pxPerM(v: View): number {
   return Math.min(cam.width / (v.maxX - v.minX), cam.height / (v.maxY - v.minY));
 }
 /**
- * Whether the shot view is used: upright on a phone, and on any narrow screen where it shows the
- * castle at least 1.5 x as large as the aim view. A desktop's aim view shows the castle large enough.
+ * Whether the shot view is used: upright on a phone, and on any other screen where it shows the
+ * castle at least 1.25 x as large as the aim view (a desktop's aim view, the whole field fitted to
+ * its width, drew the castle as a strip under 80 % of sky after a throw).
  */
-const zoomsIn = (): boolean => upright() || (renderer.camera.width < NARROW && pxPerM(shotViewRect()) >= 1.5 * pxPerM(aimView()));
+const zoomsIn = (): boolean => upright() || pxPerM(shotViewRect()) >= 1.25 * pxPerM(aimView());
 /**
- * The view while the stone flies, upright: between the aim view (u = 0) and the shot view (u = 1),
+ * The view while the stone flies: between the aim view (u = 0) and the shot view (u = 1),
  * u the share of the way from the catapult to the castle's front the stone has got (its farthest
  * x), and shifted where needed so the stone stays at least 15 % of the view's width inside it.
  */
@@ -595,6 +615,7 @@ function followView(): View {
   // Never past the shot view's right edge: a long throw is followed to the rock, and the arrow at the
   // screen's edge points on at it (followed on, the view left the castle for the ground's bare end).
   c = Math.min(c, s.maxX - w / 2);
+  if (!upright()) return viewFor(c - w / 2, c + w / 2);
   return uprightView(c - w / 2, c + w / 2, aimGround() + u * (UPRIGHT_GROUND - aimGround()));
 }
 function frameCamera(): void {
@@ -606,7 +627,7 @@ function frameCamera(): void {
   if (shotView && lastThrow.verdict && (read || levelEnded)) shotView = false;
   // A level over: the wreck stays in view with its result (on a phone the shot view, not the catapult).
   const wreck = levelEnded && shots.length > 0 && zoomsIn();
-  const target = wreck ? shotViewRect() : shotView && zoomsIn() ? (upright() ? followView() : shotViewRect()) : aimView();
+  const target = wreck ? shotViewRect() : shotView && zoomsIn() ? followView() : aimView();
   const size = `${cam.width}x${cam.height}`;
   const k = size === framedFor ? 0.1 : 1;
   if (size !== framedFor) sizesFramed.add(size);
@@ -723,6 +744,8 @@ function fire(dx: number, dy: number): number {
   lastThrow.verdict = '';
   lastThrow.brief = '';
   lastThrow.touched = '';
+  lastThrow.touchStep = null;
+  lastThrow.firstBody = 0;
   lastThrow.pastBy = 0;
   lastThrow.farthest = LAUNCH.x;
   lastThrow.vx = vx;
@@ -800,10 +823,19 @@ function followThrow(world: PhysicsWorld, t: Tally): void {
     vy = lastThrow.vy;
   const ground = LAUNCH.x + (lastThrow.vx * (vy + Math.sqrt(vy * vy + 2 * g * LAUNCH.y))) / g;
   const by = (d: number): number => Math.max(1, Math.round(d));
-  const long = landX > lv.castleMaxX + 0.3 || lastThrow.farthest > rockRight() + 0.3,
+  // Long too when the stone first came down past the castle or on the rock behind it, whatever it
+  // touched after: a stone that flew over the castle and bounced off the rock onto a post read
+  // "Hit a wooden post, nothing fell: throw harder".
+  const first = lastThrow.touchStep,
+    firstPast =
+      first !== null &&
+      !lv.pieces.some((p) => p.body === lastThrow.firstBody) &&
+      (lastThrow.firstBody === lv.rock || first[2] > lv.castleMaxX + 0.3);
+  const long = landX > lv.castleMaxX + 0.3 || lastThrow.farthest > rockRight() + 0.3 || firstPast,
     short = !long && landX < lv.castleMinX - 0.3;
   let landed = Math.max(ground, lastThrow.farthest);
-  for (let i = 2; long && i < path.length; i += 2) {
+  if (firstPast && first) landed = Math.min(landed, first[2]);
+  for (let i = 2; long && !firstPast && i < path.length; i += 2) {
     const px = path[i]!,
       py = path[i + 1]!;
     if (px > lv.castleMaxX + 0.3 && py < path[i - 1]! && py < surfaceAt(lv, px) + PROJECTILE_RADIUS + 0.3) {
@@ -813,7 +845,7 @@ function followThrow(world: PhysicsWorld, t: Tally): void {
   }
   // A stone that touched a piece of the castle hit it, whatever its path did after: it was neither
   // short nor long (one that glanced off a post and rolled back read "Short by 4 m").
-  const hit = lastThrow.touched !== '' && !(lastThrow.farthest > rockRight() + 0.3);
+  const hit = lastThrow.touched !== '' && !long;
   const bank = lastThrow.touched === 'hill';
   const d = hit ? 0 : short ? by(lv.castleMinX - Math.min(ground, landX)) : long ? by(landed - lv.castleMaxX) : 0;
   lastThrow.pastBy = !hit && long ? d : 0;
@@ -825,8 +857,8 @@ function followThrow(world: PhysicsWorld, t: Tally): void {
       ? `Short by ${d} m: pull further back`
       : long
         ? `Long by ${d} m: pull less, or aim lower`
-        : 'No damage: throw harder, or hit lower';
-  lastThrow.brief = hit ? (bank ? 'hit the bank' : 'hit, none fell') : short ? `short ${d} m` : long ? `long ${d} m` : 'no damage';
+        : 'No damage: it fell through a gap, aim at a piece';
+  lastThrow.brief = hit ? (bank ? 'hit the bank' : 'hit, none fell') : short ? `short ${d} m` : long ? `long ${d} m` : 'fell in a gap';
   lastThrow.at = [Math.min(Math.max(x, lv.castleMinX - 4), lv.castleMaxX), Math.max(y, 0) + 2.2];
 }
 
@@ -998,8 +1030,6 @@ const showNext = (visible: boolean, text?: string): void => {
 };
 
 const overlay = new Graphics({ label: 'catapult' });
-/** The aim while a press pulls (see drawAim), in screen pixels over the scene and its close-up. */
-const aimLayer = new Graphics({ label: 'aim' });
 const banner = new Text({
   text: '',
   style: {
@@ -1058,6 +1088,8 @@ castleText.visible = false;
 const pause = createPauseOverlay();
 const popupLayer = new Container({ label: 'popups' });
 effects = new Effects(popupLayer);
+// Past the ground's ends (no surface) bits fall on out of sight.
+effects.surface = (x) => Math.max(-50, surfaceAt(lv, x));
 renderer.root.addChild(overlay, effects.graphics, popupLayer, bannerPanel, banner, verdictText, offscreenText, castleText, pause.container);
 
 /** Whether a stone sits in the cup: shots are left and the arm is back from its last throw. */
@@ -1177,65 +1209,25 @@ function showBreaks(world: PhysicsWorld): void {
 }
 
 /**
- * The arc preview runs the drag-free flight from the cup to its first hit: where the stone (radius
- * PROJECTILE_RADIUS) first touches the ground, a bank of earth, the rock or a castle piece where it
- * stands this frame, at most PREVIEW_TIME s of flight. A preview cut partway along the arc left a
- * player guessing where the stone would land.
+ * The arc preview: the stone's flight from the cup to where it first touches the ground, a bank of
+ * earth, the rock or a castle piece as it stands now (previewFlight, at most PREVIEW_TIME s), drawn as
+ * dots in the page over the canvas (aimDom) on every pointer move and every frame: drawn on the
+ * canvas at the frame's pace it lagged the finger (a page at 3 fps while a stranger aimed showed the
+ * arc of an earlier, weaker pull ending at the first tower; the stone flew to the far one).
  */
-const PREVIEW_TIME = 6,
-  PREVIEW_DT = 0.02;
+const PREVIEW_TIME = 6;
 /** Least distance between two dots of the arc preview on the screen, px. */
 const PREVIEW_GAP = 11;
 /**
  * What the aim shows (tests): power (0 to 1) and angle (degrees above level) as the page shows them
- * now, the preview's dots in the last frame and its farthest x, m.
+ * now, the preview's dots on the screen now (and in the phone's close-up), its farthest x, m, and
+ * its end, the point (m) where the stone first touches something.
  */
-const aimShown: { power: number; angle: number; dots: number; reach: number } = { power: 0, angle: 0, dots: 0, reach: 0 };
+const aimShown = { power: 0, angle: 0, dots: 0, closeDots: 0, reach: 0, end: [0, 0] as [number, number] };
 
-/**
- * While aiming, the first part of the arc (dots fading along it) to its first hit, and the aim in the
- * page (showAimDom) placed for the camera of this frame.
- */
-function drawAim(world: PhysicsWorld): void {
-  aimShown.dots = 0;
-  aimLayer.clear();
-  // The band, the ring and the power bar follow the camera too (it may ease while the player pulls).
+/** Once a frame: the aim in the page (showAimDom) placed for the camera of this frame. */
+function drawAim(): void {
   showAimDom();
-  if (!aim.active) return;
-  const cam = renderer.camera;
-  const [vx, vy] = launchVelocity(aim.dx, aim.dy);
-  // The arc to its first hit (see PREVIEW_TIME).
-  const g = -world.gravity[1]!;
-  const arc = previewArc(world, vx, vy, g);
-  let reach: number = LAUNCH.x;
-  // Dots at least PREVIEW_GAP px apart (a small scene, an upright phone's, crowded them into a
-  // rope), and the arc's last point (the hit) always drawn; smaller on a narrow screen.
-  const dotR = cam.width < NARROW ? 3.5 : 4.5;
-  let lastX = Number.NEGATIVE_INFINITY,
-    lastY = 0;
-  const n = arc.length / 2;
-  for (let i = 1; i < n; i++) {
-    const x = arc[2 * i]!,
-      y = arc[2 * i + 1]!;
-    const px = cam.toScreenX(x),
-      py = cam.toScreenY(y);
-    const end = i === n - 1;
-    reach = x;
-    if (!end && Math.hypot(px - lastX, py - lastY) < PREVIEW_GAP) continue;
-    lastX = px;
-    lastY = py;
-    const fade = 1 - i / n;
-    aimLayer
-      .circle(px, py, end ? dotR + 1.5 : dotR)
-      .fill({ color: 0xffffff, alpha: 0.45 + 0.5 * fade })
-      .stroke({
-        width: 1.5,
-        color: 0x000000,
-        alpha: 0.35 + 0.35 * fade,
-      });
-    aimShown.dots++;
-  }
-  aimShown.reach = reach;
 }
 
 const SVG_NS = 'http://www.w3.org/2000/svg';
@@ -1260,7 +1252,10 @@ const aimDom = (() => {
   const band = svgChild('line', { 'stroke-width': 3, 'stroke-linecap': 'round' });
   const press = svgChild('circle', { r: 4, fill: '#fff', 'fill-opacity': 0.8 });
   const end = svgChild('circle', { r: 9, stroke: '#000', 'stroke-opacity': 0.6, 'stroke-width': 2 });
-  svg.append(ring, half, shade, band, press, end);
+  // The arc preview's dots on the scene, and on an upright phone in the castle's close-up too.
+  const dots = svgChild('g', { 'data-hud': 'aim-arc' });
+  const closeDots = svgChild('g', { 'data-hud': 'aim-arc-close' });
+  svg.append(dots, closeDots, ring, half, shade, band, press, end);
   const box = document.createElement('div');
   box.dataset.hud = 'aim';
   box.setAttribute('aria-live', 'off');
@@ -1276,7 +1271,7 @@ const aimDom = (() => {
   bar.append(fill);
   box.append(label, bar);
   pageLayout().stage.append(svg, box);
-  return { svg, ring, half, shade, band, press, end, box, label, bar, fill };
+  return { svg, dots, closeDots, ring, half, shade, band, press, end, box, label, bar, fill };
 })();
 
 /** Sets an SVG element's attributes. */
@@ -1298,7 +1293,10 @@ function showAimDom(): void {
   const on = aim.active && !shell.paused;
   const display = on ? '' : 'none';
   if (d.svg.style.display !== display) d.svg.style.display = d.box.style.display = display;
-  if (!on) return;
+  if (!on) {
+    aimShown.dots = aimShown.closeDots = 0;
+    return;
+  }
   const cam = renderer.camera;
   const [vx, vy] = launchVelocity(aim.dx, aim.dy);
   const power = Math.min(1, Math.hypot(aim.dx, aim.dy) / PULL.max);
@@ -1313,6 +1311,7 @@ function showAimDom(): void {
   setAttrs(d.band, { x1: aim.x0, y1: aim.y0, x2: ex, y2: ey, stroke: color });
   setAttrs(d.press, { cx: aim.x0, cy: aim.y0 });
   setAttrs(d.end, { cx: ex, cy: ey, fill: color });
+  drawArc(vx, vy);
   // The power bar over the catapult, kept on the screen.
   const w = Math.max(90, cam.toScreenLength(2));
   const x = Math.min(Math.max(6, cam.toScreenX(-0.3) - w / 2), cam.width - w - 6),
@@ -1335,46 +1334,76 @@ function showAimDom(): void {
 }
 
 /**
- * The drag-free flight of a stone launched from the cup at (vx, vy), m/s, under gravity g, m/s^2:
- * x, y pairs (m) every PREVIEW_DT s from LAUNCH up to and including the first point where the stone
- * touches the terrain, the rock or a castle piece as it stands in `world` now (a box in its own
- * turned frame, a stone as a circle), at most PREVIEW_TIME s of flight.
+ * Sets `n` dots (SVG circles, made as needed) in `group`, hiding the rest: `at(i)` gives dot i's
+ * centre (px) and radius, its fill and outline opacity.
  */
-function previewArc(world: PhysicsWorld, vx: number, vy: number, g: number): number[] {
-  const P = world.components.Position,
-    A = world.components.Angle.value;
-  const r = PROJECTILE_RADIUS;
-  const out: number[] = [LAUNCH.x, LAUNCH.y];
-  const rockX = lv.castleMaxX + ROCK.gap + ROCK.hx;
-  const floor = Math.min(0, ...lv.terrain.map((t) => t.maxY)) - 5;
-  const steps = Math.round(PREVIEW_TIME / PREVIEW_DT);
-  for (let i = 1; i <= steps; i++) {
-    const t = i * PREVIEW_DT,
-      x = LAUNCH.x + vx * t,
-      y = LAUNCH.y + vy * t - 0.5 * g * t * t;
-    out.push(x, y);
-    if (y - r <= surfaceAt(lv, x) || y < floor) break;
-    if (lv.rock && Math.abs(x - rockX) <= ROCK.hx + r && y - r <= surfaceAt(lv, rockX) + 2 * ROCK.hy) break;
-    let hit = false;
-    for (const p of lv.pieces) {
-      if (!isAlive(world, p.body)) continue;
-      const s = slotOf(p.body);
-      const dx = x - P.x[s]!,
-        dy = y - P.y[s]!;
-      if (p.kind === 'stone') {
-        hit = Math.hypot(dx, dy) <= p.half[0] + r;
-      } else {
-        const c = Math.cos(A[s]!),
-          sn = Math.sin(A[s]!);
-        const lx = c * dx + sn * dy,
-          ly = -sn * dx + c * dy;
-        hit = Math.abs(lx) <= p.half[0] + r && Math.abs(ly) <= p.half[1] + r;
-      }
-      if (hit) break;
+function placeDots(group: SVGElement, n: number, at: (i: number) => [number, number, number, number]): void {
+  while (group.childElementCount < n) group.append(svgChild('circle', { fill: '#fff', stroke: '#000', 'stroke-width': 1.5 }));
+  for (let i = 0; i < group.childElementCount; i++) {
+    const c = group.children[i] as SVGElement;
+    if (i >= n) {
+      if (c.getAttribute('display') !== 'none') c.setAttribute('display', 'none');
+      continue;
     }
-    if (hit) break;
+    const [x, y, r, fade] = at(i);
+    setAttrs(c, {
+      display: 'inline',
+      cx: x.toFixed(1),
+      cy: y.toFixed(1),
+      r,
+      'fill-opacity': (0.45 + 0.5 * fade).toFixed(2),
+      'stroke-opacity': (0.35 + 0.35 * fade).toFixed(2),
+    });
   }
-  return out;
+}
+
+/**
+ * The arc preview for a throw at (vx, vy), m/s (see PREVIEW_TIME): dots fading along the flight to
+ * its first touch, at least PREVIEW_GAP px apart (a small scene, an upright phone's, crowded them
+ * into a rope), the last one (the touch) always drawn and larger; and, while the castle's close-up
+ * shows (an upright phone), the same flight's dots where it crosses the close-up, at its scale.
+ */
+function drawArc(vx: number, vy: number): void {
+  const world = shell.world;
+  const cam = renderer.camera;
+  const arc = previewFlight(world, lv, vx, vy, -world.gravity[1]!, PREVIEW_TIME);
+  const n = arc.length / 2;
+  aimShown.reach = arc[arc.length - 2]!;
+  aimShown.end = [arc[arc.length - 2]!, arc[arc.length - 1]!];
+  const dotR = cam.width < NARROW ? 3.5 : 4.5;
+  /** Dots (screen px x, y, radius, fade) of the flight mapped by `map`, inside `keep`. */
+  const dotsOf = (map: (x: number, y: number) => [number, number], keep: (x: number, y: number) => boolean): number[][] => {
+    const out: number[][] = [];
+    let lastX = Number.NEGATIVE_INFINITY,
+      lastY = 0;
+    for (let i = 1; i < n; i++) {
+      const [px, py] = map(arc[2 * i]!, arc[2 * i + 1]!);
+      const end = i === n - 1;
+      if (!keep(px, py) || (!end && Math.hypot(px - lastX, py - lastY) < PREVIEW_GAP)) continue;
+      lastX = px;
+      lastY = py;
+      out.push([px, py, end ? dotR + 1.5 : dotR, 1 - i / n]);
+    }
+    return out;
+  };
+  const main = dotsOf(
+    (x, y) => [cam.toScreenX(x), cam.toScreenY(y)],
+    () => true,
+  );
+  placeDots(aimDom.dots, main.length, (i) => main[i] as [number, number, number, number]);
+  aimShown.dots = main.length;
+  let close: number[][] = [];
+  if (closeShown) {
+    const [bx, by, bw, bh] = closeShown.box,
+      [sx, sy] = closeShown.src,
+      z = closeShown.zoom;
+    close = dotsOf(
+      (x, y) => [bx + (cam.toScreenX(x) - sx) * z, by + (cam.toScreenY(y) - sy) * z],
+      (x, y) => x >= bx && x <= bx + bw && y >= by && y <= by + bh,
+    );
+  }
+  placeDots(aimDom.closeDots, close.length, (i) => close[i] as [number, number, number, number]);
+  aimShown.closeDots = close.length;
 }
 
 /** The screen end of the pull's band (px): the finger, or a full pull's length from the press along the pull. */
@@ -1417,10 +1446,6 @@ const closeLabel = new Text({
 });
 closeSprite.visible = closeFrame.visible = closeLabel.visible = false;
 app.stage.addChild(closeSprite, closeFrame, closeLabel);
-// The aim's arc over the close-up (the band, ring, power bar and numbers are in the page over the
-// canvas, see aimDom): the close-up, which draws the scene under it, does not show it (nor change
-// with every move of the finger).
-app.stage.addChild(aimLayer);
 /** The smallest magnification of the close-up worth showing (its largest: CLOSE_MAX). */
 const CLOSE_MIN = 1.4;
 /** Pixels between the close-up's foot and the top of the castle on the screen. */
@@ -1428,7 +1453,7 @@ const CLOSE_GAP = 36;
 /** Pixels over the aim's power bar (3.2 m up) kept clear for its two lines of numbers. */
 const AIM_LABEL_ROOM = 64;
 /** The close-up's box on the screen (px: x, y, width, height) and its magnification; null while hidden. */
-let closeShown: { box: [number, number, number, number]; zoom: number } | null = null;
+let closeShown: { box: [number, number, number, number]; zoom: number; src: [number, number] } | null = null;
 /** How many times the close-up's texture has been drawn since the page loaded. */
 let closeDraws = 0;
 /** Whether the close-up sits in the earth under the ground (out of a pull's way), not in the sky. */
@@ -1574,7 +1599,7 @@ function drawCloseUp(): void {
         .roundRect(bx - 1, by - 1, bw + 2, bh + 2, 6)
         .stroke({ width: 2, color: 0xffffff, alpha: 0.9 });
       closeLabel.position.set(bx + 6, by + 4);
-      closeShown = { box: [bx, by, bw, bh], zoom };
+      closeShown = { box: [bx, by, bw, bh], zoom, src: [sx, sy] };
     }
   }
   if (closeShown === null) {
@@ -1754,7 +1779,7 @@ function draw(world: PhysicsWorld, alpha: number): void {
   // A good throw's points keep counting what falls after it was decided.
   if (lastThrow.good && lastThrow.verdict) lastThrow.verdict = `+${t.score - lastThrow.scoreBefore}`;
   drawThrow(world);
-  drawAim(world);
+  drawAim();
   effects!.update(dt, -world.gravity[1]!);
   effects!.draw(cam);
   drawPause();
@@ -1896,10 +1921,14 @@ shell.expose({
   aimLabel: (): string => (aimDom.box.style.display === 'none' ? '' : (aimDom.label.textContent ?? '')),
   /** The effects now: bits of debris in flight and score popups showing. */
   effects: (): { bits: number; popups: number } => ({ bits: effects!.bitCount, popups: effects!.popupCount }),
+  /** The least height (m) of a chip or bit of confetti over the ground under it (Infinity when none; see Effects.lowestOverGround). */
+  debrisOverGround: (): number => effects!.lowestOverGround(),
   /** The catapult's arm angle, rad (see CATAPULT in ./look: cocked at pi, upright at pi / 2). */
   armAngle: (): number => arm.angle,
   /** Screen pixels a metre of pull (a drag this many px long pulls 1 m; PULL.max m is a full pull). */
   aimPxPerM: aimScale,
+  /** Where the last throw's stone was before and after the step it first touched anything in, m [x0, y0, x1, y1]; null until it has. */
+  firstTouch: (): [number, number, number, number] | null => lastThrow.touchStep,
   /** The last throw's launch velocity [vx, vy], m/s ([0, 0] before a throw). */
   lastLaunch: (): [number, number] => (lastThrow.body ? [lastThrow.vx, lastThrow.vy] : [0, 0]),
   /** Whether the camera is at rest (tests aim at the cup once it is). */
@@ -1942,10 +1971,13 @@ shell.expose({
     return { verdict: box(verdictText), offscreen: box(offscreenText) };
   },
   /**
-   * What the aim showed in the last frame: power (0 to 1), angle (degrees above level), dots of the
-   * arc preview (0 when not aiming) and the preview's farthest x, m.
+   * What the aim shows now: power (0 to 1), angle (degrees above level), dots of the arc preview on
+   * the scene and in the phone's close-up (0 when not aiming), the preview's farthest x, m, and its
+   * end (m), where the stone will first touch something.
    */
-  aimShown: (): { power: number; angle: number; dots: number; reach: number } => ({ ...aimShown }),
+  aimShown: (): { power: number; angle: number; dots: number; closeDots: number; reach: number; end: [number, number] } => ({
+    ...aimShown,
+  }),
   /** Screen pixels of drag for a full pull. */
   fullPullPx,
   /** The level score shown in the last frame, and the running total. */

@@ -622,6 +622,98 @@ export function predictArc(x0: number, y0: number, vx: number, vy: number, g: nu
   return out;
 }
 
+/**
+ * Whether a stone of radius `r` (m) centred at (x, y), m, touches what stands in `world` now: the
+ * ground (a hill's top, a pit's floor: `surfaceAt`), the rock past the castle, or a castle piece (a
+ * box in its own turned frame, a round stone as a circle). Below the deepest surface less 5 m counts
+ * as touching (the stone has left the field).
+ */
+function stoneTouches(world: PhysicsWorld, lv: Level, x: number, y: number, r: number): boolean {
+  if (y < Math.min(0, ...lv.terrain.map((t) => t.maxY)) - 5) return true;
+  // Each slab of the ground, a hill, a pit's floor: a box (a stone meets a hill's or a pit's side
+  // face before it is over the box).
+  for (const t of lv.terrain) {
+    const ox = Math.max(0, t.minX - x, x - t.maxX),
+      oy = Math.max(0, t.minY - y, y - t.maxY);
+    if (ox * ox + oy * oy <= r * r) return true;
+  }
+  const rockX = lv.castleMaxX + ROCK.gap + ROCK.hx;
+  if (lv.rock && Math.abs(x - rockX) <= ROCK.hx + r && y - r <= surfaceAt(lv, rockX) + 2 * ROCK.hy) return true;
+  const P = world.components.Position,
+    A = world.components.Angle.value;
+  for (const p of lv.pieces) {
+    if (!isAlive(world, p.body)) continue;
+    const s = slotOf(p.body);
+    const dx = x - P.x[s]!,
+      dy = y - P.y[s]!;
+    if (p.kind === 'stone') {
+      if (Math.hypot(dx, dy) <= p.half[0] + r) return true;
+      continue;
+    }
+    const c = Math.cos(A[s]!),
+      sn = Math.sin(A[s]!);
+    const lx = c * dx + sn * dy,
+      ly = -sn * dx + c * dy;
+    // The distance from the box (0 inside it) against the radius: a stone passing a corner diagonally
+    // does not touch it (a square test widened by r on both axes stopped the preview short there).
+    const ox = Math.max(0, Math.abs(lx) - p.half[0]),
+      oy = Math.max(0, Math.abs(ly) - p.half[1]);
+    if (ox * ox + oy * oy <= r * r) return true;
+  }
+  return false;
+}
+
+/** Step of the preview's flight (`previewFlight`), s: at most 0.25 m of flight at the fastest throw, so it does not step over a piece's corner. */
+export const PREVIEW_DT = 0.01;
+
+/**
+ * The drag-free flight of a thrown stone (radius PROJECTILE_RADIUS) from LAUNCH at (vx, vy), m/s,
+ * under gravity `g` (m/s^2 down, > 0), against what stands in `world` now (the level `lv` built in
+ * it): x, y pairs (m) every PREVIEW_DT s, the last one the point where the stone first touches the
+ * ground, the rock or a castle piece (found to within a millimetre between two steps), or where it
+ * is after `maxTime` s. This is the engine's flight: a thrown stone feels only gravity until it
+ * touches something (no air drag), so the game's aim preview and the stone agree (the browser and
+ * headless tests compare the two). `r` is the stone's radius, m (PROJECTILE_RADIUS unless given;
+ * the tests widen and narrow it to tell a grazing throw, which may or may not touch, from a clear hit).
+ * @throws Error if g, maxTime or r is not a positive number.
+ */
+export function previewFlight(
+  world: PhysicsWorld,
+  lv: Level,
+  vx: number,
+  vy: number,
+  g: number,
+  maxTime = 6,
+  r = PROJECTILE_RADIUS,
+): number[] {
+  if (!(g > 0)) throw new Error(`previewFlight: g must be > 0 m/s^2, got ${g}`);
+  if (!(maxTime > 0)) throw new Error(`previewFlight: maxTime must be > 0 s, got ${maxTime}`);
+  if (!(r > 0)) throw new Error(`previewFlight: r must be > 0 m, got ${r}`);
+  const at = (t: number): [number, number] => [LAUNCH.x + vx * t, LAUNCH.y + vy * t - 0.5 * g * t * t];
+  const out: number[] = [LAUNCH.x, LAUNCH.y];
+  const steps = Math.ceil(maxTime / PREVIEW_DT);
+  for (let i = 1; i <= steps; i++) {
+    const [x, y] = at(i * PREVIEW_DT);
+    if (!stoneTouches(world, lv, x, y, r)) {
+      out.push(x, y);
+      continue;
+    }
+    // Between the last free point and this one: halve the interval down to under a millimetre.
+    let lo = (i - 1) * PREVIEW_DT,
+      hi = i * PREVIEW_DT;
+    const speed = Math.hypot(vx, vy) + g * hi;
+    while ((hi - lo) * speed > 1e-3) {
+      const mid = (lo + hi) / 2;
+      const [mx, my] = at(mid);
+      if (stoneTouches(world, lv, mx, my, r)) hi = mid;
+      else lo = mid;
+    }
+    out.push(...at(hi));
+    return out;
+  }
+  return out;
+}
+
 /** The round bodies of each world that the grass slows: handle, radius (m) pairs (`buildLevel` and `launch` add them). */
 const thrown = new WeakMap<PhysicsWorld, number[]>();
 

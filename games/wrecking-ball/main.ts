@@ -314,6 +314,26 @@ const game = await startThreeGame({
   onFrame: () => frame(),
 });
 const { shell, renderer, app } = game;
+/**
+ * A drawer (the menu, or the settings) opened over the scene pauses the game, and closing it resumes
+ * the game if the drawer paused it: a swing and a tower falling under the menu were play the player
+ * did not see. (A pause the player made stays.)
+ */
+function pauseUnderDrawers(): void {
+  const root = pageLayout().root;
+  let pausedByDrawer = false;
+  new MutationObserver(() => {
+    const open = root.dataset.open !== undefined;
+    if (open && !shell.paused) {
+      shell.paused = true;
+      pausedByDrawer = true;
+    } else if (!open && pausedByDrawer) {
+      pausedByDrawer = false;
+      if (shell.paused) shell.paused = false;
+    }
+  }).observe(root, { attributes: true, attributeFilter: ['data-open'] });
+}
+pauseUnderDrawers();
 /** Dust, chips and popups of the hits. */
 const effects = new SiteEffects(app.scene, PORTRAIT ? 1.6 : 1);
 /** Pieces whose fall has been counted for a popup, by body handle. */
@@ -783,6 +803,46 @@ const mastLattice = new Mesh(
 mastLattice.position.set(0, JIB_HEIGHT / 2, 0);
 mastLattice.castShadow = true;
 app.scene.add(mastLattice);
+/**
+ * Whether the mast stands between the camera and a body at (x, y, z), m, of radius r, m: the sight
+ * line from the camera to it passes within the mast's half width (0.41 m) plus r of the mast's axis
+ * (x = z = 0), between the two and below the jib.
+ */
+function mastBetween(x: number, y: number, z: number, r: number): boolean {
+  const c = app.camera.position;
+  const dx = x - c.x,
+    dz = z - c.z;
+  const dd = dx * dx + dz * dz;
+  if (dd < 1e-9) return false;
+  const u = -(c.x * dx + c.z * dz) / dd;
+  if (!(u > 0 && u < 1)) return false;
+  const h = c.y + u * (y - c.y);
+  return h > 0 && h < JIB_HEIGHT && Math.hypot(c.x + u * dx, c.z + u * dz) < 0.41 + r;
+}
+/** Whether the mast is drawn faint this frame (see ghostMast). */
+let mastGhosted = false;
+/**
+ * Draws the mast faint (a quarter opaque) while it stands between the camera and the ball or the
+ * piece a swing is aimed at: the ball swinging behind it hid the hit from a stranger. Applied to
+ * whichever material the mast wears (its lite stand-in too).
+ */
+function ghostMast(): void {
+  const P = shell.world.components.Position;
+  const b = handles.ball;
+  // Once faint, it stays so until the ball is 0.3 m further clear (no flicker as it swings at the edge).
+  const margin = mastGhosted ? 0.3 : 0;
+  let hides = isAlive(shell.world, b) && mastBetween(P.x[b]!, P.y[b]!, P.z[b]!, BALL_RADIUS + margin);
+  if (!hides && aimed !== 0 && isAlive(shell.world, aimed)) hides = mastBetween(P.x[aimed]!, P.y[aimed]!, P.z[aimed]!, 0.5 + margin);
+  mastGhosted = hides;
+  const m = mastLattice.material as Material;
+  if (m.transparent === hides && (m.opacity === 0.25) === hides) return;
+  m.transparent = hides;
+  m.opacity = hides ? 0.25 : 1;
+  m.depthWrite = !hides;
+  // The lattice's bars pass the alpha test at a quarter opacity too.
+  m.alphaTest = hides ? 0.1 : 0.5;
+  m.needsUpdate = true;
+}
 // A concrete footing under the mast.
 const footing = new Mesh(new BoxGeometry(2.4, 0.3, 2.4), new MeshStandardMaterial({ color: 0x9a9a94, roughness: 0.95 }));
 footing.position.set(0, 0.15, 0);
@@ -2026,6 +2086,7 @@ let lastFrameTime = 0;
 function frame(): void {
   updateControls();
   pauseOverlay.update(shell.paused, touch);
+  ghostMast();
   if (swapDue) {
     swapDue = false;
     swapMaterials();
@@ -2248,6 +2309,8 @@ shell.expose({
   nextLevel,
   /** The drawing quality now ('full' or 'lite'; see Quality). */
   quality: (): Quality => params.quality,
+  /** Whether the mast was drawn faint in the last frame (it stood between the camera and the ball or the piece aimed at). */
+  mastGhosted: (): boolean => mastGhosted,
   /** Draws at quality 'full' or 'lite' from now on (as the settings panel's choice: the page no longer changes it). */
   setQuality: (q: Quality): void => {
     qualityChosen = true;

@@ -927,6 +927,15 @@ describe('phone controls', () => {
     await next.waitFor({ state: 'visible', timeout: 5000 });
     await next.tap();
     await g.waitFor(() => (window.game as unknown as { handles(): { level: number } }).handles().level === 2, null);
+    // The menu drawer over the scene pauses the game (a swing went on under it), and closing it plays on.
+    const menu = g.page.getByRole('button', { name: 'information and controls' });
+    await g.page.evaluate(() => {
+      (window.game as unknown as { paused: boolean }).paused = false;
+    });
+    await menu.tap();
+    await g.waitFor(() => (window.game as unknown as { paused: boolean }).paused, null);
+    await menu.tap();
+    await g.waitFor(() => !(window.game as unknown as { paused: boolean }).paused, null);
     expect(g.errors).toEqual([]);
     await g.close();
   });

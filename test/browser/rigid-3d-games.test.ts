@@ -508,6 +508,31 @@ describe('3D rigid-body games in headless Chromium', () => {
     expect(g.errors).toEqual([]);
   });
 
+  it('wrecking-ball: the mast is drawn faint while the ball is behind it from the camera, solid otherwise', async () => {
+    const g = await open('wrecking-ball', { shadows: 0 });
+    type W = {
+      paused: boolean;
+      mastGhosted(): boolean;
+      handles(): { crane: { angle: number; radius: number } };
+      app: { camera: { position: { x: number; z: number } } };
+    };
+    // The jib turned straight away from the camera (jib along (cos a, -sin a) in x, z): the ball hangs
+    // behind the mast (a stranger lost the hit there). Then turned square to the sight line: clear.
+    const turn = (side: number) =>
+      g.page.evaluate((side) => {
+        const w = window.game as unknown as W;
+        const c = w.app.camera.position;
+        w.handles().crane.angle = Math.atan2(c.z, -c.x) + side;
+        w.handles().crane.radius = Math.max(w.handles().crane.radius, 6);
+      }, side);
+    await turn(0);
+    await g.waitFor(() => (window.game as unknown as W).mastGhosted(), null, 30_000);
+    await turn(Math.PI / 2);
+    await g.waitFor(() => !(window.game as unknown as W).mastGhosted(), null, 30_000);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
   it('lab-rigid-3d: keys switch scenes, a mouse drag lifts a box, dominoes fall in turn', async () => {
     const g = await open('lab-rigid-3d', { scene: 'dominoes', dominoes: 30 });
     type Lab = Game3D & { handles(): { scene: string; parts: number[]; main: number }; toppled(): number };
