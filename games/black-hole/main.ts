@@ -13,7 +13,8 @@
  * start (./replay.ts: every input is recorded at its step; the replay ends where the run was, bit for bit).
  * Touch: the four arrow buttons under the scene (hold to thrust, slide to steer; two fingers on two
  * arrows thrust diagonally); tap the message to restart.
- * Levels (./levels.ts): level 1 has a hole across the straight path and one across each diagonal
+ * Levels (./levels.ts): level 1 (practice: a fall costs no life; a coach beside the ship reads the
+ * predicted path and says what to hold) has one hole across the straight path
  * (no arrow or two held from the start gets through on any level), levels 2 and 3 a wall of holes
  * with one gap off to the side (level 2's high up, level 3's lower with a hole above its gap), later levels more and
  * bigger holes, drifting holes and a fuel limit; clearing a level shows a summary and a button over
@@ -973,7 +974,9 @@ function levelNews(spec: LevelRun['spec']): string {
         ? 'through the gap, round the hole'
         : 'find the gap in the wall'
       : spec.fork
-        ? 'steer between the holes'
+        ? n === 1
+          ? 'steer round the hole'
+          : 'steer between the holes'
         : `${n} ${n === 1 ? 'hole' : 'holes'}`;
   const extra = [spec.drift > 0 ? 'drifting' : '', Number.isFinite(spec.fuel) ? `${spec.fuel} s of fuel` : ''].filter(Boolean);
   return `${holes}${extra.length ? `, ${extra.join(', ')}` : ''}\n${POINTS_PER_HOLE * n} points at the line`;
@@ -1152,7 +1155,11 @@ function startDeath(): void {
   death.start = swallow.active ? swallow.start : performance.now();
   death.count++;
   death.flashPeak = 0;
-  deathText.text = bh.over ? 'Swallowed!\nGame over' : `Swallowed!\n${bh.lives} ${bh.lives === 1 ? 'life' : 'lives'} left`;
+  deathText.text = bh.over
+    ? 'Swallowed!\nGame over'
+    : run?.spec.practice
+      ? 'Swallowed!\nPractice: no life lost'
+      : `Swallowed!\n${bh.lives} ${bh.lives === 1 ? 'life' : 'lives'} left`;
 }
 
 /**
@@ -1296,6 +1303,84 @@ function drawPathEnd(lx: number, ly: number, color: number): void {
   pathLabel.position.set(at, ly2);
 }
 
+/**
+ * The coach of a practice level (./levels.ts `LevelSpec.practice`, level 1): a line or two beside the
+ * ship that say how the predicted path drawn this frame ends and what to hold (`coachLine`), so a
+ * newcomer learns to steer by it. Read from the path of the moment (the ship's state and the arrows
+ * held now, the game's own prediction), never a fixed route, so it holds whenever the player acts.
+ * Every arrow it names is one to hold (the naive player of test/browser/black-hole.test.ts holds them).
+ */
+const coachText = new Text({
+  text: '',
+  style: {
+    fill: 0xffe08a,
+    fontSize: 16,
+    fontFamily: 'sans-serif',
+    fontWeight: 'bold',
+    stroke: { color: 0x000000, width: 4 },
+    lineHeight: 20,
+    wordWrap: true,
+    wordWrapWidth: 240,
+  },
+});
+coachText.visible = false;
+app.stage.addChild(coachText);
+
+/**
+ * The coach's words for the path drawn this frame (the ship at x, m): how it ends, and the arrows to
+ * hold. Red on a hole: the side arrow away from that hole, with ↑ (steer round it); red off a side:
+ * the side arrow back, with ↑; otherwise ↑ (climb). From the pad: ↑ (the path shows where it goes).
+ */
+function coachLine(x: number): string {
+  if (padPath) return 'Hold ↑ to fly.\nThe dots show your way.';
+  const lx = path[2 * pathPoints - 2]!,
+    ly = path[2 * pathPoints - 1]!;
+  if (pathKind === 'falls') {
+    // The hole that takes the path: the one whose horizon its end is nearest.
+    const P = bh.world.components.Position;
+    let best = Infinity,
+      hx = x;
+    for (let i = 0; i < bh.holes.length; i++) {
+      const h = slotOf(bh.holes[i]!);
+      const d = Math.hypot(P.x[h]! - lx, P.y[h]! - ly) - bh.holeRadius[i]!;
+      if (d < best) [best, hx] = [d, P.x[h]!];
+    }
+    return `Red: you'd fall in!\nHold ${x < hx ? '←' : '→'} and ↑ to steer round.`;
+  }
+  if (pathKind === 'lost')
+    return lx < 0 || lx > bh.field.width
+      ? `Red: you'd leave the field!\nHold ${lx < 0 ? '→' : '←'} and ↑ to come back.`
+      : "Red: you'd leave the field!\nHold ↑.";
+  return pathReachesLine ? "Blue: you'll reach the line!\nHold ↑." : 'Clear for now.\nHold ↑ to climb.';
+}
+
+/**
+ * Draws the coach (`coachLine`) beside the ship at screen (sx, sy), px, k px tall: on the side away
+ * from where its path ends (else the roomier side), wrapped to the room there. Only on a practice
+ * level in play, with the path shown and no fall's words over the field.
+ */
+function drawCoach(x: number, sx: number, sy: number, k: number): void {
+  const show = run?.spec.practice === true && !run.waiting && !bh.over && !shell.paused && pathPoints > 0 && !deathText.visible;
+  coachText.visible = show;
+  if (!show) return;
+  const text = coachLine(x);
+  if (coachText.text !== text) coachText.text = text;
+  const cam = renderer.camera;
+  const x0 = cam.toScreenX(0) + 6,
+    x1 = cam.toScreenX(playField.width) - 6;
+  const endX = cam.toScreenX(path[2 * pathPoints - 2]!);
+  const gap = 0.6 * k + 10;
+  const roomLeft = sx - gap - x0,
+    roomRight = x1 - sx - gap;
+  const right = Math.abs(endX - sx) > 20 ? endX < sx : roomRight >= roomLeft;
+  const width = Math.max(120, Math.min(260, right ? roomRight : roomLeft));
+  if (coachText.style.wordWrapWidth !== width) coachText.style.wordWrapWidth = width;
+  coachText.anchor.set(right ? 0 : 1, 0.5);
+  const top = cam.toScreenY(playField.height) + 4 + coachText.height / 2,
+    bottom = cam.toScreenY(0) - 4 - coachText.height / 2;
+  coachText.position.set(right ? sx + gap : sx - gap, Math.max(top, Math.min(bottom, sy - 0.2 * k)));
+}
+
 /** Over the field while paused: the scene dimmed and "Paused", so a pause is not taken for a hang. */
 const pause = createPauseOverlay({ label: 'paused' });
 app.stage.addChild(pause.container);
@@ -1375,6 +1460,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
     pausedGame = bh;
   }
   wasPaused = shell.paused;
+  coachText.visible = false;
   // The overlay stays the stage's last child (text added later would be drawn over it).
   if (pause.container.parent === app.stage && app.stage.children[app.stage.children.length - 1] !== pause.container)
     app.stage.addChild(pause.container);
@@ -1482,6 +1568,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   placeTouchHint();
   placeActionButton();
   drawScorePop();
+  drawCoach(x, sx, sy, k);
   // The engine's thrust now (it spools up and down): the flame points against it, as long as it is
   // strong, and the ship leans into it (up to LEAN rad at full sideways thrust).
   const [tx, ty] = bh.thrustVec;
@@ -1556,6 +1643,8 @@ shell.expose({
   shipLean: (): number => shipLean,
   /** The rising "+N" of the last crossing while it shows, else ''. */
   scorePop: (): string => (scoreText.visible ? scoreText.text : ''),
+  /** The practice level's coach beside the ship in the last frame (what to hold, read from the path), else ''. */
+  coach: (): string => (coachText.visible ? coachText.text : ''),
   /** Why the path drawn in the last frame stops short, by its end ('falls in' or 'lost'), else ''. */
   pathLabel: (): string => (pathLabel.visible ? pathLabel.text : ''),
   /**
