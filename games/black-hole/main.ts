@@ -57,7 +57,6 @@ import {
   heldThrust,
   MAX_HOLES,
   type PathEnd,
-  PHONE_SIDE_RAMP,
   type Predictor,
   pathEnd,
   predictPath,
@@ -213,8 +212,9 @@ function createWorld(): PhysicsWorld {
     gScale: params.gScale,
     c: params.c,
     thrust: params.thrust,
-    // A narrow field (a phone held upright) gets a gentler sideways engine: a brief tap of ← or → nudges.
-    sideRamp: playField.width < FIELD.width ? PHONE_SIDE_RAMP : THRUST_RAMP.up,
+    // The same engine on every screen (a phone's sideways thrust once built more slowly, and a held
+    // arrow gained less speed a second there than on a desktop).
+    sideRamp: THRUST_RAMP.up,
     field: playField,
   });
   run = levels ? startLevel(bh, continueLevel ?? params.level) : null;
@@ -252,10 +252,10 @@ const game = await startPixiGame({
   },
   controls: [
     // On a phone the card says it in one line (it fits above the finish line), teaches taps (on the
-    // narrow upright field a held diagonal soon leaves it) and names the seam: a finger on the seam
-    // between a side arrow and ↑ or ↓ holds both (`padDirsAt`).
+    // narrow upright field a held diagonal soon leaves it) and, in a player's words, the seam: a
+    // thumb between a side arrow and ↑ or ↓ holds both (`padDirsAt`).
     isTouchDevice()
-      ? { keys: '← ↑ → ↓', action: 'nudge; seam of two: diagonal', touch: 'tap ← ↑ → ↓' }
+      ? { keys: '← ↑ → ↓', action: 'nudge; thumb between two: both', touch: 'tap ← ↑ → ↓' }
       : { keys: '← ↑ → ↓', action: 'thrust: a tap nudges, a hold builds up (two at once: diagonal)', touch: 'hold, slide ← ↑ → ↓' },
     { keys: 'Enter', action: 'next level / continue from this level', touch: 'tap the Level ▶ or Continue ↺ button' },
     {
@@ -508,6 +508,9 @@ style.textContent = `
 .bh-status.over .bh-message { color: #ff8c8c; cursor: pointer; }
 .bh-status.cleared .bh-message { color: #7ee787; cursor: pointer; font-weight: 600; }
 .bh-pad button { font-size: 22px; min-width: 56px; }
+/* A pressed arrow lights within its rounded corners: no square tap highlight or focus ring past them. */
+.bh-pad button, .bh-extras button { -webkit-tap-highlight-color: transparent; }
+.bh-pad button:focus:not(:focus-visible) { outline: none; }
 /* The next-level / play-again button: over the field (placeActionButton moves it to a band no hole reaches),
    not at the stage's foot, where it covered the start pad and the ship waiting on it. */
 body .bp-touchbar.bp-action { top: 40%; bottom: auto; }

@@ -103,13 +103,6 @@ export const SHIP_RADIUS = 0.3;
 export const THRUST_RAMP = Object.freeze({ trim: 0.4, gentle: 0.2, up: 0.4, down: 0.1 });
 
 /**
- * The `sideRamp` (s) of a phone held upright, whose field is 20 m wide: the sideways thrust builds
- * more slowly there (at 10 m/s^3, below the engine's gentle rate: a 0.3 s press of → gains 0.53 m/s,
- * not 0.72), so a short sideways press does not carry the ship off the narrow field's edge.
- */
-export const PHONE_SIDE_RAMP = 0.6;
-
-/**
  * Thrust directions: none, one of the four arrows, or two arrows at right angles held together
  * (a diagonal, e.g. 'up-right').
  */

@@ -430,7 +430,7 @@ describe.each([
         if (!card) {
           card = document.createElement('div');
           card.className = 'bp-touch-hint';
-          card.innerHTML = '<div><b>hold ← ↑ → ↓</b><span>thrust; seam of two: diagonal</span></div>';
+          card.innerHTML = '<div><b>tap ← ↑ → ↓</b><span>nudge; thumb between two: both</span></div>';
           document.querySelector('.bp-stage')!.append(card);
         }
         const hint = card.getBoundingClientRect();
@@ -618,9 +618,9 @@ describe.each([
     const p = await h.openGame('black-hole', { viewport, touch, query: { level: 1 } });
     type Pause = { pauseOverlay(): { visible: boolean; text: string }; paused: boolean };
     if (touch) {
-      // The card of gestures (and the legend in the drawer) says a finger on the seam of two arrows
-      // thrusts diagonally.
-      expect(await p.page.locator('.bp-legend').textContent()).toContain('seam of two: diagonal');
+      // The card of gestures (and the legend in the drawer) says, in a player's words, that a thumb
+      // on the seam of two arrows holds both ("seam of two: diagonal" read as cryptic).
+      expect(await p.page.locator('.bp-legend').textContent()).toContain('thumb between two: both');
       // The finish line's screen rect (the dashed line across the field, 2 px either side of it) and
       // the card's box: apart. The kit's card goes after 9 s or at a touch; a stand-in of its class
       // with a longer text (two lines at this width, which do not fit above the line) is checked too.

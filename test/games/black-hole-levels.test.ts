@@ -32,15 +32,11 @@ import {
   gravitationalConstant,
   LINE_Y,
   MAX_FIELD_HOLES,
-  PHONE_SIDE_RAMP,
   predictPath,
   START,
   setThrust,
   type Thrust,
 } from '../../games/black-hole/rules';
-
-/** The engine the page gives a field: a phone's narrow one (20 m wide) builds its sideways thrust more gently. */
-const engineFor = (field: { readonly width: number; readonly height: number }) => (field.width === 20 ? { sideRamp: PHONE_SIDE_RAMP } : {});
 
 const shipY = (g: BlackHoleGame) => g.world.components.Position.y[slotOf(g.ship)]!;
 
@@ -161,7 +157,7 @@ describe('levels', () => {
     // (No held thrust clearing it is checked below, with the other levels.)
     for (const field of [FIELD, { width: 20, height: 30 }]) {
       for (let seed = 1; seed <= 3; seed++) {
-        const g = createBlackHoleGame({ seed, field, ...engineFor(field) });
+        const g = createBlackHoleGame({ seed, field });
         const run = startLevel(g, 1);
         expect(g.holes.length).toBe(1);
         const P = g.world.components.Position;
@@ -195,7 +191,7 @@ describe('levels', () => {
     for (const field of [FIELD, { width: 32, height: 30 }, { width: 20, height: 30 }])
       for (let seed = 1; seed <= 4; seed++) {
         const where = `${field.width}x${field.height} seed ${seed}`;
-        const g = createBlackHoleGame({ seed, field, ...engineFor(field) });
+        const g = createBlackHoleGame({ seed, field });
         const run = startLevel(g, 1);
         expect(pullAtStart(g), where).toBeLessThan(0.5);
         let e = 'none',
@@ -218,10 +214,10 @@ describe('levels', () => {
     for (const field of [FIELD, { width: 32, height: 30 }, { width: 20, height: 30 }])
       for (const level of [1, 2, 4, 6, 8]) {
         // The layout check agrees (it predicts; the loop below plays).
-        const g0 = createBlackHoleGame({ seed: 1, field, ...engineFor(field) });
+        const g0 = createBlackHoleGame({ seed: 1, field });
         expect(heldThrustClears(g0, startLevel(g0, level)), `level ${level}`).toBe(null);
         for (const t of thrusts) {
-          const g = createBlackHoleGame({ seed: 1, field, ...engineFor(field) });
+          const g = createBlackHoleGame({ seed: 1, field });
           const run = startLevel(g, level);
           setThrust(g, t);
           let e = 'none';
@@ -249,7 +245,7 @@ describe('levels', () => {
     for (const field of [FIELD, { width: 32, height: 27 }, { width: 32, height: 30 }, { width: 20, height: 30 }])
       for (const level of [2, 3])
         for (let seed = 1; seed <= 8; seed++) {
-          const g = createBlackHoleGame({ seed, field, ...engineFor(field) });
+          const g = createBlackHoleGame({ seed, field });
           const t = heldThrustClears(g, startLevel(g, level));
           if (t !== null) found.push(`${field.width}x${field.height} level ${level} seed ${seed}: ${t}`);
         }
@@ -265,7 +261,7 @@ describe('levels', () => {
     for (const field of [FIELD, { width: 32, height: 30 }, { width: 20, height: 30 }])
       for (let seed = 1; seed <= 3; seed++) {
         const where = `${field.width}x${field.height} seed ${seed}`;
-        const g2 = createBlackHoleGame({ seed, field, ...engineFor(field) });
+        const g2 = createBlackHoleGame({ seed, field });
         startLevel(g2, 2);
         // Drawn at 0.2 to 0.25 m, each stretch's holes then scaled a little to fill it exactly.
         const r = Math.max(...g2.holeRadius);
@@ -284,7 +280,7 @@ describe('levels', () => {
     // holes' masses and places (G M / d^2 each, towards the hole), not taken from the game's step.
     for (const field of [FIELD, { width: 32, height: 30 }, { width: 20, height: 30 }])
       for (let seed = 1; seed <= 4; seed++) {
-        const g = createBlackHoleGame({ seed, field, ...engineFor(field) });
+        const g = createBlackHoleGame({ seed, field });
         startLevel(g, 2);
         expect(pullAtStart(g), `${field.width}x${field.height} seed ${seed}`).toBeLessThan(g.params.thrust / 3);
         // And it is a wall still: eight holes or more in a row (ten on the phone's field).
@@ -299,7 +295,7 @@ describe('levels', () => {
       for (const tap of ['up', 'left', 'right', 'down'] as const)
         for (let seed = 1; seed <= 4; seed++) {
           const where = `${field.width}x${field.height} ${tap} seed ${seed}`;
-          const g = createBlackHoleGame({ seed, field, ...engineFor(field) });
+          const g = createBlackHoleGame({ seed, field });
           const run = startLevel(g, 2);
           const least = field.width < FIELD.width ? 7 : 4;
           let e = 'none',
@@ -349,7 +345,7 @@ describe('levels', () => {
     ] as const)
       for (const level of levels)
         for (const t of ['up', 'up-left', 'up-right', 'left', 'right', 'down', 'down-left', 'down-right'] as const) {
-          const g = createBlackHoleGame({ seed: 2, field, lives: 9, ...engineFor(field) });
+          const g = createBlackHoleGame({ seed: 2, field, lives: 9 });
           flyBoth(g, startLevel(g, level), t, `${field.width}x${field.height} level ${level} ${t}`);
         }
     // Level 1 with its holes moved off to the side, 12 m up: holding up clears it.
@@ -401,7 +397,7 @@ describe('levels', () => {
     // within 2 m of it, on alternate sides, each 2.5 m or more above the one below.
     for (const field of [FIELD, { width: 20, height: 30 }])
       for (let seed = 1; seed <= 4; seed++) {
-        const g = createBlackHoleGame({ seed, field, ...engineFor(field) });
+        const g = createBlackHoleGame({ seed, field });
         startLevel(g, 3);
         const P = g.world.components.Position;
         const hs = g.holes
@@ -430,7 +426,7 @@ describe('levels', () => {
     for (const field of [FIELD, { width: 20, height: 30 }]) {
       for (const level of [2]) {
         for (const seed of field === FIELD ? [1, 2] : [3]) {
-          const g = createBlackHoleGame({ seed, field, ...engineFor(field) });
+          const g = createBlackHoleGame({ seed, field });
           const spec = startLevel(g, level).spec;
           const gap = wallGap(g);
           expect(gap.width, `level ${level} seed ${seed}`).toBeCloseTo(Math.min(spec.gate, WALL_GATE_SHARE * field.width), 9);
@@ -444,7 +440,7 @@ describe('levels', () => {
           for (const side of ['left', 'right'] as const) {
             for (const nudge of [0, 0.4, 0.8, 1.2]) {
               if (nudge === 0 && side === 'right') continue;
-              const g2 = createBlackHoleGame({ seed, field, ...engineFor(field) });
+              const g2 = createBlackHoleGame({ seed, field });
               const run2 = startLevel(g2, level);
               const S = g2.world.components.Position;
               let crossedAt = Number.NaN,
@@ -478,7 +474,7 @@ describe('levels', () => {
     for (const field of fields) {
       for (let level = 1; level <= (field === FIELD ? 5 : 3); level++) {
         for (const seed of field === FIELD ? [1, 2] : [level + 2]) {
-          const g = createBlackHoleGame({ seed, field, ...engineFor(field) });
+          const g = createBlackHoleGame({ seed, field });
           const r = pilot(g, startLevel(g, level), 30);
           expect(r.event, `${field.width} x ${field.height}: level ${level} seed ${seed}`).toBe('cleared');
           expect(g.falls, `${field.width} x ${field.height}: level ${level} seed ${seed}`).toBe(0);
