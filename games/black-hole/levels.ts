@@ -35,6 +35,7 @@ import {
   type BlackHoleEvent,
   type BlackHoleGame,
   clearParticles,
+  driftedX,
   gravitationalConstant,
   LINE_Y,
   MAX_FIELD_HOLES,
@@ -742,28 +743,6 @@ function driftBodies(
     at[1] = P.y[slotOf(h)]!;
     setPosition(world, h, at);
   }
-}
-
-/**
- * Where hole `i` (centre at x, m; horizon radius r, m) is dt s later, moving sideways at vx[i] m/s
- * (missing or 0: it stays put): it turns back (the sign of vx[i] flipped) where its centre would come
- * within 1.5 m plus r of the side of a field `width` m wide.
- */
-function driftedX(x: number, i: number, r: number, vx: number[], width: number, dt: number): number {
-  const v = vx[i] ?? 0;
-  if (v === 0) return x;
-  let at = x + v * dt;
-  const lo = 1.5 + r,
-    hi = width - 1.5 - r;
-  if (at < lo) {
-    at = 2 * lo - at;
-    vx[i] = Math.abs(v);
-  }
-  if (at > hi) {
-    at = 2 * hi - at;
-    vx[i] = -Math.abs(v);
-  }
-  return at;
 }
 
 /**

@@ -1495,7 +1495,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
       // round the hole ahead is open (one red path straight up said only where not to go).
       for (const side of PAD_SIDE_THRUSTS) {
         bh.thrust = side;
-        const n = predictPath(bh, predictor, sidePath, steps);
+        const n = predictPath(bh, predictor, sidePath, steps, run?.holeVx);
         const kind = pathEnd(bh, sidePath, n, steps);
         let line = false;
         for (let i = 0; i < n && !line; i++) line = sidePath[2 * i + 1]! >= bh.lineY;
@@ -1504,8 +1504,8 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
           overlay.circle(cam.toScreenX(sidePath[2 * i]!), cam.toScreenY(sidePath[2 * i + 1]!), 1.6).fill({ color: c, alpha: 0.35 });
       }
       bh.thrust = 'up';
-      pathPoints = predictPath(bh, predictor, path, steps);
-    } else pathPoints = predictPath(bh, predictor, path, steps);
+      pathPoints = predictPath(bh, predictor, path, steps, run?.holeVx);
+    } else pathPoints = predictPath(bh, predictor, path, steps, run?.holeVx);
     bh.thrust = liveThrust;
     padPath = fromPad;
     // A path that ends on a horizon is drawn red with a ring where it falls in, so the pull of a wall

@@ -310,6 +310,58 @@ describe('levels', () => {
         }
   });
 
+  test('on a level of drifting holes the predicted path is the path the ship then takes, to the step it falls in', () => {
+    // The issue this answers: the path drawn in flight was not where the ship went. The prediction
+    // held the holes still while the level drifts them (levels 6 on), and tested a horizon at each
+    // step's end while the game tests the whole step's segment (`holeHit`).
+    let compared = 0,
+      fell = 0;
+    for (const seed of [1, 2, 3, 4])
+      for (const t of ['up', 'up-left', 'up-right'] as const) {
+        const g = createBlackHoleGame({ seed });
+        const run = startLevel(g, 8);
+        const pred = createPredictor(g);
+        const out = new Float64Array(2 * 601);
+        setThrust(g, t);
+        const n = predictPath(g, pred, out, 600, run.holeVx);
+        const P = g.world.components.Position;
+        let e = 'none';
+        for (let i = 1; i < n; i++) {
+          e = stepLevel(g, run);
+          if (e !== 'none') {
+            // The game's event comes on the path's last point, not before.
+            expect(i, `seed ${seed} ${t}`).toBe(n - 1);
+            break;
+          }
+          expect([P.x[slotOf(g.ship)], P.y[slotOf(g.ship)]], `seed ${seed} ${t} step ${i}`).toEqual([out[2 * i], out[2 * i + 1]]);
+          compared++;
+        }
+        const x = out[2 * n - 2]!,
+          y = out[2 * n - 1]!;
+        // Ended short inside the field, below the line: the game's ship fell in on that step.
+        if (n < 601 && y < g.lineY && x >= 0 && x <= g.field.width && y >= 0) {
+          expect(e, `seed ${seed} ${t}`).toBe('fell');
+          fell++;
+        }
+      }
+    expect(compared).toBeGreaterThan(500);
+    expect(fell).toBeGreaterThan(0);
+    // Without the holes' speeds the copy holds them still, and the path parts from the ship's.
+    const g = createBlackHoleGame({ seed: 1 });
+    const run = startLevel(g, 8);
+    const pred = createPredictor(g);
+    const out = new Float64Array(2 * 121);
+    setThrust(g, 'up');
+    const n = predictPath(g, pred, out, 120);
+    let apart = 0;
+    for (let i = 1; i < n; i++) {
+      if (stepLevel(g, run) !== 'none') break;
+      const P = g.world.components.Position;
+      apart = Math.max(apart, Math.hypot(P.x[slotOf(g.ship)]! - out[2 * i]!, P.y[slotOf(g.ship)]! - out[2 * i + 1]!));
+    }
+    expect(apart).toBeGreaterThan(1e-6);
+  });
+
   test("a held flight (the layout check's) is the game's own flight: the same path, ended by the same event", () => {
     // heldFlight integrates the ship without a physics world; the game steps its world. Every held
     // thrust on a level of each kind (the fork, a wall, drifting holes, a fuel limit; drifting holes
