@@ -1360,10 +1360,18 @@ function coachLine(x: number): string {
 /**
  * Draws the coach (`coachLine`) beside the ship at screen (sx, sy), px, k px tall: on the side away
  * from where its path ends (else the roomier side), wrapped to the room there. Only on a practice
- * level in play, with the path shown and no fall's words over the field.
+ * level in play, with the path shown, and neither a fall's words nor the level's title over the field.
  */
 function drawCoach(x: number, sx: number, sy: number, k: number): void {
-  const show = run?.spec.practice === true && !run.waiting && !bh.over && !shell.paused && pathPoints > 0 && !deathText.visible;
+  // Not under the level's title either (in a small window they met over the open field).
+  const show =
+    run?.spec.practice === true &&
+    !run.waiting &&
+    !bh.over &&
+    !shell.paused &&
+    pathPoints > 0 &&
+    !deathText.visible &&
+    !(levelBanner.visible && levelBanner.alpha > 0);
   coachText.visible = show;
   if (!show) return;
   const text = coachLine(x);
