@@ -1384,6 +1384,12 @@ function drawCoach(x: number, sx: number, sy: number, k: number): void {
   const roomLeft = sx - gap - x0,
     roomRight = x1 - sx - gap;
   const right = Math.abs(endX - sx) > 20 ? endX < sx : roomRight >= roomLeft;
+  // Smaller letters on a narrow field (a phone's), where the room beside the ship is some 150 px.
+  const size = x1 - x0 < 500 ? 14 : 16;
+  if (coachText.style.fontSize !== size) {
+    coachText.style.fontSize = size;
+    coachText.style.lineHeight = size + 4;
+  }
   const width = Math.max(120, Math.min(260, right ? roomRight : roomLeft));
   if (coachText.style.wordWrapWidth !== width) coachText.style.wordWrapWidth = width;
   coachText.anchor.set(right ? 0 : 1, 0.5);
