@@ -63,13 +63,7 @@ function wallGap(g) {
 
 /** A new game of `seed` on a `width` x `height` field with level `level` laid out; unlimited lives. */
 function newLevel(level, seed, width, height) {
-  // The page gives a narrow field (a phone's) its gentler sideways engine.
-  const g = m.createBlackHoleGame({
-    seed,
-    field: { width, height },
-    lives: 9,
-    ...(width < m.FIELD.width ? { sideRamp: m.PHONE_SIDE_RAMP } : {}),
-  });
+  const g = m.createBlackHoleGame({ seed, field: { width, height }, lives: 9 });
   const run = m.startLevel(g, level);
   return { g, run };
 }

@@ -1,7 +1,8 @@
 /**
- * Levels for black hole, DOM-free (Node tests run them): a first level that asks for one steering
- * decision (a fork: a hole across the straight path up and one across each diagonal, so no arrow or
- * pair of arrows held from the start gets through), then two set pieces (a wall of holes across the field with one gap off to
+ * Levels for black hole, DOM-free (Node tests run them): a first level, practice, that asks for one
+ * steering decision (one small hole across the straight path up, with open field either side: held
+ * straight up the ship falls in, held on a diagonal it leaves the field, so it has to be steered
+ * round), then two set pieces (a wall of holes across the field with one gap off to
  * the side, high up; then a zig-zag of small holes up the straight path, to weave between), then holes across the straight path up, more
  * and bigger holes, holes that drift, and a fuel limit. Each cleared level gives a lost life back (up
  * to the starting three). The ship waits at the start until the player thrusts. The page (main.ts)
@@ -11,6 +12,9 @@
  * wall's included) plus a speed bonus of a point for every whole second the winning attempt took
  * under BONUS_SECONDS. The level's opening line says what it is worth; the summary says how the
  * points were made.
+ *
+ * Level 1 is practice (`LevelSpec.practice`): a fall there costs no life, so a newcomer can learn to
+ * steer round the holes by the predicted path before the lives count.
  *
  * A level is a `LevelSpec` (`levelSpec(n)`); `startLevel` lays its holes out in a game made by
  * `createBlackHoleGame` (./rules), and `stepLevel` runs one step of it: the holes drift, the fuel
@@ -31,6 +35,7 @@ import {
   type BlackHoleEvent,
   type BlackHoleGame,
   clearParticles,
+  driftedX,
   gravitationalConstant,
   LINE_Y,
   MAX_FIELD_HOLES,
@@ -74,10 +79,11 @@ export interface LevelSpec {
    */
   readonly gate: number;
   /**
-   * Lay the holes as a fork (level 1, three holes): one across the straight path up (within 0.3 of
-   * its radius of the start's x), and one on each 45-degree line up from the start (where holding an
-   * arrow up and one sideways flies), so every thrust held from the start falls in or leaves the
-   * field: the ship has to be steered into one of the two gaps beside the first hole.
+   * Lay the holes as a fork: the first across the straight path up (within 0.3 of its radius of the
+   * start's x), and the next two (when `holes` asks for them) on each 45-degree line up from the
+   * start (where holding an arrow up and one sideways flies). Level 1 lays the first alone: held
+   * straight up the ship falls in, held on a diagonal it leaves the field before the line, so it has
+   * to be steered round the hole.
    */
   readonly fork: boolean;
   /**
@@ -93,6 +99,11 @@ export interface LevelSpec {
    * two far out on the 45-degree lines up from the start, so no held diagonal clears. Blockers unused.
    */
   readonly zigzag: boolean;
+  /**
+   * A practice level (level 1): a fall there costs no life (`stepLevel` gives it back), so a newcomer
+   * learns to steer by the predicted path before the lives count.
+   */
+  readonly practice: boolean;
 }
 
 /**
@@ -191,8 +202,8 @@ export const WALL_GATE_SHARE = 0.4;
 const WALL_FILL_GAP = 0.4;
 
 /**
- * The spec of level `level`, one new difficulty at a time: level 1 a fork of three small holes
- * (one across the straight path up, one across each diagonal: steer into a gap beside the first);
+ * The spec of level `level`, one new difficulty at a time: level 1 (practice: a fall costs no life)
+ * one small hole across the straight path up (`fork`'s first hole: steer round it);
  * level 2 a wall of small holes (LEVEL2_RADIUS) across the field, high up (LEVEL2_WALL_HEIGHT: its
  * pull at the start weak, so taps steer the ship) with one gap of LEVEL2_GATE off to the side (fly
  * across to it, then up through it); level 3 a zig-zag of small holes up the straight path (`zigzag`: weave
@@ -228,10 +239,11 @@ export function levelSpec(level: number): LevelSpec {
       fork,
       wallHeight: Object.freeze(wallHeight) as readonly [number, number],
       zigzag,
+      practice: level === 1,
     });
   switch (level) {
     case 1:
-      return spec(3, [0.5, 0.6], 0, 1, 0, Infinity, 0, true);
+      return spec(1, [0.5, 0.6], 0, 1, 0, Infinity, 0, true);
     case 2:
       return spec(0, [LEVEL2_RADIUS[0], LEVEL2_RADIUS[1]], 0, 0, 0, Infinity, LEVEL2_GATE, false, [
         LEVEL2_WALL_HEIGHT[0],
@@ -343,6 +355,9 @@ export function beginLevel(game: BlackHoleGame, run: LevelRun): void {
   layLevel(game, run, run.spec.level);
 }
 
+/** What the opening line of a practice level (`LevelSpec.practice`) adds. */
+export const PRACTICE_NOTE = 'Practice: falling in costs no life here.';
+
 /**
  * The opening line of a level with `holes` holes on the field: the goal and what it is worth.
  * @throws RangeError (from levelPoints) unless holes is an integer >= 0.
@@ -355,6 +370,7 @@ export function levelMessage(spec: LevelSpec, holes: number): string {
   if (spec.zigzag) parts.push('Weave between the holes.');
   if (spec.drift > 0) parts.push('The holes drift.');
   if (Number.isFinite(spec.fuel)) parts.push(`${spec.fuel} s of fuel.`);
+  if (spec.practice) parts.push(PRACTICE_NOTE);
   return parts.join(' ');
 }
 
@@ -730,31 +746,10 @@ function driftBodies(
 }
 
 /**
- * Where hole `i` (centre at x, m; horizon radius r, m) is dt s later, moving sideways at vx[i] m/s
- * (missing or 0: it stays put): it turns back (the sign of vx[i] flipped) where its centre would come
- * within 1.5 m plus r of the side of a field `width` m wide.
- */
-function driftedX(x: number, i: number, r: number, vx: number[], width: number, dt: number): number {
-  const v = vx[i] ?? 0;
-  if (v === 0) return x;
-  let at = x + v * dt;
-  const lo = 1.5 + r,
-    hi = width - 1.5 - r;
-  if (at < lo) {
-    at = 2 * lo - at;
-    vx[i] = Math.abs(v);
-  }
-  if (at > hi) {
-    at = 2 * hi - at;
-    vx[i] = -Math.abs(v);
-  }
-  return at;
-}
-
-/**
  * One step of a level: nothing while waiting; else the holes drift, the fuel burns while thrusting
  * (at zero the thrust stops and stays off), the game steps (./rules `stepBlackHole`), and a parked
- * ship (see `LevelRun.parked`) is put back at the start at rest. A crossing of
+ * ship (see `LevelRun.parked`) is put back at the start at rest. A fall on a practice level
+ * (`LevelSpec.practice`) gives its life back (and is reported as 'fell', never 'over'). A crossing of
  * the line becomes 'cleared': a lost life comes back, the summary is kept, the field is emptied of
  * holes and exhaust (the next level is laid out by `beginLevel`) and the run waits with the ship at
  * rest where it crossed.
@@ -787,7 +782,14 @@ export function stepLevel(game: BlackHoleGame, run: LevelRun): BlackHoleEvent | 
     y0 = Pos.y[ship]!,
     vx0 = Vel.x[ship]!,
     vy0 = Vel.y[ship]!;
-  const event = stepBlackHole(game);
+  let event = stepBlackHole(game);
+  if (run.spec.practice && (event === 'fell' || event === 'over')) {
+    // A practice level gives the life back (and with it the game, had it been the last).
+    game.lives++;
+    game.over = false;
+    event = 'fell';
+    game.message = `Swallowed by a black hole! ${PRACTICE_NOTE.replace('here', 'on this level')} Steer round the red path.`;
+  }
   if (event === 'fell' || event === 'lost') run.parked = true;
   else if (event === 'none' && run.parked) {
     setPosition(game.world, game.ship, game.start);

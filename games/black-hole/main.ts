@@ -13,7 +13,8 @@
  * start (./replay.ts: every input is recorded at its step; the replay ends where the run was, bit for bit).
  * Touch: the four arrow buttons under the scene (hold to thrust, slide to steer; two fingers on two
  * arrows thrust diagonally); tap the message to restart.
- * Levels (./levels.ts): level 1 has a hole across the straight path and one across each diagonal
+ * Levels (./levels.ts): level 1 (practice: a fall costs no life; a coach beside the ship reads the
+ * predicted path and says what to hold) has one hole across the straight path
  * (no arrow or two held from the start gets through on any level), levels 2 and 3 a wall of holes
  * with one gap off to the side (level 2's high up, level 3's lower with a hole above its gap), later levels more and
  * bigger holes, drifting holes and a fuel limit; clearing a level shows a summary and a button over
@@ -56,7 +57,6 @@ import {
   heldThrust,
   MAX_HOLES,
   type PathEnd,
-  PHONE_SIDE_RAMP,
   type Predictor,
   pathEnd,
   predictPath,
@@ -212,8 +212,9 @@ function createWorld(): PhysicsWorld {
     gScale: params.gScale,
     c: params.c,
     thrust: params.thrust,
-    // A narrow field (a phone held upright) gets a gentler sideways engine: a brief tap of ← or → nudges.
-    sideRamp: playField.width < FIELD.width ? PHONE_SIDE_RAMP : THRUST_RAMP.up,
+    // The same engine on every screen (a phone's sideways thrust once built more slowly, and a held
+    // arrow gained less speed a second there than on a desktop).
+    sideRamp: THRUST_RAMP.up,
     field: playField,
   });
   run = levels ? startLevel(bh, continueLevel ?? params.level) : null;
@@ -251,10 +252,10 @@ const game = await startPixiGame({
   },
   controls: [
     // On a phone the card says it in one line (it fits above the finish line), teaches taps (on the
-    // narrow upright field a held diagonal soon leaves it) and names the seam: a finger on the seam
-    // between a side arrow and ↑ or ↓ holds both (`padDirsAt`).
+    // narrow upright field a held diagonal soon leaves it) and, in a player's words, the seam: a
+    // thumb between a side arrow and ↑ or ↓ holds both (`padDirsAt`).
     isTouchDevice()
-      ? { keys: '← ↑ → ↓', action: 'nudge; seam of two: diagonal', touch: 'tap ← ↑ → ↓' }
+      ? { keys: '← ↑ → ↓', action: 'nudge; thumb between two: both', touch: 'tap ← ↑ → ↓' }
       : { keys: '← ↑ → ↓', action: 'thrust: a tap nudges, a hold builds up (two at once: diagonal)', touch: 'hold, slide ← ↑ → ↓' },
     { keys: 'Enter', action: 'next level / continue from this level', touch: 'tap the Level ▶ or Continue ↺ button' },
     {
@@ -507,6 +508,9 @@ style.textContent = `
 .bh-status.over .bh-message { color: #ff8c8c; cursor: pointer; }
 .bh-status.cleared .bh-message { color: #7ee787; cursor: pointer; font-weight: 600; }
 .bh-pad button { font-size: 22px; min-width: 56px; }
+/* A pressed arrow lights within its rounded corners: no square tap highlight or focus ring past them. */
+.bh-pad button, .bh-extras button { -webkit-tap-highlight-color: transparent; }
+.bh-pad button:focus:not(:focus-visible) { outline: none; }
 /* The next-level / play-again button: over the field (placeActionButton moves it to a band no hole reaches),
    not at the stage's foot, where it covered the start pad and the ship waiting on it. */
 body .bp-touchbar.bp-action { top: 40%; bottom: auto; }
@@ -973,7 +977,9 @@ function levelNews(spec: LevelRun['spec']): string {
         ? 'through the gap, round the hole'
         : 'find the gap in the wall'
       : spec.fork
-        ? 'steer between the holes'
+        ? n === 1
+          ? 'steer round the hole'
+          : 'steer between the holes'
         : `${n} ${n === 1 ? 'hole' : 'holes'}`;
   const extra = [spec.drift > 0 ? 'drifting' : '', Number.isFinite(spec.fuel) ? `${spec.fuel} s of fuel` : ''].filter(Boolean);
   return `${holes}${extra.length ? `, ${extra.join(', ')}` : ''}\n${POINTS_PER_HOLE * n} points at the line`;
@@ -1152,7 +1158,11 @@ function startDeath(): void {
   death.start = swallow.active ? swallow.start : performance.now();
   death.count++;
   death.flashPeak = 0;
-  deathText.text = bh.over ? 'Swallowed!\nGame over' : `Swallowed!\n${bh.lives} ${bh.lives === 1 ? 'life' : 'lives'} left`;
+  deathText.text = bh.over
+    ? 'Swallowed!\nGame over'
+    : run?.spec.practice
+      ? 'Swallowed!\nPractice: no life lost'
+      : `Swallowed!\n${bh.lives} ${bh.lives === 1 ? 'life' : 'lives'} left`;
 }
 
 /**
@@ -1296,6 +1306,98 @@ function drawPathEnd(lx: number, ly: number, color: number): void {
   pathLabel.position.set(at, ly2);
 }
 
+/**
+ * The coach of a practice level (./levels.ts `LevelSpec.practice`, level 1): a line or two beside the
+ * ship that say how the predicted path drawn this frame ends and what to hold (`coachLine`), so a
+ * newcomer learns to steer by it. Read from the path of the moment (the ship's state and the arrows
+ * held now, the game's own prediction), never a fixed route, so it holds whenever the player acts.
+ * Every arrow it names is one to hold (the naive player of test/browser/black-hole.test.ts holds them).
+ */
+const coachText = new Text({
+  text: '',
+  style: {
+    fill: 0xffe08a,
+    fontSize: 16,
+    fontFamily: 'sans-serif',
+    fontWeight: 'bold',
+    stroke: { color: 0x000000, width: 4 },
+    lineHeight: 20,
+    wordWrap: true,
+    wordWrapWidth: 240,
+  },
+});
+coachText.visible = false;
+app.stage.addChild(coachText);
+
+/**
+ * The coach's words for the path drawn this frame (the ship at x, m): how it ends, and the arrows to
+ * hold. Red on a hole: the side arrow away from that hole, with ↑ (steer round it); red off a side:
+ * the side arrow back, with ↑; otherwise ↑ (climb). From the pad: ↑ (the path shows where it goes).
+ */
+function coachLine(x: number): string {
+  if (padPath) return 'Hold ↑ to fly.\nThe dots show your way.';
+  const lx = path[2 * pathPoints - 2]!,
+    ly = path[2 * pathPoints - 1]!;
+  if (pathKind === 'falls') {
+    // The hole that takes the path: the one whose horizon its end is nearest.
+    const P = bh.world.components.Position;
+    let best = Infinity,
+      hx = x;
+    for (let i = 0; i < bh.holes.length; i++) {
+      const h = slotOf(bh.holes[i]!);
+      const d = Math.hypot(P.x[h]! - lx, P.y[h]! - ly) - bh.holeRadius[i]!;
+      if (d < best) [best, hx] = [d, P.x[h]!];
+    }
+    return `Red: you'd fall in!\nHold ${x < hx ? '←' : '→'} and ↑ to steer round.`;
+  }
+  if (pathKind === 'lost')
+    return lx < 0 || lx > bh.field.width
+      ? `Red: you'd leave the field!\nHold ${lx < 0 ? '→' : '←'} and ↑ to come back.`
+      : "Red: you'd leave the field!\nHold ↑.";
+  return pathReachesLine ? "Blue: you'll reach the line!\nHold ↑." : 'Clear for now.\nHold ↑ to climb.';
+}
+
+/**
+ * Draws the coach (`coachLine`) beside the ship at screen (sx, sy), px, k px tall: on the side away
+ * from where its path ends (else the roomier side), wrapped to the room there. Only on a practice
+ * level in play, with the path shown, and neither a fall's words nor the level's title over the field.
+ */
+function drawCoach(x: number, sx: number, sy: number, k: number): void {
+  // Not under the level's title either (in a small window they met over the open field).
+  const show =
+    run?.spec.practice === true &&
+    !run.waiting &&
+    !bh.over &&
+    !shell.paused &&
+    pathPoints > 0 &&
+    !deathText.visible &&
+    !(levelBanner.visible && levelBanner.alpha > 0);
+  coachText.visible = show;
+  if (!show) return;
+  const text = coachLine(x);
+  if (coachText.text !== text) coachText.text = text;
+  const cam = renderer.camera;
+  const x0 = cam.toScreenX(0) + 6,
+    x1 = cam.toScreenX(playField.width) - 6;
+  const endX = cam.toScreenX(path[2 * pathPoints - 2]!);
+  const gap = 0.6 * k + 10;
+  const roomLeft = sx - gap - x0,
+    roomRight = x1 - sx - gap;
+  const right = Math.abs(endX - sx) > 20 ? endX < sx : roomRight >= roomLeft;
+  // Smaller letters on a narrow field (a phone's), where the room beside the ship is some 150 px.
+  const size = x1 - x0 < 500 ? 14 : 16;
+  if (coachText.style.fontSize !== size) {
+    coachText.style.fontSize = size;
+    coachText.style.lineHeight = size + 4;
+  }
+  const width = Math.max(120, Math.min(260, right ? roomRight : roomLeft));
+  if (coachText.style.wordWrapWidth !== width) coachText.style.wordWrapWidth = width;
+  coachText.anchor.set(right ? 0 : 1, 0.5);
+  const top = cam.toScreenY(playField.height) + 4 + coachText.height / 2,
+    bottom = cam.toScreenY(0) - 4 - coachText.height / 2;
+  coachText.position.set(right ? sx + gap : sx - gap, Math.max(top, Math.min(bottom, sy - 0.2 * k)));
+}
+
 /** Over the field while paused: the scene dimmed and "Paused", so a pause is not taken for a hang. */
 const pause = createPauseOverlay({ label: 'paused' });
 app.stage.addChild(pause.container);
@@ -1375,6 +1477,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
     pausedGame = bh;
   }
   wasPaused = shell.paused;
+  coachText.visible = false;
   // The overlay stays the stage's last child (text added later would be drawn over it).
   if (pause.container.parent === app.stage && app.stage.children[app.stage.children.length - 1] !== pause.container)
     app.stage.addChild(pause.container);
@@ -1406,7 +1509,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
       // round the hole ahead is open (one red path straight up said only where not to go).
       for (const side of PAD_SIDE_THRUSTS) {
         bh.thrust = side;
-        const n = predictPath(bh, predictor, sidePath, steps);
+        const n = predictPath(bh, predictor, sidePath, steps, run?.holeVx);
         const kind = pathEnd(bh, sidePath, n, steps);
         let line = false;
         for (let i = 0; i < n && !line; i++) line = sidePath[2 * i + 1]! >= bh.lineY;
@@ -1415,8 +1518,8 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
           overlay.circle(cam.toScreenX(sidePath[2 * i]!), cam.toScreenY(sidePath[2 * i + 1]!), 1.6).fill({ color: c, alpha: 0.35 });
       }
       bh.thrust = 'up';
-      pathPoints = predictPath(bh, predictor, path, steps);
-    } else pathPoints = predictPath(bh, predictor, path, steps);
+      pathPoints = predictPath(bh, predictor, path, steps, run?.holeVx);
+    } else pathPoints = predictPath(bh, predictor, path, steps, run?.holeVx);
     bh.thrust = liveThrust;
     padPath = fromPad;
     // A path that ends on a horizon is drawn red with a ring where it falls in, so the pull of a wall
@@ -1482,6 +1585,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   placeTouchHint();
   placeActionButton();
   drawScorePop();
+  drawCoach(x, sx, sy, k);
   // The engine's thrust now (it spools up and down): the flame points against it, as long as it is
   // strong, and the ship leans into it (up to LEAN rad at full sideways thrust).
   const [tx, ty] = bh.thrustVec;
@@ -1556,6 +1660,8 @@ shell.expose({
   shipLean: (): number => shipLean,
   /** The rising "+N" of the last crossing while it shows, else ''. */
   scorePop: (): string => (scoreText.visible ? scoreText.text : ''),
+  /** The practice level's coach beside the ship in the last frame (what to hold, read from the path), else ''. */
+  coach: (): string => (coachText.visible ? coachText.text : ''),
   /** Why the path drawn in the last frame stops short, by its end ('falls in' or 'lost'), else ''. */
   pathLabel: (): string => (pathLabel.visible ? pathLabel.text : ''),
   /**

@@ -103,13 +103,6 @@ export const SHIP_RADIUS = 0.3;
 export const THRUST_RAMP = Object.freeze({ trim: 0.4, gentle: 0.2, up: 0.4, down: 0.1 });
 
 /**
- * The `sideRamp` (s) of a phone held upright, whose field is 20 m wide: the sideways thrust builds
- * more slowly there (at 10 m/s^3, below the engine's gentle rate: a 0.3 s press of → gains 0.53 m/s,
- * not 0.72), so a short sideways press does not carry the ship off the narrow field's edge.
- */
-export const PHONE_SIDE_RAMP = 0.6;
-
-/**
  * Thrust directions: none, one of the four arrows, or two arrows at right angles held together
  * (a diagonal, e.g. 'up-right').
  */
@@ -674,6 +667,28 @@ export function restart(game: BlackHoleGame): void {
 
 // ---- The predicted path -------------------------------------------------------------------------
 
+/**
+ * Where hole `i` (centre at x, m; horizon radius r, m) is dt s later, moving sideways at vx[i] m/s
+ * (missing or 0: it stays put): it turns back (the sign of vx[i] flipped) where its centre would come
+ * within 1.5 m plus r of the side of a field `width` m wide.
+ */
+export function driftedX(x: number, i: number, r: number, vx: number[], width: number, dt: number): number {
+  const v = vx[i] ?? 0;
+  if (v === 0) return x;
+  let at = x + v * dt;
+  const lo = 1.5 + r,
+    hi = width - 1.5 - r;
+  if (at < lo) {
+    at = 2 * lo - at;
+    vx[i] = Math.abs(v);
+  }
+  if (at > hi) {
+    at = 2 * hi - at;
+    vx[i] = -Math.abs(v);
+  }
+  return at;
+}
+
 /** A small second world that integrates a copy of the ship ahead in the same force field. */
 export interface Predictor {
   /** The copy's world: the holes (static attractors), the ship, the thrust law; no particles. */
@@ -721,13 +736,16 @@ function syncPredictor(game: BlackHoleGame, pred: Predictor): void {
 /**
  * The ship's path for the next `steps` steps (default 60: one second at 60 Hz) with the current
  * thrust held: the ship's position and velocity and the engine's thrust now are copied into the predictor's world, which then
- * steps with the same dt, integrator, G, holes and thrust law as the game. Positions (m) go into
- * `out` as x0, y0, x1, y1, ... starting with the ship's current position; the path stops early where
- * the ship touches a horizon (see SHIP_RADIUS) or leaves the field.
+ * steps with the same dt, integrator, G, holes and thrust law as the game. `holeVx`, when given, is
+ * each hole's sideways speed, m/s (./levels.ts `LevelRun.holeVx`, same order as game.holes; missing or
+ * 0: it stays put): the copy's holes drift as the game's do (`driftedX`, before each step). Positions
+ * (m) go into `out` as x0, y0, x1, y1, ... starting with the ship's current position; the path stops
+ * early where the ship touches a horizon on its way through a step (the game's test, `holeHit`; see
+ * SHIP_RADIUS) or leaves the field.
  * @returns the number of points written (1 + steps taken), at most out.length / 2.
  * @throws RangeError unless steps is an integer in [1, 10_000].
  */
-export function predictPath(game: BlackHoleGame, pred: Predictor, out: Float64Array, steps = 60): number {
+export function predictPath(game: BlackHoleGame, pred: Predictor, out: Float64Array, steps = 60, holeVx?: readonly number[]): number {
   check(Number.isInteger(steps) && steps >= 1 && steps <= 10_000, `predictPath: steps must be an integer in [1, 10000], got ${steps}`);
   if (pred.version !== game.version) syncPredictor(game, pred);
   const w = pred.world,
@@ -752,18 +770,51 @@ export function predictPath(game: BlackHoleGame, pred: Predictor, out: Float64Ar
   let n = 1;
   const radius = game.holeRadius;
   const HP = P;
+  // Drifting holes move in the copy as `stepLevel` moves them in the game: from where they are now,
+  // before each step, turning back at the field's edges (a copy of their speeds: turning flips them).
+  let drift: number[] | null = null;
+  if (holeVx?.some((v) => v !== 0)) {
+    drift = predictDrift;
+    drift.length = 0;
+    for (let i = 0; i < pred.holes.length; i++) drift.push(holeVx[i] ?? 0);
+    const GP = src.Position;
+    for (let i = 0; i < pred.holes.length; i++) {
+      holeAt[0] = GP.x[slotOf(game.holes[i]!)]!;
+      holeAt[1] = GP.y[slotOf(game.holes[i]!)]!;
+      setPosition(w, pred.holes[i]!, holeAt);
+    }
+  }
   while (n < max) {
+    if (drift) {
+      for (let i = 0; i < pred.holes.length; i++) {
+        if (drift[i] === 0) continue;
+        const h = pred.holes[i]!;
+        holeAt[0] = driftedX(HP.x[slotOf(h)]!, i, radius[i]!, drift, game.field.width, w.dt);
+        holeAt[1] = HP.y[slotOf(h)]!;
+        setPosition(w, h, holeAt);
+      }
+    }
+    const ax = P.x[s]!,
+      ay = P.y[s]!;
     step(w);
     const x = P.x[s]!,
       y = P.y[s]!;
     out[2 * n] = x;
     out[2 * n + 1] = y;
     n++;
+    // The game's own test (`holeHit`): the closest point of the step's segment to each centre, so a
+    // path that grazes a horizon between two steps ends there as the ship would.
+    const ex = x - ax,
+      ey = y - ay,
+      len2 = ex * ex + ey * ey;
     let inside = false;
     for (let i = 0; i < pred.holes.length; i++) {
       const h = pred.holes[i]!;
-      const dx = x - HP.x[slotOf(h)]!,
-        dy = y - HP.y[slotOf(h)]!,
+      const cx = HP.x[slotOf(h)]!,
+        cy = HP.y[slotOf(h)]!;
+      const t = len2 > 0 ? Math.max(0, Math.min(1, ((cx - ax) * ex + (cy - ay) * ey) / len2)) : 0;
+      const dx = ax + t * ex - cx,
+        dy = ay + t * ey - cy,
         r = radius[i]! + SHIP_RADIUS;
       if (dx * dx + dy * dy < r * r) {
         inside = true;
@@ -774,6 +825,10 @@ export function predictPath(game: BlackHoleGame, pred: Predictor, out: Float64Ar
   }
   return n;
 }
+
+/** Scratch of `predictPath`: the drifting holes' speeds, m/s, and a hole's position, m. */
+const predictDrift: number[] = [];
+const holeAt: [number, number] = [0, 0];
 
 /** How a predicted path ends (`pathEnd`). */
 export type PathEnd = 'clear' | 'falls' | 'lost';

@@ -60,11 +60,11 @@ describe('black hole', () => {
   it('labels the score; a fall spirals the ship in; the next thrust clears the message; the edge warns', async () => {
     expect(await g.page.locator('[data-hud="numbers"]').textContent()).toContain('Score 0');
     expect(await g.page.locator('[data-hud="message"]').textContent()).toBe(
-      'Level 1: reach the green line for 30 points (10 a hole), more if fast.',
+      'Level 1: reach the green line for 10 points (10 a hole), more if fast. Practice: falling in costs no life here.',
     );
     // The level's title shows over the field until the first thrust, with what the line is worth.
     expect(await g.page.evaluate(() => (window.game as unknown as BlackHolePage).levelBanner())).toBe(
-      'Level 1\nsteer between the holes\n30 points at the line',
+      'Level 1\nsteer round the hole\n10 points at the line',
     );
     // The predicted path shows from the pad before the first thrust (the path holding ↑ would take;
     // it showed only once the ship moved), and the legend says what its colours mean.
@@ -78,7 +78,7 @@ describe('black hole', () => {
     // The title covers none of the holes (it was printed under the finish line, over the holes and a
     // wall's gap): it sits in the open field below them.
     const banner = await g.page.evaluate(bannerOverHoles);
-    expect(banner).toMatchObject({ hits: 0, holes: 3 });
+    expect(banner).toMatchObject({ hits: 0, holes: 1 });
     // The path from the pad runs into the hole across the climb: its end says so in words by a cross.
     await g.waitFor(() => (window.game as unknown as BlackHolePage).pathLabel() === 'falls in', null);
     expect(await g.page.evaluate(() => (window.game as unknown as BlackHolePage).pathEnd())).toBe('falls');
@@ -88,14 +88,14 @@ describe('black hole', () => {
     await g.page.keyboard.up('ArrowUp');
     expect(await g.page.evaluate(() => (window.game as unknown as BlackHolePage).bh.falls)).toBe(1);
     expect(await g.page.locator('[data-hud="message"]').textContent()).toMatch(/^Swallowed/);
-    // The fall flashes the field red and says so over it, with the lives left (it had no feedback
-    // but the spiral and the status line).
+    // The fall flashes the field red and says so over it (it had no feedback but the spiral and the
+    // status line): on level 1, practice, that it cost no life (elsewhere, the lives left).
     const death = await g.waitFor(() => {
       const d = (window.game as unknown as BlackHolePage).deathEffect();
       return d.flashPeak > 0 ? d : null;
     }, null);
     expect(death.count).toBe(1);
-    expect(death.text).toBe('Swallowed!\n2 lives left');
+    expect(death.text).toBe('Swallowed!\nPractice: no life lost');
     // While the words of the fall show, the path's label is not drawn under them.
     const shown = await g.waitFor(() => {
       const w = window.game as unknown as BlackHolePage;
@@ -430,7 +430,7 @@ describe.each([
         if (!card) {
           card = document.createElement('div');
           card.className = 'bp-touch-hint';
-          card.innerHTML = '<div><b>hold ← ↑ → ↓</b><span>thrust; seam of two: diagonal</span></div>';
+          card.innerHTML = '<div><b>tap ← ↑ → ↓</b><span>nudge; thumb between two: both</span></div>';
           document.querySelector('.bp-stage')!.append(card);
         }
         const hint = card.getBoundingClientRect();
@@ -618,9 +618,9 @@ describe.each([
     const p = await h.openGame('black-hole', { viewport, touch, query: { level: 1 } });
     type Pause = { pauseOverlay(): { visible: boolean; text: string }; paused: boolean };
     if (touch) {
-      // The card of gestures (and the legend in the drawer) says a finger on the seam of two arrows
-      // thrusts diagonally.
-      expect(await p.page.locator('.bp-legend').textContent()).toContain('seam of two: diagonal');
+      // The card of gestures (and the legend in the drawer) says, in a player's words, that a thumb
+      // on the seam of two arrows holds both ("seam of two: diagonal" read as cryptic).
+      expect(await p.page.locator('.bp-legend').textContent()).toContain('thumb between two: both');
       // The finish line's screen rect (the dashed line across the field, 2 px either side of it) and
       // the card's box: apart. The kit's card goes after 9 s or at a touch; a stand-in of its class
       // with a longer text (two lines at this width, which do not fit above the line) is checked too.
@@ -765,4 +765,110 @@ describe.each([
     expect(p.errors).toEqual([]);
     await p.close();
   });
+});
+
+/**
+ * In the page: a naive player of level 1 who does what the coach beside the ship says (the arrows it
+ * names, and no others), read every frame, with the keys (desktop) or fingers on the pad's arrows
+ * (phone: one synthetic touch pointer per arrow, at its button's centre). After a fall or an exit
+ * the page forgets what was held, so it lifts everything and presses again. It plays until the level
+ * is cleared or 60 s of game time pass, and reports how it went on `window.naivePlayer`.
+ */
+function playAsCoachSays(touch: boolean): void {
+  type Game = {
+    coach(): string;
+    bh: { falls: number; lives: number; over: boolean; resets: number; world: { steps: number } };
+    level: { waiting: boolean; spec: { level: number } };
+  };
+  const w = window.game as unknown as Game;
+  const KEYS: Record<string, string> = { '←': 'ArrowLeft', '→': 'ArrowRight', '↑': 'ArrowUp', '↓': 'ArrowDown' };
+  const DIRS: Record<string, string> = { '←': 'left', '→': 'right', '↑': 'up', '↓': 'down' };
+  const held = new Map<string, number>();
+  let nextPointer = 100;
+  const button = (a: string) => document.querySelector<HTMLElement>(`.bh-pad button[data-dir="${DIRS[a]}"]`)!;
+  const touchEvent = (type: string, a: string, id: number) => {
+    const r = button(a).getBoundingClientRect();
+    const init = { pointerId: id, pointerType: 'touch', isPrimary: false, bubbles: true, cancelable: true };
+    button(a).dispatchEvent(new PointerEvent(type, { ...init, clientX: r.left + r.width / 2, clientY: r.top + r.height / 2 }));
+  };
+  const down = (a: string) => {
+    const id = nextPointer++;
+    held.set(a, id);
+    if (touch) touchEvent('pointerdown', a, id);
+    else window.dispatchEvent(new KeyboardEvent('keydown', { key: KEYS[a], bubbles: true }));
+  };
+  const up = (a: string) => {
+    const id = held.get(a)!;
+    held.delete(a);
+    if (touch) touchEvent('pointerup', a, id);
+    else window.dispatchEvent(new KeyboardEvent('keyup', { key: KEYS[a], bubbles: true }));
+  };
+  const start = w.bh.world.steps;
+  let resets = w.bh.resets;
+  const said = new Set<string>();
+  const report = (cleared: boolean) => {
+    for (const a of [...held.keys()]) up(a);
+    (window as unknown as { naivePlayer: unknown }).naivePlayer = {
+      cleared,
+      falls: w.bh.falls,
+      lives: w.bh.lives,
+      seconds: (w.bh.world.steps - start) / 60,
+      said: [...said],
+    };
+  };
+  const frame = () => {
+    if (w.level.waiting) return report(true);
+    if (w.bh.over || w.bh.world.steps - start > 3600) return report(false);
+    if (w.bh.resets !== resets) {
+      // A fall or an exit: the page let go of everything held.
+      resets = w.bh.resets;
+      for (const a of [...held.keys()]) up(a);
+    }
+    const coach = w.coach();
+    if (coach !== '') {
+      said.add(coach);
+      const want = [...coach].filter((c) => c in KEYS);
+      for (const a of [...held.keys()]) if (!want.includes(a)) up(a);
+      for (const a of want) if (!held.has(a)) down(a);
+    }
+    requestAnimationFrame(frame);
+  };
+  requestAnimationFrame(frame);
+}
+
+describe.each([
+  { device: 'desktop', viewport: { width: 1280, height: 800 }, touch: false },
+  { device: 'phone', viewport: { width: 390, height: 844 }, touch: true },
+] as const)('black hole level 1, a newcomer ($device)', ({ viewport, touch }) => {
+  it('a naive player who holds what the coach beside the ship says clears level 1 with its lives, on three seeds', async () => {
+    // The issue this answers: a stranger lost three lives on level 1 in 30 s without seeing how to
+    // get through, and a drawn "way through" that depended on exact timing led one into a hole. The
+    // coach reads the path of the moment, so it holds whatever the player's timing.
+    for (const seed of [1, 2, 3]) {
+      const p = await h.openGame('black-hole', { viewport, touch, query: { level: 1, seed } });
+      // On the pad, before the first thrust, it says how to start and what the dots are.
+      expect(await p.waitFor(() => (window.game as unknown as { coach(): string }).coach(), null)).toBe(
+        'Hold ↑ to fly.\nThe dots show your way.',
+      );
+      await p.page.evaluate(playAsCoachSays, touch);
+      const result = await p.waitFor(
+        () =>
+          (window as unknown as { naivePlayer?: { cleared: boolean; falls: number; lives: number; seconds: number; said: string[] } })
+            .naivePlayer,
+        null,
+        120_000,
+      );
+      // Cleared, with every life, at most one fall on the way (measured: none, on 20 seeds of
+      // scripts/black-hole-levels.mjs's rules at reaction lags of 0.3 and 0.5 s).
+      expect(result, `seed ${seed}: ${JSON.stringify(result)}`).toMatchObject({ cleared: true, lives: 3 });
+      expect(result.falls, `seed ${seed}: ${JSON.stringify(result)}`).toBeLessThanOrEqual(1);
+      // It was told to steer round the hole (the straight climb runs into it).
+      expect(
+        result.said.some((s) => /^Red: you'd fall in!\nHold [←→] and ↑ to steer round\.$/.test(s)),
+        JSON.stringify(result.said),
+      ).toBe(true);
+      expect(p.errors).toEqual([]);
+      await p.close();
+    }
+  }, 300_000);
 });

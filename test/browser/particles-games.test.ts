@@ -703,13 +703,14 @@ describe('black hole', () => {
 
 // Its own page: after the group above, whose page is closed by then (two open game pages would share the one software GPU).
 describe('black hole levels', () => {
-  it('without ?holes it plays levels: level 1 with its three holes, its number, lives and best score on screen', async () => {
+  it('without ?holes it plays levels: level 1 with its one hole, its number, lives and best score on screen', async () => {
     const g = await h.openGame('black-hole');
     const level = await g.page.evaluate(() => {
       const game = window.game as unknown as { level: { spec: { level: number; holes: number } } | null; bh: { holes: number[] } };
       return { spec: game.level?.spec, holes: game.bh.holes.length };
     });
-    expect(level).toEqual({ spec: expect.objectContaining({ level: 1, holes: 3 }), holes: 3 });
+    // Level 1 is practice with one hole across the straight climb (it was a fork of three).
+    expect(level).toEqual({ spec: expect.objectContaining({ level: 1, holes: 1, practice: true }), holes: 1 });
     // The panel offers the level to start at, not a hole count (a level lays out its own holes; the
     // panel's count disagreed with the level's).
     const controls = await g.page.evaluate(() => {
@@ -719,7 +720,7 @@ describe('black hole levels', () => {
     });
     expect(controls.level).toBe('1');
     expect('holes' in controls).toBe(false);
-    expect(await g.page.locator('[data-hud="numbers"]').textContent()).toMatch(/Level 1\s+Lives ♥♥♥\s+Holes 3\s+Score 0\s+Best \d+/);
+    expect(await g.page.locator('[data-hud="numbers"]').textContent()).toMatch(/Level 1\s+Lives ♥♥♥\s+Holes 1\s+Score 0\s+Best \d+/);
     // The hole is drawn (its horizon is black with a glow: many colours in the canvas).
     expect(await g.canvasColors()).toBeGreaterThan(16);
     expect(g.errors).toEqual([]);
