@@ -702,7 +702,13 @@ describe.each([
     // (a finger's tap thrust for no step at all; a key's for as many steps as the frames between).
     const upBox = (await p.page.getByRole('button', { name: 'thrust up', exact: true }).boundingBox())!;
     if (touch) await p.page.touchscreen.tap(upBox.x + upBox.width / 2, upBox.y + upBox.height / 2);
-    else await p.page.keyboard.press('ArrowUp');
+    // The key's down and up in one task of the page, so no frame runs between them: sent as two
+    // protocol events on a loaded machine, a frame of catch-up steps could run in between, and a press
+    // that outlasts TAP_STEPS steps is a hold (it thrust 10).
+    else
+      await p.page.evaluate(() => {
+        for (const type of ['keydown', 'keyup']) window.dispatchEvent(new KeyboardEvent(type, { key: 'ArrowUp', code: 'ArrowUp' }));
+      });
     type Events = { replay: { recorder: { replay: { events: { step: number; name: string; args: unknown[] }[] } } } };
     const thrusts = await p.waitFor(() => {
       const events = (window.game as unknown as Events).replay.recorder.replay.events.filter((e) => e.name === 'thrust');
