@@ -216,7 +216,7 @@ export const LEVELS: readonly LanternLevel[] = Object.freeze([
   },
   {
     name: 'Finale',
-    tip: 'and hold on the ring, let go when told',
+    tip: 'and hold in the gold ring till “now!”',
     par: 3,
     shells: 5,
     shell: 'peony',
