@@ -99,7 +99,9 @@ export interface LanternLevel {
  * The levels, each needing a new idea. Figures from maps of where the hot stars of real bursts go
  * (3 seeds, 64 m phone sky and 120 m desktop sky, every 0.01 W, five holds), searched for the fewest
  * shells; "spray" is the chance that par shells at random points of the band, at random holds,
- * light everything.
+ * light everything. A newcomer's aims (scripts/fireworks-levels.mjs --random: par shells each within
+ * 0.08 W of a dark lantern where it is, at random holds) light a level in par 0 to 1 times in 30,
+ * every level, in both skies: three stars take the level's idea, seen and timed.
  * 1. Quick shells only, four lanterns and four shells: two far apart, one shell each, and a close
  *    pair (0.26 W) a quick burst right between lights together (aims within 0.06 W of the middle
  *    that light both, scripts/fireworks-levels.mjs --par: 20/49 desktop, 35/49 phone; at 0.18 W

@@ -627,11 +627,11 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
     sprite.alpha = fade;
   }
   burstRingShown = { scale: 0, reach: 0, radius: 0, age: Number.NaN };
-  // Each new burst's front: a bright ring that races out to where its stars will get (in the lantern
-  // show where its hot stars light lanterns, `sparkReach` of its scale) over BURST_RING_SECONDS,
+  // In the lantern show, each new burst's front: a bright ring that races out to where its hot stars
+  // will light lanterns (`sparkReach` of its scale) over BURST_RING_SECONDS,
   // easing out as the stars slow, and fades; a held burst's ring is wider and brighter, so a big
   // burst reads as big from its first frames (it opened as a white ball, like a dud).
-  for (let k = Math.max(0, show.flashCount - FLASHES); k < show.flashCount; k++) {
+  for (let k = lanternShow ? Math.max(0, show.flashCount - FLASHES) : show.flashCount; k < show.flashCount; k++) {
     const f = 4 * (k % FLASHES),
       age = world.time - show.flashes[f + 2]!;
     if (age < 0 || age >= BURST_RING_SECONDS) continue;
@@ -640,9 +640,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
       x = cam.toScreenX(show.flashes[f]!),
       y = cam.toScreenY(show.flashes[f + 1]!);
     const big = Math.min(1, (scale - 1) / 2);
-    const reach = lanternShow
-      ? sparkReach(LEVELS[run.level]!.shell, Math.max(1, scale)).side * show.params.sky.width
-      : FREE_RING_SECONDS * BURST_SPEED * show.reach * burstSize(Math.max(1, scale));
+    const reach = sparkReach(LEVELS[run.level]!.shell, Math.max(1, scale)).side * show.params.sky.width;
     const R = cam.toScreenLength(reach) * (1 - (1 - u) ** 3);
     if (k === show.flashCount - 1) burstRingShown = { scale, reach: cam.toScreenLength(reach), radius: R, age };
     overlay.circle(x, y, R).stroke({ width: 2 + 3 * big, color: big > 0.5 ? 0xfff0c0 : 0xffe08a, alpha: (0.35 + 0.45 * big) * (1 - u) });
