@@ -469,7 +469,8 @@ describe('fireworks: the lantern show', () => {
     // (Paused there: whenever a frame is drawn, the row it writes says so.)
     expect(await g.page.evaluate((t) => (window.game as unknown as Stepping).world.time - t, litAt)).toBeLessThan(0.5);
     expect(await g.page.evaluate(() => (window.game as unknown as LanternGame).lanterns().glow[0])).toBeLessThan(1);
-    await g.waitFor(() => /Shells 3/.test(document.querySelector('[data-hud="lanterns"]')?.textContent ?? ''), null);
+    // (Waited for whole: a frame drawn after the tap but before these steps already said "Shells 3".)
+    await g.waitFor(() => /Lit 1\/4 · Shells 3/.test(document.querySelector('[data-hud="lanterns"]')?.textContent ?? ''), null);
     expect(await status.textContent()).toMatch(/Lit 1\/4 · Shells 3/);
     // A tap on empty sky, far from every lantern: when its burst's stars are cold it has lit nothing,
     // and the page says so near it and in the row.
