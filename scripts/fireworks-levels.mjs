@@ -18,6 +18,10 @@
 //   every 0.1 s over a swing, a held shell aimed at the cue's point, on every seed and in both skies,
 //   and let go then, lights the meeting pair and the lantern above; prints the share that do where
 //   the cue says "let go now!" (release >= 0.5) and where its ring shows for a release at all.
+// --random[=N]: how often a newcomer's aims earn three stars: N tries (default 30) per level and sky,
+//   each firing par shells 1.6 s apart, every shell at a random point within 0.08 W of a random
+//   lantern still dark (where it is at launch, not where it will be), held a random time in
+//   [0, MAX_HOLD] where the level allows holding; prints the share that lit every lantern.
 // Takes a minute or two.
 import { importSource } from './build.mjs';
 
@@ -39,7 +43,8 @@ for (const n of levels)
   if (!(Number.isInteger(n) && n >= 1 && n <= LEVELS.length))
     throw new RangeError(`fireworks-levels: levels are 1 to ${LEVELS.length}, got ${n}`);
 const chosen = levels.length ? levels : LEVELS.map((_, i) => i + 1);
-const both = !args.includes('--reach') && !args.includes('--par') && !args.includes('--meet');
+const randomArg = args.find((a) => a.startsWith('--random'));
+const both = !args.includes('--reach') && !args.includes('--par') && !args.includes('--meet') && !randomArg;
 
 /** A fresh quiet show in `sky` (one generation: the crackles light nothing). */
 function newShow(sky, seed) {
@@ -132,18 +137,19 @@ const PLANS = [
     { group: [0, 1], hold: true, at: 0, lift: 0 },
     { group: [2, 3], hold: true, at: 0, lift: 0 },
   ],
-  // 3. Drifting: each lantern at its ghost (where it will be after the fuse), launched a second apart.
+  // 3. Drifting: the passing pair with one shell where their ghosts meet (closest at 1.25 s: launched
+  //    a fuse earlier), then each lone lantern at its ghost (where it will be after the fuse).
   [
-    { group: [0], hold: false, at: 0, lift: 0 },
-    { group: [1], hold: false, at: 1, lift: 0 },
-    { group: [2], hold: false, at: 2, lift: 0 },
+    { group: [2, 3], hold: false, at: 1.25 - FUSE, lift: 0 },
+    { group: [0], hold: false, at: 1, lift: 0 },
+    { group: [1], hold: false, at: 2, lift: 0 },
   ],
-  // 4. Willows: a quick willow right on the top lantern of each column, as the tip says (its stars
-  //    fall onto the lower one, 0.16 W under it).
+  // 4. Willows: a held willow on the top lantern of each column, as the tip says (its stars fall
+  //    onto the lower one, 0.28 to 0.3 W under it, beyond a quick willow's reach).
   [
-    { group: [0, 1], hold: false, at: 0, lift: 0.08 },
-    { group: [2, 3], hold: false, at: 0, lift: 0.08 },
-    { group: [4, 5], hold: false, at: 0, lift: 0.08 },
+    { group: [0, 1], hold: true, at: 0, lift: 0.12 },
+    { group: [2, 3], hold: true, at: 0, lift: 0.12 },
+    { group: [4, 5], hold: true, at: 0, lift: 0.12 },
   ],
   // 5. Finale: the two high side lanterns one each, and a held burst between the middle lantern and
   //    the low pair when they meet (closest a quarter period into their swing, 1.5 s), MEET_LIFT over
@@ -262,4 +268,48 @@ if (args.includes('--meet'))
       );
     }
   }
+if (randomArg) {
+  const tries = randomArg.includes('=') ? Number(randomArg.split('=')[1]) : 30;
+  if (!(Number.isInteger(tries) && tries > 0))
+    throw new RangeError(`fireworks-levels: --random=N needs an integer N > 0, got ${randomArg}`);
+  // A small seeded generator (mulberry32), so the shares are the same run to run.
+  let state = 12345;
+  const rand = () => {
+    state = (state + 0x6d2b79f5) | 0;
+    let t = Math.imul(state ^ (state >>> 15), 1 | state);
+    t = (t + Math.imul(t ^ (t >>> 7), 61 | t)) ^ t;
+    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
+  };
+  for (const n of chosen) {
+    const level = n - 1;
+    const lv = LEVELS[level];
+    const shares = [];
+    for (const sky of SKIES) {
+      let good = 0;
+      for (let k = 0; k < tries; k++) {
+        const { world, show } = newShow(sky, SEEDS[k % SEEDS.length]);
+        const run = startLevel(level, 0);
+        const ls = lanternsOf(level, sky);
+        let fired = 0;
+        const end = (lv.par - 1) * 1.6 + FUSE + 2.5;
+        while (world.time < end && !run.lit.every(Boolean)) {
+          if (fired < lv.par && world.time >= fired * 1.6 - 1e-9) {
+            const dark = run.lit.flatMap((l, i) => (l ? [] : [i]));
+            const [lx, ly] = lanternAt(ls[dark[Math.floor(rand() * dark.length)]], sky, world.time);
+            const a = 2 * Math.PI * rand(),
+              d = 0.08 * sky.width * Math.sqrt(rand());
+            launchShell(world, show, lx + d * Math.cos(a), ly + d * Math.sin(a), lv.hold ? rand() * MAX_HOLD : 0, lv.shell);
+            countShell(run);
+            fired++;
+          }
+          stepFireworks(world, show);
+          lightFromSparks(world, show, run);
+        }
+        if (run.lit.every(Boolean)) good++;
+      }
+      shares.push(`${sky.name} ${good}/${tries}`);
+    }
+    console.log(`level ${n} ${lv.name}: random aims near dark lanterns that light it in par ${lv.par}: ${shares.join(', ')}`);
+  }
+}
 process.exitCode = failed > 0 ? 1 : 0;

@@ -12,7 +12,7 @@
  * height). A wide sky (a desktop's) plays each level's `lanterns`; a tall one (a phone held upright,
  * `isTall`) plays its `tall` layout, the same lanterns spread over about 0.9 W of height instead of
  * 0.4 W, so the play fills the phone's screen rather than a band across its middle. Each tall layout
- * keeps its level's idea (the pairs 0.4 W apart, the willow columns 0.16 W tall, the finale's low
+ * keeps its level's idea (the pairs 0.4 W apart, the willow columns 0.28 to 0.3 W tall, the finale's low
  * pair meeting 0.32 W under the middle lantern) and moves the rest apart. Stars by shells used
  * against the level's par, the fewest shells that light it (found by search over burst points and
  * holds on maps of where the real bursts' hot stars go; see each level).
@@ -99,7 +99,9 @@ export interface LanternLevel {
  * The levels, each needing a new idea. Figures from maps of where the hot stars of real bursts go
  * (3 seeds, 64 m phone sky and 120 m desktop sky, every 0.01 W, five holds), searched for the fewest
  * shells; "spray" is the chance that par shells at random points of the band, at random holds,
- * light everything.
+ * light everything. A newcomer's aims (scripts/fireworks-levels.mjs --random: par shells each within
+ * 0.08 W of a dark lantern where it is, at random holds) light a level in par 0 to 1 times in 30,
+ * every level, in both skies: three stars take the level's idea, seen and timed.
  * 1. Quick shells only, four lanterns and four shells: two far apart, one shell each, and a close
  *    pair (0.26 W) a quick burst right between lights together (aims within 0.06 W of the middle
  *    that light both, scripts/fireworks-levels.mjs --par: 20/49 desktop, 35/49 phone; at 0.18 W
@@ -111,13 +113,12 @@ export interface LanternLevel {
  *    that leaves the outer two for a shell each (3, not 2): a shell a lantern runs out again, and
  *    three stars take both held pairs. Spray 0-0.2 %. The tip says only that a hold makes a bigger
  *    burst: which lanterns pair up is for the player to see.
- * 3. Quick shells only, drifting lanterns: lead them by the fuse (two shells can do it when two
- *    swing close). The page draws each one's ghost where it will be when the fuse runs out. Over the
- *    1.2 s fuse their swings carry them up to 0.13 to 0.24 W (2 A sin(pi FUSE / period)): the
- *    middle one, from where it starts, further than a quick burst reaches, so a shell aimed where
- *    it is misses it.
- * 4. Willows only: their stars rise little and fall far, so a burst at the top of a column of two
- *    (0.16 W apart, a quick burst's stars reach 0.21 W down) lights both, and a burst between columns lights neither pair (spray 0.2-0.6 %).
+ * 3. Quick shells only, drifting lanterns: lead them by the fuse (the page draws each one's ghost
+ *    where it will be when the fuse runs out), and four lanterns for par 3: two swing past each
+ *    other, one over the other, every 5 s, and only a shell timed to burst as they pass lights both.
+ * 4. Willows only: their stars rise little and fall far, so a held burst at the top of a column of
+ *    two (0.28 to 0.3 W apart: a quick burst's stars reach 0.21 W down, a held one's 0.33) lights
+ *    both, a quick one only the top, and a burst between columns lights neither pair.
  * 5. Three lanterns high and two that drift towards each other low: when the low two meet, one burst
  *    under the middle lantern lights three (spray 0.3-1.1 %; 2 shells at best, par 3).
  */
@@ -169,52 +170,55 @@ export const LEVELS: readonly LanternLevel[] = Object.freeze([
   },
   {
     name: 'Drifting',
-    tip: `on a ghost: the lantern in ${FUSE} s`,
+    tip: 'on a ghost; where two pass, both light',
     par: 3,
     shells: 5,
     shell: 'peony',
     hold: false,
     lanterns: [
-      { x: 0.17, y: -0.1, drift: 0.1, period: 4.6, phase: 0 },
-      { x: 0.5, y: 0.16, drift: 0.17, period: 4.8, phase: -0.8 },
-      { x: 0.83, y: -0.1, drift: 0.1, period: 5.5, phase: 3 },
+      { x: 0.14, y: -0.15, drift: 0.08, period: 4.6, phase: 0 },
+      { x: 0.86, y: -0.15, drift: 0.08, period: 5.5, phase: 3 },
+      { x: 0.33, y: 0.17, drift: 0.16, period: 5, phase: 0 },
+      { x: 0.67, y: 0.09, drift: 0.16, period: 5, phase: Math.PI },
     ],
+    // The passing pair 0.08 W apart in height as wide, the lone two 0.42 W and more from it.
     tall: [
-      { x: 0.17, y: 0.36, drift: 0.1, period: 4.6, phase: 0 },
-      { x: 0.5, y: -0.02, drift: 0.17, period: 4.8, phase: -0.8 },
-      { x: 0.83, y: -0.4, drift: 0.1, period: 5.5, phase: 3 },
+      { x: 0.2, y: 0.44, drift: 0.1, period: 4.6, phase: 0 },
+      { x: 0.8, y: -0.46, drift: 0.1, period: 5.5, phase: 3 },
+      { x: 0.3, y: 0.04, drift: 0.19, period: 5, phase: 0 },
+      { x: 0.7, y: -0.04, drift: 0.19, period: 5, phase: Math.PI },
     ],
   },
   {
     name: 'Willows',
-    tip: 'on a top lantern: willows fall',
+    tip: 'and hold on a top lantern: willows fall',
     par: 3,
     shells: 5,
     shell: 'willow',
     hold: true,
     lanterns: [
-      { x: 0.1, y: 0.09 },
-      { x: 0.1, y: -0.07 },
-      { x: 0.5, y: 0.09 },
-      { x: 0.5, y: -0.07 },
-      { x: 0.9, y: 0.09 },
-      { x: 0.9, y: -0.07 },
+      { x: 0.1, y: 0.13 },
+      { x: 0.1, y: -0.15 },
+      { x: 0.5, y: 0.13 },
+      { x: 0.5, y: -0.15 },
+      { x: 0.9, y: 0.13 },
+      { x: 0.9, y: -0.15 },
     ],
-    // Three columns of two, 0.16 W tall (within a quick willow's 0.21 W reach down, so a click
-    // right on a top lantern lights its column, as the tip says) and 0.4 W apart, the middle one
-    // lower on a phone: a burst between columns reaches neither pair.
+    // Three columns of two, 0.3 W tall (beyond a quick willow's reach down, within a held one's, so
+    // only a held burst on a top lantern lights its column) and 0.4 W apart, the middle one lower on
+    // a phone: a burst between columns reaches neither pair.
     tall: [
-      { x: 0.1, y: 0.4 },
-      { x: 0.1, y: 0.24 },
-      { x: 0.5, y: -0.12 },
-      { x: 0.5, y: -0.28 },
-      { x: 0.9, y: 0.4 },
-      { x: 0.9, y: 0.24 },
+      { x: 0.1, y: 0.46 },
+      { x: 0.1, y: 0.16 },
+      { x: 0.5, y: -0.16 },
+      { x: 0.5, y: -0.46 },
+      { x: 0.9, y: 0.46 },
+      { x: 0.9, y: 0.16 },
     ],
   },
   {
     name: 'Finale',
-    tip: 'and hold on the ring, let go when told',
+    tip: 'and hold in the gold ring till “now!”',
     par: 3,
     shells: 5,
     shell: 'peony',

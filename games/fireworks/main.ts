@@ -151,6 +151,10 @@ const params = {
 const TRAILS = { duration: 0.13, width: 0.55, alpha: 0.7 };
 /** How long a burst's flash lasts, s. */
 const FLASH_SECONDS = 0.25;
+/** How long a burst's front ring takes to race out to its stars' reach, s (world time). */
+const BURST_RING_SECONDS = 0.5;
+/** The newest burst's front ring as last drawn (tests): its burst scale, the reach it races to and its radius now, px, and its age, s. */
+let burstRingShown = { scale: 0, reach: 0, radius: 0, age: Number.NaN };
 /** Bursts whose flash the last frame drew. */
 let flashing = 0;
 
@@ -622,6 +626,26 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
     sprite.width = sprite.height = 5 * r;
     sprite.alpha = fade;
   }
+  burstRingShown = { scale: 0, reach: 0, radius: 0, age: Number.NaN };
+  // In the lantern show, each new burst's front: a bright ring that races out to where its hot stars
+  // will light lanterns (`sparkReach` of its scale) over BURST_RING_SECONDS,
+  // easing out as the stars slow, and fades; a held burst's ring is wider and brighter, so a big
+  // burst reads as big from its first frames (it opened as a white ball, like a dud).
+  for (let k = lanternShow ? Math.max(0, show.flashCount - FLASHES) : show.flashCount; k < show.flashCount; k++) {
+    const f = 4 * (k % FLASHES),
+      age = world.time - show.flashes[f + 2]!;
+    if (age < 0 || age >= BURST_RING_SECONDS) continue;
+    const u = age / BURST_RING_SECONDS,
+      scale = show.flashes[f + 3]!,
+      x = cam.toScreenX(show.flashes[f]!),
+      y = cam.toScreenY(show.flashes[f + 1]!);
+    const big = Math.min(1, (scale - 1) / 2);
+    const reach = sparkReach(LEVELS[run.level]!.shell, Math.max(1, scale)).side * show.params.sky.width;
+    const R = cam.toScreenLength(reach) * (1 - (1 - u) ** 3);
+    if (k === show.flashCount - 1) burstRingShown = { scale, reach: cam.toScreenLength(reach), radius: R, age };
+    overlay.circle(x, y, R).stroke({ width: 2 + 3 * big, color: big > 0.5 ? 0xfff0c0 : 0xffe08a, alpha: (0.35 + 0.45 * big) * (1 - u) });
+    if (big > 0) overlay.circle(x, y, 0.8 * R).stroke({ width: 1.5, color: 0xffb060, alpha: 0.5 * big * (1 - u) });
+  }
   drawLanterns(world);
   drawMisses(world);
   drawCombos(world);
@@ -736,7 +760,8 @@ function drawCharge(): void {
     Math.min(cam.width - chargeLabel.width / 2 - 4, Math.max(chargeLabel.width / 2 + 4, pointerX)),
     Math.max(chargeLabel.height + 2, pointerY - FUSE_RING - 10),
   );
-  chargeLabel.visible = true;
+  // On the finale's meeting the label under its ring says when to let go; this one would contradict it.
+  chargeLabel.visible = !(lanternShow && meetLabel.visible);
 }
 
 // ---- Misses: said where the burst was ---------------------------------------------------------------
@@ -1003,22 +1028,83 @@ meetLabel.visible = false;
 app.stage.addChild(meetLabel);
 /** The meeting cue as drawn last frame (tests): how near a shell let go now bursts to the meeting (0: no ring), the burst point, m, and the label ('' none). */
 let meetShown = { release: 0, x: 0, y: 0, label: '' };
+/**
+ * The meeting cue's release (how near a shell let go then bursts to the meeting, 1 at the closest)
+ * in the frame its label first said "let go now!" for the current press or meeting, NaN before (tests).
+ */
+let letGoRelease = Number.NaN;
+/** World time the meeting cue was last drawn, s: the frame's step, by which the cue looks ahead. */
+let meetDrawnAt = Number.NaN;
+/**
+ * How far ahead the meeting's "let go now!" looks, s (world time), besides a frame's step: a
+ * player's reaction, so the word comes before the moment to let go, not as it passes.
+ */
+const MEET_REACTION = 0.25;
+
+/**
+ * When the finale's next meeting ring shows (`meetCue` non-null), world time, s, looking up to a
+ * swing ahead of `t` (the level's clock) in 0.05 s steps; NaN if none (the pair is lit).
+ */
+function nextMeeting(t: number): number {
+  if (nextMeetCache.run === run && nextMeetCache.at > t) return nextMeetCache.at;
+  let at = Number.NaN;
+  for (let u = t; u < t + 12; u += 0.05)
+    if (meetCue(run.level, show.params.sky, u, run.lit)) {
+      at = u;
+      break;
+    }
+  nextMeetCache = { run, at };
+  return at;
+}
+/** The last `nextMeeting` found, for the run it was found in (it holds until that time comes). */
+let nextMeetCache: { run: LanternRun | null; at: number } = { run: null, at: Number.NaN };
 
 /**
  * The finale's cue (./lanterns.ts meetCue), `t` s world time, lantern radius `r` px: from a hold and a
  * fuse before the low pair meets until it has, a gold line joins their ghosts and a pulsing ring marks
  * where to burst (over the middle of the pair and the lantern above, then), brighter as they close.
- * Under it "press and hold here" while a press held fully would burst as they meet ("keep holding…"
- * while pressed), then "let go now!" while a shell let go would; while they are meeting, a line joins the lanterns themselves.
+ * Before that, a faint ring where the next meeting's ring will come up, "hold here in N s" under it.
+ * Under the ring "press and hold here" while a press held fully would burst as they meet ("keep
+ * holding…" while pressed), then "let go now!" from MEET_REACTION and a frame's step before a shell
+ * let go would burst as they meet, or as soon as the press has grown its biggest burst while a
+ * shell let go then still bursts in the ring's time; while they are meeting, a line joins the
+ * lanterns themselves.
  */
 function drawMeeting(t: number, r: number): void {
   const cam = renderer.camera;
-  const cue = run.stars === 0 ? meetCue(run.level, show.params.sky, t - run.start, run.lit) : null;
-  const label = !cue ? '' : cue.release >= 0.5 ? 'let go now!' : pointerId !== -1 ? 'keep holding…' : 'press and hold here';
-  meetLabel.visible = label !== '';
-  if (label && meetLabel.text !== label) meetLabel.text = label;
+  const frameStep = Number.isNaN(meetDrawnAt) ? 0 : Math.min(0.5, Math.max(0, t - meetDrawnAt));
+  meetDrawnAt = t;
+  const lead = MEET_REACTION + frameStep;
+  const meet = LEVELS[run.level]!.meet;
+  const sky = show.params.sky;
+  const level = t - run.start;
+  const cue = run.stars === 0 ? meetCue(run.level, sky, level, run.lit) : null;
+  const ahead = cue ? meetCue(run.level, sky, level + lead, run.lit) : null;
+  const pressed = pointerId !== -1;
+  const full = pressed && (performance.now() - pressedAt) / 1000 >= MAX_HOLD;
+  const letGo = !!ahead && (ahead.release >= 0.5 || (full && ahead.release > 0));
+  const label = !cue ? '' : letGo ? 'let go now!' : pressed ? 'keep holding…' : 'press and hold here';
+  if (label === 'let go now!' && meetShown.label !== 'let go now!') letGoRelease = cue!.release;
   meetShown = { release: cue?.release ?? 0, x: cue?.x ?? 0, y: cue?.y ?? 0, label };
-  if (!cue) return;
+  if (!cue) {
+    // The ring to come: where it will show, and in how long, so the finale's tip names something seen.
+    const next = run.stars === 0 && meet && !run.lit[meet.pair[0]] && !run.lit[meet.pair[1]] ? nextMeeting(level) : Number.NaN;
+    const soon = Number.isNaN(next) ? null : meetCue(run.level, sky, next, run.lit);
+    meetLabel.visible = !!soon;
+    if (!soon) return;
+    const x = cam.toScreenX(soon.x),
+      y = cam.toScreenY(soon.y);
+    overlay.circle(x, y, r * 1.3).stroke({ width: 2, color: 0xffe08a, alpha: 0.35 });
+    const text = `hold here in ${Math.max(1, Math.ceil(next - level))} s`;
+    if (meetLabel.text !== text) meetLabel.text = text;
+    meetLabel.alpha = 0.75;
+    meetLabel.position.set(x, y + r * 1.6 + 4);
+    meetShown.label = text;
+    return;
+  }
+  meetLabel.visible = true;
+  meetLabel.alpha = 1;
+  if (meetLabel.text !== label) meetLabel.text = label;
   const gold = 0xffe08a,
     k = Math.max(cue.release, 0.4 * cue.press);
   const [ax, ay, bx, by] = cue.ghosts;
@@ -1316,8 +1402,10 @@ shell.expose({
   lanternBoxes: () => lanternBoxes(true),
   /** Whether the pause overlay showed in the last frame (the player paused with P or the pause button). */
   pauseShown: (): boolean => pause.visible,
-  /** The finale's meeting cue as drawn last frame: release (how near a shell let go now bursts to the meeting, 0 none), burst point (m), label. */
-  meeting: () => ({ ...meetShown }),
+  /** The finale's meeting cue as drawn last frame: release (how near a shell let go now bursts to the meeting, 0 none), burst point (m), label, and the release when the label last turned to "let go now!" (NaN never). */
+  meeting: () => ({ ...meetShown, letGoRelease }),
+  /** The newest burst's front ring as drawn last frame: burst scale (0: none drawn), the reach it races out to and its radius now, CSS px, its age, s. */
+  burstRing: () => ({ ...burstRingShown }),
   /** The lantern show: mode, level (0-based), lit lanterns, shells, stars (0 while playing), best stars per level, lantern positions (m). */
   lanterns: () => ({
     on: lanternShow,

@@ -19,6 +19,7 @@
  */
 import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { sparkReach } from '../../games/fireworks/lanterns';
 import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
 import { checkPageContract } from './page-contract';
 
@@ -468,7 +469,8 @@ describe('fireworks: the lantern show', () => {
     // (Paused there: whenever a frame is drawn, the row it writes says so.)
     expect(await g.page.evaluate((t) => (window.game as unknown as Stepping).world.time - t, litAt)).toBeLessThan(0.5);
     expect(await g.page.evaluate(() => (window.game as unknown as LanternGame).lanterns().glow[0])).toBeLessThan(1);
-    await g.waitFor(() => /Shells 3/.test(document.querySelector('[data-hud="lanterns"]')?.textContent ?? ''), null);
+    // (Waited for whole: a frame drawn after the tap but before these steps already said "Shells 3".)
+    await g.waitFor(() => /Lit 1\/4 · Shells 3/.test(document.querySelector('[data-hud="lanterns"]')?.textContent ?? ''), null);
     expect(await status.textContent()).toMatch(/Lit 1\/4 · Shells 3/);
     // A tap on empty sky, far from every lantern: when its burst's stars are cold it has lit nothing,
     // and the page says so near it and in the row.
@@ -571,6 +573,101 @@ describe('fireworks: the lantern show', () => {
     expect(g.errors).toEqual([]);
     await g.close();
   });
+});
+
+/** The finale's meeting cue and the newest burst's front ring, as games/fireworks/main.ts puts them on window.game. */
+type Finale = LanternGame & {
+  meeting(): { release: number; x: number; y: number; label: string; letGoRelease: number };
+  burstRing(): { scale: number; reach: number; radius: number; age: number };
+  charge(): { pressed: boolean; label: string };
+};
+
+/**
+ * Plays the finale's meeting as a newcomer told "hold in the gold ring till now!": waits for the
+ * faint ring's countdown, presses on the ring when it says "press and hold here" (a mouse, or with
+ * `touch` a finger through CDP), lets go when it says "let go now!", and returns what it saw.
+ */
+async function playMeeting(g: GamePage, touch: boolean) {
+  await g.page.evaluate(() => (window.game as unknown as Finale).playLevel(4));
+  // Before the pair comes near, a ring where it will be and how long until then: the tip names
+  // something seen. (The level opens with the pair near: the countdown comes after that meeting.)
+  const countdown = await g.waitFor(
+    () => {
+      const m = (window.game as unknown as Finale).meeting();
+      return /^hold here in \d+ s$/.test(m.label) ? m.label : null;
+    },
+    null,
+    60_000,
+  );
+  const cue = await g.waitFor(
+    () => {
+      const m = (window.game as unknown as Finale).meeting();
+      return m.label === 'press and hold here' ? m : null;
+    },
+    null,
+    60_000,
+  );
+  const p = await g.worldToPage(cue.x, cue.y);
+  const cdp = touch ? await g.page.context().newCDPSession(g.page) : null;
+  if (cdp) await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: [{ x: p.x, y: p.y, id: 1 }] });
+  else {
+    await g.page.mouse.move(p.x, p.y);
+    await g.page.mouse.down();
+  }
+  // A frame that says "let go now!" while pressed (the first such frame's release is kept by the
+  // page): what the fuse ring's own label said then.
+  const letGo = await g.waitFor(
+    () => {
+      const w = window.game as unknown as Finale;
+      const m = w.meeting();
+      const charge = w.charge();
+      return m.label === 'let go now!' && charge.pressed ? { ...m, charge } : null;
+    },
+    null,
+    60_000,
+  );
+  if (cdp) await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
+  else await g.page.mouse.up();
+  // The held burst's front ring, from the first frame it is drawn: racing out to the held reach.
+  const ring = await g.waitFor(
+    () => {
+      const r = (window.game as unknown as Finale).burstRing();
+      return r.scale > 1 ? r : null;
+    },
+    null,
+    60_000,
+  );
+  const sky = await g.page.evaluate(() => (window.game as unknown as Finale).show.params.sky);
+  const a = await g.worldToPage(0, 0),
+    b = await g.worldToPage(sky.width, 0);
+  return { countdown, letGo, ring, pxPerWidth: b.x - a.x };
+}
+
+describe('fireworks: the finale', () => {
+  for (const [name, viewport, touch] of [
+    ['desktop 1280 x 800', { width: 1280, height: 800 }, false],
+    ['phone 390 x 844, touch', { width: 390, height: 844 }, true],
+  ] as const)
+    it(`${name}: a ring counts down to the meeting; held on it, "let go now!" comes before the moment (the fuse ring's label gives way to it); the held burst's front ring races to its reach from its first frame`, async () => {
+      const g = await h.openGame('fireworks', { viewport, touch, query: { opening: 0, sparks: 60, generations: 1 } });
+      const seen = await playMeeting(g, touch);
+      expect(seen.countdown).toMatch(/^hold here in \d+ s$/);
+      // The stranger let go when the fuse ring said "biggest burst · let go", before the cue's "let go
+      // now!" (which waited for a shell let go then to burst halfway into the meeting): the cue now
+      // leads by a reaction and a frame, and the fuse ring's label is hidden while it speaks.
+      expect(seen.letGo.letGoRelease).toBeLessThan(0.5);
+      expect(seen.letGo.charge).toEqual({ pressed: true, heard: expect.any(Number), label: '' });
+      // The held burst (scale above 1.5: held a quarter of MAX_HOLD or more) draws its front ring the frame it bursts,
+      // racing out to a held peony's reach in the sky (sparkReach, 0.125 W x burstSize^1.25), well
+      // beyond a quick one's 0.125 W.
+      expect(seen.ring.scale).toBeGreaterThan(1.5);
+      expect(seen.ring.age).toBeLessThan(0.5);
+      const held = sparkReach('peony', seen.ring.scale).side * seen.pxPerWidth;
+      expect(seen.ring.reach).toBeCloseTo(held, 0);
+      expect(seen.ring.reach).toBeGreaterThan(1.15 * 0.125 * seen.pxPerWidth);
+      expect(seen.ring.radius).toBeLessThanOrEqual(seen.ring.reach + 1e-6);
+      expect(g.errors).toEqual([]);
+    });
 });
 
 describe('black hole', () => {

@@ -116,7 +116,7 @@ describe('lantern rules', () => {
         [0, 1],
         [2, 3],
       ],
-      [],
+      [[2, 3]],
       [
         [0, 1],
         [2, 3],
@@ -283,18 +283,40 @@ describe('real shells in the show (64 m x 108 m phone sky, 300 stars a burst)', 
     expect(glowOf(r.run, r.litAt.indexOf(first), first + GLOW_RISE / 2)).toBeLessThan(1);
     expect(shownLit(r.run, 100)).toBe(3);
   });
-  it("level 3: a shell fired at each drifting lantern's ghost (where it will be after the fuse, as the page draws it) lights it; one fired at the lantern does not", () => {
+  it("level 3: shells at the lone lanterns' ghosts and one where the passing pair's ghosts meet light all four in par 3; the same shell while the pair is apart lights neither", () => {
+    // The pair swings towards each other with period 5 s, closest (0.08 W apart, one over the other)
+    // at 1.25 s and 6.25 s, farthest (0.76 W apart) at 3.75 s: a shell launched at 0 bursts as they
+    // meet, one launched at 2.5 s bursts with them farthest apart.
     const ls = lanternsOf(2, phone);
     const ghosts = ls.map((l) => lanternAt(l, phone, FUSE));
-    expect(fire(2, ...ghosts[0]!, 0, ghosts[1]!, ghosts[2]!)).toEqual([true, true, true]);
-    // The middle lantern swings fastest: aimed where it is now, the burst comes after it has gone.
-    expect(fire(2, ...lanternAt(ls[1]!, phone, 0), 0)).toEqual([false, false, false]);
+    const meet: [number, number] = [(ghosts[2]![0] + ghosts[3]![0]) / 2, (ghosts[2]![1] + ghosts[3]![1]) / 2];
+    expect(Math.hypot(ghosts[2]![0] - ghosts[3]![0], ghosts[2]![1] - ghosts[3]![1]) / phone.width).toBeLessThan(0.1);
+    expect(fire(2, ...ghosts[0]!, 0, ghosts[1]!, meet)).toEqual([true, true, true, true]);
+    const { world, show } = createFireworks({ sky: phone, opening: 0, autoShow: false, generations: 1, seed: 5 });
+    const run = startLevel(2, 0);
+    while (world.time < 2.5) stepFireworks(world, show);
+    const apart = ls.slice(2).map((l) => lanternAt(l, phone, world.time + FUSE));
+    expect(Math.abs(apart[0]![0] - apart[1]![0]) / phone.width).toBeGreaterThan(0.7);
+    expect(launchShell(world, show, ...meet, 0, 'peony')).toBeGreaterThan(0);
+    for (let i = 0; i < 240; i++) {
+      stepFireworks(world, show);
+      lightFromSparks(world, show, run);
+    }
+    expect(run.lit).toEqual([false, false, false, false]);
   });
   it('level 5: a shell held on the meeting cue and let go when it says so (from the start, 0.3 s before its middle) lights the pair and the lantern above', () => {
     const finale = LEVELS.length - 1;
     const cue = meetCue(finale, phone, 0, [false, false, false, false, false])!;
     expect(cue.release).toBeGreaterThanOrEqual(0.5);
     expect(fire(finale, cue.x, cue.y, MAX_HOLD)).toEqual([false, true, false, true, true]);
+  });
+  it('level 4: a quick willow on a top lantern lights only it (its column is 0.3 W tall); one held 1.5 s a little above it lights the column', () => {
+    const ls = lanternsOf(3, phone);
+    const [tx, ty] = lanternAt(ls[0]!, phone, 0);
+    const [, by] = lanternAt(ls[1]!, phone, 0);
+    expect((ty - by) / phone.width).toBeCloseTo(0.3, 9);
+    expect(fire(3, tx, ty, 0)).toEqual([true, false, false, false, false, false]);
+    expect(fire(3, tx, ty - 0.03 * phone.width, MAX_HOLD)).toEqual([true, true, false, false, false, false]);
   });
   it('level 2: between the lower pair (0.4 W apart), a quick burst lights neither; one held 1.5 s lights both', () => {
     const ls = lanternsOf(1, phone);
