@@ -139,10 +139,12 @@ export const ASSIST = Object.freeze({
   /**
    * How long a tap of the stick sideways holds its bank, s (its age): a tap of a bank key (or a
    * short touch of the phone's stick) rolls the aircraft far enough, for long enough, to turn it
-   * about 3 degrees; a touch up to `holdFade` holds less for less time (assist.ts letGoHold), so the
-   * heading turned grows with the hold (2.9 degrees at 0.1 s, 3.0 at 0.4, 4.2 at 0.5, 10 at 1 s).
+   * about 2 degrees, and the wings then roll level, soon after the release as the tips promise
+   * ("let go to fly straight"); a touch up to `holdFade` holds less for less time (assist.ts
+   * letGoHold), so the heading turned grows with the hold (1.9 degrees at 0.1 s, 2.2 at 0.4, 3.0
+   * at 0.5, 10 at 1 s).
    */
-  tapTime: 1.1,
+  tapTime: 0.75,
   /**
    * Longest touch of the stick sideways that is a tap, s: one eased off later holds less
    * (letGoHold) and its wings never roll on past the bank they have, so the turn stops where the
@@ -450,4 +452,25 @@ export function throttleStep(throttle: number, direction: number): number {
   const k = (throttle + direction * least) / step;
   const n = direction > 0 ? Math.ceil(k - 1e-9) : Math.floor(k + 1e-9);
   return Math.min(1, Math.max(0, Math.round(n * step * 1e9) / 1e9));
+}
+
+/** Dead zone of the phone's stick (`stickResponse`), a share of its full travel: a finger resting near the centre asks for nothing. */
+export const STICK_DEAD_ZONE = 0.05;
+/** Exponent of the phone's stick response past the dead zone (`stickResponse`): above 1, gentle near the centre and full at the rim. */
+export const STICK_EXPONENT = 1.7;
+
+/**
+ * The phone stick's response: its deflection `x` (right), `y` (up), each in [-1, 1], turned into the
+ * pilot's input along the same direction, its size d (the deflection's length, at most 1) mapped to
+ * ((d - STICK_DEAD_ZONE) / (1 - STICK_DEAD_ZONE)) ^ STICK_EXPONENT: 0 inside the dead zone, a
+ * quarter of full at half travel (a fine correction), full at the rim. Linear, half a push asked
+ * for half the bank (35 degrees) and swung a ring off the phone's narrow view.
+ * @throws RangeError on an `x` or `y` that is not finite.
+ */
+export function stickResponse(x: number, y: number): { x: number; y: number } {
+  if (!Number.isFinite(x) || !Number.isFinite(y)) throw new RangeError(`stickResponse: x and y must be finite, got ${x}, ${y}`);
+  const d = Math.min(1, Math.hypot(x, y));
+  if (d <= STICK_DEAD_ZONE) return { x: 0, y: 0 };
+  const k = ((d - STICK_DEAD_ZONE) / (1 - STICK_DEAD_ZONE)) ** STICK_EXPONENT / Math.hypot(x, y);
+  return { x: x * k, y: y * k };
 }
