@@ -139,12 +139,10 @@ export const ASSIST = Object.freeze({
   /**
    * How long a tap of the stick sideways holds its bank, s (its age): a tap of a bank key (or a
    * short touch of the phone's stick) rolls the aircraft far enough, for long enough, to turn it
-   * about 2 degrees, and the wings then roll level, soon after the release as the tips promise
-   * ("let go to fly straight"); a touch up to `holdFade` holds less for less time (assist.ts
-   * letGoHold), so the heading turned grows with the hold (1.9 degrees at 0.1 s, 2.2 at 0.4, 3.0
-   * at 0.5, 10 at 1 s).
+   * about 3 degrees; a touch up to `holdFade` holds less for less time (assist.ts letGoHold), so the
+   * heading turned grows with the hold (2.9 degrees at 0.1 s, 3.0 at 0.4, 4.2 at 0.5, 10 at 1 s).
    */
-  tapTime: 0.75,
+  tapTime: 1.1,
   /**
    * Longest touch of the stick sideways that is a tap, s: one eased off later holds less
    * (letGoHold) and its wings never roll on past the bank they have, so the turn stops where the

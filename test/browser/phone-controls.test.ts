@@ -456,7 +456,7 @@ describe('phone controls', () => {
     });
     const after = await g.waitFor(() => {
       const el = document.querySelector<HTMLElement>('[data-hud="flight-status"]')!;
-      if (!(el.children[0]!.textContent ?? '').includes('(+60 s)')) return null;
+      if (!(el.children[0]!.textContent ?? '').includes('(+30 s)')) return null;
       const lines = [...el.children].map((c) => ({ text: c.textContent ?? '', fits: c.scrollWidth <= c.clientWidth }));
       return { height: el.getBoundingClientRect().height, lines };
     }, null);

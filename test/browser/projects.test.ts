@@ -1330,7 +1330,7 @@ describe('projects', () => {
         const stars = (goal.match(/★/g) ?? []).length;
         if (goal.includes('★') || goal.includes('☆')) {
           if (stars !== Math.max(0, 3 - missed)) hud.bad.push(`stars: ${said}`);
-          if (Number(goal.match(/\(\+(\d+) s\)/)?.[1] ?? 0) !== 20 * missed) hud.bad.push(`penalty: ${said}`);
+          if (Number(goal.match(/\(\+(\d+) s\)/)?.[1] ?? 0) !== 10 * missed) hud.bad.push(`penalty: ${said}`);
         }
         const next = goal.match(/ring (\d+) of/)?.[1];
         if (next && Number(next) !== rings + missed + 1) hud.bad.push(`next ring: ${said}`);
