@@ -889,9 +889,10 @@ const pauseOverlay = createDomPauseOverlay(layout.stage, {
     shell.paused = false;
   },
 });
-// "Paused" high in the sky, off the middle, where the next ring and the path marker are.
-pauseOverlay.element.style.justifyContent = 'flex-start';
-pauseOverlay.element.style.paddingTop = '18%';
+// "Paused" low in the scene, under the aircraft: off the middle, where the next ring, its label and
+// the path marker are, and off the top, where the banners and tips are.
+pauseOverlay.element.style.justifyContent = 'flex-end';
+pauseOverlay.element.style.paddingBottom = '2%';
 /**
  * A red glow round the scene's edge for MISS_FLASH s of game time after a miss, fading (with the
  * banner and the goal line's flash, the miss is seen wherever the eye is).

@@ -1047,7 +1047,7 @@ describe('projects', () => {
       expect(after[m]!.t - base.t, trace).toBeLessThan(1);
       expect(Math.max(0, ...after.slice(0, m).map((r) => -sign * (r.x - base.x))), trace).toBeLessThan(5);
     }
-    // P pauses: the scene dims over the whole stage, "Paused" and how to resume in its middle; P again resumes.
+    // P pauses: the scene dims over the whole stage, "Paused" and how to resume low in it (under the aircraft); P again resumes.
     await g.page.keyboard.press('p');
     const shade = await pausedShade(g);
     expect(shade.text.replace(/\s+/g, ' ')).toBe('Paused P to resume');
