@@ -227,8 +227,8 @@ export type BallKind = keyof typeof BALL_POINTS;
 /**
  * How a basket went in: a `swish` touched nothing between its throw and the basket (not the rim, the
  * backboard, a wall of the box, a ramp or another ball once it had left the heap; the net does not
- * count), a `trick` shot bounced off a wall of the box (the floor included) or a ramp on its way, and
- * a `plain` one did neither (off the rim or the backboard, say).
+ * count), a `trick` shot bounced off a wall of the box (the floor included, not its top) or a ramp
+ * on its way, and a `plain` one did neither (off the rim, the backboard or the box's top, say).
  */
 export type ShotStyle = 'plain' | 'swish' | 'trick';
 

@@ -6,8 +6,8 @@
  * each basket, the clock starts with the first basket (a warm-up until then). The heap matters: a
  * pull that starts on one of its balls throws that ball, worth 2 (hoop.ts BALL_POINTS), and one of
  * them is gold (a halo, worth 5; a new one after it scores); a pull from empty space throws a new
- * basketball, worth 1. A swish (touching nothing on its way) adds 1, a trick shot off a wall of the box or
- * a ramp adds 3 (hoop.ts SHOT_BONUS, markTouches). Baskets in a row multiply (x2, x3, x4: hoop.ts streakMultiplier); a thrown
+ * basketball, worth 1. A swish (touching nothing on its way) adds 1, a trick shot off a side wall, the floor
+ * or a ramp (not the box's top: a lob off it is no trick) adds 3 (hoop.ts SHOT_BONUS, markTouches). Baskets in a row multiply (x2, x3, x4: hoop.ts streakMultiplier); a thrown
  * ball that falls below the rim beside the hoop is a miss and ends the streak (falling notes). The
  * aiming arc ends with a red cross at a ball in its way; a heap ball buried under others is lifted to
  * the top of the heap over it first (liftSpot: its arc and its throw start there; with no room there
@@ -39,10 +39,10 @@
  * clear of the balls piled at its bottom.
  *
  * Looks: a court (a wall with panels over a wooden floor, the box framed in steel), wooden ramps,
- * plain coloured balls (no rotation marks, no trails unless asked for), a backboard with its target
- * square, an orange rim and a net of diamond mesh; the player's balls are orange with black seams
+ * plain coloured balls (no rotation marks, no trails unless asked for), a plain white backboard,
+ * an orange rim and a net of diamond mesh; the player's balls are orange with black seams
  * that turn with the ball.
- * Keys: P pause, N single step, R reset, T trails, D debug overlay.
+ * Keys: P pause (the play area dims and says so), N single step, R new round, T trails, D debug overlay.
  * URL: ?count=N (balls, 1..10000; default 40, 20 on a tall screen), ?round=S (hoop round, s, 5..600), ?seed=S, ?mode=auto|sprites|particles, ?trails=0|1, ?debug.
  * From 1000 balls on (mode auto) the renderer draws with pixi's ParticleContainer.
  */
@@ -62,7 +62,7 @@ import {
   seedParam,
 } from '@bitphysics/game-kit';
 import { enableMouseDrag } from '@bitphysics/game-kit/drag';
-import { createResultCard, startPixiGame } from '@bitphysics/game-kit/pixi';
+import { createPauseOverlay, createResultCard, startPixiGame } from '@bitphysics/game-kit/pixi';
 import {
   addBox,
   addSystem,
@@ -79,7 +79,6 @@ import {
 import { Graphics, Text } from 'pixi.js';
 import {
   addHoop,
-  BACKBOARD,
   BALL_POINTS,
   type BallKind,
   createRound,
@@ -860,16 +859,23 @@ const HOOP_HALF_SPAN = 1.5;
 
 /**
  * Marks what each ball in flight touched in the last step (from the step's contact begin events), for
- * its basket's style (hoop.ts ShotStyle): a wall of the box (a boundary face) or a ramp makes it a
- * trick shot; anything else but the balls round it as it leaves the heap (its first
- * LEAVE_MAX_SECONDS) ends its swish.
+ * its basket's style (hoop.ts ShotStyle): a side wall or the floor of the box (a boundary face) or a
+ * ramp makes it a trick shot; the box's top (the ceiling) does not (a lob off it is the easy way
+ * up, and as a trick shot it was the best play): it only ends the swish, as anything else does but
+ * the balls round it as it leaves the heap (its first LEAVE_MAX_SECONDS).
  */
 function markTouches(world: PhysicsWorld): void {
   if (flights.size === 0) return;
+  const P = world.components.Position,
+    R = world.components.Ball.radius,
+    top = layoutOf(TALL).box.max[1];
   const touch = (e: number, other: number): void => {
     const f = flights.get(e);
     if (!f) return;
-    const wall = other <= 0 || handles.segments.includes(other);
+    const s = slotOf(e);
+    // The ceiling: a boundary face met with the ball's top within a centimetre of the box's top.
+    const ceiling = other <= 0 && P.y[s]! + R[s]! > top - CEILING_SLOP;
+    const wall = (other <= 0 && !ceiling) || handles.segments.includes(other);
     if (wall) f.trick = true;
     else if (!hoopIds.includes(other) && !crates.includes(other) && world.time - f.at < LEAVE_MAX_SECONDS) return;
     f.touched = true;
@@ -879,6 +885,9 @@ function markTouches(world: PhysicsWorld): void {
     touch(b, a);
   });
 }
+
+/** How near the box's top a ball's top must be for its contact with the boundary to be the ceiling's, m (contact slop and a step's travel). */
+const CEILING_SLOP = 0.1;
 
 /** Which impacts are heard (knocks.ts): the loudest few a step, a cooldown per body, a budget a second. */
 const knocks = createKnockLimiter(KNOCK_LIMITS);
@@ -899,6 +908,9 @@ function stepWorld(world: PhysicsWorld): void {
   }
 }
 
+/** The pause overlay (game-kit's): paused, the play area dims and says "Paused" and how to resume, as the other games do. */
+const pause = createPauseOverlay();
+
 const game = await startPixiGame({
   title: 'Bouncing balls',
   createWorld,
@@ -908,7 +920,7 @@ const game = await startPixiGame({
     { keys: 'Drag', action: 'press anywhere, pull back, let go: throw (pressed on a heap ball, that ball flies)' },
     { keys: 'Click', action: 'drop a ball' },
     { keys: 'Hold on a ball', touch: 'Hold on a ball', action: 'hold still 1 s: pick it (or a crate) up and carry it' },
-    { keys: 'R', action: 'new round (and reset)' },
+    { keys: 'R', action: 'new round' },
     { keys: 'T', action: 'trails on / off' },
     { keys: 'D', action: 'debug: velocities, contacts' },
     { keys: 'X', action: 'drop a crate' },
@@ -934,9 +946,33 @@ const game = await startPixiGame({
     drawBasketballs(alpha, world);
     drawPointer();
     drawHoop();
+    // On top of everything drawn since (confetti, the countdown): moved last when it is not.
+    if (app.stage.children.at(-1) !== pause.container) app.stage.addChild(pause.container);
+    pause.draw(shell.paused, app.screen.width, app.screen.height, pageLayout().touch());
   },
 });
 const { shell, renderer, app } = game;
+
+/**
+ * On a small screen a drawer (the menu, or the settings) opened over the scene pauses the game, the
+ * round's clock with it, and closing it resumes the game if the drawer paused it (the clock ran on
+ * under the menu). A pause the player made stays.
+ */
+function pauseUnderDrawers(): void {
+  const root = pageLayout().root;
+  let pausedByDrawer = false;
+  new MutationObserver(() => {
+    const open = root.dataset.open !== undefined && pageLayout().compact();
+    if (open && !shell.paused) {
+      shell.paused = true;
+      pausedByDrawer = true;
+    } else if (!open && pausedByDrawer) {
+      pausedByDrawer = false;
+      if (shell.paused) shell.paused = false;
+    }
+  }).observe(root, { attributes: true, attributeFilter: ['data-open'] });
+}
+pauseUnderDrawers();
 
 /** Gives the heavy balls of `world` their user colour (the others keep their seeded colours). */
 function colorHeavy(world: PhysicsWorld): void {
@@ -1848,7 +1884,7 @@ let ruleHint: '' | 'high' | 'below' = '';
 let lastThrown = 0;
 
 /**
- * Draws the hoop each frame: the backboard (a white board with its target square, on a bracket
+ * Draws the hoop each frame: the backboard (a plain white board, on a bracket
  * from the box's side), the net under the rim (strings from the rim to its narrower bottom, crossed
  * into diamonds), the orange rim across the opening, the shot line at rim height (balls released
  * below it may score) and a basket's pop.
@@ -2000,7 +2036,7 @@ function drawCelebration(age: number): void {
 
 /**
  * The backboard of the hoop at `spot`: a white board (its physics is the capsule of hoopSegments,
- * drawn as a board 0.16 m thick) with the red target square over the rim, and a steel bracket from
+ * drawn as a board 0.16 m thick; plain: a red target square on it meant nothing in the game), and a steel bracket from
  * the board to the box's side wall behind it. The bracket has no body (balls that go over the board
  * fall behind it), so it is drawn dim on the wall under the balls (`bracketLayer`): a ball falling
  * behind the board passes in front of it, not through it.
@@ -2027,9 +2063,6 @@ function drawBackboard(spot: HoopSpot): void {
     .roundRect(x - t / 2, top, t, bottom - top, t / 2)
     .fill(0xf4f6fb)
     .stroke({ width: 1.5, color: 0x8a93a6 });
-  // The target square: red, from the rim up a third of the board.
-  const sq = cam.toScreenY(spot.y + 0.45 * BACKBOARD.above);
-  hoopLayer.rect(x - t / 2 + 1, sq, t - 2, cam.toScreenY(spot.y) - sq).fill(0xe63946);
 }
 
 // ---- The court: wall, floor, frame and ramps (redrawn when the camera changes) --------------------
@@ -2403,6 +2436,8 @@ function drawEndCard(over: boolean): void {
 // ---- Test and console hooks on window.game ---------------------------------------------------
 
 shell.expose({
+  /** Whether the pause overlay (the dimmed play area with "Paused") shows, and its words. */
+  pauseOverlay: (): { visible: boolean; text: string } => ({ visible: pause.visible, text: pause.text }),
   params,
   panel,
   /** The pointer's mouse-joint drag: `joint` (0 when nothing is held) and `body`. */

@@ -451,3 +451,24 @@ export function throttleStep(throttle: number, direction: number): number {
   const n = direction > 0 ? Math.ceil(k - 1e-9) : Math.floor(k + 1e-9);
   return Math.min(1, Math.max(0, Math.round(n * step * 1e9) / 1e9));
 }
+
+/** Dead zone of the phone's stick (`stickResponse`), a share of its full travel: a finger resting near the centre asks for nothing. */
+export const STICK_DEAD_ZONE = 0.05;
+/** Exponent of the phone's stick response past the dead zone (`stickResponse`): above 1, gentle near the centre and full at the rim. */
+export const STICK_EXPONENT = 1.7;
+
+/**
+ * The phone stick's response: its deflection `x` (right), `y` (up), each in [-1, 1], turned into the
+ * pilot's input along the same direction, its size d (the deflection's length, at most 1) mapped to
+ * ((d - STICK_DEAD_ZONE) / (1 - STICK_DEAD_ZONE)) ^ STICK_EXPONENT: 0 inside the dead zone, a
+ * quarter of full at half travel (a fine correction), full at the rim. Linear, half a push asked
+ * for half the bank (35 degrees) and swung a ring off the phone's narrow view.
+ * @throws RangeError on an `x` or `y` that is not finite.
+ */
+export function stickResponse(x: number, y: number): { x: number; y: number } {
+  if (!Number.isFinite(x) || !Number.isFinite(y)) throw new RangeError(`stickResponse: x and y must be finite, got ${x}, ${y}`);
+  const d = Math.min(1, Math.hypot(x, y));
+  if (d <= STICK_DEAD_ZONE) return { x: 0, y: 0 };
+  const k = ((d - STICK_DEAD_ZONE) / (1 - STICK_DEAD_ZONE)) ** STICK_EXPONENT / Math.hypot(x, y);
+  return { x: x * k, y: y * k };
+}

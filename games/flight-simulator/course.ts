@@ -18,6 +18,17 @@ import { ASSIST } from './assist';
  */
 export const RING_RADIUS = 65;
 
+/** Radius of the next ring's drawn tube, m (./main.ts draws it RING_RADIUS +- RING_TUBE from the centre). */
+export const RING_TUBE = 6;
+
+/**
+ * How far from a ring's centre its plane may be crossed and still count as flown through, m: the
+ * drawn tube's outer edge (RING_RADIUS + RING_TUBE). The flight-path marker is green inside it, so a
+ * marker seen on the tube is a pass (a stranger's marker sat on the tube at 68 m, yellow, and the
+ * pass test, then at RING_RADIUS, said "Missed").
+ */
+export const PASS_RADIUS = RING_RADIUS + RING_TUBE;
+
 /** A crossing of a ring's plane farther than this from its centre, m, is not counted (the pilot is elsewhere). */
 export const MISS_RANGE = 600;
 
@@ -211,7 +222,7 @@ export function layCourse(options: CourseOptions): Ring[] {
 
 /**
  * What a move of the aircraft's centre from `a` to `b` (m, world) does to `ring`: 'passed' when it
- * crosses the ring's plane the way through it inside RING_RADIUS of the centre, 'missed' when it
+ * crosses the ring's plane the way through it inside PASS_RADIUS of the centre, 'missed' when it
  * crosses it outside but within MISS_RANGE, else null (no crossing, a crossing the wrong way or far
  * off). The crossing point is where the segment meets the plane.
  */
@@ -224,15 +235,16 @@ export function crossRing(ring: Ring, a: readonly number[], b: readonly number[]
     py = a[1]! + t * (b[1]! - a[1]!) - ring.y,
     pz = a[2]! + t * (b[2]! - a[2]!) - ring.z;
   const off = Math.hypot(px, py, pz);
-  if (off < RING_RADIUS) return 'passed';
+  if (off < PASS_RADIUS) return 'passed';
   return off < MISS_RANGE ? 'missed' : null;
 }
 
 /**
- * Seconds added to the course time for each ring missed: a miss costs more than the turn back would
- * save, and a star (`courseStars`). (With 10 s a stranger found a miss cost nothing that mattered.)
+ * Seconds added to the course time for each ring missed: enough that a miss shows on the clock and
+ * a clean run beats one that skips rings, small enough that a miss early on leaves the run worth
+ * flying (with 20 s and a star for each miss, three misses left nothing to play for).
  */
-export const MISS_PENALTY = 20;
+export const MISS_PENALTY = 10;
 
 /** What a move of the aircraft did to a ring (`flyRings`). */
 export interface RingEvent {
@@ -245,19 +257,23 @@ export interface RingEvent {
 /**
  * The rule of the course for a move of the aircraft's centre from `a` to `b` (m, world): of the next
  * ring still ahead and the one after it, the first whose plane the move crosses (`crossRing`) is
- * passed or missed; crossing the one after's first also misses the next (it was skipped). Marks the
- * rings' statuses and returns what happened, in order (empty when nothing did). A ring is missed
- * once: each miss costs MISS_PENALTY s (`courseTime`).
+ * passed or missed; crossing the one after's first also misses the next (it was skipped). Ring
+ * `promised` (an index, -1 for none: the ring the flight-path marker showed the aircraft passing
+ * inside in the last moment before the crossing) is passed when its plane is crossed within
+ * MISS_RANGE: what the marker promised counts even where the flown path strays a little from the
+ * predicted one. Marks the rings' statuses and returns what happened, in order (empty when nothing
+ * did). A ring is missed once: each miss costs MISS_PENALTY s (`courseTime`).
  */
-export function flyRings(rings: Ring[], a: readonly number[], b: readonly number[]): RingEvent[] {
+export function flyRings(rings: Ring[], a: readonly number[], b: readonly number[], promised = -1): RingEvent[] {
   const i = nextRing(rings);
   const events: RingEvent[] = [];
   if (i < 0) return events;
   for (const j of [i, i + 1]) {
     const ring = rings[j];
     if (!ring) continue;
-    const result = crossRing(ring, a, b);
-    if (!result) continue;
+    const crossed = crossRing(ring, a, b);
+    if (!crossed) continue;
+    const result = j === promised ? 'passed' : crossed;
     if (j === i + 1) {
       rings[i]!.status = 'missed';
       events.push({ ring: i, result: 'missed' });
@@ -285,13 +301,14 @@ export function nextRing(rings: readonly Ring[]): number {
 }
 
 /**
- * Stars of a course with `missed` rings missed so far: 3, less one for each miss, never below 0. The
- * HUD shows them while flying, so a miss is seen to cost a star the moment it happens.
+ * Stars of a course with `missed` rings missed so far: 3 with none, then one less for every second
+ * miss (2 after one or two, 1 after three or four, 0 from five on). The HUD shows them while flying.
+ * A clean run is the only way to 3; an early miss or two still leaves 2 to keep.
  * @throws RangeError on a count of misses that is not an integer >= 0.
  */
 export function courseStars(missed: number): number {
   if (!(Number.isInteger(missed) && missed >= 0)) throw new RangeError(`courseStars: missed must be an integer >= 0, got ${missed}`);
-  return Math.max(0, 3 - missed);
+  return Math.max(0, 3 - Math.ceil(missed / 2));
 }
 
 /** Where a ring lies from the aircraft (`ringBearing`). */

@@ -10,9 +10,11 @@
  * Fly through every ring (./course.ts) as fast as you can; a ring flown past to the side, left
  * behind, is missed (./course.ts leaveBehind; one laid ahead after a miss is laid ahead again
  * instead, so one over-correction costs one star); after a miss the course moves on (the
- * next ring is laid just ahead: ./course.ts relayAfterMiss); each ring missed costs a star (three to
- * start with, shown on the goal line) and adds MISS_PENALTY (20) s to the course clock, said in the
- * banner and by a red glow round the scene the moment it is missed; do not hit the ground. P (or the
+ * next ring is laid just ahead: ./course.ts relayAfterMiss); each ring missed adds MISS_PENALTY (10)
+ * s to the course clock and every second miss costs a star (three to start with, shown on the goal
+ * line: ./course.ts courseStars), said in the banner and by a red glow round the scene the moment it
+ * is missed. A ring the flight-path marker showed green is passed (./course.ts flyRings
+ * `promised`); do not hit the ground. P (or the
  * toolbar's button) pauses: the scene dims and says so (game-kit's createDomPauseOverlay).
  * Guidance: thick bright rings, a chain of beads through the next two, an outline round the next one
  * on the screen (at least OUTLINE_LEAST px in radius, so a ring far off or edge on still reads), a label
@@ -78,6 +80,7 @@ import {
   heldBank,
   rampKey,
   SURFACE_RATE,
+  stickResponse,
   THROTTLE_KEY,
   throttleStep,
 } from './assist';
@@ -96,8 +99,10 @@ import {
   lessonTipText,
   MISS_PENALTY,
   nextRing,
+  PASS_RADIUS,
   predictThroughRing,
   RING_RADIUS,
+  RING_TUBE,
   RING_WAYS,
   type Ring,
   type RingWay,
@@ -172,6 +177,8 @@ function createWorld(): PhysicsWorld {
   events.length = 0;
   doneAt.clear();
   movedAhead = -1;
+  promise.ring = -1;
+  promise.at = -Infinity;
   missedAt = -Infinity;
   crashReadings = null;
   awayFor = 0;
@@ -438,7 +445,7 @@ function checkRings(time: number): void {
   const before = nextRing(rings);
   // A ring flown through or its plane crossed; else one left behind (./course.ts leaveBehind: flown
   // past to the side, it never counted, and turning back to it took a stranger a minute).
-  let happened = flyRings(rings, prev, now);
+  let happened = flyRings(rings, prev, now, promisedRing(time));
   // A ring laid ahead after a miss and left behind before it was reached (the pilot still turning
   // hard, over-correcting) is laid ahead again, with no miss: one over-correction costs one star (a
   // newcomer holding a bank key lost a star every 6 s as each new ring fell behind the turn).
@@ -459,7 +466,9 @@ function checkRings(time: number): void {
       // flash of the goal line, where the stars and the clock are.
       state.missed++;
       missedAt = time;
-      events.push({ text: `Missed ring ${ring + 1} · −1 ★ · +${MISS_PENALTY} s`, colour: '#ff8a5a', time });
+      // The star is named only when this miss takes one (every second miss does: ./course.ts courseStars).
+      const star = courseStars(state.missed) < courseStars(state.missed - 1) ? ' · −1 ★' : '';
+      events.push({ text: `Missed ring ${ring + 1}${star} · +${MISS_PENALTY} s`, colour: '#ff8a5a', time });
       sound.chime(220, 0.4);
     }
   }
@@ -475,7 +484,7 @@ function checkRings(time: number): void {
       ringMeshes[k]?.quaternion.setFromUnitVectors(zAxis, ringNormal.set(r.nx, r.ny, r.nz));
     });
     // Said once the miss's banner has been read (at once when no miss came with it).
-    events.push({ text: `Ring ${next + 1} moved ahead`, colour: '#ffd166', time: again ? time : time + 1.4 });
+    events.push({ text: `Ring ${next + 1} is now just ahead of you`, colour: '#ffd166', time: again ? time : time + 1.4 });
   }
   // Recovering from a miss: the ring now next turns to face the aircraft (a ring met at an angle
   // was seen edge on), and so does one whose plane the aircraft crossed far off (beyond MISS_RANGE:
@@ -516,7 +525,23 @@ function timeAway(world: PhysicsWorld, dt: number): void {
   }
   const V = world.components.Velocity,
     e = handles.body;
-  awayFor = recedingSpeed(rings[n]!, now, [V.x[e]!, V.y[e]!, V.z[e]!]) > LEFT_BEHIND_SPEED ? awayFor + dt : 0;
+  // Not while the marker shows the aircraft passing inside it: a ring met at a slant in a turn may
+  // draw away from its centre for a while before its plane is crossed, inside.
+  const receding = recedingSpeed(rings[n]!, now, [V.x[e]!, V.y[e]!, V.z[e]!]) > LEFT_BEHIND_SPEED;
+  awayFor = receding && promisedRing(world.time) !== n ? awayFor + dt : 0;
+}
+
+/**
+ * How long the flight-path marker's promise holds, s of game time: a ring the marker last showed
+ * the aircraft passing inside (green) no longer ago than this is passed when its plane is crossed
+ * (./course.ts flyRings `promised`). Long enough to span the frames a loaded machine leaves undrawn.
+ */
+const PROMISE_TIME = 0.5;
+/** The ring the marker showed green on its last drawn frame (-1 for none) and the game time of that frame, s. */
+const promise = { ring: -1, at: -Infinity };
+/** The ring the marker promises now (`promise`, within PROMISE_TIME of game time `time`, s), or -1. */
+function promisedRing(time: number): number {
+  return promise.ring >= 0 && promise.ring === nextRing(rings) && time - promise.at <= PROMISE_TIME ? promise.ring : -1;
 }
 
 /** Best result of this course (seed and ring count) in localStorage: rings passed, then the shorter course time (misses' penalties in). */
@@ -622,7 +647,7 @@ shell.onWorldChange(() => {
 // phone. The rings after it: a thin (2.5 m) pale tube, faint, so the chain of them toward the
 // horizon does not read as rings to fly through now (a stranger took the orange chain for the way
 // to go while the next ring was off to the side).
-const ringGeometry = new TorusGeometry(RING_RADIUS, 6, 10, 48);
+const ringGeometry = new TorusGeometry(RING_RADIUS, RING_TUBE, 10, 48);
 const laterGeometry = new TorusGeometry(RING_RADIUS, 2.5, 6, 48);
 const haloGeometry = new TorusGeometry(RING_RADIUS + 12, 2.5, 6, 48);
 const materials = {
@@ -864,6 +889,10 @@ const pauseOverlay = createDomPauseOverlay(layout.stage, {
     shell.paused = false;
   },
 });
+// "Paused" low in the scene, under the aircraft: off the middle, where the next ring, its label and
+// the path marker are, and off the top, where the banners and tips are.
+pauseOverlay.element.style.justifyContent = 'flex-end';
+pauseOverlay.element.style.paddingBottom = '2%';
 /**
  * A red glow round the scene's edge for MISS_FLASH s of game time after a miss, fading (with the
  * banner and the goal line's flash, the miss is seen wherever the eye is).
@@ -1465,8 +1494,8 @@ function placeMessages(): void {
  * path flown if the pilot lets go now (the wings and the path roll level as the assist brings them),
  * so holding a turn until the marker is in the ring and letting go flies through it; without the
  * assist, the turn held as it is. (A straight line from the velocity ignored the turn: a stranger
- * banking towards ring 3 had the marker at its edge and missed it by far.) Yellow when it is outside
- * the ring, green when inside, each over a thick black outline so that it shows on sky, cloud,
+ * banking towards ring 3 had the marker at its edge and missed it by far.) Orange when it is outside
+ * the ring (not the ring's yellow: on the tube it must not read as in), green when inside (PASS_RADIUS), each over a thick black outline so that it shows on sky, cloud,
  * ground and the yellow ring alike (a thin white one was lost against the sky and the clouds);
  * hidden when the ring's plane is not met.
  */
@@ -1499,9 +1528,16 @@ function markPath(): void {
       : null;
   pathAim.visible = !!through && Number.isFinite(through.offset);
   marker.style.display = pathAim.visible ? 'block' : 'none';
+  promise.ring = -1;
   if (!through || !pathAim.visible) return;
   pathAim.offset = through.offset;
-  pathAim.inside = through.offset < RING_RADIUS;
+  // Inside the drawn tube's outer edge: the pass test's radius (./course.ts PASS_RADIUS), and a
+  // promise kept (`promise`).
+  pathAim.inside = through.offset < PASS_RADIUS;
+  if (pathAim.inside) {
+    promise.ring = i;
+    promise.at = world.time;
+  }
   // Drawn from the drawn aircraft (the same offset as the physics' path, from where it is drawn).
   markAt.set(through.point[0] - now[0]! + at.x, through.point[1] - now[1]! + at.y, through.point[2] - now[2]! + at.z).project(app.camera);
   pathAim.x = ((markAt.x + 1) / 2) * app.canvas.clientWidth;
@@ -1510,7 +1546,7 @@ function markPath(): void {
   marker.style.display = shown ? 'block' : 'none';
   marker.style.left = `${pathAim.x}px`;
   marker.style.top = `${pathAim.y}px`;
-  marker.style.color = pathAim.inside ? '#5dff8a' : '#ffe14a';
+  marker.style.color = pathAim.inside ? '#5dff8a' : '#ff9a4a';
   marker.style.filter = 'drop-shadow(0 0 3px rgba(0, 0, 0, 0.7))';
 }
 
@@ -1708,9 +1744,11 @@ function instruments(world: PhysicsWorld): {
 createStick({
   label: 'stick: bank and climb',
   onChange: (x, y) => {
-    stickInput.x = x;
-    stickInput.y = y;
-    if (x !== 0 || y !== 0) pilotGoes();
+    // Progressive: a small dead zone, gentle near the centre, full at the rim (./assist.ts stickResponse).
+    const r = stickResponse(x, y);
+    stickInput.x = r.x;
+    stickInput.y = r.y;
+    if (r.x !== 0 || r.y !== 0) pilotGoes();
   },
 });
 createButtonBar(
@@ -1794,11 +1832,14 @@ shell.expose({
   state,
   /** The aircraft entity. */
   aircraftBody: () => handles.body,
-  /** Sets the stick as the on-screen one does: x right, y up, each clamped to [-1, 1]. */
+  /** Sets the stick as the on-screen one does: deflection x right, y up, each clamped to [-1, 1], through ./assist.ts stickResponse. */
   setStick: (x: number, y: number): void => {
-    stickInput.x = clamp1(x);
-    stickInput.y = clamp1(y);
+    const r = stickResponse(clamp1(x), clamp1(y));
+    stickInput.x = r.x;
+    stickInput.y = r.y;
   },
+  /** The pilot's stick input now (after the response curve), x right, y up. */
+  stickInput: () => ({ ...stickInput }),
   /** Speed, altitude, attitude, heading and the wing's angle of attack now (m/s, m, degrees). */
   instruments: () => instruments(shell.world),
 });

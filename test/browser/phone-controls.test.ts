@@ -229,6 +229,57 @@ describe('phone controls', () => {
     await g.close();
   });
 
+  it('flight simulator: the stick is progressive (a 24 px push asks for about a third, not half); pushed down, its knob keeps off its caption; "Paused" sits low, off the middle', async () => {
+    const g = await h.openGame('flight-simulator', PHONE);
+    type Fly = { stickInput(): { x: number; y: number }; paused: boolean };
+    await g.waitFor(() => (window.game as unknown as { pathMarker(): { visible: boolean } }).pathMarker().visible || null, null);
+    const slider = g.page.getByRole('slider', { name: 'stick: bank and climb' });
+    const stick = (await slider.boundingBox())!;
+    const cx = stick.x + stick.width / 2,
+      cy = stick.y + stick.height / 2;
+    // The finger's travel to the rim: the base's radius less 12 px (game-kit createStick).
+    const travel = stick.width / 2 - 12;
+    const cdp = await g.page.context().newCDPSession(g.page);
+    await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: [{ x: cx, y: cy, id: 1 }] });
+    await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: [{ x: cx + 24, y: cy, id: 1 }] });
+    const small = await g.waitFor(() => {
+      const s = (window.game as unknown as Fly).stickInput();
+      return s.x > 0 ? s : null;
+    }, null);
+    // Linear, 24 px of the travel asked for 24 / travel (over half); now well under that, and not nothing.
+    expect(small.x).toBeLessThan(0.75 * (24 / travel));
+    expect(small.x).toBeGreaterThan(0.15);
+    expect(Math.abs(small.y)).toBe(0);
+    // Pushed fully down: full input, and the knob's box stays above the caption's.
+    await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: [{ x: cx, y: cy + 2 * travel, id: 1 }] });
+    await g.waitFor(() => (window.game as unknown as Fly).stickInput().y < -0.99 || null, null);
+    const boxes = await g.page.evaluate(() => {
+      const knob = document.querySelector('.bp-knob')!.getBoundingClientRect();
+      const caption = document.querySelector('.bp-stick-label')!.getBoundingClientRect();
+      return { knobBottom: knob.bottom, captionTop: caption.top };
+    });
+    expect(boxes.knobBottom).toBeLessThanOrEqual(boxes.captionTop);
+    await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
+    await cdp.detach();
+    await g.waitFor(() => {
+      const s = (window.game as unknown as Fly).stickInput();
+      return s.x === 0 && s.y === 0 ? true : null;
+    }, null);
+    // The toolbar's pause: "Paused" shows low in the scene, under the aircraft, off its middle (where
+    // the next ring and the path marker are).
+    await g.page.getByRole('button', { name: /pause/i }).first().tap();
+    const placed = await g.waitFor(() => {
+      const el = document.querySelector<HTMLElement>('[data-hud="paused"]');
+      if (!el || el.style.display === 'none' || !(window.game as unknown as Fly).paused) return null;
+      const stage = el.getBoundingClientRect(),
+        title = el.firstElementChild!.getBoundingClientRect();
+      return { top: title.top - stage.top, height: stage.height };
+    }, null);
+    expect(placed.top).toBeGreaterThan(0.75 * placed.height);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
   it('flight simulator: every lesson tip the phone can show (all rings, both ways named, far or a little) fits in two lines', async () => {
     const g = await h.openGame('flight-simulator', PHONE);
     // Each text the game can write (./course.ts lessonTipText over every ring and way), put in the
@@ -405,7 +456,7 @@ describe('phone controls', () => {
     });
     const after = await g.waitFor(() => {
       const el = document.querySelector<HTMLElement>('[data-hud="flight-status"]')!;
-      if (!(el.children[0]!.textContent ?? '').includes('(+60 s)')) return null;
+      if (!(el.children[0]!.textContent ?? '').includes('(+30 s)')) return null;
       const lines = [...el.children].map((c) => ({ text: c.textContent ?? '', fits: c.scrollWidth <= c.clientWidth }));
       return { height: el.getBoundingClientRect().height, lines };
     }, null);

@@ -25,6 +25,7 @@ import {
   type PilotInput,
   rampKey,
   SURFACE_RATE,
+  stickResponse,
   throttleStep,
 } from '../../games/flight-simulator/assist';
 import { pathThroughRing, predictThroughRing, RING_RADIUS, type Ring } from '../../games/flight-simulator/course';
@@ -240,6 +241,25 @@ describe('flight assist', () => {
     expect(turned[4], said).toBeLessThan(6);
     expect(turned[0], said).toBeGreaterThan(2.5);
     expect(turned[6], said).toBeGreaterThan(turned[2]! + 2);
+  });
+
+  it('the phone stick is progressive: nothing in the dead zone, gentle near the centre, full at the rim, its direction kept', () => {
+    expect(stickResponse(0.04, 0)).toEqual({ x: 0, y: 0 });
+    expect(stickResponse(0, 0)).toEqual({ x: 0, y: 0 });
+    const at = (d: number) => stickResponse(d, 0).x;
+    expect(at(1)).toBeCloseTo(1, 12);
+    // Half a push asks for under a third of full (linear: half), a tenth for about a hundredth.
+    expect(at(0.5)).toBeLessThan(0.3);
+    expect(at(0.5)).toBeGreaterThan(0.2);
+    expect(at(0.1)).toBeLessThan(0.02);
+    expect(at(0.1)).toBeGreaterThan(0);
+    // Growing with the push, never falling.
+    for (let d = 0.06; d < 1; d += 0.02) expect(at(d + 0.02)).toBeGreaterThan(at(d));
+    // Diagonal: the direction is kept, and beyond the rim it is full.
+    const diag = stickResponse(0.6, -0.6);
+    expect(diag.x).toBeCloseTo(-diag.y, 12);
+    expect(Math.hypot(stickResponse(1, 1).x, stickResponse(1, 1).y)).toBeCloseTo(1, 12);
+    expect(() => stickResponse(Number.NaN, 0)).toThrow(/stickResponse: x and y must be finite/);
   });
 
   it('full stick back: climbs past 17 degrees within 3 s, never past the 45 degree path (no loop); at idle it slows but does not stall', () => {

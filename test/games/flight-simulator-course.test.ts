@@ -32,6 +32,7 @@ import {
   MISS_PENALTY,
   MISS_RANGE,
   nextRing,
+  PASS_RADIUS,
   pathThroughRing,
   RECOVERY_DISTANCE,
   RECOVERY_TURN,
@@ -39,6 +40,7 @@ import {
   RING_GRADIENT,
   RING_RADIUS,
   RING_STEP,
+  RING_TUBE,
   RING_WAYS,
   type Ring,
   reachable,
@@ -237,13 +239,16 @@ describe('flight simulator course', () => {
     expect(time).toBeLessThan(5);
   });
 
-  it('passes a ring crossed inside its radius, misses one crossed outside, ignores the wrong way and far off', () => {
+  it('passes a ring crossed inside its drawn tube (PASS_RADIUS), misses one crossed outside, ignores the wrong way and far off', () => {
     const ring: Ring = { x: 100, y: 500, z: 0, nx: 1, ny: 0, nz: 0, status: 'ahead' };
     const cross = (y: number, z: number, back = false) =>
       back ? crossRing(ring, [102, y, z], [98, y, z]) : crossRing(ring, [98, y, z], [102, y, z]);
     expect(cross(500, 0)).toBe('passed');
     expect(cross(500 + 0.99 * RING_RADIUS, 0)).toBe('passed');
-    expect(cross(500, -1.01 * RING_RADIUS)).toBe('missed');
+    // On the drawn tube (RING_RADIUS +- RING_TUBE) counts as through: the marker is green there.
+    expect(PASS_RADIUS).toBe(RING_RADIUS + RING_TUBE);
+    expect(cross(500, -(RING_RADIUS + 0.9 * RING_TUBE))).toBe('passed');
+    expect(cross(500, -1.01 * PASS_RADIUS)).toBe('missed');
     expect(cross(500 + 0.99 * MISS_RANGE, 0)).toBe('missed');
     expect(cross(500 + 1.01 * MISS_RANGE, 0)).toBeNull();
     expect(cross(500, 0, true)).toBeNull();
@@ -273,14 +278,25 @@ describe('flight simulator course', () => {
       { ring: 1, result: 'passed' },
     ]);
     expect(skip.map((r) => r.status)).toEqual(['missed', 'passed', 'ahead']);
-    // The clock: 95 s flown with one ring missed is a 115 s course; none missed, the time flown.
+    // The clock: 95 s flown with one ring missed is a 105 s course; none missed, the time flown.
     const missed = rings.filter((r) => r.status === 'missed').length;
-    // (10 s before: a stranger found a miss cost nothing that mattered.)
-    expect(MISS_PENALTY).toBe(20);
-    expect(courseTime(95, missed)).toBe(115);
+    // (20 s, with a star for every miss, left a stranger nothing to play for after three misses.)
+    expect(MISS_PENALTY).toBe(10);
+    expect(courseTime(95, missed)).toBe(105);
     expect(courseTime(95, 0)).toBe(95);
     expect(() => courseTime(-1, 0)).toThrow(/courseTime: flown must be finite and >= 0 s, got -1/);
     expect(() => courseTime(1, 0.5)).toThrow(/courseTime: missed must be an integer >= 0, got 0.5/);
+  });
+
+  it("a ring the flight-path marker promised (flyRings' promised) is passed when its plane is crossed, even outside it; another ring is not", () => {
+    const course = (): Ring[] => [0, 1].map((k) => ({ x: 1000 * (k + 1), y: 500, z: 0, nx: 1, ny: 0, nz: 0, status: 'ahead' as const }));
+    const a = [995, 500 + PASS_RADIUS + 10, 0],
+      b = [1005, 500 + PASS_RADIUS + 10, 0];
+    // Crossed 10 m outside the tube: a miss without the promise, a pass with it.
+    expect(flyRings(course(), a, b)).toEqual([{ ring: 0, result: 'missed' }]);
+    expect(flyRings(course(), a, b, 0)).toEqual([{ ring: 0, result: 'passed' }]);
+    // A promise for another ring changes nothing.
+    expect(flyRings(course(), a, b, 1)).toEqual([{ ring: 0, result: 'missed' }]);
   });
 
   it('the flight-path marker: where a straight path meets a ring plane, and how far from its centre', () => {
@@ -304,9 +320,9 @@ describe('flight simulator course', () => {
     expect(() => pathThroughRing(ring, [0, 0, 0], [1, 0])).toThrow(/pathThroughRing: velocity must be 3 finite numbers/);
   });
 
-  it('each miss costs a star: 3 with none missed, 2, 1, then 0', () => {
-    // (Stars were for the share passed, 2 for 70 %: three misses of ten cost one star.)
-    expect([0, 1, 2, 3, 7].map((m) => courseStars(m))).toEqual([3, 2, 1, 0, 0]);
+  it('stars: 3 for a clean run, then one less for every second miss (2, 2, 1, 1, 0)', () => {
+    // (Each miss cost a star: three early misses left a stranger nothing to play for.)
+    expect([0, 1, 2, 3, 4, 5, 7].map((m) => courseStars(m))).toEqual([3, 2, 2, 1, 1, 0, 0]);
     expect(() => courseStars(-1)).toThrow(/courseStars: missed must be an integer >= 0, got -1/);
     expect(() => courseStars(1.5)).toThrow(/courseStars: missed must be an integer >= 0, got 1.5/);
   });

@@ -18,7 +18,11 @@ export interface GameShellOptions {
   step?: (world: PhysicsWorld) => void;
   /** Body count for the HUD. Default: every live entity. */
   bodies?: (world: PhysicsWorld) => number;
-  /** Legend lines shown after the built-in P / N / R lines. */
+  /**
+   * Legend lines shown after the built-in P / N / R lines. A line with the same keys as a built-in
+   * one ('R': what a reset means in this game) takes its place, keeping the built-in's touch hint
+   * when it gives none (one line per key, not "reset" and then "new round").
+   */
   controls?: readonly ControlHint[];
   /** Extra keys (the built-in P, N and R cannot be rebound). */
   keys?: readonly KeyBinding[];
@@ -75,6 +79,16 @@ export const SHELL_CONTROLS: readonly ControlHint[] = Object.freeze([
   { keys: 'R', action: 'reset', touch: 'top ↺ button' },
 ]);
 
+/** SHELL_CONTROLS then `extra`, a line of `extra` with a built-in line's keys in that line's place (see GameShellOptions.controls). */
+function legendLines(extra: readonly ControlHint[]): ControlHint[] {
+  const own = new Map(extra.map((c) => [c.keys, c]));
+  const builtIn = SHELL_CONTROLS.map((c) => {
+    const mine = own.get(c.keys);
+    return mine ? { ...mine, ...(mine.touch === undefined && c.touch !== undefined ? { touch: c.touch } : {}) } : c;
+  });
+  return [...builtIn, ...extra.filter((c) => !SHELL_CONTROLS.some((b) => b.keys === c.keys))];
+}
+
 /**
  * Creates a game shell: world lifecycle, fixed-step loop on requestAnimationFrame, P / N / R keys,
  * HUD (fps, bodies, steps, legend), `window.game` and the ready flag (`document.body.dataset.ready`
@@ -92,7 +106,7 @@ export function createGameShell(options: GameShellOptions): GameShell {
   const render = options.render;
   const hud = createHud({
     title: options.title,
-    controls: [...SHELL_CONTROLS, ...(options.controls ?? [])],
+    controls: legendLines(options.controls ?? []),
     ...(options.hudParent ? { parent: options.hudParent } : {}),
   });
   let world = options.createWorld();

@@ -231,7 +231,9 @@ export function createStick(options: StickOptions): Stick {
     }
     state.x = x;
     state.y = y;
-    const radius = base.clientWidth / 2 - 12;
+    // The knob stays inside the base (its own radius, 23 px, and 2 px in from the rim): pushed to the
+    // rim it covered the caption under the base.
+    const radius = Math.max(0, base.clientWidth / 2 - 25);
     knob.style.transform = `translate(${(x * radius).toFixed(1)}px, ${(-y * radius).toFixed(1)}px)`;
     base.setAttribute('aria-valuetext', `x ${x.toFixed(2)}, y ${y.toFixed(2)}`);
     options.onChange(x, y);
