@@ -57,6 +57,7 @@ import {
   getSound,
   numberParam,
   pageLayout,
+  pauseUnderDrawers,
   plural,
   type SoundMaterial,
   seedParam,
@@ -953,26 +954,8 @@ const game = await startPixiGame({
 });
 const { shell, renderer, app } = game;
 
-/**
- * On a small screen a drawer (the menu, or the settings) opened over the scene pauses the game, the
- * round's clock with it, and closing it resumes the game if the drawer paused it (the clock ran on
- * under the menu). A pause the player made stays.
- */
-function pauseUnderDrawers(): void {
-  const root = pageLayout().root;
-  let pausedByDrawer = false;
-  new MutationObserver(() => {
-    const open = root.dataset.open !== undefined && pageLayout().compact();
-    if (open && !shell.paused) {
-      shell.paused = true;
-      pausedByDrawer = true;
-    } else if (!open && pausedByDrawer) {
-      pausedByDrawer = false;
-      if (shell.paused) shell.paused = false;
-    }
-  }).observe(root, { attributes: true, attributeFilter: ['data-open'] });
-}
-pauseUnderDrawers();
+// A drawer opened over the scene on a small screen pauses the round and its clock.
+pauseUnderDrawers(shell, { compactOnly: true });
 
 /** Gives the heavy balls of `world` their user colour (the others keep their seeded colours). */
 function colorHeavy(world: PhysicsWorld): void {

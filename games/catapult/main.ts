@@ -22,6 +22,7 @@ import {
   isTouchDevice,
   numberParam,
   pageLayout,
+  pauseUnderDrawers,
   pointerOnCanvas,
   type SoundMaterial,
   seedParam,
@@ -408,26 +409,8 @@ const MATERIAL_COLORS: Record<Level['pieces'][number]['kind'], number> = {
   brick: 0xa39e94,
   stone: 0x8b929c,
 };
-/**
- * On a small screen a drawer (the menu, or the settings) opened over the scene pauses the game, and
- * closing it resumes the game if the drawer paused it: a stone flying or a castle falling under a
- * menu was play the player did not see. (A pause the player made stays.)
- */
-function pauseUnderDrawers(): void {
-  const root = pageLayout().root;
-  let pausedByDrawer = false;
-  new MutationObserver(() => {
-    const open = root.dataset.open !== undefined && pageLayout().compact();
-    if (open && !shell.paused) {
-      shell.paused = true;
-      pausedByDrawer = true;
-    } else if (!open && pausedByDrawer) {
-      pausedByDrawer = false;
-      if (shell.paused) shell.paused = false;
-    }
-  }).observe(root, { attributes: true, attributeFilter: ['data-open'] });
-}
-pauseUnderDrawers();
+// A drawer opened over the scene on a small screen pauses a flying stone and a falling castle.
+pauseUnderDrawers(shell, { compactOnly: true });
 
 /** Gives the level's bodies the colours of what they are made of. */
 function paint(): void {

@@ -32,6 +32,7 @@ import {
   isTouchDevice,
   numberParam,
   pageLayout,
+  pauseUnderDrawers,
   seedParam,
 } from '@bitphysics/game-kit';
 import { isSoftwareWebGL, ORBIT_CONTROLS_RIGHT, startThreeGame } from '@bitphysics/game-kit/three';
@@ -314,26 +315,8 @@ const game = await startThreeGame({
   onFrame: () => frame(),
 });
 const { shell, renderer, app } = game;
-/**
- * A drawer (the menu, or the settings) opened over the scene pauses the game, and closing it resumes
- * the game if the drawer paused it: a swing and a tower falling under the menu were play the player
- * did not see. (A pause the player made stays.)
- */
-function pauseUnderDrawers(): void {
-  const root = pageLayout().root;
-  let pausedByDrawer = false;
-  new MutationObserver(() => {
-    const open = root.dataset.open !== undefined;
-    if (open && !shell.paused) {
-      shell.paused = true;
-      pausedByDrawer = true;
-    } else if (!open && pausedByDrawer) {
-      pausedByDrawer = false;
-      if (shell.paused) shell.paused = false;
-    }
-  }).observe(root, { attributes: true, attributeFilter: ['data-open'] });
-}
-pauseUnderDrawers();
+// A drawer (menu or settings) pauses the swing and the falling tower while it is open.
+pauseUnderDrawers(shell);
 /** Dust, chips and popups of the hits. */
 const effects = new SiteEffects(app.scene, PORTRAIT ? 1.6 : 1);
 /** Pieces whose fall has been counted for a popup, by body handle. */

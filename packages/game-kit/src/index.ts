@@ -18,7 +18,7 @@ export { forEachImpact } from './impacts.js';
 export type { KeyBinding } from './keys.js';
 export { bindKeys } from './keys.js';
 export type { PageLayout } from './layout.js';
-export { COMPACT_MAX_HEIGHT, COMPACT_MAX_WIDTH, pageLayout } from './layout.js';
+export { COMPACT_MAX_HEIGHT, COMPACT_MAX_WIDTH, pageLayout, pauseUnderDrawers } from './layout.js';
 export type { GameLoop, GameLoopOptions } from './loop.js';
 export { createGameLoop } from './loop.js';
 export type { ChoiceControl, Panel, PanelControl, PanelOptions, PlainControl, SliderControl } from './panel.js';

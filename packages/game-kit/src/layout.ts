@@ -274,3 +274,32 @@ export function pageLayout(): PageLayout {
   };
   return layout;
 }
+
+/**
+ * Pauses `game` while a drawer of the page (the menu or the settings, `data-open` on the layout's
+ * root) is open, and resumes it when the drawer closes if the drawer paused it; a pause the player
+ * made stays. Play a player cannot see (a stone flying, a round's clock running under the menu) then
+ * waits for them.
+ * @param game anything with a writable `paused` flag (a game shell, a 3D game).
+ * @param options `compactOnly` (default false): only on a small screen (`PageLayout.compact()`),
+ *   where the drawers cover the scene; on a large one they sit beside it.
+ * @returns a function that stops watching the drawers.
+ * @throws Error outside a browser (as pageLayout).
+ */
+export function pauseUnderDrawers(game: { paused: boolean }, options: { compactOnly?: boolean } = {}): () => void {
+  const page = pageLayout();
+  const compactOnly = options.compactOnly ?? false;
+  let pausedByDrawer = false;
+  const observer = new MutationObserver(() => {
+    const open = page.root.dataset.open !== undefined && (!compactOnly || page.compact());
+    if (open && !game.paused) {
+      game.paused = true;
+      pausedByDrawer = true;
+    } else if (!open && pausedByDrawer) {
+      pausedByDrawer = false;
+      if (game.paused) game.paused = false;
+    }
+  });
+  observer.observe(page.root, { attributes: true, attributeFilter: ['data-open'] });
+  return () => observer.disconnect();
+}
