@@ -792,7 +792,16 @@ describe('3D rigid-body games in headless Chromium', () => {
           stage: r.left,
         };
       });
-    const closed = await spans();
+    // The first read waits for the page's layout to hold still over two frames: under load the
+    // canvas could still be taking its size (the room's right edge read 1,061 px, then 1,039 for good).
+    let closed = await spans();
+    for (let i = 0; i < 200; i++) {
+      await g.page.evaluate(() => new Promise((done) => requestAnimationFrame(() => requestAnimationFrame(done))));
+      const next = await spans();
+      const still = Math.abs(next.right - closed.right) < 0.01 && Math.abs(next.left - closed.left) < 0.01;
+      closed = next;
+      if (still) break;
+    }
     await g.page.locator('.bp-side-button').click();
     const open_ = await g.waitFor(() => (document.querySelector('.bp-app') as HTMLElement).dataset.open === 'side' || null, null);
     expect(open_).toBe(true);
