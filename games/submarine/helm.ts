@@ -228,7 +228,7 @@ export function coastBrake(mass: number, u: number, throttle: number): number {
  * moves the depth order by most of a metre. (A key that asked for the full 10 m/s at once took the boat
  * 11 m in 1.5 s; one that ramped up from a tenth made the depth grow with the square of the time.)
  * Under way the key asks for more (`KEY_HEAVE_SHARE_FAST`). The on-screen stick asks for as much as it
- * is pushed, up to all of it.
+ * is pushed, up to what a key asks for (the page's heldInput), so the two dive alike.
  */
 export const KEY_HEAVE_SHARE = 0.6;
 

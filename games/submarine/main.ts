@@ -193,6 +193,12 @@ const PICKUP_LIFE = 2;
 /** The framing camera: the hull and the next beacon are kept this far inside the view's edges, px. */
 const FRAME_MARGIN = 60;
 /**
+ * Room the framing camera keeps clear between the hull's ends and the view's left and right edges,
+ * px: the depth ladder and its figures ("30 m", about 36 px) are drawn left of the stern, and on a
+ * phone leading ahead the boat sat at the edge with its tail cut off and the figures on the hull.
+ */
+const HULL_SIDE_ROOM = 60;
+/**
  * The framing camera zooms out no further than this, px/m (beyond, the edge arrow leads on): 5 on
  * a wide screen (the 12 m hull 60 px long; at 2 px/m a stranger saw it shrink to about 35 px at
  * speed), 4 on a small one, where the hull would otherwise shrink under 48 px and the mines to specks.
@@ -323,7 +329,11 @@ function heldInput(now: number): HelmInput {
     noseUp: held.has('e'),
     ahead: held.has('d') || held.has('arrowright') || stickInput.x > STICK_DEAD,
     astern: held.has('a') || held.has('arrowleft') || stickInput.x < -STICK_DEAD,
-    heave: heaveKey ? keyHeaveShare(heaveKeySince, now, speedAhead()) : stickShare(stickInput.y, false),
+    // The stick grades the dive or climb up to what a key asks for (./helm.ts keyHeaveShare) and no
+    // further, so a thumb at the rim and a held key take the boat down alike.
+    heave: heaveKey
+      ? keyHeaveShare(heaveKeySince, now, speedAhead())
+      : Math.min(stickShare(stickInput.y, false), keyHeaveShare(now, now, speedAhead())),
     drive: stickShare(stickInput.x, held.has('a') || held.has('d') || held.has('arrowleft') || held.has('arrowright')),
   };
 }
@@ -546,12 +556,13 @@ const game = await startPixiGame({
   createWorld,
   step: stepWorld,
   bodies: () => 1,
-  // The game's time keeps pace with the clock down to 6.7 frames a second (9 steps of 1/60 s a
-  // frame, frames up to 0.15 s; by default at most 4 and 0.1 s, so on a phone drawing under 15 fps
-  // the boat went in slow motion and answered the stick late). A step of the one hull costs
-  // microseconds.
-  maxFrameTime: 0.15,
-  maxStepsPerFrame: 9,
+  // The game's time keeps pace with the clock down to 1 frame a second (60 steps of 1/60 s a
+  // frame, frames up to 1 s; by default at most 4 and 0.1 s): a loaded machine draws 2 to 15 fps
+  // with frames of a second or more now and then, and with less a held key or stick ran in slow
+  // motion (a 4 s hold took the boat a quarter as far as the gauge's speed said). A step of the one
+  // hull costs well under a millisecond, so 60 of them never make the next frame later still.
+  maxFrameTime: 1,
+  maxStepsPerFrame: 60,
   controls: [
     { keys: '↓ ↑ / S W', action: 'dive / rise (let go: stop at the line)', touch: 'stick ↓ ↑' },
     { keys: '← → / A D', action: 'screw astern / ahead', touch: 'stick ← →' },
@@ -1254,7 +1265,7 @@ function drawDepthGauge(W: number, H: number, depth: number, order: number, bed:
   }
   gaugeTarget.visible = Number.isFinite(beacon) && Math.abs(at(beacon) - yb) > 14;
   if (gaugeTarget.visible) {
-    gaugeTarget.text = `${targetName} ${Math.max(0, beacon).toFixed(0)} m`;
+    gaugeTarget.text = `beacon ${targetName} ${Math.max(0, beacon).toFixed(0)} m`;
     gaugeTarget.position.set(x0 - 9, Math.max(top + 6, Math.min(bottom - 6, at(beacon))));
     const tw = gaugeTarget.width,
       th = gaugeTarget.height,
@@ -1289,7 +1300,8 @@ function drawDepthGauge(W: number, H: number, depth: number, order: number, bed:
     gaugeDepth = gaugeText(12);
     gaugeDepth.style.fill = 0xffe066;
   }
-  gaugeDepth.text = `${Math.max(0, depth).toFixed(0)} m`;
+  // Named, so that it never reads as the beacon's depth when the beacon's tag hides near it.
+  gaugeDepth.text = `you ${Math.max(0, depth).toFixed(0)} m`;
   gaugeDepth.position.set(x0 - 13, Math.max(top + 6, Math.min(bottom - 6, yb)));
   // Off the target's frame (its brackets reach the gauge when the beacon is near the right edge,
   // and on a phone the tags were drawn over them): each tag moves just above or below the frame,
@@ -1331,10 +1343,11 @@ const shownLabels: { name: string; box: number[] }[] = [];
  * it would cover; the hit's label stays over its place, moved up or down past what it would cover.
  * Last the tags that only add to what the scene shows (the target's depth on the gauge, the gauge's
  * and the ladder's figures, the other beacons' tags, the glows' points), each hidden where it would
- * cover anything placed before it. (On a phone they were drawn on each other: the banner over the
- * mine's tag, the ladder's figures through the hint.)
+ * cover anything placed before it or the hull's box `hull` (x, y, width, height, px). (On a phone
+ * they were drawn on each other: the banner over the mine's tag, the ladder's figures through the
+ * hint and the hull.)
  */
-function declutter(H: number): void {
+function declutter(H: number, hull: readonly number[]): void {
   const taken: number[][] = [];
   shownLabels.length = 0;
   const take = (name: string, box: number[]) => {
@@ -1380,6 +1393,7 @@ function declutter(H: number): void {
     take('hit', boxOf(hitLabel));
   }
   const minor: [string, Text][] = [];
+  taken.push([...hull]);
   if (gaugeTarget) minor.push(['target depth', gaugeTarget]);
   for (const m of ladderMarks) minor.push(['ladder', m]);
   for (let i = 0; i < otherTags; i++) minor.push(['beacon tag', tags[i]!]);
@@ -1589,7 +1603,9 @@ function draw(): void {
   const k = zoom;
   // Centred between them, moved toward the hull as far as needed to keep the hull FRAME_MARGIN
   // inside the view when both do not fit; never more sky than the top 15% of the view.
+  // The hull's centre itself keeps HULL_SIDE_ROOM past its half length from the sides (hullReachX).
   const reachX = Math.max(0, W / 2 - FRAME_MARGIN) / k,
+    hullReachX = Math.max(0, W / 2 - Math.max(FRAME_MARGIN, (SUBMARINE.length / 2) * k + HULL_SIDE_ROOM)) / k,
     reachY = Math.max(0, H / 2 - FRAME_MARGIN) / k;
   // Look-ahead: the view leads the hull by LEAD_TIME s (PORTRAIT_LEAD_TIME on a portrait view) of its velocity along x (LEAD_TIME_Y s across), at most LEAD_SHARE of the way
   // to the framing margin, eased over about LEAD_EASE s of game time (a bump or a blast does not jerk
@@ -1604,7 +1620,7 @@ function draw(): void {
     leadY = Math.max(-LEAD_SHARE * reachY, Math.min(LEAD_SHARE * reachY, camera.leadY));
   const atLeast = (framed: number, hull: number, lead: number) =>
     lead > 0 ? Math.max(framed, hull + lead) : lead < 0 ? Math.min(framed, hull + lead) : framed;
-  const cx = Math.max(hxw - reachX, Math.min(hxw + reachX, atLeast((hxw + fx) / 2, hxw, leadX))),
+  const cx = Math.max(hxw - hullReachX, Math.min(hxw + hullReachX, atLeast((hxw + fx) / 2, hxw, leadX))),
     cy = Math.min(-H / k / 2 + (0.15 * H) / k, Math.max(hyw - reachY, Math.min(hyw + reachY, atLeast((hyw + fy) / 2, hyw, leadY))));
   camera.x = cx;
   camera.y = cy;
@@ -2129,7 +2145,9 @@ function draw(): void {
     aim.index >= 0 ? -handles.beacons[2 * aim.index + 1]! : Number.NaN,
   );
   drawHits(t, k, sx, sy, W, H, sy(hyw) - (Hh + 2.5) * k);
-  declutter(H);
+  // The hull's box on the screen (level, its sail included): the tags that only add are kept off it.
+  const hr = Math.max(SUBMARINE.length / 2, SUBMARINE.height / 2 + 2) * k;
+  declutter(H, [sx(hxw) - (SUBMARINE.length / 2) * k, sy(hyw) - hr / 2, SUBMARINE.length * k, hr]);
   drawPause(W, H);
   // The hull gauge at a hit: red and enlarged, fading over GAUGE_FLASH s of game time.
   const hitAge = hitMarks.length > 0 ? t - hitMarks[hitMarks.length - 1]!.time : Number.POSITIVE_INFINITY;
@@ -2204,8 +2222,16 @@ shell.expose({
   depthLadder: () => ({ alpha: ladder.alpha, marks: ladderMarks.filter((m) => m.visible).map((m) => m.text) }),
   /** The words over the scene as last drawn, kept off each other: each shown one's name and box (x, y, width, height, px). */
   labels: () => shownLabels.map((l) => ({ name: l.name, box: [...l.box] })),
-  /** The depth gauge's tags as last drawn: the boat's depth and the target's, each x, y, width, height, px (zeros while hidden). */
-  gaugeTags: () => ({ depth: [...gauge_.depth], target: [...gauge_.target] }),
+  /**
+   * The depth gauge's tags as last drawn: the boat's depth and the target's, each x, y, width,
+   * height, px (zeros while hidden), and their words ("you 31 m", "beacon A 27 m"; '' while hidden).
+   */
+  gaugeTags: () => ({
+    depth: [...gauge_.depth],
+    target: [...gauge_.target],
+    depthText: gaugeDepth?.visible ? gaugeDepth.text : '',
+    targetText: gaugeTarget?.visible ? gaugeTarget.text : '',
+  }),
   /** The camera as last drawn: centre (x, y, m), zoom (px/m), look-ahead (m, before its limit) and shake (px). */
   camera: () => ({ ...camera }),
   /**

@@ -13,7 +13,7 @@ import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
 import { checkLayout } from './layout-check';
 import { touchPath } from './touch';
 
-type Camera = { x: number; y: number; zoom: number; leadX: number; shake: number; width: number; height: number };
+type Camera = { x: number; y: number; zoom: number; leadX: number; shake: number; width: number; height: number; time: number };
 type Hit = { kind: string; x: number; y: number; label: string; box: number[]; shake: number; gauge: string; gaugeFlash: number };
 type Sub = {
   paused: boolean;
@@ -232,23 +232,23 @@ async function diveOnPhone(g: GamePage): Promise<void> {
   expect(edge.right).toBeLessThan(edge.gaugeLeft);
 }
 
-/** Pauses the game (from inside the page, on the frame it happens) once a hit of `kind` is `after` s of game time old. */
-function pauseAfterHit(page: Page, kind: string, after: number): Promise<void> {
+/**
+ * With the game paused, runs its steps one by one (as the N key does) until a hit of `kind` is
+ * `after` s of game time old, at most 20 s of game time; the game stays paused there. (Run by the
+ * page's own frames, a loaded machine's frame of up to a second ran the hit's label and shake out
+ * before the frame that paused it.)
+ */
+function stepToHit(page: Page, kind: string, after: number): Promise<void> {
   return page.evaluate(
     ([kind, after]) => {
-      const w = window.game as unknown as Sub;
+      const w = window.game as unknown as Sub & { step(): void };
       let t0 = Number.NaN;
-      const frame = () => {
-        if (w.hitEffect().kind === kind) {
-          if (Number.isNaN(t0)) t0 = w.world.time;
-          if (w.world.time >= t0 + after) {
-            w.paused = true;
-            return;
-          }
-        }
-        requestAnimationFrame(frame);
-      };
-      requestAnimationFrame(frame);
+      for (let i = 0; i < 1200; i++) {
+        w.step();
+        if (w.hitEffect().kind !== kind) continue;
+        if (Number.isNaN(t0)) t0 = w.world.time;
+        if (w.world.time >= t0 + after) return;
+      }
     },
     [kind, after] as const,
   );
@@ -315,8 +315,8 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
         touchPoints: [{ x: stick.x + stick.width / 2, y: stick.y + stick.height - 10, id: 1 }],
       });
     else await g.page.keyboard.down('s');
-    // The stick's full push dives at full speed; the key asks for a steady share of it (helm.ts
-    // keyHeaveShare), so it is held longer for the order to run metres ahead.
+    // The stick at its rim and the key ask for the same steady share of the dive speed (helm.ts
+    // keyHeaveShare); the stick is held for less game time, as a thumb's flick is.
     await g.waitFor(([t, held]) => (window.game as unknown as Sub).world.time > t + held, [t0, touch ? 0.8 : 1.5] as const, 60_000);
     if (cdp) {
       await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
@@ -562,9 +562,9 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     expect(await g.page.evaluate(() => (window.game as unknown as Sub).hitEffect().kind)).toBe('');
     expect(await g.page.locator('[data-hud="hull"]').textContent()).toBe('hull ▮▮▮ 3/3');
     // The hull put into the seabed coming down at 4 m/s (over the 1.5 m/s a hit needs).
-    await pauseAfterHit(g.page, 'seabed', 0.1);
     await g.page.evaluate(() => {
       const w = window.game as unknown as Sub;
+      w.paused = true;
       const bed = w.handles().seabed,
         c = w.world.components,
         e = w.hull();
@@ -573,6 +573,7 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
       c.Velocity.x[e] = 0;
       c.Velocity.y[e] = -4;
     });
+    await stepToHit(g.page, 'seabed', 0.1);
     await g.waitFor(() => (window.game as unknown as Sub).paused, null, 60_000);
     await g.frames(2);
     const check = async (kind: string, label: string, gauge: string) => {
@@ -666,9 +667,9 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     const turn = Math.atan2(by - ay, bx - ax) - Math.atan2(my - hy, mx - hx);
     expect(Math.abs(Math.atan2(Math.sin(turn), Math.cos(turn)))).toBeLessThan((10 * Math.PI) / 180);
     // The hull put at rest with its deck 0.5 m under the first mine.
-    await pauseAfterHit(g.page, 'mine', 0.1);
     await g.page.evaluate(() => {
       const w = window.game as unknown as Sub;
+      w.paused = true;
       const m = w.mines()[0]!,
         c = w.world.components,
         e = w.hull();
@@ -677,8 +678,8 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
       c.Velocity.x[e] = 0;
       c.Velocity.y[e] = 0;
       w.state.throttle = 0;
-      w.paused = false;
     });
+    await stepToHit(g.page, 'mine', 0.1);
     await g.waitFor(() => (window.game as unknown as Sub).paused, null, 60_000);
     await g.frames(2);
     await check('mine', 'MINE!\n−1 hull', 'hull ▮▯▯ 1/3');
@@ -1089,4 +1090,151 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     expect(g.errors).toEqual([]);
     await g.close();
   }, 180_000);
+});
+
+describe.each(SIZES)('submarine helm and framing ($device)', ({ device, viewport, touch }) => {
+  let h: Harness;
+  beforeAll(async () => {
+    h = await Harness.start();
+  }, START_TIMEOUT_MS);
+  afterAll(async () => {
+    await h?.close();
+  });
+  type Helm = Sub & {
+    step(): void;
+    reset(): void;
+    setStick(x: number, y: number): void;
+    labels(): { name: string; box: number[] }[];
+    gaugeTags(): { depth: number[]; target: number[]; depthText: string; targetText: string };
+  };
+
+  it('a frame of 0.8 s (a loaded machine) still advances the game by 0.8 s, so a held control keeps pace with the clock', async () => {
+    // One frame held up for 0.8 s by a busy loop: the next frames run the game's steps for it (the
+    // page allows frames up to 1 s; with 0.15 s a held Dive went down a third as far per second of
+    // the clock on a machine drawing 2 fps).
+    const g = await h.openGame('submarine', { viewport, touch, query: { waves: 0, beacons: 1 } });
+    await g.waitFor(() => (window.game as unknown as Sub).world.time > 0.5, null, 60_000);
+    const r = await g.page.evaluate(
+      () =>
+        new Promise<{ game: number; wall: number }>((resolve) => {
+          const w = window.game as unknown as Sub;
+          requestAnimationFrame(() => {
+            const t0 = w.world.time,
+              w0 = performance.now();
+            while (performance.now() - w0 < 800) {
+              // Busy: the page draws nothing for 0.8 s.
+            }
+            requestAnimationFrame(() =>
+              requestAnimationFrame(() => resolve({ game: w.world.time - t0, wall: (performance.now() - w0) / 1000 })),
+            );
+          });
+        }),
+    );
+    // Game time gone at least the 0.8 s frame (less one step), at most the wall time gone.
+    expect(r.game).toBeGreaterThan(0.8 - 1 / 60);
+    expect(r.game).toBeLessThanOrEqual(r.wall + 1 / 60);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  }, 120_000);
+
+  it('a held Dive key and the stick at its rim dive alike; a stick half way dives less; the gauge names its tags', async () => {
+    // Paused, from the start each time (a fresh world), 2 s of steps (120 of 1/60 s) with ↓ held,
+    // then with the stick at the bottom of its rim, then with it 0.4 of the way: how far down the
+    // hull went, m. The page asks the helm for the same share of the dive speed from both at the rim
+    // (helm.ts keyHeaveShare; the stick asked for all of it, 1.6 times the key's depth a second).
+    const g = await h.openGame('submarine', { viewport, touch, query: { waves: 0, beacons: 1 } });
+    await g.waitFor(() => (window.game as unknown as Sub).world.time > 0.2, null, 60_000);
+    const dive = async (how: 'key' | 'rim' | 'half'): Promise<number> => {
+      await g.page.evaluate(() => {
+        const w = window.game as unknown as Helm;
+        w.paused = true;
+        w.reset();
+      });
+      if (how === 'key') await g.page.keyboard.down('ArrowDown');
+      const d = await g.page.evaluate(
+        (stick) => {
+          const w = window.game as unknown as Helm;
+          w.setStick(0, stick);
+          const e = w.hull(),
+            y0 = w.world.components.Position.y[e]!;
+          for (let i = 0; i < 120; i++) w.step();
+          w.setStick(0, 0);
+          return y0 - w.world.components.Position.y[e]!;
+        },
+        how === 'rim' ? -1 : how === 'half' ? -0.4 : 0,
+      );
+      if (how === 'key') await g.page.keyboard.up('ArrowDown');
+      return d;
+    };
+    const key = await dive('key'),
+      rim = await dive('rim'),
+      half = await dive('half');
+    expect(key).toBeGreaterThan(5);
+    expect(Math.abs(rim - key)).toBeLessThan(0.05 * key);
+    expect(half).toBeGreaterThan(1);
+    expect(half).toBeLessThan(0.85 * key);
+    // The gauge's tags say whose depth each is: the boat's ("you 12 m") and the beacon's ("beacon A 27 m").
+    await g.page.evaluate(() => {
+      (window.game as unknown as Helm).paused = false;
+    });
+    const tags = await g.waitFor(() => {
+      const t = (window.game as unknown as Helm).gaugeTags();
+      return t.depthText && t.targetText ? t : null;
+    }, null);
+    expect(tags.depthText).toMatch(/^you \d+ m$/);
+    expect(tags.targetText).toMatch(/^beacon [A-Z] \d+ m$/);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  }, 120_000);
+
+  it(`under way at full ahead the view leaves room behind the hull: its stern ${device === 'phone' ? 'on a phone ' : ''}60 px in from the edge, the depth ladder's figures off it`, async () => {
+    // The boat put 147 m short of its beacon (at x = -80 m, 15 m down, 12 m/s ahead), the stick
+    // full ahead for 2.5 s of game time (the look-ahead at its limit, the beacon far ahead: the view
+    // leads as far as it may), then let go; as it coasts the hull's box on the screen (from the
+    // camera) keeps HULL_SIDE_ROOM (60 px) from the view's edges, and no tag over the scene is on it
+    // (on a phone the stern was cut off by the left edge and the ladder's "20 m" drawn over it).
+    const g = await h.openGame('submarine', { viewport, touch, query: { waves: 0, beacons: 1 } });
+    await g.waitFor(() => (window.game as unknown as Sub).world.time > 0.2, null, 60_000);
+    const t0 = await g.page.evaluate(() => {
+      const w = window.game as unknown as Helm;
+      const c = w.world.components,
+        e = w.hull();
+      w.paused = true;
+      c.Position.x[e] = -80;
+      c.Position.y[e] = -15;
+      c.Velocity.x[e] = 12;
+      w.setStick(1, 0);
+      w.paused = false;
+      return w.world.time;
+    });
+    await g.waitFor((t) => (window.game as unknown as Sub).world.time > t + 2.5, t0, 60_000);
+    const r = await g.waitFor(() => {
+      const w = window.game as unknown as Helm;
+      const cam = w.camera(),
+        e = w.hull(),
+        c = w.world.components;
+      // Drawn this frame: the camera eased to this step's time.
+      if (Math.abs(cam.time - w.world.time) > 1e-9 || cam.shake !== 0) return null;
+      const hx = cam.width / 2 + (c.Position.x[e]! - cam.x) * cam.zoom,
+        hy = cam.height / 2 - (c.Position.y[e]! - cam.y) * cam.zoom;
+      w.setStick(0, 0);
+      return {
+        stern: hx - 6 * cam.zoom,
+        bow: hx + 6 * cam.zoom,
+        hull: [hx - 6 * cam.zoom, hy - 2 * cam.zoom, 12 * cam.zoom, 4 * cam.zoom],
+        width: cam.width,
+        speed: c.Velocity.x[e]!,
+        labels: w.labels(),
+      };
+    }, null);
+    expect(r.speed).toBeGreaterThan(8);
+    expect(r.stern).toBeGreaterThan(60 - 1);
+    expect(r.bow).toBeLessThan(r.width - 60);
+    const cross = (a: number[], b: number[]) =>
+      a[0]! < b[0]! + b[2]! && b[0]! < a[0]! + a[2]! && a[1]! < b[1]! + b[3]! && b[1]! < a[1]! + a[3]!;
+    for (const l of r.labels)
+      if (l.name === 'ladder' || l.name.startsWith('gauge') || l.name === 'target depth') expect(cross(l.box, r.hull), l.name).toBe(false);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  }, 120_000);
 });
