@@ -1383,7 +1383,9 @@ function drawCoach(x: number, sx: number, sy: number, k: number): void {
   const gap = 0.6 * k + 10;
   const roomLeft = sx - gap - x0,
     roomRight = x1 - sx - gap;
-  const right = Math.abs(endX - sx) > 20 ? endX < sx : roomRight >= roomLeft;
+  // Away from the path's end, unless that side is too narrow for the words (the ship near a wall).
+  let right = Math.abs(endX - sx) > 20 ? endX < sx : roomRight >= roomLeft;
+  if ((right ? roomRight : roomLeft) < 120 && (right ? roomLeft : roomRight) > (right ? roomRight : roomLeft)) right = !right;
   // Smaller letters on a narrow field (a phone's), where the room beside the ship is some 150 px.
   const size = x1 - x0 < 500 ? 14 : 16;
   if (coachText.style.fontSize !== size) {
@@ -1395,7 +1397,9 @@ function drawCoach(x: number, sx: number, sy: number, k: number): void {
   coachText.anchor.set(right ? 0 : 1, 0.5);
   const top = cam.toScreenY(playField.height) + 4 + coachText.height / 2,
     bottom = cam.toScreenY(0) - 4 - coachText.height / 2;
-  coachText.position.set(right ? sx + gap : sx - gap, Math.max(top, Math.min(bottom, sy - 0.2 * k)));
+  // Kept inside the field: a line wider than the room beside the ship slides toward the ship.
+  const tx = right ? Math.min(sx + gap, x1 - coachText.width) : Math.max(sx - gap, x0 + coachText.width);
+  coachText.position.set(tx, Math.max(top, Math.min(bottom, sy - 0.2 * k)));
 }
 
 /** Over the field while paused: the scene dimmed and "Paused", so a pause is not taken for a hang. */
