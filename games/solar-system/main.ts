@@ -96,7 +96,7 @@ import {
   Vector3,
 } from 'three';
 import { adviseAim, adviseBurn, createAimAdvice, createBurnAdvice, SPEED_STEP, startAim, TURN_STEP, tutorialAim } from './advice';
-import { displayRadius, fromDisplay, toDisplay } from './distance-scale';
+import { displayRadius, toDisplay } from './distance-scale';
 import { copyForecast, createForecast, ForecastJob } from './forecast';
 import {
   type Aim,
@@ -455,6 +455,29 @@ function readBest(): number[] {
   return MISSIONS.map(() => 0);
 }
 
+const LAST_KEY = 'bitphysics.solar-system.mission';
+
+/**
+ * The mission (0-based) a page opened without ?mission= resumes at: the last one started (kept in
+ * local storage), or, once that one has stars, the next not yet flown after it (round from the
+ * first); the last one started when every mission has stars; the first with no storage.
+ */
+function resumeMission(): number {
+  let last = 0;
+  try {
+    const v = Number(localStorage.getItem(LAST_KEY));
+    if (Number.isInteger(v) && v >= 0 && v < MISSIONS.length) last = v;
+  } catch {
+    /* no storage: the first mission */
+  }
+  if (best[last] === 0) return last;
+  for (let k = 1; k < MISSIONS.length; k++) {
+    const i = (last + k) % MISSIONS.length;
+    if (best[i] === 0) return i;
+  }
+  return last;
+}
+
 function saveBest(): void {
   try {
     localStorage.setItem(STARS_KEY, JSON.stringify(best));
@@ -485,6 +508,11 @@ function startMission(index: number): void {
   flight = null;
   missionIndex = Math.max(0, Math.min(MISSIONS.length - 1, index));
   params.mission = String(missionIndex + 1);
+  try {
+    localStorage.setItem(LAST_KEY, String(missionIndex));
+  } catch {
+    /* private mode: a reload starts at the first mission not flown */
+  }
   phase = 'aim';
   trailCount = 0;
   const m = mission();
@@ -1051,6 +1079,11 @@ const arrow = new Group();
 }
 const arrowUp = new Vector3(0, 1, 0);
 app.scene.add(arrow);
+/**
+ * How many times longer and thicker the launch arrow is drawn on a touch screen (a phone): 1 on a
+ * desktop. A phone's narrow view made it a sliver beside the Earth, too small to see where a tap aimed it.
+ */
+const ARROW_SCALE = matchMedia('(pointer: coarse)').matches ? 2.2 : 1;
 
 /** A line of up to `n` points with its own buffer, drawn with `material`. */
 function dynamicLine(n: number, material: LineBasicMaterial, loop = false): Line {
@@ -1598,10 +1631,10 @@ function drawLaunch(world: PhysicsWorld): void {
     launchDirection(earthHelio, aim.angle, launchDir);
     displayDirection(earthHelio, launchDir, dirV);
     // Longer for a faster launch; thick enough to see which way it points at any zoom.
-    const len = viewHalf * (0.16 + (0.4 * aim.speed) / MAX_SPEED);
+    const len = ARROW_SCALE * viewHalf * (0.16 + (0.4 * aim.speed) / MAX_SPEED);
     arrow.position.set(shown[3 * earthI]!, shown[3 * earthI + 1]!, shown[3 * earthI + 2]!);
     arrow.quaternion.setFromUnitVectors(arrowUp, dirV);
-    arrow.scale.set(viewHalf * 0.3, len, viewHalf * 0.3);
+    arrow.scale.set(ARROW_SCALE * viewHalf * 0.3, len, ARROW_SCALE * viewHalf * 0.3);
   }
   if (planned) {
     const f = forecast;
@@ -1684,7 +1717,6 @@ const raycaster = new Raycaster();
 const ecliptic = new Plane(new Vector3(0, 1, 0), 0);
 const ndc = new Vector2();
 const hitPoint = new Vector3();
-const aimAt = [0, 0, 0];
 
 /** A note the brief's line shows while aiming until performance.now() passes `aimNoteUntil` (ms). */
 let aimNote = '';
@@ -1723,11 +1755,21 @@ function aimAtPointer(clientX: number, clientY: number, first = false): void {
   // The pointer's direction from the Earth on the display, back to a heliocentric direction.
   const ex = shown[3 * earthI]!,
     ez = shown[3 * earthI + 2]!;
-  fromDisplay(hitPoint.x / UNITS_PER_AU, 0, hitPoint.z / UNITS_PER_AU, trueScale, aimAt);
   heliocentricState(shell.world, handles, handles.bodies.Earth, earthHelio);
   if (Math.hypot(hitPoint.x - ex, hitPoint.z - ez) < 1e-6) return;
-  const dx = aimAt[0]! - earthHelio[0]!,
-    dz = aimAt[2]! - earthHelio[2]!;
+  // The pointer's direction on the display, back through the display's local stretch at the Earth
+  // (the inverse of displayDirection: radially by the slope of the compressed radius, sideways by
+  // its ratio), so the arrow drawn points at the pointer on the screen.
+  const sx = (hitPoint.x - ex) / UNITS_PER_AU,
+    sz = (hitPoint.z - ez) / UNITS_PER_AU;
+  const rn = Math.hypot(earthHelio[0]!, earthHelio[2]!);
+  const rho = displayRadius(rn, trueScale);
+  const drho = (displayRadius(rn * (1 + 1e-6), trueScale) - rho) / (1e-6 * rn);
+  const ux = earthHelio[0]! / rn,
+    uz = earthHelio[2]! / rn;
+  const radial = sx * ux + sz * uz;
+  const dx = (radial * ux) / drho + ((sx - radial * ux) * rn) / rho,
+    dz = (radial * uz) / drho + ((sz - radial * uz) * rn) / rho;
   const p = launchDirection(earthHelio, 0, [0, 0, 0]),
     o = launchDirection(earthHelio, 90, [0, 0, 0]);
   const angle = (Math.atan2(dx * o[0]! + dz * o[2]!, dx * p[0]! + dz * p[2]!) * 180) / Math.PI;
@@ -2415,6 +2457,8 @@ shell.onWorldChange(() => {
   orbitsAt = -Infinity;
   hideCard();
 });
+// A reload goes on where the player was (./resumeMission); ?mission= picks one.
+if (!search.has('mission')) missionIndex = resumeMission();
 startMission(missionIndex);
 
 shell.expose({
@@ -2538,6 +2582,24 @@ shell.expose({
     for (let i = 0; i < CIRCLE; i++) ring.push(px(new Vector3().fromBufferAttribute(attr, i).applyMatrix4(ghostRing.matrixWorld)));
     const dot = new Vector3().fromBufferAttribute(probeThen.geometry.getAttribute('position') as Float32BufferAttribute, 0);
     return { key: ghostKey, visible: ghostRing.visible, ring, dot: px(dot) };
+  },
+  /**
+   * The launch arrow as the last frame drew it, canvas CSS px: its base (at the Earth) and its tip,
+   * and whether it shows (only while aiming).
+   */
+  arrow: () => {
+    const w = app.canvas.clientWidth,
+      h = app.canvas.clientHeight;
+    const px = (p: Vector3): [number, number] => {
+      p.project(app.camera);
+      return [((p.x + 1) / 2) * w, ((1 - p.y) / 2) * h];
+    };
+    arrow.updateMatrixWorld();
+    return {
+      visible: arrow.visible,
+      base: px(new Vector3(0, 0, 0).applyMatrix4(arrow.matrixWorld)),
+      tip: px(new Vector3(0, 1, 0).applyMatrix4(arrow.matrixWorld)),
+    };
   },
   preview: () => ({
     dots: planDotsShown,

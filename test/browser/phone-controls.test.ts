@@ -1111,6 +1111,50 @@ describe('phone controls', () => {
     await g.close();
   });
 
+  it('solar system: a tap aims the launch arrow straight at the tapped point, and the arrow is long enough to see on a phone', async () => {
+    const g = await h.openGame('solar-system', { ...PHONE, query: { rate: 0 } });
+    type Solar = {
+      mission(): { phase: string; aim: { angle: number } };
+      arrow(): { visible: boolean; base: [number, number]; tip: [number, number] };
+    };
+    const arrow = () => g.page.evaluate(() => (window.game as unknown as Solar).arrow());
+    const at = await arrow();
+    expect(at.visible).toBe(true);
+    // The arrow at mission 1's start (2.2 km/s, along the Earth's path) was 33 px long on this phone.
+    expect(Math.hypot(at.tip[0] - at.base[0], at.tip[1] - at.base[1])).toBeGreaterThan(50);
+    // Taps round the Earth inside the view, away from Mars (a tap on the target turns the arrow along
+    // the Earth's path instead). The status above the view may change height between taps, so the
+    // Earth's place on the page is read before each.
+    for (const [dx, dy] of [
+      [-150, 180],
+      [120, 60],
+      [150, -150],
+      [-20, 200],
+    ] as const) {
+      const before = await g.page.evaluate(() => {
+        const r = document.querySelector('canvas')!.getBoundingClientRect();
+        const a = (window.game as unknown as Solar).arrow();
+        return { angle: (window.game as unknown as Solar).mission().aim.angle, x: r.left + a.base[0], y: r.top + a.base[1] };
+      });
+      const tap = { x: before.x + dx, y: before.y + dy };
+      await g.page.touchscreen.tap(tap.x, tap.y);
+      await g.waitFor((b) => (window.game as unknown as Solar).mission().aim.angle !== b, before.angle);
+      // A frame draws the arrow the new way: on the screen it points from the Earth at the tap
+      // (within 4°: the aim is whole degrees), and it is still long (it foreshortens pointing up or down).
+      const drawn = await g.waitFor((t) => {
+        const r = document.querySelector('canvas')!.getBoundingClientRect();
+        const a = (window.game as unknown as Solar).arrow();
+        const want = Math.atan2(t.y - r.top - a.base[1], t.x - r.left - a.base[0]);
+        const got = Math.atan2(a.tip[1] - a.base[1], a.tip[0] - a.base[0]);
+        const off = Math.abs(Math.atan2(Math.sin(got - want), Math.cos(got - want)));
+        return off < (4 * Math.PI) / 180 ? { len: Math.hypot(a.tip[0] - a.base[0], a.tip[1] - a.base[1]) } : null;
+      }, tap);
+      expect(drawn.len, `tap ${dx},${dy} from the Earth`).toBeGreaterThan(40);
+    }
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
   it('fireworks: a tap starts the sound and launches a shell that bursts where tapped and bangs; a finger held down shows and sounds its charge at once; toolbar buttons are 44 x 44 px; mute is remembered', async () => {
     const g = await h.openGame('fireworks', { ...PHONE, query: { auto: 0, opening: 0 } });
     type Sounding = { sound: { running: boolean; played: number; muted: boolean } };

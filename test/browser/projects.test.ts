@@ -292,6 +292,35 @@ describe('projects', () => {
     await g.close();
   });
 
+  it('solar-system: a reload goes on at the mission last started, or at the next not yet flown once it has stars; ?mission= picks one', async () => {
+    const g = await h.openGame('solar-system', { viewport: { width: 1280, height: 800 }, query: { rate: 0 } });
+    type Solar = { mission(): { number: number; phase: string }; startMission(index: number): void };
+    const number = () => g.page.evaluate(() => (window.game as unknown as Solar).mission().number);
+    // A first visit (no storage) starts at mission 1.
+    expect(await number()).toBe(1);
+    // Mission 4 started, then the page reloaded: mission 4 again (it went back to mission 1).
+    await g.page.evaluate(() => (window.game as unknown as Solar).startMission(3));
+    await g.page.reload();
+    await g.waitFor(() => (window.game as unknown as Solar | undefined)?.mission?.().phase === 'aim', null);
+    expect(await number()).toBe(4);
+    // Mission 4 flown (stars kept) with 5 flown before: the reload goes on at 6, the next not flown.
+    await g.page.evaluate(() => localStorage.setItem('bitphysics.solar-system.stars', JSON.stringify([3, 2, 0, 1, 2, 0, 0])));
+    await g.page.reload();
+    await g.waitFor(() => (window.game as unknown as Solar | undefined)?.mission?.().phase === 'aim', null);
+    expect(await number()).toBe(6);
+    // Every mission flown: the one last started (6).
+    await g.page.evaluate(() => localStorage.setItem('bitphysics.solar-system.stars', JSON.stringify([3, 2, 1, 1, 2, 1, 3])));
+    await g.page.reload();
+    await g.waitFor(() => (window.game as unknown as Solar | undefined)?.mission?.().phase === 'aim', null);
+    expect(await number()).toBe(6);
+    // ?mission= wins over the storage.
+    await g.page.goto(`${g.page.url().split('?')[0]}?rate=0&mission=2`);
+    await g.waitFor(() => (window.game as unknown as Solar | undefined)?.mission?.().phase === 'aim', null);
+    expect(await number()).toBe(2);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
   it('solar-system: orbit lines; 2 frames all eight planets, 1 the inner four; labels by their dots never overlap', async () => {
     const g = await h.openGame('solar-system', { viewport: { width: 1280, height: 800 }, query: { rate: 0 } });
     type Solar = { orbitCount(): number; planetsInView(): string[]; shownLabels(): number };
