@@ -21,10 +21,11 @@
  * the pull, faster the longer it is, hoop.ts slingVelocity: the height it reaches grows evenly over
  * the second half of the pull), with a power gauge round the ball and a dotted arc of the start of its
  * flight while pulling (hoop.ts throwPath: AIM_SECONDS of it, twice that in the warm-up before the
- * first basket, 1.5 times as long on a phone held upright (TALL_AIM_SCALE), or to just past its apex if later, fading out, up to a ball in its way or through
- * a first bounce off a wall, a ramp or the hoop and AFTER_BOUNCE on; the player judges the rest). Each basketball thrown or dropped fades out once it has come to rest (MAX_LOOSE). A pull taken back
+ * first basket, 1.5 times as long on a phone held upright (TALL_AIM_SCALE), or to just past its apex if later, fading out, up to its
+ * first touch of a ball, a wall, a ramp or the hoop; the player judges the bounce and the rest). Each basketball thrown or dropped fades out once it has come to rest (MAX_LOOSE). A pull taken back
  * to within CANCEL_PULL of its press point ("release here to cancel") and let go throws nothing; the
- * full-speed pull is shortened for a pull with little room to the window's edge (pullFullPull). A pull
+ * same pull throws at the same speed wherever it is pressed (fullPull: no shorter full pull by the
+ * window's edge, which made one pull throw at 62 % from one press and 69 % from another). A pull
  * under way as the clock runs out is the round's last throw: the round waits for it and its ball
  * (lastCall), under a big "Last throw!"; the last 10 s the clock is red, the last 5 a big countdown ticks. The net stops a
  * ball from below or the side (hoop.ts netContact). The player's balls are basketballs, all the same
@@ -141,22 +142,6 @@ const TOUCH_SLOP = 12;
  * onto the press point takes it back.
  */
 const CANCEL_PULL = 15;
-/**
- * The shortest full-speed pull, CSS px, however little room there is beyond the press (pullFullPull):
- * short enough that a heap ball by the window's side (the desktop's box reaches its right edge)
- * still throws at full speed sideways, long enough that a px of pull is at most 1/40 of the top speed.
- */
-const MIN_FULL_PULL = 40;
-/**
- * A finger's shortest full-speed pull, as a share of fullPull (117 px on a 390 x 844 phone): a thumb
- * needs room to set a throw's power, and at MIN_FULL_PULL (a heap ball by the phone's side pulled
- * towards it) 30 px of drag went from a lob to the top speed. A finger lifted at the screen's edge
- * before that throws slower: pulled from a ball by the side, the pull goes down more than sideways.
- */
-const TOUCH_FULL_PULL_SHARE = 0.5;
-/** Kept free between the full-speed pull's end and the viewport's edge, CSS px. */
-const EDGE_MARGIN = 2;
-
 /** A screen taller than wide (a phone held upright) gets the tall box, which fills it. */
 const TALL = window.innerHeight > 1.2 * window.innerWidth;
 /**
@@ -220,6 +205,15 @@ function readBest(): number {
 }
 let best = readBest();
 /**
+ * The best points kept when the round began (0 when none): the end card cheers a new best only when
+ * the round beats a best there was; a first scoring round is a score to beat, not a record.
+ */
+let bestBefore = best;
+/** Whether the round's points beat a best kept before it began (a real one: bestBefore > 0). */
+function beatBest(): boolean {
+  return bestBefore > 0 && round.points > bestBefore;
+}
+/**
  * The last basket, for its celebration: where it went in (the rim's centre, m), the world time it was
  * scored (s), the hoop's spot it went through (an index of hoopSpots) and the score it made.
  */
@@ -255,6 +249,7 @@ function createWorld(): PhysicsWorld {
   // Each round's warm-up hoop is the layout's first spot; after it the spots come in an order of the
   // round's own (hoopOrder).
   round = createRound(roundSeconds);
+  bestBefore = best;
   flights = new Map();
   basketballs = new Set();
   fading = new Map();
@@ -1102,39 +1097,19 @@ function local(event: PointerEvent): [number, number] {
  * 30 % of the shorter side (117 px on a phone, 210 px on a desktop) they were 7 and 12 px, 4 and 8 px.
  * Not longer on a phone: a throw from 1.5 m over the floor of its box has some 170 px of screen
  * under it to pull into (at 75 %, 292 px, the steepest baskets took up to 177 px).
- * Pointer capture keeps the pull going past the canvas' edge.
+ * The same for every press, wherever it begins, so a pull's power is a function of its length alone:
+ * a px of pull is at most KNEE_SLOPE / fullPull of speed (0.28 % of the top speed at 420 px, a desktop's;
+ * 0.5 % at its 230 px least, a phone's). Pointer
+ * capture keeps the pull going past the canvas' and the window's edge.
  */
 function fullPull(): number {
   return Math.min(420, Math.max(230, 0.6 * Math.min(canvas.clientWidth || innerWidth, canvas.clientHeight || innerHeight)));
 }
 
-/**
- * The full-speed pull, CSS px, of a pull from viewport point (clientX, clientY), CSS px, in direction
- * (dx, dy) (any length; screen axes, y down): fullPull, or less when the viewport has less room than
- * that from the press to its edge along the pull (down to MIN_FULL_PULL), so a pull from a heap ball
- * low in the box or by the window's side still reaches MAX_THROW_SPEED before the pointer meets the
- * window's edge, where a mouse may stop. A `finger`'s is never shorter than TOUCH_FULL_PULL_SHARE of
- * fullPull. fullPull for a zero direction (no pull yet).
- */
-function pullFullPull(clientX: number, clientY: number, dx: number, dy: number, finger = false): number {
-  const len = Math.hypot(dx, dy);
-  if (!(len > 0)) return fullPull();
-  const ux = dx / len,
-    uy = dy / len;
-  const w = window.innerWidth || clientX,
-    h = window.innerHeight || clientY;
-  const across = ux > 0 ? (w - EDGE_MARGIN - clientX) / ux : ux < 0 ? (clientX - EDGE_MARGIN) / -ux : Infinity,
-    down = uy > 0 ? (h - EDGE_MARGIN - clientY) / uy : uy < 0 ? (clientY - EDGE_MARGIN) / -uy : Infinity;
-  const least = finger ? Math.max(MIN_FULL_PULL, TOUCH_FULL_PULL_SHARE * fullPull()) : MIN_FULL_PULL;
-  return Math.min(fullPull(), Math.max(least, Math.min(across, down)));
-}
 /** Whether the current press is a finger's (pointer type 'touch'). */
 let pressFinger = false;
-/** The current press's full-speed pull, CSS px (pullFullPull at the press, along the pull now). */
+/** The current press's full-speed pull, CSS px (fullPull when it began). */
 let fullPullNow = 420;
-/** Where the current press began in the viewport, CSS px (for pullFullPull). */
-let pressClientX = 0,
-  pressClientY = 0;
 
 /**
  * The cancel zone's radius round the press, CSS px: CANCEL_PULL for a mouse; for a finger, the thrown
@@ -1172,7 +1147,6 @@ function endAim(): void {
  * is thrown), lifted to the top of the heap over it if it is buried (liftSpot), else from the press's start spot (pressSpot: a new basketball).
  */
 function currentThrow(): { x: number; y: number; vx: number; vy: number; radius: number; mass: number } {
-  fullPullNow = pullFullPull(pressClientX, pressClientY, lastX - startX, lastY - startY, pressFinger);
   const [vx, vy] = slingVelocity(lastX - startX, lastY - startY, fullPullNow);
   if (pressBall !== 0 && handles.balls.includes(pressBall)) {
     const c = shell.world.components,
@@ -1286,8 +1260,6 @@ canvas.addEventListener('pointerdown', (event) => {
   pressBall = onBall;
   slop = event.pointerType === 'touch' ? TOUCH_SLOP : CLICK_SLOP;
   pressFinger = event.pointerType === 'touch';
-  pressClientX = event.clientX;
-  pressClientY = event.clientY;
   fullPullNow = fullPull();
   holdStart = performance.now();
   clearTimeout(holdTimer);
@@ -1456,26 +1428,21 @@ canvas.addEventListener('pointercancel', (event) => release(event, true));
 
 /**
  * The dotted arc of the throw the pointer would make now: its points, m (flat x, y pairs), or [] when
- * not pulling. Only the start of the flight (arcSeconds: to just past its apex), so a basket is judged, not read off the screen.
+ * not pulling. Only the start of the flight (arcSeconds: to just past its apex), and only up to its
+ * first touch: it ends where the ball would meet a wall, a ramp, the box's top, the hoop or a ball (the
+ * red cross), so where a bounce sends it is the player's to judge. An arc that went on through its
+ * first bounce let a stranger wiggle the pull until the dots dropped through the hoop.
  */
 function aimPath(): number[] {
   if (pointerId === -1 || !dragged || inCancelZone() || refused()) return [];
   const t = currentThrow();
-  const seconds = arcSeconds(t.vy);
-  const arc = arcOf(t, pressBall, seconds, 0, AIM_CEILING_BOUNCES);
-  // An arc that ends at a touch before its time (given more time, it is no longer) met a wall, a ramp
-  // or the hoop: it goes on through that first bounce for AFTER_BOUNCE s more, so a throw at the rim
-  // is seen to drop in or off it. One that ends at a ball (the red cross) stays ended there.
-  if (arcOf(t, pressBall, seconds + AFTER_BOUNCE, 0, AIM_CEILING_BOUNCES).length !== arc.length) return arc;
-  return arcOf(t, pressBall, seconds + AFTER_BOUNCE, 1, AIM_CEILING_BOUNCES);
+  return arcOf(t, pressBall, arcSeconds(t.vy), 0, 0);
 }
-/** How much longer than its usual length the aiming arc goes on when it bounces off a wall, a ramp or the hoop, s of flight: to show where the bounce sends it. */
-const AFTER_BOUNCE = 0.5;
 /**
  * How much of a throw's flight (vertical speed `vy`, m/s, up) its aiming arc shows, s: aimSeconds, or
  * to the drag-free apex and APEX_MORE past it if that is later (at most FLIGHT_SECONDS), so a weak
- * throw's arc is seen to turn over, not cut off while it still rises. It ends sooner at a ball in its
- * way, and goes on longer through a bounce (aimPath).
+ * throw's arc is seen to turn over, not cut off while it still rises. It ends sooner at its first
+ * touch (aimPath).
  */
 function arcSeconds(vy: number): number {
   const g = handles.params.gravity;
@@ -1484,11 +1451,6 @@ function arcSeconds(vy: number): number {
 }
 /** How far past its apex the aiming arc goes on, s of flight. */
 const APEX_MORE = 0.2;
-/**
- * Bounces off the box's top the aiming arc follows (hoop.ts throwPath ceilingBounces): a high throw's
- * arc ended where it met the ceiling, and the player could not see where it went from there.
- */
-const AIM_CEILING_BOUNCES = 1;
 
 /** Whether the press is on a buried ball with no room over it (liftSpot null): its pull throws nothing. */
 function refused(): boolean {
@@ -1519,8 +1481,7 @@ const TALL_AIM_SCALE = 1.5;
  * The aiming arc's length once the clock runs, s of flight: about the first third of a basket's
  * flight (a basket from the natural starts of reach.ts reaches the rim 0.8 to 2 s after its throw,
  * 1.7 s the median), so the arc shows the throw's direction and strength and the player judges the
- * rest. It ends at a ball in its way; at a wall, a ramp or the hoop it goes on through that bounce
- * for AFTER_BOUNCE s more (aimPath).
+ * rest. It ends sooner at its first touch: a ball, a wall, a ramp or the hoop (aimPath).
  */
 const AIM_SECONDS = 0.6;
 /** The aiming arc's length in the warm-up (before the round's first basket), s of flight: twice AIM_SECONDS, most of a basket's way. */
@@ -2199,7 +2160,7 @@ placeTouchHint();
 /**
  * Room to pull back into under the wide box's floor on a desktop, m: a pull from a heap ball lying on the
  * floor goes down, and with the floor near the window's bottom the mouse met the window's edge some 65 px
- * under the lowest ball, so a full-speed throw (pullFullPull) was a 65 px flick. This strip (the
+ * under the lowest ball (a maximized window's mouse stops at the screen's edge). This strip (the
  * court's stand) gives it about 160 px at 1280 x 800, for a box 16 % smaller. The phone's box is
  * narrower than its screen is tall and leaves a strip of its own.
  */
@@ -2258,7 +2219,7 @@ function updateStatus(): void {
   const over = round.phase === 'over';
   const cheering = shell.world.time - lastBasket.time < CELEBRATE_SECONDS && lastBasket.score === round.score;
   const goal = over
-    ? `Time! ${plural(round.points, 'point', 'points')}${round.points > 0 && round.points >= best ? ' — best yet!' : ''}`
+    ? `Time! ${plural(round.points, 'point', 'points')}${beatBest() ? ' — new best!' : ''}`
     : lastCall.aiming
       ? 'Time! Let go: this last throw still counts'
       : lastCall.ball !== 0
@@ -2381,7 +2342,13 @@ function drawEndCard(over: boolean): void {
   }
   const cam = renderer.camera;
   const { box } = layoutOf(TALL);
-  const newBest = round.points > 0 && round.points >= best;
+  const newBest = beatBest();
+  // A first scoring round has no best to beat: it is said plainly, not cheered as a record.
+  const bestLine = newBest
+    ? `a new best (was ${bestBefore})!`
+    : bestBefore === 0 && round.points > 0
+      ? 'your first score to beat'
+      : `best ${best}`;
   const tip =
     round.bestStreak < 3
       ? 'Tip: baskets in a row multiply points'
@@ -2402,7 +2369,7 @@ function drawEndCard(over: boolean): void {
       big: plural(round.points, 'point', 'points'),
       lines: [
         `${plural(round.score, 'basket', 'baskets')} from ${plural(round.shots, 'throw', 'throws')}`,
-        `Longest streak ${round.bestStreak} · ${newBest ? 'your best round yet!' : `best ${best}`}`,
+        `Longest streak ${round.bestStreak} · ${bestLine}`,
         ...bonus,
         tip,
       ],
@@ -2485,7 +2452,7 @@ shell.expose({
   aiming: (): boolean => pointerId !== -1,
   /** The label over the press or the carried ball ('' when none shows), e.g. 'release here to cancel'. */
   aimLabel: (): string => (holdLabel.visible ? holdLabel.text : ''),
-  /** The full-speed pull of the current (or last) press, CSS px, along its pull (pullFullPull). */
+  /** The full-speed pull of the current (or last) press, CSS px (fullPull when it began). */
   fullPull: (): number => fullPullNow,
   /** The status row's text (goal, numbers, hint). */
   statusText: (): string => status.element.innerText,
