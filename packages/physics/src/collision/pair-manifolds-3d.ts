@@ -49,10 +49,8 @@ export function pair(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, i
     // Two boxes, neither a sensor (the common case): straight from the scratch poses, or last step's
     // manifold carried over.
     relativePose(a, b);
-    // The smaller box's smallest half extent.
-    const size = halfA < halfB ? halfA : halfB;
     const prev = previousBoxRow(st, ea, eb, world.capacity);
-    if (prev >= 0 && reusable(st.previous, prev, size)) {
+    if (prev >= 0 && reusable(st.previous, prev, a, b)) {
       reuseManifold(st.previous, prev, a, b);
       boxRow.from = prev;
     } else {
@@ -175,9 +173,16 @@ function relativePose(a: number, b: number): void {
   }
 }
 
-/** Whether previous row `r` is a box-box row whose relative pose is within the reuse bounds of `rel`. */
-function reusable(P: Contact3DState['previous'], r: number, size: number): boolean {
+/**
+ * Whether previous row `r` is a box-box row whose relative pose is within the reuse bounds of `rel`
+ * (its shift bound scaled by the smaller of colliders a's and b's smallest half extents). The colliders'
+ * indices are passed rather than the size: a double argument to a call not inlined is boxed.
+ */
+function reusable(P: Contact3DState['previous'], r: number, a: number, b: number): boolean {
   if (P.local[r] !== 1) return false;
+  const halfA = scratch.boxHalf[a]!,
+    halfB = scratch.boxHalf[b]!,
+    size = halfA < halfB ? halfA : halfB;
   const o = RelPose.STRIDE * r,
     RP = P.relPose,
     shift = REUSE_SHIFT * size;

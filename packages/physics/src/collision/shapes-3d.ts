@@ -282,7 +282,6 @@ function gather(world: PhysicsWorld, s: Shape3DStore): void {
   let n = 0;
   ensure(64);
   const spec = cs.settings.speculativeDistance < SHAPE_SPECULATIVE_DISTANCE ? cs.settings.speculativeDistance : SHAPE_SPECULATIVE_DISTANCE;
-  const halfSpec = 0.5 * spec;
   scratch.spec = spec;
   const ox = c.PreviousPosition.x,
     oy = c.PreviousPosition.y,
@@ -328,7 +327,7 @@ function gather(world: PhysicsWorld, s: Shape3DStore): void {
     colliderOf[e] = n;
     colliderStamp[e] = pass;
     if (!isBall && s.sensor[e] === 1) scratch.anySensor = true;
-    if (!kept) poseCollider(world, s, n, e, b, t, isBall, asleep, halfSpec);
+    if (!kept) poseCollider(world, s, n, e, b, t, isBall, asleep);
     n++;
   }
   scratch.n = n;
@@ -337,8 +336,9 @@ function gather(world: PhysicsWorld, s: Shape3DStore): void {
 
 /**
  * Poses collider `n` (shape slot `e`, or ball body `b` when `isBall`) of body `b` of type `t`: its
- * start-of-step position and rotation, speed and box fattened by its speed over the step and
- * `halfSpec`, into the scratch at index n; `asleep` notes the pose a sleeping shape was posed from.
+ * start-of-step position and rotation, speed and box fattened by its speed over the step and half
+ * this step's speculative distance (scratch.spec), into the scratch at index n; `asleep` notes the
+ * pose a sleeping shape was posed from.
  */
 function poseCollider(
   world: PhysicsWorld,
@@ -349,7 +349,6 @@ function poseCollider(
   t: number,
   isBall: boolean,
   asleep: boolean,
-  halfSpec: number,
 ): void {
   const c = world.components,
     sc = scratch,
@@ -399,7 +398,9 @@ function poseCollider(
   }
   // Half its speculative distance on each box: two boxes' fattened boxes overlap exactly when they are
   // within spec + (|v_a| + |v_b|) h of each other along every axis, the pair's narrowphase margin.
-  const pad = speed * h + halfSpec;
+  // (scratch.spec is read here rather than passed: a double argument to a call not inlined is boxed,
+  // one allocation per collider.)
+  const pad = speed * h + 0.5 * sc.spec;
   // Half widths of the box: a box's own (sum of h_k |R_ak|, tight), else the bounding sphere's.
   let wx = reach,
     wy = reach,

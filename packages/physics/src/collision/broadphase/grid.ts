@@ -262,29 +262,29 @@ function classifyBalls(world: PhysicsWorld, balls: ArrayLike<number>): number {
     margin[e] = m;
     reachSum += radius[e]! + m;
   }
-  let ents = query(world, [c.Ball, c.Inertia, c.AngularVelocity]);
+  const spinning = query(world, [c.Ball, c.Inertia, c.AngularVelocity]);
   const iInv = c.Inertia.inv;
-  for (let i = 0; i < ents.length; i++) {
-    const e = ents[i]!;
+  for (let i = 0; i < spinning.length; i++) {
+    const e = spinning[i]!;
     invInertia[e] = iInv[e]!;
   }
-  ents = query(world, [c.Ball, c.Kinematic]);
-  for (let i = 0; i < ents.length; i++) {
-    const e = ents[i]!;
+  const kinematic = query(world, [c.Ball, c.Kinematic]);
+  for (let i = 0; i < kinematic.length; i++) {
+    const e = kinematic[i]!;
     invMass[e] = 0;
     invInertia[e] = 0;
     type[e] = BodyType.Kinematic;
   }
-  ents = query(world, [c.Ball, c.Sleeping]);
-  for (let i = 0; i < ents.length; i++) {
-    const e = ents[i]!;
+  const sleeping = query(world, [c.Ball, c.Sleeping]);
+  for (let i = 0; i < sleeping.length; i++) {
+    const e = sleeping[i]!;
     invMass[e] = 0;
     type[e] = BodyType.Sleeping;
   }
   cs.wakeCount = 0;
-  ents = query(world, [c.Ball, c.Position, c.Static]);
-  for (let i = 0; i < ents.length; i++) {
-    const e = ents[i]!;
+  const fixed = query(world, [c.Ball, c.Position, c.Static]);
+  for (let i = 0; i < fixed.length; i++) {
+    const e = fixed[i]!;
     invMass[e] = 0;
     invInertia[e] = 0;
     type[e] = BodyType.Static;
