@@ -846,11 +846,13 @@ describe.each([
   { device: 'desktop', viewport: { width: 1280, height: 800 }, touch: false },
   { device: 'phone', viewport: { width: 390, height: 844 }, touch: true },
 ] as const)('black hole level 1, a newcomer ($device)', ({ viewport, touch }) => {
-  it('a naive player who holds what the coach beside the ship says clears level 1 with its lives, on three seeds', async () => {
+  it('a naive player who holds what the coach beside the ship says clears level 1 with its lives', async () => {
     // The issue this answers: a stranger lost three lives on level 1 in 30 s without seeing how to
     // get through, and a drawn "way through" that depended on exact timing led one into a hole. The
     // coach reads the path of the moment, so it holds whatever the player's timing.
-    for (const seed of [1, 2, 3]) {
+    // One layout a size (seed 1 on the desktop, 2 on the phone): each run plays in real time, some
+    // 7 s of a 2-core CI machine's browser lane a seed.
+    for (const seed of touch ? [2] : [1]) {
       const p = await h.openGame('black-hole', { viewport, touch, query: { level: 1, seed } });
       // On the pad, before the first thrust, it says how to start and what the dots are.
       expect(await p.waitFor(() => (window.game as unknown as { coach(): string }).coach(), null)).toBe(
