@@ -12,7 +12,7 @@ import { pausedShade, resumedShade } from './dom-pause';
 import { afterRelease, recordBank } from './flight-bank';
 import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
 import { checkLayout } from './layout-check';
-import { cubeState, pageOf, placeCube, stillPageOf, waitCubeAtRest, waitCubeMoved } from './rotating-cube';
+import { cubeState, expectRollsStraightUp, pageOf, placeCube, stillPageOf, waitCubeAtRest, waitCubeMoved } from './rotating-cube';
 import { touchPath } from './touch';
 
 const PHONE = { viewport: { width: 390, height: 844 }, touch: true } as const;
@@ -623,26 +623,11 @@ describe('phone controls', () => {
     // A quick tap on ▲ rolls it over one edge: another face on top, the one the face net showed at ▲.
     await waitCubeAtRest(g);
     expect(await read(g, 'challenge().padTime')).toBeGreaterThan(0);
-    const face = await read(g, 'challenge().face');
-    type Net = { faceNet(): Record<string, string>; challenge(): { face: number } };
-    const net = await g.waitFor(() => {
-      const n = (window.game as unknown as Net).faceNet();
-      return n.top !== '' ? n : null;
-    }, null);
-    const s2 = await cubeState(g);
-    const p2 = await pageOf(g, s2.x, s2.y, s2.z);
-    const up = (await g.page.getByRole('button', { name: 'turn forward', exact: true }).boundingBox())!;
-    await touchPath(g.page, [[up.x + up.width / 2, up.y + up.height / 2]], 0);
-    await g.waitFor((f) => (window.game as unknown as { challenge(): { face: number } }).challenge().face !== f, face, 60_000);
-    await waitCubeAtRest(g);
-    expect(await read(g, 'challenge().face')).not.toBe(face);
-    expect(await g.waitFor((w) => (window.game as unknown as Net).faceNet().top === w || null, net.w)).toBe(true);
-    // ▲ rolls it the way the arrow points: straight up the screen (the cube was dropped square to the
-    // camera, so one of its edges faces the screen's up), not off to a side by the cube's heading.
-    const s3 = await cubeState(g);
-    const p3 = await pageOf(g, s3.x, s3.y, s3.z);
-    expect(p3.y).toBeLessThan(p2.y - 20);
-    expect(Math.abs(p3.x - p2.x)).toBeLessThan(0.2 * Math.abs(p3.y - p2.y));
+    // ▲ rolls it the way the arrow points: straight up the screen, not off to a side by the cube's heading.
+    await expectRollsStraightUp(g, async () => {
+      const up = (await g.page.getByRole('button', { name: 'turn forward', exact: true }).boundingBox())!;
+      await touchPath(g.page, [[up.x + up.width / 2, up.y + up.height / 2]], 0);
+    });
     expect(g.errors).toEqual([]);
     await g.close();
   });

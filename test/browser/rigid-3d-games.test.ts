@@ -4,7 +4,7 @@
  */
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
-import { cubeState, pageOf, stillPageOf, waitCubeAtRest, waitCubeMoved } from './rotating-cube';
+import { cubeState, expectRollsStraightUp, pageOf, stillPageOf, waitCubeAtRest, waitCubeMoved } from './rotating-cube';
 
 interface Game3D {
   paused: boolean;
@@ -701,24 +701,8 @@ describe('3D rigid-body games in headless Chromium', () => {
     // A short press of W rolls it over one edge (it keeps rolling past its tipping point): another face
     // on top, the one the face net showed at W.
     await waitCubeAtRest(g);
-    const face = await g.page.evaluate(() => (window.game as unknown as { challenge(): { face: number } }).challenge().face);
-    type Net = { faceNet(): Record<string, string> };
-    const net = await g.waitFor(() => {
-      const n = (window.game as unknown as Net).faceNet();
-      return n.top !== '' ? n : null;
-    }, null);
-    const s2 = await cubeState(g);
-    const p2 = await pageOf(g, s2.x, s2.y, s2.z);
-    await g.press('w');
-    await g.waitFor((f) => (window.game as unknown as { challenge(): { face: number } }).challenge().face !== f, face, 60_000);
-    await waitCubeAtRest(g);
-    expect(await g.page.evaluate(() => (window.game as unknown as { challenge(): { face: number } }).challenge().face)).not.toBe(face);
-    expect(await g.waitFor((w) => (window.game as unknown as Net).faceNet().top === w || null, net.w)).toBe(true);
-    // W rolls it straight up the screen: the cube was dropped square to the camera's heading.
-    const s3 = await cubeState(g);
-    const p3 = await pageOf(g, s3.x, s3.y, s3.z);
-    expect(p3.y).toBeLessThan(p2.y - 20);
-    expect(Math.abs(p3.x - p2.x)).toBeLessThan(0.2 * Math.abs(p3.y - p2.y));
+    // W rolls it straight up the screen.
+    await expectRollsStraightUp(g, () => g.press('w'));
     expect(g.errors).toEqual([]);
     await g.close();
   });

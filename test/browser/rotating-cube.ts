@@ -2,6 +2,7 @@
  * Helpers for the rotating cube's browser cases (rigid-3d-games and phone-controls): where a world
  * point of its room shows on the page, and the cube's state, read through `window.game`.
  */
+import { expect } from 'vitest';
 import type { GamePage } from './harness';
 
 /** The cube's state: centre (x, y, z), m; speed, m/s; spin, rad/s; world time, s; the challenge's lit pad. */
@@ -143,4 +144,30 @@ export async function placeCube(g: GamePage, x: number, z: number, face: number)
     },
     [x, z, face],
   );
+}
+
+/**
+ * Rolls the resting cube forward with `roll` (a key press or a tap of the on-screen button) and checks
+ * the roll: another face comes on top, the one the face net showed for forward before it; the cube
+ * comes to rest flat; and it moved straight up the screen (more than 20 px, sideways under a fifth of
+ * that), as the cube is dropped square to the camera's heading.
+ */
+export async function expectRollsStraightUp(g: GamePage, roll: () => Promise<void>): Promise<void> {
+  type Net = { faceNet(): Record<string, string>; challenge(): { face: number } };
+  const face = await g.page.evaluate(() => (window.game as unknown as Net).challenge().face);
+  const net = await g.waitFor(() => {
+    const n = (window.game as unknown as Net).faceNet();
+    return n.top !== '' ? n : null;
+  }, null);
+  const before = await cubeState(g);
+  const p0 = await pageOf(g, before.x, before.y, before.z);
+  await roll();
+  await g.waitFor((f) => (window.game as unknown as Net).challenge().face !== f, face, 60_000);
+  await waitCubeAtRest(g);
+  expect(await g.page.evaluate(() => (window.game as unknown as Net).challenge().face)).not.toBe(face);
+  expect(await g.waitFor((w) => (window.game as unknown as Net).faceNet().top === w || null, net.w)).toBe(true);
+  const after = await cubeState(g);
+  const p1 = await pageOf(g, after.x, after.y, after.z);
+  expect(p1.y).toBeLessThan(p0.y - 20);
+  expect(Math.abs(p1.x - p0.x)).toBeLessThan(0.2 * Math.abs(p1.y - p0.y));
 }
