@@ -4,6 +4,7 @@
  * (step/stages.ts), the removal hooks and the component defaults. Data sits at the bottom,
  * systems above it, and this file on top: nothing below imports it.
  */
+
 import { createEntityIndex, createWorld, observe, onAdd, onRemove } from 'bitecs';
 import { allocateCollisionScratch, createCollisionState } from './collision/state.js';
 import { removeSpringsOf } from './forces/spring.js';
@@ -35,6 +36,7 @@ import {
 import { createClothState } from './world/cloth-state.js';
 import { COMPONENT_DEFAULTS } from './world/component-defaults.js';
 import { BODY_STORES, createComponents, LAZY_COMPONENTS, materializeGroup } from './world/components.js';
+import { widenToDoubles } from './world/double-fields.js';
 import { createForceLawSettings } from './world/force-settings.js';
 import { INTEGRATOR_NAMES } from './world/integrator-names.js';
 import { createJointState } from './world/joint-state-2d.js';
@@ -50,6 +52,7 @@ import {
   type StageTimings,
   type System,
 } from './world/options.js';
+import { addQueryCache } from './world/query.js';
 import { createWorldScratch } from './world/scratch.js';
 
 // The contact solver runs the 2D joints' stages as a row family (solver/row-families.ts).
@@ -236,6 +239,11 @@ function assemble(o: WorldSettings): PhysicsWorld {
     scratch: createWorldScratch(),
   };
   const world = createWorld(context, entityIndex) as PhysicsWorld;
+  // Fields the first step writes fractions into (world/double-fields.ts), and the query cache the
+  // first step's queries would add: the world keeps the hidden class it has here.
+  widenToDoubles(world, ['time', 'substepStart']);
+  addQueryCache(world);
+  widenToDoubles(timings, STAGES);
   installDefaults(world);
   // bitecs' per-entity bookkeeping in fixed typed arrays, component Sets answered from the masks.
   useLeanEcsStorage(world, capacity);

@@ -405,7 +405,10 @@ function pushManifold(st: ShapeCollisionState, m: Manifold, ea: number, eb: numb
       rby = y - yb;
     const vn = (vbx - wb * rby - vax + wa * ray) * nx + (vby + wb * rbx - vay - wa * rax) * ny;
     const sep = m.separation[p]!;
-    if (sep >= (vn < 0 ? -vn * h : 0) + spec) continue;
+    // The distance the point closes this step if it approaches (-vn h > 0), else 0; negated on every
+    // point, not only approaching ones, which a world's first step (bodies at rest) may not meet before V8 compiles this.
+    const closing = -vn * h;
+    if (sep >= (closing > 0 ? closing : 0) + spec) continue;
     const q = 2 * row + count;
     PX[q] = x;
     PY[q] = y;

@@ -1,4 +1,5 @@
 import { BS3_STRIDE, BX_STRIDE, IMPACT_STRIDE } from '../solver/body-state-layout.js';
+import { widenToDoubles } from '../world/double-fields.js';
 import { type ContactBuffer, createContactBuffer, createWarmStartCache, type WarmStartCache } from './contacts.js';
 import { type ContactEventLists, createContactEventStore, createSleepingContacts, type SleepingContacts } from './event-lists.js';
 import { createShapeCollisionState, type ShapeCollisionState } from './manifolds-2d.js';
@@ -440,4 +441,8 @@ class CollisionStats {
   contacts = 0;
   maxOverlap = 0;
   sleeping = 0;
+  constructor() {
+    // A fraction from the first step on (world/double-fields.ts).
+    widenToDoubles(this, ['maxOverlap']);
+  }
 }

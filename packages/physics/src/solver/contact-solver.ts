@@ -94,8 +94,11 @@ const manifolds2D: RowFamily = {
   gather: gatherManifoldBodies,
   prepare: (world) => prepareManifolds(world),
   warmStart: (world) => warmStartManifolds(world.collision),
-  // The substep's last pass over the manifolds also adds their impulses to the step's totals.
-  solve: (world, hs, useBias, last) => solveManifolds(world.collision, hs, useBias, last),
+  // After the substep's last pass over the manifolds, their impulses are added to the step's totals.
+  solve: (world, hs, useBias, last) => {
+    solveManifolds(world.collision, hs, useBias);
+    if (last) accumulateManifoldImpulses(world.collision);
+  },
   integrate: () => {},
   // Without relax passes (whose last adds them), the substep's impulses are added to the step's totals here.
   endSubstep: (world) => {

@@ -349,10 +349,20 @@ export function finishManifolds(world: PhysicsWorld): void {
     ev.begin.impulse[k] = impulse;
   }
   rotateManifolds(st);
-  // End events: pairs that touched last step and do not now (`previous` is now this step's rows).
+  endTouches(world, st);
+}
+
+/**
+ * The end events of finishManifolds, after rotateManifolds: pairs that touched last step and do not
+ * now (`previous` is now this step's rows). A function of its own: a world's first step has no rows
+ * of a step before, so this loop runs first in the second step, and inside finishManifolds (compiled
+ * during the first step) its first run threw the compiled code away.
+ */
+function endTouches(world: PhysicsWorld, st: ShapeCollisionState): void {
+  const ev = world.collision.events;
   const now = st.previous,
     old = st.manifolds; // old: the buffer just emptied, still holding last step's rows
-  shift = 0;
+  let shift = 0; // see previousRow
   for (let i = 0, n = st.lastCount; i < n; i++) {
     if (old.touching[i] !== 1) continue;
     const j = previousRow(st, i + shift, old.shapeA[i]!, old.shapeB[i]!);

@@ -191,10 +191,12 @@ export function warmStartManifolds(cs: CollisionState): void {
     wa -= iA * lr;
     wb += iB * lr;
     storeVelocities(sb, a, b, vax, vay, wa, vbx, vby, wb);
-    if (carries || lr !== 0) {
-      sb[a + BS2_PUSHED] = 1;
-      sb[b + BS2_PUSHED] = 1;
-    }
+    // The marks are written on every row (kept at 1, or set when the row carries an impulse): stores
+    // made only when a row carries one would not run in a world's first step (every contact new, no
+    // impulse yet), and code V8 compiled then would be thrown away at the first row that does.
+    const carry = carries || lr !== 0 ? 1 : 0;
+    sb[a + BS2_PUSHED] = sb[a + BS2_PUSHED]! || carry;
+    sb[b + BS2_PUSHED] = sb[b + BS2_PUSHED]! || carry;
   }
 }
 
@@ -265,8 +267,10 @@ function accumulateRow(R: Float64Array, o1: number, two: boolean): void {
 
 /**
  * One pass over the manifolds: normal rows (soft bias if `useBias`), friction, rolling resistance, with
- * the softness `prepareManifolds` chose. With `accumulate` (the substep's last pass), each point's
- * impulse is then added to its step total, as accumulateManifoldImpulses does.
+ * the softness `prepareManifolds` chose. The substep's impulses are added to the step's totals by
+ * accumulateManifoldImpulses after its last pass, a loop of its own: a call to it here, made only in
+ * the last pass, would have no type feedback when V8 compiles this loop during a first step's earlier
+ * passes, and the compiled code would be thrown away at the first last pass.
  *
  * Per row: the bodies' velocities and the row's normal impulses are read into locals once and written
  * back once (offsets in 32-bit integers without overflow checks: the row count is bounded by
@@ -282,7 +286,7 @@ function accumulateRow(R: Float64Array, o1: number, two: boolean): void {
  * row that carries an impulse marks its bodies as pushed (see the module comment).
  * @category Collision
  */
-export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean, accumulate = false): void {
+export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean): void {
   const R = cs.shapes.solverRows,
     sb = cs.bodyState,
     ex = cs.bodyExtra,
@@ -467,7 +471,6 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean,
       sb[a + BS2_PUSHED] = 1;
       sb[b + BS2_PUSHED] = 1;
     }
-    if (accumulate) accumulateRow(R, o1, two);
   }
 }
 

@@ -4,6 +4,7 @@
  * solver body's rotation within the step, and the break events of the last step.
  */
 
+import { widenToDoubles } from './double-fields.js';
 import { IMPULSES, LINK_FLOATS, LINK_INTS, PIN_FLOATS, PIN_INTS, ROW_FLOATS, ROW_INTS } from './joint-strides-2d.js';
 
 /**
@@ -163,6 +164,10 @@ class JointSolveStats {
   rows = 0;
   maxError = 0;
   maxErrorJoint = 0;
+  constructor() {
+    // A fraction from the first step on (world/double-fields.ts).
+    widenToDoubles(this, ['maxError']);
+  }
 }
 
 /**

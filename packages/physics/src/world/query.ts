@@ -45,6 +45,22 @@ const CACHE = Symbol('bitphysics query cache');
 type Cached = { [CACHE]?: Map<Term | undefined, Entry[]> };
 
 /**
+ * Gives `world` its (empty) query cache if it has none, and returns the cache. createPhysicsWorld
+ * calls it as it makes a world: the property added by the first query, in a world's first step, gave
+ * the world another hidden class then, and V8 threw away the code compiled against the first one (the
+ * code of everything that had read the world while the program built its scene).
+ * @param world - A bitecs world (a PhysicsWorld, or a bare bitecs world queried through `query`).
+ * @returns the world's cache of queries.
+ */
+export function addQueryCache(world: object): Map<Term | undefined, Entry[]> {
+  const cache = (world as Cached)[CACHE];
+  if (cache !== undefined) return cache;
+  const made = new Map<Term | undefined, Entry[]>();
+  Object.defineProperty(world, CACHE, { value: made, enumerable: false, writable: false, configurable: true });
+  return made;
+}
+
+/**
  * The live array of entities having every component of `terms` (and none of the `Not` ones).
  * Same result and semantics as bitecs' query; cached per world by term identity.
  * @category Queries
@@ -82,11 +98,7 @@ export function query(world: object, terms: Term[]): QueryResult {
  * (made by the garbage collector while a large world starts) threw it all away.
  */
 function addQuery(world: object, terms: Term[]): QueryResult {
-  let cache = (world as Cached)[CACHE];
-  if (cache === undefined) {
-    cache = new Map();
-    Object.defineProperty(world, CACHE, { value: cache, enumerable: false, writable: false, configurable: true });
-  }
+  const cache = (world as Cached)[CACHE] ?? addQueryCache(world);
   const key = terms[0];
   let bucket = cache.get(key);
   if (bucket === undefined) {
