@@ -355,8 +355,8 @@ export function surfaceAt(lv: Pick<Level, 'terrain'>, x: number): number {
  * at a scale where a piece reads (a 1.2 m post about 40 px tall on a 1060 px wide view). The first
  * three ask for different throws (games/catapult/solve.ts, `node scripts/catapult-levels.mjs --grid`):
  * a low watchtower near by with a hut behind it (a low, flat throw brings both down for three stars), a
- * low keep behind an earth rampart (a lob drops onto it), and twin towers far off behind a taller
- * rampart; one blind throw no longer clears all three.
+ * low keep behind a low earth rampart (a flat throw skims over it, a lob drops onto the keep), and
+ * twin towers far off behind a taller rampart; one blind throw does not clear all three.
  */
 const LEVELS: ReadonlyArray<{ name: string; shots: number; build: (b: Builder) => void }> = [
   {
@@ -373,12 +373,14 @@ const LEVELS: ReadonlyArray<{ name: string; shots: number; build: (b: Builder) =
   },
   {
     name: 'Stone keep',
-    // A low wooden keep on a plinth of stone blocks, crowned with a stone battlement, behind an earth
-    // rampart 2 m high: most flat throws hit the rampart or fly over the keep; a lob drops onto it.
+    // A low wooden keep on a plinth of stone blocks, crowned with a stone battlement, behind a low
+    // earth rampart (1.2 m high, 4.2 m in front): a flat throw skims over it into the keep, a lob
+    // drops onto it; the second level asks for a little more than the first, not for one power in
+    // twenty at each angle (as a rampart 2 m high 3 m in front did).
     shots: 3,
     build: (b) => {
       const x = 12.5 + b.rng.range(-0.5, 0.5);
-      hill(b, x - 4.4, x - 3, 2);
+      hill(b, x - 5.4, x - 4.2, 1.2);
       const top = brickBlock(b, x, 0, 4, 1, BRICK);
       const roof = tower(b, x, top, 1, { stones: 0, blocks: 0 });
       brickBlock(b, x, roof.y, 3, 1, BRICK);
@@ -386,11 +388,11 @@ const LEVELS: ReadonlyArray<{ name: string; shots: number; build: (b: Builder) =
   },
   {
     name: 'Twin towers',
-    // Far off (22 m), behind a rampart 2.4 m high: a long, high throw.
+    // Far off (22 m), behind a rampart 1.6 m high: a long throw.
     shots: 3,
     build: (b) => {
       const x0 = 22 + b.rng.range(-0.5, 0.5);
-      hill(b, x0 - 4.4, x0 - 2.8, 2.4);
+      hill(b, x0 - 4.4, x0 - 2.8, 1.6);
       const first = tower(b, x0, 0, 2, { stones: 1 });
       const second = tower(b, x0 + TOWER_PITCH, 0, 2, { stones: 1 });
       bridge(b, first, second);

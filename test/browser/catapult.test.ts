@@ -1081,9 +1081,9 @@ describe('catapult', () => {
       const cam = (window.game as unknown as CatapultGame).renderer.camera;
       return cam.toScreenX(1) - cam.toScreenX(0);
     });
-    // Low and half power: the stone meets the earth bank's face (the preview ended 0.3 m past it);
-    // then the stranger's 58 % at 40 degrees.
-    const bank = await previewMatchesThrow(d, 0.5, 25, false);
+    // Low and under half power: the stone meets the earth bank's face, 0.75 m up its 1.2 m (the
+    // preview ended 0.3 m past it); then the stranger's 58 % at 40 degrees.
+    const bank = await previewMatchesThrow(d, 0.45, 15, false);
     const lv = await d.page.evaluate(
       () => (window.game as unknown as { level(): { terrain: { kind: string; minX: number }[] } }).level().terrain,
     );
