@@ -38,6 +38,7 @@ import {
   buildLevel,
   countedDown,
   FALL_POINTS,
+  flightPast,
   LAUNCH,
   LEVEL_COUNT,
   type Level,
@@ -1203,10 +1204,11 @@ const PREVIEW_TIME = 6;
 const PREVIEW_GAP = 11;
 /**
  * What the aim shows (tests): power (0 to 1) and angle (degrees above level) as the page shows them
- * now, the preview's dots on the screen now (and in the phone's close-up), its farthest x, m, and
- * its end, the point (m) where the stone first touches something.
+ * now, the preview's dots on the screen now (and in the phone's close-up), the faint dots past its
+ * first touch (flightPast), its farthest x, m, and its end, the point (m) where the stone first
+ * touches something.
  */
-const aimShown = { power: 0, angle: 0, dots: 0, closeDots: 0, reach: 0, end: [0, 0] as [number, number] };
+const aimShown = { power: 0, angle: 0, dots: 0, closeDots: 0, ghost: 0, reach: 0, end: [0, 0] as [number, number] };
 
 /** Once a frame: the aim in the page (showAimDom) placed for the camera of this frame. */
 function drawAim(): void {
@@ -1238,7 +1240,9 @@ const aimDom = (() => {
   // The arc preview's dots on the scene, and on an upright phone in the castle's close-up too.
   const dots = svgChild('g', { 'data-hud': 'aim-arc' });
   const closeDots = svgChild('g', { 'data-hud': 'aim-arc-close' });
-  svg.append(dots, closeDots, ring, half, shade, band, press, end);
+  // The faint flight past the preview's first touch (drawArc).
+  const ghost = svgChild('g', { 'data-hud': 'aim-arc-past' });
+  svg.append(ghost, dots, closeDots, ring, half, shade, band, press, end);
   const box = document.createElement('div');
   box.dataset.hud = 'aim';
   box.setAttribute('aria-live', 'off');
@@ -1254,7 +1258,7 @@ const aimDom = (() => {
   bar.append(fill);
   box.append(label, bar);
   pageLayout().stage.append(svg, box);
-  return { svg, dots, closeDots, ring, half, shade, band, press, end, box, label, bar, fill };
+  return { svg, dots, closeDots, ghost, ring, half, shade, band, press, end, box, label, bar, fill };
 })();
 
 /** Sets an SVG element's attributes. */
@@ -1277,7 +1281,7 @@ function showAimDom(): void {
   const display = on ? '' : 'none';
   if (d.svg.style.display !== display) d.svg.style.display = d.box.style.display = display;
   if (!on) {
-    aimShown.dots = aimShown.closeDots = 0;
+    aimShown.dots = aimShown.closeDots = aimShown.ghost = 0;
     return;
   }
   const cam = renderer.camera;
@@ -1343,7 +1347,8 @@ function placeDots(group: SVGElement, n: number, at: (i: number) => [number, num
 /**
  * The arc preview for a throw at (vx, vy), m/s (see PREVIEW_TIME): dots fading along the flight to
  * its first touch, at least PREVIEW_GAP px apart (a small scene, an upright phone's, crowded them
- * into a rope), the last one (the touch) always drawn and larger; and, while the castle's close-up
+ * into a rope), the last one (the touch) always drawn and larger; past the touch, faint hollow dots
+ * where the throw was headed had nothing stood in its way (flightPast), to the grass; and, while the castle's close-up
  * shows (an upright phone), the same flight's dots where it crosses the close-up, at its scale.
  */
 function drawArc(vx: number, vy: number): void {
@@ -1375,6 +1380,26 @@ function drawArc(vx: number, vy: number): void {
   );
   placeDots(aimDom.dots, main.length, (i) => main[i] as [number, number, number, number]);
   aimShown.dots = main.length;
+  // Past the first touch, faint and hollow: where the throw was headed (a long throw's preview
+  // stopped at the bank or the tower in front, and the player could not see where it would go).
+  const [endX, endY] = aimShown.end;
+  const ghost: number[][] = [];
+  // (None for a throw that comes down on the grass or a pit's floor: it has landed.)
+  const past = vx > 0.1 ? flightPast(lv, vx, vy, -world.gravity[1]!, (endX - LAUNCH.x) / vx, GHOST_TIME) : [];
+  if (past.length > 4) {
+    let lastX = cam.toScreenX(endX),
+      lastY = cam.toScreenY(endY);
+    for (let i = 2; i < past.length; i += 2) {
+      const px = cam.toScreenX(past[i]!),
+        py = cam.toScreenY(past[i + 1]!);
+      if (Math.hypot(px - lastX, py - lastY) < PREVIEW_GAP) continue;
+      lastX = px;
+      lastY = py;
+      ghost.push([px, py]);
+    }
+  }
+  placeGhost(ghost, dotR);
+  aimShown.ghost = ghost.length;
   let close: number[][] = [];
   if (closeShown) {
     const [bx, by, bw, bh] = closeShown.box,
@@ -1387,6 +1412,24 @@ function drawArc(vx: number, vy: number): void {
   }
   placeDots(aimDom.closeDots, close.length, (i) => close[i] as [number, number, number, number]);
   aimShown.closeDots = close.length;
+}
+
+/** Longest stretch of the faint flight past the preview's first touch (flightPast), s. */
+const GHOST_TIME = 2;
+/** Shows the faint hollow dots past the preview's first touch at screen points `at` (px), radius r - 1 px; hides the rest. */
+function placeGhost(at: number[][], r: number): void {
+  const group = aimDom.ghost;
+  while (group.childElementCount < at.length)
+    group.append(svgChild('circle', { fill: 'none', stroke: '#fff', 'stroke-width': 1.5, 'stroke-opacity': 0.55 }));
+  for (let i = 0; i < group.childElementCount; i++) {
+    const c = group.children[i] as SVGElement;
+    const p = at[i];
+    if (p === undefined) {
+      if (c.getAttribute('display') !== 'none') c.setAttribute('display', 'none');
+      continue;
+    }
+    setAttrs(c, { display: 'inline', cx: p[0]!.toFixed(1), cy: p[1]!.toFixed(1), r: r - 1 });
+  }
 }
 
 /** The screen end of the pull's band (px): the finger, or a full pull's length from the press along the pull. */

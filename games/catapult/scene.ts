@@ -716,6 +716,41 @@ export function previewFlight(
   return out;
 }
 
+/**
+ * The flight past the preview's end, for a faint guide (the game's aim draws it as hollow dots): the
+ * drag-free path of a stone (radius PROJECTILE_RADIUS) thrown from LAUNCH at (vx, vy), m/s, under
+ * gravity `g` (m/s^2 down, > 0), from time `t0` (s, >= 0; the time of the first touch) on, as if
+ * nothing stood in its way but the level's ground (its slabs and a pit's floor; not a hill, a bank
+ * or the castle): x, y pairs (m) every PREVIEW_DT s, ending where the stone's bottom comes down to
+ * that ground, past the ground's ends, or `extra` s after t0. A throw blocked by a bank or a piece so
+ * shows where it was headed; the stone itself stops or bounces at the first touch.
+ * @throws Error if g or extra is not a positive number, or t0 is not a number >= 0.
+ */
+export function flightPast(lv: Pick<Level, 'terrain'>, vx: number, vy: number, g: number, t0: number, extra = 2): number[] {
+  if (!(g > 0)) throw new Error(`flightPast: g must be > 0 m/s^2, got ${g}`);
+  if (!(t0 >= 0)) throw new Error(`flightPast: t0 must be >= 0 s, got ${t0}`);
+  if (!(extra > 0)) throw new Error(`flightPast: extra must be > 0 s, got ${extra}`);
+  const out: number[] = [];
+  const steps = Math.ceil(extra / PREVIEW_DT);
+  for (let i = 0; i <= steps; i++) {
+    const t = t0 + i * PREVIEW_DT;
+    const x = LAUNCH.x + vx * t,
+      y = LAUNCH.y + vy * t - 0.5 * g * t * t;
+    if (x < GROUND.minX || x > GROUND.maxX) break;
+    out.push(x, y);
+    // Down on the surface (once past the start, which may be on it already).
+    if (i > 0 && vy - g * t < 0 && y - PROJECTILE_RADIUS <= groundAt(lv, x)) break;
+  }
+  return out;
+}
+
+/** The height of the ground's slabs or a pit's floor (not a hill) at x, m; -Infinity off the ground. */
+function groundAt(lv: Pick<Level, 'terrain'>, x: number): number {
+  let top = Number.NEGATIVE_INFINITY;
+  for (const t of lv.terrain) if (t.kind !== 'hill' && x >= t.minX && x <= t.maxX) top = Math.max(top, t.maxY);
+  return top;
+}
+
 /** The round bodies of each world that the grass slows: handle, radius (m) pairs (`buildLevel` and `launch` add them). */
 const thrown = new WeakMap<PhysicsWorld, number[]>();
 

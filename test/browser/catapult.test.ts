@@ -256,7 +256,7 @@ async function previewMatchesThrow(
   power: number,
   deg: number,
   touch: boolean,
-): Promise<{ end: [number, number]; closeDots: number }> {
+): Promise<{ end: [number, number]; closeDots: number; past: number }> {
   type W = CatapultGame & {
     pacer: { mayDraw(): boolean };
     fullPullPx(): number;
@@ -285,6 +285,7 @@ async function previewMatchesThrow(
     await p.page.mouse.down();
   }
   let shown = { power: 0, angle: 0, dots: 0, closeDots: 0, reach: 0, end: [0, 0] as [number, number] };
+  let past = 0;
   // Two pulls, the second the throw: the arc's end moves with the pull, no frame drawn.
   for (const k of [0.6, 1]) {
     const len = k * power * full;
@@ -300,7 +301,9 @@ async function previewMatchesThrow(
         const cam = (window.game as unknown as W).renderer.camera;
         const dots = [...document.querySelectorAll('[data-hud="aim-arc"] circle')].filter((c) => c.getAttribute('display') !== 'none');
         const last = dots[dots.length - 1];
+        const past = [...document.querySelectorAll('[data-hud="aim-arc-past"] circle')].filter((c) => c.getAttribute('display') !== 'none');
         const dot = {
+          past: past.length,
           count: dots.length,
           dx: Number(last?.getAttribute('cx')) - cam.toScreenX(s.end[0]),
           dy: Number(last?.getAttribute('cy')) - cam.toScreenY(s.end[1]),
@@ -315,6 +318,7 @@ async function previewMatchesThrow(
     expect(dot.count).toBe(shown.dots);
     expect(dot.count).toBeGreaterThan(4);
     expect(Math.hypot(dot.dx, dot.dy)).toBeLessThan(1);
+    past = dot.past;
   }
   if (cdp) {
     await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
@@ -329,7 +333,7 @@ async function previewMatchesThrow(
   const [ex, ey] = shown.end;
   const u = Math.max(0, Math.min(1, ((ex - x0) * (x1 - x0) + (ey - y0) * (y1 - y0)) / Math.max(1e-12, (x1 - x0) ** 2 + (y1 - y0) ** 2)));
   expect(Math.hypot(x0 + u * (x1 - x0) - ex, y0 + u * (y1 - y0) - ey), JSON.stringify({ seg, end: shown.end })).toBeLessThanOrEqual(0.3);
-  return { end: shown.end, closeDots: shown.closeDots };
+  return { end: shown.end, closeDots: shown.closeDots, past };
 }
 
 describe('catapult', () => {
@@ -1089,6 +1093,9 @@ describe('catapult', () => {
     );
     const hill = lv.find((t) => t.kind === 'hill')!;
     expect(Math.abs(bank.end[0] + 0.3 - hill.minX)).toBeLessThan(0.05);
+    // Past the bank, faint dots show where the throw was headed (issue 34: the preview stopped at
+    // the first touch, and the player could not see where a blocked throw would go).
+    expect(bank.past).toBeGreaterThan(0);
     await previewMatchesThrow(d, 0.58, 40, false);
     // After the throw the camera frames the castle (the whole field fitted to the width drew it as a
     // strip under 80 % of sky): at least 1.4 x the aim view's pixels a metre, the sky over the
