@@ -38,6 +38,7 @@ import {
   buildLevel,
   countedDown,
   FALL_POINTS,
+  flightPast,
   LAUNCH,
   LEVEL_COUNT,
   type Level,
@@ -442,7 +443,7 @@ shell.onWorldChange(() => {
  * the ground UPRIGHT_GROUND of the way up (the scene low in the screen, a strip of earth under it
  * for the card saying how to play and the next-level button): the aim view spans from behind the
  * catapult's stacked stones to just past the castle, so the player sees the catapult, the arc and
- * what it aims at together, with the castle shown close up in the sky over them (drawCloseUp); the
+ * what it aims at together (no close-up of the castle: it would repeat what the field shows); the
  * shot view holds the castle and the rock; in between the camera follows the
  * stone: the view slides from the aim view to the shot view as the stone crosses the field (by the
  * farthest it got), keeping it in sight, and stays on the castle and the wreck until the next press
@@ -463,13 +464,6 @@ const GROUND_AT = 0.18;
  * close-up in the sky over them. At 0.11 the scene sat in the bottom fifth under 70 % of empty sky.
  */
 const UPRIGHT_GROUND = 0.28;
-/**
- * Upright, while aiming (the whole field in view, fitted to the screen's width at about 13 px a
- * metre), the ground sits this fraction of the screen's height from the bottom: the earth under it
- * holds the castle's close-up as wide as the screen (drawCloseUp), over the card saying how to play.
- * At UPRIGHT_GROUND the field was a strip under 60 % of empty sky with a small close-up under it.
- */
-const UPRIGHT_AIM_GROUND = 0.5;
 /** Screens narrower than this (CSS px) get the tighter aim view. */
 const NARROW = 600;
 /** Screen size the view was framed for; the view jumps (no easing) when it changes. */
@@ -525,8 +519,7 @@ const rockRight = (): number => lv.castleMaxX + ROCK.gap + 2 * ROCK.hx;
 /** The aim view (see above). */
 function aimView(): View {
   // Upright: the catapult and the whole castle it aims at (the catapult framed large with the
-  // castle off the screen showed a stranger the edge of a tower and not the target), the castle
-  // also in the close-up over them (drawCloseUp).
+  // castle off the screen showed a stranger the edge of a tower and not the target).
   if (upright()) return uprightView(OVERVIEW_LEFT, lv.castleMaxX + 0.8, aimGround());
   // Room behind the catapult for its stones where the screen is wide enough.
   const behind = renderer.camera.width < NARROW ? 1.6 : 3.1;
@@ -545,21 +538,12 @@ function uprightView(minX: number, maxX: number, ground = UPRIGHT_GROUND): View 
 /** Largest magnification of the castle's close-up (drawCloseUp): as wide as the phone's screen for most castles. */
 const CLOSE_MAX = 6;
 /**
- * Upright, the aim view's ground height (a fraction of the screen's height from the bottom): room
- * under the ground for the castle's close-up at its size (drawCloseUp: as wide as the screen, at
- * most CLOSE_MAX times) and the card saying how to play, between UPRIGHT_GROUND and
- * UPRIGHT_AIM_GROUND (a wide, low castle's close-up is short: the field sits lower).
+ * Upright, the aim view's ground height (a fraction of the screen's height from the bottom):
+ * UPRIGHT_GROUND, a strip of earth under the field for the card saying how to play (raised to half
+ * the screen, for a close-up under the field, the earth read as 40 % of plain dirt).
  */
 function aimGround(): number {
-  const cam = renderer.camera;
-  const W = Math.max(1, cam.width),
-    H = Math.max(1, cam.height);
-  const scale = W / (lv.castleMaxX + 0.8 - OVERVIEW_LEFT);
-  const floor = Math.min(0, ...lv.terrain.map((t) => t.maxY));
-  const w = (lv.castleMaxX - lv.castleMinX + 1.2) * scale,
-    h = (lv.castleTop + 1.1 - floor) * scale;
-  const need = Math.min(CLOSE_MAX, (W - 24) / w) * h + 12 + 96;
-  return Math.min(UPRIGHT_AIM_GROUND, Math.max(UPRIGHT_GROUND, need / H));
+  return UPRIGHT_GROUND;
 }
 /** The upright aim view's left edge, m: just behind the catapult's stacked stones. */
 const OVERVIEW_LEFT = LAUNCH.x - 3.2;
@@ -949,6 +933,8 @@ function drawThrow(world: PhysicsWorld): void {
   if (verdictText.text !== lastThrow.verdict) verdictText.text = lastThrow.verdict;
   verdictText.style.fill = lastThrow.good ? 0xffe066 : 0xffffff;
   verdictText.style.fontSize = lastThrow.good ? 34 : app.screen.width < 600 ? 16 : 20;
+  // Wrapped to the screen's width less a margin: on a phone a long hint ran off the left edge.
+  verdictText.style.wordWrapWidth = Math.max(120, app.screen.width - 24);
   const half = verdictText.width / 2 + 8;
   verdictText.x = Math.min(Math.max(cam.toScreenX(lastThrow.at[0]), half), app.screen.width - half);
   // A hit's points rise as they fade; a miss's hint rises for its first second, then holds.
@@ -1041,6 +1027,9 @@ const verdictText = new Text({
     fontFamily: 'sans-serif',
     fontWeight: 'bold',
     stroke: { color: 0x000000, width: 5, join: 'round' },
+    wordWrap: true,
+    wordWrapWidth: 600,
+    align: 'center',
   },
 });
 verdictText.anchor.set(0.5, 1);
@@ -1203,10 +1192,11 @@ const PREVIEW_TIME = 6;
 const PREVIEW_GAP = 11;
 /**
  * What the aim shows (tests): power (0 to 1) and angle (degrees above level) as the page shows them
- * now, the preview's dots on the screen now (and in the phone's close-up), its farthest x, m, and
- * its end, the point (m) where the stone first touches something.
+ * now, the preview's dots on the screen now (and in the phone's close-up), the faint dots past its
+ * first touch (flightPast), its farthest x, m, and its end, the point (m) where the stone first
+ * touches something.
  */
-const aimShown = { power: 0, angle: 0, dots: 0, closeDots: 0, reach: 0, end: [0, 0] as [number, number] };
+const aimShown = { power: 0, angle: 0, dots: 0, closeDots: 0, ghost: 0, reach: 0, end: [0, 0] as [number, number] };
 
 /** Once a frame: the aim in the page (showAimDom) placed for the camera of this frame. */
 function drawAim(): void {
@@ -1238,7 +1228,9 @@ const aimDom = (() => {
   // The arc preview's dots on the scene, and on an upright phone in the castle's close-up too.
   const dots = svgChild('g', { 'data-hud': 'aim-arc' });
   const closeDots = svgChild('g', { 'data-hud': 'aim-arc-close' });
-  svg.append(dots, closeDots, ring, half, shade, band, press, end);
+  // The faint flight past the preview's first touch (drawArc).
+  const ghost = svgChild('g', { 'data-hud': 'aim-arc-past' });
+  svg.append(ghost, dots, closeDots, ring, half, shade, band, press, end);
   const box = document.createElement('div');
   box.dataset.hud = 'aim';
   box.setAttribute('aria-live', 'off');
@@ -1254,7 +1246,7 @@ const aimDom = (() => {
   bar.append(fill);
   box.append(label, bar);
   pageLayout().stage.append(svg, box);
-  return { svg, dots, closeDots, ring, half, shade, band, press, end, box, label, bar, fill };
+  return { svg, dots, closeDots, ghost, ring, half, shade, band, press, end, box, label, bar, fill };
 })();
 
 /** Sets an SVG element's attributes. */
@@ -1277,7 +1269,7 @@ function showAimDom(): void {
   const display = on ? '' : 'none';
   if (d.svg.style.display !== display) d.svg.style.display = d.box.style.display = display;
   if (!on) {
-    aimShown.dots = aimShown.closeDots = 0;
+    aimShown.dots = aimShown.closeDots = aimShown.ghost = 0;
     return;
   }
   const cam = renderer.camera;
@@ -1343,7 +1335,8 @@ function placeDots(group: SVGElement, n: number, at: (i: number) => [number, num
 /**
  * The arc preview for a throw at (vx, vy), m/s (see PREVIEW_TIME): dots fading along the flight to
  * its first touch, at least PREVIEW_GAP px apart (a small scene, an upright phone's, crowded them
- * into a rope), the last one (the touch) always drawn and larger; and, while the castle's close-up
+ * into a rope), the last one (the touch) always drawn and larger; past the touch, faint hollow dots
+ * where the throw was headed had nothing stood in its way (flightPast), to the grass; and, while the castle's close-up
  * shows (an upright phone), the same flight's dots where it crosses the close-up, at its scale.
  */
 function drawArc(vx: number, vy: number): void {
@@ -1375,6 +1368,26 @@ function drawArc(vx: number, vy: number): void {
   );
   placeDots(aimDom.dots, main.length, (i) => main[i] as [number, number, number, number]);
   aimShown.dots = main.length;
+  // Past the first touch, faint and hollow: where the throw was headed (a long throw's preview
+  // stopped at the bank or the tower in front, and the player could not see where it would go).
+  const [endX, endY] = aimShown.end;
+  const ghost: number[][] = [];
+  // (None for a throw that comes down on the grass or a pit's floor: it has landed.)
+  const past = vx > 0.1 ? flightPast(lv, vx, vy, -world.gravity[1]!, (endX - LAUNCH.x) / vx, GHOST_TIME) : [];
+  if (past.length > 4) {
+    let lastX = cam.toScreenX(endX),
+      lastY = cam.toScreenY(endY);
+    for (let i = 2; i < past.length; i += 2) {
+      const px = cam.toScreenX(past[i]!),
+        py = cam.toScreenY(past[i + 1]!);
+      if (Math.hypot(px - lastX, py - lastY) < PREVIEW_GAP) continue;
+      lastX = px;
+      lastY = py;
+      ghost.push([px, py]);
+    }
+  }
+  placeGhost(ghost, dotR);
+  aimShown.ghost = ghost.length;
   let close: number[][] = [];
   if (closeShown) {
     const [bx, by, bw, bh] = closeShown.box,
@@ -1387,6 +1400,24 @@ function drawArc(vx: number, vy: number): void {
   }
   placeDots(aimDom.closeDots, close.length, (i) => close[i] as [number, number, number, number]);
   aimShown.closeDots = close.length;
+}
+
+/** Longest stretch of the faint flight past the preview's first touch (flightPast), s. */
+const GHOST_TIME = 2;
+/** Shows the faint hollow dots past the preview's first touch at screen points `at` (px), radius r - 1 px; hides the rest. */
+function placeGhost(at: number[][], r: number): void {
+  const group = aimDom.ghost;
+  while (group.childElementCount < at.length)
+    group.append(svgChild('circle', { fill: 'none', stroke: '#fff', 'stroke-width': 1.5, 'stroke-opacity': 0.55 }));
+  for (let i = 0; i < group.childElementCount; i++) {
+    const c = group.children[i] as SVGElement;
+    const p = at[i];
+    if (p === undefined) {
+      if (c.getAttribute('display') !== 'none') c.setAttribute('display', 'none');
+      continue;
+    }
+    setAttrs(c, { display: 'inline', cx: p[0]!.toFixed(1), cy: p[1]!.toFixed(1), r: r - 1 });
+  }
 }
 
 /** The screen end of the pull's band (px): the finger, or a full pull's length from the press along the pull. */
@@ -1402,13 +1433,11 @@ function drawPause(): void {
 }
 
 /**
- * On an upright phone, while the whole field shows (before a throw and while aiming), a close-up of
- * the castle in the sky over the scene: the field fitted to 390 px draws the castle about 24 px a
- * metre in the screen's lower quarter under a tall empty sky; the close-up draws the same scene
- * (the castle, the aim's dashes reaching it, a stone arriving) CLOSE_MAX times as large or less, as
- * wide as the screen allows, framed and labelled. Hidden while the camera follows a throw or holds
- * the wreck (it is then as close), unless a throw stopped short with the castle off the screen,
- * and on other screens.
+ * On an upright phone, once a throw stopped short with the castle off the screen (the camera
+ * following it stopped before the castle), a close-up of the castle: the same scene CLOSE_MAX times
+ * as large or less, as wide as the screen allows, framed and labelled, in the earth under the
+ * ground or in the sky. Hidden while aiming (the aim view holds the whole castle: a close-up
+ * repeated it under the arc's dots), when the level is over, and on other screens.
  *
  * The close-up's texture has one texel per CSS pixel whatever the screen's pixel ratio: at a phone's
  * ratio of 2 it would hold four times the texels, and under software WebGL (SwiftShader) rendering
@@ -1496,7 +1525,9 @@ function drawCloseUp(): void {
   const cam = renderer.camera;
   // In the shot view too once a throw that stopped short has settled with the castle off the screen.
   const castleOff = cam.toScreenX(lv.castleMaxX) > cam.width && lastThrow.verdict !== '';
-  const show = upright() && !levelEnded && (!(shotView && zoomsIn()) || castleOff);
+  // Not while aiming: the aim view holds the whole castle, and a close-up of it repeated what the
+  // field showed, under the arc's dots (a stranger's complaint).
+  const show = upright() && !levelEnded && shotView && castleOff;
   closeShown = null;
   if (show) {
     // The castle with room round it for what falls, from the ground (or a pit's floor) up.

@@ -10,11 +10,13 @@ import { describe, expect, it } from 'vitest';
 import {
   angleForRange,
   buildLevel,
+  flightPast,
   hasFallen,
   LAUNCH,
   LEVEL_COUNT,
   launch,
   launchVelocity,
+  PREVIEW_DT,
   PROJECTILE_RADIUS,
   PULL,
   previewFlight,
@@ -269,6 +271,31 @@ describe('catapult rules', () => {
     }
     // Grazes are rare: nearly every aim is compared.
     expect(compared).toBeGreaterThanOrEqual(30);
+  });
+
+  it("past the preview's first touch, the faint flight goes on through a bank to where it comes down on the grass", () => {
+    // Level 2, 80 % level: the preview ends on the earth bank's face (issue 34: a long throw's
+    // preview stopped there and the player could not see where it was headed). The faint
+    // flight (flightPast) starts at that end and ends where the drag-free parabola brings the stone's
+    // bottom down to the grass (y = r), solved here in closed form, to one preview step.
+    const { w, lv } = level(1);
+    const a = 0,
+      v = 0.8 * PULL.max * PULL.gain;
+    const vx = v * Math.cos(a),
+      vy = v * Math.sin(a);
+    const arc = previewFlight(w, lv, vx, vy, G);
+    const ex = arc[arc.length - 2]!,
+      ey = arc[arc.length - 1]!;
+    const hill = lv.terrain.find((t) => t.kind === 'hill')!;
+    expect(Math.abs(ex + PROJECTILE_RADIUS - hill.minX)).toBeLessThan(0.01);
+    const past = flightPast(lv, vx, vy, G, (ex - LAUNCH.x) / vx);
+    expect(Math.hypot(past[0]! - ex, past[1]! - ey)).toBeLessThan(1e-9);
+    const rise = LAUNCH.y - PROJECTILE_RADIUS;
+    const t = (vy + Math.sqrt(vy * vy + 2 * G * rise)) / G;
+    const landX = LAUNCH.x + vx * t;
+    expect(landX).toBeGreaterThan(hill.maxX);
+    expect(Math.abs(past[past.length - 2]! - landX)).toBeLessThanOrEqual(vx * PREVIEW_DT);
+    expect(() => flightPast(lv, vx, vy, G, -1)).toThrow(/flightPast: t0 must be >= 0 s, got -1/);
   });
 
   it('rejects a level out of range', () => {
