@@ -568,13 +568,16 @@ style.textContent = `
 /* The next-level / play-again button: over the field (placeActionButton moves it to a band no hole reaches),
    not at the stage's foot, where it covered the start pad and the ship waiting on it. */
 body .bp-touchbar.bp-action { top: 40%; bottom: auto; }
-/* After a game over the bar holds the game-over card above its button. */
-body .bp-touchbar.bp-action.bh-carded { flex-direction: column; gap: 8px; }
-.bh-over-card { pointer-events: none; text-align: center; color: #e8ecf1; font: 16px/1.45 system-ui, sans-serif;
-  background: rgba(8, 11, 20, 0.92); border: 1px solid #3a4560; border-radius: 12px; padding: 10px 24px;
+/* After a game over the bar holds the game-over card beside its button (no taller than it, so the
+   pair fits the band under the holes that the button alone fits), above it where the field is narrow. */
+body .bp-touchbar.bp-action.bh-carded { gap: 8px; }
+.bh-over-card { pointer-events: none; text-align: center; color: #e8ecf1; font: 14px/1.35 system-ui, sans-serif;
+  background: rgba(8, 11, 20, 0.92); border: 1px solid #3a4560; border-radius: 12px; padding: 6px 16px;
   box-shadow: 0 4px 14px rgba(0, 0, 0, 0.45); }
-.bh-over-card b { display: block; font-size: 22px; color: #ff8c8c; }
-.bh-over-card .bh-final { font-size: 19px; font-weight: 700; }
+.bh-over-card b { display: block; font-size: 17px; color: #ff8c8c; }
+.bh-over-card .bh-final, .bh-over-card .bh-best { display: inline; }
+.bh-over-card .bh-final { font-weight: 700; }
+.bh-over-card .bh-best::before { content: ' · '; color: #8a94a8; font-weight: 400; }
 .bh-over-card .bh-best.bh-new { color: #7ee787; font-weight: 700; }
 /* The touch hint at the top of the stage, over the space above the finish line: at its foot (the
    kit's place) it covered the ship waiting at the start and the path up to the first hole. */
@@ -709,8 +712,8 @@ let shownNumbers = '',
   shownMessage = '';
 
 /**
- * The game-over card, over the field above the Continue / Play again button (in the button's bar, so
- * `placeActionButton` keeps both off the holes): "Game over", the final score and the best (kept in
+ * The game-over card, over the field beside the Continue / Play again button (above it on a narrow
+ * field; in the button's bar, so `placeActionButton` keeps both off the holes): "Game over", the final score and the best (kept in
  * local storage), or "New best!" when the final score beat the best the game began with.
  */
 const overCard = document.createElement('div');
