@@ -109,7 +109,8 @@ export interface LanternLevel {
  *    each lit it with no idea at all). Par 3 takes both pairs; the spare shell over par lets a first
  *    level survive one stray tap.
  * 2. Two pairs 0.4 W apart, three shells: only a held burst between a pair lights both (0.2 W away,
- *    beyond a quick burst's 0.17), and no two lanterns are nearer, so a shell a lantern runs out and
+ *    beyond a quick burst's 0.17), and no two lanterns are nearer (on the desktop the pairs lie on
+ *    the diagonal: side by side, a tap between their inner two lit both), so a shell a lantern runs out and
  *    clearing it takes at least one hold, as the tip says; three stars take both held pairs. The tip
  *    says only that a hold makes a bigger burst: which lanterns pair up is for the player to see.
  * 3. Quick shells only, drifting lanterns: lead them by the fuse (the page draws each one's ghost
@@ -153,13 +154,13 @@ export const LEVELS: readonly LanternLevel[] = Object.freeze([
     shells: 3,
     shell: 'peony',
     hold: true,
-    // Two pairs 0.4 W apart, the inner two 0.33 W apart, one over the other: no two lanterns a quick
-    // burst lights together (the inner two, 0.28 W apart, were lit by a tap between them, and with
-    // them the level without a hold).
+    // Two pairs 0.4 W apart on the diagonal, 0.5 W and more between the pairs: no two lanterns a
+    // quick burst lights together (the inner two of the pairs side by side, 0.28 W apart one over
+    // the other, were lit by a tap between them, and with them the level without a hold).
     lanterns: [
       { x: 0.06, y: -0.16 },
-      { x: 0.46, y: -0.16 },
-      { x: 0.54, y: 0.16 },
+      { x: 0.3, y: 0.16 },
+      { x: 0.7, y: -0.16 },
       { x: 0.94, y: 0.16 },
     ],
     // Two pairs 0.4 W apart as wide, 0.64 W apart in height. The lower pair is centred: a low burst
