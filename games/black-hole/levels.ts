@@ -8,9 +8,11 @@
  * to the starting three). The ship waits at the start until the player thrusts. The page (main.ts)
  * shows the level, the fuel, an end-of-level summary and the best score.
  *
- * Points (`levelPoints`): reaching the line scores POINTS_PER_HOLE for every hole on the field (the
- * wall's included) plus a speed bonus of a point for every whole second the winning attempt took
- * under BONUS_SECONDS. The level's opening line says what it is worth; the summary says how the
+ * Points (`levelPoints`): reaching the line scores POINTS_PER_LEVEL times the level's number plus a
+ * speed bonus of a point for every whole second the winning attempt took under BONUS_SECONDS, so each
+ * level is worth more than the one before, and the same on every field (a wall's hole count follows
+ * the field's width: counted a hole each, level 2 was worth 280 on a desktop, 140 on a phone, and more
+ * than levels 3 to 8). The level's opening line says what it is worth; the summary says how the
  * points were made.
  *
  * Level 1 is practice (`LevelSpec.practice`): a fall there costs no life, so a newcomer can learn to
@@ -119,33 +121,33 @@ export const ZIGZAG_OFFSET = 1.2;
  */
 export const ZIGZAG_HEIGHT: readonly [number, number] = Object.freeze([6, 18]);
 
-/** Points for each hole on the field when the ship reaches the line. */
-export const POINTS_PER_HOLE = 10;
+/** Points for reaching the line, a level: level n is worth n times this (before the speed bonus). */
+export const POINTS_PER_LEVEL = 100;
 
 /** The speed bonus: a point for every whole second the winning attempt took under this, s. */
 export const BONUS_SECONDS = 30;
 
-/** The points of a cleared level: for its holes, for speed, and their sum. */
+/** The points of a cleared level: for the level, for speed, and their sum. */
 export interface LevelPoints {
-  /** POINTS_PER_HOLE for every hole on the field. */
-  readonly holes: number;
+  /** POINTS_PER_LEVEL times the level's number. */
+  readonly level: number;
   /** A point for each whole second under BONUS_SECONDS. */
   readonly bonus: number;
-  /** holes + bonus. */
+  /** level + bonus. */
   readonly total: number;
 }
 
 /**
- * The points for reaching the line with `holes` holes on the field (integer >= 0) after `time` s
- * (the winning attempt, >= 0): POINTS_PER_HOLE a hole plus floor(BONUS_SECONDS - time) when positive.
- * @throws RangeError unless holes is an integer >= 0 and time finite and >= 0.
+ * The points for reaching the line on level `level` (integer >= 1) after `time` s (the winning
+ * attempt, >= 0): POINTS_PER_LEVEL x level plus floor(BONUS_SECONDS - time) when positive.
+ * @throws RangeError unless level is an integer >= 1 and time finite and >= 0.
  */
-export function levelPoints(holes: number, time: number): LevelPoints {
-  if (!(Number.isInteger(holes) && holes >= 0)) throw new RangeError(`levelPoints: holes must be an integer >= 0, got ${holes}`);
+export function levelPoints(level: number, time: number): LevelPoints {
+  if (!(Number.isInteger(level) && level >= 1)) throw new RangeError(`levelPoints: level must be an integer >= 1, got ${level}`);
   if (!(time >= 0 && Number.isFinite(time))) throw new RangeError(`levelPoints: time must be finite and >= 0 s, got ${time}`);
-  const h = POINTS_PER_HOLE * holes,
+  const base = POINTS_PER_LEVEL * level,
     bonus = Math.max(0, Math.floor(BONUS_SECONDS - time));
-  return Object.freeze({ holes: h, bonus, total: h + bonus });
+  return Object.freeze({ level: base, bonus, total: base + bonus });
 }
 
 /**
@@ -285,10 +287,10 @@ export interface LevelSummary {
   readonly totalTime: number;
   /** Lives after the clear (a cleared level gives one back, up to the starting lives). */
   readonly lives: number;
-  /** Points it scored (`levelPoints`: for the holes on the field, the wall's included, and for speed). */
+  /** Points it scored (`levelPoints`: for the level, and for speed). */
   readonly points: number;
-  /** The part of them for the holes (POINTS_PER_HOLE each), and the speed bonus. */
-  readonly holePoints: number;
+  /** The part of them for the level (POINTS_PER_LEVEL x level), and the speed bonus. */
+  readonly levelPoints: number;
   readonly bonus: number;
   /** Holes on the field when the ship reached the line. */
   readonly holes: number;
@@ -358,13 +360,10 @@ export function beginLevel(game: BlackHoleGame, run: LevelRun): void {
 /** What the opening line of a practice level (`LevelSpec.practice`) adds. */
 export const PRACTICE_NOTE = 'Practice: falling in costs no life here.';
 
-/**
- * The opening line of a level with `holes` holes on the field: the goal and what it is worth.
- * @throws RangeError (from levelPoints) unless holes is an integer >= 0.
- */
-export function levelMessage(spec: LevelSpec, holes: number): string {
-  const worth = levelPoints(holes, BONUS_SECONDS).holes;
-  const parts = [`Level ${spec.level}: reach the green line for ${worth} points (${POINTS_PER_HOLE} a hole), more if fast.`];
+/** The opening line of a level: the goal and what it is worth (`levelPoints`). */
+export function levelMessage(spec: LevelSpec): string {
+  const worth = levelPoints(spec.level, BONUS_SECONDS).level;
+  const parts = [`Level ${spec.level}: reach the green line for ${worth} points, more if fast.`];
   if (spec.gate > 0)
     parts.push(spec.blockers > 0 ? 'Find the gap in the wall, then steer round the hole above it.' : 'Find the gap in the wall.');
   if (spec.zigzag) parts.push('Weave between the holes.');
@@ -393,7 +392,7 @@ function layLevel(game: BlackHoleGame, run: LevelRun, level: number): void {
     layHoles(game, run, spec);
     if (tries >= LAYOUT_TRIES || heldThrustClears(game, run) === null) break;
   }
-  game.message = levelMessage(spec, game.holes.length);
+  game.message = levelMessage(spec);
 }
 
 /** Most layouts of a level drawn in search of one that no held thrust clears (`heldThrustClears`). */
@@ -767,7 +766,7 @@ export function stepLevel(game: BlackHoleGame, run: LevelRun): BlackHoleEvent | 
     // A new attempt: its clock starts, and the message about the last one (a fall, an exit) goes.
     run.parked = false;
     run.attemptStart = run.time;
-    game.message = levelMessage(run.spec, game.holes.length);
+    game.message = levelMessage(run.spec);
   }
   const time = run.time + dt;
   run.time = time;
@@ -800,7 +799,7 @@ export function stepLevel(game: BlackHoleGame, run: LevelRun): BlackHoleEvent | 
   const lifeBack = game.lives < game.params.lives;
   if (lifeBack) game.lives++;
   // ./rules scored a point a hole (the classic game's rule); a level scores `levelPoints`.
-  const points = levelPoints(holes, time - run.attemptStart);
+  const points = levelPoints(run.spec.level, time - run.attemptStart);
   game.score = scoreBefore + points.total;
   run.summary = Object.freeze({
     level: run.spec.level,
@@ -808,7 +807,7 @@ export function stepLevel(game: BlackHoleGame, run: LevelRun): BlackHoleEvent | 
     totalTime: time,
     lives: game.lives,
     points: points.total,
-    holePoints: points.holes,
+    levelPoints: points.level,
     bonus: points.bonus,
     holes,
     fuelLeft: run.fuelLeft,
@@ -840,11 +839,10 @@ const REST: readonly [number, number] = [0, 0];
  * the lives, and how to go on to level `next`.
  */
 export function clearMessage(s: LevelSummary, lifeBack: boolean, next: number): string {
-  const holes = `${s.holes} ${s.holes === 1 ? 'hole' : 'holes'} × ${POINTS_PER_HOLE}`;
   return (
     `Level ${s.level} cleared in ${s.time.toFixed(1)} s` +
     (s.falls > 0 ? ` (${s.totalTime.toFixed(1)} s in all, ${s.falls} ${s.falls === 1 ? 'fall' : 'falls'})` : '') +
-    `: +${s.points} (${holes}${s.bonus > 0 ? ` + ${s.bonus} speed bonus` : ''}). ` +
+    `: +${s.points}${s.bonus > 0 ? ` (${s.levelPoints} + ${s.bonus} speed bonus)` : ''}. ` +
     (lifeBack ? `A life back: ${s.lives} ${s.lives === 1 ? 'life' : 'lives'}. ` : '') +
     `Press Enter for level ${next}.`
   );

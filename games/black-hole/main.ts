@@ -1,8 +1,8 @@
 /**
  * Black hole: fly the ship from the bottom to the green line at the top past black holes that pull
- * it with Newtonian gravity. Reaching the line scores 10 points per hole on the field plus a speed
- * bonus (./levels.ts `levelPoints`; the classic game: one point a hole, and a hole more); the points
- * rise from where the ship crossed. Falling into a hole costs one of three lives; leaving the screen
+ * it with Newtonian gravity. Reaching the line scores 100 points times the level's number plus a
+ * speed bonus (./levels.ts `levelPoints`; the classic game: one point a hole, and a hole more); the
+ * points rise from where the ship crossed. Falling into a hole costs one of three lives; leaving the screen
  * puts the ship back for free. The engine spools up and down (./rules.ts THRUST_RAMP): the ship
  * leans into its thrust and the flame grows with it.
  * (Ramtal and Dobre, ch. 6; the rules are in ./rules.ts, DOM-free.)
@@ -19,7 +19,7 @@
  * with one gap off to the side (level 2's high up, level 3's lower with a hole above its gap), later levels more and
  * bigger holes, drifting holes and a fuel limit; clearing a level shows a summary and a button over
  * the middle of the field, and waits for Enter or a tap; the best score is kept in the browser's
- * local storage.
+ * local storage, and the game-over card over the field shows the final score and the best.
  * URL: ?level=N (start level, default 1), ?holes=N (1..16: the classic endless game with N holes
  * instead of levels), ?seed=S, ?c=C (m/s), ?thrust=A (m/s^2), ?path=0|1.
  *
@@ -45,7 +45,7 @@ import {
 import { createPauseOverlay, startPixiGame } from '@bitphysics/game-kit/pixi';
 import { type PhysicsWorld, Rng, slotOf, stateHash } from '@bitphysics/physics';
 import { Container, Graphics, Sprite, Text, Texture } from 'pixi.js';
-import { canThrust, type LevelRun, POINTS_PER_HOLE, startLevel } from './levels';
+import { canThrust, type LevelRun, levelPoints, startLevel } from './levels';
 import { type BlackHoleReplay, createBlackHoleReplay, type GameStepEvent } from './replay';
 import {
   type Arrow,
@@ -79,6 +79,8 @@ function readBest(): number {
   }
 }
 let best = readBest();
+/** The best score when the game in play began: a final score above it is a new best (the game-over card says so). */
+let bestAtStart = best;
 
 /** After each game step (live or replayed): keeps the best score, and shows the points a crossing made. */
 function onGameStep(event: GameStepEvent): void {
@@ -172,6 +174,57 @@ let pathPoints = 0;
 const PAD_SIDE_THRUSTS = ['up-left', 'up-right'] as const;
 /** Points of one of those paths, m (x0, y0, x1, y1, ...). */
 const sidePath = new Float64Array(2 * (PAD_PATH_STEPS + 1));
+/**
+ * Screen points, px, of what a caption must not cover this frame: every path dot drawn (the pad's side
+ * paths too) and the ship (x0, y0, x1, y1, ...; `dotCount` of them). The coach, the path's "falls in"
+ * and the pause's words are placed off them (`placeOffDots`).
+ */
+const dots = new Float64Array(2 * (PATH_STEPS + 2 * PAD_PATH_STEPS + 16));
+let dotCount = 0;
+/** Adds a point, px, to `dots` (ignored once it is full). */
+function addDot(x: number, y: number): void {
+  if (2 * dotCount + 1 >= dots.length) return;
+  dots[2 * dotCount] = x;
+  dots[2 * dotCount + 1] = y;
+  dotCount++;
+}
+/** How many of this frame's `dots` lie in the box [l, r] x [t, b], px, widened by `pad` px each way. */
+function dotsIn(l: number, t: number, r: number, b: number, pad: number): number {
+  let n = 0;
+  for (let i = 0; i < dotCount; i++) {
+    const x = dots[2 * i]!,
+      y = dots[2 * i + 1]!;
+    if (x > l - pad && x < r + pad && y > t - pad && y < b + pad) n++;
+  }
+  return n;
+}
+/**
+ * Moves `text` (its anchor as set, its size as now) to where its box covers the fewest of this frame's
+ * `dots` (within 6 px), the nearest such place to (px, py), px, where it is put first: a place in a grid
+ * of `step` px over the box [x0, x1] x [y0, y1], px, that holds the whole box. Where (px, py) covers
+ * none it stays there.
+ */
+function placeOffDots(text: Text, px: number, py: number, x0: number, y0: number, x1: number, y1: number, step = 12): void {
+  const w = text.width,
+    h = text.height,
+    ax = text.anchor.x * w,
+    ay = text.anchor.y * h;
+  let bestX = px,
+    bestY = py,
+    best = dotsIn(px - ax, py - ay, px - ax + w, py - ay + h, 6) * 1e9;
+  if (best > 0)
+    for (let l = x0; l + w <= x1; l += step)
+      for (let t = y0; t + h <= y1; t += step) {
+        const x = l + ax,
+          y = t + ay;
+        // The distance first: a place farther than the best so far cannot beat it (this runs every frame).
+        const far = (x - px) ** 2 + (y - py) ** 2;
+        if (far >= best) continue;
+        const score = dotsIn(l, t, l + w, t + h, 6) * 1e9 + far;
+        if (score < best) [best, bestX, bestY] = [score, x, y];
+      }
+  text.position.set(bestX, bestY);
+}
 /** How the path drawn in the last frame ends (./rules.ts `pathEnd`). */
 let pathKind: PathEnd = 'clear';
 /**
@@ -219,6 +272,7 @@ function createWorld(): PhysicsWorld {
   });
   run = levels ? startLevel(bh, continueLevel ?? params.level) : null;
   continueLevel = null;
+  bestAtStart = best;
   readyEndsAt = 0;
   predictor = createPredictor(bh);
   replay = createBlackHoleReplay(bh, run, onGameStep);
@@ -514,6 +568,17 @@ style.textContent = `
 /* The next-level / play-again button: over the field (placeActionButton moves it to a band no hole reaches),
    not at the stage's foot, where it covered the start pad and the ship waiting on it. */
 body .bp-touchbar.bp-action { top: 40%; bottom: auto; }
+/* After a game over the bar holds the game-over card beside its button (no taller than it, so the
+   pair fits the band under the holes that the button alone fits), above it where the field is narrow. */
+body .bp-touchbar.bp-action.bh-carded { gap: 8px; }
+.bh-over-card { pointer-events: none; text-align: center; color: #e8ecf1; font: 14px/1.35 system-ui, sans-serif;
+  background: rgba(8, 11, 20, 0.92); border: 1px solid #3a4560; border-radius: 12px; padding: 6px 16px;
+  box-shadow: 0 4px 14px rgba(0, 0, 0, 0.45); }
+.bh-over-card b { display: block; font-size: 17px; color: #ff8c8c; }
+.bh-over-card .bh-final, .bh-over-card .bh-best { display: inline; }
+.bh-over-card .bh-final { font-weight: 700; }
+.bh-over-card .bh-best::before { content: ' · '; color: #8a94a8; font-weight: 400; }
+.bh-over-card .bh-best.bh-new { color: #7ee787; font-weight: 700; }
 /* The touch hint at the top of the stage, over the space above the finish line: at its foot (the
    kit's place) it covered the ship waiting at the start and the path up to the first hole. */
 body .bp-touch-hint { top: 6px; bottom: auto; }
@@ -646,6 +711,42 @@ let shownAction = '';
 let shownNumbers = '',
   shownMessage = '';
 
+/**
+ * The game-over card, over the field beside the Continue / Play again button (above it on a narrow
+ * field; in the button's bar, so `placeActionButton` keeps both off the holes): "Game over", the final score and the best (kept in
+ * local storage), or "New best!" when the final score beat the best the game began with.
+ */
+const overCard = document.createElement('div');
+overCard.className = 'bh-over-card';
+overCard.dataset.hud = 'over-card';
+const overTitle = document.createElement('b'),
+  overScore = document.createElement('div'),
+  overBest = document.createElement('div');
+overScore.className = 'bh-final';
+overBest.className = 'bh-best';
+overCard.append(overTitle, overScore, overBest);
+/** Shows the game-over card while the game is over (see `overCard`), else takes it away. */
+function updateOverCard(): void {
+  const bar = document.querySelector<HTMLElement>('.bp-touchbar.bp-action');
+  if (!bh.over || !bar) {
+    if (overCard.isConnected) {
+      overCard.parentElement?.classList.remove('bh-carded');
+      overCard.remove();
+    }
+    return;
+  }
+  const fresh = bh.score > bestAtStart;
+  const lines = ['Game over', `Final score ${bh.score}`, fresh ? `New best! (was ${bestAtStart})` : `Best ${Math.max(best, bh.score)}`];
+  if (overTitle.textContent !== lines[0]) overTitle.textContent = lines[0]!;
+  if (overScore.textContent !== lines[1]) overScore.textContent = lines[1]!;
+  if (overBest.textContent !== lines[2]) overBest.textContent = lines[2]!;
+  overBest.classList.toggle('bh-new', fresh);
+  if (overCard.parentElement !== bar) {
+    bar.prepend(overCard);
+    bar.classList.add('bh-carded');
+  }
+}
+
 /** The game-over line in levels: Enter goes on from the level lost (`advance`), R starts again from the first. */
 function overMessage(m: string): string {
   if (!run || !bh.over) return m;
@@ -684,7 +785,7 @@ function updateStatus(force = false): void {
           .replace('Press Enter or R to play again.', 'Tap to play again.')
           .replace('Press Enter for level', 'Tap for level')
           .replace(/ \(\d+\.\d s in all, \d+ falls?\)/, '')
-          .replace(/ \(\d+ holes? × \d+( \+ \d+ speed bonus)?\)/, '')
+          .replace(/ \(\d+ \+ \d+ speed bonus\)/, '')
       : overMessage(bh.message);
   }
   status.classList.toggle('over', bh.over);
@@ -701,6 +802,7 @@ function updateStatus(force = false): void {
     shownAction = next;
     setAction(next !== '', next || undefined);
   }
+  updateOverCard();
   // Every frame, not only when the thrust changes: a button also lights and darkens itself under
   // its own finger. A diagonal lights both of its arrows.
   const lit = bh.thrust.split('-');
@@ -982,7 +1084,7 @@ function levelNews(spec: LevelRun['spec']): string {
           : 'steer between the holes'
         : `${n} ${n === 1 ? 'hole' : 'holes'}`;
   const extra = [spec.drift > 0 ? 'drifting' : '', Number.isFinite(spec.fuel) ? `${spec.fuel} s of fuel` : ''].filter(Boolean);
-  return `${holes}${extra.length ? `, ${extra.join(', ')}` : ''}\n${POINTS_PER_HOLE * n} points at the line`;
+  return `${holes}${extra.length ? `, ${extra.join(', ')}` : ''}\n${levelPoints(spec.level, 0).level} points at the line`;
 }
 
 /** How long the level's title shows at full strength, then how long it takes to fade, ms. */
@@ -1303,7 +1405,9 @@ function drawPathEnd(lx: number, ly: number, color: number): void {
   const top = cam.toScreenY(playField.height) + 4,
     bottom = cam.toScreenY(0) - 4;
   const ly2 = down ? Math.min(bottom - pathLabel.height, ey + off) : Math.max(top + pathLabel.height, ey - off);
-  pathLabel.position.set(at, ly2);
+  // Off the path's dots (and the pad's side paths): beside the climb up the middle it sat on the
+  // fainter path holding ↖ or ↗.
+  placeOffDots(pathLabel, at, ly2, x0, top, x1, bottom, 10);
 }
 
 /**
@@ -1399,12 +1503,19 @@ function drawCoach(x: number, sx: number, sy: number, k: number): void {
     bottom = cam.toScreenY(0) - 4 - coachText.height / 2;
   // Kept inside the field: a line wider than the room beside the ship slides toward the ship.
   const tx = right ? Math.min(sx + gap, x1 - coachText.width) : Math.max(sx - gap, x0 + coachText.width);
-  coachText.position.set(tx, Math.max(top, Math.min(bottom, sy - 0.2 * k)));
+  // Off the path's dots and the ship: beside the ship on the pad it sat on the path holding ↗ (or ↖).
+  const fieldTop = cam.toScreenY(playField.height) + 4,
+    fieldBottom = cam.toScreenY(0) - 4;
+  placeOffDots(coachText, tx, Math.max(top, Math.min(bottom, sy - 0.2 * k)), x0, fieldTop, x1, fieldBottom);
 }
 
-/** Over the field while paused: the scene dimmed and "Paused", so a pause is not taken for a hang. */
-const pause = createPauseOverlay({ label: 'paused' });
-app.stage.addChild(pause.container);
+/**
+ * Over the field while paused: the scene dimmed and "Paused", so a pause is not taken for a hang. It
+ * lies under the ship, the predicted path and the captions (the path stays bright while the player
+ * thinks), and its words are moved off the path (`placeOffDots`).
+ */
+const pause = createPauseOverlay({ label: 'paused', shadeAlpha: 0.35 });
+app.stage.addChildAt(pause.container, app.stage.getChildIndex(overlay));
 
 /** Gap kept between the touch card and the finish line, px. */
 const HINT_LINE_GAP = 4;
@@ -1482,9 +1593,11 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   }
   wasPaused = shell.paused;
   coachText.visible = false;
-  // The overlay stays the stage's last child (text added later would be drawn over it).
-  if (pause.container.parent === app.stage && app.stage.children[app.stage.children.length - 1] !== pause.container)
-    app.stage.addChild(pause.container);
+  // The overlay stays right under the ship and its path (layers added later go above them).
+  if (pause.container.parent === app.stage && app.stage.getChildIndex(pause.container) !== app.stage.getChildIndex(overlay) - 1) {
+    app.stage.removeChild(pause.container);
+    app.stage.addChildAt(pause.container, app.stage.getChildIndex(overlay));
+  }
   pause.draw(shell.paused, app.screen.width, app.screen.height, touch);
   engine.set(bh.thrust === 'none' || bh.over || shell.paused ? 0 : 0.7);
   drawBackdrop();
@@ -1496,6 +1609,12 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
     O = world.components.PreviousPosition;
   const x = O.x[slotOf(s)]! + (P.x[slotOf(s)]! - O.x[slotOf(s)]!) * alpha,
     y = O.y[slotOf(s)]! + (P.y[slotOf(s)]! - O.y[slotOf(s)]!) * alpha;
+  // The ship, for the captions to keep off (its middle and its nose and tail, SHIP_MIN_PX or 1 m apart).
+  dotCount = 0;
+  {
+    const half = 0.5 * Math.max(SHIP_MIN_PX, cam.toScreenLength(1));
+    for (const f of [-1, 0, 1]) addDot(cam.toScreenX(x), cam.toScreenY(y) + f * half);
+  }
   // No path between levels: the ship waits at rest past the line.
   if (params.path && !bh.over && !run?.waiting) {
     // Parked on the pad with no thrust (the ship held at rest there shows no path): the path holding ↑
@@ -1518,8 +1637,12 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
         let line = false;
         for (let i = 0; i < n && !line; i++) line = sidePath[2 * i + 1]! >= bh.lineY;
         const c = kind !== 'clear' ? PATH_WARN : line ? PATH_CLEAR : PATH_OPEN;
-        for (let i = 3; i < n; i += 4)
-          overlay.circle(cam.toScreenX(sidePath[2 * i]!), cam.toScreenY(sidePath[2 * i + 1]!), 1.6).fill({ color: c, alpha: 0.35 });
+        for (let i = 3; i < n; i += 4) {
+          const dx = cam.toScreenX(sidePath[2 * i]!),
+            dy = cam.toScreenY(sidePath[2 * i + 1]!);
+          overlay.circle(dx, dy, 1.6).fill({ color: c, alpha: 0.35 });
+          addDot(dx, dy);
+        }
       }
       bh.thrust = 'up';
       pathPoints = predictPath(bh, predictor, path, steps, run?.holeVx);
@@ -1538,9 +1661,10 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
     const color = warn ? PATH_WARN : pathReachesLine ? PATH_CLEAR : PATH_OPEN;
     // Dots fade along the path but stay plain to the end (faded to nothing, a path seemed to stop short).
     for (let i = 1; i < pathPoints; i += 2) {
-      overlay
-        .circle(cam.toScreenX(path[2 * i]!), cam.toScreenY(path[2 * i + 1]!), warn ? 2.4 : 1.9)
-        .fill({ color, alpha: 0.4 * (1 - i / (steps + 1)) + 0.35 });
+      const dx = cam.toScreenX(path[2 * i]!),
+        dy = cam.toScreenY(path[2 * i + 1]!);
+      overlay.circle(dx, dy, warn ? 2.4 : 1.9).fill({ color, alpha: 0.4 * (1 - i / (steps + 1)) + 0.35 });
+      addDot(dx, dy);
     }
     drawPathEnd(lx, ly, color);
   } else {
@@ -1590,6 +1714,18 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   placeActionButton();
   drawScorePop();
   drawCoach(x, sx, sy, k);
+  if (shell.paused) {
+    // The pause's words off the path, its label and the ship, as near the field's middle as that allows.
+    if (pathLabel.visible) {
+      const b = pathLabel.getBounds();
+      for (const fx of [0, 0.5, 1]) for (const fy of [0, 1]) addDot(b.x + fx * b.width, b.y + fy * b.height);
+    }
+    const fx0 = cam.toScreenX(0) + 4,
+      fx1 = cam.toScreenX(playField.width) - 4,
+      fy0 = cam.toScreenY(playField.height) + 4,
+      fy1 = cam.toScreenY(0) - 4;
+    placeOffDots(pause.words, 0.5 * (fx0 + fx1), 0.5 * (fy0 + fy1), fx0, fy0, fx1, fy1, 16);
+  }
   // The engine's thrust now (it spools up and down): the flame points against it, as long as it is
   // strong, and the ship leans into it (up to LEAN rad at full sideways thrust).
   const [tx, ty] = bh.thrustVec;
@@ -1685,6 +1821,15 @@ shell.expose({
   edgeWarning: (): boolean => edgeText.visible,
   /** The pause overlay as last drawn: whether it shows, and its words. */
   pauseOverlay: (): { visible: boolean; text: string } => ({ visible: pause.visible, text: pause.text }),
+  /** The pause's words' box in the last frame, px in the canvas: [left, top, right, bottom]. */
+  pauseWordsBox: (): number[] => {
+    const b = pause.words.getBounds();
+    return [b.x, b.y, b.x + b.width, b.y + b.height];
+  },
+  /** How many of the last frame's path dots and ship points (what captions keep off) lie in the box [l, t, r, b], px in the canvas. */
+  dotsIn: (l: number, t: number, r: number, b: number): number => dotsIn(l, t, r, b, 0),
+  /** The game-over card's lines while it shows (the final score and the best), else ''. */
+  overCard: (): string => (overCard.isConnected ? [overTitle, overScore, overBest].map((e) => e.textContent).join('\n') : ''),
   /** Particles drawn in the last frame (exhaust). */
   particleCount: (): number => renderer.particles!.stats.particles,
 });

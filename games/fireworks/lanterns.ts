@@ -102,17 +102,17 @@ export interface LanternLevel {
  * light everything. A newcomer's aims (scripts/fireworks-levels.mjs --random: par shells each within
  * 0.08 W of a dark lantern where it is, at random holds) light a level in par 0 to 1 times in 30,
  * every level, in both skies: three stars take the level's idea, seen and timed.
- * 1. Quick shells only, four lanterns and four shells: two far apart, one shell each, and a close
- *    pair (0.26 W) a quick burst right between lights together (aims within 0.06 W of the middle
- *    that light both, scripts/fireworks-levels.mjs --par: 20/49 desktop, 35/49 phone; at 0.18 W
- *    45-49/49, and everyone lit it first try): par 3, so three stars take the
- *    pair lit with one shell, and the spare shell lets a first level survive one stray tap (with
- *    par shells only, one miss lost it). The tip says to light two at once.
+ * 1. Quick shells only, five lanterns and four shells: one alone, and two close pairs (0.26 W) that a
+ *    quick burst right between lights together (aims within 0.06 W of the middle that light both,
+ *    scripts/fireworks-levels.mjs --par), so a shell a lantern runs out: the level is cleared only by
+ *    lighting a pair with one shell, as the tip says (with four lanterns and four shells a shell at
+ *    each lit it with no idea at all). Par 3 takes both pairs; the spare shell over par lets a first
+ *    level survive one stray tap.
  * 2. Two pairs 0.4 W apart, three shells: only a held burst between a pair lights both (0.2 W away,
- *    beyond a quick burst's 0.17); the two middle lanterns, one above the other, are an easy pair
- *    that leaves the outer two for a shell each (3, not 2): a shell a lantern runs out again, and
- *    three stars take both held pairs. Spray 0-0.2 %. The tip says only that a hold makes a bigger
- *    burst: which lanterns pair up is for the player to see.
+ *    beyond a quick burst's 0.17), and no two lanterns are nearer (on the desktop the pairs lie on
+ *    the diagonal: side by side, a tap between their inner two lit both), so a shell a lantern runs out and
+ *    clearing it takes at least one hold, as the tip says; three stars take both held pairs. The tip
+ *    says only that a hold makes a bigger burst: which lanterns pair up is for the player to see.
  * 3. Quick shells only, drifting lanterns: lead them by the fuse (the page draws each one's ghost
  *    where it will be when the fuse runs out), and four lanterns for par 3: two swing past each
  *    other, one over the other, every 5 s, and only a shell timed to burst as they pass lights both.
@@ -130,19 +130,21 @@ export const LEVELS: readonly LanternLevel[] = Object.freeze([
     shells: 4,
     shell: 'peony',
     hold: false,
+    // A lone lantern and two close pairs 0.26 W apart; lanterns not paired 0.34 W or more apart (a
+    // quick burst on one lantern lights one), a burst right between a pair lights both.
     lanterns: [
-      { x: 0.1, y: -0.04 },
-      { x: 0.4, y: 0.12 },
-      { x: 0.66, y: 0.12 },
-      { x: 0.9, y: -0.04 },
+      { x: 0.08, y: -0.16 },
+      { x: 0.28, y: 0.16 },
+      { x: 0.54, y: 0.16 },
+      { x: 0.66, y: -0.16 },
+      { x: 0.92, y: -0.16 },
     ],
-    // The close pair 0.26 W apart, the others 0.45 W or more from every lantern: a burst on one
-    // lantern lights one, a burst right between the pair lights both.
     tall: [
       { x: 0.15, y: 0.38 },
       { x: 0.62, y: 0.1 },
       { x: 0.88, y: 0.1 },
-      { x: 0.35, y: -0.42 },
+      { x: 0.22, y: -0.4 },
+      { x: 0.48, y: -0.4 },
     ],
   },
   {
@@ -152,11 +154,14 @@ export const LEVELS: readonly LanternLevel[] = Object.freeze([
     shells: 3,
     shell: 'peony',
     hold: true,
+    // Two pairs 0.4 W apart on the diagonal, 0.5 W and more between the pairs: no two lanterns a
+    // quick burst lights together (the inner two of the pairs side by side, 0.28 W apart one over
+    // the other, were lit by a tap between them, and with them the level without a hold).
     lanterns: [
-      { x: 0.1, y: -0.1 },
-      { x: 0.5, y: -0.1 },
-      { x: 0.5, y: 0.18 },
-      { x: 0.9, y: 0.18 },
+      { x: 0.06, y: -0.16 },
+      { x: 0.3, y: 0.16 },
+      { x: 0.7, y: -0.16 },
+      { x: 0.94, y: 0.16 },
     ],
     // Two pairs 0.4 W apart as wide, 0.64 W apart in height. The lower pair is centred: a low burst
     // drifts outwards with its shell's sideways speed (less spent by drag low down), and one between

@@ -754,7 +754,9 @@ function drawCharge(): void {
     overlay.stroke({ width: 1.5, color: 0xffd27a, alpha: 0.9 * pop });
   }
   overlay.circle(pointerX, pointerY, 3).fill({ color: 0xffe8a0, alpha: 0.9 });
-  const text = !holds ? 'quick shells only · let go' : full ? 'biggest burst · let go' : 'hold: a bigger burst';
+  // Where holding does nothing to the burst the words say so, and that the shell flies when let go (on
+  // the drifting level a player holds to wait for a ghost, then lets go).
+  const text = !holds ? 'no bigger burst here · let go to launch' : full ? 'biggest burst · let go' : 'hold: a bigger burst';
   if (chargeLabel.text !== text) chargeLabel.text = text;
   chargeLabel.position.set(
     Math.min(cam.width - chargeLabel.width / 2 - 4, Math.max(chargeLabel.width / 2 + 4, pointerX)),
@@ -858,8 +860,13 @@ function local(event: PointerEvent): void {
   pointerY = event.clientY - rect.top;
 }
 canvas.addEventListener('pointerdown', (event) => {
-  // While the player has paused, a press launches nothing (it spent a shell on the frozen sky).
-  if (event.button !== 0 || pointerId !== -1 || launchHeld()) return;
+  if (event.button !== 0 || pointerId !== -1) return;
+  // While the player has paused, a press resumes the show and launches nothing (it spent a shell on
+  // the frozen sky); its release is not this press's, so it launches nothing either.
+  if (launchHeld()) {
+    shell.togglePause();
+    return;
+  }
   pointerId = event.pointerId;
   canvas.setPointerCapture(event.pointerId);
   pressedAt = performance.now();
@@ -1169,8 +1176,11 @@ function lanternBoxes(all: boolean): [number, number, number, number][] {
   }
   return out;
 }
-/** Over the sky while the player has paused: the sky dimmed and "Paused" (a click then launches nothing, and said nothing). */
-const pause = createPauseOverlay();
+/**
+ * Over the sky while the player has paused: the sky dimmed, "Paused" and how to go on. A tap or click
+ * on the paused sky resumes it and launches nothing (taps there were ignored without a word).
+ */
+const pause = createPauseOverlay({ tapToResume: true });
 app.stage.addChild(pause.container);
 /** Shows the pause overlay while the player has paused (P or the pause button), on top of everything. */
 function drawPause(): void {
@@ -1402,6 +1412,8 @@ shell.expose({
   lanternBoxes: () => lanternBoxes(true),
   /** Whether the pause overlay showed in the last frame (the player paused with P or the pause button). */
   pauseShown: (): boolean => pause.visible,
+  /** The pause overlay's words as last drawn ('' before the first pause). */
+  pauseText: (): string => pause.text,
   /** The finale's meeting cue as drawn last frame: release (how near a shell let go now bursts to the meeting, 0 none), burst point (m), label, and the release when the label last turned to "let go now!" (NaN never). */
   meeting: () => ({ ...meetShown, letGoRelease }),
   /** The newest burst's front ring as drawn last frame: burst scale (0: none drawn), the reach it races out to and its radius now, CSS px, its age, s. */

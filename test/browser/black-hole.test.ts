@@ -60,11 +60,11 @@ describe('black hole', () => {
   it('labels the score; a fall spirals the ship in; the next thrust clears the message; the edge warns', async () => {
     expect(await g.page.locator('[data-hud="numbers"]').textContent()).toContain('Score 0');
     expect(await g.page.locator('[data-hud="message"]').textContent()).toBe(
-      'Level 1: reach the green line for 10 points (10 a hole), more if fast. Practice: falling in costs no life here.',
+      'Level 1: reach the green line for 100 points, more if fast. Practice: falling in costs no life here.',
     );
     // The level's title shows over the field until the first thrust, with what the line is worth.
     expect(await g.page.evaluate(() => (window.game as unknown as BlackHolePage).levelBanner())).toBe(
-      'Level 1\nsteer round the hole\n10 points at the line',
+      'Level 1\nsteer round the hole\n100 points at the line',
     );
     // The predicted path shows from the pad before the first thrust (the path holding ↑ would take;
     // it showed only once the ship moved), and the legend says what its colours mean.
@@ -313,12 +313,22 @@ describe('black hole, between levels', () => {
     expect(covered.holes).toBeGreaterThan(5);
     expect(covered.hits).toBe(0);
     expect(await g.page.locator('[data-hud="message"]').textContent()).toContain('Enter: continue from level 2');
+    // The game-over card above the button keeps the final score and the best (the score went to 0
+    // with no record of it); the best is the page's, at least the final score.
+    const card = await g.page.evaluate(() => {
+      const w = window.game as unknown as { overCard(): string; best: number; bh: { score: number } };
+      return { text: w.overCard(), best: w.best, score: w.bh.score };
+    });
+    expect(card.score).toBeGreaterThan(0);
+    expect(card.best).toBeGreaterThanOrEqual(card.score);
+    expect(card.text).toMatch(new RegExp(`^Game over\nFinal score ${card.score}\n(Best ${card.best}|New best! \\(was \\d+\\))$`));
     await g.page.keyboard.press('Enter');
     const again = await g.waitFor(() => {
       const w = window.game as unknown as Bh & { bh: { lives: number; over: boolean; score: number } };
       return w.bh.over ? null : { level: w.level.spec.level, lives: w.bh.lives, score: w.bh.score };
     }, null);
     expect(again).toEqual({ level: 2, lives: 3, score: 0 });
+    expect(await g.page.evaluate(() => (window.game as unknown as { overCard(): string }).overCard())).toBe('');
     expect(g.errors).toEqual([]);
   });
   it('paused, the next level begun: its holes are drawn in the next frame, even with the frame pacer skipping every frame', async () => {
@@ -667,6 +677,15 @@ describe.each([
       return o.visible ? o.text : null;
     }, null);
     expect(shown, device).toBe(touch ? 'Paused\n▶ to resume' : 'Paused\nP to resume');
+    // Paused, the predicted path stays drawn (the pad's, before the first thrust), and the words cover
+    // none of its dots nor the ship (they sat on the path in the middle of the field).
+    const paused = await p.waitFor(() => {
+      const w = window.game as unknown as Pause & { pathPoints(): number; pauseWordsBox(): number[]; dotsIn(...box: number[]): number };
+      const box = w.pauseWordsBox();
+      return w.pauseOverlay().visible && box[2]! > box[0]! ? { points: w.pathPoints(), covered: w.dotsIn(...box) } : null;
+    }, null);
+    expect(paused.points, device).toBeGreaterThan(0);
+    expect(paused.covered, device).toBe(0);
     await p.page.evaluate(() => {
       (window.game as unknown as Pause).paused = false;
     });

@@ -18,7 +18,7 @@ import {
   type LevelRun,
   levelPoints,
   levelSpec,
-  POINTS_PER_HOLE,
+  POINTS_PER_LEVEL,
   startLevel,
   stepLevel,
   WALL_GAP,
@@ -413,10 +413,20 @@ describe('levels', () => {
     expect([...ends].sort()).toEqual(['cleared', 'fell', 'left']);
   });
 
-  test('points: 10 a hole on the field plus a point for every whole second under 30 s', () => {
-    expect(levelPoints(3, 12.4)).toEqual({ holes: 3 * POINTS_PER_HOLE, bonus: 17, total: 47 });
-    expect(levelPoints(13, BONUS_SECONDS + 1)).toEqual({ holes: 130, bonus: 0, total: 130 });
-    expect(() => levelPoints(-1, 1)).toThrow(/levelPoints: holes must be an integer >= 0, got -1/);
+  test('points: 100 times the level plus a point for every whole second under 30 s, the same on every field', () => {
+    expect(levelPoints(3, 12.4)).toEqual({ level: 3 * POINTS_PER_LEVEL, bonus: 17, total: 317 });
+    expect(levelPoints(13, BONUS_SECONDS + 1)).toEqual({ level: 1300, bonus: 0, total: 1300 });
+    // Each level is worth more than the one before (counted 10 a hole, level 2's wall made it worth
+    // more than levels 3 to 8, and half as much on a phone's narrower field as on a desktop's).
+    for (let n = 1; n < 12; n++) expect(levelPoints(n + 1, 0).level).toBeGreaterThan(levelPoints(n, 0).level);
+    for (const field of [FIELD, { width: 20, height: 30 }]) {
+      const g = createBlackHoleGame({ seed: 2, field });
+      const run = startLevel(g, 2);
+      expect(g.message).toBe('Level 2: reach the green line for 200 points, more if fast. Find the gap in the wall.');
+      expect(pilot(g, run, 60).event, `${field.width} m field`).toBe('cleared');
+      expect(run.summary!.levelPoints).toBe(200);
+    }
+    expect(() => levelPoints(0, 1)).toThrow(/levelPoints: level must be an integer >= 1, got 0/);
     expect(() => levelPoints(1, Number.NaN)).toThrow(/levelPoints: time must be finite and >= 0 s, got NaN/);
   });
 
@@ -433,15 +443,13 @@ describe('levels', () => {
     // The next thrust starts the winning attempt and brings back the level's opening line.
     setThrust(g, 'left');
     stepLevel(g, run);
-    expect(g.message).toBe(
-      'Level 1: reach the green line for 10 points (10 a hole), more if fast. Practice: falling in costs no life here.',
-    );
+    expect(g.message).toBe('Level 1: reach the green line for 100 points, more if fast. Practice: falling in costs no life here.');
     const r = pilot(g, run, 30);
     expect(r.event).toBe('cleared');
     const k = r.steps + 1;
     expect(run.summary!.time).toBeCloseTo(k * g.world.dt, 9);
     expect(run.summary!.totalTime).toBeCloseTo(lost + k * g.world.dt, 9);
-    expect(g.message).toMatch(/^Level 1 cleared in \d+\.\d s \(\d+\.\d s in all, 1 fall\): \+\d+ \(1 hole × 10 \+ \d+ speed bonus\)/);
+    expect(g.message).toMatch(/^Level 1 cleared in \d+\.\d s \(\d+\.\d s in all, 1 fall\): \+\d+ \(100 \+ \d+ speed bonus\)/);
   });
 
   test('level 3: three holes up the straight path, each to the other side of the start than the one below', () => {
@@ -646,7 +654,7 @@ describe('levels', () => {
     expect(canThrust(g, run)).toBe(false);
   });
 
-  test('clearing a level: a summary, 10 points a hole and the speed bonus, a lost life back, an empty field and no steps until the next level begins', () => {
+  test('clearing a level: a summary, 100 points a level and the speed bonus, a lost life back, an empty field and no steps until the next level begins', () => {
     const g = createBlackHoleGame({ seed: 3 });
     const run = startLevel(g, 4);
     // One fall first: thrust straight up into the blocker.
@@ -660,10 +668,10 @@ describe('levels', () => {
     // The clear gives the lost life back (never above the three the game starts with).
     const s = run.summary!;
     const bonus = Math.max(0, Math.floor(BONUS_SECONDS - s.time));
-    expect(s).toMatchObject({ level: 4, holes: 4, holePoints: 40, bonus, points: 40 + bonus, lives: 3, falls: 1 });
+    expect(s).toMatchObject({ level: 4, holes: 4, levelPoints: 400, bonus, points: 400 + bonus, lives: 3, falls: 1 });
     expect(g.lives).toBe(3);
-    expect(g.message).toContain(`1 fall): +${40 + bonus} (4 holes × 10 + ${bonus} speed bonus). A life back: 3 lives.`);
-    expect(g.score).toBe(40 + bonus);
+    expect(g.message).toContain(`1 fall): +${400 + bonus}${bonus > 0 ? ` (400 + ${bonus} speed bonus)` : ''}. A life back: 3 lives.`);
+    expect(g.score).toBe(400 + bonus);
     expect(run.waiting).toBe(true);
     expect(run.spec.level).toBe(5);
     // No hole on the field while it waits: level 5's holes come when it begins.
@@ -676,7 +684,7 @@ describe('levels', () => {
     beginLevel(g, run);
     expect(run.waiting).toBe(false);
     expect(g.holes.length).toBe(levelSpec(5).holes);
-    expect(g.message).toBe('Level 5: reach the green line for 40 points (10 a hole), more if fast.');
+    expect(g.message).toBe('Level 5: reach the green line for 500 points, more if fast.');
     expect(shipY(g)).toBeLessThan(LINE_Y);
     // A clear at full lives keeps three.
     const g2 = createBlackHoleGame({ seed: 3 });

@@ -13,6 +13,12 @@ export interface PauseOverlayOptions {
   shadeAlpha?: number;
   /** Font size of the words, CSS px, > 0. Default 40 (32 on a view under 500 px wide). */
   fontSize?: number;
+  /**
+   * Whether a tap or click on the paused scene resumes the game (the game does it: the overlay only
+   * says so): the words then say 'Tap to resume' on a touch screen and 'Click or P to resume' with a
+   * mouse. Default false ('▶ to resume' / 'P to resume').
+   */
+  tapToResume?: boolean;
 }
 
 /** A pause overlay made by `createPauseOverlay`. */
@@ -24,8 +30,14 @@ export interface PauseOverlay {
   /** The words as last drawn ('' before the first draw while paused). */
   readonly text: string;
   /**
+   * The words' Text, anchored at its centre. `draw` puts it in the middle of the view; a game may move
+   * it after each `draw` (e.g. off what the player needs to see while paused).
+   */
+  readonly words: Text;
+  /**
    * Shows the overlay over a `width` x `height` px view when `paused`, else hides it. The words say
-   * how to resume: '▶ to resume' when `touch`, else 'P to resume'. Cheap when nothing changed.
+   * how to resume: '▶ to resume' when `touch`, else 'P to resume' (with `tapToResume`, 'Tap to
+   * resume' and 'Click or P to resume'). Cheap when nothing changed.
    */
   draw(paused: boolean, width: number, height: number, touch: boolean): void;
 }
@@ -68,6 +80,7 @@ export function createPauseOverlay(options: PauseOverlayOptions = {}): PauseOver
     get text() {
       return words.text;
     },
+    words,
     draw(paused, width, height, touch) {
       container.visible = paused;
       if (!paused) return;
@@ -76,7 +89,13 @@ export function createPauseOverlay(options: PauseOverlayOptions = {}): PauseOver
         shadeW = width;
         shadeH = height;
       }
-      const text = touch ? 'Paused\n▶ to resume' : 'Paused\nP to resume';
+      const text = options.tapToResume
+        ? touch
+          ? 'Paused\nTap to resume'
+          : 'Paused\nClick or P to resume'
+        : touch
+          ? 'Paused\n▶ to resume'
+          : 'Paused\nP to resume';
       if (words.text !== text) words.text = text;
       const fontSize = size ?? (width < 500 ? 32 : 40);
       if (words.style.fontSize !== fontSize) words.style.fontSize = fontSize;
