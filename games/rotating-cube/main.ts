@@ -4,9 +4,9 @@
  * tumbles, slides and bounces off them. The challenge: rest it on five glowing pads in turn, the last
  * four with a given face on top and reached by a roll (a slide keeps the top face, so the player slides
  * to the side of the pad from which a roll brings that face up), each pad smaller than the one before;
- * stars by rolls against the layout's par (scene.ts `padPar`). A click or tap on the floor pushes the cube towards that point, just hard enough that
+ * stars by rolls (★★★ in the layout's par, scene.ts `padPar`, plus PAR_SLACK[0] or fewer). A click or tap on the floor pushes the cube towards that point, just hard enough that
  * sliding on a face it stops there (`slideSpeed`); a click on the cube flicks it away from the point
- * clicked at a fixed speed; W A S D roll it over its edges in the screen's directions and Q E spin it
+ * clicked at a fixed speed; W A S D roll it over its edges in the screen's directions and Q E turn it
  * (a couple of forces from `applyForceAtPoint` in a forces-stage system, which stops pushing once it
  * turns at ROLL_SPIN_MAX); Space makes it jump. A pad reached chimes, flashes and pops its number.
  * Arrows show its angular momentum L (`spinAngularMomentum`, yellow) and angular velocity w (magenta)
@@ -17,7 +17,7 @@
  * spinning about a principal axis. Mode 'flip' spins a box with three distinct moments about its
  * intermediate axis on the pivot: it flips over again and again (the Dzhanibekov effect); the plot
  * shows w in the body frame. The challenge: 10 flips within 20 s (spin it up with the yaw keys).
- * Keys: room: W A S D roll the cube away, left, towards the viewer, right; Q E spin it about the
+ * Keys: room: W A S D roll the cube away, left, towards the viewer, right; Q E turn it a quarter about the
  * vertical; pivot: W/S, A/D, Q/E torque about the camera's right, up and viewing axes. X stops the
  * spin; Space jump (room); M switches mode (room, cube on a pivot, flip); P pause, N single step, R reset.
  * Click: room: the floor, a push there; the cube, a flick away from the point; pivot: an impulse at the
@@ -43,7 +43,7 @@ import {
   pageLayout,
 } from '@bitphysics/game-kit';
 import type { Plot } from '@bitphysics/game-kit/plot';
-import { ORBIT_CONTROLS, startThreeGame } from '@bitphysics/game-kit/three';
+import { isSoftwareWebGL, ORBIT_CONTROLS, startThreeGame } from '@bitphysics/game-kit/three';
 import {
   addPlane,
   addSystem,
@@ -62,6 +62,7 @@ import {
   BoxGeometry,
   CanvasTexture,
   Color,
+  CylinderGeometry,
   DoubleSide,
   Float32BufferAttribute,
   Mesh,
@@ -79,6 +80,7 @@ import {
   FLIP_GOAL,
   FLIP_TIME,
   FlipChallenge,
+  flipSpin,
   JUMP_IMPULSE,
   MODES,
   type Mode,
@@ -102,6 +104,7 @@ import {
   topFace,
   torqueCouple,
   WALL_HEIGHT,
+  YawKeeper,
 } from './scene';
 
 /** A press that moves more than this, CSS px, is a camera drag, not a click (a finger: TAP_SLOP, fingers wobble more). */
@@ -122,7 +125,9 @@ const params = {
   // The arrows explain the pivot modes; in the room they would cover the pads.
   showL: choiceParam('mode', MODES, 'room') !== 'room',
   showOmega: choiceParam('mode', MODES, 'room') !== 'room',
-  axes: true,
+  // The debug layer: on the pivot the body's axes; in the room (contact points, red squares at the
+  // cube's corners that read as a fault to a player) off until ticked in the panel.
+  axes: choiceParam('mode', MODES, 'room') !== 'room',
   stop: () => stopSpin(),
   reset: () => game.shell.reset(),
 };
@@ -147,18 +152,26 @@ const rollAxis = new Float64Array(3);
 /** Torque handed to the forces stage each step, N m (keyTorque, or in the room the governed roll torque). */
 const stepTorque = new Float64Array(3);
 /**
+ * Room mode: keeps the cube square to the grid of the heading it was dropped at (the camera's: so to
+ * the roll keys' screen directions, and with the default view to the walls and the pads) and turns it
+ * a quarter at a time for Q and E (scene.ts `YawKeeper`).
+ */
+const yawKeeper = new YawKeeper();
+/**
  * The torque of this step, N m, world frame: on the pivot keyTorque; in the room ROLL_TORQUE (times
  * the panel's key torque over its default) about rollAxis while the cube turns about that axis slower
- * than ROLL_SPIN_MAX, else none (a held key rolls it at a steady pace).
+ * than ROLL_SPIN_MAX, else none (a held key rolls it at a steady pace), plus the yaw keeper's torque
+ * about the vertical, at most as large.
  */
 function torqueNow(world: PhysicsWorld): Float64Array {
   if (params.mode !== 'room') return keyTorque;
   const W = world.components.AngularVelocity,
     e = handles.body;
   const along = W.x[e]! * rollAxis[0]! + W.y[e]! * rollAxis[1]! + W.z[e]! * rollAxis[2]!;
-  const T = along < ROLL_SPIN_MAX ? (ROLL_TORQUE * params.torque) / 0.5 : 0;
+  const most = (ROLL_TORQUE * params.torque) / 0.5;
+  const T = along < ROLL_SPIN_MAX ? most : 0;
   stepTorque[0] = T * rollAxis[0]!;
-  stepTorque[1] = T * rollAxis[1]!;
+  stepTorque[1] = T * rollAxis[1]! + yawKeeper.torque(world, e, most);
   stepTorque[2] = T * rollAxis[2]!;
   return stepTorque;
 }
@@ -202,7 +215,9 @@ function cameraHeading(): number {
 /** A fresh world with the body of the current mode (the shell calls it at start and on R). */
 function createWorld(): PhysicsWorld {
   const world = createPhysicsWorld(rotatingCubeWorldOptions(params.mode));
-  handles = buildRotatingCube(world, { mode: params.mode, spin: params.spin, heading: cameraHeading() });
+  const heading = cameraHeading();
+  handles = buildRotatingCube(world, { mode: params.mode, spin: params.spin, heading });
+  yawKeeper.reset(heading);
   const w = world.components.AngularVelocity,
     e = handles.body;
   omegaScale = ARROW_LENGTH / Math.max(1, Math.hypot(w.x[e]!, w.y[e]!, w.z[e]!));
@@ -249,6 +264,17 @@ let lastPlotted = -1,
   /** Angle between L and w, degrees (the readout's, for the status row). */
   angleLw = 0;
 
+/**
+ * The pixel ratio to render at: the kit's default (the device's, at most 2; SOFTWARE_PIXEL_RATIO, a
+ * quarter of the pixels, under software WebGL), except on a phone under software WebGL, where it is 1:
+ * at the kit's 0.5 a 390 px wide stage was drawn 195 px wide and blown up four times, too blurry to
+ * read the cube's faces; at 1 a frame fills about as many pixels as the desktop's at 0.5 (390 x 536
+ * against 1060 x 734 CSS px), so it costs about as much.
+ */
+function pixelRatio(): number | undefined {
+  return isSoftwareWebGL() && pageLayout().touch() ? 1 : undefined;
+}
+
 const game = await startThreeGame({
   title: 'Rotating cube',
   createWorld,
@@ -264,7 +290,7 @@ const game = await startThreeGame({
   controls: [
     { keys: 'Click', action: 'the floor: push the cube there; the cube: flick it away', touch: 'Tap' },
     { keys: 'W A S D', action: 'roll the cube (pivot: pitch, yaw)', touch: '▲ ◀ ▼ ▶' },
-    { keys: 'Q E', action: 'spin it (pivot: roll)', touch: '⟲ ⟳' },
+    { keys: 'Q E', action: 'turn it a quarter (pivot: roll)', touch: '⟲ ⟳' },
     { keys: 'X', action: 'stop spinning', touch: 'Stop' },
     { keys: 'Space', action: 'jump (room mode)', touch: 'Jump' },
     { keys: 'M', action: 'mode: room / cube on a pivot / Dzhanibekov flip', touch: 'Mode' },
@@ -275,7 +301,7 @@ const game = await startThreeGame({
     { key: 'm', label: 'mode', action: () => setMode(MODES[(MODES.indexOf(params.mode) + 1) % MODES.length]!) },
     { key: ' ', label: 'jump', action: () => jump() },
   ],
-  app: { background: 0x1a2232, controls: { minDistance: 1.5, maxDistance: 30 } },
+  app: { background: 0x1a2232, controls: { minDistance: 1.5, maxDistance: 30 }, pixelRatio: pixelRatio() },
   renderer: {
     debug: params.axes ? debugOptions() : false,
     planeSize: 14,
@@ -313,13 +339,14 @@ function viewOf(mode: Mode): { min: [number, number, number]; max: [number, numb
 }
 
 /**
- * Direction the camera looks from in each mode: the room from high up (about 50 degrees), so a cube
- * against the near wall stays in sight over it (on a tall stage from the front, about 65 degrees);
- * the pivot from a little above.
+ * Direction the camera looks from in each mode: the room from the front (square to its walls, so the
+ * cube, dropped square to the camera, is square to the walls and the pads too) and from high up
+ * (about 55 degrees, so a cube against the near wall stays in sight over it; on a tall stage about
+ * 65 degrees); the pivot from a little above.
  */
 function viewDirectionOf(mode: Mode): [number, number, number] {
   if (mode !== 'room') return [1, 0.7, 1.4];
-  return tallStage() ? [0, 2.2, 1] : [1, 2.1, 1.4];
+  return tallStage() ? [0, 2.2, 1] : [0, 1.45, 1];
 }
 
 /**
@@ -565,7 +592,7 @@ function celebrate(): void {
     const perfect = r.miss <= PERFECT ? ' · Perfect!' : '';
     showPop(
       last
-        ? `All ${layout.pads.length} pads! ${pads.rolls} rolls (par ${padPar(layout)}) ${stars(padStars(pads.rolls, padPar(layout)))}`
+        ? `All ${layout.pads.length} pads! ${pads.rolls} rolls ${stars(padStars(pads.rolls, padPar(layout)))}`
         : `Pad ${r.pad + 1} of ${layout.pads.length} ✓${perfect}`,
       last ? 2600 : 1100,
     );
@@ -575,6 +602,55 @@ function celebrate(): void {
 const lArrow = new VectorArrow({ color: 0xffd166, radius: 0.025, headLength: 0.14 });
 const wArrow = new VectorArrow({ color: 0xff5ce1, radius: 0.02, headLength: 0.12 });
 app.scene.add(lArrow.object, wArrow.object);
+/**
+ * L is drawn this much shorter than w on the same scale (and thicker): where the two are parallel (a
+ * cube, always; the box, before it flips) w's magenta tip shows past L's yellow head instead of
+ * hiding inside it.
+ */
+const L_DRAWN = 0.7;
+/** A label at each arrow's tip, in its colour: "L" and "ω" (on the pivot, where the arrows show). */
+const arrowLabels = [
+  { text: 'L', color: '#ffd166' },
+  { text: 'ω', color: '#ff5ce1' },
+].map(({ text, color }) => {
+  const label = document.createElement('div');
+  label.textContent = text;
+  label.dataset.hud = text === 'L' ? 'label-l' : 'label-omega';
+  label.dataset.sceneOverlay = '';
+  label.style.cssText =
+    'position: absolute; left: 0; top: 0; z-index: 3; pointer-events: none; display: none;' +
+    `font: 700 18px system-ui, sans-serif; color: ${color}; text-shadow: 0 1px 3px #000, 0 0 2px #000`;
+  (app.canvas.parentElement ?? document.body).append(label);
+  return label;
+});
+const labelAt = new Vector3();
+/** Shows label `i` (0: L, 1: w) a little past the tip of the arrow from `o` along (vx, vy, vz) times `scale` (m), or hides it when `show` is false. */
+function placeArrowLabel(i: number, show: boolean, o: ArrayLike<number>, vx: number, vy: number, vz: number, scale: number): void {
+  const label = arrowLabels[i]!;
+  const k = scale * 1.12;
+  if (!show || !(Math.hypot(vx, vy, vz) * scale > 0.05)) {
+    label.style.display = 'none';
+    return;
+  }
+  labelAt.set(o[0]! + vx * k, o[1]! + vy * k, o[2]! + vz * k).project(app.camera);
+  const c = app.canvas.getBoundingClientRect(),
+    st = (app.canvas.parentElement ?? document.body).getBoundingClientRect();
+  label.style.display = 'block';
+  label.style.transform = `translate(${c.left - st.left + ((labelAt.x + 1) / 2) * c.width}px, ${c.top - st.top + ((1 - labelAt.y) / 2) * c.height}px) translate(-50%, -50%)`;
+}
+
+// On the pivot: the pivot drawn as a post from the floor to the box's centre (a frictionless ball
+// joint at its centre of mass holds it there), on a foot.
+const pivotPost = new Mesh(
+  new CylinderGeometry(0.035, 0.05, 1.6, 16).translate(0, -0.8, 0),
+  new MeshStandardMaterial({ color: 0xa7b1c2, metalness: 0.5, roughness: 0.35 }),
+);
+const pivotFoot = new Mesh(
+  new CylinderGeometry(0.28, 0.32, 0.06, 32).translate(0, -1.57, 0),
+  new MeshStandardMaterial({ color: 0x6b7891, metalness: 0.3, roughness: 0.5 }),
+);
+pivotPost.castShadow = pivotFoot.receiveShadow = true;
+app.scene.add(pivotPost, pivotFoot);
 
 // ---- Keys held: in the room the cube rolls in the screen's directions; on the pivot torque about the camera's axes
 
@@ -594,7 +670,8 @@ window.addEventListener('keydown', (event) => {
   clearAim();
   if (k !== 'q' && k !== 'e') hideRules();
   held.add(k);
-  pressed.add(k);
+  // A held key's repeats refresh a roll's latch; a quarter turn (Q, E) is one a press, and goes on by itself while held.
+  if (!event.repeat || (k !== 'q' && k !== 'e')) pressed.add(k);
   event.preventDefault();
 });
 window.addEventListener('keyup', (event) => held.delete(event.key.toLowerCase()));
@@ -641,6 +718,8 @@ for (const [i, dir] of ['up', 'down', 'left', 'right'].entries()) dpad.buttons[i
   padding: 2px 0 4px 12px; }
 .bp-touchbar.rc-extras button { font-size: 14px; }
 .bp-touchbar.rc-extras button:nth-child(-n + 2) { font-size: 20px; }
+/* On the pivot the turn buttons carry words (Pitch ▲, Roll ⟲): a smaller type that fits their width. */
+.bp-touchbar.rc-pivot button, .bp-touchbar.rc-extras.rc-pivot button:nth-child(-n + 2) { font-size: 14px; }
 /* The touch card, two lines in a smaller type at the stage's foot: it covered the front of the floor. */
 body .bp-touch-hint { font-size: 13px; padding: 6px 10px; bottom: 6px; }
 `;
@@ -678,6 +757,7 @@ const TURN_LABELS = {
 /** Labels the turn buttons for the current mode. */
 function labelTurnButtons(): void {
   const labels = params.mode === 'room' ? TURN_LABELS.room : TURN_LABELS.pivot;
+  for (const bar of [dpad.element, extras.element]) bar.classList.toggle('rc-pivot', params.mode !== 'room');
   labels.forEach((label, i) => {
     turnButtons[i]!.textContent = label;
   });
@@ -764,7 +844,8 @@ function latchRoll(fresh: boolean, rolling: boolean): void {
  * frame). In the room W A S D roll the cube towards the screen's up, left, down and right along the
  * floor: about the axis y x d (d the direction of travel on the floor, the camera's right and its view
  * flattened onto the floor), so the top goes that way, snapped to the cube's nearest level edge
- * (`snapToEdge`: it goes over the edge facing most nearly that way); Q E spin it about the vertical.
+ * (`snapToEdge`: it goes over the edge facing most nearly that way); Q E turn it by quarter turns
+ * about the vertical (`yawKeeper`).
  */
 function updateKeyTorque(): void {
   const on = (k: string): boolean => held.has(k) || pressed.has(k);
@@ -772,6 +853,8 @@ function updateKeyTorque(): void {
   const pitch = (on('s') ? 1 : 0) - (on('w') ? 1 : 0);
   const yaw = (on('d') ? 1 : 0) - (on('a') ? 1 : 0);
   const roll = (on('q') ? 1 : 0) - (on('e') ? 1 : 0);
+  // Room: Q and E turn the cube a quarter turn a press, and on while held (the next quarter once the turn is near its end).
+  if (params.mode === 'room' && roll !== 0 && (pressed.has('q') || pressed.has('e') || !yawKeeper.turning)) yawKeeper.turn(roll);
   pressed.clear();
   app.camera.matrixWorld.extractBasis(right, up, back);
   if (params.mode === 'room') {
@@ -790,7 +873,6 @@ function updateKeyTorque(): void {
       ax = snapped[0]!;
       az = snapped[2]!;
     }
-    ay = roll;
     const n = Math.hypot(ax, ay, az);
     if (n > 0) {
       ax /= n;
@@ -965,7 +1047,7 @@ function stopSpin(): void {
 /** Switches mode, rebuilds the world and frames it. */
 function setMode(mode: Mode): void {
   params.mode = mode;
-  params.showL = params.showOmega = mode !== 'room';
+  params.showL = params.showOmega = params.axes = mode !== 'room';
   labelTurnButtons();
   panel.refresh();
   shell.reset();
@@ -974,7 +1056,7 @@ function setMode(mode: Mode): void {
   framedMode = mode;
   clampOrbit();
   fitBesideDrawer();
-  if (params.axes) renderer.setDebug(debugOptions());
+  renderer.setDebug(params.axes ? debugOptions() : false);
 }
 
 const panel = createPanel(
@@ -1027,8 +1109,20 @@ if (touch)
   }
 const stars = (n: number): string => '★'.repeat(n) + '☆'.repeat(3 - n);
 
+/**
+ * The rolls made against the stars still in reach, in one rule a player reads the same way everywhere
+ * (the status row, the end, the rules card): "rolls 3 of 8 for ★★★" (★★★ takes par + PAR_SLACK[0]
+ * rolls or fewer, ★★ par + PAR_SLACK[1]); past both, "rolls 14 ★☆☆".
+ */
+function rollsToStars(rolls: number, par: number): string {
+  for (const [i, slack] of PAR_SLACK.entries()) if (rolls <= par + slack) return `rolls ${rolls} of ${par + slack} for ${stars(3 - i)}`;
+  return `rolls ${rolls} ${stars(1)}`;
+}
+
 /** Writes the status row: the mode's goal, its numbers (the key readout) and how to play. */
 function updateStatus(wx: number, wy: number, wz: number): void {
+  // Flip mode's spin: |L| over the intermediate moment, steady while the box flips (|ω| swings).
+  const spin = flipSpin(Math.hypot(L[0]!, L[1]!, L[2]!));
   const world = shell.world,
     t = world.time,
     w = Math.hypot(wx, wy, wz);
@@ -1050,8 +1144,8 @@ function updateStatus(wx: number, wy: number, wz: number): void {
       if (pads.rolls < bestRolls) bestRolls = pads.rolls;
       status.set(
         {
-          goal: `All ${layout.pads.length} pads in ${pads.rolls} rolls (par ${par}), ${time.toFixed(1)} s ${stars(padStars(pads.rolls, par))}`,
-          numbers: `best ${bestRolls} rolls · ★★★ within ${par + PAR_SLACK[0]} rolls`,
+          goal: `All ${layout.pads.length} pads in ${pads.rolls} rolls, ${time.toFixed(1)} s ${stars(padStars(pads.rolls, par))}`,
+          numbers: `best ${bestRolls} rolls · ★★★ takes ${par + PAR_SLACK[0]} rolls or fewer, ★★ ${par + PAR_SLACK[1]}`,
           hint: touch
             ? '↻: a new layout · Mode: free spin, then the flip challenge'
             : 'R: a new layout · M: next mode (free spin, then the flip challenge)',
@@ -1061,7 +1155,7 @@ function updateStatus(wx: number, wy: number, wz: number): void {
     } else
       status.set({
         goal: `Land the cube on the glowing pad${want >= 0 ? `, rolling on with ${FACE_NAMES[want]} up` : ', any face up'} (${pads.pad + 1} of ${layout.pads.length})`,
-        numbers: `Pads ${'●'.repeat(pads.pad)}${'○'.repeat(layout.pads.length - pads.pad)} ${pads.pad}/${layout.pads.length} · rolls ${pads.rolls} (par ${par}) ${stars(padStars(pads.rolls, par))} · ${time.toFixed(1)} s`,
+        numbers: `Pads ${'●'.repeat(pads.pad)}${'○'.repeat(layout.pads.length - pads.pad)} ${pads.pad}/${layout.pads.length} · ${rollsToStars(pads.rolls, par)} · ${time.toFixed(1)} s`,
         hint: flick,
       });
   } else if (params.mode === 'flip') {
@@ -1069,11 +1163,11 @@ function updateStatus(wx: number, wy: number, wz: number): void {
     const over = flips.over(world);
     if (over && n > bestFlips) bestFlips = n;
     const [lo, hi] = FLIP_BAND;
-    const inBand = w >= lo && w <= hi;
+    const inBand = spin >= lo && spin <= hi;
     const band =
-      w < lo
+      spin < lo
         ? `too slow: spin it up (${touch ? 'Yaw ▶' : 'D'})`
-        : w > hi
+        : spin > hi
           ? `too fast: brake (${touch ? 'Yaw ◀' : 'A'})`
           : `in the band ✓ · a kick (${touch ? 'Pitch' : 'W or S'}) makes it flip sooner`;
     status.set(
@@ -1083,12 +1177,12 @@ function updateStatus(wx: number, wy: number, wz: number): void {
               flips.wonAt >= 0
                 ? `${FLIP_GOAL} flips in ${flips.time(t).toFixed(1)} s ${stars(3)}`
                 : `Time! ${n} flips ${stars(flips.stars())}`,
-            numbers: `best ${bestFlips} flips · |ω| ${w.toFixed(1)} rad/s`,
+            numbers: `best ${bestFlips} flips · spin ${spin.toFixed(1)} rad/s`,
             hint: touch ? '↻: try again · Mode: back to the pads' : 'R: try again · M: back to the pads',
           }
         : {
             goal: `Make the box flip ${FLIP_GOAL} times in ${FLIP_TIME} s, spinning at ${lo} to ${hi} rad/s`,
-            numbers: `Flips ${n}/${FLIP_GOAL} · ${(FLIP_TIME - flips.time(t)).toFixed(1)} s left · |ω| ${w.toFixed(1)} ${inBand ? '✓' : '✗'}`,
+            numbers: `Flips ${n}/${FLIP_GOAL} · ${(FLIP_TIME - flips.time(t)).toFixed(1)} s left · spin ${spin.toFixed(1)} ${inBand ? '✓' : '✗'}`,
             hint:
               flips.startedAt < 0
                 ? `Clock starts at your first ${touch ? 'tap' : 'key'} · ${band}`
@@ -1248,9 +1342,10 @@ function showRules(): void {
       return chip;
     }),
   );
+  const three = `${stars(3)} takes ${padPar(layout) + PAR_SLACK[0]} rolls or fewer.`;
   rulesText.textContent = touch
-    ? 'From pad 2, ROLL on (▲◀▼▶) with its colour on top: a slide on does not count. The net shows what rolls bring up.'
-    : 'From pad 2, ROLL onto the pad (W A S D) with its colour on top: a slide onto it does not count. The net at the left shows what each roll brings up.';
+    ? `From pad 2, ROLL on (▲◀▼▶) with its colour on top: a slide on does not count. The net shows what rolls bring up. ${three}`
+    : `From pad 2, ROLL onto the pad (W A S D) with its colour on top: a slide onto it does not count. The net at the left shows what each roll brings up. ${three}`;
   rulesShown = params.mode === 'room';
   rules.style.display = rulesShown ? 'block' : 'none';
   rules.style.opacity = '1';
@@ -1316,10 +1411,13 @@ function frame(): void {
   const iMid = Math.max(Math.min(I[0], I[1]), Math.min(Math.max(I[0], I[1]), I[2]));
   const P = c.Position;
   const o = params.mode === 'room' ? [P.x[e]!, P.y[e]!, P.z[e]!] : handles.pivot;
-  if (params.showL) lArrow.set(o[0], o[1], o[2], L[0]!, L[1]!, L[2]!, omegaScale / iMid);
+  if (params.showL) lArrow.set(o[0], o[1], o[2], L[0]!, L[1]!, L[2]!, (L_DRAWN * omegaScale) / iMid);
   else lArrow.hide();
   if (params.showOmega) wArrow.set(o[0], o[1], o[2], wx, wy, wz, omegaScale);
   else wArrow.hide();
+  placeArrowLabel(0, params.showL, o, L[0]!, L[1]!, L[2]!, (L_DRAWN * omegaScale) / iMid);
+  placeArrowLabel(1, params.showOmega, o, wx, wy, wz, omegaScale);
+  pivotPost.visible = pivotFoot.visible = params.mode !== 'room';
   if (world.steps !== lastPlotted) {
     lastPlotted = world.steps;
     const q = c.Orientation;
@@ -1336,7 +1434,7 @@ function frame(): void {
         : params.mode === 'room'
           ? `height ${P.y[e]!.toFixed(2)} m · speed ${Math.hypot(c.Velocity.x[e]!, c.Velocity.y[e]!, c.Velocity.z[e]!).toFixed(2)} m/s`
           : `I = ${handles.inertia.map((v) => v.toFixed(3)).join(', ')} kg m²`;
-    lines[4]!.textContent = `arrows: L yellow, ω magenta; 1 rad/s = ${omegaScale.toFixed(2)} m`;
+    lines[4]!.textContent = `arrows: L yellow (shorter), ω magenta; ω 1 rad/s = ${omegaScale.toFixed(2)} m`;
     // For a cube (equal moments) L stays parallel to w; for other boxes it does not.
     const lw = Math.hypot(L[0]!, L[1]!, L[2]!) * Math.hypot(wx, wy, wz);
     const angle = lw > 0 ? (Math.acos(Math.min(1, (L[0]! * wx + L[1]! * wy + L[2]! * wz) / lw)) * 180) / Math.PI : 0;

@@ -272,6 +272,104 @@ export function torqueCouple(body: number, torque: () => ArrayLike<number>): Sys
   };
 }
 
+/** Room mode, the yaw keeper's gains: stiffness, N m/rad, and damping, N m s/rad (near critical for the cube's 1/6 kg m^2 about the vertical). */
+export const YAW_STIFFNESS = 120;
+export const YAW_DAMPING = 9;
+/** A quarter turn, rad. */
+const QUARTER = Math.PI / 2;
+/** `a` wrapped into [-QUARTER / 2, QUARTER / 2): the cube looks the same after every quarter turn about the vertical. */
+function wrapQuarter(a: number): number {
+  return a - QUARTER * Math.round(a / QUARTER);
+}
+
+/**
+ * Room mode: keeps the cube square to a grid of headings (a heading about the vertical and every
+ * quarter turn from it) while it lies flat on a face, and turns it by quarter turns on command. Its
+ * faces then stay square to the walls, the pads and the roll keys' screen directions whatever knocked
+ * it (a corner striking a wall, a spin): each step it gives the torque about the vertical, N m, of a
+ * spring and damper (YAW_STIFFNESS, YAW_DAMPING) towards its target heading, at most `maxTorque`; the
+ * target is the grid heading nearest the cube's, or after `turn` the one a quarter turn on. The
+ * cube's heading is read from its most nearly level body axis and followed through whole turns; the
+ * keeper only acts while the axis most nearly vertical is within 20 degrees of it (not while it rolls
+ * over an edge, which keeps it square: a roll turns it about a level axis of the grid). Rest on the
+ * floor holds it within about 2 degrees (where the spring's torque falls below the floor's friction).
+ */
+export class YawKeeper {
+  /** The grid's heading, rad: the angle from +z of a level face normal (atan2(x, z)). */
+  private grid = 0;
+  /** The cube's heading from the grid, rad, followed through whole turns; NaN before the first reading. */
+  yaw = Number.NaN;
+  /** The heading it is turned to, rad from the grid, a multiple of a quarter turn. */
+  target = 0;
+  /** Whether a commanded turn (`turn`) is under way: until the cube is within 5 degrees of its target. */
+  turning = false;
+  /** The last reading of the heading wrapped to a quarter turn, rad. */
+  private last = Number.NaN;
+  /**
+   * @param heading the grid's heading about the vertical, rad, finite (as `buildRotatingCube`'s `heading`: 0 is square to the room).
+   * @throws RangeError if `heading` is not finite.
+   */
+  constructor(heading = 0) {
+    this.reset(heading);
+  }
+  /** Starts over with the grid at `heading`, rad. @throws RangeError if `heading` is not finite. */
+  reset(heading = 0): void {
+    if (!Number.isFinite(heading)) throw new RangeError(`YawKeeper: heading must be finite, got ${heading}`);
+    this.grid = heading;
+    this.yaw = Number.NaN;
+    this.last = Number.NaN;
+    this.target = 0;
+    this.turning = false;
+  }
+  /**
+   * Turns the cube a quarter turn about the vertical: `direction` +1 anticlockwise seen from above
+   * (the torque along +y), -1 clockwise; from the grid heading nearest it (or the target of a turn
+   * under way). @throws RangeError if `direction` is not 1 or -1.
+   */
+  turn(direction: number): void {
+    if (direction !== 1 && direction !== -1) throw new RangeError(`YawKeeper.turn: direction must be 1 or -1, got ${direction}`);
+    const from = this.turning || !Number.isFinite(this.yaw) ? this.target : QUARTER * Math.round(this.yaw / QUARTER);
+    this.target = from + direction * QUARTER;
+    this.turning = true;
+  }
+  /**
+   * Reads the heading of `body` in `world` and returns the torque about the vertical, N m, to apply
+   * this step (0 while it is not flat on a face), at most `maxTorque` (N m, >= 0) either way.
+   */
+  torque(world: PhysicsWorld, body: number, maxTorque: number): number {
+    const q = world.components.Orientation;
+    const x = q.x[body]!,
+      y = q.y[body]!,
+      z = q.z[body]!,
+      w = q.w[body]!;
+    // The body's axes in the world: the columns of its rotation matrix; their y parts are row y.
+    const cols = [
+      [1 - 2 * (y * y + z * z), 2 * (x * y + w * z), 2 * (x * z - w * y)],
+      [2 * (x * y - w * z), 1 - 2 * (x * x + z * z), 2 * (y * z + w * x)],
+      [2 * (x * z + w * y), 2 * (y * z - w * x), 1 - 2 * (x * x + y * y)],
+    ];
+    let level = 0,
+      upright = 0;
+    for (let i = 1; i < 3; i++) {
+      if (Math.abs(cols[i]![1]!) < Math.abs(cols[level]![1]!)) level = i;
+      if (Math.abs(cols[i]![1]!) > Math.abs(cols[upright]![1]!)) upright = i;
+    }
+    const c = cols[level]!;
+    const reading = wrapQuarter(Math.atan2(c[0]!, c[2]!) - this.grid);
+    if (Number.isNaN(this.yaw)) {
+      this.yaw = reading;
+      this.target = QUARTER * Math.round(reading / QUARTER);
+    } else this.yaw += wrapQuarter(reading - this.last);
+    this.last = reading;
+    if (Math.abs(cols[upright]![1]!) < Math.cos((20 * Math.PI) / 180)) return 0;
+    if (this.turning && Math.abs(this.target - this.yaw) < (5 * Math.PI) / 180) this.turning = false;
+    if (!this.turning) this.target = QUARTER * Math.round(this.yaw / QUARTER);
+    const wy = world.components.AngularVelocity.y[body]!;
+    const t = YAW_STIFFNESS * (this.target - this.yaw) - YAW_DAMPING * wy;
+    return Math.max(-maxTorque, Math.min(maxTorque, t));
+  }
+}
+
 // ---- Challenges -------------------------------------------------------------------------------
 
 /**
@@ -447,12 +545,24 @@ export function padStars(rolls: number, par: number): number {
 export const FLIP_GOAL = 10;
 export const FLIP_TIME = 20;
 /**
- * Flip mode: a flip counts only while the spin |w| is within this band, rad/s. The box starts below
- * it (6 rad/s), a held yaw key spins it up through the band in about 3 s and out of it; so the player
- * spins it up, lets go (or brakes) to stay in the band, and kicks it with a pitch or roll key, which
- * tips w off the intermediate axis so it flips sooner.
+ * Flip mode: a flip counts only while the box's spin (`flipSpin`: |L| over its intermediate moment)
+ * is within this band, rad/s. The box starts below it (6 rad/s), a held yaw key spins it up through
+ * the band in about 3 s and out of it; so the player spins it up, lets go (or brakes) to stay in the
+ * band, and kicks it with a pitch or roll key, which tips w off the intermediate axis so it flips sooner.
  */
 export const FLIP_BAND: readonly [number, number] = Object.freeze([8, 12]) as readonly [number, number];
+
+/**
+ * Flip mode: the box's spin, rad/s, from the magnitude of its angular momentum `l` (kg m^2/s, >= 0):
+ * l over its intermediate moment (about y), the rate it turns spinning about that axis alone. Unlike
+ * |w|, which swings up and down as the box flips (its w moves between the axes of unequal moments
+ * while L stays fixed), it stays steady between the keys' torques, so the band's check does not flicker.
+ */
+export function flipSpin(l: number): number {
+  return l / FLIP_I_MID;
+}
+/** The flip box's intermediate principal moment (about its y axis), kg m^2. */
+const FLIP_I_MID = inertiaOfSolidBox(MASS.flip, EDGES.flip)[1];
 
 /**
  * Counts flips of a spinning box: the cosine between its intermediate (y) axis and its angular
@@ -596,7 +706,7 @@ export class PadChallenge {
 }
 
 /**
- * Flip mode's challenge: count the box's flips (`FlipCounter`) made with its spin inside FLIP_BAND
+ * Flip mode's challenge: count the box's flips (`FlipCounter`) made with its spin (`flipSpin`) inside FLIP_BAND
  * over FLIP_TIME seconds from `startedAt`, the world time of the player's first input (`start`: like
  * the pads' clock, reading the goal costs nothing; nothing counts before it); won when FLIP_GOAL
  * flips come within the time (`wonAt`), lost when the time runs out first.
@@ -645,8 +755,7 @@ export class FlipChallenge {
     if (!(l > 0)) return;
     // The body's y axis in the world frame: (0, 1, 0) rotated by q, the inverse rotation by its conjugate.
     rotateVectorInverse(-q.x[body]!, -q.y[body]!, -q.z[body]!, q.w[body]!, 0, 1, 0, a);
-    const W = world.components.AngularVelocity,
-      w = Math.hypot(W.x[body]!, W.y[body]!, W.z[body]!);
+    const w = flipSpin(l);
     const inBand = w >= FLIP_BAND[0] && w <= FLIP_BAND[1];
     if (this.counter.update((a[0]! * L[0]! + a[1]! * L[1]! + a[2]! * L[2]!) / l, inBand) >= FLIP_GOAL) this.wonAt = world.time;
   }

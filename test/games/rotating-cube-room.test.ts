@@ -5,7 +5,16 @@
  */
 
 import { readFileSync } from 'node:fs';
-import { addSystem, applyImpulse, createPhysicsWorld, setAngularVelocity, setVelocity, step } from '@bitphysics/physics';
+import {
+  addSystem,
+  applyImpulse,
+  createPhysicsWorld,
+  type PhysicsWorld,
+  setAngularVelocity,
+  setVelocity,
+  spinAngularMomentum,
+  step,
+} from '@bitphysics/physics';
 import { describe, expect, it } from 'vitest';
 import { CARD_LINES } from '../../games/gallery-cards';
 import {
@@ -17,6 +26,7 @@ import {
   FLIP_TIME,
   FlipChallenge,
   FlipCounter,
+  flipSpin,
   LANDING_FACE,
   PAD_COUNT,
   PAD_FACES,
@@ -36,6 +46,7 @@ import {
   slideSpeed,
   topFace,
   torqueCouple,
+  YawKeeper,
 } from '../../games/rotating-cube/scene';
 
 const S = Math.SQRT1_2;
@@ -140,6 +151,55 @@ describe('rotating-cube room pushes', () => {
     for (let i = 0; i < 60; i++) step(world); // 1 s
     // Over at least one edge (a roll onto the next face carries the centre 1 m).
     expect(P.x[h.body]! - x0).toBeGreaterThan(0.9);
+  });
+
+  it('the yaw keeper squares a knocked cube to its grid again, and turns it by exact quarter turns; unkept, a knock leaves it askew', () => {
+    /** The heading of the cube's level body x axis from +z, rad (atan2(x, z)): the drop puts it at heading + a quarter turn. */
+    const headingOf = (world: PhysicsWorld, e: number): number => {
+      const q = world.components.Orientation;
+      const x = q.x[e]!,
+        y = q.y[e]!,
+        z = q.z[e]!,
+        w = q.w[e]!;
+      return Math.atan2(1 - 2 * (y * y + z * z), 2 * (x * z - w * y));
+    };
+    /** The angle from `a` to the nearest of b + k quarter turns, degrees. */
+    const offGrid = (a: number, b: number): number => {
+      const d = a - b;
+      return (Math.abs(d - (Math.PI / 2) * Math.round(d / (Math.PI / 2))) * 180) / Math.PI;
+    };
+    for (const heading of [0, 0.62]) {
+      const run = (kept: boolean, spin: number, turns: number) => {
+        const world = createPhysicsWorld(rotatingCubeWorldOptions());
+        const h = buildRotatingCube(world, { heading });
+        const keeper = new YawKeeper(heading);
+        const torque = new Float64Array(3);
+        addSystem(
+          world,
+          'forces',
+          torqueCouple(h.body, () => {
+            torque[1] = kept ? keeper.torque(world, h.body, ROLL_TORQUE) : 0;
+            return torque;
+          }),
+        );
+        while (world.time < 2.5) step(world);
+        const start = headingOf(world, h.body) - Math.PI / 2;
+        // A knock: a spin about the vertical of `spin` rad/s (4.5 rad/s turns a free cube some 30 degrees before the floor stops it).
+        setAngularVelocity(world, h.body, [0, spin, 0]);
+        for (let k = 0; k < Math.abs(turns); k++) keeper.turn(Math.sign(turns));
+        while (world.time < 6) step(world);
+        return { start, end: headingOf(world, h.body) - Math.PI / 2 };
+      };
+      // Unkept, the knock leaves the cube over 10 degrees off its grid: the test can see a skew.
+      expect(offGrid(run(false, 4.5, 0).end, heading)).toBeGreaterThan(10);
+      // Kept: back within 2.5 degrees of a grid heading (friction holds it once the spring's torque is small).
+      for (const spin of [4.5, -4]) expect(offGrid(run(true, spin, 0).end, heading)).toBeLessThan(2.5);
+      // A turn: a quarter turn anticlockwise seen from above (+y), within 2.5 degrees.
+      const { start, end } = run(true, 0, 1);
+      expect(Math.abs((((((end - start) * 180) / Math.PI) % 360) + 360) % 360) - 90).toBeLessThan(2.5);
+    }
+    expect(() => new YawKeeper(Number.NaN)).toThrow(/YawKeeper: heading/);
+    expect(() => new YawKeeper().turn(2)).toThrow(/YawKeeper.turn: direction/);
   });
 });
 
@@ -404,6 +464,29 @@ describe('rotating-cube challenges', () => {
     expect(c.count).toBe(3);
     c.reset();
     expect(c.update(-0.9)).toBe(0);
+  });
+
+  it("the flip band's spin (flipSpin of |L|) holds steady while the box flips, where |ω| swings by over 10 %", () => {
+    const world = createPhysicsWorld(rotatingCubeWorldOptions('flip'));
+    const h = buildRotatingCube(world, { mode: 'flip', spin: 10 });
+    const W = world.components.AngularVelocity,
+      L = new Float64Array(3);
+    let wLo = Infinity,
+      wHi = -Infinity,
+      sLo = Infinity,
+      sHi = -Infinity;
+    while (world.time < 10) {
+      step(world);
+      const w = Math.hypot(W.x[h.body]!, W.y[h.body]!, W.z[h.body]!);
+      spinAngularMomentum(world, h.body, L);
+      const s = flipSpin(Math.hypot(L[0]!, L[1]!, L[2]!));
+      [wLo, wHi, sLo, sHi] = [Math.min(wLo, w), Math.max(wHi, w), Math.min(sLo, s), Math.max(sHi, s)];
+    }
+    // Spun at 10 rad/s about y: |ω| swings by over 10 % at every flip (a band check on it flickered
+    // between ✓ and ✗ near either edge of FLIP_BAND); the spin stays at 10 within 1 %.
+    expect(wHi - wLo).toBeGreaterThan(1);
+    expect(sLo).toBeGreaterThan(9.9);
+    expect(sHi).toBeLessThan(10.1);
   });
 
   it('the flip round: flips count only with the spin in FLIP_BAND: left alone or with yaw held it is lost; kept in the band it is won, with a kick sooner', () => {
