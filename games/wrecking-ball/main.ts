@@ -3,17 +3,18 @@
  * joints) into towers, brick walls and plank stacks of 3D boxes. Steer the crane: slew the jib, run the
  * trolley in and out, raise and lower the hook; the ball lags behind and swings, so pump it like a
  * pendulum. Or grab the ball with the mouse, pull it back and let go. Every piece that falls scores
- * (more for pieces that stood high); knock down 45 % of the pieces that stood above the ground on
- * level 1, 60 % after (`clearTarget`), within the level's swings (`swingBudget`) to clear it; levels
- * are seeded.
+ * (more for pieces that stood high); knock down 75 % of the pieces that stood above the ground on
+ * levels 1 to 3, 76 % after (`clearTarget`), within the level's swings (`swingBudget`) to clear it;
+ * levels are seeded.
  *
  * Keys: A/D or ←/→ slew, W/S or ↑/↓ trolley out/in, Q/E hook up/down, L next level (once cleared),
  * G debug layer (joints, contacts), P pause, N step, R reset. Mouse: press a target and drag back
  * as with a sling, then let go: the ball swings into it along the arrow shown on the ground, harder
  * the longer the pull (the crane winds up and runs through; one aimed at another target during the
  * wind-up re-aims that swing, one during the run is swung at next); a click without a drag shows
- * the arrow from where the ball hangs, a second click swings along it. A press on the ground beside
- * a target aims at it, elsewhere sends the hook there; drag the ball to pull it; right-drag orbits,
+ * the arrow from where the ball hangs, a second click swings along it (on a touch screen, with a
+ * target so marked, a drag from open ground aims at it too: the finger need not cover it). A press
+ * on the ground beside a target aims at it, elsewhere sends the hook there; drag the ball to pull it; right-drag orbits,
  * wheel zooms. Once the collapse that clears a level settles its result (swings, stars, score) is
  * final: later swings are for fun.
  * URL: ?level=N, ?seed=S, ?debug, ?demo (the crane swings at the level's first tower by itself: the
@@ -315,6 +316,10 @@ const game = await startThreeGame({
   onFrame: () => frame(),
 });
 const { shell, renderer, app } = game;
+// The kit's card of touch gestures sits over the bottom of a phone's stage for its first seconds,
+// where it covered the nearest structure (level 1's plank stack): the hint over the scene's top says
+// the one move a level needs first, and the crane's buttons carry captions, so it goes at once.
+document.querySelector('[data-hud="touch-hint"]')?.remove();
 // A drawer (menu or settings) pauses the swing and the falling tower while it is open.
 pauseUnderDrawers(shell);
 /** Dust, chips and popups of the hits. */
@@ -645,6 +650,7 @@ function applyView(view: FittedView): void {
   }
   framedSize = [app.canvas.clientWidth, app.canvas.clientHeight];
   home = { position: cam.position.clone(), target, direction: view.position.clone().sub(view.lookAt).normalize() };
+  settleCamera();
 }
 /** The orbit target of camera placement `view`: where its line of sight passes nearest the mast, no lower than 1 m. */
 function orbitTarget(view: FittedView): Vector3 {
@@ -659,6 +665,17 @@ function orbitTarget(view: FittedView): Vector3 {
  * and the unit direction toward the camera (null once the player moves the camera).
  */
 let home: { position: Vector3; target: Vector3; direction: Vector3 } | null = null;
+/** The framing the camera eases toward while the site's framing is kept (see followAction): where it stands and looks. */
+const cameraGoal = { position: new Vector3(), target: new Vector3() };
+/** The camera's and its orbit target's velocities, m/s, in the spring (`smoothDamp`). */
+const cameraVelocity = new Vector3(),
+  targetVelocity = new Vector3();
+/**
+ * The widened framing: whether the camera is given it rather than the site's, the ball's places it
+ * takes in (m), when it was last widened and since when the ball has been inside the site's framing
+ * (page seconds, -1: it is not).
+ */
+const widen = { on: false, balls: [] as Vector3[], at: -1e9, insideSince: -1 };
 // The player's own turn or zoom: the camera is theirs (no new framing on a resize, no easing back).
 app.controls?.addEventListener('start', () => {
   framedSize = null;
@@ -957,35 +974,103 @@ function drawChain(hook: ArrayLike<number>): void {
   chainRings.instanceMatrix.needsUpdate = true;
 }
 
-// The camera follows the action only when it would leave the view: while the ball is within the
-// middle FOLLOW_EDGE of the view (in normalised device coordinates) the camera holds still, so a
-// target a player is about to tap stays where they saw it (a camera always easing toward the ball
-// would move the targets under the player's finger); past that the orbit's target eases toward a point
-// between the mast and the ball (FOLLOW of the way a frame) and the camera moves with it, keeping the
-// player's own orbit and zoom. Once the ball is back inside the site's framing (the view frameSite
-// chose), the camera eases back to it (RETURN): a camera that stayed where it had followed a
-// follow-through left the other structures off a phone's screen. A player who turns or zooms the
-// camera keeps it. The framing draws pieces out to FRAME_X of the view, so the ball striking one
+// The camera holds still while the ball swings inside the view, so a target a player is about to press
+// stays where they saw it (a camera always easing toward the ball moved the targets under the player's
+// finger). Once any of the ball has left the site's framing (the view frameSite chose, which fills the
+// screen), the framing widens to take the ball in as well, seen from the framing's own side (fitPoints:
+// every structure stays on the screen, and a jib turned toward the camera or away does not swing the ball
+// out of view); it widens again while the ball keeps leaving it, and goes back to the site's framing once
+// the ball has been inside that for RETURN_DELAY s with no swing running. A ball that comes to rest
+// outside the site's framing is framed with it from then on (rehome). The camera eases toward the framing
+// it is given as a critically damped spring (`smoothDamp`, settling in about CAMERA_EASE s): its velocity
+// never jumps, so a change of framing starts and ends gently (a camera stepped a share of the way each
+// frame set off at full speed and stopped dead, which read as a jump). While a press aims a swing or drags
+// the ball the camera stops. A player who turns or zooms the camera keeps it: then a ball past FOLLOW_EDGE
+// of the view (in normalised device coordinates) draws the view sideways after it (toward between the ball
+// and the target of the swing, or between the mast and the ball), with an eased velocity, keeping the
+// player's orbit and zoom. The framing draws pieces out to FRAME_X of the view, so the ball striking one
 // there is still in view: the edge lies past that.
-const FOLLOW = 0.04,
-  FOLLOW_EDGE = 0.92;
-/** Share of the way back to the site's framing the camera eases each frame (most of it in half a second). */
-const RETURN = 0.08;
+const FOLLOW_EDGE = 0.92;
+/** Time, s, in which the camera's spring closes most of the way to a new framing (its smooth time is half of it). */
+const CAMERA_EASE = 0.9;
+/** Seconds the ball must stay inside the site's framing, no swing running, before a widened framing goes back to it. */
+const RETURN_DELAY = 2.5;
+/** Shortest time, s, between two widenings of the framing (each a fitPoints). */
+const WIDEN_EVERY = 0.25;
+/** Rate, 1/s, at which a player's camera moves sideways after a ball past the view's edge (times the distance to go). */
+const FOLLOW_RATE = 2.4;
+/** Time constant, s, with which that sideways velocity eases toward what is asked. */
+const FOLLOW_EASE = 0.3;
 const followGoal = new Vector3(),
-  followStep = new Vector3(),
+  followWant = new Vector3(),
   followBall = [0, 0, 0],
   followNdc = new Vector3();
-/** Whether point `p` (m) is inside the site's framing (`home`, its FRAME_ bounds and a hair). */
-function inHomeView(p: ArrayLike<number>): boolean {
-  if (home === null) return false;
+/** Page time, s, of the camera's last update. */
+let cameraTime = -1;
+/**
+ * Moves `current` toward `goal` (m) over `dt` s as a critically damped spring with velocity
+ * `velocity` (m/s, updated): smooth time CAMERA_EASE / 2 s, exact for any `dt` >= 0 (the closed
+ * form's exponential taken to its third order), so the velocity is continuous whatever the frame rate.
+ */
+function smoothDamp(current: Vector3, goal: Vector3, velocity: Vector3, dt: number): void {
+  const omega = 4 / CAMERA_EASE,
+    x = omega * dt;
+  const decay = 1 / (1 + x + 0.48 * x * x + 0.235 * x * x * x);
+  for (const k of ['x', 'y', 'z'] as const) {
+    const change = current[k] - goal[k];
+    const temp = (velocity[k] + omega * change) * dt;
+    velocity[k] = (velocity[k] - omega * temp) * decay;
+    current[k] = goal[k] + (change + temp) * decay;
+  }
+}
+/** Stops the camera's spring where it is: a new framing put in place at once (applyView). */
+function settleCamera(): void {
+  cameraVelocity.set(0, 0, 0);
+  targetVelocity.set(0, 0, 0);
+  widen.on = false;
+  widen.balls.length = 0;
+  widen.insideSince = -1;
+  if (home !== null) {
+    cameraGoal.position.copy(home.position);
+    cameraGoal.target.copy(home.target);
+  }
+}
+/** Whether point `p` (m) is inside the framing seen from `position` looking at `target` (its FRAME_ bounds and a hair). */
+function inFraming(p: ArrayLike<number>, position: Vector3, target: Vector3): boolean {
   fitCamera.fov = app.camera.fov;
   fitCamera.aspect = app.camera.aspect;
   fitCamera.updateProjectionMatrix();
-  fitCamera.position.copy(home.position);
-  fitCamera.lookAt(home.target);
+  fitCamera.position.copy(position);
+  fitCamera.lookAt(target);
   fitCamera.updateMatrixWorld();
   followNdc.set(p[0]!, p[1]!, p[2]!).project(fitCamera);
   return Math.abs(followNdc.x) < FRAME_X + 0.02 && followNdc.y > FRAME_BOTTOM - 0.02 && followNdc.y < FRAME_TOP + 0.02 && followNdc.z < 1;
+}
+const ballCorner = [0, 0, 0];
+/**
+ * Whether the whole ball at `b` (m; the corners of its box) is inside the framing seen from
+ * `position` looking at `target`: tested at its centre, a ball swinging past a phone's narrow
+ * framing was half off the screen before the camera moved.
+ */
+function ballInFraming(b: ArrayLike<number>, position: Vector3, target: Vector3): boolean {
+  for (let c = 0; c < 8; c++) {
+    ballCorner[0] = b[0]! + (c & 1 ? BALL_RADIUS : -BALL_RADIUS);
+    ballCorner[1] = b[1]! + (c & 2 ? BALL_RADIUS : -BALL_RADIUS);
+    ballCorner[2] = b[2]! + (c & 4 ? BALL_RADIUS : -BALL_RADIUS);
+    if (!inFraming(ballCorner, position, target)) return false;
+  }
+  return true;
+}
+/** The corners of a box of half size BALL_RADIUS round (x, y, z), m, added to `pts`. */
+function pushBall(pts: Vector3[], x: number, y: number, z: number): void {
+  for (let c = 0; c < 8; c++)
+    pts.push(
+      new Vector3(
+        x + (c & 1 ? BALL_RADIUS : -BALL_RADIUS),
+        y + (c & 2 ? BALL_RADIUS : -BALL_RADIUS),
+        z + (c & 4 ? BALL_RADIUS : -BALL_RADIUS),
+      ),
+    );
 }
 /**
  * Frames the site again from the framing's own direction, the ball at `ball` (m) added to its
@@ -997,54 +1082,89 @@ function rehome(ball: ArrayLike<number>): void {
   rehomedAt[0] = ball[0]!;
   rehomedAt[1] = ball[1]!;
   rehomedAt[2] = ball[2]!;
-  const pts = framePoints;
-  for (let c = 0; c < 8; c++)
-    pts.push(
-      new Vector3(
-        ball[0]! + (c & 1 ? BALL_RADIUS : -BALL_RADIUS),
-        ball[1]! + (c & 2 ? BALL_RADIUS : -BALL_RADIUS),
-        ball[2]! + (c & 4 ? BALL_RADIUS : -BALL_RADIUS),
-      ),
-    );
-  const fit = fitPoints(pts, home.direction);
+  pushBall(framePoints, ball[0]!, ball[1]!, ball[2]!);
+  const fit = fitPoints(framePoints, home.direction);
   home = { position: fit.position, target: orbitTarget(fit), direction: home.direction };
 }
-/** Eases the camera and its orbit target toward the action, or back to the site's framing (see FOLLOW). */
+/** Widens the framing the camera is given to take in the ball at `ball` (m) too (see followAction). */
+function widenFor(ball: ArrayLike<number>, now: number): void {
+  if (home === null) return;
+  widen.at = now;
+  widen.balls.push(new Vector3(ball[0]!, ball[1]!, ball[2]!));
+  const pts = framePoints.slice();
+  for (const b of widen.balls) pushBall(pts, b.x, b.y, b.z);
+  const fit = fitPoints(pts, home.direction);
+  cameraGoal.position.copy(fit.position);
+  cameraGoal.target.copy(orbitTarget(fit));
+}
+/** Eases the camera and its orbit target toward the framing of the site and the ball, or after the ball (see FOLLOW_EDGE). */
 function followAction(): void {
   const controls = app.controls;
+  const now = performance.now() / 1000;
+  const dt = cameraTime < 0 ? 0 : Math.min(0.1, Math.max(0, now - cameraTime));
+  cameraTime = now;
   if (controls === null || !renderer.drawnPosition(handles.ball, followBall)) return;
+  // A press aiming a swing, or the ball in the hand: the camera stops, so what is pressed stays put.
+  if (aiming.piece !== 0 || drag.body !== 0) {
+    cameraVelocity.set(0, 0, 0);
+    targetVelocity.set(0, 0, 0);
+    return;
+  }
+  const c = handles.controls;
   if (home !== null) {
-    let inside = inHomeView(followBall);
+    let inside = ballInFraming(followBall, home.position, home.target);
     // Come to rest outside the framing (past a structure at its edge): framed again, from the same
     // side, with the ball where it lies (the camera eases there).
     if (
       !inside &&
-      handles.controls.moves.length === 0 &&
-      handles.controls.goal === null &&
-      drag.body === 0 &&
-      Math.hypot(followBall[0]! - rehomedAt[0]!, followBall[1]! - rehomedAt[1]!, followBall[2]! - rehomedAt[2]!) > 1
+      c.moves.length === 0 &&
+      c.goal === null &&
+      Math.hypot(followBall[0]! - rehomedAt[0]!, followBall[1]! - rehomedAt[1]!, followBall[2]! - rehomedAt[2]!) > 1 &&
+      swayAmplitude(shell.world, handles) < 0.3
     ) {
       rehome(followBall);
       inside = true;
     }
-    if (inside) {
-      if (app.camera.position.distanceToSquared(home.position) + controls.target.distanceToSquared(home.target) < 1e-8) return;
-      app.camera.position.lerp(home.position, RETURN);
-      controls.target.lerp(home.target, RETURN);
-      return;
+    widen.insideSince = inside ? (widen.insideSince < 0 ? now : widen.insideSince) : -1;
+    if (widen.on) {
+      if (inside && c.moves.length === 0 && now - widen.insideSince > RETURN_DELAY) {
+        widen.on = false;
+        widen.balls.length = 0;
+      } else if (!inside && now - widen.at > WIDEN_EVERY && !ballInFraming(followBall, cameraGoal.position, cameraGoal.target))
+        widenFor(followBall, now);
+    } else if (!inside) {
+      widen.on = true;
+      widenFor(followBall, now);
     }
+    if (!widen.on) {
+      cameraGoal.position.copy(home.position);
+      cameraGoal.target.copy(home.target);
+    }
+    if (
+      app.camera.position.distanceToSquared(cameraGoal.position) + controls.target.distanceToSquared(cameraGoal.target) < 1e-8 &&
+      cameraVelocity.lengthSq() + targetVelocity.lengthSq() < 1e-8
+    )
+      return;
+    smoothDamp(app.camera.position, cameraGoal.position, cameraVelocity, dt);
+    smoothDamp(controls.target, cameraGoal.target, targetVelocity, dt);
+    return;
   }
+  // The player's own view: drawn sideways after a ball past its edge, the velocity eased.
   followNdc.set(followBall[0]!, followBall[1]!, followBall[2]!).project(app.camera);
-  if (Math.abs(followNdc.x) < FOLLOW_EDGE && Math.abs(followNdc.y) < FOLLOW_EDGE && followNdc.z < 1) return;
-  // On a swing at a target, between the ball and the target (toward the mast, a phone's narrow view
-  // lost the target as the ball ran at it); else between the mast and the ball.
-  if (aimed !== 0 && isAlive(shell.world, aimed)) {
-    const P = shell.world.components.Position;
-    followGoal.set(0.5 * (followBall[0]! + P.x[aimed]!), 2.5, 0.5 * (followBall[2]! + P.z[aimed]!));
-  } else followGoal.set(0.6 * followBall[0]!, 2.5, 0.6 * followBall[2]!);
-  followStep.subVectors(followGoal, controls.target).multiplyScalar(FOLLOW);
-  controls.target.add(followStep);
-  app.camera.position.add(followStep);
+  followWant.set(0, 0, 0);
+  if (!(Math.abs(followNdc.x) < FOLLOW_EDGE && Math.abs(followNdc.y) < FOLLOW_EDGE && followNdc.z < 1)) {
+    // On a swing at a target, between the ball and the target (toward the mast, a phone's narrow view
+    // lost the target as the ball ran at it); else between the mast and the ball.
+    if (aimed !== 0 && isAlive(shell.world, aimed)) {
+      const P = shell.world.components.Position;
+      followGoal.set(0.5 * (followBall[0]! + P.x[aimed]!), 2.5, 0.5 * (followBall[2]! + P.z[aimed]!));
+    } else followGoal.set(0.6 * followBall[0]!, 2.5, 0.6 * followBall[2]!);
+    followWant.subVectors(followGoal, controls.target).multiplyScalar(FOLLOW_RATE);
+  }
+  targetVelocity.lerp(followWant, 1 - Math.exp(-dt / FOLLOW_EASE));
+  if (targetVelocity.lengthSq() < 1e-8) return;
+  controls.target.addScaledVector(targetVelocity, dt);
+  app.camera.position.addScaledVector(targetVelocity, dt);
 }
 
 // Where a click sent the hook: a ring on the ground until the hook is there.
@@ -1301,6 +1421,18 @@ function pressAt(ndcX: number, ndcY: number): 'ball' | 'aim' | 'hook' | 'none' {
   const onGround = raycaster.ray.intersectPlane(ground, groundHit) !== null;
   if (target === 0 && onGround) target = pieceNearGround(groundHit.x, groundHit.z);
   if (target !== 0) return beginAim(target, ndcX, ndcY);
+  // On a touch screen, with a piece armed (tapped once): a press on open ground aims at it from
+  // there, so the finger pulls back away from the piece and its arrow instead of covering them.
+  if (touch && onGround && aiming.armed !== 0 && isAlive(shell.world, aiming.armed)) {
+    aiming.piece = aiming.armed;
+    aiming.x0 = ndcX;
+    aiming.y0 = ndcY;
+    aiming.dragged = false;
+    aiming.remote = true;
+    aiming.gx = groundHit.x;
+    aiming.gz = groundHit.z;
+    return 'aim';
+  }
   if (!onGround) return 'none';
   handles.controls.moves = [];
   handles.controls.goal = [groundHit.x, groundHit.z];
@@ -1338,8 +1470,10 @@ function pieceNearGround(x: number, z: number): number {
  * pointer has moved past TAP_PX since (a drag), and the swing the arrow shows: the direction the ball
  * travels as it reaches the piece (rad, as ./scene SwingRequest) and the pull's power in
  * [MIN_POWER, 1]. `armed` is the piece a tap without a drag marked (a second tap on it swings as shown).
+ * `remote`: the press began on open ground at (gx, gz), m, aiming at the armed piece from there
+ * (touch only; see pressAt): the pull across the ground from that point sets the direction.
  */
-const aiming = { piece: 0, x0: 0, y0: 0, dragged: false, direction: 0, power: 0, armed: 0 };
+const aiming = { piece: 0, x0: 0, y0: 0, dragged: false, direction: 0, power: 0, armed: 0, remote: false, gx: 0, gz: 0 };
 /** CSS px a press must move to be a drag that aims (less is a tap). */
 const TAP_PX = 10;
 /** CSS px of pull for a full-power swing; the weakest counts as MIN_POWER. */
@@ -1365,6 +1499,7 @@ function beginAim(piece: number, ndcX: number, ndcY: number): 'aim' {
   aiming.x0 = ndcX;
   aiming.y0 = ndcY;
   aiming.dragged = false;
+  aiming.remote = false;
   if (aiming.armed !== piece) {
     const P = shell.world.components.Position;
     aiming.direction = Math.atan2(P.z[piece]! - P.z[handles.ball]!, P.x[piece]! - P.x[handles.ball]!);
@@ -1389,8 +1524,11 @@ function aimDrag(ndcX: number, ndcY: number): void {
   const tx = P.x[aiming.piece]!,
     tz = P.z[aiming.piece]!;
   // The pull across the ground; over the horizon, the screen's pull turned into the ground's axes.
-  if (raycaster.ray.intersectPlane(ground, groundHit) !== null && Math.hypot(groundHit.x - tx, groundHit.z - tz) > 0.2)
-    aiming.direction = Math.atan2(tz - groundHit.z, tx - groundHit.x);
+  // From a press on open ground (remote), the ball flies the way the finger pulled from there.
+  const fromX = aiming.remote ? aiming.gx : tx,
+    fromZ = aiming.remote ? aiming.gz : tz;
+  if (raycaster.ray.intersectPlane(ground, groundHit) !== null && Math.hypot(groundHit.x - fromX, groundHit.z - fromZ) > 0.2)
+    aiming.direction = Math.atan2(fromZ - groundHit.z, fromX - groundHit.x);
   aiming.power = Math.min(1, Math.max(MIN_POWER, pull / FULL_PULL_PX));
 }
 /**
@@ -1403,6 +1541,17 @@ function releaseAt(ndcX: number, ndcY: number): 'swing' | 'armed' | 'none' {
   if (piece === 0) return 'none';
   aimDrag(ndcX, ndcY);
   aiming.piece = 0;
+  const remote = aiming.remote;
+  aiming.remote = false;
+  if (remote && !aiming.dragged) {
+    // A tap on open ground with a piece armed: the hook goes there, as without one.
+    aiming.armed = 0;
+    handles.controls.moves = [];
+    handles.controls.goal = [aiming.gx, aiming.gz];
+    aimed = 0;
+    hintUntil = shell.world.time + HINT_SHOWN;
+    return 'none';
+  }
   if (!aiming.dragged && aiming.armed !== piece) {
     aiming.armed = piece;
     light(piece);
@@ -2021,7 +2170,9 @@ function hintText(): string {
   if (outOfSwings()) return '';
   if (shell.world.time < notice.until) return notice.text;
   if (aiming.armed !== 0)
-    return `Drag back from ${pieceName(aiming.armed)} to aim: the ball flies along the arrow, harder the longer the pull. ${tapWord} it again to swing as shown`;
+    return touch
+      ? `Drag back from ${pieceName(aiming.armed)} or from any open ground to aim: the ball flies along the arrow. Tap it again to swing as shown`
+      : `Drag back from ${pieceName(aiming.armed)} to aim: the ball flies along the arrow, harder the longer the pull. ${tapWord} it again to swing as shown`;
   if (shell.world.time < hintUntil) return `That moves the hook. Drag back from a block and let go to swing the ball at it`;
   if (c.released === 0 && c.moves.length === 0 && aimed === 0)
     return `Drag back from a block and let go: the ball swings into it along the arrow`;

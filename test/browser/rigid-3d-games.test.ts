@@ -290,13 +290,13 @@ describe('3D rigid-body games in headless Chromium', () => {
     const marks = await g.page.evaluate(() => (window.game as unknown as Marks).marks());
     expect(used).toBe(1);
     expect([tower.pressed, again.pressed, wall.pressed]).toEqual(['swing', 'swing', 'swing']);
-    expect(await g.page.evaluate(() => (window.game as unknown as Swings).swings())).toEqual({ used: 1, budget: 4, stars: 0 });
+    expect(await g.page.evaluate(() => (window.game as unknown as Swings).swings())).toEqual({ used: 1, budget: 5, stars: 0 });
     // (A tower's blocks stand over each other: its ring stands at the one tapped, on the tower's axis.)
     expect(Math.hypot(ring![0]! - tower.at[0]!, ring![1]! - tower.at[1]!)).toBeLessThan(0.1);
     expect(Math.hypot(marks.ring![0]! - tower.at[0]!, marks.ring![1]! - tower.at[1]!)).toBeLessThan(0.1);
     expect(marks.old).toBe(true);
     await g.frames(8);
-    expect(await g.page.locator('[data-hud="wrecking-ball"]').textContent()).toContain('swings left 3/4');
+    expect(await g.page.locator('[data-hud="wrecking-ball"]').textContent()).toContain('swings left 4/5');
     expect(await g.page.locator('[data-hud="wrecking-ball"]').textContent()).toContain('new target, same swing');
     expect(await hint.textContent()).toBe('New target: the wall instead of the tower (same swing)');
     // 0.6 s on (the marks slide for 0.5 s) the swing's ring stands at the wall.
@@ -314,7 +314,7 @@ describe('3D rigid-body games in headless Chromium', () => {
     expect(slid.kind).toBe('wall');
     expect(Math.hypot(slid.ring![0]! - slid.at[0]!, slid.ring![1]! - slid.at[1]!)).toBeLessThan(0.1);
     expect(Math.hypot(slid.ring![0]! - wall.at[0]!, slid.ring![1]! - wall.at[1]!)).toBeLessThan(2.5);
-    // Once the ball is on its run (that swing counted: 2 of 4 used), a drag at another target is let
+    // Once the ball is on its run (that swing counted: 2 of 5 used), a drag at another target is let
     // go: no swing used, now or when the run ends, and the hint says to wait.
     type Run = { controls: { moves: Array<{ run?: boolean }> } };
     const onRun = await g.page.evaluate(() => {

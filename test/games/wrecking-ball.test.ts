@@ -72,10 +72,10 @@ describe('wrecking-ball scene', () => {
   it('the clear target counts the pieces that stood above the ground, not the bottom row', () => {
     // A playtester flattened level 1 and stayed at 16 of the 19 then needed (70% of 27): its lowest
     // bricks, logs and blocks lay where they stood. The target is a share of the raised pieces, so
-    // the raised pieces alone can clear any level: 65% on level 1 (at 45% a careless swing cleared it
-    // for three stars, at 50% a swing aimed at the plank stack did), then 70% and 72% (see
-    // clearShare, swingPar).
-    expect([1, 2, 3, 4, 5, 9].map(clearShare)).toEqual([0.65, 0.7, 0.7, 0.72, 0.72, 0.72]);
+    // the raised pieces alone can clear any level: 75% on levels 1 to 3 (at 45% a careless swing
+    // cleared level 1 for three stars, at 50% a swing aimed at the plank stack did, at 65% a
+    // stranger's first drag did), then 76% (see clearShare, swingPar).
+    expect([1, 2, 3, 4, 5, 9].map(clearShare)).toEqual([0.75, 0.75, 0.75, 0.76, 0.76, 0.76]);
     expect(() => clearShare(0)).toThrow(/level must be an integer >= 1, got 0/);
     for (let level = 1; level <= 5; level++) {
       const { h } = build(level);
@@ -83,8 +83,8 @@ describe('wrecking-ball scene', () => {
       expect(onGround).toBeGreaterThan(0);
       expect(clearTarget(h.pieces, level)).toBe(Math.ceil(clearShare(level) * (h.pieces.length - onGround)));
     }
-    // Level 1: 27 pieces, 6 of them on the ground; 14 of the 21 raised clear it.
-    expect(clearTarget(build(1).h.pieces, 1)).toBe(14);
+    // Level 1: 27 pieces, 6 of them on the ground; 16 of the 21 raised clear it.
+    expect(clearTarget(build(1).h.pieces, 1)).toBe(16);
   });
 
   it('keeps every structure standing without a hit, and slews with the mass of a crane: a ramp up, a coast, a brake', () => {
@@ -321,13 +321,15 @@ describe('wrecking-ball scene', () => {
     }
   });
 
-  it('a first-time player tapping the top of each structure in turn clears level 1 within its swings', () => {
+  // Up to 30 s of play: a minute and more on a loaded machine (the default 60 s timed out there).
+  it('a first-time player tapping the top of each structure in turn clears level 1 within its swings', { timeout: 300_000 }, () => {
     // Each tap aims at the highest standing piece of the next structure (pieces whose start centres
     // lie within 2.5 m of each other) that still has one, 2 s after the last swing's moves are over
     // (once the count has settled): what the eye goes to, not the best plan. At 70% of the raised
     // pieces (15) this took 5 swings (5, 11, 11, 14, 15 down), one more than the level allowed: a
     // first-time player lost level 1 twice. At 45% (10) the script's way of this
     // (scripts/wrecking-ball-par.mjs, first taps a few steps apart) takes 2 swings: 5 down, then 14 to 16.
+    // At 75% (16, with 5 swings) the script's way takes 4: 2, 10, 15, 25 down.
     const { world, h } = build(1);
     const groups: (typeof h.pieces)[] = [];
     for (const p of h.pieces) {
@@ -392,11 +394,11 @@ describe('wrecking-ball scene', () => {
     expect(() => tally.add(0, 0, 0, -1, 0)).toThrow(/points must be >= 0, got -1/);
   });
 
-  it('swings and stars: level 1 allows 4 (3 stars in 2), levels 2 and 3 5 (in 2), later 6 (in 3); none uncleared', () => {
+  it('swings and stars: levels 1 to 3 allow 5 (3 stars in 2), later 6 (in 3); none uncleared', () => {
     // Pars of 3 on level 3 and 4 on level 4 gave careless games of scripts/wrecking-ball-par.mjs
     // three stars in 6 and 9 of 9; the pars (with clearShare's growing shares) ask for aim. A par
     // of 1 on level 1 gave a stranger three stars for the first swing: it is 2 (at 65 %).
-    expect([1, 2, 3, 4, 5, 12].map(swingBudget)).toEqual([4, 5, 5, 6, 6, 6]);
+    expect([1, 2, 3, 4, 5, 12].map(swingBudget)).toEqual([5, 5, 5, 6, 6, 6]);
     expect([1, 2, 3, 4, 5, 12].map(swingPar)).toEqual([2, 2, 2, 3, 3, 3]);
     expect([1, 2, 3, 4].map((n) => swingStars(n, true, 1))).toEqual([3, 3, 2, 1]);
     expect([1, 2, 3, 4, 5].map((n) => swingStars(n, true, 2))).toEqual([3, 3, 2, 1, 1]);
