@@ -249,6 +249,12 @@ const FASTER_KEYS = new Set(['x', 'shift', '+', '=']),
 let throttlePressedAt = -Infinity;
 /** When the throttle last moved by Faster or Slower, ms (performance.now): its note shows THROTTLE_NOTE_MS after. */
 let throttleShownAt = -Infinity;
+/**
+ * Every step's [game time s, bank degrees (right +), keys' bank input, stick's bank input] while a
+ * test traces the bank (`window.game.traceBank`), else null: a let-go is read to the step, whatever
+ * the frame rate.
+ */
+let bankTrace: [number, number, number, number][] | null = null;
 /** The on-screen stick's deflection (x right, y up, in [-1, 1]). */
 const stickInput = { x: 0, y: 0 };
 /** The climb / dive and bank keys (./assist.ts rampKey ramps them step by step). */
@@ -427,6 +433,7 @@ function stepWorld(world: PhysicsWorld): void {
   }
   // Warnings: the wing within 3 degrees of the stall, or the ground less than 8 s away at this sink rate.
   const after = flightState(world, e);
+  if (bankTrace) bankTrace.push([world.time, (after.bank * 180) / Math.PI, keyInput.roll, stickInput.x]);
   motion.bank = after.bank;
   motion.rollRate = after.rollRate;
   motion.pathRate = (after.path - s.path) / dt;
@@ -1837,6 +1844,15 @@ shell.expose({
     const r = stickResponse(clamp1(x), clamp1(y));
     stickInput.x = r.x;
     stickInput.y = r.y;
+  },
+  /**
+   * Starts recording every step's [game time s, bank degrees (right +), keys' bank input in [-1, 1],
+   * stick's bank input in [-1, 1]] (from the next step on, dropping any earlier record) and returns
+   * the record, which grows while the flight goes on; `traceBank(false)` stops it (and returns null).
+   */
+  traceBank: (on: boolean): [number, number, number, number][] | null => {
+    bankTrace = on ? [] : null;
+    return bankTrace;
   },
   /** The pilot's stick input now (after the response curve), x right, y up. */
   stickInput: () => ({ ...stickInput }),

@@ -38,6 +38,33 @@ const COUNT = 8;
 /** Segments in the scene (games/bouncing-balls/scene.ts SEGMENTS) plus the hoop's backboard and rim (hoop.ts). */
 const SEGMENTS = 3 + 2;
 
+/**
+ * Runs the game's steps in the page (paused, as the N key does) until `until(arg)` holds, at most 30 s
+ * of game time, then, unless `resume` is false, lets it run on, and waits for 2 frames (the status row
+ * and the sprites are drawn from the state on each frame). What the game does in those steps is what
+ * its frames would have run, without waiting seconds of game time in real time.
+ * @throws Error if `until` does not hold within 30 s of game time.
+ */
+async function stepTo<A>(g: GamePage, until: (arg: A) => unknown, arg: A, { resume = true } = {}): Promise<void> {
+  const done = await g.evaluate(
+    ([src, a, resume]) => {
+      const game = window.game as unknown as { paused: boolean; step(): void; world: { time: number } };
+      // biome-ignore lint/security/noGlobalEval: the predicate is this file's own function, passed as its source
+      const test = eval(`(${src})`) as (a: unknown) => unknown;
+      const end = game.world.time + 30;
+      game.paused = true;
+      while (!test(a) && game.world.time < end) game.step();
+      const ok = !!test(a);
+      if (resume) game.paused = false;
+      return ok;
+    },
+    [until.toString(), arg as unknown, resume] as const,
+    `stepping the game until ${until.toString().slice(0, 80)}`,
+  );
+  if (!done) throw new Error(`${g.page.url()}: ${until.toString()} did not hold within 30 s of game time`);
+  await g.frames(2);
+}
+
 function balls(g: GamePage) {
   return g.page.evaluate(() => {
     const game = window.game as unknown as BallsGame;
@@ -680,8 +707,9 @@ describe('bouncing balls: the hoop game', () => {
     });
     await g.frames(60);
     expect(await g.page.evaluate(() => (window.game as unknown as HoopGame).round())).toMatchObject({ score: 1, shots: shots });
-    // The 6 s round ends: time up, the Play-again button, which starts a new round keeping the best.
-    await g.waitFor(() => (window.game as unknown as HoopGame).round().phase === 'over', null, 20_000);
+    // The 6 s round ends (stepped in the page): time up, the Play-again button, which starts a new
+    // round keeping the best.
+    await stepTo(g, () => (window.game as unknown as HoopGame).round().phase === 'over', null);
     expect(await status.textContent()).toMatch(/Time!/);
     // The end card over the box: the round's points, its baskets and the best.
     const card = await g.page.evaluate(() => {
@@ -1075,8 +1103,9 @@ describe('bouncing balls: the hoop game', () => {
     });
     await expect.poll(hint).toMatch(/^Too high: throw from below the orange line/);
     // 6 s of world time later (more than one turn of the teaching hints, 5 s; before, the reminder
-    // gave way to them after 2.5 s) the reminder is still there.
-    await g.waitFor((t) => (window.game as unknown as { world: { time: number } }).world.time > t + 6, t0, 30_000);
+    // gave way to them after 2.5 s) the reminder is still there. The 6 s are stepped in the page
+    // (the status row is made from the game's state on each frame drawn after).
+    await stepTo(g, (t) => (window.game as unknown as { world: { time: number } }).world.time > t + 6, t0);
     expect(await hint()).toMatch(/^Too high: throw from below the orange line/);
     // A throw from below the line ends it.
     await g.page.evaluate(() => (window.game as unknown as HoopGame).shoot(2, 1.5, 0, 3));
@@ -1506,7 +1535,7 @@ describe('bouncing balls: cancelling, full-power pulls and the end of a round mi
   it('desktop 1280 x 800: from the lowest heap ball, a pull straight down past the viewport (captured) throws at the full speed', async () => {
     const g = await h.openGame('bouncing-balls', { viewport: { width: 1280, height: 800 }, query: { count: 8 } });
     // The heap settles, then the lowest ball is pressed at its centre and pulled down to the viewport's last row.
-    await g.waitFor(() => (window.game as unknown as AimGame).world.time > 3, null, 30_000);
+    await stepTo(g, () => (window.game as unknown as AimGame).world.time > 3, null, { resume: false });
     const low = await g.page.evaluate(() => {
       const game = window.game as unknown as AimGame;
       game.paused = true;
@@ -1541,7 +1570,7 @@ describe('bouncing balls: cancelling, full-power pulls and the end of a round mi
     // of room to their right. The heap settles, then the rightmost ball with 45 px or more of room
     // (main.ts MIN_FULL_PULL, 40 px, is the shortest full pull) is pressed at its centre and pulled
     // right and a little down (20 degrees) to the viewport's last column.
-    await g.waitFor(() => (window.game as unknown as AimGame).world.time > 3, null, 30_000);
+    await stepTo(g, () => (window.game as unknown as AimGame).world.time > 3, null, { resume: false });
     const right = await g.page.evaluate(() => {
       const game = window.game as unknown as AimGame;
       game.paused = true;
@@ -1620,7 +1649,7 @@ describe('bouncing balls: cancelling, full-power pulls and the end of a round mi
 
   it('phone 390 x 844, touch: a tap on the stand under the floor does nothing; a pull from a heap ball by the side gives the thumb room (no full speed from a 40 px pull)', async () => {
     const g = await h.openGame('bouncing-balls', { viewport: { width: 390, height: 844 }, touch: true, query: { count: 20 } });
-    await g.waitFor(() => (window.game as unknown as AimGame).world.time > 3, null, 30_000);
+    await stepTo(g, () => (window.game as unknown as AimGame).world.time > 3, null, { resume: false });
     const n0 = await g.page.evaluate(() => {
       const game = window.game as unknown as AimGame;
       game.paused = true;
@@ -1733,14 +1762,15 @@ describe('bouncing balls: cancelling, full-power pulls and the end of a round mi
     expect((await aimState(g)).aiming).toBe(true);
     // The clock reaches 0 under the pull: the round waits for this last throw (it used to end the aim,
     // and the throw being aimed was lost).
-    const shots = await g.waitFor(
+    await stepTo(
+      g,
       () => {
         const game = window.game as unknown as AimGame;
-        return game.round().timeLeft === 0 && game.lastThrow().aiming ? game.round().shots : null;
+        return game.round().timeLeft === 0 && game.lastThrow().aiming;
       },
       null,
-      30_000,
     );
+    const shots = await g.page.evaluate(() => (window.game as unknown as AimGame).round().shots);
     await g.frames(3);
     const waiting = await g.page.evaluate(() => {
       const game = window.game as unknown as AimGame;

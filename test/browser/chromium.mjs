@@ -13,7 +13,12 @@ export const repoRoot = resolve(dirname(fileURLToPath(import.meta.url)), '..', '
 
 /**
  * Chromium flags: no sandbox (containers), nothing fetched in the background, WebGL through
- * SwiftShader (software, so it works without a GPU). Headless is set by `launchChromium`.
+ * SwiftShader (software, so it works without a GPU), and 2D canvases drawn in the page's own process
+ * (Skia on the CPU) rather than through the GPU process: with a software GPU an "accelerated" 2D
+ * canvas is drawn by SwiftShader in the GPU process too, and every read of it (getImageData) waits
+ * for the GPU process's queue, which the page's WebGL shaders and frames fill. pixi.js reads one at
+ * import (its tint check, a 6 x 1 canvas's getImageData): 0.8-1.4 s of each pixi page's load on a
+ * loaded machine. What a page draws is the same either way. Headless is set by `launchChromium`.
  */
 export const CHROMIUM_ARGS = Object.freeze([
   '--no-sandbox',
@@ -22,6 +27,7 @@ export const CHROMIUM_ARGS = Object.freeze([
   '--disable-sync',
   '--use-angle=swiftshader',
   '--enable-unsafe-swiftshader',
+  '--disable-accelerated-2d-canvas',
 ]);
 
 /**

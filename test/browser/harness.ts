@@ -98,6 +98,13 @@ export const STUCK_MS = 15_000;
  */
 const LOG = process.env.BITPHYSICS_TEST_LOG === '1';
 
+/**
+ * With the environment variable BITPHYSICS_CPU_THROTTLE=<rate> (a number > 1) every page's main thread
+ * runs that many times slower (CDP Emulation.setCPUThrottlingRate), to imitate a loaded machine when
+ * looking for a case that fails only under load.
+ */
+const CPU_THROTTLE = Number(process.env.BITPHYSICS_CPU_THROTTLE ?? 1);
+
 function log(line: string): void {
   console.log(`[harness ${new Date().toISOString().slice(11, 23)}] ${line}`);
 }
@@ -215,6 +222,10 @@ export class Harness {
     );
     // Every playwright wait (goto, locators, waitForFunction) gives up with a message after this long.
     page.setDefaultTimeout(PAGE_TIMEOUT_MS);
+    if (CPU_THROTTLE > 1) {
+      const cdp = await context.newCDPSession(page);
+      await cdp.send('Emulation.setCPUThrottlingRate', { rate: CPU_THROTTLE });
+    }
     const gp = new GamePage(context, page);
     this.pages.add(gp);
     // A page opened inside a test is closed when that test ends, passed, failed or timed out: a page

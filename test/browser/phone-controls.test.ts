@@ -205,9 +205,9 @@ describe('phone controls', () => {
     await g.waitFor(() => (window.game as unknown as Fly).instruments().roll < -30 || null, null, 60_000);
     await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
     await cdp.detach();
-    const { rolledOn, levelIn } = await afterRelease(g);
-    expect(rolledOn).toBeLessThan(5);
-    expect(levelIn).toBeLessThan(1.3);
+    const { rolledOn, levelIn, trace } = await afterRelease(g);
+    expect(rolledOn, trace).toBeLessThan(5);
+    expect(levelIn, trace).toBeLessThan(1.3);
     // A tap of Faster: the note and the readout, read in one frame, give the same engine figure.
     const faster = (await g.page.getByRole('button', { name: 'faster', exact: true }).boundingBox())!;
     await g.page.touchscreen.tap(faster.x + faster.width / 2, faster.y + faster.height / 2);

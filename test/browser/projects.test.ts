@@ -1035,34 +1035,53 @@ describe('projects', () => {
     }
     // A bank held from level flight: the path marker moves on the screen the way of the bank, 10 px
     // within 1 s of game time, never the other way first (it slid 34 px the wrong way first, as the
-    // chase camera swung with the bank). Read every drawn frame, and only those: a frame the pacer
-    // does not draw (the software GPU behind, under load) leaves the marker where it was, and such
-    // frames read as a marker stuck for up to half a second while the key's input grew.
+    // chase camera swung with the bank). The flight is paused and stepped 2 steps (1/30 s) at a time,
+    // each time up to a drawn frame that placed the marker for that moment: the chase camera eases by
+    // game time, so this is the flight at 30 frames a second whatever the load (flown in real time on
+    // a loaded machine, the software GPU drew a frame every 0.3 s or less, and a frame the pacer does
+    // not draw leaves the marker where it was).
+    type Row = { t: number; x: number; k: number };
+    /**
+     * Steps the paused flight 2 steps at a time, recording the marker on a drawn frame after each:
+     * `sign` 0, two records (the base); else until the marker is 10 px the way `sign` from `x0` (what
+     * is checked below) or the game time is 1.2 s past `t0`.
+     */
+    const sample = (sign: number, x0 = 0, t0 = 0) =>
+      g.evaluate(
+        async ([sign, x0, t0]) => {
+          const w = window.game as unknown as Flight;
+          const log: Row[] = [];
+          for (let n = 0; n < 90; n++) {
+            w.step();
+            w.step();
+            let m = w.pathMarker();
+            for (let f = 0; !(m.visible && m.drawnAt === w.world.time); f++) {
+              if (f > 1200) throw new Error(`no frame drew the path marker at ${w.world.time} s`);
+              await new Promise<number>((r) => requestAnimationFrame(r));
+              m = w.pathMarker();
+            }
+            log.push({ t: w.world.time, x: m.x, k: w.keyInput().roll });
+            if (sign === 0 ? log.length >= 2 : sign! * (m.x - x0!) >= 10 || w.world.time - t0! > 1.2) break;
+          }
+          return log;
+        },
+        [sign, x0, t0],
+        'stepping the flight and reading the path marker',
+        120_000,
+      );
     for (const key of ['ArrowRight', 'ArrowLeft']) {
       await g.press('r');
       await g.page.keyboard.press('Space');
       await g.waitFor(() => (window.game as unknown as Flight).world.time > 1 && !(window.game as unknown as Flight).paused, null);
       await g.page.evaluate(() => {
-        const log: { t: number; x: number; k: number }[] = [];
-        (window as unknown as { markerLog: typeof log }).markerLog = log;
-        const tick = () => {
-          const w = window.game as unknown as Flight;
-          const m = w.pathMarker();
-          if (m.visible && m.drawnAt === w.world.time) log.push({ t: w.world.time, x: m.x, k: w.keyInput().roll });
-          if (log.length < 2000) requestAnimationFrame(tick);
-        };
-        requestAnimationFrame(tick);
+        (window.game as unknown as Flight).paused = true;
       });
-      // Two drawn frames before the key (the base to measure from).
-      await g.waitFor(() => (window as unknown as { markerLog: unknown[] }).markerLog.length >= 2 || null, null);
-      const t0 = await g.page.evaluate(() => (window.game as unknown as Flight).world.time);
-      await g.page.keyboard.down(key);
-      await g.waitFor((t) => (window.game as unknown as Flight).world.time > t + 1.5, t0, 60_000);
-      await g.page.keyboard.up(key);
-      const log = await g.page.evaluate(() =>
-        (window as unknown as { markerLog: { t: number; x: number; k: number }[] }).markerLog.splice(0),
-      );
       const sign = key === 'ArrowRight' ? 1 : -1;
+      const before = await sample(0);
+      await g.page.keyboard.down(key);
+      const held = await sample(sign, before[1]!.x, before[1]!.t);
+      await g.page.keyboard.up(key);
+      const log = [...before, ...held];
       const i0 = log.findIndex((r) => r.k !== 0);
       expect(i0).toBeGreaterThan(0);
       const base = log[i0 - 1]!;
@@ -1076,6 +1095,9 @@ describe('projects', () => {
       expect(after[m]!.t - base.t, trace).toBeLessThan(1);
       expect(Math.max(0, ...after.slice(0, m).map((r) => -sign * (r.x - base.x))), trace).toBeLessThan(5);
     }
+    await g.page.evaluate(() => {
+      (window.game as unknown as Flight).paused = false;
+    });
     // P pauses: the scene dims over the whole stage, "Paused" and how to resume low in it (under the aircraft); P again resumes.
     await g.page.keyboard.press('p');
     const shade = await pausedShade(g);
@@ -1469,9 +1491,9 @@ describe('projects', () => {
     await g.page.keyboard.down('ArrowLeft');
     await g.waitFor(() => (window.game as unknown as Flight).instruments().roll < -30 || null, null, 60_000);
     await g.page.keyboard.up('ArrowLeft');
-    const { rolledOn, levelIn } = await afterRelease(g);
-    expect(rolledOn).toBeLessThan(5);
-    expect(levelIn).toBeLessThan(1.3);
+    const { rolledOn, levelIn, trace } = await afterRelease(g);
+    expect(rolledOn, trace).toBeLessThan(5);
+    expect(levelIn, trace).toBeLessThan(1.3);
     // 500 m before ring 3, 60 m over the ground, sinking and ↓ held to dive: "PULL UP" shows (the
     // checks above run on every frame it shows).
     await place(2, 500, 0, 0);

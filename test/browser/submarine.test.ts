@@ -149,14 +149,20 @@ async function diveOnPhone(g: GamePage): Promise<void> {
     };
     requestAnimationFrame(frame);
   });
-  // The finger goes down at the bottom of the stick: full dive from the first touch.
+  // The finger goes down at the bottom of the stick: full dive from the first touch. The game time
+  // when the touch reaches the page is what the dive is timed from (not a reading before the touch
+  // is sent: on a loaded machine the game ran on 0.2-0.5 s while the touch was on its way).
   const stick = (await g.page.getByRole('slider', { name: 'stick: dive, rise, ahead, astern' }).boundingBox())!;
   const cdp = await g.page.context().newCDPSession(g.page);
-  const t0 = await g.page.evaluate(() => (window.game as unknown as SubOnPhone).world.time);
+  await g.page.evaluate(() => {
+    const w = window.game as unknown as SubOnPhone;
+    addEventListener('pointerdown', () => ((window as unknown as { touchAt?: number }).touchAt ??= w.world.time), { capture: true });
+  });
   await cdp.send('Input.dispatchTouchEvent', {
     type: 'touchStart',
     touchPoints: [{ x: stick.x + stick.width / 2, y: stick.y + stick.height - 14, id: 1 }],
   });
+  const t0 = await g.waitFor(() => (window as unknown as { touchAt?: number }).touchAt ?? null, null);
   // Held until 3.5 s of game time have passed (a slow machine runs fewer frames, not less game time).
   await g.waitFor((start) => (window.game as unknown as SubOnPhone).world.time > start + 3.5, t0, 60_000);
   await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
@@ -170,7 +176,8 @@ async function diveOnPhone(g: GamePage): Promise<void> {
       deep = after.find((p) => p.y <= y0 - 2);
     return { speed: speed ? speed.t - start : Number.NaN, deep: deep ? deep.t - start : Number.NaN, frames: after.length };
   }, t0);
-  // The touch reaches the game within a frame or two of game time (1/60 s each) after t0 is read.
+  // Within 0.5 s of game time of the touch, and a frame or two (1/60 s each) for the steps run
+  // with the touch's frame.
   expect(r.speed).toBeLessThan(0.5 + 2 / 60);
   expect(r.deep).toBeLessThan(3);
   // The gauges in the status row: their longest lines (a deep, fast, wrecked boat) still fit the
