@@ -1040,7 +1040,6 @@ for (const [device, options] of [
         hi = await toPage(g, basket.at[0]! + basket.width / 2 + 0.1, 0);
       const apart = b.x + b.width < lo.x - 40 || b.x > hi.x + 40;
       expect(apart, `${device}: button x ${b.x}-${b.x + b.width}, basket x ${lo.x}-${hi.x}`).toBe(true);
-      await g.page.screenshot({ path: `/tmp/rope-won-${device}.png` });
       await press(g.page, 'Next level ▶');
       await g.waitFor(() => (window.game as unknown as RopeLab).level() === 2, null);
       expect(await g.page.evaluate(() => (window.game as unknown as RopeLab).ids().ropes.length)).toBe(2);
