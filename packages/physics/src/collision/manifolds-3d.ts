@@ -44,12 +44,13 @@ export interface Manifold3DBuffer {
   /**
    * Per point: accumulated normal impulse (N s); effective mass along n (kg; rebuilt every step by the
    * solver's prepare, single precision: 1e-7 relative, less memory streamed each pass); approach speed
-   * at the start (m/s); largest normal impulse.
+   * at the start (m/s); 1 once the point has carried a normal impulse this step (> 0 after some pass),
+   * else 0.
    */
   ln: Float64Array;
   mn: Float32Array;
   vn0: Float64Array;
-  maxLn: Float64Array;
+  carried: Uint8Array;
   /**
    * Per row, the manifold's friction (solver/manifold-rows-3d.ts: one anchor a manifold): accumulated impulses
    * along t1 and t2 (N s) and about n (twist, N m s). Their effective masses and the twist arm are rebuilt
@@ -109,7 +110,7 @@ function createBuffer(n: number): Manifold3DBuffer {
     ln: f(p),
     mn: new Float32Array(p),
     vn0: f(p),
-    maxLn: f(p),
+    carried: new Uint8Array(p),
     ft1: f(n),
     ft2: f(n),
     ftw: f(n),

@@ -420,7 +420,7 @@ export function emit(
     buf.sep[q] = m.sep[k]!;
     buf.id[q] = m.id[k]!;
     buf.ln[q] = 0;
-    buf.maxLn[q] = 0;
+    buf.carried[q] = 0;
     if (reused) {
       // A reused manifold has the previous row's points in the same order (reuseManifold).
       buf.ln[q] = P.ln[4 * prev + k]!;

@@ -217,7 +217,7 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
   const sep = buf.sep,
     LN = buf.ln,
     MN = buf.mn,
-    MAX = buf.maxLn,
+    CARRIED = buf.carried,
     F = st.frictionJacobians,
     FV = st.frictionInv;
   const FT1 = buf.ft1,
@@ -365,8 +365,7 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
         const lam = Math.max(old - MN[q]! * ms * (vn + bias) - is * old, 0);
         const dl = lam - old;
         LN[q] = lam;
-        const mx = MAX[q]!;
-        MAX[q] = lam > mx ? lam : mx;
+        if (lam > 0) CARRIED[q] = 1;
         // Applied also when dl = 0 (it then adds zeros): a branch on dl !== 0 that the first rows V8 saw
         // never entered was compiled without type feedback, and its first push threw the code away.
         // Body row 0 (the static world) has zero inverse mass and inertia, and is never written back.
@@ -582,7 +581,7 @@ export function applyManifold3DRestitution(world: PhysicsWorld): void {
   const threshold = cs.settings.restitutionThreshold,
     elasticThreshold = cs.settings.elasticRestitutionThreshold;
   const VN0 = buf.vn0,
-    MAX = buf.maxLn,
+    CARRIED = buf.carried,
     LN = buf.ln,
     MN = buf.mn;
   // Which points bounce (approach past the threshold, impulse carried) does not change from pass to
@@ -611,7 +610,7 @@ export function applyManifold3DRestitution(world: PhysicsWorld): void {
       let bounces = false;
       for (let k = 0, m = buf.points[i]!; k < m; k++) {
         const q = 4 * i + k;
-        if (MAX[q] === 0) continue;
+        if (CARRIED[q] === 0) continue;
         const target = restitutionTarget(e, VN0[q]!, VN0[q]!, threshold, elasticThreshold);
         if (target < 0) continue;
         bounces = true;
