@@ -52,13 +52,12 @@ export interface Manifold3DBuffer {
   vn0: Float64Array;
   carried: Uint8Array;
   /**
-   * Per row, the manifold's friction (solver/manifold-rows-3d.ts: one anchor a manifold): accumulated impulses
-   * along t1 and t2 (N s) and about n (twist, N m s). Their effective masses and the twist arm are rebuilt
+   * Per row, the manifold's friction (solver/manifold-rows-3d.ts: one anchor a manifold), three numbers a
+   * row (one run of memory the solve reads and writes): accumulated impulses along t1 and t2 (N s) and
+   * about n (twist, N m s). Their effective masses and the twist arm are rebuilt
    * every step by the prepare, straight into the solve's head (solver/manifold-layout-3d.ts HEAD_MT1 ..).
    */
-  ft1: Float64Array;
-  ft2: Float64Array;
-  ftw: Float64Array;
+  ft: Float64Array;
   /**
    * Box-box rows (collision/shapes-3d.ts reuses them while the pair's relative pose barely changes): 1 when
    * the row carries the fields below, else 0. `relPose` (12 a row): B's centre in A's frame, m, then
@@ -111,9 +110,7 @@ function createBuffer(n: number): Manifold3DBuffer {
     mn: new Float32Array(p),
     vn0: f(p),
     carried: new Uint8Array(p),
-    ft1: f(n),
-    ft2: f(n),
-    ftw: f(n),
+    ft: f(3 * n),
     local: new Uint8Array(n),
     relPose: f(12 * n),
     localNormal: f(3 * n),

@@ -92,9 +92,9 @@ export function warmStartManifolds3D(world: PhysicsWorld): void {
     H = st.solveHead;
   const LN = buf.ln;
   for (let i = 0; i < buf.count; i++) {
-    const f1 = buf.ft1[i]!,
-      f2 = buf.ft2[i]!,
-      fw = buf.ftw[i]!;
+    const f1 = buf.ft[3 * i]!,
+      f2 = buf.ft[3 * i + 1]!,
+      fw = buf.ft[3 * i + 2]!;
     // Sum of the normal impulses and their angular parts on A and B.
     let sn = 0,
       ax = 0,
@@ -220,9 +220,7 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
     CARRIED = buf.carried,
     F = st.frictionJacobians,
     FV = st.frictionInv;
-  const FT1 = buf.ft1,
-    FT2 = buf.ft2,
-    FTW = buf.ftw;
+  const FT = buf.ft;
   // The manifold's own numbers from its head (HEAD_*), one run of memory a manifold.
   const H = st.solveHead;
   const IA = buf.ia,
@@ -288,7 +286,7 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
     // v_n + s / h_s >= (v_B - v_A) . n - |w_A| reach_A - |w_B| reach_B + s_low / h_s >= 0, so each row would
     // compute lambda = max(0 - m (v_n + s / h_s), 0) = 0 and change nothing (friction has no limit then).
     const minSep = H[h + HEAD_MIN_SEP]!;
-    if (minSep > 0 && FT1[i] === 0 && FT2[i] === 0 && FTW[i] === 0) {
+    if (minSep > 0 && FT[3 * i] === 0 && FT[3 * i + 1] === 0 && FT[3 * i + 2] === 0) {
       let idle = true;
       for (let k = 0; k < m; k++) {
         if (LN[4 * i + k] !== 0) {
@@ -407,9 +405,9 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
     let sumLn = 0;
     for (let k = 0; k < m; k++) sumLn += LN[4 * i + k]!;
     const limit = H[h + HEAD_MU]! * sumLn;
-    const o1 = FT1[i]!,
-      o2 = FT2[i]!,
-      ow = FTW[i]!;
+    const o1 = FT[3 * i]!,
+      o2 = FT[3 * i + 1]!,
+      ow = FT[3 * i + 2]!;
     // A manifold that pushes nothing (a speculative one) has no friction to solve.
     if (limit !== 0 || o1 !== 0 || o2 !== 0 || ow !== 0) {
       const t1x = H[h + HEAD_T1X]!,
@@ -447,8 +445,8 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
         l1 *= k;
         l2 *= k;
       }
-      FT1[i] = l1;
-      FT2[i] = l2;
+      FT[3 * i] = l1;
+      FT[3 * i + 1] = l2;
       const d1 = l1 - o1,
         d2 = l2 - o2;
       if (d1 !== 0 || d2 !== 0) {
@@ -484,7 +482,7 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
         ntl = -tl;
       let lw = ow - H[h + HEAD_MTW]! * ((wbx - wax) * nx + (wby - way) * ny + (wbz - waz) * nz);
       lw = lw > tl ? tl : lw < ntl ? ntl : lw;
-      FTW[i] = lw;
+      FT[3 * i + 2] = lw;
       const dw = lw - ow;
       if (dw !== 0) {
         if (iso) {
