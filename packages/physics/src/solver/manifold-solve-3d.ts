@@ -189,6 +189,9 @@ export function warmStartManifolds3D(world: PhysicsWorld): void {
   }
 }
 
+/** solveManifolds3D's mass and impulse scales of a row, filled at the start of each pass. */
+const SCALES = new Float64Array(8);
+
 /**
  * One pass over the rows: normal (soft with `useBias`, else relaxing), then the manifold's friction (t1, t2 and twist at its anchor).
  * @category Collision
@@ -228,7 +231,18 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
     PTS = buf.points,
     ISO = buf.iso;
   const invHs = 1 / hs,
-    negPush = -push;
+    negPush = -push,
+    biasOn = useBias ? 1 : 0;
+  // A row's mass and impulse scales, at scaleBase + 2 softRow: a speculative or relax row's (1, 0), then
+  // a soft row's, for a manifold of two moving bodies (scaleBase 0) and one against the static world (4).
+  SCALES[0] = 1;
+  SCALES[1] = 0;
+  SCALES[2] = sMass;
+  SCALES[3] = sImp;
+  SCALES[4] = 1;
+  SCALES[5] = 0;
+  SCALES[6] = rMass;
+  SCALES[7] = rImp;
   for (let i = 0, count = buf.count; i < count; i++) {
     const ka = IA[i]!,
       kb = IB[i]!,
@@ -240,8 +254,7 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
       nz = H[h + HEAD_NZ]!;
     const isRigid = ka === 0 || kb === 0;
     const biasRate = isRigid ? rBias : sBias,
-      massScale = isRigid ? rMass : sMass,
-      impScale = isRigid ? rImp : sImp;
+      scaleBase = isRigid ? 4 : 0;
     // Velocities of both bodies in locals for the manifold's rows (written back once at the end).
     let vax = sb[a + BS3_VX]!,
       vay = sb[a + BS3_VY]!,
@@ -317,7 +330,7 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
     // Normal rows swept until a flat hit is shared by the points as the exact solve shares it, not by the
     // order they are visited in (NORMAL_SWEEPS); a soft row ends the sweeps after the first.
     const sweeps = m === 1 ? 1 : NORMAL_SWEEPS;
-    let softMet = false;
+    let softMet = 0;
     // The sweep count goes up at the top of a sweep, not in a loop update the first sweep never reaches
     // (optimised code compiled before any second sweep was thrown away at the first hit).
     for (let sw = 0; ; ) {
@@ -344,16 +357,18 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
         // threw the optimised code away: 'insufficient type feedback'; the same numbers either way).
         const speculative = s * invHs,
           softBias = Math.max(biasRate * s, negPush);
-        let bias = 0,
-          ms = 1,
-          is = 0;
-        if (s > 0) bias = speculative;
-        else if (useBias) {
-          bias = softBias;
-          ms = massScale;
-          is = impScale;
-          softMet = true;
-        }
+        // Selected without a branch (which way it goes changes from point to point in a pile, and a
+        // mispredicted branch costs more than the row): speculative (s > 0) takes bias s / h_s and the
+        // plain mass, a soft row of a biased pass the soft bias and its mass and impulse scales, a relax
+        // row neither (the products with 0 and 1 give the selected numbers; a relax row's zero bias may be
+        // -0, which adds the same).
+        const specRow = +(s > 0),
+          softRow = +!(s > 0) & biasOn,
+          sel = scaleBase + 2 * softRow;
+        const bias = specRow * speculative + softRow * softBias,
+          ms = SCALES[sel]!,
+          is = SCALES[sel + 1]!;
+        softMet |= softRow;
         const vn =
           (vbx - vax) * nx +
           (vby - vay) * ny +
@@ -363,7 +378,7 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
         const lam = Math.max(old - MN[q]! * ms * (vn + bias) - is * old, 0);
         const dl = lam - old;
         LN[q] = lam;
-        if (lam > 0) CARRIED[q] = 1;
+        CARRIED[q] = CARRIED[q]! | +(lam > 0);
         // Applied also when dl = 0 (it then adds zeros): a branch on dl !== 0 that the first rows V8 saw
         // never entered was compiled without type feedback, and its first push threw the code away.
         // Body row 0 (the static world) has zero inverse mass and inertia, and is never written back.
@@ -399,7 +414,7 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
       const settled = change <= (first ? HIT_FRACTION : SWEEP_TOLERANCE) * total,
         slow = change * (mA + mB) <= SWEEP_SPEED,
         last = sw >= sweeps;
-      if (softMet || settled || slow || last) break;
+      if (softMet === 1 || settled || slow || last) break;
     }
     // Friction of the manifold at its anchor (t1, t2, then the twist about n), limited by mu sum(lambda_n).
     let sumLn = 0;
