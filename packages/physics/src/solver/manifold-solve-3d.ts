@@ -189,8 +189,24 @@ export function warmStartManifolds3D(world: PhysicsWorld): void {
   }
 }
 
-/** solveManifolds3D's mass and impulse scales of a row, filled at the start of each pass. */
+/** solveManifolds3D's mass and impulse scales of a row, filled at the start of each pass (fillScales). */
 const SCALES = new Float64Array(8);
+
+/**
+ * SCALES: a row's mass and impulse scales at scaleBase + 2 softRow, a speculative or relax row's (1, 0)
+ * then a soft row's, for a manifold of two moving bodies (scaleBase 0) and one against the static world
+ * (scaleBase 4), from this step's softness (`soft`, `rigid`).
+ */
+function fillScales(): void {
+  SCALES[0] = 1;
+  SCALES[1] = 0;
+  SCALES[2] = soft[1]!;
+  SCALES[3] = soft[2]!;
+  SCALES[4] = 1;
+  SCALES[5] = 0;
+  SCALES[6] = rigid[1]!;
+  SCALES[7] = rigid[2]!;
+}
 
 /**
  * One pass over the rows: normal (soft with `useBias`, else relaxing), then the manifold's friction (t1, t2 and twist at its anchor).
@@ -212,11 +228,7 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
   st.solveParity ^= useBias ? 1 : 0;
   const backward = st.solveParity === 1;
   const sBias = soft[0]!,
-    sMass = soft[1]!,
-    sImp = soft[2]!,
-    rBias = rigid[0]!,
-    rMass = rigid[1]!,
-    rImp = rigid[2]!;
+    rBias = rigid[0]!;
   const sep = buf.sep,
     LN = buf.ln,
     MN = buf.mn,
@@ -233,16 +245,7 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
   const invHs = 1 / hs,
     negPush = -push,
     biasOn = useBias ? 1 : 0;
-  // A row's mass and impulse scales, at scaleBase + 2 softRow: a speculative or relax row's (1, 0), then
-  // a soft row's, for a manifold of two moving bodies (scaleBase 0) and one against the static world (4).
-  SCALES[0] = 1;
-  SCALES[1] = 0;
-  SCALES[2] = sMass;
-  SCALES[3] = sImp;
-  SCALES[4] = 1;
-  SCALES[5] = 0;
-  SCALES[6] = rMass;
-  SCALES[7] = rImp;
+  fillScales();
   for (let i = 0, count = buf.count; i < count; i++) {
     const ka = IA[i]!,
       kb = IB[i]!,
