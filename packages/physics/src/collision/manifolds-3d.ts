@@ -44,20 +44,20 @@ export interface Manifold3DBuffer {
   /**
    * Per point: accumulated normal impulse (N s); effective mass along n (kg; rebuilt every step by the
    * solver's prepare, single precision: 1e-7 relative, less memory streamed each pass); approach speed
-   * at the start (m/s); largest normal impulse.
+   * at the start (m/s); 1 once the point has carried a normal impulse this step (> 0 after some pass),
+   * else 0.
    */
   ln: Float64Array;
   mn: Float32Array;
   vn0: Float64Array;
-  maxLn: Float64Array;
+  carried: Uint8Array;
   /**
-   * Per row, the manifold's friction (solver/manifold-rows-3d.ts: one anchor a manifold): accumulated impulses
-   * along t1 and t2 (N s) and about n (twist, N m s). Their effective masses and the twist arm are rebuilt
+   * Per row, the manifold's friction (solver/manifold-rows-3d.ts: one anchor a manifold), three numbers a
+   * row (one run of memory the solve reads and writes): accumulated impulses along t1 and t2 (N s) and
+   * about n (twist, N m s). Their effective masses and the twist arm are rebuilt
    * every step by the prepare, straight into the solve's head (solver/manifold-layout-3d.ts HEAD_MT1 ..).
    */
-  ft1: Float64Array;
-  ft2: Float64Array;
-  ftw: Float64Array;
+  ft: Float64Array;
   /**
    * Box-box rows (collision/shapes-3d.ts reuses them while the pair's relative pose barely changes): 1 when
    * the row carries the fields below, else 0. `relPose` (12 a row): B's centre in A's frame, m, then
@@ -109,10 +109,8 @@ function createBuffer(n: number): Manifold3DBuffer {
     ln: f(p),
     mn: new Float32Array(p),
     vn0: f(p),
-    maxLn: f(p),
-    ft1: f(n),
-    ft2: f(n),
-    ftw: f(n),
+    carried: new Uint8Array(p),
+    ft: f(3 * n),
     local: new Uint8Array(n),
     relPose: f(12 * n),
     localNormal: f(3 * n),

@@ -420,7 +420,7 @@ export function emit(
     buf.sep[q] = m.sep[k]!;
     buf.id[q] = m.id[k]!;
     buf.ln[q] = 0;
-    buf.maxLn[q] = 0;
+    buf.carried[q] = 0;
     if (reused) {
       // A reused manifold has the previous row's points in the same order (reuseManifold).
       buf.ln[q] = P.ln[4 * prev + k]!;
@@ -436,13 +436,13 @@ export function emit(
   }
   // The manifold's friction (one anchor a row) from the pair's last row while the normal barely turned (t1 follows n).
   if (prev >= 0 && P.nx[prev]! * nx + P.ny[prev]! * ny + P.nz[prev]! * nz > 0.99) {
-    buf.ft1[i] = P.ft1[prev]!;
-    buf.ft2[i] = P.ft2[prev]!;
-    buf.ftw[i] = P.ftw[prev]!;
+    buf.ft[3 * i] = P.ft[3 * prev]!;
+    buf.ft[3 * i + 1] = P.ft[3 * prev + 1]!;
+    buf.ft[3 * i + 2] = P.ft[3 * prev + 2]!;
   } else {
-    buf.ft1[i] = 0;
-    buf.ft2[i] = 0;
-    buf.ftw[i] = 0;
+    buf.ft[3 * i] = 0;
+    buf.ft[3 * i + 1] = 0;
+    buf.ft[3 * i + 2] = 0;
   }
 }
 

@@ -55,11 +55,11 @@ export function addContactEdges3D(world: PhysicsWorld, e: IslandEdges): void {
   const st = contact3DStateOf(world);
   if (st !== undefined) {
     const b = st.current,
-      maxLn = b.maxLn,
+      carried = b.carried,
       points = b.points;
     for (let i = 0, n = b.count; i < n; i++) {
       let pushed = false;
-      for (let k = 0, m = points[i]!; k < m; k++) if (maxLn[4 * i + k]! > 0) pushed = true;
+      for (let k = 0, m = points[i]!; k < m; k++) if (carried[4 * i + k] === 1) pushed = true;
       if (pushed) addIslandEdge(e, b.bodyA[i]!, b.bodyB[i]!, EdgeFlag.SUPPORTS | EdgeFlag.JOINS);
     }
   }

@@ -88,7 +88,7 @@ export function finishManifolds3D(world: PhysicsWorld): void {
     let touch = -1;
     for (let k = 0, m = buf.points[i]!; k < m; k++) {
       const q = 4 * i + k;
-      if (buf.maxLn[q]! > 0 || buf.sep[q]! < 0) {
+      if (buf.carried[q] === 1 || buf.sep[q]! < 0) {
         touch = q;
         break;
       }

@@ -92,9 +92,9 @@ export function warmStartManifolds3D(world: PhysicsWorld): void {
     H = st.solveHead;
   const LN = buf.ln;
   for (let i = 0; i < buf.count; i++) {
-    const f1 = buf.ft1[i]!,
-      f2 = buf.ft2[i]!,
-      fw = buf.ftw[i]!;
+    const f1 = buf.ft[3 * i]!,
+      f2 = buf.ft[3 * i + 1]!,
+      fw = buf.ft[3 * i + 2]!;
     // Sum of the normal impulses and their angular parts on A and B.
     let sn = 0,
       ax = 0,
@@ -189,6 +189,25 @@ export function warmStartManifolds3D(world: PhysicsWorld): void {
   }
 }
 
+/** solveManifolds3D's mass and impulse scales of a row, filled at the start of each pass (fillScales). */
+const SCALES = new Float64Array(8);
+
+/**
+ * SCALES: a row's mass and impulse scales at scaleBase + 2 softRow, a speculative or relax row's (1, 0)
+ * then a soft row's, for a manifold of two moving bodies (scaleBase 0) and one against the static world
+ * (scaleBase 4), from this step's softness (`soft`, `rigid`).
+ */
+function fillScales(): void {
+  SCALES[0] = 1;
+  SCALES[1] = 0;
+  SCALES[2] = soft[1]!;
+  SCALES[3] = soft[2]!;
+  SCALES[4] = 1;
+  SCALES[5] = 0;
+  SCALES[6] = rigid[1]!;
+  SCALES[7] = rigid[2]!;
+}
+
 /**
  * One pass over the rows: normal (soft with `useBias`, else relaxing), then the manifold's friction (t1, t2 and twist at its anchor).
  * @category Collision
@@ -209,20 +228,14 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
   st.solveParity ^= useBias ? 1 : 0;
   const backward = st.solveParity === 1;
   const sBias = soft[0]!,
-    sMass = soft[1]!,
-    sImp = soft[2]!,
-    rBias = rigid[0]!,
-    rMass = rigid[1]!,
-    rImp = rigid[2]!;
+    rBias = rigid[0]!;
   const sep = buf.sep,
     LN = buf.ln,
     MN = buf.mn,
-    MAX = buf.maxLn,
+    CARRIED = buf.carried,
     F = st.frictionJacobians,
     FV = st.frictionInv;
-  const FT1 = buf.ft1,
-    FT2 = buf.ft2,
-    FTW = buf.ftw;
+  const FT = buf.ft;
   // The manifold's own numbers from its head (HEAD_*), one run of memory a manifold.
   const H = st.solveHead;
   const IA = buf.ia,
@@ -230,7 +243,9 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
     PTS = buf.points,
     ISO = buf.iso;
   const invHs = 1 / hs,
-    negPush = -push;
+    negPush = -push,
+    biasOn = useBias ? 1 : 0;
+  fillScales();
   for (let i = 0, count = buf.count; i < count; i++) {
     const ka = IA[i]!,
       kb = IB[i]!,
@@ -242,8 +257,7 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
       nz = H[h + HEAD_NZ]!;
     const isRigid = ka === 0 || kb === 0;
     const biasRate = isRigid ? rBias : sBias,
-      massScale = isRigid ? rMass : sMass,
-      impScale = isRigid ? rImp : sImp;
+      scaleBase = isRigid ? 4 : 0;
     // Velocities of both bodies in locals for the manifold's rows (written back once at the end).
     let vax = sb[a + BS3_VX]!,
       vay = sb[a + BS3_VY]!,
@@ -288,7 +302,7 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
     // v_n + s / h_s >= (v_B - v_A) . n - |w_A| reach_A - |w_B| reach_B + s_low / h_s >= 0, so each row would
     // compute lambda = max(0 - m (v_n + s / h_s), 0) = 0 and change nothing (friction has no limit then).
     const minSep = H[h + HEAD_MIN_SEP]!;
-    if (minSep > 0 && FT1[i] === 0 && FT2[i] === 0 && FTW[i] === 0) {
+    if (minSep > 0 && FT[3 * i] === 0 && FT[3 * i + 1] === 0 && FT[3 * i + 2] === 0) {
       let idle = true;
       for (let k = 0; k < m; k++) {
         if (LN[4 * i + k] !== 0) {
@@ -319,7 +333,7 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
     // Normal rows swept until a flat hit is shared by the points as the exact solve shares it, not by the
     // order they are visited in (NORMAL_SWEEPS); a soft row ends the sweeps after the first.
     const sweeps = m === 1 ? 1 : NORMAL_SWEEPS;
-    let softMet = false;
+    let softMet = 0;
     // The sweep count goes up at the top of a sweep, not in a loop update the first sweep never reaches
     // (optimised code compiled before any second sweep was thrown away at the first hit).
     for (let sw = 0; ; ) {
@@ -346,16 +360,18 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
         // threw the optimised code away: 'insufficient type feedback'; the same numbers either way).
         const speculative = s * invHs,
           softBias = Math.max(biasRate * s, negPush);
-        let bias = 0,
-          ms = 1,
-          is = 0;
-        if (s > 0) bias = speculative;
-        else if (useBias) {
-          bias = softBias;
-          ms = massScale;
-          is = impScale;
-          softMet = true;
-        }
+        // Selected without a branch (which way it goes changes from point to point in a pile, and a
+        // mispredicted branch costs more than the row): speculative (s > 0) takes bias s / h_s and the
+        // plain mass, a soft row of a biased pass the soft bias and its mass and impulse scales, a relax
+        // row neither (the products with 0 and 1 give the selected numbers; a relax row's zero bias may be
+        // -0, which adds the same).
+        const specRow = +(s > 0),
+          softRow = +!(s > 0) & biasOn,
+          sel = scaleBase + 2 * softRow;
+        const bias = specRow * speculative + softRow * softBias,
+          ms = SCALES[sel]!,
+          is = SCALES[sel + 1]!;
+        softMet |= softRow;
         const vn =
           (vbx - vax) * nx +
           (vby - vay) * ny +
@@ -365,8 +381,7 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
         const lam = Math.max(old - MN[q]! * ms * (vn + bias) - is * old, 0);
         const dl = lam - old;
         LN[q] = lam;
-        const mx = MAX[q]!;
-        MAX[q] = lam > mx ? lam : mx;
+        CARRIED[q] = CARRIED[q]! | +(lam > 0);
         // Applied also when dl = 0 (it then adds zeros): a branch on dl !== 0 that the first rows V8 saw
         // never entered was compiled without type feedback, and its first push threw the code away.
         // Body row 0 (the static world) has zero inverse mass and inertia, and is never written back.
@@ -402,15 +417,15 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
       const settled = change <= (first ? HIT_FRACTION : SWEEP_TOLERANCE) * total,
         slow = change * (mA + mB) <= SWEEP_SPEED,
         last = sw >= sweeps;
-      if (softMet || settled || slow || last) break;
+      if (softMet === 1 || settled || slow || last) break;
     }
     // Friction of the manifold at its anchor (t1, t2, then the twist about n), limited by mu sum(lambda_n).
     let sumLn = 0;
     for (let k = 0; k < m; k++) sumLn += LN[4 * i + k]!;
     const limit = H[h + HEAD_MU]! * sumLn;
-    const o1 = FT1[i]!,
-      o2 = FT2[i]!,
-      ow = FTW[i]!;
+    const o1 = FT[3 * i]!,
+      o2 = FT[3 * i + 1]!,
+      ow = FT[3 * i + 2]!;
     // A manifold that pushes nothing (a speculative one) has no friction to solve.
     if (limit !== 0 || o1 !== 0 || o2 !== 0 || ow !== 0) {
       const t1x = H[h + HEAD_T1X]!,
@@ -448,8 +463,8 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
         l1 *= k;
         l2 *= k;
       }
-      FT1[i] = l1;
-      FT2[i] = l2;
+      FT[3 * i] = l1;
+      FT[3 * i + 1] = l2;
       const d1 = l1 - o1,
         d2 = l2 - o2;
       if (d1 !== 0 || d2 !== 0) {
@@ -485,7 +500,7 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
         ntl = -tl;
       let lw = ow - H[h + HEAD_MTW]! * ((wbx - wax) * nx + (wby - way) * ny + (wbz - waz) * nz);
       lw = lw > tl ? tl : lw < ntl ? ntl : lw;
-      FTW[i] = lw;
+      FT[3 * i + 2] = lw;
       const dw = lw - ow;
       if (dw !== 0) {
         if (iso) {
@@ -582,7 +597,7 @@ export function applyManifold3DRestitution(world: PhysicsWorld): void {
   const threshold = cs.settings.restitutionThreshold,
     elasticThreshold = cs.settings.elasticRestitutionThreshold;
   const VN0 = buf.vn0,
-    MAX = buf.maxLn,
+    CARRIED = buf.carried,
     LN = buf.ln,
     MN = buf.mn;
   // Which points bounce (approach past the threshold, impulse carried) does not change from pass to
@@ -611,7 +626,7 @@ export function applyManifold3DRestitution(world: PhysicsWorld): void {
       let bounces = false;
       for (let k = 0, m = buf.points[i]!; k < m; k++) {
         const q = 4 * i + k;
-        if (MAX[q] === 0) continue;
+        if (CARRIED[q] === 0) continue;
         const target = restitutionTarget(e, VN0[q]!, VN0[q]!, threshold, elasticThreshold);
         if (target < 0) continue;
         bounces = true;
