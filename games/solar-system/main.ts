@@ -2037,7 +2037,7 @@ function hint(m: Mission): string {
         ? `A faster launch (${named('↑', '+')}) flies farther ${distanceFromSun(t) > 1 ? 'out' : 'in'} and sooner: watch the probe’s last dot close on the ring.`
         : `A slower launch (${named('↓', '−')}) costs less and arrives later: watch the probe’s last dot close on the ring.`;
       // Nearest at the launch: the date is the trouble, whatever speed happens to catch the planet.
-      return forecast.closestAtLaunch ? `${wrongDate(t)} Or: ${change}` : change;
+      return forecast.closestAtLaunch ? `${wrongDate(t)} Or: ${change[0]!.toLowerCase()}${change.slice(1)}` : change;
     }
     if (a.kind === 'wait' || a.kind === 'none')
       return forecast.closestAtLaunch
@@ -2182,6 +2182,8 @@ function updateStatus(force = false): void {
   shownStatus = key;
   goalLine.textContent = goal;
   briefLine.textContent = brief;
+  // No brief in flight: the line goes (its kept height left a blank line under the goal).
+  briefLine.style.display = brief === '' ? 'none' : '';
   planText.textContent = line;
   planText.className = `ss-line ${cls}`;
   hintLine.textContent = shownHint;
