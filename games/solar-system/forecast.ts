@@ -90,6 +90,14 @@ export interface Forecast {
   readonly targetAt: Float64Array;
   /** The world's integration scheme: 'rk4', which the forecast copies, or another (the forecast is RK4 all the same). */
   scheme: string;
+  /**
+   * Whether a launch that misses comes closest to the target at the launch itself (within the first
+   * sample): from then on the probe only gets farther from it, whatever it does. Then `closest` and
+   * `closestAt` are still that approach, but `pointsToClosest`, `probeAt`, `targetAt` and
+   * `targetTrack` run to the sample where the probe comes nearest the target's orbit (its distance
+   * from the Sun then): a path of one point drew nothing and put "probe then" at the Earth.
+   */
+  closestAtLaunch: boolean;
 }
 
 /** A fresh, empty forecast. */
@@ -113,6 +121,7 @@ export function createForecast(): Forecast {
     probeAt: new Float64Array(3),
     targetAt: new Float64Array(3),
     scheme: 'rk4',
+    closestAtLaunch: false,
   };
 }
 
@@ -595,6 +604,24 @@ export class ForecastJob {
     this.busy = false;
     // The samples before the closest approach (the drawing ends at probeAt); all of them on an arrival.
     f.pointsToClosest = f.outcome === 'arrived' ? f.points : Math.min(f.points, Math.floor(this.closestStep / this.stride) + 1);
+    // A launch nearest the target at the start: show where it gets to instead, the sample nearest the target's orbit.
+    f.closestAtLaunch = f.from === 0 && f.outcome !== 'arrived' && f.pointsToClosest <= 1 && f.points > 1;
+    if (f.closestAtLaunch) {
+      let best = 1,
+        gap = Infinity;
+      for (let i = 1; i < f.points; i++) {
+        const p = f.path,
+          t = this.targetPath;
+        const g = Math.abs(Math.hypot(p[3 * i]!, p[3 * i + 1]!, p[3 * i + 2]!) - Math.hypot(t[3 * i]!, t[3 * i + 1]!, t[3 * i + 2]!));
+        if (g < gap) {
+          gap = g;
+          best = i;
+        }
+      }
+      f.pointsToClosest = best + 1;
+      f.probeAt.set(f.path.subarray(3 * best, 3 * best + 3));
+      f.targetAt.set(this.targetPath.subarray(3 * best, 3 * best + 3));
+    }
     // The target's track from now to the closest approach: TARGET_TRACK of its samples, the last at targetAt.
     const last = f.pointsToClosest - 1;
     for (let i = 0; i < TARGET_TRACK - 1; i++) {

@@ -1625,6 +1625,7 @@ function drawLaunch(world: PhysicsWorld): void {
   trackDots.visible = false;
   probeThen.visible = false;
   if (!planned) for (const el of forecastTags) el.style.display = 'none';
+  ghostOnScreen[3] = 0;
   missLine.visible = false;
   if (aiming) {
     heliocentricState(world, handles, handles.bodies.Earth, earthHelio);
@@ -1682,6 +1683,11 @@ function drawLaunch(world: PhysicsWorld): void {
     const ringPx = (zone * app.canvas.clientHeight) / (2 * app.camera.position.distanceTo(v) * Math.tan((app.camera.fov * Math.PI) / 360));
     // Not while time runs (the forecast drawn lags the moment; the names would jump about).
     const tagged = aiming && !sun && currentRate() === 0;
+    v.project(app.camera);
+    ghostOnScreen[0] = ((v.x + 1) / 2) * app.canvas.clientWidth;
+    ghostOnScreen[1] = ((1 - v.y) / 2) * app.canvas.clientHeight;
+    ghostOnScreen[2] = ringPx;
+    ghostOnScreen[3] = aiming && !sun && v.z < 1 ? 1 : 0;
     placeTag(0, tagged ? `${m.target} at arrival` : '', scratch3[0]!, scratch3[1]!, scratch3[2]!, ringPx + 2);
     place(f.probeAt[0]!, f.probeAt[1]!, f.probeAt[2]!, scratch3);
     placeTag(1, tagged ? 'probe then' : '', scratch3[0]!, scratch3[1]!, scratch3[2]!, -ringPx - 20);
@@ -1718,30 +1724,39 @@ const ecliptic = new Plane(new Vector3(0, 1, 0), 0);
 const ndc = new Vector2();
 const hitPoint = new Vector3();
 
+/** The ring "at arrival" on the screen this frame while aiming: x, y, radius (px), 1 if drawn (else 0). */
+const ghostOnScreen = new Float64Array(4);
+
 /** A note the brief's line shows while aiming until performance.now() passes `aimNoteUntil` (ms). */
 let aimNote = '';
 let aimNoteUntil = -Infinity;
 
 /**
  * Turns the launch towards the display point under the pointer (on the ecliptic). A press on the
- * target itself (`first`, within 30 px of it) does not point the launch at the planet, a course no
- * probe flies (it curves round the Sun while the planet moves on): it turns the arrow along the
- * Earth's path (against it for an inner planet), the way a transfer starts, and says why.
+ * target itself or on its ring "at arrival" (`first`, within 30 px of it) does not point the launch
+ * at it, a course no probe flies (it curves round the Sun while the planet moves on): it turns the
+ * arrow along the Earth's path (against it for an inner planet), the way a transfer starts, and
+ * says why.
  */
 function aimAtPointer(clientX: number, clientY: number, first = false): void {
   if (phase !== 'aim') return;
   const ti = LABELS.indexOf(mission().target);
   const rect = app.canvas.getBoundingClientRect();
-  if (
-    first &&
-    onScreen[4 * ti + 3] === 1 &&
-    Math.hypot(clientX - rect.left - onScreen[4 * ti]!, clientY - rect.top - onScreen[4 * ti + 1]!) < 30 + onScreen[4 * ti + 2]!
-  ) {
+  const px = clientX - rect.left,
+    py = clientY - rect.top;
+  const onTarget =
+    onScreen[4 * ti + 3] === 1 && Math.hypot(px - onScreen[4 * ti]!, py - onScreen[4 * ti + 1]!) < 30 + onScreen[4 * ti + 2]!;
+  // The ring "at arrival" too: aiming at it sent the probe sideways across the orbits (inwards, for Mars).
+  const onRing = ghostOnScreen[3] === 1 && Math.hypot(px - ghostOnScreen[0]!, py - ghostOnScreen[1]!) < 30 + ghostOnScreen[2]!;
+  if (first && (onTarget || onRing)) {
     const t = mission().target;
     const outward = distanceFromSun(t) > distanceFromSun('Earth');
     aim.angle = outward ? 0 : 180;
     aimChangedAt = performance.now();
-    aimNote = `A probe does not fly straight at ${t}: it curves round the Sun while ${t} moves on. Launched ${outward ? 'along' : 'against'} the Earth’s path; now time it so the probe meets ${t} at arrival.`;
+    const curve = `${outward ? 'along' : 'against'} the Earth’s motion; the orbit curves ${outward ? 'out' : 'in'} to meet ${t}`;
+    aimNote = onTarget
+      ? `A probe does not fly straight at ${t}: it curves round the Sun while ${t} moves on. Aimed ${curve}; now time it so the probe meets ${t} at arrival.`
+      : `A launch straight at the ring cuts across the orbits: it curves round the Sun. Aimed ${curve} there; change the speed (or wait) until the probe’s last dot is in the ring.`;
     aimNoteUntil = performance.now() + 6000;
     aiming = -1;
     updateStatus(true);
@@ -1957,6 +1972,14 @@ const aimWords = (a: number): string =>
       ? 'against the Earth’s path'
       : `${Math.abs(Math.round(a))}° ${a > 0 ? 'outwards' : 'inwards'}${Math.abs(a) > 90 ? ' (backwards)' : ''}`;
 let shownStatus = '';
+/**
+ * The hint for a launch whose forecast is nearest `t` at the launch itself (Forecast.closestAtLaunch):
+ * at this date the probe only draws away from it, so the launch date, not the speed, is the trouble.
+ */
+function wrongDate(t: SolarSystemBody): string {
+  return `At this date the probe only gets farther from ${t}: wait for the launch window (${named('tap W', 'tap Wait')}), when ${t} is the right way ahead.`;
+}
+
 /** Whether the page is used by touch first (a phone): the hints name the buttons, not the keys. */
 const touchFirst = matchMedia('(pointer: coarse)').matches;
 /** The control a hint names: the key on a desktop, the button on a touch screen. */
@@ -2010,12 +2033,16 @@ function hint(m: Mission): string {
         return `${ahead} Try turning the arrow ${cw ? 'clockwise' : 'anticlockwise'} (${named(cw ? '→' : '←', cw ? '↻' : '↺')}) and watch the probe’s last dot.`;
       }
       const up = a.speed > 0;
-      return up
+      const change = up
         ? `A faster launch (${named('↑', '+')}) flies farther ${distanceFromSun(t) > 1 ? 'out' : 'in'} and sooner: watch the probe’s last dot close on the ring.`
         : `A slower launch (${named('↓', '−')}) costs less and arrives later: watch the probe’s last dot close on the ring.`;
+      // Nearest at the launch: the date is the trouble, whatever speed happens to catch the planet.
+      return forecast.closestAtLaunch ? `${wrongDate(t)} Or: ${change[0]!.toLowerCase()}${change.slice(1)}` : change;
     }
     if (a.kind === 'wait' || a.kind === 'none')
-      return `${ahead} Now it is in the wrong place: ${named('tap W', 'tap Wait')} for the next launch window, when ${t} is the right way ahead, then aim.`;
+      return forecast.closestAtLaunch
+        ? wrongDate(t)
+        : `${ahead} Now it is in the wrong place: ${named('tap W', 'tap Wait')} for the next launch window, when ${t} is the right way ahead, then aim.`;
   }
   if (phase === 'flight' && flight) {
     if (forecastKey !== wantedKey()) return hintText;
@@ -2057,7 +2084,9 @@ function verdict(m: Mission): [string, string] {
       return [`✗ goes out only to ${f.farthest.toFixed(2)} AU from the Sun; ${m.target} will be at ${rT.toFixed(2)} AU${scheme}`, 'bad'];
     if (!outward && f.nearest > rT + m.zone)
       return [`✗ falls in only to ${f.nearest.toFixed(2)} AU from the Sun; ${m.target} will be at ${rT.toFixed(2)} AU${scheme}`, 'bad'];
-    return [`✗ misses ${m.target}: ${missWords(f.closest, m.zone)}${scheme}`, 'bad'];
+    // Nearest at the launch: say so, or the same distance at every speed reads as a stale forecast.
+    const when = f.closestAtLaunch ? ' (at the launch; then only farther)' : '';
+    return [`✗ misses ${m.target}: ${missWords(f.closest, m.zone)}${when}${scheme}`, 'bad'];
   }
   if (f.outcome === 'arrived') return [`✓ arrives on day ${Math.round(f.end)}${scheme}`, 'ok'];
   return [`✗ misses ${m.target}: ${missWords(f.closest, m.zone)}${scheme}`, 'bad'];
@@ -2153,6 +2182,8 @@ function updateStatus(force = false): void {
   shownStatus = key;
   goalLine.textContent = goal;
   briefLine.textContent = brief;
+  // No brief in flight: the line goes (its kept height left a blank line under the goal).
+  briefLine.style.display = brief === '' ? 'none' : '';
   planText.textContent = line;
   planText.className = `ss-line ${cls}`;
   hintLine.textContent = shownHint;

@@ -12,7 +12,7 @@ import { type SolarSystemHandles, solarSystem } from '@bitphysics/projects';
 import { describe, expect, test } from 'vitest';
 import { adviseAim, adviseBurn, SPEED_STEP, startAim, TURN_STEP, TUTORIAL_SHORTFALL, tutorialAim } from '../../games/solar-system/advice';
 import { COMPRESSION_LENGTH, displayRadius, fromDisplay, toDisplay, trueRadius } from '../../games/solar-system/distance-scale';
-import { forecastCourse, forecastLaunch } from '../../games/solar-system/forecast';
+import { FORECAST_SAMPLES, forecastCourse, forecastLaunch } from '../../games/solar-system/forecast';
 import { keplerState } from '../../games/solar-system/kepler';
 import {
   type Aim,
@@ -344,6 +344,37 @@ describe('missions', () => {
     }
     expect([...reached.keys()].sort()).toEqual(MISSIONS.map((m) => m.target).sort());
     expect(Object.fromEntries(reached)).toEqual({ Mars: 0, Venus: 0, Mercury: 0, Saturn: 0, Neptune: 60, Uranus: 120, Jupiter: 180 });
+  });
+
+  test('a launch nearest its target at the launch (Jupiter on 2014-01-17) still shows where the probe goes: out to Jupiter’s orbit, not a path of one point at the Earth', () => {
+    // A stranger's Jupiter mission: at 7.7 to 9.2 km/s along the Earth's path the line read
+    // "closest 4.24 AU" alike, no dots were drawn and "probe then" sat at the Earth. Jupiter was
+    // nearly in line with the Earth, so every such probe only gets farther from it: the closest
+    // approach is at the launch, the distance Earth-Jupiter now.
+    const options = { stepHours: 6, integrator: 'rk4' as const, date: '2014-01-17T00:00:00Z' };
+    const world = createPhysicsWorld(solarSystem.worldOptions(options));
+    const handles = solarSystem.build(world, options);
+    const m = mission('Jupiter');
+    const e = heliocentricState(world, handles, handles.bodies.Earth),
+      j = heliocentricState(world, handles, handles.bodies.Jupiter);
+    const now = Math.hypot(e[0]! - j[0]!, e[1]! - j[1]!, e[2]! - j[2]!);
+    const r = (p: ArrayLike<number>) => Math.hypot(p[0]!, p[1]!, p[2]!);
+    for (const speed of [7.7, 9.2]) {
+      const f = forecastLaunch(world, handles, m, { angle: 0, speed }, 0.25);
+      expect(f.outcome, `${speed}`).toBe('missed');
+      expect(Math.abs(f.closest - now), `${speed}`).toBeLessThan(0.01);
+      expect(f.closestAtLaunch, `${speed}`).toBe(true);
+      // The dots run on out (more than half the samples), to the probe's farthest (7.7 km/s falls
+      // short of Jupiter's orbit) or to where it crosses Jupiter's distance from the Sun (9.2).
+      expect(f.pointsToClosest, `${speed}`).toBeGreaterThan(FORECAST_SAMPLES / 2);
+      expect(r(f.probeAt) - 1, `${speed}`).toBeGreaterThan(2);
+      if (f.farthest > r(f.targetAt)) expect(Math.abs(r(f.probeAt) - r(f.targetAt)), `${speed}`).toBeLessThan(0.05);
+      else expect(f.farthest - r(f.probeAt), `${speed}`).toBeLessThan(0.05);
+    }
+    // The hint's faster launch (9.7 km/s) does catch Jupiter: an arrival is never "nearest at the launch".
+    const hit = forecastLaunch(world, handles, m, { angle: 0, speed: 9.7 }, 0.25);
+    expect(hit.outcome).toBe('arrived');
+    expect(hit.closestAtLaunch).toBe(false);
   });
 
   test('a planned miss by more than 3 zones does not arrive', () => {
