@@ -656,8 +656,9 @@ glowNote.dataset.sceneOverlay = '';
 glowNote.dataset.hud = 'glow-hint';
 glowNote.textContent = GLOW_HINT;
 glowNote.style.cssText =
-  // Centred in the band left of the depth gauge and its tags (70 px at the right edge).
-  'position: absolute; z-index: 4; left: 10px; right: 70px; top: 8px; width: fit-content; margin: 0 auto;' +
+  // Centred in the band left of the depth gauge and its tags ("you 100 m" reaches 82 px from the
+  // right edge; on a phone the card's own width brings it there).
+  `position: absolute; z-index: 4; left: 10px; right: ${compact ? 90 : 70}px; top: 8px; width: fit-content; margin: 0 auto;` +
   'box-sizing: border-box; padding: 5px 12px; border-radius: 10px; background: rgba(4, 16, 30, 0.82); color: #b8ffe9;' +
   `font: 600 ${compact ? 13 : 14}px/1.35 system-ui, sans-serif; text-align: center; pointer-events: none; display: none;`;
 pageLayout().stage.append(glowNote);
