@@ -11,8 +11,8 @@
  * (a scrape on the seabed, or a moored mine laid across the way between two beacons: ./mines.ts)
  * break the hull, inside the course's par time if you can (the clock starts at the first control held): a won run earns a star for the beacons,
  * one for par and one for an unhurt hull (the best time of each course is kept). A mine on the
- * boat's course within MINE_WARN_TIME s is told by the hull: a red arrow from it to the mine, a tag
- * over the sail ("rise over") or under the keel ("dive under") and a low two-note call.
+ * boat's course within MINE_WARN_TIME s (at least MINE_LOOK_AHEAD m) is told by the hull: a red
+ * arrow from it to the mine, a tag over the sail ("rise over") or under the keel ("dive under") and a low two-note call.
  * Keys: S / W or down / up arrows dive / rise, A / D or left / right arrows astern / ahead, Q / E
  * nose down / up, P pause, N step, R reset. Touch: a stick under the scene (down dives, up rises,
  * right ahead, left astern; pushed part way it asks for part of the speed) and Nose buttons.
@@ -49,6 +49,7 @@ import {
   type MineAhead,
   mineAhead,
   mineOnWay,
+  mineWarnHorizon,
   parTime,
   touchesMine,
 } from './mines';
@@ -451,9 +452,11 @@ function stepWorld(world: PhysicsWorld): void {
     return;
   }
   // The course ahead (./mines.ts mineAhead): toward the ordered depth, and while Dive or Rise is
-  // held on at the speed it asks for too. A new warning sounds a low two-note call.
+  // held on at the speed it asks for too, at least MINE_LOOK_AHEAD m ahead at a slow speed. A new
+  // warning sounds a low two-note call.
   const was = ahead?.index ?? -1;
   ahead = mineAhead(c.Position.x[e]!, c.Position.y[e]!, c.Velocity.x[e]!, c.Velocity.y[e]!, state.holdY, mines, mineLive, handles.seabed, {
+    horizon: mineWarnHorizon(c.Velocity.x[e]!),
     prefer: ahead,
     heaving: state.mode === 'diving' || state.mode === 'rising',
     heave: Math.max(0.01, Math.min(1, input.heave ?? 1)),
@@ -653,8 +656,9 @@ glowNote.dataset.sceneOverlay = '';
 glowNote.dataset.hud = 'glow-hint';
 glowNote.textContent = GLOW_HINT;
 glowNote.style.cssText =
-  // Centred in the band left of the depth gauge and its tags (70 px at the right edge).
-  'position: absolute; z-index: 4; left: 10px; right: 70px; top: 8px; width: fit-content; margin: 0 auto;' +
+  // Centred in the band left of the depth gauge and its tags ("you 100 m" reaches 82 px from the
+  // right edge; on a phone the card's own width brings it there).
+  `position: absolute; z-index: 4; left: 10px; right: ${compact ? 90 : 70}px; top: 8px; width: fit-content; margin: 0 auto;` +
   'box-sizing: border-box; padding: 5px 12px; border-radius: 10px; background: rgba(4, 16, 30, 0.82); color: #b8ffe9;' +
   `font: 600 ${compact ? 13 : 14}px/1.35 system-ui, sans-serif; text-align: center; pointer-events: none; display: none;`;
 pageLayout().stage.append(glowNote);
@@ -798,20 +802,28 @@ mineTag.anchor.set(0.5);
 mineTag.visible = false;
 app.stage.addChild(mineTag);
 /**
- * Over the scene while paused (drawPause): the scene dimmed and the word with how to resume, so a
- * pause is not mistaken for a hang.
+ * Over the scene while paused (drawPause): the scene dimmed lightly and the word with how to resume
+ * on a band at the top or bottom edge, away from the boat, so a pause is not mistaken for a hang and
+ * a pilot pausing to think still sees the mines and beacons ahead.
  */
-const pause = createPauseOverlay({ shadeAlpha: 0.5 });
+const pause = createPauseOverlay({ shadeAlpha: 0.15, fontSize: 22 });
+/** The pause words' band across the scene (drawPause), under the words. */
+const pauseBand = new Graphics();
+pause.container.addChildAt(pauseBand, 1);
 app.stage.addChild(pause.container);
+/** Height of the pause band, px: the two lines of words and a margin. */
+const PAUSE_BAND = 64;
 const touch = isTouchDevice();
 /** Whether the pause overlay showed in the last frame drawn by drawPause. */
 let pauseShown = false;
 /**
- * Shows or hides the pause overlay over a `W` x `H` px scene, on top of everything drawn on the stage.
+ * Shows or hides the pause overlay over a `W` x `H` px scene, on top of everything drawn on the stage:
+ * its words on a band at the bottom edge when the boat (at `boatY` px from the top) is in the upper
+ * half of the scene, else at the top edge.
  * The frame where it comes or goes is drawn whatever the frame pacer says: on a busy GPU the pacer
  * skips most frames, and a paused game draws nothing new that would make up for a skipped one.
  */
-function drawPause(W: number, H: number): void {
+function drawPause(W: number, H: number, boatY: number): void {
   const on = shell.paused && !state.over;
   if (on !== pauseShown) {
     pauseShown = on;
@@ -820,6 +832,22 @@ function drawPause(W: number, H: number): void {
   // Pools of labels are added to the stage as they are needed: kept under the overlay.
   if (on && app.stage.children[app.stage.children.length - 1] !== pause.container) app.stage.addChild(pause.container);
   pause.draw(on, W, H, touch);
+  if (on) {
+    // Clear of the cards over the scene's edges (the first-time hint at the top, the touch hint at
+    // the bottom) while they show.
+    const scene = app.canvas.getBoundingClientRect();
+    let upper = 0,
+      lower = H;
+    for (const card of document.querySelectorAll<HTMLElement>('[data-hud="glow-hint"], [data-hud="touch-hint"]')) {
+      const r = card.getBoundingClientRect();
+      if (r.height === 0) continue;
+      if (r.top - scene.top < H / 2) upper = Math.max(upper, r.bottom - scene.top + 4);
+      else lower = Math.min(lower, r.top - scene.top - 4);
+    }
+    const top = boatY < H / 2 ? lower - PAUSE_BAND : upper;
+    pauseBand.clear().rect(0, top, W, PAUSE_BAND).fill({ color: 0x050a14, alpha: 0.6 });
+    pause.words.position.set(W / 2, top + PAUSE_BAND / 2);
+  }
 }
 /** The warning's words for each side to pass the mine on (placeMineTag adds how far ahead the mine is: "MINE 40 m"). */
 const MINE_TAG_TEXT = { over: '⚠ MINE: rise over ▲', under: '⚠ MINE: dive under ▼' } as const;
@@ -2148,7 +2176,7 @@ function draw(): void {
   // The hull's box on the screen (level, its sail included): the tags that only add are kept off it.
   const hr = Math.max(SUBMARINE.length / 2, SUBMARINE.height / 2 + 2) * k;
   declutter(H, [sx(hxw) - (SUBMARINE.length / 2) * k, sy(hyw) - hr / 2, SUBMARINE.length * k, hr]);
-  drawPause(W, H);
+  drawPause(W, H, sy(hyw));
   // The hull gauge at a hit: red and enlarged, fading over GAUGE_FLASH s of game time.
   const hitAge = hitMarks.length > 0 ? t - hitMarks[hitMarks.length - 1]!.time : Number.POSITIVE_INFINITY;
   const flashNow = hitAge >= 0 && hitAge < GAUGE_FLASH ? 1 - hitAge / GAUGE_FLASH : 0;

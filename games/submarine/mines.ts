@@ -46,6 +46,23 @@ export const MINE_REACTION = 1;
  * 2 m or more to spare.
  */
 export const MINE_WARN_TIME = 5;
+/**
+ * The least distance ahead the warning looks, m (mineWarnHorizon): a slow boat (a phone's stick
+ * part way, 2-3 m/s) looking MINE_WARN_TIME s ahead saw a mine only at its bow.
+ */
+export const MINE_LOOK_AHEAD = 30;
+
+/**
+ * How far ahead in time the warning looks for a boat making `vx` m/s along x (either way; taken as at
+ * least 2 m/s as mineAhead does): MINE_WARN_TIME s, or longer at a slow speed so that it looks at
+ * least MINE_LOOK_AHEAD m ahead, s.
+ * @throws RangeError when `vx` is not finite.
+ */
+export function mineWarnHorizon(vx: number): number {
+  assertFinite('mineWarnHorizon', 'vx', vx);
+  return Math.max(MINE_WARN_TIME, MINE_LOOK_AHEAD / Math.max(2, Math.abs(vx)));
+}
+
 /** The warning's room round the hull, m: a course that passes a mine closer than this (beyond contact) is warned of. */
 export const MINE_WARN_MARGIN = 1.5;
 /**

@@ -9,7 +9,9 @@
  * levels `TRAIL.level` m apart (dynamic programming): cost for straying from the straight line between
  * the two beacons and for climbing or diving, never steeper than the first of `TRAIL.slopes` that
  * finds a way (a boat at full ahead and full dive makes 7 / 12.9 = 0.54), never into a mine's box,
- * the seabed's or the surface's margin.
+ * the seabed's or the surface's margin. The way passes every mine over it, never under: a moored
+ * mine's cable runs from it down to the seabed, and a trail through the cable reads as a way into the
+ * hazard.
  */
 
 import type { SubmarineHandles } from '@bitphysics/projects';
@@ -20,27 +22,31 @@ import { courseOrder, hullDistance, MINE_RADIUS, MINE_WARN_MARGIN, type Mine } f
 export const TRAIL = Object.freeze({
   /** Distance between two glows along x, m (about a second at full ahead, 12.9 m/s). */
   spacing: 14,
-  /** Grid columns of the path search, m apart. */
-  column: 4,
+  /** Grid columns of the path search, m apart (fine enough to dive just past a mine to a beacon close behind it). */
+  column: 2,
   /** Grid levels of the path search, m apart. */
   level: 0.4,
   /**
    * Steepest climb or dive of the way, m per m ahead, tried in turn until a way is found: a leg
    * whose beacons lie far apart in depth and near in x needs a steeper way (a slower boat).
    */
-  slopes: [0.4, 0.7, 1.2, 3] as readonly number[],
+  slopes: [0.4, 0.7, 1.2, 3, 8] as readonly number[],
   /**
    * The way keeps out of a box round each mine: this far from its centre along x (half the hull, the
-   * contact radius, the mine warning's margin and 2 m more), m. A hull on the way is never warned of
+   * contact radius, the mine warning's margin and 1.5 m more), m. A hull on the way is never warned of
    * a mine (./mines.ts mineAhead warns within MINE_WARN_MARGIN of contact), so following the trail
    * never leads into a warning too late to act on.
    */
-  mineHalfWidth: SUBMARINE.length / 2 + MINE_RADIUS + MINE_WARN_MARGIN + 2,
+  mineHalfWidth: SUBMARINE.length / 2 + MINE_RADIUS + MINE_WARN_MARGIN + 1.5,
   /**
-   * ... and this far across (half the hull's height, the contact radius, the warning's margin and
-   * room for a pitched hull or a pilot a little off the way), m.
+   * ... and this far over its centre (half the hull's height, the contact radius, the warning's
+   * margin and room for a pitched hull or a pilot a little off the way), m, or as far as the surface's
+   * margin leaves over a mine near the top (never less than `mineOverLeast`); under a mine the box
+   * runs down to the seabed (its cable).
    */
   mineHalfHeight: SUBMARINE.height / 2 + MINE_RADIUS + MINE_WARN_MARGIN + 3,
+  /** The least room kept over a mine's centre, m: just out of the warning's reach (half the hull, contact radius, margin). */
+  mineOverLeast: SUBMARINE.height / 2 + MINE_RADIUS + MINE_WARN_MARGIN + 0.3,
   /** The way keeps this far over the seabed, m (the hull's centre). */
   bedClearance: 6,
   /** The way keeps this far under the surface, m (the hull's centre). */
@@ -53,6 +59,14 @@ export const TRAIL = Object.freeze({
   start: [14, -6] as const,
 });
 
+/**
+ * How far over the centre of mine `m` the way keeps, m: `TRAIL.mineHalfHeight`, less over a mine
+ * whose box would reach into the surface's margin, never less than `TRAIL.mineOverLeast`.
+ */
+function mineOver(m: Mine): number {
+  return Math.max(TRAIL.mineOverLeast, Math.min(TRAIL.mineHalfHeight, -TRAIL.surfaceClearance - m.y));
+}
+
 /** A glow of the trail: its place, m (x, y, y up), and the leg it lies on (0: the start to the first beacon). */
 export interface Glow {
   x: number;
@@ -62,17 +76,21 @@ export interface Glow {
 
 /**
  * Whether a level hull running straight from (x0, y0) to (x1, y1), m, stays out of every mine's box
- * less 2 m along x and 1 m across (the grid's way keeps the whole box at its columns; a run between
- * two glows may cut its corner by that much, still clear of the mine warning's reach) and at least
- * half the bed's margin over the bed, sampled every metre.
+ * (over the mine, down to the seabed) less 1 m along x and up to 1 m over it (the grid's way keeps
+ * the whole box at its columns; a run between two glows may cut its corner by that much, still clear
+ * of the mine warning's reach) and at least
+ * half the bed's margin over the bed, sampled every half metre.
  */
 function clearRun(x0: number, y0: number, x1: number, y1: number, seabed: SubmarineHandles['seabed'], mines: readonly Mine[]): boolean {
-  const n = Math.max(1, Math.ceil(Math.hypot(x1 - x0, y1 - y0)));
+  const n = Math.max(1, Math.ceil(2 * Math.hypot(x1 - x0, y1 - y0)));
   for (let i = 0; i <= n; i++) {
     const x = x0 + ((x1 - x0) * i) / n,
       y = y0 + ((y1 - y0) * i) / n;
     if (y < seabedHeight(seabed, x) + TRAIL.bedClearance / 2) return false;
-    for (const m of mines) if (Math.abs(x - m.x) < TRAIL.mineHalfWidth - 2 && Math.abs(y - m.y) < TRAIL.mineHalfHeight - 1) return false;
+    for (const m of mines) {
+      const over = mineOver(m);
+      if (Math.abs(x - m.x) < TRAIL.mineHalfWidth - 1 && y < m.y + over - Math.min(1, over - TRAIL.mineOverLeast)) return false;
+    }
   }
   return true;
 }
@@ -112,7 +130,7 @@ function findWay(
     const near = mines.filter((m) => Math.abs(x - m.x) < TRAIL.mineHalfWidth);
     const open = (y: number): boolean => {
       if (y > -TRAIL.surfaceClearance || y < floor) return false;
-      for (const m of near) if (Math.abs(y - m.y) < TRAIL.mineHalfHeight) return false;
+      for (const m of near) if (y < m.y + mineOver(m)) return false;
       return true;
     };
     for (let j = 0; j < levels; j++) {

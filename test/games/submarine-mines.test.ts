@@ -18,6 +18,7 @@ import {
   MINE_BED_CLEARANCE,
   MINE_GAP,
   MINE_LEAD,
+  MINE_LOOK_AHEAD,
   MINE_RADIUS,
   MINE_REACTION,
   MINE_TOP,
@@ -26,6 +27,7 @@ import {
   type MineAhead,
   mineAhead,
   mineOnWay,
+  mineWarnHorizon,
   parTime,
   touchesMine,
 } from '../../games/submarine/mines';
@@ -172,6 +174,23 @@ describe('submarine mines', () => {
     expect(() => mineAhead(0, 0, 10, 0, -40, [], [], bed, { horizon: 0 })).toThrow(/mineAhead: horizon/);
     expect(() => mineAhead(0, 0, 10, 0, -40, [], [], bed, { heave: 0 })).toThrow(/mineAhead: options.heave/);
     expect(() => mineAhead(0, 0, 10, 0, -40, [], [], bed, { heave: 1.5 })).toThrow(/mineAhead: options.heave/);
+  });
+  it('mineWarnHorizon: a slow boat is warned of a mine at least MINE_LOOK_AHEAD m ahead, not only MINE_WARN_TIME s', () => {
+    const bed = { x0: -100, dx: 5, y: new Float64Array(400).fill(-120) };
+    const mine = [{ x: 28, y: -40, anchor: -120 }];
+    // At 2.5 m/s (a phone's stick part way), a mine 28 m ahead on the line: contact (bow 6 m ahead,
+    // reach 3.9 m) in 18.1 m, 7.2 s: past MINE_WARN_TIME, inside MINE_LOOK_AHEAD.
+    expect(MINE_LOOK_AHEAD).toBe(30);
+    expect(mineAhead(0, -40, 2.5, 0, -40, mine, [true], bed)).toBeNull();
+    expect(mineWarnHorizon(2.5)).toBeCloseTo(12, 9);
+    const w = mineAhead(0, -40, 2.5, 0, -40, mine, [true], bed, { horizon: mineWarnHorizon(2.5) })!;
+    expect(w.index).toBe(0);
+    expect(w.time).toBeCloseTo((28 - 6 - 3.9) / 2.5, 1);
+    // At speed the horizon is MINE_WARN_TIME as before; astern counts its speed too; still, 2 m/s.
+    expect(mineWarnHorizon(12.9)).toBe(MINE_WARN_TIME);
+    expect(mineWarnHorizon(-3)).toBeCloseTo(10, 9);
+    expect(mineWarnHorizon(0)).toBeCloseTo(15, 9);
+    expect(() => mineWarnHorizon(Number.NaN)).toThrow(/mineWarnHorizon: vx/);
   });
 
   it('early: a mine on the real course is warned of 2.5 s or more before contact, level or diving on the keys, at full and half ahead', () => {

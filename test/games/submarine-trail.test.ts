@@ -74,12 +74,13 @@ describe('submarine glow trail', () => {
     expect(steep / total).toBeLessThan(0.25);
   });
 
-  it('on the courses as the page lays them, a hull following the trail is never warned of a mine', () => {
+  it('on the courses as the page lays them, a hull following the trail is never warned of a mine, nor led under one across its cable', () => {
     // The page's warning (mines.ts mineAhead) comes on for a course within MINE_WARN_MARGIN of
     // contact; a pilot following the trail must never be led into one. Seeds 1 to 30 with 6 and 10
     // beacons; before the trail kept the warning's margin, 5 of the 60 came within it (seed 12 with
     // 10 beacons to 3.5 m of a mine's centre, its reach 3.9 m).
-    const warned: string[] = [];
+    const warned: string[] = [],
+      underCable: string[] = [];
     let runs = 0;
     for (let seed = 1; seed <= 30; seed++)
       for (const count of [6, 10]) {
@@ -105,12 +106,18 @@ describe('submarine glow trail', () => {
               for (const m of mines)
                 if (hullDistance(x, y, 0, m.x, m.y) < MINE_RADIUS + MINE_WARN_MARGIN)
                   warned.push(`seed ${seed}/${count}: (${x.toFixed(1)}, ${y.toFixed(1)})`);
+              // The cable runs from the mine's centre straight down to the seabed: a level hull
+              // across it (within half its length and a metre) and under the mine is on it.
+              for (const m of mines)
+                if (Math.abs(x - m.x) < SUBMARINE.length / 2 + 1 && y < m.y)
+                  underCable.push(`seed ${seed}/${count}: (${x.toFixed(1)}, ${y.toFixed(1)}) under (${m.x.toFixed(1)}, ${m.y.toFixed(1)})`);
             }
           }
         }
       }
     expect(runs).toBeGreaterThan(1000);
     expect(warned, warned.slice(0, 5).join('; ')).toEqual([]);
+    expect(underCable.length, underCable.slice(0, 5).join('; ')).toBe(0);
   });
 
   it('a glow is caught within 2.5 m of the hull, along or across it', () => {
