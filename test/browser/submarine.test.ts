@@ -548,7 +548,6 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     expect(r.ahead, `${device}: ${r.ahead.toFixed(1)} m ahead at ${r.cam.zoom.toFixed(2)} px/m`).toBeGreaterThan(40);
     if (device === 'desktop') expect(r.cam.zoom).toBeCloseTo(8, 1);
     else expect(r.cam.width / r.cam.zoom).toBeGreaterThan(69);
-    await g.page.screenshot({ path: `/tmp/sub-ahead-${device}.png` });
     // Far from the beacon (250 m short, at its depth) the camera zooms out no further than 5 px/m
     // on the desktop (the 12 m hull 60 px long; it went to 2 px/m, about 35 px seen at speed) and
     // 4 px/m on a phone.
