@@ -382,6 +382,34 @@ export function ringWay(b: Pick<RingBearing, 'side' | 'up' | 'bearing'>): RingWa
   return { side, up: way(b.up), sideAmount: Math.abs(b.bearing) > Math.PI / 2 ? 'far ' : amount(b.side), upAmount: amount(b.up) };
 }
 
+/**
+ * Where a ring lying `way` from the line flown is, in words: "to the left and far higher", or on a
+ * phone (`compact`) "left, far higher"; "straight ahead" when it lies on the line. The lesson tip
+ * and the banner after a ring is laid ahead both say it with this, from the same `way`, so the two
+ * never disagree.
+ */
+export function ringWhere(way: RingWay, compact: boolean): string {
+  const side = way.side > 0 ? 'right' : 'left';
+  const sideWords = compact && way.sideAmount ? `${way.sideAmount}${side}` : `${way.sideAmount}to the ${side}`;
+  return (
+    [way.side ? sideWords : '', way.up ? `${way.upAmount}${way.up > 0 ? 'higher' : 'lower'}` : '']
+      .filter(Boolean)
+      .join(compact ? ', ' : ' and ') || 'straight ahead'
+  );
+}
+
+/**
+ * The banner when ring `ring` (0-based) has been laid on ahead after a miss (`relayAfterMiss`), lying
+ * `way` from the line flown: "Ring 2 is now just ahead of you" when it lies on the line, else
+ * "Ring 2 is now ahead: to the left and far higher" (`ringWhere`, the lesson tip's words).
+ * @throws RangeError on a ring that is not a non-negative integer.
+ */
+export function relayText(ring: number, way: RingWay, compact: boolean): string {
+  if (!(Number.isInteger(ring) && ring >= 0)) throw new RangeError(`relayText: ring must be a non-negative integer, got ${ring}`);
+  const n = `Ring ${ring + 1} is now`;
+  return way.side || way.up ? `${n} ahead: ${ringWhere(way, compact)}` : `${n} just ahead of you`;
+}
+
 /** Who reads a lesson tip (`lessonTipText`). */
 export interface TipReader {
   /** Touch first (a phone): the tip names the on-screen stick, not the arrow keys. */
@@ -420,10 +448,7 @@ export function lessonTipText(ring: number, way: RingWay, reader: TipReader): st
       : `Fly through the yellow rings. The marker ⊕ shows where you will pass if you let go of the ${input}.`;
   const w = way;
   const side = w.side > 0 ? 'right' : 'left';
-  const sideWords = compact && w.sideAmount ? `${w.sideAmount}${side}` : `${w.sideAmount}to the ${side}`;
-  const where =
-    [w.side ? sideWords : '', w.up ? `${w.upAmount}${w.up > 0 ? 'higher' : 'lower'}` : ''].filter(Boolean).join(compact ? ', ' : ' and ') ||
-    'straight ahead';
+  const where = ringWhere(w, compact);
   const arrow = w.side > 0 ? '→' : '←';
   const key = w.up > 0 !== reader.pilotPitch ? '↑' : '↓';
   const stickUp = key === '↑' ? 'up' : 'down';

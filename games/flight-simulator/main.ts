@@ -108,6 +108,7 @@ import {
   type RingWay,
   recedingSpeed,
   relayAfterMiss,
+  relayText,
   ringBearing,
   ringWay,
 } from './course';
@@ -357,8 +358,12 @@ function pilotInput(): { roll: number; pitch: number; yaw: number } {
  * over RING_FADE_MS from then (`paintRings`).
  */
 const doneAt = new Map<number, number>();
-/** Game events for the banner and the sounds, newest last: text, colour, game time. */
-const events: { text: string; colour: string; time: number }[] = [];
+/**
+ * Game events for the banner and the sounds, newest last: text, colour, game time, and for a ring
+ * laid ahead after a miss that ring (`relaid`, 0-based): its banner says where it lies in words
+ * worked out each frame, as the lesson tip's are (./course.ts relayText), so the two agree.
+ */
+const events: { text: string; colour: string; time: number; relaid?: number }[] = [];
 const sound = getSound();
 const engine = sound.engine('propeller');
 /** Game time of the last warning beep, s. */
@@ -491,7 +496,7 @@ function checkRings(time: number): void {
       ringMeshes[k]?.quaternion.setFromUnitVectors(zAxis, ringNormal.set(r.nx, r.ny, r.nz));
     });
     // Said once the miss's banner has been read (at once when no miss came with it).
-    events.push({ text: `Ring ${next + 1} is now just ahead of you`, colour: '#ffd166', time: again ? time : time + 1.4 });
+    events.push({ text: `Ring ${next + 1} is now ahead`, colour: '#ffd166', time: again ? time : time + 1.4, relaid: next });
   }
   // Recovering from a miss: the ring now next turns to face the aircraft (a ring met at an angle
   // was seen edge on), and so does one whose plane the aircraft crossed far off (beyond MISS_RANGE:
@@ -1028,7 +1033,8 @@ function updateBanner(t: number): void {
   // On a phone the banner gives way to a tip the flight waits on (the two covered the top third).
   if (last && age >= 0 && age < BANNER_LIFE && state.phase === 'flying' && !(compact && holding && tipText)) {
     banner.style.display = 'block';
-    banner.textContent = last.text;
+    const text = last.relaid === undefined ? last.text : relayText(last.relaid, wayOf(last.relaid), compact);
+    if (banner.textContent !== text) banner.textContent = text;
     banner.style.color = last.colour;
     banner.style.opacity = String(age < 1.4 ? 1 : (BANNER_LIFE - age) / 0.6);
   } else banner.style.display = 'none';
@@ -1059,11 +1065,26 @@ const shownAttitude = { pitch: 0, roll: 0, visible: false };
 /** The cockpit view's canopy frame and instrument panel; the attitude indicator sits in the panel's middle. */
 const cockpit = createCockpit(layout.stage, attitudeSize);
 
+/**
+ * Puts "Paused" and the end's button (Fly again, Try again) above the cockpit's panel, whose top is
+ * `panelTop` CSS px from the stage's top (0: no panel, they go back to the scene's bottom): low in
+ * the scene they sat on the attitude indicator.
+ */
+function liftOffPanel(panelTop: number): void {
+  const lift = panelTop > 0 ? app.canvas.clientHeight - panelTop + PANEL_RIM : 0;
+  const pad = lift > 0 ? `${lift + 8}px` : '2%';
+  if (pauseOverlay.element.style.paddingBottom !== pad) pauseOverlay.element.style.paddingBottom = pad;
+  const again = layout.stage.querySelector<HTMLElement>('.bp-action');
+  const bottom = lift > 0 ? `${lift + 10}px` : '';
+  if (again && again.style.bottom !== bottom) again.style.bottom = bottom;
+}
+
 /** Shows the cockpit view's frame and panel (or hides them) and draws the gauges for `i`. */
 function drawCockpit(on: boolean, i: ReturnType<typeof instruments>): void {
   cockpit.show(on);
   horizon.show(on);
   shownAttitude.visible = on;
+  liftOffPanel(on ? cockpit.panelTop() : 0);
   if (!on) return;
   cockpit.draw({ speed: i.speed, altitude: i.altitude, heading: i.heading, climb: i.climb, throttle: state.throttle });
   const slot = cockpit.attitudeSlot();
@@ -1139,6 +1160,11 @@ function pointToNextRing(): void {
     ringOutline.style.left = `${x}px`;
     ringOutline.style.top = `${y}px`;
     ringOutline.style.width = ringOutline.style.height = `${2 * r}px`;
+    // The cockpit's panel is in front of the world: the outline is cut off at its top edge, as the
+    // ring is (it was drawn on over the instruments).
+    const cut = Math.max(0, y + r - bottom);
+    const clip = cut > 0 ? `inset(-4px -4px ${cut}px -4px)` : '';
+    if (ringOutline.style.clipPath !== clip) ringOutline.style.clipPath = clip;
     ringOutline.style.opacity = String(Math.max(0.3, Math.min(1, 1 - (rPx - 40) / 120)));
     ringPointer.textContent = ringAim.text;
     const bw = ringPointer.offsetWidth / 2,
@@ -1169,6 +1195,11 @@ function pointToNextRing(): void {
       places.find((p) => !coversRing(p)) ??
       places.find((p) => !coversMarker(p)) ??
       places[0]!;
+  } else if (ahead && bottom < h && x > 0 && x < w && y >= bottom && y < h) {
+    // Ahead but under the cockpit's panel (a ring below the nose): the label points down at it from
+    // just above the panel and says where it is (a small ▼ at the scene's edge was missed).
+    y = bottom;
+    ringAim.text = `▼ ring ${i + 1} · ${distance} · under the panel`;
   } else {
     // Behind the camera the projection is mirrored: point the other way.
     let dx = x - w / 2,
@@ -1259,6 +1290,13 @@ let tipText = '';
 let tipRing = -1,
   tipWay: RingWay = { side: 0, up: 0, sideAmount: '', upAmount: '' };
 
+/** Which ways ring `i` lies from the line flown now (./course.ts ringWay): the tip and the banner both read it. */
+function wayOf(i: number): RingWay {
+  const V = shell.world.components.Velocity,
+    e = handles.body;
+  return ringWay(ringBearing(rings[i]!, now, [V.x[e]!, V.y[e]!, V.z[e]!]));
+}
+
 /** The key that climbs (up, or down with the pilot's pitch) or dives, for `up` +1 or -1. */
 function climbKey(up: number): string {
   return up > 0 !== params.pilotPitch ? '↑' : '↓';
@@ -1277,9 +1315,7 @@ function lessonTip(): string {
   }
   // The ways are worked out afresh every frame from where the aircraft is and flies now: a tip
   // kept from when it first showed said "Ring 2 is to the left" with the ring already to the right.
-  const V = shell.world.components.Velocity,
-    e = handles.body;
-  tipWay = ringWay(ringBearing(rings[i]!, now, [V.x[e]!, V.y[e]!, V.z[e]!]));
+  tipWay = wayOf(i);
   // Ring 1's tip is the start's, up while the flight waits; on a phone each tip goes a little after
   // the pilot has acted on it (TIP_LINGER), so it does not cover the sky all the way to its ring.
   if ((i === 0 && !holding) || shell.world.time >= tipGoneAt) return '';
@@ -1308,17 +1344,15 @@ function showTip(): void {
   }
 }
 
-// ---- A ring behind the aircraft: the aircraft fades so the ring shows through --------------------
+// ---- A ring behind the aircraft: the aircraft stays solid, the ring's outline and label show it ----
 
 /**
- * The drawn aircraft's opacity now, in [PLANE_FADED, 1] (tests). In the chase view a ring low ahead
- * sits behind the aircraft on the screen (a stranger lost a low ring there): while the next ring's
- * centre is within half its radius of the aircraft's box on the screen, the aircraft eases to
- * PLANE_FADED, see-through, and back once it is clear.
+ * Whether the next ring's centre lies behind the drawn aircraft on the screen now (chase view; within
+ * half the ring's radius of the aircraft's box; tests). The aircraft, nearer, stays solid in front of
+ * the ring (faded see-through, the ring showed through it as if in front: a depth error to the eye);
+ * the ring's outline and label, drawn over the scene, say where it is.
  */
-let planeOpacity = 1;
-/** The aircraft's opacity while a ring is behind it. */
-const PLANE_FADED = 0.3;
+let ringBehindPlane = false;
 /** The aircraft's box on the screen as last drawn (px: left, top, width, height; tests). */
 const planeBox: [number, number, number, number] = [0, 0, 0, 0];
 const corner = new Vector3();
@@ -1337,8 +1371,8 @@ const PLANE_POINTS: readonly (readonly [number, number, number])[] = [
   [0, 0, modelBox.max.z],
   [0, 0, modelBox.min.z],
 ];
-/** Fades the aircraft while the next ring is behind it on the screen (chase view), eased over `dt` s. */
-function fadeOverRing(dt: number): void {
+/** Finds the aircraft's box on the screen and whether the next ring is behind it (`ringBehindPlane`; chase view). */
+function findRingBehindPlane(): void {
   let behind = false;
   if (state.camera === 'chase' && state.phase === 'flying') {
     let x0 = Infinity,
@@ -1362,15 +1396,7 @@ function fadeOverRing(dt: number): void {
       behind = cx > x0 - r / 2 && cx < x1 + r / 2 && cy > y0 - r / 2 && cy < y1 + r / 2;
     }
   }
-  const target = behind ? PLANE_FADED : 1;
-  planeOpacity = approach(planeOpacity, target, 4, dt);
-  const see = planeOpacity < 1;
-  if (planeMaterial.transparent !== see) {
-    planeMaterial.transparent = see;
-    planeMaterial.depthWrite = !see;
-    planeMaterial.needsUpdate = true;
-  }
-  planeMaterial.opacity = planeOpacity;
+  ringBehindPlane = behind;
 }
 
 // ---- The engine's note and the message lane ------------------------------------------------------
@@ -1603,8 +1629,6 @@ function chaseOffsetNow(): [number, number] {
 }
 /** The camera's field of view, degrees: `base`, widened by up to `fast` more between `from` and `to` m/s (speed shows). */
 const FOV = Object.freeze({ base: 64, fast: 10, from: 110, to: 170 });
-/** performance.now() of the last frame the aircraft's fade was eased in, ms. */
-let lastFade = 0;
 
 function frame(alpha = 1): void {
   const world = shell.world;
@@ -1700,8 +1724,7 @@ function frame(alpha = 1): void {
   markPath();
   showWarning(world.time);
   pointToNextRing();
-  fadeOverRing(Math.min(0.2, Math.max(0, (performance.now() - lastFade) / 1000)));
-  lastFade = performance.now();
+  findRingBehindPlane();
   showTip();
   engine.set(state.phase === 'crashed' ? 0 : 0.25 + 0.75 * state.throttle);
   const i = crashReadings ?? instruments(world);
@@ -1830,8 +1853,8 @@ shell.expose({
   }),
   /** The engine's note now ('' when it does not show). */
   throttleNote: () => (throttleNote.style.display === 'none' ? '' : (throttleNote.textContent ?? '')),
-  /** The drawn aircraft's opacity (below 1 while the next ring is behind it on the screen) and its box on the screen (px). */
-  planeFade: () => ({ opacity: planeOpacity, box: [...planeBox] }),
+  /** The drawn aircraft's opacity (1: it stays solid), its box on the screen (px) and whether the next ring is behind it there. */
+  planeFade: () => ({ opacity: planeMaterial.transparent ? planeMaterial.opacity : 1, box: [...planeBox], behind: ringBehindPlane }),
   /** The banner's text now ('' when none shows) and the warning. */
   banner: () => ({ text: banner.style.display === 'none' ? '' : (banner.textContent ?? ''), warning: state.warning }),
   params,

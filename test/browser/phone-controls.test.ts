@@ -364,7 +364,7 @@ describe('phone controls', () => {
     await g.close();
   });
 
-  it('flight simulator: a tap of Faster steps the engine and says so; the header keeps two lines after misses; a ring under the nose shows through the aircraft; messages keep clear of the ring and the gauges', async () => {
+  it('flight simulator: a tap of Faster steps the engine and says so; the header keeps two lines after misses; a ring under the nose stays behind the solid aircraft; messages keep clear of the ring and the gauges', async () => {
     const g = await h.openGame('flight-simulator', PHONE);
     type Box = [number, number, number, number];
     type Fly = {
@@ -372,7 +372,7 @@ describe('phone controls', () => {
       rings(): { x: number; y: number; z: number }[];
       aircraftBody(): number;
       world: { time: number; components: { Position: { x: Float64Array; y: Float64Array; z: Float64Array } } };
-      planeFade(): { opacity: number; box: number[] };
+      planeFade(): { opacity: number; box: number[]; behind: boolean };
       ringPointer(): { inView: boolean; ring: number[] };
       messages(): { low: boolean; boxes: { hud: string; box: Box }[] };
       cockpit(): { visible: boolean; panelTop: number };
@@ -385,7 +385,7 @@ describe('phone controls', () => {
       });
     const before = await header();
     // The aircraft put 70 m over ring 1's line, 500 m before it: the ring lies under the nose, behind
-    // the aircraft on the screen, and the aircraft fades until the ring shows through it.
+    // the aircraft on the screen (the aircraft stays solid in front of it).
     const place = (up: number, back: number) =>
       g.page.evaluate(
         ([up, back]) => {
@@ -412,8 +412,11 @@ describe('phone controls', () => {
       const w = window.game as unknown as Fly;
       const f = w.planeFade(),
         p = w.ringPointer();
-      return f.opacity <= 0.31 ? { ...f, ring: p.ring, inView: p.inView } : null;
+      return f.behind ? { ...f, ring: p.ring, inView: p.inView } : null;
     }, null);
+    // The aircraft, nearer, stays solid in front of the ring behind it (faded see-through, the ring
+    // showed through it as if in front); the ring's label and outline show where it is.
+    expect(faded.opacity).toBe(1);
     // The ring's centre is within half its radius of the aircraft's box on the screen (behind it).
     const [x, y, bw, bh] = faded.box as Box,
       [cx, cy, r] = faded.ring as [number, number, number];
@@ -422,9 +425,9 @@ describe('phone controls', () => {
     expect(cx).toBeLessThan(x + bw + r / 2);
     expect(cy).toBeGreaterThan(y - r / 2);
     expect(cy).toBeLessThan(y + bh + r / 2);
-    // Far above ring 1 it is no longer behind the aircraft: the aircraft is solid again.
+    // Far above ring 1 it is no longer behind the aircraft.
     await place(-250, 900);
-    await g.waitFor(() => ((window.game as unknown as Fly).planeFade().opacity === 1 ? true : null), null);
+    await g.waitFor(() => (!(window.game as unknown as Fly).planeFade().behind ? true : null), null);
     // In the cockpit, a ring high ahead: the messages (the engine's note after a tap) sit in the low
     // lane, above the instrument panel, clear of the ring and of each other.
     await hold(g.page, 'camera: chase / cockpit', 100);

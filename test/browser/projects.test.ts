@@ -1264,6 +1264,7 @@ describe('projects', () => {
       state: { missed: number; score: number };
       behindFor(): number;
       banner(): { text: string };
+      tip(): string;
     };
     // Before the first input the flight waits (no step runs): the aircraft is put 800 m to the right
     // of ring 1 (+z; past MISS_RANGE, 600 m, so crossing its plane there counts nothing) and 100 m
@@ -1334,6 +1335,7 @@ describe('projects', () => {
           missed: w.state.missed,
           status: r.status,
           banner: w.banner().text,
+          tip: w.tip(),
           distance: Math.hypot(dx, r.y - c.Position.y[e]!, dz),
           // The angle between the way flown and the line to the ring, degrees.
           off: (Math.acos((dx * vx + dz * vz) / (Math.hypot(dx, dz) * Math.hypot(vx, vz))) * 180) / Math.PI,
@@ -1342,7 +1344,12 @@ describe('projects', () => {
       before,
       60_000,
     );
-    expect(again).toMatchObject({ missed: 1, status: 'ahead', banner: 'Ring 2 is now just ahead of you' });
+    expect(again).toMatchObject({ missed: 1, status: 'ahead' });
+    // The banner and ring 2's tip, read in the same frame, say the same of where ring 2 is (the
+    // banner said "just ahead of you" while the tip said "to the left and far higher").
+    const where = /^Ring 2 is now (?:just ahead of you|ahead: (.+))$/.exec(again.banner);
+    expect(where, again.banner).not.toBeNull();
+    if (again.tip) expect(again.tip).toMatch(`Ring 2 is ${where![1] ?? 'straight ahead'}`);
     expect(again.distance).toBeGreaterThan(600);
     expect(again.distance).toBeLessThan(1000);
     expect(again.off).toBeLessThan(30);

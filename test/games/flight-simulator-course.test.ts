@@ -46,6 +46,7 @@ import {
   reachable,
   recedingSpeed,
   relayAfterMiss,
+  relayText,
   ringBearing,
   ringDifficulty,
   ringWay,
@@ -399,6 +400,27 @@ describe('flight simulator course', () => {
     expect(longest).toBeLessThanOrEqual(90);
     expect(lessonTipText(0, worst, phone)).toMatch(/^Fly through the yellow rings\. ⊕ .*stick\.$/);
     expect(() => lessonTipText(4, worst, phone)).toThrow(/lessonTipText: ring must be an integer in \[0, 3\], got 4/);
+  });
+
+  it("the banner of a ring laid ahead after a miss and that ring's lesson tip, from the same way, say the same of where it lies", () => {
+    // A stranger saw "Ring 2 is now just ahead of you" over "Ring 2 is to the left and far higher".
+    for (const compact of [false, true])
+      for (const w of RING_WAYS) {
+        const banner = relayText(1, w, compact),
+          tip = lessonTipText(1, w, { touch: compact, compact, pilotPitch: false });
+        const said = /^Ring 2 is now (?:just ahead of you|ahead: (.+))$/.exec(banner);
+        expect(said, banner).not.toBeNull();
+        // "just ahead" only for a ring on the line flown; else the tip's very words.
+        expect(said![1] === undefined, banner).toBe(!w.side && !w.up);
+        expect(
+          tip.startsWith(`Ring 2 is ${said![1] ?? 'straight ahead'}:`) || tip.startsWith(`Ring 2 is ${said![1]}.`),
+          `${banner} / ${tip}`,
+        ).toBe(true);
+      }
+    expect(relayText(1, { side: -1, up: 1, sideAmount: '', upAmount: 'far ' }, false)).toBe(
+      'Ring 2 is now ahead: to the left and far higher',
+    );
+    expect(() => relayText(-1, RING_WAYS[0]!, false)).toThrow(/relayText: ring must be a non-negative integer, got -1/);
   });
 
   it('a new best beats a kept best: the first run is kept but not praised, a worse or equal run is not a best', () => {
