@@ -935,9 +935,12 @@ function drawThrow(world: PhysicsWorld): void {
   verdictText.style.fontSize = lastThrow.good ? 34 : app.screen.width < 600 ? 16 : 20;
   // Wrapped to the screen's width less a margin: on a phone a long hint ran off the left edge.
   verdictText.style.wordWrapWidth = Math.max(120, app.screen.width - 24);
+  // A hit's points shrink away in their last third rather than fade: a faded popup let the confetti
+  // of a cleared level show through it, as if drawn over it. Opaque, it stays over the confetti.
+  verdictText.scale.set(lastThrow.good ? Math.max(0, Math.min(1, 3 * (1 - age / VERDICT_SHOWN))) : 1);
   const half = verdictText.width / 2 + 8;
   verdictText.x = Math.min(Math.max(cam.toScreenX(lastThrow.at[0]), half), app.screen.width - half);
-  // A hit's points rise as they fade; a miss's hint rises for its first second, then holds.
+  // A hit's points rise as they shrink; a miss's hint rises for its first second, then holds.
   const rise = lastThrow.good ? age : Math.min(age, 1);
   verdictText.y = Math.max(cam.toScreenY(lastThrow.at[1]) - 18 * rise, 70);
   // Clear of the off-screen marker's label ("12 m past ▸") at the right edge: a verdict that starts
@@ -951,7 +954,6 @@ function drawThrow(world: PhysicsWorld): void {
       verdictText.y = under ? Math.max(verdictText.y, oBottom + verdictText.height) : Math.min(verdictText.y, oTop);
     }
   }
-  verdictText.alpha = lastThrow.good ? Math.min(1, 3 * (1 - age / VERDICT_SHOWN)) : 1;
 }
 
 /** Dots of the last throw's trail drawn in the last frame. */

@@ -720,34 +720,57 @@ export function previewFlight(
  * The flight past the preview's end, for a faint guide (the game's aim draws it as hollow dots): the
  * drag-free path of a stone (radius PROJECTILE_RADIUS) thrown from LAUNCH at (vx, vy), m/s, under
  * gravity `g` (m/s^2 down, > 0), from time `t0` (s, >= 0; the time of the first touch) on, as if
- * nothing stood in its way but the level's ground (its slabs and a pit's floor; not a hill, a bank
- * or the castle): x, y pairs (m) every PREVIEW_DT s, ending where the stone's bottom comes down to
- * that ground, past the ground's ends, or `extra` s after t0. A throw blocked by a bank or a piece so
- * shows where it was headed; the stone itself stops or bounces at the first touch.
+ * nothing stood in its way but the level's ground (its slabs, a pit's floor, and the top of a hill or
+ * bank the stone comes down on from above; it passes through a bank's side face and the castle):
+ * x, y pairs (m) every PREVIEW_DT s, the last one where the stone's bottom comes down to that ground
+ * (found to within a millimetre between two steps), past the ground's ends, or `extra` s after t0.
+ * A throw blocked by a bank or a piece so shows where it was headed, and never goes into the earth
+ * of a hill it falls onto; the stone itself stops or bounces at the first touch.
  * @throws Error if g or extra is not a positive number, or t0 is not a number >= 0.
  */
 export function flightPast(lv: Pick<Level, 'terrain'>, vx: number, vy: number, g: number, t0: number, extra = 2): number[] {
   if (!(g > 0)) throw new Error(`flightPast: g must be > 0 m/s^2, got ${g}`);
   if (!(t0 >= 0)) throw new Error(`flightPast: t0 must be >= 0 s, got ${t0}`);
   if (!(extra > 0)) throw new Error(`flightPast: extra must be > 0 s, got ${extra}`);
+  const xAt = (t: number): number => LAUNCH.x + vx * t,
+    yAt = (t: number): number => LAUNCH.y + vy * t - 0.5 * g * t * t;
+  // Down on the ground at time t (falling, its bottom at or under the ground below it), for a stone
+  // whose bottom was at `from` (m) a step before: a hill counts only if that was over its top.
+  const down = (t: number, from: number): boolean => vy - g * t < 0 && yAt(t) - PROJECTILE_RADIUS <= groundAt(lv, xAt(t), from);
   const out: number[] = [];
   const steps = Math.ceil(extra / PREVIEW_DT);
   for (let i = 0; i <= steps; i++) {
     const t = t0 + i * PREVIEW_DT;
-    const x = LAUNCH.x + vx * t,
-      y = LAUNCH.y + vy * t - 0.5 * g * t * t;
+    const x = xAt(t);
     if (x < GROUND.minX || x > GROUND.maxX) break;
-    out.push(x, y);
-    // Down on the surface (once past the start, which may be on it already).
-    if (i > 0 && vy - g * t < 0 && y - PROJECTILE_RADIUS <= groundAt(lv, x)) break;
+    // (Once past the start, which may be on the ground already.)
+    const from = yAt(t - PREVIEW_DT) - PROJECTILE_RADIUS;
+    if (i > 0 && down(t, from)) {
+      // Between the last point in the air and this one: halve the interval down to under a millimetre.
+      let lo = t - PREVIEW_DT,
+        hi = t;
+      const speed = Math.hypot(vx, vy) + g * hi;
+      while ((hi - lo) * speed > 1e-3) {
+        const mid = (lo + hi) / 2;
+        if (down(mid, from)) hi = mid;
+        else lo = mid;
+      }
+      out.push(xAt(hi), yAt(hi));
+      break;
+    }
+    out.push(x, yAt(t));
   }
   return out;
 }
 
-/** The height of the ground's slabs or a pit's floor (not a hill) at x, m; -Infinity off the ground. */
-function groundAt(lv: Pick<Level, 'terrain'>, x: number): number {
+/**
+ * The height of the ground under x, m, for a stone whose bottom is at `from` (m): the top of the
+ * ground's slabs or a pit's floor, and of a hill only if `from` is at or over the hill's top (less a
+ * centimetre: a stone that went into a hill's side face passes through it); -Infinity off the ground.
+ */
+function groundAt(lv: Pick<Level, 'terrain'>, x: number, from: number): number {
   let top = Number.NEGATIVE_INFINITY;
-  for (const t of lv.terrain) if (t.kind !== 'hill' && x >= t.minX && x <= t.maxX) top = Math.max(top, t.maxY);
+  for (const t of lv.terrain) if (x >= t.minX && x <= t.maxX && (t.kind !== 'hill' || from >= t.maxY - 0.01)) top = Math.max(top, t.maxY);
   return top;
 }
 

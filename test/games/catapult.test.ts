@@ -21,6 +21,7 @@ import {
   PULL,
   previewFlight,
   pullFor,
+  surfaceAt,
   tally,
   worldOptions,
 } from '../../games/catapult/scene';
@@ -296,6 +297,42 @@ describe('catapult rules', () => {
     expect(landX).toBeGreaterThan(hill.maxX);
     expect(Math.abs(past[past.length - 2]! - landX)).toBeLessThanOrEqual(vx * PREVIEW_DT);
     expect(() => flightPast(lv, vx, vy, G, -1)).toThrow(/flightPast: t0 must be >= 0 s, got -1/);
+  });
+
+  it('on the hill fort, the faint flight past a piece on the hill ends on the hill top, never inside it', () => {
+    // Level 6 (issue 34): a throw that touches a post or the tower on the 2 m hill first had its faint
+    // flight go on down into the hill's earth (the hill was not ground to it). For a sweep of throws
+    // whose first touch is at or over the hill's top, no faint point may have the stone's bottom
+    // under the surface there (surfaceAt: the hill's top or the grass) by more than 2 mm.
+    const { w, lv } = level(5);
+    const hill = lv.terrain.find((t) => t.kind === 'hill')!;
+    let checked = 0,
+      onHill = 0;
+    for (let deg = 0; deg <= 60; deg += 4) {
+      for (let f = 0.3; f <= 1.001; f += 0.05) {
+        const v = f * PULL.max * PULL.gain,
+          a = (deg * Math.PI) / 180;
+        const vx = v * Math.cos(a),
+          vy = v * Math.sin(a);
+        const arc = previewFlight(w, lv, vx, vy, G);
+        const ex = arc[arc.length - 2]!,
+          ey = arc[arc.length - 1]!;
+        if (ey - PROJECTILE_RADIUS < hill.maxY - 0.01) continue;
+        checked++;
+        const past = flightPast(lv, vx, vy, G, (ex - LAUNCH.x) / vx);
+        const lastX = past[past.length - 2]!;
+        if (lastX >= hill.minX && lastX <= hill.maxX) onHill++;
+        for (let i = 0; i < past.length; i += 2) {
+          const x = past[i]!,
+            y = past[i + 1]!;
+          expect(y - PROJECTILE_RADIUS, `${deg} deg, ${f.toFixed(2)} pull, faint point at x=${x.toFixed(2)} m`).toBeGreaterThanOrEqual(
+            surfaceAt(lv, x) - 2e-3,
+          );
+        }
+      }
+    }
+    expect(checked).toBeGreaterThan(10);
+    expect(onHill).toBeGreaterThan(3);
   });
 
   it('rejects a level out of range', () => {
