@@ -16,7 +16,7 @@
  * it tumbles slowly in place, and with no torque L stays fixed while w moves whenever the body is not
  * spinning about a principal axis. Mode 'flip' spins a box with three distinct moments about its
  * intermediate axis on the pivot: it flips over again and again (the Dzhanibekov effect); the plot
- * shows w in the body frame. The challenge: 10 flips within 20 s (spin it up with the yaw keys).
+ * shows w in the body frame. The challenge: 10 flips within 20 s (hold a yaw key to spin it up; a tap adds about 0.5 rad/s).
  * Keys: room: W A S D roll the cube away, left, towards the viewer, right; Q E turn it a quarter about the
  * vertical; pivot: W/S, A/D, Q/E torque about the camera's right, up and viewing axes. X stops the
  * spin; Space jump (room); M switches mode (room, cube on a pivot, flip); P pause, N single step, R reset.
@@ -145,6 +145,14 @@ let bestRolls = Infinity,
   bestFlips = 0;
 /** Arrow length per rad/s of angular velocity, m: set per world so the starting spin shows as ARROW_LENGTH. */
 let omegaScale = 1;
+/**
+ * Flip mode: how long a tap of a torque key torques, s of world time. At the default key torque
+ * (0.5 N m) about the box's intermediate axis (0.34 kg m^2) it adds about 0.5 rad/s to its spin;
+ * one frame's torque (1/60 s) added 0.02 rad/s, which the readout (0.1 rad/s) did not show.
+ */
+const FLIP_TAP_TIME = 0.35;
+/** Flip mode: the world time, s, until which each tapped torque key still counts as held. */
+const tapUntil = new Map<string, number>();
 /** Torque the keys ask for now, N m, world frame (read by the forces-stage system). */
 const keyTorque = new Float64Array(3);
 /** Room mode: the unit axis the roll keys turn the cube about (world frame), or zero when none is held. */
@@ -408,13 +416,32 @@ const boxGeometry = new BoxGeometry(1, 1, 1);
   }
   boxGeometry.setAttribute('color', new Float32BufferAttribute(colors, 3));
 }
-const boxMaterial = new MeshStandardMaterial({ vertexColors: true, roughness: 0.55, metalness: 0.05 });
+/**
+ * The faces' rim: white with a darker band at each face's border (multiplying its vertex colour), so the
+ * cube's twelve edges show as lines and its faces read as one box, not slabs stacked (edges drawn at a
+ * low pixel ratio step by a pixel where they run nearly straight up the screen).
+ */
+const edgeTexture = (() => {
+  const c = document.createElement('canvas');
+  c.width = c.height = 64;
+  const g = c.getContext('2d')!;
+  g.fillStyle = '#ffffff';
+  g.fillRect(0, 0, 64, 64);
+  g.strokeStyle = '#6e6e6e';
+  g.lineWidth = 6;
+  g.strokeRect(0, 0, 64, 64);
+  const texture = new CanvasTexture(c);
+  texture.colorSpace = SRGBColorSpace;
+  return texture;
+})();
+const boxMaterial = new MeshStandardMaterial({ vertexColors: true, map: edgeTexture, roughness: 0.55, metalness: 0.05 });
 const dress = (): void => {
   renderer.setShape(handles.body, { geometry: boxGeometry, material: boxMaterial, scale: 'inertia' });
   for (const wall of handles.walls) renderer.setColor(wall, 0xb9c8e6);
 };
 dress();
 shell.onWorldChange(() => {
+  tapUntil.clear();
   dress();
   plot?.clear();
 });
@@ -761,6 +788,10 @@ function labelTurnButtons(): void {
   labels.forEach((label, i) => {
     turnButtons[i]!.textContent = label;
   });
+  // Jump does something only in the room: elsewhere its button keeps its place in the grid, hidden.
+  const jumpButton = extras.buttons[2]!;
+  jumpButton.disabled = params.mode !== 'room';
+  jumpButton.style.visibility = params.mode === 'room' ? '' : 'hidden';
 }
 labelTurnButtons();
 
@@ -848,7 +879,15 @@ function latchRoll(fresh: boolean, rolling: boolean): void {
  * about the vertical (`yawKeeper`).
  */
 function updateKeyTorque(): void {
-  const on = (k: string): boolean => held.has(k) || pressed.has(k);
+  const t = shell.world.time;
+  // Flip mode: a press turns its key on for at least FLIP_TAP_TIME, so a tap steps the spin visibly.
+  if (params.mode === 'flip') for (const k of pressed) tapUntil.set(k, t + FLIP_TAP_TIME);
+  const on = (k: string): boolean => {
+    if (held.has(k) || pressed.has(k)) return true;
+    // Still within its tap's time (a time further ahead than that is left from a world since replaced).
+    const left = (tapUntil.get(k) ?? t) - t;
+    return left > 0 && left <= FLIP_TAP_TIME;
+  };
   const newRoll = pressed.has('w') || pressed.has('a') || pressed.has('s') || pressed.has('d');
   const pitch = (on('s') ? 1 : 0) - (on('w') ? 1 : 0);
   const yaw = (on('d') ? 1 : 0) - (on('a') ? 1 : 0);
@@ -1038,6 +1077,7 @@ let flash = 0;
 
 /** Zeroes the body's angular velocity (X key, panel button). */
 function stopSpin(): void {
+  tapUntil.clear();
   const w = shell.world.components.AngularVelocity;
   w.x[handles.body] = 0;
   w.y[handles.body] = 0;
@@ -1166,9 +1206,9 @@ function updateStatus(wx: number, wy: number, wz: number): void {
     const inBand = spin >= lo && spin <= hi;
     const band =
       spin < lo
-        ? `too slow: spin it up (${touch ? 'Yaw ▶' : 'D'})`
+        ? `too slow: hold ${touch ? 'Yaw ▶' : 'D'} to spin it up`
         : spin > hi
-          ? `too fast: brake (${touch ? 'Yaw ◀' : 'A'})`
+          ? `too fast: hold ${touch ? 'Yaw ◀' : 'A'} to brake`
           : `in the band ✓ · a kick (${touch ? 'Pitch' : 'W or S'}) makes it flip sooner`;
     status.set(
       over
