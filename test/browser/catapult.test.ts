@@ -65,6 +65,26 @@ type PhoneGame = {
 };
 
 /**
+ * Puts the page's game on `level` afresh (its reset), first setting `paused` if given and, with
+ * `clearCampaign`, the campaign's scores and stars back to 0.
+ */
+async function startLevel(p: GamePage, level: number, o: { paused?: boolean; clearCampaign?: boolean } = {}): Promise<void> {
+  await p.page.evaluate(
+    ([lv, paused, clear]) => {
+      const w = window.game as unknown as CatapultGame;
+      if (clear) {
+        w.campaign.scores.fill(0);
+        w.campaign.stars.fill(0);
+      }
+      if (paused !== null) w.paused = paused;
+      w.params.level = lv;
+      w.reset();
+    },
+    [level, o.paused ?? null, o.clearCampaign ?? false] as const,
+  );
+}
+
+/**
  * On a phone (390 x 844, touch) page of level 1 before its first touch: upright, the start view is the
  * catapult whole and large and the castle, the banner fits, the earth under the field is a strip with
  * no close-up of the castle, and a card says how to play; sideways (844 x 390) the whole field is in view and the card lies
@@ -464,11 +484,7 @@ describe('catapult', () => {
     // while the GPU has two unfinished (software WebGL, for a whole quick drag): a stranger read
     // "6 %" at the release of a 59 % throw. They are in the page now, set on every pointer move.
     type W = CatapultGame & { pacer: { mayDraw(): boolean }; fullPullPx(): number; cameraSettled(): boolean; aimLabel(): string };
-    await g.page.evaluate(() => {
-      const w = window.game as unknown as W;
-      w.params.level = 1;
-      w.reset();
-    });
+    await startLevel(g, 1);
     await g.waitFor(() => {
       const w = window.game as unknown as W;
       return w.cameraSettled() && w.shotsLeft() === 3 && !w.levelEnded();
@@ -640,13 +656,7 @@ describe('catapult', () => {
     expect(campaign.stars[0] === 3).toBe(three);
     expect(campaign.scores[0]).toBe(t.after + (three ? 2 * 150 : 0));
     // Back to a new campaign at level 1 for the next test.
-    await g.page.evaluate(() => {
-      const w = window.game as unknown as CatapultGame;
-      w.campaign.scores.fill(0);
-      w.campaign.stars.fill(0);
-      w.params.level = 1;
-      w.reset();
-    });
+    await startLevel(g, 1, { clearCampaign: true });
     expect(g.errors).toEqual([]);
   });
 
@@ -756,11 +766,7 @@ describe('catapult', () => {
       expect(long, JSON.stringify({ power, angle, ...said })).not.toBeNull();
       if (said.off !== '') expect(said.off).toBe(`${long![1]} m past ▸`);
     }
-    await g.page.evaluate(() => {
-      const w = window.game as unknown as CatapultGame;
-      w.params.level = 1;
-      w.reset();
-    });
+    await startLevel(g, 1);
     expect(g.errors).toEqual([]);
   });
 
@@ -791,23 +797,14 @@ describe('catapult', () => {
       expect(said.first![2]!, JSON.stringify(said)).toBeGreaterThan(said.castleMaxX + 0.3);
       expect(said.verdict, JSON.stringify({ level, power, angle, ...said })).toMatch(/^Long by \d+ m: pull less, or aim lower$/);
     }
-    await g.page.evaluate(() => {
-      const w = window.game as unknown as CatapultGame;
-      w.params.level = 1;
-      w.reset();
-    });
+    await startLevel(g, 1);
     expect(g.errors).toEqual([]);
   });
 
   it('a level cleared throws confetti that comes to rest on the ground, not in the earth under it', async () => {
     // Level 5: a tower in a pit (the ground's height changes under the confetti). On a phone the
     // confetti fell on through the earth (it had no floor).
-    await g.page.evaluate(() => {
-      const w = window.game as unknown as CatapultGame;
-      w.paused = false;
-      w.params.level = 5;
-      w.reset();
-    });
+    await startLevel(g, 5, { paused: false });
     await g.waitFor(() => !(window.game as unknown as CatapultGame).levelEnded(), null);
     // Every drawn frame the lowest bit over the ground, from the level's end until the bits are gone.
     await g.page.evaluate(() => {
@@ -838,13 +835,7 @@ describe('catapult', () => {
     const lowest = await g.page.evaluate(() => (window as unknown as { lowestBit: number }).lowestBit);
     expect(lowest).toBeGreaterThanOrEqual(0);
     expect(lowest).toBeLessThan(0.05);
-    await g.page.evaluate(() => {
-      const w = window.game as unknown as CatapultGame;
-      w.campaign.scores.fill(0);
-      w.campaign.stars.fill(0);
-      w.params.level = 1;
-      w.reset();
-    });
+    await startLevel(g, 1, { clearCampaign: true });
     expect(g.errors).toEqual([]);
   });
 
@@ -975,13 +966,7 @@ describe('catapult', () => {
   it('the end screen after skipped levels names them instead of claiming every castle fell', async () => {
     // L on a level not yet cleared moves on without counting it (levels 1 to 8 here), as a stranger
     // did; each level's name shows in the banner before its first throw.
-    await g.page.evaluate(() => {
-      const w = window.game as unknown as CatapultGame;
-      w.campaign.scores.fill(0);
-      w.campaign.stars.fill(0);
-      w.params.level = 1;
-      w.reset();
-    });
+    await startLevel(g, 1, { clearCampaign: true });
     const banner = () => g.page.evaluate(() => (window.game as unknown as CatapultGame & { bannerText(): string }).bannerText());
     await g.frames(2);
     expect(await banner()).toContain(`Level 1: ${levelName(0)}`);
