@@ -60,6 +60,22 @@ const FACE_UP: readonly (readonly [number, number, number, number])[] = [
   [S, 0, 0, S],
 ];
 
+/**
+ * Puts `body` at (x, y, z) m with orientation `q` (x, y, z, w) and no linear or angular velocity, then
+ * steps `world` `steps` times (1/60 s each): a cube set down on a face and let settle.
+ */
+function setDown(world: PhysicsWorld, body: number, x: number, y: number, z: number, q: readonly number[], steps: number): void {
+  const P = world.components.Position,
+    O = world.components.Orientation;
+  P.x[body] = x;
+  P.y[body] = y;
+  P.z[body] = z;
+  [O.x[body], O.y[body], O.z[body], O.w[body]] = q;
+  setVelocity(world, body, [0, 0, 0]);
+  setAngularVelocity(world, body, [0, 0, 0]);
+  for (let i = 0; i < steps; i++) step(world);
+}
+
 describe('rotating-cube room mode', () => {
   it('the cube falls, lands and rests on a face; thrown at a wall it stays in the room', () => {
     // No mode given: the room is the default, with Earth gravity.
@@ -220,17 +236,7 @@ describe('rotating-cube challenges', () => {
       addSystem(world, 'finalize', (w) => {
         pads.update(w, h.body);
       });
-      const P = world.components.Position,
-        O = world.components.Orientation;
-      const drop = (x: number, z: number, face = 2): void => {
-        P.x[h.body] = x;
-        P.y[h.body] = 0.6;
-        P.z[h.body] = z;
-        [O.x[h.body], O.y[h.body], O.z[h.body], O.w[h.body]] = FACE_UP[face]!;
-        setVelocity(world, h.body, [0, 0, 0]);
-        setAngularVelocity(world, h.body, [0, 0, 0]);
-        for (let i = 0; i < 90; i++) step(world);
-      };
+      const drop = (x: number, z: number, face = 2): void => setDown(world, h.body, x, 0.6, z, FACE_UP[face]!, 90);
       // The pads are inside the room, clear of the walls by more than the cube's half diagonal (0.71 m).
       for (const [x, z] of PADS_) expect(Math.max(Math.abs(x), Math.abs(z)) + PAD_HALF).toBeLessThan(ROOM_HALF - 0.2);
       // Beside the first pad (0.3 m past its edge): still pad 0.
@@ -338,8 +344,7 @@ describe('rotating-cube challenges', () => {
         ];
         const pads = new PadChallenge(layout);
         pads.pad = k;
-        const P = world.components.Position,
-          O = world.components.Orientation;
+        const P = world.components.Position;
         let torque = 0;
         addSystem(
           world,
@@ -349,13 +354,7 @@ describe('rotating-cube challenges', () => {
         addSystem(world, 'finalize', (w) => {
           pads.update(w, h.body);
         });
-        P.x[h.body] = px - dx;
-        P.y[h.body] = 0.51;
-        P.z[h.body] = pz - dz;
-        [O.x[h.body], O.y[h.body], O.z[h.body], O.w[h.body]] = q;
-        setVelocity(world, h.body, [0, 0, 0]);
-        setAngularVelocity(world, h.body, [0, 0, 0]);
-        for (let i = 0; i < 60; i++) step(world);
+        setDown(world, h.body, px - dx, 0.51, pz - dz, q, 60);
         expect(topFace(world, h.body)).not.toBe(want);
         // A slide onto the pad with the wanted face already up scores nothing: checked in the round test.
         torque = ROLL_TORQUE;
@@ -414,17 +413,7 @@ describe('rotating-cube challenges', () => {
       addSystem(world, 'finalize', (w) => {
         pads.update(w, h.body);
       });
-      const P = world.components.Position,
-        O = world.components.Orientation;
-      const drop = (f: number): void => {
-        P.x[h.body] = x;
-        P.y[h.body] = 0.51;
-        P.z[h.body] = z;
-        [O.x[h.body], O.y[h.body], O.z[h.body], O.w[h.body]] = FACE_UP[f]!;
-        setVelocity(world, h.body, [0, 0, 0]);
-        setAngularVelocity(world, h.body, [0, 0, 0]);
-        for (let i = 0; i < 60; i++) step(world);
-      };
+      const drop = (f: number): void => setDown(world, h.body, x, 0.51, z, FACE_UP[f]!, 60);
       // A face set up before (another top face: the change counts as a roll), then the one on the pad.
       if (before >= 0) drop(before);
       drop(face);
