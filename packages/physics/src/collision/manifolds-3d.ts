@@ -42,13 +42,10 @@ export interface Manifold3DBuffer {
   sep: Float64Array;
   id: Float64Array;
   /**
-   * Per point: accumulated normal impulse (N s); effective mass along n (kg; rebuilt every step by the
-   * solver's prepare, single precision: 1e-7 relative, less memory streamed each pass); approach speed
-   * at the start (m/s); 1 once the point has carried a normal impulse this step (> 0 after some pass),
+   * Per point: accumulated normal impulse (N s); approach speed at the start (m/s); 1 once the point has carried a normal impulse this step (> 0 after some pass),
    * else 0.
    */
   ln: Float64Array;
-  mn: Float32Array;
   vn0: Float64Array;
   carried: Uint8Array;
   /**
@@ -107,7 +104,6 @@ function createBuffer(n: number): Manifold3DBuffer {
     sep: f(p),
     id: f(p),
     ln: f(p),
-    mn: new Float32Array(p),
     vn0: f(p),
     carried: new Uint8Array(p),
     ft: f(3 * n),
@@ -155,25 +151,23 @@ export interface Contact3DState {
   /** Sensor overlaps found this step (moved into `sensing` when the step's events are made). */
   sensingNow: Map<number, number[]>;
   /**
-   * Per point of `current` (6 numbers each, solver/manifold-rows-3d.ts): r x n of both bodies; `jacobiansInv`
-   * the same place: I^-1 (r x n) of both (written only for rows whose bodies are not isotropic, so a pile
-   * of cubes streams only the crosses). Rebuilt every step; single precision (half the memory).
+   * Per point of `current` (6 numbers each, solver/manifold-layout-3d.ts JAC_STRIDE): I^-1 (r x n) of both
+   * bodies, written only for rows whose bodies are not isotropic (a pile of cubes never reads it).
+   * Rebuilt every step; single precision.
    */
-  jacobians: Float32Array;
   jacobiansInv: Float32Array;
   /**
-   * Per row of `current` (12 numbers each, solver/manifold-rows-3d.ts): the friction anchor's r x u of both
-   * bodies for u = t1, t2; `frictionInv` (18 a row, not isotropic rows only): I^-1 (r x u) of both for
-   * t1, t2, then I^-1 n of both (twist). Rebuilt every step; single precision.
+   * Per row of `current` (18 numbers each, not isotropic rows only): I^-1 (r x u) of both bodies for the
+   * friction anchor's u = t1, t2, then I^-1 n of both (twist). Rebuilt every step; single precision.
    */
-  frictionJacobians: Float32Array;
   frictionInv: Float32Array;
   /**
-   * Per row of `current` (solver/manifold-layout-3d.ts HEAD_STRIDE numbers each): the numbers of the row
-   * the solve reads every pass (normal, tangent, friction, effective masses, the speculative skip's
-   * bounds, isotropic inverse inertias), written there by prepareManifolds3D. Rebuilt every step.
+   * Per row of `current` (solver/manifold-layout-3d.ts REC_STRIDE numbers each): everything the solve reads
+   * of the row every pass in one block: normal, tangent, friction, effective masses, the speculative
+   * skip's bounds, isotropic inverse inertias, the friction anchor's crosses, and each point's r x n of
+   * both bodies, separation and effective mass along n. Written by prepareManifolds3D; rebuilt every step.
    */
-  solveHead: Float64Array;
+  solveRecord: Float64Array;
   /** 0 or 1, flipped at every biased solve pass: the order the points of a manifold are solved in (solver/manifold-rows-3d.ts). */
   solveParity: number;
   /** Per solver body: its rotation owed at the start of the solve (the linearised rotation is measured from it). */
@@ -345,11 +339,9 @@ export function contact3DStateOf(world: PhysicsWorld, create = false): Contact3D
       sensing: new Map(),
       sensingNow: new Map(),
       solveParity: 0,
-      jacobians: new Float32Array(0),
       jacobiansInv: new Float32Array(0),
-      frictionJacobians: new Float32Array(0),
       frictionInv: new Float32Array(0),
-      solveHead: new Float64Array(0),
+      solveRecord: new Float64Array(0),
     };
     // Swapped every step (collision/shapes-3d.ts): swapped twice here so V8 does not treat them as
     // constant and drop the optimised code at the first swap (see createShapeCollisionState).

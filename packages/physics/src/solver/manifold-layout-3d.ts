@@ -1,12 +1,15 @@
 /**
- * The layout of the 3D manifold rows' per-step packed arrays (Contact3DState's jacobians, jacobiansInv,
- * frictionJacobians and frictionInv, collision/manifolds-3d.ts), written by prepareManifolds3D
- * (solver/manifold-prepare-3d.ts) and read by the solve (solver/manifold-solve-3d.ts). Every row there is
- * a row of angular parts along a direction u: body A's (ROW_AX ..) then body B's (ROW_BX ..); in
- * `jacobians` and `frictionJacobians` the crosses r x u (m), in `jacobiansInv` and `frictionInv` their
- * products with the world inverse inertia tensor, I^-1 (r x u) (1/(kg m)), kept only for a manifold
- * whose bodies are not isotropic (a pile of cubes streams the crosses alone). `solveHead` holds each
- * manifold's own numbers (HEAD_*), so a pass reads one run of memory a manifold, not a dozen columns.
+ * The layout of the 3D manifold rows' per-step packed arrays (Contact3DState's solveRecord, jacobiansInv
+ * and frictionInv, collision/manifolds-3d.ts), written by prepareManifolds3D (solver/manifold-prepare-3d.ts)
+ * and read by the warm start, the solve and restitution (solver/manifold-solve-3d.ts). A row of angular
+ * parts along a direction u is body A's (ROW_AX ..) then body B's (ROW_BX ..): the crosses r x u (m), or
+ * in `jacobiansInv` and `frictionInv` their products with the world inverse inertia tensor,
+ * I^-1 (r x u) (1/(kg m)), kept only for a manifold whose bodies are not isotropic (a pile of cubes never
+ * reads them). `solveRecord` holds everything else a pass reads of a manifold in one block of REC_STRIDE
+ * numbers: its head (HEAD_*), its friction rows' crosses (REC_T1, REC_T2), then each point's normal row,
+ * separation and effective mass (REC_POINTS, POINT_*), so a pass streams one run of memory a manifold
+ * instead of a column each. The crosses and effective masses are kept rounded to single precision (as
+ * Math.fround), the numbers the solve has always used.
  *
  * A module of numeric constants only, which every build folds into the code that reads it
  * (scripts/build.mjs isConstantModule).
@@ -44,23 +47,21 @@ export const ANCHOR_BZ = 5;
 /** Numbers a point keeps in `anchors`. */
 export const ANCHOR_STRIDE = 6;
 
-/** Numbers a contact point keeps in `jacobians` and in `jacobiansInv` (one row, u = n): point q's at q * JAC_STRIDE. */
+/** Numbers a contact point keeps in `jacobiansInv` (one row, u = n): point q's at q * JAC_STRIDE. */
 export const JAC_STRIDE = 6;
 
-// A manifold's friction rows, at FRICTION_STRIDE i in frictionJacobians and FRICTION_INV_STRIDE i in frictionInv.
+// A manifold's friction rows in frictionInv, at FRICTION_INV_STRIDE i.
 /** Where the t1 row of the friction anchor starts. */
 export const FRICTION_T1 = 0;
 /** Where the t2 row of the friction anchor starts. */
 export const FRICTION_T2 = 6;
-/** frictionInv only: where the twist row starts (I_A^-1 n, I_B^-1 n, 1/(kg m^2)). */
+/** Where the twist row starts (I_A^-1 n, I_B^-1 n, 1/(kg m^2)). */
 export const FRICTION_TWIST = 12;
-/** Numbers a manifold keeps in frictionJacobians (the t1 and t2 rows). */
-export const FRICTION_STRIDE = 12;
 /** Numbers a manifold keeps in frictionInv (the t1, t2 and twist rows). */
 export const FRICTION_INV_STRIDE = 18;
 
-// A manifold's head in `solveHead` (at HEAD_STRIDE i): the numbers the solve reads once per manifold and
-// pass, side by side (written by prepareManifolds3D).
+// A manifold's record in `solveRecord` starts at REC_STRIDE i. Its head, the numbers the solve reads once
+// per manifold and pass, at HEAD_* from the record's start:
 /** The normal n, x (unit). */
 export const HEAD_NX = 0;
 /** n, y. */
@@ -93,5 +94,19 @@ export const HEAD_REACH_B = 13;
 export const HEAD_INV_IA = 14;
 /** Body B's, as HEAD_INV_IA. */
 export const HEAD_INV_IB = 15;
-/** Numbers a manifold keeps in solveHead. */
-export const HEAD_STRIDE = 16;
+/** Where the record's friction row along t1 starts (the anchor's r_A x t1, r_B x t1, m). */
+export const REC_T1 = 16;
+/** Where the record's friction row along t2 = n x t1 starts. */
+export const REC_T2 = 22;
+/** Where the record's first point starts (point k at REC_POINTS + POINT_STRIDE k). */
+export const REC_POINTS = 28;
+/** Numbers a manifold keeps in solveRecord (room for four points). */
+export const REC_STRIDE = 60;
+
+// A point in its manifold's record: its normal row r_A x n, r_B x n (ROW_*, m), then:
+/** Separation at the step's start on the solver's base, m (negative: overlap). */
+export const POINT_SEP = 6;
+/** Effective mass along n, kg. */
+export const POINT_MN = 7;
+/** Numbers a point keeps in its manifold's record. */
+export const POINT_STRIDE = 8;

@@ -35,7 +35,6 @@ import {
   ANCHOR_BZ,
   ANCHOR_STRIDE,
   FRICTION_INV_STRIDE,
-  FRICTION_STRIDE,
   FRICTION_T1,
   FRICTION_T2,
   FRICTION_TWIST,
@@ -52,11 +51,17 @@ import {
   HEAD_NZ,
   HEAD_REACH_A,
   HEAD_REACH_B,
-  HEAD_STRIDE,
   HEAD_T1X,
   HEAD_T1Y,
   HEAD_T1Z,
   JAC_STRIDE,
+  POINT_MN,
+  POINT_SEP,
+  POINT_STRIDE,
+  REC_POINTS,
+  REC_STRIDE,
+  REC_T1,
+  REC_T2,
   ROW_AX,
   ROW_AY,
   ROW_AZ,
@@ -88,16 +93,14 @@ export function prepareManifolds3D(world: PhysicsWorld): void {
   makeSoftInto(soft, 0, hertz, set.contactDampingRatio, hs);
   makeSoftInto(rigid, 0, 2 * hertz, set.contactDampingRatio, hs);
   if (n === 0) return;
-  if (st.jacobians.length < JAC_STRIDE * 4 * n) {
-    const rows = Math.max(n, (2 * st.jacobians.length) / (4 * JAC_STRIDE));
-    st.jacobians = new Float32Array(JAC_STRIDE * 4 * rows);
+  if (st.solveRecord.length < REC_STRIDE * n) {
+    const rows = Math.max(n, (2 * st.solveRecord.length) / REC_STRIDE);
     st.jacobiansInv = new Float32Array(JAC_STRIDE * 4 * rows);
-    st.frictionJacobians = new Float32Array(FRICTION_STRIDE * rows);
     st.frictionInv = new Float32Array(FRICTION_INV_STRIDE * rows);
-    st.solveHead = new Float64Array(HEAD_STRIDE * rows);
+    st.solveRecord = new Float64Array(REC_STRIDE * rows);
   }
   const RA = buf.anchors,
-    J = st.jacobians,
+    R = st.solveRecord,
     JI = st.jacobiansInv;
   const ox = c.PreviousPosition.x,
     oy = c.PreviousPosition.y,
@@ -135,11 +138,14 @@ export function prepareManifolds3D(world: PhysicsWorld): void {
     let minSep = Infinity,
       reachA = 0,
       reachB = 0;
-    const m = buf.points[i]!;
+    const m = buf.points[i]!,
+      h = REC_STRIDE * i;
     for (let k = 0; k < m; k++) {
       const q = 4 * i + k,
-        o = JAC_STRIDE * q;
+        o = JAC_STRIDE * q,
+        p = h + REC_POINTS + POINT_STRIDE * k;
       buf.sep[q] = buf.sep[q]! + shift;
+      R[p + POINT_SEP] = buf.sep[q]!;
       const r = ANCHOR_STRIDE * q;
       const rax = RA[r + ANCHOR_AX]!,
         ray = RA[r + ANCHOR_AY]!,
@@ -157,16 +163,16 @@ export function prepareManifolds3D(world: PhysicsWorld): void {
       const xbx = rby * nz - rbz * ny,
         xby = rbz * nx - rbx * nz,
         xbz = rbx * ny - rby * nx;
-      J[o + ROW_AX] = xax;
-      J[o + ROW_AY] = xay;
-      J[o + ROW_AZ] = xaz;
-      J[o + ROW_BX] = xbx;
-      J[o + ROW_BY] = xby;
-      J[o + ROW_BZ] = xbz;
+      R[p + ROW_AX] = Math.fround(xax);
+      R[p + ROW_AY] = Math.fround(xay);
+      R[p + ROW_AZ] = Math.fround(xaz);
+      R[p + ROW_BX] = Math.fround(xbx);
+      R[p + ROW_BY] = Math.fround(xby);
+      R[p + ROW_BZ] = Math.fround(xbz);
       const k0 = iso
         ? mA + mB + T[ta + II3_XX]! * (xax * xax + xay * xay + xaz * xaz) + T[tb + II3_XX]! * (xbx * xbx + xby * xby + xbz * xbz)
         : mA + mB + inertiaInto(JI, o + ROW_AX, T, ta, xax, xay, xaz) + inertiaInto(JI, o + ROW_BX, T, tb, xbx, xby, xbz);
-      buf.mn[q] = k0 > 0 ? 1 / k0 : 0;
+      R[p + POINT_MN] = Math.fround(k0 > 0 ? 1 / k0 : 0);
       // Normal relative velocity at the start (for restitution): n . (v_B - v_A) + w_B . (r_B x n) - w_A . (r_A x n).
       buf.vn0[q] =
         (sb[b + BS3_VX]! - sb[a + BS3_VX]!) * nx +
@@ -181,17 +187,15 @@ export function prepareManifolds3D(world: PhysicsWorld): void {
     }
     // The manifold's head (HEAD_*), written here and by prepareFriction3D: the speculative skip's bounds
     // (padded for the single-precision crosses), the normal, tangent, friction and isotropic inertias.
-    const H = st.solveHead,
-      h = HEAD_STRIDE * i;
-    H[h + HEAD_MIN_SEP] = minSep;
-    H[h + HEAD_REACH_A] = Math.sqrt(reachA) * (1 + 1e-5) + 1e-9;
-    H[h + HEAD_REACH_B] = Math.sqrt(reachB) * (1 + 1e-5) + 1e-9;
-    H[h + HEAD_NX] = nx;
-    H[h + HEAD_NY] = ny;
-    H[h + HEAD_NZ] = nz;
-    H[h + HEAD_MU] = buf.friction[i]!;
-    H[h + HEAD_INV_IA] = iso ? T[ta + II3_XX]! : 0;
-    H[h + HEAD_INV_IB] = iso ? T[tb + II3_XX]! : 0;
+    R[h + HEAD_MIN_SEP] = minSep;
+    R[h + HEAD_REACH_A] = Math.sqrt(reachA) * (1 + 1e-5) + 1e-9;
+    R[h + HEAD_REACH_B] = Math.sqrt(reachB) * (1 + 1e-5) + 1e-9;
+    R[h + HEAD_NX] = nx;
+    R[h + HEAD_NY] = ny;
+    R[h + HEAD_NZ] = nz;
+    R[h + HEAD_MU] = buf.friction[i]!;
+    R[h + HEAD_INV_IA] = iso ? T[ta + II3_XX]! : 0;
+    R[h + HEAD_INV_IB] = iso ? T[tb + II3_XX]! : 0;
     prepareFriction3D(st, i, iso, mA, mB, ta, tb);
   }
 }
@@ -199,15 +203,15 @@ export function prepareManifolds3D(world: PhysicsWorld): void {
 /**
  * Manifold i's friction rows (solver/manifold-rows-3d.ts): the anchor at its points'
  * centre, the twist arm (the points' mean distance from the anchor across n), and the rows along t1, t2
- * (crosses, effective masses) and about n (twist), at i's place in frictionJacobians and frictionInv
- * (solver/manifold-layout-3d.ts). `iso`: both bodies are isotropic; mA, mB their inverse masses (1/kg);
+ * (crosses, effective masses) and about n (twist), in i's record in solveRecord and at i's place in
+ * frictionInv (solver/manifold-layout-3d.ts). `iso`: both bodies are isotropic; mA, mB their inverse masses (1/kg);
  * ta, tb their rows of st.invInertia.
  */
 function prepareFriction3D(st: Contact3DState, i: number, iso: boolean, mA: number, mB: number, ta: number, tb: number): void {
   const buf = st.current,
     RA = buf.anchors,
     T = st.invInertia,
-    F = st.frictionJacobians,
+    R = st.solveRecord,
     FV = st.frictionInv;
   const nx = buf.nx[i]!,
     ny = buf.ny[i]!,
@@ -248,20 +252,18 @@ function prepareFriction3D(st: Contact3DState, i: number, iso: boolean, mA: numb
       dn = dx * nx + dy * ny + dz * nz;
     arm += Math.sqrt(Math.max(dx * dx + dy * dy + dz * dz - dn * dn, 0));
   }
-  const H = st.solveHead,
-    h = HEAD_STRIDE * i;
-  H[h + HEAD_ARM] = arm / m;
+  const h = REC_STRIDE * i;
+  R[h + HEAD_ARM] = arm / m;
   const t1x = buf.t1x[i]!,
     t1y = buf.t1y[i]!,
     t1z = buf.t1z[i]!;
-  H[h + HEAD_T1X] = t1x;
-  H[h + HEAD_T1Y] = t1y;
-  H[h + HEAD_T1Z] = t1z;
+  R[h + HEAD_T1X] = t1x;
+  R[h + HEAD_T1Y] = t1y;
+  R[h + HEAD_T1Z] = t1z;
   const t2x = ny * t1z - nz * t1y,
     t2y = nz * t1x - nx * t1z,
     t2z = nx * t1y - ny * t1x;
-  const f = FRICTION_STRIDE * i,
-    fv = FRICTION_INV_STRIDE * i;
+  const fv = FRICTION_INV_STRIDE * i;
   for (let d = 0; d < 2; d++) {
     const ux = d === 0 ? t1x : t2x,
       uy = d === 0 ? t1y : t2y,
@@ -272,26 +274,25 @@ function prepareFriction3D(st: Contact3DState, i: number, iso: boolean, mA: numb
     const xbx = cby * uz - cbz * uy,
       xby = cbz * ux - cbx * uz,
       xbz = cbx * uy - cby * ux;
-    const row = d === 0 ? FRICTION_T1 : FRICTION_T2,
-      o = f + row,
-      ov = fv + row;
-    F[o + ROW_AX] = xax;
-    F[o + ROW_AY] = xay;
-    F[o + ROW_AZ] = xaz;
-    F[o + ROW_BX] = xbx;
-    F[o + ROW_BY] = xby;
-    F[o + ROW_BZ] = xbz;
+    const o = h + (d === 0 ? REC_T1 : REC_T2),
+      ov = fv + (d === 0 ? FRICTION_T1 : FRICTION_T2);
+    R[o + ROW_AX] = Math.fround(xax);
+    R[o + ROW_AY] = Math.fround(xay);
+    R[o + ROW_AZ] = Math.fround(xaz);
+    R[o + ROW_BX] = Math.fround(xbx);
+    R[o + ROW_BY] = Math.fround(xby);
+    R[o + ROW_BZ] = Math.fround(xbz);
     const k0 = iso
       ? mA + mB + T[ta + II3_XX]! * (xax * xax + xay * xay + xaz * xaz) + T[tb + II3_XX]! * (xbx * xbx + xby * xby + xbz * xbz)
       : mA + mB + inertiaInto(FV, ov + ROW_AX, T, ta, xax, xay, xaz) + inertiaInto(FV, ov + ROW_BX, T, tb, xbx, xby, xbz);
-    // Effective masses in single precision (as the normal rows' mn): the same numbers every build.
-    H[h + (d === 0 ? HEAD_MT1 : HEAD_MT2)] = Math.fround(k0 > 0 ? 1 / k0 : 0);
+    // Effective masses in single precision (as the normal rows'): the same numbers every build.
+    R[h + (d === 0 ? HEAD_MT1 : HEAD_MT2)] = Math.fround(k0 > 0 ? 1 / k0 : 0);
   }
   // Twist about n: 1 / (n . I_A^-1 n + n . I_B^-1 n).
   const kw = iso
     ? T[ta + II3_XX]! + T[tb + II3_XX]!
     : inertiaInto(FV, fv + FRICTION_TWIST + ROW_AX, T, ta, nx, ny, nz) + inertiaInto(FV, fv + FRICTION_TWIST + ROW_BX, T, tb, nx, ny, nz);
-  H[h + HEAD_MTW] = Math.fround(kw > 0 ? 1 / kw : 0);
+  R[h + HEAD_MTW] = Math.fround(kw > 0 ? 1 / kw : 0);
 }
 
 /** Writes I^-1 x (I^-1 the invInertia row at T[t]) into out[o..o+2] (a row's part, x, y, z) and returns x . I^-1 x. */

@@ -25,13 +25,14 @@ import { joinSolverBodies } from './solver-bodies.js';
  *   anchor weighted by the points' normal impulses wandered off the centre of a spinning cube, and its
  *   tangent rows then braked the spin too: twice the Coulomb torque after a few steps.);
  * - per point, r x n and I^-1 (r x n) of both bodies, and per manifold the anchor's r x t1, r x t2 and
- *   their I^-1 products, are computed once a step (`jacobians`, `frictionJacobians`; the I^-1 products
- *   apart: `jacobiansInv`, `frictionInv`), so a pass reads
- *   them instead of multiplying tensors; a manifold whose two bodies are isotropic (I^-1 = i 1: spheres,
- *   cubes, or a static side) reads only r x u and scales it by i, half the memory a pass streams; a
- *   manifold's own numbers (normal, tangent, friction, effective masses, the speculative skip's bounds,
- *   both bodies' i) are copied into one row of `solveHead` (HEAD_*), which the solve and the warm start
- *   read instead of a column each; the points of a manifold are solved in alternating order from
+ *   their I^-1 products, are computed once a step (the I^-1 products apart: `jacobiansInv`,
+ *   `frictionInv`), so a pass reads them instead of multiplying tensors; a manifold whose two bodies are
+ *   isotropic (I^-1 = i 1: spheres, cubes, or a static side) reads only r x u and scales it by i, half the
+ *   memory a pass streams; a manifold's own numbers (normal, tangent, friction, effective masses, the
+ *   speculative skip's bounds, both bodies' i), its friction rows' crosses and its points' normal rows,
+ *   separations and effective masses are written into one block of `solveRecord`
+ *   (solver/manifold-layout-3d.ts), which the warm start, the solve and restitution read instead of a
+ *   column each; the points of a manifold are solved in alternating order from
  *   substep to substep; a manifold whose normal rows are all rigid in a pass (speculative, or a relax
  *   pass) is swept until they agree (NORMAL_SWEEPS), so a flat hit does not spin the boxes;
  * - warm start from the previous step's point with the same feature id (collision/shapes-3d.ts);

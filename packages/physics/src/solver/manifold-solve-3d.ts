@@ -22,7 +22,6 @@ import {
 } from './body-state-layout.js';
 import {
   FRICTION_INV_STRIDE,
-  FRICTION_STRIDE,
   FRICTION_T1,
   FRICTION_T2,
   FRICTION_TWIST,
@@ -39,11 +38,17 @@ import {
   HEAD_NZ,
   HEAD_REACH_A,
   HEAD_REACH_B,
-  HEAD_STRIDE,
   HEAD_T1X,
   HEAD_T1Y,
   HEAD_T1Z,
   JAC_STRIDE,
+  POINT_MN,
+  POINT_SEP,
+  POINT_STRIDE,
+  REC_POINTS,
+  REC_STRIDE,
+  REC_T1,
+  REC_T2,
   ROW_AX,
   ROW_AY,
   ROW_AZ,
@@ -89,7 +94,8 @@ export function warmStartManifolds3D(world: PhysicsWorld): void {
   if (st === undefined) return;
   const buf = st.current,
     sb = world.collision.bodyState,
-    H = st.solveHead;
+    R = st.solveRecord,
+    JI = st.jacobiansInv;
   const LN = buf.ln;
   for (let i = 0; i < buf.count; i++) {
     const f1 = buf.ft[3 * i]!,
@@ -104,29 +110,38 @@ export function warmStartManifolds3D(world: PhysicsWorld): void {
       by = 0,
       bz = 0;
     const iso = buf.iso[i] === 1,
-      J = iso ? st.jacobians : st.jacobiansInv;
+      h = REC_STRIDE * i;
     for (let k = 0, m = buf.points[i]!; k < m; k++) {
       const q = 4 * i + k,
         ln = LN[q]!;
       if (ln === 0) continue;
-      // Isotropic: i sum(ln r x n) from the crosses (scaled by i below); else the stored products.
-      const o = JAC_STRIDE * q;
+      // Isotropic: i sum(ln r x n) from the crosses in the record (scaled by i below); else the stored products.
       sn += ln;
-      ax += ln * J[o + ROW_AX]!;
-      ay += ln * J[o + ROW_AY]!;
-      az += ln * J[o + ROW_AZ]!;
-      bx += ln * J[o + ROW_BX]!;
-      by += ln * J[o + ROW_BY]!;
-      bz += ln * J[o + ROW_BZ]!;
+      if (iso) {
+        const p = h + REC_POINTS + POINT_STRIDE * k;
+        ax += ln * R[p + ROW_AX]!;
+        ay += ln * R[p + ROW_AY]!;
+        az += ln * R[p + ROW_AZ]!;
+        bx += ln * R[p + ROW_BX]!;
+        by += ln * R[p + ROW_BY]!;
+        bz += ln * R[p + ROW_BZ]!;
+      } else {
+        const o = JAC_STRIDE * q;
+        ax += ln * JI[o + ROW_AX]!;
+        ay += ln * JI[o + ROW_AY]!;
+        az += ln * JI[o + ROW_AZ]!;
+        bx += ln * JI[o + ROW_BX]!;
+        by += ln * JI[o + ROW_BY]!;
+        bz += ln * JI[o + ROW_BZ]!;
+      }
     }
     if (sn === 0 && f1 === 0 && f2 === 0 && fw === 0) continue;
-    const h = HEAD_STRIDE * i;
-    const nx = H[h + HEAD_NX]!,
-      ny = H[h + HEAD_NY]!,
-      nz = H[h + HEAD_NZ]!,
-      t1x = H[h + HEAD_T1X]!,
-      t1y = H[h + HEAD_T1Y]!,
-      t1z = H[h + HEAD_T1Z]!;
+    const nx = R[h + HEAD_NX]!,
+      ny = R[h + HEAD_NY]!,
+      nz = R[h + HEAD_NZ]!,
+      t1x = R[h + HEAD_T1X]!,
+      t1y = R[h + HEAD_T1Y]!,
+      t1z = R[h + HEAD_T1Z]!;
     const t2x = ny * t1z - nz * t1y,
       t2y = nz * t1x - nx * t1z,
       t2z = nx * t1y - ny * t1x;
@@ -134,17 +149,15 @@ export function warmStartManifolds3D(world: PhysicsWorld): void {
       py = sn * ny + f1 * t1y + f2 * t2y,
       pz = sn * nz + f1 * t1z + f2 * t2z;
     // The friction rows' angular parts (anchor crosses for t1, t2; n for the twist).
-    const F = iso ? st.frictionJacobians : st.frictionInv,
-      o = (iso ? FRICTION_STRIDE : FRICTION_INV_STRIDE) * i,
-      o1 = o + FRICTION_T1,
-      o2 = o + FRICTION_T2;
-    ax += f1 * F[o1 + ROW_AX]! + f2 * F[o2 + ROW_AX]!;
-    ay += f1 * F[o1 + ROW_AY]! + f2 * F[o2 + ROW_AY]!;
-    az += f1 * F[o1 + ROW_AZ]! + f2 * F[o2 + ROW_AZ]!;
-    bx += f1 * F[o1 + ROW_BX]! + f2 * F[o2 + ROW_BX]!;
-    by += f1 * F[o1 + ROW_BY]! + f2 * F[o2 + ROW_BY]!;
-    bz += f1 * F[o1 + ROW_BZ]! + f2 * F[o2 + ROW_BZ]!;
     if (iso) {
+      const o1 = h + REC_T1,
+        o2 = h + REC_T2;
+      ax += f1 * R[o1 + ROW_AX]! + f2 * R[o2 + ROW_AX]!;
+      ay += f1 * R[o1 + ROW_AY]! + f2 * R[o2 + ROW_AY]!;
+      az += f1 * R[o1 + ROW_AZ]! + f2 * R[o2 + ROW_AZ]!;
+      bx += f1 * R[o1 + ROW_BX]! + f2 * R[o2 + ROW_BX]!;
+      by += f1 * R[o1 + ROW_BY]! + f2 * R[o2 + ROW_BY]!;
+      bz += f1 * R[o1 + ROW_BZ]! + f2 * R[o2 + ROW_BZ]!;
       ax += fw * nx;
       ay += fw * ny;
       az += fw * nz;
@@ -152,7 +165,17 @@ export function warmStartManifolds3D(world: PhysicsWorld): void {
       by += fw * ny;
       bz += fw * nz;
     } else {
-      const w = o + FRICTION_TWIST;
+      const F = st.frictionInv,
+        o = FRICTION_INV_STRIDE * i,
+        o1 = o + FRICTION_T1,
+        o2 = o + FRICTION_T2,
+        w = o + FRICTION_TWIST;
+      ax += f1 * F[o1 + ROW_AX]! + f2 * F[o2 + ROW_AX]!;
+      ay += f1 * F[o1 + ROW_AY]! + f2 * F[o2 + ROW_AY]!;
+      az += f1 * F[o1 + ROW_AZ]! + f2 * F[o2 + ROW_AZ]!;
+      bx += f1 * F[o1 + ROW_BX]! + f2 * F[o2 + ROW_BX]!;
+      by += f1 * F[o1 + ROW_BY]! + f2 * F[o2 + ROW_BY]!;
+      bz += f1 * F[o1 + ROW_BZ]! + f2 * F[o2 + ROW_BZ]!;
       ax += fw * F[w + ROW_AX]!;
       ay += fw * F[w + ROW_AY]!;
       az += fw * F[w + ROW_AZ]!;
@@ -166,7 +189,7 @@ export function warmStartManifolds3D(world: PhysicsWorld): void {
       b = BS3_STRIDE * kb;
     if (ka > 0) {
       const mA = sb[a + BS3_INV_MASS]!,
-        gA = iso ? H[h + HEAD_INV_IA]! : 1;
+        gA = iso ? R[h + HEAD_INV_IA]! : 1;
       sb[a + BS3_VX] = sb[a + BS3_VX]! - mA * px;
       sb[a + BS3_VY] = sb[a + BS3_VY]! - mA * py;
       sb[a + BS3_VZ] = sb[a + BS3_VZ]! - mA * pz;
@@ -177,7 +200,7 @@ export function warmStartManifolds3D(world: PhysicsWorld): void {
     }
     if (kb > 0) {
       const mB = sb[b + BS3_INV_MASS]!,
-        gB = iso ? H[h + HEAD_INV_IB]! : 1;
+        gB = iso ? R[h + HEAD_INV_IB]! : 1;
       sb[b + BS3_VX] = sb[b + BS3_VX]! + mB * px;
       sb[b + BS3_VY] = sb[b + BS3_VY]! + mB * py;
       sb[b + BS3_VZ] = sb[b + BS3_VZ]! + mB * pz;
@@ -220,7 +243,6 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
     sb = cs.bodyState,
     ex = cs.bodyExtra,
     base = st.rotationBase,
-    J = st.jacobians,
     JI = st.jacobiansInv;
   const push = cs.settings.contactPushSpeed;
   // Points in alternating order from substep to substep (symmetric Gauss-Seidel; the relax pass keeps
@@ -229,15 +251,12 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
   const backward = st.solveParity === 1;
   const sBias = soft[0]!,
     rBias = rigid[0]!;
-  const sep = buf.sep,
-    LN = buf.ln,
-    MN = buf.mn,
+  const LN = buf.ln,
     CARRIED = buf.carried,
-    F = st.frictionJacobians,
     FV = st.frictionInv;
   const FT = buf.ft;
-  // The manifold's own numbers from its head (HEAD_*), one run of memory a manifold.
-  const H = st.solveHead;
+  // The manifold's own numbers from its record (HEAD_*, REC_*, POINT_*), one run of memory a manifold.
+  const H = st.solveRecord;
   const IA = buf.ia,
     IB = buf.ib,
     PTS = buf.points,
@@ -251,7 +270,7 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
       kb = IB[i]!,
       a = BS3_STRIDE * ka,
       b = BS3_STRIDE * kb,
-      h = HEAD_STRIDE * i;
+      h = REC_STRIDE * i;
     const nx = H[h + HEAD_NX]!,
       ny = H[h + HEAD_NY]!,
       nz = H[h + HEAD_NZ]!;
@@ -347,15 +366,15 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
       for (let kk = 0; kk < m; kk++) {
         const k = backward !== odd ? m - 1 - kk : kk;
         const q = 4 * i + k,
-          o = JAC_STRIDE * q;
-        const ra0 = J[o + ROW_AX]!,
-          ra1 = J[o + ROW_AY]!,
-          ra2 = J[o + ROW_AZ]!,
-          rb0 = J[o + ROW_BX]!,
-          rb1 = J[o + ROW_BY]!,
-          rb2 = J[o + ROW_BZ]!;
+          p = h + REC_POINTS + POINT_STRIDE * k;
+        const ra0 = H[p + ROW_AX]!,
+          ra1 = H[p + ROW_AY]!,
+          ra2 = H[p + ROW_AZ]!,
+          rb0 = H[p + ROW_BX]!,
+          rb1 = H[p + ROW_BY]!,
+          rb2 = H[p + ROW_BZ]!;
         // s = s0 + (d_B - d_A) . n + theta_B . (r_B x n) - theta_A . (r_A x n)
-        const s = sep[q]! + dn + (hbx * rb0 + hby * rb1 + hbz * rb2 - (hax * ra0 + hay * ra1 + haz * ra2));
+        const s = H[p + POINT_SEP]! + dn + (hbx * rb0 + hby * rb1 + hbz * rb2 - (hax * ra0 + hay * ra1 + haz * ra2));
         // Both biases are worked out on every row (branches first taken after V8 optimised the loop
         // threw the optimised code away: 'insufficient type feedback'; the same numbers either way).
         const speculative = s * invHs,
@@ -378,7 +397,7 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
           (vbz - vaz) * nz +
           (wbx * rb0 + wby * rb1 + wbz * rb2 - (wax * ra0 + way * ra1 + waz * ra2));
         const old = LN[q]!;
-        const lam = Math.max(old - MN[q]! * ms * (vn + bias) - is * old, 0);
+        const lam = Math.max(old - H[p + POINT_MN]! * ms * (vn + bias) - is * old, 0);
         const dl = lam - old;
         LN[q] = lam;
         CARRIED[q] = CARRIED[q]! | +(lam > 0);
@@ -403,6 +422,7 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
           wby += gb * rb1;
           wbz += gb * rb2;
         } else {
+          const o = JAC_STRIDE * q;
           wax -= dl * JI[o + ROW_AX]!;
           way -= dl * JI[o + ROW_AY]!;
           waz -= dl * JI[o + ROW_AZ]!;
@@ -437,19 +457,18 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
       // t1 and t2 (the manifold's rows of crosses and of inverse products), both from the same
       // velocities, the impulse (l1, l2) then held within the circle of radius mu sum(lambda_n): the same
       // limit in every direction of sliding (clamping each separately let a diagonal slide take sqrt 2 of it).
-      const f = FRICTION_STRIDE * i;
-      const a10 = F[f + FRICTION_T1 + ROW_AX]!,
-        a11 = F[f + FRICTION_T1 + ROW_AY]!,
-        a12 = F[f + FRICTION_T1 + ROW_AZ]!,
-        b10 = F[f + FRICTION_T1 + ROW_BX]!,
-        b11 = F[f + FRICTION_T1 + ROW_BY]!,
-        b12 = F[f + FRICTION_T1 + ROW_BZ]!;
-      const a20 = F[f + FRICTION_T2 + ROW_AX]!,
-        a21 = F[f + FRICTION_T2 + ROW_AY]!,
-        a22 = F[f + FRICTION_T2 + ROW_AZ]!,
-        b20 = F[f + FRICTION_T2 + ROW_BX]!,
-        b21 = F[f + FRICTION_T2 + ROW_BY]!,
-        b22 = F[f + FRICTION_T2 + ROW_BZ]!;
+      const a10 = H[h + REC_T1 + ROW_AX]!,
+        a11 = H[h + REC_T1 + ROW_AY]!,
+        a12 = H[h + REC_T1 + ROW_AZ]!,
+        b10 = H[h + REC_T1 + ROW_BX]!,
+        b11 = H[h + REC_T1 + ROW_BY]!,
+        b12 = H[h + REC_T1 + ROW_BZ]!;
+      const a20 = H[h + REC_T2 + ROW_AX]!,
+        a21 = H[h + REC_T2 + ROW_AY]!,
+        a22 = H[h + REC_T2 + ROW_AZ]!,
+        b20 = H[h + REC_T2 + ROW_BX]!,
+        b21 = H[h + REC_T2 + ROW_BY]!,
+        b22 = H[h + REC_T2 + ROW_BZ]!;
       const dvx = vbx - vax,
         dvy = vby - vay,
         dvz = vbz - vaz;
@@ -560,7 +579,7 @@ function pushAlongNormal(
   nz: number,
   iso: boolean,
   invI: number,
-  L: Float32Array,
+  L: Float32Array | Float64Array,
   at: number,
 ): void {
   const f = sb[s + BS3_INV_MASS]! * dl,
@@ -591,15 +610,14 @@ export function applyManifold3DRestitution(world: PhysicsWorld): void {
   const cs = world.collision,
     buf = st.current,
     sb = cs.bodyState,
-    J = st.jacobians,
+    R = st.solveRecord,
     JI = st.jacobiansInv,
     T = st.invInertia;
   const threshold = cs.settings.restitutionThreshold,
     elasticThreshold = cs.settings.elasticRestitutionThreshold;
   const VN0 = buf.vn0,
     CARRIED = buf.carried,
-    LN = buf.ln,
-    MN = buf.mn;
+    LN = buf.ln;
   // Which points bounce (approach past the threshold, impulse carried) does not change from pass to
   // pass: the first pass visits every manifold and lists those with such a point, the others only those
   // (in the same order, so the same impulses; a settled pile's thousands of manifolds are read once).
@@ -630,25 +648,26 @@ export function applyManifold3DRestitution(world: PhysicsWorld): void {
         const target = restitutionTarget(e, VN0[q]!, VN0[q]!, threshold, elasticThreshold);
         if (target < 0) continue;
         bounces = true;
-        const o = JAC_STRIDE * q;
+        const p = REC_STRIDE * i + REC_POINTS + POINT_STRIDE * k;
         const vn =
           (sb[b + BS3_VX]! - sb[a + BS3_VX]!) * nx +
           (sb[b + BS3_VY]! - sb[a + BS3_VY]!) * ny +
           (sb[b + BS3_VZ]! - sb[a + BS3_VZ]!) * nz +
-          sb[b + BS3_WX]! * J[o + ROW_BX]! +
-          sb[b + BS3_WY]! * J[o + ROW_BY]! +
-          sb[b + BS3_WZ]! * J[o + ROW_BZ]! -
-          sb[a + BS3_WX]! * J[o + ROW_AX]! -
-          sb[a + BS3_WY]! * J[o + ROW_AY]! -
-          sb[a + BS3_WZ]! * J[o + ROW_AZ]!;
+          sb[b + BS3_WX]! * R[p + ROW_BX]! +
+          sb[b + BS3_WY]! * R[p + ROW_BY]! +
+          sb[b + BS3_WZ]! * R[p + ROW_BZ]! -
+          sb[a + BS3_WX]! * R[p + ROW_AX]! -
+          sb[a + BS3_WY]! * R[p + ROW_AY]! -
+          sb[a + BS3_WZ]! * R[p + ROW_AZ]!;
         const old = LN[q]!;
-        const lam = restitutionImpulse(old, MN[q]!, vn, target, Number.POSITIVE_INFINITY);
+        const lam = restitutionImpulse(old, R[p + POINT_MN]!, vn, target, Number.POSITIVE_INFINITY);
         const dl = lam - old;
         LN[q] = lam;
         if (dl === 0) continue;
         // Body row 0 (the static world) is never written.
-        if (ka > 0) pushAlongNormal(sb, a, -dl, nx, ny, nz, iso, iA, iso ? J : JI, o + ROW_AX);
-        if (kb > 0) pushAlongNormal(sb, b, dl, nx, ny, nz, iso, iB, iso ? J : JI, o + ROW_BX);
+        const o = JAC_STRIDE * q;
+        if (ka > 0) pushAlongNormal(sb, a, -dl, nx, ny, nz, iso, iA, iso ? R : JI, iso ? p + ROW_AX : o + ROW_AX);
+        if (kb > 0) pushAlongNormal(sb, b, dl, nx, ny, nz, iso, iB, iso ? R : JI, iso ? p + ROW_BX : o + ROW_BX);
       }
       if (all && bounces) list[listed++] = i;
     }
