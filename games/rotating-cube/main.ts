@@ -73,8 +73,10 @@ import {
   SRGBColorSpace,
   Vector3,
 } from 'three';
+import { bedSnap } from './roll-puzzle';
 import {
   buildRotatingCube,
+  CELL_REACH,
   FACES,
   FLIP_BAND,
   FLIP_GOAL,
@@ -91,7 +93,7 @@ import {
   PadChallenge,
   type PadLayout,
   padLayout,
-  padPar,
+  padPuzzle,
   padStars,
   ROLL_SPIN_MAX,
   ROLL_TORQUE,
@@ -140,8 +142,8 @@ let layout: PadLayout = padLayout(fixedSeed ?? Math.floor(Math.random() * 2 ** 3
 /** Room mode's challenge (the pads) and flip mode's (flips in FLIP_TIME); reset with the world. */
 const pads = new PadChallenge(),
   flips = new FlipChallenge();
-/** Best round of this page visit: fewest rolls in a pad round, and most flips. */
-let bestRolls = Infinity,
+/** Best round of this page visit: fewest moves in a pad round, and most flips. */
+let bestMoves = Infinity,
   bestFlips = 0;
 /** Arrow length per rad/s of angular velocity, m: set per world so the starting spin shows as ARROW_LENGTH. */
 let omegaScale = 1;
@@ -194,8 +196,8 @@ const ROLL_LATCH_ANGLE = (55 * Math.PI) / 180,
 const latchAxis = new Float64Array(3),
   latchQ = new Float64Array(4);
 let latchUntil = -1;
-/** Pads reached and not yet celebrated: the pad's index, the world time, s, and the miss from its centre, m. */
-const padsReached: { pad: number; time: number; miss: number }[] = [];
+/** Pads reached and not yet celebrated: the pad's index, the world time, s, the miss from its centre, m, and the moves it took against its par. */
+const padsReached: { pad: number; time: number; miss: number; moves: number; par: number }[] = [];
 
 /** The three.js app once the game has started (null while `startThreeGame` builds the first world). */
 let threeApp: { camera: { matrixWorld: { extractBasis(x: Vector3, y: Vector3, z: Vector3): unknown } } } | null = null;
@@ -217,7 +219,9 @@ function cameraHeading(): number {
     bx = z.x;
     bz = z.z;
   } else [bx, , bz] = viewDirectionOf(params.mode);
-  return Math.hypot(bx, bz) > 1e-6 ? Math.atan2(bx, bz) : 0;
+  const heading = Math.hypot(bx, bz) > 1e-6 ? Math.atan2(bx, bz) : 0;
+  // The room's cube stays square to the room (the pads' grid of cells): the nearest quarter turn.
+  return params.mode === 'room' ? (Math.PI / 2) * Math.round(heading / (Math.PI / 2)) : heading;
 }
 
 /** A fresh world with the body of the current mode (the shell calls it at start and on R). */
@@ -243,11 +247,13 @@ function createWorld(): PhysicsWorld {
   latchUntil = -1;
   addSystem(world, 'finalize', (w) => {
     if (params.mode === 'room') {
-      const spot = layout.pads[pads.pad];
+      const spot = layout.pads[pads.pad],
+        movesBefore = pads.movesAtLight;
       if (spot && pads.update(w, handles.body)) {
         const P = w.components.Position;
         const miss = Math.hypot(P.x[handles.body]! - spot[0], P.z[handles.body]! - spot[1]);
-        padsReached.push({ pad: pads.pad - 1, time: w.time, miss });
+        const k = pads.pad - 1;
+        padsReached.push({ pad: k, time: w.time, miss, moves: pads.movesAtLight - movesBefore, par: pads.pars[k] ?? 0 });
       }
     } else if (params.mode === 'flip') flips.update(w, handles.body);
   });
@@ -295,15 +301,26 @@ const game = await startThreeGame({
         if (a === handles.body || b === handles.body) sound.impact(impulse, 'wood', { threshold: 0.4, loud: 6 });
       });
   },
-  controls: [
-    { keys: 'Click', action: 'the floor: push the cube there; the cube: flick it away', touch: 'Tap' },
-    { keys: 'W A S D', action: 'roll the cube (pivot: pitch, yaw)', touch: '▲ ◀ ▼ ▶' },
-    { keys: 'Q E', action: 'turn it a quarter (pivot: roll)', touch: '⟲ ⟳' },
-    { keys: 'X', action: 'stop spinning', touch: 'Stop' },
-    { keys: 'Space', action: 'jump (room mode)', touch: 'Jump' },
-    { keys: 'M', action: 'mode: room / cube on a pivot / Dzhanibekov flip', touch: 'Mode' },
-    ...ORBIT_CONTROLS,
-  ],
+  // The legend and the phone's touch card: a page opened on the pivot speaks of the pivot (no floor there).
+  controls:
+    params.mode === 'room'
+      ? [
+          { keys: 'Click', action: 'the floor: push the cube there; the cube: flick it away', touch: 'Tap' },
+          { keys: 'W A S D', action: 'roll the cube (pivot: pitch, yaw)', touch: '▲ ◀ ▼ ▶' },
+          { keys: 'Q E', action: 'turn it a quarter (pivot: roll)', touch: '⟲ ⟳' },
+          { keys: 'X', action: 'stop spinning', touch: 'Stop' },
+          { keys: 'Space', action: 'jump (room mode)', touch: 'Jump' },
+          { keys: 'M', action: 'mode: room / cube on a pivot / Dzhanibekov flip', touch: 'Mode' },
+          ...ORBIT_CONTROLS,
+        ]
+      : [
+          { keys: 'Click', action: 'a face: knock it there (an impulse)', touch: 'Tap' },
+          { keys: 'W S, A D', action: 'torque: pitch, yaw', touch: 'Pitch, Yaw' },
+          { keys: 'Q E', action: 'torque: roll', touch: 'Roll ⟲ ⟳' },
+          { keys: 'X', action: 'stop spinning', touch: 'Stop' },
+          { keys: 'M', action: 'mode: room / cube on a pivot / Dzhanibekov flip', touch: 'Mode' },
+          ...ORBIT_CONTROLS,
+        ],
   keys: [
     { key: 'x', label: 'stop', action: () => stopSpin() },
     { key: 'm', label: 'mode', action: () => setMode(MODES[(MODES.indexOf(params.mode) + 1) % MODES.length]!) },
@@ -392,6 +409,7 @@ function startClock(): void {
 function jump(): void {
   if (params.mode !== 'room') return;
   pads.start(shell.world.time);
+  pads.jumped();
   applyImpulse(shell.world, handles.body, [0, JUMP_IMPULSE, 0]);
 }
 
@@ -531,6 +549,35 @@ function placePadMarks(): void {
 }
 placePadMarks();
 shell.onWorldChange(placePadMarks);
+/**
+ * The lit pad's bed (scene.ts PAD_BEDS): a tile on each 1 m cell around the pad that the cube fits in,
+ * so the player sees the cells to roll across (a slide stops at the tiles' edge) and counts the rolls.
+ */
+const bedMaterial = new MeshBasicMaterial({ color: 0xa9bbdd, map: padFill, transparent: true, opacity: 0.3, depthWrite: false });
+const bedTiles = Array.from({ length: 8 }, () => {
+  const tile = new Mesh(padPlane, bedMaterial);
+  tile.scale.setScalar(0.92 / padPlane.parameters.width / (1 - (2 * PAD_TEX_MARGIN) / PAD_TEX));
+  tile.visible = false;
+  app.scene.add(tile);
+  return tile;
+});
+/** Lays the bed's tiles around pad `k` (none for a pad without a bed, or once the round is over). */
+function placeBed(k: number): void {
+  let n = 0;
+  const bed = layout.beds[k] ?? -1,
+    spot = layout.pads[k];
+  if (spot && bed > 0 && params.mode === 'room')
+    for (let i = -bed; i <= bed; i++)
+      for (let j = -bed; j <= bed; j++) {
+        const x = spot[0] + i,
+          z = spot[1] + j;
+        if ((i === 0 && j === 0) || Math.max(Math.abs(x), Math.abs(z)) > CELL_REACH + 1e-9 || n >= bedTiles.length) continue;
+        bedTiles[n++]!.position.set(x, 0.008, z);
+      }
+  bedTiles.forEach((tile, i) => {
+    tile.visible = i < n;
+  });
+}
 const burst = new Mesh(
   new RingGeometry(0.85, 1, 48).rotateX(-Math.PI / 2),
   new MeshBasicMaterial({ color: 0xffe27a, transparent: true, side: DoubleSide, depthWrite: false }),
@@ -617,10 +664,11 @@ function celebrate(): void {
     sound.chime(PAD_PITCHES[r.pad] ?? 880, last ? 0.3 : 0.35);
     if (last) window.setTimeout(() => sound.chime(1568, 0.8), 180);
     const perfect = r.miss <= PERFECT ? ' · Perfect!' : '';
+    const inPar = r.moves <= r.par ? ' · in par!' : ` · ${r.moves} moves, par ${r.par}`;
     showPop(
       last
-        ? `All ${layout.pads.length} pads! ${pads.rolls} rolls ${stars(padStars(pads.rolls, padPar(layout)))}`
-        : `Pad ${r.pad + 1} of ${layout.pads.length} ✓${perfect}`,
+        ? `All ${layout.pads.length} pads! ${pads.moves} moves ${stars(padStars(pads.moves, pads.par))}`
+        : `Pad ${r.pad + 1} of ${layout.pads.length} ✓${r.par > 1 ? inPar : perfect}`,
       last ? 2600 : 1100,
     );
   }
@@ -893,7 +941,10 @@ function updateKeyTorque(): void {
   const yaw = (on('d') ? 1 : 0) - (on('a') ? 1 : 0);
   const roll = (on('q') ? 1 : 0) - (on('e') ? 1 : 0);
   // Room: Q and E turn the cube a quarter turn a press, and on while held (the next quarter once the turn is near its end).
-  if (params.mode === 'room' && roll !== 0 && (pressed.has('q') || pressed.has('e') || !yawKeeper.turning)) yawKeeper.turn(roll);
+  if (params.mode === 'room' && roll !== 0 && (pressed.has('q') || pressed.has('e') || !yawKeeper.turning)) {
+    yawKeeper.turn(roll);
+    pads.turned();
+  }
   pressed.clear();
   app.camera.matrixWorld.extractBasis(right, up, back);
   if (params.mode === 'room') {
@@ -1025,8 +1076,14 @@ function aimAt(ndcX: number, ndcY: number): Push | null {
     const speed = (params.impulse * ROOM_PUSH) / shell.world.components.Mass.value[e]!;
     Object.assign(aim, { kind: 'cube', dx: hx / l, dz: hz / l, speed });
     const d = speed ** 2 / (2 * ROOM_FRICTION * 9.81);
-    aim.x = cx + aim.dx * d;
-    aim.z = cz + aim.dz * d;
+    const ux = cx + aim.dx * d,
+      uz = cz + aim.dz * d;
+    const [x, z] = snapToBed(ux, uz);
+    const dist = Math.hypot(x - cx, z - cz);
+    // A flick that would stop in the lit pad's bed stops at its edge instead (scene.ts PAD_BEDS).
+    if ((x !== ux || z !== uz) && dist > 0.05) Object.assign(aim, { dx: (x - cx) / dist, dz: (z - cz) / dist, speed: slideSpeed(dist) });
+    aim.x = x;
+    aim.z = z;
     return aim;
   }
   // The floor point: where the ray falls to the height of the cube's centre (so a click on the pad's
@@ -1034,12 +1091,24 @@ function aimAt(ndcX: number, ndcY: number): Push | null {
   if (!(rayDir.y < -1e-6)) return null;
   const t = (REST_HEIGHT - cam.y) / rayDir.y;
   const inside = ROOM_HALF - 0.5;
-  const x = Math.max(-inside, Math.min(inside, cam.x + rayDir.x * t)),
-    z = Math.max(-inside, Math.min(inside, cam.z + rayDir.z * t));
+  const [x, z] = snapToBed(
+    Math.max(-inside, Math.min(inside, cam.x + rayDir.x * t)),
+    Math.max(-inside, Math.min(inside, cam.z + rayDir.z * t)),
+  );
   const dist = Math.hypot(x - cx, z - cz);
   if (!(dist > 0.05)) return null;
   Object.assign(aim, { kind: 'floor', dx: (x - cx) / dist, dz: (z - cz) / dist, speed: slideSpeed(dist), x, z });
   return aim;
+}
+
+/**
+ * Room mode: where a slide aimed at (x, z), m, stops: a point in the lit pad's bed of tiles or its edge
+ * row moves to the nearest cell at the bed's edge (roll-puzzle.ts `bedSnap`), so the cube crosses the
+ * bed by rolls; elsewhere, and once the round is over, (x, z) itself. @returns [x, z], m.
+ */
+function snapToBed(x: number, z: number): [number, number] {
+  if (params.mode !== 'room' || pads.done) return [x, z];
+  return bedSnap(padPuzzle(layout, pads.pad), x, z);
 }
 
 /**
@@ -1150,13 +1219,13 @@ if (touch)
 const stars = (n: number): string => '★'.repeat(n) + '☆'.repeat(3 - n);
 
 /**
- * The rolls made against the stars still in reach, in one rule a player reads the same way everywhere
- * (the status row, the end, the rules card): "rolls 3 of 8 for ★★★" (★★★ takes par + PAR_SLACK[0]
- * rolls or fewer, ★★ par + PAR_SLACK[1]); past both, "rolls 14 ★☆☆".
+ * The moves made against the stars still in reach, in one rule a player reads the same way everywhere
+ * (the status row, the end, the rules card): "moves 3 of 8 for ★★★" (★★★ takes par + PAR_SLACK[0]
+ * moves or fewer, ★★ par + PAR_SLACK[1]); past both, "moves 24 ★☆☆".
  */
-function rollsToStars(rolls: number, par: number): string {
-  for (const [i, slack] of PAR_SLACK.entries()) if (rolls <= par + slack) return `rolls ${rolls} of ${par + slack} for ${stars(3 - i)}`;
-  return `rolls ${rolls} ${stars(1)}`;
+function movesToStars(moves: number, par: number): string {
+  for (const [i, slack] of PAR_SLACK.entries()) if (moves <= par + slack) return `moves ${moves} of ${par + slack} for ${stars(3 - i)}`;
+  return `moves ${moves} ${stars(1)}`;
 }
 
 /** Writes the status row: the mode's goal, its numbers (the key readout) and how to play. */
@@ -1167,25 +1236,31 @@ function updateStatus(wx: number, wy: number, wz: number): void {
     t = world.time,
     w = Math.hypot(wx, wy, wz);
   if (params.mode === 'room') {
-    let flick = touch
-      ? 'Tap the floor: the cube slides there · ▲◀▼▶ roll it'
-      : 'Click the floor: the cube slides there · W A S D roll it · Space jumps';
-    const want = layout.faces[pads.pad] ?? -1;
-    const par = padPar(layout);
+    const want = layout.faces[pads.pad] ?? -1,
+      bed = layout.beds[pads.pad] ?? -1,
+      name = FACE_NAMES[want];
+    const par = pads.par;
     // On a phone in two lines at most (the status row keeps its height: a taller one moved the view).
-    if (want >= 0 && !pads.done)
+    let flick = touch
+      ? 'Tap the floor: the cube slides there · every slide, roll, turn counts'
+      : 'Click the floor: the cube slides there · W A S D roll it · every slide, roll and turn (Q E) counts';
+    if (want >= 0 && bed > 0)
       flick = touch
-        ? `Tap beside the pad, then ROLL on (▲◀▼▶) with ${FACE_NAMES[want]} on top`
-        : `Click beside the pad to slide there, then ROLL on (W A S D) so ${FACE_NAMES[want]} lands on top: a slide onto it does not count`;
+        ? `Slides stop at the tiles: ROLL across (▲◀▼▶) so ${name} lands on top`
+        : `Slides stop at the tiles' edge: ROLL across them (W A S D) so ${name} lands on top · plan it with the net, every move counts`;
+    else if (want >= 0)
+      flick = touch
+        ? `Tap beside the pad, then ROLL on (▲◀▼▶) with ${name} on top`
+        : `Click beside the pad to slide there, then ROLL on (W A S D) so ${name} lands on top · every move counts`;
     const time = pads.time(t);
     if (pads.startedAt < 0 && !pads.done)
       flick = touch ? `Clock starts at your first tap · ${flick}` : `Clock starts at your first move · ${flick}`;
     if (pads.done) {
-      if (pads.rolls < bestRolls) bestRolls = pads.rolls;
+      if (pads.moves < bestMoves) bestMoves = pads.moves;
       status.set(
         {
-          goal: `All ${layout.pads.length} pads in ${pads.rolls} rolls, ${time.toFixed(1)} s ${stars(padStars(pads.rolls, par))}`,
-          numbers: `best ${bestRolls} rolls · ★★★ takes ${par + PAR_SLACK[0]} rolls or fewer, ★★ ${par + PAR_SLACK[1]}`,
+          goal: `All ${layout.pads.length} pads in ${pads.moves} moves (par ${par}), ${time.toFixed(1)} s ${stars(padStars(pads.moves, par))}`,
+          numbers: `best ${bestMoves} moves · ★★★ takes ${par + PAR_SLACK[0]} moves or fewer, ★★ ${par + PAR_SLACK[1]}`,
           hint: touch
             ? '↻: a new layout · Mode: free spin, then the flip challenge'
             : 'R: a new layout · M: next mode (free spin, then the flip challenge)',
@@ -1194,8 +1269,8 @@ function updateStatus(wx: number, wy: number, wz: number): void {
       );
     } else
       status.set({
-        goal: `Land the cube on the glowing pad${want >= 0 ? `, rolling on with ${FACE_NAMES[want]} up` : ', any face up'} (${pads.pad + 1} of ${layout.pads.length})`,
-        numbers: `Pads ${'●'.repeat(pads.pad)}${'○'.repeat(layout.pads.length - pads.pad)} ${pads.pad}/${layout.pads.length} · ${rollsToStars(pads.rolls, par)} · ${time.toFixed(1)} s`,
+        goal: `Land the cube on the glowing pad${want >= 0 ? ` with ${name} on top` : ', any face up'} (${pads.pad + 1} of ${layout.pads.length})`,
+        numbers: `Pads ${'●'.repeat(pads.pad)}${'○'.repeat(layout.pads.length - pads.pad)} · ${movesToStars(pads.moves, par)} · pad par ${pads.padPar} · ${time.toFixed(1)} s`,
         hint: flick,
       });
   } else if (params.mode === 'flip') {
@@ -1382,10 +1457,10 @@ function showRules(): void {
       return chip;
     }),
   );
-  const three = `${stars(3)} takes ${padPar(layout) + PAR_SLACK[0]} rolls or fewer.`;
+  const three = `${stars(3)}: par + ${PAR_SLACK[0]} moves or fewer.`;
   rulesText.textContent = touch
-    ? `From pad 2, ROLL on (▲◀▼▶) with its colour on top: a slide on does not count. The net shows what rolls bring up. ${three}`
-    : `From pad 2, ROLL onto the pad (W A S D) with its colour on top: a slide onto it does not count. The net at the left shows what each roll brings up. ${three}`;
+    ? `Every slide, roll and turn counts. From pad 2, ROLL on with its colour on top: slides stop at its tiles. ${three}`
+    : `Every move counts: slides, rolls (W A S D), quarter turns (Q E). From pad 2, ROLL onto the pad with its colour on top; slides stop at its tiles, so plan the route with the net at the left. ${three}`;
   rulesShown = params.mode === 'room';
   rules.style.display = rulesShown ? 'block' : 'none';
   rules.style.opacity = '1';
@@ -1506,6 +1581,7 @@ function frame(): void {
     padRim.position.set(spot[0], 0.025, spot[1]);
   }
   padRim.visible = padLit && pads.over;
+  placeBed(padLit ? pads.pad : -1);
   padMarks.forEach((mark, i) => {
     mark.outline.visible = room && i > pads.pad;
     mark.done.visible = room && i < pads.pad;
@@ -1547,11 +1623,16 @@ function frame(): void {
 
 const corner = new Vector3();
 /**
- * With the settings drawer open over the stage (a wide window: the game arrangement's drawer), shifts
- * the picture left and, when it would not fit, zooms it out (the camera's view offset and zoom), so the
- * room's box (floor and walls) lies in the part of the stage the drawer leaves free; closed, the
- * camera's own framing again. The camera's position and the orbit stay as they are.
+ * Fits the room's box (floor and walls) into the part of the stage the overlays leave free, by the
+ * camera's view offset and zoom (its position and the orbit stay as they are): with the settings
+ * drawer open over the stage (a wide window: the game arrangement's drawer) the part left of it,
+ * shifted left and zoomed out when it would not fit; on a tall stage (a phone) the room's floor
+ * between the face net and the touch card (TOUCH_CARD_SPACE above the stage's foot), shifted down and
+ * zoomed out (the net and the rules card covered the back of the room; the back wall's top may stay
+ * under them). Otherwise, and on the pivot, the camera's own framing.
  */
+/** On a tall stage, the height kept clear of the room's floor above the stage's foot, CSS px: the touch card's (two lines). */
+const TOUCH_CARD_SPACE = 80;
 function fitBesideDrawer(): void {
   const cam = app.camera;
   cam.clearViewOffset();
@@ -1561,27 +1642,44 @@ function fitBesideDrawer(): void {
   const c = app.canvas.getBoundingClientRect(),
     d = pageLayout().side.getBoundingClientRect();
   const covered = open && d.width > 0 ? Math.max(0, c.right - d.left + 8) : 0;
-  if (params.mode !== 'room' || covered === 0 || covered > 0.7 * c.width) return;
+  const below = tallStage() && !open ? Math.max(0, net.getBoundingClientRect().bottom - c.top + 6) : 0;
+  if (params.mode !== 'room' || (covered === 0 && below === 0) || covered > 0.7 * c.width || below > 0.5 * c.height) return;
   cam.updateMatrixWorld();
-  let a = Infinity,
-    b = -Infinity;
+  // The box's extent on the screen, in normalised device coordinates: x in [ax, bx], y in [ay, by].
+  let ax = Infinity,
+    bx = -Infinity,
+    ay = Infinity,
+    by = -Infinity;
   for (const x of [-ROOM_HALF, ROOM_HALF])
-    for (const y of [0, WALL_HEIGHT])
+    for (const y of below > 0 ? [0] : [0, WALL_HEIGHT])
       for (const z of [-ROOM_HALF, ROOM_HALF]) {
-        const nx = corner.set(x, y, z).project(cam).x;
-        a = Math.min(a, nx);
-        b = Math.max(b, nx);
+        corner.set(x, y, z).project(cam);
+        ax = Math.min(ax, corner.x);
+        bx = Math.max(bx, corner.x);
+        ay = Math.min(ay, corner.y);
+        by = Math.max(by, corner.y);
       }
-  // The free part of the stage in normalised device x: [-1, r].
-  const r = 1 - (2 * covered) / c.width;
-  const k = Math.min(1, (0.96 * (r + 1)) / (b - a));
-  const shift = (r - 1) / 2 - (k * (a + b)) / 2;
-  cam.zoom = k;
-  cam.setViewOffset(c.width, c.height, (-shift * c.width) / 2, 0, c.width, c.height);
+  if (covered > 0) {
+    // The free part of the stage in normalised device x: [-1, r].
+    const r = 1 - (2 * covered) / c.width;
+    const k = Math.min(1, (0.96 * (r + 1)) / (bx - ax));
+    const shift = (r - 1) / 2 - (k * (ax + bx)) / 2;
+    cam.zoom = k;
+    cam.setViewOffset(c.width, c.height, (-shift * c.width) / 2, 0, c.width, c.height);
+  } else {
+    // The free part of the stage in normalised device y: [l, r] (below the net, above the touch card).
+    const r = 1 - (2 * below) / c.height,
+      l = -1 + (2 * TOUCH_CARD_SPACE) / c.height;
+    const k = Math.min(1, (0.98 * (r - l)) / (by - ay));
+    const shift = (r + l) / 2 - (k * (ay + by)) / 2;
+    cam.zoom = k;
+    cam.setViewOffset(c.width, c.height, 0, (shift * c.height) / 2, c.width, c.height);
+  }
   cam.updateProjectionMatrix();
 }
 new MutationObserver(fitBesideDrawer).observe(pageLayout().root, { attributes: true, attributeFilter: ['data-open'] });
 window.addEventListener('resize', fitBesideDrawer);
+fitBesideDrawer();
 
 // ---- Test and console hooks on window.game ---------------------------------------------------
 
@@ -1626,9 +1724,15 @@ shell.expose({
     pads: layout.pads.map((p) => [p[0], p[1]]),
     faces: [...layout.faces],
     halves: [...layout.halves],
-    /** Rolls made in the round (changes of the face on top), the round's par (`padPar`), and whether the cube rolled since its last slide. */
+    /**
+     * Rolls made in the round (changes of the face on top), moves (rolls, slides, turns, jumps), the
+     * round's par so far and the lit pad's (scene.ts `padMovePar`), and whether the cube rolled since its last slide.
+     */
     rolls: pads.rolls,
-    par: padPar(layout),
+    moves: pads.moves,
+    par: pads.par,
+    padPar: pads.padPar,
+    beds: [...layout.beds],
     rolled: pads.rolled,
     flips: flips.counter.count,
     flipsWonAt: flips.wonAt,
