@@ -4,7 +4,7 @@
  * tumbles, slides and bounces off them. The challenge: rest it on five glowing pads in turn, the last
  * four with a given face on top and reached by a roll (a slide keeps the top face, so the player slides
  * to the side of the pad from which a roll brings that face up), each pad smaller than the one before;
- * stars by rolls (★★★ in the layout's par, scene.ts `padPar`, plus PAR_SLACK[0] or fewer). A click or tap on the floor pushes the cube towards that point, just hard enough that
+ * stars by moves (★★★ in the round's par, scene.ts `padMovePar` per pad, plus PAR_SLACK[0] or fewer). A click or tap on the floor pushes the cube towards that point, just hard enough that
  * sliding on a face it stops there (`slideSpeed`); a click on the cube flicks it away from the point
  * clicked at a fixed speed; W A S D roll it over its edges in the screen's directions and Q E turn it
  * (a couple of forces from `applyForceAtPoint` in a forces-stage system, which stops pushing once it
@@ -22,8 +22,10 @@
  * spin; Space jump (room); M switches mode (room, cube on a pivot, flip); P pause, N single step, R reset.
  * Click: room: the floor, a push there; the cube, a flick away from the point; pivot: an impulse at the
  * point of the face clicked along the ray. Drag: orbit.
- * Challenges: room: rest the cube on five pads in turn, the last four rolled onto with a given face up
- * (stars by rolls against par); flip: 10 flips in 20 s, counted only while the spin is within FLIP_BAND.
+ * Challenges: room: rest the cube on five pads in turn, the last four rolled onto with a given face up,
+ * the last three across a bed of tiles a slide stops at (stars by moves against par: roll-puzzle.ts);
+ * cube on the pivot: steer ω onto three target spins and hold each (spin-challenge.ts); flip: 10 flips
+ * in 20 s, counted only while the spin is within FLIP_BAND.
  * Each run (page load or R) lays the pads out afresh from a seed (scene.ts `padLayout`); the face net at
  * the top left of the stage shows which colour each roll key brings on top, and until the first roll a
  * card at the top right shows the round (each pad's colour to land with on top) and the rule. The lit
@@ -70,6 +72,7 @@ import {
   MeshStandardMaterial,
   PlaneGeometry,
   RingGeometry,
+  SphereGeometry,
   SRGBColorSpace,
   Vector3,
 } from 'three';
@@ -108,6 +111,7 @@ import {
   WALL_HEIGHT,
   YawKeeper,
 } from './scene';
+import { SPIN_HOLD, SPIN_RATE, SPIN_STAR_TIMES, SPIN_TARGETS, SPIN_TOLERANCE, SpinChallenge, spinTargets } from './spin-challenge';
 
 /** A press that moves more than this, CSS px, is a camera drag, not a click (a finger: TAP_SLOP, fingers wobble more). */
 const CLICK_SLOP = 5;
@@ -142,7 +146,12 @@ let layout: PadLayout = padLayout(fixedSeed ?? Math.floor(Math.random() * 2 ** 3
 /** Room mode's challenge (the pads) and flip mode's (flips in FLIP_TIME); reset with the world. */
 const pads = new PadChallenge(),
   flips = new FlipChallenge();
-/** Best round of this page visit: fewest moves in a pad round, and most flips. */
+/** Free-spin mode's challenge: steer ω onto three target spins in turn (spin-challenge.ts); its targets set per world from the camera's axes. */
+const spins = new SpinChallenge(spinTargets([1, 0, 0], [0, 1, 0]));
+/** Targets reached and not yet celebrated (their indices). */
+const spinsReached: number[] = [];
+/** Best round of this page visit: fewest moves in a pad round, fastest free-spin round (s), and most flips. */
+let bestSpinTime = Infinity;
 let bestMoves = Infinity,
   bestFlips = 0;
 /** Arrow length per rad/s of angular velocity, m: set per world so the starting spin shows as ARROW_LENGTH. */
@@ -224,6 +233,25 @@ function cameraHeading(): number {
   return params.mode === 'room' ? (Math.PI / 2) * Math.round(heading / (Math.PI / 2)) : heading;
 }
 
+/**
+ * The camera's right and up, unit vectors, world frame (the default view's before the game has
+ * started, or when it was framed for another mode): the free-spin targets are set along them, so the
+ * torque keys' axes (pitch about right, yaw about up) line up with them.
+ */
+function cameraAxes(): [number[], number[]] {
+  if (threeApp && framedMode === params.mode) {
+    const x = new Vector3(),
+      y = new Vector3(),
+      z = new Vector3();
+    threeApp.camera.matrixWorld.extractBasis(x, y, z);
+    return [x.toArray(), y.toArray()];
+  }
+  // three.js's lookAt: right = world up x back, up = back x right (back: from the target to the camera).
+  const back = new Vector3(...viewDirectionOf(params.mode)).normalize();
+  const right = new Vector3(0, 1, 0).cross(back).normalize();
+  return [right.toArray(), back.clone().cross(right).normalize().toArray()];
+}
+
 /** A fresh world with the body of the current mode (the shell calls it at start and on R). */
 function createWorld(): PhysicsWorld {
   const world = createPhysicsWorld(rotatingCubeWorldOptions(params.mode));
@@ -232,7 +260,8 @@ function createWorld(): PhysicsWorld {
   yawKeeper.reset(heading);
   const w = world.components.AngularVelocity,
     e = handles.body;
-  omegaScale = ARROW_LENGTH / Math.max(1, Math.hypot(w.x[e]!, w.y[e]!, w.z[e]!));
+  // On the free-spin pivot the targets' spin (SPIN_RATE) shows as ARROW_LENGTH.
+  omegaScale = ARROW_LENGTH / Math.max(1, Math.hypot(w.x[e]!, w.y[e]!, w.z[e]!), params.mode === 'cube' ? SPIN_RATE : 0);
   addSystem(
     world,
     'forces',
@@ -243,6 +272,8 @@ function createWorld(): PhysicsWorld {
   layout = padLayout(fixedSeed ?? Math.floor(Math.random() * 2 ** 31));
   pads.reset(layout);
   flips.reset();
+  spins.reset(spinTargets(...cameraAxes()));
+  spinsReached.length = 0;
   padsReached.length = 0;
   latchUntil = -1;
   addSystem(world, 'finalize', (w) => {
@@ -256,6 +287,7 @@ function createWorld(): PhysicsWorld {
         padsReached.push({ pad: k, time: w.time, miss, moves: pads.movesAtLight - movesBefore, par: pads.pars[k] ?? 0 });
       }
     } else if (params.mode === 'flip') flips.update(w, handles.body);
+    else if (spins.update(w, handles.body)) spinsReached.push(spins.target - 1);
   });
   // Held at its pivot, the box has no collider: a floor far below only catches the shadow. The room has its own floor.
   if (params.mode !== 'room') addPlane(world, { normal: [0, 1, 0], point: [0, -1.6, 0] });
@@ -274,9 +306,7 @@ const sound = getSound();
 const L = new Float64Array(3),
   wb = new Float64Array(3);
 let lastPlotted = -1,
-  frames = 0,
-  /** Angle between L and w, degrees (the readout's, for the status row). */
-  angleLw = 0;
+  frames = 0;
 
 /**
  * The pixel ratio to render at: the kit's default (the device's, at most 2; SOFTWARE_PIXEL_RATIO, a
@@ -315,8 +345,8 @@ const game = await startThreeGame({
         ]
       : [
           { keys: 'Click', action: 'a face: knock it there (an impulse)', touch: 'Tap' },
-          { keys: 'W S, A D', action: 'torque: pitch, yaw', touch: 'Pitch, Yaw' },
-          { keys: 'Q E', action: 'torque: roll', touch: 'Roll ⟲ ⟳' },
+          { keys: 'W S, A D', action: "torque about the screen's axes (pitch, yaw)", touch: 'Pitch ▲▼ Yaw ◀▶' },
+          { keys: 'Q E', action: 'torque about the view (roll)', touch: 'Roll ⟲ ⟳' },
           { keys: 'X', action: 'stop spinning', touch: 'Stop' },
           { keys: 'M', action: 'mode: room / cube on a pivot / Dzhanibekov flip', touch: 'Mode' },
           ...ORBIT_CONTROLS,
@@ -403,6 +433,7 @@ function push(): number {
 function startClock(): void {
   if (params.mode === 'room') pads.start(shell.world.time);
   else if (params.mode === 'flip') flips.start(shell.world.time);
+  else spins.start(shell.world.time);
 }
 
 /** Space: in room mode, a jump (an impulse up at the centre of mass). */
@@ -653,8 +684,20 @@ function sayBlocked(): void {
   else if (why === 'slide') showPop(`✗ Slid on: roll onto it to count`, 1800, '#ffb4a8');
 }
 
-/** Celebrates the pads reached since the last frame: chime, burst ring, pop. */
+/** Celebrates the pads reached (chime, burst ring, pop) and the free-spin targets reached (chime, pop) since the last frame. */
 function celebrate(): void {
+  while (spinsReached.length > 0) {
+    const k = spinsReached.shift()!;
+    const last = k === SPIN_TARGETS - 1;
+    sound.chime(PAD_PITCHES[k * 2] ?? 880, 0.35);
+    if (last) window.setTimeout(() => sound.chime(1568, 0.8), 180);
+    showPop(
+      last
+        ? `All ${SPIN_TARGETS} spins! ${spins.time(shell.world.time).toFixed(1)} s ${stars(spins.stars())}`
+        : `Spin ${k + 1} of ${SPIN_TARGETS} ✓`,
+      last ? 2600 : 1100,
+    );
+  }
   while (padsReached.length > 0) {
     const r = padsReached.shift()!;
     const last = r.pad === layout.pads.length - 1;
@@ -672,6 +715,30 @@ function celebrate(): void {
       last ? 2600 : 1100,
     );
   }
+}
+
+// Free spin: the lit target spin, an arrow from the pivot on ω's scale, and a see-through ball at its
+// tip as large as the tolerance (ω's tip inside it counts).
+const targetArrow = new VectorArrow({ color: 0x22d3ee, radius: 0.03, headLength: 0.16 });
+const targetBall = new Mesh(
+  new SphereGeometry(1, 24, 16),
+  new MeshBasicMaterial({ color: 0x22d3ee, transparent: true, opacity: 0.22, depthWrite: false }),
+);
+app.scene.add(targetArrow.object, targetBall);
+/** Draws the lit free-spin target (hidden in the other modes and once the round is won); the ball brightens while ω's tip is in it. */
+function drawSpinTarget(): void {
+  const aim = spins.targets[spins.target];
+  if (params.mode !== 'cube' || spins.won || !aim) {
+    targetArrow.hide();
+    targetBall.visible = false;
+    return;
+  }
+  const o = handles.pivot;
+  targetArrow.set(o[0], o[1], o[2], aim[0], aim[1], aim[2], omegaScale);
+  targetBall.visible = true;
+  targetBall.position.set(o[0] + aim[0] * omegaScale, o[1] + aim[1] * omegaScale, o[2] + aim[2] * omegaScale);
+  targetBall.scale.setScalar(SPIN_TOLERANCE * omegaScale);
+  (targetBall.material as MeshBasicMaterial).opacity = spins.held > 0 ? 0.5 : 0.22;
 }
 
 const lArrow = new VectorArrow({ color: 0xffd166, radius: 0.025, headLength: 0.14 });
@@ -1270,7 +1337,7 @@ function updateStatus(wx: number, wy: number, wz: number): void {
     } else
       status.set({
         goal: `Land the cube on the glowing pad${want >= 0 ? ` with ${name} on top` : ', any face up'} (${pads.pad + 1} of ${layout.pads.length})`,
-        numbers: `Pads ${'●'.repeat(pads.pad)}${'○'.repeat(layout.pads.length - pads.pad)} · ${movesToStars(pads.moves, par)} · pad par ${pads.padPar} · ${time.toFixed(1)} s`,
+        numbers: `Pads ${'●'.repeat(pads.pad)}${'○'.repeat(layout.pads.length - pads.pad)} · ${movesToStars(pads.moves, par)} · pad\u00a0par\u00a0${pads.padPar} · ${time.toFixed(1)} s`,
         hint: flick,
       });
   } else if (params.mode === 'flip') {
@@ -1305,13 +1372,26 @@ function updateStatus(wx: number, wy: number, wz: number): void {
           },
       over && flips.wonAt >= 0,
     );
+  } else if (spins.won) {
+    const time = spins.time(t);
+    if (time < bestSpinTime) bestSpinTime = time;
+    status.set(
+      {
+        goal: `All ${SPIN_TARGETS} spins in ${time.toFixed(1)} s ${stars(spins.stars())}`,
+        numbers: `best ${bestSpinTime.toFixed(1)} s · ★★★ within ${SPIN_STAR_TIMES[0]} s, ★★ ${SPIN_STAR_TIMES[1]} s`,
+        hint: touch ? '↻: again · Mode: a box, whose ω wanders and flips' : 'R: again · M: a box, whose ω wanders and flips',
+      },
+      true,
+    );
   } else {
+    // A cube's inertia is the same about every axis, so its ω stays along L and a torque moves ω's tip the way it points.
+    const hold = spins.held > 0 ? `holding ${spins.held.toFixed(1)} of ${SPIN_HOLD} s ✓` : `hold it ${SPIN_HOLD} s`;
     status.set({
-      // A cube's inertia is the same about every axis, so its ω stays along L; the box (M) is the one
-      // whose ω wanders and flips.
-      goal: 'Free spin: a cube turns alike about every axis, so ω (magenta) stays on L (yellow)',
-      numbers: `|ω| ${w.toFixed(2)} rad/s · angle L–ω ${angleLw.toFixed(1)}°`,
-      hint: touch ? 'Mode: a box, whose ω wanders and flips' : 'M: a box, whose ω wanders and flips',
+      goal: `Free spin: steer ω (magenta) onto the cyan arrow, ${hold} (${spins.target + 1} of ${SPIN_TARGETS})`,
+      numbers: `off by ${(spins.startedAt < 0 ? Math.hypot(wx - spins.targets[0]![0], wy - spins.targets[0]![1], wz - spins.targets[0]![2]) : spins.off).toFixed(2)} rad/s (within ${SPIN_TOLERANCE} counts) · |ω| ${w.toFixed(2)} · ${spins.time(t).toFixed(1)} s`,
+      hint: touch
+        ? `${spins.startedAt < 0 ? 'Clock starts at your first tap · ' : ''}Pitch, Yaw, Roll push ω's tip their way; ease off before it overshoots`
+        : `${spins.startedAt < 0 ? 'Clock starts at your first key · ' : ''}W S (pitch), A D (yaw), Q E (roll) push ω's tip the way the torque points; X stops it; ease off before it overshoots`,
     });
   }
 }
@@ -1554,9 +1634,9 @@ function frame(): void {
     const lw = Math.hypot(L[0]!, L[1]!, L[2]!) * Math.hypot(wx, wy, wz);
     const angle = lw > 0 ? (Math.acos(Math.min(1, (L[0]! * wx + L[1]! * wy + L[2]! * wz) / lw)) * 180) / Math.PI : 0;
     lines[5]!.textContent = `angle between L and ω ${angle.toFixed(1)}°`;
-    angleLw = angle;
   }
   if (frames % 5 === 0) updateStatus(wx, wy, wz);
+  drawSpinTarget();
   if (frames % 3 === 0) updateNet();
   // The lit pad glows (pulsing) while the room's round runs; the ones to come are outlined, the ones reached gold.
   const room = params.mode === 'room';
@@ -1736,6 +1816,8 @@ shell.expose({
     rolled: pads.rolled,
     flips: flips.counter.count,
     flipsWonAt: flips.wonAt,
+    /** Free spin: the lit target's index (SPIN_TARGETS once won), the targets (rad/s, world frame), how long ω has held on it (s), how far off it is (rad/s), and when the round was won (s, -1 if not yet). */
+    spin: { target: spins.target, targets: spins.targets.map((v) => [...v]), held: spins.held, off: spins.off, wonAt: spins.wonAt },
   }),
   /** Starts the round's clock (the pads' or the flips'), as the player's first input does. */
   startClock,
