@@ -244,7 +244,7 @@ function cameraAxes(): [number[], number[]] {
       y = new Vector3(),
       z = new Vector3();
     threeApp.camera.matrixWorld.extractBasis(x, y, z);
-    return [x.toArray(), y.toArray()];
+    return [x.normalize().toArray(), y.normalize().toArray()];
   }
   // three.js's lookAt: right = world up x back, up = back x right (back: from the target to the camera).
   const back = new Vector3(...viewDirectionOf(params.mode)).normalize();
@@ -1337,7 +1337,8 @@ function updateStatus(wx: number, wy: number, wz: number): void {
     } else
       status.set({
         goal: `Land the cube on the glowing pad${want >= 0 ? ` with ${name} on top` : ', any face up'} (${pads.pad + 1} of ${layout.pads.length})`,
-        numbers: `Pads ${'●'.repeat(pads.pad)}${'○'.repeat(layout.pads.length - pads.pad)} · ${movesToStars(pads.moves, par)} · pad\u00a0par\u00a0${pads.padPar} · ${time.toFixed(1)} s`,
+        // On a phone without the clock (stars go by moves), so the line stays within two.
+        numbers: `Pads ${'●'.repeat(pads.pad)}${'○'.repeat(layout.pads.length - pads.pad)} ${pads.pad}/${layout.pads.length} · ${movesToStars(pads.moves, par)} · pad\u00a0par\u00a0${pads.padPar}${touch ? '' : ` · ${time.toFixed(1)} s`}`,
         hint: flick,
       });
   } else if (params.mode === 'flip') {
