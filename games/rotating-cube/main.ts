@@ -332,25 +332,21 @@ const game = await startThreeGame({
       });
   },
   // The legend and the phone's touch card: a page opened on the pivot speaks of the pivot (no floor there).
-  controls:
+  controls: [
     params.mode === 'room'
-      ? [
-          { keys: 'Click', action: 'the floor: push the cube there; the cube: flick it away', touch: 'Tap' },
-          { keys: 'W A S D', action: 'roll the cube (pivot: pitch, yaw)', touch: '▲ ◀ ▼ ▶' },
-          { keys: 'Q E', action: 'turn it a quarter (pivot: roll)', touch: '⟲ ⟳' },
-          { keys: 'X', action: 'stop spinning', touch: 'Stop' },
-          { keys: 'Space', action: 'jump (room mode)', touch: 'Jump' },
-          { keys: 'M', action: 'mode: room / cube on a pivot / Dzhanibekov flip', touch: 'Mode' },
-          ...ORBIT_CONTROLS,
-        ]
-      : [
-          { keys: 'Click', action: 'a face: knock it there (an impulse)', touch: 'Tap' },
-          { keys: 'W S, A D', action: "torque about the screen's axes (pitch, yaw)", touch: 'Pitch ▲▼ Yaw ◀▶' },
-          { keys: 'Q E', action: 'torque about the view (roll)', touch: 'Roll ⟲ ⟳' },
-          { keys: 'X', action: 'stop spinning', touch: 'Stop' },
-          { keys: 'M', action: 'mode: room / cube on a pivot / Dzhanibekov flip', touch: 'Mode' },
-          ...ORBIT_CONTROLS,
-        ],
+      ? { keys: 'Click', action: 'the floor: push the cube there; the cube: flick it away', touch: 'Tap' }
+      : { keys: 'Click', action: 'a face: knock it there (an impulse)', touch: 'Tap' },
+    params.mode === 'room'
+      ? { keys: 'W A S D', action: 'roll the cube (pivot: pitch, yaw)', touch: '▲ ◀ ▼ ▶' }
+      : { keys: 'W S, A D', action: "torque about the screen's axes (pitch, yaw)", touch: 'Pitch ▲▼ Yaw ◀▶' },
+    params.mode === 'room'
+      ? { keys: 'Q E', action: 'turn it a quarter (pivot: roll)', touch: '⟲ ⟳' }
+      : { keys: 'Q E', action: 'torque about the view (roll)', touch: 'Roll ⟲ ⟳' },
+    { keys: 'X', action: 'stop spinning', touch: 'Stop' },
+    ...(params.mode === 'room' ? [{ keys: 'Space', action: 'jump (room mode)', touch: 'Jump' }] : []),
+    { keys: 'M', action: 'mode: room / cube on a pivot / Dzhanibekov flip', touch: 'Mode' },
+    ...ORBIT_CONTROLS,
+  ],
   keys: [
     { key: 'x', label: 'stop', action: () => stopSpin() },
     { key: 'm', label: 'mode', action: () => setMode(MODES[(MODES.indexOf(params.mode) + 1) % MODES.length]!) },
