@@ -96,6 +96,7 @@ import {
   PadChallenge,
   type PadLayout,
   padLayout,
+  padMoveRoute,
   padPuzzle,
   padStars,
   ROLL_SPIN_MAX,
@@ -1291,6 +1292,62 @@ function movesToStars(moves: number, par: number): string {
   return `moves ${moves} ${stars(1)}`;
 }
 
+/**
+ * Room mode: moves on a pad past its par after which the status row shows a shortest way on from where
+ * the cube rests (`routeHint`): a newcomer stuck on a bed still clears the round, and by then three
+ * stars (par + PAR_SLACK[0] over the round) are out of reach.
+ */
+const HINT_AFTER = 3;
+/** The first slide of the route the status row shows (x, z, m), ringed on the floor; null when none shows. */
+let hintSpot: [number, number] | null = null;
+const hintRing = new Mesh(
+  new RingGeometry(0.3, 0.4, 40).rotateX(-Math.PI / 2),
+  new MeshBasicMaterial({ color: 0xffe27a, transparent: true, opacity: 0.9, side: DoubleSide, depthWrite: false }),
+);
+hintRing.visible = false;
+app.scene.add(hintRing);
+/** The key (on a phone the arrow) that rolls the cube along level world direction `d` (0 +x, 1 -x, 4 +z, 5 -z) with the camera where it is. */
+function rollKey(d: number): string {
+  app.camera.matrixWorld.extractBasis(right, up, back);
+  const tx = d === 0 ? 1 : d === 1 ? -1 : 0,
+    tz = d === 4 ? 1 : d === 5 ? -1 : 0;
+  // Each key's travel on the floor: W away from the viewer (-back), S towards, A left (-right), D right.
+  const keys: [string, number, number][] = [
+    ['w', -back.x, -back.z],
+    ['s', back.x, back.z],
+    ['a', -right.x, -right.z],
+    ['d', right.x, right.z],
+  ];
+  let best = keys[0]!;
+  for (const k of keys) if (k[1] * tx + k[2] * tz > best[1] * tx + best[2] * tz) best = k;
+  const arrows: Record<string, string> = { w: '▲', s: '▼', a: '◀', d: '▶' };
+  return touch ? arrows[best[0]]! : best[0].toUpperCase();
+}
+/**
+ * Room mode: once the moves on the lit pad (one that wants a face) pass its par by HINT_AFTER and the
+ * cube rests, a shortest way on from there (scene.ts `padMoveRoute`) in keys ("slide to the ringed
+ * tile, then D W W"), its first slide's tile ringed (`hintSpot`); else ''.
+ */
+function routeHint(): string {
+  hintSpot = null;
+  if (pads.done || (layout.faces[pads.pad] ?? -1) < 0 || pads.padMoves < pads.padPar + HINT_AFTER) return '';
+  const c = shell.world.components,
+    e = handles.body;
+  if (Math.hypot(c.Velocity.x[e]!, c.Velocity.y[e]!, c.Velocity.z[e]!) > 0.05) return '';
+  if (Math.hypot(c.AngularVelocity.x[e]!, c.AngularVelocity.y[e]!, c.AngularVelocity.z[e]!) > 0.1) return '';
+  const route = padMoveRoute(shell.world, e, layout, pads.pad);
+  if (!route || route.length === 0) return '';
+  const spot = layout.pads[pads.pad]!;
+  const words = route.map((m) => {
+    if (m.kind === 'roll') return rollKey(m.direction);
+    if (m.kind === 'turn') return touch ? (m.direction === 1 ? '⟲' : '⟳') : m.direction === 1 ? 'Q' : 'E';
+    if (!m.to) return 'slide off the tiles,';
+    if (!hintSpot) hintSpot = [spot[0] + m.to[0], spot[1] + m.to[1]];
+    return `${touch ? 'tap' : 'click'} the ringed tile,`;
+  });
+  return `Stuck? A shortest way from here: ${words.join(' ')}`;
+}
+
 /** Writes the status row: the mode's goal, its numbers (the key readout) and how to play. */
 function updateStatus(wx: number, wy: number, wz: number): void {
   // Flip mode's spin: |L| over the intermediate moment, steady while the box flips (|ω| swings).
@@ -1316,6 +1373,7 @@ function updateStatus(wx: number, wy: number, wz: number): void {
         ? `Tap beside the pad, then ROLL on (▲◀▼▶) with ${name} on top`
         : `Click beside the pad to slide there, then ROLL on (W A S D) so ${name} lands on top · every move counts`;
     const time = pads.time(t);
+    flick = routeHint() || flick;
     if (pads.startedAt < 0 && !pads.done)
       flick = touch ? `Clock starts at your first tap · ${flick}` : `Clock starts at your first move · ${flick}`;
     if (pads.done) {
@@ -1658,6 +1716,8 @@ function frame(): void {
     padRim.position.set(spot[0], 0.025, spot[1]);
   }
   padRim.visible = padLit && pads.over;
+  hintRing.visible = padLit && hintSpot !== null;
+  if (hintSpot) hintRing.position.set(hintSpot[0], 0.035, hintSpot[1]);
   placeBed(padLit ? pads.pad : -1);
   padMarks.forEach((mark, i) => {
     mark.outline.visible = room && i > pads.pad;

@@ -30,7 +30,7 @@ import {
   setAngularVelocity,
   spinAngularMomentum,
 } from '@bitphysics/physics';
-import { gridOrientationOf, movePar, type RollPuzzle } from './roll-puzzle';
+import { gridOrientationOf, moveRoute, type RollMove, type RollPuzzle } from './roll-puzzle';
 
 /** The modes, the default first (the M key cycles through them in this order). */
 export const MODES = ['room', 'cube', 'flip'] as const;
@@ -517,12 +517,12 @@ export function padPuzzle(layout: PadLayout, k: number): RollPuzzle {
   return { pad: [pad[0], pad[1]], want: layout.faces[k]!, bed: layout.beds[k]!, reach: CELL_REACH };
 }
 /**
- * The par of pad `k` of `layout` for `body` where it is now in `world` (roll-puzzle.ts `movePar`): the
- * fewest slides, rolls and quarter turns that land it there with the wanted face on top, from its
- * orientation (square to the world's axes) and its cell (the cell offset from the pad its centre lies
- * within CELL_SNAP of, else away from the pad).
+ * A shortest route (roll-puzzle.ts `moveRoute`) for `body` where it is now in `world` onto pad `k` of
+ * `layout` with the face it wants on top, from its orientation (square to the world's axes) and its
+ * cell (the cell offset from the pad its centre lies within CELL_SNAP of, else away from the pad).
+ * @returns the moves, or null if none reaches it.
  */
-export function padMovePar(world: PhysicsWorld, body: number, layout: PadLayout, k: number): number {
+export function padMoveRoute(world: PhysicsWorld, body: number, layout: PadLayout, k: number): RollMove[] | null {
   const p = padPuzzle(layout, k);
   const P = world.components.Position,
     q = world.components.Orientation;
@@ -531,7 +531,11 @@ export function padMovePar(world: PhysicsWorld, body: number, layout: PadLayout,
   const i = Math.round(u),
     j = Math.round(v);
   const cell: [number, number] | null = Math.hypot(u - i, v - j) <= CELL_SNAP ? [i, j] : null;
-  return movePar(p, cell, gridOrientationOf(q.x[body]!, q.y[body]!, q.z[body]!, q.w[body]!));
+  return moveRoute(p, cell, gridOrientationOf(q.x[body]!, q.y[body]!, q.z[body]!, q.w[body]!));
+}
+/** The par of pad `k` of `layout` for `body` where it is now in `world`: the length of `padMoveRoute`, or -1 if none reaches it. */
+export function padMovePar(world: PhysicsWorld, body: number, layout: PadLayout, k: number): number {
+  return padMoveRoute(world, body, layout, k)?.length ?? -1;
 }
 /** A resting cube's centre within this of a grid cell's centre, m, is taken to be on that cell. */
 const CELL_SNAP = 0.3;
