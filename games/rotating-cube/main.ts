@@ -1594,8 +1594,8 @@ function showRules(): void {
   );
   const three = `${stars(3)}: par + ${PAR_SLACK[0]} moves or fewer.`;
   rulesText.textContent = touch
-    ? `Every slide, roll and turn counts. From pad 2, ROLL on with its colour on top: slides stop at its tiles. ${three}`
-    : `Every move counts: slides, rolls (W A S D), quarter turns (Q E). From pad 2, ROLL onto the pad with its colour on top; slides stop at its tiles, so plan the route with the net at the left. ${three}`;
+    ? `Every slide, roll and turn counts. From pad 2, ROLL on with its colour on top; from pad 3 across its tiles (slides stop at them). ${three}`
+    : `Every move counts: slides, rolls (W A S D), quarter turns (Q E). From pad 2, ROLL onto the pad with its colour on top; from pad 3 slides stop at its tiles, so plan the route across them with the net at the left. ${three}`;
   rulesShown = params.mode === 'room';
   rules.style.display = rulesShown ? 'block' : 'none';
   rules.style.opacity = '1';
