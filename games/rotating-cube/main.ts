@@ -307,7 +307,9 @@ const sound = getSound();
 const L = new Float64Array(3),
   wb = new Float64Array(3);
 let lastPlotted = -1,
-  frames = 0;
+  frames = 0,
+  /** Whether `fitBesideDrawer` is defined with what it reads (frames run while this module still awaits the plot). */
+  framingReady = false;
 
 /**
  * The pixel ratio to render at: the kit's default (the device's, at most 2; SOFTWARE_PIXEL_RATIO, a
@@ -1692,6 +1694,8 @@ function frame(): void {
   }
   if (frames % 5 === 0) updateStatus(wx, wy, wz);
   drawSpinTarget();
+  // On a phone the room's framing follows the camera (it eases into its view after a load, and the player orbits it).
+  if (framingReady && tallStage() && params.mode === 'room') fitBesideDrawer();
   if (frames % 3 === 0) updateNet();
   // The lit pad glows (pulsing) while the room's round runs; the ones to come are outlined, the ones reached gold.
   const room = params.mode === 'room';
@@ -1817,6 +1821,7 @@ function fitBesideDrawer(): void {
 new MutationObserver(fitBesideDrawer).observe(pageLayout().root, { attributes: true, attributeFilter: ['data-open'] });
 window.addEventListener('resize', fitBesideDrawer);
 fitBesideDrawer();
+framingReady = true;
 
 // ---- Test and console hooks on window.game ---------------------------------------------------
 
