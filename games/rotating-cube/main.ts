@@ -4,7 +4,7 @@
  * tumbles, slides and bounces off them. The challenge: rest it on five glowing pads in turn, the last
  * four with a given face on top and reached by a roll (a slide keeps the top face, so the player slides
  * to the side of the pad from which a roll brings that face up), each pad smaller than the one before;
- * stars by rolls (★★★ in the layout's par, scene.ts `padPar`, plus PAR_SLACK[0] or fewer). A click or tap on the floor pushes the cube towards that point, just hard enough that
+ * stars by moves (★★★ in the round's par, scene.ts `padMovePar` per pad, plus PAR_SLACK[0] or fewer). A click or tap on the floor pushes the cube towards that point, just hard enough that
  * sliding on a face it stops there (`slideSpeed`); a click on the cube flicks it away from the point
  * clicked at a fixed speed; W A S D roll it over its edges in the screen's directions and Q E turn it
  * (a couple of forces from `applyForceAtPoint` in a forces-stage system, which stops pushing once it
@@ -22,8 +22,10 @@
  * spin; Space jump (room); M switches mode (room, cube on a pivot, flip); P pause, N single step, R reset.
  * Click: room: the floor, a push there; the cube, a flick away from the point; pivot: an impulse at the
  * point of the face clicked along the ray. Drag: orbit.
- * Challenges: room: rest the cube on five pads in turn, the last four rolled onto with a given face up
- * (stars by rolls against par); flip: 10 flips in 20 s, counted only while the spin is within FLIP_BAND.
+ * Challenges: room: rest the cube on five pads in turn, the last four rolled onto with a given face up,
+ * the last three across a bed of tiles a slide stops at (stars by moves against par: roll-puzzle.ts);
+ * cube on the pivot: steer ω onto three target spins and hold each (spin-challenge.ts); flip: 10 flips
+ * in 20 s, counted only while the spin is within FLIP_BAND.
  * Each run (page load or R) lays the pads out afresh from a seed (scene.ts `padLayout`); the face net at
  * the top left of the stage shows which colour each roll key brings on top, and until the first roll a
  * card at the top right shows the round (each pad's colour to land with on top) and the rule. The lit
@@ -70,11 +72,14 @@ import {
   MeshStandardMaterial,
   PlaneGeometry,
   RingGeometry,
+  SphereGeometry,
   SRGBColorSpace,
   Vector3,
 } from 'three';
+import { bedSnap } from './roll-puzzle';
 import {
   buildRotatingCube,
+  CELL_REACH,
   FACES,
   FLIP_BAND,
   FLIP_GOAL,
@@ -91,7 +96,8 @@ import {
   PadChallenge,
   type PadLayout,
   padLayout,
-  padPar,
+  padMoveRoute,
+  padPuzzle,
   padStars,
   ROLL_SPIN_MAX,
   ROLL_TORQUE,
@@ -106,6 +112,7 @@ import {
   WALL_HEIGHT,
   YawKeeper,
 } from './scene';
+import { SPIN_HOLD, SPIN_RATE, SPIN_STAR_TIMES, SPIN_TARGETS, SPIN_TOLERANCE, SpinChallenge, spinTargets } from './spin-challenge';
 
 /** A press that moves more than this, CSS px, is a camera drag, not a click (a finger: TAP_SLOP, fingers wobble more). */
 const CLICK_SLOP = 5;
@@ -140,8 +147,13 @@ let layout: PadLayout = padLayout(fixedSeed ?? Math.floor(Math.random() * 2 ** 3
 /** Room mode's challenge (the pads) and flip mode's (flips in FLIP_TIME); reset with the world. */
 const pads = new PadChallenge(),
   flips = new FlipChallenge();
-/** Best round of this page visit: fewest rolls in a pad round, and most flips. */
-let bestRolls = Infinity,
+/** Free-spin mode's challenge: steer ω onto three target spins in turn (spin-challenge.ts); its targets set per world from the camera's axes. */
+const spins = new SpinChallenge(spinTargets([1, 0, 0], [0, 1, 0]));
+/** Targets reached and not yet celebrated (their indices). */
+const spinsReached: number[] = [];
+/** Best round of this page visit: fewest moves in a pad round, fastest free-spin round (s), and most flips. */
+let bestSpinTime = Infinity;
+let bestMoves = Infinity,
   bestFlips = 0;
 /** Arrow length per rad/s of angular velocity, m: set per world so the starting spin shows as ARROW_LENGTH. */
 let omegaScale = 1;
@@ -194,8 +206,8 @@ const ROLL_LATCH_ANGLE = (55 * Math.PI) / 180,
 const latchAxis = new Float64Array(3),
   latchQ = new Float64Array(4);
 let latchUntil = -1;
-/** Pads reached and not yet celebrated: the pad's index, the world time, s, and the miss from its centre, m. */
-const padsReached: { pad: number; time: number; miss: number }[] = [];
+/** Pads reached and not yet celebrated: the pad's index, the world time, s, the miss from its centre, m, and the moves it took against its par. */
+const padsReached: { pad: number; time: number; miss: number; moves: number; par: number }[] = [];
 
 /** The three.js app once the game has started (null while `startThreeGame` builds the first world). */
 let threeApp: { camera: { matrixWorld: { extractBasis(x: Vector3, y: Vector3, z: Vector3): unknown } } } | null = null;
@@ -217,7 +229,28 @@ function cameraHeading(): number {
     bx = z.x;
     bz = z.z;
   } else [bx, , bz] = viewDirectionOf(params.mode);
-  return Math.hypot(bx, bz) > 1e-6 ? Math.atan2(bx, bz) : 0;
+  const heading = Math.hypot(bx, bz) > 1e-6 ? Math.atan2(bx, bz) : 0;
+  // The room's cube stays square to the room (the pads' grid of cells): the nearest quarter turn.
+  return params.mode === 'room' ? (Math.PI / 2) * Math.round(heading / (Math.PI / 2)) : heading;
+}
+
+/**
+ * The camera's right and up, unit vectors, world frame (the default view's before the game has
+ * started, or when it was framed for another mode): the free-spin targets are set along them, so the
+ * torque keys' axes (pitch about right, yaw about up) line up with them.
+ */
+function cameraAxes(): [number[], number[]] {
+  if (threeApp && framedMode === params.mode) {
+    const x = new Vector3(),
+      y = new Vector3(),
+      z = new Vector3();
+    threeApp.camera.matrixWorld.extractBasis(x, y, z);
+    return [x.normalize().toArray(), y.normalize().toArray()];
+  }
+  // three.js's lookAt: right = world up x back, up = back x right (back: from the target to the camera).
+  const back = new Vector3(...viewDirectionOf(params.mode)).normalize();
+  const right = new Vector3(0, 1, 0).cross(back).normalize();
+  return [right.toArray(), back.clone().cross(right).normalize().toArray()];
 }
 
 /** A fresh world with the body of the current mode (the shell calls it at start and on R). */
@@ -228,7 +261,8 @@ function createWorld(): PhysicsWorld {
   yawKeeper.reset(heading);
   const w = world.components.AngularVelocity,
     e = handles.body;
-  omegaScale = ARROW_LENGTH / Math.max(1, Math.hypot(w.x[e]!, w.y[e]!, w.z[e]!));
+  // On the free-spin pivot the targets' spin (SPIN_RATE) shows as ARROW_LENGTH.
+  omegaScale = ARROW_LENGTH / Math.max(1, Math.hypot(w.x[e]!, w.y[e]!, w.z[e]!), params.mode === 'cube' ? SPIN_RATE : 0);
   addSystem(
     world,
     'forces',
@@ -239,17 +273,22 @@ function createWorld(): PhysicsWorld {
   layout = padLayout(fixedSeed ?? Math.floor(Math.random() * 2 ** 31));
   pads.reset(layout);
   flips.reset();
+  spins.reset(spinTargets(...cameraAxes()));
+  spinsReached.length = 0;
   padsReached.length = 0;
   latchUntil = -1;
   addSystem(world, 'finalize', (w) => {
     if (params.mode === 'room') {
-      const spot = layout.pads[pads.pad];
+      const spot = layout.pads[pads.pad],
+        movesBefore = pads.movesAtLight;
       if (spot && pads.update(w, handles.body)) {
         const P = w.components.Position;
         const miss = Math.hypot(P.x[handles.body]! - spot[0], P.z[handles.body]! - spot[1]);
-        padsReached.push({ pad: pads.pad - 1, time: w.time, miss });
+        const k = pads.pad - 1;
+        padsReached.push({ pad: k, time: w.time, miss, moves: pads.movesAtLight - movesBefore, par: pads.pars[k] ?? 0 });
       }
     } else if (params.mode === 'flip') flips.update(w, handles.body);
+    else if (spins.update(w, handles.body)) spinsReached.push(spins.target - 1);
   });
   // Held at its pivot, the box has no collider: a floor far below only catches the shadow. The room has its own floor.
   if (params.mode !== 'room') addPlane(world, { normal: [0, 1, 0], point: [0, -1.6, 0] });
@@ -269,8 +308,8 @@ const L = new Float64Array(3),
   wb = new Float64Array(3);
 let lastPlotted = -1,
   frames = 0,
-  /** Angle between L and w, degrees (the readout's, for the status row). */
-  angleLw = 0;
+  /** Whether `fitBesideDrawer` is defined with what it reads (frames run while this module still awaits the plot). */
+  framingReady = false;
 
 /**
  * The pixel ratio to render at: the kit's default (the device's, at most 2; SOFTWARE_PIXEL_RATIO, a
@@ -295,12 +334,19 @@ const game = await startThreeGame({
         if (a === handles.body || b === handles.body) sound.impact(impulse, 'wood', { threshold: 0.4, loud: 6 });
       });
   },
+  // The legend and the phone's touch card: a page opened on the pivot speaks of the pivot (no floor there).
   controls: [
-    { keys: 'Click', action: 'the floor: push the cube there; the cube: flick it away', touch: 'Tap' },
-    { keys: 'W A S D', action: 'roll the cube (pivot: pitch, yaw)', touch: '▲ ◀ ▼ ▶' },
-    { keys: 'Q E', action: 'turn it a quarter (pivot: roll)', touch: '⟲ ⟳' },
+    params.mode === 'room'
+      ? { keys: 'Click', action: 'the floor: push the cube there; the cube: flick it away', touch: 'Tap' }
+      : { keys: 'Click', action: 'a face: knock it there (an impulse)', touch: 'Tap' },
+    params.mode === 'room'
+      ? { keys: 'W A S D', action: 'roll the cube (pivot: pitch, yaw)', touch: '▲ ◀ ▼ ▶' }
+      : { keys: 'W S, A D', action: "torque about the screen's axes (pitch, yaw)", touch: 'Pitch ▲▼ Yaw ◀▶' },
+    params.mode === 'room'
+      ? { keys: 'Q E', action: 'turn it a quarter (pivot: roll)', touch: '⟲ ⟳' }
+      : { keys: 'Q E', action: 'torque about the view (roll)', touch: 'Roll ⟲ ⟳' },
     { keys: 'X', action: 'stop spinning', touch: 'Stop' },
-    { keys: 'Space', action: 'jump (room mode)', touch: 'Jump' },
+    ...(params.mode === 'room' ? [{ keys: 'Space', action: 'jump (room mode)', touch: 'Jump' }] : []),
     { keys: 'M', action: 'mode: room / cube on a pivot / Dzhanibekov flip', touch: 'Mode' },
     ...ORBIT_CONTROLS,
   ],
@@ -386,12 +432,14 @@ function push(): number {
 function startClock(): void {
   if (params.mode === 'room') pads.start(shell.world.time);
   else if (params.mode === 'flip') flips.start(shell.world.time);
+  else spins.start(shell.world.time);
 }
 
 /** Space: in room mode, a jump (an impulse up at the centre of mass). */
 function jump(): void {
   if (params.mode !== 'room') return;
   pads.start(shell.world.time);
+  pads.jumped();
   applyImpulse(shell.world, handles.body, [0, JUMP_IMPULSE, 0]);
 }
 
@@ -531,6 +579,35 @@ function placePadMarks(): void {
 }
 placePadMarks();
 shell.onWorldChange(placePadMarks);
+/**
+ * The lit pad's bed (scene.ts PAD_BEDS): a tile on each 1 m cell around the pad that the cube fits in,
+ * so the player sees the cells to roll across (a slide stops at the tiles' edge) and counts the rolls.
+ */
+const bedMaterial = new MeshBasicMaterial({ color: 0xa9bbdd, map: padFill, transparent: true, opacity: 0.3, depthWrite: false });
+const bedTiles = Array.from({ length: 8 }, () => {
+  const tile = new Mesh(padPlane, bedMaterial);
+  tile.scale.setScalar(0.92 / padPlane.parameters.width / (1 - (2 * PAD_TEX_MARGIN) / PAD_TEX));
+  tile.visible = false;
+  app.scene.add(tile);
+  return tile;
+});
+/** Lays the bed's tiles around pad `k` (none for a pad without a bed, or once the round is over). */
+function placeBed(k: number): void {
+  let n = 0;
+  const bed = layout.beds[k] ?? -1,
+    spot = layout.pads[k];
+  if (spot && bed > 0 && params.mode === 'room')
+    for (let i = -bed; i <= bed; i++)
+      for (let j = -bed; j <= bed; j++) {
+        const x = spot[0] + i,
+          z = spot[1] + j;
+        if ((i === 0 && j === 0) || Math.max(Math.abs(x), Math.abs(z)) > CELL_REACH + 1e-9 || n >= bedTiles.length) continue;
+        bedTiles[n++]!.position.set(x, 0.008, z);
+      }
+  bedTiles.forEach((tile, i) => {
+    tile.visible = i < n;
+  });
+}
 const burst = new Mesh(
   new RingGeometry(0.85, 1, 48).rotateX(-Math.PI / 2),
   new MeshBasicMaterial({ color: 0xffe27a, transparent: true, side: DoubleSide, depthWrite: false }),
@@ -606,8 +683,20 @@ function sayBlocked(): void {
   else if (why === 'slide') showPop(`✗ Slid on: roll onto it to count`, 1800, '#ffb4a8');
 }
 
-/** Celebrates the pads reached since the last frame: chime, burst ring, pop. */
+/** Celebrates the pads reached (chime, burst ring, pop) and the free-spin targets reached (chime, pop) since the last frame. */
 function celebrate(): void {
+  while (spinsReached.length > 0) {
+    const k = spinsReached.shift()!;
+    const last = k === SPIN_TARGETS - 1;
+    sound.chime(PAD_PITCHES[k * 2] ?? 880, 0.35);
+    if (last) window.setTimeout(() => sound.chime(1568, 0.8), 180);
+    showPop(
+      last
+        ? `All ${SPIN_TARGETS} spins! ${spins.time(shell.world.time).toFixed(1)} s ${stars(spins.stars())}`
+        : `Spin ${k + 1} of ${SPIN_TARGETS} ✓`,
+      last ? 2600 : 1100,
+    );
+  }
   while (padsReached.length > 0) {
     const r = padsReached.shift()!;
     const last = r.pad === layout.pads.length - 1;
@@ -617,13 +706,38 @@ function celebrate(): void {
     sound.chime(PAD_PITCHES[r.pad] ?? 880, last ? 0.3 : 0.35);
     if (last) window.setTimeout(() => sound.chime(1568, 0.8), 180);
     const perfect = r.miss <= PERFECT ? ' · Perfect!' : '';
+    const inPar = r.moves <= r.par ? ' · in par!' : ` · ${r.moves} moves, par ${r.par}`;
     showPop(
       last
-        ? `All ${layout.pads.length} pads! ${pads.rolls} rolls ${stars(padStars(pads.rolls, padPar(layout)))}`
-        : `Pad ${r.pad + 1} of ${layout.pads.length} ✓${perfect}`,
+        ? `All ${layout.pads.length} pads! ${pads.moves} moves ${stars(padStars(pads.moves, pads.par))}`
+        : `Pad ${r.pad + 1} of ${layout.pads.length} ✓${r.par > 1 ? inPar : perfect}`,
       last ? 2600 : 1100,
     );
   }
+}
+
+// Free spin: the lit target spin, an arrow from the pivot on ω's scale, and a see-through ball at its
+// tip as large as the tolerance (ω's tip inside it counts).
+const targetArrow = new VectorArrow({ color: 0x22d3ee, radius: 0.03, headLength: 0.16 });
+const targetBall = new Mesh(
+  new SphereGeometry(1, 24, 16),
+  new MeshBasicMaterial({ color: 0x22d3ee, transparent: true, opacity: 0.22, depthWrite: false }),
+);
+app.scene.add(targetArrow.object, targetBall);
+/** Draws the lit free-spin target (hidden in the other modes and once the round is won); the ball brightens while ω's tip is in it. */
+function drawSpinTarget(): void {
+  const aim = spins.targets[spins.target];
+  if (params.mode !== 'cube' || spins.won || !aim) {
+    targetArrow.hide();
+    targetBall.visible = false;
+    return;
+  }
+  const o = handles.pivot;
+  targetArrow.set(o[0], o[1], o[2], aim[0], aim[1], aim[2], omegaScale);
+  targetBall.visible = true;
+  targetBall.position.set(o[0] + aim[0] * omegaScale, o[1] + aim[1] * omegaScale, o[2] + aim[2] * omegaScale);
+  targetBall.scale.setScalar(SPIN_TOLERANCE * omegaScale);
+  (targetBall.material as MeshBasicMaterial).opacity = spins.held > 0 ? 0.5 : 0.22;
 }
 
 const lArrow = new VectorArrow({ color: 0xffd166, radius: 0.025, headLength: 0.14 });
@@ -893,7 +1007,10 @@ function updateKeyTorque(): void {
   const yaw = (on('d') ? 1 : 0) - (on('a') ? 1 : 0);
   const roll = (on('q') ? 1 : 0) - (on('e') ? 1 : 0);
   // Room: Q and E turn the cube a quarter turn a press, and on while held (the next quarter once the turn is near its end).
-  if (params.mode === 'room' && roll !== 0 && (pressed.has('q') || pressed.has('e') || !yawKeeper.turning)) yawKeeper.turn(roll);
+  if (params.mode === 'room' && roll !== 0 && (pressed.has('q') || pressed.has('e') || !yawKeeper.turning)) {
+    yawKeeper.turn(roll);
+    pads.turned();
+  }
   pressed.clear();
   app.camera.matrixWorld.extractBasis(right, up, back);
   if (params.mode === 'room') {
@@ -1025,8 +1142,14 @@ function aimAt(ndcX: number, ndcY: number): Push | null {
     const speed = (params.impulse * ROOM_PUSH) / shell.world.components.Mass.value[e]!;
     Object.assign(aim, { kind: 'cube', dx: hx / l, dz: hz / l, speed });
     const d = speed ** 2 / (2 * ROOM_FRICTION * 9.81);
-    aim.x = cx + aim.dx * d;
-    aim.z = cz + aim.dz * d;
+    const ux = cx + aim.dx * d,
+      uz = cz + aim.dz * d;
+    const [x, z] = snapToBed(ux, uz);
+    const dist = Math.hypot(x - cx, z - cz);
+    // A flick that would stop in the lit pad's bed stops at its edge instead (scene.ts PAD_BEDS).
+    if ((x !== ux || z !== uz) && dist > 0.05) Object.assign(aim, { dx: (x - cx) / dist, dz: (z - cz) / dist, speed: slideSpeed(dist) });
+    aim.x = x;
+    aim.z = z;
     return aim;
   }
   // The floor point: where the ray falls to the height of the cube's centre (so a click on the pad's
@@ -1034,12 +1157,24 @@ function aimAt(ndcX: number, ndcY: number): Push | null {
   if (!(rayDir.y < -1e-6)) return null;
   const t = (REST_HEIGHT - cam.y) / rayDir.y;
   const inside = ROOM_HALF - 0.5;
-  const x = Math.max(-inside, Math.min(inside, cam.x + rayDir.x * t)),
-    z = Math.max(-inside, Math.min(inside, cam.z + rayDir.z * t));
+  const [x, z] = snapToBed(
+    Math.max(-inside, Math.min(inside, cam.x + rayDir.x * t)),
+    Math.max(-inside, Math.min(inside, cam.z + rayDir.z * t)),
+  );
   const dist = Math.hypot(x - cx, z - cz);
   if (!(dist > 0.05)) return null;
   Object.assign(aim, { kind: 'floor', dx: (x - cx) / dist, dz: (z - cz) / dist, speed: slideSpeed(dist), x, z });
   return aim;
+}
+
+/**
+ * Room mode: where a slide aimed at (x, z), m, stops: a point in the lit pad's bed of tiles or its edge
+ * row moves to the nearest cell at the bed's edge (roll-puzzle.ts `bedSnap`), so the cube crosses the
+ * bed by rolls; elsewhere, and once the round is over, (x, z) itself. @returns [x, z], m.
+ */
+function snapToBed(x: number, z: number): [number, number] {
+  if (params.mode !== 'room' || pads.done) return [x, z];
+  return bedSnap(padPuzzle(layout, pads.pad), x, z);
 }
 
 /**
@@ -1150,13 +1285,69 @@ if (touch)
 const stars = (n: number): string => '★'.repeat(n) + '☆'.repeat(3 - n);
 
 /**
- * The rolls made against the stars still in reach, in one rule a player reads the same way everywhere
- * (the status row, the end, the rules card): "rolls 3 of 8 for ★★★" (★★★ takes par + PAR_SLACK[0]
- * rolls or fewer, ★★ par + PAR_SLACK[1]); past both, "rolls 14 ★☆☆".
+ * The moves made against the stars still in reach, in one rule a player reads the same way everywhere
+ * (the status row, the end, the rules card): "moves 3 of 8 for ★★★" (★★★ takes par + PAR_SLACK[0]
+ * moves or fewer, ★★ par + PAR_SLACK[1]); past both, "moves 24 ★☆☆".
  */
-function rollsToStars(rolls: number, par: number): string {
-  for (const [i, slack] of PAR_SLACK.entries()) if (rolls <= par + slack) return `rolls ${rolls} of ${par + slack} for ${stars(3 - i)}`;
-  return `rolls ${rolls} ${stars(1)}`;
+function movesToStars(moves: number, par: number): string {
+  for (const [i, slack] of PAR_SLACK.entries()) if (moves <= par + slack) return `moves ${moves} of ${par + slack} for ${stars(3 - i)}`;
+  return `moves ${moves} ${stars(1)}`;
+}
+
+/**
+ * Room mode: moves on a pad past its par after which the status row shows a shortest way on from where
+ * the cube rests (`routeHint`): a newcomer stuck on a bed still clears the round, and by then three
+ * stars (par + PAR_SLACK[0] over the round) are out of reach.
+ */
+const HINT_AFTER = 3;
+/** The first slide of the route the status row shows (x, z, m), ringed on the floor; null when none shows. */
+let hintSpot: [number, number] | null = null;
+const hintRing = new Mesh(
+  new RingGeometry(0.3, 0.4, 40).rotateX(-Math.PI / 2),
+  new MeshBasicMaterial({ color: 0xffe27a, transparent: true, opacity: 0.9, side: DoubleSide, depthWrite: false }),
+);
+hintRing.visible = false;
+app.scene.add(hintRing);
+/** The key (on a phone the arrow) that rolls the cube along level world direction `d` (0 +x, 1 -x, 4 +z, 5 -z) with the camera where it is. */
+function rollKey(d: number): string {
+  app.camera.matrixWorld.extractBasis(right, up, back);
+  const tx = d === 0 ? 1 : d === 1 ? -1 : 0,
+    tz = d === 4 ? 1 : d === 5 ? -1 : 0;
+  // Each key's travel on the floor: W away from the viewer (-back), S towards, A left (-right), D right.
+  const keys: [string, number, number][] = [
+    ['w', -back.x, -back.z],
+    ['s', back.x, back.z],
+    ['a', -right.x, -right.z],
+    ['d', right.x, right.z],
+  ];
+  let best = keys[0]!;
+  for (const k of keys) if (k[1] * tx + k[2] * tz > best[1] * tx + best[2] * tz) best = k;
+  const arrows: Record<string, string> = { w: '▲', s: '▼', a: '◀', d: '▶' };
+  return touch ? arrows[best[0]]! : best[0].toUpperCase();
+}
+/**
+ * Room mode: once the moves on the lit pad (one that wants a face) pass its par by HINT_AFTER and the
+ * cube rests, a shortest way on from there (scene.ts `padMoveRoute`) in keys ("slide to the ringed
+ * tile, then D W W"), its first slide's tile ringed (`hintSpot`); else ''.
+ */
+function routeHint(): string {
+  hintSpot = null;
+  if (pads.done || (layout.faces[pads.pad] ?? -1) < 0 || pads.padMoves < pads.padPar + HINT_AFTER) return '';
+  const c = shell.world.components,
+    e = handles.body;
+  if (Math.hypot(c.Velocity.x[e]!, c.Velocity.y[e]!, c.Velocity.z[e]!) > 0.05) return '';
+  if (Math.hypot(c.AngularVelocity.x[e]!, c.AngularVelocity.y[e]!, c.AngularVelocity.z[e]!) > 0.1) return '';
+  const route = padMoveRoute(shell.world, e, layout, pads.pad);
+  if (!route || route.length === 0) return '';
+  const spot = layout.pads[pads.pad]!;
+  const words = route.map((m) => {
+    if (m.kind === 'roll') return rollKey(m.direction);
+    if (m.kind === 'turn') return touch ? (m.direction === 1 ? '⟲' : '⟳') : m.direction === 1 ? 'Q' : 'E';
+    if (!m.to) return 'slide off the tiles,';
+    if (!hintSpot) hintSpot = [spot[0] + m.to[0], spot[1] + m.to[1]];
+    return `${touch ? 'tap' : 'click'} the ringed tile,`;
+  });
+  return `Stuck? A shortest way from here: ${words.join(' ')}`;
 }
 
 /** Writes the status row: the mode's goal, its numbers (the key readout) and how to play. */
@@ -1167,25 +1358,32 @@ function updateStatus(wx: number, wy: number, wz: number): void {
     t = world.time,
     w = Math.hypot(wx, wy, wz);
   if (params.mode === 'room') {
-    let flick = touch
-      ? 'Tap the floor: the cube slides there · ▲◀▼▶ roll it'
-      : 'Click the floor: the cube slides there · W A S D roll it · Space jumps';
-    const want = layout.faces[pads.pad] ?? -1;
-    const par = padPar(layout);
+    const want = layout.faces[pads.pad] ?? -1,
+      bed = layout.beds[pads.pad] ?? -1,
+      name = FACE_NAMES[want];
+    const par = pads.par;
     // On a phone in two lines at most (the status row keeps its height: a taller one moved the view).
-    if (want >= 0 && !pads.done)
+    let flick = touch
+      ? 'Tap the floor: the cube slides there · every slide, roll, turn counts'
+      : 'Click the floor: the cube slides there · W A S D roll it · every slide, roll and turn (Q E) counts';
+    if (want >= 0 && bed > 0)
       flick = touch
-        ? `Tap beside the pad, then ROLL on (▲◀▼▶) with ${FACE_NAMES[want]} on top`
-        : `Click beside the pad to slide there, then ROLL on (W A S D) so ${FACE_NAMES[want]} lands on top: a slide onto it does not count`;
+        ? `Slides stop at the tiles: ROLL across (▲◀▼▶) so ${name} lands on top`
+        : `Slides stop at the tiles' edge: ROLL across them (W A S D) so ${name} lands on top · plan it with the net, every move counts`;
+    else if (want >= 0)
+      flick = touch
+        ? `Tap beside the pad, then ROLL on (▲◀▼▶) with ${name} on top`
+        : `Click beside the pad to slide there, then ROLL on (W A S D) so ${name} lands on top · every move counts`;
     const time = pads.time(t);
+    flick = routeHint() || flick;
     if (pads.startedAt < 0 && !pads.done)
       flick = touch ? `Clock starts at your first tap · ${flick}` : `Clock starts at your first move · ${flick}`;
     if (pads.done) {
-      if (pads.rolls < bestRolls) bestRolls = pads.rolls;
+      if (pads.moves < bestMoves) bestMoves = pads.moves;
       status.set(
         {
-          goal: `All ${layout.pads.length} pads in ${pads.rolls} rolls, ${time.toFixed(1)} s ${stars(padStars(pads.rolls, par))}`,
-          numbers: `best ${bestRolls} rolls · ★★★ takes ${par + PAR_SLACK[0]} rolls or fewer, ★★ ${par + PAR_SLACK[1]}`,
+          goal: `All ${layout.pads.length} pads in ${pads.moves} moves (par ${par}), ${time.toFixed(1)} s ${stars(padStars(pads.moves, par))}`,
+          numbers: `best ${bestMoves} moves · ★★★ takes ${par + PAR_SLACK[0]} moves or fewer, ★★ ${par + PAR_SLACK[1]}`,
           hint: touch
             ? '↻: a new layout · Mode: free spin, then the flip challenge'
             : 'R: a new layout · M: next mode (free spin, then the flip challenge)',
@@ -1194,8 +1392,9 @@ function updateStatus(wx: number, wy: number, wz: number): void {
       );
     } else
       status.set({
-        goal: `Land the cube on the glowing pad${want >= 0 ? `, rolling on with ${FACE_NAMES[want]} up` : ', any face up'} (${pads.pad + 1} of ${layout.pads.length})`,
-        numbers: `Pads ${'●'.repeat(pads.pad)}${'○'.repeat(layout.pads.length - pads.pad)} ${pads.pad}/${layout.pads.length} · ${rollsToStars(pads.rolls, par)} · ${time.toFixed(1)} s`,
+        goal: `Land the cube on the glowing pad${want >= 0 ? ` with ${name} on top` : ', any face up'} (${pads.pad + 1} of ${layout.pads.length})`,
+        // On a phone without the clock (stars go by moves), so the line stays within two.
+        numbers: `Pads ${'●'.repeat(pads.pad)}${'○'.repeat(layout.pads.length - pads.pad)} ${pads.pad}/${layout.pads.length} · ${movesToStars(pads.moves, par)} · pad\u00a0par\u00a0${pads.padPar}${touch ? '' : ` · ${time.toFixed(1)} s`}`,
         hint: flick,
       });
   } else if (params.mode === 'flip') {
@@ -1230,13 +1429,26 @@ function updateStatus(wx: number, wy: number, wz: number): void {
           },
       over && flips.wonAt >= 0,
     );
+  } else if (spins.won) {
+    const time = spins.time(t);
+    if (time < bestSpinTime) bestSpinTime = time;
+    status.set(
+      {
+        goal: `All ${SPIN_TARGETS} spins in ${time.toFixed(1)} s ${stars(spins.stars())}`,
+        numbers: `best ${bestSpinTime.toFixed(1)} s · ★★★ within ${SPIN_STAR_TIMES[0]} s, ★★ ${SPIN_STAR_TIMES[1]} s`,
+        hint: touch ? '↻: again · Mode: a box, whose ω wanders and flips' : 'R: again · M: a box, whose ω wanders and flips',
+      },
+      true,
+    );
   } else {
+    // A cube's inertia is the same about every axis, so its ω stays along L and a torque moves ω's tip the way it points.
+    const hold = spins.held > 0 ? `holding ${spins.held.toFixed(1)} of ${SPIN_HOLD} s ✓` : `hold it ${SPIN_HOLD} s`;
     status.set({
-      // A cube's inertia is the same about every axis, so its ω stays along L; the box (M) is the one
-      // whose ω wanders and flips.
-      goal: 'Free spin: a cube turns alike about every axis, so ω (magenta) stays on L (yellow)',
-      numbers: `|ω| ${w.toFixed(2)} rad/s · angle L–ω ${angleLw.toFixed(1)}°`,
-      hint: touch ? 'Mode: a box, whose ω wanders and flips' : 'M: a box, whose ω wanders and flips',
+      goal: `Free spin: steer ω (magenta) onto the cyan arrow, ${hold} (${spins.target + 1} of ${SPIN_TARGETS})`,
+      numbers: `off by ${(spins.startedAt < 0 ? Math.hypot(wx - spins.targets[0]![0], wy - spins.targets[0]![1], wz - spins.targets[0]![2]) : spins.off).toFixed(2)} rad/s (within ${SPIN_TOLERANCE} counts) · |ω| ${w.toFixed(2)} · ${spins.time(t).toFixed(1)} s`,
+      hint: touch
+        ? `${spins.startedAt < 0 ? 'Clock starts at your first tap · ' : ''}Pitch, Yaw, Roll push ω's tip their way; ease off before it overshoots`
+        : `${spins.startedAt < 0 ? 'Clock starts at your first key · ' : ''}W S (pitch), A D (yaw), Q E (roll) push ω's tip the way the torque points; X stops it; ease off before it overshoots`,
     });
   }
 }
@@ -1382,10 +1594,10 @@ function showRules(): void {
       return chip;
     }),
   );
-  const three = `${stars(3)} takes ${padPar(layout) + PAR_SLACK[0]} rolls or fewer.`;
+  const three = `${stars(3)}: par + ${PAR_SLACK[0]} moves or fewer.`;
   rulesText.textContent = touch
-    ? `From pad 2, ROLL on (▲◀▼▶) with its colour on top: a slide on does not count. The net shows what rolls bring up. ${three}`
-    : `From pad 2, ROLL onto the pad (W A S D) with its colour on top: a slide onto it does not count. The net at the left shows what each roll brings up. ${three}`;
+    ? `Every slide, roll and turn counts. From pad 2, ROLL on with its colour on top; from pad 3 across its tiles (slides stop at them). ${three}`
+    : `Every move counts: slides, rolls (W A S D), quarter turns (Q E). From pad 2, ROLL onto the pad with its colour on top; from pad 3 slides stop at its tiles, so plan the route across them with the net at the left. ${three}`;
   rulesShown = params.mode === 'room';
   rules.style.display = rulesShown ? 'block' : 'none';
   rules.style.opacity = '1';
@@ -1479,9 +1691,11 @@ function frame(): void {
     const lw = Math.hypot(L[0]!, L[1]!, L[2]!) * Math.hypot(wx, wy, wz);
     const angle = lw > 0 ? (Math.acos(Math.min(1, (L[0]! * wx + L[1]! * wy + L[2]! * wz) / lw)) * 180) / Math.PI : 0;
     lines[5]!.textContent = `angle between L and ω ${angle.toFixed(1)}°`;
-    angleLw = angle;
   }
   if (frames % 5 === 0) updateStatus(wx, wy, wz);
+  drawSpinTarget();
+  // On a phone the room's framing follows the camera (it eases into its view after a load, and the player orbits it).
+  if (framingReady && tallStage() && params.mode === 'room') fitBesideDrawer();
   if (frames % 3 === 0) updateNet();
   // The lit pad glows (pulsing) while the room's round runs; the ones to come are outlined, the ones reached gold.
   const room = params.mode === 'room';
@@ -1506,6 +1720,9 @@ function frame(): void {
     padRim.position.set(spot[0], 0.025, spot[1]);
   }
   padRim.visible = padLit && pads.over;
+  hintRing.visible = padLit && hintSpot !== null;
+  if (hintSpot) hintRing.position.set(hintSpot[0], 0.035, hintSpot[1]);
+  placeBed(padLit ? pads.pad : -1);
   padMarks.forEach((mark, i) => {
     mark.outline.visible = room && i > pads.pad;
     mark.done.visible = room && i < pads.pad;
@@ -1547,11 +1764,16 @@ function frame(): void {
 
 const corner = new Vector3();
 /**
- * With the settings drawer open over the stage (a wide window: the game arrangement's drawer), shifts
- * the picture left and, when it would not fit, zooms it out (the camera's view offset and zoom), so the
- * room's box (floor and walls) lies in the part of the stage the drawer leaves free; closed, the
- * camera's own framing again. The camera's position and the orbit stay as they are.
+ * Fits the room's box (floor and walls) into the part of the stage the overlays leave free, by the
+ * camera's view offset and zoom (its position and the orbit stay as they are): with the settings
+ * drawer open over the stage (a wide window: the game arrangement's drawer) the part left of it,
+ * shifted left and zoomed out when it would not fit; on a tall stage (a phone) the room's floor
+ * between the face net and the touch card (TOUCH_CARD_SPACE above the stage's foot), shifted down and
+ * zoomed out (the net and the rules card covered the back of the room; the back wall's top may stay
+ * under them). Otherwise, and on the pivot, the camera's own framing.
  */
+/** On a tall stage, the height kept clear of the room's floor above the stage's foot, CSS px: the touch card's (two lines). */
+const TOUCH_CARD_SPACE = 80;
 function fitBesideDrawer(): void {
   const cam = app.camera;
   cam.clearViewOffset();
@@ -1561,27 +1783,45 @@ function fitBesideDrawer(): void {
   const c = app.canvas.getBoundingClientRect(),
     d = pageLayout().side.getBoundingClientRect();
   const covered = open && d.width > 0 ? Math.max(0, c.right - d.left + 8) : 0;
-  if (params.mode !== 'room' || covered === 0 || covered > 0.7 * c.width) return;
+  const below = tallStage() && !open ? Math.max(0, net.getBoundingClientRect().bottom - c.top + 6) : 0;
+  if (params.mode !== 'room' || (covered === 0 && below === 0) || covered > 0.7 * c.width || below > 0.5 * c.height) return;
   cam.updateMatrixWorld();
-  let a = Infinity,
-    b = -Infinity;
+  // The box's extent on the screen, in normalised device coordinates: x in [ax, bx], y in [ay, by].
+  let ax = Infinity,
+    bx = -Infinity,
+    ay = Infinity,
+    by = -Infinity;
   for (const x of [-ROOM_HALF, ROOM_HALF])
-    for (const y of [0, WALL_HEIGHT])
+    for (const y of below > 0 ? [0] : [0, WALL_HEIGHT])
       for (const z of [-ROOM_HALF, ROOM_HALF]) {
-        const nx = corner.set(x, y, z).project(cam).x;
-        a = Math.min(a, nx);
-        b = Math.max(b, nx);
+        corner.set(x, y, z).project(cam);
+        ax = Math.min(ax, corner.x);
+        bx = Math.max(bx, corner.x);
+        ay = Math.min(ay, corner.y);
+        by = Math.max(by, corner.y);
       }
-  // The free part of the stage in normalised device x: [-1, r].
-  const r = 1 - (2 * covered) / c.width;
-  const k = Math.min(1, (0.96 * (r + 1)) / (b - a));
-  const shift = (r - 1) / 2 - (k * (a + b)) / 2;
-  cam.zoom = k;
-  cam.setViewOffset(c.width, c.height, (-shift * c.width) / 2, 0, c.width, c.height);
+  if (covered > 0) {
+    // The free part of the stage in normalised device x: [-1, r].
+    const r = 1 - (2 * covered) / c.width;
+    const k = Math.min(1, (0.96 * (r + 1)) / (bx - ax));
+    const shift = (r - 1) / 2 - (k * (ax + bx)) / 2;
+    cam.zoom = k;
+    cam.setViewOffset(c.width, c.height, (-shift * c.width) / 2, 0, c.width, c.height);
+  } else {
+    // The free part of the stage in normalised device y: [l, r] (below the net, above the touch card).
+    const r = 1 - (2 * below) / c.height,
+      l = -1 + (2 * TOUCH_CARD_SPACE) / c.height;
+    const k = Math.min(1, (0.98 * (r - l)) / (by - ay));
+    const shift = (r + l) / 2 - (k * (ay + by)) / 2;
+    cam.zoom = k;
+    cam.setViewOffset(c.width, c.height, 0, (shift * c.height) / 2, c.width, c.height);
+  }
   cam.updateProjectionMatrix();
 }
 new MutationObserver(fitBesideDrawer).observe(pageLayout().root, { attributes: true, attributeFilter: ['data-open'] });
 window.addEventListener('resize', fitBesideDrawer);
+fitBesideDrawer();
+framingReady = true;
 
 // ---- Test and console hooks on window.game ---------------------------------------------------
 
@@ -1626,12 +1866,20 @@ shell.expose({
     pads: layout.pads.map((p) => [p[0], p[1]]),
     faces: [...layout.faces],
     halves: [...layout.halves],
-    /** Rolls made in the round (changes of the face on top), the round's par (`padPar`), and whether the cube rolled since its last slide. */
+    /**
+     * Rolls made in the round (changes of the face on top), moves (rolls, slides, turns, jumps), the
+     * round's par so far and the lit pad's (scene.ts `padMovePar`), and whether the cube rolled since its last slide.
+     */
     rolls: pads.rolls,
-    par: padPar(layout),
+    moves: pads.moves,
+    par: pads.par,
+    padPar: pads.padPar,
+    beds: [...layout.beds],
     rolled: pads.rolled,
     flips: flips.counter.count,
     flipsWonAt: flips.wonAt,
+    /** Free spin: the lit target's index (SPIN_TARGETS once won), the targets (rad/s, world frame), how long ω has held on it (s), how far off it is (rad/s), and when the round was won (s, -1 if not yet). */
+    spin: { target: spins.target, targets: spins.targets.map((v) => [...v]), held: spins.held, off: spins.off, wonAt: spins.wonAt },
   }),
   /** Starts the round's clock (the pads' or the flips'), as the player's first input does. */
   startClock,

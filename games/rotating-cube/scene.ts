@@ -30,6 +30,7 @@ import {
   setAngularVelocity,
   spinAngularMomentum,
 } from '@bitphysics/physics';
+import { gridOrientationOf, moveRoute, type RollMove, type RollPuzzle } from './roll-puzzle';
 
 /** The modes, the default first (the M key cycles through them in this order). */
 export const MODES = ['room', 'cube', 'flip'] as const;
@@ -410,11 +411,21 @@ export interface PadLayout {
   readonly faces: readonly number[];
   /** Each pad's half edge, m, in (0, PAD_HALF]: the pads shrink as the round goes on. */
   readonly halves: readonly number[];
+  /** Each pad's bed of tiles, cells (roll-puzzle.ts `RollPuzzle.bed`): -1 none, 0 the pad's cell, 1 the cells around it too. */
+  readonly beds: readonly number[];
 }
 /** Pads in a round. */
 export const PAD_COUNT = 5;
 /** Half edges of the pads in a round, m: the later pads are smaller targets. */
 export const PAD_HALVES: readonly number[] = Object.freeze([0.6, 0.55, 0.5, 0.45, 0.42]);
+/**
+ * The pads' beds of tiles, cells (roll-puzzle.ts): the first pad none (slide onto it), the second its
+ * own cell (roll on from beside it), the rest the cells around them too (roll across the bed, so the
+ * route decides the face on top).
+ */
+export const PAD_BEDS: readonly number[] = Object.freeze([-1, 0, 1, 1, 1]);
+/** The largest |x| and |z| of a resting cube's centre the roll puzzle uses, m: the room's inside half width less the cube's half edge and 5 cm. */
+export const CELL_REACH = ROOM_HALF - 0.55;
 /** A pad centre lies within this of the room's centre on x and z, m (clear of the walls by more than a pad and the cube's half diagonal). */
 export const PAD_REACH = 2.1;
 /** The face the room's cube lands with on top when dropped at the start (+y: it is dropped nearly level). */
@@ -425,6 +436,7 @@ export const CLASSIC_LAYOUT: PadLayout = Object.freeze({
   pads: PADS,
   faces: PAD_FACES,
   halves: Object.freeze(PADS.map(() => PAD_HALF)),
+  beds: PAD_BEDS,
 });
 
 /**
@@ -432,7 +444,8 @@ export const CLASSIC_LAYOUT: PadLayout = Object.freeze({
  * the centre, the first at least 1.5 m from where the cube lands (the centre), each at least 2 m from
  * the one before and 1.4 m from every other (none overlap); the first takes any face, the others each want one, in a sequence that grows
  * harder: the second a face beside LANDING_FACE (one roll), then the face opposite the previous
- * pad's (two rolls), then one beside it, then the opposite again; the pads shrink (PAD_HALVES).
+ * pad's (two rolls straight across its bed), then one beside it, then the same again (a route
+ * that brings the top round to the top); the pads shrink (PAD_HALVES) and lie in beds (PAD_BEDS).
  * Always solvable by rolling on (`PadChallenge`): a pad lies within PAD_REACH of the centre, so along
  * each axis the spot 1 m to one side of it (a roll's length) lies within ROOM_HALF - 0.9 m of the
  * centre, where the cube fits; set the wanted face up as a side facing away from the pad (rolls
@@ -477,8 +490,8 @@ export function padLayout(seed: number): PadLayout {
   faces.push(beside(LANDING_FACE));
   faces.push(faces[1]! ^ 1);
   faces.push(beside(faces[2]!));
-  faces.push(faces[3]! ^ 1);
-  return Object.freeze({ seed: s, pads: Object.freeze(pads), faces: Object.freeze(faces), halves: PAD_HALVES });
+  faces.push(faces[3]!);
+  return Object.freeze({ seed: s, pads: Object.freeze(pads), faces: Object.freeze(faces), halves: PAD_HALVES, beds: PAD_BEDS });
 }
 
 /**
@@ -497,24 +510,37 @@ export function topFace(world: PhysicsWorld, body: number): number {
   for (let i = 1; i < 3; i++) if (Math.abs(up[i]!) > Math.abs(up[best]!)) best = i;
   return 2 * best + (up[best]! < 0 ? 1 : 0);
 }
-/**
- * The fewest rolls that can finish a round of `layout`: a pad that takes any face, or comes after one
- * that does, 1 (roll onto it; the player chose the face before); a pad whose face lies beside the one
- * the pad before wanted (on top when the cube left it), 1 (slide to the pad's side where that face
- * faces away from the pad, turning it with Q/E if need be, and roll on: a slide and a spin keep the
- * top); the same face or the opposite one, 2 (one roll to put it on a side first).
- * @returns an integer >= the layout's pad count.
- */
-export function padPar(layout: PadLayout): number {
-  let par = 0;
-  layout.faces.forEach((face, k) => {
-    const prev = k > 0 ? layout.faces[k - 1]! : -1;
-    par += face < 0 || prev < 0 || face >> 1 !== prev >> 1 ? 1 : 2;
-  });
-  return par;
+/** Pad `k` of `layout` as a roll puzzle (roll-puzzle.ts): its centre, wanted face and bed, in the room's cells. */
+export function padPuzzle(layout: PadLayout, k: number): RollPuzzle {
+  const pad = layout.pads[k];
+  if (!pad) throw new RangeError(`padPuzzle: k must index one of the layout's ${layout.pads.length} pads, got ${k}`);
+  return { pad: [pad[0], pad[1]], want: layout.faces[k]!, bed: layout.beds[k]!, reach: CELL_REACH };
 }
-/** Room challenge: three stars for a round within par + PAR_SLACK[0] rolls, two within par + PAR_SLACK[1], else one. */
-export const PAR_SLACK: readonly [number, number] = Object.freeze([1, 5]) as readonly [number, number];
+/**
+ * A shortest route (roll-puzzle.ts `moveRoute`) for `body` where it is now in `world` onto pad `k` of
+ * `layout` with the face it wants on top, from its orientation (square to the world's axes) and its
+ * cell (the cell offset from the pad its centre lies within CELL_SNAP of, else away from the pad).
+ * @returns the moves, or null if none reaches it.
+ */
+export function padMoveRoute(world: PhysicsWorld, body: number, layout: PadLayout, k: number): RollMove[] | null {
+  const p = padPuzzle(layout, k);
+  const P = world.components.Position,
+    q = world.components.Orientation;
+  const u = P.x[body]! - p.pad[0],
+    v = P.z[body]! - p.pad[1];
+  const i = Math.round(u),
+    j = Math.round(v);
+  const cell: [number, number] | null = Math.hypot(u - i, v - j) <= CELL_SNAP ? [i, j] : null;
+  return moveRoute(p, cell, gridOrientationOf(q.x[body]!, q.y[body]!, q.z[body]!, q.w[body]!));
+}
+/** The par of pad `k` of `layout` for `body` where it is now in `world`: the length of `padMoveRoute`, or -1 if none reaches it. */
+export function padMovePar(world: PhysicsWorld, body: number, layout: PadLayout, k: number): number {
+  return padMoveRoute(world, body, layout, k)?.length ?? -1;
+}
+/** A resting cube's centre within this of a grid cell's centre, m, is taken to be on that cell. */
+const CELL_SNAP = 0.3;
+/** Room challenge: three stars for a round within par + PAR_SLACK[0] moves, two within par + PAR_SLACK[1], else one. */
+export const PAR_SLACK: readonly [number, number] = Object.freeze([2, 8]) as readonly [number, number];
 
 /**
  * Whether `body` rests on the pad centred at (px, pz) (m): its centre within `half` (m, default
@@ -531,14 +557,14 @@ export function restsOnPad(world: PhysicsWorld, body: number, px: number, pz: nu
 }
 
 /**
- * Stars for a pad round finished in `rolls` rolls against `par` (`padPar`): 3 within par +
+ * Stars for a pad round finished in `moves` moves against `par` (PadChallenge `par`): 3 within par +
  * PAR_SLACK[0], 2 within par + PAR_SLACK[1], else 1.
- * @throws RangeError if `rolls` or `par` is not a finite number >= 0.
+ * @throws RangeError if `moves` or `par` is not a finite number >= 0.
  */
-export function padStars(rolls: number, par: number): number {
-  if (!(rolls >= 0) || !Number.isFinite(rolls)) throw new RangeError(`padStars: rolls must be a finite number >= 0, got ${rolls}`);
+export function padStars(moves: number, par: number): number {
+  if (!(moves >= 0) || !Number.isFinite(moves)) throw new RangeError(`padStars: moves must be a finite number >= 0, got ${moves}`);
   if (!(par >= 0) || !Number.isFinite(par)) throw new RangeError(`padStars: par must be a finite number >= 0, got ${par}`);
-  return rolls <= par + PAR_SLACK[0] ? 3 : rolls <= par + PAR_SLACK[1] ? 2 : 1;
+  return moves <= par + PAR_SLACK[0] ? 3 : moves <= par + PAR_SLACK[1] ? 2 : 1;
 }
 
 /** Flip mode's challenge: flips to make, and the time allowed, s. */
@@ -605,8 +631,10 @@ export class FlipCounter {
  * wants on top (`topFace`) the next one lights. A pad that wants a face counts only when the cube
  * ROLLED onto it: its top face changed after the last slide (`slid`), so the route to it matters (a
  * slide keeps the top face, and rolling on changes it: the player picks the side to roll on from).
- * The rolls (changes of the top face) are counted for the stars against `padPar`; after the last the round is over at `doneAt` (world
- * time, s). The round's clock runs from `startedAt`, the world time of the player's first input
+ * Every move counts for the stars: a roll (a change of the top face, counted here), a slide (`slid`),
+ * a quarter turn (`turned`), a jump (`jumped`); against the round's par, the sum of each pad's
+ * `padMovePar` worked out from where the cube is when the pad lights. After the last pad the round is
+ * over at `doneAt` (world time, s). The round's clock runs from `startedAt`, the world time of the player's first input
  * (`start`), not from the world's start, so reading the help costs nothing.
  */
 export class PadChallenge {
@@ -620,6 +648,12 @@ export class PadChallenge {
   startedAt = -1;
   /** Rolls made in the round so far (changes of the face on top), >= 0. */
   rolls = 0;
+  /** Moves made in the round so far (rolls, slides, quarter turns, jumps), >= 0. */
+  moves = 0;
+  /** Each lit pad's par (`padMovePar` when it lit), in order: one entry per pad lit so far. */
+  pars: number[] = [];
+  /** `moves` when the lit pad lit. */
+  movesAtLight = 0;
   /** Whether the top face changed since the last slide (`slid`): a pad that wants a face counts only then. */
   rolled = false;
   /** Whether, at the last `update`, the cube's centre was within the lit pad's half edge plus PAD_GRACE of its centre on x and z (resting or not). */
@@ -643,14 +677,38 @@ export class PadChallenge {
     this.doneAt = -1;
     this.startedAt = -1;
     this.rolls = 0;
+    this.moves = 0;
+    this.pars = [];
+    this.movesAtLight = 0;
     this.rolled = false;
     this.over = false;
     this.blocked = '';
     this.lastTop = -1;
   }
-  /** Marks a slide (a push of the cube): the next pad that wants a face needs a roll onto it first. */
+  /** Counts a slide (a push of the cube), a move: the next pad that wants a face needs a roll onto it first. */
   slid(): void {
     this.rolled = false;
+    if (!this.done) this.moves++;
+  }
+  /** Counts a quarter turn about the vertical, a move. */
+  turned(): void {
+    if (!this.done) this.moves++;
+  }
+  /** Counts a jump, a move. */
+  jumped(): void {
+    if (!this.done) this.moves++;
+  }
+  /** The round's par so far: the sum of the lit pads' pars (each worked out when it lit), >= 0. */
+  get par(): number {
+    return this.pars.reduce((a, b) => a + Math.max(0, b), 0);
+  }
+  /** The lit pad's par, or 0 once the round is over or before the first `update`. */
+  get padPar(): number {
+    return this.done ? 0 : Math.max(0, this.pars[this.pad] ?? 0);
+  }
+  /** Moves made on the lit pad since it lit, >= 0. */
+  get padMoves(): number {
+    return this.moves - this.movesAtLight;
   }
   /** Starts the round's clock at world time `time`, s (only the first call counts). */
   start(time: number): void {
@@ -680,8 +738,10 @@ export class PadChallenge {
     const top = topFace(world, body);
     if (this.lastTop >= 0 && top !== this.lastTop) {
       this.rolls++;
+      this.moves++;
       this.rolled = true;
     }
+    if (this.pars.length === this.pad) this.pars.push(padMovePar(world, body, this.layout, this.pad));
     this.lastTop = top;
     const spot = pads[this.pad]!,
       face = faces[this.pad]!,
@@ -700,7 +760,9 @@ export class PadChallenge {
     this.over = false;
     this.start(world.time);
     this.pad++;
+    this.movesAtLight = this.moves;
     if (this.pad === pads.length) this.doneAt = world.time;
+    else this.pars.push(padMovePar(world, body, this.layout, this.pad));
     return true;
   }
 }
