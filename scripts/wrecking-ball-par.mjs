@@ -1,6 +1,7 @@
 // `node scripts/wrecking-ball-par.mjs [--full | --careful] [level ...]`: how many taps the wrecking ball's levels
 // (1-based; default 1 to 5) take a first-time player, headless, from the page's start (the jib
-// between the structures, `openStart`). Three plain ways a stranger taps, each
+// between the structures, `openStart`). Three plain ways a stranger taps (a tap and a second tap on
+// the piece, the page's swing along the arrow it shows: `tapTap`), each
 // tap 2 s after the last swing's moves end (once the count has settled; the ball still swinging from
 // its hit): `top` taps the highest standing piece of each structure in turn (what the eye goes to),
 // `biggest` the piece a third of the way up the structure with the most standing raised pieces (those
@@ -93,6 +94,16 @@ const ways = {
     return best;
   },
 };
+/**
+ * The page's tap on piece `piece` and a second tap on it: the swing the arrow shows, the ball coming
+ * straight from where it hangs at the tap's power (games/wrecking-ball/main.ts beginAim, TAP_POWER
+ * 0.5: 0.8 HIT_SPEED), struck at the piece's own height as the page's swings are.
+ */
+const tapTap = (world, h, piece) => {
+  const P = world.components.Position;
+  const direction = Math.atan2(P.z[piece] - P.z[h.ball], P.x[piece] - P.x[h.ball]);
+  wb.aimAt(world, h, piece, { direction, speed: wb.HIT_SPEED * (0.45 + 0.7 * 0.5) });
+};
 const most = {},
   stars = {},
   missed = {},
@@ -116,7 +127,7 @@ const playTaps = (level, taps) => {
   };
   for (let k = 0; k < FIRST_TAP_STEPS[0]; k++) wb.step(world);
   for (const index of taps) {
-    wb.aimAt(world, h, h.pieces[index].body);
+    tapTap(world, h, h.pieces[index].body);
     let idle = 0;
     for (let k = 0; k < 60 * 15 && (h.controls.moves.length > 0 || idle++ < 30); k++) run();
     for (let k = 0; k < 90; k++) run();
@@ -172,7 +183,7 @@ for (const level of chosen) {
       while (taps < MOST_TAPS && !cleared) {
         const piece = choose({ world, h, taps, groups });
         if (!piece) break;
-        wb.aimAt(world, h, piece.body);
+        tapTap(world, h, piece.body);
         taps++;
         const structure = new Set(groups.find((g) => g.includes(piece)).map((p) => p.body));
         let idle = 0,

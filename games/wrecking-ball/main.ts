@@ -887,8 +887,8 @@ cableGeometry.setAttribute('position', new BufferAttribute(cablePositions, 3));
 const cable = new Line(cableGeometry, new LineBasicMaterial({ color: 0x20242b }));
 cable.frustumCulled = false;
 app.scene.add(cable);
-// The chain, drawn as one: a thin dark core from the hook through every link's centre to the top of
-// the ball, so it stays whole whatever the links' joints give (the capsule links themselves were
+// The chain, drawn as one: a thin dark core from the hook straight to the top of the ball (see
+// drawChain), so it stays whole whatever the links' joints give (the capsule links themselves were
 // drawn apart, with gaps between them, whenever a joint stretched under the swing), threaded with
 // LINKS_PER_SEGMENT oval steel rings per segment, each turned a quarter turn from the last, so it
 // reads as a chain of links and not as a rod.
@@ -919,7 +919,6 @@ const chainFrom = new Vector3(),
   chainTo = new Vector3(),
   chainDir = new Vector3(),
   chainUp = new Vector3(0, 1, 0),
-  chainAt = [0, 0, 0],
   ballAt = [0, 0, 0],
   ringTurn = new Quaternion(),
   ringPos = new Vector3(),
@@ -953,22 +952,30 @@ function placeSegment(i: number): void {
     chainRings.setMatrixAt(k, partMatrix.compose(ringPos, ringTurn, partScale));
   }
 }
-/** Draws the chain: hook, link centres, the ball's top (toward the last link). */
+/**
+ * Draws the chain: CHAIN_LINKS + 1 equal segments on the straight line from the hook to the point of
+ * the ball's surface toward it. The rope from the hook to the ball carries the 5.4 t load (see
+ * ./scene buildWreckingBall), so the chain hangs taut along it; drawn through the light links'
+ * centres it bent where their joints folded and its last segment ran into the ball.
+ */
 function drawChain(hook: ArrayLike<number>): void {
-  chainFrom.set(hook[0]!, hook[1]!, hook[2]!);
-  const links = handles.links;
-  for (let i = 0; i < links.length; i++) {
-    if (!renderer.drawnPosition(links[i]!, chainAt)) continue;
-    chainTo.set(chainAt[0]!, chainAt[1]!, chainAt[2]!);
+  if (!renderer.drawnPosition(handles.ball, ballAt)) return;
+  const hx = hook[0]!,
+    hy = hook[1]!,
+    hz = hook[2]!;
+  const d = Math.hypot(ballAt[0]! - hx, ballAt[1]! - hy, ballAt[2]! - hz);
+  // The end on the ball's surface (the ball's top when the hook is inside it, which it never is).
+  const f = d > BALL_RADIUS ? 1 - BALL_RADIUS / d : 0;
+  const ex = hx + f * (ballAt[0]! - hx),
+    ey = d > BALL_RADIUS ? hy + f * (ballAt[1]! - hy) : ballAt[1]! + BALL_RADIUS,
+    ez = hz + f * (ballAt[2]! - hz);
+  const n = handles.links.length + 1;
+  chainFrom.set(hx, hy, hz);
+  for (let i = 0; i < n; i++) {
+    const t = (i + 1) / n;
+    chainTo.set(hx + t * (ex - hx), hy + t * (ey - hy), hz + t * (ez - hz));
     placeSegment(i);
     chainFrom.copy(chainTo);
-  }
-  if (renderer.drawnPosition(handles.ball, ballAt)) {
-    chainTo.set(ballAt[0]!, ballAt[1]!, ballAt[2]!);
-    chainDir.subVectors(chainFrom, chainTo);
-    const d = chainDir.length();
-    if (d > BALL_RADIUS) chainTo.addScaledVector(chainDir, BALL_RADIUS / d);
-    placeSegment(links.length);
   }
   chainSegments.instanceMatrix.needsUpdate = true;
   chainRings.instanceMatrix.needsUpdate = true;
@@ -980,7 +987,8 @@ function drawChain(hook: ArrayLike<number>): void {
 // screen), the framing widens to take the ball in as well, seen from the framing's own side (fitPoints:
 // every structure stays on the screen, and a jib turned toward the camera or away does not swing the ball
 // out of view); it widens again while the ball keeps leaving it, and goes back to the site's framing once
-// the ball has been inside that for RETURN_DELAY s with no swing running. A ball that comes to rest
+// the ball has been inside that for RETURN_DELAY s with no swing running (on an upright phone it keeps
+// the widened framing for the level). A ball that comes to rest
 // outside the site's framing is framed with it from then on (rehome). The camera eases toward the framing
 // it is given as a critically damped spring (`smoothDamp`, settling in about CAMERA_EASE s): its velocity
 // never jumps, so a change of framing starts and ends gently (a camera stepped a share of the way each
@@ -1127,7 +1135,10 @@ function followAction(): void {
     }
     widen.insideSince = inside ? (widen.insideSince < 0 ? now : widen.insideSince) : -1;
     if (widen.on) {
-      if (inside && c.moves.length === 0 && now - widen.insideSince > RETURN_DELAY) {
+      // On an upright phone the widened framing stays for the level (it only grows): going back to
+      // the site's narrow framing after each swing and out again on the next swung the camera to and
+      // fro between swings.
+      if (!PORTRAIT && inside && c.moves.length === 0 && now - widen.insideSince > RETURN_DELAY) {
         widen.on = false;
         widen.balls.length = 0;
       } else if (!inside && now - widen.at > WIDEN_EVERY && !ballInFraming(followBall, cameraGoal.position, cameraGoal.target))
@@ -1572,14 +1583,29 @@ const aimPreview = new Group();
 aimPreview.add(aimShaft, aimHead);
 aimPreview.visible = false;
 app.scene.add(aimPreview);
+/** Where the aim arrow's tail is drawn, in normalised device coordinates (see drawAim). */
+const arrowTail = new Vector3();
+/** Largest |x| and |y|, in normalised device coordinates, of the aim arrow's tail: inside the screen's edge. */
+const ARROW_EDGE = 0.94;
+/** Shortest the aim arrow's shaft is drawn, m, however near the screen's edge its target stands. */
+const ARROW_SHORTEST = 0.6;
 /** Places the aim arrow (shown while a press aims or a piece is armed). */
 function drawAim(): void {
   const piece = aiming.piece || aiming.armed;
   aimPreview.visible = piece !== 0 && isAlive(shell.world, piece);
   if (!aimPreview.visible) return;
   const P = shell.world.components.Position;
-  // Its local +x along the ball's travel, its head 0.5 m short of the piece's centre.
-  const length = 1.2 + 3.5 * aiming.power;
+  // Its local +x along the ball's travel, its head 0.5 m short of the piece's centre; shortened
+  // while its tail would run off the screen (a target near a phone's edge cut the arrow there).
+  let length = 1.2 + 3.5 * aiming.power;
+  const ux = Math.cos(aiming.direction),
+    uz = Math.sin(aiming.direction);
+  for (let k = 0; k < 8; k++) {
+    const back = 1.4 + length;
+    arrowTail.set(P.x[piece]! - back * ux, 0.08, P.z[piece]! - back * uz).project(app.camera);
+    if (Math.abs(arrowTail.x) < ARROW_EDGE && Math.abs(arrowTail.y) < ARROW_EDGE && arrowTail.z < 1) break;
+    length = Math.max(ARROW_SHORTEST, 0.8 * length);
+  }
   aimPreview.position.set(P.x[piece]!, 0.08, P.z[piece]!);
   aimPreview.rotation.y = -aiming.direction;
   aimShaft.scale.x = length;
@@ -2203,10 +2229,15 @@ let frames = 0;
 let swapDue = true;
 /** World time the last swing's run ended (the result is counted 1.5 s later), or -1. */
 let runEndedAt = -1;
+/** Height, m, of a block's centre above which a swing at it that brings down 2 or fewer says to aim lower. */
+const HIGH_AIM = 1.2;
 /** Counts the last swing's result ("Hit! N down" or a miss) for the status line; its marks go. */
 function countResult(): void {
   const down = fallenCount(handles.pieces) - swing.downBefore;
-  swing.result = down > 0 ? `Hit! ${down} down` : 'Missed: tap it again';
+  // A swing struck high (the ball strikes the block aimed at, see ./scene aimAt) that brought down
+  // little: the line says where the skill lies.
+  const high = aimed !== 0 && isAlive(shell.world, aimed) && (handles.pieces.find((p) => p.body === aimed)?.y0 ?? 0) > HIGH_AIM;
+  swing.result = down > 0 ? `Hit! ${down} down${down <= 2 && high ? ': aim lower to topple more' : ''}` : 'Missed: tap it again';
   swing.resultAt = shell.world.time;
   swing.pending = false;
   runEndedAt = -1;

@@ -70,7 +70,7 @@ describe('3D rigid-body games in headless Chromium', () => {
     // hook block; none is drawn by its plain 3D shapes.
     expect(drawn.custom).toBe(drawn.pieces + drawn.links + 3);
     expect(drawn.shaped).toBe(0);
-    // The chain is drawn as one rod from the hook through the links to the ball's surface (the capsule
+    // The chain is drawn as one rod from the hook straight to the ball's surface (the capsule
     // links were drawn apart, with gaps, when their joints gave): 9 segments, ending on the ball within 1 mm.
     const chain = await g.page.evaluate(() =>
       (window.game as unknown as { chain(): { segments: number; rings: number; gap: number } }).chain(),

@@ -28,6 +28,7 @@ import {
   HOOK_RANGE,
   pieceOnSwing,
   SLEW_RATE,
+  STRIKE_SHARE,
   scorePieces,
   swayAmplitude,
   swingBudget,
@@ -329,7 +330,8 @@ describe('wrecking-ball scene', () => {
     // pieces (15) this took 5 swings (5, 11, 11, 14, 15 down), one more than the level allowed: a
     // first-time player lost level 1 twice. At 45% (10) the script's way of this
     // (scripts/wrecking-ball-par.mjs, first taps a few steps apart) takes 2 swings: 5 down, then 14 to 16.
-    // At 75% (16, with 5 swings) the script's way takes 4: 2, 10, 15, 25 down.
+    // At 75% (16, with 5 swings) the script's way takes 4: 2, 10, 15, 25 down. Each swing is the
+    // page's (a request: struck at the block's own height, see aimAt), not one planned to strike low.
     const { world, h } = build(1);
     const groups: (typeof h.pieces)[] = [];
     for (const p of h.pieces) {
@@ -344,7 +346,10 @@ describe('wrecking-ball scene', () => {
       if (h.controls.moves.length === 0 && --wait <= 0 && swings < swingBudget(1)) {
         const live = groups.filter((g) => g.some((p) => !p.fallen));
         const top = live[swings % live.length]!.filter((p) => !p.fallen).reduce((a, b) => (b.y0 > a.y0 ? b : a));
-        aimAt(world, h, top.body);
+        // As the page swings at a block tapped twice: from where the ball hangs, at the tap's power.
+        const P = world.components.Position;
+        const direction = Math.atan2(P.z[top.body]! - P.z[h.ball]!, P.x[top.body]! - P.x[h.ball]!);
+        aimAt(world, h, top.body, { direction, speed: 0.8 * HIT_SPEED });
         swings++;
         wait = 120;
       }
@@ -439,6 +444,27 @@ describe('wrecking-ball wind-up', () => {
 
 describe('wrecking-ball: a drag-aimed swing', () => {
   /**
+   * Steps `world` until the ball begins a contact with one of `pieces` (at most `most` s): the
+   * seconds that took, or Infinity when it did not.
+   */
+  function untilBallTouches(
+    world: ReturnType<typeof build>['world'],
+    ball: number,
+    pieces: readonly { body: number }[],
+    most: number,
+  ): number {
+    for (let t = 0; t < most; t += world.dt) {
+      step(world);
+      const ev = contactEvents(world).begin;
+      for (let i = 0; i < ev.count; i++) {
+        const other = ev.bodyA[i] === ball ? ev.bodyB[i] : ev.bodyB[i] === ball ? ev.bodyA[i] : -1;
+        if (pieces.some((q) => q.body === other)) return t + world.dt;
+      }
+    }
+    return Number.POSITIVE_INFINITY;
+  }
+
+  /**
    * Level `level` (its default seed) settled for 0.5 s, then a swing aimed as a drag aims it (power
    * `power`, the page's speed 0.45 + 0.7 power of HIT_SPEED) at the piece a third of the way up
    * structure `index` (pieces grouped by start centre within 2.5 m), from straight where the ball
@@ -461,18 +487,34 @@ describe('wrecking-ball: a drag-aimed swing', () => {
       V = world.components.Velocity;
     const direction = Math.atan2(P.z[piece.body]! - P.z[h.ball]!, P.x[piece.body]! - P.x[h.ball]!) + turn;
     aimAt(world, h, piece.body, { direction, speed: HIT_SPEED * (0.45 + 0.7 * power) });
-    for (let t = 0; t < 12; t += world.dt) {
-      step(world);
-      const ev = contactEvents(world).begin;
-      for (let i = 0; i < ev.count; i++) {
-        const other = ev.bodyA[i] === h.ball ? ev.bodyB[i] : ev.bodyB[i] === h.ball ? ev.bodyA[i] : -1;
-        if (!g.some((q) => q.body === other)) continue;
-        const along = Math.atan2(V.z[h.ball]!, V.x[h.ball]!);
-        return { toHit: t + world.dt, off: Math.abs(Math.atan2(Math.sin(along - direction), Math.cos(along - direction))) };
-      }
-    }
-    return { toHit: Number.POSITIVE_INFINITY, off: Math.PI };
+    const toHit = untilBallTouches(world, h.ball, g, 12);
+    if (toHit === Number.POSITIVE_INFINITY) return { toHit, off: Math.PI };
+    const along = Math.atan2(V.z[h.ball]!, V.x[h.ball]!);
+    return { toHit, off: Math.abs(Math.atan2(Math.sin(along - direction), Math.cos(along - direction))) };
   }
+
+  it('strikes the piece the player aimed at at its own height: the wall top row at the top row, a swing planned for them lower', () => {
+    // A swing planned for the player struck a tapped top brick at STRIKE_SHARE of the wall's height
+    // (as low as a careful aim would), so where a stranger aimed did not matter. The player's swing
+    // (a request) now strikes at the brick aimed at; one planned without a request still strikes low.
+    const { world, h } = build(1);
+    for (let k = 0; k < 30; k++) step(world);
+    const wall = h.pieces.filter((p) => p.kind === 'wall');
+    const brick = wall.reduce((a, b) => (b.y0 > a.y0 ? b : a));
+    const P = world.components.Position;
+    const direction = Math.atan2(P.z[brick.body]! - P.z[h.ball]!, P.x[brick.body]! - P.x[h.ball]!);
+    aimAt(world, h, brick.body);
+    const planned = h.controls.swing!.height - HANG;
+    aimAt(world, h, brick.body, { direction, speed: 0.8 * HIT_SPEED });
+    const aimed = h.controls.swing!.height - HANG;
+    const top = brick.y0 + brick.half[1];
+    expect(planned).toBeLessThanOrEqual(STRIKE_SHARE * top + 1e-9);
+    // (Where the brick is now, settled a hair below where it was built.)
+    expect(aimed).toBeCloseTo(P.y[brick.body]!, 9);
+    // The ball's centre, where it first touches the wall, within a brick's height (0.6 m) of the top row's middle.
+    expect(untilBallTouches(world, h.ball, wall, 8)).toBeLessThan(8);
+    expect(Math.abs(P.y[h.ball]! - brick.y0)).toBeLessThan(0.6);
+  });
 
   it('takes the quicker of the directions beside the arrow: light drags at a tower and a turned drag at a wall hit within 4 s, the ball within 30 degrees of the arrow', {
     timeout: 300_000,
