@@ -516,9 +516,9 @@ export function pathThroughRing(
 export const LET_GO = Object.freeze({
   delay: 0.15,
   rollLag: 0.12,
-  bankTime: 0.3,
+  bankTime: 0.2,
   heldTime: 0.37,
-  rollRate: 0.9,
+  rollRate: 1.1,
   pathTime: 0.65,
   pathRate: 0.25,
 });
