@@ -6,7 +6,7 @@
  * Euler's equations. The flight assist (./assist.ts, on by default) turns the stick into a bank (let
  * go, the wings roll level at once) and gives a held climb or dive the elevator's full response,
  * flying level when the stick is let go; a held dive goes down to its ground floor (GROUND_FLOOR,
- * 60 m over the ground ahead) and levels there, saying so ("ASSIST: TOO LOW"); it leaves the
+ * 60 m over the ground ahead) and levels there, saying so ("ASSIST HOLDS YOU UP"); it leaves the
  * throttle to the pilot. Without it the stick moves the surfaces directly.
  * Fly through every ring (./course.ts) as fast as you can; a ring flown past to the side, left
  * behind, is missed (./course.ts leaveBehind; one laid ahead after a miss is laid ahead again
@@ -140,7 +140,7 @@ const START_SPEED = 130;
 const SEA_LEVEL = 60;
 
 /** The cue said while the assist's ground floor holds the aircraft up against a held dive (./assist.ts GROUND_FLOOR). */
-const FLOOR_CUE = 'ASSIST: TOO LOW';
+const FLOOR_CUE = 'ASSIST HOLDS YOU UP';
 /** How long the floor's cue stays after the floor last held the aircraft up, s of game time (it does not flicker). */
 const FLOOR_CUE_TIME = 1;
 /** Game time the ground floor last held the aircraft up, s. */
@@ -463,6 +463,8 @@ function stepWorld(world: PhysicsWorld): void {
     state.phase = 'crashed';
     state.warning = '';
     sound.explosion(1);
+    // The kit's card of touch gestures, if still up, goes: the crash's card and its button take the scene.
+    layout.stage.querySelector('.bp-touch-hint')?.classList.add('bp-gone');
     events.push({ text: 'Crashed!', colour: '#ff6b5a', time: world.time });
     return;
   }
