@@ -227,6 +227,20 @@ export function flightState(world: PhysicsWorld, body: number): FlightState {
 }
 
 /**
+ * Refuses a `position` or `velocity` that is not 3 finite numbers (more are ignored), naming the
+ * function `where` and the parameter.
+ * @throws RangeError naming `where`, the parameter and its values.
+ */
+export function assertMotion(where: string, position: readonly number[], velocity: readonly number[]): void {
+  for (const [name, v] of [
+    ['position', position],
+    ['velocity', velocity],
+  ] as const)
+    if (v.length < 3 || !v.slice(0, 3).every(Number.isFinite))
+      throw new RangeError(`${where}: ${name} must be 3 finite numbers, got ${v.join(', ')}`);
+}
+
+/**
  * The ground floor the assist keeps the aircraft above (`floorPath`): a held dive goes down as far as
  * `height` m above the ground (or the sea) and levels there, easing out of the dive over about `time`
  * s. A stranger held the dive key near the ground with the assist on and flew into it.
@@ -252,12 +266,7 @@ export const GROUND_FLOOR = Object.freeze({
  * @throws RangeError on a position or velocity that is not 3 finite numbers.
  */
 export function floorPath(position: readonly number[], velocity: readonly number[], ground: (x: number, z: number) => number): number {
-  for (const [name, v] of [
-    ['position', position],
-    ['velocity', velocity],
-  ] as const)
-    if (v.length < 3 || !v.slice(0, 3).every(Number.isFinite))
-      throw new RangeError(`floorPath: ${name} must be 3 finite numbers, got ${v.join(', ')}`);
+  assertMotion('floorPath', position, velocity);
   const F = GROUND_FLOOR;
   const vx = velocity[0]!,
     vz = velocity[2]!;
