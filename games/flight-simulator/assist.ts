@@ -169,12 +169,14 @@ export interface AssistState {
 }
 
 /**
- * The bank a tap let go still holds, and for how long (rad, + right, and s; { bank: 0, time: 0 }
- * while the stick is held or none is held): see `ASSIST.tapTime`.
+ * The bank a touch of the stick sideways let go now would hold, and for how long (rad, + right, at
+ * most `ASSIST.tapBank`, and s; { bank: 0, time: 0 } once the touch is `ASSIST.tapTime` old, or
+ * with none): see `ASSIST.tapTime`.
  */
 export function heldBank(state: AssistState): { bank: number; time: number } {
   if (state.rollPeak === 0 || state.rollHeld >= ASSIST.tapTime) return { bank: 0, time: 0 };
-  return { bank: ASSIST.maxBank * state.rollPeak, time: ASSIST.tapTime - state.rollHeld };
+  const bank = Math.sign(state.rollPeak) * Math.min(Math.abs(state.rollPeak) * ASSIST.maxBank, ASSIST.tapBank);
+  return { bank, time: ASSIST.tapTime - state.rollHeld };
 }
 
 /** A new assist state: no integral, wings level asked for. */
@@ -345,11 +347,11 @@ export function assist(s: FlightState, input: PilotInput, state: AssistState, dt
 
 /**
  * How fast the control surfaces move towards what they are asked, fraction of full deflection per
- * second: to the assist's command (12: the ailerons reverse in a sixth of a second when a bank key
- * is let go; at 6 the aircraft rolled on into the turn meanwhile), and (without the assist) to the
- * stick's input.
+ * second: to the assist's command (20: the ailerons reverse in a tenth of a second when a bank key
+ * is let go, so that a bank rolling in at 1.7 rad/s rolls on about 4 degrees; at 12 it rolled on
+ * 5.6, at 6 further still), and (without the assist) to the stick's input.
  */
-export const SURFACE_RATE = Object.freeze({ assist: 12, direct: 3 });
+export const SURFACE_RATE = Object.freeze({ assist: 20, direct: 3 });
 
 /**
  * `value` moved towards `target` by at most `rate` x `dt` (a control surface over a step).

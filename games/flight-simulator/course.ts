@@ -505,10 +505,10 @@ export function pathThroughRing(
  */
 export const LET_GO = Object.freeze({
   delay: 0.15,
-  rollLag: 0.12,
-  bankTime: 0.2,
-  heldTime: 0.37,
-  rollRate: 1.1,
+  rollLag: 0.09,
+  bankTime: 0.25,
+  heldTime: 0.1,
+  rollRate: 1.0,
   pathTime: 0.65,
   pathRate: 0.25,
 });

@@ -1719,8 +1719,19 @@ function frame(alpha = 1): void {
     // does not swing the camera sideways (with the aircraft's up, the look point swung to the side
     // of the bank at once while the camera lagged, so the scene and the path marker first slid the
     // wrong way, 34 px at 1280 x 800, and a turn showed late).
+    // The nose's pitch, but the flight path's heading: as a bank starts, the rudder swings the nose
+    // into the turn before the path turns (about 3 degrees in 0.4 s), and a camera that followed the
+    // nose slid the scene and the path marker the wrong way first (9 px at 1280 x 800).
     const [back, up] = chaseOffsetNow();
     nose.set(1, 0, 0).applyQuaternion(drawnQ);
+    const V = world.components.Velocity,
+      e = handles.body;
+    const level = Math.hypot(nose.x, nose.z),
+      track = Math.hypot(V.x[e]!, V.z[e]!);
+    if (track > 1 && level > 1e-6) {
+      nose.x = (level * V.x[e]!) / track;
+      nose.z = (level * V.z[e]!) / track;
+    }
     chaseOffset.copy(nose).multiplyScalar(back).y += up;
     // Its length is the offset's whatever the pitch (the sum of the two is not).
     chaseOffset.setLength(Math.hypot(back, up));
@@ -1813,7 +1824,8 @@ createStick({
     const r = stickResponse(x, y);
     stickInput.x = r.x;
     stickInput.y = r.y;
-    if (r.x !== 0 || r.y !== 0) pilotGoes();
+    // Any touch goes on from a wait, even one inside the dead zone.
+    if (x !== 0 || y !== 0) pilotGoes();
   },
 });
 createButtonBar(
