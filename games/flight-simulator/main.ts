@@ -1035,7 +1035,10 @@ function updateHud(i: ReturnType<typeof instruments>): void {
           ? 'Your first run on this course: the result to beat next time.'
           : best
             ? `Best: ${best.passed} of ${total} rings in ${clock(best.time)}`
-            : 'Watch the height above ground: alt counts from sea level, and the hills reach 700 m.';
+            : // A phone's readout gives only the height above the ground, not the sea-level "alt".
+              compact
+              ? 'Watch the height above ground: the hills reach 700 m.'
+              : 'Watch the height above ground: alt counts from sea level, and the hills reach 700 m.';
     endCard.append(title, line, bestLine);
     showAgain(true, state.phase === 'crashed' ? 'Try again ↺' : 'Fly again ▶');
   }
