@@ -1,6 +1,6 @@
 // `node scripts/flight-simulator-pilots.mjs [seed ...]`: how many of the first 10 rings of the flight
 // simulator's course (games/flight-simulator/course.ts, laid as the game lays it: seed + 7, from
-// 900 m) two headless pilots pass, flown as the game steps the aircraft (the assist on, the surfaces
+// 900 m) two headless pilots pass, flown as the game steps the aircraft (the assist on with its ground floor, the surfaces
 // following it at SURFACE_RATE.assist, full stick CONTROL_AUTHORITY degrees, the ailerons AILERON_SCALE times
 // that; the marker follows the bank a short touch holds, assist.ts heldBank). Default seeds 1 to 8 (the
 // game's default seed is 1).
@@ -34,7 +34,7 @@ const fs = await importSource(
     "export * from './games/flight-simulator/course.ts';",
     "export * from './games/flight-simulator/assist.ts';",
     "export { createPhysicsWorld, setBodyThrust, setControlDeflection, step } from '@bitphysics/physics';",
-    "export { AIRCRAFT, aircraft, aircraftLevelDrag } from '@bitphysics/projects';",
+    "export { AIRCRAFT, aircraft, aircraftLevelDrag, terrainHeight } from '@bitphysics/projects';",
   ].join('\n'),
 );
 const DEG = Math.PI / 180;
@@ -142,7 +142,7 @@ const fly = (seed, pilot) => {
         bank: s.bank,
         rollRate: s.rollRate,
         pathRate: (s.path - lastPath) / world.dt,
-        held: fs.heldBank(state, s),
+        held: fs.heldBank(state),
       },
       true,
     );
@@ -158,7 +158,11 @@ const fly = (seed, pilot) => {
     const back = history[history.length - 1 - Math.round(LAG / world.dt)];
     const seen = back && back.ring === n ? back : null;
     const c0 = pilot({ s, ring, P, e, trim, start, seen, seenMarker: seen?.marker ?? null, since, keys, dt: world.dt });
-    const c = fs.assist(s, { roll: c0.roll, pitch: c0.pitch, yaw: 0 }, state, world.dt);
+    // The ground floor as the game keeps it (assist.ts floorPath; the sea at 60 m).
+    const floor = fs.floorPath([P.x[e], P.y[e], P.z[e]], [V.x[e], V.y[e], V.z[e]], (x, z) =>
+      Math.max(60, fs.terrainHeight(h.terrain, x, z)),
+    );
+    const c = fs.assist(s, { roll: c0.roll, pitch: c0.pitch, yaw: 0 }, state, world.dt, floor);
     for (const k of ['aileron', 'elevator', 'rudder']) surface[k] += Math.max(-rate, Math.min(rate, c[k] - surface[k]));
     fs.setControlDeflection(world, h.surfaces.tail, -surface.elevator * full);
     fs.setControlDeflection(world, h.surfaces.leftWing, surface.aileron * full * fs.AILERON_SCALE);

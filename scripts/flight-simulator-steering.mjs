@@ -21,7 +21,7 @@ const fs = await importSource(
     "export * from './games/flight-simulator/assist.ts';",
     "export { predictThroughRing } from './games/flight-simulator/course.ts';",
     "export { createPhysicsWorld, setBodyThrust, setControlDeflection, step } from '@bitphysics/physics';",
-    "export { AIRCRAFT, aircraft, aircraftLevelDrag } from '@bitphysics/projects';",
+    "export { AIRCRAFT, aircraft, aircraftLevelDrag, terrainHeight } from '@bitphysics/projects';",
   ].join('\n'),
 );
 const DEG = Math.PI / 180;
@@ -40,8 +40,14 @@ function createFlight() {
     full = fs.CONTROL_AUTHORITY * DEG,
     e = h.body,
     throttle = fs.aircraftLevelDrag(130) / fs.AIRCRAFT.maxThrust;
-  const steer = (s, roll) => {
-    const c = fs.assist(s, { roll, pitch: 0, yaw: 0 }, state, world.dt);
+  const C = world.components;
+  const ground = (x, z) => Math.max(60, fs.terrainHeight(h.terrain, x, z));
+  const steer = (s, roll, pitch = 0) => {
+    const floor =
+      process.env.FLOOR === '0'
+        ? -Math.PI / 2
+        : fs.floorPath([C.Position.x[e], C.Position.y[e], C.Position.z[e]], [C.Velocity.x[e], C.Velocity.y[e], C.Velocity.z[e]], ground);
+    const c = fs.assist(s, { roll, pitch, yaw: 0 }, state, world.dt, floor);
     for (const q of ['aileron', 'elevator', 'rudder']) surface[q] += Math.max(-rate, Math.min(rate, c[q] - surface[q]));
     fs.setControlDeflection(world, h.surfaces.tail, -surface.elevator * full);
     fs.setControlDeflection(world, h.surfaces.leftWing, surface.aileron * full * fs.AILERON_SCALE);
@@ -50,7 +56,7 @@ function createFlight() {
     fs.setBodyThrust(world, e, [throttle * fs.AIRCRAFT.maxThrust, 0, 0]);
     fs.step(world);
   };
-  return { world, state, e, steer };
+  return { world, state, e, steer, ground };
 }
 
 /** Flies with the → key held while `hold(t, turned, s)` says so; returns the record. */
@@ -102,6 +108,27 @@ for (const target of [30, 90]) {
   );
 }
 
+// Let go: the bank at the release and 0.5 s and 1 s after it, degrees, and when the wings are within
+// 3 degrees of level, s after the release; and the heading rate 1 s into the hold, degrees/s (the
+// turn's feel: how soon a held key turns the nose).
+for (const ms of [150, 500, 1000, 2000]) {
+  const r = fly((t) => t < ms / 1000, 6);
+  const at = (dt) => r[Math.min(r.length - 1, Math.round((ms / 1000 + dt) * 60))];
+  const level = r.find(
+    (x) => x.t > ms / 1000 && Math.abs(x.bank) < 3 && x.t > ms / 1000 + 0.05 && r.every((y) => y.t < x.t || Math.abs(y.bank) < 3),
+  );
+  console.log(
+    `let go after ${ms} ms: bank ${at(0).bank.toFixed(1)}° at the release, ${at(0.5).bank.toFixed(1)}° 0.5 s after, ${at(1).bank.toFixed(1)}° 1 s after; level (< 3°) ${level ? (level.t - ms / 1000).toFixed(2) : '?'} s after`,
+  );
+}
+{
+  const r = fly(() => true, 3);
+  const rate = (t) => (r[Math.round((t + 0.1) * 60)].turned - r[Math.round((t - 0.1) * 60)].turned) / 0.2;
+  console.log(
+    `held →: heading rate ${rate(0.5).toFixed(1)}°/s at 0.5 s, ${rate(1).toFixed(1)}°/s at 1 s, ${rate(2).toFixed(1)}°/s at 2 s; turned ${r[60].turned.toFixed(1)}° in 1 s`,
+  );
+}
+
 /** Flies a hold of → for `holdReal` s of the clock at `fps` frames a second; see the header. */
 function flyFrames(fps, holdReal, timed) {
   const { world, state, e, steer } = createFlight();
@@ -138,7 +165,7 @@ function flyFrames(fps, holdReal, timed) {
         bank: a.bank,
         rollRate: a.rollRate,
         pathRate: (a.path - s.path) / world.dt,
-        held: fs.heldBank(state, a),
+        held: fs.heldBank(state),
         at: track.length - 1,
       };
     }
@@ -182,3 +209,30 @@ for (const hold of [0.15, 0.5, 1, 2])
       `held ${hold} s at ${fps} fps${timed ? ', keys timed' : ''}: turned ${r.turned.toFixed(1)}°, ${r.runOn.toFixed(1)}° of it after the release was seen; ${Number.isNaN(r.miss) ? 'no frame saw the key held' : `ring plane 800 m ahead crossed ${r.miss.toFixed(0)} m from the marker's point`}`,
     );
   }
+
+// The ground floor (assist.ts floorPath; env FLOOR=0 flies without it): ↓ held from `above` m over
+// the ground for 15 s: the steepest path, the lowest height over the ground and when, and whether it crashed.
+for (const above of [150, 300, 600]) {
+  const { world, e, steer, ground } = createFlight();
+  const C = world.components;
+  C.Position.y[e] = ground(0, 0) + above;
+  let key = 0,
+    steepest = 0,
+    lowest = Infinity,
+    when = 0,
+    crashed = false;
+  for (let t = 0; t < 15 && !crashed; t += world.dt) {
+    key = fs.rampKey(key, -1, world.dt);
+    steer(fs.flightState(world, e), 0, key);
+    const agl = C.Position.y[e] - ground(C.Position.x[e], C.Position.z[e]);
+    steepest = Math.min(steepest, fs.flightState(world, e).path / DEG);
+    if (agl < lowest) {
+      lowest = agl;
+      when = t;
+    }
+    crashed = agl < 2;
+  }
+  console.log(
+    `↓ held from ${above} m over the ground: path down to ${steepest.toFixed(0)}°, lowest ${lowest.toFixed(0)} m over the ground at ${when.toFixed(1)} s${crashed ? ', CRASHED' : ''}`,
+  );
+}

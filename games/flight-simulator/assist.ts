@@ -5,9 +5,10 @@
  * decides where the control surfaces point.
  *
  * - Stick sideways: a bank angle, up to `ASSIST.maxBank` at full stick (the ailerons roll the
- *   aircraft there and hold it, the rudder turning the nose with them); let go, the wings roll
- *   level. A tap holds its bank a moment (`ASSIST.tapTime`), so it turns the aircraft a few
- *   degrees; a longer touch up to `ASSIST.holdFade` holds less for less time (letGoHold).
+ *   aircraft there and hold it, the rudder turning the nose with them); eased off, the bank eases with
+ *   it; let go, the wings roll level at once and the turn stops. Only a tap (let go within
+ *   `ASSIST.tapTime` of the touch) holds its bank until the touch is `tapTime` old, so that a tap of a
+ *   bank key still rolls the aircraft far enough to turn it a little.
  * - Stick forward and back: the stick moves the elevator itself in proportion to its deflection, so
  *   a held climb or dive gets the full response it has without the assist, up to a path of
  *   `ASSIST.maxPath` (45 degrees: no loop, no vertical dive); the rest of the elevator is a path
@@ -78,12 +79,13 @@ export interface FlightState {
 export const CONTROL_AUTHORITY = 25;
 
 /**
- * Full deflection of the ailerons as a multiple of the control authority (40 degrees at the default
- * 25, within the 45 the lifting surfaces take): they roll the aircraft at up to about 1.35 rad/s, so
- * a bank rolls level soon after the key is let go and the turn stops there (at 1.2 the roll was
- * 1 rad/s and a 0.7 s hold turned 80 % of its heading after the release).
+ * Full deflection of the ailerons as a multiple of the control authority (45 degrees at the default
+ * 25, all the lifting surfaces take; the page caps a larger authority's there): they roll the
+ * aircraft at up to about 1.7 rad/s at 130 m/s (1.5 at 1.6), so a 70 degree bank rolls level within
+ * 0.9 s of the key's release and the turn stops there (at 1.2 the roll was 1 rad/s and a 0.7 s hold
+ * turned 80 % of its heading after the release).
  */
-export const AILERON_SCALE = 1.6;
+export const AILERON_SCALE = 1.8;
 
 /** The assist's settings. */
 export const ASSIST = Object.freeze({
@@ -134,34 +136,22 @@ export const ASSIST = Object.freeze({
    * as the wings roll (without it the nose first swung 0.6 degrees the other way over 0.4 s).
    */
   aileronRudder: 0.5,
-  /** Fastest change of the bank asked for, rad/s (a full stick's bank is reached smoothly). */
-  bankRate: 120 * DEG,
   /**
-   * How long a tap of the stick sideways holds its bank, s (its age): a tap of a bank key (or a
-   * short touch of the phone's stick) rolls the aircraft far enough, for long enough, to turn it
-   * about 3 degrees; a touch up to `holdFade` holds less for less time (assist.ts letGoHold), so the
-   * heading turned grows with the hold (2.9 degrees at 0.1 s, 3.0 at 0.4, 4.2 at 0.5, 10 at 1 s).
+   * Fastest change of the bank asked for, rad/s (a full stick's bank is reached smoothly; faster than
+   * the ailerons roll the aircraft, so they are not held back by it).
    */
-  tapTime: 1.1,
+  bankRate: 180 * DEG,
   /**
-   * Longest touch of the stick sideways that is a tap, s: one eased off later holds less
-   * (letGoHold) and its wings never roll on past the bank they have, so the turn stops where the
-   * flight-path marker said. 0.35 s
-   * keeps a tap of two frames at 5 frames a second (0.3 s of game time) a tap.
+   * Age of a touch of the stick sideways, s, up to which one let go is a tap: its bank (at most
+   * `tapBank`) is held until the touch is this old, then the wings roll level. A tap of a bank key
+   * (0.15 s) then banks the aircraft about 20 degrees and turns it about a degree; a touch let go
+   * later is let go at once. (With a tap held to 1.1 s, and a touch up to 0.9 s holding part of its
+   * bank, strangers found the aircraft stayed banked after the key was let go: a 150 ms tap was still
+   * 28 degrees banked 1 s after the release.)
    */
-  tapLength: 0.35,
-  /**
-   * Largest bank a tap holds, rad (32 degrees): a 150 ms tap turns the aircraft about 3 degrees (2.5
-   * when it held 31 degrees for 0.9 s).
-   */
-  tapBank: 32 * DEG,
-  /**
-   * Age of a touch of the stick sideways, s, from which one let go holds nothing: between
-   * `tapLength` and this a touch holds less bank for less time the longer it was (assist.ts letGoHold).
-   */
-  holdFade: 0.9,
-  /** Lead on the roll rate when a short hold is let go, s: it holds the bank where the roll stops, not the one it has. */
-  rollLead: 0.2,
+  tapTime: 0.35,
+  /** Largest bank a tap holds, rad (25 degrees). */
+  tapBank: 25 * DEG,
 });
 
 /** What the assist keeps between steps: the integral of the flight-path error and the bank asked for. */
@@ -170,55 +160,28 @@ export interface AssistState {
   integral: number;
   /** Bank asked for now, rad (moves towards the stick's at `ASSIST.bankRate`). */
   bankTarget: number;
-  /** How long the stick has been off centre sideways, s (0 while it is centred). */
+  /** Age of the touch of the stick sideways, s (0 while it is centred and no tap is held). */
   rollHeld: number;
-  /** The largest sideways stick of this touch while it is held, or once let go the stick it holds (0 once past `rollUntil`), signed, in [-1, 1]. */
+  /** The largest sideways stick of this touch, signed, in [-1, 1]; once a tap is let go, the stick it holds (0: none). */
   rollPeak: number;
-  /** Whether this touch has eased off while it still holds a bank (its `rollPeak` is held until `rollUntil`). */
-  rollTap: boolean;
-  /** The touch's age until which a stick let go is held, s (`ASSIST.tapTime` until it is let go). */
-  rollUntil: number;
+  /** Whether the ground floor (`assist`'s `floor`) held the aircraft up against the stick at the last step. */
+  floorHold: boolean;
 }
 
 /**
- * The bank a stick let go now would still hold, and for how long (rad, + right; 0 when none, and
- * the time left, s; see letGoHold). `now` is the aircraft's bank, rad, and roll rate, rad/s (what
- * a touch longer than `ASSIST.tapLength` keeps depends on them; default level and still).
+ * The bank a touch of the stick sideways let go now would hold, and for how long (rad, + right, at
+ * most `ASSIST.tapBank`, and s; { bank: 0, time: 0 } once the touch is `ASSIST.tapTime` old, or
+ * with none): see `ASSIST.tapTime`.
  */
-export function heldBank(
-  state: AssistState,
-  now: { bank: number; rollRate: number } = { bank: 0, rollRate: 0 },
-): { bank: number; time: number } {
-  if (state.rollPeak === 0 || state.rollHeld >= state.rollUntil) return { bank: 0, time: 0 };
-  if (state.rollTap) return { bank: ASSIST.maxBank * state.rollPeak, time: state.rollUntil - state.rollHeld };
-  const h = letGoHold(state.rollHeld, state.rollPeak, now.bank, now.rollRate);
-  return { bank: ASSIST.maxBank * h.stick, time: h.until - state.rollHeld };
-}
-
-/**
- * What a touch of the stick `age` s old at its largest `peak` (signed, in [-1, 1]) holds when let
- * go in a bank of `bank` rad rolling at `rollRate` rad/s: the stick held (signed, never more than
- * `peak`, never the other way) and the age until which it is held, s. A tap (`age` up to
- * `ASSIST.tapLength`) holds its bank, at most `ASSIST.tapBank`, until `ASSIST.tapTime`. A longer
- * touch holds less the longer it was, for less time: the share (holdFade - age) / (holdFade -
- * tapLength) of a tap's hold time, at the larger of that share of `tapBank` and the bank where the
- * roll stops (`bank` less `rollRate` x `ASSIST.rollLead`: the ailerons reverse at once, so the wings
- * never roll on past the release); from `ASSIST.holdFade` on, nothing (the wings roll level at once).
- */
-function letGoHold(age: number, peak: number, bank: number, rollRate: number): { stick: number; until: number } {
-  const A = ASSIST,
-    sign = Math.sign(peak),
-    size = Math.abs(peak);
-  if (age <= A.tapLength) return { stick: sign * Math.min(size, A.tapBank / A.maxBank), until: A.tapTime };
-  const share = clamp((A.holdFade - age) / (A.holdFade - A.tapLength), 0, 1);
-  if (share === 0) return { stick: 0, until: age };
-  const stops = Math.max(0, sign * (bank - rollRate * A.rollLead));
-  return { stick: sign * Math.min(size, Math.max(stops, share * A.tapBank) / A.maxBank), until: age + share * (A.tapTime - A.tapLength) };
+export function heldBank(state: AssistState): { bank: number; time: number } {
+  if (state.rollPeak === 0 || state.rollHeld >= ASSIST.tapTime) return { bank: 0, time: 0 };
+  const bank = Math.sign(state.rollPeak) * Math.min(Math.abs(state.rollPeak) * ASSIST.maxBank, ASSIST.tapBank);
+  return { bank, time: ASSIST.tapTime - state.rollHeld };
 }
 
 /** A new assist state: no integral, wings level asked for. */
 export function createAssistState(): AssistState {
-  return { integral: 0, bankTarget: 0, rollHeld: 0, rollPeak: 0, rollTap: false, rollUntil: ASSIST.tapTime };
+  return { integral: 0, bankTarget: 0, rollHeld: 0, rollPeak: 0, floorHold: false };
 }
 
 const clamp = (v: number, lo: number, hi: number): number => (v < lo ? lo : v > hi ? hi : v);
@@ -266,42 +229,78 @@ export function flightState(world: PhysicsWorld, body: number): FlightState {
 }
 
 /**
- * One step of the assist: the control surfaces that fly the aircraft in `s` where the pilot's
- * `input` asks (see the header), over a step of `dt` s (> 0). Updates `state`.
+ * Refuses a `position` or `velocity` that is not 3 finite numbers (more are ignored), naming the
+ * function `where` and the parameter.
+ * @throws RangeError naming `where`, the parameter and its values.
  */
-export function assist(s: FlightState, input: PilotInput, state: AssistState, dt: number): ControlCommand {
+export function assertMotion(where: string, position: readonly number[], velocity: readonly number[]): void {
+  for (const [name, v] of [
+    ['position', position],
+    ['velocity', velocity],
+  ] as const)
+    if (v.length < 3 || !v.slice(0, 3).every(Number.isFinite))
+      throw new RangeError(`${where}: ${name} must be 3 finite numbers, got ${v.join(', ')}`);
+}
+
+/**
+ * The ground floor the assist keeps the aircraft above (`floorPath`): a held dive goes down as far as
+ * `height` m above the ground (or the sea) and levels there, easing out of the dive over about `time`
+ * s. A stranger held the dive key near the ground with the assist on and flew into it.
+ */
+export const GROUND_FLOOR = Object.freeze({
+  /** Height above the ground the floor lies at, m (under the 85 m to a ring's lowest edge: RING_CLEARANCE less its radius). */
+  height: 60,
+  /** Time constant of the approach to the floor, s: the path may fall no steeper than towards the floor `time` s ahead. */
+  time: 2,
+  /** How far ahead the ground is looked at, s of flight, and how often, s. */
+  ahead: 4,
+  every: 0.5,
+});
+
+/**
+ * The least flight-path angle (rad, in (-pi/2, pi/2)) that keeps the aircraft at `position` (m,
+ * world, y up) flying at `velocity` (m/s) above the floor GROUND_FLOOR.height over the ground
+ * `ground(x, z)` (m): atan2(floor - y, v GROUND_FLOOR.time), the floor over the highest ground on
+ * the track GROUND_FLOOR.ahead s ahead (level at this speed, looked at every GROUND_FLOOR.every s)
+ * and v the horizontal speed (at least 1 m/s). The path falls to the floor no faster than over
+ * `time` s, easing out as it nears it: far above the ground it is steep (no limit), at the floor
+ * level, under it a climb; a hill ahead raises it before the aircraft is over it.
+ * @throws RangeError on a position or velocity that is not 3 finite numbers.
+ */
+export function floorPath(position: readonly number[], velocity: readonly number[], ground: (x: number, z: number) => number): number {
+  assertMotion('floorPath', position, velocity);
+  const F = GROUND_FLOOR;
+  const vx = velocity[0]!,
+    vz = velocity[2]!;
+  let highest = Number.NEGATIVE_INFINITY;
+  for (let t = 0; t <= F.ahead + 1e-9; t += F.every) highest = Math.max(highest, ground(position[0]! + vx * t, position[2]! + vz * t));
+  return Math.atan2(highest + F.height - position[1]!, Math.max(1, Math.hypot(vx, vz)) * F.time);
+}
+
+/**
+ * One step of the assist: the control surfaces that fly the aircraft in `s` where the pilot's
+ * `input` asks (see the header), over a step of `dt` s (> 0), no steeper down than the flight path
+ * `floor` (rad; `floorPath`: the ground floor; default none). Updates `state` (its `floorHold` says
+ * whether the floor holds the aircraft up against the stick).
+ */
+export function assist(s: FlightState, input: PilotInput, state: AssistState, dt: number, floor = -Math.PI / 2): ControlCommand {
   const A = ASSIST;
   // Bank: towards the stick's bank at a limited rate, the ailerons on the error and the roll rate.
-  // A touch of the stick let go holds a bank a moment (letGoHold: a tap turns).
+  // A tap let go holds its bank until it is `tapTime` old (a tap turns a little); anything else
+  // follows the stick.
   let roll = clamp(input.roll, -1, 1);
-  const reversed = state.rollPeak !== 0 && Math.sign(roll) === -Math.sign(state.rollPeak);
-  if (roll !== 0 && (state.rollHeld === 0 || reversed)) {
+  if (roll !== 0) {
+    // A new touch, or one turned the other way, starts afresh.
+    if (state.rollHeld === 0 || Math.sign(roll) === -Math.sign(state.rollPeak)) state.rollPeak = 0;
+    if (Math.abs(roll) >= Math.abs(state.rollPeak)) state.rollPeak = roll;
+    state.rollHeld += dt;
+  } else if (state.rollPeak !== 0 && state.rollHeld > 0 && state.rollHeld < A.tapTime) {
+    roll = Math.sign(state.rollPeak) * Math.min(Math.abs(state.rollPeak), A.tapBank / A.maxBank);
+    state.rollPeak = roll;
+    state.rollHeld += dt;
+  } else {
     state.rollHeld = 0;
     state.rollPeak = 0;
-    state.rollTap = false;
-    state.rollUntil = ASSIST.tapTime;
-  }
-  if (roll !== 0 || state.rollPeak !== 0) {
-    state.rollHeld += dt;
-    if (state.rollHeld > state.rollUntil) state.rollPeak = 0;
-    else if (Math.abs(roll) >= Math.abs(state.rollPeak)) state.rollPeak = roll;
-    else {
-      // Eased off: a tap or a short hold keeps a bank a while (letGoHold), so a tap turns a few
-      // degrees and a longer touch never turns less than a shorter one.
-      if (!state.rollTap) {
-        const h = letGoHold(state.rollHeld, state.rollPeak, s.bank, s.rollRate);
-        state.rollPeak = h.stick;
-        state.rollUntil = h.until;
-        state.rollTap = true;
-      }
-      if (state.rollPeak !== 0 && state.rollHeld <= state.rollUntil) roll = state.rollPeak;
-      else state.rollPeak = 0;
-    }
-  }
-  if (roll === 0) {
-    state.rollHeld = 0;
-    state.rollTap = false;
-    state.rollUntil = ASSIST.tapTime;
   }
   const wanted = A.maxBank * roll;
   // Eased off or let go: the bank asked for never lies beyond the bank the aircraft has (nor short
@@ -318,14 +317,19 @@ export function assist(s: FlightState, input: PilotInput, state: AssistState, dt
   const aileron = clamp(A.bankGain * (state.bankTarget - s.bank) - A.rollDamping * s.rollRate, -1, 1);
   // The stick's own share of the elevator: its deflection |pitch|, faded out over `pathFade` as the
   // path nears `maxPath` the way the stick pushes (no loop, no vertical dive).
+  // A dive's share fades out too as the path nears the ground floor's (`floorPath`).
   const stick = clamp(input.pitch, -1, 1);
-  const share = Math.abs(stick) * clamp((A.maxPath - Math.sign(stick) * s.path) / A.pathFade, 0, 1);
+  const floorFade = stick < 0 ? clamp((s.path - floor) / A.pathFade, 0, 1) : 1;
+  const share = Math.abs(stick) * clamp((A.maxPath - Math.sign(stick) * s.path) / A.pathFade, 0, 1) * floorFade;
+  // The path asked for: the stick's, raised to the floor's (no steeper than `maxPath` up).
+  const asked = Math.max(A.maxClimb * stick, Math.min(floor, A.maxPath));
+  state.floorHold = asked > A.maxClimb * stick || floorFade < 1;
   // Flight path: proportional, integral and pitch-rate damping. The integral finds the elevator the
   // trim needs (more in a bank, where the lift must also carry the turn) and winds no further than
   // full elevator. It rests while the stick has the elevator (no wind-up against a held climb) and
   // while the hold asks for full elevator the way the error pushes (no wind-up while it pulls out of
   // a steep climb or dive, which would carry the path past level for seconds after).
-  const error = A.maxClimb * stick - s.path;
+  const error = asked - s.path;
   const limit = 1 / A.pathIntegral;
   const turn = 1 / Math.max(0.3, Math.cos(s.bank)) - 1;
   const others = A.pathGain * error + A.turnElevator * turn - A.pitchDamping * s.pitchRate;
@@ -343,11 +347,11 @@ export function assist(s: FlightState, input: PilotInput, state: AssistState, dt
 
 /**
  * How fast the control surfaces move towards what they are asked, fraction of full deflection per
- * second: to the assist's command (12: the ailerons reverse in a sixth of a second when a bank key
- * is let go; at 6 the aircraft rolled on into the turn meanwhile), and (without the assist) to the
- * stick's input.
+ * second: to the assist's command (20: the ailerons reverse in a tenth of a second when a bank key
+ * is let go, so that a bank rolling in at 1.7 rad/s rolls on about 4 degrees; at 12 it rolled on
+ * 5.6, at 6 further still), and (without the assist) to the stick's input.
  */
-export const SURFACE_RATE = Object.freeze({ assist: 12, direct: 3 });
+export const SURFACE_RATE = Object.freeze({ assist: 20, direct: 3 });
 
 /**
  * `value` moved towards `target` by at most `rate` x `dt` (a control surface over a step).
@@ -389,12 +393,13 @@ export interface KeyRamp {
 }
 
 /**
- * How the bank keys move their input (`rampKey`): a press asks at once for `start` (0.3 of full
- * stick, a bank of 21 degrees, which the assist holds for `ASSIST.tapTime`, so a 150 ms tap turns
- * the aircraft about 2.4 degrees), full stick after ln(1.25 / 0.55) / 1.5 = 0.55 s held; released,
+ * How the bank keys move their input (`rampKey`): a press asks at once for `start` (0.45 of full
+ * stick, a bank of 31 degrees, of which the assist holds up to `ASSIST.tapBank` until the touch is
+ * `ASSIST.tapTime` old, so a 150 ms tap turns the aircraft about 0.8 degrees), full stick after
+ * ln(1.25 / 0.7) / 2.5 = 0.23 s held (at 0.55 s, strangers found the turn sluggish); released,
  * neutral in 1/12 s, so that the wings start back to level at once (in 0.25 s they first rolled on).
  */
-export const BANK_KEY_RAMP: KeyRamp = Object.freeze({ rise: 1.5, from: 0.25, fall: 12, start: 0.3 });
+export const BANK_KEY_RAMP: KeyRamp = Object.freeze({ rise: 2.5, from: 0.25, fall: 12, start: 0.45 });
 
 /**
  * One step of a keyboard axis on `ramp` (default KEY_RAMP; the bank keys use BANK_KEY_RAMP):
@@ -452,23 +457,58 @@ export function throttleStep(throttle: number, direction: number): number {
   return Math.min(1, Math.max(0, Math.round(n * step * 1e9) / 1e9));
 }
 
-/** Dead zone of the phone's stick (`stickResponse`), a share of its full travel: a finger resting near the centre asks for nothing. */
-export const STICK_DEAD_ZONE = 0.05;
+/**
+ * Dead zone of the phone's stick (`stickResponse`), a share of its full travel: a finger resting near
+ * the centre, or put down a little off it, asks for nothing (6 px of the 44 px travel; at 0.05, 2 px,
+ * a stranger found the stick twitchy).
+ */
+export const STICK_DEAD_ZONE = 0.14;
 /** Exponent of the phone's stick response past the dead zone (`stickResponse`): above 1, gentle near the centre and full at the rim. */
-export const STICK_EXPONENT = 1.7;
+export const STICK_EXPONENT = 2;
+/**
+ * Share of the stick's larger axis under which its other axis counts for nothing (`stickResponse`):
+ * a push sideways that wanders a little up or down banks without climbing, and the other way round.
+ */
+export const STICK_AXIS_SNAP = 0.3;
 
 /**
  * The phone stick's response: its deflection `x` (right), `y` (up), each in [-1, 1], turned into the
- * pilot's input along the same direction, its size d (the deflection's length, at most 1) mapped to
- * ((d - STICK_DEAD_ZONE) / (1 - STICK_DEAD_ZONE)) ^ STICK_EXPONENT: 0 inside the dead zone, a
- * quarter of full at half travel (a fine correction), full at the rim. Linear, half a push asked
- * for half the bank (35 degrees) and swung a ring off the phone's narrow view.
+ * pilot's input. An axis under STICK_AXIS_SNAP of the other counts for nothing; the size d of what
+ * is left (its length, at most 1) is mapped to ((d - STICK_DEAD_ZONE) / (1 - STICK_DEAD_ZONE)) ^
+ * STICK_EXPONENT along the same direction: 0 inside the dead zone, a fifth of full at half travel (a
+ * fine correction), full at the rim. Linear, half a push asked for half the bank (35 degrees) and
+ * swung a ring off the phone's narrow view.
  * @throws RangeError on an `x` or `y` that is not finite.
  */
 export function stickResponse(x: number, y: number): { x: number; y: number } {
   if (!Number.isFinite(x) || !Number.isFinite(y)) throw new RangeError(`stickResponse: x and y must be finite, got ${x}, ${y}`);
   const d = Math.min(1, Math.hypot(x, y));
   if (d <= STICK_DEAD_ZONE) return { x: 0, y: 0 };
-  const k = ((d - STICK_DEAD_ZONE) / (1 - STICK_DEAD_ZONE)) ** STICK_EXPONENT / Math.hypot(x, y);
-  return { x: x * k, y: y * k };
+  const sx = Math.abs(x) < STICK_AXIS_SNAP * Math.abs(y) ? 0 : x,
+    sy = Math.abs(y) < STICK_AXIS_SNAP * Math.abs(x) ? 0 : y;
+  const k = ((d - STICK_DEAD_ZONE) / (1 - STICK_DEAD_ZONE)) ** STICK_EXPONENT / Math.hypot(sx, sy);
+  return { x: sx * k, y: sy * k };
+}
+
+/**
+ * Time constants of the phone stick's smoothing (`smoothStick`), s: towards a larger input (a finger's
+ * jitter and a jump where it lands are eased over `push`) and back towards 0 (`ease`, shorter, so
+ * that letting go still levels the wings at once).
+ */
+export const STICK_SMOOTHING = Object.freeze({ push: 0.12, ease: 0.04 });
+
+/**
+ * One step of the phone stick's smoothing: `value` (the input the assist is given now, in [-1, 1])
+ * moved over `dt` s (>= 0) towards `target` (the stick's response now, in [-1, 1]) by the share
+ * 1 - e^(-dt / tau), tau STICK_SMOOTHING.push when `target` is farther from 0 the same way, else
+ * STICK_SMOOTHING.ease; within 1e-3 of `target` it is `target` (a released stick reads 0 exactly).
+ * @throws RangeError on a value or target outside [-1, 1], or a negative dt.
+ */
+export function smoothStick(value: number, target: number, dt: number): number {
+  if (!(value >= -1 && value <= 1 && target >= -1 && target <= 1))
+    throw new RangeError(`smoothStick: value and target must be in [-1, 1], got ${value}, ${target}`);
+  if (!(dt >= 0)) throw new RangeError(`smoothStick: dt must be >= 0 s, got ${dt}`);
+  const out = Math.abs(target) > Math.abs(value) && Math.sign(target) * Math.sign(value) >= 0;
+  const next = value + (target - value) * (1 - Math.exp(-dt / (out ? STICK_SMOOTHING.push : STICK_SMOOTHING.ease)));
+  return Math.abs(next - target) < 1e-3 ? target : next;
 }

@@ -9,7 +9,7 @@
 
 import { Rng } from '@bitphysics/physics';
 import { terrainHeight } from '@bitphysics/projects';
-import { ASSIST } from './assist';
+import { ASSIST, assertMotion } from './assist';
 
 /**
  * Radius of a ring, m, to the middle of its tube: the aircraft passes when its centre crosses inside
@@ -333,12 +333,7 @@ export interface RingBearing {
  * horizontal part.
  */
 export function ringBearing(ring: Ring, position: readonly number[], velocity: readonly number[]): RingBearing {
-  for (const [name, v] of [
-    ['position', position],
-    ['velocity', velocity],
-  ] as const)
-    if (v.length < 3 || !v.slice(0, 3).every(Number.isFinite))
-      throw new RangeError(`ringBearing: ${name} must be 3 finite numbers, got ${v.join(', ')}`);
+  assertMotion('ringBearing', position, velocity);
   const vx = velocity[0]!,
     vy = velocity[1]!,
     vz = velocity[2]!,
@@ -486,12 +481,7 @@ export function pathThroughRing(
   position: readonly number[],
   velocity: readonly number[],
 ): { time: number; offset: number; point: [number, number, number] } {
-  for (const [name, v] of [
-    ['position', position],
-    ['velocity', velocity],
-  ] as const)
-    if (v.length < 3 || !v.slice(0, 3).every(Number.isFinite))
-      throw new RangeError(`pathThroughRing: ${name} must be 3 finite numbers, got ${v.join(', ')}`);
+  assertMotion('pathThroughRing', position, velocity);
   const gap = (ring.x - position[0]!) * ring.nx + (ring.y - position[1]!) * ring.ny + (ring.z - position[2]!) * ring.nz;
   const closing = velocity[0]! * ring.nx + velocity[1]! * ring.ny + velocity[2]! * ring.nz;
   const time = gap / closing;
@@ -515,10 +505,10 @@ export function pathThroughRing(
  */
 export const LET_GO = Object.freeze({
   delay: 0.15,
-  rollLag: 0.12,
-  bankTime: 0.3,
-  heldTime: 0.37,
-  rollRate: 0.9,
+  rollLag: 0.09,
+  bankTime: 0.25,
+  heldTime: 0.1,
+  rollRate: 1.0,
   pathTime: 0.65,
   pathRate: 0.25,
 });
@@ -566,12 +556,7 @@ export function predictThroughRing(
 ): { time: number; offset: number; point: [number, number, number] } {
   const { position, velocity, bank, rollRate, pathRate } = motion;
   const held = motion.held && motion.held.time > 0 && Number.isFinite(motion.held.bank) ? motion.held : null;
-  for (const [name, v] of [
-    ['position', position],
-    ['velocity', velocity],
-  ] as const)
-    if (v.length < 3 || !v.slice(0, 3).every(Number.isFinite))
-      throw new RangeError(`predictThroughRing: ${name} must be 3 finite numbers, got ${v.join(', ')}`);
+  assertMotion('predictThroughRing', position, velocity);
   if (![bank, rollRate, pathRate].every(Number.isFinite))
     throw new RangeError(`predictThroughRing: bank, rollRate and pathRate must be finite, got ${bank}, ${rollRate}, ${pathRate}`);
   const dt = opts.dt ?? 1 / 30,
@@ -676,12 +661,7 @@ export const LEFT_BEHIND_TIME = 1.5;
  * @throws RangeError on a position or velocity that is not 3 finite numbers.
  */
 export function recedingSpeed(ring: Ring, position: readonly number[], velocity: readonly number[]): number {
-  for (const [name, v] of [
-    ['position', position],
-    ['velocity', velocity],
-  ] as const)
-    if (v.length < 3 || !v.slice(0, 3).every(Number.isFinite))
-      throw new RangeError(`recedingSpeed: ${name} must be 3 finite numbers, got ${v.join(', ')}`);
+  assertMotion('recedingSpeed', position, velocity);
   const dx = ring.x - position[0]!,
     dy = ring.y - position[1]!,
     dz = ring.z - position[2]!,

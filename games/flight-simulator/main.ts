@@ -4,9 +4,10 @@
  * (wing halves with dihedral and ailerons, tailplane with the elevator, fin with the rudder), with a
  * stall past 20 degrees; the controls act where the surfaces are, so they turn the aircraft through
  * Euler's equations. The flight assist (./assist.ts, on by default) turns the stick into a bank (let
- * go, the wings roll level) and gives a held climb or dive the elevator's full response, flying
- * level when the stick is let go; it leaves the throttle to the pilot. Without it the stick moves
- * the surfaces directly.
+ * go, the wings roll level at once) and gives a held climb or dive the elevator's full response,
+ * flying level when the stick is let go; a held dive goes down to its ground floor (GROUND_FLOOR,
+ * 60 m over the ground ahead) and levels there, saying so ("ASSIST HOLDS YOU UP"); it leaves the
+ * throttle to the pilot. Without it the stick moves the surfaces directly.
  * Fly through every ring (./course.ts) as fast as you can; a ring flown past to the side, left
  * behind, is missed (./course.ts leaveBehind; one laid ahead after a miss is laid ahead again
  * instead, so one over-correction costs one star); after a miss the course moves on (the
@@ -27,12 +28,14 @@
  * camera sits close behind and widens its view with speed, so the speed shows.
  * Keys: arrows or W/S/A/D: climb / dive and bank (with "pilot's pitch" in the panel, down pulls up),
  * ramped (./assist.ts rampKey: a tap is a small correction; climb and dive grow slowly at first to full
- * stick after 0.4 s held, the bank keys start at 0.3 of full stick (BANK_KEY_RAMP) and are full after 0.55 s);
+ * stick after 0.4 s held, the bank keys start at 0.45 of full stick (BANK_KEY_RAMP) and are full after 0.23 s);
  * Q / E: rudder; X / Z (or Shift, + / -): faster / slower (the throttle: the only input that moves it;
  * a press steps it a tenth at once, held it goes on: ./assist.ts throttleStep; no Ctrl, which with W
  * closes the browser's tab);
  * C: camera (chase / cockpit); P pause, N step, R reset.
- * Touch: a stick under the scene (up climbs, sideways banks), buttons for speed, rudder and camera.
+ * Touch: a stick under the scene (up climbs, sideways banks; a dead zone, a gentle centre and smoothing:
+ * ./assist.ts stickResponse, smoothStick), buttons for speed, rudder and camera.
+ * A crash flashes the scene and draws a fireball, flung pieces and smoke (./crash.ts), then its card.
  * Sound: the engine follows the throttle; chimes for rings, a low tone for a miss, a stall horn,
  * a ground warning and the crash.
  * URL: ?seed=n, ?rings=n (1..30), ?assist=0.
@@ -56,7 +59,6 @@ import { AIRCRAFT, type AircraftHandles, aircraft, aircraftLevelDrag, terrainHei
 import {
   DoubleSide,
   HemisphereLight,
-  IcosahedronGeometry,
   InstancedMesh,
   Matrix4,
   Mesh,
@@ -77,9 +79,12 @@ import {
   createAssistState,
   type FlightState,
   flightState,
+  floorPath,
+  GROUND_FLOOR,
   heldBank,
   rampKey,
   SURFACE_RATE,
+  smoothStick,
   stickResponse,
   THROTTLE_KEY,
   throttleStep,
@@ -112,6 +117,7 @@ import {
   ringBearing,
   ringWay,
 } from './course';
+import { createCrash } from './crash';
 import { createScenery, HORIZON_COLOUR, SUN_DIRECTION } from './scenery';
 
 const params = {
@@ -133,6 +139,15 @@ const START_SPEED = 130;
 /** Sea level of the scenery, m: below it is water, which ends the flight as the ground does. */
 const SEA_LEVEL = 60;
 
+/** The cue said while the assist's ground floor holds the aircraft up against a held dive (./assist.ts GROUND_FLOOR). */
+const FLOOR_CUE = 'ASSIST HOLDS YOU UP';
+/** How long the floor's cue stays after the floor last held the aircraft up, s of game time (it does not flicker). */
+const FLOOR_CUE_TIME = 1;
+/** Game time the ground floor last held the aircraft up, s. */
+let floorHeldAt = -Infinity;
+/** The ground's (or the sea's) height at (x, z), m: what ends the flight, and what the floor keeps above. */
+const groundAt = (x: number, z: number): number => Math.max(SEA_LEVEL, terrainHeight(handles.terrain, x, z));
+
 /** Controls and game state beside the physics. */
 const state = {
   /** Throttle, fraction of the largest thrust, [0, 1]: moved only by Faster / Slower. */
@@ -150,8 +165,8 @@ const state = {
   time: 0,
   camera: 'chase' as 'chase' | 'cockpit',
   stalled: false,
-  /** Warnings shown now: the wing near or past the stall, the ground coming up fast. */
-  warning: '' as '' | 'STALL' | 'PULL UP',
+  /** Warnings shown now: the wing near or past the stall, the ground coming up fast, the assist holding the aircraft above the ground. */
+  warning: '' as '' | 'STALL' | 'PULL UP' | typeof FLOOR_CUE,
 };
 let handles!: AircraftHandles;
 let rings: Ring[] = [];
@@ -174,6 +189,7 @@ function createWorld(): PhysicsWorld {
   });
   Object.assign(assistState, createAssistState());
   keyInput.pitch = keyInput.roll = 0;
+  stickFlown.x = stickFlown.y = 0;
   rings = layCourse({ terrain: handles.terrain, seed: params.seed + 7, count: params.rings, start: [0, START_ALTITUDE, 0] });
   events.length = 0;
   doneAt.clear();
@@ -182,6 +198,7 @@ function createWorld(): PhysicsWorld {
   promise.at = -Infinity;
   missedAt = -Infinity;
   crashReadings = null;
+  floorHeldAt = -Infinity;
   awayFor = 0;
   // Where the aircraft is now (the marker, the ring's distance), before the first step.
   const P = world.components.Position,
@@ -256,8 +273,10 @@ let throttleShownAt = -Infinity;
  * the frame rate.
  */
 let bankTrace: [number, number, number, number][] | null = null;
-/** The on-screen stick's deflection (x right, y up, in [-1, 1]). */
+/** The on-screen stick's input (x right, y up, in [-1, 1]): its deflection through ./assist.ts stickResponse. */
 const stickInput = { x: 0, y: 0 };
+/** The stick's input as the steps fly it: `stickInput` smoothed step by step (./assist.ts smoothStick). */
+const stickFlown = { x: 0, y: 0 };
 /** The climb / dive and bank keys (./assist.ts rampKey ramps them step by step). */
 const AXIS_KEYS = new Set(['arrowup', 'arrowdown', 'arrowleft', 'arrowright', 'w', 's', 'a', 'd']);
 /**
@@ -340,6 +359,8 @@ function rampKeys(dt: number): void {
     left = k.has('arrowleft') || k.has('a') ? 1 : 0;
   keyInput.pitch = rampKey(keyInput.pitch, up - down, dt);
   keyInput.roll = rampKey(keyInput.roll, right - left, dt, BANK_KEY_RAMP);
+  stickFlown.x = smoothStick(stickFlown.x, stickInput.x, dt);
+  stickFlown.y = smoothStick(stickFlown.y, stickInput.y, dt);
 }
 
 /** The pilot's inputs now, keys (ramped) and stick added: roll + right, pitch + nose up, yaw + nose right. */
@@ -347,8 +368,8 @@ function pilotInput(): { roll: number; pitch: number; yaw: number } {
   // Up climbs, as most players expect; with the pilot's pitch, down (stick back) pulls up.
   const sign = params.pilotPitch ? -1 : 1;
   return {
-    roll: clamp1(keyInput.roll + stickInput.x),
-    pitch: clamp1(sign * (keyInput.pitch + stickInput.y)),
+    roll: clamp1(keyInput.roll + stickFlown.x),
+    pitch: clamp1(sign * (keyInput.pitch + stickFlown.y)),
     yaw: (held.has('e') ? 1 : 0) - (held.has('q') ? 1 : 0),
   };
 }
@@ -389,7 +410,12 @@ function stepWorld(world: PhysicsWorld): void {
   const faster = ramping && [...FASTER_KEYS].some((k) => held.has(k)),
     slower = ramping && [...SLOWER_KEYS].some((k) => held.has(k));
   if (params.assist) {
-    const c = assist(s, input, assistState, dt);
+    // The ground floor: a held dive goes down to GROUND_FLOOR.height over the ground and levels there.
+    const V = world.components.Velocity,
+      P0 = world.components.Position;
+    const floor = floorPath([P0.x[e]!, P0.y[e]!, P0.z[e]!], [V.x[e]!, V.y[e]!, V.z[e]!], groundAt);
+    const c = assist(s, input, assistState, dt, floor);
+    if (assistState.floorHold) floorHeldAt = world.time;
     state.aileron = approach(state.aileron, c.aileron, SURFACE_RATE.assist, dt);
     state.elevator = approach(state.elevator, c.elevator, SURFACE_RATE.assist, dt);
     state.rudder = approach(state.rudder, c.rudder, SURFACE_RATE.assist, dt);
@@ -407,9 +433,11 @@ function stepWorld(world: PhysicsWorld): void {
   const surfaces = handles.surfaces;
   // Nose up: the elevator's trailing edge up, less tail lift.
   setControlDeflection(world, surfaces.tail, -state.elevator * full);
-  // Roll right: the left aileron down (more lift), the right one up.
-  setControlDeflection(world, surfaces.leftWing, state.aileron * full * AILERON_SCALE);
-  setControlDeflection(world, surfaces.rightWing, -state.aileron * full * AILERON_SCALE);
+  // Roll right: the left aileron down (more lift), the right one up; never past the 45 degrees a
+  // surface takes (the panel's authority goes to 30 degrees, times AILERON_SCALE).
+  const aileron = Math.max(-Math.PI / 4, Math.min(Math.PI / 4, state.aileron * full * AILERON_SCALE));
+  setControlDeflection(world, surfaces.leftWing, aileron);
+  setControlDeflection(world, surfaces.rightWing, -aileron);
   // Right rudder: the fin's force to the left at the tail swings the nose right.
   setControlDeflection(world, surfaces.fin, -state.rudder * full);
   setBodyThrust(world, e, [state.throttle * AIRCRAFT.maxThrust, 0, 0]);
@@ -426,27 +454,36 @@ function stepWorld(world: PhysicsWorld): void {
     timeAway(world, dt);
     checkRings(world.time);
   }
-  const ground = Math.max(SEA_LEVEL, terrainHeight(handles.terrain, now[0]!, now[2]!));
+  const ground = groundAt(now[0]!, now[2]!);
   if (now[1]! < ground + 2) {
     // The readouts stop at the values of the moment of the crash.
     crashReadings = instruments(world);
+    crashWall = performance.now();
+    crashInto = terrainHeight(handles.terrain, now[0]!, now[2]!) < SEA_LEVEL ? 'sea' : 'ground';
     state.phase = 'crashed';
     state.warning = '';
     sound.explosion(1);
+    // The kit's card of touch gestures, if still up, goes: the crash's card and its button take the scene.
+    layout.stage.querySelector('.bp-touch-hint')?.classList.add('bp-gone');
     events.push({ text: 'Crashed!', colour: '#ff6b5a', time: world.time });
     return;
   }
   // Warnings: the wing within 3 degrees of the stall, or the ground less than 8 s away at this sink rate.
   const after = flightState(world, e);
-  if (bankTrace) bankTrace.push([world.time, (after.bank * 180) / Math.PI, keyInput.roll, stickInput.x]);
+  if (bankTrace) bankTrace.push([world.time, (after.bank * 180) / Math.PI, keyInput.roll, stickFlown.x]);
   motion.bank = after.bank;
   motion.rollRate = after.rollRate;
   motion.pathRate = (after.path - s.path) / dt;
   state.stalled = Math.abs(after.alpha) > AIRCRAFT.stallAngle;
   const sink = -world.components.Velocity.y[e]!;
   const agl = now[1]! - ground;
-  state.warning = Math.abs(after.alpha) > AIRCRAFT.stallAngle - (3 * Math.PI) / 180 ? 'STALL' : sink > 0 && agl < sink * 8 ? 'PULL UP' : '';
-  if (state.warning && world.time - lastBeep > 0.45) {
+  // With the assist the floor holds the aircraft up (said by its own cue while it does); PULL UP only
+  // if it is let down under half the floor's height all the same (a hill too steep to climb).
+  const sinking = sink > 0 && agl < sink * 8 && (!params.assist || agl < GROUND_FLOOR.height / 2);
+  const holdingUp = params.assist && world.time - floorHeldAt < FLOOR_CUE_TIME;
+  state.warning =
+    Math.abs(after.alpha) > AIRCRAFT.stallAngle - (3 * Math.PI) / 180 ? 'STALL' : sinking ? 'PULL UP' : holdingUp ? FLOOR_CUE : '';
+  if ((state.warning === 'STALL' || state.warning === 'PULL UP') && world.time - lastBeep > 0.45) {
     lastBeep = world.time;
     sound.chime(state.warning === 'STALL' ? 1250 : 660, 0.12);
   }
@@ -522,6 +559,11 @@ function checkRings(time: number): void {
 }
 /** Game time of the last miss, s (the clock flashes for a while after it). */
 let missedAt = -Infinity;
+/** When the aircraft crashed, ms (performance.now), and what it hit. */
+let crashWall = Number.NaN,
+  crashInto: 'ground' | 'sea' = 'ground';
+/** How long after a crash its card shows, ms (the flash and the fireball first). */
+const CRASH_CARD_MS = 900;
 /** The instruments read at the moment of the crash (the readouts then stay at them), or null. */
 let crashReadings: ReturnType<typeof instruments> | null = null;
 /** How long the next ring has fallen behind without a break, s (./course.ts leaveBehind). */
@@ -791,62 +833,36 @@ function paintRings(t: number): void {
   }
 }
 
-// ---- The crash: a fireball and smoke where the aircraft hit (drawing only) ----------------------
+// ---- The crash: a flash, a fireball, pieces and smoke where the aircraft hit (./crash.ts) ---------
 
-const fireball = new Mesh(
-  new IcosahedronGeometry(1, 2),
-  new MeshBasicMaterial({ color: 0xffa030, transparent: true, fog: false, depthWrite: false }),
-);
-const smoke = Array.from(
-  { length: 6 },
-  () => new Mesh(new IcosahedronGeometry(1, 1), new MeshBasicMaterial({ color: 0x3a3530, transparent: true })),
-);
-fireball.visible = false;
-for (const m of smoke) m.visible = false;
-app.scene.add(fireball, ...smoke);
 /** When the crash was seen, ms (performance.now), or NaN while flying; the heading then, rad (+x 0, +z pi/2). */
 let crashedAt = Number.NaN,
   crashHeading = 0;
 
-/** Grows the fireball (1.5 s, yellow to red) and lets the smoke rise and fade (6 s) from the crash point. */
+/** Starts the crash's drawing (./crash.ts) at the drawn aircraft on the first frame after it, and draws it; hides it while flying. */
 function drawCrash(): void {
   if (state.phase !== 'crashed') {
+    if (!Number.isNaN(crashedAt)) crash.hide();
     crashedAt = Number.NaN;
-    fireball.visible = false;
-    for (const m of smoke) m.visible = false;
     planeMaterial.visible = true;
     return;
   }
   if (Number.isNaN(crashedAt)) {
     crashedAt = performance.now();
-    // Lifted clear of the drawn ground, whose flat cells can stand above the true surface.
-    fireball.position.copy(at).setY(at.y + 15);
+    const V = shell.world.components.Velocity,
+      e = handles.body;
+    crash.start(at, [V.x[e]!, V.y[e]!, V.z[e]!], groundAt, crashedAt);
     crashHeading = flightState(shell.world, handles.body).heading;
   }
   planeMaterial.visible = false;
-  const u = (performance.now() - crashedAt) / 1000;
-  fireball.visible = u < 1.5;
-  fireball.scale.setScalar(12 + 50 * Math.min(1, u / 0.8));
-  const fire = fireball.material as MeshBasicMaterial;
-  fire.color.setHSL(0.13 - 0.1 * Math.min(1, u / 1.5), 1, 0.6);
-  fire.opacity = Math.max(0, 1 - u / 1.5);
-  smoke.forEach((m, k) => {
-    const v = Math.max(0, u - 0.3 - 0.25 * k) / 6;
-    m.visible = v > 0 && v < 1;
-    m.position.set(
-      fireball.position.x + 10 * Math.cos(2.4 * k),
-      fireball.position.y + 10 + 160 * v,
-      fireball.position.z + 10 * Math.sin(2.4 * k),
-    );
-    m.scale.setScalar(16 + 60 * v);
-    (m.material as MeshBasicMaterial).opacity = 0.6 * (1 - v);
-  });
+  crash.update(performance.now());
 }
 
 // ---- HUD: the goal and readout above the scene, instruments beside it, banner, warnings, end card ---
 
 const layout = pageLayout();
 const compact = layout.compact();
+const crash = createCrash(app.scene, layout.stage);
 const statusEl = document.createElement('div');
 statusEl.dataset.hud = 'flight-status';
 statusEl.style.cssText = `font: ${compact ? 13 : 14}px/1.4 system-ui, sans-serif; color: #eef3f8; padding: 4px 10px;`;
@@ -984,10 +1000,12 @@ function updateHud(i: ReturnType<typeof instruments>): void {
     if (panelEl.textContent !== text) panelEl.textContent = text;
   }
   // The end card and its button (built again only when what it says changes).
-  const card = state.phase === 'flying' ? '' : `${state.phase} ${state.score} ${state.missed} ${state.time} ${lastVsBest}`;
+  // After a crash the card waits CRASH_CARD_MS, so that the explosion is seen first.
+  const waiting = state.phase === 'crashed' && performance.now() - crashWall < CRASH_CARD_MS;
+  const card = state.phase === 'flying' || waiting ? '' : `${state.phase} ${state.score} ${state.missed} ${state.time} ${lastVsBest}`;
   if (card === shownCard) return;
   shownCard = card;
-  if (state.phase === 'flying') {
+  if (card === '') {
     endCard.style.display = 'none';
     showAgain(false);
   } else {
@@ -997,12 +1015,14 @@ function updateHud(i: ReturnType<typeof instruments>): void {
     endCard.style.display = 'block';
     endCard.replaceChildren();
     const title = document.createElement('div');
-    title.style.cssText = `font: 800 24px system-ui, sans-serif; color: ${state.phase === 'crashed' ? '#ff8a7a' : '#ffd166'};`;
-    title.textContent = state.phase === 'crashed' ? 'Crashed!' : state.score === total ? 'Course complete!' : 'Course over';
+    const crashed = state.phase === 'crashed';
+    title.style.cssText = `font: 900 ${crashed ? 32 : 24}px system-ui, sans-serif; color: ${crashed ? '#ff6b5a' : '#ffd166'};${crashed ? ' letter-spacing: 1px;' : ''}`;
+    title.textContent = crashed ? 'Crashed!' : state.score === total ? 'Course complete!' : 'Course over';
+    endCard.style.border = crashed ? '2px solid #ff6b5a' : 'none';
     const line = document.createElement('div');
     line.textContent =
-      state.phase === 'crashed'
-        ? `${state.score} of ${total} rings before the crash.`
+      crashed && crashReadings
+        ? `You hit the ${crashInto} at ${crashReadings.speed.toFixed(0)} m/s · ${state.score} of ${total} rings.`
         : `${state.score} of ${total} rings in ${clock(courseTime(state.time, state.missed))}${
             state.missed > 0 ? ` (${clock(state.time)} flown + ${MISS_PENALTY * state.missed} s for ${state.missed} missed)` : ''
           }  ${starText}`;
@@ -1015,7 +1035,10 @@ function updateHud(i: ReturnType<typeof instruments>): void {
           ? 'Your first run on this course: the result to beat next time.'
           : best
             ? `Best: ${best.passed} of ${total} rings in ${clock(best.time)}`
-            : 'Watch the height above ground: alt counts from sea level, and the hills reach 700 m.';
+            : // A phone's readout gives only the height above the ground, not the sea-level "alt".
+              compact
+              ? 'Watch the height above ground: the hills reach 700 m.'
+              : 'Watch the height above ground: alt counts from sea level, and the hills reach 700 m.';
     endCard.append(title, line, bestLine);
     showAgain(true, state.phase === 'crashed' ? 'Try again ↺' : 'Fly again ▶');
   }
@@ -1051,8 +1074,12 @@ function showWarning(t: number): void {
   const warned = state.warning !== '' && state.phase === 'flying';
   const display = warned ? 'block' : 'none';
   if (warningEl.style.display !== display) warningEl.style.display = display;
-  const visibility = Math.floor(t * 3) % 2 === 0 ? 'visible' : 'hidden';
+  // The floor's cue is steady and amber (the assist has it in hand); the warnings flash red.
+  const cue = state.warning === FLOOR_CUE;
+  const visibility = cue || Math.floor(t * 3) % 2 === 0 ? 'visible' : 'hidden';
   if (warningEl.style.visibility !== visibility) warningEl.style.visibility = visibility;
+  const background = cue ? 'rgba(150, 95, 0, 0.92)' : 'rgba(120, 10, 10, 0.92)';
+  if (warningEl.style.background !== background) warningEl.style.background = background;
   if (warningEl.textContent !== state.warning) warningEl.textContent = state.warning;
 }
 
@@ -1555,7 +1582,7 @@ function markPath(): void {
     i >= 0 && state.phase === 'flying'
       ? predictThroughRing(
           rings[i]!,
-          { position: now, velocity: [V.x[e]!, V.y[e]!, V.z[e]!], ...motion, held: heldBank(assistState, motion) },
+          { position: now, velocity: [V.x[e]!, V.y[e]!, V.z[e]!], ...motion, held: heldBank(assistState) },
           params.assist,
         )
       : null;
@@ -1667,14 +1694,25 @@ function frame(alpha = 1): void {
   drawnQ.set(q4[0]!, q4[1]!, q4[2]!, q4[3]!);
   if (state.phase === 'crashed' && !Number.isNaN(crashedAt)) {
     // After a crash: a slow circle round the crash point, well above the ground.
-    const u = (performance.now() - crashedAt) / 1000,
-      a = crashHeading + Math.PI + 0.12 * u;
-    const cx = fireball.position.x + 160 * Math.cos(a),
-      cz = fireball.position.z + 160 * Math.sin(a);
+    // It starts closer and draws back as the smoke rises; the view shakes for a moment at first;
+    // the crash sits low in the view, under the end card, with the smoke column over it.
+    const wall = performance.now();
+    const u = (wall - crashedAt) / 1000,
+      a = crashHeading + Math.PI + 0.12 * u,
+      far = 170 - 60 * Math.exp(-u / 1.5);
+    const centre = crash.centre;
+    const cx = centre.x + far * Math.cos(a),
+      cz = centre.z + far * Math.sin(a);
     chaseDistance = 0;
-    app.camera.position.set(cx, Math.max(terrainHeight(handles.terrain, cx, cz) + 60, fireball.position.y + 90), cz);
+    const jolt = crash.shake(wall);
+    app.camera.position.set(
+      cx + jolt * Math.sin(wall * 0.09),
+      Math.max(terrainHeight(handles.terrain, cx, cz) + 60, centre.y + 70) + jolt * Math.sin(wall * 0.13),
+      cz,
+    );
     app.camera.up.set(0, 1, 0);
-    app.camera.lookAt(fireball.position);
+    look.copy(centre).y += 45;
+    app.camera.lookAt(look);
   } else if (state.camera === 'chase') {
     // Behind and above the aircraft in its own frame. The offset from the aircraft (not the eye's
     // place in the world) swings round smoothly and keeps its length, so in a turn the camera stays
@@ -1684,8 +1722,19 @@ function frame(alpha = 1): void {
     // does not swing the camera sideways (with the aircraft's up, the look point swung to the side
     // of the bank at once while the camera lagged, so the scene and the path marker first slid the
     // wrong way, 34 px at 1280 x 800, and a turn showed late).
+    // The nose's pitch, but the flight path's heading: as a bank starts, the rudder swings the nose
+    // into the turn before the path turns (about 3 degrees in 0.4 s), and a camera that followed the
+    // nose slid the scene and the path marker the wrong way first (9 px at 1280 x 800).
     const [back, up] = chaseOffsetNow();
     nose.set(1, 0, 0).applyQuaternion(drawnQ);
+    const V = world.components.Velocity,
+      e = handles.body;
+    const level = Math.hypot(nose.x, nose.z),
+      track = Math.hypot(V.x[e]!, V.z[e]!);
+    if (track > 1 && level > 1e-6) {
+      nose.x = (level * V.x[e]!) / track;
+      nose.z = (level * V.z[e]!) / track;
+    }
     chaseOffset.copy(nose).multiplyScalar(back).y += up;
     // Its length is the offset's whatever the pitch (the sum of the two is not).
     chaseOffset.setLength(Math.hypot(back, up));
@@ -1778,7 +1827,8 @@ createStick({
     const r = stickResponse(x, y);
     stickInput.x = r.x;
     stickInput.y = r.y;
-    if (r.x !== 0 || r.y !== 0) pilotGoes();
+    // Any touch goes on from a wait, even one inside the dead zone.
+    if (x !== 0 || y !== 0) pilotGoes();
   },
 });
 createButtonBar(

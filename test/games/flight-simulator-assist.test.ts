@@ -20,11 +20,17 @@ import {
   createAssistState,
   type FlightState,
   flightState,
+  floorPath,
+  GROUND_FLOOR,
   heldBank,
   KEY_RAMP,
   type PilotInput,
   rampKey,
+  STICK_AXIS_SNAP,
+  STICK_DEAD_ZONE,
+  STICK_SMOOTHING,
   SURFACE_RATE,
+  smoothStick,
   stickResponse,
   throttleStep,
 } from '../../games/flight-simulator/assist';
@@ -166,100 +172,123 @@ describe('flight assist', () => {
     return out;
   }
 
-  it('steering: a held key turns half round within 14 s; a 150 ms tap turns over a degree and a half; let go at a heading, the turn runs on under 4 degrees', () => {
-    // Strangers took 35 s for a half turn with the 45 degree full bank (measured 38 s from 130 m/s)
-    // and a tap turned 0.1 degrees (the wings levelled at once): now 13 s and 2.4 degrees.
+  it('steering: a held key turns half round within 14 s; a 150 ms tap turns under 2 degrees; let go at a heading, the turn runs on under 4 degrees', () => {
+    // Strangers took 35 s for a half turn with the 45 degree full bank (measured 38 s from 130 m/s):
+    // now 12.9 s. A tap is a small correction (measured 0.8 degrees); it held its bank for 1.1 s and
+    // turned 3 degrees, and strangers found the aircraft stayed banked after the key was let go.
     const half = bankKey((_, turned) => turned < 180, 20).findIndex((x) => x >= 180);
     expect(half).toBeGreaterThan(0);
     expect(half / 60).toBeLessThan(14);
     const tap = bankKey((t) => t < 0.15, 8);
-    expect(tap[tap.length - 1]).toBeGreaterThan(1.5);
-    expect(tap[tap.length - 1]).toBeLessThan(5);
+    expect(tap[tap.length - 1]).toBeGreaterThan(0.3);
+    expect(tap[tap.length - 1]).toBeLessThan(2);
     for (const target of [30, 90]) {
       let released = false;
       const run = bankKey((_, turned) => !(released ||= turned >= target), 25);
-      expect(run[run.length - 1]! - target, `${target}`).toBeLessThan(4);
-      expect(run[run.length - 1]! - target, `${target}`).toBeGreaterThan(0);
+      expect(Math.abs(run[run.length - 1]! - target), `${target}`).toBeLessThan(4);
     }
   });
 
-  it('a touch let go holds a bank a moment: a tap the one it asked for (at most tapBank) until tapTime; a longer one less for less time, nothing from holdFade', () => {
-    /** The assist's state after full stick right for `held` s in a bank of `bank` rad rolling at `rate` rad/s, then `after` s let go (steps of 1/60 s). */
-    const touch = (held: number, after: number, bank = 0, rate = 0) => {
-      const s: FlightState = {
-        speed: 110,
-        bank,
-        pitch: 0,
-        path: 0,
-        heading: 0,
-        alpha: 0,
-        sideslip: 0,
-        rollRate: rate,
-        pitchRate: 0,
-        yawRate: 0,
-      };
-      const state = createAssistState();
-      for (let i = 0; i < Math.round(held * 60); i++) assist(s, { roll: 1, pitch: 0, yaw: 0 }, state, 1 / 60);
-      const before = heldBank(state, s);
-      for (let i = 0; i < Math.round(after * 60); i++) assist(s, { roll: 0, pitch: 0, yaw: 0 }, state, 1 / 60);
-      return { before, after: heldBank(state, s), target: state.bankTarget };
-    };
-    // A 0.2 s touch is a tap: let go, the bank it asked for (at most ASSIST.tapBank) is held until
-    // the touch is ASSIST.tapTime old.
-    const tap = touch(0.2, 0.3);
-    expect(tap.before.bank).toBeCloseTo(ASSIST.tapBank, 12);
-    expect(tap.after.bank).toBeCloseTo(ASSIST.tapBank, 12);
-    expect(tap.after.time).toBeCloseTo(ASSIST.tapTime - 0.5, 6);
-    // Held 0.5 s in a 40 degree bank still rolling in at 1 rad/s: the bank where the roll stops
-    // (never the 70 the stick asked for: no roll on), for less time than a tap; what heldBank
-    // said before the release is what is held.
-    // The touch is let go at the step that finds the stick centred: 0.5 s and one step old.
-    const share = (ASSIST.holdFade - (0.5 + 1 / 60)) / (ASSIST.holdFade - ASSIST.tapLength);
-    const h = touch(0.5, 0.1, 40 * DEG, 1);
-    expect(h.after.bank).toBeCloseTo(40 * DEG - ASSIST.rollLead, 9);
-    expect(h.after.bank).toBeCloseTo(h.before.bank, 9);
-    // (within two steps: the touch's age is counted in steps of 1/60 s)
-    expect(Math.abs(h.after.time - (share * (ASSIST.tapTime - ASSIST.tapLength) - 0.1))).toBeLessThan(1 / 30);
-    expect(h.target).toBeLessThanOrEqual(40 * DEG);
-    // In a 10 degree bank: the share of a tap's bank.
-    expect(touch(0.5, 0.1, 10 * DEG).after.bank).toBeCloseTo(share * ASSIST.tapBank, 9);
-    // Held ASSIST.holdFade or longer: nothing is held; the bank asked for unwinds at ASSIST.bankRate
-    // from the bank the aircraft has (50 degrees, short of the 70 asked for).
-    const late = touch(ASSIST.holdFade + 0.05, 0, 50 * DEG);
-    expect(late.before).toEqual({ bank: 0, time: 0 });
-    expect(touch(ASSIST.holdFade + 0.05, 1 / 60, 50 * DEG).target).toBeCloseTo(Math.min(late.target, 50 * DEG) - ASSIST.bankRate / 60, 9);
-    // Flown: the heading a touch turns grows with its length, never less by more than 0.5 degrees
-    // for a longer one (a 0.4 s hold turned 1.5 degrees, under half a 250 ms tap's 3.3, when only a
-    // tap held its bank; measured now 3.0 against 3.4), and a 0.5 s hold stays a small turn (4.2).
-    const lengths = [0.1, 0.15, 0.25, 0.4, 0.5, 0.6, 0.8, 1, 1.5];
-    const turned = lengths.map((t) => {
-      const r = bankKey((time) => time < t, 12);
-      return r[r.length - 1]!;
-    });
+  it('let go, the wings roll level at once: 1 s after a release of the bank key (0.15 to 2 s held) the bank is under 3 degrees; the heading turned grows with the hold', () => {
+    // A tap held its bank until it was 1.1 s old and a touch up to 0.9 s held part of it: a 150 ms
+    // tap was still 28 degrees banked 1 s after the release, a 0.5 s hold 38 degrees 0.5 s after
+    // (scripts/flight-simulator-steering.mjs). Measured now: 0.1, 0.4, 0.8 and 1.1 degrees.
+    const lengths = [0.15, 0.25, 0.5, 1, 2];
+    const turned: number[] = [];
+    for (const hold of lengths) {
+      const f = start();
+      const throttle = aircraftLevelDrag(130) / AIRCRAFT.maxThrust;
+      const h0 = flightState(f.world, f.h.body).heading;
+      let key = 0;
+      const n = Math.round((hold + 1) * 60);
+      for (let i = 0; i < n; i++) {
+        key = rampKey(key, i < hold * 60 ? 1 : 0, 1 / 60, BANK_KEY_RAMP);
+        fly(f, { roll: key }, 1 / 60, { throttle });
+      }
+      const s = flightState(f.world, f.h.body);
+      expect(Math.abs(s.bank), `${hold} s`).toBeLessThan(3 * DEG);
+      turned.push((s.heading - h0) / DEG);
+    }
     const said = turned.map((x, i) => `${lengths[i]} s: ${x.toFixed(1)}`).join(', ');
-    for (let i = 1; i < turned.length; i++) expect(turned[i]!, said).toBeGreaterThan(Math.max(...turned.slice(0, i)) - 0.5);
-    expect(turned[4], said).toBeLessThan(6);
-    expect(turned[0], said).toBeGreaterThan(2.5);
-    expect(turned[6], said).toBeGreaterThan(turned[2]! + 2);
+    for (let i = 1; i < turned.length; i++) expect(turned[i]!, said).toBeGreaterThan(turned[i - 1]!);
   });
 
-  it('the phone stick is progressive: nothing in the dead zone, gentle near the centre, full at the rim, its direction kept', () => {
-    expect(stickResponse(0.04, 0)).toEqual({ x: 0, y: 0 });
+  it('a tap let go holds its bank (at most tapBank) until it is tapTime old; a touch let go later, or eased off, holds nothing', () => {
+    const s: FlightState = {
+      speed: 110,
+      bank: 0,
+      pitch: 0,
+      path: 0,
+      heading: 0,
+      alpha: 0,
+      sideslip: 0,
+      rollRate: 0,
+      pitchRate: 0,
+      yawRate: 0,
+    };
+    /** The assist's state after stick `roll` for `held` s, then `then` for `after` s (steps of 1/60 s). */
+    const touch = (roll: number, held: number, then: number, after: number) => {
+      const state = createAssistState();
+      for (let i = 0; i < Math.round(held * 60); i++) assist(s, { roll, pitch: 0, yaw: 0 }, state, 1 / 60);
+      for (let i = 0; i < Math.round(after * 60); i++) assist(s, { roll: then, pitch: 0, yaw: 0 }, state, 1 / 60);
+      return { held: heldBank(state), target: state.bankTarget };
+    };
+    // A 0.1 s tap of full stick: the bank held is tapBank, for the rest of tapTime from the touch.
+    const tap = touch(1, 0.1, 0, 0.1);
+    expect(tap.held.bank).toBeCloseTo(ASSIST.tapBank, 12);
+    expect(tap.held.time).toBeCloseTo(ASSIST.tapTime - 0.2, 6);
+    // A small tap holds its own bank, less than tapBank.
+    expect(touch(0.2, 0.1, 0, 0.05).held.bank).toBeCloseTo(0.2 * ASSIST.maxBank, 12);
+    // Once tapTime old, nothing is held and the bank asked for unwinds.
+    expect(touch(1, 0.1, 0, ASSIST.tapTime).held).toEqual({ bank: 0, time: 0 });
+    // Let go after tapTime: nothing held, the bank asked for falls at bankRate at once.
+    const late = touch(1, ASSIST.tapTime + 0.1, 0, 1 / 60);
+    expect(late.held).toEqual({ bank: 0, time: 0 });
+    // Eased off to half: the stick's half bank is asked for, not the peak (within one step's bankRate).
+    const eased = touch(1, 2, 0.5, 1);
+    expect(eased.target).toBeCloseTo(0.5 * ASSIST.maxBank, 12);
+    expect(eased.held).toEqual({ bank: 0, time: 0 });
+  });
+
+  it('the phone stick is progressive: nothing in the dead zone, gentle near the centre, full at the rim, its direction kept, a wander off its axis dropped', () => {
+    expect(stickResponse(STICK_DEAD_ZONE - 0.01, 0)).toEqual({ x: 0, y: 0 });
     expect(stickResponse(0, 0)).toEqual({ x: 0, y: 0 });
     const at = (d: number) => stickResponse(d, 0).x;
     expect(at(1)).toBeCloseTo(1, 12);
-    // Half a push asks for under a third of full (linear: half), a tenth for about a hundredth.
-    expect(at(0.5)).toBeLessThan(0.3);
-    expect(at(0.5)).toBeGreaterThan(0.2);
-    expect(at(0.1)).toBeLessThan(0.02);
-    expect(at(0.1)).toBeGreaterThan(0);
+    // Half a push asks for a fifth of full (linear: half; the stranger found 0.3 twitchy), a fifth
+    // of a push for about a hundredth.
+    expect(at(0.5)).toBeLessThan(0.22);
+    expect(at(0.5)).toBeGreaterThan(0.12);
+    expect(at(0.2)).toBeLessThan(0.01);
+    expect(at(0.2)).toBeGreaterThan(0);
     // Growing with the push, never falling.
-    for (let d = 0.06; d < 1; d += 0.02) expect(at(d + 0.02)).toBeGreaterThan(at(d));
+    for (let d = STICK_DEAD_ZONE + 0.01; d < 1; d += 0.02) expect(at(d + 0.02)).toBeGreaterThan(at(d));
     // Diagonal: the direction is kept, and beyond the rim it is full.
     const diag = stickResponse(0.6, -0.6);
     expect(diag.x).toBeCloseTo(-diag.y, 12);
     expect(Math.hypot(stickResponse(1, 1).x, stickResponse(1, 1).y)).toBeCloseTo(1, 12);
+    // Pushed sideways with a wander up under STICK_AXIS_SNAP of it: a bank alone, the push's full size.
+    const wander = stickResponse(0.8, 0.8 * STICK_AXIS_SNAP * 0.9);
+    expect(wander.y).toBe(0);
+    expect(wander.x).toBeCloseTo(stickResponse(Math.hypot(0.8, 0.8 * STICK_AXIS_SNAP * 0.9), 0).x, 12);
     expect(() => stickResponse(Number.NaN, 0)).toThrow(/stickResponse: x and y must be finite/);
+  });
+
+  it('the phone stick is smoothed: a jump to full eases in over STICK_SMOOTHING.push, a release falls back over the shorter ease, to 0 exactly', () => {
+    /** The smoothed input after `seconds` at 60 steps a second towards `target` from `value`. */
+    const run = (value: number, target: number, seconds: number): number => {
+      for (let i = 0; i < Math.round(seconds * 60); i++) value = smoothStick(value, target, 1 / 60);
+      return value;
+    };
+    // The closed form 1 - e^(-t / tau), to the 1e-3 snap.
+    expect(run(0, 1, 0.1)).toBeCloseTo(1 - Math.exp(-0.1 / STICK_SMOOTHING.push), 9);
+    expect(run(0, -1, 0.1)).toBeCloseTo(-(1 - Math.exp(-0.1 / STICK_SMOOTHING.push)), 9);
+    expect(run(1, 0, 0.05)).toBeCloseTo(Math.exp(-0.05 / STICK_SMOOTHING.ease), 9);
+    // Released: at 0 exactly within a third of a second; a reversal falls at the shorter ease first.
+    expect(run(1, 0, 0.35)).toBe(0);
+    expect(run(0.8, -0.8, 1 / 60)).toBeCloseTo(0.8 - 1.6 * (1 - Math.exp(-1 / 60 / STICK_SMOOTHING.ease)), 9);
+    expect(() => smoothStick(2, 0, 0.1)).toThrow(/smoothStick: value and target must be in \[-1, 1\], got 2, 0/);
+    expect(() => smoothStick(0, 0, -1)).toThrow(/smoothStick: dt must be >= 0 s, got -1/);
   });
 
   it('full stick back: climbs past 17 degrees within 3 s, never past the 45 degree path (no loop); at idle it slows but does not stall', () => {
@@ -442,7 +471,7 @@ describe('the flight-path marker (course.ts predictThroughRing) against the flow
             bank: after.bank,
             rollRate: after.rollRate,
             pathRate: (after.path - s.path) / dt,
-            held: heldBank(f.state, after),
+            held: heldBank(f.state),
           },
           true,
         ).point;
@@ -459,13 +488,15 @@ describe('the flight-path marker (course.ts predictThroughRing) against the flow
     return { predicted: gap(guess), straight: gap(line), runOn: flightState(f.world, f.h.body).heading - headingAtRelease };
   }
 
-  it('a turn let go: the marker is within 16 m of where the aircraft crosses a ring 300 to 1,000 m on (measured 15.0 at most); the straight line missed by up to 160 m', () => {
+  it('a turn let go: the marker is within 16 m of where the aircraft crosses a ring 300 to 1,000 m on (measured 11.0 at most); the straight line missed by up to 160 m', () => {
     // With the 45 degree full bank it was within 5 m (measured under 3); the turn is three times as
     // fast now and a key let go within ASSIST.tapTime holds its bank a moment (heldBank). Since the
     // wings roll back to level at once on the release (the turn stops within a degree of where it was
     // let go), LET_GO's roll-out model is fitted less closely: the worst case (let go after 0.8 s or
     // 1.5 s, 1,000 m on) is 15 m, under a quarter of the ring's radius (it was 6 m with the slower
-    // roll-out, which ran the turn on 2 to 3 degrees past the release).
+    // roll-out, which ran the turn on 2 to 3 degrees past the release). With the ailerons at 45
+    // degrees, reversing in a tenth of a second, and no bank held after a touch past
+    // ASSIST.tapTime (LET_GO refitted), the worst is a 1.5 s hold seen 1,000 m on: 11 m.
     let worst = 0,
       worstLine = 0;
     for (const hold of [0.3, 0.8, 1.5, 3])
@@ -543,13 +574,12 @@ describe('the flight-path marker (course.ts predictThroughRing) against the flow
     }
   });
 
-  it('a held key let go after 1.5 s, still rolling into a 70 degree bank: the wings level briskly, the turn runs on under 6 degrees of heading past the release (measured 5.0)', () => {
-    // With a 45 degree full bank and 25 degree ailerons it ran on 2.3 degrees (under 2.5); the full
-    // bank of 70 turns three times as fast, and the ailerons (30 degrees) roll it level in about a
-    // second: run on per degree of heading turned before the release, it is about half what it was.
+  it('a held key let go after 1.5 s, still rolling into a 70 degree bank: the wings level briskly, the heading stays within 3 degrees of where it was let go (measured -0.3)', () => {
+    // The ailerons (45 degrees: AILERON_SCALE times the authority) roll the 70 degree bank level in
+    // about 0.9 s and the rudder stops the nose with them: the heading ends within a degree of the
+    // release's (with 40 degree ailerons and the bank held a moment after a touch it ran on 5).
     const { runOn } = release(1, 0, 1.5, 1000);
-    expect(runOn).toBeGreaterThan(0);
-    expect(runOn).toBeLessThan(6 * DEG);
+    expect(Math.abs(runOn)).toBeLessThan(3 * DEG);
   });
 });
 
@@ -571,5 +601,61 @@ describe('throttleStep', () => {
     expect(t).toBe(0);
     expect(() => throttleStep(1.2, 1)).toThrow(/throttleStep: throttle must be in \[0, 1\], got 1.2/);
     expect(() => throttleStep(0.5, 0)).toThrow(/throttleStep: direction must be 1 or -1, got 0/);
+  });
+});
+
+describe('the ground floor (floorPath): a held dive goes down and levels over the ground', () => {
+  it('floorPath: level at the floor, a climb under it, a dive far above; a hill ahead raises it; bad input refused', () => {
+    const flat = () => 100;
+    const v = [130, 0, 0];
+    const at = (above: number) => floorPath([0, 100 + above, 0], v, flat);
+    expect(at(GROUND_FLOOR.height)).toBeCloseTo(0, 12);
+    expect(at(GROUND_FLOOR.height - 20)).toBeCloseTo(Math.atan2(20, 130 * GROUND_FLOOR.time), 12);
+    expect(at(GROUND_FLOOR.height + 500)).toBeCloseTo(-Math.atan2(500, 130 * GROUND_FLOOR.time), 12);
+    // A 200 m hill 260 m ahead (2 s): the floor over it, already.
+    const hill = (x: number) => (x >= 250 && x <= 270 ? 300 : 100);
+    expect(floorPath([0, 400, 0], v, hill)).toBeCloseTo(Math.atan2(300 + GROUND_FLOOR.height - 400, 130 * GROUND_FLOOR.time), 12);
+    // Beyond GROUND_FLOOR.ahead s of flight it is not looked at yet.
+    const far = (x: number) => (x > 130 * (GROUND_FLOOR.ahead + 0.5) ? 900 : 100);
+    expect(floorPath([0, 400, 0], v, far)).toBeCloseTo(Math.atan2(100 + GROUND_FLOOR.height - 400, 130 * GROUND_FLOOR.time), 12);
+    expect(() => floorPath([0, Number.NaN, 0], v, flat)).toThrow(/floorPath: position must be 3 finite numbers/);
+  });
+
+  it('↓ held from 150, 300 and 600 m over flat ground: the nose goes down (the path past 10 degrees down) and the aircraft levels over 40 m up, the assist saying it holds it', () => {
+    // Without the floor a held dive from 300 m flew into the ground in 6.3 s (scripts/flight-simulator-steering.mjs, FLOOR=0).
+    for (const above of [150, 300, 600]) {
+      const f = start();
+      const c = f.world.components,
+        e = f.h.body;
+      const ground = () => 900 - above;
+      let key = 0,
+        steepest = 0,
+        lowest = Infinity,
+        held = false;
+      for (let i = 0; i < 20 * 60; i++) {
+        key = rampKey(key, -1, 1 / 60);
+        const s = flightState(f.world, e);
+        const floor = floorPath(
+          [c.Position.x[e]!, c.Position.y[e]!, c.Position.z[e]!],
+          [c.Velocity.x[e]!, c.Velocity.y[e]!, c.Velocity.z[e]!],
+          ground,
+        );
+        const cmd = assist(s, { roll: 0, pitch: key, yaw: 0 }, f.state, 1 / 60, floor);
+        setControlDeflection(f.world, f.h.surfaces.tail, -cmd.elevator * FULL);
+        setControlDeflection(f.world, f.h.surfaces.leftWing, cmd.aileron * FULL * AILERON_SCALE);
+        setControlDeflection(f.world, f.h.surfaces.rightWing, -cmd.aileron * FULL * AILERON_SCALE);
+        setControlDeflection(f.world, f.h.surfaces.fin, -cmd.rudder * FULL);
+        step(f.world);
+        steepest = Math.min(steepest, flightState(f.world, e).path);
+        lowest = Math.min(lowest, c.Position.y[e]! - ground());
+        held ||= f.state.floorHold;
+      }
+      expect(steepest, `${above} m`).toBeLessThan(-10 * DEG);
+      expect(lowest, `${above} m`).toBeGreaterThan(40);
+      expect(held, `${above} m`).toBe(true);
+      // Still held up at the end, close over the floor.
+      expect(c.Position.y[e]! - ground(), `${above} m`).toBeLessThan(GROUND_FLOOR.height + 40);
+      expect(f.state.floorHold).toBe(true);
+    }
   });
 });
