@@ -30,7 +30,7 @@ import {
   BS3_WY,
   BS3_WZ,
 } from './body-state-layout.js';
-import { storeBody2D, storeBody3D } from './body-velocities.js';
+import { storeBody3D, storeVelocities2D } from './body-velocities.js';
 import { heldSupportBall } from './support.js';
 /** Applies every contact's accumulated impulse (Box2D v3 warm start, once per substep), 2D. */
 export function warmStart2D(cs: CollisionState, buf: ContactBuffer): void {
@@ -253,8 +253,7 @@ export function solve2D(sb: Float64Array, buf: ContactBuffer, useBias: boolean, 
     wa -= sb[a + BS2_INV_INERTIA]! * ra * lambda;
     wb -= sb[b + BS2_INV_INERTIA]! * rb * lambda;
 
-    storeBody2D(sb, a, vax, vay, wa);
-    storeBody2D(sb, b, vbx, vby, wb);
+    storeVelocities2D(sb, a, b, vax, vay, wa, vbx, vby, wb);
     if (newN !== 0 || newT !== 0) {
       sb[a + BS2_PUSHED] = 1;
       sb[b + BS2_PUSHED] = 1;

@@ -9,13 +9,27 @@
 import { BS2_VX, BS2_VY, BS2_W, BS3_VX, BS3_VY, BS3_VZ, BS3_WX, BS3_WY, BS3_WZ } from './body-state-layout.js';
 
 /**
- * Writes a 2D body's velocity (vx, vy, m/s) and spin (w, rad/s) into `sb` at row offset `o`
- * (BS2_STRIDE times the solver index; not checked: the sweeps' offsets are in range).
+ * Writes the velocities a 2D contact row left in its locals back to its bodies' rows in `sb`, at
+ * offsets `a` and `b` (BS2_STRIDE times the solver indices; not checked: the sweeps' offsets are in
+ * range): velocity x and y (m/s) and spin (rad/s) of A, then of B.
  */
-export function storeBody2D(sb: Float64Array, o: number, vx: number, vy: number, w: number): void {
-  sb[o + BS2_VX] = vx;
-  sb[o + BS2_VY] = vy;
-  sb[o + BS2_W] = w;
+export function storeVelocities2D(
+  sb: Float64Array,
+  a: number,
+  b: number,
+  vax: number,
+  vay: number,
+  wa: number,
+  vbx: number,
+  vby: number,
+  wb: number,
+): void {
+  sb[a + BS2_VX] = vax;
+  sb[a + BS2_VY] = vay;
+  sb[a + BS2_W] = wa;
+  sb[b + BS2_VX] = vbx;
+  sb[b + BS2_VY] = vby;
+  sb[b + BS2_W] = wb;
 }
 
 /**

@@ -14,7 +14,7 @@ import {
   BX_ROT_Z,
   BX_STRIDE,
 } from './body-state-layout.js';
-import { storeBody2D } from './body-velocities.js';
+import { storeVelocities2D } from './body-velocities.js';
 import {
   MP_MAX_NORMAL_IMPULSE,
   MP_NORMAL_IMPULSE,
@@ -168,8 +168,7 @@ export function warmStartManifolds(cs: CollisionState): void {
     const lr = R[r + MR_ROLLING_IMPULSE]!;
     wa -= iA * lr;
     wb += iB * lr;
-    storeBody2D(sb, a, vax, vay, wa);
-    storeBody2D(sb, b, vbx, vby, wb);
+    storeVelocities2D(sb, a, b, vax, vay, wa, vbx, vby, wb);
     // The marks are written on every row (kept at 1, or set when the row carries an impulse): stores
     // made only when a row carries one would not run in a world's first step (every contact new, no
     // impulse yet), and code V8 compiled then would be thrown away at the first row that does.
@@ -445,8 +444,7 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean)
       wa -= iA * dl;
       wb += iB * dl;
     }
-    storeBody2D(sb, a, vax, vay, wa);
-    storeBody2D(sb, b, vbx, vby, wb);
+    storeVelocities2D(sb, a, b, vax, vay, wa, vbx, vby, wb);
     if (total > 0 || l1 !== 0 || f1 !== 0 || (two && (l2 !== 0 || f2 !== 0)) || R[r + MR_ROLLING_IMPULSE] !== 0) {
       sb[a + BS2_PUSHED] = 1;
       sb[b + BS2_PUSHED] = 1;
@@ -581,8 +579,7 @@ export function applyManifoldRestitution(world: PhysicsWorld): void {
         vby += mB * Py;
         wb += iB * dl * nb;
       }
-      storeBody2D(sb, a, vax, vay, wa);
-      storeBody2D(sb, b, vbx, vby, wb);
+      storeVelocities2D(sb, a, b, vax, vay, wa, vbx, vby, wb);
     }
     if (listed === 0) break;
   }
