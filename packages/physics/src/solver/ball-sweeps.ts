@@ -30,7 +30,8 @@ import {
   BS3_WY,
   BS3_WZ,
 } from './body-state-layout.js';
-import { holdsLower, lowerSupportBall } from './support.js';
+import { storeBody3D, storeVelocities2D } from './body-velocities.js';
+import { heldSupportBall } from './support.js';
 /** Applies every contact's accumulated impulse (Box2D v3 warm start, once per substep), 2D. */
 export function warmStart2D(cs: CollisionState, buf: ContactBuffer): void {
   const n = buf.count,
@@ -186,15 +187,11 @@ export function solve2D(sb: Float64Array, buf: ContactBuffer, useBias: boolean, 
       jmB = imB,
       nm = NM[i]!;
     if (!useBias && imA > 0 && imB > 0 && nm > 0) {
-      const lower = lowerSupportBall(-(downX * nx + downY * ny), FB[i]!, imA, imB);
-      if (lower !== 0) {
-        const va = Math.abs(vax * nx + vay * ny),
-          vb = Math.abs(vbx * nx + vby * ny);
-        if (lower === 1 ? holdsLower(va, vb) : holdsLower(vb, va)) {
-          if (lower === 1) jmA = 0;
-          else jmB = 0;
-          nm = 1 / (jmA + jmB);
-        }
+      const held = heldSupportBall(-(downX * nx + downY * ny), FB[i]!, imA, imB, vax * nx + vay * ny, vbx * nx + vby * ny);
+      if (held !== 0) {
+        if (held === 1) jmA = 0;
+        else jmB = 0;
+        nm = 1 / (jmA + jmB);
       }
     }
 
@@ -256,12 +253,7 @@ export function solve2D(sb: Float64Array, buf: ContactBuffer, useBias: boolean, 
     wa -= sb[a + BS2_INV_INERTIA]! * ra * lambda;
     wb -= sb[b + BS2_INV_INERTIA]! * rb * lambda;
 
-    sb[a + BS2_VX] = vax;
-    sb[a + BS2_VY] = vay;
-    sb[a + BS2_W] = wa;
-    sb[b + BS2_VX] = vbx;
-    sb[b + BS2_VY] = vby;
-    sb[b + BS2_W] = wb;
+    storeVelocities2D(sb, a, b, vax, vay, wa, vbx, vby, wb);
     if (newN !== 0 || newT !== 0) {
       sb[a + BS2_PUSHED] = 1;
       sb[b + BS2_PUSHED] = 1;
@@ -345,15 +337,12 @@ export function solve3D(sb: Float64Array, buf: ContactBuffer, useBias: boolean, 
       jmB = imB,
       nm = NM[i]!;
     if (!useBias && imA > 0 && imB > 0 && nm > 0) {
-      const lower = lowerSupportBall(-(downX * nx + downY * ny + downZ * nz), FB[i]!, imA, imB);
-      if (lower !== 0) {
-        const va = Math.abs(vax * nx + vay * ny + vaz * nz),
-          vb = Math.abs(vbx * nx + vby * ny + vbz * nz);
-        if (lower === 1 ? holdsLower(va, vb) : holdsLower(vb, va)) {
-          if (lower === 1) jmA = 0;
-          else jmB = 0;
-          nm = 1 / (jmA + jmB);
-        }
+      const up = -(downX * nx + downY * ny + downZ * nz);
+      const held = heldSupportBall(up, FB[i]!, imA, imB, vax * nx + vay * ny + vaz * nz, vbx * nx + vby * ny + vbz * nz);
+      if (held !== 0) {
+        if (held === 1) jmA = 0;
+        else jmB = 0;
+        nm = 1 / (jmA + jmB);
       }
     }
 
@@ -431,18 +420,8 @@ export function solve3D(sb: Float64Array, buf: ContactBuffer, useBias: boolean, 
       wby -= kb * cy;
       wbz -= kb * cz;
     }
-    sb[a + BS3_VX] = vax;
-    sb[a + BS3_VY] = vay;
-    sb[a + BS3_VZ] = vaz;
-    sb[a + BS3_WX] = wax;
-    sb[a + BS3_WY] = way;
-    sb[a + BS3_WZ] = waz;
-    sb[b + BS3_VX] = vbx;
-    sb[b + BS3_VY] = vby;
-    sb[b + BS3_VZ] = vbz;
-    sb[b + BS3_WX] = wbx;
-    sb[b + BS3_WY] = wby;
-    sb[b + BS3_WZ] = wbz;
+    storeBody3D(sb, a, vax, vay, vaz, wax, way, waz);
+    storeBody3D(sb, b, vbx, vby, vbz, wbx, wby, wbz);
     if (newN !== 0 || n1 !== 0 || n2 !== 0) {
       sb[a + BS3_PUSHED] = 1;
       sb[b + BS3_PUSHED] = 1;

@@ -1,5 +1,4 @@
 import { type ContactBuffer, ContactKind } from '../collision/contacts.js';
-import { BodyType } from '../collision/state.js';
 import type { PhysicsWorld } from '../world/options.js';
 import {
   BI_CORR_X,
@@ -26,6 +25,7 @@ import {
   BX_STRIDE,
   IMPACT_STRIDE,
 } from './body-state-layout.js';
+import { gravitySign } from './impact-motion.js';
 import { impactScalars, markChanged, sweepIO } from './impact-state.js';
 
 /** One impact of the impact stage (solver/impacts.ts): a contact's state at its time of impact (swept), and the impulse that stops or bounces it. */
@@ -73,9 +73,7 @@ export function contactState(world: PhysicsWorld, buf: ContactBuffer, i: number,
     kind = buf.kind[i]!;
   const is2D = S === BS2_STRIDE;
   const g = world.gravity;
-  const dynA = a !== 0 && type[a] === BodyType.Dynamic ? 1 : 0,
-    dynB = type[b] === BodyType.Dynamic ? 1 : 0;
-  const gr = dynB - dynA;
+  const gr = gravitySign(type, a, b);
   const ax = gr * g[0]!,
     ay = gr * g[1]!,
     az = is2D ? 0 : gr * g[2]!;

@@ -1,19 +1,8 @@
 import { type ContactBuffer, ContactKind } from '../collision/contacts.js';
-import { BodyType } from '../collision/state.js';
 import type { PhysicsWorld } from '../world/options.js';
-import {
-  BI_ALONE,
-  BI_CORR_X,
-  BI_CORR_Y,
-  BI_CORR_Z,
-  BI_TIME,
-  BS2_STRIDE,
-  BS2_VX,
-  BS2_VY,
-  BS3_VZ,
-  IMPACT_STRIDE,
-} from './body-state-layout.js';
+import { BI_ALONE, BI_CORR_X, BI_CORR_Y, BI_CORR_Z, BS2_STRIDE, BS2_VX, BS2_VY, BS3_VZ, IMPACT_STRIDE } from './body-state-layout.js';
 import { contactState, sweep } from './impact-contact.js';
+import { gravitySign, latestImpactTime, normalVelocity } from './impact-motion.js';
 import { impactScalars, impactScratch, markChanged, sweepIO } from './impact-state.js';
 import { jointsToSolve } from './row-families.js';
 
@@ -279,12 +268,10 @@ function linearClosure(world: PhysicsWorld, buf: ContactBuffer, i: number, S: nu
   const nx = buf.nx[i]!,
     ny = buf.ny[i]!,
     nz = buf.nz[i]!;
-  let vn = (sb[ob + BS2_VX]! - sb[oa + BS2_VX]!) * nx + (sb[ob + BS2_VY]! - sb[oa + BS2_VY]!) * ny;
-  if (S !== BS2_STRIDE) vn += (sb[ob + BS3_VZ]! - sb[oa + BS3_VZ]!) * nz;
+  const vn = normalVelocity(sb, oa, ob, nx, ny, nz, S);
   const a = buf.a[i]!,
     b = buf.b[i]!;
-  const an =
-    ((type[b] === BodyType.Dynamic ? 1 : 0) - (a !== 0 && type[a] === BodyType.Dynamic ? 1 : 0)) * (g[0]! * nx + g[1]! * ny + g[2]! * nz);
+  const an = gravitySign(type, a, b) * (g[0]! * nx + g[1]! * ny + g[2]! * nz);
   return (vn < 0 ? -vn * reach : 0) + (an < 0 ? -an * reach * reach : 0);
 }
 
@@ -344,7 +331,7 @@ function ballsMeet(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number
     imp[qb + BI_CORR_Z] === 0;
   const s0 = buf.separation[i]!;
   const g = world.gravity;
-  const gr = (type[b] === BodyType.Dynamic ? 1 : 0) - (a !== 0 && type[a] === BodyType.Dynamic ? 1 : 0);
+  const gr = gravitySign(type, a, b);
   if (still && s0 <= 0) {
     // Touching: active if it carries load (warm start), overlaps, approaches (closing more than a
     // rounding-level length within the step), or gravity presses it.
@@ -352,14 +339,11 @@ function ballsMeet(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number
     const nx = buf.nx[i]!,
       ny = buf.ny[i]!,
       nz = buf.nz[i]!;
-    let vn = (sb[ob + BS2_VX]! - sb[oa + BS2_VX]!) * nx + (sb[ob + BS2_VY]! - sb[oa + BS2_VY]!) * ny;
-    if (!is2D) vn += (sb[ob + BS3_VZ]! - sb[oa + BS3_VZ]!) * nz;
+    const vn = normalVelocity(sb, oa, ob, nx, ny, nz, S);
     return vn * world.h < -ROUNDING * R || gr * (g[0]! * nx + g[1]! * ny + g[2]! * nz) < 0;
   }
   // Relative position and velocity at t0, the later of the bodies' latest impacts (0 if none).
-  const ta = imp[qa + BI_TIME]!,
-    tb = imp[qb + BI_TIME]!;
-  const t0 = ta > tb ? (ta > 0 ? ta : 0) : tb > 0 ? tb : 0;
+  const t0 = latestImpactTime(imp, qa, qb);
   const ax = gr * g[0]!,
     ay = gr * g[1]!,
     az = is2D ? 0 : gr * g[2]!;
@@ -434,13 +418,9 @@ function faceMeets(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number
   const nx = buf.nx[i]!,
     ny = buf.ny[i]!,
     nz = buf.nz[i]!;
-  let vn = (sb[ob + BS2_VX]! - sb[oa + BS2_VX]!) * nx + (sb[ob + BS2_VY]! - sb[oa + BS2_VY]!) * ny;
-  if (S !== BS2_STRIDE) vn += (sb[ob + BS3_VZ]! - sb[oa + BS3_VZ]!) * nz;
-  const an =
-    ((type[b] === BodyType.Dynamic ? 1 : 0) - (a !== 0 && type[a] === BodyType.Dynamic ? 1 : 0)) * (g[0]! * nx + g[1]! * ny + g[2]! * nz);
-  const ta = imp[qa + BI_TIME]!,
-    tb = imp[qb + BI_TIME]!;
-  const t0 = ta > tb ? (ta > 0 ? ta : 0) : tb > 0 ? tb : 0;
+  const vn = normalVelocity(sb, oa, ob, nx, ny, nz, S);
+  const an = gravitySign(type, a, b) * (g[0]! * nx + g[1]! * ny + g[2]! * nz);
+  const t0 = latestImpactTime(imp, qa, qb);
   const s =
     buf.separation[i]! +
     (imp[qb + BI_CORR_X]! - imp[qa + BI_CORR_X]!) * nx +

@@ -14,6 +14,7 @@ import {
   BX_ROT_Z,
   BX_STRIDE,
 } from './body-state-layout.js';
+import { storeVelocities2D } from './body-velocities.js';
 import {
   MP_MAX_NORMAL_IMPULSE,
   MP_NORMAL_IMPULSE,
@@ -114,29 +115,6 @@ export function storeManifoldImpulses(cs: CollisionState): void {
 }
 
 /**
- * Writes the velocities a row's pass left in its locals back to its bodies' packed state (offsets `a`
- * and `b`, BS2_STRIDE times the solver indices): velocity x and y (m/s) and spin (rad/s) of A, then of B.
- */
-function storeVelocities(
-  sb: Float64Array,
-  a: number,
-  b: number,
-  vax: number,
-  vay: number,
-  wa: number,
-  vbx: number,
-  vby: number,
-  wb: number,
-): void {
-  sb[a + BS2_VX] = vax;
-  sb[a + BS2_VY] = vay;
-  sb[a + BS2_W] = wa;
-  sb[b + BS2_VX] = vbx;
-  sb[b + BS2_VY] = vby;
-  sb[b + BS2_W] = wb;
-}
-
-/**
  * Applies every manifold point's accumulated impulses (once per substep).
  * @category Collision
  */
@@ -190,7 +168,7 @@ export function warmStartManifolds(cs: CollisionState): void {
     const lr = R[r + MR_ROLLING_IMPULSE]!;
     wa -= iA * lr;
     wb += iB * lr;
-    storeVelocities(sb, a, b, vax, vay, wa, vbx, vby, wb);
+    storeVelocities2D(sb, a, b, vax, vay, wa, vbx, vby, wb);
     // The marks are written on every row (kept at 1, or set when the row carries an impulse): stores
     // made only when a row carries one would not run in a world's first step (every contact new, no
     // impulse yet), and code V8 compiled then would be thrown away at the first row that does.
@@ -466,7 +444,7 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean)
       wa -= iA * dl;
       wb += iB * dl;
     }
-    storeVelocities(sb, a, b, vax, vay, wa, vbx, vby, wb);
+    storeVelocities2D(sb, a, b, vax, vay, wa, vbx, vby, wb);
     if (total > 0 || l1 !== 0 || f1 !== 0 || (two && (l2 !== 0 || f2 !== 0)) || R[r + MR_ROLLING_IMPULSE] !== 0) {
       sb[a + BS2_PUSHED] = 1;
       sb[b + BS2_PUSHED] = 1;
@@ -601,7 +579,7 @@ export function applyManifoldRestitution(world: PhysicsWorld): void {
         vby += mB * Py;
         wb += iB * dl * nb;
       }
-      storeVelocities(sb, a, b, vax, vay, wa, vbx, vby, wb);
+      storeVelocities2D(sb, a, b, vax, vay, wa, vbx, vby, wb);
     }
     if (listed === 0) break;
   }

@@ -88,6 +88,21 @@ export function lowerSupportBall(up: number, frictionBound: number, imA: number,
 }
 
 /**
+ * Which ball of a row between two dynamic balls the relax sweep holds (inverse mass 0 for the row's
+ * normal impulse): 1 ball A, 2 ball B, 0 neither. The row's lowerSupportBall (`up`, `frictionBound`,
+ * `imA`, `imB` as there) is held when holdsLower says so for the balls' speeds along the normal,
+ * |`vnA`| and |`vnB`| (vnA = v_A . n, vnB = v_B . n, m/s).
+ * @category Collision
+ */
+export function heldSupportBall(up: number, frictionBound: number, imA: number, imB: number, vnA: number, vnB: number): number {
+  const lower = lowerSupportBall(up, frictionBound, imA, imB);
+  if (lower === 0) return 0;
+  const va = Math.abs(vnA),
+    vb = Math.abs(vnB);
+  return (lower === 1 ? holdsLower(va, vb) : holdsLower(vb, va)) ? lower : 0;
+}
+
+/**
  * Writes the relax sweep's row order (solver/ball-sweeps.ts, `n` rows) into out[0 ..] and returns its
  * length, n plus the number of marked rows: first the rows `first` marks (markFirstRelaxRows), then the
  * rows between two balls, then the rows against static bodies (`ia` 0), the marked ones among them
