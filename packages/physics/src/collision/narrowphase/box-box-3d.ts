@@ -174,41 +174,18 @@ export function boxBox3DAt(RA: Float64Array, oa: number, RB: Float64Array, ob: n
   const tb1 = tx * RB[ob + M01]! + ty * RB[ob + M11]! + tz * RB[ob + M21]!;
   const tb2 = tx * RB[ob + M02]! + ty * RB[ob + M12]! + tz * RB[ob + M22]!;
   // A's faces.
-  let sA = -Infinity,
-    fA = 0;
-  {
-    const s0 = Math.abs(ta0) - ea0 - (eb0 * AC[0]! + eb1 * AC[1]! + eb2 * AC[2]!);
-    const s1 = Math.abs(ta1) - ea1 - (eb0 * AC[3]! + eb1 * AC[4]! + eb2 * AC[5]!);
-    const s2 = Math.abs(ta2) - ea2 - (eb0 * AC[6]! + eb1 * AC[7]! + eb2 * AC[8]!);
-    sA = s0;
-    fA = 0;
-    if (s1 > sA) {
-      sA = s1;
-      fA = 1;
-    }
-    if (s2 > sA) {
-      sA = s2;
-      fA = 2;
-    }
-  }
+  const sa0 = Math.abs(ta0) - ea0 - (eb0 * AC[0]! + eb1 * AC[1]! + eb2 * AC[2]!),
+    sa1 = Math.abs(ta1) - ea1 - (eb0 * AC[3]! + eb1 * AC[4]! + eb2 * AC[5]!),
+    sa2 = Math.abs(ta2) - ea2 - (eb0 * AC[6]! + eb1 * AC[7]! + eb2 * AC[8]!);
+  const fA = largestOf3(sa0, sa1, sa2),
+    sA = fA === 0 ? sa0 : fA === 1 ? sa1 : sa2;
   if (sA > margin) return;
-  let sB = -Infinity,
-    fB = 0;
-  {
-    const s0 = Math.abs(tb0) - eb0 - (ea0 * AC[0]! + ea1 * AC[3]! + ea2 * AC[6]!);
-    const s1 = Math.abs(tb1) - eb1 - (ea0 * AC[1]! + ea1 * AC[4]! + ea2 * AC[7]!);
-    const s2 = Math.abs(tb2) - eb2 - (ea0 * AC[2]! + ea1 * AC[5]! + ea2 * AC[8]!);
-    sB = s0;
-    fB = 0;
-    if (s1 > sB) {
-      sB = s1;
-      fB = 1;
-    }
-    if (s2 > sB) {
-      sB = s2;
-      fB = 2;
-    }
-  }
+  // B's faces.
+  const sb0 = Math.abs(tb0) - eb0 - (ea0 * AC[0]! + ea1 * AC[3]! + ea2 * AC[6]!),
+    sb1 = Math.abs(tb1) - eb1 - (ea0 * AC[1]! + ea1 * AC[4]! + ea2 * AC[7]!),
+    sb2 = Math.abs(tb2) - eb2 - (ea0 * AC[2]! + ea1 * AC[5]! + ea2 * AC[8]!);
+  const fB = largestOf3(sb0, sb1, sb2),
+    sB = fB === 0 ? sb0 : fB === 1 ? sb1 : sb2;
   if (sB > margin) return;
   // Edge axes a_i x b_j.
   let sE = -Infinity,
@@ -259,6 +236,17 @@ export function boxBox3DAt(RA: Float64Array, oa: number, RB: Float64Array, ob: n
     const tf = fA === 0 ? ta0 : fA === 1 ? ta1 : ta2;
     faceContact(RA, oa, fA, tf >= 0 ? 1 : -1, RB, ob, out, 0);
   }
+}
+
+/** Which of s0, s1, s2 is the largest: 0, 1 or 2, the first of equal ones (a NaN never wins over an earlier one). */
+function largestOf3(s0: number, s1: number, s2: number): number {
+  let s = s0,
+    f = 0;
+  if (s1 > s) {
+    s = s1;
+    f = 1;
+  }
+  return s2 > s ? 2 : f;
 }
 
 /**
