@@ -529,43 +529,31 @@ export function collidePolygonsLocal(out: Manifold, A: ConvexGeometry, B: Convex
   ly += kL * rny;
   ux += kU * rnx;
   uy += kU * rny;
-  let count = 0;
+  // Normal and feature ids from A to B: a flipped pair's reversed, its points in the other order.
   if (!flip) {
     out.nx = rnx;
     out.ny = rny;
-    if (sepL - radius <= speculative) {
-      out.px[count] = lx;
-      out.py[count] = ly;
-      out.separation[count] = sepL - radius;
-      out.id[count] = featureId(i11, i22);
-      count++;
-    }
-    if (sepU - radius <= speculative) {
-      out.px[count] = ux;
-      out.py[count] = uy;
-      out.separation[count] = sepU - radius;
-      out.id[count] = featureId(i12, i21);
-      count++;
-    }
+    const count = keepPoint(out, 0, lx, ly, sepL - radius, featureId(i11, i22), speculative);
+    out.count = keepPoint(out, count, ux, uy, sepU - radius, featureId(i12, i21), speculative);
   } else {
     out.nx = -rnx;
     out.ny = -rny;
-    if (sepU - radius <= speculative) {
-      out.px[count] = ux;
-      out.py[count] = uy;
-      out.separation[count] = sepU - radius;
-      out.id[count] = featureId(i21, i12);
-      count++;
-    }
-    if (sepL - radius <= speculative) {
-      out.px[count] = lx;
-      out.py[count] = ly;
-      out.separation[count] = sepL - radius;
-      out.id[count] = featureId(i22, i11);
-      count++;
-    }
+    const count = keepPoint(out, 0, ux, uy, sepU - radius, featureId(i21, i12), speculative);
+    out.count = keepPoint(out, count, lx, ly, sepL - radius, featureId(i22, i11), speculative);
   }
-  out.count = count;
+}
+
+/**
+ * Writes point (x, y) (m), its separation (m) and feature id into slot `count` of `out` when the
+ * separation is at most `speculative` (m); returns the number of points then written.
+ */
+function keepPoint(out: Manifold, count: number, x: number, y: number, separation: number, id: number, speculative: number): number {
+  if (!(separation <= speculative)) return count;
+  out.px[count] = x;
+  out.py[count] = y;
+  out.separation[count] = separation;
+  out.id[count] = id;
+  return count + 1;
 }
 
 const fr = new Float64Array(2);
