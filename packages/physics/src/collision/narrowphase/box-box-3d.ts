@@ -221,7 +221,7 @@ export function boxBox3DAt(RA: Float64Array, oa: number, RB: Float64Array, ob: n
   const size = Math.min(ea0, ea1, ea2, eb0, eb1, eb2);
   const faceBest = sA > sB ? sA : sB;
   if (eI >= 0 && sE > faceBest + EDGE_BIAS * size) {
-    edgeContact(ax, ay, az, RA, oa, ea0, ea1, ea2, bx, by, bz, RB, ob, eb0, eb1, eb2, tx, ty, tz, eI, eJ, margin, out);
+    edgeContact(RA, oa, RB, ob, eI, eJ, out);
     return;
   }
   // faceContact reads the boxes' numbers from boxArgs: reference first when flipped is 0, else incident first.
@@ -421,32 +421,21 @@ function clipIncident(): number {
   return n;
 }
 
-/** Edge a_i of A against edge b_j of B: one point between their closest points. */
-function edgeContact(
-  ax: number,
-  ay: number,
-  az: number,
-  RA: Float64Array,
-  oa: number,
-  ea0: number,
-  ea1: number,
-  ea2: number,
-  bx: number,
-  by: number,
-  bz: number,
-  RB: Float64Array,
-  ob: number,
-  eb0: number,
-  eb1: number,
-  eb2: number,
-  tx: number,
-  ty: number,
-  tz: number,
-  i: number,
-  j: number,
-  margin: number,
-  out: Manifold3D,
-): void {
+/** Edge a_i of A against edge b_j of B (the boxes' numbers in boxArgs, as boxBox3DAt reads them): one point between their closest points. */
+function edgeContact(RA: Float64Array, oa: number, RB: Float64Array, ob: number, i: number, j: number, out: Manifold3D): void {
+  // Half extent k of A at g[BOX_A + BOX_HX + k], of B at g[BOX_B + BOX_HX + k] (box-args-3d.ts).
+  const g = boxArgs,
+    ha = BOX_A + BOX_HX,
+    hb = BOX_B + BOX_HX;
+  const ax = g[BOX_A + BOX_CX]!,
+    ay = g[BOX_A + BOX_CY]!,
+    az = g[BOX_A + BOX_CZ]!;
+  const bx = g[BOX_B + BOX_CX]!,
+    by = g[BOX_B + BOX_CY]!,
+    bz = g[BOX_B + BOX_CZ]!;
+  const tx = bx - ax,
+    ty = by - ay,
+    tz = bz - az;
   const dax = RA[oa + M00 + i]!,
     day = RA[oa + M10 + i]!,
     daz = RA[oa + M20 + i]!;
@@ -476,7 +465,7 @@ function edgeContact(
     bitsB = 0;
   for (let k = 0; k < 3; k++) {
     if (k !== i) {
-      const e = k === 0 ? ea0 : k === 1 ? ea1 : ea2;
+      const e = g[ha + k]!;
       const cx = RA[oa + M00 + k]!,
         cy = RA[oa + M10 + k]!,
         cz = RA[oa + M20 + k]!;
@@ -487,7 +476,7 @@ function edgeContact(
       if (s > 0) bitsA |= 1 << k;
     }
     if (k !== j) {
-      const e = k === 0 ? eb0 : k === 1 ? eb1 : eb2;
+      const e = g[hb + k]!;
       const cx = RB[ob + M00 + k]!,
         cy = RB[ob + M10 + k]!,
         cz = RB[ob + M20 + k]!;
@@ -499,8 +488,8 @@ function edgeContact(
     }
   }
   // Closest points of the two lines p_a + s d_a and p_b + t d_b (unit directions), clamped to the half lengths.
-  const hA = i === 0 ? ea0 : i === 1 ? ea1 : ea2,
-    hB = j === 0 ? eb0 : j === 1 ? eb1 : eb2;
+  const hA = g[ha + i]!,
+    hB = g[hb + j]!;
   const rx = pax - pbx,
     ry = pay - pby,
     rz = paz - pbz;
@@ -527,7 +516,7 @@ function edgeContact(
     qby = pby + dby * t,
     qbz = pbz + dbz * t;
   const sep = (qbx - qax) * nx + (qby - qay) * ny + (qbz - qaz) * nz;
-  if (sep > margin) return;
+  if (sep > g[BOX_MARGIN]!) return;
   out.nx = nx;
   out.ny = ny;
   out.nz = nz;
