@@ -258,13 +258,33 @@ export function collideCircles(
     nx = dx / d;
     ny = dy / d;
   }
+  roundPoint(out, ax, ay, ra, bx, by, rb, nx, ny, sep, 0);
+}
+
+/**
+ * Writes the one-point manifold between a round surface of radius ra (m) about (qx, qy) and one of
+ * radius rb about (cx, cy): unit normal (nx, ny) from the first to the second, the point midway between
+ * the surface points q + ra n and c - rb n, separation `sep` (m) and feature id `id`.
+ */
+function roundPoint(
+  out: Manifold,
+  qx: number,
+  qy: number,
+  ra: number,
+  cx: number,
+  cy: number,
+  rb: number,
+  nx: number,
+  ny: number,
+  sep: number,
+  id: number,
+): void {
   out.nx = nx;
   out.ny = ny;
-  // Midway between the surface points a + ra n and b - rb n.
-  out.px[0] = 0.5 * (ax + ra * nx + bx - rb * nx);
-  out.py[0] = 0.5 * (ay + ra * ny + by - rb * ny);
+  out.px[0] = 0.5 * (qx + ra * nx + cx - rb * nx);
+  out.py[0] = 0.5 * (qy + ra * ny + cy - rb * ny);
   out.separation[0] = sep;
-  out.id[0] = 0;
+  out.id[0] = id;
   out.count = 1;
 }
 
@@ -316,13 +336,7 @@ function collideSegmentCircleLocal(out: Manifold, A: ConvexGeometry, cx: number,
     nx = dx / d;
     ny = dy / d;
   }
-  out.nx = nx;
-  out.ny = ny;
-  out.px[0] = 0.5 * (qx + ra * nx + cx - rb * nx);
-  out.py[0] = 0.5 * (qy + ra * ny + cy - rb * ny);
-  out.separation[0] = sep;
-  out.id[0] = featureId(t <= 0 ? 0 : t >= 1 ? 1 : 2, 0);
-  out.count = 1;
+  roundPoint(out, qx, qy, ra, cx, cy, rb, nx, ny, sep, featureId(t <= 0 ? 0 : t >= 1 ? 1 : 2, 0));
 }
 
 /** Polygon A (3+ vertices, radius) against a circle at (cx, cy) of radius rb, in A's frame. */
@@ -372,14 +386,7 @@ function collidePolygonCircleLocal(out: Manifold, A: ConvexGeometry, cx: number,
     qx = cx - best * nx;
     qy = cy - best * ny;
   }
-  out.nx = nx;
-  out.ny = ny;
-  const ra = A.radius;
-  out.px[0] = 0.5 * (qx + ra * nx + cx - rb * nx);
-  out.py[0] = 0.5 * (qy + ra * ny + cy - rb * ny);
-  out.separation[0] = sep;
-  out.id[0] = featureId(id, 0);
-  out.count = 1;
+  roundPoint(out, qx, qy, A.radius, cx, cy, rb, nx, ny, sep, featureId(id, 0));
 }
 
 /** Largest separation of poly2's vertices from poly1's edges: writes [edge, separation] to `res`. */
@@ -477,21 +484,16 @@ export function collidePolygonsLocal(out: Manifold, A: ConvexGeometry, B: Convex
       const d = Math.sqrt(dx * dx + dy * dy);
       const sep = d - radius;
       if (sep > speculative || d < 1e-12) return;
-      let nx = dx / d,
+      const nx = dx / d,
         ny = dy / d;
       const ia = f1 === 0 ? i11 : i12,
         ib = f2 === 0 ? i21 : i22;
-      out.px[0] = 0.5 * (vax + r1 * nx + vbx - r2 * nx);
-      out.py[0] = 0.5 * (vay + r1 * ny + vby - r2 * ny);
-      out.separation[0] = sep;
+      roundPoint(out, vax, vay, r1, vbx, vby, r2, nx, ny, sep, featureId(ia, ib));
       if (flip) {
-        nx = -nx;
-        ny = -ny;
+        out.nx = -nx;
+        out.ny = -ny;
         out.id[0] = featureId(ib, ia);
-      } else out.id[0] = featureId(ia, ib);
-      out.nx = nx;
-      out.ny = ny;
-      out.count = 1;
+      }
       return;
     }
   }
