@@ -21,7 +21,6 @@ const LEFT: Readonly<Record<string, number>> = {
   'solver/manifold-rows-2d.ts solveManifolds': 187,
   'solver/coloring-kernel.ts solveColored2D': 180,
   'solver/ball-sweeps.ts solve3D': 161,
-  'collision/narrowphase/manifold-2d.ts collidePolygonsLocal': 152,
 };
 
 function sources(dir: string): string[] {

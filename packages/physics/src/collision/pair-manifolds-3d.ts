@@ -56,20 +56,9 @@ export function pair(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, i
     } else {
       const margin = scratch.spec + (sc.speed[a]! + sc.speed[b]!) * world.h;
       // The numbers go through boxArgs (doubles passed to a call are boxed: garbage every step).
-      const g = boxArgs;
-      g[BOX_A + BOX_CX] = sc.px[a]!;
-      g[BOX_A + BOX_CY] = sc.py[a]!;
-      g[BOX_A + BOX_CZ] = sc.pz[a]!;
-      g[BOX_A + BOX_HX] = s.hx[ea]!;
-      g[BOX_A + BOX_HY] = s.hy[ea]!;
-      g[BOX_A + BOX_HZ] = s.hz[ea]!;
-      g[BOX_B + BOX_CX] = sc.px[b]!;
-      g[BOX_B + BOX_CY] = sc.py[b]!;
-      g[BOX_B + BOX_CZ] = sc.pz[b]!;
-      g[BOX_B + BOX_HX] = s.hx[eb]!;
-      g[BOX_B + BOX_HY] = s.hy[eb]!;
-      g[BOX_B + BOX_HZ] = s.hz[eb]!;
-      g[BOX_MARGIN] = margin;
+      boxIntoArgs(s, BOX_A, a, ea);
+      boxIntoArgs(s, BOX_B, b, eb);
+      boxArgs[BOX_MARGIN] = margin;
       boxBox3DAt(sc.R, MAT3_STRIDE * a, sc.R, MAT3_STRIDE * b, manifold);
       boxRow.from = -1;
     }
@@ -105,6 +94,18 @@ export function pair(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, i
  * nearly the same order every step, so the previous row of the next pair is most often at the same
  * offset, found without a hash lookup (a cache miss each in a large pile) and read in sequence.
  */
+
+/** Writes collider i's centre (m) and its box shape e's half extents (m) into boxArgs at `at` (BOX_A or BOX_B). */
+function boxIntoArgs(s: Shape3DStore, at: number, i: number, e: number): void {
+  const g = boxArgs,
+    sc = scratch;
+  g[at + BOX_CX] = sc.px[i]!;
+  g[at + BOX_CY] = sc.py[i]!;
+  g[at + BOX_CZ] = sc.pz[i]!;
+  g[at + BOX_HX] = s.hx[e]!;
+  g[at + BOX_HY] = s.hy[e]!;
+  g[at + BOX_HZ] = s.hz[e]!;
+}
 
 /** The previous step's row of box pair (ea, eb), or -1: the row at `rowShift` if it is that pair's, else from the index. */
 function previousBoxRow(st: Contact3DState, ea: number, eb: number, capacity: number): number {

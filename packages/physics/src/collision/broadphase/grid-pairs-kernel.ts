@@ -61,43 +61,12 @@ export function ballPairs(A: KernelArray[], P: Float64Array, ids: Int32Array | n
   // A dense 3D grid's half neighbourhood is five runs of consecutive buckets, each one run of the
   // sorted bodies: the own cell's later entries with the cell at +x, then the three cells at x - 1,
   // x, x + 1 of each of the rows (y + 1, z), (y - 1, z + 1), (y, z + 1) and (y + 1, z + 1), in the
-  // order of `off`, so the pairs come out in the same order as the cell-by-cell loop below.
+  // order of `off`, so the pairs come out in the same order as cell by cell. Other grids go cell by
+  // cell: the own cell (later entries only), then the half neighbourhood.
   const dense3D = dense && is3D,
-    rowAt = [-sXZ, sX + sXZ, sX, sX - sXZ];
-  for (let p = lo; p < hi && count >= 0 && dense3D; p++) {
-    const e = sorted[p]!;
-    const x = ox[e]!,
-      y = oy[e]!,
-      z = oz[e]!;
-    const reach = radius[e]! + margin[e]!;
-    const te = type[e]!;
-    const own = cellX[p]! - gx0 + (cellZ[p]! - gz0) * sX + (gy0 - cellY[p]!) * sXZ;
-    for (let r = 0; r < 5 && count >= 0; r++) {
-      const c = r === 0 ? own : own + rowAt[r - 1]!;
-      for (let q = r === 0 ? p + 1 : start[c - 1]!, end = start[c + 2]!; q < end; q++) {
-        const f = sorted[q]!,
-          tf = type[f]!;
-        // Neither dynamic: no pair, unless a kinematic ball meets a sleeping one.
-        if (te !== 0 && tf !== 0 && !((te === 1 && tf === 3) || (te === 3 && tf === 1))) continue;
-        const dx = ox[f]! - x,
-          dy = oy[f]! - y,
-          dz = oz[f]! - z;
-        const rr = reach + radius[f]! + margin[f]!;
-        if (dx * dx + dy * dy + dz * dz < rr * rr) {
-          if (count >= cap || woken + 2 > cap) {
-            count = -1;
-            break;
-          }
-          if (te === 3 && (tf === 1 || rest[f] === 0)) outW[woken++] = e;
-          if (tf === 3 && (te === 1 || rest[e] === 0)) outW[woken++] = f;
-          outA[count] = e < f ? e : f;
-          outB[count] = e < f ? f : e;
-          count++;
-        }
-      }
-    }
-  }
-  for (let p = dense3D ? hi : lo; p < hi && count >= 0; p++) {
+    rowAt = [-sXZ, sX + sXZ, sX, sX - sXZ],
+    runs = dense3D ? 5 : nOff + 1;
+  for (let p = lo; p < hi && count >= 0; p++) {
     const e = sorted[p]!;
     const cx = cellX[p]!,
       cy = cellY[p]!,
@@ -108,20 +77,31 @@ export function ballPairs(A: KernelArray[], P: Float64Array, ids: Int32Array | n
     const reach = radius[e]! + margin[e]!;
     const te = type[e]!;
     const own = dense ? cx - gx0 + (cz - gz0) * sX + (gy0 - cy) * sXZ : 0;
-    // Own cell (later entries only), then the half neighbourhood.
-    for (let k = -1; k < nOff && count >= 0; k++) {
-      let nx = cx,
+    for (let r = 0; r < runs && count >= 0; r++) {
+      // Sorted bodies q to end - 1; in a hashed bucket only those of cell (nx, ny, nz).
+      let q = p + 1,
+        end = 0,
+        nx = cx,
         ny = cy,
-        nz = cz,
-        bucket = own;
-      if (k >= 0) {
-        nx = cx + off[3 * k]!;
-        ny = cy + off[3 * k + 1]!;
-        nz = cz + off[3 * k + 2]!;
-        if (dense) bucket = own + step[k]!;
+        nz = cz;
+      if (dense3D) {
+        const c = r === 0 ? own : own + rowAt[r - 1]!;
+        if (r > 0) q = start[c - 1]!;
+        end = start[c + 2]!;
+      } else {
+        const k = r - 1;
+        let bucket = own;
+        if (k >= 0) {
+          nx = cx + off[3 * k]!;
+          ny = cy + off[3 * k + 1]!;
+          nz = cz + off[3 * k + 2]!;
+          if (dense) bucket = own + step[k]!;
+        }
+        if (!dense) bucket = ((Math.imul(nx, 73856093) ^ Math.imul(ny, 19349663) ^ Math.imul(nz, 83492791)) >>> 0) & mask;
+        if (k >= 0) q = start[bucket]!;
+        end = start[bucket + 1]!;
       }
-      if (!dense) bucket = ((Math.imul(nx, 73856093) ^ Math.imul(ny, 19349663) ^ Math.imul(nz, 83492791)) >>> 0) & mask;
-      for (let q = k < 0 ? p + 1 : start[bucket]!, end = start[bucket + 1]!; q < end; q++) {
+      for (; q < end; q++) {
         if (!dense && (cellX[q] !== nx || cellY[q] !== ny || cellZ[q] !== nz)) continue;
         const f = sorted[q]!,
           tf = type[f]!;

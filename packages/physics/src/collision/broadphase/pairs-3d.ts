@@ -100,12 +100,12 @@ export function pairs(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState):
   const cells = denseCells(n, inv);
   if (cells > 0) {
     fillGrid(n, inv, cells, true);
-    searchDense(world, s, st, n, inv);
+    searchGrid(world, s, st, n, inv, true, 0);
   } else {
     let size = 64;
     while (size < 2 * n) size *= 2;
     fillGrid(n, inv, size, false);
-    searchNeighbours(world, s, st, n, inv, size - 1);
+    searchGrid(world, s, st, n, inv, false, size - 1);
   }
   restingPairs(world, s, st);
   largePairs(world, s, st, n);
@@ -339,32 +339,37 @@ function fillGrid(n: number, inv: number, size: number, dense: boolean): void {
 }
 
 /**
- * The searching colliders against their neighbours in the dense grid (fillGrid's, denseCells' layout):
- * as searchNeighbours, but the cells a box reaches along x are consecutive buckets, so each (y, z) row
- * of its neighbourhood is one run of the packed boxes (a box's own row included), nine runs at most.
+ * The searching colliders against their grid neighbours (fillGrid's grid, cells 1 / inv wide): every
+ * overlapping pair that may collide goes to `pair`. Sources are the colliders of moving (dynamic or
+ * kinematic) bodies; a resting pile's sleeping and static colliders are only ever met as neighbours, so
+ * an asleep pile costs no neighbour search. A box that overlaps a searching one has its low corner in
+ * [min - cell, max] on each axis (no box is wider than a cell): cells from c - 1 up to the cell of the
+ * searching box's high corner. In the dense grid (`dense`, denseCells' layout) the cells a box reaches
+ * along x are consecutive buckets, so each (y, z) row of its neighbourhood is one run of the packed
+ * boxes, nine runs at most; in the hashed one (bucket mask `mask`) each cell is a bucket of its own.
  */
-function searchDense(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, n: number, inv: number): void {
-  const sc = scratch,
-    type = world.collision.bodyType;
+function searchGrid(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, n: number, inv: number, dense: boolean, mask: number): void {
+  const sc = scratch;
   const start = grid.start,
     items = grid.items,
+    seen = grid.seen,
     order = sc.order,
-    searching = grid.searching,
-    pk = grid.packed;
+    firstRest = grid.firstRest,
+    searching = grid.searching;
   const minX = sc.minX,
     maxX = sc.maxX,
     minY = sc.minY,
     maxY = sc.maxY,
     minZ = sc.minZ,
     maxZ = sc.maxZ;
-  const ox = grid.ox,
-    oy = grid.oy,
-    oz = grid.oz,
+  // The hashed grid's cells are not shifted to an origin.
+  const ox = dense ? grid.ox : 0,
+    oy = dense ? grid.oy : 0,
+    oz = dense ? grid.oz : 0,
     gx = grid.gx,
     gy = grid.gy;
   for (let i = 0; i < n; i++) {
     if (order[i] === -1 || searching[i] === 0) continue;
-    const ti = type[sc.body[i]!]!;
     const x0 = minX[i]!,
       x1 = maxX[i]!,
       y0 = minY[i]!,
@@ -374,74 +379,22 @@ function searchDense(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, n
     const cx = Math.floor(x0 * inv) - ox,
       cy = Math.floor(y0 * inv) - oy,
       cz = Math.floor(z0 * inv) - oz;
-    // As in searchNeighbours: low corners in [min - cell, max] on each axis, cells c - 1 to the high
-    // corner's (at most c + 1; the grid spans one cell beyond every low corner).
-    // (At most c + 1 also when rounding puts a box's ends just over a cell apart.)
-    const hx = Math.min(Math.floor(x1 * inv) - ox - cx, 1),
-      hy = Math.min(Math.floor(y1 * inv) - oy - cy, 1),
-      hz = Math.min(Math.floor(z1 * inv) - oz - cz, 1);
-    for (let dz = -1; dz <= hz; dz++)
-      for (let dy = -1; dy <= hy; dy++) {
-        const row = cx + gx * (cy + dy + gy * (cz + dz));
-        for (let k = start[row - 1]!, e = start[row + hx + 1]!; k < e; k++) {
-          const o = PackedBox.STRIDE * k;
-          if (
-            !(pk[o + PackedBox.KEY]! > i) ||
-            pk[o + PackedBox.MIN_X]! > x1 ||
-            pk[o + PackedBox.MAX_X]! < x0 ||
-            pk[o + PackedBox.MIN_Y]! > y1 ||
-            pk[o + PackedBox.MAX_Y]! < y0 ||
-            pk[o + PackedBox.MIN_Z]! > z1 ||
-            pk[o + PackedBox.MAX_Z]! < z0
-          )
-            continue;
-          const j = items[k]!;
-          if (!meets(ti, type[sc.body[j]!]!)) continue;
-          pair(world, s, st, i, j);
+    const hx = Math.floor(x1 * inv) - ox - cx,
+      hy = Math.floor(y1 * inv) - oy - cy,
+      hz = Math.floor(z1 * inv) - oz - cz;
+    if (dense) {
+      // At most c + 1 on each axis, also when rounding puts a box's ends just over a cell apart (the
+      // grid spans one cell beyond every low corner).
+      const ux = hx < 1 ? hx : 1,
+        uy = hy < 1 ? hy : 1,
+        uz = hz < 1 ? hz : 1;
+      for (let dz = -1; dz <= uz; dz++)
+        for (let dy = -1; dy <= uy; dy++) {
+          const row = cx + gx * (cy + dy + gy * (cz + dz));
+          scanBoxes(world, s, st, i, start[row - 1]!, start[row + ux + 1]!, x0, x1, y0, y1, z0, z1);
         }
-      }
-  }
-}
-
-/**
- * The searching colliders against their grid neighbours (fillGrid's grid, cells 1 / inv wide, bucket
- * mask `mask`): every overlapping pair that may collide goes to `pair`. Sources are the colliders of
- * moving (dynamic or kinematic) bodies; a resting pile's sleeping and static colliders are only ever met
- * as neighbours, so an asleep pile costs no neighbour search.
- */
-function searchNeighbours(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, n: number, inv: number, mask: number): void {
-  const sc = scratch,
-    type = world.collision.bodyType;
-  const start = grid.start,
-    items = grid.items,
-    seen = grid.seen,
-    order = sc.order,
-    firstRest = grid.firstRest,
-    searching = grid.searching,
-    pk = grid.packed;
-  const minX = sc.minX,
-    maxX = sc.maxX,
-    minY = sc.minY,
-    maxY = sc.maxY,
-    minZ = sc.minZ,
-    maxZ = sc.maxZ;
-  for (let i = 0; i < n; i++) {
-    if (order[i] === -1 || searching[i] === 0) continue;
-    const ti = type[sc.body[i]!]!;
-    const x0 = minX[i]!,
-      x1 = maxX[i]!,
-      y0 = minY[i]!,
-      y1 = maxY[i]!,
-      z0 = minZ[i]!,
-      z1 = maxZ[i]!;
-    const cx = Math.floor(x0 * inv),
-      cy = Math.floor(y0 * inv),
-      cz = Math.floor(z0 * inv);
-    // A box that overlaps this one has its low corner in [min - cell, max] on each axis (no box is wider
-    // than a cell): cells from c - 1 up to the cell of this box's high corner.
-    const hx = Math.floor(x1 * inv) - cx,
-      hy = Math.floor(y1 * inv) - cy,
-      hz = Math.floor(z1 * inv) - cz;
+      continue;
+    }
     const mark = i + 1;
     for (let dx = -1; dx <= hx; dx++)
       for (let dy = -1; dy <= hy; dy++)
@@ -450,28 +403,53 @@ function searchNeighbours(world: PhysicsWorld, s: Shape3DStore, st: Contact3DSta
           // Two neighbour cells may share a bucket: each bucket is searched once per collider.
           if (seen[b] === mark) continue;
           seen[b] = mark;
-          // A pair of two searching colliders is taken from its lower index: of the bucket's searching
-          // colliders (ascending), only those above i; then every collider that does not search.
-          const b0 = start[b]!,
-            e = start[b + 1]!;
+          // Of the bucket's searching colliders (ascending) only those above i can be taken: skipped.
+          const b0 = start[b]!;
           let k = firstRest[b]!;
           while (k > b0 && items[k - 1]! > i) k--;
-          for (; k < e; k++) {
-            const o = PackedBox.STRIDE * k;
-            if (
-              pk[o + PackedBox.MIN_X]! > x1 ||
-              pk[o + PackedBox.MAX_X]! < x0 ||
-              pk[o + PackedBox.MIN_Y]! > y1 ||
-              pk[o + PackedBox.MAX_Y]! < y0 ||
-              pk[o + PackedBox.MIN_Z]! > z1 ||
-              pk[o + PackedBox.MAX_Z]! < z0
-            )
-              continue;
-            const j = items[k]!;
-            if (!meets(ti, type[sc.body[j]!]!)) continue;
-            pair(world, s, st, i, j);
-          }
+          scanBoxes(world, s, st, i, k, start[b + 1]!, x0, x1, y0, y1, z0, z1);
         }
+  }
+}
+
+/**
+ * The packed boxes k to e - 1 (fillGrid's order) against searching collider i's box (x0 to x1, y0 to
+ * y1, z0 to z1, m): each that overlaps it, may collide with it (meets) and is not a searching collider
+ * at or below i (a pair of two searching colliders is taken from its lower index) goes to `pair`.
+ */
+function scanBoxes(
+  world: PhysicsWorld,
+  s: Shape3DStore,
+  st: Contact3DState,
+  i: number,
+  k: number,
+  e: number,
+  x0: number,
+  x1: number,
+  y0: number,
+  y1: number,
+  z0: number,
+  z1: number,
+): void {
+  const sc = scratch,
+    type = world.collision.bodyType,
+    items = grid.items,
+    pk = grid.packed;
+  for (; k < e; k++) {
+    const o = PackedBox.STRIDE * k;
+    if (
+      !(pk[o + PackedBox.KEY]! > i) ||
+      pk[o + PackedBox.MIN_X]! > x1 ||
+      pk[o + PackedBox.MAX_X]! < x0 ||
+      pk[o + PackedBox.MIN_Y]! > y1 ||
+      pk[o + PackedBox.MAX_Y]! < y0 ||
+      pk[o + PackedBox.MIN_Z]! > z1 ||
+      pk[o + PackedBox.MAX_Z]! < z0
+    )
+      continue;
+    const j = items[k]!;
+    if (!meets(type[sc.body[i]!]!, type[sc.body[j]!]!)) continue;
+    pair(world, s, st, i, j);
   }
 }
 

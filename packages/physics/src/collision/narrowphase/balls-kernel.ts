@@ -105,37 +105,19 @@ export function ballContacts(A: KernelArray[], P: Float64Array, ids: Int32Array 
       break;
     }
     const r = base + count;
-    if (ta === STATIC) {
-      K[r] = STATIC_BALL;
-      NX[r] = dx;
-      NY[r] = dy;
-      NZ[r] = dz;
-      RA[r] = 0;
-      RB[r] = rb;
-      CA[r] = 0;
-      CB[r] = b;
-      FE[r] = a;
-    } else if (tb === STATIC) {
-      K[r] = STATIC_BALL;
-      NX[r] = -dx;
-      NY[r] = -dy;
-      NZ[r] = -dz;
-      RA[r] = 0;
-      RB[r] = ra;
-      CA[r] = 0;
-      CB[r] = a;
-      FE[r] = b;
-    } else {
-      K[r] = BALL;
-      NX[r] = dx;
-      NY[r] = dy;
-      NZ[r] = dz;
-      RA[r] = ra;
-      RB[r] = rb;
-      CA[r] = a;
-      CB[r] = b;
-      FE[r] = 0;
-    }
+    // A static ball is the row's feature, its moving partner the row's b; a static b turns the normal round.
+    const aStatic = ta === STATIC,
+      bStatic = !aStatic && tb === STATIC,
+      moving = !aStatic && !bStatic;
+    K[r] = moving ? BALL : STATIC_BALL;
+    NX[r] = bStatic ? -dx : dx;
+    NY[r] = bStatic ? -dy : dy;
+    NZ[r] = bStatic ? -dz : dz;
+    RA[r] = moving ? ra : 0;
+    RB[r] = bStatic ? ra : rb;
+    CA[r] = moving ? a : 0;
+    CB[r] = bStatic ? a : b;
+    FE[r] = aStatic ? a : bStatic ? b : 0;
     SEP[r] = sep;
     count++;
   }

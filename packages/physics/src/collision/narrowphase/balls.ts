@@ -30,33 +30,19 @@ function pushContact(buf: ContactBuffer, kind: number, a: number, b: number, fea
  */
 const rowArgs = new Float64Array(6);
 
-/** Scratch of sphereSweep: [0..2] r, [3..5] w, [6] R, [7] h (see sweepSphere), then [8] its result t. Not world state. */
+/** Scratch of sphereSweep: [0..2] r, [3..5] w, [6] R, [7] h, then [8] its result t. Not world state. */
 const sphereArgs = new Float64Array(9);
 
-/** Scratch of segmentSweep: [0..2] p, [3..5] e, [6..8] w, [9] R, [10] h (see sweepSegment), then [11] its result t. Not world state. */
+/** Scratch of segmentSweep: [0..2] p, [3..5] e, [6..8] w, [9] R, [10] h, then [11] its result t. Not world state. */
 const segmentArgs = new Float64Array(12);
 
 /**
- * Earliest time t in (0, h] at which two spheres with centre offset r (B minus A) and relative
- * velocity w come to centre distance R, i.e. the smaller root of |r + w t|^2 = R^2; 0 if they
- * already touch or overlap, or do not meet within h. (Ericson, Real-Time Collision Detection, 5.5.7.)
- * @category Collision
+ * Sphere sweep on `sphereArgs` (no doubles cross the call): the earliest time t in (0, h] at which two
+ * spheres with centre offset r (B minus A, slots 0-2, m) and relative velocity w (slots 3-5, m/s) come
+ * to centre distance R (slot 6, m), h in slot 7 (s), i.e. the smaller root of |r + w t|^2 = R^2; 0 if
+ * they already touch or overlap, or do not meet within h. t is written to slot 8. (Ericson, Real-Time
+ * Collision Detection, 5.5.7.)
  */
-export function sweepSphere(rx: number, ry: number, rz: number, wx: number, wy: number, wz: number, R: number, h: number): number {
-  const io = sphereArgs;
-  io[0] = rx;
-  io[1] = ry;
-  io[2] = rz;
-  io[3] = wx;
-  io[4] = wy;
-  io[5] = wz;
-  io[6] = R;
-  io[7] = h;
-  sphereSweep();
-  return io[8]!;
-}
-
-/** sweepSphere on `sphereArgs` (r, w, R, h in slots 0-7), its t written to slot 8 (no doubles cross the call). */
 function sphereSweep(): void {
   const io = sphereArgs;
   const rx = io[0]!,
@@ -80,42 +66,13 @@ function sphereSweep(): void {
 }
 
 /**
- * Earliest time t in (0, h] at which a sphere centre starting at p (relative to the segment's first
- * end point) and moving with velocity w comes within R of the segment from 0 to e: against the
- * segment's side (the infinite line, accepted if the touching point lies between the end points) or
- * against either end point. 0 if it already touches or does not reach the segment within h.
- * @category Collision
+ * Segment sweep on `segmentArgs` (no doubles cross the call): the earliest time t in (0, h] at which a
+ * sphere centre starting at p (slots 0-2, m, relative to the segment's first end point) and moving
+ * with velocity w (slots 6-8, m/s) comes within R (slot 9, m) of the segment from 0 to e (slots 3-5,
+ * m), h in slot 10 (s): against the segment's side (the infinite line, accepted if the touching point
+ * lies between the end points) or against either end point (sphereSweep). 0 if it already touches or
+ * does not reach the segment within h. t is written to slot 11.
  */
-export function sweepSegment(
-  px: number,
-  py: number,
-  pz: number,
-  ex: number,
-  ey: number,
-  ez: number,
-  wx: number,
-  wy: number,
-  wz: number,
-  R: number,
-  h: number,
-): number {
-  const io = segmentArgs;
-  io[0] = px;
-  io[1] = py;
-  io[2] = pz;
-  io[3] = ex;
-  io[4] = ey;
-  io[5] = ez;
-  io[6] = wx;
-  io[7] = wy;
-  io[8] = wz;
-  io[9] = R;
-  io[10] = h;
-  segmentSweep();
-  return io[11]!;
-}
-
-/** sweepSegment on `segmentArgs` (p, e, w, R, h in slots 0-10), its t written to slot 11 (no doubles cross the call). */
 function segmentSweep(): void {
   const io = segmentArgs,
     sp = sphereArgs;
@@ -127,9 +84,9 @@ function segmentSweep(): void {
     ez = io[5]!,
     wx = io[6]!,
     wy = io[7]!,
-    wz = io[8]!,
-    R = io[9]!,
-    h = io[10]!;
+    wz = io[8]!;
+  sp[6] = io[9]!;
+  sp[7] = io[10]!;
   const len2 = ex * ex + ey * ey + ez * ez;
   let best = 0;
   if (len2 > 0) {
@@ -142,8 +99,6 @@ function segmentSweep(): void {
     sp[3] = wx - we * ex;
     sp[4] = wy - we * ey;
     sp[5] = wz - we * ez;
-    sp[6] = R;
-    sp[7] = h;
     sphereSweep();
     const t = sp[8]!;
     if (t > 0) {
@@ -154,23 +109,18 @@ function segmentSweep(): void {
       }
     }
   }
-  sp[0] = px;
-  sp[1] = py;
-  sp[2] = pz;
+  // End points: the first at p, the second at p - e.
   sp[3] = wx;
   sp[4] = wy;
   sp[5] = wz;
-  sp[6] = R;
-  sp[7] = h;
-  sphereSweep();
-  const t0 = sp[8]!;
-  if (t0 > 0) best = t0;
-  sp[0] = px - ex;
-  sp[1] = py - ey;
-  sp[2] = pz - ez;
-  sphereSweep();
-  const t1 = sp[8]!;
-  if (t1 > 0 && (best === 0 || t1 < best)) best = t1;
+  for (let k = 0; k < 2; k++) {
+    sp[0] = k === 0 ? px : px - ex;
+    sp[1] = k === 0 ? py : py - ey;
+    sp[2] = k === 0 ? pz : pz - ez;
+    sphereSweep();
+    const t = sp[8]!;
+    if (t > 0 && (best === 0 || t < best)) best = t;
+  }
   io[11] = best;
 }
 

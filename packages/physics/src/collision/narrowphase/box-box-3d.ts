@@ -174,41 +174,18 @@ export function boxBox3DAt(RA: Float64Array, oa: number, RB: Float64Array, ob: n
   const tb1 = tx * RB[ob + M01]! + ty * RB[ob + M11]! + tz * RB[ob + M21]!;
   const tb2 = tx * RB[ob + M02]! + ty * RB[ob + M12]! + tz * RB[ob + M22]!;
   // A's faces.
-  let sA = -Infinity,
-    fA = 0;
-  {
-    const s0 = Math.abs(ta0) - ea0 - (eb0 * AC[0]! + eb1 * AC[1]! + eb2 * AC[2]!);
-    const s1 = Math.abs(ta1) - ea1 - (eb0 * AC[3]! + eb1 * AC[4]! + eb2 * AC[5]!);
-    const s2 = Math.abs(ta2) - ea2 - (eb0 * AC[6]! + eb1 * AC[7]! + eb2 * AC[8]!);
-    sA = s0;
-    fA = 0;
-    if (s1 > sA) {
-      sA = s1;
-      fA = 1;
-    }
-    if (s2 > sA) {
-      sA = s2;
-      fA = 2;
-    }
-  }
+  const sa0 = Math.abs(ta0) - ea0 - (eb0 * AC[0]! + eb1 * AC[1]! + eb2 * AC[2]!),
+    sa1 = Math.abs(ta1) - ea1 - (eb0 * AC[3]! + eb1 * AC[4]! + eb2 * AC[5]!),
+    sa2 = Math.abs(ta2) - ea2 - (eb0 * AC[6]! + eb1 * AC[7]! + eb2 * AC[8]!);
+  const fA = largestOf3(sa0, sa1, sa2),
+    sA = fA === 0 ? sa0 : fA === 1 ? sa1 : sa2;
   if (sA > margin) return;
-  let sB = -Infinity,
-    fB = 0;
-  {
-    const s0 = Math.abs(tb0) - eb0 - (ea0 * AC[0]! + ea1 * AC[3]! + ea2 * AC[6]!);
-    const s1 = Math.abs(tb1) - eb1 - (ea0 * AC[1]! + ea1 * AC[4]! + ea2 * AC[7]!);
-    const s2 = Math.abs(tb2) - eb2 - (ea0 * AC[2]! + ea1 * AC[5]! + ea2 * AC[8]!);
-    sB = s0;
-    fB = 0;
-    if (s1 > sB) {
-      sB = s1;
-      fB = 1;
-    }
-    if (s2 > sB) {
-      sB = s2;
-      fB = 2;
-    }
-  }
+  // B's faces.
+  const sb0 = Math.abs(tb0) - eb0 - (ea0 * AC[0]! + ea1 * AC[3]! + ea2 * AC[6]!),
+    sb1 = Math.abs(tb1) - eb1 - (ea0 * AC[1]! + ea1 * AC[4]! + ea2 * AC[7]!),
+    sb2 = Math.abs(tb2) - eb2 - (ea0 * AC[2]! + ea1 * AC[5]! + ea2 * AC[8]!);
+  const fB = largestOf3(sb0, sb1, sb2),
+    sB = fB === 0 ? sb0 : fB === 1 ? sb1 : sb2;
   if (sB > margin) return;
   // Edge axes a_i x b_j.
   let sE = -Infinity,
@@ -244,7 +221,7 @@ export function boxBox3DAt(RA: Float64Array, oa: number, RB: Float64Array, ob: n
   const size = Math.min(ea0, ea1, ea2, eb0, eb1, eb2);
   const faceBest = sA > sB ? sA : sB;
   if (eI >= 0 && sE > faceBest + EDGE_BIAS * size) {
-    edgeContact(ax, ay, az, RA, oa, ea0, ea1, ea2, bx, by, bz, RB, ob, eb0, eb1, eb2, tx, ty, tz, eI, eJ, margin, out);
+    edgeContact(RA, oa, RB, ob, eI, eJ, out);
     return;
   }
   // faceContact reads the boxes' numbers from boxArgs: reference first when flipped is 0, else incident first.
@@ -259,6 +236,17 @@ export function boxBox3DAt(RA: Float64Array, oa: number, RB: Float64Array, ob: n
     const tf = fA === 0 ? ta0 : fA === 1 ? ta1 : ta2;
     faceContact(RA, oa, fA, tf >= 0 ? 1 : -1, RB, ob, out, 0);
   }
+}
+
+/** Which of s0, s1, s2 is the largest: 0, 1 or 2, the first of equal ones (a NaN never wins over an earlier one). */
+function largestOf3(s0: number, s1: number, s2: number): number {
+  let s = s0,
+    f = 0;
+  if (s1 > s) {
+    s = s1;
+    f = 1;
+  }
+  return s2 > s ? 2 : f;
 }
 
 /**
@@ -433,32 +421,21 @@ function clipIncident(): number {
   return n;
 }
 
-/** Edge a_i of A against edge b_j of B: one point between their closest points. */
-function edgeContact(
-  ax: number,
-  ay: number,
-  az: number,
-  RA: Float64Array,
-  oa: number,
-  ea0: number,
-  ea1: number,
-  ea2: number,
-  bx: number,
-  by: number,
-  bz: number,
-  RB: Float64Array,
-  ob: number,
-  eb0: number,
-  eb1: number,
-  eb2: number,
-  tx: number,
-  ty: number,
-  tz: number,
-  i: number,
-  j: number,
-  margin: number,
-  out: Manifold3D,
-): void {
+/** Edge a_i of A against edge b_j of B (the boxes' numbers in boxArgs, as boxBox3DAt reads them): one point between their closest points. */
+function edgeContact(RA: Float64Array, oa: number, RB: Float64Array, ob: number, i: number, j: number, out: Manifold3D): void {
+  // Half extent k of A at g[BOX_A + BOX_HX + k], of B at g[BOX_B + BOX_HX + k] (box-args-3d.ts).
+  const g = boxArgs,
+    ha = BOX_A + BOX_HX,
+    hb = BOX_B + BOX_HX;
+  const ax = g[BOX_A + BOX_CX]!,
+    ay = g[BOX_A + BOX_CY]!,
+    az = g[BOX_A + BOX_CZ]!;
+  const bx = g[BOX_B + BOX_CX]!,
+    by = g[BOX_B + BOX_CY]!,
+    bz = g[BOX_B + BOX_CZ]!;
+  const tx = bx - ax,
+    ty = by - ay,
+    tz = bz - az;
   const dax = RA[oa + M00 + i]!,
     day = RA[oa + M10 + i]!,
     daz = RA[oa + M20 + i]!;
@@ -488,7 +465,7 @@ function edgeContact(
     bitsB = 0;
   for (let k = 0; k < 3; k++) {
     if (k !== i) {
-      const e = k === 0 ? ea0 : k === 1 ? ea1 : ea2;
+      const e = g[ha + k]!;
       const cx = RA[oa + M00 + k]!,
         cy = RA[oa + M10 + k]!,
         cz = RA[oa + M20 + k]!;
@@ -499,7 +476,7 @@ function edgeContact(
       if (s > 0) bitsA |= 1 << k;
     }
     if (k !== j) {
-      const e = k === 0 ? eb0 : k === 1 ? eb1 : eb2;
+      const e = g[hb + k]!;
       const cx = RB[ob + M00 + k]!,
         cy = RB[ob + M10 + k]!,
         cz = RB[ob + M20 + k]!;
@@ -511,8 +488,8 @@ function edgeContact(
     }
   }
   // Closest points of the two lines p_a + s d_a and p_b + t d_b (unit directions), clamped to the half lengths.
-  const hA = i === 0 ? ea0 : i === 1 ? ea1 : ea2,
-    hB = j === 0 ? eb0 : j === 1 ? eb1 : eb2;
+  const hA = g[ha + i]!,
+    hB = g[hb + j]!;
   const rx = pax - pbx,
     ry = pay - pby,
     rz = paz - pbz;
@@ -539,7 +516,7 @@ function edgeContact(
     qby = pby + dby * t,
     qbz = pbz + dbz * t;
   const sep = (qbx - qax) * nx + (qby - qay) * ny + (qbz - qaz) * nz;
-  if (sep > margin) return;
+  if (sep > g[BOX_MARGIN]!) return;
   out.nx = nx;
   out.ny = ny;
   out.nz = nz;

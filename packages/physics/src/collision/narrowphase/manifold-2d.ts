@@ -258,13 +258,33 @@ export function collideCircles(
     nx = dx / d;
     ny = dy / d;
   }
+  roundPoint(out, ax, ay, ra, bx, by, rb, nx, ny, sep, 0);
+}
+
+/**
+ * Writes the one-point manifold between a round surface of radius ra (m) about (qx, qy) and one of
+ * radius rb about (cx, cy): unit normal (nx, ny) from the first to the second, the point midway between
+ * the surface points q + ra n and c - rb n, separation `sep` (m) and feature id `id`.
+ */
+function roundPoint(
+  out: Manifold,
+  qx: number,
+  qy: number,
+  ra: number,
+  cx: number,
+  cy: number,
+  rb: number,
+  nx: number,
+  ny: number,
+  sep: number,
+  id: number,
+): void {
   out.nx = nx;
   out.ny = ny;
-  // Midway between the surface points a + ra n and b - rb n.
-  out.px[0] = 0.5 * (ax + ra * nx + bx - rb * nx);
-  out.py[0] = 0.5 * (ay + ra * ny + by - rb * ny);
+  out.px[0] = 0.5 * (qx + ra * nx + cx - rb * nx);
+  out.py[0] = 0.5 * (qy + ra * ny + cy - rb * ny);
   out.separation[0] = sep;
-  out.id[0] = 0;
+  out.id[0] = id;
   out.count = 1;
 }
 
@@ -316,13 +336,7 @@ function collideSegmentCircleLocal(out: Manifold, A: ConvexGeometry, cx: number,
     nx = dx / d;
     ny = dy / d;
   }
-  out.nx = nx;
-  out.ny = ny;
-  out.px[0] = 0.5 * (qx + ra * nx + cx - rb * nx);
-  out.py[0] = 0.5 * (qy + ra * ny + cy - rb * ny);
-  out.separation[0] = sep;
-  out.id[0] = featureId(t <= 0 ? 0 : t >= 1 ? 1 : 2, 0);
-  out.count = 1;
+  roundPoint(out, qx, qy, ra, cx, cy, rb, nx, ny, sep, featureId(t <= 0 ? 0 : t >= 1 ? 1 : 2, 0));
 }
 
 /** Polygon A (3+ vertices, radius) against a circle at (cx, cy) of radius rb, in A's frame. */
@@ -372,14 +386,7 @@ function collidePolygonCircleLocal(out: Manifold, A: ConvexGeometry, cx: number,
     qx = cx - best * nx;
     qy = cy - best * ny;
   }
-  out.nx = nx;
-  out.ny = ny;
-  const ra = A.radius;
-  out.px[0] = 0.5 * (qx + ra * nx + cx - rb * nx);
-  out.py[0] = 0.5 * (qy + ra * ny + cy - rb * ny);
-  out.separation[0] = sep;
-  out.id[0] = featureId(id, 0);
-  out.count = 1;
+  roundPoint(out, qx, qy, A.radius, cx, cy, rb, nx, ny, sep, featureId(id, 0));
 }
 
 /** Largest separation of poly2's vertices from poly1's edges: writes [edge, separation] to `res`. */
@@ -477,21 +484,16 @@ export function collidePolygonsLocal(out: Manifold, A: ConvexGeometry, B: Convex
       const d = Math.sqrt(dx * dx + dy * dy);
       const sep = d - radius;
       if (sep > speculative || d < 1e-12) return;
-      let nx = dx / d,
+      const nx = dx / d,
         ny = dy / d;
       const ia = f1 === 0 ? i11 : i12,
         ib = f2 === 0 ? i21 : i22;
-      out.px[0] = 0.5 * (vax + r1 * nx + vbx - r2 * nx);
-      out.py[0] = 0.5 * (vay + r1 * ny + vby - r2 * ny);
-      out.separation[0] = sep;
+      roundPoint(out, vax, vay, r1, vbx, vby, r2, nx, ny, sep, featureId(ia, ib));
       if (flip) {
-        nx = -nx;
-        ny = -ny;
+        out.nx = -nx;
+        out.ny = -ny;
         out.id[0] = featureId(ib, ia);
-      } else out.id[0] = featureId(ia, ib);
-      out.nx = nx;
-      out.ny = ny;
-      out.count = 1;
+      }
       return;
     }
   }
@@ -529,43 +531,31 @@ export function collidePolygonsLocal(out: Manifold, A: ConvexGeometry, B: Convex
   ly += kL * rny;
   ux += kU * rnx;
   uy += kU * rny;
-  let count = 0;
+  // Normal and feature ids from A to B: a flipped pair's reversed, its points in the other order.
   if (!flip) {
     out.nx = rnx;
     out.ny = rny;
-    if (sepL - radius <= speculative) {
-      out.px[count] = lx;
-      out.py[count] = ly;
-      out.separation[count] = sepL - radius;
-      out.id[count] = featureId(i11, i22);
-      count++;
-    }
-    if (sepU - radius <= speculative) {
-      out.px[count] = ux;
-      out.py[count] = uy;
-      out.separation[count] = sepU - radius;
-      out.id[count] = featureId(i12, i21);
-      count++;
-    }
+    const count = keepPoint(out, 0, lx, ly, sepL - radius, featureId(i11, i22), speculative);
+    out.count = keepPoint(out, count, ux, uy, sepU - radius, featureId(i12, i21), speculative);
   } else {
     out.nx = -rnx;
     out.ny = -rny;
-    if (sepU - radius <= speculative) {
-      out.px[count] = ux;
-      out.py[count] = uy;
-      out.separation[count] = sepU - radius;
-      out.id[count] = featureId(i21, i12);
-      count++;
-    }
-    if (sepL - radius <= speculative) {
-      out.px[count] = lx;
-      out.py[count] = ly;
-      out.separation[count] = sepL - radius;
-      out.id[count] = featureId(i22, i11);
-      count++;
-    }
+    const count = keepPoint(out, 0, ux, uy, sepU - radius, featureId(i21, i12), speculative);
+    out.count = keepPoint(out, count, lx, ly, sepL - radius, featureId(i22, i11), speculative);
   }
-  out.count = count;
+}
+
+/**
+ * Writes point (x, y) (m), its separation (m) and feature id into slot `count` of `out` when the
+ * separation is at most `speculative` (m); returns the number of points then written.
+ */
+function keepPoint(out: Manifold, count: number, x: number, y: number, separation: number, id: number, speculative: number): number {
+  if (!(separation <= speculative)) return count;
+  out.px[count] = x;
+  out.py[count] = y;
+  out.separation[count] = separation;
+  out.id[count] = id;
+  return count + 1;
 }
 
 const fr = new Float64Array(2);
