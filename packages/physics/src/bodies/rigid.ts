@@ -146,6 +146,28 @@ export function setInertia(world: PhysicsWorld, eid: number, inertia: number | A
 const tmp = new Float64Array(3);
 
 /**
+ * The checks of a load applied at a point (applyForceAtPoint, applyImpulseAtPoint): body `eid` must
+ * be a live body, `load` (named `name`) and `point` vectors of `world.dimensions` finite numbers.
+ * Wakes the body's island. @returns the body's slot.
+ * @throws TypeError | RangeError naming `where` on a bad vector, a removed entity or one that is not a body.
+ */
+function pointLoadBody(
+  world: PhysicsWorld,
+  where: string,
+  eid: number,
+  name: string,
+  load: ArrayLike<number>,
+  point: ArrayLike<number>,
+): number {
+  const slot = resolveKind(world, eid, 'body', where);
+  const d = world.dimensions;
+  assertVector(where, name, load, d);
+  assertVector(where, 'point', point, d);
+  wakeIsland(world, slot);
+  return slot;
+}
+
+/**
  * Applies force F (N, world frame) at the world point p (m): adds F to the force accumulator and
  * (p - x) x F to the torque accumulator. Call it from a system in the 'forces' stage (accumulators
  * are cleared at the start of each evaluation).
@@ -154,12 +176,8 @@ const tmp = new Float64Array(3);
  * @category Bodies
  */
 export function applyForceAtPoint(world: PhysicsWorld, eid: number, force: ArrayLike<number>, point: ArrayLike<number>): void {
-  const where = 'applyForceAtPoint';
-  const slot = resolveKind(world, eid, 'body', where);
+  const slot = pointLoadBody(world, 'applyForceAtPoint', eid, 'force', force, point);
   const d = world.dimensions;
-  assertVector(where, 'force', force, d);
-  assertVector(where, 'point', point, d);
-  wakeIsland(world, slot);
   const c = world.components;
   addComponentIfMissing(world, slot, c.Force);
   addComponentIfMissing(world, slot, c.Torque);
@@ -186,12 +204,8 @@ export function applyForceAtPoint(world: PhysicsWorld, eid: number, force: Array
  * @category Bodies
  */
 export function applyImpulseAtPoint(world: PhysicsWorld, eid: number, impulse: ArrayLike<number>, point: ArrayLike<number>): void {
-  const where = 'applyImpulseAtPoint';
-  const slot = resolveKind(world, eid, 'body', where);
+  const slot = pointLoadBody(world, 'applyImpulseAtPoint', eid, 'impulse', impulse, point);
   const d = world.dimensions;
-  assertVector(where, 'impulse', impulse, d);
-  assertVector(where, 'point', point, d);
-  wakeIsland(world, slot);
   const c = world.components;
   const im = hasComponent(world, slot, c.Mass) ? c.Mass.inv[slot]! : 0;
   const jx = impulse[0]!,
