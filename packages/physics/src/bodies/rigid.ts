@@ -1,7 +1,15 @@
 import { addComponent, hasComponent } from 'bitecs';
 import { wakeIsland } from '../islands/sleep.js';
 import { rotateVector, rotateVectorInverse } from '../math/quaternion.js';
-import { assertFinite, assertNonNegative, assertOptions, assertPositive, assertVector, describe } from '../validation/validate.js';
+import {
+  assertFinite,
+  assertNonNegative,
+  assertOptions,
+  assertPositive,
+  assertVector,
+  describe,
+  unitVector,
+} from '../validation/validate.js';
 import { createSlot, currentHandle, resolveKind } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { addComponentIfMissing } from '../world/options.js';
@@ -323,17 +331,9 @@ export function addPlane(world: PhysicsWorld, options: PlaneOptions): number {
   const where = 'addPlane';
   assertOptions(where, options, ['normal', 'point', 'restitution', 'friction', 'staticFriction']);
   const d = world.dimensions;
-  assertVector(where, 'normal', options.normal, d);
+  const [nx, ny, nz] = unitVector(where, 'normal', options.normal, d);
   if (options.point !== undefined) assertVector(where, 'point', options.point, d);
   assertMaterial(where, options);
-  const nx0 = options.normal[0]!,
-    ny0 = options.normal[1]!,
-    nz0 = d === 3 ? options.normal[2]! : 0;
-  const len = Math.hypot(nx0, ny0, nz0);
-  if (!(len > 0)) throw new RangeError(`${where}: normal must not be zero, got ${describe(options.normal)}`);
-  const nx = nx0 / len,
-    ny = ny0 / len,
-    nz = nz0 / len;
   const p = options.point;
   const dist = p ? nx * p[0]! + ny * p[1]! + (d === 3 ? nz * p[2]! : 0) : 0;
   assertFinite(where, 'offset', dist);
