@@ -2,8 +2,8 @@ import { addComponent, entityExists, hasComponent, removeEntity } from 'bitecs';
 import {
   assertFinite,
   assertInRange,
-  assertKnownKeys,
   assertNonNegative,
+  assertOptions,
   assertPositive,
   assertVector,
   describe,
@@ -84,8 +84,7 @@ export const DEFAULT_LIFT_SLOPE = (2 * Math.PI) / (1 + 2 / 6);
 export function addLiftingSurface(world: PhysicsWorld, options: LiftingSurfaceOptions): number {
   const where = 'addLiftingSurface';
   if (world.dimensions !== 3) throw new RangeError(`${where}: lifting surfaces need a 3D world, got dimensions ${world.dimensions}`);
-  if (options === null || typeof options !== 'object') throw new TypeError(`${where}: options must be an object, got ${describe(options)}`);
-  assertKnownKeys(where, options, KNOWN);
+  assertOptions(where, options, KNOWN);
   const c = world.components;
   const b = resolveKind(world, options.body, 'body', where, 'body');
   if (hasComponent(world, b, c.Static) || hasComponent(world, b, c.Kinematic) || !hasComponent(world, b, c.AngularVelocity)) {
