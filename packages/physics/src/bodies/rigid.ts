@@ -1,7 +1,15 @@
 import { addComponent, hasComponent } from 'bitecs';
 import { wakeIsland } from '../islands/sleep.js';
 import { rotateVector, rotateVectorInverse } from '../math/quaternion.js';
-import { assertFinite, assertNonNegative, assertOptions, assertPositive, assertVector, describe } from '../validation/validate.js';
+import {
+  assertFinite,
+  assertNonNegative,
+  assertOptions,
+  assertPositive,
+  assertVector,
+  describe,
+  unitVector,
+} from '../validation/validate.js';
 import { createSlot, currentHandle, resolveKind } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { addComponentIfMissing } from '../world/options.js';
@@ -146,6 +154,28 @@ export function setInertia(world: PhysicsWorld, eid: number, inertia: number | A
 const tmp = new Float64Array(3);
 
 /**
+ * The checks of a load applied at a point (applyForceAtPoint, applyImpulseAtPoint): body `eid` must
+ * be a live body, `load` (named `name`) and `point` vectors of `world.dimensions` finite numbers.
+ * Wakes the body's island. @returns the body's slot.
+ * @throws TypeError | RangeError naming `where` on a bad vector, a removed entity or one that is not a body.
+ */
+function pointLoadBody(
+  world: PhysicsWorld,
+  where: string,
+  eid: number,
+  name: string,
+  load: ArrayLike<number>,
+  point: ArrayLike<number>,
+): number {
+  const slot = resolveKind(world, eid, 'body', where);
+  const d = world.dimensions;
+  assertVector(where, name, load, d);
+  assertVector(where, 'point', point, d);
+  wakeIsland(world, slot);
+  return slot;
+}
+
+/**
  * Applies force F (N, world frame) at the world point p (m): adds F to the force accumulator and
  * (p - x) x F to the torque accumulator. Call it from a system in the 'forces' stage (accumulators
  * are cleared at the start of each evaluation).
@@ -154,12 +184,8 @@ const tmp = new Float64Array(3);
  * @category Bodies
  */
 export function applyForceAtPoint(world: PhysicsWorld, eid: number, force: ArrayLike<number>, point: ArrayLike<number>): void {
-  const where = 'applyForceAtPoint';
-  const slot = resolveKind(world, eid, 'body', where);
+  const slot = pointLoadBody(world, 'applyForceAtPoint', eid, 'force', force, point);
   const d = world.dimensions;
-  assertVector(where, 'force', force, d);
-  assertVector(where, 'point', point, d);
-  wakeIsland(world, slot);
   const c = world.components;
   addComponentIfMissing(world, slot, c.Force);
   addComponentIfMissing(world, slot, c.Torque);
@@ -186,12 +212,8 @@ export function applyForceAtPoint(world: PhysicsWorld, eid: number, force: Array
  * @category Bodies
  */
 export function applyImpulseAtPoint(world: PhysicsWorld, eid: number, impulse: ArrayLike<number>, point: ArrayLike<number>): void {
-  const where = 'applyImpulseAtPoint';
-  const slot = resolveKind(world, eid, 'body', where);
+  const slot = pointLoadBody(world, 'applyImpulseAtPoint', eid, 'impulse', impulse, point);
   const d = world.dimensions;
-  assertVector(where, 'impulse', impulse, d);
-  assertVector(where, 'point', point, d);
-  wakeIsland(world, slot);
   const c = world.components;
   const im = hasComponent(world, slot, c.Mass) ? c.Mass.inv[slot]! : 0;
   const jx = impulse[0]!,
@@ -309,17 +331,9 @@ export function addPlane(world: PhysicsWorld, options: PlaneOptions): number {
   const where = 'addPlane';
   assertOptions(where, options, ['normal', 'point', 'restitution', 'friction', 'staticFriction']);
   const d = world.dimensions;
-  assertVector(where, 'normal', options.normal, d);
+  const [nx, ny, nz] = unitVector(where, 'normal', options.normal, d);
   if (options.point !== undefined) assertVector(where, 'point', options.point, d);
   assertMaterial(where, options);
-  const nx0 = options.normal[0]!,
-    ny0 = options.normal[1]!,
-    nz0 = d === 3 ? options.normal[2]! : 0;
-  const len = Math.hypot(nx0, ny0, nz0);
-  if (!(len > 0)) throw new RangeError(`${where}: normal must not be zero, got ${describe(options.normal)}`);
-  const nx = nx0 / len,
-    ny = ny0 / len,
-    nz = nz0 / len;
   const p = options.point;
   const dist = p ? nx * p[0]! + ny * p[1]! + (d === 3 ? nz * p[2]! : 0) : 0;
   assertFinite(where, 'offset', dist);

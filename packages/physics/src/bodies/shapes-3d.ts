@@ -15,9 +15,9 @@ import {
 import { Shape3DKind, type Shape3DStore, shapes3DOf } from '../shapes/store-3d.js';
 import {
   assertFinite,
-  assertKnownKeys,
   assertNonNegative,
   assertOptionalBoolean,
+  assertOptions,
   assertPositive,
   assertVector,
   describe,
@@ -196,8 +196,7 @@ export function addShape3D(world: PhysicsWorld, body: number, options: Shape3DOp
       `${where}: body must be a body without a ball radius (addBody's radius makes it a ball; give the sphere as a shape instead: { type: 'sphere', radius }), got body ${describe(body)} with radius ${balls.radius[b]}`,
     );
   }
-  if (options === null || typeof options !== 'object') throw new TypeError(`${where}: options must be an object, got ${describe(options)}`);
-  assertKnownKeys(where, options, OPTIONS);
+  assertOptions(where, options, OPTIONS);
   assertOptionalBoolean(where, 'sensor', options.sensor);
   const g = geometryOf(where, options);
   let ox = 0,

@@ -9,6 +9,7 @@ import {
   assertPositive,
   assertVector,
   describe,
+  unitVector,
 } from '../validation/validate.js';
 import { createSlot, currentHandle, resolveKind } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
@@ -273,17 +274,7 @@ export function setLift(world: PhysicsWorld, body: number, options: { k: number;
   const eid = resolveKind(world, body, 'body', where);
   assertOptions(where, options, ['k', 'axis']);
   assertNonNegative(where, 'k', options.k);
-  let ax = 0,
-    ay = 0,
-    az = 1;
-  if (options.axis !== undefined) {
-    assertVector(where, 'axis', options.axis, 3);
-    const n = Math.hypot(options.axis[0]!, options.axis[1]!, options.axis[2]!);
-    if (!(n > 0)) throw new RangeError(`${where}: axis must not be zero, got ${describe(options.axis)}`);
-    ax = options.axis[0]! / n;
-    ay = options.axis[1]! / n;
-    az = options.axis[2]! / n;
-  }
+  const [ax, ay, az] = options.axis === undefined ? [0, 0, 1] : unitVector(where, 'axis', options.axis, 3);
   const c = world.components;
   addComponentIfMissing(world, eid, c.Lift);
   c.Lift.k[eid] = options.k;
@@ -601,7 +592,7 @@ export function setThrust(
   assertPositive(where, 'exhaustVelocity', options.exhaustVelocity);
   assertNonNegative(where, 'massFlowRate', options.massFlowRate);
   assertNonNegative(where, 'fuel', options.fuel);
-  assertVector(where, 'direction', options.direction, world.dimensions);
+  const [dx, dy, dz] = unitVector(where, 'direction', options.direction, world.dimensions);
   const c = world.components;
   if (!hasComponent(world, eid, c.Mass) || !(c.Mass.value[eid]! > 0)) throw new RangeError(`${where}: entity ${eid} has no positive mass`);
   if (!(options.fuel < c.Mass.value[eid]!)) {
@@ -609,17 +600,14 @@ export function setThrust(
       `${where}: fuel (${options.fuel} kg) must be less than the body's mass (${c.Mass.value[eid]} kg), which includes it`,
     );
   }
-  const [x, y, z] = vec3(world, options.direction);
-  const n = Math.hypot(x, y, z);
-  if (!(n > 0)) throw new RangeError(`${where}: direction must not be zero`);
   addComponentIfMissing(world, eid, c.Thrust);
   const T = c.Thrust;
   T.exhaustVelocity[eid] = options.exhaustVelocity;
   T.massFlowRate[eid] = options.massFlowRate;
   T.fuel[eid] = options.fuel;
-  T.dirX[eid] = x / n;
-  T.dirY[eid] = y / n;
-  T.dirZ[eid] = z / n;
+  T.dirX[eid] = dx;
+  T.dirY[eid] = dy;
+  T.dirZ[eid] = dz;
 }
 
 /**
@@ -638,17 +626,7 @@ export function setVortex(
   assertVector(where, 'centre', options.centre, world.dimensions);
   assertFinite(where, 'k', options.k);
   if (options.n !== undefined) assertFinite(where, 'n', options.n);
-  let ax = 0,
-    ay = 0,
-    az = 1;
-  if (options.axis !== undefined) {
-    assertVector(where, 'axis', options.axis, 3);
-    const len = Math.hypot(options.axis[0]!, options.axis[1]!, options.axis[2]!);
-    if (!(len > 0)) throw new RangeError(`${where}: axis must not be zero`);
-    ax = options.axis[0]! / len;
-    ay = options.axis[1]! / len;
-    az = options.axis[2]! / len;
-  }
+  const [ax, ay, az] = options.axis === undefined ? [0, 0, 1] : unitVector(where, 'axis', options.axis, 3);
   const c = world.components;
   addComponentIfMissing(world, eid, c.Vortex);
   const [x, y, z] = vec3(world, options.centre);

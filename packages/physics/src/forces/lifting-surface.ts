@@ -2,11 +2,12 @@ import { addComponent, entityExists, hasComponent, removeEntity } from 'bitecs';
 import {
   assertFinite,
   assertInRange,
-  assertKnownKeys,
   assertNonNegative,
+  assertOptions,
   assertPositive,
   assertVector,
   describe,
+  unitVector,
 } from '../validation/validate.js';
 import { createSlot, currentHandle, resolveEntity, resolveKind } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
@@ -83,8 +84,7 @@ export const DEFAULT_LIFT_SLOPE = (2 * Math.PI) / (1 + 2 / 6);
 export function addLiftingSurface(world: PhysicsWorld, options: LiftingSurfaceOptions): number {
   const where = 'addLiftingSurface';
   if (world.dimensions !== 3) throw new RangeError(`${where}: lifting surfaces need a 3D world, got dimensions ${world.dimensions}`);
-  if (options === null || typeof options !== 'object') throw new TypeError(`${where}: options must be an object, got ${describe(options)}`);
-  assertKnownKeys(where, options, KNOWN);
+  assertOptions(where, options, KNOWN);
   const c = world.components;
   const b = resolveKind(world, options.body, 'body', where, 'body');
   if (hasComponent(world, b, c.Static) || hasComponent(world, b, c.Kinematic) || !hasComponent(world, b, c.AngularVelocity)) {
@@ -93,10 +93,8 @@ export function addLiftingSurface(world: PhysicsWorld, options: LiftingSurfaceOp
   const offset = options.offset ?? [0, 0, 0];
   assertVector(where, 'offset', offset, 3);
   const normal = options.normal ?? [0, 1, 0];
-  assertVector(where, 'normal', normal, 3);
-  const nLen = Math.hypot(normal[0]!, normal[1]!, normal[2]!);
-  if (!(nLen > 0)) throw new RangeError(`${where}: normal must not be zero, got ${describe(normal)}`);
-  if (Math.hypot(normal[1]!, normal[2]!) / nLen < 1e-6)
+  const unit = unitVector(where, 'normal', normal, 3);
+  if (Math.hypot(unit[1], unit[2]) < 1e-6)
     throw new RangeError(`${where}: normal must not lie along the chord (body x), got ${describe(normal)}`);
   assertPositive(where, 'area', options.area);
   const slope = options.liftSlope ?? DEFAULT_LIFT_SLOPE;
@@ -121,9 +119,9 @@ export function addLiftingSurface(world: PhysicsWorld, options: LiftingSurfaceOp
   L.offsetX[s] = offset[0]!;
   L.offsetY[s] = offset[1]!;
   L.offsetZ[s] = offset[2]!;
-  L.normalX[s] = normal[0]! / nLen;
-  L.normalY[s] = normal[1]! / nLen;
-  L.normalZ[s] = normal[2]! / nLen;
+  L.normalX[s] = unit[0];
+  L.normalY[s] = unit[1];
+  L.normalZ[s] = unit[2];
   L.area[s] = options.area;
   L.liftSlope[s] = slope;
   L.stallAngle[s] = stall;

@@ -1,3 +1,4 @@
+import { rotateInPlace } from '../math/quaternion.js';
 import { reportNonFinite } from '../world/errors.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { splitRigidRotations } from './euler-equations.js';
@@ -75,8 +76,8 @@ function advanceAngles(world: PhysicsWorld, ents: ArrayLike<number>, h: number):
 
 /**
  * 3D: q <- exp(w h / 2) q for every body of `ents`; returns the sum of their w components (NaN if one
- * is not finite). The rotation is math/quaternion.ts rotateFrom's arithmetic written out in the loop: a
- * call per body passing the rotation's three numbers boxed each of them (an allocation per number).
+ * is not finite). The rotation is math/quaternion.ts rotateInPlace, which TurboFan inlines here (with
+ * rotateFrom), so the call boxes no number.
  */
 function advanceQuaternions(world: PhysicsWorld, ents: ArrayLike<number>, h: number): number {
   const c = world.components;
@@ -91,38 +92,7 @@ function advanceQuaternions(world: PhysicsWorld, ents: ArrayLike<number>, h: num
       az = wz[e]!;
     check += ax + ay + az;
     if (ax === 0 && ay === 0 && az === 0) continue;
-    const rx = ax * h,
-      ry = ay * h,
-      rz = az * h;
-    const angle = Math.sqrt(rx * rx + ry * ry + rz * rz);
-    let dx = 0,
-      dy = 0,
-      dz = 0,
-      dw = 1;
-    if (angle > 0) {
-      const k = Math.sin(0.5 * angle) / angle;
-      dx = rx * k;
-      dy = ry * k;
-      dz = rz * k;
-      dw = Math.cos(0.5 * angle);
-    }
-    const x = qx[e]!,
-      y = qy[e]!,
-      z = qz[e]!,
-      w = qw[e]!;
-    let nx = dw * x + dx * w + dy * z - dz * y;
-    let ny = dw * y - dx * z + dy * w + dz * x;
-    let nz = dw * z + dx * y - dy * x + dz * w;
-    let nw = dw * w - dx * x - dy * y - dz * z;
-    const inv = 1 / Math.sqrt(nx * nx + ny * ny + nz * nz + nw * nw);
-    nx *= inv;
-    ny *= inv;
-    nz *= inv;
-    nw *= inv;
-    qx[e] = nx;
-    qy[e] = ny;
-    qz[e] = nz;
-    qw[e] = nw;
+    rotateInPlace(qx, qy, qz, qw, e, ax * h, ay * h, az * h);
   }
   return check;
 }

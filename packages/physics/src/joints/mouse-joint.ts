@@ -1,6 +1,6 @@
 import { hasComponent } from 'bitecs';
 import * as BS from '../solver/body-state-layout.js';
-import { assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe } from '../validation/validate.js';
+import { assertNonNegative, assertOptions, assertPositive, assertVector, describe } from '../validation/validate.js';
 import { currentHandle } from '../world/handles.js';
 import type { JointState } from '../world/joint-state-2d.js';
 import { JointFlag, type JointStore, JointType } from '../world/joint-store-2d.js';
@@ -49,8 +49,7 @@ export interface MouseJointOptions {
  */
 export function addMouseJoint(world: PhysicsWorld, options: MouseJointOptions): number {
   const where = 'addMouseJoint';
-  if (options === null || typeof options !== 'object') throw new TypeError(`${where}: options must be an object, got ${describe(options)}`);
-  assertKnownKeys(where, options, ['b', 'anchor', 'target', 'hertz', 'dampingRatio', 'maxForce', 'breakForce']);
+  assertOptions(where, options, ['b', 'anchor', 'target', 'hertz', 'dampingRatio', 'maxForce', 'breakForce']);
   const ends = checkEnds(
     where,
     world,

@@ -10,6 +10,7 @@ import {
   assertPositive,
   assertVector,
   describe,
+  unitVector,
 } from '../validation/validate.js';
 import { resolveKind } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
@@ -237,15 +238,7 @@ export function checkSettings(
       out.size = [options.size[0]!, options.size[1]!, d === 3 ? options.size[2]! : 0];
     }
   }
-  if (options.direction !== undefined) {
-    assertVector(where, 'direction', options.direction, d);
-    const x = options.direction[0]!,
-      y = options.direction[1]!,
-      z = d === 3 ? options.direction[2]! : 0;
-    const n = Math.hypot(x, y, z);
-    if (!(n > 0)) throw new RangeError(`${where}: direction must not be zero, got ${describe(options.direction)}`);
-    out.dir = [x / n, y / n, z / n];
-  }
+  if (options.direction !== undefined) out.dir = unitVector(where, 'direction', options.direction, d);
   if (options.spread !== undefined) {
     assertInRange(where, 'spread', options.spread, 0, Math.PI);
     out.spread = options.spread;

@@ -107,6 +107,22 @@ export function assertBoolean(where: string, param: string, value: unknown): ass
 }
 
 /**
+ * The unit vector along `value`, which must be an array (or typed array) of `length` (2 or 3) finite
+ * numbers, not all zero: (x, y, z) / |(x, y, z)| with z = 0 when `length` is 2 and |v| = Math.hypot(x, y, z).
+ * @returns [x, y, z], dimensionless, |v| = 1 to rounding.
+ * @throws TypeError | RangeError as `assertVector`; RangeError naming `where`, `param` and the value if it is zero.
+ */
+export function unitVector(where: string, param: string, value: unknown, length: number): [number, number, number] {
+  assertVector(where, param, value, length);
+  const x = value[0]!,
+    y = value[1]!,
+    z = length === 3 ? value[2]! : 0;
+  const n = Math.hypot(x, y, z);
+  if (!(n > 0)) throw new RangeError(`${where}: ${param} must not be zero, got ${describe(value)}`);
+  return [x / n, y / n, z / n];
+}
+
+/**
  * Throws unless `value` is an array (or typed array) of `length` finite numbers.
  * @throws TypeError if not array-like of numbers or of the wrong length; RangeError if an element is not finite.
  * @category Utilities
