@@ -764,6 +764,44 @@ export function flightPast(lv: Pick<Level, 'terrain'>, vx: number, vy: number, g
 }
 
 /**
+ * Share of the way from the catapult (LAUNCH.x) to the castle's front (Level.castleMinX) that the
+ * aim preview draws on every level after the first: the start of the flight, its angle and how it
+ * begins to bend, but not where it comes down. The whole flight to its first touch made the second
+ * level a throw aimed along the dots (two in three throws whose dots ended on the keep cleared it);
+ * the first level keeps it, to learn the throw, and the last throw's trail still guides the next.
+ */
+export const SHORT_PREVIEW_SHARE = 0.4;
+
+/**
+ * The farthest x (m) the aim preview draws on level `level` (0-based) of `lv`: Infinity (the whole
+ * flight to its first touch, previewFlight) on the first level or when `full`, else SHORT_PREVIEW_SHARE
+ * of the way from LAUNCH.x to `lv.castleMinX`.
+ * @throws RangeError if level is not an integer in [0, LEVEL_COUNT).
+ */
+export function previewLimit(level: number, lv: Pick<Level, 'castleMinX'>, full = false): number {
+  if (!Number.isInteger(level) || level < 0 || level >= LEVEL_COUNT)
+    throw new RangeError(`previewLimit: level must be an integer in [0, ${LEVEL_COUNT}), got ${level}`);
+  return full || level === 0 ? Number.POSITIVE_INFINITY : LAUNCH.x + SHORT_PREVIEW_SHARE * (lv.castleMinX - LAUNCH.x);
+}
+
+/**
+ * `arc` (x, y pairs, m, x increasing, as previewFlight gives) cut at x = `limit` (m): the points
+ * before it and one on the line between the two either side of it; `arc` itself (the same array)
+ * when it ends at or before `limit`.
+ */
+export function cutArc(arc: number[], limit: number): number[] {
+  for (let i = 2; i < arc.length; i += 2) {
+    const x = arc[i]!;
+    if (x <= limit) continue;
+    const x0 = arc[i - 2]!,
+      y0 = arc[i - 1]!;
+    const k = x > x0 ? (limit - x0) / (x - x0) : 0;
+    return [...arc.slice(0, i), limit, y0 + k * (arc[i + 1]! - y0)];
+  }
+  return arc;
+}
+
+/**
  * The height of the ground under x, m, for a stone whose bottom is at `from` (m): the top of the
  * ground's slabs or a pit's floor, and of a hill only if `from` is at or over the hill's top (less a
  * centimetre: a stone that went into a hill's side face passes through it); -Infinity off the ground.
