@@ -354,14 +354,16 @@ export function surfaceAt(lv: Pick<Level, 'terrain'>, x: number): number {
  * the one before. The castles stand 7 to 26 m out, so the catapult and the castle share the screen
  * at a scale where a piece reads (a 1.2 m post about 40 px tall on a 1060 px wide view). The first
  * three ask for different throws (games/catapult/solve.ts, `node scripts/catapult-levels.mjs --grid`):
- * a low watchtower near by with a hut behind it (a low, flat throw brings both down for three stars), a
- * low keep behind a low earth rampart (a flat throw skims over it, a lob drops onto the keep), and
+ * two market stalls, stones on low tables, one near by and one behind it (a low, flat throw brings
+ * both down for three stars), a low keep behind a low earth rampart (a flat throw skims over it, a
+ * lob drops onto the keep), and
  * twin towers far off behind a taller rampart; one blind throw does not clear all three.
  */
 const LEVELS: ReadonlyArray<{ name: string; shots: number; build: (b: Builder) => void }> = [
   {
-    name: 'Watchtower',
-    // A low tower near by and a hut 5.5 m behind it: a throw at either clears the level, and three
+    // Named for what it shows: two low tables with stones on them.
+    name: 'Market stalls',
+    // A low stall near by and a wider one 5.5 m behind it: a throw at either clears the level, and three
     // stars take both, each aimed (a careless pull toppled both at 3.3 m apart); a hard, flat throw
     // meant for a farther castle flies over them.
     shots: 3,
