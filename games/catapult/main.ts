@@ -1369,11 +1369,12 @@ function drawArc(vx: number, vy: number): void {
       lastY = 0;
     for (let i = 1; i < n; i++) {
       const [px, py] = map(arc[2 * i]!, arc[2 * i + 1]!);
-      const end = i === n - 1;
+      // The touch (the flight's last point) always shows, larger; a cut flight's end is a dot like the rest.
+      const end = i === n - 1 && !cut;
       if (!keep(px, py) || (!end && Math.hypot(px - lastX, py - lastY) < PREVIEW_GAP)) continue;
       lastX = px;
       lastY = py;
-      out.push([px, py, end && !cut ? dotR + 1.5 : dotR, 1 - i / n]);
+      out.push([px, py, end ? dotR + 1.5 : dotR, 1 - i / n]);
     }
     return out;
   };
