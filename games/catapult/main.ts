@@ -1311,7 +1311,9 @@ function showAimDom(): void {
   // With a miss's brief: what that throw did, while the hint over the scene is gone.
   const brief = lastThrow.brief ? `: ${lastThrow.brief}` : '';
   const last = lastThrow.body ? `last ${Math.round(100 * lastThrow.power)} %  ${Math.round(lastThrow.angle)}°${brief}\n` : '';
-  const text = `${last}${Math.round(100 * power)} %  ${Math.round(aimShown.angle)}°`;
+  // The first aim past level 1 says why the dots stop short (previewLimit), so it reads as the rule.
+  const note = params.level === 2 && shots.length === 0 && params.guide !== 'full' ? 'Now the dots show only the start\n' : '';
+  const text = `${note}${last}${Math.round(100 * power)} %  ${Math.round(aimShown.angle)}°`;
   if (d.label.textContent !== text) d.label.textContent = text;
   // Centred over the bar, and all on the screen (the last throw's line is wider than the bar).
   const lw = d.label.offsetWidth;
