@@ -14,6 +14,7 @@
  */
 
 import {
+  choiceParam,
   createActionButton,
   createPanel,
   flagParam,
@@ -37,6 +38,7 @@ import {
   angleForRange,
   buildLevel,
   countedDown,
+  cutArc,
   FALL_POINTS,
   flightPast,
   LAUNCH,
@@ -48,6 +50,7 @@ import {
   PROJECTILE_RADIUS,
   PULL,
   previewFlight,
+  previewLimit,
   ROCK,
   surfaceAt,
   type Tally,
@@ -61,6 +64,12 @@ const params = {
   projectileMass: 3,
   gravity: 9.81,
   jointStrength: 400,
+  /**
+   * The aim preview: 'auto' draws the whole flight to its first touch on the first level and only
+   * its start on the others (scene previewLimit), 'full' the whole flight on every level (URL
+   * `guide=full`: an easier game, and the tests that match the preview to the throw).
+   */
+  guide: choiceParam('guide', ['auto', 'full'] as const, 'auto'),
   reset: () => game.shell.reset(),
   next: () => nextLevel(),
 };
@@ -1184,9 +1193,9 @@ function showBreaks(world: PhysicsWorld): void {
 
 /**
  * The arc preview: the stone's flight from the cup to where it first touches the ground, a bank of
- * earth, the rock or a castle piece as it stands now (previewFlight, at most PREVIEW_TIME s), drawn as
- * dots in the page over the canvas (aimDom) on every pointer move and every frame: drawn on the
- * canvas at the frame's pace it lagged the finger (a page at 3 fps while a stranger aimed showed the
+ * earth, the rock or a castle piece as it stands now (previewFlight, at most PREVIEW_TIME s; after
+ * the first level only its start, previewLimit), drawn as dots in the page over the canvas (aimDom)
+ * on every pointer move and every frame: drawn on the canvas at the frame's pace it lagged the finger (a page at 3 fps while a stranger aimed showed the
  * arc of an earlier, weaker pull ending at the first tower; the stone flew to the far one).
  */
 const PREVIEW_TIME = 6;
@@ -1196,7 +1205,7 @@ const PREVIEW_GAP = 11;
  * What the aim shows (tests): power (0 to 1) and angle (degrees above level) as the page shows them
  * now, the preview's dots on the screen now (and in the phone's close-up), the faint dots past its
  * first touch (flightPast), its farthest x, m, and its end, the point (m) where the stone first
- * touches something.
+ * touches something, or where the drawn start of the flight ends (previewLimit).
  */
 const aimShown = { power: 0, angle: 0, dots: 0, closeDots: 0, ghost: 0, reach: 0, end: [0, 0] as [number, number] };
 
@@ -1302,7 +1311,9 @@ function showAimDom(): void {
   // With a miss's brief: what that throw did, while the hint over the scene is gone.
   const brief = lastThrow.brief ? `: ${lastThrow.brief}` : '';
   const last = lastThrow.body ? `last ${Math.round(100 * lastThrow.power)} %  ${Math.round(lastThrow.angle)}°${brief}\n` : '';
-  const text = `${last}${Math.round(100 * power)} %  ${Math.round(aimShown.angle)}°`;
+  // The first aim past level 1 says why the dots stop short (previewLimit), so it reads as the rule.
+  const note = params.level === 2 && shots.length === 0 && params.guide !== 'full' ? 'Now the dots show only the start\n' : '';
+  const text = `${note}${last}${Math.round(100 * power)} %  ${Math.round(aimShown.angle)}°`;
   if (d.label.textContent !== text) d.label.textContent = text;
   // Centred over the bar, and all on the screen (the last throw's line is wider than the bar).
   const lw = d.label.offsetWidth;
@@ -1338,13 +1349,17 @@ function placeDots(group: SVGElement, n: number, at: (i: number) => [number, num
  * The arc preview for a throw at (vx, vy), m/s (see PREVIEW_TIME): dots fading along the flight to
  * its first touch, at least PREVIEW_GAP px apart (a small scene, an upright phone's, crowded them
  * into a rope), the last one (the touch) always drawn and larger; past the touch, faint hollow dots
- * where the throw was headed had nothing stood in its way (flightPast), to the grass; and, while the castle's close-up
+ * where the throw was headed had nothing stood in its way (flightPast), to the grass. After the first
+ * level only the flight's start (previewLimit), all dots alike, nothing past. While the castle's close-up
  * shows (an upright phone), the same flight's dots where it crosses the close-up, at its scale.
  */
 function drawArc(vx: number, vy: number): void {
   const world = shell.world;
   const cam = renderer.camera;
-  const arc = previewFlight(world, lv, vx, vy, -world.gravity[1]!, PREVIEW_TIME);
+  const flight = previewFlight(world, lv, vx, vy, -world.gravity[1]!, PREVIEW_TIME);
+  // After the first level only the flight's start (previewLimit): where it comes down is judged.
+  const arc = cutArc(flight, previewLimit(params.level - 1, lv, params.guide === 'full'));
+  const cut = arc !== flight;
   const n = arc.length / 2;
   aimShown.reach = arc[arc.length - 2]!;
   aimShown.end = [arc[arc.length - 2]!, arc[arc.length - 1]!];
@@ -1356,7 +1371,8 @@ function drawArc(vx: number, vy: number): void {
       lastY = 0;
     for (let i = 1; i < n; i++) {
       const [px, py] = map(arc[2 * i]!, arc[2 * i + 1]!);
-      const end = i === n - 1;
+      // The touch (the flight's last point) always shows, larger; a cut flight's end is a dot like the rest.
+      const end = i === n - 1 && !cut;
       if (!keep(px, py) || (!end && Math.hypot(px - lastX, py - lastY) < PREVIEW_GAP)) continue;
       lastX = px;
       lastY = py;
@@ -1375,7 +1391,7 @@ function drawArc(vx: number, vy: number): void {
   const [endX, endY] = aimShown.end;
   const ghost: number[][] = [];
   // (None for a throw that comes down on the grass or a pit's floor: it has landed.)
-  const past = vx > 0.1 ? flightPast(lv, vx, vy, -world.gravity[1]!, (endX - LAUNCH.x) / vx, GHOST_TIME) : [];
+  const past = vx > 0.1 && !cut ? flightPast(lv, vx, vy, -world.gravity[1]!, (endX - LAUNCH.x) / vx, GHOST_TIME) : [];
   if (past.length > 4) {
     let lastX = cam.toScreenX(endX),
       lastY = cam.toScreenY(endY);

@@ -354,14 +354,16 @@ export function surfaceAt(lv: Pick<Level, 'terrain'>, x: number): number {
  * the one before. The castles stand 7 to 26 m out, so the catapult and the castle share the screen
  * at a scale where a piece reads (a 1.2 m post about 40 px tall on a 1060 px wide view). The first
  * three ask for different throws (games/catapult/solve.ts, `node scripts/catapult-levels.mjs --grid`):
- * a low watchtower near by with a hut behind it (a low, flat throw brings both down for three stars), a
- * low keep behind a low earth rampart (a flat throw skims over it, a lob drops onto the keep), and
+ * two market stalls, stones on low tables, one near by and one behind it (a low, flat throw brings
+ * both down for three stars), a low keep behind a low earth rampart (a flat throw skims over it, a
+ * lob drops onto the keep), and
  * twin towers far off behind a taller rampart; one blind throw does not clear all three.
  */
 const LEVELS: ReadonlyArray<{ name: string; shots: number; build: (b: Builder) => void }> = [
   {
-    name: 'Watchtower',
-    // A low tower near by and a hut 5.5 m behind it: a throw at either clears the level, and three
+    // Named for what it shows: two low tables with stones on them.
+    name: 'Market stalls',
+    // A low stall near by and a wider one 5.5 m behind it: a throw at either clears the level, and three
     // stars take both, each aimed (a careless pull toppled both at 3.3 m apart); a hard, flat throw
     // meant for a farther castle flies over them.
     shots: 3,
@@ -761,6 +763,44 @@ export function flightPast(lv: Pick<Level, 'terrain'>, vx: number, vy: number, g
     out.push(x, yAt(t));
   }
   return out;
+}
+
+/**
+ * Share of the way from the catapult (LAUNCH.x) to the castle's front (Level.castleMinX) that the
+ * aim preview draws on every level after the first: the start of the flight, its angle and how it
+ * begins to bend, but not where it comes down. The whole flight to its first touch made the second
+ * level a throw aimed along the dots (two in three throws whose dots ended on the keep cleared it);
+ * the first level keeps it, to learn the throw, and the last throw's trail still guides the next.
+ */
+export const SHORT_PREVIEW_SHARE = 0.4;
+
+/**
+ * The farthest x (m) the aim preview draws on level `level` (0-based) of `lv`: Infinity (the whole
+ * flight to its first touch, previewFlight) on the first level or when `full`, else SHORT_PREVIEW_SHARE
+ * of the way from LAUNCH.x to `lv.castleMinX`.
+ * @throws RangeError if level is not an integer in [0, LEVEL_COUNT).
+ */
+export function previewLimit(level: number, lv: Pick<Level, 'castleMinX'>, full = false): number {
+  if (!Number.isInteger(level) || level < 0 || level >= LEVEL_COUNT)
+    throw new RangeError(`previewLimit: level must be an integer in [0, ${LEVEL_COUNT}), got ${level}`);
+  return full || level === 0 ? Number.POSITIVE_INFINITY : LAUNCH.x + SHORT_PREVIEW_SHARE * (lv.castleMinX - LAUNCH.x);
+}
+
+/**
+ * `arc` (x, y pairs, m, x increasing, as previewFlight gives) cut at x = `limit` (m): the points
+ * before it and one on the line between the two either side of it; `arc` itself (the same array)
+ * when it ends at or before `limit`.
+ */
+export function cutArc(arc: number[], limit: number): number[] {
+  for (let i = 2; i < arc.length; i += 2) {
+    const x = arc[i]!;
+    if (x <= limit) continue;
+    const x0 = arc[i - 2]!,
+      y0 = arc[i - 1]!;
+    const k = x > x0 ? (limit - x0) / (x - x0) : 0;
+    return [...arc.slice(0, i), limit, y0 + k * (arc[i + 1]! - y0)];
+  }
+  return arc;
 }
 
 /**

@@ -1058,7 +1058,8 @@ describe('catapult', () => {
   });
 
   it('desktop 1280 x 800: the arc preview follows the mouse with no frame drawn and ends where the stone first touches (level 2: the bank, then the keep); after a throw the camera frames the castle', async () => {
-    const d = await h.openGame('catapult', { query: { level: 2 }, viewport: { width: 1280, height: 800 } });
+    // (guide=full: past the first level the page draws only the flight's start, previewLimit.)
+    const d = await h.openGame('catapult', { query: { level: 2, guide: 'full' }, viewport: { width: 1280, height: 800 } });
     await d.waitFor(() => (window.game as unknown as { cameraSettled(): boolean }).cameraSettled(), null);
     const aimPerM = await d.page.evaluate(() => {
       const cam = (window.game as unknown as CatapultGame).renderer.camera;

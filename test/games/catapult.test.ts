@@ -10,6 +10,7 @@ import { describe, expect, it } from 'vitest';
 import {
   angleForRange,
   buildLevel,
+  cutArc,
   flightPast,
   hasFallen,
   LAUNCH,
@@ -20,7 +21,9 @@ import {
   PROJECTILE_RADIUS,
   PULL,
   previewFlight,
+  previewLimit,
   pullFor,
+  SHORT_PREVIEW_SHARE,
   surfaceAt,
   tally,
   worldOptions,
@@ -333,6 +336,45 @@ describe('catapult rules', () => {
     }
     expect(checked).toBeGreaterThan(10);
     expect(onHill).toBeGreaterThan(3);
+  });
+
+  it('past the first level the aim preview shows only the start of the flight, never where it comes down', () => {
+    // Issue 34: aimed along the whole preview, two in three throws whose dots ended on level 2's keep
+    // cleared it. The first level keeps the whole flight; on level 2 every throw of a sweep shows at
+    // most SHORT_PREVIEW_SHARE of the way to the castle's front, ending on the drag-free parabola
+    // y = y0 + x tan(a) - g x^2 / (2 v^2 cos^2 a) (closed form; 1 mm: the cut is interpolated
+    // between two 0.01 s steps, an error of g dt^2 / 8 = 0.1 mm), and a throw into the ground before
+    // that point keeps its whole flight to the touch.
+    const first = level(0);
+    expect(previewLimit(0, first.lv)).toBe(Number.POSITIVE_INFINITY);
+    const { w, lv } = level(1);
+    expect(previewLimit(1, lv, true)).toBe(Number.POSITIVE_INFINITY);
+    const limit = previewLimit(1, lv);
+    expect(limit).toBeCloseTo(LAUNCH.x + SHORT_PREVIEW_SHARE * (lv.castleMinX - LAUNCH.x), 12);
+    expect(limit).toBeLessThan(lv.castleMinX - 3);
+    let cutCount = 0;
+    for (let deg = 0; deg <= 70; deg += 5)
+      for (let f = 0.3; f <= 1.001; f += 0.1) {
+        const v = f * PULL.max * PULL.gain,
+          a = (deg * Math.PI) / 180;
+        const flight = previewFlight(w, lv, v * Math.cos(a), v * Math.sin(a), G);
+        const arc = cutArc(flight, limit);
+        const ex = arc[arc.length - 2]!,
+          ey = arc[arc.length - 1]!;
+        expect(ex).toBeLessThanOrEqual(limit + 1e-12);
+        if (arc === flight) {
+          // Uncut: it came down before the limit (on the grass: the stone's bottom at y = 0).
+          expect(ey - PROJECTILE_RADIUS).toBeLessThan(0.01);
+          continue;
+        }
+        cutCount++;
+        expect(ex).toBeCloseTo(limit, 12);
+        const x = ex - LAUNCH.x;
+        const parabola = LAUNCH.y + x * Math.tan(a) - (G * x * x) / (2 * v * v * Math.cos(a) ** 2);
+        expect(Math.abs(ey - parabola)).toBeLessThan(1e-3);
+      }
+    expect(cutCount).toBeGreaterThan(80);
+    expect(() => previewLimit(LEVEL_COUNT, lv)).toThrow(/previewLimit: level must be an integer in \[0, \d+\), got \d+/);
   });
 
   it('rejects a level out of range', () => {
