@@ -53,7 +53,8 @@ import {
   type System,
 } from './world/options.js';
 import { addQueryCache } from './world/query.js';
-import { createWorldScratch } from './world/scratch.js';
+import { createWorldScratch, type WorldScratch } from './world/scratch.js';
+import { markWritable } from './world/writable-fields.js';
 
 // The contact solver runs the 2D joints' stages as a row family (solver/row-families.ts).
 setRowFamily('joints2D', {
@@ -242,6 +243,15 @@ function assemble(o: WorldSettings): PhysicsWorld {
   // Fields the first step writes fractions into (world/double-fields.ts), and the query cache the
   // first step's queries would add: the world keeps the hidden class it has here.
   widenToDoubles(world, ['time', 'substepStart']);
+  // Fields every step writes, and the caches and features filled on first use (world/writable-fields.ts).
+  markWritable(world, ['h', 'steps']);
+  markWritable(
+    world.scratch,
+    Object.keys(world.scratch).filter(
+      (k) => world.scratch[k as keyof WorldScratch<PhysicsWorld>] === undefined,
+    ) as (keyof WorldScratch<PhysicsWorld> & string)[],
+  );
+  markWritable(world.features, Object.keys(world.features));
   addQueryCache(world);
   widenToDoubles(timings, STAGES);
   installDefaults(world);

@@ -1,8 +1,9 @@
 import { BS3_STRIDE, BX_STRIDE, IMPACT_STRIDE } from '../solver/body-state-layout.js';
 import { widenToDoubles } from '../world/double-fields.js';
+import { markWritable } from '../world/writable-fields.js';
 import { type ContactBuffer, createContactBuffer, createWarmStartCache, type WarmStartCache } from './contacts.js';
 import { type ContactEventLists, createContactEventStore, createSleepingContacts, type SleepingContacts } from './event-lists.js';
-import { createShapeCollisionState, type ShapeCollisionState } from './manifolds-2d.js';
+import { createShapeCollisionState, type ManifoldBuffer, type ShapeCollisionState } from './manifolds-2d.js';
 
 /**
  * Body type codes kept in `CollisionState.bodyType` for the bodies of the current step. A sleeping
@@ -403,7 +404,42 @@ export function createCollisionState(
   cs.bodyImpact = new Float64Array(cs.bodyImpact.length);
   cs.impactOrder = new Int32Array(cs.impactOrder.length);
   cs.impactKey = new Float64Array(cs.impactKey.length);
+  markStepWritten(cs);
   return cs;
+}
+
+/**
+ * Marks writable (world/writable-fields.ts) the fields of `cs` that a world's first steps write: its
+ * counters and stamps, the shape state's grown or swapped arrays, broadphase scratch, manifold
+ * buffers and event lists, the sleep state's counters. Written only from the first step on, each
+ * first write threw away the code compiled earlier in that step (in a pyramid of 820 boxes, the
+ * manifolds' preparation at the first `lastCount`).
+ */
+function markStepWritten(cs: CollisionState): void {
+  markWritable(cs, ['pairCount', 'solverBodyCount', 'solverStamp', 'wakeCount', 'looseBall']);
+  const st = cs.shapes;
+  markWritable(st, [
+    'active',
+    'slots',
+    'dormantSlots',
+    'dormantWakes',
+    'sensorPairs',
+    'sensorNow',
+    'angleBase',
+    'solverRows',
+    'lastCount',
+    'bodyMark',
+    'anyMoving',
+    'sleepList',
+  ]);
+  const scratch = st.scratch;
+  markWritable(scratch, Object.keys(scratch) as (keyof typeof scratch & string)[]);
+  for (const buf of [st.manifolds, st.previous, st.dormant]) markWritable(buf, Object.keys(buf) as (keyof ManifoldBuffer & string)[]);
+  const ev = cs.events;
+  for (const list of [ev.begin, ev.end, ev.hit, ev.sensorBegin, ev.sensorEnd])
+    markWritable(list, Object.keys(list) as (keyof typeof list & string)[]);
+  markWritable(cs.sleep, ['stamp', 'anyAsleep', 'wakes']);
+  markWritable(cs.stats, ['pairs', 'contacts', 'sleeping']);
 }
 
 /**

@@ -1,5 +1,6 @@
 import { registerExternalWorldState } from '../world/external-state.js';
 import type { PhysicsWorld } from '../world/options.js';
+import { markWritable } from '../world/writable-fields.js';
 
 /**
  * Stiff dissipation: how drag and damping stay stable at every step size.
@@ -106,6 +107,8 @@ export function dissipationState(world: PhysicsWorld): DissipationState {
       angularSeen: 0,
       springSeen: 0,
     };
+    // Written from the next step on (world/writable-fields.ts).
+    markWritable(s, Object.keys(s) as (keyof DissipationState & string)[]);
     world.features.dissipation = s;
     return s;
   }

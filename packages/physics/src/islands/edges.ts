@@ -3,6 +3,7 @@ import { BodyType } from '../collision/state.js';
 import { JointType } from '../world/joint-store-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
+import { markWritable } from '../world/writable-fields.js';
 
 /**
  * The island graph of one step (after Box2D v3's islands, which join bodies through touching contacts
@@ -37,6 +38,8 @@ export interface IslandEdges {
 export const EdgeFlag = Object.freeze({ SUPPORTS: 1, JOINS: 2, JOINT: 4, MOUSE: 8 } as const);
 
 const edges: IslandEdges = { count: 0, a: new Int32Array(64), b: new Int32Array(64), flags: new Uint8Array(64) };
+// Grown by a large world's first step (world/writable-fields.ts).
+markWritable(edges, ['count', 'a', 'b', 'flags']);
 
 /**
  * The island edges' scratch, emptied (see IslandEdges).

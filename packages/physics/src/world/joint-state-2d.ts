@@ -6,6 +6,7 @@
 
 import { widenToDoubles } from './double-fields.js';
 import { IMPULSES, LINK_FLOATS, LINK_INTS, PIN_FLOATS, PIN_INTS, ROW_FLOATS, ROW_INTS } from './joint-strides-2d.js';
+import { markWritable } from './writable-fields.js';
 
 /**
  * Joints broken in the last step, in the order they broke (rows 0..count-1). Read after `step`.
@@ -118,7 +119,7 @@ export interface JointState {
  * @category Joints and ropes
  */
 export function createJointState(): JointState {
-  return {
+  const js: JointState = {
     settings: { hertz: 60, iterations: 2, dampingRatio: 2, warmStarting: true },
     rowCount: 0,
     rows: new Float64Array(0),
@@ -153,6 +154,9 @@ export function createJointState(): JointState {
     breaksStep: -1,
     stats: new JointSolveStats(),
   };
+  // Written by every step from the first on, joints or none (world/writable-fields.ts).
+  markWritable(js, ['rowCount', 'breaksStep']);
+  return js;
 }
 
 /**
@@ -167,6 +171,7 @@ class JointSolveStats {
   constructor() {
     // A fraction from the first step on (world/double-fields.ts).
     widenToDoubles(this, ['maxError']);
+    markWritable(this, ['rows', 'maxErrorJoint']);
   }
 }
 

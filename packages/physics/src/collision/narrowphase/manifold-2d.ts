@@ -1,4 +1,6 @@
 import { type ConvexGeometry, createGeometry } from '../../shapes/geometry-2d.js';
+import { widenToDoubles } from '../../world/double-fields.js';
+import { markWritable } from '../../world/writable-fields.js';
 import { clamp01 } from './segments-3d.js';
 
 /**
@@ -49,7 +51,7 @@ export interface Manifold {
  * @category Collision
  */
 export function createManifold(): Manifold {
-  return {
+  const m: Manifold = {
     count: 0,
     nx: 0,
     ny: 1,
@@ -58,6 +60,11 @@ export function createManifold(): Manifold {
     separation: new Float64Array(2),
     id: new Int32Array(2),
   };
+  // The normal holds fractions (and -0) from the first contact on (world/double-fields.ts); every
+  // call writes the count (world/writable-fields.ts).
+  widenToDoubles(m, ['nx', 'ny']);
+  markWritable(m, ['count']);
+  return m;
 }
 
 /**
