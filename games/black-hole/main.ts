@@ -10,7 +10,8 @@
  * Keys: arrow keys thrust (two at right angles held together thrust diagonally, ./rules.ts
  * `heldThrust`; of two opposite ones the last pressed wins), Enter restarts after the
  * game is over, P pause, N single step, R reset, F predicted path on / off, V replays the run from its
- * start (./replay.ts: every input is recorded at its step; the replay ends where the run was, bit for bit).
+ * start (./replay.ts: every input is recorded at its step; the replay ends where the run was, bit for bit;
+ * waits with the ship parked are skipped; any key, or a tap on the field, leaves it for where the run was).
  * Touch: the four arrow buttons under the scene (hold to thrust, slide to steer; two fingers on two
  * arrows thrust diagonally); tap the message to restart.
  * Levels (./levels.ts): level 1 (practice: a fall costs no life; a coach beside the ship reads the
@@ -317,7 +318,7 @@ const game = await startPixiGame({
       action: 'predicted path on / off (red: falls in or lost, blue: reaches the line, grey: undecided)',
       touch: 'the Path button',
     },
-    { keys: 'V', action: 'replay the run from the start', touch: 'the Replay button' },
+    { keys: 'V', action: 'replay the run from the start (any key leaves it)', touch: 'the Replay button (a tap leaves it)' },
   ],
   keys: [
     { key: 'Enter', label: 'next level / restart', action: () => advance() },
@@ -333,6 +334,10 @@ const game = await startPixiGame({
       key: 'v',
       label: 'replay',
       action: () => {
+        if (replay.player) {
+          leaveReplay();
+          return;
+        }
         replay.play();
         predictor = createPredictor(bh);
         updateStatus(true);
@@ -540,6 +545,73 @@ window.addEventListener('keydown', (e) => {
   keysDown.add(dir);
   press(dir);
 });
+/**
+ * Leaves the replay playing (any key, a tap or click on the field, the status or the buttons under
+ * it): the run is put back where it was when the replay began (./replay.ts `stop`), with nothing held.
+ */
+function leaveReplay(): void {
+  replay.stop();
+  predictor = createPredictor(bh);
+  keysDown.clear();
+  padPointers.clear();
+  letGo();
+  applyHeld();
+  game.drawNext();
+  updateStatus(true);
+}
+/** The pointer whose press left a replay: its lift is not a tap on what lies under it (e.g. the next level). */
+let leavingPointer: number | null = null;
+// Caught before the game's and the kit's own listeners (capture on window), so the key or tap that
+// leaves a replay does nothing else (no pause, no thrust, no next level).
+window.addEventListener(
+  'keydown',
+  (e) => {
+    // V is left to its own action, which leaves a replay too: the Replay button's V is sent to window,
+    // where this listener may run after the action that began the replay.
+    if (!replay.player || e.ctrlKey || e.metaKey || e.altKey || e.key.toLowerCase() === 'v') return;
+    e.preventDefault();
+    e.stopImmediatePropagation();
+    leaveReplay();
+  },
+  { capture: true },
+);
+window.addEventListener(
+  'pointerdown',
+  (e) => {
+    if (!replay.player || !(e.target instanceof Node)) return;
+    const page = pageLayout();
+    if (![page.stage, page.status, page.controls].some((el) => el.contains(e.target as Node))) return;
+    e.preventDefault();
+    e.stopImmediatePropagation();
+    leavingPointer = e.pointerId;
+    leaveReplay();
+  },
+  { capture: true },
+);
+/** performance.now() until which a click is the leaving press's own (see `leavingPointer`), ms. */
+let leavingClickUntil = 0;
+for (const type of ['pointerup', 'pointercancel'] as const)
+  window.addEventListener(
+    type,
+    (e) => {
+      if (e.pointerId !== leavingPointer) return;
+      e.preventDefault();
+      e.stopImmediatePropagation();
+      leavingPointer = null;
+      leavingClickUntil = performance.now() + 500;
+    },
+    { capture: true },
+  );
+window.addEventListener(
+  'click',
+  (e) => {
+    if (performance.now() >= leavingClickUntil) return;
+    leavingClickUntil = 0;
+    e.preventDefault();
+    e.stopImmediatePropagation();
+  },
+  { capture: true },
+);
 window.addEventListener('keyup', (e) => {
   const dir = KEY_DIR[e.key];
   if (!dir || !keysDown.delete(dir)) return;
@@ -758,6 +830,12 @@ function overMessage(m: string): string {
   );
 }
 
+/** The status line while a replay plays: what it is and how to leave it, by touch or keys. */
+const REPLAY_LINE = {
+  touch: 'Replay of your run (waits skipped). Tap to go back to where you were.',
+  keys: 'Replay of your run (waits skipped). Any key or a click: back to where you were.',
+};
+
 function updateStatus(force = false): void {
   // The classic game's hole count follows the field (a crossing adds a hole).
   if (!levels && params.holes !== bh.holes.length && bh.holes.length > 0) {
@@ -770,23 +848,27 @@ function updateStatus(force = false): void {
       `Level ${run.spec.level}   ${lives}   ${run.waiting ? '' : `Holes ${bh.holes.length}   `}Score ${bh.score}   Best ${Math.max(best, bh.score)}` +
       (Number.isFinite(run.fuelLeft) ? `   Fuel ${run.fuelLeft.toFixed(1)} s` : '')
     : `${lives}   Score ${bh.score} (1 a hole)   Holes ${bh.holes.length}`;
-  const playing = replay.player ? `   ▶ Replay ${replay.player.played} steps` : '';
+  const playing = replay.player ? `   ▶ Replay ${(replay.player.played * bh.world.dt).toFixed(0)} s` : '';
   if (force || n + playing !== shownNumbers) {
     shownNumbers = n + playing;
     numbers.textContent = n + playing;
   }
-  if (force || bh.message !== shownMessage) {
-    shownMessage = bh.message;
+  // While a replay plays, the line says how to leave it (`leaveReplay`) instead of the run's messages.
+  const said = replay.player ? (touch ? REPLAY_LINE.touch : REPLAY_LINE.keys) : bh.message;
+  if (force || said !== shownMessage) {
+    shownMessage = said;
     // The rules speak of keys; on a touch screen a tap does the same. There a clear's line leaves out
     // the time in all and how the points were made (the "+N" rising from the line shows them), so it
     // keeps to the two lines the status row holds: a third pushed the field's foot under the pad.
-    message.textContent = touch
-      ? overMessage(bh.message)
-          .replace('Press Enter or R to play again.', 'Tap to play again.')
-          .replace('Press Enter for level', 'Tap for level')
-          .replace(/ \(\d+\.\d s in all, \d+ falls?\)/, '')
-          .replace(/ \(\d+ \+ \d+ speed bonus\)/, '')
-      : overMessage(bh.message);
+    message.textContent = replay.player
+      ? said
+      : touch
+        ? overMessage(bh.message)
+            .replace('Press Enter or R to play again.', 'Tap to play again.')
+            .replace('Press Enter for level', 'Tap for level')
+            .replace(/ \(\d+\.\d s in all, \d+ falls?\)/, '')
+            .replace(/ \(\d+ \+ \d+ speed bonus\)/, '')
+        : overMessage(bh.message);
   }
   status.classList.toggle('over', bh.over);
   status.classList.toggle('cleared', !bh.over && (run?.waiting ?? false));
