@@ -1316,6 +1316,8 @@ const RESPAWN_MS = 700;
  * and the strongest flash drawn since the last began (0 to 1: a frame drew it).
  */
 const death = { start: -Infinity, count: 0, flashPeak: 0 };
+/** The game's fall count when the last fall's effect began (its words wait only for that fall's ship). */
+let deathFalls = -1;
 /** The red flash over the field (above the holes and the ship, under the words). */
 const flashLayer = new Graphics({ label: 'death-flash' });
 app.stage.addChild(flashLayer);
@@ -1341,13 +1343,23 @@ function startDeath(): void {
   // At the swallow's start (when one plays), so the ring at the start can follow the swallow.
   death.start = swallow.active ? swallow.start : performance.now();
   death.count++;
+  deathFalls = bh.falls;
   death.flashPeak = 0;
+  const go = touch ? 'Tap an arrow to fly on' : 'Press an arrow to fly on';
   deathText.text = bh.over
     ? 'Swallowed!\nGame over'
     : run?.spec.practice
-      ? 'Swallowed!\nPractice: no life lost'
-      : `Swallowed!\n${bh.lives} ${bh.lives === 1 ? 'life' : 'lives'} left`;
+      ? `Swallowed!\nPractice: no life lost\n${go}`
+      : `Swallowed!\n${bh.lives} ${bh.lives === 1 ? 'life' : 'lives'} left\n${go}`;
 }
+
+/**
+ * Whether the words of the last fall stay up: after a fall in levels the new ship waits parked at the
+ * start (./levels.ts `LevelRun.parked`) until the player thrusts, and the words say so until then (they
+ * faded after DEATH_TEXT_MS, and a player reading the screen missed the life lost).
+ */
+const deathWaits = (): boolean =>
+  run !== null && !bh.over && run.parked && !run.waiting && bh.thrust === 'none' && death.count > 0 && !replay.player && bh.falls > 0;
 
 /**
  * Draws a fall's effect for its age: the field flashes red (fading over DEATH_FLASH_MS), the scene
@@ -1369,11 +1381,12 @@ function drawDeath(): void {
     const amp = DEATH_SHAKE_PX * (1 - age / DEATH_SHAKE_MS);
     app.stage.position.set(amp * Math.sin(age * 0.09), amp * Math.cos(age * 0.07));
   } else if (app.stage.position.x !== 0 || app.stage.position.y !== 0) app.stage.position.set(0, 0);
-  deathText.visible = age >= 0 && age < DEATH_TEXT_MS;
+  const waits = age >= 0 && deathWaits() && deathFalls === bh.falls;
+  deathText.visible = (age >= 0 && age < DEATH_TEXT_MS) || waits;
   if (!deathText.visible) return;
   deathText.style.fontSize = Math.max(24, Math.min(40, cam.toScreenLength(playField.width) / 12));
   deathText.style.lineHeight = 1.2 * deathText.style.fontSize;
-  deathText.alpha = age < DEATH_TEXT_MS - 400 ? 1 : (DEATH_TEXT_MS - age) / 400;
+  deathText.alpha = waits || age < DEATH_TEXT_MS - 400 ? 1 : (DEATH_TEXT_MS - age) / 400;
   deathText.position.set(cam.toScreenX(playField.width / 2), cam.toScreenY(playField.height / 2));
 }
 
