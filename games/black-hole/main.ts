@@ -1815,11 +1815,17 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
       const b = pathLabel.getBounds();
       for (const fx of [0, 0.5, 1]) for (const fy of [0, 1]) addDot(b.x + fx * b.width, b.y + fy * b.height);
     }
+    // Nor over a fall's words (in the field's middle), and first tried in the field's lowest quarter,
+    // under the holes (the middle of the field hid them).
+    if (deathText.visible) {
+      const b = deathText.getBounds();
+      for (let fx = 0; fx <= 1; fx += 0.125) for (let fy = 0; fy <= 1; fy += 0.25) addDot(b.x + fx * b.width, b.y + fy * b.height);
+    }
     const fx0 = cam.toScreenX(0) + 4,
       fx1 = cam.toScreenX(playField.width) - 4,
       fy0 = cam.toScreenY(playField.height) + 4,
       fy1 = cam.toScreenY(0) - 4;
-    placeOffDots(pause.words, 0.5 * (fx0 + fx1), 0.5 * (fy0 + fy1), fx0, fy0, fx1, fy1, 16);
+    placeOffDots(pause.words, 0.5 * (fx0 + fx1), fy0 + 0.75 * (fy1 - fy0), fx0, fy0, fx1, fy1, 16);
   }
   // The engine's thrust now (it spools up and down): the flame points against it, as long as it is
   // strong, and the ship leans into it (up to LEAN rad at full sideways thrust).
