@@ -10,7 +10,8 @@
  * Keys: arrow keys thrust (two at right angles held together thrust diagonally, ./rules.ts
  * `heldThrust`; of two opposite ones the last pressed wins), Enter restarts after the
  * game is over, P pause, N single step, R reset, F predicted path on / off, V replays the run from its
- * start (./replay.ts: every input is recorded at its step; the replay ends where the run was, bit for bit).
+ * start (./replay.ts: every input is recorded at its step; the replay ends where the run was, bit for bit;
+ * waits with the ship parked are skipped; any key, or a tap on the field, leaves it for where the run was).
  * Touch: the four arrow buttons under the scene (hold to thrust, slide to steer; two fingers on two
  * arrows thrust diagonally); tap the message to restart.
  * Levels (./levels.ts): level 1 (practice: a fall costs no life; a coach beside the ship reads the
@@ -317,7 +318,7 @@ const game = await startPixiGame({
       action: 'predicted path on / off (red: falls in or lost, blue: reaches the line, grey: undecided)',
       touch: 'the Path button',
     },
-    { keys: 'V', action: 'replay the run from the start', touch: 'the Replay button' },
+    { keys: 'V', action: 'replay the run from the start (any key leaves it)', touch: 'the Replay button (a tap leaves it)' },
   ],
   keys: [
     { key: 'Enter', label: 'next level / restart', action: () => advance() },
@@ -333,6 +334,10 @@ const game = await startPixiGame({
       key: 'v',
       label: 'replay',
       action: () => {
+        if (replay.player) {
+          leaveReplay();
+          return;
+        }
         replay.play();
         predictor = createPredictor(bh);
         updateStatus(true);
@@ -540,6 +545,73 @@ window.addEventListener('keydown', (e) => {
   keysDown.add(dir);
   press(dir);
 });
+/**
+ * Leaves the replay playing (any key, a tap or click on the field, the status or the buttons under
+ * it): the run is put back where it was when the replay began (./replay.ts `stop`), with nothing held.
+ */
+function leaveReplay(): void {
+  replay.stop();
+  predictor = createPredictor(bh);
+  keysDown.clear();
+  padPointers.clear();
+  letGo();
+  applyHeld();
+  game.drawNext();
+  updateStatus(true);
+}
+/** The pointer whose press left a replay: its lift is not a tap on what lies under it (e.g. the next level). */
+let leavingPointer: number | null = null;
+// Caught before the game's and the kit's own listeners (capture on window), so the key or tap that
+// leaves a replay does nothing else (no pause, no thrust, no next level).
+window.addEventListener(
+  'keydown',
+  (e) => {
+    // V is left to its own action, which leaves a replay too: the Replay button's V is sent to window,
+    // where this listener may run after the action that began the replay.
+    if (!replay.player || e.ctrlKey || e.metaKey || e.altKey || e.key.toLowerCase() === 'v') return;
+    e.preventDefault();
+    e.stopImmediatePropagation();
+    leaveReplay();
+  },
+  { capture: true },
+);
+window.addEventListener(
+  'pointerdown',
+  (e) => {
+    if (!replay.player || !(e.target instanceof Node)) return;
+    const page = pageLayout();
+    if (![page.stage, page.status, page.controls].some((el) => el.contains(e.target as Node))) return;
+    e.preventDefault();
+    e.stopImmediatePropagation();
+    leavingPointer = e.pointerId;
+    leaveReplay();
+  },
+  { capture: true },
+);
+/** performance.now() until which a click is the leaving press's own (see `leavingPointer`), ms. */
+let leavingClickUntil = 0;
+for (const type of ['pointerup', 'pointercancel'] as const)
+  window.addEventListener(
+    type,
+    (e) => {
+      if (e.pointerId !== leavingPointer) return;
+      e.preventDefault();
+      e.stopImmediatePropagation();
+      leavingPointer = null;
+      leavingClickUntil = performance.now() + 500;
+    },
+    { capture: true },
+  );
+window.addEventListener(
+  'click',
+  (e) => {
+    if (performance.now() >= leavingClickUntil) return;
+    leavingClickUntil = 0;
+    e.preventDefault();
+    e.stopImmediatePropagation();
+  },
+  { capture: true },
+);
 window.addEventListener('keyup', (e) => {
   const dir = KEY_DIR[e.key];
   if (!dir || !keysDown.delete(dir)) return;
@@ -758,6 +830,12 @@ function overMessage(m: string): string {
   );
 }
 
+/** The status line while a replay plays: what it is and how to leave it, by touch or keys. */
+const REPLAY_LINE = {
+  touch: 'Replay of your run (waits skipped). Tap to go back to where you were.',
+  keys: 'Replay of your run (waits skipped). Any key or a click: back to where you were.',
+};
+
 function updateStatus(force = false): void {
   // The classic game's hole count follows the field (a crossing adds a hole).
   if (!levels && params.holes !== bh.holes.length && bh.holes.length > 0) {
@@ -770,23 +848,27 @@ function updateStatus(force = false): void {
       `Level ${run.spec.level}   ${lives}   ${run.waiting ? '' : `Holes ${bh.holes.length}   `}Score ${bh.score}   Best ${Math.max(best, bh.score)}` +
       (Number.isFinite(run.fuelLeft) ? `   Fuel ${run.fuelLeft.toFixed(1)} s` : '')
     : `${lives}   Score ${bh.score} (1 a hole)   Holes ${bh.holes.length}`;
-  const playing = replay.player ? `   ▶ Replay ${replay.player.played} steps` : '';
+  const playing = replay.player ? `   ▶ Replay ${(replay.player.played * bh.world.dt).toFixed(0)} s` : '';
   if (force || n + playing !== shownNumbers) {
     shownNumbers = n + playing;
     numbers.textContent = n + playing;
   }
-  if (force || bh.message !== shownMessage) {
-    shownMessage = bh.message;
+  // While a replay plays, the line says how to leave it (`leaveReplay`) instead of the run's messages.
+  const said = replay.player ? (touch ? REPLAY_LINE.touch : REPLAY_LINE.keys) : bh.message;
+  if (force || said !== shownMessage) {
+    shownMessage = said;
     // The rules speak of keys; on a touch screen a tap does the same. There a clear's line leaves out
     // the time in all and how the points were made (the "+N" rising from the line shows them), so it
     // keeps to the two lines the status row holds: a third pushed the field's foot under the pad.
-    message.textContent = touch
-      ? overMessage(bh.message)
-          .replace('Press Enter or R to play again.', 'Tap to play again.')
-          .replace('Press Enter for level', 'Tap for level')
-          .replace(/ \(\d+\.\d s in all, \d+ falls?\)/, '')
-          .replace(/ \(\d+ \+ \d+ speed bonus\)/, '')
-      : overMessage(bh.message);
+    message.textContent = replay.player
+      ? said
+      : touch
+        ? overMessage(bh.message)
+            .replace('Press Enter or R to play again.', 'Tap to play again.')
+            .replace('Press Enter for level', 'Tap for level')
+            .replace(/ \(\d+\.\d s in all, \d+ falls?\)/, '')
+            .replace(/ \(\d+ \+ \d+ speed bonus\)/, '')
+        : overMessage(bh.message);
   }
   status.classList.toggle('over', bh.over);
   status.classList.toggle('cleared', !bh.over && (run?.waiting ?? false));
@@ -1234,6 +1316,8 @@ const RESPAWN_MS = 700;
  * and the strongest flash drawn since the last began (0 to 1: a frame drew it).
  */
 const death = { start: -Infinity, count: 0, flashPeak: 0 };
+/** The game's fall count when the last fall's effect began (its words wait only for that fall's ship). */
+let deathFalls = -1;
 /** The red flash over the field (above the holes and the ship, under the words). */
 const flashLayer = new Graphics({ label: 'death-flash' });
 app.stage.addChild(flashLayer);
@@ -1259,13 +1343,23 @@ function startDeath(): void {
   // At the swallow's start (when one plays), so the ring at the start can follow the swallow.
   death.start = swallow.active ? swallow.start : performance.now();
   death.count++;
+  deathFalls = bh.falls;
   death.flashPeak = 0;
+  const go = touch ? 'Tap an arrow to fly on' : 'Press an arrow to fly on';
   deathText.text = bh.over
     ? 'Swallowed!\nGame over'
     : run?.spec.practice
-      ? 'Swallowed!\nPractice: no life lost'
-      : `Swallowed!\n${bh.lives} ${bh.lives === 1 ? 'life' : 'lives'} left`;
+      ? `Swallowed!\nPractice: no life lost\n${go}`
+      : `Swallowed!\n${bh.lives} ${bh.lives === 1 ? 'life' : 'lives'} left\n${go}`;
 }
+
+/**
+ * Whether the words of the last fall stay up: after a fall in levels the new ship waits parked at the
+ * start (./levels.ts `LevelRun.parked`) until the player thrusts, and the words say so until then (they
+ * faded after DEATH_TEXT_MS, and a player reading the screen missed the life lost).
+ */
+const deathWaits = (): boolean =>
+  run !== null && !bh.over && run.parked && !run.waiting && bh.thrust === 'none' && death.count > 0 && !replay.player && bh.falls > 0;
 
 /**
  * Draws a fall's effect for its age: the field flashes red (fading over DEATH_FLASH_MS), the scene
@@ -1287,11 +1381,12 @@ function drawDeath(): void {
     const amp = DEATH_SHAKE_PX * (1 - age / DEATH_SHAKE_MS);
     app.stage.position.set(amp * Math.sin(age * 0.09), amp * Math.cos(age * 0.07));
   } else if (app.stage.position.x !== 0 || app.stage.position.y !== 0) app.stage.position.set(0, 0);
-  deathText.visible = age >= 0 && age < DEATH_TEXT_MS;
+  const waits = age >= 0 && deathWaits() && deathFalls === bh.falls;
+  deathText.visible = (age >= 0 && age < DEATH_TEXT_MS) || waits;
   if (!deathText.visible) return;
   deathText.style.fontSize = Math.max(24, Math.min(40, cam.toScreenLength(playField.width) / 12));
   deathText.style.lineHeight = 1.2 * deathText.style.fontSize;
-  deathText.alpha = age < DEATH_TEXT_MS - 400 ? 1 : (DEATH_TEXT_MS - age) / 400;
+  deathText.alpha = waits || age < DEATH_TEXT_MS - 400 ? 1 : (DEATH_TEXT_MS - age) / 400;
   deathText.position.set(cam.toScreenX(playField.width / 2), cam.toScreenY(playField.height / 2));
 }
 
@@ -1720,11 +1815,17 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
       const b = pathLabel.getBounds();
       for (const fx of [0, 0.5, 1]) for (const fy of [0, 1]) addDot(b.x + fx * b.width, b.y + fy * b.height);
     }
+    // Nor over a fall's words (in the field's middle), and first tried in the field's lowest quarter,
+    // under the holes (the middle of the field hid them).
+    if (deathText.visible) {
+      const b = deathText.getBounds();
+      for (let fx = 0; fx <= 1; fx += 0.125) for (let fy = 0; fy <= 1; fy += 0.25) addDot(b.x + fx * b.width, b.y + fy * b.height);
+    }
     const fx0 = cam.toScreenX(0) + 4,
       fx1 = cam.toScreenX(playField.width) - 4,
       fy0 = cam.toScreenY(playField.height) + 4,
       fy1 = cam.toScreenY(0) - 4;
-    placeOffDots(pause.words, 0.5 * (fx0 + fx1), 0.5 * (fy0 + fy1), fx0, fy0, fx1, fy1, 16);
+    placeOffDots(pause.words, 0.5 * (fx0 + fx1), fy0 + 0.75 * (fy1 - fy0), fx0, fy0, fx1, fy1, 16);
   }
   // The engine's thrust now (it spools up and down): the flame points against it, as long as it is
   // strong, and the ship leans into it (up to LEAN rad at full sideways thrust).

@@ -330,6 +330,8 @@ const game = await startPixiGame({
     { key: 'a', label: 'auto-show', action: () => setAuto(!params.autoShow) },
     { key: 't', label: 'trails', action: () => setTrails(!params.trails) },
     { key: ' ', label: 'random shell', action: () => void (launchHeld() || randomLaunch()), repeat: true },
+    // Enter does what the big button over the card says (next level, try again, play again) while it shows.
+    { key: 'Enter', label: 'next level', action: () => actionShown && nextLevel() },
   ],
   renderer: {
     view: { minX: 0, minY: 0, maxX: SKY.width, maxY: SKY.height },
@@ -713,14 +715,22 @@ function drawCharge(): void {
     chargeHeard = stage;
   }
   if (lanternShow) {
+    // Centred on the aim point, where the shell bursts: half an ellipse up to the stars' reach above
+    // it and half down to their (longer, drooping) reach below. One ellipse spanning both was centred
+    // below the aim (46 px at 1280 x 800) and read as a burst placed there.
     const reach = sparkReach(LEVELS[run.level]!.shell, s);
     const w = show.params.sky.width;
-    const ry = cam.toScreenLength(0.5 * (reach.up + reach.down) * w);
-    const cy = pointerY + cam.toScreenLength(0.5 * (reach.down - reach.up) * w);
-    overlay
-      .ellipse(pointerX, cy, cam.toScreenLength(reach.side * w), ry)
-      .fill({ color: 0xffe8a0, alpha: 0.06 })
-      .stroke({ width: 2, color: 0xffe8a0, alpha: 0.55 });
+    const rx = cam.toScreenLength(reach.side * w),
+      up = cam.toScreenLength(reach.up * w),
+      down = cam.toScreenLength(reach.down * w);
+    const n = 48;
+    overlay.moveTo(pointerX + rx, pointerY);
+    for (let k = 1; k <= n; k++) {
+      const a = (2 * Math.PI * k) / n,
+        sin = Math.sin(a);
+      overlay.lineTo(pointerX + rx * Math.cos(a), pointerY - (sin >= 0 ? up : down) * sin);
+    }
+    overlay.closePath().fill({ color: 0xffe8a0, alpha: 0.06 }).stroke({ width: 2, color: 0xffe8a0, alpha: 0.55 });
   } else {
     const r = cam.toScreenLength(FREE_RING_SECONDS * BURST_SPEED * show.reach * burstSize(s));
     overlay.circle(pointerX, pointerY, r).stroke({ width: 1.5, color: 0xffe8a0, alpha: 0.25 + 0.08 * (s - 1) });
@@ -1258,6 +1268,7 @@ function nextLevel(): void {
   // The card and its button go at once, before the new level's world is built and drawn.
   card.hide();
   setAction(false);
+  actionShown = false;
   shell.reset();
 }
 
@@ -1354,8 +1365,11 @@ function writeStatus(f: StatusFrame): void {
   const drawn = game.pacer.drawn;
   if (!up) cardUpDrawn = -1;
   else if (cardUpDrawn < 0) cardUpDrawn = drawn;
-  setAction(up && drawn > cardUpDrawn, f.lost ? 'Try again ▶' : f.last ? 'Play again ▶' : 'Next level ▶');
+  actionShown = up && drawn > cardUpDrawn;
+  setAction(actionShown, f.lost ? 'Try again ▶' : f.last ? 'Play again ▶' : 'Next level ▶');
 }
+/** Whether the big action button (Next level, Try again, Play again) shows: Enter presses it then. */
+let actionShown = false;
 /** The count of drawn frames (game.pacer.drawn) when the level's card was put up, -1 while it is down. */
 let cardUpDrawn = -1;
 

@@ -95,7 +95,8 @@ describe('black hole', () => {
       return d.flashPeak > 0 ? d : null;
     }, null);
     expect(death.count).toBe(1);
-    expect(death.text).toBe('Swallowed!\nPractice: no life lost');
+    // The words stay while the new ship waits parked for the player's thrust, and say so.
+    expect(death.text).toMatch(/^Swallowed!\nPractice: no life lost\n(Press|Tap) an arrow to fly on$/);
     // While the words of the fall show, the path's label is not drawn under them.
     const shown = await g.waitFor(() => {
       const w = window.game as unknown as BlackHolePage;

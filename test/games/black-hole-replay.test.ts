@@ -9,7 +9,7 @@
 import { stateHash } from '@bitphysics/physics';
 import { describe, expect, test } from 'vitest';
 import { canThrust, type LevelRun, startLevel } from '../../games/black-hole/levels';
-import { type BlackHoleReplay, createBlackHoleReplay } from '../../games/black-hole/replay';
+import { type BlackHoleReplay, createBlackHoleReplay, REPLAY_LEAD_STEPS } from '../../games/black-hole/replay';
 import { type BlackHoleGame, createBlackHoleGame } from '../../games/black-hole/rules';
 
 const summary = (g: BlackHoleGame, run: LevelRun) => ({
@@ -82,5 +82,52 @@ describe('black hole replay', () => {
     while (replay.player) replay.step();
     expect(replay.recorder.replay.events.length).toBe(events);
     expect(summary(g, run)).toEqual(end);
+  });
+
+  test('a replay skips the idle wait before the first thrust and after a clear, and still ends bit-equal', () => {
+    const g = createBlackHoleGame({ seed: 4 });
+    const run = startLevel(g, 1);
+    const replay = createBlackHoleReplay(g, run);
+    // A player who reads the screen for 15 s before the first thrust (the stranger's phone run).
+    const idle = 900;
+    for (let k = 0; k < idle; k++) replay.step();
+    playRecorded(g, run, replay, 1500);
+    const end = summary(g, run);
+    // World steps (a cleared level waits without stepping its world, and its wait is not replayed).
+    const recorded = replay.recorder.replay.steps;
+    replay.play();
+    let calls = 0;
+    while (replay.player) {
+      replay.step();
+      calls++;
+    }
+    expect(summary(g, run)).toEqual(end);
+    // The opening wait is shown for REPLAY_LEAD_STEPS only; the flight's own steps all play (a wait
+    // parked at the start after a fall or a clear is cut to the same lead).
+    expect(calls).toBeLessThanOrEqual(recorded - idle + REPLAY_LEAD_STEPS);
+    expect(calls).toBeGreaterThan(1000);
+  });
+
+  test('stop leaves a replay for the state it was started in, and the live run goes on as if none had played', () => {
+    const make = () => {
+      const g = createBlackHoleGame({ seed: 7 });
+      const run = startLevel(g, 1);
+      return { g, run, replay: createBlackHoleReplay(g, run) };
+    };
+    const a = make(),
+      b = make();
+    playRecorded(a.g, a.run, a.replay, 700);
+    playRecorded(b.g, b.run, b.replay, 700);
+    const end = summary(a.g, a.run);
+    a.replay.play();
+    for (let k = 0; k < 120; k++) a.replay.step();
+    expect(summary(a.g, a.run)).not.toEqual(end); // mid-replay
+    a.replay.stop();
+    expect(a.replay.player).toBeNull();
+    expect(summary(a.g, a.run)).toEqual(end);
+    // The twin that never replayed is the reference: the same inputs from here give the same states.
+    playRecorded(a.g, a.run, a.replay, 400);
+    playRecorded(b.g, b.run, b.replay, 400);
+    expect(summary(a.g, a.run)).toEqual(summary(b.g, b.run));
   });
 });
