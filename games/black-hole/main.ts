@@ -318,7 +318,7 @@ const game = await startPixiGame({
       action: 'predicted path on / off (red: falls in or lost, blue: reaches the line, grey: undecided)',
       touch: 'the Path button',
     },
-    { keys: 'V', action: 'replay the run from the start (any key leaves it)', touch: 'the Replay button (a tap leaves it)' },
+    { keys: 'V', action: 'replay the run from the start (a key or a tap leaves it)', touch: 'the Replay button' },
   ],
   keys: [
     { key: 'Enter', label: 'next level / restart', action: () => advance() },
