@@ -14,6 +14,7 @@
  */
 
 import type { Forecast } from './forecast';
+import { keplerState } from './kepler';
 
 /**
  * The radius of the Kepler orbit of the heliocentric state `state` (position AU in [0..2], velocity
@@ -61,25 +62,51 @@ export function orbitRadiusToward(state: ArrayLike<number>, mu: number, x: numbe
 }
 
 /**
- * The first point of `forecast`'s path on or past the orbit of the target whose heliocentric state
- * now is `target` (about a centre of parameter `mu`): the point where the probe's distance from the
+ * The points of `forecast`'s path on or past the orbit of the target whose heliocentric state now
+ * is `target` (about a centre of parameter `mu`): each point where the probe's distance from the
  * Sun, compared with the orbit's radius in the probe's direction (`orbitRadiusToward`), has changed
- * side since the path's first point. -1 when the path never gets there (a launch too slow to climb
- * out, or fall in, to the orbit).
- * @returns an index into forecast.path, in [1, forecast.points - 1], or -1.
+ * side since the point before (a path that climbs out past the orbit and falls back crosses it
+ * twice), written into `out` (emptied first). None for a launch too slow to climb out, or fall in,
+ * to the orbit.
+ * @returns out: indices into forecast.path, each in [1, forecast.points - 1], rising.
  */
-export function orbitCrossing(forecast: Forecast, target: ArrayLike<number>, mu: number): number {
+export function orbitCrossings(forecast: Forecast, target: ArrayLike<number>, mu: number, out: number[] = []): number[] {
+  out.length = 0;
   const p = forecast.path;
   let side = 0;
   for (let i = 0; i < forecast.points; i++) {
     const x = p[3 * i]!,
       y = p[3 * i + 1]!,
       z = p[3 * i + 2]!;
-    const s = Math.sign(Math.hypot(x, y, z) - orbitRadiusToward(target, mu, x, y, z));
-    if (i === 0) side = s;
-    else if (s !== side || s === 0) return i;
+    const s = Math.sign(Math.hypot(x, y, z) - orbitRadiusToward(target, mu, x, y, z)) || 1;
+    if (i > 0 && s !== side) out.push(i);
+    side = s;
   }
-  return -1;
+  return out;
+}
+
+const crossings: number[] = [];
+const then = new Float64Array(6);
+
+/**
+ * Where the player should compare the probe with the target: of the path's crossings of the
+ * target's orbit (`orbitCrossings`), and its last point when the forecast arrives (inside the ring
+ * before the orbit's line), the one nearest the target's own place that day (its two-body Kepler
+ * orbit from `target`, ./kepler.ts): the moment the launch is about, not whether it arrives.
+ * @returns an index into forecast.path, or -1 when the path never gets to the orbit and does not arrive.
+ */
+export function meetingPoint(forecast: Forecast, target: ArrayLike<number>, mu: number): number {
+  orbitCrossings(forecast, target, mu, crossings);
+  if (forecast.outcome === 'arrived' && forecast.points > 0) crossings.push(forecast.points - 1);
+  let best = -1,
+    nearest = Infinity;
+  const p = forecast.path;
+  for (const i of crossings) {
+    keplerState(target, [target[3]!, target[4]!, target[5]!], mu, pathDay(forecast, i), then);
+    const d = Math.hypot(p[3 * i]! - then[0]!, p[3 * i + 1]! - then[1]!, p[3 * i + 2]! - then[2]!);
+    if (d < nearest) [best, nearest] = [i, d];
+  }
+  return best;
 }
 
 /** Days of flight at point `index` of `forecast`'s path: equal steps of `every` from `from`, the last point at `end`. */

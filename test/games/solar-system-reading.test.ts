@@ -10,8 +10,9 @@ import { solarSystem } from '@bitphysics/projects';
 import { describe, expect, test } from 'vitest';
 import { tutorialAim } from '../../games/solar-system/advice';
 import { forecastLaunch } from '../../games/solar-system/forecast';
+import { keplerState } from '../../games/solar-system/kepler';
 import { heliocentricState, MISSIONS, missionScore, SCORE_FIRST_TRY } from '../../games/solar-system/missions';
-import { orbitCrossing, orbitRadiusToward, pathDay } from '../../games/solar-system/orbit-crossing';
+import { meetingPoint, orbitCrossings, orbitRadiusToward, pathDay } from '../../games/solar-system/orbit-crossing';
 
 describe('orbitRadiusToward', () => {
   test('a circle is its radius every way; an ellipse (e = 0.6) is a(1 - e) at perihelion, a(1 + e) at aphelion, p at 90 degrees', () => {
@@ -37,7 +38,7 @@ describe('orbitRadiusToward', () => {
   });
 });
 
-describe('orbitCrossing', () => {
+describe('orbitCrossings and meetingPoint', () => {
   const options = { stepHours: 1, integrator: 'rk4' as const, date: '2012-01-01T00:00:00Z' };
   const world = createPhysicsWorld(solarSystem.worldOptions(options));
   const handles = solarSystem.build(world, options);
@@ -47,11 +48,13 @@ describe('orbitCrossing', () => {
   const lesson = tutorialAim(world, handles, m, 1 / 24)!;
 
   test('the first mission’s short start never reaches Mars’s orbit; faster launches cross it, on the line, sooner the faster', () => {
-    expect(orbitCrossing(forecastLaunch(world, handles, m, lesson.start, 1 / 24), mars, mu)).toBe(-1);
+    const short = forecastLaunch(world, handles, m, lesson.start, 1 / 24);
+    expect(orbitCrossings(short, mars, mu)).toEqual([]);
+    expect(meetingPoint(short, mars, mu)).toBe(-1);
     let lastDay = Infinity;
     for (const extra of [1.5, 2.5, 4]) {
       const f = forecastLaunch(world, handles, m, { angle: lesson.hit.angle, speed: lesson.hit.speed + extra }, 1 / 24);
-      const i = orbitCrossing(f, mars, mu);
+      const i = orbitCrossings(f, mars, mu)[0]!;
       expect(i, `+${extra} km/s`).toBeGreaterThan(0);
       // The point is past the orbit's line, the one before it short of it.
       const r = (k: number) => Math.hypot(f.path[3 * k]!, f.path[3 * k + 1]!, f.path[3 * k + 2]!);
@@ -64,9 +67,32 @@ describe('orbitCrossing', () => {
       expect(day).toBeLessThan(lastDay);
       lastDay = day;
     }
-    const f = forecastLaunch(world, handles, m, lesson.start, 1 / 24);
+    const f = short;
     expect(pathDay(f, f.points - 1)).toBe(f.end);
     expect(() => pathDay(f, f.points)).toThrow(/pathDay: index must be a whole number in \[0, \d+\], got \d+/);
+  });
+
+  test('the meeting point: for the first mission’s arriving launch the probe is within the ring of Mars’s own place that day; for a miss it is not', () => {
+    // Mars's place on a day, from its Kepler orbit now (two-body; the planets bend it by far less than the ring).
+    const gap = (f: ReturnType<typeof forecastLaunch>, i: number): number => {
+      const at = keplerState(mars, mars.subarray(3), mu, pathDay(f, i));
+      return Math.hypot(f.path[3 * i]! - at[0]!, f.path[3 * i + 1]! - at[1]!, f.path[3 * i + 2]! - at[2]!);
+    };
+    const hit = forecastLaunch(world, handles, m, lesson.hit, 1 / 24);
+    expect(hit.outcome).toBe('arrived');
+    const i = meetingPoint(hit, mars, mu);
+    expect(i).toBeGreaterThan(0);
+    // This launch crosses Mars's orbit going out (day 195, Mars far off) and meets it coming back:
+    // the meeting point is the later one, within the ring (0.14 AU) to 0.01 AU.
+    expect(orbitCrossings(hit, mars, mu).length).toBeGreaterThan(0);
+    expect(gap(hit, i)).toBeLessThan(m.zone + 0.01);
+    for (const k of orbitCrossings(hit, mars, mu)) expect(gap(hit, k)).toBeGreaterThanOrEqual(gap(hit, i));
+    // Turned 30 degrees inwards it misses: nowhere on its crossings is Mars within the ring.
+    const miss = forecastLaunch(world, handles, m, { angle: lesson.hit.angle - 30, speed: lesson.hit.speed }, 1 / 24);
+    expect(miss.outcome).toBe('missed');
+    const j = meetingPoint(miss, mars, mu);
+    expect(j).toBeGreaterThan(0);
+    expect(gap(miss, j)).toBeGreaterThan(m.zone - 0.01);
   });
 });
 
