@@ -5,21 +5,27 @@
  * start date and are integrated with the world's scheme (default RK4, steps of at most 1 hour).
  *
  * The game (./missions.ts): each mission names a planet. The player turns the launch arrow at the
- * Earth and sets the launch speed while time waits; dots show at once where the probe will go and a
- * ghost ring, the arrival zone's true edge, where the planet will be then ("Mars at arrival") with
- * the probe's place then, inside the ring exactly when it arrives; the status line gives the same
- * verdict (and the stars the speed earns), and in flight the course's. That
+ * Earth and sets the launch speed while time waits; dots show at once where the probe will go. The
+ * player reads the launch, not a verdict, until a flight of the mission fails: the dots run to
+ * where the path meets the target's orbit, the target's own dots to where it is that day, each end
+ * named with the day ("probe on day 259", "Mars on day 259"; ./orbit-crossing.ts), and the status
+ * line says how far out (in) the path gets or the day it is at the orbit. After a failed try (or
+ * with ?verdict=1) a ghost ring, the arrival zone's true edge, shows where the planet will be at
+ * the closest approach ("Mars at arrival") with the probe's place then, inside the ring exactly
+ * when it arrives, and the status line gives the same verdict (and the stars the speed earns); in
+ * flight it gives the course's. That
  * forecast (./forecast.ts) is the flight itself, flown ahead with the world's scheme and the
  * flight's step, so what it says is what the launch does. Launch, and the probe flies in the physics
  * world, pulled by the Sun and every planet, while time speeds up; mid-course burns (the same keys
  * and buttons) change its course, from a small tank of fuel, and the forecast follows each burn.
  * Reaching the ring round the planet wins the mission, with stars for a cheap mission (the launch
- * speed plus the burns; 3 stars want a good moment) and a score (./missions.ts missionScore) shown
+ * speed plus the burns; 3 stars want a good moment) and a score (./missions.ts missionScore: cheap,
+ * quick, and at the first launch) shown
  * on a result card with the best so far, every mission's stars and the next mission's brief.
  * Waiting lets the planets line up: a tap of Wait (W) runs time to the next launch window (the
  * Hohmann transfer's phase angle), held it runs time until the window. The Hint button (H) says
- * which way to change the launch and what to watch (./advice.ts finds the change), or in flight
- * which burn arrives and how many presses it takes.
+ * how to read the map before a failed try, then which way to change the launch and what to watch
+ * (./advice.ts finds the change), or in flight which burn arrives and how many presses it takes.
  *
  * Drawn on a compressed distance scale (./distance-scale.ts), so the eight planets fit on one screen
  * with room between the inner four (D switches to the true scale); orbit lines are each planet's
@@ -34,7 +40,8 @@
  * launch, W wait (tap: to the next launch window; held: time runs, stopping there), H hint, Enter next mission or try again, T try again, [ ] slower / faster, D distances,
  * 1 2 3 views, E sizes, P pause, N single step, R reset (back to the last start: the first date, or
  * the last launch after a Try again).
- * URL: ?mission=1..7, ?rate=days-per-second while aiming (0..400, default 0), ?step=hours (0.25|1|6|24), ?integrator=name,
+ * URL: ?mission=1..7, ?verdict=1 (the verdict from the start), ?rate=days-per-second while aiming (0..400, default 0),
+ * ?step=hours (0.25|1|6|24), ?integrator=name,
  * ?date=ISO date, ?distances=compressed|true.
  */
 
@@ -1374,6 +1381,8 @@ const forecastTags = (['target-then', 'probe-then'] as const).map((name) => {
   return el;
 });
 
+/** Least gap between a forecast tag and the view's edge, px. */
+const TAG_MARGIN = 6;
 /** The forecast tags shown this frame: left, top, right, bottom (px), four numbers each; the names keep clear of them (placeLabels). */
 const tagBoxes: number[] = [];
 /**
@@ -1407,8 +1416,9 @@ function placeTag(i: number, text: string, x: number, y: number, z: number, belo
   let x0 = 0,
     y0 = 0;
   for (let k = 0; k < places.length; k++) {
-    const cx = Math.max(2, Math.min(w - tw - 2, places[k]![0]!)),
-      cy = Math.max(2, Math.min(h - th - 2, places[k]![1]!));
+    // TAG_MARGIN px clear of the view's edges (an italic first letter 2 px from the edge looked cut).
+    const cx = Math.max(TAG_MARGIN, Math.min(w - tw - TAG_MARGIN, places[k]![0]!)),
+      cy = Math.max(TAG_MARGIN, Math.min(h - th - TAG_MARGIN, places[k]![1]!));
     let clear = labelFree(cx, cy, cx + tw, cy + th, -1);
     for (let b = 0; b < tagBoxes.length && clear; b += 4)
       if (cx < tagBoxes[b + 2]! && cx + tw > tagBoxes[b]! && cy < tagBoxes[b + 3]! && cy + th > tagBoxes[b + 1]!) clear = false;
