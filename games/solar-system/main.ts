@@ -5,21 +5,27 @@
  * start date and are integrated with the world's scheme (default RK4, steps of at most 1 hour).
  *
  * The game (./missions.ts): each mission names a planet. The player turns the launch arrow at the
- * Earth and sets the launch speed while time waits; dots show at once where the probe will go and a
- * ghost ring, the arrival zone's true edge, where the planet will be then ("Mars at arrival") with
- * the probe's place then, inside the ring exactly when it arrives; the status line gives the same
- * verdict (and the stars the speed earns), and in flight the course's. That
+ * Earth and sets the launch speed while time waits; dots show at once where the probe will go. The
+ * player reads the launch, not a verdict, until a flight of the mission fails: the dots run to
+ * where the path meets the target's orbit, the target's own dots to where it is that day, each end
+ * named with the day ("probe on day 259", "Mars on day 259"; ./orbit-crossing.ts), and the status
+ * line says how far out (in) the path gets or the day it is at the orbit. After a failed try (or
+ * with ?verdict=1) a ghost ring, the arrival zone's true edge, shows where the planet will be at
+ * the closest approach ("Mars at arrival") with the probe's place then, inside the ring exactly
+ * when it arrives, and the status line gives the same verdict (and the stars the speed earns); in
+ * flight it gives the course's. That
  * forecast (./forecast.ts) is the flight itself, flown ahead with the world's scheme and the
  * flight's step, so what it says is what the launch does. Launch, and the probe flies in the physics
  * world, pulled by the Sun and every planet, while time speeds up; mid-course burns (the same keys
  * and buttons) change its course, from a small tank of fuel, and the forecast follows each burn.
  * Reaching the ring round the planet wins the mission, with stars for a cheap mission (the launch
- * speed plus the burns; 3 stars want a good moment) and a score (./missions.ts missionScore) shown
+ * speed plus the burns; 3 stars want a good moment) and a score (./missions.ts missionScore: cheap,
+ * quick, and at the first launch) shown
  * on a result card with the best so far, every mission's stars and the next mission's brief.
  * Waiting lets the planets line up: a tap of Wait (W) runs time to the next launch window (the
  * Hohmann transfer's phase angle), held it runs time until the window. The Hint button (H) says
- * which way to change the launch and what to watch (./advice.ts finds the change), or in flight
- * which burn arrives and how many presses it takes.
+ * how to read the map before a failed try, then which way to change the launch and what to watch
+ * (./advice.ts finds the change), or in flight which burn arrives and how many presses it takes.
  *
  * Drawn on a compressed distance scale (./distance-scale.ts), so the eight planets fit on one screen
  * with room between the inner four (D switches to the true scale); orbit lines are each planet's
@@ -34,7 +40,8 @@
  * launch, W wait (tap: to the next launch window; held: time runs, stopping there), H hint, Enter next mission or try again, T try again, [ ] slower / faster, D distances,
  * 1 2 3 views, E sizes, P pause, N single step, R reset (back to the last start: the first date, or
  * the last launch after a Try again).
- * URL: ?mission=1..7, ?rate=days-per-second while aiming (0..400, default 0), ?step=hours (0.25|1|6|24), ?integrator=name,
+ * URL: ?mission=1..7, ?verdict=1 (the verdict from the start), ?rate=days-per-second while aiming (0..400, default 0),
+ * ?step=hours (0.25|1|6|24), ?integrator=name,
  * ?date=ISO date, ?distances=compressed|true.
  */
 
@@ -98,6 +105,7 @@ import {
 import { adviseAim, adviseBurn, createAimAdvice, createBurnAdvice, SPEED_STEP, startAim, TURN_STEP, tutorialAim } from './advice';
 import { displayRadius, toDisplay } from './distance-scale';
 import { copyForecast, createForecast, ForecastJob } from './forecast';
+import { keplerState } from './kepler';
 import {
   type Aim,
   BURN_STEP,
@@ -122,6 +130,7 @@ import {
   starsFor,
   TARGET_TRACK,
 } from './missions';
+import { meetingPoint, pathDay } from './orbit-crossing';
 
 /** Scene units per display AU. */
 const UNITS_PER_AU = 10;
@@ -181,6 +190,11 @@ const COLOR: Record<SolarSystemBody, number> = {
 const hex = (c: number): string => `#${c.toString(16).padStart(6, '0')}`;
 
 const search = new URLSearchParams(location.search);
+/**
+ * ?verdict=1 (tests, engineers): the forecast's verdict (the ring "at arrival", ✓ or ✗) from the
+ * start; players see it only after a try that did not arrive (see `verdictShown`).
+ */
+const verdictFromStart = flagParam('verdict');
 const params = {
   /**
    * Simulated days per real second while aiming (flights pick their own): none by default, so the
@@ -349,6 +363,18 @@ let jobKey = '';
 /** Counts the worlds made (a reset makes a new one): part of a forecast's key. */
 let worldSerial = 0;
 let flight: Flight | null = null;
+/** Launches on this mission since it started (the score's tries part, ./missions.ts missionScore). */
+let launches = 0;
+/** Flights on this mission since it started that did not arrive: after one the aim shows the verdict. */
+let failedTries = 0;
+/**
+ * Whether the aim shows the forecast's verdict: the ring where the target will be at the closest
+ * approach, the probe's place then, ✓ or ✗ and the hint's presses. Before a mission's first failed
+ * try the player reads the map instead (the probe's path to the target's orbit and the day it gets
+ * there, the target's own path to that day): judging the launch is the game, and the verdict a
+ * check for every press of ↑ made it a search for the ✓.
+ */
+const verdictShown = (): boolean => verdictFromStart || failedTries > 0;
 /** Most points of the probe's trail. */
 const TRAIL_POINTS = 4096;
 /** The probe's flown path, heliocentric AU (x, y, z each), trailCount points. */
@@ -515,6 +541,8 @@ function startMission(index: number): void {
   }
   phase = 'aim';
   trailCount = 0;
+  launches = 0;
+  failedTries = 0;
   const m = mission();
   const mu = shell.world.laws.gravitationalConstant * shell.world.components.Mass.value[slotOf(handles.bodies.Sun)]!;
   const v = hohmannSpeed(distanceFromSun('Earth'), distanceFromSun(m.target), mu);
@@ -603,6 +631,7 @@ function launch(): void {
   launchTargetR = distanceFromSun(mission().target);
   flightDaysPerSecond = flightRate(flight.deadline);
   phase = 'flight';
+  launches++;
   // The launch's forecast is the flight's course from the launch.
   forecastKey = wantedKey();
   trailCount = 0;
@@ -618,7 +647,7 @@ function endOfFlight(): void {
     arrivalAt = performance.now();
     const spent = flight.aim.speed + flight.fuelUsed;
     const stars = starsFor(flight.mission, spent);
-    const score = missionScore(flight.mission, Math.max(spent, 1e-3), Math.max(flight.elapsed, 1e-3));
+    const score = missionScore(flight.mission, Math.max(spent, 1e-3), Math.max(flight.elapsed, 1e-3), Math.max(1, launches));
     const record = score.total > bestScore[missionIndex]!;
     const before = bestScore[missionIndex]!;
     best[missionIndex] = Math.max(best[missionIndex]!, stars);
@@ -640,6 +669,8 @@ function endOfFlight(): void {
 /** Try again: back to the moment of the last launch, same aim. */
 function retry(): void {
   if (phase === 'aim') return;
+  // A miss, a fall or an abort: from now on the aim shows the verdict (the hint after a failed try).
+  if (flight?.state !== 'arrived') failedTries++;
   hideCard();
   const keep = { ...aim };
   startMs = launchMs;
@@ -1144,6 +1175,8 @@ function dotCloud(n: number, color: number, size: number): Points {
  */
 const trackDots = dotCloud(TARGET_TRACK, 0xffffff, 3);
 const probeThen = dotCloud(1, 0xffffff, 10);
+/** Before the verdict shows: the target where it is on the day the probe meets its orbit (the end of its dots). */
+const targetThen = dotCloud(1, 0xffffff, 12);
 const CIRCLE = 64;
 /** A unit circle in the x-z plane (scaled and placed per use). */
 function circle(color: number, opacity: number): LineLoop {
@@ -1348,6 +1381,8 @@ const forecastTags = (['target-then', 'probe-then'] as const).map((name) => {
   return el;
 });
 
+/** Least gap between a forecast tag and the view's edge, px. */
+const TAG_MARGIN = 6;
 /** The forecast tags shown this frame: left, top, right, bottom (px), four numbers each; the names keep clear of them (placeLabels). */
 const tagBoxes: number[] = [];
 /**
@@ -1381,8 +1416,9 @@ function placeTag(i: number, text: string, x: number, y: number, z: number, belo
   let x0 = 0,
     y0 = 0;
   for (let k = 0; k < places.length; k++) {
-    const cx = Math.max(2, Math.min(w - tw - 2, places[k]![0]!)),
-      cy = Math.max(2, Math.min(h - th - 2, places[k]![1]!));
+    // TAG_MARGIN px clear of the view's edges (an italic first letter 2 px from the edge looked cut).
+    const cx = Math.max(TAG_MARGIN, Math.min(w - tw - TAG_MARGIN, places[k]![0]!)),
+      cy = Math.max(TAG_MARGIN, Math.min(h - th - TAG_MARGIN, places[k]![1]!));
     let clear = labelFree(cx, cy, cx + tw, cy + th, -1);
     for (let b = 0; b < tagBoxes.length && clear; b += 4)
       if (cx < tagBoxes[b + 2]! && cx + tw > tagBoxes[b]! && cy < tagBoxes[b + 3]! && cy + th > tagBoxes[b + 1]!) clear = false;
@@ -1624,6 +1660,7 @@ function drawLaunch(world: PhysicsWorld): void {
   ghostRing.visible = planned;
   trackDots.visible = false;
   probeThen.visible = false;
+  targetThen.visible = false;
   if (!planned) for (const el of forecastTags) el.style.display = 'none';
   ghostOnScreen[3] = 0;
   missLine.visible = false;
@@ -1632,7 +1669,25 @@ function drawLaunch(world: PhysicsWorld): void {
     launchDirection(earthHelio, aim.angle, launchDir);
     displayDirection(earthHelio, launchDir, dirV);
     // Longer for a faster launch; thick enough to see which way it points at any zoom.
-    const len = ARROW_SCALE * viewHalf * (0.16 + (0.4 * aim.speed) / MAX_SPEED);
+    let len = ARROW_SCALE * viewHalf * (0.16 + (0.4 * aim.speed) / MAX_SPEED);
+    // Shortened (to no less than a third) where its tip would leave the view: on a phone the
+    // pointing-right arrow of a fast launch ran off the right edge.
+    const inView = (k: number): boolean => {
+      v.set(shown[3 * earthI]! + k * dirV.x, shown[3 * earthI + 1]! + k * dirV.y, shown[3 * earthI + 2]! + k * dirV.z).project(app.camera);
+      const mx = 12 / app.canvas.clientWidth,
+        my = 12 / app.canvas.clientHeight;
+      return v.z < 1 && Math.abs(v.x) < 1 - 2 * mx && Math.abs(v.y) < 1 - 2 * my;
+    };
+    if (!inView(len)) {
+      let lo = len / 3,
+        hi = len;
+      for (let k = 0; k < 8; k++) {
+        const mid = (lo + hi) / 2;
+        if (inView(mid)) lo = mid;
+        else hi = mid;
+      }
+      len = lo;
+    }
     arrow.position.set(shown[3 * earthI]!, shown[3 * earthI + 1]!, shown[3 * earthI + 2]!);
     arrow.quaternion.setFromUnitVectors(arrowUp, dirV);
     arrow.scale.set(ARROW_SCALE * viewHalf * 0.3, len, ARROW_SCALE * viewHalf * 0.3);
@@ -1641,30 +1696,53 @@ function drawLaunch(world: PhysicsWorld): void {
     const f = forecast;
     const arrived = f.outcome === 'arrived',
       sun = f.outcome === 'sun';
+    // Before the mission's first failed try (`verdictShown`) the aim is read, not judged: the probe's
+    // dots run to where they meet the target's orbit (./orbit-crossing.ts), the target's to where it
+    // is that day, each end named with the day; no ring "at arrival", no line across a miss.
+    const blind = aiming && !verdictShown();
+    const cross = blind && !sun ? pathCrossing(m) : -1;
+    const end = cross >= 0 ? cross : f.pointsToClosest;
+    const probeEnd = cross >= 0 ? f.path.subarray(3 * cross, 3 * cross + 3) : f.probeAt;
     // The probe's dots from where it is now (in flight) to the closest approach (the arrival),
     // every PLAN_STRIDE-th sample and the place then.
     const attr = planDots.geometry.getAttribute('position') as Float32BufferAttribute;
     const arr = attr.array as Float32Array;
     const first = cruising && flight ? Math.max(0, Math.ceil((flight.elapsed - f.from) / f.every)) : 0;
     let n = 0;
-    for (let i = first; i < f.pointsToClosest; i += PLAN_STRIDE)
-      place(f.path[3 * i]!, f.path[3 * i + 1]!, f.path[3 * i + 2]!, arr, 3 * n++);
-    place(f.probeAt[0]!, f.probeAt[1]!, f.probeAt[2]!, arr, 3 * n++);
+    for (let i = first; i < end; i += PLAN_STRIDE) place(f.path[3 * i]!, f.path[3 * i + 1]!, f.path[3 * i + 2]!, arr, 3 * n++);
+    place(probeEnd[0]!, probeEnd[1]!, probeEnd[2]!, arr, 3 * n++);
     attr.needsUpdate = true;
     planDots.geometry.setDrawRange(0, n);
     planDotsShown = n;
-    planPointsShown = f.pointsToClosest - first;
+    planPointsShown = end - first;
     // The target's own dots from now to then, and on a miss a white dot where the probe is then
     // and a line across the gap.
     const track = trackDots.geometry.getAttribute('position') as Float32BufferAttribute;
-    for (let i = 0; i < TARGET_TRACK; i++)
-      place(f.targetTrack[3 * i]!, f.targetTrack[3 * i + 1]!, f.targetTrack[3 * i + 2]!, track.array as Float32Array, 3 * i);
+    const trackArr = track.array as Float32Array;
+    if (cross >= 0) {
+      // Where the target goes until the day the probe meets its orbit: its Kepler orbit about the Sun.
+      const days = pathDay(f, cross);
+      for (let i = 0; i < TARGET_TRACK; i++) {
+        keplerState(crossingTarget, crossingTarget.subarray(3), sunMu(), (days * (i + 1)) / TARGET_TRACK, state6);
+        place(state6[0]!, state6[1]!, state6[2]!, trackArr, 3 * i);
+      }
+    } else
+      for (let i = 0; i < TARGET_TRACK; i++)
+        place(f.targetTrack[3 * i]!, f.targetTrack[3 * i + 1]!, f.targetTrack[3 * i + 2]!, trackArr, 3 * i);
     track.needsUpdate = true;
     (trackDots.material as PointsMaterial).color.setHex(hexColor(m.target));
-    trackDots.visible = !sun && !cruising;
-    probeThen.visible = !sun && (aiming || !arrived);
+    trackDots.visible = !sun && !cruising && (!blind || cross >= 0);
+    targetThen.visible = cross >= 0;
+    if (cross >= 0) {
+      const at = targetThen.geometry.getAttribute('position') as Float32BufferAttribute;
+      const t = 3 * (TARGET_TRACK - 1);
+      (at.array as Float32Array).set(trackArr.subarray(t, t + 3));
+      at.needsUpdate = true;
+      (targetThen.material as PointsMaterial).color.setHex(hexColor(m.target));
+    }
+    probeThen.visible = !sun && (aiming || !arrived) && (!blind || cross >= 0);
     const then = probeThen.geometry.getAttribute('position') as Float32BufferAttribute;
-    place(f.probeAt[0]!, f.probeAt[1]!, f.probeAt[2]!, then.array as Float32Array, 0);
+    place(probeEnd[0]!, probeEnd[1]!, probeEnd[2]!, then.array as Float32Array, 0);
     then.needsUpdate = true;
     // The dots turn green on an arriving course in flight (while aiming the line and ring say it).
     const judged = arrived && !aiming;
@@ -1677,7 +1755,7 @@ function drawLaunch(world: PhysicsWorld): void {
     ghostKey = forecastKey;
     place(f.targetAt[0]!, f.targetAt[1]!, f.targetAt[2]!, scratch3);
     (ghostRing.material as LineBasicMaterial).color.setHex(judged ? 0x7ee787 : hexColor(m.target));
-    ghostRing.visible = !sun;
+    ghostRing.visible = !sun && !blind;
     // Named while aiming: the ring is where the target will be, the white dot where the probe is then.
     v.set(scratch3[0]!, scratch3[1]!, scratch3[2]!);
     const ringPx = (zone * app.canvas.clientHeight) / (2 * app.camera.position.distanceTo(v) * Math.tan((app.camera.fov * Math.PI) / 360));
@@ -1687,11 +1765,27 @@ function drawLaunch(world: PhysicsWorld): void {
     ghostOnScreen[0] = ((v.x + 1) / 2) * app.canvas.clientWidth;
     ghostOnScreen[1] = ((1 - v.y) / 2) * app.canvas.clientHeight;
     ghostOnScreen[2] = ringPx;
-    ghostOnScreen[3] = aiming && !sun && v.z < 1 ? 1 : 0;
-    placeTag(0, tagged ? `${m.target} at arrival` : '', scratch3[0]!, scratch3[1]!, scratch3[2]!, ringPx + 2);
-    place(f.probeAt[0]!, f.probeAt[1]!, f.probeAt[2]!, scratch3);
-    placeTag(1, tagged ? 'probe then' : '', scratch3[0]!, scratch3[1]!, scratch3[2]!, -ringPx - 20);
-    if ((aiming || !arrived) && !sun) {
+    ghostOnScreen[3] = aiming && !sun && !blind && v.z < 1 ? 1 : 0;
+    if (blind) {
+      // The two ends, each named with the day: the player judges whether they meet.
+      const day = cross >= 0 ? Math.round(pathDay(f, cross)) : 0;
+      const t = TARGET_TRACK - 1;
+      placeTag(
+        0,
+        tagged && cross >= 0 ? `${m.target} on day ${day}` : '',
+        trackArr[3 * t]!,
+        trackArr[3 * t + 1]!,
+        trackArr[3 * t + 2]!,
+        10,
+      );
+      place(probeEnd[0]!, probeEnd[1]!, probeEnd[2]!, scratch3);
+      placeTag(1, tagged && cross >= 0 ? `probe on day ${day}` : '', scratch3[0]!, scratch3[1]!, scratch3[2]!, -28);
+    } else {
+      placeTag(0, tagged ? `${m.target} at arrival` : '', scratch3[0]!, scratch3[1]!, scratch3[2]!, ringPx + 2);
+      place(f.probeAt[0]!, f.probeAt[1]!, f.probeAt[2]!, scratch3);
+      placeTag(1, tagged ? 'probe then' : '', scratch3[0]!, scratch3[1]!, scratch3[2]!, -ringPx - 20);
+    }
+    if ((aiming || !arrived) && !sun && !blind) {
       missLine.visible = true;
       const attr = missLine.geometry.getAttribute('position') as Float32BufferAttribute;
       const arr = attr.array as Float32Array;
@@ -1847,10 +1941,11 @@ style.textContent = `
   .bp-touchbar.ss-pad button { min-width: 44px; padding: 0 3px; font-size: 14px; white-space: normal; line-height: 1.05; }
   .bp-touchbar.ss-pad button.ss-go { min-width: 44px; }
   .ss-status .ss-line { min-height: 2.8em; }
-  .ss-status { position: relative; }
-  .ss-status .ss-hint { position: absolute; left: 6px; right: 6px; top: 100%; z-index: 7; min-height: 0; padding: 4px 8px;
-    border-radius: 8px; background: rgba(8, 12, 20, 0.88); }
+  /* The hint takes the brief's two lines (it was laid over the top of the map, on the planets): the
+     stage keeps its height while aiming. */
+  .ss-status .ss-hint { min-height: 2.8em; }
   .ss-status .ss-hint:empty { display: none; }
+  .ss-status.ss-hinting .ss-brief { display: none !important; }
 }
 details.ss-table summary { cursor: pointer; color: #cfd8e6; }
 `;
@@ -2015,6 +2110,7 @@ function hint(m: Mission): string {
   const world = shell.world;
   if (phase === 'aim') {
     if (forecastKey !== wantedKey() || performance.now() - aimChangedAt < HINT_REST_MS) return '';
+    if (!verdictShown()) return readingHint(m);
     if (adviceKey !== forecastKey) {
       adviseAim(world, handles, m, aim, baseStep(), forecast, aimAdvice);
       adviceKey = forecastKey;
@@ -2064,6 +2160,18 @@ function hint(m: Mission): string {
 }
 
 /**
+ * The hint before the mission's first failed try (`verdictShown`): how to read the map, not what
+ * to press: get the probe's dots to the target's orbit, then make its end and the target's meet.
+ */
+function readingHint(m: Mission): string {
+  const t = m.target;
+  if (forecast.outcome === 'sun') return `It falls into the Sun: turn the arrow ${named('(← →)', '(↺ ↻)')} along the Earth’s path.`;
+  if (pathCrossing(m) < 0)
+    return `First get the probe’s dots to ${t}’s orbit: a faster launch ${named('(↑)', '(+)')} flies farther ${m.distance > 1 ? 'out' : 'in'}.`;
+  return `${t} moves on while the probe flies: launch when ${t}’s dots end where the probe’s do (${named('↑ ↓ ← →', '+ − ↺ ↻')} move the probe’s end, Wait moves ${t}’s).`;
+}
+
+/**
  * The line's end for the forecast shown on `m`, and its class: the forecast's verdict (the flight
  * flown ahead with its own physics, ./forecast.ts; the flight does the same). The ring "at arrival"
  * and the white dot on the map are drawn from the same closest approach, so the line and the map
@@ -2073,6 +2181,7 @@ function hint(m: Mission): string {
 function verdict(m: Mission): [string, string] {
   const f = forecast;
   const scheme = f.scheme === 'rk4' ? '' : ` (forecast with rk4; this flight uses ${f.scheme})`;
+  if (phase === 'aim' && !verdictShown()) return reading(m);
   if (f.outcome === 'sun') return [`✗ falls into the Sun${scheme}`, 'bad'];
   if (phase === 'aim') {
     if (f.outcome === 'arrived')
@@ -2090,6 +2199,42 @@ function verdict(m: Mission): [string, string] {
   }
   if (f.outcome === 'arrived') return [`✓ arrives on day ${Math.round(f.end)}${scheme}`, 'ok'];
   return [`✗ misses ${m.target}: ${missWords(f.closest, m.zone)}${scheme}`, 'bad'];
+}
+
+/** G M_sun in the world now, AU^3/day^2. */
+const sunMu = (): number => shell.world.laws.gravitationalConstant * shell.world.components.Mass.value[slotOf(handles.bodies.Sun)]!;
+/** The target's heliocentric state when `pathCrossing` was last worked out (for the forecast `crossingKey`). */
+const crossingTarget = new Float64Array(6);
+let crossingAt = -1,
+  crossingKey = '';
+/**
+ * The point of the forecast's path to compare with the target (./orbit-crossing.ts meetingPoint:
+ * of its crossings of the target's orbit line, the one nearest the target that day), -1 when it
+ * never gets there or falls into the Sun; worked out once per forecast.
+ */
+function pathCrossing(m: Mission): number {
+  if (crossingKey === forecastKey) return crossingAt;
+  heliocentricState(shell.world, handles, handles.bodies[m.target], crossingTarget);
+  crossingAt = forecast.outcome === 'sun' ? -1 : meetingPoint(forecast, crossingTarget, sunMu());
+  crossingKey = forecastKey;
+  return crossingAt;
+}
+
+/**
+ * The line's end while aiming before the verdict shows (`verdictShown`): what the launch's path
+ * does, to read against the map, not whether it arrives: short of the target's orbit (how far it
+ * gets), or the day it meets the orbit line, and the stars its speed would earn.
+ */
+function reading(m: Mission): [string, string] {
+  const f = forecast;
+  if (f.outcome === 'sun') return ['falls into the Sun', 'bad'];
+  const i = pathCrossing(m);
+  const t = m.target;
+  if (i < 0)
+    return m.distance > 1
+      ? [`goes out only to ${f.farthest.toFixed(2)} AU from the Sun, short of ${t}’s orbit`, 'edge']
+      : [`falls in only to ${f.nearest.toFixed(2)} AU from the Sun, short of ${t}’s orbit`, 'edge'];
+  return [`is at ${t}’s orbit on day ${Math.round(pathDay(f, i))}. Will ${t} be there? ${starText(starsFor(m, aim.speed))} if so`, ''];
 }
 
 /** The simulated days per real second measured over the last second or so (eased), and the last sample: world time (days) and real time (ms). */
@@ -2187,6 +2332,7 @@ function updateStatus(force = false): void {
   planText.textContent = line;
   planText.className = `ss-line ${cls}`;
   hintLine.textContent = shownHint;
+  status.classList.toggle('ss-hinting', shownHint !== '');
   dateText.textContent = dateLine;
   const aimingNow = phase === 'aim';
   setPadLabels(phase === 'flight' ? 'burn' : 'aim');
@@ -2339,6 +2485,8 @@ function showCard(f: Flight): void {
     put(parts, 'b', '', `${r.score.budget}`);
     put(parts, 'span', '', `Flight ${Math.round(f.elapsed)} days`);
     put(parts, 'b', '', `${r.score.time}`);
+    put(parts, 'span', '', launches <= 1 ? 'Arrived at the first launch' : `Arrived at launch ${launches}`);
+    put(parts, 'b', '', `${r.score.tries}`);
     put(
       card,
       'div',
@@ -2350,7 +2498,14 @@ function showCard(f: Flight): void {
   } else {
     put(card, 'h2', '', f.state === 'sun' ? 'The probe fell into the Sun' : `Missed ${m.target}`);
     put(card, 'div', 'ss-card-small', missAdvice(f));
-    put(card, 'div', 'ss-card-small', `Stuck? ${named('Press H', 'Tap Hint')} for what to change.`);
+    put(
+      card,
+      'div',
+      'ss-card-small',
+      verdictShown()
+        ? `Stuck? ${named('Press H', 'Tap Hint')} for what to change.`
+        : `From now on the map shows where ${m.target} will be when the probe comes closest, and ${named('H', 'Hint')} says what to change.`,
+    );
   }
   const sum = bestScore.reduce((a, b) => a + b, 0);
   if (sum > 0)

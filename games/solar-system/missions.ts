@@ -232,35 +232,49 @@ export const SCORE_BUDGET = 1000;
 /** Most points of a mission's score for a quick flight (`missionScore`). */
 export const SCORE_TIME = 250;
 
+/**
+ * Most points of a mission's score for arriving at the first launch (`missionScore`): the map shows
+ * the transfer orbit and where the target goes, and the verdict only after a try, so reading the
+ * map right pays.
+ */
+export const SCORE_FIRST_TRY = 250;
+
 /** A mission's score (`missionScore`): its parts and their sum, points. */
 export interface MissionScore {
   /** SCORE_BUDGET x (the Hohmann launch speed / the speed budget spent): more than SCORE_BUDGET for a launch cheaper than the Hohmann speed. */
   readonly budget: number;
   /** SCORE_TIME x (the Hohmann transfer time / the days flown), at most SCORE_TIME. */
   readonly time: number;
-  /** budget + time. */
+  /** SCORE_FIRST_TRY / the launches it took: SCORE_FIRST_TRY for an arrival at the first launch, half at the second. */
+  readonly tries: number;
+  /** budget + time + tries. */
   readonly total: number;
 }
 
 /**
  * The score of an arrival on `mission` after a speed budget of `speed` km/s (the launch plus the
- * burns) and `days` of flight: points for a cheap flight (the Hohmann transfer's launch speed
- * between circular orbits, 1 AU to mission.distance, over the budget spent, times SCORE_BUDGET: more
- * than SCORE_BUDGET where the orbits' eccentricity makes a moment cheaper than that) and for a quick
- * one (the Hohmann transfer's time over the days flown, times SCORE_TIME, at most SCORE_TIME). A
- * quicker flight costs speed, so the two pull against each other: the best scores wait for the
- * cheapest moment and need no burns. Whole points.
- * @throws RangeError on a speed or days that is not finite and > 0.
+ * burns), `days` of flight and `launches` launches on this mission (1: the first arrived): points
+ * for a cheap flight (the Hohmann transfer's launch speed between circular orbits, 1 AU to
+ * mission.distance, over the budget spent, times SCORE_BUDGET: more than SCORE_BUDGET where the
+ * orbits' eccentricity makes a moment cheaper than that), for a quick one (the Hohmann transfer's
+ * time over the days flown, times SCORE_TIME, at most SCORE_TIME) and for few tries
+ * (SCORE_FIRST_TRY / launches). A quicker flight costs speed, so the first two pull against each
+ * other: the best scores wait for the cheapest moment, need no burns and arrive at the first
+ * launch. Whole points.
+ * @throws RangeError on a speed or days that is not finite and > 0, or launches that is not a whole number >= 1.
  */
-export function missionScore(mission: Mission, speed: number, days: number): MissionScore {
+export function missionScore(mission: Mission, speed: number, days: number, launches = 1): MissionScore {
   if (!(speed > 0 && Number.isFinite(speed))) throw new RangeError(`missionScore: speed must be finite and > 0 km/s, got ${speed}`);
   if (!(days > 0 && Number.isFinite(days))) throw new RangeError(`missionScore: days must be finite and > 0, got ${days}`);
+  if (!(Number.isInteger(launches) && launches >= 1))
+    throw new RangeError(`missionScore: launches must be a whole number >= 1, got ${launches}`);
   const vH = Math.abs(hohmannSpeed(1, mission.distance, GAUSS_MU));
   const a = (1 + mission.distance) / 2;
   const tH = Math.PI * Math.sqrt((a * a * a) / GAUSS_MU);
   const budget = Math.round((SCORE_BUDGET * vH) / speed);
   const time = Math.round(SCORE_TIME * Math.min(1, tH / days));
-  return { budget, time, total: budget + time };
+  const tries = Math.round(SCORE_FIRST_TRY / launches);
+  return { budget, time, tries, total: budget + time + tries };
 }
 
 /** The Sun's gravitational parameter G M_sun in the world, AU^3/day^2. */

@@ -49,7 +49,8 @@ describe('projects', () => {
   });
 
   it('solar-system: the status states the goal and the forecast’s verdict; H a hint of what to change and watch, again on H; paused, the keys turn and speed up the launch; Space launches the probe, ↑ in flight burns and the forecast follows; ] raises the rate; the error table starts at the ephemeris', async () => {
-    const g = await h.openGame('solar-system', { viewport: { width: 1280, height: 800 }, locale: 'de-DE', query: { rate: 0 } });
+    // ?verdict=1: the forecast's verdict from the start (players get it after a failed try; the reload case reads the map).
+    const g = await h.openGame('solar-system', { viewport: { width: 1280, height: 800 }, locale: 'de-DE', query: { rate: 0, verdict: 1 } });
     await checkPageContract(g, 'solar-system', 'desktop');
     type Mission = {
       number: number;
@@ -189,7 +190,7 @@ describe('projects', () => {
   });
 
   it('solar-system: the ring "at arrival" is the real zone and the line the real verdict: the white dot is inside the ring exactly when the line says ✓, and a ✓ launch arrives', async () => {
-    const g = await h.openGame('solar-system', { viewport: { width: 1280, height: 800 }, query: { rate: 0 } });
+    const g = await h.openGame('solar-system', { viewport: { width: 1280, height: 800 }, query: { rate: 0, verdict: 1 } });
     type Plan = { hit: boolean; distance: number; current: boolean; key: string };
     type Ghost = { key: string; visible: boolean; ring: [number, number][]; dot: [number, number] };
     type Solar = {
@@ -296,8 +297,15 @@ describe('projects', () => {
     const g = await h.openGame('solar-system', { viewport: { width: 1280, height: 800 }, query: { rate: 0 } });
     type Solar = { mission(): { number: number; phase: string }; startMission(index: number): void };
     const number = () => g.page.evaluate(() => (window.game as unknown as Solar).mission().number);
-    // A first visit (no storage) starts at mission 1.
+    // A first visit (no storage) starts at mission 1, its line reading the launch's path, not judging it (no ✓ or ✗).
     expect(await number()).toBe(1);
+    await g.waitFor(
+      () =>
+        / → goes out only to \d\.\d\d AU from the Sun, short of Mars’s orbit$/.test(
+          document.querySelector('[data-hud="plan"]')?.textContent ?? '',
+        ),
+      null,
+    );
     // Mission 4 started, then the page reloaded: mission 4 again (it went back to mission 1).
     await g.page.evaluate(() => (window.game as unknown as Solar).startMission(3));
     await g.page.reload();

@@ -462,7 +462,7 @@ describe('missions', () => {
     const at = missionScore(m, 2.943, tH);
     expect(Math.abs(at.budget - 1000)).toBeLessThanOrEqual(2);
     expect(Math.abs(at.time - 250)).toBeLessThanOrEqual(1);
-    expect(at.total).toBe(at.budget + at.time);
+    expect(at.total).toBe(at.budget + at.time + at.tries);
     // Half the speed: twice the budget points; twice the days: half the time points (rounded).
     expect(Math.abs(missionScore(m, 2.943 / 2, 2 * tH).budget - 2000)).toBeLessThanOrEqual(4);
     expect(Math.abs(missionScore(m, 2.943, 2 * tH).time - 125)).toBeLessThanOrEqual(1);
