@@ -339,7 +339,8 @@ const game = await startPixiGame({
     padding: 0,
     particles: { blend: 'add', trails: params.trails ? TRAILS : false, minPixelSize: 1.5 },
   },
-  app: { background: 0x03050c },
+  // The sky's darkest, highest band (0x060918; see skyBandColor): drawSkyAndGround leaves it to the clear.
+  app: { background: 0x060918 },
   onFrame: (alpha, world) => drawFrame(alpha, world),
 });
 const { shell, renderer, app } = game;
@@ -529,6 +530,14 @@ frameSky();
 /** The horizon's skyline: heights (m) of the ground at x = 0, 8, 16, ... m. */
 const SKYLINE = [2.2, 2.6, 3.4, 2.8, 2.4, 4.6, 5.2, 3.1, 2.5, 2.2, 3.8, 4.4, 3.0, 2.4, 2.7, 3.6];
 
+/** Bands of the night sky (`drawSkyAndGround`). */
+const SKY_BANDS = 12;
+/** Colour of sky band i (0 the lowest, SKY_BANDS - 1 the highest and darkest), 0xRRGGBB. */
+function skyBandColor(i: number): number {
+  const f = 1 - i / SKY_BANDS;
+  return (Math.round(6 + 14 * f * f) << 16) | (Math.round(9 + 16 * f * f) << 8) | Math.round(24 + 30 * f * f);
+}
+
 function drawSkyAndGround(): void {
   const cam = renderer.camera;
   if (cam.version === skyVersion) return;
@@ -536,18 +545,15 @@ function drawSkyAndGround(): void {
   const sky = show.params.sky;
   skyLayer.clear();
   // Bands of a night sky, darker upwards, across the whole canvas (no letterbox: the view's aspect
-  // is the world's, the canvas's is the window's); above the world the darkest band goes on.
-  const bands = 12;
-  const bandColor = (i: number): number => {
-    const f = 1 - i / bands;
-    return (Math.round(6 + 14 * f * f) << 16) | (Math.round(9 + 16 * f * f) << 8) | Math.round(24 + 30 * f * f);
-  };
-  skyLayer.rect(0, 0, cam.width, cam.height).fill(bandColor(bands - 1));
-  for (let i = 0; i < bands; i++) {
-    const y0 = (sky.height * i) / bands,
-      y1 = (sky.height * (i + 1)) / bands;
-    const top = i === bands - 1 ? 0 : cam.toScreenY(y1);
-    skyLayer.rect(0, top, cam.width, cam.toScreenY(y0) - top + 1).fill(bandColor(i));
+  // is the world's, the canvas's is the window's); above the world the darkest band goes on. The
+  // darkest is the canvas's clear colour (the app's background), so it is not drawn: each pixel of
+  // the sky is filled once. Filling the canvas under the bands as well doubled the sky's cost, the
+  // largest part of a frame's drawing in software WebGL (SwiftShader), more than a burst's sparks.
+  for (let i = 0; i < SKY_BANDS - 1; i++) {
+    const y0 = (sky.height * i) / SKY_BANDS,
+      y1 = (sky.height * (i + 1)) / SKY_BANDS;
+    const top = cam.toScreenY(y1);
+    skyLayer.rect(0, top, cam.width, cam.toScreenY(y0) - top + 1).fill(skyBandColor(i));
   }
   for (const [x, y, a] of STARS)
     skyLayer.circle(cam.toScreenX(x * sky.width), cam.toScreenY(y * sky.height), 0.8).fill({ color: 0xdfe8ff, alpha: a });
