@@ -1355,11 +1355,13 @@ function statusFrame(): StatusFrame {
         : `Light ${run.lit.length} lanterns with ${plural(lv.shells, 'shell', 'shells')} · ${lv.name}`;
     numbers = `Level ${run.level + 1}/${LEVELS.length} · Lit ${shownLit(run, time)}/${run.lit.length} · Shells ${left} · Par ${lv.par}`;
     hint =
-      missed && !lost
-        ? left === 1
-          ? 'Missed · last shell!'
-          : 'Missed · a lantern must be inside the ring'
-        : `${touch ? 'Tap' : 'Click'} ${lv.tip}`;
+      run.stars > 0
+        ? `Lit with ${plural(run.shells, 'shell', 'shells')} · par ${lv.par}`
+        : missed && !lost
+          ? left === 1
+            ? 'Missed · last shell!'
+            : 'Missed · a lantern must be inside the ring'
+          : `${touch ? 'Tap' : 'Click'} ${lv.tip}`;
   }
   return { goal, numbers, hint, cleared, last, lost };
 }
