@@ -209,8 +209,11 @@ const WALL_FILL_GAP = 0.4;
  * level 2 a wall of small holes (LEVEL2_RADIUS) across the field, high up (LEVEL2_WALL_HEIGHT: its
  * pull at the start weak, so taps steer the ship) with one gap of LEVEL2_GATE off to the side (fly
  * across to it, then up through it); level 3 a zig-zag of small holes up the straight path (`zigzag`: weave
- * between them); level 4 three holes, two across the path one above the other;
- * level 5 a fourth hole; from level 6 the holes drift, slowly at first (0.35, then 0.6, 0.8 m/s);
+ * between them); level 4 four holes, one across the straight path up and one on each diagonal, small
+ * (horizons 0.5 to 0.85 m: a hole's pull matches the thrust within sqrt(c^2 r / (2 a)) of its centre,
+ * which grows with r, so with level 1's 0.6 m holes grown to 1.1 m level 4 was where steering lost
+ * to the pull); level 5 a second hole across the path, the holes no bigger; from level 6 the holes
+ * grow again step by step (to 1, 1.1, 1.2 m) and drift, slowly at first (0.35, then 0.6, 0.8 m/s);
  * from level 8 the fuel is limited (18 s, then 15 s down to 5 s); from level 9 a fifth hole, then a
  * hole more every second level (up to MAX_HOLES), bigger (radius up to 2 m) and faster (up to 3 m/s).
  * @throws RangeError unless level is an integer >= 1.
@@ -254,15 +257,15 @@ export function levelSpec(level: number): LevelSpec {
     case 3:
       return spec(5, [0.4, 0.5], 0, 0, 0, Infinity, 0, false, [10, 12], true);
     case 4:
-      return spec(4, [0.6, 1.1], 0, 1, 0, Infinity);
+      return spec(4, [0.5, 0.85], 0, 1, 0, Infinity);
     case 5:
-      return spec(4, [0.6, 1.1], 0, 2, 0, Infinity);
+      return spec(4, [0.45, 0.85], 0, 2, 0, Infinity);
     case 6:
-      return spec(4, [0.6, 1.2], 0, 2, 0.35, Infinity);
+      return spec(4, [0.55, 1], 0, 2, 0.35, Infinity);
     case 7:
-      return spec(4, [0.6, 1.2], 0, 2, 0.6, Infinity);
+      return spec(4, [0.6, 1.1], 0, 2, 0.6, Infinity);
     case 8:
-      return spec(4, [0.6, 1.3], 0, 2, 0.8, 18);
+      return spec(4, [0.6, 1.2], 0, 2, 0.8, 18);
     default: {
       const k = level - 9;
       return spec(

@@ -627,7 +627,7 @@ window.addEventListener('blur', () => {
 const style = document.createElement('style');
 style.textContent = `
 .bh-status { text-align: center; font: 13px/1.4 system-ui, sans-serif; color: #e8ecf1; padding: 6px 10px 2px; }
-.bh-status .bh-numbers { font: 600 15px ui-monospace, Menlo, Consolas, monospace; }
+.bh-status .bh-numbers { font: 600 15px ui-monospace, Menlo, Consolas, monospace; white-space: nowrap; overflow: hidden; }
 .bh-status .bh-message { color: #ffd166; }
 /* On a phone a message wraps to one or two lines: two are kept, so the scene under it does not jump. */
 @media (max-width: 600px) { .bh-status .bh-message { min-height: 2.8em; } .bh-status .bh-numbers { font-size: 13px; } }
@@ -836,6 +836,24 @@ const REPLAY_LINE = {
   keys: 'Replay of your run (waits skipped). Any key or a click: back to where you were.',
 };
 
+/**
+ * Writes the numbers line from `parts` (text, whether it can be left out; empty ones skipped) on one
+ * line: where it does not fit the status row's width (a phone's, with a replay's clock or the fuel),
+ * the parts that can go are left out, last first, and then the gaps narrowed. A second line pushed
+ * the field down under the pad during a replay.
+ */
+function fitNumbers(parts: ReadonlyArray<readonly [string, boolean]>): void {
+  const kept = parts.filter(([p]) => p !== '');
+  const fits = (): boolean => numbers.scrollWidth <= numbers.clientWidth + 1;
+  numbers.textContent = kept.map(([p]) => p).join('   ');
+  for (let i = kept.length - 1; i >= 0 && !fits(); i--) {
+    if (!kept[i]![1]) continue;
+    kept.splice(i, 1);
+    numbers.textContent = kept.map(([p]) => p).join('   ');
+  }
+  if (!fits()) numbers.textContent = kept.map(([p]) => p).join('  ');
+}
+
 function updateStatus(force = false): void {
   // The classic game's hole count follows the field (a crossing adds a hole).
   if (!levels && params.holes !== bh.holes.length && bh.holes.length > 0) {
@@ -843,15 +861,27 @@ function updateStatus(force = false): void {
     panel.refresh();
   }
   const lives = `Lives ${'♥'.repeat(bh.lives)}${'♡'.repeat(Math.max(0, bh.params.lives - bh.lives))}`;
-  const n = run
-    ? // The holes on the field (none while the next level waits to begin).
-      `Level ${run.spec.level}   ${lives}   ${run.waiting ? '' : `Holes ${bh.holes.length}   `}Score ${bh.score}   Best ${Math.max(best, bh.score)}` +
-      (Number.isFinite(run.fuelLeft) ? `   Fuel ${run.fuelLeft.toFixed(1)} s` : '')
-    : `${lives}   Score ${bh.score} (1 a hole)   Holes ${bh.holes.length}`;
-  const playing = replay.player ? `   ▶ Replay ${(replay.player.played * bh.world.dt).toFixed(0)} s` : '';
-  if (force || n + playing !== shownNumbers) {
-    shownNumbers = n + playing;
-    numbers.textContent = n + playing;
+  // The parts of the numbers line, the ones it can go without (for `fitNumbers`) marked.
+  const parts: Array<[string, boolean]> = run
+    ? [
+        [`Level ${run.spec.level}`, false],
+        [lives, false],
+        // The holes on the field (none while the next level waits to begin).
+        [run.waiting ? '' : `Holes ${bh.holes.length}`, true],
+        [`Score ${bh.score}`, false],
+        [`Best ${Math.max(best, bh.score)}`, true],
+        [Number.isFinite(run.fuelLeft) ? `Fuel ${run.fuelLeft.toFixed(1)} s` : '', false],
+      ]
+    : [
+        [lives, false],
+        [`Score ${bh.score} (1 a hole)`, false],
+        [`Holes ${bh.holes.length}`, true],
+      ];
+  if (replay.player) parts.push([`▶ Replay ${(replay.player.played * bh.world.dt).toFixed(0)} s`, false]);
+  const n = parts.map(([p]) => p).join('|');
+  if (force || n !== shownNumbers) {
+    shownNumbers = n;
+    fitNumbers(parts);
   }
   // While a replay plays, the line says how to leave it (`leaveReplay`) instead of the run's messages.
   const said = replay.player ? (touch ? REPLAY_LINE.touch : REPLAY_LINE.keys) : bh.message;
@@ -1268,7 +1298,8 @@ app.stage.addChild(scoreText);
 /** Draws the rising "+N" of the last crossing while it lasts. */
 function drawScorePop(): void {
   const age = performance.now() - scorePop.start;
-  scoreText.visible = age >= 0 && age < SCORE_POP_MS && scorePop.points > 0;
+  // A level's points go when the next level begins (they hung over level 2's wall when Enter came soon).
+  scoreText.visible = age >= 0 && age < SCORE_POP_MS && scorePop.points > 0 && (!run || run.waiting);
   if (!scoreText.visible) return;
   const cam = renderer.camera;
   const u = age / SCORE_POP_MS;
@@ -1397,11 +1428,14 @@ let padPath = false;
 const SHIP_MIN_PX = 26;
 /** The ship's drawn height in the last frame, px. */
 let shipPx = 0;
+/** Half the drawn ship's width and its tail below its centre, in ship heights (see `drawShip`). */
+const SHIP_HALF_WIDTH = 0.38,
+  SHIP_TAIL = 0.45;
 /** The ship's arrowhead at screen (sx, sy), k px a metre, turned by `turn` rad. */
 function drawShip(sx: number, sy: number, k: number, turn: number, color: number): void {
   const c = Math.cos(turn),
     n = Math.sin(turn);
-  const pts = [0, -0.55, 0.38, 0.45, 0, 0.25, -0.38, 0.45];
+  const pts = [0, -0.55, SHIP_HALF_WIDTH, SHIP_TAIL, 0, 0.25, -SHIP_HALF_WIDTH, SHIP_TAIL];
   const out: number[] = [];
   for (let i = 0; i < pts.length; i += 2) out.push(sx + k * (c * pts[i]! - n * pts[i + 1]!), sy + k * (n * pts[i]! + c * pts[i + 1]!));
   overlay.poly(out).fill(color);
@@ -1771,9 +1805,12 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   }
   // The ship: a small arrowhead, nose up, 1 m tall, with a flame out of the side opposite the thrust.
   // The ship is drawn at least SHIP_MIN_PX tall (on a phone's narrow field it would be under 20 px).
-  const sx = cam.toScreenX(x),
-    sy = cam.toScreenY(y),
-    k = Math.max(SHIP_MIN_PX, cam.toScreenLength(1));
+  // Drawn inside the field's frame: the rules lose the ship when its centre leaves the field, so drawn
+  // at its centre it crossed the frame half out first (on a phone, where it is drawn over 1 m wide).
+  const k = Math.max(SHIP_MIN_PX, cam.toScreenLength(1)),
+    inset = SHIP_HALF_WIDTH * k;
+  const sx = Math.max(cam.toScreenX(0) + inset, Math.min(cam.toScreenX(playField.width) - inset, cam.toScreenX(x))),
+    sy = Math.min(cam.toScreenY(0) - SHIP_TAIL * k, cam.toScreenY(y));
   shipPx = k;
   drawDeath();
   // The words of a fall are not drawn over the path's label ("falls in" under "Swallowed!").

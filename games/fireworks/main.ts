@@ -71,6 +71,7 @@ import {
   threadsReady,
 } from '@bitphysics/physics';
 import { Container, Graphics, Sprite, Text, Texture } from 'pixi.js';
+import { gaugeCentre } from './gauge';
 import {
   type BurstWatch,
   clearShown,
@@ -338,7 +339,8 @@ const game = await startPixiGame({
     padding: 0,
     particles: { blend: 'add', trails: params.trails ? TRAILS : false, minPixelSize: 1.5 },
   },
-  app: { background: 0x03050c },
+  // The sky's darkest, highest band (0x060918; see skyBandColor): drawSkyAndGround leaves it to the clear.
+  app: { background: 0x060918 },
   onFrame: (alpha, world) => drawFrame(alpha, world),
 });
 const { shell, renderer, app } = game;
@@ -528,6 +530,14 @@ frameSky();
 /** The horizon's skyline: heights (m) of the ground at x = 0, 8, 16, ... m. */
 const SKYLINE = [2.2, 2.6, 3.4, 2.8, 2.4, 4.6, 5.2, 3.1, 2.5, 2.2, 3.8, 4.4, 3.0, 2.4, 2.7, 3.6];
 
+/** Bands of the night sky (`drawSkyAndGround`). */
+const SKY_BANDS = 12;
+/** Colour of sky band i (0 the lowest, SKY_BANDS - 1 the highest and darkest), 0xRRGGBB. */
+function skyBandColor(i: number): number {
+  const f = 1 - i / SKY_BANDS;
+  return (Math.round(6 + 14 * f * f) << 16) | (Math.round(9 + 16 * f * f) << 8) | Math.round(24 + 30 * f * f);
+}
+
 function drawSkyAndGround(): void {
   const cam = renderer.camera;
   if (cam.version === skyVersion) return;
@@ -535,18 +545,15 @@ function drawSkyAndGround(): void {
   const sky = show.params.sky;
   skyLayer.clear();
   // Bands of a night sky, darker upwards, across the whole canvas (no letterbox: the view's aspect
-  // is the world's, the canvas's is the window's); above the world the darkest band goes on.
-  const bands = 12;
-  const bandColor = (i: number): number => {
-    const f = 1 - i / bands;
-    return (Math.round(6 + 14 * f * f) << 16) | (Math.round(9 + 16 * f * f) << 8) | Math.round(24 + 30 * f * f);
-  };
-  skyLayer.rect(0, 0, cam.width, cam.height).fill(bandColor(bands - 1));
-  for (let i = 0; i < bands; i++) {
-    const y0 = (sky.height * i) / bands,
-      y1 = (sky.height * (i + 1)) / bands;
-    const top = i === bands - 1 ? 0 : cam.toScreenY(y1);
-    skyLayer.rect(0, top, cam.width, cam.toScreenY(y0) - top + 1).fill(bandColor(i));
+  // is the world's, the canvas's is the window's); above the world the darkest band goes on. The
+  // darkest is the canvas's clear colour (the app's background), so it is not drawn: each pixel of
+  // the sky is filled once. Filling the canvas under the bands as well doubled the sky's cost, the
+  // largest part of a frame's drawing in software WebGL (SwiftShader), more than a burst's sparks.
+  for (let i = 0; i < SKY_BANDS - 1; i++) {
+    const y0 = (sky.height * i) / SKY_BANDS,
+      y1 = (sky.height * (i + 1)) / SKY_BANDS;
+    const top = cam.toScreenY(y1);
+    skyLayer.rect(0, top, cam.width, cam.toScreenY(y0) - top + 1).fill(skyBandColor(i));
   }
   for (const [x, y, a] of STARS)
     skyLayer.circle(cam.toScreenX(x * sky.width), cam.toScreenY(y * sky.height), 0.8).fill({ color: 0xdfe8ff, alpha: a });
@@ -679,6 +686,8 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
 
 // ---- Charging: what a press shows and sounds from its first frame -----------------------------------
 
+/** Whether the press being charged is a finger's (its gauge is drawn clear of it: ./gauge.ts). */
+let pressTouch = false;
 /** Charge sounds played for the current press: -1 none yet, 0 the fuse lit, 1 to 3 each third of MAX_HOLD. */
 let chargeHeard = -1;
 /** Radius of the fuse ring round the pointer, CSS px. */
@@ -736,25 +745,27 @@ function drawCharge(): void {
     overlay.circle(pointerX, pointerY, r).stroke({ width: 1.5, color: 0xffe8a0, alpha: 0.25 + 0.08 * (s - 1) });
   }
   // The fuse ring: pops in over 0.15 s (from twice its size), its track dark, the burnt part gold
-  // from the top clockwise, a flickering spark at its head; pulsing white-gold once full.
+  // from the top clockwise, a flickering spark at its head; pulsing white-gold once full. Round the
+  // pointer, or clear of a finger (above it; ./gauge.ts), where the finger hid it.
+  const [gx, gy] = gaugeCentre(pointerX, pointerY, pressTouch, cam.width, cam.height, FUSE_RING + 6, chargeLabel.height + 12);
   const pop = Math.min(1, held / 0.15);
   const R = FUSE_RING * (2 - pop);
-  overlay.circle(pointerX, pointerY, R).stroke({ width: 5, color: 0x03050c, alpha: 0.55 * pop });
-  overlay.circle(pointerX, pointerY, R).stroke({ width: 1.5, color: 0xffe8a0, alpha: 0.35 * pop });
+  overlay.circle(gx, gy, R).stroke({ width: 5, color: 0x03050c, alpha: 0.55 * pop });
+  overlay.circle(gx, gy, R).stroke({ width: 1.5, color: 0xffe8a0, alpha: 0.35 * pop });
   const full = holds && burnt >= 1;
   const steps = Math.max(1, Math.ceil(48 * burnt));
-  overlay.moveTo(pointerX, pointerY - R);
+  overlay.moveTo(gx, gy - R);
   for (let k = 1; k <= steps; k++) {
     const a = -Math.PI / 2 + (2 * Math.PI * burnt * k) / steps;
-    overlay.lineTo(pointerX + R * Math.cos(a), pointerY + R * Math.sin(a));
+    overlay.lineTo(gx + R * Math.cos(a), gy + R * Math.sin(a));
   }
   const pulse = full ? 0.75 + 0.25 * Math.sin(performance.now() / 60) : 1;
   overlay.stroke({ width: full ? 5 : 4, color: full ? 0xffd166 : 0xffb040, alpha: pulse * pop });
-  if (full) overlay.circle(pointerX, pointerY, R + 6).stroke({ width: 2, color: 0xfff6d8, alpha: 0.8 * pulse });
+  if (full) overlay.circle(gx, gy, R + 6).stroke({ width: 2, color: 0xfff6d8, alpha: 0.8 * pulse });
   if (!full) {
     const a = -Math.PI / 2 + 2 * Math.PI * burnt;
-    const hx = pointerX + R * Math.cos(a),
-      hy = pointerY + R * Math.sin(a);
+    const hx = gx + R * Math.cos(a),
+      hy = gy + R * Math.sin(a);
     overlay.circle(hx, hy, 3.5).fill({ color: 0xfff6d8, alpha: pop });
     for (let k = 0; k < 3; k++) {
       const b = Math.random() * 2 * Math.PI,
@@ -769,8 +780,8 @@ function drawCharge(): void {
   const text = !holds ? 'no bigger burst here · let go to launch' : full ? 'biggest burst · let go' : 'hold: a bigger burst';
   if (chargeLabel.text !== text) chargeLabel.text = text;
   chargeLabel.position.set(
-    Math.min(cam.width - chargeLabel.width / 2 - 4, Math.max(chargeLabel.width / 2 + 4, pointerX)),
-    Math.max(chargeLabel.height + 2, pointerY - FUSE_RING - 10),
+    Math.min(cam.width - chargeLabel.width / 2 - 4, Math.max(chargeLabel.width / 2 + 4, gx)),
+    Math.max(chargeLabel.height + 2, gy - FUSE_RING - 10),
   );
   // On the finale's meeting the label under its ring says when to let go; this one would contradict it.
   chargeLabel.visible = !(lanternShow && meetLabel.visible);
@@ -878,6 +889,7 @@ canvas.addEventListener('pointerdown', (event) => {
     return;
   }
   pointerId = event.pointerId;
+  pressTouch = event.pointerType === 'touch';
   canvas.setPointerCapture(event.pointerId);
   pressedAt = performance.now();
   chargeHeard = -1;
@@ -1331,16 +1343,25 @@ function statusFrame(): StatusFrame {
     else hint = `Play again: ${short.length === 1 ? 'level' : 'levels'} ${short.join(', ')} can still earn stars`;
   } else {
     // The shells still to launch count down in the numbers (one line on a phone); the goal says how many the level gives.
+    // Every lantern lit, their glow coming up (CLEAR_DELAY before the card): the goal line says so at
+    // once, with the count at n/n (the card's "All lanterns lit!" came seconds after "Lit 4/4" when
+    // frames were slow).
     goal = lost
       ? `Out of shells! ${shownLit(run, time)} of ${run.lit.length} lit`
-      : `Light ${run.lit.length} lanterns with ${plural(lv.shells, 'shell', 'shells')} · ${lv.name}`;
+      : run.stars > 0
+        ? last
+          ? 'Show complete!'
+          : 'All lanterns lit!'
+        : `Light ${run.lit.length} lanterns with ${plural(lv.shells, 'shell', 'shells')} · ${lv.name}`;
     numbers = `Level ${run.level + 1}/${LEVELS.length} · Lit ${shownLit(run, time)}/${run.lit.length} · Shells ${left} · Par ${lv.par}`;
     hint =
-      missed && !lost
-        ? left === 1
-          ? 'Missed · last shell!'
-          : 'Missed · a lantern must be inside the ring'
-        : `${touch ? 'Tap' : 'Click'} ${lv.tip}`;
+      run.stars > 0
+        ? `Lit with ${plural(run.shells, 'shell', 'shells')} · par ${lv.par}`
+        : missed && !lost
+          ? left === 1
+            ? 'Missed · last shell!'
+            : 'Missed · a lantern must be inside the ring'
+          : `${touch ? 'Tap' : 'Click'} ${lv.tip}`;
   }
   return { goal, numbers, hint, cleared, last, lost };
 }

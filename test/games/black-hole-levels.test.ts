@@ -544,6 +544,28 @@ describe('levels', () => {
     expect(() => createBlackHoleGame({ field: { width: 8, height: 30 } })).toThrow(/field.width must be in \[12, 64\] m, got 8/);
   });
 
+  test("steering keeps up with the pull step by step: the reach of the holes' grip grows from level 4 to 8, starting near level 1's", () => {
+    // A hole of mass M grips the ship (pulls harder than the thrust a) within d = sqrt(G M / a) of its
+    // centre. Mean over seeds 1-8 on the default field of the widest grip on the field, from the holes
+    // the level lays out (their masses, the game's G and thrust). Level 4 had 1.1 m horizons where level 1
+    // has 0.6 m: its grip was 1.35 times level 1's and steering lost to the pull there.
+    const grip = (level: number): number => {
+      let sum = 0;
+      for (let seed = 1; seed <= 8; seed++) {
+        const g = createBlackHoleGame({ seed });
+        startLevel(g, level);
+        const G = gravitationalConstant(g);
+        sum += Math.max(...g.holeMass.map((M) => Math.sqrt((G * M) / g.params.thrust)));
+      }
+      return sum / 8;
+    };
+    const [one, ...later] = [1, 4, 5, 6, 7, 8].map(grip);
+    expect(later[0]! / one!).toBeLessThan(1.25);
+    // Each level's no narrower than the last (5 % for the draw of radii over 8 seeds), and level 8's wider than level 4's.
+    for (let i = 1; i < later.length; i++) expect(later[i]!, `level ${i + 4}`).toBeGreaterThan(0.95 * later[i - 1]!);
+    expect(later[4]!).toBeGreaterThan(1.1 * later[0]!);
+  });
+
   test('from level 4 holding thrust up falls in: holes lie across the straight path', () => {
     for (let level = 4; level <= 5; level++) {
       for (let seed = 1; seed <= 4; seed++) {
