@@ -150,7 +150,7 @@ describe('submarine on the seabed', () => {
     run(b, {}, 0.5); // let go: the helm holds the depth it is at
     expect(b.helm.mode).toBe('holding');
     const held = b.helm.holdY;
-    run(b, { ahead: true }, 12);
+    run(b, { ahead: true }, 16);
     expect(c.Position.x[b.h.hull]!).toBeGreaterThan(at + 40); // it went past the ridge
     expect(b.touched).toBe(false);
     expect(b.hits).toBe(0);
