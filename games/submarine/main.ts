@@ -15,7 +15,8 @@
  * arrow from it to the mine, a tag over the sail ("rise over") or under the keel ("dive under") and a low two-note call.
  * Keys: S / W or down / up arrows dive / rise, A / D or left / right arrows astern / ahead, Q / E
  * nose down / up, P pause, N step, R reset. Touch: a stick under the scene (down dives, up rises,
- * right ahead, left astern; pushed part way it asks for part of the speed) and Nose buttons.
+ * right ahead, left astern; pushed part way it asks for part of the speed; up or down only keeps the
+ * screw running as it was) and Nose buttons.
  * Sound: the screw's hum follows the throttle, a hiss when the vents open or the tanks blow, a sonar
  * ping that quickens as the next beacon nears, a rising chime for each beacon (rings spread from it
  * and a banner counts it), a thump on the seabed, a blast (a flash and bubbles) when a mine goes off.
@@ -54,7 +55,7 @@ import {
   touchesMine,
 } from './mines';
 import { drawFish } from './sea-life';
-import { type BedAhead, bedAhead, seabedInput, touchSeabed } from './seabed';
+import { type BedAhead, bedAhead, DIVE_STOPPED_WORD, helmWord, seabedInput, touchSeabed } from './seabed';
 import { type Glow, layTrail, touchesGlow } from './trail';
 
 const params = {
@@ -336,6 +337,9 @@ function heldInput(now: number): HelmInput {
       ? keyHeaveShare(heaveKeySince, now, speedAhead())
       : Math.min(stickShare(stickInput.y, false), keyHeaveShare(now, now, speedAhead())),
     drive: stickShare(stickInput.x, held.has('a') || held.has('d') || held.has('arrowleft') || held.has('arrowright')),
+    // The stick pushed up or down only keeps the screw as it is (a stranger pushing it straight up
+    // to rise stopped the screw); let go, or pushed sideways, it drives the screw as the keys do.
+    keepThrottle: Math.abs(stickInput.y) > STICK_DEAD && Math.abs(stickInput.x) <= STICK_DEAD,
   };
 }
 
@@ -494,11 +498,15 @@ function stepWorld(world: PhysicsWorld): void {
       state.collected++;
       state.score += BEACON_POINTS;
       const last = state.collected === taken.length;
+      // The target moves on to the next beacon along the course (./beacons.ts chooseBeacon), which the banner names.
+      const target = aim.index;
+      aim.index = chooseBeacon(handles.beacons, taken, c.Position.x[e]!, c.Position.y[e]!, aim.index, i);
+      if (aim.index >= 0 && aim.index !== target) aimSwitchedAt = world.time;
       pickups.push({
         x: handles.beacons[2 * i]!,
         y: handles.beacons[2 * i + 1]!,
         time: world.time,
-        text: last ? `All ${taken.length} beacons!` : `Beacon ${state.collected} of ${taken.length}`,
+        text: last ? `All ${taken.length} beacons!` : `Beacon ${state.collected} of ${taken.length}\nnext: ${beaconName(aim.index)}`,
       });
       // A rising two-note chime (a fifth apart); the last beacon a third note and a crackle.
       sound.chime(last ? 1047 : 784, 0.3);
@@ -596,6 +604,7 @@ const banner = new Text({
   style: {
     fill: 0xffe066,
     fontSize: 30,
+    align: 'center',
     fontWeight: '800',
     fontFamily: 'system-ui, sans-serif',
     stroke: { color: 0x06213a, width: 5 },
@@ -2197,7 +2206,9 @@ function draw(): void {
         ? `Hull breached · ${state.collected} of ${taken.length} beacons`
         : '';
   showEnd();
-  const helm = state.mode === 'holding' ? `holding ${(-state.holdY).toFixed(0)} m` : state.mode === 'braking' ? 'stopping' : state.mode;
+  const helm = helmWord(state.mode, state.holdY, state.diveStopped);
+  // A held Dive the seabed stops is said on the readout too, where the eye is.
+  const stopped = state.diveStopped ? ` · ${DIVE_STOPPED_WORD}` : '';
   // The depth, and the depth ordered while the boat is a metre or more from it ("depth 30 → 34 m").
   const ordered = Number.isFinite(state.holdY) && Math.abs(state.holdY + depth) >= 1 ? ` → ${(-state.holdY).toFixed(0)}` : '';
   const streak = state.streak > 1 ? ` ×${Math.min(GLOW_STREAK_MAX, state.streak)}` : '';
@@ -2216,8 +2227,8 @@ function draw(): void {
   // The clock turns red once par has passed.
   goal.style.color = !state.over && state.time > state.par ? '#ff9e8a' : '#ffe066';
   readoutText.textContent = compact
-    ? `depth ${Math.max(0, depth).toFixed(0)}${ordered} m${rate} · ${speed.toFixed(0)} m/s · `
-    : `depth ${Math.max(0, depth).toFixed(0)}${ordered} m${rate} · speed ${speed.toFixed(1)} m/s · score ${state.score}${streak} · `;
+    ? `depth ${Math.max(0, depth).toFixed(0)}${ordered} m${rate}${stopped || ` · ${speed.toFixed(0)} m/s`} · `
+    : `depth ${Math.max(0, depth).toFixed(0)}${ordered} m${rate}${stopped} · speed ${speed.toFixed(1)} m/s · score ${state.score}${streak} · `;
   showHull();
   instruments.textContent = [
     `seabed ${(-floor).toFixed(0)} m`,

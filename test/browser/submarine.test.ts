@@ -864,7 +864,7 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
       (window.game as unknown as Fx).paused = false;
     });
     await g.frames(2);
-    expect(await g.page.evaluate(() => (window.game as unknown as Fx).pickupEffect().banner)).toBe('Beacon 1 of 6');
+    expect(await g.page.evaluate(() => (window.game as unknown as Fx).pickupEffect().banner)).toBe('Beacon 1 of 6\nnext: B');
     expect(g.errors).toEqual([]);
     await g.close();
   }, 180_000);
