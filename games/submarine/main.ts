@@ -201,6 +201,12 @@ const FRAME_MARGIN = 60;
  */
 const HULL_SIDE_ROOM = 60;
 /**
+ * Room the framing camera keeps clear between the hull's bow or stern and the view's right edge,
+ * px: the depth gauge and its tags ("you 30 m", "beacon A 27 m", up to about 105 px in from the
+ * edge). With HULL_SIDE_ROOM there too, a stranger saw the boat reach the right edge under its tag.
+ */
+const HULL_GAUGE_ROOM = 120;
+/**
  * The framing camera zooms out no further than this, px/m (beyond, the edge arrow leads on): 5 on
  * a wide screen (the 12 m hull 60 px long; at 2 px/m a stranger saw it shrink to about 35 px at
  * speed), 4 on a small one, where the hull would otherwise shrink under 48 px and the mines to specks.
@@ -1100,6 +1106,8 @@ createButtonBar(
  * way to the pointer's beacon, it gets a pulsing red ring at the distance where the hull sets it
  * off. A blast: a white-orange flash and a ring of rising bubbles, over `BLAST_LIFE` s.
  */
+/** The live mines drawn this frame: each one's halo as a box on the screen (x, y, width, height, px), for the gauge's tags to keep off. */
+const mineBoxes: [number, number, number, number][] = [];
 function drawMines(
   t: number,
   k: number,
@@ -1112,11 +1120,14 @@ function drawMines(
   ha: number,
 ): void {
   const R = MINE_RADIUS * 0.7;
+  mineBoxes.length = 0;
   for (let i = 0; i < mines.length; i++) {
     const m = mines[i]!;
     if (!mineLive[i] || m.x < left - 5 || m.x > right + 5) continue;
     const x = sx(m.x),
-      y = sy(m.y);
+      y = sy(m.y),
+      halo = Math.max(9, 1.9 * MINE_RADIUS * k);
+    mineBoxes.push([x - halo, y - halo, 2 * halo, 2 * halo]);
     // The cable, in links every 1.5 m, and the anchor block it holds to.
     const links = Math.max(1, Math.floor((m.y - R - m.anchor) / 1.5));
     g.moveTo(x, y + R * k)
@@ -1125,7 +1136,7 @@ function drawMines(
     if (k >= 4) for (let j = 1; j < links; j++) g.circle(x, sy(m.y - R - 1.5 * j), 0.18 * k).stroke({ color: 0xb8c6d0, width: 1 });
     g.rect(x - 0.9 * k, sy(m.anchor) - 0.7 * k, 1.8 * k, 0.9 * k).fill(0x5a6570);
     // A warm halo, so the sphere stands out of the blue at any zoom.
-    g.circle(x, y, Math.max(9, 1.9 * MINE_RADIUS * k)).fill({ color: 0xff5a36, alpha: 0.16 });
+    g.circle(x, y, halo).fill({ color: 0xff5a36, alpha: 0.16 });
     // Near the hull (or on the way to the beacon): a pulsing ring where contact begins.
     const near = hullDistance(hx, hy, ha, m.x, m.y);
     if (near < MINE_WARN_DISTANCE || i === wayMine || i === ahead?.index) {
@@ -1243,7 +1254,7 @@ const popLabels: Text[] = [];
  * mine coming into view at the right edge shows (a 36 px opaque gauge hid the edge on a phone).
  */
 const GAUGE_WIDTH = 26;
-/** A beacon's lamp this far inside the scene's edges (and the depth gauge) is on screen, px: its label shows, not the edge arrow. */
+/** A beacon's lamp this far inside the scene's left, top and bottom edges (and up to 6 px from the depth gauge) is on screen, px: its label shows, not the edge arrow. */
 const ON_SCREEN_MARGIN = 14;
 /** The depth gauge's figures: one every 50 m of the scale ("0", "50", ...), a pool hidden when unused. */
 const gaugeMarks: Text[] = [];
@@ -1356,6 +1367,11 @@ function drawDepthGauge(W: number, H: number, depth: number, order: number, bed:
     if (!pointer.visible || bw <= 0) continue;
     const box = [bx - 7, by - 2, bw + 14, bh + 4];
     if (gaugeDepth.visible) offFrame(gaugeDepth, box, top, bottom);
+    for (const mark of gaugeMarks) if (mark.visible && overlaps(textBox(mark), box, 2)) mark.visible = false;
+  }
+  // Off the live mines in view (on a phone the boat's depth was written over a mine near the edge).
+  for (const box of mineBoxes) {
+    for (const tag of [gaugeDepth, gaugeTarget]) if (tag.visible) offFrame(tag, box, top, bottom);
     for (const mark of gaugeMarks) if (mark.visible && overlaps(textBox(mark), box, 2)) mark.visible = false;
   }
   gauge_.depth = gaugeDepth.visible ? textBox(gaugeDepth) : [0, 0, 0, 0];
@@ -1640,9 +1656,11 @@ function draw(): void {
   const k = zoom;
   // Centred between them, moved toward the hull as far as needed to keep the hull FRAME_MARGIN
   // inside the view when both do not fit; never more sky than the top 15% of the view.
-  // The hull's centre itself keeps HULL_SIDE_ROOM past its half length from the sides (hullReachX).
+  // The hull's centre itself keeps HULL_SIDE_ROOM past its half length from the left side (hullReachX).
+  // Right of centre the hull keeps HULL_GAUGE_ROOM (hullReachRight), clear of the depth gauge's tags.
   const reachX = Math.max(0, W / 2 - FRAME_MARGIN) / k,
     hullReachX = Math.max(0, W / 2 - Math.max(FRAME_MARGIN, (SUBMARINE.length / 2) * k + HULL_SIDE_ROOM)) / k,
+    hullReachRight = Math.max(0, W / 2 - Math.max(FRAME_MARGIN, (SUBMARINE.length / 2) * k + HULL_GAUGE_ROOM)) / k,
     reachY = Math.max(0, H / 2 - FRAME_MARGIN) / k;
   // Look-ahead: the view leads the hull by LEAD_TIME s (PORTRAIT_LEAD_TIME on a portrait view) of its velocity along x (LEAD_TIME_Y s across), at most LEAD_SHARE of the way
   // to the framing margin, eased over about LEAD_EASE s of game time (a bump or a blast does not jerk
@@ -1657,7 +1675,7 @@ function draw(): void {
     leadY = Math.max(-LEAD_SHARE * reachY, Math.min(LEAD_SHARE * reachY, camera.leadY));
   const atLeast = (framed: number, hull: number, lead: number) =>
     lead > 0 ? Math.max(framed, hull + lead) : lead < 0 ? Math.min(framed, hull + lead) : framed;
-  const cx = Math.max(hxw - hullReachX, Math.min(hxw + hullReachX, atLeast((hxw + fx) / 2, hxw, leadX))),
+  const cx = Math.max(hxw - hullReachRight, Math.min(hxw + hullReachX, atLeast((hxw + fx) / 2, hxw, leadX))),
     cy = Math.min(-H / k / 2 + (0.15 * H) / k, Math.max(hyw - reachY, Math.min(hyw + reachY, atLeast((hyw + fy) / 2, hyw, leadY))));
   camera.x = cx;
   camera.y = cy;
@@ -1926,11 +1944,13 @@ function draw(): void {
     aim.dx = wx - hxw;
     aim.dy = wy - hyw;
     // The right margin leaves the depth gauge clear too (on a phone the badge sat over it). A beacon
-    // whose lamp is in view (ON_SCREEN_MARGIN inside the edges and the gauge) counts as on screen:
+    // whose lamp is in view (ON_SCREEN_MARGIN inside the edges, 6 px from the gauge) counts as on screen:
     // with the badge's margin, on a phone the badge was drawn over the very beacon it pointed to.
     const right = W - GAUGE_WIDTH - m;
     const inside = ON_SCREEN_MARGIN;
-    aim.onScreen = bx >= inside && bx <= W - GAUGE_WIDTH - inside && by >= inside && by <= H - inside;
+    // At the right, a lamp up to the gauge's edge is in view (on a phone at the start beacon A lay
+    // 12 px inside the gauge and the badge pointing to it was drawn over it).
+    aim.onScreen = bx >= inside && bx <= W - GAUGE_WIDTH - 6 && by >= inside && by <= H - inside;
     // From the hull's place on screen toward the beacon, stopped at the margin.
     const hx = sx(hxw),
       hy = sy(hyw);
@@ -2270,6 +2290,8 @@ shell.expose({
     target: [...gauge_.target],
     depthText: gaugeDepth?.visible ? gaugeDepth.text : '',
     targetText: gaugeTarget?.visible ? gaugeTarget.text : '',
+    /** The live mines in view: each one's halo box (x, y, width, height, px), which the tags keep off. */
+    mines: mineBoxes.map((b) => [...b]),
   }),
   /** The camera as last drawn: centre (x, y, m), zoom (px/m), look-ahead (m, before its limit) and shake (px). */
   camera: () => ({ ...camera }),
