@@ -302,8 +302,8 @@ function createWorld(): PhysicsWorld {
 }
 
 const held = new Set<string>();
-/** The on-screen stick (phones): x right (ahead), y up (rise), each in [-1, 1]. */
-const stickInput = { x: 0, y: 0 };
+/** The on-screen stick (phones): x right (ahead), y up (rise), each in [-1, 1], and whether a finger is on it. */
+const stickInput = { x: 0, y: 0, held: false };
 /**
  * How far the stick must move before it counts as a held control (a thumb resting on it wobbles by
  * less); past it the stick asks for as much as it is pushed (stickShare).
@@ -343,9 +343,10 @@ function heldInput(now: number): HelmInput {
       ? keyHeaveShare(heaveKeySince, now, speedAhead())
       : Math.min(stickShare(stickInput.y, false), keyHeaveShare(now, now, speedAhead())),
     drive: stickShare(stickInput.x, held.has('a') || held.has('d') || held.has('arrowleft') || held.has('arrowright')),
-    // The stick pushed up or down only keeps the screw as it is (a stranger pushing it straight up
-    // to rise stopped the screw); let go, or pushed sideways, it drives the screw as the keys do.
-    keepThrottle: Math.abs(stickInput.y) > STICK_DEAD && Math.abs(stickInput.x) <= STICK_DEAD,
+    // The stick touched but not pushed sideways (up or down only, or a thumb resting at its centre)
+    // keeps the screw as it is (a stranger pushing it straight up to rise stopped the screw); the
+    // thumb lifted, the screw winds down as with a key let go; pushed sideways, it drives the screw.
+    keepThrottle: stickInput.held && Math.abs(stickInput.x) <= STICK_DEAD,
   };
 }
 
@@ -1074,6 +1075,14 @@ const stick = createStick({
     stickInput.y = y;
   },
 });
+// Whether a finger is on the stick (its own events report only where the knob is).
+stick.element.addEventListener('pointerdown', () => {
+  stickInput.held = true;
+});
+for (const type of ['pointerup', 'pointercancel', 'lostpointercapture'])
+  stick.element.addEventListener(type, () => {
+    stickInput.held = false;
+  });
 // On a phone a larger stick (136 px, the knob's reach 56 px): the thumb grades its push over more
 // of its travel, and the rim is easier to find without looking.
 if (compact) stick.element.style.cssText += 'width: 136px; height: 136px;';
@@ -2336,10 +2345,11 @@ shell.expose({
   mines: () => mines.map((m, i) => ({ ...m, live: mineLive[i]! })),
   /** The scene's handles: hull, sea, seabed, beacons (x, y pairs, m) and vertical thrusters. */
   handles: () => handles,
-  /** Sets the stick as the on-screen one does: x right (ahead), y up (rise), each clamped to [-1, 1]. */
+  /** Sets the stick as the on-screen one does: x right (ahead), y up (rise), each clamped to [-1, 1]; (0, 0) lets it go (no finger on it). */
   setStick: (x: number, y: number): void => {
     stickInput.x = Math.max(-1, Math.min(1, x));
     stickInput.y = Math.max(-1, Math.min(1, y));
+    stickInput.held = x !== 0 || y !== 0;
   },
   /** Whether the pause overlay shows, and its words. */
   pauseOverlay: () => ({ visible: pause.visible, text: pause.text }),
