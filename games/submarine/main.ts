@@ -214,8 +214,11 @@ const HULL_GAUGE_ROOM = 120;
 const FRAME_MIN_ZOOM = pageLayout().compact() ? 4 : 5;
 /** The camera's zoom now, px/m (eased toward the framing zoom; NaN: set at the next frame). */
 let zoom = Number.NaN;
-/** The view leads the hull by its velocity along x times this, s (the look-ahead). */
-const LEAD_TIME = 2.2;
+/**
+ * The view leads the hull by its velocity along x times this, s (the look-ahead): 24 m at the top
+ * speed of 8 m/s (./helm.ts HELM.topSpeed), about what 2.2 s gave at the earlier 12.9 m/s.
+ */
+const LEAD_TIME = 3;
 /**
  * The view leads the hull by its vertical velocity times this, s: a short look-ahead, so that on a
  * Dive the hull is seen to move down the screen at once (with 2.2 s, as along x, the view ran ahead
