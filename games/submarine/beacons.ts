@@ -1,8 +1,8 @@
 /**
  * The beacon pointer's choice: which beacon the arrow at the screen's edge leads to (the target).
- * It holds one beacon until that one is collected, however near the others pass (a stranger who
+ * It holds one beacon until a beacon is collected, however near the others pass (a stranger who
  * saw the target flip between beacons as the boat went by them never knew which to chase), and then
- * takes the nearest one left. Headless (no drawing), so the rule is tested in node.
+ * takes the next one left along the course. Headless (no drawing), so the rule is tested in node.
  */
 
 import { Rng } from '@bitphysics/physics';
@@ -90,13 +90,38 @@ function clearance(x0: number, y0: number, x1: number, y1: number, bedAt: (x: nu
 }
 
 /**
- * The beacon the pointer leads to from the hull at (x, y), m: `current` while it is uncollected (it
- * is held, however near another one comes); with no current one (-1, out of range or collected),
- * the nearest uncollected one. -1 when all are collected.
+ * The beacon the pointer leads to from the hull at (x, y), m. With `justTaken` (a beacon collected
+ * this step, its index) the next uncollected one along the course after it (course order: the first
+ * beacon, then by x), or, with none after it, the first uncollected one along the course (the ones
+ * passed by): a stranger who passed beacon A and collected C saw the target stay on A, behind the
+ * boat. Otherwise `current` while it is uncollected (it is held, however near another one comes);
+ * with no current one (-1, out of range or collected), the nearest uncollected one. -1 when all are
+ * collected.
  * @param beacons (x, y) pairs, m.
  * @param taken Whether each beacon has been collected.
+ * @param justTaken the beacon collected this step, or -1 (default) when none was.
  */
-export function chooseBeacon(beacons: ArrayLike<number>, taken: readonly boolean[], x: number, y: number, current: number): number {
+export function chooseBeacon(
+  beacons: ArrayLike<number>,
+  taken: readonly boolean[],
+  x: number,
+  y: number,
+  current: number,
+  justTaken = -1,
+): number {
+  if (justTaken >= 0 && justTaken < taken.length) {
+    // Course order: the first beacon (by the start), then along x.
+    const rank = (i: number) => (i === 0 ? Number.NEGATIVE_INFINITY : beacons[2 * i]!);
+    const from = rank(justTaken);
+    let after = -1,
+      first = -1;
+    for (let i = 0; i < taken.length; i++) {
+      if (taken[i]) continue;
+      if (rank(i) > from && (after < 0 || rank(i) < rank(after))) after = i;
+      if (first < 0 || rank(i) < rank(first)) first = i;
+    }
+    return after >= 0 ? after : first;
+  }
   if (current >= 0 && current < taken.length && !taken[current]) return current;
   let nearest = -1,
     best = Infinity;

@@ -63,6 +63,12 @@ export interface HelmInput {
    * -0.5 times it (astern). Default 1 (a key); the on-screen stick sets it from how far it is pushed.
    */
   drive?: number;
+  /**
+   * The screw keeps its throttle while neither Ahead nor Astern is held (default false: it winds
+   * down and the boat glides to a stop). The on-screen stick sets it while it is pushed up or down
+   * but not sideways, so that rising or diving by the stick under way does not stop the screw.
+   */
+  keepThrottle?: boolean;
 }
 
 /** No control held. */
@@ -107,7 +113,7 @@ const DEG = Math.PI / 180;
 /** The helm's settings. */
 export const HELM = Object.freeze({
   /**
-   * Vertical speed asked for while Dive is held, m/s (the boat runs at up to 12.9 m/s ahead): a first
+   * Vertical speed asked for while Dive is held, m/s (the boat runs at up to `topSpeed`, 8 m/s, ahead): a first
    * beacon 15 to 28 m down is reached in 2.5 to 3.5 s of Dive (the thrusters' 600 kN and the flooded
    * tanks' 91 kN take the 110 t boat to it in 1.6 s; drag k v^2 at 10 m/s is 240 kN).
    */
@@ -164,7 +170,7 @@ export const HELM = Object.freeze({
   bedClearance: 2.5,
   /**
    * How far ahead the held depth looks for the seabed, s at the boat's speed ahead (`holdFloor`): at
-   * full ahead (12.9 m/s) 52 m. As far as the seabed warning looks (./seabed.ts BED_WARN_TIME), so a
+   * full ahead (8 m/s) 32 m. As far as the seabed warning looks (./seabed.ts BED_WARN_TIME), so a
    * held course is never warned of a ridge: the helm is already raising the order over it.
    */
   bedLookAhead: 4,
@@ -181,6 +187,16 @@ export const HELM = Object.freeze({
   surfacingSpeed: 0.6,
   /** A surfaced boat counts as surfaced while its deck bobs less than this under the surface, m. */
   surfaceBand: 1.5,
+  /**
+   * The boat's top speed ahead at full throttle, m/s (15.5 knots, a fast small submersible): the
+   * screw's governor (`screwPush`) runs the screw's full 400 kN until the boat nears the speed its
+   * throttle asks for (the throttle times this; half of it astern) and then only what holds it
+   * there. The screw alone would take the 12 m boat to 12.9 m/s (400 kN against drag k v^2), and a
+   * stranger who held Ahead to reach a beacon passed it by 230 m.
+   */
+  topSpeed: 8,
+  /** Time constant of the screw's governor, s: it pushes m (v_asked - u) / speedTime on top of the drag at the asked speed. */
+  speedTime: 0.5,
   /** Throttle change per second while Ahead or Astern is held. */
   throttleRate: 2.5,
   /**
@@ -191,7 +207,7 @@ export const HELM = Object.freeze({
   /**
    * Deceleration the helm brakes a boat with while Ahead is not held, m/s^2, once the screw has wound
    * down (scaled by the share of full throttle no longer pushing ahead): with the drag k v^2 a boat
-   * let go at full speed (12.9 m/s) glides about 10 m, one at 6 m/s about 4 m.
+   * let go at full speed (8 m/s) glides about 5 m, one at 6 m/s about 4 m.
    */
   coastBrake: 8,
   /**
@@ -222,6 +238,27 @@ export function coastBrake(mass: number, u: number, throttle: number): number {
 }
 
 /**
+ * The screw's push along the hull, N (positive ahead), for a boat of `mass` kg moving at `u` m/s
+ * along its hull (positive ahead) with the throttle at `throttle` (fraction of full, in [-0.5, 1]):
+ * the throttle's share of `SUBMARINE.maxThrust`, but no more than holds the boat at the speed the
+ * throttle asks for (`throttle` times `HELM.topSpeed`): the submerged drag there (k v^2, the scene's
+ * drag coefficient k) plus m (v_asked - u) / `HELM.speedTime`, never pulling the other way. Zero
+ * with the throttle at zero.
+ * @throws RangeError when `mass` is not a finite positive number, or `u` or `throttle` is not finite.
+ */
+export function screwPush(mass: number, u: number, throttle: number): number {
+  if (!(Number.isFinite(mass) && mass > 0)) throw new RangeError(`screwPush: mass must be a finite number > 0 kg, got ${mass}`);
+  if (!Number.isFinite(u)) throw new RangeError(`screwPush: u must be finite m/s, got ${u}`);
+  if (!Number.isFinite(throttle)) throw new RangeError(`screwPush: throttle must be finite, got ${throttle}`);
+  const t = clamp(throttle, -0.5, 1);
+  if (t === 0) return 0;
+  const sign = Math.sign(t),
+    asked = Math.abs(t) * HELM.topSpeed;
+  const hold = SUBMARINE.dragCoefficient * asked * asked + (mass * (asked - sign * u)) / HELM.speedTime;
+  return sign * clamp(hold, 0, Math.abs(t) * SUBMARINE.maxThrust);
+}
+
+/**
  * The share of full Dive / Rise (`HelmInput.heave`) a Dive or Rise key asks for at rest: a steady 0.6
  * (6 m/s down, 4.8 m/s up), from the first moment it is held, so the depth gone grows in step with
  * the time held (from a hover about 5 m for 1 s, 12 m for 2 s, 24 m for 4 s) and a short tap still
@@ -240,8 +277,8 @@ export const KEY_HEAVE_SHARE = 0.6;
  */
 export const KEY_HEAVE_SHARE_FAST = 0.8;
 
-/** The speed ahead (or astern) at which a key's share reaches `KEY_HEAVE_SHARE_FAST`, m/s (the boat's top speed is 12.9 m/s). */
-export const KEY_HEAVE_FULL_SPEED = 12;
+/** The speed ahead (or astern) at which a key's share reaches `KEY_HEAVE_SHARE_FAST`, m/s: nearly the boat's top speed (`HELM.topSpeed`). */
+export const KEY_HEAVE_FULL_SPEED = 7.5;
 
 /**
  * The share of full Dive / Rise (`HelmInput.heave`) a key held since game time `since` asks for at
@@ -321,7 +358,8 @@ export function steer(world: PhysicsWorld, handles: SubmarineHandles, input: Hel
   // The throttle runs at throttleRate toward the one asked for (drive ahead, -drive / 2 astern) and
   // winds back at throttleRelease toward it when it is past it (a stick eased back) or to stop.
   // Neither held: the screw winds down to stop and the boat coasts, slowed by the water's drag.
-  const asked = input.ahead === input.astern ? 0 : input.ahead ? driveAsked : -0.5 * driveAsked;
+  const keep = input.keepThrottle === true && !input.ahead && !input.astern;
+  const asked = keep ? state.throttle : input.ahead === input.astern ? 0 : input.ahead ? driveAsked : -0.5 * driveAsked;
   // Winding towards stop (a key let go, or Astern from ahead) is at the faster of the two rates.
   const pushing =
     (asked > 0 && state.throttle < asked && state.throttle >= 0) || (asked < 0 && state.throttle > asked && state.throttle <= 0);
@@ -440,7 +478,8 @@ export function steer(world: PhysicsWorld, handles: SubmarineHandles, input: Hel
   // speed only (pushing horizontally: in the hull's frame cos / -sin of its angle), so it never
   // slows a dive or a climb of a pitched boat.
   const ux = c.Velocity.x[e]!;
-  const along = (input.ahead && !input.astern && ux >= 0) || (input.astern && !input.ahead && ux <= 0);
+  const along = keep || (input.ahead && !input.astern && ux >= 0) || (input.astern && !input.ahead && ux <= 0);
   const brakeForce = along ? 0 : coastBrake(mass, ux, state.throttle);
-  setBodyThrust(world, e, [state.throttle * S.maxThrust + brakeForce * Math.cos(angle), -brakeForce * Math.sin(angle)]);
+  const push = screwPush(mass, u, state.throttle);
+  setBodyThrust(world, e, [push + brakeForce * Math.cos(angle), -brakeForce * Math.sin(angle)]);
 }

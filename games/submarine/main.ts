@@ -15,7 +15,8 @@
  * arrow from it to the mine, a tag over the sail ("rise over") or under the keel ("dive under") and a low two-note call.
  * Keys: S / W or down / up arrows dive / rise, A / D or left / right arrows astern / ahead, Q / E
  * nose down / up, P pause, N step, R reset. Touch: a stick under the scene (down dives, up rises,
- * right ahead, left astern; pushed part way it asks for part of the speed) and Nose buttons.
+ * right ahead, left astern; pushed part way it asks for part of the speed; up or down only keeps the
+ * screw running as it was) and Nose buttons.
  * Sound: the screw's hum follows the throttle, a hiss when the vents open or the tanks blow, a sonar
  * ping that quickens as the next beacon nears, a rising chime for each beacon (rings spread from it
  * and a banner counts it), a thump on the seabed, a blast (a flash and bubbles) when a mine goes off.
@@ -54,7 +55,7 @@ import {
   touchesMine,
 } from './mines';
 import { drawFish } from './sea-life';
-import { type BedAhead, bedAhead, seabedInput, touchSeabed } from './seabed';
+import { type BedAhead, bedAhead, DIVE_STOPPED_WORD, helmWord, seabedInput, touchSeabed } from './seabed';
 import { type Glow, layTrail, touchesGlow } from './trail';
 
 const params = {
@@ -200,6 +201,12 @@ const FRAME_MARGIN = 60;
  */
 const HULL_SIDE_ROOM = 60;
 /**
+ * Room the framing camera keeps clear between the hull's bow or stern and the view's right edge,
+ * px: the depth gauge and its tags ("you 30 m", "beacon A 27 m", up to about 105 px in from the
+ * edge). With HULL_SIDE_ROOM there too, a stranger saw the boat reach the right edge under its tag.
+ */
+const HULL_GAUGE_ROOM = 120;
+/**
  * The framing camera zooms out no further than this, px/m (beyond, the edge arrow leads on): 5 on
  * a wide screen (the 12 m hull 60 px long; at 2 px/m a stranger saw it shrink to about 35 px at
  * speed), 4 on a small one, where the hull would otherwise shrink under 48 px and the mines to specks.
@@ -207,8 +214,11 @@ const HULL_SIDE_ROOM = 60;
 const FRAME_MIN_ZOOM = pageLayout().compact() ? 4 : 5;
 /** The camera's zoom now, px/m (eased toward the framing zoom; NaN: set at the next frame). */
 let zoom = Number.NaN;
-/** The view leads the hull by its velocity along x times this, s (the look-ahead). */
-const LEAD_TIME = 2.2;
+/**
+ * The view leads the hull by its velocity along x times this, s (the look-ahead): 24 m at the top
+ * speed of 8 m/s (./helm.ts HELM.topSpeed), about what 2.2 s gave at the earlier 12.9 m/s.
+ */
+const LEAD_TIME = 3;
 /**
  * The view leads the hull by its vertical velocity times this, s: a short look-ahead, so that on a
  * Dive the hull is seen to move down the screen at once (with 2.2 s, as along x, the view ran ahead
@@ -295,8 +305,8 @@ function createWorld(): PhysicsWorld {
 }
 
 const held = new Set<string>();
-/** The on-screen stick (phones): x right (ahead), y up (rise), each in [-1, 1]. */
-const stickInput = { x: 0, y: 0 };
+/** The on-screen stick (phones): x right (ahead), y up (rise), each in [-1, 1], and whether a finger is on it. */
+const stickInput = { x: 0, y: 0, held: false };
 /**
  * How far the stick must move before it counts as a held control (a thumb resting on it wobbles by
  * less); past it the stick asks for as much as it is pushed (stickShare).
@@ -336,6 +346,10 @@ function heldInput(now: number): HelmInput {
       ? keyHeaveShare(heaveKeySince, now, speedAhead())
       : Math.min(stickShare(stickInput.y, false), keyHeaveShare(now, now, speedAhead())),
     drive: stickShare(stickInput.x, held.has('a') || held.has('d') || held.has('arrowleft') || held.has('arrowright')),
+    // The stick touched but not pushed sideways (up or down only, or a thumb resting at its centre)
+    // keeps the screw as it is (a stranger pushing it straight up to rise stopped the screw); the
+    // thumb lifted, the screw winds down as with a key let go; pushed sideways, it drives the screw.
+    keepThrottle: stickInput.held && Math.abs(stickInput.x) <= STICK_DEAD,
   };
 }
 
@@ -494,11 +508,15 @@ function stepWorld(world: PhysicsWorld): void {
       state.collected++;
       state.score += BEACON_POINTS;
       const last = state.collected === taken.length;
+      // The target moves on to the next beacon along the course (./beacons.ts chooseBeacon), which the banner names.
+      const target = aim.index;
+      aim.index = chooseBeacon(handles.beacons, taken, c.Position.x[e]!, c.Position.y[e]!, aim.index, i);
+      if (aim.index >= 0 && aim.index !== target) aimSwitchedAt = world.time;
       pickups.push({
         x: handles.beacons[2 * i]!,
         y: handles.beacons[2 * i + 1]!,
         time: world.time,
-        text: last ? `All ${taken.length} beacons!` : `Beacon ${state.collected} of ${taken.length}`,
+        text: last ? `All ${taken.length} beacons!` : `Beacon ${state.collected} of ${taken.length}\nnext: ${beaconName(aim.index)}`,
       });
       // A rising two-note chime (a fifth apart); the last beacon a third note and a crackle.
       sound.chime(last ? 1047 : 784, 0.3);
@@ -596,6 +614,7 @@ const banner = new Text({
   style: {
     fill: 0xffe066,
     fontSize: 30,
+    align: 'center',
     fontWeight: '800',
     fontFamily: 'system-ui, sans-serif',
     stroke: { color: 0x06213a, width: 5 },
@@ -1059,6 +1078,14 @@ const stick = createStick({
     stickInput.y = y;
   },
 });
+// Whether a finger is on the stick (its own events report only where the knob is).
+stick.element.addEventListener('pointerdown', () => {
+  stickInput.held = true;
+});
+for (const type of ['pointerup', 'pointercancel', 'lostpointercapture'])
+  stick.element.addEventListener(type, () => {
+    stickInput.held = false;
+  });
 // On a phone a larger stick (136 px, the knob's reach 56 px): the thumb grades its push over more
 // of its travel, and the rim is easier to find without looking.
 if (compact) stick.element.style.cssText += 'width: 136px; height: 136px;';
@@ -1091,6 +1118,8 @@ createButtonBar(
  * way to the pointer's beacon, it gets a pulsing red ring at the distance where the hull sets it
  * off. A blast: a white-orange flash and a ring of rising bubbles, over `BLAST_LIFE` s.
  */
+/** The live mines drawn this frame: each one's halo as a box on the screen (x, y, width, height, px), for the gauge's tags to keep off. */
+const mineBoxes: [number, number, number, number][] = [];
 function drawMines(
   t: number,
   k: number,
@@ -1103,11 +1132,14 @@ function drawMines(
   ha: number,
 ): void {
   const R = MINE_RADIUS * 0.7;
+  mineBoxes.length = 0;
   for (let i = 0; i < mines.length; i++) {
     const m = mines[i]!;
     if (!mineLive[i] || m.x < left - 5 || m.x > right + 5) continue;
     const x = sx(m.x),
-      y = sy(m.y);
+      y = sy(m.y),
+      halo = Math.max(9, 1.9 * MINE_RADIUS * k);
+    mineBoxes.push([x - halo, y - halo, 2 * halo, 2 * halo]);
     // The cable, in links every 1.5 m, and the anchor block it holds to.
     const links = Math.max(1, Math.floor((m.y - R - m.anchor) / 1.5));
     g.moveTo(x, y + R * k)
@@ -1116,7 +1148,7 @@ function drawMines(
     if (k >= 4) for (let j = 1; j < links; j++) g.circle(x, sy(m.y - R - 1.5 * j), 0.18 * k).stroke({ color: 0xb8c6d0, width: 1 });
     g.rect(x - 0.9 * k, sy(m.anchor) - 0.7 * k, 1.8 * k, 0.9 * k).fill(0x5a6570);
     // A warm halo, so the sphere stands out of the blue at any zoom.
-    g.circle(x, y, Math.max(9, 1.9 * MINE_RADIUS * k)).fill({ color: 0xff5a36, alpha: 0.16 });
+    g.circle(x, y, halo).fill({ color: 0xff5a36, alpha: 0.16 });
     // Near the hull (or on the way to the beacon): a pulsing ring where contact begins.
     const near = hullDistance(hx, hy, ha, m.x, m.y);
     if (near < MINE_WARN_DISTANCE || i === wayMine || i === ahead?.index) {
@@ -1234,7 +1266,7 @@ const popLabels: Text[] = [];
  * mine coming into view at the right edge shows (a 36 px opaque gauge hid the edge on a phone).
  */
 const GAUGE_WIDTH = 26;
-/** A beacon's lamp this far inside the scene's edges (and the depth gauge) is on screen, px: its label shows, not the edge arrow. */
+/** A beacon's lamp this far inside the scene's left, top and bottom edges (and up to 6 px from the depth gauge) is on screen, px: its label shows, not the edge arrow. */
 const ON_SCREEN_MARGIN = 14;
 /** The depth gauge's figures: one every 50 m of the scale ("0", "50", ...), a pool hidden when unused. */
 const gaugeMarks: Text[] = [];
@@ -1347,6 +1379,11 @@ function drawDepthGauge(W: number, H: number, depth: number, order: number, bed:
     if (!pointer.visible || bw <= 0) continue;
     const box = [bx - 7, by - 2, bw + 14, bh + 4];
     if (gaugeDepth.visible) offFrame(gaugeDepth, box, top, bottom);
+    for (const mark of gaugeMarks) if (mark.visible && overlaps(textBox(mark), box, 2)) mark.visible = false;
+  }
+  // Off the live mines in view (on a phone the boat's depth was written over a mine near the edge).
+  for (const box of mineBoxes) {
+    for (const tag of [gaugeDepth, gaugeTarget]) if (tag.visible) offFrame(tag, box, top, bottom);
     for (const mark of gaugeMarks) if (mark.visible && overlaps(textBox(mark), box, 2)) mark.visible = false;
   }
   gauge_.depth = gaugeDepth.visible ? textBox(gaugeDepth) : [0, 0, 0, 0];
@@ -1631,9 +1668,11 @@ function draw(): void {
   const k = zoom;
   // Centred between them, moved toward the hull as far as needed to keep the hull FRAME_MARGIN
   // inside the view when both do not fit; never more sky than the top 15% of the view.
-  // The hull's centre itself keeps HULL_SIDE_ROOM past its half length from the sides (hullReachX).
+  // The hull's centre itself keeps HULL_SIDE_ROOM past its half length from the left side (hullReachX).
+  // Right of centre the hull keeps HULL_GAUGE_ROOM (hullReachRight), clear of the depth gauge's tags.
   const reachX = Math.max(0, W / 2 - FRAME_MARGIN) / k,
     hullReachX = Math.max(0, W / 2 - Math.max(FRAME_MARGIN, (SUBMARINE.length / 2) * k + HULL_SIDE_ROOM)) / k,
+    hullReachRight = Math.max(0, W / 2 - Math.max(FRAME_MARGIN, (SUBMARINE.length / 2) * k + HULL_GAUGE_ROOM)) / k,
     reachY = Math.max(0, H / 2 - FRAME_MARGIN) / k;
   // Look-ahead: the view leads the hull by LEAD_TIME s (PORTRAIT_LEAD_TIME on a portrait view) of its velocity along x (LEAD_TIME_Y s across), at most LEAD_SHARE of the way
   // to the framing margin, eased over about LEAD_EASE s of game time (a bump or a blast does not jerk
@@ -1648,7 +1687,7 @@ function draw(): void {
     leadY = Math.max(-LEAD_SHARE * reachY, Math.min(LEAD_SHARE * reachY, camera.leadY));
   const atLeast = (framed: number, hull: number, lead: number) =>
     lead > 0 ? Math.max(framed, hull + lead) : lead < 0 ? Math.min(framed, hull + lead) : framed;
-  const cx = Math.max(hxw - hullReachX, Math.min(hxw + hullReachX, atLeast((hxw + fx) / 2, hxw, leadX))),
+  const cx = Math.max(hxw - hullReachRight, Math.min(hxw + hullReachX, atLeast((hxw + fx) / 2, hxw, leadX))),
     cy = Math.min(-H / k / 2 + (0.15 * H) / k, Math.max(hyw - reachY, Math.min(hyw + reachY, atLeast((hyw + fy) / 2, hyw, leadY))));
   camera.x = cx;
   camera.y = cy;
@@ -1917,11 +1956,13 @@ function draw(): void {
     aim.dx = wx - hxw;
     aim.dy = wy - hyw;
     // The right margin leaves the depth gauge clear too (on a phone the badge sat over it). A beacon
-    // whose lamp is in view (ON_SCREEN_MARGIN inside the edges and the gauge) counts as on screen:
+    // whose lamp is in view (ON_SCREEN_MARGIN inside the edges, 6 px from the gauge) counts as on screen:
     // with the badge's margin, on a phone the badge was drawn over the very beacon it pointed to.
     const right = W - GAUGE_WIDTH - m;
     const inside = ON_SCREEN_MARGIN;
-    aim.onScreen = bx >= inside && bx <= W - GAUGE_WIDTH - inside && by >= inside && by <= H - inside;
+    // At the right, a lamp up to the gauge's edge is in view (on a phone at the start beacon A lay
+    // 12 px inside the gauge and the badge pointing to it was drawn over it).
+    aim.onScreen = bx >= inside && bx <= W - GAUGE_WIDTH - 6 && by >= inside && by <= H - inside;
     // From the hull's place on screen toward the beacon, stopped at the margin.
     const hx = sx(hxw),
       hy = sy(hyw);
@@ -2197,7 +2238,9 @@ function draw(): void {
         ? `Hull breached · ${state.collected} of ${taken.length} beacons`
         : '';
   showEnd();
-  const helm = state.mode === 'holding' ? `holding ${(-state.holdY).toFixed(0)} m` : state.mode === 'braking' ? 'stopping' : state.mode;
+  const helm = helmWord(state.mode, state.holdY, state.diveStopped);
+  // A held Dive the seabed stops is said on the readout too, where the eye is.
+  const stopped = state.diveStopped ? ` · ${DIVE_STOPPED_WORD}` : '';
   // The depth, and the depth ordered while the boat is a metre or more from it ("depth 30 → 34 m").
   const ordered = Number.isFinite(state.holdY) && Math.abs(state.holdY + depth) >= 1 ? ` → ${(-state.holdY).toFixed(0)}` : '';
   const streak = state.streak > 1 ? ` ×${Math.min(GLOW_STREAK_MAX, state.streak)}` : '';
@@ -2216,8 +2259,8 @@ function draw(): void {
   // The clock turns red once par has passed.
   goal.style.color = !state.over && state.time > state.par ? '#ff9e8a' : '#ffe066';
   readoutText.textContent = compact
-    ? `depth ${Math.max(0, depth).toFixed(0)}${ordered} m${rate} · ${speed.toFixed(0)} m/s · `
-    : `depth ${Math.max(0, depth).toFixed(0)}${ordered} m${rate} · speed ${speed.toFixed(1)} m/s · score ${state.score}${streak} · `;
+    ? `depth ${Math.max(0, depth).toFixed(0)}${ordered} m${rate}${stopped || ` · ${speed.toFixed(0)} m/s`} · `
+    : `depth ${Math.max(0, depth).toFixed(0)}${ordered} m${rate}${stopped} · speed ${speed.toFixed(1)} m/s · score ${state.score}${streak} · `;
   showHull();
   instruments.textContent = [
     `seabed ${(-floor).toFixed(0)} m`,
@@ -2259,6 +2302,8 @@ shell.expose({
     target: [...gauge_.target],
     depthText: gaugeDepth?.visible ? gaugeDepth.text : '',
     targetText: gaugeTarget?.visible ? gaugeTarget.text : '',
+    /** The live mines in view: each one's halo box (x, y, width, height, px), which the tags keep off. */
+    mines: mineBoxes.map((b) => [...b]),
   }),
   /** The camera as last drawn: centre (x, y, m), zoom (px/m), look-ahead (m, before its limit) and shake (px). */
   camera: () => ({ ...camera }),
@@ -2303,10 +2348,11 @@ shell.expose({
   mines: () => mines.map((m, i) => ({ ...m, live: mineLive[i]! })),
   /** The scene's handles: hull, sea, seabed, beacons (x, y pairs, m) and vertical thrusters. */
   handles: () => handles,
-  /** Sets the stick as the on-screen one does: x right (ahead), y up (rise), each clamped to [-1, 1]. */
+  /** Sets the stick as the on-screen one does: x right (ahead), y up (rise), each clamped to [-1, 1]; (0, 0) lets it go (no finger on it). */
   setStick: (x: number, y: number): void => {
     stickInput.x = Math.max(-1, Math.min(1, x));
     stickInput.y = Math.max(-1, Math.min(1, y));
+    stickInput.held = x !== 0 || y !== 0;
   },
   /** Whether the pause overlay shows, and its words. */
   pauseOverlay: () => ({ visible: pause.visible, text: pause.text }),

@@ -38,8 +38,8 @@ export const MINE_BED_CLEARANCE = 5;
  */
 export const MINE_REACTION = 1;
 /**
- * How far ahead the warning looks along the boat's course, s (mineAhead): 65 m at full ahead
- * (12.9 m/s). Long enough for a pilot on the keys, whose Dive or Rise asks for part of the speed (helm.ts
+ * How far ahead the warning looks along the boat's course, s (mineAhead): 40 m at full ahead
+ * (8 m/s, helm.ts HELM.topSpeed). Long enough for a pilot on the keys, whose Dive or Rise asks for part of the speed (helm.ts
  * keyHeaveShare): at 4 s a stranger read "dive under" when the mine was already at the bow. Measured
  * headless (helm and physics, test/games/submarine-mines.test.ts): a boat at full ahead on a level
  * run into a mine on its line, holding Rise from MINE_REACTION s after the warning, passes it with
@@ -66,15 +66,15 @@ export function mineWarnHorizon(vx: number): number {
 /** The warning's room round the hull, m: a course that passes a mine closer than this (beyond contact) is warned of. */
 export const MINE_WARN_MARGIN = 1.5;
 /**
- * No mine lies less than this past the beacon before it along x, m: at full ahead (12.9 m/s) from
- * the beacon, 3.5 s, enough for MINE_REACTION and the 1.5 s a rise over it takes, with the bow's
+ * No mine lies less than this past the beacon before it along x, m: at full ahead (8 m/s) from
+ * the beacon, 5.6 s, enough for MINE_REACTION and the 1.5 s a rise over it takes, with the bow's
  * half length and the mine's radius.
  */
 export const MINE_LEAD = 45;
 /**
  * No two mines lie nearer than this along x, m, so that two never make a wall: once the way over or
  * under the first is clear, the second is warned of about MINE_WARN_TIME s ahead, still before the
- * first at full ahead (12.9 m/s).
+ * first at full ahead (8 m/s).
  */
 export const MINE_GAP = 40;
 /**
@@ -361,15 +361,16 @@ export function touchesMine(x: number, y: number, angle: number, mx: number, my:
 /**
  * What a steady pilot on the keys takes for a leg of the course (scripts/submarine-pilot.mjs: full
  * ahead, letting go or braking with Astern to reach the beacon's x as it reaches its depth, Dive /
- * Rise held at the keys' steady share, passing the mines as warned), fitted to its times on the 57
- * courses it won of seeds 1 to 30 with 6 and 10 beacons (each within 12 % of it): the longer of the
- * run ahead at `ahead` m/s and the depth change at `depth` m/s, plus `perBeacon` s.
+ * Rise held at the keys' steady share, passing the mines as warned), fitted to its times on the 60
+ * courses it won of seeds 1 to 30 with 6 and 10 beacons (each within 7 % of it): the longer of the
+ * run ahead at `ahead` m/s (under the boat's top speed, helm.ts HELM.topSpeed) and the depth change
+ * at `depth` m/s, plus `perBeacon` s.
  */
-export const PILOT_LEG = Object.freeze({ ahead: 12, depth: 4.8, perBeacon: 2.5 });
+export const PILOT_LEG = Object.freeze({ ahead: 7.3, depth: 5, perBeacon: 0.5 });
 /**
  * Par over the steady pilot's time: a newcomer who has to find the beacons, learn the helm and pass
- * the mines takes longer than a pilot that knows the way (the pilot itself is at most 1.11 times its
- * fitted time, so par is at least 1.44 times what it took on every course).
+ * the mines takes longer than a pilot that knows the way (the pilot itself is at most 1.07 times its
+ * fitted time, so par is at least 1.49 times what it took on every course).
  */
 export const PAR_MARGIN = 1.6;
 

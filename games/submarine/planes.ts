@@ -4,7 +4,7 @@
  * waiting for the tanks. A foil's lift is L = 1/2 rho A C_L u^2 with C_L = a delta (thin-aerofoil
  * theory corrected for a short span: a = 2 pi AR / (AR + 2), Anderson, Fundamentals of Aerodynamics,
  * ch. 5), and its induced drag D = L^2 / (1/2 rho u^2 pi AR e A) with e = 0.9 (the same chapter). At
- * rest the planes do nothing; at the boat's top speed of 12.9 m/s they give up to 440 kN, about the
+ * rest the planes do nothing; at the boat's top speed of 8 m/s they give up to 170 kN (440 kN at 12.9 m/s), beside the
  * vertical thrusters' 600 kN, so a boat under way answers the helm faster and stops its dive sooner.
  * Headless (no drawing), so the law is tested in node.
  */

@@ -58,6 +58,21 @@ export function seabedInput<T extends { dive: boolean }>(state: SeabedState, inp
   return state.diveStopped ? { ...input, dive: false } : input;
 }
 
+/** What the gauges say while the seabed stops a held Dive (`SeabedState.diveStopped`). */
+export const DIVE_STOPPED_WORD = 'seabed: no deeper';
+
+/**
+ * The helm's word on the gauges: "holding 30 m" (the order's depth, `holdY` the hull's y, m) while
+ * holding, "stopping" while braking, the mode's name otherwise; `DIVE_STOPPED_WORD` while the
+ * seabed stops a held Dive (`diveStopped`), which would otherwise read "holding" with Dive held (a
+ * stranger holding Dive at "holding 81 m" saw the key ignored).
+ */
+export function helmWord(mode: string, holdY: number, diveStopped: boolean): string {
+  if (diveStopped) return DIVE_STOPPED_WORD;
+  if (mode === 'holding') return `holding ${(-holdY).toFixed(0)} m`;
+  return mode === 'braking' ? 'stopping' : mode;
+}
+
 /** One step's contact: '' none, 'touch' a contact that costs nothing, 'hit' one that costs a hit. */
 export type SeabedContact = '' | 'touch' | 'hit';
 

@@ -8,7 +8,7 @@
  * The way on each leg is the cheapest path through a grid of columns `TRAIL.column` m apart and
  * levels `TRAIL.level` m apart (dynamic programming): cost for straying from the straight line between
  * the two beacons and for climbing or diving, never steeper than the first of `TRAIL.slopes` that
- * finds a way (a boat at full ahead and full dive makes 7 / 12.9 = 0.54), never into a mine's box,
+ * finds a way (a boat at full ahead, 8 m/s, and a held Dive makes about 0.5 or more), never into a mine's box,
  * the seabed's or the surface's margin. The way passes every mine over it, never under: a moored
  * mine's cable runs from it down to the seabed, and a trail through the cable reads as a way into the
  * hazard.
@@ -20,7 +20,7 @@ import { courseOrder, hullDistance, MINE_RADIUS, MINE_WARN_MARGIN, type Mine } f
 
 /** The trail's settings. */
 export const TRAIL = Object.freeze({
-  /** Distance between two glows along x, m (about a second at full ahead, 12.9 m/s). */
+  /** Distance between two glows along x, m (about 2 s at full ahead, 8 m/s). */
   spacing: 14,
   /** Grid columns of the path search, m apart (fine enough to dive just past a mine to a beacon close behind it). */
   column: 2,

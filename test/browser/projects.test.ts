@@ -675,7 +675,7 @@ describe('projects', () => {
       return w.state.collected === 1 ? w.pickupEffect() : null;
     }, null);
     expect(fx.count).toBe(1);
-    expect(fx.banner).toBe('Beacon 1 of 6');
+    expect(fx.banner).toBe('Beacon 1 of 6\nnext: B');
     // Gone after PICKUP_LIFE (2 s) of game time.
     await g.waitFor((start) => (window.game as unknown as Sub).world.time > start + 2.5, t0, 60_000);
     await g.frames(2);

@@ -50,6 +50,26 @@ describe('submarine beacon pointer', () => {
     expect(chooseBeacon(beacons, [true, true], 100, -50, 1)).toBe(-1);
   });
 
+  it('a beacon collected moves the target to the next uncollected one along the course, past the ones passed by; then back to those', () => {
+    // Course A (0) near the start, then B, C, D along x (laid out of index order on purpose).
+    const beacons = [50, -20, 300, -40, 180, -30, 420, -50];
+    const taken = [false, false, false, false];
+    // A stranger passed A (the target) and collected B (x 180, index 2): the target is C (x 300), not A behind.
+    taken[2] = true;
+    expect(chooseBeacon(beacons, taken, 185, -30, 0, 2)).toBe(1);
+    // Held from then on, even with the boat back by A.
+    expect(chooseBeacon(beacons, taken, 50, -20, 1)).toBe(1);
+    // C and D collected: none left ahead, so back to A.
+    taken[1] = true;
+    expect(chooseBeacon(beacons, taken, 300, -40, 1, 1)).toBe(3);
+    taken[3] = true;
+    expect(chooseBeacon(beacons, taken, 420, -50, 3, 3)).toBe(0);
+    taken[0] = true;
+    expect(chooseBeacon(beacons, taken, 50, -20, 0, 0)).toBe(-1);
+    // The target itself collected: the next along the course, whatever is nearer.
+    expect(chooseBeacon(beacons, [true, false, false, false], 60, -20, 0, 0)).toBe(2);
+  });
+
   it('following the pointer from the surface, the distance shown falls until each beacon is taken', () => {
     const world = createPhysicsWorld(submarine.worldOptions());
     const h = submarine.build(world, { seed: 1, count: 6 });

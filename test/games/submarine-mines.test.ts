@@ -105,11 +105,11 @@ describe('submarine mines', () => {
     expect(touchesMine(10, -20, Math.PI / 2, 10 + H + R + 0.05, -20)).toBe(false);
   });
 
-  it('par: 1.6 times the steady pilot (each leg the longer of its run at 12 m/s and its depth change at 4.8 m/s, plus 2.5 s), rounded up to 5 s', () => {
-    // 1.6 x the steady pilot's legs: max(|dx| / 12, |dy| / 4.8) + 2.5 s each.
-    expect(parTime([60, -20])).toBe(15); // 1.6 x (max(5, 4.17) + 2.5) = 12
-    expect(parTime([60, -20, 300, -80])).toBe(50); // 1.6 x (7.5 + max(20, 12.5) + 2.5) = 48
-    expect(parTime([40, -60])).toBe(25); // 1.6 x (max(3.33, 12.5) + 2.5) = 24
+  it('par: 1.6 times the steady pilot (each leg the longer of its run at 7.3 m/s and its depth change at 5 m/s, plus 0.5 s), rounded up to 5 s', () => {
+    // 1.6 x the steady pilot's legs: max(|dx| / 7.3, |dy| / 5) + 0.5 s each.
+    expect(parTime([60, -20])).toBe(15); // 1.6 x (max(8.22, 4) + 0.5) = 13.95
+    expect(parTime([60, -20, 300, -80])).toBe(70); // 1.6 x (8.72 + max(32.88, 12) + 0.5) = 67.4
+    expect(parTime([40, -60])).toBe(20); // 1.6 x (max(5.48, 12) + 0.5) = 20
     expect(parTime([])).toBe(0);
   });
 

@@ -10,7 +10,16 @@ import { createPhysicsWorld, type PhysicsWorld, step } from '@bitphysics/physics
 import { SUBMARINE, SUBMARINE_NEUTRAL_FILL, type SubmarineHandles, seabedHeight, submarine } from '@bitphysics/projects';
 import { describe, expect, it } from 'vitest';
 import { createHelmState, HELM, type HelmInput, type HelmState, holdFloor, NO_INPUT, steer } from '../../games/submarine/helm';
-import { BED_WARN_TIME, bedAhead, SEABED, type SeabedState, seabedInput, touchSeabed } from '../../games/submarine/seabed';
+import {
+  BED_WARN_TIME,
+  bedAhead,
+  DIVE_STOPPED_WORD,
+  helmWord,
+  SEABED,
+  type SeabedState,
+  seabedInput,
+  touchSeabed,
+} from '../../games/submarine/seabed';
 
 interface Boat {
   world: PhysicsWorld;
@@ -105,6 +114,20 @@ describe('submarine on the seabed', () => {
     expect(b.hits - hits).toBeLessThanOrEqual(1);
   });
 
+  it('a held Dive the bed stops says so on the gauges ("seabed: no deeper", not "holding"); let go, "holding"; Dive again dives', () => {
+    const b = boat(4);
+    run(b, { dive: true }, 3);
+    expect(b.bed.diveStopped).toBe(true);
+    expect(b.helm.mode).toBe('holding'); // the helm holds where the bed stopped it
+    expect(helmWord(b.helm.mode, b.helm.holdY, b.bed.diveStopped)).toBe(DIVE_STOPPED_WORD);
+    run(b, {}, 1);
+    expect(b.bed.diveStopped).toBe(false);
+    expect(helmWord(b.helm.mode, b.helm.holdY, b.bed.diveStopped)).toBe(`holding ${(-b.helm.holdY).toFixed(0)} m`);
+    run(b, { dive: true }, 0.1);
+    expect(helmWord(b.helm.mode, b.helm.holdY, b.bed.diveStopped)).toBe('diving');
+    expect(helmWord('braking', Number.NaN, false)).toBe('stopping');
+  });
+
   it('a slow landing (1.4 m/s, a light press on Dive) costs no hit', () => {
     const b = boat(6);
     run(b, { dive: true, heave: 1.4 / HELM.diveSpeed }, 8);
@@ -150,7 +173,7 @@ describe('submarine on the seabed', () => {
     run(b, {}, 0.5); // let go: the helm holds the depth it is at
     expect(b.helm.mode).toBe('holding');
     const held = b.helm.holdY;
-    run(b, { ahead: true }, 12);
+    run(b, { ahead: true }, 16);
     expect(c.Position.x[b.h.hull]!).toBeGreaterThan(at + 40); // it went past the ridge
     expect(b.touched).toBe(false);
     expect(b.hits).toBe(0);
