@@ -238,7 +238,7 @@ export interface ShapeCollisionState {
   manifolds: ManifoldBuffer;
   /** Last step's manifolds: warm start and end events. */
   previous: ManifoldBuffer;
-  /** Hash of `previous` by (shapeA, shapeB): power-of-two slots, row + 1 (0 empty). */
+  /** Hash of `previous` by (shapeA, shapeB): power-of-two slots (at least 16), row + 1 (0 empty). */
   slots: Int32Array;
   /**
    * The warm start of the contacts of sleeping bodies: their touching rows of the step they fell
@@ -299,7 +299,7 @@ export function createShapeCollisionState(): ShapeCollisionState {
     active: false,
     manifolds: createManifoldBuffer(),
     previous: createManifoldBuffer(),
-    slots: new Int32Array(0),
+    slots: new Int32Array(16),
     dormant: createManifoldBuffer(16),
     dormantSlots: new Int32Array(0),
     dormantWakes: 0,
@@ -368,10 +368,17 @@ export function findPrevious(st: ShapeCollisionState, a: number, b: number): num
   let s = pairHash(a, b) & mask;
   for (;;) {
     const r = slots[s]!;
+    // The slot's pair is read and compared before the empty-slot test, row 0's for an empty slot: a
+    // world's first step finds every slot empty, and code compiled then would lack these loads and
+    // comparisons (V8 records no type feedback for code that never ran) and be thrown away at the
+    // first pair found in the second step.
+    const i = Math.max(r - 1, 0);
+    const sameA = prev.shapeA[i] === a,
+      sameB = prev.shapeB[i] === b;
+    const next = (s + 1) & mask;
     if (r === 0) return -1;
-    const i = r - 1;
-    if (prev.shapeA[i] === a && prev.shapeB[i] === b) return i;
-    s = (s + 1) & mask;
+    if (sameA && sameB) return i;
+    s = next;
   }
 }
 

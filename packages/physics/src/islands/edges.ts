@@ -190,6 +190,22 @@ export function joinContactEdges(world: PhysicsWorld, e: IslandEdges, parent: In
 }
 
 /**
+ * Makes both bodies of every `JOINS` edge of `e` their own root in `parent` again (parent[x] = x), as
+ * before joinContactEdges united them.
+ * @category Sleep
+ */
+export function resetJoinedParents(e: IslandEdges, parent: Int32Array): void {
+  const A = e.a,
+    B = e.b,
+    flags = e.flags;
+  for (let i = 0; i < e.count; i++) {
+    if ((flags[i]! & EdgeFlag.JOINS) === 0) continue;
+    parent[A[i]!] = A[i]!;
+    parent[B[i]!] = B[i]!;
+  }
+}
+
+/**
  * Joins the islands of the sleep candidates that a joint holds together, in 2D and 3D alike:
  *
  * - a mouse joint keeps the body it drags awake (its rest time is reset);

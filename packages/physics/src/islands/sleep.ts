@@ -14,6 +14,7 @@ import {
   joinJointEdges,
   markSupport,
   pushedSleepers2D,
+  resetJoinedParents,
 } from './edges.js';
 import { addIslandEdges3D, wakeTouching3D, withShape3DBodies } from './hooks-3d.js';
 
@@ -215,61 +216,67 @@ export function sleepSystem(world: PhysicsWorld): void {
     rest[c.Spring.a[s]!] = 0;
     rest[c.Spring.b[s]!] = 0;
   }
-  // An island sleeps only when every body in it has rested timeToSleep (its least rest time, below):
-  // with no such body there are no sleepers, and the islands need not be found (a pile still settling
-  // pays for no union-find). The joints still zero the rest time of the bodies they hold awake.
-  const T = sl.timeToSleep;
-  let candidates = 0;
-  for (let i = 0; i < n; i++)
-    if (rest[bodies[i]!]! >= T) {
-      candidates++;
-      break;
-    }
-  if (candidates === 0) {
-    wakeIslandsOf(world, joinJointEdges(world, edges, bodies, rest, parent, supported, ++sl.stamp));
-    cs.stats.sleeping = sl.anyAsleep ? query(world, terms.sleeping).length : 0;
-    return;
-  }
   // Islands over contacts between dynamic awake bodies that pushed, and over joints (`supported` is
-  // read no more this step, and marks the candidates).
-  const find = (x: number): number => findRoot(parent, x);
+  // read no more this step, and marks the candidates). Found at every step, also while no body has
+  // rested timeToSleep yet (a pile still settling): a branch first taken when the first body has
+  // rested that long would run uncompiled code for the rest of the settling, every step.
   joinContactEdges(world, edges, parent);
   wakeIslandsOf(world, joinJointEdges(world, edges, bodies, rest, parent, supported, ++sl.stamp));
+  // An island sleeps when every body in it has rested timeToSleep: its least rest time.
   for (let i = 0; i < n; i++) islandRest[bodies[i]!] = Infinity;
   for (let i = 0; i < n; i++) {
     const e = bodies[i]!;
-    const r = find(e);
+    const r = findRoot(parent, e);
     if (rest[e]! < islandRest[r]!) islandRest[r] = rest[e]!;
   }
-  let sleepers: number[] | null = null;
-  for (let i = 0; i < n; i++) {
-    const e = bodies[i]!;
-    if (islandRest[find(e)]! >= T) (sleepers ??= []).push(e);
-  }
-  if (sleepers) {
-    const O = c.PreviousPosition,
-      P = c.Position;
-    const island = sl.island;
-    for (const e of sleepers) {
-      island[e] = find(e);
-      vx[e] = 0;
-      vy[e] = 0;
-      vz[e] = 0;
-      if (hasComponent(world, e, c.AngularVelocity)) {
-        wx[e] = 0;
-        wy[e] = 0;
-        wz[e] = 0;
-      }
-      O.x[e] = P.x[e]!;
-      O.y[e] = P.y[e]!;
-      O.z[e] = P.z[e]!;
-      addComponent(world, e, c.Sleeping);
-    }
-    sl.anyAsleep = true;
-    // Their contacts' impulses, for the step they wake in (collision/dormant-manifolds-2d.ts).
-    if (world.dimensions === 2) keepSleepingManifolds(world);
-  }
+  const T = sl.timeToSleep;
+  let sleepers = 0;
+  for (let i = 0; i < n; i++) sleepers += islandRest[findRoot(parent, bodies[i]!)]! >= T ? 1 : 0;
+  if (sleepers > 0) fallAsleep(world, bodies);
+  // Every body its own island again between steps: a snapshot stores such parents in a few bytes.
+  for (let i = 0; i < n; i++) parent[bodies[i]!] = bodies[i]!;
+  resetJoinedParents(edges, parent);
   cs.stats.sleeping = sl.anyAsleep ? query(world, terms.sleeping).length : 0;
+}
+
+/**
+ * Puts to sleep every body of `bodies` whose island (the union-find `sleep.parent` of this step) has
+ * rested timeToSleep (`sleep.islandRest` of its root): velocities zeroed, its previous position set to
+ * its position, the `Sleeping` tag added, its island recorded for waking; then the 2D shape contacts'
+ * impulses are kept for the step they wake in (collision/dormant-manifolds-2d.ts). A function of its
+ * own: it first runs when a pile falls asleep, long after sleepSystem's code was compiled.
+ */
+function fallAsleep(world: PhysicsWorld, bodies: ArrayLike<number>): void {
+  const sl = world.collision.sleep;
+  const c = world.components;
+  const parent = sl.parent,
+    islandRest = sl.islandRest,
+    island = sl.island,
+    T = sl.timeToSleep;
+  const V = c.Velocity,
+    W = c.AngularVelocity,
+    O = c.PreviousPosition,
+    P = c.Position;
+  for (let i = 0; i < bodies.length; i++) {
+    const e = bodies[i]!;
+    const root = findRoot(parent, e);
+    if (islandRest[root]! < T) continue;
+    island[e] = root;
+    V.x[e] = 0;
+    V.y[e] = 0;
+    V.z[e] = 0;
+    if (hasComponent(world, e, c.AngularVelocity)) {
+      W.x[e] = 0;
+      W.y[e] = 0;
+      W.z[e] = 0;
+    }
+    O.x[e] = P.x[e]!;
+    O.y[e] = P.y[e]!;
+    O.z[e] = P.z[e]!;
+    addComponent(world, e, c.Sleeping);
+  }
+  sl.anyAsleep = true;
+  if (world.dimensions === 2) keepSleepingManifolds(world);
 }
 
 /**

@@ -1,4 +1,5 @@
 import { findDormant, pruneDormant } from '../collision/dormant-manifolds-2d.js';
+import type { ContactEventList } from '../collision/event-lists.js';
 import { keepWhileAsleep, pushEvent, resumeAfterSleep } from '../collision/events.js';
 import { MAX_MANIFOLDS } from '../collision/manifold-limits-2d.js';
 import { findPrevious, type ManifoldBuffer, rotateManifolds, type ShapeCollisionState } from '../collision/manifolds-2d.js';
@@ -70,14 +71,33 @@ import { joinSolverBodies } from './solver-bodies.js';
  */
 function previousRow(st: ShapeCollisionState, guess: number, a: number, b: number): number {
   const prev = st.previous;
-  if (guess >= 0 && guess < prev.count && prev.shapeA[guess] === a && prev.shapeB[guess] === b) return guess;
+  const inRange = guess >= 0 && guess < prev.count;
+  // Row `guess` is read and compared (row 0 when out of range) before the range test: a world's first
+  // step has no rows before it, and code compiled then would lack these loads and comparisons (V8
+  // records no type feedback for code that never ran) and be thrown away in the second step.
+  const k = inRange ? guess : 0;
+  const sameA = prev.shapeA[k] === a,
+    sameB = prev.shapeB[k] === b;
+  if (inRange && sameA && sameB) return guess;
   return findPrevious(st, a, b);
 }
 
-/** The point of row j of `src` with feature id `id`, as its index 2 j + k in the point arrays, or -1. */
+/**
+ * The point of row j of `src` with feature id `id`, as its index 2 j + k in the point arrays, or -1
+ * (j < 0: -1, row 0 read instead). The point slots are read and compared whatever the row's point
+ * count (at most 2), and row 0 for no row: the warm start of a world's first step finds no row, and
+ * code compiled then would lack these loads and comparisons (V8 records no type feedback for code
+ * that never ran) and be thrown away in the second step.
+ */
 function samePoint(src: ManifoldBuffer, j: number, id: number): number {
-  for (let k = 0, pm = src.pointCount[j]!; k < pm; k++) if (src.id[2 * j + k] === id) return 2 * j + k;
-  return -1;
+  const q = 2 * Math.max(j, 0),
+    q1 = q + 1;
+  const pm = src.pointCount[q >> 1]!;
+  const at0 = pm > 0,
+    at1 = pm > 1,
+    same0 = src.id[q] === id,
+    same1 = src.id[q1] === id;
+  return j < 0 ? -1 : at0 && same0 ? q : at1 && same1 ? q1 : -1;
 }
 
 /**
@@ -121,6 +141,20 @@ export function prepareManifolds(world: PhysicsWorld): void {
   st.solverRows = R;
   prepareRows(world, R, n);
   pruneDormant(world);
+}
+
+/**
+ * The rolling resistance of manifold i of `buf` between shapes ea (< 0: a boundary face) and eb: of
+ * its round shapes (a circle or capsule: at most two vertices), the largest coefficient times rolling
+ * radius (m); 0 when neither is round.
+ */
+function rollingOf(S: PhysicsWorld['components']['Shape'], buf: ManifoldBuffer, i: number, ea: number, eb: number): number {
+  let roll = 0;
+  if (ea > 0 && S.body.length > ea && S.body[ea] === buf.bodyA[i] && S.count[ea]! <= 2 && S.count[ea]! > 0)
+    roll = S.rollingResistance[ea]! * S.radius[ea]!;
+  if (S.body.length > eb && S.body[eb] === buf.bodyB[i] && S.count[eb]! <= 2 && S.count[eb]! > 0)
+    roll = Math.max(roll, S.rollingResistance[eb]! * S.radius[eb]!);
+  return roll;
 }
 
 /** prepareManifolds, per manifold: its bodies, normal, material, warm start, points and block (prepareBlock). */
@@ -185,39 +219,33 @@ function prepareRows(world: PhysicsWorld, R: Float64Array, n: number): void {
     R[r + MR_NY] = ny;
     R[r + MR_POINT_COUNT] = m;
     // Materials: Box2D's mixing (the bouncier surface wins, friction is the geometric mean).
-    let ra: number, fa: number, sa: number;
-    if (ea < 0) {
-      ra = box.restitution;
-      fa = box.friction;
-      sa = box.staticFriction;
-    } else {
-      ra = eM[ea]!;
-      fa = fM[ea]!;
-      sa = sM[ea]!;
-    }
+    const ra = ea < 0 ? box.restitution : eM[ea]!,
+      fa = ea < 0 ? box.friction : fM[ea]!,
+      sa = ea < 0 ? box.staticFriction : sM[ea]!;
     const mu = Math.sqrt(fa * fM[eb]!),
       mus = Math.sqrt(sa * sM[eb]!);
     R[r + MR_RESTITUTION] = Math.max(ra, eM[eb]!);
-    // Rolling resistance of round shapes: coefficient times the rolling radius.
-    let roll = 0;
-    if (ea > 0 && S.body.length > ea && S.body[ea] === buf.bodyA[i] && S.count[ea]! <= 2 && S.count[ea]! > 0)
-      roll = S.rollingResistance[ea]! * S.radius[ea]!;
-    if (S.body.length > eb && S.body[eb] === buf.bodyB[i] && S.count[eb]! <= 2 && S.count[eb]! > 0)
-      roll = Math.max(roll, S.rollingResistance[eb]! * S.radius[eb]!);
-    R[r + MR_ROLLING] = roll;
+    R[r + MR_ROLLING] = rollingOf(S, buf, i, ea, eb);
     R[r + MR_ROLLING_MASS] = iA + iB > 0 ? 1 / (iA + iB) : 0;
     stampA[i] = ea > 0 ? stamp[ea]! : 0;
     stampB[i] = stamp[eb]!;
     let j = previousRow(st, i + shift, ea, eb);
-    if (j >= 0) shift = j - i;
+    const step = j - i;
+    if (j >= 0) shift = step;
     // The warm start: last step's row, or for a pair that just woke the row it fell asleep with.
     let src = prev;
     if (j < 0 && dormant.count > 0) {
       j = findDormant(st, ea, eb);
       src = dormant;
     }
-    if (j >= 0 && (src.stampA[j] !== stampA[i] || src.stampB[j] !== stampB[i])) j = -1;
-    R[r + MR_ROLLING_IMPULSE] = j >= 0 ? src.rollingImpulse[j]! : 0;
+    // Row j's stamps and rolling impulse are read and compared (row 0's when there is none) before
+    // the test: see samePoint.
+    const js = j >= 0 ? j : 0;
+    const spawnedA = src.stampA[js] === stampA[i],
+      spawnedB = src.stampB[js] === stampB[i],
+      rolled = src.rollingImpulse[js]!;
+    if (j >= 0 && !(spawnedA && spawnedB)) j = -1;
+    R[r + MR_ROLLING_IMPULSE] = j >= 0 ? rolled : 0;
     const vax = sb[oa + BS2_VX]!,
       vay = sb[oa + BS2_VY]!,
       wa = sb[oa + BS2_W]!,
@@ -251,11 +279,16 @@ function prepareRows(world: PhysicsWorld, R: Float64Array, n: number): void {
       const vn = dvx * nx + dvy * ny;
       VN[q] = vn;
       const vt = Math.abs(-dvx * ny + dvy * nx);
-      if (vt > vtMax) vtMax = vt;
+      // Math.max, not a comparison: a world's first step, its bodies at rest, has every vt 0, and a
+      // comparison compiled then for small integers would be thrown away at the first fraction.
+      vtMax = Math.max(vtMax, vt);
       // Warm start: the impulses of the warm-start row's point with the same feature id.
-      const w = j >= 0 ? samePoint(src, j, ID[q]!) : -1;
-      const ln = w >= 0 ? src.normalImpulse[w]! : 0,
-        lt = w >= 0 ? src.tangentImpulse[w]! : 0;
+      const w = samePoint(src, j, ID[q]!);
+      const wq = w >= 0 ? w : 0;
+      const ln0 = src.normalImpulse[wq]!,
+        lt0 = src.tangentImpulse[wq]!;
+      const ln = w >= 0 ? ln0 : 0,
+        lt = w >= 0 ? lt0 : 0;
       R[o + MP_RNA] = rnA;
       R[o + MP_RNB] = rnB;
       R[o + MP_RTA] = rtA;
@@ -318,11 +351,29 @@ function prepareBlock(R: Float64Array, r: number, mA: number, iA: number, mB: nu
 export function finishManifolds(world: PhysicsWorld): void {
   const st = world.collision.shapes;
   if (!st.active) return;
-  const buf = st.manifolds,
-    prev = st.previous,
-    ev = world.collision.events;
+  const ev = world.collision.events;
+  beginTouches(world, st, ev.begin, st.manifolds, st.previous, st.manifolds.count);
+  rotateManifolds(st);
+  endTouches(world, st, ev.end, st.previous, st.manifolds, st.lastCount);
+}
+
+/**
+ * The begin events of finishManifolds, before rotateManifolds: marks the `n` rows of `buf` (this
+ * step's) that touch, and writes `begins` for those that did not touch in `prev` (last step's rows).
+ * The loop's own function, its lists and buffers as arguments, and the calls after it in
+ * finishManifolds: a world's first step compiles it while the loop runs, before V8 keeps type
+ * feedback for the function, and code outside the loop would lack it.
+ */
+function beginTouches(
+  world: PhysicsWorld,
+  st: ShapeCollisionState,
+  begins: ContactEventList,
+  buf: ManifoldBuffer,
+  prev: ManifoldBuffer,
+  n: number,
+): void {
   let shift = 0; // see previousRow
-  for (let i = 0, n = buf.count; i < n; i++) {
+  for (let i = 0; i < n; i++) {
     let touching = 0;
     for (let p = 0, m = buf.pointCount[i]!; p < m; p++) {
       const q = 2 * i + p;
@@ -331,44 +382,56 @@ export function finishManifolds(world: PhysicsWorld): void {
     buf.touching[i] = touching;
     if (touching === 0) continue;
     const j = previousRow(st, i + shift, buf.shapeA[i]!, buf.shapeB[i]!);
-    if (j >= 0) shift = j - i;
-    if (j >= 0 && prev.touching[j] === 1 && prev.stampB[j] === buf.stampB[i] && prev.stampA[j] === buf.stampA[i]) continue;
+    const step = j - i;
+    if (j >= 0) shift = step;
+    // Row j is read and compared (row 0 when there is none) before the test: see samePoint.
+    const js = j >= 0 ? j : 0;
+    const held = prev.touching[js] === 1,
+      spawnedB = prev.stampB[js] === buf.stampB[i],
+      spawnedA = prev.stampA[js] === buf.stampA[i];
+    if (j >= 0 && held && spawnedB && spawnedA) continue;
     if (resumeAfterSleep(world, buf.shapeA[i]!, buf.shapeB[i]!)) continue;
-    const k = pushEvent(world, ev.begin, buf.shapeA[i]!, buf.shapeB[i]!, buf.bodyA[i]!, buf.bodyB[i]!);
-    ev.begin.px[k] = buf.px[2 * i]!;
-    ev.begin.py[k] = buf.py[2 * i]!;
-    ev.begin.nx[k] = buf.nx[i]!;
-    ev.begin.ny[k] = buf.ny[i]!;
+    const k = pushEvent(world, begins, buf.shapeA[i]!, buf.shapeB[i]!, buf.bodyA[i]!, buf.bodyB[i]!);
+    begins.px[k] = buf.px[2 * i]!;
+    begins.py[k] = buf.py[2 * i]!;
+    begins.nx[k] = buf.nx[i]!;
+    begins.ny[k] = buf.ny[i]!;
     let approach = 0,
       impulse = 0;
     for (let p = 0, m = buf.pointCount[i]!; p < m; p++) {
       approach = Math.max(approach, -buf.relativeVelocity[2 * i + p]!);
       impulse += buf.totalNormalImpulse[2 * i + p]!;
     }
-    ev.begin.approachSpeed[k] = approach;
-    ev.begin.impulse[k] = impulse;
+    begins.approachSpeed[k] = approach;
+    begins.impulse[k] = impulse;
   }
-  rotateManifolds(st);
-  endTouches(world, st);
 }
 
 /**
  * The end events of finishManifolds, after rotateManifolds: pairs that touched last step and do not
  * now (`previous` is now this step's rows). A function of its own: a world's first step has no rows
  * of a step before, so this loop runs first in the second step, and inside finishManifolds (compiled
- * during the first step) its first run threw the compiled code away.
+ * during the first step) its first run threw the compiled code away. The lists and buffers come as
+ * arguments (`ends`: the end events, `now`: this step's rows, `old`: last step's `n` rows, in the
+ * buffer just emptied): its first runs are compiled while its loop runs, before V8 keeps type feedback for it,
+ * and loads before the loop would lack it.
  */
-function endTouches(world: PhysicsWorld, st: ShapeCollisionState): void {
-  const ev = world.collision.events;
-  const now = st.previous,
-    old = st.manifolds; // old: the buffer just emptied, still holding last step's rows
+function endTouches(
+  world: PhysicsWorld,
+  st: ShapeCollisionState,
+  ends: ContactEventList,
+  now: ManifoldBuffer,
+  old: ManifoldBuffer,
+  n: number,
+): void {
   let shift = 0; // see previousRow
-  for (let i = 0, n = st.lastCount; i < n; i++) {
+  for (let i = 0; i < n; i++) {
     if (old.touching[i] !== 1) continue;
     const j = previousRow(st, i + shift, old.shapeA[i]!, old.shapeB[i]!);
-    if (j >= 0) shift = j - i;
+    const step = j - i;
+    if (j >= 0) shift = step;
     if (j >= 0 && now.touching[j] === 1 && now.stampB[j] === old.stampB[i] && now.stampA[j] === old.stampA[i]) continue;
     if (keepWhileAsleep(world, old.shapeA[i]!, old.shapeB[i]!, old.bodyA[i]!, old.bodyB[i]!)) continue;
-    pushEvent(world, ev.end, old.shapeA[i]!, old.shapeB[i]!, old.bodyA[i]!, old.bodyB[i]!);
+    pushEvent(world, ends, old.shapeA[i]!, old.shapeB[i]!, old.bodyA[i]!, old.bodyB[i]!);
   }
 }
