@@ -8,7 +8,6 @@ import type { PhysicsWorld } from '../world/options.js';
 import { Not, query } from '../world/query.js';
 import type { SleepTerms } from '../world/scratch.js';
 import { addIslandEdges, emptyIslandEdges, findRoot, joinContactEdges, joinJointEdges, markSupport, pushedSleepers2D } from './edges.js';
-import { wakeIslandForStep } from './step-wake.js';
 
 /**
  * Sleeping islands (after Box2D v3's island sleep; Catto, "Solver2D", 2024): a resting pile stops
@@ -295,7 +294,8 @@ function sleepCandidates(world: PhysicsWorld, terms: SleepTerms): ArrayLike<numb
 
 /**
  * Removal hook: a body removed from a sleeping pile wakes its island; an awake one wakes the islands of
- * the sleeping bodies it touched in the last step.
+ * the sleeping bodies it touched in the last step, through any contact store (ball rows, 2D and 3D
+ * manifolds) alike.
  * @category Collision
  */
 export function wakeTouching(world: PhysicsWorld, eid: number): void {
@@ -305,16 +305,6 @@ export function wakeTouching(world: PhysicsWorld, eid: number): void {
   if (hasComponent(world, eid, c.Sleeping)) {
     wakeIsland(world, eid);
     return;
-  }
-  // The 3D manifolds' sleepers wake for the step under way (the removal may come between the collide
-  // stage and the solver).
-  const m = world.dimensions === 3 ? contact3DStateOf(world)?.current : undefined;
-  for (let i = 0, n = m?.count ?? 0; i < n; i++) {
-    const a = m!.bodyA[i]!,
-      b = m!.bodyB[i]!;
-    if (a !== eid && b !== eid) continue;
-    const other = a === eid ? b : a;
-    if (other !== 0 && hasComponent(world, other, c.Sleeping)) wakeIslandForStep(world, other);
   }
   const rows = cs.cache.rows;
   for (let i = 0; i < rows.count; i++) {
@@ -326,5 +316,22 @@ export function wakeTouching(world: PhysicsWorld, eid: number): void {
     for (const other of [a, b]) {
       if (other !== 0 && other !== eid && hasComponent(world, other, c.Sleeping)) wakeIsland(world, other);
     }
+  }
+  // The manifolds' rows of the last step: in 2D finishManifolds made them `previous`.
+  const flat = cs.shapes.previous;
+  if (cs.shapes.active) wakePartners(world, flat.bodyA, flat.bodyB, flat.count, eid);
+  const m = world.dimensions === 3 ? contact3DStateOf(world)?.current : undefined;
+  if (m !== undefined) wakePartners(world, m.bodyA, m.bodyB, m.count, eid);
+}
+
+/** Wakes the island of each sleeping partner of body `eid` among the first `n` body pairs (A[i], B[i]) of a manifold store. */
+function wakePartners(world: PhysicsWorld, A: Int32Array, B: Int32Array, n: number, eid: number): void {
+  const sleeping = world.components.Sleeping;
+  for (let i = 0; i < n; i++) {
+    const a = A[i]!,
+      b = B[i]!;
+    if (a !== eid && b !== eid) continue;
+    const other = a === eid ? b : a;
+    if (other !== 0 && hasComponent(world, other, sleeping)) wakeIsland(world, other);
   }
 }
