@@ -330,17 +330,12 @@ function eachCollider(world: PhysicsWorld, visit: (s: Shape3DStore | undefined, 
 const fn = new Float64Array(3 * 256),
   fd = new Float64Array(256);
 
-/** Whether the segment from o to o + d (m) hits the collider posed in `pose` (shape `e` of `s`, or a ball), filling `hit`. */
-function rayCollider(
-  s: Shape3DStore | undefined,
-  e: number,
-  ox: number,
-  oy: number,
-  oz: number,
-  dx: number,
-  dy: number,
-  dz: number,
-): boolean {
+/** The ray of rayCastAll3D: origin o and translation d, m. Scratch. */
+const ray = { ox: 0, oy: 0, oz: 0, dx: 0, dy: 0, dz: 0 };
+
+/** Whether the segment `ray` hits the collider posed in `pose` (shape `e` of `s`, or a ball), filling `hit`. */
+function rayCollider(s: Shape3DStore | undefined, e: number): boolean {
+  const { ox, oy, oz, dx, dy, dz } = ray;
   const { cx, cy, cz, x, y, z, w, kind, r } = pose;
   if (kind === Shape3DKind.Sphere) return raySphere(ox, oy, oz, dx, dy, dz, cx, cy, cz, r);
   const st = s as Shape3DStore;
@@ -400,8 +395,9 @@ export function rayCastAll3D(world: PhysicsWorld, origin: ArrayLike<number>, tra
       nz: hit.nz,
     });
   };
+  Object.assign(ray, { ox, oy, oz, dx, dy, dz });
   eachCollider(world, (s, e, b) => {
-    if (rayCollider(s, e, ox, oy, oz, dx, dy, dz)) push(e, b);
+    if (rayCollider(s, e)) push(e, b);
   });
   const c = world.components;
   const planes = query(world, [c.Plane]);
@@ -508,21 +504,12 @@ function shapeContains(st: Shape3DStore | undefined, e: number, px: number, py: 
 function shapeBounds(st: Shape3DStore | undefined, e: number, box: Float64Array): void {
   const { cx, cy, cz, x, y, z, w, kind, r } = pose,
     s = st as Shape3DStore;
-  if (kind === Shape3DKind.Sphere) {
-    box[0] = cx - r;
-    box[1] = cy - r;
-    box[2] = cz - r;
-    box[3] = cx + r;
-    box[4] = cy + r;
-    box[5] = cz + r;
-    return;
-  }
-  if (kind === Shape3DKind.Capsule || kind === Shape3DKind.Cylinder) {
-    // The axis u = R (0, 1, 0): the segment's ends reach |u_i| hh along world axis i; a capsule's
-    // sphere adds r, a cylinder's end disc r sqrt(1 - u_i^2).
+  if (kind === Shape3DKind.Sphere || kind === Shape3DKind.Capsule || kind === Shape3DKind.Cylinder) {
+    // The axis u = R (0, 1, 0): the segment's ends reach |u_i| hh along world axis i (a sphere's
+    // segment is a point, hh = 0); a sphere or capsule adds r, a cylinder's end disc r sqrt(1 - u_i^2).
     rotateVector(x, y, z, w, 0, 1, 0, v3);
-    const hh = s.hy[e]!,
-      cap = kind === Shape3DKind.Capsule;
+    const hh = kind === Shape3DKind.Sphere ? 0 : s.hy[e]!,
+      cap = kind !== Shape3DKind.Cylinder;
     for (let i = 0; i < 3; i++) {
       const u = v3[i]!,
         ext = Math.abs(u) * hh + (cap ? r : r * Math.sqrt(Math.max(0, 1 - u * u)));
