@@ -1,4 +1,4 @@
-import { addBody, addPlane, addShape3D, createPhysicsWorld, isSleeping, slotOf, step } from '@bitphysics/physics';
+import { addBody, addPlane, addShape3D, createPhysicsWorld, isSleeping, removeBody, slotOf, step, stepMany } from '@bitphysics/physics';
 import { describe, expect, test } from 'vitest';
 
 describe('3D shape bodies sleep in islands', () => {
@@ -40,5 +40,28 @@ describe('3D shape bodies sleep in islands', () => {
     // ... and everything sleeps again.
     for (let s = 0; s < 240; s++) step(world);
     expect([...stack, drop].every((b) => isSleeping(world, b))).toBe(true);
+  });
+
+  test('removing an awake box that leaned on a sleeping box wakes it, which stays where it was', () => {
+    const world = createPhysicsWorld({ dimensions: 3, gravity: [0, -10, 0] });
+    addPlane(world, { normal: [0, 1, 0] });
+    const b = addBody(world, { position: [0, 0.5, 0] });
+    addShape3D(world, b, { type: 'box', halfExtents: [0.5, 0.5, 0.5] });
+    stepMany(world, 120);
+    expect(isSleeping(world, b)).toBe(true);
+    // A box against its side that counts as resting (rest time > 0) leaves the sleeper asleep; the rest
+    // time is set here, as a box that settled there would have it.
+    const a = addBody(world, { position: [1, 0.5, 0] });
+    addShape3D(world, a, { type: 'box', halfExtents: [0.5, 0.5, 0.5] });
+    world.collision.sleep.restTime[slotOf(a)] = 0.1;
+    step(world);
+    expect(isSleeping(world, b) && !isSleeping(world, a)).toBe(true);
+    const c = world.components,
+      s = slotOf(b),
+      y = c.Position.y[s];
+    removeBody(world, a);
+    expect(isSleeping(world, b)).toBe(false);
+    // Woken between steps: no velocity or position is written (exactly; not the step's gravity, v = g h).
+    expect([c.Velocity.x[s], c.Velocity.y[s], c.Velocity.z[s], c.Position.y[s]]).toEqual([0, 0, 0, y]);
   });
 });

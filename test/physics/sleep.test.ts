@@ -1,5 +1,6 @@
 import {
   addBody,
+  addBox,
   ballsInBox,
   createPhysicsWorld,
   isSleeping,
@@ -7,6 +8,7 @@ import {
   setBoundary,
   setGravity,
   setVelocity,
+  slotOf,
   step,
   stepMany,
 } from '@bitphysics/physics';
@@ -89,6 +91,27 @@ describe('sleeping islands', () => {
     removeBody(world, under);
     stepMany(world, 60);
     expect(world.components.Position.y[top]!).toBeLessThan(0.6);
+  });
+
+  test('removing an awake box that leaned on a sleeping box wakes it, which stays where it was', () => {
+    const world = createPhysicsWorld({ gravity: [0, -10] });
+    addBox(world, { position: [0, -0.5], halfExtents: [50, 0.5], static: true });
+    const b = addBox(world, { position: [0, 0.5], halfExtents: [0.5, 0.5] });
+    stepMany(world, 120);
+    expect(isSleeping(world, b)).toBe(true);
+    // A box against its side that counts as resting (rest time > 0) meets the sleeper as geometry and
+    // leaves it asleep; the rest time is set here, as a box that settled there would have it.
+    const a = addBox(world, { position: [1, 0.5], halfExtents: [0.5, 0.5] });
+    world.collision.sleep.restTime[slotOf(a)] = 0.1;
+    step(world);
+    expect(isSleeping(world, b) && !isSleeping(world, a)).toBe(true);
+    const P = world.components.Position,
+      s = slotOf(b),
+      y = P.y[s];
+    removeBody(world, a);
+    expect(isSleeping(world, b)).toBe(false);
+    // Woken between steps: no velocity or position is written (exactly).
+    expect([world.components.Velocity.x[s], world.components.Velocity.y[s], P.y[s]]).toEqual([0, 0, y]);
   });
 
   test('changing gravity wakes everything', () => {

@@ -1,12 +1,11 @@
 /**
  * The 3D shapes' and joints' feature: their collision system (collide stage), the contact solver's 3D
- * rows and the sleep system's 3D islands, installed into a world when it gets its first 3D shape or
+ * rows and the 3D joints' island edges, installed into a world when it gets its first 3D shape or
  * joint (addShape3D, the add*Joint3D functions) or restores a snapshot. A program that never makes
  * one never reaches this module, so a bundler leaves the 3D shapes, manifolds and joints out.
  */
 
-import { setIslands3D } from '../islands/hooks-3d.js';
-import { addContactEdges3D, wakeTouching3D, withShape3DBodies } from '../islands/shapes-3d.js';
+import { setJointEdges3D } from '../islands/edges.js';
 import {
   finishJoints3D,
   gatherJoint3DBodies,
@@ -31,7 +30,7 @@ let loaded = false;
 /**
  * Installs the 3D shapes' and joints' systems into `world` (idempotent): `shape3DCollisionSystem` in
  * the collide stage at its place (world/install.ts), and, once for the program, the contact solver's 3D
- * rows and the sleep system's 3D islands.
+ * rows and the 3D joints' island edges.
  * @category Collision
  */
 export function install3D(world: PhysicsWorld): void {
@@ -63,14 +62,7 @@ export function install3D(world: PhysicsWorld): void {
       restitution: applyManifold3DRestitution,
       finish: finishManifolds3D,
     });
-    setIslands3D({
-      withShape3DBodies,
-      addIslandEdges3D: (w, e) => {
-        addContactEdges3D(w, e);
-        addJointEdges3D(w, e);
-      },
-      wakeTouching3D,
-    });
+    setJointEdges3D(addJointEdges3D);
     // Trusted (step/finite.ts) only while it has nothing to collide, when it writes nothing.
     trustFiniteOutput([shape3DCollisionSystem], 'all', (w) => w.dimensions !== 3 || shapes3DOf(w)?.active !== true);
   }

@@ -282,8 +282,6 @@ export interface ShapeCollisionState {
   bodyMark: number;
   /** Whether any collider moves this step (else the broadphase has nothing to pair). */
   anyMoving: boolean;
-  /** Scratch list of the bodies that may sleep (islands/sleep.ts). */
-  sleepList: Uint32Array;
   /** Per entity: the body's angular velocity this step (0 if it does not turn), rad/s. */
   bodyW: Float64Array;
   /** Per entity: the body's angle at the start of the step, rad. */
@@ -319,7 +317,6 @@ export function createShapeCollisionState(): ShapeCollisionState {
     bodyMark: 0,
     bodyW: new Float64Array(0),
     bodyAngle0: new Float64Array(0),
-    sleepList: new Uint32Array(0),
     anyMoving: false,
   };
   // rotateManifolds swaps these two every step. V8 treats a field written only when its object was

@@ -1,4 +1,4 @@
-import { wakesSleeper3D } from '../islands/shapes-3d.js';
+import { wakesSleeper } from '../islands/step-wake.js';
 import { M00, M01, M02, M10, M11, M12, M20, M21, M22, MAT3_STRIDE } from '../math/mat3-layout.js';
 import { Shape3DKind, type Shape3DStore } from '../shapes/store-3d.js';
 import { ANCHOR_AX, ANCHOR_AY, ANCHOR_AZ, ANCHOR_BX, ANCHOR_BY, ANCHOR_BZ, ANCHOR_STRIDE } from '../solver/manifold-layout-3d.js';
@@ -310,8 +310,8 @@ function emitPair(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, a: n
       fall = Math.sqrt(g[0]! * g[0]! + g[1]! * g[1]! + g[2]! * g[2]!) * h * h;
     const mover = ta === BodyType.Sleeping ? (sc.body[a] === bj ? a : b) : sc.body[a] === bi ? a : b;
     const closing = sc.speed[mover]! * h + fall;
-    if (ta === BodyType.Sleeping && wakesSleeper3D(world, bj, tb, gap, closing)) queueWake(bi);
-    else if (tb === BodyType.Sleeping && wakesSleeper3D(world, bi, ta, gap, closing)) queueWake(bj);
+    if (ta === BodyType.Sleeping && wakesSleeper(world, bj, tb, gap, closing)) queueWake(bi);
+    else if (tb === BodyType.Sleeping && wakesSleeper(world, bi, ta, gap, closing)) queueWake(bj);
   }
   if (ta !== BodyType.Dynamic && tb !== BodyType.Dynamic) return;
   emit(world, s, st, sc.body[a]!, sc.body[b]!, sc.shape[a]!, sc.shape[b]!, sc.ball[a] === 1, sc.ball[b] === 1);

@@ -257,8 +257,11 @@ function rayCylinder(ox: number, oy: number, oz: number, dx: number, dy: number,
   return best !== Infinity && setHit(best, bx, by, bz);
 }
 
-/** A shape's pose (posed by `poseShape`): centre, m (world), and the rotation of its frame into the world (unit quaternion x, y, z, w). */
-const pose = { cx: 0, cy: 0, cz: 0, x: 0, y: 0, z: 0, w: 1 };
+/**
+ * A collider's pose (posed by `poseShape` or `poseBall`): centre, m (world), the rotation of its frame
+ * into the world (unit quaternion x, y, z, w), its kind (Shape3DKind) and radius, m.
+ */
+const pose = { cx: 0, cy: 0, cz: 0, x: 0, y: 0, z: 0, w: 1, kind: 0, r: 0 };
 /** A vector rotated by a shape's pose (math/quaternion.ts rotateVector; -x, -y, -z for the inverse). */
 const v3 = new Float64Array(3);
 
@@ -284,10 +287,87 @@ function poseShape(world: PhysicsWorld, s: Shape3DStore, e: number, b: number): 
   pose.y = qw * ay - qx * az + qy * aw + qz * ax;
   pose.z = qw * az + qx * ay - qy * ax + qz * aw;
   pose.w = qw * aw - qx * ax - qy * ay - qz * az;
+  pose.kind = s.kind[e]!;
+  pose.r = s.radius[e]!;
+}
+
+/** Fills `pose` with ball body `b` where it is now: a sphere of its `Ball` radius, unturned. */
+function poseBall(world: PhysicsWorld, b: number): void {
+  const P = world.components.Position;
+  pose.cx = P.x[b]!;
+  pose.cy = P.y[b]!;
+  pose.cz = P.z[b]!;
+  pose.x = pose.y = pose.z = 0;
+  pose.w = 1;
+  pose.kind = Shape3DKind.Sphere;
+  pose.r = world.components.Ball.radius[b]!;
+}
+
+/**
+ * Visits every collider where it is now, posed in `pose`: each 3D shape `e` of body `b`, then each ball
+ * body without a 3D shape as a sphere (e = b). `s` is the shape store (undefined in a world without 3D
+ * shapes: then only balls, whose pose is all a visit reads).
+ */
+function eachCollider(world: PhysicsWorld, visit: (s: Shape3DStore | undefined, e: number, b: number) => void): void {
+  const s = shapes3DOf(world);
+  if (s !== undefined) {
+    for (let e = 1; e <= world.capacity; e++) {
+      const b = s.body[e]!;
+      if (b === 0) continue;
+      poseShape(world, s, e, b);
+      visit(s, e, b);
+    }
+  }
+  const balls = query(world, [world.components.Position, world.components.Ball]);
+  for (let i = 0; i < balls.length; i++) {
+    const b = balls[i]!;
+    if (s !== undefined && s.first[b] !== 0) continue;
+    poseBall(world, b);
+    visit(s, b, b);
+  }
 }
 
 const fn = new Float64Array(3 * 256),
   fd = new Float64Array(256);
+
+/** The ray of rayCastAll3D: origin o and translation d, m. Scratch. */
+const ray = { ox: 0, oy: 0, oz: 0, dx: 0, dy: 0, dz: 0 };
+
+/** Whether the segment `ray` hits the collider posed in `pose` (shape `e` of `s`, or a ball), filling `hit`. */
+function rayCollider(s: Shape3DStore | undefined, e: number): boolean {
+  const { ox, oy, oz, dx, dy, dz } = ray;
+  const { cx, cy, cz, x, y, z, w, kind, r } = pose;
+  if (kind === Shape3DKind.Sphere) return raySphere(ox, oy, oz, dx, dy, dz, cx, cy, cz, r);
+  const st = s as Shape3DStore;
+  if (kind === Shape3DKind.Capsule) {
+    rotateVector(x, y, z, w, 0, st.hy[e]!, 0, v3);
+    const ux = v3[0]!,
+      uy = v3[1]!,
+      uz = v3[2]!;
+    return rayCapsule(ox, oy, oz, dx, dy, dz, cx - ux, cy - uy, cz - uz, cx + ux, cy + uy, cz + uz, r);
+  }
+  if (kind === Shape3DKind.Cylinder) {
+    // In the cylinder's frame, then the normal back to the world.
+    rotateVector(-x, -y, -z, w, ox - cx, oy - cy, oz - cz, v3);
+    const lx = v3[0]!,
+      ly = v3[1]!,
+      lz = v3[2]!;
+    rotateVector(-x, -y, -z, w, dx, dy, dz, v3);
+    if (!rayCylinder(lx, ly, lz, v3[0]!, v3[1]!, v3[2]!, r, st.hy[e]!)) return false;
+    rotateVector(x, y, z, w, hit.nx, hit.ny, hit.nz, v3);
+    return setHit(hit.t, v3[0]!, v3[1]!, v3[2]!);
+  }
+  const h = st.hulls[st.hull[e]!]!,
+    nf = h.faceOffsets.length;
+  for (let f = 0; f < nf; f++) {
+    rotateVector(x, y, z, w, h.faceNormals[3 * f]!, h.faceNormals[3 * f + 1]!, h.faceNormals[3 * f + 2]!, v3);
+    fn[3 * f] = v3[0]!;
+    fn[3 * f + 1] = v3[1]!;
+    fn[3 * f + 2] = v3[2]!;
+    fd[f] = h.faceOffsets[f]! + v3[0]! * cx + v3[1]! * cy + v3[2]! * cz;
+  }
+  return rayPolyhedron(ox, oy, oz, dx, dy, dz, fn, fd, nf);
+}
 
 /**
  * Every hit of the segment from `origin` to `origin + translation` (m), nearest first. A ray that starts inside a shape does not hit it. @throws TypeError on a 2D world or vectors that are not 3 finite numbers; RangeError on a zero translation.
@@ -315,57 +395,11 @@ export function rayCastAll3D(world: PhysicsWorld, origin: ArrayLike<number>, tra
       nz: hit.nz,
     });
   };
-  const c = world.components,
-    P = c.Position;
-  const s = shapes3DOf(world);
-  if (s !== undefined) {
-    for (let e = 1; e <= world.capacity; e++) {
-      const b = s.body[e]!;
-      if (b === 0) continue;
-      poseShape(world, s, e, b);
-      const { cx, cy, cz, x, y, z, w } = pose;
-      const kind = s.kind[e]!;
-      let ok = false;
-      if (kind === Shape3DKind.Sphere) ok = raySphere(ox, oy, oz, dx, dy, dz, cx, cy, cz, s.radius[e]!);
-      else if (kind === Shape3DKind.Capsule) {
-        rotateVector(x, y, z, w, 0, s.hy[e]!, 0, v3);
-        const ux = v3[0]!,
-          uy = v3[1]!,
-          uz = v3[2]!;
-        ok = rayCapsule(ox, oy, oz, dx, dy, dz, cx - ux, cy - uy, cz - uz, cx + ux, cy + uy, cz + uz, s.radius[e]!);
-      } else if (kind === Shape3DKind.Cylinder) {
-        // In the cylinder's frame, then the normal back to the world.
-        rotateVector(-x, -y, -z, w, ox - cx, oy - cy, oz - cz, v3);
-        const lx = v3[0]!,
-          ly = v3[1]!,
-          lz = v3[2]!;
-        rotateVector(-x, -y, -z, w, dx, dy, dz, v3);
-        ok = rayCylinder(lx, ly, lz, v3[0]!, v3[1]!, v3[2]!, s.radius[e]!, s.hy[e]!);
-        if (ok) {
-          rotateVector(x, y, z, w, hit.nx, hit.ny, hit.nz, v3);
-          setHit(hit.t, v3[0]!, v3[1]!, v3[2]!);
-        }
-      } else {
-        const h = s.hulls[s.hull[e]!]!,
-          nf = h.faceOffsets.length;
-        for (let f = 0; f < nf; f++) {
-          rotateVector(x, y, z, w, h.faceNormals[3 * f]!, h.faceNormals[3 * f + 1]!, h.faceNormals[3 * f + 2]!, v3);
-          fn[3 * f] = v3[0]!;
-          fn[3 * f + 1] = v3[1]!;
-          fn[3 * f + 2] = v3[2]!;
-          fd[f] = h.faceOffsets[f]! + v3[0]! * cx + v3[1]! * cy + v3[2]! * cz;
-        }
-        ok = rayPolyhedron(ox, oy, oz, dx, dy, dz, fn, fd, nf);
-      }
-      if (ok) push(e, b);
-    }
-  }
-  const balls = query(world, [c.Position, c.Ball]);
-  for (let i = 0; i < balls.length; i++) {
-    const b = balls[i]!;
-    if (s !== undefined && s.first[b] !== 0) continue;
-    if (raySphere(ox, oy, oz, dx, dy, dz, P.x[b]!, P.y[b]!, P.z[b]!, c.Ball.radius[b]!)) push(b, b);
-  }
+  Object.assign(ray, { ox, oy, oz, dx, dy, dz });
+  eachCollider(world, (s, e, b) => {
+    if (rayCollider(s, e)) push(e, b);
+  });
+  const c = world.components;
   const planes = query(world, [c.Plane]);
   for (let i = 0; i < planes.length; i++) {
     const p = planes[i]!,
@@ -435,15 +469,15 @@ export function rayCast3D(world: PhysicsWorld, origin: ArrayLike<number>, transl
   return rayCastAll3D(world, origin, translation)[0] ?? null;
 }
 
-/** Whether the point (px, py, pz), m, lies in shape `e` (posed in `pose`), boundary included. */
-function shapeContains(s: Shape3DStore, e: number, px: number, py: number, pz: number): boolean {
-  const { cx, cy, cz, x, y, z, w } = pose;
+/** Whether the point (px, py, pz), m, lies in the collider posed in `pose` (shape `e` of `s`, or a ball), boundary included. */
+function shapeContains(st: Shape3DStore | undefined, e: number, px: number, py: number, pz: number): boolean {
+  const { cx, cy, cz, x, y, z, w, kind, r } = pose;
   rotateVector(-x, -y, -z, w, px - cx, py - cy, pz - cz, v3);
   const lx = v3[0]!,
     ly = v3[1]!,
     lz = v3[2]!,
-    r = s.radius[e]!;
-  switch (s.kind[e]!) {
+    s = st as Shape3DStore;
+  switch (kind) {
     case Shape3DKind.Sphere:
       return lx * lx + ly * ly + lz * lz <= r * r;
     case Shape3DKind.Box:
@@ -466,31 +500,16 @@ function shapeContains(s: Shape3DStore, e: number, px: number, py: number, pz: n
   }
 }
 
-/** Fills `box` (min x, y, z, max x, y, z; m) with the bounding box of the sphere of centre c and radius r (m). */
-function sphereBounds(cx: number, cy: number, cz: number, r: number, box: Float64Array): void {
-  box[0] = cx - r;
-  box[1] = cy - r;
-  box[2] = cz - r;
-  box[3] = cx + r;
-  box[4] = cy + r;
-  box[5] = cz + r;
-}
-
-/** Fills `box` (min x, y, z, max x, y, z; m) with the world bounding box of shape `e` (posed in `pose`). */
-function shapeBounds(s: Shape3DStore, e: number, box: Float64Array): void {
-  const { cx, cy, cz, x, y, z, w } = pose,
-    kind = s.kind[e]!,
-    r = s.radius[e]!;
-  if (kind === Shape3DKind.Sphere) {
-    sphereBounds(cx, cy, cz, r, box);
-    return;
-  }
-  if (kind === Shape3DKind.Capsule || kind === Shape3DKind.Cylinder) {
-    // The axis u = R (0, 1, 0): the segment's ends reach |u_i| hh along world axis i; a capsule's
-    // sphere adds r, a cylinder's end disc r sqrt(1 - u_i^2).
+/** Fills `box` (min x, y, z, max x, y, z; m) with the world bounding box of the collider posed in `pose` (shape `e` of `s`, or a ball). */
+function shapeBounds(st: Shape3DStore | undefined, e: number, box: Float64Array): void {
+  const { cx, cy, cz, x, y, z, w, kind, r } = pose,
+    s = st as Shape3DStore;
+  if (kind === Shape3DKind.Sphere || kind === Shape3DKind.Capsule || kind === Shape3DKind.Cylinder) {
+    // The axis u = R (0, 1, 0): the segment's ends reach |u_i| hh along world axis i (a sphere's
+    // segment is a point, hh = 0); a sphere or capsule adds r, a cylinder's end disc r sqrt(1 - u_i^2).
     rotateVector(x, y, z, w, 0, 1, 0, v3);
-    const hh = s.hy[e]!,
-      cap = kind === Shape3DKind.Capsule;
+    const hh = kind === Shape3DKind.Sphere ? 0 : s.hy[e]!,
+      cap = kind !== Shape3DKind.Cylinder;
     for (let i = 0; i < 3; i++) {
       const u = v3[i]!,
         ext = Math.abs(u) * hh + (cap ? r : r * Math.sqrt(Math.max(0, 1 - u * u)));
@@ -514,28 +533,12 @@ function shapeBounds(s: Shape3DStore, e: number, box: Float64Array): void {
   }
 }
 
-/**
- * The handles of the 3D shapes for which `shape(store, e)` holds (called with the shape posed in
- * `pose`), then of the ball bodies without a 3D shape for which `ball(b)` holds: a fresh array.
- */
-function collect(world: PhysicsWorld, shape: (s: Shape3DStore, e: number) => boolean, ball: (b: number) => boolean): number[] {
+/** The handles of the colliders (eachCollider: 3D shapes, then shapeless balls) for which `test` holds, posed in `pose`: a fresh array. */
+function collect(world: PhysicsWorld, test: (s: Shape3DStore | undefined, e: number) => boolean): number[] {
   const out: number[] = [];
-  const c = world.components,
-    s = shapes3DOf(world);
-  if (s !== undefined) {
-    for (let e = 1; e <= world.capacity; e++) {
-      const b = s.body[e]!;
-      if (b === 0) continue;
-      poseShape(world, s, e, b);
-      if (shape(s, e)) out.push(currentHandle(world, e));
-    }
-  }
-  const balls = query(world, [c.Position, c.Ball]);
-  for (let i = 0; i < balls.length; i++) {
-    const b = balls[i]!;
-    if (s !== undefined && s.first[b] !== 0) continue;
-    if (ball(b)) out.push(currentHandle(world, b));
-  }
+  eachCollider(world, (s, e) => {
+    if (test(s, e)) out.push(currentHandle(world, e));
+  });
   return out;
 }
 
@@ -561,19 +564,8 @@ export function overlapPoint3D(world: PhysicsWorld, point: ArrayLike<number>): n
   const px = point[0]!,
     py = point[1]!,
     pz = point[2]!;
-  const c = world.components,
-    P = c.Position;
-  const out = collect(
-    world,
-    (s, e) => shapeContains(s, e, px, py, pz),
-    (b) => {
-      const dx = px - P.x[b]!,
-        dy = py - P.y[b]!,
-        dz = pz - P.z[b]!,
-        r = c.Ball.radius[b]!;
-      return dx * dx + dy * dy + dz * dz <= r * r;
-    },
-  );
+  const c = world.components;
+  const out = collect(world, (s, e) => shapeContains(s, e, px, py, pz));
   const planes = query(world, [c.Plane]);
   for (let i = 0; i < planes.length; i++) {
     const p = planes[i]!;
@@ -608,19 +600,11 @@ export function overlapAABB3D(world: PhysicsWorld, min: ArrayLike<number>, max: 
   if (!(x0 <= x1 && y0 <= y1 && z0 <= z1))
     throw new RangeError(`${where}: min must not exceed max, got ${describe(min)} and ${describe(max)}`);
   const meets = (b: Float64Array): boolean => b[0]! <= x1 && b[3]! >= x0 && b[1]! <= y1 && b[4]! >= y0 && b[2]! <= z1 && b[5]! >= z0;
-  const c = world.components,
-    P = c.Position;
-  const out = collect(
-    world,
-    (s, e) => {
-      shapeBounds(s, e, bounds);
-      return meets(bounds);
-    },
-    (b) => {
-      sphereBounds(P.x[b]!, P.y[b]!, P.z[b]!, c.Ball.radius[b]!, bounds);
-      return meets(bounds);
-    },
-  );
+  const c = world.components;
+  const out = collect(world, (s, e) => {
+    shapeBounds(s, e, bounds);
+    return meets(bounds);
+  });
   const planes = query(world, [c.Plane]);
   for (let i = 0; i < planes.length; i++) {
     const p = planes[i]!,

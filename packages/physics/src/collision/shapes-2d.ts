@@ -1,5 +1,5 @@
 import { hasComponent } from 'bitecs';
-import { wakeIslandForStep } from '../islands/step-wake.js';
+import { wakeIslandForStep, wakesSleeper } from '../islands/step-wake.js';
 import { type ConvexGeometry, createGeometry, ShapeKind } from '../shapes/geometry-2d.js';
 import { jointKeepsApart } from '../world/joint-no-collide.js';
 import type { PhysicsWorld } from '../world/options.js';
@@ -310,7 +310,8 @@ function collidePairs(world: PhysicsWorld, st: ShapeCollisionState): void {
       const sleeper = tA === BodyType.Sleeping ? ba : bb,
         other = sleeper === ba ? bb : ba,
         tOther = sleeper === ba ? tB : tA;
-      if (tOther === BodyType.Kinematic || cs.sleep.restTime[other] === 0) {
+      // (The broadphase pairs a sleeper only with a moving body: tOther is dynamic or kinematic.)
+      if (wakesSleeper(world, other, tOther)) {
         st.wakeNow.push(sleeper);
         continue;
       }

@@ -1,5 +1,5 @@
 import { hasComponent } from 'bitecs';
-import { wakeIsland3D } from '../islands/shapes-3d.js';
+import { wakeIslandForStep } from '../islands/step-wake.js';
 import { M00, M01, M02, M10, M11, M12, M20, M21, M22, MAT3_STRIDE } from '../math/mat3-layout.js';
 import { Shape3DKind, type Shape3DStore, shapes3DOf } from '../shapes/store-3d.js';
 import type { PhysicsWorld } from '../world/options.js';
@@ -27,7 +27,7 @@ import { BodyType } from './state.js';
  * - Filtering as in 2D: shapes of one body never collide; a pair collides when each one's category
  *   meets the other's mask, unless both share a non-zero group (> 0 always, < 0 never); pairs of which
  *   neither body is dynamic are skipped; sensors push nothing.
- * - Sleeping (islands/shapes-3d.ts): a sleeping body takes part as static; one that a moving or
+ * - Sleeping (islands/sleep.ts, islands/step-wake.ts): a sleeping body takes part as static; one that a moving or
  *   kinematic body's manifold reaches wakes with its island, and the step's pairs are found again.
  * - Speculative contacts (Catto, GDC 2013): a point is kept if its separation is below the speculative
  *   distance plus what the bodies' speeds close in one step, so a fast body is stopped at the surface
@@ -64,7 +64,7 @@ export function shape3DCollisionSystem(world: PhysicsWorld): void {
     pairs(world, s, st);
     if (wakes.count === 0 || pass >= 8) break;
     let woken = 0;
-    for (let i = 0; i < wakes.count; i++) woken += wakeIsland3D(world, wakes.list[i]!);
+    for (let i = 0; i < wakes.count; i++) woken += wakeIslandForStep(world, wakes.list[i]!);
     if (woken === 0) break;
   }
   // The contact count of the step's statistics: the ball contacts of this step (their buffer, which the

@@ -430,7 +430,6 @@ function markStepWritten(cs: CollisionState): void {
     'lastCount',
     'bodyMark',
     'anyMoving',
-    'sleepList',
   ]);
   const scratch = st.scratch;
   markWritable(scratch, Object.keys(scratch) as (keyof typeof scratch & string)[]);

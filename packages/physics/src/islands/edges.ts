@@ -1,4 +1,5 @@
 import { hasComponent } from 'bitecs';
+import { contact3DStateOf } from '../collision/manifolds-3d.js';
 import { BodyType } from '../collision/state.js';
 import { JointType } from '../world/joint-store-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
@@ -75,36 +76,43 @@ export function addIslandEdge(e: IslandEdges, a: number, b: number, flags: numbe
 }
 
 /**
- * Adds the ball contacts' edges to `e`, in 2D and 3D: a ball contact that carried a normal impulse
- * this step supports its bodies, and joins them when ball meets ball.
+ * The 3D joints' edges (joints/store-3d.ts addJointEdges3D), handed over by `install3D` when a program
+ * first makes a 3D shape or joint (the joint store sits above this module); nothing until then.
+ */
+let jointEdges3D: ((world: PhysicsWorld, e: IslandEdges) => void) | null = null;
+
+/**
+ * Hands the island graph the 3D joints' edges (called by install3D; the function serves every world).
  * @category Sleep
  */
-export function addBallEdges(world: PhysicsWorld, e: IslandEdges): void {
-  const rows = world.collision.cache.rows;
+export function setJointEdges3D(add: (world: PhysicsWorld, e: IslandEdges) => void): void {
+  jointEdges3D = add;
+}
+
+/**
+ * Adds every contact's and joint's edge of this step to `e`, in 2D and 3D: each contact (ball row, 2D
+ * or 3D manifold) that carried a normal impulse supports its bodies and, unless a ball meets static
+ * geometry, joins them; each joint is a `JOINT` edge, supporting when it carried a load (a pendulum at
+ * rest hangs on its pin), `MOUSE` for a mouse joint.
+ * @category Sleep
+ */
+export function addIslandEdges(world: PhysicsWorld, e: IslandEdges): void {
   const F = EdgeFlag;
+  const rows = world.collision.cache.rows;
   for (let i = 0; i < rows.count; i++) {
     if (rows.normalImpulse[i]! <= 0) continue;
     addIslandEdge(e, rows.a[i]!, rows.b[i]!, rows.kind[i] === 0 ? F.SUPPORTS | F.JOINS : F.SUPPORTS);
   }
-}
-
-/**
- * Adds the 2D shapes' and joints' edges to `e`: 2D shape manifolds any of whose points carried a
- * normal impulse this step (joining), and 2D joints (a joint that carried force supports its bodies:
- * a pendulum at rest hangs on its pin).
- * @category Sleep
- */
-export function addIslandEdges2D(world: PhysicsWorld, e: IslandEdges): void {
-  const F = EdgeFlag;
-  const st = world.collision.shapes;
-  if (st.active) {
-    const m = st.previous; // this step's rows (finishManifolds made them the cache)
-    for (let i = 0, n = m.count; i < n; i++) {
-      let pushed = false;
-      for (let p = 0, k = m.pointCount[i]!; p < k; p++) if (m.normalImpulse[2 * i + p]! > 0) pushed = true;
-      if (pushed) addIslandEdge(e, m.bodyA[i]!, m.bodyB[i]!, F.SUPPORTS | F.JOINS);
-    }
+  if (world.dimensions === 3) {
+    const m = contact3DStateOf(world)?.current;
+    if (m !== undefined) addManifoldEdges(e, m.bodyA, m.bodyB, m.points, m.carried, 4, m.count);
+    jointEdges3D?.(world, e);
+    return;
   }
+  const st = world.collision.shapes;
+  // The 2D manifolds: this step's rows (finishManifolds made them the cache).
+  if (st.active)
+    addManifoldEdges(e, st.previous.bodyA, st.previous.bodyB, st.previous.pointCount, st.previous.normalImpulse, 2, st.previous.count);
   if (world.joints.attached.length === 0) return;
   const J = world.components.Joint;
   const joints = query(world, [J]);
@@ -112,6 +120,26 @@ export function addIslandEdges2D(world: PhysicsWorld, e: IslandEdges): void {
     const j = joints[i]!;
     const flags = F.JOINT | (J.force[j]! > 0 ? F.SUPPORTS : 0) | (J.type[j] === JointType.Mouse ? F.MOUSE : 0);
     addIslandEdge(e, J.a[j]!, J.b[j]!, flags);
+  }
+}
+
+/**
+ * Adds the supporting, joining edge of each of the first `n` manifolds (bodies A[i], B[i]) one of
+ * whose `points[i]` points (`stride` a manifold in `pushed`) pushed: `pushed` > 0 there.
+ */
+function addManifoldEdges(
+  e: IslandEdges,
+  A: Int32Array,
+  B: Int32Array,
+  points: ArrayLike<number>,
+  pushed: ArrayLike<number>,
+  stride: number,
+  n: number,
+): void {
+  for (let i = 0; i < n; i++) {
+    let any = false;
+    for (let p = 0, k = points[i]!; p < k; p++) if (pushed[stride * i + p]! > 0) any = true;
+    if (any) addIslandEdge(e, A[i]!, B[i]!, EdgeFlag.SUPPORTS | EdgeFlag.JOINS);
   }
 }
 

@@ -1,13 +1,14 @@
 import { addComponent, hasComponent, removeComponent } from 'bitecs';
 import { keepSleepingManifolds } from '../collision/dormant-manifolds-2d.js';
+import { contact3DStateOf } from '../collision/manifolds-3d.js';
+import { shapes3DOf } from '../shapes/store-3d.js';
 import { ecsOf } from '../world/ecs-internals.js';
 import { resolveKind } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { Not, query } from '../world/query.js';
 import type { SleepTerms } from '../world/scratch.js';
 import {
-  addBallEdges,
-  addIslandEdges2D,
+  addIslandEdges,
   emptyIslandEdges,
   findRoot,
   joinContactEdges,
@@ -16,7 +17,6 @@ import {
   pushedSleepers2D,
   resetJoinedParents,
 } from './edges.js';
-import { addIslandEdges3D, wakeTouching3D, withShape3DBodies } from './hooks-3d.js';
 
 /**
  * Sleeping islands (after Box2D v3's island sleep; Catto, "Solver2D", 2024): a resting pile stops
@@ -143,6 +143,7 @@ function sleepTerms(world: PhysicsWorld): SleepTerms {
     t = {
       balls: [c.Position, c.Velocity, c.Ball, c.Force, Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)],
       shaped: [c.Position, c.Velocity, c.Shape, c.Force, Not(c.Ball), Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)],
+      shaped3D: [c.Position, c.Velocity, c.Force, Not(c.Ball), Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)],
       awake: [[c.DrivingForce], [c.RandomForce], [c.Thrust]],
       spring: [c.Spring],
       sleeping: [c.Sleeping],
@@ -167,7 +168,7 @@ export function sleepSystem(world: PhysicsWorld): void {
     return;
   }
   const terms = sleepTerms(world);
-  const bodies = withShape3DBodies(world, withShapeBodies(world, query(world, terms.balls)));
+  const bodies = sleepCandidates(world, terms);
   const n = bodies.length;
   const rest = sl.restTime,
     parent = sl.parent,
@@ -185,9 +186,7 @@ export function sleepSystem(world: PhysicsWorld): void {
   if (world.dimensions === 2) wakeIslandsOf(world, pushedSleepers2D(world));
   // The island graph of this step: every contact and joint, from every store (islands/edges.ts).
   const edges = emptyIslandEdges();
-  addBallEdges(world, edges);
-  if (world.dimensions === 2) addIslandEdges2D(world, edges);
-  else addIslandEdges3D(world, edges);
+  addIslandEdges(world, edges);
   // Support: a body rests only while some contact or joint pushed it this step.
   const stamp = ++sl.stamp,
     supported = sl.supported;
@@ -279,26 +278,39 @@ function fallAsleep(world: PhysicsWorld, bodies: ArrayLike<number>): void {
   if (world.dimensions === 2) keepSleepingManifolds(world);
 }
 
+/** sleepCandidates' reused list. Scratch, not world state. */
+const candidates = { list: new Uint32Array(0) };
+const NONE: readonly number[] = [];
+
 /**
- * The bodies that may fall asleep this step: `balls` (islands/sleep.ts's query of awake dynamic balls) plus
- * the awake dynamic bodies carrying a shape. Returns `balls` itself when the world has no shapes;
- * otherwise a view of a reused array (valid until the next call).
+ * The bodies that may fall asleep this step, every collider alike: the awake dynamic balls, then the
+ * awake dynamic bodies carrying a 2D shape and no ball, then (in 3D) those carrying a 3D shape and no
+ * ball. Returns the balls' query itself when the world has no shapes; otherwise a view of a reused
+ * array (valid until the next call).
  */
-function withShapeBodies(world: PhysicsWorld, balls: ArrayLike<number>): ArrayLike<number> {
-  const st = world.collision.shapes;
-  if (!st.active) return balls;
-  const shaped = query(world, sleepTerms(world).shaped);
-  const n = balls.length + shaped.length;
-  if (st.sleepList.length < n) st.sleepList = new Uint32Array(Math.max(n, 2 * st.sleepList.length));
-  const out = st.sleepList;
-  for (let i = 0; i < balls.length; i++) out[i] = balls[i]!;
-  for (let i = 0; i < shaped.length; i++) out[balls.length + i] = shaped[i]!;
-  return out.subarray(0, n);
+function sleepCandidates(world: PhysicsWorld, terms: SleepTerms): ArrayLike<number> {
+  const balls = query(world, terms.balls);
+  const flat = world.collision.shapes.active;
+  const s = world.dimensions === 3 ? shapes3DOf(world) : undefined;
+  const solid = s?.active === true;
+  if (!flat && !solid) return balls;
+  const shaped: ArrayLike<number> = flat ? query(world, terms.shaped) : NONE,
+    shaped3D: ArrayLike<number> = solid ? query(world, terms.shaped3D) : NONE;
+  const n = balls.length + shaped.length + shaped3D.length;
+  if (candidates.list.length < n) candidates.list = new Uint32Array(Math.max(n, 2 * candidates.list.length));
+  const out = candidates.list;
+  out.set(balls);
+  out.set(shaped, balls.length);
+  let k = balls.length + shaped.length;
+  const first = s?.first;
+  for (let i = 0; i < shaped3D.length; i++) if (first![shaped3D[i]!] !== 0) out[k++] = shaped3D[i]!;
+  return out.subarray(0, k);
 }
 
 /**
  * Removal hook: a body removed from a sleeping pile wakes its island; an awake one wakes the islands of
- * the sleeping bodies it touched in the last step.
+ * the sleeping bodies it touched in the last step, through any contact store (ball rows, 2D and 3D
+ * manifolds) alike.
  * @category Collision
  */
 export function wakeTouching(world: PhysicsWorld, eid: number): void {
@@ -309,7 +321,6 @@ export function wakeTouching(world: PhysicsWorld, eid: number): void {
     wakeIsland(world, eid);
     return;
   }
-  wakeTouching3D(world, eid);
   const rows = cs.cache.rows;
   for (let i = 0; i < rows.count; i++) {
     const a = rows.a[i]!,
@@ -320,5 +331,22 @@ export function wakeTouching(world: PhysicsWorld, eid: number): void {
     for (const other of [a, b]) {
       if (other !== 0 && other !== eid && hasComponent(world, other, c.Sleeping)) wakeIsland(world, other);
     }
+  }
+  // The manifolds' rows of the last step: in 2D finishManifolds made them `previous`.
+  const flat = cs.shapes.previous;
+  if (cs.shapes.active) wakePartners(world, flat.bodyA, flat.bodyB, flat.count, eid);
+  const m = world.dimensions === 3 ? contact3DStateOf(world)?.current : undefined;
+  if (m !== undefined) wakePartners(world, m.bodyA, m.bodyB, m.count, eid);
+}
+
+/** Wakes the island of each sleeping partner of body `eid` among the first `n` body pairs (A[i], B[i]) of a manifold store. */
+function wakePartners(world: PhysicsWorld, A: Int32Array, B: Int32Array, n: number, eid: number): void {
+  const sleeping = world.components.Sleeping;
+  for (let i = 0; i < n; i++) {
+    const a = A[i]!,
+      b = B[i]!;
+    if (a !== eid && b !== eid) continue;
+    const other = a === eid ? b : a;
+    if (other !== 0 && hasComponent(world, other, sleeping)) wakeIsland(world, other);
   }
 }

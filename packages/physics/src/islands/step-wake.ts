@@ -1,4 +1,5 @@
 import { hasComponent, removeComponent } from 'bitecs';
+import { BodyType } from '../collision/state.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
 
@@ -40,4 +41,19 @@ export function wakeIslandForStep(world: PhysicsWorld, e: number): number {
     P.z[b] = P.z[b]! + g[2]! * f;
   }
   return list.length;
+}
+
+/**
+ * Whether body `other` (of type `t`) wakes a sleeping body whose manifold with it has least separation
+ * `gap` (m, < 0: overlap): it is kinematic, or dynamic and not resting (its rest time is 0), and it can
+ * close the gap this step (`gap <= closing`, `closing` m: what its speed and gravity cover in the
+ * step). A mover that is only within the speculative distance leaves the sleeper asleep: it meets it
+ * as static geometry (a speculative row that cannot close), and the next step looks again. Waking on
+ * mere proximity had a settling pile's sleeping islands woken by a rocking neighbour 0.1 m away about
+ * every other step (each wake also re-runs the step's broadphase), and restarted their rest time.
+ * @category Collision
+ */
+export function wakesSleeper(world: PhysicsWorld, other: number, t: number, gap = -Infinity, closing = 0): boolean {
+  if (!(gap <= closing)) return false;
+  return t === BodyType.Kinematic || (t === BodyType.Dynamic && world.collision.sleep.restTime[other] === 0);
 }

@@ -166,6 +166,8 @@ export interface SleepTerms {
   balls: object[];
   /** Awake dynamic bodies with a 2D shape and no ball. */
   shaped: object[];
+  /** Awake dynamic bodies that are not balls (those with a 3D shape are the candidates). */
+  shaped3D: object[];
   /** Each component that keeps its body awake (time-varying forces), alone. */
   awake: object[][];
   spring: object[];
