@@ -72,15 +72,20 @@ function foldConstantModules(): Plugin {
  * files. Browser files run one at a time anyway (test/browser/harness.ts takes a lock: pages side by
  * side in one software-rendered Chromium ran about four times slower each), so a worker that picked
  * one early would wait for the lock instead of running headless files. With BITPHYSICS_TEST_ORDER=reverse
- * the headless files run in the opposite order: the second `node` lane of `npm test` (scripts/test.mjs)
- * takes the files the first lane would reach last, and the two meet in the middle.
+ * the headless files and the browser files each run in the opposite order: the second `node` or
+ * `browser` lane of `npm test` (scripts/test.mjs) takes the files the first lane would reach last, and
+ * the two meet in the middle.
  */
 class HeadlessFirst extends BaseSequencer {
   override async sort(files: TestSpecification[]): Promise<TestSpecification[]> {
     const sorted = await super.sort(files);
     const headless = sorted.filter((f) => f.project.name !== 'browser');
-    if (process.env.BITPHYSICS_TEST_ORDER === 'reverse') headless.reverse();
-    return [...headless, ...sorted.filter((f) => f.project.name === 'browser')];
+    const browser = sorted.filter((f) => f.project.name === 'browser');
+    if (process.env.BITPHYSICS_TEST_ORDER === 'reverse') {
+      headless.reverse();
+      browser.reverse();
+    }
+    return [...headless, ...browser];
   }
 }
 
@@ -92,9 +97,10 @@ class HeadlessFirst extends BaseSequencer {
 // `browser` (test/browser's pages). The browser project's global setup builds and serves the site
 // once and starts one Chromium that test/browser's files share, one file at a time. `npm test`
 // (scripts/test.mjs) runs the two projects in two vitest processes at once, one file at a time each
-// on two cores (vitest's default: cores - 1 workers), and a second `node` process on the headless
-// files still waiting when the browser lane is done; a plain `npx vitest run` runs both projects in
-// one process, headless files first.
+// on two cores (vitest's default: cores - 1 workers), then a second `browser` process (its own
+// Chromium) on the browser files still waiting when the node lane is done, or a second `node` process
+// on the headless files still waiting when the browser lane is done; a plain `npx vitest run` runs
+// both projects in one process, headless files first.
 
 export default defineConfig({
   plugins: [foldConstantModules()],
@@ -142,6 +148,9 @@ export default defineConfig({
           isolate: false,
           // A file's beforeAll may wait for the browser file before it (the lock in ./harness).
           hookTimeout: 600_000,
+          // vitest's runner, which also claims each file as it starts, so that the two browser lanes of
+          // `npm test` (scripts/test.mjs) run every file once between them.
+          runner: './scripts/test-claims.mjs',
           // One more try for a failed browser test, kept as a safety net. Every page shares one
           // software-rendered GPU process (SwiftShader). The known causes of first-attempt failures
           // are handled where they arise: pages pace their frames to the GPU (packages/game-kit/src/frame-pacer.ts),

@@ -1,14 +1,18 @@
 // `npm test` after the type-check: the headless tests (vitest project `node`) and the browser tests
 // (project `browser`) in two vitest processes at the same time, so a machine with two cores runs
-// both lanes at once: the browser files run one at a time (test/browser/harness.ts holds a lock; pages
-// side by side in one software-rendered Chromium ran about four times slower each) and would
-// otherwise leave the second core idle. When the browser lane is done and headless files are still
-// waiting, a second `node` lane takes them from the other end of the list (BITPHYSICS_TEST_ORDER=reverse
-// in vitest.config.ts) so that the core the browser lane leaves does not idle either: both node lanes
-// claim each file as it starts (scripts/test-claims.mjs), a file runs in one lane, and the other
-// reports it as skipped. Each line of output is prefixed with its lane; the exit code is non-zero if
-// any lane fails. Arguments are passed to the vitest runs; with arguments (a filter, say) there is no
-// second node lane.
+// both lanes at once: the browser files run one at a time in a lane (test/browser/harness.ts holds a
+// lock; pages side by side in one software-rendered Chromium ran about four times slower each) and
+// would otherwise leave the second core idle. Every lane claims each file as it starts
+// (scripts/test-claims.mjs), so that two lanes of a project can share one list of files: a file runs
+// in one lane, and the other reports it as skipped. When the node lane is done and browser files are
+// still waiting, a second browser lane (`browser-2`: a Chromium and a lane lock of its own) takes them
+// from the other end of the list (BITPHYSICS_TEST_ORDER=reverse in vitest.config.ts), so that the core
+// the node lane leaves does not idle; when the browser lane is done first and headless files are still
+// waiting, a second `node` lane does the same with those. The second browser lane runs only with
+// BITPHYSICS_BROWSER_LANES=2, off by default until a full run on an unloaded two-core machine shows
+// two Chromiums finishing the browser files sooner than one. Each line of output is prefixed with its
+// lane; the exit code is non-zero if any lane fails. Arguments are passed to the vitest runs; with
+// arguments (a filter, say) there is no second lane.
 import { spawn } from 'node:child_process';
 import { mkdtempSync, readdirSync, readFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
@@ -22,6 +26,12 @@ const extra = process.argv.slice(2);
 
 /** Fewest waiting headless files worth a second node lane (its start costs a few seconds of imports). */
 const SECOND_LANE_MIN_FILES = 4;
+
+/**
+ * Fewest waiting browser files worth a second browser lane (its start costs a Chromium launch and a
+ * few seconds of imports, and the file the first lane is running meanwhile shares the cores with it).
+ */
+const SECOND_BROWSER_LANE_MIN_FILES = 3;
 
 /**
  * Runs vitest on `args` as the lane `name`, its output prefixed with the name; resolves with its exit
@@ -41,30 +51,58 @@ function lane(name, args, env = {}) {
   });
 }
 
-/** The node project's test files (vitest.config.ts: every .test.ts file under test/ but test/browser/), from the root. */
-function headlessFiles() {
+/** Every .test.ts file under test/, from the root. */
+function testFiles() {
   return readdirSync(join(root, 'test'), { recursive: true })
     .map((f) => `test/${String(f).replaceAll('\\', '/')}`)
-    .filter((f) => f.endsWith('.test.ts') && !f.startsWith('test/browser/'));
+    .filter((f) => f.endsWith('.test.ts'));
 }
+
+/** The browser project's test files (vitest.config.ts: every .test.ts file under test/browser/), from the root. */
+const isBrowserFile = (f) => f.startsWith('test/browser/');
 
 /** A claim folder's entry for a file (its path from the root), as scripts/test-claims.mjs names it. */
 const claimName = (file) => file.replaceAll('/', '__');
 
 const claims = mkdtempSync(join(tmpdir(), 'bitphysics-test-claims-'));
 const claimEnv = { BITPHYSICS_TEST_CLAIMS: claims };
+
+/** The files of `project` ('node' or 'browser') that no lane has started yet. */
+function waitingFiles(project) {
+  const claimed = new Set(readdirSync(claims));
+  return testFiles().filter((f) => isBrowserFile(f) === (project === 'browser') && !claimed.has(claimName(f)));
+}
+
 try {
-  const first = lane('node', ['--project', 'node', ...extra], { ...claimEnv, BITPHYSICS_TEST_LANE: 'node' });
   let nodeDone = false;
+  let browserDone = false;
+  const first = lane('node', ['--project', 'node', ...extra], { ...claimEnv, BITPHYSICS_TEST_LANE: 'node' });
+  const browser = lane('browser', ['--project', 'browser', ...extra], { ...claimEnv, BITPHYSICS_TEST_LANE: 'browser' });
   first.then(() => {
     nodeDone = true;
   });
-  const browser = lane('browser', ['--project', 'browser', ...extra]);
-  // The second node lane: once the browser lane is done, on the files no node lane has started.
+  browser.then(() => {
+    browserDone = true;
+  });
+  // The second browser lane: once the node lane is done, on the browser files no lane has started. Its
+  // global setup serves the site the first lane built (no site lock: that lane holds it) and launches
+  // its own Chromium; its files take their own lane lock (BITPHYSICS_BROWSER_LANE, test/browser/chromium.mjs).
+  const secondBrowser = first.then(() => {
+    if (browserDone || extra.length > 0 || process.env.BITPHYSICS_BROWSER_LANES !== '2') return 0;
+    const waiting = waitingFiles('browser');
+    if (waiting.length < SECOND_BROWSER_LANE_MIN_FILES) return 0;
+    return lane('browser-2', ['--project', 'browser', ...waiting], {
+      ...claimEnv,
+      BITPHYSICS_TEST_LANE: 'browser-2',
+      BITPHYSICS_TEST_ORDER: 'reverse',
+      BITPHYSICS_BROWSER_LANE: '2',
+      BITPHYSICS_SITE_LOCK: 'off',
+    });
+  });
+  // The second node lane: once the browser lane is done, on the headless files no lane has started.
   const second = browser.then(() => {
     if (nodeDone || extra.length > 0) return 0;
-    const claimed = new Set(readdirSync(claims));
-    const waiting = headlessFiles().filter((f) => !claimed.has(claimName(f)));
+    const waiting = waitingFiles('node');
     if (waiting.length < SECOND_LANE_MIN_FILES) return 0;
     return lane('node-2', ['--project', 'node', ...waiting], {
       ...claimEnv,
@@ -72,7 +110,7 @@ try {
       BITPHYSICS_TEST_ORDER: 'reverse',
     });
   });
-  const codes = { node: await first, browser: await browser, 'node-2': await second };
+  const codes = { node: await first, browser: await browser, 'node-2': await second, 'browser-2': await secondBrowser };
   const byLane = new Map();
   for (const entry of readdirSync(claims)) {
     const who = readFileSync(join(claims, entry), 'utf8');
@@ -81,6 +119,10 @@ try {
   if (byLane.has('node-2'))
     console.log(
       `headless files: ${byLane.get('node') ?? 0} in [node], ${byLane.get('node-2')} in [node-2] (each lane lists the other's as skipped)`,
+    );
+  if (byLane.has('browser-2'))
+    console.log(
+      `browser files: ${byLane.get('browser') ?? 0} in [browser], ${byLane.get('browser-2')} in [browser-2] (each lane lists the other's as skipped)`,
     );
   const failed = Object.keys(codes).filter((name) => codes[name] !== 0);
   console.log(failed.length === 0 ? 'all tests passed (node and browser)' : `failed: ${failed.join(', ')}`);

@@ -98,13 +98,18 @@ function pidAlive(pid) {
  * the holder (another test file or the thumbnail script) releases it; a lock whose process is gone
  * is taken over.
  * @param {{ timeoutMs?: number, name?: string }} [options] how long to wait, ms (default 110 s); which
- *   lock ('site' by default; the browser test files take 'browser-lane' to run one at a time).
+ *   lock ('site' by default; the browser test files take 'browser-lane' to run one at a time). In a
+ *   second browser lane of `npm test` (scripts/test.mjs: the environment variable
+ *   BITPHYSICS_BROWSER_LANE=<n>, with a Chromium of its own) 'browser-lane' is 'browser-lane-<n>', so
+ *   that the lanes' files run one at a time in each lane, not one at a time between them.
  * @returns {Promise<() => void>} a function that releases the lock (idempotent; also runs on exit).
  * @throws Error when the lock is still held after `timeoutMs`, naming the holder's pid.
  */
 export async function acquireSiteLock({ timeoutMs = 110_000, name = 'site' } = {}) {
   const key = createHash('sha1').update(repoRoot).digest('hex').slice(0, 12);
-  const dir = join(tmpdir(), `bitphysics-${name}-${key}.lock`);
+  const lane = process.env.BITPHYSICS_BROWSER_LANE;
+  const lockName = name === 'browser-lane' && lane ? `${name}-${lane}` : name;
+  const dir = join(tmpdir(), `bitphysics-${lockName}-${key}.lock`);
   const owner = join(dir, 'owner');
   const deadline = Date.now() + timeoutMs;
   for (;;) {
