@@ -624,7 +624,9 @@ function frameCamera(): void {
     wreck: levelEnded && shots.length > 0,
     zoomsIn: zoomsIn(),
   });
-  showLook(upright() && !levelEnded && !shotView && lv.castleMaxX + 0.8 > aimView().maxX);
+  // The look button while aiming where the aim view leaves part of the castle off the screen (not
+  // in the level's opening overview: the castle is in view there).
+  showLook(upright() && !levelEnded && !shotView && (shot === 'aim' || peeking) && lv.castleMaxX + 0.8 > aimView().maxX);
   const target = shot === 'castle' ? shotViewRect() : shot === 'follow' ? followView() : shot === 'overview' ? overview() : aimView();
   const size = `${cam.width}x${cam.height}`;
   const k = size === framedFor ? 0.1 : 1;
@@ -681,6 +683,9 @@ function showLook(visible: boolean): void {
   }
   if (visible && !lookBar.element.isConnected) pageLayout().stage.append(lookBar.element);
   else if (!visible && lookBar.element.isConnected) lookBar.element.remove();
+  // Over the card saying how to play while it shows (beside it, the button covered its end).
+  const bottom = `${14 + Math.round(hintReserve())}px`;
+  if (visible && lookBar.element.style.bottom !== bottom) lookBar.element.style.bottom = bottom;
 }
 framing = true;
 // Framed now, not at the first frame: the camera holds the aim view from the start.
