@@ -2034,6 +2034,11 @@ shell.expose({
   cameraSettled: (): boolean => cameraSettled,
   /** The view the camera heads for: 'overview', 'aim', 'follow' or 'castle' (camera.ts cameraShot). */
   cameraShot: (): CameraShot => shot,
+  /** Ends the level's opening overview as a first touch would, the camera jumping to the aim view (tests). */
+  skipOpening: (): void => {
+    touchedLevel = true;
+    framedFor = '';
+  },
   /** The level's tally now. */
   tally: (): Tally => tally(shell.world, lv),
   /** Shots left, and the thrown projectiles' handles. */
