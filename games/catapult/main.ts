@@ -16,6 +16,7 @@
 import {
   choiceParam,
   createActionButton,
+  createButtonBar,
   createPanel,
   flagParam,
   forEachImpact,
@@ -32,6 +33,7 @@ import { createReadout } from '@bitphysics/game-kit/lab-kit';
 import { createPauseOverlay, startPixiGame } from '@bitphysics/game-kit/pixi';
 import { contactEvents, createPhysicsWorld, isAlive, type PhysicsWorld, Rng, setGravity, slotOf, step, warmUp } from '@bitphysics/physics';
 import { Container, Graphics, Matrix, RenderTexture, Sprite, Text } from 'pixi.js';
+import { type CameraShot, cameraShot, UPRIGHT_WATCH, uprightAimSpan } from './camera';
 import { type DebrisKind, Effects } from './effects';
 import { CATAPULT, cupAt, drawBrick, drawCatapult, drawGlass, drawHill, drawMound, drawPit, drawStone, drawWood, mixColor } from './look';
 import {
@@ -434,6 +436,9 @@ shell.onWorldChange(() => {
   paint();
   shotView = false;
   framedFor = '';
+  levelStartedAt = shell.world.time;
+  touchedLevel = false;
+  peeking = false;
 });
 
 /**
@@ -450,13 +455,14 @@ shell.onWorldChange(() => {
  *
  * On an upright phone (a screen taller than wide) the camera frames the play for the tall screen,
  * the ground UPRIGHT_GROUND of the way up (the scene low in the screen, a strip of earth under it
- * for the card saying how to play and the next-level button): the aim view spans from behind the
- * catapult's stacked stones to just past the castle, so the player sees the catapult, the arc and
- * what it aims at together (no close-up of the castle: it would repeat what the field shows); the
- * shot view holds the castle and the rock; in between the camera follows the
- * stone: the view slides from the aim view to the shot view as the stone crosses the field (by the
- * farthest it got), keeping it in sight, and stays on the castle and the wreck until the next press
- * eases it back to the aim view.
+ * for the card saying how to play and the next-level button). Which view it heads for is decided in
+ * ./camera (cameraShot): the level opens on the overview (from behind the catapult's stacked stones
+ * to just past the castle) for INTRO_HOLD s or until the first press, so the player sees the target;
+ * then the aim view frames the catapult at AIM_PX_PER_M or more (uprightAimSpan; the castle off the
+ * screen on the far levels, the look button shows the overview while aiming); the shot view holds
+ * the castle and the rock; in between the camera follows the stone: the view slides from the aim
+ * view to the shot view as the stone crosses the field (by the farthest it got), keeping it in
+ * sight, and goes back to the aim view once the verdict has been read or at the next press.
  */
 const cameraView = { minX: -4, minY: -1, maxX: 30, maxY: 14 };
 /**
@@ -523,13 +529,20 @@ function viewFor(minX: number, maxX: number): View {
   const minY = Math.min(-1, floor, -(R * (maxX - minX)) / W, R > 0 && R < H ? -(R * top) / (H - R) : -1);
   return { minX, minY, maxX, maxY: Math.max(minY + height, top) };
 }
+/** The overview: the whole field on a wide screen; upright, the catapult and the whole castle it aims at. */
+function overview(): View {
+  return upright() ? uprightView(OVERVIEW_LEFT, lv.castleMaxX + 0.8, aimGround()) : aimView();
+}
 /** The right face of the rock behind the castle, m. */
 const rockRight = (): number => lv.castleMaxX + ROCK.gap + 2 * ROCK.hx;
 /** The aim view (see above). */
 function aimView(): View {
-  // Upright: the catapult and the whole castle it aims at (the catapult framed large with the
-  // castle off the screen showed a stranger the edge of a tower and not the target).
-  if (upright()) return uprightView(OVERVIEW_LEFT, lv.castleMaxX + 0.8, aimGround());
+  // Upright: the catapult large enough to aim with a finger (uprightAimSpan), and the castle too
+  // where it is near enough; the overview shows the whole castle at the level's start.
+  if (upright()) {
+    const [minX, maxX] = uprightAimSpan(OVERVIEW_LEFT, lv.castleMaxX + 0.8, renderer.camera.width);
+    return uprightView(minX, maxX, aimGround());
+  }
   // Room behind the catapult for its stones where the screen is wide enough.
   const behind = renderer.camera.width < NARROW ? 1.6 : 3.1;
   return viewFor(LAUNCH.x - behind, rockRight() + 0.6);
@@ -596,14 +609,25 @@ function followView(): View {
 }
 function frameCamera(): void {
   const cam = renderer.camera;
-  // Back to the aim view once the verdict has been up for VERDICT_READ seconds (or the level ended).
-  // Upright, the shot view stays until the next press: the castle and what the throw did to it show
-  // for as long as the player looks, and a press eases out to the overview to aim.
-  const read = shell.world.time - lastThrow.decidedAt > VERDICT_READ && !upright();
+  // Back to the aim view once the verdict has been up for VERDICT_READ seconds (upright UPRIGHT_WATCH:
+  // the castle is off the screen from there, and what fell is watched to the end) or the level ended,
+  // or at once when a press goes down to aim.
+  const read = shell.world.time - lastThrow.decidedAt > (upright() ? Math.max(VERDICT_READ, UPRIGHT_WATCH) : VERDICT_READ);
   if (shotView && lastThrow.verdict && (read || levelEnded)) shotView = false;
   // A level over: the wreck stays in view with its result (on a phone the shot view, not the catapult).
-  const wreck = levelEnded && shots.length > 0 && zoomsIn();
-  const target = wreck ? shotViewRect() : shotView && zoomsIn() ? followView() : aimView();
+  shot = cameraShot({
+    upright: upright(),
+    sinceStart: Math.max(0, shell.world.time - levelStartedAt),
+    touched: touchedLevel,
+    peeking,
+    shotView,
+    wreck: levelEnded && shots.length > 0,
+    zoomsIn: zoomsIn(),
+  });
+  // The look button while aiming where the aim view leaves part of the castle off the screen (not
+  // in the level's opening overview: the castle is in view there).
+  showLook(upright() && !levelEnded && !shotView && (shot === 'aim' || peeking) && lv.castleMaxX + 0.8 > aimView().maxX);
+  const target = shot === 'castle' ? shotViewRect() : shot === 'follow' ? followView() : shot === 'overview' ? overview() : aimView();
   const size = `${cam.width}x${cam.height}`;
   const k = size === framedFor ? 0.1 : 1;
   if (size !== framedFor) sizesFramed.add(size);
@@ -623,6 +647,46 @@ function frameCamera(): void {
 }
 /** Whether the camera is at rest (not panning or following): the cup stays where it is on screen. */
 let cameraSettled = false;
+/** The view the camera heads for (camera.ts cameraShot), decided at the last frame. */
+let shot: CameraShot = 'overview';
+/** World time the level (or its replay) started, s: upright, the overview shows for INTRO_HOLD after it. */
+let levelStartedAt = shell.world.time;
+/** Whether a press has gone down on the scene since the level started (it ends the opening overview). */
+let touchedLevel = false;
+/** Whether the player asked to look at the castle (the look button, upright only). */
+let peeking = false;
+/**
+ * Upright, a button at the bottom right that shows the whole field with the castle while aiming (the
+ * aim view frames the catapult large, the castle off the screen on the far levels), and back.
+ */
+const lookBar = createButtonBar(
+  [
+    {
+      label: 'Castle ▸',
+      onTap: () => {
+        peeking = !peeking;
+      },
+    },
+  ],
+  { label: 'look at the castle', touchOnly: false, parent: document.createElement('div') },
+);
+lookBar.element.remove();
+lookBar.element.dataset.hud = 'look';
+Object.assign(lookBar.element.style, { position: 'absolute', right: '10px', bottom: '14px', zIndex: '6' });
+/** Shows or hides the look button, its label saying where a tap goes. */
+function showLook(visible: boolean): void {
+  const b = lookBar.buttons[0]!;
+  const text = peeking ? '◂ Catapult' : 'Castle ▸';
+  if (b.textContent !== text) {
+    b.textContent = text;
+    b.setAttribute('aria-label', peeking ? 'look at the catapult' : 'look at the castle');
+  }
+  if (visible && !lookBar.element.isConnected) pageLayout().stage.append(lookBar.element);
+  else if (!visible && lookBar.element.isConnected) lookBar.element.remove();
+  // Over the card saying how to play while it shows (beside it, the button covered its end).
+  const bottom = `${14 + Math.round(hintReserve())}px`;
+  if (visible && lookBar.element.style.bottom !== bottom) lookBar.element.style.bottom = bottom;
+}
 framing = true;
 // Framed now, not at the first frame: the camera holds the aim view from the start.
 frameCamera();
@@ -660,6 +724,7 @@ app.canvas.addEventListener('pointerdown', (e) => {
   if (shell.paused || shotsLeft <= 0 || levelEnded || (e.pointerType === 'mouse' && e.button !== 0)) return;
   pointerOnCanvas(app.canvas, e, pointer);
   shotView = false;
+  touchedLevel = true;
   lastThrow.hidden = true;
   aim.active = true;
   aim.x0 = pointer.x;
@@ -729,6 +794,8 @@ function fire(dx: number, dy: number): number {
   lastThrow.power = Math.min(1, Math.hypot(dx, dy) / PULL.max);
   lastThrow.angle = (Math.atan2(vy, vx) * 180) / Math.PI;
   shotView = true;
+  touchedLevel = true;
+  peeking = false;
   arm.firedAt = shell.world.time;
   arm.velocity = -(8 + 22 * Math.min(1, Math.hypot(dx, dy) / PULL.max));
   sound.launch(Math.min(1, Math.hypot(dx, dy) / PULL.max));
@@ -1965,6 +2032,13 @@ shell.expose({
   lastLaunch: (): [number, number] => (lastThrow.body ? [lastThrow.vx, lastThrow.vy] : [0, 0]),
   /** Whether the camera is at rest (tests aim at the cup once it is). */
   cameraSettled: (): boolean => cameraSettled,
+  /** The view the camera heads for: 'overview', 'aim', 'follow' or 'castle' (camera.ts cameraShot). */
+  cameraShot: (): CameraShot => shot,
+  /** Ends the level's opening overview as a first touch would, the camera jumping to the aim view (tests). */
+  skipOpening: (): void => {
+    touchedLevel = true;
+    framedFor = '';
+  },
   /** The level's tally now. */
   tally: (): Tally => tally(shell.world, lv),
   /** Shots left, and the thrown projectiles' handles. */

@@ -143,6 +143,13 @@ const SPAN = 2.4;
 const PLANK = { hx: SPAN / 2 + 0.2, hy: 0.12 } as const;
 /** From one tower's middle to the next one's, m (room for a bridge plank between their roofs). */
 const TOWER_PITCH = SPAN + 1.2;
+/**
+ * The fortress's (level 9's) extra room between each outer tower and the bridged pair, m, on top of
+ * TOWER_PITCH: room for an earth bank between them.
+ */
+const FORT_GAP = 0.8;
+/** Height of the fortress's earth banks either side of its keep, m (half its towers' height). */
+const FORT_BANK = 2.5;
 /** A stone block, half extents (m). */
 const BRICK = { hx: 0.4, hy: 0.25 } as const;
 /** A glass pane (a post of glass), half extents (m). */
@@ -481,13 +488,23 @@ const LEVELS: ReadonlyArray<{ name: string; shots: number; build: (b: Builder) =
   },
   {
     name: 'Fortress',
-    // Four towers of four storeys, the outer two on stone bases, bridged; heavy stones on top.
+    // Four towers of four storeys, the outer two on stone bases, bridged; heavy stones on top. The
+    // bridged pair (the keep) stands behind earth banks FORT_BANK m high, one between it and each
+    // outer tower (FORT_GAP further out to make room): a tower knocked over falls on a bank, not on
+    // the next tower, so no single throw brings half the fortress down (with the towers one pitch
+    // apart one lob at 30 degrees and 80 % power did) and clearing it takes throws at each tower.
     shots: 5,
     build: (b) => {
       const x0 = 11 + b.rng.range(-1, 1);
+      // The banks fill the room between an outer tower's stone base (BASE_HALF either side of its
+      // middle) and the keep's planks (SPAN / 2 + 0.2), less 0.1 m either side.
+      const BASE_HALF = 4 * BRICK.hx;
+      const bank = TOWER_PITCH + FORT_GAP - BASE_HALF - (SPAN / 2 + 0.2) - 0.2;
       let last: Roof | null = null;
       for (let t = 0; t < 4; t++) {
-        const cx = x0 + t * TOWER_PITCH;
+        const cx = x0 + t * TOWER_PITCH + (t === 0 ? -FORT_GAP : t === 3 ? FORT_GAP : 0);
+        if (t === 0) hill(b, cx + BASE_HALF + 0.1, cx + BASE_HALF + 0.1 + bank, FORT_BANK);
+        if (t === 3) hill(b, cx - BASE_HALF - 0.1 - bank, cx - BASE_HALF - 0.1, FORT_BANK);
         const base = t === 0 || t === 3 ? brickBlock(b, cx, 0, 4, 2, BRICK) : 0;
         // The middle two (on the ground, four storeys) are bridged: one stone each, in the middle,
         // and one on the bridge (a pair's inner stone, 0.46 m in radius, would stand on the

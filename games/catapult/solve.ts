@@ -39,8 +39,10 @@ export const LEVEL_SOLUTIONS: ReadonlyArray<readonly Throw[]> = [
   [{ angle: 20, power: 0.7 }],
   [{ angle: 15, power: 1 }],
   [
-    { angle: 20, power: 1 },
-    { angle: 25, power: 0.9 },
+    { angle: 15, power: 0.75 },
+    { angle: 20, power: 0.65 },
+    { angle: 25, power: 0.95 },
+    { angle: 25, power: 1 },
   ],
 ];
 
