@@ -6,7 +6,8 @@
  * to the side of the pad from which a roll brings that face up), each pad smaller than the one before;
  * stars by moves (★★★ in the round's par, scene.ts `padMovePar` per pad, plus PAR_SLACK[0] or fewer). A click or tap on the floor pushes the cube towards that point, just hard enough that
  * sliding on a face it stops there (`slideSpeed`); a click on the cube flicks it away from the point
- * clicked at a fixed speed; W A S D roll it over its edges in the screen's directions and Q E turn it
+ * clicked at a fixed speed (a finger: a drag from the cube flicks it the way the finger went, a plain
+ * tap on it does nothing, controls.ts `touchPress`); W A S D roll it over its edges in the screen's directions and Q E turn it
  * (a couple of forces from `applyForceAtPoint` in a forces-stage system, which stops pushing once it
  * turns at ROLL_SPIN_MAX); Space makes it jump. A pad reached chimes, flashes and pops its number.
  * Arrows show its angular momentum L (`spinAngularMomentum`, yellow) and angular velocity w (magenta)
@@ -76,6 +77,7 @@ import {
   SRGBColorSpace,
   Vector3,
 } from 'three';
+import { cubeControls, TAP_SLOP, touchPress } from './controls';
 import { bedSnap } from './roll-puzzle';
 import {
   buildRotatingCube,
@@ -114,9 +116,8 @@ import {
 } from './scene';
 import { SPIN_HOLD, SPIN_RATE, SPIN_STAR_TIMES, SPIN_TARGETS, SPIN_TOLERANCE, SpinChallenge, spinTargets } from './spin-challenge';
 
-/** A press that moves more than this, CSS px, is a camera drag, not a click (a finger: TAP_SLOP, fingers wobble more). */
+/** A mouse press that moves more than this, CSS px, is a camera drag, not a click (a finger: controls.ts TAP_SLOP). */
 const CLICK_SLOP = 5;
-const TAP_SLOP = 12;
 /** Room mode: a push lands within this of its target, m, for a "perfect" (the pad's pop says so). */
 const PERFECT = 0.25;
 /** Room mode: the cube's centre height resting on a face, m (a push aims from there). */
@@ -334,22 +335,8 @@ const game = await startThreeGame({
         if (a === handles.body || b === handles.body) sound.impact(impulse, 'wood', { threshold: 0.4, loud: 6 });
       });
   },
-  // The legend and the phone's touch card: a page opened on the pivot speaks of the pivot (no floor there).
-  controls: [
-    params.mode === 'room'
-      ? { keys: 'Click', action: 'the floor: push the cube there; the cube: flick it away', touch: 'Tap' }
-      : { keys: 'Click', action: 'a face: knock it there (an impulse)', touch: 'Tap' },
-    params.mode === 'room'
-      ? { keys: 'W A S D', action: 'roll the cube (pivot: pitch, yaw)', touch: '▲ ◀ ▼ ▶' }
-      : { keys: 'W S, A D', action: "torque about the screen's axes (pitch, yaw)", touch: 'Pitch ▲▼ Yaw ◀▶' },
-    params.mode === 'room'
-      ? { keys: 'Q E', action: 'turn it a quarter (pivot: roll)', touch: '⟲ ⟳' }
-      : { keys: 'Q E', action: 'torque about the view (roll)', touch: 'Roll ⟲ ⟳' },
-    { keys: 'X', action: 'stop spinning', touch: 'Stop' },
-    ...(params.mode === 'room' ? [{ keys: 'Space', action: 'jump (room mode)', touch: 'Jump' }] : []),
-    { keys: 'M', action: 'mode: room / cube on a pivot / Dzhanibekov flip', touch: 'Mode' },
-    ...ORBIT_CONTROLS,
-  ],
+  // The legend and the phone's touch card speak of the mode shown (`setMode` swaps the legend).
+  controls: [...cubeControls(params.mode, pageLayout().touch()), ...ORBIT_CONTROLS],
   keys: [
     { key: 'x', label: 'stop', action: () => stopSpin() },
     { key: 'm', label: 'mode', action: () => setMode(MODES[(MODES.indexOf(params.mode) + 1) % MODES.length]!) },
@@ -1055,18 +1042,39 @@ const canvas = app.canvas;
 const ndc: [number, number] = [0, 0];
 let downX = 0,
   downY = 0,
-  downId = -1;
+  downId = -1,
+  /** Whether the finger's press (room mode) went down on the cube: a drag from there flicks it, the camera stays. */
+  downOnCube = false;
 canvas.addEventListener('pointerdown', (event) => {
   if (event.button !== 0) return;
   downId = event.pointerId;
   downX = event.clientX;
   downY = event.clientY;
+  downOnCube = false;
+  if (event.pointerType !== 'mouse' && params.mode === 'room') {
+    app.toNdc(event.clientX, event.clientY, ndc);
+    downOnCube = aimAt(ndc[0], ndc[1])?.kind === 'cube';
+    if (downOnCube && app.controls) app.controls.enabled = false;
+  }
+});
+canvas.addEventListener('pointercancel', (event) => {
+  if (event.pointerId !== downId) return;
+  downId = -1;
+  if (app.controls) app.controls.enabled = true;
 });
 canvas.addEventListener('pointerup', (event) => {
   if (event.pointerId !== downId) return;
   downId = -1;
-  if (Math.hypot(event.clientX - downX, event.clientY - downY) > (event.pointerType === 'mouse' ? CLICK_SLOP : TAP_SLOP)) return;
+  if (app.controls) app.controls.enabled = true;
+  const moved = Math.hypot(event.clientX - downX, event.clientY - downY);
+  if (event.pointerType !== 'mouse' && params.mode === 'room') {
+    const does = touchPress(downOnCube, moved);
+    if (does === 'flick') flickAlong(downX, downY, event.clientX, event.clientY);
+    if (does !== 'push') return;
+  } else if (moved > (event.pointerType === 'mouse' ? CLICK_SLOP : TAP_SLOP)) return;
   app.toNdc(event.clientX, event.clientY, ndc);
+  // A finger's tap on the floor right beside the cube can still land on it: only a drag flicks it.
+  if (event.pointerType !== 'mouse' && params.mode === 'room' && aimAt(ndc[0], ndc[1])?.kind === 'cube') return;
   // After a push its aim shows briefly (until the cube gets there, or a roll), then only a new hover shows one.
   if (clickAt(ndc[0], ndc[1])) {
     hover = false;
@@ -1131,26 +1139,9 @@ function aimAt(ndcX: number, ndcY: number): Push | null {
   span[2] = rayDir.z * 200;
   const hit = rayCastAll3D(shell.world, origin, span).find((h) => h.body === e);
   if (hit) {
-    let hx = cx - hit.x,
+    const hx = cx - hit.x,
       hz = cz - hit.z;
-    if (Math.hypot(hx, hz) <= 0.1) {
-      hx = rayDir.x;
-      hz = rayDir.z;
-    }
-    const l = Math.hypot(hx, hz);
-    if (!(l > 1e-9)) return null;
-    const speed = (params.impulse * ROOM_PUSH) / shell.world.components.Mass.value[e]!;
-    Object.assign(aim, { kind: 'cube', dx: hx / l, dz: hz / l, speed });
-    const d = speed ** 2 / (2 * ROOM_FRICTION * 9.81);
-    const ux = cx + aim.dx * d,
-      uz = cz + aim.dz * d;
-    const [x, z] = snapToBed(ux, uz);
-    const dist = Math.hypot(x - cx, z - cz);
-    // A flick that would stop in the lit pad's bed stops at its edge instead (scene.ts PAD_BEDS).
-    if ((x !== ux || z !== uz) && dist > 0.05) Object.assign(aim, { dx: (x - cx) / dist, dz: (z - cz) / dist, speed: slideSpeed(dist) });
-    aim.x = x;
-    aim.z = z;
-    return aim;
+    return Math.hypot(hx, hz) <= 0.1 ? flickAim(rayDir.x, rayDir.z) : flickAim(hx, hz);
   }
   // The floor point: where the ray falls to the height of the cube's centre (so a click on the pad's
   // drawing aims where the cube's centre should stop), kept inside the room.
@@ -1165,6 +1156,53 @@ function aimAt(ndcX: number, ndcY: number): Push | null {
   if (!(dist > 0.05)) return null;
   Object.assign(aim, { kind: 'floor', dx: (x - cx) / dist, dz: (z - cz) / dist, speed: slideSpeed(dist), x, z });
   return aim;
+}
+
+/**
+ * Room mode: a flick of the cube along level direction (hx, hz) (any length), into `aim`: at
+ * params.impulse ROOM_PUSH / m m/s, or slower to stop at the lit pad's bed's edge.
+ * @returns `aim`, or null when (hx, hz) has no direction.
+ */
+function flickAim(hx: number, hz: number): Push | null {
+  const P = shell.world.components.Position,
+    e = handles.body;
+  const cx = P.x[e]!,
+    cz = P.z[e]!;
+  const l = Math.hypot(hx, hz);
+  if (!(l > 1e-9)) return null;
+  const speed = (params.impulse * ROOM_PUSH) / shell.world.components.Mass.value[e]!;
+  Object.assign(aim, { kind: 'cube', dx: hx / l, dz: hz / l, speed });
+  const d = speed ** 2 / (2 * ROOM_FRICTION * 9.81);
+  const ux = cx + aim.dx * d,
+    uz = cz + aim.dz * d;
+  const [x, z] = snapToBed(ux, uz);
+  const dist = Math.hypot(x - cx, z - cz);
+  // A flick that would stop in the lit pad's bed stops at its edge instead (scene.ts PAD_BEDS).
+  if ((x !== ux || z !== uz) && dist > 0.05) Object.assign(aim, { dx: (x - cx) / dist, dz: (z - cz) / dist, speed: slideSpeed(dist) });
+  aim.x = x;
+  aim.z = z;
+  return aim;
+}
+
+/** Where the ray through CSS pixel (clientX, clientY) meets the level of the cube's centre, [x, z] m, or null (at or above the horizon). */
+function levelPoint(clientX: number, clientY: number): [number, number] | null {
+  app.toNdc(clientX, clientY, ndc);
+  rayDir.set(ndc[0], ndc[1], 0.5).unproject(app.camera).sub(app.camera.position).normalize();
+  if (!(rayDir.y < -1e-6)) return null;
+  const cam = app.camera.position;
+  const t = (REST_HEIGHT - cam.y) / rayDir.y;
+  return [cam.x + rayDir.x * t, cam.z + rayDir.z * t];
+}
+
+/** Room mode, a finger's drag from the cube, CSS px (x0, y0) to (x1, y1): flicks the cube the way the finger went across the floor. */
+function flickAlong(x0: number, y0: number, x1: number, y1: number): void {
+  const a = levelPoint(x0, y0),
+    b = levelPoint(x1, y1);
+  const p = a && b ? flickAim(b[0] - a[0], b[1] - a[1]) : null;
+  if (!p) return;
+  pushCube(p);
+  hover = false;
+  aimUntil = performance.now() + 600;
 }
 
 /**
@@ -1188,15 +1226,7 @@ function clickAt(ndcX: number, ndcY: number): boolean {
   if (params.mode === 'room') {
     const p = aimAt(ndcX, ndcY);
     if (!p) return false;
-    const c = shell.world.components,
-      m = c.Mass.value[e]!;
-    pads.start(shell.world.time);
-    // A slide keeps the top face: the next pad that wants a face must be rolled onto after it.
-    pads.slid();
-    applyImpulse(shell.world, e, [m * (p.dx * p.speed - c.Velocity.x[e]!), 0, m * (p.dz * p.speed - c.Velocity.z[e]!)]);
-    lastPush = { ...p };
-    sound.launch(0.25 + (0.5 * p.speed) / 7);
-    flash = 12;
+    pushCube(p);
     return true;
   }
   const hit = renderer.pick(ndcX, ndcY, app.camera);
@@ -1209,6 +1239,20 @@ function clickAt(ndcX: number, ndcY: number): boolean {
   return true;
 }
 let flash = 0;
+
+/** Room mode: gives the cube push `p`, an impulse at its centre of mass that sets its horizontal velocity to p's (a move of the round). */
+function pushCube(p: Push): void {
+  const e = handles.body;
+  const c = shell.world.components,
+    m = c.Mass.value[e]!;
+  pads.start(shell.world.time);
+  // A slide keeps the top face: the next pad that wants a face must be rolled onto after it.
+  pads.slid();
+  applyImpulse(shell.world, e, [m * (p.dx * p.speed - c.Velocity.x[e]!), 0, m * (p.dz * p.speed - c.Velocity.z[e]!)]);
+  lastPush = { ...p };
+  sound.launch(0.25 + (0.5 * p.speed) / 7);
+  flash = 12;
+}
 
 /** Zeroes the body's angular velocity (X key, panel button). */
 function stopSpin(): void {
@@ -1224,6 +1268,10 @@ function setMode(mode: Mode): void {
   params.mode = mode;
   params.showL = params.showOmega = params.axes = mode !== 'room';
   labelTurnButtons();
+  const onTouch = pageLayout().touch();
+  shell.hud.setControls([...cubeControls(mode, onTouch), ...ORBIT_CONTROLS]);
+  // On a phone the kit shows its touch card again with new controls: the player switching modes has played already.
+  if (onTouch) document.querySelector('[data-hud="touch-hint"]')?.remove();
   panel.refresh();
   shell.reset();
   const v = viewOf(mode);
@@ -1459,7 +1507,7 @@ function updateStatus(wx: number, wy: number, wz: number): void {
  * A cross of six small squares over the stage's top left corner: in the middle the face on top now,
  * around it the face each roll key would bring on top (▲/W: the face towards the viewer, ▼/S: the one
  * facing away, ◀/A: the one on the right, ▶/D: the one on the left: a cube rolls over the edge it
- * tips towards), and under ▼ the face underneath (two rolls away). The face the lit pad wants wears
+ * tips towards), and under ▼ the face underneath, captioned '2 rolls' (two rolls the same way). The face the lit pad wants wears
  * a ring, so the player plans the rolls before making them. Room mode only.
  */
 const net = document.createElement('div');
@@ -1482,7 +1530,7 @@ const NET_CELLS = [
   { name: 'top', row: 3, col: 2, key: '' },
   { name: 'd', row: 3, col: 3, key: touch ? '▶' : 'D' },
   { name: 's', row: 4, col: 2, key: touch ? '▼' : 'S' },
-  { name: 'bottom', row: 5, col: 2, key: '2×' },
+  { name: 'bottom', row: 5, col: 2, key: touch ? '▼▼' : 'S S' },
 ] as const;
 const netCells = NET_CELLS.map((c) => {
   const cell = document.createElement('div');
@@ -1501,6 +1549,12 @@ const netCells = NET_CELLS.map((c) => {
   return cell;
 });
 {
+  // Beside the bottom face: it takes two rolls the same way to bring up.
+  const caption = document.createElement('div');
+  caption.textContent = '2 rolls';
+  caption.style.cssText =
+    'grid-row: 5; grid-column: 3; display: flex; align-items: center; font: 600 9px/1.1 system-ui, sans-serif; color: #c8d0dc';
+  net.append(caption);
   const stage = app.canvas.parentElement ?? document.body;
   stage.append(net);
 }

@@ -78,9 +78,11 @@ import { bodyHalfExtents, cheaperMaterial, dirtTexture, GroundShadows, pieceGeom
 import {
   aimAt,
   BALL_RADIUS,
+  BALL_TONNES,
   buildWreckingBall,
   CHAIN_LINKS,
   clearTarget,
+  FULL_POWER_SHOWN,
   fallenCount,
   HANG,
   HIT_SPEED,
@@ -88,6 +90,7 @@ import {
   JIB_HEIGHT,
   LINK_RADIUS,
   pieceOnSwing,
+  powerWords,
   RADIUS_RANGE,
   type SwingRequest,
   scorePieces,
@@ -130,7 +133,8 @@ const SMALL_SCREEN = Math.min(window.innerWidth, window.innerHeight) < 600;
 const params = {
   level: numberParam('level', { default: 1, min: 1, max: 20, integer: true }),
   seed: seedParam(),
-  ballWeight: 1,
+  /** The ball's mass shown in the panel, t (BALL_TONNES by default: the ball's own density). */
+  ballTonnes: BALL_TONNES,
   debug: flagParam('debug'),
   quality: askedQuality ?? (SMALL_SCREEN && isSoftwareWebGL() ? 'lite' : 'full'),
   nextLevel: () => nextLevel(),
@@ -175,7 +179,12 @@ function createWorld(): PhysicsWorld {
   const world = createPhysicsWorld(wreckingBallWorldOptions());
   // The jib starts between the structures, its ball clear of them (one hanging in front of the
   // first level's plank stack hid half of it on a phone).
-  handles = buildWreckingBall(world, { level: params.level, seed: params.seed, ballWeight: params.ballWeight, openStart: true });
+  handles = buildWreckingBall(world, {
+    level: params.level,
+    seed: params.seed,
+    ballWeight: params.ballTonnes / BALL_TONNES,
+    openStart: true,
+  });
   levelScore = 0;
   cleared = false;
   reachedAt = -1;
@@ -1960,19 +1969,19 @@ function watchFrameRate(): void {
 const panel = createPanel(
   params,
   [
-    { type: 'slider', key: 'level', label: 'level (rebuilds)', min: 1, max: 20, step: 1, onRelease: true, onChange: () => shell.reset() },
-    { type: 'slider', key: 'seed', label: 'seed (rebuilds)', min: 1, max: 999, step: 1, onRelease: true, onChange: () => shell.reset() },
+    { type: 'slider', key: 'level', label: 'level (restarts)', min: 1, max: 20, step: 1, onRelease: true, onChange: () => shell.reset() },
+    { type: 'slider', key: 'seed', label: 'layout (restarts)', min: 1, max: 999, step: 1, onRelease: true, onChange: () => shell.reset() },
     {
       type: 'slider',
-      key: 'ballWeight',
-      label: 'ball (× 5.4 t)',
-      min: 0.1,
-      max: 3,
+      key: 'ballTonnes',
+      label: 'ball mass, t (restarts)',
+      min: 0.5,
+      max: 16,
       step: 0.1,
       onRelease: true,
       onChange: () => shell.reset(),
     },
-    { type: 'checkbox', key: 'debug', label: withKey('debug layer', 'G'), onChange: (v) => setDebug(v === true) },
+    { type: 'checkbox', key: 'debug', label: withKey('show physics', 'G'), onChange: (v) => setDebug(v === true) },
     {
       type: 'choice',
       key: 'quality',
@@ -2189,9 +2198,9 @@ function hintText(): string {
   }
   if (aiming.piece !== 0 && aiming.dragged && onRun()) return 'The ball is on its swing: wait till it is done, then aim again';
   if (aiming.piece !== 0 && aiming.dragged && handles.controls.moves.length > 0 && aimed !== 0)
-    return `Winding up… let go to re-aim this swing (no swing used): power ${Math.round(100 * aiming.power)} %`;
+    return `Winding up… let go to re-aim this swing (no swing used): ${powerWords(aiming.power)}`;
   if (aiming.piece !== 0 && aiming.dragged)
-    return `Let go to swing along the arrow: power ${Math.round(100 * aiming.power)} %${aiming.power >= 1 ? ' (full)' : ', pull longer for more'}`;
+    return `Let go to swing along the arrow: ${powerWords(aiming.power)}${aiming.power >= FULL_POWER_SHOWN ? '' : ', pull longer for more'}`;
   if (reachedAt >= 0) return '';
   if (outOfSwings()) return '';
   if (shell.world.time < notice.until) return notice.text;

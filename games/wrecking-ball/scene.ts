@@ -76,6 +76,11 @@ export const SWAY_DAMPING_TIME = 4;
 /** The ball: radius, m, and density, kg/m^3 (steel). */
 export const BALL_RADIUS = 0.55;
 export const BALL_DENSITY = 7800;
+/**
+ * The ball's mass at BALL_DENSITY, t, to 0.1 t (4/3 pi BALL_RADIUS^3 BALL_DENSITY = 5.44 t shows as
+ * 5.4): the settings panel's ball mass slider reads in t and scales the density by its value over this.
+ */
+export const BALL_TONNES = Math.round(((4 / 3) * Math.PI * BALL_RADIUS ** 3 * BALL_DENSITY) / 100) / 10;
 /** Density of the pieces, kg/m^3 (light wood). */
 export const PIECE_DENSITY = 450;
 /** A piece has fallen when its centre is this far below its start, m, or it has tipped past TIP_ANGLE (rad). */
@@ -512,6 +517,19 @@ export const MAX_OFFSET = 3;
 export interface SwingRequest {
   direction: number;
   speed: number;
+}
+/**
+ * The least pull power, as a share of a full pull in [0, 1], that the aiming hint calls full: any
+ * power that shows as 99 % or more, so the hint never asks for a longer pull it can barely give.
+ */
+export const FULL_POWER_SHOWN = 0.985;
+/**
+ * The aiming hint's words for a pull of power `power` (share of a full pull, [0, 1]): 'full power'
+ * from FULL_POWER_SHOWN up, else 'power N %' with N the rounded percentage.
+ */
+export function powerWords(power: number): string {
+  if (!Number.isFinite(power) || power < 0 || power > 1) throw new Error(`powerWords: power must be in [0, 1], got ${power}`);
+  return power >= FULL_POWER_SHOWN ? 'full power' : `power ${Math.round(100 * power)} %`;
 }
 /**
  * Seconds of plan cost per radian an approach strays from the player's direction (`aimAt` with a

@@ -491,7 +491,7 @@ describe('phone controls', () => {
     await g.close();
   });
 
-  it('rotating cube: the pad goal is on screen, and a tap on the cube flicks it away from the finger', async () => {
+  it('rotating cube: the pad goal is on screen; a plain tap on the cube does nothing, a drag from it flicks it that way', async () => {
     // A fixed layout (?seed=11: the first pad at x = 1.5 m, z = 0.2 m), room to roll left: a random one may put the pad by a wall.
     const g = await h.openGame('rotating-cube', { ...PHONE, query: { seed: 11 } });
     await g.waitFor(() => document.querySelector('[data-hud="challenge"]')?.textContent?.includes('glowing pad') ?? false, null);
@@ -527,7 +527,16 @@ describe('phone controls', () => {
     const vx0 = await read(g, 'world.components.Velocity.x[window.game.body()]');
     expect(Math.abs(vx0)).toBeLessThan(0.05);
     await g.page.touchscreen.tap(at.x, at.y);
-    // Away from the finger: towards +x, at about J / m = 3 N s / 1 kg times cos 27 degrees.
+    // A plain tap (easily an accident beside the pads): no push, no move counted.
+    await g.frames(2);
+    expect(Math.abs(await read(g, 'world.components.Velocity.x[window.game.body()]'))).toBeLessThan(0.05);
+    expect(await read(g, 'challenge().moves')).toBe(0);
+    // A drag from the cube to the screen's right (towards +x here): a flick that way, at about J / m = 3 N s / 1 kg.
+    await touchPath(
+      g.page,
+      Array.from({ length: 7 }, (_, i): [number, number] => [at.x + 12 * i, at.y]),
+      50,
+    );
     await g.waitFor(() => {
       const game = window.game as unknown as { body(): number; world: { components: { Velocity: { x: Float64Array } } } };
       return game.world.components.Velocity.x[game.body()]! > 1;

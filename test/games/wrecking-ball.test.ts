@@ -19,6 +19,7 @@ import { ScoreTally, TALLY_TIME } from '../../games/wrecking-ball/effects';
 import {
   aimAt,
   BALL_RADIUS,
+  BALL_TONNES,
   buildWreckingBall,
   clearShare,
   clearTarget,
@@ -27,6 +28,7 @@ import {
   HIT_SPEED,
   HOOK_RANGE,
   pieceOnSwing,
+  powerWords,
   SLEW_RATE,
   STRIKE_SHARE,
   scorePieces,
@@ -531,5 +533,34 @@ describe('wrecking-ball: a drag-aimed swing', () => {
       expect(swing.toHit, `level ${level}`).toBeLessThan(4);
       expect(swing.off, `level ${level}`).toBeLessThan((30 * Math.PI) / 180);
     }
+  });
+});
+
+describe('wrecking ball aiming hint', () => {
+  it('calls a pull full from 99 % shown, and asks no more of it; below, the rounded percentage', () => {
+    // Exact strings: what the player reads at each power.
+    expect(powerWords(1)).toBe('full power');
+    expect(powerWords(0.99)).toBe('full power');
+    expect(powerWords(0.985)).toBe('full power');
+    expect(powerWords(0.984)).toBe('power 98 %');
+    expect(powerWords(0.5)).toBe('power 50 %');
+    expect(powerWords(0.2)).toBe('power 20 %');
+    // No power below FULL_POWER_SHOWN reads as 99 % or 100 %.
+    for (let p = 0.2; p < 0.985; p += 0.001) expect(powerWords(p)).not.toMatch(/^power (99|100) %$/);
+    expect(() => powerWords(1.5)).toThrow(/powerWords: power/);
+    expect(() => powerWords(Number.NaN)).toThrow(/powerWords: power/);
+  });
+});
+
+describe('wrecking ball settings: ball mass in tonnes', () => {
+  it('BALL_TONNES is the built ball mass to 0.1 t, and the slider value over it scales the mass', () => {
+    for (const tonnes of [BALL_TONNES, 10.8]) {
+      const world = createPhysicsWorld(wreckingBallWorldOptions());
+      const h = buildWreckingBall(world, { ballWeight: tonnes / BALL_TONNES });
+      const kg = world.components.Mass.value[slotOf(h.ball)]!;
+      // The slider reads tonnes rounded to 0.1 t at the default: within 0.05 t of the body's mass, times the scale.
+      expect(Math.abs(kg / 1000 - tonnes)).toBeLessThan(0.05 * (tonnes / BALL_TONNES) + 1e-9);
+    }
+    expect(BALL_TONNES).toBe(5.4);
   });
 });

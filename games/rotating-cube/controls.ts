@@ -1,0 +1,51 @@
+/**
+ * The rotating cube's controls legend (and the phone's touch card) for each mode, in a player's
+ * words: in the room the keys roll the cube over an edge (W A S D) and turn it a quarter turn flat
+ * on the floor (Q E); on the pivot they push its spin about the screen's axes. The page swaps the
+ * legend when the mode changes (main.ts `setMode`).
+ */
+import type { ControlHint } from '@bitphysics/game-kit';
+import type { Mode } from './scene';
+
+/**
+ * The legend lines of `mode` ('room', 'cube' or 'flip'; the two pivot modes share theirs), before
+ * the camera's orbit lines. `touch`: whether the page runs on a touch screen, where a plain tap on
+ * the cube does nothing and a drag across it flicks it.
+ */
+export function cubeControls(mode: Mode, touch: boolean): ControlHint[] {
+  const room = mode === 'room';
+  return [
+    room
+      ? touch
+        ? { keys: 'Tap', action: 'the floor: slide the cube there; drag across the cube: flick it', touch: 'Tap' }
+        : { keys: 'Click', action: 'the floor: slide the cube there; the cube: flick it away', touch: 'Tap' }
+      : { keys: 'Click', action: 'a face: knock it there', touch: 'Tap' },
+    room
+      ? { keys: 'W A S D', action: 'roll the cube over an edge: away, left, toward you, right', touch: '▲ ◀ ▼ ▶' }
+      : { keys: 'W S, A D', action: 'spin it: tip it away or toward you (W S), turn it left or right (A D)', touch: 'Pitch ▲▼ Yaw ◀▶' },
+    room
+      ? { keys: 'Q E', action: 'turn it a quarter turn flat on the floor, left or right', touch: '⟲ ⟳' }
+      : { keys: 'Q E', action: 'spin it like a wheel facing you, left or right', touch: 'Roll ⟲ ⟳' },
+    { keys: 'X', action: 'stop spinning', touch: 'Stop' },
+    ...(room ? [{ keys: 'Space', action: 'jump', touch: 'Jump' }] : []),
+    { keys: 'M', action: 'mode: room / cube on a pivot / Dzhanibekov flip', touch: 'Mode' },
+  ];
+}
+
+/** A finger's press that moves more than this, CSS px, is a drag, not a tap (fingers wobble more than a mouse). */
+export const TAP_SLOP = 12;
+
+/**
+ * What a finger's press in the room does, from where it went down (`onCube`: on the cube) and how
+ * far it moved before it lifted (`movedPx`, CSS px, >= 0): 'flick' (a drag that started on the
+ * cube: the cube slides the way the finger went), 'push' (a tap on the floor: the cube slides
+ * there), 'none' (a plain tap on the cube, which beside the pads is easily an accident, or a drag
+ * from the floor, which turns the camera).
+ * @throws RangeError when movedPx is negative or not finite.
+ */
+export function touchPress(onCube: boolean, movedPx: number): 'flick' | 'push' | 'none' {
+  if (!(movedPx >= 0 && Number.isFinite(movedPx))) throw new RangeError(`touchPress: movedPx must be finite and >= 0, got ${movedPx}`);
+  const moved = movedPx > TAP_SLOP;
+  if (onCube) return moved ? 'flick' : 'none';
+  return moved ? 'none' : 'push';
+}

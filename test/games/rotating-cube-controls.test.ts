@@ -1,0 +1,44 @@
+/**
+ * rotating-cube's controls legend and a finger's press in the room (games/rotating-cube/controls.ts):
+ * the legend says what Q E do in each mode in plain words, and a plain tap on the cube does nothing
+ * while a drag from it flicks it.
+ */
+import { describe, expect, it } from 'vitest';
+import { cubeControls, TAP_SLOP, touchPress } from '../../games/rotating-cube/controls';
+
+const line = (mode: 'room' | 'cube' | 'flip', touch: boolean, keys: string) =>
+  cubeControls(mode, touch).find((c) => c.keys === keys)!.action;
+
+describe('rotating cube legend', () => {
+  it('room: Q E turn the cube flat on the floor (a turn about the vertical), W A S D roll it; no pivot jargon', () => {
+    expect(line('room', false, 'Q E')).toMatch(/quarter turn flat on the floor/);
+    expect(line('room', false, 'W A S D')).toMatch(/^roll the cube over an edge/);
+    for (const c of cubeControls('room', false)) expect(c.action).not.toMatch(/pivot:|pitch|yaw|\broll\)/);
+  });
+
+  it('pivot modes: Q E spin it like a wheel facing the player, W S tip it, A D turn it', () => {
+    for (const mode of ['cube', 'flip'] as const) {
+      expect(line(mode, false, 'Q E')).toMatch(/like a wheel facing you/);
+      expect(line(mode, false, 'W S, A D')).toMatch(/tip it .* \(W S\), turn it left or right \(A D\)/);
+      expect(cubeControls(mode, false).some((c) => c.keys === 'Space')).toBe(false);
+    }
+  });
+
+  it('on a touch screen the room legend says a drag across the cube flicks it', () => {
+    expect(line('room', true, 'Tap')).toMatch(/drag across the cube: flick it/);
+    expect(line('room', false, 'Click')).toMatch(/the cube: flick it away/);
+  });
+});
+
+describe('rotating cube: a finger in the room', () => {
+  it('a tap on the cube does nothing; a drag from it flicks; a tap on the floor pushes; a drag from the floor turns the camera', () => {
+    expect(touchPress(true, 0)).toBe('none');
+    expect(touchPress(true, TAP_SLOP)).toBe('none');
+    expect(touchPress(true, TAP_SLOP + 0.5)).toBe('flick');
+    expect(touchPress(true, 80)).toBe('flick');
+    expect(touchPress(false, 3)).toBe('push');
+    expect(touchPress(false, TAP_SLOP + 0.5)).toBe('none');
+    expect(() => touchPress(true, -1)).toThrow(/touchPress: movedPx/);
+    expect(() => touchPress(false, Number.NaN)).toThrow(/touchPress: movedPx/);
+  });
+});
