@@ -1,10 +1,10 @@
 import { existsSync, readFileSync } from 'node:fs';
-import { dirname } from 'node:path';
+import { dirname, resolve } from 'node:path';
 import * as esbuild from 'esbuild';
 import { defaultClientConditions, defaultServerConditions, type Plugin } from 'vite';
 import { defineConfig } from 'vitest/config';
 import { BaseSequencer, type TestSpecification } from 'vitest/node';
-import { inlineConstantModules, isConstantModule, isPackageSource, relativeImports } from './scripts/build.mjs';
+import { inlineConstantModules, isConstantModule } from './scripts/build.mjs';
 
 /**
  * Folds the layout constants into the package sources that import them, as the packages' dist/, the
@@ -12,8 +12,7 @@ import { inlineConstantModules, isConstantModule, isPackageSource, relativeImpor
  * runs each source as its own module and reads an imported constant as a property of the imported
  * module in every pass of a hot loop: with the solver's body-state offsets imported
  * (solver/body-state-layout.ts), test/physics/pile.test.ts took 75-85 s instead of 21 s. A source
- * that imports no constant module is left to Vite as it is. (The `node` project's files run on Node's
- * own loader, which folds them the same way: scripts/ts-hooks.mjs.)
+ * that imports no constant module is left to Vite as it is.
  */
 function foldConstantModules(): Plugin {
   const known = new Map<string, boolean>();
@@ -24,6 +23,10 @@ function foldConstantModules(): Plugin {
     known.set(file, v);
     return v;
   };
+  const packageSource = (id: string): boolean => /\/packages\/[^/]+\/src\/.*\.ts$/.test(id) && !id.endsWith('.d.ts');
+  /** The files `code` (the module `id`) imports by a relative path, as .ts paths. */
+  const relativeImports = (id: string, code: string): string[] =>
+    [...code.matchAll(/from\s+['"](\.{1,2}\/[^'"]+)['"]/g)].map((m) => resolve(dirname(id), m[1]!).replace(/\.js$/, '.ts'));
   return {
     name: 'fold-constant-modules',
     enforce: 'pre',
@@ -32,7 +35,7 @@ function foldConstantModules(): Plugin {
     // a folded module holds its constant modules' values, so a changed constant is a changed key.
     configureVitest({ experimental_defineCacheKeyGenerator }) {
       experimental_defineCacheKeyGenerator(({ id, sourceCode }) =>
-        isPackageSource(id)
+        packageSource(id)
           ? relativeImports(id, sourceCode)
               .map((f) => (existsSync(f) ? readFileSync(f, 'utf8') : ''))
               .join('\0')
@@ -40,7 +43,7 @@ function foldConstantModules(): Plugin {
       );
     },
     async transform(code, id) {
-      if (!isPackageSource(id)) return null;
+      if (!packageSource(id)) return null;
       const dir = dirname(id);
       const imports = relativeImports(id, code);
       if (!imports.some(constant)) return null;
@@ -99,9 +102,8 @@ export default defineConfig({
   ssr: { resolve: { conditions: ['bitphysics-source', ...defaultServerConditions] } },
   test: {
     // Transformed modules kept on disk (node_modules/.experimental-vitest-cache; `npx vitest
-    // --clearCache` empties it), so a vitest process reuses what an earlier one transformed: the
-    // `browser` project's files (the `node` project's load through Node's loader, below, transpiled
-    // afresh in each worker). Keyed on each file's text, the config and its
+    // --clearCache` empties it), so a vitest process reuses what an earlier one transformed: the second
+    // node lane of `npm test`, and every later run. Keyed on each file's text, the config and its
     // imports (vitest), and for the package sources the files they import (foldConstantModules).
     experimental: { fsModuleCache: true },
     pool: 'forks',
@@ -123,14 +125,6 @@ export default defineConfig({
           // vitest's runner, which also claims each file as it starts, so that the two node lanes of
           // `npm test` (scripts/test.mjs) run every file once between them.
           runner: './scripts/test-claims.mjs',
-          // Node's own `import` runs the files and what they import, TypeScript transpiled by esbuild
-          // (scripts/ts-hooks.mjs, registered in each worker by scripts/ts-register.mjs; the constant
-          // modules folded as foldConstantModules folds them), not Vite's module runner: under the
-          // runner every imported name is read as a property of its module's object, in every pass
-          // of a hot loop, and the physics steps slower. nodeLoader false: Vitest's own hooks for
-          // mocks need module.registerHooks (Node 22.15), and no headless file mocks a module.
-          experimental: { viteModuleRunner: false, nodeLoader: false },
-          execArgv: ['--import', './scripts/ts-register.mjs'],
         },
       },
       {

@@ -151,16 +151,6 @@ export async function buildBench() {
   });
 }
 
-/** Whether `file` (an absolute path) is a TypeScript source of a workspace package: packages/<name>/src/**.ts, not a .d.ts. */
-export function isPackageSource(file) {
-  return /\/packages\/[^/]+\/src\/.*\.ts$/.test(file) && !file.endsWith('.d.ts');
-}
-
-/** The files the module `code` at `file` (an absolute path) imports by a relative path, as absolute .ts paths. */
-export function relativeImports(file, code) {
-  return [...code.matchAll(/from\s+['"](\.{1,2}\/[^'"]+)['"]/g)].map((m) => resolve(dirname(file), m[1]).replace(/\.js$/, '.ts'));
-}
-
 /**
  * Whether the TypeScript module `file` holds only numeric constants (`export const A = 0, B = 1;`
  * and comments): a layout of offsets, safe to copy into every module that imports it.

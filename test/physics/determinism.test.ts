@@ -35,7 +35,7 @@ test('the same scene in two separate processes: identical hashes after 1,000 ste
     entry,
     [
       `import { stateHash, stepMany } from '@bitphysics/physics';`,
-      `import { mixedScene } from ${JSON.stringify(join(import.meta.dirname, 'snapshot-scenes.ts'))};`,
+      `import { mixedScene } from ${JSON.stringify(join(__dirname, 'snapshot-scenes.ts'))};`,
       `const world = mixedScene();`,
       `stepMany(world, ${STEPS});`,
       `console.log(stateHash(world));`,
@@ -50,7 +50,7 @@ test('the same scene in two separate processes: identical hashes after 1,000 ste
     format: 'esm',
     logLevel: 'silent',
     conditions: ['bitphysics-source'],
-    nodePaths: [join(import.meta.dirname, '../../node_modules')],
+    nodePaths: [join(__dirname, '../../node_modules')],
   });
   const run = promisify(execFile);
   const [one, two] = await Promise.all([run(process.execPath, [out]), run(process.execPath, [out])]);

@@ -176,7 +176,7 @@ test('in a fresh process: threads > 1 without enableThreads() throws an Error th
   // ball) run before the ball rows exist, then with them installed: the same state to the bit. spheres-in-box (3D balls, no 3D shape or joint) runs first on the
   // rows' stand-ins, then again with install3D: the same state to the bit (stateHash).
   const dir = mkdtempSync(join(tmpdir(), 'bitphysics-no-threads-'));
-  const src = resolve(import.meta.dirname, '../../packages/physics/src');
+  const src = resolve(__dirname, '../../packages/physics/src');
   const entry = join(dir, 'run.ts');
   writeFileSync(
     entry,
@@ -219,7 +219,7 @@ test('in a fresh process: threads > 1 without enableThreads() throws an Error th
     format: 'esm',
     logLevel: 'silent',
     conditions: ['bitphysics-source'],
-    nodePaths: [join(import.meta.dirname, '../../node_modules')],
+    nodePaths: [join(__dirname, '../../node_modules')],
   });
   const { stdout } = await promisify(execFile)(process.execPath, [out], { timeout: 60_000 });
   expect(stdout.trim().split('\n')).toEqual([
@@ -238,7 +238,7 @@ test('in a fresh process: threads > 1 without enableThreads() throws an Error th
     metafile: true,
     external: ['bitecs'],
     conditions: ['bitphysics-source'],
-    nodePaths: [join(import.meta.dirname, '../../node_modules')],
+    nodePaths: [join(__dirname, '../../node_modules')],
   });
   const kept = Object.entries(Object.values(plain.metafile.outputs)[0]!.inputs).filter(([, v]) => v.bytesInOutput > 0);
   expect(kept.map(([f]) => f).filter((f) => /threads\/(worker-source|worker-main|kernel-table)\.ts$/.test(f))).toEqual([]);

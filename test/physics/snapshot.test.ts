@@ -346,7 +346,7 @@ describe('snapshot captures every piece of state', () => {
     expect(keyedByWorld("type W = PhysicsWorld;\ntype K = W['collision'];\nconst t = new WeakMap<K, object>();")).toBe(true);
     expect(keyedByWorld("import type { Components as C } from './components.js';\nconst t = new WeakMap<C, object>();")).toBe(true);
     expect(keyedByWorld('type System = (world: PhysicsWorld) => void;\nconst marks = new WeakMap<System, number>();')).toBe(false);
-    const root = join(import.meta.dirname, '../../packages/physics/src');
+    const root = join(__dirname, '../../packages/physics/src');
     const files: string[] = [];
     const walk = (dir: string) => {
       for (const f of readdirSync(dir)) {

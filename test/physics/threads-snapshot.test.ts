@@ -90,7 +90,7 @@ test('a worker that dies costs no error: the run finishes on the calling thread,
   // In a child process (its workers are killed). Before, the run after a worker died threw (and before
   // that blocked forever); a dead worker never claims its range, so the calling thread runs it.
   const dir = mkdtempSync(join(tmpdir(), 'bitphysics-dead-worker-'));
-  const src = resolve(import.meta.dirname, '../../packages/physics/src');
+  const src = resolve(__dirname, '../../packages/physics/src');
   const entry = join(dir, 'run.ts');
   writeFileSync(
     entry,
@@ -176,7 +176,7 @@ console.log(JSON.stringify(results));
     format: 'esm',
     logLevel: 'silent',
     conditions: ['bitphysics-source'],
-    nodePaths: [join(import.meta.dirname, '../../node_modules')],
+    nodePaths: [join(__dirname, '../../node_modules')],
   });
   // A run that blocks forever hits the timeout (execFile then rejects).
   const { stdout } = await promisify(execFile)(process.execPath, [out], { timeout: 30_000 });

@@ -240,7 +240,7 @@ test('a Node process with a threaded world exits by itself when its script ends,
     format: 'esm',
     logLevel: 'silent',
     conditions: ['bitphysics-source'],
-    nodePaths: [join(import.meta.dirname, '../../node_modules')],
+    nodePaths: [join(__dirname, '../../node_modules')],
   });
   // A process held open by its workers would hit the timeout (execFile then rejects).
   const { stdout } = await promisify(execFile)(process.execPath, [out], { timeout: 30_000 });

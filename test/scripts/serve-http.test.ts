@@ -22,7 +22,7 @@ interface ServeModule {
   docsBuild: { building: boolean; since: number; error: string | null };
 }
 
-const serve = (await import(pathToFileURL(join(import.meta.dirname, '../../scripts/serve.mjs')).href)) as ServeModule;
+const serve = (await import(pathToFileURL(join(__dirname, '../../scripts/serve.mjs')).href)) as ServeModule;
 
 /** One raw request (node:http: any method, any Host header); resolves with status, headers and body. */
 function send(
