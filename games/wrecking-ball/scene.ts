@@ -605,15 +605,24 @@ function pendulumAxis(
   return [p, b, v];
 }
 
-/** Solves the 3 x 3 system m x = r (m by rows), or null when it is singular. */
+/** The determinant of the 3 x 3 matrix with rows (a, b, c). */
+function det3(a0: number, a1: number, a2: number, b0: number, b1: number, b2: number, c0: number, c1: number, c2: number): number {
+  return a0 * (b1 * c2 - b2 * c1) - a1 * (b0 * c2 - b2 * c0) + a2 * (b0 * c1 - b1 * c0);
+}
+
+/** Solves the 3 x 3 system m x = r (m by rows) by Cramer's rule, or null when it is singular. */
 function solve3(m: number[][], r: number[]): number[] | null {
-  const det = (x: number[][]): number =>
-    x[0]![0]! * (x[1]![1]! * x[2]![2]! - x[1]![2]! * x[2]![1]!) -
-    x[0]![1]! * (x[1]![0]! * x[2]![2]! - x[1]![2]! * x[2]![0]!) +
-    x[0]![2]! * (x[1]![0]! * x[2]![1]! - x[1]![1]! * x[2]![0]!);
-  const d = det(m);
+  const [a0, a1, a2] = m[0]!,
+    [b0, b1, b2] = m[1]!,
+    [c0, c1, c2] = m[2]!;
+  const [r0, r1, r2] = r;
+  const d = det3(a0!, a1!, a2!, b0!, b1!, b2!, c0!, c1!, c2!);
   if (Math.abs(d) < 1e-12) return null;
-  return [0, 1, 2].map((j) => det(m.map((row, i) => row.map((x, k) => (k === j ? r[i]! : x)))) / d);
+  return [
+    det3(r0!, a1!, a2!, r1!, b1!, b2!, r2!, c1!, c2!) / d,
+    det3(a0!, r0!, a2!, b0!, r1!, b2!, c0!, r2!, c2!) / d,
+    det3(a0!, a1!, r0!, b0!, b1!, r1!, c0!, c1!, r2!) / d,
+  ];
 }
 
 /**
@@ -684,10 +693,20 @@ interface Legs {
 }
 
 /**
- * The legs that take the hook from `s` to (ex, ez) over `steps` while the ball comes there too,
- * moving at (wx, wz) m/s: a 3 x 3 linear system per axis on `pendulumAxis`'s responses. Null when singular.
+ * What the legs of a plan from `s` over `steps` solve against, whatever the arrival asked: the
+ * 3 x 3 matrix (by rows) of the final hook position, ball position and ball velocity per unit leg
+ * velocity (`pendulumAxis` from rest, one leg at 1 m/s), and the final [p, b, v] of each axis with
+ * the hook held still. The model is linear, so the legs for any arrival follow from these.
  */
-function solveLegs(s: PlanStart, ex: number, ez: number, wx: number, wz: number, steps: number[]): Legs | null {
+interface LegBasis {
+  steps: number[];
+  m: number[][];
+  fx: [number, number, number];
+  fz: [number, number, number];
+}
+
+/** The LegBasis of a plan from `s` over `steps` (see LegBasis). */
+function legBasis(s: PlanStart, steps: number[]): LegBasis {
   const unit = [0, 1, 2].map((i) =>
     pendulumAxis(
       0,
@@ -697,9 +716,20 @@ function solveLegs(s: PlanStart, ex: number, ez: number, wx: number, wz: number,
       steps,
     ),
   );
-  const m = [unit.map((r) => r[0]), unit.map((r) => r[1]), unit.map((r) => r[2])];
-  const fx = pendulumAxis(s.bx, s.vx, s.hx, [0, 0, 0], steps),
-    fz = pendulumAxis(s.bz, s.vz, s.hz, [0, 0, 0], steps);
+  return {
+    steps,
+    m: [unit.map((r) => r[0]), unit.map((r) => r[1]), unit.map((r) => r[2])],
+    fx: pendulumAxis(s.bx, s.vx, s.hx, [0, 0, 0], steps),
+    fz: pendulumAxis(s.bz, s.vz, s.hz, [0, 0, 0], steps),
+  };
+}
+
+/**
+ * The legs that take the hook to (ex, ez) over the basis' steps while the ball comes there too,
+ * moving at (wx, wz) m/s: a 3 x 3 linear system per axis on the basis (`legBasis`). Null when singular.
+ */
+function solveLegs(basis: LegBasis, ex: number, ez: number, wx: number, wz: number): Legs | null {
+  const { m, fx, fz, steps } = basis;
   const ux = solve3(m, [ex - fx[0], ex - fx[1], wx - fx[2]]),
     uz = solve3(m, [ez - fz[0], ez - fz[1], wz - fz[2]]);
   return ux === null || uz === null ? null : { ux, uz, steps };
@@ -733,19 +763,30 @@ function legsFeasible(hx: number, hz: number, legs: Legs, rate: number): boolean
  * pendulum is linear: past MAX_OFFSET the chain's ball rises and lags and the plan misses).
  */
 function offsetWithin(s: PlanStart, legs: Legs, limit: number): boolean {
-  const bx: number[] = [],
-    bz: number[] = [];
-  pendulumAxis(s.bx, s.vx, s.hx, legs.ux, legs.steps, bx);
-  pendulumAxis(s.bz, s.vz, s.hz, legs.uz, legs.steps, bz);
-  let px = s.hx,
+  // pendulumAxis on both axes in step, the ball checked against the hook every fourth step.
+  const w2 = (2 * Math.PI) ** 2 / SWING_PERIOD ** 2,
+    c = 1 / SWAY_DAMPING_TIME,
+    h = PLAN_H;
+  let bx = s.bx,
+    vx = s.vx,
+    px = s.hx,
+    bz = s.bz,
+    vz = s.vz,
     pz = s.hz,
     k = 0;
-  for (let i = 0; i < legs.steps.length; i++)
+  for (let i = 0; i < legs.steps.length; i++) {
+    const ux = legs.ux[i]!,
+      uz = legs.uz[i]!;
     for (let j = 0; j < legs.steps[i]!; j++, k++) {
-      px += legs.ux[i]! * PLAN_H;
-      pz += legs.uz[i]! * PLAN_H;
-      if (k % 4 === 0 && Math.hypot(bx[k]! - px, bz[k]! - pz) > limit) return false;
+      px += ux * h;
+      vx += (w2 * (px - bx) - c * vx) * h;
+      bx += vx * h;
+      pz += uz * h;
+      vz += (w2 * (pz - bz) - c * vz) * h;
+      bz += vz * h;
+      if (k % 4 === 0 && Math.hypot(bx - px, bz - pz) > limit) return false;
     }
+  }
   return true;
 }
 
@@ -893,11 +934,14 @@ export function aimAt(world: PhysicsWorld, h: WreckingBallHandles, piece: number
   for (let time = PLAN_TIME_RANGE[0]; time <= PLAN_TIME_RANGE[1] + 1e-9 && left > 0; time += PLAN_TIME_STEP) {
     if (time < hoistTime) continue;
     for (const split of LEG_SPLITS) {
-      const steps = split.map((f) => Math.round((f * time) / PLAN_H));
+      const basis = legBasis(
+        start,
+        split.map((f) => Math.round((f * time) / PLAN_H)),
+      );
       for (let d = 0; d < APPROACH_DIRECTIONS; d++) {
         if (best[d] !== null) continue;
         const t = (2 * Math.PI * d) / APPROACH_DIRECTIONS;
-        const legs = solveLegs(start, ex, ez, speed * Math.cos(t), speed * Math.sin(t), steps);
+        const legs = solveLegs(basis, ex, ez, speed * Math.cos(t), speed * Math.sin(t));
         if (legs === null || !legsFeasible(start.hx, start.hz, legs, PLAN_RATE) || !offsetWithin(start, legs, limit)) continue;
         best[d] = legs;
         left--;
@@ -1026,7 +1070,7 @@ function replan(world: PhysicsWorld, h: WreckingBallHandles, aim: SwingAim): voi
   for (const split of LEG_SPLITS) {
     const steps = split.map((f) => Math.round(f * left));
     steps[2] = left - steps[0]! - steps[1]!;
-    const legs = solveLegs(start, aim.x, aim.z, aim.vx, aim.vz, steps);
+    const legs = solveLegs(legBasis(start, steps), aim.x, aim.z, aim.vx, aim.vz);
     if (legs === null || !legsFeasible(start.hx, start.hz, legs, 1.1 * PLAN_RATE) || !offsetWithin(start, legs, limit)) continue;
     const fastest = Math.max(...legs.ux.map((u, i) => Math.hypot(u, legs.uz[i]!)));
     if (fastest < top) {

@@ -33,13 +33,22 @@ export function markWritable<T extends object>(target: T, keys: readonly (keyof 
   }
 }
 
+/** An empty typed array of each typed-array type standIn has met, keyed by its constructor. */
+const EMPTY = new Map<new (n: number) => ArrayBufferView, ArrayBufferView>();
+
 /** A value of the same kind as `v` that is not `v` (markWritable). */
 function standIn(v: unknown, key: string): unknown {
   if (typeof v === 'number') return v === 0 ? 1 : 0;
   if (typeof v === 'boolean') return !v;
   if (v === undefined) return null;
   if (v === null) return undefined;
-  if (ArrayBuffer.isView(v) && !(v instanceof DataView)) return new (v.constructor as new (n: number) => unknown)(0);
+  if (ArrayBuffer.isView(v) && !(v instanceof DataView)) {
+    // One empty array of each type, made once: it stands in only until the field is written back.
+    const type = v.constructor as new (n: number) => ArrayBufferView;
+    let empty = EMPTY.get(type);
+    if (empty === undefined) EMPTY.set(type, (empty = new type(0)));
+    return empty;
+  }
   if (v instanceof Set) return new Set();
   if (v instanceof Map) return new Map();
   throw new TypeError(`markWritable: field ${key} holds ${describe(v)}, not a number, boolean, typed array, Set, Map, undefined or null`);
