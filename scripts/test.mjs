@@ -8,9 +8,8 @@
 // still waiting, a second browser lane (`browser-2`: a Chromium and a lane lock of its own) takes them
 // from the other end of the list (BITPHYSICS_TEST_ORDER=reverse in vitest.config.ts), so that the core
 // the node lane leaves does not idle; when the browser lane is done first and headless files are still
-// waiting, a second `node` lane does the same with those. The second browser lane runs only with
-// BITPHYSICS_BROWSER_LANES=2, off by default until a full run on an unloaded two-core machine shows
-// two Chromiums finishing the browser files sooner than one. Each line of output is prefixed with its
+// waiting, a second `node` lane does the same with those. BITPHYSICS_BROWSER_LANES=1 keeps every
+// browser file in the one lane (for comparing the two). Each line of output is prefixed with its
 // lane; the exit code is non-zero if any lane fails. Arguments are passed to the vitest runs; with
 // arguments (a filter, say) there is no second lane.
 import { spawn } from 'node:child_process';
@@ -88,7 +87,7 @@ try {
   // global setup serves the site the first lane built (no site lock: that lane holds it) and launches
   // its own Chromium; its files take their own lane lock (BITPHYSICS_BROWSER_LANE, test/browser/chromium.mjs).
   const secondBrowser = first.then(() => {
-    if (browserDone || extra.length > 0 || process.env.BITPHYSICS_BROWSER_LANES !== '2') return 0;
+    if (browserDone || extra.length > 0 || process.env.BITPHYSICS_BROWSER_LANES === '1') return 0;
     const waiting = waitingFiles('browser');
     if (waiting.length < SECOND_BROWSER_LANE_MIN_FILES) return 0;
     return lane('browser-2', ['--project', 'browser', ...waiting], {
