@@ -34,9 +34,13 @@ function awaitStale(pool: ThreadPool, before: number): void {
  */
 function expectWorkerServes(pool: ThreadPool): void {
   const ctl = (pool as unknown as { ctl: Int32Array }).ctl;
-  // A worker started after a command was opened takes the next one. The waits are bounded at 60 s:
-  // a replacement worker started at load 30+ on two cores once missed the 20 s they had.
-  for (let k = 0; k < 12000 && Atomics.load(ctl, CONTROL.READY) < pool.threads - 1; k++) pause(5);
+  // A worker started after a command was opened takes the next one, so the command waits until every
+  // worker has started: READY counts the workers' starts, the replaced ones' included (it is never
+  // lowered), so with a replacement it must reach threads - 1 + workersReplaced (with threads - 1 the
+  // wait ended at once, and a replacement that started after the command left its range to the
+  // calling thread). The waits are bounded at 60 s.
+  const started = pool.threads - 1 + pool.stats().workersReplaced;
+  for (let k = 0; k < 12000 && Atomics.load(ctl, CONTROL.READY) < started; k++) pause(5);
   const out = sharedFloat64(1000);
   const before = pool.stats().rangesTakenOver;
   pool.start('testSystem', testKernel, [out], [5, -1], 1000);
