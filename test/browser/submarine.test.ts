@@ -310,6 +310,30 @@ function stepToHit(page: Page, kind: string, after: number): Promise<void> {
   );
 }
 
+/**
+ * Far from the beacon (the hull put 250 m short of it, at its depth) the camera zooms out no further
+ * than 5 px/m on the desktop (the 12 m hull 60 px long; it went to 2 px/m, about 35 px seen at speed)
+ * and 4 px/m on a phone: waited on until the eased zoom is within 0.1 px/m of its floor (not a fixed
+ * count of frames), then checked not below it by more than that.
+ */
+async function expectZoomFloor(g: GamePage, device: string): Promise<void> {
+  await g.page.evaluate(() => {
+    const w = window.game as unknown as Sub;
+    w.world.components.Position.x[w.hull()] = w.handles().beacons[0]! - 250;
+    w.world.components.Position.y[w.hull()] = w.handles().beacons[1]!;
+  });
+  const least = device === 'desktop' ? 5 : 4;
+  const far = await g.waitFor(
+    (lo) => {
+      const z = (window.game as unknown as Sub).camera().zoom;
+      return z < lo + 0.1 ? z : null;
+    },
+    least,
+    60_000,
+  );
+  expect(far).toBeGreaterThan(least - 0.1);
+}
+
 describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
   let h: Harness;
   beforeAll(async () => {
@@ -503,25 +527,7 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
       1.8 * r.screenX,
     );
     expect(r.cam.leadX).toBeGreaterThan(0.8 * 3 * 7.5);
-    // Far from the beacon (250 m short, at its depth) the camera zooms out no further than 5 px/m
-    // on the desktop (the 12 m hull 60 px long; it went to 2 px/m, about 35 px seen at speed) and
-    // 4 px/m on a phone.
-    await g.page.evaluate(() => {
-      const w = window.game as unknown as Sub;
-      w.world.components.Position.x[w.hull()] = w.handles().beacons[0]! - 250;
-      w.world.components.Position.y[w.hull()] = w.handles().beacons[1]!;
-    });
-    // Waited on until the eased zoom is within 0.1 of its floor (not a fixed count of frames).
-    const least = device === 'desktop' ? 5 : 4;
-    const far = await g.waitFor(
-      (lo) => {
-        const z = (window.game as unknown as Sub).camera().zoom;
-        return z < lo + 0.1 ? z : null;
-      },
-      least,
-      60_000,
-    );
-    expect(far).toBeGreaterThan(least - 0.1);
+    await expectZoomFloor(g, device);
     expect(g.errors).toEqual([]);
     await g.close();
   });
@@ -636,25 +642,7 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     expect(r.ahead, `${device}: ${r.ahead.toFixed(1)} m ahead at ${r.cam.zoom.toFixed(2)} px/m`).toBeGreaterThan(40);
     if (device === 'desktop') expect(r.cam.zoom).toBeCloseTo(8, 1);
     else expect(r.cam.width / r.cam.zoom).toBeGreaterThan(69);
-    // Far from the beacon (250 m short, at its depth) the camera zooms out no further than 5 px/m
-    // on the desktop (the 12 m hull 60 px long; it went to 2 px/m, about 35 px seen at speed) and
-    // 4 px/m on a phone.
-    await g.page.evaluate(() => {
-      const w = window.game as unknown as Sub;
-      w.world.components.Position.x[w.hull()] = w.handles().beacons[0]! - 250;
-      w.world.components.Position.y[w.hull()] = w.handles().beacons[1]!;
-    });
-    // Waited on until the eased zoom is within 0.1 of its floor (not a fixed count of frames).
-    const least = device === 'desktop' ? 5 : 4;
-    const far = await g.waitFor(
-      (lo) => {
-        const z = (window.game as unknown as Sub).camera().zoom;
-        return z < lo + 0.1 ? z : null;
-      },
-      least,
-      60_000,
-    );
-    expect(far).toBeGreaterThan(least - 0.1);
+    await expectZoomFloor(g, device);
     expect(g.errors).toEqual([]);
     await g.close();
   });
