@@ -342,7 +342,12 @@ export class ThreadPool {
   /** The per-loop choices of an adaptive pool. */
   readonly chooser = new LoopChooser();
 
-  /** Whether every worker has started (a browser pool runs on one thread until then). */
+  /**
+   * Whether the pool's first workers have all started (a browser pool runs on one thread until then).
+   * `CONTROL.READY` counts every worker's start and is never lowered, so after a replacement this is
+   * true before the new worker has started; until it has, the calling thread runs that worker's
+   * ranges (the results are the same).
+   */
   isReady(): boolean {
     if (this.disposed || this.failure !== null || Atomics.load(this.ctl, CONTROL.READY) < this.workers.length) return false;
     this.started = true;
