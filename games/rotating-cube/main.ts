@@ -1101,6 +1101,19 @@ function clearAim(): void {
 }
 
 const rayDir = new Vector3();
+
+/** Points `rayDir` (unit) from the camera through the view point (ndcX, ndcY) (normalised device coordinates). */
+function aimRay(ndcX: number, ndcY: number): void {
+  rayDir.set(ndcX, ndcY, 0.5).unproject(app.camera).sub(app.camera.position).normalize();
+}
+
+/** Where the camera's ray along `rayDir` falls to the height of the cube's centre, [x, z] m, or null (at or above the horizon). */
+function rayAtLevel(): [number, number] | null {
+  if (!(rayDir.y < -1e-6)) return null;
+  const cam = app.camera.position;
+  const t = (REST_HEIGHT - cam.y) / rayDir.y;
+  return [cam.x + rayDir.x * t, cam.z + rayDir.z * t];
+}
 /** What a room click at a point does: a push of the cube at `speed` m/s along (dx, dz) (unit), aiming at (x, z). */
 interface Push {
   kind: 'floor' | 'cube';
@@ -1125,7 +1138,7 @@ const origin = new Float64Array(3),
  */
 function aimAt(ndcX: number, ndcY: number): Push | null {
   if (params.mode !== 'room') return null;
-  rayDir.set(ndcX, ndcY, 0.5).unproject(app.camera).sub(app.camera.position).normalize();
+  aimRay(ndcX, ndcY);
   const cam = app.camera.position;
   const P = shell.world.components.Position,
     e = handles.body;
@@ -1145,13 +1158,10 @@ function aimAt(ndcX: number, ndcY: number): Push | null {
   }
   // The floor point: where the ray falls to the height of the cube's centre (so a click on the pad's
   // drawing aims where the cube's centre should stop), kept inside the room.
-  if (!(rayDir.y < -1e-6)) return null;
-  const t = (REST_HEIGHT - cam.y) / rayDir.y;
+  const level = rayAtLevel();
+  if (level === null) return null;
   const inside = ROOM_HALF - 0.5;
-  const [x, z] = snapToBed(
-    Math.max(-inside, Math.min(inside, cam.x + rayDir.x * t)),
-    Math.max(-inside, Math.min(inside, cam.z + rayDir.z * t)),
-  );
+  const [x, z] = snapToBed(Math.max(-inside, Math.min(inside, level[0])), Math.max(-inside, Math.min(inside, level[1])));
   const dist = Math.hypot(x - cx, z - cz);
   if (!(dist > 0.05)) return null;
   Object.assign(aim, { kind: 'floor', dx: (x - cx) / dist, dz: (z - cz) / dist, speed: slideSpeed(dist), x, z });
@@ -1187,11 +1197,8 @@ function flickAim(hx: number, hz: number): Push | null {
 /** Where the ray through CSS pixel (clientX, clientY) meets the level of the cube's centre, [x, z] m, or null (at or above the horizon). */
 function levelPoint(clientX: number, clientY: number): [number, number] | null {
   app.toNdc(clientX, clientY, ndc);
-  rayDir.set(ndc[0], ndc[1], 0.5).unproject(app.camera).sub(app.camera.position).normalize();
-  if (!(rayDir.y < -1e-6)) return null;
-  const cam = app.camera.position;
-  const t = (REST_HEIGHT - cam.y) / rayDir.y;
-  return [cam.x + rayDir.x * t, cam.z + rayDir.z * t];
+  aimRay(ndc[0], ndc[1]);
+  return rayAtLevel();
 }
 
 /** Room mode, a finger's drag from the cube, CSS px (x0, y0) to (x1, y1): flicks the cube the way the finger went across the floor. */
@@ -1231,7 +1238,7 @@ function clickAt(ndcX: number, ndcY: number): boolean {
   }
   const hit = renderer.pick(ndcX, ndcY, app.camera);
   if (!hit || hit.eid !== e) return false;
-  rayDir.set(ndcX, ndcY, 0.5).unproject(app.camera).sub(app.camera.position).normalize();
+  aimRay(ndcX, ndcY);
   const J = params.impulse * push();
   startClock();
   applyImpulseAtPoint(shell.world, e, [rayDir.x * J, rayDir.y * J, rayDir.z * J], hit.point);
