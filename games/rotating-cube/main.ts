@@ -1539,8 +1539,10 @@ function updateStatus(wx: number, wy: number, wz: number): void {
             hint: touch ? 'Next: back to the pads · ↻: try again' : 'Enter: back to the pads · R: try again',
           }
         : {
-            goal: `Make the box flip ${FLIP_GOAL} times in ${FLIP_TIME} s, spinning at ${lo} to ${hi} rad/s`,
-            numbers: `Flips ${n}/${FLIP_GOAL} · ${(FLIP_TIME - flips.time(t)).toFixed(1)} s left · spin ${spin.toFixed(1)} ${inBand ? '✓' : '✗'}`,
+            goal: touch
+              ? `Flip the box over ${FLIP_GOAL} times in ${FLIP_TIME} s`
+              : `Make the box flip over ${FLIP_GOAL} times in ${FLIP_TIME} s, spinning at ${lo} to ${hi} rad/s`,
+            numbers: `Flips ${n}/${FLIP_GOAL} · ${(FLIP_TIME - flips.time(t)).toFixed(1)} s left · spin ${spin.toFixed(1)}${touch ? ` of ${lo}–${hi}` : ''} ${inBand ? '✓' : '✗'}`,
             hint:
               flips.startedAt < 0
                 ? `Clock starts at your first ${touch ? 'tap' : 'key'} · ${band}`
@@ -1561,10 +1563,15 @@ function updateStatus(wx: number, wy: number, wz: number): void {
     );
   } else {
     // A cube's inertia is the same about every axis, so its ω stays along L and a torque moves ω's tip the way it points.
-    const hold = spins.held > 0 ? `holding ${spins.held.toFixed(1)} of ${SPIN_HOLD} s ✓` : `hold it ${SPIN_HOLD} s`;
+    const off =
+      spins.startedAt < 0 ? Math.hypot(wx - spins.targets[0]![0], wy - spins.targets[0]![1], wz - spins.targets[0]![2]) : spins.off;
+    const how =
+      spins.held > 0 ? `holding ${spins.held.toFixed(1)} of ${SPIN_HOLD} s ✓` : `off by ${off.toFixed(2)} rad/s (${SPIN_TOLERANCE} counts)`;
     status.set({
-      goal: `Turn the magenta spin arrow onto the cyan one, ${hold} (${spins.target + 1} of ${SPIN_TARGETS})`,
-      numbers: `off by ${(spins.startedAt < 0 ? Math.hypot(wx - spins.targets[0]![0], wy - spins.targets[0]![1], wz - spins.targets[0]![2]) : spins.off).toFixed(2)} rad/s (${SPIN_TOLERANCE} counts) · spin ${w.toFixed(2)} rad/s · ${spins.time(t).toFixed(1)} s`,
+      goal: touch
+        ? `Magenta arrow onto cyan, hold ${SPIN_HOLD} s (${spins.target + 1} of ${SPIN_TARGETS})`
+        : `Turn the magenta spin arrow onto the cyan one and hold it ${SPIN_HOLD} s (${spins.target + 1} of ${SPIN_TARGETS})`,
+      numbers: `${how}${touch ? '' : ` · spin ${w.toFixed(2)} rad/s`} · ${spins.time(t).toFixed(1)} s`,
       hint: touch
         ? 'Pitch, Yaw, Roll push the magenta tip their way; ease off before it overshoots'
         : "W S, A D, Q E push the magenta arrow's tip the way they turn the cube; X stops it; ease off before it overshoots",
