@@ -46,7 +46,7 @@ const CSS = `
 .rc-win-detail { color: #c8d0dc; margin-bottom: 12px; }
 .rc-win-actions { display: flex; gap: 10px; justify-content: center; }
 .rc-win button { pointer-events: auto; min-width: 110px; min-height: 44px; padding: 8px 16px; border-radius: 10px; cursor: pointer;
-  font: 700 16px system-ui, sans-serif; border: 2px solid #8fa3c4; background: #1d2738; color: #fff; }
+  font: 700 16px system-ui, sans-serif; border: 2px solid #8fa3c4; background: #1d2738; color: #fff; white-space: nowrap; }
 .rc-win button.rc-win-next { background: #ffd166; border-color: #ffd166; color: #1a1206; }
 .rc-win button kbd { font: 600 12px system-ui, sans-serif; opacity: 0.75; margin-left: 6px; }
 `;
