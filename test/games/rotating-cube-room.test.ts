@@ -607,6 +607,21 @@ describe('rotating-cube round ends and the moves-to-go indicator', () => {
     halves: [0.6, 0.55, 0.5, 0.45, 0.42],
     beds: [-1, 0, 1, 1, 1],
   });
+  /** A world of `mode` with its body, and the three rounds, the one of `mode` fed after every step (as the game does). */
+  const roundWorld = (mode: 'room' | 'flip') => {
+    const world = createPhysicsWorld(rotatingCubeWorldOptions(mode));
+    const h = buildRotatingCube(world, { mode });
+    const rounds = {
+      pads: new PadChallenge(centred),
+      spins: new SpinChallenge(spinTargets([1, 0, 0], [0, 1, 0])),
+      flips: new FlipChallenge(),
+    };
+    addSystem(world, 'finalize', (w) => {
+      if (mode === 'room') rounds.pads.update(w, h.body);
+      else rounds.flips.update(w, h.body);
+    });
+    return { world, h, rounds };
+  };
   /** Red (+x) facing world -x: half a turn about the vertical. */
   const RED_WEST = [0, 1, 0, 0] as const;
 
@@ -637,16 +652,7 @@ describe('rotating-cube round ends and the moves-to-go indicator', () => {
   });
 
   it('the pads round ends (banner content) only after the last pad, saying the moves made; R keeps no stale end', () => {
-    const world = createPhysicsWorld(rotatingCubeWorldOptions());
-    const h = buildRotatingCube(world);
-    const rounds = {
-      pads: new PadChallenge(centred),
-      spins: new SpinChallenge(spinTargets([1, 0, 0], [0, 1, 0])),
-      flips: new FlipChallenge(),
-    };
-    addSystem(world, 'finalize', (w) => {
-      rounds.pads.update(w, h.body);
-    });
+    const { world, h, rounds } = roundWorld('room');
     for (let i = 0; i < 120; i++) step(world);
     let tops = 0;
     for (let k = 0; k < PAD_COUNT; k++) {
@@ -671,16 +677,7 @@ describe('rotating-cube round ends and the moves-to-go indicator', () => {
   });
 
   it('the flip round left alone ends lost at FLIP_TIME from its start ("Time!"), not before; the spin round ends won after its three holds', () => {
-    const world = createPhysicsWorld(rotatingCubeWorldOptions('flip'));
-    const h = buildRotatingCube(world, { mode: 'flip' });
-    const rounds = {
-      pads: new PadChallenge(centred),
-      spins: new SpinChallenge(spinTargets([1, 0, 0], [0, 1, 0])),
-      flips: new FlipChallenge(),
-    };
-    addSystem(world, 'finalize', (w) => {
-      rounds.flips.update(w, h.body);
-    });
+    const { world, rounds } = roundWorld('flip');
     for (let i = 0; i < 30; i++) step(world);
     rounds.flips.start(world.time);
     const t0 = world.time;
