@@ -1397,12 +1397,14 @@ function updateBanner(): void {
 }
 
 /**
- * The moves made against the stars still in reach, in one rule a player reads the same way everywhere
- * (the status row, the end, the rules card): "moves 3 of 8 for ★★★" (★★★ takes par + PAR_SLACK[0]
- * moves or fewer, ★★ par + PAR_SLACK[1]); past both, "moves 24 ★☆☆".
+ * The moves made against the stars still in reach, for the status row: "moves 3 of 8 for ★★★" (on a
+ * phone "moves 3/8 ★★★"; ★★★ takes par + PAR_SLACK[0] moves or fewer, ★★ par + PAR_SLACK[1]); past
+ * both, "moves 24 ★☆☆".
  */
 function movesToStars(moves: number, par: number): string {
-  for (const [i, slack] of PAR_SLACK.entries()) if (moves <= par + slack) return `moves ${moves} of ${par + slack} for ${stars(3 - i)}`;
+  for (const [i, slack] of PAR_SLACK.entries())
+    if (moves <= par + slack)
+      return touch ? `moves ${moves}/${par + slack} ${stars(3 - i)}` : `moves ${moves} of ${par + slack} for ${stars(3 - i)}`;
   return `moves ${moves} ${stars(1)}`;
 }
 
@@ -1513,7 +1515,7 @@ function updateStatus(wx: number, wy: number, wz: number): void {
         goal: touch
           ? `To the glowing pad, ${want >= 0 ? `${name} on top` : 'any face up'} (${pads.pad + 1} of ${layout.pads.length})`
           : `Land the cube on the glowing pad${want >= 0 ? ` with ${name} on top` : ', any face up'} (${pads.pad + 1} of ${layout.pads.length})`,
-        numbers: `${toGo.text() || 'moves left: …'} · ${movesToStars(pads.moves, par)}${touch ? '' : ` · ${time.toFixed(1)} s`}`,
+        numbers: `${toGo.text(touch) || 'moves left: …'} · ${movesToStars(pads.moves, par)}${touch ? '' : ` · ${time.toFixed(1)} s`}`,
         hint,
       });
   } else if (params.mode === 'flip') {

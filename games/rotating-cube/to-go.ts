@@ -35,10 +35,15 @@ export class ToGoMeter {
     this.toGo = movesLeft;
     return true;
   }
-  /** The indicator in words: "3 moves to go · closer ▼", "1 move to go", or '' with no count. */
-  text(): string {
+  /**
+   * The indicator in words: "3 moves to go · closer ▼", "1 move to go", or '' with no count; `short`
+   * (a phone's narrow status row): "3 to go ▼".
+   */
+  text(short = false): string {
     if (this.toGo < 0) return '';
+    const arrow = this.trend === 'closer' ? '▼' : this.trend === 'farther' ? '▲' : '';
+    if (short) return `${this.toGo} to go${arrow ? ` ${arrow}` : ''}`;
     const moves = `${this.toGo} move${this.toGo === 1 ? '' : 's'} to go`;
-    return this.trend === 'closer' ? `${moves} · closer ▼` : this.trend === 'farther' ? `${moves} · farther ▲` : moves;
+    return arrow ? `${moves} · ${this.trend} ${arrow}` : moves;
   }
 }
