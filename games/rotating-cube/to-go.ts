@@ -36,14 +36,12 @@ export class ToGoMeter {
     return true;
   }
   /**
-   * The indicator in words: "3 moves to go · closer ▼", "1 move to go", or '' with no count; `short`
-   * (a phone's narrow status row): "3 to go ▼".
+   * The indicator in words (no arrows: on a phone ▲ and ▼ are the roll buttons): "3 moves to go ·
+   * closer", "1 move to go", or '' with no count; `short` (a phone's narrow status row): "3 to go, closer".
    */
   text(short = false): string {
     if (this.toGo < 0) return '';
-    const arrow = this.trend === 'closer' ? '▼' : this.trend === 'farther' ? '▲' : '';
-    if (short) return `${this.toGo} to go${arrow ? ` ${arrow}` : ''}`;
-    const moves = `${this.toGo} move${this.toGo === 1 ? '' : 's'} to go`;
-    return arrow ? `${moves} · ${this.trend} ${arrow}` : moves;
+    const moves = short ? `${this.toGo} to go` : `${this.toGo} move${this.toGo === 1 ? '' : 's'} to go`;
+    return this.trend === '' ? moves : `${moves}${short ? ',' : ' ·'} ${this.trend}`;
   }
 }

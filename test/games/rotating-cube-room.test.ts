@@ -643,13 +643,13 @@ describe('rotating-cube round ends and the moves-to-go indicator', () => {
     const meter = new ToGoMeter();
     expect(meter.text()).toBe('');
     expect([meter.update(3), meter.trend, meter.text()]).toEqual([true, '', '3 moves to go']);
-    expect([meter.update(1), meter.trend, meter.text()]).toEqual([true, 'closer', '1 move to go · closer ▼']);
+    expect([meter.update(1), meter.trend, meter.text()]).toEqual([true, 'closer', '1 move to go · closer']);
     expect([meter.update(1), meter.trend]).toEqual([false, 'closer']);
     expect([meter.update(2), meter.trend, meter.text(), meter.text(true)]).toEqual([
       true,
       'farther',
-      '2 moves to go · farther ▲',
-      '2 to go ▲',
+      '2 moves to go · farther',
+      '2 to go, farther',
     ]);
     meter.reset();
     expect([meter.update(0), meter.trend, meter.text()]).toEqual([true, '', '0 moves to go']);
