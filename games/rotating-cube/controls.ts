@@ -28,7 +28,7 @@ export function cubeControls(mode: Mode, touch: boolean): ControlHint[] {
       : { keys: 'Q E', action: 'spin it like a wheel facing you, left or right', touch: 'Roll ⟲ ⟳' },
     { keys: 'X', action: 'stop spinning', touch: 'Stop' },
     ...(room ? [{ keys: 'Space', action: 'jump', touch: 'Jump' }] : []),
-    { keys: 'M', action: 'mode: room / cube on a pivot / Dzhanibekov flip', touch: 'Mode' },
+    { keys: 'M', action: 'mode: pads / spin the cube / flipping box', touch: 'Mode' },
   ];
 }
 

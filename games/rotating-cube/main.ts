@@ -27,11 +27,14 @@
  * the last three across a bed of tiles a slide stops at (stars by moves against par: roll-puzzle.ts);
  * cube on the pivot: steer ω onto three target spins and hold each (spin-challenge.ts); flip: 10 flips
  * in 20 s, counted only while the spin is within FLIP_BAND.
- * Each run (page load or R) lays the pads out afresh from a seed (scene.ts `padLayout`); the face net at
- * the top left of the stage shows which colour each roll key brings on top, and until the first roll a
- * card at the top right shows the round (each pad's colour to land with on top) and the rule. The lit
+ * A new round (page load, or Next at its end) lays the pads out afresh from a seed (scene.ts `padLayout`);
+ * R (and Retry) plays the same pads again. The face net at the top left of the stage shows which colour
+ * each roll key brings on top, the pads card at the top right each pad's colour to land with on top
+ * (the rules behind its "?"), and the status row the fewest moves left from where the cube rests
+ * (to-go.ts). The round's clock runs only while the cube is still (scene.ts `PadChallenge`). The lit
  * pad's rim lights while the cube's centre is near enough to count (scene.ts PAD_GRACE); resting there
- * with the wrong face up (or slid on) the pop says why it does not count.
+ * with the wrong face up (or slid on) the pop says why it does not count. A round's end shows a banner
+ * with the result, Next (Enter) and Retry (R) (win-banner.ts, round-end.ts).
  * URL: ?mode=room|cube|flip (default room), ?spin=rad/s (flip), ?seed=N (the same pad layout every run).
  */
 
@@ -79,9 +82,11 @@ import {
 } from 'three';
 import { cubeControls, TAP_SLOP, touchPress } from './controls';
 import { bedSnap } from './roll-puzzle';
+import { roundEnd, starText } from './round-end';
 import {
   buildRotatingCube,
   CELL_REACH,
+  cubeStill,
   FACES,
   FLIP_BAND,
   FLIP_GOAL,
@@ -98,6 +103,7 @@ import {
   PadChallenge,
   type PadLayout,
   padLayout,
+  padMovePar,
   padMoveRoute,
   padPuzzle,
   padStars,
@@ -115,6 +121,8 @@ import {
   YawKeeper,
 } from './scene';
 import { SPIN_HOLD, SPIN_RATE, SPIN_STAR_TIMES, SPIN_TARGETS, SPIN_TOLERANCE, SpinChallenge, spinTargets } from './spin-challenge';
+import { ToGoMeter } from './to-go';
+import { createWinBanner } from './win-banner';
 
 /** A mouse press that moves more than this, CSS px, is a camera drag, not a click (a finger: controls.ts TAP_SLOP). */
 const CLICK_SLOP = 5;
@@ -143,8 +151,14 @@ const params = {
 let handles: RotatingCubeHandles;
 /** ?seed=N: every run lays out the same pads; without it each run (load or R) draws a new seed. */
 const fixedSeed = new URLSearchParams(location.search).has('seed') ? numberParam('seed', { default: 1, min: 0, max: 2 ** 31 }) : null;
-/** The pads of this run (`padLayout` of a fresh seed per world). */
+/** The pads of this round (`padLayout` of a fresh seed for a new round; a retry, R, keeps them). */
 let layout: PadLayout = padLayout(fixedSeed ?? Math.floor(Math.random() * 2 ** 31));
+/** Whether the next world lays out a new round of pads (the page's first world and Next do; R retries the same pads). */
+let freshLayout = true;
+/** The moves left on the lit pad from where the cube rests, and whether the last move brought it closer (to-go.ts). */
+const toGo = new ToGoMeter();
+/** The pad `toGo` counts for (-1: none yet): a new pad lit starts its count afresh. */
+let toGoPad = -1;
 /** Room mode's challenge (the pads) and flip mode's (flips in FLIP_TIME); reset with the world. */
 const pads = new PadChallenge(),
   flips = new FlipChallenge();
@@ -271,8 +285,11 @@ function createWorld(): PhysicsWorld {
   );
   // The challenges are checked after every step (a system at the end of the step), so they count
   // the same whether the page runs, single-steps or is stepped by a test.
-  layout = padLayout(fixedSeed ?? Math.floor(Math.random() * 2 ** 31));
+  if (freshLayout) layout = padLayout(fixedSeed ?? Math.floor(Math.random() * 2 ** 31));
+  freshLayout = false;
   pads.reset(layout);
+  toGo.reset();
+  toGoPad = -1;
   flips.reset();
   spins.reset(spinTargets(...cameraAxes()));
   spinsReached.length = 0;
@@ -681,7 +698,7 @@ function celebrate(): void {
       last
         ? `All ${SPIN_TARGETS} spins! ${spins.time(shell.world.time).toFixed(1)} s ${stars(spins.stars())}`
         : `Spin ${k + 1} of ${SPIN_TARGETS} ✓`,
-      last ? 2600 : 1100,
+      last ? BANNER_DELAY_MS : 1100,
     );
   }
   while (padsReached.length > 0) {
@@ -698,7 +715,7 @@ function celebrate(): void {
       last
         ? `All ${layout.pads.length} pads! ${pads.moves} moves ${stars(padStars(pads.moves, pads.par))}`
         : `Pad ${r.pad + 1} of ${layout.pads.length} ✓${r.par > 1 ? inPar : perfect}`,
-      last ? 2600 : 1100,
+      last ? BANNER_DELAY_MS : 1100,
     );
   }
 }
@@ -1295,7 +1312,11 @@ const panel = createPanel(
     {
       type: 'choice',
       key: 'mode',
-      options: { 'room (gravity, floor, walls)': 'room', 'cube on a pivot (no gravity)': 'cube', 'Dzhanibekov flip (pivot)': 'flip' },
+      options: {
+        'pads (roll the cube in a room)': 'room',
+        'spin the cube (on a pivot)': 'cube',
+        'flipping box (the Dzhanibekov effect)': 'flip',
+      },
       onChange: (m) => setMode(m as Mode),
     },
     { type: 'slider', key: 'torque', label: 'key torque (N m)', min: 0.05, max: 3, step: 0.05 },
@@ -1330,22 +1351,60 @@ const panel = createPanel(
 
 const status = createStatusRow({ name: 'challenge' });
 const touch = pageLayout().touch();
-// On a phone each of the row's three lines keeps two lines' height (the texts there fit in two): a
-// row that grew with a longer hint shrank the stage and moved the whole view 20 to 50 px.
+// On a phone the row keeps its height: the goal and the numbers one line each (a longer text ends in
+// an ellipsis), the hint two (a row that grew with a longer hint shrank the stage and moved the view).
 if (touch)
   for (const line of [status.goal, status.numbers, status.hint]) {
-    line.style.minHeight = '2.8em';
+    const one = line !== status.hint;
+    line.style.cssText += one ? ';white-space: nowrap; overflow: hidden; text-overflow: ellipsis' : '';
+    line.style.minHeight = one ? '1.4em' : '2.8em';
     line.style.boxSizing = 'border-box';
   }
-const stars = (n: number): string => '★'.repeat(n) + '☆'.repeat(3 - n);
+const stars = starText;
+
+// ---- The round's end: a banner with the result, Next (Enter) and Retry (R, the game's reset) --------
+
+const banner = createWinBanner(
+  app.canvas.parentElement ?? document.body,
+  () => nextRound(),
+  () => shell.reset(),
+  touch,
+);
+shell.onWorldChange(() => banner.hide());
+/** How long the banner waits after the round's end, ms: the last pad's chime, burst and pop come first. */
+const BANNER_DELAY_MS = 1000;
+/** performance.now() when the round's end was first seen (-1 while a round runs). */
+let overSeenAt = -1;
+/** The round after a finished one: in the room new pads; on the pivot the next mode (spins, then the flipping box, then the pads). */
+function nextRound(): void {
+  banner.hide();
+  if (params.mode === 'room') {
+    freshLayout = true;
+    shell.reset();
+  } else setMode(params.mode === 'cube' ? 'flip' : 'room');
+}
+/** Shows the banner once the mode's round is over (round-end.ts) and BANNER_DELAY_MS has passed; hides it otherwise. */
+function updateBanner(): void {
+  const now = performance.now();
+  const end = roundEnd(params.mode, { pads, spins, flips }, shell.world, bestMoves);
+  if (!end) {
+    overSeenAt = -1;
+    banner.hide();
+    return;
+  }
+  if (overSeenAt < 0) overSeenAt = now;
+  if (now - overSeenAt >= BANNER_DELAY_MS) banner.show(end);
+}
 
 /**
- * The moves made against the stars still in reach, in one rule a player reads the same way everywhere
- * (the status row, the end, the rules card): "moves 3 of 8 for ★★★" (★★★ takes par + PAR_SLACK[0]
- * moves or fewer, ★★ par + PAR_SLACK[1]); past both, "moves 24 ★☆☆".
+ * The moves made against the stars still in reach, for the status row: "moves 3 of 8 for ★★★" (on a
+ * phone "moves 3/8 ★★★"; ★★★ takes par + PAR_SLACK[0] moves or fewer, ★★ par + PAR_SLACK[1]); past
+ * both, "moves 24 ★☆☆".
  */
 function movesToStars(moves: number, par: number): string {
-  for (const [i, slack] of PAR_SLACK.entries()) if (moves <= par + slack) return `moves ${moves} of ${par + slack} for ${stars(3 - i)}`;
+  for (const [i, slack] of PAR_SLACK.entries())
+    if (moves <= par + slack)
+      return touch ? `moves ${moves}/${par + slack} ${stars(3 - i)}` : `moves ${moves} of ${par + slack} for ${stars(3 - i)}`;
   return `moves ${moves} ${stars(1)}`;
 }
 
@@ -1405,6 +1464,22 @@ function routeHint(): string {
   return `Stuck? A shortest way from here: ${words.join(' ')}`;
 }
 
+/**
+ * Room mode: while the cube rests flat and still (scene.ts `cubeStill`), counts the moves left on the
+ * lit pad from there (scene.ts `padMovePar`) into `toGo`; a new pad lit forgets the last count (a
+ * trend across two pads would mean nothing).
+ */
+function readToGo(): void {
+  if (pads.done) return;
+  if (toGoPad !== pads.pad) {
+    toGo.reset();
+    toGoPad = pads.pad;
+  }
+  const e = handles.body;
+  if (!cubeStill(shell.world, e) || shell.world.components.Position.y[e]! > 0.55) return;
+  toGo.update(padMovePar(shell.world, e, layout, pads.pad));
+}
+
 /** Writes the status row: the mode's goal, its numbers (the key readout) and how to play. */
 function updateStatus(wx: number, wy: number, wz: number): void {
   // Flip mode's spin: |L| over the intermediate moment, steady while the box flips (|ω| swings).
@@ -1414,43 +1489,34 @@ function updateStatus(wx: number, wy: number, wz: number): void {
     w = Math.hypot(wx, wy, wz);
   if (params.mode === 'room') {
     const want = layout.faces[pads.pad] ?? -1,
-      bed = layout.beds[pads.pad] ?? -1,
       name = FACE_NAMES[want];
     const par = pads.par;
-    // On a phone in two lines at most (the status row keeps its height: a taller one moved the view).
-    let flick = touch
-      ? 'Tap the floor: the cube slides there · every slide, roll, turn counts'
-      : 'Click the floor: the cube slides there · W A S D roll it · every slide, roll and turn (Q E) counts';
-    if (want >= 0 && bed > 0)
-      flick = touch
-        ? `Slides stop at the tiles: ROLL across (▲◀▼▶) so ${name} lands on top`
-        : `Slides stop at the tiles' edge: ROLL across them (W A S D) so ${name} lands on top · plan it with the net, every move counts`;
-    else if (want >= 0)
-      flick = touch
-        ? `Tap beside the pad, then ROLL on (▲◀▼▶) with ${name} on top`
-        : `Click beside the pad to slide there, then ROLL on (W A S D) so ${name} lands on top · every move counts`;
-    const time = pads.time(t);
-    flick = routeHint() || flick;
-    if (pads.startedAt < 0 && !pads.done)
-      flick = touch ? `Clock starts at your first tap · ${flick}` : `Clock starts at your first move · ${flick}`;
+    readToGo();
+    // One short line each (on a phone each fits the width): the rules in full are behind the pads card's "?".
+    let hint = touch ? 'Tap the floor: the cube slides there · ▲◀▼▶ roll it' : 'Click the floor: the cube slides there · W A S D roll it';
+    if (want >= 0)
+      hint = touch
+        ? `ROLL onto the pad (▲◀▼▶) so ${name} lands on top`
+        : `ROLL onto the pad (W A S D) so ${name} lands on top · the net shows what each roll brings up`;
+    hint = routeHint() || hint;
+    const time = pads.time();
     if (pads.done) {
       if (pads.moves < bestMoves) bestMoves = pads.moves;
       status.set(
         {
-          goal: `All ${layout.pads.length} pads in ${pads.moves} moves (par ${par}), ${time.toFixed(1)} s ${stars(padStars(pads.moves, par))}`,
-          numbers: `best ${bestMoves} moves · ★★★ takes ${par + PAR_SLACK[0]} moves or fewer, ★★ ${par + PAR_SLACK[1]}`,
-          hint: touch
-            ? '↻: a new layout · Mode: free spin, then the flip challenge'
-            : 'R: a new layout · M: next mode (free spin, then the flip challenge)',
+          goal: `All ${layout.pads.length} pads in ${pads.moves} moves ${stars(padStars(pads.moves, par))}`,
+          numbers: `par ${par} · best ${bestMoves} moves · ${time.toFixed(1)} s`,
+          hint: touch ? 'Next: new pads · ↻: the same pads again' : 'Enter: new pads · R: the same pads again',
         },
         true,
       );
     } else
       status.set({
-        goal: `Land the cube on the glowing pad${want >= 0 ? ` with ${name} on top` : ', any face up'} (${pads.pad + 1} of ${layout.pads.length})`,
-        // On a phone without the clock (stars go by moves), so the line stays within two.
-        numbers: `Pads ${'●'.repeat(pads.pad)}${'○'.repeat(layout.pads.length - pads.pad)} ${pads.pad}/${layout.pads.length} · ${movesToStars(pads.moves, par)} · pad\u00a0par\u00a0${pads.padPar}${touch ? '' : ` · ${time.toFixed(1)} s`}`,
-        hint: flick,
+        goal: touch
+          ? `To the glowing pad, ${want >= 0 ? `${name} on top` : 'any face up'} (${pads.pad + 1} of ${layout.pads.length})`
+          : `Land the cube on the glowing pad${want >= 0 ? ` with ${name} on top` : ', any face up'} (${pads.pad + 1} of ${layout.pads.length})`,
+        numbers: `${toGo.text(touch) || 'moves left: …'} · ${movesToStars(pads.moves, par)}${touch ? '' : ` · ${time.toFixed(1)} s`}`,
+        hint,
       });
   } else if (params.mode === 'flip') {
     const n = flips.counter.count;
@@ -1472,11 +1538,13 @@ function updateStatus(wx: number, wy: number, wz: number): void {
                 ? `${FLIP_GOAL} flips in ${flips.time(t).toFixed(1)} s ${stars(3)}`
                 : `Time! ${n} flips ${stars(flips.stars())}`,
             numbers: `best ${bestFlips} flips · spin ${spin.toFixed(1)} rad/s`,
-            hint: touch ? '↻: try again · Mode: back to the pads' : 'R: try again · M: back to the pads',
+            hint: touch ? 'Next: back to the pads · ↻: try again' : 'Enter: back to the pads · R: try again',
           }
         : {
-            goal: `Make the box flip ${FLIP_GOAL} times in ${FLIP_TIME} s, spinning at ${lo} to ${hi} rad/s`,
-            numbers: `Flips ${n}/${FLIP_GOAL} · ${(FLIP_TIME - flips.time(t)).toFixed(1)} s left · spin ${spin.toFixed(1)} ${inBand ? '✓' : '✗'}`,
+            goal: touch
+              ? `Flip the box over ${FLIP_GOAL} times in ${FLIP_TIME} s`
+              : `Make the box flip over ${FLIP_GOAL} times in ${FLIP_TIME} s, spinning at ${lo} to ${hi} rad/s`,
+            numbers: `Flips ${n}/${FLIP_GOAL} · ${(FLIP_TIME - flips.time(t)).toFixed(1)} s left · spin ${spin.toFixed(1)}${touch ? ` of ${lo}–${hi}` : ''} ${inBand ? '✓' : '✗'}`,
             hint:
               flips.startedAt < 0
                 ? `Clock starts at your first ${touch ? 'tap' : 'key'} · ${band}`
@@ -1491,19 +1559,24 @@ function updateStatus(wx: number, wy: number, wz: number): void {
       {
         goal: `All ${SPIN_TARGETS} spins in ${time.toFixed(1)} s ${stars(spins.stars())}`,
         numbers: `best ${bestSpinTime.toFixed(1)} s · ★★★ within ${SPIN_STAR_TIMES[0]} s, ★★ ${SPIN_STAR_TIMES[1]} s`,
-        hint: touch ? '↻: again · Mode: a box, whose ω wanders and flips' : 'R: again · M: a box, whose ω wanders and flips',
+        hint: touch ? 'Next: a box that flips over · ↻: again' : 'Enter: a box that flips over · R: again',
       },
       true,
     );
   } else {
     // A cube's inertia is the same about every axis, so its ω stays along L and a torque moves ω's tip the way it points.
-    const hold = spins.held > 0 ? `holding ${spins.held.toFixed(1)} of ${SPIN_HOLD} s ✓` : `hold it ${SPIN_HOLD} s`;
+    const off =
+      spins.startedAt < 0 ? Math.hypot(wx - spins.targets[0]![0], wy - spins.targets[0]![1], wz - spins.targets[0]![2]) : spins.off;
+    const how =
+      spins.held > 0 ? `holding ${spins.held.toFixed(1)} of ${SPIN_HOLD} s ✓` : `off by ${off.toFixed(2)} rad/s (${SPIN_TOLERANCE} counts)`;
     status.set({
-      goal: `Free spin: steer ω (magenta) onto the cyan arrow, ${hold} (${spins.target + 1} of ${SPIN_TARGETS})`,
-      numbers: `off by ${(spins.startedAt < 0 ? Math.hypot(wx - spins.targets[0]![0], wy - spins.targets[0]![1], wz - spins.targets[0]![2]) : spins.off).toFixed(2)} rad/s (within ${SPIN_TOLERANCE} counts) · |ω| ${w.toFixed(2)} · ${spins.time(t).toFixed(1)} s`,
+      goal: touch
+        ? `Magenta arrow onto cyan, hold ${SPIN_HOLD} s (${spins.target + 1} of ${SPIN_TARGETS})`
+        : `Turn the magenta spin arrow onto the cyan one and hold it ${SPIN_HOLD} s (${spins.target + 1} of ${SPIN_TARGETS})`,
+      numbers: `${how}${touch ? '' : ` · spin ${w.toFixed(2)} rad/s`} · ${spins.time(t).toFixed(1)} s`,
       hint: touch
-        ? `${spins.startedAt < 0 ? 'Clock starts at your first tap · ' : ''}Pitch, Yaw, Roll push ω's tip their way; ease off before it overshoots`
-        : `${spins.startedAt < 0 ? 'Clock starts at your first key · ' : ''}W S (pitch), A D (yaw), Q E (roll) push ω's tip the way the torque points; X stops it; ease off before it overshoots`,
+        ? 'Pitch, Yaw, Roll push the magenta tip their way; ease off before it overshoots'
+        : "W S, A D, Q E push the magenta arrow's tip the way they turn the cube; X stops it; ease off before it overshoots",
     });
   }
 }
@@ -1611,33 +1684,51 @@ function updateNet(): void {
   netCells[2]!.style.border = '2px solid #fff';
 }
 
-// ---- The pads' rules (top right of the stage, until the round's first roll) ------------------------
+// ---- The pads card (top right of the stage): the round's pads in turn, the rules behind its "?" ----
 
 /**
- * A card that shows the round before the player makes a roll: the five pads in turn, each as the
- * colour that must be on top there (the first: any face), and the rule in one line (from pad 2, roll
- * onto the pad with its colour on top; a slide keeps the top face and does not count). A stranger
- * learnt the face rule only by failing at pad 2. It goes at the first roll key (W A S D, ▲◀▼▶) and
- * comes back with a new layout (R). Room mode only.
+ * A small card over the stage's top right in the room: the five pads in turn as chips in the colour
+ * that must be on top there (the first: any face), the ones reached ticked and the lit one ringed, and
+ * a "?" button that opens the rules in a few lines (closed at the start: a stranger read a wall of rules
+ * before playing; the status row says the one thing to do now). The rules close again at the first
+ * roll key (W A S D, ▲◀▼▶) or a second press of "?". Room mode only, while the round runs.
  */
 const rules = document.createElement('div');
 rules.dataset.hud = 'pad-rules';
 rules.dataset.sceneOverlay = '';
 rules.style.cssText =
   'position: absolute; right: 8px; top: 8px; z-index: 4; pointer-events: none; box-sizing: border-box;' +
-  `width: ${touch ? 'min(262px, calc(100% - 128px))' : '300px'}; padding: 8px 10px; border-radius: 8px;` +
-  'background: rgba(8, 12, 20, 0.82); color: #e8ecf1; font: 500 12px/1.35 system-ui, sans-serif; transition: opacity 0.5s';
-const rulesTitle = document.createElement('div');
-rulesTitle.style.cssText = 'font-weight: 700; font-size: 13px; margin-bottom: 5px';
-rulesTitle.textContent = touch ? '5 pads in turn, this colour on top:' : 'Land on 5 pads in turn, this colour on top:';
+  `width: ${touch ? 'min(236px, calc(100% - 128px))' : '260px'}; padding: 6px 8px; border-radius: 8px;` +
+  'background: rgba(8, 12, 20, 0.82); color: #e8ecf1; font: 500 12px/1.35 system-ui, sans-serif';
+const rulesRow = document.createElement('div');
+rulesRow.style.cssText = 'display: flex; gap: 5px; align-items: center';
 const rulesChips = document.createElement('div');
-rulesChips.style.cssText = 'display: flex; gap: 6px; margin-bottom: 6px';
+rulesChips.style.cssText = 'display: flex; gap: 5px; flex: 1 1 auto';
+const rulesToggle = document.createElement('button');
+rulesToggle.type = 'button';
+rulesToggle.textContent = '?';
+rulesToggle.setAttribute('aria-label', 'how to play');
+rulesToggle.setAttribute('aria-expanded', 'false');
+// A finger's target: 44 px on a touch screen (the usual minimum), smaller beside a mouse.
+rulesToggle.style.cssText =
+  `pointer-events: auto; flex: 0 0 auto; width: ${touch ? 44 : 30}px; height: ${touch ? 44 : 30}px; border-radius: 50%; cursor: pointer;` +
+  'border: 2px solid #8fa3c4; background: #1d2738; color: #fff; font: 700 16px system-ui, sans-serif; padding: 0';
+rulesRow.append(rulesChips, rulesToggle);
 const rulesText = document.createElement('div');
-rules.append(rulesTitle, rulesChips, rulesText);
+rulesText.style.cssText = 'margin-top: 6px; display: none';
+rules.append(rulesRow, rulesText);
 (app.canvas.parentElement ?? document.body).append(rules);
-/** Whether the rules card shows (until the round's first roll key). */
-let rulesShown = true;
-/** Fills the rules card for this run's layout and shows it (room mode). */
+/** Whether the rules (behind "?") are open. */
+let rulesShown = false;
+rulesToggle.addEventListener('pointerdown', (e) => e.stopPropagation());
+rulesToggle.addEventListener('click', () => (rulesShown ? hideRules() : openRules()));
+/** Opens the rules under the chips. */
+function openRules(): void {
+  rulesShown = true;
+  rulesText.style.display = 'block';
+  rulesToggle.setAttribute('aria-expanded', 'true');
+}
+/** Fills the pads card for this round's layout (room mode) with its rules closed. */
 function showRules(): void {
   rulesChips.replaceChildren(
     ...layout.faces.map((f, i) => {
@@ -1645,8 +1736,8 @@ function showRules(): void {
       chip.dataset.face = f >= 0 ? FACE_NAMES[f]! : 'any';
       chip.title = f >= 0 ? `pad ${i + 1}: ${FACE_NAMES[f]} on top` : `pad ${i + 1}: any face`;
       chip.style.cssText =
-        'flex: 1 1 0; height: 30px; border-radius: 5px; display: flex; align-items: center; justify-content: center;' +
-        (f >= 0 ? `background: ${faceCss(f)}; border: 2px solid rgba(0, 0, 0, 0.5)` : `border: 2px dashed ${'#22d3ee'}`);
+        'flex: 1 1 0; height: 26px; border-radius: 5px; display: flex; align-items: center; justify-content: center; box-sizing: border-box;' +
+        (f >= 0 ? `background: ${faceCss(f)}; border: 2px solid rgba(0, 0, 0, 0.5)` : 'border: 2px dashed #22d3ee');
       const label = document.createElement('span');
       label.textContent = f >= 0 ? `${i + 1}` : `${i + 1} any`;
       label.style.cssText =
@@ -1657,20 +1748,28 @@ function showRules(): void {
   );
   const three = `${stars(3)}: par + ${PAR_SLACK[0]} moves or fewer.`;
   rulesText.textContent = touch
-    ? `Every slide, roll and turn counts. From pad 2, ROLL on with its colour on top; from pad 3 across its tiles (slides stop at them). ${three}`
-    : `Every move counts: slides, rolls (W A S D), quarter turns (Q E). From pad 2, ROLL onto the pad with its colour on top; from pad 3 slides stop at its tiles, so plan the route across them with the net at the left. ${three}`;
-  rulesShown = params.mode === 'room';
-  rules.style.display = rulesShown ? 'block' : 'none';
-  rules.style.opacity = '1';
+    ? `Land on the pads in turn. From pad 2, ROLL on with the chip's colour on top (a slide keeps the top face); from pad 3 slides stop at the tiles. Every slide, roll and turn is a move; "moves to go" counts the fewest left. The clock runs only while the cube is still. ${three}`
+    : `Land on the pads in turn. From pad 2, ROLL on (W A S D) with the chip's colour on top: a slide keeps the top face. From pad 3 slides stop at the tiles round the pad, so the route across them decides the face: the net at the left shows what each roll brings up, and "moves to go" counts the fewest left. Every slide, roll and quarter turn (Q E) is a move. The clock runs only while the cube is still. ${three}`;
+  hideRules();
+  markChips();
 }
-/** Fades the rules card out (the player's first roll). */
+/** Ticks the chips of the pads reached and rings the lit one (the card hides once the round is over, or out of the room). */
+function markChips(): void {
+  rules.style.display = params.mode === 'room' && !pads.done ? 'block' : 'none';
+  [...rulesChips.children].forEach((chip, i) => {
+    const el = chip as HTMLElement;
+    el.style.opacity = i < pads.pad ? '0.45' : '1';
+    el.style.outline = i === pads.pad ? '2px solid #fff' : 'none';
+    el.style.outlineOffset = '1px';
+    const label = el.firstElementChild as HTMLElement | null;
+    if (label) label.textContent = i < pads.pad ? '✓' : layout.faces[i]! >= 0 ? `${i + 1}` : `${i + 1} any`;
+  });
+}
+/** Closes the rules (the player's first roll, or "?" again). */
 function hideRules(): void {
-  if (!rulesShown) return;
   rulesShown = false;
-  rules.style.opacity = '0';
-  window.setTimeout(() => {
-    if (!rulesShown) rules.style.display = 'none';
-  }, 500);
+  rulesText.style.display = 'none';
+  rulesToggle.setAttribute('aria-expanded', 'false');
 }
 showRules();
 shell.onWorldChange(showRules);
@@ -1792,8 +1891,9 @@ function frame(): void {
   // runs the pads reached are a dim gold, so the lit pad stands out.
   padDoneMaterial.color.setHex(pads.done ? 0xffd34d : 0xc9a43a);
   padDoneMaterial.opacity = pads.done ? 0.75 + 0.25 * Math.sin(now / 220) : 0.55;
-  if (pads.done && rulesShown) hideRules();
+  if (frames % 5 === 0) markChips();
   celebrate();
+  updateBanner();
   sayBlocked();
   const age = (now - burstAt) / BURST_MS;
   burst.visible = room && age >= 0 && age < 1;
@@ -1922,7 +2022,7 @@ shell.expose({
     wants: layout.faces[pads.pad] ?? -1,
     padsDoneAt: pads.doneAt,
     /** The round's clock, s (0 until the first input starts it). */
-    padTime: pads.time(shell.world.time),
+    padTime: pads.time(),
     seed: layout.seed,
     pads: layout.pads.map((p) => [p[0], p[1]]),
     faces: [...layout.faces],
@@ -1957,8 +2057,12 @@ shell.expose({
    * and the opacity of the pads reached, in [0, 1] (0.55 while the round runs, pulsing 0.5 to 1 once won).
    */
   padState: () => ({ over: pads.over, rim: padRim.visible, blocked: pads.blocked, goldOpacity: padDoneMaterial.opacity }),
-  /** The rules card: whether it shows, and the face each pad wants as its chips name it (a colour name or 'any'). */
-  rules: () => ({ shown: rulesShown, chips: [...rulesChips.children].map((c) => (c as HTMLElement).dataset.face ?? '') }),
+  /** The pads card: whether it shows, whether its rules (behind "?") are open, and the face each pad wants as its chips name it (a colour name or 'any'). */
+  rules: () => ({
+    shown: rules.style.display !== 'none',
+    open: rulesShown,
+    chips: [...rulesChips.children].map((c) => (c as HTMLElement).dataset.face ?? ''),
+  }),
   /** Whether the aim marker (the arrow from the cube and the ring where a push would stop it) is drawn. */
   aimShown: (): boolean => aimRing.visible,
   /**

@@ -548,11 +548,18 @@ export const PAR_SLACK: readonly [number, number] = Object.freeze([2, 8]) as rea
  * moving slower than 0.2 m/s and turning slower than 0.5 rad/s.
  */
 export function restsOnPad(world: PhysicsWorld, body: number, px: number, pz: number, half = PAD_HALF): boolean {
-  const c = world.components,
-    P = c.Position,
-    V = c.Velocity,
-    W = c.AngularVelocity;
+  const P = world.components.Position;
   if (Math.abs(P.x[body]! - px) > half || Math.abs(P.z[body]! - pz) > half || P.y[body]! > 0.6) return false;
+  return cubeStill(world, body);
+}
+
+/**
+ * Whether `body` is still enough for the player to plan the next move: moving slower than 0.2 m/s
+ * and turning slower than 0.5 rad/s (a slide or a roll has settled). The pad round's clock runs only then.
+ */
+export function cubeStill(world: PhysicsWorld, body: number): boolean {
+  const V = world.components.Velocity,
+    W = world.components.AngularVelocity;
   return Math.hypot(V.x[body]!, V.y[body]!, V.z[body]!) < 0.2 && Math.hypot(W.x[body]!, W.y[body]!, W.z[body]!) < 0.5;
 }
 
@@ -634,8 +641,9 @@ export class FlipCounter {
  * Every move counts for the stars: a roll (a change of the top face, counted here), a slide (`slid`),
  * a quarter turn (`turned`), a jump (`jumped`); against the round's par, the sum of each pad's
  * `padMovePar` worked out from where the cube is when the pad lights. After the last pad the round is
- * over at `doneAt` (world time, s). The round's clock runs from `startedAt`, the world time of the player's first input
- * (`start`), not from the world's start, so reading the help costs nothing.
+ * over at `doneAt` (world time, s). The round's clock (`time`) starts at `startedAt`, the world time of the player's
+ * first input (`start`), not at the world's start, so reading the help costs nothing; and it runs only while the
+ * player can act (`cubeStill`): the seconds a slide or a roll takes to settle are not the player's.
  */
 export class PadChallenge {
   /** The round's pads. */
@@ -666,6 +674,10 @@ export class PadChallenge {
   blocked: '' | 'face' | 'slide' = '';
   /** The face on top at the last `update` (index into FACES), or -1 before the first. */
   private lastTop = -1;
+  /** The round's clock, s: world time since the start spent with the cube still, up to the round's end. */
+  private clock = 0;
+  /** World time of the last `update`, s, or -1 before the first (the clock grows by the step between two). */
+  private lastTime = -1;
   /** @param layout the round's pads (default CLASSIC_LAYOUT). */
   constructor(layout: PadLayout = CLASSIC_LAYOUT) {
     this.layout = layout;
@@ -684,6 +696,8 @@ export class PadChallenge {
     this.over = false;
     this.blocked = '';
     this.lastTop = -1;
+    this.clock = 0;
+    this.lastTime = -1;
   }
   /** Counts a slide (a push of the cube), a move: the next pad that wants a face needs a roll onto it first. */
   slid(): void {
@@ -718,10 +732,12 @@ export class PadChallenge {
   get done(): boolean {
     return this.doneAt >= 0;
   }
-  /** The round's clock at world time `now`, s: 0 before the start, the time taken once over. */
-  time(now: number): number {
-    if (this.startedAt < 0) return 0;
-    return Math.max(0, (this.done ? this.doneAt : now) - this.startedAt);
+  /**
+   * The round's clock, s, >= 0: the world time between the start and the round's end (or the last
+   * `update`) during which the cube was still (`cubeStill`) at the end of a step; 0 before the start.
+   */
+  time(): number {
+    return this.clock;
   }
   /**
    * Checks `body` against the lit pad after a step of `world` and lights the next one when it rests
@@ -731,6 +747,9 @@ export class PadChallenge {
   update(world: PhysicsWorld, body: number): boolean {
     const { pads, faces, halves } = this.layout;
     this.blocked = '';
+    const dt = this.lastTime >= 0 ? Math.max(0, world.time - this.lastTime) : 0;
+    this.lastTime = world.time;
+    if (this.startedAt >= 0 && !this.done && cubeStill(world, body)) this.clock += Math.min(dt, world.time - this.startedAt);
     if (this.done) {
       this.over = false;
       return false;

@@ -545,10 +545,10 @@ describe('phone controls', () => {
     await g.close();
   });
 
-  it("rotating cube: the arrows make a d-pad; the touch card leaves the floor clear and goes at the first arrow press; so does the rules card, which shows each pad's colour before any roll", async () => {
+  it("rotating cube: the arrows make a d-pad; the touch card leaves the floor clear and goes at the first arrow press; the pads card shows each pad's colour, its rules closed", async () => {
     const g = await h.openGame('rotating-cube', { ...PHONE, query: { seed: 11 } });
-    // The rules card: the pads in turn, each chip the colour the pad wants on top (the first: any),
-    // inside the phone's width beside the face net (not over it), before the player's first roll.
+    // The pads card: the pads in turn, each chip the colour the pad wants on top (the first: any),
+    // inside the phone's width beside the face net (not over it); its rules open only on its "?".
     type Rules = { rules(): { shown: boolean; chips: string[] }; challenge(): { faces: number[] } };
     // The page's own hooks come after the kit's (its module has more to set up once the shell is ready).
     await g.waitFor(() => typeof (window.game as unknown as { rules?: unknown }).rules === 'function', null);
@@ -589,7 +589,7 @@ describe('phone controls', () => {
     // A press of an arrow (no touch on the stage) sends it away.
     await touchPath(g.page, [[down.x + down.width / 2, down.y + down.height / 2]], 0);
     await g.waitFor(() => document.querySelector('[data-hud="touch-hint"]')?.classList.contains('bp-gone') ?? true, null);
-    await g.waitFor(() => !(window.game as unknown as { rules(): { shown: boolean } }).rules().shown, null);
+    expect(await g.page.evaluate(() => (window.game as unknown as { rules(): { open: boolean } }).rules().open)).toBe(false);
     expect(g.errors).toEqual([]);
     await g.close();
   });

@@ -603,7 +603,7 @@ describe('3D rigid-body games in headless Chromium', () => {
     const g = await open('rotating-cube', {});
     // The legend names the room's keys and the modes behind M.
     const legend = await g.page.locator('.bp-legend').textContent();
-    for (const text of ['Space', 'jump', 'room / cube on a pivot / Dzhanibekov flip']) expect(legend).toContain(text);
+    for (const text of ['Space', 'jump', 'pads / spin the cube / flipping box']) expect(legend).toContain(text);
     type Cube = Game3D & { body(): number; angularVelocity(): number[] };
     const landed = await g.page.evaluate(() => {
       const game = window.game as unknown as Cube;
@@ -683,7 +683,7 @@ describe('3D rigid-body games in headless Chromium', () => {
       return p.count > 0 ? p.text : null;
     }, null);
     expect(pop).toContain('Pad 1 of 5');
-    await g.waitFor(() => document.querySelector('[data-hud="challenge"]')?.textContent?.includes('1/5') ?? false, null);
+    await g.waitFor(() => document.querySelector('[data-hud="challenge"]')?.textContent?.includes('(2 of 5)') ?? false, null);
     // A held: the cube rolls along the floor towards the screen's left (its centre drawn farther left).
     await waitCubeAtRest(g);
     const before = await cubeState(g);

@@ -17,6 +17,7 @@ import {
 } from '@bitphysics/physics';
 import { describe, expect, it } from 'vitest';
 import { CARD_LINES } from '../../games/gallery-cards';
+import { roundEnd, starText } from '../../games/rotating-cube/round-end';
 import {
   buildRotatingCube,
   EDGES,
@@ -34,8 +35,10 @@ import {
   PAD_HALF,
   PADS,
   PadChallenge,
+  type PadLayout,
   PUSH_SPEED_MAX,
   padLayout,
+  padMovePar,
   padStars,
   ROLL_SPIN_MAX,
   ROLL_TORQUE,
@@ -47,6 +50,8 @@ import {
   torqueCouple,
   YawKeeper,
 } from '../../games/rotating-cube/scene';
+import { SPIN_HOLD, SPIN_TARGETS, SpinChallenge, spinTargets } from '../../games/rotating-cube/spin-challenge';
+import { ToGoMeter } from '../../games/rotating-cube/to-go';
 
 const S = Math.SQRT1_2;
 /** An orientation (x, y, z, w) with face `f` of FACES on top, worked out by hand: +x up is +90 degrees about z, and so on. */
@@ -440,12 +445,38 @@ describe('rotating-cube challenges', () => {
     expect(run(1, x1, z1 - near, want, want ^ 1).pad).toBe(2);
   });
 
-  it("the pad round's clock starts at the first input, not at the world's start", () => {
+  it("the pad round's clock starts at the first input and runs only while the cube is still, not while a slide settles", () => {
+    const world = createPhysicsWorld(rotatingCubeWorldOptions());
+    const h = buildRotatingCube(world);
     const pads = new PadChallenge(padLayout(3));
-    expect(pads.time(5)).toBe(0);
-    pads.start(5);
-    pads.start(7); // only the first start counts
-    expect(pads.time(9.5)).toBeCloseTo(4.5, 12);
+    addSystem(world, 'finalize', (w) => {
+      pads.update(w, h.body);
+    });
+    const dt = 1 / 60;
+    // The cube lands and rests; no input yet: the clock stays at 0 however long the player reads.
+    for (let i = 0; i < 180; i++) step(world);
+    expect(pads.time()).toBe(0);
+    pads.start(world.time);
+    pads.start(world.time + 5); // only the first start counts
+    // 60 steps at rest: one second on the clock (to a step's length).
+    for (let i = 0; i < 60; i++) step(world);
+    expect(Math.abs(pads.time() - 60 * dt)).toBeLessThanOrEqual(dt + 1e-9);
+    // A push 2 m along +x (1 kg: the impulse is the speed): the steps while it moves faster than 0.2 m/s
+    // (counted here from its velocity, independently of the challenge) add nothing to the clock.
+    const before = pads.time();
+    applyImpulse(world, h.body, [slideSpeed(2), 0, 0]);
+    const V = world.components.Velocity;
+    let moving = 0,
+      still = 0;
+    for (let i = 0; i < 180; i++) {
+      step(world);
+      if (Math.hypot(V.x[h.body]!, V.y[h.body]!, V.z[h.body]!) >= 0.2) moving++;
+      else still++;
+    }
+    // The slide takes sqrt(2 d / (mu g)) = 0.9 s, about 54 steps.
+    expect(moving).toBeGreaterThan(45);
+    expect(Math.abs(pads.time() - before - still * dt)).toBeLessThanOrEqual(2 * dt + 1e-9);
+    expect(pads.time() - before).toBeLessThan(180 * dt - 40 * dt);
   });
 
   it('a flip counts when the cosine crosses from beyond +0.5 to beyond -0.5 or back, not on a wobble about zero', () => {
@@ -558,5 +589,133 @@ describe('pages without a goal in the gallery', () => {
     // The flips count only with the spin kept in FLIP_BAND: the box does not win them 'by itself'.
     expect(CARD_LINES['rotating-cube']).toMatch(/five glowing pads.*few moves.*in the band while it flips 10 times in 20 s/);
     expect(CARD_LINES['rotating-cube']).not.toMatch(/by itself/);
+  });
+});
+
+describe('rotating-cube round ends and the moves-to-go indicator', () => {
+  /** A round whose third pad (index 2) lies at the room's centre, wants red (+x) on top and sits in a bed of 1 cell. */
+  const centred: PadLayout = Object.freeze({
+    seed: 0,
+    pads: [
+      [1.5, 1.5],
+      [-1.5, 1.5],
+      [0, 0],
+      [1.5, -1.5],
+      [-1.5, -1.5],
+    ] as [number, number][],
+    faces: [-1, 4, 0, 2, 2],
+    halves: [0.6, 0.55, 0.5, 0.45, 0.42],
+    beds: [-1, 0, 1, 1, 1],
+  });
+  /** A world of `mode` with its body, and the three rounds, the one of `mode` fed after every step (as the game does). */
+  const roundWorld = (mode: 'room' | 'flip') => {
+    const world = createPhysicsWorld(rotatingCubeWorldOptions(mode));
+    const h = buildRotatingCube(world, { mode });
+    const rounds = {
+      pads: new PadChallenge(centred),
+      spins: new SpinChallenge(spinTargets([1, 0, 0], [0, 1, 0])),
+      flips: new FlipChallenge(),
+    };
+    addSystem(world, 'finalize', (w) => {
+      if (mode === 'room') rounds.pads.update(w, h.body);
+      else rounds.flips.update(w, h.body);
+    });
+    return { world, h, rounds };
+  };
+  /** Red (+x) facing world -x: half a turn about the vertical. */
+  const RED_WEST = [0, 1, 0, 0] as const;
+
+  it('moves to go: the fewest moves left counted by hand from three resting spots beside the centre pad; the meter tells closer from farther', () => {
+    const world = createPhysicsWorld(rotatingCubeWorldOptions());
+    const h = buildRotatingCube(world);
+    const count = (x: number, q: readonly number[]): number => {
+      setDown(world, h.body, x, 0.51, 0, q, 30);
+      return padMovePar(world, h.body, centred, 2);
+    };
+    // Worked by hand (a roll along +x brings up the face that pointed -x; two bring up the bottom; a
+    // slide cannot stop in the bed; a quarter turn keeps the top):
+    // 1 m west of the pad, red facing west: one roll east.
+    expect(count(-1, RED_WEST)).toBe(1);
+    // 2 m west (the bed's edge), red underneath: two rolls east.
+    expect(count(-2, FACE_UP[1]!)).toBe(2);
+    // 1 m west, red on top: every roll turns red away; north, east, then south onto the pad brings it back.
+    expect(count(-1, FACE_UP[0]!)).toBe(3);
+    const meter = new ToGoMeter();
+    expect(meter.text()).toBe('');
+    expect([meter.update(3), meter.trend, meter.text()]).toEqual([true, '', '3 moves to go']);
+    expect([meter.update(1), meter.trend, meter.text()]).toEqual([true, 'closer', '1 move to go · closer']);
+    expect([meter.update(1), meter.trend]).toEqual([false, 'closer']);
+    expect([meter.update(2), meter.trend, meter.text(), meter.text(true)]).toEqual([
+      true,
+      'farther',
+      '2 moves to go · farther',
+      '2 to go, farther',
+    ]);
+    meter.reset();
+    expect([meter.update(0), meter.trend, meter.text()]).toEqual([true, '', '0 moves to go']);
+    expect(() => meter.update(1.5)).toThrow(/ToGoMeter.update: movesLeft .* got 1.5/);
+  });
+
+  it('the pads round ends (banner content) only after the last pad, saying the moves made; R keeps no stale end', () => {
+    const { world, h, rounds } = roundWorld('room');
+    for (let i = 0; i < 120; i++) step(world);
+    let tops = 0;
+    for (let k = 0; k < PAD_COUNT; k++) {
+      expect(roundEnd('room', rounds, world)).toBeNull();
+      const [x, z] = centred.pads[k]!,
+        want = centred.faces[k]! >= 0 ? centred.faces[k]! : 2;
+      // Beside the pad with the opposite face up, then on it with the one it wants: two changes of the top face (two rolls).
+      setDown(world, h.body, x + (x > 0 ? -1.2 : 1.2), 0.51, z, FACE_UP[want ^ 1]!, 30);
+      setDown(world, h.body, x, 0.51, z, FACE_UP[want]!, 30);
+      tops += 2;
+    }
+    const end = roundEnd('room', rounds, world, Infinity);
+    expect(end).not.toBeNull();
+    expect(end!.won).toBe(true);
+    expect(end!.title).toBe(`All ${PAD_COUNT} pads!`);
+    // The first placement's change counts only from the second update on: the test's own count, less one if the landing face was the opposite one.
+    expect(rounds.pads.moves).toBeGreaterThanOrEqual(tops - 1);
+    expect(end!.big).toBe(`${starText(padStars(rounds.pads.moves, rounds.pads.par))} ${rounds.pads.moves} moves`);
+    expect([end!.next, end!.retry]).toEqual(['New pads', 'Same pads']);
+    rounds.pads.reset();
+    expect(roundEnd('room', rounds, world)).toBeNull();
+  });
+
+  it('the flip round left alone ends lost at FLIP_TIME from its start ("Time!"), not before; the spin round ends won after its three holds', () => {
+    const { world, rounds } = roundWorld('flip');
+    for (let i = 0; i < 30; i++) step(world);
+    rounds.flips.start(world.time);
+    const t0 = world.time;
+    // 6 rad/s, under FLIP_BAND: no flip counts, so the round cannot be won.
+    while (world.time - t0 < FLIP_TIME - 0.05) {
+      step(world);
+      expect(roundEnd('flip', rounds, world)).toBeNull();
+    }
+    for (let i = 0; i < 6; i++) step(world);
+    const lost = roundEnd('flip', rounds, world)!;
+    expect([lost.title, lost.won, lost.retry]).toEqual(['Time!', false, 'Try again']);
+    expect(lost.big).toBe(`${starText(rounds.flips.stars())} ${rounds.flips.counter.count} flips`);
+
+    // The cube on its pivot with its spin set on each target in turn (a cube's moments are equal, so it keeps that spin).
+    const pw = createPhysicsWorld(rotatingCubeWorldOptions('cube'));
+    const ph = buildRotatingCube(pw, { mode: 'cube' });
+    addSystem(pw, 'finalize', (w) => {
+      rounds.spins.update(w, ph.body);
+    });
+    step(pw);
+    rounds.spins.start(pw.time);
+    const start = pw.time;
+    for (let k = 0; k < SPIN_TARGETS; k++) {
+      expect(roundEnd('cube', rounds, pw)).toBeNull();
+      setAngularVelocity(pw, ph.body, rounds.spins.targets[k]!);
+      while (rounds.spins.target === k) step(pw);
+    }
+    const won = roundEnd('cube', rounds, pw)!;
+    expect([won.title, won.won, won.next]).toEqual([`All ${SPIN_TARGETS} spins!`, true, 'Flipping box']);
+    // Three holds of SPIN_HOLD s each, the first step of each hold not yet counted (to a step each).
+    const taken = pw.time - start;
+    expect(Math.abs(taken - SPIN_TARGETS * SPIN_HOLD)).toBeLessThanOrEqual((SPIN_TARGETS + 1) / 60 + 1e-9);
+    expect(won.big).toBe(`${starText(3)} ${taken.toFixed(1)} s`);
+    expect(() => starText(4)).toThrow(/starText: n must be an integer in \[0, 3\], got 4/);
   });
 });

@@ -1,0 +1,64 @@
+/**
+ * The end of a round in each of the rotating cube's modes, for its banner (win-banner.ts): whether the
+ * round is over and what the banner then says: the pads (all reached: the stars by moves against
+ * par), the spins (all three held: the stars by time) and the flips (won with FLIP_GOAL flips in
+ * time, or lost when FLIP_TIME runs out). Pure (no DOM, no three.js).
+ */
+import type { PhysicsWorld } from '@bitphysics/physics';
+import { FLIP_BAND, FLIP_GOAL, type FlipChallenge, type Mode, PAR_SLACK, type PadChallenge, padStars } from './scene';
+import { SPIN_STAR_TIMES, type SpinChallenge } from './spin-challenge';
+import type { WinBannerContent } from './win-banner';
+
+/** `n` stars of three as text: filled then hollow ('★★☆' for 2). @throws RangeError if n is not an integer in [0, 3]. */
+export function starText(n: number): string {
+  if (!Number.isInteger(n) || n < 0 || n > 3) throw new RangeError(`starText: n must be an integer in [0, 3], got ${n}`);
+  return '★'.repeat(n) + '☆'.repeat(3 - n);
+}
+
+/** The three rounds' challenges, as the game keeps them. */
+export interface Rounds {
+  pads: PadChallenge;
+  spins: SpinChallenge;
+  flips: FlipChallenge;
+}
+
+/**
+ * What the banner says at the end of the round of `mode` in `world`, or null while the round runs.
+ * `bestMoves`: the fewest moves of a pad round this visit before this one (Infinity: none).
+ */
+export function roundEnd(mode: Mode, rounds: Rounds, world: PhysicsWorld, bestMoves = Infinity): WinBannerContent | null {
+  const { pads, spins, flips } = rounds;
+  if (mode === 'room') {
+    if (!pads.done) return null;
+    const par = pads.par;
+    return {
+      title: `All ${pads.layout.pads.length} pads!`,
+      big: `${starText(padStars(pads.moves, par))} ${pads.moves} moves`,
+      detail: `par ${par} · ★★★ takes ${par + PAR_SLACK[0]} or fewer · best ${Math.min(bestMoves, pads.moves)} · ${pads.time().toFixed(1)} s`,
+      next: 'New pads',
+      retry: 'Same pads',
+      won: true,
+    };
+  }
+  if (mode === 'cube') {
+    if (!spins.won) return null;
+    return {
+      title: `All ${spins.targets.length} spins!`,
+      big: `${starText(spins.stars())} ${spins.time(world.time).toFixed(1)} s`,
+      detail: `★★★ within ${SPIN_STAR_TIMES[0]} s, ★★ ${SPIN_STAR_TIMES[1]} s · next: a box that flips over`,
+      next: 'Flipping box',
+      retry: 'Again',
+      won: true,
+    };
+  }
+  if (!flips.over(world)) return null;
+  const won = flips.wonAt >= 0;
+  return {
+    title: won ? `${FLIP_GOAL} flips!` : 'Time!',
+    big: won ? `${starText(3)} ${flips.time(world.time).toFixed(1)} s` : `${starText(flips.stars())} ${flips.counter.count} flips`,
+    detail: won ? 'next: back to the pads' : `flips count only while the spin stays ${FLIP_BAND[0]} to ${FLIP_BAND[1]} rad/s`,
+    next: 'Back to the pads',
+    retry: 'Try again',
+    won,
+  };
+}
