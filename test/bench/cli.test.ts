@@ -131,11 +131,13 @@ describe('bench CLI', { timeout: BATCH_TIMEOUT_MS }, () => {
     expect(line.maxOverlapPercent as number).toBeGreaterThanOrEqual(0);
   });
 
-  // Each peer in a worker thread of its own, as a user runs them (the other runs of peers here share
-  // the bench's thread, --same-isolate, which the isolation test below compares with this).
+  // The JSON run: each peer in a worker thread of its own, as a user runs them (the other runs of peers
+  // here share the bench's thread, --same-isolate, which the isolation test below compares with this).
+  // The human-readable run shares it too: its lines are formatted from the same results whichever
+  // thread computed them, and a peer's module is then loaded once for every --same-isolate run of it.
   const vs = ['--scene', 'balls-in-box', '--vs', 'rapier2d,matter'];
   const vsJson = queued([...vs, '--count', '200', '--steps', '20', '--warmup', '2', '--json']);
-  const vsHuman = queued([...vs, '--count', '50', '--steps', '5', '--warmup', '1']);
+  const vsHuman = queued([...vs, '--count', '50', '--steps', '5', '--warmup', '1', '--same-isolate']);
   it('--vs rapier2d,matter gives one line per engine and ours/peer ratios', async () => {
     const [json, human] = await Promise.all([vsJson(), vsHuman()]);
     expect(json.code).toBe(0);
