@@ -828,33 +828,11 @@ function mastBetween(x: number, y: number, z: number, r: number): boolean {
   const h = c.y + u * (y - c.y);
   return h > 0 && h < JIB_HEIGHT && Math.hypot(c.x + u * dx, c.z + u * dz) < 0.41 + r;
 }
-/** Whether the mast is drawn faint this frame (see ghostMast). */
-let mastGhosted = false;
-/**
- * Draws the mast faint (a quarter opaque) while it stands between the camera and the ball or the
- * piece a swing is aimed at: the ball swinging behind it hid the hit from a stranger. Applied to
- * whichever material the mast wears (its lite stand-in too).
- */
-function ghostMast(): void {
-  const P = shell.world.components.Position;
-  const b = handles.ball;
-  // Once faint, it stays so until the ball is 0.3 m further clear (no flicker as it swings at the edge).
-  const margin = mastGhosted ? 0.3 : 0;
-  let hides = isAlive(shell.world, b) && mastBetween(P.x[b]!, P.y[b]!, P.z[b]!, BALL_RADIUS + margin);
-  if (!hides && aimed !== 0 && isAlive(shell.world, aimed)) hides = mastBetween(P.x[aimed]!, P.y[aimed]!, P.z[aimed]!, 0.5 + margin);
-  mastGhosted = hides;
-  const m = mastLattice.material as Material;
-  if (m.transparent === hides && (m.opacity === 0.25) === hides) return;
-  m.transparent = hides;
-  m.opacity = hides ? 0.25 : 1;
-  m.depthWrite = !hides;
-  // The lattice's bars pass the alpha test at a quarter opacity too.
-  m.alphaTest = hides ? 0.1 : 0.5;
-  m.needsUpdate = true;
-}
-// A concrete footing under the mast.
-const footing = new Mesh(new BoxGeometry(2.4, 0.3, 2.4), new MeshStandardMaterial({ color: 0x9a9a94, roughness: 0.95 }));
-footing.position.set(0, 0.15, 0);
+// A concrete pad under the mast, drawn only: 5 cm high, under the ball's lowest (its bottom 6 cm up at
+// the lowest hook), so neither the ball nor a piece knocked against the mast's foot is drawn sinking
+// into it (a 0.3 m slab was; as a static box it turned the low swings that pass the mast aside).
+const footing = new Mesh(new BoxGeometry(2.4, 0.05, 2.4), new MeshStandardMaterial({ color: 0x9a9a94, roughness: 0.95 }));
+footing.position.set(0, 0.025, 0);
 footing.receiveShadow = true;
 app.scene.add(footing);
 // A city on the horizon: its skyline painted around the inside of an open cylinder standing at the
@@ -2260,7 +2238,6 @@ let lastFrameTime = 0;
 function frame(): void {
   updateControls();
   pauseOverlay.update(shell.paused, touch);
-  ghostMast();
   if (swapDue) {
     swapDue = false;
     swapMaterials();
@@ -2483,8 +2460,21 @@ shell.expose({
   nextLevel,
   /** The drawing quality now ('full' or 'lite'; see Quality). */
   quality: (): Quality => params.quality,
-  /** Whether the mast was drawn faint in the last frame (it stood between the camera and the ball or the piece aimed at). */
-  mastGhosted: (): boolean => mastGhosted,
+  /** Whether the mast stands between the camera and the ball now (see mastBetween). */
+  mastHidesBall: (): boolean => {
+    const P = shell.world.components.Position,
+      b = handles.ball;
+    return mastBetween(P.x[b]!, P.y[b]!, P.z[b]!, BALL_RADIUS);
+  },
+  /**
+   * Whether the mast is drawn solid (opaque, writing depth) as it always is: the ball, its chain and
+   * the pieces behind it show through its lattice's open panels and pass behind its bars (drawn
+   * faint while the ball was behind it, they were drawn over it and looked to pass through it).
+   */
+  mastSolid: (): boolean => {
+    const m = mastLattice.material as Material;
+    return !m.transparent && m.opacity === 1 && m.depthWrite;
+  },
   /** Draws at quality 'full' or 'lite' from now on (as the settings panel's choice: the page no longer changes it). */
   setQuality: (q: Quality): void => {
     qualityChosen = true;
