@@ -85,7 +85,6 @@ import {
   FULL_POWER_SHOWN,
   fallenCount,
   HANG,
-  HIT_SPEED,
   hookPosition,
   JIB_HEIGHT,
   LINK_RADIUS,
@@ -97,6 +96,7 @@ import {
   swayAmplitude,
   swingBudget,
   swingPar,
+  swingSpeed,
   swingStars,
   type WreckingBallHandles,
   wreckingBallWorldOptions,
@@ -1477,12 +1477,12 @@ const TAP_PX = 10;
 /** CSS px of pull for a full-power swing; the weakest counts as MIN_POWER. */
 const FULL_PULL_PX = isTouchDevice() ? 110 : 160;
 const MIN_POWER = 0.2;
-/** Power of the arrow a tap shows before any drag. */
-const TAP_POWER = 0.5;
-/** The ball's speed at the piece, m/s, for a pull of power `power` in [MIN_POWER, 1]: 0.45 to 1.15 HIT_SPEED. */
-function swingSpeed(power: number): number {
-  return HIT_SPEED * (0.45 + 0.7 * power);
-}
+/**
+ * Power of the arrow a tap shows before any drag: full (./scene swingSpeed, FULL_SWING_SPEED, the
+ * speed the levels' pars were measured with), so a tap and a second tap swing as hard as the ball
+ * swings without a long wind-up.
+ */
+const TAP_POWER = 1;
 /** The swing the arrow shows now, for ./scene aimAt. */
 function request(): SwingRequest {
   return { direction: aiming.direction, speed: swingSpeed(aiming.power) };
@@ -1602,8 +1602,11 @@ function drawAim(): void {
 }
 /** The piece the last swing was aimed at (marked with a ring and an arrow while the swing runs), or 0. */
 let aimed = 0;
-/** The standing pieces when the last swing was aimed (to count what it brought down), and what it did. */
-const swing = { downBefore: 0, result: '', resultAt: 0, pending: false };
+/**
+ * The standing pieces when the last swing was aimed (to count what it brought down), the ball's
+ * speed it was aimed at (m/s; 0 for a swing planned without a pull), and what it did.
+ */
+const swing = { downBefore: 0, speed: 0, result: '', resultAt: 0, pending: false };
 /**
  * Distance, CSS px, from a standing piece's drawn outline within which a press that misses every
  * piece still takes it: a finger's width on a touch screen, a mouse's slip on a desktop.
@@ -1739,6 +1742,7 @@ function swingAt(piece: number, aim?: SwingRequest): boolean {
   light(piece);
   aimed = piece;
   swing.downBefore = fallenCount(handles.pieces);
+  swing.speed = aim?.speed ?? 0;
   swing.result = '';
   swing.pending = true;
   if (cleared) clearedWith.tapped = true;
@@ -2158,6 +2162,10 @@ const HINT_SHOWN = 3;
 /** World time until which the open-ground hint shows. */
 let hintUntil = -1;
 const tapWord = touch ? 'Tap' : 'Click';
+/** The pull being aimed in words: its power and the ball's speed at the piece it gives (./scene swingSpeed). */
+function pullWords(): string {
+  return `${powerWords(aiming.power)}, ${swingSpeed(aiming.power).toFixed(1)} m/s`;
+}
 /** The hint's text now ('' hides it); once the level is cleared, the level's end in large type. */
 function hintText(): string {
   const c = handles.controls;
@@ -2176,9 +2184,9 @@ function hintText(): string {
   }
   if (aiming.piece !== 0 && aiming.dragged && onRun()) return 'The ball is on its swing: wait till it is done, then aim again';
   if (aiming.piece !== 0 && aiming.dragged && handles.controls.moves.length > 0 && aimed !== 0)
-    return `Winding up… let go to re-aim this swing (no swing used): ${powerWords(aiming.power)}`;
+    return `Winding up… let go to re-aim this swing (no swing used): ${pullWords()}`;
   if (aiming.piece !== 0 && aiming.dragged)
-    return `Let go to swing along the arrow: ${powerWords(aiming.power)}${aiming.power >= FULL_POWER_SHOWN ? '' : ', pull longer for more'}`;
+    return `Let go to swing along the arrow: ${pullWords()}${aiming.power >= FULL_POWER_SHOWN ? '' : ', pull longer for more'}`;
   if (reachedAt >= 0) return '';
   if (outOfSwings()) return '';
   if (shell.world.time < notice.until) return notice.text;
@@ -2218,13 +2226,14 @@ let swapDue = true;
 let runEndedAt = -1;
 /** Height, m, of a block's centre above which a swing at it that brings down 2 or fewer says to aim lower. */
 const HIGH_AIM = 1.2;
-/** Counts the last swing's result ("Hit! N down" or a miss) for the status line; its marks go. */
+/** Counts the last swing's result ("Hit at S m/s! N down" or a miss) for the status line; its marks go. */
 function countResult(): void {
   const down = fallenCount(handles.pieces) - swing.downBefore;
   // A swing struck high (the ball strikes the block aimed at, see ./scene aimAt) that brought down
   // little: the line says where the skill lies.
   const high = aimed !== 0 && isAlive(shell.world, aimed) && (handles.pieces.find((p) => p.body === aimed)?.y0 ?? 0) > HIGH_AIM;
-  swing.result = down > 0 ? `Hit! ${down} down${down <= 2 && high ? ': aim lower to topple more' : ''}` : 'Missed: tap it again';
+  const at = swing.speed > 0 ? ` at ${swing.speed.toFixed(1)} m/s` : '';
+  swing.result = down > 0 ? `Hit${at}! ${down} down${down <= 2 && high ? ': aim lower to topple more' : ''}` : 'Missed: tap it again';
   swing.resultAt = shell.world.time;
   swing.pending = false;
   runEndedAt = -1;
@@ -2448,7 +2457,7 @@ shell.expose({
     ring: goalMarker.visible ? [goalMarker.position.x, goalMarker.position.z] : null,
     old: oldRing.visible,
   }),
-  /** What the last swing did, once counted ('Hit! N down' or 'Missed: tap it again'; '' before). */
+  /** What the last swing did, once counted ('Hit at S m/s! N down', 'Hit! N down' for a planned swing, or 'Missed: tap it again'; '' before). */
   swingResult: (): string => swing.result,
   /** The effects showing now: dust and chips in the air, score popups. */
   effects: () => effects.counts(),
