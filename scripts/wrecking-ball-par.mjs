@@ -97,12 +97,12 @@ const ways = {
 /**
  * The page's tap on piece `piece` and a second tap on it: the swing the arrow shows, the ball coming
  * straight from where it hangs at the tap's power (games/wrecking-ball/main.ts beginAim, TAP_POWER
- * 0.5: 0.8 HIT_SPEED), struck at the piece's own height as the page's swings are.
+ * 1: swingSpeed(1), FULL_SWING_SPEED, 0.8 HIT_SPEED), struck at the piece's own height as the page's swings are.
  */
 const tapTap = (world, h, piece) => {
   const P = world.components.Position;
   const direction = Math.atan2(P.z[piece] - P.z[h.ball], P.x[piece] - P.x[h.ball]);
-  wb.aimAt(world, h, piece, { direction, speed: wb.HIT_SPEED * (0.45 + 0.7 * 0.5) });
+  wb.aimAt(world, h, piece, { direction, speed: wb.swingSpeed(1) });
 };
 const most = {},
   stars = {},

@@ -85,7 +85,6 @@ import {
   FULL_POWER_SHOWN,
   fallenCount,
   HANG,
-  HIT_SPEED,
   hookPosition,
   JIB_HEIGHT,
   LINK_RADIUS,
@@ -97,6 +96,7 @@ import {
   swayAmplitude,
   swingBudget,
   swingPar,
+  swingSpeed,
   swingStars,
   type WreckingBallHandles,
   wreckingBallWorldOptions,
@@ -828,33 +828,11 @@ function mastBetween(x: number, y: number, z: number, r: number): boolean {
   const h = c.y + u * (y - c.y);
   return h > 0 && h < JIB_HEIGHT && Math.hypot(c.x + u * dx, c.z + u * dz) < 0.41 + r;
 }
-/** Whether the mast is drawn faint this frame (see ghostMast). */
-let mastGhosted = false;
-/**
- * Draws the mast faint (a quarter opaque) while it stands between the camera and the ball or the
- * piece a swing is aimed at: the ball swinging behind it hid the hit from a stranger. Applied to
- * whichever material the mast wears (its lite stand-in too).
- */
-function ghostMast(): void {
-  const P = shell.world.components.Position;
-  const b = handles.ball;
-  // Once faint, it stays so until the ball is 0.3 m further clear (no flicker as it swings at the edge).
-  const margin = mastGhosted ? 0.3 : 0;
-  let hides = isAlive(shell.world, b) && mastBetween(P.x[b]!, P.y[b]!, P.z[b]!, BALL_RADIUS + margin);
-  if (!hides && aimed !== 0 && isAlive(shell.world, aimed)) hides = mastBetween(P.x[aimed]!, P.y[aimed]!, P.z[aimed]!, 0.5 + margin);
-  mastGhosted = hides;
-  const m = mastLattice.material as Material;
-  if (m.transparent === hides && (m.opacity === 0.25) === hides) return;
-  m.transparent = hides;
-  m.opacity = hides ? 0.25 : 1;
-  m.depthWrite = !hides;
-  // The lattice's bars pass the alpha test at a quarter opacity too.
-  m.alphaTest = hides ? 0.1 : 0.5;
-  m.needsUpdate = true;
-}
-// A concrete footing under the mast.
-const footing = new Mesh(new BoxGeometry(2.4, 0.3, 2.4), new MeshStandardMaterial({ color: 0x9a9a94, roughness: 0.95 }));
-footing.position.set(0, 0.15, 0);
+// A concrete pad under the mast, drawn only: 5 cm high, under the ball's lowest (its bottom 6 cm up at
+// the lowest hook), so neither the ball nor a piece knocked against the mast's foot is drawn sinking
+// into it (a 0.3 m slab was; as a static box it turned the low swings that pass the mast aside).
+const footing = new Mesh(new BoxGeometry(2.4, 0.05, 2.4), new MeshStandardMaterial({ color: 0x9a9a94, roughness: 0.95 }));
+footing.position.set(0, 0.025, 0);
 footing.receiveShadow = true;
 app.scene.add(footing);
 // A city on the horizon: its skyline painted around the inside of an open cylinder standing at the
@@ -1499,12 +1477,12 @@ const TAP_PX = 10;
 /** CSS px of pull for a full-power swing; the weakest counts as MIN_POWER. */
 const FULL_PULL_PX = isTouchDevice() ? 110 : 160;
 const MIN_POWER = 0.2;
-/** Power of the arrow a tap shows before any drag. */
-const TAP_POWER = 0.5;
-/** The ball's speed at the piece, m/s, for a pull of power `power` in [MIN_POWER, 1]: 0.45 to 1.15 HIT_SPEED. */
-function swingSpeed(power: number): number {
-  return HIT_SPEED * (0.45 + 0.7 * power);
-}
+/**
+ * Power of the arrow a tap shows before any drag: full (./scene swingSpeed, FULL_SWING_SPEED, the
+ * speed the levels' pars were measured with), so a tap and a second tap swing as hard as the ball
+ * swings without a long wind-up.
+ */
+const TAP_POWER = 1;
 /** The swing the arrow shows now, for ./scene aimAt. */
 function request(): SwingRequest {
   return { direction: aiming.direction, speed: swingSpeed(aiming.power) };
@@ -1624,8 +1602,11 @@ function drawAim(): void {
 }
 /** The piece the last swing was aimed at (marked with a ring and an arrow while the swing runs), or 0. */
 let aimed = 0;
-/** The standing pieces when the last swing was aimed (to count what it brought down), and what it did. */
-const swing = { downBefore: 0, result: '', resultAt: 0, pending: false };
+/**
+ * The standing pieces when the last swing was aimed (to count what it brought down), the ball's
+ * speed it was aimed at (m/s; 0 for a swing planned without a pull), and what it did.
+ */
+const swing = { downBefore: 0, speed: 0, result: '', resultAt: 0, pending: false };
 /**
  * Distance, CSS px, from a standing piece's drawn outline within which a press that misses every
  * piece still takes it: a finger's width on a touch screen, a mouse's slip on a desktop.
@@ -1761,6 +1742,7 @@ function swingAt(piece: number, aim?: SwingRequest): boolean {
   light(piece);
   aimed = piece;
   swing.downBefore = fallenCount(handles.pieces);
+  swing.speed = aim?.speed ?? 0;
   swing.result = '';
   swing.pending = true;
   if (cleared) clearedWith.tapped = true;
@@ -2180,6 +2162,10 @@ const HINT_SHOWN = 3;
 /** World time until which the open-ground hint shows. */
 let hintUntil = -1;
 const tapWord = touch ? 'Tap' : 'Click';
+/** The pull being aimed in words: its power and the ball's speed at the piece it gives (./scene swingSpeed). */
+function pullWords(): string {
+  return `${powerWords(aiming.power)}, ${swingSpeed(aiming.power).toFixed(1)} m/s`;
+}
 /** The hint's text now ('' hides it); once the level is cleared, the level's end in large type. */
 function hintText(): string {
   const c = handles.controls;
@@ -2198,9 +2184,9 @@ function hintText(): string {
   }
   if (aiming.piece !== 0 && aiming.dragged && onRun()) return 'The ball is on its swing: wait till it is done, then aim again';
   if (aiming.piece !== 0 && aiming.dragged && handles.controls.moves.length > 0 && aimed !== 0)
-    return `Winding up… let go to re-aim this swing (no swing used): ${powerWords(aiming.power)}`;
+    return `Winding up… let go to re-aim this swing (no swing used): ${pullWords()}`;
   if (aiming.piece !== 0 && aiming.dragged)
-    return `Let go to swing along the arrow: ${powerWords(aiming.power)}${aiming.power >= FULL_POWER_SHOWN ? '' : ', pull longer for more'}`;
+    return `Let go to swing along the arrow: ${pullWords()}${aiming.power >= FULL_POWER_SHOWN ? '' : ', pull longer for more'}`;
   if (reachedAt >= 0) return '';
   if (outOfSwings()) return '';
   if (shell.world.time < notice.until) return notice.text;
@@ -2240,13 +2226,14 @@ let swapDue = true;
 let runEndedAt = -1;
 /** Height, m, of a block's centre above which a swing at it that brings down 2 or fewer says to aim lower. */
 const HIGH_AIM = 1.2;
-/** Counts the last swing's result ("Hit! N down" or a miss) for the status line; its marks go. */
+/** Counts the last swing's result ("Hit at S m/s! N down" or a miss) for the status line; its marks go. */
 function countResult(): void {
   const down = fallenCount(handles.pieces) - swing.downBefore;
   // A swing struck high (the ball strikes the block aimed at, see ./scene aimAt) that brought down
   // little: the line says where the skill lies.
   const high = aimed !== 0 && isAlive(shell.world, aimed) && (handles.pieces.find((p) => p.body === aimed)?.y0 ?? 0) > HIGH_AIM;
-  swing.result = down > 0 ? `Hit! ${down} down${down <= 2 && high ? ': aim lower to topple more' : ''}` : 'Missed: tap it again';
+  const at = swing.speed > 0 ? ` at ${swing.speed.toFixed(1)} m/s` : '';
+  swing.result = down > 0 ? `Hit${at}! ${down} down${down <= 2 && high ? ': aim lower to topple more' : ''}` : 'Missed: tap it again';
   swing.resultAt = shell.world.time;
   swing.pending = false;
   runEndedAt = -1;
@@ -2260,7 +2247,6 @@ let lastFrameTime = 0;
 function frame(): void {
   updateControls();
   pauseOverlay.update(shell.paused, touch);
-  ghostMast();
   if (swapDue) {
     swapDue = false;
     swapMaterials();
@@ -2471,7 +2457,7 @@ shell.expose({
     ring: goalMarker.visible ? [goalMarker.position.x, goalMarker.position.z] : null,
     old: oldRing.visible,
   }),
-  /** What the last swing did, once counted ('Hit! N down' or 'Missed: tap it again'; '' before). */
+  /** What the last swing did, once counted ('Hit at S m/s! N down', 'Hit! N down' for a planned swing, or 'Missed: tap it again'; '' before). */
   swingResult: (): string => swing.result,
   /** The effects showing now: dust and chips in the air, score popups. */
   effects: () => effects.counts(),
@@ -2483,8 +2469,21 @@ shell.expose({
   nextLevel,
   /** The drawing quality now ('full' or 'lite'; see Quality). */
   quality: (): Quality => params.quality,
-  /** Whether the mast was drawn faint in the last frame (it stood between the camera and the ball or the piece aimed at). */
-  mastGhosted: (): boolean => mastGhosted,
+  /** Whether the mast stands between the camera and the ball now (see mastBetween). */
+  mastHidesBall: (): boolean => {
+    const P = shell.world.components.Position,
+      b = handles.ball;
+    return mastBetween(P.x[b]!, P.y[b]!, P.z[b]!, BALL_RADIUS);
+  },
+  /**
+   * Whether the mast is drawn solid (opaque, writing depth) as it always is: the ball, its chain and
+   * the pieces behind it show through its lattice's open panels and pass behind its bars (drawn
+   * faint while the ball was behind it, they were drawn over it and looked to pass through it).
+   */
+  mastSolid: (): boolean => {
+    const m = mastLattice.material as Material;
+    return !m.transparent && m.opacity === 1 && m.depthWrite;
+  },
   /** Draws at quality 'full' or 'lite' from now on (as the settings panel's choice: the page no longer changes it). */
   setQuality: (q: Quality): void => {
     qualityChosen = true;

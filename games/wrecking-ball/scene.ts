@@ -477,6 +477,24 @@ export const STEADY_GAIN = 2 * STEADY_DAMPING * Math.sqrt(9.81 / HANG);
 
 /** Horizontal speed, m/s, the ball has as it reaches the tapped piece (see `aimAt`). */
 export const HIT_SPEED = 6;
+/**
+ * The ball's speed at the piece, m/s, for a full pull of the player's swing (see `swingSpeed`): the
+ * tap's speed the level pars were measured with (0.8 HIT_SPEED). Above it the plans slow down
+ * sharply: the ball must be pumped for a whole swing of its chain to arrive faster (median over
+ * levels 1 to 5, from rest, aimed straight and 30 degrees off: 2.9 s at 4.8 m/s, 3.7 s at 5.4, 4.5 s
+ * at 6, 5.0 s at 6.9, the old full pull), while the wood pieces fall alike (16 targets on levels 1
+ * and 2, struck at 3.5, 4.5 and 5.5 m/s: the same count within 1 on 13 of them).
+ */
+export const FULL_SWING_SPEED = 4.8;
+/**
+ * The ball's speed at the piece, m/s, for a pull of power `power` (share of a full pull, [0, 1]):
+ * 60 % of FULL_SWING_SPEED with no pull, rising evenly to all of it at a full pull.
+ * @throws RangeError on a power outside [0, 1].
+ */
+export function swingSpeed(power: number): number {
+  if (!(power >= 0 && power <= 1)) throw new RangeError(`swingSpeed: power must be in [0, 1], got ${power}`);
+  return FULL_SWING_SPEED * (0.6 + 0.4 * power);
+}
 /** Shortest and longest time, s, from a tap to the ball's arrival that `aimAt` plans for. */
 export const PLAN_TIME_RANGE: readonly [number, number] = [1.2, 10];
 /** Step of the plan times `aimAt` tries, s. */

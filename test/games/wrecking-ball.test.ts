@@ -23,6 +23,7 @@ import {
   buildWreckingBall,
   clearShare,
   clearTarget,
+  FULL_SWING_SPEED,
   fallenCount,
   HANG,
   HIT_SPEED,
@@ -35,6 +36,7 @@ import {
   swayAmplitude,
   swingBudget,
   swingPar,
+  swingSpeed,
   swingStars,
   wreckingBallWorldOptions,
 } from '../../games/wrecking-ball/scene';
@@ -468,7 +470,7 @@ describe('wrecking-ball: a drag-aimed swing', () => {
 
   /**
    * Level `level` (its default seed) settled for 0.5 s, then a swing aimed as a drag aims it (power
-   * `power`, the page's speed 0.45 + 0.7 power of HIT_SPEED) at the piece a third of the way up
+   * `power`, the page's speed: swingSpeed) at the piece a third of the way up
    * structure `index` (pieces grouped by start centre within 2.5 m), from straight where the ball
    * hangs, turned `turn` rad. Returns the seconds to the ball's first touch of that structure (within
    * 12 s) and the angle, rad, between the ball's horizontal velocity then and the direction asked.
@@ -488,12 +490,77 @@ describe('wrecking-ball: a drag-aimed swing', () => {
     const P = world.components.Position,
       V = world.components.Velocity;
     const direction = Math.atan2(P.z[piece.body]! - P.z[h.ball]!, P.x[piece.body]! - P.x[h.ball]!) + turn;
-    aimAt(world, h, piece.body, { direction, speed: HIT_SPEED * (0.45 + 0.7 * power) });
+    aimAt(world, h, piece.body, { direction, speed: swingSpeed(power) });
     const toHit = untilBallTouches(world, h.ball, g, 12);
     if (toHit === Number.POSITIVE_INFINITY) return { toHit, off: Math.PI };
     const along = Math.atan2(V.z[h.ball]!, V.x[h.ball]!);
     return { toHit, off: Math.abs(Math.atan2(Math.sin(along - direction), Math.cos(along - direction))) };
   }
+
+  /** Level `level` from the page's start (openStart), settled `wait` steps; its structures (start centres within 2.5 m) and each one's piece a third of the way up. */
+  function thirds(level: number, wait: number) {
+    const world = createPhysicsWorld(wreckingBallWorldOptions());
+    const h = buildWreckingBall(world, { level, openStart: true });
+    for (let k = 0; k < wait; k++) step(world);
+    const groups: (typeof h.pieces)[] = [];
+    for (const p of h.pieces) {
+      const g = groups.find((q) => Math.hypot(q[0]!.x0 - p.x0, q[0]!.z0 - p.z0) < 2.5);
+      if (g) g.push(p);
+      else groups.push([p]);
+    }
+    const targets = groups.map((g) => [...g].sort((a, b) => a.y0 - b.y0)[Math.floor(g.length / 3)]!);
+    /** Aims a swing at `piece` as a drag straight from the ball would, at `speed` m/s; returns the plan's seconds to the hit. */
+    const swingAt = (piece: (typeof h.pieces)[number], speed: number): number => {
+      const P = world.components.Position;
+      const direction = Math.atan2(P.z[piece.body]! - P.z[h.ball]!, P.x[piece.body]! - P.x[h.ball]!);
+      aimAt(world, h, piece.body, { direction, speed });
+      return h.controls.moves.reduce((t, m) => t + (m.follow ? 0 : m.duration), 0);
+    };
+    return { world, h, targets, swingAt };
+  }
+
+  it("a full pull winds up quickly: its plan is about half the old full pull's", () => {
+    // A stranger pulled to full power and waited: at the old full pull's 6.9 m/s the ball had to be
+    // pumped a whole swing of its chain (4.6 s). At FULL_SWING_SPEED the plans to each structure of
+    // levels 1 and 2, the ball at rest, straight from it, take a median under 3 s; the same plans at
+    // 6.9 m/s over 4 s (the measure tells them apart). Measured: see the console line.
+    const plans = (speed: number) =>
+      [1, 2]
+        .flatMap((level) => {
+          const { targets, swingAt } = thirds(level, 30);
+          return targets.map((p) => swingAt(p, speed));
+        })
+        .sort((a, b) => a - b);
+    const full = plans(swingSpeed(1)),
+      old = plans(6.9);
+    const median = (v: number[]) => v[Math.floor(v.length / 2)]!;
+    console.log(
+      `plans at ${swingSpeed(1)} m/s: ${full.map((t) => t.toFixed(1)).join(' ')}; at 6.9 m/s: ${old.map((t) => t.toFixed(1)).join(' ')}`,
+    );
+    expect(swingSpeed(1)).toBe(FULL_SWING_SPEED);
+    expect(median(full)).toBeLessThan(3);
+    expect(median(old)).toBeGreaterThan(4);
+    expect(() => swingSpeed(1.1)).toThrow(/swingSpeed: power must be in \[0, 1\], got 1.1/);
+  });
+
+  it('the same swing brings down the same count: a full pull at the plank stack from three moments of rest', () => {
+    // A stranger saw one swing bring down 1 and the same swing 11. The swing is the same whenever it
+    // is let go from the ball at rest (the level settled 0.5, 0.6 or 0.7 s): the same count within 1.
+    const counts = [30, 36, 42].map((wait) => {
+      const { world, h, targets, swingAt } = thirds(1, wait);
+      const stack = targets.find((p) => p.kind === 'planks')!;
+      const plan = swingAt(stack, swingSpeed(1));
+      for (let t = 0; t < plan + 3; t += world.dt) {
+        step(world);
+        scorePieces(world, h.pieces);
+      }
+      return fallenCount(h.pieces);
+    });
+    console.log(`plank stack, full pull: ${counts.join(' ')} down`);
+    expect(Math.max(...counts) - Math.min(...counts)).toBeLessThanOrEqual(1);
+    // Measured: 10 down each time (the stack has 12 planks).
+    expect(Math.min(...counts)).toBeGreaterThanOrEqual(8);
+  });
 
   it('strikes the piece the player aimed at at its own height: the wall top row at the top row, a swing planned for them lower', () => {
     // A swing planned for the player struck a tapped top brick at STRIKE_SHARE of the wall's height
