@@ -21,7 +21,8 @@
 // Flags: --scene (default pyramid), --count (scene default), --steps (default 8), --runs (default 7
 // per tree), --seed (default 1), --show a-b (the steps printed one by one, default 0-<steps>),
 // --deopts, --flags "<Node or V8 flags for every run>" (an experiment: --flags=--no-lazy-feedback-allocation; the = is needed).
-// Exit code 2 on a usage error. Linux only (the main thread's CPU time).
+// --warm-up (call warmUp(2) before making the world, as a program may during its loading; the steps
+// then show what is left after it). Exit code 2 on a usage error. Linux only (the main thread's CPU time).
 
 import { execFileSync } from 'node:child_process';
 import { mkdtempSync, readFileSync, rmSync, symlinkSync, writeFileSync } from 'node:fs';
@@ -33,7 +34,7 @@ import { bundlePhysics } from './physics-bundle.mjs';
 
 function usage(message) {
   console.error(
-    `first-steps: ${message}\nusage: node scripts/first-steps.mjs [rev] [--scene pyramid] [--count n] [--steps 8] [--runs 7] [--seed 1] [--show a-b] [--deopts] [--flags="--v8-flag ..."]`,
+    `first-steps: ${message}\nusage: node scripts/first-steps.mjs [rev] [--scene pyramid] [--count n] [--steps 8] [--runs 7] [--seed 1] [--show a-b] [--deopts] [--flags="--v8-flag ..."] [--warm-up]`,
   );
   process.exit(2);
 }
@@ -51,6 +52,7 @@ try {
       show: { type: 'string' },
       deopts: { type: 'boolean', default: false },
       flags: { type: 'string', default: '' },
+      'warm-up': { type: 'boolean', default: false },
     },
   });
 } catch (e) {
@@ -77,8 +79,9 @@ if (!readFileSync('/proc/thread-self/schedstat', { encoding: 'utf8', flag: 'r' }
 /** The child: builds the scene from `bundle`, steps it, prints one JSON line (per-step times, ms, and the state hash). */
 const CHILD = `
 import { readFileSync } from 'node:fs';
-const [bundle, scene, count, steps, seed] = JSON.parse(process.argv[2]);
+const [bundle, scene, count, steps, seed, warm] = JSON.parse(process.argv[2]);
 const M = await import(bundle);
+if (warm) M.warmUp(2);
 const s = M.SCENES[scene];
 if (!s) { console.log(JSON.stringify({ error: 'unknown scene ' + scene + ' (scenes: ' + Object.keys(M.SCENES).join(', ') + ')' })); process.exit(0); }
 const options = count === null ? { seed } : { count, seed };
@@ -128,7 +131,7 @@ try {
           ...nodeFlags,
           ...(values.deopts ? ['--trace-deopt'] : []),
           child,
-          JSON.stringify([t.bundle, values.scene, count ?? null, steps, seed]),
+          JSON.stringify([t.bundle, values.scene, count ?? null, steps, seed, values['warm-up']]),
         ],
         { encoding: 'utf8', maxBuffer: 1 << 28 },
       );
