@@ -25,46 +25,29 @@
 // then show what is left after it). Exit code 2 on a usage error. Linux only (the main thread's CPU time).
 
 import { execFileSync } from 'node:child_process';
-import { mkdtempSync, readFileSync, rmSync, symlinkSync, writeFileSync } from 'node:fs';
+import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
-import { parseArgs } from 'node:util';
 import { root } from './build.mjs';
 import { bundlePhysics } from './physics-bundle.mjs';
+import { checkOut, removeCheckout, scriptCli } from './script-cli.mjs';
 
-function usage(message) {
-  console.error(
-    `first-steps: ${message}\nusage: node scripts/first-steps.mjs [rev] [--scene pyramid] [--count n] [--steps 8] [--runs 7] [--seed 1] [--show a-b] [--deopts] [--flags="--v8-flag ..."] [--warm-up]`,
-  );
-  process.exit(2);
-}
-
-let parsed;
-try {
-  parsed = parseArgs({
-    allowPositionals: true,
-    options: {
-      scene: { type: 'string', default: 'pyramid' },
-      count: { type: 'string' },
-      steps: { type: 'string', default: '8' },
-      runs: { type: 'string', default: '7' },
-      seed: { type: 'string', default: '1' },
-      show: { type: 'string' },
-      deopts: { type: 'boolean', default: false },
-      flags: { type: 'string', default: '' },
-      'warm-up': { type: 'boolean', default: false },
-    },
-  });
-} catch (e) {
-  usage(e.message);
-}
-const { values, positionals } = parsed;
+const { values, positionals, usage, integer } = scriptCli(
+  'first-steps',
+  'node scripts/first-steps.mjs [rev] [--scene pyramid] [--count n] [--steps 8] [--runs 7] [--seed 1] [--show a-b] [--deopts] [--flags="--v8-flag ..."] [--warm-up]',
+  {
+    scene: { type: 'string', default: 'pyramid' },
+    count: { type: 'string' },
+    steps: { type: 'string', default: '8' },
+    runs: { type: 'string', default: '7' },
+    seed: { type: 'string', default: '1' },
+    show: { type: 'string' },
+    deopts: { type: 'boolean', default: false },
+    flags: { type: 'string', default: '' },
+    'warm-up': { type: 'boolean', default: false },
+  },
+);
 if (positionals.length > 1) usage('give at most one git revision');
-const integer = (name, text, min) => {
-  const v = Number(text);
-  if (!Number.isInteger(v) || v < min) usage(`--${name} must be an integer >= ${min}, got ${text}`);
-  return v;
-};
 const steps = integer('steps', values.steps, 1),
   runs = integer('runs', values.runs, 1),
   seed = integer('seed', values.seed, 0);
@@ -104,18 +87,10 @@ const temp = mkdtempSync(join(tmpdir(), 'bitphysics-first-steps-'));
 const child = join(temp, 'child.mjs');
 writeFileSync(child, CHILD);
 const rev = positionals[0];
-const base = join(temp, 'tree');
+const base = rev === undefined ? null : checkOut(rev, temp, usage);
 const trees = [];
 try {
-  if (rev !== undefined) {
-    try {
-      execFileSync('git', ['-C', root, 'worktree', 'add', '--detach', '--quiet', base, rev], { stdio: ['ignore', 'ignore', 'inherit'] });
-    } catch {
-      rmSync(temp, { recursive: true, force: true });
-      usage(`cannot check out ${rev}`);
-    }
-    // The revision's sources resolve their packages (bitecs) from this tree's node_modules.
-    symlinkSync(join(root, 'node_modules'), join(base, 'node_modules'), 'dir');
+  if (base !== null) {
     await bundlePhysics(temp, base, 'rev');
     trees.push({ name: rev, bundle: join(temp, 'rev.mjs'), results: [], deopts: new Map() });
   }
@@ -195,6 +170,6 @@ try {
       for (const [k, n] of list) console.log(`    ${n} ${k}`);
     }
 } finally {
-  if (rev !== undefined) execFileSync('git', ['-C', root, 'worktree', 'remove', '--force', base], { stdio: 'ignore' });
+  if (base !== null) removeCheckout(base);
   rmSync(temp, { recursive: true, force: true });
 }
