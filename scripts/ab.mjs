@@ -19,48 +19,30 @@
 // threads while the step runs (V8's background compiler and garbage collector, and a threaded world's
 // workers), so it measures work done, not latency.
 
-import { execFileSync } from 'node:child_process';
-import { mkdtempSync, rmSync, symlinkSync } from 'node:fs';
+import { mkdtempSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
-import { parseArgs } from 'node:util';
 import { root } from './build.mjs';
 import { bundlePhysics } from './physics-bundle.mjs';
+import { checkOut, removeCheckout, scriptCli } from './script-cli.mjs';
 
 /** A bad flag found only once the packages are built (an unknown scene): reported as a usage error. */
 class UsageError extends Error {}
 
-function usage(message) {
-  console.error(
-    `ab: ${message}\nusage: node scripts/ab.mjs <rev> [--scene balls-in-box] [--count n] [--threads n] [--steps n] [--window a-b] [--seed n] [--clock wall|cpu]`,
-  );
-  process.exit(2);
-}
-
-let parsed;
-try {
-  parsed = parseArgs({
-    allowPositionals: true,
-    options: {
-      scene: { type: 'string', default: 'balls-in-box' },
-      count: { type: 'string' },
-      threads: { type: 'string', default: '1' },
-      steps: { type: 'string', default: '330' },
-      window: { type: 'string', default: '150-250' },
-      seed: { type: 'string', default: '1' },
-      clock: { type: 'string', default: 'wall' },
-    },
-  });
-} catch (e) {
-  usage(e.message);
-}
-const { values, positionals } = parsed;
+const { values, positionals, usage, integer } = scriptCli(
+  'ab',
+  'node scripts/ab.mjs <rev> [--scene balls-in-box] [--count n] [--threads n] [--steps n] [--window a-b] [--seed n] [--clock wall|cpu]',
+  {
+    scene: { type: 'string', default: 'balls-in-box' },
+    count: { type: 'string' },
+    threads: { type: 'string', default: '1' },
+    steps: { type: 'string', default: '330' },
+    window: { type: 'string', default: '150-250' },
+    seed: { type: 'string', default: '1' },
+    clock: { type: 'string', default: 'wall' },
+  },
+);
 if (positionals.length !== 1) usage('give one git revision to compare the working tree with');
-const integer = (name, text, min) => {
-  const v = Number(text);
-  if (!Number.isInteger(v) || v < min) usage(`--${name} must be an integer >= ${min}, got ${text}`);
-  return v;
-};
 const threads = integer('threads', values.threads, 1),
   steps = integer('steps', values.steps, 1),
   seed = integer('seed', values.seed, 0);
@@ -81,16 +63,8 @@ const now =
 
 const rev = positionals[0];
 const temp = mkdtempSync(join(tmpdir(), 'bitphysics-ab-'));
-const base = join(temp, 'tree');
+const base = checkOut(rev, temp, usage);
 try {
-  execFileSync('git', ['-C', root, 'worktree', 'add', '--detach', '--quiet', base, rev], { stdio: ['ignore', 'ignore', 'inherit'] });
-} catch {
-  rmSync(temp, { recursive: true, force: true });
-  usage(`cannot check out ${rev}`);
-}
-try {
-  // The revision's sources resolve their packages (bitecs) from this tree's node_modules.
-  symlinkSync(join(root, 'node_modules'), join(base, 'node_modules'), 'dir');
   const A = await bundlePhysics(temp, base, 'rev'),
     B = await bundlePhysics(temp, root, 'tree');
   const make = (M) => {
@@ -141,6 +115,6 @@ try {
   console.error(`ab: ${e.message}`);
   process.exitCode = 2;
 } finally {
-  execFileSync('git', ['-C', root, 'worktree', 'remove', '--force', base], { stdio: 'ignore' });
+  removeCheckout(base);
   rmSync(temp, { recursive: true, force: true });
 }
