@@ -118,7 +118,9 @@ import {
   ringWay,
 } from './course';
 import { createCrash } from './crash';
+import { FRAME_CAP, STEPS_PER_FRAME, slowMotion } from './pacing';
 import { createScenery, HORIZON_COLOUR, SUN_DIRECTION } from './scenery';
+import { clearPulse, createPulse, type Pulse, pressPulse, pulseOn, releasePulse } from './tap-latch';
 
 const params = {
   seed: seedParam(),
@@ -188,8 +190,10 @@ function createWorld(): PhysicsWorld {
     warning: '',
   });
   Object.assign(assistState, createAssistState());
-  keyInput.pitch = keyInput.roll = 0;
+  keyInput.pitch = keyInput.roll = keyInput.yaw = 0;
   stickFlown.x = stickFlown.y = 0;
+  // A tap before the reset does not carry over; a key still held goes on acting.
+  for (const pulse of [...keyPulses.values(), stickPulse]) pulse.since = Number.NEGATIVE_INFINITY;
   rings = layCourse({ terrain: handles.terrain, seed: params.seed + 7, count: params.rings, start: [0, START_ALTITUDE, 0] });
   events.length = 0;
   doneAt.clear();
@@ -293,18 +297,18 @@ const axisHeld = new Set<string>();
 const batch = { start: 0, end: 0, step: 0, lastWall: -Infinity };
 /**
  * Brings `axisHeld` to the moment of the frame's span this step stands for: the steps of a frame
- * (run back to back, less than 4 ms apart) share its span, at most 0.15 s (the loop's maxFrameTime),
+ * (run back to back, less than 4 ms apart) share its span, at most FRAME_CAP s (the loop's maxFrameTime),
  * evenly. A key released in the step it was pressed in is released in the next step.
  */
 function axisKeysAt(dt: number): void {
   const wall = performance.now();
   if (wall - batch.lastWall > 4) {
-    batch.start = Math.max(batch.end, wall - 150);
+    batch.start = Math.max(batch.end, wall - 1000 * FRAME_CAP);
     batch.end = wall;
     batch.step = 0;
   }
   batch.lastWall = wall;
-  const n = Math.max(1, Math.min(9, Math.round((batch.end - batch.start) / (1000 * dt))));
+  const n = Math.max(1, Math.min(STEPS_PER_FRAME, Math.round((batch.end - batch.start) / (1000 * dt))));
   batch.step++;
   const upTo = batch.step >= n ? Number.POSITIVE_INFINITY : batch.start + (batch.step * (batch.end - batch.start)) / n;
   const pressed = new Set<string>();
@@ -315,12 +319,39 @@ function axisKeysAt(dt: number): void {
     if (ev.down) {
       axisHeld.add(ev.key);
       pressed.add(ev.key);
-    } else axisHeld.delete(ev.key);
+      pressPulse(pulseOf(ev.key));
+    } else {
+      axisHeld.delete(ev.key);
+      releasePulse(pulseOf(ev.key));
+    }
   }
+}
+/**
+ * Each flying key's press as the steps see it (./tap-latch.ts): the axis keys' as `axisKeysAt` brings
+ * them to the step's moment, the rudder's (Q, E) as they come. A tap acts for at least MIN_PULSE s.
+ */
+const keyPulses = new Map<string, Pulse>();
+/** The pulse of `key`, made at its first use. */
+function pulseOf(key: string): Pulse {
+  let p = keyPulses.get(key);
+  if (!p) keyPulses.set(key, (p = createPulse()));
+  return p;
+}
+/** The rudder's keys (the phone's Rudder buttons send them too). */
+const RUDDER_KEYS = new Set(['q', 'e']);
+/** The on-screen stick's press (./tap-latch.ts) and the largest input of that press: a flick shorter than a frame still acts. */
+const stickPulse = createPulse();
+const stickLatched = { x: 0, y: 0 };
+/** Forgets every press (a reset, the page losing the focus). */
+function clearPulses(): void {
+  for (const p of keyPulses.values()) clearPulse(p);
+  clearPulse(stickPulse);
+  stickLatched.x = stickLatched.y = 0;
 }
 addEventListener('keydown', (e) => {
   const key = e.key.toLowerCase();
   if (AXIS_KEYS.has(key) && !e.repeat) axisEvents.push({ key, down: true, time: e.timeStamp });
+  if (RUDDER_KEYS.has(key)) pressPulse(pulseOf(key));
   held.add(key);
   if (e.key === 'Shift' || e.key.startsWith('Arrow') || e.key === ' ') e.preventDefault();
   if (FLIGHT_KEYS.has(key)) pilotGoes();
@@ -336,10 +367,12 @@ addEventListener('keydown', (e) => {
 addEventListener('keyup', (e) => {
   const key = e.key.toLowerCase();
   if (AXIS_KEYS.has(key)) axisEvents.push({ key, down: false, time: e.timeStamp });
+  if (RUDDER_KEYS.has(key)) releasePulse(pulseOf(key));
   held.delete(key);
 });
 addEventListener('blur', () => {
   held.clear();
+  clearPulses();
   axisEvents.length = 0;
   axisHeld.clear();
 });
@@ -347,20 +380,46 @@ addEventListener('blur', () => {
 const clamp1 = (x: number): number => Math.max(-1, Math.min(1, x));
 
 /** The keyboard's climb / dive and bank inputs, ramped while a key is held (./assist.ts `rampKey`), in [-1, 1]. */
-const keyInput = { pitch: 0, roll: 0 };
+const keyInput = { pitch: 0, roll: 0, yaw: 0 };
 
-/** Moves the keyboard's ramped inputs over a step of `dt` s towards the keys held now. */
-function rampKeys(dt: number): void {
+/**
+ * Moves the keyboard's ramped inputs over a step of `dt` s at game time `time` (s) towards the keys
+ * acting now (held, or tapped less than MIN_PULSE s ago: ./tap-latch.ts), and the stick's towards its
+ * input (or, for a flick already let go, the flick's latched input while its pulse lasts).
+ */
+function rampKeys(dt: number, time: number): void {
   axisKeysAt(dt);
-  const k = axisHeld;
-  const up = k.has('arrowup') || k.has('w') ? 1 : 0,
-    down = k.has('arrowdown') || k.has('s') ? 1 : 0,
-    right = k.has('arrowright') || k.has('d') ? 1 : 0,
-    left = k.has('arrowleft') || k.has('a') ? 1 : 0;
+  // Every key's pulse is read at every step (no short cut), so that a press starts its pulse at the first step after it.
+  const on = (a: string, b: string): number => Number(pulseOn(pulseOf(a), time)) | Number(pulseOn(pulseOf(b), time));
+  const up = on('arrowup', 'w'),
+    down = on('arrowdown', 's'),
+    right = on('arrowright', 'd'),
+    left = on('arrowleft', 'a');
   keyInput.pitch = rampKey(keyInput.pitch, up - down, dt);
   keyInput.roll = rampKey(keyInput.roll, right - left, dt, BANK_KEY_RAMP);
-  stickFlown.x = smoothStick(stickFlown.x, stickInput.x, dt);
-  stickFlown.y = smoothStick(stickFlown.y, stickInput.y, dt);
+  const flick = pulseOn(stickPulse, time) && stickInput.x === 0 && stickInput.y === 0;
+  stickFlown.x = smoothStick(stickFlown.x, flick ? stickLatched.x : stickInput.x, dt);
+  stickFlown.y = smoothStick(stickFlown.y, flick ? stickLatched.y : stickInput.y, dt);
+  keyInput.yaw = Number(pulseOn(pulseOf('e'), time)) - Number(pulseOn(pulseOf('q'), time));
+}
+
+/**
+ * Sets the stick's input `r` (after its response curve): pressed while it is off the centre, its
+ * largest input latched for a flick shorter than a frame (`rampKeys`).
+ */
+function setStickInput(r: { x: number; y: number }): void {
+  stickInput.x = r.x;
+  stickInput.y = r.y;
+  if (r.x === 0 && r.y === 0) {
+    releasePulse(stickPulse);
+    return;
+  }
+  if (!stickPulse.down) stickLatched.x = stickLatched.y = 0;
+  pressPulse(stickPulse);
+  if (Math.hypot(r.x, r.y) >= Math.hypot(stickLatched.x, stickLatched.y)) {
+    stickLatched.x = r.x;
+    stickLatched.y = r.y;
+  }
 }
 
 /** The pilot's inputs now, keys (ramped) and stick added: roll + right, pitch + nose up, yaw + nose right. */
@@ -370,7 +429,7 @@ function pilotInput(): { roll: number; pitch: number; yaw: number } {
   return {
     roll: clamp1(keyInput.roll + stickFlown.x),
     pitch: clamp1(sign * (keyInput.pitch + stickFlown.y)),
-    yaw: (held.has('e') ? 1 : 0) - (held.has('q') ? 1 : 0),
+    yaw: keyInput.yaw,
   };
 }
 
@@ -402,7 +461,7 @@ function stepWorld(world: PhysicsWorld): void {
   }
   const dt = world.dt,
     e = handles.body;
-  rampKeys(dt);
+  rampKeys(dt, world.time);
   const input = pilotInput();
   const s = flightState(world, e);
   // Held past THROTTLE_KEY.hold s after its press (which stepped it), Faster or Slower moves the throttle on.
@@ -636,13 +695,11 @@ const game = await startThreeGame({
   createWorld,
   step: stepWorld,
   bodies: () => 1,
-  // The game's time keeps pace with the clock down to 6.7 frames a second (9 steps of 1/60 s a
-  // frame; by default the loop ran at most 4, so below 15 fps the flight went in slow motion and a
-  // held key did less per real second). A step costs about 0.2 ms; the handling stays the fixed
-  // step's whatever the frame rate. No more than 0.15 s a frame: a key's tap still shows as a
-  // ramped input, not a full one (KEY_RAMP: 0.12 of full after a 0.1 s tap).
-  maxFrameTime: 0.15,
-  maxStepsPerFrame: 9,
+  // The game's time keeps pace with the clock down to 10 frames a second; slower, it goes in slow
+  // motion and says so (./pacing.ts): the aircraft moves no more than FRAME_CAP s of flight between
+  // two pictures. A step costs about 0.2 ms; the handling stays the fixed step's whatever the frame rate.
+  maxFrameTime: FRAME_CAP,
+  maxStepsPerFrame: STEPS_PER_FRAME,
   // The flight waits for the pilot's first input (`holding`).
   paused: true,
   controls: [
@@ -929,6 +986,24 @@ const missFlash = overlay(
   'left: 0; top: 0; right: 0; bottom: 0; transform: none; box-shadow: inset 0 0 60px 18px rgba(255, 70, 40, 0.85); opacity: 0; z-index: 5;',
 );
 missFlash.dataset.hud = 'miss-flash';
+/**
+ * "Slow motion" in the scene's bottom left corner while the frame rate is under 10 a second
+ * (./pacing.ts slowMotion): the flight then runs slower than the clock, so the pilot keeps control.
+ */
+const slowNote = overlay(
+  `left: 8px; bottom: 8px; transform: none; padding: 2px 10px; border-radius: 10px; background: rgba(8, 12, 20, 0.8); color: #ffd166; font: 700 ${compact ? 12 : 14}px system-ui, sans-serif; white-space: nowrap; display: none;`,
+);
+slowNote.dataset.hud = 'slow-motion';
+/** Whether the slow-motion note shows (tests). */
+let slowShown = false;
+/** Shows or hides the slow-motion note for the loop's measured frame rate. */
+function showSlowMotion(): void {
+  slowShown = slowMotion(slowShown, shell.loop.fps) && state.phase === 'flying' && !shell.paused;
+  const text = `Slow motion: ${Math.round(shell.loop.fps)} frames a second`;
+  if (slowShown && slowNote.textContent !== text) slowNote.textContent = text;
+  const display = slowShown ? 'block' : 'none';
+  if (slowNote.style.display !== display) slowNote.style.display = display;
+}
 const MISS_FLASH = 1.2;
 /** How long a banner stays, s of game time. */
 const BANNER_LIFE = 2;
@@ -1667,6 +1742,7 @@ function frame(alpha = 1): void {
   // Paused by the pilot (P, the toolbar's button): the scene dims and says so. A wait for the pilot
   // (`holding`) is said by the tip instead, over the ring it is about.
   pauseOverlay.update(shell.paused && !holding, touchFirst);
+  showSlowMotion();
   if (!app.pacer.mayDraw()) {
     updateBanner(world.time);
     updateGoal();
@@ -1825,8 +1901,7 @@ createStick({
   onChange: (x, y) => {
     // Progressive: a small dead zone, gentle near the centre, full at the rim (./assist.ts stickResponse).
     const r = stickResponse(x, y);
-    stickInput.x = r.x;
-    stickInput.y = r.y;
+    setStickInput(r);
     // Any touch goes on from a wait, even one inside the dead zone.
     if (x !== 0 || y !== 0) pilotGoes();
   },
@@ -1914,9 +1989,7 @@ shell.expose({
   aircraftBody: () => handles.body,
   /** Sets the stick as the on-screen one does: deflection x right, y up, each clamped to [-1, 1], through ./assist.ts stickResponse. */
   setStick: (x: number, y: number): void => {
-    const r = stickResponse(clamp1(x), clamp1(y));
-    stickInput.x = r.x;
-    stickInput.y = r.y;
+    setStickInput(stickResponse(clamp1(x), clamp1(y)));
   },
   /**
    * Starts recording every step's [game time s, bank degrees (right +), keys' bank input in [-1, 1],
