@@ -90,6 +90,7 @@ import {
   throttleStep,
 } from './assist';
 import { createAttitudeIndicator } from './attitude-indicator';
+import { courseTipText, LESSON_RINGS } from './coach';
 import { createCockpit } from './cockpit';
 import {
   compareWithBest,
@@ -1404,10 +1405,10 @@ function climbKey(up: number): string {
   return up > 0 !== params.pilotPitch ? '↑' : '↓';
 }
 
-/** The tip for the next ring now, or '' (none after the lessons, or once the flight is over). */
+/** The tip for the next ring now (a lesson's, then the coach's), or '' (once the flight is over). */
 function lessonTip(): string {
   const i = nextRing(rings);
-  if (state.phase !== 'flying' || i < 0 || i > 3) {
+  if (state.phase !== 'flying' || i < 0) {
     tipRing = -1;
     return '';
   }
@@ -1421,15 +1422,22 @@ function lessonTip(): string {
   // Ring 1's tip is the start's, up while the flight waits; on a phone each tip goes a little after
   // the pilot has acted on it (TIP_LINGER), so it does not cover the sky all the way to its ring.
   if ((i === 0 && !holding) || shell.world.time >= tipGoneAt) return '';
-  return lessonTipText(i, tipWay, { touch: touchFirst, compact, pilotPitch: params.pilotPitch });
+  const reader = { touch: touchFirst, compact, pilotPitch: params.pilotPitch };
+  // After the lessons the coach says where each ring lies and what to do, to the last (./coach.ts).
+  if (i >= LESSON_RINGS) return courseTipText(i, rings.length, tipWay, reader, pathAim.visible && pathAim.inside);
+  return lessonTipText(i, tipWay, reader);
 }
+
+/** What to touch on a phone, and where: the round stick under the scene, at its left. */
+const STICK_WHERE = 'Drag the round stick (bottom left) up or sideways';
 
 /** What the tip's second line asks while the flight waits for the pilot (`holding`): the input that goes on. */
 function waitLine(): string {
   if (!holding) return '';
-  if (tipRing === 0) return touchFirst ? 'Move the stick to start.' : 'Press an arrow key to start.';
+  // The stick is named with its place: "move the stick" alone left a stranger looking for one.
+  if (tipRing === 0) return touchFirst ? `${STICK_WHERE} to start.` : 'Press an arrow key to start.';
   const key = tipWay.side ? (tipWay.side > 0 ? '→' : '←') : tipWay.up ? climbKey(tipWay.up) : 'an arrow key';
-  return touchFirst ? 'Paused: move the stick to fly on.' : `Paused: press ${key} to fly on.`;
+  return touchFirst ? 'Paused: drag the stick (bottom left) to fly on.' : `Paused: press ${key} to fly on.`;
 }
 
 /** Shows the lesson tip for the next ring, if any (its place: `placeMessages`). */
@@ -1963,9 +1971,16 @@ shell.expose({
   rings: () => rings.map((r) => ({ ...r })),
   /** The lesson tip over the scene now ('' when none shows). */
   tip: () => tipText,
-  /** Every tip this page can show (./course.ts lessonTipText for rings 1 to 4 and each of RING_WAYS), for its reader: the worst case's fit is tested. */
-  tipTexts: () =>
-    [0, 1, 2, 3].flatMap((i) => RING_WAYS.map((w) => lessonTipText(i, w, { touch: touchFirst, compact, pilotPitch: params.pilotPitch }))),
+  /** Every tip this page can show (./course.ts lessonTipText for rings 1 to 4, ./coach.ts courseTipText for rings 5 and 10 of 10, each of RING_WAYS), for its reader: the worst case's fit is tested. */
+  tipTexts: () => {
+    const reader = { touch: touchFirst, compact, pilotPitch: params.pilotPitch };
+    // The coach's (./coach.ts) for ring 5 of 10 and the last (the longest names), each way and on course.
+    const coach = [LESSON_RINGS, 9].flatMap((i) => [
+      ...RING_WAYS.map((w) => courseTipText(i, 10, w, reader, false)),
+      courseTipText(i, 10, RING_WAYS[0]!, reader, true),
+    ]);
+    return [...[0, 1, 2, 3].flatMap((i) => RING_WAYS.map((w) => lessonTipText(i, w, reader))), ...coach];
+  },
   /** Game time at which the tip now shown goes, s (Infinity: it stays while its ring is next). */
   tipUntil: () => tipGoneAt,
   /** How long the next ring has fallen behind without a break, s (at LEFT_BEHIND_TIME it is missed: ./course.ts leaveBehind). */

@@ -13,6 +13,7 @@ import { createPhysicsWorld, setBodyThrust, setControlDeflection, step } from '@
 import { AIRCRAFT, aircraft, aircraftLevelDrag, terrainHeight } from '@bitphysics/projects';
 import { describe, expect, it } from 'vitest';
 import { AILERON_SCALE, ASSIST, assist, CONTROL_AUTHORITY, createAssistState, flightState } from '../../games/flight-simulator/assist';
+import { courseTipText, LESSON_RINGS } from '../../games/flight-simulator/coach';
 import {
   compareWithBest,
   courseStars,
@@ -400,6 +401,46 @@ describe('flight simulator course', () => {
     expect(longest).toBeLessThanOrEqual(90);
     expect(lessonTipText(0, worst, phone)).toMatch(/^Fly through the yellow rings\. ⊕ .*stick\.$/);
     expect(() => lessonTipText(4, worst, phone)).toThrow(/lessonTipText: ring must be an integer in \[0, 3\], got 4/);
+  });
+
+  it("after the lessons the coach guides every ring to the last: the ways it lies, the stick's or keys' way for each, let go once on course", () => {
+    const phone = { touch: true, compact: true, pilotPitch: false };
+    const desk = { touch: false, compact: false, pilotPitch: false };
+    for (const reader of [phone, desk, { ...desk, pilotPitch: true }])
+      for (const i of [LESSON_RINGS, 6, 9])
+        for (const w of RING_WAYS) {
+          const text = courseTipText(i, 10, w, reader, false);
+          // Named by number, the last as the last.
+          expect(text.startsWith(i === 9 ? 'Last ring (10)' : `Ring ${i + 1} of 10`), text).toBe(true);
+          const where = text.split(': ')[0]!;
+          expect(/\bright\b/.test(where), text).toBe(w.side > 0);
+          expect(/\bleft\b/.test(where), text).toBe(w.side < 0);
+          expect(/\bhigher\b/.test(where), text).toBe(w.up > 0);
+          expect(/\blower\b/.test(where), text).toBe(w.up < 0);
+          const does = text.split(': ')[1]!;
+          // The input for each way named: the stick's way on a phone, the arrow keys on a desktop
+          // (the climb's way flips with the pilot's pitch).
+          const up = w.up > 0 !== reader.pilotPitch;
+          if (reader.touch) {
+            if (w.side) expect(does, text).toContain(w.side > 0 ? 'right' : 'left');
+            if (w.up) expect(does, text).toMatch(up ? /\bup\b/ : /\bdown\b/);
+          } else {
+            expect(/→/.test(does), text).toBe(w.side > 0);
+            expect(/←/.test(does), text).toBe(w.side < 0);
+            expect(/↑/.test(does), text).toBe(w.up !== 0 && up);
+            expect(/↓/.test(does), text).toBe(w.up !== 0 && !up);
+          }
+          if (!w.side && !w.up) expect(text, text).toMatch(/straight ahead/);
+          // A phone's tip stays within the lessons' 90 characters (two lines at 390 px).
+          if (reader.compact) expect(text.length, text).toBeLessThanOrEqual(90);
+        }
+    expect(courseTipText(5, 10, RING_WAYS[0]!, phone, true)).toBe('Ring 6 of 10: ⊕ is in it. Let go and fly through.');
+    expect(courseTipText(9, 10, RING_WAYS[0]!, desk, true)).toBe(
+      'Last ring (10): the marker ⊕ is in it. Let go of the keys and fly through.',
+    );
+    expect(() => courseTipText(3, 10, RING_WAYS[0]!, desk, false)).toThrow(/courseTipText: ring must be an integer in \[4, 10\), got 3/);
+    expect(() => courseTipText(10, 10, RING_WAYS[0]!, desk, false)).toThrow(/courseTipText: ring must be an integer/);
+    expect(() => courseTipText(4, 0, RING_WAYS[0]!, desk, false)).toThrow(/courseTipText: total must be a positive integer, got 0/);
   });
 
   it("the banner of a ring laid ahead after a miss and that ring's lesson tip, from the same way, say the same of where it lies", () => {
