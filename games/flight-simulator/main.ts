@@ -120,6 +120,7 @@ import {
 } from './course';
 import { createCrash } from './crash';
 import { FRAME_CAP, STEPS_PER_FRAME, slowMotion } from './pacing';
+import { nearFade } from './ring-fade';
 import { createScenery, HORIZON_COLOUR, SUN_DIRECTION } from './scenery';
 import { clearPulse, createPulse, type Pulse, pressPulse, pulseOn, releasePulse } from './tap-latch';
 
@@ -856,17 +857,29 @@ function guideBeads(): [number, number, number][] {
 
 /**
  * Colours the rings by their status, the next one brightest with a pulsing halo; a ring passed or
- * missed fades out over RING_FADE_MS and goes.
+ * missed fades out over RING_FADE_MS and goes. A ring spanning most of the view is faint
+ * (./ring-fade.ts nearFade), so the one flown through does not cover the scene.
  */
 function paintRings(t: number): void {
   const i = nextRing(rings);
   const wall = performance.now();
+  // The tangent of half the view's narrower angle: a ring near the camera fades (./ring-fade.ts).
+  const tanV = Math.tan((app.camera.fov * Math.PI) / 360);
+  const tanHalf = tanV * Math.min(1, app.camera.aspect);
+  const near = (k: number): number => nearFade(RING_OUTER, ringMeshes[k]!.position.distanceTo(app.camera.position), tanHalf);
+  let nextFade = 1;
   rings.forEach((ring, k) => {
     const m = ringMeshes[k]!;
     m.geometry = k === i ? ringGeometry : laterGeometry;
     if (ring.status === 'ahead') {
       m.visible = true;
       m.material = k === i ? materials.next : materials.ahead;
+      if (k === i) {
+        nextFade = near(k);
+        // Opaque (drawn with the scene) until it fades.
+        materials.next.transparent = nextFade < 1;
+        materials.next.opacity = nextFade;
+      }
       return;
     }
     const left = 1 - (wall - (doneAt.get(k) ?? -Infinity)) / RING_FADE_MS;
@@ -879,7 +892,7 @@ function paintRings(t: number): void {
       own = base.clone();
       fadeMaterials.set(k, own);
     }
-    own.opacity = base.opacity * left;
+    own.opacity = base.opacity * left * near(k);
     m.material = own;
   });
   halo.visible = i >= 0 && state.phase !== 'crashed';
@@ -887,7 +900,7 @@ function paintRings(t: number): void {
     halo.position.copy(ringMeshes[i]!.position);
     halo.quaternion.copy(ringMeshes[i]!.quaternion);
     halo.scale.setScalar(1 + 0.06 * Math.sin(5 * t));
-    materials.halo.opacity = 0.35 + 0.3 * (0.5 + 0.5 * Math.sin(5 * t));
+    materials.halo.opacity = (0.35 + 0.3 * (0.5 + 0.5 * Math.sin(5 * t))) * nextFade;
   }
 }
 
@@ -1429,7 +1442,7 @@ function lessonTip(): string {
 }
 
 /** What to touch on a phone, and where: the round stick under the scene, at its left. */
-const STICK_WHERE = 'Drag the round stick (bottom left) up or sideways';
+const STICK_WHERE = 'Drag the stick at bottom left';
 
 /** What the tip's second line asks while the flight waits for the pilot (`holding`): the input that goes on. */
 function waitLine(): string {
@@ -1437,13 +1450,24 @@ function waitLine(): string {
   // The stick is named with its place: "move the stick" alone left a stranger looking for one.
   if (tipRing === 0) return touchFirst ? `${STICK_WHERE} to start.` : 'Press an arrow key to start.';
   const key = tipWay.side ? (tipWay.side > 0 ? '→' : '←') : tipWay.up ? climbKey(tipWay.up) : 'an arrow key';
-  return touchFirst ? 'Paused: drag the stick (bottom left) to fly on.' : `Paused: press ${key} to fly on.`;
+  return touchFirst ? 'Paused: drag the stick to fly on.' : `Paused: press ${key} to fly on.`;
 }
 
-/** Shows the lesson tip for the next ring, if any (its place: `placeMessages`). */
+/**
+ * The phone's stick glows while the flight waits for it (`holding`): the tip says "drag the stick at
+ * bottom left" and the glow shows which one.
+ */
+const stickGlow = document.createElement('style');
+stickGlow.textContent =
+  '@keyframes flight-stick-glow { 50% { box-shadow: 0 0 0 6px rgba(255, 209, 102, 0.9), 0 0 18px 6px rgba(255, 209, 102, 0.6); } } .flight-wait .bp-stick { animation: flight-stick-glow 1.2s ease-in-out infinite; }';
+document.head.append(stickGlow);
+
+/** Shows the lesson tip for the next ring, if any (its place: `placeMessages`), and the stick's glow while the flight waits. */
 function showTip(): void {
   const text = lessonTip();
   const wait = text ? waitLine() : '';
+  const glow = holding && touchFirst;
+  if (document.body.classList.contains('flight-wait') !== glow) document.body.classList.toggle('flight-wait', glow);
   if (text !== tipText || wait !== tipWait) {
     tipText = text;
     tipWait = wait;

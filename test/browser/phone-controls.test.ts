@@ -294,7 +294,7 @@ describe('phone controls', () => {
       const before = [words.textContent, wait.textContent, wait.style.display, tip.style.display];
       tip.style.display = 'block';
       wait.style.display = 'block';
-      wait.textContent = 'Paused: drag the stick (bottom left) to fly on.';
+      wait.textContent = 'Paused: drag the stick to fly on.';
       const stage = document.querySelector('canvas')!.getBoundingClientRect().height,
         line = parseFloat(getComputedStyle(words).lineHeight);
       const measured = texts.map((text) => {

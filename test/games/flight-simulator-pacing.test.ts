@@ -1,14 +1,16 @@
 /**
- * The flight simulator's pacing and tap latch (games/flight-simulator/pacing.ts, tap-latch.ts),
- * headless: the game loop fed the flight's FRAME_CAP and STEPS_PER_FRAME keeps pace with the clock at
+ * The flight simulator's pacing, tap latch and near-ring fade (games/flight-simulator/pacing.ts,
+ * tap-latch.ts, ring-fade.ts), headless: the game loop fed the flight's FRAME_CAP and STEPS_PER_FRAME keeps pace with the clock at
  * 20 frames a second and goes in slow motion (FRAME_CAP s of game time a frame) at 5; the notice
  * shows under 10 frames a second and not at the edge; a press let go before any step acts for
- * MIN_PULSE s of game time, a held key as long as it is held.
+ * MIN_PULSE s of game time, a held key as long as it is held; a ring that spans the view is faint,
+ * one far off is whole.
  */
 
 import { createGameLoop } from '@bitphysics/game-kit';
 import { describe, expect, it } from 'vitest';
 import { FLIGHT_STEP, FRAME_CAP, gameTimeOfFrame, SLOW_MOTION_FPS, STEPS_PER_FRAME, slowMotion } from '../../games/flight-simulator/pacing';
+import { NEAR_FADE, nearFade } from '../../games/flight-simulator/ring-fade';
 import { clearPulse, createPulse, MIN_PULSE, pressPulse, pulseOn, releasePulse } from '../../games/flight-simulator/tap-latch';
 
 /** Runs the game loop with the flight's pacing for `frames` frames `frameMs` ms apart; returns the steps run. */
@@ -104,5 +106,31 @@ describe('tap latch', () => {
     clearPulse(p);
     expect(pulseOn(p, 1)).toBe(false);
     expect(() => pulseOn(p, Number.NaN)).toThrow(/pulseOn: time/);
+  });
+});
+
+describe('near-ring fade', () => {
+  it("a ring spanning the phone's view at the pass is faint; 520 m off it is whole; in between it fades smoothly", () => {
+    // The phone's chase view: 64 degrees high, 390 x 587 px (the narrower side across), the camera
+    // 110 m behind the aircraft as it passes through a ring of outer radius 84 m (halo included).
+    const tanHalf = Math.tan((32 * Math.PI) / 180) * (390 / 587);
+    // The ring's edge is outside the view when its angle from the axis, atan(R / d), passes the
+    // view's half angle, atan(tanHalf): there the ring covers the screen's width.
+    expect(Math.atan(84 / 110)).toBeGreaterThan(Math.atan(tanHalf));
+    expect(nearFade(84, 110, tanHalf)).toBeCloseTo(NEAR_FADE.least, 12);
+    expect(nearFade(84, 0, tanHalf)).toBe(NEAR_FADE.least);
+    // 520 m off (ring 1 at the start) it spans under half the view: whole.
+    expect(84 / (520 * tanHalf)).toBeLessThan(NEAR_FADE.from);
+    expect(nearFade(84, 520, tanHalf)).toBe(1);
+    // Nearer and nearer, never brighter (to 1e-12), between the two ends.
+    let last = 1;
+    for (let d = 520; d >= 100; d -= 5) {
+      const f = nearFade(84, d, tanHalf);
+      expect(f).toBeLessThanOrEqual(last + 1e-12);
+      expect(f).toBeGreaterThanOrEqual(NEAR_FADE.least);
+      last = f;
+    }
+    expect(() => nearFade(0, 10, 1)).toThrow(/nearFade: radius and tanHalf/);
+    expect(() => nearFade(1, -1, 1)).toThrow(/nearFade: distance/);
   });
 });
