@@ -50,6 +50,7 @@ import {
   flagParam,
   getSound,
   numberParam,
+  onButtonPress,
   pageLayout,
   seedParam,
 } from '@bitphysics/game-kit';
@@ -119,6 +120,7 @@ import {
   ringWay,
 } from './course';
 import { createCrash } from './crash';
+import { clockText, finishCard, nextSeed } from './finish';
 import { FRAME_CAP, STEPS_PER_FRAME, slowMotion } from './pacing';
 import { nearFade } from './ring-fade';
 import { createScenery, HORIZON_COLOUR, SUN_DIRECTION } from './scenery';
@@ -464,7 +466,8 @@ function stepWorld(world: PhysicsWorld): void {
   const dt = world.dt,
     e = handles.body;
   rampKeys(dt, world.time);
-  const input = pilotInput();
+  // After the course the assist flies on level by itself under the finish card (the keys are the card's).
+  const input = state.phase === 'done' ? { roll: 0, pitch: 0, yaw: 0 } : pilotInput();
   const s = flightState(world, e);
   // Held past THROTTLE_KEY.hold s after its press (which stepped it), Faster or Slower moves the throttle on.
   const ramping = world.time - throttlePressedAt >= THROTTLE_KEY.hold;
@@ -516,7 +519,7 @@ function stepWorld(world: PhysicsWorld): void {
     checkRings(world.time);
   }
   const ground = groundAt(now[0]!, now[2]!);
-  if (now[1]! < ground + 2) {
+  if (now[1]! < ground + 2 && state.phase === 'flying') {
     // The readouts stop at the values of the moment of the crash.
     crashReadings = instruments(world);
     crashWall = performance.now();
@@ -1022,11 +1025,8 @@ const MISS_FLASH = 1.2;
 /** How long a banner stays, s of game time. */
 const BANNER_LIFE = 2;
 
-/** m:ss of `t` seconds. */
-function clock(t: number): string {
-  const s = Math.floor(t);
-  return `${Math.floor(s / 60)}:${String(s % 60).padStart(2, '0')}`;
-}
+/** m:ss of `t` seconds (./finish.ts clockText). */
+const clock = clockText;
 
 /** A distance as the HUD says it, `d` m: metres under 1 km, else km to 0.1. */
 function distanceText(d: number): string {
@@ -1097,41 +1097,94 @@ function updateHud(i: ReturnType<typeof instruments>): void {
   if (card === '') {
     endCard.style.display = 'none';
     showAgain(false);
+  } else if (state.phase === 'done') {
+    showFinish();
   } else {
+    // Crashed.
     const best = bestOf();
-    const stars = courseStars(state.missed);
-    const starText = '★'.repeat(stars) + '☆'.repeat(3 - stars);
     endCard.style.display = 'block';
     endCard.replaceChildren();
     const title = document.createElement('div');
-    const crashed = state.phase === 'crashed';
-    title.style.cssText = `font: 900 ${crashed ? 32 : 24}px system-ui, sans-serif; color: ${crashed ? '#ff6b5a' : '#ffd166'};${crashed ? ' letter-spacing: 1px;' : ''}`;
-    title.textContent = crashed ? 'Crashed!' : state.score === total ? 'Course complete!' : 'Course over';
-    endCard.style.border = crashed ? '2px solid #ff6b5a' : 'none';
+    title.style.cssText = 'font: 900 32px system-ui, sans-serif; color: #ff6b5a; letter-spacing: 1px;';
+    title.textContent = 'Crashed!';
+    endCard.style.border = '2px solid #ff6b5a';
     const line = document.createElement('div');
-    line.textContent =
-      crashed && crashReadings
-        ? `You hit the ${crashInto} at ${crashReadings.speed.toFixed(0)} m/s · ${state.score} of ${total} rings.`
-        : `${state.score} of ${total} rings in ${clock(courseTime(state.time, state.missed))}${
-            state.missed > 0 ? ` (${clock(state.time)} flown + ${MISS_PENALTY * state.missed} s for ${state.missed} missed)` : ''
-          }  ${starText}`;
+    line.textContent = `You hit the ${crashInto} at ${(crashReadings?.speed ?? 0).toFixed(0)} m/s · ${state.score} of ${total} rings.`;
     const bestLine = document.createElement('div');
     bestLine.style.cssText = 'color: #c7d3e0; font-size: 14px;';
-    bestLine.textContent =
-      state.phase === 'done' && lastVsBest === 'better'
-        ? 'A new best for this course!'
-        : state.phase === 'done' && lastVsBest === 'first'
-          ? 'Your first run on this course: the result to beat next time.'
-          : best
-            ? `Best: ${best.passed} of ${total} rings in ${clock(best.time)}`
-            : // A phone's readout gives only the height above the ground, not the sea-level "alt".
-              compact
-              ? 'Watch the height above ground: the hills reach 700 m.'
-              : 'Watch the height above ground: alt counts from sea level, and the hills reach 700 m.';
+    bestLine.textContent = best
+      ? `Best: ${best.passed} of ${total} rings in ${clock(best.time)}`
+      : // A phone's readout gives only the height above the ground, not the sea-level "alt".
+        compact
+        ? 'Watch the height above ground: the hills reach 700 m.'
+        : 'Watch the height above ground: alt counts from sea level, and the hills reach 700 m.';
     endCard.append(title, line, bestLine);
-    showAgain(true, state.phase === 'crashed' ? 'Try again ↺' : 'Fly again ▶');
+    showAgain(true, 'Try again ↺');
   }
 }
+
+/**
+ * The finish card's buttons (./finish.ts): Retry flies this course again, Next course the next seed's.
+ * They take touches and clicks (the card itself lets them through to the scene).
+ */
+const finishButtons = {
+  retry: finishButton(() => shell.reset()),
+  next: finishButton(() => nextCourse()),
+};
+/** A button for the finish card, running `action` on a press (game-kit onButtonPress: a tap on a busy page still counts). */
+function finishButton(action: () => void): HTMLButtonElement {
+  const b = document.createElement('button');
+  b.type = 'button';
+  b.style.cssText =
+    'pointer-events: auto; min-width: 44px; min-height: 44px; margin: 10px 6px 0; padding: 8px 16px; border-radius: 10px; border: 2px solid #ffd166; background: #1d2a3c; color: #fff; font: 700 17px system-ui, sans-serif; cursor: pointer;';
+  onButtonPress(b, action);
+  return b;
+}
+/** Flies the next course (./finish.ts nextSeed): a new seed, the panel's slider following. */
+function nextCourse(): void {
+  params.seed = nextSeed(params.seed);
+  panel.refresh();
+  shell.reset();
+}
+/** Fills the end card with the finish screen (./finish.ts finishCard): the result, the stars, the best, Retry and Next course. */
+function showFinish(): void {
+  const card = finishCard({
+    passed: state.score,
+    total: rings.length,
+    missed: state.missed,
+    flown: state.time,
+    vsBest: lastVsBest,
+    best: bestOf(),
+    touch: touchFirst,
+  });
+  showAgain(false);
+  endCard.style.display = 'block';
+  endCard.style.border = '2px solid #ffd166';
+  const title = document.createElement('div');
+  title.style.cssText = 'font: 900 26px system-ui, sans-serif; color: #ffd166;';
+  title.textContent = card.title;
+  const result = document.createElement('div');
+  result.style.cssText = 'font: 700 19px system-ui, sans-serif; margin-top: 2px;';
+  result.textContent = card.result;
+  const lines = [card.detail, card.best].filter(Boolean).map((text) => {
+    const line = document.createElement('div');
+    line.style.cssText = 'color: #c7d3e0; font-size: 14px;';
+    line.textContent = text;
+    return line;
+  });
+  const row = document.createElement('div');
+  for (const { action, label } of card.actions) {
+    const b = finishButtons[action];
+    b.textContent = label;
+    b.dataset.finish = action;
+    row.append(b);
+  }
+  endCard.replaceChildren(title, result, ...lines, row);
+}
+// Enter on the finish screen flies the next course (R, the shell's reset, flies this one again).
+addEventListener('keydown', (e) => {
+  if (e.key === 'Enter' && !e.repeat && shellReady && state.phase === 'done') nextCourse();
+});
 
 /** Shows the newest event due in the banner for BANNER_LIFE s, and the red glow of a miss. */
 function updateBanner(t: number): void {

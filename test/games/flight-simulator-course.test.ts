@@ -53,6 +53,7 @@ import {
   ringWay,
   TIP_OFFSET,
 } from '../../games/flight-simulator/course';
+import { finishCard, LAST_SEED, nextSeed } from '../../games/flight-simulator/finish';
 
 const terrain = aircraft.build(createPhysicsWorld(aircraft.worldOptions()), { seed: 3 }).terrain;
 
@@ -578,5 +579,32 @@ describe('flight simulator course', () => {
     expect(() => relayAfterMiss(rings, 3, [0, Number.NaN, 0], 0, terrain)).toThrow(/relayAfterMiss: position must be 3 finite numbers/);
     expect(() => relayAfterMiss(rings, 3, [0, 0, 0], Number.NaN, terrain)).toThrow(/relayAfterMiss: heading must be a finite number/);
     expect(() => relayAfterMiss(rings, 3.5, [0, 0, 0], 0, terrain)).toThrow(/relayAfterMiss: from must be an integer, got 3.5/);
+  });
+
+  it('the finish card: the course time with 10 s a miss, the stars, the best; Retry (R) and Next course (Enter), key names only with keys', () => {
+    const base = { passed: 10, total: 10, missed: 0, flown: 95.4, vsBest: 'not' as const, best: null, touch: false };
+    const clean = finishCard(base);
+    expect(clean.title).toBe('Course complete!');
+    // 95.4 s is 1:35.
+    expect(clean.result).toBe('10 of 10 rings in 1:35  ★★★');
+    expect(clean.detail).toBe('');
+    expect(clean.actions).toEqual([
+      { action: 'retry', label: 'Retry ↺ (R)' },
+      { action: 'next', label: 'Next course ▶ (Enter)' },
+    ]);
+    // Three missed: 95.4 + 3 x 10 = 125.4 s is 2:05; two stars are lost (one per two misses, rounded up).
+    const missed = finishCard({ ...base, passed: 7, missed: 3, best: { passed: 9, time: 100 }, touch: true });
+    expect(missed.title).toBe('Course over');
+    expect(missed.result).toBe('7 of 10 rings in 2:05  ★☆☆');
+    expect(missed.stars).toBe(1);
+    expect(missed.detail).toBe('1:35 flown + 30 s for 3 missed');
+    expect(missed.best).toBe('Best: 9 of 10 rings in 1:40');
+    expect(missed.actions.map((a) => a.label)).toEqual(['Retry ↺', 'Next course ▶']);
+    expect(finishCard({ ...base, vsBest: 'better' }).best).toBe('A new best for this course!');
+    expect(() => finishCard({ ...base, passed: 11 })).toThrow(/finishCard: passed and total/);
+    // Next course: the next seed, back to 0 past the panel's last.
+    expect(nextSeed(1)).toBe(2);
+    expect(nextSeed(LAST_SEED)).toBe(0);
+    expect(() => nextSeed(1.5)).toThrow(/nextSeed: seed must be an integer/);
   });
 });
