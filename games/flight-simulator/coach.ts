@@ -5,7 +5,8 @@
  * (test/games/flight-simulator-course.test.ts).
  */
 
-import { type RingWay, ringWhere, type TipReader } from './course';
+import type { Ring, RingBearing, RingWay, TipReader } from './course';
+import { ringWhere } from './course';
 
 /** Rings taught by the lessons (./course.ts lessonTipText, rings 1 to 4); the coach speaks from the next one on. */
 export const LESSON_RINGS = 4;
@@ -37,4 +38,24 @@ export function courseTipText(ring: number, total: number, way: RingWay, reader:
   return compact
     ? `${name}, ${ringWhere(way, true)}: ${does} until ⊕ is in it.`
     : `${name} is ${ringWhere(way, false)}: ${does} until the marker ⊕ is in it, then let go.`;
+}
+
+/**
+ * Where `ring`'s centre lies from `point` (m, world), the point of its plane the flight-path marker
+ * shows the aircraft passing (./course.ts predictThroughRing): to the right (+) or left of it across
+ * the ring (along n x up, n the ring's normal, the way it is flown through) and above (+) or below it,
+ * m; `bearing` 0 (the ring is ahead). The coach says these ways, so its words agree with the marker on
+ * the screen (the line flown now, before the turn and climb the marker allows for, could lie on the
+ * other side: a tip said "higher" with the marker above the ring).
+ * @throws RangeError on a point that is not 3 finite numbers, or a ring whose normal is vertical.
+ */
+export function markerBearing(ring: Ring, point: readonly number[]): Pick<RingBearing, 'side' | 'up' | 'bearing'> {
+  if (point.length < 3 || !point.slice(0, 3).every(Number.isFinite))
+    throw new RangeError(`markerBearing: point must be 3 finite numbers, got ${point.join(', ')}`);
+  const level = Math.hypot(ring.nx, ring.nz);
+  if (!(level > 0))
+    throw new RangeError(`markerBearing: ring's normal must have a horizontal part, got ${ring.nx}, ${ring.ny}, ${ring.nz}`);
+  // Right of the way through (nx, nz) is (-nz, nx): y up, +z to the right of +x.
+  const side = ((ring.x - point[0]!) * -ring.nz + (ring.z - point[2]!) * ring.nx) / level;
+  return { side, up: ring.y - point[1]!, bearing: 0 };
 }

@@ -22,8 +22,14 @@
  * above it (clear of the ring and of the marker; an edge arrow when it is out of view), and a flight-path
  * marker where the aircraft's path, curved by its turn and climb, meets the next ring's plane if the
  * pilot lets go now (green when it is inside the ring). The flight waits for the pilot's first input
- * at the start and while the first lesson's tip (ring 2: a plane turns by banking) is read; the
- * later lessons' tips (rings 3, 4) show while it flies on. The cockpit view (C) has a canopy frame and an instrument panel (./cockpit.ts: airspeed,
+ * at the start and while the first lesson's tip (ring 2: a plane turns by banking) is read (on a
+ * phone the stick glows meanwhile); the later lessons' tips (rings 3, 4) show while it flies on, and
+ * from ring 5 to the last the coach (./coach.ts) says where each ring lies and what to do. A ring
+ * spanning most of the view fades (./ring-fade.ts), so the one flown through does not cover it.
+ * The end of the course shows a finish card (./finish.ts): the result, the stars, Retry (R) and
+ * Next course (Enter). Under 10 frames a second the flight goes in slow motion and says so
+ * (./pacing.ts); a tap of a key, a button or the stick shorter than a frame acts for MIN_PULSE s
+ * (./tap-latch.ts). The cockpit view (C) has a canopy frame and an instrument panel (./cockpit.ts: airspeed,
  * altimeter, heading, vertical speed, throttle) with the attitude indicator in its middle. The chase
  * camera sits close behind and widens its view with speed, so the speed shows.
  * Keys: arrows or W/S/A/D: climb / dive and bank (with "pilot's pitch" in the panel, down pulls up),
@@ -91,7 +97,7 @@ import {
   throttleStep,
 } from './assist';
 import { createAttitudeIndicator } from './attitude-indicator';
-import { courseTipText, LESSON_RINGS } from './coach';
+import { courseTipText, LESSON_RINGS, markerBearing } from './coach';
 import { createCockpit } from './cockpit';
 import {
   compareWithBest,
@@ -1016,7 +1022,8 @@ let slowShown = false;
 /** Shows or hides the slow-motion note for the loop's measured frame rate. */
 function showSlowMotion(): void {
   slowShown = slowMotion(slowShown, shell.loop.fps) && state.phase === 'flying' && !shell.paused;
-  const text = `Slow motion: ${Math.round(shell.loop.fps)} frames a second`;
+  const fps = Math.round(shell.loop.fps);
+  const text = `Slow motion: only ${fps} frame${fps === 1 ? '' : 's'} a second`;
   if (slowShown && slowNote.textContent !== text) slowNote.textContent = text;
   const display = slowShown ? 'block' : 'none';
   if (slowNote.style.display !== display) slowNote.style.display = display;
@@ -1490,7 +1497,11 @@ function lessonTip(): string {
   if ((i === 0 && !holding) || shell.world.time >= tipGoneAt) return '';
   const reader = { touch: touchFirst, compact, pilotPitch: params.pilotPitch };
   // After the lessons the coach says where each ring lies and what to do, to the last (./coach.ts).
-  if (i >= LESSON_RINGS) return courseTipText(i, rings.length, tipWay, reader, pathAim.visible && pathAim.inside);
+  if (i >= LESSON_RINGS) {
+    // The ways from the marker's point when it shows one (./coach.ts markerBearing), so the words agree with the screen.
+    const way = markedAt ? ringWay(markerBearing(rings[i]!, markedAt)) : tipWay;
+    return courseTipText(i, rings.length, way, reader, pathAim.visible && pathAim.inside);
+  }
   return lessonTipText(i, tipWay, reader);
 }
 
@@ -1732,6 +1743,8 @@ marker.dataset.hud = 'path-marker';
  */
 const pathAim = { visible: false, inside: false, offset: Infinity, x: 0, y: 0, drawnAt: -1 };
 const markAt = new Vector3();
+/** Where the marker shows the aircraft passing the next ring's plane (m, world), or null when it shows none. */
+let markedAt: readonly number[] | null = null;
 function markPath(): void {
   const i = nextRing(rings);
   const world = shell.world,
@@ -1747,6 +1760,7 @@ function markPath(): void {
         )
       : null;
   pathAim.visible = !!through && Number.isFinite(through.offset);
+  markedAt = pathAim.visible && through ? through.point : null;
   marker.style.display = pathAim.visible ? 'block' : 'none';
   promise.ring = -1;
   if (!through || !pathAim.visible) return;

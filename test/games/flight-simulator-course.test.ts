@@ -13,7 +13,7 @@ import { createPhysicsWorld, setBodyThrust, setControlDeflection, step } from '@
 import { AIRCRAFT, aircraft, aircraftLevelDrag, terrainHeight } from '@bitphysics/projects';
 import { describe, expect, it } from 'vitest';
 import { AILERON_SCALE, ASSIST, assist, CONTROL_AUTHORITY, createAssistState, flightState } from '../../games/flight-simulator/assist';
-import { courseTipText, LESSON_RINGS } from '../../games/flight-simulator/coach';
+import { courseTipText, LESSON_RINGS, markerBearing } from '../../games/flight-simulator/coach';
 import {
   compareWithBest,
   courseStars,
@@ -435,6 +435,13 @@ describe('flight simulator course', () => {
           // A phone's tip stays within the lessons' 90 characters (two lines at 390 px).
           if (reader.compact) expect(text.length, text).toBeLessThanOrEqual(90);
         }
+    // The coach's ways are the marker's: a ring flown along +x (right is +z) whose centre lies 100 m to
+    // the marker's right (+z) and 40 m below it is "to the right and lower"; flown along -x, +z is left.
+    const ahead = { x: 1000, y: 500, z: 100, nx: 1, ny: 0, nz: 0, status: 'ahead' as const };
+    expect(markerBearing(ahead, [1000, 540, 0])).toEqual({ side: 100, up: -40, bearing: 0 });
+    expect(ringWay(markerBearing(ahead, [1000, 540, 0]))).toMatchObject({ side: 1, up: -1 });
+    expect(ringWay(markerBearing({ ...ahead, nx: -1 }, [1000, 540, 0]))).toMatchObject({ side: -1, up: -1 });
+    expect(() => markerBearing({ ...ahead, nx: 0, ny: 1 }, [0, 0, 0])).toThrow(/markerBearing: ring's normal/);
     expect(courseTipText(5, 10, RING_WAYS[0]!, phone, true)).toBe('Ring 6 of 10: ⊕ is in it. Let go and fly through.');
     expect(courseTipText(9, 10, RING_WAYS[0]!, desk, true)).toBe(
       'Last ring (10): the marker ⊕ is in it. Let go of the keys and fly through.',
