@@ -4,8 +4,9 @@
  * physics stays the aircraft scene's own (lifting surfaces, Euler's equations); the assist only
  * decides where the control surfaces point.
  *
- * - Stick sideways: a bank angle, up to `ASSIST.maxBank` at full stick (the ailerons roll the
- *   aircraft there and hold it, the rudder turning the nose with them); eased off, the bank eases with
+ * - Stick sideways: a turn rate, the one a bank of up to `ASSIST.maxBank` at full stick gives at the
+ *   trim speed, held steady as the speed changes (`steadyTurnBank`: the bank follows the speed; the
+ *   ailerons roll the aircraft there and hold it, the rudder turning the nose with them); eased off, the bank eases with
  *   it; let go, the wings roll level at once and the turn stops. Only a tap (let go within
  *   `ASSIST.tapTime` of the touch) holds its bank until the touch is `tapTime` old, so that a tap of a
  *   bank key still rolls the aircraft far enough to turn it a little.
@@ -25,7 +26,7 @@
  */
 
 import type { PhysicsWorld } from '@bitphysics/physics';
-import { AIRCRAFT } from '@bitphysics/projects';
+import { AIRCRAFT, AIRCRAFT_TRIM_SPEED } from '@bitphysics/projects';
 
 const DEG = Math.PI / 180;
 
@@ -96,6 +97,11 @@ export const ASSIST = Object.freeze({
    * than the rings are apart: strangers found it too slow to steer.
    */
   maxBank: 70 * DEG,
+  /**
+   * Steepest bank the assist asks for, rad (75 degrees): full stick at a speed over the trim speed
+   * asks for more than `maxBank` to keep its turn rate (`steadyTurnBank`), up to this.
+   */
+  steepestBank: 75 * DEG,
   /** Flight-path angle the path hold asks for at full stick forward or back, rad (its share fades as the stick's grows). */
   maxClimb: 20 * DEG,
   /**
@@ -153,6 +159,23 @@ export const ASSIST = Object.freeze({
   /** Largest bank a tap holds, rad (25 degrees). */
   tapBank: 25 * DEG,
 });
+
+/**
+ * The bank that turns the aircraft at `speed` (m/s) at the rate the stick's bank `stickBank` (rad,
+ * + right) turns it at the trim speed: a level coordinated turn's rate is g tan(bank) / V, so
+ * tan(bank) = tan(stickBank) V / AIRCRAFT_TRIM_SPEED, at most `ASSIST.steepestBank` either way. A
+ * held stick then holds a steady turn rate as the turn bleeds the speed (with the stick's bank
+ * itself, a held full bank turned 13.5 to 15.7 degrees a second as the speed fell from 113 to 94 m/s,
+ * and a stranger found a steady turn hard to hold).
+ * @throws RangeError on a stickBank that is not finite or a speed that is negative or not finite.
+ */
+export function steadyTurnBank(stickBank: number, speed: number): number {
+  if (!Number.isFinite(stickBank)) throw new RangeError(`steadyTurnBank: stickBank must be finite, got ${stickBank}`);
+  if (!(speed >= 0 && Number.isFinite(speed))) throw new RangeError(`steadyTurnBank: speed must be finite and >= 0 m/s, got ${speed}`);
+  if (stickBank === 0) return 0;
+  const bank = Math.atan((Math.tan(Math.min(Math.abs(stickBank), ASSIST.maxBank)) * speed) / AIRCRAFT_TRIM_SPEED);
+  return Math.sign(stickBank) * Math.min(bank, ASSIST.steepestBank);
+}
 
 /** What the assist keeps between steps: the integral of the flight-path error and the bank asked for. */
 export interface AssistState {
@@ -302,7 +325,7 @@ export function assist(s: FlightState, input: PilotInput, state: AssistState, dt
     state.rollHeld = 0;
     state.rollPeak = 0;
   }
-  const wanted = A.maxBank * roll;
+  const wanted = steadyTurnBank(A.maxBank * roll, s.speed);
   // Eased off or let go: the bank asked for never lies beyond the bank the aircraft has (nor short
   // of the stick's), so the wings stop rolling into the turn at once and roll back from where they
   // are, and the turn stops soon after the release (a target still 20 degrees ahead of the bank

@@ -22,8 +22,14 @@
  * above it (clear of the ring and of the marker; an edge arrow when it is out of view), and a flight-path
  * marker where the aircraft's path, curved by its turn and climb, meets the next ring's plane if the
  * pilot lets go now (green when it is inside the ring). The flight waits for the pilot's first input
- * at the start and while the first lesson's tip (ring 2: a plane turns by banking) is read; the
- * later lessons' tips (rings 3, 4) show while it flies on. The cockpit view (C) has a canopy frame and an instrument panel (./cockpit.ts: airspeed,
+ * at the start and while the first lesson's tip (ring 2: a plane turns by banking) is read (on a
+ * phone the stick glows meanwhile); the later lessons' tips (rings 3, 4) show while it flies on, and
+ * from ring 5 to the last the coach (./coach.ts) says where each ring lies and what to do. A ring
+ * spanning most of the view fades (./ring-fade.ts), so the one flown through does not cover it.
+ * The end of the course shows a finish card (./finish.ts): the result, the stars, Retry (R) and
+ * Next course (Enter). Under 10 frames a second the flight goes in slow motion and says so
+ * (./pacing.ts); a tap of a key, a button or the stick shorter than a frame acts for MIN_PULSE s
+ * (./tap-latch.ts). The cockpit view (C) has a canopy frame and an instrument panel (./cockpit.ts: airspeed,
  * altimeter, heading, vertical speed, throttle) with the attitude indicator in its middle. The chase
  * camera sits close behind and widens its view with speed, so the speed shows.
  * Keys: arrows or W/S/A/D: climb / dive and bank (with "pilot's pitch" in the panel, down pulls up),
@@ -50,6 +56,7 @@ import {
   flagParam,
   getSound,
   numberParam,
+  onButtonPress,
   pageLayout,
   seedParam,
 } from '@bitphysics/game-kit';
@@ -90,6 +97,7 @@ import {
   throttleStep,
 } from './assist';
 import { createAttitudeIndicator } from './attitude-indicator';
+import { courseTipText, LESSON_RINGS, markerBearing } from './coach';
 import { createCockpit } from './cockpit';
 import {
   compareWithBest,
@@ -118,7 +126,11 @@ import {
   ringWay,
 } from './course';
 import { createCrash } from './crash';
+import { clockText, finishCard, nextSeed } from './finish';
+import { FRAME_CAP, STEPS_PER_FRAME, slowMotion } from './pacing';
+import { nearFade } from './ring-fade';
 import { createScenery, HORIZON_COLOUR, SUN_DIRECTION } from './scenery';
+import { clearPulse, createPulse, type Pulse, pressPulse, pulseOn, releasePulse } from './tap-latch';
 
 const params = {
   seed: seedParam(),
@@ -188,8 +200,10 @@ function createWorld(): PhysicsWorld {
     warning: '',
   });
   Object.assign(assistState, createAssistState());
-  keyInput.pitch = keyInput.roll = 0;
+  keyInput.pitch = keyInput.roll = keyInput.yaw = 0;
   stickFlown.x = stickFlown.y = 0;
+  // A tap before the reset does not carry over; a key still held goes on acting.
+  for (const pulse of [...keyPulses.values(), stickPulse]) pulse.since = Number.NEGATIVE_INFINITY;
   rings = layCourse({ terrain: handles.terrain, seed: params.seed + 7, count: params.rings, start: [0, START_ALTITUDE, 0] });
   events.length = 0;
   doneAt.clear();
@@ -293,18 +307,18 @@ const axisHeld = new Set<string>();
 const batch = { start: 0, end: 0, step: 0, lastWall: -Infinity };
 /**
  * Brings `axisHeld` to the moment of the frame's span this step stands for: the steps of a frame
- * (run back to back, less than 4 ms apart) share its span, at most 0.15 s (the loop's maxFrameTime),
+ * (run back to back, less than 4 ms apart) share its span, at most FRAME_CAP s (the loop's maxFrameTime),
  * evenly. A key released in the step it was pressed in is released in the next step.
  */
 function axisKeysAt(dt: number): void {
   const wall = performance.now();
   if (wall - batch.lastWall > 4) {
-    batch.start = Math.max(batch.end, wall - 150);
+    batch.start = Math.max(batch.end, wall - 1000 * FRAME_CAP);
     batch.end = wall;
     batch.step = 0;
   }
   batch.lastWall = wall;
-  const n = Math.max(1, Math.min(9, Math.round((batch.end - batch.start) / (1000 * dt))));
+  const n = Math.max(1, Math.min(STEPS_PER_FRAME, Math.round((batch.end - batch.start) / (1000 * dt))));
   batch.step++;
   const upTo = batch.step >= n ? Number.POSITIVE_INFINITY : batch.start + (batch.step * (batch.end - batch.start)) / n;
   const pressed = new Set<string>();
@@ -315,12 +329,39 @@ function axisKeysAt(dt: number): void {
     if (ev.down) {
       axisHeld.add(ev.key);
       pressed.add(ev.key);
-    } else axisHeld.delete(ev.key);
+      pressPulse(pulseOf(ev.key));
+    } else {
+      axisHeld.delete(ev.key);
+      releasePulse(pulseOf(ev.key));
+    }
   }
+}
+/**
+ * Each flying key's press as the steps see it (./tap-latch.ts): the axis keys' as `axisKeysAt` brings
+ * them to the step's moment, the rudder's (Q, E) as they come. A tap acts for at least MIN_PULSE s.
+ */
+const keyPulses = new Map<string, Pulse>();
+/** The pulse of `key`, made at its first use. */
+function pulseOf(key: string): Pulse {
+  let p = keyPulses.get(key);
+  if (!p) keyPulses.set(key, (p = createPulse()));
+  return p;
+}
+/** The rudder's keys (the phone's Rudder buttons send them too). */
+const RUDDER_KEYS = new Set(['q', 'e']);
+/** The on-screen stick's press (./tap-latch.ts) and the largest input of that press: a flick shorter than a frame still acts. */
+const stickPulse = createPulse();
+const stickLatched = { x: 0, y: 0 };
+/** Forgets every press (a reset, the page losing the focus). */
+function clearPulses(): void {
+  for (const p of keyPulses.values()) clearPulse(p);
+  clearPulse(stickPulse);
+  stickLatched.x = stickLatched.y = 0;
 }
 addEventListener('keydown', (e) => {
   const key = e.key.toLowerCase();
   if (AXIS_KEYS.has(key) && !e.repeat) axisEvents.push({ key, down: true, time: e.timeStamp });
+  if (RUDDER_KEYS.has(key)) pressPulse(pulseOf(key));
   held.add(key);
   if (e.key === 'Shift' || e.key.startsWith('Arrow') || e.key === ' ') e.preventDefault();
   if (FLIGHT_KEYS.has(key)) pilotGoes();
@@ -336,10 +377,12 @@ addEventListener('keydown', (e) => {
 addEventListener('keyup', (e) => {
   const key = e.key.toLowerCase();
   if (AXIS_KEYS.has(key)) axisEvents.push({ key, down: false, time: e.timeStamp });
+  if (RUDDER_KEYS.has(key)) releasePulse(pulseOf(key));
   held.delete(key);
 });
 addEventListener('blur', () => {
   held.clear();
+  clearPulses();
   axisEvents.length = 0;
   axisHeld.clear();
 });
@@ -347,20 +390,46 @@ addEventListener('blur', () => {
 const clamp1 = (x: number): number => Math.max(-1, Math.min(1, x));
 
 /** The keyboard's climb / dive and bank inputs, ramped while a key is held (./assist.ts `rampKey`), in [-1, 1]. */
-const keyInput = { pitch: 0, roll: 0 };
+const keyInput = { pitch: 0, roll: 0, yaw: 0 };
 
-/** Moves the keyboard's ramped inputs over a step of `dt` s towards the keys held now. */
-function rampKeys(dt: number): void {
+/**
+ * Moves the keyboard's ramped inputs over a step of `dt` s at game time `time` (s) towards the keys
+ * acting now (held, or tapped less than MIN_PULSE s ago: ./tap-latch.ts), and the stick's towards its
+ * input (or, for a flick already let go, the flick's latched input while its pulse lasts).
+ */
+function rampKeys(dt: number, time: number): void {
   axisKeysAt(dt);
-  const k = axisHeld;
-  const up = k.has('arrowup') || k.has('w') ? 1 : 0,
-    down = k.has('arrowdown') || k.has('s') ? 1 : 0,
-    right = k.has('arrowright') || k.has('d') ? 1 : 0,
-    left = k.has('arrowleft') || k.has('a') ? 1 : 0;
+  // Every key's pulse is read at every step (no short cut), so that a press starts its pulse at the first step after it.
+  const on = (a: string, b: string): number => Number(pulseOn(pulseOf(a), time)) | Number(pulseOn(pulseOf(b), time));
+  const up = on('arrowup', 'w'),
+    down = on('arrowdown', 's'),
+    right = on('arrowright', 'd'),
+    left = on('arrowleft', 'a');
   keyInput.pitch = rampKey(keyInput.pitch, up - down, dt);
   keyInput.roll = rampKey(keyInput.roll, right - left, dt, BANK_KEY_RAMP);
-  stickFlown.x = smoothStick(stickFlown.x, stickInput.x, dt);
-  stickFlown.y = smoothStick(stickFlown.y, stickInput.y, dt);
+  const flick = pulseOn(stickPulse, time) && stickInput.x === 0 && stickInput.y === 0;
+  stickFlown.x = smoothStick(stickFlown.x, flick ? stickLatched.x : stickInput.x, dt);
+  stickFlown.y = smoothStick(stickFlown.y, flick ? stickLatched.y : stickInput.y, dt);
+  keyInput.yaw = Number(pulseOn(pulseOf('e'), time)) - Number(pulseOn(pulseOf('q'), time));
+}
+
+/**
+ * Sets the stick's input `r` (after its response curve): pressed while it is off the centre, its
+ * largest input latched for a flick shorter than a frame (`rampKeys`).
+ */
+function setStickInput(r: { x: number; y: number }): void {
+  stickInput.x = r.x;
+  stickInput.y = r.y;
+  if (r.x === 0 && r.y === 0) {
+    releasePulse(stickPulse);
+    return;
+  }
+  if (!stickPulse.down) stickLatched.x = stickLatched.y = 0;
+  pressPulse(stickPulse);
+  if (Math.hypot(r.x, r.y) >= Math.hypot(stickLatched.x, stickLatched.y)) {
+    stickLatched.x = r.x;
+    stickLatched.y = r.y;
+  }
 }
 
 /** The pilot's inputs now, keys (ramped) and stick added: roll + right, pitch + nose up, yaw + nose right. */
@@ -370,7 +439,7 @@ function pilotInput(): { roll: number; pitch: number; yaw: number } {
   return {
     roll: clamp1(keyInput.roll + stickFlown.x),
     pitch: clamp1(sign * (keyInput.pitch + stickFlown.y)),
-    yaw: (held.has('e') ? 1 : 0) - (held.has('q') ? 1 : 0),
+    yaw: keyInput.yaw,
   };
 }
 
@@ -402,8 +471,9 @@ function stepWorld(world: PhysicsWorld): void {
   }
   const dt = world.dt,
     e = handles.body;
-  rampKeys(dt);
-  const input = pilotInput();
+  rampKeys(dt, world.time);
+  // After the course the assist flies on level by itself under the finish card (the keys are the card's).
+  const input = state.phase === 'done' ? { roll: 0, pitch: 0, yaw: 0 } : pilotInput();
   const s = flightState(world, e);
   // Held past THROTTLE_KEY.hold s after its press (which stepped it), Faster or Slower moves the throttle on.
   const ramping = world.time - throttlePressedAt >= THROTTLE_KEY.hold;
@@ -455,7 +525,7 @@ function stepWorld(world: PhysicsWorld): void {
     checkRings(world.time);
   }
   const ground = groundAt(now[0]!, now[2]!);
-  if (now[1]! < ground + 2) {
+  if (now[1]! < ground + 2 && state.phase === 'flying') {
     // The readouts stop at the values of the moment of the crash.
     crashReadings = instruments(world);
     crashWall = performance.now();
@@ -636,13 +706,11 @@ const game = await startThreeGame({
   createWorld,
   step: stepWorld,
   bodies: () => 1,
-  // The game's time keeps pace with the clock down to 6.7 frames a second (9 steps of 1/60 s a
-  // frame; by default the loop ran at most 4, so below 15 fps the flight went in slow motion and a
-  // held key did less per real second). A step costs about 0.2 ms; the handling stays the fixed
-  // step's whatever the frame rate. No more than 0.15 s a frame: a key's tap still shows as a
-  // ramped input, not a full one (KEY_RAMP: 0.12 of full after a 0.1 s tap).
-  maxFrameTime: 0.15,
-  maxStepsPerFrame: 9,
+  // The game's time keeps pace with the clock down to 10 frames a second; slower, it goes in slow
+  // motion and says so (./pacing.ts): the aircraft moves no more than FRAME_CAP s of flight between
+  // two pictures. A step costs about 0.2 ms; the handling stays the fixed step's whatever the frame rate.
+  maxFrameTime: FRAME_CAP,
+  maxStepsPerFrame: STEPS_PER_FRAME,
   // The flight waits for the pilot's first input (`holding`).
   paused: true,
   controls: [
@@ -798,17 +866,29 @@ function guideBeads(): [number, number, number][] {
 
 /**
  * Colours the rings by their status, the next one brightest with a pulsing halo; a ring passed or
- * missed fades out over RING_FADE_MS and goes.
+ * missed fades out over RING_FADE_MS and goes. A ring spanning most of the view is faint
+ * (./ring-fade.ts nearFade), so the one flown through does not cover the scene.
  */
 function paintRings(t: number): void {
   const i = nextRing(rings);
   const wall = performance.now();
+  // The tangent of half the view's narrower angle: a ring near the camera fades (./ring-fade.ts).
+  const tanV = Math.tan((app.camera.fov * Math.PI) / 360);
+  const tanHalf = tanV * Math.min(1, app.camera.aspect);
+  const near = (k: number): number => nearFade(RING_OUTER, ringMeshes[k]!.position.distanceTo(app.camera.position), tanHalf);
+  let nextFade = 1;
   rings.forEach((ring, k) => {
     const m = ringMeshes[k]!;
     m.geometry = k === i ? ringGeometry : laterGeometry;
     if (ring.status === 'ahead') {
       m.visible = true;
       m.material = k === i ? materials.next : materials.ahead;
+      if (k === i) {
+        nextFade = near(k);
+        // Opaque (drawn with the scene) until it fades.
+        materials.next.transparent = nextFade < 1;
+        materials.next.opacity = nextFade;
+      }
       return;
     }
     const left = 1 - (wall - (doneAt.get(k) ?? -Infinity)) / RING_FADE_MS;
@@ -821,7 +901,7 @@ function paintRings(t: number): void {
       own = base.clone();
       fadeMaterials.set(k, own);
     }
-    own.opacity = base.opacity * left;
+    own.opacity = base.opacity * left * near(k);
     m.material = own;
   });
   halo.visible = i >= 0 && state.phase !== 'crashed';
@@ -829,7 +909,7 @@ function paintRings(t: number): void {
     halo.position.copy(ringMeshes[i]!.position);
     halo.quaternion.copy(ringMeshes[i]!.quaternion);
     halo.scale.setScalar(1 + 0.06 * Math.sin(5 * t));
-    materials.halo.opacity = 0.35 + 0.3 * (0.5 + 0.5 * Math.sin(5 * t));
+    materials.halo.opacity = (0.35 + 0.3 * (0.5 + 0.5 * Math.sin(5 * t))) * nextFade;
   }
 }
 
@@ -929,15 +1009,31 @@ const missFlash = overlay(
   'left: 0; top: 0; right: 0; bottom: 0; transform: none; box-shadow: inset 0 0 60px 18px rgba(255, 70, 40, 0.85); opacity: 0; z-index: 5;',
 );
 missFlash.dataset.hud = 'miss-flash';
+/**
+ * "Slow motion" in the scene's bottom left corner while the frame rate is under 10 a second
+ * (./pacing.ts slowMotion): the flight then runs slower than the clock, so the pilot keeps control.
+ */
+const slowNote = overlay(
+  `left: 8px; bottom: 8px; transform: none; padding: 2px 10px; border-radius: 10px; background: rgba(8, 12, 20, 0.8); color: #ffd166; font: 700 ${compact ? 12 : 14}px system-ui, sans-serif; white-space: nowrap; display: none;`,
+);
+slowNote.dataset.hud = 'slow-motion';
+/** Whether the slow-motion note shows (tests). */
+let slowShown = false;
+/** Shows or hides the slow-motion note for the loop's measured frame rate. */
+function showSlowMotion(): void {
+  slowShown = slowMotion(slowShown, shell.loop.fps) && state.phase === 'flying' && !shell.paused;
+  const fps = Math.round(shell.loop.fps);
+  const text = `Slow motion: only ${fps} frame${fps === 1 ? '' : 's'} a second`;
+  if (slowShown && slowNote.textContent !== text) slowNote.textContent = text;
+  const display = slowShown ? 'block' : 'none';
+  if (slowNote.style.display !== display) slowNote.style.display = display;
+}
 const MISS_FLASH = 1.2;
 /** How long a banner stays, s of game time. */
 const BANNER_LIFE = 2;
 
-/** m:ss of `t` seconds. */
-function clock(t: number): string {
-  const s = Math.floor(t);
-  return `${Math.floor(s / 60)}:${String(s % 60).padStart(2, '0')}`;
-}
+/** m:ss of `t` seconds (./finish.ts clockText). */
+const clock = clockText;
 
 /** A distance as the HUD says it, `d` m: metres under 1 km, else km to 0.1. */
 function distanceText(d: number): string {
@@ -1008,41 +1104,94 @@ function updateHud(i: ReturnType<typeof instruments>): void {
   if (card === '') {
     endCard.style.display = 'none';
     showAgain(false);
+  } else if (state.phase === 'done') {
+    showFinish();
   } else {
+    // Crashed.
     const best = bestOf();
-    const stars = courseStars(state.missed);
-    const starText = '★'.repeat(stars) + '☆'.repeat(3 - stars);
     endCard.style.display = 'block';
     endCard.replaceChildren();
     const title = document.createElement('div');
-    const crashed = state.phase === 'crashed';
-    title.style.cssText = `font: 900 ${crashed ? 32 : 24}px system-ui, sans-serif; color: ${crashed ? '#ff6b5a' : '#ffd166'};${crashed ? ' letter-spacing: 1px;' : ''}`;
-    title.textContent = crashed ? 'Crashed!' : state.score === total ? 'Course complete!' : 'Course over';
-    endCard.style.border = crashed ? '2px solid #ff6b5a' : 'none';
+    title.style.cssText = 'font: 900 32px system-ui, sans-serif; color: #ff6b5a; letter-spacing: 1px;';
+    title.textContent = 'Crashed!';
+    endCard.style.border = '2px solid #ff6b5a';
     const line = document.createElement('div');
-    line.textContent =
-      crashed && crashReadings
-        ? `You hit the ${crashInto} at ${crashReadings.speed.toFixed(0)} m/s · ${state.score} of ${total} rings.`
-        : `${state.score} of ${total} rings in ${clock(courseTime(state.time, state.missed))}${
-            state.missed > 0 ? ` (${clock(state.time)} flown + ${MISS_PENALTY * state.missed} s for ${state.missed} missed)` : ''
-          }  ${starText}`;
+    line.textContent = `You hit the ${crashInto} at ${(crashReadings?.speed ?? 0).toFixed(0)} m/s · ${state.score} of ${total} rings.`;
     const bestLine = document.createElement('div');
     bestLine.style.cssText = 'color: #c7d3e0; font-size: 14px;';
-    bestLine.textContent =
-      state.phase === 'done' && lastVsBest === 'better'
-        ? 'A new best for this course!'
-        : state.phase === 'done' && lastVsBest === 'first'
-          ? 'Your first run on this course: the result to beat next time.'
-          : best
-            ? `Best: ${best.passed} of ${total} rings in ${clock(best.time)}`
-            : // A phone's readout gives only the height above the ground, not the sea-level "alt".
-              compact
-              ? 'Watch the height above ground: the hills reach 700 m.'
-              : 'Watch the height above ground: alt counts from sea level, and the hills reach 700 m.';
+    bestLine.textContent = best
+      ? `Best: ${best.passed} of ${total} rings in ${clock(best.time)}`
+      : // A phone's readout gives only the height above the ground, not the sea-level "alt".
+        compact
+        ? 'Watch the height above ground: the hills reach 700 m.'
+        : 'Watch the height above ground: alt counts from sea level, and the hills reach 700 m.';
     endCard.append(title, line, bestLine);
-    showAgain(true, state.phase === 'crashed' ? 'Try again ↺' : 'Fly again ▶');
+    showAgain(true, 'Try again ↺');
   }
 }
+
+/**
+ * The finish card's buttons (./finish.ts): Retry flies this course again, Next course the next seed's.
+ * They take touches and clicks (the card itself lets them through to the scene).
+ */
+const finishButtons = {
+  retry: finishButton(() => shell.reset()),
+  next: finishButton(() => nextCourse()),
+};
+/** A button for the finish card, running `action` on a press (game-kit onButtonPress: a tap on a busy page still counts). */
+function finishButton(action: () => void): HTMLButtonElement {
+  const b = document.createElement('button');
+  b.type = 'button';
+  b.style.cssText =
+    'pointer-events: auto; min-width: 44px; min-height: 44px; margin: 10px 6px 0; padding: 8px 16px; border-radius: 10px; border: 2px solid #ffd166; background: #1d2a3c; color: #fff; font: 700 17px system-ui, sans-serif; cursor: pointer;';
+  onButtonPress(b, action);
+  return b;
+}
+/** Flies the next course (./finish.ts nextSeed): a new seed, the panel's slider following. */
+function nextCourse(): void {
+  params.seed = nextSeed(params.seed);
+  panel.refresh();
+  shell.reset();
+}
+/** Fills the end card with the finish screen (./finish.ts finishCard): the result, the stars, the best, Retry and Next course. */
+function showFinish(): void {
+  const card = finishCard({
+    passed: state.score,
+    total: rings.length,
+    missed: state.missed,
+    flown: state.time,
+    vsBest: lastVsBest,
+    best: bestOf(),
+    touch: touchFirst,
+  });
+  showAgain(false);
+  endCard.style.display = 'block';
+  endCard.style.border = '2px solid #ffd166';
+  const title = document.createElement('div');
+  title.style.cssText = 'font: 900 26px system-ui, sans-serif; color: #ffd166;';
+  title.textContent = card.title;
+  const result = document.createElement('div');
+  result.style.cssText = 'font: 700 19px system-ui, sans-serif; margin-top: 2px;';
+  result.textContent = card.result;
+  const lines = [card.detail, card.best].filter(Boolean).map((text) => {
+    const line = document.createElement('div');
+    line.style.cssText = 'color: #c7d3e0; font-size: 14px;';
+    line.textContent = text;
+    return line;
+  });
+  const row = document.createElement('div');
+  for (const { action, label } of card.actions) {
+    const b = finishButtons[action];
+    b.textContent = label;
+    b.dataset.finish = action;
+    row.append(b);
+  }
+  endCard.replaceChildren(title, result, ...lines, row);
+}
+// Enter on the finish screen flies the next course (R, the shell's reset, flies this one again).
+addEventListener('keydown', (e) => {
+  if (e.key === 'Enter' && !e.repeat && shellReady && state.phase === 'done') nextCourse();
+});
 
 /** Shows the newest event due in the banner for BANNER_LIFE s, and the red glow of a miss. */
 function updateBanner(t: number): void {
@@ -1329,10 +1478,10 @@ function climbKey(up: number): string {
   return up > 0 !== params.pilotPitch ? '↑' : '↓';
 }
 
-/** The tip for the next ring now, or '' (none after the lessons, or once the flight is over). */
+/** The tip for the next ring now (a lesson's, then the coach's), or '' (once the flight is over). */
 function lessonTip(): string {
   const i = nextRing(rings);
-  if (state.phase !== 'flying' || i < 0 || i > 3) {
+  if (state.phase !== 'flying' || i < 0) {
     tipRing = -1;
     return '';
   }
@@ -1346,21 +1495,43 @@ function lessonTip(): string {
   // Ring 1's tip is the start's, up while the flight waits; on a phone each tip goes a little after
   // the pilot has acted on it (TIP_LINGER), so it does not cover the sky all the way to its ring.
   if ((i === 0 && !holding) || shell.world.time >= tipGoneAt) return '';
-  return lessonTipText(i, tipWay, { touch: touchFirst, compact, pilotPitch: params.pilotPitch });
+  const reader = { touch: touchFirst, compact, pilotPitch: params.pilotPitch };
+  // After the lessons the coach says where each ring lies and what to do, to the last (./coach.ts).
+  if (i >= LESSON_RINGS) {
+    // The ways from the marker's point when it shows one (./coach.ts markerBearing), so the words agree with the screen.
+    const way = markedAt ? ringWay(markerBearing(rings[i]!, markedAt)) : tipWay;
+    return courseTipText(i, rings.length, way, reader, pathAim.visible && pathAim.inside);
+  }
+  return lessonTipText(i, tipWay, reader);
 }
+
+/** What to touch on a phone, and where: the round stick under the scene, at its left. */
+const STICK_WHERE = 'Drag the stick at bottom left';
 
 /** What the tip's second line asks while the flight waits for the pilot (`holding`): the input that goes on. */
 function waitLine(): string {
   if (!holding) return '';
-  if (tipRing === 0) return touchFirst ? 'Move the stick to start.' : 'Press an arrow key to start.';
+  // The stick is named with its place: "move the stick" alone left a stranger looking for one.
+  if (tipRing === 0) return touchFirst ? `${STICK_WHERE} to start.` : 'Press an arrow key to start.';
   const key = tipWay.side ? (tipWay.side > 0 ? '→' : '←') : tipWay.up ? climbKey(tipWay.up) : 'an arrow key';
-  return touchFirst ? 'Paused: move the stick to fly on.' : `Paused: press ${key} to fly on.`;
+  return touchFirst ? 'Paused: drag the stick to fly on.' : `Paused: press ${key} to fly on.`;
 }
 
-/** Shows the lesson tip for the next ring, if any (its place: `placeMessages`). */
+/**
+ * The phone's stick glows while the flight waits for it (`holding`): the tip says "drag the stick at
+ * bottom left" and the glow shows which one.
+ */
+const stickGlow = document.createElement('style');
+stickGlow.textContent =
+  '@keyframes flight-stick-glow { 50% { box-shadow: 0 0 0 6px rgba(255, 209, 102, 0.9), 0 0 18px 6px rgba(255, 209, 102, 0.6); } } .flight-wait .bp-stick { animation: flight-stick-glow 1.2s ease-in-out infinite; }';
+document.head.append(stickGlow);
+
+/** Shows the lesson tip for the next ring, if any (its place: `placeMessages`), and the stick's glow while the flight waits. */
 function showTip(): void {
   const text = lessonTip();
   const wait = text ? waitLine() : '';
+  const glow = holding && touchFirst;
+  if (document.body.classList.contains('flight-wait') !== glow) document.body.classList.toggle('flight-wait', glow);
   if (text !== tipText || wait !== tipWait) {
     tipText = text;
     tipWait = wait;
@@ -1572,6 +1743,8 @@ marker.dataset.hud = 'path-marker';
  */
 const pathAim = { visible: false, inside: false, offset: Infinity, x: 0, y: 0, drawnAt: -1 };
 const markAt = new Vector3();
+/** Where the marker shows the aircraft passing the next ring's plane (m, world), or null when it shows none. */
+let markedAt: readonly number[] | null = null;
 function markPath(): void {
   const i = nextRing(rings);
   const world = shell.world,
@@ -1587,6 +1760,7 @@ function markPath(): void {
         )
       : null;
   pathAim.visible = !!through && Number.isFinite(through.offset);
+  markedAt = pathAim.visible && through ? through.point : null;
   marker.style.display = pathAim.visible ? 'block' : 'none';
   promise.ring = -1;
   if (!through || !pathAim.visible) return;
@@ -1667,6 +1841,7 @@ function frame(alpha = 1): void {
   // Paused by the pilot (P, the toolbar's button): the scene dims and says so. A wait for the pilot
   // (`holding`) is said by the tip instead, over the ring it is about.
   pauseOverlay.update(shell.paused && !holding, touchFirst);
+  showSlowMotion();
   if (!app.pacer.mayDraw()) {
     updateBanner(world.time);
     updateGoal();
@@ -1825,8 +2000,7 @@ createStick({
   onChange: (x, y) => {
     // Progressive: a small dead zone, gentle near the centre, full at the rim (./assist.ts stickResponse).
     const r = stickResponse(x, y);
-    stickInput.x = r.x;
-    stickInput.y = r.y;
+    setStickInput(r);
     // Any touch goes on from a wait, even one inside the dead zone.
     if (x !== 0 || y !== 0) pilotGoes();
   },
@@ -1888,9 +2062,16 @@ shell.expose({
   rings: () => rings.map((r) => ({ ...r })),
   /** The lesson tip over the scene now ('' when none shows). */
   tip: () => tipText,
-  /** Every tip this page can show (./course.ts lessonTipText for rings 1 to 4 and each of RING_WAYS), for its reader: the worst case's fit is tested. */
-  tipTexts: () =>
-    [0, 1, 2, 3].flatMap((i) => RING_WAYS.map((w) => lessonTipText(i, w, { touch: touchFirst, compact, pilotPitch: params.pilotPitch }))),
+  /** Every tip this page can show (./course.ts lessonTipText for rings 1 to 4, ./coach.ts courseTipText for rings 5 and 10 of 10, each of RING_WAYS), for its reader: the worst case's fit is tested. */
+  tipTexts: () => {
+    const reader = { touch: touchFirst, compact, pilotPitch: params.pilotPitch };
+    // The coach's (./coach.ts) for ring 5 of 10 and the last (the longest names), each way and on course.
+    const coach = [LESSON_RINGS, 9].flatMap((i) => [
+      ...RING_WAYS.map((w) => courseTipText(i, 10, w, reader, false)),
+      courseTipText(i, 10, RING_WAYS[0]!, reader, true),
+    ]);
+    return [...[0, 1, 2, 3].flatMap((i) => RING_WAYS.map((w) => lessonTipText(i, w, reader))), ...coach];
+  },
   /** Game time at which the tip now shown goes, s (Infinity: it stays while its ring is next). */
   tipUntil: () => tipGoneAt,
   /** How long the next ring has fallen behind without a break, s (at LEFT_BEHIND_TIME it is missed: ./course.ts leaveBehind). */
@@ -1914,9 +2095,7 @@ shell.expose({
   aircraftBody: () => handles.body,
   /** Sets the stick as the on-screen one does: deflection x right, y up, each clamped to [-1, 1], through ./assist.ts stickResponse. */
   setStick: (x: number, y: number): void => {
-    const r = stickResponse(clamp1(x), clamp1(y));
-    stickInput.x = r.x;
-    stickInput.y = r.y;
+    setStickInput(stickResponse(clamp1(x), clamp1(y)));
   },
   /**
    * Starts recording every step's [game time s, bank degrees (right +), keys' bank input in [-1, 1],

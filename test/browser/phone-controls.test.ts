@@ -294,7 +294,7 @@ describe('phone controls', () => {
       const before = [words.textContent, wait.textContent, wait.style.display, tip.style.display];
       tip.style.display = 'block';
       wait.style.display = 'block';
-      wait.textContent = 'Paused: move the stick to fly on.';
+      wait.textContent = 'Paused: drag the stick to fly on.';
       const stage = document.querySelector('canvas')!.getBoundingClientRect().height,
         line = parseFloat(getComputedStyle(words).lineHeight);
       const measured = texts.map((text) => {
@@ -304,7 +304,8 @@ describe('phone controls', () => {
       [words.textContent, wait.textContent, wait.style.display, tip.style.display] = before;
       return { count: texts.length, longest: Math.max(...texts.map((t) => t.length)), stage, measured };
     });
-    expect(fits.count).toBe(4 * 81);
+    // The lessons' (rings 1 to 4) and the coach's (ring 5 and the last, each way and on course).
+    expect(fits.count).toBe(4 * 81 + 2 * 82);
     // The longest texts name two ways with amounts ("far right, a little higher"): they are measured.
     expect(fits.longest).toBeGreaterThan(70);
     expect(fits.measured.filter((m) => m.lines > 2 || !(m.height < 0.12 * fits.stage))).toEqual([]);

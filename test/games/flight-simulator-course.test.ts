@@ -13,6 +13,7 @@ import { createPhysicsWorld, setBodyThrust, setControlDeflection, step } from '@
 import { AIRCRAFT, aircraft, aircraftLevelDrag, terrainHeight } from '@bitphysics/projects';
 import { describe, expect, it } from 'vitest';
 import { AILERON_SCALE, ASSIST, assist, CONTROL_AUTHORITY, createAssistState, flightState } from '../../games/flight-simulator/assist';
+import { courseTipText, LESSON_RINGS, markerBearing } from '../../games/flight-simulator/coach';
 import {
   compareWithBest,
   courseStars,
@@ -52,6 +53,7 @@ import {
   ringWay,
   TIP_OFFSET,
 } from '../../games/flight-simulator/course';
+import { finishCard, LAST_SEED, nextSeed } from '../../games/flight-simulator/finish';
 
 const terrain = aircraft.build(createPhysicsWorld(aircraft.worldOptions()), { seed: 3 }).terrain;
 
@@ -402,6 +404,53 @@ describe('flight simulator course', () => {
     expect(() => lessonTipText(4, worst, phone)).toThrow(/lessonTipText: ring must be an integer in \[0, 3\], got 4/);
   });
 
+  it("after the lessons the coach guides every ring to the last: the ways it lies, the stick's or keys' way for each, let go once on course", () => {
+    const phone = { touch: true, compact: true, pilotPitch: false };
+    const desk = { touch: false, compact: false, pilotPitch: false };
+    for (const reader of [phone, desk, { ...desk, pilotPitch: true }])
+      for (const i of [LESSON_RINGS, 6, 9])
+        for (const w of RING_WAYS) {
+          const text = courseTipText(i, 10, w, reader, false);
+          // Named by number, the last as the last.
+          expect(text.startsWith(i === 9 ? 'Last ring (10)' : `Ring ${i + 1} of 10`), text).toBe(true);
+          const where = text.split(': ')[0]!;
+          expect(/\bright\b/.test(where), text).toBe(w.side > 0);
+          expect(/\bleft\b/.test(where), text).toBe(w.side < 0);
+          expect(/\bhigher\b/.test(where), text).toBe(w.up > 0);
+          expect(/\blower\b/.test(where), text).toBe(w.up < 0);
+          const does = text.split(': ')[1]!;
+          // The input for each way named: the stick's way on a phone, the arrow keys on a desktop
+          // (the climb's way flips with the pilot's pitch).
+          const up = w.up > 0 !== reader.pilotPitch;
+          if (reader.touch) {
+            if (w.side) expect(does, text).toContain(w.side > 0 ? 'right' : 'left');
+            if (w.up) expect(does, text).toMatch(up ? /\bup\b/ : /\bdown\b/);
+          } else {
+            expect(/→/.test(does), text).toBe(w.side > 0);
+            expect(/←/.test(does), text).toBe(w.side < 0);
+            expect(/↑/.test(does), text).toBe(w.up !== 0 && up);
+            expect(/↓/.test(does), text).toBe(w.up !== 0 && !up);
+          }
+          if (!w.side && !w.up) expect(text, text).toMatch(/straight ahead/);
+          // A phone's tip stays within the lessons' 90 characters (two lines at 390 px).
+          if (reader.compact) expect(text.length, text).toBeLessThanOrEqual(90);
+        }
+    // The coach's ways are the marker's: a ring flown along +x (right is +z) whose centre lies 100 m to
+    // the marker's right (+z) and 40 m below it is "to the right and lower"; flown along -x, +z is left.
+    const ahead = { x: 1000, y: 500, z: 100, nx: 1, ny: 0, nz: 0, status: 'ahead' as const };
+    expect(markerBearing(ahead, [1000, 540, 0])).toEqual({ side: 100, up: -40, bearing: 0 });
+    expect(ringWay(markerBearing(ahead, [1000, 540, 0]))).toMatchObject({ side: 1, up: -1 });
+    expect(ringWay(markerBearing({ ...ahead, nx: -1 }, [1000, 540, 0]))).toMatchObject({ side: -1, up: -1 });
+    expect(() => markerBearing({ ...ahead, nx: 0, ny: 1 }, [0, 0, 0])).toThrow(/markerBearing: ring's normal/);
+    expect(courseTipText(5, 10, RING_WAYS[0]!, phone, true)).toBe('Ring 6 of 10: ⊕ is in it. Let go and fly through.');
+    expect(courseTipText(9, 10, RING_WAYS[0]!, desk, true)).toBe(
+      'Last ring (10): the marker ⊕ is in it. Let go of the keys and fly through.',
+    );
+    expect(() => courseTipText(3, 10, RING_WAYS[0]!, desk, false)).toThrow(/courseTipText: ring must be an integer in \[4, 10\), got 3/);
+    expect(() => courseTipText(10, 10, RING_WAYS[0]!, desk, false)).toThrow(/courseTipText: ring must be an integer/);
+    expect(() => courseTipText(4, 0, RING_WAYS[0]!, desk, false)).toThrow(/courseTipText: total must be a positive integer, got 0/);
+  });
+
   it("the banner of a ring laid ahead after a miss and that ring's lesson tip, from the same way, say the same of where it lies", () => {
     // A stranger saw "Ring 2 is now just ahead of you" over "Ring 2 is to the left and far higher".
     for (const compact of [false, true])
@@ -537,5 +586,32 @@ describe('flight simulator course', () => {
     expect(() => relayAfterMiss(rings, 3, [0, Number.NaN, 0], 0, terrain)).toThrow(/relayAfterMiss: position must be 3 finite numbers/);
     expect(() => relayAfterMiss(rings, 3, [0, 0, 0], Number.NaN, terrain)).toThrow(/relayAfterMiss: heading must be a finite number/);
     expect(() => relayAfterMiss(rings, 3.5, [0, 0, 0], 0, terrain)).toThrow(/relayAfterMiss: from must be an integer, got 3.5/);
+  });
+
+  it('the finish card: the course time with 10 s a miss, the stars, the best; Retry (R) and Next course (Enter), key names only with keys', () => {
+    const base = { passed: 10, total: 10, missed: 0, flown: 95.4, vsBest: 'not' as const, best: null, touch: false };
+    const clean = finishCard(base);
+    expect(clean.title).toBe('Course complete!');
+    // 95.4 s is 1:35.
+    expect(clean.result).toBe('10 of 10 rings in 1:35  ★★★');
+    expect(clean.detail).toBe('');
+    expect(clean.actions).toEqual([
+      { action: 'retry', label: 'Retry ↺ (R)' },
+      { action: 'next', label: 'Next course ▶ (Enter)' },
+    ]);
+    // Three missed: 95.4 + 3 x 10 = 125.4 s is 2:05; two stars are lost (one per two misses, rounded up).
+    const missed = finishCard({ ...base, passed: 7, missed: 3, best: { passed: 9, time: 100 }, touch: true });
+    expect(missed.title).toBe('Course over');
+    expect(missed.result).toBe('7 of 10 rings in 2:05  ★☆☆');
+    expect(missed.stars).toBe(1);
+    expect(missed.detail).toBe('1:35 flown + 30 s for 3 missed');
+    expect(missed.best).toBe('Best: 9 of 10 rings in 1:40');
+    expect(missed.actions.map((a) => a.label)).toEqual(['Retry ↺', 'Next course ▶']);
+    expect(finishCard({ ...base, vsBest: 'better' }).best).toBe('A new best for this course!');
+    expect(() => finishCard({ ...base, passed: 11 })).toThrow(/finishCard: passed and total/);
+    // Next course: the next seed, back to 0 past the panel's last.
+    expect(nextSeed(1)).toBe(2);
+    expect(nextSeed(LAST_SEED)).toBe(0);
+    expect(() => nextSeed(1.5)).toThrow(/nextSeed: seed must be an integer/);
   });
 });

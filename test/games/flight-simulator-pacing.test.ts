@@ -1,0 +1,136 @@
+/**
+ * The flight simulator's pacing, tap latch and near-ring fade (games/flight-simulator/pacing.ts,
+ * tap-latch.ts, ring-fade.ts), headless: the game loop fed the flight's FRAME_CAP and STEPS_PER_FRAME keeps pace with the clock at
+ * 20 frames a second and goes in slow motion (FRAME_CAP s of game time a frame) at 5; the notice
+ * shows under 10 frames a second and not at the edge; a press let go before any step acts for
+ * MIN_PULSE s of game time, a held key as long as it is held; a ring that spans the view is faint,
+ * one far off is whole.
+ */
+
+import { createGameLoop } from '@bitphysics/game-kit';
+import { describe, expect, it } from 'vitest';
+import { FLIGHT_STEP, FRAME_CAP, gameTimeOfFrame, SLOW_MOTION_FPS, STEPS_PER_FRAME, slowMotion } from '../../games/flight-simulator/pacing';
+import { NEAR_FADE, nearFade } from '../../games/flight-simulator/ring-fade';
+import { clearPulse, createPulse, MIN_PULSE, pressPulse, pulseOn, releasePulse } from '../../games/flight-simulator/tap-latch';
+
+/** Runs the game loop with the flight's pacing for `frames` frames `frameMs` ms apart; returns the steps run. */
+function stepsAt(frameMs: number, frames: number): number {
+  let steps = 0;
+  const pending: ((t: number) => void)[] = [];
+  const loop = createGameLoop({
+    dt: FLIGHT_STEP,
+    step: () => {
+      steps++;
+    },
+    render: () => {},
+    maxFrameTime: FRAME_CAP,
+    maxStepsPerFrame: STEPS_PER_FRAME,
+    requestFrame: (cb) => pending.push(cb),
+    cancelFrame: () => {},
+  });
+  loop.start();
+  for (let k = 0; k <= frames; k++) pending.shift()!(k * frameMs);
+  loop.stop();
+  return steps;
+}
+
+describe('flight pacing', () => {
+  it('keeps pace with the clock at 20 frames a second; at 5 a frame advances FRAME_CAP s of game time (slow motion), not 0.2 s', () => {
+    // 10 s of clock at 20 fps: 10 s of game time (600 steps of 1/60 s), to one step.
+    expect(Math.abs(stepsAt(50, 200) * FLIGHT_STEP - 10)).toBeLessThanOrEqual(FLIGHT_STEP + 1e-9);
+    // 10 s of clock at 5 fps: 50 frames of 0.1 s each = 5 s of game time, to one step; catching up would be 10 s.
+    const game = stepsAt(200, 50) * FLIGHT_STEP;
+    expect(Math.abs(game - 50 * 0.1)).toBeLessThanOrEqual(FLIGHT_STEP + 1e-9);
+    expect(FRAME_CAP).toBe(0.1);
+    expect(gameTimeOfFrame(0.2)).toBe(0.1);
+    expect(gameTimeOfFrame(0.04)).toBe(0.04);
+    expect(() => gameTimeOfFrame(-1)).toThrow(/gameTimeOfFrame: frameSeconds/);
+  });
+
+  it('says "slow motion" under 10 frames a second, not at 12, and does not flicker between', () => {
+    expect(slowMotion(false, 0)).toBe(false);
+    expect(slowMotion(false, 5)).toBe(true);
+    expect(slowMotion(false, 12.5)).toBe(false);
+    // Between the two edges it keeps what it showed.
+    const mid = (SLOW_MOTION_FPS.on + SLOW_MOTION_FPS.off) / 2;
+    expect(mid).toBeGreaterThan(9);
+    expect(mid).toBeLessThan(12);
+    expect(slowMotion(true, mid)).toBe(true);
+    expect(slowMotion(false, mid)).toBe(false);
+    expect(() => slowMotion(false, Number.NaN)).toThrow(/slowMotion: fps/);
+  });
+});
+
+describe('tap latch', () => {
+  /** The steps of 1/60 s at which `p` acts, counting from game time `t0`, over `n` steps; `during(k)` runs before step k. */
+  function acting(p: ReturnType<typeof createPulse>, n: number, during: (k: number) => void = () => {}): number {
+    let count = 0;
+    for (let k = 0; k < n; k++) {
+      during(k);
+      if (pulseOn(p, 3 + k / 60)) count++;
+    }
+    return count;
+  }
+
+  it('a press and release before any step acts for MIN_PULSE s of game time (9 steps of 1/60 s), then stops', () => {
+    const p = createPulse();
+    pressPulse(p);
+    releasePulse(p);
+    // 0.15 s at 1/60 s a step: 9 steps exactly.
+    expect(MIN_PULSE).toBe(0.15);
+    expect(acting(p, 60)).toBe(9);
+  });
+
+  it('a key held 1 s acts for the whole second and stops at its release; a second tap acts again', () => {
+    const p = createPulse();
+    pressPulse(p);
+    const n = acting(p, 120, (k) => {
+      if (k === 60) releasePulse(p);
+    });
+    expect(n).toBe(60);
+    pressPulse(p);
+    releasePulse(p);
+    expect(acting(p, 60)).toBe(9);
+  });
+
+  it('a repeat of a held key does not start a new pulse; a cleared one does not act; bad time refused', () => {
+    const p = createPulse();
+    pressPulse(p);
+    expect(pulseOn(p, 0)).toBe(true);
+    pressPulse(p); // auto-repeat while held
+    releasePulse(p);
+    // First seen at 0: acts until 0.15 s, not from the repeat on.
+    expect(pulseOn(p, 0.1)).toBe(true);
+    expect(pulseOn(p, 0.16)).toBe(false);
+    pressPulse(p);
+    clearPulse(p);
+    expect(pulseOn(p, 1)).toBe(false);
+    expect(() => pulseOn(p, Number.NaN)).toThrow(/pulseOn: time/);
+  });
+});
+
+describe('near-ring fade', () => {
+  it("a ring spanning the phone's view at the pass is faint; 520 m off it is whole; in between it fades smoothly", () => {
+    // The phone's chase view: 64 degrees high, 390 x 587 px (the narrower side across), the camera
+    // 110 m behind the aircraft as it passes through a ring of outer radius 84 m (halo included).
+    const tanHalf = Math.tan((32 * Math.PI) / 180) * (390 / 587);
+    // The ring's edge is outside the view when its angle from the axis, atan(R / d), passes the
+    // view's half angle, atan(tanHalf): there the ring covers the screen's width.
+    expect(Math.atan(84 / 110)).toBeGreaterThan(Math.atan(tanHalf));
+    expect(nearFade(84, 110, tanHalf)).toBeCloseTo(NEAR_FADE.least, 12);
+    expect(nearFade(84, 0, tanHalf)).toBe(NEAR_FADE.least);
+    // 520 m off (ring 1 at the start) it spans under half the view: whole.
+    expect(84 / (520 * tanHalf)).toBeLessThan(NEAR_FADE.from);
+    expect(nearFade(84, 520, tanHalf)).toBe(1);
+    // Nearer and nearer, never brighter (to 1e-12), between the two ends.
+    let last = 1;
+    for (let d = 520; d >= 100; d -= 5) {
+      const f = nearFade(84, d, tanHalf);
+      expect(f).toBeLessThanOrEqual(last + 1e-12);
+      expect(f).toBeGreaterThanOrEqual(NEAR_FADE.least);
+      last = f;
+    }
+    expect(() => nearFade(0, 10, 1)).toThrow(/nearFade: radius and tanHalf/);
+    expect(() => nearFade(1, -1, 1)).toThrow(/nearFade: distance/);
+  });
+});
