@@ -1159,8 +1159,8 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
   it('coming in fast on the target the label tells to let go early and that Astern brakes, at most 3 times; not when far or slow', async () => {
     // The page loaded afresh (the hint is told at most 3 times a page): the same page, reloaded, so
     // that no second page draws beside it.
-    await shared.page.reload({ waitUntil: 'commit' });
-    await shared.waitReady();
+    await shared.page.reload();
+    await shared.waitFor(() => document.body.dataset.ready === 'true' && window.game !== undefined, null, 30_000);
     const g = await fresh(6);
     type P = Sub & { beaconPointer(): { index: number; text: string; brakeHints: number } };
     // Paused: the label is drawn from the hull's place and velocity as set (nothing moves).
