@@ -83,6 +83,31 @@ describe('createGameLoop', () => {
     expect(steps()).toBe(2); // no backlog from the pause
   });
 
+  it('runFrames runs n frames now, each its steps of the given time and a render: none while paused; bad n or seconds throw', () => {
+    const { frames, loop, alphas, steps } = setup(0.01);
+    loop.start();
+    frames.tick(16);
+    const drawn = loop.frames;
+    // 10 frames of one fixed step each (the default): 10 steps, 10 renders at alpha 0, no real frame run.
+    loop.runFrames(10);
+    expect(steps()).toBe(10);
+    expect(loop.frames).toBe(drawn + 10);
+    expect(alphas.slice(-10)).toEqual(new Array(10).fill(0));
+    expect(frames.pending).toBe(true);
+    // 4 frames of 25 ms: 10 of 10 ms in all (2, 3, 2, 3), each frame's alpha the time left over.
+    loop.runFrames(4, 0.025);
+    expect(steps()).toBe(20);
+    expect(alphas.at(-1)).toBeCloseTo(0, 9);
+    // Paused: drawn, alpha 1, no steps.
+    loop.paused = true;
+    loop.runFrames(3);
+    expect(steps()).toBe(20);
+    expect(alphas.slice(-3)).toEqual([1, 1, 1]);
+    expect(() => loop.runFrames(1.5)).toThrow(/runFrames: n must be an integer/);
+    expect(() => loop.runFrames(-1)).toThrow(RangeError);
+    expect(() => loop.runFrames(1, Number.NaN)).toThrow(/runFrames: seconds must be finite/);
+  });
+
   it('clamps long frames and caps the steps of one frame', () => {
     const { frames, loop, steps } = setup(0.01);
     loop.start();

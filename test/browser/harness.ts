@@ -442,6 +442,71 @@ export class GamePage {
   }
 
   /**
+   * Runs `n` of the game's frames now, in the page, as its animation loop runs them
+   * (`window.game.loop.runFrames`, packages/game-kit/src/loop.ts: each frame the steps its `seconds`
+   * hold, then the drawing), without waiting for the clock or the software renderer's frame rate. A
+   * key or a finger held meanwhile acts on their steps as in play. With `unpause` (default true) a
+   * paused game is unpaused for these frames and paused again after; with `unpause: false` they run
+   * as the game's pause has them (paused: drawn only, the camera and labels easing; a game that
+   * pauses itself, as for a tip, stops stepping there).
+   */
+  async runFrames(n: number, options: { unpause?: boolean; seconds?: number } = {}): Promise<void> {
+    if (n <= 0) return;
+    await this.runUntil((left: { n: number }) => --left.n <= 0, { n }, { ...options, maxFrames: n });
+  }
+
+  /**
+   * Runs the game's frames now (see `runFrames`), one at a time, until `predicate(arg)`, run in the
+   * page after each frame, returns a truthy value, and returns that value (the page as that frame
+   * left it). `arg` is the one object the predicate may change between frames. Game time goes by
+   * at 1/60 s a frame (`seconds`) whatever the machine's load.
+   * @throws Error naming the predicate and the game time reached when it is still falsy after
+   *   `maxFrames` (default 3 600: a minute of game time) frames.
+   */
+  async runUntil<A, R>(
+    predicate: (arg: A) => R,
+    arg: A,
+    options: { maxFrames?: number; unpause?: boolean; seconds?: number } = {},
+  ): Promise<Truthy<R>> {
+    const source = predicate.toString();
+    const out = await this.evaluate(
+      ({ source, arg, maxFrames, unpause, seconds }) => {
+        const game = window.game as unknown as {
+          paused: boolean;
+          world: { time: number };
+          loop: { runFrames(n: number, s?: number): void };
+        };
+        const test = new Function(`return (${source});`)() as (a: unknown) => unknown;
+        const resume = unpause && game.paused;
+        if (resume) game.paused = false;
+        try {
+          for (let i = 0; i < maxFrames; i++) {
+            game.loop.runFrames(1, seconds);
+            const value = test(arg);
+            if (value) return { value, time: game.world.time, frames: i + 1 };
+          }
+          return { value: null, time: game.world.time, frames: maxFrames };
+        } finally {
+          if (resume) game.paused = true;
+        }
+      },
+      {
+        source,
+        arg: arg as unknown,
+        maxFrames: options.maxFrames ?? 3600,
+        unpause: options.unpause ?? true,
+        seconds: options.seconds ?? 1 / 60,
+      },
+      `running frames until ${source.slice(0, 80)}`,
+    );
+    if (!out.value)
+      throw new Error(
+        `${this.page.url()}: runUntil(${source.slice(0, 120)}) still falsy after ${out.frames} frames, game time ${out.time} s; ${this.describe()}`,
+      );
+    return out.value as Truthy<R>;
+  }
+
+  /**
    * Distinct colours (RGB) drawn on the first canvas matching `selector` (default 'canvas'): 1 for a
    * blank canvas, hundreds for a drawn scene. Reads the canvas in the page right after the game's
    * next animation frame (drawImage onto a 2D canvas: fast; for a game with a frame pacer, its next

@@ -104,6 +104,21 @@ async function mousePath(page: Page, points: { x: number; y: number }[], steps =
   await page.mouse.up();
 }
 
+/** Page positions (CSS px) of cloth points (row, column), read in one frame. */
+function clothPointsOnPage(g: GamePage, at: [number, number][]): Promise<{ x: number; y: number }[]> {
+  return g.page.evaluate((at) => {
+    const w = window.game as unknown as ClothLab;
+    const cl = w.cloth(),
+      P = w.world.components.Position,
+      cam = w.renderer.camera,
+      box = document.querySelector('canvas')!.getBoundingClientRect();
+    return at.map(([r, c]) => {
+      const e = cl.points[r * cl.columns + c]! % 2 ** 25;
+      return { x: box.left + cam.toScreenX(P.x[e]!), y: box.top + cam.toScreenY(P.y[e]!) };
+    });
+  }, at);
+}
+
 /** World position of cloth point (row, column), m. */
 function clothPoint(g: GamePage, row: number, column: number): Promise<[number, number]> {
   return g.page.evaluate(
@@ -265,17 +280,18 @@ for (const [device, options] of [
       await g.waitFor(() => (window.game as unknown as { sound: { played: number } }).sound.played > 0, null);
       expect(cut).toBeGreaterThan(cl.columns);
       expect(await g.page.evaluate(() => (window.game as unknown as ClothLab).links())).toBeLessThan(before - cl.columns);
-      // The strip below the cut has come away: it counts as a piece off, and it falls.
-      await g.waitFor(() => (window.game as unknown as ClothLab).scraps() >= 1, null, 30_000);
+      // The strip below the cut has come away: it counts as a piece off, and it falls (the lab's
+      // frames run at once, GamePage.runUntil, at most 30 s of its time each).
+      await g.runUntil(() => (window.game as unknown as ClothLab).scraps() >= 1, null, { maxFrames: 1800 });
       const [, y0] = await clothPoint(g, cl.rows - 1, Math.floor(cl.columns / 2));
-      await g.waitFor(
+      await g.runUntil(
         ([r, c, y]) => {
           const w = window.game as unknown as ClothLab;
           const e = w.cloth().points[r! * w.cloth().columns + c!]! % 2 ** 25;
           return w.world.components.Position.y[e]! < y! - 0.5;
         },
-        [cl.rows - 1, Math.floor(cl.columns / 2), y0] as const,
-        30_000,
+        [cl.rows - 1, Math.floor(cl.columns / 2), y0],
+        { maxFrames: 1800 },
       );
       expect(await layout()).toEqual(layoutBefore);
       expect(g.errors).toEqual([]);
@@ -300,10 +316,16 @@ for (const [device, options] of [
           (window.game as unknown as Lab).paused = false;
         });
         // Held 0.6 m below where it hung: the links by the hand stretch (drawn lighter and thinner).
-        stretch = await g.waitFor(() => {
-          const s = (window.game as unknown as ClothLab).shownStretch();
-          return s > 0.12 ? s : 0;
-        }, null);
+        // The hand's last moves reach the page with its next frames; then the lab's frames run at once.
+        await g.frames(2);
+        stretch = await g.runUntil(
+          () => {
+            const s = (window.game as unknown as ClothLab).shownStretch();
+            return s > 0.12 ? s : 0;
+          },
+          null,
+          { maxFrames: 600 },
+        );
       });
       expect(held).toBeGreaterThan(5);
       expect(stretch).toBeGreaterThan(0.12);
@@ -312,7 +334,7 @@ for (const [device, options] of [
       const gust = g.page.getByRole('button', { name: 'gust of wind (hold G)', exact: true });
       const box = (await gust.boundingBox())!;
       await drag(g.page, [{ x: box.x + box.width / 2, y: box.y + box.height / 2 }], 1, async () => {
-        await g.waitFor(() => (window.game as unknown as ClothLab).gust() > 0.5, null);
+        await g.runUntil(() => (window.game as unknown as ClothLab).gust() > 0.5, null, { maxFrames: 600 });
       });
       expect(g.errors).toEqual([]);
     });
@@ -326,7 +348,7 @@ for (const [device, options] of [
         (window as unknown as { gustOut: typeof out }).gustOut = out;
         const x0 = w.world.components.Position.x[w.cloth().points[0]! % 2 ** 25]!;
         const cam0 = [w.renderer.camera.toScreenX(0), w.renderer.camera.toScreenX(1)];
-        const frame = (): void => {
+        const look = (): void => {
           const P = w.world.components.Position,
             cam = w.renderer.camera;
           // How far the view moved, CSS px: the world's x = 0 and x = 1 m on the screen.
@@ -337,6 +359,11 @@ for (const [device, options] of [
             out.left = Math.max(out.left, -cam.toScreenX(x));
             out.reach = Math.max(out.reach, x - x0);
           }
+        };
+        // After every animation frame, and after every frame run at once (the wait below calls it).
+        (window as unknown as { gustLook: () => void }).gustLook = look;
+        const frame = (): void => {
+          look();
           requestAnimationFrame(frame);
         };
         requestAnimationFrame(frame);
@@ -345,7 +372,14 @@ for (const [device, options] of [
       const gust = g.page.getByRole('button', { name: 'gust of wind (hold G)', exact: true });
       const box = (await gust.boundingBox())!;
       await drag(g.page, [{ x: box.x + box.width / 2, y: box.y + box.height / 2 }], 1, async () => {
-        await g.waitFor((t) => (window.game as unknown as Lab).world.time > t + 2.5, t0, 30_000);
+        await g.runUntil(
+          (t) => {
+            (window as unknown as { gustLook: () => void }).gustLook();
+            return (window.game as unknown as Lab).world.time > t + 2.5;
+          },
+          t0,
+          { maxFrames: 1800 },
+        );
       });
       const out = await g.page.evaluate(
         () => (window as unknown as { gustOut: { right: number; left: number; reach: number; panned: number } }).gustOut,
@@ -491,7 +525,7 @@ for (const [device, options] of [
       });
       // Running: the sheet sways in the breeze (the first sheet's shapes).
       const t0 = await g.page.evaluate(() => (window.game as unknown as Lab).world.time);
-      await g.waitFor((t) => (window.game as unknown as Lab).world.time > t + 1, t0, 30_000);
+      await g.runUntil((t) => (window.game as unknown as Lab).world.time > t + 1, t0, { maxFrames: 1800 });
       const cl = await g.page.evaluate(() => {
         const c = (window.game as unknown as ClothLab).cloth();
         return { rows: c.rows, columns: c.columns, outline: (window.game as unknown as ClothLab).targets()[0]! };
@@ -502,10 +536,6 @@ for (const [device, options] of [
       for (let i = 0; i < cl.outline.length; i += 2)
         ring.push([Math.round(cl.outline[i + 1]! / spacing), Math.round(cl.outline[i]! / spacing)]);
       ring.push(ring[0]!);
-      const onPage = async ([r, c]: [number, number]) => {
-        const [x, y] = await clothPoint(g, r, c);
-        return toPage(g, x, y);
-      };
       const camera = () =>
         g.page.evaluate(() => {
           const cam = (window.game as unknown as Lab).renderer.camera;
@@ -518,11 +548,10 @@ for (const [device, options] of [
         await g.page.evaluate(() => (window.game as unknown as Lab).world.time),
       ];
       const held: number[][] = [];
-      const points = [];
-      for (const p of ring) points.push(await onPage(p));
-      // Round the outline with the scissors (the sheet held still: the points read before stand);
-      // before they lift, the sheet is read twice, frames apart.
-      await drag(g.page, points, 4, async () => {
+      const points = await clothPointsOnPage(g, ring);
+      // Round the outline with the scissors (the sheet held still: the points read before stand),
+      // straight from point to point; before they lift, the sheet is read twice, frames apart.
+      await drag(g.page, points, 1, async () => {
         await g.waitFor(() => (window.game as unknown as ClothLab).stroking() || null, null);
         held.push(await sheetNow());
         await g.frames(4);
@@ -531,15 +560,12 @@ for (const [device, options] of [
       // Held still under the scissors: not a step (the clock stopped), not a point moved.
       expect(held[1]).toEqual(held[0]);
       // Once the scissors lift the sheet runs on and the shape comes away.
-      await g.waitFor(() => (window.game as unknown as ClothLab).cutOuts().length > 0 || null, null, 30_000);
+      await g.runUntil(() => (window.game as unknown as ClothLab).cutOuts().length > 0 || null, null, { maxFrames: 1800 });
       const label = await g.waitFor(() => (window.game as unknown as ClothLab).labels()[0] ?? null, null);
       // The label's bottom is above the washing line's pegged points (the shapes hang below them).
-      let top = Infinity;
-      for (let c = 0; c < cl.columns; c += 4) {
-        const [x, y] = await clothPoint(g, 0, c);
-        const p = await toPage(g, x, y);
-        top = Math.min(top, p.y);
-      }
+      const pegged: [number, number][] = [];
+      for (let c = 0; c < cl.columns; c += 4) pegged.push([0, c]);
+      const top = Math.min(...(await clothPointsOnPage(g, pegged)).map((p) => p.y));
       const canvasTop = await g.page.evaluate(() => document.querySelector('canvas')!.getBoundingClientRect().top);
       expect(canvasTop + label.y + label.height).toBeLessThanOrEqual(top);
       // The view held still through it all.
@@ -634,15 +660,16 @@ for (const [device, options] of [
       // Half a link below the row of points there (a stroke along a row of points would only touch
       // them), and long: the ribbon swings on while the finger moves.
       await drag(g.page, [await toPage(g, lx - 1.5, ly - 0.06), await toPage(g, rx + 1.5, ly - 0.06)], 12);
-      const fell = await g.waitFor(() => (window.game as unknown as ClothLab).cutOuts()[0]?.drop, null, 30_000);
+      // The lab's frames run at once (GamePage.runUntil), at most 30 s of its time each.
+      const fell = await g.runUntil(() => (window.game as unknown as ClothLab).cutOuts()[0]?.drop, null, { maxFrames: 1800 });
       expect(['falling', 'in', 'out']).toContain(fell);
-      const landed = await g.waitFor(
+      const landed = await g.runUntil(
         () => {
           const d = (window.game as unknown as ClothLab).cutOuts()[0]!;
           return d.drop === 'falling' ? null : d;
         },
         null,
-        30_000,
+        { maxFrames: 1800 },
       );
       // On the lawn, in the basket (its stars for how near the middle) or beside it (none).
       expect(landed.landedAt).toBeGreaterThan(0);
@@ -669,7 +696,9 @@ for (const [device, options] of [
       expect(await g.page.evaluate(() => (window.game as unknown as ClothLab).tool())).toBe('pull');
       const [px, py] = await onSheet(2, 2.45);
       await drag(g.page, [await toPage(g, px, py), await toPage(g, px, py - 2.2)], 10, async () => {
-        await g.waitFor(() => (window.game as unknown as ClothLab).cutOuts().length > 0, null, 30_000);
+        // The hand's last moves reach the page with its next frames; then the lab's frames run at once.
+        await g.frames(2);
+        await g.runUntil(() => (window.game as unknown as ClothLab).cutOuts().length > 0, null, { maxFrames: 1800 });
       });
       const strip = (await g.page.evaluate(() => (window.game as unknown as ClothLab).cutOuts()))[0]!;
       expect(strip.shape).toBe('strip');
@@ -765,10 +794,14 @@ for (const [device, options] of [
         w.paused = false;
         return w.world.components.Position.y[w.ids().ball % 2 ** 25]!;
       });
-      await g.waitFor((y0) => {
-        const w = window.game as unknown as RopeLab;
-        return w.world.components.Position.y[w.ids().ball % 2 ** 25]! < y0 - 1;
-      }, ball0);
+      await g.runUntil(
+        (y0) => {
+          const w = window.game as unknown as RopeLab;
+          return w.world.components.Position.y[w.ids().ball % 2 ** 25]! < y0 - 1;
+        },
+        ball0,
+        { maxFrames: 600 },
+      );
       // Cut while it hangs still, the ball drops beside the basket: a miss. The banner says so with
       // the stars this try caught (gold) and missed (outlined) and stays until a tap or click (it
       // used to start the level again 1.4 s after, hiding what was caught).
@@ -1005,7 +1038,7 @@ for (const [device, options] of [
       await g.page.evaluate(() => {
         (window.game as unknown as Lab).paused = false;
       });
-      await g.waitFor(() => (window.game as unknown as RopeLab).outcome() === 'won', null, 30_000);
+      await g.runUntil(() => (window.game as unknown as RopeLab).outcome() === 'won', null, { maxFrames: 1800 });
       // The banner and, under it, a row of the level's 3 stars, as many gold as were caught.
       await g.waitFor(() => (window.game as unknown as RopeLab).banner().text === 'In the basket!', null);
       // The status says the level is cleared without growing (on a phone it grew to 3 lines and

@@ -541,16 +541,16 @@ describe('projects', () => {
     });
     await g.page.keyboard.down('d');
     await g.page.keyboard.down('s');
-    // Held until the controls have moved (simulated time, not a wall-clock wait: a loaded machine
-    // runs few frames a second).
-    const s = await g.waitFor(
+    // Held until the controls have moved (simulated time, not a wall-clock wait: the game's frames
+    // run at once, GamePage.runUntil, at most 30 s of game time).
+    const s = await g.runUntil(
       (start) => {
         const w = window.game as unknown as Game & { hull(): number; state: { throttle: number; fill: number } };
         const r = { throttle: w.state.throttle, fill: w.state.fill, x: w.world.components.Position.x[w.hull()] as number };
         return r.throttle > 0.3 && r.fill > 0.1 && r.x > start ? r : null;
       },
       x0,
-      30_000,
+      { maxFrames: 1800 },
     );
     await g.page.keyboard.up('d');
     await g.page.keyboard.up('s');
@@ -560,13 +560,13 @@ describe('projects', () => {
     // Let go, the screw winds down to stop (it stayed at full ahead, which read as a stuck key) and
     // never backs on its own: the boat coasts on, slowed by the water's drag (a player brakes with
     // Astern); the coasting itself is test/games/submarine-helm.test.ts's.
-    const letGo = await g.waitFor(
+    const letGo = await g.runUntil(
       () => {
         const w = window.game as unknown as Game & { hull(): number; state: { throttle: number } };
         return w.state.throttle === 0 ? { vx: w.world.components.Velocity.x[w.hull()] as number } : null;
       },
       null,
-      30_000,
+      { maxFrames: 1800 },
     );
     expect(letGo.vx).toBeGreaterThan(0);
     expect(g.errors).toEqual([]);
@@ -585,31 +585,30 @@ describe('projects', () => {
     };
     // The hull put at rest with its deck 0.5 m under the first mine (within its 2.4 m reach): the
     // mine goes off, costs a hit and its blast (440 kN s) throws the light hull (80 t, tanks empty)
-    // down at about 5.5 m/s, where its buoyancy alone would only lift it. The page keeps the
-    // fastest sinking speed seen each frame.
+    // down at about 5.5 m/s, where its buoyancy alone would only lift it. The game is paused there
+    // and its frames of 1/60 s run at once (GamePage.runUntil), the fastest sinking speed seen kept
+    // after each (a loaded machine's frames of many steps each could pass the blast's peak by).
     const mine = await g.page.evaluate(() => {
-      const w = window.game as unknown as Sub;
+      const w = window.game as unknown as Sub & { paused: boolean };
+      w.paused = true;
       const m = w.mines()[0]!;
       const c = w.world.components;
       c.Position.x[w.hull()] = m.x;
       c.Position.y[w.hull()] = m.y - 3.5;
       c.Velocity.x[w.hull()] = 0;
       c.Velocity.y[w.hull()] = 0;
-      const seen = { vy: 0 };
-      (window as unknown as { subSink: typeof seen }).subSink = seen;
-      const frame = () => {
-        seen.vy = Math.min(seen.vy, c.Velocity.y[w.hull()]!);
-        if (w.state.minesHit === 0 || seen.vy > -3) requestAnimationFrame(frame);
-      };
-      requestAnimationFrame(frame);
       return m;
     });
     expect(mine.live).toBe(true);
-    const blast = await g.waitFor(() => {
-      const w = window.game as unknown as Sub;
-      const vy = (window as unknown as { subSink: { vy: number } }).subSink.vy;
-      return w.state.minesHit === 1 && vy < -3 ? { hits: w.state.hits, live: w.mines()[0]!.live } : null;
-    }, null);
+    const blast = await g.runUntil(
+      (seen) => {
+        const w = window.game as unknown as Sub;
+        seen.vy = Math.min(seen.vy, w.world.components.Velocity.y[w.hull()]!);
+        return w.state.minesHit === 1 && seen.vy < -3 ? { hits: w.state.hits, live: w.mines()[0]!.live } : null;
+      },
+      { vy: 0 },
+      { maxFrames: 600 },
+    );
     expect(blast.hits).toBe(1);
     expect(blast.live).toBe(false);
     // Two scrapes already; the hull put into the seabed under it, coming down at 4 m/s (over the
@@ -622,7 +621,10 @@ describe('projects', () => {
       w.world.components.Position.y[w.hull()] = bed.y[20]! + 1.4;
       w.world.components.Velocity.y[w.hull()] = -4;
     });
-    await g.waitFor(() => (window.game as unknown as Sub).state.over === 'sunk', null);
+    await g.runUntil(() => (window.game as unknown as Sub).state.over === 'sunk', null, { maxFrames: 600 });
+    await g.page.evaluate(() => {
+      (window.game as unknown as { paused: boolean }).paused = false;
+    });
     const again = g.page.getByRole('button', { name: 'Try again ↺', exact: true });
     await again.waitFor({ state: 'visible' });
     expect(await g.page.evaluate(() => (window.game as unknown as Sub).endText())).toContain('Hull breached!');
@@ -637,9 +639,9 @@ describe('projects', () => {
         w.world.components.Position.x[w.hull()] = b[2 * i]! - 3;
         w.world.components.Position.y[w.hull()] = b[2 * i + 1]!;
       }, i);
-      await g.waitFor((n) => (window.game as unknown as Sub).state.collected === n, i + 1);
+      await g.runUntil((n) => (window.game as unknown as Sub).state.collected === n, i + 1, { maxFrames: 600 });
     }
-    await g.waitFor(() => (window.game as unknown as Sub).state.over === 'won', null);
+    await g.runUntil(() => (window.game as unknown as Sub).state.over === 'won', null, { maxFrames: 600 });
     await g.page.getByRole('button', { name: 'Play again ▶', exact: true }).waitFor({ state: 'visible' });
     const won = await g.page.evaluate(() => (window.game as unknown as Sub).state);
     expect(won.time).toBeLessThan(won.par);
@@ -676,8 +678,8 @@ describe('projects', () => {
     }, null);
     expect(fx.count).toBe(1);
     expect(fx.banner).toBe('Beacon 1 of 6\nnext: B');
-    // Gone after PICKUP_LIFE (2 s) of game time.
-    await g.waitFor((start) => (window.game as unknown as Sub).world.time > start + 2.5, t0, 60_000);
+    // Gone after PICKUP_LIFE (2 s) of game time (the frames run at once, 6 steps each, as at 10 frames a second).
+    await g.runUntil((start) => (window.game as unknown as Sub).world.time > start + 2.5, t0, { seconds: 0.1 });
     await g.frames(2);
     const after = await g.page.evaluate(() => (window.game as unknown as Sub).pickupEffect());
     expect(after.count).toBe(0);
@@ -815,15 +817,15 @@ describe('projects', () => {
     await g.page.keyboard.down('x');
     await g.page.keyboard.down('ArrowUp');
     // Held until the nose has come up (simulated time, not a wall-clock wait, which a loaded machine
-    // fills with few frames).
-    const during = await g.waitFor(
+    // fills with few frames: the game's frames run at once, GamePage.runUntil, as its pause has them).
+    const during = await g.runUntil(
       (b) => {
         const w = window.game as unknown as Flight;
         const r = { throttle: w.state.throttle, elevator: w.state.elevator, pitch: w.instruments().pitch };
         return r.throttle > b.throttle + 0.1 && r.elevator > 0.3 && r.pitch > b.pitch + 1 ? r : null;
       },
       before,
-      30_000,
+      { unpause: false, maxFrames: 1800 },
     );
     await g.page.keyboard.up('ArrowUp');
     await g.page.keyboard.up('x');
@@ -832,11 +834,17 @@ describe('projects', () => {
     const opened = await g.page.evaluate(() => (window.game as unknown as Flight).state.throttle);
     await g.page.keyboard.down('Control');
     const t0 = await g.page.evaluate(() => (window.game as unknown as Flight).world.time);
-    await g.waitFor((t) => ((window.game as unknown as Flight).world.time > t + 0.5 ? true : null), t0, 30_000);
+    await g.runUntil((t) => ((window.game as unknown as Flight).world.time > t + 0.5 ? true : null), t0, {
+      unpause: false,
+      maxFrames: 1800,
+    });
     await g.page.keyboard.up('Control');
     expect(await g.page.evaluate(() => (window.game as unknown as Flight).state.throttle)).toBeCloseTo(opened, 6);
     await g.page.keyboard.down('z');
-    await g.waitFor((o) => ((window.game as unknown as Flight).state.throttle < o - 0.1 ? true : null), opened, 30_000);
+    await g.runUntil((o) => ((window.game as unknown as Flight).state.throttle < o - 0.1 ? true : null), opened, {
+      unpause: false,
+      maxFrames: 1800,
+    });
     await g.page.keyboard.up('z');
     // A held bank: the chase camera stays at its distance behind (its offset's length) in the turn.
     await g.page.keyboard.down('d');
@@ -869,13 +877,13 @@ describe('projects', () => {
     expect(agree.goal).toContain(` · ${agree.label.match(/\d+(\.\d)? k?m/)![0]} · `);
     const h0 = await g.page.evaluate(() => (window.game as unknown as Flight).instruments().heading);
     await g.page.keyboard.down('e');
-    const turned = await g.waitFor(
+    const turned = await g.runUntil(
       (start) => {
         const d = (((window.game as unknown as Flight).instruments().heading - start + 540) % 360) - 180;
         return d > 3 ? d : null;
       },
       h0,
-      30_000,
+      { unpause: false, maxFrames: 1800 },
     );
     await g.page.keyboard.up('e');
     expect(turned).toBeGreaterThan(3);
@@ -916,14 +924,18 @@ describe('projects', () => {
     expect(waiting.tip).toMatch(/^Fly through the yellow rings\. The marker ⊕ shows where you will pass/);
     // A tap: the key's input grows from small (KEY_RAMP: full after 0.4 s held), not to full at once, then falls back to 0.
     await g.page.keyboard.down('ArrowUp');
-    const tapped = await g.waitFor(() => {
-      const k = (window.game as unknown as Flight).keyInput().pitch;
-      return k > 0 ? k : null;
-    }, null);
+    const tapped = await g.runUntil(
+      () => {
+        const k = (window.game as unknown as Flight).keyInput().pitch;
+        return k > 0 ? k : null;
+      },
+      null,
+      { unpause: false, maxFrames: 600 },
+    );
     await g.page.keyboard.up('ArrowUp');
     expect(tapped).toBeLessThan(0.5);
     expect(await g.page.evaluate(() => (window.game as unknown as Flight).paused)).toBe(false);
-    await g.waitFor(() => (window.game as unknown as Flight).keyInput().pitch === 0, null);
+    await g.runUntil(() => (window.game as unknown as Flight).keyInput().pitch === 0, null, { unpause: false, maxFrames: 600 });
     // Down held: the path dives, so the marker drops below the ring's centre and out of the ring.
     await g.page.keyboard.down('ArrowDown');
     const dived = await g.waitFor(
@@ -994,9 +1006,10 @@ describe('projects', () => {
         },
         [k, yaw, climb] as const,
       );
-      // Space goes on from the wait (the start's, or ring 2's) without steering.
+      // Space goes on from the wait (the start's, or ring 2's) without steering; the game's frames
+      // run at once (GamePage.runUntil), as its pause has them (ring 2's tip pauses it).
       await g.page.keyboard.press('Space');
-      const seen = await g.waitFor(
+      const seen = await g.runUntil(
         (k) => {
           const w = window.game as unknown as Flight;
           if (!w.tip().startsWith(`Ring ${k + 1} `)) return null;
@@ -1020,7 +1033,7 @@ describe('projects', () => {
           return { tip: w.tip(), wait: document.querySelector('[data-hud="tip-wait"]')?.textContent ?? '', right, up, paused: w.paused };
         },
         k,
-        30_000,
+        { unpause: false, maxFrames: 1800 },
       );
       // Only the first lesson (ring 2: a plane turns by banking) waits while its tip is read; the
       // tips of rings 3 and 4 show while the flight goes on (a stranger found a pause at every
@@ -1080,7 +1093,10 @@ describe('projects', () => {
     for (const key of ['ArrowRight', 'ArrowLeft']) {
       await g.press('r');
       await g.page.keyboard.press('Space');
-      await g.waitFor(() => (window.game as unknown as Flight).world.time > 1 && !(window.game as unknown as Flight).paused, null);
+      await g.runUntil(() => (window.game as unknown as Flight).world.time > 1 && !(window.game as unknown as Flight).paused, null, {
+        unpause: false,
+        maxFrames: 600,
+      });
       await g.page.evaluate(() => {
         (window.game as unknown as Flight).paused = true;
       });
@@ -1127,12 +1143,17 @@ describe('projects', () => {
     };
     // The aircraft put 150 m before ring 1, on its line (the course's first ring lies along +x).
     await placeBeforeRing1(g, -150, 0);
-    // The flight waits for the pilot: Space starts it.
+    // The flight waits for the pilot: Space starts it. The game's frames run at once (GamePage.runUntil),
+    // as its pause has them, until what is waited for.
     await g.page.keyboard.press('Space');
-    const passed = await g.waitFor(() => {
-      const w = window.game as unknown as Flight;
-      return w.state.score === 1 ? { status: w.rings()[0]!.status, banner: w.banner().text } : null;
-    }, null);
+    const passed = await g.runUntil(
+      () => {
+        const w = window.game as unknown as Flight;
+        return w.state.score === 1 ? { status: w.rings()[0]!.status, banner: w.banner().text } : null;
+      },
+      null,
+      { unpause: false, maxFrames: 600 },
+    );
     expect(passed.status).toBe('passed');
     expect(passed.banner).toBe('Ring 1 ✓');
     // The ring flown through fades out and goes (it lay on as a big green arc across the chase view,
@@ -1142,14 +1163,18 @@ describe('projects', () => {
     // Ring 2, the first turn, comes with a tip over the scene in plain words: which side it is on
     // (the side the course lays it, from the aircraft's heading), that a plane turns by tipping its
     // wings, and the key for it.
-    const tip = await g.waitFor(() => {
-      const w = window.game as unknown as Flight & { tip(): string };
-      const r = w.rings()[1]!,
-        c = w.world.components,
-        e = w.aircraftBody();
-      const right = (r.x - c.Position.x[e]!) * -c.Velocity.z[e]! + (r.z - c.Position.z[e]!) * c.Velocity.x[e]! > 0;
-      return w.tip() ? { text: w.tip(), side: right ? 'right' : 'left' } : null;
-    }, null);
+    const tip = await g.runUntil(
+      () => {
+        const w = window.game as unknown as Flight & { tip(): string };
+        const r = w.rings()[1]!,
+          c = w.world.components,
+          e = w.aircraftBody();
+        const right = (r.x - c.Position.x[e]!) * -c.Velocity.z[e]! + (r.z - c.Position.z[e]!) * c.Velocity.x[e]! > 0;
+        return w.tip() ? { text: w.tip(), side: right ? 'right' : 'left' } : null;
+      },
+      null,
+      { unpause: false, maxFrames: 600 },
+    );
     expect(tip.text).toBe(
       `Ring 2 is to the ${tip.side}. A plane turns by tipping its wings (banking): hold ${tip.side === 'right' ? '→' : '←'} and it leans and turns ${tip.side}; let go to fly straight.`,
     );
@@ -1171,23 +1196,31 @@ describe('projects', () => {
       c.Position.z[e] = r.z - 150 * r.nz;
     });
     await g.page.keyboard.press('Space');
-    const missed = await g.waitFor(() => {
-      const w = window.game as unknown as Flight;
-      return w.rings()[1]!.status === 'missed' ? { missed: w.state.missed, banner: w.banner().text } : null;
-    }, null);
+    const missed = await g.runUntil(
+      () => {
+        const w = window.game as unknown as Flight;
+        return w.rings()[1]!.status === 'missed' ? { missed: w.state.missed, banner: w.banner().text } : null;
+      },
+      null,
+      { unpause: false, maxFrames: 600 },
+    );
     // The first miss costs a star and 10 s (20 s, with a star for every miss, left a stranger nothing
     // to play for after three misses: ./course.ts courseStars), said at
     // once in the banner; the goal line above the scene adds the time and shows the stars left.
     expect(missed).toEqual({ missed: 1, banner: 'Missed ring 2 · −1 ★ · +10 s' });
     // Ring 3, laid for a climb or a dive, seen from 100 m above ring 2: its tip names the ways it
     // lies from the aircraft now (lower, from up here), not the way it was laid.
-    const tip3 = await g.waitFor(() => {
-      const w = window.game as unknown as Flight & { tip(): string };
-      const r = w.rings()[2]!,
-        c = w.world.components,
-        e = w.aircraftBody();
-      return w.tip().startsWith('Ring 3') ? { text: w.tip(), below: r.y < c.Position.y[e]! - 60 } : null;
-    }, null);
+    const tip3 = await g.runUntil(
+      () => {
+        const w = window.game as unknown as Flight & { tip(): string };
+        const r = w.rings()[2]!,
+          c = w.world.components,
+          e = w.aircraftBody();
+        return w.tip().startsWith('Ring 3') ? { text: w.tip(), below: r.y < c.Position.y[e]! - 60 } : null;
+      },
+      null,
+      { unpause: false, maxFrames: 600 },
+    );
     expect(tip3.below).toBe(true);
     expect(tip3.text).toMatch(
       /^Ring 3 is (.* and )?(a little |far )?lower: hold (↓ to dive|← to bank and ↓ to dive|→ to bank and ↓ to dive)/,
@@ -1249,15 +1282,16 @@ describe('projects', () => {
     expect(shown.offset).toBeLessThan(71);
     expect(shown.inside).toBe(true);
     expect(shown.colour).toBe('rgb(93, 255, 138)');
-    // And the ring counts it: passed, with its banner, no miss.
-    const done = await g.waitFor(
+    // And the ring counts it: passed, with its banner, no miss (the game's frames run at once,
+    // GamePage.runUntil, as its pause has them).
+    const done = await g.runUntil(
       () => {
         const w = window.game as unknown as Flight;
         const r = w.rings()[0]!;
         return r.status === 'ahead' ? null : { status: r.status, missed: w.state.missed, score: w.state.score, banner: w.banner().text };
       },
       null,
-      60_000,
+      { unpause: false, maxFrames: 3600 },
     );
     expect(done).toEqual({ status: 'passed', missed: 0, score: 1, banner: 'Ring 1 ✓' });
     expect(g.errors).toEqual([]);
@@ -1281,8 +1315,9 @@ describe('projects', () => {
     await placeBeforeRing1(g, -100, 800);
     await g.page.keyboard.press('Space');
     // Past its plane the ring falls behind; 1.5 s of game time later (LEFT_BEHIND_TIME) it is
-    // missed, said at once, and counted once.
-    const missed = await g.waitFor(
+    // missed, said at once, and counted once. The game's frames run at once (GamePage.runUntil), as
+    // its pause has them.
+    const missed = await g.runUntil(
       () => {
         const w = window.game as unknown as Flight;
         const r = w.rings()[0]!,
@@ -1292,7 +1327,7 @@ describe('projects', () => {
         return { status: r.status, missed: w.state.missed, score: w.state.score, past: c.Position.x[e]! - r.x, banner: w.banner().text };
       },
       null,
-      60_000,
+      { unpause: false, maxFrames: 3600 },
     );
     expect(missed).toMatchObject({ status: 'missed', missed: 1, score: 0, banner: 'Missed ring 1 · −1 ★ · +10 s' });
     // Counted when it had fallen behind: flown on past its plane, at 110 to 170 m/s for 1.5 s at least.
@@ -1328,7 +1363,7 @@ describe('projects', () => {
     });
     const before = await g.page.evaluate(() => ({ ...(window.game as unknown as Flight).rings()[1]! }));
     await g.page.keyboard.press('Space');
-    const again = await g.waitFor(
+    const again = await g.runUntil(
       (before) => {
         const w = window.game as unknown as Flight;
         const r = w.rings()[1]!,
@@ -1350,7 +1385,7 @@ describe('projects', () => {
         };
       },
       before,
-      60_000,
+      { unpause: false, maxFrames: 3600 },
     );
     expect(again).toMatchObject({ missed: 1, status: 'ahead' });
     // The banner and ring 2's tip, read in the same frame, say the same of where ring 2 is (the
@@ -1375,7 +1410,10 @@ describe('projects', () => {
     };
     // Every frame, what the scene's messages and the status rows say is checked against each other
     // (a stranger saw "+60 s ☆☆☆" with "missed 1", "Ring 1 ✓" with "rings 0/10", "Engine 66 %" with
-    // "throttle 43 %": the readout was refreshed every 6th drawn frame).
+    // "throttle 43 %": the readout was refreshed every 6th drawn frame). The checks run after every
+    // animation frame and after every frame run at once by GamePage.runUntil (window.hudFrame, called
+    // by the waits below), which run the game's frames as its pause has them.
+    type HudFrame = { hudFrame(): void };
     await g.page.evaluate(() => {
       const hud = { bad: [] as string[], seen: [] as string[], frames: 0, warningAt: '' };
       (window as unknown as { hud: typeof hud }).hud = hud;
@@ -1440,9 +1478,13 @@ describe('projects', () => {
               hud.bad.push(`${n} over the warning: ${said}`);
           }
         }
-        requestAnimationFrame(check);
       };
-      requestAnimationFrame(check);
+      (window as unknown as { hudFrame: () => void }).hudFrame = check;
+      const frame = () => {
+        check();
+        requestAnimationFrame(frame);
+      };
+      requestAnimationFrame(frame);
     });
     /** Puts the aircraft `back` m before ring `ring` on its line, `up` m above its centre and `side` m to its right. */
     const place = (ring: number, back: number, up: number, side: number) =>
@@ -1461,16 +1503,31 @@ describe('projects', () => {
       );
     await place(0, 150, 0, 0);
     await g.page.keyboard.press('Space'); // the flight waits for the pilot
-    await g.waitFor(() => (window.game as unknown as Flight).banner().text === 'Ring 1 ✓', null, 60_000);
+    await g.runUntil(
+      () => {
+        (window as unknown as HudFrame).hudFrame();
+        return (window.game as unknown as Flight).banner().text === 'Ring 1 ✓';
+      },
+      null,
+      { unpause: false },
+    );
     // Faster: the engine's note and the readout say the same figure.
     await g.page.keyboard.press('x');
-    await g.waitFor(() => (window as unknown as { hud: { seen: string[] } }).hud.seen.includes('note') || null, null, 60_000);
+    await g.runUntil(
+      () => {
+        (window as unknown as HudFrame).hudFrame();
+        return (window as unknown as { hud: { seen: string[] } }).hud.seen.includes('note') || null;
+      },
+      null,
+      { unpause: false },
+    );
     // Ring 2 missed 250 m to its right and 100 m above (the lesson's tip waits: Space goes on): ring 3,
     // laid on the line from ring 2's centre, was seen 15 degrees off its way through from there.
     await place(1, 150, 100, 250);
     await g.page.keyboard.press('Space');
-    const missed = await g.waitFor(
+    const missed = await g.runUntil(
       () => {
+        (window as unknown as HudFrame).hudFrame();
         const w = window.game as unknown as Flight;
         if (!w.banner().text.startsWith('Missed ring 2')) return null;
         const r = w.rings()[2]!,
@@ -1483,16 +1540,17 @@ describe('projects', () => {
         return { facing: (dx * r.nx + dy * r.ny + dz * r.nz) / Math.hypot(dx, dy, dz) };
       },
       null,
-      60_000,
+      { unpause: false },
     );
     expect(missed.facing).toBeGreaterThan(0.995);
-    const hud = await g.waitFor(
+    const hud = await g.runUntil(
       () => {
+        (window as unknown as HudFrame).hudFrame();
         const h = (window as unknown as { hud: { bad: string[]; seen: string[]; frames: number } }).hud;
         return h.seen.includes('miss') ? h : null;
       },
       null,
-      60_000,
+      { unpause: false },
     );
     expect(hud.bad.slice(0, 5)).toEqual([]);
     expect(new Set(hud.seen)).toEqual(new Set(['pass', 'note', 'miss']));
@@ -1504,7 +1562,14 @@ describe('projects', () => {
     // (test/games/flight-simulator-assist.test.ts).
     await recordBank(g);
     await g.page.keyboard.down('ArrowLeft');
-    await g.waitFor(() => (window.game as unknown as Flight).instruments().roll < -30 || null, null, 60_000);
+    await g.runUntil(
+      () => {
+        (window as unknown as HudFrame).hudFrame();
+        return (window.game as unknown as Flight).instruments().roll < -30 || null;
+      },
+      null,
+      { unpause: false },
+    );
     await g.page.keyboard.up('ArrowLeft');
     const { rolledOn, levelIn, trace } = await afterRelease(g);
     expect(rolledOn, trace).toBeLessThan(5);
@@ -1520,13 +1585,14 @@ describe('projects', () => {
       c.Velocity.y[e] = -12;
     });
     await g.page.keyboard.down('ArrowDown');
-    const warned = await g.waitFor(
+    const warned = await g.runUntil(
       () => {
+        (window as unknown as HudFrame).hudFrame();
         const h = (window as unknown as { hud: { bad: string[]; seen: string[]; frames: number } }).hud;
         return h.seen.includes('warning') ? h : null;
       },
       null,
-      60_000,
+      { unpause: false },
     );
     await g.page.keyboard.up('ArrowDown');
     expect(warned.bad.slice(0, 5)).toEqual([]);

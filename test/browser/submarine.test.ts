@@ -49,6 +49,54 @@ type Sub = {
 };
 
 /**
+ * The game time of one frame (s) where frames run at once (GamePage.runUntil) only to let game time
+ * go by: 6 steps a frame, as a machine drawing 10 frames a second runs them (the page runs up to 60
+ * a frame), so the page draws a sixth as often. Where a case reads every frame, its frames are 1/60 s.
+ */
+const FRAME_S = 0.1;
+
+/**
+ * Keeps, in the page, the last pointer event seen (window.lastPointer: x, y, CSS px, and 1 while
+ * pressed, 0 once lifted), for `pointerSeen` and `pointerLifted`.
+ */
+async function keepLastPointer(g: GamePage): Promise<void> {
+  await g.page.evaluate(() => {
+    const w = window as unknown as { lastPointer?: number[] };
+    if (w.lastPointer) return;
+    w.lastPointer = [];
+    for (const type of ['pointerdown', 'pointermove', 'pointerup', 'pointercancel'])
+      addEventListener(
+        type,
+        (e) => {
+          const p = e as PointerEvent;
+          w.lastPointer = [p.clientX, p.clientY, type === 'pointerup' || type === 'pointercancel' ? 0 : 1];
+        },
+        { capture: true },
+      );
+  });
+}
+
+/** Waits (by the page's own frames) until the page has seen the finger lifted (see `keepLastPointer`). */
+async function pointerLifted(g: GamePage): Promise<void> {
+  await g.waitFor(() => (window as unknown as { lastPointer?: number[] }).lastPointer?.[2] === 0, null);
+}
+
+/**
+ * Waits (by the page's own frames) until the page has seen a pointer event at (x, y), CSS px, within
+ * 1 px: a finger's moves reach the page's handlers with its next frame, after the protocol's call that
+ * sent them has returned, and frames run at once by `runUntil` would otherwise run before them.
+ */
+async function pointerSeen(g: GamePage, x: number, y: number): Promise<void> {
+  await g.waitFor(
+    ([x, y]) => {
+      const p = (window as unknown as { lastPointer?: number[] }).lastPointer ?? [];
+      return p[2] === 1 && Math.abs(p[0]! - x!) <= 1 && Math.abs(p[1]! - y!) <= 1;
+    },
+    [x, y],
+  );
+}
+
+/**
  * On a phone, from the page's start: the card of gestures over the bottom of the scene is up until the
  * first touch, on the stick too; the stick pulled down floods the tanks, pushed right drives the screw,
  * and pushed a little under half way runs the screw at about half. Leaves the screw stopped.
@@ -57,6 +105,7 @@ async function stickOnPhone(g: GamePage): Promise<void> {
   const read = (field: 'fill' | 'throttle') => g.page.evaluate((f) => (window.game as unknown as Sub).state[f], field);
   const time = () => g.page.evaluate(() => (window.game as unknown as Sub).world.time);
   expect(await read('fill')).toBe(0);
+  await keepLastPointer(g);
   // At the start the arrow's badge is not drawn over beacon A, the one it points to (a stranger saw
   // it there: the lamp lay 12 px inside the depth gauge and counted as off screen): A is in view,
   // its ring (8 m) clear of any badge.
@@ -92,8 +141,11 @@ async function stickOnPhone(g: GamePage): Promise<void> {
     ],
     0,
     async () => {
-      // Held until the tanks take water (at most 10 s), not a fixed time.
-      await g.waitFor(() => (window.game as unknown as Sub).state.fill > 0.02, null, 30_000).catch(() => undefined);
+      // Held until the tanks take water (at most 10 s of game time), not a fixed time.
+      await pointerSeen(g, cx, cy + 45);
+      await g
+        .runUntil(() => (window.game as unknown as Sub).state.fill > 0.02, null, { maxFrames: 100, seconds: FRAME_S })
+        .catch(() => undefined);
       fill = await read('fill');
       hintGoing = await g.page.evaluate(() => document.querySelector('[data-hud="touch-hint"]')?.classList.contains('bp-gone') ?? true);
     },
@@ -110,7 +162,10 @@ async function stickOnPhone(g: GamePage): Promise<void> {
     ],
     0,
     async () => {
-      await g.waitFor(() => (window.game as unknown as Sub).state.throttle > 0.05, null, 30_000).catch(() => undefined);
+      await pointerSeen(g, cx + 45, cy);
+      await g
+        .runUntil(() => (window.game as unknown as Sub).state.throttle > 0.05, null, { maxFrames: 100, seconds: FRAME_S })
+        .catch(() => undefined);
       throttle = await read('throttle');
     },
   );
@@ -126,8 +181,9 @@ async function stickOnPhone(g: GamePage): Promise<void> {
     ],
     0,
     async () => {
+      await pointerSeen(g, cx + 25, cy);
       const t0 = await time();
-      await g.waitFor((start) => (window.game as unknown as Sub).world.time > start + 1, t0, 30_000);
+      await g.runUntil((start) => (window.game as unknown as Sub).world.time > start + 1, t0, { seconds: FRAME_S });
       throttle = await read('throttle');
     },
   );
@@ -146,11 +202,12 @@ async function stickOnPhone(g: GamePage): Promise<void> {
     0,
     async () => {
       // Set with the finger on the stick (let go, the screw would wind down before the touch came).
+      await pointerSeen(g, cx, cy - 50);
       await g.page.evaluate(() => {
         (window.game as unknown as Sub).state.throttle = 1;
       });
       const t0 = await time();
-      await g.waitFor((start) => (window.game as unknown as Sub).world.time > start + 0.5, t0, 30_000);
+      await g.runUntil((start) => (window.game as unknown as Sub).world.time > start + 0.5, t0, { seconds: FRAME_S });
       throttle = await read('throttle');
       mode = await g.page.evaluate(() => (window.game as unknown as Sub).state.mode);
     },
@@ -204,16 +261,18 @@ async function diveOnPhone(g: GamePage): Promise<void> {
   const stick = (await g.page.getByRole('slider', { name: 'stick: dive, rise, ahead, astern' }).boundingBox())!;
   const cdp = await g.page.context().newCDPSession(g.page);
   await g.page.evaluate(() => {
-    const w = window.game as unknown as SubOnPhone;
-    addEventListener('pointerdown', () => ((window as unknown as { touchAt?: number }).touchAt ??= w.world.time), { capture: true });
+    const w = window.game as unknown as SubOnPhone,
+      seen = window as unknown as { touchAt?: number };
+    seen.touchAt = undefined;
+    addEventListener('pointerdown', () => (seen.touchAt ??= w.world.time), { capture: true, once: true });
   });
   await cdp.send('Input.dispatchTouchEvent', {
     type: 'touchStart',
     touchPoints: [{ x: stick.x + stick.width / 2, y: stick.y + stick.height - 14, id: 1 }],
   });
   const t0 = await g.waitFor(() => (window as unknown as { touchAt?: number }).touchAt ?? null, null);
-  // Held until 3.5 s of game time have passed (a slow machine runs fewer frames, not less game time).
-  await g.waitFor((start) => (window.game as unknown as SubOnPhone).world.time > start + 3.5, t0, 60_000);
+  // Held until 3.5 s of game time have passed, the frames run at once.
+  await g.runUntil((start) => (window.game as unknown as SubOnPhone).world.time > start + 3.5, t0, { seconds: FRAME_S });
   await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
   await cdp.detach();
   const r = await g.page.evaluate((start) => {
@@ -273,10 +332,14 @@ async function diveOnPhone(g: GamePage): Promise<void> {
     const w = window.game as unknown as { world: { components: { Position: { x: Float64Array } } }; hull(): number };
     w.world.components.Position.x[w.hull()] = -90;
   });
-  const far = await g.waitFor(() => {
-    const z = (window.game as unknown as { beaconPointer(): { zoom: number } }).beaconPointer().zoom;
-    return z < 4.05 ? z : null;
-  }, null);
+  const far = await g.runUntil(
+    () => {
+      const z = (window.game as unknown as { beaconPointer(): { zoom: number } }).beaconPointer().zoom;
+      return z < 4.05 ? z : null;
+    },
+    null,
+    { maxFrames: 600 },
+  );
   expect(far).toBeGreaterThan(3.99);
   // The beacon far ahead: the arrow's badge at the right edge keeps clear of the depth gauge (it
   // sat over it).
@@ -323,25 +386,58 @@ async function expectZoomFloor(g: GamePage, device: string): Promise<void> {
     w.world.components.Position.y[w.hull()] = w.handles().beacons[1]!;
   });
   const least = device === 'desktop' ? 5 : 4;
-  const far = await g.waitFor(
+  const far = await g.runUntil(
     (lo) => {
       const z = (window.game as unknown as Sub).camera().zoom;
       return z < lo + 0.1 ? z : null;
     },
     least,
-    60_000,
+    { maxFrames: 600 },
   );
   expect(far).toBeGreaterThan(least - 0.1);
 }
 
+/**
+ * The shared submarine page `g` made ready for a case: keys and the stick let go, the frame pacer
+ * as the page made it, `beacons` beacons (the panel's slider) and a fresh world (R), running, drawn.
+ * A retried case starts here too, whatever the try before left.
+ */
+async function freshSubmarine(g: GamePage, beacons: number): Promise<GamePage> {
+  for (const key of ['s', 'd', 'a', 'ArrowDown']) await g.page.keyboard.up(key);
+  await g.page.evaluate((n) => {
+    const w = window.game as unknown as Sub & {
+      params: { beacons: number };
+      reset(): void;
+      setStick(x: number, y: number): void;
+      pacer: { mayDraw(): boolean };
+    };
+    const kept = window as unknown as { pacerMayDraw?: () => boolean };
+    kept.pacerMayDraw ??= w.pacer.mayDraw;
+    w.pacer.mayDraw = kept.pacerMayDraw;
+    w.setStick(0, 0);
+    w.params.beacons = n;
+    w.reset();
+    w.paused = false;
+  }, beacons);
+  await g.frames(2);
+  return g;
+}
+
 describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
   let h: Harness;
+  // One page for the cases at this size (a page load costs seconds in software-rendered Chromium),
+  // each case from a fresh world (`freshSubmarine`; the brake hint's reloads it). The Dive case runs
+  // first: on a phone it reads the card of gestures, which the first touch takes away.
+  let shared: GamePage;
   beforeAll(async () => {
     h = await Harness.start();
+    shared = await h.openGame('submarine', { viewport, touch, query: { waves: 0, beacons: 1 } });
   }, START_TIMEOUT_MS);
   afterAll(async () => {
+    await shared?.close();
     await h?.close();
   });
+  const fresh = (beacons: number) => freshSubmarine(shared, beacons);
 
   it('a Dive moves the depth order at once and the boat stops on it when let go; a glow touched scores; on a phone the stick floods the tanks and drives the screw as far as it is pushed', async () => {
     // The boat hovering at 30 m (tanks at neutral, holding), on a calm sea with one beacon. A full
@@ -351,7 +447,9 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     // boat passes the order by under 0.2 m and is within 0.2 m of it 2 s after (helm.ts: measured
     // 0.00 m and 1.2 s headless from the full dive speed). While it dives the depth ladder by the
     // hull shows, with the 30 m figure; 2 s after it stopped on the order the ladder has faded out.
-    const g = await h.openGame('submarine', { viewport, touch, query: { waves: 0, beacons: 1 } });
+    // The game is paused from the placing on, and its frames of 1/60 s are run at once
+    // (GamePage.runUntil), with the key or the finger held meanwhile.
+    const g = await fresh(1);
     // From the start, with the first glows in view, a hint over the scene says what a glow is worth
     // and when it counts (touched, and in a row), within the view's width.
     await g.frames(3);
@@ -370,9 +468,11 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
       c.Velocity.y[e] = 0;
       c.Ballast.fore[e] = c.Ballast.aft[e] = 0.7675;
       Object.assign(w.state, { holdY: -30, mode: 'holding', fill: 0.7675 });
+      w.paused = true;
       const trace: { t: number; y: number; order: number; text: string; ladder: number; marks: string[] }[] = [];
       (window as unknown as { subTrace: typeof trace }).subTrace = trace;
-      const frame = () => {
+      // Read after each frame run (the runUntil predicates below call it).
+      (window as unknown as { subFrame: () => void }).subFrame = () => {
         trace.push({
           t: w.world.time,
           y: c.Position.y[e]!,
@@ -381,29 +481,44 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
           ladder: w.depthLadder().alpha,
           marks: w.depthLadder().marks,
         });
-        if (trace.length < 20_000) requestAnimationFrame(frame);
       };
-      requestAnimationFrame(frame);
     });
-    await g.frames(3);
+    type Traced = { subFrame: () => void };
+    await g.runUntil(
+      (left) => {
+        (window as unknown as Traced).subFrame();
+        return --left.n <= 0;
+      },
+      { n: 3 },
+    );
     const stick = touch ? (await g.page.getByRole('slider', { name: 'stick: dive, rise, ahead, astern' }).boundingBox())! : null;
     const cdp = touch ? await g.page.context().newCDPSession(g.page) : null;
     const t0 = await g.page.evaluate(() => (window.game as unknown as Sub).world.time);
-    if (stick && cdp)
-      await cdp.send('Input.dispatchTouchEvent', {
-        type: 'touchStart',
-        touchPoints: [{ x: stick.x + stick.width / 2, y: stick.y + stick.height - 10, id: 1 }],
-      });
-    else await g.page.keyboard.down('s');
+    if (stick && cdp) {
+      await keepLastPointer(g);
+      const [x, y] = [stick.x + stick.width / 2, stick.y + stick.height - 10];
+      await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: [{ x, y, id: 1 }] });
+      await pointerSeen(g, x, y);
+    } else await g.page.keyboard.down('s');
     // The stick at its rim and the key ask for the same steady share of the dive speed (helm.ts
     // keyHeaveShare); the stick is held for less game time, as a thumb's flick is.
-    await g.waitFor(([t, held]) => (window.game as unknown as Sub).world.time > t + held, [t0, touch ? 0.8 : 1.5] as const, 60_000);
+    await g.runUntil(
+      ([t, held]) => {
+        (window as unknown as Traced).subFrame();
+        return (window.game as unknown as Sub).world.time > t! + held!;
+      },
+      [t0, touch ? 0.8 : 1.5],
+    );
     if (cdp) {
       await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
       await cdp.detach();
+      await pointerLifted(g);
     } else await g.page.keyboard.up('s');
     const t1 = await g.page.evaluate(() => (window.game as unknown as Sub).world.time);
-    await g.waitFor((t) => (window.game as unknown as Sub).world.time > t + 2, t1, 60_000);
+    await g.runUntil((t) => {
+      (window as unknown as Traced).subFrame();
+      return (window.game as unknown as Sub).world.time > t + 2;
+    }, t1);
     const r = await g.page.evaluate((t1) => {
       const trace = (
         window as unknown as { subTrace: { t: number; y: number; order: number; text: string; ladder: number; marks: string[] }[] }
@@ -452,7 +567,7 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
       return { before: w.state.score, count: w.state.glowsCaught, i };
     });
     if (!caught) throw new Error('every glow of the trail was caught before the boat was placed');
-    await g.waitFor((n) => (window.game as unknown as Sub).state.glowsCaught > n, caught.count, 30_000);
+    await g.runUntil((n) => (window.game as unknown as Sub).state.glowsCaught > n, caught.count, { maxFrames: 1800 });
     const after = await g.page.evaluate(
       (i) => ({ score: (window.game as unknown as Sub).state.score, glow: (window.game as unknown as Sub).glows()[i]!.state }),
       caught.i,
@@ -460,7 +575,6 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     expect(after.glow).toBe('caught');
     expect(after.score - caught.before).toBe(10);
     expect(g.errors).toEqual([]);
-    await g.close();
   });
 
   // The lead itself on a desktop; a phone's view, narrower, is checked ahead of the bow below.
@@ -468,7 +582,7 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     // One beacon, the boat put 30 m past it (20 m down, clear of the seabed; one beacon lays no mines)
     // and driven on full ahead: before the look-ahead the camera centred between the boat and the
     // beacon behind it, so the boat sat right of centre with the way ahead at the view's edge.
-    const g = await h.openGame('submarine', { viewport, touch, query: { waves: 0, beacons: 1 } });
+    const g = await fresh(1);
     await g.page.evaluate(() => {
       const w = window.game as unknown as Sub;
       const c = w.world.components,
@@ -485,22 +599,23 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     const stick = touch ? (await g.page.getByRole('slider', { name: 'stick: dive, rise, ahead, astern' }).boundingBox())! : null;
     const cdp = touch ? await g.page.context().newCDPSession(g.page) : null;
     // Full ahead: D held, or a finger at the stick's right rim.
-    if (stick && cdp)
-      await cdp.send('Input.dispatchTouchEvent', {
-        type: 'touchStart',
-        touchPoints: [{ x: stick.x + stick.width - 12, y: stick.y + stick.height / 2, id: 1 }],
-      });
-    else await g.page.keyboard.down('d');
-    // Until the boat makes 7.5 m/s (its top speed is 8) and 2 s of game time more (the look-ahead eases in over about 0.8 s).
-    const t8 = await g.waitFor(
+    if (stick && cdp) {
+      await keepLastPointer(g);
+      const [x, y] = [stick.x + stick.width - 12, stick.y + stick.height / 2];
+      await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: [{ x, y, id: 1 }] });
+      await pointerSeen(g, x, y);
+    } else await g.page.keyboard.down('d');
+    // Until the boat makes 7.5 m/s (its top speed is 8) and 2 s of game time more (the look-ahead
+    // eases in over about 0.8 s): the frames run at once.
+    const t8 = await g.runUntil(
       () => {
         const w = window.game as unknown as Sub;
         return w.world.components.Velocity.x[w.hull()]! > 7.5 ? w.world.time : null;
       },
       null,
-      120_000,
+      { seconds: FRAME_S },
     );
-    await g.waitFor((t) => (window.game as unknown as Sub).world.time > t + 2, t8, 60_000);
+    await g.runUntil((t) => (window.game as unknown as Sub).world.time > t + 2, t8, { seconds: FRAME_S });
     const r = await g.page.evaluate(() => {
       const w = window.game as unknown as Sub;
       const cam = w.camera(),
@@ -529,15 +644,14 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     expect(r.cam.leadX).toBeGreaterThan(0.8 * 3 * 7.5);
     await expectZoomFloor(g, device);
     expect(g.errors).toEqual([]);
-    await g.close();
   });
 
   it.runIf(device === 'desktop')("the run's clock starts at the first key, and Astern from rest backs the boat", async () => {
     // A stranger's clock ran while they read the help; and Astern held the boat to 0.2 m/s backing
     // (the coasting brake fought the screw), so a beacon overshot could not be recovered.
-    const g = await h.openGame('submarine', { viewport, touch, query: { waves: 0, beacons: 1 } });
+    const g = await fresh(1);
     const t0 = await g.page.evaluate(() => (window.game as unknown as Sub).world.time);
-    await g.waitFor((start) => (window.game as unknown as Sub).world.time > start + 1, t0, 60_000);
+    await g.runUntil((start) => (window.game as unknown as Sub).world.time > start + 1, t0, { seconds: FRAME_S });
     const idle = await g.page.evaluate(() => (window.game as unknown as Sub).state.time);
     expect(idle).toBe(0);
     // Astern (A) held for 2 s of game time from rest, 20 m down (clear of the surface and seabed).
@@ -549,10 +663,11 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
       c.Velocity.x[e] = 0;
       c.Velocity.y[e] = 0;
       w.state.holdY = -20;
+      w.paused = true;
     });
     await g.page.keyboard.down('a');
     const pressed = await g.page.evaluate(() => (window.game as unknown as Sub).world.time);
-    await g.waitFor((start) => (window.game as unknown as Sub).world.time > start + 2, pressed, 60_000);
+    await g.runUntil((start) => (window.game as unknown as Sub).world.time > start + 2, pressed, { seconds: FRAME_S });
     const r = await g.page.evaluate(() => {
       const w = window.game as unknown as Sub;
       return { clock: w.state.time, time: w.world.time, vx: w.world.components.Velocity.x[w.hull()]! };
@@ -574,27 +689,30 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
       c.Velocity.x[e] = 0;
       w.state.holdY = c.Position.y[e]!;
     });
-    const far = await g.waitFor(() => {
-      const w = window.game as unknown as Sub & { labels(): { name: string; box: number[] }[] };
-      const cam = w.camera(),
-        c = w.world.components,
-        e = w.hull();
-      if (Math.abs(cam.time - w.world.time) > 1e-9 || Math.abs(cam.zoom - 5) > 0.05) return null;
-      const hx = cam.width / 2 + (c.Position.x[e]! - cam.x) * cam.zoom,
-        hy = cam.height / 2 - (c.Position.y[e]! - cam.y) * cam.zoom;
-      return {
-        bow: hx + 6 * cam.zoom,
-        hull: [hx - 6 * cam.zoom, hy - 2 * cam.zoom, 12 * cam.zoom, 4 * cam.zoom],
-        width: cam.width,
-        labels: w.labels(),
-      };
-    }, null);
+    const far = await g.runUntil(
+      () => {
+        const w = window.game as unknown as Sub & { labels(): { name: string; box: number[] }[] };
+        const cam = w.camera(),
+          c = w.world.components,
+          e = w.hull();
+        if (Math.abs(cam.time - w.world.time) > 1e-9 || Math.abs(cam.zoom - 5) > 0.05) return null;
+        const hx = cam.width / 2 + (c.Position.x[e]! - cam.x) * cam.zoom,
+          hy = cam.height / 2 - (c.Position.y[e]! - cam.y) * cam.zoom;
+        return {
+          bow: hx + 6 * cam.zoom,
+          hull: [hx - 6 * cam.zoom, hy - 2 * cam.zoom, 12 * cam.zoom, 4 * cam.zoom],
+          width: cam.width,
+          labels: w.labels(),
+        };
+      },
+      null,
+      { maxFrames: 600 },
+    );
     expect(far.bow).toBeLessThan(far.width - 120 + 1);
     for (const l of far.labels)
       if (l.name.startsWith('gauge'))
         expect(l.box[0]! < far.hull[0]! + far.hull[2]! && far.hull[0]! < l.box[0]! + l.box[2]!, l.name).toBe(false);
     expect(g.errors).toEqual([]);
-    await g.close();
   });
 
   // A portrait phone's framing (a desktop's is the lead above).
@@ -603,7 +721,7 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     // zooms in to its most (8 px/m) for a beacon this near. On a 390 px portrait phone that showed
     // 49 m across with the boat left of centre, 28 m ahead of the bow; the portrait view keeps at
     // least 70 m across and leads further. The desktop (160 m across at 8 px/m) is unchanged.
-    const g = await h.openGame('submarine', { viewport, touch, query: { waves: 0, beacons: 1 } });
+    const g = await fresh(1);
     await g.page.evaluate(() => {
       const w = window.game as unknown as Sub;
       const c = w.world.components,
@@ -614,19 +732,20 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
       c.Velocity.x[e] = 10;
       c.Velocity.y[e] = 0;
       w.state.holdY = b[1]!;
+      w.paused = true;
     });
     await g.page.keyboard.down('d');
     // About 1.5 s of game time from 40 m short: the look-ahead eases in over about 0.8 s; then back 20 m short, paused,
-    // and 40 frames for the zoom to settle (it eases 10% a frame).
+    // and 40 frames for the zoom to settle (it eases 10% a frame). The frames run at once.
     const t0 = await g.page.evaluate(() => (window.game as unknown as Sub).world.time);
-    await g.waitFor((t) => (window.game as unknown as Sub).world.time > t + 1.5, t0, 60_000);
+    await g.runUntil((t) => (window.game as unknown as Sub).world.time > t + 1.5, t0, { seconds: FRAME_S });
     await g.page.evaluate(() => {
       const w = window.game as unknown as Sub;
       w.paused = true;
       w.world.components.Position.x[w.hull()] = w.handles().beacons[0]! - 20;
     });
     await g.page.keyboard.up('d');
-    await g.frames(40);
+    await g.runFrames(40, { unpause: false });
     const r = await g.page.evaluate(() => {
       const w = window.game as unknown as Sub;
       const cam = w.camera(),
@@ -644,11 +763,10 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     else expect(r.cam.width / r.cam.zoom).toBeGreaterThan(69);
     await expectZoomFloor(g, device);
     expect(g.errors).toEqual([]);
-    await g.close();
   });
 
   it('a seabed hit and a mine each say what hit the hull, at the place, shake the view and light the hull gauge; on a phone, played again, a touch on the stick starts the boat down within 0.5 s of game time and the gauges and beacon arrow fit', async () => {
-    const g = await h.openGame('submarine', { viewport, touch, query: { waves: 0 } });
+    const g = await fresh(6);
     expect(await g.page.evaluate(() => (window.game as unknown as Sub).hitEffect().kind)).toBe('');
     expect(await g.page.locator('[data-hud="hull"]').textContent()).toBe('hull ▮▮▮ 3/3');
     // The hull put into the seabed coming down at 4 m/s (over the 1.5 m/s a hit needs).
@@ -693,7 +811,7 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     await check('seabed', 'SEABED!\n−1 hull', 'hull ▮▮▯ 2/3');
     // Level at 12 m/s, 45 m before the first mine at its depth: the warning comes by the hull at
     // once (contact in under 4 s), a tag telling which way to pass and an arrow from the hull to the
-    // mine. Paused in the page on the first frame it is drawn.
+    // mine. Paused on the first frame it is drawn (the frames run at once, from the pause).
     await g.page.evaluate(() => {
       const w = window.game as unknown as Sub;
       const m = w.mines()[0]!,
@@ -706,14 +824,8 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
       c.Angle.value[e] = 0;
       w.state.holdY = m.y;
       w.state.throttle = 1;
-      const frame = () => {
-        if (w.mineAhead()?.text) w.paused = true;
-        else requestAnimationFrame(frame);
-      };
-      requestAnimationFrame(frame);
-      w.paused = false;
     });
-    await g.waitFor(() => (window.game as unknown as Sub).paused, null, 60_000);
+    await g.runUntil(() => !!(window.game as unknown as Sub).mineAhead()?.text, null, { maxFrames: 600 });
     await g.frames(2);
     const warn = await g.page.evaluate(() => {
       const w = window.game as unknown as Sub;
@@ -773,13 +885,13 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     await g.waitFor(() => (window.game as unknown as Sub).paused, null, 60_000);
     await g.frames(2);
     await check('mine', 'MINE!\n−1 hull', 'hull ▮▯▯ 1/3');
-    // Played on, the label and the gauge's light fade out within 2 s of game time.
-    const t = await g.page.evaluate(() => {
-      const w = window.game as unknown as Sub;
-      w.paused = false;
-      return w.world.time;
+    // Played on, the label and the gauge's light fade out within 2 s of game time (the frames run at
+    // once, and the game left running).
+    const t = await g.page.evaluate(() => (window.game as unknown as Sub).world.time);
+    await g.runUntil((t0) => (window.game as unknown as Sub).world.time > t0 + 2, t, { seconds: FRAME_S });
+    await g.page.evaluate(() => {
+      (window.game as unknown as Sub).paused = false;
     });
-    await g.waitFor((t0) => (window.game as unknown as Sub).world.time > t0 + 2, t, 60_000);
     await g.frames(2);
     const after = await g.page.evaluate(() => (window.game as unknown as Sub).hitEffect());
     expect(after.label).toBe('');
@@ -795,11 +907,10 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
       await diveOnPhone(g);
     }
     expect(g.errors).toEqual([]);
-    await g.close();
   });
 
   it("the gauge's depth tags never cross the target's frame as the beacon sweeps the view; the hull's bow inside the ring collects; a ridge is marked", async () => {
-    const g = await h.openGame('submarine', { viewport, touch, query: { waves: 0 } });
+    const g = await fresh(6);
     type Pointer = { onScreen: boolean; frame: number[]; ridge: boolean; crest: number[]; text: string };
     type Tags = { depth: number[]; target: number[] };
     // The hull parked (paused, level, at rest) at offsets from the target beacon A: the beacon in
@@ -823,7 +934,7 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
           },
           [dx, dy] as const,
         );
-        await g.frames(20); // the camera eases to the framing
+        await g.runFrames(20, { unpause: false }); // the camera eases to the framing (the paused game's frames, run at once)
         const r = await g.page.evaluate(() => {
           const w = window.game as unknown as Sub & { beaconPointer(): Pointer; gaugeTags(): Tags };
           return { p: w.beaconPointer(), tags: w.gaugeTags() };
@@ -849,10 +960,9 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
         c.Angle.value[e] = 0;
         w.state.holdY = b[1]!;
         w.state.throttle = 0;
-        w.paused = false;
       }, gap);
       const t0 = await g.page.evaluate(() => (window.game as unknown as Sub).world.time);
-      await g.waitFor((t) => (window.game as unknown as Sub).world.time > t + 0.3, t0, 60_000);
+      await g.runUntil((t) => (window.game as unknown as Sub).world.time > t + 0.3, t0);
       return g.page.evaluate(() => (window.game as unknown as Sub & { state: { collected: number } }).state.collected);
     };
     expect(await collectedAt(15.5)).toBe(0);
@@ -861,15 +971,15 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     // depth was written over one): A collected (the target B ahead), the hull parked (paused) 25 m
     // short of the first mine at its depth, the second mine in view under the gauge's tags' column.
     if (device === 'phone') {
-      const r = await g.page.evaluate(async () => {
-        const w = window.game as unknown as Sub & { gaugeTags(): Tags & { mines: number[][] } };
+      const r = await g.page.evaluate(() => {
+        const w = window.game as unknown as Sub & { gaugeTags(): Tags & { mines: number[][] }; loop: { runFrames(n: number): void } };
         const m = w.mines()[0]!,
           c = w.world.components,
           e = w.hull();
         w.paused = true;
         c.Position.x[e] = m.x - 25;
         c.Position.y[e] = m.y;
-        for (let i = 0; i < 20; i++) await new Promise((r) => requestAnimationFrame(r));
+        w.loop.runFrames(20);
         return w.gaugeTags();
       });
       expect(r.mines.some((box) => box[0]! + box[2]! > 390 - 120)).toBe(true);
@@ -904,17 +1014,16 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
       c.Position.x[e] = r.hull[0]!;
       c.Position.y[e] = Math.min(-6, r.hull[1]!);
     }, ridge);
-    await g.frames(30);
+    await g.runFrames(30, { unpause: false });
     const p = await g.page.evaluate(() => (window.game as unknown as Sub & { beaconPointer(): Pointer }).beaconPointer());
     expect(p.ridge).toBe(true);
     expect(p.text).toMatch(/ridge/);
     expect(Math.abs(p.crest[0]! - ridge.x)).toBeLessThan(2);
     expect(g.errors).toEqual([]);
-    await g.close();
   }, 180_000);
 
   it('the pause button (a real tap on a phone) brings the Paused overlay on the next frame even while the frame pacer draws nothing, and the pickup banner hides under it', async () => {
-    const g = await h.openGame('submarine', { viewport, touch, query: { waves: 0 } });
+    const g = await fresh(6);
     // The pacer made to refuse every frame, as on a GPU too busy to finish any: only a frame the
     // game forces (drawNext) is drawn. Before the overlay forced one, a pause showed nothing new.
     const before = await g.page.evaluate(() => {
@@ -968,11 +1077,10 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     await g.frames(2);
     expect(await g.page.evaluate(() => (window.game as unknown as Fx).pickupEffect().banner)).toBe('Beacon 1 of 6\nnext: B');
     expect(g.errors).toEqual([]);
-    await g.close();
   }, 180_000);
 
   it('the words over the scene never lie on each other: a pickup banner with a mine warning, then a hit; on a phone the banner sits at the top with the hint', async () => {
-    const g = await h.openGame('submarine', { viewport, touch, query: { waves: 0 } });
+    const g = await fresh(6);
     type Words = Sub & {
       labels(): { name: string; box: number[] }[];
       pickupEffect(): { banner: string };
@@ -989,7 +1097,7 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
       c.Position.x[e] = b[0]! - 3;
       c.Position.y[e] = b[1]!;
     });
-    await g.waitFor(() => (window.game as unknown as Words).state.collected === 1 || null, null, 60_000);
+    await g.runUntil(() => (window.game as unknown as Words).state.collected === 1 || null, null, { maxFrames: 600 });
     await g.page.evaluate(() => {
       const w = window.game as unknown as Words;
       const c = w.world.components,
@@ -1003,14 +1111,14 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
       w.state.holdY = m.y;
     });
     const snapshot = (want: string[]) =>
-      g.waitFor(
+      g.runUntil(
         (names) => {
           const w = window.game as unknown as Words;
           const labels = w.labels();
           return names.every((name) => labels.some((l) => l.name === name)) ? { labels, height: w.camera().height } : null;
         },
         want,
-        60_000,
+        { maxFrames: 600 },
       );
     // Two boxes (x, y, width, height, px) that share any area; the beacon pointer's label and its
     // arrow's badge are one sign, drawn joined.
@@ -1046,11 +1154,14 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     const hit = await snapshot(['hit']);
     expect(crossing(hit.labels)).toEqual([]);
     expect(g.errors).toEqual([]);
-    await g.close();
   }, 180_000);
 
   it('coming in fast on the target the label tells to let go early and that Astern brakes, at most 3 times; not when far or slow', async () => {
-    const g = await h.openGame('submarine', { viewport, touch, query: { waves: 0 } });
+    // The page loaded afresh (the hint is told at most 3 times a page): the same page, reloaded, so
+    // that no second page draws beside it.
+    await shared.page.reload();
+    await shared.waitFor(() => document.body.dataset.ready === 'true' && window.game !== undefined, null, 30_000);
+    const g = await fresh(6);
     type P = Sub & { beaconPointer(): { index: number; text: string; brakeHints: number } };
     // Paused: the label is drawn from the hull's place and velocity as set (nothing moves).
     const at = async (before: number, speed: number) => {
@@ -1069,7 +1180,7 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
         },
         [before, speed],
       );
-      await g.frames(3);
+      await g.runFrames(3, { unpause: false });
       return g.page.evaluate(() => (window.game as unknown as P).beaconPointer());
     };
     const hint = 'let go early; Astern brakes';
@@ -1087,7 +1198,6 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     expect(p.text).toBe('target A: 30 m ahead');
     expect(p.brakeHints).toBe(3);
     expect(g.errors).toEqual([]);
-    await g.close();
   }, 180_000);
 
   it("the target's label keeps off the headlight's cone ahead of the bow", async () => {
@@ -1095,7 +1205,7 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     // more than 10 m down, where the headlight shows (from 8 m): the label over the beacon sat in the lit cone.
     // The cone, in the hull's frame, as boat-drawing.ts draws it: from the bow (6 m ahead of the
     // centre) out to 26 m, spreading to 7 m either side, and its tip 2 m further.
-    const g = await h.openGame('submarine', { viewport, touch, query: { waves: 0, beacons: 1 } });
+    const g = await fresh(1);
     type P = Sub & { beaconPointer(): { label: number[]; beam: boolean } };
     for (const above of [4, 8]) {
       const r = await g.page.evaluate((above) => {
@@ -1111,7 +1221,7 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
         w.state.holdY = b[1]! + above;
         return { hx: c.Position.x[e]!, hy: c.Position.y[e]! };
       }, above);
-      await g.frames(3);
+      await g.runFrames(3, { unpause: false });
       const p = await g.page.evaluate(() => ({
         ...(window.game as unknown as P).beaconPointer(),
         cam: (window.game as unknown as P).camera(),
@@ -1132,11 +1242,10 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
         }
     }
     expect(g.errors).toEqual([]);
-    await g.close();
   }, 180_000);
 
   it('a ridge on the course is told by the hull while there is time to rise: an orange tag saying how far, an arrow to the bed', async () => {
-    const g = await h.openGame('submarine', { viewport, touch, query: { waves: 0 } });
+    const g = await fresh(6);
     type B = Sub & {
       step(): void;
       labels(): { name: string; box: number[] }[];
@@ -1175,13 +1284,18 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
       return { rise: best, x };
     });
     expect(r.rise).toBeGreaterThan(8);
-    const warned = await g.waitFor(() => {
-      const w = window.game as unknown as B;
-      const b = w.bedAhead();
-      return b && b.box[2]! > 0 && w.labels().some((l) => l.name === 'seabed warning')
-        ? { ...b, cam: w.camera(), labels: w.labels() }
-        : null;
-    }, null);
+    // The paused game's frames, run at once.
+    const warned = await g.runUntil(
+      () => {
+        const w = window.game as unknown as B;
+        const b = w.bedAhead();
+        return b && b.box[2]! > 0 && w.labels().some((l) => l.name === 'seabed warning')
+          ? { ...b, cam: w.camera(), labels: w.labels() }
+          : null;
+      },
+      null,
+      { unpause: false, maxFrames: 600 },
+    );
     expect(warned.ridge).toBe(true);
     expect(warned.kind).toBe('seabed');
     expect(warned.text).toMatch(/^⚠ RIDGE \d+ m: rise ▲$/);
@@ -1199,18 +1313,22 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     // The arrow points ahead (right) and down-range toward the ridge.
     expect(warned.tip[0]!).toBeGreaterThan(warned.cam.width / 2 - 10);
     expect(g.errors).toEqual([]);
-    await g.close();
   }, 180_000);
 });
 
 describe.each(SIZES)('submarine helm and framing ($device)', ({ device, viewport, touch }) => {
   let h: Harness;
+  // One page for these cases (see 'submarine' above), each from a fresh world.
+  let shared: GamePage;
   beforeAll(async () => {
     h = await Harness.start();
+    shared = await h.openGame('submarine', { viewport, touch, query: { waves: 0, beacons: 1 } });
   }, START_TIMEOUT_MS);
   afterAll(async () => {
+    await shared?.close();
     await h?.close();
   });
+  const fresh = (beacons: number) => freshSubmarine(shared, beacons);
   type Helm = Sub & {
     step(): void;
     reset(): void;
@@ -1226,7 +1344,7 @@ describe.each(SIZES)('submarine helm and framing ($device)', ({ device, viewport
       // One frame held up for 0.8 s by a busy loop: the next frames run the game's steps for it (the
       // page allows frames up to 1 s; with 0.15 s a held Dive went down a third as far per second of
       // the clock on a machine drawing 2 fps).
-      const g = await h.openGame('submarine', { viewport, touch, query: { waves: 0, beacons: 1 } });
+      const g = await fresh(1);
       await g.waitFor(() => (window.game as unknown as Sub).world.time > 0.5, null, 60_000);
       const r = await g.page.evaluate(
         () =>
@@ -1248,7 +1366,6 @@ describe.each(SIZES)('submarine helm and framing ($device)', ({ device, viewport
       expect(r.game).toBeGreaterThan(0.8 - 1 / 60);
       expect(r.game).toBeLessThanOrEqual(r.wall + 1 / 60);
       expect(g.errors).toEqual([]);
-      await g.close();
     },
     120_000,
   );
@@ -1258,7 +1375,7 @@ describe.each(SIZES)('submarine helm and framing ($device)', ({ device, viewport
     // then with the stick at the bottom of its rim, then with it 0.4 of the way: how far down the
     // hull went, m. The page asks the helm for the same share of the dive speed from both at the rim
     // (helm.ts keyHeaveShare; the stick asked for all of it, 1.6 times the key's depth a second).
-    const g = await h.openGame('submarine', { viewport, touch, query: { waves: 0, beacons: 1 } });
+    const g = await fresh(1);
     await g.waitFor(() => (window.game as unknown as Sub).world.time > 0.2, null, 60_000);
     const dive = async (how: 'key' | 'rim' | 'half'): Promise<number> => {
       await g.page.evaluate(() => {
@@ -1300,7 +1417,6 @@ describe.each(SIZES)('submarine helm and framing ($device)', ({ device, viewport
     expect(tags.depthText).toMatch(/^you \d+ m$/);
     expect(tags.targetText).toMatch(/^beacon [A-Z] \d+ m$/);
     expect(g.errors).toEqual([]);
-    await g.close();
   }, 120_000);
 
   it(`under way at full ahead the view leaves room behind the hull: its stern ${device === 'phone' ? 'on a phone ' : ''}60 px in from the edge, the depth ladder's figures off it`, async () => {
@@ -1309,7 +1425,7 @@ describe.each(SIZES)('submarine helm and framing ($device)', ({ device, viewport
     // leads as far as it may), then let go; as it coasts the hull's box on the screen (from the
     // camera) keeps HULL_SIDE_ROOM (60 px) from the view's edges, and no tag over the scene is on it
     // (on a phone the stern was cut off by the left edge and the ladder's "20 m" drawn over it).
-    const g = await h.openGame('submarine', { viewport, touch, query: { waves: 0, beacons: 1 } });
+    const g = await fresh(1);
     await g.waitFor(() => (window.game as unknown as Sub).world.time > 0.2, null, 60_000);
     const t0 = await g.page.evaluate(() => {
       const w = window.game as unknown as Helm;
@@ -1320,11 +1436,11 @@ describe.each(SIZES)('submarine helm and framing ($device)', ({ device, viewport
       c.Position.y[e] = -15;
       c.Velocity.x[e] = 8;
       w.setStick(1, 0);
-      w.paused = false;
       return w.world.time;
     });
-    await g.waitFor((t) => (window.game as unknown as Sub).world.time > t + 2.5, t0, 60_000);
-    const r = await g.waitFor(() => {
+    // The frames run at once, the game unpaused for them.
+    await g.runUntil((t) => (window.game as unknown as Sub).world.time > t + 2.5, t0, { seconds: FRAME_S });
+    const r = await g.runUntil(() => {
       const w = window.game as unknown as Helm;
       const cam = w.camera(),
         e = w.hull(),
@@ -1351,6 +1467,5 @@ describe.each(SIZES)('submarine helm and framing ($device)', ({ device, viewport
     for (const l of r.labels)
       if (l.name === 'ladder' || l.name.startsWith('gauge') || l.name === 'target depth') expect(cross(l.box, r.hull), l.name).toBe(false);
     expect(g.errors).toEqual([]);
-    await g.close();
   }, 120_000);
 });

@@ -38,6 +38,15 @@ export interface GameLoop {
   /** Runs exactly one step now, paused or not (the single-step key). Errors go to `onError` and stop the loop. */
   stepOnce(): void;
   /**
+   * Runs `n` frames now, one after another within this call, each as the animation loop runs a frame
+   * that comes `seconds` (s, default the fixed step) after the one before: the whole steps that fit
+   * (none while paused), then `render`. A test hook: inputs held meanwhile (keys, a finger) act on
+   * these steps as in play, and game time runs on without waiting for the clock. Not counted in `fps`.
+   * Stops early if a step or render throws (the error goes to `onError` and stops the loop).
+   * @throws RangeError if `n` is not an integer in [0, 100 000] or `seconds` is not finite and >= 0.
+   */
+  runFrames(n: number, seconds?: number): void;
+  /**
    * Empties the accumulator and forgets the last frame's time (after a reset): the new world neither
    * inherits a backlog nor simulates the time before it existed (the old world's last frame to the
    * first frame after the reset, which holds the new level's build); its first frame draws it as
@@ -83,6 +92,8 @@ export function createGameLoop(options: GameLoopOptions): GameLoop {
   const makeFixed = (dt: number): FixedStepLoop => createFixedStepLoop({ dt, step: stepFn, maxFrameTime, maxStepsPerFrame });
   // createFixedStepLoop validates dt, maxFrameTime and maxStepsPerFrame (RangeError naming the option).
   let fixed = makeFixed(options.dt);
+  /** The fixed step now, s (`setTimeStep` changes it). */
+  let dt = options.dt;
   let running = false;
   let paused = false;
   let frameId = 0;
@@ -99,11 +110,8 @@ export function createGameLoop(options: GameLoopOptions): GameLoop {
     onError(error);
   };
 
-  const frame = (timeMs: number): void => {
-    if (!running) return;
-    frameId = requestFrame(frame);
-    const seconds = last < 0 ? 0 : Math.max(0, (timeMs - last) / 1000);
-    last = timeMs;
+  /** One frame's work, `seconds` after the last: its steps (none while paused) and its drawing. @returns false if it threw (the loop stopped). */
+  const runFrame = (seconds: number): boolean => {
     try {
       if (paused) {
         alpha = 1;
@@ -113,9 +121,22 @@ export function createGameLoop(options: GameLoopOptions): GameLoop {
       renderFn(alpha);
     } catch (error) {
       fail(error);
-      return;
+      return false;
     }
     frames++;
+    if (frames === 1) {
+      const callbacks = firstFrameCallbacks.splice(0);
+      for (const cb of callbacks) cb();
+    }
+    return true;
+  };
+
+  const frame = (timeMs: number): void => {
+    if (!running) return;
+    frameId = requestFrame(frame);
+    const seconds = last < 0 ? 0 : Math.max(0, (timeMs - last) / 1000);
+    last = timeMs;
+    if (!runFrame(seconds)) return;
     if (windowStart < 0) windowStart = timeMs;
     windowFrames++;
     const elapsed = timeMs - windowStart;
@@ -123,10 +144,6 @@ export function createGameLoop(options: GameLoopOptions): GameLoop {
       fps = ((windowFrames - 1) * 1000) / elapsed;
       windowStart = timeMs;
       windowFrames = 1;
-    }
-    if (frames === 1) {
-      const callbacks = firstFrameCallbacks.splice(0);
-      for (const cb of callbacks) cb();
     }
   };
 
@@ -162,12 +179,20 @@ export function createGameLoop(options: GameLoopOptions): GameLoop {
         fail(error);
       }
     },
+    runFrames(n: number, seconds = dt) {
+      if (!Number.isInteger(n) || n < 0 || n > 100_000)
+        throw new RangeError(`GameLoop.runFrames: n must be an integer in [0, 100000], got ${n}`);
+      if (!Number.isFinite(seconds) || seconds < 0)
+        throw new RangeError(`GameLoop.runFrames: seconds must be finite and >= 0, got ${seconds}`);
+      for (let i = 0; i < n; i++) if (!runFrame(seconds)) return;
+    },
     resetClock() {
       fixed.reset();
       last = -1;
     },
-    setTimeStep(dt: number) {
-      fixed = makeFixed(dt);
+    setTimeStep(step: number) {
+      fixed = makeFixed(step);
+      dt = step;
     },
     get fps() {
       return fps;
