@@ -209,7 +209,8 @@ const WALL_FILL_GAP = 0.4;
  * level 2 a wall of small holes (LEVEL2_RADIUS) across the field, high up (LEVEL2_WALL_HEIGHT: its
  * pull at the start weak, so taps steer the ship) with one gap of LEVEL2_GATE off to the side (fly
  * across to it, then up through it); level 3 a zig-zag of small holes up the straight path (`zigzag`: weave
- * between them); level 4 four holes, one across the straight path up and one on each diagonal, small
+ * between them; horizons 0.35 to 0.45 m, so it asks no more of a slow player than levels 2 and 4
+ * do: test/games/black-hole-curve.test.ts); level 4 four holes, one across the straight path up and one on each diagonal, small
  * (horizons 0.5 to 0.85 m: a hole's pull matches the thrust within sqrt(c^2 r / (2 a)) of its centre,
  * which grows with r, so with level 1's 0.6 m holes grown to 1.1 m level 4 was where steering lost
  * to the pull); level 5 a second hole across the path, the holes no bigger; from level 6 the holes
@@ -255,7 +256,7 @@ export function levelSpec(level: number): LevelSpec {
         LEVEL2_WALL_HEIGHT[1],
       ]);
     case 3:
-      return spec(5, [0.4, 0.5], 0, 0, 0, Infinity, 0, false, [10, 12], true);
+      return spec(5, [0.35, 0.45], 0, 0, 0, Infinity, 0, false, [10, 12], true);
     case 4:
       return spec(4, [0.5, 0.85], 0, 1, 0, Infinity);
     case 5:

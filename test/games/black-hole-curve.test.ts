@@ -1,0 +1,45 @@
+/**
+ * Black hole's difficulty curve as scripted players meet it (test/games/black-hole-players.ts: they fly
+ * by eye along a way round the holes with a bounded reaction). The issue this answers: levels 1 to 3
+ * were cleared in seconds, then level 5 ended the game. Measured in full with
+ * `node scripts/black-hole-curve.mjs` (seeds 1-8, both fields); here seeds 1-4 on the desktop's field,
+ * to stay cheap, so the tolerances allow a seed's extra try or two.
+ */
+import { describe, expect, test } from 'vitest';
+import { levelFigures, PLAYERS, playLevel } from './black-hole-players';
+
+/** Each figure's level, tries a seed, success and clearing try's time (s), for the failure messages. */
+const show = (fs: readonly ReturnType<typeof levelFigures>[]): string =>
+  JSON.stringify(fs.map((f) => [f.level, f.tries, f.success.toFixed(2), f.time.toFixed(1)]));
+
+describe('black hole difficulty curve', () => {
+  test('the middle player clears levels 1 to 5 on every seed: level 1 at the first try but not in a dash, none after it easier, none a cliff', () => {
+    const figures = [1, 2, 3, 4, 5].map((level) => levelFigures(level, PLAYERS.middle, 4, 60));
+    const where = show(figures);
+    for (const f of figures) expect(f.cleared, `level ${f.level}: ${where}`).toBe(4);
+    // Holding up reaches the line in about 2.7 s; level 1's one hole makes the player steer for more than 4 s.
+    expect(figures[0]!.success, where).toBe(1);
+    expect(figures[0]!.time, where).toBeGreaterThan(4);
+    for (const f of figures.slice(1)) {
+      // Each later level asks more than practice: some seed takes a second try.
+      expect(f.success, `level ${f.level}: ${where}`).toBeLessThan(1);
+      // No cliff: a try clears at least 2 times in 5 (level 5 once took 24 tries on a seed).
+      expect(f.success, `level ${f.level}: ${where}`).toBeGreaterThanOrEqual(0.4);
+    }
+  });
+
+  test('the slow player meets no cliff from level 2 to 4: the chance a try clears falls by under 0.3 a level', () => {
+    // The zig-zag of level 3 with 0.4 to 0.5 m horizons: success 0.68, 0.17, 0.50 on levels 2, 3, 4.
+    const figures = [2, 3, 4].map((level) => levelFigures(level, PLAYERS.slow, 4, 60));
+    for (let i = 1; i < figures.length; i++)
+      expect(figures[i - 1]!.success - figures[i]!.success, `level ${figures[i]!.level}: ${show(figures)}`).toBeLessThan(0.3);
+  });
+
+  test('a player who reacts later falls more: the slow player takes more tries than the sharp one on level 4', () => {
+    // The players' skill shows in the measure (else the curves above could not tell levels apart).
+    const tries = (style: (typeof PLAYERS)[keyof typeof PLAYERS]): number =>
+      [1, 2, 3, 4].reduce((n, seed) => n + playLevel(4, seed, style, 30).tries, 0);
+    expect(tries(PLAYERS.slow)).toBeGreaterThan(tries(PLAYERS.sharp));
+    expect(() => playLevel(1, 1, { ...PLAYERS.middle, react: 0 })).toThrow(/playLevel: limit, react and speed must be > 0/);
+  });
+});

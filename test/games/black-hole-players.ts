@@ -1,0 +1,264 @@
+/**
+ * Scripted players of black hole's levels (games/black-hole/levels.ts), for the difficulty curve
+ * (test/games/black-hole-curve.test.ts and scripts/black-hole-curve.mjs): players who fly by eye, as a
+ * stranger does, not by the predicted path. Each plans a way up that gives every hole a berth of some
+ * horizon radii (`planRoute`), then steers along it with a bounded reaction: a choice of arrow every
+ * `react` s (each interval drawn within 25 % of it), pressed `lag` s after the look it was based on.
+ * Their skill is in those numbers (`PLAYERS`). A fall starts a new try on the same layout; the
+ * jittered reactions make each try different, so a level's share of tries that clear is a rate, not
+ * a yes or no.
+ */
+import { Rng, slotOf } from '@bitphysics/physics';
+import { canThrust, type LevelRun, startLevel, stepLevel } from '../../games/black-hole/levels';
+import {
+  type BlackHoleGame,
+  createBlackHoleGame,
+  SHIP_RADIUS,
+  setThrust,
+  THRUST_DIRECTION,
+  type Thrust,
+} from '../../games/black-hole/rules';
+
+/** How a player flies: s between choices, s from a look to its press, radii of berth, m/s aimed for. */
+export interface PlayerStyle {
+  /** Mean time between two choices of arrow, s (> 0). */
+  readonly react: number;
+  /** Time from the look a choice is based on to its press, s (>= 0): a player's reaction. */
+  readonly lag: number;
+  /** Berth the route gives a hole: this many horizon radii plus the ship's size and 0.5 m from its centre. */
+  readonly keep: number;
+  /** Speed along the route the player steers for, m/s (> 0). */
+  readonly speed: number;
+}
+
+/** Three players: a practised one, a middling stranger and a slow thumb on a phone. */
+export const PLAYERS: Readonly<Record<'sharp' | 'middle' | 'slow', PlayerStyle>> = Object.freeze({
+  sharp: Object.freeze({ react: 0.2, lag: 0.2, keep: 2, speed: 5 }),
+  middle: Object.freeze({ react: 0.3, lag: 0.35, keep: 2.2, speed: 4 }),
+  slow: Object.freeze({ react: 0.4, lag: 0.5, keep: 2.6, speed: 3 }),
+});
+
+/**
+ * A way from the ship's start to the finish line that keeps `margin(r)` m from each hole's centre
+ * (r its horizon radius, m) and prefers open field, as a player picks one by eye: the cheapest path
+ * on a 0.5 m grid (8 neighbours; a cell is closed within the margin of a hole or 0.5 m of a side),
+ * each move costing its length times 1 + 4 / (1 + the cell's clearance beyond the margin, m).
+ * @returns the cells' centres from the start to the line, m (x, y pairs); empty when none reaches it.
+ */
+export function planRoute(g: BlackHoleGame, margin: (r: number) => number): [number, number][] {
+  const cell = 0.5,
+    nx = Math.floor(g.field.width / cell),
+    ny = Math.ceil(g.lineY / cell) + 1;
+  const P = g.world.components.Position;
+  const hs = g.holes.map((h, i) => [P.x[slotOf(h)]!, P.y[slotOf(h)]!, margin(g.holeRadius[i]!)] as const);
+  const weight = new Float64Array(nx * ny);
+  for (let j = 0; j < ny; j++)
+    for (let i = 0; i < nx; i++) {
+      const x = (i + 0.5) * cell,
+        y = j * cell;
+      let clear = Math.min(x - 0.5, g.field.width - 0.5 - x) + 2;
+      for (const [hx, hy, r] of hs) clear = Math.min(clear, Math.hypot(x - hx, y - hy) - r);
+      weight[j * nx + i] = clear > 0 ? 1 + 4 / (1 + clear) : Number.POSITIVE_INFINITY;
+    }
+  const startCell = Math.round(g.start[1] / cell) * nx + Math.floor(g.start[0] / cell);
+  weight[startCell] = 1;
+  const cost = new Float64Array(nx * ny).fill(Number.POSITIVE_INFINITY),
+    from = new Int32Array(nx * ny).fill(-1),
+    done = new Uint8Array(nx * ny);
+  cost[startCell] = 0;
+  // Dijkstra with a plain scan of an open list: the grid is small (about 3000 cells).
+  const open = [startCell];
+  let end = -1;
+  while (open.length > 0) {
+    let bi = 0;
+    for (let k = 1; k < open.length; k++) if (cost[open[k]!]! < cost[open[bi]!]!) bi = k;
+    const c = open[bi]!;
+    open[bi] = open[open.length - 1]!;
+    open.pop();
+    if (done[c]) continue;
+    done[c] = 1;
+    const i = c % nx,
+      j = (c - i) / nx;
+    if (j === ny - 1) {
+      end = c;
+      break;
+    }
+    for (let di = -1; di <= 1; di++)
+      for (let dj = -1; dj <= 1; dj++) {
+        const a = i + di,
+          b = j + dj;
+        if ((di === 0 && dj === 0) || a < 0 || a >= nx || b < 0 || b >= ny) continue;
+        const d = b * nx + a;
+        if (done[d] || weight[d] === Number.POSITIVE_INFINITY) continue;
+        const next = cost[c]! + cell * Math.hypot(di, dj) * weight[d]!;
+        if (next < cost[d]!) {
+          cost[d] = next;
+          from[d] = c;
+          open.push(d);
+        }
+      }
+  }
+  if (end < 0) return [];
+  const cells: number[] = [];
+  for (let c = end; c !== startCell; c = from[c]!) cells.push(c);
+  cells.reverse();
+  return cells.map((c) => [((c % nx) + 0.5) * cell, Math.floor(c / nx) * cell]);
+}
+
+/** How a level went for a player: tries (each fall or exit ends one), whether and when it cleared. */
+export interface LevelOutcome {
+  /** Whether the line was reached within the time allowed. */
+  readonly cleared: boolean;
+  /** Tries taken: falls and exits, plus the clearing one. */
+  readonly tries: number;
+  /** Falls into a hole. */
+  readonly falls: number;
+  /** Time of the clearing try, s (NaN when not cleared). */
+  readonly time: number;
+  /** Time from the level's start to the line, all tries, s (NaN when not cleared). */
+  readonly totalTime: number;
+}
+
+const ARROWS: readonly Thrust[] = ['up', 'down', 'left', 'right', 'up-left', 'up-right', 'down-left', 'down-right'];
+
+/**
+ * Plays level `level` of a game of seed `seed` on a `field` (m; default the game's 32 x 24) in the
+ * given style, for at most `limit` s of game time, lives never running out. Each choice finds the
+ * ship where it will be when the press lands (position and velocity carried on `lag` s), the point of
+ * the route about 3 m past the nearest one, and presses the arrow or pair (or none, within 0.6 m/s)
+ * that best turns the velocity towards `style.speed` m/s at that point. Drifting holes are planned
+ * round anew at each choice; still ones at the start and after each fall or exit. The interval to the
+ * next choice is drawn in [0.75, 1.25] x react from an Rng seeded with `seed`.
+ * @throws RangeError unless limit > 0 and the style's numbers are in range.
+ */
+export function playLevel(
+  level: number,
+  seed: number,
+  style: PlayerStyle,
+  limit = 60,
+  field?: { readonly width: number; readonly height: number },
+): LevelOutcome {
+  if (!(limit > 0 && style.react > 0 && style.lag >= 0 && style.keep >= 0 && style.speed > 0))
+    throw new RangeError(`playLevel: limit, react and speed must be > 0 and lag, keep >= 0, got ${limit}, ${JSON.stringify(style)}`);
+  const g = createBlackHoleGame({ seed, lives: 9, ...(field ? { field } : {}) });
+  const run: LevelRun = startLevel(g, level);
+  const dt = g.world.dt,
+    rng = new Rng(seed * 7919 + level),
+    lagSteps = Math.round(style.lag / dt);
+  const margin = (r: number): number => style.keep * r + SHIP_RADIUS + 0.5;
+  const P = g.world.components.Position,
+    V = g.world.components.Velocity;
+  let way = planRoute(g, margin);
+  const pending: { at: number; thrust: Thrust }[] = [];
+  let chosen: Thrust = 'none',
+    nextLook = 0,
+    tries = 1;
+  for (let k = 0; k * dt < limit; k++) {
+    if (k >= nextLook && canThrust(g, run)) {
+      nextLook = k + Math.max(1, Math.round((style.react * rng.range(0.75, 1.25)) / dt));
+      if (run.spec.drift > 0) way = planRoute(g, margin);
+      const s = slotOf(g.ship),
+        lag = style.lag;
+      const vx = V.x[s]! + g.thrustVec[0] * lag,
+        vy = V.y[s]! + g.thrustVec[1] * lag,
+        x = P.x[s]! + V.x[s]! * lag,
+        y = P.y[s]! + V.y[s]! * lag;
+      let near = 0;
+      for (let i = 1; i < way.length; i++)
+        if (Math.hypot(way[i]![0] - x, way[i]![1] - y) < Math.hypot(way[near]![0] - x, way[near]![1] - y)) near = i;
+      let aim = near;
+      for (let along = 0; aim + 1 < way.length && along < 3; aim++)
+        along += Math.hypot(way[aim + 1]![0] - way[aim]![0], way[aim + 1]![1] - way[aim]![1]);
+      const [ax, ay] = way.length > 0 ? way[aim]! : [x, g.lineY];
+      const d = Math.hypot(ax - x, ay - y) || 1;
+      const ex = (style.speed * (ax - x)) / d - vx,
+        ey = (style.speed * (ay - y)) / d - vy,
+        e = Math.hypot(ex, ey);
+      let want: Thrust = 'none',
+        best = Number.NEGATIVE_INFINITY;
+      if (e > 0.6)
+        for (const t of ARROWS) {
+          const dot = THRUST_DIRECTION[t][0] * ex + THRUST_DIRECTION[t][1] * ey;
+          if (dot > best) [best, want] = [dot, t];
+        }
+      pending.push({ at: k + lagSteps, thrust: want });
+    }
+    while (pending.length > 0 && pending[0]!.at <= k) chosen = pending.shift()!.thrust;
+    const want = canThrust(g, run) ? chosen : 'none';
+    if (g.thrust !== want) setThrust(g, want);
+    const event = stepLevel(g, run);
+    if (event === 'cleared') {
+      const s = run.summary!;
+      return { cleared: true, tries, falls: s.falls, time: s.time, totalTime: s.totalTime };
+    }
+    if (event === 'fell' || event === 'lost') {
+      // The page lets go of every arrow after a fall or an exit; the player looks again and replans.
+      tries++;
+      pending.length = 0;
+      chosen = 'none';
+      nextLook = k + 1;
+      way = planRoute(g, margin);
+    }
+    if (g.lives < 3) g.lives = 9;
+  }
+  return { cleared: false, tries, falls: g.falls, time: Number.NaN, totalTime: Number.NaN };
+}
+
+/** A level's figures over seeds for one player. */
+export interface LevelFigures {
+  readonly level: number;
+  /** Seeds cleared within the time allowed, of `seeds`. */
+  readonly cleared: number;
+  readonly seeds: number;
+  /** Share of all tries that cleared, in [0, 1]. */
+  readonly rate: number;
+  /** Tries each seed took (the last one cleared, unless the time ran out), seeds 1 to `seeds` in order. */
+  readonly tries: readonly number[];
+  /**
+   * Mean over the seeds of 1 / tries (0 for a seed not cleared), in [0, 1]: the chance that a try
+   * clears, each layout counted once (one layout failed thirty times does not outweigh the rest).
+   */
+  readonly success: number;
+  /** Mean time of the clearing try, s, and mean time to the line with the failed tries, s (NaN when none cleared). */
+  readonly time: number;
+  readonly totalTime: number;
+}
+
+/**
+ * `playLevel` on seeds 1 to `seeds` of level `level`: seeds cleared, the share of tries that cleared
+ * and the mean times of the clears.
+ */
+export function levelFigures(
+  level: number,
+  style: PlayerStyle,
+  seeds: number,
+  limit = 60,
+  field?: { readonly width: number; readonly height: number },
+): LevelFigures {
+  let cleared = 0,
+    tries = 0,
+    time = 0,
+    totalTime = 0,
+    success = 0;
+  const each: number[] = [];
+  for (let seed = 1; seed <= seeds; seed++) {
+    const o = playLevel(level, seed, style, limit, field);
+    tries += o.cleared ? o.tries : o.tries - 1;
+    each.push(o.tries);
+    if (!o.cleared) continue;
+    success += 1 / o.tries;
+    cleared++;
+    time += o.time;
+    totalTime += o.totalTime;
+  }
+  return {
+    level,
+    cleared,
+    seeds,
+    rate: cleared / Math.max(1, tries),
+    tries: each,
+    success: success / seeds,
+    time: cleared ? time / cleared : Number.NaN,
+    totalTime: cleared ? totalTime / cleared : Number.NaN,
+  };
+}
