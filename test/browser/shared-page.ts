@@ -22,7 +22,14 @@ export function sharedPage(
 ): () => GamePage {
   let page: GamePage | undefined;
   beforeAll(async () => {
-    page = await harness().openGame(folder, options);
+    // Opened once more if the first opening fails (a browser too busy to answer in time): a hook is
+    // not retried as a test is (vitest's retry), and a test opening its own page would have been.
+    try {
+      page = await harness().openGame(folder, options);
+    } catch (error) {
+      console.warn(`[shared-page] opening ${folder} failed, opening it once more: ${String(error)}`);
+      page = await harness().openGame(folder, options);
+    }
     await ready?.(page);
   }, START_TIMEOUT_MS);
   beforeEach(async () => {
