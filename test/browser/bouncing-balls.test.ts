@@ -823,6 +823,30 @@ describe('bouncing balls: the hoop game', () => {
     await g.close();
   });
 
+  it('desktop 1280 x 800: "Too high" stays on the status row until the next throw, which ends it', async () => {
+    // A page of its own: on the page shared with the baskets' cases its last check timed out twice in 4 runs.
+    const g = await h.openGame('bouncing-balls', { viewport: { width: 1280, height: 800 }, query: { count: 8 } });
+    await expect.poll(() => g.page.locator('[data-hud="hoop"]').isVisible()).toBe(true);
+    const hint = () => g.page.locator('[data-hud="hoop"] [data-hud="hint"]').textContent();
+    // A throw 1 m above the rim's line (straight up, so it lands in the box and lies there).
+    const t0 = await g.page.evaluate(() => {
+      const game = window.game as unknown as HoopGame & { world: { time: number } };
+      game.shoot(2, game.hoop().y + 1, 0, 3);
+      return game.world.time;
+    });
+    await expect.poll(hint).toMatch(/^Too high: throw from below the orange line/);
+    // 6 s of world time later (more than one turn of the teaching hints, 5 s; before, the reminder
+    // gave way to them after 2.5 s) the reminder is still there. The 6 s are stepped in the page
+    // (the status row is made from the game's state on each frame drawn after).
+    await stepUntil(g, (t) => (window.game as unknown as { world: { time: number } }).world.time > t + 6, t0);
+    expect(await hint()).toMatch(/^Too high: throw from below the orange line/);
+    // A throw from below the line ends it.
+    await g.page.evaluate(() => (window.game as unknown as HoopGame).shoot(2, 1.5, 0, 3));
+    await expect.poll(hint).not.toMatch(/Too high/);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
   describe('desktop 1280 x 800, 8 balls, one page', () => {
     const page = sharedPage(() => h, 'bouncing-balls', { viewport: { width: 1280, height: 800 }, query: { count: 8 } });
 
@@ -889,28 +913,6 @@ describe('bouncing balls: the hoop game', () => {
       // The bracket has no body: it is drawn under the balls, which pass in front of it.
       expect(r.bracket).toBeGreaterThanOrEqual(0);
       expect(r.bracket).toBeLessThan(r.balls);
-      expect(g.errors).toEqual([]);
-    });
-
-    it('desktop 1280 x 800: "Too high" stays on the status row until the next throw, which ends it', async () => {
-      const g = page();
-      await expect.poll(() => g.page.locator('[data-hud="hoop"]').isVisible()).toBe(true);
-      const hint = () => g.page.locator('[data-hud="hoop"] [data-hud="hint"]').textContent();
-      // A throw 1 m above the rim's line (straight up, so it lands in the box and lies there).
-      const t0 = await g.page.evaluate(() => {
-        const game = window.game as unknown as HoopGame & { world: { time: number } };
-        game.shoot(2, game.hoop().y + 1, 0, 3);
-        return game.world.time;
-      });
-      await expect.poll(hint).toMatch(/^Too high: throw from below the orange line/);
-      // 6 s of world time later (more than one turn of the teaching hints, 5 s; before, the reminder
-      // gave way to them after 2.5 s) the reminder is still there. The 6 s are stepped in the page
-      // (the status row is made from the game's state on each frame drawn after).
-      await stepUntil(g, (t) => (window.game as unknown as { world: { time: number } }).world.time > t + 6, t0);
-      expect(await hint()).toMatch(/^Too high: throw from below the orange line/);
-      // A throw from below the line ends it.
-      await g.page.evaluate(() => (window.game as unknown as HoopGame).shoot(2, 1.5, 0, 3));
-      await expect.poll(hint).not.toMatch(/Too high/);
       expect(g.errors).toEqual([]);
     });
   });
