@@ -71,12 +71,15 @@ import {
   createPhysicsWorld,
   type PhysicsWorld,
   Rng,
+  restore,
   setAngularVelocity,
   setMaterial as setBodyMaterial,
   setPosition,
   setVelocity,
   slotOf,
+  snapshot,
   step,
+  type WorldSnapshot,
 } from '@bitphysics/physics';
 import { Graphics, Text } from 'pixi.js';
 import {
@@ -2458,4 +2461,15 @@ shell.expose({
   statusText: (): string => status.element.innerText,
   /** Removes ball `eid`. @throws RangeError if it is not a ball of the scene. */
   remove: (eid: number): void => removeBall(shell.world, handles, eid),
+  /**
+   * Test hook: the world's whole physics state (physics `snapshot`), to put back with `restoreWorld`
+   * after `reset` (a new round of the same scene), which then steps on bit for bit as the world did
+   * from where it was taken. Only the world: the round and the throws in flight are the new round's.
+   */
+  saveWorld: (): WorldSnapshot => snapshot(shell.world),
+  /**
+   * Test hook: puts back a state taken by `saveWorld` into the current world (physics `restore`).
+   * @throws RangeError if `snap` is not such a snapshot or comes from a world of another size.
+   */
+  restoreWorld: (snap: WorldSnapshot): void => restore(shell.world, snap),
 });

@@ -12,6 +12,8 @@ import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
 import { checkPageContract } from './page-contract';
 import { decodePng } from './png';
+import { sharedPage } from './shared-page';
+import { stepUntil } from './stepping';
 
 interface BlackHolePage {
   bh: { falls: number; message: string };
@@ -84,7 +86,8 @@ describe('black hole', () => {
     expect(await g.page.evaluate(() => (window.game as unknown as BlackHolePage).pathEnd())).toBe('falls');
     await g.page.keyboard.down('ArrowUp');
     await g.waitFor(() => (window.game as unknown as BlackHolePage).levelBanner() === '', null);
-    await g.waitFor(() => (window.game as unknown as BlackHolePage).swallowing(), null);
+    // The climb into the hole, ↑ held, stepped in the page (the fall starts the swallow in its step).
+    await stepUntil(g, () => (window.game as unknown as BlackHolePage).swallowing(), null);
     await g.page.keyboard.up('ArrowUp');
     expect(await g.page.evaluate(() => (window.game as unknown as BlackHolePage).bh.falls)).toBe(1);
     expect(await g.page.locator('[data-hud="message"]').textContent()).toMatch(/^Swallowed/);
@@ -624,9 +627,12 @@ describe.each([
 describe.each([
   { device: 'desktop', viewport: { width: 1280, height: 800 }, touch: false },
   { device: 'phone', viewport: { width: 390, height: 844 }, touch: true },
-] as const)('black hole pause and touch card ($device)', ({ device, viewport, touch }) => {
+] as const)('black hole pause and touch card; taps, the paused path, path and replay buttons ($device)', ({ device, viewport, touch }) => {
+  // One page for both cases (reset between), the pause's first: it reads the page's own touch card.
+  const page = sharedPage(() => h, 'black-hole', { viewport, touch, query: { level: 1 } });
+
   it('pausing dims the field and says how to resume; on a phone the touch card names the seam and never covers the finish line', async () => {
-    const p = await h.openGame('black-hole', { viewport, touch, query: { level: 1 } });
+    const p = page();
     type Pause = { pauseOverlay(): { visible: boolean; text: string }; paused: boolean };
     if (touch) {
       // The card of gestures (and the legend in the drawer) says, in a player's words, that a thumb
@@ -691,17 +697,13 @@ describe.each([
       (window.game as unknown as Pause).paused = false;
     });
     await p.waitFor(() => !(window.game as unknown as Pause).pauseOverlay().visible, null);
+    // The stand-in card goes (the next case on this page finds the page's own, or none).
+    await p.page.evaluate(() => document.querySelector('[data-hud="touch-hint"]')?.remove());
     expect(p.errors).toEqual([]);
-    await p.close();
   });
-});
 
-describe.each([
-  { device: 'desktop', viewport: { width: 1280, height: 800 }, touch: false },
-  { device: 'phone', viewport: { width: 390, height: 844 }, touch: true },
-] as const)('black hole taps, the paused path, path and replay buttons ($device)', ({ device, viewport, touch }) => {
   it('a tap thrusts exactly 9 steps; paused, arrows do not redraw the path; Path and Replay (F, V) work; the legend names real controls', async () => {
-    const p = await h.openGame('black-hole', { viewport, touch, query: { level: 1 } });
+    const p = page();
     type Bh = {
       paused: boolean;
       step(): void;
@@ -789,7 +791,6 @@ describe.each([
         expect(b.x + b.width, name).toBeLessThanOrEqual(390);
       }
     expect(p.errors).toEqual([]);
-    await p.close();
   });
 });
 

@@ -9,6 +9,7 @@ import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { LEVEL_COUNT, levelName } from '../../games/catapult/scene';
 import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
 import { checkPageContract } from './page-contract';
+import { stepUntil } from './stepping';
 import { touchPath } from './touch';
 
 interface Cam {
@@ -389,7 +390,8 @@ async function previewMatchesThrow(
   await p.page.evaluate(() => {
     (window.game as unknown as W).pacer.mayDraw = (window as unknown as { keptMayDraw: () => boolean }).keptMayDraw;
   });
-  const seg = await p.waitFor(() => (window.game as unknown as W).firstTouch(), null);
+  // The flight to its first touch stepped in the page, not waited for in real time.
+  const seg = await stepUntil(p, () => (window.game as unknown as W).firstTouch(), null);
   // The preview's end against the segment of the step in which the stone first touched anything.
   const [x0, y0, x1, y1] = seg;
   const [ex, ey] = shown.end;

@@ -13,6 +13,7 @@ import { afterRelease, recordBank } from './flight-bank';
 import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
 import { checkLayout } from './layout-check';
 import { cubeState, expectRollsStraightUp, pageOf, placeCube, stillPageOf, waitCubeAtRest, waitCubeMoved } from './rotating-cube';
+import { stepUntil } from './stepping';
 import { touchPath } from './touch';
 
 const PHONE = { viewport: { width: 390, height: 844 }, touch: true } as const;
@@ -61,13 +62,15 @@ describe('phone controls', () => {
     await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: finger([cx, cy]) });
     await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: finger([cx + 20, cy - 20]) });
     await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: finger([cx + 40, cy - 40]) });
-    const flown = await g.waitFor(
+    // The flight under the held finger is stepped in the page (the steps read the stick as a frame's do).
+    const flown = await stepUntil(
+      g,
       () => {
         const i = (window.game as unknown as { instruments(): { roll: number; climb: number } }).instruments();
         return i.roll > 10 && i.climb > 2 ? i : null;
       },
       null,
-      60_000,
+      { seconds: 60 },
     );
     // Off the straight course: the path marker (where the path meets ring 1's plane) has left the ring.
     const marker1 = await g.waitFor(() => {
@@ -202,9 +205,13 @@ describe('phone controls', () => {
     await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: [{ x: cx, y: cy, id: 1 }] });
     await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: [{ x: cx - 30, y: cy, id: 1 }] });
     await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: [{ x: cx - 60, y: cy, id: 1 }] });
-    await g.waitFor(() => (window.game as unknown as Fly).instruments().roll < -30 || null, null, 60_000);
+    // Stepped in the page under the held finger (the steps read the stick as a frame's do).
+    await stepUntil(g, () => (window.game as unknown as Fly).instruments().roll < -30 || null, null, { seconds: 60, frames: 0 });
     await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
     await cdp.detach();
+    // 2 s of game time from the lift stepped in the page (the wings level within 1.3 s).
+    const lifted = await g.page.evaluate(() => window.game!.world.time);
+    await stepUntil(g, (t) => window.game!.world.time > t + 2, lifted, { frames: 0 });
     const { rolledOn, levelIn, trace } = await afterRelease(g);
     expect(rolledOn, trace).toBeLessThan(5);
     expect(levelIn, trace).toBeLessThan(1.3);
@@ -892,10 +899,13 @@ describe('phone controls', () => {
     expect(Math.max(...bar.map((b) => b.right))).toBeLessThanOrEqual(390);
     const slew = (await g.page.getByRole('button', { name: 'slew the jib left', exact: true }).boundingBox())!;
     await touchPath(g.page, [[slew.x + slew.width / 2, slew.y + slew.height / 2]], 100, async () => {
-      await g.waitFor(
+      // The next frame reads the held button into the crane's drive; the turn is stepped in the page.
+      await g.frames(1);
+      await stepUntil(
+        g,
         (a) => (window.game as unknown as { handles(): { crane: { angle: number } } }).handles().crane.angle > a + 0.02,
         a0,
-        60_000,
+        { seconds: 60, frames: 0 },
       );
     });
     expect(await read(g, 'handles().crane.angle')).toBeGreaterThan(a0 + 0.02);
@@ -938,7 +948,14 @@ describe('phone controls', () => {
       [0, 15, 30, 45, 60].map((d) => [ball.x, ball.y + d] as [number, number]),
       400,
       async () => {
-        cues = await g.page.evaluate(() => (window.game as unknown as Held).cues());
+        // The cues are placed each frame: waited for (a loaded machine may draw no frame in the
+        // 400 ms held, and the cues read then were the ones from before the grab, the mark alone).
+        cues = await g
+          .waitFor(() => {
+            const c = (window.game as unknown as Held).cues();
+            return c.plumb && c.track ? c : null;
+          }, null)
+          .catch(() => g.page.evaluate(() => (window.game as unknown as Held).cues()));
       },
     );
     expect(cues).toMatchObject({ plumb: true, track: true });
