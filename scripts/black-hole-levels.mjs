@@ -33,6 +33,9 @@ const m = await importSource(
   'black-hole-levels',
   `export * from './${source}/levels.ts'; export * from './${source}/rules.ts'; export { slotOf } from '@bitphysics/physics';`,
 );
+// The way a player picks by eye (test/games/black-hole-players.ts planRoute, which the scripted
+// players of the difficulty-curve test fly too).
+const { planRoute: route } = await importSource('black-hole-route', "export { planRoute } from './test/games/black-hole-players.ts';");
 const [lo, hi] = arg('--levels', '1-10').split('-').map(Number);
 const seeds = Number(arg('--seeds', '8'));
 const fields = arg('--fields', '32x24,20x30')
@@ -142,98 +145,6 @@ function play(level, seed, width, height, react, look, tap = Infinity, lag = 0) 
     if (g.lives < 3) g.lives = 9;
   }
   return { time: Number.NaN, falls: g.falls };
-}
-
-/**
- * A route on the field from the start to the line that keeps `margin(r)` m clear of each hole's
- * centre (r its horizon radius, m) and prefers to stay wide of them, as a player steers by eye: the
- * cheapest way on a 0.5 m grid (8 neighbours; cells within that reach of a hole, or within 0.5 m of a
- * side edge, closed), a step costing its length times 1 + 4 / (1 + the cell's clearance beyond the
- * margin, m). The route is the cells' centres from the start, m ([x, y] pairs); empty if none
- * reaches the line.
- */
-function route(g, margin) {
-  const cell = 0.5,
-    nx = Math.floor(g.field.width / cell),
-    ny = Math.ceil(g.lineY / cell) + 1;
-  const P = g.world.components.Position;
-  const hs = g.holes.map((h, i) => [P.x[m.slotOf(h)], P.y[m.slotOf(h)], margin(g.holeRadius[i])]);
-  const weight = new Float64Array(nx * ny);
-  for (let j = 0; j < ny; j++)
-    for (let i = 0; i < nx; i++) {
-      const x = (i + 0.5) * cell,
-        y = j * cell;
-      let clear = Math.min(x - 0.5, g.field.width - 0.5 - x) + 2;
-      for (const [hx, hy, r] of hs) clear = Math.min(clear, Math.hypot(x - hx, y - hy) - r);
-      weight[j * nx + i] = clear > 0 ? 1 + 4 / (1 + clear) : Infinity;
-    }
-  const si = Math.floor(g.start[0] / cell),
-    sj = Math.round(g.start[1] / cell);
-  const startCell = sj * nx + si;
-  weight[startCell] = 1;
-  const cost = new Float64Array(nx * ny).fill(Infinity),
-    from = new Int32Array(nx * ny).fill(-1);
-  cost[startCell] = 0;
-  // A binary heap of [cost, cell].
-  const heap = [[0, startCell]];
-  const push = (item) => {
-    heap.push(item);
-    for (let i = heap.length - 1; i > 0; ) {
-      const p = (i - 1) >> 1;
-      if (heap[p][0] <= heap[i][0]) break;
-      [heap[p], heap[i]] = [heap[i], heap[p]];
-      i = p;
-    }
-  };
-  const pop = () => {
-    const top = heap[0],
-      last = heap.pop();
-    if (heap.length > 0) {
-      heap[0] = last;
-      for (let i = 0; ; ) {
-        const a = 2 * i + 1,
-          b = a + 1;
-        let k = i;
-        if (a < heap.length && heap[a][0] < heap[k][0]) k = a;
-        if (b < heap.length && heap[b][0] < heap[k][0]) k = b;
-        if (k === i) break;
-        [heap[k], heap[i]] = [heap[i], heap[k]];
-        i = k;
-      }
-    }
-    return top;
-  };
-  let end = -1;
-  while (heap.length > 0) {
-    const [c0, c] = pop();
-    if (c0 > cost[c]) continue;
-    const i = c % nx,
-      j = (c - i) / nx;
-    if (j === ny - 1) {
-      end = c;
-      break;
-    }
-    for (let di = -1; di <= 1; di++)
-      for (let dj = -1; dj <= 1; dj++) {
-        const a = i + di,
-          b = j + dj;
-        if ((di === 0 && dj === 0) || a < 0 || a >= nx || b < 0 || b >= ny) continue;
-        const d = b * nx + a;
-        const w = weight[d];
-        if (w === Infinity) continue;
-        const next = c0 + cell * Math.hypot(di, dj) * w;
-        if (next < cost[d]) {
-          cost[d] = next;
-          from[d] = c;
-          push([next, d]);
-        }
-      }
-  }
-  if (end < 0) return [];
-  const cells = [];
-  for (let c = end; c !== startCell; c = from[c]) cells.push(c);
-  cells.reverse();
-  return cells.map((c) => [((c % nx) + 0.5) * cell, Math.floor(c / nx) * cell]);
 }
 
 /**
