@@ -399,12 +399,12 @@ function viewOf(mode: Mode): { min: [number, number, number]; max: [number, numb
 /**
  * Direction the camera looks from in each mode: the room from the front (square to its walls, so the
  * cube, dropped square to the camera, is square to the walls and the pads too) and from high up
- * (about 55 degrees, so a cube against the near wall stays in sight over it; on a tall stage about
- * 65 degrees); the pivot from a little above.
+ * (about 65 degrees: a cube against the near wall stays in sight over it, and the cube's top face
+ * lies mostly over the square it stands on, not over the one behind as at a lower angle); the pivot
+ * from a little above.
  */
 function viewDirectionOf(mode: Mode): [number, number, number] {
-  if (mode !== 'room') return [1, 0.7, 1.4];
-  return tallStage() ? [0, 2.2, 1] : [0, 1.45, 1];
+  return mode === 'room' ? [0, 2.2, 1] : [1, 0.7, 1.4];
 }
 
 /**
@@ -558,6 +558,25 @@ app.scene.add(padMesh);
 const padRim = new Mesh(padPlane, new MeshBasicMaterial({ color: 0xffffff, map: padFrame, transparent: true, depthWrite: false }));
 padRim.visible = false;
 app.scene.add(padRim);
+/**
+ * Room mode: the cube's footprint, a bright square outline on the floor around the 1 m square the cube
+ * stands on, following it as it rolls. From the default camera's slant the cube's top face reads as
+ * the square behind the one it stands on; the outline's front edge, in front of the cube, shows the
+ * square. Drawn once in front of the pads and tiles, and once faintly through the cube (depth test
+ * off), so its whole square shows from any view.
+ */
+const footprintRing = new RingGeometry(0.5 * Math.SQRT2, 0.58 * Math.SQRT2, 4, 1, Math.PI / 4).rotateX(-Math.PI / 2);
+const footprint = new Mesh(
+  footprintRing,
+  new MeshBasicMaterial({ color: 0xffffff, transparent: true, opacity: 0.95, side: DoubleSide, depthWrite: false }),
+);
+const footprintThrough = new Mesh(
+  footprintRing,
+  new MeshBasicMaterial({ color: 0xffffff, transparent: true, opacity: 0.25, side: DoubleSide, depthWrite: false, depthTest: false }),
+);
+footprint.renderOrder = 2;
+footprintThrough.renderOrder = 3;
+app.scene.add(footprint, footprintThrough);
 const padDoneMaterial = new MeshBasicMaterial({ color: 0xc9a43a, map: padFill, transparent: true, opacity: 0.55, depthWrite: false });
 const padMarks = Array.from({ length: PAD_COUNT }, () => {
   const outline = new Mesh(
@@ -644,7 +663,9 @@ pop.setAttribute('aria-live', 'polite');
 pop.style.cssText =
   `position: absolute; left: 50%; top: ${pageLayout().touch() ? '48%' : '22%'}; transform: translate(-50%, -50%); pointer-events: none; opacity: 0;` +
   'font: 700 clamp(18px, 5.5vw, 28px) system-ui, sans-serif; color: #ffe27a; text-shadow: 0 2px 6px #000, 0 0 2px #000; text-align: center;' +
-  'z-index: 5; width: max-content; max-width: calc(100% - 24px); transition: opacity 0.25s, transform 0.9s ease-out';
+  'z-index: 5; width: max-content; max-width: calc(100% - 24px); transition: opacity 0.25s, transform 0.9s ease-out;' +
+  // On a dark plate: over the room's pale back wall the yellow alone read faint (contrast under 2:1).
+  'background: rgba(10, 15, 30, 0.88); padding: 4px 14px; border-radius: 10px';
 {
   const stage = app.canvas.parentElement ?? document.body;
   if (getComputedStyle(stage).position === 'static') stage.style.position = 'relative';
@@ -1880,6 +1901,24 @@ function frame(): void {
     padRim.position.set(spot[0], 0.025, spot[1]);
   }
   padRim.visible = padLit && pads.over;
+  // The footprint follows the cube's centre while it is near the floor (not high in a jump), square to its grid.
+  footprint.visible = footprintThrough.visible = room && P.y[e]! < 0.9;
+  footprint.position.set(P.x[e]!, 0.03, P.z[e]!);
+  footprintThrough.position.copy(footprint.position);
+  {
+    // The heading of the body's most nearly level axis (atan2(x, z)): the outline turns with the cube's sides.
+    const q = c.Orientation,
+      qx = q.x[e]!,
+      qy = q.y[e]!,
+      qz = q.z[e]!,
+      qw = q.w[e]!;
+    const axes = [
+      [1 - 2 * (qy * qy + qz * qz), 2 * (qx * qy + qw * qz), 2 * (qx * qz - qw * qy)],
+      [2 * (qx * qz + qw * qy), 2 * (qy * qz - qw * qx), 1 - 2 * (qx * qx + qy * qy)],
+    ];
+    const level = Math.abs(axes[0]![1]!) < Math.abs(axes[1]![1]!) ? axes[0]! : axes[1]!;
+    footprint.rotation.y = footprintThrough.rotation.y = Math.atan2(level[0]!, level[2]!);
+  }
   hintRing.visible = padLit && hintSpot !== null;
   if (hintSpot) hintRing.position.set(hintSpot[0], 0.035, hintSpot[1]);
   placeBed(padLit ? pads.pad : -1);

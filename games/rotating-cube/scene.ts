@@ -519,7 +519,9 @@ export function padPuzzle(layout: PadLayout, k: number): RollPuzzle {
 /**
  * A shortest route (roll-puzzle.ts `moveRoute`) for `body` where it is now in `world` onto pad `k` of
  * `layout` with the face it wants on top, from its orientation (square to the world's axes) and its
- * cell (the cell offset from the pad its centre lies within CELL_SNAP of, else away from the pad).
+ * cell (the 1 m square, offset from the pad, that its centre lies over: a roll lands the cube up to
+ * about 0.3 m past the next cell's centre, so after a few rolls it may stand well off centre, and it
+ * is still on the square the player sees it on; main.ts draws that square as the cube's footprint).
  * @returns the moves, or null if none reaches it.
  */
 export function padMoveRoute(world: PhysicsWorld, body: number, layout: PadLayout, k: number): RollMove[] | null {
@@ -530,15 +532,12 @@ export function padMoveRoute(world: PhysicsWorld, body: number, layout: PadLayou
     v = P.z[body]! - p.pad[1];
   const i = Math.round(u),
     j = Math.round(v);
-  const cell: [number, number] | null = Math.hypot(u - i, v - j) <= CELL_SNAP ? [i, j] : null;
-  return moveRoute(p, cell, gridOrientationOf(q.x[body]!, q.y[body]!, q.z[body]!, q.w[body]!));
+  return moveRoute(p, [i, j], gridOrientationOf(q.x[body]!, q.y[body]!, q.z[body]!, q.w[body]!));
 }
 /** The par of pad `k` of `layout` for `body` where it is now in `world`: the length of `padMoveRoute`, or -1 if none reaches it. */
 export function padMovePar(world: PhysicsWorld, body: number, layout: PadLayout, k: number): number {
   return padMoveRoute(world, body, layout, k)?.length ?? -1;
 }
-/** A resting cube's centre within this of a grid cell's centre, m, is taken to be on that cell. */
-const CELL_SNAP = 0.3;
 /** Room challenge: three stars for a round within par + PAR_SLACK[0] moves, two within par + PAR_SLACK[1], else one. */
 export const PAR_SLACK: readonly [number, number] = Object.freeze([2, 8]) as readonly [number, number];
 

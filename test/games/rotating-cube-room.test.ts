@@ -39,6 +39,7 @@ import {
   PUSH_SPEED_MAX,
   padLayout,
   padMovePar,
+  padMoveRoute,
   padStars,
   ROLL_SPIN_MAX,
   ROLL_TORQUE,
@@ -654,6 +655,59 @@ describe('rotating-cube round ends and the moves-to-go indicator', () => {
     meter.reset();
     expect([meter.update(0), meter.trend, meter.text()]).toEqual([true, '', '0 moves to go']);
     expect(() => meter.update(1.5)).toThrow(/ToGoMeter.update: movesLeft .* got 1.5/);
+  });
+
+  it('moves to go: rolling the shortest route in the physics, one roll at a time, counts down by one to 0 and wins the pad', () => {
+    // From resting poses around the centre pad (red on top wanted, a bed of one cell), each route of
+    // rolls only, each roll a held ROLL_TORQUE as the game's keys: after each the count read where the
+    // cube rests is exactly one less (the indicator never says "farther" on the route), and the last
+    // roll scores the pad. A roll carries the cube about 1.3 m, so after two it stands up to 0.4 m
+    // off a cell's centre, still on that cell's square (before, counted as off the grid: "4 to go,
+    // farther" after a right roll). Poses: [x, z, orientation, moves expected], the first the stranger's (two
+    // squares east, red underneath: A A).
+    const poses: [number, number, readonly number[], number][] = [
+      [2, 0, FACE_UP[1]!, 2],
+      [-2, 0, FACE_UP[1]!, 2],
+      [-1, 0, RED_WEST, 1],
+      [-1, 0, FACE_UP[0]!, 3],
+      [1, -1, FACE_UP[2]!, 2],
+    ];
+    const STEP_OF: Record<number, [number, number]> = { 0: [1, 0], 1: [-1, 0], 4: [0, 1], 5: [0, -1] };
+    for (const [x0, z0, q, expected] of poses) {
+      const { world, h, rounds } = roundWorld('room');
+      rounds.pads.pad = 2;
+      const P = world.components.Position,
+        W = world.components.AngularVelocity;
+      let torque = 0,
+        dx = 0,
+        dz = 0;
+      addSystem(
+        world,
+        'forces',
+        torqueCouple(h.body, () => [dz * torque, 0, -dx * torque]),
+      );
+      setDown(world, h.body, x0, 0.51, z0, q, 30);
+      const route = padMoveRoute(world, h.body, centred, 2)!;
+      const label = `from ${x0},${z0}: route ${JSON.stringify(route)}`;
+      expect(route.length, label).toBe(expected);
+      expect(
+        route.every((m) => m.kind === 'roll'),
+        label,
+      ).toBe(true);
+      for (let n = 0; n < route.length; n++) {
+        expect(padMovePar(world, h.body, centred, 2), `${label}, before roll ${n + 1}`).toBe(expected - n);
+        [dx, dz] = STEP_OF[(route[n] as { direction: number }).direction]!;
+        const sx = P.x[h.body]!,
+          sz = P.z[h.body]!;
+        torque = ROLL_TORQUE;
+        for (let i = 0; i < 240; i++) {
+          step(world);
+          const spin = W.x[h.body]! * dz - W.z[h.body]! * dx;
+          torque = spin < ROLL_SPIN_MAX && Math.hypot(P.x[h.body]! - sx, P.z[h.body]! - sz) < 0.5 ? ROLL_TORQUE : 0;
+        }
+      }
+      expect(rounds.pads.pad, label).toBe(3);
+    }
   });
 
   it('the pads round ends (banner content) only after the last pad, saying the moves made; R keeps no stale end', () => {
