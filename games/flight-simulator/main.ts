@@ -112,6 +112,7 @@ import {
   lessonTipText,
   MISS_PENALTY,
   nextRing,
+  nextRingText,
   PASS_RADIUS,
   predictThroughRing,
   RING_RADIUS,
@@ -451,10 +452,11 @@ function pilotInput(): { roll: number; pitch: number; yaw: number } {
 const doneAt = new Map<number, number>();
 /**
  * Game events for the banner and the sounds, newest last: text, colour, game time, and for a ring
- * laid ahead after a miss that ring (`relaid`, 0-based): its banner says where it lies in words
- * worked out each frame, as the lesson tip's are (./course.ts relayText), so the two agree.
+ * laid ahead after a miss that ring (`relaid`, 0-based), or for the ring next after a pass that ring
+ * (`next`): its banner says where it lies in words worked out each frame, as the lesson tip's are
+ * (./course.ts relayText, nextRingText), so the two agree.
  */
-const events: { text: string; colour: string; time: number; relaid?: number }[] = [];
+const events: { text: string; colour: string; time: number; relaid?: number; next?: number }[] = [];
 const sound = getSound();
 const engine = sound.engine('propeller');
 /** Game time of the last warning beep, s. */
@@ -579,6 +581,8 @@ function checkRings(time: number): void {
       state.score++;
       const last = nextRing(rings) < 0;
       events.push({ text: last ? 'Last ring!' : `Ring ${ring + 1} ✓`, colour: '#7dff9a', time });
+      // Then, once the tick is read, which way the next ring lies: the turn to it is seen coming.
+      if (!last) events.push({ text: '', colour: '#ffd166', time: time + NEXT_AFTER, next: nextRing(rings) });
       sound.chime(880, 0.18);
       setTimeout(() => sound.chime(1320, 0.3), 110);
     } else {
@@ -1037,6 +1041,8 @@ function showSlowMotion(): void {
 const MISS_FLASH = 1.2;
 /** How long a banner stays, s of game time. */
 const BANNER_LIFE = 2;
+/** How long after a ring's tick the banner says where the next ring lies, s of game time. */
+const NEXT_AFTER = 1.2;
 
 /** m:ss of `t` seconds (./finish.ts clockText). */
 const clock = clockText;
@@ -1205,13 +1211,20 @@ function updateBanner(t: number): void {
   let last: (typeof events)[number] | undefined;
   for (let k = events.length - 1; k >= Math.max(0, events.length - 4); k--) {
     const ev = events[k]!;
+    // A note of where the next ring lies goes once that ring is no longer next.
+    if (ev.next !== undefined && ev.next !== nextRing(rings)) continue;
     if (ev.time <= t && (!last || ev.time > last.time)) last = ev;
   }
   const age = last ? t - last.time : Infinity;
   // On a phone the banner gives way to a tip the flight waits on (the two covered the top third).
   if (last && age >= 0 && age < BANNER_LIFE && state.phase === 'flying' && !(compact && holding && tipText)) {
     banner.style.display = 'block';
-    const text = last.relaid === undefined ? last.text : relayText(last.relaid, wayOf(last.relaid), compact);
+    const text =
+      last.relaid !== undefined
+        ? relayText(last.relaid, wayOf(last.relaid), compact)
+        : last.next !== undefined
+          ? nextRingText(last.next, wayOf(last.next), compact)
+          : last.text;
     if (banner.textContent !== text) banner.textContent = text;
     banner.style.color = last.colour;
     banner.style.opacity = String(age < 1.4 ? 1 : (BANNER_LIFE - age) / 0.6);
