@@ -405,6 +405,18 @@ export function relayText(ring: number, way: RingWay, compact: boolean): string 
   return way.side || way.up ? `${n} ahead: ${ringWhere(way, compact)}` : `${n} just ahead of you`;
 }
 
+/**
+ * The banner after a ring is flown through when another follows: where the next ring, `ring`
+ * (0-based), lies `way` from the line flown, "Next, ring 6: to the left and lower", or "Next, ring 6:
+ * straight ahead" (`ringWhere`, the lesson tip's words), so that a turn to it is seen coming (a
+ * stranger heard of the next ring's side only after a miss, "is now ahead", `relayText`).
+ * @throws RangeError on a ring that is not a non-negative integer.
+ */
+export function nextRingText(ring: number, way: RingWay, compact: boolean): string {
+  if (!(Number.isInteger(ring) && ring >= 0)) throw new RangeError(`nextRingText: ring must be a non-negative integer, got ${ring}`);
+  return `Next, ring ${ring + 1}: ${ringWhere(way, compact)}`;
+}
+
 /** Who reads a lesson tip (`lessonTipText`). */
 export interface TipReader {
   /** Touch first (a phone): the tip names the on-screen stick, not the arrow keys. */

@@ -112,6 +112,7 @@ import {
   lessonTipText,
   MISS_PENALTY,
   nextRing,
+  nextRingText,
   PASS_RADIUS,
   predictThroughRing,
   RING_RADIUS,
@@ -127,6 +128,7 @@ import {
 } from './course';
 import { createCrash } from './crash';
 import { clockText, finishCard, nextSeed } from './finish';
+import { labelClearOf, type ScreenBox } from './label-place';
 import { FRAME_CAP, STEPS_PER_FRAME, slowMotion } from './pacing';
 import { nearFade } from './ring-fade';
 import { createScenery, HORIZON_COLOUR, SUN_DIRECTION } from './scenery';
@@ -450,10 +452,11 @@ function pilotInput(): { roll: number; pitch: number; yaw: number } {
 const doneAt = new Map<number, number>();
 /**
  * Game events for the banner and the sounds, newest last: text, colour, game time, and for a ring
- * laid ahead after a miss that ring (`relaid`, 0-based): its banner says where it lies in words
- * worked out each frame, as the lesson tip's are (./course.ts relayText), so the two agree.
+ * laid ahead after a miss that ring (`relaid`, 0-based), or for the ring next after a pass that ring
+ * (`next`): its banner says where it lies in words worked out each frame, as the lesson tip's are
+ * (./course.ts relayText, nextRingText), so the two agree.
  */
-const events: { text: string; colour: string; time: number; relaid?: number }[] = [];
+const events: { text: string; colour: string; time: number; relaid?: number; next?: number }[] = [];
 const sound = getSound();
 const engine = sound.engine('propeller');
 /** Game time of the last warning beep, s. */
@@ -578,6 +581,8 @@ function checkRings(time: number): void {
       state.score++;
       const last = nextRing(rings) < 0;
       events.push({ text: last ? 'Last ring!' : `Ring ${ring + 1} ✓`, colour: '#7dff9a', time });
+      // Then, once the tick is read, which way the next ring lies: the turn to it is seen coming.
+      if (!last) events.push({ text: '', colour: '#ffd166', time: time + NEXT_AFTER, next: nextRing(rings) });
       sound.chime(880, 0.18);
       setTimeout(() => sound.chime(1320, 0.3), 110);
     } else {
@@ -973,8 +978,13 @@ function overlay(css: string): HTMLDivElement {
   layout.stage.append(el);
   return el;
 }
+/**
+ * The widest a message over the scene (banner, engine's note, tip) may be: it wraps inside the scene
+ * with a 12 px margin each side (the phone's banner ran one line past both edges of the screen).
+ */
+const MESSAGE_WIDTH = 'calc(100% - 24px)';
 const banner = overlay(
-  `left: 50%; top: ${compact ? 27 : 24}%; padding: ${compact ? '3px 12px' : '6px 18px'}; border-radius: 14px; background: rgba(8, 12, 20, 0.78); font: 800 ${compact ? 18 : 26}px system-ui, sans-serif; white-space: nowrap; display: none;`,
+  `left: 50%; top: ${compact ? 27 : 24}%; width: max-content; max-width: ${MESSAGE_WIDTH}; box-sizing: border-box; padding: ${compact ? '3px 12px' : '6px 18px'}; border-radius: 14px; background: rgba(8, 12, 20, 0.78); font: 800 ${compact ? 18 : 26}px/1.25 system-ui, sans-serif; text-align: center; display: none;`,
 );
 banner.dataset.hud = 'banner';
 /**
@@ -1031,6 +1041,8 @@ function showSlowMotion(): void {
 const MISS_FLASH = 1.2;
 /** How long a banner stays, s of game time. */
 const BANNER_LIFE = 2;
+/** How long after a ring's tick the banner says where the next ring lies, s of game time. */
+const NEXT_AFTER = 1.2;
 
 /** m:ss of `t` seconds (./finish.ts clockText). */
 const clock = clockText;
@@ -1199,13 +1211,20 @@ function updateBanner(t: number): void {
   let last: (typeof events)[number] | undefined;
   for (let k = events.length - 1; k >= Math.max(0, events.length - 4); k--) {
     const ev = events[k]!;
+    // A note of where the next ring lies goes once that ring is no longer next.
+    if (ev.next !== undefined && ev.next !== nextRing(rings)) continue;
     if (ev.time <= t && (!last || ev.time > last.time)) last = ev;
   }
   const age = last ? t - last.time : Infinity;
   // On a phone the banner gives way to a tip the flight waits on (the two covered the top third).
   if (last && age >= 0 && age < BANNER_LIFE && state.phase === 'flying' && !(compact && holding && tipText)) {
     banner.style.display = 'block';
-    const text = last.relaid === undefined ? last.text : relayText(last.relaid, wayOf(last.relaid), compact);
+    const text =
+      last.relaid !== undefined
+        ? relayText(last.relaid, wayOf(last.relaid), compact)
+        : last.next !== undefined
+          ? nextRingText(last.next, wayOf(last.next), compact)
+          : last.text;
     if (banner.textContent !== text) banner.textContent = text;
     banner.style.color = last.colour;
     banner.style.opacity = String(age < 1.4 ? 1 : (BANNER_LIFE - age) / 0.6);
@@ -1402,15 +1421,25 @@ function pointToNextRing(): void {
 /**
  * The ring label's centre (px) moved inside the scene `w` px wide, `bottom` px high (above the
  * cockpit's panel), its box EDGE_MARGIN px from each edge (it touched the phone's right edge), and
- * below the warning while that is on and the label would reach under it.
+ * clear of the warning, the banner and the tip (./label-place.ts labelClearOf): behind the tip at the
+ * scene's top, a ring above the view had its label hidden.
  */
 function keepInScene(x: number, y: number, w: number, bottom: number): [number, number] {
   const hw = ringPointer.offsetWidth / 2 + EDGE_MARGIN,
     hh = ringPointer.offsetHeight / 2 + EDGE_MARGIN;
   const cx = Math.max(hw, Math.min(w - hw, x));
-  const underWarning = warningEl.style.display !== 'none' && Math.abs(cx - w / 2) < hw + warningEl.offsetWidth / 2;
-  const top = underWarning ? warningEl.offsetTop + warningEl.offsetHeight + hh : hh;
-  return [cx, Math.max(top, Math.min(bottom - hh, y))];
+  const cy = Math.max(hh, Math.min(bottom - hh, y));
+  return [cx, labelClearOf(cx, cy, hw - EDGE_MARGIN, hh - EDGE_MARGIN, shownBoxes(), app.canvas.clientHeight, EDGE_MARGIN)];
+}
+/**
+ * The boxes over the scene the ring label keeps clear of (px in the stage: left, top, width, height):
+ * the warning while it is on, and the banner, the engine's note and the tip as last placed and shown.
+ */
+function shownBoxes(): ScreenBox[] {
+  const boxes: ScreenBox[] = [];
+  for (const el of [warningEl, banner, throttleNote, tip])
+    if (el.style.display !== 'none') boxes.push([el.offsetLeft - el.offsetWidth / 2, el.offsetTop, el.offsetWidth, el.offsetHeight]);
+  return boxes;
 }
 /** Least gap between the ring label and the scene's edges, px. */
 const EDGE_MARGIN = 10;
@@ -1433,7 +1462,7 @@ const RING_OUTER = (RING_RADIUS + 12 + 2.5) * 1.06;
  * tipping its wings (banking), so ring 2's tip says so.
  */
 const tip = overlay(
-  `left: 50%; width: max-content; max-width: min(92%, 560px); box-sizing: border-box; padding: 5px 14px; border-radius: 12px; background: rgba(8, 12, 20, 0.8); color: #eef3f8; font: 600 ${compact ? 13 : 16}px/1.3 system-ui, sans-serif; text-align: center; display: none;`,
+  `left: 50%; width: max-content; max-width: min(${MESSAGE_WIDTH}, 560px); box-sizing: border-box; padding: 5px 14px; border-radius: 12px; background: rgba(8, 12, 20, 0.8); color: #eef3f8; font: 600 ${compact ? 13 : 16}px/1.3 system-ui, sans-serif; text-align: center; display: none;`,
 );
 tip.dataset.hud = 'tip';
 const tipWords = document.createElement('div'),
@@ -1604,7 +1633,7 @@ function findRingBehindPlane(): void {
  * and a bar of tenths): a tap of the phone's Faster button shows what it did where the eye is.
  */
 const throttleNote = overlay(
-  `left: 50%; padding: 2px 12px; border-radius: 10px; background: rgba(8, 12, 20, 0.8); color: #8fe3ff; font: 700 ${compact ? 15 : 17}px system-ui, sans-serif; white-space: nowrap; display: none;`,
+  `left: 50%; width: max-content; max-width: ${MESSAGE_WIDTH}; box-sizing: border-box; padding: 2px 12px; border-radius: 10px; background: rgba(8, 12, 20, 0.8); color: #8fe3ff; font: 700 ${compact ? 15 : 17}px/1.25 system-ui, sans-serif; text-align: center; display: none;`,
 );
 throttleNote.dataset.hud = 'throttle-note';
 const throttleWords = document.createElement('span'),

@@ -33,6 +33,7 @@ import {
   MISS_PENALTY,
   MISS_RANGE,
   nextRing,
+  nextRingText,
   PASS_RADIUS,
   pathThroughRing,
   RECOVERY_DISTANCE,
@@ -470,6 +471,18 @@ describe('flight simulator course', () => {
       'Ring 2 is now ahead: to the left and far higher',
     );
     expect(() => relayText(-1, RING_WAYS[0]!, false)).toThrow(/relayText: ring must be a non-negative integer, got -1/);
+  });
+
+  it("the banner after a pass says where the next ring lies in the lesson tip's words", () => {
+    for (const compact of [false, true])
+      for (const w of RING_WAYS) {
+        const tip = lessonTipText(1, w, { touch: compact, compact, pilotPitch: false });
+        const said = /^Next, ring 2: (.+)$/.exec(nextRingText(1, w, compact));
+        expect(said).not.toBeNull();
+        expect(tip.startsWith(`Ring 2 is ${said![1]}:`) || tip.startsWith(`Ring 2 is ${said![1]}.`), `${said![1]} / ${tip}`).toBe(true);
+      }
+    expect(nextRingText(5, { side: 1, up: -1, sideAmount: 'a little ', upAmount: '' }, true)).toBe('Next, ring 6: a little right, lower');
+    expect(() => nextRingText(1.5, RING_WAYS[0]!, false)).toThrow(/nextRingText: ring must be a non-negative integer, got 1.5/);
   });
 
   it('a new best beats a kept best: the first run is kept but not praised, a worse or equal run is not a best', () => {

@@ -1,14 +1,15 @@
 /**
  * The flight simulator's pacing, tap latch and near-ring fade (games/flight-simulator/pacing.ts,
- * tap-latch.ts, ring-fade.ts), headless: the game loop fed the flight's FRAME_CAP and STEPS_PER_FRAME keeps pace with the clock at
+ * tap-latch.ts, ring-fade.ts, label-place.ts), headless: the game loop fed the flight's FRAME_CAP and STEPS_PER_FRAME keeps pace with the clock at
  * 20 frames a second and goes in slow motion (FRAME_CAP s of game time a frame) at 5; the notice
  * shows under 10 frames a second and not at the edge; a press let go before any step acts for
  * MIN_PULSE s of game time, a held key as long as it is held; a ring that spans the view is faint,
- * one far off is whole.
+ * one far off is whole; the ring's label goes past the messages' boxes.
  */
 
 import { createGameLoop } from '@bitphysics/game-kit';
 import { describe, expect, it } from 'vitest';
+import { labelClearOf, type ScreenBox } from '../../games/flight-simulator/label-place';
 import { FLIGHT_STEP, FRAME_CAP, gameTimeOfFrame, SLOW_MOTION_FPS, STEPS_PER_FRAME, slowMotion } from '../../games/flight-simulator/pacing';
 import { NEAR_FADE, nearFade } from '../../games/flight-simulator/ring-fade';
 import { clearPulse, createPulse, MIN_PULSE, pressPulse, pulseOn, releasePulse } from '../../games/flight-simulator/tap-latch';
@@ -132,5 +133,31 @@ describe('near-ring fade', () => {
     }
     expect(() => nearFade(0, 10, 1)).toThrow(/nearFade: radius and tanHalf/);
     expect(() => nearFade(1, -1, 1)).toThrow(/nearFade: distance/);
+  });
+});
+
+describe('the ring label keeps clear of the messages (label-place.ts)', () => {
+  // A phone's scene, 390 x 650 px; a label 100 x 24 px (half 50 x 12), gap 10 px.
+  const tip: ScreenBox = [15, 8, 360, 60];
+  const banner: ScreenBox = [40, 74, 310, 50];
+  it('goes below a tip at the top that it would sit behind, by the gap', () => {
+    // Centre at 30 px: the label spans 18..42, inside the tip (8..68): pushed to 68 + 10 + 12 = 90.
+    expect(labelClearOf(195, 30, 50, 12, [tip], 650, 10)).toBe(90);
+  });
+  it('goes below the whole stacked column, taken from the top down', () => {
+    // Past the tip to 90 (spans 78..102), which is inside the banner (74..124): 124 + 10 + 12 = 146.
+    expect(labelClearOf(195, 30, 50, 12, [banner, tip], 650, 10)).toBe(146);
+  });
+  it('goes above a box in the lower half', () => {
+    expect(labelClearOf(195, 560, 50, 12, [[20, 550, 350, 40]], 650, 10)).toBe(550 - 10 - 12);
+  });
+  it('stays where it is beside a box or clear of it', () => {
+    // Left of a box at 200..300: the label's right edge (110) plus the gap stays short of it.
+    expect(labelClearOf(60, 30, 50, 12, [[200, 8, 100, 60]], 650, 10)).toBe(30);
+    expect(labelClearOf(195, 300, 50, 12, [tip, banner], 650, 10)).toBe(300);
+  });
+  it('throws on a negative half size or box', () => {
+    expect(() => labelClearOf(0, 0, -1, 12, [], 650, 10)).toThrow(/labelClearOf: halfW/);
+    expect(() => labelClearOf(0, 0, 1, 12, [[0, 0, -5, 4]], 650, 10)).toThrow(/labelClearOf: a box/);
   });
 });
