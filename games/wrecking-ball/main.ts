@@ -2225,8 +2225,10 @@ function hintText(): string {
       ? `Drag back from ${pieceName(aiming.armed)} or from any open ground to aim: the ball flies along the arrow. Tap it again to swing as shown`
       : `Drag back from ${pieceName(aiming.armed)} to aim: the ball flies along the arrow, harder the longer the pull. ${tapWord} it again to swing as shown`;
   if (shell.world.time < hintUntil) return `That moves the hook. Drag back from a block and let go to swing the ball at it`;
+  // With how three stars are earned: the clear target in par swings, which no single structure
+  // holds (level 1, layout 1: 16 down, its structures 5, 10 and 12 pieces), so each swing has to topple one of the big ones.
   if (c.released === 0 && c.moves.length === 0 && aimed === 0)
-    return `Drag back from a block and let go: the ball swings into it along the arrow`;
+    return `Drag back from a block and let go: the ball swings into it along the arrow\n★★★: ${clearTarget(handles.pieces, handles.level)} down in ${swingPar(handles.level)} swings: strike the biggest structures low`;
   return '';
 }
 

@@ -238,7 +238,11 @@ describe('3D rigid-body games in headless Chromium', () => {
       expect(await g.page.locator('[data-hud="steps"]').isHidden()).toBe(true);
       // Before the first swing a hint over the scene says what a click does.
       const hint = g.page.locator('[data-hud="tap-hint"]');
-      expect(await hint.textContent()).toBe('Drag back from a block and let go: the ball swings into it along the arrow');
+      // and, on a line of its own, what three stars take: the clear target in the level's par.
+      expect((await hint.innerText()).split('\n')).toEqual([
+        'Drag back from a block and let go: the ball swings into it along the arrow',
+        '★★★: 16 down in 2 swings: strike the biggest structures low',
+      ]);
       // A click on open ground (in front of the crane, the farthest from every piece and the ball) sends the hook
       // there (the goal is set at once), and the hint says so, and what to click instead.
       await g.press('p');
