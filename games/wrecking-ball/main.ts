@@ -2169,8 +2169,9 @@ const compactStyle = document.createElement('style');
 compactStyle.textContent =
   '[data-hud="tap-hint"].compact { top: 4px !important; padding: 2px 8px !important; font-size: 12px !important; line-height: 1.25 !important; max-width: 80% !important; border-radius: 10px !important; }' +
   // On a desktop the status line (swings left, blocks down) reads at a glance: the kit's 12 px
-  // monospace in its thin bar was missed; a phone keeps the small type its three lines need.
-  `@media (min-width: ${COMPACT_MAX_WIDTH}px) and (min-height: ${COMPACT_MAX_HEIGHT}px) { [data-hud="wrecking-ball"] { font: 600 16px/1.4 system-ui, sans-serif; padding: 6px 12px !important; } }`;
+  // monospace in its thin bar was missed; a phone keeps the small type its three lines need. The
+  // bar keeps its height (19 px of text + 6 of padding): the scene's framing is measured on it.
+  `@media (min-width: ${COMPACT_MAX_WIDTH}px) and (min-height: ${COMPACT_MAX_HEIGHT}px) { [data-hud="wrecking-ball"] { font: 600 16px/1.2 system-ui, sans-serif; padding: 3px 10px !important; } }`;
 document.head.append(compactStyle);
 /** A short message over the scene saying what a tap did (re-aimed or refused), until world time `until`. */
 const notice = { text: '', until: -1 };
