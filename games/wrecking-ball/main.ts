@@ -22,6 +22,8 @@
  */
 
 import {
+  COMPACT_MAX_HEIGHT,
+  COMPACT_MAX_WIDTH,
   choiceParam,
   createActionButton,
   createButtonBar,
@@ -81,6 +83,9 @@ import {
   BALL_TONNES,
   buildWreckingBall,
   CHAIN_LINKS,
+  type ClearScore,
+  clearScore,
+  clearScoreLine,
   clearTarget,
   FULL_POWER_SHOWN,
   fallenCount,
@@ -93,6 +98,7 @@ import {
   RADIUS_RANGE,
   type SwingRequest,
   scorePieces,
+  starsRule,
   swayAmplitude,
   swingBudget,
   swingPar,
@@ -147,12 +153,18 @@ let banked = 0;
 let levelScore = 0;
 let cleared = false;
 /**
- * The level's result, fixed when it is cleared: the swings it took and the stars they earned (and
+ * The level's result, fixed when it is cleared: the swings it took, the stars they earned and the
+ * score part by part (and
  * whether a target was tapped since: the hint says such swings are for fun). The level counts as
  * cleared once the collapse that reached its target has settled (see gameStep); nothing changes
  * its score after that.
  */
-const clearedWith = { swings: 0, stars: 0, tapped: false };
+const clearedWith: { swings: number; stars: number; tapped: boolean; score: ClearScore } = {
+  swings: 0,
+  stars: 0,
+  tapped: false,
+  score: clearScore(0, 0),
+};
 /** Smoothed step time, ms (exponential average over ~30 steps), and the worst of the last second. */
 let stepMs = 0;
 let worstMs = 0;
@@ -235,8 +247,9 @@ function gameStep(world: PhysicsWorld): void {
     clearedWith.swings = reachedWith;
     clearedWith.stars = swingStars(clearedWith.swings, true, handles.level);
     sound.chime(1046, 0.6);
-    // 500 for clearing and 250 for each star (fewer swings).
-    levelScore += 500 + 250 * clearedWith.stars;
+    // The clear bonus and one for each star (fewer swings), said part by part in the banner.
+    clearedWith.score = clearScore(levelScore, clearedWith.stars);
+    levelScore = clearedWith.score.total;
   }
 }
 /** Seconds with no piece falling after the clear target is reached before the result is given. */
@@ -301,6 +314,7 @@ const game = await startThreeGame({
       label: 'next level',
       action: () => {
         if (cleared) nextLevel();
+        else notCleared();
       },
     },
     { key: 'g', label: 'debug', action: () => setDebug(!params.debug) },
@@ -1692,6 +1706,13 @@ function clearedLine(): string {
   const { swings, stars } = clearedWith;
   return `Level ${handles.level} cleared in ${swings} ${swings === 1 ? 'swing' : 'swings'}! ${'★'.repeat(stars)}${'☆'.repeat(3 - stars)}`;
 }
+/**
+ * The banner under the result: where the score's jump at the clear came from, and how the stars
+ * are earned ("blocks 396 + clear 500 + ★★ 500 = 1396" and "★★★ in 2 swings · ★★ in 3 · ★ in 4–5").
+ */
+function clearedBanner(): string {
+  return `${clearedLine()}\n${clearScoreLine(clearedWith.score, clearedWith.stars)}\n${starsRule(handles.level)}`;
+}
 /** Whether the level's swings are all used and it is not cleared (a swing is refused). */
 function outOfSwings(): boolean {
   return !cleared && swingsUsed() >= swingBudget(handles.level);
@@ -2146,7 +2167,11 @@ function foldLegend(): void {
 foldLegend();
 const compactStyle = document.createElement('style');
 compactStyle.textContent =
-  '[data-hud="tap-hint"].compact { top: 4px !important; padding: 2px 8px !important; font-size: 12px !important; line-height: 1.25 !important; max-width: 80% !important; border-radius: 10px !important; }';
+  '[data-hud="tap-hint"].compact { top: 4px !important; padding: 2px 8px !important; font-size: 12px !important; line-height: 1.25 !important; max-width: 80% !important; border-radius: 10px !important; }' +
+  // On a desktop the status line (swings left, blocks down) reads at a glance: the kit's 12 px
+  // monospace in its thin bar was missed; a phone keeps the small type its three lines need. The
+  // bar keeps its height (19 px of text + 6 of padding): the scene's framing is measured on it.
+  `@media (min-width: ${COMPACT_MAX_WIDTH}px) and (min-height: ${COMPACT_MAX_HEIGHT}px) { [data-hud="wrecking-ball"] { font: 600 16px/1.2 system-ui, sans-serif; padding: 3px 10px !important; } }`;
 document.head.append(compactStyle);
 /** A short message over the scene saying what a tap did (re-aimed or refused), until world time `until`. */
 const notice = { text: '', until: -1 };
@@ -2156,6 +2181,12 @@ const NOTICE_SHOWN = 2.5;
 function say(text: string): void {
   notice.text = text;
   notice.until = shell.world.time + NOTICE_SHOWN;
+}
+/** L before the level is cleared: a low tone, and the hint says what clearing it needs. */
+function notCleared(): void {
+  sound.chime(220, 0.2);
+  if (reachedAt >= 0) say('Level cleared: its score is being counted as the last blocks fall');
+  else say(`Clear the level first: ${clearTarget(handles.pieces, handles.level) - fallenCount(handles.pieces)} more down needed`);
 }
 /** Seconds a hint after a tap on open ground stays. */
 const HINT_SHOWN = 3;
@@ -2179,30 +2210,33 @@ function hintText(): string {
     // The level's end, over the scene as the other games say it (the status line says it small);
     // once the player swings on, that those swings are for fun and the result stands.
     if (swingsUsed() > clearedWith.swings || clearedWith.tapped)
-      return `${clearedLine()}\nSwinging for fun: the result stands. ${touch ? 'Tap' : 'Press L or'} Next level ▶`;
-    return clearedLine();
+      return `${clearedBanner()}\nSwinging for fun: the result stands. ${touch ? 'Tap' : 'Press L or'} Next level ▶`;
+    return clearedBanner();
   }
   if (aiming.piece !== 0 && aiming.dragged && onRun()) return 'The ball is on its swing: wait till it is done, then aim again';
   if (aiming.piece !== 0 && aiming.dragged && handles.controls.moves.length > 0 && aimed !== 0)
     return `Winding up… let go to re-aim this swing (no swing used): ${pullWords()}`;
   if (aiming.piece !== 0 && aiming.dragged)
     return `Let go to swing along the arrow: ${pullWords()}${aiming.power >= FULL_POWER_SHOWN ? '' : ', pull longer for more'}`;
+  if (shell.world.time < notice.until) return notice.text;
   if (reachedAt >= 0) return '';
   if (outOfSwings()) return '';
-  if (shell.world.time < notice.until) return notice.text;
   if (aiming.armed !== 0)
     return touch
       ? `Drag back from ${pieceName(aiming.armed)} or from any open ground to aim: the ball flies along the arrow. Tap it again to swing as shown`
       : `Drag back from ${pieceName(aiming.armed)} to aim: the ball flies along the arrow, harder the longer the pull. ${tapWord} it again to swing as shown`;
   if (shell.world.time < hintUntil) return `That moves the hook. Drag back from a block and let go to swing the ball at it`;
+  // With how three stars are earned: the clear target in par swings, which no single structure
+  // holds (level 1, layout 1: 16 down, its structures 5, 10 and 12 pieces), so each swing has to topple one of the big ones.
   if (c.released === 0 && c.moves.length === 0 && aimed === 0)
-    return `Drag back from a block and let go: the ball swings into it along the arrow`;
+    return `Drag back from a block and let go: the ball swings into it along the arrow\n★★★: ${clearTarget(handles.pieces, handles.level)} down in ${swingPar(handles.level)} swings: strike the biggest structures low`;
   return '';
 }
 
 /**
  * Shows `text` in the hint over the scene ('' hides it): each line ('\n') a line of its own, the
- * first in large type when `big` (the level's end), the others at the hint's size.
+ * first in large type when `big` (the level's end), the others at the hint's size (smaller on a
+ * small screen at the level's end).
  */
 function showHint(text: string, big: boolean): void {
   hint.style.display = text ? '' : 'none';
@@ -2214,6 +2248,8 @@ function showHint(text: string, big: boolean): void {
       const el = document.createElement('div');
       el.textContent = line;
       if (i === 0 && big) el.style.fontSize = '24px';
+      // The score's breakdown and the stars' rule each on one line of a phone's narrow banner.
+      else if (big && SMALL_SCREEN) el.style.fontSize = '13px';
       return el;
     }),
   );

@@ -1363,3 +1363,45 @@ export function swingStars(swings: number, cleared: boolean, level: number): num
   if (!cleared) return 0;
   return swings <= par ? 3 : swings === par + 1 ? 2 : 1;
 }
+
+/** Points for clearing a level, whatever the stars. */
+export const CLEAR_BONUS = 500;
+/** Points for each star a cleared level earns (`swingStars`). */
+export const STAR_BONUS = 250;
+
+/** A cleared level's score, part by part: the blocks' points, the clear bonus, the stars' bonus and their sum. */
+export interface ClearScore {
+  blocks: number;
+  clear: number;
+  stars: number;
+  total: number;
+}
+
+/**
+ * A cleared level's score: the points of the blocks brought down before it cleared, CLEAR_BONUS,
+ * and STAR_BONUS for each of its `stars` (0 to 3).
+ * @throws RangeError on negative or non-integer `blocks`, or `stars` not an integer in [0, 3].
+ */
+export function clearScore(blocks: number, stars: number): ClearScore {
+  if (!Number.isInteger(blocks) || blocks < 0) throw new RangeError(`clearScore: blocks must be an integer >= 0, got ${blocks}`);
+  if (!Number.isInteger(stars) || stars < 0 || stars > 3)
+    throw new RangeError(`clearScore: stars must be an integer in [0, 3], got ${stars}`);
+  const starPoints = STAR_BONUS * stars;
+  return { blocks, clear: CLEAR_BONUS, stars: starPoints, total: blocks + CLEAR_BONUS + starPoints };
+}
+
+/** The score's breakdown as the level-clear banner says it: "blocks 396 + clear 500 + ★★ 500 = 1396". */
+export function clearScoreLine(score: ClearScore, stars: number): string {
+  return `blocks ${score.blocks} + clear ${score.clear} + ${stars > 0 ? '★'.repeat(stars) : 'no stars'} ${score.stars} = ${score.total}`;
+}
+
+/**
+ * The stars' rule for level `level` (`swingStars`): "★★★ in ≤2 swings · ★★ in 3 · ★ in 4–5".
+ * @throws RangeError on a level that is not an integer >= 1.
+ */
+export function starsRule(level: number): string {
+  const par = swingPar(level),
+    budget = swingBudget(level);
+  const one = par + 2 === budget ? `${budget}` : `${par + 2}–${budget}`;
+  return `★★★ in ≤${par} swings · ★★ in ${par + 1} · ★ in ${one}`;
+}

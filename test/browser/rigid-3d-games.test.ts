@@ -238,7 +238,11 @@ describe('3D rigid-body games in headless Chromium', () => {
       expect(await g.page.locator('[data-hud="steps"]').isHidden()).toBe(true);
       // Before the first swing a hint over the scene says what a click does.
       const hint = g.page.locator('[data-hud="tap-hint"]');
-      expect(await hint.textContent()).toBe('Drag back from a block and let go: the ball swings into it along the arrow');
+      // and, on a line of its own, what three stars take: the clear target in the level's par.
+      expect((await hint.innerText()).split('\n')).toEqual([
+        'Drag back from a block and let go: the ball swings into it along the arrow',
+        '★★★: 16 down in 2 swings: strike the biggest structures low',
+      ]);
       // A click on open ground (in front of the crane, the farthest from every piece and the ball) sends the hook
       // there (the goal is set at once), and the hint says so, and what to click instead.
       await g.press('p');
@@ -482,6 +486,16 @@ describe('3D rigid-body games in headless Chromium', () => {
       await g.press('p');
       await g.frames(2);
       expect(await planBox()).toEqual(pausedPlan);
+      // L before the level is cleared does not go on, and says what clearing it needs.
+      await g.press('l');
+      await g.waitFor(
+        () =>
+          /^(Clear the level first: \d+ more down needed|Level cleared: )/.test(
+            document.querySelector('[data-hud="tap-hint"]')!.textContent!,
+          ),
+        null,
+      );
+      expect(await g.page.locator('[data-hud="wrecking-ball"]').textContent()).toMatch(/^Level 1 · /);
       // A cleared level says so over the scene in large type (the status line says it small): every
       // piece is thrown here, so the level clears within five simulated seconds (its result is given
       // once no piece has fallen for 1 s: given at once, its score rose under it as the last fell).
@@ -495,9 +509,19 @@ describe('3D rigid-body games in headless Chromium', () => {
         for (let i = 0; i < 300 && !game.cleared(); i++) game.step();
       });
       await g.waitFor(
-        () => /^Level 1 cleared in \d+ swings?! [★☆]{3}$/.test(document.querySelector('[data-hud="tap-hint"]')!.textContent!),
+        () => /^Level 1 cleared in \d+ swings?! [★☆]{3}\n/.test(document.querySelector<HTMLElement>('[data-hud="tap-hint"]')!.innerText),
         null,
       );
+      // Under the result, where the score's jump at the clear came from: its parts sum to the score,
+      // and the stars' rule (games/wrecking-ball/scene.ts clearScoreLine, starsRule).
+      const lines = (await hint.innerText()).split('\n');
+      const sum = lines[1]!
+        .match(/^blocks (\d+) \+ clear (\d+) \+ \S+ (\d+) = (\d+)$/)!
+        .slice(1)
+        .map(Number);
+      expect(sum[0]! + sum[1]! + sum[2]!).toBe(sum[3]);
+      expect(sum[3]).toBe(await g.page.evaluate(() => (window.game as unknown as WB).score()));
+      expect(lines[2]).toBe('★★★ in ≤2 swings · ★★ in 3 · ★ in 4–5');
       expect(await hint.isVisible()).toBe(true);
       // Once cleared, the result is fixed: a swing after it (a grab of the ball) changes neither the
       // swings nor the stars nor the score, whatever falls; the hint says the swing is for fun.
