@@ -143,7 +143,11 @@ const params = {
   ballTonnes: BALL_TONNES,
   debug: flagParam('debug'),
   quality: askedQuality ?? (SMALL_SCREEN && isSoftwareWebGL() ? 'lite' : 'full'),
-  nextLevel: () => nextLevel(),
+  /** The panel's "next level": as L, only once the level is cleared (else it says what clearing needs). */
+  nextLevel: () => {
+    if (cleared) nextLevel();
+    else notCleared();
+  },
   reset: () => game.shell.reset(),
 };
 
