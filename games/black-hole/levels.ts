@@ -195,8 +195,9 @@ const DIAGONAL_REACH = 0.62;
 
 /**
  * The widest a wall's gap may be, as a share of the field's width: on the phone's 20 m field level
- * 2's gap is 8 m and runs to the field's edge (with 0.32, 6.4 m between two stretches of wall, the
- * bold route-flying newcomer of scripts/black-hole-levels.mjs cleared 4 % of its tries there; now 50 %).
+ * 2's gap is 8 m and runs to the field's edge, wide enough that a bold newcomer flying straight for it
+ * gets through (a narrower gap, 6.4 m between two stretches of wall, rarely lets one through; the
+ * route-flying player of scripts/black-hole-levels.mjs checks this).
  */
 export const WALL_GATE_SHARE = 0.4;
 

@@ -1433,8 +1433,8 @@ canvas.addEventListener('pointercancel', (event) => release(event, true));
  * The dotted arc of the throw the pointer would make now: its points, m (flat x, y pairs), or [] when
  * not pulling. Only the start of the flight (arcSeconds: to just past its apex), and only up to its
  * first touch: it ends where the ball would meet a wall, a ramp, the box's top, the hoop or a ball (the
- * red cross), so where a bounce sends it is the player's to judge. An arc that went on through its
- * first bounce let a stranger wiggle the pull until the dots dropped through the hoop.
+ * red cross), so where a bounce sends it is the player's to judge: an arc drawn through its first
+ * bounce would let a player wiggle the pull until the dots dropped through the hoop, with no aim.
  */
 function aimPath(): number[] {
   if (pointerId === -1 || !dragged || inCancelZone() || refused()) return [];
@@ -1476,8 +1476,8 @@ function aimSeconds(): number {
 }
 /**
  * How much longer the aiming arc is in the tall box: a phone draws the court at some 36 px a metre
- * (a desktop 56), so the same 0.6 s of flight was a third shorter on its screen, most of it under the
- * thumb's side of the ball, and the strangers found the phone the hardest to aim (2 of 5 for fun).
+ * (a desktop 56), so the same 0.6 s of flight would be a third shorter on its screen, most of it under
+ * the thumb's side of the ball; 1.5 times longer, it spans about as many pixels as a desktop's.
  */
 const TALL_AIM_SCALE = 1.5;
 /**
