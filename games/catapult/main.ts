@@ -574,7 +574,7 @@ function shotViewRect(): View {
   if (upright()) return uprightView(lv.castleMinX - 0.8, rockRight() + 1);
   if (renderer.camera.width < NARROW) return viewFor(lv.castleMinX - 2.5, rockRight() + 2.5);
   // A desktop: the castle close, the rock's near half at the right edge (with 2.5 m either side and
-  // the whole rock it was hardly closer than the aim view, the castle a strip under 80 % of sky).
+  // the whole rock it would be hardly closer than the aim view, the castle a strip under much sky).
   return viewFor(lv.castleMinX - 1.2, lv.castleMaxX + ROCK.gap + ROCK.hx + 0.2);
 }
 /** Screen pixels a metre in view `v`, fitted (letterboxed) to the screen. */
@@ -981,8 +981,8 @@ function positionOf(h: number): [number, number] {
 
 /**
  * Draws the last throw's trail and its verdict: a hit's points for VERDICT_SHOWN seconds; a miss's
- * hint ("Long by 6 m: pull less, or aim lower") until the player presses to aim again (it faded
- * with the hit's time, and a stranger who looked back at the castle after a later miss saw none).
+ * hint ("Long by 6 m: pull less, or aim lower") until the player presses to aim again, so a player
+ * who looks back at the castle after a miss still finds the hint there.
  */
 function drawThrow(world: PhysicsWorld): void {
   const cam = renderer.camera;
@@ -1262,8 +1262,9 @@ function showBreaks(world: PhysicsWorld): void {
  * The arc preview: the stone's flight from the cup to where it first touches the ground, a bank of
  * earth, the rock or a castle piece as it stands now (previewFlight, at most PREVIEW_TIME s; after
  * the first level only its start, previewLimit), drawn as dots in the page over the canvas (aimDom)
- * on every pointer move and every frame: drawn on the canvas at the frame's pace it lagged the finger (a page at 3 fps while a stranger aimed showed the
- * arc of an earlier, weaker pull ending at the first tower; the stone flew to the far one).
+ * on every pointer move and every frame, so the arc follows the finger even on a slow page: drawn on
+ * the canvas at the frame's pace, a page at 3 fps would show the arc of an earlier pull while the
+ * stone flies by the latest one.
  */
 const PREVIEW_TIME = 6;
 /** Least distance between two dots of the arc preview on the screen, px. */
@@ -1610,8 +1611,8 @@ function drawCloseUp(): void {
   const cam = renderer.camera;
   // In the shot view too once a throw that stopped short has settled with the castle off the screen.
   const castleOff = cam.toScreenX(lv.castleMaxX) > cam.width && lastThrow.verdict !== '';
-  // Not while aiming: the aim view holds the whole castle, and a close-up of it repeated what the
-  // field showed, under the arc's dots (a stranger's complaint).
+  // Not while aiming: the aim view holds the whole castle, and a close-up of it would repeat what
+  // the field shows, under the arc's dots.
   const show = upright() && !levelEnded && shotView && castleOff;
   closeShown = null;
   if (show) {
@@ -1627,9 +1628,9 @@ function drawCloseUp(): void {
       h = cam.toScreenLength(y1 - y0);
     // Two places: in the earth under the ground, over the card saying how to play while it shows;
     // and in the sky, the band from the banner's foot to CLOSE_GAP px over the castle's top or, lower,
-    // the catapult's arm (3.2 m up). The earth's (it was a third of the screen of plain earth, and
-    // the sky is where the stone flies), unless a pull's band crosses it and not the sky's or it has
-    // too little room: the close-up moves out of the aim's way (it hid the band a stranger pulled).
+    // the catapult's arm (3.2 m up). The earth's (a third of the screen of plain earth, while the
+    // sky is where the stone flies), unless a pull's band crosses it and not the sky's or it has
+    // too little room: the close-up moves out of the aim's way, never hiding the band being pulled.
     const ground = cam.toScreenY(floor);
     const sky: [number, number] = [
       (banner.text !== '' ? banner.y + banner.height : 0) + 14,
@@ -1940,7 +1941,7 @@ function draw(world: PhysicsWorld, alpha: number): void {
     // Before the first throw the level's name stands where its score (0) will be.
     const rule = shots.length === 0 ? `\nStars: ${starRule}\n${narrow ? DOWN_RULE_SHORT : DOWN_RULE}` : '';
     const head = shots.length === 0 ? `Level ${params.level}: ${lv.name}` : `Score ${score}`;
-    // "shots left", not "shots": a stranger read "shots 2" as the shots thrown.
+    // "shots left", not "shots": "shots 2" reads as the shots thrown.
     const running = `${head}  Total ${runningTotal}  ${shotsLeft} ${shotsLeft === 1 ? 'shot' : 'shots'} left${rule}`;
     if (clearedEarly(world)) {
       // Cleared with shots to spare: the player may move on now or throw again for more stars (the

@@ -920,8 +920,8 @@ export function hasFallen(world: PhysicsWorld, p: Piece): boolean {
  * Whether piece `p` counts toward its level's share of pieces down (the stars and the clear): every
  * piece but one lying flat where the level's ground (a hill's top, a pit's floor) holds it at the
  * start, a box at least as wide as it is tall (a bottom row's block or plank): it can neither drop
- * nor tip, and counted it kept three stars out of reach however the castle above it was brought
- * down. A post standing on the ground counts (it tips over).
+ * nor tip, and counted it would keep three stars out of reach however the castle above it is
+ * brought down. A post standing on the ground counts (it tips over).
  */
 export function countsTowardStars(lv: Pick<Level, 'terrain'>, p: Piece): boolean {
   const onGround = p.startY - p.half[1] - surfaceAt(lv, p.startX) < 0.05;
