@@ -658,8 +658,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   drawLanterns(world);
   drawMisses(world);
   drawCombos(world);
-  // The status row in both modes (it was written only while lanterns were drawn, so free play kept
-  // the lantern show's lines).
+  // The status row in both modes, so free play never keeps the lantern show's lines.
   updateStatus();
   drawPause();
   drawCharge();
@@ -907,7 +906,7 @@ canvas.addEventListener('pointerup', (event) => {
   const cam = renderer.camera;
   pauseAutoShow(show);
   // In the lantern show a second tap on a shell's spot while it still rises (its ring closing in)
-  // is taken as the same tap: a stranger who tapped again, unsure the first one took, lost a shell.
+  // is taken as the same tap: a player who taps again, unsure the first one took, loses no shell.
   if (lanternShow && targets.some((m) => Math.hypot(cam.toScreenX(m.x) - pointerX, cam.toScreenY(m.y) - pointerY) < SAME_SPOT_PX)) return;
   const x = cam.toWorldX(pointerX),
     y = cam.toWorldY(pointerY);
@@ -1200,7 +1199,7 @@ function lanternBoxes(all: boolean): [number, number, number, number][] {
 }
 /**
  * Over the sky while the player has paused: the sky dimmed, "Paused" and how to go on. A tap or click
- * on the paused sky resumes it and launches nothing (taps there were ignored without a word).
+ * on the paused sky resumes it and launches nothing, so no tap there goes unanswered.
  */
 const pause = createPauseOverlay({ tapToResume: true });
 app.stage.addChild(pause.container);
@@ -1344,8 +1343,8 @@ function statusFrame(): StatusFrame {
   } else {
     // The shells still to launch count down in the numbers (one line on a phone); the goal says how many the level gives.
     // Every lantern lit, their glow coming up (CLEAR_DELAY before the card): the goal line says so at
-    // once, with the count at n/n (the card's "All lanterns lit!" came seconds after "Lit 4/4" when
-    // frames were slow).
+    // once, with the count at n/n (the card's "All lanterns lit!" can come seconds later when frames
+    // are slow).
     goal = lost
       ? `Out of shells! ${shownLit(run, time)} of ${run.lit.length} lit`
       : run.stars > 0
