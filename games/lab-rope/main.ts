@@ -78,8 +78,8 @@ let cuts = 0;
 /** Real time (s) at which the level was lost; NaN while playing. */
 let lostAt = Number.NaN;
 /**
- * A miss holds the scene until the player taps, clicks or presses a key (it used to start the level
- * again by itself 2.5 s on, and a player looking elsewhere missed it): the scene dims to red, the
+ * A miss holds the scene until the player taps, clicks or presses a key, so a player looking
+ * elsewhere still sees the miss before the level starts again: the scene dims to red, the
  * ball is ringed where it lies and the banner says so in large type on a dark card. The tap counts
  * once this long has passed, s (not the swipe that missed).
  */
@@ -451,8 +451,8 @@ shell.onWorldChange(() => {
   push = 0;
   stroke = null;
   sparkles.length = 0;
-  // The panel's level slider and the side column follow a new level or a retry at once (the slider
-  // stayed at the level it was set to when the Next level button moved on).
+  // The panel's level slider and the side column follow a new level or a retry at once, so the
+  // slider never shows a level the Next level button has moved on from.
   panel.refresh();
   showReadout(shell.world);
   updateStatus();

@@ -332,8 +332,8 @@ let lastPlotted = -1,
 /**
  * The pixel ratio to render at: the kit's default (the device's, at most 2; SOFTWARE_PIXEL_RATIO, a
  * quarter of the pixels, under software WebGL), except on a phone under software WebGL, where it is 1:
- * at the kit's 0.5 a 390 px wide stage was drawn 195 px wide and blown up four times, too blurry to
- * read the cube's faces; at 1 a frame fills about as many pixels as the desktop's at 0.5 (390 x 536
+ * at the kit's 0.5 a 390 px wide stage would be drawn 195 px wide and blown up four times, too blurry
+ * to read the cube's faces; at 1 a frame fills about as many pixels as the desktop's at 0.5 (390 x 536
  * against 1060 x 734 CSS px), so it costs about as much.
  */
 function pixelRatio(): number | undefined {
@@ -1710,8 +1710,8 @@ function updateNet(): void {
 /**
  * A small card over the stage's top right in the room: the five pads in turn as chips in the colour
  * that must be on top there (the first: any face), the ones reached ticked and the lit one ringed, and
- * a "?" button that opens the rules in a few lines (closed at the start: a stranger read a wall of rules
- * before playing; the status row says the one thing to do now). The rules close again at the first
+ * a "?" button that opens the rules in a few lines (closed at the start, so a player is not met by a
+ * wall of rules before playing; the status row says the one thing to do now). The rules close again at the first
  * roll key (W A S D, ▲◀▼▶) or a second press of "?". Room mode only, while the round runs.
  */
 const rules = document.createElement('div');
