@@ -158,9 +158,9 @@ let replay: BlackHoleReplay;
  * Steps of the predicted path drawn ahead of the ship: 3 s, as long as the pad's. A wall of holes
  * (levels 2 and 3) pulls like a line of mass, harder than the thrust within some 6 m; a pilot that
  * flies up and steers by the path to keep it clear (scripts/black-hole-levels.mjs, reacting every
- * 0.3 s) fell in on level 2 three times in three (every field of eight) seeing 1 s ahead, 0.75 times
- * a level seeing 2 s. A 2 s path stopped mid-field, short of the wall's gap, and did not say whether
- * the ship would make it; 3 s of it reaches the wall from the pad.
+ * 0.3 s) falls in on level 2 nearly always seeing 1 s ahead, and often seeing 2 s. A 2 s path stops
+ * mid-field, short of the wall's gap, and does not say whether the ship will make it; 3 s of it
+ * reaches the wall from the pad.
  */
 const PATH_STEPS = 180;
 /**
@@ -242,7 +242,7 @@ const PATH_WARN = 0xff5a4a,
 /**
  * The field for the stage's shape: on a wide screen 32 m across and as tall as the stage allows
  * within 24 to 30 m, so the field fills it; on a phone held upright a tall 20 x 30 m one (the wide
- * field was a band across its middle).
+ * field would be a band across its middle).
  */
 function fieldForStage(): { width: number; height: number } {
   const stage = pageLayout().stage;
@@ -1386,8 +1386,8 @@ function startDeath(): void {
 
 /**
  * Whether the words of the last fall stay up: after a fall in levels the new ship waits parked at the
- * start (./levels.ts `LevelRun.parked`) until the player thrusts, and the words say so until then (they
- * faded after DEATH_TEXT_MS, and a player reading the screen missed the life lost).
+ * start (./levels.ts `LevelRun.parked`) until the player thrusts, and the words say so until then, so
+ * a player who looks at the screen late still sees the life lost (not faded after DEATH_TEXT_MS).
  */
 const deathWaits = (): boolean =>
   run !== null && !bh.over && run.parked && !run.waiting && bh.thrust === 'none' && death.count > 0 && !replay.player && bh.falls > 0;
