@@ -516,8 +516,8 @@ function viewFor(minX: number, maxX: number): View {
   // Tall (or a screen taller than wide): the ground GROUND_AT (upright UPRIGHT_GROUND) up, earth below it.
   if (aspect > 1.2 || height > 3 * top) {
     // Upright, the lowest surface (a pit's floor, where the stones and the wreck lie) UPRIGHT_GROUND
-    // up: under it lie the card saying how to play and the next-level button, and under them a pit's
-    // floor was hidden.
+    // up: under it lie the card saying how to play and the next-level button, which would otherwise
+    // hide a pit's floor.
     const low =
       aspect > 1.2 ? Math.min(0, ...lv.terrain.map((t) => t.maxY)) - UPRIGHT_GROUND * height : Math.min(-GROUND_AT * height, floor);
     return { minX, minY: low, maxX, maxY: Math.max(low + height, top) };
@@ -844,8 +844,8 @@ function followThrow(world: PhysicsWorld, t: Tally): void {
   }
   // Where the projectile first reached the castle's span under its top, or else came down to the
   // ground (a hill's top, a pit's floor), tells short from long. (The first point under the
-  // castle's top on the way down was the throw's top for a low throw: "short by 8 m" for a stone
-  // that came down 1 m short.)
+  // castle's top on the way down would be the throw's top for a low throw: "short by 8 m" for a
+  // stone that came down 1 m short.)
   const path = lastThrow.path;
   let landX = x;
   for (let i = 2; i < path.length; i += 2) {

@@ -385,7 +385,7 @@ const LEVELS: ReadonlyArray<{ name: string; shots: number; build: (b: Builder) =
     // A low wooden keep on a plinth of stone blocks, crowned with a stone battlement, behind a low
     // earth rampart (1.2 m high, 4.2 m in front): a flat throw skims over it into the keep, a lob
     // drops onto it; the second level asks for a little more than the first, not for one power in
-    // twenty at each angle (as a rampart 2 m high 3 m in front did).
+    // twenty at each angle (as a rampart 2 m high 3 m in front would).
     shots: 3,
     build: (b) => {
       const x = 12.5 + b.rng.range(-0.5, 0.5);
@@ -492,7 +492,7 @@ const LEVELS: ReadonlyArray<{ name: string; shots: number; build: (b: Builder) =
     // bridged pair (the keep) stands behind earth banks FORT_BANK m high, one between it and each
     // outer tower (FORT_GAP further out to make room): a tower knocked over falls on a bank, not on
     // the next tower, so no single throw brings half the fortress down (with the towers one pitch
-    // apart one lob at 30 degrees and 80 % power did) and clearing it takes throws at each tower.
+    // apart one lob at 30 degrees and 80 % power would) and clearing it takes throws at each tower.
     shots: 5,
     build: (b) => {
       const x0 = 11 + b.rng.range(-1, 1);

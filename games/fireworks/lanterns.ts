@@ -545,7 +545,7 @@ export function lightFromSparks(world: PhysicsWorld, show: FireworksShow, run: L
 /**
  * How many lanterns of `run` the player sees lit at world time `time` s: those lit at or before
  * `time` (their glow coming up). The page's "Lit n/m" counts these, in step with the lanterns'
- * glow and the "Double!" over a burst that lit two (counted once the glow was full, it said
+ * glow and the "Double!" over a burst that lit two (counted once the glow is full, it would say
  * "Lit 0/4" under a "Double!" and two glowing lanterns).
  */
 export function shownLit(run: LanternRun, time: number): number {
