@@ -257,8 +257,8 @@ function levelLit(): void {
 let clearShownAt = Number.NaN;
 /**
  * Set by a fresh world (a new level, a retry, R): the status row, the card and the action button are
- * written for it with the next frame, not the last frame's lines for the level before (the old
- * level's card stayed up over the new one until a frame had been drawn).
+ * written for it with the next frame, not the last frame's lines for the level before, so the old
+ * level's card never stays up over the new one.
  */
 let freshWorld = false;
 
@@ -616,8 +616,8 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
       .fill({ color: 0xfff3d0 });
   }
   // The flash of a burst: a glow, white at its core and warm at its rim, at the shell's last place that fades in
-  // FLASH_SECONDS, so a burst opens from a bright centre (its first frame was a ring of sparks, all at
-  // one radius, with nothing inside).
+  // FLASH_SECONDS, so a burst opens from a bright centre, not a ring of sparks all at one radius with
+  // nothing inside.
   flashing = 0;
   for (const sprite of flashSprites) sprite.visible = false;
   for (let k = Math.max(0, show.flashCount - FLASHES); k < show.flashCount; k++) {
@@ -724,8 +724,8 @@ function drawCharge(): void {
   }
   if (lanternShow) {
     // Centred on the aim point, where the shell bursts: half an ellipse up to the stars' reach above
-    // it and half down to their (longer, drooping) reach below. One ellipse spanning both was centred
-    // below the aim (46 px at 1280 x 800) and read as a burst placed there.
+    // it and half down to their (longer, drooping) reach below. One ellipse spanning both would be
+    // centred below the aim and read as a burst placed there.
     const reach = sparkReach(LEVELS[run.level]!.shell, s);
     const w = show.params.sky.width;
     const rx = cam.toScreenLength(reach.side * w),
@@ -1241,8 +1241,8 @@ function drawCard(f: StatusFrame): void {
   const wrap = { cx: cam.width / 2, maxWidth: cam.width - 24, wrapWidth: Math.min(520, cam.width - 56) };
   // Low in the sky, just over the big button at the stage's bottom, where it covers the fewest of the
   // lanterns it is about (the lowest such place): a lost level's dark ones, so the player sees which
-  // was missed, and a lit level's every one, its glow the reward (low, it covered a lantern on a
-  // phone). Chosen once for what it says and the screen's size.
+  // was missed, and a lit level's every one, its glow the reward (a fixed low place would cover a
+  // lantern on a phone). Chosen once for what it says and the screen's size.
   const key = `${JSON.stringify(content)} ${cam.width}x${cam.height}`;
   if (key !== cardPlaced.key) {
     card.show(content, { ...wrap, bottom: cam.height - CARD_BOTTOM });
