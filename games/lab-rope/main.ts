@@ -291,8 +291,7 @@ const TAP_REACH_PX = 26;
 /**
  * How far from a rope a swipe still cuts it, CSS px, by pointer: a finger's stroke (about 8 mm wide
  * under the fingertip, on a 3 px cord that swings) cuts a rope it passes within 14 px of; the mouse's
- * within 5 px. (A swipe had to cross the cord's exact line: a flick that stopped a few pixels short
- * left the rope whole.)
+ * within 5 px, so a flick that stops a few pixels short of the cord's exact line still cuts it.
  */
 const SWIPE_REACH_PX = { touch: 14, other: 5 } as const;
 
@@ -491,7 +490,7 @@ banner.anchor.set(0.5);
 renderer.root.addChild(banner);
 /**
  * The stars of the try under the banner: a gold star for each caught, an outlined one (dark fill, a
- * light rim) for each missed, so both read on the blue wall (a '☆' in the banner's dark stroke did not).
+ * light rim) for each missed, so both read on the blue wall (a '☆' in the banner's dark stroke does not).
  */
 const starRow = new Container({ label: 'stars' });
 /** The star row as last shown: [gold, of] ([0, 0] while hidden). */
@@ -582,7 +581,7 @@ const STAR_GLOW = 0.38;
  * The first of BANNER_HEIGHTS (m) at which the banner's box (with the star row under it and the
  * miss card's margin once the level is over) stays clear of every star not caught yet (so the
  * banner never hides one) and, once the level is over, of the basket and the ball (a miss card over
- * them hid why the ball missed); the first height clear of the stars if none is clear of all, the
+ * them would hide why the ball missed); the first height clear of the stars if none is clear of all, the
  * first height if none is clear of the stars.
  */
 function bannerHeight(): number {
