@@ -345,9 +345,9 @@ const touch = isTouchDevice();
 /** A panel label with its key (a phone has no keys: the label alone). */
 const withKey = (label: string, key: string): string => (touch ? label : `${label} (${key})`);
 
-// The panel goes in before the game starts (made after, it narrowed the canvas already drawn and
-// the scene jumped). It sits in the left column under the controls, closed, so the scene has the
-// rest of the width (1060 px at 1280 x 800; a right-hand column left it 735 px, taller than wide);
+// The panel goes in before the game starts (made after, it would narrow the canvas already drawn and
+// the scene jump). It sits in the left column under the controls, closed, so the scene has the
+// rest of the width (1060 px at 1280 x 800; a right-hand column would leave it 735 px, taller than wide);
 // on a phone it is in the menu drawer.
 const panel = createPanel(
   params,
@@ -476,7 +476,7 @@ const GROUND_AT = 0.18;
  * On a screen taller than wide (an upright phone or tablet), where the ground (the lowest surface:
  * a pit's floor) sits: this fraction of the screen's height from the bottom, so the catapult, the
  * flight and the castle use the screen's middle, with the banner and (on a phone) the castle's
- * close-up in the sky over them. At 0.11 the scene sat in the bottom fifth under 70 % of empty sky.
+ * close-up in the sky over them. At 0.11 the scene would sit in the bottom fifth under 70 % of empty sky.
  */
 const UPRIGHT_GROUND = 0.28;
 /** Screens narrower than this (CSS px) get the tighter aim view. */
@@ -733,8 +733,8 @@ app.canvas.addEventListener('pointerdown', (e) => {
   aim.moved = false;
   app.canvas.setPointerCapture(e.pointerId);
   showAimDom();
-  // The aim shows in the next frame even when the GPU is behind (the pacer would skip it): a quick
-  // drag showed no band and no arc at all.
+  // The aim shows in the next frame even when the GPU is behind (the pacer would skip it), so even a
+  // quick drag shows its band and arc.
   game.drawNext();
 });
 /** Sets the pull from the pointer's position in `e` (the drag from where it went down). */
@@ -1009,10 +1009,10 @@ function drawThrow(world: PhysicsWorld): void {
   if (verdictText.text !== lastThrow.verdict) verdictText.text = lastThrow.verdict;
   verdictText.style.fill = lastThrow.good ? 0xffe066 : 0xffffff;
   verdictText.style.fontSize = lastThrow.good ? 34 : app.screen.width < 600 ? 16 : 20;
-  // Wrapped to the screen's width less a margin: on a phone a long hint ran off the left edge.
+  // Wrapped to the screen's width less a margin, so on a phone a long hint stays on the screen.
   verdictText.style.wordWrapWidth = Math.max(120, app.screen.width - 24);
-  // A hit's points shrink away in their last third rather than fade: a faded popup let the confetti
-  // of a cleared level show through it, as if drawn over it. Opaque, it stays over the confetti.
+  // A hit's points shrink away in their last third rather than fade: a faded popup would let the
+  // confetti of a cleared level show through it, as if drawn over it. Opaque, it stays over the confetti.
   verdictText.scale.set(lastThrow.good ? Math.max(0, Math.min(1, 3 * (1 - age / VERDICT_SHOWN))) : 1);
   const half = verdictText.width / 2 + 8;
   verdictText.x = Math.min(Math.max(cam.toScreenX(lastThrow.at[0]), half), app.screen.width - half);
@@ -1066,7 +1066,7 @@ const showNext = (visible: boolean, text?: string): void => {
   showNextButton(visible, text);
   const bar = visible ? pageLayout().stage.querySelector<HTMLElement>('.bp-action') : null;
   if (!bar) return;
-  // Not upright, the strip under the ground is thin and the button at the bottom sat over the wreck:
+  // Not upright, the strip under the ground is thin and the button at the bottom would sit over the wreck:
   // it goes in the sky just under the banner that names it ("the button below"). Upright it stays in
   // the earth under the scene.
   const top = upright() ? '' : `${Math.round(banner.y + banner.height + 14)}px`;
@@ -1454,8 +1454,8 @@ function drawArc(vx: number, vy: number): void {
   );
   placeDots(aimDom.dots, main.length, (i) => main[i] as [number, number, number, number]);
   aimShown.dots = main.length;
-  // Past the first touch, faint and hollow: where the throw was headed (a long throw's preview
-  // stopped at the bank or the tower in front, and the player could not see where it would go).
+  // Past the first touch, faint and hollow: where the throw was headed, so a long throw's preview
+  // does not stop at the bank or the tower in front without showing where the throw would go.
   const [endX, endY] = aimShown.end;
   const ghost: number[][] = [];
   // (None for a throw that comes down on the grass or a pit's floor: it has landed.)

@@ -676,7 +676,7 @@ function stoneTouches(world: PhysicsWorld, lv: Level, x: number, y: number, r: n
     const lx = c * dx + sn * dy,
       ly = -sn * dx + c * dy;
     // The distance from the box (0 inside it) against the radius: a stone passing a corner diagonally
-    // does not touch it (a square test widened by r on both axes stopped the preview short there).
+    // does not touch it (a square test widened by r on both axes would stop the preview short there).
     const ox = Math.max(0, Math.abs(lx) - p.half[0]),
       oy = Math.max(0, Math.abs(ly) - p.half[1]);
     if (ox * ox + oy * oy <= r * r) return true;

@@ -745,7 +745,7 @@ function drawCharge(): void {
   }
   // The fuse ring: pops in over 0.15 s (from twice its size), its track dark, the burnt part gold
   // from the top clockwise, a flickering spark at its head; pulsing white-gold once full. Round the
-  // pointer, or clear of a finger (above it; ./gauge.ts), where the finger hid it.
+  // pointer, or clear of a finger (above it; ./gauge.ts), where the finger would hide it.
   const [gx, gy] = gaugeCentre(pointerX, pointerY, pressTouch, cam.width, cam.height, FUSE_RING + 6, chargeLabel.height + 12);
   const pop = Math.min(1, held / 0.15);
   const R = FUSE_RING * (2 - pop);
@@ -1176,7 +1176,7 @@ function starText(n: number): string {
 
 // ---- The card at a level's end: its stars (or why it was lost) and, after the finale, the show's --------
 
-// Near opaque: at 0.86 a lit lantern and its glow showed through the card on a phone.
+// Near opaque, so no lit lantern and its glow show through the card on a phone (as at 0.86).
 const card = createResultCard(app.stage, { label: 'level-card', bigSize: 48, background: 0x060914, backgroundAlpha: 0.97 });
 /** Room left under the card for the big action button at the stage's bottom, CSS px. */
 const CARD_BOTTOM = 96;
@@ -1309,8 +1309,8 @@ interface StatusFrame {
 /**
  * The lines computed in the last frame, and the frames drawn before it (the pacer's count). They are
  * written once that frame has been drawn: a frame the GPU was too busy for is skipped and the canvas
- * keeps the one before, and the row must not run ahead of the sky (it said "Lit 4/4" while the canvas
- * still showed the shell rising). Where every frame is drawn the row follows one frame behind.
+ * keeps the one before, and the row must not run ahead of the sky (saying "Lit 4/4" while the canvas
+ * still shows the shell rising). Where every frame is drawn the row follows one frame behind.
  */
 let pendingStatus: StatusFrame | null = null;
 let pendingDrawn = -1;

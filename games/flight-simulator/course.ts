@@ -244,7 +244,7 @@ export function crossRing(ring: Ring, a: readonly number[], b: readonly number[]
 /**
  * Seconds added to the course time for each ring missed: enough that a miss shows on the clock and
  * a clean run beats one that skips rings, small enough that a miss early on leaves the run worth
- * flying (with 20 s and a star for each miss, three misses left nothing to play for).
+ * flying (with 20 s and a star for each miss, three misses would leave nothing to play for).
  */
 export const MISS_PENALTY = 10;
 
