@@ -456,8 +456,8 @@ export function rampKey(value: number, direction: number, dt: number, ramp: KeyR
  * The throttle's response to Faster / Slower, fraction of full thrust: a press steps it at once to
  * the next multiple of `step` at least `least` away (28 % goes to 40 %, 35 % to 40 %), so a tap on
  * the phone's button changes the engine by a figure the readout shows (a held button moving it at
- * `rate` per second moved it 3 % in a short tap, or not at all when the press and release came in
- * one frame); held past `hold` s it goes on at `rate` per second.
+ * `rate` per second would move it 3 % in a short tap, or not at all when the press and release come
+ * in one frame); held past `hold` s it goes on at `rate` per second.
  */
 export const THROTTLE_KEY = Object.freeze({ step: 0.1, least: 0.05, hold: 0.35, rate: 0.4 });
 

@@ -829,8 +829,8 @@ const beadMatrix = new Matrix4(),
 /**
  * Lays the guide's beads from `from` (the aircraft, m) through the next ring to the one after it; in
  * the cockpit view from the next ring on only: seen from the aircraft, the beads to the next ring
- * lie on the line of sight to it, and the nearest (5 m across, 50 m off) covered a ring 2 km away
- * (130 m across) whole, so that it showed only as its outline.
+ * lie on the line of sight to it, and the nearest (5 m across, 50 m off) would cover a ring 2 km away
+ * (130 m across) whole, so that it would show only as its outline.
  */
 function drawGuide(from: Vector3): void {
   const i = nextRing(rings);
@@ -979,7 +979,7 @@ function overlay(css: string): HTMLDivElement {
 }
 /**
  * The widest a message over the scene (banner, engine's note, tip) may be: it wraps inside the scene
- * with a 12 px margin each side (the phone's banner ran one line past both edges of the screen).
+ * with a 12 px margin each side, so the phone's banner never runs past the edges of the screen.
  */
 const MESSAGE_WIDTH = 'calc(100% - 24px)';
 const banner = overlay(
@@ -1215,7 +1215,7 @@ function updateBanner(t: number): void {
     if (ev.time <= t && (!last || ev.time > last.time)) last = ev;
   }
   const age = last ? t - last.time : Infinity;
-  // On a phone the banner gives way to a tip the flight waits on (the two covered the top third).
+  // On a phone the banner gives way to a tip the flight waits on (the two would cover the top third).
   if (last && age >= 0 && age < BANNER_LIFE && state.phase === 'flying' && !(compact && holding && tipText)) {
     banner.style.display = 'block';
     const text =
@@ -1262,7 +1262,7 @@ const cockpit = createCockpit(layout.stage, attitudeSize);
 /**
  * Puts "Paused" and the end's button (Fly again, Try again) above the cockpit's panel, whose top is
  * `panelTop` CSS px from the stage's top (0: no panel, they go back to the scene's bottom): low in
- * the scene they sat on the attitude indicator.
+ * the scene they would sit on the attitude indicator.
  */
 function liftOffPanel(panelTop: number): void {
   const lift = panelTop > 0 ? app.canvas.clientHeight - panelTop + PANEL_RIM : 0;
@@ -1343,8 +1343,8 @@ function pointToNextRing(): void {
   if (ringAim.inView) {
     ringAim.text = `ring ${i + 1} · ${distance}`;
     // Above the ring, clear of it (its radius on screen to the halo's outer edge, from a point on it
-    // at the camera's up) and so of the flight-path marker inside it (the label sat 30 px under the
-    // centre, under the marker's crosshair); else below it, beside it or at a corner.
+    // at the camera's up) and so of the flight-path marker inside it (not under the centre, under the
+    // marker's crosshair); else below it, beside it or at a corner.
     rimAt.set(ring.x, ring.y, ring.z).addScaledVector(camUp.set(0, 1, 0).applyQuaternion(app.camera.quaternion), RING_OUTER);
     rimAt.project(app.camera);
     const rPx = Math.hypot(((rimAt.x - ringAt.x) / 2) * w, ((rimAt.y - ringAt.y) / 2) * h);
@@ -1518,7 +1518,7 @@ function lessonTip(): string {
     tipRing = i;
   }
   // The ways are worked out afresh every frame from where the aircraft is and flies now: a tip
-  // kept from when it first showed said "Ring 2 is to the left" with the ring already to the right.
+  // kept from when it first showed could say "Ring 2 is to the left" with the ring already to the right.
   tipWay = wayOf(i);
   // Ring 1's tip is the start's, up while the flight waits; on a phone each tip goes a little after
   // the pilot has acted on it (TIP_LINGER), so it does not cover the sky all the way to its ring.
@@ -1575,7 +1575,7 @@ function showTip(): void {
 /**
  * Whether the next ring's centre lies behind the drawn aircraft on the screen now (chase view; within
  * half the ring's radius of the aircraft's box; tests). The aircraft, nearer, stays solid in front of
- * the ring (faded see-through, the ring showed through it as if in front: a depth error to the eye);
+ * the ring (faded see-through, the ring would show through it as if in front: a depth error to the eye);
  * the ring's outline and label, drawn over the scene, say where it is.
  */
 let ringBehindPlane = false;
@@ -1831,8 +1831,8 @@ let chaseDistance = 0;
 const CHASE_LAG = 0.25;
 /**
  * Where the chase camera sits in the aircraft's frame, m: behind, above. Far enough that the 30 m
- * wing spans about a third of a landscape view (at 30 m behind, 9 up it filled the lower middle and
- * hid the rings below the nose), and 17 degrees above the aircraft's axis so it sits low.
+ * wing spans about a third of a landscape view (at 30 m behind, 9 up it would fill the lower middle
+ * and hide the rings below the nose), and 17 degrees above the aircraft's axis so it sits low.
  */
 const CHASE_OFFSET = [-58, 18] as const;
 /**
@@ -1863,7 +1863,7 @@ function frame(alpha = 1): void {
   const world = shell.world;
   // Everything here is what the frame shows: the camera, the labels and tips over the scene, the
   // HUD. The frame pacer skips drawing while the GPU is behind (often several frames in a row on a
-  // software GPU); the HTML labels placed for a frame the canvas never showed sat 100 px and more
+  // software GPU); HTML labels placed for a frame the canvas never shows would sit 100 px and more
   // from their ring. So a frame that will not be drawn changes nothing but the banner and the tip's
   // words (a ring's pass or miss, and what the next ring asks, are said at once).
   // Paused by the pilot (P, the toolbar's button): the scene dims and says so. A wait for the pilot
@@ -1882,10 +1882,10 @@ function frame(alpha = 1): void {
       ringAim.text = '';
     }
     // The readouts too: every figure over and beside the scene says the same moment (the readout
-    // kept every 6th drawn frame said "rings 0/10" under the banner's "Ring 1 ✓").
+    // kept every 6th drawn frame could say "rings 0/10" under the banner's "Ring 1 ✓").
     updateHud(crashReadings ?? instruments(world));
-    // The warning too (it sits in a fixed place, nothing to project): a loaded machine that drew no
-    // frame between "PULL UP" and the ground never showed it.
+    // The warning too (it sits in a fixed place, nothing to project), so a loaded machine that draws
+    // no frame between "PULL UP" and the ground still shows it.
     showWarning(world.time);
     showTip();
     showThrottleNote();

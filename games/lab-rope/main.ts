@@ -680,7 +680,7 @@ function drawBanner(now: number): void {
   if (game.outcome === 'lost') {
     // Held until a tap or a key (see MISS_TAP_AFTER): the scene dimmed red, the ball ringed, and a
     // small card at the top of the scene (over the beam) with the stars this try caught beside the
-    // text, so the stars, the ball and the basket stay in sight (a card mid-scene covered them).
+    // text, so the stars, the ball and the basket stay in sight (a card mid-scene would cover them).
     const since = now - lostAt;
     const fade = Math.min(1, since / 0.3);
     overlay.rect(0, 0, cam.width, cam.height).fill({ color: 0x5a0b0b, alpha: 0.38 * fade });

@@ -389,9 +389,9 @@ export function createRopeScene(index: number, p: RopeSceneParams, levels: reado
 /**
  * Cuts rope `rope` of a scene at its link `link` (one of `rope.links`) and frees the ball from the
  * piece below the cut: that loose end falls on its own, the ball flies on alone. A loose end left on
- * the ball (up to 2.5 m of rope, a fifth of the ball's mass, whipping and catching on the walls) made
- * where a swipe crossed the rope decide the throw, not when: on level 3 a cut near the pin 1.0 s in
- * fell short of the wall and one near the ball cleared it. Freed, the ball's flight follows from the
+ * the ball (up to 2.5 m of rope, a fifth of the ball's mass, whipping and catching on the walls) would
+ * make where a swipe crossed the rope decide the throw, not when: on level 3 a cut near the pin 1.0 s
+ * in would fall short of the wall and one near the ball clear it. Freed, the ball's flight follows from the
  * time of the cut alone (the same outcome for a cut at a tenth, half and nine tenths of the rope at
  * every time tried, levels 1 to 5; see test/games/lab-rope.test.ts).
  * @throws RangeError (naming cutRope) when `link` is not one of the rope's links.
