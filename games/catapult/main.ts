@@ -1040,7 +1040,7 @@ let shownScore = 0;
  * The readout's rows (and level score) computed in the last frame, and the frames drawn before it
  * (the pacer's count). They are written once that frame has been drawn: a frame the GPU was too
  * busy for is skipped and the canvas keeps the one before, and the readout must not run ahead of the
- * banner (it said "score 50" beside a banner's "Score 0"). Where every frame is drawn the readout
+ * banner (saying "score 50" beside a banner's "Score 0"). Where every frame is drawn the readout
  * follows one frame behind.
  */
 let pendingRows: { score: number; rows: string[] } | null = null;
@@ -1688,8 +1688,8 @@ function drawCloseUp(): void {
           o.visible = was[k]!;
         });
       }
-      // Next to the ground: low in the sky's band (at the band's top it hung under the banner with a
-      // screen of empty sky between it and the castle), high in the earth's (it stays put when the
+      // Next to the ground: low in the sky's band (at the band's top it would hang under the banner
+      // with a screen of empty sky between it and the castle), high in the earth's (it stays put when the
       // card under it goes).
       const bx = Math.round((cam.width - bw) / 2),
         by = Math.round(closeLow ? top : Math.max(top, bottom - bh));

@@ -1488,8 +1488,8 @@ let tipText = '';
 /**
  * The lesson ring the tip is for (-1: none), and which ways it lies from the line flown now
  * (./course.ts ringBearing, ringWay: right or left, higher or lower, and how much), worked out every
- * frame from where the aircraft is and flies, not written per ring (a tip said "higher" while the
- * ring lay to the left).
+ * frame from where the aircraft is and flies, not written per ring (which could say "higher" while
+ * the ring lies to the left).
  */
 let tipRing = -1,
   tipWay: RingWay = { side: 0, up: 0, sideAmount: '', upAmount: '' };

@@ -1373,7 +1373,7 @@ const panel = createPanel(
 const status = createStatusRow({ name: 'challenge' });
 const touch = pageLayout().touch();
 // On a phone the row keeps its height: the goal and the numbers one line each (a longer text ends in
-// an ellipsis), the hint two (a row that grew with a longer hint shrank the stage and moved the view).
+// an ellipsis), the hint two (a row that grew with a longer hint would shrink the stage and move the view).
 if (touch)
   for (const line of [status.goal, status.numbers, status.hint]) {
     const one = line !== status.hint;

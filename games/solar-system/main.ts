@@ -1416,7 +1416,7 @@ function placeTag(i: number, text: string, x: number, y: number, z: number, belo
   let x0 = 0,
     y0 = 0;
   for (let k = 0; k < places.length; k++) {
-    // TAG_MARGIN px clear of the view's edges (an italic first letter 2 px from the edge looked cut).
+    // TAG_MARGIN px clear of the view's edges (an italic first letter 2 px from the edge looks cut).
     const cx = Math.max(TAG_MARGIN, Math.min(w - tw - TAG_MARGIN, places[k]![0]!)),
       cy = Math.max(TAG_MARGIN, Math.min(h - th - TAG_MARGIN, places[k]![1]!));
     let clear = labelFree(cx, cy, cx + tw, cy + th, -1);
@@ -2304,7 +2304,7 @@ function updateStatus(force = false): void {
   // The hint, worked out again (./advice.ts) when what it is for has changed.
   if (hinting) hintText = hint(m) || (phase === 'aim' ? 'Hint: working it out…' : hintText);
   const date = new Date(handles.epoch + world.time * 86_400_000).toISOString().slice(0, 10);
-  // Paused, no days run whatever rate is set: the line says so (it said "11 days a second").
+  // Paused, no days run whatever rate is set: the line says so, not the rate set ("11 days a second").
   const rate = shell.paused ? 0 : shownRate(world.time, currentRate());
   const stars = `Stars ${total} / ${3 * MISSIONS.length}`;
   const atTheWindow = phase === 'aim' && Math.abs(world.time - atWindow) < 1;

@@ -210,7 +210,7 @@ export function createThreeApp(options: ThreeAppOptions = {}): ThreeApp {
     camera.updateProjectionMatrix();
     if (framed !== null) frameBox(camera, controls, framed.min, framed.max, framed.options);
     // A new size clears the canvas: draw the scene again at once, or the page shows a black frame
-    // until the next animation frame (the solar system's stage did when its header grew a line).
+    // until the next animation frame (as when a page's header grows a line).
     renderer.render(scene, camera);
   };
   resize();
