@@ -639,7 +639,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   // In the lantern show, each new burst's front: a bright ring that races out to where its hot stars
   // will light lanterns (`sparkReach` of its scale) over BURST_RING_SECONDS,
   // easing out as the stars slow, and fades; a held burst's ring is wider and brighter, so a big
-  // burst reads as big from its first frames (it opened as a white ball, like a dud).
+  // burst reads as big from its first frames, not as a white ball, like a dud.
   for (let k = lanternShow ? Math.max(0, show.flashCount - FLASHES) : show.flashCount; k < show.flashCount; k++) {
     const f = 4 * (k % FLASHES),
       age = world.time - show.flashes[f + 2]!;

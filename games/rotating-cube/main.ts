@@ -886,7 +886,7 @@ for (const [i, dir] of ['up', 'down', 'left', 'right'].entries()) dpad.buttons[i
 .bp-touchbar.rc-extras button:nth-child(-n + 2) { font-size: 20px; }
 /* On the pivot the turn buttons carry words (Pitch ▲, Roll ⟲): a smaller type that fits their width. */
 .bp-touchbar.rc-pivot button, .bp-touchbar.rc-extras.rc-pivot button:nth-child(-n + 2) { font-size: 14px; }
-/* The touch card, two lines in a smaller type at the stage's foot: it covered the front of the floor. */
+/* The touch card, two lines in a smaller type at the stage's foot, so it leaves the front of the floor in sight. */
 body .bp-touch-hint { font-size: 13px; padding: 6px 10px; bottom: 6px; }
 `;
   document.head.append(style);

@@ -2383,7 +2383,7 @@ function frame(): void {
           }${left <= 0 && handles.controls.moves.length === 0 ? ` · out of swings: ${touch ? 'tap ↻' : 'press R'} to retry` : ''}${swayHint()}`;
     showNext(cleared, `Level ${handles.level + 1} ▶`);
     showHint(hintText(), cleared);
-    // After the first swing a phone's hint is compact: it covered the top of the scene.
+    // After the first swing a phone's hint is compact, so it leaves the top of the scene in sight.
     hint.classList.toggle('compact', touch && SMALL_SCREEN && swingsUsed() > 0 && !cleared);
     drawPlan();
     readout.textContent = params.debug
