@@ -146,7 +146,7 @@ const WAIT_RATE = 40;
 /**
  * Held Wait speeds up with the days it has run: its rate grows by WAIT_RATE's worth every WAIT_RAMP
  * days waited, up to WAIT_MAX_GAIN times it. A tap nudges by days; a long hold crosses a year in a
- * few seconds (at a constant rate Venus's 300 days took 30 s where frames come slowly).
+ * few seconds (at a constant rate Venus's 300 days would take 30 s where frames come slowly).
  */
 const WAIT_RAMP = 20;
 const WAIT_MAX_GAIN = 4;
@@ -248,9 +248,9 @@ const TICK = 1 / 60;
 /**
  * How long a flight's time holds still after a burn, ms, and the share of its rate it runs at then
  * (none): the hint's "Press ↓ 4 times now" is worked out for burns all made now, and a player's
- * taps come a fraction of a second apart. With time running on (at a fifth of the rate it did) the
- * later burns did less than the hint said and it asked for more once the fuel was gone; held still,
- * taps less than BURN_SLOW_MS apart all act at the same moment of the flight.
+ * taps come a fraction of a second apart. With time running on, the later burns would do less than
+ * the hint said and it would ask for more once the fuel was gone; held still, taps less than
+ * BURN_SLOW_MS apart all act at the same moment of the flight, as the hint assumes.
  */
 const BURN_SLOW_MS = 800;
 const BURN_SLOW = 0;
@@ -434,7 +434,7 @@ function nextWindowDays(): number {
   const sense = Math.sign(ex * earthHelio[5]! - ez * earthHelio[3]!) || 1;
   heliocentricState(world, handles, handles.bodies[m.target], state6);
   // Each orbit's semi-major axis (vis-viva): its mean motion is the planet's average pace (the
-  // distance now gave the Earth's pace in January 2.6 % fast, the window 20 days late).
+  // distance now would give the Earth's pace in January 2.6 % fast, the window 20 days late).
   const semiMajor = (st: ArrayLike<number>): number =>
     1 / (2 / Math.hypot(st[0]!, st[1]!, st[2]!) - (st[3]! ** 2 + st[4]! ** 2 + st[5]! ** 2) / mu);
   const rE = semiMajor(earthHelio),
@@ -738,8 +738,8 @@ const game = await startThreeGame({
   createWorld,
   step: stepWorld,
   // The few controls a mission needs; the rest (time rate, views, distances, sizes, Enter, the
-  // camera) are named with their keys in the settings panel, whose note lists them (16 lines here
-  // were more than a new player could take in). On a phone the lines naming on-screen buttons stay
+  // camera) are named with their keys in the settings panel, whose note lists them (all 16 lines
+  // here would be more than a new player can take in). On a phone the lines naming on-screen buttons stay
   // in the menu's legend, out of the card over the diagram (the kit leaves out gestures ending in "button(s)").
   controls: [
     { keys: '← →', action: 'turn the launch arrow; in flight, burn in / out', touch: 'bottom ↺ ↻ buttons' },
@@ -1369,8 +1369,8 @@ const dots = Object.fromEntries(
 
 /**
  * The forecast's two marks named on the map while aiming: the ring where the target will be when the
- * probe comes closest ("Mars at arrival") and the probe's place then ("probe then"). Without them a
- * path running through the target's ring of now read as a hit.
+ * probe comes closest ("Mars at arrival") and the probe's place then ("probe then"), so a path
+ * running through the target's ring of now does not read as a hit.
  */
 const forecastTags = (['target-then', 'probe-then'] as const).map((name) => {
   const el = document.createElement('div');
@@ -1389,8 +1389,8 @@ const tagBoxes: number[] = [];
  * Shows forecast tag `i` (0 the target then, 1 the probe then) with `text` by scene point (x, y, z):
  * centred `below` px under it (over it when negative) where that is clear, else over (under) it, to
  * its right or to its left, the first place that keeps clear of the other tag, the dots and the
- * names as last placed; each place moved inside the view (on a phone "Mars at arrival" was cut off
- * at the left edge, and "probe then" sat on other names). Hides it when `text` is ''. `frame`
+ * names as last placed; each place moved inside the view, so on a phone no tag is cut off at an
+ * edge or sits on other names. Hides it when `text` is ''. `frame`
  * clears `tagBoxes` before the tags are placed.
  */
 function placeTag(i: number, text: string, x: number, y: number, z: number, below: number): void {
@@ -1416,7 +1416,7 @@ function placeTag(i: number, text: string, x: number, y: number, z: number, belo
   let x0 = 0,
     y0 = 0;
   for (let k = 0; k < places.length; k++) {
-    // TAG_MARGIN px clear of the view's edges (an italic first letter 2 px from the edge looked cut).
+    // TAG_MARGIN px clear of the view's edges (an italic first letter 2 px from the edge looks cut).
     const cx = Math.max(TAG_MARGIN, Math.min(w - tw - TAG_MARGIN, places[k]![0]!)),
       cy = Math.max(TAG_MARGIN, Math.min(h - th - TAG_MARGIN, places[k]![1]!));
     let clear = labelFree(cx, cy, cx + tw, cy + th, -1);
@@ -1932,16 +1932,16 @@ style.textContent = `
 .ss-pad button[data-pad="wait"], .ss-pad button[data-pad="next"] { order: 6; }
 .ss-pad button[data-pad="hint"] { order: 7; }
 /* A 390 px phone: every phase's buttons (seven at most) on one row of equal cells, each at least
-   44 x 44 px; a longer label ("+ fast", "Try again") breaks inside its button, not the row (the
-   flight's buttons took two rows, Hint alone on the second, and Wait moved under the finger). */
+   44 x 44 px; a longer label ("+ fast", "Try again") breaks inside its button, not the row, so the
+   buttons never wrap to a second row and move under the finger. */
 @media (max-width: 440px) {
-  /* The brief shows on a phone too (it was hidden: the first mission's was never seen), two lines kept. */
+  /* The brief shows on a phone too, so the first mission's is seen, two lines kept. */
   .ss-status .ss-brief { min-height: 2.8em; }
   .bp-touchbar.ss-pad { display: grid; grid-auto-flow: column; grid-auto-columns: auto; justify-content: stretch; gap: 4px; }
   .bp-touchbar.ss-pad button { min-width: 44px; padding: 0 3px; font-size: 14px; white-space: normal; line-height: 1.05; }
   .bp-touchbar.ss-pad button.ss-go { min-width: 44px; }
   .ss-status .ss-line { min-height: 2.8em; }
-  /* The hint takes the brief's two lines (it was laid over the top of the map, on the planets): the
+  /* The hint takes the brief's two lines (not laid over the top of the map, on the planets): the
      stage keeps its height while aiming. */
   .ss-status .ss-hint { min-height: 2.8em; }
   .ss-status .ss-hint:empty { display: none; }
@@ -2304,7 +2304,7 @@ function updateStatus(force = false): void {
   // The hint, worked out again (./advice.ts) when what it is for has changed.
   if (hinting) hintText = hint(m) || (phase === 'aim' ? 'Hint: working it out…' : hintText);
   const date = new Date(handles.epoch + world.time * 86_400_000).toISOString().slice(0, 10);
-  // Paused, no days run whatever rate is set: the line says so (it said "11 days a second").
+  // Paused, no days run whatever rate is set: the line says so, not the rate set ("11 days a second").
   const rate = shell.paused ? 0 : shownRate(world.time, currentRate());
   const stars = `Stars ${total} / ${3 * MISSIONS.length}`;
   const atTheWindow = phase === 'aim' && Math.abs(world.time - atWindow) < 1;
