@@ -138,10 +138,10 @@ const CSS = `
   color: #c3cedf; font-size: 18px; }
 `;
 
-/** The text of a line, or null for a Node. */
+/** The text of a line, or null for a Node (told by its nodeType: an <a> has a `text` too). */
 function lineText(line: string | ResultCardLine | Node): string | null {
   if (typeof line === 'string') return line;
-  return typeof (line as ResultCardLine).text === 'string' ? (line as ResultCardLine).text : null;
+  return typeof (line as Node).nodeType === 'number' ? null : (line as ResultCardLine).text;
 }
 
 /** Checks `content`, throwing an error that names `show` and the field. */
