@@ -111,7 +111,7 @@ export interface DomResultCard {
 const STYLE_ID = 'bp-result-style';
 const CSS = `
 .bp-result { position: absolute; left: 50%; top: 50%; transform: translate(-50%, -50%); z-index: 6; box-sizing: border-box;
-  width: max-content; max-width: calc(100% - 24px); padding: 14px 18px 14px; border-radius: 14px; text-align: center;
+  width: max-content; max-width: calc(100% - 24px); padding: 14px 16px 12px; border-radius: 14px; text-align: center;
   background: rgb(10, 14, 24); border: 2px solid var(--bp-result-accent); color: #e8ecf4;
   font: 500 15px/1.4 system-ui, sans-serif; box-shadow: 0 8px 28px rgba(0, 0, 0, 0.55); }
 .bp-result[hidden] { display: none; }
@@ -127,10 +127,10 @@ const CSS = `
 .bp-result-big { font-weight: 800; font-size: clamp(22px, 7vw, 36px); line-height: 1.2; color: #ffd166; text-shadow: 0 2px 0 #3a1a02; margin: 2px 0 4px; }
 .bp-result-line { color: #c8d0dc; font-size: 14px; }
 .bp-result-line.bp-strong { color: #ffffff; font-size: 19px; font-weight: 700; }
-.bp-result-buttons { display: flex; flex-wrap: wrap; gap: 8px 10px; justify-content: center; margin-top: 10px; }
+.bp-result-buttons { display: flex; flex-wrap: wrap; gap: 8px; justify-content: center; margin-top: 10px; }
 .bp-result-buttons:empty { display: none; }
-.bp-result button { pointer-events: auto; min-width: 44px; min-height: 44px; padding: 6px 16px; border-radius: 10px; cursor: pointer;
-  font: 700 16px system-ui, sans-serif; border: 2px solid #8fa3c4; background: #1d2738; color: #fff; white-space: nowrap; }
+.bp-result button { pointer-events: auto; min-width: 44px; min-height: 44px; padding: 6px 12px; border-radius: 10px; cursor: pointer;
+  font: 600 15px system-ui, sans-serif; border: 1px solid #8fa3c4; background: #1d2738; color: #fff; white-space: nowrap; }
 .bp-result button.bp-primary { background: var(--bp-result-primary); border-color: var(--bp-result-primary-border); color: var(--bp-result-primary-text); }
 .bp-result button:focus-visible { outline: 3px solid #9fd3ff; outline-offset: 2px; }
 .bp-result button kbd { font: 600 12px system-ui, sans-serif; opacity: 0.8; margin-left: 6px; }
