@@ -51,12 +51,12 @@ import {
   createActionButton,
   createButtonBar,
   createDomPauseOverlay,
+  createDomResultCard,
   createPanel,
   createStick,
   flagParam,
   getSound,
   numberParam,
-  onButtonPress,
   pageLayout,
   seedParam,
 } from '@bitphysics/game-kit';
@@ -995,10 +995,15 @@ const warningEl = overlay(
   `left: 50%; top: ${compact ? 6 : 8}px; transform: translate(-50%, 0px); z-index: 8; padding: 4px 16px; border-radius: 10px; background: rgba(120, 10, 10, 0.92); color: #fff; font: 800 22px system-ui, sans-serif; letter-spacing: 2px; white-space: nowrap; display: none;`,
 );
 warningEl.dataset.hud = 'warning';
-const endCard = overlay(
-  'left: 50%; top: 28%; width: min(88%, 420px); box-sizing: border-box; padding: 14px 18px; border-radius: 14px; background: rgba(8, 12, 20, 0.86); color: #eef3f8; font: 16px/1.45 system-ui, sans-serif; text-align: center; display: none;',
-);
-endCard.dataset.hud = 'end';
+/** The end card (game-kit's result card): the finish screen, or what the crash hit. Drags outside its buttons still reach the scene. */
+const endCard = createDomResultCard(layout.stage, {
+  name: 'end',
+  top: '28%',
+  width: 'min(88%, 420px)',
+  passThrough: true,
+  titleSize: 26,
+  lostColour: '#ff6b5a',
+});
 const showAgain = createActionButton('Fly again ▶', () => shell.reset());
 /** The pause overlay (game-kit's, over the stage): a tap on it resumes. */
 const pauseOverlay = createDomPauseOverlay(layout.stage, {
@@ -1113,51 +1118,33 @@ function updateHud(i: ReturnType<typeof instruments>): void {
   if (card === shownCard) return;
   shownCard = card;
   if (card === '') {
-    endCard.style.display = 'none';
+    endCard.hide();
     showAgain(false);
   } else if (state.phase === 'done') {
     showFinish();
   } else {
     // Crashed.
     const best = bestOf();
-    endCard.style.display = 'block';
-    endCard.replaceChildren();
-    const title = document.createElement('div');
-    title.style.cssText = 'font: 900 32px system-ui, sans-serif; color: #ff6b5a; letter-spacing: 1px;';
-    title.textContent = 'Crashed!';
-    endCard.style.border = '2px solid #ff6b5a';
-    const line = document.createElement('div');
-    line.textContent = `You hit the ${crashInto} at ${(crashReadings?.speed ?? 0).toFixed(0)} m/s · ${state.score} of ${total} rings.`;
-    const bestLine = document.createElement('div');
-    bestLine.style.cssText = 'color: #c7d3e0; font-size: 14px;';
-    bestLine.textContent = best
-      ? `Best: ${best.passed} of ${total} rings in ${clock(best.time)}`
-      : // A phone's readout gives only the height above the ground, not the sea-level "alt".
-        compact
-        ? 'Watch the height above ground: the hills reach 700 m.'
-        : 'Watch the height above ground: alt counts from sea level, and the hills reach 700 m.';
-    endCard.append(title, line, bestLine);
+    endCard.show({
+      title: 'Crashed!',
+      lost: true,
+      lines: [
+        {
+          text: `You hit the ${crashInto} at ${(crashReadings?.speed ?? 0).toFixed(0)} m/s · ${state.score} of ${total} rings.`,
+          strong: true,
+        },
+        best
+          ? `Best: ${best.passed} of ${total} rings in ${clock(best.time)}`
+          : // A phone's readout gives only the height above the ground, not the sea-level "alt".
+            compact
+            ? 'Watch the height above ground: the hills reach 700 m.'
+            : 'Watch the height above ground: alt counts from sea level, and the hills reach 700 m.',
+      ],
+    });
     showAgain(true, 'Try again ↺');
   }
 }
 
-/**
- * The finish card's buttons (./finish.ts): Retry flies this course again, Next course the next seed's.
- * They take touches and clicks (the card itself lets them through to the scene).
- */
-const finishButtons = {
-  retry: finishButton(() => shell.reset()),
-  next: finishButton(() => nextCourse()),
-};
-/** A button for the finish card, running `action` on a press (game-kit onButtonPress: a tap on a busy page still counts). */
-function finishButton(action: () => void): HTMLButtonElement {
-  const b = document.createElement('button');
-  b.type = 'button';
-  b.style.cssText =
-    'pointer-events: auto; min-width: 44px; min-height: 44px; margin: 10px 6px 0; padding: 8px 16px; border-radius: 10px; border: 2px solid #ffd166; background: #1d2a3c; color: #fff; font: 700 17px system-ui, sans-serif; cursor: pointer;';
-  onButtonPress(b, action);
-  return b;
-}
 /** Flies the next course (./finish.ts nextSeed): a new seed, the panel's slider following. */
 function nextCourse(): void {
   params.seed = nextSeed(params.seed);
@@ -1176,33 +1163,20 @@ function showFinish(): void {
     touch: touchFirst,
   });
   showAgain(false);
-  endCard.style.display = 'block';
-  endCard.style.border = '2px solid #ffd166';
-  const title = document.createElement('div');
-  title.style.cssText = 'font: 900 26px system-ui, sans-serif; color: #ffd166;';
-  title.textContent = card.title;
-  const result = document.createElement('div');
-  result.style.cssText = 'font: 700 19px system-ui, sans-serif; margin-top: 2px;';
-  result.textContent = card.result;
-  const lines = [card.detail, card.best].filter(Boolean).map((text) => {
-    const line = document.createElement('div');
-    line.style.cssText = 'color: #c7d3e0; font-size: 14px;';
-    line.textContent = text;
-    return line;
+  // Retry is R (the shell's reset) as well; Next course is Enter, which the card listens for while it shows.
+  const press = { retry: () => shell.reset(), next: () => nextCourse() };
+  endCard.show({
+    title: card.title,
+    lines: [{ text: card.result, strong: true }, card.detail, card.best],
+    buttons: card.actions.map(({ action, label }) => ({
+      label,
+      action,
+      primary: action === 'next',
+      key: action === 'next' ? 'Enter' : undefined,
+      onPress: press[action],
+    })),
   });
-  const row = document.createElement('div');
-  for (const { action, label } of card.actions) {
-    const b = finishButtons[action];
-    b.textContent = label;
-    b.dataset.finish = action;
-    row.append(b);
-  }
-  endCard.replaceChildren(title, result, ...lines, row);
 }
-// Enter on the finish screen flies the next course (R, the shell's reset, flies this one again).
-addEventListener('keydown', (e) => {
-  if (e.key === 'Enter' && !e.repeat && shellReady && state.phase === 'done') nextCourse();
-});
 
 /** Shows the newest event due in the banner for BANNER_LIFE s, and the red glow of a miss. */
 function updateBanner(t: number): void {

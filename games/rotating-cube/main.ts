@@ -34,13 +34,14 @@
  * (to-go.ts). The round's clock runs only while the cube is still (scene.ts `PadChallenge`). The lit
  * pad's rim lights while the cube's centre is near enough to count (scene.ts PAD_GRACE); resting there
  * with the wrong face up (or slid on) the pop says why it does not count. A round's end shows a banner
- * with the result, Next (Enter) and Retry (R) (win-banner.ts, round-end.ts).
+ * with the result, Next (Enter) and Retry (R) (game-kit's createDomResultCard, round-end.ts).
  * URL: ?mode=room|cube|flip (default room), ?spin=rad/s (flip), ?seed=N (the same pad layout every run).
  */
 
 import {
   choiceParam,
   createButtonBar,
+  createDomResultCard,
   createPanel,
   createStatusRow,
   forEachImpact,
@@ -82,7 +83,7 @@ import {
 } from 'three';
 import { cubeControls, TAP_SLOP, touchPress } from './controls';
 import { bedSnap } from './roll-puzzle';
-import { roundEnd, starText } from './round-end';
+import { type RoundEndContent, roundEnd, starText } from './round-end';
 import {
   buildRotatingCube,
   CELL_REACH,
@@ -122,7 +123,6 @@ import {
 } from './scene';
 import { SPIN_HOLD, SPIN_RATE, SPIN_STAR_TIMES, SPIN_TARGETS, SPIN_TOLERANCE, SpinChallenge, spinTargets } from './spin-challenge';
 import { ToGoMeter } from './to-go';
-import { createWinBanner } from './win-banner';
 
 /** A mouse press that moves more than this, CSS px, is a camera drag, not a click (a finger: controls.ts TAP_SLOP). */
 const CLICK_SLOP = 5;
@@ -1385,12 +1385,25 @@ const stars = starText;
 
 // ---- The round's end: a banner with the result, Next (Enter) and Retry (R, the game's reset) --------
 
-const banner = createWinBanner(
-  app.canvas.parentElement ?? document.body,
-  () => nextRound(),
-  () => shell.reset(),
-  touch,
-);
+// The banner lets a drag outside its buttons through, so the scene behind it still turns.
+const banner = createDomResultCard(app.canvas.parentElement ?? document.body, {
+  name: 'win-banner',
+  passThrough: true,
+  titleColour: '#ffffff',
+});
+/** Shows the round's end `end` (round-end.ts) in the banner: Retry (R, the game's reset) and Next (Enter). */
+function showBanner(end: RoundEndContent): void {
+  banner.show({
+    title: end.title,
+    big: end.big,
+    lines: [end.detail],
+    lost: !end.won,
+    buttons: [
+      { label: end.retry, keyHint: touch ? undefined : 'R', action: 'retry', onPress: () => shell.reset() },
+      { label: end.next, keyHint: touch ? undefined : 'Enter', key: 'Enter', action: 'next', primary: true, onPress: () => nextRound() },
+    ],
+  });
+}
 shell.onWorldChange(() => banner.hide());
 /** How long the banner waits after the round's end, ms: the last pad's chime, burst and pop come first. */
 const BANNER_DELAY_MS = 1000;
@@ -1414,7 +1427,7 @@ function updateBanner(): void {
     return;
   }
   if (overSeenAt < 0) overSeenAt = now;
-  if (now - overSeenAt >= BANNER_DELAY_MS) banner.show(end);
+  if (now - overSeenAt >= BANNER_DELAY_MS) showBanner(end);
 }
 
 /**

@@ -48,12 +48,15 @@
 import {
   choiceParam,
   createButtonBar,
+  createDomResultCard,
   createPanel,
+  type DomResultCardContent,
   flagParam,
   getSound,
   numberParam,
-  onButtonPress,
   pageLayout,
+  type ResultCardButton,
+  type ResultCardLine,
 } from '@bitphysics/game-kit';
 import { startThreeGame } from '@bitphysics/game-kit/three';
 import {
@@ -2361,18 +2364,9 @@ arrivalBanner.dataset.hud = 'arrival-banner';
 arrivalBanner.className = 'ss-arrival';
 arrivalBanner.hidden = true;
 labelLayer.append(arrivalBanner);
+// The result card is game-kit's; these are the styles of the solar system's own lines in it.
 const cardStyle = document.createElement('style');
 cardStyle.textContent = `
-.ss-card { position: absolute; left: 50%; top: 50%; transform: translate(-50%, -50%); z-index: 6; width: min(380px, calc(100% - 24px));
-  box-sizing: border-box; padding: 14px 16px 12px; border-radius: 14px; background: rgb(10, 14, 24); border: 1px solid #4a5a78;
-  color: #e8ecf1; font: 14px/1.45 system-ui, sans-serif; text-align: center; box-shadow: 0 8px 30px rgba(0, 0, 0, 0.6); }
-.ss-card[hidden] { display: none; }
-.ss-card h2 { margin: 0 0 2px; font-size: 20px; color: #ffe066; }
-.ss-card.bad h2 { color: #ffb4a8; }
-.ss-card .ss-card-stars { font-size: 34px; line-height: 1.1; color: #ffd166; letter-spacing: 4px; }
-.ss-card .ss-card-stars span { display: inline-block; animation: ss-pop 0.35s ease-out backwards; }
-.ss-card .ss-card-stars span.off { color: #8391a8; }
-@keyframes ss-pop { from { transform: scale(0.2); opacity: 0; } }
 .ss-card .ss-card-score { font-size: 22px; font-weight: 700; color: #ffffff; margin: 4px 0 0; }
 .ss-card .ss-card-record { color: #7ee787; font-weight: 700; }
 .ss-card .ss-card-small { color: #c3cedf; font-size: 13px; }
@@ -2382,22 +2376,20 @@ cardStyle.textContent = `
 .ss-card .ss-card-map span { padding: 1px 6px; border-radius: 6px; background: #1a2336; color: #d6deea; font-size: 12px; border: 1px solid #2c3a55; }
 .ss-card .ss-card-map span.now { border-color: #ffe066; color: #ffe066; }
 .ss-card .ss-card-map i { font-style: normal; color: #ffd166; }
-.ss-card .ss-card-next { color: #9fd3ff; font-size: 13px; margin: 4px 0 8px; }
-.ss-card .ss-card-buttons { display: flex; gap: 8px; justify-content: center; }
-.ss-card button { min-height: 44px; min-width: 44px; padding: 0 14px; border-radius: 10px; border: 1px solid #6b7c99; background: #1c2638;
-  color: #ffffff; font: 600 15px system-ui, sans-serif; cursor: pointer; white-space: nowrap; }
-.ss-card button.ss-go { background: #1f7a3a; border-color: #7ee2a0; }
-.ss-card button.ss-card-close { position: absolute; right: 6px; top: 6px; min-height: 32px; min-width: 32px; padding: 0; border: none; background: none; color: #c3cedf; }
-.ss-card kbd { font: 12px system-ui, sans-serif; color: #c3cedf; }
+.ss-card .ss-card-next { color: #9fd3ff; font-size: 13px; margin: 4px 0 0; }
 `;
 document.head.append(cardStyle);
-const card = document.createElement('section');
-card.className = 'ss-card';
-card.dataset.hud = 'result-card';
-card.setAttribute('role', 'dialog');
-card.setAttribute('aria-label', 'flight result');
-card.hidden = true;
-pageLayout().stage.append(card);
+/** The result card (game-kit's): its ✕ hides it to see the map; Enter and T are the game's keys. */
+const card = createDomResultCard(pageLayout().stage, {
+  name: 'result-card',
+  className: 'ss-card',
+  ariaLabel: 'flight result',
+  width: 'min(380px, calc(100% - 24px))',
+  accent: '#ffe066',
+  lostColour: '#ffb4a8',
+  primaryColours: { background: '#1f7a3a', text: '#ffffff', border: '#7ee2a0' },
+  close: { ariaLabel: 'hide the result to see the map', onClose: () => hideCard() },
+});
 let cardTimer = 0;
 
 /** A new element of `tag` with class `cls` and text `text` in `parent`. */
@@ -2413,7 +2405,7 @@ function put(parent: HTMLElement, tag: string, cls: string, text = ''): HTMLElem
 function hideCard(): void {
   window.clearTimeout(cardTimer);
   arrivalBanner.hidden = true;
-  card.hidden = true;
+  card.hide();
 }
 
 /**
@@ -2448,38 +2440,24 @@ function missAdvice(f: Flight): string {
  */
 function showCard(f: Flight): void {
   hideCard();
-  card.replaceChildren();
   const m = f.mission;
   const won = f.state === 'arrived' && lastResult;
-  card.classList.toggle('bad', !won);
-  const close = put(card, 'button', 'ss-card-close', '✕');
-  close.setAttribute('aria-label', 'hide the result to see the map');
-  onButtonPress(close, () => hideCard());
-  const buttons = document.createElement('div');
-  buttons.className = 'ss-card-buttons';
+  const lines: (string | ResultCardLine | Node)[] = [];
+  const small = (text: string): ResultCardLine => ({ text, className: 'ss-card-small' });
+  const buttons: ResultCardButton[] = [];
   const button = (label: string, name: string, go: boolean, act: () => void): void => {
-    const b = put(buttons, 'button', go ? 'ss-go' : '', label);
-    b.setAttribute('aria-label', name);
-    b.dataset.card = go ? 'go' : 'retry';
-    onButtonPress(b, act);
+    buttons.push({ label, ariaLabel: name, action: go ? 'go' : 'retry', primary: go, onPress: act });
   };
   if (won) {
     const r = lastResult!;
-    put(card, 'h2', '', `${m.target} reached!`);
-    const stars = put(card, 'div', 'ss-card-stars');
-    for (let i = 0; i < 3; i++) {
-      // No delay: the arrival banner has already popped the stars in one by one; a delayed
-      // (invisible) star here read as an empty row.
-      put(stars, 'span', i < r.stars ? '' : 'off', i < r.stars ? '★' : '☆');
-    }
-    put(card, 'div', 'ss-card-score', `${r.score.total} points`);
-    put(
-      card,
-      'div',
-      r.record ? 'ss-card-record' : 'ss-card-small',
-      r.record ? (r.before > 0 ? `New best! (was ${r.before})` : 'First arrival!') : `Best ${bestScore[missionIndex]}`,
+    lines.push({ text: `${r.score.total} points`, className: 'ss-card-score' });
+    lines.push(
+      r.record
+        ? { text: r.before > 0 ? `New best! (was ${r.before})` : 'First arrival!', className: 'ss-card-record' }
+        : small(`Best ${bestScore[missionIndex]}`),
     );
-    const parts = put(card, 'div', 'ss-card-parts');
+    const parts = document.createElement('div');
+    parts.className = 'ss-card-parts';
     const spent = f.aim.speed + f.fuelUsed;
     put(parts, 'span', '', `Speed spent ${spent.toFixed(2)} km/s${f.fuelUsed > 0 ? ` (${f.fuelUsed.toFixed(2)} in burns)` : ''}`);
     put(parts, 'b', '', `${r.score.budget}`);
@@ -2487,53 +2465,53 @@ function showCard(f: Flight): void {
     put(parts, 'b', '', `${r.score.time}`);
     put(parts, 'span', '', launches <= 1 ? 'Arrived at the first launch' : `Arrived at launch ${launches}`);
     put(parts, 'b', '', `${r.score.tries}`);
-    put(
-      card,
-      'div',
-      'ss-card-small',
-      r.stars < 3
-        ? `★★★ needs ${m.stars3} km/s or less in all: hold Wait for a cheaper moment, then aim again.`
-        : 'Fewer km/s or a quicker flight scores more: a better moment may be cheaper.',
+    lines.push(
+      parts,
+      small(
+        r.stars < 3
+          ? `★★★ needs ${m.stars3} km/s or less in all: hold Wait for a cheaper moment, then aim again.`
+          : 'Fewer km/s or a quicker flight scores more: a better moment may be cheaper.',
+      ),
     );
   } else {
-    put(card, 'h2', '', f.state === 'sun' ? 'The probe fell into the Sun' : `Missed ${m.target}`);
-    put(card, 'div', 'ss-card-small', missAdvice(f));
-    put(
-      card,
-      'div',
-      'ss-card-small',
-      verdictShown()
-        ? `Stuck? ${named('Press H', 'Tap Hint')} for what to change.`
-        : `From now on the map shows where ${m.target} will be when the probe comes closest, and ${named('H', 'Hint')} says what to change.`,
+    lines.push(
+      small(missAdvice(f)),
+      small(
+        verdictShown()
+          ? `Stuck? ${named('Press H', 'Tap Hint')} for what to change.`
+          : `From now on the map shows where ${m.target} will be when the probe comes closest, and ${named('H', 'Hint')} says what to change.`,
+      ),
     );
   }
   const sum = bestScore.reduce((a, b) => a + b, 0);
   if (sum > 0)
-    put(
-      card,
-      'div',
-      'ss-card-small',
-      `All missions: ${best.reduce((a, b) => a + b, 0)} of ${3 * MISSIONS.length} stars · best scores ${sum} in all`,
-    );
-  const map = put(card, 'div', 'ss-card-map');
+    lines.push(small(`All missions: ${best.reduce((a, b) => a + b, 0)} of ${3 * MISSIONS.length} stars · best scores ${sum} in all`));
+  const map = document.createElement('div');
+  map.className = 'ss-card-map';
   MISSIONS.forEach((x, i) => {
     const chip = put(map, 'span', i === missionIndex ? 'now' : '', `${i + 1} ${x.target} `);
     put(chip, 'i', '', best[i]! > 0 ? '★'.repeat(best[i]!) : '–');
   });
+  lines.push(map);
   if (won) {
     const next = MISSIONS[(missionIndex + 1) % MISSIONS.length]!;
-    put(
-      card,
-      'div',
-      'ss-card-next',
-      missionIndex + 1 < MISSIONS.length
-        ? `Next: ${next.target}. ${next.brief}`
-        : `All seven flown: ${best.reduce((a, b) => a + b, 0)} of ${3 * MISSIONS.length} stars. Next: Mars again, to beat your scores.`,
-    );
+    lines.push({
+      text:
+        missionIndex + 1 < MISSIONS.length
+          ? `Next: ${next.target}. ${next.brief}`
+          : `All seven flown: ${best.reduce((a, b) => a + b, 0)} of ${3 * MISSIONS.length} stars. Next: Mars again, to beat your scores.`,
+      className: 'ss-card-next',
+    });
     button(named('Try again (T)', 'Try again'), 'try again from the launch (T)', false, () => retry());
     button(named('Next mission (Enter)', 'Next mission'), 'next mission (Enter)', true, () => advance());
   } else button(named('Try again (Enter)', 'Try again'), 'try again from the launch (Enter)', true, () => retry());
-  card.append(buttons);
+  const content: DomResultCardContent = {
+    title: won ? `${m.target} reached!` : f.state === 'sun' ? 'The probe fell into the Sun' : `Missed ${m.target}`,
+    stars: won ? { earned: lastResult!.stars, outOf: 3 } : undefined,
+    lost: !won,
+    lines,
+    buttons,
+  };
   const ended = f;
   // An arrival gets its moment: the flash at the planet, then the stars one by one over the scene.
   if (won && lastResult) {
@@ -2550,7 +2528,7 @@ function showCard(f: Flight): void {
   cardTimer = window.setTimeout(
     () => {
       arrivalBanner.hidden = true;
-      if (phase === 'done' && flight === ended) card.hidden = false;
+      if (phase === 'done' && flight === ended) card.show(content);
     },
     won ? ARRIVAL_CARD_DELAY_MS : CARD_DELAY_MS,
   );
