@@ -40,7 +40,7 @@ import { SUBMARINE, SUBMARINE_NEUTRAL_FILL, type SubmarineHandles, seabedHeight,
 import { Graphics, Text } from 'pixi.js';
 import { BEACON_CATCH, beaconLabel, beaconName, catchesBeacon, chooseBeacon, layCourse, seabedBetween } from './beacons';
 import { drawBoat, HEADLIGHT, inHeadlight } from './boat-drawing';
-import { createHelmState, HELM, type HelmInput, keyHeaveShare, steer } from './helm';
+import { createHelmState, HELM, type HelmInput, keyHeaveShare, NO_INPUT, steer } from './helm';
 import {
   hullDistance,
   layMines,
@@ -388,8 +388,9 @@ let lastVertical = 0;
 let lastPing = 0;
 
 function stepWorld(world: PhysicsWorld): void {
-  // The seabed stops a dive until Dive is let go (./seabed.ts).
-  const input = seabedInput(state, heldInput(world.time));
+  // The seabed stops a dive until Dive is let go (./seabed.ts). After the end (won or sunk) the
+  // controls are let go: the boat glides to a stop on its order, whatever keys are still held.
+  const input = state.over ? NO_INPUT : seabedInput(state, heldInput(world.time));
   const vertical = input.dive === input.rise ? 0 : input.dive ? -1 : 1;
   if (vertical !== 0 && vertical !== lastVertical) sound.launch(0.25);
   lastVertical = vertical;

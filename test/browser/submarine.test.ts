@@ -290,11 +290,21 @@ async function diveOnPhone(g: GamePage): Promise<void> {
   expect(r.deep).toBeLessThan(3);
   // The gauges in the status row: their longest lines (a deep, fast, wrecked boat) still fit the
   // 390 px width, nothing is cut off, and the beacon arrow is drawn.
+  // Once the hull is breached the controls do nothing: the stick pushed full ahead and down leaves
+  // the screw stopped and the boat not diving (it drove on under the end card).
   await g.page.evaluate(() => {
-    const w = window.game as unknown as { state: { hits: number; over: string; collected: number } };
+    const w = window.game as unknown as { state: { hits: number; over: string; collected: number }; setStick(x: number, y: number): void };
     Object.assign(w.state, { hits: 3, over: 'sunk', collected: 12 });
+    w.setStick(1, -1);
   });
   await g.frames(8);
+  const after = await g.page.evaluate(() => {
+    const w = window.game as unknown as Sub & { setStick(x: number, y: number): void };
+    w.setStick(0, 0);
+    return { throttle: w.state.throttle, mode: w.state.mode };
+  });
+  expect(after.throttle).toBeLessThanOrEqual(0);
+  expect(after.mode).not.toBe('diving');
   const gauge = await g.page.evaluate(() => {
     const el = document.querySelector<HTMLElement>('[data-hud="gauges"]')!;
     const b = el.getBoundingClientRect();
