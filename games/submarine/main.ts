@@ -38,7 +38,17 @@ import { createPauseOverlay, startPixiGame } from '@bitphysics/game-kit/pixi';
 import { applyImpulse, createPhysicsWorld, type PhysicsWorld, step } from '@bitphysics/physics';
 import { SUBMARINE, SUBMARINE_NEUTRAL_FILL, type SubmarineHandles, seabedHeight, submarine } from '@bitphysics/projects';
 import { Graphics, Text } from 'pixi.js';
-import { BEACON_CATCH, beaconLabel, beaconName, catchesBeacon, chooseBeacon, layCourse, seabedBetween } from './beacons';
+import {
+  BEACON_CATCH,
+  beaconLabel,
+  beaconName,
+  catchesBeacon,
+  chooseBeacon,
+  lastBeacon,
+  layCourse,
+  passedBeacon,
+  seabedBetween,
+} from './beacons';
 import { drawBoat, HEADLIGHT, inHeadlight } from './boat-drawing';
 import { createHelmState, HELM, type HelmInput, keyHeaveShare, NO_INPUT, steer } from './helm';
 import {
@@ -186,10 +196,11 @@ const aim = {
 };
 
 /**
- * Beacons collected, for the effect drawn at each (drawing only): world position (m), the game time
- * it was taken (s) and the banner's text ("Beacon 2 of 6").
+ * Beacons collected or passed, for the effect drawn at each (drawing only): world position (m), the
+ * game time it was taken or passed (s), the banner's text ("Beacon 2 of 6", "B passed") and whether
+ * it was passed (a banner only: no rings at a beacon left behind).
  */
-const pickups: { x: number; y: number; time: number; text: string }[] = [];
+const pickups: { x: number; y: number; time: number; text: string; passed?: boolean }[] = [];
 /** How long a pickup's rings and banner last, s of game time. */
 const PICKUP_LIFE = 2;
 /** The framing camera: the hull and the next beacon are kept this far inside the view's edges, px. */
@@ -508,7 +519,7 @@ function stepWorld(world: PhysicsWorld): void {
       taken[i] = true;
       state.collected++;
       state.score += BEACON_POINTS;
-      const last = state.collected === taken.length;
+      const last = i === lastBeacon(handles.beacons);
       // The target moves on to the next beacon along the course (./beacons.ts chooseBeacon), which the banner names.
       const target = aim.index;
       aim.index = chooseBeacon(handles.beacons, taken, c.Position.x[e]!, c.Position.y[e]!, aim.index, i);
@@ -517,7 +528,11 @@ function stepWorld(world: PhysicsWorld): void {
         x: handles.beacons[2 * i]!,
         y: handles.beacons[2 * i + 1]!,
         time: world.time,
-        text: last ? `All ${taken.length} beacons!` : `Beacon ${state.collected} of ${taken.length}\nnext: ${beaconName(aim.index)}`,
+        text: last
+          ? state.collected === taken.length
+            ? `All ${taken.length} beacons!`
+            : `Finish! ${state.collected} of ${taken.length} beacons`
+          : `Beacon ${state.collected} of ${taken.length}\nnext: ${beaconName(aim.index)}`,
       });
       // A rising two-note chime (a fifth apart); the last beacon a third note and a crackle.
       sound.chime(last ? 1047 : 784, 0.3);
@@ -526,11 +541,33 @@ function stepWorld(world: PhysicsWorld): void {
         setTimeout(() => sound.chime(2093, 0.6), 230);
         sound.crackle(14, 0.9);
       }
-      if (state.collected === taken.length) {
+      // The last beacon along the course is the finish; beacons passed and left are missed (no
+      // points, no par bonus, no best time: those are for a full course).
+      if (last) {
         state.over = 'won';
-        state.score += PAR_POINTS * Math.max(0, Math.floor(state.par - state.time));
-        recordWin(state.time);
+        if (state.collected === taken.length) {
+          state.score += PAR_POINTS * Math.max(0, Math.floor(state.par - state.time));
+          recordWin(state.time);
+        } else newBest = false;
+        return;
       }
+    }
+  }
+  // The target left far behind (./beacons.ts passedBeacon) hands over to the next one ahead, and the
+  // banner says so: a skipped beacon costs its points, not minutes of backing.
+  const target = aim.index;
+  if (target >= 0 && !taken[target] && passedBeacon(handles.beacons, target, c.Position.x[e]!)) {
+    aim.index = chooseBeacon(handles.beacons, taken, c.Position.x[e]!, c.Position.y[e]!, target);
+    if (aim.index !== target) {
+      aimSwitchedAt = world.time;
+      pickups.push({
+        x: handles.beacons[2 * target]!,
+        y: handles.beacons[2 * target + 1]!,
+        time: world.time,
+        text: `${beaconName(target)} passed\nnext: ${beaconName(aim.index)}`,
+        passed: true,
+      });
+      sound.chime(523, 0.2);
     }
   }
 }
@@ -740,7 +777,14 @@ function showEnd(): void {
   endCard.replaceChildren();
   const title = document.createElement('div');
   title.style.cssText = `font: 800 24px system-ui, sans-serif; color: ${won ? '#ffe066' : '#ff8a7a'};`;
-  title.textContent = won ? (taken.length === 1 ? 'Beacon collected!' : `All ${taken.length} beacons!`) : 'Hull breached!';
+  const all = state.collected === taken.length;
+  title.textContent = won
+    ? taken.length === 1
+      ? 'Beacon collected!'
+      : all
+        ? `All ${taken.length} beacons!`
+        : `Course run: ${state.collected} of ${taken.length} beacons`
+    : 'Hull breached!';
   const line = document.createElement('div');
   if (won) {
     // Three stars to earn: every beacon, inside par, the hull unhurt; each line says which were earned.
@@ -749,12 +793,13 @@ function showEnd(): void {
     starRow.dataset.hud = 'stars';
     starRow.style.cssText = 'font-size: 30px; line-height: 1.1; letter-spacing: 4px; color: #ffe066;';
     starRow.textContent = `${'★'.repeat(stars)}${'☆'.repeat(3 - stars)}`;
-    const inPar = state.time <= state.par;
+    const inPar = all && state.time <= state.par;
+    const missed = taken.flatMap((t, i) => (t ? [] : [beaconName(i)])).join(', ');
     line.style.cssText = 'font-size: 15px;';
     // Each item kept on one line (no-break spaces inside it), so a mark never wraps away from its words.
     line.textContent = [
-      `✓ ${taken.length === 1 ? 'the beacon' : `all ${taken.length} beacons`}`,
-      `${inPar ? '✓' : '✗'} ${clock(state.time)} (par ${clock(state.par)})`,
+      all ? `✓ ${taken.length === 1 ? 'the beacon' : `all ${taken.length} beacons`}` : `✗ ${missed} missed`,
+      `${inPar ? '✓' : '✗'} ${clock(state.time)} (par ${clock(state.par)}${all ? '' : ', every beacon'})`,
       `${hull === 3 ? '✓' : '✗'} hull ${hull}/3`,
     ]
       .map((item) => item.replaceAll(' ', '\u00a0'))
@@ -783,9 +828,13 @@ function scoreLine(): HTMLElement {
   el.textContent = `Score ${state.score.toLocaleString('en-US')} · ${state.glowsCaught} of ${glows.length} glows`;
   return el;
 }
-/** Stars of a won run, 1 to 3: one for the beacons, one for a time inside par, one for an unhurt hull. */
+/**
+ * Stars of a finished run, 0 to 3: one for every beacon collected, one for a time inside par with
+ * every beacon (a course cut short by skipping beacons is not a par run), one for an unhurt hull.
+ */
 function runStars(): number {
-  return 1 + Number(state.time <= state.par) + Number(state.hits === 0);
+  const all = state.collected === taken.length;
+  return Number(all) + Number(all && state.time <= state.par) + Number(state.hits === 0);
 }
 let gaugeFrame = 0;
 /** How long the hull gauge stays lit after a hit, s of game time. */
@@ -1892,6 +1941,7 @@ function draw(): void {
   // PICKUP_LIFE s of game time; the banner shows the newest one.
   for (let i = pickups.length - 1; i >= 0; i--) if (t - pickups[i]!.time > PICKUP_LIFE || t < pickups[i]!.time) pickups.splice(i, 1);
   for (const p of pickups) {
+    if (p.passed) continue;
     const u = (t - p.time) / PICKUP_LIFE,
       px = sx(p.x),
       py = sy(p.y),
@@ -2234,7 +2284,9 @@ function draw(): void {
   if (gaugeFrame++ % 6 !== 0) return;
   const end =
     state.over === 'won'
-      ? `All ${taken.length} beacons in ${clock(state.time)}!`
+      ? state.collected === taken.length
+        ? `All ${taken.length} beacons in ${clock(state.time)}!`
+        : `Finish · ${state.collected} of ${taken.length} beacons in ${clock(state.time)}`
       : state.over === 'sunk'
         ? `Hull breached · ${state.collected} of ${taken.length} beacons`
         : '';
