@@ -64,6 +64,7 @@ import {
   parTime,
   touchesMine,
 } from './mines';
+import { createShownOrder, releasedOrder } from './release';
 import { drawFish } from './sea-life';
 import { type BedAhead, bedAhead, DIVE_STOPPED_WORD, helmWord, seabedInput, touchSeabed } from './seabed';
 import { type Glow, layTrail, touchesGlow } from './trail';
@@ -310,6 +311,7 @@ function createWorld(): PhysicsWorld {
   zoom = Number.NaN;
   Object.assign(camera, { leadX: 0, leadY: 0, time: 0, shake: 0 });
   hitMarks.length = 0;
+  shownOrder = createShownOrder();
   scrapeAt = Number.NaN;
   pickups.length = 0;
   return world;
@@ -331,6 +333,8 @@ addEventListener('keyup', (e) => {
 });
 addEventListener('blur', () => held.clear());
 
+/** The depth order as last put on the screen (./release.ts): a let-go of Dive or Rise holds it. */
+let shownOrder = createShownOrder();
 /** Game time a Dive or Rise key was first held (s), NaN while none is. */
 let heaveKeySince = Number.NaN;
 
@@ -402,6 +406,9 @@ function stepWorld(world: PhysicsWorld): void {
   // The seabed stops a dive until Dive is let go (./seabed.ts). After the end (won or sunk) the
   // controls are let go: the boat glides to a stop on its order, whatever keys are still held.
   const input = state.over ? NO_INPUT : seabedInput(state, heldInput(world.time));
+  // Dive or Rise let go: the order stays at the line last drawn, not where it ran on to since (./release.ts).
+  if ((state.mode === 'diving' && !input.dive) || (state.mode === 'rising' && !input.rise))
+    state.holdY = releasedOrder(state.holdY, shownOrder.shown(game.pacer.drawn), state.mode);
   const vertical = input.dive === input.rise ? 0 : input.dive ? -1 : 1;
   if (vertical !== 0 && vertical !== lastVertical) sound.launch(0.25);
   lastVertical = vertical;
@@ -1693,6 +1700,7 @@ function draw(): void {
     H = app.screen.height;
   const hxw = c.Position.x[e]!,
     hyw = c.Position.y[e]!;
+  shownOrder.note(state.holdY, game.pacer.drawn);
   const before = aim.index;
   aim.index = chooseBeacon(handles.beacons, taken, hxw, hyw, aim.index);
   // A new target (the last one collected): its label pulses (drawBeacons).
