@@ -213,9 +213,11 @@ const FRAME_MARGIN = 60;
  */
 const HULL_SIDE_ROOM = 60;
 /**
- * Room the framing camera keeps clear between the hull's bow or stern and the view's right edge,
- * px: the depth gauge and its tags ("you 30 m", "beacon A 27 m", up to about 105 px in from the
- * edge), so the boat never reaches the right edge under its tag (as it would with HULL_SIDE_ROOM).
+ * Room the framing camera keeps clear between the tip of the hull's headlight (its bow plus
+ * HEADLIGHT.reach, ./boat-drawing.ts) and the view's right edge, px: the depth gauge and its tags
+ * ("you 30 m", "beacon A 27 m", up to about 105 px in from the edge). With a target behind (backing
+ * to it) the boat sits right of centre, and the beam ran off the screen under the "you" tag; the
+ * view zooms out instead (`behindFit`) so the beam and the target behind are both in view.
  */
 const HULL_GAUGE_ROOM = 120;
 /**
@@ -223,7 +225,7 @@ const HULL_GAUGE_ROOM = 120;
  * a wide screen (the 12 m hull 60 px long; at 2 px/m it would shrink to about 35 px at speed), 4 on
  * a small one, where the hull would otherwise shrink under 48 px and the mines to specks.
  */
-const FRAME_MIN_ZOOM = pageLayout().compact() ? 4 : 5;
+const FRAME_MIN_ZOOM = pageLayout().compact() ? 3.5 : 5;
 /** The camera's zoom now, px/m (eased toward the framing zoom; NaN: set at the next frame). */
 let zoom = Number.NaN;
 /**
@@ -247,7 +249,7 @@ const LEAD_EASE = 0.8;
  * m: at the default 8 px/m a 390 px phone showed only 49 m, with mines, ridges and beacons ahead
  * off screen. A wider view than tall is not limited by it (the desktop's framing is unchanged).
  */
-const PORTRAIT_MIN_WIDTH = 70;
+const PORTRAIT_MIN_WIDTH = 85;
 /** The look-ahead's share of the way to the framing margin (`LEAD_SHARE`) on a portrait view. */
 const PORTRAIT_LEAD_SHARE = 0.8;
 /**
@@ -378,6 +380,33 @@ function stickShare(v: number, key: boolean): number {
   return Math.max(STICK_DEAD, Math.min(1, Math.abs(v)));
 }
 
+/**
+ * Whether any of 15 points of the screen box (`left`, `top`, `width`, `height`, px) lies in the
+ * headlight's cone (./boat-drawing.ts inHeadlight) of the hull at (hx, hy) m turned by `angle` rad,
+ * drawn by `sx`, `sy` (world m to screen px) at `k` px/m.
+ */
+function boxInBeam(
+  left: number,
+  top: number,
+  width: number,
+  height: number,
+  hx: number,
+  hy: number,
+  angle: number,
+  sx: (x: number) => number,
+  sy: (y: number) => number,
+  k: number,
+): boolean {
+  const hc = Math.cos(angle),
+    hs = Math.sin(angle);
+  for (let i = 0; i <= 4; i++)
+    for (let j = 0; j <= 2; j++) {
+      const wx = hx + (left + (width * i) / 4 - sx(hx)) / k,
+        wy = hy - (top + (height * j) / 2 - sy(hy)) / k;
+      if (inHeadlight((wx - hx) * hc + (wy - hy) * hs, -(wx - hx) * hs + (wy - hy) * hc, SUBMARINE.length)) return true;
+    }
+  return false;
+}
 /** Where the hull last touched the seabed (m), filled by touchSeabed. */
 const seabedContact = { x: 0, y: 0 };
 /** Game time the newest scrape on the seabed began (a contact that costs no hit), s; NaN before any. */
@@ -1710,8 +1739,12 @@ function draw(): void {
   // the player sees where to go instead of steering by an arrow to a point off screen.
   const fx = aim.index >= 0 ? handles.beacons[2 * aim.index]! : hxw,
     fy = aim.index >= 0 ? handles.beacons[2 * aim.index + 1]! : hyw;
+  // A target behind the hull: the hull, its beam and the gauge's room on the right, the target inside the margin on the left.
+  const behindFit =
+    fx < hxw ? (W - HULL_GAUGE_ROOM - FRAME_MARGIN) / (hxw - fx + SUBMARINE.length / 2 + HEADLIGHT.reach) : Number.POSITIVE_INFINITY;
   const fit = Math.min(
     params.pixelsPerMeter,
+    behindFit,
     (W - 2 * FRAME_MARGIN) / Math.max(1e-6, Math.abs(fx - hxw) + SUBMARINE.length),
     (H - 2 * FRAME_MARGIN) / Math.max(1e-6, Math.abs(fy - hyw) + SUBMARINE.length),
   );
@@ -1727,10 +1760,13 @@ function draw(): void {
   // Centred between them, moved toward the hull as far as needed to keep the hull FRAME_MARGIN
   // inside the view when both do not fit; never more sky than the top 15% of the view.
   // The hull's centre itself keeps HULL_SIDE_ROOM past its half length from the left side (hullReachX).
-  // Right of centre the hull keeps HULL_GAUGE_ROOM (hullReachRight), clear of the depth gauge's tags.
+  // Right of centre the hull's headlight keeps HULL_GAUGE_ROOM (hullReachRight), clear of the depth gauge's tags.
   const reachX = Math.max(0, W / 2 - FRAME_MARGIN) / k,
     hullReachX = Math.max(0, W / 2 - Math.max(FRAME_MARGIN, (SUBMARINE.length / 2) * k + HULL_SIDE_ROOM)) / k,
-    hullReachRight = Math.max(0, W / 2 - Math.max(FRAME_MARGIN, (SUBMARINE.length / 2) * k + HULL_GAUGE_ROOM)) / k,
+    hullReachRight =
+      Math.max(0, W / 2 - Math.max(FRAME_MARGIN, (SUBMARINE.length / 2 + HEADLIGHT.reach) * k + HULL_GAUGE_ROOM)) / k ||
+      // A view too narrow for the beam too (a phone): the bow alone keeps the room.
+      Math.max(0, W / 2 - Math.max(FRAME_MARGIN, (SUBMARINE.length / 2) * k + HULL_GAUGE_ROOM)) / k,
     reachY = Math.max(0, H / 2 - FRAME_MARGIN) / k;
   // Look-ahead: the view leads the hull by LEAD_TIME s (PORTRAIT_LEAD_TIME on a portrait view) of its velocity along x (LEAD_TIME_Y s across), at most LEAD_SHARE of the way
   // to the framing margin, eased over about LEAD_EASE s of game time (a bump or a blast does not jerk
@@ -1745,7 +1781,10 @@ function draw(): void {
     leadY = Math.max(-LEAD_SHARE * reachY, Math.min(LEAD_SHARE * reachY, camera.leadY));
   const atLeast = (framed: number, hull: number, lead: number) =>
     lead > 0 ? Math.max(framed, hull + lead) : lead < 0 ? Math.min(framed, hull + lead) : framed;
-  const cx = Math.max(hxw - hullReachRight, Math.min(hxw + hullReachX, atLeast((hxw + fx) / 2, hxw, leadX))),
+  // A target ahead keeps its ring left of the depth gauge's ruler where the hull's room allows (on a
+  // phone at the start the ring lay half under it).
+  const ringClear = fx > hxw ? fx + BEACON_CATCH - (W / 2 - GAUGE_WIDTH - ON_SCREEN_MARGIN) / k : Number.NEGATIVE_INFINITY;
+  const cx = Math.max(hxw - hullReachRight, Math.min(hxw + hullReachX, atLeast(Math.max((hxw + fx) / 2, ringClear), hxw, leadX))),
     cy = Math.min(-H / k / 2 + (0.15 * H) / k, Math.max(hyw - reachY, Math.min(hyw + reachY, atLeast((hyw + fy) / 2, hyw, leadY))));
   camera.x = cx;
   camera.y = cy;
@@ -1939,8 +1978,20 @@ function draw(): void {
     }
     tag.visible = true;
     tag.text = `beacon ${beaconName(i)}`;
-    // Under its beacon, kept clear of the depth gauge (which would cut a tag under it to "beac").
-    tag.position.set(Math.max(tag.width / 2 + 4, Math.min(W - GAUGE_WIDTH - tag.width / 2 - 4, bx)), by + Math.max(11, 3 * k));
+    // Under its beacon, kept clear of the depth gauge (which would cut a tag under it to "beac"); off
+    // the headlight's cone where it shows (a tag on the lit water reads as part of the beam): over
+    // the lamp, else under or over the ring.
+    const tx = Math.max(tag.width / 2 + 4, Math.min(W - GAUGE_WIDTH - tag.width / 2 - 4, bx)),
+      lamp = Math.max(11, 3 * k);
+    const lit = (y: number) =>
+      hyw < -HEADLIGHT.fromDepth && boxInBeam(tx - tag!.width / 2, y, tag!.width, tag!.height, hxw, hyw, c.Angle.value[e]!, sx, sy, k);
+    const spots = [
+      by + lamp,
+      by - lamp - tag.height,
+      by + Math.max(lamp, BEACON_CATCH * k) + 4,
+      by - Math.max(lamp, BEACON_CATCH * k) - 4 - tag.height,
+    ];
+    tag.position.set(tx, spots.find((y) => !lit(y)) ?? spots[0]!);
     tagged++;
   }
   for (let i = tagged; i < tags.length; i++) tags[i]!.visible = false;
@@ -2111,19 +2162,21 @@ function draw(): void {
     // none of its points is in the cone.
     aim.beam = false;
     if (hyw < -HEADLIGHT.fromDepth) {
-      const ha = c.Angle.value[e]!,
-        hc = Math.cos(ha),
-        hs = Math.sin(ha);
-      const lit = () => {
-        for (let i = 0; i <= 4; i++)
-          for (let j = 0; j <= 2; j++) {
-            // A point of the label's pill, back in world metres, then in the hull's frame.
-            const wx = hxw + (pointer.x - pointer.width / 2 - 7 + ((pointer.width + 14) * i) / 4 - hx0) / k,
-              wy = hyw - (pointer.y - pointer.height / 2 - 2 + ((pointer.height + 4) * j) / 2 - hy0) / k;
-            if (inHeadlight((wx - hxw) * hc + (wy - hyw) * hs, -(wx - hxw) * hs + (wy - hyw) * hc, SUBMARINE.length)) return true;
-          }
-        return false;
-      };
+      const ha = c.Angle.value[e]!;
+      // The label's pill: its text and 7 px, 2 px of padding round it.
+      const lit = () =>
+        boxInBeam(
+          pointer.x - pointer.width / 2 - 7,
+          pointer.y - pointer.height / 2 - 2,
+          pointer.width + 14,
+          pointer.height + 4,
+          hxw,
+          hyw,
+          ha,
+          sx,
+          sy,
+          k,
+        );
       if (lit()) {
         aim.beam = true;
         // Up if the label is above the axis where it is, else down; the other way if it would leave the view.
