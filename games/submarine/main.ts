@@ -381,22 +381,19 @@ function stickShare(v: number, key: boolean): number {
 }
 
 /**
- * Whether any of 15 points of the screen box (`left`, `top`, `width`, `height`, px) lies in the
- * headlight's cone (./boat-drawing.ts inHeadlight) of the hull at (hx, hy) m turned by `angle` rad,
- * drawn by `sx`, `sy` (world m to screen px) at `k` px/m.
+ * Whether any of 15 points of the screen box `box` (left, top, width, height, px) lies in the
+ * headlight's cone (./boat-drawing.ts inHeadlight) of the hull at `hull` (x, y, m, and its angle,
+ * rad), drawn by `sx`, `sy` (world m to screen px) at `k` px/m.
  */
 function boxInBeam(
-  left: number,
-  top: number,
-  width: number,
-  height: number,
-  hx: number,
-  hy: number,
-  angle: number,
+  box: readonly number[],
+  hull: readonly number[],
   sx: (x: number) => number,
   sy: (y: number) => number,
   k: number,
 ): boolean {
+  const [left = 0, top = 0, width = 0, height = 0] = box,
+    [hx = 0, hy = 0, angle = 0] = hull;
   const hc = Math.cos(angle),
     hs = Math.sin(angle);
   for (let i = 0; i <= 4; i++)
@@ -1984,7 +1981,7 @@ function draw(): void {
     const tx = Math.max(tag.width / 2 + 4, Math.min(W - GAUGE_WIDTH - tag.width / 2 - 4, bx)),
       lamp = Math.max(11, 3 * k);
     const lit = (y: number) =>
-      hyw < -HEADLIGHT.fromDepth && boxInBeam(tx - tag!.width / 2, y, tag!.width, tag!.height, hxw, hyw, c.Angle.value[e]!, sx, sy, k);
+      hyw < -HEADLIGHT.fromDepth && boxInBeam([tx - tag!.width / 2, y, tag!.width, tag!.height], [hxw, hyw, c.Angle.value[e]!], sx, sy, k);
     const spots = [
       by + lamp,
       by - lamp - tag.height,
@@ -2166,13 +2163,8 @@ function draw(): void {
       // The label's pill: its text and 7 px, 2 px of padding round it.
       const lit = () =>
         boxInBeam(
-          pointer.x - pointer.width / 2 - 7,
-          pointer.y - pointer.height / 2 - 2,
-          pointer.width + 14,
-          pointer.height + 4,
-          hxw,
-          hyw,
-          ha,
+          [pointer.x - pointer.width / 2 - 7, pointer.y - pointer.height / 2 - 2, pointer.width + 14, pointer.height + 4],
+          [hxw, hyw, ha],
           sx,
           sy,
           k,
