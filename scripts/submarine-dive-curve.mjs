@@ -92,21 +92,27 @@ for (const v of [top, 9, 6, 3]) {
   console.log(`let go ${glide(drive, {})} | Astern ${glide(drive, { astern: true })}`);
 }
 
+/** A calm sea's boat at 31 m after 15 s with the screw at `drive` (share of full ahead): world, handles, helm. */
+function steadyAt31(drive) {
+  const world = createPhysicsWorld(submarine.worldOptions());
+  const h = submarine.build(world, { seed: 1, count: 0, fill: SUBMARINE_NEUTRAL_FILL, position: [0, -31] });
+  world.components.FluidRegion.surface.fill(0);
+  const helm = createHelmState(SUBMARINE_NEUTRAL_FILL);
+  for (let i = 0; i < Math.round(15 / world.dt); i++) {
+    steer(world, h, { ...NO_INPUT, ahead: true, drive }, helm);
+    step(world);
+  }
+  return { world, h, helm };
+}
+
 /**
  * From a steady speed at 31 m (the screw at `drive`, share of full ahead, for 15 s), Dive held (as a
  * key) with Ahead for `held` s: the depth gone at each of `marks` s (m) and the speed down at the end (m/s).
  */
 function diveUnderWay(drive, held, marks) {
-  const world = createPhysicsWorld(submarine.worldOptions());
-  const h = submarine.build(world, { seed: 1, count: 0, fill: SUBMARINE_NEUTRAL_FILL, position: [0, -31] });
-  world.components.FluidRegion.surface.fill(0);
-  const helm = createHelmState(SUBMARINE_NEUTRAL_FILL);
+  const { world, h, helm } = steadyAt31(drive);
   const Y = world.components.Position.y,
     e = h.hull;
-  for (let i = 0; i < Math.round(15 / world.dt); i++) {
-    steer(world, h, { ...NO_INPUT, ahead: true, drive }, helm);
-    step(world);
-  }
   const y0 = Y[e];
   const out = [];
   let t = 0;
@@ -129,16 +135,9 @@ for (const drive of [0, 0.5, 1]) console.log(`screw ${drive}: ${diveUnderWay(dri
  * the let-go holds the line last drawn. Returns how far past the target the boat stops, m.
  */
 function stopAtLine(drive, k, every, react, hold) {
-  const world = createPhysicsWorld(submarine.worldOptions());
-  const h = submarine.build(world, { seed: 1, count: 0, fill: SUBMARINE_NEUTRAL_FILL, position: [0, -31] });
-  world.components.FluidRegion.surface.fill(0);
-  const helm = createHelmState(SUBMARINE_NEUTRAL_FILL);
+  const { world, h, helm } = steadyAt31(drive);
   const Y = world.components.Position.y,
     e = h.hull;
-  for (let i = 0; i < Math.round(15 / world.dt); i++) {
-    steer(world, h, { ...NO_INPUT, ahead: true, drive }, helm);
-    step(world);
-  }
   const target = Y[e] - 20;
   let diving = true,
     drawn = Number.NaN,
