@@ -90,13 +90,52 @@ function clearance(x0: number, y0: number, x1: number, y1: number, bedAt: (x: nu
 }
 
 /**
- * The beacon the pointer leads to from the hull at (x, y), m. With `justTaken` (a beacon collected
- * this step, its index) the next uncollected one along the course after it (course order: the first
- * beacon, then by x), or, with none after it, the first uncollected one along the course (the ones
- * passed by), so a boat that passes beacon A and collects C is led on, not back to A behind it.
- * Otherwise `current` while it is uncollected (it is held, however near another one comes);
- * with no current one (-1, out of range or collected), the nearest uncollected one. -1 when all are
- * collected.
+ * How far along x the hull's centre may run past a beacon before that beacon counts as passed, m:
+ * the boat always faces ahead and backs at half speed (./helm.ts), so a beacon overshot by more than
+ * this (about 8 s of backing) is left behind instead of costing a minute to fetch. A passed beacon
+ * is no longer the target and not needed to finish (the run ends at the last beacon, `lastBeacon`),
+ * but it can still be collected by going back for it; left uncollected it costs its points and the
+ * "every beacon" star. The ring (`BEACON_CATCH`) plus half the hull is 14 m, so a boat that only
+ * scrapes past a ring still has it as its target.
+ */
+export const BEACON_PASSED = 30;
+
+/** Course order: the first beacon (by the start) ranks first, the others by x. */
+function courseRank(beacons: ArrayLike<number>, i: number): number {
+  return i === 0 ? Number.NEGATIVE_INFINITY : beacons[2 * i]!;
+}
+
+/**
+ * The last beacon along the course (the finish: collecting it ends the run), its index; -1 with no
+ * beacons. `beacons`: (x, y) pairs, m.
+ */
+export function lastBeacon(beacons: ArrayLike<number>): number {
+  let last = -1;
+  for (let i = 0; i < beacons.length / 2; i++) if (last < 0 || courseRank(beacons, i) > courseRank(beacons, last)) last = i;
+  return last;
+}
+
+/**
+ * Whether beacon `i` has been passed by a hull whose centre is at `x`, m: it lies more than
+ * `BEACON_PASSED` behind along x and is not the last beacon along the course (the finish is never
+ * passed). `beacons`: (x, y) pairs, m.
+ * @throws RangeError when `x` is not finite or `i` is not an index of `beacons`.
+ */
+export function passedBeacon(beacons: ArrayLike<number>, i: number, x: number): boolean {
+  assertFinite('passedBeacon', 'x', x);
+  if (!(Number.isInteger(i) && i >= 0 && i < beacons.length / 2)) throw new RangeError(`passedBeacon: i must be a beacon index, got ${i}`);
+  return x - beacons[2 * i]! > BEACON_PASSED && i !== lastBeacon(beacons);
+}
+
+/**
+ * The beacon the pointer leads to from the hull at (x, y), m. The target stays ahead of the boat:
+ * beacons passed (`passedBeacon`: far behind, not the finish) are never chosen while another is
+ * left. With `justTaken` (a beacon collected this step, its index) the next uncollected one along
+ * the course after it (course order: the first beacon, then by x), so a boat that passes beacon A
+ * and collects C is led on, not back to A behind it. Otherwise `current` while it is uncollected and
+ * not passed (it is held, however near another one comes); a current one passed hands over to the
+ * first one left along the course; with no current one (-1, out of range or collected), the nearest
+ * one left. Only passed ones left: the first of those along the course. -1 when all are collected.
  * @param beacons (x, y) pairs, m.
  * @param taken Whether each beacon has been collected.
  * @param justTaken the beacon collected this step, or -1 (default) when none was.
@@ -109,25 +148,28 @@ export function chooseBeacon(
   current: number,
   justTaken = -1,
 ): number {
-  if (justTaken >= 0 && justTaken < taken.length) {
-    // Course order: the first beacon (by the start), then along x.
-    const rank = (i: number) => (i === 0 ? Number.NEGATIVE_INFINITY : beacons[2 * i]!);
-    const from = rank(justTaken);
+  const valid = (i: number) => i >= 0 && i < taken.length;
+  const open = (i: number) => !taken[i] && !passedBeacon(beacons, i, x);
+  if (!valid(justTaken) && valid(current) && open(current)) return current;
+  const passedOn = !valid(justTaken) && valid(current) && !taken[current];
+  if (valid(justTaken) || passedOn) {
+    const from = valid(justTaken) ? courseRank(beacons, justTaken) : Number.NEGATIVE_INFINITY;
     let after = -1,
       first = -1;
     for (let i = 0; i < taken.length; i++) {
       if (taken[i]) continue;
-      if (rank(i) > from && (after < 0 || rank(i) < rank(after))) after = i;
-      if (first < 0 || rank(i) < rank(first)) first = i;
+      const r = courseRank(beacons, i);
+      if (open(i) && r > from && (after < 0 || r < courseRank(beacons, after))) after = i;
+      if (first < 0 || r < courseRank(beacons, first)) first = i;
     }
     return after >= 0 ? after : first;
   }
-  if (current >= 0 && current < taken.length && !taken[current]) return current;
   let nearest = -1,
     best = Infinity;
   for (let i = 0; i < taken.length; i++) {
     if (taken[i]) continue;
-    const d = Math.hypot(beacons[2 * i]! - x, beacons[2 * i + 1]! - y);
+    // A passed beacon only when no other is left.
+    const d = Math.hypot(beacons[2 * i]! - x, beacons[2 * i + 1]! - y) + (open(i) ? 0 : 1e9);
     if (d < best) {
       best = d;
       nearest = i;

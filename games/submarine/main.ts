@@ -38,9 +38,19 @@ import { createPauseOverlay, startPixiGame } from '@bitphysics/game-kit/pixi';
 import { applyImpulse, createPhysicsWorld, type PhysicsWorld, step } from '@bitphysics/physics';
 import { SUBMARINE, SUBMARINE_NEUTRAL_FILL, type SubmarineHandles, seabedHeight, submarine } from '@bitphysics/projects';
 import { Graphics, Text } from 'pixi.js';
-import { BEACON_CATCH, beaconLabel, beaconName, catchesBeacon, chooseBeacon, layCourse, seabedBetween } from './beacons';
+import {
+  BEACON_CATCH,
+  beaconLabel,
+  beaconName,
+  catchesBeacon,
+  chooseBeacon,
+  lastBeacon,
+  layCourse,
+  passedBeacon,
+  seabedBetween,
+} from './beacons';
 import { drawBoat, HEADLIGHT, inHeadlight } from './boat-drawing';
-import { createHelmState, HELM, type HelmInput, keyHeaveShare, steer } from './helm';
+import { createHelmState, HELM, type HelmInput, keyHeaveShare, NO_INPUT, steer } from './helm';
 import {
   hullDistance,
   layMines,
@@ -54,6 +64,7 @@ import {
   parTime,
   touchesMine,
 } from './mines';
+import { createShownOrder, releasedOrder } from './release';
 import { drawFish } from './sea-life';
 import { type BedAhead, bedAhead, DIVE_STOPPED_WORD, helmWord, seabedInput, touchSeabed } from './seabed';
 import { type Glow, layTrail, touchesGlow } from './trail';
@@ -186,10 +197,11 @@ const aim = {
 };
 
 /**
- * Beacons collected, for the effect drawn at each (drawing only): world position (m), the game time
- * it was taken (s) and the banner's text ("Beacon 2 of 6").
+ * Beacons collected or passed, for the effect drawn at each (drawing only): world position (m), the
+ * game time it was taken or passed (s), the banner's text ("Beacon 2 of 6", "B passed") and whether
+ * it was passed (a banner only: no rings at a beacon left behind).
  */
-const pickups: { x: number; y: number; time: number; text: string }[] = [];
+const pickups: { x: number; y: number; time: number; text: string; passed?: boolean }[] = [];
 /** How long a pickup's rings and banner last, s of game time. */
 const PICKUP_LIFE = 2;
 /** The framing camera: the hull and the next beacon are kept this far inside the view's edges, px. */
@@ -201,9 +213,11 @@ const FRAME_MARGIN = 60;
  */
 const HULL_SIDE_ROOM = 60;
 /**
- * Room the framing camera keeps clear between the hull's bow or stern and the view's right edge,
- * px: the depth gauge and its tags ("you 30 m", "beacon A 27 m", up to about 105 px in from the
- * edge), so the boat never reaches the right edge under its tag (as it would with HULL_SIDE_ROOM).
+ * Room the framing camera keeps clear between the tip of the hull's headlight (its bow plus
+ * HEADLIGHT.reach, ./boat-drawing.ts) and the view's right edge, px: the depth gauge and its tags
+ * ("you 30 m", "beacon A 27 m", up to about 105 px in from the edge). With a target behind (backing
+ * to it) the boat sits right of centre, and the beam ran off the screen under the "you" tag; the
+ * view zooms out instead (`behindFit`) so the beam and the target behind are both in view.
  */
 const HULL_GAUGE_ROOM = 120;
 /**
@@ -211,7 +225,7 @@ const HULL_GAUGE_ROOM = 120;
  * a wide screen (the 12 m hull 60 px long; at 2 px/m it would shrink to about 35 px at speed), 4 on
  * a small one, where the hull would otherwise shrink under 48 px and the mines to specks.
  */
-const FRAME_MIN_ZOOM = pageLayout().compact() ? 4 : 5;
+const FRAME_MIN_ZOOM = pageLayout().compact() ? 3.5 : 5;
 /** The camera's zoom now, px/m (eased toward the framing zoom; NaN: set at the next frame). */
 let zoom = Number.NaN;
 /**
@@ -235,7 +249,7 @@ const LEAD_EASE = 0.8;
  * m: at the default 8 px/m a 390 px phone showed only 49 m, with mines, ridges and beacons ahead
  * off screen. A wider view than tall is not limited by it (the desktop's framing is unchanged).
  */
-const PORTRAIT_MIN_WIDTH = 70;
+const PORTRAIT_MIN_WIDTH = 85;
 /** The look-ahead's share of the way to the framing margin (`LEAD_SHARE`) on a portrait view. */
 const PORTRAIT_LEAD_SHARE = 0.8;
 /**
@@ -299,6 +313,7 @@ function createWorld(): PhysicsWorld {
   zoom = Number.NaN;
   Object.assign(camera, { leadX: 0, leadY: 0, time: 0, shake: 0 });
   hitMarks.length = 0;
+  shownOrder = createShownOrder();
   scrapeAt = Number.NaN;
   pickups.length = 0;
   return world;
@@ -320,6 +335,8 @@ addEventListener('keyup', (e) => {
 });
 addEventListener('blur', () => held.clear());
 
+/** The depth order as last put on the screen (./release.ts): a let-go of Dive or Rise holds it. */
+let shownOrder = createShownOrder();
 /** Game time a Dive or Rise key was first held (s), NaN while none is. */
 let heaveKeySince = Number.NaN;
 
@@ -363,6 +380,30 @@ function stickShare(v: number, key: boolean): number {
   return Math.max(STICK_DEAD, Math.min(1, Math.abs(v)));
 }
 
+/**
+ * Whether any of 15 points of the screen box `box` (left, top, width, height, px) lies in the
+ * headlight's cone (./boat-drawing.ts inHeadlight) of the hull at `hull` (x, y, m, and its angle,
+ * rad), drawn by `sx`, `sy` (world m to screen px) at `k` px/m.
+ */
+function boxInBeam(
+  box: readonly number[],
+  hull: readonly number[],
+  sx: (x: number) => number,
+  sy: (y: number) => number,
+  k: number,
+): boolean {
+  const [left = 0, top = 0, width = 0, height = 0] = box,
+    [hx = 0, hy = 0, angle = 0] = hull;
+  const hc = Math.cos(angle),
+    hs = Math.sin(angle);
+  for (let i = 0; i <= 4; i++)
+    for (let j = 0; j <= 2; j++) {
+      const wx = hx + (left + (width * i) / 4 - sx(hx)) / k,
+        wy = hy - (top + (height * j) / 2 - sy(hy)) / k;
+      if (inHeadlight((wx - hx) * hc + (wy - hy) * hs, -(wx - hx) * hs + (wy - hy) * hc, SUBMARINE.length)) return true;
+    }
+  return false;
+}
 /** Where the hull last touched the seabed (m), filled by touchSeabed. */
 const seabedContact = { x: 0, y: 0 };
 /** Game time the newest scrape on the seabed began (a contact that costs no hit), s; NaN before any. */
@@ -388,8 +429,12 @@ let lastVertical = 0;
 let lastPing = 0;
 
 function stepWorld(world: PhysicsWorld): void {
-  // The seabed stops a dive until Dive is let go (./seabed.ts).
-  const input = seabedInput(state, heldInput(world.time));
+  // The seabed stops a dive until Dive is let go (./seabed.ts). After the end (won or sunk) the
+  // controls are let go: the boat glides to a stop on its order, whatever keys are still held.
+  const input = state.over ? NO_INPUT : seabedInput(state, heldInput(world.time));
+  // Dive or Rise let go: the order stays at the line last drawn, not where it ran on to since (./release.ts).
+  if ((state.mode === 'diving' && !input.dive) || (state.mode === 'rising' && !input.rise))
+    state.holdY = releasedOrder(state.holdY, shownOrder.shown(game.pacer.drawn), state.mode);
   const vertical = input.dive === input.rise ? 0 : input.dive ? -1 : 1;
   if (vertical !== 0 && vertical !== lastVertical) sound.launch(0.25);
   lastVertical = vertical;
@@ -507,7 +552,7 @@ function stepWorld(world: PhysicsWorld): void {
       taken[i] = true;
       state.collected++;
       state.score += BEACON_POINTS;
-      const last = state.collected === taken.length;
+      const last = i === lastBeacon(handles.beacons);
       // The target moves on to the next beacon along the course (./beacons.ts chooseBeacon), which the banner names.
       const target = aim.index;
       aim.index = chooseBeacon(handles.beacons, taken, c.Position.x[e]!, c.Position.y[e]!, aim.index, i);
@@ -516,7 +561,11 @@ function stepWorld(world: PhysicsWorld): void {
         x: handles.beacons[2 * i]!,
         y: handles.beacons[2 * i + 1]!,
         time: world.time,
-        text: last ? `All ${taken.length} beacons!` : `Beacon ${state.collected} of ${taken.length}\nnext: ${beaconName(aim.index)}`,
+        text: last
+          ? state.collected === taken.length
+            ? `All ${taken.length} beacons!`
+            : `Finish! ${state.collected} of ${taken.length} beacons`
+          : `Beacon ${state.collected} of ${taken.length}\nnext: ${beaconName(aim.index)}`,
       });
       // A rising two-note chime (a fifth apart); the last beacon a third note and a crackle.
       sound.chime(last ? 1047 : 784, 0.3);
@@ -525,11 +574,33 @@ function stepWorld(world: PhysicsWorld): void {
         setTimeout(() => sound.chime(2093, 0.6), 230);
         sound.crackle(14, 0.9);
       }
-      if (state.collected === taken.length) {
+      // The last beacon along the course is the finish; beacons passed and left are missed (no
+      // points, no par bonus, no best time: those are for a full course).
+      if (last) {
         state.over = 'won';
-        state.score += PAR_POINTS * Math.max(0, Math.floor(state.par - state.time));
-        recordWin(state.time);
+        if (state.collected === taken.length) {
+          state.score += PAR_POINTS * Math.max(0, Math.floor(state.par - state.time));
+          recordWin(state.time);
+        } else newBest = false;
+        return;
       }
+    }
+  }
+  // The target left far behind (./beacons.ts passedBeacon) hands over to the next one ahead, and the
+  // banner says so: a skipped beacon costs its points, not minutes of backing.
+  const target = aim.index;
+  if (target >= 0 && !taken[target] && passedBeacon(handles.beacons, target, c.Position.x[e]!)) {
+    aim.index = chooseBeacon(handles.beacons, taken, c.Position.x[e]!, c.Position.y[e]!, target);
+    if (aim.index !== target) {
+      aimSwitchedAt = world.time;
+      pickups.push({
+        x: handles.beacons[2 * target]!,
+        y: handles.beacons[2 * target + 1]!,
+        time: world.time,
+        text: `${beaconName(target)} passed\nnext: ${beaconName(aim.index)}`,
+        passed: true,
+      });
+      sound.chime(523, 0.2);
     }
   }
 }
@@ -739,7 +810,14 @@ function showEnd(): void {
   endCard.replaceChildren();
   const title = document.createElement('div');
   title.style.cssText = `font: 800 24px system-ui, sans-serif; color: ${won ? '#ffe066' : '#ff8a7a'};`;
-  title.textContent = won ? (taken.length === 1 ? 'Beacon collected!' : `All ${taken.length} beacons!`) : 'Hull breached!';
+  const all = state.collected === taken.length;
+  title.textContent = won
+    ? taken.length === 1
+      ? 'Beacon collected!'
+      : all
+        ? `All ${taken.length} beacons!`
+        : `Course run: ${state.collected} of ${taken.length} beacons`
+    : 'Hull breached!';
   const line = document.createElement('div');
   if (won) {
     // Three stars to earn: every beacon, inside par, the hull unhurt; each line says which were earned.
@@ -748,12 +826,13 @@ function showEnd(): void {
     starRow.dataset.hud = 'stars';
     starRow.style.cssText = 'font-size: 30px; line-height: 1.1; letter-spacing: 4px; color: #ffe066;';
     starRow.textContent = `${'★'.repeat(stars)}${'☆'.repeat(3 - stars)}`;
-    const inPar = state.time <= state.par;
+    const inPar = all && state.time <= state.par;
+    const missed = taken.flatMap((t, i) => (t ? [] : [beaconName(i)])).join(', ');
     line.style.cssText = 'font-size: 15px;';
     // Each item kept on one line (no-break spaces inside it), so a mark never wraps away from its words.
     line.textContent = [
-      `✓ ${taken.length === 1 ? 'the beacon' : `all ${taken.length} beacons`}`,
-      `${inPar ? '✓' : '✗'} ${clock(state.time)} (par ${clock(state.par)})`,
+      all ? `✓ ${taken.length === 1 ? 'the beacon' : `all ${taken.length} beacons`}` : `✗ ${missed} missed`,
+      `${inPar ? '✓' : '✗'} ${clock(state.time)} (par ${clock(state.par)}${all ? '' : ', every beacon'})`,
       `${hull === 3 ? '✓' : '✗'} hull ${hull}/3`,
     ]
       .map((item) => item.replaceAll(' ', '\u00a0'))
@@ -782,9 +861,13 @@ function scoreLine(): HTMLElement {
   el.textContent = `Score ${state.score.toLocaleString('en-US')} · ${state.glowsCaught} of ${glows.length} glows`;
   return el;
 }
-/** Stars of a won run, 1 to 3: one for the beacons, one for a time inside par, one for an unhurt hull. */
+/**
+ * Stars of a finished run, 0 to 3: one for every beacon collected, one for a time inside par with
+ * every beacon (a course cut short by skipping beacons is not a par run), one for an unhurt hull.
+ */
 function runStars(): number {
-  return 1 + Number(state.time <= state.par) + Number(state.hits === 0);
+  const all = state.collected === taken.length;
+  return Number(all) + Number(all && state.time <= state.par) + Number(state.hits === 0);
 }
 let gaugeFrame = 0;
 /** How long the hull gauge stays lit after a hit, s of game time. */
@@ -1643,6 +1726,7 @@ function draw(): void {
     H = app.screen.height;
   const hxw = c.Position.x[e]!,
     hyw = c.Position.y[e]!;
+  shownOrder.note(state.holdY, game.pacer.drawn);
   const before = aim.index;
   aim.index = chooseBeacon(handles.beacons, taken, hxw, hyw, aim.index);
   // A new target (the last one collected): its label pulses (drawBeacons).
@@ -1652,8 +1736,12 @@ function draw(): void {
   // the player sees where to go instead of steering by an arrow to a point off screen.
   const fx = aim.index >= 0 ? handles.beacons[2 * aim.index]! : hxw,
     fy = aim.index >= 0 ? handles.beacons[2 * aim.index + 1]! : hyw;
+  // A target behind the hull: the hull, its beam and the gauge's room on the right, the target inside the margin on the left.
+  const behindFit =
+    fx < hxw ? (W - HULL_GAUGE_ROOM - FRAME_MARGIN) / (hxw - fx + SUBMARINE.length / 2 + HEADLIGHT.reach) : Number.POSITIVE_INFINITY;
   const fit = Math.min(
     params.pixelsPerMeter,
+    behindFit,
     (W - 2 * FRAME_MARGIN) / Math.max(1e-6, Math.abs(fx - hxw) + SUBMARINE.length),
     (H - 2 * FRAME_MARGIN) / Math.max(1e-6, Math.abs(fy - hyw) + SUBMARINE.length),
   );
@@ -1669,10 +1757,13 @@ function draw(): void {
   // Centred between them, moved toward the hull as far as needed to keep the hull FRAME_MARGIN
   // inside the view when both do not fit; never more sky than the top 15% of the view.
   // The hull's centre itself keeps HULL_SIDE_ROOM past its half length from the left side (hullReachX).
-  // Right of centre the hull keeps HULL_GAUGE_ROOM (hullReachRight), clear of the depth gauge's tags.
+  // Right of centre the hull's headlight keeps HULL_GAUGE_ROOM (hullReachRight), clear of the depth gauge's tags.
   const reachX = Math.max(0, W / 2 - FRAME_MARGIN) / k,
     hullReachX = Math.max(0, W / 2 - Math.max(FRAME_MARGIN, (SUBMARINE.length / 2) * k + HULL_SIDE_ROOM)) / k,
-    hullReachRight = Math.max(0, W / 2 - Math.max(FRAME_MARGIN, (SUBMARINE.length / 2) * k + HULL_GAUGE_ROOM)) / k,
+    hullReachRight =
+      Math.max(0, W / 2 - Math.max(FRAME_MARGIN, (SUBMARINE.length / 2 + HEADLIGHT.reach) * k + HULL_GAUGE_ROOM)) / k ||
+      // A view too narrow for the beam too (a phone): the bow alone keeps the room.
+      Math.max(0, W / 2 - Math.max(FRAME_MARGIN, (SUBMARINE.length / 2) * k + HULL_GAUGE_ROOM)) / k,
     reachY = Math.max(0, H / 2 - FRAME_MARGIN) / k;
   // Look-ahead: the view leads the hull by LEAD_TIME s (PORTRAIT_LEAD_TIME on a portrait view) of its velocity along x (LEAD_TIME_Y s across), at most LEAD_SHARE of the way
   // to the framing margin, eased over about LEAD_EASE s of game time (a bump or a blast does not jerk
@@ -1687,7 +1778,10 @@ function draw(): void {
     leadY = Math.max(-LEAD_SHARE * reachY, Math.min(LEAD_SHARE * reachY, camera.leadY));
   const atLeast = (framed: number, hull: number, lead: number) =>
     lead > 0 ? Math.max(framed, hull + lead) : lead < 0 ? Math.min(framed, hull + lead) : framed;
-  const cx = Math.max(hxw - hullReachRight, Math.min(hxw + hullReachX, atLeast((hxw + fx) / 2, hxw, leadX))),
+  // A target ahead keeps its ring left of the depth gauge's ruler where the hull's room allows (on a
+  // phone at the start the ring lay half under it).
+  const ringClear = fx > hxw ? fx + BEACON_CATCH - (W / 2 - GAUGE_WIDTH - ON_SCREEN_MARGIN) / k : Number.NEGATIVE_INFINITY;
+  const cx = Math.max(hxw - hullReachRight, Math.min(hxw + hullReachX, atLeast(Math.max((hxw + fx) / 2, ringClear), hxw, leadX))),
     cy = Math.min(-H / k / 2 + (0.15 * H) / k, Math.max(hyw - reachY, Math.min(hyw + reachY, atLeast((hyw + fy) / 2, hyw, leadY))));
   camera.x = cx;
   camera.y = cy;
@@ -1881,8 +1975,20 @@ function draw(): void {
     }
     tag.visible = true;
     tag.text = `beacon ${beaconName(i)}`;
-    // Under its beacon, kept clear of the depth gauge (which would cut a tag under it to "beac").
-    tag.position.set(Math.max(tag.width / 2 + 4, Math.min(W - GAUGE_WIDTH - tag.width / 2 - 4, bx)), by + Math.max(11, 3 * k));
+    // Under its beacon, kept clear of the depth gauge (which would cut a tag under it to "beac"); off
+    // the headlight's cone where it shows (a tag on the lit water reads as part of the beam): over
+    // the lamp, else under or over the ring.
+    const tx = Math.max(tag.width / 2 + 4, Math.min(W - GAUGE_WIDTH - tag.width / 2 - 4, bx)),
+      lamp = Math.max(11, 3 * k);
+    const lit = (y: number) =>
+      hyw < -HEADLIGHT.fromDepth && boxInBeam([tx - tag!.width / 2, y, tag!.width, tag!.height], [hxw, hyw, c.Angle.value[e]!], sx, sy, k);
+    const spots = [
+      by + lamp,
+      by - lamp - tag.height,
+      by + Math.max(lamp, BEACON_CATCH * k) + 4,
+      by - Math.max(lamp, BEACON_CATCH * k) - 4 - tag.height,
+    ];
+    tag.position.set(tx, spots.find((y) => !lit(y)) ?? spots[0]!);
     tagged++;
   }
   for (let i = tagged; i < tags.length; i++) tags[i]!.visible = false;
@@ -1891,6 +1997,7 @@ function draw(): void {
   // PICKUP_LIFE s of game time; the banner shows the newest one.
   for (let i = pickups.length - 1; i >= 0; i--) if (t - pickups[i]!.time > PICKUP_LIFE || t < pickups[i]!.time) pickups.splice(i, 1);
   for (const p of pickups) {
+    if (p.passed) continue;
     const u = (t - p.time) / PICKUP_LIFE,
       px = sx(p.x),
       py = sy(p.y),
@@ -2052,19 +2159,16 @@ function draw(): void {
     // none of its points is in the cone.
     aim.beam = false;
     if (hyw < -HEADLIGHT.fromDepth) {
-      const ha = c.Angle.value[e]!,
-        hc = Math.cos(ha),
-        hs = Math.sin(ha);
-      const lit = () => {
-        for (let i = 0; i <= 4; i++)
-          for (let j = 0; j <= 2; j++) {
-            // A point of the label's pill, back in world metres, then in the hull's frame.
-            const wx = hxw + (pointer.x - pointer.width / 2 - 7 + ((pointer.width + 14) * i) / 4 - hx0) / k,
-              wy = hyw - (pointer.y - pointer.height / 2 - 2 + ((pointer.height + 4) * j) / 2 - hy0) / k;
-            if (inHeadlight((wx - hxw) * hc + (wy - hyw) * hs, -(wx - hxw) * hs + (wy - hyw) * hc, SUBMARINE.length)) return true;
-          }
-        return false;
-      };
+      const ha = c.Angle.value[e]!;
+      // The label's pill: its text and 7 px, 2 px of padding round it.
+      const lit = () =>
+        boxInBeam(
+          [pointer.x - pointer.width / 2 - 7, pointer.y - pointer.height / 2 - 2, pointer.width + 14, pointer.height + 4],
+          [hxw, hyw, ha],
+          sx,
+          sy,
+          k,
+        );
       if (lit()) {
         aim.beam = true;
         // Up if the label is above the axis where it is, else down; the other way if it would leave the view.
@@ -2233,7 +2337,9 @@ function draw(): void {
   if (gaugeFrame++ % 6 !== 0) return;
   const end =
     state.over === 'won'
-      ? `All ${taken.length} beacons in ${clock(state.time)}!`
+      ? state.collected === taken.length
+        ? `All ${taken.length} beacons in ${clock(state.time)}!`
+        : `Finish · ${state.collected} of ${taken.length} beacons in ${clock(state.time)}`
       : state.over === 'sunk'
         ? `Hull breached · ${state.collected} of ${taken.length} beacons`
         : '';

@@ -9,21 +9,25 @@ import { SUBMARINE, seabedHeight, submarine } from '@bitphysics/projects';
 import { describe, expect, it } from 'vitest';
 import {
   BEACON_CATCH,
+  BEACON_PASSED,
   beaconLabel,
   beaconName,
   catchesBeacon,
   chooseBeacon,
   LEG_MAX,
   LEG_MIN_SHARE,
+  lastBeacon,
   layCourse,
   MINE_WARNING,
+  passedBeacon,
   RIDGE_WARNING,
   seabedBetween,
 } from '../../games/submarine/beacons';
 
 describe('submarine beacon pointer', () => {
   it('holds its target until it is collected, however near another passes, then takes the nearest left', () => {
-    const beacons = [100, -50, 200, -50],
+    // Closer than BEACON_PASSED apart, so that neither counts as passed by the boat between them.
+    const beacons = [100, -50, 125, -50],
       taken = [false, false];
     let current = -1,
       switches = 0,
@@ -31,7 +35,7 @@ describe('submarine beacon pointer', () => {
       nearest = -1;
     // The boat drifts to and fro across the line halfway between them, as a boat turning there does.
     for (let i = 0; i < 40; i++) {
-      const x = 150 + (i % 2 === 0 ? 3 : -3);
+      const x = 112.5 + (i % 2 === 0 ? 3 : -3);
       const next = chooseBeacon(beacons, taken, x, -40, current);
       if (current >= 0 && next !== current) switches++;
       current = next;
@@ -42,9 +46,9 @@ describe('submarine beacon pointer', () => {
     expect(nearestSwitches).toBe(39);
     expect(switches).toBe(0);
     // Held with the boat right on the other beacon (a stranger saw the target flip as they passed beacons).
-    expect(chooseBeacon(beacons, taken, 200, -50, 0)).toBe(0);
+    expect(chooseBeacon(beacons, taken, 125, -50, 0)).toBe(0);
     // With none held, the nearest; the collected one hands over to the nearest left; none left: -1.
-    expect(chooseBeacon(beacons, taken, 170, -50, -1)).toBe(1);
+    expect(chooseBeacon(beacons, taken, 120, -50, -1)).toBe(1);
     expect(chooseBeacon(beacons, [true, false], 100, -50, 0)).toBe(1);
     expect(chooseBeacon([100, -50, 200, -50, 300, -50], [true, false, false], 290, -50, 0)).toBe(2);
     expect(chooseBeacon(beacons, [true, true], 100, -50, 1)).toBe(-1);
@@ -68,6 +72,33 @@ describe('submarine beacon pointer', () => {
     expect(chooseBeacon(beacons, taken, 50, -20, 0, 0)).toBe(-1);
     // The target itself collected: the next along the course, whatever is nearer.
     expect(chooseBeacon(beacons, [true, false, false, false], 60, -20, 0, 0)).toBe(2);
+  });
+
+  it('a target overshot by more than BEACON_PASSED along x is passed: the target moves on ahead, never to one far behind; the finish is never passed', () => {
+    // A (0) by the start, B, C, D, E, F along x; F (x 620) is the finish.
+    const beacons = [40, -20, 160, -40, 280, -30, 400, -50, 510, -35, 620, -45];
+    expect(lastBeacon(beacons)).toBe(5);
+    const taken = [true, false, false, false, false, false];
+    // B overshot: held up to BEACON_PASSED behind (backing that far is about 8 s at 4 m/s) ...
+    expect(passedBeacon(beacons, 1, 160 + BEACON_PASSED - 0.5)).toBe(false);
+    expect(chooseBeacon(beacons, taken, 160 + BEACON_PASSED - 0.5, -40, 1)).toBe(1);
+    // ... and just past it B is passed and the target is C, ahead.
+    expect(passedBeacon(beacons, 1, 160 + BEACON_PASSED + 0.5)).toBe(true);
+    expect(chooseBeacon(beacons, taken, 160 + BEACON_PASSED + 0.5, -40, 1)).toBe(2);
+    // A stranger's run: A, B overshot, then D, E collected: the target stays ahead (F), never "B: 412 m behind".
+    const run = [true, false, false, true, true, false];
+    expect(chooseBeacon(beacons, run, 512, -35, 4, 4)).toBe(5);
+    for (let x = 400; x <= 700; x += 5) {
+      const i = chooseBeacon(beacons, run, x, -40, 5);
+      expect(beacons[2 * i]! - x).toBeGreaterThan(-Math.max(BEACON_PASSED, x - 620) - 1e-9);
+    }
+    // The finish overshot by 80 m is still the target (collecting it ends the run).
+    expect(passedBeacon(beacons, 5, 700)).toBe(false);
+    expect(chooseBeacon(beacons, run, 700, -40, 5)).toBe(5);
+    // A passed beacon can still be fetched: with the boat back by it, it is open again.
+    expect(passedBeacon(beacons, 1, 170)).toBe(false);
+    expect(() => passedBeacon(beacons, 6, 0)).toThrow(/passedBeacon: i/);
+    expect(() => passedBeacon(beacons, 0, Number.NaN)).toThrow(/passedBeacon/);
   });
 
   it('following the pointer from the surface, the distance shown falls until each beacon is taken', () => {
