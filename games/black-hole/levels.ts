@@ -11,8 +11,8 @@
  * Points (`levelPoints`): reaching the line scores POINTS_PER_LEVEL times the level's number plus a
  * speed bonus of a point for every whole second the winning attempt took under BONUS_SECONDS, so each
  * level is worth more than the one before, and the same on every field (a wall's hole count follows
- * the field's width: counted a hole each, level 2 was worth 280 on a desktop, 140 on a phone, and more
- * than levels 3 to 8). The level's opening line says what it is worth; the summary says how the
+ * the field's width: counted a hole each, level 2 would be worth 280 on a desktop, 140 on a phone, and
+ * more than levels 3 to 8). The level's opening line says what it is worth; the summary says how the
  * points were made.
  *
  * Level 1 is practice (`LevelSpec.practice`): a fall there costs no life, so a newcomer can learn to
@@ -163,9 +163,9 @@ export const WALL_GAP = 0.5;
  * Level 2's wall heights, m on the default field (see `LevelSpec.wallHeight`): as high as the field
  * allows (3 m below the line), so the start is as far out of the wall's well as it can be. A wall
  * pulls like a line of mass (about 20 kg/m: closed to the ship, its holes cannot be thinner), some
- * 2 G lambda / d: at 10 to 12 m up it pulled the waiting ship at 2.7 to 3 m/s^2 (half the default
- * thrust), and a ship nudged by taps was drawn up into it within 3.6 s at 16.5 to 17.5 m; at 18.5 to
- * 19 m a ship let drift after a tap reaches the wall in 4.1 s or more (7.5 s on the phone's field).
+ * 2 G lambda / d: at 10 to 12 m up it would pull the waiting ship at 2.7 to 3 m/s^2 (half the default
+ * thrust), and at 16.5 to 17.5 m draw a ship nudged by taps up into it within 3.6 s; at 18.5 to 19 m
+ * a ship let drift after a tap reaches the wall in 4.1 s or more (7.5 s on the phone's field).
  */
 export const LEVEL2_WALL_HEIGHT: readonly [number, number] = Object.freeze([18.5, 19]);
 
@@ -195,8 +195,9 @@ const DIAGONAL_REACH = 0.62;
 
 /**
  * The widest a wall's gap may be, as a share of the field's width: on the phone's 20 m field level
- * 2's gap is 8 m and runs to the field's edge (with 0.32, 6.4 m between two stretches of wall, the
- * bold route-flying newcomer of scripts/black-hole-levels.mjs cleared 4 % of its tries there; now 50 %).
+ * 2's gap is 8 m and runs to the field's edge, wide enough that a bold newcomer flying straight for it
+ * gets through (a narrower gap, 6.4 m between two stretches of wall, rarely lets one through; the
+ * route-flying player of scripts/black-hole-levels.mjs checks this).
  */
 export const WALL_GATE_SHARE = 0.4;
 
@@ -212,8 +213,8 @@ const WALL_FILL_GAP = 0.4;
  * between them; horizons 0.35 to 0.45 m, so it asks no more of a slow player than levels 2 and 4
  * do: test/games/black-hole-curve.test.ts); level 4 four holes, one across the straight path up and one on each diagonal, small
  * (horizons 0.5 to 0.85 m: a hole's pull matches the thrust within sqrt(c^2 r / (2 a)) of its centre,
- * which grows with r, so with level 1's 0.6 m holes grown to 1.1 m level 4 was where steering lost
- * to the pull); level 5 a second hole across the path, the holes no bigger; from level 6 the holes
+ * which grows with r, so with level 1's 0.6 m holes grown to 1.1 m steering would lose to the pull on
+ * level 4); level 5 a second hole across the path, the holes no bigger; from level 6 the holes
  * grow again step by step (to 1, 1.1, 1.2 m) and drift, slowly at first (0.35, then 0.6, 0.8 m/s);
  * from level 8 the fuel is limited (18 s, then 15 s down to 5 s); from level 9 a fifth hole, then a
  * hole more every second level (up to MAX_HOLES), bigger (radius up to 2 m) and faster (up to 3 m/s).

@@ -158,9 +158,9 @@ let replay: BlackHoleReplay;
  * Steps of the predicted path drawn ahead of the ship: 3 s, as long as the pad's. A wall of holes
  * (levels 2 and 3) pulls like a line of mass, harder than the thrust within some 6 m; a pilot that
  * flies up and steers by the path to keep it clear (scripts/black-hole-levels.mjs, reacting every
- * 0.3 s) fell in on level 2 three times in three (every field of eight) seeing 1 s ahead, 0.75 times
- * a level seeing 2 s. A 2 s path stopped mid-field, short of the wall's gap, and did not say whether
- * the ship would make it; 3 s of it reaches the wall from the pad.
+ * 0.3 s) falls in on level 2 nearly always seeing 1 s ahead, and often seeing 2 s. A 2 s path stops
+ * mid-field, short of the wall's gap, and does not say whether the ship will make it; 3 s of it
+ * reaches the wall from the pad.
  */
 const PATH_STEPS = 180;
 /**
@@ -242,7 +242,7 @@ const PATH_WARN = 0xff5a4a,
 /**
  * The field for the stage's shape: on a wide screen 32 m across and as tall as the stage allows
  * within 24 to 30 m, so the field fills it; on a phone held upright a tall 20 x 30 m one (the wide
- * field was a band across its middle).
+ * field would be a band across its middle).
  */
 function fieldForStage(): { width: number; height: number } {
   const stage = pageLayout().stage;
@@ -441,9 +441,9 @@ function letGo(): void {
 /**
  * A tap: an arrow let go within TAP_MS (wall clock) of its press thrusts for exactly TAP_STEPS steps
  * from the step it began (0.15 s: from rest a nudge of about 0.16 m/s, ./rules.ts THRUST_RAMP), however
- * short the press and however many steps a slow frame ran meanwhile. A finger's tap (down and up
- * between two steps) thrust for no step at all; a key's thrust ran as many steps as the frames
- * between its press and release held, so the same tap nudged the ship more on a loaded machine.
+ * short the press and however many steps a slow frame runs meanwhile, so a finger's tap (down and up
+ * between two steps) still thrusts, and the same tap nudges the ship as much on a loaded machine as
+ * on a fast one.
  */
 const TAP_STEPS = 9,
   TAP_MS = 250;
@@ -1298,7 +1298,7 @@ app.stage.addChild(scoreText);
 /** Draws the rising "+N" of the last crossing while it lasts. */
 function drawScorePop(): void {
   const age = performance.now() - scorePop.start;
-  // A level's points go when the next level begins (they hung over level 2's wall when Enter came soon).
+  // A level's points go when the next level begins, so they never hang over the next level's wall.
   scoreText.visible = age >= 0 && age < SCORE_POP_MS && scorePop.points > 0 && (!run || run.waiting);
   if (!scoreText.visible) return;
   const cam = renderer.camera;
@@ -1386,8 +1386,8 @@ function startDeath(): void {
 
 /**
  * Whether the words of the last fall stay up: after a fall in levels the new ship waits parked at the
- * start (./levels.ts `LevelRun.parked`) until the player thrusts, and the words say so until then (they
- * faded after DEATH_TEXT_MS, and a player reading the screen missed the life lost).
+ * start (./levels.ts `LevelRun.parked`) until the player thrusts, and the words say so until then, so
+ * a player who looks at the screen late still sees the life lost (not faded after DEATH_TEXT_MS).
  */
 const deathWaits = (): boolean =>
   run !== null && !bh.over && run.parked && !run.waiting && bh.thrust === 'none' && death.count > 0 && !replay.player && bh.falls > 0;
@@ -1534,8 +1534,8 @@ function drawPathEnd(lx: number, ly: number, color: number): void {
   const top = cam.toScreenY(playField.height) + 4,
     bottom = cam.toScreenY(0) - 4;
   const ly2 = down ? Math.min(bottom - pathLabel.height, ey + off) : Math.max(top + pathLabel.height, ey - off);
-  // Off the path's dots (and the pad's side paths): beside the climb up the middle it sat on the
-  // fainter path holding ↖ or ↗.
+  // Off the path's dots (and the pad's side paths): beside the climb up the middle it would sit on
+  // the fainter path holding ↖ or ↗.
   placeOffDots(pathLabel, at, ly2, x0, top, x1, bottom, 10);
 }
 
@@ -1632,7 +1632,7 @@ function drawCoach(x: number, sx: number, sy: number, k: number): void {
     bottom = cam.toScreenY(0) - 4 - coachText.height / 2;
   // Kept inside the field: a line wider than the room beside the ship slides toward the ship.
   const tx = right ? Math.min(sx + gap, x1 - coachText.width) : Math.max(sx - gap, x0 + coachText.width);
-  // Off the path's dots and the ship: beside the ship on the pad it sat on the path holding ↗ (or ↖).
+  // Off the path's dots and the ship: beside the ship on the pad it would sit on the path holding ↗ (or ↖).
   const fieldTop = cam.toScreenY(playField.height) + 4,
     fieldBottom = cam.toScreenY(0) - 4;
   placeOffDots(coachText, tx, Math.max(top, Math.min(bottom, sy - 0.2 * k)), x0, fieldTop, x1, fieldBottom);
@@ -1751,7 +1751,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
     // moving. The thrust is set for the prediction only (the field, not setThrust: no exhaust, no
     // input recorded) and put back at once.
     // Paused, the path is the course at the moment of the pause: arrows pressed while the world
-    // stands still do not redraw it (trying each way with the clock stopped made levels 1-3 trivial).
+    // stands still do not redraw it (trying each way with the clock stopped would make levels 1-3 trivial).
     const liveThrust = bh.thrust;
     if (shell.paused) bh.thrust = pausedThrust;
     const fromPad = run?.parked === true && bh.thrust === 'none' && canThrust(bh, run);
@@ -1853,7 +1853,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
       for (const fx of [0, 0.5, 1]) for (const fy of [0, 1]) addDot(b.x + fx * b.width, b.y + fy * b.height);
     }
     // Nor over a fall's words (in the field's middle), and first tried in the field's lowest quarter,
-    // under the holes (the middle of the field hid them).
+    // under the holes (in the middle of the field they would hide them).
     if (deathText.visible) {
       const b = deathText.getBounds();
       for (let fx = 0; fx <= 1; fx += 0.125) for (let fy = 0; fy <= 1; fy += 0.25) addDot(b.x + fx * b.width, b.y + fy * b.height);

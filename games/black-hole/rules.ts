@@ -168,7 +168,7 @@ export interface BlackHoleOptions {
   lives?: number;
   /**
    * How long the sideways part of the thrust takes to build up, s, in [THRUST_RAMP.up, 2]: a gentler
-   * sideways engine for a narrow field (a phone's, where a brief tap of → drifted off the edge).
+   * sideways engine for a narrow field (a phone's, where a brief tap of → would drift off the edge).
    * Default THRUST_RAMP.up (the sideways part builds as fast as the rest). See `rampThrust`.
    */
   sideRamp?: number;

@@ -10,12 +10,12 @@
  * front rim's inner end and the backboard (`throughHoop`). Only balls released below the rim count
  * (`SHOT_LINE_GAP`), so a ball dropped straight in from above is no basket. The round's clock starts
  * with the player's first basket: until then the player warms up, learning the aim with no time
- * running (a first playtest's strangers, clocked from their first throw, scored only when paused).
+ * running, so the minute is spent scoring rather than finding out how a throw works.
  *
  * The net (`NET`, `netContact`) hangs under the rim and lets a ball in only from above: one thrown up
  * from under the hoop is stopped by the net's bottom and drops back, and one coming from the side
- * below the rim bounces off the net's side, as a real net does (before, balls flew up through the
- * drawn net and the rim's opening).
+ * below the rim bounces off the net's side, as a real net does, so no ball passes through the drawn
+ * net or up through the rim's opening.
  *
  * A throw is a slingshot (`slingVelocity`): press where the ball should start, pull back and let go;
  * the ball leaves opposite to the pull, faster the longer the pull, and `throwPath` is the dotted

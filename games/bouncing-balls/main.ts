@@ -194,7 +194,7 @@ const HIGH_COLOR = 0x9aa4b5;
 /** The aiming dots of a throw from above the rim's line: lighter than HIGH_COLOR, to stand out on the wall. */
 const HIGH_AIM_COLOR = 0xe6ebf3;
 const GOLD_COLOR = 0xffd23f;
-/** The best round's points (a basket's points: ball x streak); baskets were the score before. */
+/** The best round's points (a basket's points: ball x streak), kept in the browser's storage under this key. */
 const BEST_KEY = 'bitphysics.bouncing-balls.best-points';
 
 /** The best score kept in local storage (0 when none, or storage is unavailable). */
@@ -387,8 +387,8 @@ function keepLeavingFree(world: PhysicsWorld): void {
  * After each (sub)step's collide: a leaving ball goes on as if the balls round it were not there,
  * unless it touches the box, a ramp or the hoop: then it stops leaving and bounces as any ball does.
  * The balls it passes are pushed aside, not ahead: of what the collide did to them, the part along the
- * thrown ball's way is taken back (a ball pushed ahead of it, up through the heap, was in its way
- * again when the leave ended, and it ploughed).
+ * thrown ball's way is taken back (a ball pushed ahead of it, up through the heap, would be in its
+ * way again when the leave ended, and it would plough).
  */
 function leaveFreely(world: PhysicsWorld): void {
   if (leaving.size === 0) return;
@@ -711,7 +711,7 @@ function playHoop(world: PhysicsWorld): void {
 /**
  * The round's last throw: when the clock reaches 0 with a pull under way, the round waits for it to be
  * let go (`aiming`), then for the ball it throws (`ball`, its id) to score or miss, and only then is
- * time up: a throw being aimed as time ran out was lost. No new press starts meanwhile.
+ * time up, so a throw being aimed as time runs out is not lost. No new press starts meanwhile.
  */
 let lastCall = { aiming: false, ball: 0 };
 
@@ -860,7 +860,7 @@ const HOOP_HALF_SPAN = 1.5;
  * Marks what each ball in flight touched in the last step (from the step's contact begin events), for
  * its basket's style (hoop.ts ShotStyle): a side wall or the floor of the box (a boundary face) or a
  * ramp makes it a trick shot; the box's top (the ceiling) does not (a lob off it is the easy way
- * up, and as a trick shot it was the best play): it only ends the swish, as anything else does but
+ * up, and as a trick shot it would be the best play): it only ends the swish, as anything else does but
  * the balls round it as it leaves the heap (its first LEAVE_MAX_SECONDS).
  */
 function markTouches(world: PhysicsWorld): void {
@@ -1097,9 +1097,9 @@ function local(event: PointerEvent): [number, number] {
  * pulls of about 55 to 140 px on a phone (234 px full) and 120 to 250 px on a desktop (420 px), and
  * the window of pull lengths that still score is some 15 px wide (phone) and 24 px (desktop), of
  * sideways pull 9 and 16 px (medians of `node scripts/bouncing-balls-reach.mjs --pull 420,234`). At
- * 30 % of the shorter side (117 px on a phone, 210 px on a desktop) they were 7 and 12 px, 4 and 8 px.
+ * 30 % of the shorter side (117 px on a phone, 210 px on a desktop) they would be 7 and 12 px, 4 and 8 px.
  * Not longer on a phone: a throw from 1.5 m over the floor of its box has some 170 px of screen
- * under it to pull into (at 75 %, 292 px, the steepest baskets took up to 177 px).
+ * under it to pull into (at 75 %, 292 px, the steepest baskets would take up to 177 px).
  * The same for every press, wherever it begins, so a pull's power is a function of its length alone:
  * a px of pull is at most KNEE_SLOPE / fullPull of speed (0.28 % of the top speed at 420 px, a desktop's;
  * 0.5 % at its 230 px least, a phone's). Pointer
@@ -1174,7 +1174,7 @@ const START_CLEARANCE = 0.02;
  * box's walls; null where no ball can start: outside the box (the stand under its floor is room to
  * pull a throw back into, not to start one) or where moving it off one wall puts it into another.
  * A press there starts nothing: a ball dropped in the box's corner or pushed off a ramp by the
- * solver, never thrown, read as a broken throw.
+ * solver, never thrown, would read as a broken throw.
  */
 function startSpot(x: number, y: number): [number, number] | null {
   const { box, segments } = layoutOf(TALL);
@@ -1433,8 +1433,8 @@ canvas.addEventListener('pointercancel', (event) => release(event, true));
  * The dotted arc of the throw the pointer would make now: its points, m (flat x, y pairs), or [] when
  * not pulling. Only the start of the flight (arcSeconds: to just past its apex), and only up to its
  * first touch: it ends where the ball would meet a wall, a ramp, the box's top, the hoop or a ball (the
- * red cross), so where a bounce sends it is the player's to judge. An arc that went on through its
- * first bounce let a stranger wiggle the pull until the dots dropped through the hoop.
+ * red cross), so where a bounce sends it is the player's to judge: an arc drawn through its first
+ * bounce would let a player wiggle the pull until the dots dropped through the hoop, with no aim.
  */
 function aimPath(): number[] {
   if (pointerId === -1 || !dragged || inCancelZone() || refused()) return [];
@@ -1476,8 +1476,8 @@ function aimSeconds(): number {
 }
 /**
  * How much longer the aiming arc is in the tall box: a phone draws the court at some 36 px a metre
- * (a desktop 56), so the same 0.6 s of flight was a third shorter on its screen, most of it under the
- * thumb's side of the ball, and the strangers found the phone the hardest to aim (2 of 5 for fun).
+ * (a desktop 56), so the same 0.6 s of flight would be a third shorter on its screen, most of it under
+ * the thumb's side of the ball; 1.5 times longer, it spans about as many pixels as a desktop's.
  */
 const TALL_AIM_SCALE = 1.5;
 /**
@@ -1694,7 +1694,7 @@ function drawPointer(): void {
   const ox = cam.toScreenX(t.x),
     oy = cam.toScreenY(t.y),
     or = cam.toScreenLength(t.radius);
-  // A grey (too high) throw's dots are drawn lighter than its ball: grey dots were lost on the wall.
+  // A grey (too high) throw's dots are drawn lighter than its ball: grey dots are lost on the wall.
   const thrownColor = mayScore(hoopSpots(TALL)[round.spot]!, t.y) ? PLAYER_COLOR : HIGH_AIM_COLOR;
   // The band: thicker and warmer the harder the pull (white, gold, red at full power).
   const power = Math.min(1, Math.hypot(t.vx, t.vy) / MAX_THROW_SPEED);
@@ -2071,7 +2071,7 @@ function drawCourt(): void {
   court.rect(x1, y0 - w, w, y1 - y0 + w + floor).fill(0x3a4252);
   court.rect(x0, y0, x1 - x0, 2).fill(0x5b6577);
   // The stand under the floor, down to the canvas' bottom: on a tall page (anchorCourt) the spare height
-  // under the box read as an empty strip of page; here it is the steel base the court stands on.
+  // under the box would read as an empty strip of page; here it is the steel base the court stands on.
   const base = y1 + floor;
   if (cam.height > base + 1) {
     court.rect(x0 - w, base, x1 - x0 + 2 * w, cam.height - base).fill(0x262c37);

@@ -6,7 +6,7 @@
  * a hand that is a little off still scores. No DOM: the tests and scripts/bouncing-balls-reach.mjs
  * run it in Node.
  *
- * "Natural" starts: where a stranger throws from, the lower part of the box above the pile of
+ * "Natural" starts: where a newcomer throws from, the lower part of the box above the pile of
  * balls on its floor (NATURAL_BAND), every NATURAL_PITCH m across it, clear of the ramps.
  */
 import {

@@ -38,15 +38,15 @@ export const INTRO_HOLD = 1.8;
 
 /**
  * Upright, the castle's view stays this long after a throw's verdict, s, before the camera goes back
- * to the catapult: what the stone set off is still falling when the verdict shows (at 2.5 s the
- * camera left a tower mid-fall), and the castle is off the screen from the aim view.
+ * to the catapult: what the stone set off is still falling when the verdict shows (a tower can take
+ * longer than 2.5 s to come down), and the castle is off the screen from the aim view.
  */
 export const UPRIGHT_WATCH = 4.5;
 
 /**
  * Upright, the aim view shows at least this many screen pixels a metre: the catapult (4 m across with
- * its stones) about 120 px wide on a 390 px phone, its cup a target for a finger. Level 9's whole
- * field fitted to that width was 14 px a metre.
+ * its stones) about 120 px wide on a 390 px phone, its cup a target for a finger; a wide level's
+ * whole field fitted to that width would be half that (level 9's, 14 px a metre).
  */
 export const AIM_PX_PER_M = 28;
 

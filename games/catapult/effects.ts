@@ -183,7 +183,7 @@ export class Effects {
           b.vy[k] = (b.vy[k]! - g * dt) * damp;
         } else b.vy[k] = b.vy[k]! - g * dt;
         // A chip or a bit of confetti that reaches the ground (a hill's top, a pit's floor) lies
-        // there: confetti fell on through the earth on a phone's screen.
+        // there, not falling on through the earth on a phone's screen.
         if (b.y[k]! + b.vy[k]! * dt < this.surface(b.x[k]!) + 0.02) {
           b.vy[k] = 0;
           b.vx[k] = 0;

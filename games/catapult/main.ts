@@ -345,9 +345,9 @@ const touch = isTouchDevice();
 /** A panel label with its key (a phone has no keys: the label alone). */
 const withKey = (label: string, key: string): string => (touch ? label : `${label} (${key})`);
 
-// The panel goes in before the game starts (made after, it narrowed the canvas already drawn and
-// the scene jumped). It sits in the left column under the controls, closed, so the scene has the
-// rest of the width (1060 px at 1280 x 800; a right-hand column left it 735 px, taller than wide);
+// The panel goes in before the game starts (made after, it would narrow the canvas already drawn and
+// the scene jump). It sits in the left column under the controls, closed, so the scene has the
+// rest of the width (1060 px at 1280 x 800; a right-hand column would leave it 735 px, taller than wide);
 // on a phone it is in the menu drawer.
 const panel = createPanel(
   params,
@@ -476,7 +476,7 @@ const GROUND_AT = 0.18;
  * On a screen taller than wide (an upright phone or tablet), where the ground (the lowest surface:
  * a pit's floor) sits: this fraction of the screen's height from the bottom, so the catapult, the
  * flight and the castle use the screen's middle, with the banner and (on a phone) the castle's
- * close-up in the sky over them. At 0.11 the scene sat in the bottom fifth under 70 % of empty sky.
+ * close-up in the sky over them. At 0.11 the scene would sit in the bottom fifth under 70 % of empty sky.
  */
 const UPRIGHT_GROUND = 0.28;
 /** Screens narrower than this (CSS px) get the tighter aim view. */
@@ -516,8 +516,8 @@ function viewFor(minX: number, maxX: number): View {
   // Tall (or a screen taller than wide): the ground GROUND_AT (upright UPRIGHT_GROUND) up, earth below it.
   if (aspect > 1.2 || height > 3 * top) {
     // Upright, the lowest surface (a pit's floor, where the stones and the wreck lie) UPRIGHT_GROUND
-    // up: under it lie the card saying how to play and the next-level button, and under them a pit's
-    // floor was hidden.
+    // up: under it lie the card saying how to play and the next-level button, which would otherwise
+    // hide a pit's floor.
     const low =
       aspect > 1.2 ? Math.min(0, ...lv.terrain.map((t) => t.maxY)) - UPRIGHT_GROUND * height : Math.min(-GROUND_AT * height, floor);
     return { minX, minY: low, maxX, maxY: Math.max(low + height, top) };
@@ -574,7 +574,7 @@ function shotViewRect(): View {
   if (upright()) return uprightView(lv.castleMinX - 0.8, rockRight() + 1);
   if (renderer.camera.width < NARROW) return viewFor(lv.castleMinX - 2.5, rockRight() + 2.5);
   // A desktop: the castle close, the rock's near half at the right edge (with 2.5 m either side and
-  // the whole rock it was hardly closer than the aim view, the castle a strip under 80 % of sky).
+  // the whole rock it would be hardly closer than the aim view, the castle a strip under much sky).
   return viewFor(lv.castleMinX - 1.2, lv.castleMaxX + ROCK.gap + ROCK.hx + 0.2);
 }
 /** Screen pixels a metre in view `v`, fitted (letterboxed) to the screen. */
@@ -733,8 +733,8 @@ app.canvas.addEventListener('pointerdown', (e) => {
   aim.moved = false;
   app.canvas.setPointerCapture(e.pointerId);
   showAimDom();
-  // The aim shows in the next frame even when the GPU is behind (the pacer would skip it): a quick
-  // drag showed no band and no arc at all.
+  // The aim shows in the next frame even when the GPU is behind (the pacer would skip it), so even a
+  // quick drag shows its band and arc.
   game.drawNext();
 });
 /** Sets the pull from the pointer's position in `e` (the drag from where it went down). */
@@ -844,8 +844,8 @@ function followThrow(world: PhysicsWorld, t: Tally): void {
   }
   // Where the projectile first reached the castle's span under its top, or else came down to the
   // ground (a hill's top, a pit's floor), tells short from long. (The first point under the
-  // castle's top on the way down was the throw's top for a low throw: "short by 8 m" for a stone
-  // that came down 1 m short.)
+  // castle's top on the way down would be the throw's top for a low throw: "short by 8 m" for a
+  // stone that came down 1 m short.)
   const path = lastThrow.path;
   let landX = x;
   for (let i = 2; i < path.length; i += 2) {
@@ -981,8 +981,8 @@ function positionOf(h: number): [number, number] {
 
 /**
  * Draws the last throw's trail and its verdict: a hit's points for VERDICT_SHOWN seconds; a miss's
- * hint ("Long by 6 m: pull less, or aim lower") until the player presses to aim again (it faded
- * with the hit's time, and a stranger who looked back at the castle after a later miss saw none).
+ * hint ("Long by 6 m: pull less, or aim lower") until the player presses to aim again, so a player
+ * who looks back at the castle after a miss still finds the hint there.
  */
 function drawThrow(world: PhysicsWorld): void {
   const cam = renderer.camera;
@@ -1009,10 +1009,10 @@ function drawThrow(world: PhysicsWorld): void {
   if (verdictText.text !== lastThrow.verdict) verdictText.text = lastThrow.verdict;
   verdictText.style.fill = lastThrow.good ? 0xffe066 : 0xffffff;
   verdictText.style.fontSize = lastThrow.good ? 34 : app.screen.width < 600 ? 16 : 20;
-  // Wrapped to the screen's width less a margin: on a phone a long hint ran off the left edge.
+  // Wrapped to the screen's width less a margin, so on a phone a long hint stays on the screen.
   verdictText.style.wordWrapWidth = Math.max(120, app.screen.width - 24);
-  // A hit's points shrink away in their last third rather than fade: a faded popup let the confetti
-  // of a cleared level show through it, as if drawn over it. Opaque, it stays over the confetti.
+  // A hit's points shrink away in their last third rather than fade: a faded popup would let the
+  // confetti of a cleared level show through it, as if drawn over it. Opaque, it stays over the confetti.
   verdictText.scale.set(lastThrow.good ? Math.max(0, Math.min(1, 3 * (1 - age / VERDICT_SHOWN))) : 1);
   const half = verdictText.width / 2 + 8;
   verdictText.x = Math.min(Math.max(cam.toScreenX(lastThrow.at[0]), half), app.screen.width - half);
@@ -1040,7 +1040,7 @@ let shownScore = 0;
  * The readout's rows (and level score) computed in the last frame, and the frames drawn before it
  * (the pacer's count). They are written once that frame has been drawn: a frame the GPU was too
  * busy for is skipped and the canvas keeps the one before, and the readout must not run ahead of the
- * banner (it said "score 50" beside a banner's "Score 0"). Where every frame is drawn the readout
+ * banner (saying "score 50" beside a banner's "Score 0"). Where every frame is drawn the readout
  * follows one frame behind.
  */
 let pendingRows: { score: number; rows: string[] } | null = null;
@@ -1066,7 +1066,7 @@ const showNext = (visible: boolean, text?: string): void => {
   showNextButton(visible, text);
   const bar = visible ? pageLayout().stage.querySelector<HTMLElement>('.bp-action') : null;
   if (!bar) return;
-  // Not upright, the strip under the ground is thin and the button at the bottom sat over the wreck:
+  // Not upright, the strip under the ground is thin and the button at the bottom would sit over the wreck:
   // it goes in the sky just under the banner that names it ("the button below"). Upright it stays in
   // the earth under the scene.
   const top = upright() ? '' : `${Math.round(banner.y + banner.height + 14)}px`;
@@ -1262,8 +1262,9 @@ function showBreaks(world: PhysicsWorld): void {
  * The arc preview: the stone's flight from the cup to where it first touches the ground, a bank of
  * earth, the rock or a castle piece as it stands now (previewFlight, at most PREVIEW_TIME s; after
  * the first level only its start, previewLimit), drawn as dots in the page over the canvas (aimDom)
- * on every pointer move and every frame: drawn on the canvas at the frame's pace it lagged the finger (a page at 3 fps while a stranger aimed showed the
- * arc of an earlier, weaker pull ending at the first tower; the stone flew to the far one).
+ * on every pointer move and every frame, so the arc follows the finger even on a slow page: drawn on
+ * the canvas at the frame's pace, a page at 3 fps would show the arc of an earlier pull while the
+ * stone flies by the latest one.
  */
 const PREVIEW_TIME = 6;
 /** Least distance between two dots of the arc preview on the screen, px. */
@@ -1453,8 +1454,8 @@ function drawArc(vx: number, vy: number): void {
   );
   placeDots(aimDom.dots, main.length, (i) => main[i] as [number, number, number, number]);
   aimShown.dots = main.length;
-  // Past the first touch, faint and hollow: where the throw was headed (a long throw's preview
-  // stopped at the bank or the tower in front, and the player could not see where it would go).
+  // Past the first touch, faint and hollow: where the throw was headed, so a long throw's preview
+  // does not stop at the bank or the tower in front without showing where the throw would go.
   const [endX, endY] = aimShown.end;
   const ghost: number[][] = [];
   // (None for a throw that comes down on the grass or a pit's floor: it has landed.)
@@ -1610,8 +1611,8 @@ function drawCloseUp(): void {
   const cam = renderer.camera;
   // In the shot view too once a throw that stopped short has settled with the castle off the screen.
   const castleOff = cam.toScreenX(lv.castleMaxX) > cam.width && lastThrow.verdict !== '';
-  // Not while aiming: the aim view holds the whole castle, and a close-up of it repeated what the
-  // field showed, under the arc's dots (a stranger's complaint).
+  // Not while aiming: the aim view holds the whole castle, and a close-up of it would repeat what
+  // the field shows, under the arc's dots.
   const show = upright() && !levelEnded && shotView && castleOff;
   closeShown = null;
   if (show) {
@@ -1627,9 +1628,9 @@ function drawCloseUp(): void {
       h = cam.toScreenLength(y1 - y0);
     // Two places: in the earth under the ground, over the card saying how to play while it shows;
     // and in the sky, the band from the banner's foot to CLOSE_GAP px over the castle's top or, lower,
-    // the catapult's arm (3.2 m up). The earth's (it was a third of the screen of plain earth, and
-    // the sky is where the stone flies), unless a pull's band crosses it and not the sky's or it has
-    // too little room: the close-up moves out of the aim's way (it hid the band a stranger pulled).
+    // the catapult's arm (3.2 m up). The earth's (a third of the screen of plain earth, while the
+    // sky is where the stone flies), unless a pull's band crosses it and not the sky's or it has
+    // too little room: the close-up moves out of the aim's way, never hiding the band being pulled.
     const ground = cam.toScreenY(floor);
     const sky: [number, number] = [
       (banner.text !== '' ? banner.y + banner.height : 0) + 14,
@@ -1687,8 +1688,8 @@ function drawCloseUp(): void {
           o.visible = was[k]!;
         });
       }
-      // Next to the ground: low in the sky's band (at the band's top it hung under the banner with a
-      // screen of empty sky between it and the castle), high in the earth's (it stays put when the
+      // Next to the ground: low in the sky's band (at the band's top it would hang under the banner
+      // with a screen of empty sky between it and the castle), high in the earth's (it stays put when the
       // card under it goes).
       const bx = Math.round((cam.width - bw) / 2),
         by = Math.round(closeLow ? top : Math.max(top, bottom - bh));
@@ -1940,7 +1941,7 @@ function draw(world: PhysicsWorld, alpha: number): void {
     // Before the first throw the level's name stands where its score (0) will be.
     const rule = shots.length === 0 ? `\nStars: ${starRule}\n${narrow ? DOWN_RULE_SHORT : DOWN_RULE}` : '';
     const head = shots.length === 0 ? `Level ${params.level}: ${lv.name}` : `Score ${score}`;
-    // "shots left", not "shots": a stranger read "shots 2" as the shots thrown.
+    // "shots left", not "shots": "shots 2" reads as the shots thrown.
     const running = `${head}  Total ${runningTotal}  ${shotsLeft} ${shotsLeft === 1 ? 'shot' : 'shots'} left${rule}`;
     if (clearedEarly(world)) {
       // Cleared with shots to spare: the player may move on now or throw again for more stars (the

@@ -385,7 +385,7 @@ const LEVELS: ReadonlyArray<{ name: string; shots: number; build: (b: Builder) =
     // A low wooden keep on a plinth of stone blocks, crowned with a stone battlement, behind a low
     // earth rampart (1.2 m high, 4.2 m in front): a flat throw skims over it into the keep, a lob
     // drops onto it; the second level asks for a little more than the first, not for one power in
-    // twenty at each angle (as a rampart 2 m high 3 m in front did).
+    // twenty at each angle (as a rampart 2 m high 3 m in front would).
     shots: 3,
     build: (b) => {
       const x = 12.5 + b.rng.range(-0.5, 0.5);
@@ -492,7 +492,7 @@ const LEVELS: ReadonlyArray<{ name: string; shots: number; build: (b: Builder) =
     // bridged pair (the keep) stands behind earth banks FORT_BANK m high, one between it and each
     // outer tower (FORT_GAP further out to make room): a tower knocked over falls on a bank, not on
     // the next tower, so no single throw brings half the fortress down (with the towers one pitch
-    // apart one lob at 30 degrees and 80 % power did) and clearing it takes throws at each tower.
+    // apart one lob at 30 degrees and 80 % power would) and clearing it takes throws at each tower.
     shots: 5,
     build: (b) => {
       const x0 = 11 + b.rng.range(-1, 1);
@@ -676,7 +676,7 @@ function stoneTouches(world: PhysicsWorld, lv: Level, x: number, y: number, r: n
     const lx = c * dx + sn * dy,
       ly = -sn * dx + c * dy;
     // The distance from the box (0 inside it) against the radius: a stone passing a corner diagonally
-    // does not touch it (a square test widened by r on both axes stopped the preview short there).
+    // does not touch it (a square test widened by r on both axes would stop the preview short there).
     const ox = Math.max(0, Math.abs(lx) - p.half[0]),
       oy = Math.max(0, Math.abs(ly) - p.half[1]);
     if (ox * ox + oy * oy <= r * r) return true;
@@ -920,8 +920,8 @@ export function hasFallen(world: PhysicsWorld, p: Piece): boolean {
  * Whether piece `p` counts toward its level's share of pieces down (the stars and the clear): every
  * piece but one lying flat where the level's ground (a hill's top, a pit's floor) holds it at the
  * start, a box at least as wide as it is tall (a bottom row's block or plank): it can neither drop
- * nor tip, and counted it kept three stars out of reach however the castle above it was brought
- * down. A post standing on the ground counts (it tips over).
+ * nor tip, and counted it would keep three stars out of reach however the castle above it is
+ * brought down. A post standing on the ground counts (it tips over).
  */
 export function countsTowardStars(lv: Pick<Level, 'terrain'>, p: Piece): boolean {
   const onGround = p.startY - p.half[1] - surfaceAt(lv, p.startX) < 0.05;

@@ -18,7 +18,7 @@
  * holds on maps of where the real bursts' hot stars go; see each level).
  *
  * A level is shown as lit (`clearShown`) CLEAR_DELAY after its last lantern lit, once every
- * lantern's glow (`glowOf`, rising over GLOW_RISE) is full: the banner no longer comes up while the
+ * lantern's glow (`glowOf`, rising over GLOW_RISE) is full, so the banner never comes up while the
  * last burst still hides the lantern it lit. The lit count the page shows counts a lantern from the
  * moment it lights (`shownLit`), with its glow coming up and the "Double!" over a burst that lit
  * two. A burst whose hot stars go cold having lit
@@ -155,8 +155,8 @@ export const LEVELS: readonly LanternLevel[] = Object.freeze([
     shell: 'peony',
     hold: true,
     // Two pairs 0.4 W apart on the diagonal, 0.5 W and more between the pairs: no two lanterns a
-    // quick burst lights together (the inner two of the pairs side by side, 0.28 W apart one over
-    // the other, were lit by a tap between them, and with them the level without a hold).
+    // quick burst lights together (with the inner two of the pairs side by side, 0.28 W apart one
+    // over the other, a tap between them would light both and clear the level without a hold).
     lanterns: [
       { x: 0.06, y: -0.16 },
       { x: 0.3, y: 0.16 },
@@ -313,8 +313,8 @@ export interface MeetCue {
  * with the pair within MEET_WINDOW sky widths of their closest gap. The burst point is MEET_LIFT over
  * the mean of the pair's and the other lantern's places at that burst (the pair's middle once that
  * lantern is lit).
- * A stranger told to hold "when the low two meet" could not tell when that was, nor that the press
- * must come a hold and a fuse earlier.
+ * The cue shows the player when to press: "hold when the low two meet" alone does not say when that
+ * is, nor that the press must come a hold and a fuse earlier.
  * @throws RangeError on a bad level or a non-finite t.
  */
 export function meetCue(level: number, sky: SkySize, t: number, lit: readonly boolean[]): MeetCue | null {
@@ -545,7 +545,7 @@ export function lightFromSparks(world: PhysicsWorld, show: FireworksShow, run: L
 /**
  * How many lanterns of `run` the player sees lit at world time `time` s: those lit at or before
  * `time` (their glow coming up). The page's "Lit n/m" counts these, in step with the lanterns'
- * glow and the "Double!" over a burst that lit two (counted once the glow was full, it said
+ * glow and the "Double!" over a burst that lit two (counted once the glow is full, it would say
  * "Lit 0/4" under a "Double!" and two glowing lanterns).
  */
 export function shownLit(run: LanternRun, time: number): number {

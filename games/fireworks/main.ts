@@ -257,8 +257,8 @@ function levelLit(): void {
 let clearShownAt = Number.NaN;
 /**
  * Set by a fresh world (a new level, a retry, R): the status row, the card and the action button are
- * written for it with the next frame, not the last frame's lines for the level before (the old
- * level's card stayed up over the new one until a frame had been drawn).
+ * written for it with the next frame, not the last frame's lines for the level before, so the old
+ * level's card never stays up over the new one.
  */
 let freshWorld = false;
 
@@ -616,8 +616,8 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
       .fill({ color: 0xfff3d0 });
   }
   // The flash of a burst: a glow, white at its core and warm at its rim, at the shell's last place that fades in
-  // FLASH_SECONDS, so a burst opens from a bright centre (its first frame was a ring of sparks, all at
-  // one radius, with nothing inside).
+  // FLASH_SECONDS, so a burst opens from a bright centre, not a ring of sparks all at one radius with
+  // nothing inside.
   flashing = 0;
   for (const sprite of flashSprites) sprite.visible = false;
   for (let k = Math.max(0, show.flashCount - FLASHES); k < show.flashCount; k++) {
@@ -639,7 +639,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   // In the lantern show, each new burst's front: a bright ring that races out to where its hot stars
   // will light lanterns (`sparkReach` of its scale) over BURST_RING_SECONDS,
   // easing out as the stars slow, and fades; a held burst's ring is wider and brighter, so a big
-  // burst reads as big from its first frames (it opened as a white ball, like a dud).
+  // burst reads as big from its first frames, not as a white ball, like a dud.
   for (let k = lanternShow ? Math.max(0, show.flashCount - FLASHES) : show.flashCount; k < show.flashCount; k++) {
     const f = 4 * (k % FLASHES),
       age = world.time - show.flashes[f + 2]!;
@@ -658,8 +658,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   drawLanterns(world);
   drawMisses(world);
   drawCombos(world);
-  // The status row in both modes (it was written only while lanterns were drawn, so free play kept
-  // the lantern show's lines).
+  // The status row in both modes, so free play never keeps the lantern show's lines.
   updateStatus();
   drawPause();
   drawCharge();
@@ -725,8 +724,8 @@ function drawCharge(): void {
   }
   if (lanternShow) {
     // Centred on the aim point, where the shell bursts: half an ellipse up to the stars' reach above
-    // it and half down to their (longer, drooping) reach below. One ellipse spanning both was centred
-    // below the aim (46 px at 1280 x 800) and read as a burst placed there.
+    // it and half down to their (longer, drooping) reach below. One ellipse spanning both would be
+    // centred below the aim and read as a burst placed there.
     const reach = sparkReach(LEVELS[run.level]!.shell, s);
     const w = show.params.sky.width;
     const rx = cam.toScreenLength(reach.side * w),
@@ -746,7 +745,7 @@ function drawCharge(): void {
   }
   // The fuse ring: pops in over 0.15 s (from twice its size), its track dark, the burnt part gold
   // from the top clockwise, a flickering spark at its head; pulsing white-gold once full. Round the
-  // pointer, or clear of a finger (above it; ./gauge.ts), where the finger hid it.
+  // pointer, or clear of a finger (above it; ./gauge.ts), where the finger would hide it.
   const [gx, gy] = gaugeCentre(pointerX, pointerY, pressTouch, cam.width, cam.height, FUSE_RING + 6, chargeLabel.height + 12);
   const pop = Math.min(1, held / 0.15);
   const R = FUSE_RING * (2 - pop);
@@ -907,7 +906,7 @@ canvas.addEventListener('pointerup', (event) => {
   const cam = renderer.camera;
   pauseAutoShow(show);
   // In the lantern show a second tap on a shell's spot while it still rises (its ring closing in)
-  // is taken as the same tap: a stranger who tapped again, unsure the first one took, lost a shell.
+  // is taken as the same tap: a player who taps again, unsure the first one took, loses no shell.
   if (lanternShow && targets.some((m) => Math.hypot(cam.toScreenX(m.x) - pointerX, cam.toScreenY(m.y) - pointerY) < SAME_SPOT_PX)) return;
   const x = cam.toWorldX(pointerX),
     y = cam.toWorldY(pointerY);
@@ -1177,7 +1176,7 @@ function starText(n: number): string {
 
 // ---- The card at a level's end: its stars (or why it was lost) and, after the finale, the show's --------
 
-// Near opaque: at 0.86 a lit lantern and its glow showed through the card on a phone.
+// Near opaque, so no lit lantern and its glow show through the card on a phone (as at 0.86).
 const card = createResultCard(app.stage, { label: 'level-card', bigSize: 48, background: 0x060914, backgroundAlpha: 0.97 });
 /** Room left under the card for the big action button at the stage's bottom, CSS px. */
 const CARD_BOTTOM = 96;
@@ -1200,7 +1199,7 @@ function lanternBoxes(all: boolean): [number, number, number, number][] {
 }
 /**
  * Over the sky while the player has paused: the sky dimmed, "Paused" and how to go on. A tap or click
- * on the paused sky resumes it and launches nothing (taps there were ignored without a word).
+ * on the paused sky resumes it and launches nothing, so no tap there goes unanswered.
  */
 const pause = createPauseOverlay({ tapToResume: true });
 app.stage.addChild(pause.container);
@@ -1242,8 +1241,8 @@ function drawCard(f: StatusFrame): void {
   const wrap = { cx: cam.width / 2, maxWidth: cam.width - 24, wrapWidth: Math.min(520, cam.width - 56) };
   // Low in the sky, just over the big button at the stage's bottom, where it covers the fewest of the
   // lanterns it is about (the lowest such place): a lost level's dark ones, so the player sees which
-  // was missed, and a lit level's every one, its glow the reward (low, it covered a lantern on a
-  // phone). Chosen once for what it says and the screen's size.
+  // was missed, and a lit level's every one, its glow the reward (a fixed low place would cover a
+  // lantern on a phone). Chosen once for what it says and the screen's size.
   const key = `${JSON.stringify(content)} ${cam.width}x${cam.height}`;
   if (key !== cardPlaced.key) {
     card.show(content, { ...wrap, bottom: cam.height - CARD_BOTTOM });
@@ -1310,8 +1309,8 @@ interface StatusFrame {
 /**
  * The lines computed in the last frame, and the frames drawn before it (the pacer's count). They are
  * written once that frame has been drawn: a frame the GPU was too busy for is skipped and the canvas
- * keeps the one before, and the row must not run ahead of the sky (it said "Lit 4/4" while the canvas
- * still showed the shell rising). Where every frame is drawn the row follows one frame behind.
+ * keeps the one before, and the row must not run ahead of the sky (saying "Lit 4/4" while the canvas
+ * still shows the shell rising). Where every frame is drawn the row follows one frame behind.
  */
 let pendingStatus: StatusFrame | null = null;
 let pendingDrawn = -1;
@@ -1344,8 +1343,8 @@ function statusFrame(): StatusFrame {
   } else {
     // The shells still to launch count down in the numbers (one line on a phone); the goal says how many the level gives.
     // Every lantern lit, their glow coming up (CLEAR_DELAY before the card): the goal line says so at
-    // once, with the count at n/n (the card's "All lanterns lit!" came seconds after "Lit 4/4" when
-    // frames were slow).
+    // once, with the count at n/n (the card's "All lanterns lit!" can come seconds later when frames
+    // are slow).
     goal = lost
       ? `Out of shells! ${shownLit(run, time)} of ${run.lit.length} lit`
       : run.stars > 0

@@ -82,8 +82,8 @@ export const BURST_SPARKS_PER_STEP = 2000;
 
 /**
  * Time from launch to burst of a shell aimed higher than g FUSE^2 / 2 (7.1 m), s: a tap bursts this
- * long after it at every height the show aims at (targets start 12 m up). 1.2 s: at 2 s the shells
- * felt slow to players; a real shell's climb is slower still, but a game's tap must answer.
+ * long after it at every height the show aims at (targets start 12 m up). 1.2 s, so a tap answers
+ * quickly (2 s feels slow); a real shell's climb is slower still, but a game's tap must answer.
  */
 export const FUSE = 1.2;
 

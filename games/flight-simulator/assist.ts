@@ -74,8 +74,8 @@ export interface FlightState {
 
 /**
  * Full deflection of each control surface, degrees (the page's default; its panel can change it).
- * 25: a held key banks the aircraft 30 degrees in 0.8 s and 40 in 1.2 s (with 15 it took 1.4 s
- * to 30: players found it floaty).
+ * 25: a held key banks the aircraft 30 degrees in 0.8 s and 40 in 1.2 s, brisk enough that the
+ * controls do not feel floaty (15 would take 1.4 s to 30).
  */
 export const CONTROL_AUTHORITY = 25;
 
@@ -83,8 +83,8 @@ export const CONTROL_AUTHORITY = 25;
  * Full deflection of the ailerons as a multiple of the control authority (45 degrees at the default
  * 25, all the lifting surfaces take; the page caps a larger authority's there): they roll the
  * aircraft at up to about 1.7 rad/s at 130 m/s (1.5 at 1.6), so a 70 degree bank rolls level within
- * 0.9 s of the key's release and the turn stops there (at 1.2 the roll was 1 rad/s and a 0.7 s hold
- * turned 80 % of its heading after the release).
+ * 0.9 s of the key's release and the turn stops there (at 1.2 the roll would be 1 rad/s and a 0.7 s
+ * hold would turn 80 % of its heading after the release).
  */
 export const AILERON_SCALE = 1.8;
 
@@ -93,8 +93,8 @@ export const ASSIST = Object.freeze({
   /**
    * Bank at full sideways stick, rad (70 degrees: a 2.9 g level turn, about 14 degrees/s of heading
    * at 110 m/s, so a held key turns half round in about 13 s; the wing stays under `alphaLimit`
-   * down to about 95 m/s). With 45 a half turn took 38 s and the turning circle (2 km) was wider
-   * than the rings are apart: strangers found it too slow to steer.
+   * down to about 95 m/s), so the turning circle is tighter than the rings are apart (with 45 a
+   * half turn would take 38 s and the circle, 2 km, be wider than that gap).
    */
   maxBank: 70 * DEG,
   /**
@@ -113,9 +113,9 @@ export const ASSIST = Object.freeze({
   pathFade: 10 * DEG,
   /**
    * Aileron per radian of bank error (1/rad): full aileron is asked for until the bank is within 6
-   * degrees of the one asked for, so the wings roll level briskly when the stick is let go (with 2.5
-   * the last 15 degrees took 1.4 s, and the turn ran on 3 degrees of heading past the release:
-   * players overshot).
+   * degrees of the one asked for, so the wings roll level briskly when the stick is let go and the
+   * turn stops where it is released (with 2.5 the last 15 degrees would take 1.4 s, and the turn run
+   * on 3 degrees of heading past the release).
    */
   bankGain: 10,
   /** Aileron per rad/s of roll rate, s: damps the roll so that it stops at the bank asked for, not past it. */
@@ -151,9 +151,8 @@ export const ASSIST = Object.freeze({
    * Age of a touch of the stick sideways, s, up to which one let go is a tap: its bank (at most
    * `tapBank`) is held until the touch is this old, then the wings roll level. A tap of a bank key
    * (0.15 s) then banks the aircraft about 20 degrees and turns it about a degree; a touch let go
-   * later is let go at once. (With a tap held to 1.1 s, and a touch up to 0.9 s holding part of its
-   * bank, strangers found the aircraft stayed banked after the key was let go: a 150 ms tap was still
-   * 28 degrees banked 1 s after the release.)
+   * later is let go at once, so the aircraft does not stay banked after the key is let go (a tap held
+   * to 1.1 s would leave a 150 ms tap still 28 degrees banked 1 s after the release).
    */
   tapTime: 0.35,
   /** Largest bank a tap holds, rad (25 degrees). */
@@ -164,9 +163,9 @@ export const ASSIST = Object.freeze({
  * The bank that turns the aircraft at `speed` (m/s) at the rate the stick's bank `stickBank` (rad,
  * + right) turns it at the trim speed: a level coordinated turn's rate is g tan(bank) / V, so
  * tan(bank) = tan(stickBank) V / AIRCRAFT_TRIM_SPEED, at most `ASSIST.steepestBank` either way. A
- * held stick then holds a steady turn rate as the turn bleeds the speed (with the stick's bank
- * itself, a held full bank turned 13.5 to 15.7 degrees a second as the speed fell from 113 to 94 m/s,
- * and a stranger found a steady turn hard to hold).
+ * held stick then holds a steady turn rate as the turn bleeds the speed, so a steady turn is easy to
+ * hold (with the stick's bank itself, a held full bank would turn 13.5 to 15.7 degrees a second as
+ * the speed fell from 113 to 94 m/s).
  * @throws RangeError on a stickBank that is not finite or a speed that is negative or not finite.
  */
 export function steadyTurnBank(stickBank: number, speed: number): number {
@@ -268,7 +267,7 @@ export function assertMotion(where: string, position: readonly number[], velocit
 /**
  * The ground floor the assist keeps the aircraft above (`floorPath`): a held dive goes down as far as
  * `height` m above the ground (or the sea) and levels there, easing out of the dive over about `time`
- * s. A stranger held the dive key near the ground with the assist on and flew into it.
+ * s, so a dive key held near the ground with the assist on never flies the aircraft into it.
  */
 export const GROUND_FLOOR = Object.freeze({
   /** Height above the ground the floor lies at, m (under the 85 m to a ring's lowest edge: RING_CLEARANCE less its radius). */
@@ -329,7 +328,7 @@ export function assist(s: FlightState, input: PilotInput, state: AssistState, dt
   // Eased off or let go: the bank asked for never lies beyond the bank the aircraft has (nor short
   // of the stick's), so the wings stop rolling into the turn at once and roll back from where they
   // are, and the turn stops soon after the release (a target still 20 degrees ahead of the bank
-  // rolled the aircraft on into the turn for 0.3 s after the key was let go).
+  // would roll the aircraft on into the turn for 0.3 s after the key is let go).
   if (
     Math.abs(wanted) < Math.abs(state.bankTarget) &&
     Math.sign(s.bank) === Math.sign(state.bankTarget) &&
@@ -394,9 +393,9 @@ export function approach(value: number, target: number, rate: number, dt: number
 export const KEY_RAMP: KeyRamp = Object.freeze({
   /**
    * Growth rate of a held key's input, 1/s: with `from` 0.25 it is full after ln 5 / 4 = 0.40 s of
-   * holding (as the straight ramp was, so a held key banks as briskly), 0.12 after a 0.1 s tap and
-   * 0.31 after 0.2 s. (A straight ramp to full in 0.4 s gave
-   * 0.25 for a 0.1 s tap: strangers found the bank all or nothing; one to full in 1.25 s felt sluggish.)
+   * holding (as a straight ramp to full in 0.4 s is, so a held key banks as briskly), 0.12 after a
+   * 0.1 s tap and 0.31 after 0.2 s, so a tap gives a small bank and a hold a full one. (The straight
+   * ramp would give 0.25 for a 0.1 s tap, a bank all or nothing; one to full in 1.25 s is sluggish.)
    */
   rise: 4,
   /** Where the growth starts from (added to the input's size), fraction of full stick. */
@@ -419,8 +418,8 @@ export interface KeyRamp {
  * How the bank keys move their input (`rampKey`): a press asks at once for `start` (0.45 of full
  * stick, a bank of 31 degrees, of which the assist holds up to `ASSIST.tapBank` until the touch is
  * `ASSIST.tapTime` old, so a 150 ms tap turns the aircraft about 0.8 degrees), full stick after
- * ln(1.25 / 0.7) / 2.5 = 0.23 s held (at 0.55 s, strangers found the turn sluggish); released,
- * neutral in 1/12 s, so that the wings start back to level at once (in 0.25 s they first rolled on).
+ * ln(1.25 / 0.7) / 2.5 = 0.23 s held, so the turn answers briskly (0.55 s is sluggish); released,
+ * neutral in 1/12 s, so that the wings start back to level at once (in 0.25 s they would first roll on).
  */
 export const BANK_KEY_RAMP: KeyRamp = Object.freeze({ rise: 2.5, from: 0.25, fall: 12, start: 0.45 });
 
@@ -457,8 +456,8 @@ export function rampKey(value: number, direction: number, dt: number, ramp: KeyR
  * The throttle's response to Faster / Slower, fraction of full thrust: a press steps it at once to
  * the next multiple of `step` at least `least` away (28 % goes to 40 %, 35 % to 40 %), so a tap on
  * the phone's button changes the engine by a figure the readout shows (a held button moving it at
- * `rate` per second moved it 3 % in a short tap, or not at all when the press and release came in
- * one frame); held past `hold` s it goes on at `rate` per second.
+ * `rate` per second would move it 3 % in a short tap, or not at all when the press and release come
+ * in one frame); held past `hold` s it goes on at `rate` per second.
  */
 export const THROTTLE_KEY = Object.freeze({ step: 0.1, least: 0.05, hold: 0.35, rate: 0.4 });
 
@@ -482,8 +481,8 @@ export function throttleStep(throttle: number, direction: number): number {
 
 /**
  * Dead zone of the phone's stick (`stickResponse`), a share of its full travel: a finger resting near
- * the centre, or put down a little off it, asks for nothing (6 px of the 44 px travel; at 0.05, 2 px,
- * a stranger found the stick twitchy).
+ * the centre, or put down a little off it, asks for nothing (6 px of the 44 px travel), so the stick
+ * is not twitchy (at 0.05, 2 px, it is).
  */
 export const STICK_DEAD_ZONE = 0.14;
 /** Exponent of the phone's stick response past the dead zone (`stickResponse`): above 1, gentle near the centre and full at the rim. */

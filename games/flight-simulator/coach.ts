@@ -1,7 +1,8 @@
 /**
  * The flight simulator's coaching after the lessons: from ring 5 to the last, a short tip says where
  * the next ring lies from the line flown and what to do about it (./course.ts lessonTipText teaches
- * rings 1 to 4). A stranger found the coaching stopped after ring 4. Headless (no DOM), tested in node
+ * rings 1 to 4), so the player is coached to the last ring, never left without the next step.
+ * Headless (no DOM), tested in node
  * (test/games/flight-simulator-course.test.ts).
  */
 

@@ -13,8 +13,8 @@ import { ASSIST, assertMotion } from './assist';
 
 /**
  * Radius of a ring, m, to the middle of its tube: the aircraft passes when its centre crosses inside
- * (45 m, then 55 m, were a tight fit for players new to flying: with 55 the keys pilot of
- * scripts/flight-simulator-pilots.mjs passed 70 of 80 rings, with 65, 76).
+ * (wide enough for a player new to flying: a smaller radius such as 45 or 55 m is a tight fit;
+ * the keys pilot of scripts/flight-simulator-pilots.mjs measures the share of rings passed).
  */
 export const RING_RADIUS = 65;
 
@@ -24,8 +24,8 @@ export const RING_TUBE = 6;
 /**
  * How far from a ring's centre its plane may be crossed and still count as flown through, m: the
  * drawn tube's outer edge (RING_RADIUS + RING_TUBE). The flight-path marker is green inside it, so a
- * marker seen on the tube is a pass (a stranger's marker sat on the tube at 68 m, yellow, and the
- * pass test, then at RING_RADIUS, said "Missed").
+ * marker seen on the tube is a pass (a pass test at RING_RADIUS would call a marker on the tube, at
+ * 68 m, a miss).
  */
 export const PASS_RADIUS = RING_RADIUS + RING_TUBE;
 
@@ -64,7 +64,8 @@ export interface CourseOptions {
 /**
  * How far apart the rings are laid, m (`layCourse`): `near` plus up to `spread` at random, plus `far`
  * times the ring's difficulty. 600 to 850 m at first (4.5 to 6.5 s at 130 m/s), 950 to 1,200 m at
- * full difficulty; they were 800 to 1,800 m (6 to 14 s), and the course felt slow.
+ * full difficulty, so a ring comes every few seconds and the course keeps its pace (800 to 1,800 m,
+ * 6 to 14 s, would feel slow).
  */
 export const RING_STEP = Object.freeze({ near: 600, spread: 250, far: 350 });
 
@@ -85,7 +86,8 @@ export function ringDifficulty(i: number): number {
  * a turn of `turn` degrees (at random within it; 70 to 95 m to the side) to one side at the same
  * height (bank), ring 3 straight on `climb` m higher or lower (climb or dive), ring 4 a turn the
  * other way at the same height; rings 2 to 4 `step` m apart (7.7 s at 130 m/s: time to see and react;
- * a newcomer's reaction of 3 s leaves 4.7 s to steer). A stranger met a ring 120 m higher right after two rings that asked for nothing, and missed.
+ * a newcomer's reaction of 3 s leaves 4.7 s to steer), so no ring asks for a large change (such as
+ * 120 m higher) right after rings that asked for nothing.
  */
 export const LESSONS = Object.freeze({ turn: [4, 5.5] as const, climb: [30, 40] as const, step: 1000 });
 
@@ -242,7 +244,7 @@ export function crossRing(ring: Ring, a: readonly number[], b: readonly number[]
 /**
  * Seconds added to the course time for each ring missed: enough that a miss shows on the clock and
  * a clean run beats one that skips rings, small enough that a miss early on leaves the run worth
- * flying (with 20 s and a star for each miss, three misses left nothing to play for).
+ * flying (with 20 s and a star for each miss, three misses would leave nothing to play for).
  */
 export const MISS_PENALTY = 10;
 
@@ -408,8 +410,8 @@ export function relayText(ring: number, way: RingWay, compact: boolean): string 
 /**
  * The banner after a ring is flown through when another follows: where the next ring, `ring`
  * (0-based), lies `way` from the line flown, "Next, ring 6: to the left and lower", or "Next, ring 6:
- * straight ahead" (`ringWhere`, the lesson tip's words), so that a turn to it is seen coming (a
- * stranger heard of the next ring's side only after a miss, "is now ahead", `relayText`).
+ * straight ahead" (`ringWhere`, the lesson tip's words), so that a turn to it is seen coming before
+ * the ring is reached, not only after a miss ("is now ahead", `relayText`).
  * @throws RangeError on a ring that is not a non-negative integer.
  */
 export function nextRingText(ring: number, way: RingWay, compact: boolean): string {
@@ -662,8 +664,8 @@ export const LEFT_BEHIND_SPEED = 5;
 /**
  * How long the next ring may fall behind (the aircraft drawing away from it faster than
  * LEFT_BEHIND_SPEED) before it counts as missed, s (`leaveBehind`): a ring flown past to the side is
- * left behind, and the course moves on (./course.ts relayAfterMiss). Turning back to it took a
- * stranger about a minute (the design turn comes round at 3.6 degrees/s).
+ * left behind, and the course moves on (./course.ts relayAfterMiss), since turning back to it takes
+ * about a minute (the design turn comes round at 3.6 degrees/s).
  */
 export const LEFT_BEHIND_TIME = 1.5;
 
@@ -687,8 +689,8 @@ export function recedingSpeed(ring: Ring, position: readonly number[], velocity:
  * `behindFor` s (the aircraft drawing away from it faster than LEFT_BEHIND_SPEED without a break),
  * LEFT_BEHIND_TIME or more, it is missed (its status set) as if its plane were crossed outside it.
  * Returns what happened (empty when nothing did), as `flyRings` does: a ring passed to the side
- * beyond MISS_RANGE, or flown by without crossing its plane, was never counted, and the pilot had to
- * turn back to it.
+ * beyond MISS_RANGE, or flown by without crossing its plane, is not counted by `flyRings`, and
+ * without this rule the pilot would have to turn back to it.
  * @throws RangeError on a `behindFor` that is not finite and >= 0.
  */
 export function leaveBehind(rings: Ring[], behindFor: number): RingEvent[] {
@@ -746,8 +748,8 @@ export const RECOVERY_GRADIENT = 0.15;
  * and climbs (each was laid reachable from the one before); each is then raised to RING_CLEARANCE
  * above the ground under its new place where it would be lower. Ring `from` faces the aircraft.
  * Changes the rings in place; nothing when `from` is not a ring still ahead. Without this a miss
- * left the next ring laid from the missed one, often inside the aircraft's turning circle, and
- * turning round to it took half a minute.
+ * would leave the next ring laid from the missed one, often inside the aircraft's turning circle,
+ * half a minute's turn away.
  * @throws RangeError on a `position` that is not 3 finite numbers, a `heading` that is not finite,
  * or a `from` that is not an integer.
  */

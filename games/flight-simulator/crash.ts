@@ -2,8 +2,8 @@
  * The flight simulator's crash, drawn (nothing here touches the physics): a white flash over the
  * scene, a fireball of several puffs going from white-yellow through orange to dark red, pieces of
  * the aircraft thrown out and tumbling down to the ground, and a column of dark smoke that keeps
- * rising while the crash is in view. A stranger found the single pale fireball read as a disc, not
- * a crash. Timed by the clock (ms, performance.now), so it plays while the game is stopped.
+ * rising while the crash is in view, so it reads as a crash (a single pale fireball reads as a disc).
+ * Timed by the clock (ms, performance.now), so it plays while the game is stopped.
  */
 
 import {

@@ -1,7 +1,7 @@
 /**
  * The flight simulator's finish screen: what the card says at the end of the course (the time with
  * the misses' penalties, the stars, how it compares with the best) and the two ways on, Retry (R) and
- * Next course (Enter), each a button on the card. A stranger found nothing happened after the course.
+ * Next course (Enter), each a button on the card, so the end of the course always offers a way on.
  * Headless (no DOM), tested in node (test/games/flight-simulator-course.test.ts).
  */
 

@@ -1,7 +1,7 @@
 /**
  * Where the next ring's label goes so that it keeps clear of the boxes over the scene (the warning,
- * the banner, the lesson tip): a stranger diving under a ring above the view found the ring's label
- * hidden behind the tip at the top. Headless (no DOM), tested in node
+ * the banner, the lesson tip), so a ring above the view keeps its label readable rather than hidden
+ * behind the tip at the top. Headless (no DOM), tested in node
  * (test/games/flight-simulator-pacing.test.ts).
  */
 

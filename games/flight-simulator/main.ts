@@ -51,12 +51,12 @@ import {
   createActionButton,
   createButtonBar,
   createDomPauseOverlay,
+  createDomResultCard,
   createPanel,
   createStick,
   flagParam,
   getSound,
   numberParam,
-  onButtonPress,
   pageLayout,
   seedParam,
 } from '@bitphysics/game-kit';
@@ -234,8 +234,7 @@ const motion = { bank: 0, rollRate: 0, pathRate: 0 };
 /**
  * Whether the flight waits for the pilot: at the start and after a reset, and when the first lesson's
  * tip (ring 2) first shows (`showTip`), the game pauses until the pilot's first flight key or touch of the stick
- * (or P), so the tip is read before the ring comes (a stranger read the tips while the aircraft flew
- * on, and missed rings 2 to 6 in a row).
+ * (or P), so the tip is read before the ring comes rather than while the aircraft flies on past it.
  */
 let holding = true;
 /** Whether `shell` is set (a key pressed while the page loads finds none). */
@@ -566,11 +565,11 @@ function stepWorld(world: PhysicsWorld): void {
 function checkRings(time: number): void {
   const before = nextRing(rings);
   // A ring flown through or its plane crossed; else one left behind (./course.ts leaveBehind: flown
-  // past to the side, it never counted, and turning back to it took a stranger a minute).
+  // past to the side, it never counts, and turning back to it takes about a minute).
   let happened = flyRings(rings, prev, now, promisedRing(time));
   // A ring laid ahead after a miss and left behind before it was reached (the pilot still turning
-  // hard, over-correcting) is laid ahead again, with no miss: one over-correction costs one star (a
-  // newcomer holding a bank key lost a star every 6 s as each new ring fell behind the turn).
+  // hard, over-correcting) is laid ahead again, with no miss: one over-correction costs one star,
+  // not a star every few seconds as each new ring falls behind a held turn.
   const again = happened.length === 0 && before >= 0 && before === movedAhead && awayFor >= LEFT_BEHIND_TIME;
   if (happened.length === 0 && !again) happened = leaveBehind(rings, awayFor);
   // The next ring starts afresh.
@@ -624,8 +623,8 @@ function checkRings(time: number): void {
   if (next < 0) finish(time);
   // The first lesson's ring next (ring 2, the first turn: a plane turns by banking): the flight
   // waits while its tip is read, unless the pilot is flying it already (a key or the stick held: no
-  // key would come to go on with). The later lessons' tips show while the flight goes on (a
-  // stranger found a pause at every lesson ring broke the flow).
+  // key would come to go on with). The later lessons' tips show while the flight goes on, so a
+  // pause at every lesson ring does not break the flow.
   else if (next !== before && next === 1 && !steering()) {
     // Paused at once, not at the next step: the tip and the pause show in the same frame.
     holding = true;
@@ -772,8 +771,8 @@ shell.onWorldChange(() => {
 
 // The next ring: a thick tube (6 m) in flat bright yellow, so it still reads as a ring 2 km off on a
 // phone. The rings after it: a thin (2.5 m) pale tube, faint, so the chain of them toward the
-// horizon does not read as rings to fly through now (a stranger took the orange chain for the way
-// to go while the next ring was off to the side).
+// horizon does not read as rings to fly through now, nor as the way to go while the next ring is
+// off to the side.
 const ringGeometry = new TorusGeometry(RING_RADIUS, RING_TUBE, 10, 48);
 const laterGeometry = new TorusGeometry(RING_RADIUS, 2.5, 6, 48);
 const haloGeometry = new TorusGeometry(RING_RADIUS + 12, 2.5, 6, 48);
@@ -830,8 +829,8 @@ const beadMatrix = new Matrix4(),
 /**
  * Lays the guide's beads from `from` (the aircraft, m) through the next ring to the one after it; in
  * the cockpit view from the next ring on only: seen from the aircraft, the beads to the next ring
- * lie on the line of sight to it, and the nearest (5 m across, 50 m off) covered a ring 2 km away
- * (130 m across) whole, so that it showed only as its outline.
+ * lie on the line of sight to it, and the nearest (5 m across, 50 m off) would cover a ring 2 km away
+ * (130 m across) whole, so that it would show only as its outline.
  */
 function drawGuide(from: Vector3): void {
   const i = nextRing(rings);
@@ -980,7 +979,7 @@ function overlay(css: string): HTMLDivElement {
 }
 /**
  * The widest a message over the scene (banner, engine's note, tip) may be: it wraps inside the scene
- * with a 12 px margin each side (the phone's banner ran one line past both edges of the screen).
+ * with a 12 px margin each side, so the phone's banner never runs past the edges of the screen.
  */
 const MESSAGE_WIDTH = 'calc(100% - 24px)';
 const banner = overlay(
@@ -988,18 +987,23 @@ const banner = overlay(
 );
 banner.dataset.hud = 'banner';
 /**
- * The warning (STALL, PULL UP): one fixed place, the scene's top middle, over every other overlay
- * (the next ring's label was drawn over it, and it moved with the message column between the top
- * and the bottom). It flashes by its visibility, so that the column under it keeps still.
+ * The warning (STALL, PULL UP): one fixed place, the scene's top middle, over every other overlay,
+ * so the next ring's label never covers it and it does not move with the message column between the
+ * top and the bottom. It flashes by its visibility, so that the column under it keeps still.
  */
 const warningEl = overlay(
   `left: 50%; top: ${compact ? 6 : 8}px; transform: translate(-50%, 0px); z-index: 8; padding: 4px 16px; border-radius: 10px; background: rgba(120, 10, 10, 0.92); color: #fff; font: 800 22px system-ui, sans-serif; letter-spacing: 2px; white-space: nowrap; display: none;`,
 );
 warningEl.dataset.hud = 'warning';
-const endCard = overlay(
-  'left: 50%; top: 28%; width: min(88%, 420px); box-sizing: border-box; padding: 14px 18px; border-radius: 14px; background: rgba(8, 12, 20, 0.86); color: #eef3f8; font: 16px/1.45 system-ui, sans-serif; text-align: center; display: none;',
-);
-endCard.dataset.hud = 'end';
+/** The end card (game-kit's result card): the finish screen, or what the crash hit. Drags outside its buttons still reach the scene. */
+const endCard = createDomResultCard(layout.stage, {
+  name: 'end',
+  top: '28%',
+  width: 'min(88%, 420px)',
+  passThrough: true,
+  titleSize: 26,
+  lostColour: '#ff6b5a',
+});
 const showAgain = createActionButton('Fly again ▶', () => shell.reset());
 /** The pause overlay (game-kit's, over the stage): a tap on it resumes. */
 const pauseOverlay = createDomPauseOverlay(layout.stage, {
@@ -1114,51 +1118,33 @@ function updateHud(i: ReturnType<typeof instruments>): void {
   if (card === shownCard) return;
   shownCard = card;
   if (card === '') {
-    endCard.style.display = 'none';
+    endCard.hide();
     showAgain(false);
   } else if (state.phase === 'done') {
     showFinish();
   } else {
     // Crashed.
     const best = bestOf();
-    endCard.style.display = 'block';
-    endCard.replaceChildren();
-    const title = document.createElement('div');
-    title.style.cssText = 'font: 900 32px system-ui, sans-serif; color: #ff6b5a; letter-spacing: 1px;';
-    title.textContent = 'Crashed!';
-    endCard.style.border = '2px solid #ff6b5a';
-    const line = document.createElement('div');
-    line.textContent = `You hit the ${crashInto} at ${(crashReadings?.speed ?? 0).toFixed(0)} m/s · ${state.score} of ${total} rings.`;
-    const bestLine = document.createElement('div');
-    bestLine.style.cssText = 'color: #c7d3e0; font-size: 14px;';
-    bestLine.textContent = best
-      ? `Best: ${best.passed} of ${total} rings in ${clock(best.time)}`
-      : // A phone's readout gives only the height above the ground, not the sea-level "alt".
-        compact
-        ? 'Watch the height above ground: the hills reach 700 m.'
-        : 'Watch the height above ground: alt counts from sea level, and the hills reach 700 m.';
-    endCard.append(title, line, bestLine);
+    endCard.show({
+      title: 'Crashed!',
+      lost: true,
+      lines: [
+        {
+          text: `You hit the ${crashInto} at ${(crashReadings?.speed ?? 0).toFixed(0)} m/s · ${state.score} of ${total} rings.`,
+          strong: true,
+        },
+        best
+          ? `Best: ${best.passed} of ${total} rings in ${clock(best.time)}`
+          : // A phone's readout gives only the height above the ground, not the sea-level "alt".
+            compact
+            ? 'Watch the height above ground: the hills reach 700 m.'
+            : 'Watch the height above ground: alt counts from sea level, and the hills reach 700 m.',
+      ],
+    });
     showAgain(true, 'Try again ↺');
   }
 }
 
-/**
- * The finish card's buttons (./finish.ts): Retry flies this course again, Next course the next seed's.
- * They take touches and clicks (the card itself lets them through to the scene).
- */
-const finishButtons = {
-  retry: finishButton(() => shell.reset()),
-  next: finishButton(() => nextCourse()),
-};
-/** A button for the finish card, running `action` on a press (game-kit onButtonPress: a tap on a busy page still counts). */
-function finishButton(action: () => void): HTMLButtonElement {
-  const b = document.createElement('button');
-  b.type = 'button';
-  b.style.cssText =
-    'pointer-events: auto; min-width: 44px; min-height: 44px; margin: 10px 6px 0; padding: 8px 16px; border-radius: 10px; border: 2px solid #ffd166; background: #1d2a3c; color: #fff; font: 700 17px system-ui, sans-serif; cursor: pointer;';
-  onButtonPress(b, action);
-  return b;
-}
 /** Flies the next course (./finish.ts nextSeed): a new seed, the panel's slider following. */
 function nextCourse(): void {
   params.seed = nextSeed(params.seed);
@@ -1177,33 +1163,20 @@ function showFinish(): void {
     touch: touchFirst,
   });
   showAgain(false);
-  endCard.style.display = 'block';
-  endCard.style.border = '2px solid #ffd166';
-  const title = document.createElement('div');
-  title.style.cssText = 'font: 900 26px system-ui, sans-serif; color: #ffd166;';
-  title.textContent = card.title;
-  const result = document.createElement('div');
-  result.style.cssText = 'font: 700 19px system-ui, sans-serif; margin-top: 2px;';
-  result.textContent = card.result;
-  const lines = [card.detail, card.best].filter(Boolean).map((text) => {
-    const line = document.createElement('div');
-    line.style.cssText = 'color: #c7d3e0; font-size: 14px;';
-    line.textContent = text;
-    return line;
+  // Retry is R (the shell's reset) as well; Next course is Enter, which the card listens for while it shows.
+  const press = { retry: () => shell.reset(), next: () => nextCourse() };
+  endCard.show({
+    title: card.title,
+    lines: [{ text: card.result, strong: true }, card.detail, card.best],
+    buttons: card.actions.map(({ action, label }) => ({
+      label,
+      action,
+      primary: action === 'next',
+      key: action === 'next' ? 'Enter' : undefined,
+      onPress: press[action],
+    })),
   });
-  const row = document.createElement('div');
-  for (const { action, label } of card.actions) {
-    const b = finishButtons[action];
-    b.textContent = label;
-    b.dataset.finish = action;
-    row.append(b);
-  }
-  endCard.replaceChildren(title, result, ...lines, row);
 }
-// Enter on the finish screen flies the next course (R, the shell's reset, flies this one again).
-addEventListener('keydown', (e) => {
-  if (e.key === 'Enter' && !e.repeat && shellReady && state.phase === 'done') nextCourse();
-});
 
 /** Shows the newest event due in the banner for BANNER_LIFE s, and the red glow of a miss. */
 function updateBanner(t: number): void {
@@ -1216,7 +1189,7 @@ function updateBanner(t: number): void {
     if (ev.time <= t && (!last || ev.time > last.time)) last = ev;
   }
   const age = last ? t - last.time : Infinity;
-  // On a phone the banner gives way to a tip the flight waits on (the two covered the top third).
+  // On a phone the banner gives way to a tip the flight waits on (the two would cover the top third).
   if (last && age >= 0 && age < BANNER_LIFE && state.phase === 'flying' && !(compact && holding && tipText)) {
     banner.style.display = 'block';
     const text =
@@ -1263,7 +1236,7 @@ const cockpit = createCockpit(layout.stage, attitudeSize);
 /**
  * Puts "Paused" and the end's button (Fly again, Try again) above the cockpit's panel, whose top is
  * `panelTop` CSS px from the stage's top (0: no panel, they go back to the scene's bottom): low in
- * the scene they sat on the attitude indicator.
+ * the scene they would sit on the attitude indicator.
  */
 function liftOffPanel(panelTop: number): void {
   const lift = panelTop > 0 ? app.canvas.clientHeight - panelTop + PANEL_RIM : 0;
@@ -1344,8 +1317,8 @@ function pointToNextRing(): void {
   if (ringAim.inView) {
     ringAim.text = `ring ${i + 1} · ${distance}`;
     // Above the ring, clear of it (its radius on screen to the halo's outer edge, from a point on it
-    // at the camera's up) and so of the flight-path marker inside it (the label sat 30 px under the
-    // centre, under the marker's crosshair); else below it, beside it or at a corner.
+    // at the camera's up) and so of the flight-path marker inside it (not under the centre, under the
+    // marker's crosshair); else below it, beside it or at a corner.
     rimAt.set(ring.x, ring.y, ring.z).addScaledVector(camUp.set(0, 1, 0).applyQuaternion(app.camera.quaternion), RING_OUTER);
     rimAt.project(app.camera);
     const rPx = Math.hypot(((rimAt.x - ringAt.x) / 2) * w, ((rimAt.y - ringAt.y) / 2) * h);
@@ -1356,7 +1329,7 @@ function pointToNextRing(): void {
     ringOutline.style.top = `${y}px`;
     ringOutline.style.width = ringOutline.style.height = `${2 * r}px`;
     // The cockpit's panel is in front of the world: the outline is cut off at its top edge, as the
-    // ring is (it was drawn on over the instruments).
+    // ring is, never drawn over the instruments.
     const cut = Math.max(0, y + r - bottom);
     const clip = cut > 0 ? `inset(-4px -4px ${cut}px -4px)` : '';
     if (ringOutline.style.clipPath !== clip) ringOutline.style.clipPath = clip;
@@ -1392,7 +1365,7 @@ function pointToNextRing(): void {
       places[0]!;
   } else if (ahead && bottom < h && x > 0 && x < w && y >= bottom && y < h) {
     // Ahead but under the cockpit's panel (a ring below the nose): the label points down at it from
-    // just above the panel and says where it is (a small ▼ at the scene's edge was missed).
+    // just above the panel and says where it is (a small ▼ at the scene's edge goes unseen).
     y = bottom;
     ringAim.text = `▼ ring ${i + 1} · ${distance} · under the panel`;
   } else {
@@ -1420,9 +1393,9 @@ function pointToNextRing(): void {
 
 /**
  * The ring label's centre (px) moved inside the scene `w` px wide, `bottom` px high (above the
- * cockpit's panel), its box EDGE_MARGIN px from each edge (it touched the phone's right edge), and
- * clear of the warning, the banner and the tip (./label-place.ts labelClearOf): behind the tip at the
- * scene's top, a ring above the view had its label hidden.
+ * cockpit's panel), its box EDGE_MARGIN px from each edge (never touching the phone's edge), and
+ * clear of the warning, the banner and the tip (./label-place.ts labelClearOf), so a ring above the
+ * view keeps its label readable, not hidden behind the tip at the scene's top.
  */
 function keepInScene(x: number, y: number, w: number, bottom: number): [number, number] {
   const hw = ringPointer.offsetWidth / 2 + EDGE_MARGIN,
@@ -1458,8 +1431,8 @@ const RING_OUTER = (RING_RADIUS + 12 + 2.5) * 1.06;
 /**
  * A tip over the scene's top while the next ring is one of the lessons (./course.ts LESSONS: ring 2
  * a turn, ring 3 a climb or a dive, ring 4 a turn the other way): which way it lies and what to do,
- * in words for someone who has never flown. A stranger did not know that an aeroplane turns by
- * tipping its wings (banking), so ring 2's tip says so.
+ * in words for someone who has never flown: ring 2's tip says that an aeroplane turns by tipping its
+ * wings (banking), which a newcomer may not know.
  */
 const tip = overlay(
   `left: 50%; width: max-content; max-width: min(${MESSAGE_WIDTH}, 560px); box-sizing: border-box; padding: 5px 14px; border-radius: 12px; background: rgba(8, 12, 20, 0.8); color: #eef3f8; font: 600 ${compact ? 13 : 16}px/1.3 system-ui, sans-serif; text-align: center; display: none;`,
@@ -1489,8 +1462,8 @@ let tipText = '';
 /**
  * The lesson ring the tip is for (-1: none), and which ways it lies from the line flown now
  * (./course.ts ringBearing, ringWay: right or left, higher or lower, and how much), worked out every
- * frame from where the aircraft is and flies, not written per ring (a tip said "higher" while the
- * ring lay to the left).
+ * frame from where the aircraft is and flies, not written per ring (which could say "higher" while
+ * the ring lies to the left).
  */
 let tipRing = -1,
   tipWay: RingWay = { side: 0, up: 0, sideAmount: '', upAmount: '' };
@@ -1519,7 +1492,7 @@ function lessonTip(): string {
     tipRing = i;
   }
   // The ways are worked out afresh every frame from where the aircraft is and flies now: a tip
-  // kept from when it first showed said "Ring 2 is to the left" with the ring already to the right.
+  // kept from when it first showed could say "Ring 2 is to the left" with the ring already to the right.
   tipWay = wayOf(i);
   // Ring 1's tip is the start's, up while the flight waits; on a phone each tip goes a little after
   // the pilot has acted on it (TIP_LINGER), so it does not cover the sky all the way to its ring.
@@ -1540,7 +1513,7 @@ const STICK_WHERE = 'Drag the stick at bottom left';
 /** What the tip's second line asks while the flight waits for the pilot (`holding`): the input that goes on. */
 function waitLine(): string {
   if (!holding) return '';
-  // The stick is named with its place: "move the stick" alone left a stranger looking for one.
+  // The stick is named with its place: "move the stick" alone leaves a newcomer looking for one.
   if (tipRing === 0) return touchFirst ? `${STICK_WHERE} to start.` : 'Press an arrow key to start.';
   const key = tipWay.side ? (tipWay.side > 0 ? '→' : '←') : tipWay.up ? climbKey(tipWay.up) : 'an arrow key';
   return touchFirst ? 'Paused: drag the stick to fly on.' : `Paused: press ${key} to fly on.`;
@@ -1576,7 +1549,7 @@ function showTip(): void {
 /**
  * Whether the next ring's centre lies behind the drawn aircraft on the screen now (chase view; within
  * half the ring's radius of the aircraft's box; tests). The aircraft, nearer, stays solid in front of
- * the ring (faded see-through, the ring showed through it as if in front: a depth error to the eye);
+ * the ring (faded see-through, the ring would show through it as if in front: a depth error to the eye);
  * the ring's outline and label, drawn over the scene, say where it is.
  */
 let ringBehindPlane = false;
@@ -1664,8 +1637,8 @@ function showThrottleNote(): void {
  * stay clear) while the top one would cover the next ring, its label or the flight-path marker and
  * the low one would not, and back up once the top is clear by LANE_RETURN px (the margin keeps the
  * column from jumping back and forth as the ring moves). The warning keeps one place at the scene's
- * top, over everything; while it is on, the top lane starts under it. Each had its own fixed place: the banner
- * sat over the ring ahead, the warning over the cockpit's gauges.
+ * top, over everything; while it is on, the top lane starts under it. A fixed place for each would put
+ * the banner over the ring ahead, or the warning over the cockpit's gauges.
  */
 let messagesLow = false;
 /** Gap between the messages, and between them and the scene's edge or the cockpit's panel, px. */
@@ -1753,10 +1726,10 @@ function placeMessages(): void {
  * curved by the turn and the climb it is in (./course.ts predictThroughRing): with the assist, the
  * path flown if the pilot lets go now (the wings and the path roll level as the assist brings them),
  * so holding a turn until the marker is in the ring and letting go flies through it; without the
- * assist, the turn held as it is. (A straight line from the velocity ignored the turn: a stranger
- * banking towards ring 3 had the marker at its edge and missed it by far.) Orange when it is outside
+ * assist, the turn held as it is. (A straight line from the velocity would ignore the turn: a pilot
+ * banking towards a ring would see the marker at its edge and miss it by far.) Orange when it is outside
  * the ring (not the ring's yellow: on the tube it must not read as in), green when inside (PASS_RADIUS), each over a thick black outline so that it shows on sky, cloud,
- * ground and the yellow ring alike (a thin white one was lost against the sky and the clouds);
+ * ground and the yellow ring alike (a thin white one is lost against the sky and the clouds);
  * hidden when the ring's plane is not met.
  */
 const marker = overlay(`width: ${2 * MARKER_HALF[0]}px; height: ${2 * MARKER_HALF[1]}px; display: none;`);
@@ -1832,8 +1805,8 @@ let chaseDistance = 0;
 const CHASE_LAG = 0.25;
 /**
  * Where the chase camera sits in the aircraft's frame, m: behind, above. Far enough that the 30 m
- * wing spans about a third of a landscape view (at 30 m behind, 9 up it filled the lower middle and
- * hid the rings below the nose), and 17 degrees above the aircraft's axis so it sits low.
+ * wing spans about a third of a landscape view (at 30 m behind, 9 up it would fill the lower middle
+ * and hide the rings below the nose), and 17 degrees above the aircraft's axis so it sits low.
  */
 const CHASE_OFFSET = [-58, 18] as const;
 /**
@@ -1864,7 +1837,7 @@ function frame(alpha = 1): void {
   const world = shell.world;
   // Everything here is what the frame shows: the camera, the labels and tips over the scene, the
   // HUD. The frame pacer skips drawing while the GPU is behind (often several frames in a row on a
-  // software GPU); the HTML labels placed for a frame the canvas never showed sat 100 px and more
+  // software GPU); HTML labels placed for a frame the canvas never shows would sit 100 px and more
   // from their ring. So a frame that will not be drawn changes nothing but the banner and the tip's
   // words (a ring's pass or miss, and what the next ring asks, are said at once).
   // Paused by the pilot (P, the toolbar's button): the scene dims and says so. A wait for the pilot
@@ -1883,10 +1856,10 @@ function frame(alpha = 1): void {
       ringAim.text = '';
     }
     // The readouts too: every figure over and beside the scene says the same moment (the readout
-    // kept every 6th drawn frame said "rings 0/10" under the banner's "Ring 1 ✓").
+    // kept every 6th drawn frame could say "rings 0/10" under the banner's "Ring 1 ✓").
     updateHud(crashReadings ?? instruments(world));
-    // The warning too (it sits in a fixed place, nothing to project): a loaded machine that drew no
-    // frame between "PULL UP" and the ground never showed it.
+    // The warning too (it sits in a fixed place, nothing to project), so a loaded machine that draws
+    // no frame between "PULL UP" and the ground still shows it.
     showWarning(world.time);
     showTip();
     showThrottleNote();
@@ -1923,12 +1896,12 @@ function frame(alpha = 1): void {
     // at the same distance behind instead of trailing off (a lerp of the world position lags by
     // speed x frame time, more the slower the frames come).
     // The offsets are along the aircraft's nose and the world's up, not the aircraft's up: a bank
-    // does not swing the camera sideways (with the aircraft's up, the look point swung to the side
-    // of the bank at once while the camera lagged, so the scene and the path marker first slid the
-    // wrong way, 34 px at 1280 x 800, and a turn showed late).
+    // does not swing the camera sideways (with the aircraft's up, the look point would swing to the
+    // side of the bank at once while the camera lags, so the scene and the path marker would first
+    // slide the wrong way and a turn show late).
     // The nose's pitch, but the flight path's heading: as a bank starts, the rudder swings the nose
     // into the turn before the path turns (about 3 degrees in 0.4 s), and a camera that followed the
-    // nose slid the scene and the path marker the wrong way first (9 px at 1280 x 800).
+    // nose would slide the scene and the path marker the wrong way first.
     const [back, up] = chaseOffsetNow();
     nose.set(1, 0, 0).applyQuaternion(drawnQ);
     const V = world.components.Velocity,
@@ -1943,8 +1916,8 @@ function frame(alpha = 1): void {
     // Its length is the offset's whatever the pitch (the sum of the two is not).
     chaseOffset.setLength(Math.hypot(back, up));
     // Smoothed over the game time drawn (the interpolated state's), not the clock's: the aircraft
-    // moves by game time, so on uneven frames a clock-timed lag swung the camera, and the path
-    // marker with it, by a different share each frame (it jittered 11 to 22 px in a held bank).
+    // moves by game time, so on uneven frames a clock-timed lag would swing the camera, and the path
+    // marker with it, by a different share each frame (a jitter in a held bank).
     const t = world.time - world.dt * (1 - alpha);
     const dt = Math.min(0.2, Math.max(0, t - lastFrame));
     lastFrame = t;

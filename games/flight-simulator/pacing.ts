@@ -4,7 +4,7 @@
  * (test/games/flight-simulator-pacing.test.ts).
  *
  * At 5 to 10 frames a second a loop that catches up with the clock moves the aircraft 25 to 50 m
- * between two pictures: a stranger lost control (the ring came and went between frames). Below
+ * between two pictures, too far to steer by (a ring comes and goes between frames). Below
  * 1 / FRAME_CAP frames a second the game runs in slow motion instead: each frame advances at most
  * FRAME_CAP s of game time, so the aircraft moves at most FRAME_CAP x its speed between pictures
  * (13 m at 130 m/s), and the page says so (`slowMotion`).

@@ -2,7 +2,7 @@
  * How much a ring near the camera fades: a ring whose outer edge spans most of the view is drawn
  * faint, so the ring the aircraft flies through (and the one just flown through, still between the
  * chase camera and the aircraft) does not cover the scene. On a phone the chase camera sits 110 m
- * behind: a stranger saw the ring fill the screen at each pass. The flight-path marker and the
+ * behind, where an unfaded ring would fill the screen at each pass. The flight-path marker and the
  * ring's outline still say where it is. Headless (no DOM), tested in node
  * (test/games/flight-simulator-pacing.test.ts).
  */

@@ -1,8 +1,8 @@
 /**
  * A press that always acts: a key or button held for less than a frame (its press and release both
  * come in before the frame's steps run, as a ~200 ms tap does at 5 frames a second) still acts for
- * MIN_PULSE s of game time from the first step that sees it. A stranger's short taps were lost at low
- * frame rates. Headless (no DOM), so it is tested in node (test/games/flight-simulator-pacing.test.ts).
+ * MIN_PULSE s of game time from the first step that sees it, so no short tap is lost at a low frame
+ * rate. Headless (no DOM), so it is tested in node (test/games/flight-simulator-pacing.test.ts).
  */
 
 /**

@@ -195,7 +195,7 @@ export function createClothScene(p: ClothSceneParams, prepare?: (world: PhysicsW
   setBoundary(world, { min: [YARD.minX, YARD.minY], max: [YARD.maxX, YARD.maxY], friction: FRICTION });
   applyWind(world, p);
   prepare?.(world, cloth, p.size);
-  // The pegs moved the top row's pegged points inward by up to 0.2 m, straining the hem's links near
+  // The pegs move the top row's pegged points inward by up to 0.2 m, straining the hem's links near
   // them by up to 100% (they never tear); SETTLE steps let the sheet take up its swags before it is shown.
   for (let i = 0; i < SETTLE; i++) step(world);
   return { world, cloth, pegs, pegAt };

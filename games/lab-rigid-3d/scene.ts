@@ -221,10 +221,9 @@ export const TOP_TIP_RADIUS = 0.015;
  * A top: a disc (r 0.25 m, 4 cm thick, 0.25 m up the axis) on a capsule stem (r 1.5 cm, 0.4 m between
  * its end centres), of aluminium (2,700 kg/m^3), standing on its tip (the stem's lower end) on the floor.
  * Tip radius: the rate does not depend on it. On a smooth floor over the first second the top
- * precesses within 0.1 % of the steady root on a 5 mm, 1 cm or 1.5 cm tip (-0.04, -0.04, -0.06 %;
- * a 5 mm tip was reported 12 to 17 % slow last session, which does not reproduce at these 16
- * substeps; at one substep a step this top tilts over within a second whatever its tip, and a faster
- * top's disc rim threw it up, the more the smaller its tip, fixed: test/physics/top-small-tip.test.ts).
+ * precesses within 0.1 % of the steady root on a 5 mm, 1 cm or 1.5 cm tip at these 16 substeps
+ * (test/physics/top-small-tip.test.ts; at one substep a step this top tilts over within a second
+ * whatever its tip).
  * 1.5 cm is kept for what the tip's friction shows: a rolling
  * tip moves at about its radius times the spin, so at tipFriction 0.6 a 1.5 cm tip wanders 17 cm in
  * the first second and precesses 5 % below m g r / (I3 omega3), while a 5 mm one wanders 1.4 cm and

@@ -78,8 +78,8 @@ let cuts = 0;
 /** Real time (s) at which the level was lost; NaN while playing. */
 let lostAt = Number.NaN;
 /**
- * A miss holds the scene until the player taps, clicks or presses a key (it used to start the level
- * again by itself 2.5 s on, and a player looking elsewhere missed it): the scene dims to red, the
+ * A miss holds the scene until the player taps, clicks or presses a key, so a player looking
+ * elsewhere still sees the miss before the level starts again: the scene dims to red, the
  * ball is ringed where it lies and the banner says so in large type on a dark card. The tap counts
  * once this long has passed, s (not the swipe that missed).
  */
@@ -291,8 +291,7 @@ const TAP_REACH_PX = 26;
 /**
  * How far from a rope a swipe still cuts it, CSS px, by pointer: a finger's stroke (about 8 mm wide
  * under the fingertip, on a 3 px cord that swings) cuts a rope it passes within 14 px of; the mouse's
- * within 5 px. (A swipe had to cross the cord's exact line: a flick that stopped a few pixels short
- * left the rope whole.)
+ * within 5 px, so a flick that stops a few pixels short of the cord's exact line still cuts it.
  */
 const SWIPE_REACH_PX = { touch: 14, other: 5 } as const;
 
@@ -451,8 +450,8 @@ shell.onWorldChange(() => {
   push = 0;
   stroke = null;
   sparkles.length = 0;
-  // The panel's level slider and the side column follow a new level or a retry at once (the slider
-  // stayed at the level it was set to when the Next level button moved on).
+  // The panel's level slider and the side column follow a new level or a retry at once, so the
+  // slider never shows a level the Next level button has moved on from.
   panel.refresh();
   showReadout(shell.world);
   updateStatus();
@@ -491,7 +490,7 @@ banner.anchor.set(0.5);
 renderer.root.addChild(banner);
 /**
  * The stars of the try under the banner: a gold star for each caught, an outlined one (dark fill, a
- * light rim) for each missed, so both read on the blue wall (a '☆' in the banner's dark stroke did not).
+ * light rim) for each missed, so both read on the blue wall (a '☆' in the banner's dark stroke does not).
  */
 const starRow = new Container({ label: 'stars' });
 /** The star row as last shown: [gold, of] ([0, 0] while hidden). */
@@ -582,7 +581,7 @@ const STAR_GLOW = 0.38;
  * The first of BANNER_HEIGHTS (m) at which the banner's box (with the star row under it and the
  * miss card's margin once the level is over) stays clear of every star not caught yet (so the
  * banner never hides one) and, once the level is over, of the basket and the ball (a miss card over
- * them hid why the ball missed); the first height clear of the stars if none is clear of all, the
+ * them would hide why the ball missed); the first height clear of the stars if none is clear of all, the
  * first height if none is clear of the stars.
  */
 function bannerHeight(): number {
@@ -681,7 +680,7 @@ function drawBanner(now: number): void {
   if (game.outcome === 'lost') {
     // Held until a tap or a key (see MISS_TAP_AFTER): the scene dimmed red, the ball ringed, and a
     // small card at the top of the scene (over the beam) with the stars this try caught beside the
-    // text, so the stars, the ball and the basket stay in sight (a card mid-scene covered them).
+    // text, so the stars, the ball and the basket stay in sight (a card mid-scene would cover them).
     const since = now - lostAt;
     const fade = Math.min(1, since / 0.3);
     overlay.rect(0, 0, cam.width, cam.height).fill({ color: 0x5a0b0b, alpha: 0.38 * fade });

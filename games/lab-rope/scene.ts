@@ -77,10 +77,9 @@ export const LEVELS: readonly Level[] = Object.freeze([
     // The basket stands under the right end of the swing, where the ball slows, stops and turns
     // back (as in the wide room's first level): a cut on the way up to that end or at it drops the
     // ball in, from 0.6 to 2.06 s, and the three stars hang along the drop from there (3 stars 1.0 to
-    // 1.88 s; scripts/lab-rope-cuts.mjs 1; test/games/lab-rope.test.ts). The basket stood at x = 1,
-    // left of that end, won only after the ball turned back (1.8 to 2.26 s), with the stars
-    // zigzagging: a stranger on a phone cut at the far end and missed right, then a little later
-    // missed left.
+    // 1.88 s; scripts/lab-rope-cuts.mjs 1; test/games/lab-rope.test.ts), so a cut at the far end
+    // lands. A basket left of that end (x = 1) would be won only after the ball turned back, with
+    // the stars zigzagging, and a cut at the far end would miss right and one a little later left.
     basket: [1.75, 0],
     basketWidth: 1.3,
     basketDepth: 0.75,
@@ -169,7 +168,7 @@ const WIDE_VIEW = { minX: -5.4, minY: -0.35, maxX: 5.4, maxY: 7.0 } as const;
 /**
  * The levels for a screen wider than tall: the same five ideas in a room twice as wide and 2 m
  * lower (10.4 x 7 m), so a desktop window draws them large (94 px a metre at 1280 x 800, the room
- * 1010 px wide; LEVELS' upright room, drawn as large as the window's height allows, was 415 px
+ * 1010 px wide; LEVELS' upright room, drawn as large as the window's height allows, would be 415 px
  * wide). Laid out with the ball's flights measured like LEVELS' (test/games/lab-rope.test.ts):
  * each cut's outcome the same wherever along its rope it is made, and no star caught by the
  * untouched swing.
@@ -184,8 +183,8 @@ export const WIDE_LEVELS: readonly Level[] = Object.freeze([
     // after the top of the swing (2.0 s) to 0.55 s later drops it in, and so does one as it passes
     // the bottom (1.05-1.15 s). The three stars hang along the drop from the very top (3 stars
     // 2.0-2.15 s); a cut a moment before the top throws the ball onto the basket's far rim.
-    // (The basket stood where the swing throws farthest, 4.35 m: won only 1.32-1.72 s, on the
-    // upswing; a stranger cut four times at the swing's end and never landed it.)
+    // (A basket where the swing throws farthest, 4.35 m, would be won only 1.32-1.72 s, on the
+    // upswing, never by a cut at the swing's end, the cut a player tries first.)
     basket: [1.5, 0],
     basketWidth: 1.5,
     basketDepth: 0.75,
@@ -390,9 +389,9 @@ export function createRopeScene(index: number, p: RopeSceneParams, levels: reado
 /**
  * Cuts rope `rope` of a scene at its link `link` (one of `rope.links`) and frees the ball from the
  * piece below the cut: that loose end falls on its own, the ball flies on alone. A loose end left on
- * the ball (up to 2.5 m of rope, a fifth of the ball's mass, whipping and catching on the walls) made
- * where a swipe crossed the rope decide the throw, not when: on level 3 a cut near the pin 1.0 s in
- * fell short of the wall and one near the ball cleared it. Freed, the ball's flight follows from the
+ * the ball (up to 2.5 m of rope, a fifth of the ball's mass, whipping and catching on the walls) would
+ * make where a swipe crossed the rope decide the throw, not when: on level 3 a cut near the pin 1.0 s
+ * in would fall short of the wall and one near the ball clear it. Freed, the ball's flight follows from the
  * time of the cut alone (the same outcome for a cut at a tenth, half and nine tenths of the rope at
  * every time tried, levels 1 to 5; see test/games/lab-rope.test.ts).
  * @throws RangeError (naming cutRope) when `link` is not one of the rope's links.
@@ -405,7 +404,7 @@ export function cutRope(world: PhysicsWorld, rope: RopePiece, link: number): voi
 
 /**
  * Seconds the free ball may roll on the floor outside the basket before the try is lost: rolling at
- * 0.45 m/s between the walls, a ball took 14 s to come to rest (and the miss to be said).
+ * 0.45 m/s between the walls, a ball can take 14 s to come to rest, too long to wait for the miss.
  */
 export const FLOOR_LOST = 0.5;
 /**

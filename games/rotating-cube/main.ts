@@ -34,13 +34,14 @@
  * (to-go.ts). The round's clock runs only while the cube is still (scene.ts `PadChallenge`). The lit
  * pad's rim lights while the cube's centre is near enough to count (scene.ts PAD_GRACE); resting there
  * with the wrong face up (or slid on) the pop says why it does not count. A round's end shows a banner
- * with the result, Next (Enter) and Retry (R) (win-banner.ts, round-end.ts).
+ * with the result, Next (Enter) and Retry (R) (game-kit's createDomResultCard, round-end.ts).
  * URL: ?mode=room|cube|flip (default room), ?spin=rad/s (flip), ?seed=N (the same pad layout every run).
  */
 
 import {
   choiceParam,
   createButtonBar,
+  createDomResultCard,
   createPanel,
   createStatusRow,
   forEachImpact,
@@ -82,7 +83,7 @@ import {
 } from 'three';
 import { cubeControls, TAP_SLOP, touchPress } from './controls';
 import { bedSnap } from './roll-puzzle';
-import { roundEnd, starText } from './round-end';
+import { type RoundEndContent, roundEnd, starText } from './round-end';
 import {
   buildRotatingCube,
   CELL_REACH,
@@ -122,7 +123,6 @@ import {
 } from './scene';
 import { SPIN_HOLD, SPIN_RATE, SPIN_STAR_TIMES, SPIN_TARGETS, SPIN_TOLERANCE, SpinChallenge, spinTargets } from './spin-challenge';
 import { ToGoMeter } from './to-go';
-import { createWinBanner } from './win-banner';
 
 /** A mouse press that moves more than this, CSS px, is a camera drag, not a click (a finger: controls.ts TAP_SLOP). */
 const CLICK_SLOP = 5;
@@ -332,8 +332,8 @@ let lastPlotted = -1,
 /**
  * The pixel ratio to render at: the kit's default (the device's, at most 2; SOFTWARE_PIXEL_RATIO, a
  * quarter of the pixels, under software WebGL), except on a phone under software WebGL, where it is 1:
- * at the kit's 0.5 a 390 px wide stage was drawn 195 px wide and blown up four times, too blurry to
- * read the cube's faces; at 1 a frame fills about as many pixels as the desktop's at 0.5 (390 x 536
+ * at the kit's 0.5 a 390 px wide stage would be drawn 195 px wide and blown up four times, too blurry
+ * to read the cube's faces; at 1 a frame fills about as many pixels as the desktop's at 0.5 (390 x 536
  * against 1060 x 734 CSS px), so it costs about as much.
  */
 function pixelRatio(): number | undefined {
@@ -886,7 +886,7 @@ for (const [i, dir] of ['up', 'down', 'left', 'right'].entries()) dpad.buttons[i
 .bp-touchbar.rc-extras button:nth-child(-n + 2) { font-size: 20px; }
 /* On the pivot the turn buttons carry words (Pitch ▲, Roll ⟲): a smaller type that fits their width. */
 .bp-touchbar.rc-pivot button, .bp-touchbar.rc-extras.rc-pivot button:nth-child(-n + 2) { font-size: 14px; }
-/* The touch card, two lines in a smaller type at the stage's foot: it covered the front of the floor. */
+/* The touch card, two lines in a smaller type at the stage's foot, so it leaves the front of the floor in sight. */
 body .bp-touch-hint { font-size: 13px; padding: 6px 10px; bottom: 6px; }
 `;
   document.head.append(style);
@@ -1373,7 +1373,7 @@ const panel = createPanel(
 const status = createStatusRow({ name: 'challenge' });
 const touch = pageLayout().touch();
 // On a phone the row keeps its height: the goal and the numbers one line each (a longer text ends in
-// an ellipsis), the hint two (a row that grew with a longer hint shrank the stage and moved the view).
+// an ellipsis), the hint two (a row that grew with a longer hint would shrink the stage and move the view).
 if (touch)
   for (const line of [status.goal, status.numbers, status.hint]) {
     const one = line !== status.hint;
@@ -1385,12 +1385,25 @@ const stars = starText;
 
 // ---- The round's end: a banner with the result, Next (Enter) and Retry (R, the game's reset) --------
 
-const banner = createWinBanner(
-  app.canvas.parentElement ?? document.body,
-  () => nextRound(),
-  () => shell.reset(),
-  touch,
-);
+// The banner lets a drag outside its buttons through, so the scene behind it still turns.
+const banner = createDomResultCard(app.canvas.parentElement ?? document.body, {
+  name: 'win-banner',
+  passThrough: true,
+  titleColour: '#ffffff',
+});
+/** Shows the round's end `end` (round-end.ts) in the banner: Retry (R, the game's reset) and Next (Enter). */
+function showBanner(end: RoundEndContent): void {
+  banner.show({
+    title: end.title,
+    big: end.big,
+    lines: [end.detail],
+    lost: !end.won,
+    buttons: [
+      { label: end.retry, keyHint: touch ? undefined : 'R', action: 'retry', onPress: () => shell.reset() },
+      { label: end.next, keyHint: touch ? undefined : 'Enter', key: 'Enter', action: 'next', primary: true, onPress: () => nextRound() },
+    ],
+  });
+}
 shell.onWorldChange(() => banner.hide());
 /** How long the banner waits after the round's end, ms: the last pad's chime, burst and pop come first. */
 const BANNER_DELAY_MS = 1000;
@@ -1414,7 +1427,7 @@ function updateBanner(): void {
     return;
   }
   if (overSeenAt < 0) overSeenAt = now;
-  if (now - overSeenAt >= BANNER_DELAY_MS) banner.show(end);
+  if (now - overSeenAt >= BANNER_DELAY_MS) showBanner(end);
 }
 
 /**
@@ -1710,8 +1723,8 @@ function updateNet(): void {
 /**
  * A small card over the stage's top right in the room: the five pads in turn as chips in the colour
  * that must be on top there (the first: any face), the ones reached ticked and the lit one ringed, and
- * a "?" button that opens the rules in a few lines (closed at the start: a stranger read a wall of rules
- * before playing; the status row says the one thing to do now). The rules close again at the first
+ * a "?" button that opens the rules in a few lines (closed at the start, so a player is not met by a
+ * wall of rules before playing; the status row says the one thing to do now). The rules close again at the first
  * roll key (W A S D, ▲◀▼▶) or a second press of "?". Room mode only, while the round runs.
  */
 const rules = document.createElement('div');

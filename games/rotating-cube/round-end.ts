@@ -1,5 +1,5 @@
 /**
- * The end of a round in each of the rotating cube's modes, for its banner (win-banner.ts): whether the
+ * The end of a round in each of the rotating cube's modes, for its banner (game-kit's result card): whether the
  * round is over and what the banner then says: the pads (all reached: the stars by moves against
  * par), the spins (all three held: the stars by time) and the flips (won with FLIP_GOAL flips in
  * time, or lost when FLIP_TIME runs out). Pure (no DOM, no three.js).
@@ -7,12 +7,27 @@
 import type { PhysicsWorld } from '@bitphysics/physics';
 import { FLIP_BAND, FLIP_GOAL, type FlipChallenge, type Mode, PAR_SLACK, type PadChallenge, padStars } from './scene';
 import { SPIN_STAR_TIMES, type SpinChallenge } from './spin-challenge';
-import type { WinBannerContent } from './win-banner';
 
 /** `n` stars of three as text: filled then hollow ('★★☆' for 2). @throws RangeError if n is not an integer in [0, 3]. */
 export function starText(n: number): string {
   if (!Number.isInteger(n) || n < 0 || n > 3) throw new RangeError(`starText: n must be an integer in [0, 3], got ${n}`);
   return '★'.repeat(n) + '☆'.repeat(3 - n);
+}
+
+/** What the banner says at a round's end and what its two buttons are called. */
+export interface RoundEndContent {
+  /** First line, bold ('All 5 pads!', 'Time!'). */
+  title: string;
+  /** The result in large gold type ('★★★ 9 moves'). */
+  big: string;
+  /** A line of detail under it (par, best, time); may be ''. */
+  detail: string;
+  /** The Next button's words ('New pads'), run by the button and by Enter. */
+  next: string;
+  /** The Retry button's words ('Same pads'), run by the button (R runs the game's reset, the same). */
+  retry: string;
+  /** Whether the round was won (a gold edge) or lost (a red one). */
+  won: boolean;
 }
 
 /** The three rounds' challenges, as the game keeps them. */
@@ -26,7 +41,7 @@ export interface Rounds {
  * What the banner says at the end of the round of `mode` in `world`, or null while the round runs.
  * `bestMoves`: the fewest moves of a pad round this visit before this one (Infinity: none).
  */
-export function roundEnd(mode: Mode, rounds: Rounds, world: PhysicsWorld, bestMoves = Infinity): WinBannerContent | null {
+export function roundEnd(mode: Mode, rounds: Rounds, world: PhysicsWorld, bestMoves = Infinity): RoundEndContent | null {
   const { pads, spins, flips } = rounds;
   if (mode === 'room') {
     if (!pads.done) return null;

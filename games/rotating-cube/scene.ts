@@ -374,8 +374,8 @@ export class YawKeeper {
 // ---- Challenges -------------------------------------------------------------------------------
 
 /**
- * Room mode's challenge: the classic pads' centres (x, z), m, in the order they light up (the layout
- * of `padLayout` before seeds: the game now lays out a fresh round per run with `padLayout`). Each is a
+ * Room mode's challenge: the classic pads' centres (x, z), m, in the order they light up (the
+ * layout of seed -1, CLASSIC_LAYOUT; the game lays out a fresh round per run with `padLayout`). Each is a
  * square of half edge PAD_HALF on the floor, clear of the walls by more than the cube's half diagonal.
  */
 export const PADS: readonly (readonly [number, number])[] = Object.freeze([
@@ -389,8 +389,8 @@ export const PADS: readonly (readonly [number, number])[] = Object.freeze([
 export const PAD_HALF = 0.6;
 /**
  * How far past a pad's drawn edge the cube's centre may rest and still count, m: a quarter of the
- * cube's 1 m edge, so a cube with at least a quarter of its width over the pad counts (players took a
- * cube half on a pad for landed). The game lights the pad's rim while the centre is that near.
+ * cube's 1 m edge, so a cube with at least a quarter of its width over the pad counts (a cube half on a
+ * pad looks landed to a player). The game lights the pad's rim while the centre is that near.
  */
 export const PAD_GRACE = 0.25;
 /**

@@ -48,12 +48,15 @@
 import {
   choiceParam,
   createButtonBar,
+  createDomResultCard,
   createPanel,
+  type DomResultCardContent,
   flagParam,
   getSound,
   numberParam,
-  onButtonPress,
   pageLayout,
+  type ResultCardButton,
+  type ResultCardLine,
 } from '@bitphysics/game-kit';
 import { startThreeGame } from '@bitphysics/game-kit/three';
 import {
@@ -146,7 +149,7 @@ const WAIT_RATE = 40;
 /**
  * Held Wait speeds up with the days it has run: its rate grows by WAIT_RATE's worth every WAIT_RAMP
  * days waited, up to WAIT_MAX_GAIN times it. A tap nudges by days; a long hold crosses a year in a
- * few seconds (at a constant rate Venus's 300 days took 30 s where frames come slowly).
+ * few seconds (at a constant rate Venus's 300 days would take 30 s where frames come slowly).
  */
 const WAIT_RAMP = 20;
 const WAIT_MAX_GAIN = 4;
@@ -248,9 +251,9 @@ const TICK = 1 / 60;
 /**
  * How long a flight's time holds still after a burn, ms, and the share of its rate it runs at then
  * (none): the hint's "Press ↓ 4 times now" is worked out for burns all made now, and a player's
- * taps come a fraction of a second apart. With time running on (at a fifth of the rate it did) the
- * later burns did less than the hint said and it asked for more once the fuel was gone; held still,
- * taps less than BURN_SLOW_MS apart all act at the same moment of the flight.
+ * taps come a fraction of a second apart. With time running on, the later burns would do less than
+ * the hint said and it would ask for more once the fuel was gone; held still, taps less than
+ * BURN_SLOW_MS apart all act at the same moment of the flight, as the hint assumes.
  */
 const BURN_SLOW_MS = 800;
 const BURN_SLOW = 0;
@@ -434,7 +437,7 @@ function nextWindowDays(): number {
   const sense = Math.sign(ex * earthHelio[5]! - ez * earthHelio[3]!) || 1;
   heliocentricState(world, handles, handles.bodies[m.target], state6);
   // Each orbit's semi-major axis (vis-viva): its mean motion is the planet's average pace (the
-  // distance now gave the Earth's pace in January 2.6 % fast, the window 20 days late).
+  // distance now would give the Earth's pace in January 2.6 % fast, the window 20 days late).
   const semiMajor = (st: ArrayLike<number>): number =>
     1 / (2 / Math.hypot(st[0]!, st[1]!, st[2]!) - (st[3]! ** 2 + st[4]! ** 2 + st[5]! ** 2) / mu);
   const rE = semiMajor(earthHelio),
@@ -738,8 +741,8 @@ const game = await startThreeGame({
   createWorld,
   step: stepWorld,
   // The few controls a mission needs; the rest (time rate, views, distances, sizes, Enter, the
-  // camera) are named with their keys in the settings panel, whose note lists them (16 lines here
-  // were more than a new player could take in). On a phone the lines naming on-screen buttons stay
+  // camera) are named with their keys in the settings panel, whose note lists them (all 16 lines
+  // here would be more than a new player can take in). On a phone the lines naming on-screen buttons stay
   // in the menu's legend, out of the card over the diagram (the kit leaves out gestures ending in "button(s)").
   controls: [
     { keys: '← →', action: 'turn the launch arrow; in flight, burn in / out', touch: 'bottom ↺ ↻ buttons' },
@@ -1369,8 +1372,8 @@ const dots = Object.fromEntries(
 
 /**
  * The forecast's two marks named on the map while aiming: the ring where the target will be when the
- * probe comes closest ("Mars at arrival") and the probe's place then ("probe then"). Without them a
- * path running through the target's ring of now read as a hit.
+ * probe comes closest ("Mars at arrival") and the probe's place then ("probe then"), so a path
+ * running through the target's ring of now does not read as a hit.
  */
 const forecastTags = (['target-then', 'probe-then'] as const).map((name) => {
   const el = document.createElement('div');
@@ -1389,8 +1392,8 @@ const tagBoxes: number[] = [];
  * Shows forecast tag `i` (0 the target then, 1 the probe then) with `text` by scene point (x, y, z):
  * centred `below` px under it (over it when negative) where that is clear, else over (under) it, to
  * its right or to its left, the first place that keeps clear of the other tag, the dots and the
- * names as last placed; each place moved inside the view (on a phone "Mars at arrival" was cut off
- * at the left edge, and "probe then" sat on other names). Hides it when `text` is ''. `frame`
+ * names as last placed; each place moved inside the view, so on a phone no tag is cut off at an
+ * edge or sits on other names. Hides it when `text` is ''. `frame`
  * clears `tagBoxes` before the tags are placed.
  */
 function placeTag(i: number, text: string, x: number, y: number, z: number, below: number): void {
@@ -1416,7 +1419,7 @@ function placeTag(i: number, text: string, x: number, y: number, z: number, belo
   let x0 = 0,
     y0 = 0;
   for (let k = 0; k < places.length; k++) {
-    // TAG_MARGIN px clear of the view's edges (an italic first letter 2 px from the edge looked cut).
+    // TAG_MARGIN px clear of the view's edges (an italic first letter 2 px from the edge looks cut).
     const cx = Math.max(TAG_MARGIN, Math.min(w - tw - TAG_MARGIN, places[k]![0]!)),
       cy = Math.max(TAG_MARGIN, Math.min(h - th - TAG_MARGIN, places[k]![1]!));
     let clear = labelFree(cx, cy, cx + tw, cy + th, -1);
@@ -1932,16 +1935,16 @@ style.textContent = `
 .ss-pad button[data-pad="wait"], .ss-pad button[data-pad="next"] { order: 6; }
 .ss-pad button[data-pad="hint"] { order: 7; }
 /* A 390 px phone: every phase's buttons (seven at most) on one row of equal cells, each at least
-   44 x 44 px; a longer label ("+ fast", "Try again") breaks inside its button, not the row (the
-   flight's buttons took two rows, Hint alone on the second, and Wait moved under the finger). */
+   44 x 44 px; a longer label ("+ fast", "Try again") breaks inside its button, not the row, so the
+   buttons never wrap to a second row and move under the finger. */
 @media (max-width: 440px) {
-  /* The brief shows on a phone too (it was hidden: the first mission's was never seen), two lines kept. */
+  /* The brief shows on a phone too, so the first mission's is seen, two lines kept. */
   .ss-status .ss-brief { min-height: 2.8em; }
   .bp-touchbar.ss-pad { display: grid; grid-auto-flow: column; grid-auto-columns: auto; justify-content: stretch; gap: 4px; }
   .bp-touchbar.ss-pad button { min-width: 44px; padding: 0 3px; font-size: 14px; white-space: normal; line-height: 1.05; }
   .bp-touchbar.ss-pad button.ss-go { min-width: 44px; }
   .ss-status .ss-line { min-height: 2.8em; }
-  /* The hint takes the brief's two lines (it was laid over the top of the map, on the planets): the
+  /* The hint takes the brief's two lines (not laid over the top of the map, on the planets): the
      stage keeps its height while aiming. */
   .ss-status .ss-hint { min-height: 2.8em; }
   .ss-status .ss-hint:empty { display: none; }
@@ -2304,7 +2307,7 @@ function updateStatus(force = false): void {
   // The hint, worked out again (./advice.ts) when what it is for has changed.
   if (hinting) hintText = hint(m) || (phase === 'aim' ? 'Hint: working it out…' : hintText);
   const date = new Date(handles.epoch + world.time * 86_400_000).toISOString().slice(0, 10);
-  // Paused, no days run whatever rate is set: the line says so (it said "11 days a second").
+  // Paused, no days run whatever rate is set: the line says so, not the rate set ("11 days a second").
   const rate = shell.paused ? 0 : shownRate(world.time, currentRate());
   const stars = `Stars ${total} / ${3 * MISSIONS.length}`;
   const atTheWindow = phase === 'aim' && Math.abs(world.time - atWindow) < 1;
@@ -2361,18 +2364,9 @@ arrivalBanner.dataset.hud = 'arrival-banner';
 arrivalBanner.className = 'ss-arrival';
 arrivalBanner.hidden = true;
 labelLayer.append(arrivalBanner);
+// The result card is game-kit's; these are the styles of the solar system's own lines in it.
 const cardStyle = document.createElement('style');
 cardStyle.textContent = `
-.ss-card { position: absolute; left: 50%; top: 50%; transform: translate(-50%, -50%); z-index: 6; width: min(380px, calc(100% - 24px));
-  box-sizing: border-box; padding: 14px 16px 12px; border-radius: 14px; background: rgb(10, 14, 24); border: 1px solid #4a5a78;
-  color: #e8ecf1; font: 14px/1.45 system-ui, sans-serif; text-align: center; box-shadow: 0 8px 30px rgba(0, 0, 0, 0.6); }
-.ss-card[hidden] { display: none; }
-.ss-card h2 { margin: 0 0 2px; font-size: 20px; color: #ffe066; }
-.ss-card.bad h2 { color: #ffb4a8; }
-.ss-card .ss-card-stars { font-size: 34px; line-height: 1.1; color: #ffd166; letter-spacing: 4px; }
-.ss-card .ss-card-stars span { display: inline-block; animation: ss-pop 0.35s ease-out backwards; }
-.ss-card .ss-card-stars span.off { color: #8391a8; }
-@keyframes ss-pop { from { transform: scale(0.2); opacity: 0; } }
 .ss-card .ss-card-score { font-size: 22px; font-weight: 700; color: #ffffff; margin: 4px 0 0; }
 .ss-card .ss-card-record { color: #7ee787; font-weight: 700; }
 .ss-card .ss-card-small { color: #c3cedf; font-size: 13px; }
@@ -2382,22 +2376,20 @@ cardStyle.textContent = `
 .ss-card .ss-card-map span { padding: 1px 6px; border-radius: 6px; background: #1a2336; color: #d6deea; font-size: 12px; border: 1px solid #2c3a55; }
 .ss-card .ss-card-map span.now { border-color: #ffe066; color: #ffe066; }
 .ss-card .ss-card-map i { font-style: normal; color: #ffd166; }
-.ss-card .ss-card-next { color: #9fd3ff; font-size: 13px; margin: 4px 0 8px; }
-.ss-card .ss-card-buttons { display: flex; gap: 8px; justify-content: center; }
-.ss-card button { min-height: 44px; min-width: 44px; padding: 0 14px; border-radius: 10px; border: 1px solid #6b7c99; background: #1c2638;
-  color: #ffffff; font: 600 15px system-ui, sans-serif; cursor: pointer; white-space: nowrap; }
-.ss-card button.ss-go { background: #1f7a3a; border-color: #7ee2a0; }
-.ss-card button.ss-card-close { position: absolute; right: 6px; top: 6px; min-height: 32px; min-width: 32px; padding: 0; border: none; background: none; color: #c3cedf; }
-.ss-card kbd { font: 12px system-ui, sans-serif; color: #c3cedf; }
+.ss-card .ss-card-next { color: #9fd3ff; font-size: 13px; margin: 4px 0 0; }
 `;
 document.head.append(cardStyle);
-const card = document.createElement('section');
-card.className = 'ss-card';
-card.dataset.hud = 'result-card';
-card.setAttribute('role', 'dialog');
-card.setAttribute('aria-label', 'flight result');
-card.hidden = true;
-pageLayout().stage.append(card);
+/** The result card (game-kit's): its ✕ hides it to see the map; Enter and T are the game's keys. */
+const card = createDomResultCard(pageLayout().stage, {
+  name: 'result-card',
+  className: 'ss-card',
+  ariaLabel: 'flight result',
+  width: 'min(380px, calc(100% - 24px))',
+  accent: '#ffe066',
+  lostColour: '#ffb4a8',
+  primaryColours: { background: '#1f7a3a', text: '#ffffff', border: '#7ee2a0' },
+  close: { ariaLabel: 'hide the result to see the map', onClose: () => hideCard() },
+});
 let cardTimer = 0;
 
 /** A new element of `tag` with class `cls` and text `text` in `parent`. */
@@ -2413,7 +2405,7 @@ function put(parent: HTMLElement, tag: string, cls: string, text = ''): HTMLElem
 function hideCard(): void {
   window.clearTimeout(cardTimer);
   arrivalBanner.hidden = true;
-  card.hidden = true;
+  card.hide();
 }
 
 /**
@@ -2448,38 +2440,24 @@ function missAdvice(f: Flight): string {
  */
 function showCard(f: Flight): void {
   hideCard();
-  card.replaceChildren();
   const m = f.mission;
   const won = f.state === 'arrived' && lastResult;
-  card.classList.toggle('bad', !won);
-  const close = put(card, 'button', 'ss-card-close', '✕');
-  close.setAttribute('aria-label', 'hide the result to see the map');
-  onButtonPress(close, () => hideCard());
-  const buttons = document.createElement('div');
-  buttons.className = 'ss-card-buttons';
+  const lines: (string | ResultCardLine | Node)[] = [];
+  const small = (text: string): ResultCardLine => ({ text, className: 'ss-card-small' });
+  const buttons: ResultCardButton[] = [];
   const button = (label: string, name: string, go: boolean, act: () => void): void => {
-    const b = put(buttons, 'button', go ? 'ss-go' : '', label);
-    b.setAttribute('aria-label', name);
-    b.dataset.card = go ? 'go' : 'retry';
-    onButtonPress(b, act);
+    buttons.push({ label, ariaLabel: name, action: go ? 'go' : 'retry', primary: go, onPress: act });
   };
   if (won) {
     const r = lastResult!;
-    put(card, 'h2', '', `${m.target} reached!`);
-    const stars = put(card, 'div', 'ss-card-stars');
-    for (let i = 0; i < 3; i++) {
-      // No delay: the arrival banner has already popped the stars in one by one; a delayed
-      // (invisible) star here read as an empty row.
-      put(stars, 'span', i < r.stars ? '' : 'off', i < r.stars ? '★' : '☆');
-    }
-    put(card, 'div', 'ss-card-score', `${r.score.total} points`);
-    put(
-      card,
-      'div',
-      r.record ? 'ss-card-record' : 'ss-card-small',
-      r.record ? (r.before > 0 ? `New best! (was ${r.before})` : 'First arrival!') : `Best ${bestScore[missionIndex]}`,
+    lines.push({ text: `${r.score.total} points`, className: 'ss-card-score' });
+    lines.push(
+      r.record
+        ? { text: r.before > 0 ? `New best! (was ${r.before})` : 'First arrival!', className: 'ss-card-record' }
+        : small(`Best ${bestScore[missionIndex]}`),
     );
-    const parts = put(card, 'div', 'ss-card-parts');
+    const parts = document.createElement('div');
+    parts.className = 'ss-card-parts';
     const spent = f.aim.speed + f.fuelUsed;
     put(parts, 'span', '', `Speed spent ${spent.toFixed(2)} km/s${f.fuelUsed > 0 ? ` (${f.fuelUsed.toFixed(2)} in burns)` : ''}`);
     put(parts, 'b', '', `${r.score.budget}`);
@@ -2487,53 +2465,53 @@ function showCard(f: Flight): void {
     put(parts, 'b', '', `${r.score.time}`);
     put(parts, 'span', '', launches <= 1 ? 'Arrived at the first launch' : `Arrived at launch ${launches}`);
     put(parts, 'b', '', `${r.score.tries}`);
-    put(
-      card,
-      'div',
-      'ss-card-small',
-      r.stars < 3
-        ? `★★★ needs ${m.stars3} km/s or less in all: hold Wait for a cheaper moment, then aim again.`
-        : 'Fewer km/s or a quicker flight scores more: a better moment may be cheaper.',
+    lines.push(
+      parts,
+      small(
+        r.stars < 3
+          ? `★★★ needs ${m.stars3} km/s or less in all: hold Wait for a cheaper moment, then aim again.`
+          : 'Fewer km/s or a quicker flight scores more: a better moment may be cheaper.',
+      ),
     );
   } else {
-    put(card, 'h2', '', f.state === 'sun' ? 'The probe fell into the Sun' : `Missed ${m.target}`);
-    put(card, 'div', 'ss-card-small', missAdvice(f));
-    put(
-      card,
-      'div',
-      'ss-card-small',
-      verdictShown()
-        ? `Stuck? ${named('Press H', 'Tap Hint')} for what to change.`
-        : `From now on the map shows where ${m.target} will be when the probe comes closest, and ${named('H', 'Hint')} says what to change.`,
+    lines.push(
+      small(missAdvice(f)),
+      small(
+        verdictShown()
+          ? `Stuck? ${named('Press H', 'Tap Hint')} for what to change.`
+          : `From now on the map shows where ${m.target} will be when the probe comes closest, and ${named('H', 'Hint')} says what to change.`,
+      ),
     );
   }
   const sum = bestScore.reduce((a, b) => a + b, 0);
   if (sum > 0)
-    put(
-      card,
-      'div',
-      'ss-card-small',
-      `All missions: ${best.reduce((a, b) => a + b, 0)} of ${3 * MISSIONS.length} stars · best scores ${sum} in all`,
-    );
-  const map = put(card, 'div', 'ss-card-map');
+    lines.push(small(`All missions: ${best.reduce((a, b) => a + b, 0)} of ${3 * MISSIONS.length} stars · best scores ${sum} in all`));
+  const map = document.createElement('div');
+  map.className = 'ss-card-map';
   MISSIONS.forEach((x, i) => {
     const chip = put(map, 'span', i === missionIndex ? 'now' : '', `${i + 1} ${x.target} `);
     put(chip, 'i', '', best[i]! > 0 ? '★'.repeat(best[i]!) : '–');
   });
+  lines.push(map);
   if (won) {
     const next = MISSIONS[(missionIndex + 1) % MISSIONS.length]!;
-    put(
-      card,
-      'div',
-      'ss-card-next',
-      missionIndex + 1 < MISSIONS.length
-        ? `Next: ${next.target}. ${next.brief}`
-        : `All seven flown: ${best.reduce((a, b) => a + b, 0)} of ${3 * MISSIONS.length} stars. Next: Mars again, to beat your scores.`,
-    );
+    lines.push({
+      text:
+        missionIndex + 1 < MISSIONS.length
+          ? `Next: ${next.target}. ${next.brief}`
+          : `All seven flown: ${best.reduce((a, b) => a + b, 0)} of ${3 * MISSIONS.length} stars. Next: Mars again, to beat your scores.`,
+      className: 'ss-card-next',
+    });
     button(named('Try again (T)', 'Try again'), 'try again from the launch (T)', false, () => retry());
     button(named('Next mission (Enter)', 'Next mission'), 'next mission (Enter)', true, () => advance());
   } else button(named('Try again (Enter)', 'Try again'), 'try again from the launch (Enter)', true, () => retry());
-  card.append(buttons);
+  const content: DomResultCardContent = {
+    title: won ? `${m.target} reached!` : f.state === 'sun' ? 'The probe fell into the Sun' : `Missed ${m.target}`,
+    stars: won ? { earned: lastResult!.stars, outOf: 3 } : undefined,
+    lost: !won,
+    lines,
+    buttons,
+  };
   const ended = f;
   // An arrival gets its moment: the flash at the planet, then the stars one by one over the scene.
   if (won && lastResult) {
@@ -2550,7 +2528,7 @@ function showCard(f: Flight): void {
   cardTimer = window.setTimeout(
     () => {
       arrivalBanner.hidden = true;
-      if (phase === 'done' && flight === ended) card.hidden = false;
+      if (phase === 'done' && flight === ended) card.show(content);
     },
     won ? ARRIVAL_CARD_DELAY_MS : CARD_DELAY_MS,
   );

@@ -656,8 +656,8 @@ export const FLIGHT_STEPS_PER_SECOND = 60 * 24;
  * window, the later of the plan's time (its arrival or closest approach) and its time to the
  * target's orbit (or nearest it), or for a wide miss (closest approach beyond 3 rings) the time to
  * the orbit alone, with a margin (1.2 x and 30 days). So a probe is not given up before it reaches
- * the target's orbit (a launch whose closest approach was at the start, the target then on the far
- * side, was given up after 30 days, a tenth of the way out to Jupiter), nor flown for decades to a
+ * the target's orbit (a launch whose closest approach is at the start, the target then on the far
+ * side, would otherwise be given up after 30 days, a tenth of the way out to Jupiter), nor flown for decades to a
  * closest approach of many AU (Uranus: 17,900 days, 45 s at the fastest rate).
  */
 export function flightDeadline(plan: Pick<FlightPlan, 'time' | 'window' | 'orbitTime' | 'distance'>, zone: number): number {

@@ -1,7 +1,7 @@
 /**
  * The beacon pointer's choice: which beacon the arrow at the screen's edge leads to (the target).
- * It holds one beacon until a beacon is collected, however near the others pass (a stranger who
- * saw the target flip between beacons as the boat went by them never knew which to chase), and then
+ * It holds one beacon until a beacon is collected, however near the others pass (a target that
+ * flips between beacons as the boat goes by them leaves a player not knowing which to chase), and then
  * takes the next one left along the course. Headless (no drawing), so the rule is tested in node.
  */
 
@@ -13,8 +13,8 @@ import { hullDistance } from './hull';
 /**
  * A beacon is collected when any part of the hull (its 12 m x 3 m box) comes within this of it, m:
  * the radius of the ring drawn round each beacon, so the boat touching the ring collects it (with
- * the hull's centre within 8 m, a stranger saw the bow deep inside the drawn disc and nothing
- * happen, and read it as "only at the centre").
+ * the hull's centre within 8 m, the bow could be deep inside the drawn disc with nothing happening,
+ * which reads as "only at the centre").
  */
 export const BEACON_CATCH = 8;
 
@@ -93,8 +93,8 @@ function clearance(x0: number, y0: number, x1: number, y1: number, bedAt: (x: nu
  * The beacon the pointer leads to from the hull at (x, y), m. With `justTaken` (a beacon collected
  * this step, its index) the next uncollected one along the course after it (course order: the first
  * beacon, then by x), or, with none after it, the first uncollected one along the course (the ones
- * passed by): a stranger who passed beacon A and collected C saw the target stay on A, behind the
- * boat. Otherwise `current` while it is uncollected (it is held, however near another one comes);
+ * passed by), so a boat that passes beacon A and collects C is led on, not back to A behind it.
+ * Otherwise `current` while it is uncollected (it is held, however near another one comes);
  * with no current one (-1, out of range or collected), the nearest uncollected one. -1 when all are
  * collected.
  * @param beacons (x, y) pairs, m.

@@ -28,8 +28,8 @@
  *   goes, the helm brakes its way ahead at up to `HELM.coastBrake` (the screw's blades feathered across the
  *   flow and the planes set as brakes), fading out below `HELM.coastFade`, so a boat let go from full
  *   speed stops within about a hull's length instead of coasting on for a hundred metres on the
- *   water's drag alone (a telegraph that stayed at full ahead read as a stuck key; a screw that
- *   backed on its own braked the boat as if it had hit something). Astern held is the harder brake:
+ *   water's drag alone (a telegraph that stays at full ahead reads as a stuck key; a screw that
+ *   backs on its own brakes the boat as if it had hit something). Astern held is the harder brake:
  *   the same brake and the screw backing; once the boat is stopped the brake lets the screw back it
  *   (to recover a beacon overshot: the boat always faces ahead), and let go it stops the backing.
  */
@@ -191,8 +191,8 @@ export const HELM = Object.freeze({
    * The boat's top speed ahead at full throttle, m/s (15.5 knots, a fast small submersible): the
    * screw's governor (`screwPush`) runs the screw's full 400 kN until the boat nears the speed its
    * throttle asks for (the throttle times this; half of it astern) and then only what holds it
-   * there. The screw alone would take the 12 m boat to 12.9 m/s (400 kN against drag k v^2), and a
-   * stranger who held Ahead to reach a beacon passed it by 230 m.
+   * there. The screw alone would take the 12 m boat to 12.9 m/s (400 kN against drag k v^2), too fast
+   * to stop at a beacon reached by holding Ahead.
    */
   topSpeed: 8,
   /** Time constant of the screw's governor, s: it pushes m (v_asked - u) / speedTime on top of the drag at the asked speed. */
@@ -262,8 +262,9 @@ export function screwPush(mass: number, u: number, throttle: number): number {
  * The share of full Dive / Rise (`HelmInput.heave`) a Dive or Rise key asks for at rest: a steady 0.6
  * (6 m/s down, 4.8 m/s up), from the first moment it is held, so the depth gone grows in step with
  * the time held (from a hover about 5 m for 1 s, 12 m for 2 s, 24 m for 4 s) and a short tap still
- * moves the depth order by most of a metre. (A key that asked for the full 10 m/s at once took the boat
- * 11 m in 1.5 s; one that ramped up from a tenth made the depth grow with the square of the time.)
+ * moves the depth order by most of a metre. (A key that asked for the full 10 m/s at once would take
+ * the boat 11 m in 1.5 s; one that ramped up from a tenth would make the depth grow with the square
+ * of the time.)
  * Under way the key asks for more (`KEY_HEAVE_SHARE_FAST`). The on-screen stick asks for as much as it
  * is pushed, up to what a key asks for (the page's heldInput), so the two dive alike.
  */
@@ -271,9 +272,9 @@ export const KEY_HEAVE_SHARE = 0.6;
 
 /**
  * The share a Dive or Rise key asks for at `KEY_HEAVE_FULL_SPEED` ahead or faster: 0.8 (8 m/s down).
- * At full ahead a boat diving at the rest share's 6 m/s ran 18 m ahead for 5 m down in 1.5 s, and a
- * stranger found the dive slow to answer. (All of it, 10 m/s, took a pilot on the keys into more
- * mines and seabed slopes: scripts/submarine-pilot.mjs.)
+ * At full ahead a boat diving at the rest share's 6 m/s runs 18 m ahead for 5 m down in 1.5 s, a dive
+ * slow to answer. (All of it, 10 m/s, takes a pilot on the keys into more mines and seabed slopes:
+ * scripts/submarine-pilot.mjs.)
  */
 export const KEY_HEAVE_SHARE_FAST = 0.8;
 

@@ -196,34 +196,34 @@ const PICKUP_LIFE = 2;
 const FRAME_MARGIN = 60;
 /**
  * Room the framing camera keeps clear between the hull's ends and the view's left and right edges,
- * px: the depth ladder and its figures ("30 m", about 36 px) are drawn left of the stern, and on a
- * phone leading ahead the boat sat at the edge with its tail cut off and the figures on the hull.
+ * px: the depth ladder and its figures ("30 m", about 36 px) are drawn left of the stern, so on a
+ * phone leading ahead the boat never sits at the edge with its tail cut off and the figures on it.
  */
 const HULL_SIDE_ROOM = 60;
 /**
  * Room the framing camera keeps clear between the hull's bow or stern and the view's right edge,
  * px: the depth gauge and its tags ("you 30 m", "beacon A 27 m", up to about 105 px in from the
- * edge). With HULL_SIDE_ROOM there too, a stranger saw the boat reach the right edge under its tag.
+ * edge), so the boat never reaches the right edge under its tag (as it would with HULL_SIDE_ROOM).
  */
 const HULL_GAUGE_ROOM = 120;
 /**
  * The framing camera zooms out no further than this, px/m (beyond, the edge arrow leads on): 5 on
- * a wide screen (the 12 m hull 60 px long; at 2 px/m a stranger saw it shrink to about 35 px at
- * speed), 4 on a small one, where the hull would otherwise shrink under 48 px and the mines to specks.
+ * a wide screen (the 12 m hull 60 px long; at 2 px/m it would shrink to about 35 px at speed), 4 on
+ * a small one, where the hull would otherwise shrink under 48 px and the mines to specks.
  */
 const FRAME_MIN_ZOOM = pageLayout().compact() ? 4 : 5;
 /** The camera's zoom now, px/m (eased toward the framing zoom; NaN: set at the next frame). */
 let zoom = Number.NaN;
 /**
  * The view leads the hull by its velocity along x times this, s (the look-ahead): 24 m at the top
- * speed of 8 m/s (./helm.ts HELM.topSpeed), about what 2.2 s gave at the earlier 12.9 m/s.
+ * speed of 8 m/s (./helm.ts HELM.topSpeed), room to see what lies ahead on the boat's course.
  */
 const LEAD_TIME = 3;
 /**
  * The view leads the hull by its vertical velocity times this, s: a short look-ahead, so that on a
- * Dive the hull is seen to move down the screen at once (with 2.2 s, as along x, the view ran ahead
- * of it: the hull rose up the screen while it dived and sank down it for 2 s after it had stopped,
- * which read as a late answer and an overshoot).
+ * Dive the hull is seen to move down the screen at once (with a look-ahead as long as along x, the
+ * view would run ahead of it: the hull would rise up the screen while it dived and sink down it for
+ * seconds after it had stopped, which reads as a late answer and an overshoot).
  */
 const LEAD_TIME_Y = 0.4;
 /** The look-ahead is at most this share of the distance from the view's centre to the framing margin. */
@@ -347,7 +347,7 @@ function heldInput(now: number): HelmInput {
       : Math.min(stickShare(stickInput.y, false), keyHeaveShare(now, now, speedAhead())),
     drive: stickShare(stickInput.x, held.has('a') || held.has('d') || held.has('arrowleft') || held.has('arrowright')),
     // The stick touched but not pushed sideways (up or down only, or a thumb resting at its centre)
-    // keeps the screw as it is (a stranger pushing it straight up to rise stopped the screw); the
+    // keeps the screw as it is (pushing it straight up to rise does not stop the screw); the
     // thumb lifted, the screw winds down as with a key let go; pushed sideways, it drives the screw.
     keepThrottle: stickInput.held && Math.abs(stickInput.x) <= STICK_DEAD,
   };
@@ -579,8 +579,8 @@ const game = await startPixiGame({
   bodies: () => 1,
   // The game's time keeps pace with the clock down to 1 frame a second (60 steps of 1/60 s a
   // frame, frames up to 1 s; by default at most 4 and 0.1 s): a loaded machine draws 2 to 15 fps
-  // with frames of a second or more now and then, and with less a held key or stick ran in slow
-  // motion (a 4 s hold took the boat a quarter as far as the gauge's speed said). A step of the one
+  // with frames of a second or more now and then, and with less a held key or stick would run in
+  // slow motion (the boat going less far than the gauge's speed says). A step of the one
   // hull costs well under a millisecond, so 60 of them never make the next frame later still.
   maxFrameTime: 1,
   maxStepsPerFrame: 60,
@@ -647,8 +647,8 @@ const instruments = document.createElement('div');
 instruments.dataset.hud = 'instruments';
 // #c8d6e4 on the columns' dark backing: a contrast of about 12:1 (at least 4.5:1 for small text).
 instruments.style.cssText = 'white-space: pre-line; color: #c8d6e4; margin: 6px 0;';
-// On a desktop the status row is one line, the goal then the numbers a player needs (a stranger
-// found three lines, the third small and grey, too dense); the instruments (seabed, climb, pitch,
+// On a desktop the status row is one line, the goal then the numbers a player needs (three lines,
+// the third small and grey, are too dense); the instruments (seabed, climb, pitch,
 // screw, tanks, helm) go in the info column, a line each. On a phone the status row keeps two
 // short lines and the instruments are left out.
 if (compact) instruments.style.display = 'none';
@@ -923,7 +923,7 @@ function placeMineTag(k: number, hx: number, hy: number, W: number, H: number): 
   mineWarning.text = mineTag.text;
   mineWarning.box = [mineTag.x - w / 2, mineTag.y - h / 2, w, h];
   // A points label ("+30") over a glow just caught that would cross the tag moves on past it, away
-  // from the hull (a stranger saw the two drawn over each other).
+  // from the hull, so the two are never drawn over each other.
   for (const label of popLabels) {
     if (!label.visible) continue;
     const lw = label.width / 2 + 3,
@@ -1364,7 +1364,7 @@ function drawDepthGauge(W: number, H: number, depth: number, order: number, bed:
   gaugeDepth.text = `you ${Math.max(0, depth).toFixed(0)} m`;
   gaugeDepth.position.set(x0 - 13, Math.max(top + 6, Math.min(bottom - 6, yb)));
   // Off the target's frame (its brackets reach the gauge when the beacon is near the right edge,
-  // and on a phone the tags were drawn over them): each tag moves just above or below the frame,
+  // and on a phone the tags would be drawn over them): each tag moves just above or below the frame,
   // whichever is nearer and inside the gauge; a figure of the scale there is hidden.
   const frame = aim.frame as [number, number, number, number];
   if (frame[2] > 0) {
@@ -1373,15 +1373,15 @@ function drawDepthGauge(W: number, H: number, depth: number, order: number, bed:
     // Moved, the target's tag may now cross the boat's: the boat's depth is kept.
     if (gaugeTarget.visible && overlaps(textBox(gaugeTarget), textBox(gaugeDepth), 2)) gaugeTarget.visible = false;
   }
-  // Off the pointer's label pill and badge at the view's edge (on a phone the label ran into the
-  // scale's figures): the boat's depth moves above or below them, a figure of the scale there is hidden.
+  // Off the pointer's label pill and badge at the view's edge (on a phone the label would run into
+  // the scale's figures): the boat's depth moves above or below them, a figure of the scale there is hidden.
   for (const [bx, by, bw, bh] of [aim.label, aim.badge] as [number, number, number, number][]) {
     if (!pointer.visible || bw <= 0) continue;
     const box = [bx - 7, by - 2, bw + 14, bh + 4];
     if (gaugeDepth.visible) offFrame(gaugeDepth, box, top, bottom);
     for (const mark of gaugeMarks) if (mark.visible && overlaps(textBox(mark), box, 2)) mark.visible = false;
   }
-  // Off the live mines in view (on a phone the boat's depth was written over a mine near the edge).
+  // Off the live mines in view (on a phone the boat's depth would be written over a mine near the edge).
   for (const box of mineBoxes) {
     for (const tag of [gaugeDepth, gaugeTarget]) if (tag.visible) offFrame(tag, box, top, bottom);
     for (const mark of gaugeMarks) if (mark.visible && overlaps(textBox(mark), box, 2)) mark.visible = false;
@@ -1408,9 +1408,9 @@ const shownLabels: { name: string; box: number[] }[] = [];
  * it would cover; the hit's label stays over its place, moved up or down past what it would cover.
  * Last the tags that only add to what the scene shows (the target's depth on the gauge, the gauge's
  * and the ladder's figures, the other beacons' tags, the glows' points), each hidden where it would
- * cover anything placed before it or the hull's box `hull` (x, y, width, height, px). (On a phone
- * they were drawn on each other: the banner over the mine's tag, the ladder's figures through the
- * hint and the hull.)
+ * cover anything placed before it or the hull's box `hull` (x, y, width, height, px), so on a phone
+ * nothing is drawn on anything else (the banner over the mine's tag, the ladder's figures through
+ * the hint and the hull).
  */
 function declutter(H: number, hull: readonly number[]): void {
   const taken: number[][] = [];
@@ -1542,7 +1542,7 @@ function drawDepthLadder(t: number, sx: (x: number) => number, sy: (y: number) =
   let used = 0;
   if (ladder.alpha > 0) {
     // Kept far enough in from the view's left edge for its widest figure ("100 m", 11 px bold, about
-    // 36 px) left of the longer ticks: on a phone with the boat near the edge the figures were cut off.
+    // 36 px) left of the longer ticks, so on a phone with the boat near the edge no figure is cut off.
     const x = hxw - SUBMARINE.length / 2 - 3,
       px = Math.max(sx(x), 9 + 3 + 40),
       to = Number.isFinite(order) ? order : hyw;
@@ -1881,7 +1881,7 @@ function draw(): void {
     }
     tag.visible = true;
     tag.text = `beacon ${beaconName(i)}`;
-    // Under its beacon, kept clear of the depth gauge (a tag under it was cut to "beac").
+    // Under its beacon, kept clear of the depth gauge (which would cut a tag under it to "beac").
     tag.position.set(Math.max(tag.width / 2 + 4, Math.min(W - GAUGE_WIDTH - tag.width / 2 - 4, bx)), by + Math.max(11, 3 * k));
     tagged++;
   }
@@ -1955,13 +1955,13 @@ function draw(): void {
     if (brakeHint.on) pointer.text += `\n${BRAKE_HINT}`;
     aim.dx = wx - hxw;
     aim.dy = wy - hyw;
-    // The right margin leaves the depth gauge clear too (on a phone the badge sat over it). A beacon
+    // The right margin leaves the depth gauge clear too (on a phone the badge would sit over it). A beacon
     // whose lamp is in view (ON_SCREEN_MARGIN inside the edges, 6 px from the gauge) counts as on screen:
-    // with the badge's margin, on a phone the badge was drawn over the very beacon it pointed to.
+    // with the badge's margin, on a phone the badge would be drawn over the very beacon it points to.
     const right = W - GAUGE_WIDTH - m;
     const inside = ON_SCREEN_MARGIN;
-    // At the right, a lamp up to the gauge's edge is in view (on a phone at the start beacon A lay
-    // 12 px inside the gauge and the badge pointing to it was drawn over it).
+    // At the right, a lamp up to the gauge's edge is in view (on a phone at the start beacon A can lie
+    // a few px inside the gauge, and a badge pointing to it would be drawn over it).
     aim.onScreen = bx >= inside && bx <= W - GAUGE_WIDTH - 6 && by >= inside && by <= H - inside;
     // From the hull's place on screen toward the beacon, stopped at the margin.
     const hx = sx(hxw),
@@ -2102,7 +2102,7 @@ function draw(): void {
       pointer.y = pointer.y < ty + th / 2 ? ty - pointer.height / 2 - 6 : ty + th + pointer.height / 2 + 6;
     aim.label = [pointer.x - pointer.width / 2, pointer.y - pointer.height / 2, pointer.width, pointer.height];
     aim.hull = [hx0 - hr, hy0 - hr, 2 * hr, 2 * hr];
-    // The pickup banner ("Beacon 3 of 6") off the label's pill (on a phone it was drawn over it):
+    // The pickup banner ("Beacon 3 of 6") off the label's pill (on a phone it would be drawn over it):
     // moved just above the pill, or below it where above leaves the view.
     if (banner.visible) {
       const pill = [pointer.x - pointer.width / 2 - 7, pointer.y - pointer.height / 2 - 2, pointer.width + 14, pointer.height + 4];
@@ -2125,7 +2125,7 @@ function draw(): void {
     }
     aim.ridge = ridge;
     // Just switched to another beacon: the pill blinks a yellow ring for AIM_PULSE s, so the new
-    // name and distance are noticed (a stranger saw "52 m ahead" become "157 m ahead" unexplained).
+    // name and distance are noticed, not read as "52 m ahead" becoming "157 m ahead" unexplained.
     const since = t - aimSwitchedAt;
     if (since >= 0 && since < AIM_PULSE)
       g.roundRect(pointer.x - pw / 2 - 3, pointer.y - ph / 2 - 3, pw + 6, ph + 6, ph / 2 + 3).stroke({

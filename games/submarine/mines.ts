@@ -40,7 +40,7 @@ export const MINE_REACTION = 1;
 /**
  * How far ahead the warning looks along the boat's course, s (mineAhead): 40 m at full ahead
  * (8 m/s, helm.ts HELM.topSpeed). Long enough for a pilot on the keys, whose Dive or Rise asks for part of the speed (helm.ts
- * keyHeaveShare): at 4 s a stranger read "dive under" when the mine was already at the bow. Measured
+ * keyHeaveShare): at 4 s "dive under" would come when the mine is already at the bow. Measured
  * headless (helm and physics, test/games/submarine-mines.test.ts): a boat at full ahead on a level
  * run into a mine on its line, holding Rise from MINE_REACTION s after the warning, passes it with
  * 2 m or more to spare.
@@ -219,9 +219,9 @@ export interface MineAhead {
  * still make it (or can make neither) and it runs into no other mine, so the warning does not flip
  * as the hull turns to it; `heaving`: Dive or Rise is held (default false); `heave`: the share of
  * the helm's dive or climb speed that the held Dive or Rise asks for, in (0, 1] (default 1; a key
- * asks for ./helm.ts keyHeaveShare, 0.6 at rest to 0.8 at full speed): a course that took a key's
- * dive at the full 10 m/s ran under a mine that the boat, diving at 6 m/s, met, and the warning came
- * only at the mine.
+ * asks for ./helm.ts keyHeaveShare, 0.6 at rest to 0.8 at full speed), so the warning foresees the
+ * dive the boat really makes: a course that took a key's dive at the full 10 m/s would run under a
+ * mine that the boat, diving at 6 m/s, meets, and the warning would come only at the mine.
  * @throws RangeError when x, y, vx or vy is not finite, `horizon` is not positive or `heave` is not in (0, 1].
  */
 export function mineAhead(

@@ -64,8 +64,8 @@ export const DIVE_STOPPED_WORD = 'seabed: no deeper';
 /**
  * The helm's word on the gauges: "holding 30 m" (the order's depth, `holdY` the hull's y, m) while
  * holding, "stopping" while braking, the mode's name otherwise; `DIVE_STOPPED_WORD` while the
- * seabed stops a held Dive (`diveStopped`), which would otherwise read "holding" with Dive held (a
- * stranger holding Dive at "holding 81 m" saw the key ignored).
+ * seabed stops a held Dive (`diveStopped`), which would otherwise read "holding" with Dive held, as
+ * if the key were ignored.
  */
 export function helmWord(mode: string, holdY: number, diveStopped: boolean): string {
   if (diveStopped) return DIVE_STOPPED_WORD;

@@ -143,7 +143,11 @@ const params = {
   ballTonnes: BALL_TONNES,
   debug: flagParam('debug'),
   quality: askedQuality ?? (SMALL_SCREEN && isSoftwareWebGL() ? 'lite' : 'full'),
-  nextLevel: () => nextLevel(),
+  /** The panel's "next level": as L, only once the level is cleared (else it says what clearing needs). */
+  nextLevel: () => {
+    if (cleared) nextLevel();
+    else notCleared();
+  },
   reset: () => game.shell.reset(),
 };
 
@@ -329,8 +333,8 @@ const game = await startThreeGame({
     debug: params.debug ? debugOptions() : false,
     initialInstances: 128,
     // A 1024 px shadow map over the 26 m site: 2.5 cm a texel, finer than a pixel of the view on a
-    // desktop or a phone; the default 2048 took four times the fill in the shadow pass (in software
-    // WebGL the shadow pass was half of the frame's GPU time).
+    // desktop or a phone, at a quarter of the fill of the default 2048 in the shadow pass (which in
+    // software WebGL is a large share of the frame's GPU time).
     lights: { shadowMapSize: 1024 },
     shadowBounds: { min: [-13, 0, -13], max: [13, 12, 13] },
   },
@@ -492,7 +496,7 @@ function clearOfJib(p: Vector3): boolean {
  * Frames the site and the crane: the camera looks at the level's pieces, the mast (footing and top),
  * the hook and the ball from as near as keeps them all inside the screen's FRAME_ bounds
  * (fitPoints: the pieces' own corners, not a box round the site, whose empty corners nearest the
- * camera took a third of a phone's width and left bare ground in front), at the tilt of
+ * camera would take a third of a phone's width and leave bare ground in front), at the tilt of
  * FRAME_ELEVATIONS that draws them largest (of those within 4 % of it, the steepest: the band of
  * pieces the tallest), from a camera the jib does not cross (clearOfJib). A wide screen looks from
  * the side, turned about the vertical so no standing piece is behind the mast (clearOfMast); a tall
@@ -561,8 +565,8 @@ function frameAgain(): void {
   // A wide screen: the side view, turned clear of the mast. A phone: every 15 degrees round that the
   // mast does not hide a piece from.
   const ways: [number, number][] = [];
-  // The jib seen from its side, within 40 degrees of square to it (pointing at the camera it crossed
-  // the site; pointing away, it and the ball were hidden behind the mast).
+  // The jib seen from its side, within 40 degrees of square to it (pointing at the camera it would
+  // cross the site; pointing away, it and the ball would hide behind the mast).
   const jibX = Math.cos(handles.crane.angle),
     jibZ = -Math.sin(handles.crane.angle);
   if (tall) {
@@ -844,7 +848,8 @@ function mastBetween(x: number, y: number, z: number, r: number): boolean {
 }
 // A concrete pad under the mast, drawn only: 5 cm high, under the ball's lowest (its bottom 6 cm up at
 // the lowest hook), so neither the ball nor a piece knocked against the mast's foot is drawn sinking
-// into it (a 0.3 m slab was; as a static box it turned the low swings that pass the mast aside).
+// into it (as it would into a 0.3 m slab; as a static box it would turn the low swings that pass the
+// mast aside).
 const footing = new Mesh(new BoxGeometry(2.4, 0.05, 2.4), new MeshStandardMaterial({ color: 0x9a9a94, roughness: 0.95 }));
 footing.position.set(0, 0.025, 0);
 footing.receiveShadow = true;
@@ -889,8 +894,8 @@ const cable = new Line(cableGeometry, new LineBasicMaterial({ color: 0x20242b })
 cable.frustumCulled = false;
 app.scene.add(cable);
 // The chain, drawn as one: a thin dark core from the hook straight to the top of the ball (see
-// drawChain), so it stays whole whatever the links' joints give (the capsule links themselves were
-// drawn apart, with gaps between them, whenever a joint stretched under the swing), threaded with
+// drawChain), so it stays whole whatever the links' joints give (the capsule links themselves would
+// be drawn apart, with gaps between them, whenever a joint stretches under the swing), threaded with
 // LINKS_PER_SEGMENT oval steel rings per segment, each turned a quarter turn from the last, so it
 // reads as a chain of links and not as a rod.
 const chainMaterial = new MeshStandardMaterial({ color: 0x3a3f46, roughness: 0.6, metalness: 0.5 });
@@ -899,7 +904,7 @@ const ringGeometry = new TorusGeometry(1, 0.3, 6, 12);
 const ringMaterial = new MeshStandardMaterial({ color: 0xb9c0c8, roughness: 0.35, metalness: 0.85 });
 /**
  * The chain's rings and core segments, each one instanced mesh (two draw calls, and two in the
- * shadow pass): drawn as 27 meshes they were 54 of the page's 87 draw calls. A hidden instance is
+ * shadow pass) rather than 54 for 27 separate meshes, most of the page's draw calls. A hidden instance is
  * scaled to nothing; `segmentShown` and `ringShown` say which show (for window.game.chain).
  */
 const chainRings = new InstancedMesh(ringGeometry, ringMaterial, (CHAIN_LINKS + 1) * LINKS_PER_SEGMENT);
@@ -1058,8 +1063,8 @@ function inFraming(p: ArrayLike<number>, position: Vector3, target: Vector3): bo
 const ballCorner = [0, 0, 0];
 /**
  * Whether the whole ball at `b` (m; the corners of its box) is inside the framing seen from
- * `position` looking at `target`: tested at its centre, a ball swinging past a phone's narrow
- * framing was half off the screen before the camera moved.
+ * `position` looking at `target`, so a ball swinging past a phone's narrow framing moves the camera
+ * before any of it leaves the screen (tested at its centre, it could be half off first).
  */
 function ballInFraming(b: ArrayLike<number>, position: Vector3, target: Vector3): boolean {
   for (let c = 0; c < 8; c++) {
@@ -1357,8 +1362,8 @@ const craneBar = createButtonBar(
 );
 craneBar.element.style.gap = '4px';
 /**
- * Under each button's symbol, what it moves in a word a player knows (the bar was unexplained once
- * the card saying how to play had gone): the crane turns, the hook runs out and in along the arm,
+ * Under each button's symbol, what it moves in a word a player knows, so the bar explains itself once
+ * the card saying how to play has gone: the crane turns, the hook runs out and in along the arm,
  * the ball goes up and down, Steady stops its swing.
  */
 const CRANE_CAPTIONS = ['turn', 'turn', 'hook', 'hook', 'ball', 'ball', 'stop swing'];
@@ -1392,8 +1397,8 @@ function updateControls(): void {
 
 const canvas = app.canvas;
 // Critically damped: a held ball settles where it is pulled instead of bobbing in the hand, so it
-// is let go at rest and swings along its chain's arc (bobbing at 0.3, it was let go moving up and
-// flew off the arc, its chain slack).
+// is let go at rest and swings along its chain's arc (bobbing, as at a damping ratio of 0.3, it could
+// be let go moving up and fly off the arc, its chain slack).
 const drag = new BodyDrag3D(renderer, { hertz: 2, dampingRatio: 1 });
 const ndc: [number, number] = [0, 0];
 const ground = new Plane(new Vector3(0, 1, 0), 0);
@@ -1458,7 +1463,8 @@ const GROUND_NEAR = 1.8;
  * The standing piece to swing at for a tap on the ground at (x, z), m: of those whose centre is
  * within GROUND_NEAR across the ground, the nearest, counting each metre of height over 1 m as
  * a quarter metre more (a tap at a tower's foot takes a block low in it); 0 when none is near. A tap
- * beside a structure meant it (a tap that only sent the hook there read as a game that did not answer).
+ * beside a structure means it (a tap that only sent the hook there would read as a game that did not
+ * answer).
  */
 function pieceNearGround(x: number, z: number): number {
   const P = shell.world.components.Position;
@@ -1743,8 +1749,8 @@ function swingAt(piece: number, aim?: SwingRequest): boolean {
     return false;
   }
   if (running) {
-    // A swing on its run cannot be re-aimed, and a swing saved up for after it was taken as this
-    // one's re-aim that then used another: the tap or drag is let go, and said so.
+    // A swing on its run cannot be re-aimed, and a swing saved up for after it would be taken as
+    // this one's re-aim that then used another: the tap or drag is let go, and said so.
     sound.chime(330, 0.12);
     say(`The ball is on its swing: wait till it is done, then aim again (no swing used)`);
     return false;
@@ -1867,7 +1873,7 @@ function placeGroundShadows(): void {
     groundShadows.add(shadowAt[0]!, shadowAt[1]!, shadowAt[2]!, O.x[p.body]!, O.y[p.body]!, O.z[p.body]!, O.w[p.body]!, half);
   }
   // The mast, narrower than its box (a lattice lets light through), the counterweight and the cab.
-  // Not the jib: flattened as a solid strip its shadow was a thin dark line 15 m long across the
+  // Not the jib: flattened as a solid strip its shadow would be a thin dark line 15 m long across the
   // site, read as a cable on the ground (its lattice lets most of the light through).
   groundShadows.add(0, JIB_HEIGHT / 2, 0, 0, 0, 0, 1, MAST_SHADOW_HALF);
   for (const [mesh, half] of craneShadows) {
@@ -2143,8 +2149,8 @@ const pauseOverlay = createDomPauseOverlay(pageLayout().stage);
 /**
  * The legend led by the moves that matter (dragging a target, turning the crane, steadying the
  * ball), the rest (the shell's P, N, R, the hook's and the camera's controls) folded under a
- * summary that says what is in it: a stranger reads three lines, not twelve, and with only the drag
- * shown found the crane's keys hidden.
+ * summary that says what is in it: a newcomer reads three lines, not twelve, and the crane's keys
+ * are shown too, not hidden behind the drag alone.
  */
 function foldLegend(): void {
   const legend = shell.hud.legend;
@@ -2168,8 +2174,8 @@ foldLegend();
 const compactStyle = document.createElement('style');
 compactStyle.textContent =
   '[data-hud="tap-hint"].compact { top: 4px !important; padding: 2px 8px !important; font-size: 12px !important; line-height: 1.25 !important; max-width: 80% !important; border-radius: 10px !important; }' +
-  // On a desktop the status line (swings left, blocks down) reads at a glance: the kit's 12 px
-  // monospace in its thin bar was missed; a phone keeps the small type its three lines need. The
+  // On a desktop the status line (swings left, blocks down) reads at a glance, where the kit's 12 px
+  // monospace in its thin bar goes unnoticed; a phone keeps the small type its three lines need. The
   // bar keeps its height (19 px of text + 6 of padding): the scene's framing is measured on it.
   `@media (min-width: ${COMPACT_MAX_WIDTH}px) and (min-height: ${COMPACT_MAX_HEIGHT}px) { [data-hud="wrecking-ball"] { font: 600 16px/1.2 system-ui, sans-serif; padding: 3px 10px !important; } }`;
 document.head.append(compactStyle);
@@ -2342,7 +2348,7 @@ function frame(): void {
   if (goal !== null) goalMarker.position.set(goal[0], 0.02, goal[1]);
   else if (swinging) {
     const P = shell.world.components.Position;
-    // Over the top of whatever stands on the piece (an arrow at a tower's middle block was inside it).
+    // Over the top of whatever stands on the piece (an arrow at a tower's middle block would be inside it).
     const tx = P.x[aimed]!,
       tz = P.z[aimed]!;
     let top = 0;
@@ -2381,7 +2387,7 @@ function frame(): void {
           }${left <= 0 && handles.controls.moves.length === 0 ? ` · out of swings: ${touch ? 'tap ↻' : 'press R'} to retry` : ''}${swayHint()}`;
     showNext(cleared, `Level ${handles.level + 1} ▶`);
     showHint(hintText(), cleared);
-    // After the first swing a phone's hint is compact: it covered the top of the scene.
+    // After the first swing a phone's hint is compact, so it leaves the top of the scene in sight.
     hint.classList.toggle('compact', touch && SMALL_SCREEN && swingsUsed() > 0 && !cleared);
     drawPlan();
     readout.textContent = params.debug
@@ -2514,7 +2520,7 @@ shell.expose({
   /**
    * Whether the mast is drawn solid (opaque, writing depth) as it always is: the ball, its chain and
    * the pieces behind it show through its lattice's open panels and pass behind its bars (drawn
-   * faint while the ball was behind it, they were drawn over it and looked to pass through it).
+   * faint while the ball is behind it, they would be drawn over it and look to pass through it).
    */
   mastSolid: (): boolean => {
     const m = mastLattice.material as Material;

@@ -47,7 +47,7 @@ export const HOIST_SPEED = 2;
  * speed up at SLEW_ACCEL (rad/s^2) and TROLLEY_ACCEL (m/s^2) to the rate asked, full speed in
  * 0.5 s; let go, they coast to a stop at SLEW_COAST and TROLLEY_COAST (0.7 s, the jib turning 14
  * degrees on); driven the other way, they brake at SLEW_REVERSE and TROLLEY_REVERSE (0.25 s to a
- * stop). A crane that started and stopped dead at full speed felt like a cursor; the ball still
+ * stop), so the crane does not move like a cursor, starting and stopping dead; the ball still
  * swings out behind a start and on past a stop (both take well under a quarter of its 4.6 s swing),
  * so a player pumps it by reversing the jib in time with the swing.
  */
@@ -97,15 +97,12 @@ export const TIP_ANGLE = Math.PI / 3;
  * clear it: 0.75 on levels 1 to 3 and 0.76 after (the levels grow, so the count grows too).
  * The bottom row (a wall's lowest bricks, a crib's lowest logs, a tower's base) rarely falls, tips or
  * slides a metre however it is hit, so the share counts raised pieces only. With the pars of
- * `swingPar`, no one swing clears level 1 or 2 (the most a swing of scripts/wrecking-ball-par.mjs
- * brought down was 10 on level 1, 9 on level 2: 14 and 16 or 17 are needed), so three stars ask for
- * two swings at the right structures: of its careless games (the top of each structure in turn, the
- * biggest structure, the piece nearest the ball; three starts each) only the biggest structure's
- * earned three stars on level 1 (3 of 9) and on level 2 (1 of 9), and every game cleared both within
- * 4 swings. At 0.5 on level 1 a swing aimed hard at the plank stack cleared it for three stars, and
- * at 0.65 (14 of its 21 raised pieces) a stranger's first drag cleared it; at 0.75 (16 on level 1,
- * 18 on level 2) the top of each structure in turn took 4 swings on both (down after each on level 1:
- * 2, 10, 15, 25; on level 2: 4, 9, 14, 22).
+ * `swingPar`, no one swing clears level 1 or 2 (a swing of scripts/wrecking-ball-par.mjs brings
+ * down at most 10 on level 1, 9 on level 2, well short of the 16 and 18 needed), so three stars ask
+ * for two swings at the right structures, while its careless games (the top of each structure in
+ * turn, the biggest structure, the piece nearest the ball) still clear both within 4 swings. A lower
+ * share lets one swing clear level 1: at 0.5 a swing aimed hard at the plank stack, at 0.65 (14 of
+ * its 21 raised pieces) a player's first drag.
  * @throws RangeError on a level that is not an integer >= 1.
  */
 export function clearShare(level: number): number {
@@ -503,7 +500,7 @@ const PLAN_TIME_STEP = 0.1;
  * How much faster than the player's keys (SLEW_RATE, TROLLEY_SPEED) the crane may slew and run its
  * trolley in a planned swing: an operator's practised full-speed move, so the ball is on its way
  * at once and strikes soon after the player lets go (at the keys' rates a target across the site
- * took 7 to 8 s to reach, at 1.5 times them a drag's hit still came 3 to 5 s after it).
+ * would take 7 to 8 s to reach, at 1.5 times them a drag's hit would still come 3 to 5 s after it).
  */
 export const PLAN_RATE = 2.5;
 /** How a plan's time is shared among its three straight legs (`aimAt` tries each). */
@@ -522,8 +519,8 @@ const MOVE_STEPS = 24;
 const APPROACH_DIRECTIONS = 24;
 /**
  * Farthest, m, a plan lets the ball swing from under the hook (about 35 degrees on the chain): the
- * plan's pendulum is linear; a plan that swung the ball 4 m out sent it 2.7 m up at a crib 0.6 m
- * up, and at 1.8 m almost no plan was quick enough. At 3 m the ball reaches the piece within 0.2 s
+ * plan's pendulum is linear; a plan that swung the ball 4 m out would send it 2.7 m up at a crib 0.6 m
+ * up, and at 1.8 m almost no plan is quick enough. At 3 m the ball reaches the piece within 0.2 s
  * of the plan's time (measured over levels 1 to 5, see test/games/wrecking-ball-windup.test.ts).
  */
 export const MAX_OFFSET = 3;
@@ -558,8 +555,8 @@ const AIM_COST = 200;
 /**
  * How far, rad, an approach may stray from the player's direction at no cost: one of the
  * APPROACH_DIRECTIONS steps (15 degrees), so of the directions either side of the player's the
- * quicker plan wins. Held to the nearest direction, a light drag at a tower waited 6.3 s for its hit
- * where the direction beside it took 2.5 s.
+ * quicker plan wins. Held to the nearest direction, a light drag at a tower could wait 6.3 s for a
+ * hit that the direction beside it brings in 2.5 s.
  */
 const AIM_FREE = (2 * Math.PI) / APPROACH_DIRECTIONS;
 /** Seconds of plan time a ball along a long piece's length costs (see `aimAt`). */
@@ -580,7 +577,7 @@ export const STRIKE_SHARE = 0.35;
 /**
  * After its hit the hook runs on along the ball's approach at FOLLOW_SPEED m/s to FOLLOW_CLEAR m past
  * the structure's far side (with the ball's radius): the ball swings through and comes to rest
- * beyond the structure, not on it (a hook stopped over the piece hung the ball in what was left).
+ * beyond the structure, not on it (a hook stopped over the piece would hang the ball in what is left).
  */
 export const FOLLOW_SPEED = 3;
 export const FOLLOW_CLEAR = 0.4;
@@ -920,7 +917,7 @@ export function aimAt(world: PhysicsWorld, h: WreckingBallHandles, piece: number
   const tapped = h.pieces.find((q) => q.body === piece);
   const structure = tapped ? structureOf(h.pieces, tapped) : [];
   // Where the ball strikes across the ground: the piece tapped in a wall (a brick along it), the
-  // middle of a plank stack or a tower (a plank tapped at the stack's edge was only glanced off).
+  // middle of a plank stack or a tower, so a plank tapped at the stack's edge is not only glanced off.
   let tx = P.x[piece]!,
     tz = P.z[piece]!;
   if (tapped && tapped.kind !== 'wall' && structure.length > 0) {
@@ -1323,12 +1320,11 @@ export function fallenCount(pieces: readonly Piece[]): number {
 
 /**
  * Swings level `level` allows: taps (or site-plan clicks) on a target and drags of the ball each use
- * one. Without a limit a level fell to any two taps; with it, where the ball is sent is the skill.
+ * one. Without a limit a level falls to any two taps; with it, where the ball is sent is the skill.
  * One or two more than the level has structures: 5 on levels 1 to 3 (three or four structures; level
- * 1 asks for as large a share as levels 2 and 3, see clearShare), 6 from level 4 (five and more). The stranger's taps of scripts/wrecking-ball-par.mjs
- * (three ways, three starts each) took at most 2, 4, 5, 4 and 5 on levels 1 to 5, none of 134 taps
- * missing its structure (with the hook halting between timed moves and a steel-heavy chain that
- * held the ball up off its rope: 3, 3, 6, 6 and 7, and 4 of 163 taps missed).
+ * 1 asks for as large a share as levels 2 and 3, see clearShare), 6 from level 4 (five and more), so
+ * the careless taps of scripts/wrecking-ball-par.mjs (three ways, three starts each), which take at
+ * most 2, 4, 5, 4 and 5 swings on levels 1 to 5, fit within every level's budget.
  * @throws RangeError on a level that is not an integer >= 1.
  */
 export function swingBudget(level: number): number {
@@ -1338,14 +1334,11 @@ export function swingBudget(level: number): number {
 
 /**
  * Swings that clear level `level` for three stars: 2 on levels 1 to 3, 3 after. With the shares of
- * `clearShare` they ask for aim: no single swing clears levels 1 and 2 (at a par of 1 on level 1, a
- * stranger's first swing earned three stars at once), and at the earlier pars (1, 2, 3, 4 on levels
- * 1 to 4, and 0.45 then 0.6 to clear) the careless games of scripts/wrecking-ball-par.mjs earned
- * three stars in 4, 2, 6 and 9 of 9 games on levels 1 to 4. Since the player's swing strikes the
- * block aimed at, at its own height (see `aimAt`), those games (now swinging as the page's tap does)
- * earn three stars in 0, 1, 0, 0 and 0 of 9 games on levels 1 to 5 (3, 2 and 3 of 9 on levels 1 to 3
- * before); all 9 still clear level 1 within its budget, and only the top-of-each-structure way, which
- * never aims low, runs out of swings on level 3.
+ * `clearShare` they ask for aim: no single swing clears levels 1 and 2 (a par of 1 on level 1 would
+ * give a first swing three stars at once), and the careless games of scripts/wrecking-ball-par.mjs,
+ * swinging as the page's tap does (striking the block aimed at, at its own height: see `aimAt`),
+ * rarely earn three stars on any of levels 1 to 5; all 9 still clear level 1 within its budget, and
+ * only the top-of-each-structure way, which never aims low, runs out of swings on level 3.
  * @throws RangeError on a level that is not an integer >= 1.
  */
 export function swingPar(level: number): number {

@@ -13,7 +13,6 @@ import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
 import { checkPageContract } from './page-contract';
 import { decodePng } from './png';
 import { sharedPage } from './shared-page';
-import { stepUntil } from './stepping';
 
 interface BlackHolePage {
   bh: { falls: number; message: string };
@@ -87,7 +86,8 @@ describe('black hole', () => {
     await g.page.keyboard.down('ArrowUp');
     await g.waitFor(() => (window.game as unknown as BlackHolePage).levelBanner() === '', null);
     // The climb into the hole, ↑ held, stepped in the page (the fall starts the swallow in its step).
-    await stepUntil(g, () => (window.game as unknown as BlackHolePage).swallowing(), null);
+    await g.runUntil(() => (window.game as unknown as BlackHolePage).swallowing(), null, { draw: false });
+    await g.frames(2);
     await g.page.keyboard.up('ArrowUp');
     expect(await g.page.evaluate(() => (window.game as unknown as BlackHolePage).bh.falls)).toBe(1);
     expect(await g.page.locator('[data-hud="message"]').textContent()).toMatch(/^Swallowed/);

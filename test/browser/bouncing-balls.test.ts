@@ -24,7 +24,6 @@ import { BOX, SEGMENTS as RAMPS, SEGMENT_RADIUS } from '../../games/bouncing-bal
 import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
 import { decodePng } from './png';
 import { sharedPage } from './shared-page';
-import { stepN, stepUntil } from './stepping';
 
 /** The extras bouncing-balls puts on window.game (see games/bouncing-balls/main.ts). */
 interface BallsGame {
@@ -677,7 +676,8 @@ describe('bouncing balls: the hoop game', () => {
     expect(await g.page.evaluate(() => (window.game as unknown as HoopGame).round())).toMatchObject({ score: 1, shots: shots });
     // The 6 s round ends (stepped in the page): time up, the Play-again button, which starts a new
     // round keeping the best.
-    await stepUntil(g, () => (window.game as unknown as HoopGame).round().phase === 'over', null);
+    await g.runUntil(() => (window.game as unknown as HoopGame).round().phase === 'over', null, { draw: false });
+    await g.frames(2);
     expect(await status.textContent()).toMatch(/Time!/);
     // The end card over the box: the round's points, its baskets and the best.
     const card = await g.page.evaluate(() => {
@@ -838,7 +838,8 @@ describe('bouncing balls: the hoop game', () => {
     // 6 s of world time later (more than one turn of the teaching hints, 5 s; before, the reminder
     // gave way to them after 2.5 s) the reminder is still there. The 6 s are stepped in the page
     // (the status row is made from the game's state on each frame drawn after).
-    await stepUntil(g, (t) => (window.game as unknown as { world: { time: number } }).world.time > t + 6, t0);
+    await g.runUntil((t) => (window.game as unknown as { world: { time: number } }).world.time > t + 6, t0, { draw: false });
+    await g.frames(2);
     expect(await hint()).toMatch(/^Too high: throw from below the orange line/);
     // A throw from below the line ends it.
     await g.page.evaluate(() => (window.game as unknown as HoopGame).shoot(2, 1.5, 0, 3));
@@ -1170,10 +1171,7 @@ describe('bouncing balls: the hoop game', () => {
           type: 'touchMove',
           touchPoints: [{ x: from.x - 20 + (i % 10), y: from.y + 60 + (i % 7), id: 1 }],
         });
-        await stepN(g, 15, 0);
-        await g.page.evaluate(() => {
-          (window.game as unknown as { paused: boolean }).paused = false;
-        });
+        await g.runFrames(15, { draw: false });
         await g.frames(2);
         seen.push(await sample());
       }
@@ -1372,7 +1370,8 @@ describe('bouncing balls: cancelling, full-power pulls and the end of a round mi
     it('desktop 1280 x 800: from the lowest heap ball, a pull straight down past the viewport (captured) throws at the full speed', async () => {
       const g = page();
       // The heap settles, then the lowest ball is pressed at its centre and pulled down to the viewport's last row.
-      await stepUntil(g, () => (window.game as unknown as AimGame).world.time > 3, null, { resume: false });
+      await g.runUntil(() => (window.game as unknown as AimGame).world.time > 3, null, { draw: false, resume: false });
+      await g.frames(2);
       const low = await g.page.evaluate(() => {
         const game = window.game as unknown as AimGame;
         game.paused = true;
@@ -1628,7 +1627,8 @@ describe('bouncing balls: cancelling, full-power pulls and the end of a round mi
     // of room to their right. The heap settles, then the rightmost ball with 45 px or more of room
     // (main.ts MIN_FULL_PULL, 40 px, is the shortest full pull) is pressed at its centre and pulled
     // right and a little down (20 degrees) to the viewport's last column.
-    await stepUntil(g, () => (window.game as unknown as AimGame).world.time > 3, null, { resume: false });
+    await g.runUntil(() => (window.game as unknown as AimGame).world.time > 3, null, { draw: false, resume: false });
+    await g.frames(2);
     const right = await g.page.evaluate(() => {
       const game = window.game as unknown as AimGame;
       game.paused = true;
@@ -1661,7 +1661,8 @@ describe('bouncing balls: cancelling, full-power pulls and the end of a round mi
 
   it('phone 390 x 844, touch: a tap on the stand under the floor does nothing; a pull from a heap ball by the side gives the thumb room (no full speed from a 40 px pull)', async () => {
     const g = await h.openGame('bouncing-balls', { viewport: { width: 390, height: 844 }, touch: true, query: { count: 20 } });
-    await stepUntil(g, () => (window.game as unknown as AimGame).world.time > 3, null, { resume: false });
+    await g.runUntil(() => (window.game as unknown as AimGame).world.time > 3, null, { draw: false, resume: false });
+    await g.frames(2);
     const n0 = await g.page.evaluate(() => {
       const game = window.game as unknown as AimGame;
       game.paused = true;
@@ -1732,14 +1733,15 @@ describe('bouncing balls: cancelling, full-power pulls and the end of a round mi
     expect((await aimState(g)).aiming).toBe(true);
     // The clock reaches 0 under the pull: the round waits for this last throw (it used to end the aim,
     // and the throw being aimed was lost).
-    await stepUntil(
-      g,
+    await g.runUntil(
       () => {
         const game = window.game as unknown as AimGame;
         return game.round().timeLeft === 0 && game.lastThrow().aiming;
       },
       null,
+      { draw: false },
     );
+    await g.frames(2);
     const shots = await g.page.evaluate(() => (window.game as unknown as AimGame).round().shots);
     await g.frames(3);
     const waiting = await g.page.evaluate(() => {
@@ -1777,7 +1779,8 @@ describe('bouncing balls: cancelling, full-power pulls and the end of a round mi
     expect((await aimState(g)).aiming).toBe(false);
     await m.up();
     // The round ends once the last ball has scored or missed (stepped in the page).
-    await stepUntil(g, () => (window.game as unknown as AimGame).round().phase === 'over', null);
+    await g.runUntil(() => (window.game as unknown as AimGame).round().phase === 'over', null, { draw: false });
+    await g.frames(2);
     expect(await g.page.evaluate(() => (window.game as unknown as AimGame).round().shots)).toBe(shots + 1);
     expect(g.errors).toEqual([]);
     await g.close();

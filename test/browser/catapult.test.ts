@@ -9,7 +9,6 @@ import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { LEVEL_COUNT, levelName } from '../../games/catapult/scene';
 import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
 import { checkPageContract } from './page-contract';
-import { stepUntil } from './stepping';
 import { touchPath } from './touch';
 
 interface Cam {
@@ -391,7 +390,8 @@ async function previewMatchesThrow(
     (window.game as unknown as W).pacer.mayDraw = (window as unknown as { keptMayDraw: () => boolean }).keptMayDraw;
   });
   // The flight to its first touch stepped in the page, not waited for in real time.
-  const seg = await stepUntil(p, () => (window.game as unknown as W).firstTouch(), null);
+  const seg = await p.runUntil(() => (window.game as unknown as W).firstTouch(), null, { draw: false });
+  await p.frames(2);
   // The preview's end against the segment of the step in which the stone first touched anything.
   const [x0, y0, x1, y1] = seg;
   const [ex, ey] = shown.end;

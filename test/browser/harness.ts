@@ -48,6 +48,35 @@ export const DEFAULT_VIEWPORT = Object.freeze({ width: 800, height: 500 });
 /** `T` without its falsy members: what `GamePage.waitFor` resolves to. */
 export type Truthy<T> = Exclude<T, null | undefined | false | 0 | ''>;
 
+/** How `GamePage.runUntil` / `runFrames` run the game's time: its frames, drawn (the default). */
+export interface DrawnFrames {
+  /** Each of the game's frames its steps and then its drawing (`window.game.loop.runFrames`). Default true. */
+  draw?: true;
+  /** Game time of each frame, s (>= 0). Default 1/60. */
+  seconds?: number;
+  /** Unpause a paused game for the frames and pause it again after. Default true; false runs them as its pause has them. */
+  unpause?: boolean;
+}
+
+/** How `GamePage.runUntil` / `runFrames` run the game's time: its steps (`window.game.step()`), not drawn. */
+export interface BareSteps {
+  /** Each `window.game.step()`, the N key's single step: the game paused, nothing drawn. */
+  draw: false;
+  /** Let the game run on afterwards (unpause). Default true; false leaves it paused, as the steps do. */
+  resume?: boolean;
+}
+
+/** `DrawnFrames` or `BareSteps`. */
+export type RunMode = DrawnFrames | BareSteps;
+
+/** When `GamePage.runUntil` gives up. */
+export interface RunLimits {
+  /** Most frames or steps to run (integer >= 0). Default 3 600 with `draw`, none without. */
+  maxFrames?: number;
+  /** Most game time to run, s of `window.game.world.time` (> 0). Default none with `draw`, 30 without. */
+  maxSeconds?: number;
+}
+
 /** Options of `Harness.open` / `Harness.openGame`. */
 export interface OpenOptions {
   /** Query string: '?count=8' / 'count=8', or an object ({ count: 8, debug: true }). */
@@ -442,68 +471,103 @@ export class GamePage {
   }
 
   /**
-   * Runs `n` of the game's frames now, in the page, as its animation loop runs them
-   * (`window.game.loop.runFrames`, packages/game-kit/src/loop.ts: each frame the steps its `seconds`
-   * hold, then the drawing), without waiting for the clock or the software renderer's frame rate. A
-   * key or a finger held meanwhile acts on their steps as in play. With `unpause` (default true) a
-   * paused game is unpaused for these frames and paused again after; with `unpause: false` they run
-   * as the game's pause has them (paused: drawn only, the camera and labels easing; a game that
-   * pauses itself, as for a tip, stops stepping there).
+   * Runs `n` (>= 0) of the game's frames, or with `draw: false` its steps, now, in the page, as
+   * `runUntil` runs them (see there), with no predicate: all `n` of them.
    */
-  async runFrames(n: number, options: { unpause?: boolean; seconds?: number } = {}): Promise<void> {
+  async runFrames(n: number, options: RunMode = {}): Promise<void> {
     if (n <= 0) return;
-    await this.runUntil((left: { n: number }) => --left.n <= 0, { n }, { ...options, maxFrames: n });
+    await this.run(null, null, { ...options, maxFrames: n });
   }
 
   /**
-   * Runs the game's frames now (see `runFrames`), one at a time, until `predicate(arg)`, run in the
-   * page after each frame, returns a truthy value, and returns that value (the page as that frame
-   * left it). `arg` is the one object the predicate may change between frames. Game time goes by
-   * at 1/60 s a frame (`seconds`) whatever the machine's load.
-   * @throws Error naming the predicate and the game time reached when it is still falsy after
-   *   `maxFrames` (default 3 600: a minute of game time) frames.
+   * Runs the game's time on now, in the page, one frame or step at a time, until `predicate(arg)`,
+   * run in the page (a function of the calling test's own, passed as its source), returns a truthy
+   * value, and returns that value (the page as that frame or step left it). `arg` is the one object
+   * the predicate may change between calls. Nothing waits for the clock or for the software
+   * renderer's frame rate; a key or a finger held meanwhile acts on the steps as in play.
+   *
+   * With `draw` (the default) each is one of the game's frames as its animation loop runs them
+   * (`window.game.loop.runFrames(1, seconds)`, packages/game-kit/src/loop.ts: the steps its
+   * `seconds` hold, default 1/60 s, then the drawing), so game time goes by at `seconds` a frame
+   * whatever the machine's load, and the predicate is first read after the first frame. With
+   * `unpause` (default true) a paused game is unpaused for these frames and paused again after; with
+   * `unpause: false` they run as the game's pause has them (paused: drawn only, the camera and labels
+   * easing; a game that pauses itself, as for a tip, stops stepping there).
+   *
+   * With `draw: false` each is `window.game.step()`, the N key's single step (the same step a frame
+   * runs, without the drawing): the game is paused first, as the N key pauses it, the predicate is
+   * read before the first step and after each, and unless `resume` is false the game runs on
+   * afterwards. The HUD and the sprites are drawn from the state on the animation frames after: wait
+   * for them (`GamePage.frames`) before reading them.
+   *
+   * @throws Error naming the predicate, the game time at the start and reached, and the limits, when
+   *   it is still falsy after `maxFrames` frames or steps (default 3 600 with `draw`, a minute of game
+   *   time; no limit without) or `maxSeconds` of game time (default none with `draw`, 30 s without).
    */
-  async runUntil<A, R>(
-    predicate: (arg: A) => R,
-    arg: A,
-    options: { maxFrames?: number; unpause?: boolean; seconds?: number } = {},
-  ): Promise<Truthy<R>> {
-    const source = predicate.toString();
+  async runUntil<A, R>(predicate: (arg: A) => R, arg: A, options: RunMode & RunLimits = {}): Promise<Truthy<R>> {
+    return (await this.run(predicate.toString(), arg, options)) as Truthy<R>;
+  }
+
+  /** `runUntil` with `source` the predicate's source, or `null` for none (then it runs all `maxFrames`). */
+  private async run(source: string | null, arg: unknown, options: RunMode & RunLimits): Promise<unknown> {
+    const mode =
+      options.draw === false
+        ? { draw: false, seconds: 0, unpause: false, resume: options.resume ?? true }
+        : { draw: true, seconds: options.seconds ?? 1 / 60, unpause: options.unpause ?? true, resume: false };
+    const draw = mode.draw;
+    const limits = {
+      maxFrames: options.maxFrames ?? (draw ? 3600 : null),
+      // No predicate: `maxFrames` of them, however much game time that is.
+      maxSeconds: source === null ? null : (options.maxSeconds ?? (draw ? null : 30)),
+    };
     const out = await this.evaluate(
-      ({ source, arg, maxFrames, unpause, seconds }) => {
+      ({ source, arg, draw, maxFrames, maxSeconds, seconds, unpause, resume }) => {
         const game = window.game as unknown as {
           paused: boolean;
+          step(): void;
           world: { time: number };
           loop: { runFrames(n: number, s?: number): void };
         };
-        const test = new Function(`return (${source});`)() as (a: unknown) => unknown;
-        const resume = unpause && game.paused;
-        if (resume) game.paused = false;
+        const test = source === null ? null : (new Function(`return (${source});`)() as (a: unknown) => unknown);
+        const start = game.world.time;
+        const end = start + (maxSeconds ?? Number.POSITIVE_INFINITY);
+        const most = maxFrames ?? Number.POSITIVE_INFINITY;
+        const repause = draw && unpause && game.paused;
+        if (repause) game.paused = false;
+        if (!draw) game.paused = true;
+        let value: unknown = !draw && test ? test(arg) : null;
+        let frames = 0;
         try {
-          for (let i = 0; i < maxFrames; i++) {
-            game.loop.runFrames(1, seconds);
-            const value = test(arg);
-            if (value) return { value, time: game.world.time, frames: i + 1 };
+          while (!value && frames < most && game.world.time < end) {
+            if (draw) game.loop.runFrames(1, seconds);
+            else game.step();
+            frames++;
+            if (test) value = test(arg);
           }
-          return { value: null, time: game.world.time, frames: maxFrames };
         } finally {
-          if (resume) game.paused = true;
+          if (repause) game.paused = true;
+          if (!draw && resume) game.paused = false;
         }
+        return { ok: test === null || !!value, value, start, time: game.world.time, frames };
       },
       {
         source,
-        arg: arg as unknown,
-        maxFrames: options.maxFrames ?? 3600,
-        unpause: options.unpause ?? true,
-        seconds: options.seconds ?? 1 / 60,
+        arg,
+        ...mode,
+        ...limits,
       },
-      `running frames until ${source.slice(0, 80)}`,
+      `${draw ? 'running frames' : 'stepping the game'} ${source === null ? `${limits.maxFrames} times` : `until ${source.slice(0, 80)}`}`,
     );
-    if (!out.value)
+    if (!out.ok) {
+      const most = [
+        limits.maxFrames === null ? '' : `${limits.maxFrames} ${draw ? 'frames' : 'steps'}`,
+        limits.maxSeconds === null ? '' : `${limits.maxSeconds} s of game time`,
+      ];
       throw new Error(
-        `${this.page.url()}: runUntil(${source.slice(0, 120)}) still falsy after ${out.frames} frames, game time ${out.time} s; ${this.describe()}`,
+        `${this.page.url()}: runUntil(${source}) still falsy after ${out.frames} ${draw ? 'frames' : 'steps'} (at most ${most.filter(Boolean).join(' or ')}), game time ${out.start} s to ${out.time} s; ${this.describe()}`,
       );
-    return out.value as Truthy<R>;
+    }
+    return out.value;
   }
 
   /**

@@ -13,7 +13,6 @@ import { afterRelease, recordBank } from './flight-bank';
 import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
 import { checkLayout } from './layout-check';
 import { cubeState, expectRollsStraightUp, pageOf, placeCube, stillPageOf, waitCubeAtRest, waitCubeMoved } from './rotating-cube';
-import { stepUntil } from './stepping';
 import { touchPath } from './touch';
 
 const PHONE = { viewport: { width: 390, height: 844 }, touch: true } as const;
@@ -63,15 +62,15 @@ describe('phone controls', () => {
     await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: finger([cx + 20, cy - 20]) });
     await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: finger([cx + 40, cy - 40]) });
     // The flight under the held finger is stepped in the page (the steps read the stick as a frame's do).
-    const flown = await stepUntil(
-      g,
+    const flown = await g.runUntil(
       () => {
         const i = (window.game as unknown as { instruments(): { roll: number; climb: number } }).instruments();
         return i.roll > 10 && i.climb > 2 ? i : null;
       },
       null,
-      { seconds: 60 },
+      { draw: false, maxSeconds: 60 },
     );
+    await g.frames(2);
     // Off the straight course: the path marker (where the path meets ring 1's plane) has left the ring.
     const marker1 = await g.waitFor(() => {
       const m = (window.game as unknown as Marker).pathMarker();
@@ -206,12 +205,12 @@ describe('phone controls', () => {
     await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: [{ x: cx - 30, y: cy, id: 1 }] });
     await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: [{ x: cx - 60, y: cy, id: 1 }] });
     // Stepped in the page under the held finger (the steps read the stick as a frame's do).
-    await stepUntil(g, () => (window.game as unknown as Fly).instruments().roll < -30 || null, null, { seconds: 60, frames: 0 });
+    await g.runUntil(() => (window.game as unknown as Fly).instruments().roll < -30 || null, null, { draw: false, maxSeconds: 60 });
     await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
     await cdp.detach();
     // 2 s of game time from the lift stepped in the page (the wings level within 1.3 s).
     const lifted = await g.page.evaluate(() => window.game!.world.time);
-    await stepUntil(g, (t) => window.game!.world.time > t + 2, lifted, { frames: 0 });
+    await g.runUntil((t) => window.game!.world.time > t + 2, lifted, { draw: false });
     const { rolledOn, levelIn, trace } = await afterRelease(g);
     expect(rolledOn, trace).toBeLessThan(5);
     expect(levelIn, trace).toBeLessThan(1.3);
@@ -901,11 +900,10 @@ describe('phone controls', () => {
     await touchPath(g.page, [[slew.x + slew.width / 2, slew.y + slew.height / 2]], 100, async () => {
       // The next frame reads the held button into the crane's drive; the turn is stepped in the page.
       await g.frames(1);
-      await stepUntil(
-        g,
+      await g.runUntil(
         (a) => (window.game as unknown as { handles(): { crane: { angle: number } } }).handles().crane.angle > a + 0.02,
         a0,
-        { seconds: 60, frames: 0 },
+        { draw: false, maxSeconds: 60 },
       );
     });
     expect(await read(g, 'handles().crane.angle')).toBeGreaterThan(a0 + 0.02);

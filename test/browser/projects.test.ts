@@ -437,7 +437,7 @@ describe('projects', () => {
     const card = g.page.locator('[data-hud="result-card"]');
     await card.waitFor({ state: 'visible' });
     expect(await card.locator('h2').textContent()).toBe('Mars reached!');
-    expect(await card.locator('.ss-card-stars span:not(.off)').count()).toBe(3);
+    expect(await card.locator('.bp-result-stars span:not(.off)').count()).toBe(3);
     const scored = Number.parseInt((await card.locator('.ss-card-score').textContent()) ?? '', 10);
     expect(scored).toBeGreaterThan(0);
     const days = Number(/Flight (\d+) days/.exec((await card.locator('.ss-card-parts').textContent()) ?? '')?.[1]);

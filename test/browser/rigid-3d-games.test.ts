@@ -9,7 +9,6 @@ import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
 import { cubeState, expectRollsStraightUp, pageOf, stillPageOf, waitCubeAtRest, waitCubeMoved } from './rotating-cube';
 import { sharedPage } from './shared-page';
-import { stepUntil } from './stepping';
 
 interface Game3D {
   paused: boolean;
@@ -183,7 +182,8 @@ describe('3D rigid-body games in headless Chromium', () => {
       // A held: the next frame reads the keys into the crane's drive; the turn is stepped in the page.
       await g.page.keyboard.down('a');
       await g.frames(1);
-      await stepUntil(g, (a) => (window.game as unknown as WB).handles().crane.angle > a + 0.05, a0, { seconds: 20 });
+      await g.runUntil((a) => (window.game as unknown as WB).handles().crane.angle > a + 0.05, a0, { draw: false, maxSeconds: 20 });
+      await g.frames(2);
       await g.page.keyboard.up('a');
       // Space held is the crane's anti-sway (Steady): on while held, off when let go.
       type Steady = { handles(): { controls: { steady: boolean } } };

@@ -1,53 +1,9 @@
-// createStatusRow (packages/game-kit/src/status-row.ts) on a minimal stand-in for the DOM: the three
+// createStatusRow (packages/game-kit/src/status-row.ts) on a minimal stand-in for the DOM (./fake-dom.ts): the three
 // lines in order with their data-hud names, role 'status', the style added once, and the DOM written
 // only when the lines or the done mark change.
 import { describe, expect, it } from 'vitest';
 import { createStatusRow } from '../../packages/game-kit/src/status-row';
-
-/** Just the parts of the DOM createStatusRow uses; `writes` counts textContent assignments. */
-class FakeElement {
-  readonly children: FakeElement[] = [];
-  readonly dataset: Record<string, string> = {};
-  readonly attributes = new Map<string, string>();
-  readonly classes = new Set<string>();
-  id = '';
-  private text = '';
-  constructor(
-    readonly tagName: string,
-    readonly ownerDocument: FakeDocument,
-  ) {}
-  set className(v: string) {
-    this.classes.clear();
-    for (const c of v.split(' ')) this.classes.add(c);
-  }
-  get className(): string {
-    return [...this.classes].join(' ');
-  }
-  readonly classList = { toggle: (c: string, on: boolean) => (on ? this.classes.add(c) : this.classes.delete(c)) };
-  set textContent(v: string) {
-    this.ownerDocument.writes++;
-    this.text = v;
-  }
-  get textContent(): string {
-    return this.text + this.children.map((c) => c.textContent).join('');
-  }
-  append(...nodes: FakeElement[]): void {
-    this.children.push(...nodes);
-  }
-  setAttribute(name: string, value: string): void {
-    this.attributes.set(name, value);
-  }
-}
-class FakeDocument {
-  writes = 0;
-  readonly head = new FakeElement('head', this);
-  createElement(tag: string): FakeElement {
-    return new FakeElement(tag, this);
-  }
-  getElementById(id: string): FakeElement | null {
-    return this.head.children.find((c) => c.id === id) ?? null;
-  }
-}
+import { FakeDocument } from './fake-dom';
 
 function setup() {
   const doc = new FakeDocument();

@@ -5,10 +5,9 @@
  * Why: a GPU slower than the page's frame rate (software WebGL: SwiftShader in headless Chromium,
  * llvmpipe) otherwise receives frames without bound, and any call that waits for the GPU
  * (readPixels, drawing the canvas elsewhere, a shader's link status, a new page's first frame in the
- * same GPU process) waits for the whole queue. Measured in headless Chromium on a busy 2-core
- * machine: a 1x1 readPixels took 3.4 s, then 19.3 s after 35 s of balls-3d with 3,000 balls; in
- * lab-cloth (pixi, 1280 x 800) it grew from 1.5 s to 4.9 s over 24 s. On a real GPU a fence signals
- * within a frame, so pacing never lowers the frame rate there.
+ * same GPU process) waits for the whole queue: in headless Chromium on a busy 2-core machine a 1x1
+ * readPixels can wait seconds, longer the longer a heavy page (balls-3d, lab-cloth) has run. On a
+ * real GPU a fence signals within a frame, so pacing never lowers the frame rate there.
  */
 
 /** Keeps a WebGL context from running more than a given number of frames ahead of its GPU. */

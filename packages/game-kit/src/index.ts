@@ -2,7 +2,8 @@
  * The renderer-agnostic game shell every game reuses: the page contract (`window.game`, ready
  * flag), the fixed-step loop on requestAnimationFrame, keys (P pause, N step, R reset), the HUD
  * (fps, bodies, controls legend), the page layout (toolbar, info and side columns around the scene),
- * lil-gui panels, URL parameters, pointer positions and a game's status row (goal, numbers, hint).
+ * lil-gui panels, URL parameters, pointer positions, a game's status row (goal, numbers, hint) and
+ * the DOM result card at a round's end.
  * The pixi part lives in './pixi' (createPixiApp, startPixiGame) so 3D games need not load pixi.
  */
 
@@ -11,6 +12,16 @@ export type { GameHandle, GameStats } from './contract.js';
 export { exposeGame, markReady } from './contract.js';
 export type { DomPauseOverlay, DomPauseOverlayOptions } from './dom-pause-overlay.js';
 export { createDomPauseOverlay } from './dom-pause-overlay.js';
+export type { DomResultCard, DomResultCardContent, DomResultCardOptions, ResultCardButton, ResultCardLine } from './dom-result-card.js';
+/**
+ * createDomResultCard(parent, options): the end-of-round dialog of a DOM page (title, stars out of N,
+ * a big result line, lines of detail, buttons with keyboard shortcuts), hidden until `show(content)`;
+ * `hide()`, `destroy()`. Buttons are at least 44 x 44 px and its text at least 4.5:1 on its ground.
+ * Throws TypeError naming `createDomResultCard` and the parameter on a parent that is not a DOM
+ * element or an empty `options.name`, RangeError on a `titleSize` (px) outside [12, 48]; `show`
+ * throws on an empty title or button label, a missing onPress, or stars outside 0 <= earned <= outOf <= 10.
+ */
+export { createDomResultCard } from './dom-result-card.js';
 export type { ControlHint, Hud, HudOptions } from './hud.js';
 export { createHud, plural, touchGesture } from './hud.js';
 export type { ImpactListener } from './impacts.js';

@@ -85,8 +85,8 @@ export function getSound(): Sound {
   let started = false;
   /**
    * Makes the audio context and the noise buffer, suspended until an input. Opening the audio device
-   * took 86 ms and filling the noise 19 ms in headless Chromium: done at the first idle moment after
-   * the page loads, not inside the first input's frame, where it showed as a hitch.
+   * and filling the noise take tens of milliseconds, so this is done at the first idle moment after
+   * the page loads, not inside the first input's frame, where it would show as a hitch.
    */
   const prepare = (): void => {
     if (ctx) return;

@@ -62,8 +62,8 @@ const APP_OPTIONS = [
 /**
  * The pixel ratio a three.js page renders at by default under software WebGL (SwiftShader, llvmpipe:
  * a machine without a GPU, or headless Chromium): 0.5, a quarter of the pixels. There the frame's cost
- * is the pixels it fills, and a page drawn at full size ran at one or two frames a second; at 0.5 a
- * frame of the wrecking ball, flight simulator, balls-3d and rigid-body lab pages took 2 to 4 times
+ * is the pixels it fills, and a page drawn at full size runs at one or two frames a second; at 0.5 a
+ * frame of the wrecking ball, flight simulator, balls-3d and rigid-body lab pages takes 2 to 4 times
  * less time (SwiftShader in headless Chromium, 1280 x 800). A page that passes `pixelRatio` keeps it.
  */
 export const SOFTWARE_PIXEL_RATIO = 0.5;
@@ -210,7 +210,7 @@ export function createThreeApp(options: ThreeAppOptions = {}): ThreeApp {
     camera.updateProjectionMatrix();
     if (framed !== null) frameBox(camera, controls, framed.min, framed.max, framed.options);
     // A new size clears the canvas: draw the scene again at once, or the page shows a black frame
-    // until the next animation frame (the solar system's stage did when its header grew a line).
+    // until the next animation frame (as when a page's header grows a line).
     renderer.render(scene, camera);
   };
   resize();
