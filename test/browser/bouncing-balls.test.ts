@@ -19,7 +19,7 @@
  */
 import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { HOOP_RADIUS, HOOP_SPOTS, hoopSegments, slingSpeed } from '../../games/bouncing-balls/hoop';
+import { HOOP_HALF_WIDTH, HOOP_RADIUS, HOOP_SPOTS, hoopSegments, NET, slingSpeed } from '../../games/bouncing-balls/hoop';
 import { BOX, SEGMENTS as RAMPS, SEGMENT_RADIUS } from '../../games/bouncing-balls/scene';
 import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
 import { decodePng } from './png';
@@ -920,11 +920,18 @@ describe('bouncing balls: the hoop game', () => {
 
   it('desktop: a ball buried in the heap is lifted to the top of the heap over it; its arc starts there and it flies it, or the arc ends on the ball in its way', async () => {
     const g = await h.openGame('bouncing-balls', { viewport: { width: 1280, height: 800 }, query: { count: 40 } });
-    // The walls a throw may bounce off (the box's ramps and the first hoop), [ax, ay, bx, by, radius], m:
-    // only throws whose drag-free path stays clear of them and of the box for 0.5 s are measured.
+    // The walls a throw may bounce off (the box's ramps, the first hoop, and its net's sides and bottom,
+    // NET: the trapezoid under the rim, of no thickness), [ax, ay, bx, by, radius], m: only throws whose
+    // drag-free path stays clear of them and of the box for 0.5 s are measured. (A throw at the hoop's
+    // side bounces off the net, as its arc shows: 0.4 s into one, 2.5 m on.)
+    const spot = HOOP_SPOTS[0]!;
+    const [netL, netR, netBottom] = [spot.x - HOOP_HALF_WIDTH, spot.x + HOOP_HALF_WIDTH, spot.y - NET.depth];
     const walls = [
       ...RAMPS.map(([ax, ay, bx, by]) => [ax, ay, bx, by, SEGMENT_RADIUS]),
-      ...hoopSegments(HOOP_SPOTS[0]!).map(([ax, ay, bx, by]) => [ax, ay, bx, by, HOOP_RADIUS]),
+      ...hoopSegments(spot).map(([ax, ay, bx, by]) => [ax, ay, bx, by, HOOP_RADIUS]),
+      [netL, spot.y, netL + NET.narrow, netBottom, 0],
+      [netL + NET.narrow, netBottom, netR - NET.narrow, netBottom, 0],
+      [netR - NET.narrow, netBottom, netR, spot.y, 0],
     ];
     const { rows, refused } = await g.page.evaluate(
       ({ walls, box }) => {
