@@ -1,7 +1,7 @@
-import { type EcsInternals, ecsOf } from '../world/ecs-internals.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
 import { SHAPE_STRIDE, type ShapeStore } from '../world/shape-store-2d.js';
+import { ANGLE, classifyBody, hasBit, lookUpBodyBits, SHAPE, SPIN } from './body-class.js';
 import { BALL, MOVING, type ShapeCollisionState, type ShapeScratch } from './manifolds-2d.js';
 import { BodyType } from './state.js';
 
@@ -81,79 +81,20 @@ function same(x: number, y: number): boolean {
 }
 
 /**
- * The components classifyColliders asks a body about, as indices into `bits` (lookUpBits fills it once
- * a call): `has` reads bitecs' component masks directly, what hasComponent reads after a Map lookup of
- * the component per call (four to seven a body a step, most of a step's time in a pile asleep).
- */
-const STATIC = 0,
-  KINEMATIC = 1,
-  SLEEPING = 2,
-  INERTIA = 3,
-  SPIN = 4,
-  ANGLE = 5,
-  SHAPE = 6;
-/** Per component above: its masks in bitecs (`NO_MASKS` if no entity ever had it) and its bit (1 then). */
-const bits = { masks: [] as ArrayLike<number>[], flag: new Int32Array(7) };
-const NO_MASKS: ArrayLike<number> = new Int32Array(0);
-
-/** Fills `bits` for `world` (bitecs' masks and each component's place in them). */
-function lookUpBits(world: PhysicsWorld): void {
-  const c = world.components,
-    ecs = ecsOf(world);
-  lookUpBit(ecs, STATIC, c.Static);
-  lookUpBit(ecs, KINEMATIC, c.Kinematic);
-  lookUpBit(ecs, SLEEPING, c.Sleeping);
-  lookUpBit(ecs, INERTIA, c.Inertia);
-  lookUpBit(ecs, SPIN, c.AngularVelocity);
-  lookUpBit(ecs, ANGLE, c.Angle);
-  lookUpBit(ecs, SHAPE, c.Shape);
-}
-
-function lookUpBit(ecs: EcsInternals, k: number, component: object): void {
-  const d = ecs.componentMap.get(component);
-  bits.masks[k] = d === undefined ? NO_MASKS : ecs.entityMasks[d.generationId]!;
-  bits.flag[k] = d === undefined ? 1 : d.bitflag;
-}
-
-/** hasComponent(world, e, component k) for the world `bits` was filled for. */
-function has(k: number, e: number): boolean {
-  const f = bits.flag[k]!;
-  return ((bits.masks[k]![e] ?? 0) & f) === f;
-}
-
-/**
  * Body type, inverse mass and inertia, angular velocity and start-of-step angle of shape body `b` for
  * this step (CollisionState.bodyType, invMass, invInertia; ShapeCollisionState.bodyW, bodyAngle0).
  */
 function classifyShapeBody(world: PhysicsWorld, st: ShapeCollisionState, b: number): void {
-  const c = world.components,
-    cs = world.collision;
-  const invMass = cs.invMass,
-    invInertia = cs.invInertia;
-  let t: number;
-  if (has(STATIC, b)) {
-    t = BodyType.Static;
-    invMass[b] = 0;
-    invInertia[b] = 0;
+  const c = world.components;
+  const t = classifyBody(world, b);
+  // Static bodies are never integrated: where they are is where they were.
+  if (t === BodyType.Static) {
     c.PreviousPosition.x[b] = c.Position.x[b]!;
     c.PreviousPosition.y[b] = c.Position.y[b]!;
-  } else if (has(KINEMATIC, b)) {
-    t = BodyType.Kinematic;
-    invMass[b] = 0;
-    invInertia[b] = 0;
-  } else if (has(SLEEPING, b)) {
-    t = BodyType.Sleeping;
-    invMass[b] = 0;
-    invInertia[b] = 0;
-  } else {
-    t = BodyType.Dynamic;
-    invMass[b] = c.Mass.inv[b]!;
-    invInertia[b] = has(INERTIA, b) && has(SPIN, b) ? c.Inertia.inv[b]! : 0;
   }
-  cs.bodyType[b] = t;
-  const turns = (t === BodyType.Dynamic || t === BodyType.Kinematic) && has(SPIN, b);
+  const turns = (t === BodyType.Dynamic || t === BodyType.Kinematic) && hasBit(SPIN, b);
   st.bodyW[b] = turns ? c.AngularVelocity.z[b]! : 0;
-  st.bodyAngle0[b] = (has(ANGLE, b) ? c.Angle.value[b]! : 0) - st.bodyW[b]! * world.h;
+  st.bodyAngle0[b] = (hasBit(ANGLE, b) ? c.Angle.value[b]! : 0) - st.bodyW[b]! * world.h;
 }
 
 /**
@@ -188,7 +129,7 @@ function classifyColliders(world: PhysicsWorld, st: ShapeCollisionState): number
   const mark = ++st.bodyMark;
   st.anyMoving = false;
   const bodyMarks = st.bodyMarks;
-  lookUpBits(world);
+  lookUpBodyBits(world);
   for (let i = 0; i < n; i++) {
     const isBall = i >= shapes.length;
     const e = isBall ? balls[i - shapes.length]! : shapes[i]!;
@@ -200,12 +141,12 @@ function classifyColliders(world: PhysicsWorld, st: ShapeCollisionState): number
       bodyMarks[b] = mark;
       classifyShapeBody(world, st, b);
     } else if (isBall) {
-      st.bodyW[b] = type[b] === BodyType.Dynamic && has(SPIN, b) ? wz[b]! : 0;
+      st.bodyW[b] = type[b] === BodyType.Dynamic && hasBit(SPIN, b) ? wz[b]! : 0;
       st.bodyAngle0[b] = 0;
     }
     const t = type[b]!;
     const moving = t === BodyType.Dynamic || t === BodyType.Kinematic;
-    sc.flags[i] = (moving ? MOVING : 0) | (isBall && !has(SHAPE, b) ? BALL : 0);
+    sc.flags[i] = (moving ? MOVING : 0) | (isBall && !hasBit(SHAPE, b) ? BALL : 0);
     if (moving) st.anyMoving = true;
   }
   return shapes.length;

@@ -4,6 +4,7 @@ import { M00, M01, M02, M10, M11, M12, M20, M21, M22, MAT3_STRIDE } from '../mat
 import { Shape3DKind, type Shape3DStore, shapes3DOf } from '../shapes/store-3d.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
+import { classifyDynamic, lookUpBodyBits } from './body-class.js';
 import { pairs } from './broadphase/pairs-3d.js';
 import { ensure, keptPose, notePose, ownPoses, SHAPE_SPECULATIVE_DISTANCE, scratch, wakes } from './colliders-3d.js';
 import { pushEvent } from './events.js';
@@ -133,55 +134,12 @@ function startOrientation(world: PhysicsWorld, b: number, turning: boolean, isBa
   bodyQ[3] = w;
 }
 
-/**
- * Writes a 3D body's solver class into the collision state (body type, inverse mass, and an inverse
- * inertia that is > 0 exactly when it turns: the largest principal one, or a ball's) and returns the type.
- * @category Collision
- */
-export function classifyBody3D(world: PhysicsWorld, b: number): number {
-  const c = world.components,
-    cs = world.collision;
-  let t: number;
-  if (hasComponent(world, b, c.Static)) {
-    t = BodyType.Static;
-    cs.invMass[b] = 0;
-    cs.invInertia[b] = 0;
-  } else if (hasComponent(world, b, c.Kinematic)) {
-    t = BodyType.Kinematic;
-    cs.invMass[b] = 0;
-    cs.invInertia[b] = 0;
-  } else if (hasComponent(world, b, c.Sleeping)) {
-    t = BodyType.Sleeping;
-    cs.invMass[b] = 0;
-    cs.invInertia[b] = 0;
-  } else return classifyDynamic3D(world, b);
-  cs.bodyType[b] = t;
-  return t;
-}
-
-/** classifyBody3D's last case, for a body known to be dynamic: its inverse mass and inertia flag; returns BodyType.Dynamic. */
-function classifyDynamic3D(world: PhysicsWorld, b: number): number {
-  const c = world.components,
-    cs = world.collision,
-    T = c.InertiaTensor;
-  cs.invMass[b] = c.Mass.inv[b]!;
-  cs.invInertia[b] = !hasComponent(world, b, c.AngularVelocity)
-    ? 0
-    : hasComponent(world, b, T)
-      ? Math.max(T.invX[b]!, T.invY[b]!, T.invZ[b]!)
-      : hasComponent(world, b, c.Inertia)
-        ? c.Inertia.inv[b]!
-        : 0;
-  cs.bodyType[b] = BodyType.Dynamic;
-  return BodyType.Dynamic;
-}
-
 /** Per body slot: the step stamp and body type of the static, kinematic and sleeping bodies (scratch). */
 let classStamp = new Int32Array(0),
   classKind = new Uint8Array(0),
   classStep = 0;
 
-/** Marks the static, kinematic and sleeping bodies from three queries (in the order classifyBody3D ranks them); returns the stamp. */
+/** Marks the static, kinematic and sleeping bodies from three queries (in the order classifyBody ranks them, collision/body-class.ts); returns the stamp. */
 function markClasses(world: PhysicsWorld): number {
   const c = world.components,
     n = world.capacity + 1;
@@ -266,6 +224,7 @@ function colliderRotation(s: Shape3DStore, e: number, isBall: boolean, R: Float6
 /** Classifies the bodies, writes each collider's start-of-step pose and fattened box. */
 function gather(world: PhysicsWorld, s: Shape3DStore): void {
   const stamp = markClasses(world);
+  lookUpBodyBits(world);
   if (scratch.colliderOf.length < world.capacity + 1) {
     scratch.colliderOf = new Int32Array(world.capacity + 1);
     scratch.colliderStamp = new Int32Array(world.capacity + 1);
@@ -318,7 +277,7 @@ function gather(world: PhysicsWorld, s: Shape3DStore): void {
     cs.bodyType[b] = t;
     cs.invMass[b] = 0;
     cs.invInertia[b] = 0;
-    if (classStamp[b] !== stamp) t = classifyDynamic3D(world, b);
+    if (classStamp[b] !== stamp) t = classifyDynamic(world, b);
     // A sleeping shape collider keeps what its index holds from the last pass while its body starts the
     // step where it did (keptPose); every other one is posed. (The check and the writes run for every
     // collider: no branch first taken when the first body of a pile falls asleep.)

@@ -1,5 +1,5 @@
+import { classifyBody, lookUpBodyBits } from '../collision/body-class.js';
 import { contact3DStateOf } from '../collision/manifolds-3d.js';
-import { classifyBody3D } from '../collision/shapes-3d.js';
 import { BS3_PUSHED, BS3_STRIDE } from '../solver/body-state-layout.js';
 import { joinSolverBodies } from '../solver/solver-bodies.js';
 import { currentHandle } from '../world/handles.js';
@@ -109,12 +109,13 @@ export function gatherJoint3DBodies(world: PhysicsWorld, count: number): number 
     jb = new Int32Array(2 * n);
   }
   // Each joint's bodies in list order, classified now (the type joinSolverBodies reads).
+  lookUpBodyBits(world);
   for (let i = 0; i < n; i++) {
     const j: number = s.list[i]!;
     const a = s.a[j]!,
       b = s.b[j]!;
-    if (a !== 0) classifyBody3D(world, a);
-    if (b !== 0) classifyBody3D(world, b);
+    if (a !== 0) classifyBody(world, a);
+    if (b !== 0) classifyBody(world, b);
     ja[i] = a;
     jb[i] = b;
   }

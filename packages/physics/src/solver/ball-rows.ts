@@ -22,51 +22,19 @@ import { BS2_STRIDE, BS3_STRIDE } from './body-state-layout.js';
 import { solveColoredSubsteps, startStripPlan, useColoredSolve } from './coloring.js';
 import { ballContactHertz, ballContactPushSpeed, ballStickSpeed, contactLength, makeSoftInto } from './contact-scale.js';
 import { applyImpacts, releaseImpactedRows } from './impacts.js';
-import { withRoom } from './solver-bodies.js';
+import { joinSolverBodies } from './solver-bodies.js';
 import { restitutionStage, storeWarmStartOnThreads } from './stages-threads.js';
 import { downward3Into, downwardInto, markFirstRelaxRows, relaxOrderInto } from './support.js';
 
 /**
- * Stage 1 for the ball rows: gives the bodies of the rows of `buf` solver indices from `count` on (each
- * body once a step, marked with `solverStamp` in `solverMark`, appended to `solverBodies`) and writes
- * each row's indices to `buf.ia` and `buf.ib` (0, the static row, for a wall or segment on side a;
- * side b is always a moving ball). Returns the new solver body count.
+ * Stage 1 for the ball rows: gives the moving bodies of the rows of `buf` solver indices from `count` on
+ * and writes each row's indices to `buf.ia` and `buf.ib` (solver/solver-bodies.ts joinSolverBodies, as
+ * every row family: 0, the static row, for a wall, plane or segment on side a; side b is always a
+ * moving ball). Returns the new solver body count.
  * @category Collision
  */
 export function gatherBallBodies(world: PhysicsWorld, buf: ContactBuffer, count: number): number {
-  const cs = world.collision;
-  const n = buf.count;
-  const mark = cs.solverMark,
-    index = cs.solverIndex,
-    stamp = cs.solverStamp;
-  // Room for both bodies of every row, made before the loop (solver/solver-bodies.ts withRoom).
-  const list = withRoom(cs.solverBodies, count + 2 * n);
-  const A = buf.a,
-    B = buf.b,
-    IA = buf.ia,
-    IB = buf.ib;
-  for (let i = 0; i < n; i++) {
-    const a = A[i]!,
-      b = B[i]!;
-    if (a === 0) {
-      IA[i] = 0;
-    } else {
-      if (mark[a] !== stamp) {
-        mark[a] = stamp;
-        index[a] = count;
-        list[count++] = a;
-      }
-      IA[i] = index[a]!;
-    }
-    if (mark[b] !== stamp) {
-      mark[b] = stamp;
-      index[b] = count;
-      list[count++] = b;
-    }
-    IB[i] = index[b]!;
-  }
-  cs.solverBodies = list;
-  return count;
+  return joinSolverBodies(world.collision, buf.a, buf.b, buf.ia, buf.ib, buf.count, count);
 }
 
 /**
