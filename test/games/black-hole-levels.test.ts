@@ -715,4 +715,22 @@ describe('levels', () => {
     expect([g2.falls, g2.lives, run2.summary!.lives]).toEqual([0, 3, 3]);
     expect(g2.message).not.toMatch(/life back/);
   });
+
+  test('a player who reads before the first press loses nothing: the parked ship stays at the start, 15 s on levels 1 to 4', () => {
+    // A stranger read level 2's title and the wall: no life may go meanwhile (the wall pulls 2 to
+    // 3 m/s^2 at the start, a fall within seconds were the ship not held there).
+    for (const field of [FIELD, { width: 20, height: 30 }]) {
+      for (let level = 1; level <= 4; level++) {
+        const g = createBlackHoleGame({ seed: 5, field });
+        const run = startLevel(g, level);
+        const events = new Set<string>();
+        for (let k = 0; k < 900; k++) events.add(stepLevel(g, run));
+        expect([...events], `level ${level}`).toEqual(['none']);
+        const s = slotOf(g.ship);
+        expect([g.falls, g.lives, run.parked], `level ${level}`).toEqual([0, 3, true]);
+        expect(g.world.components.Position.x[s], `level ${level}`).toBeCloseTo(g.start[0], 9);
+        expect(g.world.components.Position.y[s], `level ${level}`).toBeCloseTo(g.start[1], 9);
+      }
+    }
+  });
 });
