@@ -505,10 +505,16 @@ function advance(): void {
     game.drawNext();
   }
 }
-/** A key or finger presses arrow `dir`: it becomes the latest arrow held. */
-function press(dir: Arrow): void {
+/**
+ * The moment of an input event, performance.now() ms: its `timeStamp`, when the key or finger acted,
+ * not when the loaded page got round to it (a long frame between a finger's down and up made a 60 ms
+ * tap a 0.4 s push); now for an event without one.
+ */
+const eventMs = (e: Event): number => (e.timeStamp > 0 && e.timeStamp <= performance.now() ? e.timeStamp : performance.now());
+/** A key or finger presses arrow `dir` at `ms` (performance.now() ms): it becomes the latest arrow held. */
+function press(dir: Arrow, ms: number): void {
   // A tap in the ready moment thrusts its TAP_STEPS from the moment's end.
-  pressedAt.set(dir, { step: readying() ? READY_PENDING : bh.world.steps, ms: performance.now() });
+  pressedAt.set(dir, { step: readying() ? READY_PENDING : bh.world.steps, ms });
   // Pressed again while a tap of it thrusts on: the tap's hold becomes this press's.
   if (!tapEnds.delete(dir)) holds.set(dir, (holds.get(dir) ?? 0) + 1);
   const i = held.indexOf(dir);
@@ -522,14 +528,13 @@ function press(dir: Arrow): void {
  * steps), while the game runs: paused, no game time passes and a key let go lets go at once. Let go
  * in the ready moment after a respawn, it is a tap from the moment's end.
  */
-function release(dir: Arrow): void {
+function release(dir: Arrow, ms: number): void {
   const at = pressedAt.get(dir);
   if ((holds.get(dir) ?? 0) === 1 && at && held.includes(dir) && !replay.player && !game.shell.paused) {
-    const now = performance.now();
     const end =
       at.step >= READY_PENDING
         ? READY_PENDING + TAP_STEPS
-        : releaseStep(at.step, now - Math.max(at.ms, resumedAt), bh.world.steps, bh.world.dt);
+        : releaseStep(at.step, Math.max(0, ms - Math.max(at.ms, resumedAt)), bh.world.steps, bh.world.dt);
     if (end > bh.world.steps) {
       tapEnds.set(dir, end);
       return;
@@ -554,7 +559,7 @@ window.addEventListener('keydown', (e) => {
   e.preventDefault();
   if (e.repeat || keysDown.has(dir)) return;
   keysDown.add(dir);
-  press(dir);
+  press(dir, eventMs(e));
 });
 /**
  * Leaves the replay playing (any key, a tap or click on the field, the status or the buttons under
@@ -627,7 +632,7 @@ window.addEventListener(
 window.addEventListener('keyup', (e) => {
   const dir = KEY_DIR[e.key];
   if (!dir || !keysDown.delete(dir)) return;
-  release(dir);
+  release(dir, eventMs(e));
 });
 window.addEventListener('blur', () => {
   keysDown.clear();
@@ -749,7 +754,7 @@ pad.element.addEventListener('pointerdown', (e) => {
   const dirs = padDirsAt(e.clientX, e.clientY);
   if (dirs.length === 0 || padPointers.has(e.pointerId)) return;
   padPointers.set(e.pointerId, dirs);
-  for (const d of dirs) press(d);
+  for (const d of dirs) press(d, eventMs(e));
 });
 pad.element.addEventListener('pointermove', (e) => {
   const was = padPointers.get(e.pointerId);
@@ -758,14 +763,14 @@ pad.element.addEventListener('pointermove', (e) => {
   // Off the arrows (between them or past the pad) the finger keeps what it held.
   if (dirs.length === 0 || sameDirs(dirs, was)) return;
   padPointers.set(e.pointerId, dirs);
-  for (const d of dirs) if (!was.includes(d)) press(d);
-  for (const d of was) if (!dirs.includes(d)) release(d);
+  for (const d of dirs) if (!was.includes(d)) press(d, eventMs(e));
+  for (const d of was) if (!dirs.includes(d)) release(d, eventMs(e));
 });
 const padLift = (e: PointerEvent): void => {
   const dirs = padPointers.get(e.pointerId);
   if (!dirs) return;
   padPointers.delete(e.pointerId);
-  for (const d of dirs) release(d);
+  for (const d of dirs) release(d, eventMs(e));
 };
 pad.element.addEventListener('pointerup', padLift);
 pad.element.addEventListener('pointercancel', padLift);
@@ -1228,7 +1233,9 @@ let bannerWorld = 0;
  * band at all, under the finish line.
  */
 function drawLevelBanner(): void {
-  const show = run?.parked === true && run.attemptStart === 0 && !run.waiting && !bh.over && bh.falls === run.fallsAtStart;
+  // Not after a loss off the field (no fall, but its own words show: one message at a time).
+  const show =
+    run?.parked === true && run.attemptStart === 0 && !run.waiting && !bh.over && bh.falls === run.fallsAtStart && happening === 'level';
   if (!show || !run) {
     levelBanner.visible = false;
     bannerShown.key = '';
