@@ -47,6 +47,7 @@ import { createPauseOverlay, startPixiGame } from '@bitphysics/game-kit/pixi';
 import { type PhysicsWorld, Rng, slotOf, stateHash } from '@bitphysics/physics';
 import { Container, Graphics, Sprite, Text, Texture } from 'pixi.js';
 import { canThrust, type LevelRun, levelPoints, startLevel } from './levels';
+import { releaseStep, TAP_STEPS } from './press-timing';
 import { type BlackHoleReplay, createBlackHoleReplay, type GameStepEvent } from './replay';
 import {
   type Arrow,
@@ -63,6 +64,7 @@ import {
   predictPath,
   THRUST_RAMP,
 } from './rules';
+import { nextHappening, pausedWords, type ShipHappening, waitWords } from './wait-words';
 
 const search = new URLSearchParams(location.search);
 /** Levels unless ?holes asks for the classic endless game. */
@@ -85,6 +87,8 @@ let bestAtStart = best;
 
 /** After each game step (live or replayed): keeps the best score, and shows the points a crossing made. */
 function onGameStep(event: GameStepEvent): void {
+  happening = nextHappening(happening, event);
+  if (event === 'lost') showLost();
   if (event === 'cleared' || event === 'scored' || event === 'over') recordScore(bh.score);
   // The emptied field shows in the very next frame, even where a slow GPU has the pacer skip frames.
   if (event === 'cleared') game.drawNext();
@@ -109,6 +113,13 @@ function onGameStep(event: GameStepEvent): void {
  * (and the message says what happened) until the player thrusts again.
  */
 let restarted = false;
+/**
+ * The last thing that happened to the ship (./wait-words.ts): the words over the field while it waits
+ * at the start say this and nothing older. A new world is a new start ('level').
+ */
+let happening: ShipHappening = 'level';
+/** `happening` when a replay began: put back when the replay is left (it stops where it was). */
+let happeningBeforeReplay: ShipHappening = 'level';
 /**
  * The ready moment after a fall or an exit, ms of the wall clock (about the swallow's length): the new
  * ship waits at the start, whatever is pressed, so a press made in the fall's flurry does not fly it
@@ -275,6 +286,7 @@ function createWorld(): PhysicsWorld {
   continueLevel = null;
   bestAtStart = best;
   readyEndsAt = 0;
+  happening = 'level';
   predictor = createPredictor(bh);
   replay = createBlackHoleReplay(bh, run, onGameStep);
   return bh.world;
@@ -284,7 +296,7 @@ const game = await startPixiGame({
   title: 'Black hole',
   createWorld,
   step: () => {
-    // A tap's thrust ends TAP_STEPS steps after it began (here, at a step, so it is recorded there).
+    // A let-go arrow's thrust ends at its step (`release`; here, at a step, so it is recorded there).
     if (!replay.player) endTaps();
     // The ready moment after a respawn is over: arrows pressed during it thrust from this step.
     if (!replay.player && readyEndsAt > 0 && performance.now() >= readyEndsAt) endReady();
@@ -338,6 +350,7 @@ const game = await startPixiGame({
           leaveReplay();
           return;
         }
+        happeningBeforeReplay = happening;
         replay.play();
         predictor = createPredictor(bh);
         updateStatus(true);
@@ -439,19 +452,17 @@ function letGo(): void {
 }
 
 /**
- * A tap: an arrow let go within TAP_MS (wall clock) of its press thrusts for exactly TAP_STEPS steps
- * from the step it began (0.15 s: from rest a nudge of about 0.16 m/s, ./rules.ts THRUST_RAMP), however
- * short the press and however many steps a slow frame runs meanwhile, so a finger's tap (down and up
- * between two steps) still thrusts, and the same tap nudges the ship as much on a loaded machine as
- * on a fast one.
+ * Each arrow's last press: the world's step count and performance.now() then, ms. A press thrusts for
+ * as long as it was held by the wall clock, at least a tap's TAP_STEPS, from the step it began
+ * (./press-timing.ts `releaseStep`), so a finger's tap (down and up between two steps) still thrusts,
+ * and a press pushes the ship as much on a loaded machine as on a fast one.
  */
-const TAP_STEPS = 9,
-  TAP_MS = 250;
-/** Each arrow's last press: the world's step count and performance.now() then, ms. */
 const pressedAt = new Map<Arrow, { step: number; ms: number }>();
-/** Arrows let go as taps, thrusting on: the step count at which each lets go. */
+/** Arrows let go whose thrust runs on (a tap's, or a press's steps not run yet): the step count at which each lets go. */
 const tapEnds = new Map<Arrow, number>();
-/** Lets go of the tapped arrows whose TAP_STEPS are up (called at the start of every step). */
+/** performance.now() when the game last resumed from a pause, ms: a press's length counts from it (no game time passes paused). */
+let resumedAt = 0;
+/** Lets go of the let-go arrows whose steps are up (called at the start of every step). */
 function endTaps(): void {
   if (tapEnds.size === 0) return;
   for (const [dir, end] of tapEnds) {
@@ -468,7 +479,7 @@ function endTaps(): void {
 function endReady(): void {
   readyEndsAt = 0;
   const now = bh.world.steps;
-  for (const at of pressedAt.values()) if (at.step >= READY_PENDING) at.step = now;
+  for (const at of pressedAt.values()) if (at.step >= READY_PENDING) [at.step, at.ms] = [now, Math.max(at.ms, performance.now())];
   for (const [dir, end] of tapEnds) if (end >= READY_PENDING) tapEnds.set(dir, now + TAP_STEPS);
   applyHeld();
 }
@@ -494,10 +505,16 @@ function advance(): void {
     game.drawNext();
   }
 }
-/** A key or finger presses arrow `dir`: it becomes the latest arrow held. */
-function press(dir: Arrow): void {
+/**
+ * The moment of an input event, performance.now() ms: its `timeStamp`, when the key or finger acted,
+ * not when the loaded page got round to it (a long frame between a finger's down and up made a 60 ms
+ * tap a 0.4 s push); now for an event without one.
+ */
+const eventMs = (e: Event): number => (e.timeStamp > 0 && e.timeStamp <= performance.now() ? e.timeStamp : performance.now());
+/** A key or finger presses arrow `dir` at `ms` (performance.now() ms): it becomes the latest arrow held. */
+function press(dir: Arrow, ms: number): void {
   // A tap in the ready moment thrusts its TAP_STEPS from the moment's end.
-  pressedAt.set(dir, { step: readying() ? READY_PENDING : bh.world.steps, ms: performance.now() });
+  pressedAt.set(dir, { step: readying() ? READY_PENDING : bh.world.steps, ms });
   // Pressed again while a tap of it thrusts on: the tap's hold becomes this press's.
   if (!tapEnds.delete(dir)) holds.set(dir, (holds.get(dir) ?? 0) + 1);
   const i = held.indexOf(dir);
@@ -507,22 +524,21 @@ function press(dir: Arrow): void {
 }
 /**
  * A key or finger lets go of arrow `dir`: the arrow stays held while another key or finger holds it;
- * the last one let go within TAP_MS of its press is a tap, which thrusts on to TAP_STEPS steps
- * (while the game runs: paused, no game time passes and a key let go lets go at once).
+ * the last one let go thrusts on to the step its length asks (`releaseStep`: a tap to TAP_STEPS
+ * steps), while the game runs: paused, no game time passes and a key let go lets go at once. Let go
+ * in the ready moment after a respawn, it is a tap from the moment's end.
  */
-function release(dir: Arrow): void {
+function release(dir: Arrow, ms: number): void {
   const at = pressedAt.get(dir);
-  if (
-    (holds.get(dir) ?? 0) === 1 &&
-    at &&
-    performance.now() - at.ms < TAP_MS &&
-    bh.world.steps < at.step + TAP_STEPS &&
-    held.includes(dir) &&
-    !replay.player &&
-    !game.shell.paused
-  ) {
-    tapEnds.set(dir, at.step + TAP_STEPS);
-    return;
+  if ((holds.get(dir) ?? 0) === 1 && at && held.includes(dir) && !replay.player && !game.shell.paused) {
+    const end =
+      at.step >= READY_PENDING
+        ? READY_PENDING + TAP_STEPS
+        : releaseStep(at.step, Math.max(0, ms - Math.max(at.ms, resumedAt)), bh.world.steps, bh.world.dt);
+    if (end > bh.world.steps) {
+      tapEnds.set(dir, end);
+      return;
+    }
   }
   letGoOf(dir);
 }
@@ -543,7 +559,7 @@ window.addEventListener('keydown', (e) => {
   e.preventDefault();
   if (e.repeat || keysDown.has(dir)) return;
   keysDown.add(dir);
-  press(dir);
+  press(dir, eventMs(e));
 });
 /**
  * Leaves the replay playing (any key, a tap or click on the field, the status or the buttons under
@@ -551,6 +567,7 @@ window.addEventListener('keydown', (e) => {
  */
 function leaveReplay(): void {
   replay.stop();
+  happening = happeningBeforeReplay;
   predictor = createPredictor(bh);
   keysDown.clear();
   padPointers.clear();
@@ -615,7 +632,7 @@ window.addEventListener(
 window.addEventListener('keyup', (e) => {
   const dir = KEY_DIR[e.key];
   if (!dir || !keysDown.delete(dir)) return;
-  release(dir);
+  release(dir, eventMs(e));
 });
 window.addEventListener('blur', () => {
   keysDown.clear();
@@ -737,7 +754,7 @@ pad.element.addEventListener('pointerdown', (e) => {
   const dirs = padDirsAt(e.clientX, e.clientY);
   if (dirs.length === 0 || padPointers.has(e.pointerId)) return;
   padPointers.set(e.pointerId, dirs);
-  for (const d of dirs) press(d);
+  for (const d of dirs) press(d, eventMs(e));
 });
 pad.element.addEventListener('pointermove', (e) => {
   const was = padPointers.get(e.pointerId);
@@ -746,14 +763,14 @@ pad.element.addEventListener('pointermove', (e) => {
   // Off the arrows (between them or past the pad) the finger keeps what it held.
   if (dirs.length === 0 || sameDirs(dirs, was)) return;
   padPointers.set(e.pointerId, dirs);
-  for (const d of dirs) if (!was.includes(d)) press(d);
-  for (const d of was) if (!dirs.includes(d)) release(d);
+  for (const d of dirs) if (!was.includes(d)) press(d, eventMs(e));
+  for (const d of was) if (!dirs.includes(d)) release(d, eventMs(e));
 });
 const padLift = (e: PointerEvent): void => {
   const dirs = padPointers.get(e.pointerId);
   if (!dirs) return;
   padPointers.delete(e.pointerId);
-  for (const d of dirs) release(d);
+  for (const d of dirs) release(d, eventMs(e));
 };
 pad.element.addEventListener('pointerup', padLift);
 pad.element.addEventListener('pointercancel', padLift);
@@ -916,8 +933,10 @@ function updateStatus(force = false): void {
   }
   updateOverCard();
   // Every frame, not only when the thrust changes: a button also lights and darkens itself under
-  // its own finger. A diagonal lights both of its arrows.
-  const lit = bh.thrust.split('-');
+  // its own finger. Lit: the arrows a key or finger holds now (a diagonal lights both), not a let-go
+  // arrow's thrust running on (a tap's): lit after the finger lifted, it looked stuck. A replay lights
+  // the thrust it plays.
+  const lit = (replay.player ? bh.thrust : heldThrust(held.filter((d) => !tapEnds.has(d)))).split('-');
   for (const [i, dir] of DIRS.entries()) pad.setActive(i, lit.includes(dir));
 }
 
@@ -1214,7 +1233,9 @@ let bannerWorld = 0;
  * band at all, under the finish line.
  */
 function drawLevelBanner(): void {
-  const show = run?.parked === true && run.attemptStart === 0 && !run.waiting && !bh.over && bh.falls === run.fallsAtStart;
+  // Not after a loss off the field (no fall, but its own words show: one message at a time).
+  const show =
+    run?.parked === true && run.attemptStart === 0 && !run.waiting && !bh.over && bh.falls === run.fallsAtStart && happening === 'level';
   if (!show || !run) {
     levelBanner.visible = false;
     bannerShown.key = '';
@@ -1347,16 +1368,21 @@ const RESPAWN_MS = 700;
  * and the strongest flash drawn since the last began (0 to 1: a frame drew it).
  */
 const death = { start: -Infinity, count: 0, flashPeak: 0 };
-/** The game's fall count when the last fall's effect began (its words wait only for that fall's ship). */
-let deathFalls = -1;
+/** Colours of the words over the field: a fall's (red), a loss off the field's (pale blue: no life lost). */
+const FALL_WORDS = 0xff8c8c,
+  LOST_WORDS = 0x9fd3ff;
+/** The words of the last fall or loss (./wait-words.ts `waitWords`), before the pause's line is put in. */
+let waitText = '';
+/** The field's width, px, and the words the words' size was last fitted to (`drawDeath`). */
+let deathFit = '';
 /** The red flash over the field (above the holes and the ship, under the words). */
 const flashLayer = new Graphics({ label: 'death-flash' });
 app.stage.addChild(flashLayer);
-/** The words of a fall over the field: "Swallowed!" and the lives left. */
+/** The words of a fall or a loss over the field: "Swallowed!" and the lives left, or "Lost in space!". */
 const deathText = new Text({
   text: '',
   style: {
-    fill: 0xff8c8c,
+    fill: FALL_WORDS,
     fontSize: 34,
     fontFamily: 'sans-serif',
     fontWeight: 'bold',
@@ -1374,23 +1400,40 @@ function startDeath(): void {
   // At the swallow's start (when one plays), so the ring at the start can follow the swallow.
   death.start = swallow.active ? swallow.start : performance.now();
   death.count++;
-  deathFalls = bh.falls;
   death.flashPeak = 0;
-  const go = touch ? 'Tap an arrow to fly on' : 'Press an arrow to fly on';
-  deathText.text = bh.over
-    ? 'Swallowed!\nGame over'
-    : run?.spec.practice
-      ? `Swallowed!\nPractice: no life lost\n${go}`
-      : `Swallowed!\n${bh.lives} ${bh.lives === 1 ? 'life' : 'lives'} left\n${go}`;
+  setWaitWords(FALL_WORDS);
+}
+
+/** Puts the words for the last happening (`happening`) over the field, in `color`. */
+function setWaitWords(color: number): void {
+  waitText = waitWords(happening, { lives: bh.lives, practice: run?.spec.practice === true, touch });
+  deathText.style.fill = color;
+  deathText.text = waitText;
 }
 
 /**
- * Whether the words of the last fall stay up: after a fall in levels the new ship waits parked at the
- * start (./levels.ts `LevelRun.parked`) until the player thrusts, and the words say so until then, so
- * a player who looks at the screen late still sees the life lost (not faded after DEATH_TEXT_MS).
+ * After the ship is lost off the field (levels only: the ship then waits at the start): the words say
+ * so, in pale blue (no flash, no shake: nothing was lost but the flight), until the player thrusts.
+ */
+function showLost(): void {
+  if (run) setWaitWords(LOST_WORDS);
+}
+
+/**
+ * Whether the words of the last fall or loss stay up: after either, in levels, the new ship waits
+ * parked at the start (./levels.ts `LevelRun.parked`) until the player thrusts, and the words say so
+ * until then, so a player who looks at the screen late still sees what happened (not faded after
+ * DEATH_TEXT_MS). Only while that fall or loss is the last thing that happened (`happening`): a level
+ * begun since, or a loss after a fall, has words of its own or none.
  */
 const deathWaits = (): boolean =>
-  run !== null && !bh.over && run.parked && !run.waiting && bh.thrust === 'none' && death.count > 0 && !replay.player && bh.falls > 0;
+  run !== null &&
+  !bh.over &&
+  run.parked &&
+  !run.waiting &&
+  bh.thrust === 'none' &&
+  !replay.player &&
+  (happening === 'fell' || happening === 'lost');
 
 /**
  * Draws a fall's effect for its age: the field flashes red (fading over DEATH_FLASH_MS), the scene
@@ -1412,11 +1455,24 @@ function drawDeath(): void {
     const amp = DEATH_SHAKE_PX * (1 - age / DEATH_SHAKE_MS);
     app.stage.position.set(amp * Math.sin(age * 0.09), amp * Math.cos(age * 0.07));
   } else if (app.stage.position.x !== 0 || app.stage.position.y !== 0) app.stage.position.set(0, 0);
-  const waits = age >= 0 && deathWaits() && deathFalls === bh.falls;
-  deathText.visible = (age >= 0 && age < DEATH_TEXT_MS) || waits;
+  const waits = deathWaits();
+  const fresh = age >= 0 && age < DEATH_TEXT_MS && (happening === 'fell' || happening === 'over');
+  deathText.visible = fresh || waits;
   if (!deathText.visible) return;
-  deathText.style.fontSize = Math.max(24, Math.min(40, cam.toScreenLength(playField.width) / 12));
-  deathText.style.lineHeight = 1.2 * deathText.style.fontSize;
+  // One message at a time: paused, the words say so in their last line (the pause's own words are
+  // hidden, `drawFrame`), in place of how to fly on.
+  const text = shell.paused ? pausedWords(waitText, pause.text) : waitText;
+  if (deathText.text !== text) deathText.text = text;
+  // As large as fits the field's width (on a phone a line at 1/12 of it ran past both edges).
+  const room = cam.toScreenLength(playField.width) - 16;
+  if (deathFit !== `${room}:${text}`) {
+    deathFit = `${room}:${text}`;
+    let size = Math.max(24, Math.min(40, room / 12));
+    deathText.style.fontSize = size;
+    if (deathText.width > room) size = Math.max(12, Math.floor((size * room) / deathText.width));
+    deathText.style.fontSize = size;
+    deathText.style.lineHeight = 1.2 * size;
+  }
   deathText.alpha = waits || age < DEATH_TEXT_MS - 400 ? 1 : (DEATH_TEXT_MS - age) / 400;
   deathText.position.set(cam.toScreenX(playField.width / 2), cam.toScreenY(playField.height / 2));
 }
@@ -1646,21 +1702,24 @@ function drawCoach(x: number, sx: number, sy: number, k: number): void {
 const pause = createPauseOverlay({ label: 'paused', shadeAlpha: 0.35 });
 app.stage.addChildAt(pause.container, app.stage.getChildIndex(overlay));
 
-/** Gap kept between the touch card and the finish line, px. */
-const HINT_LINE_GAP = 4;
+/** Gap kept between the touch card and the field's frame and the finish line, px. */
+const HINT_LINE_GAP = 6;
 /**
- * Keeps the kit's touch card (at the top of the stage, by the page's style) off the finish line: where
- * the card's foot would reach the line it goes under the line instead. Checked every frame while the
- * card is up (the stage and the field can resize).
+ * Keeps the kit's touch card (at the top of the stage, by the page's style) inside the field's frame
+ * and off the finish line: in the band between the frame's top and the line where it fits, else just
+ * under the line (on a phone the band is too short, and the card at the stage's top lay across the
+ * frame and the line). Checked every frame while the card is up (the stage and the field can resize).
  */
 function placeTouchHint(): void {
   const card = document.querySelector<HTMLElement>('[data-hud="touch-hint"]');
   if (!card) return;
   const stage = pageLayout().stage.getBoundingClientRect(),
     canvas = app.canvas.getBoundingClientRect();
-  const line = canvas.top + renderer.camera.toScreenY(bh.lineY) - stage.top;
+  const off = canvas.top - stage.top;
+  const line = off + renderer.camera.toScreenY(bh.lineY),
+    frame = off + renderer.camera.toScreenY(playField.height);
   const h = card.offsetHeight;
-  let top = 6;
+  let top = Math.max(6, frame + HINT_LINE_GAP);
   if (top + h + HINT_LINE_GAP > line) top = line + HINT_LINE_GAP;
   const want = `${Math.round(top)}px`;
   if (card.style.top !== want) card.style.top = want;
@@ -1720,6 +1779,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
     pausedThrust = bh.thrust;
     pausedGame = bh;
   }
+  if (!shell.paused && wasPaused) resumedAt = performance.now();
   wasPaused = shell.paused;
   coachText.visible = false;
   // The overlay stays right under the ship and its path (layers added later go above them).
@@ -1815,6 +1875,9 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   drawDeath();
   // The words of a fall are not drawn over the path's label ("falls in" under "Swallowed!").
   if (deathText.visible) pathLabel.visible = false;
+  // One message at a time: paused over a fall's words (which then say it) or the game-over card, the
+  // pause's own words are not drawn (the shade still dims the field).
+  pause.words.visible = !deathText.visible && !bh.over;
   const age = performance.now() - swallow.start;
   if (swallow.active && age > SWALLOW_MS) swallow.active = false;
   if (swallow.active) {
@@ -1852,10 +1915,10 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
       const b = pathLabel.getBounds();
       for (const fx of [0, 0.5, 1]) for (const fy of [0, 1]) addDot(b.x + fx * b.width, b.y + fy * b.height);
     }
-    // Nor over a fall's words (in the field's middle), and first tried in the field's lowest quarter,
+    // Nor over the level's title (read while paused), and first tried in the field's lowest quarter,
     // under the holes (in the middle of the field they would hide them).
-    if (deathText.visible) {
-      const b = deathText.getBounds();
+    if (levelBanner.visible && levelBanner.alpha > 0) {
+      const b = levelBanner.getBounds();
       for (let fx = 0; fx <= 1; fx += 0.125) for (let fy = 0; fy <= 1; fy += 0.25) addDot(b.x + fx * b.width, b.y + fy * b.height);
     }
     const fx0 = cam.toScreenX(0) + 4,
@@ -1957,8 +2020,12 @@ shell.expose({
   /** Whether the swallow effect (the ship spiralling into a hole) plays, and whether the edge warning shows. */
   swallowing: (): boolean => swallow.active,
   edgeWarning: (): boolean => edgeText.visible,
-  /** The pause overlay as last drawn: whether it shows, and its words. */
-  pauseOverlay: (): { visible: boolean; text: string } => ({ visible: pause.visible, text: pause.text }),
+  /** The pause overlay as last drawn: whether it shows, its words, and whether they are drawn (not while another message shows). */
+  pauseOverlay: (): { visible: boolean; text: string; words: boolean } => ({
+    visible: pause.visible,
+    text: pause.text,
+    words: pause.words.visible,
+  }),
   /** The pause's words' box in the last frame, px in the canvas: [left, top, right, bottom]. */
   pauseWordsBox: (): number[] => {
     const b = pause.words.getBounds();

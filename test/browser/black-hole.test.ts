@@ -229,11 +229,19 @@ describe('black hole, between levels', () => {
       bh: { ship: number; lineY: number; holes: number[]; world: { components: { Position: { y: Float64Array } } } };
       level: { waiting: boolean; spec: { level: number; holes: number }; summary: { points: number } | null };
     };
-    // The ship put just over the green line: the next step clears level 1.
+    // A fall on level 1 first (the ship put on its hole), then the ship put just over the green line:
+    // the next step clears level 1.
     const cleared = await g.page.evaluate(() => {
       const w = window.game as unknown as Bh;
       w.reset();
       w.paused = true;
+      const c = w.bh.world.components as unknown as Record<string, { x: Float64Array; y: Float64Array }>,
+        s = w.bh.ship % 2 ** 25,
+        hole = w.bh.holes[0]! % 2 ** 25;
+      c.Position!.x[s] = c.PreviousPosition!.x[s] = c.Position!.x[hole]!;
+      c.Position!.y[s] = c.PreviousPosition!.y[s] = c.Position!.y[hole]!;
+      (w.level as unknown as { parked: boolean }).parked = false;
+      for (let i = 0; i < 600 && (w.bh as unknown as { falls: number }).falls === 0; i++) w.step();
       w.bh.world.components.Position.y[w.bh.ship % 2 ** 25] = w.bh.lineY + 0.3;
       w.step();
       const during = { waiting: w.level.waiting, next: w.level.spec.level, holes: w.bh.holes.length, y: w.ship()[1]! };
@@ -270,6 +278,9 @@ describe('black hole, between levels', () => {
       return w.holeExtents().length === w.bh.holes.length && w.levelBanner().startsWith('Level 2') ? true : null;
     }, null);
     expect(wallBanner).toBe(true);
+    // The fall on level 1 is history: no "Swallowed! Practice: no life lost" over level 2's title.
+    await g.frames(2);
+    expect(await g.page.evaluate(() => (window.game as unknown as BlackHolePage).deathEffect().shown), 'fall words on level 2').toBe(false);
     expect(await g.page.evaluate(() => (window.game as unknown as Bh).ghostHoles())).toBe(false);
     expect(await g.page.evaluate(bannerOverHoles)).toMatchObject({ hits: 0, holes: begun.holes });
     // The last life lost on level 2 (the ship put into a hole): the button and Enter go on from level 2
@@ -292,6 +303,19 @@ describe('black hole, between levels', () => {
     });
     expect(over).toBe(true);
     await g.page.getByRole('button', { name: 'Continue from level 2 ↺' }).waitFor({ state: 'visible', timeout: 10_000 });
+    // Paused over the game-over card: one message, the card's (the pause's words are not drawn over it).
+    type Words = { paused: boolean; pauseOverlay(): { visible: boolean; words: boolean } };
+    await g.page.evaluate(() => {
+      (window.game as unknown as Words).paused = true;
+    });
+    const pausedOver = await g.waitFor(() => {
+      const o = (window.game as unknown as Words).pauseOverlay();
+      return o.visible ? o : null;
+    }, null);
+    expect(pausedOver.words, 'pause words over the game-over card').toBe(false);
+    await g.page.evaluate(() => {
+      (window.game as unknown as Words).paused = false;
+    });
     // The button covers no hole of the wall left on the field (it sat on the middle of the field, over
     // a hole): its box is clear of every hole's horizon, 1.5 radii round (the photon ring and disc).
     const covered = await g.waitFor(() => {
@@ -702,7 +726,7 @@ describe.each([
     expect(p.errors).toEqual([]);
   });
 
-  it('a tap thrusts exactly 9 steps; paused, arrows do not redraw the path; Path and Replay (F, V) work; the legend names real controls', async () => {
+  it('a tap thrusts exactly 15 steps, its arrow unlit once let go; paused, arrows do not redraw the path; Path and Replay (F, V) work; the legend names real controls', async () => {
     const p = page();
     type Bh = {
       paused: boolean;
@@ -719,25 +743,41 @@ describe.each([
     const legend = await p.page.locator('.bp-legend').textContent();
     expect(legend).not.toContain('big button');
     if (touch) expect(legend).toContain('Level ▶ or Continue ↺ button');
-    // A tap of ↑ (a finger's tap, or a key pressed and let go at once) thrusts for exactly 9 steps of
-    // the game: the run's recording (V replays it) holds the thrust 'up' and, 9 steps later, 'none'
-    // (a finger's tap thrust for no step at all; a key's for as many steps as the frames between).
+    // A tap of ↑ (a finger's tap, or a key pressed and let go at once) thrusts for exactly 15 steps
+    // (TAP_STEPS) of the game: the run's recording (V replays it) holds the thrust 'up' and, 15 steps
+    // later, 'none' (a finger's tap thrust for no step at all; a key's for as many steps as the frames
+    // between).
     const upBox = (await p.page.getByRole('button', { name: 'thrust up', exact: true }).boundingBox())!;
     if (touch) await p.page.touchscreen.tap(upBox.x + upBox.width / 2, upBox.y + upBox.height / 2);
     // The key's down and up in one task of the page, so no frame runs between them: sent as two
-    // protocol events on a loaded machine, a frame of catch-up steps could run in between, and a press
-    // that outlasts TAP_STEPS steps is a hold (it thrust 10).
+    // protocol events on a loaded machine, the press could last longer than a tap by the wall clock,
+    // and a press thrusts as long as it lasts.
     else
       await p.page.evaluate(() => {
         for (const type of ['keydown', 'keyup']) window.dispatchEvent(new KeyboardEvent(type, { key: 'ArrowUp', code: 'ArrowUp' }));
       });
+    // Let go, ↑ is not lit while the tap's thrust runs on (lit, and paused so, it looked stuck).
+    const tail = await p.page.evaluate(() => {
+      const w = window.game as unknown as Bh;
+      w.paused = true;
+      return w.bh.thrust;
+    });
+    await p.frames(2);
+    const lit = await p.page.evaluate(() => [
+      (window.game as unknown as Bh).bh.thrust,
+      document.querySelectorAll('.bh-pad button.on').length,
+    ]);
+    if (tail === 'up') expect(lit, 'thrust and arrows lit, paused in a tap').toEqual(['up', 0]);
+    await p.page.evaluate(() => {
+      (window.game as unknown as Bh).paused = false;
+    });
     type Events = { replay: { recorder: { replay: { events: { step: number; name: string; args: unknown[] }[] } } } };
     const thrusts = await p.waitFor(() => {
       const events = (window.game as unknown as Events).replay.recorder.replay.events.filter((e) => e.name === 'thrust');
       return events.length >= 2 ? events.map((e) => [e.step, e.args[0]]) : null;
     }, null);
     expect(thrusts.map((t) => t[1])).toEqual(['up', 'none']);
-    expect(thrusts[1]![0]! as number, device).toBe((thrusts[0]![0]! as number) + 9);
+    expect(thrusts[1]![0]! as number, device).toBe((thrusts[0]![0]! as number) + 15);
     await p.page.evaluate(() => {
       (window.game as unknown as Bh).paused = true;
     });

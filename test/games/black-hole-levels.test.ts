@@ -24,6 +24,7 @@ import {
   WALL_GAP,
   WALL_GATE_SHARE,
 } from '../../games/black-hole/levels';
+import { TAP_STEPS } from '../../games/black-hole/press-timing';
 import {
   type BlackHoleGame,
   createBlackHoleGame,
@@ -183,7 +184,7 @@ describe('levels', () => {
     expect([e, g.lives]).toEqual(['fell', 2]);
   });
 
-  test('level 1 leaves a newcomer time: its holes pull the waiting ship at under 0.5 m/s^2, and after a 0.15 s tap of up it drifts 5.5 s or more before it falls in', () => {
+  test('level 1 leaves a newcomer time: its holes pull the waiting ship at under 0.5 m/s^2, and after a tap of up (TAP_STEPS, as the page taps) it drifts 5.5 s or more before it falls in', () => {
     // The issue this answers: a stranger's 0.15 s tap of up sent the ship into level 1's middle hole
     // within 4 s (the fork pulled the start at 0.65 to 0.77 m/s^2). The pull is summed from the holes'
     // masses and places (G M / d^2 each, towards the hole), not taken from the game's step; the drift
@@ -197,7 +198,7 @@ describe('levels', () => {
         let e = 'none',
           k = 0;
         for (; k < 5.5 / g.world.dt && e === 'none'; k++) {
-          setThrust(g, k < 9 ? 'up' : 'none');
+          setThrust(g, k < TAP_STEPS ? 'up' : 'none');
           e = stepLevel(g, run);
         }
         expect(e, where).toBe('none');
@@ -301,7 +302,7 @@ describe('levels', () => {
           let e = 'none',
             k = 0;
           for (; k < least / g.world.dt && e === 'none'; k++) {
-            setThrust(g, k < 9 ? tap : 'none');
+            setThrust(g, k < TAP_STEPS ? tap : 'none');
             e = stepLevel(g, run);
           }
           expect(e, where).toBe('none');
@@ -714,5 +715,23 @@ describe('levels', () => {
     expect(pilot(g2, run2, 60).event).toBe('cleared');
     expect([g2.falls, g2.lives, run2.summary!.lives]).toEqual([0, 3, 3]);
     expect(g2.message).not.toMatch(/life back/);
+  });
+
+  test('a player who reads before the first press loses nothing: the parked ship stays at the start, 15 s on levels 1 to 4', () => {
+    // A stranger read level 2's title and the wall: no life may go meanwhile (the wall pulls 2 to
+    // 3 m/s^2 at the start, a fall within seconds were the ship not held there).
+    for (const field of [FIELD, { width: 20, height: 30 }]) {
+      for (let level = 1; level <= 4; level++) {
+        const g = createBlackHoleGame({ seed: 5, field });
+        const run = startLevel(g, level);
+        const events = new Set<string>();
+        for (let k = 0; k < 900; k++) events.add(stepLevel(g, run));
+        expect([...events], `level ${level}`).toEqual(['none']);
+        const s = slotOf(g.ship);
+        expect([g.falls, g.lives, run.parked], `level ${level}`).toEqual([0, 3, true]);
+        expect(g.world.components.Position.x[s], `level ${level}`).toBeCloseTo(g.start[0], 9);
+        expect(g.world.components.Position.y[s], `level ${level}`).toBeCloseTo(g.start[1], 9);
+      }
+    }
   });
 });

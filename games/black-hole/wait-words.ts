@@ -1,0 +1,70 @@
+/**
+ * The words over the field while the ship waits at the start (DOM-free): they say what put it there,
+ * and only that. The page keeps the last thing that happened to the ship (`ShipHappening`); a fall's
+ * words must not outlive the fall: after a level begins (a clear, or a new game) or after the ship is
+ * lost off the field, the fall before is history, and words left from it contradicted the status line
+ * ("Swallowed! 2 lives left" over "Lost in space: back to the start").
+ */
+
+/**
+ * The last thing that happened to the ship: 'fell' into a hole (a life lost, or none on a practice
+ * level), 'lost' off the field (no penalty), 'over' (the last life gone), 'level' (a level or a game
+ * began: nothing to report), 'flying' (the player thrust since).
+ */
+export type ShipHappening = 'fell' | 'lost' | 'over' | 'level' | 'flying';
+
+/** What the words need to know: lives left (0 to 3), whether the level is practice, whether the device is touch. */
+export interface WaitContext {
+  readonly lives: number;
+  readonly practice: boolean;
+  readonly touch: boolean;
+}
+
+/**
+ * The words for `happening`, lines separated by '\n': a fall's ("Swallowed!", the lives left or the
+ * practice note, how to go on), a loss off the field's ("Lost in space", no life lost, how to go on), a
+ * game over's; '' when there is nothing to say ('level', 'flying').
+ * @throws RangeError when `ctx.lives` is not an integer in [0, 99].
+ */
+export function waitWords(happening: ShipHappening, ctx: WaitContext): string {
+  if (!(Number.isInteger(ctx.lives) && ctx.lives >= 0 && ctx.lives <= 99))
+    throw new RangeError(`waitWords: ctx.lives must be an integer in [0, 99], got ${String(ctx.lives)}`);
+  const go = ctx.touch ? 'Tap an arrow to fly on' : 'Press an arrow to fly on';
+  switch (happening) {
+    case 'over':
+      return 'Swallowed!\nGame over';
+    case 'fell':
+      return ctx.practice
+        ? `Swallowed!\nPractice: no life lost\n${go}`
+        : `Swallowed!\n${ctx.lives} ${ctx.lives === 1 ? 'life' : 'lives'} left\n${go}`;
+    case 'lost':
+      return `Lost in space!\nBack to the start, no life lost\n${go}`;
+    default:
+      return '';
+  }
+}
+
+/**
+ * The happening after a game step's event `event` (./replay.ts `GameStepEvent`) when the last one was
+ * `last`: a fall, a loss, a game over replace it; a clear ends the attempt ('level': the next level's
+ * start has nothing to report); other events keep it.
+ */
+export function nextHappening(last: ShipHappening, event: string): ShipHappening {
+  if (event === 'fell' || event === 'lost' || event === 'over') return event;
+  if (event === 'cleared' || event === 'scored') return 'level';
+  return last;
+}
+
+/**
+ * `words` while the game is paused: their last line, how to fly on, becomes the pause's own words in
+ * one line ("Paused: P to resume", from `pauseText` "Paused\nP to resume"), so the field shows one
+ * message, not the pause's stacked over the fall's; words without such a line get it added.
+ * `words` unchanged when either is ''.
+ */
+export function pausedWords(words: string, pauseText: string): string {
+  if (words === '' || pauseText === '') return words;
+  const pause = pauseText.split('\n').join(': ');
+  const lines = words.split('\n');
+  if (/ an arrow to fly on$/.test(lines[lines.length - 1]!)) lines.pop();
+  return [...lines, pause].join('\n');
+}

@@ -1,0 +1,72 @@
+/**
+ * How long black hole's arrow presses thrust (games/black-hole/press-timing.ts), against a model of
+ * the page's pacer: fixed steps of 1/60 s run in a burst at each frame, a press begun and let go
+ * between frames, at 20 phases across a frame. A press thrusts as long as it lasted (at least a tap),
+ * at 60 frames a second and at 10 (a heavily loaded machine), and a tap's push from rest is the one the
+ * engine's ramp gives (./rules.ts THRUST_RAMP, worked by hand below).
+ */
+
+import { describe, expect, test } from 'vitest';
+import { MAX_TAIL_STEPS, releaseStep, TAP_STEPS } from '../../games/black-hole/press-timing';
+import { rampThrust, THRUST_RAMP } from '../../games/black-hole/rules';
+
+const dt = 1 / 60;
+/** Steps the pacer has run at wall time t ms, frames every f ms. */
+const stepsAt = (t: number, f: number) => Math.floor((Math.floor(t / f) * f) / (1000 * dt) + 1e-9);
+/** Steps thrust by a press of `ms` ms begun at wall time t0 ms, frames every f ms. */
+function thrustSteps(t0: number, ms: number, f: number): number {
+  const press = stepsAt(t0, f);
+  return releaseStep(press, ms, stepsAt(t0 + ms, f), dt) - press;
+}
+
+describe('black hole press timing', () => {
+  test('a press thrusts its own length in steps (at least a tap), at 60 and at 10 frames a second', () => {
+    for (const fps of [60, 10]) {
+      const f = 1000 / fps;
+      for (const ms of [30, 60, 120, 200, 400, 800, 1500]) {
+        const want = Math.max(TAP_STEPS, Math.round(ms / (1000 * dt)));
+        for (let k = 0; k < 20; k++) {
+          const n = thrustSteps(1000 + (k / 20) * f, ms, f);
+          // At most the steps of one frame more: the burst that ran before the press began (those
+          // steps were run already and cannot be taken back).
+          expect(n, `${fps} fps, ${ms} ms, phase ${k}`).toBeGreaterThanOrEqual(want);
+          expect(n, `${fps} fps, ${ms} ms, phase ${k}`).toBeLessThanOrEqual(want + Math.ceil(f / (1000 * dt)));
+          // Taps and whole-frame lengths exactly: the same push at any frame rate.
+          if (ms <= 200 || ms % f === 0) expect(n, `${fps} fps, ${ms} ms, phase ${k}`).toBe(want);
+        }
+      }
+    }
+  });
+
+  test("a tap's push from rest: the ramp's gentle start and its fall, worked by hand, within 1 %", () => {
+    // full 6 m/s^2: up to trim x full over `gentle` s (12 m/s^3), then to full at (1 - trim) x full /
+    // (up - gentle) (18 m/s^3) until the tap ends at T; let go, it dies at full / down (60 m/s^3).
+    const full = 6,
+      T = TAP_STEPS * dt,
+      { trim, gentle, up, down } = THRUST_RAMP;
+    const j1 = (trim * full) / gentle,
+      j2 = ((1 - trim) * full) / (up - gentle),
+      jd = full / down;
+    const aT = trim * full + j2 * (T - gentle);
+    const want = 0.5 * j1 * gentle ** 2 + trim * full * (T - gentle) + 0.5 * j2 * (T - gentle) ** 2 + aT ** 2 / (2 * jd);
+    const vec: [number, number] = [0, 0];
+    let v = 0;
+    for (let i = 0; i < TAP_STEPS + 60; i++) {
+      rampThrust(vec, i < TAP_STEPS ? full : 0, 0, full, dt);
+      v += vec[0] * dt;
+    }
+    expect(T).toBeGreaterThan(gentle);
+    expect(v).toBeCloseTo(want, 1);
+    expect(Math.abs(v - want) / want).toBeLessThan(0.01 + (2 * full * dt * dt) / want);
+    // A small, visible nudge: 0.3 to 0.6 m/s (1 m in 2 to 3 s; the 9-step tap's 0.16 m/s looked like nothing).
+    expect(v).toBeGreaterThan(0.3);
+    expect(v).toBeLessThan(0.6);
+  });
+
+  test('no thrust after the fact past MAX_TAIL_STEPS; a let-go after the steps ran lets go now; bad input throws', () => {
+    expect(releaseStep(100, 5000, 110, dt)).toBe(110 + MAX_TAIL_STEPS);
+    expect(releaseStep(100, 100, 140, dt)).toBe(140);
+    expect(() => releaseStep(-1, 10, 0, dt)).toThrow(/releaseStep: pressStep/);
+    expect(() => releaseStep(0, Number.NaN, 0, dt)).toThrow(/releaseStep: heldMs/);
+  });
+});
