@@ -33,7 +33,18 @@ import { createReadout } from '@bitphysics/game-kit/lab-kit';
 import { createPauseOverlay, startPixiGame } from '@bitphysics/game-kit/pixi';
 import { contactEvents, createPhysicsWorld, isAlive, type PhysicsWorld, Rng, setGravity, slotOf, step, warmUp } from '@bitphysics/physics';
 import { Container, Graphics, Matrix, RenderTexture, Sprite, Text } from 'pixi.js';
-import { type CameraShot, cameraShot, UPRIGHT_WATCH, uprightAimSpan } from './camera';
+import {
+  type CameraShot,
+  cameraShot,
+  type Field,
+  rockRight as rockRightOf,
+  UPRIGHT_GROUND,
+  UPRIGHT_WATCH,
+  uprightAimView,
+  uprightCastleView,
+  uprightView as uprightViewOf,
+  type View,
+} from './camera';
 import { type DebrisKind, Effects } from './effects';
 import { CATAPULT, cupAt, drawBrick, drawCatapult, drawGlass, drawHill, drawMound, drawPit, drawStone, drawWood, mixColor } from './look';
 import {
@@ -454,15 +465,15 @@ shell.onWorldChange(() => {
  * it jumps when the screen's size changes.
  *
  * On an upright phone (a screen taller than wide) the camera frames the play for the tall screen,
- * the ground UPRIGHT_GROUND of the way up (the scene low in the screen, a strip of earth under it
- * for the card saying how to play and the next-level button). Which view it heads for is decided in
- * ./camera (cameraShot): the level opens on the overview (from behind the catapult's stacked stones
- * to just past the castle) for INTRO_HOLD s or until the first press, so the player sees the target;
- * then the aim view frames the catapult at AIM_PX_PER_M or more (uprightAimSpan; the castle off the
- * screen on the far levels, the look button shows the overview while aiming); the shot view holds
- * the castle and the rock; in between the camera follows the stone: the view slides from the aim
- * view to the shot view as the stone crosses the field (by the farthest it got), keeping it in
- * sight, and goes back to the aim view once the verdict has been read or at the next press.
+ * the lowest surface UPRIGHT_GROUND of the way up (the scene low in the screen, a strip of earth
+ * under it for the card saying how to play and the next-level button). Which view it heads for is
+ * decided in ./camera (cameraShot), and its rectangle there too: the level opens on the castle,
+ * close, for INTRO_HOLD s or until the first press, so the player sees the target at a size that
+ * reads; then the aim view holds the catapult and the whole castle (the target in view all through
+ * a drag); the look button shows the castle close while aiming; in between the camera follows the
+ * stone from the aim view to the castle's view as it crosses the field (by the farthest it got),
+ * keeping it in sight, and goes back to the aim view once the verdict has been read or at the next
+ * press.
  */
 const cameraView = { minX: -4, minY: -1, maxX: 30, maxY: 14 };
 /**
@@ -472,13 +483,6 @@ const cameraView = { minX: -4, minY: -1, maxX: 30, maxY: 14 };
 const aim = { active: false, dx: 0, dy: 0, x0: 0, y0: 0, moved: false };
 /** On a tall screen, where the ground line sits: this fraction of the screen's height from the bottom. */
 const GROUND_AT = 0.18;
-/**
- * On a screen taller than wide (an upright phone or tablet), where the ground (the lowest surface:
- * a pit's floor) sits: this fraction of the screen's height from the bottom, so the catapult, the
- * flight and the castle use the screen's middle, with the banner and (on a phone) the castle's
- * close-up in the sky over them. At 0.11 the scene would sit in the bottom fifth under 70 % of empty sky.
- */
-const UPRIGHT_GROUND = 0.28;
 /** Screens narrower than this (CSS px) get the tighter aim view. */
 const NARROW = 600;
 /** Screen size the view was framed for; the view jumps (no easing) when it changes. */
@@ -487,8 +491,6 @@ let framedFor = '';
 const sizesFramed = new Set<string>();
 /** Whether the camera shows the shot view (set by a throw, cleared when the player aims again). */
 let shotView = false;
-/** A view rectangle in metres. */
-type View = { minX: number; minY: number; maxX: number; maxY: number };
 /** Whether the screen is an upright phone's: narrower than NARROW and over 1.2 x as tall as wide. */
 const upright = (): boolean => renderer.camera.width < NARROW && renderer.camera.height > 1.2 * renderer.camera.width;
 /**
@@ -529,49 +531,33 @@ function viewFor(minX: number, maxX: number): View {
   const minY = Math.min(-1, floor, -(R * (maxX - minX)) / W, R > 0 && R < H ? -(R * top) / (H - R) : -1);
   return { minX, minY, maxX, maxY: Math.max(minY + height, top) };
 }
-/** The overview: the whole field on a wide screen; upright, the catapult and the whole castle it aims at. */
-function overview(): View {
-  return upright() ? uprightView(OVERVIEW_LEFT, lv.castleMaxX + 0.8, aimGround()) : aimView();
+/** What of the level on screen the upright views frame (./camera Field). */
+function field(): Field {
+  return {
+    castleMinX: lv.castleMinX,
+    castleMaxX: lv.castleMaxX,
+    castleTop: lv.castleTop,
+    floor: Math.min(0, ...lv.terrain.map((t) => t.maxY)),
+  };
 }
 /** The right face of the rock behind the castle, m. */
-const rockRight = (): number => lv.castleMaxX + ROCK.gap + 2 * ROCK.hx;
-/** The aim view (see above). */
+const rockRight = (): number => rockRightOf(lv.castleMaxX);
+/** The aim view (see above): upright, the catapult and the whole castle (./camera uprightAimView). */
 function aimView(): View {
-  // Upright: the catapult large enough to aim with a finger (uprightAimSpan), and the castle too
-  // where it is near enough; the overview shows the whole castle at the level's start.
-  if (upright()) {
-    const [minX, maxX] = uprightAimSpan(OVERVIEW_LEFT, lv.castleMaxX + 0.8, renderer.camera.width);
-    return uprightView(minX, maxX, aimGround());
-  }
+  if (upright()) return uprightAimView(field(), renderer.camera.width, renderer.camera.height);
   // Room behind the catapult for its stones where the screen is wide enough.
   const behind = renderer.camera.width < NARROW ? 1.6 : 3.1;
   return viewFor(LAUNCH.x - behind, rockRight() + 0.6);
 }
-/**
- * An upright phone's view of the span [minX, maxX], m, fitted to the screen's width, its lowest
- * surface (a pit's floor, or the ground) `ground` of the way up the screen (UPRIGHT_GROUND unless given).
- */
-function uprightView(minX: number, maxX: number, ground = UPRIGHT_GROUND): View {
-  const cam = renderer.camera;
-  const height = ((maxX - minX) * Math.max(1, cam.height)) / Math.max(1, cam.width);
-  const minY = Math.min(0, ...lv.terrain.map((t) => t.maxY)) - ground * height;
-  return { minX, minY, maxX, maxY: minY + height };
+/** An upright phone's view of the span [minX, maxX], m, fitted to the screen's width (./camera uprightView). */
+function uprightView(minX: number, maxX: number): View {
+  return uprightViewOf(field(), minX, maxX, renderer.camera.width, renderer.camera.height);
 }
 /** Largest magnification of the castle's close-up (drawCloseUp): as wide as the phone's screen for most castles. */
 const CLOSE_MAX = 6;
-/**
- * Upright, the aim view's ground height (a fraction of the screen's height from the bottom):
- * UPRIGHT_GROUND, a strip of earth under the field for the card saying how to play (raised to half
- * the screen, for a close-up under the field, the earth read as 40 % of plain dirt).
- */
-function aimGround(): number {
-  return UPRIGHT_GROUND;
-}
-/** The upright aim view's left edge, m: just behind the catapult's stacked stones. */
-const OVERVIEW_LEFT = LAUNCH.x - 3.2;
-/** The shot view (see above): the castle, the rock and room either side for debris (2.5 m; 0.8 and 1 m upright; on a desktop 1.2 m and the rock's near half). */
+/** The shot view (see above): the castle, the rock and room either side for debris (2.5 m; upright ./camera uprightCastleView; on a desktop 1.2 m and the rock's near half). */
 function shotViewRect(): View {
-  if (upright()) return uprightView(lv.castleMinX - 0.8, rockRight() + 1);
+  if (upright()) return uprightCastleView(field(), renderer.camera.width, renderer.camera.height);
   if (renderer.camera.width < NARROW) return viewFor(lv.castleMinX - 2.5, rockRight() + 2.5);
   // A desktop: the castle close, the rock's near half at the right edge (with 2.5 m either side and
   // the whole rock it would be hardly closer than the aim view, the castle a strip under much sky).
@@ -605,12 +591,12 @@ function followView(): View {
   // screen's edge points on at it (followed on, the view left the castle for the ground's bare end).
   c = Math.min(c, s.maxX - w / 2);
   if (!upright()) return viewFor(c - w / 2, c + w / 2);
-  return uprightView(c - w / 2, c + w / 2, aimGround() + u * (UPRIGHT_GROUND - aimGround()));
+  return uprightView(c - w / 2, c + w / 2);
 }
 function frameCamera(): void {
   const cam = renderer.camera;
   // Back to the aim view once the verdict has been up for VERDICT_READ seconds (upright UPRIGHT_WATCH:
-  // the castle is off the screen from there, and what fell is watched to the end) or the level ended,
+  // the castle is small from there, and what fell is watched to the end) or the level ended,
   // or at once when a press goes down to aim.
   const read = shell.world.time - lastThrow.decidedAt > (upright() ? Math.max(VERDICT_READ, UPRIGHT_WATCH) : VERDICT_READ);
   if (shotView && lastThrow.verdict && (read || levelEnded)) shotView = false;
@@ -624,10 +610,10 @@ function frameCamera(): void {
     wreck: levelEnded && shots.length > 0,
     zoomsIn: zoomsIn(),
   });
-  // The look button while aiming where the aim view leaves part of the castle off the screen (not
-  // in the level's opening overview: the castle is in view there).
-  showLook(upright() && !levelEnded && !shotView && (shot === 'aim' || peeking) && lv.castleMaxX + 0.8 > aimView().maxX);
-  const target = shot === 'castle' ? shotViewRect() : shot === 'follow' ? followView() : shot === 'overview' ? overview() : aimView();
+  // The look button while aiming (not in the level's opening look at the castle, nor while a throw
+  // is followed): the castle close, the aim view holding it whole but small on the far levels.
+  showLook(upright() && !levelEnded && !shotView && (shot === 'aim' || peeking));
+  const target = shot === 'castle' ? shotViewRect() : shot === 'follow' ? followView() : aimView();
   const size = `${cam.width}x${cam.height}`;
   const k = size === framedFor ? 0.1 : 1;
   if (size !== framedFor) sizesFramed.add(size);
@@ -649,15 +635,16 @@ function frameCamera(): void {
 let cameraSettled = false;
 /** The view the camera heads for (camera.ts cameraShot), decided at the last frame. */
 let shot: CameraShot = 'overview';
-/** World time the level (or its replay) started, s: upright, the overview shows for INTRO_HOLD after it. */
+/** World time the level (or its replay) started, s: upright, the castle's view shows for INTRO_HOLD after it. */
 let levelStartedAt = shell.world.time;
-/** Whether a press has gone down on the scene since the level started (it ends the opening overview). */
+/** Whether a press has gone down on the scene since the level started (it ends the opening look at the castle). */
 let touchedLevel = false;
 /** Whether the player asked to look at the castle (the look button, upright only). */
 let peeking = false;
 /**
- * Upright, a button at the bottom right that shows the whole field with the castle while aiming (the
- * aim view frames the catapult large, the castle off the screen on the far levels), and back.
+ * Upright, a button at the bottom right that shows the castle close while aiming (the aim view holds
+ * the catapult and the whole castle, which on the far levels is small), and back; a press to aim
+ * goes back too.
  */
 const lookBar = createButtonBar(
   [
@@ -725,6 +712,7 @@ app.canvas.addEventListener('pointerdown', (e) => {
   pointerOnCanvas(app.canvas, e, pointer);
   shotView = false;
   touchedLevel = true;
+  peeking = false;
   lastThrow.hidden = true;
   aim.active = true;
   aim.x0 = pointer.x;
@@ -2035,7 +2023,7 @@ shell.expose({
   cameraSettled: (): boolean => cameraSettled,
   /** The view the camera heads for: 'overview', 'aim', 'follow' or 'castle' (camera.ts cameraShot). */
   cameraShot: (): CameraShot => shot,
-  /** Ends the level's opening overview as a first touch would, the camera jumping to the aim view (tests). */
+  /** Ends the level's opening look at the castle as a first touch would, the camera jumping to the aim view (tests). */
   skipOpening: (): void => {
     touchedLevel = true;
     framedFor = '';
