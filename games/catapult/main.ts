@@ -33,6 +33,7 @@ import { createReadout } from '@bitphysics/game-kit/lab-kit';
 import { createPauseOverlay, startPixiGame } from '@bitphysics/game-kit/pixi';
 import { contactEvents, createPhysicsWorld, isAlive, type PhysicsWorld, Rng, setGravity, slotOf, step, warmUp } from '@bitphysics/physics';
 import { Container, Graphics, Matrix, RenderTexture, Sprite, Text } from 'pixi.js';
+import { type Box, placeAimLabel } from './aim-label';
 import {
   type CameraShot,
   cameraShot,
@@ -310,6 +311,11 @@ const downShare = (): number => {
  */
 const DOWN_RULE = 'Down: dropped, tipped or knocked 1 m (it darkens); a flat bottom row does not count';
 const DOWN_RULE_SHORT = 'Down: dropped, tipped or knocked 1 m (darkens); not a flat bottom row';
+/**
+ * The banner's type size on a narrow screen, px: with the short rules a level's start is two lines
+ * (four on the first level, with what counts as down) on a 390 px phone.
+ */
+const BANNER_FONT_NARROW = 15;
 /**
  * What earns the stars, shown on the level's start hint and its end card (no-break spaces inside each
  * entry: a narrow screen wraps between entries, not inside one), and its short form for a narrow
@@ -1286,8 +1292,23 @@ function svgChild(tag: string, attrs: Record<string, string | number>): SVGEleme
 const aimDom = (() => {
   const svg = svgChild('svg', { 'data-hud': 'aim-band', 'aria-hidden': 'true' }) as SVGSVGElement;
   svg.style.cssText = 'position:absolute;left:0;top:0;width:100%;height:100%;pointer-events:none;overflow:visible;display:none';
-  const ring = svgChild('circle', { fill: 'none', stroke: '#fff', 'stroke-opacity': 0.35, 'stroke-width': 2 });
-  const half = svgChild('circle', { fill: 'none', stroke: '#fff', 'stroke-opacity': 0.2, 'stroke-width': 1 });
+  // Arcs of the full pull's and half a pull's circles round the press, across the pull (see RING_SPAN).
+  const ring = svgChild('path', {
+    'data-hud': 'aim-ring',
+    fill: 'none',
+    stroke: '#fff',
+    'stroke-opacity': 0.45,
+    'stroke-width': 2,
+    'stroke-linecap': 'round',
+  });
+  const half = svgChild('path', {
+    'data-hud': 'aim-ring-half',
+    fill: 'none',
+    stroke: '#fff',
+    'stroke-opacity': 0.3,
+    'stroke-width': 1.5,
+    'stroke-linecap': 'round',
+  });
   const shade = svgChild('line', { stroke: '#000', 'stroke-opacity': 0.35, 'stroke-width': 5, 'stroke-linecap': 'round' });
   const band = svgChild('line', { 'stroke-width': 3, 'stroke-linecap': 'round' });
   const press = svgChild('circle', { r: 4, fill: '#fff', 'fill-opacity': 0.8 });
@@ -1316,6 +1337,18 @@ const aimDom = (() => {
   return { svg, dots, closeDots, ghost, ring, half, shade, band, press, end, box, label, bar, fill };
 })();
 
+/**
+ * Half the angle of the arcs marking a full pull and half a pull, rad, either side of the pull's
+ * direction: they show how far the pull can go where the finger is, not as whole circles (a full
+ * pull's circle, 760 px across on a desktop, crossed the banner and the clouds).
+ */
+const RING_SPAN = 0.3,
+  HALF_RING_SPAN = 0.25;
+/** An SVG path of the arc of radius r, px, round (cx, cy), from angle a - span to a + span, rad (screen angles: y down). */
+function arcPath(cx: number, cy: number, r: number, a: number, span: number): string {
+  const p = (t: number): string => `${(cx + r * Math.cos(t)).toFixed(1)} ${(cy + r * Math.sin(t)).toFixed(1)}`;
+  return `M ${p(a - span)} A ${r.toFixed(1)} ${r.toFixed(1)} 0 0 1 ${p(a + span)}`;
+}
 /** Sets an SVG element's attributes. */
 function setAttrs(e: SVGElement, attrs: Record<string, number | string>): void {
   for (const [k, v] of Object.entries(attrs)) e.setAttribute(k, String(v));
@@ -1325,9 +1358,10 @@ const powerColor = (power: number): number =>
   power < 0.5 ? mixColor(0x5cd65c, 0xffd23b, 2 * power) : mixColor(0xffd23b, 0xff5040, 2 * power - 1);
 /**
  * Shows the aim in the page (see aimDom) while a press pulls, else hides it: the band from the
- * press to the finger inside a ring whose radius is a full pull (so the player sees how much further
- * the pull can go), and over the catapult a power bar with the power and the angle in numbers (and
- * the last throw's over them), so a throw can be repeated or changed by a little. Called on every
+ * press to the finger, arcs of a full pull's and half a pull's circles across its end (so the player
+ * sees how much further the pull can go), and over the catapult (or where the band leaves room, see
+ * ./aim-label) a power bar with the power and the angle in numbers (and the last throw's over them),
+ * so a throw can be repeated or changed by a little. Called on every
  * pointer move and every frame.
  */
 function showAimDom(): void {
@@ -1347,19 +1381,18 @@ function showAimDom(): void {
   aimShown.angle = (Math.atan2(vy, vx) * 180) / Math.PI;
   const R = fullPullPx();
   const [ex, ey] = aimEnd();
-  setAttrs(d.ring, { cx: aim.x0, cy: aim.y0, r: R });
-  setAttrs(d.half, { cx: aim.x0, cy: aim.y0, r: R / 2 });
+  // Along the pull (down and to the left, the usual throw's, before the pull is long enough to have one).
+  const across = Math.hypot(ex - aim.x0, ey - aim.y0) > 4 ? Math.atan2(ey - aim.y0, ex - aim.x0) : Math.atan2(1, -2);
+  setAttrs(d.ring, { d: arcPath(aim.x0, aim.y0, R, across, RING_SPAN) });
+  setAttrs(d.half, { d: arcPath(aim.x0, aim.y0, R / 2, across, HALF_RING_SPAN) });
   setAttrs(d.shade, { x1: aim.x0, y1: aim.y0, x2: ex, y2: ey });
   setAttrs(d.band, { x1: aim.x0, y1: aim.y0, x2: ex, y2: ey, stroke: color });
   setAttrs(d.press, { cx: aim.x0, cy: aim.y0 });
   setAttrs(d.end, { cx: ex, cy: ey, fill: color });
   drawArc(vx, vy);
-  // The power bar over the catapult, kept on the screen.
+  // The power bar over the catapult, kept on the screen AIM_EDGE px from its edges.
   const w = Math.max(90, cam.toScreenLength(2));
-  const x = Math.min(Math.max(6, cam.toScreenX(-0.3) - w / 2), cam.width - w - 6),
-    y = Math.max(60, cam.toScreenY(3.2));
-  d.box.style.left = `${x - 2}px`;
-  d.box.style.top = `${y - 2}px`;
+  const x = Math.min(Math.max(AIM_EDGE, cam.toScreenX(-0.3) - w / 2), cam.width - w - AIM_EDGE);
   d.bar.style.width = `${w}px`;
   d.fill.style.width = `${Math.max(2, w * power)}px`;
   d.fill.style.background = color;
@@ -1372,10 +1405,32 @@ function showAimDom(): void {
   const text = `${note}${last}${Math.round(100 * power)} %  ${Math.round(aimShown.angle)}°`;
   if (d.label.textContent !== text) d.label.textContent = text;
   // Centred over the bar, and all on the screen (the last throw's line is wider than the bar).
-  const lw = d.label.offsetWidth;
-  const centre = Math.min(Math.max(x + w / 2, lw / 2 + 4), cam.width - lw / 2 - 4);
+  const lw = d.label.offsetWidth,
+    lh = d.label.offsetHeight;
+  const centre = Math.min(Math.max(x + w / 2, lw / 2 + AIM_EDGE), cam.width - lw / 2 - AIM_EDGE);
   d.label.style.left = `${centre - lw / 2 - (x - 2)}px`;
+  // The numbers and bar (the bar's top at y) over the catapult, else in the earth under it, else
+  // over the band: the first clear of the band and its knob (placeAimLabel), all on the screen.
+  const boxAt = (y: number): Box => {
+    const left = Math.min(x, centre - lw / 2);
+    return { x: left, y: y - 6 - lh, w: Math.max(x + w, centre + lw / 2) - left, h: lh + 6 + AIM_BAR_H };
+  };
+  const places = [Math.max(60, cam.toScreenY(3.2)), cam.toScreenY(0) + 24 + lh, Math.min(aim.y0, ey) - 24 - AIM_BAR_H].filter(
+    (y, k) => k === 0 || (boxAt(y).y >= 56 && y + AIM_BAR_H <= cam.height - AIM_EDGE),
+  );
+  const y = places[placeAimLabel(places.map(boxAt), [aim.x0, aim.y0, ex, ey], AIM_CLEARANCE)]!;
+  aimLabelBox = boxAt(y);
+  d.box.style.left = `${x - 2}px`;
+  d.box.style.top = `${y - 2}px`;
 }
+/** Least margin, px, between the aim's numbers and bar and the screen's edges (at 4 px they read as jammed against the page's sidebar). */
+const AIM_EDGE = 14;
+/** The power bar's height with its padding, px. */
+const AIM_BAR_H = 14;
+/** Least gap, px, between the aim's numbers and the pull's band: the knob's radius (9 px) and 6 px. */
+const AIM_CLEARANCE = 15;
+/** The aim's numbers and bar on the screen in the last frame, px. */
+let aimLabelBox: Box = { x: 0, y: 0, w: 0, h: 0 };
 
 /**
  * Sets `n` dots (SVG circles, made as needed) in `group`, hiding the rest: `at(i)` gives dot i's
@@ -1746,6 +1801,17 @@ renderer.root.addChildAt(backdrop, 0);
 /** Screen width and horizon (px) the sky was drawn for. */
 let skyFor = '';
 
+/** The sun's disc and glow radii, px. */
+const SUN_RADIUS = 30,
+  SUN_GLOW = 84;
+/**
+ * Upright, the sun's height under the screen's top, a share of the horizon's: under the banner's
+ * panel (at 0.2 a phone's four-line banner covered it), over the castle's top.
+ */
+const SUN_UPRIGHT = 0.36;
+/** Where the sun was drawn: centre x, y, disc and glow radii, px. */
+let sunAt: [number, number, number, number] = [0, 0, SUN_RADIUS, SUN_GLOW];
+
 function drawBackdrop(world: PhysicsWorld): void {
   const cam = renderer.camera;
   const W = cam.width,
@@ -1759,10 +1825,12 @@ function drawBackdrop(world: PhysicsWorld): void {
       const y0 = (horizon * i) / bands;
       skyLayer.rect(0, y0, W, horizon / bands + 1).fill(mixColor(SKY_TOP, SKY_HORIZON, (i + 0.5) / bands));
     }
+    // Upright, lower: under the banner (its four lines at most on a phone reach about 100 px).
     const sunX = W * 0.82,
-      sunY = Math.max(70, horizon * 0.2);
-    for (let r = 84; r > 34; r -= 10) skyLayer.circle(sunX, sunY, r).fill({ color: 0xfff4cc, alpha: 0.07 });
-    skyLayer.circle(sunX, sunY, 30).fill(0xfff6d8);
+      sunY = Math.max(70, horizon * (upright() ? SUN_UPRIGHT : 0.2));
+    sunAt = [sunX, sunY, SUN_RADIUS, SUN_GLOW];
+    for (let r = SUN_GLOW; r > SUN_RADIUS + 4; r -= 10) skyLayer.circle(sunX, sunY, r).fill({ color: 0xfff4cc, alpha: 0.07 });
+    skyLayer.circle(sunX, sunY, SUN_RADIUS).fill(0xfff6d8);
   }
   const scale = cam.toScreenLength(1),
     left = cam.toWorldX(0);
@@ -1888,11 +1956,12 @@ function draw(world: PhysicsWorld, alpha: number): void {
   ]);
   banner.x = app.screen.width / 2;
   banner.y = 16;
-  // Narrow screens (phones): smaller type, wrapped inside the canvas.
+  // Narrow screens (phones): smaller type, wrapped inside the canvas, and fewer words (see
+  // BANNER_FONT_NARROW): four lines or more covered the sun and a third of the sky.
   const narrow = app.screen.width < 600;
   if (banner.style.wordWrapWidth !== app.screen.width - 24) {
     banner.style.wordWrapWidth = app.screen.width - 24;
-    banner.style.fontSize = narrow ? 17 : 22;
+    banner.style.fontSize = narrow ? BANNER_FONT_NARROW : 22;
   }
   const starRule = narrow ? STAR_RULE_SHORT : STAR_RULE;
   if (levelEnded) {
@@ -1904,7 +1973,10 @@ function draw(world: PhysicsWorld, alpha: number): void {
     if (earned === 0) {
       const keys = touch ? 'Tap the button below to try again' : 'Enter, L or the button below: try again';
       const c = countedDown(lv);
-      banner.text = `Level ${params.level} not cleared  ${stars}\n${c.down} of ${c.of} pieces down: bring down half to pass\n${narrow ? DOWN_RULE_SHORT : DOWN_RULE}\n${starRule}\n${keys}`;
+      // Narrow: no star rule or keys (the button says "Try again ↺"); what counts as down stays.
+      banner.text = narrow
+        ? `Level ${params.level} not cleared  ${stars}\n${c.down} of ${c.of} down: bring down half to pass\n${DOWN_RULE_SHORT}`
+        : `Level ${params.level} not cleared  ${stars}\n${c.down} of ${c.of} pieces down: bring down half to pass\n${DOWN_RULE}\n${starRule}\n${keys}`;
       showNext(true, 'Try again ↺');
     } else if (last) {
       // Levels skipped (L before a clear, the level slider or ?level) have no stars: the end screen
@@ -1914,23 +1986,32 @@ function draw(world: PhysicsWorld, alpha: number): void {
         skipped.length === 0
           ? `All ${LEVEL_COUNT} castles down!`
           : `${LEVEL_COUNT - skipped.length} of ${LEVEL_COUNT} castles down (${skipped.length === 1 ? 'level' : 'levels'} ${skipped.join(', ')} not cleared)`;
-      banner.text = `${head}  ${stars}\nTotal score ${total()}   Stars ${starsWon} / ${3 * LEVEL_COUNT}\n${starRule}\n${touch ? 'Tap below to play again' : 'Enter, L or the button below: play again'}`;
+      banner.text = narrow
+        ? `${head}  ${stars}\nTotal score ${total()}   Stars ${starsWon} / ${3 * LEVEL_COUNT}`
+        : `${head}  ${stars}\nTotal score ${total()}   Stars ${starsWon} / ${3 * LEVEL_COUNT}\n${starRule}\n${touch ? 'Tap below to play again' : 'Enter, L or the button below: play again'}`;
       showNext(true, 'Play again from level 1 ▶');
     } else {
       const keys = touch
         ? 'Tap the button below for the next level, ↺ to try again'
         : 'Enter, L or the button below: next level   R: try again';
       const extra = bonus > 0 ? ` + ${bonus} for ${shotsLeft} ${shotsLeft === 1 ? 'shot' : 'shots'} left` : '';
-      banner.text = `Level ${params.level} cleared  ${stars}\nScore ${score}: ${t.fallen} pieces fell, ${t.broken} welds broke${extra}   Total ${total()}\n${starRule}\n${keys}`;
+      // Narrow: the score's parts in brief, no star rule (the stars earned are on the first line),
+      // and of the keys only the retry (the button names the next level).
+      banner.text = narrow
+        ? `Level ${params.level} cleared  ${stars}  Score ${score}\n${t.fallen} fell, ${t.broken} welds broke${bonus > 0 ? `, +${bonus} bonus` : ''}\nTotal ${total()}   ${touch ? '↺ to try again' : 'R: try again'}`
+        : `Level ${params.level} cleared  ${stars}\nScore ${score}: ${t.fallen} pieces fell, ${t.broken} welds broke${extra}   Total ${total()}\n${starRule}\n${keys}`;
       showNext(true, `Level ${params.level + 1} ▶`);
     }
   } else {
     // The total counts this level's score as it grows; before the first throw, the star rule.
     // Before the first throw the level's name stands where its score (0) will be.
-    const rule = shots.length === 0 ? `\nStars: ${starRule}\n${narrow ? DOWN_RULE_SHORT : DOWN_RULE}` : '';
+    // Narrow, what counts as down is told on the first level only (it is the same rule on every level).
+    const downRule = narrow ? (params.level === 1 ? `\n${DOWN_RULE_SHORT}` : '') : `\n${DOWN_RULE}`;
+    const rule = shots.length === 0 ? `\n${narrow ? '' : 'Stars: '}${starRule}${downRule}` : '';
     const head = shots.length === 0 ? `Level ${params.level}: ${lv.name}` : `Score ${score}`;
-    // "shots left", not "shots": "shots 2" reads as the shots thrown.
-    const running = `${head}  Total ${runningTotal}  ${shotsLeft} ${shotsLeft === 1 ? 'shot' : 'shots'} left${rule}`;
+    // "shots left", not "shots": "shots 2" reads as the shots thrown. Narrow, no "Total 0" (one line, not two).
+    const totalPart = narrow && runningTotal === 0 ? '' : `  Total ${runningTotal}`;
+    const running = `${head}${totalPart}  ${shotsLeft} ${shotsLeft === 1 ? 'shot' : 'shots'} left${rule}`;
     if (clearedEarly(world)) {
       // Cleared with shots to spare: the player may move on now or throw again for more stars (the
       // shots left score a bonus only with three stars, so throwing them is never worth less).
@@ -2005,6 +2086,11 @@ shell.expose({
   lastVerdict: (): string => lastThrow.verdict,
   /** The verdict's words over the scene in the last frame ('' while hidden). */
   verdictShown: (): string => (verdictText.visible ? verdictText.text : ''),
+  /** The aim's numbers and power bar on the screen (px: left, top, width, height), and the pull's band [x0, y0, x1, y1] (px), while aiming. */
+  aimLabelAt: (): { box: Box; band: [number, number, number, number] } => ({
+    box: { ...aimLabelBox },
+    band: [aim.x0, aim.y0, ...aimEnd()],
+  }),
   /** The aim's numbers over the catapult in the last frame ('' while not aiming). */
   aimLabel: (): string => (aimDom.box.style.display === 'none' ? '' : (aimDom.label.textContent ?? '')),
   /** The effects now: bits of debris in flight and score popups showing. */
@@ -2080,6 +2166,8 @@ shell.expose({
   total,
   /** The banner's text and whether the pause overlay shows. */
   bannerText: (): string => banner.text,
+  /** The sun's centre x, y and its disc and glow radii, px. */
+  sunAt: (): [number, number, number, number] => [...sunAt],
   /** The banner's size on the screen and its type size, px (its lines: about height / (1.2 fontSize)). */
   bannerSize: (): { width: number; height: number; fontSize: number } => ({
     width: banner.width,
