@@ -143,6 +143,7 @@ async function phoneBeforeTouch(p: GamePage): Promise<{ hint: Locator; box: DOMR
   // counted as fallen.)
   expect(opening.banner.height).toBeLessThan(6 * opening.banner.fontSize);
   expect(opening.banner.width).toBeLessThanOrEqual(opening.W);
+  await expectSunClear(p);
   // The castle shows in a close-up too, drawn at 1.4 times the scene's scale or more, on the canvas
   // clear of the field: in the earth under the ground (a third of the screen was plain earth) and
   // above the card, or in the sky under the banner and over the castle's top (a wide, low castle's
@@ -210,6 +211,15 @@ async function phoneBeforeTouch(p: GamePage): Promise<{ hint: Locator; box: DOMR
     return w.cameraShot() === 'aim' && w.cameraSettled();
   }, null);
   return { hint, box };
+}
+
+/** The sun's disc wholly under the banner's panel (a phone's banner of four to six lines covered it). */
+async function expectSunClear(p: GamePage): Promise<void> {
+  const { sun, panel } = await p.page.evaluate(() => {
+    const w = window.game as unknown as { sunAt(): number[]; bannerPanel(): { panel: number[] } | null };
+    return { sun: w.sunAt(), panel: w.bannerPanel()!.panel };
+  });
+  expect(sun[1]! - sun[2]!, JSON.stringify({ sun, panel })).toBeGreaterThan(panel[3]!);
 }
 
 /**
@@ -1082,6 +1092,25 @@ describe('catapult', () => {
       return a.dots > 0 && a.power > 0.3 ? a : null;
     }, null);
     const castle = await d.page.evaluate(() => (window.game as unknown as W).level().castleMinX);
+    // The full and half pull's marks are arcs by the pull's end, each under 0.65 of a full pull across (a circle's 2)
+    // and clear of the banner's panel (whole circles, 760 px across, crossed the banner and the
+    // clouds); the aim's numbers at least 12 px from the canvas' left edge (at 4 px they read as
+    // jammed against the sidebar).
+    const marks = await d.page.evaluate(() => {
+      const w = window.game as unknown as { bannerPanel(): { panel: number[] }; aimLabelAt(): { box: { x: number } } };
+      const c = document.querySelector('canvas')!.getBoundingClientRect();
+      const arcs = ['aim-ring', 'aim-ring-half'].map((k) => {
+        const r = document.querySelector(`[data-hud="${k}"]`)!.getBoundingClientRect();
+        return [r.left - c.left, r.top - c.top, r.right - c.left, r.bottom - c.top];
+      });
+      return { arcs, panel: w.bannerPanel().panel, labelX: w.aimLabelAt().box.x };
+    });
+    for (const a of marks.arcs) {
+      expect(Math.hypot(a[2]! - a[0]!, a[3]! - a[1]!), JSON.stringify(marks)).toBeLessThan(0.65 * full);
+      const apart = a[2]! < marks.panel[0]! || a[0]! > marks.panel[2]! || a[3]! < marks.panel[1]! || a[1]! > marks.panel[3]!;
+      expect(apart, JSON.stringify(marks)).toBe(true);
+    }
+    expect(marks.labelX).toBeGreaterThanOrEqual(12);
     // Power 200 px / full pull (0.53 at 380 px), to 0.02; the angle 45 degrees, to 1 degree.
     expect(Math.abs(shown.power - len / full)).toBeLessThan(0.02);
     expect(shown.power).toBeLessThan(0.7);
@@ -1197,7 +1226,9 @@ describe('catapult', () => {
     // A full pull: 90 % of the phone's width (a drag across it; it was 165 px, then 280 px).
     expect(full).toBeGreaterThanOrEqual(0.9 * 390 - 1);
     const box = (await p.page.locator('canvas').boundingBox())!;
-    const start = { x: box.x + 0.7 * box.width, y: box.y + 0.4 * box.height };
+    // From the screen's middle: the finger ends by the catapult, where the aim's numbers go unless
+    // the band is there (a stranger's pull put its knob on them).
+    const start = { x: box.x + 0.49 * box.width, y: box.y + 0.53 * box.height };
     const cdp = await p.page.context().newCDPSession(p.page);
     const touch = (x: number, y: number) => [{ x, y, id: 1 }];
     await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: touch(start.x, start.y) });
@@ -1217,6 +1248,20 @@ describe('catapult', () => {
     expect(inside(aiming.catapult, aiming.W, aiming.H)).toBe(true);
     expect(inside(aiming.castle, aiming.W, aiming.H)).toBe(true);
     expect(reachable(aiming)).toBe(true);
+    // The aim's numbers and bar at least 9 px (the knob's radius) from the band, on 400 points of it,
+    // and on the canvas.
+    const label = await p.page.evaluate(() =>
+      (window.game as unknown as { aimLabelAt(): { box: { x: number; y: number; w: number; h: number }; band: number[] } }).aimLabelAt(),
+    );
+    const [bx0, by0, bx1, by1] = label.band as [number, number, number, number];
+    const { x: lx, y: ly, w: lw, h: lh } = label.box;
+    let gap = Number.POSITIVE_INFINITY;
+    for (let i = 0; i <= 400; i++) {
+      const [qx, qy] = [bx0 + ((bx1 - bx0) * i) / 400, by0 + ((by1 - by0) * i) / 400];
+      gap = Math.min(gap, Math.hypot(Math.max(lx - qx, 0, qx - lx - lw), Math.max(ly - qy, 0, qy - ly - lh)));
+    }
+    expect(gap, JSON.stringify(label)).toBeGreaterThanOrEqual(9);
+    expect([lx >= 0, ly >= 0, lx + lw <= aiming.W, ly + lh <= aiming.H], JSON.stringify(label)).toEqual([true, true, true, true]);
     expect(await p.page.evaluate(() => (window.game as unknown as Close).closeUp())).toBeNull();
     const shown = await p.page.evaluate(() => (window.game as unknown as W).aimShown());
     expect(Math.abs(shown.power - len / full)).toBeLessThan(0.02);
@@ -1259,6 +1304,11 @@ describe('catapult', () => {
     const c = 1 - panel!.alpha,
       lum = c <= 0.04045 ? c / 12.92 : ((c + 0.055) / 1.055) ** 2.4;
     expect(1.05 / (lum + 0.05)).toBeGreaterThanOrEqual(4.5);
+    // The result in three lines at most (a line 1.17 x the type size and the outline 4 px: three
+    // 3.8 x, four 4.9 x; it was six) and the sun clear of it.
+    const result = await p.page.evaluate(() => (window.game as unknown as PhoneGame).bannerSize());
+    expect(result.height).toBeLessThan(4.5 * result.fontSize);
+    await expectSunClear(p);
     // The level played again from its start, the camera at rest (on the opening overview): a stone followed to
     // the tower, a drag from anywhere throws, the next-level (or try-again) button.
     await p.page.evaluate(() => (window.game as unknown as CatapultGame).reset());
