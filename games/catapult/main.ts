@@ -312,10 +312,10 @@ const downShare = (): number => {
 const DOWN_RULE = 'Down: dropped, tipped or knocked 1 m (it darkens); a flat bottom row does not count';
 const DOWN_RULE_SHORT = 'Down: dropped, tipped or knocked 1 m (darkens); not a flat bottom row';
 /**
- * The banner's type size on a narrow screen, px: with the short rules a level's start is two lines
+ * The banner's type size on an upright phone, px: with the short rules a level's start is two lines
  * (four on the first level, with what counts as down) on a 390 px phone.
  */
-const BANNER_FONT_NARROW = 15;
+const BANNER_FONT_UPRIGHT = 15;
 /**
  * What earns the stars, shown on the level's start hint and its end card (no-break spaces inside each
  * entry: a narrow screen wraps between entries, not inside one), and its short form for a narrow
@@ -1956,12 +1956,15 @@ function draw(world: PhysicsWorld, alpha: number): void {
   ]);
   banner.x = app.screen.width / 2;
   banner.y = 16;
-  // Narrow screens (phones): smaller type, wrapped inside the canvas, and fewer words (see
-  // BANNER_FONT_NARROW): four lines or more covered the sun and a third of the sky.
-  const narrow = app.screen.width < 600;
-  if (banner.style.wordWrapWidth !== app.screen.width - 24) {
+  // Narrow screens: smaller type, wrapped inside the canvas; an upright phone's (`brief`) smaller
+  // still and fewer words (see BANNER_FONT_UPRIGHT): four lines or more covered the sun and a third
+  // of the sky there.
+  const narrow = app.screen.width < 600,
+    brief = upright();
+  const fontSize = brief ? BANNER_FONT_UPRIGHT : narrow ? 17 : 22;
+  if (banner.style.wordWrapWidth !== app.screen.width - 24 || banner.style.fontSize !== fontSize) {
     banner.style.wordWrapWidth = app.screen.width - 24;
-    banner.style.fontSize = narrow ? BANNER_FONT_NARROW : 22;
+    banner.style.fontSize = fontSize;
   }
   const starRule = narrow ? STAR_RULE_SHORT : STAR_RULE;
   if (levelEnded) {
@@ -1973,8 +1976,8 @@ function draw(world: PhysicsWorld, alpha: number): void {
     if (earned === 0) {
       const keys = touch ? 'Tap the button below to try again' : 'Enter, L or the button below: try again';
       const c = countedDown(lv);
-      // Narrow: no star rule or keys (the button says "Try again ↺"); what counts as down stays.
-      banner.text = narrow
+      // Upright: no star rule or keys (the button says "Try again ↺"); what counts as down stays.
+      banner.text = brief
         ? `Level ${params.level} not cleared  ${stars}\n${c.down} of ${c.of} down: bring down half to pass\n${DOWN_RULE_SHORT}`
         : `Level ${params.level} not cleared  ${stars}\n${c.down} of ${c.of} pieces down: bring down half to pass\n${DOWN_RULE}\n${starRule}\n${keys}`;
       showNext(true, 'Try again ↺');
@@ -1986,7 +1989,7 @@ function draw(world: PhysicsWorld, alpha: number): void {
         skipped.length === 0
           ? `All ${LEVEL_COUNT} castles down!`
           : `${LEVEL_COUNT - skipped.length} of ${LEVEL_COUNT} castles down (${skipped.length === 1 ? 'level' : 'levels'} ${skipped.join(', ')} not cleared)`;
-      banner.text = narrow
+      banner.text = brief
         ? `${head}  ${stars}\nTotal score ${total()}   Stars ${starsWon} / ${3 * LEVEL_COUNT}`
         : `${head}  ${stars}\nTotal score ${total()}   Stars ${starsWon} / ${3 * LEVEL_COUNT}\n${starRule}\n${touch ? 'Tap below to play again' : 'Enter, L or the button below: play again'}`;
       showNext(true, 'Play again from level 1 ▶');
@@ -1995,9 +1998,9 @@ function draw(world: PhysicsWorld, alpha: number): void {
         ? 'Tap the button below for the next level, ↺ to try again'
         : 'Enter, L or the button below: next level   R: try again';
       const extra = bonus > 0 ? ` + ${bonus} for ${shotsLeft} ${shotsLeft === 1 ? 'shot' : 'shots'} left` : '';
-      // Narrow: the score's parts in brief, no star rule (the stars earned are on the first line),
+      // Upright: the score's parts in brief, no star rule (the stars earned are on the first line),
       // and of the keys only the retry (the button names the next level).
-      banner.text = narrow
+      banner.text = brief
         ? `Level ${params.level} cleared  ${stars}  Score ${score}\n${t.fallen} fell, ${t.broken} welds broke${bonus > 0 ? `, +${bonus} bonus` : ''}\nTotal ${total()}   ${touch ? '↺ to try again' : 'R: try again'}`
         : `Level ${params.level} cleared  ${stars}\nScore ${score}: ${t.fallen} pieces fell, ${t.broken} welds broke${extra}   Total ${total()}\n${starRule}\n${keys}`;
       showNext(true, `Level ${params.level + 1} ▶`);
@@ -2005,12 +2008,12 @@ function draw(world: PhysicsWorld, alpha: number): void {
   } else {
     // The total counts this level's score as it grows; before the first throw, the star rule.
     // Before the first throw the level's name stands where its score (0) will be.
-    // Narrow, what counts as down is told on the first level only (it is the same rule on every level).
-    const downRule = narrow ? (params.level === 1 ? `\n${DOWN_RULE_SHORT}` : '') : `\n${DOWN_RULE}`;
-    const rule = shots.length === 0 ? `\n${narrow ? '' : 'Stars: '}${starRule}${downRule}` : '';
+    // Upright, what counts as down is told on the first level only (it is the same rule on every level).
+    const downRule = brief ? (params.level === 1 ? `\n${DOWN_RULE_SHORT}` : '') : `\n${narrow ? DOWN_RULE_SHORT : DOWN_RULE}`;
+    const rule = shots.length === 0 ? `\n${brief ? '' : 'Stars: '}${starRule}${downRule}` : '';
     const head = shots.length === 0 ? `Level ${params.level}: ${lv.name}` : `Score ${score}`;
-    // "shots left", not "shots": "shots 2" reads as the shots thrown. Narrow, no "Total 0" (one line, not two).
-    const totalPart = narrow && runningTotal === 0 ? '' : `  Total ${runningTotal}`;
+    // "shots left", not "shots": "shots 2" reads as the shots thrown. Upright, no "Total 0" (one line, not two).
+    const totalPart = brief && runningTotal === 0 ? '' : `  Total ${runningTotal}`;
     const running = `${head}${totalPart}  ${shotsLeft} ${shotsLeft === 1 ? 'shot' : 'shots'} left${rule}`;
     if (clearedEarly(world)) {
       // Cleared with shots to spare: the player may move on now or throw again for more stars (the

@@ -1309,12 +1309,17 @@ describe('catapult', () => {
     const result = await p.page.evaluate(() => (window.game as unknown as PhoneGame).bannerSize());
     expect(result.height).toBeLessThan(4.5 * result.fontSize);
     await expectSunClear(p);
-    // The level played again from its start, the camera at rest (on the opening overview): a stone followed to
-    // the tower, a drag from anywhere throws, the next-level (or try-again) button.
-    await p.page.evaluate(() => (window.game as unknown as CatapultGame).reset());
+    // The level played again from its start, past its opening look at the castle (as a first touch
+    // ends it), the camera at rest on the aim view: a stone followed to the tower, a drag from
+    // anywhere throws, the next-level (or try-again) button.
+    await p.page.evaluate(() => {
+      const w = window.game as unknown as CatapultGame & { skipOpening(): void };
+      w.reset();
+      w.skipOpening();
+    });
     await p.waitFor(() => {
-      const w = window.game as unknown as W;
-      return !w.levelEnded() && w.shots().length === 0 && w.cameraSettled();
+      const w = window.game as unknown as W & { cameraShot(): string };
+      return !w.levelEnded() && w.shots().length === 0 && w.cameraShot() === 'aim' && w.cameraSettled();
     }, null);
     await phoneThrows(p, hint, sideways);
     // The menu drawer over the scene pauses the game (a stone flew and a castle fell under it), and
