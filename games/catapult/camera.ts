@@ -1,13 +1,15 @@
 /**
  * Catapult: the camera's decisions, with no DOM: which view the camera heads for (the shot), and on
- * an upright phone how wide the aim view is. The page (main.ts) turns a shot into a rectangle for the
- * screen and eases to it.
+ * an upright phone the rectangle of each view. The page (main.ts) eases the camera to the view.
  *
- * The views: 'overview' (the catapult, the field and the whole castle), 'aim' (on an upright phone:
- * the catapult large enough to aim with a finger, the castle's front in view when it is near),
- * 'follow' (from the aim view to the castle as the stone crosses the field) and 'castle' (the castle,
- * the rock behind it and room for debris).
+ * The views: 'overview' (the catapult, the field and the whole castle: the aim view on a wide
+ * screen), 'aim' (on an upright phone: the catapult and the whole castle, so the target is in view
+ * all through a drag), 'follow' (from the aim view to the castle as the stone crosses the field) and
+ * 'castle' (the castle and the rock behind it, close: a phone's opening look at the target, its look
+ * button, and a finished level's wreck).
  */
+
+import { LAUNCH, ROCK } from './scene';
 
 /** A view the camera heads for. */
 export type CameraShot = 'overview' | 'aim' | 'follow' | 'castle';
@@ -31,28 +33,22 @@ export interface CameraInput {
 }
 
 /**
- * Upright, the level opens on the overview for this long, s, so a player sees what to knock down
- * before the camera closes in on the catapult (a first touch closes in at once).
+ * Upright, the level opens on the castle, close, for this long, s, so a player sees what to knock
+ * down at a size that reads before the camera pulls back to the catapult (a first touch pulls back
+ * at once).
  */
 export const INTRO_HOLD = 1.8;
 
 /**
  * Upright, the castle's view stays this long after a throw's verdict, s, before the camera goes back
  * to the catapult: what the stone set off is still falling when the verdict shows (a tower can take
- * longer than 2.5 s to come down), and the castle is off the screen from the aim view.
+ * longer than 2.5 s to come down).
  */
 export const UPRIGHT_WATCH = 4.5;
 
 /**
- * Upright, the aim view shows at least this many screen pixels a metre: the catapult (4 m across with
- * its stones) about 120 px wide on a 390 px phone, its cup a target for a finger; a wide level's
- * whole field fitted to that width would be half that (level 9's, 14 px a metre).
- */
-export const AIM_PX_PER_M = 28;
-
-/**
  * The view the camera heads for: the castle's view for a finished level's wreck (where it is
- * closer), the following view while a throw shows, and otherwise, upright, the overview at the
+ * closer), the following view while a throw shows, and otherwise, upright, the castle's view at the
  * level's start (INTRO_HOLD, until the first touch) or while the player looks at the castle, else
  * the aim view. Not upright the aim view is the overview (the whole field fits a wide screen).
  * @throws RangeError if sinceStart is negative or not finite.
@@ -63,19 +59,70 @@ export function cameraShot(s: CameraInput): CameraShot {
   if (s.wreck && s.zoomsIn) return 'castle';
   if (s.shotView && s.zoomsIn) return 'follow';
   if (!s.upright) return 'overview';
-  if (s.peeking) return 'overview';
-  if (!s.touched && s.sinceStart < INTRO_HOLD) return 'overview';
+  if (s.peeking) return 'castle';
+  if (!s.touched && s.sinceStart < INTRO_HOLD) return 'castle';
   return 'aim';
 }
 
+/** A view rectangle, m (x right, y up). */
+export interface View {
+  minX: number;
+  minY: number;
+  maxX: number;
+  maxY: number;
+}
+
+/** What of a level the upright views frame, m. */
+export interface Field {
+  /** The castle's near and far ends and its top, m. */
+  castleMinX: number;
+  castleMaxX: number;
+  castleTop: number;
+  /** The lowest surface (0 for flat ground, a pit's floor below it), m (<= 0). */
+  floor: number;
+}
+
 /**
- * Upright, the aim view's span [minX, maxX], m: from `left` (just behind the catapult's stones) as
- * wide as the overview's span [left, overviewMaxX] where that shows at least AIM_PX_PER_M on a screen
- * `width` px wide, else narrowed to that scale (the castle off the screen to the right).
- * @throws RangeError if width is not positive or the overview's span is empty.
+ * On a screen taller than wide (an upright phone or tablet), where the lowest surface sits: this
+ * fraction of the screen's height from the bottom, so the catapult, the flight and the castle use
+ * the screen's lower middle, with the banner in the sky over them and a strip of earth under them
+ * for the card saying how to play and the next-level button. At 0.11 the scene sat in the bottom
+ * fifth under 70 % of empty sky; at 0.5 the bottom 40 % read as plain earth.
  */
-export function uprightAimSpan(left: number, overviewMaxX: number, width: number): [number, number] {
-  if (!(width > 0)) throw new RangeError(`uprightAimSpan: width must be > 0 px, got ${width}`);
-  if (!(overviewMaxX > left)) throw new RangeError(`uprightAimSpan: overviewMaxX must exceed left (${left} m), got ${overviewMaxX}`);
-  return [left, Math.min(overviewMaxX, left + width / AIM_PX_PER_M)];
+export const UPRIGHT_GROUND = 0.28;
+
+/** The upright aim view's left edge, m: just behind the catapult's stacked stones (4 at most, to x = -3.0 m). */
+export const AIM_LEFT = LAUNCH.x - 3.2;
+
+/** Room past the castle's far end in the upright aim view, m: a stone rolling off its back end stays in view. */
+export const AIM_PAST = 0.8;
+
+/** The right face of the rock behind a castle whose far end is at castleMaxX, m. */
+export const rockRight = (castleMaxX: number): number => castleMaxX + ROCK.gap + 2 * ROCK.hx;
+
+/**
+ * An upright screen's view of the span [minX, maxX], m, fitted to the screen's width (`width` x
+ * `height` px), the field's lowest surface `ground` of the way up the screen.
+ * @throws RangeError if the span is empty or the screen's size not positive.
+ */
+export function uprightView(f: Field, minX: number, maxX: number, width: number, height: number, ground = UPRIGHT_GROUND): View {
+  if (!(maxX > minX)) throw new RangeError(`uprightView: maxX must exceed minX (${minX} m), got ${maxX}`);
+  if (!(width > 0 && height > 0)) throw new RangeError(`uprightView: the screen must be > 0 px each way, got ${width} x ${height}`);
+  const h = ((maxX - minX) * height) / width;
+  const minY = f.floor - ground * h;
+  return { minX, minY, maxX, maxY: minY + h };
+}
+
+/**
+ * Upright, the aim view: from just behind the catapult's stones (AIM_LEFT) to just past the castle's
+ * far end (AIM_PAST), so the whole castle is in view while the player aims (a view that framed the
+ * catapult large cut the castle off at the screen's edge, and the player aimed blind).
+ */
+export function uprightAimView(f: Field, width: number, height: number): View {
+  return uprightView(f, AIM_LEFT, f.castleMaxX + AIM_PAST, width, height);
+}
+
+/** Upright, the castle's view: the castle, the rock behind it and room for debris (0.8 m before, 1 m past the rock). */
+export function uprightCastleView(f: Field, width: number, height: number): View {
+  return uprightView(f, f.castleMinX - 0.8, rockRight(f.castleMaxX) + 1, width, height);
 }

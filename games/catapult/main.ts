@@ -33,7 +33,19 @@ import { createReadout } from '@bitphysics/game-kit/lab-kit';
 import { createPauseOverlay, startPixiGame } from '@bitphysics/game-kit/pixi';
 import { contactEvents, createPhysicsWorld, isAlive, type PhysicsWorld, Rng, setGravity, slotOf, step, warmUp } from '@bitphysics/physics';
 import { Container, Graphics, Matrix, RenderTexture, Sprite, Text } from 'pixi.js';
-import { type CameraShot, cameraShot, UPRIGHT_WATCH, uprightAimSpan } from './camera';
+import { type Box, placeAimLabel } from './aim-label';
+import {
+  type CameraShot,
+  cameraShot,
+  type Field,
+  rockRight as rockRightOf,
+  UPRIGHT_GROUND,
+  UPRIGHT_WATCH,
+  uprightAimView,
+  uprightCastleView,
+  uprightView as uprightViewOf,
+  type View,
+} from './camera';
 import { type DebrisKind, Effects } from './effects';
 import { CATAPULT, cupAt, drawBrick, drawCatapult, drawGlass, drawHill, drawMound, drawPit, drawStone, drawWood, mixColor } from './look';
 import {
@@ -300,6 +312,11 @@ const downShare = (): number => {
 const DOWN_RULE = 'Down: dropped, tipped or knocked 1 m (it darkens); a flat bottom row does not count';
 const DOWN_RULE_SHORT = 'Down: dropped, tipped or knocked 1 m (darkens); not a flat bottom row';
 /**
+ * The banner's type size on an upright phone, px: with the short rules a level's start is two lines
+ * (four on the first level, with what counts as down) on a 390 px phone.
+ */
+const BANNER_FONT_UPRIGHT = 15;
+/**
  * What earns the stars, shown on the level's start hint and its end card (no-break spaces inside each
  * entry: a narrow screen wraps between entries, not inside one), and its short form for a narrow
  * screen (a phone held upright), which fits on one line there.
@@ -454,15 +471,15 @@ shell.onWorldChange(() => {
  * it jumps when the screen's size changes.
  *
  * On an upright phone (a screen taller than wide) the camera frames the play for the tall screen,
- * the ground UPRIGHT_GROUND of the way up (the scene low in the screen, a strip of earth under it
- * for the card saying how to play and the next-level button). Which view it heads for is decided in
- * ./camera (cameraShot): the level opens on the overview (from behind the catapult's stacked stones
- * to just past the castle) for INTRO_HOLD s or until the first press, so the player sees the target;
- * then the aim view frames the catapult at AIM_PX_PER_M or more (uprightAimSpan; the castle off the
- * screen on the far levels, the look button shows the overview while aiming); the shot view holds
- * the castle and the rock; in between the camera follows the stone: the view slides from the aim
- * view to the shot view as the stone crosses the field (by the farthest it got), keeping it in
- * sight, and goes back to the aim view once the verdict has been read or at the next press.
+ * the lowest surface UPRIGHT_GROUND of the way up (the scene low in the screen, a strip of earth
+ * under it for the card saying how to play and the next-level button). Which view it heads for is
+ * decided in ./camera (cameraShot), and its rectangle there too: the level opens on the castle,
+ * close, for INTRO_HOLD s or until the first press, so the player sees the target at a size that
+ * reads; then the aim view holds the catapult and the whole castle (the target in view all through
+ * a drag); the look button shows the castle close while aiming; in between the camera follows the
+ * stone from the aim view to the castle's view as it crosses the field (by the farthest it got),
+ * keeping it in sight, and goes back to the aim view once the verdict has been read or at the next
+ * press.
  */
 const cameraView = { minX: -4, minY: -1, maxX: 30, maxY: 14 };
 /**
@@ -472,13 +489,6 @@ const cameraView = { minX: -4, minY: -1, maxX: 30, maxY: 14 };
 const aim = { active: false, dx: 0, dy: 0, x0: 0, y0: 0, moved: false };
 /** On a tall screen, where the ground line sits: this fraction of the screen's height from the bottom. */
 const GROUND_AT = 0.18;
-/**
- * On a screen taller than wide (an upright phone or tablet), where the ground (the lowest surface:
- * a pit's floor) sits: this fraction of the screen's height from the bottom, so the catapult, the
- * flight and the castle use the screen's middle, with the banner and (on a phone) the castle's
- * close-up in the sky over them. At 0.11 the scene would sit in the bottom fifth under 70 % of empty sky.
- */
-const UPRIGHT_GROUND = 0.28;
 /** Screens narrower than this (CSS px) get the tighter aim view. */
 const NARROW = 600;
 /** Screen size the view was framed for; the view jumps (no easing) when it changes. */
@@ -487,8 +497,6 @@ let framedFor = '';
 const sizesFramed = new Set<string>();
 /** Whether the camera shows the shot view (set by a throw, cleared when the player aims again). */
 let shotView = false;
-/** A view rectangle in metres. */
-type View = { minX: number; minY: number; maxX: number; maxY: number };
 /** Whether the screen is an upright phone's: narrower than NARROW and over 1.2 x as tall as wide. */
 const upright = (): boolean => renderer.camera.width < NARROW && renderer.camera.height > 1.2 * renderer.camera.width;
 /**
@@ -529,49 +537,33 @@ function viewFor(minX: number, maxX: number): View {
   const minY = Math.min(-1, floor, -(R * (maxX - minX)) / W, R > 0 && R < H ? -(R * top) / (H - R) : -1);
   return { minX, minY, maxX, maxY: Math.max(minY + height, top) };
 }
-/** The overview: the whole field on a wide screen; upright, the catapult and the whole castle it aims at. */
-function overview(): View {
-  return upright() ? uprightView(OVERVIEW_LEFT, lv.castleMaxX + 0.8, aimGround()) : aimView();
+/** What of the level on screen the upright views frame (./camera Field). */
+function field(): Field {
+  return {
+    castleMinX: lv.castleMinX,
+    castleMaxX: lv.castleMaxX,
+    castleTop: lv.castleTop,
+    floor: Math.min(0, ...lv.terrain.map((t) => t.maxY)),
+  };
 }
 /** The right face of the rock behind the castle, m. */
-const rockRight = (): number => lv.castleMaxX + ROCK.gap + 2 * ROCK.hx;
-/** The aim view (see above). */
+const rockRight = (): number => rockRightOf(lv.castleMaxX);
+/** The aim view (see above): upright, the catapult and the whole castle (./camera uprightAimView). */
 function aimView(): View {
-  // Upright: the catapult large enough to aim with a finger (uprightAimSpan), and the castle too
-  // where it is near enough; the overview shows the whole castle at the level's start.
-  if (upright()) {
-    const [minX, maxX] = uprightAimSpan(OVERVIEW_LEFT, lv.castleMaxX + 0.8, renderer.camera.width);
-    return uprightView(minX, maxX, aimGround());
-  }
+  if (upright()) return uprightAimView(field(), renderer.camera.width, renderer.camera.height);
   // Room behind the catapult for its stones where the screen is wide enough.
   const behind = renderer.camera.width < NARROW ? 1.6 : 3.1;
   return viewFor(LAUNCH.x - behind, rockRight() + 0.6);
 }
-/**
- * An upright phone's view of the span [minX, maxX], m, fitted to the screen's width, its lowest
- * surface (a pit's floor, or the ground) `ground` of the way up the screen (UPRIGHT_GROUND unless given).
- */
-function uprightView(minX: number, maxX: number, ground = UPRIGHT_GROUND): View {
-  const cam = renderer.camera;
-  const height = ((maxX - minX) * Math.max(1, cam.height)) / Math.max(1, cam.width);
-  const minY = Math.min(0, ...lv.terrain.map((t) => t.maxY)) - ground * height;
-  return { minX, minY, maxX, maxY: minY + height };
+/** An upright phone's view of the span [minX, maxX], m, fitted to the screen's width (./camera uprightView). */
+function uprightView(minX: number, maxX: number): View {
+  return uprightViewOf(field(), minX, maxX, renderer.camera.width, renderer.camera.height);
 }
 /** Largest magnification of the castle's close-up (drawCloseUp): as wide as the phone's screen for most castles. */
 const CLOSE_MAX = 6;
-/**
- * Upright, the aim view's ground height (a fraction of the screen's height from the bottom):
- * UPRIGHT_GROUND, a strip of earth under the field for the card saying how to play (raised to half
- * the screen, for a close-up under the field, the earth read as 40 % of plain dirt).
- */
-function aimGround(): number {
-  return UPRIGHT_GROUND;
-}
-/** The upright aim view's left edge, m: just behind the catapult's stacked stones. */
-const OVERVIEW_LEFT = LAUNCH.x - 3.2;
-/** The shot view (see above): the castle, the rock and room either side for debris (2.5 m; 0.8 and 1 m upright; on a desktop 1.2 m and the rock's near half). */
+/** The shot view (see above): the castle, the rock and room either side for debris (2.5 m; upright ./camera uprightCastleView; on a desktop 1.2 m and the rock's near half). */
 function shotViewRect(): View {
-  if (upright()) return uprightView(lv.castleMinX - 0.8, rockRight() + 1);
+  if (upright()) return uprightCastleView(field(), renderer.camera.width, renderer.camera.height);
   if (renderer.camera.width < NARROW) return viewFor(lv.castleMinX - 2.5, rockRight() + 2.5);
   // A desktop: the castle close, the rock's near half at the right edge (with 2.5 m either side and
   // the whole rock it would be hardly closer than the aim view, the castle a strip under much sky).
@@ -605,12 +597,12 @@ function followView(): View {
   // screen's edge points on at it (followed on, the view left the castle for the ground's bare end).
   c = Math.min(c, s.maxX - w / 2);
   if (!upright()) return viewFor(c - w / 2, c + w / 2);
-  return uprightView(c - w / 2, c + w / 2, aimGround() + u * (UPRIGHT_GROUND - aimGround()));
+  return uprightView(c - w / 2, c + w / 2);
 }
 function frameCamera(): void {
   const cam = renderer.camera;
   // Back to the aim view once the verdict has been up for VERDICT_READ seconds (upright UPRIGHT_WATCH:
-  // the castle is off the screen from there, and what fell is watched to the end) or the level ended,
+  // the castle is small from there, and what fell is watched to the end) or the level ended,
   // or at once when a press goes down to aim.
   const read = shell.world.time - lastThrow.decidedAt > (upright() ? Math.max(VERDICT_READ, UPRIGHT_WATCH) : VERDICT_READ);
   if (shotView && lastThrow.verdict && (read || levelEnded)) shotView = false;
@@ -624,10 +616,10 @@ function frameCamera(): void {
     wreck: levelEnded && shots.length > 0,
     zoomsIn: zoomsIn(),
   });
-  // The look button while aiming where the aim view leaves part of the castle off the screen (not
-  // in the level's opening overview: the castle is in view there).
-  showLook(upright() && !levelEnded && !shotView && (shot === 'aim' || peeking) && lv.castleMaxX + 0.8 > aimView().maxX);
-  const target = shot === 'castle' ? shotViewRect() : shot === 'follow' ? followView() : shot === 'overview' ? overview() : aimView();
+  // The look button while aiming (not in the level's opening look at the castle, nor while a throw
+  // is followed): the castle close, the aim view holding it whole but small on the far levels.
+  showLook(upright() && !levelEnded && !shotView && (shot === 'aim' || peeking));
+  const target = shot === 'castle' ? shotViewRect() : shot === 'follow' ? followView() : aimView();
   const size = `${cam.width}x${cam.height}`;
   const k = size === framedFor ? 0.1 : 1;
   if (size !== framedFor) sizesFramed.add(size);
@@ -649,15 +641,16 @@ function frameCamera(): void {
 let cameraSettled = false;
 /** The view the camera heads for (camera.ts cameraShot), decided at the last frame. */
 let shot: CameraShot = 'overview';
-/** World time the level (or its replay) started, s: upright, the overview shows for INTRO_HOLD after it. */
+/** World time the level (or its replay) started, s: upright, the castle's view shows for INTRO_HOLD after it. */
 let levelStartedAt = shell.world.time;
-/** Whether a press has gone down on the scene since the level started (it ends the opening overview). */
+/** Whether a press has gone down on the scene since the level started (it ends the opening look at the castle). */
 let touchedLevel = false;
 /** Whether the player asked to look at the castle (the look button, upright only). */
 let peeking = false;
 /**
- * Upright, a button at the bottom right that shows the whole field with the castle while aiming (the
- * aim view frames the catapult large, the castle off the screen on the far levels), and back.
+ * Upright, a button at the bottom right that shows the castle close while aiming (the aim view holds
+ * the catapult and the whole castle, which on the far levels is small), and back; a press to aim
+ * goes back too.
  */
 const lookBar = createButtonBar(
   [
@@ -725,6 +718,7 @@ app.canvas.addEventListener('pointerdown', (e) => {
   pointerOnCanvas(app.canvas, e, pointer);
   shotView = false;
   touchedLevel = true;
+  peeking = false;
   lastThrow.hidden = true;
   aim.active = true;
   aim.x0 = pointer.x;
@@ -1298,8 +1292,23 @@ function svgChild(tag: string, attrs: Record<string, string | number>): SVGEleme
 const aimDom = (() => {
   const svg = svgChild('svg', { 'data-hud': 'aim-band', 'aria-hidden': 'true' }) as SVGSVGElement;
   svg.style.cssText = 'position:absolute;left:0;top:0;width:100%;height:100%;pointer-events:none;overflow:visible;display:none';
-  const ring = svgChild('circle', { fill: 'none', stroke: '#fff', 'stroke-opacity': 0.35, 'stroke-width': 2 });
-  const half = svgChild('circle', { fill: 'none', stroke: '#fff', 'stroke-opacity': 0.2, 'stroke-width': 1 });
+  // Arcs of the full pull's and half a pull's circles round the press, across the pull (see RING_SPAN).
+  const ring = svgChild('path', {
+    'data-hud': 'aim-ring',
+    fill: 'none',
+    stroke: '#fff',
+    'stroke-opacity': 0.45,
+    'stroke-width': 2,
+    'stroke-linecap': 'round',
+  });
+  const half = svgChild('path', {
+    'data-hud': 'aim-ring-half',
+    fill: 'none',
+    stroke: '#fff',
+    'stroke-opacity': 0.3,
+    'stroke-width': 1.5,
+    'stroke-linecap': 'round',
+  });
   const shade = svgChild('line', { stroke: '#000', 'stroke-opacity': 0.35, 'stroke-width': 5, 'stroke-linecap': 'round' });
   const band = svgChild('line', { 'stroke-width': 3, 'stroke-linecap': 'round' });
   const press = svgChild('circle', { r: 4, fill: '#fff', 'fill-opacity': 0.8 });
@@ -1328,6 +1337,18 @@ const aimDom = (() => {
   return { svg, dots, closeDots, ghost, ring, half, shade, band, press, end, box, label, bar, fill };
 })();
 
+/**
+ * Half the angle of the arcs marking a full pull and half a pull, rad, either side of the pull's
+ * direction: they show how far the pull can go where the finger is, not as whole circles (a full
+ * pull's circle, 760 px across on a desktop, crossed the banner and the clouds).
+ */
+const RING_SPAN = 0.3,
+  HALF_RING_SPAN = 0.25;
+/** An SVG path of the arc of radius r, px, round (cx, cy), from angle a - span to a + span, rad (screen angles: y down). */
+function arcPath(cx: number, cy: number, r: number, a: number, span: number): string {
+  const p = (t: number): string => `${(cx + r * Math.cos(t)).toFixed(1)} ${(cy + r * Math.sin(t)).toFixed(1)}`;
+  return `M ${p(a - span)} A ${r.toFixed(1)} ${r.toFixed(1)} 0 0 1 ${p(a + span)}`;
+}
 /** Sets an SVG element's attributes. */
 function setAttrs(e: SVGElement, attrs: Record<string, number | string>): void {
   for (const [k, v] of Object.entries(attrs)) e.setAttribute(k, String(v));
@@ -1337,9 +1358,10 @@ const powerColor = (power: number): number =>
   power < 0.5 ? mixColor(0x5cd65c, 0xffd23b, 2 * power) : mixColor(0xffd23b, 0xff5040, 2 * power - 1);
 /**
  * Shows the aim in the page (see aimDom) while a press pulls, else hides it: the band from the
- * press to the finger inside a ring whose radius is a full pull (so the player sees how much further
- * the pull can go), and over the catapult a power bar with the power and the angle in numbers (and
- * the last throw's over them), so a throw can be repeated or changed by a little. Called on every
+ * press to the finger, arcs of a full pull's and half a pull's circles across its end (so the player
+ * sees how much further the pull can go), and over the catapult (or where the band leaves room, see
+ * ./aim-label) a power bar with the power and the angle in numbers (and the last throw's over them),
+ * so a throw can be repeated or changed by a little. Called on every
  * pointer move and every frame.
  */
 function showAimDom(): void {
@@ -1359,19 +1381,18 @@ function showAimDom(): void {
   aimShown.angle = (Math.atan2(vy, vx) * 180) / Math.PI;
   const R = fullPullPx();
   const [ex, ey] = aimEnd();
-  setAttrs(d.ring, { cx: aim.x0, cy: aim.y0, r: R });
-  setAttrs(d.half, { cx: aim.x0, cy: aim.y0, r: R / 2 });
+  // Along the pull (down and to the left, the usual throw's, before the pull is long enough to have one).
+  const across = Math.hypot(ex - aim.x0, ey - aim.y0) > 4 ? Math.atan2(ey - aim.y0, ex - aim.x0) : Math.atan2(1, -2);
+  setAttrs(d.ring, { d: arcPath(aim.x0, aim.y0, R, across, RING_SPAN) });
+  setAttrs(d.half, { d: arcPath(aim.x0, aim.y0, R / 2, across, HALF_RING_SPAN) });
   setAttrs(d.shade, { x1: aim.x0, y1: aim.y0, x2: ex, y2: ey });
   setAttrs(d.band, { x1: aim.x0, y1: aim.y0, x2: ex, y2: ey, stroke: color });
   setAttrs(d.press, { cx: aim.x0, cy: aim.y0 });
   setAttrs(d.end, { cx: ex, cy: ey, fill: color });
   drawArc(vx, vy);
-  // The power bar over the catapult, kept on the screen.
+  // The power bar over the catapult, kept on the screen AIM_EDGE px from its edges.
   const w = Math.max(90, cam.toScreenLength(2));
-  const x = Math.min(Math.max(6, cam.toScreenX(-0.3) - w / 2), cam.width - w - 6),
-    y = Math.max(60, cam.toScreenY(3.2));
-  d.box.style.left = `${x - 2}px`;
-  d.box.style.top = `${y - 2}px`;
+  const x = Math.min(Math.max(AIM_EDGE, cam.toScreenX(-0.3) - w / 2), cam.width - w - AIM_EDGE);
   d.bar.style.width = `${w}px`;
   d.fill.style.width = `${Math.max(2, w * power)}px`;
   d.fill.style.background = color;
@@ -1384,10 +1405,32 @@ function showAimDom(): void {
   const text = `${note}${last}${Math.round(100 * power)} %  ${Math.round(aimShown.angle)}°`;
   if (d.label.textContent !== text) d.label.textContent = text;
   // Centred over the bar, and all on the screen (the last throw's line is wider than the bar).
-  const lw = d.label.offsetWidth;
-  const centre = Math.min(Math.max(x + w / 2, lw / 2 + 4), cam.width - lw / 2 - 4);
+  const lw = d.label.offsetWidth,
+    lh = d.label.offsetHeight;
+  const centre = Math.min(Math.max(x + w / 2, lw / 2 + AIM_EDGE), cam.width - lw / 2 - AIM_EDGE);
   d.label.style.left = `${centre - lw / 2 - (x - 2)}px`;
+  // The numbers and bar (the bar's top at y) over the catapult, else in the earth under it, else
+  // over the band: the first clear of the band and its knob (placeAimLabel), all on the screen.
+  const boxAt = (y: number): Box => {
+    const left = Math.min(x, centre - lw / 2);
+    return { x: left, y: y - 6 - lh, w: Math.max(x + w, centre + lw / 2) - left, h: lh + 6 + AIM_BAR_H };
+  };
+  const places = [Math.max(60, cam.toScreenY(3.2)), cam.toScreenY(0) + 24 + lh, Math.min(aim.y0, ey) - 24 - AIM_BAR_H].filter(
+    (y, k) => k === 0 || (boxAt(y).y >= 56 && y + AIM_BAR_H <= cam.height - AIM_EDGE),
+  );
+  const y = places[placeAimLabel(places.map(boxAt), [aim.x0, aim.y0, ex, ey], AIM_CLEARANCE)]!;
+  aimLabelBox = boxAt(y);
+  d.box.style.left = `${x - 2}px`;
+  d.box.style.top = `${y - 2}px`;
 }
+/** Least margin, px, between the aim's numbers and bar and the screen's edges (at 4 px they read as jammed against the page's sidebar). */
+const AIM_EDGE = 14;
+/** The power bar's height with its padding, px. */
+const AIM_BAR_H = 14;
+/** Least gap, px, between the aim's numbers and the pull's band: the knob's radius (9 px) and 6 px. */
+const AIM_CLEARANCE = 15;
+/** The aim's numbers and bar on the screen in the last frame, px. */
+let aimLabelBox: Box = { x: 0, y: 0, w: 0, h: 0 };
 
 /**
  * Sets `n` dots (SVG circles, made as needed) in `group`, hiding the rest: `at(i)` gives dot i's
@@ -1758,6 +1801,17 @@ renderer.root.addChildAt(backdrop, 0);
 /** Screen width and horizon (px) the sky was drawn for. */
 let skyFor = '';
 
+/** The sun's disc and glow radii, px. */
+const SUN_RADIUS = 30,
+  SUN_GLOW = 84;
+/**
+ * Upright, the sun's height under the screen's top, a share of the horizon's: under the banner's
+ * panel (at 0.2 a phone's four-line banner covered it), over the castle's top.
+ */
+const SUN_UPRIGHT = 0.36;
+/** Where the sun was drawn: centre x, y, disc and glow radii, px. */
+let sunAt: [number, number, number, number] = [0, 0, SUN_RADIUS, SUN_GLOW];
+
 function drawBackdrop(world: PhysicsWorld): void {
   const cam = renderer.camera;
   const W = cam.width,
@@ -1771,10 +1825,12 @@ function drawBackdrop(world: PhysicsWorld): void {
       const y0 = (horizon * i) / bands;
       skyLayer.rect(0, y0, W, horizon / bands + 1).fill(mixColor(SKY_TOP, SKY_HORIZON, (i + 0.5) / bands));
     }
+    // Upright, lower: under the banner (its four lines at most on a phone reach about 100 px).
     const sunX = W * 0.82,
-      sunY = Math.max(70, horizon * 0.2);
-    for (let r = 84; r > 34; r -= 10) skyLayer.circle(sunX, sunY, r).fill({ color: 0xfff4cc, alpha: 0.07 });
-    skyLayer.circle(sunX, sunY, 30).fill(0xfff6d8);
+      sunY = Math.max(70, horizon * (upright() ? SUN_UPRIGHT : 0.2));
+    sunAt = [sunX, sunY, SUN_RADIUS, SUN_GLOW];
+    for (let r = SUN_GLOW; r > SUN_RADIUS + 4; r -= 10) skyLayer.circle(sunX, sunY, r).fill({ color: 0xfff4cc, alpha: 0.07 });
+    skyLayer.circle(sunX, sunY, SUN_RADIUS).fill(0xfff6d8);
   }
   const scale = cam.toScreenLength(1),
     left = cam.toWorldX(0);
@@ -1900,11 +1956,15 @@ function draw(world: PhysicsWorld, alpha: number): void {
   ]);
   banner.x = app.screen.width / 2;
   banner.y = 16;
-  // Narrow screens (phones): smaller type, wrapped inside the canvas.
-  const narrow = app.screen.width < 600;
-  if (banner.style.wordWrapWidth !== app.screen.width - 24) {
+  // Narrow screens: smaller type, wrapped inside the canvas; an upright phone's (`brief`) smaller
+  // still and fewer words (see BANNER_FONT_UPRIGHT): four lines or more covered the sun and a third
+  // of the sky there.
+  const narrow = app.screen.width < 600,
+    brief = upright();
+  const fontSize = brief ? BANNER_FONT_UPRIGHT : narrow ? 17 : 22;
+  if (banner.style.wordWrapWidth !== app.screen.width - 24 || banner.style.fontSize !== fontSize) {
     banner.style.wordWrapWidth = app.screen.width - 24;
-    banner.style.fontSize = narrow ? 17 : 22;
+    banner.style.fontSize = fontSize;
   }
   const starRule = narrow ? STAR_RULE_SHORT : STAR_RULE;
   if (levelEnded) {
@@ -1916,7 +1976,10 @@ function draw(world: PhysicsWorld, alpha: number): void {
     if (earned === 0) {
       const keys = touch ? 'Tap the button below to try again' : 'Enter, L or the button below: try again';
       const c = countedDown(lv);
-      banner.text = `Level ${params.level} not cleared  ${stars}\n${c.down} of ${c.of} pieces down: bring down half to pass\n${narrow ? DOWN_RULE_SHORT : DOWN_RULE}\n${starRule}\n${keys}`;
+      // Upright: no star rule or keys (the button says "Try again ↺"); what counts as down stays.
+      banner.text = brief
+        ? `Level ${params.level} not cleared  ${stars}\n${c.down} of ${c.of} down: bring down half to pass\n${DOWN_RULE_SHORT}`
+        : `Level ${params.level} not cleared  ${stars}\n${c.down} of ${c.of} pieces down: bring down half to pass\n${DOWN_RULE}\n${starRule}\n${keys}`;
       showNext(true, 'Try again ↺');
     } else if (last) {
       // Levels skipped (L before a clear, the level slider or ?level) have no stars: the end screen
@@ -1926,23 +1989,32 @@ function draw(world: PhysicsWorld, alpha: number): void {
         skipped.length === 0
           ? `All ${LEVEL_COUNT} castles down!`
           : `${LEVEL_COUNT - skipped.length} of ${LEVEL_COUNT} castles down (${skipped.length === 1 ? 'level' : 'levels'} ${skipped.join(', ')} not cleared)`;
-      banner.text = `${head}  ${stars}\nTotal score ${total()}   Stars ${starsWon} / ${3 * LEVEL_COUNT}\n${starRule}\n${touch ? 'Tap below to play again' : 'Enter, L or the button below: play again'}`;
+      banner.text = brief
+        ? `${head}  ${stars}\nTotal score ${total()}   Stars ${starsWon} / ${3 * LEVEL_COUNT}`
+        : `${head}  ${stars}\nTotal score ${total()}   Stars ${starsWon} / ${3 * LEVEL_COUNT}\n${starRule}\n${touch ? 'Tap below to play again' : 'Enter, L or the button below: play again'}`;
       showNext(true, 'Play again from level 1 ▶');
     } else {
       const keys = touch
         ? 'Tap the button below for the next level, ↺ to try again'
         : 'Enter, L or the button below: next level   R: try again';
       const extra = bonus > 0 ? ` + ${bonus} for ${shotsLeft} ${shotsLeft === 1 ? 'shot' : 'shots'} left` : '';
-      banner.text = `Level ${params.level} cleared  ${stars}\nScore ${score}: ${t.fallen} pieces fell, ${t.broken} welds broke${extra}   Total ${total()}\n${starRule}\n${keys}`;
+      // Upright: the score's parts in brief, no star rule (the stars earned are on the first line),
+      // and of the keys only the retry (the button names the next level).
+      banner.text = brief
+        ? `Level ${params.level} cleared  ${stars}  Score ${score}\n${t.fallen} fell, ${t.broken} welds broke${bonus > 0 ? `, +${bonus} bonus` : ''}\nTotal ${total()}   ${touch ? '↺ to try again' : 'R: try again'}`
+        : `Level ${params.level} cleared  ${stars}\nScore ${score}: ${t.fallen} pieces fell, ${t.broken} welds broke${extra}   Total ${total()}\n${starRule}\n${keys}`;
       showNext(true, `Level ${params.level + 1} ▶`);
     }
   } else {
     // The total counts this level's score as it grows; before the first throw, the star rule.
     // Before the first throw the level's name stands where its score (0) will be.
-    const rule = shots.length === 0 ? `\nStars: ${starRule}\n${narrow ? DOWN_RULE_SHORT : DOWN_RULE}` : '';
+    // Upright, what counts as down is told on the first level only (it is the same rule on every level).
+    const downRule = brief ? (params.level === 1 ? `\n${DOWN_RULE_SHORT}` : '') : `\n${narrow ? DOWN_RULE_SHORT : DOWN_RULE}`;
+    const rule = shots.length === 0 ? `\n${brief ? '' : 'Stars: '}${starRule}${downRule}` : '';
     const head = shots.length === 0 ? `Level ${params.level}: ${lv.name}` : `Score ${score}`;
-    // "shots left", not "shots": "shots 2" reads as the shots thrown.
-    const running = `${head}  Total ${runningTotal}  ${shotsLeft} ${shotsLeft === 1 ? 'shot' : 'shots'} left${rule}`;
+    // "shots left", not "shots": "shots 2" reads as the shots thrown. Upright, no "Total 0" (one line, not two).
+    const totalPart = brief && runningTotal === 0 ? '' : `  Total ${runningTotal}`;
+    const running = `${head}${totalPart}  ${shotsLeft} ${shotsLeft === 1 ? 'shot' : 'shots'} left${rule}`;
     if (clearedEarly(world)) {
       // Cleared with shots to spare: the player may move on now or throw again for more stars (the
       // shots left score a bonus only with three stars, so throwing them is never worth less).
@@ -2017,6 +2089,11 @@ shell.expose({
   lastVerdict: (): string => lastThrow.verdict,
   /** The verdict's words over the scene in the last frame ('' while hidden). */
   verdictShown: (): string => (verdictText.visible ? verdictText.text : ''),
+  /** The aim's numbers and power bar on the screen (px: left, top, width, height), and the pull's band [x0, y0, x1, y1] (px), while aiming. */
+  aimLabelAt: (): { box: Box; band: [number, number, number, number] } => ({
+    box: { ...aimLabelBox },
+    band: [aim.x0, aim.y0, ...aimEnd()],
+  }),
   /** The aim's numbers over the catapult in the last frame ('' while not aiming). */
   aimLabel: (): string => (aimDom.box.style.display === 'none' ? '' : (aimDom.label.textContent ?? '')),
   /** The effects now: bits of debris in flight and score popups showing. */
@@ -2035,7 +2112,7 @@ shell.expose({
   cameraSettled: (): boolean => cameraSettled,
   /** The view the camera heads for: 'overview', 'aim', 'follow' or 'castle' (camera.ts cameraShot). */
   cameraShot: (): CameraShot => shot,
-  /** Ends the level's opening overview as a first touch would, the camera jumping to the aim view (tests). */
+  /** Ends the level's opening look at the castle as a first touch would, the camera jumping to the aim view (tests). */
   skipOpening: (): void => {
     touchedLevel = true;
     framedFor = '';
@@ -2092,6 +2169,8 @@ shell.expose({
   total,
   /** The banner's text and whether the pause overlay shows. */
   bannerText: (): string => banner.text,
+  /** The sun's centre x, y and its disc and glow radii, px. */
+  sunAt: (): [number, number, number, number] => [...sunAt],
   /** The banner's size on the screen and its type size, px (its lines: about height / (1.2 fontSize)). */
   bannerSize: (): { width: number; height: number; fontSize: number } => ({
     width: banner.width,

@@ -86,8 +86,8 @@ async function startLevel(p: GamePage, level: number, o: { paused?: boolean; cle
 
 /**
  * On a phone (390 x 844, touch) page of level 1 before its first touch: upright, the level opens on
- * the catapult and the whole castle, then frames the catapult large (28 px a metre or more) with the
- * castle's front in view, and the look button shows the whole castle and back; the banner fits, the
+ * the castle close, then frames the catapult and the whole castle, and the look button shows the
+ * castle close and back; the banner fits, the
  * earth under the field is a strip with no close-up of the castle, and a card says how to play;
  * sideways (844 x 390) the whole field is in view and the card lies clear of the castle; back
  * upright. Returns the card and the canvas' box seen sideways.
@@ -111,25 +111,25 @@ async function phoneBeforeTouch(p: GamePage): Promise<{ hint: Locator; box: DOMR
       return { shot: w.cameraShot(), left, right, top, bottom, castle, perM, W: cam.width, H: cam.height, banner: w.bannerSize(), hintTop };
     });
   type Framing = Awaited<ReturnType<typeof framing>>;
-  // The catapult whole on the canvas; with `whole`, the castle too (from its front to its far end and its top).
-  const expectFramed = (f: Framing, whole: boolean) => {
+  // The whole castle on the canvas (from its front to its far end and its top); with `catapult`, the
+  // catapult whole too, left of the castle.
+  const expectFramed = (f: Framing, catapult: boolean) => {
+    expect([f.castle[0]! >= 0, f.castle[1]! <= f.W, f.castle[2]! > 0], JSON.stringify(f)).toEqual([true, true, true]);
+    if (!catapult) return;
     expect([f.left >= 0, f.right <= f.W, f.top >= 0, f.bottom <= f.H], JSON.stringify(f)).toEqual([true, true, true, true]);
     expect(f.castle[0], JSON.stringify(f)).toBeGreaterThan(f.right);
-    // The castle's front on the canvas at least (the castle reachable from the aim view on level 1).
-    expect(f.castle[0]).toBeLessThan(f.W);
-    if (whole) expect([f.castle[1]! <= f.W, f.castle[2]! > 0], JSON.stringify(f)).toEqual([true, true]);
   };
-  // The level played from its start opens on the overview: the catapult and the whole castle it aims
-  // at (the catapult framed large with the castle off the screen showed a stranger the edge of a tower,
-  // not the target). Replayed, so the opening's 1.8 s have not passed while the page loaded.
+  // The level played from its start opens on the castle, close: the target at a size that reads (the
+  // catapult and the field fitted to 390 px drew a stranger's market stalls 20 px tall). Replayed, so
+  // the opening's 1.8 s have not passed while the page loaded.
   await p.page.evaluate(() => (window.game as unknown as CatapultGame).reset());
   await p.waitFor(() => {
     const w = window.game as unknown as { cameraShot(): string; cameraSettled(): boolean };
-    return w.cameraShot() === 'overview' && w.cameraSettled();
+    return w.cameraShot() === 'castle' && w.cameraSettled();
   }, null);
   const opening = await framing();
-  expect(opening.shot).toBe('overview');
-  expectFramed(opening, true);
+  expect(opening.shot).toBe('castle');
+  expectFramed(opening, false);
   // The ground is above the card saying how to play (the card lies on the earth, not over the
   // catapult), and the scene uses the screen's lower middle: the ground between half and three
   // quarters of the way down (at 89 % the scene sat in the bottom fifth under 70 % of empty sky).
@@ -142,6 +142,7 @@ async function phoneBeforeTouch(p: GamePage): Promise<{ hint: Locator; box: DOMR
   // counted as fallen.)
   expect(opening.banner.height).toBeLessThan(6 * opening.banner.fontSize);
   expect(opening.banner.width).toBeLessThanOrEqual(opening.W);
+  await expectSunClear(p);
   // The castle shows in a close-up too, drawn at 1.4 times the scene's scale or more, on the canvas
   // clear of the field: in the earth under the ground (a third of the screen was plain earth) and
   // above the card, or in the sky under the banner and over the castle's top (a wide, low castle's
@@ -178,27 +179,28 @@ async function phoneBeforeTouch(p: GamePage): Promise<{ hint: Locator; box: DOMR
     return w.renderer.camera.width < 600 && w.cameraSettled();
   }, null);
   // Then (the opening's 1.8 s over, or skipped as a touch would: test/games/catapult-camera.test.ts
-  // checks its timing), the camera frames the catapult: 28 px a metre or more (level 1's whole field
-  // at 390 px is 21 px a metre; level 9's was 14).
+  // checks its timing), the camera frames the catapult and the whole castle (a view of the catapult
+  // large cut a stranger's target off at the edge while aiming), the opening's look at the castle
+  // at least 1.25 x as close.
   await p.page.evaluate(() => (window.game as unknown as { skipOpening(): void }).skipOpening());
   await p.waitFor(() => {
     const w = window.game as unknown as { cameraShot(): string; cameraSettled(): boolean };
     return w.cameraShot() === 'aim' && w.cameraSettled();
   }, null);
   const aim = await framing();
-  expectFramed(aim, false);
-  // (To 0.5 %: the camera counts as at rest within 0.01 m of its view, 0.02 px a metre here.)
-  expect(aim.perM).toBeGreaterThanOrEqual(28 * 0.995);
-  expect(aim.perM).toBeGreaterThan(1.3 * opening.perM);
-  // The look button shows the whole castle while aiming, and goes back to the catapult (its tap, a
+  expectFramed(aim, true);
+  expect(opening.perM).toBeGreaterThan(1.25 * aim.perM);
+  // The look button shows the castle close while aiming, and goes back to the catapult (its tap, a
   // press on the page, takes the card saying how to play away: last).
   const look = p.page.locator('[data-hud="look"] button');
   await look.tap();
   await p.waitFor(() => {
     const w = window.game as unknown as { cameraShot(): string; cameraSettled(): boolean };
-    return w.cameraShot() === 'overview' && w.cameraSettled();
+    return w.cameraShot() === 'castle' && w.cameraSettled();
   }, null);
-  expectFramed(await framing(), true);
+  const looked = await framing();
+  expectFramed(looked, false);
+  expect(looked.perM).toBeCloseTo(opening.perM, 1);
   expect(await look.textContent()).toMatch(/Catapult/);
   await look.tap();
   // Back to the aim view (jumped to: the easing to the overview was waited on above).
@@ -208,6 +210,15 @@ async function phoneBeforeTouch(p: GamePage): Promise<{ hint: Locator; box: DOMR
     return w.cameraShot() === 'aim' && w.cameraSettled();
   }, null);
   return { hint, box };
+}
+
+/** The sun's disc wholly under the banner's panel (a phone's banner of four to six lines covered it). */
+async function expectSunClear(p: GamePage): Promise<void> {
+  const { sun, panel } = await p.page.evaluate(() => {
+    const w = window.game as unknown as { sunAt(): number[]; bannerPanel(): { panel: number[] } | null };
+    return { sun: w.sunAt(), panel: w.bannerPanel()!.panel };
+  });
+  expect(sun[1]! - sun[2]!, JSON.stringify({ sun, panel })).toBeGreaterThan(panel[3]!);
 }
 
 /**
@@ -1081,6 +1092,25 @@ describe('catapult', () => {
       return a.dots > 0 && a.power > 0.3 ? a : null;
     }, null);
     const castle = await d.page.evaluate(() => (window.game as unknown as W).level().castleMinX);
+    // The full and half pull's marks are arcs by the pull's end, each under 0.65 of a full pull across (a circle's 2)
+    // and clear of the banner's panel (whole circles, 760 px across, crossed the banner and the
+    // clouds); the aim's numbers at least 12 px from the canvas' left edge (at 4 px they read as
+    // jammed against the sidebar).
+    const marks = await d.page.evaluate(() => {
+      const w = window.game as unknown as { bannerPanel(): { panel: number[] }; aimLabelAt(): { box: { x: number } } };
+      const c = document.querySelector('canvas')!.getBoundingClientRect();
+      const arcs = ['aim-ring', 'aim-ring-half'].map((k) => {
+        const r = document.querySelector(`[data-hud="${k}"]`)!.getBoundingClientRect();
+        return [r.left - c.left, r.top - c.top, r.right - c.left, r.bottom - c.top];
+      });
+      return { arcs, panel: w.bannerPanel().panel, labelX: w.aimLabelAt().box.x };
+    });
+    for (const a of marks.arcs) {
+      expect(Math.hypot(a[2]! - a[0]!, a[3]! - a[1]!), JSON.stringify(marks)).toBeLessThan(0.65 * full);
+      const apart = a[2]! < marks.panel[0]! || a[0]! > marks.panel[2]! || a[3]! < marks.panel[1]! || a[1]! > marks.panel[3]!;
+      expect(apart, JSON.stringify(marks)).toBe(true);
+    }
+    expect(marks.labelX).toBeGreaterThanOrEqual(12);
     // Power 200 px / full pull (0.53 at 380 px), to 0.02; the angle 45 degrees, to 1 degree.
     expect(Math.abs(shown.power - len / full)).toBeLessThan(0.02);
     expect(shown.power).toBeLessThan(0.7);
@@ -1158,7 +1188,7 @@ describe('catapult', () => {
     await p.close();
   });
 
-  it('phone 390 x 844 (touch): upright the level opens on the castle, then frames the catapult large (a button shows the castle); sideways the whole field; the card saying how to play; no close-up; the pull is long and the release throws; played again, the camera follows the stone to a large tower, a drag from anywhere throws and the next-level (or try-again) button goes on', async () => {
+  it('phone 390 x 844 (touch): upright the level opens on the castle close, then frames the catapult and the whole castle (a button shows the castle close); sideways the whole field; the card saying how to play; no close-up; the pull is long and the release throws; played again, the camera follows the stone to a large tower, a drag from anywhere throws and the next-level (or try-again) button goes on', async () => {
     const p = await h.openGame('catapult', { query: { level: 1 }, viewport: { width: 390, height: 844 }, touch: true });
     // Before the first touch: the start view upright and sideways, and the card saying how to play.
     const { hint, box: sideways } = await phoneBeforeTouch(p);
@@ -1184,8 +1214,8 @@ describe('catapult', () => {
         };
       });
     const inside = (r: number[], W: number, H: number) => r[0]! >= 0 && r[1]! <= W && r[2]! >= 0 && r[3]! <= H;
-    // Before the first throw (the opening over) the view holds the catapult large and the castle's
-    // front (the look button shows the rest: phoneBeforeTouch), with no close-up repeating the castle.
+    // Before the first throw (the opening over) the view holds the catapult and the whole castle,
+    // with no close-up repeating the castle.
     type Close = { closeUp(): unknown };
     const rest = await where();
     const reachable = (f: typeof rest) => f.castle[0]! > f.catapult[1]! && f.castle[0]! < f.W && f.castle[2]! > 0;
@@ -1196,7 +1226,9 @@ describe('catapult', () => {
     // A full pull: 90 % of the phone's width (a drag across it; it was 165 px, then 280 px).
     expect(full).toBeGreaterThanOrEqual(0.9 * 390 - 1);
     const box = (await p.page.locator('canvas').boundingBox())!;
-    const start = { x: box.x + 0.7 * box.width, y: box.y + 0.4 * box.height };
+    // From the screen's middle: the finger ends by the catapult, where the aim's numbers go unless
+    // the band is there (a stranger's pull put its knob on them).
+    const start = { x: box.x + 0.49 * box.width, y: box.y + 0.53 * box.height };
     const cdp = await p.page.context().newCDPSession(p.page);
     const touch = (x: number, y: number) => [{ x, y, id: 1 }];
     await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: touch(start.x, start.y) });
@@ -1208,12 +1240,28 @@ describe('catapult', () => {
         type: 'touchMove',
         touchPoints: touch(start.x + ((end.x - start.x) * i) / 6, start.y + ((end.y - start.y) * i) / 6),
       });
-    // While the finger is down the catapult and the castle's front stay on the canvas, and no
-    // close-up shows (one sat under the pull's band and the arc's dots).
+    // While the finger is down the catapult and the whole castle stay on the canvas (a stranger aimed
+    // at a keep cut off at the edge), and no close-up shows (one sat under the pull's band and the
+    // arc's dots).
     await p.waitFor(() => (window.game as unknown as W).cameraSettled(), null);
     const aiming = await where();
     expect(inside(aiming.catapult, aiming.W, aiming.H)).toBe(true);
+    expect(inside(aiming.castle, aiming.W, aiming.H)).toBe(true);
     expect(reachable(aiming)).toBe(true);
+    // The aim's numbers and bar at least 9 px (the knob's radius) from the band, on 400 points of it,
+    // and on the canvas.
+    const label = await p.page.evaluate(() =>
+      (window.game as unknown as { aimLabelAt(): { box: { x: number; y: number; w: number; h: number }; band: number[] } }).aimLabelAt(),
+    );
+    const [bx0, by0, bx1, by1] = label.band as [number, number, number, number];
+    const { x: lx, y: ly, w: lw, h: lh } = label.box;
+    let gap = Number.POSITIVE_INFINITY;
+    for (let i = 0; i <= 400; i++) {
+      const [qx, qy] = [bx0 + ((bx1 - bx0) * i) / 400, by0 + ((by1 - by0) * i) / 400];
+      gap = Math.min(gap, Math.hypot(Math.max(lx - qx, 0, qx - lx - lw), Math.max(ly - qy, 0, qy - ly - lh)));
+    }
+    expect(gap, JSON.stringify(label)).toBeGreaterThanOrEqual(9);
+    expect([lx >= 0, ly >= 0, lx + lw <= aiming.W, ly + lh <= aiming.H], JSON.stringify(label)).toEqual([true, true, true, true]);
     expect(await p.page.evaluate(() => (window.game as unknown as Close).closeUp())).toBeNull();
     const shown = await p.page.evaluate(() => (window.game as unknown as W).aimShown());
     expect(Math.abs(shown.power - len / full)).toBeLessThan(0.02);
@@ -1256,12 +1304,22 @@ describe('catapult', () => {
     const c = 1 - panel!.alpha,
       lum = c <= 0.04045 ? c / 12.92 : ((c + 0.055) / 1.055) ** 2.4;
     expect(1.05 / (lum + 0.05)).toBeGreaterThanOrEqual(4.5);
-    // The level played again from its start, the camera at rest (on the opening overview): a stone followed to
-    // the tower, a drag from anywhere throws, the next-level (or try-again) button.
-    await p.page.evaluate(() => (window.game as unknown as CatapultGame).reset());
+    // The result in three lines at most (a line 1.17 x the type size and the outline 4 px: three
+    // 3.8 x, four 4.9 x; it was six) and the sun clear of it.
+    const result = await p.page.evaluate(() => (window.game as unknown as PhoneGame).bannerSize());
+    expect(result.height).toBeLessThan(4.5 * result.fontSize);
+    await expectSunClear(p);
+    // The level played again from its start, past its opening look at the castle (as a first touch
+    // ends it), the camera at rest on the aim view: a stone followed to the tower, a drag from
+    // anywhere throws, the next-level (or try-again) button.
+    await p.page.evaluate(() => {
+      const w = window.game as unknown as CatapultGame & { skipOpening(): void };
+      w.reset();
+      w.skipOpening();
+    });
     await p.waitFor(() => {
-      const w = window.game as unknown as W;
-      return !w.levelEnded() && w.shots().length === 0 && w.cameraSettled();
+      const w = window.game as unknown as W & { cameraShot(): string };
+      return !w.levelEnded() && w.shots().length === 0 && w.cameraShot() === 'aim' && w.cameraSettled();
     }, null);
     await phoneThrows(p, hint, sideways);
     // The menu drawer over the scene pauses the game (a stone flew and a castle fell under it), and

@@ -1,22 +1,33 @@
 /**
  * Catapult camera's decisions (games/catapult/camera.ts), headless: on an upright phone the level
- * opens on the overview, then frames the catapult large, follows a throw to the castle, and the look
- * button shows the castle while aiming; on a wide screen the aim view is the overview. The aim view's
- * width is checked against every level's castle (scene.ts) at 390 px.
+ * opens on the castle close, then frames the catapult and the whole castle, follows a throw to the
+ * castle, and the look button shows the castle close while aiming; on a wide screen the aim view is
+ * the overview. The upright views are checked against every level's castle (scene.ts) at 390 x 844.
  */
 
 import { createPhysicsWorld } from '@bitphysics/physics';
 import { describe, expect, it } from 'vitest';
-import { AIM_PX_PER_M, type CameraInput, cameraShot, INTRO_HOLD, uprightAimSpan } from '../../games/catapult/camera';
-import { buildLevel, LAUNCH, LEVEL_COUNT, worldOptions } from '../../games/catapult/scene';
+import {
+  type CameraInput,
+  cameraShot,
+  type Field,
+  INTRO_HOLD,
+  rockRight,
+  UPRIGHT_GROUND,
+  uprightAimView,
+  uprightCastleView,
+  uprightView,
+  type View,
+} from '../../games/catapult/camera';
+import { buildLevel, LEVEL_COUNT, ROCK, worldOptions } from '../../games/catapult/scene';
 
 /** A phone held upright, 3 s into a level, touched, nothing thrown. */
 const aiming: CameraInput = { upright: true, sinceStart: 3, touched: true, peeking: false, shotView: false, wreck: false, zoomsIn: true };
 
 describe('catapult camera', () => {
-  it('upright: the overview at the start until INTRO_HOLD or the first touch, then the aim view', () => {
-    expect(cameraShot({ ...aiming, sinceStart: 0, touched: false })).toBe('overview');
-    expect(cameraShot({ ...aiming, sinceStart: INTRO_HOLD - 0.01, touched: false })).toBe('overview');
+  it('upright: the castle close at the start until INTRO_HOLD or the first touch, then the aim view', () => {
+    expect(cameraShot({ ...aiming, sinceStart: 0, touched: false })).toBe('castle');
+    expect(cameraShot({ ...aiming, sinceStart: INTRO_HOLD - 0.01, touched: false })).toBe('castle');
     expect(cameraShot({ ...aiming, sinceStart: INTRO_HOLD + 0.01, touched: false })).toBe('aim');
     expect(cameraShot({ ...aiming, sinceStart: 0.1, touched: true })).toBe('aim');
     // The hold is "a moment": long enough to read the castle (a second), short of keeping the player waiting (3 s).
@@ -24,8 +35,8 @@ describe('catapult camera', () => {
     expect(INTRO_HOLD).toBeLessThanOrEqual(3);
   });
 
-  it('upright: the look button shows the overview while aiming; a throw is followed; a finished level shows the wreck', () => {
-    expect(cameraShot({ ...aiming, peeking: true })).toBe('overview');
+  it('upright: the look button shows the castle close while aiming; a throw is followed; a finished level shows the wreck', () => {
+    expect(cameraShot({ ...aiming, peeking: true })).toBe('castle');
     expect(cameraShot({ ...aiming, shotView: true })).toBe('follow');
     expect(cameraShot({ ...aiming, shotView: true, peeking: true })).toBe('follow');
     expect(cameraShot({ ...aiming, wreck: true })).toBe('castle');
@@ -41,32 +52,50 @@ describe('catapult camera', () => {
     expect(cameraShot({ ...wide, wreck: true, zoomsIn: false })).toBe('overview');
   });
 
-  it('the aim view on a 390 px phone: at least AIM_PX_PER_M on every level, the catapult in it, the whole overview where it fits', () => {
-    const left = LAUNCH.x - 3.2;
+  it('upright 390 x 844 on every level: the aim view holds the catapult and the whole castle under the banner; the castle view is closer', () => {
+    const [W, H] = [390, 844];
+    // Screen box (px: left, top, right, bottom) of the world box [x0, y0, x1, y1], m, in view v.
+    const onScreen = (v: View, x0: number, y0: number, x1: number, y1: number) => {
+      const k = W / (v.maxX - v.minX);
+      return [(x0 - v.minX) * k, (v.maxY - y1) * k, (x1 - v.minX) * k, (v.maxY - y0) * k];
+    };
+    const inside = (b: number[]) => b[0]! >= 0 && b[1]! >= 0 && b[2]! <= W && b[3]! <= H;
     for (let level = 0; level < LEVEL_COUNT; level++) {
       const w = createPhysicsWorld(worldOptions({ gravity: 9.81 }));
       const lv = buildLevel(w, { level, seed: 1, gravity: 9.81, jointStrength: 400 });
-      const far = lv.castleMaxX + 0.8;
-      const [minX, maxX] = uprightAimSpan(left, far, 390);
-      const perM = 390 / (maxX - minX);
-      // The scale, to a millionth: never under AIM_PX_PER_M; where the overview is as large, the overview.
-      expect(perM).toBeGreaterThanOrEqual(AIM_PX_PER_M * (1 - 1e-6));
-      if (390 / (far - left) >= AIM_PX_PER_M) expect([minX, maxX]).toEqual([left, far]);
-      else expect(perM).toBeCloseTo(AIM_PX_PER_M, 6);
-      // The catapult's arm (to 1.1 m past the launch point) and 3 m ahead of it for the flight's start.
-      expect(minX).toBe(left);
-      expect(maxX).toBeGreaterThan(LAUNCH.x + 4);
+      const f: Field = {
+        castleMinX: lv.castleMinX,
+        castleMaxX: lv.castleMaxX,
+        castleTop: lv.castleTop,
+        floor: Math.min(0, ...lv.terrain.map((t) => t.maxY)),
+      };
+      const aim = uprightAimView(f, W, H),
+        close = uprightCastleView(f, W, H);
+      const tag = `level ${level + 1}`;
+      // Fitted to the screen's aspect (to a millionth).
+      for (const v of [aim, close]) expect((v.maxY - v.minY) / (v.maxX - v.minX), tag).toBeCloseTo(H / W, 6);
+      // The catapult with its mound and its four stones (x -3.0 to 1.1 m, y 0 to 2 m; see look.ts and
+      // main.ts drawAmmo) and the whole castle from the lowest surface to its top: a stranger on a
+      // phone aimed at a keep cut off at the screen's edge.
+      const castle = onScreen(aim, f.castleMinX, f.floor, f.castleMaxX, f.castleTop);
+      expect(inside(onScreen(aim, -3.0, 0, 1.1, 2)), tag).toBe(true);
+      expect(inside(castle), tag).toBe(true);
+      // The castle's top under the banner (its four lines at 17 px type and panel: 16 + 4 x 1.3 x 17 + 6 = 110 px).
+      expect(castle[1], tag).toBeGreaterThan(110);
+      // The lowest surface UPRIGHT_GROUND of the way up (to a millionth of a pixel).
+      expect(onScreen(aim, 0, f.floor, 1, f.floor)[3]!, tag).toBeCloseTo((1 - UPRIGHT_GROUND) * H, 6);
+      // The castle's view: the castle and the rock whole, and at least 1.25 x the aim view's pixels a
+      // metre (the opening look and the look button show the target larger than the aim view does).
+      expect(inside(onScreen(close, f.castleMinX, f.floor, rockRight(f.castleMaxX), Math.max(f.castleTop, 2 * ROCK.hy))), tag).toBe(true);
+      expect(close.maxX - close.minX, tag).toBeLessThan((aim.maxX - aim.minX) / 1.25);
     }
-    // Level 9's whole field at 390 px is about half that scale: the reason for the aim view.
-    const w = createPhysicsWorld(worldOptions({ gravity: 9.81 }));
-    const last = buildLevel(w, { level: LEVEL_COUNT - 1, seed: 1, gravity: 9.81, jointStrength: 400 });
-    expect(390 / (last.castleMaxX + 0.8 - left)).toBeLessThan(0.6 * AIM_PX_PER_M);
   });
 
   it('rejects bad input, naming the function and the value', () => {
     expect(() => cameraShot({ ...aiming, sinceStart: -1 })).toThrow(/cameraShot: sinceStart .* got -1/);
     expect(() => cameraShot({ ...aiming, sinceStart: Number.NaN })).toThrow(/cameraShot: sinceStart .* got NaN/);
-    expect(() => uprightAimSpan(0, 10, 0)).toThrow(/uprightAimSpan: width .* got 0/);
-    expect(() => uprightAimSpan(5, 5, 390)).toThrow(/uprightAimSpan: overviewMaxX .* got 5/);
+    const f: Field = { castleMinX: 10, castleMaxX: 14, castleTop: 3, floor: 0 };
+    expect(() => uprightView(f, 5, 5, 390, 844)).toThrow(/uprightView: maxX .* got 5/);
+    expect(() => uprightView(f, 0, 10, 0, 844)).toThrow(/uprightView: the screen .* got 0 x 844/);
   });
 });
