@@ -11,7 +11,12 @@
 // - cpu: the process's CPU time (process.cpuUsage), which adds those background threads;
 // - wall: the step's wall time (on a loaded machine mostly waiting for a core).
 // Then the sums over the steps and, with --deopts, the functions V8 threw back to the interpreter in
-// those steps (--trace-deopt), with the number of runs in which each did.
+// those steps (--trace-deopt-verbose), with V8's reason, the number of runs in which each did, and the
+// code where it did: line:column in the bundle and the text there (the innermost function first when
+// the deoptimising code had inlined it: `inner < outer`). "Insufficient type feedback" means the code
+// there had never run when V8 compiled the function (a branch first taken then, or loads run before the
+// function had a feedback vector); "wrong map", "not a Smi", "lost precision or NaN" mean a value of
+// another shape or kind than every one seen before.
 //
 // With a git revision `rev`, the same scene is also built from `rev` (checked out into a temporary
 // worktree), the runs alternate between the two, and each line also shows rev's medians and the
@@ -83,6 +88,21 @@ console.log('=== hash');
 console.log(JSON.stringify({ main, proc, wall, hash: M.stateHash(w) }));
 `;
 
+/**
+ * Where a deoptimisation happened, from V8's `<file:line:column>, <file:line:column>...` (innermost
+ * inlined function first) in `t`'s bundle: the positions, then the code around the first, `>>` before
+ * the operation that deoptimised.
+ */
+function deoptSite(t, positions) {
+  const at = [...positions.matchAll(/:(\d+):(\d+)>/g)].map((x) => [Number(x[1]), Number(x[2])]);
+  if (at.length === 0) return '(position cut off in the trace)';
+  t.lines ??= readFileSync(t.bundle, 'utf8').split('\n');
+  const [line, column] = at[0];
+  const code = t.lines[line - 1] ?? '',
+    i = column - 1; // V8's columns count from 1
+  return `${at.map((x) => x.join(':')).join(' < ')}: ${code.slice(Math.max(0, i - 30), i).trimStart()} >>${code.slice(i, i + 30).trimEnd()}`;
+}
+
 const temp = mkdtempSync(join(tmpdir(), 'bitphysics-first-steps-'));
 const child = join(temp, 'child.mjs');
 writeFileSync(child, CHILD);
@@ -104,23 +124,32 @@ try {
         process.execPath,
         [
           ...nodeFlags,
-          ...(values.deopts ? ['--trace-deopt'] : []),
+          ...(values.deopts ? ['--trace-deopt-verbose'] : []),
           child,
           JSON.stringify([t.bundle, values.scene, count ?? null, steps, seed, values['warm-up']]),
         ],
         { encoding: 'utf8', maxBuffer: 1 << 28 },
       );
       const lines = out.trimEnd().split('\n');
-      const result = JSON.parse(lines.at(-1));
+      // The result is the last line, but V8's verbose deopt trace may write the start of a line before it.
+      const last = lines.at(-1);
+      const result = JSON.parse(last.slice(Math.max(0, last.indexOf('{"'))));
       if (result.error) throw new Error(result.error);
       t.results.push(result);
-      let at = -1;
+      let at = -1,
+        pending = null;
       const seen = new Set();
       for (const line of lines) {
         const m = /^=== (?:step (\d+)|hash)/.exec(line);
         if (m) at = m[1] === undefined ? -1 : Number(m[1]);
+        // The position belongs to the bailout before; a trace line may be cut by the next one's start.
+        const where = /;;; deoptimize at ([^[]*)/.exec(line);
+        if (pending !== null && (where || line.startsWith('[bailout end'))) {
+          seen.add(where ? `${pending} at ${deoptSite(t, where[1])}` : pending);
+          pending = null;
+        }
         const d = /bailout \(kind: [^,]*, reason: ([^)]*)\): begin\. deoptimizing (?:0x[0-9a-f]+ )?<JSFunction ([^ >]*)/.exec(line);
-        if (d && at >= 0) seen.add(`step ${at}: ${d[2]} (${d[1]})`);
+        if (d) pending = at >= 0 ? `step ${at}: ${d[2]} (${d[1]})` : null;
       }
       for (const k of seen) t.deopts.set(k, (t.deopts.get(k) ?? 0) + 1);
     }

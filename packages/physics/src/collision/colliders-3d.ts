@@ -71,7 +71,13 @@ interface Scratch {
    */
   posed: Int32Array;
   poseKey: Float64Array;
-  /** The shape store whose pass last wrote the scratch (null before any), the shape edit count then, and its speculative distance, m. */
+  /**
+   * The shape store whose pass last wrote the scratch (null before any), the shape edit count then, and
+   * its speculative distance, m (NaN before any pass: a number that is not a whole one, so that V8 keeps
+   * the field a double from the start; a 0 there would be a small-integer field that the first pass's
+   * distance turns into a double, giving the scratch a new hidden class and throwing the compiled
+   * collider code that reads it back to the interpreter, "wrong map").
+   */
   poseOf: Shape3DStore | null;
   poseEdits: number;
   poseSpec: number;
@@ -104,7 +110,7 @@ export const scratch: Scratch = {
   poseKey: new Float64Array(0),
   poseOf: null,
   poseEdits: -1,
-  poseSpec: 0,
+  poseSpec: Number.NaN,
 };
 
 /** Numbers of a collider's entry in `scratch.poseKey`. */
