@@ -22,7 +22,7 @@
 import { ballPairs } from '../collision/broadphase/grid-pairs-kernel.js';
 import { ballContacts } from '../collision/narrowphase/balls-kernel.js';
 import { mortonBucketSort, mortonKeysHist, mortonScatter, treeForces, treeGather } from '../forces/barnes-hut/gather.js';
-import { treeMoments2, treeMoments3 } from '../forces/barnes-hut/moments.js';
+import { treeMoments } from '../forces/barnes-hut/moments.js';
 import { barnesHutWalk } from '../forces/barnes-hut/walk-kernel.js';
 import { centralForce } from '../forces/central.js';
 import { velocityDamping } from '../forces/drag.js';
@@ -72,8 +72,7 @@ export const KERNELS: readonly Kernel[] = /* @__PURE__ */ Object.freeze([
   ballPairs,
   ballContacts,
   mortonBucketSort,
-  treeMoments2,
-  treeMoments3,
+  treeMoments,
   mortonScatter,
   centralForce,
   attractors,

@@ -5,7 +5,7 @@ import type { ThreadPool } from '../../threads/pool.js';
 import * as BOX from './bounds.js';
 import * as TASK from './build-task.js';
 import { mortonBucketSort, mortonKeysHist, mortonScatter, sortDigitBits } from './gather.js';
-import { treeMoments2, treeMoments3 } from './moments.js';
+import { treeMoments } from './moments.js';
 import * as MOMENTS from './slots/moments.js';
 import * as SORT from './slots/morton-sort.js';
 import { type GravityTree, growBodies, growNodes, i32, LEAF_SIZE, MAX_DEPTH, MAX_PARTS, MIN_CELL_FRACTION } from './tree-store.js';
@@ -399,7 +399,7 @@ function growTasks(t: GravityTree, needed: number): void {
 }
 
 /**
- * Subtree ends (skip) and the moments of every node (kernels treeMoments2 and treeMoments3, moments.ts), children before parents.
+ * Subtree ends (skip) and the moments of every node (kernel treeMoments, moments.ts), children before parents.
  * With `pool` (shared tree arrays, at least MIN_NODES_PER_THREAD nodes a thread, and an adaptive
  * pool finding it faster), the tree is cut into its largest subtrees of at most 1 / (8 parts) of
  * the nodes, handed out to the threads in runs of about equal node counts, and the few nodes above
@@ -459,10 +459,10 @@ function treeMomentsAll(t: GravityTree, pool: ThreadPool | null): void {
   cut[parts] = nl;
   const P = t.momentParams;
   P[MOMENTS.ALONE] = 0;
-  const kernel = t.dims === 3 ? treeMoments3 : treeMoments2;
+  P[MOMENTS.DIMENSIONS] = t.dims;
   const A = momentArrays(t, t.momentLists[0]!, list, cut);
-  if (parts > 1) pool!.run('mutualGravitySystem (Barnes-Hut moments)', kernel, A, P, parts, null);
-  else kernel(A, P, null, 0, 1);
+  if (parts > 1) pool!.run('mutualGravitySystem (Barnes-Hut moments)', treeMoments, A, P, parts, null);
+  else treeMoments(A, P, null, 0, 1);
   if (ntop > 0) {
     // The nodes above the subtrees, deepest first (descending index: children before parents).
     const down = t.momentDown.length >= ntop ? t.momentDown : (t.momentDown = new Int32Array(2 * ntop));
@@ -471,7 +471,7 @@ function treeMomentsAll(t: GravityTree, pool: ThreadPool | null): void {
     cut1[0] = 0;
     cut1[1] = ntop;
     P[MOMENTS.ALONE] = 1;
-    kernel(momentArrays(t, t.momentLists[1]!, down, cut1), P, null, 0, 1);
+    treeMoments(momentArrays(t, t.momentLists[1]!, down, cut1), P, null, 0, 1);
   }
   if (adaptive) pool!.chooser.record(site, parts > 1, nowMs() - t0, nc);
 }

@@ -393,48 +393,45 @@ export function barnesHutWalk(A: KernelArray[], P: Float64Array, ids: Int32Array
           kyyz = L[l + L3.KYYZ]!,
           kyzz = L[l + L3.KYZZ]!,
           kzzz = L[l + L3.KZZZ]!;
-        if (leaf) {
-          for (let s = start[k]!, e = end[k]!; s < e; s++) {
-            const dx = X[s]! - cx,
-              dy = Y[s]! - cy,
-              dz = Z[s]! - cz;
-            const kdxx = kxxx * dx + kxxy * dy + kxxz * dz,
-              kdyy = kxyy * dx + kyyy * dy + kyyz * dz;
-            const kdzz = kxzz * dx + kyzz * dy + kzzz * dz,
-              kdxy = kxxy * dx + kxyy * dy + kxyz * dz;
-            const kdxz = kxxz * dx + kxyz * dy + kxzz * dz,
-              kdyz = kxyz * dx + kyyz * dy + kyzz * dz;
-            const gx = G * (L[offX + s]! + a0x + jxx * dx + jxy * dy + jxz * dz + 0.5 * (kdxx * dx + kdxy * dy + kdxz * dz));
-            const gy = G * (L[offY + s]! + a0y + jxy * dx + jyy * dy + jyz * dz + 0.5 * (kdxy * dx + kdyy * dy + kdyz * dz));
-            const gz = G * (L[offZ + s]! + a0z + jxz * dx + jyz * dy + jzz * dz + 0.5 * (kdxz * dx + kdyz * dy + kdzz * dz));
-            OX[s] = gx;
-            OY[s] = gy;
-            OZ[s] = gz;
+        // Leaf: the polynomial at each body j; cell: shifted to each child j holding slots of the part.
+        for (let j = leaf ? start[k]! : k + 1, jEnd = leaf ? end[k]! : sk; j < jEnd; j = leaf ? j + 1 : skip[j]!) {
+          if (!leaf && !(start[j]! < s1 && end[j]! > s0)) continue;
+          const oc = j * N3.STRIDE,
+            lc = j * L3.STRIDE;
+          const dx = (leaf ? X[j]! : F[oc + N3.CX]!) - cx,
+            dy = (leaf ? Y[j]! : F[oc + N3.CY]!) - cy,
+            dz = (leaf ? Z[j]! : F[oc + N3.CZ]!) - cz;
+          const kdxx = kxxx * dx + kxxy * dy + kxxz * dz,
+            kdyy = kxyy * dx + kyyy * dy + kyyz * dz;
+          const kdzz = kxzz * dx + kyzz * dy + kzzz * dz,
+            kdxy = kxxy * dx + kxyy * dy + kxyz * dz;
+          const kdxz = kxxz * dx + kxyz * dy + kxzz * dz,
+            kdyz = kxyz * dx + kyyz * dy + kyzz * dz;
+          // a = a0 + J d + K d d / 2, added to the body's direct sum or the child's a0.
+          const ax =
+            (leaf ? L[offX + j]! : L[lc + L3.A0X]!) + a0x + jxx * dx + jxy * dy + jxz * dz + 0.5 * (kdxx * dx + kdxy * dy + kdxz * dz);
+          const ay =
+            (leaf ? L[offY + j]! : L[lc + L3.A0Y]!) + a0y + jxy * dx + jyy * dy + jyz * dz + 0.5 * (kdxy * dx + kdyy * dy + kdyz * dz);
+          const az =
+            (leaf ? L[offZ + j]! : L[lc + L3.A0Z]!) + a0z + jxz * dx + jyz * dy + jzz * dz + 0.5 * (kdxz * dx + kdyz * dy + kdzz * dz);
+          if (leaf) {
+            const gx = G * ax,
+              gy = G * ay,
+              gz = G * az;
+            OX[j] = gx;
+            OY[j] = gy;
+            OZ[j] = gz;
             if (addForces) {
-              const e = ents[perm[s]!]!,
-                w = Mb[s]!;
+              const e = ents[perm[j]!]!,
+                w = Mb[j]!;
               FX[e] = FX[e]! + w * gx;
               FY[e] = FY[e]! + w * gy;
               FZ[e] = FZ[e]! + w * gz;
             }
-          }
-        } else {
-          for (let c = k + 1; c < sk; c = skip[c]!) {
-            if (!(start[c]! < s1 && end[c]! > s0)) continue;
-            const oc = c * N3.STRIDE,
-              lc = c * L3.STRIDE;
-            const dx = F[oc + N3.CX]! - cx,
-              dy = F[oc + N3.CY]! - cy,
-              dz = F[oc + N3.CZ]! - cz;
-            const kdxx = kxxx * dx + kxxy * dy + kxxz * dz,
-              kdyy = kxyy * dx + kyyy * dy + kyyz * dz;
-            const kdzz = kxzz * dx + kyzz * dy + kzzz * dz,
-              kdxy = kxxy * dx + kxyy * dy + kxyz * dz;
-            const kdxz = kxxz * dx + kxyz * dy + kxzz * dz,
-              kdyz = kxyz * dx + kyyz * dy + kyzz * dz;
-            L[lc + L3.A0X] = L[lc + L3.A0X]! + a0x + jxx * dx + jxy * dy + jxz * dz + 0.5 * (kdxx * dx + kdxy * dy + kdxz * dz);
-            L[lc + L3.A0Y] = L[lc + L3.A0Y]! + a0y + jxy * dx + jyy * dy + jyz * dz + 0.5 * (kdxy * dx + kdyy * dy + kdyz * dz);
-            L[lc + L3.A0Z] = L[lc + L3.A0Z]! + a0z + jxz * dx + jyz * dy + jzz * dz + 0.5 * (kdxz * dx + kdyz * dy + kdzz * dz);
+          } else {
+            L[lc + L3.A0X] = ax;
+            L[lc + L3.A0Y] = ay;
+            L[lc + L3.A0Z] = az;
             L[lc + L3.JXX] = L[lc + L3.JXX]! + jxx + kdxx;
             L[lc + L3.JYY] = L[lc + L3.JYY]! + jyy + kdyy;
             L[lc + L3.JZZ] = L[lc + L3.JZZ]! + jzz + kdzz;
@@ -463,59 +460,51 @@ export function barnesHutWalk(A: KernelArray[], P: Float64Array, ids: Int32Array
           h2 = L[l + L2.HXXYY]!,
           h3 = L[l + L2.HXYYY]!,
           h4 = L[l + L2.HYYYY]!;
-        if (leaf) {
-          for (let s = start[k]!, e = end[k]!; s < e; s++) {
-            const dx = X[s]! - cx,
-              dy = Y[s]! - cy;
-            // K1 = K + H d / 3, J1 = J + K1 d / 2, a = a0 + J1 d.
-            const k0 = kxxx + third * (h0 * dx + h1 * dy),
-              k1 = kxxy + third * (h1 * dx + h2 * dy);
-            const k2 = kxyy + third * (h2 * dx + h3 * dy),
-              k3 = kyyy + third * (h3 * dx + h4 * dy);
-            const j0 = jxx + 0.5 * (k0 * dx + k1 * dy),
-              j1 = jxy + 0.5 * (k1 * dx + k2 * dy),
-              j2 = jyy + 0.5 * (k2 * dx + k3 * dy);
-            const gx = G * (L[offX + s]! + a0x + j0 * dx + j1 * dy),
-              gy = G * (L[offY + s]! + a0y + j1 * dx + j2 * dy);
-            OX[s] = gx;
-            OY[s] = gy;
-            OZ[s] = 0;
+        // Leaf: the polynomial at each body j; cell: shifted to each child j holding slots of the part.
+        for (let j = leaf ? start[k]! : k + 1, jEnd = leaf ? end[k]! : sk; j < jEnd; j = leaf ? j + 1 : skip[j]!) {
+          if (!leaf && !(start[j]! < s1 && end[j]! > s0)) continue;
+          const oc = j * N2.STRIDE,
+            lc = j * L2.STRIDE;
+          const dx = (leaf ? X[j]! : F[oc + N2.CX]!) - cx,
+            dy = (leaf ? Y[j]! : F[oc + N2.CY]!) - cy;
+          // Hd, K1 = K + Hd / 3, J1 = J + K1 d / 2, a = a0 + J1 d (added to the body's direct sum or
+          // the child's a0); a child also gets K' = K + Hd, J' = J + (K + Hd / 2) d and H.
+          const hd0 = h0 * dx + h1 * dy,
+            hd1 = h1 * dx + h2 * dy,
+            hd2 = h2 * dx + h3 * dy,
+            hd3 = h3 * dx + h4 * dy;
+          const k0 = kxxx + third * hd0,
+            k1 = kxxy + third * hd1,
+            k2 = kxyy + third * hd2,
+            k3 = kyyy + third * hd3;
+          const j0 = jxx + 0.5 * (k0 * dx + k1 * dy),
+            j1 = jxy + 0.5 * (k1 * dx + k2 * dy),
+            j2 = jyy + 0.5 * (k2 * dx + k3 * dy);
+          const ax = (leaf ? L[offX + j]! : L[lc + L2.A0X]!) + a0x + j0 * dx + j1 * dy,
+            ay = (leaf ? L[offY + j]! : L[lc + L2.A0Y]!) + a0y + j1 * dx + j2 * dy;
+          if (leaf) {
+            const gx = G * ax,
+              gy = G * ay;
+            OX[j] = gx;
+            OY[j] = gy;
+            OZ[j] = 0;
             if (addForces) {
               // F += m g on the body's entity (no z: a 2D field has none).
-              const e = ents[perm[s]!]!,
-                w = Mb[s]!;
+              const e = ents[perm[j]!]!,
+                w = Mb[j]!;
               FX[e] = FX[e]! + w * gx;
               FY[e] = FY[e]! + w * gy;
             }
-          }
-        } else {
-          for (let c = k + 1; c < sk; c = skip[c]!) {
-            if (!(start[c]! < s1 && end[c]! > s0)) continue;
-            const oc = c * N2.STRIDE,
-              lc = c * L2.STRIDE;
-            const dx = F[oc + N2.CX]! - cx,
-              dy = F[oc + N2.CY]! - cy;
-            // Hd, then K' = K + Hd, J' = J + (K + Hd / 2) d, a0' = a0 + (J + (K + Hd / 3) d / 2) d.
-            const hd0 = h0 * dx + h1 * dy,
-              hd1 = h1 * dx + h2 * dy,
-              hd2 = h2 * dx + h3 * dy,
-              hd3 = h3 * dx + h4 * dy;
-            let k0 = kxxx + third * hd0,
-              k1 = kxxy + third * hd1,
-              k2 = kxyy + third * hd2,
-              k3 = kyyy + third * hd3;
-            const j0 = jxx + 0.5 * (k0 * dx + k1 * dy),
-              j1 = jxy + 0.5 * (k1 * dx + k2 * dy),
-              j2 = jyy + 0.5 * (k2 * dx + k3 * dy);
-            L[lc + L2.A0X] = L[lc + L2.A0X]! + a0x + j0 * dx + j1 * dy;
-            L[lc + L2.A0Y] = L[lc + L2.A0Y]! + a0y + j1 * dx + j2 * dy;
-            k0 = kxxx + 0.5 * hd0;
-            k1 = kxxy + 0.5 * hd1;
-            k2 = kxyy + 0.5 * hd2;
-            k3 = kyyy + 0.5 * hd3;
-            L[lc + L2.JXX] = L[lc + L2.JXX]! + jxx + k0 * dx + k1 * dy;
-            L[lc + L2.JXY] = L[lc + L2.JXY]! + jxy + k1 * dx + k2 * dy;
-            L[lc + L2.JYY] = L[lc + L2.JYY]! + jyy + k2 * dx + k3 * dy;
+          } else {
+            L[lc + L2.A0X] = ax;
+            L[lc + L2.A0Y] = ay;
+            const m0 = kxxx + 0.5 * hd0,
+              m1 = kxxy + 0.5 * hd1,
+              m2 = kxyy + 0.5 * hd2,
+              m3 = kyyy + 0.5 * hd3;
+            L[lc + L2.JXX] = L[lc + L2.JXX]! + jxx + m0 * dx + m1 * dy;
+            L[lc + L2.JXY] = L[lc + L2.JXY]! + jxy + m1 * dx + m2 * dy;
+            L[lc + L2.JYY] = L[lc + L2.JYY]! + jyy + m2 * dx + m3 * dy;
             L[lc + L2.KXXX] = L[lc + L2.KXXX]! + kxxx + hd0;
             L[lc + L2.KXXY] = L[lc + L2.KXXY]! + kxxy + hd1;
             L[lc + L2.KXYY] = L[lc + L2.KXYY]! + kxyy + hd2;

@@ -1,5 +1,5 @@
 /**
- * The argument slots of treeMoments2 and treeMoments3 (forces/barnes-hut/moments.ts), filled by
+ * The argument slots of treeMoments (forces/barnes-hut/moments.ts), filled by
  * treeMomentsAll (forces/barnes-hut/tree-build.ts): where each array sits in the kernel's `A` and each
  * number in its `P`, imported as `MOMENTS` (`A[MOMENTS.NODE]`) by the kernels and by their caller. A
  * module of numeric constants only, which every build folds into the code (threads/worker-source.ts).
@@ -36,5 +36,7 @@ export const CUT = 12;
 // P: the numbers.
 /** 0: each listed node's whole subtree, children before parents; 1: each listed node alone, in list order. */
 export const ALONE = 0;
+/** The tree's dimensions, 2 or 3 (the node layout: forces/barnes-hut/node-2d.ts or node-3d.ts). */
+export const DIMENSIONS = 1;
 /** Numbers in P. */
-export const PARAMS = 1;
+export const PARAMS = 2;
