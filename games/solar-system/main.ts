@@ -1896,7 +1896,7 @@ style.textContent = `
 /* The hint's line is kept (empty) when the hint is off, so pressing Hint does not move the stage. */
 .ss-status .ss-hint { color: #9fd3ff; font-style: italic; min-height: 1.4em; }
 .ss-pad button.ss-hint-button.ss-pulse { animation: ss-pulse 1.2s ease-in-out infinite; }
-.ss-arrival { position: absolute; z-index: 3; left: 0; right: 0; top: 38%; padding: 10px 0; text-align: center;
+.ss-arrival { position: absolute; z-index: 3; left: 0; right: 0; top: 4%; padding: 10px 0; text-align: center;
   background: radial-gradient(ellipse at center, rgba(2, 3, 8, 0.75), rgba(2, 3, 8, 0) 70%); font: 700 28px system-ui, sans-serif;
   color: #ffe066; text-shadow: 0 0 12px rgba(0, 0, 0, 0.9), 0 0 24px rgba(255, 224, 102, 0.5); animation: ss-rise 0.5s ease-out; }
 .ss-arrival .ss-arrival-stars { font-size: 44px; letter-spacing: 6px; }
@@ -2336,7 +2336,10 @@ let lastResult: { stars: number; score: ReturnType<typeof missionScore>; record:
 const CARD_DELAY_MS = 900;
 /** The same after an arrival, ms: the flash, then the stars earned over the scene. */
 const ARRIVAL_CARD_DELAY_MS = 1800;
-/** The arrival's banner over the scene ("Mars reached!" and the stars, popping in one by one) until the card shows. */
+/**
+ * The arrival's banner over the scene ("Mars reached!" and the stars, popping in one by one) until
+ * the card shows; near the top, clear of the Sun and its name at the view's centre.
+ */
 const arrivalBanner = document.createElement('div');
 arrivalBanner.dataset.hud = 'arrival-banner';
 arrivalBanner.className = 'ss-arrival';

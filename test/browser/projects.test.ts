@@ -431,9 +431,13 @@ describe('projects', () => {
       const state = (window.game as unknown as Flow).finishFlight();
       const banner = document.querySelector<HTMLElement>('[data-hud="arrival-banner"]')!;
       const card = document.querySelector<HTMLElement>('[data-hud="result-card"]')!;
-      return { state, banner: banner.hidden ? null : banner.textContent, card: card.hidden };
+      // The banner keeps clear of the Sun's name (it hid all but "Su").
+      const b = banner.getBoundingClientRect(),
+        sun = document.querySelector<HTMLElement>('[data-label="Sun"]')!.getBoundingClientRect();
+      const clear = b.bottom <= sun.top || b.top >= sun.bottom;
+      return { state, banner: banner.hidden ? null : banner.textContent, card: card.hidden, clear };
     });
-    expect(ended).toEqual({ state: 'arrived', banner: 'Mars reached!★★★', card: true });
+    expect(ended).toEqual({ state: 'arrived', banner: 'Mars reached!★★★', card: true, clear: true });
     const card = g.page.locator('[data-hud="result-card"]');
     await card.waitFor({ state: 'visible' });
     expect(await card.locator('h2').textContent()).toBe('Mars reached!');
