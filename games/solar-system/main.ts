@@ -1220,6 +1220,12 @@ function setLinePoints(line: Line, points: Float64Array, count: number): void {
 
 /** The camera looks along this, steep enough that the orbits read as near circles. */
 const VIEW_DIRECTION: [number, number, number] = [0.1, 1, 0.75];
+/**
+ * The camera's direction from the Sun on a portrait canvas: nearer top-down, so the ecliptic disc
+ * (which the width limits there) is drawn nearly round and fills the height, where the landscape
+ * tilt squashed it to a band in the upper middle with a quarter of empty stars below.
+ */
+const PORTRAIT_VIEW_DIRECTION: [number, number, number] = [0.05, 1, 0.3];
 type View = 'inner' | 'all' | 'mission';
 let view: View = 'mission';
 /** Radius of the framed view, scene units. */
@@ -1253,14 +1259,15 @@ let framedRadius: number | null = null;
 const ndcPoint = new Vector3();
 
 /**
- * Places the camera along VIEW_DIRECTION from the Sun at the least distance that keeps the whole
+ * Places the camera along VIEW_DIRECTION (PORTRAIT_VIEW_DIRECTION on a portrait canvas) from the Sun at the least distance that keeps the whole
  * ecliptic disc of `radius` scene units inside the view with a 6 % margin (bisection on the distance,
  * the disc's rim sampled every 10 degrees, a little above and below the plane).
  */
 function frameDisc(radius: number): void {
   framedRadius = radius;
   const camera = app.camera;
-  const dir = new Vector3(...VIEW_DIRECTION).normalize();
+  const portrait = app.canvas.clientHeight > app.canvas.clientWidth;
+  const dir = new Vector3(...(portrait ? PORTRAIT_VIEW_DIRECTION : VIEW_DIRECTION)).normalize();
   // Bisection between a distance too close and one far enough (a 50-degree view fits the disc
   // within 4 radii); the far plane lies beyond both, so every rim point is in front of it.
   let lo = radius * 0.05,
@@ -1884,7 +1891,7 @@ for (const type of ['pointerup', 'pointercancel'] as const)
 
 const style = document.createElement('style');
 style.textContent = `
-.ss-status { text-align: center; font: 13px/1.4 system-ui, sans-serif; color: #e8ecf1; padding: 6px 10px 4px; }
+.ss-status { box-sizing: border-box; text-align: center; font: 13px/1.4 system-ui, sans-serif; color: #e8ecf1; padding: 6px 10px 4px; }
 .ss-status .ss-goal { font-weight: 700; color: #ffe066; font-size: 14px; }
 .ss-status .ss-stars { color: #ffd166; letter-spacing: 1px; }
 .ss-status .ss-brief { color: #cfd8e6; font-size: 12px; min-height: 1.4em; }
@@ -1951,6 +1958,25 @@ dateText.className = 'ss-date';
 dateText.dataset.hud = 'date';
 status.append(goalLine, briefLine, planText, hintLine, dateText);
 pageLayout().status.append(status);
+
+/** The status's tallest height at this page width, px (0 until measured; a resize measures again). */
+let statusHeight = 0;
+/**
+ * Keeps the status at the tallest it has been at this width: aiming, flying and arrived show
+ * different lines, and a header that changed height moved the canvas (and the system) up and down
+ * under the player's eyes. The first layout, aiming, is the tallest, so the header rarely grows.
+ */
+function holdStatusHeight(): void {
+  const h = status.offsetHeight;
+  if (h <= statusHeight) return;
+  statusHeight = h;
+  status.style.minHeight = `${h}px`;
+}
+window.addEventListener('resize', () => {
+  statusHeight = 0;
+  status.style.minHeight = '';
+  holdStatusHeight();
+});
 
 const PAD = [
   { label: '↺', name: 'turn the launch left (←)', press: () => turn(-TURN_STEP) },
@@ -2315,6 +2341,7 @@ function updateStatus(force = false): void {
   hintLine.textContent = shownHint;
   status.classList.toggle('ss-hinting', shownHint !== '');
   dateText.textContent = dateLine;
+  holdStatusHeight();
   const aimingNow = phase === 'aim';
   setPadLabels(phase === 'flight' ? 'burn' : 'aim');
   for (let i = 0; i < 4; i++) pad.show(i, phase !== 'done');

@@ -175,6 +175,8 @@ describe('projects', () => {
     expect(await g.page.locator('[data-hud="plan"]').textContent()).toMatch(
       /^Day \d+ · \d\.\d\d AU to Mars · ✓ arrives on day \d+ · fuel 1\.00 km\/s$/,
     );
+    // The header keeps its height in flight (one line fewer than aiming moved the canvas 17 px).
+    expect(await stageHeight()).toBe(heightBefore);
     // ↑ is a burn along the motion: the fuel goes down by 0.05 km/s and the forecast follows it.
     await g.press('p');
     await g.press('ArrowUp');
