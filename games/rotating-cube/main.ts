@@ -128,8 +128,6 @@ import { ToGoMeter } from './to-go';
 const CLICK_SLOP = 5;
 /** Room mode: a push lands within this of its target, m, for a "perfect" (the pad's pop says so). */
 const PERFECT = 0.25;
-/** Room mode: the cube's centre height resting on a face, m (a push aims from there). */
-const REST_HEIGHT = 0.5;
 /** Length of the angular-velocity arrow at the starting spin (or at 1 rad/s if slower), m. */
 const ARROW_LENGTH = 1.6;
 
@@ -1145,11 +1143,16 @@ function aimRay(ndcX: number, ndcY: number): void {
   rayDir.set(ndcX, ndcY, 0.5).unproject(app.camera).sub(app.camera.position).normalize();
 }
 
-/** Where the camera's ray along `rayDir` falls to the height of the cube's centre, [x, z] m, or null (at or above the horizon). */
-function rayAtLevel(): [number, number] | null {
+/**
+ * Where the camera's ray along `rayDir` meets the floor (y = 0), [x, z] m, or null (at or above the
+ * horizon): the point under the pointer, where the pads and tiles are drawn. (Meeting the height of
+ * the cube's centre instead put the point 0.5 m / tan(elevation) nearer the camera than the floor
+ * under the pointer: a metre and more at the grazing angles near the back wall.)
+ */
+function rayAtFloor(): [number, number] | null {
   if (!(rayDir.y < -1e-6)) return null;
   const cam = app.camera.position;
-  const t = (REST_HEIGHT - cam.y) / rayDir.y;
+  const t = -cam.y / rayDir.y;
   return [cam.x + rayDir.x * t, cam.z + rayDir.z * t];
 }
 /** What a room click at a point does: a push of the cube at `speed` m/s along (dx, dz) (unit), aiming at (x, z). */
@@ -1194,9 +1197,9 @@ function aimAt(ndcX: number, ndcY: number): Push | null {
       hz = cz - hit.z;
     return Math.hypot(hx, hz) <= 0.1 ? flickAim(rayDir.x, rayDir.z) : flickAim(hx, hz);
   }
-  // The floor point: where the ray falls to the height of the cube's centre (so a click on the pad's
-  // drawing aims where the cube's centre should stop), kept inside the room.
-  const level = rayAtLevel();
+  // The floor point under the pointer (a click on the pad's drawing aims the cube's centre there),
+  // kept inside the room.
+  const level = rayAtFloor();
   if (level === null) return null;
   const inside = ROOM_HALF - 0.5;
   const [x, z] = snapToBed(Math.max(-inside, Math.min(inside, level[0])), Math.max(-inside, Math.min(inside, level[1])));
@@ -1232,11 +1235,11 @@ function flickAim(hx: number, hz: number): Push | null {
   return aim;
 }
 
-/** Where the ray through CSS pixel (clientX, clientY) meets the level of the cube's centre, [x, z] m, or null (at or above the horizon). */
+/** Where the ray through CSS pixel (clientX, clientY) meets the floor, [x, z] m, or null (at or above the horizon). */
 function levelPoint(clientX: number, clientY: number): [number, number] | null {
   app.toNdc(clientX, clientY, ndc);
   aimRay(ndc[0], ndc[1]);
-  return rayAtLevel();
+  return rayAtFloor();
 }
 
 /** Room mode, a finger's drag from the cube, CSS px (x0, y0) to (x1, y1): flicks the cube the way the finger went across the floor. */

@@ -2325,7 +2325,7 @@ function updateStatus(force = false): void {
           ? `launch window for ${m.target}: aim ahead of it`
           : 'time waits while you aim'
         : 'time stopped'
-      : `${rate < 10 ? rate.toFixed(1) : Math.round(rate)} days a second${waiting ? (windowNearness < NEAR_WINDOW_DAYS ? ` (waiting, near ${m.target}’s window: watch the dots)` : ' (waiting)') : ''}`;
+      : `${rate < 10 ? rate.toFixed(1) : Math.round(rate)} days a second${waiting ? (windowNearness < NEAR_WINDOW_DAYS ? ` (near ${m.target}’s window)` : ' (waiting)') : ''}`;
   const dateLine = `${date} · ${clock} · ${stars}`;
   const shownHint = hinting ? hintText : '';
   const brief = phase === 'aim' ? (performance.now() < aimNoteUntil ? aimNote : m.brief) : '';
