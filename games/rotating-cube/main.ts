@@ -84,6 +84,7 @@ import {
 import { cubeControls, TAP_SLOP, touchPress } from './controls';
 import { bedSnap } from './roll-puzzle';
 import { type RoundEndContent, roundEnd, starText } from './round-end';
+import { roundMovesText } from './round-moves';
 import {
   buildRotatingCube,
   CELL_REACH,
@@ -1434,18 +1435,6 @@ function updateBanner(): void {
 }
 
 /**
- * The moves made against the stars still in reach, for the status row: "moves 3 of 8 for ★★★" (on a
- * phone "moves 3/8 ★★★"; ★★★ takes par + PAR_SLACK[0] moves or fewer, ★★ par + PAR_SLACK[1]); past
- * both, "moves 24 ★☆☆".
- */
-function movesToStars(moves: number, par: number): string {
-  for (const [i, slack] of PAR_SLACK.entries())
-    if (moves <= par + slack)
-      return touch ? `moves ${moves}/${par + slack} ${stars(3 - i)}` : `moves ${moves} of ${par + slack} for ${stars(3 - i)}`;
-  return `moves ${moves} ${stars(1)}`;
-}
-
-/**
  * Room mode: moves on a pad past its par after which the status row shows a shortest way on from where
  * the cube rests (`routeHint`): a newcomer stuck on a bed still clears the round, and by then three
  * stars (par + PAR_SLACK[0] over the round) are out of reach.
@@ -1517,6 +1506,8 @@ function readToGo(): void {
   toGo.update(padMovePar(shell.world, e, layout, pads.pad));
 }
 
+/** The lit pad the status row last showed (-1 before any). */
+let statusPad = -1;
 /** Writes the status row: the mode's goal, its numbers (the key readout) and how to play. */
 function updateStatus(wx: number, wy: number, wz: number): void {
   // Flip mode's spin: |L| over the intermediate moment, steady while the box flips (|ω| swings).
@@ -1552,7 +1543,10 @@ function updateStatus(wx: number, wy: number, wz: number): void {
         goal: touch
           ? `To the glowing pad, ${want >= 0 ? `${name} on top` : 'any face up'} (${pads.pad + 1} of ${layout.pads.length})`
           : `Land the cube on the glowing pad${want >= 0 ? ` with ${name} on top` : ', any face up'} (${pads.pad + 1} of ${layout.pads.length})`,
-        numbers: `${toGo.text(touch) || 'moves left: …'} · ${movesToStars(pads.moves, par)}${touch ? '' : ` · ${time.toFixed(1)} s`}`,
+        // The lit pad's moves to go once counted (nothing before: "moves left: …" read as another count).
+        numbers: [toGo.text(touch), roundMovesText(pads.moves, par, touch), touch ? '' : `${time.toFixed(1)} s`]
+          .filter((part) => part !== '')
+          .join(' · '),
         hint,
       });
   } else if (params.mode === 'flip') {
@@ -1889,7 +1883,12 @@ function frame(): void {
     const angle = lw > 0 ? (Math.acos(Math.min(1, (L[0]! * wx + L[1]! * wy + L[2]! * wz) / lw)) * 180) / Math.PI : 0;
     lines[5]!.textContent = `angle between L and ω ${angle.toFixed(1)}°`;
   }
-  if (frames % 5 === 0) updateStatus(wx, wy, wz);
+  // Every 5th frame, and at once when a pad is reached (at a phone's few frames a second the row
+  // still named the reached pad while its pop said it was done).
+  if (frames % 5 === 0 || statusPad !== pads.pad) {
+    statusPad = pads.pad;
+    updateStatus(wx, wy, wz);
+  }
   drawSpinTarget();
   // On a phone the room's framing follows the camera (it eases into its view after a load, and the player orbits it).
   if (framingReady && tallStage() && params.mode === 'room') fitBesideDrawer();

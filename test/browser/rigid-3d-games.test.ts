@@ -742,6 +742,8 @@ describe('3D rigid-body games in headless Chromium', () => {
       }, null);
       expect(pop).toContain('Pad 1 of 5');
       await g.waitFor(() => document.querySelector('[data-hud="challenge"]')?.textContent?.includes('(2 of 5)') ?? false, null);
+      // The move count names the round (it sums the pads' moves), one move so far against par + 2.
+      expect(await g.page.locator('[data-hud="challenge"]').textContent()).toMatch(/round: 1 of \d+ moves for ★★★/);
       // A held: the cube rolls along the floor towards the screen's left (its centre drawn farther left).
       await waitCubeAtRest(g);
       const before = await cubeState(g);
