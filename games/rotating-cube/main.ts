@@ -906,7 +906,11 @@ body .bp-touch-hint { font-size: 13px; padding: 6px 10px; bottom: 6px; }
     if (arrows) arrows.textContent = 'roll the cube';
     const hide = (): void => {
       card.classList.add('bp-gone');
-      window.setTimeout(() => card.remove(), 700);
+      window.setTimeout(() => {
+        card.remove();
+        // The strip kept for the card goes to the room (the framing follows each frame).
+        touchCardSpace = TOUCH_CARD_GONE_SPACE;
+      }, 700);
     };
     (app.canvas.parentElement ?? document.body).addEventListener('pointerdown', hide, { capture: true, once: true });
     for (const bar of [dpad.element, extras.element]) bar.addEventListener('pointerdown', hide, { once: true });
@@ -1989,6 +1993,10 @@ const corner = new Vector3();
  */
 /** On a tall stage, the height kept clear of the room's floor above the stage's foot, CSS px: the touch card's (two lines). */
 const TOUCH_CARD_SPACE = 80;
+/** The same once the touch card is gone (the player's first touch), CSS px: the front wall's foot just above the buttons. */
+const TOUCH_CARD_GONE_SPACE = 8;
+/** The height kept clear now, CSS px: TOUCH_CARD_SPACE while the touch card shows, then TOUCH_CARD_GONE_SPACE (80 px of empty floor stayed above the buttons). */
+let touchCardSpace = TOUCH_CARD_SPACE;
 function fitBesideDrawer(): void {
   const cam = app.camera;
   cam.clearViewOffset();
@@ -2025,7 +2033,7 @@ function fitBesideDrawer(): void {
   } else {
     // The free part of the stage in normalised device y: [l, r] (below the net, above the touch card).
     const r = 1 - (2 * below) / c.height,
-      l = -1 + (2 * TOUCH_CARD_SPACE) / c.height;
+      l = -1 + (2 * touchCardSpace) / c.height;
     const k = Math.min(1, (0.98 * (r - l)) / (by - ay));
     const shift = (r + l) / 2 - (k * (ay + by)) / 2;
     cam.zoom = k;
