@@ -491,17 +491,20 @@ describe('projects', () => {
     expect(held.slow).toBeGreaterThan(1.4);
     expect(held.slow).toBeLessThan(3.6);
     await g.page.keyboard.up('w');
-    // The window itself (the test hook runs there) is 60 days after the slowing began, within a tick's days (2.7).
-    const atWindow = await g.page.evaluate(() => {
-      const w = window.game as unknown as { step(): void; waitForWindow(): void; world: { time: number } };
-      w.waitForWindow();
-      let last = Number.NaN;
-      for (let k = 0; k < 5000 && last !== w.world.time; k++) {
-        last = w.world.time;
-        w.step();
-      }
-      return w.world.time;
-    });
+    // The test hook runs time to the next window and stops there: the day it stopped at.
+    const runToWindow = () =>
+      g.page.evaluate(() => {
+        const w = window.game as unknown as { step(): void; waitForWindow(): void; world: { time: number } };
+        w.waitForWindow();
+        let last = Number.NaN;
+        for (let k = 0; k < 5000 && last !== w.world.time; k++) {
+          last = w.world.time;
+          w.step();
+        }
+        return w.world.time;
+      });
+    // The window itself is 60 days after the slowing began, within a tick's days (2.7).
+    const atWindow = await runToWindow();
     expect(Math.abs(atWindow - held.slowAt - 60)).toBeLessThan(4);
     const leadAngle = () =>
       g.page.evaluate(() => {
@@ -515,16 +518,7 @@ describe('projects', () => {
     await g.waitFor(() => /launch window for Venus/.test(document.querySelector('[data-hud="date"]')?.textContent ?? ''), null);
     // Waiting for the next window (the test hook) runs to the next one, a
     // synodic period on (583.9 days), at the same angle.
-    const nextWindow = await g.page.evaluate(() => {
-      const w = window.game as unknown as { step(): void; waitForWindow(): void; world: { time: number } };
-      w.waitForWindow();
-      let last = Number.NaN;
-      for (let k = 0; k < 5000 && last !== w.world.time; k++) {
-        last = w.world.time;
-        w.step();
-      }
-      return w.world.time;
-    });
+    const nextWindow = await runToWindow();
     expect(Math.abs(nextWindow - atWindow - 583.9)).toBeLessThan(25);
     const lead2 = wrap(await leadAngle());
     for (const lead of [lead1, lead2]) expect(Math.abs(Math.abs(lead) - 54)).toBeLessThan(6);
