@@ -1909,6 +1909,7 @@ style.textContent = `
 .ss-arrival .ss-arrival-stars { font-size: 44px; letter-spacing: 6px; }
 .ss-arrival .ss-arrival-stars span { display: inline-block; animation: ss-star-pop 0.45s ease-out backwards; }
 .ss-arrival .ss-arrival-stars span.off { color: #4a5568; }
+.ss-arrival.ss-low { top: auto; bottom: 4%; }
 @keyframes ss-rise { from { transform: translateY(20px); opacity: 0; } }
 @keyframes ss-star-pop { from { transform: scale(0.1) rotate(-40deg); opacity: 0; } 70% { transform: scale(1.4); } }
 @keyframes ss-pulse { 50% { box-shadow: 0 0 0 4px rgba(159, 211, 255, 0.55); } }
@@ -2365,7 +2366,8 @@ const CARD_DELAY_MS = 900;
 const ARRIVAL_CARD_DELAY_MS = 1800;
 /**
  * The arrival's banner over the scene ("Mars reached!" and the stars, popping in one by one) until
- * the card shows; near the top, clear of the Sun and its name at the view's centre.
+ * the card shows; near the top or the foot of the view (`placeArrivalBanner`), clear of the Sun and
+ * its name at the view's centre.
  */
 const arrivalBanner = document.createElement('div');
 arrivalBanner.dataset.hud = 'arrival-banner';
@@ -2407,6 +2409,30 @@ function put(parent: HTMLElement, tag: string, cls: string, text = ''): HTMLElem
   e.textContent = text;
   parent.append(e);
   return e;
+}
+
+/**
+ * Puts the arrival banner near the top of the view or near its foot, whichever covers fewer of the
+ * names shown (at the top it hid Jupiter's when Jupiter was there; in the middle, the Sun's).
+ */
+function placeArrivalBanner(): void {
+  const covered = (): number => {
+    // The banner spans the view's width; its words and stars, centred, about 440 px of it.
+    const b = arrivalBanner.getBoundingClientRect(),
+      mid = (b.left + b.right) / 2,
+      half = Math.min(b.width, 440) / 2;
+    let n = 0;
+    for (const el of Object.values(labels)) {
+      const r = el.getBoundingClientRect();
+      if (r.width > 0 && r.bottom > b.top && r.top < b.bottom && r.right > mid - half && r.left < mid + half) n++;
+    }
+    return n;
+  };
+  arrivalBanner.classList.remove('ss-low');
+  const high = covered();
+  if (high === 0) return;
+  arrivalBanner.classList.add('ss-low');
+  if (covered() >= high) arrivalBanner.classList.remove('ss-low');
 }
 
 /** Hides the result card (a new flight, a retry, another mission, or the ✕ to see the map). */
@@ -2532,6 +2558,7 @@ function showCard(f: Flight): void {
       if (i < lastResult.stars) window.setTimeout(() => sound.chime(880 * 1.26 ** i, 0.25), 300 + 250 * i);
     }
     arrivalBanner.hidden = false;
+    placeArrivalBanner();
   }
   cardTimer = window.setTimeout(
     () => {
