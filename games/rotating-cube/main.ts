@@ -84,6 +84,7 @@ import {
 import { cubeControls, TAP_SLOP, touchPress } from './controls';
 import { bedSnap } from './roll-puzzle';
 import { type RoundEndContent, roundEnd, starText } from './round-end';
+import { roundMovesText } from './round-moves';
 import {
   buildRotatingCube,
   CELL_REACH,
@@ -128,8 +129,6 @@ import { ToGoMeter } from './to-go';
 const CLICK_SLOP = 5;
 /** Room mode: a push lands within this of its target, m, for a "perfect" (the pad's pop says so). */
 const PERFECT = 0.25;
-/** Room mode: the cube's centre height resting on a face, m (a push aims from there). */
-const REST_HEIGHT = 0.5;
 /** Length of the angular-velocity arrow at the starting spin (or at 1 rad/s if slower), m. */
 const ARROW_LENGTH = 1.6;
 
@@ -907,7 +906,11 @@ body .bp-touch-hint { font-size: 13px; padding: 6px 10px; bottom: 6px; }
     if (arrows) arrows.textContent = 'roll the cube';
     const hide = (): void => {
       card.classList.add('bp-gone');
-      window.setTimeout(() => card.remove(), 700);
+      window.setTimeout(() => {
+        card.remove();
+        // The strip kept for the card goes to the room (the framing follows each frame).
+        touchCardSpace = TOUCH_CARD_GONE_SPACE;
+      }, 700);
     };
     (app.canvas.parentElement ?? document.body).addEventListener('pointerdown', hide, { capture: true, once: true });
     for (const bar of [dpad.element, extras.element]) bar.addEventListener('pointerdown', hide, { once: true });
@@ -1145,11 +1148,16 @@ function aimRay(ndcX: number, ndcY: number): void {
   rayDir.set(ndcX, ndcY, 0.5).unproject(app.camera).sub(app.camera.position).normalize();
 }
 
-/** Where the camera's ray along `rayDir` falls to the height of the cube's centre, [x, z] m, or null (at or above the horizon). */
-function rayAtLevel(): [number, number] | null {
+/**
+ * Where the camera's ray along `rayDir` meets the floor (y = 0), [x, z] m, or null (at or above the
+ * horizon): the point under the pointer, where the pads and tiles are drawn. (Meeting the height of
+ * the cube's centre instead put the point 0.5 m / tan(elevation) nearer the camera than the floor
+ * under the pointer: a metre and more at the grazing angles near the back wall.)
+ */
+function rayAtFloor(): [number, number] | null {
   if (!(rayDir.y < -1e-6)) return null;
   const cam = app.camera.position;
-  const t = (REST_HEIGHT - cam.y) / rayDir.y;
+  const t = -cam.y / rayDir.y;
   return [cam.x + rayDir.x * t, cam.z + rayDir.z * t];
 }
 /** What a room click at a point does: a push of the cube at `speed` m/s along (dx, dz) (unit), aiming at (x, z). */
@@ -1194,9 +1202,9 @@ function aimAt(ndcX: number, ndcY: number): Push | null {
       hz = cz - hit.z;
     return Math.hypot(hx, hz) <= 0.1 ? flickAim(rayDir.x, rayDir.z) : flickAim(hx, hz);
   }
-  // The floor point: where the ray falls to the height of the cube's centre (so a click on the pad's
-  // drawing aims where the cube's centre should stop), kept inside the room.
-  const level = rayAtLevel();
+  // The floor point under the pointer (a click on the pad's drawing aims the cube's centre there),
+  // kept inside the room.
+  const level = rayAtFloor();
   if (level === null) return null;
   const inside = ROOM_HALF - 0.5;
   const [x, z] = snapToBed(Math.max(-inside, Math.min(inside, level[0])), Math.max(-inside, Math.min(inside, level[1])));
@@ -1232,11 +1240,11 @@ function flickAim(hx: number, hz: number): Push | null {
   return aim;
 }
 
-/** Where the ray through CSS pixel (clientX, clientY) meets the level of the cube's centre, [x, z] m, or null (at or above the horizon). */
+/** Where the ray through CSS pixel (clientX, clientY) meets the floor, [x, z] m, or null (at or above the horizon). */
 function levelPoint(clientX: number, clientY: number): [number, number] | null {
   app.toNdc(clientX, clientY, ndc);
   aimRay(ndc[0], ndc[1]);
-  return rayAtLevel();
+  return rayAtFloor();
 }
 
 /** Room mode, a finger's drag from the cube, CSS px (x0, y0) to (x1, y1): flicks the cube the way the finger went across the floor. */
@@ -1431,18 +1439,6 @@ function updateBanner(): void {
 }
 
 /**
- * The moves made against the stars still in reach, for the status row: "moves 3 of 8 for ★★★" (on a
- * phone "moves 3/8 ★★★"; ★★★ takes par + PAR_SLACK[0] moves or fewer, ★★ par + PAR_SLACK[1]); past
- * both, "moves 24 ★☆☆".
- */
-function movesToStars(moves: number, par: number): string {
-  for (const [i, slack] of PAR_SLACK.entries())
-    if (moves <= par + slack)
-      return touch ? `moves ${moves}/${par + slack} ${stars(3 - i)}` : `moves ${moves} of ${par + slack} for ${stars(3 - i)}`;
-  return `moves ${moves} ${stars(1)}`;
-}
-
-/**
  * Room mode: moves on a pad past its par after which the status row shows a shortest way on from where
  * the cube rests (`routeHint`): a newcomer stuck on a bed still clears the round, and by then three
  * stars (par + PAR_SLACK[0] over the round) are out of reach.
@@ -1514,6 +1510,8 @@ function readToGo(): void {
   toGo.update(padMovePar(shell.world, e, layout, pads.pad));
 }
 
+/** The lit pad the status row last showed (-1 before any). */
+let statusPad = -1;
 /** Writes the status row: the mode's goal, its numbers (the key readout) and how to play. */
 function updateStatus(wx: number, wy: number, wz: number): void {
   // Flip mode's spin: |L| over the intermediate moment, steady while the box flips (|ω| swings).
@@ -1549,7 +1547,10 @@ function updateStatus(wx: number, wy: number, wz: number): void {
         goal: touch
           ? `To the glowing pad, ${want >= 0 ? `${name} on top` : 'any face up'} (${pads.pad + 1} of ${layout.pads.length})`
           : `Land the cube on the glowing pad${want >= 0 ? ` with ${name} on top` : ', any face up'} (${pads.pad + 1} of ${layout.pads.length})`,
-        numbers: `${toGo.text(touch) || 'moves left: …'} · ${movesToStars(pads.moves, par)}${touch ? '' : ` · ${time.toFixed(1)} s`}`,
+        // The lit pad's moves to go once counted (nothing before: "moves left: …" read as another count).
+        numbers: [toGo.text(touch), roundMovesText(pads.moves, par, touch), touch ? '' : `${time.toFixed(1)} s`]
+          .filter((part) => part !== '')
+          .join(' · '),
         hint,
       });
   } else if (params.mode === 'flip') {
@@ -1886,7 +1887,12 @@ function frame(): void {
     const angle = lw > 0 ? (Math.acos(Math.min(1, (L[0]! * wx + L[1]! * wy + L[2]! * wz) / lw)) * 180) / Math.PI : 0;
     lines[5]!.textContent = `angle between L and ω ${angle.toFixed(1)}°`;
   }
-  if (frames % 5 === 0) updateStatus(wx, wy, wz);
+  // Every 5th frame, and at once when a pad is reached (at a phone's few frames a second the row
+  // still named the reached pad while its pop said it was done).
+  if (frames % 5 === 0 || statusPad !== pads.pad) {
+    statusPad = pads.pad;
+    updateStatus(wx, wy, wz);
+  }
   drawSpinTarget();
   // On a phone the room's framing follows the camera (it eases into its view after a load, and the player orbits it).
   if (framingReady && tallStage() && params.mode === 'room') fitBesideDrawer();
@@ -1987,6 +1993,10 @@ const corner = new Vector3();
  */
 /** On a tall stage, the height kept clear of the room's floor above the stage's foot, CSS px: the touch card's (two lines). */
 const TOUCH_CARD_SPACE = 80;
+/** The same once the touch card is gone (the player's first touch), CSS px: the front wall's foot just above the buttons. */
+const TOUCH_CARD_GONE_SPACE = 8;
+/** The height kept clear now, CSS px: TOUCH_CARD_SPACE while the touch card shows, then TOUCH_CARD_GONE_SPACE (80 px of empty floor stayed above the buttons). */
+let touchCardSpace = TOUCH_CARD_SPACE;
 function fitBesideDrawer(): void {
   const cam = app.camera;
   cam.clearViewOffset();
@@ -2023,7 +2033,7 @@ function fitBesideDrawer(): void {
   } else {
     // The free part of the stage in normalised device y: [l, r] (below the net, above the touch card).
     const r = 1 - (2 * below) / c.height,
-      l = -1 + (2 * TOUCH_CARD_SPACE) / c.height;
+      l = -1 + (2 * touchCardSpace) / c.height;
     const k = Math.min(1, (0.98 * (r - l)) / (by - ay));
     const shift = (r + l) / 2 - (k * (ay + by)) / 2;
     cam.zoom = k;

@@ -259,7 +259,7 @@ export const START_SHORT = 0.05;
  * 0) until the forecast's path turns back `START_SHORT` of the orbit's size (and the ring) short of
  * the target's orbit at its nearest to the Earth's (its perihelion going out, its aphelion going
  * in; the orbit from the target's state now, two-body): it does not arrive, now or after any wait
- * (at the Hohmann speed it would at the launch window, so a tap of Wait then Space would win three
+ * (at the Hohmann speed it would at the launch window, so a wait to the window then Space would win three
  * stars with no aiming). `baseStep` as forecastLaunch's.
  */
 export function startAim(world: PhysicsWorld, handles: SolarSystemHandles, mission: Mission, baseStep: number): Aim {

@@ -22,8 +22,9 @@
  * speed plus the burns; 3 stars want a good moment) and a score (./missions.ts missionScore: cheap,
  * quick, and at the first launch) shown
  * on a result card with the best so far, every mission's stars and the next mission's brief.
- * Waiting lets the planets line up: a tap of Wait (W) runs time to the next launch window (the
- * Hohmann transfer's phase angle), held it runs time until the window. The Hint button (H) says
+ * Waiting lets the planets line up (./wait-pace.ts): held, Wait (W) runs time, slowing near a launch
+ * window (the Hohmann transfer's phase angle) but not stopping there, so the player picks the day
+ * by watching the dots meet; a tap runs 10 days on. The Hint button (H) says
  * how to read the map before a failed try, then which way to change the launch and what to watch
  * (./advice.ts finds the change), or in flight which burn arrives and how many presses it takes.
  *
@@ -37,7 +38,7 @@
  * of the mission's step (./missions.ts missionTimeStep: the chosen step, longer for the outer
  * planets), at most MAX_STEPS_PER_TICK of them (a faster rate then runs slower than asked).
  * Keys: ← → turn the launch, ↑ ↓ its speed (in flight: burns in / out, faster / slower), Space
- * launch, W wait (tap: to the next launch window; held: time runs, stopping there), H hint, Enter next mission or try again, T try again, [ ] slower / faster, D distances,
+ * launch, W wait (held: time runs, slow near a launch window; tap: 10 days on), H hint, Enter next mission or try again, T try again, [ ] slower / faster, D distances,
  * 1 2 3 views, E sizes, P pause, N single step, R reset (back to the last start: the first date, or
  * the last launch after a Try again).
  * URL: ?mission=1..7, ?verdict=1 (the verdict from the start), ?rate=days-per-second while aiming (0..400, default 0),
@@ -134,6 +135,7 @@ import {
   TARGET_TRACK,
 } from './missions';
 import { meetingPoint, pathDay } from './orbit-crossing';
+import { heldWaitRate, NEAR_WINDOW_DAYS, nextLaunchWindow, WAIT_TAP_DAYS } from './wait-pace';
 
 /** Scene units per display AU. */
 const UNITS_PER_AU = 10;
@@ -144,18 +146,9 @@ const STEPS = ['0.25', '1', '6', '24'] as const;
  * needs more runs slower than asked, the steps staying the forecast's.
  */
 const MAX_STEPS_PER_TICK = 128;
-/** Days per real second while Wait (W) is held: the aiming rate (if faster) times 4, at least this. */
-const WAIT_RATE = 40;
-/**
- * Held Wait speeds up with the days it has run: its rate grows by WAIT_RATE's worth every WAIT_RAMP
- * days waited, up to WAIT_MAX_GAIN times it. A tap nudges by days; a long hold crosses a year in a
- * few seconds (at a constant rate Venus's 300 days would take 30 s where frames come slowly).
- */
-const WAIT_RAMP = 20;
-const WAIT_MAX_GAIN = 4;
-/** Days per real second of a tapped Wait, which runs time to the next launch window and stops there. */
-const WINDOW_RATE = 160;
-/** A press of Wait (W or the button) shorter than this, ms, is a tap: time runs to the next launch window. */
+/** Days per real second of a tapped Wait (WAIT_TAP_DAYS on) or of a run to the launch window (the test hook). */
+const RUN_RATE = 160;
+/** A press of Wait (W or the button) shorter than this, ms, is a tap: time runs WAIT_TAP_DAYS on. */
 const WAIT_TAP_MS = 250;
 /**
  * Real time forecasting may take a frame, ms (in slices of FORECAST_SLICE steps), or a third of the
@@ -268,11 +261,10 @@ function targetDistance(): number {
 }
 
 /**
- * Days per real second now: the aiming rate (WAIT_RATE or 4 times it while Wait is held, ramping up to
- * WAIT_MAX_GAIN times that with the days waited; nothing once a held wait reached the launch window),
- * WINDOW_RATE while a tapped Wait runs to the window, a flight's rate (3 times it in the cruise far
- * from the target, 3 times that while held, at most 400; BURN_SLOW of it just after a burn), nothing
- * after a flight ends.
+ * Days per real second now: the aiming rate (./wait-pace.ts heldWaitRate while Wait is held:
+ * ramping up with the days waited, slow near a launch window), RUN_RATE while a tapped Wait runs
+ * its days, a flight's rate (3 times it in the cruise far from the target, 3 times that while held,
+ * at most 400; BURN_SLOW of it just after a burn), nothing after a flight ends.
  */
 function currentRate(): number {
   if (phase === 'done') return 0;
@@ -285,11 +277,10 @@ function currentRate(): number {
     const rate = waiting ? Math.min(400, 3 * cruise) : cruise;
     return performance.now() - lastBurn < BURN_SLOW_MS ? BURN_SLOW * rate : rate;
   }
-  if (!Number.isNaN(windowAt) && !waiting) return WINDOW_RATE;
-  if (waitHeldStopped) return 0;
+  if (!Number.isNaN(runTo) && !waiting) return RUN_RATE;
   if (!waiting) return params.rate;
   const waited = Number.isNaN(waitFrom) ? 0 : Math.max(0, shell.world.time - waitFrom);
-  return Math.max(WAIT_RATE, 4 * params.rate) * Math.min(WAIT_MAX_GAIN, 1 + waited / WAIT_RAMP);
+  return heldWaitRate(params.rate, waited, windowNearness);
 }
 
 /** The chosen step, days (the panel's "longest step"). */
@@ -301,27 +292,27 @@ const baseStep = (): number => Number(params.step) / 24;
  * next forecast too), at most MAX_STEPS_PER_TICK; during a flight the probe is checked after every step.
  */
 function stepWorld(world: PhysicsWorld): void {
-  // The wait's ramp counts from the first step with Wait held, while aiming; a held wait stops at
-  // the next launch window (windowAt) until Wait is let go.
-  if (!(waiting && phase === 'aim')) {
-    waitFrom = Number.NaN;
-    waitHeldStopped = false;
-  } else if (Number.isNaN(waitFrom)) {
-    waitFrom = world.time;
-    windowAt = world.time + nextWindowDays();
+  // The wait's ramp counts from the first step with Wait held, while aiming; held, it slows near
+  // a launch window (windowNearness) but never stops there: the player picks the day.
+  if (!(waiting && phase === 'aim')) waitFrom = Number.NaN;
+  else {
+    if (Number.isNaN(waitFrom)) waitFrom = world.time;
+    const w = launchWindow();
+    windowNearness = Math.min(w.next, w.period - w.next);
   }
-  if (phase !== 'aim') windowAt = Number.NaN;
+  if (phase !== 'aim') runTo = Number.NaN;
   const dt = flight && phase === 'flight' ? flight.dt : missionTimeStep(mission(), baseStep());
   carry += currentRate() * TICK;
-  if (phase === 'aim' && !Number.isNaN(windowAt)) {
-    carry = Math.min(carry, Math.max(0, windowAt - world.time));
-    // Within a step of the window: stop here (a whole step more would pass it).
-    if (windowAt - world.time < dt * (1 - 1e-9)) {
-      windowAt = Number.NaN;
+  if (phase === 'aim' && !Number.isNaN(runTo)) {
+    carry = Math.min(carry, Math.max(0, runTo - world.time));
+    // Within a step of the end: stop here (a whole step more would pass it).
+    if (runTo - world.time < dt * (1 - 1e-9)) {
+      runTo = Number.NaN;
       carry = 0;
-      if (waiting) waitHeldStopped = true;
-      atWindow = world.time;
-      sound.chime(988, 0.15);
+      if (runToWindow) {
+        atWindow = world.time;
+        sound.chime(988, 0.15);
+      }
       return;
     }
   }
@@ -393,13 +384,15 @@ let flightDaysPerSecond = 30;
 let waiting = false;
 /** World time, days, Wait began to be held while aiming (its ramp counts from there); NaN while it is not. */
 let waitFrom = Number.NaN;
-/** World time, days, of the launch window time runs to (a tapped Wait, or a held one stops there); NaN for none. */
-let windowAt = Number.NaN;
-/** Whether a held Wait reached the launch window: time stays there until Wait is let go. */
-let waitHeldStopped = false;
-/** World time, days, a wait last stopped at a launch window (NaN for none): the date line says so. */
+/** World time, days, a tapped Wait (or the test hook's run to the window) runs time to and stops at; NaN for none. */
+let runTo = Number.NaN;
+/** Whether runTo is a launch window (the hook's run): the date line then names it. */
+let runToWindow = false;
+/** Days from now to the nearest launch window, worked out each tick while Wait is held (Infinity otherwise). */
+let windowNearness = Number.POSITIVE_INFINITY;
+/** World time, days, a run last stopped at a launch window (NaN for none): the date line says so. */
 let atWindow = Number.NaN;
-/** performance.now() Wait was last pressed (a short press is a tap: to the next window). */
+/** performance.now() Wait was last pressed (a short press is a tap: WAIT_TAP_DAYS on). */
 let waitPressedAt = -Infinity;
 
 /** Presses Wait (W or the button): time runs while it is held. */
@@ -408,51 +401,36 @@ function pressWait(): void {
   waiting = true;
   waitPressedAt = performance.now();
 }
-/** Lets Wait go: after a tap (shorter than WAIT_TAP_MS) while aiming, time runs on to the next launch window. */
+/** Lets Wait go: after a tap (shorter than WAIT_TAP_MS) while aiming, time runs WAIT_TAP_DAYS on. */
 function releaseWait(): void {
   if (!waiting) return;
   waiting = false;
-  if (phase === 'aim' && performance.now() - waitPressedAt < WAIT_TAP_MS && !waitHeldStopped) waitForWindow();
+  windowNearness = Number.POSITIVE_INFINITY;
+  if (phase === 'aim' && performance.now() - waitPressedAt < WAIT_TAP_MS) {
+    runTo = shell.world.time + WAIT_TAP_DAYS;
+    runToWindow = false;
+  }
 }
-/** Runs time (WINDOW_RATE) to the next launch window of the mission's target and stops there. No effect unless aiming. */
+/**
+ * Runs time (RUN_RATE) to the next launch window of the mission's target and stops there (a window
+ * less than 2 days off counts as now: the next one). For tests and the console: the player's Wait
+ * never jumps to the window (./wait-pace.ts). No effect unless aiming.
+ */
 function waitForWindow(): void {
   if (phase !== 'aim') return;
-  windowAt = shell.world.time + nextWindowDays();
+  const w = launchWindow();
+  runTo = shell.world.time + (w.next < 2 ? w.next + w.period : w.next);
+  runToWindow = true;
 }
 
-/**
- * Days from now to the next launch window for the mission's target: when the target leads (or, for
- * an inner planet, trails) the Earth by the angle a Hohmann transfer needs (the target moves by its
- * mean motion over the transfer's half orbit), on circular orbits
- * in the ecliptic plane, each at its mean pace (its orbit's semi-major axis). A window less than 2 days off counts as now: the next one is given. Days > 0.
- */
-function nextWindowDays(): number {
+const windowNow = { next: 0, period: 0 };
+/** The next launch window for the mission's target now (./wait-pace.ts launchWindow); a shared object. */
+function launchWindow(): { next: number; period: number } {
   const world = shell.world;
-  const m = mission();
   const mu = world.laws.gravitationalConstant * world.components.Mass.value[slotOf(handles.bodies.Sun)]!;
   heliocentricState(world, handles, handles.bodies.Earth, earthHelio);
-  const ex = earthHelio[0]!,
-    ez = earthHelio[2]!;
-  // The sense the planets go round in the x-z plane (+1 where the angle atan2(z, x) grows).
-  const sense = Math.sign(ex * earthHelio[5]! - ez * earthHelio[3]!) || 1;
-  heliocentricState(world, handles, handles.bodies[m.target], state6);
-  // Each orbit's semi-major axis (vis-viva): its mean motion is the planet's average pace (the
-  // distance now would give the Earth's pace in January 2.6 % fast, the window 20 days late).
-  const semiMajor = (st: ArrayLike<number>): number =>
-    1 / (2 / Math.hypot(st[0]!, st[1]!, st[2]!) - (st[3]! ** 2 + st[4]! ** 2 + st[5]! ** 2) / mu);
-  const rE = semiMajor(earthHelio),
-    rT = semiMajor(state6);
-  const lead = sense * (Math.atan2(state6[2]!, state6[0]!) - Math.atan2(ez, ex));
-  const nE = Math.sqrt(mu / rE ** 3),
-    nT = Math.sqrt(mu / rT ** 3);
-  const a = (rE + rT) / 2;
-  const transfer = Math.PI * Math.sqrt(a ** 3 / mu);
-  const need = Math.PI - nT * transfer;
-  const rel = nT - nE;
-  const synodic = (2 * Math.PI) / Math.abs(rel);
-  let days = ((need - lead) / rel) % synodic;
-  if (days < 0) days += synodic;
-  return days < 2 ? days + synodic : days;
+  heliocentricState(world, handles, handles.bodies[mission().target], state6);
+  return nextLaunchWindow(earthHelio, state6, mu, windowNow);
 }
 /** The date a mission began, ms (the panel's restart goes back there). */
 let missionStartMs = startMs;
@@ -552,7 +530,7 @@ function startMission(index: number): void {
   aim.angle = v >= 0 ? 0 : 180;
   aim.speed = Math.min(MAX_SPEED, Math.round(Math.abs(v) * 10) / 10);
   // Missions 2 on start short of the target's orbit (./advice.ts startAim): the player has to aim
-  // (at the Hohmann speed, a tap of Wait to the launch window and Space won three stars).
+  // (at the Hohmann speed, a wait to the launch window and Space won three stars).
   if (missionIndex > 0) Object.assign(aim, startAim(shell.world, handles, m, baseStep()));
   // The first mission is a lesson in one change: the arrow points the way of an arriving course,
   // with the speed a little short of it (./advice.ts tutorialAim); the line shows it falling short
@@ -748,7 +726,7 @@ const game = await startThreeGame({
     { keys: '← →', action: 'turn the launch arrow; in flight, burn in / out', touch: 'bottom ↺ ↻ buttons' },
     { keys: '↑ ↓', action: 'launch speed; in flight, burn faster / slower', touch: '− + buttons' },
     { keys: 'Space', action: 'launch the probe', touch: 'Launch button' },
-    { keys: 'W', action: 'wait: tap for the next launch window; hold to run time', touch: 'Wait button' },
+    { keys: 'W', action: 'wait: hold to run time (slow near a launch window); tap for 10 days', touch: 'Wait button' },
     { keys: 'H', action: 'hint: what to try', touch: 'Hint button' },
     { keys: 'Click', action: 'aim the launch at a point', touch: 'Tap' },
   ],
@@ -1242,6 +1220,12 @@ function setLinePoints(line: Line, points: Float64Array, count: number): void {
 
 /** The camera looks along this, steep enough that the orbits read as near circles. */
 const VIEW_DIRECTION: [number, number, number] = [0.1, 1, 0.75];
+/**
+ * The camera's direction from the Sun on a portrait canvas: nearer top-down, so the ecliptic disc
+ * (which the width limits there) is drawn nearly round and fills the height, where the landscape
+ * tilt squashed it to a band in the upper middle with a quarter of empty stars below.
+ */
+const PORTRAIT_VIEW_DIRECTION: [number, number, number] = [0.05, 1, 0.3];
 type View = 'inner' | 'all' | 'mission';
 let view: View = 'mission';
 /** Radius of the framed view, scene units. */
@@ -1275,14 +1259,15 @@ let framedRadius: number | null = null;
 const ndcPoint = new Vector3();
 
 /**
- * Places the camera along VIEW_DIRECTION from the Sun at the least distance that keeps the whole
+ * Places the camera along VIEW_DIRECTION (PORTRAIT_VIEW_DIRECTION on a portrait canvas) from the Sun at the least distance that keeps the whole
  * ecliptic disc of `radius` scene units inside the view with a 6 % margin (bisection on the distance,
  * the disc's rim sampled every 10 degrees, a little above and below the plane).
  */
 function frameDisc(radius: number): void {
   framedRadius = radius;
   const camera = app.camera;
-  const dir = new Vector3(...VIEW_DIRECTION).normalize();
+  const portrait = app.canvas.clientHeight > app.canvas.clientWidth;
+  const dir = new Vector3(...(portrait ? PORTRAIT_VIEW_DIRECTION : VIEW_DIRECTION)).normalize();
   // Bisection between a distance too close and one far enough (a 50-degree view fits the disc
   // within 4 radii); the far plane lies beyond both, so every rim point is in front of it.
   let lo = radius * 0.05,
@@ -1906,7 +1891,7 @@ for (const type of ['pointerup', 'pointercancel'] as const)
 
 const style = document.createElement('style');
 style.textContent = `
-.ss-status { text-align: center; font: 13px/1.4 system-ui, sans-serif; color: #e8ecf1; padding: 6px 10px 4px; }
+.ss-status { box-sizing: border-box; text-align: center; font: 13px/1.4 system-ui, sans-serif; color: #e8ecf1; padding: 6px 10px 4px; }
 .ss-status .ss-goal { font-weight: 700; color: #ffe066; font-size: 14px; }
 .ss-status .ss-stars { color: #ffd166; letter-spacing: 1px; }
 .ss-status .ss-brief { color: #cfd8e6; font-size: 12px; min-height: 1.4em; }
@@ -1918,12 +1903,13 @@ style.textContent = `
 /* The hint's line is kept (empty) when the hint is off, so pressing Hint does not move the stage. */
 .ss-status .ss-hint { color: #9fd3ff; font-style: italic; min-height: 1.4em; }
 .ss-pad button.ss-hint-button.ss-pulse { animation: ss-pulse 1.2s ease-in-out infinite; }
-.ss-arrival { position: absolute; z-index: 3; left: 0; right: 0; top: 38%; padding: 10px 0; text-align: center;
+.ss-arrival { position: absolute; z-index: 3; left: 0; right: 0; top: 4%; padding: 10px 0; text-align: center;
   background: radial-gradient(ellipse at center, rgba(2, 3, 8, 0.75), rgba(2, 3, 8, 0) 70%); font: 700 28px system-ui, sans-serif;
   color: #ffe066; text-shadow: 0 0 12px rgba(0, 0, 0, 0.9), 0 0 24px rgba(255, 224, 102, 0.5); animation: ss-rise 0.5s ease-out; }
 .ss-arrival .ss-arrival-stars { font-size: 44px; letter-spacing: 6px; }
 .ss-arrival .ss-arrival-stars span { display: inline-block; animation: ss-star-pop 0.45s ease-out backwards; }
 .ss-arrival .ss-arrival-stars span.off { color: #4a5568; }
+.ss-arrival.ss-low { top: auto; bottom: 4%; }
 @keyframes ss-rise { from { transform: translateY(20px); opacity: 0; } }
 @keyframes ss-star-pop { from { transform: scale(0.1) rotate(-40deg); opacity: 0; } 70% { transform: scale(1.4); } }
 @keyframes ss-pulse { 50% { box-shadow: 0 0 0 4px rgba(159, 211, 255, 0.55); } }
@@ -1974,6 +1960,25 @@ dateText.dataset.hud = 'date';
 status.append(goalLine, briefLine, planText, hintLine, dateText);
 pageLayout().status.append(status);
 
+/** The status's tallest height at this page width, px (0 until measured; a resize measures again). */
+let statusHeight = 0;
+/**
+ * Keeps the status at the tallest it has been at this width: aiming, flying and arrived show
+ * different lines, and a header that changed height moved the canvas (and the system) up and down
+ * under the player's eyes. The first layout, aiming, is the tallest, so the header rarely grows.
+ */
+function holdStatusHeight(): void {
+  const h = status.offsetHeight;
+  if (h <= statusHeight) return;
+  statusHeight = h;
+  status.style.minHeight = `${h}px`;
+}
+window.addEventListener('resize', () => {
+  statusHeight = 0;
+  status.style.minHeight = '';
+  holdStatusHeight();
+});
+
 const PAD = [
   { label: '↺', name: 'turn the launch left (←)', press: () => turn(-TURN_STEP) },
   { label: '↻', name: 'turn the launch right (→)', press: () => turn(TURN_STEP) },
@@ -2018,7 +2023,7 @@ const pad = createButtonBar(
     { label: 'Launch', name: 'launch the probe (Space)', onTap: () => launch() },
     {
       label: 'Wait',
-      name: 'wait: tap for the next launch window, hold to run time (W)',
+      name: 'wait: hold to run time, tap for 10 days (W)',
       onPress: () => pressWait(),
       onRelease: () => releaseWait(),
     },
@@ -2075,7 +2080,7 @@ let shownStatus = '';
  * at this date the probe only draws away from it, so the launch date, not the speed, is the trouble.
  */
 function wrongDate(t: SolarSystemBody): string {
-  return `At this date the probe only gets farther from ${t}: wait for the launch window (${named('tap W', 'tap Wait')}), when ${t} is the right way ahead.`;
+  return `At this date the probe only gets farther from ${t}: hold ${named('W', 'Wait')} until ${t}’s dots end where the probe’s do (time slows near the launch window).`;
 }
 
 /** Whether the page is used by touch first (a phone): the hints name the buttons, not the keys. */
@@ -2141,7 +2146,7 @@ function hint(m: Mission): string {
     if (a.kind === 'wait' || a.kind === 'none')
       return forecast.closestAtLaunch
         ? wrongDate(t)
-        : `${ahead} Now it is in the wrong place: ${named('tap W', 'tap Wait')} for the next launch window, when ${t} is the right way ahead, then aim.`;
+        : `${ahead} Now it is in the wrong place: hold ${named('W', 'Wait')} until ${t}’s dots end where the probe’s do (time slows near the launch window), then aim.`;
   }
   if (phase === 'flight' && flight) {
     if (forecastKey !== wantedKey()) return hintText;
@@ -2321,7 +2326,7 @@ function updateStatus(force = false): void {
           ? `launch window for ${m.target}: aim ahead of it`
           : 'time waits while you aim'
         : 'time stopped'
-      : `${rate < 10 ? rate.toFixed(1) : Math.round(rate)} days a second${!Number.isNaN(windowAt) && !waiting ? ' to the next launch window' : waiting ? ' (waiting)' : ''}`;
+      : `${rate < 10 ? rate.toFixed(1) : Math.round(rate)} days a second${waiting ? (windowNearness < NEAR_WINDOW_DAYS ? ` (near ${m.target}’s window)` : ' (waiting)') : ''}`;
   const dateLine = `${date} · ${clock} · ${stars}`;
   const shownHint = hinting ? hintText : '';
   const brief = phase === 'aim' ? (performance.now() < aimNoteUntil ? aimNote : m.brief) : '';
@@ -2337,6 +2342,7 @@ function updateStatus(force = false): void {
   hintLine.textContent = shownHint;
   status.classList.toggle('ss-hinting', shownHint !== '');
   dateText.textContent = dateLine;
+  holdStatusHeight();
   const aimingNow = phase === 'aim';
   setPadLabels(phase === 'flight' ? 'burn' : 'aim');
   for (let i = 0; i < 4; i++) pad.show(i, phase !== 'done');
@@ -2358,7 +2364,11 @@ let lastResult: { stars: number; score: ReturnType<typeof missionScore>; record:
 const CARD_DELAY_MS = 900;
 /** The same after an arrival, ms: the flash, then the stars earned over the scene. */
 const ARRIVAL_CARD_DELAY_MS = 1800;
-/** The arrival's banner over the scene ("Mars reached!" and the stars, popping in one by one) until the card shows. */
+/**
+ * The arrival's banner over the scene ("Mars reached!" and the stars, popping in one by one) until
+ * the card shows; near the top or the foot of the view (`placeArrivalBanner`), clear of the Sun and
+ * its name at the view's centre.
+ */
 const arrivalBanner = document.createElement('div');
 arrivalBanner.dataset.hud = 'arrival-banner';
 arrivalBanner.className = 'ss-arrival';
@@ -2399,6 +2409,30 @@ function put(parent: HTMLElement, tag: string, cls: string, text = ''): HTMLElem
   e.textContent = text;
   parent.append(e);
   return e;
+}
+
+/**
+ * Puts the arrival banner near the top of the view or near its foot, whichever covers fewer of the
+ * names shown (at the top it hid Jupiter's when Jupiter was there; in the middle, the Sun's).
+ */
+function placeArrivalBanner(): void {
+  const covered = (): number => {
+    // The banner spans the view's width; its words and stars, centred, about 440 px of it.
+    const b = arrivalBanner.getBoundingClientRect(),
+      mid = (b.left + b.right) / 2,
+      half = Math.min(b.width, 440) / 2;
+    let n = 0;
+    for (const el of Object.values(labels)) {
+      const r = el.getBoundingClientRect();
+      if (r.width > 0 && r.bottom > b.top && r.top < b.bottom && r.right > mid - half && r.left < mid + half) n++;
+    }
+    return n;
+  };
+  arrivalBanner.classList.remove('ss-low');
+  const high = covered();
+  if (high === 0) return;
+  arrivalBanner.classList.add('ss-low');
+  if (covered() >= high) arrivalBanner.classList.remove('ss-low');
 }
 
 /** Hides the result card (a new flight, a retry, another mission, or the ✕ to see the map). */
@@ -2524,6 +2558,7 @@ function showCard(f: Flight): void {
       if (i < lastResult.stars) window.setTimeout(() => sound.chime(880 * 1.26 ** i, 0.25), 300 + 250 * i);
     }
     arrivalBanner.hidden = false;
+    placeArrivalBanner();
   }
   cardTimer = window.setTimeout(
     () => {
@@ -2639,7 +2674,7 @@ shell.expose({
   rate: () => ({ days: currentRate(), sinceBurn: performance.now() - lastBurn }),
   /** Sets the aiming rate, simulated days per real second, clamped to [0, 400]. */
   setRate,
-  /** Runs time to the next launch window and stops there (a tap of W or of the Wait button). */
+  /** Runs time to the next launch window and stops there (not the player's Wait, which never stops there). */
   waitForWindow,
   /** A body's heliocentric state now: position (AU) then velocity (AU/day), six numbers. */
   heliocentric: (name: SolarSystemBody): number[] => [...heliocentricState(shell.world, handles, handles.bodies[name])],

@@ -611,7 +611,7 @@ describe('phone controls', () => {
     expect(s0.time).toBeGreaterThan(1);
     expect(await read(g, 'challenge().padTime')).toBe(0);
     expect(await read(g, 'pop().count')).toBe(0);
-    const at = await stillPageOf(g, pad[0]!, 0.5, pad[1]!);
+    const at = await stillPageOf(g, pad[0]!, 0, pad[1]!);
     await g.page.touchscreen.tap(at.x, at.y);
     await g.waitFor(() => (window.game as unknown as { challenge(): { pad: number } }).challenge().pad === 1, null, 60_000);
     // The pop fades after about a second of the clock: the wait reads the count of pops shown (a

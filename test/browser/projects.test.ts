@@ -175,6 +175,8 @@ describe('projects', () => {
     expect(await g.page.locator('[data-hud="plan"]').textContent()).toMatch(
       /^Day \d+ · \d\.\d\d AU to Mars · ✓ arrives on day \d+ · fuel 1\.00 km\/s$/,
     );
+    // The header keeps its height in flight (one line fewer than aiming moved the canvas 17 px).
+    expect(await stageHeight()).toBe(heightBefore);
     // ↑ is a burn along the motion: the fuel goes down by 0.05 km/s and the forecast follows it.
     await g.press('p');
     await g.press('ArrowUp');
@@ -431,9 +433,13 @@ describe('projects', () => {
       const state = (window.game as unknown as Flow).finishFlight();
       const banner = document.querySelector<HTMLElement>('[data-hud="arrival-banner"]')!;
       const card = document.querySelector<HTMLElement>('[data-hud="result-card"]')!;
-      return { state, banner: banner.hidden ? null : banner.textContent, card: card.hidden };
+      // The banner keeps clear of the Sun's name (it hid all but "Su").
+      const b = banner.getBoundingClientRect(),
+        sun = document.querySelector<HTMLElement>('[data-label="Sun"]')!.getBoundingClientRect();
+      const clear = b.bottom <= sun.top || b.top >= sun.bottom;
+      return { state, banner: banner.hidden ? null : banner.textContent, card: card.hidden, clear };
     });
-    expect(ended).toEqual({ state: 'arrived', banner: 'Mars reached!★★★', card: true });
+    expect(ended).toEqual({ state: 'arrived', banner: 'Mars reached!★★★', card: true, clear: true });
     const card = g.page.locator('[data-hud="result-card"]');
     await card.waitFor({ state: 'visible' });
     expect(await card.locator('h2').textContent()).toBe('Mars reached!');
@@ -452,15 +458,15 @@ describe('projects', () => {
     const next = await g.page.evaluate(() => (window.game as unknown as Flow).mission());
     expect([next.number, next.target, next.phase]).toEqual([2, 'Venus', 'aim']);
     expect(await g.page.locator('[data-hud="goal"]').textContent()).toMatch(/^Mission 2\/7: fly to Venus · /);
-    // Wait held speeds up with the days it has run, to 4 times its start, and stops at the next
-    // launch window (holding it for 5 s ran two years, past the window). Stepped by hand: 10 ticks at
-    // the start, 10 after 100 days, then on until time stops.
+    // Wait held speeds up with the days it has run, to 4 times its start, slows to 15 days a second
+    // within 60 days of the next launch window and runs on past it (./wait-pace.ts: the player picks
+    // the day). Stepped by hand: 10 ticks at the start, 10 after 100 days, then on until it slows.
     await g.page.evaluate(() => {
       (window.game as unknown as { paused: boolean }).paused = true;
     });
     await g.page.keyboard.down('w');
     const held = await g.page.evaluate(() => {
-      const w = window.game as unknown as { step(): void; world: { time: number } };
+      const w = window.game as unknown as { step(): void; world: { time: number }; rate(): { days: number } };
       const ten = (): number => {
         const t = w.world.time;
         for (let k = 0; k < 10; k++) w.step();
@@ -470,12 +476,9 @@ describe('projects', () => {
       const t0 = w.world.time;
       for (let k = 0; k < 2000 && w.world.time - t0 < 100; k++) w.step();
       const later = ten();
-      let last = Number.NaN;
-      for (let k = 0; k < 5000 && last !== w.world.time; k++) {
-        last = w.world.time;
-        w.step();
-      }
-      return { first, later, stopped: w.world.time, after: ten() };
+      for (let k = 0; k < 5000 && w.rate().days > 15; k++) w.step();
+      const slowAt = w.world.time;
+      return { first, later, slowAt, slow: ten(), slowRate: w.rate().days };
     });
     // 40 days a second, 10 ticks of 1/60 s: 6.7 days, and a little more as the ramp starts (+1 day).
     expect(held.first).toBeGreaterThan(6);
@@ -483,12 +486,26 @@ describe('projects', () => {
     // 100 days on: 4 times it (the cap), 26.7 days, within a step (at most a day).
     expect(held.later).toBeGreaterThan(25.6);
     expect(held.later).toBeLessThan(27.8);
-    // Stopped at the window, still held: no more days run.
-    expect(held.after).toBe(0);
-    // At the window Venus trails the Earth by the angle a Hohmann transfer needs: it moves
-    // 360 x t_H / T_Venus while the probe flies half an ellipse (t_H = 146 days, T = 224.7 days),
-    // so it must be 180 - 234 = -54 degrees (54 behind). Worked out here from the planets' places,
-    // within 6 degrees (the window is reckoned on circular orbits).
+    // Near the window: 15 days a second, 2.5 days in 10 ticks (within a step), and not stopped.
+    expect(held.slowRate).toBe(15);
+    expect(held.slow).toBeGreaterThan(1.4);
+    expect(held.slow).toBeLessThan(3.6);
+    await g.page.keyboard.up('w');
+    // The test hook runs time to the next window and stops there: the day it stopped at.
+    const runToWindow = () =>
+      g.page.evaluate(() => {
+        const w = window.game as unknown as { step(): void; waitForWindow(): void; world: { time: number } };
+        w.waitForWindow();
+        let last = Number.NaN;
+        for (let k = 0; k < 5000 && last !== w.world.time; k++) {
+          last = w.world.time;
+          w.step();
+        }
+        return w.world.time;
+      });
+    // The window itself is 60 days after the slowing began, within a tick's days (2.7).
+    const atWindow = await runToWindow();
+    expect(Math.abs(atWindow - held.slowAt - 60)).toBeLessThan(4);
     const leadAngle = () =>
       g.page.evaluate(() => {
         const w = window.game as unknown as { heliocentric(name: string): number[] };
@@ -499,20 +516,10 @@ describe('projects', () => {
     const wrap = (a: number) => (((a * 180) / Math.PI + 540) % 360) - 180;
     const lead1 = wrap(await leadAngle());
     await g.waitFor(() => /launch window for Venus/.test(document.querySelector('[data-hud="date"]')?.textContent ?? ''), null);
-    await g.page.keyboard.up('w');
-    // Waiting for the next window (a tap of W, or the function it calls) runs to the next one, a
+    // Waiting for the next window (the test hook) runs to the next one, a
     // synodic period on (583.9 days), at the same angle.
-    const nextWindow = await g.page.evaluate(() => {
-      const w = window.game as unknown as { step(): void; waitForWindow(): void; world: { time: number } };
-      w.waitForWindow();
-      let last = Number.NaN;
-      for (let k = 0; k < 5000 && last !== w.world.time; k++) {
-        last = w.world.time;
-        w.step();
-      }
-      return w.world.time;
-    });
-    expect(Math.abs(nextWindow - held.stopped - 583.9)).toBeLessThan(25);
+    const nextWindow = await runToWindow();
+    expect(Math.abs(nextWindow - atWindow - 583.9)).toBeLessThan(25);
     const lead2 = wrap(await leadAngle());
     for (const lead of [lead1, lead2]) expect(Math.abs(Math.abs(lead) - 54)).toBeLessThan(6);
     expect(g.errors).toEqual([]);

@@ -719,11 +719,11 @@ describe('3D rigid-body games in headless Chromium', () => {
       // The round's clock waits for the first input (the cube landed over a second ago).
       expect(s0.time).toBeGreaterThan(1);
       expect(await g.page.evaluate(() => (window.game as unknown as { challenge(): { padTime: number } }).challenge().padTime)).toBe(0);
-      // The lit pad is more than a metre from where the cube landed: a click on its centre (drawn at the
-      // cube's centre height) pushes the cube there, and it comes to rest on it.
+      // The lit pad is more than a metre from where the cube landed: a click on its centre (drawn on the
+      // floor: the click picks the floor point under the pointer) pushes the cube there, and it comes to rest on it.
       expect(Math.hypot(pad[0]! - s0.x, pad[1]! - s0.z)).toBeGreaterThan(1);
       expect(await g.page.evaluate(() => (window.game as unknown as { pop(): { count: number } }).pop().count)).toBe(0);
-      const at = await stillPageOf(g, pad[0]!, 0.5, pad[1]!);
+      const at = await stillPageOf(g, pad[0]!, 0, pad[1]!);
       await g.page.mouse.click(at.x, at.y);
       const push = await g.page.evaluate(() =>
         (window.game as unknown as { lastPush(): { kind: string; x: number; z: number } | null }).lastPush(),
@@ -742,6 +742,8 @@ describe('3D rigid-body games in headless Chromium', () => {
       }, null);
       expect(pop).toContain('Pad 1 of 5');
       await g.waitFor(() => document.querySelector('[data-hud="challenge"]')?.textContent?.includes('(2 of 5)') ?? false, null);
+      // The move count names the round (it sums the pads' moves), one move so far against par + 2.
+      expect(await g.page.locator('[data-hud="challenge"]').textContent()).toMatch(/round: 1 of \d+ moves for ★★★/);
       // A held: the cube rolls along the floor towards the screen's left (its centre drawn farther left).
       await waitCubeAtRest(g);
       const before = await cubeState(g);

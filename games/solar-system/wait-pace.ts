@@ -1,0 +1,87 @@
+/**
+ * The pace of the solar system's Wait while aiming (W or the Wait button), DOM-free so Node tests
+ * check it. Waiting is how the player picks the launch day: the target's forecast dots move along
+ * its orbit as time runs, and the player lets go when they meet the probe's. Wait never stops at the
+ * launch window by itself (that gave the day away: a tap then Launch won with no judgement); held,
+ * it runs fast across the months between windows and slows near one, so a newcomer can let go on
+ * the right day; a tap runs a few days on, to fine-tune the day.
+ *
+ * Units: days of world time, days per real second.
+ */
+
+/** Days per real second while Wait is held at first: the aiming rate times 4 if that is faster. */
+export const WAIT_RATE = 40;
+
+/**
+ * Held Wait speeds up with the days it has run: its rate grows by WAIT_RATE's worth every WAIT_RAMP
+ * days waited, up to WAIT_MAX_GAIN times it, so a long hold crosses a year in a few seconds.
+ */
+export const WAIT_RAMP = 20;
+export const WAIT_MAX_GAIN = 4;
+
+/**
+ * Within this many days of a launch window (either side) a held Wait runs at no more than
+ * NEAR_WINDOW_RATE: Mars's arrival window at a near-Hohmann speed is about 50 days wide, 3 s at
+ * this pace, long enough to see the dots meet and let go.
+ */
+export const NEAR_WINDOW_DAYS = 60;
+export const NEAR_WINDOW_RATE = 15;
+
+/** Days a tap of Wait runs time on (about a fifth of Mars's arrival window: a fine adjustment). */
+export const WAIT_TAP_DAYS = 10;
+
+/**
+ * Days per real second of a held Wait. `aimingRate` the rate time runs at while aiming (days/s,
+ * >= 0), `waited` days since the hold began (>= 0), `fromWindow` days to the nearest launch
+ * window of the mission's target (>= 0; Infinity for none). @throws RangeError on a negative or
+ * NaN argument.
+ */
+export function heldWaitRate(aimingRate: number, waited: number, fromWindow: number): number {
+  for (const [name, x] of [
+    ['aimingRate', aimingRate],
+    ['waited', waited],
+    ['fromWindow', fromWindow],
+  ] as const)
+    if (!(x >= 0)) throw new RangeError(`heldWaitRate: ${name} must be >= 0, got ${x}`);
+  const ramped = Math.max(WAIT_RATE, 4 * aimingRate) * Math.min(WAIT_MAX_GAIN, 1 + waited / WAIT_RAMP);
+  return fromWindow < NEAR_WINDOW_DAYS ? Math.min(ramped, NEAR_WINDOW_RATE) : ramped;
+}
+
+/** When the next launch window comes: `next` days from now, in [0, period), and the synodic `period` between windows, days. */
+export interface LaunchWindow {
+  next: number;
+  period: number;
+}
+
+/**
+ * The next launch window from the Earth to a target planet: when the target leads (or, for an inner
+ * planet, trails) the Earth by the angle a Hohmann transfer needs, pi - n_T t_H, the target moving
+ * at its mean motion n_T over the transfer's half ellipse t_H = pi sqrt(a^3 / mu), a = (r_E + r_T) / 2
+ * (Curtis, Orbital Mechanics, sect. 6.3 and 8.2); on circular orbits in the ecliptic (x-z) plane,
+ * each at its mean pace (its orbit's semi-major axis from vis-viva: the distance now would give the
+ * Earth's pace in January 2.6 % fast, the window 20 days late). `earth`, `target`: heliocentric
+ * states (x, y, z AU, vx, vy, vz AU/day); `mu` the Sun's GM, AU^3/day^2 (> 0). Fills and returns `out`.
+ * @throws RangeError when mu is not > 0.
+ */
+export function nextLaunchWindow(earth: ArrayLike<number>, target: ArrayLike<number>, mu: number, out: LaunchWindow): LaunchWindow {
+  if (!(mu > 0)) throw new RangeError(`nextLaunchWindow: mu must be > 0, got ${mu}`);
+  const ex = earth[0]!,
+    ez = earth[2]!;
+  // The sense the planets go round in the x-z plane (+1 where the angle atan2(z, x) grows).
+  const sense = Math.sign(ex * earth[5]! - ez * earth[3]!) || 1;
+  const semiMajor = (st: ArrayLike<number>): number =>
+    1 / (2 / Math.hypot(st[0]!, st[1]!, st[2]!) - (st[3]! ** 2 + st[4]! ** 2 + st[5]! ** 2) / mu);
+  const rE = semiMajor(earth),
+    rT = semiMajor(target);
+  const lead = sense * (Math.atan2(target[2]!, target[0]!) - Math.atan2(ez, ex));
+  const nE = Math.sqrt(mu / rE ** 3),
+    nT = Math.sqrt(mu / rT ** 3);
+  const transfer = Math.PI * Math.sqrt(((rE + rT) / 2) ** 3 / mu);
+  const rel = nT - nE;
+  const period = (2 * Math.PI) / Math.abs(rel);
+  let days = ((Math.PI - nT * transfer - lead) / rel) % period;
+  if (days < 0) days += period;
+  out.next = days;
+  out.period = period;
+  return out;
+}

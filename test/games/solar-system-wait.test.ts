@@ -1,0 +1,76 @@
+/**
+ * The solar system's Wait (games/solar-system/wait-pace.ts): it must leave the launch day to the
+ * player (a tap then Launch, the recipe strangers used, rarely wins) yet keep the day findable (the
+ * days that arrive all lie where a held Wait runs slowly, seconds wide at that pace).
+ */
+import { createPhysicsWorld, slotOf } from '@bitphysics/physics';
+import { solarSystem } from '@bitphysics/projects';
+import { describe, expect, test } from 'vitest';
+import { tutorialAim } from '../../games/solar-system/advice';
+import { createFlightPlan, heliocentricState, MISSIONS, planFlightLater } from '../../games/solar-system/missions';
+import {
+  heldWaitRate,
+  NEAR_WINDOW_DAYS,
+  NEAR_WINDOW_RATE,
+  nextLaunchWindow,
+  WAIT_MAX_GAIN,
+  WAIT_RAMP,
+  WAIT_RATE,
+  WAIT_TAP_DAYS,
+} from '../../games/solar-system/wait-pace';
+
+describe('heldWaitRate', () => {
+  test('ramps from WAIT_RATE to WAIT_MAX_GAIN times it far from a window, capped near one', () => {
+    expect(heldWaitRate(0, 0, 400)).toBe(WAIT_RATE);
+    expect(heldWaitRate(0, WAIT_RAMP, 400)).toBe(2 * WAIT_RATE);
+    expect(heldWaitRate(0, 1e6, 400)).toBe(WAIT_MAX_GAIN * WAIT_RATE);
+    expect(heldWaitRate(20, 0, 400)).toBe(80);
+    expect(heldWaitRate(0, 1e6, NEAR_WINDOW_DAYS - 1)).toBe(NEAR_WINDOW_RATE);
+    expect(heldWaitRate(0, 1e6, NEAR_WINDOW_DAYS)).toBe(WAIT_MAX_GAIN * WAIT_RATE);
+    expect(() => heldWaitRate(0, -1, 0)).toThrow(/heldWaitRate: waited must be >= 0, got -1/);
+    expect(() => heldWaitRate(Number.NaN, 0, 0)).toThrow(/aimingRate/);
+  });
+});
+
+describe('the launch day is the player’s judgement, findable by watching', () => {
+  const options = { stepHours: 1, integrator: 'rk4' as const, date: '2012-01-01T00:00:00Z' };
+  const world = createPhysicsWorld(solarSystem.worldOptions(options));
+  const handles = solarSystem.build(world, options);
+  const mu = world.laws.gravitationalConstant * world.components.Mass.value[slotOf(handles.bodies.Sun)]!;
+  const plan = createFlightPlan();
+
+  // Missions 1 (Mars) and 2 (Venus), each at the speed the first mission's lesson steers to and at
+  // 0.3 km/s more: the days (of the next 900) whose launch the Kepler plan calls a hit.
+  const m1 = MISSIONS[0]!;
+  const lesson = tutorialAim(world, handles, m1, 1 / 24);
+  const cases = [
+    { mission: m1, aim: lesson!.hit },
+    { mission: m1, aim: { angle: lesson!.hit.angle, speed: lesson!.hit.speed + 0.3 } },
+    { mission: MISSIONS[1]!, aim: { angle: 180, speed: 2.6 } },
+    { mission: MISSIONS[1]!, aim: { angle: 180, speed: 2.9 } },
+  ];
+  test.each(cases)('$mission.target at $aim.speed km/s', ({ mission, aim }) => {
+    const window = nextLaunchWindow(
+      [...heliocentricState(world, handles, handles.bodies.Earth)],
+      heliocentricState(world, handles, handles.bodies[mission.target]),
+      mu,
+      { next: 0, period: 0 },
+    );
+    // Synodic periods (Meeus, Astronomical Algorithms, table 36.A): Mars 779.9 d, Venus 583.9 d, within 1 %.
+    expect(window.period).toBeCloseTo(mission.target === 'Mars' ? 779.9 : 583.9, -1);
+    const hits: number[] = [];
+    for (let d = 0; d <= 900; d++) if (planFlightLater(world, handles, mission, aim, d, plan, 200).hit) hits.push(d);
+    // Some day arrives, and at the slow pace the player has at least 2 s to let go inside it.
+    expect(hits.length).toBeGreaterThanOrEqual(2 * NEAR_WINDOW_RATE);
+    // Every arriving day lies where a held Wait runs slowly (within NEAR_WINDOW_DAYS of a window).
+    for (const d of hits) {
+      const phase = (((d - window.next) % window.period) + window.period) % window.period;
+      const off = Math.min(phase, window.period - phase);
+      expect(off, `day ${d}`).toBeLessThan(NEAR_WINDOW_DAYS);
+    }
+    // The stranger's recipe (tap Wait, Launch) from any day of a synodic period: WAIT_TAP_DAYS on,
+    // it wins on under 10 % of the days (it won on all of them when a tap jumped to the window).
+    const share = hits.filter((d) => d >= WAIT_TAP_DAYS && d < WAIT_TAP_DAYS + window.period).length / window.period;
+    expect(share).toBeLessThan(0.1);
+  });
+});
