@@ -58,6 +58,7 @@ import {
   getSound,
   numberParam,
   pageLayout,
+  pauseUnderDrawers,
   seedParam,
 } from '@bitphysics/game-kit';
 import { startThreeGame } from '@bitphysics/game-kit/three';
@@ -131,6 +132,7 @@ import { clockText, finishCard, nextSeed } from './finish';
 import { labelClearOf, type ScreenBox } from './label-place';
 import { FRAME_CAP, STEPS_PER_FRAME, slowMotion } from './pacing';
 import { nearFade } from './ring-fade';
+import { offScreenLabel } from './ring-pointer';
 import { createScenery, HORIZON_COLOUR, SUN_DIRECTION } from './scenery';
 import { clearPulse, createPulse, type Pulse, pressPulse, pulseOn, releasePulse } from './tap-latch';
 
@@ -745,6 +747,8 @@ const game = await startThreeGame({
 });
 const { shell, renderer, app } = game;
 shellReady = true;
+// On a phone the menu and settings drawers cover the sky: the flight waits while one is open.
+pauseUnderDrawers(shell, { compactOnly: true });
 app.camera.near = 1;
 app.camera.far = 40_000;
 app.camera.updateProjectionMatrix();
@@ -1379,8 +1383,15 @@ function pointToNextRing(): void {
     const k = Math.min((w / 2 - 70) / Math.max(1e-6, Math.abs(dx)), (h / 2 - 24) / Math.max(1e-6, Math.abs(dy)));
     x = w / 2 + dx * k;
     y = h / 2 + dy * k;
-    const arrow = Math.abs(dx) * (h / 2) > Math.abs(dy) * (w / 2) ? (dx > 0 ? '▶' : '◀') : dy > 0 ? '▼' : '▲';
-    ringAim.text = dx > 0 && arrow === '▶' ? `ring ${i + 1} · ${distance} ${arrow}` : `${arrow} ring ${i + 1} · ${distance}`;
+    // Out of view: the label says which way the ring lies and how to turn to it (./ring-pointer.ts).
+    ringAim.text = offScreenLabel({ ring: i + 1, distance, dx, dy, halfW: w / 2, halfH: h / 2, behind: !ahead, touch: touchFirst }).text;
+  }
+  // Out of view, the label is the only sign of the ring: larger and edged, so it is not missed.
+  const lost = !ringAim.inView ? 'true' : 'false';
+  if (ringPointer.dataset.lost !== lost) {
+    ringPointer.dataset.lost = lost;
+    ringPointer.style.fontSize = ringAim.inView ? '' : '16px';
+    ringPointer.style.boxShadow = ringAim.inView ? '' : 'inset 0 0 0 2px #ffcf5a';
   }
   if (ringPointer.textContent !== ringAim.text) ringPointer.textContent = ringAim.text;
   [x, y] = keepInScene(x, y, w, bottom);

@@ -797,6 +797,8 @@ describe('projects', () => {
     expect(edge.box[1]!).toBeGreaterThanOrEqual(0);
     expect(edge.box[0]! + edge.box[2]!).toBeLessThanOrEqual(stage[0]!);
     expect(edge.box[1]! + edge.box[3]!).toBeLessThanOrEqual(stage[1]!);
+    // Turned left past it, the ring lies to the right: the label says to turn right and names the key.
+    expect(edge.text).toMatch(/^ring 1 · \d+(\.\d)? k?m · turn right \(hold →\) ▶$/);
     expect(g.errors).toEqual([]);
     await g.close();
   });
