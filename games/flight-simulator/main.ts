@@ -1402,7 +1402,21 @@ function pointToNextRing(): void {
     x = w / 2 + dx * k;
     y = h / 2 + dy * k;
     // Out of view: the label says which way the ring lies and how to turn to it (./ring-pointer.ts).
-    ringAim.text = offScreenLabel({ ring: i + 1, distance, dx, dy, halfW: w / 2, halfH: h / 2, behind: !ahead, touch: touchFirst }).text;
+    const V = shell.world.components.Velocity,
+      e = handles.body;
+    const { bearing, elevation } = ringBearing(ring, [at.x, at.y, at.z], [V.x[e]!, V.y[e]!, V.z[e]!]);
+    ringAim.text = offScreenLabel({
+      ring: i + 1,
+      distance,
+      dx,
+      dy,
+      halfW: w / 2,
+      halfH: h / 2,
+      behind: !ahead,
+      touch: touchFirst,
+      bearing,
+      elevation,
+    }).text;
   }
   // Out of view, the label is the only sign of the ring: larger and edged, so it is not missed.
   const lost = !ringAim.inView ? 'true' : 'false';

@@ -22,6 +22,13 @@ export interface OffScreenRing {
   halfH: number;
   /** Whether the ring is behind the camera. */
   behind: boolean;
+  /**
+   * The ring's bearing from the way the aircraft flies, rad, + to the right, in [-pi, pi], and its
+   * elevation above the flight path, rad, + above: what to do is read from these, not from the
+   * screen, whose up is the aircraft's in the cockpit view (banked, the screen's down is partly sideways).
+   */
+  bearing: number;
+  elevation: number;
   /** Whether the page is used by touch (the stick, not the keys, is named). */
   touch: boolean;
 }
@@ -33,24 +40,33 @@ export interface OffScreenLabel {
 }
 
 /**
- * The label of an out-of-view ring `r`: the arrow towards the edge its direction meets, and what to
- * do: "turn right" / "turn left" for a ring to the side or behind (a ring behind is always turned
- * to, never climbed to: the way back is a turn), "climb" / "dive" for one above or below ahead. On a
- * keyboard the key is named ("hold →").
- * @throws RangeError on a ring number that is not an integer >= 1, or a half size that is not finite and > 0.
+/** Bearing off the way flown, rad (15 degrees), from which an out-of-view ring is turned to rather than climbed or dived to. */
+export const TURN_BEARING = (15 * Math.PI) / 180;
+
+/**
+ * The label of an out-of-view ring `r`: the arrow towards the screen edge its direction meets (a
+ * ring behind: the side it lies, never up or down), and what to do, from its bearing and elevation:
+ * "turn right" / "turn left" when it lies behind or TURN_BEARING or more to the side (the way to it
+ * is a turn), else "climb" / "dive". On a keyboard the key is named ("hold →").
+ * @throws RangeError on a ring number that is not an integer >= 1, a half size that is not finite
+ * and > 0, or a bearing or elevation that is not finite.
  */
 export function offScreenLabel(r: OffScreenRing): OffScreenLabel {
   if (!(Number.isInteger(r.ring) && r.ring >= 1)) throw new RangeError(`offScreenLabel: ring must be an integer >= 1, got ${r.ring}`);
   if (!(r.halfW > 0 && r.halfH > 0 && Number.isFinite(r.halfW * r.halfH)))
     throw new RangeError(`offScreenLabel: halfW and halfH must be finite and > 0, got ${r.halfW}, ${r.halfH}`);
+  if (!(Number.isFinite(r.bearing) && Number.isFinite(r.elevation)))
+    throw new RangeError(`offScreenLabel: bearing and elevation must be finite (rad), got ${r.bearing}, ${r.elevation}`);
   const sideways = r.behind || Math.abs(r.dx) * r.halfH > Math.abs(r.dy) * r.halfW;
-  const name = `ring ${r.ring}${r.behind ? ' behind' : ''} · ${r.distance}`;
-  if (sideways) {
-    const right = r.dx >= 0;
-    const act = `turn ${right ? 'right' : 'left'}${r.touch ? '' : ` (hold ${right ? '→' : '←'})`}`;
-    return right ? { text: `${name} · ${act} ▶`, arrow: '▶' } : { text: `◀ ${name} · ${act}`, arrow: '◀' };
+  const arrow: OffScreenLabel['arrow'] = sideways ? (r.dx >= 0 ? '▶' : '◀') : r.dy < 0 ? '▲' : '▼';
+  let act: string;
+  if (r.behind || Math.abs(r.bearing) >= TURN_BEARING) {
+    const right = r.bearing >= 0;
+    act = `turn ${right ? 'right' : 'left'}${r.touch ? '' : ` (hold ${right ? '→' : '←'})`}`;
+  } else {
+    const up = r.elevation >= 0;
+    act = `${up ? 'climb' : 'dive'}${r.touch ? '' : ` (hold ${up ? '↑' : '↓'})`}`;
   }
-  const up = r.dy < 0;
-  const act = `${up ? 'climb' : 'dive'}${r.touch ? '' : ` (hold ${up ? '↑' : '↓'})`}`;
-  return up ? { text: `▲ ${name} · ${act}`, arrow: '▲' } : { text: `▼ ${name} · ${act}`, arrow: '▼' };
+  const text = `ring ${r.ring}${r.behind ? ' behind' : ''} · ${r.distance} · ${act}`;
+  return { text: arrow === '▶' ? `${text} ▶` : `${arrow} ${text}`, arrow };
 }

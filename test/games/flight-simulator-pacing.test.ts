@@ -13,7 +13,7 @@ import { describe, expect, it } from 'vitest';
 import { labelClearOf, type ScreenBox } from '../../games/flight-simulator/label-place';
 import { FLIGHT_STEP, FRAME_CAP, gameTimeOfFrame, SLOW_MOTION_FPS, STEPS_PER_FRAME, slowMotion } from '../../games/flight-simulator/pacing';
 import { NEAR_FADE, nearFade } from '../../games/flight-simulator/ring-fade';
-import { offScreenLabel } from '../../games/flight-simulator/ring-pointer';
+import { offScreenLabel, TURN_BEARING } from '../../games/flight-simulator/ring-pointer';
 import { clearPulse, createPulse, MIN_PULSE, pressPulse, pulseOn, releasePulse } from '../../games/flight-simulator/tap-latch';
 
 /** Runs the game loop with the flight's pacing for `frames` frames `frameMs` ms apart; returns the steps run. */
@@ -165,24 +165,37 @@ describe('the ring label keeps clear of the messages (label-place.ts)', () => {
 });
 
 describe('an out-of-view ring says how to turn to it (ring-pointer.ts)', () => {
-  // A desktop scene 1060 x 750 px (half 530 x 375).
-  const at = { ring: 8, distance: '637 m', halfW: 530, halfH: 375, behind: false, touch: false };
-  it('off the right edge: points right and names the turn and its key; on a phone the turn alone', () => {
+  // A desktop scene 1060 x 750 px (half 530 x 375); the ring 30 degrees right of the way flown, level.
+  const DEG = Math.PI / 180;
+  const at = { ring: 8, distance: '637 m', halfW: 530, halfH: 375, behind: false, touch: false, bearing: 30 * DEG, elevation: 0 };
+  it('to the side: the arrow at its edge, the turn and its key; on a phone the turn alone', () => {
     expect(offScreenLabel({ ...at, dx: 600, dy: 40 })).toEqual({ text: 'ring 8 · 637 m · turn right (hold →) ▶', arrow: '▶' });
     expect(offScreenLabel({ ...at, dx: 600, dy: 40, touch: true }).text).toBe('ring 8 · 637 m · turn right ▶');
-    expect(offScreenLabel({ ...at, dx: -600, dy: 40 })).toEqual({ text: '◀ ring 8 · 637 m · turn left (hold ←)', arrow: '◀' });
+    expect(offScreenLabel({ ...at, dx: -600, dy: 40, bearing: -30 * DEG })).toEqual({
+      text: '◀ ring 8 · 637 m · turn left (hold ←)',
+      arrow: '◀',
+    });
   });
-  it('above or below ahead: climb or dive; behind, even straight above the centre, a turn (the way back)', () => {
-    // 100 px right and 500 px up meets the top edge (500 / 375 > 100 / 530): climb.
-    expect(offScreenLabel({ ...at, dx: 100, dy: -500 })).toEqual({ text: '▲ ring 8 · 637 m · climb (hold ↑)', arrow: '▲' });
-    expect(offScreenLabel({ ...at, dx: 100, dy: 500, touch: true }).text).toBe('▼ ring 8 · 637 m · dive');
-    expect(offScreenLabel({ ...at, dx: -100, dy: -500, behind: true })).toEqual({
+  it('what to do follows the bearing, not the screen: a banked cockpit view shows a ring to the right below its edge', () => {
+    expect(offScreenLabel({ ...at, dx: 100, dy: 500 })).toEqual({ text: '▼ ring 8 · 637 m · turn right (hold →)', arrow: '▼' });
+    // Within TURN_BEARING of the way flown: climb or dive by the elevation.
+    expect(offScreenLabel({ ...at, dx: 100, dy: -500, bearing: 5 * DEG, elevation: 20 * DEG })).toEqual({
+      text: '▲ ring 8 · 637 m · climb (hold ↑)',
+      arrow: '▲',
+    });
+    expect(offScreenLabel({ ...at, dx: 100, dy: 500, bearing: -TURN_BEARING / 2, elevation: -0.3, touch: true }).text).toBe(
+      '▼ ring 8 · 637 m · dive',
+    );
+  });
+  it('behind, even straight above the centre: the side it lies and a turn (the way back)', () => {
+    expect(offScreenLabel({ ...at, dx: -100, dy: -500, behind: true, bearing: -170 * DEG })).toEqual({
       text: '◀ ring 8 behind · 637 m · turn left (hold ←)',
       arrow: '◀',
     });
   });
-  it('refuses a ring number under 1 and a scene of no size, naming the function', () => {
+  it('refuses a ring number under 1, a scene of no size and a bearing not finite, naming the function', () => {
     expect(() => offScreenLabel({ ...at, ring: 0, dx: 1, dy: 0 })).toThrow(/offScreenLabel: ring/);
     expect(() => offScreenLabel({ ...at, halfW: 0, dx: 1, dy: 0 })).toThrow(/offScreenLabel: halfW/);
+    expect(() => offScreenLabel({ ...at, bearing: Number.NaN, dx: 1, dy: 0 })).toThrow(/offScreenLabel: bearing/);
   });
 });
