@@ -243,7 +243,7 @@ describe('phone controls', () => {
     await g.page.touchscreen.tap(menu.x + menu.width / 2, menu.y + menu.height / 2);
     expect(await g.waitFor(() => (document.querySelector<HTMLElement>('.bp-app')?.dataset.open === 'info' ? true : null), null)).toBe(true);
     expect(await drawer()).toEqual({ open: 'info', paused: true });
-    const sky = (await g.page.locator('canvas').boundingBox())!;
+    const sky = (await g.page.locator('.bp-stage').boundingBox())!;
     await g.page.touchscreen.tap(sky.x + sky.width / 2, sky.y + sky.height - 20);
     expect(await drawer()).toEqual({ open: '', paused: false });
     expect(g.errors).toEqual([]);
