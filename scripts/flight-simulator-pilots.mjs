@@ -19,7 +19,8 @@
 // - `marker`: the same stranger steering by the game's flight-path marker (where the aircraft
 //   crosses the ring's plane if it lets go now) instead of the ring's bearing.
 // After a miss the course moves on as in the game (course.ts relayAfterMiss; env RELAY=0 flies
-// without it), and the time from each miss to the next ring passed is printed (median, max).
+// without it), a ring's first miss laying that ring ahead again for a second try (second-try.ts; env
+// SECOND=0 flies without), and the time from each miss to the next ring passed is printed (median, max).
 // Prints per seed and pilot the rings passed of 10 and each ring's status (P passed, m missed), then
 // each ring's turn (degrees) and change of height (m) for the default seed. Env PILOTS=keys,naive
 // flies only those; DEBUG=1 prints where each missed ring's plane was crossed.
@@ -33,6 +34,7 @@ const fs = await importSource(
   [
     "export * from './games/flight-simulator/course.ts';",
     "export * from './games/flight-simulator/assist.ts';",
+    "export * from './games/flight-simulator/second-try.ts';",
     "export { createPhysicsWorld, setBodyThrust, setControlDeflection, step } from '@bitphysics/physics';",
     "export { AIRCRAFT, aircraft, aircraftLevelDrag, terrainHeight } from '@bitphysics/projects';",
   ].join('\n'),
@@ -40,6 +42,8 @@ const fs = await importSource(
 const DEG = Math.PI / 180;
 /** Whether the course moves on after a miss (course.ts relayAfterMiss): env RELAY=0 flies the old rule. */
 const RELAY = process.env.RELAY !== '0';
+/** Whether a ring's first miss gives it a second try, laid ahead again (second-try.ts): env SECOND=0 flies without. */
+const SECOND = process.env.SECOND !== '0';
 /** Seconds from each miss to the next ring passed (Infinity: none passed after it, rings left), all pilots; a miss of the last ring is not counted. */
 const recoveries = [];
 const seeds = process.argv.slice(2).map(Number);
@@ -114,6 +118,7 @@ const fly = (seed, pilot) => {
   const history = [];
   const keys = { roll: 0, pitch: 0 };
   let missedAt = null;
+  const tried = new Set();
   let current = 0,
     since = 0,
     lastPath = 0;
@@ -171,21 +176,22 @@ const fly = (seed, pilot) => {
     fs.setBodyThrust(world, e, [c0.throttle * fs.AIRCRAFT.maxThrust, 0, 0]);
     const a = [P.x[e], P.y[e], P.z[e]];
     fs.step(world);
-    const events = fs.flyRings(rings, a, [P.x[e], P.y[e], P.z[e]]);
+    const raw = fs.flyRings(rings, a, [P.x[e], P.y[e], P.z[e]]);
+    const events = SECOND ? fs.secondTry(rings, raw, tried) : raw;
     for (const ev of events) {
-      if (ev.result === 'missed') missedAt ??= t;
+      if (ev.result !== 'passed') missedAt ??= t;
       else if (missedAt !== null) {
         recoveries.push(t - missedAt);
         missedAt = null;
       }
     }
     // After a miss the course moves on, as the game does (course.ts relayAfterMiss; env RELAY=0: the old rule, none).
-    if (RELAY && events.at(-1)?.result === 'missed') {
+    if (RELAY && raw.at(-1)?.result === 'missed') {
       const after = fs.flightState(world, e);
       fs.relayAfterMiss(rings, fs.nextRing(rings), [P.x[e], P.y[e], P.z[e]], after.heading, h.terrain);
     }
     for (const ev of events)
-      if (process.env.DEBUG && ev.result === 'missed') {
+      if (process.env.DEBUG && ev.result !== 'passed') {
         const r = rings[ev.ring];
         console.log(
           `  ring ${ev.ring + 1} missed at t ${t.toFixed(1)}: dx ${(P.x[e] - r.x).toFixed(0)} dy ${(P.y[e] - r.y).toFixed(0)} dz ${(P.z[e] - r.z).toFixed(0)} bank ${(s.bank / DEG).toFixed(0)} path ${(s.path / DEG).toFixed(1)}`,
@@ -194,6 +200,7 @@ const fly = (seed, pilot) => {
     if (P.y[e] < 0) break;
   }
   rings.reversals = keys.reversals ?? 0;
+  rings.tries = tried.size;
   // A miss with rings still ahead and none passed after it before the flight ended: never recovered.
   if (missedAt !== null && fs.nextRing(rings) >= 0) recoveries.push(Infinity);
   return rings;
@@ -202,17 +209,19 @@ const fly = (seed, pilot) => {
 /** The pilots to fly (env PILOTS, comma-separated; default all). */
 const only = process.env.PILOTS?.split(',');
 const totals = { scripted: 0, naive: 0, keys: 0, marker: 0 };
+const tries = { scripted: 0, naive: 0, keys: 0, marker: 0 };
 for (const seed of chosen)
   for (const [name, pilot] of Object.entries(pilots).filter(([name]) => !only || only.includes(name))) {
     const rings = fly(seed, pilot);
     const passed = rings.filter((r) => r.status === 'passed').length;
     totals[name] += passed;
+    tries[name] += rings.tries;
     console.log(
-      `seed ${seed} ${name.padEnd(8)} ${passed}/10  ${rings.map((r) => (r.status === 'passed' ? 'P' : r.status === 'missed' ? 'm' : '.')).join('')}${name === 'keys' ? `  bank reversals ${rings.reversals}` : ''}`,
+      `seed ${seed} ${name.padEnd(8)} ${passed}/10  ${rings.map((r) => (r.status === 'passed' ? 'P' : r.status === 'missed' ? 'm' : '.')).join('')}  second tries ${rings.tries}${name === 'keys' ? `  bank reversals ${rings.reversals}` : ''}`,
     );
   }
 for (const [name, n] of Object.entries(totals))
-  if (!only || only.includes(name)) console.log(`${name}: ${n} of ${10 * chosen.length} rings`);
+  if (!only || only.includes(name)) console.log(`${name}: ${n} of ${10 * chosen.length} rings, ${tries[name]} second tries`);
 {
   const sorted = [...recoveries].sort((p, q) => p - q);
   const median = sorted.length ? sorted[Math.floor((sorted.length - 1) / 2)] : NaN;

@@ -1238,10 +1238,7 @@ function ballUnder(x: number, y: number): number {
 }
 
 canvas.addEventListener('pointerdown', (event) => {
-  // On a small screen a drawer (the parameters, the controls) lies over the top of the box, where the
-  // hoop is: a press on the field closes it, so the game is played in full view.
-  const page = pageLayout();
-  if (page.compact() && page.root.dataset.open) page.open(null);
+  // (On a small screen a press on the field also closes an open drawer: game-kit's page layout.)
   if (grabbing || event.button !== 0 || pointerId !== -1 || drag.joint !== 0) return;
   // The clock is out and the round waits for its last throw: no new one.
   if (lastCall.aiming || lastCall.ball !== 0) return;

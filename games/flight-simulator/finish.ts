@@ -15,8 +15,10 @@ export interface CourseResult {
   /** Rings passed and the course's ring count (integers, 0 <= passed <= total, total >= 1). */
   passed: number;
   total: number;
-  /** Rings missed (integer >= 0). */
+  /** Rings missed for good (integer >= 0). */
   missed: number;
+  /** Rings missed once and flown again (./second-try.ts; integer >= 0, default 0): time, no star. */
+  again?: number;
   /** Time flown, s of game time (>= 0), without the misses' penalties. */
   flown: number;
   /** How the run compared with the best kept before it (./course.ts compareWithBest), and that best (null: none). */
@@ -49,7 +51,8 @@ export function clockText(t: number): string {
 
 /**
  * The finish card for `r` (see CourseResult): the course time is `flown` plus MISS_PENALTY s per
- * miss (./course.ts courseTime).
+ * miss, a second try's first miss included (./course.ts courseTime); the stars count the misses for
+ * good only.
  * @throws RangeError on counts that are not whole numbers in range, or a flown time that is negative or not finite.
  */
 export function finishCard(r: CourseResult): FinishCard {
@@ -57,14 +60,17 @@ export function finishCard(r: CourseResult): FinishCard {
     throw new RangeError(
       `finishCard: passed and total must be whole numbers with 0 <= passed <= total and total >= 1, got ${r.passed}, ${r.total}`,
     );
-  const total = courseTime(r.flown, r.missed);
+  const again = r.again ?? 0;
+  if (!(Number.isInteger(again) && again >= 0)) throw new RangeError(`finishCard: again must be an integer >= 0, got ${again}`);
+  const total = courseTime(r.flown, r.missed + again);
   const stars = courseStars(r.missed);
+  const slips = [r.missed > 0 ? `${r.missed} missed` : '', again > 0 ? `${again} flown again` : ''].filter(Boolean).join(', ');
   const starText = '★'.repeat(stars) + '☆'.repeat(3 - stars);
   const keys = !r.touch;
   return {
     title: r.passed === r.total ? 'Course complete!' : 'Course over',
     result: `${r.passed} of ${r.total} rings in ${clockText(total)}  ${starText}`,
-    detail: r.missed > 0 ? `${clockText(r.flown)} flown + ${MISS_PENALTY * r.missed} s for ${r.missed} missed` : '',
+    detail: slips ? `${clockText(r.flown)} flown + ${MISS_PENALTY * (r.missed + again)} s for ${slips}` : '',
     best:
       r.vsBest === 'better'
         ? 'A new best for this course!'

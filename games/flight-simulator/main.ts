@@ -58,6 +58,7 @@ import {
   getSound,
   numberParam,
   pageLayout,
+  pauseUnderDrawers,
   seedParam,
 } from '@bitphysics/game-kit';
 import { startThreeGame } from '@bitphysics/game-kit/three';
@@ -131,7 +132,9 @@ import { clockText, finishCard, nextSeed } from './finish';
 import { labelClearOf, type ScreenBox } from './label-place';
 import { FRAME_CAP, STEPS_PER_FRAME, slowMotion } from './pacing';
 import { nearFade } from './ring-fade';
+import { offScreenLabel } from './ring-pointer';
 import { createScenery, HORIZON_COLOUR, SUN_DIRECTION } from './scenery';
+import { secondTry } from './second-try';
 import { clearPulse, createPulse, type Pulse, pressPulse, pulseOn, releasePulse } from './tap-latch';
 
 const params = {
@@ -170,9 +173,10 @@ const state = {
   elevator: 0,
   aileron: 0,
   rudder: 0,
-  /** Rings passed and missed. */
+  /** Rings passed and missed (for good), and rings missed once and given a second try (./second-try.ts). */
   score: 0,
   missed: 0,
+  again: 0,
   /** 'flying', then 'crashed' (into the ground or the sea) or 'done' (no ring left). */
   phase: 'flying' as 'flying' | 'crashed' | 'done',
   /** Time since the start, s of game time; stops when the course is done. */
@@ -196,6 +200,7 @@ function createWorld(): PhysicsWorld {
     rudder: 0,
     score: 0,
     missed: 0,
+    again: 0,
     phase: 'flying',
     time: 0,
     stalled: false,
@@ -213,6 +218,7 @@ function createWorld(): PhysicsWorld {
   promise.ring = -1;
   promise.at = -Infinity;
   missedAt = -Infinity;
+  tried.clear();
   crashReadings = null;
   floorHeldAt = -Infinity;
   awayFor = 0;
@@ -572,9 +578,11 @@ function checkRings(time: number): void {
   // not a star every few seconds as each new ring falls behind a held turn.
   const again = happened.length === 0 && before >= 0 && before === movedAhead && awayFor >= LEFT_BEHIND_TIME;
   if (happened.length === 0 && !again) happened = leaveBehind(rings, awayFor);
+  // A ring's first miss gives it a second try (./second-try.ts): it comes round again, laid ahead below.
+  const counted = secondTry(rings, happened, tried);
   // The next ring starts afresh.
   if (happened.length > 0 || again) awayFor = 0;
-  for (const { ring, result } of happened) {
+  for (const { ring, result } of counted) {
     doneAt.set(ring, performance.now());
     if (result === 'passed') {
       state.score++;
@@ -584,6 +592,12 @@ function checkRings(time: number): void {
       if (!last) events.push({ text: '', colour: '#ffd166', time: time + NEXT_AFTER, next: nextRing(rings) });
       sound.chime(880, 0.18);
       setTimeout(() => sound.chime(1320, 0.3), 110);
+    } else if (result === 'again') {
+      // A first miss: time on the clock, no star, and the ring comes round again.
+      state.again++;
+      missedAt = time;
+      events.push({ text: `Missed ring ${ring + 1} · +${MISS_PENALTY} s · try it again`, colour: '#ff8a5a', time });
+      sound.chime(220, 0.4);
     } else {
       // A miss costs a star and time on the course clock, said at once in the banner and by the
       // flash of the goal line, where the stars and the clock are.
@@ -633,6 +647,8 @@ function checkRings(time: number): void {
 }
 /** Game time of the last miss, s (the clock flashes for a while after it). */
 let missedAt = -Infinity;
+/** Rings given their second try this run (./second-try.ts): missed again, they are missed for good. */
+const tried = new Set<number>();
 /** When the aircraft crashed, ms (performance.now), and what it hit. */
 let crashWall = Number.NaN,
   crashInto: 'ground' | 'sea' = 'ground';
@@ -688,7 +704,7 @@ let lastVsBest: 'first' | 'better' | 'not' = 'not';
 function finish(time: number): void {
   state.phase = 'done';
   const best = bestOf();
-  const total = courseTime(state.time, state.missed);
+  const total = courseTime(state.time, state.missed + state.again);
   lastVsBest = compareWithBest(best, state.score, total);
   // The first run is kept as the best to beat, but only a run that beats a kept best is praised.
   if (lastVsBest !== 'not') {
@@ -745,6 +761,8 @@ const game = await startThreeGame({
 });
 const { shell, renderer, app } = game;
 shellReady = true;
+// On a phone the menu and settings drawers cover the sky: the flight waits while one is open.
+pauseUnderDrawers(shell, { compactOnly: true });
 app.camera.near = 1;
 app.camera.far = 40_000;
 app.camera.updateProjectionMatrix();
@@ -1064,9 +1082,10 @@ function updateGoal(): void {
   const n = nextRing(rings);
   const total = rings.length;
   // The course clock: the time flown plus the misses' penalties, said beside it.
-  const penalty = state.missed > 0 ? ` (+${MISS_PENALTY * state.missed} s)` : '';
+  const slips = state.missed + state.again;
+  const penalty = slips > 0 ? ` (+${MISS_PENALTY * slips} s)` : '';
   const stars = courseStars(state.missed);
-  const courseClock = `${clock(courseTime(state.time, state.missed))}${penalty} · ${'★'.repeat(stars)}${'☆'.repeat(3 - stars)}`;
+  const courseClock = `${clock(courseTime(state.time, slips))}${penalty} · ${'★'.repeat(stars)}${'☆'.repeat(3 - stars)}`;
   const distance = n < 0 ? '' : distanceText(Math.hypot(rings[n]!.x - at.x, rings[n]!.y - at.y, rings[n]!.z - at.z));
   const text =
     state.phase === 'crashed'
@@ -1087,7 +1106,8 @@ let shownCard = '';
 function updateHud(i: ReturnType<typeof instruments>): void {
   const total = rings.length;
   const speed = `${i.speed.toFixed(0)} m/s`;
-  const missedNote = state.missed > 0 ? ` · missed ${state.missed}` : '';
+  // Every miss, a second try's first one included: each is 10 s on the clock.
+  const missedNote = state.missed + state.again > 0 ? ` · missed ${state.missed + state.again}` : '';
   // The height above the ground (or the sea) under the aircraft, what keeps it off the hills: "alt"
   // counts from sea level, and a pilot reading it alone flew into a hill. Never below 0 (a crash).
   const aboveGround = `${Math.max(0, i.agl).toFixed(0)} m above ground`;
@@ -1114,7 +1134,8 @@ function updateHud(i: ReturnType<typeof instruments>): void {
   // The end card and its button (built again only when what it says changes).
   // After a crash the card waits CRASH_CARD_MS, so that the explosion is seen first.
   const waiting = state.phase === 'crashed' && performance.now() - crashWall < CRASH_CARD_MS;
-  const card = state.phase === 'flying' || waiting ? '' : `${state.phase} ${state.score} ${state.missed} ${state.time} ${lastVsBest}`;
+  const card =
+    state.phase === 'flying' || waiting ? '' : `${state.phase} ${state.score} ${state.missed} ${state.again} ${state.time} ${lastVsBest}`;
   if (card === shownCard) return;
   shownCard = card;
   if (card === '') {
@@ -1157,6 +1178,7 @@ function showFinish(): void {
     passed: state.score,
     total: rings.length,
     missed: state.missed,
+    again: state.again,
     flown: state.time,
     vsBest: lastVsBest,
     best: bestOf(),
@@ -1379,8 +1401,29 @@ function pointToNextRing(): void {
     const k = Math.min((w / 2 - 70) / Math.max(1e-6, Math.abs(dx)), (h / 2 - 24) / Math.max(1e-6, Math.abs(dy)));
     x = w / 2 + dx * k;
     y = h / 2 + dy * k;
-    const arrow = Math.abs(dx) * (h / 2) > Math.abs(dy) * (w / 2) ? (dx > 0 ? '▶' : '◀') : dy > 0 ? '▼' : '▲';
-    ringAim.text = dx > 0 && arrow === '▶' ? `ring ${i + 1} · ${distance} ${arrow}` : `${arrow} ring ${i + 1} · ${distance}`;
+    // Out of view: the label says which way the ring lies and how to turn to it (./ring-pointer.ts).
+    const V = shell.world.components.Velocity,
+      e = handles.body;
+    const { bearing, elevation } = ringBearing(ring, [at.x, at.y, at.z], [V.x[e]!, V.y[e]!, V.z[e]!]);
+    ringAim.text = offScreenLabel({
+      ring: i + 1,
+      distance,
+      dx,
+      dy,
+      halfW: w / 2,
+      halfH: h / 2,
+      behind: !ahead,
+      touch: touchFirst,
+      bearing,
+      elevation,
+    }).text;
+  }
+  // Out of view, the label is the only sign of the ring: larger and edged, so it is not missed.
+  const lost = !ringAim.inView ? 'true' : 'false';
+  if (ringPointer.dataset.lost !== lost) {
+    ringPointer.dataset.lost = lost;
+    ringPointer.style.fontSize = ringAim.inView ? '' : '16px';
+    ringPointer.style.boxShadow = ringAim.inView ? '' : 'inset 0 0 0 2px #ffcf5a';
   }
   if (ringPointer.textContent !== ringAim.text) ringPointer.textContent = ringAim.text;
   [x, y] = keepInScene(x, y, w, bottom);

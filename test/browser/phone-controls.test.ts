@@ -231,6 +231,21 @@ describe('phone controls', () => {
     const aboveGround = Number(height.read.match(/· (\d+) m above ground ·/)?.[1] ?? Number.NaN);
     expect(Math.abs(aboveGround - height.agl), height.read).toBeLessThan(3);
     expect((await checkLayout(g.page)).clipped).toEqual([]);
+    // The ≡ menu covers the sky: the flight waits while it is open, and a tap on the sky closes it
+    // (game-kit's layout) and the flight goes on (it stayed open over the tips, the aircraft flying under it).
+    const drawer = () =>
+      g.page.evaluate(() => ({
+        open: document.querySelector<HTMLElement>('.bp-app')?.dataset.open ?? '',
+        paused: (window.game as unknown as { paused: boolean }).paused,
+      }));
+    expect(await drawer()).toEqual({ open: '', paused: false });
+    const menu = (await g.page.getByRole('button', { name: 'information and controls' }).boundingBox())!;
+    await g.page.touchscreen.tap(menu.x + menu.width / 2, menu.y + menu.height / 2);
+    expect(await g.waitFor(() => (document.querySelector<HTMLElement>('.bp-app')?.dataset.open === 'info' ? true : null), null)).toBe(true);
+    expect(await drawer()).toEqual({ open: 'info', paused: true });
+    const sky = (await g.page.locator('.bp-stage').boundingBox())!;
+    await g.page.touchscreen.tap(sky.x + sky.width / 2, sky.y + sky.height - 20);
+    expect(await drawer()).toEqual({ open: '', paused: false });
     expect(g.errors).toEqual([]);
     await g.close();
   });

@@ -36,6 +36,7 @@ import {
   throttleStep,
 } from '../../games/flight-simulator/assist';
 import { pathThroughRing, predictThroughRing, RING_RADIUS, type Ring } from '../../games/flight-simulator/course';
+import { FRAME_CAP } from '../../games/flight-simulator/pacing';
 
 const DEG = Math.PI / 180;
 const FULL = CONTROL_AUTHORITY * DEG;
@@ -599,6 +600,39 @@ describe('the flight-path marker (course.ts predictThroughRing) against the flow
       expect(level, `${hold}`).toBeLessThan(1.2);
       if (hold === 2) expect(Math.abs(flightState(f.world, e).heading - headingAtRelease)).toBeLessThan(1 * DEG);
     }
+  });
+
+  it('→ and ↓ held together 8 s (what a tip asks): the bank stays within ASSIST.steepestBank + 3 degrees, grows at most 14 degrees in any 0.1 s (a slow frame: FRAME_CAP), and rolls level within 1.2 s of the release', () => {
+    // A stranger at 3 frames a second held both and saw the aircraft roll steeply off the ring; the
+    // bank is built per game second (each step reads the ramped keys) and a drawn frame advances at
+    // most FRAME_CAP (0.1 s) of it, so a key held over a slow frame banks no faster.
+    const f = start();
+    const keys = { roll: 0, pitch: 0 };
+    const banks: number[] = [];
+    let t = 0;
+    for (; t < 8; t += f.world.dt) {
+      keys.roll = rampKey(keys.roll, 1, f.world.dt, BANK_KEY_RAMP);
+      keys.pitch = rampKey(keys.pitch, -1, f.world.dt);
+      fly(f, keys, f.world.dt);
+      banks.push(flightState(f.world, f.h.body).bank);
+    }
+    const steps = Math.round(FRAME_CAP / f.world.dt);
+    let jump = 0;
+    for (let k = steps; k < banks.length; k++) jump = Math.max(jump, Math.abs(banks[k]! - banks[k - steps]!));
+    expect(Math.max(...banks.map(Math.abs))).toBeLessThan(ASSIST.steepestBank + 3 * DEG); // measured 72.7 degrees
+    expect(jump).toBeLessThan(14 * DEG); // measured 11.1 (the ailerons' roll rate, about 1.9 rad/s)
+    // Let go: level (under 3 degrees) within 1.2 s.
+    let level = Number.POSITIVE_INFINITY;
+    for (let u = 0; u < 3; u += f.world.dt) {
+      keys.roll = rampKey(keys.roll, 0, f.world.dt, BANK_KEY_RAMP);
+      keys.pitch = rampKey(keys.pitch, 0, f.world.dt);
+      fly(f, keys, f.world.dt);
+      if (Math.abs(flightState(f.world, f.h.body).bank) < 3 * DEG) {
+        level = u;
+        break;
+      }
+    }
+    expect(level).toBeLessThan(1.2); // measured 0.77 s
   });
 
   it('a held key let go after 1.5 s, still rolling into a 70 degree bank: the wings level briskly, the heading stays within 3 degrees of where it was let go (measured -0.3)', () => {

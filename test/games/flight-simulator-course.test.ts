@@ -6,7 +6,7 @@
  * outside, and counts nothing the wrong way or far off, each missed ring costs 20 s of course time and a
  * star, and the lesson tips' ways (left / right, higher / lower) are where the ring lies from the aircraft;
  * only a run that beats a kept best is a new best (not the first); a ring that has fallen behind for
- * LEFT_BEHIND_TIME is missed, once.
+ * LEFT_BEHIND_TIME is missed, once; a ring's first miss gives it a second try (second-try.ts).
  */
 
 import { createPhysicsWorld, setBodyThrust, setControlDeflection, step } from '@bitphysics/physics';
@@ -55,6 +55,7 @@ import {
   TIP_OFFSET,
 } from '../../games/flight-simulator/course';
 import { finishCard, LAST_SEED, nextSeed } from '../../games/flight-simulator/finish';
+import { secondTry } from '../../games/flight-simulator/second-try';
 
 const terrain = aircraft.build(createPhysicsWorld(aircraft.worldOptions()), { seed: 3 }).terrain;
 
@@ -290,6 +291,42 @@ describe('flight simulator course', () => {
     expect(courseTime(95, 0)).toBe(95);
     expect(() => courseTime(-1, 0)).toThrow(/courseTime: flown must be finite and >= 0 s, got -1/);
     expect(() => courseTime(1, 0.5)).toThrow(/courseTime: missed must be an integer >= 0, got 0.5/);
+  });
+
+  it('a second try (second-try.ts): a first miss puts the ring back ahead, a second is for good; a skipped ring stays missed', () => {
+    const course = (): Ring[] => [0, 1, 2].map((k) => ({ x: 1000 * (k + 1), y: 500, z: 0, nx: 1, ny: 0, nz: 0, status: 'ahead' as const }));
+    const through = (rings: Ring[], k: number, above: number) =>
+      flyRings(rings, [rings[k]!.x - 5, 500 + above, 0], [rings[k]!.x + 5, 500 + above, 0]);
+    const rings = course(),
+      tried = new Set<number>();
+    // Ring 1 missed 100 m above: it is to be flown again, still the next ring.
+    expect(secondTry(rings, through(rings, 0, 100), tried)).toEqual([{ ring: 0, result: 'again' }]);
+    expect(nextRing(rings)).toBe(0);
+    // Missed again: for good, and the course goes on to ring 2.
+    expect(secondTry(rings, through(rings, 0, 100), tried)).toEqual([{ ring: 0, result: 'missed' }]);
+    expect(nextRing(rings)).toBe(1);
+    // Passed on its second try: a pass like any other.
+    const again = course(),
+      triedAgain = new Set<number>();
+    secondTry(again, through(again, 0, 100), triedAgain);
+    expect(secondTry(again, through(again, 0, 0), triedAgain)).toEqual([{ ring: 0, result: 'passed' }]);
+    // Skipping ring 1 through ring 2's plane: ring 1 stays missed (gone past), ring 2 passed.
+    const skip = course();
+    expect(secondTry(skip, through(skip, 1, 0), new Set())).toEqual([
+      { ring: 0, result: 'missed' },
+      { ring: 1, result: 'passed' },
+    ]);
+    // Skipping ring 1 and missing ring 2: ring 2 gets its second try, ring 1 does not.
+    const both = course();
+    expect(secondTry(both, through(both, 1, 100), new Set())).toEqual([
+      { ring: 0, result: 'missed' },
+      { ring: 1, result: 'again' },
+    ]);
+    expect(both.map((r) => r.status)).toEqual(['missed', 'ahead', 'ahead']);
+    // Left behind (leaveBehind) is a miss like a crossing outside: a second try too.
+    const behind = course();
+    expect(secondTry(behind, leaveBehind(behind, LEFT_BEHIND_TIME), new Set())).toEqual([{ ring: 0, result: 'again' }]);
+    expect(() => secondTry(course(), [{ ring: 5, result: 'missed' }], new Set())).toThrow(/secondTry: event ring 5/);
   });
 
   it("a ring the flight-path marker promised (flyRings' promised) is passed when its plane is crossed, even outside it; another ring is not", () => {
@@ -620,6 +657,12 @@ describe('flight simulator course', () => {
     expect(missed.detail).toBe('1:35 flown + 30 s for 3 missed');
     expect(missed.best).toBe('Best: 9 of 10 rings in 1:40');
     expect(missed.actions.map((a) => a.label)).toEqual(['Retry ↺', 'Next course ▶']);
+    // Two rings flown again after a first miss (second-try.ts): 10 s each, no star.
+    const tries = finishCard({ ...base, again: 2 });
+    expect(tries.result).toBe('10 of 10 rings in 1:55  ★★★');
+    expect(tries.detail).toBe('1:35 flown + 20 s for 2 flown again');
+    expect(finishCard({ ...base, passed: 9, missed: 1, again: 1 }).detail).toBe('1:35 flown + 20 s for 1 missed, 1 flown again');
+    expect(() => finishCard({ ...base, again: -1 })).toThrow(/finishCard: again must be an integer >= 0/);
     expect(finishCard({ ...base, vsBest: 'better' }).best).toBe('A new best for this course!');
     expect(() => finishCard({ ...base, passed: 11 })).toThrow(/finishCard: passed and total/);
     // Next course: the next seed, back to 0 past the panel's last.

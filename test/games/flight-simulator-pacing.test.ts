@@ -4,7 +4,8 @@
  * 20 frames a second and goes in slow motion (FRAME_CAP s of game time a frame) at 5; the notice
  * shows under 10 frames a second and not at the edge; a press let go before any step acts for
  * MIN_PULSE s of game time, a held key as long as it is held; a ring that spans the view is faint,
- * one far off is whole; the ring's label goes past the messages' boxes.
+ * one far off is whole; the ring's label goes past the messages' boxes; an out-of-view ring's label
+ * (ring-pointer.ts) says which way to turn.
  */
 
 import { createGameLoop } from '@bitphysics/game-kit';
@@ -12,6 +13,7 @@ import { describe, expect, it } from 'vitest';
 import { labelClearOf, type ScreenBox } from '../../games/flight-simulator/label-place';
 import { FLIGHT_STEP, FRAME_CAP, gameTimeOfFrame, SLOW_MOTION_FPS, STEPS_PER_FRAME, slowMotion } from '../../games/flight-simulator/pacing';
 import { NEAR_FADE, nearFade } from '../../games/flight-simulator/ring-fade';
+import { offScreenLabel, TURN_BEARING } from '../../games/flight-simulator/ring-pointer';
 import { clearPulse, createPulse, MIN_PULSE, pressPulse, pulseOn, releasePulse } from '../../games/flight-simulator/tap-latch';
 
 /** Runs the game loop with the flight's pacing for `frames` frames `frameMs` ms apart; returns the steps run. */
@@ -159,5 +161,41 @@ describe('the ring label keeps clear of the messages (label-place.ts)', () => {
   it('throws on a negative half size or box', () => {
     expect(() => labelClearOf(0, 0, -1, 12, [], 650, 10)).toThrow(/labelClearOf: halfW/);
     expect(() => labelClearOf(0, 0, 1, 12, [[0, 0, -5, 4]], 650, 10)).toThrow(/labelClearOf: a box/);
+  });
+});
+
+describe('an out-of-view ring says how to turn to it (ring-pointer.ts)', () => {
+  // A desktop scene 1060 x 750 px (half 530 x 375); the ring 30 degrees right of the way flown, level.
+  const DEG = Math.PI / 180;
+  const at = { ring: 8, distance: '637 m', halfW: 530, halfH: 375, behind: false, touch: false, bearing: 30 * DEG, elevation: 0 };
+  it('to the side: the arrow at its edge, the turn and its key; on a phone the turn alone', () => {
+    expect(offScreenLabel({ ...at, dx: 600, dy: 40 })).toEqual({ text: 'ring 8 · 637 m · turn right (hold →) ▶', arrow: '▶' });
+    expect(offScreenLabel({ ...at, dx: 600, dy: 40, touch: true }).text).toBe('ring 8 · 637 m · turn right ▶');
+    expect(offScreenLabel({ ...at, dx: -600, dy: 40, bearing: -30 * DEG })).toEqual({
+      text: '◀ ring 8 · 637 m · turn left (hold ←)',
+      arrow: '◀',
+    });
+  });
+  it('what to do follows the bearing, not the screen: a banked cockpit view shows a ring to the right below its edge', () => {
+    expect(offScreenLabel({ ...at, dx: 100, dy: 500 })).toEqual({ text: '▼ ring 8 · 637 m · turn right (hold →)', arrow: '▼' });
+    // Within TURN_BEARING of the way flown: climb or dive by the elevation.
+    expect(offScreenLabel({ ...at, dx: 100, dy: -500, bearing: 5 * DEG, elevation: 20 * DEG })).toEqual({
+      text: '▲ ring 8 · 637 m · climb (hold ↑)',
+      arrow: '▲',
+    });
+    expect(offScreenLabel({ ...at, dx: 100, dy: 500, bearing: -TURN_BEARING / 2, elevation: -0.3, touch: true }).text).toBe(
+      '▼ ring 8 · 637 m · dive',
+    );
+  });
+  it('behind, even straight above the centre: the side it lies and a turn (the way back)', () => {
+    expect(offScreenLabel({ ...at, dx: -100, dy: -500, behind: true, bearing: -170 * DEG })).toEqual({
+      text: '◀ ring 8 behind · 637 m · turn left (hold ←)',
+      arrow: '◀',
+    });
+  });
+  it('refuses a ring number under 1, a scene of no size and a bearing not finite, naming the function', () => {
+    expect(() => offScreenLabel({ ...at, ring: 0, dx: 1, dy: 0 })).toThrow(/offScreenLabel: ring/);
+    expect(() => offScreenLabel({ ...at, halfW: 0, dx: 1, dy: 0 })).toThrow(/offScreenLabel: halfW/);
+    expect(() => offScreenLabel({ ...at, bearing: Number.NaN, dx: 1, dy: 0 })).toThrow(/offScreenLabel: bearing/);
   });
 });

@@ -10,7 +10,8 @@
  *
  * Small windows (phones, landscape or portrait): one column, toolbar / status / stage / controls;
  * info-and-help and side become drawers that the toolbar's buttons open over the scene (closed at
- * start, so nothing covers the scene until asked). The canvas fills the stage; the world renderer
+ * start, so nothing covers the scene until asked; a press outside the open drawer and the toolbar
+ * closes it). The canvas fills the stage; the world renderer
  * fits its view into it (letterboxed, aspect kept, never cropped).
  *
  * A game's page may ask for the game arrangement with `<body data-layout="game">`: on wide windows the
@@ -242,6 +243,20 @@ export function pageLayout(): PageLayout {
   new MutationObserver((records) => {
     for (const r of records) r.addedNodes.forEach(adopt);
   }).observe(document.body, { childList: true });
+  // On a small screen, where the drawers lie over the scene, a press anywhere outside the open drawer
+  // and the toolbar (the scene, the touch pads) closes it, so a player who taps the scene to get back
+  // to the game gets it back; the press goes on to what it was on. Capture phase: a canvas or pad
+  // that stops the event still closes the drawer.
+  document.addEventListener(
+    'pointerdown',
+    (e) => {
+      const which = root.dataset.open;
+      if (which === undefined || !query.matches || !(e.target instanceof Node)) return;
+      const drawer = which === 'info' ? info : side;
+      if (!drawer.contains(e.target) && !toolbar.contains(e.target)) open(null);
+    },
+    { capture: true },
+  );
   // Growing into the wide arrangement closes the drawers (but for the game arrangement's side drawer,
   // which the wide arrangement has too).
   query.addEventListener('change', () => {
