@@ -4,6 +4,7 @@ import {
   createPhysicsWorld,
   isSleeping,
   type PhysicsWorld,
+  pinClothPoint,
   setVelocity,
   slotOf,
   step,
@@ -126,4 +127,28 @@ test('a row of sleeping dominoes falls in the time rapier2d and our world withou
   // Two engines with different solvers: within 10 % of rapier2d's time (ours was 50 % slower when
   // each domino was held still for the step it was hit in).
   expect(Math.abs(slept.t - peer) / peer).toBeLessThan(0.1);
+});
+
+// A kinematic body is driven by its velocity alone: a ball pinned (made kinematic) while it sleeps keeps
+// its Sleeping tag, and a ball rolling into it must not wake it into a dynamic body (which was given
+// the gravity step of a woken body and then, kinematic again, sank through the floor at g h per step).
+test('a sleeping ball pinned in place stays where it is pinned when a ball rolls into it', () => {
+  const world = createPhysicsWorld({ gravity: [0, -9.81] });
+  addBox(world, { position: [0, -0.5], halfExtents: [50, 0.5], static: true, friction: 0 });
+  const a = body(world, 'ball', 0, 0);
+  const b = body(world, 'ball', 3, 0);
+  stepMany(world, 180);
+  expect(isSleeping(world, b)).toBe(true);
+  const p = world.components.Position,
+    s = slotOf(b);
+  const at = [p.x[s]!, p.y[s]!];
+  pinClothPoint(world, b, at);
+  setVelocity(world, a, [2, 0]);
+  stepMany(world, 120); // the hit comes after about 1 s
+  // Exact: a kinematic body at rest is not moved by anything.
+  expect([p.x[s], p.y[s]]).toEqual(at);
+  expect(world.components.Velocity.y[s]).toBe(0);
+  // The rolling ball reached it and was stopped (restitution 0): it ends at most 1 m (two radii) short.
+  expect(p.x[slotOf(a)]!).toBeGreaterThan(at[0]! - 1 - 1e-3);
+  expect(world.components.Velocity.x[slotOf(a)]!).toBeLessThan(0.1);
 });

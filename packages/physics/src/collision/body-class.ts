@@ -1,5 +1,6 @@
 import { type EcsInternals, ecsOf } from '../world/ecs-internals.js';
 import type { PhysicsWorld } from '../world/options.js';
+import { query } from '../world/query.js';
 import { BodyType } from './state.js';
 
 /**
@@ -28,16 +29,15 @@ const NO_MASKS: ArrayLike<number> = new Int32Array(0);
 
 /** Fills `bits` for `world` (bitecs' masks and each component's place in them); call it before a pass's first hasBit. */
 export function lookUpBodyBits(world: PhysicsWorld): void {
-  const c = world.components,
-    ecs = ecsOf(world);
-  lookUpBit(ecs, STATIC, c.Static);
-  lookUpBit(ecs, KINEMATIC, c.Kinematic);
-  lookUpBit(ecs, SLEEPING, c.Sleeping);
-  lookUpBit(ecs, INERTIA, c.Inertia);
-  lookUpBit(ecs, SPIN, c.AngularVelocity);
-  lookUpBit(ecs, ANGLE, c.Angle);
-  lookUpBit(ecs, SHAPE, c.Shape);
-  lookUpBit(ecs, INERTIA_TENSOR, c.InertiaTensor);
+  const ecs = ecsOf(world),
+    components = bodyComponents(world);
+  for (let k = 0; k < components.length; k++) lookUpBit(ecs, k, components[k]!);
+}
+
+/** The components of `world` hasBit tests for, at their hasBit index. */
+function bodyComponents(world: PhysicsWorld): object[] {
+  const c = world.components;
+  return [c.Static, c.Kinematic, c.Sleeping, c.Inertia, c.AngularVelocity, c.Angle, c.Shape, c.InertiaTensor];
 }
 
 function lookUpBit(ecs: EcsInternals, k: number, component: object): void {
@@ -53,22 +53,78 @@ export function hasBit(k: number, e: number): boolean {
 }
 
 /**
- * Writes body `b`'s class for this step into the collision state and returns it (a BodyType): static,
- * kinematic or sleeping (ranked in that order; inverse mass and inertia 0), else dynamic
- * (classifyDynamic). Needs lookUpBodyBits(world) earlier in the pass.
+ * The classes a body can have besides dynamic, highest rank first, as hasBit indices (RANKED) and
+ * BodyTypes (RANKED_TYPE): a body with the components of several takes the first one's class. Static
+ * outranks kinematic (a fixed body is not driven); kinematic outranks sleeping (the sleep stage never
+ * puts a kinematic body to sleep, so a Sleeping tag on one is stale, and waking it would hand it to the
+ * dynamic integration and gravity).
+ */
+const RANKED = [STATIC, KINEMATIC, SLEEPING] as const;
+const RANKED_TYPE = [BodyType.Static, BodyType.Kinematic, BodyType.Sleeping] as const;
+
+/**
+ * Writes body `b`'s class for this step into the collision state and returns it (a BodyType): the
+ * first class of RANKED it has (static, kinematic or sleeping; inverse mass and inertia 0), else
+ * dynamic (classifyDynamic). Needs lookUpBodyBits(world) earlier in the pass.
  * @category Collision
  */
 export function classifyBody(world: PhysicsWorld, b: number): number {
-  const cs = world.collision;
-  let t: number;
-  if (hasBit(STATIC, b)) t = BodyType.Static;
-  else if (hasBit(KINEMATIC, b)) t = BodyType.Kinematic;
-  else if (hasBit(SLEEPING, b)) t = BodyType.Sleeping;
-  else return classifyDynamic(world, b);
-  cs.invMass[b] = 0;
-  cs.invInertia[b] = 0;
-  cs.bodyType[b] = t;
-  return t;
+  for (let k = 0; k < RANKED.length; k++) {
+    if (!hasBit(RANKED[k]!, b)) continue;
+    const cs = world.collision,
+      t = RANKED_TYPE[k]!;
+    cs.invMass[b] = 0;
+    cs.invInertia[b] = 0;
+    cs.bodyType[b] = t;
+    return t;
+  }
+  return classifyDynamic(world, b);
+}
+
+/** rankedLists' answer: live query results, lowest rank first. */
+const lists: ArrayLike<number>[] = [];
+
+/**
+ * classifyBody's classes for a pass over many bodies, most of them dynamic, that reads only the others:
+ * the bodies with every component of `terms` that are sleeping, kinematic or static, one live query
+ * result a class, lowest rank first (reused array; list k's class is `rankedListType(k)`). Giving each
+ * list's bodies its class in turn leaves every body the class classifyBody gives it; the last list is
+ * the static bodies.
+ * @category Collision
+ */
+export function rankedLists(world: PhysicsWorld, terms: readonly object[]): readonly ArrayLike<number>[] {
+  const components = bodyComponents(world);
+  for (let k = 0; k < RANKED.length; k++) lists[RANKED.length - 1 - k] = query(world, [...terms, components[RANKED[k]!]!]);
+  return lists;
+}
+
+/** The BodyType of rankedLists' list k (0 to 2). */
+export function rankedListType(k: number): number {
+  return RANKED_TYPE[RANKED.length - 1 - k]!;
+}
+
+/**
+ * rankedLists' bodies' class into the collision state, as classifyBody writes it (BodyType, inverse
+ * mass and inertia 0). Returns the static ones (a live query result).
+ * @category Collision
+ */
+export function classifyRanked(world: PhysicsWorld, terms: readonly object[]): ArrayLike<number> {
+  const cs = world.collision,
+    invMass = cs.invMass,
+    invInertia = cs.invInertia,
+    type = cs.bodyType,
+    ranked = rankedLists(world, terms);
+  for (let k = 0; k < ranked.length; k++) {
+    const list = ranked[k]!,
+      t = rankedListType(k);
+    for (let i = 0; i < list.length; i++) {
+      const e = list[i]!;
+      invMass[e] = 0;
+      invInertia[e] = 0;
+      type[e] = t;
+    }
+  }
+  return ranked[ranked.length - 1]!;
 }
 
 /**

@@ -4,7 +4,7 @@ import { M00, M01, M02, M10, M11, M12, M20, M21, M22, MAT3_STRIDE } from '../mat
 import { Shape3DKind, type Shape3DStore, shapes3DOf } from '../shapes/store-3d.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
-import { classifyDynamic, lookUpBodyBits } from './body-class.js';
+import { classifyDynamic, lookUpBodyBits, rankedLists, rankedListType } from './body-class.js';
 import { pairs } from './broadphase/pairs-3d.js';
 import { ensure, keptPose, notePose, ownPoses, SHAPE_SPECULATIVE_DISTANCE, scratch, wakes } from './colliders-3d.js';
 import { pushEvent } from './events.js';
@@ -139,30 +139,23 @@ let classStamp = new Int32Array(0),
   classKind = new Uint8Array(0),
   classStep = 0;
 
-/** Marks the static, kinematic and sleeping bodies from three queries (in the order classifyBody ranks them, collision/body-class.ts); returns the stamp. */
+/** Marks the static, kinematic and sleeping bodies with their class (collision/body-class.ts rankedLists); returns the stamp. */
 function markClasses(world: PhysicsWorld): number {
-  const c = world.components,
-    n = world.capacity + 1;
+  const n = world.capacity + 1;
   if (classStamp.length < n) {
     classStamp = new Int32Array(n);
     classKind = new Uint8Array(n);
     classStep = 0;
   }
-  const stamp = ++classStep;
-  const sleeping = query(world, [c.Sleeping]),
-    kinematic = query(world, [c.Kinematic]),
-    fixed = query(world, [c.Static]);
-  for (let i = 0; i < sleeping.length; i++) {
-    classStamp[sleeping[i]!] = stamp;
-    classKind[sleeping[i]!] = BodyType.Sleeping;
-  }
-  for (let i = 0; i < kinematic.length; i++) {
-    classStamp[kinematic[i]!] = stamp;
-    classKind[kinematic[i]!] = BodyType.Kinematic;
-  }
-  for (let i = 0; i < fixed.length; i++) {
-    classStamp[fixed[i]!] = stamp;
-    classKind[fixed[i]!] = BodyType.Static;
+  const stamp = ++classStep,
+    ranked = rankedLists(world, []);
+  for (let k = 0; k < ranked.length; k++) {
+    const list = ranked[k]!,
+      t = rankedListType(k);
+    for (let i = 0; i < list.length; i++) {
+      classStamp[list[i]!] = stamp;
+      classKind[list[i]!] = t;
+    }
   }
   return stamp;
 }

@@ -1,3 +1,4 @@
+import { rankedLists, rankedListType } from '../collision/body-class.js';
 import { BodyType } from '../collision/broadphase/grid.js';
 import * as BS from '../solver/body-state-layout.js';
 import { atLeast } from '../solver/manifold-rows-2d.js';
@@ -76,12 +77,7 @@ const reading = new Float64Array(4);
 /** finishJoints' largest position error of the step (m) and its joint's entity id, as finishRows leaves them. */
 const worst = new Float64Array(2);
 
-enum Class {
-  Dynamic = 0,
-  Kinematic = 1,
-  Static = 2,
-  Sleeping = 3,
-}
+/** A joint body's class (bodyClass): its BodyType (0 to 3), plus ROTATES when it turns. */
 const ROTATES = 4;
 
 /**
@@ -128,21 +124,21 @@ export function gatherJointBodies(world: PhysicsWorld, count: number): number {
       b = JBd[j]!;
     if (a !== 0) {
       bs[a] = stamp;
-      cls[a] = Class.Dynamic;
+      cls[a] = BodyType.Dynamic;
     }
     bs[b] = stamp;
-    cls[b] = Class.Dynamic;
+    cls[b] = BodyType.Dynamic;
   }
-  const classify = (comp: object, value: number): void => {
-    const ents = query(world, [comp]);
-    for (let i = 0; i < ents.length; i++) {
-      const e = ents[i]!;
-      if (bs[e] === stamp) cls[e] = value;
+  // The joint bodies' classes (BodyType) by collision/body-class.ts's ranking.
+  const ranked = rankedLists(world, []);
+  for (let k = 0; k < ranked.length; k++) {
+    const list = ranked[k]!,
+      t = rankedListType(k);
+    for (let i = 0; i < list.length; i++) {
+      const e = list[i]!;
+      if (bs[e] === stamp) cls[e] = t;
     }
-  };
-  classify(c.Static, Class.Static);
-  classify(c.Kinematic, Class.Kinematic);
-  classify(c.Sleeping, Class.Sleeping);
+  }
   const rot = query(world, [c.Inertia, c.AngularVelocity]);
   for (let i = 0; i < rot.length; i++) {
     const e = rot[i]!;
@@ -169,10 +165,10 @@ export function gatherJointBodies(world: PhysicsWorld, count: number): number {
     const j = joints[i]!;
     const a = JA[j]!,
       b = JBd[j]!;
-    const ca = a === 0 ? Class.Static : cls[a]! & 3,
+    const ca = a === 0 ? BodyType.Static : cls[a]! & 3,
       cb = cls[b]! & 3;
-    const fixedA = ca >= Class.Static,
-      fixedB = cb >= Class.Static;
+    const fixedA = ca >= BodyType.Static,
+      fixedB = cb >= BodyType.Static;
     if (fixedA && fixedB) continue;
     let ia = 0,
       ib = 0;
@@ -185,7 +181,7 @@ export function gatherJointBodies(world: PhysicsWorld, count: number): number {
         list[count++] = e;
       }
       const k = cls[e]!;
-      if ((k & 3) === Class.Kinematic) {
+      if ((k & 3) === BodyType.Kinematic) {
         invMass[e] = 0;
         invInertia[e] = 0;
         type[e] = BodyType.Kinematic;

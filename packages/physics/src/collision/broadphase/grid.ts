@@ -1,5 +1,6 @@
 import type { PhysicsWorld } from '../../world/options.js';
 import { query } from '../../world/query.js';
+import { classifyDynamic, classifyRanked, lookUpBodyBits } from '../body-class.js';
 import { BodyType, type CollisionState, PairKind } from '../state.js';
 
 export { BodyType, PairKind } from '../state.js';
@@ -115,8 +116,7 @@ function addBallPair(world: PhysicsWorld, cs: CollisionState, e: number, f: numb
  */
 function wakeForContact(world: PhysicsWorld, cs: CollisionState, e: number): void {
   const c = world.components;
-  cs.bodyType[e] = BodyType.Dynamic;
-  cs.invMass[e] = c.Mass.inv[e]!;
+  classifyDynamic(world, e);
   const g = world.gravity,
     h = world.h;
   c.Velocity.x[e] = g[0]! * h;
@@ -194,6 +194,7 @@ export function broadphaseSystem(world: PhysicsWorld): void {
   const n = balls.length;
   cs.stats.pairs = 0;
   if (n === 0) return;
+  lookUpBodyBits(world);
   const reachSum = classifyBalls(world, balls);
   // Cell size from the reach of ordinary bodies; outliers go to the oversized list.
   const limit = OVERSIZED_FACTOR * (reachSum / n);
@@ -219,9 +220,9 @@ export function broadphaseSystem(world: PhysicsWorld): void {
 }
 
 /**
- * The per-body scratch the solver reads, for every ball: effective inverse mass and inertia (0 for
- * static and kinematic bodies), body type and speculative margin; a static ball's previous position
- * is where it is. Returns the sum of the balls' reaches (radius plus margin), m.
+ * The per-body scratch the solver reads, for every ball: body type, effective inverse mass and inertia
+ * (dynamic here, then classifyRanked's class for the static, kinematic and sleeping ones: 0) and
+ * speculative margin; a static ball's previous position is where it is. Needs lookUpBodyBits(world). Returns the sum of the balls' reaches (radius plus margin), m.
  */
 function classifyBalls(world: PhysicsWorld, balls: ArrayLike<number>): number {
   const c = world.components;
@@ -245,7 +246,7 @@ function classifyBalls(world: PhysicsWorld, balls: ArrayLike<number>): number {
   const mInv = c.Mass.inv;
   const halfSpec = 0.5 * cs.settings.speculativeDistance;
 
-  // Dynamic first, then overwrite the special cases.
+  // Dynamic first, then overwrite the others (collision/body-class.ts ranks them).
   let reachSum = 0;
   for (let i = 0; i < n; i++) {
     const e = balls[i]!;
@@ -268,26 +269,10 @@ function classifyBalls(world: PhysicsWorld, balls: ArrayLike<number>): number {
     const e = spinning[i]!;
     invInertia[e] = iInv[e]!;
   }
-  const kinematic = query(world, [c.Ball, c.Kinematic]);
-  for (let i = 0; i < kinematic.length; i++) {
-    const e = kinematic[i]!;
-    invMass[e] = 0;
-    invInertia[e] = 0;
-    type[e] = BodyType.Kinematic;
-  }
-  const sleeping = query(world, [c.Ball, c.Sleeping]);
-  for (let i = 0; i < sleeping.length; i++) {
-    const e = sleeping[i]!;
-    invMass[e] = 0;
-    type[e] = BodyType.Sleeping;
-  }
   cs.wakeCount = 0;
-  const fixed = query(world, [c.Ball, c.Position, c.Static]);
+  const fixed = classifyRanked(world, [c.Ball, c.Position]);
   for (let i = 0; i < fixed.length; i++) {
     const e = fixed[i]!;
-    invMass[e] = 0;
-    invInertia[e] = 0;
-    type[e] = BodyType.Static;
     margin[e] = Math.min(halfSpec, 0.25 * radius[e]!);
     // Static bodies are never integrated: where they are is where they were.
     ox[e] = px[e]!;
