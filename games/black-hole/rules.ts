@@ -177,12 +177,18 @@ export interface BlackHoleOptions {
    * a phone held upright plays a tall one. The start is at the middle of the bottom, 1.5 m up, and
    * the finish line 2 m below the top.
    */
-  field?: { readonly width: number; readonly height: number };
+  field?: FieldSize;
+}
+
+/** A playing field's size, m: x in [0, width], y in [0, height]. */
+export interface FieldSize {
+  readonly width: number;
+  readonly height: number;
 }
 
 /** Resolved options. */
 export type BlackHoleParams = Required<Omit<BlackHoleOptions, 'field'>> & {
-  readonly field: { readonly width: number; readonly height: number };
+  readonly field: FieldSize;
 };
 
 /** The state of a game: world, ship, holes, lives, score, last message. */
@@ -214,7 +220,7 @@ export interface BlackHoleGame {
   /** Generator of the layouts. */
   readonly rng: Rng;
   /** The playing field (`params.field`), m: x in [0, width], y in [0, height]. */
-  readonly field: { readonly width: number; readonly height: number };
+  readonly field: FieldSize;
   /** Where the ship starts, m: the middle of the field's bottom, 1.5 m up. */
   readonly start: readonly [number, number];
   /** The finish line: crossing y = lineY (m, 2 m below the top) scores. */

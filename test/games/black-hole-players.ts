@@ -13,6 +13,7 @@ import { canThrust, type LevelRun, startLevel, stepLevel } from '../../games/bla
 import {
   type BlackHoleGame,
   createBlackHoleGame,
+  type FieldSize,
   SHIP_RADIUS,
   setThrust,
   THRUST_DIRECTION,
@@ -131,13 +132,7 @@ const ARROWS: readonly Thrust[] = ['up', 'down', 'left', 'right', 'up-left', 'up
  * next choice is drawn in [0.75, 1.25] x react from an Rng seeded with `seed`.
  * @throws RangeError unless limit > 0 and the style's numbers are in range.
  */
-export function playLevel(
-  level: number,
-  seed: number,
-  style: PlayerStyle,
-  limit = 60,
-  field?: { readonly width: number; readonly height: number },
-): LevelOutcome {
+export function playLevel(level: number, seed: number, style: PlayerStyle, limit = 60, field?: FieldSize): LevelOutcome {
   if (!(limit > 0 && style.react > 0 && style.lag >= 0 && style.keep >= 0 && style.speed > 0))
     throw new RangeError(`playLevel: limit, react and speed must be > 0 and lag, keep >= 0, got ${limit}, ${JSON.stringify(style)}`);
   const g = createBlackHoleGame({ seed, lives: 9, ...(field ? { field } : {}) });
@@ -228,13 +223,7 @@ export interface LevelFigures {
  * `playLevel` on seeds 1 to `seeds` of level `level`: seeds cleared, the share of tries that cleared
  * and the mean times of the clears.
  */
-export function levelFigures(
-  level: number,
-  style: PlayerStyle,
-  seeds: number,
-  limit = 60,
-  field?: { readonly width: number; readonly height: number },
-): LevelFigures {
+export function levelFigures(level: number, style: PlayerStyle, seeds: number, limit = 60, field?: FieldSize): LevelFigures {
   let cleared = 0,
     tries = 0,
     time = 0,
