@@ -364,9 +364,13 @@ export function rampThrust(vec: [number, number], tx: number, ty: number, full: 
  * over) as `rampThrust` says. Runs in the forces stage. `engine` is the game (or the predictor, which
  * keeps its own copy of the engine).
  */
-function thrustLaw(game: BlackHoleGame, ship: number, engine: { readonly thrustVec: [number, number] }): (world: PhysicsWorld) => void {
+function thrustLaw(
+  game: BlackHoleGame,
+  ship: number,
+  engine: { readonly thrustVec: [number, number]; readonly letGo?: boolean },
+): (world: PhysicsWorld) => void {
   return (world) => {
-    const d = THRUST_DIRECTION[game.over ? 'none' : game.thrust];
+    const d = THRUST_DIRECTION[game.over || engine.letGo === true ? 'none' : game.thrust];
     const a = game.params.thrust;
     const v = engine.thrustVec;
     rampThrust(v, a * d[0], a * d[1], a, world.dt, game.params.sideRamp);
@@ -707,6 +711,8 @@ export interface Predictor {
   readonly holes: number[];
   /** The copy's engine (set from the game's at the start of each `predictPath`), m/s^2. */
   readonly thrustVec: [number, number];
+  /** Whether the copy's arrows are let go (past `predictPath`'s `thrustSteps`): its engine dies away. */
+  letGo: boolean;
 }
 
 /** Creates the predictor of `game` (its holes are copied on the first `predictPath`). */
@@ -719,7 +725,7 @@ export function createPredictor(game: BlackHoleGame): Predictor {
     integrator: game.world.integrator,
   });
   const ship = addBody(world, { position: game.start, mass: SHIP_MASS });
-  const pred: Predictor = { world, ship, version: -1, holes: [], thrustVec: [0, 0] };
+  const pred: Predictor = { world, ship, version: -1, holes: [], thrustVec: [0, 0], letGo: false };
   addSystem(world, 'forces', thrustLaw(game, ship, pred));
   return pred;
 }
@@ -747,12 +753,25 @@ function syncPredictor(game: BlackHoleGame, pred: Predictor): void {
  * 0: it stays put): the copy's holes drift as the game's do (`driftedX`, before each step). Positions
  * (m) go into `out` as x0, y0, x1, y1, ... starting with the ship's current position; the path stops
  * early where the ship touches a horizon on its way through a step (the game's test, `holeHit`; see
- * SHIP_RADIUS) or leaves the field.
+ * SHIP_RADIUS) or leaves the field. `thrustSteps` (default Infinity: held throughout) is how many of
+ * the steps the thrust is held: after them it is let go and the engine dies away as the game's does
+ * (a tap's thrust, which ends at a known step: ./press-timing.ts `releaseStep`).
  * @returns the number of points written (1 + steps taken), at most out.length / 2.
- * @throws RangeError unless steps is an integer in [1, 10_000].
+ * @throws RangeError unless steps is an integer in [1, 10_000] and thrustSteps >= 0 (an integer or Infinity).
  */
-export function predictPath(game: BlackHoleGame, pred: Predictor, out: Float64Array, steps = 60, holeVx?: readonly number[]): number {
+export function predictPath(
+  game: BlackHoleGame,
+  pred: Predictor,
+  out: Float64Array,
+  steps = 60,
+  holeVx?: readonly number[],
+  thrustSteps = Infinity,
+): number {
   check(Number.isInteger(steps) && steps >= 1 && steps <= 10_000, `predictPath: steps must be an integer in [1, 10000], got ${steps}`);
+  check(
+    thrustSteps === Infinity || (Number.isInteger(thrustSteps) && thrustSteps >= 0),
+    `predictPath: thrustSteps must be an integer >= 0 or Infinity, got ${thrustSteps}`,
+  );
   if (pred.version !== game.version) syncPredictor(game, pred);
   const w = pred.world,
     s = pred.ship;
@@ -791,6 +810,7 @@ export function predictPath(game: BlackHoleGame, pred: Predictor, out: Float64Ar
     }
   }
   while (n < max) {
+    pred.letGo = n > thrustSteps;
     if (drift) {
       for (let i = 0; i < pred.holes.length; i++) {
         if (drift[i] === 0) continue;
@@ -829,6 +849,7 @@ export function predictPath(game: BlackHoleGame, pred: Predictor, out: Float64Ar
     }
     if (inside || x < 0 || x > game.field.width || y < 0 || y > game.field.height) break;
   }
+  pred.letGo = false;
   return n;
 }
 

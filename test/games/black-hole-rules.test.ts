@@ -420,6 +420,30 @@ describe('thrust, exhaust, prediction', () => {
     expect(() => predictPath(g, pred, out, 0)).toThrow(/steps must be an integer in \[1, 10000\], got 0/);
   });
 
+  test('a predicted tap: the thrust held for thrustSteps steps and then let go is the path the ship takes', () => {
+    // A tap's 15 steps (./press-timing.ts TAP_STEPS) of ↑ from rest, then let go: the game step by step
+    // against the predictor told the let-go step; and the path held throughout goes farther up.
+    const g = createBlackHoleGame({ seed: 8, holes: 4 });
+    const pred = createPredictor(g);
+    place(g, 8, 4, 0, 0);
+    setThrust(g, 'up');
+    const out = new Float64Array(2 * 121),
+      held = new Float64Array(2 * 121);
+    const n = predictPath(g, pred, out, 120, undefined, 15);
+    const m = predictPath(g, pred, held, 120);
+    expect(n).toBe(121);
+    const P = g.world.components.Position;
+    for (let i = 1; i < n; i++) {
+      if (i === 16) setThrust(g, 'none');
+      expect(stepBlackHole(g)).toBe('none');
+      expect(P.x[slotOf(g.ship)]).toBe(out[2 * i]);
+      expect(P.y[slotOf(g.ship)]).toBe(out[2 * i + 1]);
+    }
+    // Held for the whole 2 s the ship climbs metres farther than after a tap (which gains about 0.4 m/s).
+    expect(held[2 * m - 1]! - out[2 * n - 1]!).toBeGreaterThan(3);
+    expect(() => predictPath(g, pred, out, 60, undefined, 1.5)).toThrow(/thrustSteps must be an integer >= 0 or Infinity, got 1.5/);
+  });
+
   test('the prediction stops at a horizon', () => {
     const g = createBlackHoleGame({ seed: 9, holes: 1 });
     const pred = createPredictor(g);
