@@ -63,7 +63,6 @@ import {
   type Predictor,
   pathEnd,
   predictPath,
-  THRUST_RAMP,
 } from './rules';
 import { nextHappening, pausedWords, type ShipHappening, touchStatusLines, waitWords } from './wait-words';
 
@@ -278,9 +277,8 @@ function createWorld(): PhysicsWorld {
     gScale: params.gScale,
     c: params.c,
     thrust: params.thrust,
-    // The same engine on every screen (a phone's sideways thrust once built more slowly, and a held
-    // arrow gained less speed a second there than on a desktop).
-    sideRamp: THRUST_RAMP.up,
+    // The engine's sideways build-up is the field's (./rules.ts NARROW_SIDE_RAMP on a phone's narrow
+    // field: a short hold of ← or → a small nudge there, a long one as strong for its width as here).
     field: playField,
   });
   run = levels ? startLevel(bh, continueLevel ?? params.level) : null;

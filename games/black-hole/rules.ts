@@ -103,6 +103,15 @@ export const SHIP_RADIUS = 0.3;
 export const THRUST_RAMP = Object.freeze({ trim: 0.4, gentle: 0.2, up: 0.4, down: 0.1 });
 
 /**
+ * The default `sideRamp` of a field narrower than `FIELD` (a phone held upright plays one 20 m wide),
+ * s: the sideways thrust grows at most at thrust / 0.9 = 6.7 m/s^3 there, so from rest a 0.5 s hold of
+ * → gains about 1 m/s (2 m/s at THRUST_RAMP.up: 10 m to the edge in some 5 s, or under 2 s where a
+ * loaded phone's hold ran long), a tap about 0.25 m/s, and an arrow held 1 s about 3.6 m/s: for the
+ * field's width, a little more than the 5 m/s the 32 m wide field's engine gives.
+ */
+export const NARROW_SIDE_RAMP = 0.9;
+
+/**
  * Thrust directions: none, one of the four arrows, or two arrows at right angles held together
  * (a diagonal, e.g. 'up-right').
  */
@@ -168,8 +177,9 @@ export interface BlackHoleOptions {
   lives?: number;
   /**
    * How long the sideways part of the thrust takes to build up, s, in [THRUST_RAMP.up, 2]: a gentler
-   * sideways engine for a narrow field (a phone's, where a brief tap of → would drift off the edge).
-   * Default THRUST_RAMP.up (the sideways part builds as fast as the rest). See `rampThrust`.
+   * sideways engine for a narrow field (a phone's, where a short hold of → drifted off the edge).
+   * Default NARROW_SIDE_RAMP on a field narrower than `FIELD`, else THRUST_RAMP.up (the sideways part
+   * builds as fast as the rest). See `rampThrust`.
    */
   sideRamp?: number;
   /**
@@ -247,7 +257,7 @@ export function resolveBlackHoleOptions(options: BlackHoleOptions = {}): BlackHo
     c: options.c ?? C_GAME,
     thrust: options.thrust ?? 6,
     lives: options.lives ?? 3,
-    sideRamp: options.sideRamp ?? THRUST_RAMP.up,
+    sideRamp: options.sideRamp ?? ((options.field?.width ?? FIELD.width) < FIELD.width ? NARROW_SIDE_RAMP : THRUST_RAMP.up),
     field: { width: options.field?.width ?? FIELD.width, height: options.field?.height ?? FIELD.height },
   };
   check(Number.isFinite(p.seed), `seed must be finite, got ${p.seed}`);
