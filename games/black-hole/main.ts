@@ -1706,7 +1706,12 @@ function drawCoach(x: number, sx: number, sy: number, k: number): void {
     bottom = cam.toScreenY(0) - 4 - coachText.height / 2;
   // Kept inside the field: a line wider than the room beside the ship slides toward the ship.
   const tx = right ? Math.min(sx + gap, x1 - coachText.width) : Math.max(sx - gap, x0 + coachText.width);
-  // Off the path's dots and the ship: beside the ship on the pad it would sit on the path holding ↗ (or ↖).
+  // Off the path's dots and the ship: beside the ship on the pad it would sit on the path holding ↗ (or ↖);
+  // and off the path's "falls in" (near a hole the two met, the label half hidden).
+  if (pathLabel.visible) {
+    const b = pathLabel.getBounds();
+    for (let fx = 0; fx <= 1; fx += 0.25) for (const fy of [0, 0.5, 1]) addDot(b.x + fx * b.width, b.y + fy * b.height);
+  }
   const fieldTop = cam.toScreenY(playField.height) + 4,
     fieldBottom = cam.toScreenY(0) - 4;
   placeOffDots(coachText, tx, Math.max(top, Math.min(bottom, sy - 0.2 * k)), x0, fieldTop, x1, fieldBottom);
