@@ -1743,7 +1743,7 @@ let pauseFit = '';
 
 /**
  * Shows `pauseLine` when `show`: its size fits the band above the finish line (at most 28 px, at
- * least 14, two thirds of the band's height) and the field's width.
+ * least 14, two thirds of the band's height) and the field's width; centred, or off a ship waiting in the band.
  */
 function drawPauseLine(show: boolean): void {
   pauseLine.visible = show;
@@ -1762,7 +1762,22 @@ function drawPauseLine(show: boolean): void {
     if (pauseLine.width > room) size = Math.max(12, Math.floor((size * room) / pauseLine.width));
     pauseLine.style.fontSize = size;
   }
-  pauseLine.position.set(cam.toScreenX(playField.width / 2), (top + line) / 2);
+  // Between levels the ship waits past the line, in the band: the words then stand beside it, on the
+  // roomier side, where they fit there, else just under the line (no play goes on there meanwhile).
+  let x = cam.toScreenX(playField.width / 2),
+    y = (top + line) / 2;
+  const sx = cam.toScreenX(lastShip[0]!),
+    x0 = cam.toScreenX(0),
+    x1 = cam.toScreenX(playField.width),
+    half = pauseLine.width / 2,
+    clear = shipPx + 8;
+  if (lastShip[1]! > bh.lineY - 1 && Math.abs(sx - x) < half + clear) {
+    const right = x1 - sx > sx - x0;
+    const [l, r] = right ? [sx + clear, x1 - 4] : [x0 + 4, sx - clear];
+    if (r - l >= 2 * half) x = (l + r) / 2;
+    else y = line + (line - top) / 2 + 4;
+  }
+  pauseLine.position.set(x, y);
 }
 
 /** Gap kept between the touch card and the field's frame and the finish line, px. */
