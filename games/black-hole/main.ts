@@ -26,7 +26,8 @@
  *
  * Drawn: nebulae behind the stars; each hole as a black disc of its Schwarzschild radius with a
  * photon ring, an orange glow and a tilted disc of hot gas whose clumps go round it; the exhaust
- * (particles, additive); the ship with a flame opposite its thrust; its predicted path for the next 3 s, integrated in a small second world
+ * (particles, additive); the ship with a flame opposite its thrust; its predicted path for the next 3 s (after a tap, with the
+ * thrust ending where the tap's does), integrated in a small second world
  * (rules.ts `predictPath`) and drawn as fading dots, red where it falls into a hole (a ring) or leaves the
  * field (a cross at the edge: the ship would be lost), blue where it reaches the finish line, grey where it runs on mid-field, undecided (on the pad, before the first thrust, the path holding ↑ would take, 3 s of it).
  */
@@ -62,9 +63,8 @@ import {
   type Predictor,
   pathEnd,
   predictPath,
-  THRUST_RAMP,
 } from './rules';
-import { nextHappening, pausedWords, type ShipHappening, waitWords } from './wait-words';
+import { nextHappening, pausedWords, type ShipHappening, touchStatusLines, waitWords } from './wait-words';
 
 const search = new URLSearchParams(location.search);
 /** Levels unless ?holes asks for the classic endless game. */
@@ -188,8 +188,8 @@ const PAD_SIDE_THRUSTS = ['up-left', 'up-right'] as const;
 const sidePath = new Float64Array(2 * (PAD_PATH_STEPS + 1));
 /**
  * Screen points, px, of what a caption must not cover this frame: every path dot drawn (the pad's side
- * paths too) and the ship (x0, y0, x1, y1, ...; `dotCount` of them). The coach, the path's "falls in"
- * and the pause's words are placed off them (`placeOffDots`).
+ * paths too) and the ship (x0, y0, x1, y1, ...; `dotCount` of them). The coach and the path's "falls in"
+ * are placed off them (`placeOffDots`).
  */
 const dots = new Float64Array(2 * (PATH_STEPS + 2 * PAD_PATH_STEPS + 16));
 let dotCount = 0;
@@ -277,9 +277,8 @@ function createWorld(): PhysicsWorld {
     gScale: params.gScale,
     c: params.c,
     thrust: params.thrust,
-    // The same engine on every screen (a phone's sideways thrust once built more slowly, and a held
-    // arrow gained less speed a second there than on a desktop).
-    sideRamp: THRUST_RAMP.up,
+    // The engine's sideways build-up is the field's (./rules.ts NARROW_SIDE_RAMP on a phone's narrow
+    // field: a short hold of ← or → a small nudge there, a long one as strong for its width as here).
     field: playField,
   });
   run = levels ? startLevel(bh, continueLevel ?? params.level) : null;
@@ -482,6 +481,21 @@ function endReady(): void {
   for (const at of pressedAt.values()) if (at.step >= READY_PENDING) [at.step, at.ms] = [now, Math.max(at.ms, performance.now())];
   for (const [dir, end] of tapEnds) if (end >= READY_PENDING) tapEnds.set(dir, now + TAP_STEPS);
   applyHeld();
+}
+
+/**
+ * Steps the thrust now runs on, for the predicted path: where every arrow thrusting is let go (a tap's
+ * or a press's tail, `tapEnds`), the steps to the last of their ends, so the path shows what the press
+ * will do, not a 3 s hold; Infinity while a key or finger still holds one (the path: held on).
+ */
+function thrustStepsLeft(): number {
+  let last = 0;
+  for (const dir of held) {
+    const end = tapEnds.get(dir);
+    if (end === undefined || end >= READY_PENDING) return Infinity;
+    last = Math.max(last, end);
+  }
+  return held.length === 0 ? Infinity : Math.max(0, last - bh.world.steps);
 }
 
 function applyHeld(): void {
@@ -871,6 +885,18 @@ function fitNumbers(parts: ReadonlyArray<readonly [string, boolean]>): void {
   if (!fits()) numbers.textContent = kept.map(([p]) => p).join('  ');
 }
 
+/**
+ * Writes the first of `lines` (longest first, ./wait-words.ts `touchStatusLines`) that fits the
+ * message row in two lines, else the last: a third line pushed the field's foot under the pad.
+ */
+function fitMessage(lines: readonly string[]): void {
+  const most = 2 * (Number.parseFloat(getComputedStyle(message).lineHeight) || 18) + 1;
+  for (const line of lines) {
+    message.textContent = line;
+    if (message.scrollHeight <= most) return;
+  }
+}
+
 function updateStatus(force = false): void {
   // The classic game's hole count follows the field (a crossing adds a hole).
   if (!levels && params.holes !== bh.holes.length && bh.holes.length > 0) {
@@ -904,18 +930,10 @@ function updateStatus(force = false): void {
   const said = replay.player ? (touch ? REPLAY_LINE.touch : REPLAY_LINE.keys) : bh.message;
   if (force || said !== shownMessage) {
     shownMessage = said;
-    // The rules speak of keys; on a touch screen a tap does the same. There a clear's line leaves out
-    // the time in all and how the points were made (the "+N" rising from the line shows them), so it
-    // keeps to the two lines the status row holds: a third pushed the field's foot under the pad.
-    message.textContent = replay.player
-      ? said
-      : touch
-        ? overMessage(bh.message)
-            .replace('Press Enter or R to play again.', 'Tap to play again.')
-            .replace('Press Enter for level', 'Tap for level')
-            .replace(/ \(\d+\.\d s in all, \d+ falls?\)/, '')
-            .replace(/ \(\d+ \+ \d+ speed bonus\)/, '')
-        : overMessage(bh.message);
+    // The rules speak of keys; on a touch screen a tap does the same, and a clear's line is shortened
+    // as far as it must to keep to the two lines the status row holds (`fitMessage`).
+    if (replay.player || !touch) message.textContent = replay.player ? said : overMessage(bh.message);
+    else fitMessage(touchStatusLines(overMessage(bh.message)));
   }
   status.classList.toggle('over', bh.over);
   status.classList.toggle('cleared', !bh.over && (run?.waiting ?? false));
@@ -1688,7 +1706,12 @@ function drawCoach(x: number, sx: number, sy: number, k: number): void {
     bottom = cam.toScreenY(0) - 4 - coachText.height / 2;
   // Kept inside the field: a line wider than the room beside the ship slides toward the ship.
   const tx = right ? Math.min(sx + gap, x1 - coachText.width) : Math.max(sx - gap, x0 + coachText.width);
-  // Off the path's dots and the ship: beside the ship on the pad it would sit on the path holding ↗ (or ↖).
+  // Off the path's dots and the ship: beside the ship on the pad it would sit on the path holding ↗ (or ↖);
+  // and off the path's "falls in" (near a hole the two met, the label half hidden).
+  if (pathLabel.visible) {
+    const b = pathLabel.getBounds();
+    for (let fx = 0; fx <= 1; fx += 0.25) for (const fy of [0, 0.5, 1]) addDot(b.x + fx * b.width, b.y + fy * b.height);
+  }
   const fieldTop = cam.toScreenY(playField.height) + 4,
     fieldBottom = cam.toScreenY(0) - 4;
   placeOffDots(coachText, tx, Math.max(top, Math.min(bottom, sy - 0.2 * k)), x0, fieldTop, x1, fieldBottom);
@@ -1697,10 +1720,65 @@ function drawCoach(x: number, sx: number, sy: number, k: number): void {
 /**
  * Over the field while paused: the scene dimmed and "Paused", so a pause is not taken for a hang. It
  * lies under the ship, the predicted path and the captions (the path stays bright while the player
- * thinks), and its words are moved off the path (`placeOffDots`).
+ * thinks); its words are drawn by the game in one line over the finish line (`pauseLine`).
  */
 const pause = createPauseOverlay({ label: 'paused', shadeAlpha: 0.35 });
 app.stage.addChildAt(pause.container, app.stage.getChildIndex(overlay));
+pause.words.visible = false;
+/**
+ * The pause's words in one line ("Paused: P to resume", the kit's two lines joined as `pausedWords`
+ * joins them), in a fixed place: centred in the band between the field's top and the finish line,
+ * where no hole, path to steer by or waiting ship is (placed off the path, they followed the ship
+ * about and sat over the holes). Drawn above everything on the field.
+ */
+const pauseLine = new Text({
+  text: '',
+  style: { fill: 0xffffff, fontWeight: '800', fontFamily: 'system-ui, sans-serif', stroke: { color: 0x000000, width: 5 } },
+});
+pauseLine.anchor.set(0.5);
+pauseLine.visible = false;
+app.stage.addChild(pauseLine);
+/** The field's width, px, and the words the pause line's size was last fitted to (`drawPauseLine`). */
+let pauseFit = '';
+
+/**
+ * Shows `pauseLine` when `show`: its size fits the band above the finish line (at most 28 px, at
+ * least 14, two thirds of the band's height) and the field's width; centred, or off a ship waiting in the band.
+ */
+function drawPauseLine(show: boolean): void {
+  pauseLine.visible = show;
+  if (!show) return;
+  const text = pause.text.split('\n').join(': ');
+  if (pauseLine.text !== text) pauseLine.text = text;
+  const cam = renderer.camera;
+  const top = cam.toScreenY(playField.height),
+    line = cam.toScreenY(bh.lineY),
+    room = cam.toScreenLength(playField.width) - 16;
+  const fit = `${room}:${line - top}:${text}`;
+  if (pauseFit !== fit) {
+    pauseFit = fit;
+    let size = Math.max(14, Math.min(28, Math.floor((2 / 3) * (line - top))));
+    pauseLine.style.fontSize = size;
+    if (pauseLine.width > room) size = Math.max(12, Math.floor((size * room) / pauseLine.width));
+    pauseLine.style.fontSize = size;
+  }
+  // Between levels the ship waits past the line, in the band: the words then stand beside it, on the
+  // roomier side, where they fit there, else just under the line (no play goes on there meanwhile).
+  let x = cam.toScreenX(playField.width / 2),
+    y = (top + line) / 2;
+  const sx = cam.toScreenX(lastShip[0]!),
+    x0 = cam.toScreenX(0),
+    x1 = cam.toScreenX(playField.width),
+    half = pauseLine.width / 2,
+    clear = shipPx + 8;
+  if (lastShip[1]! > bh.lineY - 1 && Math.abs(sx - x) < half + clear) {
+    const right = x1 - sx > sx - x0;
+    const [l, r] = right ? [sx + clear, x1 - 4] : [x0 + 4, sx - clear];
+    if (r - l >= 2 * half) x = (l + r) / 2;
+    else y = line + (line - top) / 2 + 4;
+  }
+  pauseLine.position.set(x, y);
+}
 
 /** Gap kept between the touch card and the field's frame and the finish line, px. */
 const HINT_LINE_GAP = 6;
@@ -1835,7 +1913,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
       }
       bh.thrust = 'up';
       pathPoints = predictPath(bh, predictor, path, steps, run?.holeVx);
-    } else pathPoints = predictPath(bh, predictor, path, steps, run?.holeVx);
+    } else pathPoints = predictPath(bh, predictor, path, steps, run?.holeVx, thrustStepsLeft());
     bh.thrust = liveThrust;
     padPath = fromPad;
     // A path that ends on a horizon is drawn red with a ring where it falls in, so the pull of a wall
@@ -1877,7 +1955,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   if (deathText.visible) pathLabel.visible = false;
   // One message at a time: paused over a fall's words (which then say it) or the game-over card, the
   // pause's own words are not drawn (the shade still dims the field).
-  pause.words.visible = !deathText.visible && !bh.over;
+  drawPauseLine(shell.paused && !deathText.visible && !bh.over);
   const age = performance.now() - swallow.start;
   if (swallow.active && age > SWALLOW_MS) swallow.active = false;
   if (swallow.active) {
@@ -1909,24 +1987,6 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   placeActionButton();
   drawScorePop();
   drawCoach(x, sx, sy, k);
-  if (shell.paused) {
-    // The pause's words off the path, its label and the ship, as near the field's middle as that allows.
-    if (pathLabel.visible) {
-      const b = pathLabel.getBounds();
-      for (const fx of [0, 0.5, 1]) for (const fy of [0, 1]) addDot(b.x + fx * b.width, b.y + fy * b.height);
-    }
-    // Nor over the level's title (read while paused), and first tried in the field's lowest quarter,
-    // under the holes (in the middle of the field they would hide them).
-    if (levelBanner.visible && levelBanner.alpha > 0) {
-      const b = levelBanner.getBounds();
-      for (let fx = 0; fx <= 1; fx += 0.125) for (let fy = 0; fy <= 1; fy += 0.25) addDot(b.x + fx * b.width, b.y + fy * b.height);
-    }
-    const fx0 = cam.toScreenX(0) + 4,
-      fx1 = cam.toScreenX(playField.width) - 4,
-      fy0 = cam.toScreenY(playField.height) + 4,
-      fy1 = cam.toScreenY(0) - 4;
-    placeOffDots(pause.words, 0.5 * (fx0 + fx1), fy0 + 0.75 * (fy1 - fy0), fx0, fy0, fx1, fy1, 16);
-  }
   // The engine's thrust now (it spools up and down): the flame points against it, as long as it is
   // strong, and the ship leans into it (up to LEAN rad at full sideways thrust).
   const [tx, ty] = bh.thrustVec;
@@ -2024,11 +2084,11 @@ shell.expose({
   pauseOverlay: (): { visible: boolean; text: string; words: boolean } => ({
     visible: pause.visible,
     text: pause.text,
-    words: pause.words.visible,
+    words: pauseLine.visible,
   }),
   /** The pause's words' box in the last frame, px in the canvas: [left, top, right, bottom]. */
   pauseWordsBox: (): number[] => {
-    const b = pause.words.getBounds();
+    const b = pauseLine.getBounds();
     return [b.x, b.y, b.x + b.width, b.y + b.height];
   },
   /** How many of the last frame's path dots and ship points (what captions keep off) lie in the box [l, t, r, b], px in the canvas. */

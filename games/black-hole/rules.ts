@@ -103,6 +103,15 @@ export const SHIP_RADIUS = 0.3;
 export const THRUST_RAMP = Object.freeze({ trim: 0.4, gentle: 0.2, up: 0.4, down: 0.1 });
 
 /**
+ * The default `sideRamp` of a field narrower than `FIELD` (a phone held upright plays one 20 m wide),
+ * s: the sideways thrust grows at most at thrust / 0.9 = 6.7 m/s^3 there, so from rest a 0.5 s hold of
+ * → gains about 1 m/s (2 m/s at THRUST_RAMP.up: 10 m to the edge in some 5 s, or under 2 s where a
+ * loaded phone's hold ran long), a tap about 0.25 m/s, and an arrow held 1 s about 3.6 m/s: for the
+ * field's width, a little more than the 5 m/s the 32 m wide field's engine gives.
+ */
+export const NARROW_SIDE_RAMP = 0.9;
+
+/**
  * Thrust directions: none, one of the four arrows, or two arrows at right angles held together
  * (a diagonal, e.g. 'up-right').
  */
@@ -168,8 +177,9 @@ export interface BlackHoleOptions {
   lives?: number;
   /**
    * How long the sideways part of the thrust takes to build up, s, in [THRUST_RAMP.up, 2]: a gentler
-   * sideways engine for a narrow field (a phone's, where a brief tap of → would drift off the edge).
-   * Default THRUST_RAMP.up (the sideways part builds as fast as the rest). See `rampThrust`.
+   * sideways engine for a narrow field (a phone's, where a short hold of → drifted off the edge).
+   * Default NARROW_SIDE_RAMP on a field narrower than `FIELD`, else THRUST_RAMP.up (the sideways part
+   * builds as fast as the rest). See `rampThrust`.
    */
   sideRamp?: number;
   /**
@@ -247,7 +257,7 @@ export function resolveBlackHoleOptions(options: BlackHoleOptions = {}): BlackHo
     c: options.c ?? C_GAME,
     thrust: options.thrust ?? 6,
     lives: options.lives ?? 3,
-    sideRamp: options.sideRamp ?? THRUST_RAMP.up,
+    sideRamp: options.sideRamp ?? ((options.field?.width ?? FIELD.width) < FIELD.width ? NARROW_SIDE_RAMP : THRUST_RAMP.up),
     field: { width: options.field?.width ?? FIELD.width, height: options.field?.height ?? FIELD.height },
   };
   check(Number.isFinite(p.seed), `seed must be finite, got ${p.seed}`);
@@ -364,9 +374,13 @@ export function rampThrust(vec: [number, number], tx: number, ty: number, full: 
  * over) as `rampThrust` says. Runs in the forces stage. `engine` is the game (or the predictor, which
  * keeps its own copy of the engine).
  */
-function thrustLaw(game: BlackHoleGame, ship: number, engine: { readonly thrustVec: [number, number] }): (world: PhysicsWorld) => void {
+function thrustLaw(
+  game: BlackHoleGame,
+  ship: number,
+  engine: { readonly thrustVec: [number, number]; readonly letGo?: boolean },
+): (world: PhysicsWorld) => void {
   return (world) => {
-    const d = THRUST_DIRECTION[game.over ? 'none' : game.thrust];
+    const d = THRUST_DIRECTION[game.over || engine.letGo === true ? 'none' : game.thrust];
     const a = game.params.thrust;
     const v = engine.thrustVec;
     rampThrust(v, a * d[0], a * d[1], a, world.dt, game.params.sideRamp);
@@ -707,6 +721,8 @@ export interface Predictor {
   readonly holes: number[];
   /** The copy's engine (set from the game's at the start of each `predictPath`), m/s^2. */
   readonly thrustVec: [number, number];
+  /** Whether the copy's arrows are let go (past `predictPath`'s `thrustSteps`): its engine dies away. */
+  letGo: boolean;
 }
 
 /** Creates the predictor of `game` (its holes are copied on the first `predictPath`). */
@@ -719,7 +735,7 @@ export function createPredictor(game: BlackHoleGame): Predictor {
     integrator: game.world.integrator,
   });
   const ship = addBody(world, { position: game.start, mass: SHIP_MASS });
-  const pred: Predictor = { world, ship, version: -1, holes: [], thrustVec: [0, 0] };
+  const pred: Predictor = { world, ship, version: -1, holes: [], thrustVec: [0, 0], letGo: false };
   addSystem(world, 'forces', thrustLaw(game, ship, pred));
   return pred;
 }
@@ -747,12 +763,25 @@ function syncPredictor(game: BlackHoleGame, pred: Predictor): void {
  * 0: it stays put): the copy's holes drift as the game's do (`driftedX`, before each step). Positions
  * (m) go into `out` as x0, y0, x1, y1, ... starting with the ship's current position; the path stops
  * early where the ship touches a horizon on its way through a step (the game's test, `holeHit`; see
- * SHIP_RADIUS) or leaves the field.
+ * SHIP_RADIUS) or leaves the field. `thrustSteps` (default Infinity: held throughout) is how many of
+ * the steps the thrust is held: after them it is let go and the engine dies away as the game's does
+ * (a tap's thrust, which ends at a known step: ./press-timing.ts `releaseStep`).
  * @returns the number of points written (1 + steps taken), at most out.length / 2.
- * @throws RangeError unless steps is an integer in [1, 10_000].
+ * @throws RangeError unless steps is an integer in [1, 10_000] and thrustSteps >= 0 (an integer or Infinity).
  */
-export function predictPath(game: BlackHoleGame, pred: Predictor, out: Float64Array, steps = 60, holeVx?: readonly number[]): number {
+export function predictPath(
+  game: BlackHoleGame,
+  pred: Predictor,
+  out: Float64Array,
+  steps = 60,
+  holeVx?: readonly number[],
+  thrustSteps = Infinity,
+): number {
   check(Number.isInteger(steps) && steps >= 1 && steps <= 10_000, `predictPath: steps must be an integer in [1, 10000], got ${steps}`);
+  check(
+    thrustSteps === Infinity || (Number.isInteger(thrustSteps) && thrustSteps >= 0),
+    `predictPath: thrustSteps must be an integer >= 0 or Infinity, got ${thrustSteps}`,
+  );
   if (pred.version !== game.version) syncPredictor(game, pred);
   const w = pred.world,
     s = pred.ship;
@@ -791,6 +820,7 @@ export function predictPath(game: BlackHoleGame, pred: Predictor, out: Float64Ar
     }
   }
   while (n < max) {
+    pred.letGo = n > thrustSteps;
     if (drift) {
       for (let i = 0; i < pred.holes.length; i++) {
         if (drift[i] === 0) continue;
@@ -829,6 +859,7 @@ export function predictPath(game: BlackHoleGame, pred: Predictor, out: Float64Ar
     }
     if (inside || x < 0 || x > game.field.width || y < 0 || y > game.field.height) break;
   }
+  pred.letGo = false;
   return n;
 }
 

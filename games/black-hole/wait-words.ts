@@ -68,3 +68,19 @@ export function pausedWords(words: string, pauseText: string): string {
   if (/ an arrow to fly on$/.test(lines[lines.length - 1]!)) lines.pop();
   return [...lines, pause].join('\n');
 }
+
+/**
+ * The status line `message` (the rules' words, for keys) as a touch screen says it, in the order to
+ * try, longest first: a tap for Enter; then, for the phone's two-line status row, shorter forms of a
+ * clear's line: without the time in all and the falls, then with the speed bonus named in one word
+ * ("+129 (100 + 29 bonus)"), then without how the points were made. The page shows the first that
+ * fits (a third line pushed the field under the pad), so a phone keeps the breakdown a desktop shows
+ * wherever it fits. Each form appears once (a line with no such parts gives one).
+ */
+export function touchStatusLines(message: string): string[] {
+  const tapped = message.replace('Press Enter or R to play again.', 'Tap to play again.').replace('Press Enter for level', 'Tap for level');
+  const noFalls = tapped.replace(/ \(\d+\.\d s in all, \d+ falls?\)/, '');
+  const shortBonus = noFalls.replace(/ \((\d+) \+ (\d+) speed bonus\)/, ' ($1 + $2 bonus)');
+  const noBonus = shortBonus.replace(/ \(\d+ \+ \d+ bonus\)/, '');
+  return [...new Set([tapped, noFalls, shortBonus, noBonus])];
+}

@@ -709,14 +709,28 @@ describe.each([
     }, null);
     expect(shown, device).toBe(touch ? 'Paused\n▶ to resume' : 'Paused\nP to resume');
     // Paused, the predicted path stays drawn (the pad's, before the first thrust), and the words cover
-    // none of its dots nor the ship (they sat on the path in the middle of the field).
+    // none of its dots nor the ship (they sat on the path in the middle of the field): they stand in
+    // one line in the band between the field's top and the finish line, at least 14 px tall.
     const paused = await p.waitFor(() => {
-      const w = window.game as unknown as Pause & { pathPoints(): number; pauseWordsBox(): number[]; dotsIn(...box: number[]): number };
+      type Cam = { toScreenY(y: number): number };
+      const w = window.game as unknown as Pause & {
+        pathPoints(): number;
+        pauseWordsBox(): number[];
+        dotsIn(...box: number[]): number;
+        renderer: { camera: Cam };
+        bh: { lineY: number; field: { height: number } };
+      };
       const box = w.pauseWordsBox();
-      return w.pauseOverlay().visible && box[2]! > box[0]! ? { points: w.pathPoints(), covered: w.dotsIn(...box) } : null;
+      const cam = w.renderer.camera;
+      return w.pauseOverlay().visible && box[2]! > box[0]!
+        ? { points: w.pathPoints(), covered: w.dotsIn(...box), box, band: [cam.toScreenY(w.bh.field.height), cam.toScreenY(w.bh.lineY)] }
+        : null;
     }, null);
     expect(paused.points, device).toBeGreaterThan(0);
     expect(paused.covered, device).toBe(0);
+    expect(paused.box[1]!, device).toBeGreaterThanOrEqual(paused.band[0]!);
+    expect(paused.box[3]!, device).toBeLessThanOrEqual(paused.band[1]! + 1);
+    expect(paused.box[3]! - paused.box[1]!, device).toBeGreaterThanOrEqual(14);
     await p.page.evaluate(() => {
       (window.game as unknown as Pause).paused = false;
     });

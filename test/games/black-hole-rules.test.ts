@@ -21,6 +21,7 @@ import {
   LINE_Y,
   layoutHoles,
   MAX_HOLES,
+  NARROW_SIDE_RAMP,
   pathEnd,
   predictPath,
   rampThrust,
@@ -373,6 +374,36 @@ describe('thrust, exhaust, prediction', () => {
     expect(() => createBlackHoleGame({ sideRamp: 0.1 })).toThrow(/sideRamp must be in \[0.4, 2\] s, got 0.1/);
   });
 
+  test('a narrow field (a phone’s) builds its sideways thrust over NARROW_SIDE_RAMP s: a 0.5 s hold of → is a small nudge', () => {
+    // A 0.5 s (30-step) hold of → from rest, then let go until the engine has died away. On a field
+    // narrower than FIELD the x part grows at 6 / NARROW_SIDE_RAMP m/s^3 (under the engine's own
+    // rates), so at the let-go it is 6 x 0.5 / 0.9 = 3.33 m/s^2 and the speed gained 6 / 0.9 x 0.5^2 / 2
+    // = 0.83 m/s, and dying away at 6 / THRUST_RAMP.down m/s^3 it adds 3.33^2 / (2 x 60) = 0.09 m/s;
+    // on FIELD the same hold gains rampGain(6, 0.5) = 1.68 m/s and 0.3 m/s more dying away from 6.
+    const hold = (field: { width: number; height: number }, dir: 'right' | 'up', sideRamp?: number) => {
+      const h = createBlackHoleGame({ seed: 6, holes: 1, thrust: 6, field, ...(sideRamp ? { sideRamp } : {}) });
+      const V = h.world.components.Velocity;
+      const v0 = dir === 'right' ? V.x[slotOf(h.ship)]! : V.y[slotOf(h.ship)]!;
+      setThrust(h, dir);
+      for (let i = 0; i < 30; i++) stepBlackHole(h);
+      setThrust(h, 'none');
+      for (let i = 0; i < 12; i++) stepBlackHole(h);
+      return [h.params.sideRamp, (dir === 'right' ? V.x[slotOf(h.ship)]! : V.y[slotOf(h.ship)]!) - v0];
+    };
+    const phone = { width: 20, height: 30 };
+    const [ramp, narrow] = hold(phone, 'right');
+    expect(ramp).toBe(NARROW_SIDE_RAMP);
+    const a = (6 * 0.5) / NARROW_SIDE_RAMP;
+    expect(Math.abs(narrow! - (a * 0.5) / 2 - a ** 2 / (2 * (6 / THRUST_RAMP.down)))).toBeLessThan(0.05);
+    const [wideRamp, wide] = hold(FIELD, 'right');
+    expect(wideRamp).toBe(THRUST_RAMP.up);
+    expect(Math.abs(wide! - rampGain(6, 0.5) - (6 * THRUST_RAMP.down) / 2)).toBeLessThan(0.1);
+    expect(narrow!).toBeLessThan(0.5 * wide!);
+    // Up is not sideways: on the narrow field the same with its default and with the wide field's
+    // engine given (sideRamp given wins over the field's default).
+    expect(hold(phone, 'up', THRUST_RAMP.up)).toEqual([THRUST_RAMP.up, hold(phone, 'up')[1]]);
+  });
+
   test('exhaust that crosses a horizon is swallowed', () => {
     const g = createBlackHoleGame({ seed: 7, holes: 1 });
     const P = g.world.components.Position,
@@ -418,6 +449,30 @@ describe('thrust, exhaust, prediction', () => {
       expect(P.x[slotOf(g.ship)]).toBe(out[2 * i]);
     }
     expect(() => predictPath(g, pred, out, 0)).toThrow(/steps must be an integer in \[1, 10000\], got 0/);
+  });
+
+  test('a predicted tap: the thrust held for thrustSteps steps and then let go is the path the ship takes', () => {
+    // A tap's 15 steps (./press-timing.ts TAP_STEPS) of ↑ from rest, then let go: the game step by step
+    // against the predictor told the let-go step; and the path held throughout goes farther up.
+    const g = createBlackHoleGame({ seed: 8, holes: 4 });
+    const pred = createPredictor(g);
+    place(g, 8, 4, 0, 0);
+    setThrust(g, 'up');
+    const out = new Float64Array(2 * 121),
+      held = new Float64Array(2 * 121);
+    const n = predictPath(g, pred, out, 120, undefined, 15);
+    const m = predictPath(g, pred, held, 120);
+    expect(n).toBe(121);
+    const P = g.world.components.Position;
+    for (let i = 1; i < n; i++) {
+      if (i === 16) setThrust(g, 'none');
+      expect(stepBlackHole(g)).toBe('none');
+      expect(P.x[slotOf(g.ship)]).toBe(out[2 * i]);
+      expect(P.y[slotOf(g.ship)]).toBe(out[2 * i + 1]);
+    }
+    // Held for the whole 2 s the ship climbs metres farther than after a tap (which gains about 0.4 m/s).
+    expect(held[2 * m - 1]! - out[2 * n - 1]!).toBeGreaterThan(3);
+    expect(() => predictPath(g, pred, out, 60, undefined, 1.5)).toThrow(/thrustSteps must be an integer >= 0 or Infinity, got 1.5/);
   });
 
   test('the prediction stops at a horizon', () => {

@@ -8,9 +8,9 @@
 
 import { setPosition, setVelocity } from '@bitphysics/physics';
 import { describe, expect, test } from 'vitest';
-import { beginLevel, startLevel, stepLevel } from '../../games/black-hole/levels';
+import { beginLevel, clearMessage, startLevel, stepLevel } from '../../games/black-hole/levels';
 import { createBlackHoleGame, setThrust } from '../../games/black-hole/rules';
-import { nextHappening, pausedWords, type ShipHappening, waitWords } from '../../games/black-hole/wait-words';
+import { nextHappening, pausedWords, type ShipHappening, touchStatusLines, waitWords } from '../../games/black-hole/wait-words';
 
 describe('black hole wait words', () => {
   test('a fall, a clear, the next level, a loss: the words follow the last event only', () => {
@@ -65,5 +65,30 @@ describe('black hole wait words', () => {
   test('bad lives throw, naming the function', () => {
     expect(() => waitWords('fell', { lives: -1, practice: false, touch: false })).toThrow(/waitWords: ctx.lives/);
     expect(waitWords('over', { lives: 0, practice: false, touch: false })).toBe('Swallowed!\nGame over');
+  });
+  test('touchStatusLines: a clear on a touch screen keeps the breakdown of its points in a shorter form before it drops it', () => {
+    const summary = {
+      level: 3,
+      time: 9.4,
+      totalTime: 21.7,
+      falls: 2,
+      points: 320,
+      levelPoints: 300,
+      bonus: 20,
+      lives: 2,
+      holes: 5,
+      fuelLeft: Infinity,
+    };
+    const line = clearMessage(summary, false, 4);
+    expect(line).toBe('Level 3 cleared in 9.4 s (21.7 s in all, 2 falls): +320 (300 + 20 speed bonus). Press Enter for level 4.');
+    expect(touchStatusLines(line)).toEqual([
+      'Level 3 cleared in 9.4 s (21.7 s in all, 2 falls): +320 (300 + 20 speed bonus). Tap for level 4.',
+      'Level 3 cleared in 9.4 s: +320 (300 + 20 speed bonus). Tap for level 4.',
+      'Level 3 cleared in 9.4 s: +320 (300 + 20 bonus). Tap for level 4.',
+      'Level 3 cleared in 9.4 s: +320. Tap for level 4.',
+    ]);
+    // Every form keeps the points, the level cleared and the tap; a line with nothing to shorten is one form.
+    for (const l of touchStatusLines(line)) expect(l).toMatch(/^Level 3 cleared in 9\.4 s.*\+320.*Tap for level 4\.$/);
+    expect(touchStatusLines('Game over. Press Enter or R to play again.')).toEqual(['Game over. Tap to play again.']);
   });
 });
