@@ -61,7 +61,7 @@ import {
   pauseUnderDrawers,
   seedParam,
 } from '@bitphysics/game-kit';
-import { startThreeGame } from '@bitphysics/game-kit/three';
+import { isSoftwareWebGL, SOFTWARE_PIXEL_RATIO, startThreeGame } from '@bitphysics/game-kit/three';
 import { createPhysicsWorld, type PhysicsWorld, setBodyThrust, setControlDeflection, step } from '@bitphysics/physics';
 import { AIRCRAFT, type AircraftHandles, aircraft, aircraftLevelDrag, terrainHeight } from '@bitphysics/projects';
 import {
@@ -133,7 +133,7 @@ import { labelClearOf, type ScreenBox } from './label-place';
 import { FRAME_CAP, STEPS_PER_FRAME, slowMotion } from './pacing';
 import { nearFade } from './ring-fade';
 import { offScreenLabel } from './ring-pointer';
-import { createScenery, HORIZON_COLOUR, SUN_DIRECTION } from './scenery';
+import { createScenery, HORIZON_COLOUR, SCENERY_DETAIL, SUN_DIRECTION } from './scenery';
 import { secondTry } from './second-try';
 import { clearPulse, createPulse, type Pulse, pressPulse, pulseOn, releasePulse } from './tap-latch';
 
@@ -749,7 +749,14 @@ const game = await startThreeGame({
       },
     },
   ],
-  app: { background: HORIZON_COLOUR, shadows: false, controls: false, fov: 64 },
+  // A phone's screen (3 device pixels a CSS pixel) is drawn at 1.5 at most: the frame's cost is its pixels.
+  app: {
+    background: HORIZON_COLOUR,
+    shadows: false,
+    controls: false,
+    fov: 64,
+    pixelRatio: isSoftwareWebGL() ? SOFTWARE_PIXEL_RATIO : Math.min(devicePixelRatio || 1, pageLayout().compact() ? 1.5 : 2),
+  },
   renderer: {
     unitsPerMeter: 1,
     boundary: 'none',
@@ -767,7 +774,14 @@ app.camera.near = 1;
 app.camera.far = 40_000;
 app.camera.updateProjectionMatrix();
 app.scene.add(new HemisphereLight(0xcfe6ff, 0x4a5a3a, 0.4));
-const scenery = createScenery(app.scene);
+/**
+ * The scenery's detail (./scenery.ts SCENERY_DETAIL): light on a phone (a narrow screen, `compact`),
+ * full on a desktop; ?detail=full or ?detail=light chooses.
+ */
+const sceneryDetail: keyof typeof SCENERY_DETAIL = ((d) => (d === 'full' || d === 'light' ? d : pageLayout().compact() ? 'light' : 'full'))(
+  new URLSearchParams(location.search).get('detail'),
+);
+const scenery = createScenery(app.scene, SCENERY_DETAIL[sceneryDetail]);
 scenery.setTerrain(handles.terrain, params.seed);
 
 // ---- The aircraft's looks (./aircraft-model.ts) ---------------------------------------------------
@@ -2079,8 +2093,8 @@ shell.expose({
   ringPointer: () => ({ ...ringAim }),
   /** The flight-path marker: visible, inside the next ring, its offset from the ring's centre (m), its place (px), the game time of the drawn frame that placed it (s). */
   pathMarker: () => ({ ...pathAim }),
-  /** Trees, houses and cloud puffs drawn now, the cloud layers' lowest and highest base (m). */
-  scenery: () => scenery.counts(),
+  /** Trees, houses and cloud puffs drawn now, the cloud layers' lowest and highest base (m), and the scenery's detail (./scenery.ts SCENERY_DETAIL). */
+  scenery: () => ({ ...scenery.counts(), detail: sceneryDetail }),
   /** The chase camera's distance from the drawn aircraft now, m (0 in the cockpit view or after a crash), and its offset now behind (-) and above, m. */
   chaseDistance: () => chaseDistance,
   chaseOffset: (): [number, number] => chaseOffsetNow(),
