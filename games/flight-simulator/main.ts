@@ -128,7 +128,7 @@ import {
   ringWay,
 } from './course';
 import { createCrash } from './crash';
-import { clockText, finishCard, nextSeed } from './finish';
+import { clockText, courseName, finishCard, LAST_SEED, nextSeed } from './finish';
 import { labelClearOf, type ScreenBox } from './label-place';
 import { FRAME_CAP, STEPS_PER_FRAME, slowMotion } from './pacing';
 import { nearFade } from './ring-fade';
@@ -990,7 +990,8 @@ const ONE_LINE = 'white-space: nowrap; overflow: hidden; text-overflow: ellipsis
 goalLine.style.cssText = `font-weight: 700; color: #ffd166; ${ONE_LINE}`;
 const readLine = document.createElement('div');
 readLine.dataset.hud = 'readout';
-readLine.style.cssText = ONE_LINE;
+// A phone's readout a pixel smaller than its goal line: its four figures fit the 390 px width with misses too.
+readLine.style.cssText = `${ONE_LINE}${compact ? ' font-size: 12px;' : ''}`;
 statusEl.append(goalLine, readLine);
 layout.status.append(statusEl);
 
@@ -1107,8 +1108,9 @@ function updateGoal(): void {
       : n < 0
         ? `${compact ? 'Done' : 'Course done'} · ${state.score} of ${total} rings in ${courseClock}`
         : compact
-          ? `Ring ${n + 1} of ${total} · ${distance} · ${courseClock}`
-          : `Fly through ring ${n + 1} of ${total} · ${distance} · ${courseClock}`;
+          ? // The course's number while the flight waits at its start (the line has no room for it in flight).
+            `${state.time === 0 ? `${courseName(params.seed, true)} · ` : ''}Ring ${n + 1} of ${total} · ${distance} · ${courseClock}`
+          : `${courseName(params.seed)} · Fly through ring ${n + 1} of ${total} · ${distance} · ${courseClock}`;
   if (goalLine.textContent !== text) goalLine.textContent = text;
   // Red for 2 s after a miss: the time it cost shows where the clock is.
   goalLine.style.color = shell.world.time - missedAt < 2 ? '#ff8a5a' : '#ffd166';
@@ -1125,10 +1127,11 @@ function updateHud(i: ReturnType<typeof instruments>): void {
   // The height above the ground (or the sea) under the aircraft, what keeps it off the hills: "alt"
   // counts from sea level, and a pilot reading it alone flew into a hill. Never below 0 (a crash).
   const aboveGround = `${Math.max(0, i.agl).toFixed(0)} m above ground`;
-  // On a phone the misses are said by the goal line's penalty and stars, not again here, and the
-  // height above the ground takes the sea-level altitude's place (the cockpit's gauge reads that).
+  // On a phone the line has room for the height above the ground (what keeps the aircraft off the
+  // hills), the rings and the misses (a first miss said nowhere else was unexplained) and the engine;
+  // the speed and the sea-level altitude are the cockpit's gauges.
   const read = compact
-    ? `${speed} · ${aboveGround} · engine ${(state.throttle * 100).toFixed(0)}% · rings ${state.score}/${total}`
+    ? `${aboveGround} · rings ${state.score}/${total}${missedNote} · engine ${(state.throttle * 100).toFixed(0)}%`
     : `${speed} · alt ${i.altitude.toFixed(0)} m · ${aboveGround} · throttle ${(state.throttle * 100).toFixed(0)}% · rings ${state.score}/${total}${missedNote}`;
   if (readLine.textContent !== read) readLine.textContent = read;
   if (!compact) {
@@ -1197,6 +1200,7 @@ function showFinish(): void {
     vsBest: lastVsBest,
     best: bestOf(),
     touch: touchFirst,
+    seed: params.seed,
   });
   showAgain(false);
   // Retry is R (the shell's reset) as well; Next course is Enter, which the card listens for while it shows.
@@ -2082,7 +2086,7 @@ const panel = createPanel(
     { type: 'checkbox', key: 'pilotPitch', label: "pilot's pitch (↓ pulls up)" },
     { type: 'slider', key: 'authority', label: 'control authority (°)', min: 5, max: 30, step: 1 },
     { type: 'slider', key: 'rings', min: 1, max: 30, step: 1, onChange: () => shell.reset() },
-    { type: 'slider', key: 'seed', min: 0, max: 1000, step: 1, onChange: () => shell.reset() },
+    { type: 'slider', key: 'seed', label: 'course', min: 1, max: LAST_SEED, step: 1, onChange: () => shell.reset() },
     { type: 'button', key: 'reset', label: 'reset (R)' },
   ],
   { title: 'Flight simulator' },
