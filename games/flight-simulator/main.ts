@@ -1234,9 +1234,9 @@ function updateBanner(t: number): void {
     banner.style.display = 'block';
     const text =
       last.relaid !== undefined
-        ? relayText(last.relaid, wayOf(last.relaid), compact)
+        ? relayText(last.relaid, spokenWay(last.relaid), compact)
         : last.next !== undefined
-          ? nextRingText(last.next, wayOf(last.next), compact)
+          ? nextRingText(last.next, spokenWay(last.next), compact)
           : last.text;
     if (banner.textContent !== text) banner.textContent = text;
     banner.style.color = last.colour;
@@ -1363,7 +1363,10 @@ function pointToNextRing(): void {
     rimAt.project(app.camera);
     const rPx = Math.hypot(((rimAt.x - ringAt.x) / 2) * w, ((rimAt.y - ringAt.y) / 2) * h);
     ringAim.ring = [x, y, rPx];
-    const r = Math.max(OUTLINE_LEAST, rPx);
+    // The outline's outer edge is the pass test's radius (./course.ts PASS_RADIUS), not the halo's: the
+    // marker inside the outline is green and the tip says "in it" (with the halo's, a marker between the
+    // two sat inside the outline, orange, under a tip still saying "until ⊕ is in it").
+    const r = Math.max(OUTLINE_LEAST, (rPx * PASS_RADIUS) / RING_OUTER);
     ringOutline.style.display = 'block';
     ringOutline.style.left = `${x}px`;
     ringOutline.style.top = `${y}px`;
@@ -1536,6 +1539,16 @@ function wayOf(i: number): RingWay {
   return ringWay(ringBearing(rings[i]!, now, [V.x[e]!, V.y[e]!, V.z[e]!]));
 }
 
+/**
+ * Which ways ring `i` lies as the words over the scene say it: for the coach's rings (from
+ * LESSON_RINGS on) while the marker shows the next one, from the marker's point (./coach.ts
+ * markerBearing), so the words agree with the screen; else from the line flown (`wayOf`). The coach's
+ * tip and the banner over it both read this, so the two never say different ways.
+ */
+function spokenWay(i: number): RingWay {
+  return i >= LESSON_RINGS && i === nextRing(rings) && markedAt ? ringWay(markerBearing(rings[i]!, markedAt)) : wayOf(i);
+}
+
 /** The key that climbs (up, or down with the pilot's pitch) or dives, for `up` +1 or -1. */
 function climbKey(up: number): string {
   return up > 0 !== params.pilotPitch ? '↑' : '↓';
@@ -1560,11 +1573,7 @@ function lessonTip(): string {
   if ((i === 0 && !holding) || shell.world.time >= tipGoneAt) return '';
   const reader = { touch: touchFirst, compact, pilotPitch: params.pilotPitch };
   // After the lessons the coach says where each ring lies and what to do, to the last (./coach.ts).
-  if (i >= LESSON_RINGS) {
-    // The ways from the marker's point when it shows one (./coach.ts markerBearing), so the words agree with the screen.
-    const way = markedAt ? ringWay(markerBearing(rings[i]!, markedAt)) : tipWay;
-    return courseTipText(i, rings.length, way, reader, pathAim.visible && pathAim.inside);
-  }
+  if (i >= LESSON_RINGS) return courseTipText(i, rings.length, spokenWay(i), reader, pathAim.visible && pathAim.inside);
   return lessonTipText(i, tipWay, reader);
 }
 
