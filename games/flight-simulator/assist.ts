@@ -386,24 +386,25 @@ export function approach(value: number, target: number, rate: number, dt: number
 }
 
 /**
- * How the keyboard's climb / dive and bank keys move their input (`rampKey`): a held key's input
- * grows as from (e^(rise t) - 1), slowly at first and then faster, the way a keyboard-flown sim
- * moves its control surface, so a tap asks for a small correction and a held key for full stick.
+ * How the keyboard's climb / dive keys move their input (`rampKey`): a press asks at once for
+ * `start`, then a held key's input grows as (start + from) e^(rise t) - from, faster and faster, the
+ * way a keyboard-flown sim moves its control surface, so a tap asks for a correction and a held key
+ * for full stick soon after. (Grown from nothing, the climb felt slow: the flight path was 2 degrees
+ * up 0.52 s after the press, and a 0.1 s tap lifted it 0.2 degrees; now 0.37 s and 1.1 degrees:
+ * scripts/flight-simulator-pitch.mjs.)
  */
 export const KEY_RAMP: KeyRamp = Object.freeze({
   /**
-   * Growth rate of a held key's input, 1/s: with `from` 0.25 it is full after ln 5 / 4 = 0.40 s of
-   * holding (as a straight ramp to full in 0.4 s is, so a held key banks as briskly), 0.12 after a
-   * 0.1 s tap and 0.31 after 0.2 s, so a tap gives a small bank and a hold a full one. (The straight
-   * ramp would give 0.25 for a 0.1 s tap, a bank all or nothing; one to full in 1.25 s is sluggish.)
+   * Growth rate of a held key's input, 1/s: from `start` 0.25 with `from` 0.25 it is full after
+   * ln 2.5 / 4 = 0.23 s of holding, 0.50 after a 0.1 s tap.
    */
   rise: 4,
   /** Where the growth starts from (added to the input's size), fraction of full stick. */
   from: 0.25,
-  /** Rate a released key's input returns to 0, and a reversed one crosses 0, 1/s: neutral in 0.25 s. */
-  fall: 4,
+  /** Rate a released key's input returns to 0, and a reversed one crosses 0, 1/s: neutral in 1/6 s (the climb held 1 s runs on 31 m after the release, under half a ring's radius). */
+  fall: 6,
   /** Input a press starts at, fraction of full stick. */
-  start: 0,
+  start: 0.25,
 });
 
 /** A key ramp (`rampKey`): growth rate `rise` 1/s from `from`, release rate `fall` 1/s, a press starting at `start` in [0, 1). */

@@ -7,8 +7,19 @@
 
 import { type BestResult, courseStars, courseTime, MISS_PENALTY } from './course';
 
-/** The panel's seed slider's largest seed: Next course after it goes back to 0. */
+/** The panel's seed slider's largest seed, and the number of courses: course n is seed n (1 to LAST_SEED); Next course after the last goes back to 1. */
 export const LAST_SEED = 1000;
+
+/**
+ * The course's name for seed `seed`: "Course 2 of 1000" for a seed in 1 to LAST_SEED (the courses
+ * Next course goes through), "Course 1234" for one outside them (from the address, ?seed=); with
+ * `short`, "Course 2" either way (a phone's header).
+ * @throws RangeError on a seed that is not an integer.
+ */
+export function courseName(seed: number, short = false): string {
+  if (!Number.isInteger(seed)) throw new RangeError(`courseName: seed must be an integer, got ${seed}`);
+  return short || seed < 1 || seed > LAST_SEED ? `Course ${seed}` : `Course ${seed} of ${LAST_SEED}`;
+}
 
 /** How a finished course went (`finishCard`). */
 export interface CourseResult {
@@ -26,15 +37,17 @@ export interface CourseResult {
   best: BestResult | null;
   /** Whether the page is used by touch (no key names on the buttons). */
   touch: boolean;
+  /** The course's seed (integer; course n is seed n: `courseName`). */
+  seed: number;
 }
 
 /** What the finish card shows. */
 export interface FinishCard {
-  /** 'Course complete!' (every ring passed) or 'Course over'. */
+  /** 'Course 2 complete!' (every ring passed) or 'Course 2 over'. */
   title: string;
   /** The result: rings passed, the course time (m:ss, penalties in) and the stars. */
   result: string;
-  /** The time's make-up when a ring was missed ('' otherwise), and the comparison with the best. */
+  /** The time's sum when a ring was missed ('' otherwise): "Time 1:33 + 50 s penalty (5 misses × 10 s) = 2:23"; and the comparison with the best. */
   detail: string;
   best: string;
   /** The stars earned, 0 to 3 (./course.ts courseStars). */
@@ -62,15 +75,18 @@ export function finishCard(r: CourseResult): FinishCard {
     );
   const again = r.again ?? 0;
   if (!(Number.isInteger(again) && again >= 0)) throw new RangeError(`finishCard: again must be an integer >= 0, got ${again}`);
-  const total = courseTime(r.flown, r.missed + again);
+  const slips = r.missed + again;
+  const total = courseTime(r.flown, slips);
   const stars = courseStars(r.missed);
-  const slips = [r.missed > 0 ? `${r.missed} missed` : '', again > 0 ? `${again} flown again` : ''].filter(Boolean).join(', ');
   const starText = '★'.repeat(stars) + '☆'.repeat(3 - stars);
   const keys = !r.touch;
+  const course = courseName(r.seed, true);
+  const penalty = `${MISS_PENALTY * slips} s penalty (${slips} miss${slips === 1 ? '' : 'es'} × ${MISS_PENALTY} s)`;
   return {
-    title: r.passed === r.total ? 'Course complete!' : 'Course over',
+    title: r.passed === r.total ? `${course} complete!` : `${course} over`,
     result: `${r.passed} of ${r.total} rings in ${clockText(total)}  ${starText}`,
-    detail: slips ? `${clockText(r.flown)} flown + ${MISS_PENALTY * (r.missed + again)} s for ${slips}` : '',
+    // The penalty is whole seconds, so the floored times add up.
+    detail: slips > 0 ? `Time ${clockText(r.flown)} + ${penalty} = ${clockText(total)}` : '',
     best:
       r.vsBest === 'better'
         ? 'A new best for this course!'
@@ -82,17 +98,17 @@ export function finishCard(r: CourseResult): FinishCard {
     stars,
     actions: [
       { action: 'retry', label: keys ? 'Retry ↺ (R)' : 'Retry ↺' },
-      { action: 'next', label: keys ? 'Next course ▶ (Enter)' : 'Next course ▶' },
+      { action: 'next', label: `Next: course ${nextSeed(r.seed)} ▶${keys ? ' (Enter)' : ''}` },
     ],
   };
 }
 
 /**
- * The seed of the course after `seed` (Next course): seed + 1, back to 0 past LAST_SEED (the panel's
- * slider's range) or below 0.
+ * The seed of the course after `seed` (Next course): seed + 1, back to 1 past LAST_SEED (the panel's
+ * slider's range) or below 1.
  * @throws RangeError on a seed that is not an integer.
  */
 export function nextSeed(seed: number): number {
   if (!Number.isInteger(seed)) throw new RangeError(`nextSeed: seed must be an integer, got ${seed}`);
-  return seed >= LAST_SEED || seed < 0 ? 0 : seed + 1;
+  return seed >= LAST_SEED || seed < 1 ? 1 : seed + 1;
 }

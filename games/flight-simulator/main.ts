@@ -61,7 +61,7 @@ import {
   pauseUnderDrawers,
   seedParam,
 } from '@bitphysics/game-kit';
-import { startThreeGame } from '@bitphysics/game-kit/three';
+import { isSoftwareWebGL, SOFTWARE_PIXEL_RATIO, startThreeGame } from '@bitphysics/game-kit/three';
 import { createPhysicsWorld, type PhysicsWorld, setBodyThrust, setControlDeflection, step } from '@bitphysics/physics';
 import { AIRCRAFT, type AircraftHandles, aircraft, aircraftLevelDrag, terrainHeight } from '@bitphysics/projects';
 import {
@@ -128,12 +128,12 @@ import {
   ringWay,
 } from './course';
 import { createCrash } from './crash';
-import { clockText, finishCard, nextSeed } from './finish';
+import { clockText, courseName, finishCard, LAST_SEED, nextSeed } from './finish';
 import { labelClearOf, type ScreenBox } from './label-place';
 import { FRAME_CAP, STEPS_PER_FRAME, slowMotion } from './pacing';
 import { nearFade } from './ring-fade';
 import { offScreenLabel } from './ring-pointer';
-import { createScenery, HORIZON_COLOUR, SUN_DIRECTION } from './scenery';
+import { createScenery, HORIZON_COLOUR, SCENERY_DETAIL, SUN_DIRECTION } from './scenery';
 import { secondTry } from './second-try';
 import { clearPulse, createPulse, type Pulse, pressPulse, pulseOn, releasePulse } from './tap-latch';
 
@@ -749,7 +749,14 @@ const game = await startThreeGame({
       },
     },
   ],
-  app: { background: HORIZON_COLOUR, shadows: false, controls: false, fov: 64 },
+  // A phone's screen (3 device pixels a CSS pixel) is drawn at 1.5 at most: the frame's cost is its pixels.
+  app: {
+    background: HORIZON_COLOUR,
+    shadows: false,
+    controls: false,
+    fov: 64,
+    pixelRatio: isSoftwareWebGL() ? SOFTWARE_PIXEL_RATIO : Math.min(devicePixelRatio || 1, pageLayout().compact() ? 1.5 : 2),
+  },
   renderer: {
     unitsPerMeter: 1,
     boundary: 'none',
@@ -767,7 +774,14 @@ app.camera.near = 1;
 app.camera.far = 40_000;
 app.camera.updateProjectionMatrix();
 app.scene.add(new HemisphereLight(0xcfe6ff, 0x4a5a3a, 0.4));
-const scenery = createScenery(app.scene);
+/**
+ * The scenery's detail (./scenery.ts SCENERY_DETAIL): light on a phone (a narrow screen, `compact`),
+ * full on a desktop; ?detail=full or ?detail=light chooses.
+ */
+const sceneryDetail: keyof typeof SCENERY_DETAIL = ((d) => (d === 'full' || d === 'light' ? d : pageLayout().compact() ? 'light' : 'full'))(
+  new URLSearchParams(location.search).get('detail'),
+);
+const scenery = createScenery(app.scene, SCENERY_DETAIL[sceneryDetail]);
 scenery.setTerrain(handles.terrain, params.seed);
 
 // ---- The aircraft's looks (./aircraft-model.ts) ---------------------------------------------------
@@ -976,7 +990,8 @@ const ONE_LINE = 'white-space: nowrap; overflow: hidden; text-overflow: ellipsis
 goalLine.style.cssText = `font-weight: 700; color: #ffd166; ${ONE_LINE}`;
 const readLine = document.createElement('div');
 readLine.dataset.hud = 'readout';
-readLine.style.cssText = ONE_LINE;
+// A phone's readout a pixel smaller than its goal line: its four figures fit the 390 px width with misses too.
+readLine.style.cssText = `${ONE_LINE}${compact ? ' font-size: 12px;' : ''}`;
 statusEl.append(goalLine, readLine);
 layout.status.append(statusEl);
 
@@ -1093,8 +1108,9 @@ function updateGoal(): void {
       : n < 0
         ? `${compact ? 'Done' : 'Course done'} · ${state.score} of ${total} rings in ${courseClock}`
         : compact
-          ? `Ring ${n + 1} of ${total} · ${distance} · ${courseClock}`
-          : `Fly through ring ${n + 1} of ${total} · ${distance} · ${courseClock}`;
+          ? // The course's number while the flight waits at its start (the line has no room for it in flight).
+            `${state.time === 0 ? `${courseName(params.seed, true)} · ` : ''}Ring ${n + 1} of ${total} · ${distance} · ${courseClock}`
+          : `${courseName(params.seed)} · Fly through ring ${n + 1} of ${total} · ${distance} · ${courseClock}`;
   if (goalLine.textContent !== text) goalLine.textContent = text;
   // Red for 2 s after a miss: the time it cost shows where the clock is.
   goalLine.style.color = shell.world.time - missedAt < 2 ? '#ff8a5a' : '#ffd166';
@@ -1111,10 +1127,11 @@ function updateHud(i: ReturnType<typeof instruments>): void {
   // The height above the ground (or the sea) under the aircraft, what keeps it off the hills: "alt"
   // counts from sea level, and a pilot reading it alone flew into a hill. Never below 0 (a crash).
   const aboveGround = `${Math.max(0, i.agl).toFixed(0)} m above ground`;
-  // On a phone the misses are said by the goal line's penalty and stars, not again here, and the
-  // height above the ground takes the sea-level altitude's place (the cockpit's gauge reads that).
+  // On a phone the line has room for the height above the ground (what keeps the aircraft off the
+  // hills), the rings and the misses (a first miss said nowhere else was unexplained) and the engine;
+  // the speed and the sea-level altitude are the cockpit's gauges.
   const read = compact
-    ? `${speed} · ${aboveGround} · engine ${(state.throttle * 100).toFixed(0)}% · rings ${state.score}/${total}`
+    ? `${aboveGround} · rings ${state.score}/${total}${missedNote} · engine ${(state.throttle * 100).toFixed(0)}%`
     : `${speed} · alt ${i.altitude.toFixed(0)} m · ${aboveGround} · throttle ${(state.throttle * 100).toFixed(0)}% · rings ${state.score}/${total}${missedNote}`;
   if (readLine.textContent !== read) readLine.textContent = read;
   if (!compact) {
@@ -1183,6 +1200,7 @@ function showFinish(): void {
     vsBest: lastVsBest,
     best: bestOf(),
     touch: touchFirst,
+    seed: params.seed,
   });
   showAgain(false);
   // Retry is R (the shell's reset) as well; Next course is Enter, which the card listens for while it shows.
@@ -1216,9 +1234,9 @@ function updateBanner(t: number): void {
     banner.style.display = 'block';
     const text =
       last.relaid !== undefined
-        ? relayText(last.relaid, wayOf(last.relaid), compact)
+        ? relayText(last.relaid, spokenWay(last.relaid), compact)
         : last.next !== undefined
-          ? nextRingText(last.next, wayOf(last.next), compact)
+          ? nextRingText(last.next, spokenWay(last.next), compact)
           : last.text;
     if (banner.textContent !== text) banner.textContent = text;
     banner.style.color = last.colour;
@@ -1345,7 +1363,10 @@ function pointToNextRing(): void {
     rimAt.project(app.camera);
     const rPx = Math.hypot(((rimAt.x - ringAt.x) / 2) * w, ((rimAt.y - ringAt.y) / 2) * h);
     ringAim.ring = [x, y, rPx];
-    const r = Math.max(OUTLINE_LEAST, rPx);
+    // The outline's outer edge is the pass test's radius (./course.ts PASS_RADIUS), not the halo's: the
+    // marker inside the outline is green and the tip says "in it" (with the halo's, a marker between the
+    // two sat inside the outline, orange, under a tip still saying "until ⊕ is in it").
+    const r = Math.max(OUTLINE_LEAST, (rPx * PASS_RADIUS) / RING_OUTER);
     ringOutline.style.display = 'block';
     ringOutline.style.left = `${x}px`;
     ringOutline.style.top = `${y}px`;
@@ -1518,6 +1539,16 @@ function wayOf(i: number): RingWay {
   return ringWay(ringBearing(rings[i]!, now, [V.x[e]!, V.y[e]!, V.z[e]!]));
 }
 
+/**
+ * Which ways ring `i` lies as the words over the scene say it: for the coach's rings (from
+ * LESSON_RINGS on) while the marker shows the next one, from the marker's point (./coach.ts
+ * markerBearing), so the words agree with the screen; else from the line flown (`wayOf`). The coach's
+ * tip and the banner over it both read this, so the two never say different ways.
+ */
+function spokenWay(i: number): RingWay {
+  return i >= LESSON_RINGS && i === nextRing(rings) && markedAt ? ringWay(markerBearing(rings[i]!, markedAt)) : wayOf(i);
+}
+
 /** The key that climbs (up, or down with the pilot's pitch) or dives, for `up` +1 or -1. */
 function climbKey(up: number): string {
   return up > 0 !== params.pilotPitch ? '↑' : '↓';
@@ -1542,11 +1573,7 @@ function lessonTip(): string {
   if ((i === 0 && !holding) || shell.world.time >= tipGoneAt) return '';
   const reader = { touch: touchFirst, compact, pilotPitch: params.pilotPitch };
   // After the lessons the coach says where each ring lies and what to do, to the last (./coach.ts).
-  if (i >= LESSON_RINGS) {
-    // The ways from the marker's point when it shows one (./coach.ts markerBearing), so the words agree with the screen.
-    const way = markedAt ? ringWay(markerBearing(rings[i]!, markedAt)) : tipWay;
-    return courseTipText(i, rings.length, way, reader, pathAim.visible && pathAim.inside);
-  }
+  if (i >= LESSON_RINGS) return courseTipText(i, rings.length, spokenWay(i), reader, pathAim.visible && pathAim.inside);
   return lessonTipText(i, tipWay, reader);
 }
 
@@ -2068,7 +2095,7 @@ const panel = createPanel(
     { type: 'checkbox', key: 'pilotPitch', label: "pilot's pitch (↓ pulls up)" },
     { type: 'slider', key: 'authority', label: 'control authority (°)', min: 5, max: 30, step: 1 },
     { type: 'slider', key: 'rings', min: 1, max: 30, step: 1, onChange: () => shell.reset() },
-    { type: 'slider', key: 'seed', min: 0, max: 1000, step: 1, onChange: () => shell.reset() },
+    { type: 'slider', key: 'seed', label: 'course', min: 1, max: LAST_SEED, step: 1, onChange: () => shell.reset() },
     { type: 'button', key: 'reset', label: 'reset (R)' },
   ],
   { title: 'Flight simulator' },
@@ -2079,8 +2106,8 @@ shell.expose({
   ringPointer: () => ({ ...ringAim }),
   /** The flight-path marker: visible, inside the next ring, its offset from the ring's centre (m), its place (px), the game time of the drawn frame that placed it (s). */
   pathMarker: () => ({ ...pathAim }),
-  /** Trees, houses and cloud puffs drawn now, the cloud layers' lowest and highest base (m). */
-  scenery: () => scenery.counts(),
+  /** Trees, houses and cloud puffs drawn now, the cloud layers' lowest and highest base (m), and the scenery's detail (./scenery.ts SCENERY_DETAIL). */
+  scenery: () => ({ ...scenery.counts(), detail: sceneryDetail }),
   /** The chase camera's distance from the drawn aircraft now, m (0 in the cockpit view or after a crash), and its offset now behind (-) and above, m. */
   chaseDistance: () => chaseDistance,
   chaseOffset: (): [number, number] => chaseOffsetNow(),

@@ -45,15 +45,37 @@ const ZENITH_COLOUR = 0x3f7fcf;
 /** Direction towards the sun (world, normalised where used): the same as the scene's light. */
 export const SUN_DIRECTION: readonly [number, number, number] = [0.4, 1, 0.3];
 
-/** Terrain grid: side, m, and cells a side. */
-const SIZE = 24_000,
-  SEGMENTS = 160;
-/** Cloud cells: side, m; clouds are kept within CLOUD_REACH cells of the aircraft's cell. */
-const CLOUD_CELL = 2000,
-  CLOUD_REACH = 5;
-/** Tree cells: side, m (at most one tree a cell), and how far from the aircraft trees are drawn, m. */
-const TREE_CELL = 70,
-  TREE_REACH = 2600;
+/** Terrain grid's side, m. */
+const SIZE = 24_000;
+/** Cloud cells' side, m. */
+const CLOUD_CELL = 2000;
+/** Tree cells' side, m (at most one tree a cell). */
+const TREE_CELL = 70;
+
+/** How much scenery is drawn round the aircraft (`SCENERY_DETAIL`). */
+export interface SceneryDetail {
+  /** Terrain grid cells a side (the grid is SIZE m a side), integer >= 8. */
+  segments: number;
+  /** Clouds are kept within this many CLOUD_CELL cells of the aircraft's cell, integer >= 1. */
+  cloudReach: number;
+  /** How far from the aircraft trees and villages are drawn, m. */
+  treeReach: number;
+  /** The haze: where it starts and where it hides everything, m from the camera. */
+  fogNear: number;
+  fogFar: number;
+}
+
+/**
+ * The scenery's two levels of detail. 'full' (a desktop): 51,000 terrain triangles, about 1,700 trees
+ * and 300 cloud puffs, 144,000 triangles a frame in all. 'light' (a phone): a coarser grid (the hills
+ * are smooth sums of sines, so 240 m cells still draw them), trees to 1.7 km and clouds to the haze,
+ * which comes nearer to hide the edge: about 64,000 triangles. Under software WebGL (SwiftShader) a
+ * phone's few pixels cost little and its frame is the triangles'.
+ */
+export const SCENERY_DETAIL: Readonly<Record<'full' | 'light', Readonly<SceneryDetail>>> = Object.freeze({
+  full: Object.freeze({ segments: 160, cloudReach: 5, treeReach: 2600, fogNear: 5000, fogFar: 17_000 }),
+  light: Object.freeze({ segments: 100, cloudReach: 3, treeReach: 1700, fogNear: 3000, fogFar: 8000 }),
+});
 /** Village cells: side, m (at most one village a cell), and the houses a village has at most. */
 const VILLAGE_CELL = 1500,
   VILLAGE_HOUSES = 14;
@@ -96,9 +118,10 @@ export interface Scenery {
   runway(): { x: number; y: number; z: number; heading: number };
 }
 
-/** Builds the scenery into `scene` (and sets its fog). */
-export function createScenery(scene: Scene): Scenery {
-  scene.fog = new Fog(HORIZON_COLOUR, 5000, 17_000);
+/** Builds the scenery into `scene` (and sets its fog), as much of it as `detail` says (default SCENERY_DETAIL.full). */
+export function createScenery(scene: Scene, detail: Readonly<SceneryDetail> = SCENERY_DETAIL.full): Scenery {
+  const { segments: SEGMENTS, cloudReach: CLOUD_REACH, treeReach: TREE_REACH } = detail;
+  scene.fog = new Fog(HORIZON_COLOUR, detail.fogNear, detail.fogFar);
 
   // Sky dome: a sphere seen from inside, each vertex coloured by its height (haze to zenith).
   const skyGeometry = new SphereGeometry(20_000, 32, 16);

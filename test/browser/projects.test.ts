@@ -718,7 +718,10 @@ describe('projects', () => {
     expect(await g.page.locator('[data-hud="ring-pointer"]').isVisible()).toBe(true);
     // The goal above the scene gives ring 1's distance as its label does (it said 2.0 km after a reset, the label 520 m).
     const distance = pointer.text.match(/\d+(\.\d)? k?m/)![0];
-    expect(await g.page.locator('[data-hud="goal"]').textContent()).toMatch(new RegExp(`^Fly through ring 1 of 10 · ${distance} · `));
+    // It names the course first (course n of the 1000 that Next course goes through is seed n; the page's seed is 1).
+    expect(await g.page.locator('[data-hud="goal"]').textContent()).toMatch(
+      new RegExp(`^Course 1 of 1000 · Fly through ring 1 of 10 · ${distance} · `),
+    );
     // The label is clear of the flight-path marker (34 x 20 px round its point) in the ring: it sat
     // 30 px under the ring's centre, over the marker's crosshair.
     const aim = await g.waitFor(() => {

@@ -54,7 +54,7 @@ import {
   ringWay,
   TIP_OFFSET,
 } from '../../games/flight-simulator/course';
-import { finishCard, LAST_SEED, nextSeed } from '../../games/flight-simulator/finish';
+import { courseName, finishCard, LAST_SEED, nextSeed } from '../../games/flight-simulator/finish';
 import { secondTry } from '../../games/flight-simulator/second-try';
 
 const terrain = aircraft.build(createPhysicsWorld(aircraft.worldOptions()), { seed: 3 }).terrain;
@@ -638,36 +638,43 @@ describe('flight simulator course', () => {
     expect(() => relayAfterMiss(rings, 3.5, [0, 0, 0], 0, terrain)).toThrow(/relayAfterMiss: from must be an integer, got 3.5/);
   });
 
-  it('the finish card: the course time with 10 s a miss, the stars, the best; Retry (R) and Next course (Enter), key names only with keys', () => {
-    const base = { passed: 10, total: 10, missed: 0, flown: 95.4, vsBest: 'not' as const, best: null, touch: false };
+  it('the finish card: the course number, the time as a sum with 10 s a miss, the stars, the best; Retry (R) and Next course (Enter), key names only with keys', () => {
+    const base = { passed: 10, total: 10, missed: 0, flown: 95.4, vsBest: 'not' as const, best: null, touch: false, seed: 1 };
     const clean = finishCard(base);
-    expect(clean.title).toBe('Course complete!');
+    expect(clean.title).toBe('Course 1 complete!');
     // 95.4 s is 1:35.
     expect(clean.result).toBe('10 of 10 rings in 1:35  ★★★');
     expect(clean.detail).toBe('');
     expect(clean.actions).toEqual([
       { action: 'retry', label: 'Retry ↺ (R)' },
-      { action: 'next', label: 'Next course ▶ (Enter)' },
+      { action: 'next', label: 'Next: course 2 ▶ (Enter)' },
     ]);
     // Three missed: 95.4 + 3 x 10 = 125.4 s is 2:05; two stars are lost (one per two misses, rounded up).
-    const missed = finishCard({ ...base, passed: 7, missed: 3, best: { passed: 9, time: 100 }, touch: true });
-    expect(missed.title).toBe('Course over');
+    const missed = finishCard({ ...base, passed: 7, missed: 3, best: { passed: 9, time: 100 }, touch: true, seed: 7 });
+    expect(missed.title).toBe('Course 7 over');
     expect(missed.result).toBe('7 of 10 rings in 2:05  ★☆☆');
     expect(missed.stars).toBe(1);
-    expect(missed.detail).toBe('1:35 flown + 30 s for 3 missed');
+    // The sum as a sum: flown time + penalty = the result's time.
+    expect(missed.detail).toBe('Time 1:35 + 30 s penalty (3 misses × 10 s) = 2:05');
     expect(missed.best).toBe('Best: 9 of 10 rings in 1:40');
-    expect(missed.actions.map((a) => a.label)).toEqual(['Retry ↺', 'Next course ▶']);
-    // Two rings flown again after a first miss (second-try.ts): 10 s each, no star.
+    expect(missed.actions.map((a) => a.label)).toEqual(['Retry ↺', 'Next: course 8 ▶']);
+    // Two rings flown again after a first miss (second-try.ts): 10 s each, no star; one miss is said as one.
     const tries = finishCard({ ...base, again: 2 });
     expect(tries.result).toBe('10 of 10 rings in 1:55  ★★★');
-    expect(tries.detail).toBe('1:35 flown + 20 s for 2 flown again');
-    expect(finishCard({ ...base, passed: 9, missed: 1, again: 1 }).detail).toBe('1:35 flown + 20 s for 1 missed, 1 flown again');
+    expect(tries.detail).toBe('Time 1:35 + 20 s penalty (2 misses × 10 s) = 1:55');
+    expect(finishCard({ ...base, passed: 9, missed: 1 }).detail).toBe('Time 1:35 + 10 s penalty (1 miss × 10 s) = 1:45');
     expect(() => finishCard({ ...base, again: -1 })).toThrow(/finishCard: again must be an integer >= 0/);
     expect(finishCard({ ...base, vsBest: 'better' }).best).toBe('A new best for this course!');
     expect(() => finishCard({ ...base, passed: 11 })).toThrow(/finishCard: passed and total/);
-    // Next course: the next seed, back to 0 past the panel's last.
+    // Course n is seed n, numbered out of the LAST_SEED that Next course goes through.
+    expect(courseName(2)).toBe(`Course 2 of ${LAST_SEED}`);
+    expect(courseName(2, true)).toBe('Course 2');
+    expect(courseName(LAST_SEED + 5)).toBe(`Course ${LAST_SEED + 5}`);
+    expect(() => courseName(0.5)).toThrow(/courseName: seed must be an integer, got 0.5/);
+    // Next course: the next seed, back to 1 past the panel's last.
     expect(nextSeed(1)).toBe(2);
-    expect(nextSeed(LAST_SEED)).toBe(0);
+    expect(nextSeed(LAST_SEED)).toBe(1);
+    expect(nextSeed(0)).toBe(1);
     expect(() => nextSeed(1.5)).toThrow(/nextSeed: seed must be an integer/);
   });
 });
