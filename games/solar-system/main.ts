@@ -134,7 +134,7 @@ import {
   starsFor,
   TARGET_TRACK,
 } from './missions';
-import { meetingPoint, pathDay } from './orbit-crossing';
+import { meetingPoint, orbitReach, pathDay } from './orbit-crossing';
 import { heldWaitRate, NEAR_WINDOW_DAYS, nextLaunchWindow, WAIT_TAP_DAYS } from './wait-pace';
 
 /** Scene units per display AU. */
@@ -374,8 +374,8 @@ const TRAIL_POINTS = 4096;
 /** The probe's flown path, heliocentric AU (x, y, z each), trailCount points. */
 const trail = new Float64Array(3 * TRAIL_POINTS);
 let trailCount = 0;
-/** The target's distance from the Sun at the last launch, AU (as the aim's verdict compares with it). */
-let launchTargetR = 1;
+/** The target's heliocentric state at the last launch (AU, AU/day): its orbit, as the map drew it and the forecast read it. */
+const launchTarget = new Float64Array(6);
 /** The date of the last launch, ms (Try again starts there). */
 let launchMs = 0;
 /** The rate of the flight under way, days/s (./missions.ts flightRate of its deadline). */
@@ -609,7 +609,7 @@ function launch(): void {
   planFlight(shell.world, handles, mission(), aim, plan);
   launchMs = handles.epoch + shell.world.time * 86_400_000;
   flight = launchProbe(shell.world, handles, mission(), aim, plan, baseStep());
-  launchTargetR = distanceFromSun(mission().target);
+  heliocentricState(shell.world, handles, handles.bodies[mission().target], launchTarget);
   flightDaysPerSecond = flightRate(flight.deadline);
   phase = 'flight';
   launches++;
@@ -620,6 +620,11 @@ function launch(): void {
   sound.launch(0.9);
   updateStatus(true);
 }
+/**
+ * The brief's line after a flight: what to do next (the way on, or the miss's fix), short. The header
+ * keeps its aiming height (`holdStatusHeight`); with no line there, a phone showed a blank band.
+ */
+let doneNote = '';
 /** After the probe arrived, fell into the Sun or missed: stars, sound, the result and its buttons. */
 function endOfFlight(): void {
   if (!flight) return;
@@ -643,6 +648,11 @@ function endOfFlight(): void {
     sound.chime(196, 0.6);
   }
   lastResult = flight.state === 'arrived' ? lastResult : null;
+  const next = MISSIONS[(missionIndex + 1) % MISSIONS.length]!;
+  doneNote =
+    flight.state === 'arrived'
+      ? `${named('Enter', 'Next mission')}: ${next.target} · ${named('T', 'Try again')} to score more`
+      : missAdvice(flight, true);
   showCard(flight);
   updateStatus(true);
 }
@@ -2329,7 +2339,7 @@ function updateStatus(force = false): void {
       : `${rate < 10 ? rate.toFixed(1) : Math.round(rate)} days a second${waiting ? (windowNearness < NEAR_WINDOW_DAYS ? ` (near ${m.target}’s window)` : ' (waiting)') : ''}`;
   const dateLine = `${date} · ${clock} · ${stars}`;
   const shownHint = hinting ? hintText : '';
-  const brief = phase === 'aim' ? (performance.now() < aimNoteUntil ? aimNote : m.brief) : '';
+  const brief = phase === 'aim' ? (performance.now() < aimNoteUntil ? aimNote : m.brief) : phase === 'done' ? doneNote : '';
   const key = `${goal}|${brief}|${line}|${cls}|${dateLine}|${phase}|${shownHint}`;
   if (!force && key === shownStatus) return;
   shownStatus = key;
@@ -2443,27 +2453,29 @@ function hideCard(): void {
 }
 
 /**
- * Why flight `f` (not arrived) failed, from its flown path (the trail) and the target's distance
- * from the Sun at the launch (as the aim's verdict says it), and what to change: a path that never reached the target's orbit wants more
- * speed, one that crossed it came at the wrong time (wait, or turn).
+ * Why flight `f` (not arrived) failed, from its flown path (the trail) against the target's orbit at
+ * the launch (the one the map drew and the forecast read, ./orbit-crossing.ts orbitReach), and what
+ * to change: a path that never reached the orbit wants more speed, one that reached it came at the
+ * wrong time (wait, or turn).
  */
-function missAdvice(f: Flight): string {
+function missAdvice(f: Flight, short = false): string {
   const m = f.mission;
-  if (f.state === 'sun') return 'It fell into the Sun: launch slower against the Earth’s path, or turn it more outwards.';
-  let far = 0,
-    near = Infinity;
-  for (let i = 0; i < trailCount; i++) {
-    const r = Math.hypot(trail[3 * i]!, trail[3 * i + 1]!, trail[3 * i + 2]!);
-    far = Math.max(far, r);
-    near = Math.min(near, r);
-  }
-  const rT = launchTargetR;
+  if (f.state === 'sun')
+    return short
+      ? 'Launch slower against the Earth’s path, or turn it outwards.'
+      : 'It fell into the Sun: launch slower against the Earth’s path, or turn it more outwards.';
   const outward = m.distance > 1;
+  const reach = orbitReach(trail, trailCount, launchTarget, sunMu(), m.zone, outward);
+  const t = m.target;
+  if (short)
+    return reach.reached
+      ? `It got to ${t}’s orbit at the wrong moment: wait, or turn the launch.`
+      : `Launch faster${outward ? '' : ' against the Earth’s path'}: it stopped short of ${t}’s orbit.`;
+  if (!reach.reached && outward)
+    return `It turned back ${reach.r.toFixed(2)} AU from the Sun, short of ${t}’s orbit there (${reach.orbit.toFixed(2)} AU): launch faster.`;
+  if (!reach.reached)
+    return `It fell in only to ${reach.r.toFixed(2)} AU from the Sun, short of ${t}’s orbit there (${reach.orbit.toFixed(2)} AU): launch faster against the Earth’s path.`;
   const near2 = missWords(f.closest, m.zone);
-  if (outward && far < rT - m.zone)
-    return `It turned back ${far.toFixed(2)} AU from the Sun, short of ${m.target}’s orbit (${rT.toFixed(2)} AU): launch faster.`;
-  if (!outward && near > rT + m.zone)
-    return `It fell in only to ${near.toFixed(2)} AU from the Sun; ${m.target} is at ${rT.toFixed(2)} AU: launch faster against the Earth’s path.`;
   return `It crossed ${m.target}’s orbit when ${m.target} was elsewhere (${near2}): wait for a better moment, turn the launch, or burn on the way.`;
 }
 
