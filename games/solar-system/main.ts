@@ -1370,14 +1370,26 @@ const dots = Object.fromEntries(
  * probe comes closest ("Mars at arrival") and the probe's place then ("probe then"), so a path
  * running through the target's ring of now does not read as a hit.
  */
+const TAG_STYLE =
+  'position: absolute; white-space: nowrap; padding: 0 4px; border-radius: 3px; background: rgba(8, 10, 16, 0.78); line-height: 16px; font-style: italic; display: none; pointer-events: none';
 const forecastTags = (['target-then', 'probe-then'] as const).map((name) => {
   const el = document.createElement('div');
   el.dataset.tag = name;
-  el.style.cssText =
-    'position: absolute; white-space: nowrap; padding: 0 4px; border-radius: 3px; background: rgba(8, 10, 16, 0.78); line-height: 16px; font-style: italic; display: none; pointer-events: none';
+  el.style.cssText = TAG_STYLE;
   labelLayer.append(el);
   return el;
 });
+/**
+ * Each forecast tag's text ('' hidden) and place (left, top, px) as this frame worked them out:
+ * shown with the dots and names, by `showOverlay`, when the frame's scene is drawn (moved at once,
+ * a tag sat by the aim's new dots while the canvas still showed the old ones, on a page drawing few
+ * frames).
+ */
+const tagShown = forecastTags.map(() => ({ text: '', x: 0, y: 0 }));
+/** A hidden copy of a tag: measures a tag's text before it is shown. */
+const tagMeasure = document.createElement('div');
+tagMeasure.style.cssText = `${TAG_STYLE}; display: block; visibility: hidden; left: -9999px; top: 0`;
+labelLayer.append(tagMeasure);
 
 /** Least gap between a forecast tag and the view's edge, px. */
 const TAG_MARGIN = 6;
@@ -1392,11 +1404,12 @@ const tagBoxes: number[] = [];
  * clears `tagBoxes` before the tags are placed.
  */
 function placeTag(i: number, text: string, x: number, y: number, z: number, below: number): void {
-  const el = forecastTags[i]!;
+  const shown = tagShown[i]!;
   v.set(x, y, z).project(app.camera);
   const show = text !== '' && v.z < 1 && Math.abs(v.x) < 1 && Math.abs(v.y) < 1;
-  el.style.display = show ? '' : 'none';
+  shown.text = show ? text : '';
   if (!show) return;
+  const el = tagMeasure;
   if (el.textContent !== text) el.textContent = text;
   const w = app.canvas.clientWidth,
     h = app.canvas.clientHeight;
@@ -1424,8 +1437,8 @@ function placeTag(i: number, text: string, x: number, y: number, z: number, belo
     if (clear) break;
   }
   tagBoxes.push(x0, y0, x0 + tw, y0 + th);
-  el.style.left = `${Math.round(x0)}px`;
-  el.style.top = `${Math.round(y0)}px`;
+  shown.x = Math.round(x0);
+  shown.y = Math.round(y0);
 }
 
 /** Labels placed this frame: left, top, right, bottom (px), four numbers each. */
@@ -1545,6 +1558,20 @@ const shownOnScreen = new Float64Array(4 * LABELS.length);
 /** Moves the dots and names to where `project` and `placeLabels` put them this frame. */
 function showOverlay(): void {
   shownOnScreen.set(onScreen);
+  forecastTags.forEach((el, i) => {
+    const t = tagShown[i]!;
+    el.style.display = t.text === '' ? 'none' : '';
+    if (t.text === '') return;
+    if (el.textContent !== t.text) el.textContent = t.text;
+    // The target's tag in the target's colour, the probe's white: each reads as its dot's.
+    const colour = i === 0 ? hex(COLOR[mission().target]) : '#ffffff';
+    if (el.dataset.colour !== colour) {
+      el.dataset.colour = colour;
+      el.style.color = colour;
+    }
+    el.style.left = `${t.x}px`;
+    el.style.top = `${t.y}px`;
+  });
   LABELS.forEach((name, i) => {
     const dot = dots[name].el;
     dot.style.display = dotShown[i] === 1 ? 'block' : 'none';
@@ -1659,7 +1686,7 @@ function drawLaunch(world: PhysicsWorld): void {
   trackDots.visible = false;
   probeThen.visible = false;
   targetThen.visible = false;
-  if (!planned) for (const el of forecastTags) el.style.display = 'none';
+  if (!planned) for (const t of tagShown) t.text = '';
   ghostOnScreen[3] = 0;
   missLine.visible = false;
   if (aiming) {
