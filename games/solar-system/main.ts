@@ -1928,7 +1928,8 @@ for (const type of ['pointerup', 'pointercancel'] as const)
 
 const style = document.createElement('style');
 style.textContent = `
-.ss-status { box-sizing: border-box; text-align: center; font: 13px/1.4 system-ui, sans-serif; color: #e8ecf1; padding: 6px 10px 4px; }
+/* Held at its tallest height (holdStatusHeight): a shorter phase's lines sit in the middle of it. */
+.ss-status { box-sizing: border-box; text-align: center; font: 13px/1.4 system-ui, sans-serif; color: #e8ecf1; padding: 6px 10px 4px; display: flex; flex-direction: column; justify-content: center; }
 .ss-status .ss-goal { font-weight: 700; color: #ffe066; font-size: 14px; }
 .ss-status .ss-stars { color: #ffd166; letter-spacing: 1px; }
 .ss-status .ss-brief { color: #cfd8e6; font-size: 12px; min-height: 1.4em; }
@@ -1963,6 +1964,8 @@ style.textContent = `
 @media (max-width: 440px) {
   /* The brief shows on a phone too, so the first mission's is seen, two lines kept. */
   .ss-status .ss-brief { min-height: 2.8em; }
+  /* (A flight's or a result's one-line note keeps no second line.) */
+  .ss-status .ss-brief.ss-note { min-height: 0; }
   .bp-touchbar.ss-pad { display: grid; grid-auto-flow: column; grid-auto-columns: auto; justify-content: stretch; gap: 4px; }
   .bp-touchbar.ss-pad button { min-width: 44px; padding: 0 3px; font-size: 14px; white-space: normal; line-height: 1.05; }
   .bp-touchbar.ss-pad button.ss-go { min-width: 44px; }
@@ -2366,13 +2369,25 @@ function updateStatus(force = false): void {
       : `${rate < 10 ? rate.toFixed(1) : Math.round(rate)} days a second${waiting ? (windowNearness < NEAR_WINDOW_DAYS ? ` (near ${m.target}’s window)` : ' (waiting)') : ''}`;
   const dateLine = `${date} · ${clock} · ${stars}`;
   const shownHint = hinting ? hintText : '';
-  const brief = phase === 'aim' ? (performance.now() < aimNoteUntil ? aimNote : m.brief) : phase === 'done' ? doneNote : '';
+  // In flight, what the four buttons (keys) do then, while there is fuel: they burn.
+  const flying = `Burns (${named('← → ↑ ↓', '◁ ▷ − +')}) bend the path onto ${m.target}’s ring`;
+  const brief =
+    phase === 'aim'
+      ? performance.now() < aimNoteUntil
+        ? aimNote
+        : m.brief
+      : phase === 'done'
+        ? doneNote
+        : flight && flight.fuelUsed < CORRECTION_FUEL
+          ? flying
+          : '';
   const key = `${goal}|${brief}|${line}|${cls}|${dateLine}|${phase}|${shownHint}`;
   if (!force && key === shownStatus) return;
   shownStatus = key;
   goalLine.textContent = goal;
   briefLine.textContent = brief;
-  // No brief in flight: the line goes (its kept height left a blank line under the goal).
+  briefLine.classList.toggle('ss-note', phase !== 'aim');
+  // No brief (in flight with the fuel gone): the line goes (its kept height left a blank line under the goal).
   briefLine.style.display = brief === '' ? 'none' : '';
   planText.textContent = line;
   planText.className = `ss-line ${cls}`;
