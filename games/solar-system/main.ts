@@ -868,6 +868,12 @@ let arrivalAt = -Infinity;
 
 // ---- Bodies on the display scale ---------------------------------------------------------------------
 
+/** Colour `c` (0xrrggbb) half way to white, each channel, as a CSS colour. */
+function towardWhite(c: number): string {
+  const mid = (shift: number): number => Math.round((((c >> shift) & 0xff) + 255) / 2);
+  return `rgb(${mid(16)}, ${mid(8)}, ${mid(0)})`;
+}
+
 /** A colour `c` with each channel scaled by `k` (clamped), as a CSS colour. */
 function shade(c: number, k: number): string {
   const ch = (shift: number) => Math.max(0, Math.min(255, Math.round(((c >> shift) & 255) * k)));
@@ -1563,8 +1569,9 @@ function showOverlay(): void {
     el.style.display = t.text === '' ? 'none' : '';
     if (t.text === '') return;
     if (el.textContent !== t.text) el.textContent = t.text;
-    // The target's tag in the target's colour, the probe's white: each reads as its dot's.
-    const colour = i === 0 ? hex(COLOR[mission().target]) : '#ffffff';
+    // The target's tag in the target's colour (half way to white: Mars's own red on the tag's dark
+    // box was 2.8:1, under the 4.5:1 legible text needs), the probe's white: each reads as its dot's.
+    const colour = i === 0 ? towardWhite(COLOR[mission().target]) : '#ffffff';
     if (el.dataset.colour !== colour) {
       el.dataset.colour = colour;
       el.style.color = colour;
