@@ -7,6 +7,10 @@
  * all through a drag), 'follow' (from the aim view to the castle as the stone crosses the field) and
  * 'castle' (the castle and the rock behind it, close: a phone's opening look at the target, its look
  * button, and a finished level's wreck).
+ *
+ * Upright, an aim view fitted to a far or wide castle draws it small (14 to 18 px a metre at 390 px
+ * wide); the page shows it again, close, in the earth under the ground while the player aims
+ * (`aimCloseUp`).
  */
 
 import { LAUNCH, ROCK } from './scene';
@@ -125,4 +129,23 @@ export function uprightAimView(f: Field, width: number, height: number): View {
 /** Upright, the castle's view: the castle, the rock behind it and room for debris (0.8 m before, 1 m past the rock). */
 export function uprightCastleView(f: Field, width: number, height: number): View {
   return uprightView(f, f.castleMinX - 0.8, rockRight(f.castleMaxX) + 1, width, height);
+}
+
+/**
+ * Upright, an aim view drawing fewer screen pixels a metre than this gets the castle's close-up in
+ * the earth under the ground while the player aims: at 14 to 18 px a metre (a far or wide castle
+ * on a 390 px screen) its planks were 3 px thick and its panes a few pixels, and the materials did
+ * not read; at level 1's 22 px a metre they do, and the earth stays plain.
+ */
+export const AIM_CLOSE_PX_PER_M = 20;
+
+/**
+ * Whether an upright screen (`width` x `height` px) shows the castle's close-up in the earth while
+ * the player aims at field `f`: when its aim view (`uprightAimView`) draws fewer than
+ * AIM_CLOSE_PX_PER_M pixels a metre.
+ * @throws RangeError as `uprightView` (the screen's size not positive).
+ */
+export function aimCloseUp(f: Field, width: number, height: number): boolean {
+  const v = uprightAimView(f, width, height);
+  return width / (v.maxX - v.minX) < AIM_CLOSE_PX_PER_M;
 }

@@ -35,6 +35,7 @@ import { contactEvents, createPhysicsWorld, isAlive, type PhysicsWorld, Rng, set
 import { Container, Graphics, Matrix, RenderTexture, Sprite, Text } from 'pixi.js';
 import { type Box, placeAimLabel } from './aim-label';
 import {
+  aimCloseUp,
   type CameraShot,
   cameraShot,
   type Field,
@@ -618,7 +619,8 @@ function frameCamera(): void {
   });
   // The look button while aiming (not in the level's opening look at the castle, nor while a throw
   // is followed): the castle close, the aim view holding it whole but small on the far levels.
-  showLook(upright() && !levelEnded && !shotView && (shot === 'aim' || peeking));
+  // (Not where the castle's close-up shows in the earth while aiming, drawCloseUp: it is the look.)
+  showLook(upright() && !levelEnded && !shotView && (peeking || (shot === 'aim' && !aimCloseUp(field(), cam.width, cam.height))));
   const target = shot === 'castle' ? shotViewRect() : shot === 'follow' ? followView() : aimView();
   const size = `${cam.width}x${cam.height}`;
   const k = size === framedFor ? 0.1 : 1;
@@ -1415,8 +1417,9 @@ function showAimDom(): void {
     const left = Math.min(x, centre - lw / 2);
     return { x: left, y: y - 6 - lh, w: Math.max(x + w, centre + lw / 2) - left, h: lh + 6 + AIM_BAR_H };
   };
+  // (Not under the ground while the castle's close-up is there, drawCloseUp.)
   const places = [Math.max(60, cam.toScreenY(3.2)), cam.toScreenY(0) + 24 + lh, Math.min(aim.y0, ey) - 24 - AIM_BAR_H].filter(
-    (y, k) => k === 0 || (boxAt(y).y >= 56 && y + AIM_BAR_H <= cam.height - AIM_EDGE),
+    (y, k) => k === 0 || (boxAt(y).y >= 56 && y + AIM_BAR_H <= cam.height - AIM_EDGE && !(k === 1 && closeWhileAiming)),
   );
   const y = places[placeAimLabel(places.map(boxAt), [aim.x0, aim.y0, ex, ey], AIM_CLEARANCE)]!;
   aimLabelBox = boxAt(y);
@@ -1565,8 +1568,10 @@ function drawPause(): void {
  * On an upright phone, once a throw stopped short with the castle off the screen (the camera
  * following it stopped before the castle), a close-up of the castle: the same scene CLOSE_MAX times
  * as large or less, as wide as the screen allows, framed and labelled, in the earth under the
- * ground or in the sky. Hidden while aiming (the aim view holds the whole castle: a close-up
- * repeated it under the arc's dots), when the level is over, and on other screens.
+ * ground or in the sky. While aiming, only where the aim view draws the castle small (./camera
+ * aimCloseUp: a far or wide castle) and only in the earth, out of the arc's way (in the sky it
+ * repeated the castle under the arc's dots), hidden while a pull's band crosses it; there it stands
+ * for the look button. Hidden when the level is over, and on other screens.
  *
  * The close-up's texture has one texel per CSS pixel whatever the screen's pixel ratio: at a phone's
  * ratio of 2 it would hold four times the texels, and under software WebGL (SwiftShader) rendering
@@ -1597,6 +1602,8 @@ const AIM_LABEL_ROOM = 64;
 let closeShown: { box: [number, number, number, number]; zoom: number; src: [number, number] } | null = null;
 /** How many times the close-up's texture has been drawn since the page loaded. */
 let closeDraws = 0;
+/** Whether the close-up shows in the earth while the player aims (drawAim then keeps the aim's numbers out of the earth). */
+let closeWhileAiming = false;
 /** Whether the close-up sits in the earth under the ground (out of a pull's way), not in the sky. */
 let closeLow = false;
 /**
@@ -1656,7 +1663,10 @@ function drawCloseUp(): void {
   const castleOff = cam.toScreenX(lv.castleMaxX) > cam.width && lastThrow.verdict !== '';
   // Not while aiming: the aim view holds the whole castle, and a close-up of it would repeat what
   // the field shows, under the arc's dots.
-  const show = upright() && !levelEnded && shotView && castleOff;
+  // While aiming at a castle the aim view draws small, once the camera is at rest on it.
+  const aiming =
+    upright() && !levelEnded && !shotView && !peeking && shot === 'aim' && cameraSettled && aimCloseUp(field(), cam.width, cam.height);
+  const show = upright() && !levelEnded && ((shotView && castleOff) || aiming);
   closeShown = null;
   if (show) {
     // The castle with room round it for what falls, from the ground (or a pit's floor) up.
@@ -1690,13 +1700,21 @@ function drawCloseUp(): void {
     // The place where it is the larger (the sky's when they are alike: a wide, low castle's close-up
     // there fills the sky over the field), unless a pull crosses it and not the other.
     const skyFirst = zoomIn(sky) >= 0.98 * zoomIn(earth);
-    const slot = crosses(skyFirst ? sky : earth) && !crosses(skyFirst ? earth : sky) ? (skyFirst ? earth : sky) : skyFirst ? sky : earth;
+    const slot = aiming
+      ? earth
+      : crosses(skyFirst ? sky : earth) && !crosses(skyFirst ? earth : sky)
+        ? skyFirst
+          ? earth
+          : sky
+        : skyFirst
+          ? sky
+          : earth;
     closeLow = slot === earth;
     const [top, bottom] = slot;
     const zoom = zoomIn(slot);
     // Shown when it magnifies enough, or whenever the castle is off the screen (upright, the aim view
     // frames the catapult: the close-up is where the castle shows).
-    if (zoom >= CLOSE_MIN || (zoom > 0.5 && sx + w > cam.width)) {
+    if (aiming ? zoom >= CLOSE_MIN && !crosses(earth) : zoom >= CLOSE_MIN || (zoom > 0.5 && sx + w > cam.width)) {
       const bw = Math.round(w * zoom),
         bh = Math.round(h * zoom);
       closeAge++;
@@ -1750,6 +1768,7 @@ function drawCloseUp(): void {
     closeSeen.length = 0;
   }
   closeSprite.visible = closeFrame.visible = closeLabel.visible = closeShown !== null;
+  closeWhileAiming = aiming && closeShown !== null;
 }
 
 /**

@@ -134,7 +134,7 @@ import {
   starsFor,
   TARGET_TRACK,
 } from './missions';
-import { meetingPoint, pathDay } from './orbit-crossing';
+import { meetingPoint, orbitReach, pathDay } from './orbit-crossing';
 import { heldWaitRate, NEAR_WINDOW_DAYS, nextLaunchWindow, WAIT_TAP_DAYS } from './wait-pace';
 
 /** Scene units per display AU. */
@@ -374,8 +374,8 @@ const TRAIL_POINTS = 4096;
 /** The probe's flown path, heliocentric AU (x, y, z each), trailCount points. */
 const trail = new Float64Array(3 * TRAIL_POINTS);
 let trailCount = 0;
-/** The target's distance from the Sun at the last launch, AU (as the aim's verdict compares with it). */
-let launchTargetR = 1;
+/** The target's heliocentric state at the last launch (AU, AU/day): its orbit, as the map drew it and the forecast read it. */
+const launchTarget = new Float64Array(6);
 /** The date of the last launch, ms (Try again starts there). */
 let launchMs = 0;
 /** The rate of the flight under way, days/s (./missions.ts flightRate of its deadline). */
@@ -609,7 +609,7 @@ function launch(): void {
   planFlight(shell.world, handles, mission(), aim, plan);
   launchMs = handles.epoch + shell.world.time * 86_400_000;
   flight = launchProbe(shell.world, handles, mission(), aim, plan, baseStep());
-  launchTargetR = distanceFromSun(mission().target);
+  heliocentricState(shell.world, handles, handles.bodies[mission().target], launchTarget);
   flightDaysPerSecond = flightRate(flight.deadline);
   phase = 'flight';
   launches++;
@@ -620,6 +620,11 @@ function launch(): void {
   sound.launch(0.9);
   updateStatus(true);
 }
+/**
+ * The brief's line after a flight: what to do next (the way on, or the miss's fix), short. The header
+ * keeps its aiming height (`holdStatusHeight`); with no line there, a phone showed a blank band.
+ */
+let doneNote = '';
 /** After the probe arrived, fell into the Sun or missed: stars, sound, the result and its buttons. */
 function endOfFlight(): void {
   if (!flight) return;
@@ -643,6 +648,11 @@ function endOfFlight(): void {
     sound.chime(196, 0.6);
   }
   lastResult = flight.state === 'arrived' ? lastResult : null;
+  const next = MISSIONS[(missionIndex + 1) % MISSIONS.length]!;
+  doneNote =
+    flight.state === 'arrived'
+      ? `${named('Enter', 'Next mission')}: ${next.target} · ${named('T', 'Try again')} to score more`
+      : missAdvice(flight, true);
   showCard(flight);
   updateStatus(true);
 }
@@ -857,6 +867,12 @@ const ARRIVAL_FLASH_MS = 1400;
 let arrivalAt = -Infinity;
 
 // ---- Bodies on the display scale ---------------------------------------------------------------------
+
+/** Colour `c` (0xrrggbb) half way to white, each channel, as a CSS colour. */
+function towardWhite(c: number): string {
+  const mid = (shift: number): number => Math.round((((c >> shift) & 0xff) + 255) / 2);
+  return `rgb(${mid(16)}, ${mid(8)}, ${mid(0)})`;
+}
 
 /** A colour `c` with each channel scaled by `k` (clamped), as a CSS colour. */
 function shade(c: number, k: number): string {
@@ -1360,14 +1376,26 @@ const dots = Object.fromEntries(
  * probe comes closest ("Mars at arrival") and the probe's place then ("probe then"), so a path
  * running through the target's ring of now does not read as a hit.
  */
+const TAG_STYLE =
+  'position: absolute; white-space: nowrap; padding: 0 4px; border-radius: 3px; background: rgba(8, 10, 16, 0.78); line-height: 16px; font-style: italic; display: none; pointer-events: none';
 const forecastTags = (['target-then', 'probe-then'] as const).map((name) => {
   const el = document.createElement('div');
   el.dataset.tag = name;
-  el.style.cssText =
-    'position: absolute; white-space: nowrap; padding: 0 4px; border-radius: 3px; background: rgba(8, 10, 16, 0.78); line-height: 16px; font-style: italic; display: none; pointer-events: none';
+  el.style.cssText = TAG_STYLE;
   labelLayer.append(el);
   return el;
 });
+/**
+ * Each forecast tag's text ('' hidden) and place (left, top, px) as this frame worked them out:
+ * shown with the dots and names, by `showOverlay`, when the frame's scene is drawn (moved at once,
+ * a tag sat by the aim's new dots while the canvas still showed the old ones, on a page drawing few
+ * frames).
+ */
+const tagShown = forecastTags.map(() => ({ text: '', x: 0, y: 0 }));
+/** A hidden copy of a tag: measures a tag's text before it is shown. */
+const tagMeasure = document.createElement('div');
+tagMeasure.style.cssText = `${TAG_STYLE}; display: block; visibility: hidden; left: -9999px; top: 0`;
+labelLayer.append(tagMeasure);
 
 /** Least gap between a forecast tag and the view's edge, px. */
 const TAG_MARGIN = 6;
@@ -1382,11 +1410,12 @@ const tagBoxes: number[] = [];
  * clears `tagBoxes` before the tags are placed.
  */
 function placeTag(i: number, text: string, x: number, y: number, z: number, below: number): void {
-  const el = forecastTags[i]!;
+  const shown = tagShown[i]!;
   v.set(x, y, z).project(app.camera);
   const show = text !== '' && v.z < 1 && Math.abs(v.x) < 1 && Math.abs(v.y) < 1;
-  el.style.display = show ? '' : 'none';
+  shown.text = show ? text : '';
   if (!show) return;
+  const el = tagMeasure;
   if (el.textContent !== text) el.textContent = text;
   const w = app.canvas.clientWidth,
     h = app.canvas.clientHeight;
@@ -1414,8 +1443,8 @@ function placeTag(i: number, text: string, x: number, y: number, z: number, belo
     if (clear) break;
   }
   tagBoxes.push(x0, y0, x0 + tw, y0 + th);
-  el.style.left = `${Math.round(x0)}px`;
-  el.style.top = `${Math.round(y0)}px`;
+  shown.x = Math.round(x0);
+  shown.y = Math.round(y0);
 }
 
 /** Labels placed this frame: left, top, right, bottom (px), four numbers each. */
@@ -1535,6 +1564,21 @@ const shownOnScreen = new Float64Array(4 * LABELS.length);
 /** Moves the dots and names to where `project` and `placeLabels` put them this frame. */
 function showOverlay(): void {
   shownOnScreen.set(onScreen);
+  forecastTags.forEach((el, i) => {
+    const t = tagShown[i]!;
+    el.style.display = t.text === '' ? 'none' : '';
+    if (t.text === '') return;
+    if (el.textContent !== t.text) el.textContent = t.text;
+    // The target's tag in the target's colour (half way to white: Mars's own red on the tag's dark
+    // box was 2.8:1, under the 4.5:1 legible text needs), the probe's white: each reads as its dot's.
+    const colour = i === 0 ? towardWhite(COLOR[mission().target]) : '#ffffff';
+    if (el.dataset.colour !== colour) {
+      el.dataset.colour = colour;
+      el.style.color = colour;
+    }
+    el.style.left = `${t.x}px`;
+    el.style.top = `${t.y}px`;
+  });
   LABELS.forEach((name, i) => {
     const dot = dots[name].el;
     dot.style.display = dotShown[i] === 1 ? 'block' : 'none';
@@ -1649,7 +1693,7 @@ function drawLaunch(world: PhysicsWorld): void {
   trackDots.visible = false;
   probeThen.visible = false;
   targetThen.visible = false;
-  if (!planned) for (const el of forecastTags) el.style.display = 'none';
+  if (!planned) for (const t of tagShown) t.text = '';
   ghostOnScreen[3] = 0;
   missLine.visible = false;
   if (aiming) {
@@ -1891,7 +1935,8 @@ for (const type of ['pointerup', 'pointercancel'] as const)
 
 const style = document.createElement('style');
 style.textContent = `
-.ss-status { box-sizing: border-box; text-align: center; font: 13px/1.4 system-ui, sans-serif; color: #e8ecf1; padding: 6px 10px 4px; }
+/* Held at its tallest height (holdStatusHeight): a shorter phase's lines sit in the middle of it. */
+.ss-status { box-sizing: border-box; text-align: center; font: 13px/1.4 system-ui, sans-serif; color: #e8ecf1; padding: 6px 10px 4px; display: flex; flex-direction: column; justify-content: center; }
 .ss-status .ss-goal { font-weight: 700; color: #ffe066; font-size: 14px; }
 .ss-status .ss-stars { color: #ffd166; letter-spacing: 1px; }
 .ss-status .ss-brief { color: #cfd8e6; font-size: 12px; min-height: 1.4em; }
@@ -1926,6 +1971,8 @@ style.textContent = `
 @media (max-width: 440px) {
   /* The brief shows on a phone too, so the first mission's is seen, two lines kept. */
   .ss-status .ss-brief { min-height: 2.8em; }
+  /* (A flight's or a result's one-line note keeps no second line.) */
+  .ss-status .ss-brief.ss-note { min-height: 0; }
   .bp-touchbar.ss-pad { display: grid; grid-auto-flow: column; grid-auto-columns: auto; justify-content: stretch; gap: 4px; }
   .bp-touchbar.ss-pad button { min-width: 44px; padding: 0 3px; font-size: 14px; white-space: normal; line-height: 1.05; }
   .bp-touchbar.ss-pad button.ss-go { min-width: 44px; }
@@ -2329,13 +2376,25 @@ function updateStatus(force = false): void {
       : `${rate < 10 ? rate.toFixed(1) : Math.round(rate)} days a second${waiting ? (windowNearness < NEAR_WINDOW_DAYS ? ` (near ${m.target}’s window)` : ' (waiting)') : ''}`;
   const dateLine = `${date} · ${clock} · ${stars}`;
   const shownHint = hinting ? hintText : '';
-  const brief = phase === 'aim' ? (performance.now() < aimNoteUntil ? aimNote : m.brief) : '';
+  // In flight, what the four buttons (keys) do then, while there is fuel: they burn.
+  const flying = `Burns (${named('← → ↑ ↓', '◁ ▷ − +')}) bend the path onto ${m.target}’s ring`;
+  const brief =
+    phase === 'aim'
+      ? performance.now() < aimNoteUntil
+        ? aimNote
+        : m.brief
+      : phase === 'done'
+        ? doneNote
+        : flight && flight.fuelUsed < CORRECTION_FUEL
+          ? flying
+          : '';
   const key = `${goal}|${brief}|${line}|${cls}|${dateLine}|${phase}|${shownHint}`;
   if (!force && key === shownStatus) return;
   shownStatus = key;
   goalLine.textContent = goal;
   briefLine.textContent = brief;
-  // No brief in flight: the line goes (its kept height left a blank line under the goal).
+  briefLine.classList.toggle('ss-note', phase !== 'aim');
+  // No brief (in flight with the fuel gone): the line goes (its kept height left a blank line under the goal).
   briefLine.style.display = brief === '' ? 'none' : '';
   planText.textContent = line;
   planText.className = `ss-line ${cls}`;
@@ -2443,27 +2502,29 @@ function hideCard(): void {
 }
 
 /**
- * Why flight `f` (not arrived) failed, from its flown path (the trail) and the target's distance
- * from the Sun at the launch (as the aim's verdict says it), and what to change: a path that never reached the target's orbit wants more
- * speed, one that crossed it came at the wrong time (wait, or turn).
+ * Why flight `f` (not arrived) failed, from its flown path (the trail) against the target's orbit at
+ * the launch (the one the map drew and the forecast read, ./orbit-crossing.ts orbitReach), and what
+ * to change: a path that never reached the orbit wants more speed, one that reached it came at the
+ * wrong time (wait, or turn).
  */
-function missAdvice(f: Flight): string {
+function missAdvice(f: Flight, short = false): string {
   const m = f.mission;
-  if (f.state === 'sun') return 'It fell into the Sun: launch slower against the Earth’s path, or turn it more outwards.';
-  let far = 0,
-    near = Infinity;
-  for (let i = 0; i < trailCount; i++) {
-    const r = Math.hypot(trail[3 * i]!, trail[3 * i + 1]!, trail[3 * i + 2]!);
-    far = Math.max(far, r);
-    near = Math.min(near, r);
-  }
-  const rT = launchTargetR;
+  if (f.state === 'sun')
+    return short
+      ? 'Launch slower against the Earth’s path, or turn it outwards.'
+      : 'It fell into the Sun: launch slower against the Earth’s path, or turn it more outwards.';
   const outward = m.distance > 1;
+  const reach = orbitReach(trail, trailCount, launchTarget, sunMu(), m.zone, outward);
+  const t = m.target;
+  if (short)
+    return reach.reached
+      ? `It got to ${t}’s orbit at the wrong moment: wait, or turn the launch.`
+      : `Launch faster${outward ? '' : ' against the Earth’s path'}: it stopped short of ${t}’s orbit.`;
+  if (!reach.reached && outward)
+    return `It turned back ${reach.r.toFixed(2)} AU from the Sun, short of ${t}’s orbit there (${reach.orbit.toFixed(2)} AU): launch faster.`;
+  if (!reach.reached)
+    return `It fell in only to ${reach.r.toFixed(2)} AU from the Sun, short of ${t}’s orbit there (${reach.orbit.toFixed(2)} AU): launch faster against the Earth’s path.`;
   const near2 = missWords(f.closest, m.zone);
-  if (outward && far < rT - m.zone)
-    return `It turned back ${far.toFixed(2)} AU from the Sun, short of ${m.target}’s orbit (${rT.toFixed(2)} AU): launch faster.`;
-  if (!outward && near > rT + m.zone)
-    return `It fell in only to ${near.toFixed(2)} AU from the Sun; ${m.target} is at ${rT.toFixed(2)} AU: launch faster against the Earth’s path.`;
   return `It crossed ${m.target}’s orbit when ${m.target} was elsewhere (${near2}): wait for a better moment, turn the launch, or burn on the way.`;
 }
 

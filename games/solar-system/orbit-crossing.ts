@@ -61,6 +61,59 @@ export function orbitRadiusToward(state: ArrayLike<number>, mu: number, x: numbe
   return q > 0 ? h2 / mu / q : Infinity;
 }
 
+/** How near a flown path came to a target's orbit, radially (`orbitReach`). */
+export interface OrbitReach {
+  /** Whether some point of the path got to within `zone` of the orbit, or past it. */
+  reached: boolean;
+  /** The Sun distance of the path's point nearest the orbit (or farthest past it), AU. */
+  r: number;
+  /** The orbit's radius in that point's direction (`orbitRadiusToward`), AU. */
+  orbit: number;
+}
+
+/**
+ * Whether the flown path `path` (heliocentric x, y, z per point, AU; its first `points` points) got
+ * out to (`outward`) or in to (not `outward`) the orbit of the target whose heliocentric state at
+ * the launch is `target`, within `zone` AU: the orbit the map drew and the forecast read ("is at
+ * Mars's orbit on day 309"), so a miss's advice agrees with it. The target's distance from the Sun
+ * at the launch said "short of Mars's orbit (1.66 AU)" of a path that crossed the drawn orbit at 1.45 AU.
+ * @returns the reach: reached, and the point of the path that came nearest the orbit (or went
+ *   farthest past it) with the orbit's radius there; r = orbit = NaN for no points.
+ * @throws RangeError naming the parameter when points is negative, not an integer or beyond the
+ *   path, or zone is negative or not finite (and as `orbitRadiusToward` for mu and the target).
+ */
+export function orbitReach(
+  path: ArrayLike<number>,
+  points: number,
+  target: ArrayLike<number>,
+  mu: number,
+  zone: number,
+  outward: boolean,
+): OrbitReach {
+  if (!(Number.isInteger(points) && points >= 0 && 3 * points <= path.length))
+    throw new RangeError(`orbitReach: points must be an integer in [0, ${Math.floor(path.length / 3)}], got ${points}`);
+  if (!(zone >= 0 && Number.isFinite(zone))) throw new RangeError(`orbitReach: zone must be finite and >= 0, got ${zone}`);
+  let best = -Infinity,
+    r = Number.NaN,
+    orbit = Number.NaN;
+  for (let i = 0; i < points; i++) {
+    const x = path[3 * i]!,
+      y = path[3 * i + 1]!,
+      z = path[3 * i + 2]!;
+    const ri = Math.hypot(x, y, z);
+    if (!(ri > 0)) continue;
+    const oi = orbitRadiusToward(target, mu, x, y, z);
+    // How far out past the orbit (outward) or in past it (inward): < 0 short of it.
+    const past = outward ? ri - oi : oi - ri;
+    if (past > best) {
+      best = past;
+      r = ri;
+      orbit = oi;
+    }
+  }
+  return { reached: best >= -zone, r, orbit };
+}
+
 /**
  * The points of `forecast`'s path on or past the orbit of the target whose heliocentric state now
  * is `target` (about a centre of parameter `mu`): each point where the probe's distance from the

@@ -8,6 +8,8 @@
 import { createPhysicsWorld } from '@bitphysics/physics';
 import { describe, expect, it } from 'vitest';
 import {
+  AIM_CLOSE_PX_PER_M,
+  aimCloseUp,
   type CameraInput,
   cameraShot,
   type Field,
@@ -52,7 +54,7 @@ describe('catapult camera', () => {
     expect(cameraShot({ ...wide, wreck: true, zoomsIn: false })).toBe('overview');
   });
 
-  it('upright 390 x 844 on every level: the aim view holds the catapult and the whole castle under the banner; the castle view is closer', () => {
+  it('upright 390 x 844 on every level: the aim view holds the catapult and the whole castle under the banner; the castle view is closer; a far castle gets its close-up in the earth', () => {
     const [W, H] = [390, 844];
     // Screen box (px: left, top, right, bottom) of the world box [x0, y0, x1, y1], m, in view v.
     const onScreen = (v: View, x0: number, y0: number, x1: number, y1: number) => {
@@ -60,6 +62,7 @@ describe('catapult camera', () => {
       return [(x0 - v.minX) * k, (v.maxY - y1) * k, (x1 - v.minX) * k, (v.maxY - y0) * k];
     };
     const inside = (b: number[]) => b[0]! >= 0 && b[1]! >= 0 && b[2]! <= W && b[3]! <= H;
+    const shownWhileAiming: number[] = [];
     for (let level = 0; level < LEVEL_COUNT; level++) {
       const w = createPhysicsWorld(worldOptions({ gravity: 9.81 }));
       const lv = buildLevel(w, { level, seed: 1, gravity: 9.81, jointStrength: 400 });
@@ -88,7 +91,22 @@ describe('catapult camera', () => {
       // metre (the opening look and the look button show the target larger than the aim view does).
       expect(inside(onScreen(close, f.castleMinX, f.floor, rockRight(f.castleMaxX), Math.max(f.castleTop, 2 * ROCK.hy))), tag).toBe(true);
       expect(close.maxX - close.minX, tag).toBeLessThan((aim.maxX - aim.minX) / 1.25);
+      // The close-up in the earth while aiming: where the aim view draws under AIM_CLOSE_PX_PER_M
+      // pixels a metre (a stranger could not tell the materials apart at 14 to 18), and there it fits
+      // the earth under the ground (12 px under the ground, 8 px over the screen's foot; as main.ts
+      // drawCloseUp) at 1.4 x the field's scale or more (its least worth showing), with 0.6 m either
+      // side of the castle, 0.3 m under the lowest surface and 0.8 m over the top.
+      const perM = onScreen(aim, 0, 0, 1, 0)[2]! - onScreen(aim, 0, 0, 0, 0)[2]!;
+      expect(aimCloseUp(f, W, H), tag).toBe(perM < AIM_CLOSE_PX_PER_M);
+      if (aimCloseUp(f, W, H)) {
+        const earth = H - onScreen(aim, 0, f.floor, 1, f.floor)[3]! - 12 - 8;
+        const zoom = Math.min((W - 24) / ((f.castleMaxX - f.castleMinX + 1.2) * perM), earth / ((f.castleTop - f.floor + 1.1) * perM));
+        expect(zoom, tag).toBeGreaterThanOrEqual(1.4);
+        shownWhileAiming.push(level + 1);
+      }
     }
+    // Levels 1 and 2 (a near castle, 21 and 22 px a metre) keep a plain earth; the far and wide ones get it.
+    expect(shownWhileAiming).toEqual([3, 4, 5, 6, 7, 8, 9]);
   });
 
   it('rejects bad input, naming the function and the value', () => {

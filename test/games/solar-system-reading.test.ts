@@ -12,7 +12,7 @@ import { tutorialAim } from '../../games/solar-system/advice';
 import { forecastLaunch } from '../../games/solar-system/forecast';
 import { keplerState } from '../../games/solar-system/kepler';
 import { heliocentricState, MISSIONS, missionScore, SCORE_FIRST_TRY } from '../../games/solar-system/missions';
-import { meetingPoint, orbitCrossings, orbitRadiusToward, pathDay } from '../../games/solar-system/orbit-crossing';
+import { meetingPoint, orbitCrossings, orbitRadiusToward, orbitReach, pathDay } from '../../games/solar-system/orbit-crossing';
 
 describe('orbitRadiusToward', () => {
   test('a circle is its radius every way; an ellipse (e = 0.6) is a(1 - e) at perihelion, a(1 + e) at aphelion, p at 90 degrees', () => {
@@ -106,5 +106,45 @@ describe('missionScore', () => {
     expect(first.total).toBe(first.budget + first.time + first.tries);
     expect(() => missionScore(m, 3, 250, 0)).toThrow(/missionScore: launches must be a whole number >= 1, got 0/);
     expect(() => missionScore(m, 3, 250, 1.5)).toThrow(/missionScore: launches must be a whole number >= 1, got 1.5/);
+  });
+});
+
+describe('orbitReach', () => {
+  const mu = 2.959e-4;
+  // A path straight out along +x from 1 AU to `far` AU, 50 points.
+  const out = (far: number) => Float64Array.from({ length: 150 }, (_, k) => (k % 3 === 0 ? 1 + ((far - 1) * (k / 3)) / 49 : 0));
+  test('a circle of 1.5 AU: a path out to 1.45 AU is short of it by 0.05 AU (reached within a zone of 0.06, not 0.04); out to 1.6 AU it got past', () => {
+    const circle = [1.5, 0, 0, 0, 0, Math.sqrt(mu / 1.5)];
+    const short = orbitReach(out(1.45), 50, circle, mu, 0.04, true);
+    expect(short.reached).toBe(false);
+    expect(short.r).toBeCloseTo(1.45, 12);
+    expect(short.orbit).toBeCloseTo(1.5, 12);
+    expect(orbitReach(out(1.45), 50, circle, mu, 0.06, true).reached).toBe(true);
+    const past = orbitReach(out(1.6), 50, circle, mu, 0, true);
+    expect([past.reached, past.r]).toEqual([true, expect.closeTo(1.6, 12)]);
+    // Inwards, towards a circle of 0.8 AU, the same path (1 AU at its nearest) falls short by 0.2 AU.
+    const inner = [0.8, 0, 0, 0, 0, Math.sqrt(mu / 0.8)];
+    const fell = orbitReach(out(1.6), 50, inner, mu, 0.1, false);
+    expect([fell.reached, fell.r, fell.orbit]).toEqual([false, expect.closeTo(1, 12), expect.closeTo(0.8, 12)]);
+    expect(orbitReach(out(1.6), 0, inner, mu, 0.1, false)).toEqual({ reached: false, r: Number.NaN, orbit: Number.NaN });
+  });
+
+  test('an ellipse is read where the path goes, not at the target’s distance now: from aphelion (1.66 AU) a path out to 1.45 AU towards perihelion (1.38 AU) got past it', () => {
+    // a (1 - e) = 1.38, a (1 + e) = 1.66: at aphelion, on -x, the speed sqrt(mu (1 - e) / Q) (vis-viva).
+    const a = 1.52,
+      e = 0.14 / 1.52,
+      Q = a * (1 + e);
+    const ellipse = [-Q, 0, 0, 0, -Math.sqrt((mu * (1 - e)) / Q), 0];
+    const r = orbitReach(out(1.45), 50, ellipse, mu, 0, true);
+    expect(r.reached).toBe(true);
+    expect(r.orbit).toBeCloseTo(a * (1 - e), 9);
+    expect(Math.hypot(ellipse[0]!, ellipse[1]!)).toBeGreaterThan(1.45);
+  });
+
+  test('rejects bad input, naming the function and the value', () => {
+    const circle = [1.5, 0, 0, 0, 0, 0.01];
+    expect(() => orbitReach(out(1.2), 51, circle, mu, 0, true)).toThrow(/orbitReach: points must be an integer in \[0, 50\], got 51/);
+    expect(() => orbitReach(out(1.2), 1.5, circle, mu, 0, true)).toThrow(/orbitReach: points .* got 1.5/);
+    expect(() => orbitReach(out(1.2), 50, circle, mu, -1, true)).toThrow(/orbitReach: zone must be finite and >= 0, got -1/);
   });
 });
