@@ -309,8 +309,11 @@ function poseCollider(
     ox = c.PreviousPosition.x,
     oy = c.PreviousPosition.y,
     oz = c.PreviousPosition.z;
-  const moving = t === BodyType.Dynamic || t === BodyType.Kinematic;
-  const turning = (moving && invInertia[b]! > 0) || (t === BodyType.Kinematic && hasComponent(world, b, c.AngularVelocity));
+  // The kinematic comparison is made for every collider, not only behind a failed dynamic one: that
+  // first ran for a sleeping collider, after V8 had compiled this code without it, and threw it away.
+  const kinematic = t === BodyType.Kinematic,
+    moving = t === BodyType.Dynamic || kinematic;
+  const turning = (moving && invInertia[b]! > 0) || (kinematic && hasComponent(world, b, c.AngularVelocity));
   const x0 = t === BodyType.Static ? c.Position.x[b]! : ox[b]!,
     y0 = t === BodyType.Static ? c.Position.y[b]! : oy[b]!,
     z0 = t === BodyType.Static ? c.Position.z[b]! : oz[b]!;

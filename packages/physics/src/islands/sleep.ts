@@ -228,28 +228,42 @@ export function sleepSystem(world: PhysicsWorld): void {
     const r = findRoot(parent, e);
     if (rest[e]! < islandRest[r]!) islandRest[r] = rest[e]!;
   }
+  // Each body's island (its root) kept for fallAsleep, which runs after the parents are reset.
   const T = sl.timeToSleep;
+  if (roots.length < n) roots = new Int32Array(Math.max(n, 2 * roots.length));
+  const root = roots;
   let sleepers = 0;
-  for (let i = 0; i < n; i++) sleepers += islandRest[findRoot(parent, bodies[i]!)]! >= T ? 1 : 0;
-  if (sleepers > 0) fallAsleep(world, bodies);
+  for (let i = 0; i < n; i++) {
+    const r = findRoot(parent, bodies[i]!);
+    root[i] = r;
+    sleepers += islandRest[r]! >= T ? 1 : 0;
+  }
   // Every body its own island again between steps: a snapshot stores such parents in a few bytes.
   for (let i = 0; i < n; i++) parent[bodies[i]!] = bodies[i]!;
   resetJoinedParents(edges, parent);
-  cs.stats.sleeping = sl.anyAsleep ? query(world, terms.sleeping).length : 0;
+  // The query is made every step, and the call that first runs when the first island sleeps comes
+  // last: code first run then has no type feedback in this function's optimised code, and V8 throws it
+  // back to the interpreter there; with nothing after it, no loop over the bodies is left interpreted.
+  const asleep = query(world, terms.sleeping).length;
+  cs.stats.sleeping = sl.anyAsleep ? asleep : 0;
+  if (sleepers > 0) cs.stats.sleeping = fallAsleep(world, bodies, root, terms);
 }
 
+/** sleepSystem's scratch: the root of each candidate's island this step, in candidate order. */
+let roots = new Int32Array(0);
+
 /**
- * Puts to sleep every body of `bodies` whose island (the union-find `sleep.parent` of this step) has
- * rested timeToSleep (`sleep.islandRest` of its root): velocities zeroed, its previous position set to
- * its position, the `Sleeping` tag added, its island recorded for waking; then the 2D shape contacts'
- * impulses are kept for the step they wake in (collision/dormant-manifolds-2d.ts). A function of its
- * own: it first runs when a pile falls asleep, long after sleepSystem's code was compiled.
+ * Puts to sleep every body of `bodies` whose island (`roots`, body i's at i: its root in this step's
+ * union-find) has rested timeToSleep (`sleep.islandRest` of its root): velocities zeroed, its previous
+ * position set to its position, the `Sleeping` tag added, its island recorded for waking; then the 2D
+ * shape contacts' impulses are kept for the step they wake in (collision/dormant-manifolds-2d.ts).
+ * Returns how many bodies sleep now (the `terms.sleeping` query). A function of its own: it first runs
+ * when a pile falls asleep, long after sleepSystem's code was compiled.
  */
-function fallAsleep(world: PhysicsWorld, bodies: ArrayLike<number>): void {
+function fallAsleep(world: PhysicsWorld, bodies: ArrayLike<number>, roots: Int32Array, terms: SleepTerms): number {
   const sl = world.collision.sleep;
   const c = world.components;
-  const parent = sl.parent,
-    islandRest = sl.islandRest,
+  const islandRest = sl.islandRest,
     island = sl.island,
     T = sl.timeToSleep;
   const V = c.Velocity,
@@ -258,7 +272,7 @@ function fallAsleep(world: PhysicsWorld, bodies: ArrayLike<number>): void {
     P = c.Position;
   for (let i = 0; i < bodies.length; i++) {
     const e = bodies[i]!;
-    const root = findRoot(parent, e);
+    const root = roots[i]!;
     if (islandRest[root]! < T) continue;
     island[e] = root;
     V.x[e] = 0;
@@ -276,6 +290,7 @@ function fallAsleep(world: PhysicsWorld, bodies: ArrayLike<number>): void {
   }
   sl.anyAsleep = true;
   if (world.dimensions === 2) keepSleepingManifolds(world);
+  return query(world, terms.sleeping).length;
 }
 
 /** sleepCandidates' reused list. Scratch, not world state. */
