@@ -64,9 +64,10 @@ import {
   parTime,
   touchesMine,
 } from './mines';
-import { createShownOrder, releasedOrder } from './release';
+import { createHeaveTiming, releasedOrder } from './release';
 import { drawFish } from './sea-life';
 import { type BedAhead, bedAhead, DIVE_STOPPED_WORD, helmWord, seabedInput, touchSeabed } from './seabed';
+import { stickDirection, stickShare } from './stick';
 import { type Glow, layTrail, touchesGlow } from './trail';
 
 const params = {
@@ -313,7 +314,7 @@ function createWorld(): PhysicsWorld {
   zoom = Number.NaN;
   Object.assign(camera, { leadX: 0, leadY: 0, time: 0, shake: 0 });
   hitMarks.length = 0;
-  shownOrder = createShownOrder();
+  heaveTiming.reset();
   scrapeAt = Number.NaN;
   pickups.length = 0;
   return world;
@@ -322,21 +323,28 @@ function createWorld(): PhysicsWorld {
 const held = new Set<string>();
 /** The on-screen stick (phones): x right (ahead), y up (rise), each in [-1, 1], and whether a finger is on it. */
 const stickInput = { x: 0, y: 0, held: false };
-/**
- * How far the stick must move before it counts as a held control (a thumb resting on it wobbles by
- * less); past it the stick asks for as much as it is pushed (stickShare).
- */
-const STICK_DEAD = 0.2;
+/** Dive or Rise pressed and let go, timed by the events' timestamps (./release.ts): a let-go holds the order of its moment. */
+const heaveTiming = createHeaveTiming();
+/** The share of Dive / Rise the press asked for on its last step held (a let-go press runs on at it). */
+let lastHeave = 1;
+/** Dive or Rise as the keys and the stick ask for it now: -1 dive, 1 rise, 0 neither (or both). */
+function heaveAsked(): -1 | 0 | 1 {
+  const dive = held.has('s') || held.has('arrowdown') || stickDirection(stickInput.y, stickInput.x) < 0,
+    rise = held.has('w') || held.has('arrowup') || stickDirection(stickInput.y, stickInput.x) > 0;
+  return dive === rise ? 0 : dive ? -1 : 1;
+}
 addEventListener('keydown', (e) => {
   held.add(e.key.toLowerCase());
+  heaveTiming.event(heaveAsked(), e.timeStamp);
 });
 addEventListener('keyup', (e) => {
   held.delete(e.key.toLowerCase());
+  heaveTiming.event(heaveAsked(), e.timeStamp);
 });
-addEventListener('blur', () => held.clear());
-
-/** The depth order as last put on the screen (./release.ts): a let-go of Dive or Rise holds it. */
-let shownOrder = createShownOrder();
+addEventListener('blur', (e) => {
+  held.clear();
+  heaveTiming.event(0, e.timeStamp);
+});
 /** Game time a Dive or Rise key was first held (s), NaN while none is. */
 let heaveKeySince = Number.NaN;
 
@@ -351,12 +359,12 @@ function heldInput(now: number): HelmInput {
   if (!heaveKey) heaveKeySince = Number.NaN;
   else if (Number.isNaN(heaveKeySince)) heaveKeySince = now;
   return {
-    dive: held.has('s') || held.has('arrowdown') || stickInput.y < -STICK_DEAD,
-    rise: held.has('w') || held.has('arrowup') || stickInput.y > STICK_DEAD,
+    dive: held.has('s') || held.has('arrowdown') || stickDirection(stickInput.y, stickInput.x) < 0,
+    rise: held.has('w') || held.has('arrowup') || stickDirection(stickInput.y, stickInput.x) > 0,
     noseDown: held.has('q'),
     noseUp: held.has('e'),
-    ahead: held.has('d') || held.has('arrowright') || stickInput.x > STICK_DEAD,
-    astern: held.has('a') || held.has('arrowleft') || stickInput.x < -STICK_DEAD,
+    ahead: held.has('d') || held.has('arrowright') || stickDirection(stickInput.x, stickInput.y) > 0,
+    astern: held.has('a') || held.has('arrowleft') || stickDirection(stickInput.x, stickInput.y) < 0,
     // The stick grades the dive or climb up to what a key asks for (./helm.ts keyHeaveShare) and no
     // further, so a thumb at the rim and a held key take the boat down alike.
     heave: heaveKey
@@ -366,18 +374,8 @@ function heldInput(now: number): HelmInput {
     // The stick touched but not pushed sideways (up or down only, or a thumb resting at its centre)
     // keeps the screw as it is (pushing it straight up to rise does not stop the screw); the
     // thumb lifted, the screw winds down as with a key let go; pushed sideways, it drives the screw.
-    keepThrottle: stickInput.held && Math.abs(stickInput.x) <= STICK_DEAD,
+    keepThrottle: stickInput.held && stickDirection(stickInput.x, stickInput.y) === 0,
   };
-}
-
-/**
- * The share of full Dive / Rise (or screw) that the stick's push `v` in [-1, 1] along one axis asks
- * for: as far as it is pushed (0.2 just past the dead zone, 0.5 half way, 1 at the rim); 1 while a
- * key of that axis is held (`key`), so the keys always ask for all of it.
- */
-function stickShare(v: number, key: boolean): number {
-  if (key) return 1;
-  return Math.max(STICK_DEAD, Math.min(1, Math.abs(v)));
 }
 
 /**
@@ -431,14 +429,20 @@ let lastPing = 0;
 function stepWorld(world: PhysicsWorld): void {
   // The seabed stops a dive until Dive is let go (./seabed.ts). After the end (won or sunk) the
   // controls are let go: the boat glides to a stop on its order, whatever keys are still held.
-  const input = state.over ? NO_INPUT : seabedInput(state, heldInput(world.time));
-  // Dive or Rise let go: the order stays at the line last drawn, not where it ran on to since (./release.ts).
-  if ((state.mode === 'diving' && !input.dive) || (state.mode === 'rising' && !input.rise))
-    state.holdY = releasedOrder(state.holdY, shownOrder.shown(game.pacer.drawn), state.mode);
+  // Dive or Rise timed by its events (./release.ts): a press let go before the steps caught up runs
+  // on to its own length; one the steps ran past holds the order of the moment it was let go.
+  const timed = heaveTiming.step(world.time);
+  const asked = heldInput(world.time);
+  if (timed.dir !== 0 && !asked.dive && !asked.rise) Object.assign(asked, { dive: timed.dir < 0, rise: timed.dir > 0, heave: lastHeave });
+  else if (asked.dive !== asked.rise) lastHeave = asked.heave ?? 1;
+  const input = state.over ? NO_INPUT : seabedInput(state, asked);
+  if (!Number.isNaN(timed.letGoAt) && (state.mode === 'diving' || state.mode === 'rising'))
+    state.holdY = releasedOrder(state.holdY, heaveTiming.orderAt(timed.letGoAt), state.mode);
   const vertical = input.dive === input.rise ? 0 : input.dive ? -1 : 1;
   if (vertical !== 0 && vertical !== lastVertical) sound.launch(0.25);
   lastVertical = vertical;
   steer(world, handles, input, state);
+  if (state.mode === 'diving' || state.mode === 'rising') heaveTiming.note(world.time, state.holdY);
   // Waves: the sea's surface bobs (the hull rides it).
   const sea = world.components.FluidRegion;
   sea.surface[handles.sea] = params.waveHeight * 0.5 * Math.sin(0.9 * world.time);
@@ -1169,6 +1173,9 @@ for (const type of ['pointerup', 'pointercancel', 'lostpointercapture'])
   stick.element.addEventListener(type, () => {
     stickInput.held = false;
   });
+// Dive or Rise by the stick, timed by its events (after the stick's own listeners have moved it).
+for (const type of ['pointerdown', 'pointermove', 'pointerup', 'pointercancel', 'lostpointercapture'])
+  stick.element.addEventListener(type, (e) => heaveTiming.event(heaveAsked(), e.timeStamp));
 // On a phone a larger stick (136 px, the knob's reach 56 px): the thumb grades its push over more
 // of its travel, and the rim is easier to find without looking.
 if (compact) stick.element.style.cssText += 'width: 136px; height: 136px;';
@@ -1726,7 +1733,6 @@ function draw(): void {
     H = app.screen.height;
   const hxw = c.Position.x[e]!,
     hyw = c.Position.y[e]!;
-  shownOrder.note(state.holdY, game.pacer.drawn);
   const before = aim.index;
   aim.index = chooseBeacon(handles.beacons, taken, hxw, hyw, aim.index);
   // A new target (the last one collected): its label pulses (drawBeacons).
