@@ -46,6 +46,7 @@ import {
   chooseBeacon,
   lastBeacon,
   layCourse,
+  missWarning,
   passedBeacon,
   seabedBetween,
 } from './beacons';
@@ -105,6 +106,10 @@ const state = {
 };
 let handles: SubmarineHandles;
 let taken: boolean[] = [];
+/** Beacons passed and left behind uncollected (./beacons.ts passedBeacon): marked missed on the scene and counted in the goal line. */
+let missed: boolean[] = [];
+/** The target beacon the pointer warns is being left behind (./beacons.ts missWarning), -1 for none: a new warning chimes. */
+let missWarned = -1;
 /** The course's moored mines (./mines.ts) and whether each is still live (a mine that went off is gone). */
 let mines: Mine[] = [];
 let mineLive: boolean[] = [];
@@ -147,8 +152,34 @@ const glowHint = { shown: Number.NaN, caught: Number.NaN };
 const GLOW_MISS = 10;
 /** The depth gauge's full scale: the deepest seabed of the course and 10 m, rounded up to 10 m. */
 let courseDepth = 160;
+/**
+ * An effect drawn for a while after a moment of the game (a blast, a hit): where (m) and when (game
+ * time, s), and the game time and the clock (performance.now(), ms) of the first frame that drew it.
+ */
+interface Shown {
+  x: number;
+  y: number;
+  time: number;
+  shownT?: number;
+  shownMs?: number;
+}
+/**
+ * How long effect `e` has been on the screen at game time `t`, s: from the first frame that drew it,
+ * the lesser of the game time and the clock's since then (0 before it is drawn). A loaded machine
+ * draws a frame a second with a second of steps in each: counted from the step that made it, a hit's
+ * 0.6 s flash was over before any frame showed it and its label showed on one frame at most; a
+ * paused game holds it on the screen.
+ */
+function shownAge(e: Shown, t: number): number {
+  const now = performance.now();
+  if (e.shownT === undefined || e.shownMs === undefined) {
+    e.shownT = t;
+    e.shownMs = now;
+  }
+  return Math.max(0, Math.min(t - e.shownT, (now - e.shownMs) / 1000));
+}
 /** Mine blasts, for drawing: where (m) and when (game time, s). */
-const blasts: { x: number; y: number; time: number }[] = [];
+const blasts: Shown[] = [];
 /** How long a blast's flash and bubbles last, s of game time. */
 const BLAST_LIFE = 1.6;
 
@@ -186,6 +217,8 @@ const aim = {
   hull: [0, 0, 0, 0],
   /** Whether the label was moved off the headlight's cone this frame. */
   beam: false,
+  /** Whether the label warns that the target is being left behind (./beacons.ts missWarning). */
+  missWarn: false,
   /** The arrow's badge while drawn: its box (x, y, width, height, px; zeros while none) and the depth gauge's left edge (px). */
   badge: [0, 0, 0, 0],
   gaugeLeft: 0,
@@ -202,7 +235,7 @@ const aim = {
  * game time it was taken or passed (s), the banner's text ("Beacon 2 of 6", "B passed") and whether
  * it was passed (a banner only: no rings at a beacon left behind).
  */
-const pickups: { x: number; y: number; time: number; text: string; passed?: boolean }[] = [];
+const pickups: (Shown & { text: string; passed?: boolean })[] = [];
 /** How long a pickup's rings and banner last, s of game time. */
 const PICKUP_LIFE = 2;
 /** The framing camera: the hull and the next beacon are kept this far inside the view's edges, px. */
@@ -268,7 +301,7 @@ const camera = { x: 0, y: 0, zoom: 0, leadX: 0, leadY: 0, time: 0, shake: 0, wid
  * Hits on the hull, for drawing: what hit it ('mine' or 'seabed'), where (m: the mine's centre, or
  * the point of the hull that struck the bed) and when (game time, s).
  */
-const hitMarks: { kind: 'mine' | 'seabed'; x: number; y: number; time: number }[] = [];
+const hitMarks: (Shown & { kind: 'mine' | 'seabed' })[] = [];
 /** How long a hit's label, sand cloud and red flash last, s of game time. */
 const HIT_LIFE = 1.8;
 /** How long a hit shakes the view, s of game time. */
@@ -298,6 +331,8 @@ function createWorld(): PhysicsWorld {
     score: 0,
   });
   taken = new Array(params.beacons).fill(false);
+  missed = new Array(params.beacons).fill(false);
+  missWarned = -1;
   mines = layMines(handles.beacons, handles.seabed, params.seed);
   mineLive = mines.map(() => true);
   wayMine = -1;
@@ -554,6 +589,7 @@ function stepWorld(world: PhysicsWorld): void {
     // Any part of the hull inside the beacon's ring (./beacons.ts catchesBeacon) collects it.
     if (catchesBeacon(c.Position.x[e]!, c.Position.y[e]!, angle, handles.beacons[2 * i]!, handles.beacons[2 * i + 1]!)) {
       taken[i] = true;
+      missed[i] = false;
       state.collected++;
       state.score += BEACON_POINTS;
       const last = i === lastBeacon(handles.beacons);
@@ -596,15 +632,19 @@ function stepWorld(world: PhysicsWorld): void {
   if (target >= 0 && !taken[target] && passedBeacon(handles.beacons, target, c.Position.x[e]!)) {
     aim.index = chooseBeacon(handles.beacons, taken, c.Position.x[e]!, c.Position.y[e]!, target);
     if (aim.index !== target) {
+      missed[target] = true;
       aimSwitchedAt = world.time;
       pickups.push({
         x: handles.beacons[2 * target]!,
         y: handles.beacons[2 * target + 1]!,
         time: world.time,
-        text: `${beaconName(target)} passed\nnext: ${beaconName(aim.index)}`,
+        text: `Beacon ${beaconName(target)} missed\nnext: ${beaconName(aim.index)}`,
         passed: true,
       });
-      sound.chime(523, 0.2);
+      // A falling two-note call: a loss, not a gain.
+      sound.chime(523, 0.25);
+      setTimeout(() => sound.chime(392, 0.3), 140);
+      game.drawNext();
     }
   }
 }
@@ -1074,7 +1114,8 @@ const HIT_TEXT = { mine: 'MINE!\n−1 hull', seabed: 'SEABED!\n−1 hull' } as c
 function drawHits(t: number, k: number, sx: (x: number) => number, sy: (y: number) => number, W: number, H: number, hullTop: number): void {
   for (let i = hitMarks.length - 1; i >= 0; i--) if (t < hitMarks[i]!.time) hitMarks.splice(i, 1);
   const m = hitMarks[hitMarks.length - 1];
-  const u = m ? (t - m.time) / HIT_LIFE : 1;
+  const age = m ? shownAge(m, t) : Number.POSITIVE_INFINITY,
+    u = age / HIT_LIFE;
   hitLabel.visible = m !== undefined && u < 1;
   if (!m || u >= 1) return;
   const x = sx(m.x),
@@ -1102,7 +1143,7 @@ function drawHits(t: number, k: number, sx: (x: number) => number, sy: (y: numbe
           .stroke({ color: 0xfff0b0, alpha: 1 - u / 0.3, width: 2 });
       }
   }
-  const flash = Math.max(0, 1 - (t - m.time) / 0.6);
+  const flash = Math.max(0, 1 - age / 0.6);
   if (flash > 0) g.rect(0, 0, W, H).stroke({ color: 0xff3b30, width: 18, alpha: 0.5 * flash, alignment: 1 });
   hitLabel.text = HIT_TEXT[m.kind];
   hitLabel.alpha = u < 0.6 ? 1 : (1 - u) / 0.4;
@@ -1269,9 +1310,9 @@ function drawMines(
     g.circle(x, y - R * k * 0.55, Math.max(2, 0.22 * k)).fill({ color: on ? 0xff3b30 : 0x6a1a16, alpha: 1 });
     if (on) g.circle(x, y - R * k * 0.55, Math.max(5, 0.7 * k)).fill({ color: 0xff3b30, alpha: 0.25 });
   }
-  for (let i = blasts.length - 1; i >= 0; i--) if (t - blasts[i]!.time > BLAST_LIFE || t < blasts[i]!.time) blasts.splice(i, 1);
+  for (let i = blasts.length - 1; i >= 0; i--) if (shownAge(blasts[i]!, t) > BLAST_LIFE || t < blasts[i]!.time) blasts.splice(i, 1);
   for (const b of blasts) {
-    const u = (t - b.time) / BLAST_LIFE,
+    const u = shownAge(b, t) / BLAST_LIFE,
       x = sx(b.x),
       y = sy(b.y);
     if (u < 0.3) {
@@ -1796,7 +1837,7 @@ function draw(): void {
   camera.height = H;
   // A hit shakes the view (drawing only): SHAKE_PX px at the hit, decaying over HIT_SHAKE_LIFE s.
   const lastMark = hitMarks[hitMarks.length - 1];
-  const shakeAge = lastMark ? world.time - lastMark.time : Number.POSITIVE_INFINITY;
+  const shakeAge = lastMark ? shownAge(lastMark, world.time) : Number.POSITIVE_INFINITY;
   // A scrape (a contact that costs nothing) shakes it a little, so the bed is felt before it hurts.
   const scrapeAge = world.time - scrapeAt;
   const shake = Math.max(
@@ -1950,6 +1991,19 @@ function draw(): void {
     // The lamp's glow: filled discs (no second ring to mistake for the one to touch).
     g.circle(bx, by, Math.max(9, (2 + Math.sin(3 * t)) * k)).fill({ color: 0xffe066, alpha: 0.14 * dim });
     g.circle(bx, by, Math.max(5, 1.2 * k)).fill({ color: 0xffe066, alpha: dim * (0.9 + 0.1 * Math.sin(4 * t)) });
+    // A beacon passed and left (missed): crossed out in red over its lamp, and its tag says so.
+    if (missed[i]) {
+      const r = Math.max(8, 2 * k);
+      for (const [width, color] of [
+        [6, 0x06213a],
+        [3, 0xff5a4a],
+      ] as const)
+        g.moveTo(bx - r, by - r)
+          .lineTo(bx + r, by + r)
+          .moveTo(bx + r, by - r)
+          .lineTo(bx - r, by + r)
+          .stroke({ color, width, cap: 'round' });
+    }
     if (i === aim.index && aim.onScreen) {
       const r = Math.max(14, BEACON_CATCH * k) + 6 + 3 * Math.sin(3 * t),
         arm = Math.max(6, 0.35 * r);
@@ -1980,7 +2034,8 @@ function draw(): void {
       app.stage.addChild(tag);
     }
     tag.visible = true;
-    tag.text = `beacon ${beaconName(i)}`;
+    tag.text = missed[i] ? `${beaconName(i)} missed` : `beacon ${beaconName(i)}`;
+    tag.style.fill = missed[i] ? 0xff9e8a : 0xffe066;
     // Under its beacon, kept clear of the depth gauge (which would cut a tag under it to "beac"); off
     // the headlight's cone where it shows (a tag on the lit water reads as part of the beam): over
     // the lamp, else under or over the ring.
@@ -2001,10 +2056,10 @@ function draw(): void {
   otherTags = tagged;
   // Collected beacons: a flash, two rings expanding from the beacon and rays, fading over
   // PICKUP_LIFE s of game time; the banner shows the newest one.
-  for (let i = pickups.length - 1; i >= 0; i--) if (t - pickups[i]!.time > PICKUP_LIFE || t < pickups[i]!.time) pickups.splice(i, 1);
+  for (let i = pickups.length - 1; i >= 0; i--) if (shownAge(pickups[i]!, t) > PICKUP_LIFE || t < pickups[i]!.time) pickups.splice(i, 1);
   for (const p of pickups) {
     if (p.passed) continue;
-    const u = (t - p.time) / PICKUP_LIFE,
+    const u = shownAge(p, t) / PICKUP_LIFE,
       px = sx(p.x),
       py = sy(p.y),
       fade = 1 - u;
@@ -2027,8 +2082,10 @@ function draw(): void {
   // Hidden while paused: the pause overlay's words are the only ones in the middle then.
   banner.visible = newest !== undefined && !state.over && !shell.paused;
   if (newest) {
-    const u = (t - newest.time) / PICKUP_LIFE;
+    const u = shownAge(newest, t) / PICKUP_LIFE;
     banner.text = newest.text;
+    // A missed beacon's banner in the hits' red-orange, a collected one's in the beacons' yellow.
+    banner.style.fill = newest.passed ? 0xff9e8a : 0xffe066;
     banner.x = W / 2;
     banner.y = H * 0.28;
     banner.alpha = u < 0.7 ? 1 : (1 - u) / 0.3;
@@ -2066,6 +2123,14 @@ function draw(): void {
       brakeHint.shown++;
     }
     if (brakeHint.on) pointer.text += `\n${BRAKE_HINT}`;
+    // Moving away from the target left behind: how far on it counts as missed, with a low call once.
+    const left = state.over ? Number.NaN : missWarning(handles.beacons, aim.index, hxw, c.Velocity.x[e]!);
+    if (!Number.isNaN(left)) {
+      pointer.text += `\n⚠ going away: missed in ${Math.ceil(left)} m (Astern)`;
+      if (missWarned !== aim.index) sound.chime(392, 0.2);
+    }
+    missWarned = Number.isNaN(left) ? -1 : aim.index;
+    aim.missWarn = !Number.isNaN(left);
     aim.dx = wx - hxw;
     aim.dy = wy - hyw;
     // The right margin leaves the depth gauge clear too (on a phone the badge would sit over it). A beacon
@@ -2141,7 +2206,7 @@ function draw(): void {
       // Above the catch disc's rim and the target's brackets (drawn at least 14 px and up to 9 px
       // more out from the beacon), so the label covers neither.
       pointer.x = bx;
-      pointer.y = by - Math.max(14, BEACON_CATCH * k) - 22;
+      pointer.y = by - Math.max(14, BEACON_CATCH * k) - 12 - pointer.height / 2 - 4;
     }
     // Kept inside the view (a long label beside a badge at a side edge).
     // (its pill is 7 px wider each side than the text and the switch's ring 3 px more; 5 px more
@@ -2154,7 +2219,7 @@ function draw(): void {
       hy0 = sy(hyw);
     const onHull = () => Math.abs(pointer.x - hx0) < hr + pointer.width / 2 + 7 && Math.abs(pointer.y - hy0) < hr + pointer.height / 2 + 2;
     // Under the beacon first (the label stays with it), else above or below the hull.
-    if (onHull() && aim.onScreen) pointer.y = by + Math.max(14, BEACON_CATCH * k) + 22;
+    if (onHull() && aim.onScreen) pointer.y = by + Math.max(14, BEACON_CATCH * k) + 12 + pointer.height / 2 + 4;
     if (onHull()) {
       const above = hy0 - hr - pointer.height / 2 - 4,
         below = hy0 + hr + pointer.height / 2 + 4;
@@ -2210,6 +2275,21 @@ function draw(): void {
       Math.abs(pointer.y - (ty + th / 2)) < (pointer.height + 4 + th) / 2 + 2
     )
       pointer.y = pointer.y < ty + th / 2 ? ty - pointer.height / 2 - 6 : ty + th + pointer.height / 2 + 6;
+    // Never over the target's ring and brackets (moved off the hull, the beam or a mine onto it):
+    // beside it instead, right of it where that stays in view, else left.
+    if (
+      aim.onScreen &&
+      overlaps(
+        [pointer.x - pointer.width / 2 - 7, pointer.y - pointer.height / 2 - 2, pointer.width + 14, pointer.height + 4],
+        aim.frame,
+        2,
+      )
+    ) {
+      const half = aim.frame[2]! / 2,
+        rightX = bx + half + pointer.width / 2 + 12;
+      pointer.x = rightX + pointer.width / 2 + 15 <= W - GAUGE_WIDTH ? rightX : bx - half - pointer.width / 2 - 12;
+      pointer.y = by;
+    }
     aim.label = [pointer.x - pointer.width / 2, pointer.y - pointer.height / 2, pointer.width, pointer.height];
     aim.hull = [hx0 - hr, hy0 - hr, 2 * hr, 2 * hr];
     // The pickup banner ("Beacon 3 of 6") off the label's pill (on a phone it would be drawn over it):
@@ -2329,7 +2409,7 @@ function draw(): void {
   declutter(H, [sx(hxw) - (SUBMARINE.length / 2) * k, sy(hyw) - hr / 2, SUBMARINE.length * k, hr]);
   drawPause(W, H, sy(hyw));
   // The hull gauge at a hit: red and enlarged, fading over GAUGE_FLASH s of game time.
-  const hitAge = hitMarks.length > 0 ? t - hitMarks[hitMarks.length - 1]!.time : Number.POSITIVE_INFINITY;
+  const hitAge = hitMarks.length > 0 ? shownAge(hitMarks[hitMarks.length - 1]!, t) : Number.POSITIVE_INFINITY;
   const flashNow = hitAge >= 0 && hitAge < GAUGE_FLASH ? 1 - hitAge / GAUGE_FLASH : 0;
   if (flashNow > 0 || gaugeFlash > 0) {
     gaugeFlash = flashNow;
@@ -2363,11 +2443,13 @@ function draw(): void {
   // The goal and a short readout first (on a phone the speed in whole m/s, so the line keeps to the
   // width with the depth rate on it); the instruments (tanks, pitch, climb, helm) after, small and dim.
   // On a phone the score goes on the goal's line (the readout's would wrap).
+  const missedCount = missed.filter(Boolean).length;
+  const missedText = missedCount > 0 ? ` (${missedCount} missed)` : '';
   goal.textContent =
     end ||
     (compact
-      ? `Beacons ${state.collected} of ${taken.length} · ${clock(state.time)} / par ${clock(state.par)} · ${state.score} pts${streak}`
-      : `Collect the ${taken.length} beacons · ${state.collected} of ${taken.length} · ${clock(state.time)} / par ${clock(state.par)}`);
+      ? `Beacons ${state.collected} of ${taken.length}${missedText} · ${clock(state.time)} / par ${clock(state.par)} · ${state.score} pts${streak}`
+      : `Collect the ${taken.length} beacons · ${state.collected} of ${taken.length}${missedText} · ${clock(state.time)} / par ${clock(state.par)}`);
   // The clock turns red once par has passed.
   goal.style.color = !state.over && state.time > state.par ? '#ff9e8a' : '#ffe066';
   readoutText.textContent = compact
