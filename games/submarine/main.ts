@@ -358,6 +358,8 @@ function createWorld(): PhysicsWorld {
 const held = new Set<string>();
 /** The on-screen stick (phones): x right (ahead), y up (rise), each in [-1, 1], and whether a finger is on it. */
 const stickInput = { x: 0, y: 0, held: false };
+/** Whether the game is paused (a let-go then takes no game time); false until the game has started. */
+let pausedNow = (): boolean => false;
 /** Dive or Rise pressed and let go, timed by the events' timestamps (./release.ts): a let-go holds the order of its moment. */
 const heaveTiming = createHeaveTiming();
 /** The share of Dive / Rise the press asked for on its last step held (a let-go press runs on at it). */
@@ -370,15 +372,15 @@ function heaveAsked(): -1 | 0 | 1 {
 }
 addEventListener('keydown', (e) => {
   held.add(e.key.toLowerCase());
-  heaveTiming.event(heaveAsked(), e.timeStamp);
+  heaveTiming.event(heaveAsked(), e.timeStamp, pausedNow());
 });
 addEventListener('keyup', (e) => {
   held.delete(e.key.toLowerCase());
-  heaveTiming.event(heaveAsked(), e.timeStamp);
+  heaveTiming.event(heaveAsked(), e.timeStamp, pausedNow());
 });
 addEventListener('blur', (e) => {
   held.clear();
-  heaveTiming.event(0, e.timeStamp);
+  heaveTiming.event(0, e.timeStamp, pausedNow());
 });
 /** Game time a Dive or Rise key was first held (s), NaN while none is. */
 let heaveKeySince = Number.NaN;
@@ -482,6 +484,7 @@ function stepWorld(world: PhysicsWorld): void {
   const sea = world.components.FluidRegion;
   sea.surface[handles.sea] = params.waveHeight * 0.5 * Math.sin(0.9 * world.time);
   step(world);
+  heaveTiming.clock(world.time, performance.now());
   if (state.over) return;
   // The clock starts with the first control held, not when the page loads.
   const anyHeld = input.dive || input.rise || input.noseDown || input.noseUp || input.ahead || input.astern;
@@ -711,6 +714,7 @@ const game = await startPixiGame({
   onFrame: () => draw(),
 });
 const { shell, app } = game;
+pausedNow = () => shell.paused;
 
 // ---- Drawing: sky, sea, seabed, beacons, hull and gauges (the world renderer draws nothing here) --
 
@@ -1216,7 +1220,7 @@ for (const type of ['pointerup', 'pointercancel', 'lostpointercapture'])
   });
 // Dive or Rise by the stick, timed by its events (after the stick's own listeners have moved it).
 for (const type of ['pointerdown', 'pointermove', 'pointerup', 'pointercancel', 'lostpointercapture'])
-  stick.element.addEventListener(type, (e) => heaveTiming.event(heaveAsked(), e.timeStamp));
+  stick.element.addEventListener(type, (e) => heaveTiming.event(heaveAsked(), e.timeStamp, pausedNow()));
 // On a phone a larger stick (136 px, the knob's reach 56 px): the thumb grades its push over more
 // of its travel, and the rim is easier to find without looking.
 if (compact) stick.element.style.cssText += 'width: 136px; height: 136px;';
@@ -1512,6 +1516,9 @@ function drawDepthGauge(W: number, H: number, depth: number, order: number, bed:
     if (gaugeDepth.visible) offFrame(gaugeDepth, box, top, bottom);
     for (const mark of gaugeMarks) if (mark.visible && overlaps(textBox(mark), box, 2)) mark.visible = false;
   }
+  // A label beside the target's ring (moved off it) may have pushed the boat's depth onto the frame:
+  // off the frame again (above or below it, where the label beside the ring is not).
+  if (frame[2] > 0 && gaugeDepth.visible) offFrame(gaugeDepth, frame, top, bottom);
   // Off the live mines in view (on a phone the boat's depth would be written over a mine near the edge).
   for (const box of mineBoxes) {
     for (const tag of [gaugeDepth, gaugeTarget]) if (tag.visible) offFrame(tag, box, top, bottom);

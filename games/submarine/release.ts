@@ -3,9 +3,9 @@
  * go, read from the input events' timestamps (`Event.timeStamp`, ms), not from the frames. The
  * helm's order (./helm.ts `HelmState.holdY`) runs on with every step the control is held, and the
  * page runs its steps in a burst at each drawn frame: on a loaded machine at 1 to 2 frames a second a
- * let-go reaches the game up to a second of steps late or early. Counted from the press's own length
- * (the way ../black-hole/press-timing.ts counts a thrust), a press held 2 s moves the order 2 s worth
- * at any frame rate: a let-go the steps have not caught up with runs on to it (at most
+ * let-go reaches the game up to a second of steps late or early. Placed in game time by its own
+ * timestamp (the way ../black-hole/press-timing.ts reads a press's length from its events), against
+ * the clock of the last step run: a let-go the steps have not caught up with runs on to it (at most
  * `MAX_RELEASE_TAIL` s), and one the steps ran past takes back the order they ran on to. Headless,
  * tested in node.
  */
@@ -44,15 +44,23 @@ export interface HeaveStep {
 /** A Dive or Rise press timed by its events (see the header). */
 export interface HeaveTiming {
   /**
+   * Notes the step just run: the game time after it (`game`, s) and the clock then (`wallMs`, ms, the
+   * clock of `Event.timeStamp`: performance.now()). The last step of a frame's burst maps the clock
+   * to the game's time for the let-go events that come before the next frame.
+   */
+  clock(game: number, wallMs: number): void;
+  /**
    * An input event at `stamp` (its `timeStamp`, ms) left Dive / Rise asked as `dir` (-1 dive, 1
-   * rise, 0 neither). Call it after every key or stick event; a `dir` unchanged does nothing.
+   * rise, 0 neither), with the game `paused` or running. Call it after every key or stick event; a
+   * `dir` unchanged does nothing. A let-go happens at the game time the clock gives it: the last
+   * step's (`clock`) plus the clock's time since (negative for an event older than it), at most
+   * `MAX_RELEASE_TAIL` s either way (none while paused).
    * @throws RangeError when `dir` is not -1, 0 or 1, or `stamp` is not finite.
    */
-  event(dir: number, stamp: number): void;
+  event(dir: number, stamp: number, paused?: boolean): void;
   /**
    * The step at game time `now` (s): which way to steer, and whether a press ended with its let-go
-   * in the past. A press held runs from the first step that sees it; let go after `held` ms it runs
-   * to `start + held / 1000`, at most `MAX_RELEASE_TAIL` s past the step that sees the let-go.
+   * in the past. A press runs from the first step that sees it to its let-go's game time.
    * @throws RangeError when `now` is not finite.
    */
   step(now: number): HeaveStep;
@@ -67,21 +75,28 @@ export interface HeaveTiming {
 /** A new `HeaveTiming` with nothing pressed. */
 export function createHeaveTiming(): HeaveTiming {
   let dir: -1 | 0 | 1 = 0,
-    downAt = 0,
-    start = Number.NaN;
-  /** The let-go press running on: its direction, its length (ms) and its start (game time, NaN: not stepped yet). */
-  let tail: { dir: -1 | 1; heldMs: number; start: number; end: number } | null = null;
+    game = 0,
+    wall = Number.NaN;
+  /** The let-go press running on: its direction and the game time of its let-go, s. */
+  let tail: { dir: -1 | 1; end: number } | null = null;
   const times: number[] = [],
     orders: number[] = [];
   return {
-    event(d, stamp) {
+    clock(g, wallMs) {
+      game = g;
+      wall = wallMs;
+    },
+    event(d, stamp, paused = false) {
       if (d !== -1 && d !== 0 && d !== 1) throw new RangeError(`HeaveTiming.event: dir must be -1, 0 or 1, got ${d}`);
       if (!Number.isFinite(stamp)) throw new RangeError(`HeaveTiming.event: stamp must be finite ms, got ${stamp}`);
       if (d === dir) return;
-      if (dir !== 0) tail = { dir, heldMs: Math.max(0, stamp - downAt), start, end: Number.NaN };
+      if (dir !== 0) {
+        // Before the last step's clock (an event handled after a long frame's burst) it lies back in
+        // that burst's game time; after it, ahead of it.
+        const since = paused || Number.isNaN(wall) ? 0 : Math.min(MAX_RELEASE_TAIL, Math.max(-MAX_RELEASE_TAIL, (stamp - wall) / 1000));
+        tail = { dir, end: game + since };
+      }
       dir = d as -1 | 0 | 1;
-      downAt = stamp;
-      start = Number.NaN;
       if (dir !== 0) {
         // A new press: the one before has ended.
         tail = null;
@@ -90,16 +105,8 @@ export function createHeaveTiming(): HeaveTiming {
     },
     step(now) {
       if (!Number.isFinite(now)) throw new RangeError(`HeaveTiming.step: now must be finite s, got ${now}`);
-      if (dir !== 0) {
-        if (Number.isNaN(start)) start = now;
-        return { dir, letGoAt: Number.NaN };
-      }
+      if (dir !== 0) return { dir, letGoAt: Number.NaN };
       if (!tail) return { dir: 0, letGoAt: Number.NaN };
-      if (Number.isNaN(tail.end)) {
-        // A tap let go before any step saw it runs for its own length from this step.
-        const from = Number.isNaN(tail.start) ? now : tail.start;
-        tail.end = Math.min(now + MAX_RELEASE_TAIL, from + tail.heldMs / 1000);
-      }
       if (now < tail.end) return { dir: tail.dir, letGoAt: Number.NaN };
       const end = tail.end;
       tail = null;
@@ -115,9 +122,7 @@ export function createHeaveTiming(): HeaveTiming {
       return found;
     },
     reset() {
-      // A control still held stays held (its keyup is still to come): its press starts again.
       tail = null;
-      start = Number.NaN;
       times.length = orders.length = 0;
     },
   };

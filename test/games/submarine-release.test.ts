@@ -29,6 +29,9 @@ function hover(): { world: PhysicsWorld; h: SubmarineHandles; helm: HelmState } 
  * Runs `steps` steps as the page does (main.ts stepWorld): the timing says which way to steer, a
  * press ended in the past takes the order back to its let-go's moment.
  */
+/** The clock (ms) at which the frame that runs the step ending at game time `t` (s) comes: one frame a second, at whole seconds (game time 2 s at 10 s). */
+const wallAt = (t: number): number => 8_000 + 1000 * Math.ceil(t - 1e-9);
+
 function runTimed(b: ReturnType<typeof hover>, timing: ReturnType<typeof createHeaveTiming>, steps: number): void {
   for (let i = 0; i < steps; i++) {
     const now = b.world.time;
@@ -38,6 +41,8 @@ function runTimed(b: ReturnType<typeof hover>, timing: ReturnType<typeof createH
     steer(b.world, b.h, { ...NO_INPUT, dive: t.dir < 0, rise: t.dir > 0, heave: keyHeaveShare(0, 0) }, b.helm);
     if (b.helm.mode === 'diving') timing.note(now, b.helm.holdY);
     step(b.world);
+    // Each step's burst drawn as one frame a second: the last step of a burst is at the frame's clock.
+    timing.clock(b.world.time, wallAt(b.world.time));
   }
 }
 
@@ -51,39 +56,43 @@ describe('submarine let-go', () => {
     expect(() => releasedOrder(-45, -42, 'holding')).toThrow(/releasedOrder: mode/);
   });
 
-  it('times a press by its events: runs it on to its length, takes back steps run past it, caps the tail', () => {
+  it('places a let-go in game time by its timestamp against the last step: runs a press on to it, takes back steps run past it', () => {
     const t = createHeaveTiming();
     expect(() => t.event(2, 0)).toThrow(/HeaveTiming.event: dir/);
     expect(() => t.event(1, Number.NaN)).toThrow(/HeaveTiming.event: stamp/);
-    t.event(-1, 1000); // Dive pressed at 1000 ms
-    expect(t.step(5)).toEqual({ dir: -1, letGoAt: Number.NaN }); // first seen at game time 5 s
+    t.event(-1, 1000); // Dive pressed
+    expect(t.step(5)).toEqual({ dir: -1, letGoAt: Number.NaN });
     t.note(5, -41);
     t.note(5.5, -44);
     t.note(6, -47);
-    t.event(-1, 1200); // a key repeat: nothing
-    t.event(0, 1600); // let go 0.6 s after the press: the order of game time 5.6 s
-    expect(t.step(6.5)).toEqual({ dir: 0, letGoAt: 5.6 });
-    expect(t.orderAt(5.6)).toBe(-44);
+    t.clock(6, 2000); // a frame's burst ran the steps up to game time 6 s at 2000 ms
+    t.event(-1, 2100); // a key repeat: nothing
+    // Let go 0.6 s after that frame: game time 6.6 s; the next frame's first step, at 6, runs on.
+    t.event(0, 2600);
+    expect(t.step(6.1).dir).toBe(-1);
     expect(t.step(6.6)).toEqual({ dir: 0, letGoAt: Number.NaN });
-    // A let-go before the steps have caught up: the dive runs on to its length, then stops.
-    t.event(1, 2000);
-    t.step(10);
-    t.event(0, 2500);
-    expect(t.step(10.2).dir).toBe(1);
-    expect(t.step(10.5)).toEqual({ dir: 0, letGoAt: Number.NaN });
-    // A tap between two steps runs for its own length from the next step.
-    t.event(-1, 3000);
-    t.event(0, 3100);
-    expect(t.step(20).dir).toBe(-1);
-    expect(t.step(20.09).dir).toBe(-1);
-    expect(t.step(20.1).dir).toBe(0);
-    // The tail is at most MAX_RELEASE_TAIL past the step that sees the let-go.
+    // Steps run past the let-go before it is seen (its event waited behind a long frame): taken back.
+    t.event(1, 3000);
+    t.step(7);
+    t.note(7, -40);
+    t.note(7.2, -39);
+    t.note(7.4, -38);
+    t.clock(7.1, 3000);
+    t.event(0, 3200); // game time 7.3 s
+    expect(t.step(7.5)).toEqual({ dir: 0, letGoAt: 7.3 });
+    expect(t.orderAt(7.3)).toBe(-39);
+    // The clock's time since the last step counts at most MAX_RELEASE_TAIL; paused, none.
     t.event(-1, 4000);
-    t.step(25);
-    t.event(0, 9000); // held 5 s while the steps stalled at game time 25 s; they run on at 26 s
-    expect(t.step(26).dir).toBe(-1);
-    expect(t.step(26 + MAX_RELEASE_TAIL - 0.01).dir).toBe(-1);
-    expect(t.step(26 + MAX_RELEASE_TAIL)).toEqual({ dir: 0, letGoAt: Number.NaN });
+    t.step(8);
+    t.clock(8, 4000);
+    t.event(0, 9000);
+    expect(t.step(8 + MAX_RELEASE_TAIL - 0.01).dir).toBe(-1);
+    expect(t.step(8 + MAX_RELEASE_TAIL)).toEqual({ dir: 0, letGoAt: Number.NaN });
+    t.event(-1, 10_000, true);
+    t.step(9);
+    t.clock(9.5, 10_000);
+    t.event(0, 12_000, true);
+    expect(t.step(9.5)).toEqual({ dir: 0, letGoAt: Number.NaN });
   });
 
   it('a Dive held 1.5 s and let go mid-frame at 1 frame a second stops within 0.3 m of where one let go at that moment does', () => {
@@ -99,8 +108,9 @@ describe('submarine let-go', () => {
     }
     const refY = ref.world.components.Position.y[ref.h.hull]!;
     expect(refY).toBeLessThan(-45); // it dived: 6 m/s for 1.5 s, less the start
-    // The page at 1 frame a second: the press seen at the first step of a frame, let go 1.5 s later
-    // by the clock; the next frame runs 60 steps, the one after sees the let-go 0.5 s late.
+    // The page at 1 frame a second: the press seen at the first step of a frame (game time 2 s, the
+    // clock at 10 s), let go 1.5 s later by the clock, its event handled only after the next two
+    // frames' bursts have run the steps to game time 4 s.
     const b = hover(),
       timing = createHeaveTiming();
     timing.event(-1, 10_000);
