@@ -8,7 +8,7 @@
  * and stops). A trail of glowing plankton leads from beacon to beacon round the mines (./trail.ts):
  * each glow caught scores, more for a streak of them (a first-time hint over the scene says how much). The hull floats by Archimedes (its submerged part of a 12 m x 3 m box), drags in proportion
  * to how much of it is under water and bobs in the waves. Collect every beacon before three hits
- * (a scrape on the seabed, or a moored mine laid across the way between two beacons: ./mines.ts)
+ * (a scrape on the seabed, or a moored mine laid beside the way between two beacons: ./mines.ts)
  * break the hull, inside the course's par time if you can (the clock starts at the first control held): a won run earns a star for the beacons,
  * one for par and one for an unhurt hull (the best time of each course is kept). A mine on the
  * boat's course within MINE_WARN_TIME s (at least MINE_LOOK_AHEAD m) is told by the hull: a red
@@ -1516,9 +1516,21 @@ function drawDepthGauge(W: number, H: number, depth: number, order: number, bed:
     if (gaugeDepth.visible) offFrame(gaugeDepth, box, top, bottom);
     for (const mark of gaugeMarks) if (mark.visible && overlaps(textBox(mark), box, 2)) mark.visible = false;
   }
-  // A label beside the target's ring (moved off it) may have pushed the boat's depth onto the frame:
-  // off the frame again (above or below it, where the label beside the ring is not).
-  if (frame[2] > 0 && gaugeDepth.visible) offFrame(gaugeDepth, frame, top, bottom);
+  // Moved off the label, the boat's depth may lie on the frame again (a label beside the target's
+  // ring): off whichever it crosses, a few times; still on one, it is hidden (the status row has it).
+  const labelBoxes = [aim.label, aim.badge]
+    .filter((b) => pointer.visible && b[2]! > 0)
+    .map(([bx = 0, by = 0, bw = 0, bh = 0]) => [bx - 7, by - 2, bw + 14, bh + 4]);
+  const depthTag = gaugeDepth;
+  const crossed = () =>
+    (frame[2] > 0 && overlaps(textBox(depthTag), frame, 2) ? frame : undefined) ??
+    labelBoxes.find((box) => overlaps(textBox(depthTag), box, 2));
+  for (let n = 0; n < 3 && depthTag.visible; n++) {
+    const box = crossed();
+    if (!box) break;
+    offFrame(depthTag, box, top, bottom);
+  }
+  if (depthTag.visible && crossed()) depthTag.visible = false;
   // Off the live mines in view (on a phone the boat's depth would be written over a mine near the edge).
   for (const box of mineBoxes) {
     for (const tag of [gaugeDepth, gaugeTarget]) if (tag.visible) offFrame(tag, box, top, bottom);
