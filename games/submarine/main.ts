@@ -153,30 +153,25 @@ const GLOW_MISS = 10;
 /** The depth gauge's full scale: the deepest seabed of the course and 10 m, rounded up to 10 m. */
 let courseDepth = 160;
 /**
- * An effect drawn for a while after a moment of the game (a blast, a hit): where (m) and when (game
- * time, s), and the game time and the clock (performance.now(), ms) of the first frame that drew it.
+ * An effect drawn for a while after a moment of the game (a blast, a hit, a banner): where (m) and
+ * when (game time, s), and the game time of the first frame that drew it.
  */
 interface Shown {
   x: number;
   y: number;
   time: number;
   shownT?: number;
-  shownMs?: number;
 }
 /**
- * How long effect `e` has been on the screen at game time `t`, s: from the first frame that drew it,
- * the lesser of the game time and the clock's since then (0 before it is drawn). A loaded machine
- * draws a frame a second with a second of steps in each: counted from the step that made it, a hit's
- * 0.6 s flash was over before any frame showed it and its label showed on one frame at most; a
- * paused game holds it on the screen.
+ * How long effect `e` has been on the screen at game time `t`, s: the game time since the first frame
+ * that drew it (0 on that frame). A loaded machine draws a frame a second with a second of steps in
+ * each: counted from the step that made it, a hit's 0.6 s flash was over before any frame showed it
+ * and its label showed on one frame at most; counted from its first frame, the flash is seen whole on
+ * that frame and the label on the next ones.
  */
 function shownAge(e: Shown, t: number): number {
-  const now = performance.now();
-  if (e.shownT === undefined || e.shownMs === undefined) {
-    e.shownT = t;
-    e.shownMs = now;
-  }
-  return Math.max(0, Math.min(t - e.shownT, (now - e.shownMs) / 1000));
+  if (e.shownT === undefined) e.shownT = t;
+  return Math.max(0, t - e.shownT);
 }
 /** Mine blasts, for drawing: where (m) and when (game time, s). */
 const blasts: Shown[] = [];
