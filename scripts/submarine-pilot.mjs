@@ -8,7 +8,10 @@
 // computes it, on at the share the keys ask for) it waits S s (default 1: mines.ts MINE_REACTION), then holds the Rise or Dive key as
 // told while the warning lasts and holds its depth until it is past the mine; when the seabed has
 // stopped its dive it lets go of Dive once off the bed and presses it again. It minds neither the
-// ridges nor the glow trail, and does not turn back for a beacon it passed. Courses: seeds 1 to N
+// ridges nor the glow trail, and does not turn back for a beacon it passed: as on the page, a beacon
+// left BEACON_PASSED behind (beacons.ts passedBeacon) is missed and the next one is the target, any
+// beacon the hull touches on its way is collected, and the run ends at the finish (beacons.ts
+// lastBeacon, never passed), whatever was missed. Courses: seeds 1 to N
 // (default 20) with 6 and with 10 beacons. --warn: how far ahead the warning looks, s (default
 // mines.ts MINE_WARN_TIME). Prints the mines hit (and how long before each the warning came), the
 // seabed hits, the beacons collected (beacons.ts catchesBeacon) and missed, the time and the par
@@ -42,7 +45,9 @@ const sub = await importSource(
 const {
   createHelmState,
   catchesBeacon,
+  lastBeacon,
   layCourse,
+  passedBeacon,
   parTime,
   keyHeaveShare,
   steer,
@@ -56,7 +61,7 @@ const {
 } = sub;
 const { SUBMARINE, submarine, applyImpulse, createPhysicsWorld, step } = sub;
 
-/** Flies course (seed, count) for up to 240 s of game time. @returns mines laid and hit, seabed hits, beacons collected, the time and what happened. */
+/** Flies course (seed, count) for up to 240 s of game time. @returns mines laid and hit, seabed hits, beacons collected and missed, whether the finish was reached, the time and what happened. */
 function fly(seed, count) {
   const world = createPhysicsWorld(submarine.worldOptions());
   const h = submarine.build(world, { seed, count });
@@ -74,9 +79,16 @@ function fly(seed, count) {
     warnedAt = Number.NaN,
     evade = null,
     keySince = Number.NaN,
-    collected = 0;
+    collected = 0,
+    missed = 0,
+    finished = false;
+  const taken = order.map(() => false),
+    finish = lastBeacon(h.beacons);
   const events = [];
-  for (let n = 0; n < 240 * 60 && next < order.length; n++) {
+  for (let n = 0; n < 240 * 60 && !finished && next < order.length; n++) {
+    // The target: the next beacon along the course not collected yet.
+    while (next < order.length && taken[order[next]]) next++;
+    if (next >= order.length) break;
     const t = world.time,
       x = c.Position.x[e],
       y = c.Position.y[e];
@@ -150,11 +162,16 @@ function fly(seed, count) {
         r = Math.max(1e-6, Math.hypot(dx, dy));
       applyImpulse(world, e, [(MINE_BLAST_IMPULSE * dx) / r, (MINE_BLAST_IMPULSE * dy) / r]);
     }
-    if (catchesBeacon(c.Position.x[e], c.Position.y[e], c.Angle.value[e], bx, by)) {
+    // Any beacon the hull touches is collected (the page's rule), the finish ends the run.
+    for (let i = 0; i < order.length; i++) {
+      if (taken[i] || !catchesBeacon(c.Position.x[e], c.Position.y[e], c.Angle.value[e], h.beacons[2 * i], h.beacons[2 * i + 1])) continue;
+      taken[i] = true;
       collected++;
-      next++;
-    } else if (c.Position.x[e] > bx + 30) {
+      if (i === finish) finished = true;
+    }
+    if (!finished && !taken[b] && passedBeacon(h.beacons, b, c.Position.x[e])) {
       events.push(`missed beacon ${b} at (${bx.toFixed(0)}, ${by.toFixed(0)}): passed at depth ${(-c.Position.y[e]).toFixed(0)} m`);
+      missed++;
       next++;
     }
   }
@@ -166,14 +183,28 @@ function fly(seed, count) {
     py = h.beacons[2 * i + 1];
     return leg;
   });
-  return { mines: mines.length, hits, bed, collected, count: order.length, time: world.time, par: parTime(h.beacons), legs, events };
+  return {
+    mines: mines.length,
+    hits,
+    bed,
+    collected,
+    missed,
+    finished,
+    count: order.length,
+    time: world.time,
+    par: parTime(h.beacons),
+    legs,
+    events,
+  };
 }
 
 let laid = 0,
   hit = 0,
   bedHits = 0,
   beacons = 0,
-  collected = 0;
+  collected = 0,
+  missedAll = 0,
+  unfinished = 0;
 const ratios = [];
 for (let seed = 1; seed <= seeds; seed++)
   for (const count of [6, 10]) {
@@ -183,11 +214,13 @@ for (let seed = 1; seed <= seeds; seed++)
     bedHits += r.bed;
     beacons += r.count;
     collected += r.collected;
+    missedAll += r.missed;
+    if (!r.finished) unfinished++;
     if (r.collected === r.count) ratios.push(r.par / r.time);
     if (args.includes('--legs') && r.collected === r.count) console.log(JSON.stringify({ seed, count, time: r.time, legs: r.legs }));
     if (verbose || r.hits > 0 || r.collected < r.count)
       console.log(
-        `seed ${seed}, ${count} beacons: ${r.collected} collected, ${r.mines} mines, ${r.hits} hit, ${r.bed} seabed hits, ${r.time.toFixed(0)} s (par ${r.par} s). ${r.events.join('; ')}`,
+        `seed ${seed}, ${count} beacons: ${r.collected} collected, ${r.missed} missed, ${r.finished ? 'finished' : 'not finished'}, ${r.mines} mines, ${r.hits} hit, ${r.bed} seabed hits, ${r.time.toFixed(0)} s (par ${r.par} s). ${r.events.join('; ')}`,
       );
   }
 ratios.sort((a, b) => a - b);
@@ -196,5 +229,5 @@ if (ratios.length > 0)
     `Par over the pilot's time, on the ${ratios.length} courses won: least ${ratios[0].toFixed(2)}, median ${ratios[ratios.length >> 1].toFixed(2)}, most ${ratios[ratios.length - 1].toFixed(2)}.`,
   );
 console.log(
-  `Reaction ${react} s: ${hit} of ${laid} mines hit (${((100 * hit) / Math.max(1, laid)).toFixed(1)} %), ${bedHits} seabed hits, ${collected} of ${beacons} beacons collected.`,
+  `Reaction ${react} s: ${hit} of ${laid} mines hit (${((100 * hit) / Math.max(1, laid)).toFixed(1)} %), ${bedHits} seabed hits, ${collected} of ${beacons} beacons collected, ${missedAll} missed, ${unfinished} courses not finished.`,
 );

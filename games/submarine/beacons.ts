@@ -116,6 +116,23 @@ export function lastBeacon(beacons: ArrayLike<number>): number {
 }
 
 /**
+ * How far the boat can go on before beacon `i` counts as passed (`passedBeacon`), m, while it is
+ * moving away from it: the hull's centre at `x` (m) has gone past the beacon by more than its ring
+ * and half a hull (`BEACON_CATCH` + 6 m), is moving on ahead at `vx` > 0.5 m/s (m/s along x), and
+ * the beacon is not the last (the finish is never passed); NaN otherwise (no warning). The page warns
+ * with it, so a beacon is never lost without notice. `beacons`: (x, y) pairs, m.
+ * @throws RangeError when `x` or `vx` is not finite or `i` is not an index of `beacons`.
+ */
+export function missWarning(beacons: ArrayLike<number>, i: number, x: number, vx: number): number {
+  assertFinite('missWarning', 'x', x);
+  assertFinite('missWarning', 'vx', vx);
+  if (!(Number.isInteger(i) && i >= 0 && i < beacons.length / 2)) throw new RangeError(`missWarning: i must be a beacon index, got ${i}`);
+  const behind = x - beacons[2 * i]!;
+  if (behind <= BEACON_CATCH + 6 || vx <= 0.5 || i === lastBeacon(beacons)) return Number.NaN;
+  return Math.max(0, BEACON_PASSED - behind);
+}
+
+/**
  * Whether beacon `i` has been passed by a hull whose centre is at `x`, m: it lies more than
  * `BEACON_PASSED` behind along x and is not the last beacon along the course (the finish is never
  * passed). `beacons`: (x, y) pairs, m.

@@ -8,7 +8,7 @@
  * and stops). A trail of glowing plankton leads from beacon to beacon round the mines (./trail.ts):
  * each glow caught scores, more for a streak of them (a first-time hint over the scene says how much). The hull floats by Archimedes (its submerged part of a 12 m x 3 m box), drags in proportion
  * to how much of it is under water and bobs in the waves. Collect every beacon before three hits
- * (a scrape on the seabed, or a moored mine laid across the way between two beacons: ./mines.ts)
+ * (a scrape on the seabed, or a moored mine laid beside the way between two beacons: ./mines.ts)
  * break the hull, inside the course's par time if you can (the clock starts at the first control held): a won run earns a star for the beacons,
  * one for par and one for an unhurt hull (the best time of each course is kept). A mine on the
  * boat's course within MINE_WARN_TIME s (at least MINE_LOOK_AHEAD m) is told by the hull: a red
@@ -46,6 +46,7 @@ import {
   chooseBeacon,
   lastBeacon,
   layCourse,
+  missWarning,
   passedBeacon,
   seabedBetween,
 } from './beacons';
@@ -64,9 +65,10 @@ import {
   parTime,
   touchesMine,
 } from './mines';
-import { createShownOrder, releasedOrder } from './release';
+import { createHeaveTiming, releasedOrder } from './release';
 import { drawFish } from './sea-life';
 import { type BedAhead, bedAhead, DIVE_STOPPED_WORD, helmWord, seabedInput, touchSeabed } from './seabed';
+import { stickDirection, stickShare } from './stick';
 import { type Glow, layTrail, touchesGlow } from './trail';
 
 const params = {
@@ -104,6 +106,10 @@ const state = {
 };
 let handles: SubmarineHandles;
 let taken: boolean[] = [];
+/** Beacons passed and left behind uncollected (./beacons.ts passedBeacon): marked missed on the scene and counted in the goal line. */
+let missed: boolean[] = [];
+/** The target beacon the pointer warns is being left behind (./beacons.ts missWarning), -1 for none: a new warning chimes. */
+let missWarned = -1;
 /** The course's moored mines (./mines.ts) and whether each is still live (a mine that went off is gone). */
 let mines: Mine[] = [];
 let mineLive: boolean[] = [];
@@ -146,8 +152,29 @@ const glowHint = { shown: Number.NaN, caught: Number.NaN };
 const GLOW_MISS = 10;
 /** The depth gauge's full scale: the deepest seabed of the course and 10 m, rounded up to 10 m. */
 let courseDepth = 160;
+/**
+ * An effect drawn for a while after a moment of the game (a blast, a hit, a banner): where (m) and
+ * when (game time, s), and the game time of the first frame that drew it.
+ */
+interface Shown {
+  x: number;
+  y: number;
+  time: number;
+  shownT?: number;
+}
+/**
+ * How long effect `e` has been on the screen at game time `t`, s: the game time since the first frame
+ * that drew it (0 on that frame). A loaded machine draws a frame a second with a second of steps in
+ * each: counted from the step that made it, a hit's 0.6 s flash was over before any frame showed it
+ * and its label showed on one frame at most; counted from its first frame, the flash is seen whole on
+ * that frame and the label on the next ones.
+ */
+function shownAge(e: Shown, t: number): number {
+  if (e.shownT === undefined) e.shownT = t;
+  return Math.max(0, t - e.shownT);
+}
 /** Mine blasts, for drawing: where (m) and when (game time, s). */
-const blasts: { x: number; y: number; time: number }[] = [];
+const blasts: Shown[] = [];
 /** How long a blast's flash and bubbles last, s of game time. */
 const BLAST_LIFE = 1.6;
 
@@ -185,6 +212,8 @@ const aim = {
   hull: [0, 0, 0, 0],
   /** Whether the label was moved off the headlight's cone this frame. */
   beam: false,
+  /** Whether the label warns that the target is being left behind (./beacons.ts missWarning). */
+  missWarn: false,
   /** The arrow's badge while drawn: its box (x, y, width, height, px; zeros while none) and the depth gauge's left edge (px). */
   badge: [0, 0, 0, 0],
   gaugeLeft: 0,
@@ -201,7 +230,7 @@ const aim = {
  * game time it was taken or passed (s), the banner's text ("Beacon 2 of 6", "B passed") and whether
  * it was passed (a banner only: no rings at a beacon left behind).
  */
-const pickups: { x: number; y: number; time: number; text: string; passed?: boolean }[] = [];
+const pickups: (Shown & { text: string; passed?: boolean })[] = [];
 /** How long a pickup's rings and banner last, s of game time. */
 const PICKUP_LIFE = 2;
 /** The framing camera: the hull and the next beacon are kept this far inside the view's edges, px. */
@@ -267,7 +296,7 @@ const camera = { x: 0, y: 0, zoom: 0, leadX: 0, leadY: 0, time: 0, shake: 0, wid
  * Hits on the hull, for drawing: what hit it ('mine' or 'seabed'), where (m: the mine's centre, or
  * the point of the hull that struck the bed) and when (game time, s).
  */
-const hitMarks: { kind: 'mine' | 'seabed'; x: number; y: number; time: number }[] = [];
+const hitMarks: (Shown & { kind: 'mine' | 'seabed' })[] = [];
 /** How long a hit's label, sand cloud and red flash last, s of game time. */
 const HIT_LIFE = 1.8;
 /** How long a hit shakes the view, s of game time. */
@@ -297,6 +326,8 @@ function createWorld(): PhysicsWorld {
     score: 0,
   });
   taken = new Array(params.beacons).fill(false);
+  missed = new Array(params.beacons).fill(false);
+  missWarned = -1;
   mines = layMines(handles.beacons, handles.seabed, params.seed);
   mineLive = mines.map(() => true);
   wayMine = -1;
@@ -313,7 +344,7 @@ function createWorld(): PhysicsWorld {
   zoom = Number.NaN;
   Object.assign(camera, { leadX: 0, leadY: 0, time: 0, shake: 0 });
   hitMarks.length = 0;
-  shownOrder = createShownOrder();
+  heaveTiming.reset();
   scrapeAt = Number.NaN;
   pickups.length = 0;
   return world;
@@ -322,21 +353,30 @@ function createWorld(): PhysicsWorld {
 const held = new Set<string>();
 /** The on-screen stick (phones): x right (ahead), y up (rise), each in [-1, 1], and whether a finger is on it. */
 const stickInput = { x: 0, y: 0, held: false };
-/**
- * How far the stick must move before it counts as a held control (a thumb resting on it wobbles by
- * less); past it the stick asks for as much as it is pushed (stickShare).
- */
-const STICK_DEAD = 0.2;
+/** Whether the game is paused (a let-go then takes no game time); false until the game has started. */
+let pausedNow = (): boolean => false;
+/** Dive or Rise pressed and let go, timed by the events' timestamps (./release.ts): a let-go holds the order of its moment. */
+const heaveTiming = createHeaveTiming();
+/** The share of Dive / Rise the press asked for on its last step held (a let-go press runs on at it). */
+let lastHeave = 1;
+/** Dive or Rise as the keys and the stick ask for it now: -1 dive, 1 rise, 0 neither (or both). */
+function heaveAsked(): -1 | 0 | 1 {
+  const dive = held.has('s') || held.has('arrowdown') || stickDirection(stickInput.y, stickInput.x) < 0,
+    rise = held.has('w') || held.has('arrowup') || stickDirection(stickInput.y, stickInput.x) > 0;
+  return dive === rise ? 0 : dive ? -1 : 1;
+}
 addEventListener('keydown', (e) => {
   held.add(e.key.toLowerCase());
+  heaveTiming.event(heaveAsked(), e.timeStamp, pausedNow());
 });
 addEventListener('keyup', (e) => {
   held.delete(e.key.toLowerCase());
+  heaveTiming.event(heaveAsked(), e.timeStamp, pausedNow());
 });
-addEventListener('blur', () => held.clear());
-
-/** The depth order as last put on the screen (./release.ts): a let-go of Dive or Rise holds it. */
-let shownOrder = createShownOrder();
+addEventListener('blur', (e) => {
+  held.clear();
+  heaveTiming.event(0, e.timeStamp, pausedNow());
+});
 /** Game time a Dive or Rise key was first held (s), NaN while none is. */
 let heaveKeySince = Number.NaN;
 
@@ -351,12 +391,12 @@ function heldInput(now: number): HelmInput {
   if (!heaveKey) heaveKeySince = Number.NaN;
   else if (Number.isNaN(heaveKeySince)) heaveKeySince = now;
   return {
-    dive: held.has('s') || held.has('arrowdown') || stickInput.y < -STICK_DEAD,
-    rise: held.has('w') || held.has('arrowup') || stickInput.y > STICK_DEAD,
+    dive: held.has('s') || held.has('arrowdown') || stickDirection(stickInput.y, stickInput.x) < 0,
+    rise: held.has('w') || held.has('arrowup') || stickDirection(stickInput.y, stickInput.x) > 0,
     noseDown: held.has('q'),
     noseUp: held.has('e'),
-    ahead: held.has('d') || held.has('arrowright') || stickInput.x > STICK_DEAD,
-    astern: held.has('a') || held.has('arrowleft') || stickInput.x < -STICK_DEAD,
+    ahead: held.has('d') || held.has('arrowright') || stickDirection(stickInput.x, stickInput.y) > 0,
+    astern: held.has('a') || held.has('arrowleft') || stickDirection(stickInput.x, stickInput.y) < 0,
     // The stick grades the dive or climb up to what a key asks for (./helm.ts keyHeaveShare) and no
     // further, so a thumb at the rim and a held key take the boat down alike.
     heave: heaveKey
@@ -366,18 +406,8 @@ function heldInput(now: number): HelmInput {
     // The stick touched but not pushed sideways (up or down only, or a thumb resting at its centre)
     // keeps the screw as it is (pushing it straight up to rise does not stop the screw); the
     // thumb lifted, the screw winds down as with a key let go; pushed sideways, it drives the screw.
-    keepThrottle: stickInput.held && Math.abs(stickInput.x) <= STICK_DEAD,
+    keepThrottle: stickInput.held && stickDirection(stickInput.x, stickInput.y) === 0,
   };
-}
-
-/**
- * The share of full Dive / Rise (or screw) that the stick's push `v` in [-1, 1] along one axis asks
- * for: as far as it is pushed (0.2 just past the dead zone, 0.5 half way, 1 at the rim); 1 while a
- * key of that axis is held (`key`), so the keys always ask for all of it.
- */
-function stickShare(v: number, key: boolean): number {
-  if (key) return 1;
-  return Math.max(STICK_DEAD, Math.min(1, Math.abs(v)));
 }
 
 /**
@@ -431,18 +461,25 @@ let lastPing = 0;
 function stepWorld(world: PhysicsWorld): void {
   // The seabed stops a dive until Dive is let go (./seabed.ts). After the end (won or sunk) the
   // controls are let go: the boat glides to a stop on its order, whatever keys are still held.
-  const input = state.over ? NO_INPUT : seabedInput(state, heldInput(world.time));
-  // Dive or Rise let go: the order stays at the line last drawn, not where it ran on to since (./release.ts).
-  if ((state.mode === 'diving' && !input.dive) || (state.mode === 'rising' && !input.rise))
-    state.holdY = releasedOrder(state.holdY, shownOrder.shown(game.pacer.drawn), state.mode);
+  // Dive or Rise timed by its events (./release.ts): a press let go before the steps caught up runs
+  // on to its own length; one the steps ran past holds the order of the moment it was let go.
+  const timed = heaveTiming.step(world.time);
+  const asked = heldInput(world.time);
+  if (timed.dir !== 0 && !asked.dive && !asked.rise) Object.assign(asked, { dive: timed.dir < 0, rise: timed.dir > 0, heave: lastHeave });
+  else if (asked.dive !== asked.rise) lastHeave = asked.heave ?? 1;
+  const input = state.over ? NO_INPUT : seabedInput(state, asked);
+  if (!Number.isNaN(timed.letGoAt) && (state.mode === 'diving' || state.mode === 'rising'))
+    state.holdY = releasedOrder(state.holdY, heaveTiming.orderAt(timed.letGoAt), state.mode);
   const vertical = input.dive === input.rise ? 0 : input.dive ? -1 : 1;
   if (vertical !== 0 && vertical !== lastVertical) sound.launch(0.25);
   lastVertical = vertical;
   steer(world, handles, input, state);
+  if (state.mode === 'diving' || state.mode === 'rising') heaveTiming.note(world.time, state.holdY);
   // Waves: the sea's surface bobs (the hull rides it).
   const sea = world.components.FluidRegion;
   sea.surface[handles.sea] = params.waveHeight * 0.5 * Math.sin(0.9 * world.time);
   step(world);
+  heaveTiming.clock(world.time, performance.now());
   if (state.over) return;
   // The clock starts with the first control held, not when the page loads.
   const anyHeld = input.dive || input.rise || input.noseDown || input.noseUp || input.ahead || input.astern;
@@ -550,6 +587,7 @@ function stepWorld(world: PhysicsWorld): void {
     // Any part of the hull inside the beacon's ring (./beacons.ts catchesBeacon) collects it.
     if (catchesBeacon(c.Position.x[e]!, c.Position.y[e]!, angle, handles.beacons[2 * i]!, handles.beacons[2 * i + 1]!)) {
       taken[i] = true;
+      missed[i] = false;
       state.collected++;
       state.score += BEACON_POINTS;
       const last = i === lastBeacon(handles.beacons);
@@ -592,15 +630,19 @@ function stepWorld(world: PhysicsWorld): void {
   if (target >= 0 && !taken[target] && passedBeacon(handles.beacons, target, c.Position.x[e]!)) {
     aim.index = chooseBeacon(handles.beacons, taken, c.Position.x[e]!, c.Position.y[e]!, target);
     if (aim.index !== target) {
+      missed[target] = true;
       aimSwitchedAt = world.time;
       pickups.push({
         x: handles.beacons[2 * target]!,
         y: handles.beacons[2 * target + 1]!,
         time: world.time,
-        text: `${beaconName(target)} passed\nnext: ${beaconName(aim.index)}`,
+        text: `Beacon ${beaconName(target)} missed\nnext: ${beaconName(aim.index)}`,
         passed: true,
       });
-      sound.chime(523, 0.2);
+      // A falling two-note call: a loss, not a gain.
+      sound.chime(523, 0.25);
+      setTimeout(() => sound.chime(392, 0.3), 140);
+      game.drawNext();
     }
   }
 }
@@ -667,6 +709,7 @@ const game = await startPixiGame({
   onFrame: () => draw(),
 });
 const { shell, app } = game;
+pausedNow = () => shell.paused;
 
 // ---- Drawing: sky, sea, seabed, beacons, hull and gauges (the world renderer draws nothing here) --
 
@@ -1070,7 +1113,8 @@ const HIT_TEXT = { mine: 'MINE!\n−1 hull', seabed: 'SEABED!\n−1 hull' } as c
 function drawHits(t: number, k: number, sx: (x: number) => number, sy: (y: number) => number, W: number, H: number, hullTop: number): void {
   for (let i = hitMarks.length - 1; i >= 0; i--) if (t < hitMarks[i]!.time) hitMarks.splice(i, 1);
   const m = hitMarks[hitMarks.length - 1];
-  const u = m ? (t - m.time) / HIT_LIFE : 1;
+  const age = m ? shownAge(m, t) : Number.POSITIVE_INFINITY,
+    u = age / HIT_LIFE;
   hitLabel.visible = m !== undefined && u < 1;
   if (!m || u >= 1) return;
   const x = sx(m.x),
@@ -1098,7 +1142,7 @@ function drawHits(t: number, k: number, sx: (x: number) => number, sy: (y: numbe
           .stroke({ color: 0xfff0b0, alpha: 1 - u / 0.3, width: 2 });
       }
   }
-  const flash = Math.max(0, 1 - (t - m.time) / 0.6);
+  const flash = Math.max(0, 1 - age / 0.6);
   if (flash > 0) g.rect(0, 0, W, H).stroke({ color: 0xff3b30, width: 18, alpha: 0.5 * flash, alignment: 1 });
   hitLabel.text = HIT_TEXT[m.kind];
   hitLabel.alpha = u < 0.6 ? 1 : (1 - u) / 0.4;
@@ -1169,6 +1213,9 @@ for (const type of ['pointerup', 'pointercancel', 'lostpointercapture'])
   stick.element.addEventListener(type, () => {
     stickInput.held = false;
   });
+// Dive or Rise by the stick, timed by its events (after the stick's own listeners have moved it).
+for (const type of ['pointerdown', 'pointermove', 'pointerup', 'pointercancel', 'lostpointercapture'])
+  stick.element.addEventListener(type, (e) => heaveTiming.event(heaveAsked(), e.timeStamp, pausedNow()));
 // On a phone a larger stick (136 px, the knob's reach 56 px): the thumb grades its push over more
 // of its travel, and the rim is easier to find without looking.
 if (compact) stick.element.style.cssText += 'width: 136px; height: 136px;';
@@ -1262,9 +1309,9 @@ function drawMines(
     g.circle(x, y - R * k * 0.55, Math.max(2, 0.22 * k)).fill({ color: on ? 0xff3b30 : 0x6a1a16, alpha: 1 });
     if (on) g.circle(x, y - R * k * 0.55, Math.max(5, 0.7 * k)).fill({ color: 0xff3b30, alpha: 0.25 });
   }
-  for (let i = blasts.length - 1; i >= 0; i--) if (t - blasts[i]!.time > BLAST_LIFE || t < blasts[i]!.time) blasts.splice(i, 1);
+  for (let i = blasts.length - 1; i >= 0; i--) if (shownAge(blasts[i]!, t) > BLAST_LIFE || t < blasts[i]!.time) blasts.splice(i, 1);
   for (const b of blasts) {
-    const u = (t - b.time) / BLAST_LIFE,
+    const u = shownAge(b, t) / BLAST_LIFE,
       x = sx(b.x),
       y = sy(b.y);
     if (u < 0.3) {
@@ -1464,6 +1511,21 @@ function drawDepthGauge(W: number, H: number, depth: number, order: number, bed:
     if (gaugeDepth.visible) offFrame(gaugeDepth, box, top, bottom);
     for (const mark of gaugeMarks) if (mark.visible && overlaps(textBox(mark), box, 2)) mark.visible = false;
   }
+  // Moved off the label, the boat's depth may lie on the frame again (a label beside the target's
+  // ring): off whichever it crosses, a few times; still on one, it is hidden (the status row has it).
+  const labelBoxes = [aim.label, aim.badge]
+    .filter((b) => pointer.visible && b[2]! > 0)
+    .map(([bx = 0, by = 0, bw = 0, bh = 0]) => [bx - 7, by - 2, bw + 14, bh + 4]);
+  const depthTag = gaugeDepth;
+  const crossed = () =>
+    (frame[2] > 0 && overlaps(textBox(depthTag), frame, 2) ? frame : undefined) ??
+    labelBoxes.find((box) => overlaps(textBox(depthTag), box, 2));
+  for (let n = 0; n < 3 && depthTag.visible; n++) {
+    const box = crossed();
+    if (!box) break;
+    offFrame(depthTag, box, top, bottom);
+  }
+  if (depthTag.visible && crossed()) depthTag.visible = false;
   // Off the live mines in view (on a phone the boat's depth would be written over a mine near the edge).
   for (const box of mineBoxes) {
     for (const tag of [gaugeDepth, gaugeTarget]) if (tag.visible) offFrame(tag, box, top, bottom);
@@ -1726,7 +1788,6 @@ function draw(): void {
     H = app.screen.height;
   const hxw = c.Position.x[e]!,
     hyw = c.Position.y[e]!;
-  shownOrder.note(state.holdY, game.pacer.drawn);
   const before = aim.index;
   aim.index = chooseBeacon(handles.beacons, taken, hxw, hyw, aim.index);
   // A new target (the last one collected): its label pulses (drawBeacons).
@@ -1790,7 +1851,7 @@ function draw(): void {
   camera.height = H;
   // A hit shakes the view (drawing only): SHAKE_PX px at the hit, decaying over HIT_SHAKE_LIFE s.
   const lastMark = hitMarks[hitMarks.length - 1];
-  const shakeAge = lastMark ? world.time - lastMark.time : Number.POSITIVE_INFINITY;
+  const shakeAge = lastMark ? shownAge(lastMark, world.time) : Number.POSITIVE_INFINITY;
   // A scrape (a contact that costs nothing) shakes it a little, so the bed is felt before it hurts.
   const scrapeAge = world.time - scrapeAt;
   const shake = Math.max(
@@ -1944,6 +2005,19 @@ function draw(): void {
     // The lamp's glow: filled discs (no second ring to mistake for the one to touch).
     g.circle(bx, by, Math.max(9, (2 + Math.sin(3 * t)) * k)).fill({ color: 0xffe066, alpha: 0.14 * dim });
     g.circle(bx, by, Math.max(5, 1.2 * k)).fill({ color: 0xffe066, alpha: dim * (0.9 + 0.1 * Math.sin(4 * t)) });
+    // A beacon passed and left (missed): crossed out in red over its lamp, and its tag says so.
+    if (missed[i]) {
+      const r = Math.max(8, 2 * k);
+      for (const [width, color] of [
+        [6, 0x06213a],
+        [3, 0xff5a4a],
+      ] as const)
+        g.moveTo(bx - r, by - r)
+          .lineTo(bx + r, by + r)
+          .moveTo(bx + r, by - r)
+          .lineTo(bx - r, by + r)
+          .stroke({ color, width, cap: 'round' });
+    }
     if (i === aim.index && aim.onScreen) {
       const r = Math.max(14, BEACON_CATCH * k) + 6 + 3 * Math.sin(3 * t),
         arm = Math.max(6, 0.35 * r);
@@ -1974,7 +2048,8 @@ function draw(): void {
       app.stage.addChild(tag);
     }
     tag.visible = true;
-    tag.text = `beacon ${beaconName(i)}`;
+    tag.text = missed[i] ? `${beaconName(i)} missed` : `beacon ${beaconName(i)}`;
+    tag.style.fill = missed[i] ? 0xff9e8a : 0xffe066;
     // Under its beacon, kept clear of the depth gauge (which would cut a tag under it to "beac"); off
     // the headlight's cone where it shows (a tag on the lit water reads as part of the beam): over
     // the lamp, else under or over the ring.
@@ -1995,10 +2070,10 @@ function draw(): void {
   otherTags = tagged;
   // Collected beacons: a flash, two rings expanding from the beacon and rays, fading over
   // PICKUP_LIFE s of game time; the banner shows the newest one.
-  for (let i = pickups.length - 1; i >= 0; i--) if (t - pickups[i]!.time > PICKUP_LIFE || t < pickups[i]!.time) pickups.splice(i, 1);
+  for (let i = pickups.length - 1; i >= 0; i--) if (shownAge(pickups[i]!, t) > PICKUP_LIFE || t < pickups[i]!.time) pickups.splice(i, 1);
   for (const p of pickups) {
     if (p.passed) continue;
-    const u = (t - p.time) / PICKUP_LIFE,
+    const u = shownAge(p, t) / PICKUP_LIFE,
       px = sx(p.x),
       py = sy(p.y),
       fade = 1 - u;
@@ -2021,8 +2096,10 @@ function draw(): void {
   // Hidden while paused: the pause overlay's words are the only ones in the middle then.
   banner.visible = newest !== undefined && !state.over && !shell.paused;
   if (newest) {
-    const u = (t - newest.time) / PICKUP_LIFE;
+    const u = shownAge(newest, t) / PICKUP_LIFE;
     banner.text = newest.text;
+    // A missed beacon's banner in the hits' red-orange, a collected one's in the beacons' yellow.
+    banner.style.fill = newest.passed ? 0xff9e8a : 0xffe066;
     banner.x = W / 2;
     banner.y = H * 0.28;
     banner.alpha = u < 0.7 ? 1 : (1 - u) / 0.3;
@@ -2060,6 +2137,14 @@ function draw(): void {
       brakeHint.shown++;
     }
     if (brakeHint.on) pointer.text += `\n${BRAKE_HINT}`;
+    // Moving away from the target left behind: how far on it counts as missed, with a low call once.
+    const left = state.over ? Number.NaN : missWarning(handles.beacons, aim.index, hxw, c.Velocity.x[e]!);
+    if (!Number.isNaN(left)) {
+      pointer.text += `\n⚠ going away: missed in ${Math.ceil(left)} m (Astern)`;
+      if (missWarned !== aim.index) sound.chime(392, 0.2);
+    }
+    missWarned = Number.isNaN(left) ? -1 : aim.index;
+    aim.missWarn = !Number.isNaN(left);
     aim.dx = wx - hxw;
     aim.dy = wy - hyw;
     // The right margin leaves the depth gauge clear too (on a phone the badge would sit over it). A beacon
@@ -2135,7 +2220,7 @@ function draw(): void {
       // Above the catch disc's rim and the target's brackets (drawn at least 14 px and up to 9 px
       // more out from the beacon), so the label covers neither.
       pointer.x = bx;
-      pointer.y = by - Math.max(14, BEACON_CATCH * k) - 22;
+      pointer.y = by - Math.max(14, BEACON_CATCH * k) - 12 - pointer.height / 2 - 4;
     }
     // Kept inside the view (a long label beside a badge at a side edge).
     // (its pill is 7 px wider each side than the text and the switch's ring 3 px more; 5 px more
@@ -2148,7 +2233,7 @@ function draw(): void {
       hy0 = sy(hyw);
     const onHull = () => Math.abs(pointer.x - hx0) < hr + pointer.width / 2 + 7 && Math.abs(pointer.y - hy0) < hr + pointer.height / 2 + 2;
     // Under the beacon first (the label stays with it), else above or below the hull.
-    if (onHull() && aim.onScreen) pointer.y = by + Math.max(14, BEACON_CATCH * k) + 22;
+    if (onHull() && aim.onScreen) pointer.y = by + Math.max(14, BEACON_CATCH * k) + 12 + pointer.height / 2 + 4;
     if (onHull()) {
       const above = hy0 - hr - pointer.height / 2 - 4,
         below = hy0 + hr + pointer.height / 2 + 4;
@@ -2204,6 +2289,21 @@ function draw(): void {
       Math.abs(pointer.y - (ty + th / 2)) < (pointer.height + 4 + th) / 2 + 2
     )
       pointer.y = pointer.y < ty + th / 2 ? ty - pointer.height / 2 - 6 : ty + th + pointer.height / 2 + 6;
+    // Never over the target's ring and brackets (moved off the hull, the beam or a mine onto it):
+    // beside it instead, right of it where that stays in view, else left.
+    if (
+      aim.onScreen &&
+      overlaps(
+        [pointer.x - pointer.width / 2 - 7, pointer.y - pointer.height / 2 - 2, pointer.width + 14, pointer.height + 4],
+        aim.frame,
+        2,
+      )
+    ) {
+      const half = aim.frame[2]! / 2,
+        rightX = bx + half + pointer.width / 2 + 12;
+      pointer.x = rightX + pointer.width / 2 + 15 <= W - GAUGE_WIDTH ? rightX : bx - half - pointer.width / 2 - 12;
+      pointer.y = by;
+    }
     aim.label = [pointer.x - pointer.width / 2, pointer.y - pointer.height / 2, pointer.width, pointer.height];
     aim.hull = [hx0 - hr, hy0 - hr, 2 * hr, 2 * hr];
     // The pickup banner ("Beacon 3 of 6") off the label's pill (on a phone it would be drawn over it):
@@ -2323,7 +2423,7 @@ function draw(): void {
   declutter(H, [sx(hxw) - (SUBMARINE.length / 2) * k, sy(hyw) - hr / 2, SUBMARINE.length * k, hr]);
   drawPause(W, H, sy(hyw));
   // The hull gauge at a hit: red and enlarged, fading over GAUGE_FLASH s of game time.
-  const hitAge = hitMarks.length > 0 ? t - hitMarks[hitMarks.length - 1]!.time : Number.POSITIVE_INFINITY;
+  const hitAge = hitMarks.length > 0 ? shownAge(hitMarks[hitMarks.length - 1]!, t) : Number.POSITIVE_INFINITY;
   const flashNow = hitAge >= 0 && hitAge < GAUGE_FLASH ? 1 - hitAge / GAUGE_FLASH : 0;
   if (flashNow > 0 || gaugeFlash > 0) {
     gaugeFlash = flashNow;
@@ -2357,11 +2457,13 @@ function draw(): void {
   // The goal and a short readout first (on a phone the speed in whole m/s, so the line keeps to the
   // width with the depth rate on it); the instruments (tanks, pitch, climb, helm) after, small and dim.
   // On a phone the score goes on the goal's line (the readout's would wrap).
+  const missedCount = missed.filter(Boolean).length;
+  const missedText = missedCount > 0 ? ` (${missedCount} missed)` : '';
   goal.textContent =
     end ||
     (compact
-      ? `Beacons ${state.collected} of ${taken.length} · ${clock(state.time)} / par ${clock(state.par)} · ${state.score} pts${streak}`
-      : `Collect the ${taken.length} beacons · ${state.collected} of ${taken.length} · ${clock(state.time)} / par ${clock(state.par)}`);
+      ? `Beacons ${state.collected} of ${taken.length}${missedText} · ${clock(state.time)} / par ${clock(state.par)} · ${state.score} pts${streak}`
+      : `Collect the ${taken.length} beacons · ${state.collected} of ${taken.length}${missedText} · ${clock(state.time)} / par ${clock(state.par)}`);
   // The clock turns red once par has passed.
   goal.style.color = !state.over && state.time > state.par ? '#ff9e8a' : '#ffe066';
   readoutText.textContent = compact

@@ -1,8 +1,8 @@
 /**
  * The submarine course's sea mines: moored contact mines, each a buoyant sphere held up on a taut
- * cable from an anchor on the seabed, laid across the legs between the beacons so that the straight
- * run from one beacon to the next meets a mine and the pilot must go over or under it. Also the
- * course's par time. Headless (no drawing), so placement, contact and par are tested in node.
+ * cable from an anchor on the seabed, laid beside the legs between the beacons (below the straight
+ * way, so that no cable crosses it, never on it nor near a beacon), so that a boat that strays off the way, or dives or
+ * climbs carelessly, meets one and must go over or under it. Also the course's par time. Headless (no drawing), so placement, contact and par are tested in node.
  *
  * Fair: each mine leaves room to pass over it well under the waves, lies far enough past the beacon
  * before it that a boat leaving that beacon at full ahead is warned in time, and far enough from the
@@ -22,8 +22,11 @@ export { hullDistance };
 
 /** A mine's contact radius (the sphere and its horns' tips), m. */
 export const MINE_RADIUS = 2.4;
-/** No mine's centre lies nearer a beacon than this, m (the game collects within BEACON_CATCH, 8 m). */
-export const MINE_BEACON_CLEARANCE = 15;
+/**
+ * No mine's centre lies nearer a beacon than this, m: the game collects within BEACON_CATCH (8 m), and a
+ * boat coming in on a beacon, or turning round at it, has about two hull lengths of clear water.
+ */
+export const MINE_BEACON_CLEARANCE = 25;
 /**
  * No mine's centre lies less than this under the surface, m, so the boat can pass over it with its
  * deck under the waves: its centre MINE_RADIUS + half its height + MINE_WARN_MARGIN (5.4 m) over the
@@ -101,12 +104,31 @@ export function courseOrder(beacons: ArrayLike<number>): number[] {
 }
 
 /**
+ * No mine's centre lies nearer than this to the straight way between two beacons along the course,
+ * m: the mine's radius, half the hull's height and 6 m of water (9.9 m), so a boat running straight
+ * from a beacon to the next (and along the glow trail, which keeps near it) passes every mine with
+ * room to spare, and a mine is met only by a boat that strays: it is an obstacle beside the way, not
+ * a wall across it.
+ */
+export const MINE_PATH_CLEARANCE = MINE_RADIUS + SUBMARINE.height / 2 + 6;
+
+/** Distance from (x, y) to the segment (x0, y0)-(x1, y1), m. */
+function segmentDistance(x: number, y: number, x0: number, y0: number, x1: number, y1: number): number {
+  const dx = x1 - x0,
+    dy = y1 - y0,
+    len2 = dx * dx + dy * dy;
+  const u = len2 > 0 ? Math.max(0, Math.min(1, ((x - x0) * dx + (y - y0) * dy) / len2)) : 0;
+  return Math.hypot(x - x0 - u * dx, y - y0 - u * dy);
+}
+
+/**
  * Lays the mines of a course: on each leg between two beacons (none on the first, from the start to
- * the first beacon) one mine on the straight line from one to the next, 35 to 50% of the way, and one
- * 75 to 90% of the way, 5 to 9 m above or below that line. A mine above `MINE_TOP` or within
- * `MINE_BED_CLEARANCE` of the seabed is moved into range; one that would lie within
- * `MINE_BEACON_CLEARANCE` of a beacon, less than `MINE_LEAD` past the leg's first beacon along x,
- * or within `MINE_GAP` of another mine along x is left out (a short leg has one mine or none).
+ * the first beacon) one mine 35 to 50% of the way from one to the next and one 75 to 90% of the way,
+ * each `MINE_PATH_CLEARANCE` to 6 m more below the straight way (never above it: its cable would
+ * run down across the way; just MINE_PATH_CLEARANCE where the water under it is too shallow for more). A mine above `MINE_TOP`, within `MINE_BED_CLEARANCE` of the
+ * seabed, nearer than `MINE_PATH_CLEARANCE` to any leg of the course, within `MINE_BEACON_CLEARANCE`
+ * of a beacon, less than `MINE_LEAD` past the leg's first beacon along x, or within `MINE_GAP` of
+ * another mine along x is left out (a short leg has one mine or none).
  * Seeded: the same course has the same mines.
  * @param beacons (x, y) pairs, m, as the scene lays them.
  * @param seabed the scene's seabed.
@@ -118,8 +140,13 @@ export function layMines(beacons: ArrayLike<number>, seabed: SubmarineHandles['s
   const rng = new Rng(seed * 7919 + 17);
   const order = courseOrder(beacons);
   const mines: Mine[] = [];
-  const clearOfBeacons = (x: number, y: number) => {
+  const clear = (x: number, y: number) => {
     for (let i = 0; i < beacons.length; i += 2) if (Math.hypot(beacons[i]! - x, beacons[i + 1]! - y) < MINE_BEACON_CLEARANCE) return false;
+    for (let leg = 1; leg < order.length; leg++) {
+      const a = 2 * order[leg - 1]!,
+        b = 2 * order[leg]!;
+      if (segmentDistance(x, y, beacons[a]!, beacons[a + 1]!, beacons[b]!, beacons[b + 1]!) < MINE_PATH_CLEARANCE) return false;
+    }
     return true;
   };
   for (let leg = 1; leg < order.length; leg++) {
@@ -129,16 +156,23 @@ export function layMines(beacons: ArrayLike<number>, seabed: SubmarineHandles['s
       ay = beacons[2 * a + 1]!,
       bx = beacons[2 * b]!,
       by = beacons[2 * b + 1]!;
-    for (const [f, offset] of [
-      [rng.range(0.35, 0.5), rng.range(-1, 1)],
-      [rng.range(0.75, 0.9), (rng.next() < 0.5 ? -1 : 1) * rng.range(5, 9)],
+    for (const [f, off] of [
+      [rng.range(0.35, 0.5), rng.range(0, 6)],
+      [rng.range(0.75, 0.9), rng.range(0, 6)],
     ] as const) {
       const x = ax + f * (bx - ax);
-      const anchor = seabedHeight(seabed, x);
-      const y = Math.min(-MINE_TOP, Math.max(anchor + MINE_BED_CLEARANCE, ay + f * (by - ay) + offset));
-      if (y - anchor < MINE_BED_CLEARANCE || !clearOfBeacons(x, y)) continue;
       if (x - ax < MINE_LEAD || mines.some((m) => Math.abs(m.x - x) < MINE_GAP)) continue;
-      mines.push({ x, y, anchor });
+      const anchor = seabedHeight(seabed, x);
+      const line = ay + f * (by - ay);
+      // Across the way, the vertical offset that puts the centre MINE_PATH_CLEARANCE + off from the line.
+      const slope = (by - ay) / (bx - ax);
+      // Where the water under the way is too shallow for the offset drawn, as near the way as is clear.
+      for (const o of [off, 0]) {
+        const y = line - (MINE_PATH_CLEARANCE + 0.5 + o) * Math.sqrt(1 + slope * slope);
+        if (y > -MINE_TOP || y - anchor < MINE_BED_CLEARANCE || !clear(x, y)) continue;
+        mines.push({ x, y, anchor });
+        break;
+      }
     }
   }
   return mines;

@@ -1,57 +1,129 @@
 /**
- * What a let-go of Dive or Rise holds: the depth order line as the player last saw it drawn. The
- * helm's order (./helm.ts `HelmState.holdY`) runs on with every step the key is held, but on a
- * loaded machine the page draws only some frames (the frame pacer skips those the GPU has no room
- * for) and a key let go on seeing the line at a depth reaches the page a frame or more later: the
- * order has run on past the line the player let go at, and the boat stops metres beyond it. The
- * hint says "let go: stop at the line", so the line seen is the one held. Headless, tested in node.
+ * What a let-go of Dive or Rise holds: the depth order at the moment the key (or the stick) was let
+ * go, read from the input events' timestamps (`Event.timeStamp`, ms), not from the frames. The
+ * helm's order (./helm.ts `HelmState.holdY`) runs on with every step the control is held, and the
+ * page runs its steps in a burst at each drawn frame: on a loaded machine at 1 to 2 frames a second a
+ * let-go reaches the game up to a second of steps late or early. Placed in game time by its own
+ * timestamp (the way ../black-hole/press-timing.ts reads a press's length from its events), against
+ * the clock of the last step run: a let-go the steps have not caught up with runs on to it (at most
+ * `MAX_RELEASE_TAIL` s), and one the steps ran past takes back the order they ran on to. Headless,
+ * tested in node.
  */
 
 /**
- * The order a let-go holds, as the hull's y, m (negative under water): `shown` (the order as last
- * drawn) when the helm's `holdY` has run past it the way the boat was ordered (`mode` 'diving':
- * down, 'rising': up), else `holdY` (it never runs the order on; NaN `shown` leaves `holdY`).
+ * The most game time a let-go press runs on after the step that sees it let go, s: the pacer's
+ * longest frame (main.ts `maxFrameTime`), the most the steps lag the wall clock by. A longer wait
+ * (a stall the pacer does not make up) is not dived after the fact.
+ */
+export const MAX_RELEASE_TAIL = 1;
+
+/**
+ * The order a let-go holds, as the hull's y, m (negative under water): `atLetGo` (the order at the
+ * moment of the let-go) when the helm's `holdY` has run past it the way the boat was ordered (`mode`
+ * 'diving': down, 'rising': up), else `holdY` (it never runs the order on; NaN `atLetGo` leaves `holdY`).
  * @throws RangeError when `holdY` is not a number or `mode` is not 'diving' or 'rising'.
  */
-export function releasedOrder(holdY: number, shown: number, mode: string): number {
+export function releasedOrder(holdY: number, atLetGo: number, mode: string): number {
   if (typeof holdY !== 'number') throw new RangeError(`releasedOrder: holdY must be a number, got ${holdY}`);
   if (mode !== 'diving' && mode !== 'rising') throw new RangeError(`releasedOrder: mode must be 'diving' or 'rising', got ${mode}`);
-  if (Number.isNaN(shown) || Number.isNaN(holdY)) return holdY;
-  return mode === 'diving' ? Math.max(holdY, shown) : Math.min(holdY, shown);
+  if (Number.isNaN(atLetGo) || Number.isNaN(holdY)) return holdY;
+  return mode === 'diving' ? Math.max(holdY, atLetGo) : Math.min(holdY, atLetGo);
 }
 
-/** The order as last drawn: `note` it each frame as it is drawn from, read `shown` at a let-go. */
-export interface ShownOrder {
+/** What `HeaveTiming.step` tells the game to steer by this step. */
+export interface HeaveStep {
+  /** The direction to steer: -1 dive, 1 rise, 0 neither (held, or a let-go press still running on). */
+  dir: -1 | 0 | 1;
   /**
-   * Notes the order a frame is being drawn from (m, NaN for none) and how many frames had been put
-   * on the screen before it (the frame pacer's `drawn`): a frame the pacer skips is never shown.
+   * Set on the step a press ends: the game time of its let-go, s, when that lies before this step
+   * (the order the steps ran on to past it is taken back: `HeaveTiming.orderAt`); NaN otherwise.
    */
-  note(order: number, drawn: number): void;
-  /** The order on the last frame put on the screen, given the frames put on it so far (`drawn`); NaN before any. */
-  shown(drawn: number): number;
+  letGoAt: number;
 }
 
-/** A new `ShownOrder` with nothing drawn yet. */
-export function createShownOrder(): ShownOrder {
-  let value = Number.NaN,
-    pending = Number.NaN,
-    at = -1;
-  const settle = (drawn: number) => {
-    // The frame noted last was put on the screen once the count has passed the one before it.
-    if (at >= 0 && drawn > at) {
-      value = pending;
-      at = -1;
-    }
-  };
+/** A Dive or Rise press timed by its events (see the header). */
+export interface HeaveTiming {
+  /**
+   * Notes the step just run: the game time after it (`game`, s) and the clock then (`wallMs`, ms, the
+   * clock of `Event.timeStamp`: performance.now()). The last step of a frame's burst maps the clock
+   * to the game's time for the let-go events that come before the next frame.
+   */
+  clock(game: number, wallMs: number): void;
+  /**
+   * An input event at `stamp` (its `timeStamp`, ms) left Dive / Rise asked as `dir` (-1 dive, 1
+   * rise, 0 neither), with the game `paused` or running. Call it after every key or stick event; a
+   * `dir` unchanged does nothing. A let-go happens at the game time the clock gives it: the last
+   * step's (`clock`) plus the clock's time since (negative for an event older than it), at most
+   * `MAX_RELEASE_TAIL` s either way (none while paused).
+   * @throws RangeError when `dir` is not -1, 0 or 1, or `stamp` is not finite.
+   */
+  event(dir: number, stamp: number, paused?: boolean): void;
+  /**
+   * The step at game time `now` (s): which way to steer, and whether a press ended with its let-go
+   * in the past. A press runs from the first step that sees it to its let-go's game time.
+   * @throws RangeError when `now` is not finite.
+   */
+  step(now: number): HeaveStep;
+  /** Notes the depth order `order` (m) after the step at game time `now` (s) of a press, for `orderAt`. */
+  note(now: number, order: number): void;
+  /** The order noted by the last step of the press at or before game time `time` (s); NaN before any. */
+  orderAt(time: number): number;
+  /** Forgets the presses so far (a new run); a control still held counts from the next step. */
+  reset(): void;
+}
+
+/** A new `HeaveTiming` with nothing pressed. */
+export function createHeaveTiming(): HeaveTiming {
+  let dir: -1 | 0 | 1 = 0,
+    game = 0,
+    wall = Number.NaN;
+  /** The let-go press running on: its direction and the game time of its let-go, s. */
+  let tail: { dir: -1 | 1; end: number } | null = null;
+  const times: number[] = [],
+    orders: number[] = [];
   return {
-    note(order, drawn) {
-      settle(drawn);
-      pending = order;
-      at = drawn;
+    clock(g, wallMs) {
+      game = g;
+      wall = wallMs;
     },
-    shown(drawn) {
-      settle(drawn);
-      return value;
+    event(d, stamp, paused = false) {
+      if (d !== -1 && d !== 0 && d !== 1) throw new RangeError(`HeaveTiming.event: dir must be -1, 0 or 1, got ${d}`);
+      if (!Number.isFinite(stamp)) throw new RangeError(`HeaveTiming.event: stamp must be finite ms, got ${stamp}`);
+      if (d === dir) return;
+      if (dir !== 0) {
+        // Before the last step's clock (an event handled after a long frame's burst) it lies back in
+        // that burst's game time; after it, ahead of it.
+        const since = paused || Number.isNaN(wall) ? 0 : Math.min(MAX_RELEASE_TAIL, Math.max(-MAX_RELEASE_TAIL, (stamp - wall) / 1000));
+        tail = { dir, end: game + since };
+      }
+      dir = d as -1 | 0 | 1;
+      if (dir !== 0) {
+        // A new press: the one before has ended.
+        tail = null;
+        times.length = orders.length = 0;
+      }
+    },
+    step(now) {
+      if (!Number.isFinite(now)) throw new RangeError(`HeaveTiming.step: now must be finite s, got ${now}`);
+      if (dir !== 0) return { dir, letGoAt: Number.NaN };
+      if (!tail) return { dir: 0, letGoAt: Number.NaN };
+      if (now < tail.end) return { dir: tail.dir, letGoAt: Number.NaN };
+      const end = tail.end;
+      tail = null;
+      return { dir: 0, letGoAt: end < now ? end : Number.NaN };
+    },
+    note(now, order) {
+      times.push(now);
+      orders.push(order);
+    },
+    orderAt(time) {
+      let found = Number.NaN;
+      for (let i = 0; i < times.length && times[i]! <= time; i++) found = orders[i]!;
+      return found;
+    },
+    reset() {
+      tail = null;
+      times.length = orders.length = 0;
     },
   };
 }

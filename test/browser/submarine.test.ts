@@ -982,8 +982,9 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     expect(await collectedAt(15.5)).toBe(0);
     expect(await collectedAt(13)).toBe(1);
     // Near the right edge, the gauge's tags keep off the live mines in view (on a phone the boat's
-    // depth was written over one): A collected (the target B ahead), the hull parked (paused) 25 m
-    // short of the first mine at its depth, the second mine in view under the gauge's tags' column.
+    // depth was written over one): A collected (the target B ahead), the hull parked (paused) at the
+    // first mine's depth, 25 m short of it and further, until a mine is in view under the gauge's
+    // tags' column.
     if (device === 'phone') {
       const r = await g.page.evaluate(() => {
         const w = window.game as unknown as Sub & { gaugeTags(): Tags & { mines: number[][] }; loop: { runFrames(n: number): void } };
@@ -991,10 +992,15 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
           c = w.world.components,
           e = w.hull();
         w.paused = true;
-        c.Position.x[e] = m.x - 25;
-        c.Position.y[e] = m.y;
-        w.loop.runFrames(20);
-        return w.gaugeTags();
+        let tags = w.gaugeTags();
+        for (let short = 25; short <= 70; short += 5) {
+          c.Position.x[e] = m.x - short;
+          c.Position.y[e] = m.y;
+          w.loop.runFrames(20);
+          tags = w.gaugeTags();
+          if (tags.mines.some((box) => box[0]! + box[2]! > 390 - 120)) break;
+        }
+        return tags;
       });
       expect(r.mines.some((box) => box[0]! + box[2]! > 390 - 120)).toBe(true);
       for (const box of r.mines) {

@@ -19,6 +19,7 @@ import {
   lastBeacon,
   layCourse,
   MINE_WARNING,
+  missWarning,
   passedBeacon,
   RIDGE_WARNING,
   seabedBetween,
@@ -72,6 +73,22 @@ describe('submarine beacon pointer', () => {
     expect(chooseBeacon(beacons, taken, 50, -20, 0, 0)).toBe(-1);
     // The target itself collected: the next along the course, whatever is nearer.
     expect(chooseBeacon(beacons, [true, false, false, false], 60, -20, 0, 0)).toBe(2);
+  });
+
+  it('missWarning: a target left behind warns, moving away, how far on it counts as passed; not near it, backing or at the finish', () => {
+    const beacons = [40, -20, 160, -40, 280, -30];
+    // Past the ring and half a hull (8 + 6 m) and moving on: BEACON_PASSED less the way gone.
+    expect(missWarning(beacons, 1, 160 + 20, 3)).toBe(BEACON_PASSED - 20);
+    expect(missWarning(beacons, 1, 160 + BEACON_PASSED + 5, 3)).toBe(0);
+    expect(missWarning(beacons, 1, 160 + 10, 3)).toBeNaN(); // still at the ring
+    expect(missWarning(beacons, 1, 160 + 20, -2)).toBeNaN(); // backing to it
+    expect(missWarning(beacons, 1, 160 + 20, 0.2)).toBeNaN(); // stopped
+    expect(missWarning(beacons, 2, 280 + 20, 3)).toBeNaN(); // the finish
+    // Warned before it is passed: every x at which it counts as passed was warned of just before.
+    for (let x = 160; x < 260; x += 0.5)
+      if (passedBeacon(beacons, 1, x + 0.5)) expect(missWarning(beacons, 1, x, 2)).toBeGreaterThanOrEqual(0);
+    expect(() => missWarning(beacons, 3, 0, 0)).toThrow(/missWarning: i/);
+    expect(() => missWarning(beacons, 1, Number.NaN, 0)).toThrow(/missWarning: x/);
   });
 
   it('a target overshot by more than BEACON_PASSED along x is passed: the target moves on ahead, never to one far behind; the finish is never passed', () => {
