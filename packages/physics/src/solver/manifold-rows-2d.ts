@@ -15,16 +15,16 @@ import {
   BX_STRIDE,
 } from './body-state-layout.js';
 import { storeVelocities2D } from './body-velocities.js';
+import { boundedImpulse, normalBias, normalImpulse, softRow } from './contact-point.js';
+import { CP_NORMAL_MASS, CP_SEPARATION, SN_BIAS, SN_RIGID, SN_RIGID_BIAS, SN_SCALES, SN_SOFT_ROW } from './contact-point-layout.js';
 import {
   MP_MAX_NORMAL_IMPULSE,
   MP_NORMAL_IMPULSE,
-  MP_NORMAL_MASS,
   MP_RELATIVE_VELOCITY,
   MP_RNA,
   MP_RNB,
   MP_RTA,
   MP_RTB,
-  MP_SEPARATION,
   MP_STRIDE,
   MP_TANGENT_IMPULSE,
   MP_TANGENT_MASS,
@@ -228,10 +228,8 @@ function solveBlock(R: Float64Array, r: number, c1: number, c2: number): boolean
  * (w_B - w_A, rad/s). Returns the impulse added, N m s (A gets minus it).
  */
 function solveRolling(R: Float64Array, r: number, total: number, dw: number): number {
-  const old = R[r + MR_ROLLING_IMPULSE]!,
-    maxR = R[r + MR_ROLLING]! * total;
-  let next = old - R[r + MR_ROLLING_MASS]! * dw;
-  next = next < -maxR ? -maxR : next > maxR ? maxR : next;
+  const old = R[r + MR_ROLLING_IMPULSE]!;
+  const next = boundedImpulse(old, R[r + MR_ROLLING_MASS]!, dw, R[r + MR_ROLLING]! * total);
   R[r + MR_ROLLING_IMPULSE] = next;
   return next - old;
 }
@@ -269,18 +267,11 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean)
     sb = cs.bodyState,
     ex = cs.bodyExtra,
     base = cs.shapes.angleBase;
-  const sd = cs.shapes.softness,
-    sr = cs.shapes.rigidSoftness;
-  const biasSoft = sd[0]!,
-    massSoft = sd[1]!,
-    impulseSoft = sd[2]!,
-    biasRigid = sr[0]!,
-    massRigid = sr[1]!,
-    impulseRigid = sr[2]!;
+  const T = cs.shapes.softness;
   const invH = 1 / hs,
-    // The push-out speed cap as a lower bound of the bias, negated once here: a negation inside the
-    // branches (first reached when a point overlaps) would leave compiled code without feedback for it.
-    minBias = -cs.settings.contactPushSpeed;
+    // The push-out speed cap as a lower bound of the bias.
+    minBias = -cs.settings.contactPushSpeed,
+    biasOn = useBias ? 1 : 0;
   for (let i = 0, n = Math.min(cs.shapes.manifolds.count, MAX_MANIFOLDS); i < n; i++) {
     const r = i * MR_STRIDE;
     const ia = R[r + MR_BODY_A]! & MR_BODY_MASK,
@@ -306,9 +297,8 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean)
     const nx = R[r + MR_NX]!,
       ny = R[r + MR_NY]!;
     const rigidPartner = mA === 0 || mB === 0;
-    const biasRate = rigidPartner ? biasRigid : biasSoft,
-      softMass = rigidPartner ? massRigid : massSoft,
-      softImpulse = rigidPartner ? impulseRigid : impulseSoft;
+    const biasRate = rigidPartner ? T[SN_RIGID_BIAS]! : T[SN_BIAS]!,
+      scales = rigidPartner ? SN_SCALES + SN_RIGID : SN_SCALES;
     const two = R[r + MR_POINT_COUNT] === 2;
     const o1 = r + MR_POINT0,
       o2 = o1 + MP_STRIDE;
@@ -321,28 +311,19 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean)
       t2a = R[o2 + MP_RTA]!,
       t2b = R[o2 + MP_RTB]!;
     const dn = (dbx - dax) * nx + (dby - day) * ny;
-    const s1 = R[o1 + MP_SEPARATION]! + dn + tb * n1b - ta * n1a;
-    const s2 = R[o2 + MP_SEPARATION]! + dn + tb * n2b - ta * n2a;
-    let b1 = 0,
-      m1 = 1,
-      i1 = 0,
-      b2 = 0,
-      m2 = 1,
-      i2 = 0;
-    if (s1 > 0) b1 = s1 * invH;
-    else if (useBias) {
-      b1 = biasRate * s1;
-      if (b1 < minBias) b1 = minBias;
-      m1 = softMass;
-      i1 = softImpulse;
-    }
-    if (s2 > 0) b2 = s2 * invH;
-    else if (useBias) {
-      b2 = biasRate * s2;
-      if (b2 < minBias) b2 = minBias;
-      m2 = softMass;
-      i2 = softImpulse;
-    }
+    const s1 = R[o1 + CP_SEPARATION]! + dn + tb * n1b - ta * n1a;
+    const s2 = R[o2 + CP_SEPARATION]! + dn + tb * n2b - ta * n2a;
+    // Each normal row's regime (solver/contact-point.ts): its bias and its mass and impulse scales.
+    const soft1 = softRow(s1, biasOn),
+      soft2 = softRow(s2, biasOn);
+    const b1 = normalBias(s1, invH, biasRate, minBias, soft1),
+      b2 = normalBias(s2, invH, biasRate, minBias, soft2);
+    const sel1 = scales + SN_SOFT_ROW * soft1,
+      sel2 = scales + SN_SOFT_ROW * soft2;
+    const m1 = T[sel1]!,
+      i1 = T[sel1 + 1]!,
+      m2 = T[sel2]!,
+      i2 = T[sel2 + 1]!;
     let l1 = R[o1 + MP_NORMAL_IMPULSE]!,
       l2 = R[o2 + MP_NORMAL_IMPULSE]!;
     let total = 0;
@@ -382,8 +363,7 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean)
         nb = p === 0 ? n1b : n2b;
       const old = p === 0 ? l1 : l2;
       const vn = (vbx - vax) * nx + (vby - vay) * ny + wb * nb - wa * na;
-      let next = old - R[o + MP_NORMAL_MASS]! * (p === 0 ? m1 : m2) * (vn + (p === 0 ? b1 : b2)) - (p === 0 ? i1 : i2) * old;
-      if (next < 0) next = 0;
+      const next = normalImpulse(old, R[o + CP_NORMAL_MASS]!, p === 0 ? m1 : m2, p === 0 ? i1 : i2, vn, p === 0 ? b1 : b2);
       const dl = next - old;
       if (p === 0) l1 = next;
       else l2 = next;
@@ -406,9 +386,7 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean)
     {
       // v_t = (v_B - v_A) . t + w_B (r_B x t) - w_A (r_A x t), t = (-n_y, n_x).
       const vt = (vby - vay) * nx - (vbx - vax) * ny + wb * t1b - wa * t1a;
-      const maxF = bound * l1;
-      let next = f1 - R[o1 + MP_TANGENT_MASS]! * vt;
-      next = next < -maxF ? -maxF : next > maxF ? maxF : next;
+      const next = boundedImpulse(f1, R[o1 + MP_TANGENT_MASS]!, vt, bound * l1);
       const dl = next - f1;
       f1 = next;
       const Px = -dl * ny,
@@ -424,9 +402,7 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean)
     if (two) {
       f2 = R[o2 + MP_TANGENT_IMPULSE]!;
       const vt = (vby - vay) * nx - (vbx - vax) * ny + wb * t2b - wa * t2a;
-      const maxF = bound * l2;
-      let next = f2 - R[o2 + MP_TANGENT_MASS]! * vt;
-      next = next < -maxF ? -maxF : next > maxF ? maxF : next;
+      const next = boundedImpulse(f2, R[o2 + MP_TANGENT_MASS]!, vt, bound * l2);
       const dl = next - f2;
       f2 = next;
       R[o2 + MP_TANGENT_IMPULSE] = next;
@@ -530,8 +506,8 @@ export function applyManifoldRestitution(world: PhysicsWorld): void {
         list[listed++] = i;
         const vn1 = dvn + wb * R[o1 + MP_RNB]! - wa * R[o1 + MP_RNA]!,
           vn2 = m > 1 ? dvn + wb * R[o2 + MP_RNB]! - wa * R[o2 + MP_RNA]! : 0;
-        let s1 = -R[o1 + MP_NORMAL_MASS]! * vn1,
-          s2 = -R[o2 + MP_NORMAL_MASS]! * vn2;
+        let s1 = -R[o1 + CP_NORMAL_MASS]! * vn1,
+          s2 = -R[o2 + CP_NORMAL_MASS]! * vn2;
         if (m > 1 && R[r + MR_BLOCK_VALID] === 1) {
           s1 = -(R[r + MR_B11]! * vn1 + R[r + MR_B12]! * vn2);
           s2 = -(R[r + MR_B12]! * vn1 + R[r + MR_B22]! * vn2);
@@ -565,7 +541,7 @@ export function applyManifoldRestitution(world: PhysicsWorld): void {
         let next = R[o + MP_NORMAL_IMPULSE]!;
         if (!block) {
           const vn = (vbx - vax) * nx + (vby - vay) * ny + wb * nb - wa * na;
-          next = restitutionImpulse(old, R[o + MP_NORMAL_MASS]!, vn, target, caps[2 * i + p]!);
+          next = restitutionImpulse(old, R[o + CP_NORMAL_MASS]!, vn, target, caps[2 * i + p]!);
           R[o + MP_NORMAL_IMPULSE] = next;
         }
         const dl = next - old;
