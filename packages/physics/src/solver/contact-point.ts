@@ -76,3 +76,17 @@ export function boundedImpulse(old: number, mass: number, v: number, bound: numb
   const next = old - mass * v;
   return next < -bound ? -bound : next > bound ? bound : next;
 }
+
+/** bouncingList's scratch (not world state). */
+let bouncing = new Int32Array(0);
+
+/**
+ * The restitution stages' worklist, with room for `n` manifolds (n >= 0): which points bounce does not
+ * change from pass to pass, so the 2D and 3D stages visit every manifold in their first pass and list
+ * there, in order, those with a bouncing point; later passes visit only those. Scratch shared by both
+ * stages (one stage fills and reads it at a time), grown to twice what is asked when too small.
+ */
+export function bouncingList(n: number): Int32Array {
+  if (bouncing.length < n) bouncing = new Int32Array(2 * n);
+  return bouncing;
+}

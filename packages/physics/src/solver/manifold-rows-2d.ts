@@ -15,7 +15,7 @@ import {
   BX_STRIDE,
 } from './body-state-layout.js';
 import { storeVelocities2D } from './body-velocities.js';
-import { boundedImpulse, normalBias, normalImpulse, softRow } from './contact-point.js';
+import { bouncingList, boundedImpulse, normalBias, normalImpulse, softRow } from './contact-point.js';
 import { CP_NORMAL_MASS, CP_SEPARATION, SN_BIAS, SN_RIGID, SN_RIGID_BIAS, SN_SCALES, SN_SOFT_ROW } from './contact-point-layout.js';
 import {
   MP_MAX_NORMAL_IMPULSE,
@@ -381,39 +381,28 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean)
     R[o1 + MP_NORMAL_IMPULSE] = l1;
     if (two) R[o2 + MP_NORMAL_IMPULSE] = l2;
     const bound = R[r + MR_FRICTION_BOUND]!;
-    let f1 = R[o1 + MP_TANGENT_IMPULSE]!,
+    let f1 = 0,
       f2 = 0;
-    {
-      // v_t = (v_B - v_A) . t + w_B (r_B x t) - w_A (r_A x t), t = (-n_y, n_x).
-      const vt = (vby - vay) * nx - (vbx - vax) * ny + wb * t1b - wa * t1a;
-      const next = boundedImpulse(f1, R[o1 + MP_TANGENT_MASS]!, vt, bound * l1);
-      const dl = next - f1;
-      f1 = next;
+    // Friction, point 1 then point 2: v_t = (v_B - v_A) . t + w_B (r_B x t) - w_A (r_A x t), t = (-n_y, n_x).
+    for (let p = 0; p < (two ? 2 : 1); p++) {
+      const o = o1 + p * MP_STRIDE;
+      const la = p === 0 ? t1a : t2a,
+        lb = p === 0 ? t1b : t2b;
+      const old = R[o + MP_TANGENT_IMPULSE]!;
+      const vt = (vby - vay) * nx - (vbx - vax) * ny + wb * lb - wa * la;
+      const next = boundedImpulse(old, R[o + MP_TANGENT_MASS]!, vt, bound * (p === 0 ? l1 : l2));
+      const dl = next - old;
+      R[o + MP_TANGENT_IMPULSE] = next;
+      if (p === 0) f1 = next;
+      else f2 = next;
       const Px = -dl * ny,
         Py = dl * nx;
       vax -= mA * Px;
       vay -= mA * Py;
-      wa -= iA * dl * t1a;
+      wa -= iA * dl * la;
       vbx += mB * Px;
       vby += mB * Py;
-      wb += iB * dl * t1b;
-    }
-    R[o1 + MP_TANGENT_IMPULSE] = f1;
-    if (two) {
-      f2 = R[o2 + MP_TANGENT_IMPULSE]!;
-      const vt = (vby - vay) * nx - (vbx - vax) * ny + wb * t2b - wa * t2a;
-      const next = boundedImpulse(f2, R[o2 + MP_TANGENT_MASS]!, vt, bound * l2);
-      const dl = next - f2;
-      f2 = next;
-      R[o2 + MP_TANGENT_IMPULSE] = next;
-      const Px = -dl * ny,
-        Py = dl * nx;
-      vax -= mA * Px;
-      vay -= mA * Py;
-      wa -= iA * dl * t2a;
-      vbx += mB * Px;
-      vby += mB * Py;
-      wb += iB * dl * t2b;
+      wb += iB * dl * lb;
     }
     if (R[r + MR_ROLLING]! > 0) {
       const dl = solveRolling(R, r, total, wb - wa);
@@ -441,9 +430,8 @@ export function accumulateManifoldImpulses(cs: CollisionState): void {
   }
 }
 
-/** applyManifoldRestitution's scratch: the cap of each point's accumulated impulse (two a manifold), and the manifolds with a bouncing point, in order. Not world state. */
+/** applyManifoldRestitution's scratch: the cap of each point's accumulated impulse (two a manifold). Not world state. */
 let restitutionCaps = new Float64Array(0);
-let restitutionList = new Int32Array(0);
 
 /**
  * The 2D manifolds' restitution stage, by the one definition of solver/restitution.ts: a point that
@@ -463,11 +451,8 @@ export function applyManifoldRestitution(world: PhysicsWorld): void {
   const threshold = cs.settings.restitutionThreshold,
     elasticThreshold = cs.settings.elasticRestitutionThreshold;
   const n = cs.shapes.manifolds.count;
-  if (restitutionList.length < n) {
-    restitutionList = new Int32Array(2 * n);
-    restitutionCaps = new Float64Array(4 * n);
-  }
-  const list = restitutionList,
+  if (restitutionCaps.length < 2 * n) restitutionCaps = new Float64Array(4 * n);
+  const list = bouncingList(n),
     caps = restitutionCaps;
   let listed = 0;
   for (let pass = 0, passes = cs.settings.restitutionIterations; pass < passes; pass++) {

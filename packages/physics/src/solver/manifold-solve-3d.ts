@@ -20,7 +20,7 @@ import {
   II3_STRIDE,
   II3_XX,
 } from './body-state-layout.js';
-import { boundedImpulse, normalBias, normalImpulse, softRow } from './contact-point.js';
+import { bouncingList, boundedImpulse, normalBias, normalImpulse, softRow } from './contact-point.js';
 import {
   CP_NORMAL_MASS,
   CP_NORMAL_ROW,
@@ -571,9 +571,6 @@ function pushAlongNormal(
   sb[s + BS3_PUSHED] = 1;
 }
 
-/** applyManifold3DRestitution's scratch: the manifolds with a bouncing point, in order. */
-let restitutionList = new Int32Array(0);
-
 /**
  * The 3D manifolds' restitution stage, by the one definition of solver/restitution.ts: a point that
  * carried an impulse and approached faster than its threshold at the start of the step bounces; its
@@ -599,8 +596,7 @@ export function applyManifold3DRestitution(world: PhysicsWorld): void {
   // Which points bounce (approach past the threshold, impulse carried) does not change from pass to
   // pass: the first pass visits every manifold and lists those with such a point, the others only those
   // (in the same order, so the same impulses; a settled pile's thousands of manifolds are read once).
-  if (restitutionList.length < buf.count) restitutionList = new Int32Array(2 * buf.count);
-  const list = restitutionList;
+  const list = bouncingList(buf.count);
   let listed = 0;
   for (let pass = 0, passes = cs.settings.restitutionIterations; pass < passes; pass++) {
     const all = pass === 0;
