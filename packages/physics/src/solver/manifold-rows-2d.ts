@@ -137,33 +137,23 @@ export function warmStartManifolds(cs: CollisionState): void {
       vbx = sb[b + BS2_VX]!,
       vby = sb[b + BS2_VY]!,
       wb = sb[b + BS2_W]!;
-    // Points 1 and 2 unrolled; whether the row carries an impulse (it pushes its bodies) from the impulses read.
-    const o1 = r + MR_POINT0,
-      o2 = o1 + MP_STRIDE;
-    const ln1 = R[o1 + MP_NORMAL_IMPULSE]!,
-      lt1 = R[o1 + MP_TANGENT_IMPULSE]!;
-    const P1x = ln1 * nx - lt1 * ny,
-      P1y = ln1 * ny + lt1 * nx;
-    // r x (ln n + lt t) = ln (r x n) + lt (r x t).
-    wa -= iA * (ln1 * R[o1 + MP_RNA]! + lt1 * R[o1 + MP_RTA]!);
-    vax -= mA * P1x;
-    vay -= mA * P1y;
-    wb += iB * (ln1 * R[o1 + MP_RNB]! + lt1 * R[o1 + MP_RTB]!);
-    vbx += mB * P1x;
-    vby += mB * P1y;
-    let carries = ln1 !== 0 || lt1 !== 0;
-    if (R[r + MR_POINT_COUNT] === 2) {
-      const ln2 = R[o2 + MP_NORMAL_IMPULSE]!,
-        lt2 = R[o2 + MP_TANGENT_IMPULSE]!;
-      const P2x = ln2 * nx - lt2 * ny,
-        P2y = ln2 * ny + lt2 * nx;
-      wa -= iA * (ln2 * R[o2 + MP_RNA]! + lt2 * R[o2 + MP_RTA]!);
-      vax -= mA * P2x;
-      vay -= mA * P2y;
-      wb += iB * (ln2 * R[o2 + MP_RNB]! + lt2 * R[o2 + MP_RTB]!);
-      vbx += mB * P2x;
-      vby += mB * P2y;
-      carries = carries || ln2 !== 0 || lt2 !== 0;
+    // Each point's normal and friction impulse; whether the row carries an impulse (it pushes its
+    // bodies) from the impulses read.
+    let carries = false;
+    for (let p = 0, m = R[r + MR_POINT_COUNT]!; p < m; p++) {
+      const o = r + MR_POINT0 + p * MP_STRIDE;
+      const ln = R[o + MP_NORMAL_IMPULSE]!,
+        lt = R[o + MP_TANGENT_IMPULSE]!;
+      const Px = ln * nx - lt * ny,
+        Py = ln * ny + lt * nx;
+      // r x (ln n + lt t) = ln (r x n) + lt (r x t).
+      wa -= iA * (ln * R[o + MP_RNA]! + lt * R[o + MP_RTA]!);
+      vax -= mA * Px;
+      vay -= mA * Py;
+      wb += iB * (ln * R[o + MP_RNB]! + lt * R[o + MP_RTB]!);
+      vbx += mB * Px;
+      vby += mB * Py;
+      carries = carries || ln !== 0 || lt !== 0;
     }
     const lr = R[r + MR_ROLLING_IMPULSE]!;
     wa -= iA * lr;
