@@ -1,3 +1,4 @@
+import { SN_STRIDE } from '../solver/contact-point-layout.js';
 import { MAX_MANIFOLDS } from './manifold-limits-2d.js';
 
 /**
@@ -253,10 +254,8 @@ export interface ShapeCollisionState {
   sensorPairs: Set<number>;
   /** Broadphase scratch. */
   readonly scratch: ShapeScratch;
-  /** Soft-constraint coefficients of this step's shape contacts between dynamic bodies (bias rate 1/s, mass scale, impulse scale); see solver/manifold-prepare-2d.ts. */
+  /** This step's contact softness table of the shape contacts (solver/contact-point-layout.ts SN_*), filled by prepareManifolds. */
   readonly softness: Float64Array;
-  /** The same coefficients against an infinite-mass partner (twice the stiffness). */
-  readonly rigidSoftness: Float64Array;
   /** Per solver body: the rotation still owed at the start of the solve (its rotation within the step is measured from it). */
   angleBase: Float64Array;
   /**
@@ -303,8 +302,7 @@ export function createShapeCollisionState(): ShapeCollisionState {
     dormantWakes: 0,
     sensorPairs: new Set(),
     scratch: createShapeScratch(),
-    softness: new Float64Array(3),
-    rigidSoftness: new Float64Array(3),
+    softness: new Float64Array(SN_STRIDE),
     angleBase: new Float64Array(256),
     solverRows: new Float64Array(0),
     firstShape: new Int32Array(0),

@@ -1,3 +1,4 @@
+import { SN_STRIDE } from '../solver/contact-point-layout.js';
 import { ANCHOR_STRIDE } from '../solver/manifold-layout-3d.js';
 import { registerExternalWorldState } from '../world/external-state.js';
 import type { PhysicsWorld } from '../world/options.js';
@@ -172,6 +173,8 @@ export interface Contact3DState {
   solveParity: number;
   /** Per solver body: its rotation owed at the start of the solve (the linearised rotation is measured from it). */
   rotationBase: Float64Array;
+  /** This step's contact softness table (solver/contact-point-layout.ts SN_*), filled by prepareManifolds3D. */
+  readonly softness: Float64Array;
 }
 
 /**
@@ -342,6 +345,7 @@ export function contact3DStateOf(world: PhysicsWorld, create = false): Contact3D
       jacobiansInv: new Float32Array(0),
       frictionInv: new Float32Array(0),
       solveRecord: new Float64Array(0),
+      softness: new Float64Array(SN_STRIDE),
     };
     // Swapped every step (collision/shapes-3d.ts): swapped twice here so V8 does not treat them as
     // constant and drop the optimised code at the first swap (see createShapeCollisionState).

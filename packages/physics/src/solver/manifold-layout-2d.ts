@@ -56,24 +56,22 @@ export const MR_POINT0 = 17;
 /** Numbers a manifold: MR_POINT0 + 2 * MP_STRIDE. */
 export const MR_STRIDE = 41;
 
-// A point's fields, from the point's start.
+// A point's fields, from the point's start: separation and normal mass at CP_SEPARATION and
+// CP_NORMAL_MASS (solver/contact-point-layout.ts, as a 3D point's), then the levers and the rest.
 /**
  * r_A x n: the cross product of the anchor on body A (from its centre of mass at the start of the
- * step) with the normal, m. The rows never need the anchors themselves: a point's normal velocity is
- * (v_B - v_A) . n + w_B (r_B x n) - w_A (r_A x n), and a normal impulse P n turns A by -P (r_A x n) / I_A,
- * so the four cross products are worked out once a step here instead of in every pass.
+ * step) with the normal, m; the normal row's first lever (CP_NORMAL_ROW). The rows never need the
+ * anchors themselves: a point's normal velocity is (v_B - v_A) . n + w_B (r_B x n) - w_A (r_A x n), and
+ * a normal impulse P n turns A by -P (r_A x n) / I_A, so the four cross products are worked out once a
+ * step here instead of in every pass.
  */
-export const MP_RNA = 0;
+export const MP_RNA = 2;
 /** r_B x n, m (see MP_RNA). */
-export const MP_RNB = 1;
+export const MP_RNB = 3;
 /** r_A x t with the tangent t = (-n_y, n_x), which is r_A . n, m: the friction row's lever on A. */
-export const MP_RTA = 2;
+export const MP_RTA = 4;
 /** r_B x t, m (see MP_RTA). */
-export const MP_RTB = 3;
-/** Separation at the start of the step, relative to where the solver starts the bodies, m (< 0: overlap). */
-export const MP_SEPARATION = 4;
-/** Effective mass of the normal row, kg. */
-export const MP_NORMAL_MASS = 5;
+export const MP_RTB = 5;
 /** Effective mass of the friction row, kg. */
 export const MP_TANGENT_MASS = 6;
 /** Accumulated normal impulse of this substep, N s, >= 0. */

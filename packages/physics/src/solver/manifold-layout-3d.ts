@@ -6,8 +6,8 @@
  * in `jacobiansInv` and `frictionInv` their products with the world inverse inertia tensor,
  * I^-1 (r x u) (1/(kg m)), kept only for a manifold whose bodies are not isotropic (a pile of cubes never
  * reads them). `solveRecord` holds everything else a pass reads of a manifold in one block of REC_STRIDE
- * numbers: its head (HEAD_*), its friction rows' crosses (REC_T1, REC_T2), then each point's normal row,
- * separation and effective mass (REC_POINTS, POINT_*), so a pass streams one run of memory a manifold
+ * numbers: its head (HEAD_*), its friction rows' crosses (REC_T1, REC_T2), then each point's separation,
+ * effective mass and normal row (REC_POINTS, POINT_STRIDE, solver/contact-point-layout.ts CP_*), so a pass streams one run of memory a manifold
  * instead of a column each. The crosses and effective masses are kept rounded to single precision (as
  * Math.fround), the numbers the solve has always used.
  *
@@ -103,10 +103,8 @@ export const REC_POINTS = 28;
 /** Numbers a manifold keeps in solveRecord (room for four points). */
 export const REC_STRIDE = 60;
 
-// A point in its manifold's record: its normal row r_A x n, r_B x n (ROW_*, m), then:
-/** Separation at the step's start on the solver's base, m (negative: overlap). */
-export const POINT_SEP = 6;
-/** Effective mass along n, kg. */
-export const POINT_MN = 7;
+// A point in its manifold's record: separation and normal mass at CP_SEPARATION and CP_NORMAL_MASS
+// (solver/contact-point-layout.ts, as a 2D point's), then its normal row r_A x n, r_B x n from
+// CP_NORMAL_ROW on (ROW_*, m).
 /** Numbers a point keeps in its manifold's record. */
 export const POINT_STRIDE = 8;

@@ -16,17 +16,16 @@ import {
   BX_ROT_Z,
   BX_STRIDE,
 } from './body-state-layout.js';
-import { makeSoftInto, shapeContactHertz } from './contact-scale.js';
+import { effectiveMass, prepareContactSoftness } from './contact-point.js';
+import { CP_NORMAL_MASS, CP_SEPARATION } from './contact-point-layout.js';
 import {
   MP_MAX_NORMAL_IMPULSE,
   MP_NORMAL_IMPULSE,
-  MP_NORMAL_MASS,
   MP_RELATIVE_VELOCITY,
   MP_RNA,
   MP_RNB,
   MP_RTA,
   MP_RTB,
-  MP_SEPARATION,
   MP_STRIDE,
   MP_TANGENT_IMPULSE,
   MP_TANGENT_MASS,
@@ -134,9 +133,7 @@ export function prepareManifolds(world: PhysicsWorld): void {
   if (n === 0) return;
   const set = cs.settings;
   const hs = world.h / set.solverSubsteps;
-  const hertz = shapeContactHertz(set, hs);
-  makeSoftInto(st.softness, 0, hertz, set.contactDampingRatio, hs);
-  makeSoftInto(st.rigidSoftness, 0, 2 * hertz, set.contactDampingRatio, hs);
+  prepareContactSoftness(st.softness, set, hs);
   const R = atLeast(st.solverRows, n * MR_STRIDE);
   st.solverRows = R;
   prepareRows(world, R, n);
@@ -226,7 +223,7 @@ function prepareRows(world: PhysicsWorld, R: Float64Array, n: number): void {
       mus = Math.sqrt(sa * sM[eb]!);
     R[r + MR_RESTITUTION] = Math.max(ra, eM[eb]!);
     R[r + MR_ROLLING] = rollingOf(S, buf, i, ea, eb);
-    R[r + MR_ROLLING_MASS] = iA + iB > 0 ? 1 / (iA + iB) : 0;
+    R[r + MR_ROLLING_MASS] = effectiveMass(iA + iB);
     stampA[i] = ea > 0 ? stamp[ea]! : 0;
     stampB[i] = stamp[eb]!;
     let j = previousRow(st, i + shift, ea, eb);
@@ -293,9 +290,9 @@ function prepareRows(world: PhysicsWorld, R: Float64Array, n: number): void {
       R[o + MP_RNB] = rnB;
       R[o + MP_RTA] = rtA;
       R[o + MP_RTB] = rtB;
-      R[o + MP_SEPARATION] = sep;
-      R[o + MP_NORMAL_MASS] = kn > 0 ? 1 / kn : 0;
-      R[o + MP_TANGENT_MASS] = kt > 0 ? 1 / kt : 0;
+      R[o + CP_SEPARATION] = sep;
+      R[o + CP_NORMAL_MASS] = effectiveMass(kn);
+      R[o + MP_TANGENT_MASS] = effectiveMass(kt);
       R[o + MP_NORMAL_IMPULSE] = ln;
       R[o + MP_TANGENT_IMPULSE] = lt;
       R[o + MP_MAX_NORMAL_IMPULSE] = 0;

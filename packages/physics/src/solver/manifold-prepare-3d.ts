@@ -25,7 +25,8 @@ import {
   II3_YZ,
   II3_ZZ,
 } from './body-state-layout.js';
-import { makeSoftInto, shapeContactHertz } from './contact-scale.js';
+import { effectiveMass, prepareContactSoftness } from './contact-point.js';
+import { CP_NORMAL_MASS, CP_NORMAL_ROW, CP_SEPARATION } from './contact-point-layout.js';
 import {
   ANCHOR_AX,
   ANCHOR_AY,
@@ -55,8 +56,6 @@ import {
   HEAD_T1Y,
   HEAD_T1Z,
   JAC_STRIDE,
-  POINT_MN,
-  POINT_SEP,
   POINT_STRIDE,
   REC_POINTS,
   REC_STRIDE,
@@ -69,7 +68,6 @@ import {
   ROW_BY,
   ROW_BZ,
 } from './manifold-layout-3d.js';
-import { rigid, soft } from './manifold-softness-3d.js';
 
 /** Preparation of the 3D manifold rows at the start of a step (solver/manifold-rows-3d.ts): world inverse inertia tensors of the solver bodies, Jacobians, effective masses, softness and separations on the solver's base. */
 
@@ -89,9 +87,7 @@ export function prepareManifolds3D(world: PhysicsWorld): void {
     T = st.invInertia;
   const set = cs.settings,
     hs = world.h / set.solverSubsteps;
-  const hertz = shapeContactHertz(set, hs);
-  makeSoftInto(soft, 0, hertz, set.contactDampingRatio, hs);
-  makeSoftInto(rigid, 0, 2 * hertz, set.contactDampingRatio, hs);
+  prepareContactSoftness(st.softness, set, hs);
   if (n === 0) return;
   if (st.solveRecord.length < REC_STRIDE * n) {
     const rows = Math.max(n, (2 * st.solveRecord.length) / REC_STRIDE);
@@ -145,7 +141,7 @@ export function prepareManifolds3D(world: PhysicsWorld): void {
         o = JAC_STRIDE * q,
         p = h + REC_POINTS + POINT_STRIDE * k;
       buf.sep[q] = buf.sep[q]! + shift;
-      R[p + POINT_SEP] = buf.sep[q]!;
+      R[p + CP_SEPARATION] = buf.sep[q]!;
       const r = ANCHOR_STRIDE * q;
       const rax = RA[r + ANCHOR_AX]!,
         ray = RA[r + ANCHOR_AY]!,
@@ -163,16 +159,16 @@ export function prepareManifolds3D(world: PhysicsWorld): void {
       const xbx = rby * nz - rbz * ny,
         xby = rbz * nx - rbx * nz,
         xbz = rbx * ny - rby * nx;
-      R[p + ROW_AX] = Math.fround(xax);
-      R[p + ROW_AY] = Math.fround(xay);
-      R[p + ROW_AZ] = Math.fround(xaz);
-      R[p + ROW_BX] = Math.fround(xbx);
-      R[p + ROW_BY] = Math.fround(xby);
-      R[p + ROW_BZ] = Math.fround(xbz);
+      R[p + CP_NORMAL_ROW + ROW_AX] = Math.fround(xax);
+      R[p + CP_NORMAL_ROW + ROW_AY] = Math.fround(xay);
+      R[p + CP_NORMAL_ROW + ROW_AZ] = Math.fround(xaz);
+      R[p + CP_NORMAL_ROW + ROW_BX] = Math.fround(xbx);
+      R[p + CP_NORMAL_ROW + ROW_BY] = Math.fround(xby);
+      R[p + CP_NORMAL_ROW + ROW_BZ] = Math.fround(xbz);
       const k0 = iso
         ? mA + mB + T[ta + II3_XX]! * (xax * xax + xay * xay + xaz * xaz) + T[tb + II3_XX]! * (xbx * xbx + xby * xby + xbz * xbz)
         : mA + mB + inertiaInto(JI, o + ROW_AX, T, ta, xax, xay, xaz) + inertiaInto(JI, o + ROW_BX, T, tb, xbx, xby, xbz);
-      R[p + POINT_MN] = Math.fround(k0 > 0 ? 1 / k0 : 0);
+      R[p + CP_NORMAL_MASS] = Math.fround(effectiveMass(k0));
       // Normal relative velocity at the start (for restitution): n . (v_B - v_A) + w_B . (r_B x n) - w_A . (r_A x n).
       buf.vn0[q] =
         (sb[b + BS3_VX]! - sb[a + BS3_VX]!) * nx +
@@ -286,13 +282,13 @@ function prepareFriction3D(st: Contact3DState, i: number, iso: boolean, mA: numb
       ? mA + mB + T[ta + II3_XX]! * (xax * xax + xay * xay + xaz * xaz) + T[tb + II3_XX]! * (xbx * xbx + xby * xby + xbz * xbz)
       : mA + mB + inertiaInto(FV, ov + ROW_AX, T, ta, xax, xay, xaz) + inertiaInto(FV, ov + ROW_BX, T, tb, xbx, xby, xbz);
     // Effective masses in single precision (as the normal rows'): the same numbers every build.
-    R[h + (d === 0 ? HEAD_MT1 : HEAD_MT2)] = Math.fround(k0 > 0 ? 1 / k0 : 0);
+    R[h + (d === 0 ? HEAD_MT1 : HEAD_MT2)] = Math.fround(effectiveMass(k0));
   }
   // Twist about n: 1 / (n . I_A^-1 n + n . I_B^-1 n).
   const kw = iso
     ? T[ta + II3_XX]! + T[tb + II3_XX]!
     : inertiaInto(FV, fv + FRICTION_TWIST + ROW_AX, T, ta, nx, ny, nz) + inertiaInto(FV, fv + FRICTION_TWIST + ROW_BX, T, tb, nx, ny, nz);
-  R[h + HEAD_MTW] = Math.fround(kw > 0 ? 1 / kw : 0);
+  R[h + HEAD_MTW] = Math.fround(effectiveMass(kw));
 }
 
 /** Writes I^-1 x (I^-1 the invInertia row at T[t]) into out[o..o+2] (a row's part, x, y, z) and returns x . I^-1 x. */

@@ -15,16 +15,16 @@ import {
   BX_STRIDE,
 } from './body-state-layout.js';
 import { storeVelocities2D } from './body-velocities.js';
+import { bouncingList, boundedImpulse, normalBias, normalImpulse, softRow } from './contact-point.js';
+import { CP_NORMAL_MASS, CP_SEPARATION, SN_BIAS, SN_RIGID, SN_RIGID_BIAS, SN_SCALES, SN_SOFT_ROW } from './contact-point-layout.js';
 import {
   MP_MAX_NORMAL_IMPULSE,
   MP_NORMAL_IMPULSE,
-  MP_NORMAL_MASS,
   MP_RELATIVE_VELOCITY,
   MP_RNA,
   MP_RNB,
   MP_RTA,
   MP_RTB,
-  MP_SEPARATION,
   MP_STRIDE,
   MP_TANGENT_IMPULSE,
   MP_TANGENT_MASS,
@@ -137,33 +137,23 @@ export function warmStartManifolds(cs: CollisionState): void {
       vbx = sb[b + BS2_VX]!,
       vby = sb[b + BS2_VY]!,
       wb = sb[b + BS2_W]!;
-    // Points 1 and 2 unrolled; whether the row carries an impulse (it pushes its bodies) from the impulses read.
-    const o1 = r + MR_POINT0,
-      o2 = o1 + MP_STRIDE;
-    const ln1 = R[o1 + MP_NORMAL_IMPULSE]!,
-      lt1 = R[o1 + MP_TANGENT_IMPULSE]!;
-    const P1x = ln1 * nx - lt1 * ny,
-      P1y = ln1 * ny + lt1 * nx;
-    // r x (ln n + lt t) = ln (r x n) + lt (r x t).
-    wa -= iA * (ln1 * R[o1 + MP_RNA]! + lt1 * R[o1 + MP_RTA]!);
-    vax -= mA * P1x;
-    vay -= mA * P1y;
-    wb += iB * (ln1 * R[o1 + MP_RNB]! + lt1 * R[o1 + MP_RTB]!);
-    vbx += mB * P1x;
-    vby += mB * P1y;
-    let carries = ln1 !== 0 || lt1 !== 0;
-    if (R[r + MR_POINT_COUNT] === 2) {
-      const ln2 = R[o2 + MP_NORMAL_IMPULSE]!,
-        lt2 = R[o2 + MP_TANGENT_IMPULSE]!;
-      const P2x = ln2 * nx - lt2 * ny,
-        P2y = ln2 * ny + lt2 * nx;
-      wa -= iA * (ln2 * R[o2 + MP_RNA]! + lt2 * R[o2 + MP_RTA]!);
-      vax -= mA * P2x;
-      vay -= mA * P2y;
-      wb += iB * (ln2 * R[o2 + MP_RNB]! + lt2 * R[o2 + MP_RTB]!);
-      vbx += mB * P2x;
-      vby += mB * P2y;
-      carries = carries || ln2 !== 0 || lt2 !== 0;
+    // Each point's normal and friction impulse; whether the row carries an impulse (it pushes its
+    // bodies) from the impulses read.
+    let carries = false;
+    for (let p = 0, m = R[r + MR_POINT_COUNT]!; p < m; p++) {
+      const o = r + MR_POINT0 + p * MP_STRIDE;
+      const ln = R[o + MP_NORMAL_IMPULSE]!,
+        lt = R[o + MP_TANGENT_IMPULSE]!;
+      const Px = ln * nx - lt * ny,
+        Py = ln * ny + lt * nx;
+      // r x (ln n + lt t) = ln (r x n) + lt (r x t).
+      wa -= iA * (ln * R[o + MP_RNA]! + lt * R[o + MP_RTA]!);
+      vax -= mA * Px;
+      vay -= mA * Py;
+      wb += iB * (ln * R[o + MP_RNB]! + lt * R[o + MP_RTB]!);
+      vbx += mB * Px;
+      vby += mB * Py;
+      carries = carries || ln !== 0 || lt !== 0;
     }
     const lr = R[r + MR_ROLLING_IMPULSE]!;
     wa -= iA * lr;
@@ -228,10 +218,8 @@ function solveBlock(R: Float64Array, r: number, c1: number, c2: number): boolean
  * (w_B - w_A, rad/s). Returns the impulse added, N m s (A gets minus it).
  */
 function solveRolling(R: Float64Array, r: number, total: number, dw: number): number {
-  const old = R[r + MR_ROLLING_IMPULSE]!,
-    maxR = R[r + MR_ROLLING]! * total;
-  let next = old - R[r + MR_ROLLING_MASS]! * dw;
-  next = next < -maxR ? -maxR : next > maxR ? maxR : next;
+  const old = R[r + MR_ROLLING_IMPULSE]!;
+  const next = boundedImpulse(old, R[r + MR_ROLLING_MASS]!, dw, R[r + MR_ROLLING]! * total);
   R[r + MR_ROLLING_IMPULSE] = next;
   return next - old;
 }
@@ -269,18 +257,11 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean)
     sb = cs.bodyState,
     ex = cs.bodyExtra,
     base = cs.shapes.angleBase;
-  const sd = cs.shapes.softness,
-    sr = cs.shapes.rigidSoftness;
-  const biasSoft = sd[0]!,
-    massSoft = sd[1]!,
-    impulseSoft = sd[2]!,
-    biasRigid = sr[0]!,
-    massRigid = sr[1]!,
-    impulseRigid = sr[2]!;
+  const T = cs.shapes.softness;
   const invH = 1 / hs,
-    // The push-out speed cap as a lower bound of the bias, negated once here: a negation inside the
-    // branches (first reached when a point overlaps) would leave compiled code without feedback for it.
-    minBias = -cs.settings.contactPushSpeed;
+    // The push-out speed cap as a lower bound of the bias.
+    minBias = -cs.settings.contactPushSpeed,
+    biasOn = useBias ? 1 : 0;
   for (let i = 0, n = Math.min(cs.shapes.manifolds.count, MAX_MANIFOLDS); i < n; i++) {
     const r = i * MR_STRIDE;
     const ia = R[r + MR_BODY_A]! & MR_BODY_MASK,
@@ -306,9 +287,8 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean)
     const nx = R[r + MR_NX]!,
       ny = R[r + MR_NY]!;
     const rigidPartner = mA === 0 || mB === 0;
-    const biasRate = rigidPartner ? biasRigid : biasSoft,
-      softMass = rigidPartner ? massRigid : massSoft,
-      softImpulse = rigidPartner ? impulseRigid : impulseSoft;
+    const biasRate = rigidPartner ? T[SN_RIGID_BIAS]! : T[SN_BIAS]!,
+      scales = rigidPartner ? SN_SCALES + SN_RIGID : SN_SCALES;
     const two = R[r + MR_POINT_COUNT] === 2;
     const o1 = r + MR_POINT0,
       o2 = o1 + MP_STRIDE;
@@ -321,28 +301,19 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean)
       t2a = R[o2 + MP_RTA]!,
       t2b = R[o2 + MP_RTB]!;
     const dn = (dbx - dax) * nx + (dby - day) * ny;
-    const s1 = R[o1 + MP_SEPARATION]! + dn + tb * n1b - ta * n1a;
-    const s2 = R[o2 + MP_SEPARATION]! + dn + tb * n2b - ta * n2a;
-    let b1 = 0,
-      m1 = 1,
-      i1 = 0,
-      b2 = 0,
-      m2 = 1,
-      i2 = 0;
-    if (s1 > 0) b1 = s1 * invH;
-    else if (useBias) {
-      b1 = biasRate * s1;
-      if (b1 < minBias) b1 = minBias;
-      m1 = softMass;
-      i1 = softImpulse;
-    }
-    if (s2 > 0) b2 = s2 * invH;
-    else if (useBias) {
-      b2 = biasRate * s2;
-      if (b2 < minBias) b2 = minBias;
-      m2 = softMass;
-      i2 = softImpulse;
-    }
+    const s1 = R[o1 + CP_SEPARATION]! + dn + tb * n1b - ta * n1a;
+    const s2 = R[o2 + CP_SEPARATION]! + dn + tb * n2b - ta * n2a;
+    // Each normal row's regime (solver/contact-point.ts): its bias and its mass and impulse scales.
+    const soft1 = softRow(s1, biasOn),
+      soft2 = softRow(s2, biasOn);
+    const b1 = normalBias(s1, invH, biasRate, minBias, soft1),
+      b2 = normalBias(s2, invH, biasRate, minBias, soft2);
+    const sel1 = scales + SN_SOFT_ROW * soft1,
+      sel2 = scales + SN_SOFT_ROW * soft2;
+    const m1 = T[sel1]!,
+      i1 = T[sel1 + 1]!,
+      m2 = T[sel2]!,
+      i2 = T[sel2 + 1]!;
     let l1 = R[o1 + MP_NORMAL_IMPULSE]!,
       l2 = R[o2 + MP_NORMAL_IMPULSE]!;
     let total = 0;
@@ -382,8 +353,7 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean)
         nb = p === 0 ? n1b : n2b;
       const old = p === 0 ? l1 : l2;
       const vn = (vbx - vax) * nx + (vby - vay) * ny + wb * nb - wa * na;
-      let next = old - R[o + MP_NORMAL_MASS]! * (p === 0 ? m1 : m2) * (vn + (p === 0 ? b1 : b2)) - (p === 0 ? i1 : i2) * old;
-      if (next < 0) next = 0;
+      const next = normalImpulse(old, R[o + CP_NORMAL_MASS]!, p === 0 ? m1 : m2, p === 0 ? i1 : i2, vn, p === 0 ? b1 : b2);
       const dl = next - old;
       if (p === 0) l1 = next;
       else l2 = next;
@@ -401,43 +371,28 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean)
     R[o1 + MP_NORMAL_IMPULSE] = l1;
     if (two) R[o2 + MP_NORMAL_IMPULSE] = l2;
     const bound = R[r + MR_FRICTION_BOUND]!;
-    let f1 = R[o1 + MP_TANGENT_IMPULSE]!,
+    let f1 = 0,
       f2 = 0;
-    {
-      // v_t = (v_B - v_A) . t + w_B (r_B x t) - w_A (r_A x t), t = (-n_y, n_x).
-      const vt = (vby - vay) * nx - (vbx - vax) * ny + wb * t1b - wa * t1a;
-      const maxF = bound * l1;
-      let next = f1 - R[o1 + MP_TANGENT_MASS]! * vt;
-      next = next < -maxF ? -maxF : next > maxF ? maxF : next;
-      const dl = next - f1;
-      f1 = next;
+    // Friction, point 1 then point 2: v_t = (v_B - v_A) . t + w_B (r_B x t) - w_A (r_A x t), t = (-n_y, n_x).
+    for (let p = 0; p < (two ? 2 : 1); p++) {
+      const o = o1 + p * MP_STRIDE;
+      const la = p === 0 ? t1a : t2a,
+        lb = p === 0 ? t1b : t2b;
+      const old = R[o + MP_TANGENT_IMPULSE]!;
+      const vt = (vby - vay) * nx - (vbx - vax) * ny + wb * lb - wa * la;
+      const next = boundedImpulse(old, R[o + MP_TANGENT_MASS]!, vt, bound * (p === 0 ? l1 : l2));
+      const dl = next - old;
+      R[o + MP_TANGENT_IMPULSE] = next;
+      if (p === 0) f1 = next;
+      else f2 = next;
       const Px = -dl * ny,
         Py = dl * nx;
       vax -= mA * Px;
       vay -= mA * Py;
-      wa -= iA * dl * t1a;
+      wa -= iA * dl * la;
       vbx += mB * Px;
       vby += mB * Py;
-      wb += iB * dl * t1b;
-    }
-    R[o1 + MP_TANGENT_IMPULSE] = f1;
-    if (two) {
-      f2 = R[o2 + MP_TANGENT_IMPULSE]!;
-      const vt = (vby - vay) * nx - (vbx - vax) * ny + wb * t2b - wa * t2a;
-      const maxF = bound * l2;
-      let next = f2 - R[o2 + MP_TANGENT_MASS]! * vt;
-      next = next < -maxF ? -maxF : next > maxF ? maxF : next;
-      const dl = next - f2;
-      f2 = next;
-      R[o2 + MP_TANGENT_IMPULSE] = next;
-      const Px = -dl * ny,
-        Py = dl * nx;
-      vax -= mA * Px;
-      vay -= mA * Py;
-      wa -= iA * dl * t2a;
-      vbx += mB * Px;
-      vby += mB * Py;
-      wb += iB * dl * t2b;
+      wb += iB * dl * lb;
     }
     if (R[r + MR_ROLLING]! > 0) {
       const dl = solveRolling(R, r, total, wb - wa);
@@ -465,9 +420,8 @@ export function accumulateManifoldImpulses(cs: CollisionState): void {
   }
 }
 
-/** applyManifoldRestitution's scratch: the cap of each point's accumulated impulse (two a manifold), and the manifolds with a bouncing point, in order. Not world state. */
+/** applyManifoldRestitution's scratch: the cap of each point's accumulated impulse (two a manifold). Not world state. */
 let restitutionCaps = new Float64Array(0);
-let restitutionList = new Int32Array(0);
 
 /**
  * The 2D manifolds' restitution stage, by the one definition of solver/restitution.ts: a point that
@@ -487,11 +441,8 @@ export function applyManifoldRestitution(world: PhysicsWorld): void {
   const threshold = cs.settings.restitutionThreshold,
     elasticThreshold = cs.settings.elasticRestitutionThreshold;
   const n = cs.shapes.manifolds.count;
-  if (restitutionList.length < n) {
-    restitutionList = new Int32Array(2 * n);
-    restitutionCaps = new Float64Array(4 * n);
-  }
-  const list = restitutionList,
+  if (restitutionCaps.length < 2 * n) restitutionCaps = new Float64Array(4 * n);
+  const list = bouncingList(n),
     caps = restitutionCaps;
   let listed = 0;
   for (let pass = 0, passes = cs.settings.restitutionIterations; pass < passes; pass++) {
@@ -530,8 +481,8 @@ export function applyManifoldRestitution(world: PhysicsWorld): void {
         list[listed++] = i;
         const vn1 = dvn + wb * R[o1 + MP_RNB]! - wa * R[o1 + MP_RNA]!,
           vn2 = m > 1 ? dvn + wb * R[o2 + MP_RNB]! - wa * R[o2 + MP_RNA]! : 0;
-        let s1 = -R[o1 + MP_NORMAL_MASS]! * vn1,
-          s2 = -R[o2 + MP_NORMAL_MASS]! * vn2;
+        let s1 = -R[o1 + CP_NORMAL_MASS]! * vn1,
+          s2 = -R[o2 + CP_NORMAL_MASS]! * vn2;
         if (m > 1 && R[r + MR_BLOCK_VALID] === 1) {
           s1 = -(R[r + MR_B11]! * vn1 + R[r + MR_B12]! * vn2);
           s2 = -(R[r + MR_B12]! * vn1 + R[r + MR_B22]! * vn2);
@@ -565,7 +516,7 @@ export function applyManifoldRestitution(world: PhysicsWorld): void {
         let next = R[o + MP_NORMAL_IMPULSE]!;
         if (!block) {
           const vn = (vbx - vax) * nx + (vby - vay) * ny + wb * nb - wa * na;
-          next = restitutionImpulse(old, R[o + MP_NORMAL_MASS]!, vn, target, caps[2 * i + p]!);
+          next = restitutionImpulse(old, R[o + CP_NORMAL_MASS]!, vn, target, caps[2 * i + p]!);
           R[o + MP_NORMAL_IMPULSE] = next;
         }
         const dl = next - old;

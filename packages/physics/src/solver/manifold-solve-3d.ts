@@ -20,6 +20,17 @@ import {
   II3_STRIDE,
   II3_XX,
 } from './body-state-layout.js';
+import { bouncingList, boundedImpulse, normalBias, normalImpulse, softRow } from './contact-point.js';
+import {
+  CP_NORMAL_MASS,
+  CP_NORMAL_ROW,
+  CP_SEPARATION,
+  SN_BIAS,
+  SN_RIGID,
+  SN_RIGID_BIAS,
+  SN_SCALES,
+  SN_SOFT_ROW,
+} from './contact-point-layout.js';
 import {
   FRICTION_INV_STRIDE,
   FRICTION_T1,
@@ -42,8 +53,6 @@ import {
   HEAD_T1Y,
   HEAD_T1Z,
   JAC_STRIDE,
-  POINT_MN,
-  POINT_SEP,
   POINT_STRIDE,
   REC_POINTS,
   REC_STRIDE,
@@ -56,7 +65,6 @@ import {
   ROW_BY,
   ROW_BZ,
 } from './manifold-layout-3d.js';
-import { rigid, soft } from './manifold-softness-3d.js';
 import { restitutionImpulse, restitutionTarget } from './restitution.js';
 
 /** The 3D manifold rows' substep stages (solver/manifold-rows-3d.ts): warm start, the solve (normal rows with their sweeps, the friction patch and twist), and restitution after the substeps. */
@@ -119,12 +127,12 @@ export function warmStartManifolds3D(world: PhysicsWorld): void {
       sn += ln;
       if (iso) {
         const p = h + REC_POINTS + POINT_STRIDE * k;
-        ax += ln * R[p + ROW_AX]!;
-        ay += ln * R[p + ROW_AY]!;
-        az += ln * R[p + ROW_AZ]!;
-        bx += ln * R[p + ROW_BX]!;
-        by += ln * R[p + ROW_BY]!;
-        bz += ln * R[p + ROW_BZ]!;
+        ax += ln * R[p + CP_NORMAL_ROW + ROW_AX]!;
+        ay += ln * R[p + CP_NORMAL_ROW + ROW_AY]!;
+        az += ln * R[p + CP_NORMAL_ROW + ROW_AZ]!;
+        bx += ln * R[p + CP_NORMAL_ROW + ROW_BX]!;
+        by += ln * R[p + CP_NORMAL_ROW + ROW_BY]!;
+        bz += ln * R[p + CP_NORMAL_ROW + ROW_BZ]!;
       } else {
         const o = JAC_STRIDE * q;
         ax += ln * JI[o + ROW_AX]!;
@@ -212,25 +220,6 @@ export function warmStartManifolds3D(world: PhysicsWorld): void {
   }
 }
 
-/** solveManifolds3D's mass and impulse scales of a row, filled at the start of each pass (fillScales). */
-const SCALES = new Float64Array(8);
-
-/**
- * SCALES: a row's mass and impulse scales at scaleBase + 2 softRow, a speculative or relax row's (1, 0)
- * then a soft row's, for a manifold of two moving bodies (scaleBase 0) and one against the static world
- * (scaleBase 4), from this step's softness (`soft`, `rigid`).
- */
-function fillScales(): void {
-  SCALES[0] = 1;
-  SCALES[1] = 0;
-  SCALES[2] = soft[1]!;
-  SCALES[3] = soft[2]!;
-  SCALES[4] = 1;
-  SCALES[5] = 0;
-  SCALES[6] = rigid[1]!;
-  SCALES[7] = rigid[2]!;
-}
-
 /**
  * One pass over the rows: normal (soft with `useBias`, else relaxing), then the manifold's friction (t1, t2 and twist at its anchor).
  * @category Collision
@@ -249,8 +238,10 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
   // its substep's order), so the order a manifold's points are solved in leaves no systematic torque.
   st.solveParity ^= useBias ? 1 : 0;
   const backward = st.solveParity === 1;
-  const sBias = soft[0]!,
-    rBias = rigid[0]!;
+  // The softness table (solver/contact-point-layout.ts): a row's scales at scaleBase + SN_SOFT_ROW softRow.
+  const T = st.softness,
+    sBias = T[SN_BIAS]!,
+    rBias = T[SN_RIGID_BIAS]!;
   const LN = buf.ln,
     CARRIED = buf.carried,
     FV = st.frictionInv;
@@ -264,7 +255,6 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
   const invHs = 1 / hs,
     negPush = -push,
     biasOn = useBias ? 1 : 0;
-  fillScales();
   for (let i = 0, count = buf.count; i < count; i++) {
     const ka = IA[i]!,
       kb = IB[i]!,
@@ -276,7 +266,7 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
       nz = H[h + HEAD_NZ]!;
     const isRigid = ka === 0 || kb === 0;
     const biasRate = isRigid ? rBias : sBias,
-      scaleBase = isRigid ? 4 : 0;
+      scaleBase = isRigid ? SN_SCALES + SN_RIGID : SN_SCALES;
     // Velocities of both bodies in locals for the manifold's rows (written back once at the end).
     let vax = sb[a + BS3_VX]!,
       vay = sb[a + BS3_VY]!,
@@ -367,37 +357,28 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
         const k = backward !== odd ? m - 1 - kk : kk;
         const q = 4 * i + k,
           p = h + REC_POINTS + POINT_STRIDE * k;
-        const ra0 = H[p + ROW_AX]!,
-          ra1 = H[p + ROW_AY]!,
-          ra2 = H[p + ROW_AZ]!,
-          rb0 = H[p + ROW_BX]!,
-          rb1 = H[p + ROW_BY]!,
-          rb2 = H[p + ROW_BZ]!;
+        const ra0 = H[p + CP_NORMAL_ROW + ROW_AX]!,
+          ra1 = H[p + CP_NORMAL_ROW + ROW_AY]!,
+          ra2 = H[p + CP_NORMAL_ROW + ROW_AZ]!,
+          rb0 = H[p + CP_NORMAL_ROW + ROW_BX]!,
+          rb1 = H[p + CP_NORMAL_ROW + ROW_BY]!,
+          rb2 = H[p + CP_NORMAL_ROW + ROW_BZ]!;
         // s = s0 + (d_B - d_A) . n + theta_B . (r_B x n) - theta_A . (r_A x n)
-        const s = H[p + POINT_SEP]! + dn + (hbx * rb0 + hby * rb1 + hbz * rb2 - (hax * ra0 + hay * ra1 + haz * ra2));
-        // Both biases are worked out on every row (branches first taken after V8 optimised the loop
-        // threw the optimised code away: 'insufficient type feedback'; the same numbers either way).
-        const speculative = s * invHs,
-          softBias = Math.max(biasRate * s, negPush);
-        // Selected without a branch (which way it goes changes from point to point in a pile, and a
-        // mispredicted branch costs more than the row): speculative (s > 0) takes bias s / h_s and the
-        // plain mass, a soft row of a biased pass the soft bias and its mass and impulse scales, a relax
-        // row neither (the products with 0 and 1 give the selected numbers; a relax row's zero bias may be
-        // -0, which adds the same).
-        const specRow = +(s > 0),
-          softRow = +!(s > 0) & biasOn,
-          sel = scaleBase + 2 * softRow;
-        const bias = specRow * speculative + softRow * softBias,
-          ms = SCALES[sel]!,
-          is = SCALES[sel + 1]!;
-        softMet |= softRow;
+        const s = H[p + CP_SEPARATION]! + dn + (hbx * rb0 + hby * rb1 + hbz * rb2 - (hax * ra0 + hay * ra1 + haz * ra2));
+        // The row's regime, bias and scales (solver/contact-point.ts), selected without a branch.
+        const soft = softRow(s, biasOn),
+          sel = scaleBase + SN_SOFT_ROW * soft;
+        const bias = normalBias(s, invHs, biasRate, negPush, soft),
+          ms = T[sel]!,
+          is = T[sel + 1]!;
+        softMet |= soft;
         const vn =
           (vbx - vax) * nx +
           (vby - vay) * ny +
           (vbz - vaz) * nz +
           (wbx * rb0 + wby * rb1 + wbz * rb2 - (wax * ra0 + way * ra1 + waz * ra2));
         const old = LN[q]!;
-        const lam = Math.max(old - H[p + POINT_MN]! * ms * (vn + bias) - is * old, 0);
+        const lam = normalImpulse(old, H[p + CP_NORMAL_MASS]!, ms, is, vn, bias);
         const dl = lam - old;
         LN[q] = lam;
         CARRIED[q] = CARRIED[q]! | +(lam > 0);
@@ -515,10 +496,7 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
         pushed = true;
       }
       // Twist: relative spin about n, limited by mu arm sum(lambda_n).
-      const tl = limit * H[h + HEAD_ARM]!,
-        ntl = -tl;
-      let lw = ow - H[h + HEAD_MTW]! * ((wbx - wax) * nx + (wby - way) * ny + (wbz - waz) * nz);
-      lw = lw > tl ? tl : lw < ntl ? ntl : lw;
+      const lw = boundedImpulse(ow, H[h + HEAD_MTW]!, (wbx - wax) * nx + (wby - way) * ny + (wbz - waz) * nz, limit * H[h + HEAD_ARM]!);
       FT[3 * i + 2] = lw;
       const dw = lw - ow;
       if (dw !== 0) {
@@ -593,9 +571,6 @@ function pushAlongNormal(
   sb[s + BS3_PUSHED] = 1;
 }
 
-/** applyManifold3DRestitution's scratch: the manifolds with a bouncing point, in order. */
-let restitutionList = new Int32Array(0);
-
 /**
  * The 3D manifolds' restitution stage, by the one definition of solver/restitution.ts: a point that
  * carried an impulse and approached faster than its threshold at the start of the step bounces; its
@@ -621,8 +596,7 @@ export function applyManifold3DRestitution(world: PhysicsWorld): void {
   // Which points bounce (approach past the threshold, impulse carried) does not change from pass to
   // pass: the first pass visits every manifold and lists those with such a point, the others only those
   // (in the same order, so the same impulses; a settled pile's thousands of manifolds are read once).
-  if (restitutionList.length < buf.count) restitutionList = new Int32Array(2 * buf.count);
-  const list = restitutionList;
+  const list = bouncingList(buf.count);
   let listed = 0;
   for (let pass = 0, passes = cs.settings.restitutionIterations; pass < passes; pass++) {
     const all = pass === 0;
@@ -653,21 +627,21 @@ export function applyManifold3DRestitution(world: PhysicsWorld): void {
           (sb[b + BS3_VX]! - sb[a + BS3_VX]!) * nx +
           (sb[b + BS3_VY]! - sb[a + BS3_VY]!) * ny +
           (sb[b + BS3_VZ]! - sb[a + BS3_VZ]!) * nz +
-          sb[b + BS3_WX]! * R[p + ROW_BX]! +
-          sb[b + BS3_WY]! * R[p + ROW_BY]! +
-          sb[b + BS3_WZ]! * R[p + ROW_BZ]! -
-          sb[a + BS3_WX]! * R[p + ROW_AX]! -
-          sb[a + BS3_WY]! * R[p + ROW_AY]! -
-          sb[a + BS3_WZ]! * R[p + ROW_AZ]!;
+          sb[b + BS3_WX]! * R[p + CP_NORMAL_ROW + ROW_BX]! +
+          sb[b + BS3_WY]! * R[p + CP_NORMAL_ROW + ROW_BY]! +
+          sb[b + BS3_WZ]! * R[p + CP_NORMAL_ROW + ROW_BZ]! -
+          sb[a + BS3_WX]! * R[p + CP_NORMAL_ROW + ROW_AX]! -
+          sb[a + BS3_WY]! * R[p + CP_NORMAL_ROW + ROW_AY]! -
+          sb[a + BS3_WZ]! * R[p + CP_NORMAL_ROW + ROW_AZ]!;
         const old = LN[q]!;
-        const lam = restitutionImpulse(old, R[p + POINT_MN]!, vn, target, Number.POSITIVE_INFINITY);
+        const lam = restitutionImpulse(old, R[p + CP_NORMAL_MASS]!, vn, target, Number.POSITIVE_INFINITY);
         const dl = lam - old;
         LN[q] = lam;
         if (dl === 0) continue;
         // Body row 0 (the static world) is never written.
         const o = JAC_STRIDE * q;
-        if (ka > 0) pushAlongNormal(sb, a, -dl, nx, ny, nz, iso, iA, iso ? R : JI, iso ? p + ROW_AX : o + ROW_AX);
-        if (kb > 0) pushAlongNormal(sb, b, dl, nx, ny, nz, iso, iB, iso ? R : JI, iso ? p + ROW_BX : o + ROW_BX);
+        if (ka > 0) pushAlongNormal(sb, a, -dl, nx, ny, nz, iso, iA, iso ? R : JI, iso ? p + CP_NORMAL_ROW + ROW_AX : o + ROW_AX);
+        if (kb > 0) pushAlongNormal(sb, b, dl, nx, ny, nz, iso, iB, iso ? R : JI, iso ? p + CP_NORMAL_ROW + ROW_BX : o + ROW_BX);
       }
       if (all && bounces) list[listed++] = i;
     }
