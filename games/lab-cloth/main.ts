@@ -43,7 +43,7 @@ import { browserStore, loadProgress, passMark, saveProgress } from './progress';
 import { applyWind, CLOTH_SUBSTEPS, createClothScene, DEFAULTS, LINE_Y, SHEET_WIDTH, SHEET_X, sheetGrid, YARD } from './scene';
 import { SheetView } from './sheet-view';
 import { CutUndo } from './undo';
-import { Yard } from './yard';
+import { POSTS, Yard } from './yard';
 
 const USAGE = 'Accepted: size 8-48 points across; wind 0-10 m/s; gusts 0-5 m/s; tear 0.1-2 (strain).';
 const url = readUrlParams(
@@ -134,7 +134,14 @@ const view: WorldRect = { minX: YARD.minX - 0.25, minY: -0.65, maxX: YARD.maxX +
  * sheet or a new screen size (a view that followed the blowing sheet panned and zoomed under the
  * scissors).
  */
-const narrowView: WorldRect = { ...view, minX: SHEET_X - 0.2, maxX: YARD.maxX + 0.1 };
+const narrowView: WorldRect = { ...view, minX: POSTS[0] - 0.06, maxX: YARD.maxX + 0.03 };
+/**
+ * CSS px kept free round the upright view: none, the view's own margins (the left post, 0.03 m past
+ * the yard's right wall) are enough, and the width sets the scale: at 390 px across the sheet is
+ * drawn 70 px a metre (with the default 24 px and wider margins, 63 px a metre: the star and heart
+ * about 55 px tall, too small for a finger to trace, said a stranger on a phone).
+ */
+const NARROW_PADDING = 0;
 
 /** Floating words over the scene: a shape cut out, with its fit and stars. */
 interface Label {
@@ -302,7 +309,13 @@ if (touchHint) Object.assign(touchHint.style, { top: '12px', bottom: 'auto' });
 const dock = createLabDock();
 /** Whether the screen is taller than wide (the upright view). */
 const upright = (): boolean => app.screen.width < app.screen.height;
-const refitView = followView(app, renderer.camera, dock, () => (upright() ? narrowView : view));
+const refitView = followView(
+  app,
+  renderer.camera,
+  dock,
+  () => (upright() ? narrowView : view),
+  () => (upright() ? NARROW_PADDING : 24),
+);
 
 const panel = createPanel(
   params,

@@ -625,16 +625,21 @@ function bannerHeight(): number {
 }
 
 /**
- * Puts the "Next level" button at the bottom corner away from the basket (the bar is centred by
- * default, over the floor where the ball lands), so the ball in the basket stays in sight.
+ * Puts the "Next level" button in the middle of the scene, its top `top` px under the canvas's top
+ * (just under the win banner's row of stars): the win reads as one card, the button under the
+ * message in reach of a thumb (in a bottom corner, away from the basket, a stranger on a phone
+ * took it for part of the floor and missed the win). The banner stands clear of the basket.
  */
-function placeNext(): void {
+function placeNext(top: number): void {
   const bar = document.querySelector<HTMLElement>('.bp-action');
   if (!bar) return;
-  const side = scene.level.basket[0] > 0 ? 'flex-start' : 'flex-end';
-  if (bar.style.justifyContent !== side) {
-    bar.style.justifyContent = side;
-    bar.style.padding = '0 16px';
+  const canvas = document.querySelector('canvas')?.getBoundingClientRect();
+  const stage = pageLayout().stage.getBoundingClientRect();
+  const at = `${Math.round(top + (canvas ? canvas.top - stage.top : 0))}px`;
+  if (bar.style.top !== at) {
+    bar.style.top = at;
+    bar.style.bottom = 'auto';
+    bar.style.justifyContent = 'center';
   }
 }
 
@@ -673,7 +678,7 @@ function drawBanner(now: number): void {
     setBanner(last ? 'All levels done!' : 'In the basket!', 0x9ff0b8, 1);
     showStars(banner.x, starsY, s, scene.level.stars.length, 1);
     showNext(true, last ? 'Play again ▶' : 'Next level ▶');
-    placeNext();
+    placeNext(starsY + STAR_SIZE * 0.6 + 12);
     return;
   }
   showNext(false);
@@ -750,8 +755,8 @@ shell.expose({
   level: () => params.level,
   /** The room the level is built in: 'wide' (WIDE_LEVELS) or 'upright' (LEVELS). */
   room: () => (levels === WIDE_LEVELS ? 'wide' : 'upright'),
-  /** The level's basket: centre of its floor (x, y, m) and inner width, m. */
-  basket: () => ({ at: [...scene.level.basket], width: scene.level.basketWidth }),
+  /** The level's basket: centre of its floor (x, y, m) and inner width and wall height, m. */
+  basket: () => ({ at: [...scene.level.basket], width: scene.level.basketWidth, depth: scene.level.basketDepth }),
   best: () => [...best],
   /**
    * The banner over the scene: its text ('' while hidden), box (x, y, width, height, px) and the star

@@ -179,14 +179,16 @@ export const WIDE_LEVELS: readonly Level[] = Object.freeze([
     hint: LEVELS[0]!.hint,
     anchors: [[-1.2, 6.3]],
     ball: [-4.2, 4.8],
-    // Under the right end of the swing, where the ball slows, stops and turns back: a cut from just
-    // after the top of the swing (2.0 s) to 0.55 s later drops it in, and so does one as it passes
-    // the bottom (1.05-1.15 s). The three stars hang along the drop from the very top (3 stars
-    // 2.0-2.15 s); a cut a moment before the top throws the ball onto the basket's far rim.
-    // (A basket where the swing throws farthest, 4.35 m, would be won only 1.32-1.72 s, on the
-    // upswing, never by a cut at the swing's end, the cut a player tries first.)
-    basket: [1.5, 0],
-    basketWidth: 1.5,
+    // A wide basket from under the right end of the swing, where the ball slows, stops and turns
+    // back, to the room's right wall: a cut on the upswing throws the ball far right (off the wall
+    // and down into the basket), one at the top drops it in, one just after the turn too. Won by a
+    // cut anywhere from 1.04 s (the ball rising past the bottom) to 2.48 s, with no gap (scripts/
+    // lab-rope-cuts.mjs --wide 1): a first level learnt by trying, not by a frame's timing. The three
+    // stars hang along the drop from the very top (3 stars 2.04-2.24 s), the rising throws catch one
+    // or two. (A basket under the swing's end alone, 1.5 m wide, was won only 2.0-2.56 s: a stranger
+    // cutting on the upswing missed four times.)
+    basket: [3.0, 0],
+    basketWidth: 4.2,
     basketDepth: 0.75,
     stars: [
       [2.0, 3.25],

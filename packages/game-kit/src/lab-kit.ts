@@ -123,9 +123,17 @@ export function fitViewBeside(camera: Camera, rect: WorldRect, reservedPx: numbe
 /**
  * Keeps `view()` (m) fitted beside the dock: now and after every resize of the app's renderer.
  * Call the returned function to refit (after the view changed).
+ * @param padding CSS px kept free around the view (fitViewBeside's `padding`), >= 0, read at each
+ *   refit. Default 24.
  */
-export function followView(app: Application, camera: Camera, dock: LabDock, view: () => WorldRect): () => void {
-  const refit = (): void => fitViewBeside(camera, view(), dock.reserved());
+export function followView(
+  app: Application,
+  camera: Camera,
+  dock: LabDock,
+  view: () => WorldRect,
+  padding: () => number = () => 24,
+): () => void {
+  const refit = (): void => fitViewBeside(camera, view(), dock.reserved(), padding());
   app.renderer.on('resize', refit);
   refit();
   return refit;
