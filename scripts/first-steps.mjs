@@ -26,8 +26,8 @@
 // Flags: --scene (default pyramid), --count (scene default), --steps (default 8), --runs (default 7
 // per tree), --seed (default 1), --show a-b (the steps printed one by one, default 0-<steps>),
 // --deopts, --flags "<Node or V8 flags for every run>" (an experiment: --flags=--no-lazy-feedback-allocation; the = is needed).
-// --warm-up (call warmUp(2) before making the world, as a program may during its loading; the steps
-// then show what is left after it). Exit code 2 on a usage error. Linux only (the main thread's CPU time).
+// --warm-up (call warmUp(d) of the scene's dimension before making the world, as a program may during
+// its loading; the steps then show what is left after it, and a last line the warm-up's own times). Exit code 2 on a usage error. Linux only (the main thread's CPU time).
 
 import { execFileSync } from 'node:child_process';
 import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
@@ -69,14 +69,19 @@ const CHILD = `
 import { readFileSync } from 'node:fs';
 const [bundle, scene, count, steps, seed, warm] = JSON.parse(process.argv[2]);
 const M = await import(bundle);
-if (warm) M.warmUp(2);
 const s = M.SCENES[scene];
 if (!s) { console.log(JSON.stringify({ error: 'unknown scene ' + scene + ' (scenes: ' + Object.keys(M.SCENES).join(', ') + ')' })); process.exit(0); }
 const options = count === null ? { seed } : { count, seed };
-const w = M.createPhysicsWorld({ ...s.worldOptions(options), seed });
-s.build(w, options);
 const thread = () => Number(readFileSync('/proc/thread-self/schedstat', 'utf8').split(' ')[0]) / 1e6;
 const cpu = () => { const u = process.cpuUsage(); return (u.user + u.system) / 1000; };
+let warmUp = null;
+if (warm) {
+  const t0 = performance.now(), c0 = cpu(), m0 = thread();
+  M.warmUp(s.worldOptions(options).dimensions ?? 2);
+  warmUp = [thread() - m0, cpu() - c0, performance.now() - t0];
+}
+const w = M.createPhysicsWorld({ ...s.worldOptions(options), seed });
+s.build(w, options);
 const main = [], proc = [], wall = [];
 for (let i = 0; i < steps; i++) {
   const t0 = performance.now(), c0 = cpu(), m0 = thread();
@@ -85,7 +90,7 @@ for (let i = 0; i < steps; i++) {
   main.push(thread() - m0); proc.push(cpu() - c0); wall.push(performance.now() - t0);
 }
 console.log('=== hash');
-console.log(JSON.stringify({ main, proc, wall, hash: M.stateHash(w) }));
+console.log(JSON.stringify({ main, proc, wall, warmUp, hash: M.stateHash(w) }));
 `;
 
 /**
@@ -186,6 +191,12 @@ try {
     keys.map((k) => sums(cur, k)),
     old && keys.map((k) => sums(old, k)),
   );
+  const worsts = (t) => keys.map((k) => median(t.results.map((x) => Math.max(...x[k]))));
+  row('worst', worsts(cur), old && worsts(old));
+  if (values['warm-up']) {
+    const warmUps = (t) => [0, 1, 2].map((k) => median(t.results.map((x) => x.warmUp[k])));
+    row('warmUp', warmUps(cur), old && warmUps(old));
+  }
   if (old) {
     const [ha, hb] = [old, cur].map((t) => new Set(t.results.map((x) => x.hash)));
     const same = ha.size === 1 && hb.size === 1 && [...ha][0] === [...hb][0];

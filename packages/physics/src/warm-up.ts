@@ -15,9 +15,13 @@
  * own, so a program that does not call it does not bundle the scene's shapes and joints).
  *
  * A function called once a step (the broadphase, the manifolds' preparation, the joints' rows) is
- * compiled after a number of loop iterations, not of steps: the scene has enough contacts and joints
- * for those to be compiled within its steps (a pyramid of 136 boxes, a grid of 180 joints), and one
- * solver substep in 2D, so that they make a larger part of its steps. It covers the paths of the
+ * marked for compiling after a number of loop iterations, not of steps: the scene has enough contacts
+ * and joints for most of those to be marked within its few steps (a pyramid of 136 boxes, a grid of
+ * 180 joints), and one solver substep in 2D, so that they make a larger part of its steps. It stops
+ * there, not once every function is compiled: the compiles end on V8's background threads while the
+ * program goes on (building its world, loading), and every step more would run in the interpreter,
+ * the warm-up's cost. The few once-a-step functions left are marked in a program's first steps,
+ * each a loop that V8 compiles while it runs (on-stack replacement). It covers the paths of the
  * dimension that scenes and games use: boxes stacked on a static ground (two-point manifolds, the
  * block solver, friction, islands), ball bodies piled and a fast stone with restitution (impacts),
  * a circle or sphere shape, welds that break under a falling weight, a hinged chain, bodies without
@@ -50,10 +54,12 @@ import { assertOptionalBoolean, assertOptions, describe } from './validation/val
 import type { PhysicsWorld } from './world/options.js';
 
 /**
- * Steps the warm-up scene runs (`warmUp`): 0.67 s of simulated time at 60 Hz, enough for its loops to be compiled.
+ * Steps the warm-up scene runs (`warmUp`): 0.17 s of simulated time at 60 Hz, enough for V8 to have
+ * marked the scene's loops for compiling (the compiles end on a background thread while the program
+ * goes on loading; the stepping in the interpreter meanwhile is what the warm-up costs).
  * @category World and step
  */
-export const WARM_UP_STEPS = 40;
+export const WARM_UP_STEPS = 10;
 
 /**
  * Steps of the second, fresh world of the warm-up scene (see warmUp): its first steps run what only
@@ -98,22 +104,30 @@ const warmed = new Set<number | string>();
 const keptWorlds: PhysicsWorld[] = [];
 
 /**
- * Most steps of the resting pyramid of the 2D warm-up (see warmUp): it falls asleep after about 30
- * (it settles at once, then rests the sleep system's 0.5 s), and is stepped once more after.
+ * Most steps of the resting pyramid of the 2D warm-up (see warmUp): it falls asleep after about 3
+ * (it settles at once, then rests REST_TIME_TO_SLEEP), and is stepped once more after.
  */
-const REST_STEPS = 60;
+const REST_STEPS = 10;
+
+/**
+ * The resting pyramid's time to sleep, s (its world's `collision.sleep.timeToSleep`, 0.5 s by
+ * default): 3 steps at 60 Hz, so that its island sleeps (the branch its steps are there to record)
+ * without stepping the sleep system's 0.5 s of rest.
+ */
+const REST_TIME_TO_SLEEP = 0.05;
 
 /**
  * Warms the physics code of `dimensions` up once a program: in 2D first steps a pyramid of 36 boxes
- * until it falls asleep (a world's first sleep), then builds a small scene of that dimension (boxes
- * on a ground, a pile of balls, a disc or sphere, joints of the common kinds), steps it
- * WARM_UP_STEPS (40) times, then a second copy of it 3 times (the paths only a world's first steps
- * run), so that a large scene's first steps afterwards run compiled code (see the top of
+ * until it falls asleep (a world's first sleep, after 0.05 s of rest), then builds a small scene of
+ * that dimension (boxes on a ground, a pile of balls, a disc or sphere, joints of the common kinds),
+ * steps it WARM_UP_STEPS (10) times, then a second copy of it 3 times (the paths only a world's first
+ * steps run), so that a large scene's first steps afterwards run compiled code (see the top of
  * warm-up.ts). The first copy is kept for the life of the program (about 2 to 2.5 MB a dimension),
  * so that the code compiled against its objects is not thrown away with them. Call it where a pause
- * is expected, such as while a game loads its first level: it takes about 0.3 to 0.5 s of
- * main-thread time, and a pyramid of 820 boxes' first four steps then take about 70 ms of CPU instead of about 450 (the first one 35 instead of
- * about 220), a joint grid of 10,000 bodies' about 140 to 240 ms instead of about 480. With
+ * is expected, such as while a game loads its first level: on two cores loaded by about 30 other
+ * processes it took about 0.2 s of main-thread CPU in 2D (0.3 s in 3D), and a pyramid of 820 boxes'
+ * first four steps then took about 30 ms of main-thread CPU instead of about 115 (the first one 10 to
+ * 15 instead of about 75), a joint grid of 10,000 bodies' first one about 45 to 55 instead of 145. With
  * `{ balls: true }` it also steps a pile of 1,100 balls, for scenes of thousands of balls (see
  * WarmUpOptions.balls). A second call for the same dimension does nothing (but run a pile not run
  * yet). Worlds' states are the same with and without it.
@@ -204,9 +218,10 @@ export function ballPile(dimensions: 2 | 3): PhysicsWorld {
   return world;
 }
 
-/** A pyramid of 36 boxes resting on a static ground (2D, the `pyramid` scene's layout and 8 solver substeps): it sleeps within REST_STEPS. */
+/** A pyramid of 36 boxes resting on a static ground (2D, the `pyramid` scene's layout and 8 solver substeps): it sleeps within REST_STEPS (its time to sleep REST_TIME_TO_SLEEP). */
 function restingPyramid(): PhysicsWorld {
   const world = createPhysicsWorld({ dimensions: 2, capacity: 64, gravity: [0, -10], solverSubsteps: 8 });
+  world.collision.sleep.timeToSleep = REST_TIME_TO_SLEEP;
   addBox(world, { position: [0, -0.5], halfExtents: [10, 0.5], static: true, friction: 0.6 });
   for (let row = 0; row < 8; row++) {
     const n = 8 - row;
@@ -264,7 +279,8 @@ function buildJoints2D(world: PhysicsWorld): void {
     addWeldJoint(world, { a: below, b: box, anchor: [8, 1 + 0.5 * k], breakForce: 300, breakTorque: 75 });
     below = box;
   }
-  addBody(world, { position: [8.4, 6], velocity: [0, -10], radius: 0.4, mass: 40 });
+  // Falling at 10 m/s from 0.6 m above the top box: it lands within the scene's first steps.
+  addBody(world, { position: [8.4, 3.5], velocity: [0, -10], radius: 0.4, mass: 40 });
   let previous = addBox(world, { position: [12, 8], halfExtents: [0.4, 0.1], static: true });
   for (let k = 0; k < 4; k++) {
     const link = addBox(world, { position: [12.8 + k * 0.8, 8], halfExtents: [0.4, 0.1], density: 1 });

@@ -52,7 +52,9 @@ function bitphysicsAdapter(name: string, threads: number): EngineAdapter {
       const sceneOptions = { ...(bench.sceneOptions?.(options) ?? {}), count: options.count, seed: options.seed };
       if (threads > 1) enableThreads();
       const worldOptions = definition.worldOptions(sceneOptions);
+      const warmStart = performance.now();
       if (options.warmUp === true) warmUp(worldOptions.dimensions ?? 2, { balls: PILE_SCENES.has(options.scene) });
+      const warmMs = performance.now() - warmStart;
       const w: PhysicsWorld = createPhysicsWorld({
         ...worldOptions,
         seed: options.seed,
@@ -66,7 +68,7 @@ function bitphysicsAdapter(name: string, threads: number): EngineAdapter {
         `bitphysics: dt ${fmtDt(w.dt)} s, substeps ${w.substeps}, solver substeps ${w.collision.settings.solverSubsteps}, ` +
           `iterations ${w.collision.settings.solverIterations}, integrator ${w.integrator}, ${w.collision.sleep.enabled ? `sleeping allowed (${w.collision.sleep.linearSpeed} m/s, ${w.collision.sleep.timeToSleep} s)` : 'no sleeping'}` +
           (threads > 1 ? `, threads ${threads}` : '') +
-          (options.warmUp === true ? ', warm-up scene run first (counted in setup ms)' : ''),
+          (options.warmUp === true ? `, warm-up scene run first: ${warmMs.toFixed(0)} ms (counted in setup ms)` : ''),
       ];
       return {
         engine: name,
