@@ -66,6 +66,7 @@ import {
   ROW_BZ,
 } from './manifold-layout-3d.js';
 import { restitutionImpulse, restitutionTarget } from './restitution.js';
+import { rigidPartner } from './rigid-partner.js';
 
 /** The 3D manifold rows' substep stages (solver/manifold-rows-3d.ts): warm start, the solve (normal rows with their sweeps, the friction patch and twist), and restitution after the substeps. */
 
@@ -264,9 +265,6 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
     const nx = H[h + HEAD_NX]!,
       ny = H[h + HEAD_NY]!,
       nz = H[h + HEAD_NZ]!;
-    const isRigid = ka === 0 || kb === 0;
-    const biasRate = isRigid ? rBias : sBias,
-      scaleBase = isRigid ? SN_SCALES + SN_RIGID : SN_SCALES;
     // Velocities of both bodies in locals for the manifold's rows (written back once at the end).
     let vax = sb[a + BS3_VX]!,
       vay = sb[a + BS3_VY]!,
@@ -282,6 +280,10 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
       wbz = sb[b + BS3_WZ]!;
     const mA = sb[a + BS3_INV_MASS]!,
       mB = sb[b + BS3_INV_MASS]!;
+    // A static, sleeping or kinematic partner (inverse mass 0): the stiffer softness (solver/rigid-partner.ts).
+    const isRigid = rigidPartner(mA, mB) === 1;
+    const biasRate = isRigid ? rBias : sBias,
+      scaleBase = isRigid ? SN_SCALES + SN_RIGID : SN_SCALES;
     // Displacement along n and rotation of each body so far this step.
     const dn =
       (sb[b + BS3_DX]! - sb[a + BS3_DX]!) * nx + (sb[b + BS3_DY]! - sb[a + BS3_DY]!) * ny + (sb[b + BS3_DZ]! - sb[a + BS3_DZ]!) * nz;
