@@ -577,8 +577,17 @@ function pushAlongNormal(
  * The 3D manifolds' restitution stage, by the one definition of solver/restitution.ts: a point that
  * carried an impulse and approached faster than its threshold at the start of the step bounces; its
  * accumulated normal impulse is moved toward the target v_n = -e v_n0 by `restitutionIterations`
- * sequential-impulse passes, kept >= 0. Uncapped: the 3D points keep no impulse total over the step,
- * the compression Poisson's cap needs. (Velocities written out in place.)
+ * sequential-impulse passes, kept >= 0. (Velocities written out in place.)
+ *
+ * Without Poisson's cap (solver/restitution.ts restitutionCap: a point's rebound at most e times that
+ * point's compression), which the ball rows (one point a row) and the 2D manifolds apply. Up to four
+ * points here share a face's load in whatever split the sequential passes reach: the support is
+ * statically indeterminate (every split with the same total and moment holds the body), so a cap per
+ * point would clip the rebound by an arbitrary split. Tried: a cube landing flat at 4.25 m/s with e = 0.5
+ * then rebounded at 0.33 of its impact speed and spun at 1.4 rad/s; uncapped it rebounds at 0.5 within
+ * 1e-5 without spin (test/physics/flat-bounce.test.ts). The 2D pair is solved as one 2 x 2 problem
+ * (the block), which fixes its split, so there the cap per point is sound. The same law for a 3D
+ * manifold would cap its whole rebound by e times its whole compression.
  * @category Collision
  */
 export function applyManifold3DRestitution(world: PhysicsWorld): void {
