@@ -69,7 +69,7 @@ export interface ContactBuffer {
   normalMass: Float64Array;
   /** Effective mass along the tangents, kg. */
   tangentMass: Float64Array;
-  /** 1 if body A has infinite mass (static world, kinematic): the contact uses the stiffer static softness. */
+  /** 1 if either body has infinite mass (inverse mass 0 in the solver: static, sleeping or kinematic; solver/rigid-partner.ts): the contact uses the stiffer softness. */
   rigidPartner: Uint8Array;
   /** Accumulated normal impulse of a solver substep, N s (>= 0). Warm-started from the previous step. */
   normalImpulse: Float64Array;

@@ -32,7 +32,7 @@ export const PK_FRICTION = 7;
 export const PK_NORMAL_IMPULSE = 8;
 /** The accumulated tangent impulse, N s. */
 export const PK_TANGENT_IMPULSE = 9;
-/** 1 if body A has infinite mass (the static world or a static or kinematic body), else 0. */
+/** 1 if either body has infinite mass (inverse mass 0 in the solver: static, sleeping or kinematic; solver/rigid-partner.ts), else 0. */
 export const PK_A_FIXED = 10;
 /** The largest normal impulse of a solve pass, N s (for restitution). */
 export const PK_MAX_NORMAL_IMPULSE = 11;

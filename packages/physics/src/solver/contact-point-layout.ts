@@ -9,7 +9,8 @@
  *
  * The contact softness table (SN_*, filled once a step by prepareContactSoftness,
  * solver/contact-point.ts): a normal row's mass and impulse scales at SN_SCALES + SN_RIGID rigid +
- * SN_SOFT_ROW soft (rigid: the row's partner has infinite mass; soft: the row overlaps in a biased pass),
+ * SN_SOFT_ROW soft (rigid: the row's partner has infinite mass, solver/rigid-partner.ts; soft: the row overlaps
+ * in a biased pass),
  * then the two bias rates.
  *
  * A module of numeric constants only, which every build folds into the code that reads it

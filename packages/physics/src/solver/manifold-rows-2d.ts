@@ -51,6 +51,7 @@ import {
   MR_STRIDE,
 } from './manifold-layout-2d.js';
 import { restitutionCap, restitutionImpulse, restitutionTarget } from './restitution.js';
+import { rigidPartner } from './rigid-partner.js';
 
 /**
  * The shape contacts' rows of the contact solver (solver/contact-solver.ts runs these calls next to the ball
@@ -286,9 +287,9 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean)
       tb = ib === 0 ? 0 : ex[ib * BX_STRIDE + BX_ROT_Z]! - base[ib]!;
     const nx = R[r + MR_NX]!,
       ny = R[r + MR_NY]!;
-    const rigidPartner = mA === 0 || mB === 0;
-    const biasRate = rigidPartner ? T[SN_RIGID_BIAS]! : T[SN_BIAS]!,
-      scales = rigidPartner ? SN_SCALES + SN_RIGID : SN_SCALES;
+    const rigid = rigidPartner(mA, mB) === 1;
+    const biasRate = rigid ? T[SN_RIGID_BIAS]! : T[SN_BIAS]!,
+      scales = rigid ? SN_SCALES + SN_RIGID : SN_SCALES;
     const two = R[r + MR_POINT_COUNT] === 2;
     const o1 = r + MR_POINT0,
       o2 = o1 + MP_STRIDE;

@@ -66,6 +66,7 @@ import {
   ROW_BZ,
 } from './manifold-layout-3d.js';
 import { restitutionImpulse, restitutionTarget } from './restitution.js';
+import { rigidPartner } from './rigid-partner.js';
 
 /** The 3D manifold rows' substep stages (solver/manifold-rows-3d.ts): warm start, the solve (normal rows with their sweeps, the friction patch and twist), and restitution after the substeps. */
 
@@ -264,9 +265,6 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
     const nx = H[h + HEAD_NX]!,
       ny = H[h + HEAD_NY]!,
       nz = H[h + HEAD_NZ]!;
-    const isRigid = ka === 0 || kb === 0;
-    const biasRate = isRigid ? rBias : sBias,
-      scaleBase = isRigid ? SN_SCALES + SN_RIGID : SN_SCALES;
     // Velocities of both bodies in locals for the manifold's rows (written back once at the end).
     let vax = sb[a + BS3_VX]!,
       vay = sb[a + BS3_VY]!,
@@ -282,6 +280,10 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
       wbz = sb[b + BS3_WZ]!;
     const mA = sb[a + BS3_INV_MASS]!,
       mB = sb[b + BS3_INV_MASS]!;
+    // A static, sleeping or kinematic partner (inverse mass 0): the stiffer softness (solver/rigid-partner.ts).
+    const isRigid = rigidPartner(mA, mB) === 1;
+    const biasRate = isRigid ? rBias : sBias,
+      scaleBase = isRigid ? SN_SCALES + SN_RIGID : SN_SCALES;
     // Displacement along n and rotation of each body so far this step.
     const dn =
       (sb[b + BS3_DX]! - sb[a + BS3_DX]!) * nx + (sb[b + BS3_DY]! - sb[a + BS3_DY]!) * ny + (sb[b + BS3_DZ]! - sb[a + BS3_DZ]!) * nz;
@@ -575,8 +577,20 @@ function pushAlongNormal(
  * The 3D manifolds' restitution stage, by the one definition of solver/restitution.ts: a point that
  * carried an impulse and approached faster than its threshold at the start of the step bounces; its
  * accumulated normal impulse is moved toward the target v_n = -e v_n0 by `restitutionIterations`
- * sequential-impulse passes, kept >= 0. Uncapped: the 3D points keep no impulse total over the step,
- * the compression Poisson's cap needs. (Velocities written out in place.)
+ * sequential-impulse passes, kept >= 0. (Velocities written out in place.)
+ *
+ * Without Poisson's cap (solver/restitution.ts restitutionCap: a point's rebound at most e times that
+ * point's compression), which the ball rows (one point a row) and the 2D manifolds apply. Up to four
+ * points here share a face's load in whatever split the sequential passes reach: the support is
+ * statically indeterminate (every split with the same total and moment holds the body), so a cap per
+ * point would clip the rebound by an arbitrary split. Tried: a cube landing flat at 4.25 m/s with e = 0.5
+ * then rebounded at 0.33 of its impact speed and spun at 1.4 rad/s; uncapped it rebounds at 0.5 within
+ * 1e-5 without spin (test/physics/flat-bounce.test.ts). The 2D pair is solved as one 2 x 2 problem
+ * (the block), which fixes its split, so there the cap per point is sound. The same law for a 3D
+ * manifold is a cap on its whole rebound, e times its whole compression; tried as a budget the points
+ * share within these sequential passes, it clipped the same drop too (0.37, 0.95 rad/s): the first
+ * point spends the budget on a rebound the later points' turns would have taken back. It needs the
+ * points solved together, as the 2D block.
  * @category Collision
  */
 export function applyManifold3DRestitution(world: PhysicsWorld): void {

@@ -23,6 +23,7 @@ import {
   BS3_WY,
   BS3_WZ,
 } from './body-state-layout.js';
+import type { rigidPartner } from './rigid-partner.js';
 import * as PREPARE from './slots/prepare-contacts.js';
 
 /**
@@ -42,7 +43,7 @@ export function prepareContactRows(
   _part: number,
   H: readonly KernelHelper[],
 ): number {
-  (H[13] as typeof prepareRowMasses)(A, P, lo, hi);
+  (H[13] as typeof prepareRowMasses)(A, P, lo, hi, H);
   (H[14] as typeof prepareRowWarmStart)(A, P, lo, hi);
   return 0;
 }
@@ -51,10 +52,11 @@ export function prepareContactRows(
  * prepareContactRows' first pass over rows lo .. hi - 1: effective masses, the tangent ((-ny, nx) in 2D;
  * in 3D t1 perpendicular to the normal, built from its two components away from the smallest, t2 = n x t1
  * recomputed where needed), combined material, stick or slip, the predicted approach; the step's
- * impulse sums zeroed. A and P as prepareContactRows'.
+ * impulse sums zeroed; whether each row is against an infinite-mass partner (solver/rigid-partner.ts, reached
+ * in `H`). A, P and H as prepareContactRows'.
  * @category Collision
  */
-export function prepareRowMasses(A: KernelArray[], P: Float64Array, lo: number, hi: number): void {
+export function prepareRowMasses(A: KernelArray[], P: Float64Array, lo: number, hi: number, H: readonly KernelHelper[]): void {
   const CA = A[PREPARE.A] as Int32Array,
     CB = A[PREPARE.B] as Int32Array,
     IA = A[PREPARE.IA] as Int32Array,
@@ -83,6 +85,8 @@ export function prepareRowMasses(A: KernelArray[], P: Float64Array, lo: number, 
   const TOT = A[PREPARE.TOTAL_NORMAL_IMPULSE] as Float64Array,
     IMP = A[PREPARE.IMPULSE] as Float64Array,
     MAXN = A[PREPARE.MAX_NORMAL_IMPULSE] as Float64Array;
+  // Whether a row is against an infinite-mass partner: the one rule of every row family (KERNEL_HELPERS 19).
+  const rigidOf = H[19] as typeof rigidPartner;
   const stick = P[PREPARE.STICK_SPEED]!,
     boxE = P[PREPARE.BOX_RESTITUTION]!,
     boxF = P[PREPARE.BOX_FRICTION]!,
@@ -113,7 +117,7 @@ export function prepareRowMasses(A: KernelArray[], P: Float64Array, lo: number, 
     NM[i] = k > 0 ? 1 / k : 0;
     const kt = k + iiA * ra * ra + iiB * rb * rb;
     TM[i] = kt > 0 ? 1 / kt : 0;
-    RP[i] = imA === 0 || imB === 0 ? 1 : 0;
+    RP[i] = rigidOf(imA, imB);
     const dvx = sb[ob + BS2_VX]! - sb[oa + BS2_VX]!,
       dvy = sb[ob + BS2_VY]! - sb[oa + BS2_VY]!;
     // The tangential speed at the contact point at the start of the step (gravity rewound): stick or

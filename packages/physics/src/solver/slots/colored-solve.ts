@@ -50,7 +50,7 @@ export const FRICTION_BOUND = 17;
 export const NORMAL_IMPULSE = 18;
 /** Accumulated tangent impulse, N s. */
 export const TANGENT_IMPULSE = 19;
-/** 1 if body A has infinite mass (Uint8). */
+/** 1 if either body has infinite mass (Uint8; solver/rigid-partner.ts). */
 export const RIGID_PARTNER = 20;
 /** Largest normal impulse of a pass, N s. */
 export const MAX_NORMAL_IMPULSE = 21;

@@ -41,7 +41,7 @@ export const SPAWN_STAMP = 14;
 export const NORMAL_MASS = 15;
 /** Tangent effective mass, kg (written). */
 export const TANGENT_MASS = 16;
-/** 1 if body A has infinite mass (Uint8, written). */
+/** 1 if either body has infinite mass (Uint8, written; solver/rigid-partner.ts). */
 export const RIGID_PARTNER = 17;
 /** Tangent x (written). */
 export const T1X = 18;
