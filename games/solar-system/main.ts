@@ -651,7 +651,7 @@ function endOfFlight(): void {
   const next = MISSIONS[(missionIndex + 1) % MISSIONS.length]!;
   doneNote =
     flight.state === 'arrived'
-      ? `${named('Enter', 'Next mission')}: ${next.target} · ${named('T', 'Try again')} to score more`
+      ? `${named('Enter', 'Next mission')}: ${next.target} · ${named('T: try again', 'Try again')} to score more`
       : missAdvice(flight, true);
   showCard(flight);
   updateStatus(true);
@@ -2205,7 +2205,7 @@ function hint(m: Mission): string {
     const b = burnAdvice;
     if (b.kind === 'coast') return 'On course for the ring: no burn needed (burns cost stars).';
     if (b.kind === 'empty') return 'No fuel left for burns: the probe coasts. Abort to try the launch again.';
-    if (b.kind === 'none') return 'No burn the fuel left allows brings it into the ring now. Abort to try the launch again.';
+    if (b.kind === 'none') return 'The fuel left cannot bring it into the ring now. Abort to try the launch again.';
     const n = b.presses;
     return `${named(`Press ${BURN_KEYS[b.direction]}`, `Tap ${BURN_NAMES[b.direction]}`)} ${times(n)} now (${(n * BURN_STEP).toFixed(2)} km/s ${BURN_WORDS[b.direction]}): then it arrives on day ${Math.round(b.forecast.end)}.`;
   }
