@@ -423,8 +423,10 @@ describe('3D rigid-body games in headless Chromium', () => {
       expect(slid.kind).toBe('wall');
       expect(Math.hypot(slid.ring![0]! - slid.at[0]!, slid.ring![1]! - slid.at[1]!)).toBeLessThan(0.1);
       expect(Math.hypot(slid.ring![0]! - wall.at[0]!, slid.ring![1]! - wall.at[1]!)).toBeLessThan(2.5);
-      // Once the ball is on its run (that swing counted: 2 of 5 used), a drag at another target is let
-      // go: no swing used, now or when the run ends, and the hint says to wait.
+      // Once the ball is on its run (that swing counted: 2 of 5 used), a drag at another target is
+      // kept as the next swing: the hint says so, it uses no swing while the run goes on, and it
+      // begins (its wind-up planned from wherever the ball is) the step the run is over, so the
+      // player aims again at once instead of waiting out the run.
       type Run = { controls: { moves: Array<{ run?: boolean }> } };
       const onRun = await g.page.evaluate(() => {
         const game = window.game as unknown as WB;
@@ -433,18 +435,29 @@ describe('3D rigid-body games in headless Chromium', () => {
         return moves()[0]?.run === true;
       });
       expect(onRun).toBe(true);
-      expect((await pressPiece('tower')).pressed).toBe('none');
+      expect((await pressPiece('tower')).pressed).toBe('swing');
       // The hint is written every 6th frame: waited for, not read after a fixed count of frames.
-      const refused = 'The ball is on its swing: wait till it is done, then aim again (no swing used)';
-      await g.waitFor((text) => document.querySelector('[data-hud="tap-hint"]')?.textContent === text, refused);
-      expect(await hint.textContent()).toBe(refused);
+      const queued = 'Next swing: the tower, as soon as this one has hit';
+      await g.waitFor((text) => document.querySelector('[data-hud="tap-hint"]')?.textContent === text, queued);
+      expect(await hint.textContent()).toBe(queued);
       const afterRun = await g.page.evaluate(() => {
-        const game = window.game as unknown as WB & Swings;
-        for (let i = 0; i < 900 && (game.handles() as unknown as Run).controls.moves.length > 0; i++) game.step();
-        for (let i = 0; i < 180; i++) game.step();
-        return game.swings().used;
+        const game = window.game as unknown as WB & Swings & { aimed(): { piece: number } };
+        const moves = () => (game.handles() as unknown as Run).controls.moves;
+        let steps = 0;
+        const used = game.swings().used;
+        for (; steps < 900 && moves()[0]?.run === true; steps++) game.step();
+        const aimed = game.aimed().piece;
+        return {
+          used,
+          winding: moves().length > 0 && moves()[0]!.run !== true,
+          kind: game.handles().pieces.find((p) => p.body === aimed)?.kind,
+          usedNow: game.swings().used,
+          steps,
+        };
       });
-      expect(afterRun).toBe(2);
+      // (A run at 4.8 m/s with its follow-through lasts under 3 s: 180 steps.)
+      expect(afterRun).toEqual({ used: 2, winding: true, kind: 'tower', usedNow: 2, steps: afterRun.steps });
+      expect(afterRun.steps).toBeLessThan(180);
       // At 1280 x 800 the left column's foot holds the site plan: no empty gap under the legend (it
       // was 230 px), and nothing pushed out of view.
       // A small resize (a status line wrapping onto a second line) keeps the view as it is: framed
