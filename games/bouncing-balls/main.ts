@@ -84,9 +84,12 @@ import {
 import { Graphics, Text } from 'pixi.js';
 import {
   addHoop,
+  BACKBOARD,
   BALL_POINTS,
   type BallKind,
   createRound,
+  FRONT_RIM_LENGTH,
+  HOOP_HALF_WIDTH,
   HOOP_RADIUS,
   type HoopRound,
   type HoopSpot,
@@ -948,6 +951,7 @@ const game = await startPixiGame({
     // On top of everything drawn since (confetti, the countdown): moved last when it is not.
     if (app.stage.children.at(-1) !== pause.container) app.stage.addChild(pause.container);
     pause.draw(shell.paused, app.screen.width, app.screen.height, pageLayout().touch());
+    if (pause.visible && endCard.container.visible) placePauseWords();
   },
 });
 const { shell, renderer, app } = game;
@@ -1092,21 +1096,22 @@ function local(event: PointerEvent): [number, number] {
 }
 
 /**
- * The pull, px, that throws at full speed (MAX_THROW_SPEED): 60 % of the canvas' shorter side, within
- * [230, 420] px. Long, so a few px of a shaky hand change a throw little: a basket's throws take
- * pulls of about 55 to 140 px on a phone (234 px full) and 120 to 250 px on a desktop (420 px), and
- * the window of pull lengths that still score is some 15 px wide (phone) and 24 px (desktop), of
- * sideways pull 9 and 16 px (medians of `node scripts/bouncing-balls-reach.mjs --pull 420,234`). At
- * 30 % of the shorter side (117 px on a phone, 210 px on a desktop) they would be 7 and 12 px, 4 and 8 px.
- * Not longer on a phone: a throw from 1.5 m over the floor of its box has some 170 px of screen
- * under it to pull into (at 75 %, 292 px, the steepest baskets would take up to 177 px).
- * The same for every press, wherever it begins, so a pull's power is a function of its length alone:
- * a px of pull is at most KNEE_SLOPE / fullPull of speed (0.28 % of the top speed at 420 px, a desktop's;
- * 0.5 % at its 230 px least, a phone's). Pointer
+ * The pull, m of the court as drawn, that throws at full speed (MAX_THROW_SPEED): 420 px on a
+ * 1280 x 800 desktop (56 px a metre). Long, so a few px of a shaky hand change a throw little.
+ */
+const FULL_PULL_METRES = 7.5;
+/**
+ * The pull, px, that throws at full speed (MAX_THROW_SPEED): FULL_PULL_METRES at the court's drawn
+ * scale (the camera's px per metre), so a pull as long as a ramp throws as hard on a phone as on a
+ * desktop: 420 px on a 1280 x 800 desktop, 268 px on a 390 x 844 phone (36 px a metre; a basket's
+ * throws there take pulls of some 60 to 160 px, inside the 170 px of screen under a throw from
+ * 1.5 m over the floor). Raw px made a phone's pull throw 14 % harder per metre of court
+ * than a desktop's (234 px, 60 % of its shorter side). The same for every press, wherever it begins
+ * (taken when the press begins), so a pull's power is a function of its length alone. Pointer
  * capture keeps the pull going past the canvas' and the window's edge.
  */
 function fullPull(): number {
-  return Math.min(420, Math.max(230, 0.6 * Math.min(canvas.clientWidth || innerWidth, canvas.clientHeight || innerHeight)));
+  return FULL_PULL_METRES * renderer.camera.pixelsPerMeter;
 }
 
 /** Whether the current press is a finger's (pointer type 'touch'). */
@@ -1164,6 +1169,29 @@ function currentThrow(): { x: number; y: number; vx: number; vy: number; radius:
 
 /** Where the current press's new basketball starts, m (startSpot of the press point): a pull throws it from there, a click drops it there. */
 let pressSpot: [number, number] = [0, 0];
+/** Where the current press began, m. */
+let pressAt: [number, number] = [0, 0];
+/** When a tap on the hoop was let go (performance.now() ms; its hint shows HOOP_TAP_SHOWN ms), or -Infinity. */
+let hoopTapAt = Number.NEGATIVE_INFINITY;
+/** How long the hint after a tap on the hoop shows, ms. */
+const HOOP_TAP_SHOWN = 2500;
+/** Reach, m, round the hoop's drawn parts within which a press counts as on it (a finger's width on a phone). */
+const HOOP_TAP_REACH = 0.3;
+/**
+ * Whether (x, y), m, is on the hoop as drawn: within HOOP_TAP_REACH of the box from the front rim's
+ * tip to the backboard, from the net's foot to the board's top.
+ */
+function onHoop(x: number, y: number): boolean {
+  const spot = hoopSpots(TALL)[round.spot]!;
+  const board = spot.x + spot.side * (HOOP_HALF_WIDTH + HOOP_RADIUS),
+    tip = spot.x - spot.side * (HOOP_HALF_WIDTH + HOOP_RADIUS + FRONT_RIM_LENGTH);
+  return (
+    x >= Math.min(board, tip) - HOOP_TAP_REACH &&
+    x <= Math.max(board, tip) + HOOP_TAP_REACH &&
+    y >= spot.y - NET.depth - HOOP_TAP_REACH &&
+    y <= spot.y + BACKBOARD.above + HOOP_TAP_REACH
+  );
+}
 
 /** How far a new basketball starts clear of a ramp or the hoop it was pressed on, m. */
 const START_CLEARANCE = 0.02;
@@ -1251,6 +1279,7 @@ canvas.addEventListener('pointerdown', (event) => {
   // the press does nothing, seen or heard.
   if (onBall === 0 && spot === null && !bodyUnder(wx, wy)) return;
   pressSpot = spot ?? [wx, wy];
+  pressAt = [wx, wy];
   pointerId = event.pointerId;
   canvas.setPointerCapture(event.pointerId);
   [startX, startY] = [px, py];
@@ -1336,8 +1365,12 @@ function release(event: PointerEvent, cancelled: boolean): void {
   const cancel = inCancelZone();
   pressBall = 0;
   if (cancel) return;
-  if (!dragged) shoot(pressSpot[0], pressSpot[1], 0, 0, false);
-  else if (ball !== 0 && handles.balls.includes(ball)) {
+  if (!dragged) {
+    // A tap on the hoop: the hoop is the goal, not a place to drop a ball (one dropped there fell
+    // into the net, dead): nothing drops, and the hint says how to score.
+    if (ball === 0 && onHoop(pressAt[0], pressAt[1])) hoopTapAt = performance.now();
+    else shoot(pressSpot[0], pressSpot[1], 0, 0, false);
+  } else if (ball !== 0 && handles.balls.includes(ball)) {
     // A buried ball with no room over it is not thrown (its pull said so: drawPointer).
     if (!throwBall(ball, t.vx, t.vy)) return;
     released(t);
@@ -2249,16 +2282,18 @@ function updateStatus(): void {
     ? `${touch ? 'Tap' : 'R or'} Play again for a new round`
     : performance.now() - missAt < 2500
       ? 'Missed: the streak is over'
-      : ruleHint === 'high'
-        ? 'Too high: throw from below the orange line to score'
-        : ruleHint === 'below'
-          ? `Up through the net does not count${touch ? '' : ': drop it in from above'}`
-          : round.phase === 'ready' && round.shots === 0
-            ? // One line on a phone too (a second line there moved the box down the moment it changed), so the phone's is shorter.
-              touch
-              ? 'Throw through the hoop from below the orange line'
-              : 'Press, drag back and let go to throw through the hoop from below the orange line'
-            : teach;
+      : performance.now() - hoopTapAt < HOOP_TAP_SHOWN
+        ? 'Throw into the hoop from below the orange line'
+        : ruleHint === 'high'
+          ? 'Too high: throw from below the orange line to score'
+          : ruleHint === 'below'
+            ? `Up through the net does not count${touch ? '' : ': drop it in from above'}`
+            : round.phase === 'ready' && round.shots === 0
+              ? // One line on a phone too (a second line there moved the box down the moment it changed), so the phone's is shorter.
+                touch
+                ? 'Throw through the hoop from below the orange line'
+                : 'Press, drag back and let go to throw through the hoop from below the orange line'
+              : teach;
   if (status.set({ goal, numbers, hint }, over)) setAction(over);
   // The last HURRY_SECONDS: the numbers line turns red.
   status.numbers.classList.toggle('bb-hurry', round.phase === 'playing' && round.timeLeft <= HURRY_SECONDS);
@@ -2330,6 +2365,22 @@ function drawCountdown(): void {
 
 const endCard = createResultCard(app.stage, { label: 'end-card', bigSize: 56 });
 
+/** Gap, CSS px, between the end card and the pause overlay's words moved off it. */
+const PAUSE_WORDS_GAP = 16;
+/**
+ * Moves the pause overlay's words (drawn in the middle of the view, where the end card stands) off
+ * the end card: under it if they fit above the view's foot, else over it, else left in the middle.
+ */
+function placePauseWords(): void {
+  const card = endCard.box,
+    words = pause.words;
+  const half = words.height / 2;
+  const below = card.y + card.height + PAUSE_WORDS_GAP + half;
+  const above = card.y - PAUSE_WORDS_GAP - half;
+  if (below + half <= app.screen.height) words.position.y = below;
+  else if (above - half >= 0) words.position.y = above;
+}
+
 /**
  * Shows the end card when time is up (`over`), centred in the box under the Play-again button: the
  * round's points, its baskets, longest streak and throws that went in, the best, and a tip for the
@@ -2386,8 +2437,16 @@ function drawEndCard(over: boolean): void {
 // ---- Test and console hooks on window.game ---------------------------------------------------
 
 shell.expose({
-  /** Whether the pause overlay (the dimmed play area with "Paused") shows, and its words. */
-  pauseOverlay: (): { visible: boolean; text: string } => ({ visible: pause.visible, text: pause.text }),
+  /** Whether the pause overlay (the dimmed play area with "Paused") shows, its words, and their box, CSS px [x, y, width, height]. */
+  pauseOverlay: (): { visible: boolean; text: string; words: number[] } => {
+    const b = pause.words.getBounds();
+    return { visible: pause.visible, text: pause.text, words: [b.x, b.y, b.width, b.height] };
+  },
+  /** The end card's box, CSS px [x, y, width, height], and whether it shows. */
+  endCard: (): { visible: boolean; box: number[] } => {
+    const b = endCard.box;
+    return { visible: endCard.container.visible, box: [b.x, b.y, b.width, b.height] };
+  },
   params,
   panel,
   /** The pointer's mouse-joint drag: `joint` (0 when nothing is held) and `body`. */

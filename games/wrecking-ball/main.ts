@@ -209,6 +209,11 @@ function createWorld(): PhysicsWorld {
 }
 
 /** One step: the physics, then the score. */
+/**
+ * The swing aimed while the ball was on its run, to begin when the run is over: its piece (0: none)
+ * and the request aimed (null: as a tap plans it).
+ */
+const next: { piece: number; request: SwingRequest | null } = { piece: 0, request: null };
 function gameStep(world: PhysicsWorld): void {
   const t0 = performance.now();
   // A held ball is held firmly: it does not turn in the hand, which keeps it on its chain (holdBall).
@@ -229,6 +234,7 @@ function gameStep(world: PhysicsWorld): void {
     3,
   );
   stirUp(world);
+  fireNext();
   stepMs = stepMs === 0 ? ms : stepMs + (ms - stepMs) / 30;
   if (ms > worstMs || ++worstAge > 60) {
     worstMs = ms;
@@ -751,6 +757,7 @@ shell.onWorldChange(() => {
   if (handles.level !== framedLevel) frameSite();
   aimed = 0;
   lit = 0;
+  next.piece = 0;
   runEndedAt = -1;
   hintUntil = -1;
   notice.until = -1;
@@ -1190,7 +1197,19 @@ goalMarker.rotation.x = -Math.PI / 2;
 goalMarker.visible = false;
 app.scene.add(goalMarker);
 // Over the piece a swing is aimed at: a bobbing arrow pointing down at it, seen from afar.
-const aimArrow = new Mesh(new ConeGeometry(0.5, 1.2, 16), new MeshBasicMaterial({ color: 0xffd166 }));
+// Drawn over everything, in a dark edge, as the aim arrow on the ground (see aimMaterial): a mast
+// or a taller structure in front of the target would hide it.
+const aimArrow = new Mesh(
+  new ConeGeometry(0.5, 1.2, 16),
+  new MeshBasicMaterial({ color: 0xffd166, depthTest: false, depthWrite: false, transparent: true }),
+);
+const aimArrowEdge = new Mesh(
+  new ConeGeometry(0.66, 1.4, 16),
+  new MeshBasicMaterial({ color: 0x14100a, depthTest: false, depthWrite: false, transparent: true, opacity: 0.85 }),
+);
+aimArrowEdge.renderOrder = 10;
+aimArrow.renderOrder = 11;
+aimArrow.add(aimArrowEdge);
 aimArrow.rotation.x = Math.PI;
 aimArrow.visible = false;
 app.scene.add(aimArrow);
@@ -1340,6 +1359,7 @@ window.addEventListener('keydown', (event) => {
   held.add(k);
   handles.controls.goal = null;
   handles.controls.moves = [];
+  next.piece = 0;
   aimed = 0;
   event.preventDefault();
 });
@@ -1452,6 +1472,7 @@ function pressAt(ndcX: number, ndcY: number): 'ball' | 'aim' | 'hook' | 'none' {
   }
   if (!onGround) return 'none';
   handles.controls.moves = [];
+  next.piece = 0;
   handles.controls.goal = [groundHit.x, groundHit.z];
   aimed = 0;
   hintUntil = shell.world.time + HINT_SHOWN;
@@ -1565,6 +1586,7 @@ function releaseAt(ndcX: number, ndcY: number): 'swing' | 'armed' | 'none' {
     // A tap on open ground with a piece armed: the hook goes there, as without one.
     aiming.armed = 0;
     handles.controls.moves = [];
+    next.piece = 0;
     handles.controls.goal = [aiming.gx, aiming.gz];
     aimed = 0;
     hintUntil = shell.world.time + HINT_SHOWN;
@@ -1580,14 +1602,22 @@ function releaseAt(ndcX: number, ndcY: number): 'swing' | 'armed' | 'none' {
   return swingAt(piece, request()) ? 'swing' : 'none';
 }
 // The arrow on the ground: from where the ball comes, to the piece; longer and redder the harder.
-// Drawn over everything (the mast or a structure in front of it hid it).
-const aimMaterial = new MeshBasicMaterial({ color: 0xffd166, depthTest: false, transparent: true, opacity: 0.9 });
+// Drawn over everything (the mast or a structure in front of it would hide it), in a bright fill
+// inside a dark edge, so it reads over brown dirt, red brick, the yellow mast and the sky alike.
+const aimMaterial = new MeshBasicMaterial({ color: 0xffd166, depthTest: false, depthWrite: false, transparent: true });
+const aimEdgeMaterial = new MeshBasicMaterial({ color: 0x14100a, depthTest: false, depthWrite: false, transparent: true, opacity: 0.85 });
 const aimShaft = new Mesh(new BoxGeometry(1, 0.04, 0.4), aimMaterial);
 const aimHead = new Mesh(new CircleGeometry(0.8, 3), aimMaterial);
-aimHead.rotation.x = -Math.PI / 2;
-aimShaft.renderOrder = aimHead.renderOrder = 10;
+/** How far the dark edge stands out round the arrow's fill, m. */
+const AIM_EDGE = 0.12;
+const aimShaftEdge = new Mesh(new BoxGeometry(1, 0.04, 0.4 + 2 * AIM_EDGE), aimEdgeMaterial);
+// A triangle's edge AIM_EDGE wide all round: its circumradius grows by twice that.
+const aimHeadEdge = new Mesh(new CircleGeometry(0.8 + 2 * AIM_EDGE, 3), aimEdgeMaterial);
+aimHead.rotation.x = aimHeadEdge.rotation.x = -Math.PI / 2;
+aimShaftEdge.renderOrder = aimHeadEdge.renderOrder = 10;
+aimShaft.renderOrder = aimHead.renderOrder = 11;
 const aimPreview = new Group();
-aimPreview.add(aimShaft, aimHead);
+aimPreview.add(aimShaftEdge, aimHeadEdge, aimShaft, aimHead);
 aimPreview.visible = false;
 app.scene.add(aimPreview);
 /** Where the aim arrow's tail is drawn, in normalised device coordinates (see drawAim). */
@@ -1598,7 +1628,7 @@ const ARROW_EDGE = 0.94;
 const ARROW_SHORTEST = 0.6;
 /** Places the aim arrow (shown while a press aims or a piece is armed). */
 function drawAim(): void {
-  const piece = aiming.piece || aiming.armed;
+  const piece = aiming.piece || aiming.armed || next.piece;
   aimPreview.visible = piece !== 0 && isAlive(shell.world, piece);
   if (!aimPreview.visible) return;
   const P = shell.world.components.Position;
@@ -1617,8 +1647,12 @@ function drawAim(): void {
   aimPreview.rotation.y = -aiming.direction;
   aimShaft.scale.x = length;
   aimShaft.position.x = -1.2 - length / 2;
+  aimShaftEdge.scale.x = length + AIM_EDGE;
+  aimShaftEdge.position.x = aimShaft.position.x - AIM_EDGE / 2;
   aimHead.position.x = -0.9;
-  aimMaterial.color.setHSL(0.13 * (1 - aiming.power), 1, 0.6);
+  // (The edge's triangle centred AIM_EDGE back of the fill's: its tip AIM_EDGE past the fill's.)
+  aimHeadEdge.position.x = -0.9 - AIM_EDGE;
+  aimMaterial.color.setHSL(0.13 * (1 - aiming.power), 1, 0.55);
 }
 /** The piece the last swing was aimed at (marked with a ring and an arrow while the swing runs), or 0. */
 let aimed = 0;
@@ -1737,9 +1771,26 @@ function onRun(): boolean {
  * Swings the ball at piece `piece`: the crane's moves, the marks on it, a chime; false (and a low
  * tone) when out of swings. A tap while a swing winds up re-aims that swing (the marks slide from
  * the old target to the new, the hint says so; no swing is used until the ball is let go into its
- * run); a tap while the ball is on its run is let go (false, a low tone, the hint says to wait):
- * it uses no swing.
+ * run); a tap while the ball is on its run is kept as the next swing (`next`, begun by `fireNext`
+ * when the run is over; the hint says so): it uses a swing only then.
  */
+/**
+ * Begins the saved next swing (`next`) once the ball's run is over (the crane has no moves left),
+ * from wherever the ball is swinging then (./scene aimAt plans from the ball's state). A target
+ * fallen meanwhile is let go. Called every step.
+ */
+function fireNext(): void {
+  if (next.piece === 0 || handles.controls.moves.length > 0) return;
+  const piece = next.piece;
+  const request = next.request;
+  next.piece = 0;
+  next.request = null;
+  if (!isAlive(shell.world, piece) || handles.pieces.find((p) => p.body === piece)?.fallen) {
+    say(`The next swing's target fell already: aim again (no swing used)`);
+    return;
+  }
+  swingAt(piece, request ?? undefined);
+}
 function swingAt(piece: number, aim?: SwingRequest): boolean {
   const running = onRun();
   const moves = handles.controls.moves;
@@ -1749,11 +1800,15 @@ function swingAt(piece: number, aim?: SwingRequest): boolean {
     return false;
   }
   if (running) {
-    // A swing on its run cannot be re-aimed, and a swing saved up for after it would be taken as
-    // this one's re-aim that then used another: the tap or drag is let go, and said so.
-    sound.chime(330, 0.12);
-    say(`The ball is on its swing: wait till it is done, then aim again (no swing used)`);
-    return false;
+    // A swing on its run cannot be re-aimed: the drag is kept as the next swing, planned from
+    // wherever the ball is once this run (hit and follow-through) is over (`fireNext`), so the
+    // player aims again at once instead of waiting for the run. It uses a swing when it is let go.
+    next.piece = piece;
+    next.request = aim ?? null;
+    light(piece);
+    sound.chime(587, 0.1);
+    say(`Next swing: ${pieceName(piece)}, as soon as this one has hit`);
+    return true;
   }
   const before = aimed;
   // A tap during a wind-up re-aims that swing.
@@ -1763,8 +1818,9 @@ function swingAt(piece: number, aim?: SwingRequest): boolean {
     dropMarks(P.x[before]!, P.z[before]!);
     say(`New target: ${pieceName(piece)} instead of ${pieceName(before)} (same swing)`);
   } else if (retargeted) say(`Still swinging at ${pieceName(piece)}`);
-  // A swing whose result was not counted yet (its run over, the dust settling) is counted now.
-  if (runEndedAt >= 0) countResult();
+  // A swing whose result was not counted yet (its run over, the dust settling; or a next swing
+  // begun the moment the run ended) is counted now.
+  if (runEndedAt >= 0 || (swing.pending && !retargeted)) countResult();
   aimAt(shell.world, handles, piece, aim);
   light(piece);
   aimed = piece;
@@ -2125,6 +2181,7 @@ plan.addEventListener('click', (event) => {
     releaseAt(0, 0);
   } else if (Math.hypot(x, z) <= RADIUS_RANGE[1]) {
     handles.controls.moves = [];
+    next.piece = 0;
     handles.controls.goal = [x, z];
     aimed = 0;
   }
@@ -2219,7 +2276,7 @@ function hintText(): string {
       return `${clearedBanner()}\nSwinging for fun: the result stands. ${touch ? 'Tap' : 'Press L or'} Next level ▶`;
     return clearedBanner();
   }
-  if (aiming.piece !== 0 && aiming.dragged && onRun()) return 'The ball is on its swing: wait till it is done, then aim again';
+  if (aiming.piece !== 0 && aiming.dragged && onRun()) return 'Let go to aim the next swing: it goes as soon as this one has hit';
   if (aiming.piece !== 0 && aiming.dragged && handles.controls.moves.length > 0 && aimed !== 0)
     return `Winding up… let go to re-aim this swing (no swing used): ${pullWords()}`;
   if (aiming.piece !== 0 && aiming.dragged)

@@ -694,6 +694,23 @@ describe('bouncing balls: the hoop game', () => {
     expect(card.texts.join(' ')).toMatch(/your first score to beat/);
     expect(card.texts.join(' ')).not.toMatch(/new best|best round yet/);
     expect(await status.textContent()).not.toMatch(/best!/);
+    // Paused over the end card, the pause overlay's words stand clear of the card (in the middle of
+    // the view they covered its lines).
+    await g.press('p');
+    await g.frames(2);
+    const paused = await g.page.evaluate(() => {
+      const game = window.game as unknown as {
+        pauseOverlay(): { visible: boolean; words: number[] };
+        endCard(): { visible: boolean; box: number[] };
+      };
+      return { words: game.pauseOverlay(), card: game.endCard() };
+    });
+    expect(paused.words.visible && paused.card.visible).toBe(true);
+    const [, wy, , wh] = paused.words.words as [number, number, number, number];
+    const [, cy, , ch] = paused.card.box as [number, number, number, number];
+    expect(wy >= cy + ch || wy + wh <= cy, `words ${wy}+${wh}, card ${cy}+${ch}`).toBe(true);
+    await g.press('p');
+    await g.frames(2);
     const again = g.page.getByRole('button', { name: 'Play again ▶' });
     // Over the top of the box (above 8 m of its 10), clear of the balls piled at its bottom.
     const button = (await again.boundingBox())!;
@@ -1341,6 +1358,32 @@ describe('bouncing balls: cancelling, full-power pulls and the end of a round mi
       expect(longer.power).toBe(Math.round((100 * slingSpeed(Math.hypot(dx, dy + 5), got[0]!.fullPull)) / 20));
       expect(longer.power - got[0]!.power).toBeGreaterThan(0);
       expect(longer.power - got[0]!.power).toBeLessThanOrEqual(2);
+      // The full pull is a length of the court as drawn, 7.5 m at the camera's px per metre (main.ts
+      // FULL_PULL_METRES), on a phone as on a desktop: a pull as long as a ramp throws as hard on both.
+      const ppm = await g.page.evaluate(
+        () => (window.game as unknown as { renderer: { camera: { pixelsPerMeter: number } } }).renderer.camera.pixelsPerMeter,
+      );
+      expect(got[0]!.fullPull / ppm).toBeCloseTo(7.5, 9);
+      // A tap (a click, or a finger's tap) on the hoop's rim drops no ball into its net (one did, dead,
+      // under the rim's line): the ball count stays and the hint says how to score.
+      const rim = await g.page.evaluate(() => {
+        const o = (window.game as unknown as { hoop(): { y: number; minX: number; maxX: number } }).hoop();
+        return [0.5 * (o.minX + o.maxX), o.y - 0.3];
+      });
+      const count = () => g.page.evaluate(() => (window.game as unknown as { ballIds(): number[] }).ballIds().length);
+      const n0 = await count();
+      const at = await g.worldToPage(rim[0]!, rim[1]!);
+      if (phone) {
+        const cdp = await g.page.context().newCDPSession(g.page);
+        await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: [{ x: at.x, y: at.y, id: 1 }] });
+        await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
+        await cdp.detach();
+      } else await g.page.mouse.click(at.x, at.y);
+      await g.waitFor(
+        (text) => document.querySelector('[data-hud="hoop"] [data-hud="hint"]')?.textContent === text,
+        'Throw into the hoop from below the orange line',
+      );
+      expect(await count()).toBe(n0);
       expect(g.errors).toEqual([]);
       await g.close();
     });
@@ -1659,9 +1702,14 @@ describe('bouncing balls: cancelling, full-power pulls and the end of a round mi
     const at = await g.worldToPage(right.x, right.y);
     const viewport = g.page.viewportSize()!;
     const slope = Math.tan((20 * Math.PI) / 180);
-    // The full pull (420 px or less) is the same wherever a press begins: the pull goes on past the
-    // window's right edge, as a held mouse button does (the room to the edge no longer shortens it).
-    const to = { x: at.x + 430, y: at.y + 430 * slope };
+    // The full pull (main.ts FULL_PULL_METRES, 7.5 m of the court at the camera's scale) is the same
+    // wherever a press begins: the pull, 10 px longer, goes on past the window's right edge, as a held
+    // mouse button does (the room to the edge no longer shortens it).
+    const ppm = await g.page.evaluate(
+      () => (window.game as unknown as { renderer: { camera: { pixelsPerMeter: number } } }).renderer.camera.pixelsPerMeter,
+    );
+    const across = (7.5 * ppm + 10) * Math.cos(Math.atan(slope));
+    const to = { x: at.x + across, y: at.y + across * slope };
     expect(viewport.width - 1 - at.x).toBeLessThan(105);
     expect(to.x).toBeGreaterThan(viewport.width);
     const v = await mouseThrow(g, right.id, at, to);

@@ -129,6 +129,77 @@ describe('3D rigid-body games in headless Chromium', () => {
     await g.close();
   });
 
+  it('wrecking-ball, phone 390 x 844, touch: a drag on a target while the ball is on its run is the next swing, begun when the run is over', async () => {
+    const g = await h.openGame('wrecking-ball', {
+      viewport: { width: 390, height: 844 },
+      touch: true,
+      query: { shadows: 0 },
+      readyTimeoutMs: 60_000,
+    });
+    type Moves = Array<{ run?: boolean }>;
+    type WB = Game3D & {
+      handles(): { pieces: { body: number; kind: string; fallen: boolean }[]; controls: { moves: Moves } };
+      swings(): { used: number };
+      aimed(): { piece: number };
+    };
+    await g.press('p');
+    /** The page point (CSS px) of the lowest standing piece of kind `kind`, as drawn. */
+    const pieceAt = (kind: string) =>
+      g.page.evaluate((kind) => {
+        const game = window.game as unknown as WB;
+        const P = game.world.components.Position;
+        const ps = game.handles().pieces.filter((p) => p.kind === kind && !p.fallen);
+        const low = ps.reduce((a, b) => (P.y[b.body]! < P.y[a.body]! ? b : a)).body;
+        const at = game.renderer.drawnPosition(low)!;
+        const s = game.app.camera.position.clone().set(at[0]!, at[1]!, at[2]!).project(game.app.camera);
+        const r = document.querySelector('canvas')!.getBoundingClientRect();
+        return { x: r.left + ((s.x + 1) / 2) * r.width, y: r.top + ((1 - s.y) / 2) * r.height };
+      }, kind);
+    /** A finger pulled 60 px down from (x, y) and lifted: a drag back from a target, as a player aims. */
+    const pull = async ({ x, y }: { x: number; y: number }) => {
+      const cdp = await g.page.context().newCDPSession(g.page);
+      const pt = (px: number, py: number) => [{ x: px, y: py, id: 1 }];
+      await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: pt(x, y) });
+      for (let k = 1; k <= 4; k++)
+        await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: pt(x + 5 * k, y + 15 * k) });
+      await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
+      await cdp.detach();
+    };
+    await pull(await pieceAt('tower'));
+    expect(await g.page.evaluate(() => (window.game as unknown as WB).handles().controls.moves.length)).toBeGreaterThan(0);
+    // Stepped in the page (paused) to the run: the first swing is used.
+    const run = await g.page.evaluate(() => {
+      const game = window.game as unknown as WB;
+      const moves = () => game.handles().controls.moves;
+      for (let i = 0; i < 900 && moves()[0]?.run !== true; i++) game.step();
+      return { on: moves()[0]?.run === true, used: game.swings().used };
+    });
+    expect(run).toEqual({ on: true, used: 1 });
+    await pull(await pieceAt('wall'));
+    const queued = 'Next swing: the wall, as soon as this one has hit';
+    await g.waitFor((text) => document.querySelector('[data-hud="tap-hint"]')?.textContent === text, queued);
+    const after = await g.page.evaluate(() => {
+      const game = window.game as unknown as WB;
+      const moves = () => game.handles().controls.moves;
+      const used = game.swings().used;
+      let steps = 0;
+      for (; steps < 900 && moves()[0]?.run === true; steps++) game.step();
+      const aimed = game.aimed().piece;
+      return {
+        used,
+        winding: moves().length > 0 && moves()[0]!.run !== true,
+        kind: game.handles().pieces.find((p) => p.body === aimed)?.kind,
+        steps,
+      };
+    });
+    // No swing used while queued; the next swing at the wall winds up the step the run is over
+    // (a run and its follow-through last under 3 s, 180 steps).
+    expect(after).toEqual({ used: 1, winding: true, kind: 'wall', steps: after.steps });
+    expect(after.steps).toBeLessThan(180);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
   describe('wrecking-ball, one page (?shadows=0) for the slew and mast cases', () => {
     const wreckingBall = sharedPage(() => h, 'wrecking-ball', { query: { shadows: 0 }, readyTimeoutMs: 60_000 }, fresh);
 
@@ -423,8 +494,10 @@ describe('3D rigid-body games in headless Chromium', () => {
       expect(slid.kind).toBe('wall');
       expect(Math.hypot(slid.ring![0]! - slid.at[0]!, slid.ring![1]! - slid.at[1]!)).toBeLessThan(0.1);
       expect(Math.hypot(slid.ring![0]! - wall.at[0]!, slid.ring![1]! - wall.at[1]!)).toBeLessThan(2.5);
-      // Once the ball is on its run (that swing counted: 2 of 5 used), a drag at another target is let
-      // go: no swing used, now or when the run ends, and the hint says to wait.
+      // Once the ball is on its run (that swing counted: 2 of 5 used), a drag at another target is
+      // kept as the next swing: the hint says so, it uses no swing while the run goes on, and it
+      // begins (its wind-up planned from wherever the ball is) the step the run is over, so the
+      // player aims again at once instead of waiting out the run.
       type Run = { controls: { moves: Array<{ run?: boolean }> } };
       const onRun = await g.page.evaluate(() => {
         const game = window.game as unknown as WB;
@@ -433,18 +506,29 @@ describe('3D rigid-body games in headless Chromium', () => {
         return moves()[0]?.run === true;
       });
       expect(onRun).toBe(true);
-      expect((await pressPiece('tower')).pressed).toBe('none');
+      expect((await pressPiece('tower')).pressed).toBe('swing');
       // The hint is written every 6th frame: waited for, not read after a fixed count of frames.
-      const refused = 'The ball is on its swing: wait till it is done, then aim again (no swing used)';
-      await g.waitFor((text) => document.querySelector('[data-hud="tap-hint"]')?.textContent === text, refused);
-      expect(await hint.textContent()).toBe(refused);
+      const queued = 'Next swing: the tower, as soon as this one has hit';
+      await g.waitFor((text) => document.querySelector('[data-hud="tap-hint"]')?.textContent === text, queued);
+      expect(await hint.textContent()).toBe(queued);
       const afterRun = await g.page.evaluate(() => {
-        const game = window.game as unknown as WB & Swings;
-        for (let i = 0; i < 900 && (game.handles() as unknown as Run).controls.moves.length > 0; i++) game.step();
-        for (let i = 0; i < 180; i++) game.step();
-        return game.swings().used;
+        const game = window.game as unknown as WB & Swings & { aimed(): { piece: number } };
+        const moves = () => (game.handles() as unknown as Run).controls.moves;
+        let steps = 0;
+        const used = game.swings().used;
+        for (; steps < 900 && moves()[0]?.run === true; steps++) game.step();
+        const aimed = game.aimed().piece;
+        return {
+          used,
+          winding: moves().length > 0 && moves()[0]!.run !== true,
+          kind: game.handles().pieces.find((p) => p.body === aimed)?.kind,
+          usedNow: game.swings().used,
+          steps,
+        };
       });
-      expect(afterRun).toBe(2);
+      // (A run at 4.8 m/s with its follow-through lasts under 3 s: 180 steps.)
+      expect(afterRun).toEqual({ used: 2, winding: true, kind: 'tower', usedNow: 2, steps: afterRun.steps });
+      expect(afterRun.steps).toBeLessThan(180);
       // At 1280 x 800 the left column's foot holds the site plan: no empty gap under the legend (it
       // was 230 px), and nothing pushed out of view.
       // A small resize (a status line wrapping onto a second line) keeps the view as it is: framed
