@@ -64,6 +64,12 @@ export const ROOM_HALF_WIDTH = 2.7;
 export function roomHalfWidth(level: Level): number {
   return level.room ?? ROOM_HALF_WIDTH;
 }
+/** Restitution of the room's side walls. */
+export const WALL_RESTITUTION = 0.3;
+/** Restitution of the ball. */
+export const BALL_RESTITUTION = 0.25;
+/** Restitution of the ball's contact with a side wall: the larger of the two (the engine's rule). */
+export const SIDE_RESTITUTION = Math.max(WALL_RESTITUTION, BALL_RESTITUTION);
 /** How close the ball's centre must come to a star to catch it, m. */
 export const STAR_REACH = BALL_RADIUS + 0.22;
 
@@ -238,7 +244,7 @@ export const WIDE_LEVELS: readonly Level[] = Object.freeze([
     basketDepth: 0.7,
     stars: [
       [1.75, 5.0],
-      [2.05, 4.55],
+      [2.15, 4.35],
       [2.4, 3.4],
     ],
     blocks: [{ at: [-0.3, 1.2], half: [0.12, 1.2] }],
@@ -296,11 +302,13 @@ export const WIDE_LEVELS: readonly Level[] = Object.freeze([
 /**
  * The flight of a ball let go now: its centre's path from (x, y) at velocity (vx, vy) (m, m/s) under
  * gravity `g` (m/s^2, downward, >= 0) and linear drag of rate `c` = k / m (1/s, >= 0), sampled every
- * `dt` s (> 0) until it would touch the floor, the room's side walls, a block or the basket (its
- * walls, rim or floor: a ball that reaches the opening ends there), or after `maxTime` s. The exact
- * solution of m dv/dt = -m g y^ - k v (Ramtal and Dobre ch. 7, linear drag):
- * x(t) = x + vx (1 - e^(-c t)) / c, y(t) = y + (vy + g / c)(1 - e^(-c t)) / c - g t / c,
- * which is the drag-free parabola x + vx t, y + vy t - g t^2 / 2 as c -> 0 (used for c < 1e-9).
+ * `dt` s (> 0) until it would touch the floor, a block or the basket (its walls, rim or floor: a ball
+ * that reaches the opening ends there), or after `maxTime` s. The exact solution of
+ * m dv/dt = -m g y^ - k v (Ramtal and Dobre ch. 7, linear drag), from a start (x0, y0, u, w) s ago:
+ * x = x0 + u (1 - e^(-c s)) / c, y = y0 + (w + g / c)(1 - e^(-c s)) / c - g s / c,
+ * the drag-free parabola x0 + u s, y0 + w s - g s^2 / 2 as c -> 0 (used for c < 1e-9). At the room's
+ * side walls it bounces (up to twice): the across-speed reversed and scaled by SIDE_RESTITUTION (the
+ * contact's restitution, the larger of the wall's and the ball's), the path going on from there.
  * Writes x, y pairs into `out` (cleared first; the start point included). @returns whether the path
  * ends in the basket's opening (its centre over the basket's floor, between its walls).
  * @throws RangeError (naming predictFlight) on a negative or non-finite g or c, or dt not > 0.
@@ -326,15 +334,38 @@ export function predictFlight(
     room = roomHalfWidth(level);
   const [bx, by] = level.basket,
     half = level.basketWidth / 2;
+  // The flight's start: place, velocity and time (moved on at each bounce off a side wall).
+  let x0 = x,
+    y0 = y,
+    u = vx,
+    w = vy,
+    t0 = 0,
+    bounces = 0;
   for (let t = dt; t <= maxTime + 1e-9; t += dt) {
-    let px: number, py: number;
+    const s = t - t0;
+    let px: number, py: number, pvx: number, pvy: number;
     if (c < 1e-9) {
-      px = x + vx * t;
-      py = y + vy * t - 0.5 * g * t * t;
+      px = x0 + u * s;
+      py = y0 + w * s - 0.5 * g * s * s;
+      pvx = u;
+      pvy = w - g * s;
     } else {
-      const e = (1 - Math.exp(-c * t)) / c;
-      px = x + vx * e;
-      py = y + (vy + g / c) * e - (g * t) / c;
+      const decay = Math.exp(-c * s),
+        e = (1 - decay) / c;
+      px = x0 + u * e;
+      py = y0 + (w + g / c) * e - (g * s) / c;
+      pvx = u * decay;
+      pvy = (w + g / c) * decay - g / c;
+    }
+    if (Math.abs(px) > room - r && bounces < 2 && py >= r) {
+      // Off the side wall: on from the wall's face, the across-speed reversed and damped.
+      px = Math.sign(px) * (room - r);
+      x0 = px;
+      y0 = py;
+      u = -SIDE_RESTITUTION * pvx;
+      w = pvy;
+      t0 = t;
+      bounces++;
     }
     // The basket's opening: between its walls, below a ball resting on its rim.
     const opening = Math.abs(px - bx) < half && py < by + level.basketDepth + r && py > by;
@@ -408,7 +439,7 @@ export function createRopeScene(index: number, p: RopeSceneParams, levels: reado
   // The room's side walls: their inner faces at x = -room and +room.
   const room = roomHalfWidth(level);
   for (const side of [-1, 1])
-    addBox(world, { position: [side * (room + 1), 10], halfExtents: [1, 10], static: true, friction: 0.3, restitution: 0.3 });
+    addBox(world, { position: [side * (room + 1), 10], halfExtents: [1, 10], static: true, friction: 0.3, restitution: WALL_RESTITUTION });
   const [bx, by] = level.basket,
     half = level.basketWidth / 2;
   // The basket: a floor and two walls, static, of soft wicker (little bounce).
@@ -427,7 +458,7 @@ export function createRopeScene(index: number, p: RopeSceneParams, levels: reado
     position: [x, y],
     mass: p.ballMass,
     radius: BALL_RADIUS,
-    restitution: 0.25,
+    restitution: BALL_RESTITUTION,
     friction: 0.5,
     linearDrag: BALL_DRAG,
   });

@@ -243,7 +243,7 @@ describe('lab-rope levels', () => {
     });
   });
 
-  it('predictFlight follows the freed ball: within 6 cm of the engine for 0.6 s, and says whether a throw lands in the basket', () => {
+  it('predictFlight follows the freed ball: within 6 cm of the engine for 0.6 s, and says whether a throw (off a side wall too) lands in the basket', () => {
     // Wide level 2 after its left rope is cut: the right rope cut at 1.8 s throws the ball into the
     // basket (won, as above), at 1.2 s short of it (lost).
     for (const [t, inBasket] of [
@@ -277,6 +277,21 @@ describe('lab-rope levels', () => {
       }
       expect(lands, `a cut at ${t} s`).toBe(inBasket);
       expect(g.outcome, `a cut at ${t} s`).toBe(inBasket ? 'won' : 'lost');
+    }
+    // Off a side wall: the upright level 1 cut 1.2 s in throws the ball at the right wall, and it
+    // drops off it into the basket (won); 2.3 s in, on the way back, to the left of it (lost).
+    for (const [t, inBasket] of [
+      [1.2, true],
+      [2.3, false],
+    ] as const) {
+      const s = createRopeScene(0, DEFAULTS, LEVELS);
+      const e = slotOf(s.ball);
+      while (s.world.time < t) step(s.world);
+      const V = s.world.components.Velocity,
+        P = s.world.components.Position;
+      const lands = predictFlight(s.level, P.x[e]!, P.y[e]!, V.x[e]!, V.y[e]!, 9.81, BALL_DRAG / BALL_MASS, []);
+      expect(lands, `upright level 1, a cut at ${t} s`).toBe(inBasket);
+      expect(play(0, [[t, 0]]).outcome, `upright level 1, a cut at ${t} s`).toBe(inBasket ? 'won' : 'lost');
     }
     expect(() => predictFlight(WIDE_LEVELS[0]!, 0, 0, 0, 0, -1, 0, [])).toThrow(/predictFlight: g/);
   });
