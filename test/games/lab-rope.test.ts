@@ -123,7 +123,7 @@ describe('lab-rope levels', () => {
       ],
       stars: 3,
     },
-    // 5: a push of 5 m/s, then a cut at 3.6-4.2 s (3 stars 3.85-4.1 s); without a push the ball only drops short of the basket.
+    // 5: a push of 5 m/s, then a cut at 3.55-4.3 s (3 stars 3.85-4.1 s); without a push the ball only drops short of the basket.
     { level: 4, push: 5, win: [[[3.9, 0]], [[4.05, 0]]], lose: [[1, 0]], losePush: 0, stars: 3 },
   ];
   for (const c of cases)
