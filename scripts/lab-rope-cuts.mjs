@@ -6,7 +6,8 @@
 // (0-3), '.' lost, '?' undecided after 14 s; then the windows won at the middle place (and their
 // width in all, each time won counting its step), the share of
 // times at which the three places agree on win or loss, and the times won or lost unlike both their
-// neighbours (a lottery for the player). Takes a minute or two a level.
+// neighbours (a lottery for the player); last, each level's window width in one table. Takes a
+// minute or two a level.
 import { importSource } from './build.mjs';
 
 const rope = await importSource(
@@ -78,6 +79,8 @@ function play(index, plan, t, place) {
   return g.outcome === 'won' ? String(g.stars()) : g.outcome === 'lost' ? '.' : '?';
 }
 
+/** Per level measured: its number, the windows won at the middle place and their width in all, s. */
+const summary = [];
 for (const n of levels.length ? levels : [1, 2, 3, 4, 5]) {
   const plan = PLANS[n - 1];
   const [from, to, dt] = plan.times;
@@ -104,7 +107,11 @@ for (const n of levels.length ? levels : [1, 2, 3, 4, 5]) {
   const agree = times.filter((_, i) => new Set(rows.map((r) => won(r[i]))).size === 1).length;
   let lone = 0;
   for (const r of rows) for (let i = 1; i + 1 < r.length; i++) if (won(r[i]) !== won(r[i - 1]) && won(r[i]) !== won(r[i + 1])) lone++;
+  summary.push({ n, windows, width });
   console.log(
     `  won (middle place) ${windows.join(', ') || 'never'} (${width.toFixed(2)} s in all); places agree at ${agree} of ${times.length} times (${Math.round((100 * agree) / times.length)} %); lone outcomes ${lone}`,
   );
 }
+console.log(`${wide ? 'wide' : 'upright'} room, the last cut's window at the middle place:`);
+for (const { n, windows, width } of summary)
+  console.log(`  level ${n} (${set[n - 1].name}): ${width.toFixed(2)} s (${windows.join(', ') || 'never'})`);

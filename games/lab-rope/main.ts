@@ -32,7 +32,18 @@ import { addMouseJoint, isAlive, type PhysicsWorld, step as physicsStep, removeJ
 import type { WorldRect } from '@bitphysics/render-pixi';
 import { Container, Graphics, Text } from 'pixi.js';
 import { cutRopes } from './cut';
-import { BALL_RADIUS, createRopeScene, DEFAULTS, LEVELS, type Level, RopeGame, type RopeScene, WIDE_LEVELS } from './scene';
+import {
+  BALL_DRAG,
+  BALL_RADIUS,
+  createRopeScene,
+  DEFAULTS,
+  LEVELS,
+  type Level,
+  predictFlight,
+  RopeGame,
+  type RopeScene,
+  WIDE_LEVELS,
+} from './scene';
 import { RopeView } from './view';
 
 const USAGE = `Accepted: level 1-${LEVELS.length}; links 2-40 (a metre); gravity 0-30 m/s²; room auto, wide or upright.`;
@@ -72,6 +83,21 @@ const params = {
 
 /** Best stars won on each level (-1: not cleared yet). */
 const best = LEVELS.map(() => -1);
+/** Tries missed on each level in this visit. */
+const misses = LEVELS.map(() => 0);
+/**
+ * Whether the flight hint shows: a faint dotted path of where the ball would fly if the last rope
+ * holding it were cut now (scene.ts predictFlight), so a player sees the timing instead of guessing
+ * it. On the first level from the start; on the others once the player has missed there (a level's
+ * first try is theirs to read alone). Shown only while exactly one rope holds the ball: with two, a
+ * cut does not let it fly.
+ */
+function flightHintOn(): boolean {
+  return game.outcome === 'playing' && game.holding() === 1 && (params.level === 1 || misses[params.level - 1]! > 0);
+}
+/** The flight hint's path as last drawn (x, y pairs, m; empty while hidden), and whether it ends in the basket. */
+const flight: number[] = [];
+let flightInBasket = false;
 let scene: RopeScene;
 let game: RopeGame;
 let cuts = 0;
@@ -138,6 +164,7 @@ function labStep(world: PhysicsWorld): void {
   }
   if (before === 'playing' && game.outcome === 'lost') {
     lostAt = performance.now() / 1000;
+    misses[params.level - 1]!++;
     sound.impact(2, 'soft', { threshold: 0.1, loud: 10 });
     // A falling two-note "no".
     sound.chime(392, 0.22);
@@ -546,6 +573,7 @@ function draw(alpha: number, world: PhysicsWorld): void {
       .lineTo(b.x, b.y)
       .stroke({ width: 2.5, color: 0xffffff, alpha: 0.9 * fade, cap: 'round' });
   }
+  drawFlight(world, alpha);
   // The push: a band from the ball to the pointer.
   if (push && isAlive(world, push)) {
     const e = slotOf(scene.ball);
@@ -571,6 +599,43 @@ function draw(alpha: number, world: PhysicsWorld): void {
   updateStatus();
   playSnaps();
   showReadout(world);
+}
+
+/**
+ * The flight hint (see flightHintOn): dots along predictFlight's path from the ball as drawn, fading
+ * along the way, every 0.08 s of flight; a small ring where it ends.
+ */
+function drawFlight(world: PhysicsWorld, alpha: number): void {
+  flight.length = 0;
+  flightInBasket = false;
+  if (!flightHintOn()) return;
+  const cam = renderer.camera;
+  const e = slotOf(scene.ball),
+    P = world.components.Position,
+    O = world.components.PreviousPosition,
+    V = world.components.Velocity;
+  const c = BALL_DRAG / world.components.Mass.value[e]!;
+  flightInBasket = predictFlight(
+    scene.level,
+    O.x[e]! + (P.x[e]! - O.x[e]!) * alpha,
+    O.y[e]! + (P.y[e]! - O.y[e]!) * alpha,
+    V.x[e]!,
+    V.y[e]!,
+    -world.gravity[1]!,
+    c,
+    flight,
+    0.04,
+  );
+  const n = flight.length / 2;
+  const dot = Math.max(2, cam.toScreenLength(0.045));
+  for (let i = 2; i < n; i += 2) {
+    const a = 0.5 * (1 - (0.6 * i) / n);
+    overlay.circle(cam.toScreenX(flight[2 * i]!), cam.toScreenY(flight[2 * i + 1]!), dot).fill({ color: 0xffffff, alpha: a });
+  }
+  if (n > 1)
+    overlay
+      .circle(cam.toScreenX(flight[2 * n - 2]!), cam.toScreenY(flight[2 * n - 1]!), cam.toScreenLength(BALL_RADIUS))
+      .stroke({ width: 2, color: 0xffffff, alpha: 0.3 });
 }
 
 /** Heights the banner may stand at, m, in order of preference: mid-scene first. */
@@ -758,6 +823,13 @@ shell.expose({
   /** The level's basket: centre of its floor (x, y, m) and inner width and wall height, m. */
   basket: () => ({ at: [...scene.level.basket], width: scene.level.basketWidth, depth: scene.level.basketDepth }),
   best: () => [...best],
+  /** Tries missed on each level in this visit. */
+  misses: () => [...misses],
+  /**
+   * The flight hint as last drawn: its path (x, y pairs, m; empty while hidden) and whether it ends
+   * in the basket's opening.
+   */
+  flight: () => ({ path: [...flight], inBasket: flightInBasket }),
   /**
    * The banner over the scene: its text ('' while hidden), box (x, y, width, height, px) and the star
    * row under it ([gold, of]; [0, 0] while hidden).

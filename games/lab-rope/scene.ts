@@ -54,6 +54,8 @@ export interface Level {
 export const BALL_RADIUS = 0.28;
 /** Mass of the ball, kg. */
 export const BALL_MASS = 1;
+/** The ball's linear drag coefficient k, N s/m (F = -k v, physics' linearDrag). */
+export const BALL_DRAG = 0.02;
 /** Thickness of the basket's walls and floor, m. */
 export const WALL = 0.1;
 /** Half the room's width of LEVELS, m (`Level.room`): its side walls' inner faces are this far from x = 0. */
@@ -62,6 +64,12 @@ export const ROOM_HALF_WIDTH = 2.7;
 export function roomHalfWidth(level: Level): number {
   return level.room ?? ROOM_HALF_WIDTH;
 }
+/** Restitution of the room's side walls. */
+export const WALL_RESTITUTION = 0.3;
+/** Restitution of the ball. */
+export const BALL_RESTITUTION = 0.25;
+/** Restitution of the ball's contact with a side wall: the larger of the two (the engine's rule). */
+export const SIDE_RESTITUTION = Math.max(WALL_RESTITUTION, BALL_RESTITUTION);
 /** How close the ball's centre must come to a star to catch it, m. */
 export const STAR_REACH = BALL_RADIUS + 0.22;
 
@@ -148,15 +156,17 @@ export const LEVELS: readonly Level[] = Object.freeze([
     hint: 'Drag the ball to push it into a swing, then cut.',
     anchors: [[-0.6, 8.6]],
     ball: [-0.6, 5.8],
-    basket: [2.1, 2.6],
-    basketWidth: 1,
+    // Pushed at 5 m/s, a cut as the ball swings back up to the right lobs it onto the raised basket,
+    // which reaches the right wall (won 3.55-4.3 s, 3 stars 3.85-4.1 s; scripts/lab-rope-cuts.mjs 5).
+    basket: [2.05, 2.6],
+    basketWidth: 1.2,
     basketDepth: 0.6,
     stars: [
       [0.1, 5.75],
       [1.2, 6.9],
       [2.1, 4.6],
     ],
-    blocks: [{ at: [2.1, 1.2], half: [0.55, 1.3] }],
+    blocks: [{ at: [2.05, 1.2], half: [0.65, 1.3] }],
     view: VIEW,
   },
 ]);
@@ -206,15 +216,17 @@ export const WIDE_LEVELS: readonly Level[] = Object.freeze([
       [0.6, 6.3],
     ],
     ball: [-1.6, 4.5],
-    // The left rope first (its swing on the right rope takes the first star), the right one 1.1-1.4 s
-    // later; the other way round never wins.
-    basket: [4.3, 0],
-    basketWidth: 1.1,
+    // The left rope first (its swing on the right rope takes the first star), then the right one as
+    // the ball swings up to the right: a 1.5 m basket under the throws of that upswing and its top
+    // (a cut 0.5 s in, then the right rope 1.45-2.4 s in wins; 3 stars 1.6-2.05 s; scripts/
+    // lab-rope-cuts.mjs --wide 2). The other way round never wins.
+    basket: [3.45, 0],
+    basketWidth: 1.5,
     basketDepth: 0.75,
     stars: [
       [0.6, 2.75],
-      [3.01, 2.72],
-      [3.61, 1.71],
+      [3.0, 3.15],
+      [3.55, 2.0],
     ],
     view: WIDE_VIEW,
     room: WIDE_ROOM_HALF_WIDTH,
@@ -222,19 +234,22 @@ export const WIDE_LEVELS: readonly Level[] = Object.freeze([
   {
     name: 'Over the wall',
     hint: LEVELS[2]!.hint,
-    anchors: [[-2.0, 6.3]],
-    ball: [-4.8, 5.6],
-    // On the upswing, over the 3 m wall (won 1.3-1.58 s, 3 stars from 1.42 s: the first star just
-    // over the throw's top).
-    basket: [4.3, 0],
-    basketWidth: 1.1,
+    anchors: [[-1.6, 6.3]],
+    ball: [-4.4, 5.6],
+    // The swing carries the ball over a 2.4 m wall to the right end of its swing; a cut as it rises
+    // past the wall throws it on, one at the top drops it, both into the wide basket behind the wall
+    // (won 1.7-2.75 s; scripts/lab-rope-cuts.mjs --wide 3). A cut before the ball is over the wall
+    // strikes it or falls short. The three stars hang along the one high throw, cut just as the
+    // ball rises past the wall (3 stars 1.7-1.79 s).
+    basket: [1.7, 0],
+    basketWidth: 3.0,
     basketDepth: 0.7,
     stars: [
-      [1.35, 4.3],
-      [2.92, 3.34],
-      [3.9, 2.06],
+      [1.75, 5.0],
+      [2.15, 4.35],
+      [2.4, 3.4],
     ],
-    blocks: [{ at: [1.2, 1.5], half: [0.12, 1.5] }],
+    blocks: [{ at: [-0.3, 1.2], half: [0.12, 1.2] }],
     view: WIDE_VIEW,
     room: WIDE_ROOM_HALF_WIDTH,
   },
@@ -247,16 +262,18 @@ export const WIDE_LEVELS: readonly Level[] = Object.freeze([
       [3.6, 6.3],
     ],
     ball: [0.6, 4.7],
-    // The right and middle ropes (either first), then the left one as the ball swings back from
-    // the left wall (won 3.6-3.92 s after cuts at 1.0 and 1.3 s): the swing takes the first two
-    // stars, the drop the third. The left rope cut before the right one never wins.
-    basket: [-2.4, 0],
-    basketWidth: 1.1,
+    // The right and middle ropes (either first), then the left one as the ball swings out to the
+    // left wall or at the top of that swing: the basket stands against the left wall, and a ball
+    // thrown at the wall drops off it into the basket (won 2.15-3.3 s after cuts at 1.0 and 1.3 s;
+    // scripts/lab-rope-cuts.mjs --wide 4). The swing takes the first two stars, the drop from the
+    // top of the swing the third (3 stars 3.25-3.3 s). The left rope cut before the right one never wins.
+    basket: [-4.45, 0],
+    basketWidth: 1.3,
     basketDepth: 0.75,
     stars: [
       [-1.6, 2.25],
       [-4.45, 4.45],
-      [-2.86, 1.59],
+      [-4.05, 1.95],
     ],
     view: WIDE_VIEW,
     room: WIDE_ROOM_HALF_WIDTH,
@@ -266,21 +283,105 @@ export const WIDE_LEVELS: readonly Level[] = Object.freeze([
     hint: LEVELS[4]!.hint,
     anchors: [[-1.6, 6.3]],
     ball: [-1.6, 3.0],
-    // Pushed at 5 m/s, a cut as it swings back up to the right lobs it onto the raised basket (won
-    // 4.2-4.65 s; the push's swing takes the first two stars). Untouched, it only hangs.
-    basket: [1.0, 1.2],
-    basketWidth: 1.0,
+    // Pushed at 5 m/s, a cut as it swings back up to the right, or at the top of that swing, lobs or
+    // drops it onto the raised basket, which stands under the top of the swing (won 4.1-5.0 s;
+    // scripts/lab-rope-cuts.mjs --wide 5); the push's swing takes the first two stars, the drop
+    // the third. Untouched, it only hangs.
+    basket: [0.45, 1.2],
+    basketWidth: 0.85,
     basketDepth: 0.6,
     stars: [
       [0.35, 3.95],
       [-3.55, 3.62],
       [0.45, 3.0],
     ],
-    blocks: [{ at: [1.0, 0.6], half: [0.6, 0.6] }],
+    blocks: [{ at: [0.45, 0.6], half: [0.55, 0.6] }],
     view: WIDE_VIEW,
     room: WIDE_ROOM_HALF_WIDTH,
   },
 ]);
+
+/**
+ * The flight of a ball let go now: its centre's path from (x, y) at velocity (vx, vy) (m, m/s) under
+ * gravity `g` (m/s^2, downward, >= 0) and linear drag of rate `c` = k / m (1/s, >= 0), sampled every
+ * `dt` s (> 0) until it would touch the floor, a block or the basket (its walls, rim or floor: a ball
+ * that reaches the opening ends there), or after `maxTime` s. The exact solution of
+ * m dv/dt = -m g y^ - k v (Ramtal and Dobre ch. 7, linear drag), from a start (x0, y0, u, w) s ago:
+ * x = x0 + u (1 - e^(-c s)) / c, y = y0 + (w + g / c)(1 - e^(-c s)) / c - g s / c,
+ * the drag-free parabola x0 + u s, y0 + w s - g s^2 / 2 as c -> 0 (used for c < 1e-9). At the room's
+ * side walls it bounces (up to twice): the across-speed reversed and scaled by SIDE_RESTITUTION (the
+ * contact's restitution, the larger of the wall's and the ball's), the path going on from there.
+ * Writes x, y pairs into `out` (cleared first; the start point included). @returns whether the path
+ * ends in the basket's opening (its centre over the basket's floor, between its walls).
+ * @throws RangeError (naming predictFlight) on a negative or non-finite g or c, or dt not > 0.
+ */
+export function predictFlight(
+  level: Level,
+  x: number,
+  y: number,
+  vx: number,
+  vy: number,
+  g: number,
+  c: number,
+  out: number[],
+  dt = 0.04,
+  maxTime = 4,
+): boolean {
+  if (!(Number.isFinite(g) && g >= 0)) throw new RangeError(`predictFlight: g must be a finite number >= 0, got ${g}`);
+  if (!(Number.isFinite(c) && c >= 0)) throw new RangeError(`predictFlight: c must be a finite number >= 0, got ${c}`);
+  if (!(dt > 0)) throw new RangeError(`predictFlight: dt must be > 0, got ${dt}`);
+  out.length = 0;
+  out.push(x, y);
+  const r = BALL_RADIUS,
+    room = roomHalfWidth(level);
+  const [bx, by] = level.basket,
+    half = level.basketWidth / 2;
+  // The flight's start: place, velocity and time (moved on at each bounce off a side wall).
+  let x0 = x,
+    y0 = y,
+    u = vx,
+    w = vy,
+    t0 = 0,
+    bounces = 0;
+  for (let t = dt; t <= maxTime + 1e-9; t += dt) {
+    const s = t - t0;
+    let px: number, py: number, pvx: number, pvy: number;
+    if (c < 1e-9) {
+      px = x0 + u * s;
+      py = y0 + w * s - 0.5 * g * s * s;
+      pvx = u;
+      pvy = w - g * s;
+    } else {
+      const decay = Math.exp(-c * s),
+        e = (1 - decay) / c;
+      px = x0 + u * e;
+      py = y0 + (w + g / c) * e - (g * s) / c;
+      pvx = u * decay;
+      pvy = (w + g / c) * decay - g / c;
+    }
+    if (Math.abs(px) > room - r && bounces < 2 && py >= r) {
+      // Off the side wall: on from the wall's face, the across-speed reversed and damped.
+      px = Math.sign(px) * (room - r);
+      x0 = px;
+      y0 = py;
+      u = -SIDE_RESTITUTION * pvx;
+      w = pvy;
+      t0 = t;
+      bounces++;
+    }
+    // The basket's opening: between its walls, below a ball resting on its rim.
+    const opening = Math.abs(px - bx) < half && py < by + level.basketDepth + r && py > by;
+    const hit =
+      py < r ||
+      Math.abs(px) > room - r ||
+      (Math.abs(px - bx) < half + WALL + r && py < by + level.basketDepth + r && !opening) ||
+      (level.blocks ?? []).some((b) => Math.abs(px - b.at[0]) < b.half[0] + r && Math.abs(py - b.at[1]) < b.half[1] + r);
+    out.push(px, py);
+    if (opening) return true;
+    if (hit) return false;
+  }
+  return false;
+}
 
 /** The lab's settings that shape its world. */
 export interface RopeSceneParams {
@@ -340,7 +441,7 @@ export function createRopeScene(index: number, p: RopeSceneParams, levels: reado
   // The room's side walls: their inner faces at x = -room and +room.
   const room = roomHalfWidth(level);
   for (const side of [-1, 1])
-    addBox(world, { position: [side * (room + 1), 10], halfExtents: [1, 10], static: true, friction: 0.3, restitution: 0.3 });
+    addBox(world, { position: [side * (room + 1), 10], halfExtents: [1, 10], static: true, friction: 0.3, restitution: WALL_RESTITUTION });
   const [bx, by] = level.basket,
     half = level.basketWidth / 2;
   // The basket: a floor and two walls, static, of soft wicker (little bounce).
@@ -359,9 +460,9 @@ export function createRopeScene(index: number, p: RopeSceneParams, levels: reado
     position: [x, y],
     mass: p.ballMass,
     radius: BALL_RADIUS,
-    restitution: 0.25,
+    restitution: BALL_RESTITUTION,
     friction: 0.5,
-    linearDrag: 0.02,
+    linearDrag: BALL_DRAG,
   });
   const ropes: RopePiece[] = [];
   for (const anchor of level.anchors) {

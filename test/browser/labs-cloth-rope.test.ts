@@ -55,6 +55,9 @@ interface RopeLab extends Lab {
   stars(): number;
   advance(n: number): void;
   banner(): { text: string; stars: number[]; box: number[]; card: number[] | null };
+  goTo(n: number): void;
+  misses(): number[];
+  flight(): { path: number[]; inBasket: boolean };
 }
 
 let h: Harness;
@@ -1098,6 +1101,53 @@ for (const [device, options] of [
       expect(shown.column).toContain('level 2 of 5: Two ropes');
       expect(shown.column).toMatch(/stars 0 of 3\s*cuts 0/);
       expect(shown.slider).toBe('2');
+      expect(g.errors).toEqual([]);
+    });
+
+    it('the flight hint: dots from the ball along its flight if cut now, on level 1 from the start, on a later level once missed there', async () => {
+      const room = await g.page.evaluate(() => (window.game as unknown as { room(): string }).room());
+      // Level 1 at a winning time (as in the test above): the path starts at the ball and ends in the basket.
+      await g.page.evaluate(
+        (steps) => {
+          const w = window.game as unknown as RopeLab;
+          w.goTo(1);
+          w.paused = true;
+          w.advance(steps);
+        },
+        room === 'wide' ? 125 : 90,
+      );
+      await g.waitFor(() => (window.game as unknown as RopeLab).flight().path.length > 4, null);
+      const hint = await g.page.evaluate(() => {
+        const w = window.game as unknown as RopeLab;
+        const e = w.ids().ball % 2 ** 25;
+        return { ...w.flight(), ball: [w.world.components.Position.x[e]!, w.world.components.Position.y[e]!] };
+      });
+      expect(hint.inBasket).toBe(true);
+      // Drawn from the ball as drawn (between the last two steps: within a step's travel, 0.1 m).
+      expect(Math.hypot(hint.path[0]! - hint.ball[0]!, hint.path[1]! - hint.ball[1]!)).toBeLessThan(0.1);
+      // Level 3 (one rope) on a first try: no hint. Cut 0.3 s in, the ball misses; the next try shows it.
+      await g.page.evaluate(() => {
+        const w = window.game as unknown as RopeLab;
+        w.goTo(3);
+        w.paused = true;
+        w.advance(18);
+      });
+      await g.page.waitForTimeout(100);
+      expect(await g.page.evaluate(() => (window.game as unknown as RopeLab).flight().path.length)).toBe(0);
+      const [x, y] = await ropeMiddle(g, 0);
+      const at = await toPage(g, x + 0.05, y);
+      if (device === 'phone') await g.page.touchscreen.tap(at.x, at.y);
+      else await g.page.mouse.click(at.x, at.y);
+      expect(await g.page.evaluate(() => (window.game as unknown as RopeLab).holding())).toBe(0);
+      await g.page.evaluate(() => {
+        (window.game as unknown as Lab).paused = false;
+      });
+      await g.runUntil(() => (window.game as unknown as RopeLab).outcome() === 'lost', null, { maxFrames: 1800 });
+      expect(await g.page.evaluate(() => (window.game as unknown as RopeLab).misses()[2])).toBe(1);
+      await g.page.waitForTimeout(500);
+      await g.page.keyboard.press('Space');
+      await g.waitFor(() => (window.game as unknown as RopeLab).outcome() === 'playing', null);
+      await g.waitFor(() => (window.game as unknown as RopeLab).flight().path.length > 4, null);
       expect(g.errors).toEqual([]);
     });
   });
