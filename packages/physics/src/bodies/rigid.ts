@@ -154,6 +154,31 @@ export function setInertia(world: PhysicsWorld, eid: number, inertia: number | A
 const tmp = new Float64Array(3);
 
 /**
+ * R diag(dx, dy, dz) R^T v for the 3D body in slot `e` (R its orientation): a matrix diagonal in the
+ * body's principal frame (its inertia tensor or the inverse) applied to the world vector v; the
+ * result into out[0..2]. `out` may be `tmp`.
+ */
+function bodyDiagonal(
+  world: PhysicsWorld,
+  e: number,
+  dx: number,
+  dy: number,
+  dz: number,
+  vx: number,
+  vy: number,
+  vz: number,
+  out: Float64Array,
+): void {
+  const q = world.components.Orientation;
+  const qx = q.x[e]!,
+    qy = q.y[e]!,
+    qz = q.z[e]!,
+    qw = q.w[e]!;
+  rotateVectorInverse(qx, qy, qz, qw, vx, vy, vz, tmp);
+  rotateVector(qx, qy, qz, qw, tmp[0]! * dx, tmp[1]! * dy, tmp[2]! * dz, out);
+}
+
+/**
  * The checks of a load applied at a point (applyForceAtPoint, applyImpulseAtPoint): body `eid` must
  * be a live body, `load` (named `name`) and `point` vectors of `world.dimensions` finite numbers.
  * Wakes the body's island. @returns the body's slot.
@@ -230,14 +255,8 @@ export function applyImpulseAtPoint(world: PhysicsWorld, eid: number, impulse: A
     Ly = rz * jx - rx * jz,
     Lz = rx * jy - ry * jx;
   if (d === 3 && hasComponent(world, slot, c.InertiaTensor)) {
-    const q = c.Orientation,
-      T = c.InertiaTensor;
-    const qx = q.x[slot]!,
-      qy = q.y[slot]!,
-      qz = q.z[slot]!,
-      qw = q.w[slot]!;
-    rotateVectorInverse(qx, qy, qz, qw, Lx, Ly, Lz, tmp);
-    rotateVector(qx, qy, qz, qw, tmp[0]! * T.invX[slot]!, tmp[1]! * T.invY[slot]!, tmp[2]! * T.invZ[slot]!, tmp);
+    const T = c.InertiaTensor;
+    bodyDiagonal(world, slot, T.invX[slot]!, T.invY[slot]!, T.invZ[slot]!, Lx, Ly, Lz, tmp);
     c.AngularVelocity.x[slot] = c.AngularVelocity.x[slot]! + tmp[0]!;
     c.AngularVelocity.y[slot] = c.AngularVelocity.y[slot]! + tmp[1]!;
     c.AngularVelocity.z[slot] = c.AngularVelocity.z[slot]! + tmp[2]!;
@@ -267,14 +286,8 @@ function spinMomentumOf(world: PhysicsWorld, eid: number, out: Float64Array): Fl
     wy = c.AngularVelocity.y[eid]!,
     wz = c.AngularVelocity.z[eid]!;
   if (world.dimensions === 3 && hasComponent(world, eid, c.InertiaTensor)) {
-    const q = c.Orientation,
-      T = c.InertiaTensor;
-    const qx = q.x[eid]!,
-      qy = q.y[eid]!,
-      qz = q.z[eid]!,
-      qw = q.w[eid]!;
-    rotateVectorInverse(qx, qy, qz, qw, wx, wy, wz, tmp);
-    rotateVector(qx, qy, qz, qw, tmp[0]! * T.x[eid]!, tmp[1]! * T.y[eid]!, tmp[2]! * T.z[eid]!, out);
+    const T = c.InertiaTensor;
+    bodyDiagonal(world, eid, T.x[eid]!, T.y[eid]!, T.z[eid]!, wx, wy, wz, out);
     return out;
   }
   const I = hasComponent(world, eid, c.Inertia) ? c.Inertia.value[eid]! : 0;

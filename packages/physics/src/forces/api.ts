@@ -28,6 +28,24 @@ function vec3(world: PhysicsWorld, v: ArrayLike<number>): [number, number, numbe
   return [v[0]!, v[1]!, world.dimensions === 3 ? v[2]! : 0];
 }
 
+/** Writes the world vector `v` (z 0 in a 2D world) into slot `e` of the stores x, y and z. */
+function writeVec3(world: PhysicsWorld, v: ArrayLike<number>, x: Float64Array, y: Float64Array, z: Float64Array, e: number): void {
+  x[e] = v[0]!;
+  y[e] = v[1]!;
+  z[e] = world.dimensions === 3 ? v[2]! : 0;
+}
+
+/**
+ * The slot of body handle `body`, after `options` is checked to hold only the names `keys`.
+ * @throws RangeError naming `where` on a removed entity or one that is not a body; TypeError on an
+ *   unknown or null option.
+ */
+function optionsBody(world: PhysicsWorld, body: number, where: string, options: object, keys: readonly string[]): number {
+  const eid = resolveKind(world, body, 'body', where);
+  assertOptions(where, options, keys);
+  return eid;
+}
+
 /**
  * Scales the uniform gravity this body feels (1 normal, 0 none, negative upward).
  * @throws RangeError on a non-finite scale, a removed entity or one that is not a body.
@@ -57,8 +75,7 @@ export function enableMutualGravity(world: PhysicsWorld, body: number): void {
  */
 export function setAttractor(world: PhysicsWorld, body: number, options: { mass: number; softening?: number }): void {
   const where = 'setAttractor';
-  const eid = resolveKind(world, body, 'body', where);
-  assertOptions(where, options, ['mass', 'softening']);
+  const eid = optionsBody(world, body, where, options, ['mass', 'softening']);
   assertPositive(where, 'mass', options.mass);
   if (options.softening !== undefined) assertNonNegative(where, 'softening', options.softening);
   const c = world.components;
@@ -218,17 +235,13 @@ export function setMagneticField(world: PhysicsWorld, field: number, options: Fi
  */
 export function setCentralForce(world: PhysicsWorld, body: number, options: { centre: ArrayLike<number>; k: number; n: number }): void {
   const where = 'setCentralForce';
-  const eid = resolveKind(world, body, 'body', where);
-  assertOptions(where, options, ['centre', 'k', 'n']);
+  const eid = optionsBody(world, body, where, options, ['centre', 'k', 'n']);
   assertVector(where, 'centre', options.centre, world.dimensions);
   assertFinite(where, 'k', options.k);
   assertFinite(where, 'n', options.n);
   const c = world.components;
   addComponentIfMissing(world, eid, c.CentralForce);
-  const [x, y, z] = vec3(world, options.centre);
-  c.CentralForce.cx[eid] = x;
-  c.CentralForce.cy[eid] = y;
-  c.CentralForce.cz[eid] = z;
+  writeVec3(world, options.centre, c.CentralForce.cx, c.CentralForce.cy, c.CentralForce.cz, eid);
   c.CentralForce.k[eid] = options.k;
   c.CentralForce.n[eid] = options.n;
 }
@@ -240,8 +253,7 @@ export function setCentralForce(world: PhysicsWorld, body: number, options: { ce
  */
 export function setDrag(world: PhysicsWorld, body: number, options: { linear?: number; quadratic?: number }): void {
   const where = 'setDrag';
-  const eid = resolveKind(world, body, 'body', where);
-  assertOptions(where, options, ['linear', 'quadratic']);
+  const eid = optionsBody(world, body, where, options, ['linear', 'quadratic']);
   if (options.linear !== undefined) assertNonNegative(where, 'linear', options.linear);
   if (options.quadratic !== undefined) assertNonNegative(where, 'quadratic', options.quadratic);
   writeDrag(world, eid, options.linear, options.quadratic);
@@ -271,8 +283,7 @@ export function writeDrag(world: PhysicsWorld, eid: number, linear: number | und
  */
 export function setLift(world: PhysicsWorld, body: number, options: { k: number; axis?: ArrayLike<number> }): void {
   const where = 'setLift';
-  const eid = resolveKind(world, body, 'body', where);
-  assertOptions(where, options, ['k', 'axis']);
+  const eid = optionsBody(world, body, where, options, ['k', 'axis']);
   assertNonNegative(where, 'k', options.k);
   const [ax, ay, az] = options.axis === undefined ? [0, 0, 1] : unitVector(where, 'axis', options.axis, 3);
   const c = world.components;
@@ -304,8 +315,7 @@ export interface BuoyancyOptions {
  */
 export function setBuoyancy(world: PhysicsWorld, body: number, options: BuoyancyOptions): void {
   const where = 'setBuoyancy';
-  const eid = resolveKind(world, body, 'body', where);
-  assertOptions(where, options, ['shape', 'radius', 'halfExtents', 'dragCoefficient']);
+  const eid = optionsBody(world, body, where, options, ['shape', 'radius', 'halfExtents', 'dragCoefficient']);
   const c = world.components;
   const B = c.Buoyancy;
   assertOneOf(where, 'shape', options.shape, ['ball', 'box']);
@@ -517,10 +527,7 @@ export function setSpring(world: PhysicsWorld, spring: number, options: SpringSe
   if (options.damping !== undefined) S.damping[s] = options.damping;
   if (options.oneSided !== undefined) S.oneSided[s] = options.oneSided ? 1 : 0;
   if (options.anchor !== undefined) {
-    const [x, y, z] = vec3(world, options.anchor);
-    S.anchorX[s] = x;
-    S.anchorY[s] = y;
-    S.anchorZ[s] = z;
+    writeVec3(world, options.anchor, S.anchorX, S.anchorY, S.anchorZ, s);
   }
 }
 
@@ -534,18 +541,14 @@ export function setDrivingForce(
   options: { amplitude: ArrayLike<number>; omega: number; phase?: number },
 ): void {
   const where = 'setDrivingForce';
-  const eid = resolveKind(world, body, 'body', where);
-  assertOptions(where, options, ['amplitude', 'omega', 'phase']);
+  const eid = optionsBody(world, body, where, options, ['amplitude', 'omega', 'phase']);
   assertVector(where, 'amplitude', options.amplitude, world.dimensions);
   assertNonNegative(where, 'omega', options.omega);
   if (options.phase !== undefined) assertFinite(where, 'phase', options.phase);
   const c = world.components;
   addComponentIfMissing(world, eid, c.DrivingForce);
-  const [x, y, z] = vec3(world, options.amplitude);
   const D = c.DrivingForce;
-  D.x[eid] = x;
-  D.y[eid] = y;
-  D.z[eid] = z;
+  writeVec3(world, options.amplitude, D.x, D.y, D.z, eid);
   D.omega[eid] = options.omega;
   D.phase[eid] = options.phase ?? 0;
 }
@@ -562,8 +565,7 @@ export function setRandomForce(
   options: { magnitude: number; correlationTime: number; seed?: number },
 ): void {
   const where = 'setRandomForce';
-  const eid = resolveKind(world, body, 'body', where);
-  assertOptions(where, options, ['magnitude', 'correlationTime', 'seed']);
+  const eid = optionsBody(world, body, where, options, ['magnitude', 'correlationTime', 'seed']);
   assertNonNegative(where, 'magnitude', options.magnitude);
   assertPositive(where, 'correlationTime', options.correlationTime);
   if (options.seed !== undefined) assertInteger(where, 'seed', options.seed, -2147483648, 4294967295);
@@ -587,8 +589,7 @@ export function setThrust(
   options: { exhaustVelocity: number; massFlowRate: number; fuel: number; direction: ArrayLike<number> },
 ): void {
   const where = 'setThrust';
-  const eid = resolveKind(world, body, 'body', where);
-  assertOptions(where, options, ['exhaustVelocity', 'massFlowRate', 'fuel', 'direction']);
+  const eid = optionsBody(world, body, where, options, ['exhaustVelocity', 'massFlowRate', 'fuel', 'direction']);
   assertPositive(where, 'exhaustVelocity', options.exhaustVelocity);
   assertNonNegative(where, 'massFlowRate', options.massFlowRate);
   assertNonNegative(where, 'fuel', options.fuel);
@@ -621,19 +622,15 @@ export function setVortex(
   options: { centre: ArrayLike<number>; k: number; n?: number; axis?: ArrayLike<number> },
 ): void {
   const where = 'setVortex';
-  const eid = resolveKind(world, body, 'body', where);
-  assertOptions(where, options, ['centre', 'k', 'n', 'axis']);
+  const eid = optionsBody(world, body, where, options, ['centre', 'k', 'n', 'axis']);
   assertVector(where, 'centre', options.centre, world.dimensions);
   assertFinite(where, 'k', options.k);
   if (options.n !== undefined) assertFinite(where, 'n', options.n);
   const [ax, ay, az] = options.axis === undefined ? [0, 0, 1] : unitVector(where, 'axis', options.axis, 3);
   const c = world.components;
   addComponentIfMissing(world, eid, c.Vortex);
-  const [x, y, z] = vec3(world, options.centre);
   const V = c.Vortex;
-  V.cx[eid] = x;
-  V.cy[eid] = y;
-  V.cz[eid] = z;
+  writeVec3(world, options.centre, V.cx, V.cy, V.cz, eid);
   V.axisX[eid] = ax;
   V.axisY[eid] = ay;
   V.axisZ[eid] = az;

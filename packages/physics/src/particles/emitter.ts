@@ -42,6 +42,47 @@ import { archetypeFor, headingOf, particleKind, setOrigin, spawnOne } from './sp
  */
 
 /**
+ * Every Emitter field's value on a new emitter, before the options given are written (documented on
+ * EmitterOptions and EmittedParticleOptions). colorEnd and sizeEnd default to the particle's
+ * colorStart and sizeStart, so addEmitter writes them after these.
+ */
+const EMITTER_DEFAULTS: ReadonlyArray<readonly [Exclude<keyof PhysicsWorld['components']['Emitter'], 'colorEnd' | 'sizeEnd'>, number]> = [
+  ['rate', 0],
+  ['carry', 0],
+  ['pendingBurst', 0],
+  ['enabled', 1],
+  ['shape', EmitterShape.Point],
+  ['size', 0],
+  ['sizeY', 0],
+  ['sizeZ', 0],
+  ['dirX', 0],
+  ['dirY', 1],
+  ['dirZ', 0],
+  ['spread', Math.PI],
+  ['projectSphere', 0],
+  ['speedMin', 1],
+  ['speedMax', 2],
+  ['lifeMin', 1],
+  ['lifeMax', 2],
+  ['inherit', 0],
+  ['mass', 0],
+  ['linearDrag', 0],
+  ['quadraticDrag', 0],
+  ['gravityScale', 1],
+  ['radius', 0],
+  ['colorStart', 0xffffff],
+  ['sizeStart', 0.1],
+  ['alphaStart', 1],
+  ['alphaEnd', 0],
+  ['deathEmitter', 0],
+  ['deathCount', 0],
+  ['maxGeneration', 0],
+  ['policy', CapacityPolicy.DropNew],
+  ['spawned', 0],
+  ['dropped', 0],
+];
+
+/**
  * Adds an emitter entity (or puts one on an existing body with `attachTo`). Atomic: every option is
  * checked, and room for the emitter made sure of, before anything changes.
  * @returns the emitter's handle (the body's handle when attached).
@@ -94,42 +135,10 @@ export function addEmitter(world: PhysicsWorld, options: EmitterOptions = {}): n
   addComponent(world, em, c.Emitter);
   const E = c.Emitter;
   // Defaults (documented on EmitterOptions and EmittedParticleOptions), then the options given.
-  E.rate[em] = 0;
-  E.carry[em] = 0;
-  E.pendingBurst[em] = 0;
-  E.enabled[em] = 1;
-  E.shape[em] = EmitterShape.Point;
-  E.size[em] = 0;
-  E.sizeY[em] = 0;
-  E.sizeZ[em] = 0;
-  E.dirX[em] = 0;
-  E.dirY[em] = 1;
-  E.dirZ[em] = 0;
-  E.spread[em] = Math.PI;
-  E.projectSphere[em] = 0;
-  E.speedMin[em] = 1;
-  E.speedMax[em] = 2;
-  E.lifeMin[em] = 1;
-  E.lifeMax[em] = 2;
-  E.inherit[em] = 0;
-  E.mass[em] = 0;
-  E.linearDrag[em] = 0;
-  E.quadraticDrag[em] = 0;
-  E.gravityScale[em] = 1;
-  E.radius[em] = 0;
+  for (const [field, value] of EMITTER_DEFAULTS) E[field][em] = value;
   const p = options.particle ?? {};
-  E.colorStart[em] = 0xffffff;
   E.colorEnd[em] = p.colorStart ?? 0xffffff;
-  E.sizeStart[em] = 0.1;
   E.sizeEnd[em] = p.sizeStart ?? 0.1;
-  E.alphaStart[em] = 1;
-  E.alphaEnd[em] = 0;
-  E.deathEmitter[em] = 0;
-  E.deathCount[em] = 0;
-  E.maxGeneration[em] = 0;
-  E.policy[em] = CapacityPolicy.DropNew;
-  E.spawned[em] = 0;
-  E.dropped[em] = 0;
   writeSettings(world, em, settings);
   return currentHandle(world, em);
 }
