@@ -79,7 +79,9 @@ interface Scratch {
   /**
    * A collider's material, filter and body start position side by side (ColliderMaterial), so a box pair
    * reads one run of memory per collider instead of a column each of the shape store and the position
-   * components; written for every collider every pass (also a sleeping one's: its material may be edited).
+   * components. The material and filter are written for every collider every pass (also a sleeping
+   * one's: its material may be edited), the position when the collider is posed (a kept pose's body
+   * starts where it did).
    */
   material: Float64Array;
   order: Int32Array;

@@ -286,10 +286,6 @@ function gather(world: PhysicsWorld, s: Shape3DStore): void {
     mat[mo + ColliderMaterial.FRICTION] = isBall ? 0 : s.friction[e]!;
     mat[mo + ColliderMaterial.RESTITUTION] = isBall ? 0 : s.restitution[e]!;
     mat[mo + ColliderMaterial.PERMISSIVE] = !isBall && s.group[e] === 0 && s.mask[e] === 0xffffffff && s.category[e] !== 0 ? 1 : 0;
-    const start = t === BodyType.Static ? c.Position : c.PreviousPosition;
-    mat[mo + ColliderMaterial.X] = start.x[b]!;
-    mat[mo + ColliderMaterial.Y] = start.y[b]!;
-    mat[mo + ColliderMaterial.Z] = start.z[b]!;
     n++;
   }
   scratch.n = n;
@@ -327,6 +323,12 @@ function poseCollider(
   const x0 = t === BodyType.Static ? c.Position.x[b]! : ox[b]!,
     y0 = t === BodyType.Static ? c.Position.y[b]! : oy[b]!,
     z0 = t === BodyType.Static ? c.Position.z[b]! : oz[b]!;
+  // The body's start position for the pair rows' anchors (a kept sleeping pose keeps its entry: its body
+  // starts where it did).
+  const mo = ColliderMaterial.STRIDE * n;
+  sc.material[mo + ColliderMaterial.X] = x0;
+  sc.material[mo + ColliderMaterial.Y] = y0;
+  sc.material[mo + ColliderMaterial.Z] = z0;
   startOrientation(world, b, turning, isBall);
   const R = sc.R,
     o = MAT3_STRIDE * n;
