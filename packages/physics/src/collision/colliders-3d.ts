@@ -33,6 +33,31 @@ export function meets(ta: number, tb: number): boolean {
   );
 }
 
+/** The layout of a collider's entry in `scratch.material` (collider n at STRIDE n). */
+export enum ColliderMaterial {
+  /** Friction coefficient, >= 0. */
+  FRICTION = 0,
+  /** Restitution, [0, 1]. */
+  RESTITUTION = 1,
+  /**
+   * 1 when the shape's filter lets it meet every shape that does not filter it out on its own side
+   * (group 0, mask 0xffffffff, category not 0: the defaults), else 0 (and 0 for a shapeless ball, whose
+   * material is the Material component's). A pair of two such shapes is never filtered.
+   */
+  PERMISSIVE = 2,
+  /**
+   * The body's position at the start of the step, x, m: Position for a static body, else
+   * PreviousPosition (where the narrowphase measures, and a manifold's anchors are taken from).
+   */
+  X = 3,
+  /** y, m. */
+  Y = 4,
+  /** z, m. */
+  Z = 5,
+  /** Numbers a collider's entry (two unused: one entry a 64-byte line). */
+  STRIDE = 8,
+}
+
 /** Per-step collider scratch (module-level, reused; the step rebuilds it). */
 interface Scratch {
   n: number;
@@ -51,6 +76,14 @@ interface Scratch {
   speed: Float64Array;
   /** A box collider that is no sensor: its smallest half extent, m (the manifold reuse's scale); else -1. */
   boxHalf: Float64Array;
+  /**
+   * A collider's material, filter and body start position side by side (ColliderMaterial), so a box pair
+   * reads one run of memory per collider instead of a column each of the shape store and the position
+   * components. The material and filter are written for every collider every pass (also a sleeping
+   * one's: its material may be edited), the position when the collider is posed (a kept pose's body
+   * starts where it did).
+   */
+  material: Float64Array;
   order: Int32Array;
   ball: Uint8Array;
   /** Per shape slot (a ball's body slot): its collider index this pass, valid where colliderStamp holds colliderPass. */
@@ -98,6 +131,7 @@ export const scratch: Scratch = {
   R: new Float64Array(0),
   speed: new Float64Array(0),
   boxHalf: new Float64Array(0),
+  material: new Float64Array(0),
   order: new Int32Array(0),
   ball: new Uint8Array(0),
   colliderOf: new Int32Array(0),
@@ -135,6 +169,7 @@ export function ensure(n: number): void {
   sc.poseKey = grow(sc.poseKey, POSE_KEY * m);
   for (const k of ['minX', 'maxX', 'minY', 'maxY', 'minZ', 'maxZ', 'px', 'py', 'pz', 'speed', 'boxHalf'] as const) sc[k] = grow(sc[k], m);
   sc.R = grow(sc.R, 9 * m);
+  sc.material = grow(sc.material, ColliderMaterial.STRIDE * m);
 }
 
 /**

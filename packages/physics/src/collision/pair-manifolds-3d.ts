@@ -4,7 +4,7 @@ import { Shape3DKind, type Shape3DStore } from '../shapes/store-3d.js';
 import { ANCHOR_AX, ANCHOR_AY, ANCHOR_AZ, ANCHOR_BX, ANCHOR_BY, ANCHOR_BZ, ANCHOR_STRIDE } from '../solver/manifold-layout-3d.js';
 import { jointKeepsApart } from '../world/joint-no-collide.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { colA, colB, collider, manifold, queueWake, scratch } from './colliders-3d.js';
+import { ColliderMaterial, colA, colB, collider, manifold, queueWake, scratch } from './colliders-3d.js';
 import { type Contact3DState, growManifold3DBuffer, lookupRow, rowKey } from './manifolds-3d.js';
 import { BOX_A, BOX_B, BOX_CX, BOX_CY, BOX_CZ, BOX_HX, BOX_HY, BOX_HZ, BOX_MARGIN } from './narrowphase/box-args-3d.js';
 import { boxArgs, boxBox3DAt } from './narrowphase/box-box-3d.js';
@@ -42,7 +42,14 @@ export function pair(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, i
     b = a === i ? j : i;
   const ea = sc.shape[a]!,
     eb = sc.shape[b]!;
-  if (filtered(s, ea, eb, sc.ball[a] === 1, sc.ball[b] === 1)) return;
+  // Two shapes of the default filter never filter each other out (their columns in the store are not read).
+  const mat = sc.material;
+  if (
+    (mat[ColliderMaterial.STRIDE * a + ColliderMaterial.PERMISSIVE] !== 1 ||
+      mat[ColliderMaterial.STRIDE * b + ColliderMaterial.PERMISSIVE] !== 1) &&
+    filtered(s, ea, eb, sc.ball[a] === 1, sc.ball[b] === 1)
+  )
+    return;
   const halfA = sc.boxHalf[a]!,
     halfB = sc.boxHalf[b]!;
   if (halfA >= 0 && halfB >= 0) {
@@ -370,10 +377,22 @@ export function emit(
   // A side without body or shape: the boundary box (its walls' material).
   const wall = bodyA === 0 && ea === 0,
     bound = world.collision.boundary;
-  const fa = wall ? bound.friction : plane !== 0 || ballA ? c.Material.friction[ea]! : s.friction[ea]!,
+  let fa: number, ra: number, fb: number, rb: number;
+  if (boxRow.a >= 0) {
+    // A box pair: both shapes' materials from the colliders' scratch entries (the same numbers as the store's).
+    const mat = scratch.material,
+      oa = ColliderMaterial.STRIDE * boxRow.a,
+      ob = ColliderMaterial.STRIDE * boxRow.b;
+    fa = mat[oa + ColliderMaterial.FRICTION]!;
+    ra = mat[oa + ColliderMaterial.RESTITUTION]!;
+    fb = mat[ob + ColliderMaterial.FRICTION]!;
+    rb = mat[ob + ColliderMaterial.RESTITUTION]!;
+  } else {
+    fa = wall ? bound.friction : plane !== 0 || ballA ? c.Material.friction[ea]! : s.friction[ea]!;
     ra = wall ? bound.restitution : plane !== 0 || ballA ? c.Material.restitution[ea]! : s.restitution[ea]!;
-  const fb = ballB ? c.Material.friction[eb]! : s.friction[eb]!,
+    fb = ballB ? c.Material.friction[eb]! : s.friction[eb]!;
     rb = ballB ? c.Material.restitution[eb]! : s.restitution[eb]!;
+  }
   buf.friction[i] = Math.sqrt(fa * fb);
   buf.restitution[i] = Math.max(ra, rb);
   // Anchors from where the narrowphase measured: PreviousPosition, or Position for a static body.
@@ -384,17 +403,30 @@ export function emit(
     bx = 0,
     by = 0,
     bz = 0;
-  if (bodyA !== 0) {
-    const P = type[bodyA] === BodyType.Static ? c.Position : c.PreviousPosition;
-    ax = P.x[bodyA]!;
-    ay = P.y[bodyA]!;
-    az = P.z[bodyA]!;
-  }
-  if (bodyB !== 0) {
-    const P = type[bodyB] === BodyType.Static ? c.Position : c.PreviousPosition;
-    bx = P.x[bodyB]!;
-    by = P.y[bodyB]!;
-    bz = P.z[bodyB]!;
+  if (boxRow.a >= 0) {
+    // A box pair: both bodies' start positions from the colliders' scratch entries (gather took them by the same rule).
+    const mat = scratch.material,
+      oa = ColliderMaterial.STRIDE * boxRow.a,
+      ob = ColliderMaterial.STRIDE * boxRow.b;
+    ax = mat[oa + ColliderMaterial.X]!;
+    ay = mat[oa + ColliderMaterial.Y]!;
+    az = mat[oa + ColliderMaterial.Z]!;
+    bx = mat[ob + ColliderMaterial.X]!;
+    by = mat[ob + ColliderMaterial.Y]!;
+    bz = mat[ob + ColliderMaterial.Z]!;
+  } else {
+    if (bodyA !== 0) {
+      const P = type[bodyA] === BodyType.Static ? c.Position : c.PreviousPosition;
+      ax = P.x[bodyA]!;
+      ay = P.y[bodyA]!;
+      az = P.z[bodyA]!;
+    }
+    if (bodyB !== 0) {
+      const P = type[bodyB] === BodyType.Static ? c.Position : c.PreviousPosition;
+      bx = P.x[bodyB]!;
+      by = P.y[bodyB]!;
+      bz = P.z[bodyB]!;
+    }
   }
   // Cylinders only (a box pair has none).
   if (boxRow.a < 0) {

@@ -6,7 +6,7 @@ import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
 import { classifyDynamic, lookUpBodyBits, rankedLists, rankedListType } from './body-class.js';
 import { pairs } from './broadphase/pairs-3d.js';
-import { ensure, keptPose, notePose, ownPoses, SHAPE_SPECULATIVE_DISTANCE, scratch, wakes } from './colliders-3d.js';
+import { ColliderMaterial, ensure, keptPose, notePose, ownPoses, SHAPE_SPECULATIVE_DISTANCE, scratch, wakes } from './colliders-3d.js';
 import { pushEvent } from './events.js';
 import { type Contact3DState, clearRowIndex, contact3DStateOf, growManifold3DBuffer, insertRow, rowKey } from './manifolds-3d.js';
 import { BodyType } from './state.js';
@@ -280,6 +280,12 @@ function gather(world: PhysicsWorld, s: Shape3DStore): void {
     colliderStamp[e] = pass;
     if (!isBall && s.sensor[e] === 1) scratch.anySensor = true;
     if (!kept) poseCollider(world, s, n, e, b, t, isBall, asleep);
+    // Friction 0 and restitution 0 for a shapeless ball: its pairs read its Material component instead.
+    const mo = ColliderMaterial.STRIDE * n,
+      mat = scratch.material;
+    mat[mo + ColliderMaterial.FRICTION] = isBall ? 0 : s.friction[e]!;
+    mat[mo + ColliderMaterial.RESTITUTION] = isBall ? 0 : s.restitution[e]!;
+    mat[mo + ColliderMaterial.PERMISSIVE] = !isBall && s.group[e] === 0 && s.mask[e] === 0xffffffff && s.category[e] !== 0 ? 1 : 0;
     n++;
   }
   scratch.n = n;
@@ -317,6 +323,12 @@ function poseCollider(
   const x0 = t === BodyType.Static ? c.Position.x[b]! : ox[b]!,
     y0 = t === BodyType.Static ? c.Position.y[b]! : oy[b]!,
     z0 = t === BodyType.Static ? c.Position.z[b]! : oz[b]!;
+  // The body's start position for the pair rows' anchors (a kept sleeping pose keeps its entry: its body
+  // starts where it did).
+  const mo = ColliderMaterial.STRIDE * n;
+  sc.material[mo + ColliderMaterial.X] = x0;
+  sc.material[mo + ColliderMaterial.Y] = y0;
+  sc.material[mo + ColliderMaterial.Z] = z0;
   startOrientation(world, b, turning, isBall);
   const R = sc.R,
     o = MAT3_STRIDE * n;
