@@ -218,6 +218,45 @@ describe('black hole, the ready moment', () => {
   });
 });
 
+describe('black hole, the start pad', () => {
+  it('↓ held on the pad leaves the ship parked there: no "Lost in space", no reset, for 2.5 s of game time', async () => {
+    // A stranger's first key was ↓: the ship flew off the field's foot in under 1 s.
+    type Bh = {
+      reset(): void;
+      bh: {
+        ship: number;
+        resets: number;
+        message: string;
+        start: number[];
+        world: { steps: number; components: Record<string, { y: Float64Array }> };
+      };
+      level: { parked: boolean };
+    };
+    const before = await g.page.evaluate(() => {
+      const w = window.game as unknown as Bh;
+      w.reset();
+      return { resets: w.bh.resets, steps: w.bh.world.steps };
+    });
+    await g.page.keyboard.down('ArrowDown');
+    // The ready moment (1 s) and then 1.5 s of ↓ held, at 60 steps a second.
+    await g.waitFor((n) => (window.game as unknown as Bh).bh.world.steps >= n, before.steps + 150, 30_000);
+    const after = await g.page.evaluate(() => {
+      const w = window.game as unknown as Bh;
+      return {
+        resets: w.bh.resets,
+        message: w.bh.message,
+        parked: w.level.parked,
+        dy: w.bh.world.components.Position!.y[w.bh.ship % 2 ** 25]! - w.bh.start[1]!,
+      };
+    });
+    await g.page.keyboard.up('ArrowDown');
+    expect(after.message).not.toMatch(/Lost in space/);
+    expect([after.resets, after.parked, after.dy]).toEqual([before.resets, true, 0]);
+    await g.page.evaluate(() => (window.game as unknown as Bh).reset());
+    expect(g.errors).toEqual([]);
+  });
+});
+
 describe('black hole, between levels', () => {
   it('a cleared level takes its holes off the field (drawn dimmed) while the ship waits; Enter lays out the next', async () => {
     type Bh = BlackHolePage & {
