@@ -50,6 +50,18 @@ describe('phone controls', () => {
     const ground = await g.page.evaluate(() => (window.game as unknown as Marker).scenery());
     expect(ground.trees).toBeGreaterThan(300);
     expect(ground.houses).toBeGreaterThan(20);
+    // Each legend line (the touch hint card and the help) names its gesture once: no word of three
+    // letters or more in both the gesture and what it does ("Camera  camera: chase / cockpit").
+    const doubled = await g.page.evaluate(() =>
+      [...document.querySelectorAll('.bp-touch-hint > div, .bp-help > div > *')]
+        .filter((row) => row.children.length === 2)
+        .map((row) => [...row.children].map((c) => (c.textContent ?? '').toLowerCase().match(/[a-z]{3,}/g) ?? ([] as string[])))
+        .filter(([gesture, action]) => gesture!.some((w) => action!.includes(w)))
+        .map((words) => words.flat().join(' ')),
+    );
+    const rows = await g.page.locator('.bp-touch-hint > div').count();
+    expect(rows).toBeGreaterThan(1);
+    expect(doubled).toEqual([]);
     const stick = (await g.page.getByRole('slider', { name: 'stick: bank and climb' }).boundingBox())!;
     const t0 = await read(g, 'state.throttle');
     const cx = stick.x + stick.width / 2,
