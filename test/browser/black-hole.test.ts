@@ -994,3 +994,42 @@ describe.each([
     }
   }, 300_000);
 });
+
+describe('black hole, a phone played with keys', () => {
+  it('a clear fades the touch card, which lay over the "+N" rising under the finish line', async () => {
+    // A phone with a keyboard: no touch on the stage ever fades the card (it stays 9 s), and on a
+    // phone the card sits just under the finish line, where the clear's points show.
+    const p = await h.openGame('black-hole', { viewport: { width: 390, height: 844 }, touch: true, query: { level: 1 } });
+    type Bh = {
+      bh: { ship: number; lineY: number; world: { components: Record<string, { y: Float64Array; x: Float64Array }> } };
+      level: { parked: boolean; waiting: boolean };
+    };
+    const shown = await p.waitFor(() => {
+      const card = document.querySelector('[data-hud="touch-hint"]');
+      return card && !card.classList.contains('bp-gone') ? true : null;
+    }, null);
+    expect(shown).toBe(true);
+    // The ship put just under the line, climbing: the next step clears level 1.
+    await p.page.evaluate(() => {
+      const w = window.game as unknown as Bh;
+      const c = w.bh.world.components,
+        s = w.bh.ship % 2 ** 25;
+      w.level.parked = false;
+      c.Position!.y[s] = c.PreviousPosition!.y[s] = w.bh.lineY - 0.3;
+      c.Velocity!.x[s] = 0;
+      c.Velocity!.y[s] = 4;
+    });
+    await p.waitFor(() => (window.game as unknown as Bh).level.waiting, null);
+    // Gone (or fading) within a second of the clear, well before its own 9 s are up.
+    await p.waitFor(
+      () => {
+        const card = document.querySelector('[data-hud="touch-hint"]');
+        return !card || card.classList.contains('bp-gone');
+      },
+      null,
+      1000,
+    );
+    expect(p.errors).toEqual([]);
+    await p.close();
+  });
+});
