@@ -2014,7 +2014,7 @@ function frame(alpha = 1): void {
     app.camera.lookAt(look);
   }
   app.camera.updateMatrixWorld();
-  scenery.update(app.camera.position, at);
+  scenery.update(app.camera.position, at, app.camera);
   paintRings(world.time);
   drawGuide(at);
   markPath();

@@ -50,6 +50,19 @@ describe('phone controls', () => {
     const ground = await g.page.evaluate(() => (window.game as unknown as Marker).scenery());
     expect(ground.trees).toBeGreaterThan(300);
     expect(ground.houses).toBeGreaterThan(20);
+    // Only the trees and houses in view go to the GPU (they ring the aircraft out to 1.7 km, and the
+    // view takes in a narrow wedge of that ring): some drawn, far fewer than placed.
+    const drawn = await g.page.evaluate(() => {
+      const counts: number[] = [];
+      type O = { isInstancedMesh?: boolean; count: number };
+      (window.game as unknown as { app: { scene: { traverse(f: (o: O) => void): void } } }).app.scene.traverse((o) => {
+        if (o.isInstancedMesh && o.count > 0) counts.push(o.count);
+      });
+      return counts;
+    });
+    const most = Math.max(...drawn);
+    expect(most).toBeGreaterThan(0);
+    expect(most).toBeLessThan(ground.trees / 4);
     // Each legend line (the touch hint card and the help) names its gesture once: no word of three
     // letters or more in both the gesture and what it does ("Camera  camera: chase / cockpit").
     const doubled = await g.page.evaluate(() =>
