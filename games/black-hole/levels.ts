@@ -432,7 +432,9 @@ export interface HeldFlight {
 }
 
 /**
- * Flies the ship from the start (at rest, its engine idle) with `thrust` held for at most HELD_SECONDS
+ * Flies the ship from the start (at rest, its engine idle) with `thrust` held (its downward part
+ * dropped, as the pad under the parked ship drops it: `padThrust`; nothing left, the ship stays
+ * parked at the start to the end, 'timeout') for at most HELD_SECONDS
  * in steps of game.world.dt, the holes drifting at `run.holeVx` (a copy) as `stepLevel` moves them,
  * and stops after the first step that ends at or above the line (y >= game.lineY: 'cleared'), within
  * SHIP_RADIUS of a horizon ('fell'), or outside the field (x < 0, x > width or y < 0: 'left').
@@ -474,7 +476,8 @@ export function heldFlight(game: BlackHoleGame, run: LevelRun, thrust: Thrust, p
   const dt = world.dt,
     a = game.params.thrust,
     sideRamp = game.params.sideRamp,
-    d = THRUST_DIRECTION[game.over ? 'none' : thrust];
+    held = game.over ? 'none' : padThrust(thrust),
+    d = THRUST_DIRECTION[held];
   const tx = a * d[0],
     ty = a * d[1];
   const engine: [number, number] = [0, 0];
@@ -487,6 +490,15 @@ export function heldFlight(game: BlackHoleGame, run: LevelRun, thrust: Thrust, p
     vy = 0;
   const steps = HELD_SECONDS / dt;
   let k = 0;
+  if (held === 'none') {
+    // No thrust left once the pad takes its downward part: the ship stays parked (`stepLevel`).
+    for (; k < steps; k++)
+      if (path && 2 * k + 1 < path.length) {
+        path[2 * k] = x;
+        path[2 * k + 1] = y;
+      }
+    return { end: 'timeout', steps: k, x, y };
+  }
   while (k < steps) {
     for (let i = 0; i < n; i++) hx[i] = driftedX(hx[i]!, i, game.holeRadius[i]!, vxHoles, width, dt);
     // The forces stage: the holes' pull, then the engine.
@@ -750,7 +762,8 @@ function driftBodies(
 }
 
 /**
- * One step of a level: nothing while waiting; else the holes drift, the fuel burns while thrusting
+ * One step of a level: nothing while waiting; else the holes drift, a parked ship's thrust loses its
+ * downward part (`padThrust`), the fuel burns while thrusting
  * (at zero the thrust stops and stays off), the game steps (./rules `stepBlackHole`), and a parked
  * ship (see `LevelRun.parked`) is put back at the start at rest. A fall on a practice level
  * (`LevelSpec.practice`) gives its life back (and is reported as 'fell', never 'over'). A crossing of
@@ -763,6 +776,9 @@ export function stepLevel(game: BlackHoleGame, run: LevelRun): BlackHoleEvent | 
   if (run.waiting) return 'waiting';
   const dt = game.world.dt;
   driftHoles(game, run, dt);
+  // The pad is under a parked ship: an arrow pushing it down would fly it off the bottom of the field
+  // within a second, so the downward part of the thrust is dropped (↓ alone leaves it parked).
+  if (run.parked && game.thrust !== padThrust(game.thrust)) setThrust(game, padThrust(game.thrust));
   if (game.thrust !== 'none' && !game.over) {
     run.fuelLeft = Math.max(0, run.fuelLeft - dt);
     if (run.fuelLeft === 0) setThrust(game, 'none');
@@ -851,6 +867,19 @@ export function clearMessage(s: LevelSummary, lifeBack: boolean, next: number): 
     (lifeBack ? `A life back: ${s.lives} ${s.lives === 1 ? 'life' : 'lives'}. ` : '') +
     `Press Enter for level ${next}.`
   );
+}
+
+/**
+ * The thrust a ship parked on the start pad takes when `thrust` is asked: its downward part dropped
+ * ('down' gives 'none', 'down-left' and 'down-right' give 'left' and 'right'); any other unchanged.
+ * @throws RangeError if `thrust` is not a `Thrust`.
+ */
+export function padThrust(thrust: Thrust): Thrust {
+  if (!(thrust in THRUST_DIRECTION)) throw new RangeError(`black-hole: padThrust: thrust must be a Thrust, got ${JSON.stringify(thrust)}`);
+  if (thrust === 'down') return 'none';
+  if (thrust === 'down-left') return 'left';
+  if (thrust === 'down-right') return 'right';
+  return thrust;
 }
 
 /** Whether thrust is possible now (fuel left, not waiting, not over). */

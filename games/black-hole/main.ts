@@ -96,6 +96,13 @@ function onGameStep(event: GameStepEvent): void {
     scorePop.points = event === 'cleared' ? (run?.summary?.points ?? 0) : bh.score - scorePop.scoreBefore;
     scorePop.x = lastShip[0]!;
     scorePop.start = performance.now();
+    // The kit's touch card (a phone played with keys never touches the stage, which would fade it)
+    // sits just under the finish line there, where the "+N" rises: it goes now, the lesson done.
+    const card = document.querySelector<HTMLElement>('[data-hud="touch-hint"]');
+    if (card && !card.classList.contains('bp-gone')) {
+      card.classList.add('bp-gone');
+      setTimeout(() => card.remove(), 700);
+    }
   }
   scorePop.scoreBefore = bh.score;
   // Sound (not while a replay plays the run back silently fast).

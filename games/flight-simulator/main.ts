@@ -736,9 +736,9 @@ const game = await startThreeGame({
   controls: [
     { keys: '↑ ↓ / W S', action: 'climb / dive', touch: 'stick ↑ ↓' },
     { keys: '← → / A D', action: 'bank left / right', touch: 'stick ← →' },
-    { keys: 'X / Z', action: 'faster / slower', touch: 'Faster / Slower' },
-    { keys: 'Q / E', action: 'rudder', touch: 'Rudder' },
-    { keys: 'C', action: 'camera: chase / cockpit', touch: 'Camera' },
+    { keys: 'X / Z', action: 'engine power up / down', touch: 'Faster / Slower buttons' },
+    { keys: 'Q / E', action: 'yaw the nose left / right', touch: '◀ Rudder ▶ buttons' },
+    { keys: 'C', action: 'chase / cockpit view', touch: 'Camera' },
   ],
   keys: [
     {
@@ -2014,7 +2014,7 @@ function frame(alpha = 1): void {
     app.camera.lookAt(look);
   }
   app.camera.updateMatrixWorld();
-  scenery.update(app.camera.position, at);
+  scenery.update(app.camera.position, at, app.camera);
   paintRings(world.time);
   drawGuide(at);
   markPath();

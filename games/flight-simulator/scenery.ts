@@ -17,12 +17,14 @@ import {
   BoxGeometry,
   type BufferAttribute,
   BufferGeometry,
+  type Camera,
   CircleGeometry,
   Color,
   ConeGeometry,
   CylinderGeometry,
   Float32BufferAttribute,
   Fog,
+  Frustum,
   IcosahedronGeometry,
   InstancedMesh,
   Matrix4,
@@ -33,6 +35,7 @@ import {
   PlaneGeometry,
   Quaternion,
   type Scene,
+  Sphere,
   SphereGeometry,
   Vector3,
 } from 'three';
@@ -106,8 +109,12 @@ function tinted(g: BufferGeometry, colour: number): BufferGeometry {
 
 /** The scenery of one page: call `update` every frame with the camera's and the aircraft's positions. */
 export interface Scenery {
-  /** Moves the sky with the camera and rebuilds the terrain and clouds when the aircraft has moved far. */
-  update(camera: Vector3, aircraft: Vector3): void;
+  /**
+   * Moves the sky with the camera and rebuilds the terrain and clouds when the aircraft has moved far.
+   * With `view` (the camera the frame is drawn with, its matrices up to date) only the trees and
+   * houses inside its view are handed to the GPU; without it, all those placed.
+   */
+  update(camera: Vector3, aircraft: Vector3, view?: Camera): void;
   /** Uses the terrain of a new world (the aircraft scene's `terrain`) and its seed for the clouds. */
   setTerrain(terrain: Float64Array, seed: number): void;
   /** Clouds drawn now (for tests): puffs in the merged cloud mesh. */
@@ -287,6 +294,8 @@ export function createScenery(scene: Scene, detail: Readonly<SceneryDetail> = SC
   );
   houses.frustumCulled = false;
   scene.add(houses);
+  const placedTrees = culledInstances(trees),
+    placedHouses = culledInstances(houses);
   const leafColours = [0x3f7a36, 0x4f8a3c, 0x37703a, 0x5f9440].map((c) => new Color(c));
   const houseColours = [0xe8dcc4, 0xd9c7a5, 0xf0ece2, 0xc9b79a].map((c) => new Color(c));
   const m4 = new Matrix4(),
@@ -383,6 +392,8 @@ export function createScenery(scene: Scene, detail: Readonly<SceneryDetail> = SC
     houses.count = houseCount;
     houses.instanceMatrix.needsUpdate = true;
     if (houses.instanceColor) houses.instanceColor.needsUpdate = true;
+    placedTrees.keep(treeCount);
+    placedHouses.keep(houseCount);
   }
 
   // The runway: a strip of asphalt draped over the ground, with a white centre line and threshold bars.
@@ -442,9 +453,11 @@ export function createScenery(scene: Scene, detail: Readonly<SceneryDetail> = SC
     for (const b of bars) b.dispose();
   }
   let groundCentre: [number, number] | null = null;
+  const viewFrustum = new Frustum(),
+    viewMatrix = new Matrix4();
 
   return {
-    update(camera, aircraft) {
+    update(camera, aircraft, view) {
       sky.position.copy(camera);
       sun.position.copy(sunDir).multiplyScalar(18_000).add(camera);
       glow.position.copy(sunDir).multiplyScalar(18_500).add(camera);
@@ -462,6 +475,11 @@ export function createScenery(scene: Scene, detail: Readonly<SceneryDetail> = SC
       const ci = Math.floor(aircraft.x / CLOUD_CELL),
         cj = Math.floor(aircraft.z / CLOUD_CELL);
       if (!cloudCell || Math.abs(ci - cloudCell[0]) > 1 || Math.abs(cj - cloudCell[1]) > 1) rebuildClouds(ci, cj);
+      if (view) {
+        viewFrustum.setFromProjectionMatrix(viewMatrix.multiplyMatrices(view.projectionMatrix, view.matrixWorldInverse));
+        placedTrees.cull(viewFrustum);
+        placedHouses.cull(viewFrustum);
+      }
     },
     setTerrain(t, s) {
       terrain = t;
@@ -473,5 +491,48 @@ export function createScenery(scene: Scene, detail: Readonly<SceneryDetail> = SC
     cloudPuffs: () => puffs,
     counts: () => ({ trees: treeCount, houses: houseCount, puffs, cloudLow, cloudHigh }),
     runway: () => ({ ...field }),
+  };
+}
+
+/**
+ * Per-instance view culling of an instanced mesh (three.js culls an instanced mesh as one whole, and
+ * the trees and houses ring the aircraft, so nearly all of them were drawn out of view): `keep` takes
+ * a copy of the first `n` instances as placed, `cull` hands the GPU only those whose bounding sphere
+ * (the geometry's, scaled by the instance's largest axis) meets the frustum, in placed order.
+ */
+function culledInstances(mesh: InstancedMesh): { keep(n: number): void; cull(frustum: Frustum): void } {
+  const matrices = new Float32Array(mesh.instanceMatrix.array.length);
+  let colours: Float32Array | null = null;
+  let placed = 0;
+  mesh.geometry.computeBoundingSphere();
+  const local = mesh.geometry.boundingSphere!.clone();
+  const sphere = new Sphere(),
+    m = new Matrix4();
+  return {
+    keep(n) {
+      placed = n;
+      matrices.set(mesh.instanceMatrix.array.subarray(0, 16 * n));
+      const c = mesh.instanceColor;
+      if (c) {
+        colours ??= new Float32Array(c.array.length);
+        colours.set(c.array.subarray(0, 3 * n));
+      }
+    },
+    cull(frustum) {
+      const out = mesh.instanceMatrix.array as Float32Array,
+        outColours = mesh.instanceColor?.array as Float32Array | undefined;
+      let n = 0;
+      for (let i = 0; i < placed; i++) {
+        m.fromArray(matrices, 16 * i);
+        sphere.copy(local).applyMatrix4(m);
+        if (!frustum.intersectsSphere(sphere)) continue;
+        out.set(matrices.subarray(16 * i, 16 * i + 16), 16 * n);
+        if (outColours && colours) outColours.set(colours.subarray(3 * i, 3 * i + 3), 3 * n);
+        n++;
+      }
+      mesh.count = n;
+      mesh.instanceMatrix.needsUpdate = true;
+      if (mesh.instanceColor) mesh.instanceColor.needsUpdate = true;
+    },
   };
 }

@@ -119,6 +119,7 @@ import {
   slideSpeed,
   topFace,
   torqueCouple,
+  WALL_HALF_THICKNESS,
   WALL_HEIGHT,
   YawKeeper,
 } from './scene';
@@ -2023,6 +2024,14 @@ function fitBesideDrawer(): void {
         ay = Math.min(ay, corner.y);
         by = Math.max(by, corner.y);
       }
+  // Under the net (a phone held upright) the height is the floor's, but the width is the walls' outer
+  // tops and feet: the side walls lean out towards the camera and were cut off at the screen's sides.
+  let wx = 0;
+  if (below > 0) {
+    const outer = ROOM_HALF + 2 * WALL_HALF_THICKNESS;
+    for (const x of [-outer, outer])
+      for (const y of [0, WALL_HEIGHT]) for (const z of [-outer, outer]) wx = Math.max(wx, Math.abs(corner.set(x, y, z).project(cam).x));
+  }
   if (covered > 0) {
     // The free part of the stage in normalised device x: [-1, r].
     const r = 1 - (2 * covered) / c.width;
@@ -2034,7 +2043,7 @@ function fitBesideDrawer(): void {
     // The free part of the stage in normalised device y: [l, r] (below the net, above the touch card).
     const r = 1 - (2 * below) / c.height,
       l = -1 + (2 * touchCardSpace) / c.height;
-    const k = Math.min(1, (0.98 * (r - l)) / (by - ay));
+    const k = Math.min(1, (0.98 * (r - l)) / (by - ay), 0.98 / wx);
     const shift = (r + l) / 2 - (k * (ay + by)) / 2;
     cam.zoom = k;
     cam.setViewOffset(c.width, c.height, 0, (shift * c.height) / 2, c.width, c.height);

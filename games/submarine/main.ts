@@ -187,8 +187,14 @@ let aimSwitchedAt = Number.NEGATIVE_INFINITY;
 const BRAKE_HINT = 'let go early; Astern brakes';
 /** The hint shows while the target is at most this far ahead along the heading, m, ... */
 const BRAKE_HINT_RANGE = 40;
-/** ... and the boat goes ahead faster than this, m/s. */
+/** ... and the boat goes ahead faster than this, m/s, ... */
 const BRAKE_HINT_SPEED = 6;
+/**
+ * ... on a course (the line of its velocity) that passes this close to the target, m: within the
+ * catch ring (BEACON_CATCH) and half as much again. A boat on the surface above a target 26 m or
+ * more down glides over it, so the hint would not apply.
+ */
+const BRAKE_HINT_COURSE = 1.5 * BEACON_CATCH;
 /** Times the hint comes on in a page, at most (a newcomer's lesson, not a nag). */
 const BRAKE_HINT_MAX = 3;
 /** Times the brake hint came on, and whether it shows now. */
@@ -2124,13 +2130,19 @@ function draw(): void {
     // A mine on the way is ringed where it is, and a mine on the boat's course is told by the hull
     // (drawMineWarning), where the player looks: the pointer at the screen's edge tells only the ridge.
     pointer.text = beaconLabel(wx - hxw, wy - hyw, c.Angle.value[e]!, ridge, '', beaconName(aim.index));
-    // Coming in fast with the target near ahead (no ridge line to show): the brake hint as the
+    // Coming in fast with the target near ahead and on the course (no ridge line to show): the brake hint as the
     // label's second line, each time it starts until it has come on BRAKE_HINT_MAX times.
     const ca = Math.cos(c.Angle.value[e]!),
       sa = Math.sin(c.Angle.value[e]!);
     const along = (wx - hxw) * ca + (wy - hyw) * sa,
       vAlong = c.Velocity.x[e]! * ca + c.Velocity.y[e]! * sa;
-    const fast = !ridge && !state.over && along > 0 && along < BRAKE_HINT_RANGE && vAlong > BRAKE_HINT_SPEED;
+    const vx = c.Velocity.x[e]!,
+      vy = c.Velocity.y[e]!,
+      speed = Math.hypot(vx, vy);
+    // How far the target lies off the course: the distance from it to the velocity's line.
+    const offCourse = speed > 0 ? Math.abs((wx - hxw) * vy - (wy - hyw) * vx) / speed : Number.POSITIVE_INFINITY;
+    const fast =
+      !ridge && !state.over && along > 0 && along < BRAKE_HINT_RANGE && vAlong > BRAKE_HINT_SPEED && offCourse < BRAKE_HINT_COURSE;
     if (!fast) brakeHint.on = false;
     else if (!brakeHint.on && brakeHint.shown < BRAKE_HINT_MAX) {
       brakeHint.on = true;

@@ -218,6 +218,46 @@ describe('black hole, the ready moment', () => {
   });
 });
 
+describe('black hole, the start pad', () => {
+  it('↓ held on the pad leaves the ship parked there: no "Lost in space", no reset, for 2.5 s of game time', async () => {
+    // A stranger's first key was ↓: the ship flew off the field's foot in under 1 s.
+    type Bh = {
+      reset(): void;
+      bh: {
+        ship: number;
+        resets: number;
+        message: string;
+        start: number[];
+        world: { steps: number; components: Record<string, { y: Float64Array }> };
+      };
+      level: { parked: boolean };
+    };
+    // A page of its own: keys the other cases pressed on the shared one must not steer this ship.
+    const p = await h.openGame('black-hole', { query: { level: 1 } });
+    const before = await p.page.evaluate(() => {
+      const w = window.game as unknown as Bh;
+      return { resets: w.bh.resets, steps: w.bh.world.steps };
+    });
+    await p.page.keyboard.down('ArrowDown');
+    // The ready moment (1 s) and then 1.5 s of ↓ held, at 60 steps a second.
+    await p.waitFor((n) => (window.game as unknown as Bh).bh.world.steps >= n, before.steps + 150, 30_000);
+    const after = await p.page.evaluate(() => {
+      const w = window.game as unknown as Bh;
+      return {
+        resets: w.bh.resets,
+        message: w.bh.message,
+        parked: w.level.parked,
+        dy: w.bh.world.components.Position!.y[w.bh.ship % 2 ** 25]! - w.bh.start[1]!,
+      };
+    });
+    await p.page.keyboard.up('ArrowDown');
+    expect(after.message).not.toMatch(/Lost in space/);
+    expect([after.resets, after.parked, after.dy]).toEqual([before.resets, true, 0]);
+    expect(p.errors).toEqual([]);
+    await p.close();
+  });
+});
+
 describe('black hole, between levels', () => {
   it('a cleared level takes its holes off the field (drawn dimmed) while the ship waits; Enter lays out the next', async () => {
     type Bh = BlackHolePage & {
@@ -954,4 +994,43 @@ describe.each([
       await p.close();
     }
   }, 300_000);
+});
+
+describe('black hole, a phone played with keys', () => {
+  it('a clear fades the touch card, which lay over the "+N" rising under the finish line', async () => {
+    // A phone with a keyboard: no touch on the stage ever fades the card (it stays 9 s), and on a
+    // phone the card sits just under the finish line, where the clear's points show.
+    const p = await h.openGame('black-hole', { viewport: { width: 390, height: 844 }, touch: true, query: { level: 1 } });
+    type Bh = {
+      bh: { ship: number; lineY: number; world: { components: Record<string, { y: Float64Array; x: Float64Array }> } };
+      level: { parked: boolean; waiting: boolean };
+    };
+    const shown = await p.waitFor(() => {
+      const card = document.querySelector('[data-hud="touch-hint"]');
+      return card && !card.classList.contains('bp-gone') ? true : null;
+    }, null);
+    expect(shown).toBe(true);
+    // The ship put just under the line, climbing: the next step clears level 1.
+    await p.page.evaluate(() => {
+      const w = window.game as unknown as Bh;
+      const c = w.bh.world.components,
+        s = w.bh.ship % 2 ** 25;
+      w.level.parked = false;
+      c.Position!.y[s] = c.PreviousPosition!.y[s] = w.bh.lineY - 0.3;
+      c.Velocity!.x[s] = 0;
+      c.Velocity!.y[s] = 4;
+    });
+    await p.waitFor(() => (window.game as unknown as Bh).level.waiting, null);
+    // Gone (or fading) within a second of the clear, well before its own 9 s are up.
+    await p.waitFor(
+      () => {
+        const card = document.querySelector('[data-hud="touch-hint"]');
+        return !card || card.classList.contains('bp-gone');
+      },
+      null,
+      1000,
+    );
+    expect(p.errors).toEqual([]);
+    await p.close();
+  });
 });

@@ -50,6 +50,31 @@ describe('phone controls', () => {
     const ground = await g.page.evaluate(() => (window.game as unknown as Marker).scenery());
     expect(ground.trees).toBeGreaterThan(300);
     expect(ground.houses).toBeGreaterThan(20);
+    // Only the trees and houses in view go to the GPU (they ring the aircraft out to 1.7 km, and the
+    // view takes in a narrow wedge of that ring): some drawn, far fewer than placed.
+    const drawn = await g.page.evaluate(() => {
+      const counts: number[] = [];
+      type O = { isInstancedMesh?: boolean; count: number };
+      (window.game as unknown as { app: { scene: { traverse(f: (o: O) => void): void } } }).app.scene.traverse((o) => {
+        if (o.isInstancedMesh && o.count > 0) counts.push(o.count);
+      });
+      return counts;
+    });
+    const most = Math.max(...drawn);
+    expect(most).toBeGreaterThan(0);
+    expect(most).toBeLessThan(ground.trees / 4);
+    // Each legend line (the touch hint card and the help) names its gesture once: no word of three
+    // letters or more in both the gesture and what it does ("Camera  camera: chase / cockpit").
+    const doubled = await g.page.evaluate(() =>
+      [...document.querySelectorAll('.bp-touch-hint > div, .bp-help > div > *')]
+        .filter((row) => row.children.length === 2)
+        .map((row) => [...row.children].map((c) => (c.textContent ?? '').toLowerCase().match(/[a-z]{3,}/g) ?? ([] as string[])))
+        .filter(([gesture, action]) => gesture!.some((w) => action!.includes(w)))
+        .map((words) => words.flat().join(' ')),
+    );
+    const rows = await g.page.locator('.bp-touch-hint > div').count();
+    expect(rows).toBeGreaterThan(1);
+    expect(doubled).toEqual([]);
     const stick = (await g.page.getByRole('slider', { name: 'stick: bank and climb' }).boundingBox())!;
     const t0 = await read(g, 'state.throttle');
     const cx = stick.x + stick.width / 2,
@@ -529,6 +554,21 @@ describe('phone controls', () => {
       game.paused = true;
       for (let i = 0; i < 150; i++) game.step();
     });
+    // The room fits the phone's width: the side walls' outer edges (3.4 m out, at their feet and
+    // tops, front and back) lie inside the canvas (they leaned out past its sides).
+    const canvas = (await g.page.locator('canvas').first().boundingBox())!;
+    for (const [x, y, z] of [
+      [-3.4, 1.5, 3.4],
+      [3.4, 1.5, 3.4],
+      [-3.4, 0, 3.4],
+      [3.4, 0, 3.4],
+      [-3.4, 1.5, -3.4],
+      [3.4, 1.5, -3.4],
+    ] as const) {
+      const p = await stillPageOf(g, x, y, z);
+      expect(p.x, `wall edge ${x}, ${y}, ${z}`).toBeGreaterThanOrEqual(canvas.x);
+      expect(p.x, `wall edge ${x}, ${y}, ${z}`).toBeLessThanOrEqual(canvas.x + canvas.width);
+    }
     const cubeAt = () =>
       g.page.evaluate(() => {
         type V = { x: number; y: number; project(c: unknown): V };

@@ -1189,21 +1189,21 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     const g = await fresh(6);
     type P = Sub & { beaconPointer(): { index: number; text: string; brakeHints: number } };
     // Paused: the label is drawn from the hull's place and velocity as set (nothing moves).
-    const at = async (before: number, speed: number) => {
+    const at = async (before: number, speed: number, above = 0) => {
       await g.page.evaluate(
-        ([before, speed]) => {
+        ([before, speed, above]) => {
           const w = window.game as unknown as P;
           w.paused = true;
           const c = w.world.components,
             e = w.hull(),
             b = w.handles().beacons;
           c.Position.x[e] = b[0]! - before!;
-          c.Position.y[e] = b[1]!;
+          c.Position.y[e] = b[1]! + above!;
           c.Velocity.x[e] = speed!;
           c.Velocity.y[e] = 0;
           c.Angle.value[e] = 0;
         },
-        [before, speed],
+        [before, speed, above],
       );
       await g.runFrames(3, { unpause: false });
       return g.page.evaluate(() => (window.game as unknown as P).beaconPointer());
@@ -1211,6 +1211,11 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     const hint = 'let go early; Astern brakes';
     expect((await at(30, 3)).text).not.toContain(hint); // slow
     expect((await at(70, 10)).text).not.toContain(hint); // far
+    // Level and fast, 30 m short, but 20 m above the target, or on the surface over it (26.9 m
+    // down): the course passes over it, there is nothing to overshoot.
+    const depth = await g.page.evaluate(() => -(window.game as unknown as P).handles().beacons[1]!);
+    expect(depth).toBeGreaterThan(20);
+    for (const above of [20, depth - 0.5]) expect((await at(30, 10, above)).text, `${above} m above`).not.toContain(hint);
     for (let i = 1; i <= 3; i++) {
       const p = await at(30, 10);
       expect(p.index).toBe(0);

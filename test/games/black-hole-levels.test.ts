@@ -19,6 +19,7 @@ import {
   levelPoints,
   levelSpec,
   POINTS_PER_LEVEL,
+  padThrust,
   startLevel,
   stepLevel,
   WALL_GAP,
@@ -306,8 +307,9 @@ describe('levels', () => {
             e = stepLevel(g, run);
           }
           expect(e, where).toBe('none');
-          // And it did leave the pad.
-          expect(shipY(g), where).toBeGreaterThan(g.start[1] + 2);
+          // And it did leave the pad, but for ↓, which the pad under the ship takes (it stays parked).
+          if (tap === 'down') expect([shipY(g), run.parked], where).toEqual([g.start[1], true]);
+          else expect(shipY(g), where).toBeGreaterThan(g.start[1] + 2);
         }
   });
 
@@ -390,7 +392,10 @@ describe('levels', () => {
         expect(Math.abs(P.y[s]! - path[2 * k + 1]!), where).toBeLessThanOrEqual(1e-9);
       }
       if (e === 'fell' && k + 1 < f.steps) return;
-      expect([e, k + 1], where).toEqual([{ cleared: 'cleared', fell: 'fell', left: 'lost', timeout: 'none' }[f.end], f.steps]);
+      expect([e, e === 'none' ? k : k + 1], where).toEqual([
+        { cleared: 'cleared', fell: 'fell', left: 'lost', timeout: 'none' }[f.end],
+        f.steps,
+      ]);
     };
     for (const [field, levels] of [
       [FIELD, [1, 2, 6, 8]],
@@ -410,8 +415,9 @@ describe('levels', () => {
       P.y[slotOf(h)] = 12;
     }
     flyBoth(g, run, 'up', 'holes moved aside');
-    // Flights ended every way a held flight can but by timing out (none hovers for 12 s).
-    expect([...ends].sort()).toEqual(['cleared', 'fell', 'left']);
+    // Flights ended every way a held flight can; the only one timing out is ↓, which leaves the ship
+    // parked on the pad (none that flies hovers for 12 s).
+    expect([...ends].sort()).toEqual(['cleared', 'fell', 'left', 'timeout']);
   });
 
   test('points: 100 times the level plus a point for every whole second under 30 s, the same on every field', () => {
@@ -669,7 +675,7 @@ describe('levels', () => {
     expect(run.fuelLeft).toBe(levelSpec(8).fuel);
     for (let k = 0; k < 30; k++) stepLevel(g, run);
     expect(run.fuelLeft).toBe(levelSpec(8).fuel);
-    setThrust(g, 'down'); // away from the line, so the level does not end
+    setThrust(g, 'left'); // sideways, so the level does not end (↓ on the pad would not thrust)
     const steps = Math.ceil(run.fuelLeft / g.world.dt) + 5;
     for (let k = 0; k < steps && g.thrust !== 'none'; k++) stepLevel(g, run);
     expect(run.fuelLeft).toBe(0);
@@ -733,5 +739,53 @@ describe('levels', () => {
         expect(g.world.components.Position.y[s], `level ${level}`).toBeCloseTo(g.start[1], 9);
       }
     }
+  });
+  test('↓ on the start pad is harmless: the parked ship stays put, burns no fuel and is never lost; ↙ is ←; flight elsewhere keeps ↓', () => {
+    // A stranger's first key was ↓: from 1.5 m up at 6 m/s^2 the ship left the field's foot in under
+    // 1 s ("Lost in space"). The pad is under the ship: its downward part is dropped while parked.
+    for (const level of [1, 2, 8]) {
+      const g = createBlackHoleGame({ seed: 5 });
+      const run = startLevel(g, level);
+      const fuel = run.fuelLeft,
+        resets = g.resets;
+      setThrust(g, 'down');
+      const events = new Set<string>();
+      for (let k = 0; k < 180; k++) events.add(stepLevel(g, run)); // 3 s at 60 Hz
+      const s = slotOf(g.ship);
+      expect([...events], `level ${level}`).toEqual(['none']);
+      expect([run.parked, run.fuelLeft, g.resets, g.thrust], `level ${level}`).toEqual([true, fuel, resets, 'none']);
+      expect(g.world.components.Position.y[s], `level ${level}`).toBeCloseTo(g.start[1], 9);
+      expect(g.world.components.Velocity.y[s], `level ${level}`).toBe(0);
+    }
+    // ↙ from the pad flies exactly as ← does (bit for bit: the same thrust from the first step).
+    const flown = (t: Thrust): number[] => {
+      const g = createBlackHoleGame({ seed: 5 });
+      const run = startLevel(g, 1);
+      setThrust(g, t);
+      for (let k = 0; k < 30; k++) stepLevel(g, run);
+      const s = slotOf(g.ship);
+      return [g.world.components.Position.x[s]!, g.world.components.Position.y[s]!];
+    };
+    expect(flown('down-left')).toEqual(flown('left'));
+    expect(flown('left')[0]).toBeLessThan(START[0] - 0.05);
+    // Off the pad ↓ thrusts as before: after 1 s of ↑, 0.8 s of ↓ (the engine turns round in
+    // 2 a_T / 18 m/s^3 = 0.67 s, `rampThrust`) has the engine pushing straight down at full a_T.
+    const g = createBlackHoleGame({ seed: 5 });
+    const run = startLevel(g, 1);
+    setThrust(g, 'up');
+    const events = new Set<string>();
+    for (let k = 0; k < 60; k++) events.add(stepLevel(g, run));
+    setThrust(g, 'down');
+    for (let k = 0; k < 48; k++) events.add(stepLevel(g, run));
+    expect([[...events], run.parked, g.thrust]).toEqual([['none'], false, 'down']);
+    expect(g.thrustVec[0]).toBe(0);
+    expect(g.thrustVec[1]).toBeCloseTo(-g.params.thrust, 12);
+    expect([padThrust('down'), padThrust('down-right'), padThrust('up-left'), padThrust('none')]).toEqual([
+      'none',
+      'right',
+      'up-left',
+      'none',
+    ]);
+    expect(() => padThrust('sideways' as Thrust)).toThrow(/padThrust: thrust must be a Thrust, got "sideways"/);
   });
 });
