@@ -155,26 +155,52 @@ function classifyColliders(world: PhysicsWorld, st: ShapeCollisionState): number
 /**
  * gatherColliders, then: each collider's start-of-step transform, the shape whose geometry it shares
  * (`geometryOf`), its speculative distance and size, and its fattened box. Colliders from
- * `shapeCount` on are ball bodies.
+ * `shapeCount` on are ball bodies. Everything outside the loop is read or computed here and the loop
+ * is `boundRange`, whose body reads nothing before it: a function called once a step runs its first
+ * call's first lines before V8 gives it type feedback, and code compiled while that call's loop ran
+ * lacked feedback for them and was thrown away at the next step's call.
  */
 function boundColliders(world: PhysicsWorld, st: ShapeCollisionState, shapeCount: number): void {
   const c = world.components,
-    cs = world.collision,
     sc = st.scratch,
-    n = sc.count;
-  const S = c.Shape;
-  const ox = c.PreviousPosition.x,
-    oy = c.PreviousPosition.y;
-  const vx = c.Velocity.x,
-    vy = c.Velocity.y;
-  const h = world.h,
-    spec0 = cs.settings.speculativeDistance;
-  const halfSpec = 0.5 * spec0;
-  const SX = S.vx,
-    SY = S.vy,
-    R = S.radius,
-    CNT = S.count;
+    n = sc.count,
+    spec0 = world.collision.settings.speculativeDistance;
   const geometry = roomForGeometry(n);
+  boundRange(
+    st,
+    sc,
+    n,
+    shapeCount,
+    geometry,
+    c.Shape,
+    c.Ball,
+    c.PreviousPosition.x,
+    c.PreviousPosition.y,
+    c.Velocity.x,
+    c.Velocity.y,
+    world.h,
+    spec0,
+    0.5 * spec0,
+  );
+}
+
+/** boundColliders' loop over its `n` colliders (see there), on the arrays and values it passes. */
+function boundRange(
+  st: ShapeCollisionState,
+  sc: ShapeCollisionState['scratch'],
+  n: number,
+  shapeCount: number,
+  geometry: Int32Array,
+  S: PhysicsWorld['components']['Shape'],
+  ball: PhysicsWorld['components']['Ball'],
+  ox: Float64Array,
+  oy: Float64Array,
+  vx: Float64Array,
+  vy: Float64Array,
+  h: number,
+  spec0: number,
+  halfSpec: number,
+): void {
   let shared = -1; // the shape whose geometry the last run of colliders has
   for (let i = 0; i < n; i++) {
     const isBall = i >= shapeCount;
@@ -198,7 +224,7 @@ function boundColliders(world: PhysicsWorld, st: ShapeCollisionState, shapeCount
       r: number;
     if (isBall) {
       geometry[i] = -1;
-      r = c.Ball.radius[b]!;
+      r = ball.radius[b]!;
       x0 = x;
       x1 = x;
       y0 = y;
@@ -206,11 +232,11 @@ function boundColliders(world: PhysicsWorld, st: ShapeCollisionState, shapeCount
     } else {
       if (shared < 0 || !sameGeometry(S, e, shared)) shared = e;
       geometry[i] = shared;
-      r = R[e]!;
+      r = S.radius[e]!;
       const o = SHAPE_STRIDE * e;
-      for (let k = 0, m = CNT[e]!; k < m; k++) {
-        const lx = SX[o + k]!,
-          ly = SY[o + k]!;
+      for (let k = 0, m = S.count[e]!; k < m; k++) {
+        const lx = S.vx[o + k]!,
+          ly = S.vy[o + k]!;
         const wx = x + co * lx - si * ly,
           wy = y + si * lx + co * ly;
         if (wx < x0) x0 = wx;
