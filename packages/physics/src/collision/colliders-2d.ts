@@ -104,6 +104,9 @@ function classifyShapeBody(world: PhysicsWorld, st: ShapeCollisionState, b: numb
  * @category Collision
  */
 export function gatherColliders(world: PhysicsWorld, st: ShapeCollisionState): void {
+  // Here, not in classifyColliders: code V8 compiled of that loop with this call inlined was thrown
+  // away a few steps in, the call's own small functions having no type feedback yet.
+  lookUpBodyBits(world);
   const shapeCount = classifyColliders(world, st);
   // With no collider moving no pair is searched (findPairs) and nothing reads the poses and boxes (the
   // static contacts and the sweeps are of dynamic bodies): a scene asleep skips them.
@@ -113,6 +116,7 @@ export function gatherColliders(world: PhysicsWorld, st: ShapeCollisionState): v
 /**
  * gatherColliders, first: lists the colliders (sc.count, shape, body), classifies their bodies, sets
  * their flags and `anyMoving`. Returns how many of them are shape entities (the ball bodies follow).
+ * Reads the body bits gatherColliders looked up (lookUpBodyBits) just before.
  */
 function classifyColliders(world: PhysicsWorld, st: ShapeCollisionState): number {
   const c = world.components,
@@ -129,7 +133,6 @@ function classifyColliders(world: PhysicsWorld, st: ShapeCollisionState): number
   const mark = ++st.bodyMark;
   st.anyMoving = false;
   const bodyMarks = st.bodyMarks;
-  lookUpBodyBits(world);
   for (let i = 0; i < n; i++) {
     const isBall = i >= shapes.length;
     const e = isBall ? balls[i - shapes.length]! : shapes[i]!;
