@@ -176,6 +176,10 @@ function boundColliders(world: PhysicsWorld, st: ShapeCollisionState, shapeCount
     shapeCount,
     geometry,
     c.Shape,
+    c.Shape.vx,
+    c.Shape.vy,
+    c.Shape.radius,
+    c.Shape.count,
     c.Ball,
     c.PreviousPosition.x,
     c.PreviousPosition.y,
@@ -195,6 +199,10 @@ function boundRange(
   shapeCount: number,
   geometry: Int32Array,
   S: PhysicsWorld['components']['Shape'],
+  SX: PhysicsWorld['components']['Shape']['vx'],
+  SY: PhysicsWorld['components']['Shape']['vy'],
+  R: PhysicsWorld['components']['Shape']['radius'],
+  CNT: PhysicsWorld['components']['Shape']['count'],
   ball: PhysicsWorld['components']['Ball'],
   ox: Float64Array,
   oy: Float64Array,
@@ -235,11 +243,11 @@ function boundRange(
     } else {
       if (shared < 0 || !sameGeometry(S, e, shared)) shared = e;
       geometry[i] = shared;
-      r = S.radius[e]!;
+      r = R[e]!;
       const o = SHAPE_STRIDE * e;
-      for (let k = 0, m = S.count[e]!; k < m; k++) {
-        const lx = S.vx[o + k]!,
-          ly = S.vy[o + k]!;
+      for (let k = 0, m = CNT[e]!; k < m; k++) {
+        const lx = SX[o + k]!,
+          ly = SY[o + k]!;
         const wx = x + co * lx - si * ly,
           wy = y + si * lx + co * ly;
         if (wx < x0) x0 = wx;
