@@ -8,7 +8,8 @@
 import { createEntityIndex, createWorld, observe, onAdd, onRemove } from 'bitecs';
 import { allocateCollisionScratch, createCollisionState } from './collision/state.js';
 import { removeSpringsOf } from './forces/spring.js';
-import { wakeTouching } from './islands/sleep.js';
+import { makeIntegratorQueries } from './integrators/queries.js';
+import { makeSleepQueries, wakeTouching } from './islands/sleep.js';
 import { removeJointsOf } from './joints/api-2d.js';
 import {
   finishJoints,
@@ -21,6 +22,7 @@ import {
 } from './joints/solver-2d.js';
 import { Rng } from './math/rng.js';
 import { setRowFamily } from './solver/row-families.js';
+import { makeCheckQueries } from './step/finite.js';
 import { createStages, STAGES } from './step/stages.js';
 import { makeThreadPool } from './threads/pool-maker.js';
 import { shareStores } from './threads/shared-stores.js';
@@ -52,7 +54,7 @@ import {
   type StageTimings,
   type System,
 } from './world/options.js';
-import { addQueryCache } from './world/query.js';
+import { addQueryCache, query } from './world/query.js';
 import { createWorldScratch, type WorldScratch } from './world/scratch.js';
 import { markWritable } from './world/writable-fields.js';
 
@@ -257,6 +259,14 @@ function assemble(o: WorldSettings): PhysicsWorld {
   installDefaults(world);
   // bitecs' per-entity bookkeeping in fixed typed arrays, component Sets answered from the masks.
   useLeanEcsStorage(world, capacity);
+  // The queries the integrators, the state checks, the sleep stage and the 2D colliders ask every
+  // step, made while no entity exists: bitecs keeps them as bodies are added, where the first step,
+  // with the scene built, would fill each by a pass over every entity.
+  makeIntegratorQueries(world);
+  makeCheckQueries(world);
+  makeSleepQueries(world);
+  query(world, [world.components.Shape]);
+  query(world, [world.components.Position, world.components.Ball]);
   return world;
 }
 

@@ -104,6 +104,9 @@ function classifyShapeBody(world: PhysicsWorld, st: ShapeCollisionState, b: numb
  * @category Collision
  */
 export function gatherColliders(world: PhysicsWorld, st: ShapeCollisionState): void {
+  // Here, not in classifyColliders: code V8 compiled of that loop with this call inlined was thrown
+  // away a few steps in, the call's own small functions having no type feedback yet.
+  lookUpBodyBits(world);
   const shapeCount = classifyColliders(world, st);
   // With no collider moving no pair is searched (findPairs) and nothing reads the poses and boxes (the
   // static contacts and the sweeps are of dynamic bodies): a scene asleep skips them.
@@ -113,6 +116,7 @@ export function gatherColliders(world: PhysicsWorld, st: ShapeCollisionState): v
 /**
  * gatherColliders, first: lists the colliders (sc.count, shape, body), classifies their bodies, sets
  * their flags and `anyMoving`. Returns how many of them are shape entities (the ball bodies follow).
+ * Reads the body bits gatherColliders looked up (lookUpBodyBits) just before.
  */
 function classifyColliders(world: PhysicsWorld, st: ShapeCollisionState): number {
   const c = world.components,
@@ -129,7 +133,6 @@ function classifyColliders(world: PhysicsWorld, st: ShapeCollisionState): number
   const mark = ++st.bodyMark;
   st.anyMoving = false;
   const bodyMarks = st.bodyMarks;
-  lookUpBodyBits(world);
   for (let i = 0; i < n; i++) {
     const isBall = i >= shapes.length;
     const e = isBall ? balls[i - shapes.length]! : shapes[i]!;
@@ -155,26 +158,60 @@ function classifyColliders(world: PhysicsWorld, st: ShapeCollisionState): number
 /**
  * gatherColliders, then: each collider's start-of-step transform, the shape whose geometry it shares
  * (`geometryOf`), its speculative distance and size, and its fattened box. Colliders from
- * `shapeCount` on are ball bodies.
+ * `shapeCount` on are ball bodies. Everything outside the loop is read or computed here and the loop
+ * is `boundRange`, whose body reads nothing before it: a function called once a step runs its first
+ * call's first lines before V8 gives it type feedback, and code compiled while that call's loop ran
+ * lacked feedback for them and was thrown away at the next step's call.
  */
 function boundColliders(world: PhysicsWorld, st: ShapeCollisionState, shapeCount: number): void {
   const c = world.components,
-    cs = world.collision,
     sc = st.scratch,
-    n = sc.count;
-  const S = c.Shape;
-  const ox = c.PreviousPosition.x,
-    oy = c.PreviousPosition.y;
-  const vx = c.Velocity.x,
-    vy = c.Velocity.y;
-  const h = world.h,
-    spec0 = cs.settings.speculativeDistance;
-  const halfSpec = 0.5 * spec0;
-  const SX = S.vx,
-    SY = S.vy,
-    R = S.radius,
-    CNT = S.count;
+    n = sc.count,
+    spec0 = world.collision.settings.speculativeDistance;
   const geometry = roomForGeometry(n);
+  boundRange(
+    st,
+    sc,
+    n,
+    shapeCount,
+    geometry,
+    c.Shape,
+    c.Shape.vx,
+    c.Shape.vy,
+    c.Shape.radius,
+    c.Shape.count,
+    c.Ball,
+    c.PreviousPosition.x,
+    c.PreviousPosition.y,
+    c.Velocity.x,
+    c.Velocity.y,
+    world.h,
+    spec0,
+    0.5 * spec0,
+  );
+}
+
+/** boundColliders' loop over its `n` colliders (see there), on the arrays and values it passes. */
+function boundRange(
+  st: ShapeCollisionState,
+  sc: ShapeCollisionState['scratch'],
+  n: number,
+  shapeCount: number,
+  geometry: Int32Array,
+  S: PhysicsWorld['components']['Shape'],
+  SX: PhysicsWorld['components']['Shape']['vx'],
+  SY: PhysicsWorld['components']['Shape']['vy'],
+  R: PhysicsWorld['components']['Shape']['radius'],
+  CNT: PhysicsWorld['components']['Shape']['count'],
+  ball: PhysicsWorld['components']['Ball'],
+  ox: Float64Array,
+  oy: Float64Array,
+  vx: Float64Array,
+  vy: Float64Array,
+  h: number,
+  spec0: number,
+  halfSpec: number,
+): void {
   let shared = -1; // the shape whose geometry the last run of colliders has
   for (let i = 0; i < n; i++) {
     const isBall = i >= shapeCount;
@@ -198,7 +235,7 @@ function boundColliders(world: PhysicsWorld, st: ShapeCollisionState, shapeCount
       r: number;
     if (isBall) {
       geometry[i] = -1;
-      r = c.Ball.radius[b]!;
+      r = ball.radius[b]!;
       x0 = x;
       x1 = x;
       y0 = y;

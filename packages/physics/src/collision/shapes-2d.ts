@@ -72,10 +72,18 @@ export function shapeCollisionSystem(world: PhysicsWorld): void {
   // The contact count of the step's statistics: the ball contacts of this step (their buffer, which the
   // balls' narrowphase refills earlier in the collide stage and which stays empty in a world without
   // balls) and the 2D shape contact points (solver rows, static pairs included).
+  cs.stats.contacts = cs.contacts.count + manifoldPoints(st.manifolds);
+}
+
+/**
+ * The contact points of the manifolds in `m`. A function of its own: with this loop in it,
+ * shapeCollisionSystem (called once a step) was compiled by V8 a few steps in, with the once-a-step
+ * functions it calls inlined before they had type feedback, and thrown away at the next step.
+ */
+function manifoldPoints(m: ShapeCollisionState['manifolds']): number {
   let points = 0;
-  const m = st.manifolds;
   for (let i = 0; i < m.count; i++) points += m.pointCount[i]!;
-  cs.stats.contacts = cs.contacts.count + points;
+  return points;
 }
 
 /** Passes of the shape collision after which no more sleeping islands are woken within the step. */

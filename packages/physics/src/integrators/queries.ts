@@ -132,3 +132,22 @@ export function fusedQuadraticBodies(world: PhysicsWorld): QueryResult {
 export function fusedLinearBodies(world: PhysicsWorld): QueryResult {
   return query(world, fusedTermsOf(world)[2]);
 }
+
+/**
+ * Makes the integrators' queries of `world` (the lists above, of its dimension), for a world that has
+ * no entity yet: bitecs then keeps each list as bodies are added, where a query first asked by the
+ * first step, with the scene built, is filled by a pass over every entity in that step.
+ * createPhysicsWorld calls it. @category Integrators
+ */
+export function makeIntegratorQueries(world: PhysicsWorld): void {
+  forcedBodies(world);
+  freeBodies(world);
+  kinematicBodies(world);
+  torquedBodies(world);
+  spinningBodies(world);
+  simpleSpinningBodies(world);
+  if (world.dimensions === 3) tensorBodies(world);
+  fusedBareBodies(world);
+  fusedQuadraticBodies(world);
+  fusedLinearBodies(world);
+}

@@ -154,6 +154,21 @@ function sleepTerms(world: PhysicsWorld): SleepTerms {
 }
 
 /**
+ * Makes the sleep stage's queries of `world` (see sleepTerms) while it has no entity, so that its first
+ * step does not fill them (integrators/queries.ts makeIntegratorQueries). createPhysicsWorld calls it.
+ * @category Collision
+ */
+export function makeSleepQueries(world: PhysicsWorld): void {
+  const t = sleepTerms(world);
+  query(world, t.balls);
+  query(world, t.shaped);
+  if (world.dimensions === 3) query(world, t.shaped3D);
+  for (const terms of t.awake) query(world, terms);
+  query(world, t.spring);
+  query(world, t.sleeping);
+}
+
+/**
  * Stage 7: updates rest times and puts resting islands to sleep. Islands come from this step's
  * contacts between two dynamic bodies that carried a normal impulse; contacts with static geometry do
  * not join islands (a floor does not tie every pile together).

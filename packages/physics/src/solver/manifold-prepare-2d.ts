@@ -351,8 +351,20 @@ export function finishManifolds(world: PhysicsWorld): void {
   const ev = world.collision.events;
   beginTouches(world, st, ev.begin, st.manifolds, st.previous, st.manifolds.count);
   rotateManifolds(st);
-  endTouches(world, st, ev.end, st.previous, st.manifolds, st.lastCount);
+  const old = st.manifolds,
+    n = st.lastCount;
+  if (endedRows.length < n) endedRows = new Int32Array(Math.max(n, 2 * endedRows.length));
+  const ended = endedRows;
+  const count = endTouches(st, st.previous, old, n, ended);
+  for (let k = 0; k < count; k++) {
+    const i = ended[k]!;
+    if (keepWhileAsleep(world, old.shapeA[i]!, old.shapeB[i]!, old.bodyA[i]!, old.bodyB[i]!)) continue;
+    pushEvent(world, ev.end, old.shapeA[i]!, old.shapeB[i]!, old.bodyA[i]!, old.bodyB[i]!);
+  }
 }
+
+/** The rows of last step's manifolds whose touch ended this step, from endTouches; grown as needed. */
+let endedRows = new Int32Array(64);
 
 /**
  * The begin events of finishManifolds, before rotateManifolds: marks the `n` rows of `buf` (this
@@ -405,30 +417,28 @@ function beginTouches(
 }
 
 /**
- * The end events of finishManifolds, after rotateManifolds: pairs that touched last step and do not
- * now (`previous` is now this step's rows). A function of its own: a world's first step has no rows
- * of a step before, so this loop runs first in the second step, and inside finishManifolds (compiled
- * during the first step) its first run threw the compiled code away. The lists and buffers come as
- * arguments (`ends`: the end events, `now`: this step's rows, `old`: last step's `n` rows, in the
- * buffer just emptied): its first runs are compiled while its loop runs, before V8 keeps type feedback for it,
- * and loads before the loop would lack it.
+ * The ends of touch for finishManifolds, after rotateManifolds: writes to `ended` the rows of `old`
+ * (last step's `n` rows, in the buffer just emptied) that touched and do not touch in `now` (this
+ * step's rows), in order, and returns their count; finishManifolds then writes their end events (or
+ * keeps them for sleeping bodies). A function of its own: a world's first step has no rows of a step
+ * before, so this loop runs first in the second step, and inside finishManifolds (compiled during the
+ * first step) its first run threw the compiled code away. The buffers come as arguments and nothing
+ * is read before the loop: its first runs are compiled while its loop runs, before V8 keeps type
+ * feedback for it, and loads before the loop would lack it. No call is made for an ended row: the
+ * first ended touch comes steps after V8 compiled the loop, and a call there, never run before, had
+ * no type feedback and threw the code away.
  */
-function endTouches(
-  world: PhysicsWorld,
-  st: ShapeCollisionState,
-  ends: ContactEventList,
-  now: ManifoldBuffer,
-  old: ManifoldBuffer,
-  n: number,
-): void {
+function endTouches(st: ShapeCollisionState, now: ManifoldBuffer, old: ManifoldBuffer, n: number, ended: Int32Array): number {
   let shift = 0; // see previousRow
+  let count = 0;
   for (let i = 0; i < n; i++) {
     if (old.touching[i] !== 1) continue;
     const j = previousRow(st, i + shift, old.shapeA[i]!, old.shapeB[i]!);
     const step = j - i;
     if (j >= 0) shift = step;
-    if (j >= 0 && now.touching[j] === 1 && now.stampB[j] === old.stampB[i] && now.stampA[j] === old.stampA[i]) continue;
-    if (keepWhileAsleep(world, old.shapeA[i]!, old.shapeB[i]!, old.bodyA[i]!, old.bodyB[i]!)) continue;
-    pushEvent(world, ends, old.shapeA[i]!, old.shapeB[i]!, old.bodyA[i]!, old.bodyB[i]!);
+    const held = j >= 0 && now.touching[j] === 1 && now.stampB[j] === old.stampB[i] && now.stampA[j] === old.stampA[i];
+    ended[count] = i;
+    count += held ? 0 : 1;
   }
+  return count;
 }

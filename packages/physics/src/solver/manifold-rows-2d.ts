@@ -287,9 +287,12 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean)
       tb = ib === 0 ? 0 : ex[ib * BX_STRIDE + BX_ROT_Z]! - base[ib]!;
     const nx = R[r + MR_NX]!,
       ny = R[r + MR_NY]!;
-    const rigid = rigidPartner(mA, mB) === 1;
-    const biasRate = rigid ? T[SN_RIGID_BIAS]! : T[SN_BIAS]!,
-      scales = rigid ? SN_SCALES + SN_RIGID : SN_SCALES;
+    // 1 against an infinite-mass partner (solver/rigid-partner.ts), else 0: the bias and scales are read
+    // at an index, not in a branch, so the load has type feedback from the first manifold whichever
+    // kind that is (a branch first taken after V8 compiled this loop threw its code away).
+    const rigid = rigidPartner(mA, mB);
+    const biasRate = T[SN_BIAS + rigid * (SN_RIGID_BIAS - SN_BIAS)]!,
+      scales = SN_SCALES + SN_RIGID * rigid;
     const two = R[r + MR_POINT_COUNT] === 2;
     const o1 = r + MR_POINT0,
       o2 = o1 + MP_STRIDE;

@@ -36,12 +36,31 @@ export function joinSolverBodies(
   n: number,
   count: number,
 ): number {
-  const mark = cs.solverMark,
-    index = cs.solverIndex,
-    stamp = cs.solverStamp,
-    type = cs.bodyType;
   // Room for both bodies of every pair, made before the loop (see withRoom).
   const list = withRoom(cs.solverBodies, count + 2 * n);
+  cs.solverBodies = list;
+  return joinRange(cs.solverMark, cs.solverIndex, cs.solverStamp, cs.bodyType, list, A, B, IA, IB, n, count);
+}
+
+/**
+ * joinSolverBodies' loop (see there), on the arrays it passes; nothing is read before the loop: a
+ * function called once a step runs its first call's first lines before V8 gives it type feedback, and
+ * code compiled while that call's loop ran lacked feedback for them and was thrown away at the next
+ * step's call.
+ */
+function joinRange(
+  mark: Float64Array,
+  index: Int32Array,
+  stamp: number,
+  type: Uint8Array,
+  list: Int32Array,
+  A: Int32Array,
+  B: Int32Array,
+  IA: Int32Array,
+  IB: Int32Array,
+  n: number,
+  count: number,
+): number {
   for (let i = 0; i < n; i++) {
     for (let side = 0; side < 2; side++) {
       const e = side === 0 ? A[i]! : B[i]!;
@@ -59,6 +78,5 @@ export function joinSolverBodies(
       else IB[i] = k;
     }
   }
-  cs.solverBodies = list;
   return count;
 }

@@ -206,6 +206,19 @@ function termsOf(world: PhysicsWorld): CheckTerms {
 }
 
 /**
+ * Makes the checks' queries of `world` (see termsOf) while it has no entity, so that the first step
+ * does not fill them (integrators/queries.ts makeIntegratorQueries). createPhysicsWorld calls it.
+ * @category World and step
+ */
+export function makeCheckQueries(world: PhysicsWorld): void {
+  const t = termsOf(world);
+  query(world, t.force);
+  query(world, t.torque);
+  query(world, t.linear);
+  query(world, t.angular);
+}
+
+/**
  * Checks what `stage` may have written (see the module comment): the force and torque accumulators
  * after `forces`, the angular state if `level` >= 1 and the linear state if `level` is 2. Throws a NonFiniteStateError naming the first
  * entity (its handle) and field that is NaN or infinite, and the stage.
