@@ -136,8 +136,9 @@ try {
         { encoding: 'utf8', maxBuffer: 1 << 28 },
       );
       const lines = out.trimEnd().split('\n');
-      // The result is the last line, but V8's verbose deopt trace may write the start of a line before it.
-      const last = lines.at(-1);
+      // The result is the last line holding '{"', but V8's verbose deopt trace may write the start of a
+      // line before it, or a line of its own (marking dependent code) after it.
+      const last = lines.findLast((line) => line.includes('{"')) ?? '';
       const result = JSON.parse(last.slice(Math.max(0, last.indexOf('{"'))));
       if (result.error) throw new Error(result.error);
       t.results.push(result);
