@@ -454,8 +454,6 @@ shell.onWorldChange(() => {
   paint();
   shotView = false;
   framedFor = '';
-  levelStartedAt = shell.world.time;
-  touchedLevel = false;
   peeking = false;
 });
 
@@ -474,10 +472,9 @@ shell.onWorldChange(() => {
  * On an upright phone (a screen taller than wide) the camera frames the play for the tall screen,
  * the lowest surface UPRIGHT_GROUND of the way up (the scene low in the screen, a strip of earth
  * under it for the card saying how to play and the next-level button). Which view it heads for is
- * decided in ./camera (cameraShot), and its rectangle there too: the level opens on the castle,
- * close, for INTRO_HOLD s or until the first press, so the player sees the target at a size that
- * reads; then the aim view holds the catapult and the whole castle (the target in view all through
- * a drag); the look button shows the castle close while aiming; in between the camera follows the
+ * decided in ./camera (cameraShot), and its rectangle there too: from the level's start the aim view
+ * holds the catapult and the whole castle (where the player shoots from and what at, the target in
+ * view all through a drag); the look button shows the castle close while aiming; in between the camera follows the
  * stone from the aim view to the castle's view as it crosses the field (by the farthest it got),
  * keeping it in sight, and goes back to the aim view once the verdict has been read or at the next
  * press.
@@ -610,15 +607,12 @@ function frameCamera(): void {
   // A level over: the wreck stays in view with its result (on a phone the shot view, not the catapult).
   shot = cameraShot({
     upright: upright(),
-    sinceStart: Math.max(0, shell.world.time - levelStartedAt),
-    touched: touchedLevel,
     peeking,
     shotView,
     wreck: levelEnded && shots.length > 0,
     zoomsIn: zoomsIn(),
   });
-  // The look button while aiming (not in the level's opening look at the castle, nor while a throw
-  // is followed): the castle close, the aim view holding it whole but small on the far levels.
+  // The look button while aiming (not while a throw is followed): the castle close, the aim view holding it whole but small on the far levels.
   // (Not where the castle's close-up shows in the earth while aiming, drawCloseUp: it is the look.)
   showLook(upright() && !levelEnded && !shotView && (peeking || (shot === 'aim' && !aimCloseUp(field(), cam.width, cam.height))));
   const target = shot === 'castle' ? shotViewRect() : shot === 'follow' ? followView() : aimView();
@@ -643,10 +637,6 @@ function frameCamera(): void {
 let cameraSettled = false;
 /** The view the camera heads for (camera.ts cameraShot), decided at the last frame. */
 let shot: CameraShot = 'overview';
-/** World time the level (or its replay) started, s: upright, the castle's view shows for INTRO_HOLD after it. */
-let levelStartedAt = shell.world.time;
-/** Whether a press has gone down on the scene since the level started (it ends the opening look at the castle). */
-let touchedLevel = false;
 /** Whether the player asked to look at the castle (the look button, upright only). */
 let peeking = false;
 /**
@@ -719,7 +709,6 @@ app.canvas.addEventListener('pointerdown', (e) => {
   if (shell.paused || shotsLeft <= 0 || levelEnded || (e.pointerType === 'mouse' && e.button !== 0)) return;
   pointerOnCanvas(app.canvas, e, pointer);
   shotView = false;
-  touchedLevel = true;
   peeking = false;
   lastThrow.hidden = true;
   aim.active = true;
@@ -790,7 +779,6 @@ function fire(dx: number, dy: number): number {
   lastThrow.power = Math.min(1, Math.hypot(dx, dy) / PULL.max);
   lastThrow.angle = (Math.atan2(vy, vx) * 180) / Math.PI;
   shotView = true;
-  touchedLevel = true;
   peeking = false;
   arm.firedAt = shell.world.time;
   arm.velocity = -(8 + 22 * Math.min(1, Math.hypot(dx, dy) / PULL.max));
@@ -2131,9 +2119,8 @@ shell.expose({
   cameraSettled: (): boolean => cameraSettled,
   /** The view the camera heads for: 'overview', 'aim', 'follow' or 'castle' (camera.ts cameraShot). */
   cameraShot: (): CameraShot => shot,
-  /** Ends the level's opening look at the castle as a first touch would, the camera jumping to the aim view (tests). */
-  skipOpening: (): void => {
-    touchedLevel = true;
+  /** Makes the camera jump to the view it heads for at the next frame, not ease there (tests). */
+  jumpCamera: (): void => {
     framedFor = '';
   },
   /** The level's tally now. */

@@ -86,8 +86,8 @@ async function startLevel(p: GamePage, level: number, o: { paused?: boolean; cle
 
 /**
  * On a phone (390 x 844, touch) page of level 1 before its first touch: upright, the level opens on
- * the castle close, then frames the catapult and the whole castle, and the look button shows the
- * castle close and back; the banner fits, the
+ * the catapult and the whole castle, and the look button shows the castle close and back; the
+ * banner fits, the
  * earth under the field is a strip with no close-up of the castle, and a card says how to play;
  * sideways (844 x 390) the whole field is in view and the card lies clear of the castle; back
  * upright. Returns the card and the canvas' box seen sideways.
@@ -119,17 +119,23 @@ async function phoneBeforeTouch(p: GamePage): Promise<{ hint: Locator; box: DOMR
     expect([f.left >= 0, f.right <= f.W, f.top >= 0, f.bottom <= f.H], JSON.stringify(f)).toEqual([true, true, true, true]);
     expect(f.castle[0], JSON.stringify(f)).toBeGreaterThan(f.right);
   };
-  // The level played from its start opens on the castle, close: the target at a size that reads (the
-  // catapult and the field fitted to 390 px drew a stranger's market stalls 20 px tall). Replayed, so
-  // the opening's 1.8 s have not passed while the page loaded.
-  await p.page.evaluate(() => (window.game as unknown as CatapultGame).reset());
+  // The level played from its start opens on where the player shoots from and what at: the catapult
+  // whole and the whole castle on the screen in the first frame drawn after the start (an opening on
+  // the castle alone showed a stranger a target with no catapult until they dragged).
+  await p.page.evaluate(async () => {
+    (window.game as unknown as CatapultGame).reset();
+    await new Promise(requestAnimationFrame);
+    await new Promise(requestAnimationFrame);
+  });
+  const first = await framing();
+  expect(first.shot).toBe('aim');
+  expectFramed(first, true);
   await p.waitFor(() => {
     const w = window.game as unknown as { cameraShot(): string; cameraSettled(): boolean };
-    return w.cameraShot() === 'castle' && w.cameraSettled();
+    return w.cameraShot() === 'aim' && w.cameraSettled();
   }, null);
   const opening = await framing();
-  expect(opening.shot).toBe('castle');
-  expectFramed(opening, false);
+  expectFramed(opening, true);
   // The ground is above the card saying how to play (the card lies on the earth, not over the
   // catapult), and the scene uses the screen's lower middle: the ground between half and three
   // quarters of the way down (at 89 % the scene sat in the bottom fifth under 70 % of empty sky).
@@ -178,20 +184,18 @@ async function phoneBeforeTouch(p: GamePage): Promise<{ hint: Locator; box: DOMR
     const w = window.game as unknown as PhoneGame;
     return w.renderer.camera.width < 600 && w.cameraSettled();
   }, null);
-  // Then (the opening's 1.8 s over, or skipped as a touch would: test/games/catapult-camera.test.ts
-  // checks its timing), the camera frames the catapult and the whole castle (a view of the catapult
-  // large cut a stranger's target off at the edge while aiming), the opening's look at the castle
-  // at least 1.25 x as close.
-  await p.page.evaluate(() => (window.game as unknown as { skipOpening(): void }).skipOpening());
+  // Back upright the camera frames the catapult and the whole castle again (a view of the catapult
+  // large cut a stranger's target off at the edge while aiming).
+  await p.page.evaluate(() => (window.game as unknown as { jumpCamera(): void }).jumpCamera());
   await p.waitFor(() => {
     const w = window.game as unknown as { cameraShot(): string; cameraSettled(): boolean };
     return w.cameraShot() === 'aim' && w.cameraSettled();
   }, null);
   const aim = await framing();
   expectFramed(aim, true);
-  expect(opening.perM).toBeGreaterThan(1.25 * aim.perM);
-  // The look button shows the castle close while aiming, and goes back to the catapult (its tap, a
-  // press on the page, takes the card saying how to play away: last).
+  expect(aim.perM).toBeCloseTo(opening.perM, 1);
+  // The look button shows the castle close while aiming, at least 1.25 x as close, and goes back to
+  // the catapult (its tap, a press on the page, takes the card saying how to play away: last).
   const look = p.page.locator('[data-hud="look"] button');
   await look.tap();
   await p.waitFor(() => {
@@ -200,11 +204,11 @@ async function phoneBeforeTouch(p: GamePage): Promise<{ hint: Locator; box: DOMR
   }, null);
   const looked = await framing();
   expectFramed(looked, false);
-  expect(looked.perM).toBeCloseTo(opening.perM, 1);
+  expect(looked.perM).toBeGreaterThan(1.25 * aim.perM);
   expect(await look.textContent()).toMatch(/Catapult/);
   await look.tap();
   // Back to the aim view (jumped to: the easing to the overview was waited on above).
-  await p.page.evaluate(() => (window.game as unknown as { skipOpening(): void }).skipOpening());
+  await p.page.evaluate(() => (window.game as unknown as { jumpCamera(): void }).jumpCamera());
   await p.waitFor(() => {
     const w = window.game as unknown as { cameraShot(): string; cameraSettled(): boolean };
     return w.cameraShot() === 'aim' && w.cameraSettled();
@@ -335,8 +339,8 @@ async function previewMatchesThrow(
     firstTouch(): [number, number, number, number] | null;
     aimShown(): { power: number; angle: number; dots: number; closeDots: number; reach: number; end: [number, number] };
   };
-  // (On a phone, past the level's opening overview: the camera does not move under the finger.)
-  await p.page.evaluate(() => (window.game as unknown as { skipOpening(): void }).skipOpening());
+  // (On a phone, the camera at rest on the aim view: it does not move under the finger.)
+  await p.page.evaluate(() => (window.game as unknown as { jumpCamera(): void }).jumpCamera());
   await p.waitFor(() => {
     const w = window.game as unknown as W & { cameraShot(): string };
     return w.cameraSettled() && !w.levelEnded() && w.shotsLeft() > 0 && (w.cameraShot() === 'aim' || innerWidth >= 600);
@@ -1188,7 +1192,7 @@ describe('catapult', () => {
     await p.close();
   });
 
-  it('phone 390 x 844 (touch): upright the level opens on the castle close, then frames the catapult and the whole castle (a button shows the castle close); sideways the whole field; the card saying how to play; no close-up; the pull is long and the release throws; played again, the camera follows the stone to a large tower, a drag from anywhere throws and the next-level (or try-again) button goes on', async () => {
+  it('phone 390 x 844 (touch): upright the level opens on the catapult and the whole castle (a button shows the castle close); sideways the whole field; the card saying how to play; no close-up; the pull is long and the release throws; played again, the camera follows the stone to a large tower, a drag from anywhere throws and the next-level (or try-again) button goes on', async () => {
     const p = await h.openGame('catapult', { query: { level: 1 }, viewport: { width: 390, height: 844 }, touch: true });
     // Before the first touch: the start view upright and sideways, and the card saying how to play.
     const { hint, box: sideways } = await phoneBeforeTouch(p);
@@ -1309,13 +1313,12 @@ describe('catapult', () => {
     const result = await p.page.evaluate(() => (window.game as unknown as PhoneGame).bannerSize());
     expect(result.height).toBeLessThan(4.5 * result.fontSize);
     await expectSunClear(p);
-    // The level played again from its start, past its opening look at the castle (as a first touch
-    // ends it), the camera at rest on the aim view: a stone followed to the tower, a drag from
-    // anywhere throws, the next-level (or try-again) button.
+    // The level played again from its start, the camera at rest on the aim view: a stone followed
+    // to the tower, a drag from anywhere throws, the next-level (or try-again) button.
     await p.page.evaluate(() => {
-      const w = window.game as unknown as CatapultGame & { skipOpening(): void };
+      const w = window.game as unknown as CatapultGame & { jumpCamera(): void };
       w.reset();
-      w.skipOpening();
+      w.jumpCamera();
     });
     await p.waitFor(() => {
       const w = window.game as unknown as W & { cameraShot(): string };
