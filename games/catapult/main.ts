@@ -1217,7 +1217,8 @@ function drawPieces(world: PhysicsWorld, alpha: number): void {
     else drawWood(overlay, cam, at.x, at.y, a, p.half[0], p.half[1], color, down);
     if (down && !popped.has(p.body)) {
       popped.add(p.body);
-      effects!.popup(at.x, at.y + 0.4, `+${FALL_POINTS}`);
+      // Pieces falling together share one popup (near: a popup's width and more, 80 px, in metres).
+      effects!.popup(at.x, at.y + 0.4, `+${FALL_POINTS}`, undefined, 80 / cam.toScreenLength(1));
       effects!.burst('dust', at.x, Math.max(0.1, at.y - p.half[1]), 5, 1.6);
     }
   }
@@ -2103,8 +2104,13 @@ shell.expose({
   }),
   /** The aim's numbers over the catapult in the last frame ('' while not aiming). */
   aimLabel: (): string => (aimDom.box.style.display === 'none' ? '' : (aimDom.label.textContent ?? '')),
-  /** The effects now: bits of debris in flight and score popups showing. */
-  effects: (): { bits: number; popups: number } => ({ bits: effects!.bitCount, popups: effects!.popupCount }),
+  /** The effects now: bits of debris in flight, score popups showing, the points they add up to and their boxes (px: left, top, right, bottom). */
+  effects: (): { bits: number; popups: number; points: number; boxes: number[][] } => ({
+    bits: effects!.bitCount,
+    popups: effects!.popupCount,
+    points: effects!.popupPoints,
+    boxes: effects!.popupBoxes(),
+  }),
   /** The least height (m) of a chip or bit of confetti over the ground under it (Infinity when none; see Effects.lowestOverGround). */
   debrisOverGround: (): number => effects!.lowestOverGround(),
   /** The catapult's arm angle, rad (see CATAPULT in ./look: cocked at pi, upright at pi / 2). */

@@ -690,13 +690,20 @@ describe('catapult', () => {
     });
     expect(t.before).toBe(0);
     expect(t.after).toBeGreaterThan(0);
-    // The hit shows: debris flies and a popup rises over each piece as it falls.
+    // The hit shows: debris flies and popups rise over what fell, 100 points a piece (FALL_POINTS),
+    // pieces that fell near each other sharing one popup: fewer popups than pieces, and no two
+    // overlapping on the screen (three "+100" side by side read as "+10000").
+    type Shown = { bits: number; popups: number; points: number; boxes: number[][] };
     const shown = await g.waitFor(() => {
-      const e = (window.game as unknown as { effects(): { bits: number; popups: number } }).effects();
+      const e = (window.game as unknown as { effects(): Shown }).effects();
       return e.popups > 0 ? e : null;
     }, null);
     expect(shown.bits).toBeGreaterThan(0);
-    expect(shown.popups).toBe(t.fallen);
+    expect(shown.points).toBe(100 * t.fallen);
+    expect(shown.popups).toBeLessThan(t.fallen);
+    const overlaps = (a: number[], b: number[]) => a[0]! < b[2]! && b[0]! < a[2]! && a[1]! < b[3]! && b[1]! < a[3]!;
+    for (const [i, a] of shown.boxes.entries())
+      for (const b of shown.boxes.slice(i + 1)) expect(overlaps(a, b), JSON.stringify(shown.boxes)).toBe(false);
     // The next frame says what the throw earned, over the scene.
     await g.waitFor(() => (window.game as unknown as CatapultGame).lastVerdict() !== '', null);
     expect(await g.page.evaluate(() => (window.game as unknown as CatapultGame).lastVerdict())).toBe(`+${t.after}`);
