@@ -1044,8 +1044,23 @@ function writeReadout(score: number, rows: string[]): void {
 const showNextButton = createActionButton('Next level ▶', () => nextLevel());
 /** Whether the "Next level" button shows (Enter presses it then). */
 let nextShown = false;
-/** Shows or hides the "Next level" button, with `text` on it. */
+/**
+ * The button asked for in the last frame and the frames drawn before it (the pacer's count): like
+ * the readout's rows (writeReadout) it goes on only once that frame, whose banner names the button
+ * and gives the level's result, has been drawn. Put on at once, a GPU too busy to draw kept the
+ * canvas's last frame ("1 shot left", no result) under a "Level 2 ▶" button for seconds. It goes
+ * off at once: a button left up a frame after a tap could be tapped again and skip a level.
+ */
+let pendingNext: { visible: boolean; text: string | undefined; drawn: number } | null = null;
+/** Once a frame: shows (once this frame has been drawn) or hides (at once) the "Next level" button, with `text` on it. */
 const showNext = (visible: boolean, text?: string): void => {
+  const drawn = game.pacer.drawn;
+  const same = pendingNext?.visible === visible && pendingNext.text === text;
+  if (!same) pendingNext = { visible, text, drawn };
+  applyNext(visible && same && drawn !== pendingNext?.drawn, text);
+};
+/** Shows or hides the "Next level" button, with `text` on it, now. */
+const applyNext = (visible: boolean, text?: string): void => {
   nextShown = visible;
   showNextButton(visible, text);
   const bar = visible ? pageLayout().stage.querySelector<HTMLElement>('.bp-action') : null;

@@ -313,6 +313,10 @@ async function phoneThrows(p: GamePage, hint: Locator, box: DOMRect): Promise<vo
   const next = p.page.getByRole('button', { name: /^(Level 2 ▶|Try again ↺)$/ });
   await next.waitFor({ state: 'visible', timeout: 5000 });
   const cleared = (await next.textContent())?.startsWith('Level 2') === true;
+  // With the button, the banner gives the level's result (no shots left to count).
+  const said = await p.page.evaluate(() => (window.game as unknown as { bannerText(): string }).bannerText());
+  expect(said).toMatch(cleared ? /^Level 1 cleared/ : /^Level 1 not cleared/);
+  expect(said).not.toMatch(/shots? left/);
   await next.tap();
   if (cleared) await p.waitFor(() => (window.game as unknown as { params: { level: number } }).params.level === 2, null);
   else await p.waitFor(() => (window.game as unknown as { shotsLeft(): number }).shotsLeft() === 3, null);
@@ -535,12 +539,31 @@ describe('catapult', () => {
     await g.frames(3);
     expect(await drawn()).toBe(start + 3);
     expect(await shotsRow.textContent()).toBe('3');
+    // The level's end while no frame is drawn: the next-level (or try-again) button does not go on
+    // over a canvas still showing the level under way (a stranger saw "Level 2 ▶" under a banner
+    // saying "1 shot left" for 5 s); once a frame is drawn, the button and the result go on together.
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as CatapultGame & { advance(n: number): void; paused: boolean };
+      while (w.shotsLeft() > 0) w.fire(-1, -1);
+      // (Steps pause; running again before the next frame, no pause or resume forces a frame.)
+      w.advance(300);
+      w.paused = false;
+    });
+    await g.frames(3);
+    expect(await drawn()).toBe(start + 3);
+    expect(await g.page.evaluate(() => (window.game as unknown as CatapultGame).levelEnded())).toBe(true);
+    const next = g.page.getByRole('button', { name: /^(Level 2 ▶|Try again ↺)$/ });
+    expect(await next.count()).toBe(0);
     await g.page.evaluate(() => {
       const w = window.game as unknown as Paced;
       w.pacer.mayDraw = (window as unknown as { keptMayDraw: () => boolean }).keptMayDraw;
       w.paused = false;
     });
-    await g.waitFor(() => document.querySelector('[data-readout="1"]')?.textContent === '2', null);
+    await g.waitFor(() => document.querySelector('[data-readout="1"]')?.textContent === '0', null);
+    await next.waitFor({ state: 'visible' });
+    const banner = await g.page.evaluate(() => (window.game as unknown as { bannerText(): string }).bannerText());
+    expect(banner).toMatch(/^Level 1 (not )?cleared/);
+    expect(banner).not.toMatch(/shots? left/);
     expect(g.errors).toEqual([]);
   });
 
