@@ -1226,7 +1226,7 @@ function drawPieces(world: PhysicsWorld, alpha: number): void {
     const a = angleOf(p.body),
       color = renderer.colorOf(p.body),
       down = p.down === true;
-    if (p.kind === 'stone') drawStone(overlay, cam, at.x, at.y, a, p.half[0], down ? mixColor(color, 0x000000, 0.25) : color);
+    if (p.kind === 'stone') drawStone(overlay, cam, at.x, at.y, a, p.half[0], down ? mixColor(color, 0x000000, 0.4) : color);
     else if (p.kind === 'block') drawGlass(overlay, cam, at.x, at.y, a, p.half[0], p.half[1], color, down);
     else if (p.kind === 'brick') drawBrick(overlay, cam, at.x, at.y, a, p.half[0], p.half[1], color, down);
     else drawWood(overlay, cam, at.x, at.y, a, p.half[0], p.half[1], color, down);
@@ -2024,8 +2024,8 @@ function draw(world: PhysicsWorld, alpha: number): void {
       // Upright: the score's parts in brief, no star rule (the stars earned are on the first line),
       // and of the keys only the retry (the button names the next level).
       banner.text = brief
-        ? `Level ${params.level} cleared  ${stars}  Score ${score}\n${t.fallen} fell, ${t.broken} welds broke${bonus > 0 ? `, +${bonus} bonus` : ''}\nTotal ${total()}   ${touch ? '↺ to try again' : 'R: try again'}`
-        : `Level ${params.level} cleared  ${stars}\nScore ${score}: ${t.fallen} pieces fell, ${t.broken} welds broke${extra}   Total ${total()}\n${starRule}\n${keys}`;
+        ? `Level ${params.level} cleared  ${stars}  Score ${score}\n${t.fallen} down (darker), ${t.broken} welds broke${bonus > 0 ? `, +${bonus} bonus` : ''}\nTotal ${total()}   ${touch ? '↺ to try again' : 'R: try again'}`
+        : `Level ${params.level} cleared  ${stars}\nScore ${score}: ${t.fallen} pieces down (darker), ${t.broken} welds broke${extra}   Total ${total()}\n${starRule}\n${keys}`;
       showNext(true, `Level ${params.level + 1} ▶`);
     }
   } else {
