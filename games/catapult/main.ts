@@ -474,10 +474,10 @@ shell.onWorldChange(() => {
  * under it for the card saying how to play and the next-level button). Which view it heads for is
  * decided in ./camera (cameraShot), and its rectangle there too: from the level's start the aim view
  * holds the catapult and the whole castle (where the player shoots from and what at, the target in
- * view all through a drag); the look button shows the castle close while aiming; in between the camera follows the
- * stone from the aim view to the castle's view as it crosses the field (by the farthest it got),
- * keeping it in sight, and goes back to the aim view once the verdict has been read or at the next
- * press.
+ * view all through a drag); the look button shows the castle close while aiming; in between the
+ * camera follows the stone from the aim view to the castle's view as it crosses the field (by the
+ * farthest it got), keeping it in sight, and goes back to the aim view once the verdict has been
+ * read or at the next press.
  */
 const cameraView = { minX: -4, minY: -1, maxX: 30, maxY: 14 };
 /**
@@ -612,7 +612,8 @@ function frameCamera(): void {
     wreck: levelEnded && shots.length > 0,
     zoomsIn: zoomsIn(),
   });
-  // The look button while aiming (not while a throw is followed): the castle close, the aim view holding it whole but small on the far levels.
+  // The look button while aiming (not while a throw is followed): the castle close, the aim view
+  // holding it whole but small on the far levels.
   // (Not where the castle's close-up shows in the earth while aiming, drawCloseUp: it is the look.)
   showLook(upright() && !levelEnded && !shotView && (peeking || (shot === 'aim' && !aimCloseUp(field(), cam.width, cam.height))));
   const target = shot === 'castle' ? shotViewRect() : shot === 'follow' ? followView() : aimView();
