@@ -3,10 +3,10 @@
  * an upright phone the rectangle of each view. The page (main.ts) eases the camera to the view.
  *
  * The views: 'overview' (the catapult, the field and the whole castle: the aim view on a wide
- * screen), 'aim' (on an upright phone: the catapult and the whole castle, so the target is in view
- * all through a drag), 'follow' (from the aim view to the castle as the stone crosses the field) and
- * 'castle' (the castle and the rock behind it, close: a phone's opening look at the target, its look
- * button, and a finished level's wreck).
+ * screen), 'aim' (on an upright phone: the catapult and the whole castle, so the player sees where
+ * they shoot from and what at from the level's start and all through a drag), 'follow' (from the
+ * aim view to the castle as the stone crosses the field) and 'castle' (the castle and the rock
+ * behind it, close: a phone's look button, and a finished level's wreck).
  *
  * Upright, an aim view fitted to a far or wide castle draws it small (14 to 18 px a metre at 390 px
  * wide); the page shows it again, close, in the earth under the ground while the player aims
@@ -22,10 +22,6 @@ export type CameraShot = 'overview' | 'aim' | 'follow' | 'castle';
 export interface CameraInput {
   /** Whether the screen is an upright phone's (narrow and taller than wide). */
   upright: boolean;
-  /** World time since the level (or its replay) started, s (>= 0). */
-  sinceStart: number;
-  /** Whether a finger or the mouse has gone down on the scene since the level started. */
-  touched: boolean;
   /** Whether the player asked to look at the castle (the phone's look button). */
   peeking: boolean;
   /** Whether a throw is being shown (in flight, or its verdict not yet read). */
@@ -37,13 +33,6 @@ export interface CameraInput {
 }
 
 /**
- * Upright, the level opens on the castle, close, for this long, s, so a player sees what to knock
- * down at a size that reads before the camera pulls back to the catapult (a first touch pulls back
- * at once).
- */
-export const INTRO_HOLD = 1.8;
-
-/**
  * Upright, the castle's view stays this long after a throw's verdict, s, before the camera goes back
  * to the catapult: what the stone set off is still falling when the verdict shows (a tower can take
  * longer than 2.5 s to come down).
@@ -52,19 +41,16 @@ export const UPRIGHT_WATCH = 4.5;
 
 /**
  * The view the camera heads for: the castle's view for a finished level's wreck (where it is
- * closer), the following view while a throw shows, and otherwise, upright, the castle's view at the
- * level's start (INTRO_HOLD, until the first touch) or while the player looks at the castle, else
- * the aim view. Not upright the aim view is the overview (the whole field fits a wide screen).
- * @throws RangeError if sinceStart is negative or not finite.
+ * closer), the following view while a throw shows, and otherwise, upright, the castle's view while
+ * the player looks at the castle, else the aim view (from the level's start: an opening on the
+ * castle alone hid the catapult, and a player saw a target with nothing to shoot it from). Not
+ * upright the aim view is the overview (the whole field fits a wide screen).
  */
 export function cameraShot(s: CameraInput): CameraShot {
-  if (!(Number.isFinite(s.sinceStart) && s.sinceStart >= 0))
-    throw new RangeError(`cameraShot: sinceStart must be a finite time >= 0 s, got ${s.sinceStart}`);
   if (s.wreck && s.zoomsIn) return 'castle';
   if (s.shotView && s.zoomsIn) return 'follow';
   if (!s.upright) return 'overview';
   if (s.peeking) return 'castle';
-  if (!s.touched && s.sinceStart < INTRO_HOLD) return 'castle';
   return 'aim';
 }
 

@@ -47,17 +47,23 @@ class Bits {
   next = 0;
 }
 
-/** A score popup: its text object, where it started (m) and its age (s). */
+/** A score popup: its text object, where it started (m), its age (s), its points (NaN for a label that is not "+N") and colour. */
 interface Popup {
   text: Text;
   x: number;
   y: number;
   age: number;
+  points: number;
+  color: number;
 }
 
 /** How long a popup shows, s, and how far it rises, m. */
 const POPUP_LIFE = 1.1,
   POPUP_RISE = 1.4;
+/** A popup takes in the points of another near it while under this share of its life (before it fades). */
+const MERGE_AGE = 0.6;
+/** The share of POPUP_RISE a popup has risen at `t` of its life (0 to 1): fast, then slowing. */
+const rise = (t: number): number => 1 - (1 - t) * (1 - t);
 
 /** The effects layer: add `graphics` and `popups` to the stage, call `update` once a frame and `draw` after. */
 export class Effects {
@@ -131,8 +137,32 @@ export class Effects {
     return low;
   }
 
-  /** A score popup ("+100") rising from (x, y), m, in `color` (0xRRGGBB). */
-  popup(x: number, y: number, label: string, color = 0xffe066): void {
+  /**
+   * A score popup ("+100") rising from (x, y), m, in `color` (0xRRGGBB). Popups must each read:
+   * a "+N" within `near` m (horizontally, and 2 `near` vertically) of a young "+M" popup in the same
+   * colour (under MERGE_AGE of its life) is added to it ("+M+N", its rise and pop starting again),
+   * and any other popup that would overlap a live one starts one line (`near` / 2 m) above the
+   * highest of them. `near` is about a popup's width in metres on the screen (default 1.5 m).
+   * @throws RangeError if near is not a finite length > 0.
+   */
+  popup(x: number, y: number, label: string, color = 0xffe066, near = 1.5): void {
+    if (!(Number.isFinite(near) && near > 0)) throw new RangeError(`Effects.popup: near must be a finite length > 0 m, got ${near}`);
+    const m = /^\+(\d+)$/.exec(label);
+    const points = m ? Number(m[1]) : Number.NaN;
+    const close = this.live.filter((p) => Math.abs(p.x - x) < near && Math.abs(p.y - y) < 2 * near);
+    if (!Number.isNaN(points)) {
+      const mate = close.find((p) => !Number.isNaN(p.points) && p.age < MERGE_AGE * POPUP_LIFE && p.color === color);
+      if (mate) {
+        // It pops again from where it is drawn now, and rises on from there.
+        mate.points += points;
+        mate.text.text = `+${mate.points}`;
+        mate.y += POPUP_RISE * rise(mate.age / POPUP_LIFE);
+        mate.age = 0;
+        return;
+      }
+    }
+    // Over the highest popup near by (where it is drawn now), so the two do not overlap.
+    for (const p of close) y = Math.max(y, p.y + POPUP_RISE * rise(p.age / POPUP_LIFE) + near / 2);
     const text =
       this.spare.pop() ??
       new Text({
@@ -150,7 +180,7 @@ export class Effects {
     text.style.fill = color;
     text.visible = true;
     this.popups.addChild(text);
-    this.live.push({ text, x, y, age: 0 });
+    this.live.push({ text, x, y, age: 0, points, color });
   }
 
   /** Shakes the camera by up to `px` screen pixels (the larger of this and the shake already running). */
@@ -250,7 +280,7 @@ export class Effects {
     for (const p of this.live) {
       const t = p.age / POPUP_LIFE;
       p.text.x = cam.toScreenX(p.x);
-      p.text.y = cam.toScreenY(p.y + POPUP_RISE * (1 - (1 - t) * (1 - t)));
+      p.text.y = cam.toScreenY(p.y + POPUP_RISE * rise(t));
       p.text.alpha = t < 0.7 ? 1 : (1 - t) / 0.3;
       p.text.scale.set(t < 0.15 ? 0.6 + (0.4 * t) / 0.15 : 1);
     }
@@ -264,6 +294,20 @@ export class Effects {
   /** Popups showing now (tests). */
   get popupCount(): number {
     return this.live.length;
+  }
+
+  /** The points the "+N" popups showing now add up to (tests). */
+  get popupPoints(): number {
+    return this.live.reduce((a, p) => a + (Number.isNaN(p.points) ? 0 : p.points), 0);
+  }
+
+  /** The popups' boxes where they were last drawn, screen px [left, top, right, bottom] (tests). */
+  popupBoxes(): number[][] {
+    return this.live.map((p) => {
+      const w = p.text.width / 2,
+        h = p.text.height / 2;
+      return [p.text.x - w, p.text.y - h, p.text.x + w, p.text.y + h];
+    });
   }
 
   /** Clears every bit, popup and shake (a new level). */

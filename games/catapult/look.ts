@@ -59,7 +59,7 @@ export function drawWood(
   fallen: boolean,
 ): void {
   const f: Frame = { cam, x, y, c: Math.cos(angle), s: Math.sin(angle) };
-  const base = fallen ? mixColor(color, 0x2a1d12, 0.35) : color;
+  const base = fallen ? mixColor(color, 0x2a1d12, 0.5) : color;
   const rim = mixColor(base, 0x000000, 0.55);
   g.poly(box(f, -hx, -hy, hx, hy))
     .fill(base)
@@ -133,7 +133,7 @@ export function drawBrick(
   fallen: boolean,
 ): void {
   const f: Frame = { cam, x, y, c: Math.cos(angle), s: Math.sin(angle) };
-  const base = fallen ? mixColor(color, 0x000000, 0.3) : color;
+  const base = fallen ? mixColor(color, 0x000000, 0.45) : color;
   g.poly(box(f, -hx, -hy, hx, hy))
     .fill(base)
     .stroke({ width: 1.5, color: mixColor(base, 0x000000, 0.6) });

@@ -454,8 +454,6 @@ shell.onWorldChange(() => {
   paint();
   shotView = false;
   framedFor = '';
-  levelStartedAt = shell.world.time;
-  touchedLevel = false;
   peeking = false;
 });
 
@@ -474,13 +472,12 @@ shell.onWorldChange(() => {
  * On an upright phone (a screen taller than wide) the camera frames the play for the tall screen,
  * the lowest surface UPRIGHT_GROUND of the way up (the scene low in the screen, a strip of earth
  * under it for the card saying how to play and the next-level button). Which view it heads for is
- * decided in ./camera (cameraShot), and its rectangle there too: the level opens on the castle,
- * close, for INTRO_HOLD s or until the first press, so the player sees the target at a size that
- * reads; then the aim view holds the catapult and the whole castle (the target in view all through
- * a drag); the look button shows the castle close while aiming; in between the camera follows the
- * stone from the aim view to the castle's view as it crosses the field (by the farthest it got),
- * keeping it in sight, and goes back to the aim view once the verdict has been read or at the next
- * press.
+ * decided in ./camera (cameraShot), and its rectangle there too: from the level's start the aim view
+ * holds the catapult and the whole castle (where the player shoots from and what at, the target in
+ * view all through a drag); the look button shows the castle close while aiming; in between the
+ * camera follows the stone from the aim view to the castle's view as it crosses the field (by the
+ * farthest it got), keeping it in sight, and goes back to the aim view once the verdict has been
+ * read or at the next press.
  */
 const cameraView = { minX: -4, minY: -1, maxX: 30, maxY: 14 };
 /**
@@ -610,15 +607,13 @@ function frameCamera(): void {
   // A level over: the wreck stays in view with its result (on a phone the shot view, not the catapult).
   shot = cameraShot({
     upright: upright(),
-    sinceStart: Math.max(0, shell.world.time - levelStartedAt),
-    touched: touchedLevel,
     peeking,
     shotView,
     wreck: levelEnded && shots.length > 0,
     zoomsIn: zoomsIn(),
   });
-  // The look button while aiming (not in the level's opening look at the castle, nor while a throw
-  // is followed): the castle close, the aim view holding it whole but small on the far levels.
+  // The look button while aiming (not while a throw is followed): the castle close, the aim view
+  // holding it whole but small on the far levels.
   // (Not where the castle's close-up shows in the earth while aiming, drawCloseUp: it is the look.)
   showLook(upright() && !levelEnded && !shotView && (peeking || (shot === 'aim' && !aimCloseUp(field(), cam.width, cam.height))));
   const target = shot === 'castle' ? shotViewRect() : shot === 'follow' ? followView() : aimView();
@@ -643,10 +638,6 @@ function frameCamera(): void {
 let cameraSettled = false;
 /** The view the camera heads for (camera.ts cameraShot), decided at the last frame. */
 let shot: CameraShot = 'overview';
-/** World time the level (or its replay) started, s: upright, the castle's view shows for INTRO_HOLD after it. */
-let levelStartedAt = shell.world.time;
-/** Whether a press has gone down on the scene since the level started (it ends the opening look at the castle). */
-let touchedLevel = false;
 /** Whether the player asked to look at the castle (the look button, upright only). */
 let peeking = false;
 /**
@@ -719,7 +710,6 @@ app.canvas.addEventListener('pointerdown', (e) => {
   if (shell.paused || shotsLeft <= 0 || levelEnded || (e.pointerType === 'mouse' && e.button !== 0)) return;
   pointerOnCanvas(app.canvas, e, pointer);
   shotView = false;
-  touchedLevel = true;
   peeking = false;
   lastThrow.hidden = true;
   aim.active = true;
@@ -790,7 +780,6 @@ function fire(dx: number, dy: number): number {
   lastThrow.power = Math.min(1, Math.hypot(dx, dy) / PULL.max);
   lastThrow.angle = (Math.atan2(vy, vx) * 180) / Math.PI;
   shotView = true;
-  touchedLevel = true;
   peeking = false;
   arm.firedAt = shell.world.time;
   arm.velocity = -(8 + 22 * Math.min(1, Math.hypot(dx, dy) / PULL.max));
@@ -1056,8 +1045,23 @@ function writeReadout(score: number, rows: string[]): void {
 const showNextButton = createActionButton('Next level ▶', () => nextLevel());
 /** Whether the "Next level" button shows (Enter presses it then). */
 let nextShown = false;
-/** Shows or hides the "Next level" button, with `text` on it. */
+/**
+ * The button asked for in the last frame and the frames drawn before it (the pacer's count): like
+ * the readout's rows (writeReadout) it goes on only once that frame, whose banner names the button
+ * and gives the level's result, has been drawn. Put on at once, a GPU too busy to draw kept the
+ * canvas's last frame ("1 shot left", no result) under a "Level 2 ▶" button for seconds. It goes
+ * off at once: a button left up a frame after a tap could be tapped again and skip a level.
+ */
+let pendingNext: { visible: boolean; text: string | undefined; drawn: number } | null = null;
+/** Once a frame: shows (once this frame has been drawn) or hides (at once) the "Next level" button, with `text` on it. */
 const showNext = (visible: boolean, text?: string): void => {
+  const drawn = game.pacer.drawn;
+  const same = pendingNext?.visible === visible && pendingNext.text === text;
+  if (!same) pendingNext = { visible, text, drawn };
+  applyNext(visible && same && drawn !== pendingNext?.drawn, text);
+};
+/** Shows or hides the "Next level" button, with `text` on it, now. */
+const applyNext = (visible: boolean, text?: string): void => {
   nextShown = visible;
   showNextButton(visible, text);
   const bar = visible ? pageLayout().stage.querySelector<HTMLElement>('.bp-action') : null;
@@ -1223,13 +1227,14 @@ function drawPieces(world: PhysicsWorld, alpha: number): void {
     const a = angleOf(p.body),
       color = renderer.colorOf(p.body),
       down = p.down === true;
-    if (p.kind === 'stone') drawStone(overlay, cam, at.x, at.y, a, p.half[0], down ? mixColor(color, 0x000000, 0.25) : color);
+    if (p.kind === 'stone') drawStone(overlay, cam, at.x, at.y, a, p.half[0], down ? mixColor(color, 0x000000, 0.4) : color);
     else if (p.kind === 'block') drawGlass(overlay, cam, at.x, at.y, a, p.half[0], p.half[1], color, down);
     else if (p.kind === 'brick') drawBrick(overlay, cam, at.x, at.y, a, p.half[0], p.half[1], color, down);
     else drawWood(overlay, cam, at.x, at.y, a, p.half[0], p.half[1], color, down);
     if (down && !popped.has(p.body)) {
       popped.add(p.body);
-      effects!.popup(at.x, at.y + 0.4, `+${FALL_POINTS}`);
+      // Pieces falling together share one popup (near: a popup's width and more, 80 px, in metres).
+      effects!.popup(at.x, at.y + 0.4, `+${FALL_POINTS}`, undefined, 80 / cam.toScreenLength(1));
       effects!.burst('dust', at.x, Math.max(0.1, at.y - p.half[1]), 5, 1.6);
     }
   }
@@ -2020,8 +2025,8 @@ function draw(world: PhysicsWorld, alpha: number): void {
       // Upright: the score's parts in brief, no star rule (the stars earned are on the first line),
       // and of the keys only the retry (the button names the next level).
       banner.text = brief
-        ? `Level ${params.level} cleared  ${stars}  Score ${score}\n${t.fallen} fell, ${t.broken} welds broke${bonus > 0 ? `, +${bonus} bonus` : ''}\nTotal ${total()}   ${touch ? '↺ to try again' : 'R: try again'}`
-        : `Level ${params.level} cleared  ${stars}\nScore ${score}: ${t.fallen} pieces fell, ${t.broken} welds broke${extra}   Total ${total()}\n${starRule}\n${keys}`;
+        ? `Level ${params.level} cleared  ${stars}  Score ${score}\n${t.fallen} down (darker), ${t.broken} welds broke${bonus > 0 ? `, +${bonus} bonus` : ''}\nTotal ${total()}   ${touch ? '↺ to try again' : 'R: try again'}`
+        : `Level ${params.level} cleared  ${stars}\nScore ${score}: ${t.fallen} pieces down (darker), ${t.broken} welds broke${extra}   Total ${total()}\n${starRule}\n${keys}`;
       showNext(true, `Level ${params.level + 1} ▶`);
     }
   } else {
@@ -2115,8 +2120,13 @@ shell.expose({
   }),
   /** The aim's numbers over the catapult in the last frame ('' while not aiming). */
   aimLabel: (): string => (aimDom.box.style.display === 'none' ? '' : (aimDom.label.textContent ?? '')),
-  /** The effects now: bits of debris in flight and score popups showing. */
-  effects: (): { bits: number; popups: number } => ({ bits: effects!.bitCount, popups: effects!.popupCount }),
+  /** The effects now: bits of debris in flight, score popups showing, the points they add up to and their boxes (px: left, top, right, bottom). */
+  effects: (): { bits: number; popups: number; points: number; boxes: number[][] } => ({
+    bits: effects!.bitCount,
+    popups: effects!.popupCount,
+    points: effects!.popupPoints,
+    boxes: effects!.popupBoxes(),
+  }),
   /** The least height (m) of a chip or bit of confetti over the ground under it (Infinity when none; see Effects.lowestOverGround). */
   debrisOverGround: (): number => effects!.lowestOverGround(),
   /** The catapult's arm angle, rad (see CATAPULT in ./look: cocked at pi, upright at pi / 2). */
@@ -2131,9 +2141,8 @@ shell.expose({
   cameraSettled: (): boolean => cameraSettled,
   /** The view the camera heads for: 'overview', 'aim', 'follow' or 'castle' (camera.ts cameraShot). */
   cameraShot: (): CameraShot => shot,
-  /** Ends the level's opening look at the castle as a first touch would, the camera jumping to the aim view (tests). */
-  skipOpening: (): void => {
-    touchedLevel = true;
+  /** Makes the camera jump to the view it heads for at the next frame, not ease there (tests). */
+  jumpCamera: (): void => {
     framedFor = '';
   },
   /** The level's tally now. */

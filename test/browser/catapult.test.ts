@@ -86,8 +86,8 @@ async function startLevel(p: GamePage, level: number, o: { paused?: boolean; cle
 
 /**
  * On a phone (390 x 844, touch) page of level 1 before its first touch: upright, the level opens on
- * the castle close, then frames the catapult and the whole castle, and the look button shows the
- * castle close and back; the banner fits, the
+ * the catapult and the whole castle, and the look button shows the castle close and back; the
+ * banner fits, the
  * earth under the field is a strip with no close-up of the castle, and a card says how to play;
  * sideways (844 x 390) the whole field is in view and the card lies clear of the castle; back
  * upright. Returns the card and the canvas' box seen sideways.
@@ -119,17 +119,23 @@ async function phoneBeforeTouch(p: GamePage): Promise<{ hint: Locator; box: DOMR
     expect([f.left >= 0, f.right <= f.W, f.top >= 0, f.bottom <= f.H], JSON.stringify(f)).toEqual([true, true, true, true]);
     expect(f.castle[0], JSON.stringify(f)).toBeGreaterThan(f.right);
   };
-  // The level played from its start opens on the castle, close: the target at a size that reads (the
-  // catapult and the field fitted to 390 px drew a stranger's market stalls 20 px tall). Replayed, so
-  // the opening's 1.8 s have not passed while the page loaded.
-  await p.page.evaluate(() => (window.game as unknown as CatapultGame).reset());
+  // The level played from its start opens on where the player shoots from and what at: the catapult
+  // whole and the whole castle on the screen in the first frame drawn after the start (an opening on
+  // the castle alone showed a stranger a target with no catapult until they dragged).
+  await p.page.evaluate(async () => {
+    (window.game as unknown as CatapultGame).reset();
+    await new Promise(requestAnimationFrame);
+    await new Promise(requestAnimationFrame);
+  });
+  const first = await framing();
+  expect(first.shot).toBe('aim');
+  expectFramed(first, true);
   await p.waitFor(() => {
     const w = window.game as unknown as { cameraShot(): string; cameraSettled(): boolean };
-    return w.cameraShot() === 'castle' && w.cameraSettled();
+    return w.cameraShot() === 'aim' && w.cameraSettled();
   }, null);
   const opening = await framing();
-  expect(opening.shot).toBe('castle');
-  expectFramed(opening, false);
+  expectFramed(opening, true);
   // The ground is above the card saying how to play (the card lies on the earth, not over the
   // catapult), and the scene uses the screen's lower middle: the ground between half and three
   // quarters of the way down (at 89 % the scene sat in the bottom fifth under 70 % of empty sky).
@@ -178,20 +184,18 @@ async function phoneBeforeTouch(p: GamePage): Promise<{ hint: Locator; box: DOMR
     const w = window.game as unknown as PhoneGame;
     return w.renderer.camera.width < 600 && w.cameraSettled();
   }, null);
-  // Then (the opening's 1.8 s over, or skipped as a touch would: test/games/catapult-camera.test.ts
-  // checks its timing), the camera frames the catapult and the whole castle (a view of the catapult
-  // large cut a stranger's target off at the edge while aiming), the opening's look at the castle
-  // at least 1.25 x as close.
-  await p.page.evaluate(() => (window.game as unknown as { skipOpening(): void }).skipOpening());
+  // Back upright the camera frames the catapult and the whole castle again (a view of the catapult
+  // large cut a stranger's target off at the edge while aiming).
+  await p.page.evaluate(() => (window.game as unknown as { jumpCamera(): void }).jumpCamera());
   await p.waitFor(() => {
     const w = window.game as unknown as { cameraShot(): string; cameraSettled(): boolean };
     return w.cameraShot() === 'aim' && w.cameraSettled();
   }, null);
   const aim = await framing();
   expectFramed(aim, true);
-  expect(opening.perM).toBeGreaterThan(1.25 * aim.perM);
-  // The look button shows the castle close while aiming, and goes back to the catapult (its tap, a
-  // press on the page, takes the card saying how to play away: last).
+  expect(aim.perM).toBeCloseTo(opening.perM, 1);
+  // The look button shows the castle close while aiming, at least 1.25 x as close, and goes back to
+  // the catapult (its tap, a press on the page, takes the card saying how to play away: last).
   const look = p.page.locator('[data-hud="look"] button');
   await look.tap();
   await p.waitFor(() => {
@@ -200,11 +204,11 @@ async function phoneBeforeTouch(p: GamePage): Promise<{ hint: Locator; box: DOMR
   }, null);
   const looked = await framing();
   expectFramed(looked, false);
-  expect(looked.perM).toBeCloseTo(opening.perM, 1);
+  expect(looked.perM).toBeGreaterThan(1.25 * aim.perM);
   expect(await look.textContent()).toMatch(/Catapult/);
   await look.tap();
   // Back to the aim view (jumped to: the easing to the overview was waited on above).
-  await p.page.evaluate(() => (window.game as unknown as { skipOpening(): void }).skipOpening());
+  await p.page.evaluate(() => (window.game as unknown as { jumpCamera(): void }).jumpCamera());
   await p.waitFor(() => {
     const w = window.game as unknown as { cameraShot(): string; cameraSettled(): boolean };
     return w.cameraShot() === 'aim' && w.cameraSettled();
@@ -309,6 +313,10 @@ async function phoneThrows(p: GamePage, hint: Locator, box: DOMRect): Promise<vo
   const next = p.page.getByRole('button', { name: /^(Level 2 ▶|Try again ↺)$/ });
   await next.waitFor({ state: 'visible', timeout: 5000 });
   const cleared = (await next.textContent())?.startsWith('Level 2') === true;
+  // With the button, the banner gives the level's result (no shots left to count).
+  const said = await p.page.evaluate(() => (window.game as unknown as { bannerText(): string }).bannerText());
+  expect(said).toMatch(cleared ? /^Level 1 cleared/ : /^Level 1 not cleared/);
+  expect(said).not.toMatch(/shots? left/);
   await next.tap();
   if (cleared) await p.waitFor(() => (window.game as unknown as { params: { level: number } }).params.level === 2, null);
   else await p.waitFor(() => (window.game as unknown as { shotsLeft(): number }).shotsLeft() === 3, null);
@@ -335,8 +343,8 @@ async function previewMatchesThrow(
     firstTouch(): [number, number, number, number] | null;
     aimShown(): { power: number; angle: number; dots: number; closeDots: number; reach: number; end: [number, number] };
   };
-  // (On a phone, past the level's opening overview: the camera does not move under the finger.)
-  await p.page.evaluate(() => (window.game as unknown as { skipOpening(): void }).skipOpening());
+  // (On a phone, the camera at rest on the aim view: it does not move under the finger.)
+  await p.page.evaluate(() => (window.game as unknown as { jumpCamera(): void }).jumpCamera());
   await p.waitFor(() => {
     const w = window.game as unknown as W & { cameraShot(): string };
     return w.cameraSettled() && !w.levelEnded() && w.shotsLeft() > 0 && (w.cameraShot() === 'aim' || innerWidth >= 600);
@@ -531,12 +539,31 @@ describe('catapult', () => {
     await g.frames(3);
     expect(await drawn()).toBe(start + 3);
     expect(await shotsRow.textContent()).toBe('3');
+    // The level's end while no frame is drawn: the next-level (or try-again) button does not go on
+    // over a canvas still showing the level under way (a stranger saw "Level 2 ▶" under a banner
+    // saying "1 shot left" for 5 s); once a frame is drawn, the button and the result go on together.
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as CatapultGame & { advance(n: number): void; paused: boolean };
+      while (w.shotsLeft() > 0) w.fire(-1, -1);
+      // (Steps pause; running again before the next frame, no pause or resume forces a frame.)
+      w.advance(300);
+      w.paused = false;
+    });
+    await g.frames(3);
+    expect(await drawn()).toBe(start + 3);
+    expect(await g.page.evaluate(() => (window.game as unknown as CatapultGame).levelEnded())).toBe(true);
+    const next = g.page.getByRole('button', { name: /^(Level 2 ▶|Try again ↺)$/ });
+    expect(await next.count()).toBe(0);
     await g.page.evaluate(() => {
       const w = window.game as unknown as Paced;
       w.pacer.mayDraw = (window as unknown as { keptMayDraw: () => boolean }).keptMayDraw;
       w.paused = false;
     });
-    await g.waitFor(() => document.querySelector('[data-readout="1"]')?.textContent === '2', null);
+    await g.waitFor(() => document.querySelector('[data-readout="1"]')?.textContent === '0', null);
+    await next.waitFor({ state: 'visible' });
+    const banner = await g.page.evaluate(() => (window.game as unknown as { bannerText(): string }).bannerText());
+    expect(banner).toMatch(/^Level 1 (not )?cleared/);
+    expect(banner).not.toMatch(/shots? left/);
     expect(g.errors).toEqual([]);
   });
 
@@ -686,13 +713,20 @@ describe('catapult', () => {
     });
     expect(t.before).toBe(0);
     expect(t.after).toBeGreaterThan(0);
-    // The hit shows: debris flies and a popup rises over each piece as it falls.
+    // The hit shows: debris flies and popups rise over what fell, 100 points a piece (FALL_POINTS),
+    // pieces that fell near each other sharing one popup: fewer popups than pieces, and no two
+    // overlapping on the screen (three "+100" side by side read as "+10000").
+    type Shown = { bits: number; popups: number; points: number; boxes: number[][] };
     const shown = await g.waitFor(() => {
-      const e = (window.game as unknown as { effects(): { bits: number; popups: number } }).effects();
+      const e = (window.game as unknown as { effects(): Shown }).effects();
       return e.popups > 0 ? e : null;
     }, null);
     expect(shown.bits).toBeGreaterThan(0);
-    expect(shown.popups).toBe(t.fallen);
+    expect(shown.points).toBe(100 * t.fallen);
+    expect(shown.popups).toBeLessThan(t.fallen);
+    const overlaps = (a: number[], b: number[]) => a[0]! < b[2]! && b[0]! < a[2]! && a[1]! < b[3]! && b[1]! < a[3]!;
+    for (const [i, a] of shown.boxes.entries())
+      for (const b of shown.boxes.slice(i + 1)) expect(overlaps(a, b), JSON.stringify(shown.boxes)).toBe(false);
     // The next frame says what the throw earned, over the scene.
     await g.waitFor(() => (window.game as unknown as CatapultGame).lastVerdict() !== '', null);
     expect(await g.page.evaluate(() => (window.game as unknown as CatapultGame).lastVerdict())).toBe(`+${t.after}`);
@@ -1188,7 +1222,7 @@ describe('catapult', () => {
     await p.close();
   });
 
-  it('phone 390 x 844 (touch): upright the level opens on the castle close, then frames the catapult and the whole castle (a button shows the castle close); sideways the whole field; the card saying how to play; no close-up; the pull is long and the release throws; played again, the camera follows the stone to a large tower, a drag from anywhere throws and the next-level (or try-again) button goes on', async () => {
+  it('phone 390 x 844 (touch): upright the level opens on the catapult and the whole castle (a button shows the castle close); sideways the whole field; the card saying how to play; no close-up; the pull is long and the release throws; played again, the camera follows the stone to a large tower, a drag from anywhere throws and the next-level (or try-again) button goes on', async () => {
     const p = await h.openGame('catapult', { query: { level: 1 }, viewport: { width: 390, height: 844 }, touch: true });
     // Before the first touch: the start view upright and sideways, and the card saying how to play.
     const { hint, box: sideways } = await phoneBeforeTouch(p);
@@ -1309,13 +1343,12 @@ describe('catapult', () => {
     const result = await p.page.evaluate(() => (window.game as unknown as PhoneGame).bannerSize());
     expect(result.height).toBeLessThan(4.5 * result.fontSize);
     await expectSunClear(p);
-    // The level played again from its start, past its opening look at the castle (as a first touch
-    // ends it), the camera at rest on the aim view: a stone followed to the tower, a drag from
-    // anywhere throws, the next-level (or try-again) button.
+    // The level played again from its start, the camera at rest on the aim view: a stone followed
+    // to the tower, a drag from anywhere throws, the next-level (or try-again) button.
     await p.page.evaluate(() => {
-      const w = window.game as unknown as CatapultGame & { skipOpening(): void };
+      const w = window.game as unknown as CatapultGame & { jumpCamera(): void };
       w.reset();
-      w.skipOpening();
+      w.jumpCamera();
     });
     await p.waitFor(() => {
       const w = window.game as unknown as W & { cameraShot(): string };
