@@ -65,7 +65,7 @@ import {
   parTime,
   touchesMine,
 } from './mines';
-import { createHeaveTiming, releasedOrder } from './release';
+import { createHeaveTiming, createPressTiming, releasedOrder } from './release';
 import { drawFish } from './sea-life';
 import { type BedAhead, bedAhead, DIVE_STOPPED_WORD, helmWord, seabedInput, touchSeabed } from './seabed';
 import { stickDirection, stickShare } from './stick';
@@ -345,37 +345,67 @@ function createWorld(): PhysicsWorld {
   Object.assign(camera, { leadX: 0, leadY: 0, time: 0, shake: 0 });
   hitMarks.length = 0;
   heaveTiming.reset();
+  driveTiming.reset();
   scrapeAt = Number.NaN;
   pickups.length = 0;
   return world;
 }
 
-const held = new Set<string>();
+/** The keys held now (`KeyboardEvent.key`, lower case), each with the order it was pressed in (a later press, a larger number). */
+const held = new Map<string, number>();
+/** Key presses so far (the order `held` keeps). */
+let pressCount = 0;
+/**
+ * Which of two opposed sets of keys is asked for: -1 (a key of `minus`), 1 (a key of `plus`) or 0
+ * (none held). Both held, the one pressed last: a pilot pressing Astern before letting go of Ahead
+ * (or a key whose let-go the page never saw) is answered, not left with the two cancelling out.
+ */
+function keyAxis(minus: readonly string[], plus: readonly string[]): -1 | 0 | 1 {
+  let m = 0,
+    p = 0;
+  for (const k of minus) m = Math.max(m, held.get(k) ?? 0);
+  for (const k of plus) p = Math.max(p, held.get(k) ?? 0);
+  return m === p ? 0 : m > p ? -1 : 1;
+}
 /** The on-screen stick (phones): x right (ahead), y up (rise), each in [-1, 1], and whether a finger is on it. */
 const stickInput = { x: 0, y: 0, held: false };
 /** Whether the game is paused (a let-go then takes no game time); false until the game has started. */
 let pausedNow = (): boolean => false;
 /** Dive or Rise pressed and let go, timed by the events' timestamps (./release.ts): a let-go holds the order of its moment. */
 const heaveTiming = createHeaveTiming();
+/** Ahead or Astern, timed by the events' timestamps (./release.ts): a press acts for as long as it was held, even inside a stalled frame. */
+const driveTiming = createPressTiming();
 /** The share of Dive / Rise the press asked for on its last step held (a let-go press runs on at it). */
 let lastHeave = 1;
-/** Dive or Rise as the keys and the stick ask for it now: -1 dive, 1 rise, 0 neither (or both). */
+/** The share of the throttle Ahead / Astern asked for on its last step held (a let-go press runs on at it). */
+let lastDrive = 1;
+/** Dive or Rise as the keys and the stick ask for it now: -1 dive, 1 rise, 0 neither; a key before the stick. */
 function heaveAsked(): -1 | 0 | 1 {
-  const dive = held.has('s') || held.has('arrowdown') || stickDirection(stickInput.y, stickInput.x) < 0,
-    rise = held.has('w') || held.has('arrowup') || stickDirection(stickInput.y, stickInput.x) > 0;
-  return dive === rise ? 0 : dive ? -1 : 1;
+  const key = keyAxis(['s', 'arrowdown'], ['w', 'arrowup']);
+  return key !== 0 ? key : stickDirection(stickInput.y, stickInput.x);
+}
+/** Ahead or Astern as the keys and the stick ask for it now: 1 ahead, -1 astern, 0 neither; a key before the stick. */
+function driveAsked(): -1 | 0 | 1 {
+  const key = keyAxis(['a', 'arrowleft'], ['d', 'arrowright']);
+  return key !== 0 ? key : stickDirection(stickInput.x, stickInput.y);
+}
+/** Tells the timed controls (./release.ts) what the keys and the stick ask for after an input event at `stamp` (ms). */
+function timeControls(stamp: number): void {
+  heaveTiming.event(heaveAsked(), stamp, pausedNow());
+  driveTiming.event(driveAsked(), stamp, pausedNow());
 }
 addEventListener('keydown', (e) => {
-  held.add(e.key.toLowerCase());
-  heaveTiming.event(heaveAsked(), e.timeStamp, pausedNow());
+  const k = e.key.toLowerCase();
+  if (!held.has(k)) held.set(k, ++pressCount);
+  timeControls(e.timeStamp);
 });
 addEventListener('keyup', (e) => {
   held.delete(e.key.toLowerCase());
-  heaveTiming.event(heaveAsked(), e.timeStamp, pausedNow());
+  timeControls(e.timeStamp);
 });
 addEventListener('blur', (e) => {
   held.clear();
-  heaveTiming.event(0, e.timeStamp, pausedNow());
+  timeControls(e.timeStamp);
 });
 /** Game time a Dive or Rise key was first held (s), NaN while none is. */
 let heaveKeySince = Number.NaN;
@@ -385,18 +415,22 @@ function speedAhead(): number {
   return shell.world.components.Velocity.x[handles.hull]!;
 }
 
-/** The controls held now, at game time `now` (s): keys, the on-screen buttons, which send the same keys, and the stick. */
-function heldInput(now: number): HelmInput {
+/**
+ * The controls held now, at game time `now` (s): keys, the on-screen buttons, which send the same
+ * keys, and the stick; the screw as `drive` says (-1 astern, 1 ahead: driveTiming's step).
+ */
+function heldInput(now: number, drive: -1 | 0 | 1): HelmInput {
   const heaveKey = held.has('s') || held.has('w') || held.has('arrowdown') || held.has('arrowup');
   if (!heaveKey) heaveKeySince = Number.NaN;
   else if (Number.isNaN(heaveKeySince)) heaveKeySince = now;
+  const heave = heaveAsked();
   return {
-    dive: held.has('s') || held.has('arrowdown') || stickDirection(stickInput.y, stickInput.x) < 0,
-    rise: held.has('w') || held.has('arrowup') || stickDirection(stickInput.y, stickInput.x) > 0,
+    dive: heave < 0,
+    rise: heave > 0,
     noseDown: held.has('q'),
     noseUp: held.has('e'),
-    ahead: held.has('d') || held.has('arrowright') || stickDirection(stickInput.x, stickInput.y) > 0,
-    astern: held.has('a') || held.has('arrowleft') || stickDirection(stickInput.x, stickInput.y) < 0,
+    ahead: drive > 0,
+    astern: drive < 0,
     // The stick grades the dive or climb up to what a key asks for (./helm.ts keyHeaveShare) and no
     // further, so a thumb at the rim and a held key take the boat down alike.
     heave: heaveKey
@@ -464,9 +498,15 @@ function stepWorld(world: PhysicsWorld): void {
   // Dive or Rise timed by its events (./release.ts): a press let go before the steps caught up runs
   // on to its own length; one the steps ran past holds the order of the moment it was let go.
   const timed = heaveTiming.step(world.time);
-  const asked = heldInput(world.time);
+  // Ahead or Astern likewise (./release.ts createPressTiming): a press acts for as long as it was
+  // held, even one pressed and let go while the browser drew no frame; let go, at the share it asked.
+  const timedDrive = driveTiming.step(world.time);
+  const drive = driveAsked() || timedDrive;
+  const asked = heldInput(world.time, drive);
   if (timed.dir !== 0 && !asked.dive && !asked.rise) Object.assign(asked, { dive: timed.dir < 0, rise: timed.dir > 0, heave: lastHeave });
   else if (asked.dive !== asked.rise) lastHeave = asked.heave ?? 1;
+  if (drive !== 0 && driveAsked() === 0) asked.drive = lastDrive;
+  else if (drive !== 0) lastDrive = asked.drive ?? 1;
   const input = state.over ? NO_INPUT : seabedInput(state, asked);
   if (!Number.isNaN(timed.letGoAt) && (state.mode === 'diving' || state.mode === 'rising'))
     state.holdY = releasedOrder(state.holdY, heaveTiming.orderAt(timed.letGoAt), state.mode);
@@ -480,6 +520,7 @@ function stepWorld(world: PhysicsWorld): void {
   sea.surface[handles.sea] = params.waveHeight * 0.5 * Math.sin(0.9 * world.time);
   step(world);
   heaveTiming.clock(world.time, performance.now());
+  driveTiming.clock(world.time, performance.now());
   if (state.over) return;
   // The clock starts with the first control held, not when the page loads.
   const anyHeld = input.dive || input.rise || input.noseDown || input.noseUp || input.ahead || input.astern;
@@ -1215,7 +1256,7 @@ for (const type of ['pointerup', 'pointercancel', 'lostpointercapture'])
   });
 // Dive or Rise by the stick, timed by its events (after the stick's own listeners have moved it).
 for (const type of ['pointerdown', 'pointermove', 'pointerup', 'pointercancel', 'lostpointercapture'])
-  stick.element.addEventListener(type, (e) => heaveTiming.event(heaveAsked(), e.timeStamp, pausedNow()));
+  stick.element.addEventListener(type, (e) => timeControls(e.timeStamp));
 // On a phone a larger stick (136 px, the knob's reach 56 px): the thumb grades its push over more
 // of its travel, and the rim is easier to find without looking.
 if (compact) stick.element.style.cssText += 'width: 136px; height: 136px;';
@@ -1784,6 +1825,8 @@ function draw(): void {
   const world = shell.world,
     c = world.components,
     e = handles.hull;
+  // A pause stops the controls: an Ahead or Astern let go before it does not run on after it.
+  if (shell.paused) driveTiming.drop();
   const W = app.screen.width,
     H = app.screen.height;
   const hxw = c.Position.x[e]!,
@@ -2561,6 +2604,7 @@ shell.expose({
     stickInput.x = Math.max(-1, Math.min(1, x));
     stickInput.y = Math.max(-1, Math.min(1, y));
     stickInput.held = x !== 0 || y !== 0;
+    timeControls(performance.now());
   },
   /** Whether the pause overlay shows, and its words. */
   pauseOverlay: () => ({ visible: pause.visible, text: pause.text }),
