@@ -1004,8 +1004,9 @@ const touch = isTouchDevice();
 let pauseShown = false;
 /**
  * Shows or hides the pause overlay over a `W` x `H` px scene, on top of everything drawn on the stage:
- * its words on a band at the bottom edge when the boat (at `boatY` px from the top) is in the upper
- * half of the scene, else at the top edge.
+ * its words on a band at the bottom edge, or at the top edge while the boat (at `boatY` px from the
+ * top) would be under the bottom band, so the band stays put as the boat dives (it moved between
+ * the edges as the boat crossed the middle of the scene).
  * The frame where it comes or goes is drawn whatever the frame pacer says: on a busy GPU the pacer
  * skips most frames, and a paused game draws nothing new that would make up for a skipped one.
  */
@@ -1030,7 +1031,8 @@ function drawPause(W: number, H: number, boatY: number): void {
       if (r.top - scene.top < H / 2) upper = Math.max(upper, r.bottom - scene.top + 4);
       else lower = Math.min(lower, r.top - scene.top - 4);
     }
-    const top = boatY < H / 2 ? lower - PAUSE_BAND : upper;
+    // The hull (up to 24 px high at the closest zoom) and a margin clear of the bottom band.
+    const top = boatY < lower - PAUSE_BAND - 40 ? lower - PAUSE_BAND : upper;
     pauseBand.clear().rect(0, top, W, PAUSE_BAND).fill({ color: 0x050a14, alpha: 0.6 });
     pause.words.position.set(W / 2, top + PAUSE_BAND / 2);
   }
@@ -1533,6 +1535,8 @@ function drawDepthGauge(W: number, H: number, depth: number, order: number, bed:
   }
   // Named, so that it never reads as the beacon's depth when the beacon's tag hides near it.
   gaugeDepth.text = `you ${Math.max(0, depth).toFixed(0)} m`;
+  // Shown again each frame: hidden below only while it has nowhere to go off the target's frame.
+  gaugeDepth.visible = true;
   gaugeDepth.position.set(x0 - 13, Math.max(top + 6, Math.min(bottom - 6, yb)));
   // Off the target's frame (its brackets reach the gauge when the beacon is near the right edge,
   // and on a phone the tags would be drawn over them): each tag moves just above or below the frame,
@@ -2100,13 +2104,18 @@ function draw(): void {
       lamp = Math.max(11, 3 * k);
     const lit = (y: number) =>
       hyw < -HEADLIGHT.fromDepth && boxInBeam([tx - tag!.width / 2, y, tag!.width, tag!.height], [hxw, hyw, c.Angle.value[e]!], sx, sy, k);
-    const spots = [
-      by + lamp,
-      by - lamp - tag.height,
-      by + Math.max(lamp, BEACON_CATCH * k) + 4,
-      by - Math.max(lamp, BEACON_CATCH * k) - 4 - tag.height,
-    ];
-    tag.position.set(tx, spots.find((y) => !lit(y)) ?? spots[0]!);
+    // Nor across the ring's line: a tag pushed in from the edge beside a beacon there would be cut by it.
+    const ring = BEACON_CATCH * k;
+    const onRing = (y: number) => {
+      const x0 = tx - tag!.width / 2,
+        x1 = tx + tag!.width / 2,
+        y1 = y + tag!.height;
+      const near = Math.hypot(Math.max(x0 - bx, 0, bx - x1), Math.max(y - by, 0, by - y1));
+      const far = Math.hypot(Math.max(Math.abs(x0 - bx), Math.abs(x1 - bx)), Math.max(Math.abs(y - by), Math.abs(y1 - by)));
+      return near < ring + 2 && far > ring - 2;
+    };
+    const spots = [by + lamp, by - lamp - tag.height, by + Math.max(lamp, ring) + 4, by - Math.max(lamp, ring) - 4 - tag.height];
+    tag.position.set(tx, spots.find((y) => !lit(y) && !onRing(y)) ?? spots.find((y) => !lit(y)) ?? spots[0]!);
     tagged++;
   }
   for (let i = tagged; i < tags.length; i++) tags[i]!.visible = false;
@@ -2269,6 +2278,16 @@ function draw(): void {
     // (its pill is 7 px wider each side than the text and the switch's ring 3 px more; 5 px more
     // keep it off the depth gauge).
     pointer.x = Math.max(pointer.width / 2 + 15, Math.min(W - GAUGE_WIDTH - pointer.width / 2 - 15, pointer.x));
+    // Pushed in from the edge, a long label (on a phone) runs into its badge: then it goes just
+    // under the badge, or over it where under leaves the view.
+    if (!aim.onScreen) {
+      const [, bTop = 0, , bH = 0] = aim.badge;
+      const pill = [pointer.x - pointer.width / 2 - 7, pointer.y - pointer.height / 2 - 2, pointer.width + 14, pointer.height + 4];
+      if (overlaps(pill, aim.badge, 2)) {
+        const under = bTop + bH + pointer.height / 2 + 6;
+        pointer.y = under + pointer.height / 2 + 4 <= H ? under : bTop - pointer.height / 2 - 6;
+      }
+    }
     // Kept off the hull: a label that would cross the hull's box (its sail and a margin included)
     // moves above or below it, whichever is nearer and inside the view.
     const hr = Math.max(SUBMARINE.length / 2, SUBMARINE.height / 2 + 2) * k + 6,
