@@ -1829,8 +1829,6 @@ function draw(): void {
   const world = shell.world,
     c = world.components,
     e = handles.hull;
-  // A pause stops the controls: an Ahead or Astern let go before it does not run on after it.
-  if (shell.paused) driveTiming.drop();
   const W = app.screen.width,
     H = app.screen.height;
   const hxw = c.Position.x[e]!,

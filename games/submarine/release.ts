@@ -144,7 +144,8 @@ export const MAX_UNSEEN_PRESS = 2;
  * press's, at most `MAX_UNSEEN_PRESS` s when no step saw it), and no further than its let-go's own
  * game time by the clock of the last step (`clock`; at most `MAX_RELEASE_TAIL` s ahead), so a press
  * held across a pause does not run on for the paused time. A let-go while paused ends the press at
- * once (no game time passes while paused), and `drop` (a pause) ends a let-go press still running on.
+ * once (no game time passes while paused); a press let go while the game ran and paused before its
+ * steps caught up runs on after the pause, so that it still gets the time it was held.
  */
 export interface PressTiming {
   /** Notes the step just run: the game time after it (`game`, s) and the clock then (`wallMs`, ms, performance.now()). */
@@ -162,8 +163,6 @@ export interface PressTiming {
    * @throws RangeError when `now` is not finite.
    */
   step(now: number): -1 | 0 | 1;
-  /** Ends a let-go press still running on (the game paused: a pause stops the controls). */
-  drop(): void;
   /** Forgets the presses so far (a new run); a control still held counts from the next step. */
   reset(): void;
 }
@@ -212,9 +211,6 @@ export function createPressTiming(): PressTiming {
       if (now < tail.end) return tail.dir;
       tail = null;
       return 0;
-    },
-    drop() {
-      tail = null;
     },
     reset() {
       tail = null;
