@@ -65,7 +65,7 @@ import {
   parTime,
   touchesMine,
 } from './mines';
-import { createHeaveTiming, releasedOrder } from './release';
+import { createHeaveTiming, createPressTiming, releasedOrder } from './release';
 import { drawFish } from './sea-life';
 import { type BedAhead, bedAhead, DIVE_STOPPED_WORD, helmWord, seabedInput, touchSeabed } from './seabed';
 import { stickDirection, stickShare } from './stick';
@@ -351,37 +351,67 @@ function createWorld(): PhysicsWorld {
   Object.assign(camera, { leadX: 0, leadY: 0, time: 0, shake: 0 });
   hitMarks.length = 0;
   heaveTiming.reset();
+  driveTiming.reset();
   scrapeAt = Number.NaN;
   pickups.length = 0;
   return world;
 }
 
-const held = new Set<string>();
+/** The keys held now (`KeyboardEvent.key`, lower case), each with the order it was pressed in (a later press, a larger number). */
+const held = new Map<string, number>();
+/** Key presses so far (the order `held` keeps). */
+let pressCount = 0;
+/**
+ * Which of two opposed sets of keys is asked for: -1 (a key of `minus`), 1 (a key of `plus`) or 0
+ * (none held). Both held, the one pressed last: a pilot pressing Astern before letting go of Ahead
+ * (or a key whose let-go the page never saw) is answered, not left with the two cancelling out.
+ */
+function keyAxis(minus: readonly string[], plus: readonly string[]): -1 | 0 | 1 {
+  let m = 0,
+    p = 0;
+  for (const k of minus) m = Math.max(m, held.get(k) ?? 0);
+  for (const k of plus) p = Math.max(p, held.get(k) ?? 0);
+  return m === p ? 0 : m > p ? -1 : 1;
+}
 /** The on-screen stick (phones): x right (ahead), y up (rise), each in [-1, 1], and whether a finger is on it. */
 const stickInput = { x: 0, y: 0, held: false };
 /** Whether the game is paused (a let-go then takes no game time); false until the game has started. */
 let pausedNow = (): boolean => false;
 /** Dive or Rise pressed and let go, timed by the events' timestamps (./release.ts): a let-go holds the order of its moment. */
 const heaveTiming = createHeaveTiming();
+/** Ahead or Astern, timed by the events' timestamps (./release.ts): a press acts for as long as it was held, even inside a stalled frame. */
+const driveTiming = createPressTiming();
 /** The share of Dive / Rise the press asked for on its last step held (a let-go press runs on at it). */
 let lastHeave = 1;
-/** Dive or Rise as the keys and the stick ask for it now: -1 dive, 1 rise, 0 neither (or both). */
+/** The share of the throttle Ahead / Astern asked for on its last step held (a let-go press runs on at it). */
+let lastDrive = 1;
+/** Dive or Rise as the keys and the stick ask for it now: -1 dive, 1 rise, 0 neither; a key before the stick. */
 function heaveAsked(): -1 | 0 | 1 {
-  const dive = held.has('s') || held.has('arrowdown') || stickDirection(stickInput.y, stickInput.x) < 0,
-    rise = held.has('w') || held.has('arrowup') || stickDirection(stickInput.y, stickInput.x) > 0;
-  return dive === rise ? 0 : dive ? -1 : 1;
+  const key = keyAxis(['s', 'arrowdown'], ['w', 'arrowup']);
+  return key !== 0 ? key : stickDirection(stickInput.y, stickInput.x);
+}
+/** Ahead or Astern as the keys and the stick ask for it now: 1 ahead, -1 astern, 0 neither; a key before the stick. */
+function driveAsked(): -1 | 0 | 1 {
+  const key = keyAxis(['a', 'arrowleft'], ['d', 'arrowright']);
+  return key !== 0 ? key : stickDirection(stickInput.x, stickInput.y);
+}
+/** Tells the timed controls (./release.ts) what the keys and the stick ask for after an input event at `stamp` (ms). */
+function timeControls(stamp: number): void {
+  heaveTiming.event(heaveAsked(), stamp, pausedNow());
+  driveTiming.event(driveAsked(), stamp, pausedNow());
 }
 addEventListener('keydown', (e) => {
-  held.add(e.key.toLowerCase());
-  heaveTiming.event(heaveAsked(), e.timeStamp, pausedNow());
+  const k = e.key.toLowerCase();
+  if (!held.has(k)) held.set(k, ++pressCount);
+  timeControls(e.timeStamp);
 });
 addEventListener('keyup', (e) => {
   held.delete(e.key.toLowerCase());
-  heaveTiming.event(heaveAsked(), e.timeStamp, pausedNow());
+  timeControls(e.timeStamp);
 });
 addEventListener('blur', (e) => {
   held.clear();
-  heaveTiming.event(0, e.timeStamp, pausedNow());
+  timeControls(e.timeStamp);
 });
 /** Game time a Dive or Rise key was first held (s), NaN while none is. */
 let heaveKeySince = Number.NaN;
@@ -391,18 +421,22 @@ function speedAhead(): number {
   return shell.world.components.Velocity.x[handles.hull]!;
 }
 
-/** The controls held now, at game time `now` (s): keys, the on-screen buttons, which send the same keys, and the stick. */
-function heldInput(now: number): HelmInput {
+/**
+ * The controls held now, at game time `now` (s): keys, the on-screen buttons, which send the same
+ * keys, and the stick; the screw as `drive` says (-1 astern, 1 ahead: driveTiming's step).
+ */
+function heldInput(now: number, drive: -1 | 0 | 1): HelmInput {
   const heaveKey = held.has('s') || held.has('w') || held.has('arrowdown') || held.has('arrowup');
   if (!heaveKey) heaveKeySince = Number.NaN;
   else if (Number.isNaN(heaveKeySince)) heaveKeySince = now;
+  const heave = heaveAsked();
   return {
-    dive: held.has('s') || held.has('arrowdown') || stickDirection(stickInput.y, stickInput.x) < 0,
-    rise: held.has('w') || held.has('arrowup') || stickDirection(stickInput.y, stickInput.x) > 0,
+    dive: heave < 0,
+    rise: heave > 0,
     noseDown: held.has('q'),
     noseUp: held.has('e'),
-    ahead: held.has('d') || held.has('arrowright') || stickDirection(stickInput.x, stickInput.y) > 0,
-    astern: held.has('a') || held.has('arrowleft') || stickDirection(stickInput.x, stickInput.y) < 0,
+    ahead: drive > 0,
+    astern: drive < 0,
     // The stick grades the dive or climb up to what a key asks for (./helm.ts keyHeaveShare) and no
     // further, so a thumb at the rim and a held key take the boat down alike.
     heave: heaveKey
@@ -470,9 +504,15 @@ function stepWorld(world: PhysicsWorld): void {
   // Dive or Rise timed by its events (./release.ts): a press let go before the steps caught up runs
   // on to its own length; one the steps ran past holds the order of the moment it was let go.
   const timed = heaveTiming.step(world.time);
-  const asked = heldInput(world.time);
+  // Ahead or Astern likewise (./release.ts createPressTiming): a press acts for as long as it was
+  // held, even one pressed and let go while the browser drew no frame; let go, at the share it asked.
+  const timedDrive = driveTiming.step(world.time);
+  const drive = driveAsked() || timedDrive;
+  const asked = heldInput(world.time, drive);
   if (timed.dir !== 0 && !asked.dive && !asked.rise) Object.assign(asked, { dive: timed.dir < 0, rise: timed.dir > 0, heave: lastHeave });
   else if (asked.dive !== asked.rise) lastHeave = asked.heave ?? 1;
+  if (drive !== 0 && driveAsked() === 0) asked.drive = lastDrive;
+  else if (drive !== 0) lastDrive = asked.drive ?? 1;
   const input = state.over ? NO_INPUT : seabedInput(state, asked);
   if (!Number.isNaN(timed.letGoAt) && (state.mode === 'diving' || state.mode === 'rising'))
     state.holdY = releasedOrder(state.holdY, heaveTiming.orderAt(timed.letGoAt), state.mode);
@@ -486,6 +526,7 @@ function stepWorld(world: PhysicsWorld): void {
   sea.surface[handles.sea] = params.waveHeight * 0.5 * Math.sin(0.9 * world.time);
   step(world);
   heaveTiming.clock(world.time, performance.now());
+  driveTiming.clock(world.time, performance.now());
   if (state.over) return;
   // The clock starts with the first control held, not when the page loads.
   const anyHeld = input.dive || input.rise || input.noseDown || input.noseUp || input.ahead || input.astern;
@@ -969,8 +1010,9 @@ const touch = isTouchDevice();
 let pauseShown = false;
 /**
  * Shows or hides the pause overlay over a `W` x `H` px scene, on top of everything drawn on the stage:
- * its words on a band at the bottom edge when the boat (at `boatY` px from the top) is in the upper
- * half of the scene, else at the top edge.
+ * its words on a band at the bottom edge, or at the top edge while the boat (at `boatY` px from the
+ * top) would be under the bottom band, so the band stays put as the boat dives (it moved between
+ * the edges as the boat crossed the middle of the scene).
  * The frame where it comes or goes is drawn whatever the frame pacer says: on a busy GPU the pacer
  * skips most frames, and a paused game draws nothing new that would make up for a skipped one.
  */
@@ -995,7 +1037,8 @@ function drawPause(W: number, H: number, boatY: number): void {
       if (r.top - scene.top < H / 2) upper = Math.max(upper, r.bottom - scene.top + 4);
       else lower = Math.min(lower, r.top - scene.top - 4);
     }
-    const top = boatY < H / 2 ? lower - PAUSE_BAND : upper;
+    // The hull (up to 24 px high at the closest zoom) and a margin clear of the bottom band.
+    const top = boatY < lower - PAUSE_BAND - 40 ? lower - PAUSE_BAND : upper;
     pauseBand.clear().rect(0, top, W, PAUSE_BAND).fill({ color: 0x050a14, alpha: 0.6 });
     pause.words.position.set(W / 2, top + PAUSE_BAND / 2);
   }
@@ -1221,7 +1264,7 @@ for (const type of ['pointerup', 'pointercancel', 'lostpointercapture'])
   });
 // Dive or Rise by the stick, timed by its events (after the stick's own listeners have moved it).
 for (const type of ['pointerdown', 'pointermove', 'pointerup', 'pointercancel', 'lostpointercapture'])
-  stick.element.addEventListener(type, (e) => heaveTiming.event(heaveAsked(), e.timeStamp, pausedNow()));
+  stick.element.addEventListener(type, (e) => timeControls(e.timeStamp));
 // On a phone a larger stick (136 px, the knob's reach 56 px): the thumb grades its push over more
 // of its travel, and the rim is easier to find without looking.
 if (compact) stick.element.style.cssText += 'width: 136px; height: 136px;';
@@ -1498,6 +1541,8 @@ function drawDepthGauge(W: number, H: number, depth: number, order: number, bed:
   }
   // Named, so that it never reads as the beacon's depth when the beacon's tag hides near it.
   gaugeDepth.text = `you ${Math.max(0, depth).toFixed(0)} m`;
+  // Shown again each frame: hidden below only while it has nowhere to go off the target's frame.
+  gaugeDepth.visible = true;
   gaugeDepth.position.set(x0 - 13, Math.max(top + 6, Math.min(bottom - 6, yb)));
   // Off the target's frame (its brackets reach the gauge when the beacon is near the right edge,
   // and on a phone the tags would be drawn over them): each tag moves just above or below the frame,
@@ -2063,13 +2108,18 @@ function draw(): void {
       lamp = Math.max(11, 3 * k);
     const lit = (y: number) =>
       hyw < -HEADLIGHT.fromDepth && boxInBeam([tx - tag!.width / 2, y, tag!.width, tag!.height], [hxw, hyw, c.Angle.value[e]!], sx, sy, k);
-    const spots = [
-      by + lamp,
-      by - lamp - tag.height,
-      by + Math.max(lamp, BEACON_CATCH * k) + 4,
-      by - Math.max(lamp, BEACON_CATCH * k) - 4 - tag.height,
-    ];
-    tag.position.set(tx, spots.find((y) => !lit(y)) ?? spots[0]!);
+    // Nor across the ring's line: a tag pushed in from the edge beside a beacon there would be cut by it.
+    const ring = BEACON_CATCH * k;
+    const onRing = (y: number) => {
+      const x0 = tx - tag!.width / 2,
+        x1 = tx + tag!.width / 2,
+        y1 = y + tag!.height;
+      const near = Math.hypot(Math.max(x0 - bx, 0, bx - x1), Math.max(y - by, 0, by - y1));
+      const far = Math.hypot(Math.max(Math.abs(x0 - bx), Math.abs(x1 - bx)), Math.max(Math.abs(y - by), Math.abs(y1 - by)));
+      return near < ring + 2 && far > ring - 2;
+    };
+    const spots = [by + lamp, by - lamp - tag.height, by + Math.max(lamp, ring) + 4, by - Math.max(lamp, ring) - 4 - tag.height];
+    tag.position.set(tx, spots.find((y) => !lit(y) && !onRing(y)) ?? spots.find((y) => !lit(y)) ?? spots[0]!);
     tagged++;
   }
   for (let i = tagged; i < tags.length; i++) tags[i]!.visible = false;
@@ -2238,6 +2288,16 @@ function draw(): void {
     // (its pill is 7 px wider each side than the text and the switch's ring 3 px more; 5 px more
     // keep it off the depth gauge).
     pointer.x = Math.max(pointer.width / 2 + 15, Math.min(W - GAUGE_WIDTH - pointer.width / 2 - 15, pointer.x));
+    // Pushed in from the edge, a long label (on a phone) runs into its badge: then it goes just
+    // under the badge, or over it where under leaves the view.
+    if (!aim.onScreen) {
+      const [, bTop = 0, , bH = 0] = aim.badge;
+      const pill = [pointer.x - pointer.width / 2 - 7, pointer.y - pointer.height / 2 - 2, pointer.width + 14, pointer.height + 4];
+      if (overlaps(pill, aim.badge, 2)) {
+        const under = bTop + bH + pointer.height / 2 + 6;
+        pointer.y = under + pointer.height / 2 + 4 <= H ? under : bTop - pointer.height / 2 - 6;
+      }
+    }
     // Kept off the hull: a label that would cross the hull's box (its sail and a margin included)
     // moves above or below it, whichever is nearer and inside the view.
     const hr = Math.max(SUBMARINE.length / 2, SUBMARINE.height / 2 + 2) * k + 6,
@@ -2573,6 +2633,7 @@ shell.expose({
     stickInput.x = Math.max(-1, Math.min(1, x));
     stickInput.y = Math.max(-1, Math.min(1, y));
     stickInput.held = x !== 0 || y !== 0;
+    timeControls(performance.now());
   },
   /** Whether the pause overlay shows, and its words. */
   pauseOverlay: () => ({ visible: pause.visible, text: pause.text }),

@@ -127,3 +127,94 @@ export function createHeaveTiming(): HeaveTiming {
     },
   };
 }
+
+/**
+ * The most game time a press that no step saw (pressed and let go between two of the page's bursts
+ * of steps, inside a stalled frame) runs for, s: what such a press was held on the clock, up to this.
+ */
+export const MAX_UNSEEN_PRESS = 2;
+
+/**
+ * A held control with two opposed directions (the screw's Ahead / Astern) timed by its events'
+ * timestamps, so a press acts on the steps for as long as it was held on the clock. The page runs
+ * its steps in a burst at each drawn frame and reads the controls once a burst; on a loaded machine
+ * the browser draws no frame for a second or two now and then, and a key pressed and let go inside
+ * such a stall was never seen by any step: the boat did not answer it at all. Here a press runs from
+ * the first step that sees it (`step`) for the time it was held (its let-go's timestamp minus its
+ * press's, at most `MAX_UNSEEN_PRESS` s when no step saw it), and no further than its let-go's own
+ * game time by the clock of the last step (`clock`; at most `MAX_RELEASE_TAIL` s ahead), so a press
+ * held across a pause does not run on for the paused time. A let-go while paused ends the press at
+ * once (no game time passes while paused); a press let go while the game ran and paused before its
+ * steps caught up runs on after the pause, so that it still gets the time it was held.
+ */
+export interface PressTiming {
+  /** Notes the step just run: the game time after it (`game`, s) and the clock then (`wallMs`, ms, performance.now()). */
+  clock(game: number, wallMs: number): void;
+  /**
+   * An input event at `stamp` (its `timeStamp`, ms) left the control asked as `dir` (-1, 1, or 0
+   * for neither), with the game `paused` or running. Call it after every event that can change it;
+   * a `dir` unchanged does nothing. A new direction ends the press before it at once.
+   * @throws RangeError when `dir` is not -1, 0 or 1, or `stamp` is not finite.
+   */
+  event(dir: number, stamp: number, paused?: boolean): void;
+  /**
+   * The direction the control counts as held in for the step at game time `now` (s): the held
+   * one, or a let-go press's while it runs on.
+   * @throws RangeError when `now` is not finite.
+   */
+  step(now: number): -1 | 0 | 1;
+  /** Forgets the presses so far (a new run); a control still held counts from the next step. */
+  reset(): void;
+}
+
+/** A new `PressTiming` with nothing pressed. */
+export function createPressTiming(): PressTiming {
+  let dir: -1 | 0 | 1 = 0,
+    game = 0,
+    wall = Number.NaN;
+  /** The press held now: its timestamp (ms) and the game time of the first step that saw it (NaN: none yet). */
+  let since = 0,
+    start = Number.NaN;
+  /** The let-go press running on: its direction, and its end (game s), or its length (s) from its first step when no step saw it held. */
+  let tail: { dir: -1 | 1; length: number; end: number } | null = null;
+  return {
+    clock(g, wallMs) {
+      game = g;
+      wall = wallMs;
+    },
+    event(d, stamp, paused = false) {
+      if (d !== -1 && d !== 0 && d !== 1) throw new RangeError(`PressTiming.event: dir must be -1, 0 or 1, got ${d}`);
+      if (!Number.isFinite(stamp)) throw new RangeError(`PressTiming.event: stamp must be finite ms, got ${stamp}`);
+      if (d === dir) return;
+      tail = null;
+      if (dir !== 0 && d === 0 && !paused) {
+        const held = Math.max(0, (stamp - since) / 1000);
+        if (Number.isNaN(start)) tail = { dir, length: Math.min(held, MAX_UNSEEN_PRESS), end: Number.NaN };
+        else {
+          // The let-go's game time by the last step's clock (see HeaveTiming.event).
+          const after = Number.isNaN(wall) ? 0 : Math.min(MAX_RELEASE_TAIL, Math.max(-MAX_RELEASE_TAIL, (stamp - wall) / 1000));
+          tail = { dir, length: held, end: Math.min(start + held, game + after) };
+        }
+      }
+      dir = d as -1 | 0 | 1;
+      since = stamp;
+      start = Number.NaN;
+    },
+    step(now) {
+      if (!Number.isFinite(now)) throw new RangeError(`PressTiming.step: now must be finite s, got ${now}`);
+      if (dir !== 0) {
+        if (Number.isNaN(start)) start = now;
+        return dir;
+      }
+      if (!tail) return 0;
+      if (Number.isNaN(tail.end)) tail.end = now + tail.length;
+      if (now < tail.end) return tail.dir;
+      tail = null;
+      return 0;
+    },
+    reset() {
+      tail = null;
+      start = Number.NaN;
+    },
+  };
+}

@@ -96,7 +96,7 @@ describe('submarine beacon pointer', () => {
     const beacons = [40, -20, 160, -40, 280, -30, 400, -50, 510, -35, 620, -45];
     expect(lastBeacon(beacons)).toBe(5);
     const taken = [true, false, false, false, false, false];
-    // B overshot: held up to BEACON_PASSED behind (backing that far is about 8 s at 4 m/s) ...
+    // B overshot: held up to BEACON_PASSED behind (backing that far is about 10 s at 4 m/s) ...
     expect(passedBeacon(beacons, 1, 160 + BEACON_PASSED - 0.5)).toBe(false);
     expect(chooseBeacon(beacons, taken, 160 + BEACON_PASSED - 0.5, -40, 1)).toBe(1);
     // ... and just past it B is passed and the target is C, ahead.

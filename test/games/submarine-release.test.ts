@@ -9,7 +9,7 @@ import { createPhysicsWorld, type PhysicsWorld, step } from '@bitphysics/physics
 import { SUBMARINE_NEUTRAL_FILL, type SubmarineHandles, submarine } from '@bitphysics/projects';
 import { describe, expect, it } from 'vitest';
 import { createHelmState, type HelmState, keyHeaveShare, NO_INPUT, steer } from '../../games/submarine/helm';
-import { createHeaveTiming, MAX_RELEASE_TAIL, releasedOrder } from '../../games/submarine/release';
+import { createHeaveTiming, createPressTiming, MAX_RELEASE_TAIL, MAX_UNSEEN_PRESS, releasedOrder } from '../../games/submarine/release';
 import { STICK_DEAD, stickDirection, stickShare } from '../../games/submarine/stick';
 
 /** A boat hovering 40 m down on a calm sea, and its helm. */
@@ -121,6 +121,60 @@ describe('submarine let-go', () => {
     const y = b.world.components.Position.y[b.h.hull]!;
     expect(ranOn).toBeLessThan(refY - 2); // the order had run on metres past the let-go
     expect(Math.abs(y - refY)).toBeLessThan(0.3);
+  });
+});
+
+describe('submarine screw press timing', () => {
+  /** Steps of 1/60 s from game time `from` (s) for `n` steps: the direction each step is given. */
+  const steps = (t: ReturnType<typeof createPressTiming>, from: number, n: number): number[] =>
+    Array.from({ length: n }, (_, i) => t.step(from + i / 60));
+  const count = (dirs: number[], d: number) => dirs.filter((x) => x === d).length;
+
+  it('a press no step saw (pressed and let go inside a stalled frame) runs for as long as it was held, from the next step', () => {
+    const t = createPressTiming();
+    t.clock(5, 10_000);
+    t.event(1, 10_200);
+    t.event(0, 11_200); // held 1 s of the clock, no step in between
+    const dirs = steps(t, 5, 120);
+    // 60 steps of 1/60 s are 1 s (within a step for the float sum).
+    expect(Math.abs(count(dirs, 1) - 60)).toBeLessThanOrEqual(1);
+    expect(dirs.slice(0, 59).every((d) => d === 1)).toBe(true);
+    // Astern the same, capped at MAX_UNSEEN_PRESS.
+    t.event(-1, 20_000);
+    t.event(0, 25_000);
+    expect(Math.abs(count(steps(t, 10, 600), -1) - 60 * MAX_UNSEEN_PRESS)).toBeLessThanOrEqual(1);
+  });
+
+  it('a press the steps saw ends at its length from its first step, no later than its let-go by the clock', () => {
+    const t = createPressTiming();
+    t.clock(0, 1000);
+    t.event(1, 1010);
+    // A frame of 0.5 s runs 30 steps with the key held; the last step's clock is at 1500 ms.
+    expect(count(steps(t, 0, 30), 1)).toBe(30);
+    t.clock(0.5, 1500);
+    // Let go 0.3 s after that frame (held 0.79 s): 0.29 s more from game time 0.5.
+    t.event(0, 1800);
+    const on = count(steps(t, 0.5, 60), 1);
+    expect(Math.abs(on - 0.29 * 60)).toBeLessThanOrEqual(1);
+    // Held across a pause of 10 s, no frame run since: it runs on at most MAX_RELEASE_TAIL, not 10 s.
+    t.event(1, 2000);
+    steps(t, 1, 6);
+    t.clock(1.1, 2100);
+    t.event(0, 12_200);
+    expect(count(steps(t, 1.1, 120), 1)).toBeLessThanOrEqual(MAX_RELEASE_TAIL * 60 + 1);
+  });
+
+  it('a let-go while paused ends the press at once; a new direction ends the one before', () => {
+    const t = createPressTiming();
+    t.clock(0, 0);
+    t.event(1, 100);
+    t.event(0, 900, true);
+    expect(count(steps(t, 0, 60), 1)).toBe(0);
+    t.event(1, 2000);
+    t.event(-1, 2400); // Astern pressed over Ahead
+    expect(steps(t, 1, 3)).toEqual([-1, -1, -1]);
+    expect(() => t.event(2, 0)).toThrow(/PressTiming.event: dir/);
+    expect(() => t.step(Number.NaN)).toThrow(/PressTiming.step: now/);
   });
 });
 

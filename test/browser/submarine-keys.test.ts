@@ -1,0 +1,132 @@
+/**
+ * Submarine at desktop size (1280 x 800, keys): the screw answers every press of Ahead / Astern.
+ * A press made and let go while the page draws no frame (a loaded machine's stall of a second or
+ * more: the steps run in a burst at the next frame) drives the boat as far as the same press held
+ * across frames; Astern pressed while Ahead is still held backs the boat (the key pressed last wins),
+ * and Ahead takes over again when Astern is let go.
+ */
+import type { Page } from 'playwright-core';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
+
+type Sub = {
+  paused: boolean;
+  reset(): void;
+  loop: { stop(): void; start(): void; runFrames(n: number, s?: number): void };
+  world: {
+    time: number;
+    components: {
+      Position: { x: Float64Array; y: Float64Array };
+      Velocity: { x: Float64Array; y: Float64Array };
+      Ballast: { fore: Float64Array; aft: Float64Array };
+    };
+  };
+  hull(): number;
+  state: { holdY: number; mode: string; fill: number; throttle: number };
+};
+
+/**
+ * A fresh world with the boat hovering at 30 m (tanks at neutral, holding the depth), the game
+ * running and its animation loop stopped: no frame runs until the test runs them (`frames`), as
+ * in a stall. Returns the hull's x, m.
+ */
+function hover(page: Page): Promise<number> {
+  return page.evaluate(() => {
+    const w = window.game as unknown as Sub;
+    w.reset();
+    w.paused = false;
+    w.loop.stop();
+    const c = w.world.components,
+      e = w.hull();
+    c.Position.y[e] = -30;
+    c.Velocity.y[e] = 0;
+    c.Ballast.fore[e] = c.Ballast.aft[e] = 0.7675;
+    Object.assign(w.state, { holdY: -30, mode: 'holding', fill: 0.7675 });
+    return c.Position.x[e]!;
+  });
+}
+
+/** Runs `seconds` of game time in frames of 1/60 s now, with `paused` set first; returns the hull's x (m) and velocity along x (m/s). */
+function frames(page: Page, seconds: number, paused = false): Promise<{ x: number; vx: number }> {
+  return page.evaluate(
+    ([s, p]) => {
+      const w = window.game as unknown as Sub;
+      w.paused = p as boolean;
+      w.loop.runFrames(Math.round((s as number) * 60), 1 / 60);
+      const c = w.world.components,
+        e = w.hull();
+      return { x: c.Position.x[e]!, vx: c.Velocity.x[e]! };
+    },
+    [seconds, paused],
+  );
+}
+
+const sleep = (ms: number) => new Promise((r) => setTimeout(r, ms));
+
+describe('submarine keys (desktop)', () => {
+  let h: Harness;
+  let g: GamePage;
+  beforeAll(async () => {
+    h = await Harness.start();
+    g = await h.openGame('submarine', { viewport: { width: 1280, height: 800 }, query: { waves: 0, beacons: 1 } });
+    // The keys' timestamps as the page sees them (Event.timeStamp, ms).
+    await g.page.evaluate(() => {
+      const w = window as unknown as { keyStamps: number[] };
+      w.keyStamps = [];
+      for (const type of ['keydown', 'keyup']) addEventListener(type, (e) => w.keyStamps.push(e.timeStamp), true);
+    });
+  }, START_TIMEOUT_MS);
+  afterAll(async () => {
+    await g?.close();
+    await h?.close();
+  });
+
+  it('a press of Ahead made while no frame is drawn drives the boat as far as the same press held across frames', async () => {
+    const stamps = () => g.page.evaluate(() => (window as unknown as { keyStamps: number[] }).keyStamps.splice(0));
+    // D held for a second of the clock with no frame run meanwhile (the loop stopped), then 5 s of
+    // frames: the press, which no step saw, runs for as long as it was held.
+    let x0 = await hover(g.page);
+    await frames(g.page, 0.2);
+    await stamps();
+    await g.page.keyboard.down('d');
+    await sleep(1000);
+    await g.page.keyboard.up('d');
+    const [down = 0, up = 0] = await stamps();
+    const held = (up - down) / 1000;
+    expect(held).toBeGreaterThan(0.9);
+    const stalled = (await frames(g.page, 5)).x - x0;
+    // The same press held across frames: pressed while paused, `held` s of frames run, let go
+    // while paused again (a let-go while paused ends the press at once).
+    x0 = await hover(g.page);
+    await frames(g.page, 0.2);
+    await frames(g.page, 0, true);
+    await g.page.keyboard.down('d');
+    await frames(g.page, held);
+    await frames(g.page, 0, true);
+    await g.page.keyboard.up('d');
+    const framed = (await frames(g.page, 5)).x - x0;
+    // A second of full ahead from a hover takes the boat about 2 m (it glides on after); the two
+    // presses differ by at most a step of 1/60 s at their ends (4 m/s x 1/60 s = 7 cm).
+    expect(framed).toBeGreaterThan(1);
+    expect(Math.abs(stalled - framed)).toBeLessThan(0.1);
+    expect(g.errors).toEqual([]);
+  });
+
+  it('Astern pressed while Ahead is still held backs the boat; let go, Ahead drives it again', async () => {
+    await hover(g.page);
+    await g.page.keyboard.down('d');
+    const ahead = await frames(g.page, 1.5);
+    expect(ahead.vx).toBeGreaterThan(3);
+    await g.page.keyboard.down('a');
+    // Astern brakes the boat and backs it at up to half its top speed (./helm.ts: 4 m/s).
+    const backing = await frames(g.page, 3);
+    expect(backing.vx).toBeLessThan(-2);
+    expect(await g.page.evaluate(() => (window.game as unknown as Sub).state.throttle)).toBeLessThan(-0.4);
+    await g.page.keyboard.up('a');
+    const again = await frames(g.page, 2);
+    expect(again.vx).toBeGreaterThan(2);
+    await g.page.keyboard.up('d');
+    await g.page.evaluate(() => (window.game as unknown as Sub).loop.start());
+    expect(g.errors).toEqual([]);
+  });
+});
