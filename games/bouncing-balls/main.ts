@@ -1096,22 +1096,20 @@ function local(event: PointerEvent): [number, number] {
 }
 
 /**
- * The pull, m of the court as drawn, that throws at full speed (MAX_THROW_SPEED): 420 px on a
- * 1280 x 800 desktop (56 px a metre). Long, so a few px of a shaky hand change a throw little.
- */
-const FULL_PULL_METRES = 7.5;
-/**
- * The pull, px, that throws at full speed (MAX_THROW_SPEED): FULL_PULL_METRES at the court's drawn
- * scale (the camera's px per metre), so a pull as long as a ramp throws as hard on a phone as on a
- * desktop: 420 px on a 1280 x 800 desktop, 268 px on a 390 x 844 phone (36 px a metre; a basket's
- * throws there take pulls of some 60 to 160 px, inside the 170 px of screen under a throw from
- * 1.5 m over the floor). Raw px made a phone's pull throw 14 % harder per metre of court
- * than a desktop's (234 px, 60 % of its shorter side). The same for every press, wherever it begins
- * (taken when the press begins), so a pull's power is a function of its length alone. Pointer
- * capture keeps the pull going past the canvas' and the window's edge.
+ * The pull, px, that throws at full speed (MAX_THROW_SPEED): 60 % of the canvas' shorter side, within
+ * [230, 420] px. Long, so a few px of a shaky hand change a throw little: a basket's throws take
+ * pulls of about 55 to 140 px on a phone (234 px full) and 120 to 250 px on a desktop (420 px), and
+ * the window of pull lengths that still score is some 15 px wide (phone) and 24 px (desktop), of
+ * sideways pull 9 and 16 px (medians of `node scripts/bouncing-balls-reach.mjs --pull 420,234`).
+ * Not longer on a phone: a throw from 1.5 m over the floor of its box has some 170 px of screen
+ * under it to pull into, and the steepest baskets must fit in it with room to spare (a full pull of
+ * 7.5 m of the court, 268 px there, left players at the screen's bottom edge short of the hoop).
+ * The same for every press, wherever it begins (taken when the press begins), so a pull's power is
+ * a function of its length alone. Pointer capture keeps the pull going past the canvas' and the
+ * window's edge.
  */
 function fullPull(): number {
-  return FULL_PULL_METRES * renderer.camera.pixelsPerMeter;
+  return Math.min(420, Math.max(230, 0.6 * Math.min(canvas.clientWidth || innerWidth, canvas.clientHeight || innerHeight)));
 }
 
 /** Whether the current press is a finger's (pointer type 'touch'). */
