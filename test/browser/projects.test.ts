@@ -1234,6 +1234,11 @@ describe('projects', () => {
     // A first miss costs 10 s but no star, and the ring comes round again (second-try.ts): a stranger
     // had no chance to turn back and three misses left one star.
     expect(first).toEqual({ missed: 0, status: 'ahead', banner: 'Missed ring 2 · +10 s · try it again' });
+    // The goal line names the second try; the readout counts rings, none missed yet: passed, missed
+    // and to go add up to the 3 rings.
+    await g.frames(1);
+    expect(await g.page.locator('[data-hud="goal"]').textContent()).toMatch(/Fly through ring 2 of 3 \(second try\) · .* \(\+10 s\)/);
+    expect(await g.page.locator('[data-hud="readout"]').textContent()).toMatch(/ · rings: 1 passed · 2 to go$/);
     // Missed on its second try too (put 150 m before it as it is laid now, 100 m above): for good.
     await g.page.evaluate(() => {
       const w = window.game as unknown as Flight;
@@ -1258,6 +1263,8 @@ describe('projects', () => {
     // to play for after three misses: ./course.ts courseStars), said at
     // once in the banner; the goal line above the scene adds the time and shows the stars left.
     expect(missed).toEqual({ missed: 1, banner: 'Missed ring 2 · −1 ★ · +10 s' });
+    await g.frames(1);
+    expect(await g.page.locator('[data-hud="readout"]').textContent()).toMatch(/ · rings: 1 passed · 1 missed · 1 to go$/);
     // Ring 3, laid for a climb or a dive, seen from 100 m above ring 2: its tip names the ways it
     // lies from the aircraft now (lower, from up here), not the way it was laid.
     const tip3 = await g.runUntil(
@@ -1302,6 +1309,14 @@ describe('projects', () => {
     const again = g.page.getByRole('button', { name: 'Try again ↺', exact: true });
     await again.waitFor({ state: 'visible' });
     expect(await g.page.locator('[data-hud="end"]').textContent()).toContain('Crashed!');
+    // Paused with the end card up, the card stays clear and bright: no dimming and no "Paused" over
+    // it (a stranger saw "Paused / P to resume" under a dimmed "Course 1 over").
+    await g.page.evaluate(() => {
+      (window.game as unknown as Flight).paused = true;
+    });
+    await g.frames(3);
+    expect(await g.page.locator('[data-hud="paused"]').isVisible()).toBe(false);
+    expect(await again.isVisible()).toBe(true);
     await again.click();
     await g.waitFor(() => (window.game as unknown as Flight).state.phase === 'flying', null);
     expect(await g.page.evaluate(() => (window.game as unknown as Flight).state.score)).toBe(0);
@@ -1484,17 +1499,24 @@ describe('projects', () => {
           goal = text('goal'),
           banner = text('banner'),
           note = text('throttle-note');
-        const rings = Number(read.match(/rings (\d+)\//)?.[1] ?? Number.NaN),
-          missed = Number(read.match(/missed (\d+)/)?.[1] ?? 0),
+        const rings = Number(read.match(/(\d+) passed/)?.[1] ?? Number.NaN),
+          missed = Number(read.match(/(\d+) missed/)?.[1] ?? 0),
+          toGo = Number(read.match(/(\d+) to go/)?.[1] ?? Number.NaN),
           throttle = Number(read.match(/throttle (\d+)%/)?.[1] ?? Number.NaN);
         const said = `${goal} | ${read} | ${banner} | ${note}`;
         const stars = (goal.match(/★/g) ?? []).length;
-        // The readout counts every miss (10 s each); the stars and the rings left, the misses for good
-        // (a first miss gives the ring a second try: second-try.ts).
-        const forGood = (window.game as unknown as { state: { missed: number } }).state.missed;
+        // The readout counts rings: passed, missed for good and to go, adding up to the course's (a
+        // stranger read "Ring 4 ✓" over "rings 3/10 · missed 2", the misses counted with a second
+        // try's first one). The clock's penalty counts every miss (10 s each); the stars, the misses
+        // for good (a first miss gives the ring a second try: second-try.ts).
+        const st = (window.game as unknown as { state: { missed: number; again: number } }).state;
+        const forGood = st.missed;
+        if (read && missed !== forGood) hud.bad.push(`missed: ${said}`);
+        if (read && rings + missed + toGo !== (window.game as unknown as { rings(): unknown[] }).rings().length)
+          hud.bad.push(`rings do not add up: ${said}`);
         if (goal.includes('★') || goal.includes('☆')) {
           if (stars !== 3 - Math.ceil(forGood / 2)) hud.bad.push(`stars: ${said}`);
-          if (Number(goal.match(/\(\+(\d+) s\)/)?.[1] ?? 0) !== 10 * missed) hud.bad.push(`penalty: ${said}`);
+          if (Number(goal.match(/\(\+(\d+) s\)/)?.[1] ?? 0) !== 10 * (forGood + st.again)) hud.bad.push(`penalty: ${said}`);
         }
         const next = goal.match(/ring (\d+) of/)?.[1];
         if (next && Number(next) !== rings + forGood + 1) hud.bad.push(`next ring: ${said}`);
@@ -1505,7 +1527,7 @@ describe('projects', () => {
         }
         if (banner.startsWith('Missed')) {
           hud.seen.push('miss');
-          if (missed < 1) hud.bad.push(`miss: ${said}`);
+          if (banner.includes('try it again') ? st.again < 1 : missed < 1) hud.bad.push(`miss: ${said}`);
         }
         if (note) {
           hud.seen.push('note');
@@ -1520,6 +1542,14 @@ describe('projects', () => {
         if (read && !(agl >= 0)) hud.bad.push(`no height above ground: ${said}`);
         if (read && agl !== panelAgl) hud.bad.push(`above ground ${agl} in the readout, ${panelAgl} in the panel`);
         if (agl > 0 && !(alt - agl >= 59 && alt - agl <= 760)) hud.bad.push(`ground at ${alt - agl} m: ${said}`);
+        // The ring label keeps off the aircraft (its box on the screen in the chase view; a stranger
+        // read "ring 9 · 671 m" over the tail): both as of the last drawn frame.
+        const shown = window.game as unknown as { ringPointer(): { inView: boolean; box: number[] }; planeFade(): { box: number[] } };
+        const lp = shown.ringPointer(),
+          pb = shown.planeFade().box as [number, number, number, number];
+        const [bx, by, bw, bh] = lp.box as [number, number, number, number];
+        if (lp.inView && pb[2] > 0 && bx < pb[0] + pb[2] && pb[0] < bx + bw && by < pb[1] + pb[3] && pb[1] < by + bh)
+          hud.bad.push(`ring label [${lp.box.map(Math.round)}] over the aircraft [${pb.map(Math.round)}]`);
         // The warning, while it shows, stays in one place and nothing over the scene overlaps it.
         // It blinks (hidden every other third of a second): a frame in its hidden phase counts too,
         // its box is the same, so a loaded machine drawing a few frames before the crash still sees it.
