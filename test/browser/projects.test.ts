@@ -57,11 +57,17 @@ describe('projects', () => {
       target: string;
       phase: string;
       aim: { angle: number; speed: number };
-      plan: { hit: boolean; distance: number; time: number; current: boolean };
+      plan: { hit: boolean; distance: number; time: number; current: boolean; shown: boolean };
       flight: { state: string; elapsed: number; fuelUsed: number; burns: number } | null;
     };
     type Solar = { mission(): Mission; params: { rate: number } };
-    const current = () => g.waitFor(() => (window.game as unknown as Solar).mission().plan.current, null);
+    // The forecast for the aim now, drawn: the status line's words change with the map's (a stranger
+    // read "day 371" in the line over tags still saying "day 366").
+    const current = () =>
+      g.waitFor(() => {
+        const p = (window.game as unknown as Solar).mission().plan;
+        return p.current && p.shown;
+      }, null);
     await current();
     const m0 = await g.page.evaluate(() => (window.game as unknown as Solar).mission());
     expect([m0.number, m0.target, m0.phase]).toEqual([1, 'Mars', 'aim']);
@@ -239,14 +245,17 @@ describe('projects', () => {
     for (const angle of [150, 160, 170, 176, 180])
       for (const speed of [2.2, 2.7, 3.2]) {
         await g.page.evaluate(([a, s]) => (window.game as unknown as Solar).setAim(a!, s!), [angle, speed]);
-        const seen = await g.waitFor(() => {
-          const game = window.game as unknown as Solar;
-          const plan = game.mission().plan;
-          const ghost = game.ghost();
-          return plan.current && ghost.key === plan.key
-            ? { plan, ghost, line: document.querySelector('[data-hud="plan"]')?.textContent ?? '' }
-            : null;
-        }, null);
+        // The line is read once a frame showing this forecast is drawn: it changes with the map.
+        const seen = await g.waitFor(
+          (head) => {
+            const game = window.game as unknown as Solar;
+            const plan = game.mission().plan;
+            const ghost = game.ghost();
+            const line = document.querySelector('[data-hud="plan"]')?.textContent ?? '';
+            return plan.current && ghost.key === plan.key && line.startsWith(head) ? { plan, ghost, line } : null;
+          },
+          `Launch ${speed.toFixed(1)} km/s ${angle === 180 ? 'against' : `${angle}°`}`,
+        );
         const where = against(seen.ghost.ring, seen.ghost.dot);
         const what = `${angle}° ${speed} km/s: closest ${seen.plan.distance} AU, dot ${JSON.stringify(where)}, ${seen.line}`;
         // The line's verdict is the forecast's.
@@ -308,6 +317,39 @@ describe('projects', () => {
         ),
       null,
     );
+    // Faster, a step at a time: once the line reads the new speed, the map's tags give the same day
+    // as the line (a stranger read "day 371" in the line over tags saying "day 366"), and the line
+    // says which way the probe crosses Mars's orbit then, and when it crosses it again (the day
+    // picked switched between the two, 222 to 341, and read as random).
+    type Aiming = { mission(): { aim: { speed: number }; plan: { shown: boolean } } };
+    let crossings = 0;
+    for (let i = 0; i < 8; i++) {
+      const speed = await g.page.evaluate(() => (window.game as unknown as Aiming).mission().aim.speed);
+      await g.press('ArrowUp');
+      const seen = await g.waitFor(
+        (head) => {
+          const line = document.querySelector('[data-hud="plan"]')?.textContent ?? '';
+          if (!line.startsWith(head) || !(window.game as unknown as Aiming).mission().plan.shown) return null;
+          const tag = (n: string) => {
+            const el = document.querySelector<HTMLElement>(`[data-tag="${n}"]`);
+            return el && el.style.display !== 'none' ? el.textContent : null;
+          };
+          return { line, tags: [tag('target-then'), tag('probe-then')] };
+        },
+        `Launch ${(speed + 0.1).toFixed(1)} km/s`,
+      );
+      const day = seen.line.match(/is at Mars’s orbit on day (\d+) (going out|coming in)/)?.[1];
+      if (!day) continue;
+      crossings++;
+      expect(seen.tags, seen.line).toEqual([`Mars on day ${day}`, `probe on day ${day}`]);
+      // Every crossing named with its way; in order of day they alternate, out first: a path from
+      // the Earth, inside Mars's orbit, crosses it going out before it can come back in.
+      const named = [...seen.line.matchAll(/day (\d+) (going out|coming in)/g)].map((c) => [Number(c[1]), c[2]] as const);
+      const ways = named.sort((a, b) => a[0] - b[0]).map((c) => c[1]);
+      if (named.length > 1) expect(seen.line).toContain('crosses again');
+      expect(ways, seen.line).toEqual(ways.map((_, k) => (k % 2 === 0 ? 'going out' : 'coming in')));
+    }
+    expect(crossings).toBeGreaterThan(3);
     // Mission 4 started, then the page reloaded: mission 4 again (it went back to mission 1).
     await g.page.evaluate(() => (window.game as unknown as Solar).startMission(3));
     await g.page.reload();
@@ -451,6 +493,19 @@ describe('projects', () => {
     const budget = Number(await card.locator('.ss-card-parts b').first().textContent());
     expect(budget).toBeGreaterThanOrEqual(975);
     expect(budget).toBeLessThanOrEqual(990);
+    // At desktop size too, the card lists the missions with their stars, as on a phone (a stranger
+    // who looked during the banner took the desktop for a banner alone).
+    const chips = await card.locator('.ss-card-map > span').allTextContents();
+    expect(chips.map((c) => c.replace(/ [★–]+$/, ''))).toEqual([
+      '1 Mars',
+      '2 Venus',
+      '3 Jupiter',
+      '4 Mercury',
+      '5 Saturn',
+      '6 Uranus',
+      '7 Neptune',
+    ]);
+    expect(chips[0]).toBe('1 Mars ★★★');
     // The card's text over the scene is legible (WCAG AA, 4.5:1).
     expect((await lowContrastText(g.page)).filter((t) => /reached|points|arrival|Speed|Flight|Next|Try|Mars|★/.test(t.text))).toEqual([]);
     await card.getByRole('button', { name: 'next mission (Enter)' }).click();
