@@ -2315,7 +2315,8 @@ function reading(m: Mission): [string, string] {
   const day = Math.round(pathDay(f, i));
   const others = ways.filter((c) => c.k !== i).map((c) => `day ${c.day} ${c.way}`);
   const which = ` ${crossingWay(f, i, crossingList.includes(i))}`;
-  const also = others.length > 0 ? ` (it crosses again on ${others.join(', ')}: ${t} is nearer on day ${day})` : '';
+  // Short enough for the line to stay on one line at desktop size.
+  const also = others.length > 0 ? ` (${others.join(', ')}, ${t} farther then)` : '';
   return [`is at ${t}’s orbit on day ${day}${which}${also}. Will ${t} be there? ${starText(starsFor(m, aim.speed))} if so`, ''];
 }
 /** The path's crossings of the target's orbit (`reading`), indices into the forecast's path. */
