@@ -45,7 +45,7 @@ export interface CourseResult {
 export interface FinishCard {
   /** 'Course 2 complete!' (every ring passed) or 'Course 2 over'. */
   title: string;
-  /** The result: rings passed, the course time (m:ss, penalties in) and the stars. */
+  /** The result: rings passed and missed for good, the course time (m:ss, penalties in) and the stars: "9 of 10 rings passed · 1 missed · 1:40  ★★☆". */
   result: string;
   /** The time's sum when a ring was missed ('' otherwise): "Time 1:33 + 50 s penalty (5 misses × 10 s) = 2:23"; and the comparison with the best. */
   detail: string;
@@ -81,10 +81,15 @@ export function finishCard(r: CourseResult): FinishCard {
   const starText = '★'.repeat(stars) + '☆'.repeat(3 - stars);
   const keys = !r.touch;
   const course = courseName(r.seed, true);
-  const penalty = `${MISS_PENALTY * slips} s penalty (${slips} miss${slips === 1 ? '' : 'es'} × ${MISS_PENALTY} s)`;
+  // A ring missed and then flown on its second try is passed, yet its first miss cost 10 s: the sum
+  // says so, or the misses counted would not match the rings missed.
+  const tries = again > 0 ? ', second tries included' : '';
+  const penalty = `${MISS_PENALTY * slips} s penalty (${slips} miss${slips === 1 ? '' : 'es'} × ${MISS_PENALTY} s${tries})`;
+  // Passed and missed counted as the readout counts them (rings, not misses).
+  const lost = r.missed > 0 ? ` · ${r.missed} missed` : '';
   return {
     title: r.passed === r.total ? `${course} complete!` : `${course} over`,
-    result: `${r.passed} of ${r.total} rings in ${clockText(total)}  ${starText}`,
+    result: `${r.passed} of ${r.total} rings passed${lost} · ${clockText(total)}  ${starText}`,
     // The penalty is whole seconds, so the floored times add up.
     detail: slips > 0 ? `Time ${clockText(r.flown)} + ${penalty} = ${clockText(total)}` : '',
     best:

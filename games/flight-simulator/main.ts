@@ -1102,15 +1102,18 @@ function updateGoal(): void {
   const stars = courseStars(state.missed);
   const courseClock = `${clock(courseTime(state.time, slips))}${penalty} · ${'★'.repeat(stars)}${'☆'.repeat(3 - stars)}`;
   const distance = n < 0 ? '' : distanceText(Math.hypot(rings[n]!.x - at.x, rings[n]!.y - at.y, rings[n]!.z - at.z));
+  // A ring missed once comes round again (./second-try.ts): the line says so while it is next, so the
+  // 10 s just added and the ring number not moving on read as the second try they are.
+  const retry = n >= 0 && tried.has(n);
   const text =
     state.phase === 'crashed'
       ? `Crashed · ${state.score} of ${total} rings`
       : n < 0
-        ? `${compact ? 'Done' : 'Course done'} · ${state.score} of ${total} rings in ${courseClock}`
+        ? `${compact ? 'Done' : 'Course done'} · ${state.score} of ${total} rings passed · ${courseClock}`
         : compact
           ? // The course's number while the flight waits at its start (the line has no room for it in flight).
-            `${state.time === 0 ? `${courseName(params.seed, true)} · ` : ''}Ring ${n + 1} of ${total} · ${distance} · ${courseClock}`
-          : `${courseName(params.seed)} · Fly through ring ${n + 1} of ${total} · ${distance} · ${courseClock}`;
+            `${state.time === 0 ? `${courseName(params.seed, true)} · ` : ''}Ring ${n + 1}${retry ? ' (2nd try)' : ` of ${total}`} · ${distance} · ${courseClock}`
+          : `${courseName(params.seed)} · Fly through ring ${n + 1} of ${total}${retry ? ' (second try)' : ''} · ${distance} · ${courseClock}`;
   if (goalLine.textContent !== text) goalLine.textContent = text;
   // Red for 2 s after a miss: the time it cost shows where the clock is.
   goalLine.style.color = shell.world.time - missedAt < 2 ? '#ff8a5a' : '#ffd166';
@@ -1122,8 +1125,11 @@ let shownCard = '';
 function updateHud(i: ReturnType<typeof instruments>): void {
   const total = rings.length;
   const speed = `${i.speed.toFixed(0)} m/s`;
-  // Every miss, a second try's first one included: each is 10 s on the clock.
-  const missedNote = state.missed + state.again > 0 ? ` · missed ${state.missed + state.again}` : '';
+  // The rings counted one way everywhere (the end card too: ./finish.ts finishCard): passed, missed
+  // for good and still to fly, which add up to the course's rings. A first miss is not a ring missed
+  // (it comes round again: ./second-try.ts); the goal line says "second try" and its 10 s.
+  const toGo = rings.filter((r) => r.status === 'ahead').length;
+  const missedNote = state.missed > 0 ? ` · ${state.missed} missed` : '';
   // The height above the ground (or the sea) under the aircraft, what keeps it off the hills: "alt"
   // counts from sea level, and a pilot reading it alone flew into a hill. Never below 0 (a crash).
   const aboveGround = `${Math.max(0, i.agl).toFixed(0)} m above ground`;
@@ -1131,8 +1137,8 @@ function updateHud(i: ReturnType<typeof instruments>): void {
   // hills), the rings and the misses (a first miss said nowhere else was unexplained) and the engine;
   // the speed and the sea-level altitude are the cockpit's gauges.
   const read = compact
-    ? `${aboveGround} · rings ${state.score}/${total}${missedNote} · engine ${(state.throttle * 100).toFixed(0)}%`
-    : `${speed} · alt ${i.altitude.toFixed(0)} m · ${aboveGround} · throttle ${(state.throttle * 100).toFixed(0)}% · rings ${state.score}/${total}${missedNote}`;
+    ? `${aboveGround} · ${state.score} passed${missedNote} · engine ${(state.throttle * 100).toFixed(0)}%`
+    : `${speed} · alt ${i.altitude.toFixed(0)} m · ${aboveGround} · throttle ${(state.throttle * 100).toFixed(0)}% · rings: ${state.score} passed${missedNote} · ${toGo} to go`;
   if (readLine.textContent !== read) readLine.textContent = read;
   if (!compact) {
     const text = [
@@ -1401,7 +1407,14 @@ function pointToNextRing(): void {
       marker.style.display !== 'none' &&
       Math.abs(px - pathAim.x) <= halfW + MARKER_HALF[0] &&
       Math.abs(py - pathAim.y) <= half + MARKER_HALF[1];
+    // Or the aircraft (its box on the screen in the chase view, `planeBox`): a label over the tail
+    // hides the aircraft and reads as the aircraft's own.
+    const [p0, q0, pw, ph] = planeBox;
+    const coversPlane = ([px, py]: [number, number]) =>
+      pw > 0 && px + halfW > p0 && px - halfW < p0 + pw && py + half > q0 && py - half < q0 + ph;
     [x, y] =
+      places.find((p) => !coversRing(p) && !coversMarker(p) && !coversPlane(p)) ??
+      places.find((p) => !coversRing(p) && !coversPlane(p)) ??
       places.find((p) => !coversRing(p) && !coversMarker(p)) ??
       places.find((p) => !coversRing(p)) ??
       places.find((p) => !coversMarker(p)) ??
@@ -1641,9 +1654,12 @@ const PLANE_POINTS: readonly (readonly [number, number, number])[] = [
   [0, 0, modelBox.max.z],
   [0, 0, modelBox.min.z],
 ];
-/** Finds the aircraft's box on the screen and whether the next ring is behind it (`ringBehindPlane`; chase view). */
-function findRingBehindPlane(): void {
-  let behind = false;
+/**
+ * Finds the aircraft's box on the screen (`planeBox`; chase view while flying, else all 0), before the
+ * ring label is placed: the label keeps off the aircraft.
+ */
+function measurePlane(): void {
+  planeBox.fill(0);
   if (state.camera === 'chase' && state.phase === 'flying') {
     let x0 = Infinity,
       y0 = Infinity,
@@ -1661,10 +1677,15 @@ function findRingBehindPlane(): void {
       y1 = Math.max(y1, y);
     }
     planeBox.splice(0, 4, x0, y0, x1 - x0, y1 - y0);
-    if (ringAim.inView) {
-      const [cx, cy, r] = ringAim.ring as [number, number, number];
-      behind = cx > x0 - r / 2 && cx < x1 + r / 2 && cy > y0 - r / 2 && cy < y1 + r / 2;
-    }
+  }
+}
+/** Finds whether the next ring is behind the aircraft's box on the screen (`ringBehindPlane`; chase view). */
+function findRingBehindPlane(): void {
+  const [x0, y0, pw, ph] = planeBox;
+  let behind = false;
+  if (pw > 0 && ringAim.inView) {
+    const [cx, cy, r] = ringAim.ring as [number, number, number];
+    behind = cx > x0 - r / 2 && cx < x0 + pw + r / 2 && cy > y0 - r / 2 && cy < y0 + ph + r / 2;
   }
   ringBehindPlane = behind;
 }
@@ -1911,8 +1932,9 @@ function frame(alpha = 1): void {
   // from their ring. So a frame that will not be drawn changes nothing but the banner and the tip's
   // words (a ring's pass or miss, and what the next ring asks, are said at once).
   // Paused by the pilot (P, the toolbar's button): the scene dims and says so. A wait for the pilot
-  // (`holding`) is said by the tip instead, over the ring it is about.
-  pauseOverlay.update(shell.paused && !holding, touchFirst);
+  // (`holding`) is said by the tip instead, over the ring it is about. The end card, once up, wins:
+  // it says what to do next, and the pause's dimming and words over it would hide that.
+  pauseOverlay.update(shell.paused && !holding && shownCard === '', touchFirst);
   showSlowMotion();
   if (!app.pacer.mayDraw()) {
     updateBanner(world.time);
@@ -2019,6 +2041,7 @@ function frame(alpha = 1): void {
   drawGuide(at);
   markPath();
   showWarning(world.time);
+  measurePlane();
   pointToNextRing();
   findRingBehindPlane();
   showTip();

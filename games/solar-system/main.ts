@@ -134,7 +134,7 @@ import {
   starsFor,
   TARGET_TRACK,
 } from './missions';
-import { meetingPoint, orbitReach, pathDay } from './orbit-crossing';
+import { meetingPoint, orbitCrossings, orbitRadiusToward, orbitReach, pathDay } from './orbit-crossing';
 import { heldWaitRate, NEAR_WINDOW_DAYS, nextLaunchWindow, WAIT_TAP_DAYS } from './wait-pace';
 
 /** Scene units per display AU. */
@@ -1650,13 +1650,26 @@ function frame(): void {
   // frames in a row); names moved on then sat tens of pixels from the planets the canvas still
   // showed. The shell draws right after this function returns, and a microtask runs after that,
   // before the page is painted.
+  // The status line's forecast words change on the same drawn frame as the map's dots and day tags
+  // (`drawnForecastKey`): written when the forecast was worked out, they ran a second and more ahead
+  // of the map on a software GPU ("day 371" over tags saying "day 366").
   const drawnBefore = app.pacer.drawn;
   queueMicrotask(() => {
-    if (app.pacer.drawn > drawnBefore) showOverlay();
+    if (app.pacer.drawn <= drawnBefore) return;
+    showOverlay();
+    if (drawnForecastKey !== forecastKey) {
+      drawnForecastKey = forecastKey;
+      updateStatus(true);
+    }
   });
   updateStatus();
   if (tableFrame++ % 15 === 0 && table.open) updateTable();
 }
+
+/** The forecast (its key) the map showed on the last frame drawn: the status line's aim words are this forecast's. */
+let drawnForecastKey = '';
+/** The status line's aim words last written (the launch, the forecast's verdict) and their class. */
+let shownPlan: [string, string] = ['', ''];
 
 /** The forecast (its key) whose closest approach the ghost ring was last drawn for. */
 let ghostKey = '';
@@ -2289,7 +2302,40 @@ function reading(m: Mission): [string, string] {
     return m.distance > 1
       ? [`goes out only to ${f.farthest.toFixed(2)} AU from the Sun, short of ${t}’s orbit`, 'edge']
       : [`falls in only to ${f.nearest.toFixed(2)} AU from the Sun, short of ${t}’s orbit`, 'edge'];
-  return [`is at ${t}’s orbit on day ${Math.round(pathDay(f, i))}. Will ${t} be there? ${starText(starsFor(m, aim.speed))} if so`, ''];
+  // The path crosses the orbit once going out and once coming back in (more on a path that goes
+  // round again); the day given is the crossing where the target is then nearest (./orbit-crossing.ts
+  // meetingPoint). Each speed moves the target's place on each crossing, so the crossing picked can
+  // switch, and the day with it (222 going out at 2.6 km/s, 341 coming in at 2.7): the line names
+  // the way the probe goes there and the other crossings' days, so the jump reads as a switch.
+  const ways = orbitCrossings(f, crossingTarget, sunMu(), crossingList).map((k) => ({
+    k,
+    day: Math.round(pathDay(f, k)),
+    way: crossingWay(f, k, true),
+  }));
+  const day = Math.round(pathDay(f, i));
+  const others = ways.filter((c) => c.k !== i).map((c) => `day ${c.day} ${c.way}`);
+  const which = ` ${crossingWay(f, i, crossingList.includes(i))}`;
+  // Short enough for the line to stay on one line at desktop size.
+  const also = others.length > 0 ? ` (${others.join(', ')}, ${t} farther then)` : '';
+  return [`is at ${t}’s orbit on day ${day}${which}${also}. Will ${t} be there? ${starText(starsFor(m, aim.speed))} if so`, ''];
+}
+/** The path's crossings of the target's orbit (`reading`), indices into the forecast's path. */
+const crossingList: number[] = [];
+/**
+ * Which way the probe goes at point `k` of the forecast's path across the target's orbit line
+ * (`crossingTarget`, as `pathCrossing` last set it): at a crossing (`crossed`: the point just past
+ * the line) 'going out' when it is outside the line there, else 'coming in'; at a point short of the
+ * line (an arrival inside the ring before the line), the other way: outside it is still to come in.
+ * Read from the side of the line, not from the Sun distance rising: near the far end of its path the
+ * probe's distance barely changes while the (elliptic) orbit's radius does.
+ */
+function crossingWay(f: typeof forecast, k: number, crossed: boolean): string {
+  const p = f.path;
+  const x = p[3 * k]!,
+    y = p[3 * k + 1]!,
+    z = p[3 * k + 2]!;
+  const outside = Math.hypot(x, y, z) >= orbitRadiusToward(crossingTarget, sunMu(), x, y, z);
+  return outside === crossed ? 'going out' : 'coming in';
 }
 
 /** The simulated days per real second measured over the last second or so (eased), and the last sample: world time (days) and real time (ms). */
@@ -2327,11 +2373,13 @@ function updateStatus(force = false): void {
   if (phase === 'aim') {
     const head = `Launch ${aim.speed.toFixed(1)} km/s ${aimWords(aim.angle)} →`;
     if (forecastKey === '') line = `${head} …`;
+    else if (forecastKey !== drawnForecastKey && shownPlan[0] !== '') [line, cls] = shownPlan;
     else {
       const [words, c] = verdict(m);
       line = `${head} ${words}`;
       cls = c;
     }
+    shownPlan = [line, cls];
   } else if (phase === 'flight' && flight) {
     const P = world.components.Position;
     const t = slotOf(handles.bodies[m.target]),
@@ -2771,7 +2819,7 @@ shell.expose({
    * The mission state: its number (1-based), target, phase, the aim, the forecast shown (of the
    * launch, or of the course while flying: `plan.hit` whether it arrives, `time` the days of flight
    * at the end, `distance` the closest approach, AU, `sun` whether it falls into the Sun, `current`
-   * whether it is for the aim and moment now) and the flight.
+   * whether it is for the aim and moment now, `shown` whether the map and the status line show it) and the flight.
    */
   mission: () => ({
     number: missionIndex + 1,
@@ -2784,6 +2832,8 @@ shell.expose({
       distance: forecast.closest,
       sun: forecast.outcome === 'sun',
       current: forecastKey !== '' && forecastKey === wantedKey(),
+      /** Whether a frame showing this forecast has been drawn (the status line's aim words are then this forecast's). */
+      shown: forecastKey !== '' && forecastKey === drawnForecastKey,
       key: forecastKey,
     },
     flight: flight

@@ -57,11 +57,17 @@ describe('projects', () => {
       target: string;
       phase: string;
       aim: { angle: number; speed: number };
-      plan: { hit: boolean; distance: number; time: number; current: boolean };
+      plan: { hit: boolean; distance: number; time: number; current: boolean; shown: boolean };
       flight: { state: string; elapsed: number; fuelUsed: number; burns: number } | null;
     };
     type Solar = { mission(): Mission; params: { rate: number } };
-    const current = () => g.waitFor(() => (window.game as unknown as Solar).mission().plan.current, null);
+    // The forecast for the aim now, drawn: the status line's words change with the map's (a stranger
+    // read "day 371" in the line over tags still saying "day 366").
+    const current = () =>
+      g.waitFor(() => {
+        const p = (window.game as unknown as Solar).mission().plan;
+        return p.current && p.shown;
+      }, null);
     await current();
     const m0 = await g.page.evaluate(() => (window.game as unknown as Solar).mission());
     expect([m0.number, m0.target, m0.phase]).toEqual([1, 'Mars', 'aim']);
@@ -239,14 +245,17 @@ describe('projects', () => {
     for (const angle of [150, 160, 170, 176, 180])
       for (const speed of [2.2, 2.7, 3.2]) {
         await g.page.evaluate(([a, s]) => (window.game as unknown as Solar).setAim(a!, s!), [angle, speed]);
-        const seen = await g.waitFor(() => {
-          const game = window.game as unknown as Solar;
-          const plan = game.mission().plan;
-          const ghost = game.ghost();
-          return plan.current && ghost.key === plan.key
-            ? { plan, ghost, line: document.querySelector('[data-hud="plan"]')?.textContent ?? '' }
-            : null;
-        }, null);
+        // The line is read once a frame showing this forecast is drawn: it changes with the map.
+        const seen = await g.waitFor(
+          (head) => {
+            const game = window.game as unknown as Solar;
+            const plan = game.mission().plan;
+            const ghost = game.ghost();
+            const line = document.querySelector('[data-hud="plan"]')?.textContent ?? '';
+            return plan.current && ghost.key === plan.key && line.startsWith(head) ? { plan, ghost, line } : null;
+          },
+          `Launch ${speed.toFixed(1)} km/s ${angle === 180 ? 'against' : `${angle}°`}`,
+        );
         const where = against(seen.ghost.ring, seen.ghost.dot);
         const what = `${angle}° ${speed} km/s: closest ${seen.plan.distance} AU, dot ${JSON.stringify(where)}, ${seen.line}`;
         // The line's verdict is the forecast's.
@@ -308,6 +317,39 @@ describe('projects', () => {
         ),
       null,
     );
+    // Faster, a step at a time: once the line reads the new speed, the map's tags give the same day
+    // as the line (a stranger read "day 371" in the line over tags saying "day 366"), and the line
+    // says which way the probe crosses Mars's orbit then, and when it crosses it again (the day
+    // picked switched between the two, 222 to 341, and read as random).
+    type Aiming = { mission(): { aim: { speed: number }; plan: { shown: boolean } } };
+    let crossings = 0;
+    for (let i = 0; i < 8; i++) {
+      const speed = await g.page.evaluate(() => (window.game as unknown as Aiming).mission().aim.speed);
+      await g.press('ArrowUp');
+      const seen = await g.waitFor(
+        (head) => {
+          const line = document.querySelector('[data-hud="plan"]')?.textContent ?? '';
+          if (!line.startsWith(head) || !(window.game as unknown as Aiming).mission().plan.shown) return null;
+          const tag = (n: string) => {
+            const el = document.querySelector<HTMLElement>(`[data-tag="${n}"]`);
+            return el && el.style.display !== 'none' ? el.textContent : null;
+          };
+          return { line, tags: [tag('target-then'), tag('probe-then')] };
+        },
+        `Launch ${(speed + 0.1).toFixed(1)} km/s`,
+      );
+      const day = seen.line.match(/is at Mars’s orbit on day (\d+) (going out|coming in)/)?.[1];
+      if (!day) continue;
+      crossings++;
+      expect(seen.tags, seen.line).toEqual([`Mars on day ${day}`, `probe on day ${day}`]);
+      // Every crossing named with its way; in order of day they alternate, out first: a path from
+      // the Earth, inside Mars's orbit, crosses it going out before it can come back in.
+      const named = [...seen.line.matchAll(/day (\d+) (going out|coming in)/g)].map((c) => [Number(c[1]), c[2]] as const);
+      const ways = named.sort((a, b) => a[0] - b[0]).map((c) => c[1]);
+      if (named.length > 1) expect(seen.line).toContain('Mars farther then)');
+      expect(ways, seen.line).toEqual(ways.map((_, k) => (k % 2 === 0 ? 'going out' : 'coming in')));
+    }
+    expect(crossings).toBeGreaterThan(3);
     // Mission 4 started, then the page reloaded: mission 4 again (it went back to mission 1).
     await g.page.evaluate(() => (window.game as unknown as Solar).startMission(3));
     await g.page.reload();
@@ -451,6 +493,19 @@ describe('projects', () => {
     const budget = Number(await card.locator('.ss-card-parts b').first().textContent());
     expect(budget).toBeGreaterThanOrEqual(975);
     expect(budget).toBeLessThanOrEqual(990);
+    // At desktop size too, the card lists the missions with their stars, as on a phone (a stranger
+    // who looked during the banner took the desktop for a banner alone).
+    const chips = await card.locator('.ss-card-map > span').allTextContents();
+    expect(chips.map((c) => c.replace(/ [★–]+$/, ''))).toEqual([
+      '1 Mars',
+      '2 Venus',
+      '3 Jupiter',
+      '4 Mercury',
+      '5 Saturn',
+      '6 Uranus',
+      '7 Neptune',
+    ]);
+    expect(chips[0]).toBe('1 Mars ★★★');
     // The card's text over the scene is legible (WCAG AA, 4.5:1).
     expect((await lowContrastText(g.page)).filter((t) => /reached|points|arrival|Speed|Flight|Next|Try|Mars|★/.test(t.text))).toEqual([]);
     await card.getByRole('button', { name: 'next mission (Enter)' }).click();
@@ -1234,6 +1289,11 @@ describe('projects', () => {
     // A first miss costs 10 s but no star, and the ring comes round again (second-try.ts): a stranger
     // had no chance to turn back and three misses left one star.
     expect(first).toEqual({ missed: 0, status: 'ahead', banner: 'Missed ring 2 · +10 s · try it again' });
+    // The goal line names the second try; the readout counts rings, none missed yet: passed, missed
+    // and to go add up to the 3 rings.
+    await g.frames(1);
+    expect(await g.page.locator('[data-hud="goal"]').textContent()).toMatch(/Fly through ring 2 of 3 \(second try\) · .* \(\+10 s\)/);
+    expect(await g.page.locator('[data-hud="readout"]').textContent()).toMatch(/ · rings: 1 passed · 2 to go$/);
     // Missed on its second try too (put 150 m before it as it is laid now, 100 m above): for good.
     await g.page.evaluate(() => {
       const w = window.game as unknown as Flight;
@@ -1258,6 +1318,8 @@ describe('projects', () => {
     // to play for after three misses: ./course.ts courseStars), said at
     // once in the banner; the goal line above the scene adds the time and shows the stars left.
     expect(missed).toEqual({ missed: 1, banner: 'Missed ring 2 · −1 ★ · +10 s' });
+    await g.frames(1);
+    expect(await g.page.locator('[data-hud="readout"]').textContent()).toMatch(/ · rings: 1 passed · 1 missed · 1 to go$/);
     // Ring 3, laid for a climb or a dive, seen from 100 m above ring 2: its tip names the ways it
     // lies from the aircraft now (lower, from up here), not the way it was laid.
     const tip3 = await g.runUntil(
@@ -1302,6 +1364,14 @@ describe('projects', () => {
     const again = g.page.getByRole('button', { name: 'Try again ↺', exact: true });
     await again.waitFor({ state: 'visible' });
     expect(await g.page.locator('[data-hud="end"]').textContent()).toContain('Crashed!');
+    // Paused with the end card up, the card stays clear and bright: no dimming and no "Paused" over
+    // it (a stranger saw "Paused / P to resume" under a dimmed "Course 1 over").
+    await g.page.evaluate(() => {
+      (window.game as unknown as Flight).paused = true;
+    });
+    await g.frames(3);
+    expect(await g.page.locator('[data-hud="paused"]').isVisible()).toBe(false);
+    expect(await again.isVisible()).toBe(true);
     await again.click();
     await g.waitFor(() => (window.game as unknown as Flight).state.phase === 'flying', null);
     expect(await g.page.evaluate(() => (window.game as unknown as Flight).state.score)).toBe(0);
@@ -1484,17 +1554,24 @@ describe('projects', () => {
           goal = text('goal'),
           banner = text('banner'),
           note = text('throttle-note');
-        const rings = Number(read.match(/rings (\d+)\//)?.[1] ?? Number.NaN),
-          missed = Number(read.match(/missed (\d+)/)?.[1] ?? 0),
+        const rings = Number(read.match(/(\d+) passed/)?.[1] ?? Number.NaN),
+          missed = Number(read.match(/(\d+) missed/)?.[1] ?? 0),
+          toGo = Number(read.match(/(\d+) to go/)?.[1] ?? Number.NaN),
           throttle = Number(read.match(/throttle (\d+)%/)?.[1] ?? Number.NaN);
         const said = `${goal} | ${read} | ${banner} | ${note}`;
         const stars = (goal.match(/★/g) ?? []).length;
-        // The readout counts every miss (10 s each); the stars and the rings left, the misses for good
-        // (a first miss gives the ring a second try: second-try.ts).
-        const forGood = (window.game as unknown as { state: { missed: number } }).state.missed;
+        // The readout counts rings: passed, missed for good and to go, adding up to the course's (a
+        // stranger read "Ring 4 ✓" over "rings 3/10 · missed 2", the misses counted with a second
+        // try's first one). The clock's penalty counts every miss (10 s each); the stars, the misses
+        // for good (a first miss gives the ring a second try: second-try.ts).
+        const st = (window.game as unknown as { state: { missed: number; again: number } }).state;
+        const forGood = st.missed;
+        if (read && missed !== forGood) hud.bad.push(`missed: ${said}`);
+        if (read && rings + missed + toGo !== (window.game as unknown as { rings(): unknown[] }).rings().length)
+          hud.bad.push(`rings do not add up: ${said}`);
         if (goal.includes('★') || goal.includes('☆')) {
           if (stars !== 3 - Math.ceil(forGood / 2)) hud.bad.push(`stars: ${said}`);
-          if (Number(goal.match(/\(\+(\d+) s\)/)?.[1] ?? 0) !== 10 * missed) hud.bad.push(`penalty: ${said}`);
+          if (Number(goal.match(/\(\+(\d+) s\)/)?.[1] ?? 0) !== 10 * (forGood + st.again)) hud.bad.push(`penalty: ${said}`);
         }
         const next = goal.match(/ring (\d+) of/)?.[1];
         if (next && Number(next) !== rings + forGood + 1) hud.bad.push(`next ring: ${said}`);
@@ -1505,7 +1582,7 @@ describe('projects', () => {
         }
         if (banner.startsWith('Missed')) {
           hud.seen.push('miss');
-          if (missed < 1) hud.bad.push(`miss: ${said}`);
+          if (banner.includes('try it again') ? st.again < 1 : missed < 1) hud.bad.push(`miss: ${said}`);
         }
         if (note) {
           hud.seen.push('note');
@@ -1520,6 +1597,14 @@ describe('projects', () => {
         if (read && !(agl >= 0)) hud.bad.push(`no height above ground: ${said}`);
         if (read && agl !== panelAgl) hud.bad.push(`above ground ${agl} in the readout, ${panelAgl} in the panel`);
         if (agl > 0 && !(alt - agl >= 59 && alt - agl <= 760)) hud.bad.push(`ground at ${alt - agl} m: ${said}`);
+        // The ring label keeps off the aircraft (its box on the screen in the chase view; a stranger
+        // read "ring 9 · 671 m" over the tail): both as of the last drawn frame.
+        const shown = window.game as unknown as { ringPointer(): { inView: boolean; box: number[] }; planeFade(): { box: number[] } };
+        const lp = shown.ringPointer(),
+          pb = shown.planeFade().box as [number, number, number, number];
+        const [bx, by, bw, bh] = lp.box as [number, number, number, number];
+        if (lp.inView && pb[2] > 0 && bx < pb[0] + pb[2] && pb[0] < bx + bw && by < pb[1] + pb[3] && pb[1] < by + bh)
+          hud.bad.push(`ring label [${lp.box.map(Math.round)}] over the aircraft [${pb.map(Math.round)}]`);
         // The warning, while it shows, stays in one place and nothing over the scene overlaps it.
         // It blinks (hidden every other third of a second): a frame in its hidden phase counts too,
         // its box is the same, so a loaded machine drawing a few frames before the crash still sees it.

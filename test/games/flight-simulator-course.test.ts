@@ -643,7 +643,7 @@ describe('flight simulator course', () => {
     const clean = finishCard(base);
     expect(clean.title).toBe('Course 1 complete!');
     // 95.4 s is 1:35.
-    expect(clean.result).toBe('10 of 10 rings in 1:35  ★★★');
+    expect(clean.result).toBe('10 of 10 rings passed · 1:35  ★★★');
     expect(clean.detail).toBe('');
     expect(clean.actions).toEqual([
       { action: 'retry', label: 'Retry ↺ (R)' },
@@ -652,7 +652,7 @@ describe('flight simulator course', () => {
     // Three missed: 95.4 + 3 x 10 = 125.4 s is 2:05; two stars are lost (one per two misses, rounded up).
     const missed = finishCard({ ...base, passed: 7, missed: 3, best: { passed: 9, time: 100 }, touch: true, seed: 7 });
     expect(missed.title).toBe('Course 7 over');
-    expect(missed.result).toBe('7 of 10 rings in 2:05  ★☆☆');
+    expect(missed.result).toBe('7 of 10 rings passed · 3 missed · 2:05  ★☆☆');
     expect(missed.stars).toBe(1);
     // The sum as a sum: flown time + penalty = the result's time.
     expect(missed.detail).toBe('Time 1:35 + 30 s penalty (3 misses × 10 s) = 2:05');
@@ -660,8 +660,12 @@ describe('flight simulator course', () => {
     expect(missed.actions.map((a) => a.label)).toEqual(['Retry ↺', 'Next: course 8 ▶']);
     // Two rings flown again after a first miss (second-try.ts): 10 s each, no star; one miss is said as one.
     const tries = finishCard({ ...base, again: 2 });
-    expect(tries.result).toBe('10 of 10 rings in 1:55  ★★★');
-    expect(tries.detail).toBe('Time 1:35 + 20 s penalty (2 misses × 10 s) = 1:55');
+    expect(tries.result).toBe('10 of 10 rings passed · 1:55  ★★★');
+    expect(tries.detail).toBe('Time 1:35 + 20 s penalty (2 misses × 10 s, second tries included) = 1:55');
+    // A ring missed on both tries (a stranger read "9 of 10 rings" beside "missed 2"): one ring missed, two misses' time.
+    const twice = finishCard({ ...base, passed: 9, missed: 1, again: 1, flown: 80 });
+    expect(twice.result).toBe('9 of 10 rings passed · 1 missed · 1:40  ★★☆');
+    expect(twice.detail).toBe('Time 1:20 + 20 s penalty (2 misses × 10 s, second tries included) = 1:40');
     expect(finishCard({ ...base, passed: 9, missed: 1 }).detail).toBe('Time 1:35 + 10 s penalty (1 miss × 10 s) = 1:45');
     expect(() => finishCard({ ...base, again: -1 })).toThrow(/finishCard: again must be an integer >= 0/);
     expect(finishCard({ ...base, vsBest: 'better' }).best).toBe('A new best for this course!');
