@@ -1034,3 +1034,53 @@ describe('black hole, a phone played with keys', () => {
     await p.close();
   });
 });
+
+describe('black hole on a phone (390 x 844, touch)', () => {
+  it("one thumb on the seam of ← and ↑ for 1.5 s, then slid onto ↑: the narrow field's gentler sideways thrust and soft side wall keep the ship in the field", async () => {
+    // Played on the phone's 20 x 30 m field: the 1.5 s diagonal sends the ship some 5 m/s towards
+    // the left edge at full sideways thrust; flown on with ↑ alone it left the field ("Lost in space")
+    // on every layout of levels 1 to 4 (games/black-hole/rules.ts SOFT_WALL and `sideScale`).
+    type PhoneBh = { bh: { thrust: string; message: string; falls: number }; level: { waiting: boolean }; ship(): number[] };
+    const p = await h.openGame('black-hole', { viewport: { width: 390, height: 844 }, touch: true, query: { level: 1 } });
+    const box = async (name: string) => (await p.page.getByRole('button', { name, exact: true }).boundingBox())!;
+    const up = await box('thrust up'),
+      left = await box('thrust left');
+    const upMid: [number, number] = [up.x + up.width / 2, up.y + up.height / 2];
+    // The seam: midway between ← and ↑, within the pad's PAD_SEAM of both.
+    const seam: [number, number] = [(left.x + left.width + up.x) / 2, up.y + up.height / 2];
+    const cdp = await p.page.context().newCDPSession(p.page);
+    const finger = (type: 'touchStart' | 'touchMove', [x, y]: [number, number]) =>
+      cdp.send('Input.dispatchTouchEvent', { type, touchPoints: [{ x, y, id: 1 }] });
+    await finger('touchStart', seam);
+    await p.waitFor(() => (window.game as unknown as PhoneBh).bh.thrust === 'up-left', null);
+    // The least x the ship reaches, m, sampled every frame from here on.
+    await p.page.evaluate(() => {
+      const w = window.game as unknown as PhoneBh;
+      const track = { minX: Infinity };
+      (window as unknown as { track: typeof track }).track = track;
+      const each = () => {
+        track.minX = Math.min(track.minX, w.ship()[0]!);
+        requestAnimationFrame(each);
+      };
+      requestAnimationFrame(each);
+    });
+    await p.page.waitForTimeout(1500);
+    await finger('touchMove', upMid);
+    // Until the level is cleared, the ship falls in, or it is lost.
+    const end = await p.waitFor(() => {
+      const w = window.game as unknown as PhoneBh;
+      if (w.level.waiting) return 'cleared';
+      if (w.bh.message.startsWith('Lost')) return 'lost';
+      return w.bh.falls > 0 ? 'fell' : null;
+    }, null);
+    await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
+    const minX = await p.page.evaluate(() => (window as unknown as { track: { minX: number } }).track.minX);
+    expect(end).not.toBe('lost');
+    expect(minX).toBeGreaterThan(0);
+    // It did fly towards the edge (into the soft wall, the last 2.5 m), not straight up.
+    expect(minX).toBeLessThan(2.5);
+    expect(p.errors).toEqual([]);
+    await cdp.detach();
+    await p.close();
+  });
+});
