@@ -18,7 +18,7 @@
  *   step) costs one of three lives; the ship goes back to the start.
  * - Leaving the field puts the ship back at the start without penalty. On a field narrower than
  *   `FIELD` (a phone's) soft side walls turn a coasting ship back (`SOFT_WALL`), and the sideways
- *   thrust is the field's share of the full thrust (`BlackHoleOptions.sideScale`).
+ *   thrust is weaker (`BlackHoleOptions.sideScale`).
  * - At zero lives the game is over (the page restarts it with a key).
  *
  * Game-scale constants (SI would make a 1 m hole weigh 6.7e26 kg): G = `G_GAME` = 1 m^3 kg^-1 s^-2
@@ -212,8 +212,9 @@ export interface BlackHoleOptions {
   sideRamp?: number;
   /**
    * The share of the thrust an arrow gives sideways, in [0.3, 1]: a narrow field needs less sideways
-   * speed for its width. Default the field's width / FIELD.width on a field narrower than `FIELD`
-   * (0.625 on a phone's 20 m), else 1. Up and down keep the full thrust; a diagonal aims steeper.
+   * speed for its width. Default (1 + width / FIELD.width) / 2 on a field narrower than `FIELD`
+   * (0.8125 on a phone's 20 m: the full share, width / FIELD.width, made the crossing to level 2's
+   * gap too slow for a slow player), else 1. Up and down keep the full thrust; a diagonal aims steeper.
    */
   sideScale?: number;
   /**
@@ -299,7 +300,7 @@ export function resolveBlackHoleOptions(options: BlackHoleOptions = {}): BlackHo
     thrust: options.thrust ?? 6,
     lives: options.lives ?? 3,
     sideRamp: options.sideRamp ?? (narrow ? NARROW_SIDE_RAMP : THRUST_RAMP.up),
-    sideScale: options.sideScale ?? (narrow ? fieldWidth / FIELD.width : 1),
+    sideScale: options.sideScale ?? (narrow ? (1 + fieldWidth / FIELD.width) / 2 : 1),
     softWall: options.softWall ?? (narrow ? SOFT_WALL.width : 0),
     field: { width: options.field?.width ?? FIELD.width, height: options.field?.height ?? FIELD.height },
   };

@@ -442,18 +442,19 @@ describe('thrust, exhaust, prediction', () => {
     expect(wide.lost).toBe(true);
   });
 
-  test("a narrow field's sideways thrust is its width's share of the thrust; up keeps the full thrust", () => {
+  test("a narrow field's sideways thrust is (1 + its width's share) / 2 of the thrust; up keeps the full thrust", () => {
     const held = (thrust: 'right' | 'up' | 'up-right') => {
       const g = createBlackHoleGame({ seed: 6, holes: 1, thrust: 6, field: { width: 20, height: 30 } });
       setThrust(g, thrust);
       for (let i = 0; i < 120; i++) stepBlackHole(g);
       return [...g.thrustVec];
     };
-    // 2 s: long past the ramp (NARROW_SIDE_RAMP), the engine at its target a_T (s d_x, d_y), s = 20 / 32.
-    expect(held('right')[0]).toBeCloseTo((6 * 20) / 32, 9);
+    // 2 s: long past the ramp (NARROW_SIDE_RAMP), the engine at its target a_T (s d_x, d_y), s = (1 + 20 / 32) / 2.
+    const s = (1 + 20 / 32) / 2;
+    expect(held('right')[0]).toBeCloseTo(6 * s, 9);
     expect(held('up')[1]).toBeCloseTo(6, 9);
     const d = held('up-right');
-    expect(d[0]).toBeCloseTo((6 * Math.SQRT1_2 * 20) / 32, 9);
+    expect(d[0]).toBeCloseTo(6 * Math.SQRT1_2 * s, 9);
     expect(d[1]).toBeCloseTo(6 * Math.SQRT1_2, 9);
     expect(resolveBlackHoleOptions({}).sideScale).toBe(1);
     expect(() => createBlackHoleGame({ sideScale: 0.1 })).toThrow(/sideScale must be in \[0.3, 1\], got 0.1/);
