@@ -868,7 +868,7 @@ export function clearMessage(s: LevelSummary, lifeBack: boolean, next: number): 
     `Level ${s.level} cleared in ${s.time.toFixed(1)} s` +
     (s.falls > 0 ? ` (${s.totalTime.toFixed(1)} s in all, ${s.falls} ${s.falls === 1 ? 'fall' : 'falls'})` : '') +
     `: +${s.points}${s.bonus > 0 ? ` (${s.levelPoints} + ${s.bonus} speed bonus)` : ''}. ` +
-    (lifeBack ? `A life back: ${s.lives} ${s.lives === 1 ? 'life' : 'lives'}. ` : '') +
+    (lifeBack ? `A life back for clearing it: ${s.lives} ${s.lives === 1 ? 'life' : 'lives'}. ` : '') +
     `Press Enter for level ${next}.`
   );
 }
