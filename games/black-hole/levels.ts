@@ -48,6 +48,7 @@ import {
   SHIP_RADIUS,
   schwarzschildMass,
   setThrust,
+  softWallPush,
   stepBlackHole,
   THRUST_DIRECTION,
   type Thrust,
@@ -444,7 +445,7 @@ export interface HeldFlight {
  * for each of up to LAYOUT_TRIES layouts, all in the frame a level starts). Each step is the game world's
  * step for the ship, operation for operation: the force starts at 0, each hole's attractor pull
  * -G M m d / |d|^3 (d from the hole to the ship; no softening) is added in the holes' order, then the
- * engine's m a (`rampThrust`, as the game's thrust law), then semi-implicit Euler moves it
+ * engine's m a (`rampThrust`, as the game's thrust law) and the soft side walls' (`softWallPush`), then semi-implicit Euler moves it
  * (v += F / m dt, then x += v dt; the world has no uniform gravity and one substep). The game's world
  * sums the pulls in its own order of the holes, so the two paths agree to rounding
  * (test/games/black-hole-levels.test.ts flies them side by side).
@@ -476,9 +477,10 @@ export function heldFlight(game: BlackHoleGame, run: LevelRun, thrust: Thrust, p
   const dt = world.dt,
     a = game.params.thrust,
     sideRamp = game.params.sideRamp,
+    wall = game.params.softWall,
     held = game.over ? 'none' : padThrust(thrust),
     d = THRUST_DIRECTION[held];
-  const tx = a * d[0],
+  const tx = a * game.params.sideScale * d[0],
     ty = a * d[1];
   const engine: [number, number] = [0, 0];
   const width = game.field.width,
@@ -518,6 +520,8 @@ export function heldFlight(game: BlackHoleGame, run: LevelRun, thrust: Thrust, p
       fx = fx + SHIP_MASS * engine[0];
       fy = fy + SHIP_MASS * engine[1];
     }
+    const push = softWallPush(x, vx, engine[0], width, wall);
+    if (push !== 0) fx = fx + SHIP_MASS * push;
     // The integrate stage.
     const w = invMass * dt;
     vx = vx + fx * w;
@@ -864,7 +868,7 @@ export function clearMessage(s: LevelSummary, lifeBack: boolean, next: number): 
     `Level ${s.level} cleared in ${s.time.toFixed(1)} s` +
     (s.falls > 0 ? ` (${s.totalTime.toFixed(1)} s in all, ${s.falls} ${s.falls === 1 ? 'fall' : 'falls'})` : '') +
     `: +${s.points}${s.bonus > 0 ? ` (${s.levelPoints} + ${s.bonus} speed bonus)` : ''}. ` +
-    (lifeBack ? `A life back: ${s.lives} ${s.lives === 1 ? 'life' : 'lives'}. ` : '') +
+    (lifeBack ? `A life back for clearing it: ${s.lives} ${s.lives === 1 ? 'life' : 'lives'}. ` : '') +
     `Press Enter for level ${next}.`
   );
 }

@@ -1088,6 +1088,11 @@ function arc(g: Graphics, x: number, y: number, a: number, b: number, t0: number
  * and glow, the holes in order (tests: all inside the field).
  */
 const holeExtents: number[][] = [];
+/**
+ * The same for the cleared level's holes drawn dimmed while the next level waits (none otherwise):
+ * the next-level button keeps off them too (`freeBand`).
+ */
+const ghostExtents: number[][] = [];
 
 /**
  * The holes drawn in the last frame that had any, m: x, y, horizon radius of each in turn. A cleared
@@ -1126,6 +1131,7 @@ function drawHoles(world: PhysicsWorld): void {
   }
   for (let i = 0; i < holeGlows.length; i++) holeGlows[i]!.visible = i < n;
   holeExtents.length = bh.holes.length;
+  ghostExtents.length = ghostHoles ? n : 0;
   for (let i = 0; i < n; i++) {
     const hx = shownHoles[3 * i]!,
       hy = shownHoles[3 * i + 1]!,
@@ -1137,13 +1143,12 @@ function drawHoles(world: PhysicsWorld): void {
     const room = Math.max(1.05 * hr, Math.min(hx, playField.width - hx));
     const aM = Math.min(DISC.outer * hr, room),
       glowM = Math.min(3.5 * hr, room, hy, playField.height - hy);
-    if (!ghostHoles)
-      holeExtents[i] = [
-        hx - Math.max(aM, glowM),
-        hx + Math.max(aM, glowM),
-        hy - Math.max(DISC.tilt * aM, glowM),
-        hy + Math.max(DISC.tilt * aM, glowM),
-      ];
+    (ghostHoles ? ghostExtents : holeExtents)[i] = [
+      hx - Math.max(aM, glowM),
+      hx + Math.max(aM, glowM),
+      hy - Math.max(DISC.tilt * aM, glowM),
+      hy + Math.max(DISC.tilt * aM, glowM),
+    ];
     const sprite = holeGlows[i]!;
     sprite.position.set(x, y);
     // The glow texture fades to nothing at its rim: 2 x glowM across.
@@ -1815,14 +1820,14 @@ const ACTION_GAP = 8;
 
 /**
  * The tallest band across the field, between the finish line and `end` (screen px, y down), that no
- * hole's drawing (disc and glow, `holeExtents` of the last frame) reaches within ACTION_GAP px:
+ * hole's drawing (disc and glow, `holeExtents` of the last frame, and `ghostExtents`: the cleared
+ * level's holes drawn dimmed) reaches within ACTION_GAP px:
  * [top, height], px in the canvas (height < 0 when there is none).
  */
 function freeBand(end: number): [number, number] {
   const cam = renderer.camera;
-  // Screen bands (px, y down) taken by the holes, sorted from the top.
-  const taken = holeExtents
-    .slice(0, bh.holes.length)
+  // Screen bands (px, y down) taken by the holes (or the cleared level's, dimmed), sorted from the top.
+  const taken = [...holeExtents.slice(0, bh.holes.length), ...ghostExtents]
     .map((e) => [cam.toScreenY(e[3]!) - ACTION_GAP, cam.toScreenY(e[2]!) + ACTION_GAP] as const)
     .sort((a, b) => a[0] - b[0]);
   let from = cam.toScreenY(bh.lineY) + ACTION_GAP;
@@ -1848,7 +1853,11 @@ function placeActionButton(): void {
   const stage = pageLayout().stage.getBoundingClientRect(),
     canvas = app.canvas.getBoundingClientRect();
   const off = canvas.top - stage.top;
-  const [bestTop, best] = freeBand(Math.min(cam.toScreenY(0.9), cam.toScreenY(lastShip[1]!)) - shipPx - ACTION_GAP);
+  // Down to the ship (on its way up), or, where it waits at the line after a clear, to the start pad.
+  const above = lastShip[1]! >= bh.lineY - 1;
+  const [bestTop, best] = freeBand(
+    (above ? cam.toScreenY(0.9) : Math.min(cam.toScreenY(0.9), cam.toScreenY(lastShip[1]!))) - shipPx - ACTION_GAP,
+  );
   const h = el.offsetHeight;
   const want = best >= h ? `${Math.round(off + bestTop + (best - h) / 2)}px` : '';
   if (el.style.top !== want) el.style.top = want;
@@ -2064,6 +2073,8 @@ shell.expose({
   },
   /** How far each hole's drawing (disc and glow) reached in the last frame, m: [left, right, bottom, top], holes in order. */
   holeExtents: (): number[][] => holeExtents.map((e) => e.slice()),
+  /** The same for the cleared level's holes drawn dimmed while the next level waits (none otherwise). */
+  ghostExtents: (): number[][] => ghostExtents.map((e) => e.slice()),
   /** The ship's lean in the last frame, rad (+ leaning right, into thrust to the right). */
   shipLean: (): number => shipLean,
   /** The rising "+N" of the last crossing while it shows, else ''. */

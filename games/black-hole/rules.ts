@@ -16,7 +16,9 @@
  *   all out again; the ship goes back to the start.
  * - Falling into a hole (the ship, SHIP_RADIUS m round its centre, touching its horizon during a
  *   step) costs one of three lives; the ship goes back to the start.
- * - Leaving the field puts the ship back at the start without penalty.
+ * - Leaving the field puts the ship back at the start without penalty. On a field narrower than
+ *   `FIELD` (a phone's) soft side walls turn a coasting ship back (`SOFT_WALL`), and the sideways
+ *   thrust is weaker (`BlackHoleOptions.sideScale`).
  * - At zero lives the game is over (the page restarts it with a key).
  *
  * Game-scale constants (SI would make a 1 m hole weigh 6.7e26 kg): G = `G_GAME` = 1 m^3 kg^-1 s^-2
@@ -112,6 +114,32 @@ export const THRUST_RAMP = Object.freeze({ trim: 0.4, gentle: 0.2, up: 0.4, down
 export const NARROW_SIDE_RAMP = 0.9;
 
 /**
+ * The soft side walls of a field narrower than `FIELD` (a phone's): within `width` m of a side edge
+ * the ship is pushed back towards the middle at up to `push` m/s^2 (at the edge, falling off linearly
+ * to 0 at `width` m in), plus `damp` s^-1 times its speed towards the edge, unless the engine thrusts
+ * towards that edge (a held arrow still flies out, so a held diagonal leaves the field as before). A
+ * ship drifting out after a tap turns back: coasting, it is stopped within `width` m from up to
+ * sqrt(push x width) = 5 m/s. See `softWallPush`.
+ */
+export const SOFT_WALL = Object.freeze({ width: 2.5, push: 10, damp: 1.5 });
+
+/**
+ * The acceleration, m/s^2 (+x towards the middle from the left edge), of the soft side walls on a
+ * ship at x (m) moving at vx (m/s) in a field `fieldWidth` m wide whose engine thrusts at `engineX`
+ * m/s^2 sideways, walls `wall` m wide (0: none): within `wall` m of the left edge,
+ * SOFT_WALL.push x (1 - x / wall) + SOFT_WALL.damp x max(0, -vx), unless engineX < 0 (thrusting
+ * towards that edge); the mirror of it at the right edge; 0 elsewhere, outside the field included
+ * (the ship is lost there).
+ */
+export function softWallPush(x: number, vx: number, engineX: number, fieldWidth: number, wall: number): number {
+  if (!(wall > 0)) return 0;
+  if (x >= 0 && x < wall && !(engineX < 0)) return SOFT_WALL.push * (1 - x / wall) + SOFT_WALL.damp * Math.max(0, -vx);
+  const d = fieldWidth - x;
+  if (d >= 0 && d < wall && !(engineX > 0)) return -(SOFT_WALL.push * (1 - d / wall) + SOFT_WALL.damp * Math.max(0, vx));
+  return 0;
+}
+
+/**
  * Thrust directions: none, one of the four arrows, or two arrows at right angles held together
  * (a diagonal, e.g. 'up-right').
  */
@@ -183,6 +211,18 @@ export interface BlackHoleOptions {
    */
   sideRamp?: number;
   /**
+   * The share of the thrust an arrow gives sideways, in [0.3, 1]: a narrow field needs less sideways
+   * speed for its width. Default (1 + width / FIELD.width) / 2 on a field narrower than `FIELD`
+   * (0.8125 on a phone's 20 m: the full share, width / FIELD.width, made the crossing to level 2's
+   * gap too slow for a slow player), else 1. Up and down keep the full thrust; a diagonal aims steeper.
+   */
+  sideScale?: number;
+  /**
+   * Width of the soft side walls, m, in [0, 5] (0: none; see SOFT_WALL and `softWallPush`). Default
+   * SOFT_WALL.width on a field narrower than `FIELD`, else 0.
+   */
+  softWall?: number;
+  /**
    * Size of the playing field, m: width in [12, 64], height in [16, 64]. Default `FIELD` (32 x 24);
    * a phone held upright plays a tall one. The start is at the middle of the bottom, 1.5 m up, and
    * the finish line 2 m below the top.
@@ -246,10 +286,12 @@ function check(cond: boolean, message: string): void {
  * @throws TypeError on an unknown option; RangeError naming the option and value when out of range.
  */
 export function resolveBlackHoleOptions(options: BlackHoleOptions = {}): BlackHoleParams {
-  const known = ['seed', 'holes', 'gScale', 'c', 'thrust', 'lives', 'sideRamp', 'field'];
+  const known = ['seed', 'holes', 'gScale', 'c', 'thrust', 'lives', 'sideRamp', 'sideScale', 'softWall', 'field'];
   for (const k of Object.keys(options)) {
     if (!known.includes(k)) throw new TypeError(`black-hole: unknown option ${JSON.stringify(k)}; known options are ${known.join(', ')}`);
   }
+  const fieldWidth = options.field?.width ?? FIELD.width,
+    narrow = fieldWidth < FIELD.width;
   const p: BlackHoleParams = {
     seed: options.seed ?? 1,
     holes: options.holes ?? 3,
@@ -257,7 +299,9 @@ export function resolveBlackHoleOptions(options: BlackHoleOptions = {}): BlackHo
     c: options.c ?? C_GAME,
     thrust: options.thrust ?? 6,
     lives: options.lives ?? 3,
-    sideRamp: options.sideRamp ?? ((options.field?.width ?? FIELD.width) < FIELD.width ? NARROW_SIDE_RAMP : THRUST_RAMP.up),
+    sideRamp: options.sideRamp ?? (narrow ? NARROW_SIDE_RAMP : THRUST_RAMP.up),
+    sideScale: options.sideScale ?? (narrow ? (1 + fieldWidth / FIELD.width) / 2 : 1),
+    softWall: options.softWall ?? (narrow ? SOFT_WALL.width : 0),
     field: { width: options.field?.width ?? FIELD.width, height: options.field?.height ?? FIELD.height },
   };
   check(Number.isFinite(p.seed), `seed must be finite, got ${p.seed}`);
@@ -278,6 +322,11 @@ export function resolveBlackHoleOptions(options: BlackHoleOptions = {}): BlackHo
     typeof p.field.height === 'number' && p.field.height >= 16 && p.field.height <= 64,
     `field.height must be in [16, 64] m, got ${String(p.field.height)}`,
   );
+  check(
+    typeof p.sideScale === 'number' && p.sideScale >= 0.3 && p.sideScale <= 1,
+    `sideScale must be in [0.3, 1], got ${String(p.sideScale)}`,
+  );
+  check(typeof p.softWall === 'number' && p.softWall >= 0 && p.softWall <= 5, `softWall must be in [0, 5] m, got ${String(p.softWall)}`);
   return p;
 }
 
@@ -370,9 +419,10 @@ export function rampThrust(vec: [number, number], tx: number, ty: number, full: 
 
 /**
  * The thrust force law: F = m a on the ship, a the engine's acceleration `engine.thrustVec`, which
- * each step moves towards a_T d (d the unit vector of `game.thrust`; 0 when none or when the game is
- * over) as `rampThrust` says. Runs in the forces stage. `engine` is the game (or the predictor, which
- * keeps its own copy of the engine).
+ * each step moves towards a_T (s d_x, d_y) (d the unit vector of `game.thrust`, s `params.sideScale`;
+ * 0 when none or when the game is over) as `rampThrust` says; then the soft side walls' push
+ * (`softWallPush`, `params.softWall` m wide). Runs in the forces stage. `engine` is the game (or the
+ * predictor, which keeps its own copy of the engine).
  */
 function thrustLaw(
   game: BlackHoleGame,
@@ -383,11 +433,21 @@ function thrustLaw(
     const d = THRUST_DIRECTION[game.over || engine.letGo === true ? 'none' : game.thrust];
     const a = game.params.thrust;
     const v = engine.thrustVec;
-    rampThrust(v, a * d[0], a * d[1], a, world.dt, game.params.sideRamp);
-    if (v[0] === 0 && v[1] === 0) return;
+    rampThrust(v, a * game.params.sideScale * d[0], a * d[1], a, world.dt, game.params.sideRamp);
     const F = world.components.Force;
-    F.x[slotOf(ship)] = F.x[slotOf(ship)]! + SHIP_MASS * v[0];
-    F.y[slotOf(ship)] = F.y[slotOf(ship)]! + SHIP_MASS * v[1];
+    const s = slotOf(ship);
+    if (v[0] !== 0 || v[1] !== 0) {
+      F.x[s] = F.x[s]! + SHIP_MASS * v[0];
+      F.y[s] = F.y[s]! + SHIP_MASS * v[1];
+    }
+    const wall = softWallPush(
+      world.components.Position.x[s]!,
+      world.components.Velocity.x[s]!,
+      v[0],
+      game.field.width,
+      game.params.softWall,
+    );
+    if (wall !== 0) F.x[s] = F.x[s]! + SHIP_MASS * wall;
   };
 }
 

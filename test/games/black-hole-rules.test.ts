@@ -28,6 +28,7 @@ import {
   resolveBlackHoleOptions,
   restart,
   SHIP_RADIUS,
+  SOFT_WALL,
   START,
   schwarzschildMass,
   schwarzschildRadius,
@@ -402,6 +403,62 @@ describe('thrust, exhaust, prediction', () => {
     // Up is not sideways: on the narrow field the same with its default and with the wide field's
     // engine given (sideRamp given wins over the field's default).
     expect(hold(phone, 'up', THRUST_RAMP.up)).toEqual([THRUST_RAMP.up, hold(phone, 'up')[1]]);
+  });
+
+  test("a narrow field's soft side walls turn a coasting ship back within the bound its energy sets; a held arrow still leaves; the wide field has none", () => {
+    // The ship coasting at 3 m/s towards the left edge from 6 m in, at the start's height (the holes,
+    // c = 2 m/s, pull 25 times less than by default). The wall's spring alone, push q / w at q m into
+    // its last w m, stops it q m in where v^2 / 2 = push q^2 / (2 w): q = v sqrt(w / push) = 1.5 m for
+    // the default 2.5 m and 10 m/s^2; its damping only shortens that.
+    const coast = (field: { width: number; height: number }, thrust: 'none' | 'left') => {
+      const g = createBlackHoleGame({ seed: 3, holes: 1, c: 2, field });
+      const s = slotOf(g.ship);
+      setPosition(g.world, g.ship, [6, g.start[1]]);
+      setVelocity(g.world, g.ship, [-3, 0]);
+      setThrust(g, thrust);
+      let minX = Infinity,
+        lost = false;
+      for (let i = 0; i < 300 && !lost; i++) {
+        lost = stepBlackHole(g) === 'lost';
+        if (!lost) minX = Math.min(minX, g.world.components.Position.x[s]!);
+      }
+      return { minX, lost, vx: g.world.components.Velocity.x[s]!, params: g.params };
+    };
+    const phone = coast({ width: 20, height: 30 }, 'none');
+    expect(phone.params.softWall).toBe(SOFT_WALL.width);
+    const q = 3 * Math.sqrt(SOFT_WALL.width / SOFT_WALL.push);
+    expect(q).toBeCloseTo(1.5, 9);
+    expect(phone.lost).toBe(false);
+    expect(phone.minX).toBeGreaterThan(SOFT_WALL.width - q - 0.02);
+    // The damping does stop it sooner than the spring alone would (by more than the steps' rounding).
+    expect(phone.minX).toBeGreaterThan(SOFT_WALL.width - q + 0.2);
+    // Turned back: after 5 s it flies away from the edge.
+    expect(phone.vx).toBeGreaterThan(0);
+    // Holding ← (the engine thrusting towards the edge) the wall gives way: the ship leaves.
+    expect(coast({ width: 20, height: 30 }, 'left').lost).toBe(true);
+    // The wide field: no wall, the same drift is lost.
+    const wide = coast(FIELD, 'none');
+    expect(wide.params.softWall).toBe(0);
+    expect(wide.lost).toBe(true);
+  });
+
+  test("a narrow field's sideways thrust is (1 + its width's share) / 2 of the thrust; up keeps the full thrust", () => {
+    const held = (thrust: 'right' | 'up' | 'up-right') => {
+      const g = createBlackHoleGame({ seed: 6, holes: 1, thrust: 6, field: { width: 20, height: 30 } });
+      setThrust(g, thrust);
+      for (let i = 0; i < 120; i++) stepBlackHole(g);
+      return [...g.thrustVec];
+    };
+    // 2 s: long past the ramp (NARROW_SIDE_RAMP), the engine at its target a_T (s d_x, d_y), s = (1 + 20 / 32) / 2.
+    const s = (1 + 20 / 32) / 2;
+    expect(held('right')[0]).toBeCloseTo(6 * s, 9);
+    expect(held('up')[1]).toBeCloseTo(6, 9);
+    const d = held('up-right');
+    expect(d[0]).toBeCloseTo(6 * Math.SQRT1_2 * s, 9);
+    expect(d[1]).toBeCloseTo(6 * Math.SQRT1_2, 9);
+    expect(resolveBlackHoleOptions({}).sideScale).toBe(1);
+    expect(() => createBlackHoleGame({ sideScale: 0.1 })).toThrow(/sideScale must be in \[0.3, 1\], got 0.1/);
+    expect(() => createBlackHoleGame({ softWall: -1 })).toThrow(/softWall must be in \[0, 5\] m, got -1/);
   });
 
   test('exhaust that crosses a horizon is swallowed', () => {
