@@ -176,7 +176,9 @@ export function ensure(n: number): void {
  * Whether the sleeping collider of shape `e` at index `n` keeps the pose, rotation and fattened box the
  * index got in the last pass (never for `e` = -1, an awake collider's): the scratch is still `s`'s (no other world's pass wrote it since, no
  * shape was placed or resized, the same speculative distance `spec`), the index then held `e` asleep,
- * and its body starts the step where it did, (x, y, z) turned by the unit quaternion (qx, qy, qz, qw).
+ * and its body starts the step where it did: at (P.x[b], P.y[b], P.z[b]) turned by the unit quaternion
+ * (Q.x[b], Q.y[b], Q.z[b], Q.w[b]). The stores and the index, not the numbers, cross the call: a call V8
+ * does not inline boxes each double argument (16 bytes a collider, a step).
  * A sleeping body moves only if something sets its pose, so a settled pile is posed once.
  */
 export function keptPose(
@@ -184,13 +186,9 @@ export function keptPose(
   spec: number,
   n: number,
   e: number,
-  x: number,
-  y: number,
-  z: number,
-  qx: number,
-  qy: number,
-  qz: number,
-  qw: number,
+  P: { x: Float64Array; y: Float64Array; z: Float64Array },
+  Q: { x: Float64Array; y: Float64Array; z: Float64Array; w: Float64Array },
+  b: number,
 ): boolean {
   const sc = scratch,
     K = sc.poseKey,
@@ -202,29 +200,33 @@ export function keptPose(
     +(sc.poseOf === s) &
     +(sc.poseEdits === shapeEdits.count) &
     +(sc.poseSpec === spec) &
-    +(K[o] === x) &
-    +(K[o + 1] === y) &
-    +(K[o + 2] === z) &
-    +(K[o + 3] === qx) &
-    +(K[o + 4] === qy) &
-    +(K[o + 5] === qz) &
-    +(K[o + 6] === qw);
+    +(K[o] === P.x[b]) &
+    +(K[o + 1] === P.y[b]) &
+    +(K[o + 2] === P.z[b]) &
+    +(K[o + 3] === Q.x[b]) &
+    +(K[o + 4] === Q.y[b]) &
+    +(K[o + 5] === Q.z[b]) &
+    +(K[o + 6] === Q.w[b]);
   return same === 1;
 }
 
-/** Records at index `n` the pose a sleeping collider of shape `e` was posed from (keptPose), or with `e` = 0 that the index holds none. */
-export function notePose(n: number, e: number, x: number, y: number, z: number, qx: number, qy: number, qz: number, qw: number): void {
+/**
+ * Records at index `n` the pose a sleeping collider of shape `e` was posed from (keptPose), or with `e` =
+ * 0 that the index holds none: the start position (p[po], p[po + 1], p[po + 2]) and the unit quaternion
+ * (q[0], q[1], q[2], q[3]), read from the arrays (no double crosses the call).
+ */
+export function notePose(n: number, e: number, p: Float64Array, po: number, q: Float64Array): void {
   const sc = scratch,
     K = sc.poseKey,
     o = POSE_KEY * n;
   sc.posed[n] = e;
-  K[o] = x;
-  K[o + 1] = y;
-  K[o + 2] = z;
-  K[o + 3] = qx;
-  K[o + 4] = qy;
-  K[o + 5] = qz;
-  K[o + 6] = qw;
+  K[o] = p[po]!;
+  K[o + 1] = p[po + 1]!;
+  K[o + 2] = p[po + 2]!;
+  K[o + 3] = q[0]!;
+  K[o + 4] = q[1]!;
+  K[o + 5] = q[2]!;
+  K[o + 6] = q[3]!;
 }
 
 /** Marks the scratch as written by a pass over `s` with speculative distance `spec` (keptPose's validity). */

@@ -235,10 +235,7 @@ function gather(world: PhysicsWorld, s: Shape3DStore): void {
   ensure(64);
   const spec = cs.settings.speculativeDistance < SHAPE_SPECULATIVE_DISTANCE ? cs.settings.speculativeDistance : SHAPE_SPECULATIVE_DISTANCE;
   scratch.spec = spec;
-  const ox = c.PreviousPosition.x,
-    oy = c.PreviousPosition.y,
-    oz = c.PreviousPosition.z,
-    Q = c.Orientation;
+  const Q = c.Orientation;
   // Only static and sleeping colliders (a settled pile): no pair can collide (pairs need a dynamic or
   // kinematic body), so none is posed (posing would be most of a sleeping pile's step).
   if (!anyMoving(s, balls, cap, stamp)) {
@@ -275,7 +272,7 @@ function gather(world: PhysicsWorld, s: Shape3DStore): void {
     // step where it did (keptPose); every other one is posed. (The check and the writes run for every
     // collider: no branch first taken when the first body of a pile falls asleep.)
     const asleep = t === BodyType.Sleeping && !isBall;
-    const kept = keptPose(s, spec, n, asleep ? e : -1, ox[b]!, oy[b]!, oz[b]!, Q.x[b]!, Q.y[b]!, Q.z[b]!, Q.w[b]!);
+    const kept = keptPose(s, spec, n, asleep ? e : -1, c.PreviousPosition, Q, b);
     colliderOf[e] = n;
     colliderStamp[e] = pass;
     if (!isBall && s.sensor[e] === 1) scratch.anySensor = true;
@@ -401,7 +398,7 @@ function poseCollider(
   sc.minZ[n] = cz - wz - pad;
   sc.maxZ[n] = cz + wz + pad;
   // A sleeping collider's pose is noted for the next pass (keptPose); another index holds none.
-  notePose(n, asleep ? e : 0, x0, y0, z0, bodyQ[0]!, bodyQ[1]!, bodyQ[2]!, bodyQ[3]!);
+  notePose(n, asleep ? e : 0, sc.material, mo + ColliderMaterial.X, bodyQ);
 }
 
 /** Whether a 3D shape or shapeless ball's body is dynamic or kinematic (not static or sleeping by markClasses' `stamp`). */

@@ -192,14 +192,17 @@ export function splitRigidRotations(world: PhysicsWorld, ents: ArrayLike<number>
           dy = oy * k,
           dz = oz * k,
           dw = Math.cos(0.5 * angle);
-        storeUnitQuaternion(
-          q,
-          e,
-          dw * x + dx * w + dy * z - dz * y,
-          dw * y - dx * z + dy * w + dz * x,
-          dw * z + dx * y - dy * x + dz * w,
-          dw * w - dx * x - dy * y - dz * z,
-        );
+        // Renormalised here, not by storeUnitQuaternion: V8 does not always inline a call, and one that is
+        // not boxes each double argument (16 bytes a number, a body, a step).
+        const nx = dw * x + dx * w + dy * z - dz * y,
+          ny = dw * y - dx * z + dy * w + dz * x,
+          nz = dw * z + dx * y - dy * x + dz * w,
+          nw = dw * w - dx * x - dy * y - dz * z;
+        const n = 1 / Math.sqrt(nx * nx + ny * ny + nz * nz + nw * nw);
+        q.x[e] = nx * n;
+        q.y[e] = ny * n;
+        q.z[e] = nz * n;
+        q.w[e] = nw * n;
       }
       W.x[e] = ox;
       W.y[e] = oy;
@@ -269,7 +272,12 @@ export function splitRigidRotations(world: PhysicsWorld, ents: ArrayLike<number>
       z = nz;
       w = nw;
     }
-    storeUnitQuaternion(q, e, x, y, z, w);
+    // Renormalised in place (as above, no call with doubles), then read back as stored.
+    const n = 1 / Math.sqrt(x * x + y * y + z * z + w * w);
+    q.x[e] = x * n;
+    q.y[e] = y * n;
+    q.z[e] = z * n;
+    q.w[e] = w * n;
     x = q.x[e]!;
     y = q.y[e]!;
     z = q.z[e]!;

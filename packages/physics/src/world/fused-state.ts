@@ -16,7 +16,13 @@ import type { PhysicsWorld } from './options.js';
  * A leaf module (no imports but types): the systems that consult the flag import it, and the gate that
  * sets it imports those systems.
  */
-let current: PhysicsWorld | null = null;
+/**
+ * No world's pass is on: an object, not null, so that `current === world` compares two objects whether
+ * the pass is on or off (code compiled while it was on, comparing objects only, is not thrown away when
+ * it first meets the off state: --trace-deopt "not a JavaScript object" in clearForcesSystem).
+ */
+const OFF: object = Object.freeze({});
+let current: object = OFF;
 
 /**
  * Whether the fused pass is on for the current substep of `world`.
@@ -32,7 +38,7 @@ export function fusedForcesOn(world: PhysicsWorld): boolean {
  */
 export function setFusedForces(world: PhysicsWorld, value: boolean): void {
   if (value) current = world;
-  else if (current === world) current = null;
+  else if (current === world) current = OFF;
 }
 
 /**
@@ -41,5 +47,5 @@ export function setFusedForces(world: PhysicsWorld, value: boolean): void {
  * @category Integrators
  */
 export function beginFusedSubstep(world: PhysicsWorld, value: boolean): void {
-  current = value ? world : null;
+  current = value ? world : OFF;
 }

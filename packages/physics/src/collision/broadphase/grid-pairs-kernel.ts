@@ -76,6 +76,9 @@ export function ballPairs(A: KernelArray[], P: Float64Array, ids: Int32Array | n
       z = is3D ? oz[e]! : 0;
     const reach = radius[e]! + margin[e]!;
     const te = type[e]!;
+    // Whether e sleeps, and whether it would wake a sleeping partner (kinematic, or moving: no rest time).
+    const sleepsE = +(te === 3),
+      wakerE = +(te === 1) | +(rest[e] === 0);
     const own = dense ? cx - gx0 + (cz - gz0) * sX + (gy0 - cy) * sXZ : 0;
     for (let r = 0; r < runs && count >= 0; r++) {
       // Sorted bodies q to end - 1; in a hashed bucket only those of cell (nx, ny, nz).
@@ -105,8 +108,12 @@ export function ballPairs(A: KernelArray[], P: Float64Array, ids: Int32Array | n
         if (!dense && (cellX[q] !== nx || cellY[q] !== ny || cellZ[q] !== nz)) continue;
         const f = sorted[q]!,
           tf = type[f]!;
-        // Neither dynamic: no pair, unless a kinematic ball meets a sleeping one.
-        if (te !== 0 && tf !== 0 && !((te === 1 && tf === 3) || (te === 3 && tf === 1))) continue;
+        // Neither dynamic: no pair, unless a kinematic ball meets a sleeping one. Every comparison is
+        // made for every pair (bitwise, no short cut), as are the wake tests below: the compiled loop has
+        // seen them all before the first ball sleeps, when they first matter.
+        const sleepsF = +(tf === 3);
+        const kinematicMeetsSleeper = (+(te === 1) & sleepsF) | (sleepsE & +(tf === 1));
+        if ((+(te !== 0) & +(tf !== 0) & (kinematicMeetsSleeper ^ 1)) === 1) continue;
         const dx = ox[f]! - x,
           dy = oy[f]! - y,
           dz = is3D ? oz[f]! - z : 0;
@@ -116,9 +123,12 @@ export function ballPairs(A: KernelArray[], P: Float64Array, ids: Int32Array | n
             count = -1;
             break;
           }
-          // A sleeping ball met by a kinematic one or a moving one (no rest time) is to be woken.
-          if (te === 3 && (tf === 1 || rest[f] === 0)) outW[woken++] = e;
-          if (tf === 3 && (te === 1 || rest[e] === 0)) outW[woken++] = f;
+          // A sleeping ball met by a kinematic one or a moving one (no rest time) is to be woken: each
+          // written at the next wake slot, which counts only if it is (room for two checked above).
+          outW[woken] = e;
+          woken += sleepsE & (+(tf === 1) | +(rest[f] === 0));
+          outW[woken] = f;
+          woken += sleepsF & wakerE;
           outA[count] = e < f ? e : f;
           outB[count] = e < f ? f : e;
           count++;

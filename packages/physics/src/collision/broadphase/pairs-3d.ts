@@ -198,19 +198,24 @@ function markSearching(world: PhysicsWorld, s: Shape3DStore, n: number): void {
   }
 }
 
+/** lowCornerSpan's result: the low corners' least and greatest x, y, z (x0, x1, y0, y1, z0, z1), m. */
+const span = new Float64Array(6);
+
 /**
- * The dense grid of the ordinary colliders (cells 1 / inv wide): its origin and x, y sizes into grid.ox,
- * oy, oz, gx, gy, and its cell count, spanning one cell beyond the lowest and highest low corner on each
- * axis (a search reaches one cell below a box's low corner and, no box being wider than a cell, at most
- * one above); 0 when that is more than the dense limit (DENSE_CELLS_PER_COLLIDER) or a corner is not
- * finite: then the hashed grid.
+ * The span of the low corners (minX, minY, minZ) of the first `n` colliders not dropped (`order` -1) into
+ * `out` (x0, x1, y0, y1, z0, z1; x0 > x1 when none); returns 0 when a corner is not finite, else 1. A
+ * function that reads nothing before its loop: the first call's first lines run before V8 gives the
+ * function type feedback, so code compiled while that loop ran, reading the scratch here, was thrown
+ * away at the next call, and the loop then ran interpreted (a boxed number per corner read).
  */
-function denseCells(n: number, inv: number): number {
-  const sc = scratch,
-    order = sc.order,
-    minX = sc.minX,
-    minY = sc.minY,
-    minZ = sc.minZ;
+function lowCornerSpan(
+  order: Int32Array,
+  minX: Float64Array,
+  minY: Float64Array,
+  minZ: Float64Array,
+  n: number,
+  out: Float64Array,
+): number {
   let x0 = Infinity,
     x1 = -Infinity,
     y0 = Infinity,
@@ -222,7 +227,7 @@ function denseCells(n: number, inv: number): number {
     const x = minX[i]!,
       y = minY[i]!,
       z = minZ[i]!;
-    // NaN fails every comparison: caught below as a non-finite span.
+    // NaN fails every comparison: a non-finite span.
     if (!(x >= -Infinity && y >= -Infinity && z >= -Infinity)) return 0;
     if (x < x0) x0 = x;
     if (x > x1) x1 = x;
@@ -231,6 +236,31 @@ function denseCells(n: number, inv: number): number {
     if (z < z0) z0 = z;
     if (z > z1) z1 = z;
   }
+  out[0] = x0;
+  out[1] = x1;
+  out[2] = y0;
+  out[3] = y1;
+  out[4] = z0;
+  out[5] = z1;
+  return 1;
+}
+
+/**
+ * The dense grid of the ordinary colliders (cells 1 / inv wide): its origin and x, y sizes into grid.ox,
+ * oy, oz, gx, gy, and its cell count, spanning one cell beyond the lowest and highest low corner on each
+ * axis (a search reaches one cell below a box's low corner and, no box being wider than a cell, at most
+ * one above); 0 when that is more than the dense limit (DENSE_CELLS_PER_COLLIDER) or a corner is not
+ * finite: then the hashed grid.
+ */
+function denseCells(n: number, inv: number): number {
+  const sc = scratch;
+  if (lowCornerSpan(sc.order, sc.minX, sc.minY, sc.minZ, n, span) === 0) return 0;
+  const x0 = span[0]!,
+    x1 = span[1]!,
+    y0 = span[2]!,
+    y1 = span[3]!,
+    z0 = span[4]!,
+    z1 = span[5]!;
   if (x0 > x1) return 0;
   const cx0 = Math.floor(x0 * inv) - 1,
     cy0 = Math.floor(y0 * inv) - 1,
