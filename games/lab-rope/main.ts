@@ -6,8 +6,8 @@
  * (view.ts draws each piece as its own cord).
  *
  * Input: swipe across a rope to cut it (cut.ts: every rope the stroke crosses, however fast), or tap
- * on it; drag the ball to push it while a rope still holds it (a mouse joint of limited force; a fast
- * flick from the ball is a swipe). A miss holds the scene until a tap, click or key starts again. Keys: P pause, N step,
+ * on it; drag the ball to push it while a rope still holds it (a mouse joint of limited force; a drag
+ * begun on the ball never cuts, however fast). A miss holds the scene until a tap, click or key starts again. Keys: P pause, N step,
  * R retry, L next level (once the level is cleared). URL: ?level (1-5), ?links (links a metre, 2-40), ?gravity (0-30 m/s^2),
  * ?room (auto, wide or upright: a screen wider than tall plays the levels in the wide room,
  * scene.ts WIDE_LEVELS, an upright one in the upright room, LEVELS), ?debug (the frame rate, body
@@ -304,14 +304,12 @@ const toWorld = (e: PointerEvent): [number, number] => {
   return [renderer.camera.toWorldX(at.x), renderer.camera.toWorldY(at.y)];
 };
 let stroke: { x: number; y: number; sx: number; sy: number; moved: number; id: number; reach: number; cut: Set<number> } | null = null;
-/** The pointer pushing the ball: its id, and its last place (CSS px and m) and time (ms), to tell a flick from a push. */
-const pusher = { id: -1, sx: 0, sy: 0, x: 0, y: 0, t: 0 };
 /**
- * Speed, CSS px/s, over which a pointer that pressed on the ball is a flick, not a push: its path
- * cuts the ropes it crosses (a swipe begun at the ball, where the rope meets it, pushed the ball
- * and cut nothing). A push drags at a few hundred px/s.
+ * The pointer pushing the ball. A press on the ball is a push however fast it then moves: it never
+ * cuts (a drag from the ball read as a flick cut the rope where it meets the ball); a swipe begun
+ * off the ball cuts.
  */
-const FLICK_PX_S = 1200;
+const pusher = { id: -1 };
 const slash: { x: number; y: number; t: number }[] = [];
 /** How far from a rope a tap still cuts it, CSS px. */
 const TAP_REACH_PX = 26;
@@ -378,11 +376,6 @@ canvas.addEventListener('pointerdown', (e) => {
   const near = Math.hypot(P.x[b]! - x, P.y[b]! - y) < BALL_RADIUS + 22 / renderer.camera.toScreenLength(1);
   if (near && game.holding() > 0 && game.outcome === 'playing') {
     pusher.id = e.pointerId;
-    pusher.sx = at.x;
-    pusher.sy = at.y;
-    pusher.x = x;
-    pusher.y = y;
-    pusher.t = e.timeStamp;
     // A push of at most 1.2 times the ball's weight: enough to swing it, not to carry it.
     push = addMouseJoint(w, {
       b: scene.ball,
@@ -410,33 +403,13 @@ canvas.addEventListener('pointerdown', (e) => {
 });
 canvas.addEventListener('pointermove', (e) => {
   const [x, y] = toWorld(e);
-  if (push && isAlive(shell.world, push) && e.pointerId === pusher.id && !flicked(e)) {
+  if (push && isAlive(shell.world, push) && e.pointerId === pusher.id) {
     setMouseTarget(shell.world, push, [x, y]);
-    pusher.sx = at.x;
-    pusher.sy = at.y;
-    pusher.x = x;
-    pusher.y = y;
-    pusher.t = e.timeStamp;
     return;
   }
   if (!stroke || e.pointerId !== stroke.id) return;
   strokeTo(x, y);
 });
-/**
- * Whether the pointer pushing the ball has moved from its last place to `at` (CSS px) faster than
- * FLICK_PX_S (`e` its move or release): then it is a flick, not a push: the push goes and a stroke
- * begins at its last place, so the caller's `strokeTo` cuts what the flick crossed.
- */
-function flicked(e: PointerEvent): boolean {
-  const px = Math.hypot(at.x - pusher.sx, at.y - pusher.sy);
-  if ((1000 * px) / Math.max(1, e.timeStamp - pusher.t) <= FLICK_PX_S) return false;
-  releasePush();
-  const reach = e.pointerType === 'touch' ? SWIPE_REACH_PX.touch : SWIPE_REACH_PX.other;
-  stroke = { x: pusher.x, y: pusher.y, sx: pusher.sx, sy: pusher.sy, moved: 0, id: e.pointerId, reach, cut: new Set() };
-  slash.length = 0;
-  slash.push({ x: pusher.sx, y: pusher.sy, t: performance.now() / 1000 });
-  return true;
-}
 /**
  * Carries the stroke on to (x, y), m (the pointer's place now, `at` in CSS px): cuts what the
  * segment from its last place crosses (or, once it has moved 8 px, ends within its reach of),
@@ -458,8 +431,6 @@ function releasePush(): void {
 }
 const release = (e: PointerEvent): void => {
   const [x, y] = toWorld(e);
-  // A push let go fast, far from its last move: a flick from the ball (see flicked).
-  if (push && isAlive(shell.world, push) && e.pointerId === pusher.id && e.type === 'pointerup') flicked(e);
   releasePush();
   pusher.id = -1;
   if (stroke && e.pointerId === stroke.id) {

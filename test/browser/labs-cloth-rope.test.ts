@@ -926,7 +926,7 @@ for (const [device, options] of [
       expect(g.errors).toEqual([]);
     });
 
-    it('a swipe that stops just short of the rope still cuts it (14 px for a finger, 5 px for the mouse); a fast flick cuts it, even one begun on the ball', async () => {
+    it('a swipe that stops just short of the rope still cuts it (14 px for a finger, 5 px for the mouse); a fast flick cuts it; a drag or flick begun on the ball pushes it and cuts nothing', async () => {
       await g.page.evaluate(() => {
         const w = window.game as unknown as RopeLab & { reset(): void };
         w.reset();
@@ -972,9 +972,10 @@ for (const [device, options] of [
       const across = await middleLink();
       await flick(g.page, across.from(60), across.from(-60));
       expect(await cutState(), `${device}: a flick`).toEqual({ cuts: 1, holding: 0 });
-      // A flick begun on the ball (where the rope meets it) cuts the rope too: a press there pushed
-      // the ball and the stroke cut nothing. From a point on the ball 0.12 m beside the rope's line,
-      // across it 0.5 m up the rope, in 16 ms.
+      // A flick begun on the ball (where the rope meets it) pushes the ball and cuts nothing: the
+      // listed control "Drag ball: push the ball" (a fast drag from the ball counted as a cut, "cuts
+      // 1", with the rope whole). From a point on the ball 0.12 m beside the rope's line, across it
+      // 0.5 m up the rope, in 16 ms.
       await g.page.evaluate(() => {
         const w = window.game as unknown as RopeLab & { reset(): void };
         w.reset();
@@ -995,7 +996,20 @@ for (const [device, options] of [
         return [bx - 0.12 * uy, by + 0.12 * ux, bx + 0.5 * ux + 0.3 * uy, by + 0.5 * uy - 0.3 * ux] as const;
       });
       await flick(g.page, await toPage(g, onBall[0], onBall[1]), await toPage(g, onBall[2], onBall[3]));
-      expect(await cutState(), `${device}: a flick from the ball`).toEqual({ cuts: 1, holding: 0 });
+      expect(await cutState(), `${device}: a flick from the ball`).toEqual({ cuts: 0, holding: 1 });
+      // A drag from the ball's centre 1 m sideways (as a player pushes it): a push, no cut.
+      await g.page.evaluate(() => {
+        const w = window.game as unknown as RopeLab & { reset(): void };
+        w.reset();
+        w.paused = true;
+      });
+      const ballAt = await g.page.evaluate(() => {
+        const w = window.game as unknown as RopeLab;
+        const b = w.ids().ball % 2 ** 25;
+        return [w.world.components.Position.x[b]!, w.world.components.Position.y[b]!] as const;
+      });
+      await drag(g.page, [await toPage(g, ballAt[0], ballAt[1]), await toPage(g, ballAt[0] + 1, ballAt[1])], 6);
+      expect(await cutState(), `${device}: a drag from the ball`).toEqual({ cuts: 0, holding: 1 });
       expect(g.errors).toEqual([]);
     });
 
