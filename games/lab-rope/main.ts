@@ -614,13 +614,25 @@ const BANNER_HEIGHTS = [3.4, 4.1, 2.6, 4.8, 1.8, 5.6, 6.4];
 /** A star's drawn glow reaches this far from its centre, m (view.ts: 0.22 m x 1.6, pulsing 8%). */
 const STAR_GLOW = 0.38;
 /**
+ * The gap, CSS px, the banner's box keeps beyond a star's glow: the text's dark stroke and the
+ * glyphs' overhang reach past the measured box, and a title ending a few px from a glow read as
+ * covering the star.
+ */
+const STAR_GAP_PX = 24;
+/**
  * The first of BANNER_HEIGHTS (m) at which the banner's box (with the star row under it and the
  * miss card's margin once the level is over) stays clear of every star not caught yet (so the
  * banner never hides one) and, once the level is over, of the basket and the ball (a miss card over
  * them would hide why the ball missed); the first height clear of the stars if none is clear of all, the
- * first height if none is clear of the stars.
+ * first height if none is clear of the stars. Clear means STAR_GAP_PX beyond each glow if some height
+ * allows it (a narrow phone may not), else just beyond the glow.
  */
 function bannerHeight(): number {
+  const h = bannerHeightWithGap(STAR_GAP_PX);
+  return Number.isNaN(h) ? bannerHeightWithGap(0) : h;
+}
+/** bannerHeight with `gap` px beyond each star's glow; NaN if no height keeps clear of the stars. */
+function bannerHeightWithGap(gap: number): number {
   const cam = renderer.camera;
   const over = game.outcome !== 'playing';
   // With the star row under it (the outcome's banner) the box reaches a row lower; the miss card
@@ -642,7 +654,7 @@ function bannerHeight(): number {
   for (const y of BANNER_HEIGHTS) {
     const by = cam.toScreenY(y) + row / 2;
     const clear = scene.level.stars.every(
-      ([sx, sy], i) => game.caught[i] || apart(by, cam.toScreenX(sx), cam.toScreenY(sy), cam.toScreenLength(STAR_GLOW)),
+      ([sx, sy], i) => game.caught[i] || apart(by, cam.toScreenX(sx), cam.toScreenY(sy), cam.toScreenLength(STAR_GLOW) + gap),
     );
     if (!clear) continue;
     if (!over) return y;
@@ -657,7 +669,8 @@ function bannerHeight(): number {
       cam.width / 2 - halfW > Math.max(cam.toScreenX(bx - half), cam.toScreenX(bx + half));
     if (basketClear && apart(by, cam.toScreenX(P.x[e]!), cam.toScreenY(P.y[e]!), cam.toScreenLength(2 * BALL_RADIUS))) return y;
   }
-  return fallback >= 0 ? fallback : BANNER_HEIGHTS[0]!;
+  if (fallback >= 0) return fallback;
+  return gap > 0 ? Number.NaN : BANNER_HEIGHTS[0]!;
 }
 
 /**
