@@ -544,7 +544,7 @@ function draw(alpha: number, world: PhysicsWorld): void {
       .lineTo(b.x, b.y)
       .stroke({ width: 2.5, color: 0xffffff, alpha: 0.9 * fade, cap: 'round' });
   }
-  drawFlight(world, alpha);
+  drawFlight(world, alpha, now);
   // The push: a band from the ball to the pointer.
   if (push && isAlive(world, push)) {
     const e = slotOf(scene.ball);
@@ -576,9 +576,10 @@ function draw(alpha: number, world: PhysicsWorld): void {
  * The flight hint (see flightHintOn): dots along predictFlight's path from the ball as drawn, fading
  * along the way, every 0.08 s of flight; a small ring where it ends.
  */
-function drawFlight(world: PhysicsWorld, alpha: number): void {
+function drawFlight(world: PhysicsWorld, alpha: number, now: number): void {
   flight.length = 0;
   flightInBasket = false;
+  hintCaption.visible = false;
   if (!flightHintOn()) return;
   const cam = renderer.camera;
   const e = slotOf(scene.ball),
@@ -607,6 +608,49 @@ function drawFlight(world: PhysicsWorld, alpha: number): void {
     overlay
       .circle(cam.toScreenX(flight[2 * n - 2]!), cam.toScreenY(flight[2 * n - 1]!), cam.toScreenLength(BALL_RADIUS))
       .stroke({ width: 2, color: 0xffffff, alpha: 0.3 });
+  drawHintCaption(cam, now);
+}
+
+/** How long the flight hint's caption shows once the hint first appears on a level, s (the last second fading). */
+const HINT_CAPTION_S = 6;
+/** Real time (s) the flight hint first showed on each level in this visit; NaN until it has. */
+const hintShownAt = LEVELS.map(() => Number.NaN);
+/**
+ * The flight hint's caption: says what the dots mean the first time they show on a level, at the
+ * top of the scene (on a later level, where they appear only after a miss, it says the hint is
+ * unlocked).
+ */
+const hintCaption = new Text({
+  text: '',
+  style: {
+    fill: 0xffffff,
+    fontSize: 15,
+    fontFamily: 'sans-serif',
+    stroke: { color: 0x101828, width: 4 },
+    align: 'center',
+    wordWrap: true,
+    wordWrapWidth: 360,
+  },
+});
+hintCaption.visible = false;
+renderer.root.addChild(hintCaption);
+/** Shows the caption while the hint is new on this level (see hintCaption); `now` in s. */
+function drawHintCaption(cam: typeof renderer.camera, now: number): void {
+  const n = flight.length / 2;
+  if (n < 2) return;
+  const k = params.level - 1;
+  if (Number.isNaN(hintShownAt[k]!)) hintShownAt[k] = now;
+  const age = now - hintShownAt[k]!;
+  if (age >= HINT_CAPTION_S) return;
+  const text = `${params.level === 1 ? '' : 'Hint unlocked! '}• • • dots: where the ball flies if you cut now`;
+  if (hintCaption.text !== text) hintCaption.text = text;
+  hintCaption.style.wordWrapWidth = Math.max(160, cam.width - 24);
+  // Centred at the top of the scene, over the beam, where no star, rope or basket lies (beside the
+  // moving path it covered a star on a phone).
+  hintCaption.x = (cam.width - hintCaption.width) / 2;
+  hintCaption.y = 8;
+  hintCaption.alpha = Math.min(1, HINT_CAPTION_S - age);
+  hintCaption.visible = true;
 }
 
 /** Heights the banner may stand at, m, in order of preference: mid-scene first. */
@@ -814,6 +858,8 @@ shell.expose({
    * in the basket's opening.
    */
   flight: () => ({ path: [...flight], inBasket: flightInBasket }),
+  /** The flight hint's caption as last drawn ('' while hidden). */
+  hintCaption: () => (hintCaption.visible ? hintCaption.text : ''),
   /**
    * The banner over the scene: its text ('' while hidden), box (x, y, width, height, px) and the star
    * row under it ([gold, of]; [0, 0] while hidden).
