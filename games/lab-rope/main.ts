@@ -6,8 +6,8 @@
  * (view.ts draws each piece as its own cord).
  *
  * Input: swipe across a rope to cut it (cut.ts: every rope the stroke crosses, however fast), or tap
- * on it; drag the ball to push it while a rope still holds it (a mouse joint of limited force; a fast
- * flick from the ball is a swipe). A miss holds the scene until a tap, click or key starts again. Keys: P pause, N step,
+ * on it; drag the ball to push it while a rope still holds it (a mouse joint of limited force; a drag
+ * begun on the ball never cuts, however fast). A miss holds the scene until a tap, click or key starts again. Keys: P pause, N step,
  * R retry, L next level (once the level is cleared). URL: ?level (1-5), ?links (links a metre, 2-40), ?gravity (0-30 m/s^2),
  * ?room (auto, wide or upright: a screen wider than tall plays the levels in the wide room,
  * scene.ts WIDE_LEVELS, an upright one in the upright room, LEVELS), ?debug (the frame rate, body
@@ -304,14 +304,12 @@ const toWorld = (e: PointerEvent): [number, number] => {
   return [renderer.camera.toWorldX(at.x), renderer.camera.toWorldY(at.y)];
 };
 let stroke: { x: number; y: number; sx: number; sy: number; moved: number; id: number; reach: number; cut: Set<number> } | null = null;
-/** The pointer pushing the ball: its id, and its last place (CSS px and m) and time (ms), to tell a flick from a push. */
-const pusher = { id: -1, sx: 0, sy: 0, x: 0, y: 0, t: 0 };
 /**
- * Speed, CSS px/s, over which a pointer that pressed on the ball is a flick, not a push: its path
- * cuts the ropes it crosses (a swipe begun at the ball, where the rope meets it, pushed the ball
- * and cut nothing). A push drags at a few hundred px/s.
+ * The pointer pushing the ball. A press on the ball is a push however fast it then moves: it never
+ * cuts (a drag from the ball read as a flick cut the rope where it meets the ball); a swipe begun
+ * off the ball cuts.
  */
-const FLICK_PX_S = 1200;
+const pusher = { id: -1 };
 const slash: { x: number; y: number; t: number }[] = [];
 /** How far from a rope a tap still cuts it, CSS px. */
 const TAP_REACH_PX = 26;
@@ -378,11 +376,6 @@ canvas.addEventListener('pointerdown', (e) => {
   const near = Math.hypot(P.x[b]! - x, P.y[b]! - y) < BALL_RADIUS + 22 / renderer.camera.toScreenLength(1);
   if (near && game.holding() > 0 && game.outcome === 'playing') {
     pusher.id = e.pointerId;
-    pusher.sx = at.x;
-    pusher.sy = at.y;
-    pusher.x = x;
-    pusher.y = y;
-    pusher.t = e.timeStamp;
     // A push of at most 1.2 times the ball's weight: enough to swing it, not to carry it.
     push = addMouseJoint(w, {
       b: scene.ball,
@@ -410,33 +403,13 @@ canvas.addEventListener('pointerdown', (e) => {
 });
 canvas.addEventListener('pointermove', (e) => {
   const [x, y] = toWorld(e);
-  if (push && isAlive(shell.world, push) && e.pointerId === pusher.id && !flicked(e)) {
+  if (push && isAlive(shell.world, push) && e.pointerId === pusher.id) {
     setMouseTarget(shell.world, push, [x, y]);
-    pusher.sx = at.x;
-    pusher.sy = at.y;
-    pusher.x = x;
-    pusher.y = y;
-    pusher.t = e.timeStamp;
     return;
   }
   if (!stroke || e.pointerId !== stroke.id) return;
   strokeTo(x, y);
 });
-/**
- * Whether the pointer pushing the ball has moved from its last place to `at` (CSS px) faster than
- * FLICK_PX_S (`e` its move or release): then it is a flick, not a push: the push goes and a stroke
- * begins at its last place, so the caller's `strokeTo` cuts what the flick crossed.
- */
-function flicked(e: PointerEvent): boolean {
-  const px = Math.hypot(at.x - pusher.sx, at.y - pusher.sy);
-  if ((1000 * px) / Math.max(1, e.timeStamp - pusher.t) <= FLICK_PX_S) return false;
-  releasePush();
-  const reach = e.pointerType === 'touch' ? SWIPE_REACH_PX.touch : SWIPE_REACH_PX.other;
-  stroke = { x: pusher.x, y: pusher.y, sx: pusher.sx, sy: pusher.sy, moved: 0, id: e.pointerId, reach, cut: new Set() };
-  slash.length = 0;
-  slash.push({ x: pusher.sx, y: pusher.sy, t: performance.now() / 1000 });
-  return true;
-}
 /**
  * Carries the stroke on to (x, y), m (the pointer's place now, `at` in CSS px): cuts what the
  * segment from its last place crosses (or, once it has moved 8 px, ends within its reach of),
@@ -458,8 +431,6 @@ function releasePush(): void {
 }
 const release = (e: PointerEvent): void => {
   const [x, y] = toWorld(e);
-  // A push let go fast, far from its last move: a flick from the ball (see flicked).
-  if (push && isAlive(shell.world, push) && e.pointerId === pusher.id && e.type === 'pointerup') flicked(e);
   releasePush();
   pusher.id = -1;
   if (stroke && e.pointerId === stroke.id) {
@@ -573,7 +544,7 @@ function draw(alpha: number, world: PhysicsWorld): void {
       .lineTo(b.x, b.y)
       .stroke({ width: 2.5, color: 0xffffff, alpha: 0.9 * fade, cap: 'round' });
   }
-  drawFlight(world, alpha);
+  drawFlight(world, alpha, now);
   // The push: a band from the ball to the pointer.
   if (push && isAlive(world, push)) {
     const e = slotOf(scene.ball);
@@ -605,9 +576,10 @@ function draw(alpha: number, world: PhysicsWorld): void {
  * The flight hint (see flightHintOn): dots along predictFlight's path from the ball as drawn, fading
  * along the way, every 0.08 s of flight; a small ring where it ends.
  */
-function drawFlight(world: PhysicsWorld, alpha: number): void {
+function drawFlight(world: PhysicsWorld, alpha: number, now: number): void {
   flight.length = 0;
   flightInBasket = false;
+  hintCaption.visible = false;
   if (!flightHintOn()) return;
   const cam = renderer.camera;
   const e = slotOf(scene.ball),
@@ -636,6 +608,49 @@ function drawFlight(world: PhysicsWorld, alpha: number): void {
     overlay
       .circle(cam.toScreenX(flight[2 * n - 2]!), cam.toScreenY(flight[2 * n - 1]!), cam.toScreenLength(BALL_RADIUS))
       .stroke({ width: 2, color: 0xffffff, alpha: 0.3 });
+  drawHintCaption(cam, now);
+}
+
+/** How long the flight hint's caption shows once the hint first appears on a level, s (the last second fading). */
+const HINT_CAPTION_S = 6;
+/** Real time (s) the flight hint first showed on each level in this visit; NaN until it has. */
+const hintShownAt = LEVELS.map(() => Number.NaN);
+/**
+ * The flight hint's caption: says what the dots mean the first time they show on a level, at the
+ * top of the scene (on a later level, where they appear only after a miss, it says the hint is
+ * unlocked).
+ */
+const hintCaption = new Text({
+  text: '',
+  style: {
+    fill: 0xffffff,
+    fontSize: 15,
+    fontFamily: 'sans-serif',
+    stroke: { color: 0x101828, width: 4 },
+    align: 'center',
+    wordWrap: true,
+    wordWrapWidth: 360,
+  },
+});
+hintCaption.visible = false;
+renderer.root.addChild(hintCaption);
+/** Shows the caption while the hint is new on this level (see hintCaption); `now` in s. */
+function drawHintCaption(cam: typeof renderer.camera, now: number): void {
+  const n = flight.length / 2;
+  if (n < 2) return;
+  const k = params.level - 1;
+  if (Number.isNaN(hintShownAt[k]!)) hintShownAt[k] = now;
+  const age = now - hintShownAt[k]!;
+  if (age >= HINT_CAPTION_S) return;
+  const text = `${params.level === 1 ? '' : 'Hint unlocked! '}• • • dots: where the ball flies if you cut now`;
+  if (hintCaption.text !== text) hintCaption.text = text;
+  hintCaption.style.wordWrapWidth = Math.max(160, cam.width - 24);
+  // Centred at the top of the scene, over the beam, where no star, rope or basket lies (beside the
+  // moving path it covered a star on a phone).
+  hintCaption.x = (cam.width - hintCaption.width) / 2;
+  hintCaption.y = 8;
+  hintCaption.alpha = Math.min(1, HINT_CAPTION_S - age);
+  hintCaption.visible = true;
 }
 
 /** Heights the banner may stand at, m, in order of preference: mid-scene first. */
@@ -643,13 +658,25 @@ const BANNER_HEIGHTS = [3.4, 4.1, 2.6, 4.8, 1.8, 5.6, 6.4];
 /** A star's drawn glow reaches this far from its centre, m (view.ts: 0.22 m x 1.6, pulsing 8%). */
 const STAR_GLOW = 0.38;
 /**
+ * The gap, CSS px, the banner's box keeps beyond a star's glow: the text's dark stroke and the
+ * glyphs' overhang reach past the measured box, and a title ending a few px from a glow read as
+ * covering the star.
+ */
+const STAR_GAP_PX = 24;
+/**
  * The first of BANNER_HEIGHTS (m) at which the banner's box (with the star row under it and the
  * miss card's margin once the level is over) stays clear of every star not caught yet (so the
  * banner never hides one) and, once the level is over, of the basket and the ball (a miss card over
  * them would hide why the ball missed); the first height clear of the stars if none is clear of all, the
- * first height if none is clear of the stars.
+ * first height if none is clear of the stars. Clear means STAR_GAP_PX beyond each glow if some height
+ * allows it (a narrow phone may not), else just beyond the glow.
  */
 function bannerHeight(): number {
+  const h = bannerHeightWithGap(STAR_GAP_PX);
+  return Number.isNaN(h) ? bannerHeightWithGap(0) : h;
+}
+/** bannerHeight with `gap` px beyond each star's glow; NaN if no height keeps clear of the stars. */
+function bannerHeightWithGap(gap: number): number {
   const cam = renderer.camera;
   const over = game.outcome !== 'playing';
   // With the star row under it (the outcome's banner) the box reaches a row lower; the miss card
@@ -671,7 +698,7 @@ function bannerHeight(): number {
   for (const y of BANNER_HEIGHTS) {
     const by = cam.toScreenY(y) + row / 2;
     const clear = scene.level.stars.every(
-      ([sx, sy], i) => game.caught[i] || apart(by, cam.toScreenX(sx), cam.toScreenY(sy), cam.toScreenLength(STAR_GLOW)),
+      ([sx, sy], i) => game.caught[i] || apart(by, cam.toScreenX(sx), cam.toScreenY(sy), cam.toScreenLength(STAR_GLOW) + gap),
     );
     if (!clear) continue;
     if (!over) return y;
@@ -686,7 +713,8 @@ function bannerHeight(): number {
       cam.width / 2 - halfW > Math.max(cam.toScreenX(bx - half), cam.toScreenX(bx + half));
     if (basketClear && apart(by, cam.toScreenX(P.x[e]!), cam.toScreenY(P.y[e]!), cam.toScreenLength(2 * BALL_RADIUS))) return y;
   }
-  return fallback >= 0 ? fallback : BANNER_HEIGHTS[0]!;
+  if (fallback >= 0) return fallback;
+  return gap > 0 ? Number.NaN : BANNER_HEIGHTS[0]!;
 }
 
 /**
@@ -830,6 +858,8 @@ shell.expose({
    * in the basket's opening.
    */
   flight: () => ({ path: [...flight], inBasket: flightInBasket }),
+  /** The flight hint's caption as last drawn ('' while hidden). */
+  hintCaption: () => (hintCaption.visible ? hintCaption.text : ''),
   /**
    * The banner over the scene: its text ('' while hidden), box (x, y, width, height, px) and the star
    * row under it ([gold, of]; [0, 0] while hidden).
