@@ -378,25 +378,7 @@ export function emit(
   const wall = bodyA === 0 && ea === 0,
     bound = world.collision.boundary;
   let fa: number, ra: number, fb: number, rb: number;
-  if (boxRow.a >= 0) {
-    // A box pair: both shapes' materials from the colliders' scratch entries (the same numbers as the store's).
-    const mat = scratch.material,
-      oa = ColliderMaterial.STRIDE * boxRow.a,
-      ob = ColliderMaterial.STRIDE * boxRow.b;
-    fa = mat[oa + ColliderMaterial.FRICTION]!;
-    ra = mat[oa + ColliderMaterial.RESTITUTION]!;
-    fb = mat[ob + ColliderMaterial.FRICTION]!;
-    rb = mat[ob + ColliderMaterial.RESTITUTION]!;
-  } else {
-    fa = wall ? bound.friction : plane !== 0 || ballA ? c.Material.friction[ea]! : s.friction[ea]!;
-    ra = wall ? bound.restitution : plane !== 0 || ballA ? c.Material.restitution[ea]! : s.restitution[ea]!;
-    fb = ballB ? c.Material.friction[eb]! : s.friction[eb]!;
-    rb = ballB ? c.Material.restitution[eb]! : s.restitution[eb]!;
-  }
-  buf.friction[i] = Math.sqrt(fa * fb);
-  buf.restitution[i] = Math.max(ra, rb);
   // Anchors from where the narrowphase measured: PreviousPosition, or Position for a static body.
-  const type = world.collision.bodyType;
   let ax = 0,
     ay = 0,
     az = 0,
@@ -404,10 +386,15 @@ export function emit(
     by = 0,
     bz = 0;
   if (boxRow.a >= 0) {
-    // A box pair: both bodies' start positions from the colliders' scratch entries (gather took them by the same rule).
+    // A box pair: both shapes' materials and both bodies' start positions from the colliders' scratch
+    // entries (the store's numbers; gather took the positions by the same rule).
     const mat = scratch.material,
       oa = ColliderMaterial.STRIDE * boxRow.a,
       ob = ColliderMaterial.STRIDE * boxRow.b;
+    fa = mat[oa + ColliderMaterial.FRICTION]!;
+    ra = mat[oa + ColliderMaterial.RESTITUTION]!;
+    fb = mat[ob + ColliderMaterial.FRICTION]!;
+    rb = mat[ob + ColliderMaterial.RESTITUTION]!;
     ax = mat[oa + ColliderMaterial.X]!;
     ay = mat[oa + ColliderMaterial.Y]!;
     az = mat[oa + ColliderMaterial.Z]!;
@@ -415,6 +402,11 @@ export function emit(
     by = mat[ob + ColliderMaterial.Y]!;
     bz = mat[ob + ColliderMaterial.Z]!;
   } else {
+    fa = wall ? bound.friction : plane !== 0 || ballA ? c.Material.friction[ea]! : s.friction[ea]!;
+    ra = wall ? bound.restitution : plane !== 0 || ballA ? c.Material.restitution[ea]! : s.restitution[ea]!;
+    fb = ballB ? c.Material.friction[eb]! : s.friction[eb]!;
+    rb = ballB ? c.Material.restitution[eb]! : s.restitution[eb]!;
+    const type = world.collision.bodyType;
     if (bodyA !== 0) {
       const P = type[bodyA] === BodyType.Static ? c.Position : c.PreviousPosition;
       ax = P.x[bodyA]!;
@@ -428,6 +420,8 @@ export function emit(
       bz = P.z[bodyB]!;
     }
   }
+  buf.friction[i] = Math.sqrt(fa * fb);
+  buf.restitution[i] = Math.max(ra, rb);
   // Cylinders only (a box pair has none).
   if (boxRow.a < 0) {
     if (bodyB !== 0 && !ballB) meridianPoints(world, s, eb, bodyB);
