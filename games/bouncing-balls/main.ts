@@ -1459,29 +1459,39 @@ canvas.addEventListener('pointercancel', (event) => release(event, true));
 
 /**
  * The dotted arc of the throw the pointer would make now: its points, m (flat x, y pairs), or [] when
- * not pulling. Only the start of the flight (arcSeconds: to just past its apex), and only up to its
- * first touch: it ends where the ball would meet a wall, a ramp, the box's top, the hoop or a ball (the
- * red cross), so where a bounce sends it is the player's to judge: an arc drawn through its first
- * bounce would let a player wiggle the pull until the dots dropped through the hoop, with no aim.
+ * not pulling. Through the top of the flight and down to just above the rim's height (arcSeconds),
+ * and only up to its first touch: it ends where the ball would meet a wall, a ramp, the box's top, the
+ * hoop or a ball (the red cross), so where a bounce sends it is the player's to judge: an arc drawn
+ * through its first bounce would let a player wiggle the pull until the dots dropped through the hoop,
+ * with no aim.
  */
 function aimPath(): number[] {
   if (pointerId === -1 || !dragged || inCancelZone() || refused()) return [];
   const t = currentThrow();
-  return arcOf(t, pressBall, arcSeconds(t.vy), 0, 0);
+  return arcOf(t, pressBall, arcSeconds(t.y, t.vy), 0, 0);
 }
 /**
- * How much of a throw's flight (vertical speed `vy`, m/s, up) its aiming arc shows, s: aimSeconds, or
- * to the drag-free apex and APEX_MORE past it if that is later (at most FLIGHT_SECONDS), so a weak
- * throw's arc is seen to turn over, not cut off while it still rises. It ends sooner at its first
- * touch (aimPath).
+ * How much of a throw from height `y`, m, with vertical speed `vy`, m/s (up), its aiming arc shows, s:
+ * the drag-free time until it comes back down to ARC_END_ABOVE_RIM over the rim's height, so the
+ * arc shows where the ball comes down as well as how it rises, and the player judges its last stretch
+ * into the hoop. A throw whose top is under that height shows to APEX_MORE past its top. At least
+ * aimSeconds and at most FLIGHT_SECONDS; it ends sooner at its first touch (aimPath).
  */
-function arcSeconds(vy: number): number {
+function arcSeconds(y: number, vy: number): number {
   const g = handles.params.gravity;
-  const apex = g > 0 && vy > 0 ? vy / g : 0;
-  return Math.min(FLIGHT_SECONDS, Math.max(aimSeconds(), apex + APEX_MORE));
+  if (!(g > 0)) return aimSeconds();
+  const apex = vy > 0 ? vy / g : 0;
+  const drop = y + (vy > 0 ? (vy * vy) / (2 * g) : 0) - (hoopSpots(TALL)[round.spot]!.y + ARC_END_ABOVE_RIM);
+  const down = drop > 0 ? apex + Math.sqrt((2 * drop) / g) : apex + APEX_MORE;
+  return Math.min(FLIGHT_SECONDS, Math.max(aimSeconds(), down));
 }
-/** How far past its apex the aiming arc goes on, s of flight. */
+/** How far past its top the aiming arc of a throw that peaks under the rim goes on, s of flight. */
 const APEX_MORE = 0.2;
+/**
+ * How far over the rim's height the aiming arc of a falling throw ends, m: a basketball's radius
+ * short of the rim, so the dots show where the ball comes down and the player still aims its last stretch.
+ */
+const ARC_END_ABOVE_RIM = 0.4;
 
 /** Whether the press is on a buried ball with no room over it (liftSpot null): its pull throws nothing. */
 function refused(): boolean {
@@ -1726,11 +1736,34 @@ function drawPointer(): void {
   const thrownColor = mayScore(hoopSpots(TALL)[round.spot]!, t.y) ? PLAYER_COLOR : HIGH_AIM_COLOR;
   // The band: thicker and warmer the harder the pull (white, gold, red at full power).
   const power = Math.min(1, Math.hypot(t.vx, t.vy) / MAX_THROW_SPEED);
+  // It is as long as the pull that counts: a pull past the full pull stops at it with a bar across
+  // (the cap), and a faint line goes on from its end to the pointer (there too when a lifted ball
+  // moved the band's start off the press point).
+  const pdx = lastX - startX,
+    pdy = lastY - startY,
+    plen = Math.hypot(pdx, pdy);
+  const capped = plen > fullPullNow;
+  const k = capped ? fullPullNow / plen : 1;
+  const bx = ox + k * pdx,
+    by = oy + k * pdy;
+  if (Math.hypot(lastX - bx, lastY - by) > 4) overlay.moveTo(bx, by).lineTo(lastX, lastY).stroke({ width: 2, color: 0xffffff, alpha: 0.3 });
   overlay
     .moveTo(ox, oy)
-    .lineTo(ox + lastX - startX, oy + lastY - startY)
+    .lineTo(bx, by)
     .stroke({ width: 3 + 3 * power, color: powerColor(power), alpha: 0.75 });
-  overlay.circle(ox + lastX - startX, oy + lastY - startY, 5 + 2 * power).fill({ color: powerColor(power), alpha: 0.7 });
+  overlay.circle(bx, by, 5 + 2 * power).fill({ color: powerColor(power), alpha: 0.7 });
+  if (capped) {
+    const ux = pdx / plen,
+      uy = pdy / plen,
+      w = 12;
+    overlay
+      .moveTo(bx - w * uy, by + w * ux)
+      .lineTo(bx + w * uy, by - w * ux)
+      .stroke({ width: 4, color: 0x0b0f16, alpha: 0.6 })
+      .moveTo(bx - w * uy, by + w * ux)
+      .lineTo(bx + w * uy, by - w * ux)
+      .stroke({ width: 2, color: 0xffffff, alpha: 0.95 });
+  }
   const path = aimPath();
   const n = path.length / 2;
   // The dots shrink and fade out along the arc (the shown arc is only the flight's start: aimSeconds).
@@ -1765,7 +1798,7 @@ function drawPointer(): void {
   // and under the gauge (a heap ball thrown into its neighbour rolled off along the heap, a throw
   // "that moved and fell back").
   const soon = blocked && Math.hypot(ex - t.x, ey - t.y) < BLOCKED_SOON_M;
-  let label = `${soon ? 'blocked by a ball · ' : ''}power ${Math.round(100 * power)}%`;
+  let label = `${soon ? 'blocked by a ball · ' : ''}power ${Math.round(100 * power)}%${capped ? ' (max)' : ''}`;
   if (pressed !== 0) {
     const points = BALL_POINTS[kindOf(pressed)];
     const lifted = lift !== null && (lift[0] !== P.x[slotOf(pressed)] || lift[1] !== P.y[slotOf(pressed)]);
