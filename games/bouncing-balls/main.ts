@@ -19,10 +19,11 @@
  * Input: a click drops a ball at the pointer, and a pull throws one slingshot-style from where the
  * press began, on a ball or not (opposite to
  * the pull, faster the longer it is, hoop.ts slingVelocity: the height it reaches grows evenly over
- * the second half of the pull), with a power gauge round the ball and a dotted arc of the start of its
- * flight while pulling (hoop.ts throwPath: AIM_SECONDS of it, twice that in the warm-up before the
- * first basket, 1.5 times as long on a phone held upright (TALL_AIM_SCALE), or to just past its apex if later, fading out, up to its
- * first touch of a ball, a wall, a ramp or the hoop; the player judges the bounce and the rest). Each basketball thrown or dropped fades out once it has come to rest (MAX_LOOSE). A pull taken back
+ * the second half of the pull), with a power gauge round the ball and a dotted arc of its flight
+ * while pulling (hoop.ts throwPath: over its top and down to just above the rim's height, arcSeconds;
+ * at least AIM_SECONDS of it, twice that in the warm-up before the first basket, 1.5 times as long on
+ * a phone held upright (TALL_AIM_SCALE); fading out, up to its first touch of a ball, a wall, a ramp
+ * or the hoop; the player judges the bounce and the last stretch). Each basketball thrown or dropped fades out once it has come to rest (MAX_LOOSE). A pull taken back
  * to within CANCEL_PULL of its press point ("release here to cancel") and let go throws nothing; the
  * same pull throws at the same speed wherever it is pressed (fullPull: no shorter full pull by the
  * window's edge, which made one pull throw at 62 % from one press and 69 % from another). A pull
@@ -1505,7 +1506,7 @@ function aimFlight(): number[] {
 }
 
 /**
- * How much of a throw's flight its aiming arc shows, s: AIM_SECONDS, or AIM_SECONDS_WARMUP in the
+ * The least of a throw's flight its aiming arc shows, s (arcSeconds): AIM_SECONDS, or AIM_SECONDS_WARMUP in the
  * warm-up (before the round's first basket), where a first-timer learns how the pull throws; both
  * TALL_AIM_SCALE times longer in the tall box (a phone held upright).
  */
@@ -1519,13 +1520,13 @@ function aimSeconds(): number {
  */
 const TALL_AIM_SCALE = 1.5;
 /**
- * The aiming arc's length once the clock runs, s of flight: about the first third of a basket's
+ * The aiming arc's least length once the clock runs, s of flight: about the first third of a basket's
  * flight (a basket from the natural starts of reach.ts reaches the rim 0.8 to 2 s after its throw,
- * 1.7 s the median), so the arc shows the throw's direction and strength and the player judges the
- * rest. It ends sooner at its first touch: a ball, a wall, a ramp or the hoop (aimPath).
+ * 1.7 s the median), for a throw that does not come down to the rim's height sooner (arcSeconds). It
+ * ends sooner at its first touch: a ball, a wall, a ramp or the hoop (aimPath).
  */
 const AIM_SECONDS = 0.6;
-/** The aiming arc's length in the warm-up (before the round's first basket), s of flight: twice AIM_SECONDS, most of a basket's way. */
+/** The aiming arc's least length in the warm-up (before the round's first basket), s of flight: twice AIM_SECONDS. */
 const AIM_SECONDS_WARMUP = 1.2;
 /** The longest flight `aimFlight` and the test hook `aimFrom` follow, s. */
 const FLIGHT_SECONDS = 2.5;
@@ -1766,7 +1767,7 @@ function drawPointer(): void {
   }
   const path = aimPath();
   const n = path.length / 2;
-  // The dots shrink and fade out along the arc (the shown arc is only the flight's start: aimSeconds).
+  // The dots shrink and fade out along the arc (it ends short of the rim's height: arcSeconds).
   for (let i = 1; i < n; i++) {
     const f = i / n;
     overlay
@@ -2525,14 +2526,15 @@ shell.expose({
   },
   /**
    * The dotted arc drawn while pulling a throw: its points, m (flat x, y pairs), or [] when not pulling
-   * or in the cancel zone; the first 0.6 s of the flight (1.2 s before the round's first basket), or to
-   * 0.2 s past its apex if later, to a ball in its way, or on through a first bounce off a wall, a
-   * ramp or the hoop and 0.5 s of flight past its usual end.
+   * or in the cancel zone: the flight over its top and down to 0.4 m over the rim's height (at least
+   * 0.6 s of it, 1.2 s before the round's first basket, 1.5 times that in the tall box; at most 2.5 s;
+   * to 0.2 s past its top if that is under the rim), up to its first touch of a ball, a wall, a ramp,
+   * the box's top or the hoop.
    */
   aimPath: (): number[] => aimPath(),
   /** The whole predicted flight of the throw being pulled (2.5 s, two bounces; the arc shows its start): points, m, or [] as aimPath. */
   aimFlight: (): number[] => aimFlight(),
-  /** How much of a throw's flight the aiming arc shows now, s (1.2 in the warm-up before the first basket, then 0.6; 1.5 times that in the tall box). */
+  /** The least of a throw's flight the aiming arc shows now, s (1.2 in the warm-up before the first basket, then 0.6; 1.5 times that in the tall box). */
   aimSeconds: (): number => aimSeconds(),
   /** The round's last throw (the clock ran out during its pull): whether its pull is under way, and its ball (0 when none). */
   lastThrow: () => ({ ...lastCall }),
