@@ -19,10 +19,11 @@
  * Input: a click drops a ball at the pointer, and a pull throws one slingshot-style from where the
  * press began, on a ball or not (opposite to
  * the pull, faster the longer it is, hoop.ts slingVelocity: the height it reaches grows evenly over
- * the second half of the pull), with a power gauge round the ball and a dotted arc of the start of its
- * flight while pulling (hoop.ts throwPath: AIM_SECONDS of it, twice that in the warm-up before the
- * first basket, 1.5 times as long on a phone held upright (TALL_AIM_SCALE), or to just past its apex if later, fading out, up to its
- * first touch of a ball, a wall, a ramp or the hoop; the player judges the bounce and the rest). Each basketball thrown or dropped fades out once it has come to rest (MAX_LOOSE). A pull taken back
+ * the second half of the pull), with a power gauge round the ball and a dotted arc of its flight
+ * while pulling (hoop.ts throwPath: over its top and down to just above the rim's height, arcSeconds;
+ * at least AIM_SECONDS of it, twice that in the warm-up before the first basket, 1.5 times as long on
+ * a phone held upright (TALL_AIM_SCALE); fading out, up to its first touch of a ball, a wall, a ramp
+ * or the hoop; the player judges the bounce and the last stretch). Each basketball thrown or dropped fades out once it has come to rest (MAX_LOOSE). A pull taken back
  * to within CANCEL_PULL of its press point ("release here to cancel") and let go throws nothing; the
  * same pull throws at the same speed wherever it is pressed (fullPull: no shorter full pull by the
  * window's edge, which made one pull throw at 62 % from one press and 69 % from another). A pull
@@ -1459,29 +1460,39 @@ canvas.addEventListener('pointercancel', (event) => release(event, true));
 
 /**
  * The dotted arc of the throw the pointer would make now: its points, m (flat x, y pairs), or [] when
- * not pulling. Only the start of the flight (arcSeconds: to just past its apex), and only up to its
- * first touch: it ends where the ball would meet a wall, a ramp, the box's top, the hoop or a ball (the
- * red cross), so where a bounce sends it is the player's to judge: an arc drawn through its first
- * bounce would let a player wiggle the pull until the dots dropped through the hoop, with no aim.
+ * not pulling. Through the top of the flight and down to just above the rim's height (arcSeconds),
+ * and only up to its first touch: it ends where the ball would meet a wall, a ramp, the box's top, the
+ * hoop or a ball (the red cross), so where a bounce sends it is the player's to judge: an arc drawn
+ * through its first bounce would let a player wiggle the pull until the dots dropped through the hoop,
+ * with no aim.
  */
 function aimPath(): number[] {
   if (pointerId === -1 || !dragged || inCancelZone() || refused()) return [];
   const t = currentThrow();
-  return arcOf(t, pressBall, arcSeconds(t.vy), 0, 0);
+  return arcOf(t, pressBall, arcSeconds(t.y, t.vy), 0, 0);
 }
 /**
- * How much of a throw's flight (vertical speed `vy`, m/s, up) its aiming arc shows, s: aimSeconds, or
- * to the drag-free apex and APEX_MORE past it if that is later (at most FLIGHT_SECONDS), so a weak
- * throw's arc is seen to turn over, not cut off while it still rises. It ends sooner at its first
- * touch (aimPath).
+ * How much of a throw from height `y`, m, with vertical speed `vy`, m/s (up), its aiming arc shows, s:
+ * the drag-free time until it comes back down to ARC_END_ABOVE_RIM over the rim's height, so the
+ * arc shows where the ball comes down as well as how it rises, and the player judges its last stretch
+ * into the hoop. A throw whose top is under that height shows to APEX_MORE past its top. At least
+ * aimSeconds and at most FLIGHT_SECONDS; it ends sooner at its first touch (aimPath).
  */
-function arcSeconds(vy: number): number {
+function arcSeconds(y: number, vy: number): number {
   const g = handles.params.gravity;
-  const apex = g > 0 && vy > 0 ? vy / g : 0;
-  return Math.min(FLIGHT_SECONDS, Math.max(aimSeconds(), apex + APEX_MORE));
+  if (!(g > 0)) return aimSeconds();
+  const apex = vy > 0 ? vy / g : 0;
+  const drop = y + (vy > 0 ? (vy * vy) / (2 * g) : 0) - (hoopSpots(TALL)[round.spot]!.y + ARC_END_ABOVE_RIM);
+  const down = drop > 0 ? apex + Math.sqrt((2 * drop) / g) : apex + APEX_MORE;
+  return Math.min(FLIGHT_SECONDS, Math.max(aimSeconds(), down));
 }
-/** How far past its apex the aiming arc goes on, s of flight. */
+/** How far past its top the aiming arc of a throw that peaks under the rim goes on, s of flight. */
 const APEX_MORE = 0.2;
+/**
+ * How far over the rim's height the aiming arc of a falling throw ends, m: a basketball's radius
+ * short of the rim, so the dots show where the ball comes down and the player still aims its last stretch.
+ */
+const ARC_END_ABOVE_RIM = 0.4;
 
 /** Whether the press is on a buried ball with no room over it (liftSpot null): its pull throws nothing. */
 function refused(): boolean {
@@ -1495,7 +1506,7 @@ function aimFlight(): number[] {
 }
 
 /**
- * How much of a throw's flight its aiming arc shows, s: AIM_SECONDS, or AIM_SECONDS_WARMUP in the
+ * The least of a throw's flight its aiming arc shows, s (arcSeconds): AIM_SECONDS, or AIM_SECONDS_WARMUP in the
  * warm-up (before the round's first basket), where a first-timer learns how the pull throws; both
  * TALL_AIM_SCALE times longer in the tall box (a phone held upright).
  */
@@ -1509,13 +1520,13 @@ function aimSeconds(): number {
  */
 const TALL_AIM_SCALE = 1.5;
 /**
- * The aiming arc's length once the clock runs, s of flight: about the first third of a basket's
+ * The aiming arc's least length once the clock runs, s of flight: about the first third of a basket's
  * flight (a basket from the natural starts of reach.ts reaches the rim 0.8 to 2 s after its throw,
- * 1.7 s the median), so the arc shows the throw's direction and strength and the player judges the
- * rest. It ends sooner at its first touch: a ball, a wall, a ramp or the hoop (aimPath).
+ * 1.7 s the median), for a throw that does not come down to the rim's height sooner (arcSeconds). It
+ * ends sooner at its first touch: a ball, a wall, a ramp or the hoop (aimPath).
  */
 const AIM_SECONDS = 0.6;
-/** The aiming arc's length in the warm-up (before the round's first basket), s of flight: twice AIM_SECONDS, most of a basket's way. */
+/** The aiming arc's least length in the warm-up (before the round's first basket), s of flight: twice AIM_SECONDS. */
 const AIM_SECONDS_WARMUP = 1.2;
 /** The longest flight `aimFlight` and the test hook `aimFrom` follow, s. */
 const FLIGHT_SECONDS = 2.5;
@@ -1726,14 +1737,37 @@ function drawPointer(): void {
   const thrownColor = mayScore(hoopSpots(TALL)[round.spot]!, t.y) ? PLAYER_COLOR : HIGH_AIM_COLOR;
   // The band: thicker and warmer the harder the pull (white, gold, red at full power).
   const power = Math.min(1, Math.hypot(t.vx, t.vy) / MAX_THROW_SPEED);
+  // It is as long as the pull that counts: a pull past the full pull stops at it with a bar across
+  // (the cap), and a faint line goes on from its end to the pointer (there too when a lifted ball
+  // moved the band's start off the press point).
+  const pdx = lastX - startX,
+    pdy = lastY - startY,
+    plen = Math.hypot(pdx, pdy);
+  const capped = plen > fullPullNow;
+  const k = capped ? fullPullNow / plen : 1;
+  const bx = ox + k * pdx,
+    by = oy + k * pdy;
+  if (Math.hypot(lastX - bx, lastY - by) > 4) overlay.moveTo(bx, by).lineTo(lastX, lastY).stroke({ width: 2, color: 0xffffff, alpha: 0.3 });
   overlay
     .moveTo(ox, oy)
-    .lineTo(ox + lastX - startX, oy + lastY - startY)
+    .lineTo(bx, by)
     .stroke({ width: 3 + 3 * power, color: powerColor(power), alpha: 0.75 });
-  overlay.circle(ox + lastX - startX, oy + lastY - startY, 5 + 2 * power).fill({ color: powerColor(power), alpha: 0.7 });
+  overlay.circle(bx, by, 5 + 2 * power).fill({ color: powerColor(power), alpha: 0.7 });
+  if (capped) {
+    const ux = pdx / plen,
+      uy = pdy / plen,
+      w = 12;
+    overlay
+      .moveTo(bx - w * uy, by + w * ux)
+      .lineTo(bx + w * uy, by - w * ux)
+      .stroke({ width: 4, color: 0x0b0f16, alpha: 0.6 })
+      .moveTo(bx - w * uy, by + w * ux)
+      .lineTo(bx + w * uy, by - w * ux)
+      .stroke({ width: 2, color: 0xffffff, alpha: 0.95 });
+  }
   const path = aimPath();
   const n = path.length / 2;
-  // The dots shrink and fade out along the arc (the shown arc is only the flight's start: aimSeconds).
+  // The dots shrink and fade out along the arc (it ends short of the rim's height: arcSeconds).
   for (let i = 1; i < n; i++) {
     const f = i / n;
     overlay
@@ -1765,7 +1799,7 @@ function drawPointer(): void {
   // and under the gauge (a heap ball thrown into its neighbour rolled off along the heap, a throw
   // "that moved and fell back").
   const soon = blocked && Math.hypot(ex - t.x, ey - t.y) < BLOCKED_SOON_M;
-  let label = `${soon ? 'blocked by a ball · ' : ''}power ${Math.round(100 * power)}%`;
+  let label = `${soon ? 'blocked by a ball · ' : ''}power ${Math.round(100 * power)}%${capped ? ' (max)' : ''}`;
   if (pressed !== 0) {
     const points = BALL_POINTS[kindOf(pressed)];
     const lifted = lift !== null && (lift[0] !== P.x[slotOf(pressed)] || lift[1] !== P.y[slotOf(pressed)]);
@@ -2492,14 +2526,15 @@ shell.expose({
   },
   /**
    * The dotted arc drawn while pulling a throw: its points, m (flat x, y pairs), or [] when not pulling
-   * or in the cancel zone; the first 0.6 s of the flight (1.2 s before the round's first basket), or to
-   * 0.2 s past its apex if later, to a ball in its way, or on through a first bounce off a wall, a
-   * ramp or the hoop and 0.5 s of flight past its usual end.
+   * or in the cancel zone: the flight over its top and down to 0.4 m over the rim's height (at least
+   * 0.6 s of it, 1.2 s before the round's first basket, 1.5 times that in the tall box; at most 2.5 s;
+   * to 0.2 s past its top if that is under the rim), up to its first touch of a ball, a wall, a ramp,
+   * the box's top or the hoop.
    */
   aimPath: (): number[] => aimPath(),
   /** The whole predicted flight of the throw being pulled (2.5 s, two bounces; the arc shows its start): points, m, or [] as aimPath. */
   aimFlight: (): number[] => aimFlight(),
-  /** How much of a throw's flight the aiming arc shows now, s (1.2 in the warm-up before the first basket, then 0.6; 1.5 times that in the tall box). */
+  /** The least of a throw's flight the aiming arc shows now, s (1.2 in the warm-up before the first basket, then 0.6; 1.5 times that in the tall box). */
   aimSeconds: (): number => aimSeconds(),
   /** The round's last throw (the clock ran out during its pull): whether its pull is under way, and its ball (0 when none). */
   lastThrow: () => ({ ...lastCall }),

@@ -1524,6 +1524,35 @@ describe('bouncing balls: cancelling, full-power pulls and the end of a round mi
       for (let i = 1; i < ys.length; i++) expect(ys[i]!).toBeGreaterThan(ys[i - 1]!);
       expect(g.errors).toEqual([]);
     });
+
+    it("desktop 1280 x 800: a lob's aiming arc goes over its top and down to just above the rim's height", async () => {
+      const g = page();
+      await clearAround(g, 5, 4.5);
+      const from = await g.worldToPage(5, 4.5);
+      const m = g.page.mouse;
+      await m.move(from.x, from.y);
+      await m.down();
+      // Down and a little left: a steep lob up and a little right, clear of the ramps and the hoop.
+      await m.move(from.x - 10, from.y + 150, { steps: 6 });
+      const got = await g.waitFor(() => {
+        const game = window.game as unknown as AimGame & { hoop(): { y: number } };
+        const a = game.aimPath();
+        return a.length > 0 ? { arc: a, rim: game.hoop().y } : null;
+      }, null);
+      await m.up();
+      const ys = got.arc.filter((_, i) => i % 2 === 1);
+      const top = ys.indexOf(Math.max(...ys));
+      // It rises well over the rim, turns over and comes down: the arc shows where the ball falls, not
+      // only its rise (a stranger's throw that looked right in a rising-only arc fell short).
+      expect(ys[top]!).toBeGreaterThan(got.rim + 1.5);
+      expect(top).toBeGreaterThan(0);
+      expect(top).toBeLessThan(ys.length - 1);
+      for (let i = top + 1; i < ys.length; i++) expect(ys[i]!).toBeLessThan(ys[i - 1]!);
+      // It ends 0.4 m over the rim's height (main.ts ARC_END_ABOVE_RIM), within one dot's spacing (4
+      // steps of 1/60 s at the fall's speed, under 0.5 m here) and the drag left out of its length.
+      expect(Math.abs(ys.at(-1)! - (got.rim + 0.4))).toBeLessThan(0.5);
+      expect(g.errors).toEqual([]);
+    });
   });
 
   it('desktop 1280 x 800, mouse: a throw straight into the ball beside it says "blocked by a ball" over the gauge', async () => {
