@@ -699,7 +699,9 @@ describe('levels', () => {
     const bonus = Math.max(0, Math.floor(BONUS_SECONDS - s.time));
     expect(s).toMatchObject({ level: 4, holes: 4, levelPoints: 400, bonus, points: 400 + bonus, lives: 3, falls: 1 });
     expect(g.lives).toBe(3);
-    expect(g.message).toContain(`1 fall): +${400 + bonus}${bonus > 0 ? ` (400 + ${bonus} speed bonus)` : ''}. A life back for clearing it: 3 lives.`);
+    expect(g.message).toContain(
+      `1 fall): +${400 + bonus}${bonus > 0 ? ` (400 + ${bonus} speed bonus)` : ''}. A life back for clearing it: 3 lives.`,
+    );
     expect(g.score).toBe(400 + bonus);
     expect(run.waiting).toBe(true);
     expect(run.spec.level).toBe(5);
