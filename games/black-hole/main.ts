@@ -330,13 +330,14 @@ const game = await startPixiGame({
     isTouchDevice()
       ? { keys: '← ↑ → ↓', action: 'nudge; thumb between two: both', touch: 'tap ← ↑ → ↓' }
       : { keys: '← ↑ → ↓', action: 'thrust: a tap nudges, a hold builds up (two at once: diagonal)', touch: 'hold, slide ← ↑ → ↓' },
-    { keys: 'Enter', action: 'next level / continue from this level', touch: 'tap the Level ▶ or Continue ↺ button' },
+    { keys: 'Enter', action: 'next level / continue from this level', touch: 'tap the Level ▶ or Continue ↺ button', card: false },
     {
       keys: 'F',
       action: 'predicted path on / off (red: falls in or lost, blue: reaches the line, grey: undecided)',
       touch: 'the Path button',
+      card: false,
     },
-    { keys: 'V', action: 'replay the run from the start (a key or a tap leaves it)', touch: 'the Replay button' },
+    { keys: 'V', action: 'replay the run from the start (a key or a tap leaves it)', touch: 'the Replay button', card: false },
   ],
   keys: [
     { key: 'Enter', label: 'next level / restart', action: () => advance() },

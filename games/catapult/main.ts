@@ -413,7 +413,7 @@ const game = await startPixiGame({
   bodies: () => lv.pieces.length + shots.length,
   controls: [
     { keys: 'Drag', action: 'pull back (anywhere), release to throw' },
-    { keys: 'L', action: 'next level', touch: 'Next level' },
+    { keys: 'L', action: 'next level', touch: 'Next level', card: false },
     { keys: 'Enter', action: 'next level after a clear (try again after a miss)' },
   ],
   keys: [

@@ -881,10 +881,12 @@ function local(event: PointerEvent): void {
 }
 canvas.addEventListener('pointerdown', (event) => {
   if (event.button !== 0 || pointerId !== -1) return;
-  // While the player has paused, a press resumes the show and launches nothing (it spent a shell on
-  // the frozen sky); its release is not this press's, so it launches nothing either.
+  // While the player has paused, the pause holds (a player studying the frozen sky, the drifting
+  // lanterns, taps on it): the press launches nothing and the pause's words pulse to say how to go on
+  // (P or the ▶ button); its release is not this press's, so it launches nothing either.
   if (launchHeld()) {
-    shell.togglePause();
+    pausePressedAt = performance.now();
+    pausePresses++;
     return;
   }
   pointerId = event.pointerId;
@@ -1198,15 +1200,31 @@ function lanternBoxes(all: boolean): [number, number, number, number][] {
   return out;
 }
 /**
- * Over the sky while the player has paused: the sky dimmed, "Paused" and how to go on. A tap or click
- * on the paused sky resumes it and launches nothing, so no tap there goes unanswered.
+ * Over the sky while the player has paused: the sky dimmed, "Paused" and how to go on (P, or the ▶
+ * button on a touch screen). A tap or click on the paused sky leaves it paused and launches nothing;
+ * it is answered by the words pulsing (PAUSE_PULSE_MS) and the toolbar's ▶ button lighting up.
  */
-const pause = createPauseOverlay({ tapToResume: true });
+const pause = createPauseOverlay();
 app.stage.addChild(pause.container);
+/** How long the pause's words pulse after a press on the paused sky, ms. */
+const PAUSE_PULSE_MS = 450;
+/** How much larger the pause's words grow at the pulse's height (1 + this), dimensionless. */
+const PAUSE_PULSE_GROWTH = 0.22;
+/** performance.now() of the last press on the paused sky, ms (-Infinity: none yet). */
+let pausePressedAt = Number.NEGATIVE_INFINITY;
+/** Presses on the paused sky since the page loaded (tests). */
+let pausePresses = 0;
+/** The toolbar's pause / resume button (lit while the words pulse), or null without the page layout's toolbar. */
+const pauseButton = document.querySelector<HTMLButtonElement>('button[aria-label="pause / resume (P)"]');
 /** Shows the pause overlay while the player has paused (P or the pause button), on top of everything. */
 function drawPause(): void {
   const cam = renderer.camera;
   pause.draw(shell.paused && playerPaused, cam.width, cam.height, touch);
+  // The pulse: the words grow and shrink back over PAUSE_PULSE_MS (half a sine), the ▶ button outlined meanwhile.
+  const t = (performance.now() - pausePressedAt) / PAUSE_PULSE_MS;
+  const pulsing = pause.visible && t >= 0 && t < 1;
+  pause.words.scale.set(pulsing ? 1 + PAUSE_PULSE_GROWTH * Math.sin(Math.PI * t) : 1);
+  if (pauseButton) pauseButton.style.outline = pulsing ? '3px solid #ffd166' : '';
   const top = app.stage.children.length - 1;
   if (pause.visible && app.stage.getChildIndex(pause.container) !== top) app.stage.setChildIndex(pause.container, top);
 }
@@ -1448,6 +1466,8 @@ shell.expose({
   pauseShown: (): boolean => pause.visible,
   /** The pause overlay's words as last drawn ('' before the first pause). */
   pauseText: (): string => pause.text,
+  /** Presses on the paused sky so far (each leaves the pause and pulses its words), and the words' scale as last drawn. */
+  pausePresses: (): { count: number; scale: number } => ({ count: pausePresses, scale: pause.words.scale.x }),
   /** The finale's meeting cue as drawn last frame: release (how near a shell let go now bursts to the meeting, 0 none), burst point (m), label, and the release when the label last turned to "let go now!" (NaN never). */
   meeting: () => ({ ...meetShown, letGoRelease }),
   /** The newest burst's front ring as drawn last frame: burst scale (0: none drawn), the reach it races out to and its radius now, CSS px, its age, s. */

@@ -736,8 +736,8 @@ const game = await startThreeGame({
   controls: [
     { keys: '↑ ↓ / W S', action: 'climb / dive', touch: 'stick ↑ ↓' },
     { keys: '← → / A D', action: 'bank left / right', touch: 'stick ← →' },
-    { keys: 'X / Z', action: 'engine power up / down', touch: 'Faster / Slower buttons' },
-    { keys: 'Q / E', action: 'yaw the nose left / right', touch: '◀ Rudder ▶ buttons' },
+    { keys: 'X / Z', action: 'engine power up / down', touch: 'Faster / Slower buttons', card: false },
+    { keys: 'Q / E', action: 'yaw the nose left / right', touch: '◀ Rudder ▶ buttons', card: false },
     { keys: 'C', action: 'chase / cockpit view', touch: 'Camera' },
   ],
   keys: [

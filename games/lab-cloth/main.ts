@@ -292,7 +292,7 @@ const game = await startPixiGame({
   step: labStep,
   controls: [
     { keys: 'Drag', action: 'cut with the scissors, or pull with the hand (a long pull tears)' },
-    { keys: 'C', action: 'scissors / hand', touch: 'Scissors / Hand' },
+    { keys: 'C', action: 'scissors / hand', touch: 'Scissors / Hand', card: false },
     { keys: 'G (hold)', action: 'a gust of wind', touch: 'Gust (hold)' },
     { keys: 'Right drag', action: 'cut, with either tool', touch: '' },
     { keys: 'Ctrl+Z', action: 'undo the last cut', touch: 'Undo' },

@@ -27,7 +27,7 @@ export function cubeControls(mode: Mode, touch: boolean): ControlHint[] {
       ? { keys: 'Q E', action: 'turn it a quarter turn flat on the floor, left or right', touch: '⟲ ⟳' }
       : { keys: 'Q E', action: 'spin it like a wheel facing you, left or right', touch: 'Roll ⟲ ⟳' },
     { keys: 'X', action: 'stop spinning', touch: 'Stop' },
-    ...(room ? [{ keys: 'Space', action: 'jump', touch: 'Jump' }] : []),
+    ...(room ? [{ keys: 'Space', action: 'jump', touch: 'Jump', card: false }] : []),
     { keys: 'M', action: 'mode: pads / spin the cube / flipping box', touch: 'Mode' },
   ];
 }

@@ -905,13 +905,11 @@ body .bp-touch-hint { font-size: 13px; padding: 6px 10px; bottom: 6px; }
     });
     const arrows = card.children[1]?.lastElementChild;
     if (arrows) arrows.textContent = 'roll the cube';
+    // The room's framing does not change when the card goes (fitBesideDrawer keeps the floor clear of
+    // it all along), so nothing the player aims at moves.
     const hide = (): void => {
       card.classList.add('bp-gone');
-      window.setTimeout(() => {
-        card.remove();
-        // The strip kept for the card goes to the room (the framing follows each frame).
-        touchCardSpace = TOUCH_CARD_GONE_SPACE;
-      }, 700);
+      window.setTimeout(() => card.remove(), 700);
     };
     (app.canvas.parentElement ?? document.body).addEventListener('pointerdown', hide, { capture: true, once: true });
     for (const bar of [dpad.element, extras.element]) bar.addEventListener('pointerdown', hide, { once: true });
@@ -1988,16 +1986,17 @@ const corner = new Vector3();
  * camera's view offset and zoom (its position and the orbit stay as they are): with the settings
  * drawer open over the stage (a wide window: the game arrangement's drawer) the part left of it,
  * shifted left and zoomed out when it would not fit; on a tall stage (a phone) the room's floor
- * between the face net and the touch card (TOUCH_CARD_SPACE above the stage's foot), shifted down and
- * zoomed out (the net and the rules card covered the back of the room; the back wall's top may stay
- * under them). Otherwise, and on the pivot, the camera's own framing.
+ * between the face net and the touch card (TOUCH_CARD_SPACE above the stage's foot), zoomed out
+ * (the net and the rules card covered the back of the room; the back wall's top may stay under
+ * them) and as low as that leaves it (centred between the net and ROOM_FOOT_SPACE above the foot, so
+ * the front wall's foot sits just above the buttons rather than over an empty strip). The same
+ * framing holds whether the touch card shows or not: the room does not move when it goes.
+ * Otherwise, and on the pivot, the camera's own framing.
  */
 /** On a tall stage, the height kept clear of the room's floor above the stage's foot, CSS px: the touch card's (two lines). */
 const TOUCH_CARD_SPACE = 80;
-/** The same once the touch card is gone (the player's first touch), CSS px: the front wall's foot just above the buttons. */
-const TOUCH_CARD_GONE_SPACE = 8;
-/** The height kept clear now, CSS px: TOUCH_CARD_SPACE while the touch card shows, then TOUCH_CARD_GONE_SPACE (80 px of empty floor stayed above the buttons). */
-let touchCardSpace = TOUCH_CARD_SPACE;
+/** On a tall stage, the height above the stage's foot that the room is centred above when that leaves the floor clear of the touch card, CSS px. */
+const ROOM_FOOT_SPACE = 8;
 function fitBesideDrawer(): void {
   const cam = app.camera;
   cam.clearViewOffset();
@@ -2040,11 +2039,13 @@ function fitBesideDrawer(): void {
     cam.zoom = k;
     cam.setViewOffset(c.width, c.height, (-shift * c.width) / 2, 0, c.width, c.height);
   } else {
-    // The free part of the stage in normalised device y: [l, r] (below the net, above the touch card).
+    // The free part of the stage in normalised device y: [l, r] (below the net, above the touch card);
+    // the room is centred on [foot, r] unless that puts the floor's near edge under l.
     const r = 1 - (2 * below) / c.height,
-      l = -1 + (2 * touchCardSpace) / c.height;
+      l = -1 + (2 * TOUCH_CARD_SPACE) / c.height,
+      foot = -1 + (2 * ROOM_FOOT_SPACE) / c.height;
     const k = Math.min(1, (0.98 * (r - l)) / (by - ay), 0.98 / wx);
-    const shift = (r + l) / 2 - (k * (ay + by)) / 2;
+    const shift = Math.max((r + foot) / 2 - (k * (ay + by)) / 2, l + 0.01 * (r - l) - k * ay);
     cam.zoom = k;
     cam.setViewOffset(c.width, c.height, 0, (shift * c.height) / 2, c.width, c.height);
   }

@@ -733,11 +733,11 @@ const game = await startThreeGame({
   // here would be more than a new player can take in). On a phone the lines naming on-screen buttons stay
   // in the menu's legend, out of the card over the diagram (the kit leaves out gestures ending in "button(s)").
   controls: [
-    { keys: '← →', action: 'turn the launch arrow; in flight, burn in / out', touch: 'bottom ↺ ↻ buttons' },
-    { keys: '↑ ↓', action: 'launch speed; in flight, burn faster / slower', touch: '− + buttons' },
-    { keys: 'Space', action: 'launch the probe', touch: 'Launch button' },
-    { keys: 'W', action: 'wait: hold to run time (slow near a launch window); tap for 10 days', touch: 'Wait button' },
-    { keys: 'H', action: 'hint: what to try', touch: 'Hint button' },
+    { keys: '← →', action: 'turn the launch arrow; in flight, burn in / out', touch: 'bottom ↺ ↻ buttons', card: false },
+    { keys: '↑ ↓', action: 'launch speed; in flight, burn faster / slower', touch: '− + buttons', card: false },
+    { keys: 'Space', action: 'launch the probe', touch: 'Launch button', card: false },
+    { keys: 'W', action: 'wait: hold to run time (slow near a launch window); tap for 10 days', touch: 'Wait button', card: false },
+    { keys: 'H', action: 'hint: what to try', touch: 'Hint button', card: false },
     { keys: 'Click', action: 'aim the launch at a point', touch: 'Tap' },
   ],
   keys: [

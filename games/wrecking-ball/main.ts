@@ -704,11 +704,10 @@ const cameraGoal = { position: new Vector3(), target: new Vector3() };
 const cameraVelocity = new Vector3(),
   targetVelocity = new Vector3();
 /**
- * The widened framing: whether the camera is given it rather than the site's, the ball's places it
- * takes in (m), when it was last widened and since when the ball has been inside the site's framing
- * (page seconds, -1: it is not).
+ * The widened framing: whether the camera is given it rather than the site's (for the rest of the
+ * level once it is), the ball's places it takes in (m) and when it was last widened (page seconds).
  */
-const widen = { on: false, balls: [] as Vector3[], at: -1e9, insideSince: -1 };
+const widen = { on: false, balls: [] as Vector3[], at: -1e9 };
 // The player's own turn or zoom: the camera is theirs (no new framing on a resize, no easing back).
 app.controls?.addEventListener('start', () => {
   framedSize = null;
@@ -999,9 +998,9 @@ function drawChain(hook: ArrayLike<number>): void {
 // finger). Once any of the ball has left the site's framing (the view frameSite chose, which fills the
 // screen), the framing widens to take the ball in as well, seen from the framing's own side (fitPoints:
 // every structure stays on the screen, and a jib turned toward the camera or away does not swing the ball
-// out of view); it widens again while the ball keeps leaving it, and goes back to the site's framing once
-// the ball has been inside that for RETURN_DELAY s with no swing running (on an upright phone it keeps
-// the widened framing for the level). A ball that comes to rest
+// out of view); it widens again while the ball keeps leaving it, and keeps the widened framing for the
+// level (it only grows): going back to the site's framing after a swing moved every target on the
+// screen while the player aimed the next one, and out again on the next swing. A ball that comes to rest
 // outside the site's framing is framed with it from then on (rehome). The camera eases toward the framing
 // it is given as a critically damped spring (`smoothDamp`, settling in about CAMERA_EASE s): its velocity
 // never jumps, so a change of framing starts and ends gently (a camera stepped a share of the way each
@@ -1014,8 +1013,6 @@ function drawChain(hook: ArrayLike<number>): void {
 const FOLLOW_EDGE = 0.92;
 /** Time, s, in which the camera's spring closes most of the way to a new framing (its smooth time is half of it). */
 const CAMERA_EASE = 0.9;
-/** Seconds the ball must stay inside the site's framing, no swing running, before a widened framing goes back to it. */
-const RETURN_DELAY = 2.5;
 /** Shortest time, s, between two widenings of the framing (each a fitPoints). */
 const WIDEN_EVERY = 0.25;
 /** Rate, 1/s, at which a player's camera moves sideways after a ball past the view's edge (times the distance to go). */
@@ -1050,7 +1047,6 @@ function settleCamera(): void {
   targetVelocity.set(0, 0, 0);
   widen.on = false;
   widen.balls.length = 0;
-  widen.insideSince = -1;
   if (home !== null) {
     cameraGoal.position.copy(home.position);
     cameraGoal.target.copy(home.target);
@@ -1146,15 +1142,10 @@ function followAction(): void {
       rehome(followBall);
       inside = true;
     }
-    widen.insideSince = inside ? (widen.insideSince < 0 ? now : widen.insideSince) : -1;
     if (widen.on) {
-      // On an upright phone the widened framing stays for the level (it only grows): going back to
-      // the site's narrow framing after each swing and out again on the next swung the camera to and
-      // fro between swings.
-      if (!PORTRAIT && inside && c.moves.length === 0 && now - widen.insideSince > RETURN_DELAY) {
-        widen.on = false;
-        widen.balls.length = 0;
-      } else if (!inside && now - widen.at > WIDEN_EVERY && !ballInFraming(followBall, cameraGoal.position, cameraGoal.target))
+      // The widened framing stays for the level (it only grows), so the targets hold still on the
+      // screen between swings.
+      if (!inside && now - widen.at > WIDEN_EVERY && !ballInFraming(followBall, cameraGoal.position, cameraGoal.target))
         widenFor(followBall, now);
     } else if (!inside) {
       widen.on = true;

@@ -106,11 +106,13 @@ describe('fireworks', () => {
   it('a click launches a shell that bursts where clicked 1.2 s later, whose sparks appear, fall and all expire', async () => {
     const g = page;
     expect(await g.page.evaluate(() => (window.game as unknown as FireworksGame).particleCount())).toBe(0);
-    // Paused by the player (P), a click launches nothing (it spent a shell on the frozen sky): it
-    // resumes the show (a click there was ignored without a word).
+    // Paused by the player (P), a click launches nothing (it spent a shell on the frozen sky) and
+    // the pause holds (a click there resumed the show); P resumes it.
     await g.page.keyboard.press('p');
     await g.clickCanvas(0.5, 0.62);
-    expect(await g.page.evaluate(() => [(window.game as unknown as FireworksGame).show.launched, window.game!.paused])).toEqual([0, false]);
+    expect(await g.page.evaluate(() => [(window.game as unknown as FireworksGame).show.launched, window.game!.paused])).toEqual([0, true]);
+    await g.page.keyboard.press('p');
+    expect(await g.page.evaluate(() => window.game!.paused)).toBe(false);
     // Paused from the click on: the test steps the show itself, synchronously in the page, and then
     // lets two frames draw it (a loaded machine drawing a frame a second takes the same steps as a
     // fast one), so the steps counted from the launch are its fuse.
@@ -370,21 +372,17 @@ describe('fireworks: the lantern show', () => {
       () => /Level 2\/5 · Lit 0\/4 · Shells 3 · Par 2/.test(document.querySelector('[data-hud="lanterns"]')?.textContent ?? ''),
       null,
     );
-    // P pauses: the sky says so ("Paused", how to resume: a click or P); a click on the paused sky
-    // resumes it and launches nothing (clicks there were ignored without a word); P pauses and resumes.
+    // P pauses: the sky says so ("Paused", how to resume: P); a click on the paused sky launches
+    // nothing and leaves it paused, its words pulsing; P resumes.
     await g.page.keyboard.press('p');
     await g.frames(2);
     expect(await g.page.evaluate(() => (window.game as unknown as Carded).pauseShown())).toBe(true);
-    expect(await g.page.evaluate(() => (window.game as unknown as { pauseText(): string }).pauseText())).toBe(
-      'Paused\nClick or P to resume',
-    );
+    expect(await g.page.evaluate(() => (window.game as unknown as { pauseText(): string }).pauseText())).toBe('Paused\nP to resume');
     await g.page.mouse.click(canvas.x + 0.5 * canvas.width, canvas.y + 0.3 * canvas.height);
     await g.frames(2);
-    expect(await g.page.evaluate(() => (window.game as unknown as Carded).pauseShown())).toBe(false);
-    expect(await g.page.evaluate(() => (window.game as unknown as { show: { shellCount: number } }).show.shellCount)).toBe(0);
-    await g.page.keyboard.press('p');
-    await g.frames(2);
     expect(await g.page.evaluate(() => (window.game as unknown as Carded).pauseShown())).toBe(true);
+    expect(await g.page.evaluate(() => (window.game as unknown as { show: { shellCount: number } }).show.shellCount)).toBe(0);
+    expect(await g.page.evaluate(() => (window.game as unknown as { pausePresses(): { count: number } }).pausePresses().count)).toBe(1);
     await g.page.keyboard.press('p');
     await g.frames(2);
     expect(await g.page.evaluate(() => (window.game as unknown as Carded).pauseShown())).toBe(false);
@@ -392,6 +390,39 @@ describe('fireworks: the lantern show', () => {
     await g.waitFor(() => !(window.game as unknown as LanternGame).lanterns().on, null);
     expect(await g.page.evaluate(() => (window.game as unknown as LanternGame).params.autoShow)).toBe(true);
     await g.waitFor(() => document.querySelector('[data-hud="lanterns"] [data-hud="goal"]')?.textContent?.startsWith('Free play'), null);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
+  it('level 3 (drifting lanterns), paused with the ▮▮ button: clicks on the sky launch nothing and the lanterns stay still; only ▶ resumes', async () => {
+    const g = await h.openGame('fireworks', { query: { level: 3, opening: 0 }, viewport: { width: 1280, height: 800 } });
+    type Paused = LanternGame & { world: { time: number }; pauseShown(): boolean; pausePresses(): { count: number; scale: number } };
+    const game = () =>
+      g.page.evaluate(() => {
+        const w = window.game as unknown as Paused & { paused: boolean; show: { shellCount: number } };
+        return { paused: w.paused, time: w.world.time, shown: w.pauseShown(), shells: w.show.shellCount, presses: w.pausePresses() };
+      });
+    await g.waitFor(() => (window.game as unknown as LanternGame).lanterns().level === 2, null);
+    await g.frames(3);
+    const button = g.page.getByRole('button', { name: 'pause / resume (P)' });
+    await button.click();
+    await g.frames(2);
+    const before = await game();
+    expect(before).toMatchObject({ paused: true, shown: true, shells: 0 });
+    // A player studying where the drifting pair will meet clicks on them to aim: each click is
+    // counted as a press on the paused sky, and none launches or moves the show on.
+    for (const i of [2, 3, 0]) {
+      const p = await lanternOnPage(g, i);
+      await g.page.mouse.click(p.x, p.y);
+      await g.frames(2);
+    }
+    const after = await game();
+    expect(after).toMatchObject({ paused: true, shown: true, shells: 0, time: before.time });
+    expect(after.presses.count).toBe(3);
+    // The button resumes: the lanterns' clock runs on.
+    await button.click();
+    await g.waitFor((t) => (window.game as unknown as Paused).world.time > t + 0.1, before.time);
+    expect((await game()).shown).toBe(false);
     expect(g.errors).toEqual([]);
     await g.close();
   });

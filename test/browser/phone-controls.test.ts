@@ -595,7 +595,9 @@ describe('phone controls', () => {
       }
       return at;
     };
-    let at = await stillCubeAt();
+    const at = await stillCubeAt();
+    // A fixed point of the room (the floor's near left corner) on screen while the touch card shows.
+    const corner0 = await stillPageOf(g, -3, 0, 3);
     const vx0 = await read(g, 'world.components.Velocity.x[window.game.body()]');
     expect(Math.abs(vx0)).toBeLessThan(0.05);
     await g.page.touchscreen.tap(at.x, at.y);
@@ -603,10 +605,14 @@ describe('phone controls', () => {
     await g.frames(2);
     expect(Math.abs(await read(g, 'world.components.Velocity.x[window.game.body()]'))).toBeLessThan(0.05);
     expect(await read(g, 'challenge().moves')).toBe(0);
-    // That first touch sent the touch card away: once it is gone the room takes the strip it kept
-    // (main.ts touchCardSpace) and is drawn lower and larger, so the cube is looked for again.
+    // That first touch sent the touch card away; once it is gone the room is framed as before (it
+    // jumped 36 px down 0.7 s after the first touch, when the strip kept for the card went to it):
+    // the corner within 1 px of where it was, the cube where it was looked for.
     await g.waitFor(() => document.querySelector('[data-hud="touch-hint"]') === null, null);
-    at = await stillCubeAt();
+    const corner1 = await stillPageOf(g, -3, 0, 3);
+    expect(Math.hypot(corner1.x - corner0.x, corner1.y - corner0.y)).toBeLessThan(1);
+    const cubeNow = await stillCubeAt();
+    expect(Math.hypot(cubeNow.x - at.x, cubeNow.y - at.y)).toBeLessThan(1);
     // A drag from the cube to the screen's right (towards +x here): a flick that way, at about J / m = 3 N s / 1 kg.
     await touchPath(
       g.page,

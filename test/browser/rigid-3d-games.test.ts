@@ -200,6 +200,58 @@ describe('3D rigid-body games in headless Chromium', () => {
     await g.close();
   });
 
+  it('wrecking-ball, 1280 x 800: once the ball has left the framing and come back, the camera keeps the wider framing, so the targets hold still while the next swing is aimed', async () => {
+    const g = await h.openGame('wrecking-ball', { viewport: { width: 1280, height: 800 }, query: { shadows: 0 }, readyTimeoutMs: 60_000 });
+    type WB = Game3D & {
+      handles(): { pieces: { body: number; x0: number; z0: number }[]; controls: { goal: [number, number] | null } };
+      cameraTarget(): number[];
+      framing(): number[] | null;
+    };
+    const target = () => g.page.evaluate(() => (window.game as unknown as WB).cameraTarget());
+    const home = await g.page.evaluate(() => (window.game as unknown as WB).framing()!);
+    /** Sends the hook to (x, z), m, and runs until it is there and the ball has about settled. */
+    const hookTo = async (x: number, z: number) => {
+      await g.page.evaluate(
+        ([x, z]) => {
+          (window.game as unknown as WB).handles().controls.goal = [x!, z!];
+        },
+        [x, z],
+      );
+      await g.runUntil(() => (window.game as unknown as WB).handles().controls.goal === null, null, { maxFrames: 2000 });
+    };
+    // The hook to the jib's reach on the side away from the pieces: the ball leaves the site's framing
+    // and the camera widens to take it in.
+    const away = await g.page.evaluate(() => {
+      const ps = (window.game as unknown as WB).handles().pieces;
+      const cx = ps.reduce((a, p) => a + p.x0, 0) / ps.length,
+        cz = ps.reduce((a, p) => a + p.z0, 0) / ps.length,
+        n = Math.hypot(cx, cz) || 1;
+      return [(-10.5 * cx) / n, (-10.5 * cz) / n];
+    });
+    await hookTo(away[0]!, away[1]!);
+    await g.waitFor(
+      (h0) => {
+        const t = (window.game as unknown as WB).cameraTarget();
+        return Math.hypot(t[0]! - h0[0]!, t[1]! - h0[1]!, t[2]! - h0[2]!) > 0.5;
+      },
+      home,
+      30_000,
+    );
+    // Back beside the mast (inside the site's framing), and the camera allowed to settle (it eases by
+    // the page's clock, in about 0.9 s).
+    await hookTo(3, 0);
+    await g.page.waitForTimeout(2000);
+    const widened = await target();
+    // Longer than the 2.5 s the ball once had to stay inside the site's framing for the camera to go
+    // back to it (moving every target on the screen between swings).
+    await g.page.waitForTimeout(5000);
+    const later = await target();
+    expect(Math.hypot(later[0]! - widened[0]!, later[1]! - widened[1]!, later[2]! - widened[2]!)).toBeLessThan(0.05);
+    expect(Math.hypot(later[0]! - home[0]!, later[1]! - home[1]!, later[2]! - home[2]!)).toBeGreaterThan(0.5);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
   describe('wrecking-ball, one page (?shadows=0) for the slew and mast cases', () => {
     const wreckingBall = sharedPage(() => h, 'wrecking-ball', { query: { shadows: 0 }, readyTimeoutMs: 60_000 }, fresh);
 

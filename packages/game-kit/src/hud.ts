@@ -12,6 +12,12 @@ export interface ControlHint {
    * pointer words), and the line hidden for keyboard keys.
    */
   touch?: string;
+  /**
+   * Whether the phone's hint card (the gestures shown over the stage until the first touch) lists
+   * this line. Default true. false for a control the player sees already: a toolbar or on-screen
+   * button ('▮▮ button', 'Jump'), so the card's few lines name the gestures that have no button.
+   */
+  card?: boolean;
 }
 
 /** The gesture shown for `hint` on a touch device, or '' to leave the line out (see ControlHint.touch). */
@@ -94,25 +100,36 @@ function controlLine(tag: 'kbd' | 'b', keys: string, action: string): HTMLElemen
   return line;
 }
 
+/** Most lines on the phone's hint card. */
+const TOUCH_CARD_LINES = 4;
+
+/**
+ * The lines of the phone's hint card, in order: each of `controls` with a touch gesture (see
+ * `touchGesture`) and not declared `card: false`, up to four. Decided by those fields alone, never
+ * by the words of a line.
+ */
+export function touchCardLines(controls: readonly ControlHint[]): { gesture: string; action: string }[] {
+  const out: { gesture: string; action: string }[] = [];
+  for (const c of controls) {
+    const gesture = touchGesture(c);
+    if (gesture !== '' && c.card !== false && out.length < TOUCH_CARD_LINES) out.push({ gesture, action: c.action });
+  }
+  return out;
+}
+
 /** How long the touch hint stays up without input, ms. */
 const TOUCH_HINT_MS = 9000;
 
 /**
  * On a phone the legend sits in a drawer behind the toolbar's menu button, so a first-time player
- * would not see how to play. This shows the game's touch gestures (up to four; not the toolbar's
- * buttons, which are in view) in a card over the bottom of
+ * would not see how to play. This shows the game's touch gestures (up to four; not the lines marked
+ * `card: false`, the buttons in view) in a card over the bottom of
  * the stage that lets touches through and fades at the first touch on the stage or after
  * TOUCH_HINT_MS. Marked `data-scene-overlay`: it is transient, not page furniture covering the scene.
  */
 function showTouchHint(stage: HTMLElement, controls: readonly ControlHint[]): void {
   stage.querySelector('.bp-touch-hint')?.remove();
-  const lines: HTMLElement[] = [];
-  for (const c of controls) {
-    const gesture = touchGesture(c);
-    // The toolbar's own buttons (pause, step, reset) and a game's on-screen buttons are in view already.
-    if (gesture === '' || /\bbuttons?$/i.test(gesture) || gesture.toLowerCase() === c.action.toLowerCase() || lines.length === 4) continue;
-    lines.push(controlLine('b', gesture, c.action));
-  }
+  const lines = touchCardLines(controls).map((c) => controlLine('b', c.gesture, c.action));
   if (lines.length === 0) return;
   const hint = document.createElement('div');
   hint.className = 'bp-touch-hint';

@@ -74,17 +74,24 @@ export interface GameShell extends GameHandle {
 
 /** The built-in legend lines. */
 export const SHELL_CONTROLS: readonly ControlHint[] = Object.freeze([
-  { keys: 'P', action: 'pause / resume', touch: '▮▮ button' },
-  { keys: 'N', action: 'single step (pauses)', touch: '▶▮ button' },
-  { keys: 'R', action: 'reset', touch: 'top ↺ button' },
+  { keys: 'P', action: 'pause / resume', touch: '▮▮ button', card: false },
+  { keys: 'N', action: 'single step (pauses)', touch: '▶▮ button', card: false },
+  { keys: 'R', action: 'reset', touch: 'top ↺ button', card: false },
 ]);
 
-/** SHELL_CONTROLS then `extra`, a line of `extra` with a built-in line's keys in that line's place (see GameShellOptions.controls). */
+/**
+ * SHELL_CONTROLS then `extra`, a line of `extra` with a built-in line's keys in that line's place
+ * (see GameShellOptions.controls); a replacing line without a touch gesture keeps the built-in's
+ * gesture and its `card`.
+ */
 function legendLines(extra: readonly ControlHint[]): ControlHint[] {
   const own = new Map(extra.map((c) => [c.keys, c]));
   const builtIn = SHELL_CONTROLS.map((c) => {
     const mine = own.get(c.keys);
-    return mine ? { ...mine, ...(mine.touch === undefined && c.touch !== undefined ? { touch: c.touch } : {}) } : c;
+    if (!mine) return c;
+    return mine.touch === undefined && c.touch !== undefined
+      ? { ...mine, touch: c.touch, ...(c.card === undefined ? {} : { card: c.card }) }
+      : mine;
   });
   return [...builtIn, ...extra.filter((c) => !SHELL_CONTROLS.some((b) => b.keys === c.keys))];
 }
