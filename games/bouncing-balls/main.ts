@@ -1304,10 +1304,11 @@ const COLUMN_REST_SPEED = 1.5;
 
 /**
  * The ball a press under the box's floor at `x`, m, throws: the top one of the heap's column over it
- * (the highest ball whose width spans x), or, if none spans it, the ball nearest it across; not a ball
- * in flight, fading out or faster than COLUMN_REST_SPEED. 0 when there is none (the heap is empty).
+ * (the highest ball whose width spans x), or, if none spans it, the ball nearest the new basketball's
+ * spot on the floor (`floor`, [x, y], m) that it would overlap; not a ball in flight, fading out or
+ * faster than COLUMN_REST_SPEED. 0 when there is none: the press throws a new basketball from `floor`.
  */
-function columnTop(x: number): number {
+function columnTop(x: number, floor: readonly [number, number]): number {
   const c = shell.world.components,
     P = c.Position,
     V = c.Velocity,
@@ -1315,16 +1316,16 @@ function columnTop(x: number): number {
   let top = 0,
     topY = Number.NEGATIVE_INFINITY,
     near = 0,
-    nearGap = Number.POSITIVE_INFINITY;
+    nearGap = 0;
   for (const e of handles.balls) {
     if (flights.has(e) || fading.has(e)) continue;
     const s = slotOf(e);
     if (V.x[s]! ** 2 + V.y[s]! ** 2 > COLUMN_REST_SPEED ** 2) continue;
-    const gap = Math.abs(P.x[s]! - x) - R[s]!;
-    if (gap <= 0 && P.y[s]! + R[s]! > topY) {
+    if (Math.abs(P.x[s]! - x) < R[s]! && P.y[s]! + R[s]! > topY) {
       top = e;
       topY = P.y[s]! + R[s]!;
     }
+    const gap = Math.hypot(P.x[s]! - floor[0], P.y[s]! - floor[1]) - R[s]! - PLAYER_RADIUS;
     if (gap < nearGap) {
       near = e;
       nearGap = gap;
@@ -1350,9 +1351,12 @@ canvas.addEventListener('pointerdown', (event) => {
   // Under the floor (the stand, room to pull back into): the press throws the top ball of the heap
   // over it, or a new basketball from the floor there when the heap is empty.
   const stand = wy < box.min[1];
-  const onBall = stand ? columnTop(wx) : ballUnder(wx, wy);
-  const floorX = Math.min(box.max[0] - PLAYER_RADIUS, Math.max(box.min[0] + PLAYER_RADIUS, wx));
-  const spot = onBall !== 0 ? null : stand ? startSpot(floorX, box.min[1] + PLAYER_RADIUS + START_CLEARANCE) : startSpot(wx, wy);
+  const floor: [number, number] = [
+    Math.min(box.max[0] - PLAYER_RADIUS, Math.max(box.min[0] + PLAYER_RADIUS, wx)),
+    box.min[1] + PLAYER_RADIUS + START_CLEARANCE,
+  ];
+  const onBall = stand ? columnTop(wx, floor) : ballUnder(wx, wy);
+  const spot = onBall !== 0 ? null : startSpot(...(stand ? floor : ([wx, wy] as const)));
   // Where no ball can start (a ramp's far side) and nothing to pick up: the press does nothing, seen or heard.
   if (onBall === 0 && spot === null && !bodyUnder(wx, wy)) return;
   pressStand = stand;
@@ -2047,7 +2051,7 @@ function drawHoop(): void {
   hoopLayer.stroke({ width: rimW, color: 0xff7a1a, cap: 'round' });
   // Over the backboard, a dot for each basket the hoop stays for (BASKETS_PER_HOOP): gold for those
   // scored here, hollow for those to go before it moves.
-  const pipR = Math.max(4, cam.toScreenLength(0.13)),
+  const pipR = Math.max(5.5, cam.toScreenLength(0.13)),
     pitch = 2.8 * pipR,
     boardX = cam.toScreenX(hoopSegments(spot)[0]![0]),
     pipY = cam.toScreenY(spot.y + BACKBOARD.above) - pipR - 6;
