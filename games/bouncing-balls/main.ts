@@ -642,7 +642,7 @@ function pickGold(world: PhysicsWorld): void {
 /** Picks the gold balls (seeded, so a seed's round is the same). */
 let goldRng = new Rng(1);
 /**
- * Deals the hoop's spots after each basket (hoop.ts nextSpot): made once per page from the seed, not
+ * Deals the hoop's spots as it moves (hoop.ts nextSpot): made once per page from the seed, not
  * per world, so every new round (R, Play again) goes round the hoops in another order, and a page with
  * a given ?seed plays the same rounds in the same order.
  */
