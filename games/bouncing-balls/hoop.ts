@@ -1,9 +1,10 @@
 /**
  * The hoop game on top of the bouncing-balls sandbox: throw balls through a basketball hoop (a
  * backboard and a front rim, both static segments the balls bounce off with the scene's restitution)
- * as many times as you can in `ROUND_SECONDS`; the hoop moves to another spot after each basket
- * (`nextSpot`: the page deals them in a seeded random order, different every round, after the
- * warm-up's hoop at the layout's first spot).
+ * as many times as you can in `ROUND_SECONDS`, each basket after the first adding `TIME_PER_BASKET`
+ * to the clock; the hoop stays where it is for `BASKETS_PER_HOOP` baskets, so a throw that scored
+ * scores again when repeated, then moves to another spot (`nextSpot`: the page deals them in a
+ * seeded random order, different every round, after the warm-up's hoop at the layout's first spot).
  * Pure rules and the hoop's bodies: no DOM, no pixi (it runs in Node for the tests).
  *
  * A basket: the centre of one of the player's balls crosses the rim's line downwards between the
@@ -24,8 +25,21 @@
 import { addSegment, type PhysicsWorld, removeBody } from '@bitphysics/physics';
 import type { DragMode } from './scene';
 
-/** Length of a round, s, counted from the first basket. */
+/** Length of a round, s, counted from the first basket (each basket after it adds TIME_PER_BASKET). */
 export const ROUND_SECONDS = 60;
+
+/**
+ * Seconds each basket after the round's first adds to the clock: a player who has learned a hoop's
+ * throw plays on for as long as the baskets keep coming faster than this.
+ */
+export const TIME_PER_BASKET = 3;
+
+/**
+ * Baskets the hoop stays for before it moves to its next spot (a round's default, createRound): the
+ * throw that scored once scores again when repeated, so a hoop is learned and then cashed in, and
+ * the round still goes round the court.
+ */
+export const BASKETS_PER_HOOP = 3;
 
 /** Radius of the player's balls, m (fixed, so every shot is the same ball whatever the sandbox's ball count). */
 export const PLAYER_RADIUS = 0.4;
@@ -274,10 +288,16 @@ export interface HoopRound {
   tricks: number;
   /** Length of the round, s. */
   readonly seconds: number;
-  /** Seconds left on the clock, in [0, seconds]. */
+  /** Seconds left on the clock, >= 0: `seconds` when the clock starts, less as it runs, TIME_PER_BASKET more a basket after the first. */
   timeLeft: number;
-  /** Index of the hoop's spot in the layout's spots (moves with each basket: `nextSpot`). */
+  /** Index of the hoop's spot in the layout's spots (moves after every `perHoop` baskets: `nextSpot`). */
   spot: number;
+  /** Baskets the hoop stays for before it moves, integer >= 1. */
+  readonly perHoop: number;
+  /** Baskets scored at the hoop's current spot, in [0, perHoop). */
+  atHoop: number;
+  /** Whether the last basket moved the hoop (false before the first). */
+  lastMoved: boolean;
   /** The spots still to come in this pass through the layout's spots, in order (`nextSpot` deals them; empty before the first basket). */
   upcoming: number[];
   /** Balls the player threw this round: in the warm-up all of them; from the first basket on, that basket's throw and those after it. */
@@ -286,12 +306,14 @@ export interface HoopRound {
 
 /**
  * A new round of `seconds` s (default ROUND_SECONDS), warming up until the first basket, its hoop at
- * spot index `spot` (default 0).
- * @throws RangeError unless seconds is finite and > 0, or if spot is not an integer >= 0.
+ * spot index `spot` (default 0), moving after every `perHoop` baskets (default BASKETS_PER_HOOP).
+ * @throws RangeError unless seconds is finite and > 0, or if spot is not an integer >= 0 or perHoop
+ * not an integer >= 1.
  */
-export function createRound(seconds = ROUND_SECONDS, spot = 0): HoopRound {
+export function createRound(seconds = ROUND_SECONDS, spot = 0, perHoop = BASKETS_PER_HOOP): HoopRound {
   if (!(seconds > 0 && Number.isFinite(seconds))) throw new RangeError(`createRound: seconds must be finite and > 0, got ${seconds}`);
   if (!(Number.isInteger(spot) && spot >= 0)) throw new RangeError(`createRound: spot must be an integer >= 0, got ${spot}`);
+  if (!(Number.isInteger(perHoop) && perHoop >= 1)) throw new RangeError(`createRound: perHoop must be an integer >= 1, got ${perHoop}`);
   return {
     phase: 'ready',
     score: 0,
@@ -305,6 +327,9 @@ export function createRound(seconds = ROUND_SECONDS, spot = 0): HoopRound {
     seconds,
     timeLeft: seconds,
     spot,
+    perHoop,
+    atHoop: 0,
+    lastMoved: false,
     upcoming: [],
     shots: 0,
   };
@@ -360,10 +385,11 @@ export function roundTick(round: HoopRound, dt: number): boolean {
 
 /**
  * A basket with a ball of `kind` that went in `style`: BALL_POINTS[kind] plus SHOT_BONUS[style], times
- * the streak's multiplier (streakMultiplier of the baskets in a row before it), the streak grows and
- * the hoop moves to its next spot of `spotCount` (`nextSpot`: in turn, or dealt at random by `random`,
- * numbers in [0, 1)); the first one starts the clock and restarts the shot count at its own throw.
- * Ignored once time is up. @returns whether it counted (the points it made are in `lastPoints`).
+ * the streak's multiplier (streakMultiplier of the baskets in a row before it), the streak grows, and
+ * on the round's `perHoop`-th basket at this hoop the hoop moves to its next spot of `spotCount`
+ * (`nextSpot`: in turn, or dealt at random by `random`, numbers in [0, 1); `lastMoved` says whether it
+ * did). The first basket starts the clock and restarts the shot count at its own throw; each one after
+ * it adds TIME_PER_BASKET s to the clock. Ignored once time is up. @returns whether it counted (the points it made are in `lastPoints`).
  * @throws RangeError if spotCount is not a positive integer, kind is not a key of BALL_POINTS or style
  * not one of SHOT_BONUS.
  */
@@ -379,8 +405,9 @@ export function roundBasket(
   if (!Object.hasOwn(BALL_POINTS, kind)) throw new RangeError(`roundBasket: kind must be basketball, heap or gold, got ${kind}`);
   if (!Object.hasOwn(SHOT_BONUS, style)) throw new RangeError(`roundBasket: style must be plain, swish or trick, got ${style}`);
   if (round.phase === 'over') return false;
-  // The clock starts now: of the warm-up's throws only this one counts.
+  // The clock starts now: of the warm-up's throws only this one counts. Later baskets buy time.
   if (round.phase === 'ready') round.shots = 1;
+  else round.timeLeft += TIME_PER_BASKET;
   round.phase = 'playing';
   round.score++;
   round.lastPoints = (BALL_POINTS[kind] + SHOT_BONUS[style]) * streakMultiplier(round.streak);
@@ -390,7 +417,12 @@ export function roundBasket(
   round.points += round.lastPoints;
   round.streak++;
   round.bestStreak = Math.max(round.bestStreak, round.streak);
-  round.spot = nextSpot(round, spotCount, random);
+  round.atHoop++;
+  round.lastMoved = round.atHoop >= round.perHoop;
+  if (round.lastMoved) {
+    round.atHoop = 0;
+    round.spot = nextSpot(round, spotCount, random);
+  }
   return true;
 }
 

@@ -2,8 +2,10 @@
  * Bouncing balls: the book's bouncing balls grown up. Balls of different sizes and masses fall,
  * bounce off the box, the inclined walls (and their end points) and each other.
  *
- * The game on top (./hoop.ts): throw balls through the hoop for points in 60 s; the hoop moves after
- * each basket, the clock starts with the first basket (a warm-up until then). The heap matters: a
+ * The game on top (./hoop.ts): throw balls through the hoop for points in 60 s, each basket after the
+ * first giving 3 s back (TIME_PER_BASKET); the hoop stays for 3 baskets (BASKETS_PER_HOOP, dots over
+ * its board count them), so a throw that scored scores again, then moves; the clock starts with the
+ * first basket (a warm-up until then). The heap matters: a
  * pull that starts on one of its balls throws that ball, worth 2 (hoop.ts BALL_POINTS), and one of
  * them is gold (a halo, worth 5; a new one after it scores); a pull from empty space throws a new
  * basketball, worth 1. A swish (touching nothing on its way) adds 1, a trick shot off a side wall, the floor
@@ -17,7 +19,8 @@
  * row above the box says the goal and shows points, the next basket's multiplier, time and best.
  *
  * Input: a click drops a ball at the pointer, and a pull throws one slingshot-style from where the
- * press began, on a ball or not (opposite to
+ * press began, on a ball or not; a pull from under the floor (the court's stand) throws the top ball
+ * of the heap over it (columnTop; opposite to
  * the pull, faster the longer it is, hoop.ts slingVelocity: the height it reaches grows evenly over
  * the second half of the pull), with a power gauge round the ball and a dotted arc of its flight
  * while pulling (hoop.ts throwPath: over its top and down to just above the rim's height, arcSeconds;
@@ -35,8 +38,8 @@
  * throws, so a press on the pile throws unless the pickup is meant. The band from the ball to the
  * pointer warms from white to gold to red with the pull's power; a release snaps and whooshes (louder
  * the faster) and a ring bursts from the ball. A basket is celebrated: a swish
- * and a rising chord, confetti from the rim (kept inside the court), "+1" and the old hoop glowing out as the new one is
- * ringed, and the status row's score bumps. Knocks: the loudest few collisions a step (knocks.ts), so
+ * and a rising chord, confetti from the rim (kept inside the court), "+1" and the hoop glowing out (the
+ * new one ringed when it moved), and the status row's score bumps. Knocks: the loudest few collisions a step (knocks.ts), so
  * a pile does not roar. When time is up, the Play-again button floats at the top of the box,
  * clear of the balls piled at its bottom.
  *
@@ -114,6 +117,7 @@ import {
   type ShotStyle,
   slingVelocity,
   streakMultiplier,
+  TIME_PER_BASKET,
   throwPath,
 } from './hoop';
 import { createKnockLimiter, KNOCK_LIMITS } from './knocks';
@@ -224,11 +228,22 @@ function beatBest(): boolean {
  * The last basket, for its celebration: where it went in (the rim's centre, m), the world time it was
  * scored (s), the hoop's spot it went through (an index of hoopSpots) and the score it made.
  */
-let lastBasket: { x: number; y: number; time: number; spot: number; score: number; points: number; kind: BallKind; style: ShotStyle } = {
+let lastBasket: {
+  x: number;
+  y: number;
+  time: number;
+  spot: number;
+  moved: boolean;
+  score: number;
+  points: number;
+  kind: BallKind;
+  style: ShotStyle;
+} = {
   x: 0,
   y: 0,
   time: -10,
   spot: 0,
+  moved: false,
   score: 0,
   points: 0,
   kind: 'basketball',
@@ -266,7 +281,7 @@ function createWorld(): PhysicsWorld {
   lastCall = { aiming: false, ball: 0 };
   ruleHint = '';
   lastThrown = 0;
-  lastBasket = { x: 0, y: 0, time: -10, spot: 0, score: 0, points: 0, kind: 'basketball', style: 'plain' };
+  lastBasket = { x: 0, y: 0, time: -10, spot: 0, moved: false, score: 0, points: 0, kind: 'basketball', style: 'plain' };
   hoopIds = addHoop(world, hoopSpots(TALL)[round.spot]!, params.restitution, params.friction);
   leaving = new Map();
   addSystem(world, 'integrate', keepLeavingFree);
@@ -627,7 +642,7 @@ function pickGold(world: PhysicsWorld): void {
 /** Picks the gold balls (seeded, so a seed's round is the same). */
 let goldRng = new Rng(1);
 /**
- * Deals the hoop's spots after each basket (hoop.ts nextSpot): made once per page from the seed, not
+ * Deals the hoop's spots as it moves (hoop.ts nextSpot): made once per page from the seed, not
  * per world, so every new round (R, Play again) goes round the hoops in another order, and a page with
  * a given ?seed plays the same rounds in the same order.
  */
@@ -637,7 +652,8 @@ const hoopRandom = (): number => hoopOrder.next();
 
 /**
  * The hoop game after a step: a thrown ball whose centre went down through the hoop's opening is a
- * basket (the ball is taken out, the hoop moves on; the gold ball goes to another heap ball); a
+ * basket (the ball is taken out, the hoop moves on after every BASKETS_PER_HOOP of them; the gold
+ * ball goes to another heap ball); a
  * thrown ball still out MISS_SECONDS after its throw is a miss, which ends the streak; then the clock
  * runs. Keeps the best score.
  */
@@ -667,6 +683,7 @@ function playHoop(world: PhysicsWorld): void {
         y: opening.y,
         time: world.time,
         spot: wasSpot,
+        moved: round.spot !== wasSpot,
         score: round.score,
         points: round.lastPoints,
         kind: b.kind,
@@ -676,9 +693,12 @@ function playHoop(world: PhysicsWorld): void {
       basketballs.delete(e);
       removeBall(world, handles, e);
       if (e === goldBall) pickGold(world);
-      removeHoop(world, hoopIds);
-      hoopIds = addHoop(world, spots[round.spot]!, handles.params.restitution, handles.params.friction);
-      opening = hoopOpening(spots[round.spot]!);
+      // The hoop stays for BASKETS_PER_HOOP baskets (hoop.ts roundBasket), then moves.
+      if (round.spot !== wasSpot) {
+        removeHoop(world, hoopIds);
+        hoopIds = addHoop(world, spots[round.spot]!, handles.params.restitution, handles.params.friction);
+        opening = hoopOpening(spots[round.spot]!);
+      }
       cheer(round.score, b.kind);
       keepBest();
       continue;
@@ -911,6 +931,9 @@ function stepWorld(world: PhysicsWorld): void {
   }
 }
 
+/** Whether the page is played by touch (a phone): its help and hints are worded for a finger. */
+const TOUCH_UI = pageLayout().touch();
+
 /** The pause overlay (game-kit's): paused, the play area dims and says "Paused" and how to resume, as the other games do. */
 const pause = createPauseOverlay();
 
@@ -920,9 +943,21 @@ const game = await startPixiGame({
   step: stepWorld,
   bodies: () => handles.balls.length,
   controls: [
-    { keys: 'Drag', action: 'press anywhere, pull back, let go: throw (pressed on a heap ball, that ball flies)' },
-    { keys: 'Click', action: 'drop a ball' },
-    { keys: 'Hold on a ball', touch: 'Hold on a ball', action: 'hold still 1 s: pick it (or a crate) up and carry it' },
+    ...(TOUCH_UI
+      ? // The phone's card (under the floor, game-kit's touch hint) has a line for each: short ones.
+        [
+          { keys: 'Drag', action: 'pull back, let go: throw (from a ball: that ball)' },
+          { keys: 'Click', action: 'drop a ball' },
+          { keys: 'Hold', touch: 'Hold', action: 'still 1 s on a ball: carry it' },
+        ]
+      : [
+          {
+            keys: 'Drag',
+            action: 'press, pull back, let go: throw. On a ball: that ball flies; under the floor: the top ball above',
+          },
+          { keys: 'Click', action: 'drop a ball' },
+          { keys: 'Hold', action: 'still 1 s on a ball or crate: pick it up and carry it' },
+        ]),
     { keys: 'R', action: 'new round' },
     { keys: 'T', action: 'trails on / off' },
     { keys: 'D', action: 'debug: velocities, contacts' },
@@ -1198,8 +1233,8 @@ const START_CLEARANCE = 0.02;
 /**
  * Where a new basketball pressed at (x, y), m, starts, m: the press point, moved off a ramp, the
  * backboard or the rim it would overlap (straight out from it, on the press's side) and in from the
- * box's walls; null where no ball can start: outside the box (the stand under its floor is room to
- * pull a throw back into, not to start one) or where moving it off one wall puts it into another.
+ * box's walls; null where no ball can start: outside the box (a press under its floor is given a
+ * spot on the floor by the pointer handler) or where moving it off one wall puts it into another.
  * A press there starts nothing: a ball dropped in the box's corner or pushed off a ramp by the
  * solver, never thrown, would read as a broken throw.
  */
@@ -1264,6 +1299,46 @@ function ballUnder(x: number, y: number): number {
   return best;
 }
 
+/** Balls faster than this, m/s, are not the top of their column for a press under the floor (columnTop): a ball falling through it is no ball of the heap. */
+const COLUMN_REST_SPEED = 1.5;
+
+/**
+ * The ball a press under the box's floor at `x`, m, throws: the top one of the heap's column over it
+ * (the highest ball whose width spans x), or, if none spans it, the ball nearest the new basketball's
+ * spot on the floor (`floor`, [x, y], m) that it would overlap; not a ball in flight, fading out or
+ * faster than COLUMN_REST_SPEED. 0 when there is none: the press throws a new basketball from `floor`.
+ */
+function columnTop(x: number, floor: readonly [number, number]): number {
+  const c = shell.world.components,
+    P = c.Position,
+    V = c.Velocity,
+    R = c.Ball.radius;
+  let top = 0,
+    topY = Number.NEGATIVE_INFINITY,
+    near = 0,
+    nearGap = 0;
+  for (const e of handles.balls) {
+    if (flights.has(e) || fading.has(e)) continue;
+    const s = slotOf(e);
+    if (V.x[s]! ** 2 + V.y[s]! ** 2 > COLUMN_REST_SPEED ** 2) continue;
+    if (Math.abs(P.x[s]! - x) < R[s]! && P.y[s]! + R[s]! > topY) {
+      top = e;
+      topY = P.y[s]! + R[s]!;
+    }
+    const gap = Math.hypot(P.x[s]! - floor[0], P.y[s]! - floor[1]) - R[s]! - PLAYER_RADIUS;
+    if (gap < nearGap) {
+      near = e;
+      nearGap = gap;
+    }
+  }
+  return top || near;
+}
+
+/** Whether the current press began under the box's floor (on the court's stand): it throws the ball over it (columnTop); a tap there does nothing. */
+let pressStand = false;
+/** When a tap on the stand was let go (performance.now() ms; its hint shows HOOP_TAP_SHOWN ms), or -Infinity. */
+let standTapAt = Number.NEGATIVE_INFINITY;
+
 canvas.addEventListener('pointerdown', (event) => {
   // (On a small screen a press on the field also closes an open drawer: game-kit's page layout.)
   if (grabbing || event.button !== 0 || pointerId !== -1 || drag.joint !== 0) return;
@@ -1272,11 +1347,19 @@ canvas.addEventListener('pointerdown', (event) => {
   const [px, py] = local(event);
   const wx = renderer.camera.toWorldX(px),
     wy = renderer.camera.toWorldY(py);
-  const onBall = ballUnder(wx, wy);
-  const spot = onBall === 0 ? startSpot(wx, wy) : null;
-  // Where no ball can start (the stand under the floor, a ramp's far side) and nothing to pick up:
-  // the press does nothing, seen or heard.
+  const { box } = layoutOf(TALL);
+  // Under the floor (the stand, room to pull back into): the press throws the top ball of the heap
+  // over it, or a new basketball from the floor there when the heap is empty.
+  const stand = wy < box.min[1];
+  const floor: [number, number] = [
+    Math.min(box.max[0] - PLAYER_RADIUS, Math.max(box.min[0] + PLAYER_RADIUS, wx)),
+    box.min[1] + PLAYER_RADIUS + START_CLEARANCE,
+  ];
+  const onBall = stand ? columnTop(wx, floor) : ballUnder(wx, wy);
+  const spot = onBall !== 0 ? null : startSpot(...(stand ? floor : ([wx, wy] as const)));
+  // Where no ball can start (a ramp's far side) and nothing to pick up: the press does nothing, seen or heard.
   if (onBall === 0 && spot === null && !bodyUnder(wx, wy)) return;
+  pressStand = stand;
   pressSpot = spot ?? [wx, wy];
   pressAt = [wx, wy];
   pointerId = event.pointerId;
@@ -1366,8 +1449,10 @@ function release(event: PointerEvent, cancelled: boolean): void {
   if (cancel) return;
   if (!dragged) {
     // A tap on the hoop: the hoop is the goal, not a place to drop a ball (one dropped there fell
-    // into the net, dead): nothing drops, and the hint says how to score.
-    if (ball === 0 && onHoop(pressAt[0], pressAt[1])) hoopTapAt = performance.now();
+    // into the net, dead): nothing drops, and the hint says how to score. A tap under the floor
+    // drops nothing either (no ball can be there): the hint says what a pull from there does.
+    if (pressStand) standTapAt = performance.now();
+    else if (ball === 0 && onHoop(pressAt[0], pressAt[1])) hoopTapAt = performance.now();
     else shoot(pressSpot[0], pressSpot[1], 0, 0, false);
   } else if (ball !== 0 && handles.balls.includes(ball)) {
     // A buried ball with no room over it is not thrown (its pull said so: drawPointer).
@@ -1660,6 +1745,26 @@ function drawPointer(): void {
     return;
   }
   const r = cam.toScreenLength(PLAYER_RADIUS);
+  if (!dragged && pressStand) {
+    // Pressed under the floor: the ball it throws ringed (the top of the heap over the press, or the
+    // new basketball's spot on the floor), a dashed line down to the press, and what to do.
+    const t = currentThrow();
+    const bx = cam.toScreenX(t.x),
+      by = cam.toScreenY(t.y),
+      br = cam.toScreenLength(t.radius);
+    if (pressBall === 0) overlay.circle(bx, by, br).fill({ color: PLAYER_COLOR, alpha: 0.85 });
+    overlay.circle(bx, by, br + 4).stroke({ width: 3, color: 0xffffff, alpha: 0.9 });
+    const len = Math.hypot(startX - bx, startY - by);
+    for (let d = br + 6; d < len - 4; d += 10) {
+      const f = d / len,
+        g = Math.min(len - 4, d + 5) / len;
+      overlay.moveTo(bx + f * (startX - bx), by + f * (startY - by)).lineTo(bx + g * (startX - bx), by + g * (startY - by));
+    }
+    overlay.stroke({ width: 2, color: 0xffffff, alpha: 0.6 });
+    overlay.circle(startX, startY, 6).fill({ color: 0xffffff, alpha: 0.7 });
+    showHoldLabel('pull back to throw this ball', bx, by - br - 10);
+    return;
+  }
   if (!dragged) {
     overlay.circle(startX, startY, r).stroke({ width: 2, color: 0xffffff, alpha: 0.6 });
     // Held still on a ball or crate: after HOLD_RING_MS a ring fills, picking it up when full (a
@@ -1896,7 +2001,8 @@ let lastThrown = 0;
  * Draws the hoop each frame: the backboard (a plain white board, on a bracket
  * from the box's side), the net under the rim (strings from the rim to its narrower bottom, crossed
  * into diamonds), the orange rim across the opening, the shot line at rim height (balls released
- * below it may score) and a basket's pop.
+ * below it may score), the dots over the board counting the baskets before the hoop moves, and a
+ * basket's pop.
  */
 function drawHoop(): void {
   const cam = renderer.camera;
@@ -1943,6 +2049,17 @@ function drawHoop(): void {
   hoopLayer.stroke({ width: rimW + 2, color: 0x7a2e05, cap: 'round' });
   line([L - HOOP_RADIUS, o.y], [R + HOOP_RADIUS, o.y]);
   hoopLayer.stroke({ width: rimW, color: 0xff7a1a, cap: 'round' });
+  // Over the backboard, a dot for each basket the hoop stays for (BASKETS_PER_HOOP): gold for those
+  // scored here, hollow for those to go before it moves.
+  const pipR = Math.max(5.5, cam.toScreenLength(0.13)),
+    pitch = 2.8 * pipR,
+    boardX = cam.toScreenX(hoopSegments(spot)[0]![0]),
+    pipY = cam.toScreenY(spot.y + BACKBOARD.above) - pipR - 6;
+  for (let i = 0; i < round.perHoop; i++) {
+    const px = boardX + (i - (round.perHoop - 1) / 2) * pitch;
+    if (i < round.atHoop) hoopLayer.circle(px, pipY, pipR).fill({ color: GOLD_COLOR }).stroke({ width: 1.5, color: 0x3a1a02 });
+    else hoopLayer.circle(px, pipY, pipR - 0.75).stroke({ width: 1.5, color: 0xf4f6fb, alpha: 0.8 });
+  }
   drawCelebration(world.time - lastBasket.time);
   updateStatus();
   placeTouchHint();
@@ -1950,9 +2067,9 @@ function drawHoop(): void {
 
 /**
  * A basket's celebration, `age` s (world time) after it (nothing outside [0, CELEBRATE_SECONDS)): the
- * hoop it went through glows gold and fades where it was (the hoop has moved on), a gold ring widens
- * from the rim, confetti flies up from it and falls under gravity, a big "+1" and a word of praise
- * rise over it, and a ring closes in on the new hoop so the eye finds it. All of it is kept inside
+ * hoop it went through glows gold and fades where it was, a gold ring widens from the rim, confetti
+ * flies up from it and falls under gravity, a big "+1" and a word of praise rise over it, and, when
+ * the hoop moved, a ring closes in on the new hoop so the eye finds it. All of it is kept inside
  * the court (courtMask; the words are moved in).
  */
 function drawCelebration(age: number): void {
@@ -2019,8 +2136,8 @@ function drawCelebration(age: number): void {
       ])
       .fill({ color: c.color, alpha: fade });
   }
-  // The new hoop: a ring closing in on its rim between 0.3 s and 1.3 s.
-  if (age > 0.3 && age < 1.3) {
+  // A hoop that moved: a ring closing in on the new rim between 0.3 s and 1.3 s, so the eye finds it.
+  if (lastBasket.moved && age > 0.3 && age < 1.3) {
     const k = (age - 0.3) / 1;
     const o = hoopOpening(hoopSpots(TALL)[round.spot]!);
     confetti
@@ -2086,6 +2203,9 @@ const standLabel = new Text({
 });
 standLabel.anchor.set(0.5);
 standLabel.visible = false;
+/** Whether the stand under the floor is tall enough for its label (drawCourt), and its top, CSS px on the canvas. */
+let standRoom = false,
+  standTop = 0;
 app.stage.addChildAt(standLabel, 1);
 /** The backboard's bracket, on the wall under the balls (drawBackboard). */
 const bracketLayer = new Graphics({ label: 'hoop-bracket' });
@@ -2139,7 +2259,9 @@ function drawCourt(): void {
     court.rect(x0 - w, base, x1 - x0 + 2 * w, cam.height - base).fill(0x262c37);
     court.rect(x0 - w, base, x1 - x0 + 2 * w, 3).fill(0x5b6577);
   }
-  standLabel.visible = cam.height - base > 48;
+  standRoom = cam.height - base > 48;
+  standTop = base;
+  standLabel.visible = standRoom;
   standLabel.position.set((x0 + x1) / 2, (base + cam.height) / 2);
   // The ramps: wooden beams with a lighter top edge, round ends.
   for (const [ax, ay, bx, by] of segments) {
@@ -2207,20 +2329,31 @@ function drawBasketballs(alpha: number, world: PhysicsWorld): void {
 }
 
 const status = createStatusRow({ name: 'hoop' });
-const touch = pageLayout().touch();
+const touch = TOUCH_UI;
 // On a phone game-kit's touch hint card sits over the bottom of the stage: the floor, where the balls
-// pile and a throw starts. Here it goes just under the top of the box instead, empty once the starting
-// balls have fallen (it fades at the first touch anyway); placed each frame while it shows, as the
-// status row above the box may still move the canvas.
+// pile and a throw starts; under the box's top it covered the hoop and the arcs to it. Here it goes
+// on the court's stand under the floor, in smaller type (one line a gesture: TOUCH_UI's controls),
+// so the whole box shows while it does (it fades at the first touch anyway; the stand's own label
+// waits under it). Placed each frame while it shows, as the status row above the box may still move
+// the canvas.
 const touchHint = document.querySelector<HTMLElement>('[data-hud="touch-hint"]');
-/** Keeps the touch hint card 10 px under the top of the box (while it is on the page). */
-function placeTouchHint(): void {
-  if (!touchHint?.isConnected || !touchHint.offsetParent) return;
-  const top = canvas.getBoundingClientRect().top - touchHint.offsetParent.getBoundingClientRect().top;
-  touchHint.style.bottom = 'auto';
-  touchHint.style.top = `${Math.round(top + renderer.camera.toScreenY(layoutOf(TALL).box.max[1]) + 10)}px`;
+if (touchHint) {
+  touchHint.style.fontSize = '13px';
+  touchHint.style.lineHeight = '1.35';
+  touchHint.style.padding = '6px 10px';
 }
-placeTouchHint();
+/** Keeps the touch hint card in the middle of the stand under the floor, or its foot 4 px over the canvas's foot if the stand is lower than the card (while it is on the page). */
+function placeTouchHint(): void {
+  const shown = !!touchHint?.isConnected && !!touchHint.offsetParent;
+  standLabel.visible = standRoom && !shown;
+  if (!shown) return;
+  const top = canvas.getBoundingClientRect().top - touchHint!.offsetParent!.getBoundingClientRect().top;
+  const h = touchHint!.offsetHeight,
+    foot = renderer.camera.height;
+  const y = Math.min(foot - 4 - h, 0.5 * (standTop + foot) - 0.5 * h);
+  touchHint!.style.bottom = 'auto';
+  touchHint!.style.top = `${Math.round(top + y)}px`;
+}
 
 /**
  * Room to pull back into under the wide box's floor on a desktop, m: a pull from a heap ball lying on the
@@ -2290,42 +2423,46 @@ function updateStatus(): void {
       : lastCall.ball !== 0
         ? 'Last throw…'
         : cheering
-          ? `${praiseFor(lastBasket)} +${lastBasket.points} · the hoop moved`
+          ? `${praiseFor(lastBasket)} +${lastBasket.points} · ${lastBasket.score === 1 ? 'the clock runs' : `+${TIME_PER_BASKET} s`}${lastBasket.moved ? ' · the hoop moved' : ''}`
           : round.phase === 'ready'
             ? `Score once to start the ${round.seconds} s clock`
             : round.streak > 0
               ? `${round.streak} in a row: the next basket scores ×${streakMultiplier(round.streak)}`
-              : 'Throw balls through the hoop!';
+              : `${plural(round.perHoop - round.atHoop, 'basket', 'baskets')} here, then the hoop moves`;
   const numbers = `Points ${round.points} · ×${streakMultiplier(round.streak)} · Time ${secs} s · Best ${best}`;
   // The last throw's rule break (ruleHint) stays until the next throw; otherwise, while playing, the
   // hint takes turns (5 s each) between the heap's balls, the streak and the bonus shots.
-  const turn = Math.floor(shell.world.time / 5) % 3;
+  const turn = Math.floor(shell.world.time / 5) % 4;
   const teach =
-    turn === 0
-      ? touch
-        ? `Pull a heap ball back to throw it: ${BALL_POINTS.heap} points, gold ${BALL_POINTS.gold}`
-        : `Press on a heap ball and pull back to throw it: ${BALL_POINTS.heap} points, the gold one ${BALL_POINTS.gold}`
-      : turn === 1
-        ? 'Baskets in a row multiply, up to ×4; a miss ends it'
-        : touch
-          ? `Swish +${SHOT_BONUS.swish} · off a wall or ramp +${SHOT_BONUS.trick}`
-          : `Bonus: a swish (touching nothing) +${SHOT_BONUS.swish}, a trick shot off a wall or ramp +${SHOT_BONUS.trick}`;
+    turn === 3
+      ? `Each basket +${TIME_PER_BASKET} s · the hoop moves after ${round.perHoop}`
+      : turn === 0
+        ? touch
+          ? `Pull a heap ball back to throw it: ${BALL_POINTS.heap} points, gold ${BALL_POINTS.gold}`
+          : `Press on a heap ball and pull back to throw it: ${BALL_POINTS.heap} points, the gold one ${BALL_POINTS.gold}`
+        : turn === 1
+          ? 'Baskets in a row multiply, up to ×4; a miss ends it'
+          : touch
+            ? `Swish +${SHOT_BONUS.swish} · off a wall or ramp +${SHOT_BONUS.trick}`
+            : `Bonus: a swish (touching nothing) +${SHOT_BONUS.swish}, a trick shot off a wall or ramp +${SHOT_BONUS.trick}`;
   const hint = over
     ? `${touch ? 'Tap' : 'R or'} Play again for a new round`
     : performance.now() - missAt < 2500
       ? 'Missed: the streak is over'
       : performance.now() - hoopTapAt < HOOP_TAP_SHOWN
         ? 'Throw into the hoop from below the orange line'
-        : ruleHint === 'high'
-          ? 'Too high: throw from below the orange line to score'
-          : ruleHint === 'below'
-            ? `Up through the net does not count${touch ? '' : ': drop it in from above'}`
-            : round.phase === 'ready' && round.shots === 0
-              ? // One line on a phone too (a second line there moved the box down the moment it changed), so the phone's is shorter.
-                touch
-                ? 'Throw through the hoop from below the orange line'
-                : 'Press, drag back and let go to throw through the hoop from below the orange line'
-              : teach;
+        : performance.now() - standTapAt < HOOP_TAP_SHOWN
+          ? 'Press here and pull back to throw the ball above'
+          : ruleHint === 'high'
+            ? 'Too high: throw from below the orange line to score'
+            : ruleHint === 'below'
+              ? `Up through the net does not count${touch ? '' : ': drop it in from above'}`
+              : round.phase === 'ready' && round.shots === 0
+                ? // One line on a phone too (a second line there moved the box down the moment it changed), so the phone's is shorter.
+                  touch
+                  ? 'Throw through the hoop from below the orange line'
+                  : 'Press, drag back and let go to throw through the hoop from below the orange line'
+                : teach;
   if (status.set({ goal, numbers, hint }, over)) setAction(over);
   // The last HURRY_SECONDS: the numbers line turns red.
   status.numbers.classList.toggle('bb-hurry', round.phase === 'playing' && round.timeLeft <= HURRY_SECONDS);
@@ -2426,12 +2563,9 @@ function drawEndCard(over: boolean): void {
   const cam = renderer.camera;
   const { box } = layoutOf(TALL);
   const newBest = beatBest();
-  // A first scoring round has no best to beat: it is said plainly, not cheered as a record.
-  const bestLine = newBest
-    ? `a new best (was ${bestBefore})!`
-    : bestBefore === 0 && round.points > 0
-      ? 'your first score to beat'
-      : `best ${best}`;
+  // A first scoring round has no best to beat: it is said plainly, not cheered as a record. A line
+  // of its own, short enough not to wrap on a phone.
+  const bestLine = newBest ? `Your old best was ${bestBefore}` : bestBefore === 0 && round.points > 0 ? 'Now beat that!' : `Best ${best}`;
   const tip =
     round.bestStreak < 3
       ? 'Tip: baskets in a row multiply points'
@@ -2439,7 +2573,7 @@ function drawEndCard(over: boolean): void {
         ? `Tip: a trick shot off a wall or a ramp scores +${SHOT_BONUS.trick}`
         : round.score < 6
           ? `Tip: the gold ball is worth ${BALL_POINTS.gold}`
-          : 'Can you beat it?';
+          : `Tip: each basket after the first gives ${TIME_PER_BASKET} s back`;
   const bonus =
     round.swishes + round.tricks > 0
       ? [`${plural(round.swishes, 'swish', 'swishes')} · ${plural(round.tricks, 'trick shot', 'trick shots')}`]
@@ -2452,7 +2586,8 @@ function drawEndCard(over: boolean): void {
       big: plural(round.points, 'point', 'points'),
       lines: [
         `${plural(round.score, 'basket', 'baskets')} from ${plural(round.shots, 'throw', 'throws')}`,
-        `Longest streak ${round.bestStreak} · ${bestLine}`,
+        `Longest streak ${round.bestStreak}`,
+        bestLine,
         ...bonus,
         tip,
       ],

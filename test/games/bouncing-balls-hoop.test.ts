@@ -8,6 +8,7 @@ import { describe, expect, it } from 'vitest';
 import {
   addHoop,
   BALL_POINTS,
+  BASKETS_PER_HOOP,
   createRound,
   HOOP_HALF_WIDTH,
   HOOP_SPOTS,
@@ -33,6 +34,7 @@ import {
   slingPull,
   slingVelocity,
   streakMultiplier,
+  TIME_PER_BASKET,
   throwPath,
 } from '../../games/bouncing-balls/hoop';
 import { cleanBasket, findBasket, hoopFits, naturalStarts, type Throw } from '../../games/bouncing-balls/reach';
@@ -92,7 +94,7 @@ describe('hoop layout', () => {
 
 describe('hoop round', () => {
   it('warms up until the first basket, which starts the clock; scores until time is up, and ends at 0 s', () => {
-    const r = createRound();
+    const r = createRound(ROUND_SECONDS, 0, 1);
     expect(r.phase).toBe('ready');
     roundShot(r);
     roundShot(r);
@@ -101,11 +103,13 @@ describe('hoop round', () => {
     expect(r).toMatchObject({ phase: 'ready', shots: 2, timeLeft: ROUND_SECONDS });
     expect(roundBasket(r, 5)).toBe(true);
     // The warm-up's misses are not counted: the first basket's throw is the round's first.
-    expect(r).toMatchObject({ phase: 'playing', score: 1, spot: 1, shots: 1 });
+    expect(r).toMatchObject({ phase: 'playing', score: 1, spot: 1, shots: 1, timeLeft: ROUND_SECONDS });
     roundShot(r);
     for (let k = 0; k < 4; k++) roundBasket(r, 5);
     expect(r.spot).toBe(0); // cycled through the 5 spots
-    expect(roundTick(r, ROUND_SECONDS - 1)).toBe(false);
+    // Each of the four baskets after the first gave TIME_PER_BASKET back.
+    expect(r.timeLeft).toBe(ROUND_SECONDS + 4 * TIME_PER_BASKET);
+    expect(roundTick(r, ROUND_SECONDS + 4 * TIME_PER_BASKET - 1)).toBe(false);
     expect(r.timeLeft).toBeCloseTo(1, 12);
     expect(roundTick(r, 2)).toBe(true);
     expect(r).toMatchObject({ phase: 'over', timeLeft: 0, score: 5 });
@@ -113,6 +117,30 @@ describe('hoop round', () => {
     roundShot(r);
     expect(r.phase).toBe('over');
     expect(r.shots).toBe(2); // the one after the first basket; none after time is up
+  });
+  it(`the hoop stays for ${BASKETS_PER_HOOP} baskets (a throw that scored scores again), then moves; each basket after the first gives ${TIME_PER_BASKET} s back`, () => {
+    const r = createRound();
+    expect(r).toMatchObject({ perHoop: BASKETS_PER_HOOP, atHoop: 0, lastMoved: false });
+    const seen: { spot: number; atHoop: number; moved: boolean; time: number }[] = [];
+    for (let k = 0; k < 2 * BASKETS_PER_HOOP; k++) {
+      roundBasket(r, 5);
+      seen.push({ spot: r.spot, atHoop: r.atHoop, moved: r.lastMoved, time: r.timeLeft });
+      roundTick(r, 1);
+    }
+    // In turn (no generator): three baskets at spot 0 (the third moves it to 1), three at spot 1.
+    expect(BASKETS_PER_HOOP).toBe(3);
+    expect(seen.map((s) => s.spot)).toEqual([0, 0, 1, 1, 1, 2]);
+    expect(seen.map((s) => s.atHoop)).toEqual([1, 2, 0, 1, 2, 0]);
+    expect(seen.map((s) => s.moved)).toEqual([false, false, true, false, false, true]);
+    // The clock: 60 s at the first basket, then -1 s a tick and +3 s a basket.
+    expect(seen.map((s) => s.time)).toEqual([60, 62, 64, 66, 68, 70]);
+    // A basket in the last throw's wait (the clock at 0, still playing) buys time too: the round goes on.
+    const last = createRound(10, 0);
+    roundBasket(last, 5);
+    last.timeLeft = 0;
+    roundBasket(last, 5);
+    expect(last).toMatchObject({ phase: 'playing', timeLeft: TIME_PER_BASKET });
+    expect(() => createRound(60, 0, 0)).toThrow(/createRound: perHoop must be an integer >= 1, got 0/);
   });
   it('points: a basket is worth its ball (basketball 1, heap 2, gold 5) times the streak, x1 to x4; a miss ends the streak', () => {
     const r = createRound();
@@ -158,7 +186,7 @@ describe('hoop round', () => {
     /** The first `n` spots of a round started at `first` whose baskets are dealt by a generator seeded with `seed`. */
     const order = (seed: number, first: number, n: number): number[] => {
       const rng = new Rng(seed);
-      const r = createRound(60, first);
+      const r = createRound(60, first, 1);
       const out = [r.spot];
       for (let k = 1; k < n; k++) {
         roundBasket(r, 5, 'basketball', () => rng.next());
@@ -179,7 +207,7 @@ describe('hoop round', () => {
     // 5 first spots x 4! orders of the first pass x ...: 200 seeds, (nearly) 200 orders. In turn (no
     // generator) every round went 0, 1, 2, 3, 4, 0, ...
     expect(orders.size).toBeGreaterThanOrEqual(195);
-    const inTurn = createRound();
+    const inTurn = createRound(60, 0, 1);
     const turn = [inTurn.spot];
     for (let k = 0; k < 6; k++) {
       roundBasket(inTurn, 5);
