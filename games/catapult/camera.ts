@@ -81,6 +81,19 @@ export interface Field {
  */
 export const UPRIGHT_GROUND = 0.28;
 
+/**
+ * The same where the castle's close-up shows in the earth while aiming (`aimCloseUp`: a far or wide
+ * castle, the catapult and castle drawn at 14 to 18 px a metre): the close-up fills the earth, so
+ * more earth draws it larger (on level 4, 1.35 x as large as at UPRIGHT_GROUND) and leaves less empty
+ * sky over the small field (62 % of the screen, not 72 %), still room for a full pull's steep arc.
+ */
+export const UPRIGHT_GROUND_CLOSE = 0.38;
+
+/** Where the lowest surface sits on an upright screen for field `f`: UPRIGHT_GROUND_CLOSE where the close-up shows (`aimCloseUp`), else UPRIGHT_GROUND. */
+export function uprightGround(f: Field, width: number, height: number): number {
+  return aimCloseUp(f, width, height) ? UPRIGHT_GROUND_CLOSE : UPRIGHT_GROUND;
+}
+
 /** The upright aim view's left edge, m: just behind the catapult's stacked stones (4 at most, to x = -3.0 m). */
 export const AIM_LEFT = LAUNCH.x - 3.2;
 
@@ -92,12 +105,14 @@ export const rockRight = (castleMaxX: number): number => castleMaxX + ROCK.gap +
 
 /**
  * An upright screen's view of the span [minX, maxX], m, fitted to the screen's width (`width` x
- * `height` px), the field's lowest surface `ground` of the way up the screen.
+ * `height` px), the field's lowest surface `ground` of the way up the screen (default
+ * `uprightGround`).
  * @throws RangeError if the span is empty or the screen's size not positive.
  */
-export function uprightView(f: Field, minX: number, maxX: number, width: number, height: number, ground = UPRIGHT_GROUND): View {
+export function uprightView(f: Field, minX: number, maxX: number, width: number, height: number, ground?: number): View {
   if (!(maxX > minX)) throw new RangeError(`uprightView: maxX must exceed minX (${minX} m), got ${maxX}`);
   if (!(width > 0 && height > 0)) throw new RangeError(`uprightView: the screen must be > 0 px each way, got ${width} x ${height}`);
+  ground ??= uprightGround(f, width, height);
   const h = ((maxX - minX) * height) / width;
   const minY = f.floor - ground * h;
   return { minX, minY, maxX, maxY: minY + h };
@@ -132,6 +147,7 @@ export const AIM_CLOSE_PX_PER_M = 20;
  * @throws RangeError as `uprightView` (the screen's size not positive).
  */
 export function aimCloseUp(f: Field, width: number, height: number): boolean {
-  const v = uprightAimView(f, width, height);
-  return width / (v.maxX - v.minX) < AIM_CLOSE_PX_PER_M;
+  if (!(width > 0 && height > 0)) throw new RangeError(`aimCloseUp: the screen must be > 0 px each way, got ${width} x ${height}`);
+  // The aim view's width (uprightAimView's span), fitted to the screen's width.
+  return width / (f.castleMaxX + AIM_PAST - AIM_LEFT) < AIM_CLOSE_PX_PER_M;
 }

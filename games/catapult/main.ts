@@ -312,9 +312,11 @@ const downShare = (): number => {
  */
 const DOWN_RULE = 'Down: dropped, tipped or knocked 1 m (it darkens); a flat bottom row does not count';
 const DOWN_RULE_SHORT = 'Down: dropped, tipped or knocked 1 m (darkens); not a flat bottom row';
+/** The same rule in the controls' help (after a "Stars" cap): what the stars count. */
+const DOWN_HELP = 'count pieces down (they darken): dropped, tipped or knocked 1 m; not a flat bottom row';
 /**
  * The banner's type size on an upright phone, px: with the short rules a level's start is two lines
- * (four on the first level, with what counts as down) on a 390 px phone.
+ * on a 390 px phone.
  */
 const BANNER_FONT_UPRIGHT = 15;
 /**
@@ -415,6 +417,7 @@ const game = await startPixiGame({
     { keys: 'Drag', action: 'pull back (anywhere), release to throw' },
     { keys: 'L', action: 'next level', touch: 'Next level', card: false },
     { keys: 'Enter', action: 'next level after a clear (try again after a miss)' },
+    { keys: 'Stars', action: DOWN_HELP, touch: 'Stars' },
   ],
   keys: [
     { key: 'l', label: 'next level', action: () => nextLevel() },
@@ -470,7 +473,8 @@ shell.onWorldChange(() => {
  * it jumps when the screen's size changes.
  *
  * On an upright phone (a screen taller than wide) the camera frames the play for the tall screen,
- * the lowest surface UPRIGHT_GROUND of the way up (the scene low in the screen, a strip of earth
+ * the lowest surface UPRIGHT_GROUND of the way up (UPRIGHT_GROUND_CLOSE where the castle's close-up
+ * shows in the earth: ./camera uprightGround; the scene in the screen's lower middle, earth
  * under it for the card saying how to play and the next-level button). Which view it heads for is
  * decided in ./camera (cameraShot), and its rectangle there too: from the level's start the aim view
  * holds the catapult and the whole castle (where the player shoots from and what at, the target in
@@ -1015,6 +1019,74 @@ function drawThrow(world: PhysicsWorld): void {
       verdictText.y = under ? Math.max(verdictText.y, oBottom + verdictText.height) : Math.min(verdictText.y, oTop);
     }
   }
+  keepVerdictOffScene();
+}
+
+/**
+ * The screen boxes (left, top, right, bottom, px) the verdict keeps off: the catapult with its mound
+ * and stacked stones (x -3.0 to 1.2 m, up to 2.4 m: its arm up), and the castle with the rock behind
+ * it (from the lowest surface to 0.3 m over the castle's top or the rock's, 0.2 m either side).
+ */
+function sceneBoxes(): [number, number, number, number][] {
+  const cam = renderer.camera,
+    floor = Math.min(0, ...lv.terrain.map((t) => t.maxY));
+  const box = (x0: number, y0: number, x1: number, y1: number): [number, number, number, number] => [
+    cam.toScreenX(x0),
+    cam.toScreenY(y1),
+    cam.toScreenX(x1),
+    cam.toScreenY(y0),
+  ];
+  return [
+    box(-3.0, 0, 1.2, 2.4),
+    box(lv.castleMinX - 0.2, floor, lv.castleMaxX + 0.2, lv.castleTop + 0.3),
+    box(rockRight() - 2 * ROCK.hx - 0.2, floor, rockRight() + 0.2, 2 * ROCK.hy + 0.3),
+  ];
+}
+
+/**
+ * Moves the verdict (anchored at its bottom middle) off the castle, the rock and the catapult
+ * (sceneBoxes): up to 6 px over the top of one it covers, and over the off-screen marker's label if
+ * that move puts it on it, never above the banner's panel (8 px under it). A verdict still on the
+ * castle there (a tall castle filling a phone's view) goes beside it: into the gap before it, or
+ * past the rock, where the text fits, at the castle's middle height.
+ */
+function keepVerdictOffScene(): void {
+  const t = verdictText,
+    w = t.width,
+    h = t.height;
+  const top = banner.text !== '' ? banner.y + banner.height + 8 : 8;
+  const boxOf = (): [number, number, number, number] => [t.x - w / 2, t.y - h, t.x + w / 2, t.y];
+  const hits = (a: readonly number[], b: readonly number[]) =>
+    a[0]! < b[2]! + 4 && b[0]! < a[2]! + 4 && a[1]! < b[3]! + 4 && b[1]! < a[3]! + 4;
+  const boxes = sceneBoxes();
+  const marker = offscreenText.visible
+    ? [
+        offscreenText.x - offscreenText.width - 4,
+        offscreenText.y - offscreenText.height / 2 - 4,
+        offscreenText.x + 4,
+        offscreenText.y + offscreenText.height / 2 + 4,
+      ]
+    : null;
+  for (let n = 0; n < 4; n++) {
+    const on = boxes.find((b) => hits(boxOf(), b)) ?? (marker && hits(boxOf(), marker) ? marker : undefined);
+    if (!on) return;
+    const y = Math.max(top + h, on[1]! - 6);
+    if (y >= t.y) break;
+    t.y = y;
+  }
+  if (!boxes.some((b) => hits(boxOf(), b))) return;
+  // Beside the castle: before it (between the catapult and the castle), else past the rock.
+  const [, cTop = 0, , cBottom = 0] = boxes[1]!;
+  const gaps: [number, number][] = [
+    [boxes[0]![2]! + 6, boxes[1]![0]! - 6],
+    [boxes[2]![2]! + 6, app.screen.width - 6],
+  ];
+  for (const [x0, x1] of gaps)
+    if (x1 - x0 >= w) {
+      t.x = Math.min(Math.max((x0 + x1) / 2, x0 + w / 2), x1 - w / 2);
+      t.y = Math.max(top + h, (cTop + cBottom) / 2 + h / 2);
+      return;
+    }
 }
 
 /** Dots of the last throw's trail drawn in the last frame. */
@@ -2032,9 +2104,9 @@ function draw(world: PhysicsWorld, alpha: number): void {
   } else {
     // The total counts this level's score as it grows; before the first throw, the star rule.
     // Before the first throw the level's name stands where its score (0) will be.
-    // Upright, what counts as down is told on the first level only (it is the same rule on every level).
-    const downRule = brief ? (params.level === 1 ? `\n${DOWN_RULE_SHORT}` : '') : `\n${narrow ? DOWN_RULE_SHORT : DOWN_RULE}`;
-    const rule = shots.length === 0 ? `\n${brief ? '' : 'Stars: '}${starRule}${downRule}` : '';
+    // Two short lines: the level and its shots, then the star rule. What counts as down is in the
+    // controls' help (the card saying how to play on a phone), and the pieces down darken.
+    const rule = shots.length === 0 ? `\n${brief ? '' : 'Stars: '}${starRule}` : '';
     const head = shots.length === 0 ? `Level ${params.level}: ${lv.name}` : `Score ${score}`;
     // "shots left", not "shots": "shots 2" reads as the shots thrown. Upright, no "Total 0" (one line, not two).
     const totalPart = brief && runningTotal === 0 ? '' : `  Total ${runningTotal}`;

@@ -304,11 +304,11 @@ const camera = { x: 0, y: 0, zoom: 0, leadX: 0, leadY: 0, time: 0, shake: 0, wid
  */
 const hitMarks: (Shown & { kind: 'mine' | 'seabed' })[] = [];
 /** How long a hit's label, sand cloud and red flash last, s of game time. */
-const HIT_LIFE = 1.8;
+const HIT_LIFE = 2.4;
 /** How long a hit shakes the view, s of game time. */
 const HIT_SHAKE_LIFE = 0.6;
 /** The shake's amplitude at the moment of a hit, px. */
-const SHAKE_PX = 9;
+const SHAKE_PX = 12;
 
 function createWorld(): PhysicsWorld {
   const world = createPhysicsWorld(submarine.worldOptions());
@@ -791,7 +791,7 @@ const compact = pageLayout().compact();
 const gauge = document.createElement('div');
 gauge.className = 'sub-gauges';
 gauge.dataset.hud = 'gauges';
-gauge.style.cssText = 'font: 13px/1.35 system-ui, sans-serif; color: #e8f4ff; padding: 4px 10px;';
+gauge.style.cssText = `font: ${compact ? 12 : 13}px/1.35 system-ui, sans-serif; color: #e8f4ff; padding: 4px 10px;`;
 const goal = document.createElement('div');
 goal.dataset.hud = 'goal';
 goal.style.cssText = 'font-weight: 700; color: #ffe066;';
@@ -808,17 +808,14 @@ const instruments = document.createElement('div');
 instruments.dataset.hud = 'instruments';
 // #c8d6e4 on the columns' dark backing: a contrast of about 12:1 (at least 4.5:1 for small text).
 instruments.style.cssText = 'white-space: pre-line; color: #c8d6e4; margin: 6px 0;';
-// On a desktop the status row is one line, the goal then the numbers a player needs (three lines,
-// the third small and grey, are too dense); the instruments (seabed, climb, pitch,
-// screw, tanks, helm) go in the info column, a line each. On a phone the status row keeps two
-// short lines and the instruments are left out.
+// The status row is one short line, the goal then the numbers a player needs (three lines, the
+// third small and grey, were too dense); on a desktop the instruments (seabed, climb, pitch, screw,
+// tanks, helm) go in the info column, a line each, and on a phone they are left out.
+goal.style.display = readout.style.display = 'inline';
 if (compact) instruments.style.display = 'none';
-else {
-  goal.style.display = readout.style.display = 'inline';
-  pageLayout().info.append(instruments);
-}
+else pageLayout().info.append(instruments);
 gauge.append(goal, readout);
-if (!compact) goal.after(Object.assign(document.createElement('span'), { textContent: ' · ' }));
+goal.after(Object.assign(document.createElement('span'), { textContent: ' · ' }));
 pageLayout().status.append(gauge);
 
 /** The end of a run over the scene: won or sunk, the time, the hull, the best, and a button to go again. */
@@ -967,24 +964,42 @@ let gaugeFlash = 0;
 /** Writes the hull gauge: a bar for each third left, hollow for each lost, and n/3; red once two are lost. */
 function showHull(): void {
   const left = Math.max(0, 3 - state.hits);
-  hullGauge.textContent = `hull ${'▮'.repeat(left)}${'▯'.repeat(3 - left)} ${left}/3`;
+  // On a phone the bars alone (the line has to fit 390 px).
+  hullGauge.textContent = `hull ${'▮'.repeat(left)}${'▯'.repeat(3 - left)}${compact ? '' : ` ${left}/3`}`;
   hullGauge.style.color = left <= 1 ? '#ff8a7a' : '';
 }
-/** The label at a hit: what hit the hull ("MINE!", "SEABED!") and its cost. */
+/** The hit's signs as last drawn (tests): the label's pill box (x, y, width, height, px) and the view's red tint (alpha). */
+const hitShown = { pill: [0, 0, 0, 0], tint: 0 };
+/** The red pill under the hit's label (drawHitPill), drawn where the label ends up once the words are placed. */
+const hitPill = new Graphics();
+app.stage.addChild(hitPill);
+/** The label at a hit: what hit the hull and its cost ("MINE HIT!", "−1 hull · 2/3 left"), white on hitPill. */
 const hitLabel = new Text({
   text: '',
   style: {
-    fill: 0xff6b5a,
-    fontSize: 22,
+    fill: 0xffffff,
+    fontSize: compact ? 20 : 24,
     fontWeight: '800',
     fontFamily: 'system-ui, sans-serif',
     align: 'center',
-    stroke: { color: 0x1a0606, width: 5 },
+    lineHeight: compact ? 24 : 29,
   },
 });
 hitLabel.anchor.set(0.5);
 hitLabel.visible = false;
 app.stage.addChild(hitLabel);
+/** Draws the hit label's pill round the label where it is now (after `declutter`): red, white-edged, fading with it. */
+function drawHitPill(): void {
+  hitPill.clear();
+  hitShown.pill = [0, 0, 0, 0];
+  if (!hitLabel.visible || hitLabel.alpha <= 0) return;
+  const [x, y, w, h] = boxOf(hitLabel);
+  hitShown.pill = [x - 12, y - 5, w + 24, h + 10];
+  hitPill
+    .roundRect(x - 12, y - 5, w + 24, h + 10, 12)
+    .fill({ color: 0xc8261c, alpha: 0.94 * hitLabel.alpha })
+    .stroke({ color: 0xffffff, width: 2, alpha: 0.9 * hitLabel.alpha });
+}
 /** The warning by the hull of a mine on its course (drawMineWarning): which way to pass it, white on a red pill. */
 const mineTag = new Text({
   text: '',
@@ -1152,12 +1167,18 @@ function drawMineWarning(t: number, k: number, sx: (x: number) => number, sy: (y
   mineWarning.tail = tail;
 }
 /** The label's text for each cause of a hit. */
-const HIT_TEXT = { mine: 'MINE!\n−1 hull', seabed: 'SEABED!\n−1 hull' } as const;
+const HIT_TEXT = { mine: 'MINE HIT!', seabed: 'SEABED HIT!' } as const;
+/** The hit label's words: the cause, then the cost and the hull left ("MINE HIT!\n−1 hull · 2/3 left"). */
+function hitText(kind: keyof typeof HIT_TEXT, hits: number): string {
+  const left = Math.max(0, 3 - hits);
+  return `${HIT_TEXT[kind]}\n−1 hull · ${left > 0 ? `${left}/3 left` : 'breached'}`;
+}
 /**
  * Draws the newest hit's signs at game time `t` (s), `k` px a metre, through `sx`, `sy` (world m to
  * screen px) in a `W` x `H` px view: a red ring spreading from the place, a cloud of sand and a fan
  * of sparks there for a seabed scrape (a mine's blast is drawn by drawMines), a red frame round the
- * view fading over 0.6 s, and the label naming the cause over the place, rising and fading over HIT_LIFE s.
+ * view (the whole view tinted red for 0.4 s, its frame for 0.9 s), and the label naming the cause and
+ * the hull left over the place, rising and fading over HIT_LIFE s (its red pill: drawHitPill).
  */
 function drawHits(t: number, k: number, sx: (x: number) => number, sy: (y: number) => number, W: number, H: number, hullTop: number): void {
   for (let i = hitMarks.length - 1; i >= 0; i--) if (t < hitMarks[i]!.time) hitMarks.splice(i, 1);
@@ -1165,6 +1186,7 @@ function drawHits(t: number, k: number, sx: (x: number) => number, sy: (y: numbe
   const age = m ? shownAge(m, t) : Number.POSITIVE_INFINITY,
     u = age / HIT_LIFE;
   hitLabel.visible = m !== undefined && u < 1;
+  hitShown.tint = 0;
   if (!m || u >= 1) return;
   const x = sx(m.x),
     y = sy(m.y),
@@ -1191,21 +1213,27 @@ function drawHits(t: number, k: number, sx: (x: number) => number, sy: (y: numbe
           .stroke({ color: 0xfff0b0, alpha: 1 - u / 0.3, width: 2 });
       }
   }
-  const flash = Math.max(0, 1 - age / 0.6);
-  if (flash > 0) g.rect(0, 0, W, H).stroke({ color: 0xff3b30, width: 18, alpha: 0.5 * flash, alignment: 1 });
-  hitLabel.text = HIT_TEXT[m.kind];
-  hitLabel.alpha = u < 0.6 ? 1 : (1 - u) / 0.4;
-  hitLabel.scale.set(u < 0.06 ? 0.6 + 0.4 * (u / 0.06) + 0.2 * Math.sin((Math.PI * u) / 0.06) : 1);
+  // The whole view flashes red at the hit (fading over 0.4 s) inside a red frame (over 0.9 s).
+  const flash = Math.max(0, 1 - age / 0.4),
+    frame = Math.max(0, 1 - age / 0.9);
+  hitShown.tint = 0.3 * flash * flash;
+  if (flash > 0) g.rect(0, 0, W, H).fill({ color: 0xff3b30, alpha: hitShown.tint });
+  if (frame > 0) g.rect(0, 0, W, H).stroke({ color: 0xff3b30, width: 18, alpha: 0.6 * frame, alignment: 1 });
+  hitLabel.text = hitText(m.kind, state.hits);
+  hitLabel.alpha = u < 0.7 ? 1 : (1 - u) / 0.3;
+  // It comes in large and settles (over the first 0.15 s), so the eye is drawn to it.
+  hitLabel.scale.set(u < 0.08 ? 1.4 - 0.4 * (u / 0.08) : 1);
   // Over the place and the hull (above whichever is higher), rising; under the hull instead if it
   // would cover the beacon pointer's label or leave the view.
   const lw = hitLabel.width,
     lh = hitLabel.height;
-  const lx = Math.max(lw / 2 + 8, Math.min(W - lw / 2 - 8, x));
+  // Kept inside the view with its pill (12 px wider each side than the words, 5 px taller).
+  const lx = Math.max(lw / 2 + 20, Math.min(W - GAUGE_WIDTH - lw / 2 - 14, x));
   let ly = Math.min(y, hullTop) - lh / 2 - 6 - 24 * u;
   const [px, py, pw, ph] = aim.label as [number, number, number, number];
   const overPointer = pointer.visible && Math.abs(lx - (px + pw / 2)) < (lw + pw) / 2 && Math.abs(ly - (py + ph / 2)) < (lh + ph) / 2;
-  if (overPointer || ly < lh / 2 + 8) ly = Math.max(y, hullTop + (SUBMARINE.height + 5) * k) + lh / 2 + 6 + 24 * u;
-  hitLabel.position.set(lx, Math.max(lh / 2 + 8, Math.min(H - lh / 2 - 8, ly)));
+  if (overPointer || ly < lh / 2 + 13) ly = Math.max(y, hullTop + (SUBMARINE.height + 5) * k) + lh / 2 + 11 + 24 * u;
+  hitLabel.position.set(lx, Math.max(lh / 2 + 13, Math.min(H - lh / 2 - 13, ly)));
 }
 /**
  * Marks the crest of the seabed between the hull at x = `hx` and the target at x = `bx` (m): an
@@ -1582,6 +1610,12 @@ function drawDepthGauge(W: number, H: number, depth: number, order: number, bed:
     for (const tag of [gaugeDepth, gaugeTarget]) if (tag.visible) offFrame(tag, box, top, bottom);
     for (const mark of gaugeMarks) if (mark.visible && overlaps(textBox(mark), box, 2)) mark.visible = false;
   }
+  // Each tag on a dark see-through pill, so it reads over the seabed as over the water.
+  for (const tag of [gaugeDepth, gaugeTarget])
+    if (tag.visible) {
+      const [x, y, w, h] = textBox(tag);
+      g.roundRect(x - 4, y, w + 6, h, h / 2).fill({ color: 0x06213a, alpha: 0.7 });
+    }
   gauge_.depth = gaugeDepth.visible ? textBox(gaugeDepth) : [0, 0, 0, 0];
   gauge_.target = gaugeTarget.visible ? textBox(gaugeTarget) : [0, 0, 0, 0];
 }
@@ -1674,6 +1708,58 @@ const gauge_ = { depth: [0, 0, 0, 0], target: [0, 0, 0, 0] };
 /** The box of a gauge figure or tag (anchored at its right middle): x, y, width, height, px. */
 function textBox(text: Text): [number, number, number, number] {
   return [text.x - text.width, text.y - text.height / 2, text.width, text.height];
+}
+
+/** How far the beacon pointer's pill is kept above the seabed under it, px. */
+const LABEL_BED_CLEAR = 6;
+
+/**
+ * Lifts the beacon pointer's label (`pointer`, its pill 7 px wider and 2 px taller each side than the
+ * text) off the seabed: while its pill comes within LABEL_BED_CLEAR px of the bed under any part of it
+ * (sampled every 4 px across the pill), or it crosses the hull's box `hull` (x, y, width, height, px),
+ * the target's frame (aim.frame, while the beacon is in view), the headlight's cone of the hull at
+ * `beam` (x, y, m, and its angle, rad; null while the light is off) or a live mine's ring, it moves up
+ * 4 px, never past the view's top. A label clear of the bed is left where it is. The view is `W` x `H`
+ * px, centred on x = `cx` (m) at `k` px a metre, `sx`, `sy` world m to screen px.
+ */
+function liftOffSeabed(
+  W: number,
+  H: number,
+  cx: number,
+  k: number,
+  sx: (x: number) => number,
+  sy: (y: number) => number,
+  hull: readonly number[],
+  beam: readonly number[] | null,
+): void {
+  const pill = (): number[] => [
+    pointer.x - pointer.width / 2 - 7,
+    pointer.y - pointer.height / 2 - 2,
+    pointer.width + 14,
+    pointer.height + 4,
+  ];
+  const onBed = (): boolean => {
+    const [x0, y0, w, h] = pill() as [number, number, number, number];
+    for (let px = x0; ; px = Math.min(x0 + w, px + 4)) {
+      if (sy(seabedHeight(handles.seabed, cx + (px - W / 2) / k)) < y0 + h + LABEL_BED_CLEAR) return true;
+      if (px >= x0 + w) return false;
+    }
+  };
+  if (!onBed()) return;
+  const blocked = (): boolean => {
+    const box = pill();
+    if (onBed() || overlaps(box, hull, 2) || (aim.onScreen && overlaps(box, aim.frame, 2))) return true;
+    if (beam && boxInBeam(box, beam, sx, sy, k)) return true;
+    for (let i = 0; i < mines.length; i++) {
+      if (!mineLive[i]) continue;
+      const r = MINE_RADIUS * k + 6;
+      if (overlaps(box, [sx(mines[i]!.x) - r, sy(mines[i]!.y) - r, 2 * r, 2 * r], 0)) return true;
+    }
+    return false;
+  };
+  const top = pointer.height / 2 + 4;
+  for (let n = 0; n < H / 4 && blocked() && pointer.y > top; n++) pointer.y -= 4;
+  pointer.y = Math.max(top, pointer.y);
 }
 
 /** Whether boxes `a` and `b` (x, y, width, height, px) overlap, or come within `pad` px of each other. */
@@ -2376,6 +2462,19 @@ function draw(): void {
       pointer.x = rightX + pointer.width / 2 + 15 <= W - GAUGE_WIDTH ? rightX : bx - half - pointer.width / 2 - 12;
       pointer.y = by;
     }
+    // Never on the seabed (under a beacon near the bed the moves above put it on the rock, dark on
+    // dark): lifted in 4 px steps until its pill clears the bed under it by LABEL_BED_CLEAR px and
+    // crosses neither the hull, the target's frame, the headlight's cone nor a live mine.
+    liftOffSeabed(
+      W,
+      H,
+      cx,
+      k,
+      sx,
+      sy,
+      [hx0 - hr, hy0 - hr, 2 * hr, 2 * hr],
+      hyw < -HEADLIGHT.fromDepth ? [hxw, hyw, c.Angle.value[e]!] : null,
+    );
     aim.label = [pointer.x - pointer.width / 2, pointer.y - pointer.height / 2, pointer.width, pointer.height];
     aim.hull = [hx0 - hr, hy0 - hr, 2 * hr, 2 * hr];
     // The pickup banner ("Beacon 3 of 6") off the label's pill (on a phone it would be drawn over it):
@@ -2493,6 +2592,7 @@ function draw(): void {
   // The hull's box on the screen (level, its sail included): the tags that only add are kept off it.
   const hr = Math.max(SUBMARINE.length / 2, SUBMARINE.height / 2 + 2) * k;
   declutter(H, [sx(hxw) - (SUBMARINE.length / 2) * k, sy(hyw) - hr / 2, SUBMARINE.length * k, hr]);
+  drawHitPill();
   drawPause(W, H, sy(hyw));
   // The hull gauge at a hit: red and enlarged, fading over GAUGE_FLASH s of game time.
   const hitAge = hitMarks.length > 0 ? shownAge(hitMarks[hitMarks.length - 1]!, t) : Number.POSITIVE_INFINITY;
@@ -2511,9 +2611,9 @@ function draw(): void {
     state.over === 'won'
       ? state.collected === taken.length
         ? `All ${taken.length} beacons in ${clock(state.time)}!`
-        : `Finish · ${state.collected} of ${taken.length} beacons in ${clock(state.time)}`
+        : `Finish · ${state.collected}/${taken.length} in ${clock(state.time)}`
       : state.over === 'sunk'
-        ? `Hull breached · ${state.collected} of ${taken.length} beacons`
+        ? `Hull breached · ${state.collected}/${taken.length}`
         : '';
   showEnd();
   const helm = helmWord(state.mode, state.holdY, state.diveStopped);
@@ -2526,21 +2626,21 @@ function draw(): void {
   // answered shows at once, before the depth has gone far.
   const sink = -c.Velocity.y[e]!;
   const rate = Math.abs(sink) >= 0.5 ? ` ${sink > 0 ? '↓' : '↑'}${Math.abs(sink).toFixed(0)} m/s` : '';
-  // The goal and a short readout first (on a phone the speed in whole m/s, so the line keeps to the
-  // width with the depth rate on it); the instruments (tanks, pitch, climb, helm) after, small and dim.
-  // On a phone the score goes on the goal's line (the readout's would wrap).
+  // One line: the beacons, the clock against par, the depth (and the depth ordered), the score and
+  // the hull. On a phone it keeps to 390 px: no speed, depth rate or missed count (the depth gauge
+  // and the banners tell those; the glows' points labels the streak), "stopped by the seabed"
+  // shortened, in 12 px type; the instruments (tanks, pitch,
+  // climb, helm) go in the desktop's info column.
   const missedCount = missed.filter(Boolean).length;
-  const missedText = missedCount > 0 ? ` (${missedCount} missed)` : '';
+  const missedText = missedCount > 0 && !compact ? ` (${missedCount} missed)` : '';
   goal.textContent =
     end ||
-    (compact
-      ? `Beacons ${state.collected} of ${taken.length}${missedText} · ${clock(state.time)} / par ${clock(state.par)} · ${state.score} pts${streak}`
-      : `Collect the ${taken.length} beacons · ${state.collected} of ${taken.length}${missedText} · ${clock(state.time)} / par ${clock(state.par)}`);
+    `${compact ? '◯' : 'Beacons'} ${state.collected}/${taken.length}${missedText} · ${clock(state.time)}${compact ? '/' : ' / par '}${clock(state.par)}`;
   // The clock turns red once par has passed.
   goal.style.color = !state.over && state.time > state.par ? '#ff9e8a' : '#ffe066';
   readoutText.textContent = compact
-    ? `depth ${Math.max(0, depth).toFixed(0)}${ordered} m${rate}${stopped || ` · ${speed.toFixed(0)} m/s`} · `
-    : `depth ${Math.max(0, depth).toFixed(0)}${ordered} m${rate}${stopped} · speed ${speed.toFixed(1)} m/s · score ${state.score}${streak} · `;
+    ? `${Math.max(0, depth).toFixed(0)}${ordered} m${stopped ? ' · seabed' : ''} · ${state.score} pts · `
+    : `depth ${Math.max(0, depth).toFixed(0)}${ordered} m${rate}${stopped} · ${speed.toFixed(1)} m/s · score ${state.score}${streak} · `;
   showHull();
   instruments.textContent = [
     `seabed ${(-floor).toFixed(0)} m`,
@@ -2589,7 +2689,8 @@ shell.expose({
   camera: () => ({ ...camera }),
   /**
    * The newest hit's signs: its cause ('' before any), place (m), the label shown ('' once faded)
-   * and its screen box (x, y, width, height, px), and the hull gauge's text and running animations.
+   * and its screen box (x, y, width, height, px), its red pill's box (px, zeros while none), the
+   * red tint over the whole view (its alpha, 0 once gone), and the hull gauge's text and running animations.
    */
   hitEffect: () => {
     const m = hitMarks[hitMarks.length - 1];
@@ -2599,6 +2700,8 @@ shell.expose({
       y: m?.y ?? Number.NaN,
       label: hitLabel.visible ? hitLabel.text : '',
       box: [hitLabel.x - hitLabel.width / 2, hitLabel.y - hitLabel.height / 2, hitLabel.width, hitLabel.height],
+      pill: [...hitShown.pill],
+      tint: hitShown.tint,
       shake: camera.shake,
       gauge: hullGauge.textContent ?? '',
       gaugeFlash,

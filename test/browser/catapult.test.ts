@@ -43,6 +43,46 @@ afterAll(async () => {
   await h?.close();
 });
 
+/**
+ * Waits until the miss's hint shows (1 s of frames after the throw's verdict, the hint risen) and
+ * checks its box lies clear of the castle (its front to its far end, the ground to its top), the
+ * rock behind it and the catapult with its stones (x -3.0 to 1.1 m, y 0 to 2 m), on screen. Returns
+ * the hint's words.
+ */
+async function expectHintOffScene(p: GamePage, tag: string): Promise<string> {
+  await p.waitFor(() => (window.game as unknown as CatapultGame).lastVerdict() !== '', null);
+  await p.runFrames(60);
+  const r = await p.page.evaluate(() => {
+    const w = window.game as unknown as CatapultGame & {
+      verdictShown(): string;
+      wordBoxes(): { verdict: number[] | null };
+    };
+    const cam = w.renderer.camera,
+      lv = w.level();
+    const box = (x0: number, y0: number, x1: number, y1: number) => [
+      cam.toScreenX(x0),
+      cam.toScreenY(y1),
+      cam.toScreenX(x1),
+      cam.toScreenY(y0),
+    ];
+    return {
+      shown: w.verdictShown(),
+      verdict: w.wordBoxes().verdict,
+      castle: box(lv.castleMinX, 0, lv.castleMaxX, lv.castleTop),
+      // The rock: 1.9 m past the castle's far end, 1 m wide, 2.8 m tall (games/catapult/scene.ts ROCK).
+      rock: box(lv.castleMaxX + 1.9, 0, lv.castleMaxX + 2.9, 2.8),
+      catapult: box(-3.0, 0, 1.1, 2),
+    };
+  });
+  expect(r.shown, tag).not.toBe('');
+  const [a0, a1, a2, a3] = r.verdict! as [number, number, number, number];
+  for (const name of ['castle', 'rock', 'catapult'] as const) {
+    const [b0, b1, b2, b3] = r[name] as [number, number, number, number];
+    expect(a2 <= b0 || b2 <= a0 || a3 <= b1 || b3 <= a1, `${tag}: "${r.shown}" over the ${name}: ${JSON.stringify(r)}`).toBe(true);
+  }
+  return r.shown;
+}
+
 const screen = (x: number, y: number) =>
   g.page.evaluate(
     ([x, y]) => {
@@ -142,11 +182,11 @@ async function phoneBeforeTouch(p: GamePage): Promise<{ hint: Locator; box: DOMR
   expect(opening.bottom).toBeLessThan(opening.hintTop);
   expect(opening.bottom / opening.H).toBeGreaterThan(0.5);
   expect(opening.bottom / opening.H).toBeLessThan(0.75);
-  // The score, the star rule and what "down" means: four lines of text at most, narrower than the
-  // canvas (a line is about 1.3 x the type size and the outline adds 4 px: four lines 5.4 x, five
-  // 6.7 x; bound 6 x). (It was two lines, the star rule only; a stranger was never told what
-  // counted as fallen.)
-  expect(opening.banner.height).toBeLessThan(6 * opening.banner.fontSize);
+  // The level and the star rule: two lines of text, narrower than the canvas (a line is about 1.3 x
+  // the type size and the outline adds 4 px: two lines 2.9 x, three 4.2 x; bound 3.5 x). (Four lines
+  // with what "down" means were too many for a stranger; the card saying how to play tells it.)
+  expect(opening.banner.height).toBeLessThan(3.5 * opening.banner.fontSize);
+  expect(await p.page.locator('[data-hud="touch-hint"]').textContent()).toContain('knocked 1 m');
   expect(opening.banner.width).toBeLessThanOrEqual(opening.W);
   await expectSunClear(p);
   // The castle shows in a close-up too, drawn at 1.4 times the scene's scale or more, on the canvas
@@ -788,6 +828,8 @@ describe('catapult', () => {
     const [a0, a1, a2, a3] = words.verdict!,
       [b0, b1, b2, b3] = words.offscreen!;
     expect(a2 <= b0! || b2! <= a0! || a3! <= b1! || b3! <= a1!, JSON.stringify(words)).toBe(true);
+    // Nor does the hint lie on the castle, the rock or the catapult (a stranger's "Long by 8 m" sat on the castle).
+    expect(await expectHintOffScene(g, 'level 1, a full pull')).toBe(verdict);
     // A miss's hint stays up (it faded after 2.5 s and a stranger's later misses showed none):
     // 6 s on it still shows.
     await g.page.evaluate(() => {
@@ -952,6 +994,38 @@ describe('catapult', () => {
     expect(g.errors).toEqual([]);
   });
 
+  it("desktop 1280 x 800 and phone 390 x 844: a miss's hint lies clear of the castle, the rock and the catapult (long, short and a glance off level 4's tall bridge)", async () => {
+    // Level 4's bridge is 5.6 m tall: a hint put 2.2 m over where the stone came down lay across it.
+    // Throws (pull dx, dy, m; 3 m is a full pull) long over it, short of it, and low into its foot.
+    const pulls: [number, number][] = [
+      [-2.0, -1.6],
+      [-1.0, -0.9],
+      [-1.5, -0.35],
+    ];
+    for (const size of [
+      { viewport: { width: 1280, height: 800 }, touch: false },
+      { viewport: { width: 390, height: 844 }, touch: true },
+    ]) {
+      const p = await h.openGame('catapult', { query: { level: 4 }, ...size });
+      for (const [dx, dy] of pulls) {
+        await p.page.evaluate(
+          ([dx, dy]) => {
+            const w = window.game as unknown as CatapultGame;
+            w.paused = false;
+            w.reset();
+            w.fire(dx, dy);
+          },
+          [dx, dy] as const,
+        );
+        const said = await expectHintOffScene(p, `${size.viewport.width} px, pull (${dx}, ${dy})`);
+        // A miss, or a hit's points (those rise from the place hit and go).
+        expect(said).toMatch(/^(Long by|Short by|Hit |No damage|\+\d+)/);
+      }
+      expect(p.errors).toEqual([]);
+      await p.close();
+    }
+  }, 240_000);
+
   it('one level score everywhere, the star rule shown, and a retry (R) takes its points out of Total', async () => {
     type W = CatapultGame & { shownScore(): number; total(): number; bannerText(): string };
     await g.page.evaluate(() => {
@@ -964,6 +1038,10 @@ describe('catapult', () => {
     await g.waitFor(() => (window.game as unknown as { bannerText(): string }).bannerText().includes('★★★\u00a095\u00a0%'), null);
     // The shots still to throw, said as such ("shots 3" read as shots thrown).
     expect(await g.page.evaluate(() => (window.game as unknown as W).bannerText())).toMatch(/Total 0 {2}3 shots left/);
+    // Level 1's caption is two lines: the level and its shots, then the star rule (it was three on a
+    // desktop, four on a phone, with what counts as down: that is in the controls' help now).
+    expect((await g.page.evaluate(() => (window.game as unknown as W).bannerText())).split('\n')).toHaveLength(2);
+    expect(await g.page.locator('.bp-legend').textContent()).toContain('knocked 1 m');
     await g.page.evaluate(() => {
       const w = window.game as unknown as CatapultGame;
       w.paused = true;

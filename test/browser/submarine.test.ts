@@ -14,7 +14,18 @@ import { checkLayout } from './layout-check';
 import { touchPath } from './touch';
 
 type Camera = { x: number; y: number; zoom: number; leadX: number; shake: number; width: number; height: number; time: number };
-type Hit = { kind: string; x: number; y: number; label: string; box: number[]; shake: number; gauge: string; gaugeFlash: number };
+type Hit = {
+  kind: string;
+  x: number;
+  y: number;
+  label: string;
+  box: number[];
+  pill: number[];
+  tint: number;
+  shake: number;
+  gauge: string;
+  gaugeFlash: number;
+};
 type Sub = {
   paused: boolean;
   world: {
@@ -782,7 +793,9 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
   it('a seabed hit and a mine each say what hit the hull, at the place, shake the view and light the hull gauge; on a phone, played again, a touch on the stick starts the boat down within 0.5 s of game time and the gauges and beacon arrow fit', async () => {
     const g = await fresh(6);
     expect(await g.page.evaluate(() => (window.game as unknown as Sub).hitEffect().kind)).toBe('');
-    expect(await g.page.locator('[data-hud="hull"]').textContent()).toBe('hull ▮▮▮ 3/3');
+    // On a phone the bars alone (the status row keeps to one line there).
+    const hullText = (left: number) => `hull ${'▮'.repeat(left)}${'▯'.repeat(3 - left)}${touch ? '' : ` ${left}/3`}`;
+    expect(await g.page.locator('[data-hud="hull"]').textContent()).toBe(hullText(3));
     // The hull put into the seabed coming down at 4 m/s (over the 1.5 m/s a hit needs).
     await g.page.evaluate(() => {
       const w = window.game as unknown as Sub;
@@ -807,6 +820,20 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
       expect(r.hit.label).toBe(label);
       expect(r.hit.shake).toBeGreaterThan(1);
       expect(r.hit.gaugeFlash).toBeGreaterThan(0.5);
+      // Not to be missed: 0.1 s on, the whole view is tinted red (alpha 0.3 (1 - 0.1/0.4)^2 = 0.17),
+      // and the label's two lines are large (each at least 22 px high) on a red pill round them.
+      expect(r.hit.tint).toBeGreaterThan(0.1);
+      const [qx, qy, qw, qh] = r.hit.pill as [number, number, number, number];
+      expect(r.hit.box[3]).toBeGreaterThanOrEqual(44);
+      expect(qx).toBeLessThanOrEqual(r.hit.box[0]!);
+      expect(qy).toBeLessThanOrEqual(r.hit.box[1]!);
+      expect(qx + qw).toBeGreaterThanOrEqual(r.hit.box[0]! + r.hit.box[2]!);
+      expect(qy + qh).toBeGreaterThanOrEqual(r.hit.box[1]! + r.hit.box[3]!);
+      // The pill inside the view too.
+      expect(qx).toBeGreaterThanOrEqual(0);
+      expect(qy).toBeGreaterThanOrEqual(0);
+      expect(qx + qw).toBeLessThanOrEqual(r.cam.width);
+      expect(qy + qh).toBeLessThanOrEqual(r.cam.height);
       expect(await g.page.locator('[data-hud="hull"]').textContent()).toBe(gauge);
       // The label lies inside the view, and over the place hit (its box spans the place's screen x,
       // or lies within 12 px of it where the view's edge stops it).
@@ -827,7 +854,7 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
         .reduce((sum, l) => sum + l.box[3]! + 6, 0);
       expect(Math.abs(by + bh / 2 - py)).toBeLessThan(12 * r.cam.zoom + bh + passed);
     };
-    await check('seabed', 'SEABED!\n−1 hull', 'hull ▮▮▯ 2/3');
+    await check('seabed', 'SEABED HIT!\n−1 hull · 2/3 left', hullText(2));
     // Level at 12 m/s, 45 m before the first mine at its depth: the warning comes by the hull at
     // once (contact in under 4 s), a tag telling which way to pass and an arrow from the hull to the
     // mine. Paused on the first frame it is drawn (the frames run at once, from the pause).
@@ -903,17 +930,19 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     await stepToHit(g.page, 'mine', 0.1);
     await g.waitFor(() => (window.game as unknown as Sub).paused, null, 60_000);
     await g.frames(2);
-    await check('mine', 'MINE!\n−1 hull', 'hull ▮▯▯ 1/3');
-    // Played on, the label and the gauge's light fade out within 2 s of game time (the frames run at
+    await check('mine', 'MINE HIT!\n−1 hull · 1/3 left', hullText(1));
+    // Played on, the label and the gauge's light fade out within 2.5 s of game time (the frames run at
     // once, and the game left running).
     const t = await g.page.evaluate(() => (window.game as unknown as Sub).world.time);
-    await g.runUntil((t0) => (window.game as unknown as Sub).world.time > t0 + 2, t, { seconds: FRAME_S });
+    await g.runUntil((t0) => (window.game as unknown as Sub).world.time > t0 + 2.5, t, { seconds: FRAME_S });
     await g.page.evaluate(() => {
       (window.game as unknown as Sub).paused = false;
     });
     await g.frames(2);
     const after = await g.page.evaluate(() => (window.game as unknown as Sub).hitEffect());
     expect(after.label).toBe('');
+    expect(after.pill).toEqual([0, 0, 0, 0]);
+    expect(after.tint).toBe(0);
     expect(after.gaugeFlash).toBe(0);
     expect(after.shake).toBe(0);
     // On a phone, the game played again from its start (R): the dive from a touch, the gauges and the beacon arrow.
@@ -1271,6 +1300,118 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
           expect(inCone, `${device}, ${above} m above: label point (${wx!.toFixed(1)}, ${wy!.toFixed(1)}) m in the cone`).toBe(false);
         }
     }
+    expect(g.errors).toEqual([]);
+  }, 180_000);
+
+  it("the target's label stays above the seabed, off the hull, for a beacon low over the bed with the boat above, beside and behind it", async () => {
+    // The course's beacon lowest over the seabed (8 to 10 m: ./beacons.ts lays them at least 8 m
+    // over it) made the target by collecting those before it; the hull parked (paused, level, at
+    // rest) round it where the label used to be pushed down onto the rock: 10 m over the beacon
+    // (the label went under the target's frame), 20 m short and 6 m over, 25 m past and 2 m over.
+    const g = await fresh(6);
+    type P = Sub & {
+      step(): void;
+      beaconPointer(): { index: number; label: number[]; hull: number[]; visible: boolean; text: string };
+    };
+    const target = await g.page.evaluate(() => {
+      const w = window.game as unknown as P;
+      w.paused = true;
+      const b = w.handles().beacons,
+        bed = w.handles().seabed,
+        c = w.world.components,
+        e = w.hull();
+      const bedAt = (x: number) => {
+        const f = Math.min(bed.y.length - 1.001, Math.max(0, (x - bed.x0) / bed.dx)),
+          i = Math.floor(f);
+        return bed.y[i]! + (bed.y[i + 1]! - bed.y[i]!) * (f - i);
+      };
+      let low = 1;
+      for (let i = 1; i < b.length / 2; i++) if (b[2 * i + 1]! - bedAt(b[2 * i]!) < b[2 * low + 1]! - bedAt(b[2 * low]!)) low = i;
+      for (let i = 0; i < low; i++) {
+        c.Position.x[e] = b[2 * i]!;
+        c.Position.y[e] = b[2 * i + 1]!;
+        c.Velocity.x[e] = c.Velocity.y[e] = 0;
+        for (let n = 0; n < 3; n++) w.step();
+      }
+      return { low, clear: b[2 * low + 1]! - bedAt(b[2 * low]!), collected: w.state.collected };
+    });
+    expect(target.collected).toBe(target.low);
+    expect(target.clear).toBeLessThan(12);
+    for (const [dx, dy] of [
+      [0, 10],
+      [-20, 6],
+      [25, 2],
+    ] as const) {
+      await g.page.evaluate(
+        ([dx, dy]) => {
+          const w = window.game as unknown as P;
+          w.paused = true;
+          const i = w.beaconPointer().index,
+            b = w.handles().beacons,
+            c = w.world.components,
+            e = w.hull();
+          c.Position.x[e] = b[2 * i]! + dx;
+          c.Position.y[e] = b[2 * i + 1]! + dy;
+          c.Velocity.x[e] = c.Velocity.y[e] = 0;
+          c.Angle.value[e] = 0;
+          w.state.holdY = b[2 * i + 1]! + dy;
+        },
+        [dx, dy] as const,
+      );
+      await g.runFrames(3, { unpause: false });
+      const r = await g.page.evaluate(() => {
+        const w = window.game as unknown as P;
+        const bed = w.handles().seabed;
+        return { p: w.beaconPointer(), cam: w.camera(), bed: { x0: bed.x0, dx: bed.dx, y: [...bed.y] } };
+      });
+      expect(r.p.index).toBe(target.low);
+      expect(r.p.visible).toBe(true);
+      // The label's pill (7 px wider and 2 px taller each side than its words) ends at least 2 px
+      // above the seabed drawn under every 2 px of it (the bed's line through the scene's profile,
+      // linear between its points, as projects' seabedHeight has it).
+      const [lx, ly, lw, lh] = r.p.label as [number, number, number, number];
+      const bottom = ly + lh + 2;
+      let worst = Number.POSITIVE_INFINITY;
+      for (let px = lx - 7; px <= lx + lw + 7; px += 2) {
+        const x = r.cam.x + (px - r.cam.width / 2) / r.cam.zoom;
+        const f = Math.min(r.bed.y.length - 1.001, Math.max(0, (x - r.bed.x0) / r.bed.dx)),
+          i = Math.floor(f);
+        const y = r.bed.y[i]! + (r.bed.y[i + 1]! - r.bed.y[i]!) * (f - i);
+        worst = Math.min(worst, r.cam.height / 2 - (y - r.cam.y) * r.cam.zoom - bottom);
+      }
+      expect(worst, `${device}, boat ${dx} m, ${dy} m from the beacon: the label's pill over the bed by`).toBeGreaterThanOrEqual(2);
+      // Inside the view, and off the hull's box.
+      expect(ly - 2).toBeGreaterThanOrEqual(0);
+      const [hx, hy, hw, hh] = r.p.hull as [number, number, number, number];
+      const onHull = lx - 7 < hx + hw && hx < lx + lw + 7 && ly - 2 < hy + hh && hy < ly + lh + 2;
+      expect(onHull, `${device}, boat ${dx} m, ${dy} m from the beacon: label on the hull`).toBe(false);
+    }
+    // The status row above the scene is one line, even with the longest figures of a run (a 10
+    // minute clock, a 3-figure depth and depth ordered, a 5-figure score, a streak, a hit taken).
+    const row = await g.page.evaluate(async () => {
+      const w = window.game as unknown as P;
+      const c = w.world.components,
+        e = w.hull();
+      // Paused (the view still drawn), so the helm keeps the figures put.
+      w.paused = true;
+      c.Position.y[e] = -104;
+      Object.assign(w.state, { holdY: -110, score: 12340, streak: 5, hits: 1, time: 605 });
+      await new Promise((r) => setTimeout(r, 400));
+      const el = document.querySelector<HTMLElement>('[data-hud="gauges"]')!;
+      const line = Number.parseFloat(getComputedStyle(el).lineHeight),
+        pad = Number.parseFloat(getComputedStyle(el).paddingTop) + Number.parseFloat(getComputedStyle(el).paddingBottom);
+      return {
+        text: el.textContent ?? '',
+        height: el.getBoundingClientRect().height - pad,
+        line,
+        scroll: el.scrollWidth,
+        client: el.clientWidth,
+      };
+    });
+    expect(row.text).toContain('12340');
+    expect(row.text).toContain('104 → 110 m');
+    expect(row.height, `${device}: "${row.text}" on more than one line`).toBeLessThan(1.5 * row.line);
+    expect(row.scroll).toBeLessThanOrEqual(row.client);
     expect(g.errors).toEqual([]);
   }, 180_000);
 

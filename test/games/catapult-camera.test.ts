@@ -15,6 +15,7 @@ import {
   type Field,
   rockRight,
   UPRIGHT_GROUND,
+  UPRIGHT_GROUND_CLOSE,
   uprightAimView,
   uprightCastleView,
   uprightView,
@@ -79,8 +80,12 @@ describe('catapult camera', () => {
       expect(inside(castle), tag).toBe(true);
       // The castle's top under the banner (its four lines at 17 px type and panel: 16 + 4 x 1.3 x 17 + 6 = 110 px).
       expect(castle[1], tag).toBeGreaterThan(110);
-      // The lowest surface UPRIGHT_GROUND of the way up (to a millionth of a pixel).
-      expect(onScreen(aim, 0, f.floor, 1, f.floor)[3]!, tag).toBeCloseTo((1 - UPRIGHT_GROUND) * H, 6);
+      // The lowest surface UPRIGHT_GROUND of the way up, UPRIGHT_GROUND_CLOSE where the castle's
+      // close-up fills the earth (to a millionth of a pixel), in the castle's view too (the ground
+      // stays put as the camera follows a throw).
+      const ground = aimCloseUp(f, W, H) ? UPRIGHT_GROUND_CLOSE : UPRIGHT_GROUND;
+      expect(onScreen(aim, 0, f.floor, 1, f.floor)[3]!, tag).toBeCloseTo((1 - ground) * H, 6);
+      expect(onScreen(close, 0, f.floor, 1, f.floor)[3]!, tag).toBeCloseTo((1 - ground) * H, 6);
       // The castle's view: the castle and the rock whole, and at least 1.25 x the aim view's pixels a
       // metre (the opening look and the look button show the target larger than the aim view does).
       expect(inside(onScreen(close, f.castleMinX, f.floor, rockRight(f.castleMaxX), Math.max(f.castleTop, 2 * ROCK.hy))), tag).toBe(true);
@@ -96,6 +101,12 @@ describe('catapult camera', () => {
         const earth = H - onScreen(aim, 0, f.floor, 1, f.floor)[3]! - 12 - 8;
         const zoom = Math.min((W - 24) / ((f.castleMaxX - f.castleMinX + 1.2) * perM), earth / ((f.castleTop - f.floor + 1.1) * perM));
         expect(zoom, tag).toBeGreaterThanOrEqual(1.4);
+        // Drawn no smaller than with the ground at UPRIGHT_GROUND (the earth then 0.28 H - 20 px).
+        const before = Math.min(
+          (W - 24) / ((f.castleMaxX - f.castleMinX + 1.2) * perM),
+          (UPRIGHT_GROUND * H - 20) / ((f.castleTop - f.floor + 1.1) * perM),
+        );
+        expect(zoom, tag).toBeGreaterThanOrEqual(before);
         shownWhileAiming.push(level + 1);
       }
     }
