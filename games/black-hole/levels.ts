@@ -48,6 +48,7 @@ import {
   SHIP_RADIUS,
   schwarzschildMass,
   setThrust,
+  sideThrustShare,
   softWallPush,
   stepBlackHole,
   THRUST_DIRECTION,
@@ -445,7 +446,7 @@ export interface HeldFlight {
  * for each of up to LAYOUT_TRIES layouts, all in the frame a level starts). Each step is the game world's
  * step for the ship, operation for operation: the force starts at 0, each hole's attractor pull
  * -G M m d / |d|^3 (d from the hole to the ship; no softening) is added in the holes' order, then the
- * engine's m a (`rampThrust`, as the game's thrust law) and the soft side walls' (`softWallPush`), then semi-implicit Euler moves it
+ * engine's m a (`rampThrust`, its x part cut by `sideThrustShare`, as the game's thrust law) and the soft side walls' (`softWallPush`), then semi-implicit Euler moves it
  * (v += F / m dt, then x += v dt; the world has no uniform gravity and one substep). The game's world
  * sums the pulls in its own order of the holes, so the two paths agree to rounding
  * (test/games/black-hole-levels.test.ts flies them side by side).
@@ -478,6 +479,7 @@ export function heldFlight(game: BlackHoleGame, run: LevelRun, thrust: Thrust, p
     a = game.params.thrust,
     sideRamp = game.params.sideRamp,
     wall = game.params.softWall,
+    sideSpeed = game.params.sideSpeed,
     held = game.over ? 'none' : padThrust(thrust),
     d = THRUST_DIRECTION[held];
   const tx = a * game.params.sideScale * d[0],
@@ -517,7 +519,7 @@ export function heldFlight(game: BlackHoleGame, run: LevelRun, thrust: Thrust, p
     }
     rampThrust(engine, tx, ty, a, dt, sideRamp);
     if (engine[0] !== 0 || engine[1] !== 0) {
-      fx = fx + SHIP_MASS * engine[0];
+      fx = fx + SHIP_MASS * engine[0] * sideThrustShare(engine[0], vx, ty === 0 ? sideSpeed : Infinity);
       fy = fy + SHIP_MASS * engine[1];
     }
     const push = softWallPush(x, vx, engine[0], width, wall);
