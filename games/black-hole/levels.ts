@@ -44,6 +44,7 @@ import {
   MAX_HOLES,
   rampThrust,
   resetShip,
+  rewindLayouts,
   SHIP_MASS,
   SHIP_RADIUS,
   schwarzschildMass,
@@ -335,7 +336,8 @@ export interface LevelRun {
 
 /**
  * Lays out level `level` in `game` (holes per `levelSpec`, the ship at the start, the fuel full) and
- * returns its run, not waiting. The layout comes from the game's seeded generator.
+ * returns its run, not waiting. The layout comes from the game's seeded generator, rewound first
+ * (./rules.ts `rewindLayouts`): the same seed and level always give the same layout.
  * @throws RangeError on a bad level.
  */
 export function startLevel(game: BlackHoleGame, level: number): LevelRun {
@@ -394,6 +396,10 @@ function layLevel(game: BlackHoleGame, run: LevelRun, level: number): void {
   run.fallsAtStart = game.falls;
   run.parked = true;
   resetShip(game);
+  // The level's draws start where a new game's do, whatever came before (the levels before it, a
+  // retry): a level continued after a game over, or started with ?level=N, has the layout it had
+  // when reached from level 1, so a player learning it finds it unchanged.
+  rewindLayouts(game);
   // Drawn again while a thrust held from the start would clear it (the last draw stays if all do).
   for (let tries = 1; ; tries++) {
     layHoles(game, run, spec);

@@ -556,11 +556,29 @@ export function layoutHoles(game: BlackHoleGame, count = game.holes.length): voi
   game.holes.length = 0;
   game.holeRadius.length = 0;
   game.holeMass.length = 0;
-  const rng = game.rng;
   const G = gravitationalConstant(game),
     c = game.params.c;
+  const { xs, ys, rs } = drawLayout(game, count);
+  for (let k = 0; k < count; k++) {
+    const mass = schwarzschildMass(rs[k]!, c, G);
+    const e = addBody(world, { position: [xs[k]!, ys[k]!], static: true });
+    setAttractor(world, e, { mass });
+    game.holes.push(e);
+    game.holeRadius.push(rs[k]!);
+    game.holeMass.push(mass);
+  }
+  game.version++;
+}
+
+/**
+ * The draws of `layoutHoles` from `game.rng` for `count` holes: centres xs, ys (m) and horizon radii
+ * rs (m), the field left as it is.
+ */
+function drawLayout(game: BlackHoleGame, count: number): { xs: number[]; ys: number[]; rs: number[] } {
+  const rng = game.rng;
   const xs: number[] = [],
-    ys: number[] = [];
+    ys: number[] = [],
+    rs: number[] = [];
   for (let k = 0; k < count; k++) {
     let bestX = 0,
       bestY = 0,
@@ -572,7 +590,7 @@ export function layoutHoles(game: BlackHoleGame, count = game.holes.length): voi
       const y = rng.range(5 + r, game.lineY - 3 - r);
       // Smallest clearance to the other horizons (minus 3 m) and to the start (minus 4 m).
       let gap = Math.hypot(x - game.start[0], y - game.start[1]) - r - 4;
-      for (let j = 0; j < xs.length; j++) gap = Math.min(gap, Math.hypot(x - xs[j]!, y - ys[j]!) - r - game.holeRadius[j]! - 3);
+      for (let j = 0; j < xs.length; j++) gap = Math.min(gap, Math.hypot(x - xs[j]!, y - ys[j]!) - r - rs[j]! - 3);
       if (gap > bestGap) {
         bestGap = gap;
         bestX = x;
@@ -583,14 +601,20 @@ export function layoutHoles(game: BlackHoleGame, count = game.holes.length): voi
     }
     xs.push(bestX);
     ys.push(bestY);
-    const mass = schwarzschildMass(bestR, c, G);
-    const e = addBody(world, { position: [bestX, bestY], static: true });
-    setAttractor(world, e, { mass });
-    game.holes.push(e);
-    game.holeRadius.push(bestR);
-    game.holeMass.push(mass);
+    rs.push(bestR);
   }
-  game.version++;
+  return { xs, ys, rs };
+}
+
+/**
+ * Puts the game's layout generator (`game.rng`) back where a new game's stands once its first
+ * `params.holes` holes are laid out (`createBlackHoleGame`), the field left as it is: the layouts
+ * drawn next are those a new game of the same options draws first. The levels (./levels.ts) lay out
+ * each level from here, so a level has one layout per seed however it is reached.
+ */
+export function rewindLayouts(game: BlackHoleGame): void {
+  game.rng.reset(game.params.seed);
+  drawLayout(game, game.params.holes);
 }
 
 /**
