@@ -42,6 +42,7 @@ import {
   LINE_Y,
   MAX_FIELD_HOLES,
   MAX_HOLES,
+  padThrust,
   rampThrust,
   resetShip,
   rewindLayouts,
@@ -55,6 +56,8 @@ import {
   THRUST_DIRECTION,
   type Thrust,
 } from './rules';
+
+export { padThrust };
 
 /** What a level asks of the player. */
 export interface LevelSpec {
@@ -879,19 +882,6 @@ export function clearMessage(s: LevelSummary, lifeBack: boolean, next: number): 
     (lifeBack ? `A life back for clearing it: ${s.lives} ${s.lives === 1 ? 'life' : 'lives'}. ` : '') +
     `Press Enter for level ${next}.`
   );
-}
-
-/**
- * The thrust a ship parked on the start pad takes when `thrust` is asked: its downward part dropped
- * ('down' gives 'none', 'down-left' and 'down-right' give 'left' and 'right'); any other unchanged.
- * @throws RangeError if `thrust` is not a `Thrust`.
- */
-export function padThrust(thrust: Thrust): Thrust {
-  if (!(thrust in THRUST_DIRECTION)) throw new RangeError(`black-hole: padThrust: thrust must be a Thrust, got ${JSON.stringify(thrust)}`);
-  if (thrust === 'down') return 'none';
-  if (thrust === 'down-left') return 'left';
-  if (thrust === 'down-right') return 'right';
-  return thrust;
 }
 
 /** Whether thrust is possible now (fuel left, not waiting, not over). */

@@ -287,6 +287,9 @@ function createWorld(): PhysicsWorld {
     // The engine's sideways build-up is the field's (./rules.ts NARROW_SIDE_RAMP on a phone's narrow
     // field: a short hold of ← or → a small nudge there, a long one as strong for its width as here).
     field: playField,
+    // The classic game parks the ship on the start pad as the levels do (./levels.ts parks its own):
+    // it waits there, and ↓ does not fly it off the bottom of the field.
+    park: !levels,
   });
   run = levels ? startLevel(bh, continueLevel ?? params.level) : null;
   continueLevel = null;
@@ -1908,7 +1911,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
     // stands still do not redraw it (trying each way with the clock stopped would make levels 1-3 trivial).
     const liveThrust = bh.thrust;
     if (shell.paused) bh.thrust = pausedThrust;
-    const fromPad = run?.parked === true && bh.thrust === 'none' && canThrust(bh, run);
+    const fromPad = (run ? run.parked && canThrust(bh, run) : bh.parked) && bh.thrust === 'none';
     const steps = fromPad ? PAD_PATH_STEPS : PATH_STEPS;
     if (fromPad) {
       // Beside the path holding ↑, fainter: the paths holding ↖ and ↗, so the pad shows which way

@@ -215,6 +215,19 @@ export function heldThrust(held: readonly Arrow[]): Thrust {
   return vertical || horizontal || 'none';
 }
 
+/**
+ * The thrust a ship parked on the start pad takes when `thrust` is asked: its downward part dropped
+ * ('down' gives 'none', 'down-left' and 'down-right' give 'left' and 'right'); any other unchanged.
+ * @throws RangeError if `thrust` is not a `Thrust`.
+ */
+export function padThrust(thrust: Thrust): Thrust {
+  if (!(thrust in THRUST_DIRECTION)) throw new RangeError(`black-hole: padThrust: thrust must be a Thrust, got ${JSON.stringify(thrust)}`);
+  if (thrust === 'down') return 'none';
+  if (thrust === 'down-left') return 'left';
+  if (thrust === 'down-right') return 'right';
+  return thrust;
+}
+
 /** What happened in a step. */
 export type BlackHoleEvent = 'none' | 'fell' | 'scored' | 'lost' | 'over';
 
@@ -256,6 +269,13 @@ export interface BlackHoleOptions {
    * `sideThrustShare`). Default NARROW_SIDE_SPEED on a field narrower than `FIELD`, else Infinity.
    */
   sideSpeed?: number;
+  /**
+   * Whether the ship waits parked on the start pad after each reset (the start of the game, a fall,
+   * an exit, a crossing): held at rest there, the holes' pull ignored, until an arrow with a part
+   * other than ↓ thrusts; the downward part of an arrow held meanwhile is dropped (`padThrust`), so ↓
+   * cannot fly it off the bottom of the field. Default false (./levels.ts parks its ship itself).
+   */
+  park?: boolean;
   /**
    * Size of the playing field, m: width in [12, 64], height in [16, 64]. Default `FIELD` (32 x 24);
    * a phone held upright plays a tall one. The start is at the middle of the bottom, 1.5 m up, and
@@ -299,6 +319,11 @@ export interface BlackHoleGame {
   falls: number;
   crossings: number;
   resets: number;
+  /**
+   * Whether the ship waits parked at the start (`params.park`: from each reset until an arrow other
+   * than ↓ thrusts); always false without `params.park`.
+   */
+  parked: boolean;
   /** Bumped whenever the holes change (layout, G, c), so copies (the predictor) know to resync. */
   version: number;
   /** Generator of the layouts. */
@@ -320,7 +345,7 @@ function check(cond: boolean, message: string): void {
  * @throws TypeError on an unknown option; RangeError naming the option and value when out of range.
  */
 export function resolveBlackHoleOptions(options: BlackHoleOptions = {}): BlackHoleParams {
-  const known = ['seed', 'holes', 'gScale', 'c', 'thrust', 'lives', 'sideRamp', 'sideScale', 'softWall', 'sideSpeed', 'field'];
+  const known = ['seed', 'holes', 'gScale', 'c', 'thrust', 'lives', 'sideRamp', 'sideScale', 'softWall', 'sideSpeed', 'park', 'field'];
   for (const k of Object.keys(options)) {
     if (!known.includes(k)) throw new TypeError(`black-hole: unknown option ${JSON.stringify(k)}; known options are ${known.join(', ')}`);
   }
@@ -337,6 +362,7 @@ export function resolveBlackHoleOptions(options: BlackHoleOptions = {}): BlackHo
     sideScale: options.sideScale ?? (narrow ? (1 + fieldWidth / FIELD.width) / 2 : 1),
     softWall: options.softWall ?? (narrow ? SOFT_WALL.width : 0),
     sideSpeed: options.sideSpeed ?? (narrow ? NARROW_SIDE_SPEED : Infinity),
+    park: options.park ?? false,
     field: { width: options.field?.width ?? FIELD.width, height: options.field?.height ?? FIELD.height },
   };
   check(Number.isFinite(p.seed), `seed must be finite, got ${p.seed}`);
@@ -362,6 +388,7 @@ export function resolveBlackHoleOptions(options: BlackHoleOptions = {}): BlackHo
     `sideScale must be in [0.3, 1], got ${String(p.sideScale)}`,
   );
   check(typeof p.softWall === 'number' && p.softWall >= 0 && p.softWall <= 5, `softWall must be in [0, 5] m, got ${String(p.softWall)}`);
+  check(typeof p.park === 'boolean', `park must be a boolean, got ${String(p.park)}`);
   check(typeof p.sideSpeed === 'number' && p.sideSpeed >= 1, `sideSpeed must be in [1, Infinity] m/s, got ${String(p.sideSpeed)}`);
   return p;
 }
@@ -528,6 +555,7 @@ export function createBlackHoleGame(options: BlackHoleOptions = {}): BlackHoleGa
     falls: 0,
     crossings: 0,
     resets: 0,
+    parked: p.park,
     version: 0,
     rng: new Rng(p.seed),
     field: p.field,
@@ -676,6 +704,7 @@ export function resetShip(game: BlackHoleGame): void {
   setVelocity(game.world, game.ship, [0, 0]);
   game.thrustVec[0] = game.thrustVec[1] = 0;
   game.resets++;
+  game.parked = game.params.park;
 }
 
 /**
@@ -705,14 +734,26 @@ export function holeHit(game: BlackHoleGame, ax: number, ay: number, bx: number,
  * One step of the game: the physics step (thrust, the holes' pull, exhaust), then the rules in this
  * order: fell into a hole (a life lost; at zero the game is over), crossed the line (score += holes,
  * one more hole, new layout), left the field (back to the start, no penalty). Exhaust particles that
- * cross a horizon are removed. Once the game is over the ship waits at the start.
+ * cross a horizon are removed. Once the game is over the ship waits at the start; so does a parked one
+ * (`params.park`, `BlackHoleGame.parked`), which drops the thrust's downward part.
  * @returns what happened. @throws what `step` throws.
  */
 export function stepBlackHole(game: BlackHoleGame): BlackHoleEvent {
   const world = game.world;
+  // A parked ship (params.park) drops the downward part of the thrust (the pad is under it) and
+  // leaves the pad at the first thrust left.
+  if (game.parked) {
+    const t = padThrust(game.thrust);
+    if (t !== game.thrust) setThrust(game, t);
+    if (t !== 'none') game.parked = false;
+  }
   step(world);
   swallowParticles(game);
   const ship = game.ship;
+  if (game.parked) {
+    setPosition(world, ship, game.start);
+    setVelocity(world, ship, [0, 0]);
+  }
   const P = world.components.Position,
     O = world.components.PreviousPosition;
   if (game.over) {

@@ -26,6 +26,7 @@ import {
   pathEnd,
   predictPath,
   rampThrust,
+  resetShip,
   resolveBlackHoleOptions,
   restart,
   SHIP_RADIUS,
@@ -441,6 +442,41 @@ describe('thrust, exhaust, prediction', () => {
     const wide = coast(FIELD, 'none');
     expect(wide.params.softWall).toBe(0);
     expect(wide.lost).toBe(true);
+  });
+
+  test('park: the ship waits on the start pad until an arrow other than ↓ thrusts, and ↓ there never takes it off the field; without it ↓ does', () => {
+    const hold = (park: boolean, thrust: 'down' | 'down-right' | 'none', seconds: number) => {
+      const g = createBlackHoleGame({ seed: 4, holes: 5, park });
+      const s = slotOf(g.ship),
+        P = g.world.components.Position;
+      setThrust(g, thrust);
+      const events = new Set<string>();
+      let minY = Infinity;
+      for (let k = 0; k < seconds * 60; k++) {
+        events.add(stepBlackHole(g));
+        minY = Math.min(minY, P.y[s]!);
+      }
+      return { g, events, minY, at: [P.x[s]!, P.y[s]!] };
+    };
+    // 3 s of ↓ (it leaves the bottom, 1.5 m down, in 0.7 s at 6 m/s^2 without the pad): it stays put.
+    const down = hold(true, 'down', 3);
+    expect(down.events).toEqual(new Set(['none']));
+    expect(down.at).toEqual([...down.g.start]);
+    expect(down.g.parked).toBe(true);
+    expect(hold(false, 'down', 3).events.has('lost')).toBe(true);
+    // Waiting with nothing held, the holes' pull does not move it (it would drift without the pad).
+    expect(hold(true, 'none', 5).at).toEqual([...down.g.start]);
+    expect(hold(false, 'none', 5).at).not.toEqual([...down.g.start]);
+    // ↘ from the pad is →: it leaves the pad sideways, never below the pad's height.
+    const side = hold(true, 'down-right', 1);
+    expect(side.g.parked).toBe(false);
+    expect(side.g.thrust).toBe('right');
+    expect(side.at[0]).toBeGreaterThan(side.g.start[0] + 1);
+    expect(side.minY).toBeGreaterThanOrEqual(side.g.start[1] - 1e-9);
+    // A fall, an exit or a crossing (resetShip) parks it again; the option is checked.
+    resetShip(side.g);
+    expect(side.g.parked).toBe(true);
+    expect(() => createBlackHoleGame({ park: 1 as unknown as boolean })).toThrow(/park must be a boolean, got 1/);
   });
 
   test("a narrow field's side arrow alone builds at most NARROW_SIDE_SPEED: a hold of 1 s or more stays 2 m inside the field, a 0.6 s hold still dodges", () => {
