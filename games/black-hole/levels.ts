@@ -42,17 +42,22 @@ import {
   LINE_Y,
   MAX_FIELD_HOLES,
   MAX_HOLES,
+  padThrust,
   rampThrust,
   resetShip,
+  rewindLayouts,
   SHIP_MASS,
   SHIP_RADIUS,
   schwarzschildMass,
   setThrust,
+  sideThrustShare,
   softWallPush,
   stepBlackHole,
   THRUST_DIRECTION,
   type Thrust,
 } from './rules';
+
+export { padThrust };
 
 /** What a level asks of the player. */
 export interface LevelSpec {
@@ -334,7 +339,8 @@ export interface LevelRun {
 
 /**
  * Lays out level `level` in `game` (holes per `levelSpec`, the ship at the start, the fuel full) and
- * returns its run, not waiting. The layout comes from the game's seeded generator.
+ * returns its run, not waiting. The layout comes from the game's seeded generator, rewound first
+ * (./rules.ts `rewindLayouts`): the same seed and level always give the same layout.
  * @throws RangeError on a bad level.
  */
 export function startLevel(game: BlackHoleGame, level: number): LevelRun {
@@ -393,6 +399,10 @@ function layLevel(game: BlackHoleGame, run: LevelRun, level: number): void {
   run.fallsAtStart = game.falls;
   run.parked = true;
   resetShip(game);
+  // The level's draws start where a new game's do, whatever came before (the levels before it, a
+  // retry): a level continued after a game over, or started with ?level=N, has the layout it had
+  // when reached from level 1, so a player learning it finds it unchanged.
+  rewindLayouts(game);
   // Drawn again while a thrust held from the start would clear it (the last draw stays if all do).
   for (let tries = 1; ; tries++) {
     layHoles(game, run, spec);
@@ -445,7 +455,7 @@ export interface HeldFlight {
  * for each of up to LAYOUT_TRIES layouts, all in the frame a level starts). Each step is the game world's
  * step for the ship, operation for operation: the force starts at 0, each hole's attractor pull
  * -G M m d / |d|^3 (d from the hole to the ship; no softening) is added in the holes' order, then the
- * engine's m a (`rampThrust`, as the game's thrust law) and the soft side walls' (`softWallPush`), then semi-implicit Euler moves it
+ * engine's m a (`rampThrust`, its x part cut by `sideThrustShare`, as the game's thrust law) and the soft side walls' (`softWallPush`), then semi-implicit Euler moves it
  * (v += F / m dt, then x += v dt; the world has no uniform gravity and one substep). The game's world
  * sums the pulls in its own order of the holes, so the two paths agree to rounding
  * (test/games/black-hole-levels.test.ts flies them side by side).
@@ -478,6 +488,7 @@ export function heldFlight(game: BlackHoleGame, run: LevelRun, thrust: Thrust, p
     a = game.params.thrust,
     sideRamp = game.params.sideRamp,
     wall = game.params.softWall,
+    sideSpeed = game.params.sideSpeed,
     held = game.over ? 'none' : padThrust(thrust),
     d = THRUST_DIRECTION[held];
   const tx = a * game.params.sideScale * d[0],
@@ -517,7 +528,7 @@ export function heldFlight(game: BlackHoleGame, run: LevelRun, thrust: Thrust, p
     }
     rampThrust(engine, tx, ty, a, dt, sideRamp);
     if (engine[0] !== 0 || engine[1] !== 0) {
-      fx = fx + SHIP_MASS * engine[0];
+      fx = fx + SHIP_MASS * engine[0] * sideThrustShare(engine[0], vx, ty === 0 ? sideSpeed : Infinity);
       fy = fy + SHIP_MASS * engine[1];
     }
     const push = softWallPush(x, vx, engine[0], width, wall);
@@ -871,19 +882,6 @@ export function clearMessage(s: LevelSummary, lifeBack: boolean, next: number): 
     (lifeBack ? `A life back for clearing it: ${s.lives} ${s.lives === 1 ? 'life' : 'lives'}. ` : '') +
     `Press Enter for level ${next}.`
   );
-}
-
-/**
- * The thrust a ship parked on the start pad takes when `thrust` is asked: its downward part dropped
- * ('down' gives 'none', 'down-left' and 'down-right' give 'left' and 'right'); any other unchanged.
- * @throws RangeError if `thrust` is not a `Thrust`.
- */
-export function padThrust(thrust: Thrust): Thrust {
-  if (!(thrust in THRUST_DIRECTION)) throw new RangeError(`black-hole: padThrust: thrust must be a Thrust, got ${JSON.stringify(thrust)}`);
-  if (thrust === 'down') return 'none';
-  if (thrust === 'down-left') return 'left';
-  if (thrust === 'down-right') return 'right';
-  return thrust;
 }
 
 /** Whether thrust is possible now (fuel left, not waiting, not over). */

@@ -193,12 +193,14 @@ let pathPoints = 0;
 const PAD_SIDE_THRUSTS = ['up-left', 'up-right'] as const;
 /** Points of one of those paths, m (x0, y0, x1, y1, ...). */
 const sidePath = new Float64Array(2 * (PAD_PATH_STEPS + 1));
+/** Room in `dots` for the points that mark the holes for the coach to keep off (`addHoleDots`). */
+const HOLE_DOTS = 600;
 /**
  * Screen points, px, of what a caption must not cover this frame: every path dot drawn (the pad's side
  * paths too) and the ship (x0, y0, x1, y1, ...; `dotCount` of them). The coach and the path's "falls in"
  * are placed off them (`placeOffDots`).
  */
-const dots = new Float64Array(2 * (PATH_STEPS + 2 * PAD_PATH_STEPS + 16));
+const dots = new Float64Array(2 * (PATH_STEPS + 2 * PAD_PATH_STEPS + 16 + HOLE_DOTS));
 let dotCount = 0;
 /** Adds a point, px, to `dots` (ignored once it is full). */
 function addDot(x: number, y: number): void {
@@ -287,6 +289,9 @@ function createWorld(): PhysicsWorld {
     // The engine's sideways build-up is the field's (./rules.ts NARROW_SIDE_RAMP on a phone's narrow
     // field: a short hold of ← or → a small nudge there, a long one as strong for its width as here).
     field: playField,
+    // The classic game parks the ship on the start pad as the levels do (./levels.ts parks its own):
+    // it waits there, and ↓ does not fly it off the bottom of the field.
+    park: !levels,
   });
   run = levels ? startLevel(bh, continueLevel ?? params.level) : null;
   continueLevel = null;
@@ -324,11 +329,12 @@ const game = await startPixiGame({
     }
   },
   controls: [
-    // On a phone the card says it in one line (it fits above the finish line), teaches taps (on the
-    // narrow upright field a held diagonal soon leaves it) and, in a player's words, the seam: a
-    // thumb between a side arrow and ↑ or ↓ holds both (`padDirsAt`).
+    // On a phone the card says in one line (it fits above the finish line) what the coach of level 1
+    // says (`coachLine`: "Hold ↑ to fly"), that a side arrow is tapped (on the narrow upright field a
+    // long hold nears its side) and, in a player's words, the seam: a thumb between a side arrow and ↑
+    // holds both (`padDirsAt`), as the coach's "Hold → and ↑" asks.
     isTouchDevice()
-      ? { keys: '← ↑ → ↓', action: 'nudge; thumb between two: both', touch: 'tap ← ↑ → ↓' }
+      ? { keys: '← ↑ → ↓', action: 'thumb between two: both', touch: 'hold ↑ to fly, tap ← →' }
       : { keys: '← ↑ → ↓', action: 'thrust: a tap nudges, a hold builds up (two at once: diagonal)', touch: 'hold, slide ← ↑ → ↓' },
     { keys: 'Enter', action: 'next level / continue from this level', touch: 'tap the Level ▶ or Continue ↺ button', card: false },
     {
@@ -1536,6 +1542,55 @@ const pathLabel = new Text({
 pathLabel.visible = false;
 app.stage.addChild(pathLabel);
 
+/** Least gap between two dots of the predicted path drawn, px. */
+const PATH_DOT_GAP = 7;
+/**
+ * The words that say what the dots are, by the end of a path that runs on (grey, or blue to the
+ * line): "predicted path, next 3 s" or "predicted path: reaches the line", in the path's colour. Shown
+ * the first times a path runs on, for PATH_HINT_MS of play in all (the page's whole life: a player
+ * learns it once), not from the pad (where the pad's paths start at the ship, and level 1's coach says
+ * what the dots are).
+ */
+const pathHint = new Text({
+  text: '',
+  style: { fill: PATH_OPEN, fontSize: 13, fontFamily: 'sans-serif', fontWeight: 'bold', stroke: { color: 0x000000, width: 4 } },
+});
+pathHint.visible = false;
+app.stage.addChild(pathHint);
+/** How long the path's words show in all, ms of frames drawn in play. */
+const PATH_HINT_MS = 6000;
+/** What is left of PATH_HINT_MS, ms, and the frame it was last counted at (performance.now(), ms). */
+const pathHintLeft = { ms: PATH_HINT_MS, at: 0 };
+
+/**
+ * Shows `pathHint` by the end of the path drawn this frame (in `color`) while PATH_HINT_MS last, if the
+ * path runs on ('clear': the path ends are marked otherwise) and is not the pad's; beside the end, off
+ * the path's dots and the ship, inside the field.
+ */
+function drawPathHint(color: number, fromPad: boolean): void {
+  const now = performance.now();
+  const show = pathKind === 'clear' && !fromPad && pathHintLeft.ms > 0 && pathPoints >= 3;
+  if (show && !shell.paused) pathHintLeft.ms -= Math.min(100, Math.max(0, now - pathHintLeft.at));
+  pathHintLeft.at = now;
+  pathHint.visible = show;
+  if (!show) return;
+  const text = pathReachesLine ? 'predicted path: reaches the line' : 'predicted path, next 3 s';
+  if (pathHint.text !== text) pathHint.text = text;
+  if (pathHint.style.fill !== color) pathHint.style.fill = color;
+  const cam = renderer.camera;
+  const ex = cam.toScreenX(path[2 * pathPoints - 2]!),
+    ey = cam.toScreenY(path[2 * pathPoints - 1]!);
+  const x0 = cam.toScreenX(0) + 4,
+    x1 = cam.toScreenX(playField.width) - 4,
+    top = cam.toScreenY(playField.height) + 4,
+    bottom = cam.toScreenY(0) - 4;
+  const left = ex > cam.toScreenX(playField.width / 2);
+  pathHint.anchor.set(left ? 1 : 0, 0.5);
+  const at = left ? Math.max(x0 + pathHint.width, ex - 8) : Math.min(x1 - pathHint.width, ex + 8);
+  const y = Math.max(top + pathHint.height / 2, Math.min(bottom - pathHint.height / 2, ey));
+  placeOffDots(pathHint, at, y, x0, top, x1, bottom, 8);
+}
+
 /**
  * Marks how the path drawn this frame ends (`pathKind`; its last point lx, ly, m), so the end says
  * why it ends: where it falls in, a ring (dark under red, seen over the hole's orange disc) round the
@@ -1678,6 +1733,23 @@ function coachLine(x: number): string {
 }
 
 /**
+ * Adds to `dots` a grid of points, about 10 px apart, over each hole's drawing of the last frame
+ * (`holeExtents`: disc, ring and glow), so the coach is placed off the holes as off the path.
+ */
+function addHoleDots(): void {
+  const cam = renderer.camera;
+  for (const [l, r, b, t] of holeExtents.slice(0, bh.holes.length)) {
+    const x0 = cam.toScreenX(l!),
+      x1 = cam.toScreenX(r!),
+      y0 = cam.toScreenY(t!),
+      y1 = cam.toScreenY(b!);
+    const nx = Math.max(1, Math.ceil((x1 - x0) / 10)),
+      ny = Math.max(1, Math.ceil((y1 - y0) / 10));
+    for (let i = 0; i <= nx; i++) for (let j = 0; j <= ny; j++) addDot(x0 + ((x1 - x0) * i) / nx, y0 + ((y1 - y0) * j) / ny);
+  }
+}
+
+/**
  * Draws the coach (`coachLine`) beside the ship at screen (sx, sy), px, k px tall: on the side away
  * from where its path ends (else the roomier side), wrapped to the room there. Only on a practice
  * level in play, with the path shown, and neither a fall's words nor the level's title over the field.
@@ -1721,10 +1793,13 @@ function drawCoach(x: number, sx: number, sy: number, k: number): void {
   const tx = right ? Math.min(sx + gap, x1 - coachText.width) : Math.max(sx - gap, x0 + coachText.width);
   // Off the path's dots and the ship: beside the ship on the pad it would sit on the path holding ↗ (or ↖);
   // and off the path's "falls in" (near a hole the two met, the label half hidden).
-  if (pathLabel.visible) {
-    const b = pathLabel.getBounds();
-    for (let fx = 0; fx <= 1; fx += 0.25) for (const fy of [0, 0.5, 1]) addDot(b.x + fx * b.width, b.y + fy * b.height);
-  }
+  for (const label of [pathLabel, pathHint])
+    if (label.visible) {
+      const b = label.getBounds();
+      for (let fx = 0; fx <= 1; fx += 0.25) for (const fy of [0, 0.5, 1]) addDot(b.x + fx * b.width, b.y + fy * b.height);
+    }
+  // And off the holes: each one's disc, ring and glow (beside the pad's path it sat on the hole's ring).
+  addHoleDots();
   const fieldTop = cam.toScreenY(playField.height) + 4,
     fieldBottom = cam.toScreenY(0) - 4;
   placeOffDots(coachText, tx, Math.max(top, Math.min(bottom, sy - 0.2 * k)), x0, fieldTop, x1, fieldBottom);
@@ -1909,7 +1984,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
     // stands still do not redraw it (trying each way with the clock stopped would make levels 1-3 trivial).
     const liveThrust = bh.thrust;
     if (shell.paused) bh.thrust = pausedThrust;
-    const fromPad = run?.parked === true && bh.thrust === 'none' && canThrust(bh, run);
+    const fromPad = (run ? run.parked && canThrust(bh, run) : bh.parked) && bh.thrust === 'none';
     const steps = fromPad ? PAD_PATH_STEPS : PATH_STEPS;
     if (fromPad) {
       // Beside the path holding ↑, fainter: the paths holding ↖ and ↗, so the pad shows which way
@@ -1944,19 +2019,27 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
     const warn = pathKind !== 'clear';
     const color = warn ? PATH_WARN : pathReachesLine ? PATH_CLEAR : PATH_OPEN;
     // Dots fade along the path but stay plain to the end (faded to nothing, a path seemed to stop short).
-    for (let i = 1; i < pathPoints; i += 2) {
+    // At least PATH_DOT_GAP px apart, so a slow ship's path reads as dots, not as a drawn line; every
+    // point is kept off by the captions all the same.
+    let lastX = Infinity,
+      lastY = Infinity;
+    for (let i = 1; i < pathPoints; i++) {
       const dx = cam.toScreenX(path[2 * i]!),
         dy = cam.toScreenY(path[2 * i + 1]!);
+      if (i % 2 === 1) addDot(dx, dy);
+      if (Math.hypot(dx - lastX, dy - lastY) < PATH_DOT_GAP) continue;
+      [lastX, lastY] = [dx, dy];
       overlay.circle(dx, dy, warn ? 2.4 : 1.9).fill({ color, alpha: 0.4 * (1 - i / (steps + 1)) + 0.35 });
-      addDot(dx, dy);
     }
     drawPathEnd(lx, ly, color);
+    drawPathHint(color, fromPad);
   } else {
     pathPoints = 0;
     pathKind = 'clear';
     pathReachesLine = false;
     padPath = false;
     pathLabel.visible = false;
+    pathHint.visible = false;
   }
   // The ship: a small arrowhead, nose up, 1 m tall, with a flame out of the side opposite the thrust.
   // The ship is drawn at least SHIP_MIN_PX tall (on a phone's narrow field it would be under 20 px).
@@ -1969,7 +2052,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   shipPx = k;
   drawDeath();
   // The words of a fall are not drawn over the path's label ("falls in" under "Swallowed!").
-  if (deathText.visible) pathLabel.visible = false;
+  if (deathText.visible) pathLabel.visible = pathHint.visible = false;
   // One message at a time: paused over a fall's words (which then say it) or the game-over card, the
   // pause's own words are not drawn (the shade still dims the field).
   drawPauseLine(shell.paused && !deathText.visible && !bh.over);
@@ -2084,6 +2167,13 @@ shell.expose({
   coach: (): string => (coachText.visible ? coachText.text : ''),
   /** Why the path drawn in the last frame stops short, by its end ('falls in' or 'lost'), else ''. */
   pathLabel: (): string => (pathLabel.visible ? pathLabel.text : ''),
+  /** The words by the end of a path that runs on in the last frame, saying what the dots are (the first times only), else ''. */
+  pathHint: (): string => (pathHint.visible ? pathHint.text : ''),
+  /** A text's box in the last frame, px in the canvas [left, top, right, bottom]: 'coach', 'pathHint' or 'pathLabel'. */
+  textBox: (name: 'coach' | 'pathHint' | 'pathLabel'): number[] => {
+    const b = { coach: coachText, pathHint, pathLabel }[name].getBounds();
+    return [b.x, b.y, b.x + b.width, b.y + b.height];
+  },
   /**
    * The falls' effect: how many have begun, the words of the last one, the strongest red flash
    * drawn for it (0 to 0.45; 0 until a frame drew it), and whether the last frame showed the words.

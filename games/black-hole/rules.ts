@@ -17,8 +17,9 @@
  * - Falling into a hole (the ship, SHIP_RADIUS m round its centre, touching its horizon during a
  *   step) costs one of three lives; the ship goes back to the start.
  * - Leaving the field puts the ship back at the start without penalty. On a field narrower than
- *   `FIELD` (a phone's) soft side walls turn a coasting ship back (`SOFT_WALL`), and the sideways
- *   thrust is weaker (`BlackHoleOptions.sideScale`).
+ *   `FIELD` (a phone's) soft side walls turn a coasting ship back (`SOFT_WALL`), the sideways
+ *   thrust is weaker (`BlackHoleOptions.sideScale`) and a side arrow alone builds at most
+ *   `NARROW_SIDE_SPEED` sideways.
  * - At zero lives the game is over (the page restarts it with a key).
  *
  * Game-scale constants (SI would make a 1 m hole weigh 6.7e26 kg): G = `G_GAME` = 1 m^3 kg^-1 s^-2
@@ -119,9 +120,37 @@ export const NARROW_SIDE_RAMP = 0.9;
  * to 0 at `width` m in), plus `damp` s^-1 times its speed towards the edge, unless the engine thrusts
  * towards that edge (a held arrow still flies out, so a held diagonal leaves the field as before). A
  * ship drifting out after a tap turns back: coasting, it is stopped within `width` m from up to
- * sqrt(push x width) = 5 m/s. See `softWallPush`.
+ * sqrt(push x width) = 6.5 m/s, and from the top sideways speed a side arrow builds there
+ * (`NARROW_SIDE_SPEED`, 3 m/s) within 3 sqrt(width / push) = 1.4 m, 1.6 m inside the field. See
+ * `softWallPush`.
  */
-export const SOFT_WALL = Object.freeze({ width: 2.5, push: 10, damp: 1.5 });
+export const SOFT_WALL = Object.freeze({ width: 3, push: 14, damp: 3 });
+
+/**
+ * The top sideways speed the engine builds on a field narrower than `FIELD` (a phone's), m/s: its
+ * sideways push fades out over the last `SIDE_SPEED_FADE` m/s below it (`sideThrustShare`), so an arrow
+ * held for a second or more flies the ship sideways at this speed, not faster; the soft side walls
+ * (`SOFT_WALL`) stop a ship coasting at it well inside the field. Only while a side arrow is held
+ * alone (a dodge): a diagonal (a climb that steers) keeps the engine's whole sideways push, so a held
+ * diagonal still leaves the field, as the levels' layout check (./levels.ts `heldThrustClears`)
+ * expects. Coasting, falling and the holes' pull are not limited.
+ */
+export const NARROW_SIDE_SPEED = 3;
+
+/** The band of sideways speed, m/s, below the top one (`BlackHoleOptions.sideSpeed`) over which the engine's sideways push fades to 0. */
+export const SIDE_SPEED_FADE = 0.75;
+
+/**
+ * The share, in [0, 1], of the engine's sideways acceleration `engineX` (m/s^2) that acts on a ship
+ * moving sideways at vx (m/s) with top sideways speed `top` (m/s; Infinity: no limit): 1 while the
+ * engine pushes against the motion or the speed along the push is at most top - SIDE_SPEED_FADE,
+ * falling linearly to 0 at `top` and beyond.
+ */
+export function sideThrustShare(engineX: number, vx: number, top: number): number {
+  if (engineX === 0 || !(top < Infinity)) return 1;
+  const along = engineX > 0 ? vx : -vx;
+  return Math.max(0, Math.min(1, (top - along) / SIDE_SPEED_FADE));
+}
 
 /**
  * The acceleration, m/s^2 (+x towards the middle from the left edge), of the soft side walls on a
@@ -186,6 +215,19 @@ export function heldThrust(held: readonly Arrow[]): Thrust {
   return vertical || horizontal || 'none';
 }
 
+/**
+ * The thrust a ship parked on the start pad takes when `thrust` is asked: its downward part dropped
+ * ('down' gives 'none', 'down-left' and 'down-right' give 'left' and 'right'); any other unchanged.
+ * @throws RangeError if `thrust` is not a `Thrust`.
+ */
+export function padThrust(thrust: Thrust): Thrust {
+  if (!(thrust in THRUST_DIRECTION)) throw new RangeError(`black-hole: padThrust: thrust must be a Thrust, got ${JSON.stringify(thrust)}`);
+  if (thrust === 'down') return 'none';
+  if (thrust === 'down-left') return 'left';
+  if (thrust === 'down-right') return 'right';
+  return thrust;
+}
+
 /** What happened in a step. */
 export type BlackHoleEvent = 'none' | 'fell' | 'scored' | 'lost' | 'over';
 
@@ -222,6 +264,18 @@ export interface BlackHoleOptions {
    * SOFT_WALL.width on a field narrower than `FIELD`, else 0.
    */
   softWall?: number;
+  /**
+   * The top sideways speed the engine builds, m/s, in [1, Infinity] (Infinity: no limit; see
+   * `sideThrustShare`). Default NARROW_SIDE_SPEED on a field narrower than `FIELD`, else Infinity.
+   */
+  sideSpeed?: number;
+  /**
+   * Whether the ship waits parked on the start pad after each reset (the start of the game, a fall,
+   * an exit, a crossing): held at rest there, the holes' pull ignored, until an arrow with a part
+   * other than ↓ thrusts; the downward part of an arrow held meanwhile is dropped (`padThrust`), so ↓
+   * cannot fly it off the bottom of the field. Default false (./levels.ts parks its ship itself).
+   */
+  park?: boolean;
   /**
    * Size of the playing field, m: width in [12, 64], height in [16, 64]. Default `FIELD` (32 x 24);
    * a phone held upright plays a tall one. The start is at the middle of the bottom, 1.5 m up, and
@@ -265,6 +319,11 @@ export interface BlackHoleGame {
   falls: number;
   crossings: number;
   resets: number;
+  /**
+   * Whether the ship waits parked at the start (`params.park`: from each reset until an arrow other
+   * than ↓ thrusts); always false without `params.park`.
+   */
+  parked: boolean;
   /** Bumped whenever the holes change (layout, G, c), so copies (the predictor) know to resync. */
   version: number;
   /** Generator of the layouts. */
@@ -286,7 +345,7 @@ function check(cond: boolean, message: string): void {
  * @throws TypeError on an unknown option; RangeError naming the option and value when out of range.
  */
 export function resolveBlackHoleOptions(options: BlackHoleOptions = {}): BlackHoleParams {
-  const known = ['seed', 'holes', 'gScale', 'c', 'thrust', 'lives', 'sideRamp', 'sideScale', 'softWall', 'field'];
+  const known = ['seed', 'holes', 'gScale', 'c', 'thrust', 'lives', 'sideRamp', 'sideScale', 'softWall', 'sideSpeed', 'park', 'field'];
   for (const k of Object.keys(options)) {
     if (!known.includes(k)) throw new TypeError(`black-hole: unknown option ${JSON.stringify(k)}; known options are ${known.join(', ')}`);
   }
@@ -302,6 +361,8 @@ export function resolveBlackHoleOptions(options: BlackHoleOptions = {}): BlackHo
     sideRamp: options.sideRamp ?? (narrow ? NARROW_SIDE_RAMP : THRUST_RAMP.up),
     sideScale: options.sideScale ?? (narrow ? (1 + fieldWidth / FIELD.width) / 2 : 1),
     softWall: options.softWall ?? (narrow ? SOFT_WALL.width : 0),
+    sideSpeed: options.sideSpeed ?? (narrow ? NARROW_SIDE_SPEED : Infinity),
+    park: options.park ?? false,
     field: { width: options.field?.width ?? FIELD.width, height: options.field?.height ?? FIELD.height },
   };
   check(Number.isFinite(p.seed), `seed must be finite, got ${p.seed}`);
@@ -327,6 +388,8 @@ export function resolveBlackHoleOptions(options: BlackHoleOptions = {}): BlackHo
     `sideScale must be in [0.3, 1], got ${String(p.sideScale)}`,
   );
   check(typeof p.softWall === 'number' && p.softWall >= 0 && p.softWall <= 5, `softWall must be in [0, 5] m, got ${String(p.softWall)}`);
+  check(typeof p.park === 'boolean', `park must be a boolean, got ${String(p.park)}`);
+  check(typeof p.sideSpeed === 'number' && p.sideSpeed >= 1, `sideSpeed must be in [1, Infinity] m/s, got ${String(p.sideSpeed)}`);
   return p;
 }
 
@@ -420,7 +483,8 @@ export function rampThrust(vec: [number, number], tx: number, ty: number, full: 
 /**
  * The thrust force law: F = m a on the ship, a the engine's acceleration `engine.thrustVec`, which
  * each step moves towards a_T (s d_x, d_y) (d the unit vector of `game.thrust`, s `params.sideScale`;
- * 0 when none or when the game is over) as `rampThrust` says; then the soft side walls' push
+ * 0 when none or when the game is over) as `rampThrust` says, its x part cut near the top sideways
+ * speed (`sideThrustShare`, `params.sideSpeed`) while a side arrow alone is held; then the soft side walls' push
  * (`softWallPush`, `params.softWall` m wide). Runs in the forces stage. `engine` is the game (or the
  * predictor, which keeps its own copy of the engine).
  */
@@ -437,7 +501,8 @@ function thrustLaw(
     const F = world.components.Force;
     const s = slotOf(ship);
     if (v[0] !== 0 || v[1] !== 0) {
-      F.x[s] = F.x[s]! + SHIP_MASS * v[0];
+      F.x[s] =
+        F.x[s]! + SHIP_MASS * v[0] * sideThrustShare(v[0], world.components.Velocity.x[s]!, d[1] === 0 ? game.params.sideSpeed : Infinity);
       F.y[s] = F.y[s]! + SHIP_MASS * v[1];
     }
     const wall = softWallPush(
@@ -490,6 +555,7 @@ export function createBlackHoleGame(options: BlackHoleOptions = {}): BlackHoleGa
     falls: 0,
     crossings: 0,
     resets: 0,
+    parked: p.park,
     version: 0,
     rng: new Rng(p.seed),
     field: p.field,
@@ -518,11 +584,29 @@ export function layoutHoles(game: BlackHoleGame, count = game.holes.length): voi
   game.holes.length = 0;
   game.holeRadius.length = 0;
   game.holeMass.length = 0;
-  const rng = game.rng;
   const G = gravitationalConstant(game),
     c = game.params.c;
+  const { xs, ys, rs } = drawLayout(game, count);
+  for (let k = 0; k < count; k++) {
+    const mass = schwarzschildMass(rs[k]!, c, G);
+    const e = addBody(world, { position: [xs[k]!, ys[k]!], static: true });
+    setAttractor(world, e, { mass });
+    game.holes.push(e);
+    game.holeRadius.push(rs[k]!);
+    game.holeMass.push(mass);
+  }
+  game.version++;
+}
+
+/**
+ * The draws of `layoutHoles` from `game.rng` for `count` holes: centres xs, ys (m) and horizon radii
+ * rs (m), the field left as it is.
+ */
+function drawLayout(game: BlackHoleGame, count: number): { xs: number[]; ys: number[]; rs: number[] } {
+  const rng = game.rng;
   const xs: number[] = [],
-    ys: number[] = [];
+    ys: number[] = [],
+    rs: number[] = [];
   for (let k = 0; k < count; k++) {
     let bestX = 0,
       bestY = 0,
@@ -534,7 +618,7 @@ export function layoutHoles(game: BlackHoleGame, count = game.holes.length): voi
       const y = rng.range(5 + r, game.lineY - 3 - r);
       // Smallest clearance to the other horizons (minus 3 m) and to the start (minus 4 m).
       let gap = Math.hypot(x - game.start[0], y - game.start[1]) - r - 4;
-      for (let j = 0; j < xs.length; j++) gap = Math.min(gap, Math.hypot(x - xs[j]!, y - ys[j]!) - r - game.holeRadius[j]! - 3);
+      for (let j = 0; j < xs.length; j++) gap = Math.min(gap, Math.hypot(x - xs[j]!, y - ys[j]!) - r - rs[j]! - 3);
       if (gap > bestGap) {
         bestGap = gap;
         bestX = x;
@@ -545,14 +629,20 @@ export function layoutHoles(game: BlackHoleGame, count = game.holes.length): voi
     }
     xs.push(bestX);
     ys.push(bestY);
-    const mass = schwarzschildMass(bestR, c, G);
-    const e = addBody(world, { position: [bestX, bestY], static: true });
-    setAttractor(world, e, { mass });
-    game.holes.push(e);
-    game.holeRadius.push(bestR);
-    game.holeMass.push(mass);
+    rs.push(bestR);
   }
-  game.version++;
+  return { xs, ys, rs };
+}
+
+/**
+ * Puts the game's layout generator (`game.rng`) back where a new game's stands once its first
+ * `params.holes` holes are laid out (`createBlackHoleGame`), the field left as it is: the layouts
+ * drawn next are those a new game of the same options draws first. The levels (./levels.ts) lay out
+ * each level from here, so a level has one layout per seed however it is reached.
+ */
+export function rewindLayouts(game: BlackHoleGame): void {
+  game.rng.reset(game.params.seed);
+  drawLayout(game, game.params.holes);
 }
 
 /**
@@ -614,6 +704,7 @@ export function resetShip(game: BlackHoleGame): void {
   setVelocity(game.world, game.ship, [0, 0]);
   game.thrustVec[0] = game.thrustVec[1] = 0;
   game.resets++;
+  game.parked = game.params.park;
 }
 
 /**
@@ -643,14 +734,26 @@ export function holeHit(game: BlackHoleGame, ax: number, ay: number, bx: number,
  * One step of the game: the physics step (thrust, the holes' pull, exhaust), then the rules in this
  * order: fell into a hole (a life lost; at zero the game is over), crossed the line (score += holes,
  * one more hole, new layout), left the field (back to the start, no penalty). Exhaust particles that
- * cross a horizon are removed. Once the game is over the ship waits at the start.
+ * cross a horizon are removed. Once the game is over the ship waits at the start; so does a parked one
+ * (`params.park`, `BlackHoleGame.parked`), which drops the thrust's downward part.
  * @returns what happened. @throws what `step` throws.
  */
 export function stepBlackHole(game: BlackHoleGame): BlackHoleEvent {
   const world = game.world;
+  // A parked ship (params.park) drops the downward part of the thrust (the pad is under it) and
+  // leaves the pad at the first thrust left.
+  if (game.parked) {
+    const t = padThrust(game.thrust);
+    if (t !== game.thrust) setThrust(game, t);
+    if (t !== 'none') game.parked = false;
+  }
   step(world);
   swallowParticles(game);
   const ship = game.ship;
+  if (game.parked) {
+    setPosition(world, ship, game.start);
+    setVelocity(world, ship, [0, 0]);
+  }
   const P = world.components.Position,
     O = world.components.PreviousPosition;
   if (game.over) {

@@ -508,7 +508,7 @@ describe.each([
         if (!card) {
           card = document.createElement('div');
           card.className = 'bp-touch-hint';
-          card.innerHTML = '<div><b>tap ← ↑ → ↓</b><span>nudge; thumb between two: both</span></div>';
+          card.innerHTML = '<div><b>hold ↑ to fly, tap ← →</b><span>thumb between two: both</span></div>';
           document.querySelector('.bp-stage')!.append(card);
         }
         const hint = card.getBoundingClientRect();
@@ -1085,10 +1085,210 @@ describe('black hole on a phone (390 x 844, touch)', () => {
     const minX = await p.page.evaluate(() => (window as unknown as { track: { minX: number } }).track.minX);
     expect(end).not.toBe('lost');
     expect(minX).toBeGreaterThan(0);
-    // It did fly towards the edge (into the soft wall, the last 2.5 m), not straight up.
-    expect(minX).toBeLessThan(2.5);
+    // It did fly towards the edge (into the soft wall, the last 3 m), not straight up.
+    expect(minX).toBeLessThan(3);
     expect(p.errors).toEqual([]);
     await cdp.detach();
     await p.close();
   });
+});
+
+describe('black hole, a stranger on a phone (issue 34)', () => {
+  type Phone = {
+    bh: {
+      thrust: string;
+      message: string;
+      lives: number;
+      over: boolean;
+      falls: number;
+      resets: number;
+      holes: number[];
+      holeRadius: number[];
+      field: { width: number; height: number };
+      start: number[];
+      lineY: number;
+      world: { steps: number; components: Record<string, { x: Float64Array; y: Float64Array }> };
+    };
+    level: { waiting: boolean; parked: boolean; spec: { level: number } } | null;
+    ship(): number[];
+    coach(): string;
+    pathHint(): string;
+    pathShade(): string;
+    textBox(name: string): number[];
+    holeExtents(): number[][];
+    advance(): void;
+    renderer: { camera: { toScreenX(x: number): number; toScreenY(y: number): number } };
+  };
+
+  it('a 1 s touch hold of → flies the ship aside and the soft wall stops it 2 m inside the field; a 0.5 s hold still moves it 1 m', async () => {
+    // The stranger lost six lives learning that a 0.9-1 s hold carried the ship to the edge. A side
+    // arrow alone builds at most 3 m/s on the phone's field (games/black-hole/rules.ts
+    // NARROW_SIDE_SPEED), which the soft wall (its last 3 m) stops 2.4 m from the edge in the rules
+    // (test/games/black-hole-rules.test.ts); before, 1 s of it stopped 1.5 m from the edge, 2 s left the field.
+    const p = await h.openGame('black-hole', { viewport: { width: 390, height: 844 }, touch: true, query: { level: 1 } });
+    const right = (await p.page.getByRole('button', { name: 'thrust right', exact: true }).boundingBox())!;
+    const cdp = await p.page.context().newCDPSession(p.page);
+    const at = { x: right.x + right.width / 2, y: right.y + right.height / 2, id: 1 };
+    const fly = async (ms: number) => {
+      await p.page.evaluate(() => {
+        const w = window.game as unknown as Phone;
+        const track = { maxX: -Infinity, lost: false, steps: w.bh.world.steps, resets: w.bh.resets, x0: w.ship()[0]! };
+        (window as unknown as { track: typeof track }).track = track;
+        const each = () => {
+          track.maxX = Math.max(track.maxX, w.ship()[0]!);
+          if (w.bh.resets !== track.resets || w.bh.message.startsWith('Lost')) track.lost = true;
+          requestAnimationFrame(each);
+        };
+        requestAnimationFrame(each);
+      });
+      await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: [at] });
+      await p.page.waitForTimeout(ms);
+      await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
+      // 7 s of game time after the press, however slow the machine: long enough to reach the wall and turn.
+      await p.waitFor(
+        () => {
+          const w = window.game as unknown as Phone;
+          const t = (window as unknown as { track: { steps: number; lost: boolean } }).track;
+          return w.bh.world.steps - t.steps > 7 * 60 || t.lost;
+        },
+        null,
+        90_000,
+      );
+      return p.page.evaluate(() => {
+        const w = window.game as unknown as Phone;
+        const t = (window as unknown as { track: { maxX: number; lost: boolean; x0: number } }).track;
+        return { edge: w.bh.field.width - t.maxX, travel: t.maxX - t.x0, lost: t.lost };
+      });
+    };
+    const long = await fly(1000);
+    expect(long.lost, JSON.stringify(long)).toBe(false);
+    expect(long.edge, JSON.stringify(long)).toBeGreaterThan(2);
+    // It did fly aside into the wall's band, not nowhere.
+    expect(long.travel, JSON.stringify(long)).toBeGreaterThan(4);
+    await p.page.evaluate(() => (window.game as unknown as { reset(): void }).reset());
+    await p.page.waitForTimeout(300);
+    const nudge = await fly(500);
+    expect(nudge.lost, JSON.stringify(nudge)).toBe(false);
+    expect(nudge.travel, JSON.stringify(nudge)).toBeGreaterThan(1);
+    expect(p.errors).toEqual([]);
+    await cdp.detach();
+    await p.close();
+  }, 120_000);
+
+  it('level 1 on the pad: the card and the coach both say hold ↑ to fly, and the coach is clear of the hole; in flight the dots are named', async () => {
+    for (const touch of [true, false]) {
+      const viewport = touch ? { width: 390, height: 844 } : { width: 1280, height: 800 };
+      const p = await h.openGame('black-hole', { viewport, touch, query: { level: 1 } });
+      const coach = await p.waitFor(() => (window.game as unknown as Phone).coach(), null);
+      expect(coach).toMatch(/^Hold ↑ to fly\./);
+      const card = await p.page.evaluate(() => document.querySelector('[data-hud="touch-hint"]')?.textContent ?? '');
+      // The card's words for this device (the kit shows it on a touch screen).
+      if (touch) expect(card).toMatch(/^hold ↑ to fly, tap ← →/);
+      if (touch) expect(card).not.toMatch(/nudge/);
+      // In one line (it fits above the finish line).
+      if (touch)
+        expect(await p.page.evaluate(() => document.querySelector<HTMLElement>('[data-hud="touch-hint"]')!.offsetHeight)).toBeLessThan(40);
+      // The coach's box keeps off every hole's drawing (disc, ring and glow).
+      const hits = await p.page.evaluate(() => {
+        const w = window.game as unknown as Phone;
+        const cam = w.renderer.camera;
+        const [l, t, r, b] = w.textBox('coach');
+        return w
+          .holeExtents()
+          .filter(
+            ([x0, x1, y0, y1]) => cam.toScreenX(x1!) > l! && cam.toScreenX(x0!) < r! && cam.toScreenY(y0!) > t! && cam.toScreenY(y1!) < b!,
+          ).length;
+      });
+      expect(hits).toBe(0);
+      // A tap of ↑: the path then runs on, grey, and the words by its end say what it is.
+      await p.page.keyboard.down('ArrowUp');
+      await p.page.waitForTimeout(200);
+      await p.page.keyboard.up('ArrowUp');
+      const hint = await p.waitFor(() => {
+        const w = window.game as unknown as Phone;
+        return w.pathShade() === 'open' && w.pathHint();
+      }, null);
+      expect(hint).toBe('predicted path, next 3 s');
+      expect(p.errors).toEqual([]);
+      await p.close();
+    }
+  }, 120_000);
+
+  it('a retry meets the same layout: level 2 continued after a game over has the holes it had when reached from level 1', async () => {
+    const p = await h.openGame('black-hole', { viewport: { width: 390, height: 844 }, touch: true, query: { level: 1 } });
+    const holes = () =>
+      p.page.evaluate(() => {
+        const w = window.game as unknown as Phone;
+        const P = w.bh.world.components.Position!;
+        return w.bh.holes.map((e, i) => [P.x[e % 2 ** 25]!, P.y[e % 2 ** 25]!, w.bh.holeRadius[i]!].map((v) => Math.round(v * 1e6) / 1e6));
+      });
+    // Level 1 cleared: the ship put just under the line, flying up.
+    await p.page.evaluate(() => {
+      const w = window.game as unknown as Phone;
+      const c = w.bh.world.components,
+        s = (w as unknown as { bh: { ship: number } }).bh.ship % 2 ** 25;
+      w.level!.parked = false;
+      c.Position!.y[s] = c.PreviousPosition!.y[s] = w.bh.lineY - 0.05;
+      c.Velocity!.y[s] = 3;
+    });
+    await p.waitFor(() => (window.game as unknown as Phone).level!.waiting, null);
+    await p.page.evaluate(() => (window.game as unknown as Phone).advance());
+    await p.waitFor(() => !(window.game as unknown as Phone).level!.waiting, null);
+    const reached = await holes();
+    expect(reached.length).toBeGreaterThan(5);
+    // Three falls: the ship put on a hole, each time once the ready moment is over.
+    for (let fall = 0; fall < 3; fall++) {
+      await p.waitFor(() => (window.game as unknown as { readyLeft(): number }).readyLeft() === 0, null);
+      const falls = await p.page.evaluate(() => {
+        const w = window.game as unknown as Phone;
+        const c = w.bh.world.components,
+          s = (w as unknown as { bh: { ship: number } }).bh.ship % 2 ** 25,
+          hole = w.bh.holes[0]! % 2 ** 25;
+        w.level!.parked = false;
+        c.Position!.x[s] = c.PreviousPosition!.x[s] = c.Position!.x[hole]!;
+        c.Position!.y[s] = c.PreviousPosition!.y[s] = c.Position!.y[hole]!;
+        return w.bh.falls;
+      });
+      await p.waitFor((n) => (window.game as unknown as Phone).bh.falls > n, falls);
+      // The holes stay as they were after each fall.
+      expect(await holes()).toEqual(reached);
+    }
+    expect(await p.page.evaluate(() => (window.game as unknown as Phone).bh.over)).toBe(true);
+    // Continue from level 2 (a new world): the same holes.
+    await p.page.evaluate(() => (window.game as unknown as Phone).advance());
+    await p.waitFor(() => {
+      const w = window.game as unknown as Phone;
+      return !w.bh.over && w.level!.spec.level === 2 && w.bh.holes.length > 0;
+    }, null);
+    expect(await holes()).toEqual(reached);
+    expect(p.errors).toEqual([]);
+    await p.close();
+  }, 120_000);
+
+  it('the classic game (?holes=3): ↓ held on the pad leaves the ship there, never off the field', async () => {
+    const p = await h.openGame('black-hole', { viewport: { width: 390, height: 844 }, touch: true, query: { holes: 3 } });
+    const down = (await p.page.getByRole('button', { name: 'thrust down', exact: true }).boundingBox())!;
+    const start = await p.page.evaluate(() => {
+      const w = window.game as unknown as Phone;
+      return { steps: w.bh.world.steps, resets: w.bh.resets, start: w.bh.start };
+    });
+    const cdp = await p.page.context().newCDPSession(p.page);
+    await cdp.send('Input.dispatchTouchEvent', {
+      type: 'touchStart',
+      touchPoints: [{ x: down.x + down.width / 2, y: down.y + down.height / 2, id: 1 }],
+    });
+    // 2 s of game time held (it left the bottom in 0.7 s before).
+    await p.waitFor((n) => (window.game as unknown as Phone).bh.world.steps - n > 120, start.steps);
+    const seen = await p.page.evaluate(() => {
+      const w = window.game as unknown as Phone;
+      return { resets: w.bh.resets, ship: w.ship().slice(0, 2), message: w.bh.message };
+    });
+    await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
+    expect(seen.resets, JSON.stringify(seen)).toBe(start.resets);
+    expect(seen.ship).toEqual(start.start);
+    expect(seen.message).not.toMatch(/Lost/);
+    expect(p.errors).toEqual([]);
+    await cdp.detach();
+    await p.close();
+  }, 120_000);
 });

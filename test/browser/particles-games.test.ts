@@ -841,9 +841,11 @@ describe('black hole', () => {
     await g.page.evaluate(() => {
       const game = window.game as unknown as BlackHoleGameHandle & {
         world: { components: { PreviousPosition: { x: Float64Array; y: Float64Array }; Velocity: { x: Float64Array; y: Float64Array } } };
-        bh: { ship: number };
+        bh: { ship: number; parked: boolean };
       };
       game.reset();
+      // Off the start pad (the classic game parks the ship there until the first thrust).
+      game.bh.parked = false;
       const c = game.world.components,
         hole = game.bh.holes[0]!,
         s = game.bh.ship;

@@ -254,6 +254,36 @@ describe('levels', () => {
     expect(found).toEqual([]);
   }, 120_000);
 
+  test('a level has one layout per seed: reached by clearing the levels before it, or started anew (a retry after a game over), on either field', () => {
+    // The holes (x, y, r) of level `level` in a game of `seed`, started directly, as the page does for
+    // ?level=N and for "Continue from level N" after a game over.
+    const holesOf = (g: BlackHoleGame): number[] =>
+      g.holes.flatMap((h, i) => [g.world.components.Position.x[slotOf(h)]!, g.world.components.Position.y[slotOf(h)]!, g.holeRadius[i]!]);
+    for (const field of [FIELD, { width: 20, height: 30 }])
+      for (const seed of [1, 2, 5]) {
+        const where = `${field.width}x${field.height} seed ${seed}`;
+        const g = createBlackHoleGame({ seed, field, lives: 9 });
+        const run = startLevel(g, 1);
+        for (const level of [2, 3, 4]) {
+          // Clear the level in play: the ship put just under the line, moving up.
+          g.world.components.Position.x[slotOf(g.ship)] = g.start[0];
+          g.world.components.Position.y[slotOf(g.ship)] = g.lineY - 0.01;
+          g.world.components.Velocity.y[slotOf(g.ship)] = 2;
+          setThrust(g, 'up');
+          stepLevel(g, run);
+          expect(run.waiting, `${where} level ${level - 1} cleared`).toBe(true);
+          beginLevel(g, run);
+          const fresh = createBlackHoleGame({ seed, field, lives: 9 });
+          startLevel(fresh, level);
+          expect(holesOf(g), `${where} level ${level}`).toEqual(holesOf(fresh));
+          // Another seed lays it out otherwise (the layouts are drawn, not fixed).
+          const other = createBlackHoleGame({ seed: seed + 100, field, lives: 9 });
+          startLevel(other, level);
+          expect(holesOf(other), `${where} level ${level}`).not.toEqual(holesOf(fresh));
+        }
+      }
+  });
+
   test("level 2's wall is of small holes, light, so its gap shows wide between their discs", () => {
     // The issue this answers: level 2 (after an easy level 1) cost a stranger three lives; its wall's
     // holes, grown to fit the old cap of 16, drew discs (2.6 radii across each side, main.ts DISC)

@@ -22,9 +22,11 @@ import {
   layoutHoles,
   MAX_HOLES,
   NARROW_SIDE_RAMP,
+  NARROW_SIDE_SPEED,
   pathEnd,
   predictPath,
   rampThrust,
+  resetShip,
   resolveBlackHoleOptions,
   restart,
   SHIP_RADIUS,
@@ -408,8 +410,8 @@ describe('thrust, exhaust, prediction', () => {
   test("a narrow field's soft side walls turn a coasting ship back within the bound its energy sets; a held arrow still leaves; the wide field has none", () => {
     // The ship coasting at 3 m/s towards the left edge from 6 m in, at the start's height (the holes,
     // c = 2 m/s, pull 25 times less than by default). The wall's spring alone, push q / w at q m into
-    // its last w m, stops it q m in where v^2 / 2 = push q^2 / (2 w): q = v sqrt(w / push) = 1.5 m for
-    // the default 2.5 m and 10 m/s^2; its damping only shortens that.
+    // its last w m, stops it q m in where v^2 / 2 = push q^2 / (2 w): q = v sqrt(w / push) = 1.39 m for
+    // the default 3 m and 14 m/s^2; its damping only shortens that.
     const coast = (field: { width: number; height: number }, thrust: 'none' | 'left') => {
       const g = createBlackHoleGame({ seed: 3, holes: 1, c: 2, field });
       const s = slotOf(g.ship);
@@ -427,7 +429,7 @@ describe('thrust, exhaust, prediction', () => {
     const phone = coast({ width: 20, height: 30 }, 'none');
     expect(phone.params.softWall).toBe(SOFT_WALL.width);
     const q = 3 * Math.sqrt(SOFT_WALL.width / SOFT_WALL.push);
-    expect(q).toBeCloseTo(1.5, 9);
+    expect(q).toBeCloseTo(3 * Math.sqrt(3 / 14), 9);
     expect(phone.lost).toBe(false);
     expect(phone.minX).toBeGreaterThan(SOFT_WALL.width - q - 0.02);
     // The damping does stop it sooner than the spring alone would (by more than the steps' rounding).
@@ -440,6 +442,91 @@ describe('thrust, exhaust, prediction', () => {
     const wide = coast(FIELD, 'none');
     expect(wide.params.softWall).toBe(0);
     expect(wide.lost).toBe(true);
+  });
+
+  test('park: the ship waits on the start pad until an arrow other than ↓ thrusts, and ↓ there never takes it off the field; without it ↓ does', () => {
+    const hold = (park: boolean, thrust: 'down' | 'down-right' | 'none', seconds: number) => {
+      const g = createBlackHoleGame({ seed: 4, holes: 5, park });
+      const s = slotOf(g.ship),
+        P = g.world.components.Position;
+      setThrust(g, thrust);
+      const events = new Set<string>();
+      let minY = Infinity;
+      for (let k = 0; k < seconds * 60; k++) {
+        events.add(stepBlackHole(g));
+        minY = Math.min(minY, P.y[s]!);
+      }
+      return { g, events, minY, at: [P.x[s]!, P.y[s]!] };
+    };
+    // 3 s of ↓ (it leaves the bottom, 1.5 m down, in 0.7 s at 6 m/s^2 without the pad): it stays put.
+    const down = hold(true, 'down', 3);
+    expect(down.events).toEqual(new Set(['none']));
+    expect(down.at).toEqual([...down.g.start]);
+    expect(down.g.parked).toBe(true);
+    expect(hold(false, 'down', 3).events.has('lost')).toBe(true);
+    // Waiting with nothing held, the holes' pull does not move it (it would drift without the pad).
+    expect(hold(true, 'none', 5).at).toEqual([...down.g.start]);
+    expect(hold(false, 'none', 5).at).not.toEqual([...down.g.start]);
+    // ↘ from the pad is →: it leaves the pad sideways, never below the pad's height.
+    const side = hold(true, 'down-right', 1);
+    expect(side.g.parked).toBe(false);
+    expect(side.g.thrust).toBe('right');
+    expect(side.at[0]).toBeGreaterThan(side.g.start[0] + 1);
+    expect(side.minY).toBeGreaterThanOrEqual(side.g.start[1] - 1e-9);
+    // A fall, an exit or a crossing (resetShip) parks it again; the option is checked.
+    resetShip(side.g);
+    expect(side.g.parked).toBe(true);
+    expect(() => createBlackHoleGame({ park: 1 as unknown as boolean })).toThrow(/park must be a boolean, got 1/);
+  });
+
+  test("a narrow field's side arrow alone builds at most NARROW_SIDE_SPEED: a hold of 1 s or more stays 2 m inside the field, a 0.6 s hold still dodges", () => {
+    // From rest in the middle of the phone's 20 m field, → held for `hold` s, then let go and coasting
+    // for 8 s; the one hole sits at the top middle (its pull at the ship, under 0.1 m/s^2, is
+    // negligible). With no limit a hold's speed grows by the sideways thrust, 6 x 0.8125 = 4.9 m/s^2,
+    // every second past the ramp; the walls' spring and damping stop a ship coasting at 3 m/s within
+    // q = 3 sqrt(width / push) m of their inner edge (the test above), so it stays more than
+    // width - q = 1.6 m from the field's edge.
+    const fly = (hold: number, field = { width: 20, height: 30 }, thrust: 'right' | 'up-right' = 'right') => {
+      const g = createBlackHoleGame({ seed: 3, holes: 1, field });
+      setPosition(g.world, g.holes[0]!, [field.width / 2, field.height - 0.5]);
+      g.version++;
+      const s = slotOf(g.ship),
+        P = g.world.components.Position,
+        V = g.world.components.Velocity;
+      const x0 = P.x[s]!;
+      setThrust(g, thrust);
+      let maxX = x0,
+        topV = 0,
+        lost = false,
+        after1 = 0;
+      for (let k = 0; k < (hold + 8) * 60 && !lost; k++) {
+        if (k === Math.round(hold * 60)) setThrust(g, 'none');
+        lost = stepBlackHole(g) === 'lost';
+        maxX = Math.max(maxX, P.x[s]!);
+        topV = Math.max(topV, V.x[s]!);
+        if (k === Math.round((hold + 1) * 60)) after1 = P.x[s]! - x0;
+      }
+      return { edge: field.width - maxX, topV, lost, after1, params: g.params };
+    };
+    for (const hold of [1, 1.5, 3]) {
+      const f = fly(hold);
+      expect(f.params.sideSpeed).toBe(NARROW_SIDE_SPEED);
+      expect(f.lost, `${hold} s`).toBe(false);
+      expect(f.topV, `${hold} s`).toBeLessThan(NARROW_SIDE_SPEED + 0.05);
+      expect(f.edge, `${hold} s`).toBeGreaterThan(SOFT_WALL.width - 3 * Math.sqrt(SOFT_WALL.width / SOFT_WALL.push));
+    }
+    // A 0.6 s hold is untouched by the limit (it gains 1.2 m/s): the ship moves 1.5 m aside within a
+    // second of the let-go, clear of a hole of the largest radius (1.4 m) ahead.
+    expect(fly(0.6).after1).toBeGreaterThan(1.5);
+    // A 1 s hold flies 3 m aside within that second (some 4 m).
+    expect(fly(1).after1).toBeGreaterThan(3);
+    // A diagonal is not limited (a held one leaves the narrow field, as the levels' layout check asks).
+    expect(fly(3, { width: 20, height: 30 }, 'up-right').topV).toBeGreaterThan(NARROW_SIDE_SPEED + 2);
+    // The wide field has no limit: 1.5 s of → there goes faster than 3 m/s.
+    const wide = fly(1.5, FIELD);
+    expect(wide.params.sideSpeed).toBe(Infinity);
+    expect(wide.topV).toBeGreaterThan(NARROW_SIDE_SPEED + 2);
+    expect(() => createBlackHoleGame({ sideSpeed: 0.5 })).toThrow(/sideSpeed must be in \[1, Infinity\] m\/s, got 0.5/);
   });
 
   test("a narrow field's sideways thrust is (1 + its width's share) / 2 of the thrust; up keeps the full thrust", () => {
