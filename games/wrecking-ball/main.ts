@@ -1422,7 +1422,7 @@ let pressId = -1;
  * it (`beginAim`; the swing goes when the press is let go, `releaseAt`); elsewhere, sends the hook
  * to the ground point under the pointer. @returns 'ball', 'aim', 'hook' or 'none'.
  */
-function pressAt(ndcX: number, ndcY: number): 'ball' | 'aim' | 'hook' | 'none' {
+function pressAt(ndcX: number, ndcY: number, deferHook = false): 'ball' | 'aim' | 'hook' | 'none' {
   const hit = renderer.pick(ndcX, ndcY, app.camera);
   if (hit && hit.eid === handles.ball) {
     if (outOfSwings()) return 'none';
@@ -1462,12 +1462,25 @@ function pressAt(ndcX: number, ndcY: number): 'ball' | 'aim' | 'hook' | 'none' {
     return 'aim';
   }
   if (!onGround) return 'none';
+  if (deferHook) {
+    pendingHook = [groundHit.x, groundHit.z];
+    return 'hook';
+  }
+  sendHook(groundHit.x, groundHit.z);
+  return 'hook';
+}
+/**
+ * Where a finger's press on open ground sends the hook once it lifts (null: none): a finger may yet
+ * be joined by a second one, a pinch of the camera that must leave the hook where it is.
+ */
+let pendingHook: [number, number] | null = null;
+/** Sends the hook to the ground point (x, z), m, dropping any swing planned or saved. */
+function sendHook(x: number, z: number): void {
   handles.controls.moves = [];
   next.piece = 0;
-  handles.controls.goal = [groundHit.x, groundHit.z];
+  handles.controls.goal = [x, z];
   aimed = 0;
   hintUntil = shell.world.time + HINT_SHOWN;
-  return 'hook';
 }
 /** Metres across the ground within which a tap beside a structure swings at it (see pieceNearGround). */
 const GROUND_NEAR = 1.8;
@@ -1576,11 +1589,7 @@ function releaseAt(ndcX: number, ndcY: number): 'swing' | 'armed' | 'none' {
   if (remote && !aiming.dragged) {
     // A tap on open ground with a piece armed: the hook goes there, as without one.
     aiming.armed = 0;
-    handles.controls.moves = [];
-    next.piece = 0;
-    handles.controls.goal = [aiming.gx, aiming.gz];
-    aimed = 0;
-    hintUntil = shell.world.time + HINT_SHOWN;
+    sendHook(aiming.gx, aiming.gz);
     return 'none';
   }
   if (!aiming.dragged && aiming.armed !== piece) {
@@ -1824,15 +1833,51 @@ function swingAt(piece: number, aim?: SwingRequest): boolean {
   return true;
 }
 
+/** The pointers down on the canvas now (fingers on a touch screen), by pointerId. */
+const pointersDown = new Set<number>();
+/**
+ * Whether a second pointer came down since none was: the gesture is a pinch or turn of the camera
+ * (the orbit controls take two fingers), so nothing aims, swings or sends the hook until all lift.
+ */
+let pinching = false;
+/**
+ * Cancels the press in progress as a second finger joins it: its aim (no swing), its grab of the
+ * ball (the swing the grab counted is given back) and the hook it would send on lifting.
+ */
+function cancelPress(): void {
+  if (pressId === -1) return;
+  pressId = -1;
+  aiming.piece = 0;
+  aiming.remote = false;
+  pendingHook = null;
+  if (drag.body === handles.ball && drag.body !== 0) {
+    drag.release();
+    handles.controls.released = Math.max(0, handles.controls.released - 1);
+  }
+}
 canvas.addEventListener('pointerdown', (event) => {
-  if (event.button !== 0) return;
+  pointersDown.add(event.pointerId);
+  if (pointersDown.size > 1) {
+    pinching = true;
+    cancelPress();
+    return;
+  }
+  if (pinching || event.button !== 0) return;
   app.toNdc(event.clientX, event.clientY, ndc);
-  const pressed = pressAt(ndc[0], ndc[1]);
-  if (pressed === 'ball' || pressed === 'aim') {
+  // A finger's press on open ground sends the hook when it lifts (it may turn into a pinch); a mouse's at once.
+  const pressed = pressAt(ndc[0], ndc[1], event.pointerType === 'touch');
+  if (pressed === 'ball' || pressed === 'aim' || (pressed === 'hook' && pendingHook !== null)) {
     pressId = event.pointerId;
     canvas.setPointerCapture(event.pointerId);
   }
 });
+// A pointer is up wherever it lifts (off the canvas too): the pinch ends when the last one does.
+const pointerGone = (event: PointerEvent): void => {
+  pointersDown.delete(event.pointerId);
+  if (pointersDown.size === 0) pinching = false;
+};
+window.addEventListener('pointerup', pointerGone, true);
+window.addEventListener('pointercancel', pointerGone, true);
 /** Farthest the hand may take a held ball from under the hook, across the ground, m. */
 const PULL_REACH = 4;
 /** The horizontal plane at the height the ball was grabbed: a held ball follows the pointer over the ground. */
@@ -1893,7 +1938,10 @@ canvas.addEventListener('pointermove', (event) => {
 const up = (event: PointerEvent): void => {
   if (event.pointerId !== pressId) return;
   pressId = -1;
+  const hook = pendingHook;
+  pendingHook = null;
   if (event.type === 'pointercancel') aiming.piece = 0;
+  else if (hook) sendHook(hook[0], hook[1]);
   if (aiming.piece !== 0) {
     app.toNdc(event.clientX, event.clientY, ndc);
     releaseAt(ndc[0], ndc[1]);
