@@ -1633,26 +1633,47 @@ function drawAim(): void {
   if (!aimPreview.visible) return;
   const P = shell.world.components.Position;
   // Its local +x along the ball's travel, its head 0.5 m short of the piece's centre; shortened
-  // while its tail would run off the screen (a target near a phone's edge cut the arrow there).
+  // while its far end would run off the screen (a target near a phone's edge cut the arrow there).
+  // On a touch screen it is drawn ahead of the piece instead, its tail ARROW_AHEAD past the piece's
+  // centre and its head farthest on: the finger pulls back behind the piece, and an arrow drawn
+  // there lay under the thumb.
   let length = 1.2 + 3.5 * aiming.power;
   const ux = Math.cos(aiming.direction),
     uz = Math.sin(aiming.direction);
   for (let k = 0; k < 8; k++) {
-    const back = 1.4 + length;
-    arrowTail.set(P.x[piece]! - back * ux, 0.08, P.z[piece]! - back * uz).project(app.camera);
+    const far = touch ? ARROW_AHEAD + length + 1.1 : -(1.4 + length);
+    arrowTail.set(P.x[piece]! + far * ux, 0.08, P.z[piece]! + far * uz).project(app.camera);
     if (Math.abs(arrowTail.x) < ARROW_EDGE && Math.abs(arrowTail.y) < ARROW_EDGE && arrowTail.z < 1) break;
     length = Math.max(ARROW_SHORTEST, 0.8 * length);
   }
+  // How far the whole arrow is moved along the travel: ahead of the piece on a touch screen.
+  const shift = touch ? ARROW_AHEAD + length + 1.2 : 0;
   aimPreview.position.set(P.x[piece]!, 0.08, P.z[piece]!);
   aimPreview.rotation.y = -aiming.direction;
   aimShaft.scale.x = length;
-  aimShaft.position.x = -1.2 - length / 2;
+  aimShaft.position.x = shift - 1.2 - length / 2;
   aimShaftEdge.scale.x = length + AIM_EDGE;
   aimShaftEdge.position.x = aimShaft.position.x - AIM_EDGE / 2;
-  aimHead.position.x = -0.9;
+  aimHead.position.x = shift - 0.9;
   // (The edge's triangle centred AIM_EDGE back of the fill's: its tip AIM_EDGE past the fill's.)
-  aimHeadEdge.position.x = -0.9 - AIM_EDGE;
+  aimHeadEdge.position.x = shift - 0.9 - AIM_EDGE;
   aimMaterial.color.setHSL(0.13 * (1 - aiming.power), 1, 0.55);
+}
+/** On a touch screen, how far past the piece's centre along the ball's travel the aim arrow's tail is drawn, m. */
+const ARROW_AHEAD = 0.7;
+/** Cosine of the largest angle between the ball's travel and the camera's line of sight (across the ground) that counts as glancing. */
+const GLANCING_COS = Math.cos((40 * Math.PI) / 180);
+const lookDir = new Vector3();
+/**
+ * Whether the swing being aimed sends the ball within 40 degrees of straight away from the camera
+ * (a pull toward the camera): the ball then runs along a row of pieces seen end on and meets few
+ * of them, and the hint says to aim across the screen.
+ */
+function glancing(): boolean {
+  app.camera.getWorldDirection(lookDir);
+  const across = Math.hypot(lookDir.x, lookDir.z);
+  if (across < 1e-6) return false;
+  return (Math.cos(aiming.direction) * lookDir.x + Math.sin(aiming.direction) * lookDir.z) / across > GLANCING_COS;
 }
 /** The piece the last swing was aimed at (marked with a ring and an arrow while the swing runs), or 0. */
 let aimed = 0;
@@ -2316,6 +2337,8 @@ function hintText(): string {
     return clearedBanner();
   }
   if (aiming.piece !== 0 && aiming.dragged && onRun()) return 'Let go to aim the next swing: it goes as soon as this one has hit';
+  if (aiming.piece !== 0 && aiming.dragged && glancing())
+    return `Glancing: the ball runs away from you and hits few blocks. Aim across the screen (${pullWords()})`;
   if (aiming.piece !== 0 && aiming.dragged && handles.controls.moves.length > 0 && aimed !== 0)
     return `Winding up… let go to re-aim this swing (no swing used): ${pullWords()}`;
   if (aiming.piece !== 0 && aiming.dragged)
