@@ -11,12 +11,12 @@ import { Harness, START_TIMEOUT_MS } from './harness';
 type Pt = { x: number; y: number; id: number };
 interface WB {
   swings(): { used: number };
-  handles(): { controls: { moves: unknown[]; goal: number[] | null } };
+  handles(): { controls: { moves: unknown[]; goal: number[] | null }; pieces: { body: number; kind: string }[] };
   aim(): { piece: number };
   app: { camera: { position: { x: number; y: number; z: number } } };
 }
 
-describe('wrecking ball: a pinch on a phone', () => {
+describe('wrecking ball on a phone: a pinch, a glancing pull', () => {
   let h: Harness;
   beforeAll(async () => {
     h = await Harness.start();
@@ -50,6 +50,56 @@ describe('wrecking ball: a pinch on a phone', () => {
     await send('touchMove', [{ ...b(8), x: b(8).x + 20 }]);
     await send('touchEnd', []);
   }
+
+  it('a pull toward the camera says it will glance; a pull across the screen does not', async () => {
+    const g = await h.openGame('wrecking-ball', {
+      viewport: { width: 390, height: 844 },
+      touch: true,
+      query: { level: 1, shadows: 0 },
+      readyTimeoutMs: 60_000,
+    });
+    await g.press('p');
+    // The drawn centre of level 1's tower's lowest block, page px.
+    const tower = await g.page.evaluate(() => {
+      type G = WB & {
+        world: { components: { Position: { y: Float64Array } } };
+        renderer: { drawnPosition(e: number): number[] | null };
+        app: {
+          camera: { position: { clone(): { set(x: number, y: number, z: number): { project(c: unknown): { x: number; y: number } } } } };
+        };
+      };
+      const game = window.game as unknown as G;
+      const P = game.world.components.Position;
+      const low = game
+        .handles()
+        .pieces.filter((p) => p.kind === 'tower')
+        .reduce((a, b) => (P.y[b.body]! < P.y[a.body]! ? b : a)).body;
+      const at = game.renderer.drawnPosition(low)!;
+      const s = game.app.camera.position.clone().set(at[0]!, at[1]!, at[2]!).project(game.app.camera);
+      const r = document.querySelector('canvas')!.getBoundingClientRect();
+      return { x: r.left + ((s.x + 1) / 2) * r.width, y: r.top + ((1 - s.y) / 2) * r.height };
+    });
+    /** The hint while a finger pulls (dx, dy) px from the tower, before it lifts (the touch is then cancelled). */
+    const hintWhilePulling = async (dx: number, dy: number): Promise<string> => {
+      const cdp = await g.page.context().newCDPSession(g.page);
+      const pt = (k: number): Pt[] => [{ x: tower.x + (dx * k) / 5, y: tower.y + (dy * k) / 5, id: 1 }];
+      await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: pt(0) });
+      for (let k = 1; k <= 5; k++) await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: pt(k) });
+      await g.page.waitForTimeout(200);
+      const text = (await g.page.locator('[data-hud="tap-hint"]').textContent()) ?? '';
+      await cdp.send('Input.dispatchTouchEvent', { type: 'touchCancel', touchPoints: [] });
+      await cdp.detach();
+      return text;
+    };
+    // Straight down the screen: the ball would run straight away from the camera.
+    expect(await hintWhilePulling(0, 100)).toMatch(/^Glancing/);
+    // To the left: the ball runs across the screen.
+    const across = await hintWhilePulling(-90, 0);
+    expect(across).toMatch(/^Let go to swing along the arrow/);
+    expect(await g.page.evaluate(() => (window.game as unknown as WB).swings().used)).toBe(0);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
 
   for (const stagger of [0, 80]) {
     it(`a pinch (second finger ${stagger} ms after the first) uses no swing, aims nothing and leaves the hook`, async () => {
