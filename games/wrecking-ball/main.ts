@@ -1877,6 +1877,12 @@ function cancelPress(): void {
   }
 }
 canvas.addEventListener('pointerdown', (event) => {
+  // A primary pointer comes down with no other of its kind down: none is left from before (a lift
+  // the page never heard of would otherwise make every later touch a pinch).
+  if (event.isPrimary) {
+    pointersDown.clear();
+    pinching = false;
+  }
   pointersDown.add(event.pointerId);
   if (pointersDown.size > 1) {
     pinching = true;
