@@ -1422,7 +1422,7 @@ let pressId = -1;
  * it (`beginAim`; the swing goes when the press is let go, `releaseAt`); elsewhere, sends the hook
  * to the ground point under the pointer. @returns 'ball', 'aim', 'hook' or 'none'.
  */
-function pressAt(ndcX: number, ndcY: number): 'ball' | 'aim' | 'hook' | 'none' {
+function pressAt(ndcX: number, ndcY: number, deferHook = false): 'ball' | 'aim' | 'hook' | 'none' {
   const hit = renderer.pick(ndcX, ndcY, app.camera);
   if (hit && hit.eid === handles.ball) {
     if (outOfSwings()) return 'none';
@@ -1462,12 +1462,25 @@ function pressAt(ndcX: number, ndcY: number): 'ball' | 'aim' | 'hook' | 'none' {
     return 'aim';
   }
   if (!onGround) return 'none';
+  if (deferHook) {
+    pendingHook = [groundHit.x, groundHit.z];
+    return 'hook';
+  }
+  sendHook(groundHit.x, groundHit.z);
+  return 'hook';
+}
+/**
+ * Where a finger's press on open ground sends the hook once it lifts (null: none): a finger may yet
+ * be joined by a second one, a pinch of the camera that must leave the hook where it is.
+ */
+let pendingHook: [number, number] | null = null;
+/** Sends the hook to the ground point (x, z), m, dropping any swing planned or saved. */
+function sendHook(x: number, z: number): void {
   handles.controls.moves = [];
   next.piece = 0;
-  handles.controls.goal = [groundHit.x, groundHit.z];
+  handles.controls.goal = [x, z];
   aimed = 0;
   hintUntil = shell.world.time + HINT_SHOWN;
-  return 'hook';
 }
 /** Metres across the ground within which a tap beside a structure swings at it (see pieceNearGround). */
 const GROUND_NEAR = 1.8;
@@ -1576,11 +1589,7 @@ function releaseAt(ndcX: number, ndcY: number): 'swing' | 'armed' | 'none' {
   if (remote && !aiming.dragged) {
     // A tap on open ground with a piece armed: the hook goes there, as without one.
     aiming.armed = 0;
-    handles.controls.moves = [];
-    next.piece = 0;
-    handles.controls.goal = [aiming.gx, aiming.gz];
-    aimed = 0;
-    hintUntil = shell.world.time + HINT_SHOWN;
+    sendHook(aiming.gx, aiming.gz);
     return 'none';
   }
   if (!aiming.dragged && aiming.armed !== piece) {
@@ -1624,26 +1633,47 @@ function drawAim(): void {
   if (!aimPreview.visible) return;
   const P = shell.world.components.Position;
   // Its local +x along the ball's travel, its head 0.5 m short of the piece's centre; shortened
-  // while its tail would run off the screen (a target near a phone's edge cut the arrow there).
+  // while its far end would run off the screen (a target near a phone's edge cut the arrow there).
+  // On a touch screen it is drawn ahead of the piece instead, its tail ARROW_AHEAD past the piece's
+  // centre and its head farthest on: the finger pulls back behind the piece, and an arrow drawn
+  // there lay under the thumb.
   let length = 1.2 + 3.5 * aiming.power;
   const ux = Math.cos(aiming.direction),
     uz = Math.sin(aiming.direction);
   for (let k = 0; k < 8; k++) {
-    const back = 1.4 + length;
-    arrowTail.set(P.x[piece]! - back * ux, 0.08, P.z[piece]! - back * uz).project(app.camera);
+    const far = touch ? ARROW_AHEAD + length + 1.1 : -(1.4 + length);
+    arrowTail.set(P.x[piece]! + far * ux, 0.08, P.z[piece]! + far * uz).project(app.camera);
     if (Math.abs(arrowTail.x) < ARROW_EDGE && Math.abs(arrowTail.y) < ARROW_EDGE && arrowTail.z < 1) break;
     length = Math.max(ARROW_SHORTEST, 0.8 * length);
   }
+  // How far the whole arrow is moved along the travel: ahead of the piece on a touch screen.
+  const shift = touch ? ARROW_AHEAD + length + 1.2 : 0;
   aimPreview.position.set(P.x[piece]!, 0.08, P.z[piece]!);
   aimPreview.rotation.y = -aiming.direction;
   aimShaft.scale.x = length;
-  aimShaft.position.x = -1.2 - length / 2;
+  aimShaft.position.x = shift - 1.2 - length / 2;
   aimShaftEdge.scale.x = length + AIM_EDGE;
   aimShaftEdge.position.x = aimShaft.position.x - AIM_EDGE / 2;
-  aimHead.position.x = -0.9;
+  aimHead.position.x = shift - 0.9;
   // (The edge's triangle centred AIM_EDGE back of the fill's: its tip AIM_EDGE past the fill's.)
-  aimHeadEdge.position.x = -0.9 - AIM_EDGE;
+  aimHeadEdge.position.x = shift - 0.9 - AIM_EDGE;
   aimMaterial.color.setHSL(0.13 * (1 - aiming.power), 1, 0.55);
+}
+/** On a touch screen, how far past the piece's centre along the ball's travel the aim arrow's tail is drawn, m. */
+const ARROW_AHEAD = 0.7;
+/** Cosine of the largest angle between the ball's travel and the camera's line of sight (across the ground) that counts as glancing. */
+const GLANCING_COS = Math.cos((40 * Math.PI) / 180);
+const lookDir = new Vector3();
+/**
+ * Whether the swing being aimed sends the ball within 40 degrees of straight away from the camera
+ * (a pull toward the camera): the ball then runs along a row of pieces seen end on and meets few
+ * of them, and the hint says to aim across the screen.
+ */
+function glancing(): boolean {
+  app.camera.getWorldDirection(lookDir);
+  const across = Math.hypot(lookDir.x, lookDir.z);
+  if (across < 1e-6) return false;
+  return (Math.cos(aiming.direction) * lookDir.x + Math.sin(aiming.direction) * lookDir.z) / across > GLANCING_COS;
 }
 /** The piece the last swing was aimed at (marked with a ring and an arrow while the swing runs), or 0. */
 let aimed = 0;
@@ -1824,15 +1854,57 @@ function swingAt(piece: number, aim?: SwingRequest): boolean {
   return true;
 }
 
+/** The pointers down on the canvas now (fingers on a touch screen), by pointerId. */
+const pointersDown = new Set<number>();
+/**
+ * Whether a second pointer came down since none was: the gesture is a pinch or turn of the camera
+ * (the orbit controls take two fingers), so nothing aims, swings or sends the hook until all lift.
+ */
+let pinching = false;
+/**
+ * Cancels the press in progress as a second finger joins it: its aim (no swing), its grab of the
+ * ball (the swing the grab counted is given back) and the hook it would send on lifting.
+ */
+function cancelPress(): void {
+  if (pressId === -1) return;
+  pressId = -1;
+  aiming.piece = 0;
+  aiming.remote = false;
+  pendingHook = null;
+  if (drag.body === handles.ball && drag.body !== 0) {
+    drag.release();
+    handles.controls.released = Math.max(0, handles.controls.released - 1);
+  }
+}
 canvas.addEventListener('pointerdown', (event) => {
-  if (event.button !== 0) return;
+  // A primary pointer comes down with no other of its kind down: none is left from before (a lift
+  // the page never heard of would otherwise make every later touch a pinch).
+  if (event.isPrimary) {
+    pointersDown.clear();
+    pinching = false;
+  }
+  pointersDown.add(event.pointerId);
+  if (pointersDown.size > 1) {
+    pinching = true;
+    cancelPress();
+    return;
+  }
+  if (pinching || event.button !== 0) return;
   app.toNdc(event.clientX, event.clientY, ndc);
-  const pressed = pressAt(ndc[0], ndc[1]);
-  if (pressed === 'ball' || pressed === 'aim') {
+  // A finger's press on open ground sends the hook when it lifts (it may turn into a pinch); a mouse's at once.
+  const pressed = pressAt(ndc[0], ndc[1], event.pointerType === 'touch');
+  if (pressed === 'ball' || pressed === 'aim' || (pressed === 'hook' && pendingHook !== null)) {
     pressId = event.pointerId;
     canvas.setPointerCapture(event.pointerId);
   }
 });
+// A pointer is up wherever it lifts (off the canvas too): the pinch ends when the last one does.
+const pointerGone = (event: PointerEvent): void => {
+  pointersDown.delete(event.pointerId);
+  if (pointersDown.size === 0) pinching = false;
+};
+window.addEventListener('pointerup', pointerGone, true);
+window.addEventListener('pointercancel', pointerGone, true);
 /** Farthest the hand may take a held ball from under the hook, across the ground, m. */
 const PULL_REACH = 4;
 /** The horizontal plane at the height the ball was grabbed: a held ball follows the pointer over the ground. */
@@ -1893,7 +1965,10 @@ canvas.addEventListener('pointermove', (event) => {
 const up = (event: PointerEvent): void => {
   if (event.pointerId !== pressId) return;
   pressId = -1;
+  const hook = pendingHook;
+  pendingHook = null;
   if (event.type === 'pointercancel') aiming.piece = 0;
+  else if (hook) sendHook(hook[0], hook[1]);
   if (aiming.piece !== 0) {
     app.toNdc(event.clientX, event.clientY, ndc);
     releaseAt(ndc[0], ndc[1]);
@@ -2268,6 +2343,8 @@ function hintText(): string {
     return clearedBanner();
   }
   if (aiming.piece !== 0 && aiming.dragged && onRun()) return 'Let go to aim the next swing: it goes as soon as this one has hit';
+  if (aiming.piece !== 0 && aiming.dragged && glancing())
+    return `Glancing: the ball runs away from you and hits few blocks. Aim across the screen (${pullWords()})`;
   if (aiming.piece !== 0 && aiming.dragged && handles.controls.moves.length > 0 && aimed !== 0)
     return `Winding up… let go to re-aim this swing (no swing used): ${pullWords()}`;
   if (aiming.piece !== 0 && aiming.dragged)
