@@ -262,7 +262,7 @@ function assemble(o: WorldSettings): PhysicsWorld {
   // bitecs' per-entity bookkeeping in fixed typed arrays, component Sets answered from the masks.
   useLeanEcsStorage(world, capacity);
   // The queries the integrators, the state checks, the sleep stage, the stages' idle guards, the
-  // forces plan, the 2D colliders and the joints ask every step, made while no entity exists: bitecs
+  // forces plan, the 2D colliders and the 2D joints ask every step, made while no entity exists: bitecs
   // keeps them as bodies are added, where the first step, with the scene built, would fill each by a
   // pass over every entity.
   makeIntegratorQueries(world);
@@ -273,9 +273,11 @@ function assemble(o: WorldSettings): PhysicsWorld {
   const c = world.components;
   query(world, [c.Shape]);
   query(world, [c.Position, c.Ball]);
-  query(world, [c.Plane]);
-  query(world, [c.Segment]);
-  query(world, [c.Joint]);
+  if (dimensions === 2) {
+    query(world, [c.Plane]);
+    query(world, [c.Segment]);
+    query(world, [c.Joint]);
+  }
   return world;
 }
 
