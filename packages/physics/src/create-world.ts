@@ -8,6 +8,7 @@
 import { createEntityIndex, createWorld, observe, onAdd, onRemove } from 'bitecs';
 import { allocateCollisionScratch, createCollisionState } from './collision/state.js';
 import { removeSpringsOf } from './forces/spring.js';
+import { makeForceLawQueries } from './integrators/fused-gate.js';
 import { makeIntegratorQueries } from './integrators/queries.js';
 import { makeSleepQueries, wakeTouching } from './islands/sleep.js';
 import { removeJointsOf } from './joints/api-2d.js';
@@ -23,6 +24,7 @@ import {
 import { Rng } from './math/rng.js';
 import { setRowFamily } from './solver/row-families.js';
 import { makeCheckQueries } from './step/finite.js';
+import { makeGuardQueries } from './step/plan.js';
 import { createStages, STAGES } from './step/stages.js';
 import { makeThreadPool } from './threads/pool-maker.js';
 import { shareStores } from './threads/shared-stores.js';
@@ -259,14 +261,23 @@ function assemble(o: WorldSettings): PhysicsWorld {
   installDefaults(world);
   // bitecs' per-entity bookkeeping in fixed typed arrays, component Sets answered from the masks.
   useLeanEcsStorage(world, capacity);
-  // The queries the integrators, the state checks, the sleep stage and the 2D colliders ask every
-  // step, made while no entity exists: bitecs keeps them as bodies are added, where the first step,
-  // with the scene built, would fill each by a pass over every entity.
+  // The queries the integrators, the state checks, the sleep stage, the stages' idle guards, the
+  // forces plan, the 2D colliders and the 2D joints ask every step, made while no entity exists: bitecs
+  // keeps them as bodies are added, where the first step, with the scene built, would fill each by a
+  // pass over every entity.
   makeIntegratorQueries(world);
   makeCheckQueries(world);
   makeSleepQueries(world);
-  query(world, [world.components.Shape]);
-  query(world, [world.components.Position, world.components.Ball]);
+  makeGuardQueries(world);
+  makeForceLawQueries(world);
+  const c = world.components;
+  query(world, [c.Shape]);
+  query(world, [c.Position, c.Ball]);
+  if (dimensions === 2) {
+    query(world, [c.Plane]);
+    query(world, [c.Segment]);
+    query(world, [c.Joint]);
+  }
   return world;
 }
 

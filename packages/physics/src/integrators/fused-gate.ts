@@ -118,6 +118,21 @@ function forcesPlan(world: PhysicsWorld, forces: readonly System[]): ForcesPlan<
   return made;
 }
 
+/**
+ * Makes the queries of `world`'s forces plan (see forcesPlan: the Force accumulators' and the idle
+ * laws' of its forces stage) while it has no entity, so that its first step does not fill them
+ * (integrators/queries.ts makeIntegratorQueries). createPhysicsWorld calls it.
+ * @category Integrators
+ */
+export function makeForceLawQueries(world: PhysicsWorld): void {
+  const c = world.components;
+  query(world, [c.Force]);
+  for (const s of world.stages.forces) {
+    const idle = IDLE_WHEN.get(s);
+    if (idle !== undefined) query(world, idle[0](c));
+  }
+}
+
 let integrator: System | null = null;
 
 /**

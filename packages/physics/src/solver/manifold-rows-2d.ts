@@ -1,4 +1,5 @@
 import { MAX_MANIFOLDS } from '../collision/manifold-limits-2d.js';
+import type { ManifoldBuffer } from '../collision/manifolds-2d.js';
 import type { CollisionState } from '../collision/state.js';
 import type { PhysicsWorld } from '../world/options.js';
 import {
@@ -100,9 +101,18 @@ export function atLeast(a: Float64Array, n: number): Float64Array {
  * @category Collision
  */
 export function storeManifoldImpulses(cs: CollisionState): void {
-  const buf = cs.shapes.manifolds,
-    R = cs.shapes.solverRows;
-  for (let i = 0, n = buf.count; i < n; i++) {
+  const buf = cs.shapes.manifolds;
+  storeRows(buf, cs.shapes.solverRows, buf.count);
+}
+
+/**
+ * storeManifoldImpulses' loop over the first `n` rows of R into `buf`. Nothing is read before the loop:
+ * a world's first call runs the lines before it before V8 gives the function type feedback, V8 compiles
+ * the loop while it runs, and the whole function again at the next call, whose lines before the loop
+ * then lacked feedback and threw that code away (the same for warmStartRows).
+ */
+function storeRows(buf: ManifoldBuffer, R: Float64Array, n: number): void {
+  for (let i = 0; i < n; i++) {
     const r = i * MR_STRIDE;
     buf.rollingImpulse[i] = R[r + MR_ROLLING_IMPULSE]!;
     for (let p = 0, m = buf.pointCount[i]!; p < m; p++) {
@@ -120,9 +130,12 @@ export function storeManifoldImpulses(cs: CollisionState): void {
  * @category Collision
  */
 export function warmStartManifolds(cs: CollisionState): void {
-  const R = cs.shapes.solverRows,
-    sb = cs.bodyState;
-  for (let i = 0, n = Math.min(cs.shapes.manifolds.count, MAX_MANIFOLDS); i < n; i++) {
+  warmStartRows(cs.shapes.solverRows, cs.bodyState, Math.min(cs.shapes.manifolds.count, MAX_MANIFOLDS));
+}
+
+/** warmStartManifolds' loop over the first `n` rows of R, on the packed body state sb (see storeRows). */
+function warmStartRows(R: Float64Array, sb: Float64Array, n: number): void {
+  for (let i = 0; i < n; i++) {
     const r = i * MR_STRIDE;
     const a = (R[r + MR_BODY_A]! & MR_BODY_MASK) * BS2_STRIDE,
       b = (R[r + MR_BODY_B]! & MR_BODY_MASK) * BS2_STRIDE;
@@ -254,16 +267,30 @@ function accumulateRow(R: Float64Array, o1: number, two: boolean): void {
  * @category Collision
  */
 export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean): void {
-  const R = cs.shapes.solverRows,
-    sb = cs.bodyState,
-    ex = cs.bodyExtra,
-    base = cs.shapes.angleBase;
-  const T = cs.shapes.softness;
-  const invH = 1 / hs,
-    // The push-out speed cap as a lower bound of the bias.
-    minBias = -cs.settings.contactPushSpeed,
-    biasOn = useBias ? 1 : 0;
-  for (let i = 0, n = Math.min(cs.shapes.manifolds.count, MAX_MANIFOLDS); i < n; i++) {
+  const shapes = cs.shapes;
+  // The push-out speed cap as a lower bound of the bias.
+  const minBias = -cs.settings.contactPushSpeed;
+  const n = Math.min(shapes.manifolds.count, MAX_MANIFOLDS);
+  solveRows(shapes.solverRows, cs.bodyState, cs.bodyExtra, shapes.angleBase, shapes.softness, 1 / hs, minBias, useBias ? 1 : 0, n);
+}
+
+/**
+ * solveManifolds' loop over the first `n` rows of R (see storeRows), with the packed body state and
+ * extras sb and ex, the rotations at the step's start `base`, the softness table T, 1 / h_s `invH`
+ * (1/s), the bias's lower bound `minBias` (m/s) and `biasOn` (1: soft rows take their bias).
+ */
+function solveRows(
+  R: Float64Array,
+  sb: Float64Array,
+  ex: Float64Array,
+  base: Float64Array,
+  T: Float64Array,
+  invH: number,
+  minBias: number,
+  biasOn: number,
+  n: number,
+): void {
+  for (let i = 0; i < n; i++) {
     const r = i * MR_STRIDE;
     const ia = R[r + MR_BODY_A]! & MR_BODY_MASK,
       ib = R[r + MR_BODY_B]! & MR_BODY_MASK;

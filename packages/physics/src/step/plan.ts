@@ -66,6 +66,20 @@ function makePlan(world: PhysicsWorld, plans: StagePlans, stage: StageName, syst
 }
 
 /**
+ * Makes the queries of the idle guards of `world`'s systems in every stage (see `makePlan`) while it has
+ * no entity, so that its first step does not fill them (integrators/queries.ts makeIntegratorQueries).
+ * createPhysicsWorld calls it; the plans themselves are made by the first step, from these queries.
+ * @category World and step
+ */
+export function makeGuardQueries(world: PhysicsWorld): void {
+  for (const stage of STAGES)
+    for (const system of world.stages[stage]) {
+      const terms = idleGuardTerms(system, world);
+      if (terms !== null) for (const t of terms) query(world, t as object[]);
+    }
+}
+
+/**
  * Whether every array of `guard` is empty (the system it guards has nothing to do). A live query array
  * may still hold entities whose removal bitecs has not committed; those only make it longer, so an
  * empty array is empty after the commit too.
