@@ -347,20 +347,14 @@ export function prepareSolverBodies3D(world: PhysicsWorld): void {
     const ix = hasT ? IT.invX[e]! : 0,
       iy = hasT ? IT.invY[e]! : 0,
       iz = hasT ? IT.invZ[e]! : 0;
-    // No tensor (a ball), or equal principal moments (a cube, a sphere): R diag(i, i, i) R^T = i 1 exactly.
-    if ((ix === 0 && iy === 0 && iz === 0) || !(Q.w.length > e)) {
-      T[o + II3_XX] = ii;
-      T[o + II3_YY] = ii;
-      T[o + II3_ZZ] = ii;
-      T[o + II3_XY] = 0;
-      T[o + II3_XZ] = 0;
-      T[o + II3_YZ] = 0;
-      continue;
-    }
-    if (ix === iy && iy === iz) {
-      T[o + II3_XX] = ix;
-      T[o + II3_YY] = ix;
-      T[o + II3_ZZ] = ix;
+    // No tensor (a ball: the body's own inverse inertia), or equal principal moments (a cube, a
+    // sphere): R diag(i, i, i) R^T = i 1 exactly.
+    const untensored = (ix === 0 && iy === 0 && iz === 0) || !(Q.w.length > e);
+    if (untensored || (ix === iy && iy === iz)) {
+      const i = untensored ? ii : ix;
+      T[o + II3_XX] = i;
+      T[o + II3_YY] = i;
+      T[o + II3_ZZ] = i;
       T[o + II3_XY] = 0;
       T[o + II3_XZ] = 0;
       T[o + II3_YZ] = 0;
