@@ -1,6 +1,7 @@
 import { hasComponent } from 'bitecs';
 import { wakeIslandForStep } from '../islands/step-wake.js';
 import { M00, M01, M02, M10, M11, M12, M20, M21, M22, MAT3_STRIDE } from '../math/mat3-layout.js';
+import { multiplyQuaternions, rotateVector, rotationMatrix } from '../math/quaternion.js';
 import { Shape3DKind, type Shape3DStore, shapes3DOf } from '../shapes/store-3d.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
@@ -162,6 +163,8 @@ function markClasses(world: PhysicsWorld): number {
 
 /** The offset of a shape's centre from its body's centre, m (world), written by colliderRotation. */
 const shapeShift = new Float64Array(3);
+/** The shape's orientation in the world (colliderRotation): the body's composed with the placement. */
+const shapeQ = new Float64Array(4);
 
 /**
  * Writes the world rotation of shape e's collider at R[o + M00] (math/mat3-layout.ts): its body's start-of-step
@@ -186,32 +189,9 @@ function colliderRotation(s: Shape3DStore, e: number, isBall: boolean, R: Float6
     qz = bodyQ[2]!,
     qw = bodyQ[3]!;
   // Shape pose: body pose composed with the placement.
-  const px = s.px[e]!,
-    py = s.py[e]!,
-    pz = s.pz[e]!;
-  const tx = 2 * (qy * pz - qz * py),
-    ty = 2 * (qz * px - qx * pz),
-    tz = 2 * (qx * py - qy * px);
-  shapeShift[0] = px + qw * tx + (qy * tz - qz * ty);
-  shapeShift[1] = py + qw * ty + (qz * tx - qx * tz);
-  shapeShift[2] = pz + qw * tz + (qx * ty - qy * tx);
-  const ax = s.qx[e]!,
-    ay = s.qy[e]!,
-    az = s.qz[e]!,
-    aw = s.qw[e]!;
-  const x = qw * ax + qx * aw + qy * az - qz * ay,
-    y = qw * ay - qx * az + qy * aw + qz * ax,
-    z = qw * az + qx * ay - qy * ax + qz * aw,
-    w = qw * aw - qx * ax - qy * ay - qz * az;
-  R[o + M00] = 1 - 2 * (y * y + z * z);
-  R[o + M01] = 2 * (x * y - z * w);
-  R[o + M02] = 2 * (x * z + y * w);
-  R[o + M10] = 2 * (x * y + z * w);
-  R[o + M11] = 1 - 2 * (x * x + z * z);
-  R[o + M12] = 2 * (y * z - x * w);
-  R[o + M20] = 2 * (x * z - y * w);
-  R[o + M21] = 2 * (y * z + x * w);
-  R[o + M22] = 1 - 2 * (x * x + y * y);
+  rotateVector(qx, qy, qz, qw, s.px[e]!, s.py[e]!, s.pz[e]!, shapeShift);
+  multiplyQuaternions(qx, qy, qz, qw, s.qx[e]!, s.qy[e]!, s.qz[e]!, s.qw[e]!, shapeQ);
+  rotationMatrix(shapeQ[0]!, shapeQ[1]!, shapeQ[2]!, shapeQ[3]!, R, o);
 }
 
 /** Classifies the bodies, writes each collider's start-of-step pose and fattened box. */

@@ -1,4 +1,4 @@
-import { rotateVector } from '../math/quaternion.js';
+import { multiplyQuaternions, rotateVector } from '../math/quaternion.js';
 import * as BS from '../solver/body-state-layout.js';
 import type { PhysicsWorld } from '../world/options.js';
 
@@ -77,18 +77,7 @@ export function pose(world: PhysicsWorld, e: number, k: number, q: Float64Array,
 
 /** The rotation of B relative to A, conj(a) b, of unit quaternions a and b (x, y, z, w), into out. */
 export function relativeRotation(a: ArrayLike<number>, b: ArrayLike<number>, out: Float64Array): void {
-  const x1 = -a[0]!,
-    y1 = -a[1]!,
-    z1 = -a[2]!,
-    w1 = a[3]!,
-    x2 = b[0]!,
-    y2 = b[1]!,
-    z2 = b[2]!,
-    w2 = b[3]!;
-  out[0] = w1 * x2 + x1 * w2 + y1 * z2 - z1 * y2;
-  out[1] = w1 * y2 - x1 * z2 + y1 * w2 + z1 * x2;
-  out[2] = w1 * z2 + x1 * y2 - y1 * x2 + z1 * w2;
-  out[3] = w1 * w2 - x1 * x2 - y1 * y2 - z1 * z2;
+  multiplyQuaternions(-a[0]!, -a[1]!, -a[2]!, a[3]!, b[0]!, b[1]!, b[2]!, b[3]!, out);
 }
 
 /** v rotated by the unit quaternion q (x, y, z, w; body to world frame) into out. */

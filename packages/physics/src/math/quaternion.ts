@@ -18,6 +18,45 @@ export function rotateVector(qx: number, qy: number, qz: number, qw: number, vx:
 }
 
 /**
+ * The Hamilton product a b of quaternions a = (ax, ay, az, aw) and b (rotate by b, then by a); writes
+ * (x, y, z, w) into out[0..3].
+ * @category Utilities
+ */
+export function multiplyQuaternions(
+  ax: number,
+  ay: number,
+  az: number,
+  aw: number,
+  bx: number,
+  by: number,
+  bz: number,
+  bw: number,
+  out: Float64Array,
+): void {
+  out[0] = aw * bx + ax * bw + ay * bz - az * by;
+  out[1] = aw * by - ax * bz + ay * bw + az * bx;
+  out[2] = aw * bz + ax * by - ay * bx + az * bw;
+  out[3] = aw * bw - ax * bx - ay * by - az * bz;
+}
+
+/**
+ * The rotation matrix of the unit quaternion (x, y, z, w), row-major (math/mat3-layout.ts M00..M22),
+ * into R[o..o + 8].
+ * @category Utilities
+ */
+export function rotationMatrix(x: number, y: number, z: number, w: number, R: Float64Array, o: number): void {
+  R[o] = 1 - 2 * (y * y + z * z);
+  R[o + 1] = 2 * (x * y - z * w);
+  R[o + 2] = 2 * (x * z + y * w);
+  R[o + 3] = 2 * (x * y + z * w);
+  R[o + 4] = 1 - 2 * (x * x + z * z);
+  R[o + 5] = 2 * (y * z - x * w);
+  R[o + 6] = 2 * (x * z - y * w);
+  R[o + 7] = 2 * (y * z + x * w);
+  R[o + 8] = 1 - 2 * (x * x + y * y);
+}
+
+/**
  * Rotates (vx, vy, vz) by the inverse (conjugate) of the unit quaternion: world to body frame.
  * @category Utilities
  */
