@@ -1,7 +1,7 @@
 import { hasComponent } from 'bitecs';
 import { wakeIslandForStep } from '../islands/step-wake.js';
 import { M00, M01, M02, M10, M11, M12, M20, M21, M22, MAT3_STRIDE } from '../math/mat3-layout.js';
-import { multiplyQuaternions, rotateVector, rotationMatrix } from '../math/quaternion.js';
+import { multiplyQuaternions, rotateVector, rotationMatrix, turnQuaternion } from '../math/quaternion.js';
 import { Shape3DKind, type Shape3DStore, shapes3DOf } from '../shapes/store-3d.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
@@ -94,45 +94,30 @@ const bodyQ = new Float64Array(4);
 function startOrientation(world: PhysicsWorld, b: number, turning: boolean, isBall: boolean): void {
   const c = world.components,
     Q = c.Orientation;
-  let x = Q.x[b]!,
-    y = Q.y[b]!,
-    z = Q.z[b]!,
-    w = Q.w[b]!;
   // A body with a 3D shape always has an orientation (addShape3D adds it); a ball may not.
-  if (isBall && !hasComponent(world, b, c.Orientation)) {
-    x = 0;
-    y = 0;
-    z = 0;
-    w = 1;
-  }
-  if (turning) {
-    const h = world.h,
-      W = c.AngularVelocity;
-    const rx = -W.x[b]! * h,
-      ry = -W.y[b]! * h,
-      rz = -W.z[b]! * h;
-    const a = Math.sqrt(rx * rx + ry * ry + rz * rz);
-    if (a > 0) {
-      const k = Math.sin(a / 2) / a,
-        dx = rx * k,
-        dy = ry * k,
-        dz = rz * k,
-        dw = Math.cos(a / 2);
-      const nx = dw * x + dx * w + dy * z - dz * y,
-        ny = dw * y - dx * z + dy * w + dz * x,
-        nz = dw * z + dx * y - dy * x + dz * w,
-        nw = dw * w - dx * x - dy * y - dz * z;
-      const l = Math.sqrt(nx * nx + ny * ny + nz * nz + nw * nw);
-      x = nx / l;
-      y = ny / l;
-      z = nz / l;
-      w = nw / l;
-    }
-  }
-  bodyQ[0] = x;
-  bodyQ[1] = y;
-  bodyQ[2] = z;
-  bodyQ[3] = w;
+  const has = !isBall || hasComponent(world, b, c.Orientation);
+  bodyQ[0] = has ? Q.x[b]! : 0;
+  bodyQ[1] = has ? Q.y[b]! : 0;
+  bodyQ[2] = has ? Q.z[b]! : 0;
+  bodyQ[3] = has ? Q.w[b]! : 1;
+  if (!turning) return;
+  const h = world.h,
+    W = c.AngularVelocity;
+  const rx = -W.x[b]! * h,
+    ry = -W.y[b]! * h,
+    rz = -W.z[b]! * h;
+  const a = Math.sqrt(rx * rx + ry * ry + rz * rz);
+  if (!(a > 0)) return;
+  turnQuaternion(bodyQ, rx, ry, rz, a, bodyQ);
+  const nx = bodyQ[0]!,
+    ny = bodyQ[1]!,
+    nz = bodyQ[2]!,
+    nw = bodyQ[3]!;
+  const l = Math.sqrt(nx * nx + ny * ny + nz * nz + nw * nw);
+  bodyQ[0] = nx / l;
+  bodyQ[1] = ny / l;
+  bodyQ[2] = nz / l;
+  bodyQ[3] = nw / l;
 }
 
 /** Per body slot: the step stamp and body type of the static, kinematic and sleeping bodies (scratch). */

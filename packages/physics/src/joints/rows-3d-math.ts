@@ -1,4 +1,4 @@
-import { multiplyQuaternions, rotateVector } from '../math/quaternion.js';
+import { multiplyQuaternions, rotateVector, turnQuaternion } from '../math/quaternion.js';
 import * as BS from '../solver/body-state-layout.js';
 import type { PhysicsWorld } from '../world/options.js';
 
@@ -31,15 +31,11 @@ export function pose(world: PhysicsWorld, e: number, k: number, q: Float64Array,
   }
   const c = world.components,
     Q = c.Orientation;
-  let x = Q.x[e]!,
-    y = Q.y[e]!,
-    z = Q.z[e]!,
-    w = Q.w[e]!;
+  q[0] = Q.x[e]!;
+  q[1] = Q.y[e]!;
+  q[2] = Q.z[e]!;
+  q[3] = Q.w[e]!;
   if (k === 0) {
-    q[0] = x;
-    q[1] = y;
-    q[2] = z;
-    q[3] = w;
     p[0] = c.Position.x[e]!;
     p[1] = c.Position.y[e]!;
     p[2] = c.Position.z[e]!;
@@ -51,25 +47,7 @@ export function pose(world: PhysicsWorld, e: number, k: number, q: Float64Array,
     ry = ex[BS.BX_STRIDE * k + BS.BX_ROT_Y]!,
     rz = ex[BS.BX_STRIDE * k + BS.BX_ROT_Z]!,
     a = Math.hypot(rx, ry, rz);
-  if (a > 0) {
-    const f = Math.sin(a / 2) / a,
-      dx = rx * f,
-      dy = ry * f,
-      dz = rz * f,
-      dw = Math.cos(a / 2);
-    const nx = dw * x + dx * w + dy * z - dz * y,
-      ny = dw * y - dx * z + dy * w + dz * x,
-      nz = dw * z + dx * y - dy * x + dz * w,
-      nw = dw * w - dx * x - dy * y - dz * z;
-    x = nx;
-    y = ny;
-    z = nz;
-    w = nw;
-  }
-  q[0] = x;
-  q[1] = y;
-  q[2] = z;
-  q[3] = w;
+  if (a > 0) turnQuaternion(q, rx, ry, rz, a, q);
   p[0] = ex[BS.BX_STRIDE * k + BS.BX_BASE_X]! + sb[BS.BS3_STRIDE * k + BS.BS3_DX]!;
   p[1] = ex[BS.BX_STRIDE * k + BS.BX_BASE_Y]! + sb[BS.BS3_STRIDE * k + BS.BS3_DY]!;
   p[2] = ex[BS.BX_STRIDE * k + BS.BX_BASE_Z]! + sb[BS.BS3_STRIDE * k + BS.BS3_DZ]!;
