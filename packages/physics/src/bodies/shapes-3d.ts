@@ -1,5 +1,6 @@
 import { addComponent, entityExists, hasComponent, removeEntity } from 'bitecs';
 import { install3D } from '../collision/install-3d.js';
+import { multiplyQuaternions, rotateVector, rotationMatrix } from '../math/quaternion.js';
 import { shapeEdits } from '../shapes/edits-3d.js';
 import { type Hull, quickhull } from '../shapes/hull-3d.js';
 import {
@@ -253,17 +254,17 @@ export function addShape3D(world: PhysicsWorld, body: number, options: Shape3DOp
   }
   // Into the current body frame: p = origin + ref (offset), q = ref * rotation.
   const v = rotate(s.refX[b]!, s.refY[b]!, s.refZ[b]!, s.refW[b]!, ox, oy, oz);
-  const q = mul(s.refX[b]!, s.refY[b]!, s.refZ[b]!, s.refW[b]!, rx, ry, rz, rw);
+  multiplyQuaternions(s.refX[b]!, s.refY[b]!, s.refZ[b]!, s.refW[b]!, rx, ry, rz, rw, q4);
   s.body[e] = b;
   s.kind[e] = g.kind;
   s.next[e] = 0;
   s.px[e] = s.originX[b]! + v[0];
   s.py[e] = s.originY[b]! + v[1];
   s.pz[e] = s.originZ[b]! + v[2];
-  s.qx[e] = q[0];
-  s.qy[e] = q[1];
-  s.qz[e] = q[2];
-  s.qw[e] = q[3];
+  s.qx[e] = q4[0]!;
+  s.qy[e] = q4[1]!;
+  s.qz[e] = q4[2]!;
+  s.qw[e] = q4[3]!;
   s.hx[e] = g.hx;
   s.hy[e] = g.hy;
   s.hz[e] = g.hz;
@@ -342,7 +343,7 @@ export function updateMassFromShapes3D(world: PhysicsWorld, body: number): void 
   const I = new Float64Array(9),
     R = new Float64Array(9);
   for (const [e, p] of props) {
-    matrixOf(s.qx[e]!, s.qy[e]!, s.qz[e]!, s.qw[e]!, R);
+    rotationMatrix(s.qx[e]!, s.qy[e]!, s.qz[e]!, s.qw[e]!, R, 0);
     addMovedInertia(I, p.mass, p.inertia, R, p.center[0] - cx, p.center[1] - cy, p.center[2] - cz);
   }
   const values = new Float64Array(3),
@@ -356,21 +357,21 @@ export function updateMassFromShapes3D(world: PhysicsWorld, body: number): void 
     s.px[e] = p[0];
     s.py[e] = p[1];
     s.pz[e] = p[2];
-    const q = mul(-ax, -ay, -az, aw, s.qx[e]!, s.qy[e]!, s.qz[e]!, s.qw[e]!);
-    s.qx[e] = q[0];
-    s.qy[e] = q[1];
-    s.qz[e] = q[2];
-    s.qw[e] = q[3];
+    multiplyQuaternions(-ax, -ay, -az, aw, s.qx[e]!, s.qy[e]!, s.qz[e]!, s.qw[e]!, q4);
+    s.qx[e] = q4[0]!;
+    s.qy[e] = q4[1]!;
+    s.qz[e] = q4[2]!;
+    s.qw[e] = q4[3]!;
   }
   const o = reframe(s.originX[b]!, s.originY[b]!, s.originZ[b]!);
   s.originX[b] = o[0];
   s.originY[b] = o[1];
   s.originZ[b] = o[2];
-  const r = mul(-ax, -ay, -az, aw, s.refX[b]!, s.refY[b]!, s.refZ[b]!, s.refW[b]!);
-  s.refX[b] = r[0];
-  s.refY[b] = r[1];
-  s.refZ[b] = r[2];
-  s.refW[b] = r[3];
+  multiplyQuaternions(-ax, -ay, -az, aw, s.refX[b]!, s.refY[b]!, s.refZ[b]!, s.refW[b]!, q4);
+  s.refX[b] = q4[0]!;
+  s.refY[b] = q4[1]!;
+  s.refZ[b] = q4[2]!;
+  s.refW[b] = q4[3]!;
   // The body: position to the centre of mass, orientation to the principal frame.
   const c = world.components,
     Q = c.Orientation;
@@ -394,11 +395,11 @@ export function updateMassFromShapes3D(world: PhysicsWorld, body: number): void 
     c.Velocity.y[b] = c.Velocity.y[b]! + wz * d[0] - wx * d[2];
     c.Velocity.z[b] = c.Velocity.z[b]! + wx * d[1] - wy * d[0];
   }
-  const nq = mul(bx, by, bz, bw, ax, ay, az, aw);
-  Q.x[b] = nq[0];
-  Q.y[b] = nq[1];
-  Q.z[b] = nq[2];
-  Q.w[b] = nq[3];
+  multiplyQuaternions(bx, by, bz, bw, ax, ay, az, aw, q4);
+  Q.x[b] = q4[0]!;
+  Q.y[b] = q4[1]!;
+  Q.z[b] = q4[2]!;
+  Q.w[b] = q4[3]!;
   c.Mass.value[b] = m;
   c.Mass.inv[b] = 1 / m;
   const floor = 1e-12 * Math.max(values[0]!, values[1]!, values[2]!);
@@ -453,53 +454,13 @@ function removeShapes3DOf(world: PhysicsWorld, eid: number): void {
   }
 }
 
-/**
- * v rotated by the unit quaternion q.
- * @category Shapes
- */
+const v3 = new Float64Array(3),
+  q4 = new Float64Array(4);
+
+/** v rotated by the unit quaternion q (math/quaternion.ts rotateVector), as a tuple. */
 function rotate(qx: number, qy: number, qz: number, qw: number, vx: number, vy: number, vz: number): [number, number, number] {
-  const tx = 2 * (qy * vz - qz * vy),
-    ty = 2 * (qz * vx - qx * vz),
-    tz = 2 * (qx * vy - qy * vx);
-  return [vx + qw * tx + (qy * tz - qz * ty), vy + qw * ty + (qz * tx - qx * tz), vz + qw * tz + (qx * ty - qy * tx)];
-}
-
-/**
- * The Hamilton product a b (rotate by b, then by a).
- * @category Shapes
- */
-function mul(
-  ax: number,
-  ay: number,
-  az: number,
-  aw: number,
-  bx: number,
-  by: number,
-  bz: number,
-  bw: number,
-): [number, number, number, number] {
-  return [
-    aw * bx + ax * bw + ay * bz - az * by,
-    aw * by - ax * bz + ay * bw + az * bx,
-    aw * bz + ax * by - ay * bx + az * bw,
-    aw * bw - ax * bx - ay * by - az * bz,
-  ];
-}
-
-/**
- * The rotation matrix (row-major) of a unit quaternion.
- * @category Shapes
- */
-function matrixOf(x: number, y: number, z: number, w: number, R: Float64Array): void {
-  R[0] = 1 - 2 * (y * y + z * z);
-  R[1] = 2 * (x * y - z * w);
-  R[2] = 2 * (x * z + y * w);
-  R[3] = 2 * (x * y + z * w);
-  R[4] = 1 - 2 * (x * x + z * z);
-  R[5] = 2 * (y * z - x * w);
-  R[6] = 2 * (x * z - y * w);
-  R[7] = 2 * (y * z + x * w);
-  R[8] = 1 - 2 * (x * x + y * y);
+  rotateVector(qx, qy, qz, qw, vx, vy, vz, v3);
+  return [v3[0]!, v3[1]!, v3[2]!];
 }
 
 /**

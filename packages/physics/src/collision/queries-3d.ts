@@ -1,5 +1,5 @@
 import { hasComponent } from 'bitecs';
-import { rotateVector } from '../math/quaternion.js';
+import { multiplyQuaternions, rotateVector } from '../math/quaternion.js';
 import { meshesOf } from '../shapes/mesh-3d.js';
 import { Shape3DKind, type Shape3DStore, shapes3DOf } from '../shapes/store-3d.js';
 import { assertVector, describe } from '../validation/validate.js';
@@ -264,6 +264,8 @@ function rayCylinder(ox: number, oy: number, oz: number, dx: number, dy: number,
 const pose = { cx: 0, cy: 0, cz: 0, x: 0, y: 0, z: 0, w: 1, kind: 0, r: 0 };
 /** A vector rotated by a shape's pose (math/quaternion.ts rotateVector; -x, -y, -z for the inverse). */
 const v3 = new Float64Array(3);
+/** A shape's orientation in the world (its body's composed with its placement). */
+const q4 = new Float64Array(4);
 
 /** Fills `pose` with shape `e`'s pose where its body `b` is now: the body's pose composed with the shape's placement. */
 function poseShape(world: PhysicsWorld, s: Shape3DStore, e: number, b: number): void {
@@ -279,14 +281,11 @@ function poseShape(world: PhysicsWorld, s: Shape3DStore, e: number, b: number): 
   pose.cx = P.x[b]! + v3[0]!;
   pose.cy = P.y[b]! + v3[1]!;
   pose.cz = P.z[b]! + v3[2]!;
-  const ax = s.qx[e]!,
-    ay = s.qy[e]!,
-    az = s.qz[e]!,
-    aw = s.qw[e]!;
-  pose.x = qw * ax + qx * aw + qy * az - qz * ay;
-  pose.y = qw * ay - qx * az + qy * aw + qz * ax;
-  pose.z = qw * az + qx * ay - qy * ax + qz * aw;
-  pose.w = qw * aw - qx * ax - qy * ay - qz * az;
+  multiplyQuaternions(qx, qy, qz, qw, s.qx[e]!, s.qy[e]!, s.qz[e]!, s.qw[e]!, q4);
+  pose.x = q4[0]!;
+  pose.y = q4[1]!;
+  pose.z = q4[2]!;
+  pose.w = q4[3]!;
   pose.kind = s.kind[e]!;
   pose.r = s.radius[e]!;
 }

@@ -1,6 +1,7 @@
 import { hasComponent } from 'bitecs';
 import { wakeIslandForStep } from '../islands/step-wake.js';
 import { M00, M01, M02, M10, M11, M12, M20, M21, M22, MAT3_STRIDE } from '../math/mat3-layout.js';
+import { multiplyQuaternions, rotateVector, rotationMatrix, turnQuaternion } from '../math/quaternion.js';
 import { Shape3DKind, type Shape3DStore, shapes3DOf } from '../shapes/store-3d.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
@@ -93,45 +94,30 @@ const bodyQ = new Float64Array(4);
 function startOrientation(world: PhysicsWorld, b: number, turning: boolean, isBall: boolean): void {
   const c = world.components,
     Q = c.Orientation;
-  let x = Q.x[b]!,
-    y = Q.y[b]!,
-    z = Q.z[b]!,
-    w = Q.w[b]!;
   // A body with a 3D shape always has an orientation (addShape3D adds it); a ball may not.
-  if (isBall && !hasComponent(world, b, c.Orientation)) {
-    x = 0;
-    y = 0;
-    z = 0;
-    w = 1;
-  }
-  if (turning) {
-    const h = world.h,
-      W = c.AngularVelocity;
-    const rx = -W.x[b]! * h,
-      ry = -W.y[b]! * h,
-      rz = -W.z[b]! * h;
-    const a = Math.sqrt(rx * rx + ry * ry + rz * rz);
-    if (a > 0) {
-      const k = Math.sin(a / 2) / a,
-        dx = rx * k,
-        dy = ry * k,
-        dz = rz * k,
-        dw = Math.cos(a / 2);
-      const nx = dw * x + dx * w + dy * z - dz * y,
-        ny = dw * y - dx * z + dy * w + dz * x,
-        nz = dw * z + dx * y - dy * x + dz * w,
-        nw = dw * w - dx * x - dy * y - dz * z;
-      const l = Math.sqrt(nx * nx + ny * ny + nz * nz + nw * nw);
-      x = nx / l;
-      y = ny / l;
-      z = nz / l;
-      w = nw / l;
-    }
-  }
-  bodyQ[0] = x;
-  bodyQ[1] = y;
-  bodyQ[2] = z;
-  bodyQ[3] = w;
+  const has = !isBall || hasComponent(world, b, c.Orientation);
+  bodyQ[0] = has ? Q.x[b]! : 0;
+  bodyQ[1] = has ? Q.y[b]! : 0;
+  bodyQ[2] = has ? Q.z[b]! : 0;
+  bodyQ[3] = has ? Q.w[b]! : 1;
+  if (!turning) return;
+  const h = world.h,
+    W = c.AngularVelocity;
+  const rx = -W.x[b]! * h,
+    ry = -W.y[b]! * h,
+    rz = -W.z[b]! * h;
+  const a = Math.sqrt(rx * rx + ry * ry + rz * rz);
+  if (!(a > 0)) return;
+  turnQuaternion(bodyQ, rx, ry, rz, a, bodyQ);
+  const nx = bodyQ[0]!,
+    ny = bodyQ[1]!,
+    nz = bodyQ[2]!,
+    nw = bodyQ[3]!;
+  const l = Math.sqrt(nx * nx + ny * ny + nz * nz + nw * nw);
+  bodyQ[0] = nx / l;
+  bodyQ[1] = ny / l;
+  bodyQ[2] = nz / l;
+  bodyQ[3] = nw / l;
 }
 
 /** Per body slot: the step stamp and body type of the static, kinematic and sleeping bodies (scratch). */
@@ -162,6 +148,8 @@ function markClasses(world: PhysicsWorld): number {
 
 /** The offset of a shape's centre from its body's centre, m (world), written by colliderRotation. */
 const shapeShift = new Float64Array(3);
+/** The shape's orientation in the world (colliderRotation): the body's composed with the placement. */
+const shapeQ = new Float64Array(4);
 
 /**
  * Writes the world rotation of shape e's collider at R[o + M00] (math/mat3-layout.ts): its body's start-of-step
@@ -186,32 +174,9 @@ function colliderRotation(s: Shape3DStore, e: number, isBall: boolean, R: Float6
     qz = bodyQ[2]!,
     qw = bodyQ[3]!;
   // Shape pose: body pose composed with the placement.
-  const px = s.px[e]!,
-    py = s.py[e]!,
-    pz = s.pz[e]!;
-  const tx = 2 * (qy * pz - qz * py),
-    ty = 2 * (qz * px - qx * pz),
-    tz = 2 * (qx * py - qy * px);
-  shapeShift[0] = px + qw * tx + (qy * tz - qz * ty);
-  shapeShift[1] = py + qw * ty + (qz * tx - qx * tz);
-  shapeShift[2] = pz + qw * tz + (qx * ty - qy * tx);
-  const ax = s.qx[e]!,
-    ay = s.qy[e]!,
-    az = s.qz[e]!,
-    aw = s.qw[e]!;
-  const x = qw * ax + qx * aw + qy * az - qz * ay,
-    y = qw * ay - qx * az + qy * aw + qz * ax,
-    z = qw * az + qx * ay - qy * ax + qz * aw,
-    w = qw * aw - qx * ax - qy * ay - qz * az;
-  R[o + M00] = 1 - 2 * (y * y + z * z);
-  R[o + M01] = 2 * (x * y - z * w);
-  R[o + M02] = 2 * (x * z + y * w);
-  R[o + M10] = 2 * (x * y + z * w);
-  R[o + M11] = 1 - 2 * (x * x + z * z);
-  R[o + M12] = 2 * (y * z - x * w);
-  R[o + M20] = 2 * (x * z - y * w);
-  R[o + M21] = 2 * (y * z + x * w);
-  R[o + M22] = 1 - 2 * (x * x + y * y);
+  rotateVector(qx, qy, qz, qw, s.px[e]!, s.py[e]!, s.pz[e]!, shapeShift);
+  multiplyQuaternions(qx, qy, qz, qw, s.qx[e]!, s.qy[e]!, s.qz[e]!, s.qw[e]!, shapeQ);
+  rotationMatrix(shapeQ[0]!, shapeQ[1]!, shapeQ[2]!, shapeQ[3]!, R, o);
 }
 
 /** Classifies the bodies, writes each collider's start-of-step pose and fattened box. */

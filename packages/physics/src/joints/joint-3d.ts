@@ -93,18 +93,18 @@ export function make(
   s.flags[j] = 0;
   s.a[j] = e.a;
   s.b[j] = e.b;
-  s.ax[j] = la[0];
-  s.ay[j] = la[1];
-  s.az[j] = la[2];
-  s.bx[j] = lb[0];
-  s.by[j] = lb[1];
-  s.bz[j] = lb[2];
-  s.uax[j] = ua[0];
-  s.uay[j] = ua[1];
-  s.uaz[j] = ua[2];
-  s.ubx[j] = ub[0];
-  s.uby[j] = ub[1];
-  s.ubz[j] = ub[2];
+  // The anchors and the axis in each body's frame into their x, y, z columns at j.
+  const columns = [
+    [s.ax, s.ay, s.az, la],
+    [s.bx, s.by, s.bz, lb],
+    [s.uax, s.uay, s.uaz, ua],
+    [s.ubx, s.uby, s.ubz, ub],
+  ] as const;
+  for (const [x, y, z, v] of columns) {
+    x[j] = v[0];
+    y[j] = v[1];
+    z[j] = v[2];
+  }
   const rel = new Float64Array(4);
   relativeRotation(qa, qb, rel);
   s.rx[j] = rel[0]!;

@@ -1,4 +1,4 @@
-import { rotateVector } from '../math/quaternion.js';
+import { multiplyQuaternions, rotateVector, turnQuaternion } from '../math/quaternion.js';
 import * as BS from '../solver/body-state-layout.js';
 import type { PhysicsWorld } from '../world/options.js';
 
@@ -31,15 +31,11 @@ export function pose(world: PhysicsWorld, e: number, k: number, q: Float64Array,
   }
   const c = world.components,
     Q = c.Orientation;
-  let x = Q.x[e]!,
-    y = Q.y[e]!,
-    z = Q.z[e]!,
-    w = Q.w[e]!;
+  q[0] = Q.x[e]!;
+  q[1] = Q.y[e]!;
+  q[2] = Q.z[e]!;
+  q[3] = Q.w[e]!;
   if (k === 0) {
-    q[0] = x;
-    q[1] = y;
-    q[2] = z;
-    q[3] = w;
     p[0] = c.Position.x[e]!;
     p[1] = c.Position.y[e]!;
     p[2] = c.Position.z[e]!;
@@ -51,25 +47,7 @@ export function pose(world: PhysicsWorld, e: number, k: number, q: Float64Array,
     ry = ex[BS.BX_STRIDE * k + BS.BX_ROT_Y]!,
     rz = ex[BS.BX_STRIDE * k + BS.BX_ROT_Z]!,
     a = Math.hypot(rx, ry, rz);
-  if (a > 0) {
-    const f = Math.sin(a / 2) / a,
-      dx = rx * f,
-      dy = ry * f,
-      dz = rz * f,
-      dw = Math.cos(a / 2);
-    const nx = dw * x + dx * w + dy * z - dz * y,
-      ny = dw * y - dx * z + dy * w + dz * x,
-      nz = dw * z + dx * y - dy * x + dz * w,
-      nw = dw * w - dx * x - dy * y - dz * z;
-    x = nx;
-    y = ny;
-    z = nz;
-    w = nw;
-  }
-  q[0] = x;
-  q[1] = y;
-  q[2] = z;
-  q[3] = w;
+  if (a > 0) turnQuaternion(q, rx, ry, rz, a, q);
   p[0] = ex[BS.BX_STRIDE * k + BS.BX_BASE_X]! + sb[BS.BS3_STRIDE * k + BS.BS3_DX]!;
   p[1] = ex[BS.BX_STRIDE * k + BS.BX_BASE_Y]! + sb[BS.BS3_STRIDE * k + BS.BS3_DY]!;
   p[2] = ex[BS.BX_STRIDE * k + BS.BX_BASE_Z]! + sb[BS.BS3_STRIDE * k + BS.BS3_DZ]!;
@@ -77,18 +55,7 @@ export function pose(world: PhysicsWorld, e: number, k: number, q: Float64Array,
 
 /** The rotation of B relative to A, conj(a) b, of unit quaternions a and b (x, y, z, w), into out. */
 export function relativeRotation(a: ArrayLike<number>, b: ArrayLike<number>, out: Float64Array): void {
-  const x1 = -a[0]!,
-    y1 = -a[1]!,
-    z1 = -a[2]!,
-    w1 = a[3]!,
-    x2 = b[0]!,
-    y2 = b[1]!,
-    z2 = b[2]!,
-    w2 = b[3]!;
-  out[0] = w1 * x2 + x1 * w2 + y1 * z2 - z1 * y2;
-  out[1] = w1 * y2 - x1 * z2 + y1 * w2 + z1 * x2;
-  out[2] = w1 * z2 + x1 * y2 - y1 * x2 + z1 * w2;
-  out[3] = w1 * w2 - x1 * x2 - y1 * y2 - z1 * z2;
+  multiplyQuaternions(-a[0]!, -a[1]!, -a[2]!, a[3]!, b[0]!, b[1]!, b[2]!, b[3]!, out);
 }
 
 /** v rotated by the unit quaternion q (x, y, z, w; body to world frame) into out. */

@@ -18,6 +18,45 @@ export function rotateVector(qx: number, qy: number, qz: number, qw: number, vx:
 }
 
 /**
+ * The Hamilton product a b of quaternions a = (ax, ay, az, aw) and b (rotate by b, then by a); writes
+ * (x, y, z, w) into out[0..3].
+ * @category Utilities
+ */
+export function multiplyQuaternions(
+  ax: number,
+  ay: number,
+  az: number,
+  aw: number,
+  bx: number,
+  by: number,
+  bz: number,
+  bw: number,
+  out: Float64Array,
+): void {
+  out[0] = aw * bx + ax * bw + ay * bz - az * by;
+  out[1] = aw * by - ax * bz + ay * bw + az * bx;
+  out[2] = aw * bz + ax * by - ay * bx + az * bw;
+  out[3] = aw * bw - ax * bx - ay * by - az * bz;
+}
+
+/**
+ * The rotation matrix of the unit quaternion (x, y, z, w), row-major (math/mat3-layout.ts M00..M22),
+ * into R[o..o + 8].
+ * @category Utilities
+ */
+export function rotationMatrix(x: number, y: number, z: number, w: number, R: Float64Array, o: number): void {
+  R[o] = 1 - 2 * (y * y + z * z);
+  R[o + 1] = 2 * (x * y - z * w);
+  R[o + 2] = 2 * (x * z + y * w);
+  R[o + 3] = 2 * (x * y + z * w);
+  R[o + 4] = 1 - 2 * (x * x + z * z);
+  R[o + 5] = 2 * (y * z - x * w);
+  R[o + 6] = 2 * (x * z - y * w);
+  R[o + 7] = 2 * (y * z + x * w);
+  R[o + 8] = 1 - 2 * (x * x + y * y);
+}
+
+/**
  * Rotates (vx, vy, vz) by the inverse (conjugate) of the unit quaternion: world to body frame.
  * @category Utilities
  */
@@ -32,6 +71,38 @@ export function rotateVectorInverse(
   out: Float64Array,
 ): void {
   rotateVector(-qx, -qy, -qz, qw, vx, vy, vz, out);
+}
+
+/** rotateFrom's orientation, turned in place before it is renormalised. */
+const turned = new Float64Array(4);
+
+/**
+ * exp(r / 2) q into out[0..3], not renormalised: the quaternion q = (q[0], q[1], q[2], q[3]) (x, y, z, w)
+ * turned by the rotation vector r (angle |r| about r, world frame), given `angle` = |r| (rad; however
+ * the caller computes it). An angle that is not > 0 turns by the identity: out = 1 q, term by term as
+ * for any angle. `out` may be `q`.
+ * @category Utilities
+ */
+export function turnQuaternion(q: Float64Array, rx: number, ry: number, rz: number, angle: number, out: Float64Array): void {
+  const x = q[0]!,
+    y = q[1]!,
+    z = q[2]!,
+    w = q[3]!;
+  let dx = 0,
+    dy = 0,
+    dz = 0,
+    dw = 1;
+  if (angle > 0) {
+    const k = Math.sin(0.5 * angle) / angle;
+    dx = rx * k;
+    dy = ry * k;
+    dz = rz * k;
+    dw = Math.cos(0.5 * angle);
+  }
+  out[0] = dw * x + dx * w + dy * z - dz * y;
+  out[1] = dw * y - dx * z + dy * w + dz * x;
+  out[2] = dw * z + dx * y - dy * x + dz * w;
+  out[3] = dw * w - dx * x - dy * y - dz * z;
 }
 
 /**
@@ -53,22 +124,15 @@ export function rotateFrom(
   ry: number,
   rz: number,
 ): void {
-  const angle = Math.sqrt(rx * rx + ry * ry + rz * rz);
-  let dx = 0,
-    dy = 0,
-    dz = 0,
-    dw = 1;
-  if (angle > 0) {
-    const k = Math.sin(0.5 * angle) / angle;
-    dx = rx * k;
-    dy = ry * k;
-    dz = rz * k;
-    dw = Math.cos(0.5 * angle);
-  }
-  let nx = dw * x + dx * w + dy * z - dz * y;
-  let ny = dw * y - dx * z + dy * w + dz * x;
-  let nz = dw * z + dx * y - dy * x + dz * w;
-  let nw = dw * w - dx * x - dy * y - dz * z;
+  turned[0] = x;
+  turned[1] = y;
+  turned[2] = z;
+  turned[3] = w;
+  turnQuaternion(turned, rx, ry, rz, Math.sqrt(rx * rx + ry * ry + rz * rz), turned);
+  let nx = turned[0]!;
+  let ny = turned[1]!;
+  let nz = turned[2]!;
+  let nw = turned[3]!;
   const inv = 1 / Math.sqrt(nx * nx + ny * ny + nz * nz + nw * nw);
   nx *= inv;
   ny *= inv;

@@ -1,25 +1,6 @@
 import { contact3DStateOf } from '../collision/manifolds-3d.js';
 import type { PhysicsWorld } from '../world/options.js';
-import {
-  BS3_DX,
-  BS3_DY,
-  BS3_DZ,
-  BS3_INV_MASS,
-  BS3_PUSHED,
-  BS3_STRIDE,
-  BS3_VX,
-  BS3_VY,
-  BS3_VZ,
-  BS3_WX,
-  BS3_WY,
-  BS3_WZ,
-  BX_ROT_X,
-  BX_ROT_Y,
-  BX_ROT_Z,
-  BX_STRIDE,
-  II3_STRIDE,
-  II3_XX,
-} from './body-state-layout.js';
+import * as BS from './body-state-layout.js';
 import { bouncingList, boundedImpulse, normalBias, normalImpulse, softRow } from './contact-point.js';
 import {
   CP_NORMAL_MASS,
@@ -31,40 +12,7 @@ import {
   SN_SCALES,
   SN_SOFT_ROW,
 } from './contact-point-layout.js';
-import {
-  FRICTION_INV_STRIDE,
-  FRICTION_T1,
-  FRICTION_T2,
-  FRICTION_TWIST,
-  HEAD_ARM,
-  HEAD_INV_IA,
-  HEAD_INV_IB,
-  HEAD_MIN_SEP,
-  HEAD_MT1,
-  HEAD_MT2,
-  HEAD_MTW,
-  HEAD_MU,
-  HEAD_NX,
-  HEAD_NY,
-  HEAD_NZ,
-  HEAD_REACH_A,
-  HEAD_REACH_B,
-  HEAD_T1X,
-  HEAD_T1Y,
-  HEAD_T1Z,
-  JAC_STRIDE,
-  POINT_STRIDE,
-  REC_POINTS,
-  REC_STRIDE,
-  REC_T1,
-  REC_T2,
-  ROW_AX,
-  ROW_AY,
-  ROW_AZ,
-  ROW_BX,
-  ROW_BY,
-  ROW_BZ,
-} from './manifold-layout-3d.js';
+import * as M3 from './manifold-layout-3d.js';
 import { restitutionImpulse, restitutionTarget } from './restitution.js';
 import { rigidPartner } from './rigid-partner.js';
 
@@ -119,7 +67,7 @@ export function warmStartManifolds3D(world: PhysicsWorld): void {
       by = 0,
       bz = 0;
     const iso = buf.iso[i] === 1,
-      h = REC_STRIDE * i;
+      h = M3.REC_STRIDE * i;
     for (let k = 0, m = buf.points[i]!; k < m; k++) {
       const q = 4 * i + k,
         ln = LN[q]!;
@@ -127,30 +75,30 @@ export function warmStartManifolds3D(world: PhysicsWorld): void {
       // Isotropic: i sum(ln r x n) from the crosses in the record (scaled by i below); else the stored products.
       sn += ln;
       if (iso) {
-        const p = h + REC_POINTS + POINT_STRIDE * k;
-        ax += ln * R[p + CP_NORMAL_ROW + ROW_AX]!;
-        ay += ln * R[p + CP_NORMAL_ROW + ROW_AY]!;
-        az += ln * R[p + CP_NORMAL_ROW + ROW_AZ]!;
-        bx += ln * R[p + CP_NORMAL_ROW + ROW_BX]!;
-        by += ln * R[p + CP_NORMAL_ROW + ROW_BY]!;
-        bz += ln * R[p + CP_NORMAL_ROW + ROW_BZ]!;
+        const p = h + M3.REC_POINTS + M3.POINT_STRIDE * k;
+        ax += ln * R[p + CP_NORMAL_ROW + M3.ROW_AX]!;
+        ay += ln * R[p + CP_NORMAL_ROW + M3.ROW_AY]!;
+        az += ln * R[p + CP_NORMAL_ROW + M3.ROW_AZ]!;
+        bx += ln * R[p + CP_NORMAL_ROW + M3.ROW_BX]!;
+        by += ln * R[p + CP_NORMAL_ROW + M3.ROW_BY]!;
+        bz += ln * R[p + CP_NORMAL_ROW + M3.ROW_BZ]!;
       } else {
-        const o = JAC_STRIDE * q;
-        ax += ln * JI[o + ROW_AX]!;
-        ay += ln * JI[o + ROW_AY]!;
-        az += ln * JI[o + ROW_AZ]!;
-        bx += ln * JI[o + ROW_BX]!;
-        by += ln * JI[o + ROW_BY]!;
-        bz += ln * JI[o + ROW_BZ]!;
+        const o = M3.JAC_STRIDE * q;
+        ax += ln * JI[o + M3.ROW_AX]!;
+        ay += ln * JI[o + M3.ROW_AY]!;
+        az += ln * JI[o + M3.ROW_AZ]!;
+        bx += ln * JI[o + M3.ROW_BX]!;
+        by += ln * JI[o + M3.ROW_BY]!;
+        bz += ln * JI[o + M3.ROW_BZ]!;
       }
     }
     if (sn === 0 && f1 === 0 && f2 === 0 && fw === 0) continue;
-    const nx = R[h + HEAD_NX]!,
-      ny = R[h + HEAD_NY]!,
-      nz = R[h + HEAD_NZ]!,
-      t1x = R[h + HEAD_T1X]!,
-      t1y = R[h + HEAD_T1Y]!,
-      t1z = R[h + HEAD_T1Z]!;
+    const nx = R[h + M3.HEAD_NX]!,
+      ny = R[h + M3.HEAD_NY]!,
+      nz = R[h + M3.HEAD_NZ]!,
+      t1x = R[h + M3.HEAD_T1X]!,
+      t1y = R[h + M3.HEAD_T1Y]!,
+      t1z = R[h + M3.HEAD_T1Z]!;
     const t2x = ny * t1z - nz * t1y,
       t2y = nz * t1x - nx * t1z,
       t2z = nx * t1y - ny * t1x;
@@ -159,14 +107,14 @@ export function warmStartManifolds3D(world: PhysicsWorld): void {
       pz = sn * nz + f1 * t1z + f2 * t2z;
     // The friction rows' angular parts (anchor crosses for t1, t2; n for the twist).
     if (iso) {
-      const o1 = h + REC_T1,
-        o2 = h + REC_T2;
-      ax += f1 * R[o1 + ROW_AX]! + f2 * R[o2 + ROW_AX]!;
-      ay += f1 * R[o1 + ROW_AY]! + f2 * R[o2 + ROW_AY]!;
-      az += f1 * R[o1 + ROW_AZ]! + f2 * R[o2 + ROW_AZ]!;
-      bx += f1 * R[o1 + ROW_BX]! + f2 * R[o2 + ROW_BX]!;
-      by += f1 * R[o1 + ROW_BY]! + f2 * R[o2 + ROW_BY]!;
-      bz += f1 * R[o1 + ROW_BZ]! + f2 * R[o2 + ROW_BZ]!;
+      const o1 = h + M3.REC_T1,
+        o2 = h + M3.REC_T2;
+      ax += f1 * R[o1 + M3.ROW_AX]! + f2 * R[o2 + M3.ROW_AX]!;
+      ay += f1 * R[o1 + M3.ROW_AY]! + f2 * R[o2 + M3.ROW_AY]!;
+      az += f1 * R[o1 + M3.ROW_AZ]! + f2 * R[o2 + M3.ROW_AZ]!;
+      bx += f1 * R[o1 + M3.ROW_BX]! + f2 * R[o2 + M3.ROW_BX]!;
+      by += f1 * R[o1 + M3.ROW_BY]! + f2 * R[o2 + M3.ROW_BY]!;
+      bz += f1 * R[o1 + M3.ROW_BZ]! + f2 * R[o2 + M3.ROW_BZ]!;
       ax += fw * nx;
       ay += fw * ny;
       az += fw * nz;
@@ -175,48 +123,48 @@ export function warmStartManifolds3D(world: PhysicsWorld): void {
       bz += fw * nz;
     } else {
       const F = st.frictionInv,
-        o = FRICTION_INV_STRIDE * i,
-        o1 = o + FRICTION_T1,
-        o2 = o + FRICTION_T2,
-        w = o + FRICTION_TWIST;
-      ax += f1 * F[o1 + ROW_AX]! + f2 * F[o2 + ROW_AX]!;
-      ay += f1 * F[o1 + ROW_AY]! + f2 * F[o2 + ROW_AY]!;
-      az += f1 * F[o1 + ROW_AZ]! + f2 * F[o2 + ROW_AZ]!;
-      bx += f1 * F[o1 + ROW_BX]! + f2 * F[o2 + ROW_BX]!;
-      by += f1 * F[o1 + ROW_BY]! + f2 * F[o2 + ROW_BY]!;
-      bz += f1 * F[o1 + ROW_BZ]! + f2 * F[o2 + ROW_BZ]!;
-      ax += fw * F[w + ROW_AX]!;
-      ay += fw * F[w + ROW_AY]!;
-      az += fw * F[w + ROW_AZ]!;
-      bx += fw * F[w + ROW_BX]!;
-      by += fw * F[w + ROW_BY]!;
-      bz += fw * F[w + ROW_BZ]!;
+        o = M3.FRICTION_INV_STRIDE * i,
+        o1 = o + M3.FRICTION_T1,
+        o2 = o + M3.FRICTION_T2,
+        w = o + M3.FRICTION_TWIST;
+      ax += f1 * F[o1 + M3.ROW_AX]! + f2 * F[o2 + M3.ROW_AX]!;
+      ay += f1 * F[o1 + M3.ROW_AY]! + f2 * F[o2 + M3.ROW_AY]!;
+      az += f1 * F[o1 + M3.ROW_AZ]! + f2 * F[o2 + M3.ROW_AZ]!;
+      bx += f1 * F[o1 + M3.ROW_BX]! + f2 * F[o2 + M3.ROW_BX]!;
+      by += f1 * F[o1 + M3.ROW_BY]! + f2 * F[o2 + M3.ROW_BY]!;
+      bz += f1 * F[o1 + M3.ROW_BZ]! + f2 * F[o2 + M3.ROW_BZ]!;
+      ax += fw * F[w + M3.ROW_AX]!;
+      ay += fw * F[w + M3.ROW_AY]!;
+      az += fw * F[w + M3.ROW_AZ]!;
+      bx += fw * F[w + M3.ROW_BX]!;
+      by += fw * F[w + M3.ROW_BY]!;
+      bz += fw * F[w + M3.ROW_BZ]!;
     }
     const ka = buf.ia[i]!,
       kb = buf.ib[i]!,
-      a = BS3_STRIDE * ka,
-      b = BS3_STRIDE * kb;
+      a = BS.BS3_STRIDE * ka,
+      b = BS.BS3_STRIDE * kb;
     if (ka > 0) {
-      const mA = sb[a + BS3_INV_MASS]!,
-        gA = iso ? R[h + HEAD_INV_IA]! : 1;
-      sb[a + BS3_VX] = sb[a + BS3_VX]! - mA * px;
-      sb[a + BS3_VY] = sb[a + BS3_VY]! - mA * py;
-      sb[a + BS3_VZ] = sb[a + BS3_VZ]! - mA * pz;
-      sb[a + BS3_WX] = sb[a + BS3_WX]! - gA * ax;
-      sb[a + BS3_WY] = sb[a + BS3_WY]! - gA * ay;
-      sb[a + BS3_WZ] = sb[a + BS3_WZ]! - gA * az;
-      sb[a + BS3_PUSHED] = 1;
+      const mA = sb[a + BS.BS3_INV_MASS]!,
+        gA = iso ? R[h + M3.HEAD_INV_IA]! : 1;
+      sb[a + BS.BS3_VX] = sb[a + BS.BS3_VX]! - mA * px;
+      sb[a + BS.BS3_VY] = sb[a + BS.BS3_VY]! - mA * py;
+      sb[a + BS.BS3_VZ] = sb[a + BS.BS3_VZ]! - mA * pz;
+      sb[a + BS.BS3_WX] = sb[a + BS.BS3_WX]! - gA * ax;
+      sb[a + BS.BS3_WY] = sb[a + BS.BS3_WY]! - gA * ay;
+      sb[a + BS.BS3_WZ] = sb[a + BS.BS3_WZ]! - gA * az;
+      sb[a + BS.BS3_PUSHED] = 1;
     }
     if (kb > 0) {
-      const mB = sb[b + BS3_INV_MASS]!,
-        gB = iso ? R[h + HEAD_INV_IB]! : 1;
-      sb[b + BS3_VX] = sb[b + BS3_VX]! + mB * px;
-      sb[b + BS3_VY] = sb[b + BS3_VY]! + mB * py;
-      sb[b + BS3_VZ] = sb[b + BS3_VZ]! + mB * pz;
-      sb[b + BS3_WX] = sb[b + BS3_WX]! + gB * bx;
-      sb[b + BS3_WY] = sb[b + BS3_WY]! + gB * by;
-      sb[b + BS3_WZ] = sb[b + BS3_WZ]! + gB * bz;
-      sb[b + BS3_PUSHED] = 1;
+      const mB = sb[b + BS.BS3_INV_MASS]!,
+        gB = iso ? R[h + M3.HEAD_INV_IB]! : 1;
+      sb[b + BS.BS3_VX] = sb[b + BS.BS3_VX]! + mB * px;
+      sb[b + BS.BS3_VY] = sb[b + BS.BS3_VY]! + mB * py;
+      sb[b + BS.BS3_VZ] = sb[b + BS.BS3_VZ]! + mB * pz;
+      sb[b + BS.BS3_WX] = sb[b + BS.BS3_WX]! + gB * bx;
+      sb[b + BS.BS3_WY] = sb[b + BS.BS3_WY]! + gB * by;
+      sb[b + BS.BS3_WZ] = sb[b + BS.BS3_WZ]! + gB * bz;
+      sb[b + BS.BS3_PUSHED] = 1;
     }
   }
 }
@@ -259,34 +207,36 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
   for (let i = 0, count = buf.count; i < count; i++) {
     const ka = IA[i]!,
       kb = IB[i]!,
-      a = BS3_STRIDE * ka,
-      b = BS3_STRIDE * kb,
-      h = REC_STRIDE * i;
-    const nx = H[h + HEAD_NX]!,
-      ny = H[h + HEAD_NY]!,
-      nz = H[h + HEAD_NZ]!;
+      a = BS.BS3_STRIDE * ka,
+      b = BS.BS3_STRIDE * kb,
+      h = M3.REC_STRIDE * i;
+    const nx = H[h + M3.HEAD_NX]!,
+      ny = H[h + M3.HEAD_NY]!,
+      nz = H[h + M3.HEAD_NZ]!;
     // Velocities of both bodies in locals for the manifold's rows (written back once at the end).
-    let vax = sb[a + BS3_VX]!,
-      vay = sb[a + BS3_VY]!,
-      vaz = sb[a + BS3_VZ]!,
-      wax = sb[a + BS3_WX]!,
-      way = sb[a + BS3_WY]!,
-      waz = sb[a + BS3_WZ]!;
-    let vbx = sb[b + BS3_VX]!,
-      vby = sb[b + BS3_VY]!,
-      vbz = sb[b + BS3_VZ]!,
-      wbx = sb[b + BS3_WX]!,
-      wby = sb[b + BS3_WY]!,
-      wbz = sb[b + BS3_WZ]!;
-    const mA = sb[a + BS3_INV_MASS]!,
-      mB = sb[b + BS3_INV_MASS]!;
+    let vax = sb[a + BS.BS3_VX]!,
+      vay = sb[a + BS.BS3_VY]!,
+      vaz = sb[a + BS.BS3_VZ]!,
+      wax = sb[a + BS.BS3_WX]!,
+      way = sb[a + BS.BS3_WY]!,
+      waz = sb[a + BS.BS3_WZ]!;
+    let vbx = sb[b + BS.BS3_VX]!,
+      vby = sb[b + BS.BS3_VY]!,
+      vbz = sb[b + BS.BS3_VZ]!,
+      wbx = sb[b + BS.BS3_WX]!,
+      wby = sb[b + BS.BS3_WY]!,
+      wbz = sb[b + BS.BS3_WZ]!;
+    const mA = sb[a + BS.BS3_INV_MASS]!,
+      mB = sb[b + BS.BS3_INV_MASS]!;
     // A static, sleeping or kinematic partner (inverse mass 0): the stiffer softness (solver/rigid-partner.ts).
     const isRigid = rigidPartner(mA, mB) === 1;
     const biasRate = isRigid ? rBias : sBias,
       scaleBase = isRigid ? SN_SCALES + SN_RIGID : SN_SCALES;
     // Displacement along n and rotation of each body so far this step.
     const dn =
-      (sb[b + BS3_DX]! - sb[a + BS3_DX]!) * nx + (sb[b + BS3_DY]! - sb[a + BS3_DY]!) * ny + (sb[b + BS3_DZ]! - sb[a + BS3_DZ]!) * nz;
+      (sb[b + BS.BS3_DX]! - sb[a + BS.BS3_DX]!) * nx +
+      (sb[b + BS.BS3_DY]! - sb[a + BS.BS3_DY]!) * ny +
+      (sb[b + BS.BS3_DZ]! - sb[a + BS.BS3_DZ]!) * nz;
     let hax = 0,
       hay = 0,
       haz = 0,
@@ -294,25 +244,25 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
       hby = 0,
       hbz = 0;
     if (ka > 0) {
-      const e = BX_STRIDE * ka,
+      const e = BS.BX_STRIDE * ka,
         r = 3 * ka;
-      hax = ex[e + BX_ROT_X]! - base[r]!;
-      hay = ex[e + BX_ROT_Y]! - base[r + 1]!;
-      haz = ex[e + BX_ROT_Z]! - base[r + 2]!;
+      hax = ex[e + BS.BX_ROT_X]! - base[r]!;
+      hay = ex[e + BS.BX_ROT_Y]! - base[r + 1]!;
+      haz = ex[e + BS.BX_ROT_Z]! - base[r + 2]!;
     }
     if (kb > 0) {
-      const e = BX_STRIDE * kb,
+      const e = BS.BX_STRIDE * kb,
         r = 3 * kb;
-      hbx = ex[e + BX_ROT_X]! - base[r]!;
-      hby = ex[e + BX_ROT_Y]! - base[r + 1]!;
-      hbz = ex[e + BX_ROT_Z]! - base[r + 2]!;
+      hbx = ex[e + BS.BX_ROT_X]! - base[r]!;
+      hby = ex[e + BS.BX_ROT_Y]! - base[r + 1]!;
+      hbz = ex[e + BS.BX_ROT_Z]! - base[r + 2]!;
     }
     const m = PTS[i]!;
     // A speculative manifold that cannot close this substep is skipped, exactly: no impulse yet, and every
     // point's s >= minSep + dn - |theta_A| reach_A - |theta_B| reach_B > 0 with
     // v_n + s / h_s >= (v_B - v_A) . n - |w_A| reach_A - |w_B| reach_B + s_low / h_s >= 0, so each row would
     // compute lambda = max(0 - m (v_n + s / h_s), 0) = 0 and change nothing (friction has no limit then).
-    const minSep = H[h + HEAD_MIN_SEP]!;
+    const minSep = H[h + M3.HEAD_MIN_SEP]!;
     if (minSep > 0 && FT[3 * i] === 0 && FT[3 * i + 1] === 0 && FT[3 * i + 2] === 0) {
       let idle = true;
       for (let k = 0; k < m; k++) {
@@ -322,8 +272,8 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
         }
       }
       if (idle) {
-        const rA = H[h + HEAD_REACH_A]!,
-          rB = H[h + HEAD_REACH_B]!;
+        const rA = H[h + M3.HEAD_REACH_A]!,
+          rB = H[h + M3.HEAD_REACH_B]!;
         const sLow = minSep + dn - Math.sqrt(hax * hax + hay * hay + haz * haz) * rA - Math.sqrt(hbx * hbx + hby * hby + hbz * hbz) * rB;
         if (sLow > 0) {
           const vLow =
@@ -338,8 +288,8 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
     }
     // Isotropic bodies: I^-1 (r x u) = i (r x u), from the crosses (the stored products are not read).
     const iso = ISO[i] === 1,
-      iA = H[h + HEAD_INV_IA]!,
-      iB = H[h + HEAD_INV_IB]!;
+      iA = H[h + M3.HEAD_INV_IA]!,
+      iB = H[h + M3.HEAD_INV_IB]!;
     let pushed = false;
     // Normal rows swept until a flat hit is shared by the points as the exact solve shares it, not by the
     // order they are visited in (NORMAL_SWEEPS); a soft row ends the sweeps after the first.
@@ -358,13 +308,13 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
       for (let kk = 0; kk < m; kk++) {
         const k = backward !== odd ? m - 1 - kk : kk;
         const q = 4 * i + k,
-          p = h + REC_POINTS + POINT_STRIDE * k;
-        const ra0 = H[p + CP_NORMAL_ROW + ROW_AX]!,
-          ra1 = H[p + CP_NORMAL_ROW + ROW_AY]!,
-          ra2 = H[p + CP_NORMAL_ROW + ROW_AZ]!,
-          rb0 = H[p + CP_NORMAL_ROW + ROW_BX]!,
-          rb1 = H[p + CP_NORMAL_ROW + ROW_BY]!,
-          rb2 = H[p + CP_NORMAL_ROW + ROW_BZ]!;
+          p = h + M3.REC_POINTS + M3.POINT_STRIDE * k;
+        const ra0 = H[p + CP_NORMAL_ROW + M3.ROW_AX]!,
+          ra1 = H[p + CP_NORMAL_ROW + M3.ROW_AY]!,
+          ra2 = H[p + CP_NORMAL_ROW + M3.ROW_AZ]!,
+          rb0 = H[p + CP_NORMAL_ROW + M3.ROW_BX]!,
+          rb1 = H[p + CP_NORMAL_ROW + M3.ROW_BY]!,
+          rb2 = H[p + CP_NORMAL_ROW + M3.ROW_BZ]!;
         // s = s0 + (d_B - d_A) . n + theta_B . (r_B x n) - theta_A . (r_A x n)
         const s = H[p + CP_SEPARATION]! + dn + (hbx * rb0 + hby * rb1 + hbz * rb2 - (hax * ra0 + hay * ra1 + haz * ra2));
         // The row's regime, bias and scales (solver/contact-point.ts), selected without a branch.
@@ -405,13 +355,13 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
           wby += gb * rb1;
           wbz += gb * rb2;
         } else {
-          const o = JAC_STRIDE * q;
-          wax -= dl * JI[o + ROW_AX]!;
-          way -= dl * JI[o + ROW_AY]!;
-          waz -= dl * JI[o + ROW_AZ]!;
-          wbx += dl * JI[o + ROW_BX]!;
-          wby += dl * JI[o + ROW_BY]!;
-          wbz += dl * JI[o + ROW_BZ]!;
+          const o = M3.JAC_STRIDE * q;
+          wax -= dl * JI[o + M3.ROW_AX]!;
+          way -= dl * JI[o + M3.ROW_AY]!;
+          waz -= dl * JI[o + M3.ROW_AZ]!;
+          wbx += dl * JI[o + M3.ROW_BX]!;
+          wby += dl * JI[o + M3.ROW_BY]!;
+          wbz += dl * JI[o + M3.ROW_BZ]!;
         }
         pushed = pushed || dl !== 0;
         change += Math.abs(dl);
@@ -425,40 +375,40 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
     // Friction of the manifold at its anchor (t1, t2, then the twist about n), limited by mu sum(lambda_n).
     let sumLn = 0;
     for (let k = 0; k < m; k++) sumLn += LN[4 * i + k]!;
-    const limit = H[h + HEAD_MU]! * sumLn;
+    const limit = H[h + M3.HEAD_MU]! * sumLn;
     const o1 = FT[3 * i]!,
       o2 = FT[3 * i + 1]!,
       ow = FT[3 * i + 2]!;
     // A manifold that pushes nothing (a speculative one) has no friction to solve.
     if (limit !== 0 || o1 !== 0 || o2 !== 0 || ow !== 0) {
-      const t1x = H[h + HEAD_T1X]!,
-        t1y = H[h + HEAD_T1Y]!,
-        t1z = H[h + HEAD_T1Z]!;
+      const t1x = H[h + M3.HEAD_T1X]!,
+        t1y = H[h + M3.HEAD_T1Y]!,
+        t1z = H[h + M3.HEAD_T1Z]!;
       const t2x = ny * t1z - nz * t1y,
         t2y = nz * t1x - nx * t1z,
         t2z = nx * t1y - ny * t1x;
       // t1 and t2 (the manifold's rows of crosses and of inverse products), both from the same
       // velocities, the impulse (l1, l2) then held within the circle of radius mu sum(lambda_n): the same
       // limit in every direction of sliding (clamping each separately let a diagonal slide take sqrt 2 of it).
-      const a10 = H[h + REC_T1 + ROW_AX]!,
-        a11 = H[h + REC_T1 + ROW_AY]!,
-        a12 = H[h + REC_T1 + ROW_AZ]!,
-        b10 = H[h + REC_T1 + ROW_BX]!,
-        b11 = H[h + REC_T1 + ROW_BY]!,
-        b12 = H[h + REC_T1 + ROW_BZ]!;
-      const a20 = H[h + REC_T2 + ROW_AX]!,
-        a21 = H[h + REC_T2 + ROW_AY]!,
-        a22 = H[h + REC_T2 + ROW_AZ]!,
-        b20 = H[h + REC_T2 + ROW_BX]!,
-        b21 = H[h + REC_T2 + ROW_BY]!,
-        b22 = H[h + REC_T2 + ROW_BZ]!;
+      const a10 = H[h + M3.REC_T1 + M3.ROW_AX]!,
+        a11 = H[h + M3.REC_T1 + M3.ROW_AY]!,
+        a12 = H[h + M3.REC_T1 + M3.ROW_AZ]!,
+        b10 = H[h + M3.REC_T1 + M3.ROW_BX]!,
+        b11 = H[h + M3.REC_T1 + M3.ROW_BY]!,
+        b12 = H[h + M3.REC_T1 + M3.ROW_BZ]!;
+      const a20 = H[h + M3.REC_T2 + M3.ROW_AX]!,
+        a21 = H[h + M3.REC_T2 + M3.ROW_AY]!,
+        a22 = H[h + M3.REC_T2 + M3.ROW_AZ]!,
+        b20 = H[h + M3.REC_T2 + M3.ROW_BX]!,
+        b21 = H[h + M3.REC_T2 + M3.ROW_BY]!,
+        b22 = H[h + M3.REC_T2 + M3.ROW_BZ]!;
       const dvx = vbx - vax,
         dvy = vby - vay,
         dvz = vbz - vaz;
       const vt1 = dvx * t1x + dvy * t1y + dvz * t1z + (wbx * b10 + wby * b11 + wbz * b12 - (wax * a10 + way * a11 + waz * a12));
       const vt2 = dvx * t2x + dvy * t2y + dvz * t2z + (wbx * b20 + wby * b21 + wbz * b22 - (wax * a20 + way * a21 + waz * a22));
-      let l1 = o1 - H[h + HEAD_MT1]! * vt1,
-        l2 = o2 - H[h + HEAD_MT2]! * vt2;
+      let l1 = o1 - H[h + M3.HEAD_MT1]! * vt1,
+        l2 = o2 - H[h + M3.HEAD_MT2]! * vt2;
       const l2sum = l1 * l1 + l2 * l2;
       if (l2sum > limit * limit) {
         const k = limit / Math.sqrt(l2sum);
@@ -487,18 +437,23 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
           wby += iB * (d1 * b11 + d2 * b21);
           wbz += iB * (d1 * b12 + d2 * b22);
         } else {
-          const p = FRICTION_INV_STRIDE * i;
-          wax -= d1 * FV[p + FRICTION_T1 + ROW_AX]! + d2 * FV[p + FRICTION_T2 + ROW_AX]!;
-          way -= d1 * FV[p + FRICTION_T1 + ROW_AY]! + d2 * FV[p + FRICTION_T2 + ROW_AY]!;
-          waz -= d1 * FV[p + FRICTION_T1 + ROW_AZ]! + d2 * FV[p + FRICTION_T2 + ROW_AZ]!;
-          wbx += d1 * FV[p + FRICTION_T1 + ROW_BX]! + d2 * FV[p + FRICTION_T2 + ROW_BX]!;
-          wby += d1 * FV[p + FRICTION_T1 + ROW_BY]! + d2 * FV[p + FRICTION_T2 + ROW_BY]!;
-          wbz += d1 * FV[p + FRICTION_T1 + ROW_BZ]! + d2 * FV[p + FRICTION_T2 + ROW_BZ]!;
+          const p = M3.FRICTION_INV_STRIDE * i;
+          wax -= d1 * FV[p + M3.FRICTION_T1 + M3.ROW_AX]! + d2 * FV[p + M3.FRICTION_T2 + M3.ROW_AX]!;
+          way -= d1 * FV[p + M3.FRICTION_T1 + M3.ROW_AY]! + d2 * FV[p + M3.FRICTION_T2 + M3.ROW_AY]!;
+          waz -= d1 * FV[p + M3.FRICTION_T1 + M3.ROW_AZ]! + d2 * FV[p + M3.FRICTION_T2 + M3.ROW_AZ]!;
+          wbx += d1 * FV[p + M3.FRICTION_T1 + M3.ROW_BX]! + d2 * FV[p + M3.FRICTION_T2 + M3.ROW_BX]!;
+          wby += d1 * FV[p + M3.FRICTION_T1 + M3.ROW_BY]! + d2 * FV[p + M3.FRICTION_T2 + M3.ROW_BY]!;
+          wbz += d1 * FV[p + M3.FRICTION_T1 + M3.ROW_BZ]! + d2 * FV[p + M3.FRICTION_T2 + M3.ROW_BZ]!;
         }
         pushed = true;
       }
       // Twist: relative spin about n, limited by mu arm sum(lambda_n).
-      const lw = boundedImpulse(ow, H[h + HEAD_MTW]!, (wbx - wax) * nx + (wby - way) * ny + (wbz - waz) * nz, limit * H[h + HEAD_ARM]!);
+      const lw = boundedImpulse(
+        ow,
+        H[h + M3.HEAD_MTW]!,
+        (wbx - wax) * nx + (wby - way) * ny + (wbz - waz) * nz,
+        limit * H[h + M3.HEAD_ARM]!,
+      );
       FT[3 * i + 2] = lw;
       const dw = lw - ow;
       if (dw !== 0) {
@@ -512,35 +467,35 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
           wby += gb * ny;
           wbz += gb * nz;
         } else {
-          const p = FRICTION_INV_STRIDE * i + FRICTION_TWIST;
-          wax -= dw * FV[p + ROW_AX]!;
-          way -= dw * FV[p + ROW_AY]!;
-          waz -= dw * FV[p + ROW_AZ]!;
-          wbx += dw * FV[p + ROW_BX]!;
-          wby += dw * FV[p + ROW_BY]!;
-          wbz += dw * FV[p + ROW_BZ]!;
+          const p = M3.FRICTION_INV_STRIDE * i + M3.FRICTION_TWIST;
+          wax -= dw * FV[p + M3.ROW_AX]!;
+          way -= dw * FV[p + M3.ROW_AY]!;
+          waz -= dw * FV[p + M3.ROW_AZ]!;
+          wbx += dw * FV[p + M3.ROW_BX]!;
+          wby += dw * FV[p + M3.ROW_BY]!;
+          wbz += dw * FV[p + M3.ROW_BZ]!;
         }
         pushed = true;
       }
     }
     if (pushed) {
       if (ka > 0) {
-        sb[a + BS3_VX] = vax;
-        sb[a + BS3_VY] = vay;
-        sb[a + BS3_VZ] = vaz;
-        sb[a + BS3_WX] = wax;
-        sb[a + BS3_WY] = way;
-        sb[a + BS3_WZ] = waz;
-        sb[a + BS3_PUSHED] = 1;
+        sb[a + BS.BS3_VX] = vax;
+        sb[a + BS.BS3_VY] = vay;
+        sb[a + BS.BS3_VZ] = vaz;
+        sb[a + BS.BS3_WX] = wax;
+        sb[a + BS.BS3_WY] = way;
+        sb[a + BS.BS3_WZ] = waz;
+        sb[a + BS.BS3_PUSHED] = 1;
       }
       if (kb > 0) {
-        sb[b + BS3_VX] = vbx;
-        sb[b + BS3_VY] = vby;
-        sb[b + BS3_VZ] = vbz;
-        sb[b + BS3_WX] = wbx;
-        sb[b + BS3_WY] = wby;
-        sb[b + BS3_WZ] = wbz;
-        sb[b + BS3_PUSHED] = 1;
+        sb[b + BS.BS3_VX] = vbx;
+        sb[b + BS.BS3_VY] = vby;
+        sb[b + BS.BS3_VZ] = vbz;
+        sb[b + BS.BS3_WX] = wbx;
+        sb[b + BS.BS3_WY] = wby;
+        sb[b + BS.BS3_WZ] = wbz;
+        sb[b + BS.BS3_PUSHED] = 1;
       }
     }
   }
@@ -562,15 +517,15 @@ function pushAlongNormal(
   L: Float32Array | Float64Array,
   at: number,
 ): void {
-  const f = sb[s + BS3_INV_MASS]! * dl,
+  const f = sb[s + BS.BS3_INV_MASS]! * dl,
     g = iso ? invI * dl : dl;
-  sb[s + BS3_VX] = sb[s + BS3_VX]! + f * nx;
-  sb[s + BS3_VY] = sb[s + BS3_VY]! + f * ny;
-  sb[s + BS3_VZ] = sb[s + BS3_VZ]! + f * nz;
-  sb[s + BS3_WX] = sb[s + BS3_WX]! + g * L[at]!;
-  sb[s + BS3_WY] = sb[s + BS3_WY]! + g * L[at + 1]!;
-  sb[s + BS3_WZ] = sb[s + BS3_WZ]! + g * L[at + 2]!;
-  sb[s + BS3_PUSHED] = 1;
+  sb[s + BS.BS3_VX] = sb[s + BS.BS3_VX]! + f * nx;
+  sb[s + BS.BS3_VY] = sb[s + BS.BS3_VY]! + f * ny;
+  sb[s + BS.BS3_VZ] = sb[s + BS.BS3_VZ]! + f * nz;
+  sb[s + BS.BS3_WX] = sb[s + BS.BS3_WX]! + g * L[at]!;
+  sb[s + BS.BS3_WY] = sb[s + BS.BS3_WY]! + g * L[at + 1]!;
+  sb[s + BS.BS3_WZ] = sb[s + BS.BS3_WZ]! + g * L[at + 2]!;
+  sb[s + BS.BS3_PUSHED] = 1;
 }
 
 /**
@@ -620,12 +575,12 @@ export function applyManifold3DRestitution(world: PhysicsWorld): void {
       if (e === 0) continue;
       const ka = buf.ia[i]!,
         kb = buf.ib[i]!,
-        a = BS3_STRIDE * ka,
-        b = BS3_STRIDE * kb;
+        a = BS.BS3_STRIDE * ka,
+        b = BS.BS3_STRIDE * kb;
       // Isotropic: I^-1 (r x n) = i (r x n), from the crosses; else the stored products.
       const iso = buf.iso[i] === 1,
-        iA = iso ? T[II3_STRIDE * ka + II3_XX]! : 0,
-        iB = iso ? T[II3_STRIDE * kb + II3_XX]! : 0;
+        iA = iso ? T[BS.II3_STRIDE * ka + BS.II3_XX]! : 0,
+        iB = iso ? T[BS.II3_STRIDE * kb + BS.II3_XX]! : 0;
       const nx = buf.nx[i]!,
         ny = buf.ny[i]!,
         nz = buf.nz[i]!;
@@ -636,26 +591,26 @@ export function applyManifold3DRestitution(world: PhysicsWorld): void {
         const target = restitutionTarget(e, VN0[q]!, VN0[q]!, threshold, elasticThreshold);
         if (target < 0) continue;
         bounces = true;
-        const p = REC_STRIDE * i + REC_POINTS + POINT_STRIDE * k;
+        const p = M3.REC_STRIDE * i + M3.REC_POINTS + M3.POINT_STRIDE * k;
         const vn =
-          (sb[b + BS3_VX]! - sb[a + BS3_VX]!) * nx +
-          (sb[b + BS3_VY]! - sb[a + BS3_VY]!) * ny +
-          (sb[b + BS3_VZ]! - sb[a + BS3_VZ]!) * nz +
-          sb[b + BS3_WX]! * R[p + CP_NORMAL_ROW + ROW_BX]! +
-          sb[b + BS3_WY]! * R[p + CP_NORMAL_ROW + ROW_BY]! +
-          sb[b + BS3_WZ]! * R[p + CP_NORMAL_ROW + ROW_BZ]! -
-          sb[a + BS3_WX]! * R[p + CP_NORMAL_ROW + ROW_AX]! -
-          sb[a + BS3_WY]! * R[p + CP_NORMAL_ROW + ROW_AY]! -
-          sb[a + BS3_WZ]! * R[p + CP_NORMAL_ROW + ROW_AZ]!;
+          (sb[b + BS.BS3_VX]! - sb[a + BS.BS3_VX]!) * nx +
+          (sb[b + BS.BS3_VY]! - sb[a + BS.BS3_VY]!) * ny +
+          (sb[b + BS.BS3_VZ]! - sb[a + BS.BS3_VZ]!) * nz +
+          sb[b + BS.BS3_WX]! * R[p + CP_NORMAL_ROW + M3.ROW_BX]! +
+          sb[b + BS.BS3_WY]! * R[p + CP_NORMAL_ROW + M3.ROW_BY]! +
+          sb[b + BS.BS3_WZ]! * R[p + CP_NORMAL_ROW + M3.ROW_BZ]! -
+          sb[a + BS.BS3_WX]! * R[p + CP_NORMAL_ROW + M3.ROW_AX]! -
+          sb[a + BS.BS3_WY]! * R[p + CP_NORMAL_ROW + M3.ROW_AY]! -
+          sb[a + BS.BS3_WZ]! * R[p + CP_NORMAL_ROW + M3.ROW_AZ]!;
         const old = LN[q]!;
         const lam = restitutionImpulse(old, R[p + CP_NORMAL_MASS]!, vn, target, Number.POSITIVE_INFINITY);
         const dl = lam - old;
         LN[q] = lam;
         if (dl === 0) continue;
         // Body row 0 (the static world) is never written.
-        const o = JAC_STRIDE * q;
-        if (ka > 0) pushAlongNormal(sb, a, -dl, nx, ny, nz, iso, iA, iso ? R : JI, iso ? p + CP_NORMAL_ROW + ROW_AX : o + ROW_AX);
-        if (kb > 0) pushAlongNormal(sb, b, dl, nx, ny, nz, iso, iB, iso ? R : JI, iso ? p + CP_NORMAL_ROW + ROW_BX : o + ROW_BX);
+        const o = M3.JAC_STRIDE * q;
+        if (ka > 0) pushAlongNormal(sb, a, -dl, nx, ny, nz, iso, iA, iso ? R : JI, iso ? p + CP_NORMAL_ROW + M3.ROW_AX : o + M3.ROW_AX);
+        if (kb > 0) pushAlongNormal(sb, b, dl, nx, ny, nz, iso, iB, iso ? R : JI, iso ? p + CP_NORMAL_ROW + M3.ROW_BX : o + M3.ROW_BX);
       }
       if (all && bounces) list[listed++] = i;
     }

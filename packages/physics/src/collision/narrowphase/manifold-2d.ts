@@ -1,7 +1,7 @@
 import { type ConvexGeometry, createGeometry } from '../../shapes/geometry-2d.js';
 import { widenToDoubles } from '../../world/double-fields.js';
 import { markWritable } from '../../world/writable-fields.js';
-import { clamp01 } from './segments-3d.js';
+import { closestFractions } from './segments-3d.js';
 
 /**
  * Contact manifolds of 2D convex shapes: pure functions, no world. A manifold is the contact between
@@ -589,39 +589,17 @@ export function segmentFractions(
     d2y = q2y - p2y;
   const rx = p1x - p2x,
     ry = p1y - p2y;
-  const a = d1x * d1x + d1y * d1y,
-    e = d2x * d2x + d2y * d2y,
-    f = d2x * rx + d2y * ry;
-  let s = 0,
-    t = 0;
-  const eps = 1e-18;
-  if (a <= eps && e <= eps) {
-    res[0] = 0;
-    res[1] = 0;
-    return;
-  }
-  if (a <= eps) {
-    t = clamp01(f / e);
-  } else {
-    const c = d1x * rx + d1y * ry;
-    if (e <= eps) {
-      s = clamp01(-c / a);
-    } else {
-      const b = d1x * d2x + d1y * d2y;
-      const denom = a * e - b * b;
-      s = denom > 0 ? clamp01((b * f - c * e) / denom) : 0;
-      t = (b * s + f) / e;
-      if (t < 0) {
-        t = 0;
-        s = clamp01(-c / a);
-      } else if (t > 1) {
-        t = 1;
-        s = clamp01((b - c) / a);
-      }
-    }
-  }
-  res[0] = s;
-  res[1] = t;
+  closestFractions(
+    d1x * d1x + d1y * d1y,
+    d1x * d2x + d1y * d2y,
+    d1x * rx + d1y * ry,
+    d2x * d2x + d2y * d2y,
+    d2x * rx + d2y * ry,
+    1e-18,
+    0,
+    0,
+    res,
+  );
 }
 
 /**

@@ -48,38 +48,62 @@ export function closestSegmentParams(
   const rx = p0x - q0x,
     ry = p0y - q0y,
     rz = p0z - q0z;
-  const a = d1x * d1x + d1y * d1y + d1z * d1z,
-    e = d2x * d2x + d2y * d2y + d2z * d2z,
-    f = d2x * rx + d2y * ry + d2z * rz;
+  closestFractions(
+    d1x * d1x + d1y * d1y + d1z * d1z,
+    d1x * d2x + d1y * d2y + d1z * d2z,
+    d1x * rx + d1y * ry + d1z * rz,
+    d2x * d2x + d2y * d2y + d2z * d2z,
+    d2x * rx + d2y * ry + d2z * rz,
+    1e-24,
+    1e-12,
+    0.5,
+    st,
+  );
+}
+
+/**
+ * Fractions (s, t) in [0, 1] of the closest points p1 + s d1 and p2 + t d2 of two segments in any
+ * dimension, from the dot products a = d1.d1, b = d1.d2, c = d1.r, e = d2.d2, f = d2.r with
+ * r = p1 - p2 (Ericson, Real-Time Collision Detection, 5.1.9), written to out[0..1]. A segment with
+ * a squared length <= `small` (m^2) is a point; segments are parallel when a e - b^2 <= `parallel` a e
+ * (a relative tolerance, >= 0), and then s is `parallelS` before t is clamped.
+ */
+export function closestFractions(
+  a: number,
+  b: number,
+  c: number,
+  e: number,
+  f: number,
+  small: number,
+  parallel: number,
+  parallelS: number,
+  out: Float64Array,
+): void {
   let s = 0,
     t = 0;
-  if (a <= 1e-24 && e <= 1e-24) {
-    st[0] = 0;
-    st[1] = 0;
+  if (a <= small && e <= small) {
+    out[0] = 0;
+    out[1] = 0;
     return;
   }
-  if (a <= 1e-24) {
+  if (a <= small) {
     t = clamp01(f / e);
+  } else if (e <= small) {
+    s = clamp01(-c / a);
   } else {
-    const c = d1x * rx + d1y * ry + d1z * rz;
-    if (e <= 1e-24) {
+    const den = a * e - b * b;
+    s = den > parallel * a * e ? clamp01((b * f - c * e) / den) : parallelS;
+    t = (b * s + f) / e;
+    if (t < 0) {
+      t = 0;
       s = clamp01(-c / a);
-    } else {
-      const b = d1x * d2x + d1y * d2y + d1z * d2z,
-        den = a * e - b * b;
-      s = den > 1e-12 * a * e ? clamp01((b * f - c * e) / den) : 0.5;
-      t = (b * s + f) / e;
-      if (t < 0) {
-        t = 0;
-        s = clamp01(-c / a);
-      } else if (t > 1) {
-        t = 1;
-        s = clamp01((b - c) / a);
-      }
+    } else if (t > 1) {
+      t = 1;
+      s = clamp01((b - c) / a);
     }
   }
-  st[0] = s;
-  st[1] = t;
+  out[0] = s;
+  out[1] = t;
 }
 
 /** `x` clamped to [0, 1] (a segment parameter; NaN stays NaN). Shared with the 2D segment pair (manifold-2d.ts). */
