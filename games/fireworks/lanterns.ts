@@ -175,7 +175,8 @@ export const LEVELS: readonly LanternLevel[] = Object.freeze([
   },
   {
     name: 'Drifting',
-    tip: 'on a ghost; where two pass, both light',
+    // A ghost is the dashed ring each drifting lantern trails: where it will be when the shell bursts.
+    tip: 'a dashed ghost: its lantern is there at the burst; fire where two meet, both light',
     par: 3,
     shells: 5,
     shell: 'peony',
