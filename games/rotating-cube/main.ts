@@ -2123,13 +2123,14 @@ function fitBesideDrawer(): void {
         ay = Math.min(ay, corner.y);
         by = Math.max(by, corner.y);
       }
-  // Under the net (a phone held upright) the height is the floor's, but the width is the walls' outer
-  // tops and feet: the side walls lean out towards the camera and were cut off at the screen's sides.
+  // Under the net (a phone held upright) the height is the floor's, and the width the walls' outer
+  // feet: the floor and the walls' full thickness at it stay in sight, while the tops of the side
+  // walls, leaning out towards the camera, may run past the screen's sides (fitting them too left
+  // the room a third of the phone's height).
   let wx = 0;
   if (below > 0) {
     const outer = ROOM_HALF + 2 * WALL_HALF_THICKNESS;
-    for (const x of [-outer, outer])
-      for (const y of [0, WALL_HEIGHT]) for (const z of [-outer, outer]) wx = Math.max(wx, Math.abs(corner.set(x, y, z).project(cam).x));
+    for (const x of [-outer, outer]) for (const z of [-outer, outer]) wx = Math.max(wx, Math.abs(corner.set(x, 0, z).project(cam).x));
   }
   if (covered > 0) {
     // The free part of the stage in normalised device x: [-1, r].
