@@ -175,7 +175,9 @@ export const LEVELS: readonly LanternLevel[] = Object.freeze([
   },
   {
     name: 'Drifting',
-    tip: 'on a ghost; where two pass, both light',
+    // A ghost is the dashed ring each drifting lantern trails: where it will be when the shell bursts
+    // (the tip fits one line beside its button on a phone).
+    tip: 'a ghost: its lantern at burst time',
     par: 3,
     shells: 5,
     shell: 'peony',

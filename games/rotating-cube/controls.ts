@@ -9,16 +9,16 @@ import type { Mode } from './scene';
 
 /**
  * The legend lines of `mode` ('room', 'cube' or 'flip'; the two pivot modes share theirs), before
- * the camera's orbit lines. `touch`: whether the page runs on a touch screen, where a plain tap on
- * the cube does nothing and a drag across it flicks it.
+ * the camera's orbit lines. `touch`: whether the page runs on a touch screen, where a drag across
+ * the cube flicks it (a plain tap there picks the floor cell under the finger, as elsewhere).
  */
 export function cubeControls(mode: Mode, touch: boolean): ControlHint[] {
   const room = mode === 'room';
   return [
     room
       ? touch
-        ? { keys: 'Tap', action: 'the floor: slide the cube there; drag across the cube: flick it', touch: 'Tap' }
-        : { keys: 'Click', action: 'the floor: slide the cube there; the cube: flick it away', touch: 'Tap' }
+        ? { keys: 'Tap', action: 'a floor cell: slide the cube onto it; drag across the cube: flick it', touch: 'Tap' }
+        : { keys: 'Click', action: "a floor cell: slide the cube onto it (a pad's tiles: to their edge)", touch: 'Tap' }
       : { keys: 'Click', action: 'a face: knock it there', touch: 'Tap' },
     room
       ? { keys: 'W A S D', action: 'roll the cube over an edge: away, left, toward you, right', touch: '▲ ◀ ▼ ▶' }
@@ -38,14 +38,14 @@ export const TAP_SLOP = 12;
 /**
  * What a finger's press in the room does, from where it went down (`onCube`: on the cube) and how
  * far it moved before it lifted (`movedPx`, CSS px, >= 0): 'flick' (a drag that started on the
- * cube: the cube slides the way the finger went), 'push' (a tap on the floor: the cube slides
- * there), 'none' (a plain tap on the cube, which beside the pads is easily an accident, or a drag
- * from the floor, which turns the camera).
+ * cube: the cube slides the way the finger went), 'push' (a tap: the cube slides to the floor cell
+ * under the finger, whether the cube's picture covers that cell or not), 'none' (a drag from the
+ * floor, which turns the camera).
  * @throws RangeError when movedPx is negative or not finite.
  */
 export function touchPress(onCube: boolean, movedPx: number): 'flick' | 'push' | 'none' {
   if (!(movedPx >= 0 && Number.isFinite(movedPx))) throw new RangeError(`touchPress: movedPx must be finite and >= 0, got ${movedPx}`);
   const moved = movedPx > TAP_SLOP;
-  if (onCube) return moved ? 'flick' : 'none';
+  if (onCube) return moved ? 'flick' : 'push';
   return moved ? 'none' : 'push';
 }

@@ -76,6 +76,7 @@ import {
   MeshBasicMaterial,
   MeshStandardMaterial,
   PlaneGeometry,
+  RepeatWrapping,
   RingGeometry,
   SphereGeometry,
   SRGBColorSpace,
@@ -506,28 +507,63 @@ shell.onWorldChange(() => {
  * mipmapped), its edges stay smooth where a box's or a line's would be drawn in stair steps (a
  * software renderer draws without antialiasing, at half the pixels).
  */
-const PAD_TEX = 128,
-  PAD_TEX_MARGIN = 8;
+const PAD_TEX = 256,
+  PAD_TEX_MARGIN = 16;
 function padTexture(filled: boolean): CanvasTexture {
   const c = document.createElement('canvas');
   c.width = c.height = PAD_TEX;
   const g = c.getContext('2d')!;
   const m = PAD_TEX_MARGIN,
-    size = PAD_TEX - 2 * m;
+    size = PAD_TEX - 2 * m,
+    inset = filled ? 0 : 10;
+  // A thin glow only: a wide one blurred the pad's edge into the floor.
   g.shadowColor = '#fff';
-  g.shadowBlur = 5;
+  g.shadowBlur = 3;
   g.fillStyle = g.strokeStyle = '#fff';
   g.beginPath();
-  g.roundRect(m + (filled ? 0 : 5), m + (filled ? 0 : 5), size - (filled ? 0 : 10), size - (filled ? 0 : 10), 12);
+  g.roundRect(m + inset, m + inset, size - 2 * inset, size - 2 * inset, 20);
   if (filled) g.fill();
   else {
-    g.lineWidth = 9;
+    g.lineWidth = 16;
     g.stroke();
   }
   const texture = new CanvasTexture(c);
   texture.colorSpace = SRGBColorSpace;
   texture.anisotropy = 4;
   return texture;
+}
+/**
+ * The floor's tiles: 1 m cells with a thin light seam at their edges, a picture repeated over the
+ * room's floor and shifted so its cells are the puzzle's (centred on the lit pad; `placeTiles`).
+ */
+const floorTiles = (() => {
+  const c = document.createElement('canvas');
+  c.width = c.height = 128;
+  const g = c.getContext('2d')!;
+  g.fillStyle = 'rgba(255, 255, 255, 0.035)';
+  g.fillRect(0, 0, 128, 128);
+  g.strokeStyle = 'rgba(210, 225, 255, 0.30)';
+  g.lineWidth = 3;
+  g.strokeRect(0, 0, 128, 128);
+  const t = new CanvasTexture(c);
+  t.colorSpace = SRGBColorSpace;
+  t.anisotropy = 8;
+  t.wrapS = t.wrapT = RepeatWrapping;
+  t.repeat.set(2 * ROOM_HALF, 2 * ROOM_HALF);
+  const mesh = new Mesh(
+    new PlaneGeometry(2 * ROOM_HALF, 2 * ROOM_HALF).rotateX(-Math.PI / 2),
+    new MeshBasicMaterial({ map: t, transparent: true, depthWrite: false }),
+  );
+  mesh.position.y = 0.003;
+  mesh.renderOrder = -1;
+  app.scene.add(mesh);
+  return mesh;
+})();
+/** Shifts the floor's tiles so their cells are centred on (x, z), m (the lit pad's centre). */
+function placeTiles(x: number, z: number): void {
+  const map = (floorTiles.material as MeshBasicMaterial).map!;
+  // The picture's u runs along +x from the floor's -x edge and v along -z from its +z edge, one tile a metre.
+  map.offset.set(-(x + 0.5 + ROOM_HALF) - Math.floor(-(x + 0.5 + ROOM_HALF)), z + 0.5 - ROOM_HALF - Math.floor(z + 0.5 - ROOM_HALF));
 }
 /** A flat square on the floor carrying a pad picture: 2 PAD_HALF across the picture's square, wider by its margin. */
 const padPlane = new PlaneGeometry(
@@ -642,6 +678,22 @@ let burstAt = -Infinity;
 /** A burst lasts this long, ms. */
 const BURST_MS = 700;
 
+/** A square outline picture for a 1 m cell: a white rim with rounded corners, transparent inside. */
+function outlineTexture(): CanvasTexture {
+  const c = document.createElement('canvas');
+  c.width = c.height = 128;
+  const g = c.getContext('2d')!;
+  g.strokeStyle = 'rgba(255, 255, 255, 0.95)';
+  g.lineWidth = 7;
+  g.beginPath();
+  g.roundRect(8, 8, 112, 112, 12);
+  g.stroke();
+  const t = new CanvasTexture(c);
+  t.colorSpace = SRGBColorSpace;
+  t.anisotropy = 4;
+  return t;
+}
+
 // Room mode: where a click would push the cube (an arrow on the floor from the cube) and the point aimed at.
 const aimArrow = new VectorArrow({ color: 0x7fe3ff, radius: 0.035, headLength: 0.22 });
 const aimRing = new Mesh(
@@ -649,7 +701,15 @@ const aimRing = new Mesh(
   new MeshBasicMaterial({ color: 0x7fe3ff, transparent: true, opacity: 0.9, side: DoubleSide, depthWrite: false }),
 );
 aimRing.visible = false;
-app.scene.add(aimArrow.object, aimRing);
+/** The floor cell under the pointer: a 1 m square outline (a picture, so its edges are smooth). */
+const cellMark = new Mesh(
+  new PlaneGeometry(1, 1).rotateX(-Math.PI / 2),
+  new MeshBasicMaterial({ map: outlineTexture(), transparent: true, depthWrite: false }),
+);
+cellMark.visible = false;
+/** The cell under the finger of the last tap that pushed (its centre, x and z, m). */
+const tappedCell: [number, number] = [0, 0];
+app.scene.add(aimArrow.object, aimRing, cellMark);
 aimArrow.hide();
 /** performance.now() until which the aim of the last tap stays shown (touch has no hover), ms. */
 let aimUntil = 0;
@@ -1093,7 +1153,7 @@ canvas.addEventListener('pointerdown', (event) => {
   downOnCube = false;
   if (event.pointerType !== 'mouse' && params.mode === 'room') {
     app.toNdc(event.clientX, event.clientY, ndc);
-    downOnCube = aimAt(ndc[0], ndc[1])?.kind === 'cube';
+    downOnCube = rayHitsCube(ndc[0], ndc[1]);
     if (downOnCube && app.controls) app.controls.enabled = false;
   }
 });
@@ -1113,19 +1173,17 @@ canvas.addEventListener('pointerup', (event) => {
     if (does !== 'push') return;
   } else if (moved > (event.pointerType === 'mouse' ? CLICK_SLOP : TAP_SLOP)) return;
   app.toNdc(event.clientX, event.clientY, ndc);
-  // A finger's tap on the floor right beside the cube can still land on it: only a drag flicks it.
-  if (event.pointerType !== 'mouse' && params.mode === 'room' && aimAt(ndc[0], ndc[1])?.kind === 'cube') return;
   // After a push its aim shows briefly (until the cube gets there, or a roll), then only a new hover shows one.
   if (clickAt(ndc[0], ndc[1])) {
     hover = false;
     aimUntil = performance.now() + 600;
-  }
+  } else sayWhyNot();
 });
 // A mouse shows where a click would push the cube; a finger (no hover) sees it after its tap.
 canvas.addEventListener('pointermove', (event) => {
   if (event.pointerType !== 'mouse' || downId !== -1) return;
   app.toNdc(event.clientX, event.clientY, ndc);
-  hover = aimAt(ndc[0], ndc[1]) !== null;
+  hover = aimAt(ndc[0], ndc[1]) !== null || aimWhy !== '';
   if (hover) aimUntil = Infinity;
 });
 canvas.addEventListener('pointerleave', () => {
@@ -1173,44 +1231,76 @@ const aim: Push = { kind: 'floor', dx: 0, dz: 0, speed: 0, x: 0, z: 0 };
 let lastPush: Push | null = null;
 const origin = new Float64Array(3),
   span = new Float64Array(3);
+/** Why the last `aimAt` gave no push: '' (it gave one), 'here' (the cell is the cube's own), 'bed' (a slide there stops where the cube is already, at the tiles' edge). */
+let aimWhy: '' | 'here' | 'bed' = '';
+/** The cell under the pointer of the last `aimAt` (its centre, x and z, m), drawn outlined while the mouse hovers. */
+const hoverCell: [number, number] = [0, 0];
+
 /**
- * Room mode: what a click at (ndcX, ndcY) would do, into `aim`: on the cube (a ray cast through the
- * physics that looks past the see-through walls) a flick away from the point hit, horizontally from
- * it towards the cube's centre (along the ray when it hits the top within 10 cm of the centre), at
- * params.impulse ROOM_PUSH / m m/s; elsewhere a push towards where the ray meets the floor (kept
- * inside the room) at `slideSpeed` of the distance, so a cube sliding on a face stops there.
- * @returns `aim`, or null when the click would do nothing (not the room, or the ray misses the floor).
+ * Room mode: the centre of the floor cell that holds (x, z), m: the puzzle's cells are 1 m squares
+ * centred on the lit pad (the last pad once the round is over; roll-puzzle.ts), and a cell is one
+ * the cube fits in (centre within CELL_REACH of the room's middle). @returns [x, z], m.
  */
-function aimAt(ndcX: number, ndcY: number): Push | null {
-  if (params.mode !== 'room') return null;
+function cellAt(x: number, z: number): [number, number] {
+  const pad = layout.pads[Math.min(pads.pad, layout.pads.length - 1)]!;
+  const axis = (v: number, c: number): number => {
+    const lo = Math.ceil(-CELL_REACH - c - 1e-9),
+      hi = Math.floor(CELL_REACH - c + 1e-9);
+    return c + Math.max(lo, Math.min(hi, Math.round(v - c)));
+  };
+  return [axis(x, pad[0]), axis(z, pad[1])];
+}
+
+/** Whether the ray through (ndcX, ndcY) hits the cube first (a ray cast through the physics that looks past the see-through walls). */
+function rayHitsCube(ndcX: number, ndcY: number): boolean {
   aimRay(ndcX, ndcY);
   const cam = app.camera.position;
-  const P = shell.world.components.Position,
-    e = handles.body;
-  const cx = P.x[e]!,
-    cz = P.z[e]!;
   origin[0] = cam.x;
   origin[1] = cam.y;
   origin[2] = cam.z;
   span[0] = rayDir.x * 200;
   span[1] = rayDir.y * 200;
   span[2] = rayDir.z * 200;
-  const hit = rayCastAll3D(shell.world, origin, span).find((h) => h.body === e);
-  if (hit) {
-    const hx = cx - hit.x,
-      hz = cz - hit.z;
-    return Math.hypot(hx, hz) <= 0.1 ? flickAim(rayDir.x, rayDir.z) : flickAim(hx, hz);
-  }
-  // The floor point under the pointer (a click on the pad's drawing aims the cube's centre there),
-  // kept inside the room.
+  return rayCastAll3D(shell.world, origin, span).some((h) => h.body === handles.body);
+}
+
+/**
+ * Room mode: what a click at (ndcX, ndcY) would do, into `aim`: a push towards the centre of the
+ * floor cell under the pointer (`cellAt` of where the ray meets the floor, whatever it passes
+ * through first, the cube included: the cell drawn under the pointer is the one aimed at), or, in
+ * the lit pad's bed of tiles, the nearest cell at its edge (`snapToBed`), at `slideSpeed` of the
+ * distance, so the cube sliding on a face stops on that cell.
+ * @returns `aim`, or null when the click would do nothing (not the room, the ray misses the floor,
+ * or the cube already rests where the slide would stop: `aimWhy` says which).
+ */
+function aimAt(ndcX: number, ndcY: number): Push | null {
+  aimWhy = '';
+  if (params.mode !== 'room') return null;
+  aimRay(ndcX, ndcY);
+  const P = shell.world.components.Position,
+    e = handles.body;
+  const cx = P.x[e]!,
+    cz = P.z[e]!;
   const level = rayAtFloor();
   if (level === null) return null;
-  const inside = ROOM_HALF - 0.5;
-  const [x, z] = snapToBed(Math.max(-inside, Math.min(inside, level[0])), Math.max(-inside, Math.min(inside, level[1])));
+  const [hx, hz] = cellAt(level[0], level[1]);
+  hoverCell[0] = hx;
+  hoverCell[1] = hz;
+  const [x, z] = snapToBed(hx, hz);
   const dist = Math.hypot(x - cx, z - cz);
-  if (!(dist > 0.05)) return null;
+  if (!(dist > 0.05)) {
+    aimWhy = x !== hx || z !== hz ? 'bed' : 'here';
+    return null;
+  }
   Object.assign(aim, { kind: 'floor', dx: (x - cx) / dist, dz: (z - cz) / dist, speed: slideSpeed(dist), x, z });
   return aim;
+}
+
+/** Says in the pop why the click just made (`aimWhy`) moved nothing. */
+function sayWhyNot(): void {
+  const roll = pageLayout().touch() ? '▲◀▼▶' : 'W A S D';
+  if (aimWhy === 'here') showPop(`The cube is on that cell: pick another, or roll it (${roll})`, 1600, '#bfe9ff');
+  else if (aimWhy === 'bed') showPop(`Slides stop at the tiles: roll onto them (${roll})`, 1800, '#bfe9ff');
 }
 
 /**
@@ -1302,6 +1392,8 @@ function pushCube(p: Push): void {
   pads.slid();
   applyImpulse(shell.world, e, [m * (p.dx * p.speed - c.Velocity.x[e]!), 0, m * (p.dz * p.speed - c.Velocity.z[e]!)]);
   lastPush = { ...p };
+  tappedCell[0] = hoverCell[0];
+  tappedCell[1] = hoverCell[1];
   sound.launch(0.25 + (0.5 * p.speed) / 7);
   flash = 12;
 }
@@ -1524,7 +1616,7 @@ function updateStatus(wx: number, wy: number, wz: number): void {
     const par = pads.par;
     readToGo();
     // One short line each (on a phone each fits the width): the rules in full are behind the pads card's "?".
-    let hint = touch ? 'Tap the floor: the cube slides there · ▲◀▼▶ roll it' : 'Click the floor: the cube slides there · W A S D roll it';
+    let hint = touch ? 'Tap a cell: the cube slides there · ▲◀▼▶ roll it' : 'Click a cell: the cube slides there · W A S D roll it';
     if (want >= 0)
       hint = touch
         ? `ROLL onto the pad (▲◀▼▶) so ${name} lands on top`
@@ -1940,6 +2032,11 @@ function frame(): void {
   hintRing.visible = padLit && hintSpot !== null;
   if (hintSpot) hintRing.position.set(hintSpot[0], 0.035, hintSpot[1]);
   placeBed(padLit ? pads.pad : -1);
+  {
+    const tilesPad = layout.pads[Math.min(pads.pad, layout.pads.length - 1)]!;
+    floorTiles.visible = room;
+    placeTiles(tilesPad[0], tilesPad[1]);
+  }
   padMarks.forEach((mark, i) => {
     mark.outline.visible = room && i > pads.pad;
     mark.done.visible = room && i < pads.pad;
@@ -1959,7 +2056,10 @@ function frame(): void {
     (burst.material as MeshBasicMaterial).opacity = 1 - age;
   }
   // The aim: an arrow on the floor from the cube the way a click would push it, to the point it would stop.
-  let aimed = room && now < aimUntil && (hover ? aim : lastPush);
+  let aimed = room && now < aimUntil && (hover ? aimWhy === '' && aim : lastPush);
+  // The cell under the pointer, outlined (a mouse's hover, or a finger's tap for a moment after it).
+  cellMark.visible = room && now < aimUntil && (hover || aimed !== false);
+  if (cellMark.visible) cellMark.position.set(hover ? hoverCell[0] : tappedCell[0], 0.036, hover ? hoverCell[1] : tappedCell[1]);
   // A push's aim goes once the cube has got there.
   if (aimed && !hover && Math.hypot(P.x[e]! - aimed.x, P.z[e]! - aimed.z) < 0.3) {
     aimUntil = 0;
@@ -2023,13 +2123,14 @@ function fitBesideDrawer(): void {
         ay = Math.min(ay, corner.y);
         by = Math.max(by, corner.y);
       }
-  // Under the net (a phone held upright) the height is the floor's, but the width is the walls' outer
-  // tops and feet: the side walls lean out towards the camera and were cut off at the screen's sides.
+  // Under the net (a phone held upright) the height is the floor's, and the width the walls' outer
+  // feet: the floor and the walls' full thickness at it stay in sight, while the tops of the side
+  // walls, leaning out towards the camera, may run past the screen's sides (fitting them too left
+  // the room a third of the phone's height).
   let wx = 0;
   if (below > 0) {
     const outer = ROOM_HALF + 2 * WALL_HALF_THICKNESS;
-    for (const x of [-outer, outer])
-      for (const y of [0, WALL_HEIGHT]) for (const z of [-outer, outer]) wx = Math.max(wx, Math.abs(corner.set(x, y, z).project(cam).x));
+    for (const x of [-outer, outer]) for (const z of [-outer, outer]) wx = Math.max(wx, Math.abs(corner.set(x, 0, z).project(cam).x));
   }
   if (covered > 0) {
     // The free part of the stage in normalised device x: [-1, r].

@@ -12,7 +12,16 @@ import { pausedShade, resumedShade } from './dom-pause';
 import { afterRelease, recordBank } from './flight-bank';
 import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
 import { checkLayout } from './layout-check';
-import { cubeState, expectRollsStraightUp, pageOf, placeCube, stillPageOf, waitCubeAtRest, waitCubeMoved } from './rotating-cube';
+import {
+  cubeState,
+  expectClicksLandOnCells,
+  expectRollsStraightUp,
+  pageOf,
+  placeCube,
+  stillPageOf,
+  waitCubeAtRest,
+  waitCubeMoved,
+} from './rotating-cube';
 import { touchPath } from './touch';
 
 const PHONE = { viewport: { width: 390, height: 844 }, touch: true } as const;
@@ -543,7 +552,7 @@ describe('phone controls', () => {
     await g.close();
   });
 
-  it('rotating cube: the pad goal is on screen; a plain tap on the cube does nothing, a drag from it flicks it that way', async () => {
+  it('rotating cube: the pad goal is on screen; a plain tap on the cube picks the floor cell under it, a drag from it flicks it that way', async () => {
     // A fixed layout (?seed=11: the first pad at x = 1.5 m, z = 0.2 m), room to roll left: a random one may put the pad by a wall.
     const g = await h.openGame('rotating-cube', { ...PHONE, query: { seed: 11 } });
     await g.waitFor(() => document.querySelector('[data-hud="challenge"]')?.textContent?.includes('glowing pad') ?? false, null);
@@ -554,16 +563,14 @@ describe('phone controls', () => {
       game.paused = true;
       for (let i = 0; i < 150; i++) game.step();
     });
-    // The room fits the phone's width: the side walls' outer edges (3.4 m out, at their feet and
-    // tops, front and back) lie inside the canvas (they leaned out past its sides).
+    // The room fits the phone's width: the side walls' outer feet (3.4 m out, front and back) lie
+    // inside the canvas (the walls' tops lean out towards the camera and may run past its sides).
     const canvas = (await g.page.locator('canvas').first().boundingBox())!;
     for (const [x, y, z] of [
-      [-3.4, 1.5, 3.4],
-      [3.4, 1.5, 3.4],
       [-3.4, 0, 3.4],
       [3.4, 0, 3.4],
-      [-3.4, 1.5, -3.4],
-      [3.4, 1.5, -3.4],
+      [-3.4, 0, -3.4],
+      [3.4, 0, -3.4],
     ] as const) {
       const p = await stillPageOf(g, x, y, z);
       expect(p.x, `wall edge ${x}, ${y}, ${z}`).toBeGreaterThanOrEqual(canvas.x);
@@ -600,11 +607,16 @@ describe('phone controls', () => {
     const corner0 = await stillPageOf(g, -3, 0, 3);
     const vx0 = await read(g, 'world.components.Velocity.x[window.game.body()]');
     expect(Math.abs(vx0)).toBeLessThan(0.05);
+    const z0 = await read(g, 'world.components.Position.z[window.game.body()]');
     await g.page.touchscreen.tap(at.x, at.y);
-    // A plain tap (easily an accident beside the pads): no push, no move counted.
+    // A plain tap on the cube's top picks the floor cell under the finger, the one behind the cube
+    // (farther from the camera, at -z), as a tap anywhere does: a slide there, one move (the world is
+    // paused, so the cube stays where it is drawn).
     await g.frames(2);
-    expect(Math.abs(await read(g, 'world.components.Velocity.x[window.game.body()]'))).toBeLessThan(0.05);
-    expect(await read(g, 'challenge().moves')).toBe(0);
+    expect(await read(g, 'challenge().moves')).toBe(1);
+    const push = (await g.page.evaluate(() => (window.game as unknown as { lastPush(): { kind: string; z: number } }).lastPush()))!;
+    expect(push.kind).toBe('floor');
+    expect(push.z).toBeLessThan(z0 - 0.5);
     // That first touch sent the touch card away; once it is gone the room is framed as before (it
     // jumped 36 px down 0.7 s after the first touch, when the strip kept for the card went to it):
     // the corner within 1 px of where it was, the cube where it was looked for.
@@ -725,6 +737,13 @@ describe('phone controls', () => {
     expect(g.errors).toEqual([]);
     await g.close();
   });
+
+  it('rotating cube: a tap on the page position of a floor cell (one behind the cube, one beside it, the pad) rests the cube on that cell; a tap on its own cell says why it stays', async () => {
+    const g = await h.openGame('rotating-cube', { ...PHONE, query: { seed: 11 } });
+    await expectClicksLandOnCells(g, (x, y) => g.page.touchscreen.tap(x, y));
+    expect(g.errors).toEqual([]);
+    await g.close();
+  }, 240_000);
 
   it('rotating cube: the status row keeps its height through a round (the cube set on each pad by hand); won, every pad glows gold and the pop shows clear of the face net', async () => {
     const g = await h.openGame('rotating-cube', { ...PHONE, query: { seed: 11 } });

@@ -7,7 +7,16 @@
  */
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
-import { cubeState, expectRollsStraightUp, pageOf, stillPageOf, waitCubeAtRest, waitCubeMoved } from './rotating-cube';
+import {
+  cubeState,
+  expectClicksLandOnCells,
+  expectRollsStraightUp,
+  pageOf,
+  placeCube,
+  stillPageOf,
+  waitCubeAtRest,
+  waitCubeMoved,
+} from './rotating-cube';
 import { sharedPage } from './shared-page';
 
 interface Game3D {
@@ -907,7 +916,7 @@ describe('3D rigid-body games in headless Chromium', () => {
       expect(g.errors).toEqual([]);
     });
 
-    it("rotating-cube (room): a cube slid to rest a quarter past a pad's edge counts; on the next pad with the wrong face up its rim lights and the pop says which face it needs", async () => {
+    it("rotating-cube (room): a cube resting a quarter past a pad's edge counts; on the next pad with the wrong face up its rim lights and the pop says which face it needs", async () => {
       const g = cube();
       await waitCubeAtRest(g);
       type Game = {
@@ -916,21 +925,21 @@ describe('3D rigid-body games in headless Chromium', () => {
         pop(): { text: string; count: number };
       };
       const { pads, halves, faces } = await g.page.evaluate(() => (window.game as unknown as Game).challenge());
-      // A click 0.15 m past pad 1's edge on the side facing the room's centre: the cube's centre rests
-      // there (within 0.1 m), off the drawn pad, and it counts (within PAD_GRACE, 0.25 m, of the edge).
+      // The cube set down by hand 0.15 m past pad 1's edge on the side facing the room's centre (a
+      // click picks a whole cell, so it does not stop there): off the drawn pad, and it counts (within
+      // PAD_GRACE, 0.25 m, of the edge).
       const [x0, z0] = pads[0]!;
       const aimX = x0! - Math.sign(x0!) * (halves[0]! + 0.15);
-      const at = await stillPageOf(g, aimX, 0.5, z0!);
-      await g.page.mouse.click(at.x, at.y);
+      await placeCube(g, aimX, z0!, 2);
       await g.waitFor(() => (window.game as unknown as Game).challenge().pad === 1, null, 60_000);
       const s1 = await cubeState(g);
       expect(Math.abs(s1.x - x0!)).toBeGreaterThan(halves[0]!);
-      // Pad 2 wants a face the cube does not show: slid to its edge, the cube's centre is over the
+      // Pad 2 wants a face the cube does not show: slid onto its cell, the cube's centre is over the
       // counting square (the rim lights), and resting there the pop says the face it needs.
       await waitCubeAtRest(g);
       const [x1, z1] = pads[1]!;
       const pops = await g.page.evaluate(() => (window.game as unknown as Game).pop().count);
-      const at2 = await stillPageOf(g, x1! - Math.sign(x1!) * halves[1]!, 0.5, z1!);
+      const at2 = await stillPageOf(g, x1!, 0, z1!);
       await g.page.mouse.click(at2.x, at2.y);
       const state = await g.waitFor(
         () => {
@@ -951,6 +960,13 @@ describe('3D rigid-body games in headless Chromium', () => {
       expect(g.errors).toEqual([]);
     });
   });
+
+  it('rotating-cube (room), 1280 x 800: a click on the page position of a floor cell (one behind the cube, one beside it, the pad) rests the cube on that cell; a click on its own cell says why it stays', async () => {
+    const g = await h.openGame('rotating-cube', { query: { seed: 11 }, viewport: { width: 1280, height: 800 }, readyTimeoutMs: 60_000 });
+    await expectClicksLandOnCells(g, (x, y) => g.page.mouse.click(x, y));
+    expect(g.errors).toEqual([]);
+    await g.close();
+  }, 240_000);
 
   it('rotating-cube (room): the settings drawer, open over the stage, moves the room into the part it leaves free; closed, the view is whole again', async () => {
     // At the desktop size a stranger played (the drawer is 380 px of the 1280).

@@ -171,3 +171,57 @@ export async function expectRollsStraightUp(g: GamePage, roll: () => Promise<voi
   expect(p1.y).toBeLessThan(p0.y - 20);
   expect(Math.abs(p1.x - p0.x)).toBeLessThan(0.2 * Math.abs(p1.y - p0.y));
 }
+
+/**
+ * Clicks (or taps, with `click`) the page position of the centre of floor cells around the lit pad of
+ * layout 11 (its first pad at x = 1.5 m, z = 0.2 m; the puzzle's cells are 1 m squares centred on the
+ * lit pad) and checks that the cube comes to rest on each cell clicked, its centre within 0.1 m of the
+ * cell's centre: one cell behind the cube (farther from the camera, its picture partly covered by the
+ * cube's) and a cell beside it too. A click on the cube's own cell moves nothing, costs no move and
+ * the pop says why. Last the pad's own cell: the cube rests there and the pad counts.
+ */
+export async function expectClicksLandOnCells(g: GamePage, click: (x: number, y: number) => Promise<void>): Promise<void> {
+  type Game = { challenge(): { pad: number; moves: number }; pop(): { text: string; count: number } };
+  await waitCubeAtRest(g);
+  const s0 = await cubeState(g);
+  expect(s0.pad).toBe(0);
+  const [px, pz] = s0.pads[0]! as [number, number];
+  const onto = async (i: number, j: number): Promise<CubeState> => {
+    const at = await stillPageOf(g, px + i, 0, pz + j);
+    const moves = await g.page.evaluate(() => (window.game as unknown as Game).challenge().moves);
+    await click(at.x, at.y);
+    // The click's push sets the cube's velocity at once and counts a move; then it slides to rest.
+    await g.waitFor((n) => (window.game as unknown as Game).challenge().moves > n, moves);
+    await waitCubeAtRest(g);
+    return cubeState(g);
+  };
+  // From where it landed to a cell left of the pad, then the one behind that, then the one beside it.
+  for (const [i, j] of [
+    [-1, 0],
+    [-1, -1],
+    [0, -1],
+  ] as const) {
+    const s = await onto(i, j);
+    expect(Math.hypot(s.x - (px + i), s.z - (pz + j)), `cell (${i}, ${j}) of the pad`).toBeLessThan(0.1);
+  }
+  // Its own cell: no move, none counted, a word why.
+  const moves = await g.page.evaluate(() => (window.game as unknown as Game).challenge().moves);
+  const pops = await g.page.evaluate(() => (window.game as unknown as Game).pop().count);
+  const here = await stillPageOf(g, px, 0, pz - 1);
+  await click(here.x, here.y);
+  const said = await g.waitFor((n) => {
+    const p = (window.game as unknown as Game).pop();
+    return p.count > n ? p.text : null;
+  }, pops);
+  expect(said).toContain('on that cell');
+  await g.frames(3);
+  expect(await g.page.evaluate(() => (window.game as unknown as Game).challenge().moves)).toBe(moves);
+  const still = await cubeState(g);
+  expect(Math.hypot(still.x - px, still.z - (pz - 1))).toBeLessThan(0.1);
+  // The pad's cell, next to it: the cube rests on the pad and it counts.
+  const at = await stillPageOf(g, px, 0, pz);
+  await click(at.x, at.y);
+  await g.waitFor(() => (window.game as unknown as Game).challenge().pad === 1, null, 60_000);
+  const s = await cubeState(g);
+  expect(Math.hypot(s.x - px, s.z - pz)).toBeLessThan(0.1);
+}

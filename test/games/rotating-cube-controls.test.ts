@@ -1,7 +1,7 @@
 /**
  * rotating-cube's controls legend and a finger's press in the room (games/rotating-cube/controls.ts):
- * the legend says what Q E do in each mode in plain words, and a plain tap on the cube does nothing
- * while a drag from it flicks it.
+ * the legend says what Q E do in each mode in plain words, and a plain tap picks the floor cell under
+ * it (on the cube too) while a drag from the cube flicks it.
  */
 import { describe, expect, it } from 'vitest';
 import { cubeControls, TAP_SLOP, touchPress } from '../../games/rotating-cube/controls';
@@ -26,14 +26,15 @@ describe('rotating cube legend', () => {
 
   it('on a touch screen the room legend says a drag across the cube flicks it', () => {
     expect(line('room', true, 'Tap')).toMatch(/drag across the cube: flick it/);
-    expect(line('room', false, 'Click')).toMatch(/the cube: flick it away/);
+    expect(line('room', false, 'Click')).toMatch(/^a floor cell: slide the cube onto it/);
+    expect(line('room', false, 'Click')).not.toMatch(/flick/);
   });
 });
 
 describe('rotating cube: a finger in the room', () => {
-  it('a tap on the cube does nothing; a drag from it flicks; a tap on the floor pushes; a drag from the floor turns the camera', () => {
-    expect(touchPress(true, 0)).toBe('none');
-    expect(touchPress(true, TAP_SLOP)).toBe('none');
+  it('a tap on the cube pushes to the cell under it; a drag from it flicks; a tap on the floor pushes; a drag from the floor turns the camera', () => {
+    expect(touchPress(true, 0)).toBe('push');
+    expect(touchPress(true, TAP_SLOP)).toBe('push');
     expect(touchPress(true, TAP_SLOP + 0.5)).toBe('flick');
     expect(touchPress(true, 80)).toBe('flick');
     expect(touchPress(false, 3)).toBe('push');
