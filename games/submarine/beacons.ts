@@ -7,7 +7,7 @@
 
 import { Rng } from '@bitphysics/physics';
 import { assertFinite } from '@bitphysics/physics/validate';
-import { type SubmarineHandles, seabedHeight } from '@bitphysics/projects';
+import { SUBMARINE, type SubmarineHandles, seabedHeight } from '@bitphysics/projects';
 import { hullDistance } from './hull';
 
 /**
@@ -263,4 +263,31 @@ export function beaconName(index: number): string {
   if (!(Number.isInteger(index) && index >= 0)) throw new RangeError(`beaconName: index must be an integer >= 0, got ${index}`);
   const letter = String.fromCharCode(65 + (index % 26));
   return index < 26 ? letter : `${letter}${Math.floor(index / 26) + 1}`;
+}
+
+/**
+ * Where the brake hint aims the boat to stop: its centre this far short of the beacon along the
+ * heading, m (half the hull: the bow on the beacon, well inside the catch ring).
+ */
+export const LET_GO_SHORT = SUBMARINE.length / 2;
+/** The hint says "let go now" while the glide overshoots its aim by at most this, m, or falls short by at most `LET_GO_EARLY`. */
+export const LET_GO_LATE = 3;
+/** See `LET_GO_LATE`: how far short of its aim a glide may stop while the hint says "let go now", m. */
+export const LET_GO_EARLY = 2;
+
+/**
+ * The brake hint's words for a boat whose centre lies `along` m short of its target along the
+ * heading and that would glide `coast` m if Ahead were let go now (./helm.ts coastDistance):
+ * "let go in N m" while the glide would stop more than `LET_GO_EARLY` short of the aim (the centre
+ * `LET_GO_SHORT` before the beacon), "let go now" from then until it would overshoot the aim by
+ * `LET_GO_LATE`, and "Astern now to stop" after that (Astern brakes harder than a glide).
+ * @throws RangeError when `along` or `coast` is not finite or `coast` is negative.
+ */
+export function letGoHint(along: number, coast: number): string {
+  assertFinite('letGoHint', 'along', along);
+  if (!(Number.isFinite(coast) && coast >= 0)) throw new RangeError(`letGoHint: coast must be a finite number >= 0 m, got ${coast}`);
+  const rest = along - LET_GO_SHORT - coast;
+  if (rest > LET_GO_EARLY) return `let go in ${Math.ceil(rest - LET_GO_EARLY)} m`;
+  if (rest >= -LET_GO_LATE) return 'let go now';
+  return 'Astern now to stop';
 }

@@ -46,12 +46,13 @@ import {
   chooseBeacon,
   lastBeacon,
   layCourse,
+  letGoHint,
   missWarning,
   passedBeacon,
   seabedBetween,
 } from './beacons';
 import { drawBoat, HEADLIGHT, inHeadlight } from './boat-drawing';
-import { createHelmState, HELM, type HelmInput, keyHeaveShare, NO_INPUT, steer } from './helm';
+import { coastDistance, createHelmState, HELM, type HelmInput, keyHeaveShare, NO_INPUT, steer } from './helm';
 import {
   hullDistance,
   layMines,
@@ -181,22 +182,23 @@ const BLAST_LIFE = 1.6;
 /** Game time the pointer last left an uncollected beacon for another, s (its label pulses for AIM_PULSE s). */
 let aimSwitchedAt = Number.NEGATIVE_INFINITY;
 /**
- * The pointer label's hint when the boat comes in fast on its target (BRAKE_HINT): with the screw
- * let go the boat glides 20-30 m, so a newcomer holding Ahead to the beacon overshoots it.
+ * The pointer label's brake hint when the boat comes in on its target (./beacons.ts letGoHint): how
+ * far on to let go of Ahead so that the glide (./helm.ts coastDistance, from the speed and throttle
+ * now) stops the bow on the beacon, "let go now" there, or "Astern now to stop" once a glide would
+ * carry the boat past it.
  */
-const BRAKE_HINT = 'let go early; Astern brakes';
 /** The hint shows while the target is at most this far ahead along the heading, m, ... */
 const BRAKE_HINT_RANGE = 40;
 /** ... and the boat goes ahead faster than this, m/s, ... */
-const BRAKE_HINT_SPEED = 6;
+const BRAKE_HINT_SPEED = 2.5;
 /**
  * ... on a course (the line of its velocity) that passes this close to the target, m: within the
  * catch ring (BEACON_CATCH) and half as much again. A boat on the surface above a target 26 m or
  * more down glides over it, so the hint would not apply.
  */
 const BRAKE_HINT_COURSE = 1.5 * BEACON_CATCH;
-/** Times the hint comes on in a page, at most (a newcomer's lesson, not a nag). */
-const BRAKE_HINT_MAX = 3;
+/** Times the hint comes on in a page, at most (one per beacon of a default course: a newcomer's lesson, not a nag). */
+const BRAKE_HINT_MAX = 6;
 /** Times the brake hint came on, and whether it shows now. */
 const brakeHint = { shown: 0, on: false };
 /** How long the pointer's label pulses after it switches beacon, s of game time. */
@@ -2277,14 +2279,23 @@ function draw(): void {
       speed = Math.hypot(vx, vy);
     // How far the target lies off the course: the distance from it to the velocity's line.
     const offCourse = speed > 0 ? Math.abs((wx - hxw) * vy - (wy - hyw) * vx) / speed : Number.POSITIVE_INFINITY;
+    // The words from the glide the boat would make if let go now: while the screw drives, when to let
+    // go; gliding already, only a glide that would carry past the beacon is told (Astern).
+    const words = letGoHint(Math.max(0, along), coastDistance(c.Mass.value[e]!, Math.max(0, vAlong), state.throttle, world.dt));
     const fast =
-      !ridge && !state.over && along > 0 && along < BRAKE_HINT_RANGE && vAlong > BRAKE_HINT_SPEED && offCourse < BRAKE_HINT_COURSE;
+      !ridge &&
+      !state.over &&
+      along > 0 &&
+      along < BRAKE_HINT_RANGE &&
+      vAlong > BRAKE_HINT_SPEED &&
+      offCourse < BRAKE_HINT_COURSE &&
+      (state.throttle > 0 || words.startsWith('Astern'));
     if (!fast) brakeHint.on = false;
     else if (!brakeHint.on && brakeHint.shown < BRAKE_HINT_MAX) {
       brakeHint.on = true;
       brakeHint.shown++;
     }
-    if (brakeHint.on) pointer.text += `\n${BRAKE_HINT}`;
+    if (brakeHint.on) pointer.text += `\n${words}`;
     // Moving away from the target left behind: how far on it counts as missed, with a low call once.
     const left = state.over ? Number.NaN : missWarning(handles.beacons, aim.index, hxw, c.Velocity.x[e]!);
     if (!Number.isNaN(left)) {
