@@ -90,17 +90,17 @@ function clearance(x0: number, y0: number, x1: number, y1: number, bedAt: (x: nu
 }
 
 /**
- * How far along x the hull's centre may run past a beacon before that beacon counts as passed, m:
- * the boat always faces ahead and backs at half speed (./helm.ts), so a beacon overshot by more than
- * this (about 10 s of backing) is left behind instead of costing a minute to fetch; short of it (over
- * three hulls' lengths, 5 s at full ahead) an overshoot, a glide past on a key held too long, keeps
- * the beacon as the target to back up to. A passed beacon
- * is no longer the target and not needed to finish (the run ends at the last beacon, `lastBeacon`),
- * but it can still be collected by going back for it; left uncollected it costs its points and the
- * "every beacon" star. The ring (`BEACON_CATCH`) plus half the hull is 14 m, so a boat that only
- * scrapes past a ring still has it as its target.
+ * How far along x the hull's centre may run past a beacon before that beacon counts as passed
+ * (skipped), m: the boat always faces ahead and backs at half speed (4 m/s, ./helm.ts), so up to
+ * this (about 17 s of backing, over half the shortest leg) an overshoot keeps the beacon as the
+ * target to back up to; a first run's mistake, a key held seconds too long past a beacon, is
+ * recovered instead of costing the beacon. Further on it hands the target to the next one ahead
+ * rather than leading minutes back. A passed beacon is still collectable by going back for it at
+ * any time before the finish (the run ends at the last beacon, `lastBeacon`); left uncollected it
+ * costs its points and the "every beacon" star. The ring (`BEACON_CATCH`) plus half the hull is
+ * 14 m, so a boat that only scrapes past a ring still has it as its target.
  */
-export const BEACON_PASSED = 40;
+export const BEACON_PASSED = 70;
 
 /** Course order: the first beacon (by the start) ranks first, the others by x. */
 function courseRank(beacons: ArrayLike<number>, i: number): number {

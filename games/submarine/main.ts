@@ -685,7 +685,7 @@ function stepWorld(world: PhysicsWorld): void {
         x: handles.beacons[2 * target]!,
         y: handles.beacons[2 * target + 1]!,
         time: world.time,
-        text: `Beacon ${beaconName(target)} missed\nnext: ${beaconName(aim.index)}`,
+        text: `Beacon ${beaconName(target)} skipped: back for it any time\nnext: ${beaconName(aim.index)}`,
         passed: true,
       });
       // A falling two-note call: a loss, not a gain.
@@ -2187,7 +2187,7 @@ function draw(): void {
       app.stage.addChild(tag);
     }
     tag.visible = true;
-    tag.text = missed[i] ? `${beaconName(i)} missed` : `beacon ${beaconName(i)}`;
+    tag.text = missed[i] ? `${beaconName(i)} skipped: back for it` : `beacon ${beaconName(i)}`;
     tag.style.fill = missed[i] ? 0xff9e8a : 0xffe066;
     // Under its beacon, kept clear of the depth gauge (which would cut a tag under it to "beac"); off
     // the headlight's cone where it shows (a tag on the lit water reads as part of the beam): over
@@ -2268,6 +2268,11 @@ function draw(): void {
     // A mine on the way is ringed where it is, and a mine on the boat's course is told by the hull
     // (drawMineWarning), where the player looks: the pointer at the screen's edge tells only the ridge.
     pointer.text = beaconLabel(wx - hxw, wy - hyw, c.Angle.value[e]!, ridge, '', beaconName(aim.index));
+    // Heading for the finish with beacons skipped: collecting it ends the run, so the label says
+    // which are still to fetch (backing to them first keeps every beacon in reach).
+    const behind = taken.flatMap((t, i) => (t || i === aim.index ? [] : [beaconName(i)]));
+    if (aim.index === lastBeacon(handles.beacons) && behind.length > 0)
+      pointer.text += `\n⚠ finish ends the run: ${behind.join(', ')} left behind`;
     // Coming in fast with the target near ahead and on the course (no ridge line to show): the brake hint as the
     // label's second line, each time it starts until it has come on BRAKE_HINT_MAX times.
     const ca = Math.cos(c.Angle.value[e]!),
@@ -2299,7 +2304,7 @@ function draw(): void {
     // Moving away from the target left behind: how far on it counts as missed, with a low call once.
     const left = state.over ? Number.NaN : missWarning(handles.beacons, aim.index, hxw, c.Velocity.x[e]!);
     if (!Number.isNaN(left)) {
-      pointer.text += `\n⚠ going away: missed in ${Math.ceil(left)} m (Astern)`;
+      pointer.text += `\n⚠ going away: Astern to fetch it (skipped in ${Math.ceil(left)} m)`;
       if (missWarned !== aim.index) sound.chime(392, 0.2);
     }
     missWarned = Number.isNaN(left) ? -1 : aim.index;
@@ -2643,7 +2648,8 @@ function draw(): void {
   // shortened, in 12 px type; the instruments (tanks, pitch,
   // climb, helm) go in the desktop's info column.
   const missedCount = missed.filter(Boolean).length;
-  const missedText = missedCount > 0 && !compact ? ` (${missedCount} missed)` : '';
+  const missedText =
+    missedCount > 0 && !compact ? ` (${missed.flatMap((m, i) => (m ? [beaconName(i)] : [])).join(', ')} skipped: back for it)` : '';
   goal.textContent =
     end ||
     `${compact ? '◯' : 'Beacons'} ${state.collected}/${taken.length}${missedText} · ${clock(state.time)}${compact ? '/' : ' / par '}${clock(state.par)}`;
