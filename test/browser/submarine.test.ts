@@ -186,8 +186,8 @@ async function stickOnPhone(g: GamePage): Promise<void> {
   );
   expect(throttle).toBeGreaterThan(0.05);
   // Pushed a little under half way (25 px of the knob's 56 px reach on the phone's 136 px stick),
-  // the screw runs up to about half: the stick asks for as much as it is pushed, 0.45; held 1 s of
-  // game time.
+  // the screw runs up to what the stick asks for, in proportion to the push past its narrow
+  // per-axis band (games/submarine/stick.ts): (25 / 56 - 0.15) / 0.85 = 0.35; held 1 s of game time.
   await touchPath(
     g.page,
     [
@@ -202,8 +202,8 @@ async function stickOnPhone(g: GamePage): Promise<void> {
       throttle = await read('throttle');
     },
   );
-  expect(throttle).toBeGreaterThan(0.4);
-  expect(throttle).toBeLessThan(0.6);
+  expect(throttle).toBeGreaterThan(0.3);
+  expect(throttle).toBeLessThan(0.4);
   // Pushed straight up under way (the screw at full), held 0.5 s of game time: the boat rises and
   // the screw keeps running (a stranger pushing up to rise stopped the propeller; let go, the screw
   // winds down to stop in a quarter of a second).
