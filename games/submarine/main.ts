@@ -283,10 +283,11 @@ const LEAD_SHARE = 0.6;
 const LEAD_EASE = 0.8;
 /**
  * On a portrait view (narrower than tall) the framing camera shows at least this much sea across,
- * m: at the default 8 px/m a 390 px phone showed only 49 m, with mines, ridges and beacons ahead
- * off screen. A wider view than tall is not limited by it (the desktop's framing is unchanged).
+ * m: a 390 px phone shows 105 m (3.7 px/m, the hull 45 px long), so the target, 85 to 130 m on
+ * along a leg, is in view for most of it instead of off screen. A wider view than tall is not
+ * limited by it (the desktop's framing is unchanged).
  */
-const PORTRAIT_MIN_WIDTH = 85;
+const PORTRAIT_MIN_WIDTH = 105;
 /** The look-ahead's share of the way to the framing margin (`LEAD_SHARE`) on a portrait view. */
 const PORTRAIT_LEAD_SHARE = 0.8;
 /**
@@ -2454,17 +2455,20 @@ function draw(): void {
     }
     // Clear of the live mines in view: a label across one (on a phone the label of a beacon behind
     // spans most of the width at the boat's depth, over the mines ahead) moves past it, away from the hull.
-    for (let i = 0; i < mines.length; i++) {
-      if (!mineLive[i]) continue;
-      const mx = sx(mines[i]!.x),
-        my = sy(mines[i]!.y),
-        r = MINE_RADIUS * k + 6;
-      if (Math.abs(pointer.x - mx) < pointer.width / 2 + 7 + r && Math.abs(pointer.y - my) < pointer.height / 2 + 2 + r) {
-        const below = my + r + pointer.height / 2 + 4,
-          above = my - r - pointer.height / 2 - 4;
-        pointer.y = (my > hy0 && below < H - pointer.height) || above < pointer.height ? below : above;
+    const offMines = () => {
+      for (let i = 0; i < mines.length; i++) {
+        if (!mineLive[i]) continue;
+        const mx = sx(mines[i]!.x),
+          my = sy(mines[i]!.y),
+          r = MINE_RADIUS * k + 6;
+        if (Math.abs(pointer.x - mx) < pointer.width / 2 + 7 + r && Math.abs(pointer.y - my) < pointer.height / 2 + 2 + r) {
+          const below = my + r + pointer.height / 2 + 4,
+            above = my - r - pointer.height / 2 - 4;
+          pointer.y = (my > hy0 && below < H - pointer.height) || above < pointer.height ? below : above;
+        }
       }
-    }
+    };
+    offMines();
     // Clear of the mine warning's tag by the hull too (placeMineTag): moved on past it, away from the hull.
     const [tx, ty, tw, th] = mineWarning.box as [number, number, number, number];
     if (
@@ -2475,18 +2479,20 @@ function draw(): void {
       pointer.y = pointer.y < ty + th / 2 ? ty - pointer.height / 2 - 6 : ty + th + pointer.height / 2 + 6;
     // Never over the target's ring and brackets (moved off the hull, the beam or a mine onto it):
     // beside it instead, right of it where that stays in view, else left.
-    if (
+    const ringCrossed = () =>
       aim.onScreen &&
       overlaps(
         [pointer.x - pointer.width / 2 - 7, pointer.y - pointer.height / 2 - 2, pointer.width + 14, pointer.height + 4],
         aim.frame,
         2,
-      )
-    ) {
+      );
+    // Off a mine and the ring in turn, a few times: moved off one, the label may land on the other.
+    for (let n = 0; n < 3 && ringCrossed(); n++) {
       const half = aim.frame[2]! / 2,
         rightX = bx + half + pointer.width / 2 + 12;
       pointer.x = rightX + pointer.width / 2 + 15 <= W - GAUGE_WIDTH ? rightX : bx - half - pointer.width / 2 - 12;
       pointer.y = by;
+      offMines();
     }
     // Never on the seabed (under a beacon near the bed the moves above put it on the rock, dark on
     // dark): lifted in 4 px steps until its pill clears the bed under it by LABEL_BED_CLEAR px and
