@@ -7,7 +7,7 @@
 
 import { Rng } from '@bitphysics/physics';
 import { assertFinite } from '@bitphysics/physics/validate';
-import { type SubmarineHandles, seabedHeight } from '@bitphysics/projects';
+import { SUBMARINE, type SubmarineHandles, seabedHeight } from '@bitphysics/projects';
 import { hullDistance } from './hull';
 
 /**
@@ -90,17 +90,17 @@ function clearance(x0: number, y0: number, x1: number, y1: number, bedAt: (x: nu
 }
 
 /**
- * How far along x the hull's centre may run past a beacon before that beacon counts as passed, m:
- * the boat always faces ahead and backs at half speed (./helm.ts), so a beacon overshot by more than
- * this (about 10 s of backing) is left behind instead of costing a minute to fetch; short of it (over
- * three hulls' lengths, 5 s at full ahead) an overshoot, a glide past on a key held too long, keeps
- * the beacon as the target to back up to. A passed beacon
- * is no longer the target and not needed to finish (the run ends at the last beacon, `lastBeacon`),
- * but it can still be collected by going back for it; left uncollected it costs its points and the
- * "every beacon" star. The ring (`BEACON_CATCH`) plus half the hull is 14 m, so a boat that only
- * scrapes past a ring still has it as its target.
+ * How far along x the hull's centre may run past a beacon before that beacon counts as passed
+ * (skipped), m: the boat always faces ahead and backs at half speed (4 m/s, ./helm.ts), so up to
+ * this (about 17 s of backing, over half the shortest leg) an overshoot keeps the beacon as the
+ * target to back up to; a first run's mistake, a key held seconds too long past a beacon, is
+ * recovered instead of costing the beacon. Further on it hands the target to the next one ahead
+ * rather than leading minutes back. A passed beacon is still collectable by going back for it at
+ * any time before the finish (the run ends at the last beacon, `lastBeacon`); left uncollected it
+ * costs its points and the "every beacon" star. The ring (`BEACON_CATCH`) plus half the hull is
+ * 14 m, so a boat that only scrapes past a ring still has it as its target.
  */
-export const BEACON_PASSED = 40;
+export const BEACON_PASSED = 70;
 
 /** Course order: the first beacon (by the start) ranks first, the others by x. */
 function courseRank(beacons: ArrayLike<number>, i: number): number {
@@ -263,4 +263,31 @@ export function beaconName(index: number): string {
   if (!(Number.isInteger(index) && index >= 0)) throw new RangeError(`beaconName: index must be an integer >= 0, got ${index}`);
   const letter = String.fromCharCode(65 + (index % 26));
   return index < 26 ? letter : `${letter}${Math.floor(index / 26) + 1}`;
+}
+
+/**
+ * Where the brake hint aims the boat to stop: its centre this far short of the beacon along the
+ * heading, m (half the hull: the bow on the beacon, well inside the catch ring).
+ */
+export const LET_GO_SHORT = SUBMARINE.length / 2;
+/** The hint says "let go now" while the glide overshoots its aim by at most this, m, or falls short by at most `LET_GO_EARLY`. */
+export const LET_GO_LATE = 3;
+/** See `LET_GO_LATE`: how far short of its aim a glide may stop while the hint says "let go now", m. */
+export const LET_GO_EARLY = 2;
+
+/**
+ * The brake hint's words for a boat whose centre lies `along` m short of its target along the
+ * heading and that would glide `coast` m if Ahead were let go now (./helm.ts coastDistance):
+ * "let go in N m" while the glide would stop more than `LET_GO_EARLY` short of the aim (the centre
+ * `LET_GO_SHORT` before the beacon), "let go now" from then until it would overshoot the aim by
+ * `LET_GO_LATE`, and "Astern now to stop" after that (Astern brakes harder than a glide).
+ * @throws RangeError when `along` or `coast` is not finite or `coast` is negative.
+ */
+export function letGoHint(along: number, coast: number): string {
+  assertFinite('letGoHint', 'along', along);
+  if (!(Number.isFinite(coast) && coast >= 0)) throw new RangeError(`letGoHint: coast must be a finite number >= 0 m, got ${coast}`);
+  const rest = along - LET_GO_SHORT - coast;
+  if (rest > LET_GO_EARLY) return `let go in ${Math.ceil(rest - LET_GO_EARLY)} m`;
+  if (rest >= -LET_GO_LATE) return 'let go now';
+  return 'Astern now to stop';
 }

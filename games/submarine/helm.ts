@@ -488,3 +488,32 @@ export function steer(world: PhysicsWorld, handles: SubmarineHandles, input: Hel
   const push = screwPush(mass, u, state.throttle);
   setBodyThrust(world, e, [push + brakeForce * Math.cos(angle), -brakeForce * Math.sin(angle)]);
 }
+
+/**
+ * How far a submerged boat moving ahead at `u` m/s (horizontally, level) glides once Ahead is let
+ * go with the screw at `throttle` (fraction of full, in [-0.5, 1]), m: the same law the helm and
+ * the sea apply, stepped at `dt` s (the world's step): the throttle winds down to stop at
+ * max(`HELM.throttleRate`, `HELM.throttleRelease`) per second, the screw pushes `screwPush`, the
+ * coasting brake `coastBrake` and the drag k u^2 (`SUBMARINE.dragCoefficient`) hold it back, until
+ * the boat stops. 0 for a boat not moving ahead. The pointer's brake hint uses it to say when to let go.
+ * @param mass the hull's mass now, kg (finite, > 0; tanks included).
+ * @throws RangeError when `mass` or `dt` is not a finite positive number, or `u` or `throttle` is not finite.
+ */
+export function coastDistance(mass: number, u: number, throttle: number, dt = 1 / 60): number {
+  if (!(Number.isFinite(mass) && mass > 0)) throw new RangeError(`coastDistance: mass must be a finite number > 0 kg, got ${mass}`);
+  if (!Number.isFinite(u)) throw new RangeError(`coastDistance: u must be finite m/s, got ${u}`);
+  if (!Number.isFinite(throttle)) throw new RangeError(`coastDistance: throttle must be finite, got ${throttle}`);
+  if (!(Number.isFinite(dt) && dt > 0)) throw new RangeError(`coastDistance: dt must be a finite number > 0 s, got ${dt}`);
+  const rate = Math.max(HELM.throttleRate, HELM.throttleRelease) * dt;
+  let t = clamp(throttle, -0.5, 1),
+    v = u,
+    x = 0;
+  // At most 60 s of glide: the coasting brake stops any boat the screw can drive long before.
+  for (let i = 0; i < 60 / dt && v > 1e-3; i++) {
+    t = t > 0 ? Math.max(0, t - rate) : Math.min(0, t + rate);
+    const f = screwPush(mass, v, t) + coastBrake(mass, v, t) - SUBMARINE.dragCoefficient * v * v;
+    v = Math.max(0, v + (f / mass) * dt);
+    x += v * dt;
+  }
+  return x;
+}

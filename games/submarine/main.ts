@@ -46,12 +46,13 @@ import {
   chooseBeacon,
   lastBeacon,
   layCourse,
+  letGoHint,
   missWarning,
   passedBeacon,
   seabedBetween,
 } from './beacons';
 import { drawBoat, HEADLIGHT, inHeadlight } from './boat-drawing';
-import { createHelmState, HELM, type HelmInput, keyHeaveShare, NO_INPUT, steer } from './helm';
+import { coastDistance, createHelmState, HELM, type HelmInput, keyHeaveShare, NO_INPUT, steer } from './helm';
 import {
   hullDistance,
   layMines,
@@ -181,22 +182,23 @@ const BLAST_LIFE = 1.6;
 /** Game time the pointer last left an uncollected beacon for another, s (its label pulses for AIM_PULSE s). */
 let aimSwitchedAt = Number.NEGATIVE_INFINITY;
 /**
- * The pointer label's hint when the boat comes in fast on its target (BRAKE_HINT): with the screw
- * let go the boat glides 20-30 m, so a newcomer holding Ahead to the beacon overshoots it.
+ * The pointer label's brake hint when the boat comes in on its target (./beacons.ts letGoHint): how
+ * far on to let go of Ahead so that the glide (./helm.ts coastDistance, from the speed and throttle
+ * now) stops the bow on the beacon, "let go now" there, or "Astern now to stop" once a glide would
+ * carry the boat past it.
  */
-const BRAKE_HINT = 'let go early; Astern brakes';
 /** The hint shows while the target is at most this far ahead along the heading, m, ... */
 const BRAKE_HINT_RANGE = 40;
 /** ... and the boat goes ahead faster than this, m/s, ... */
-const BRAKE_HINT_SPEED = 6;
+const BRAKE_HINT_SPEED = 2.5;
 /**
  * ... on a course (the line of its velocity) that passes this close to the target, m: within the
  * catch ring (BEACON_CATCH) and half as much again. A boat on the surface above a target 26 m or
  * more down glides over it, so the hint would not apply.
  */
 const BRAKE_HINT_COURSE = 1.5 * BEACON_CATCH;
-/** Times the hint comes on in a page, at most (a newcomer's lesson, not a nag). */
-const BRAKE_HINT_MAX = 3;
+/** Times the hint comes on in a page, at most (one per beacon of a default course: a newcomer's lesson, not a nag). */
+const BRAKE_HINT_MAX = 6;
 /** Times the brake hint came on, and whether it shows now. */
 const brakeHint = { shown: 0, on: false };
 /** How long the pointer's label pulses after it switches beacon, s of game time. */
@@ -281,10 +283,11 @@ const LEAD_SHARE = 0.6;
 const LEAD_EASE = 0.8;
 /**
  * On a portrait view (narrower than tall) the framing camera shows at least this much sea across,
- * m: at the default 8 px/m a 390 px phone showed only 49 m, with mines, ridges and beacons ahead
- * off screen. A wider view than tall is not limited by it (the desktop's framing is unchanged).
+ * m: a 390 px phone shows 105 m (3.7 px/m, the hull 45 px long), so the target, 85 to 130 m on
+ * along a leg, is in view for most of it instead of off screen. A wider view than tall is not
+ * limited by it (the desktop's framing is unchanged).
  */
-const PORTRAIT_MIN_WIDTH = 85;
+const PORTRAIT_MIN_WIDTH = 105;
 /** The look-ahead's share of the way to the framing margin (`LEAD_SHARE`) on a portrait view. */
 const PORTRAIT_LEAD_SHARE = 0.8;
 /**
@@ -683,7 +686,7 @@ function stepWorld(world: PhysicsWorld): void {
         x: handles.beacons[2 * target]!,
         y: handles.beacons[2 * target + 1]!,
         time: world.time,
-        text: `Beacon ${beaconName(target)} missed\nnext: ${beaconName(aim.index)}`,
+        text: `Beacon ${beaconName(target)} skipped: back for it any time\nnext: ${beaconName(aim.index)}`,
         passed: true,
       });
       // A falling two-note call: a loss, not a gain.
@@ -808,6 +811,16 @@ const instruments = document.createElement('div');
 instruments.dataset.hud = 'instruments';
 // #c8d6e4 on the columns' dark backing: a contrast of about 12:1 (at least 4.5:1 for small text).
 instruments.style.cssText = 'white-space: pre-line; color: #c8d6e4; margin: 6px 0;';
+// The seabed's depth is for the pilot; the helm's workings (climb, pitch, screw, tanks, helm mode)
+// are folded under "physics details", closed until opened, so the column reads as a game's.
+const seabedLine = document.createElement('div');
+const physicsDetails = document.createElement('details');
+physicsDetails.dataset.hud = 'physics-details';
+const physicsSummary = Object.assign(document.createElement('summary'), { textContent: 'physics details' });
+physicsSummary.style.cursor = 'pointer';
+const physicsText = document.createElement('div');
+physicsDetails.append(physicsSummary, physicsText);
+instruments.append(seabedLine, physicsDetails);
 // The status row is one short line, the goal then the numbers a player needs (three lines, the
 // third small and grey, were too dense); on a desktop the instruments (seabed, climb, pitch, screw,
 // tanks, helm) go in the info column, a line each, and on a phone they are left out.
@@ -2185,7 +2198,7 @@ function draw(): void {
       app.stage.addChild(tag);
     }
     tag.visible = true;
-    tag.text = missed[i] ? `${beaconName(i)} missed` : `beacon ${beaconName(i)}`;
+    tag.text = missed[i] ? `${beaconName(i)} skipped: back for it` : `beacon ${beaconName(i)}`;
     tag.style.fill = missed[i] ? 0xff9e8a : 0xffe066;
     // Under its beacon, kept clear of the depth gauge (which would cut a tag under it to "beac"); off
     // the headlight's cone where it shows (a tag on the lit water reads as part of the beam): over
@@ -2266,6 +2279,11 @@ function draw(): void {
     // A mine on the way is ringed where it is, and a mine on the boat's course is told by the hull
     // (drawMineWarning), where the player looks: the pointer at the screen's edge tells only the ridge.
     pointer.text = beaconLabel(wx - hxw, wy - hyw, c.Angle.value[e]!, ridge, '', beaconName(aim.index));
+    // Heading for the finish with beacons skipped: collecting it ends the run, so the label says
+    // which are still to fetch (backing to them first keeps every beacon in reach).
+    const behind = taken.flatMap((t, i) => (t || i === aim.index ? [] : [beaconName(i)]));
+    if (aim.index === lastBeacon(handles.beacons) && behind.length > 0)
+      pointer.text += `\n⚠ finish ends the run: ${behind.join(', ')} left behind`;
     // Coming in fast with the target near ahead and on the course (no ridge line to show): the brake hint as the
     // label's second line, each time it starts until it has come on BRAKE_HINT_MAX times.
     const ca = Math.cos(c.Angle.value[e]!),
@@ -2277,18 +2295,27 @@ function draw(): void {
       speed = Math.hypot(vx, vy);
     // How far the target lies off the course: the distance from it to the velocity's line.
     const offCourse = speed > 0 ? Math.abs((wx - hxw) * vy - (wy - hyw) * vx) / speed : Number.POSITIVE_INFINITY;
+    // The words from the glide the boat would make if let go now: while the screw drives, when to let
+    // go; gliding already, only a glide that would carry past the beacon is told (Astern).
+    const words = letGoHint(Math.max(0, along), coastDistance(c.Mass.value[e]!, Math.max(0, vAlong), state.throttle, world.dt));
     const fast =
-      !ridge && !state.over && along > 0 && along < BRAKE_HINT_RANGE && vAlong > BRAKE_HINT_SPEED && offCourse < BRAKE_HINT_COURSE;
+      !ridge &&
+      !state.over &&
+      along > 0 &&
+      along < BRAKE_HINT_RANGE &&
+      vAlong > BRAKE_HINT_SPEED &&
+      offCourse < BRAKE_HINT_COURSE &&
+      (state.throttle > 0 || words.startsWith('Astern'));
     if (!fast) brakeHint.on = false;
     else if (!brakeHint.on && brakeHint.shown < BRAKE_HINT_MAX) {
       brakeHint.on = true;
       brakeHint.shown++;
     }
-    if (brakeHint.on) pointer.text += `\n${BRAKE_HINT}`;
+    if (brakeHint.on) pointer.text += `\n${words}`;
     // Moving away from the target left behind: how far on it counts as missed, with a low call once.
     const left = state.over ? Number.NaN : missWarning(handles.beacons, aim.index, hxw, c.Velocity.x[e]!);
     if (!Number.isNaN(left)) {
-      pointer.text += `\n⚠ going away: missed in ${Math.ceil(left)} m (Astern)`;
+      pointer.text += `\n⚠ going away: Astern to fetch it (skipped in ${Math.ceil(left)} m)`;
       if (missWarned !== aim.index) sound.chime(392, 0.2);
     }
     missWarned = Number.isNaN(left) ? -1 : aim.index;
@@ -2428,17 +2455,20 @@ function draw(): void {
     }
     // Clear of the live mines in view: a label across one (on a phone the label of a beacon behind
     // spans most of the width at the boat's depth, over the mines ahead) moves past it, away from the hull.
-    for (let i = 0; i < mines.length; i++) {
-      if (!mineLive[i]) continue;
-      const mx = sx(mines[i]!.x),
-        my = sy(mines[i]!.y),
-        r = MINE_RADIUS * k + 6;
-      if (Math.abs(pointer.x - mx) < pointer.width / 2 + 7 + r && Math.abs(pointer.y - my) < pointer.height / 2 + 2 + r) {
-        const below = my + r + pointer.height / 2 + 4,
-          above = my - r - pointer.height / 2 - 4;
-        pointer.y = (my > hy0 && below < H - pointer.height) || above < pointer.height ? below : above;
+    const offMines = () => {
+      for (let i = 0; i < mines.length; i++) {
+        if (!mineLive[i]) continue;
+        const mx = sx(mines[i]!.x),
+          my = sy(mines[i]!.y),
+          r = MINE_RADIUS * k + 6;
+        if (Math.abs(pointer.x - mx) < pointer.width / 2 + 7 + r && Math.abs(pointer.y - my) < pointer.height / 2 + 2 + r) {
+          const below = my + r + pointer.height / 2 + 4,
+            above = my - r - pointer.height / 2 - 4;
+          pointer.y = (my > hy0 && below < H - pointer.height) || above < pointer.height ? below : above;
+        }
       }
-    }
+    };
+    offMines();
     // Clear of the mine warning's tag by the hull too (placeMineTag): moved on past it, away from the hull.
     const [tx, ty, tw, th] = mineWarning.box as [number, number, number, number];
     if (
@@ -2449,18 +2479,20 @@ function draw(): void {
       pointer.y = pointer.y < ty + th / 2 ? ty - pointer.height / 2 - 6 : ty + th + pointer.height / 2 + 6;
     // Never over the target's ring and brackets (moved off the hull, the beam or a mine onto it):
     // beside it instead, right of it where that stays in view, else left.
-    if (
+    const ringCrossed = () =>
       aim.onScreen &&
       overlaps(
         [pointer.x - pointer.width / 2 - 7, pointer.y - pointer.height / 2 - 2, pointer.width + 14, pointer.height + 4],
         aim.frame,
         2,
-      )
-    ) {
+      );
+    // Off a mine and the ring in turn, a few times: moved off one, the label may land on the other.
+    for (let n = 0; n < 3 && ringCrossed(); n++) {
       const half = aim.frame[2]! / 2,
         rightX = bx + half + pointer.width / 2 + 12;
       pointer.x = rightX + pointer.width / 2 + 15 <= W - GAUGE_WIDTH ? rightX : bx - half - pointer.width / 2 - 12;
       pointer.y = by;
+      offMines();
     }
     // Never on the seabed (under a beacon near the bed the moves above put it on the rock, dark on
     // dark): lifted in 4 px steps until its pill clears the bed under it by LABEL_BED_CLEAR px and
@@ -2632,7 +2664,8 @@ function draw(): void {
   // shortened, in 12 px type; the instruments (tanks, pitch,
   // climb, helm) go in the desktop's info column.
   const missedCount = missed.filter(Boolean).length;
-  const missedText = missedCount > 0 && !compact ? ` (${missedCount} missed)` : '';
+  const missedText =
+    missedCount > 0 && !compact ? ` (${missed.flatMap((m, i) => (m ? [beaconName(i)] : [])).join(', ')} skipped: back for it)` : '';
   goal.textContent =
     end ||
     `${compact ? '◯' : 'Beacons'} ${state.collected}/${taken.length}${missedText} · ${clock(state.time)}${compact ? '/' : ' / par '}${clock(state.par)}`;
@@ -2642,8 +2675,8 @@ function draw(): void {
     ? `${Math.max(0, depth).toFixed(0)}${ordered} m${stopped ? ' · seabed' : ''} · ${state.score} pts · `
     : `depth ${Math.max(0, depth).toFixed(0)}${ordered} m${rate}${stopped} · ${speed.toFixed(1)} m/s · score ${state.score}${streak} · `;
   showHull();
-  instruments.textContent = [
-    `seabed ${(-floor).toFixed(0)} m`,
+  seabedLine.textContent = `seabed ${(-floor).toFixed(0)} m`;
+  physicsText.textContent = [
     `climb ${c.Velocity.y[e]!.toFixed(1)} m/s`,
     `pitch ${((a * 180) / Math.PI).toFixed(0)}°`,
     `screw ${(state.throttle * 100).toFixed(0)}%`,

@@ -596,7 +596,7 @@ describe('projects', () => {
     // Named by its letter (the first beacon is A), the target held until collected.
     expect(aim.text).toBe(`target A: ${aim.text.match(/\d+ m ahead/)![0]}, ${Math.abs(aim.dy).toFixed(0)} m down`);
     // The goal and the clock are stated above the scene.
-    expect(await g.page.locator('[data-hud="goal"]').textContent()).toMatch(/^Collect the 6 beacons · 0 of 6 · 0:\d\d \/ par \d:\d\d$/);
+    expect(await g.page.locator('[data-hud="goal"]').textContent()).toMatch(/^Beacons 0\/6 · 0:\d\d \/ par \d:\d\d$/);
     const x0 = await g.page.evaluate(() => {
       const w = window.game as unknown as Game & { hull(): number };
       return w.world.components.Position.x[w.hull()] as number;

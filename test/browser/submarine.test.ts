@@ -186,8 +186,8 @@ async function stickOnPhone(g: GamePage): Promise<void> {
   );
   expect(throttle).toBeGreaterThan(0.05);
   // Pushed a little under half way (25 px of the knob's 56 px reach on the phone's 136 px stick),
-  // the screw runs up to about half: the stick asks for as much as it is pushed, 0.45; held 1 s of
-  // game time.
+  // the screw runs up to what the stick asks for, in proportion to the push past its narrow
+  // per-axis band (games/submarine/stick.ts): (25 / 56 - 0.15) / 0.85 = 0.35; held 1 s of game time.
   await touchPath(
     g.page,
     [
@@ -202,8 +202,8 @@ async function stickOnPhone(g: GamePage): Promise<void> {
       throttle = await read('throttle');
     },
   );
-  expect(throttle).toBeGreaterThan(0.4);
-  expect(throttle).toBeLessThan(0.6);
+  expect(throttle).toBeGreaterThan(0.3);
+  expect(throttle).toBeLessThan(0.4);
   // Pushed straight up under way (the screw at full), held 0.5 s of game time: the boat rises and
   // the screw keeps running (a stranger pushing up to rise stopped the propeller; let go, the screw
   // winds down to stop in a quarter of a second).
@@ -745,7 +745,7 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     // The boat driven at full speed (D held), then paused 20 m short of the beacon at its depth: the framing
     // zooms in to its most (8 px/m) for a beacon this near. On a 390 px portrait phone that showed
     // 49 m across with the boat left of centre, 28 m ahead of the bow; the portrait view keeps at
-    // least 70 m across and leads further. The desktop (160 m across at 8 px/m) is unchanged.
+    // least 105 m across and leads further. The desktop (160 m across at 8 px/m) is unchanged.
     const g = await fresh(1);
     await g.page.evaluate(() => {
       const w = window.game as unknown as Sub;
@@ -785,7 +785,7 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     expect(r.vx).toBeGreaterThan(5);
     expect(r.ahead, `${device}: ${r.ahead.toFixed(1)} m ahead at ${r.cam.zoom.toFixed(2)} px/m`).toBeGreaterThan(40);
     if (device === 'desktop') expect(r.cam.zoom).toBeCloseTo(8, 1);
-    else expect(r.cam.width / r.cam.zoom).toBeGreaterThan(69);
+    else expect(r.cam.width / r.cam.zoom).toBeGreaterThan(104);
     await expectZoomFloor(g, device);
     expect(g.errors).toEqual([]);
   });
@@ -1210,17 +1210,20 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     expect(g.errors).toEqual([]);
   }, 180_000);
 
-  it('coming in fast on the target the label tells to let go early and that Astern brakes, at most 3 times; not when far or slow', async () => {
-    // The page loaded afresh (the hint is told at most 3 times a page): the same page, reloaded, so
+  it('coming in on the target under power the label tells how far on to let go (the glide computed), then "let go now", at most 6 times; not when far, slow or gliding short', async () => {
+    // The page loaded afresh (the hint is told at most 6 times a page): the same page, reloaded, so
     // that no second page draws beside it.
     await shared.page.reload();
     await shared.waitFor(() => document.body.dataset.ready === 'true' && window.game !== undefined, null, 30_000);
     const g = await fresh(6);
-    type P = Sub & { beaconPointer(): { index: number; text: string; brakeHints: number } };
-    // Paused: the label is drawn from the hull's place and velocity as set (nothing moves).
-    const at = async (before: number, speed: number, above = 0) => {
+    type P = Sub & {
+      beaconPointer(): { index: number; text: string; brakeHints: number };
+      setControls(c: { throttle?: number }): void;
+    };
+    // Paused: the label is drawn from the hull's place, velocity and throttle as set (nothing moves).
+    const at = async (before: number, speed: number, above = 0, throttle = 1) => {
       await g.page.evaluate(
-        ([before, speed, above]) => {
+        ([before, speed, above, throttle]) => {
           const w = window.game as unknown as P;
           w.paused = true;
           const c = w.world.components,
@@ -1231,31 +1234,41 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
           c.Velocity.x[e] = speed!;
           c.Velocity.y[e] = 0;
           c.Angle.value[e] = 0;
+          w.setControls({ throttle });
         },
-        [before, speed, above],
+        [before, speed, above, throttle],
       );
       await g.runFrames(3, { unpause: false });
       return g.page.evaluate(() => (window.game as unknown as P).beaconPointer());
     };
-    const hint = 'let go early; Astern brakes';
-    expect((await at(30, 3)).text).not.toContain(hint); // slow
-    expect((await at(70, 10)).text).not.toContain(hint); // far
+    const hint = /\n(let go in \d+ m|let go now|Astern now to stop)$/;
+    expect((await at(30, 2)).text).not.toMatch(hint); // slow
+    expect((await at(70, 8)).text).not.toMatch(hint); // far
+    expect((await at(30, 8, 0, 0)).text).not.toMatch(hint); // gliding already, and it stops short: nothing to tell
     // Level and fast, 30 m short, but 20 m above the target, or on the surface over it (26.9 m
     // down): the course passes over it, there is nothing to overshoot.
     const depth = await g.page.evaluate(() => -(window.game as unknown as P).handles().beacons[1]!);
     expect(depth).toBeGreaterThan(20);
-    for (const above of [20, depth - 0.5]) expect((await at(30, 10, above)).text, `${above} m above`).not.toContain(hint);
+    for (const above of [20, depth - 0.5]) expect((await at(30, 8, above)).text, `${above} m above`).not.toMatch(hint);
+    // At full speed (8 m/s) the glide is about 5 m (./helm.ts coastDistance, checked against the
+    // physics in test/games/submarine-helm.test.ts): 30 m short, the bow is to stop on the beacon
+    // 24 m on, so let go in about 17 m; 12 m short, now.
     for (let i = 1; i <= 3; i++) {
-      const p = await at(30, 10);
+      const p = await at(30, 8);
       expect(p.index).toBe(0);
-      expect(p.text).toBe(`target A: 30 m ahead\n${hint}`);
-      expect(p.brakeHints).toBe(i);
-      expect((await at(30, 3)).text).toBe('target A: 30 m ahead');
+      const m = /^target A: 30 m ahead\nlet go in (\d+) m$/.exec(p.text);
+      expect(m, p.text).not.toBeNull();
+      expect(Number(m![1])).toBeGreaterThan(13);
+      expect(Number(m![1])).toBeLessThan(21);
+      expect(p.brakeHints).toBe(2 * i - 1);
+      expect((await at(30, 2)).text).toBe('target A: 30 m ahead');
+      expect((await at(12, 8)).text).toBe('target A: 12 m ahead\nlet go now');
+      expect((await at(12, 2)).text).toBe('target A: 12 m ahead');
     }
-    // A fourth time in: no more.
-    const p = await at(30, 10);
+    // A seventh time in: no more.
+    const p = await at(30, 8);
     expect(p.text).toBe('target A: 30 m ahead');
-    expect(p.brakeHints).toBe(3);
+    expect(p.brakeHints).toBe(6);
     expect(g.errors).toEqual([]);
   }, 180_000);
 

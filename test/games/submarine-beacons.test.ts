@@ -118,6 +118,42 @@ describe('submarine beacon pointer', () => {
     expect(() => passedBeacon(beacons, 0, Number.NaN)).toThrow(/passedBeacon/);
   });
 
+  it('an overshoot of 60 m past the first beacon (a key held seconds too long) is recovered: following the pointer collects 6/6 before the finish', () => {
+    // Issue 34: holding Ahead and Dive 5 s from the start ran a stranger far past A; A was lost for
+    // good ("0/6 (1 missed)") and 6/6 was out of reach. The boat backs at 4 m/s and goes ahead at 8.
+    const world = createPhysicsWorld(submarine.worldOptions());
+    const h = submarine.build(world, { seed: 1, count: 6 });
+    layCourse(h.beacons, h.seabed, 1);
+    const taken = new Array<boolean>(6).fill(false);
+    const finish = lastBeacon(h.beacons);
+    let x = h.beacons[0]! + 60,
+      y = h.beacons[1]!,
+      current = 0,
+      order: number[] = [];
+    const dt = 1 / 20;
+    for (let t = 0; t < 900 && !taken[finish]; t += dt) {
+      current = chooseBeacon(h.beacons, taken, x, y, current);
+      const dx = h.beacons[2 * current]! - x,
+        dy = h.beacons[2 * current + 1]! - y;
+      x += Math.sign(dx) * Math.min((dx > 0 ? 8 : 4) * dt, Math.abs(dx));
+      y += Math.sign(dy) * Math.min(5 * dt, Math.abs(dy));
+      for (let i = 0; i < 6; i++)
+        if (!taken[i] && catchesBeacon(x, y, 0, h.beacons[2 * i]!, h.beacons[2 * i + 1]!)) {
+          taken[i] = true;
+          order = [...order, i];
+          current = chooseBeacon(h.beacons, taken, x, y, current, i);
+        }
+    }
+    expect(order[0]).toBe(0); // backed up to A first
+    expect(order.at(-1)).toBe(finish);
+    expect(taken.every(Boolean)).toBe(true);
+    // Further than BEACON_PASSED past it, the target moves on, and A is still collectable going back.
+    expect(
+      chooseBeacon(h.beacons, [false, false, false, false, false, false], h.beacons[0]! + BEACON_PASSED + 1, h.beacons[1]!, 0),
+    ).not.toBe(0);
+    expect(passedBeacon(h.beacons, 0, h.beacons[0]!)).toBe(false);
+  });
+
   it('following the pointer from the surface, the distance shown falls until each beacon is taken', () => {
     const world = createPhysicsWorld(submarine.worldOptions());
     const h = submarine.build(world, { seed: 1, count: 6 });
