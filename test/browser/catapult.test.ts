@@ -920,7 +920,8 @@ describe('catapult', () => {
     // onto a piece (they read "Hit a wooden post, nothing fell: throw harder", the wrong way).
     for (const [level, power, angle] of [
       [1, 0.7, 30],
-      [2, 0.62, 40],
+      // (Level 2's lookout behind the keep: a throw at 0.6 to 0.62 lands on it; 0.64 to 0.66 clears it to the rock.)
+      [2, 0.65, 40],
     ] as const) {
       await g.page.evaluate(
         ([level, power, angle]) => {
