@@ -163,8 +163,8 @@ export function plural(n: number, one: string, many: string): string {
 
 /**
  * Creates the HUD: the title (in the layout's toolbar), a readout with fps and pause state and a
- * closed 'physics details' fold with the body and step counts (`Hud.details`), and a legend of the controls (touch gestures on touch devices), in the layout's
- * info column unless `parent` is given.
+ * closed 'physics details' fold with the body and step counts (`Hud.details`), and a legend of the
+ * controls (touch gestures on touch devices), in the layout's info column unless `parent` is given.
  * @throws TypeError if `title` is empty or `controls` is not an array.
  */
 export function createHud(options: HudOptions): Hud {
