@@ -8,9 +8,9 @@
  * aim view to the castle as the stone crosses the field) and 'castle' (the castle and the rock
  * behind it, close: a phone's look button, and a finished level's wreck).
  *
- * Upright, an aim view fitted to a far or wide castle draws it small (14 to 18 px a metre at 390 px
- * wide); the page shows it again, close, in the earth under the ground while the player aims
- * (`aimCloseUp`).
+ * Upright, an aim view fitted to the catapult and the castle draws the castle small (14 to 22 px a
+ * metre at 390 px wide); the page shows it again, close, in the earth under the ground while the
+ * player aims (`aimCloseUp`).
  */
 
 import { LAUNCH, ROCK } from './scene';
@@ -83,7 +83,7 @@ export const UPRIGHT_GROUND = 0.28;
 
 /**
  * The same where the castle's close-up shows in the earth while aiming (`aimCloseUp`: a far or wide
- * castle, the catapult and castle drawn at 14 to 18 px a metre): the close-up fills the earth, so
+ * castle, the catapult and castle drawn at 14 to 22 px a metre): the close-up fills the earth, so
  * more earth draws it larger (on level 4, 1.35 x as large as at UPRIGHT_GROUND) and leaves less empty
  * sky over the small field (62 % of the screen, not 72 %), still room for a full pull's steep arc.
  */
@@ -134,11 +134,13 @@ export function uprightCastleView(f: Field, width: number, height: number): View
 
 /**
  * Upright, an aim view drawing fewer screen pixels a metre than this gets the castle's close-up in
- * the earth under the ground while the player aims: at 14 to 18 px a metre (a far or wide castle
- * on a 390 px screen) its planks were 3 px thick and its panes a few pixels, and the materials did
- * not read; at level 1's 22 px a metre they do, and the earth stays plain.
+ * the earth under the ground while the player aims. At 14 to 18 px a metre (a far or wide castle on
+ * a 390 px screen) planks are 3 px thick and panes a few pixels, and the materials do not read; at
+ * 21 to 22 px a metre (levels 1 and 2, near castles that still must fit whole beside the catapult)
+ * a stall is about 25 px tall on a 844 px screen, a thin strip between the sky and the earth. So
+ * every level on a phone held upright gets the close-up, and the earth it fills reads as the castle.
  */
-export const AIM_CLOSE_PX_PER_M = 20;
+export const AIM_CLOSE_PX_PER_M = 24;
 
 /**
  * Whether an upright screen (`width` x `height` px) shows the castle's close-up in the earth while

@@ -644,6 +644,10 @@ let cameraSettled = false;
 let shot: CameraShot = 'overview';
 /** Whether the player asked to look at the castle (the look button, upright only). */
 let peeking = false;
+/** The look button's words: what a tap shows, said in words (an arrow alone in a corner says nothing). */
+const LOOK_CASTLE = '🔍 Zoom to castle';
+/** The look button's words while the castle shows: back to the catapult. */
+const LOOK_BACK = '◂ Back to catapult';
 /**
  * Upright, a button at the bottom right that shows the castle close while aiming (the aim view holds
  * the catapult and the whole castle, which on the far levels is small), and back; a press to aim
@@ -652,7 +656,7 @@ let peeking = false;
 const lookBar = createButtonBar(
   [
     {
-      label: 'Castle ▸',
+      label: LOOK_CASTLE,
       onTap: () => {
         peeking = !peeking;
       },
@@ -666,7 +670,7 @@ Object.assign(lookBar.element.style, { position: 'absolute', right: '10px', bott
 /** Shows or hides the look button, its label saying where a tap goes. */
 function showLook(visible: boolean): void {
   const b = lookBar.buttons[0]!;
-  const text = peeking ? '◂ Catapult' : 'Castle ▸';
+  const text = peeking ? LOOK_BACK : LOOK_CASTLE;
   if (b.textContent !== text) {
     b.textContent = text;
     b.setAttribute('aria-label', peeking ? 'look at the catapult' : 'look at the castle');
@@ -681,7 +685,48 @@ framing = true;
 // Framed now, not at the first frame: the camera holds the aim view from the start.
 frameCamera();
 
-const readout = createReadout(shell.hud.readout, ['level', 'shots left', 'score', 'total', 'pieces down', 'welds broken']);
+/** The how-to line over the scene until the first throw (see HOW_TO). */
+const howTo = document.createElement('div');
+/**
+ * What a first-time player needs to start, in the sky over the field until their first throw of the
+ * page: the kit's card (on a phone) goes at the first touch, which a player spends finding out, and
+ * the legend is behind the menu button on a phone. Over the empty sky, under the level's banner,
+ * letting touches through.
+ */
+const HOW_TO = 'Drag back anywhere, let go to throw';
+howTo.textContent = HOW_TO;
+howTo.dataset.hud = 'how-to';
+howTo.dataset.sceneOverlay = '';
+Object.assign(howTo.style, {
+  position: 'absolute',
+  left: '50%',
+  top: '17%',
+  transform: 'translateX(-50%)',
+  maxWidth: 'calc(100% - 24px)',
+  width: 'max-content',
+  boxSizing: 'border-box',
+  padding: '6px 14px',
+  borderRadius: '18px',
+  background: 'rgba(12, 16, 26, 0.72)',
+  color: '#ffe08a',
+  // One line on a 390 px phone (15.6 px type there), 17 px on a wide screen.
+  font: '600 clamp(14px, 4vw, 17px)/1.3 system-ui, sans-serif',
+  textAlign: 'center',
+  pointerEvents: 'none',
+  zIndex: '4',
+  transition: 'opacity 0.6s',
+});
+pageLayout().stage.append(howTo);
+/** Takes the how-to line away (the first throw). */
+function hideHowTo(): void {
+  if (!howTo.isConnected || howTo.style.opacity === '0') return;
+  howTo.style.opacity = '0';
+  setTimeout(() => howTo.remove(), 700);
+}
+
+const readout = createReadout(shell.hud.readout, ['level', 'shots left', 'score', 'total', 'pieces down']);
+/** The engine's count of broken welds, in the HUD's closed 'physics details' fold (a player counts pieces, not welds). */
+const weldReadout = createReadout(shell.hud.details, ['welds broken']);
 
 // Aiming: press anywhere, drag back, release: the pull is the drag, measured on the screen. A full
 // pull (PULL.max) is a drag of FULL_PULL_SHARE of the canvas's diagonal (kept within
@@ -764,6 +809,7 @@ function fire(dx: number, dy: number): number {
   const ball = launch(shell.world, vx, vy, params.projectileMass);
   renderer.setColor(ball, 0x3d434d);
   shots.push(ball);
+  if (!DEMO) hideHowTo();
   shotsLeft--;
   lastShotTime = shell.world.time;
   lastThrow.body = ball;
@@ -1107,7 +1153,11 @@ function writeReadout(score: number, rows: string[]): void {
   const drawn = game.pacer.drawn;
   if (pendingRows && drawn !== pendingDrawn) {
     shownScore = pendingRows.score;
-    for (const [k, r] of pendingRows.rows.entries()) readout.set(k, r);
+    // Rows 0 to 4 go to the readout, row 5 (welds broken) to the physics fold's.
+    for (const [k, r] of pendingRows.rows.entries()) {
+      if (k < 5) readout.set(k, r);
+      else weldReadout.set(k - 5, r);
+    }
   }
   pendingRows = { score, rows };
   pendingDrawn = drawn;

@@ -363,8 +363,9 @@ export function surfaceAt(lv: Pick<Level, 'terrain'>, x: number): number {
  * three ask for different throws (games/catapult/solve.ts, `node scripts/catapult-levels.mjs --grid`):
  * two market stalls, stones on low tables, one near by and one behind it (a low, flat throw brings
  * both down for three stars), a low keep behind a low earth rampart (a flat throw skims over it, a
- * lob drops onto the keep), and
- * twin towers far off behind a taller rampart; one blind throw does not clear all three.
+ * lob drops onto the keep) with a lookout behind it, and
+ * twin towers far off behind a taller rampart with a lookout behind them (three stars take two
+ * aimed throws); one blind throw does not clear all three.
  */
 const LEVELS: ReadonlyArray<{ name: string; shots: number; build: (b: Builder) => void }> = [
   {
@@ -385,7 +386,9 @@ const LEVELS: ReadonlyArray<{ name: string; shots: number; build: (b: Builder) =
     // A low wooden keep on a plinth of stone blocks, crowned with a stone battlement, behind a low
     // earth rampart (1.2 m high, 4.2 m in front): a flat throw skims over it into the keep, a lob
     // drops onto it; the second level asks for a little more than the first, not for one power in
-    // twenty at each angle (as a rampart 2 m high 3 m in front would).
+    // twenty at each angle (as a rampart 2 m high 3 m in front would). A lookout 4 m behind the keep
+    // makes three stars a matter of aim (the keep alone: 32 of the 33 single throws over the --grid
+    // that cleared it earned three stars; with the lookout 8 of 31).
     shots: 3,
     build: (b) => {
       const x = 12.5 + b.rng.range(-0.5, 0.5);
@@ -393,11 +396,14 @@ const LEVELS: ReadonlyArray<{ name: string; shots: number; build: (b: Builder) =
       const top = brickBlock(b, x, 0, 4, 1, BRICK);
       const roof = tower(b, x, top, 1, { stones: 0, blocks: 0 });
       brickBlock(b, x, roof.y, 3, 1, BRICK);
+      tower(b, x + 4, 0, 1, { stones: 1, span: 1.4 });
     },
   },
   {
     name: 'Twin towers',
-    // Far off (19 m), behind a rampart 1.3 m high: a long throw.
+    // Far off (19 m), behind a rampart 1.3 m high: a long throw. A lookout stands 4.2 m behind the
+    // bridged pair, out of reach of what the pair drops, so three stars take a throw at each (with
+    // the pair alone, 8 of 195 single throws over the --grid earned three stars; with it, none).
     shots: 3,
     build: (b) => {
       const x0 = 19 + b.rng.range(-0.5, 0.5);
@@ -405,6 +411,7 @@ const LEVELS: ReadonlyArray<{ name: string; shots: number; build: (b: Builder) =
       const first = tower(b, x0, 0, 2, { stones: 1 });
       const second = tower(b, x0 + TOWER_PITCH, 0, 2, { stones: 1 });
       bridge(b, first, second);
+      tower(b, x0 + TOWER_PITCH + 4.2, 0, 1, { stones: 1, span: 1.4 });
     },
   },
   {

@@ -31,8 +31,8 @@ export interface Throw {
  */
 export const LEVEL_SOLUTIONS: ReadonlyArray<readonly Throw[]> = [
   [{ angle: 10, power: 0.5 }],
-  [{ angle: 10, power: 0.8 }],
-  [{ angle: 15, power: 1 }],
+  [{ angle: 10, power: 0.7 }],
+  [{ angle: 25, power: 0.8 }],
   [{ angle: 10, power: 0.8 }],
   [{ angle: 10, power: 0.85 }],
   [{ angle: 15, power: 1 }],

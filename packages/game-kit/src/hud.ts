@@ -43,10 +43,18 @@ export interface HudOptions {
   parent?: HTMLElement;
 }
 
-/** The heads-up display: readout (fps, bodies, steps, paused), controls legend and an error banner. DOM only, no pixi. */
+/**
+ * The heads-up display: readout (fps and paused; bodies and steps in a closed 'physics details'
+ * fold), controls legend and an error banner. DOM only, no pixi.
+ */
 export interface Hud {
   /** The readout element (top of the info column). */
   readonly readout: HTMLElement;
+  /**
+   * The 'physics details' fold in the readout (a `<details>` element, closed at start): the body and
+   * step counts, and whatever a page appends there (an engine's numbers a player need not read).
+   */
+  readonly details: HTMLElement;
   /** The legend element (bottom of the info column). */
   readonly legend: HTMLElement;
   /**
@@ -68,6 +76,8 @@ const CSS = `
   color: #e8ecf1; border-radius: 6px; user-select: none; }
 .bp-hud h1 { font: 600 14px/1.3 system-ui, sans-serif; margin: 0 0 4px; }
 .bp-hud .bp-run-state { color: #ffd166; min-height: 1.45em; }
+.bp-hud .bp-physics summary { cursor: pointer; color: #9aa4b5; }
+.bp-hud .bp-physics[open] summary { margin-bottom: 2px; }
 .bp-legend div { display: flex; gap: 6px; align-items: baseline; margin-bottom: 2px; }
 .bp-legend kbd { flex: none; display: inline-block; min-width: 1.4em; text-align: center; padding: 0 5px; border: 1px solid #8a94a6;
   border-radius: 4px; background: rgba(255, 255, 255, 0.08); font: inherit; white-space: nowrap; }
@@ -152,9 +162,9 @@ export function plural(n: number, one: string, many: string): string {
 }
 
 /**
- * Creates the HUD: the title (in the layout's toolbar), a readout with fps, body count, step count
- * and pause state, and a legend of the controls (touch gestures on touch devices), in the layout's
- * info column unless `parent` is given.
+ * Creates the HUD: the title (in the layout's toolbar), a readout with fps and pause state and a
+ * closed 'physics details' fold with the body and step counts (`Hud.details`), and a legend of the
+ * controls (touch gestures on touch devices), in the layout's info column unless `parent` is given.
  * @throws TypeError if `title` is empty or `controls` is not an array.
  */
 export function createHud(options: HudOptions): Hud {
@@ -181,7 +191,15 @@ export function createHud(options: HudOptions): Hud {
   const status = document.createElement('div');
   status.className = 'bp-run-state';
   status.dataset.hud = 'status';
-  readout.append(title, fpsLine, bodiesLine, stepsLine, status);
+  // The engine's numbers go in a fold, closed: a player reads the frame rate and whether the game is
+  // paused; the body and step counts are for whoever looks into the physics (one click opens them).
+  const details = document.createElement('details');
+  details.className = 'bp-physics';
+  details.dataset.hud = 'physics';
+  const summary = document.createElement('summary');
+  summary.textContent = 'physics details';
+  details.append(summary, bodiesLine, stepsLine);
+  readout.append(title, fpsLine, status, details);
   const legend = document.createElement('div');
   legend.className = 'bp-legend';
   legend.setAttribute('aria-label', 'controls');
@@ -200,6 +218,7 @@ export function createHud(options: HudOptions): Hud {
     shownPaused: boolean | null = null;
   const hud: Hud = {
     readout,
+    details,
     legend,
     update(fps, bodies, steps, paused) {
       const f = Math.round(fps);

@@ -1,7 +1,7 @@
 /**
  * The renderer-agnostic game shell every game reuses: the page contract (`window.game`, ready
  * flag), the fixed-step loop on requestAnimationFrame, keys (P pause, N step, R reset), the HUD
- * (fps, bodies, controls legend), the page layout (toolbar, info and side columns around the scene),
+ * (fps, a physics fold with bodies and steps, controls legend), the page layout (toolbar, info and side columns around the scene),
  * lil-gui panels, URL parameters, pointer positions, a game's status row (goal, numbers, hint) and
  * the DOM result card at a round's end.
  * The pixi part lives in './pixi' (createPixiApp, startPixiGame) so 3D games need not load pixi.

@@ -180,8 +180,10 @@ export interface Readout {
 
 /**
  * Appends a block of lines ('label value') to `parent`, usually the HUD's readout
- * (`shell.hud.readout`), under its fps and step lines. `swatches` optionally gives a CSS colour per
- * line (a coloured square before the label, for legends). The block has `data-lab="info"`.
+ * (`shell.hud.readout`), under its fps line and its physics fold, or that fold (`shell.hud.details`,
+ * closed at start) for numbers only someone looking into the engine reads. `swatches` optionally
+ * gives a CSS colour per line (a coloured square before the label, for legends). The block has
+ * `data-lab="info"`.
  * @throws TypeError if labels is empty.
  */
 export function createReadout(parent: HTMLElement, labels: readonly string[], swatches?: readonly string[]): Readout {

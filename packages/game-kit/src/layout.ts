@@ -5,7 +5,7 @@
  * Wide windows (at least `COMPACT_MAX_WIDTH` x `COMPACT_MAX_HEIGHT` CSS px):
  *
  *     | toolbar | status   | side  |     toolbar: title and buttons (pause, step, reset), atop the info column
- *     | info    | stage    |       |     info: readout (fps, bodies, a lab's numbers); help: the controls
+ *     | info    | stage    |       |     info: readout (fps, a physics fold, a lab's numbers); help: the controls
  *     | help    | controls |       |     side: the parameter panel and the charts; status: a game's banner
  *
  * Small windows (phones, landscape or portrait): one column, toolbar / status / stage / controls;
@@ -43,7 +43,7 @@ export interface PageLayout {
   readonly toolbar: HTMLElement;
   /** Where `addButton` puts buttons (inside the toolbar). */
   readonly buttons: HTMLElement;
-  /** The readout column (fps, bodies, numbers). */
+  /** The readout column (fps, the physics fold with bodies and steps, numbers). */
   readonly info: HTMLElement;
   /** The controls legend (inside the info column, at its bottom). */
   readonly help: HTMLElement;
