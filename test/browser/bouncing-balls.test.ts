@@ -192,7 +192,17 @@ describe('bouncing balls', () => {
       const o = (window.game as unknown as Shade).pauseOverlay();
       return o.visible ? o : null;
     }, null);
-    expect(shade.text).toMatch(/^Paused\n/);
+    expect(shade.text).toMatch(/^Paused · /);
+    // A one-line banner at the box's top, clear of the hoop (its backboard's top is 1.6 m over the rim).
+    const top = await g.page.evaluate(() => {
+      const o = (window.game as unknown as { pauseOverlay(): { words: number[] } }).pauseOverlay();
+      return o.words;
+    });
+    const hoop = await g.page.evaluate(() => (window.game as unknown as { hoop(): { y: number } }).hoop());
+    const board = await g.worldToPage(0, hoop.y + 1.6);
+    const canvasTop = await g.page.evaluate(() => document.querySelector('canvas')!.getBoundingClientRect().top);
+    expect(canvasTop + top[1]! + top[3]!).toBeLessThan(board.y);
+    expect(top[3]!).toBeLessThan(40);
     // The legend gives R once, as what it does here (it said "reset" and "new round (and reset)").
     const legend = await g.page.evaluate(() => {
       const el = document.querySelector('.bp-legend')!;
