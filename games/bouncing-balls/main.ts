@@ -2144,12 +2144,13 @@ function drawHoop(): void {
   line([L - HOOP_RADIUS, o.y], [R + HOOP_RADIUS, o.y]);
   hoopLayer.stroke({ width: rimW, color: 0xff7a1a, cap: 'round' });
   // Over the backboard, a dot for each basket the hoop stays for (BASKETS_PER_HOOP): gold for those
-  // scored here, hollow for those to go before it moves.
+  // scored here, hollow for those to go before it moves; none once the round is over (the end card
+  // stands there).
   const pipR = Math.max(5.5, cam.toScreenLength(0.13)),
     pitch = 2.8 * pipR,
     boardX = cam.toScreenX(hoopSegments(spot)[0]![0]),
     pipY = cam.toScreenY(spot.y + BACKBOARD.above) - pipR - 6;
-  for (let i = 0; i < round.perHoop; i++) {
+  for (let i = 0; i < (round.phase === 'over' ? 0 : round.perHoop); i++) {
     const px = boardX + (i - (round.perHoop - 1) / 2) * pitch;
     if (i < round.atHoop) hoopLayer.circle(px, pipY, pipR).fill({ color: GOLD_COLOR }).stroke({ width: 1.5, color: 0x3a1a02 });
     else hoopLayer.circle(px, pipY, pipR - 0.75).stroke({ width: 1.5, color: 0xf4f6fb, alpha: 0.8 });
@@ -2771,6 +2772,16 @@ shell.expose({
    * the box's top or the hoop.
    */
   aimPath: (): number[] => aimPath(),
+  /**
+   * Where and why the aiming arc being pulled is cut short (a ball, a ramp, the hoop or its net; m),
+   * with the words shown beside its cross ('' when the gauge's label says it): null when not pulling
+   * or when the arc runs its length.
+   */
+  aimCut: (): { kind: string; x: number; y: number; words: string } | null => {
+    const path = aimPath();
+    const cut = path.length > 0 ? arcCut(currentThrow(), path, pressBall) : null;
+    return cut && { kind: cut.kind, x: cut.x, y: cut.y, words: cut.soon ? '' : CUT_WORDS[cut.kind] };
+  },
   /** The whole predicted flight of the throw being pulled (2.5 s, two bounces; the arc shows its start): points, m, or [] as aimPath. */
   aimFlight: (): number[] => aimFlight(),
   /** The least of a throw's flight the aiming arc shows now, s (1.2 in the warm-up before the first basket, then 0.6; 1.5 times that in the tall box). */

@@ -73,13 +73,13 @@ export const BOX_TALL = Object.freeze({ min: [0, 0] as const, max: [10, 16] as c
 
 /**
  * The tall layout's inclined walls, m: a ramp from each side wall and a floating bar, all short and
- * high in the box (10.5 m or more over the floor, above every hoop of HOOP_SPOTS_TALL): the narrow
+ * high in the box (10.8 m or more over the floor, above every hoop of HOOP_SPOTS_TALL): the narrow
  * court has no room beside a ramp, so one at the hoops' height stood across the way from the heap to
  * the hoop, and one low over the heap made a pocket balls rolled under and could not be thrown from.
  * Up there they are for trick shots off them.
  */
 export const SEGMENTS_TALL: readonly (readonly [number, number, number, number])[] = Object.freeze([
-  [0, 11.4, 3.2, 10.6],
+  [0, 11.6, 3.2, 10.8],
   [10, 13.6, 7.4, 12.8],
   [3.6, 14.4, 5.4, 14.8],
 ]);
