@@ -2637,13 +2637,14 @@ const PAUSE_WORDS_GAP = 16;
  * Puts the pause overlay's words (drawn in two lines in the middle of the view) on one line in a
  * banner just inside the box's top, clear of the hoops (every rim 3 m or more under the top); with
  * the end card up (the Play-again button at the box's top), off the card: under it if they fit above
- * the view's foot, else over it, else in the middle.
+ * the view's foot, else over it, else not at all (never over the card's lines).
  */
 function placePauseWords(): void {
   const card = endCard.box,
     words = pause.words;
   if (words.text.includes('\n')) words.text = words.text.replace('\n', ' · ');
   const half = words.height / 2;
+  words.visible = true;
   if (!endCard.container.visible) {
     const { box } = layoutOf(TALL);
     words.position.y = Math.max(half + 4, renderer.camera.toScreenY(box.max[1]) + half + 6);
@@ -2653,6 +2654,8 @@ function placePauseWords(): void {
   const above = card.y - PAUSE_WORDS_GAP - half;
   if (below + half <= app.screen.height) words.position.y = below;
   else if (above - half >= 0) words.position.y = above;
+  // No room off the card (a phone's): the dimmed view says it is paused without them.
+  else words.visible = false;
 }
 
 /**
@@ -2709,9 +2712,9 @@ function drawEndCard(over: boolean): void {
 // ---- Test and console hooks on window.game ---------------------------------------------------
 
 shell.expose({
-  /** Whether the pause overlay (the dimmed play area with "Paused") shows, its words, and their box, CSS px [x, y, width, height]. */
+  /** Whether the pause overlay (the dimmed play area with "Paused") shows, its words, and their box, CSS px [x, y, width, height] (all 0 when the words are hidden). */
   pauseOverlay: (): { visible: boolean; text: string; words: number[] } => {
-    const b = pause.words.getBounds();
+    const b = pause.words.visible ? pause.words.getBounds() : { x: 0, y: 0, width: 0, height: 0 };
     return { visible: pause.visible, text: pause.text, words: [b.x, b.y, b.width, b.height] };
   },
   /** The end card's box, CSS px [x, y, width, height], and whether it shows. */
