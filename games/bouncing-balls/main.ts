@@ -934,8 +934,12 @@ function stepWorld(world: PhysicsWorld): void {
 /** Whether the page is played by touch (a phone): its help and hints are worded for a finger. */
 const TOUCH_UI = pageLayout().touch();
 
-/** The pause overlay (game-kit's): paused, the play area dims and says "Paused" and how to resume, as the other games do. */
-const pause = createPauseOverlay();
+/**
+ * The pause overlay (game-kit's): paused, the play area dims and says "Paused" and how to resume, as
+ * the other games do, on one line in a small banner at the box's top (placePauseWords): in the middle
+ * of the view the words stood over the hoop and the aiming arc.
+ */
+const pause = createPauseOverlay({ fontSize: 20 });
 
 const game = await startPixiGame({
   title: 'Bouncing balls',
@@ -987,7 +991,7 @@ const game = await startPixiGame({
     // On top of everything drawn since (confetti, the countdown): moved last when it is not.
     if (app.stage.children.at(-1) !== pause.container) app.stage.addChild(pause.container);
     pause.draw(shell.paused, app.screen.width, app.screen.height, pageLayout().touch());
-    if (pause.visible && endCard.container.visible) placePauseWords();
+    if (pause.visible) placePauseWords();
   },
 });
 const { shell, renderer, app } = game;
@@ -1447,6 +1451,13 @@ function release(event: PointerEvent, cancelled: boolean): void {
   const cancel = inCancelZone();
   pressBall = 0;
   if (cancel) return;
+  if (dragged && blockedAtOnce(t, ball)) {
+    // Its arc showed a ball in the way at once ("blocked"): letting go throws nothing (no shot, no
+    // miss to end the streak) and says to pick the ball on top.
+    blockedAt = performance.now();
+    blockedSpot = [t.x, t.y];
+    return;
+  }
   if (!dragged) {
     // A tap on the hoop: the hoop is the goal, not a place to drop a ball (one dropped there fell
     // into the net, dead): nothing drops, and the hint says how to score. A tap under the floor
@@ -1465,6 +1476,24 @@ function release(event: PointerEvent, cancelled: boolean): void {
     if (last) lastCall.ball = e;
   }
 }
+/** When a release was refused because a ball was in the way at once (performance.now() ms; its hint shows HOOP_TAP_SHOWN ms), or -Infinity. */
+let blockedAt = Number.NEGATIVE_INFINITY;
+/** Where that refused throw would have started, m. */
+let blockedSpot: [number, number] = [0, 0];
+/** What the page says where a throw was refused because a ball was in its way. */
+const BLOCKED_WORDS = 'blocked — pick the top ball';
+
+/**
+ * Whether throw `t` of ball `thrown` (0 for a new basketball) is blocked at once: its aiming arc
+ * ends on another ball within BLOCKED_SOON_M of its start (arcCut), so it would roll off its neighbour
+ * rather than fly.
+ */
+function blockedAtOnce(t: { x: number; y: number; vx: number; vy: number; radius: number; mass: number }, thrown: number): boolean {
+  if (thrown !== 0 && handles.balls.includes(thrown) && liftSpot(thrown) === null) return false;
+  const cut = arcCut(t, arcOf(t, thrown, arcSeconds(t.y, t.vy), 0, 0), thrown);
+  return cut !== null && cut.kind === 'ball' && cut.soon;
+}
+
 /**
  * A throw's release, heard and seen: the slingshot's snap and a whoosh, louder the faster the throw,
  * and a ring bursting from the ball's start (drawPointer, RELEASE_MS).
@@ -1694,6 +1723,51 @@ const AIM_BOUNCES = 2;
 /** An aiming arc that ends on a ball less than this far from the throw's start, m, is labelled blocked. */
 const BLOCKED_SOON_M = 1.5;
 
+/** How close to a thing the end of an aiming arc is for the arc to have been cut by it, m (past the ball's and the thing's radii). */
+const CUT_REACH = 0.05;
+
+/**
+ * What ends aiming arc `path` (points, m, as aimPath) of throw `t` short, and where: 'ball' (another
+ * ball in its way), 'ramp' (one of the layout's inclined walls), 'rim' (the hoop's front rim or
+ * backboard) or 'net' (the hoop's net, from below or the side); null when it runs its length or ends
+ * at the box. `soon`: a ball in the way within BLOCKED_SOON_M of the throw's start (a throw into its
+ * neighbour in the heap; releasing it throws nothing: release).
+ */
+function arcCut(
+  t: { x: number; y: number; radius: number },
+  path: readonly number[],
+  thrown: number,
+): { kind: 'ball' | 'ramp' | 'rim' | 'net'; x: number; y: number; soon: boolean } | null {
+  const n = path.length / 2;
+  if (n < 2) return null;
+  const ex = path[2 * n - 2]!,
+    ey = path[2 * n - 1]!;
+  const soon = Math.hypot(ex - t.x, ey - t.y) < BLOCKED_SOON_M;
+  if (nearBalls(t.x, t.y, thrown).some(([bx, by, br]) => Math.hypot(ex - bx, ey - by) < t.radius + br + 0.02))
+    return { kind: 'ball', x: ex, y: ey, soon };
+  for (const [ax, ay, bx, by] of layoutOf(TALL).segments)
+    if (distanceToSegment(ex, ey, ax, ay, bx, by) < t.radius + SEGMENT_RADIUS + CUT_REACH)
+      return { kind: 'ramp', x: ex, y: ey, soon: false };
+  const spot = hoopSpots(TALL)[round.spot]!;
+  for (const [ax, ay, bx, by] of hoopSegments(spot))
+    if (distanceToSegment(ex, ey, ax, ay, bx, by) < t.radius + HOOP_RADIUS + CUT_REACH) return { kind: 'rim', x: ex, y: ey, soon: false };
+  // The net hangs NET.depth under the rim, between the rim's ends.
+  if (Math.abs(ex - spot.x) < HOOP_HALF_WIDTH + t.radius + CUT_REACH && ey < spot.y && ey > spot.y - NET.depth - t.radius - CUT_REACH)
+    return { kind: 'net', x: ex, y: ey, soon: false };
+  return null;
+}
+
+/** What the small label by an aiming arc's cut says, by what cut it (arcCut). */
+const CUT_WORDS = { ball: 'hits a ball', ramp: 'hits the ramp', rim: 'hits the hoop', net: 'hits the net' } as const;
+
+/** The small label by the ✕ where the aiming arc is cut (arcCut). */
+const cutLabel = new Text({
+  text: '',
+  style: { fontFamily: 'system-ui, sans-serif', fontSize: 12, fontWeight: '600', fill: 0xffb3b3, stroke: { color: 0x0b0f16, width: 3 } },
+});
+cutLabel.anchor.set(0.5, 1);
+cutLabel.visible = false;
+
 /** The band's colour for a pull of `power` (speed / MAX_THROW_SPEED, [0, 1]): white, to gold at half, to red at full. */
 function powerColor(power: number): number {
   return power < 0.5 ? mixColor(0xffffff, 0xffd166, power / 0.5) : mixColor(0xffd166, 0xff4d4d, (power - 0.5) / 0.5);
@@ -1707,13 +1781,20 @@ const holdLabel = new Text({
 holdLabel.anchor.set(0.5, 1);
 holdLabel.visible = false;
 app.stage.addChild(holdLabel);
+app.stage.addChild(cutLabel);
 
 /** Shows `text` on the hold label centred at x, its bottom at y (CSS px on the canvas), kept inside the canvas. */
 function showHoldLabel(text: string, x: number, y: number): void {
   if (holdLabel.text !== text) holdLabel.text = text;
-  const half = holdLabel.width / 2 + 4;
-  holdLabel.position.set(Math.min(canvas.clientWidth - half, Math.max(half, x)), Math.max(holdLabel.height + 2, y));
+  placeInside(holdLabel, x, y);
   holdLabel.visible = true;
+}
+
+/** Puts `label` (anchored at its bottom centre) centred at x, its bottom at y (CSS px on the canvas), moved to lie inside the canvas. */
+function placeInside(label: Text, x: number, y: number): void {
+  const half = label.width / 2 + 4;
+  const w = app.screen.width;
+  label.position.set(half * 2 >= w ? w / 2 : Math.min(w - half, Math.max(half, x)), Math.max(label.height + 2, y));
 }
 
 /**
@@ -1726,6 +1807,7 @@ function drawPointer(): void {
   overlay.clear();
   liftedShown = 0;
   holdLabel.visible = false;
+  cutLabel.visible = false;
   const cam = renderer.camera;
   // A release's ring, bursting out from where the ball left and fading.
   const age = (performance.now() - releaseFx.at) / RELEASE_MS;
@@ -1736,6 +1818,9 @@ function drawPointer(): void {
       .stroke({ width: 3 + 3 * releaseFx.power, color: powerColor(releaseFx.power), alpha: 0.9 * (1 - age) });
   }
   if (pointerId === -1) {
+    // A throw refused as blocked: say why where it would have started, for a moment.
+    if (performance.now() - blockedAt < HOOP_TAP_SHOWN)
+      showHoldLabel(BLOCKED_WORDS, cam.toScreenX(blockedSpot[0]), cam.toScreenY(blockedSpot[1]) - cam.toScreenLength(PLAYER_RADIUS) - 8);
     // A ball picked up: say how to let it go, over it.
     if (drag.joint !== 0 && drag.body !== 0) {
       const s = slotOf(drag.body);
@@ -1803,7 +1888,7 @@ function drawPointer(): void {
       by = cam.toScreenY(P.y[s]!),
       br = cam.toScreenLength(shell.world.components.Ball.radius[s]!);
     overlay.circle(bx, by, br + 4).stroke({ width: 4, color: 0xff4d4d, alpha: 0.95 });
-    showHoldLabel('buried · pull a ball on top', bx, by - br - 8);
+    showHoldLabel('buried · hold still 1 s to carry it', bx, by - br - 8);
     return;
   }
   // From the ball being thrown: the pressed ball's centre (lifted to the top of the heap if it is
@@ -1895,32 +1980,41 @@ function drawPointer(): void {
     overlay.lineTo(ox + gr * Math.cos(a), oy + gr * Math.sin(a));
   }
   overlay.stroke({ width: 4, color: powerColor(power), alpha: 0.95 });
-  // The arc ends on another ball: a red cross there (that ball is in the way), over the thrown
-  // ball's disc (a throw blocked at once ends its arc inside that disc).
-  const ex = path[2 * n - 2] ?? t.x,
-    ey = path[2 * n - 1] ?? t.y;
-  const blocked = n > 1 && nearBalls(t.x, t.y, pressBall).some(([bx, by, br]) => Math.hypot(ex - bx, ey - by) < t.radius + br + 0.02);
-  // Blocked within the ball's first BLOCKED_SOON_M of flight: the label says so, as the cross is small
-  // and under the gauge (a heap ball thrown into its neighbour rolled off along the heap, a throw
-  // "that moved and fell back").
-  const soon = blocked && Math.hypot(ex - t.x, ey - t.y) < BLOCKED_SOON_M;
-  let label = `${soon ? 'blocked by a ball · ' : ''}power ${Math.round(100 * power)}%${capped ? ' (max)' : ''}`;
+  // The arc cut short by a ball, a ramp or the hoop: a red cross where it ends (over the thrown
+  // ball's disc when a ball blocks it at once) and what it hits beside it.
+  const cut = arcCut(t, path, pressBall);
+  // Blocked by a ball within the ball's first BLOCKED_SOON_M of flight: the label says so, as the
+  // cross is small and under the gauge (a heap ball thrown into its neighbour rolled off along the
+  // heap), and letting go throws nothing (release).
+  const soon = cut?.soon === true;
+  let label = `${soon ? 'blocked · ' : ''}power ${Math.round(100 * power)}%${capped ? ' (max)' : ''}`;
   if (pressed !== 0) {
     const points = BALL_POINTS[kindOf(pressed)];
     const lifted = lift !== null && (lift[0] !== P.x[slotOf(pressed)] || lift[1] !== P.y[slotOf(pressed)]);
-    label = `${lifted ? 'lifted out · ' : ''}${label} · ${points} ${points === 1 ? 'point' : 'points'}`;
+    label = `${lifted ? 'lifted · ' : ''}${label} · ${points} ${points === 1 ? 'point' : 'points'}`;
   }
   showHoldLabel(label, ox, oy - gr - 6);
-  if (blocked) {
-    const sx = cam.toScreenX(ex),
-      sy = cam.toScreenY(ey),
+  if (cut !== null) {
+    const sx = cam.toScreenX(cut.x),
+      sy = cam.toScreenY(cut.y),
       k = 7;
     overlay
       .moveTo(sx - k, sy - k)
       .lineTo(sx + k, sy + k)
       .moveTo(sx + k, sy - k)
       .lineTo(sx - k, sy + k)
+      .stroke({ width: 6, color: 0x0b0f16, alpha: 0.6 })
+      .moveTo(sx - k, sy - k)
+      .lineTo(sx + k, sy + k)
+      .moveTo(sx + k, sy - k)
+      .lineTo(sx - k, sy + k)
       .stroke({ width: 4, color: 0xff4d4d, alpha: 0.95 });
+    // Beside the cross, unless the main label says it (a ball in the way at once).
+    if (!soon) {
+      if (cutLabel.text !== CUT_WORDS[cut.kind]) cutLabel.text = CUT_WORDS[cut.kind];
+      placeInside(cutLabel, sx, sy - k - 4);
+      cutLabel.visible = true;
+    }
   }
 }
 
@@ -2050,12 +2144,13 @@ function drawHoop(): void {
   line([L - HOOP_RADIUS, o.y], [R + HOOP_RADIUS, o.y]);
   hoopLayer.stroke({ width: rimW, color: 0xff7a1a, cap: 'round' });
   // Over the backboard, a dot for each basket the hoop stays for (BASKETS_PER_HOOP): gold for those
-  // scored here, hollow for those to go before it moves.
+  // scored here, hollow for those to go before it moves; none once the round is over (the end card
+  // stands there).
   const pipR = Math.max(5.5, cam.toScreenLength(0.13)),
     pitch = 2.8 * pipR,
     boardX = cam.toScreenX(hoopSegments(spot)[0]![0]),
     pipY = cam.toScreenY(spot.y + BACKBOARD.above) - pipR - 6;
-  for (let i = 0; i < round.perHoop; i++) {
+  for (let i = 0; i < (round.phase === 'over' ? 0 : round.perHoop); i++) {
     const px = boardX + (i - (round.perHoop - 1) / 2) * pitch;
     if (i < round.atHoop) hoopLayer.circle(px, pipY, pipR).fill({ color: GOLD_COLOR }).stroke({ width: 1.5, color: 0x3a1a02 });
     else hoopLayer.circle(px, pipY, pipR - 0.75).stroke({ width: 1.5, color: 0xf4f6fb, alpha: 0.8 });
@@ -2449,20 +2544,22 @@ function updateStatus(): void {
     ? `${touch ? 'Tap' : 'R or'} Play again for a new round`
     : performance.now() - missAt < 2500
       ? 'Missed: the streak is over'
-      : performance.now() - hoopTapAt < HOOP_TAP_SHOWN
-        ? 'Throw into the hoop from below the orange line'
-        : performance.now() - standTapAt < HOOP_TAP_SHOWN
-          ? 'Press here and pull back to throw the ball above'
-          : ruleHint === 'high'
-            ? 'Too high: throw from below the orange line to score'
-            : ruleHint === 'below'
-              ? `Up through the net does not count${touch ? '' : ': drop it in from above'}`
-              : round.phase === 'ready' && round.shots === 0
-                ? // One line on a phone too (a second line there moved the box down the moment it changed), so the phone's is shorter.
-                  touch
-                  ? 'Throw through the hoop from below the orange line'
-                  : 'Press, drag back and let go to throw through the hoop from below the orange line'
-                : teach;
+      : performance.now() - blockedAt < HOOP_TAP_SHOWN
+        ? `Blocked: not thrown · pick the top ball${touch ? '' : ' or hold one still 1 s to carry it'}`
+        : performance.now() - hoopTapAt < HOOP_TAP_SHOWN
+          ? 'Throw into the hoop from below the orange line'
+          : performance.now() - standTapAt < HOOP_TAP_SHOWN
+            ? 'Press here and pull back to throw the ball above'
+            : ruleHint === 'high'
+              ? 'Too high: throw from below the orange line to score'
+              : ruleHint === 'below'
+                ? `Up through the net does not count${touch ? '' : ': drop it in from above'}`
+                : round.phase === 'ready' && round.shots === 0
+                  ? // One line on a phone too (a second line there moved the box down the moment it changed), so the phone's is shorter.
+                    touch
+                    ? 'Throw through the hoop from below the orange line'
+                    : 'Press, drag back and let go to throw through the hoop from below the orange line'
+                  : teach;
   if (status.set({ goal, numbers, hint }, over)) setAction(over);
   // The last HURRY_SECONDS: the numbers line turns red.
   status.numbers.classList.toggle('bb-hurry', round.phase === 'playing' && round.timeLeft <= HURRY_SECONDS);
@@ -2537,17 +2634,28 @@ const endCard = createResultCard(app.stage, { label: 'end-card', bigSize: 56 });
 /** Gap, CSS px, between the end card and the pause overlay's words moved off it. */
 const PAUSE_WORDS_GAP = 16;
 /**
- * Moves the pause overlay's words (drawn in the middle of the view, where the end card stands) off
- * the end card: under it if they fit above the view's foot, else over it, else left in the middle.
+ * Puts the pause overlay's words (drawn in two lines in the middle of the view) on one line in a
+ * banner just inside the box's top, clear of the hoops (every rim 3 m or more under the top); with
+ * the end card up (the Play-again button at the box's top), off the card: under it if they fit above
+ * the view's foot, else over it, else not at all (never over the card's lines).
  */
 function placePauseWords(): void {
   const card = endCard.box,
     words = pause.words;
+  if (words.text.includes('\n')) words.text = words.text.replace('\n', ' · ');
   const half = words.height / 2;
+  words.visible = true;
+  if (!endCard.container.visible) {
+    const { box } = layoutOf(TALL);
+    words.position.y = Math.max(half + 4, renderer.camera.toScreenY(box.max[1]) + half + 6);
+    return;
+  }
   const below = card.y + card.height + PAUSE_WORDS_GAP + half;
   const above = card.y - PAUSE_WORDS_GAP - half;
   if (below + half <= app.screen.height) words.position.y = below;
   else if (above - half >= 0) words.position.y = above;
+  // No room off the card (a phone's): the dimmed view says it is paused without them.
+  else words.visible = false;
 }
 
 /**
@@ -2604,9 +2712,9 @@ function drawEndCard(over: boolean): void {
 // ---- Test and console hooks on window.game ---------------------------------------------------
 
 shell.expose({
-  /** Whether the pause overlay (the dimmed play area with "Paused") shows, its words, and their box, CSS px [x, y, width, height]. */
+  /** Whether the pause overlay (the dimmed play area with "Paused") shows, its words, and their box, CSS px [x, y, width, height] (all 0 when the words are hidden). */
   pauseOverlay: (): { visible: boolean; text: string; words: number[] } => {
-    const b = pause.words.getBounds();
+    const b = pause.words.visible ? pause.words.getBounds() : { x: 0, y: 0, width: 0, height: 0 };
     return { visible: pause.visible, text: pause.text, words: [b.x, b.y, b.width, b.height] };
   },
   /** The end card's box, CSS px [x, y, width, height], and whether it shows. */
@@ -2667,6 +2775,16 @@ shell.expose({
    * the box's top or the hoop.
    */
   aimPath: (): number[] => aimPath(),
+  /**
+   * Where and why the aiming arc being pulled is cut short (a ball, a ramp, the hoop or its net; m),
+   * with the words shown beside its cross ('' when the gauge's label says it): null when not pulling
+   * or when the arc runs its length.
+   */
+  aimCut: (): { kind: string; x: number; y: number; words: string } | null => {
+    const path = aimPath();
+    const cut = path.length > 0 ? arcCut(currentThrow(), path, pressBall) : null;
+    return cut && { kind: cut.kind, x: cut.x, y: cut.y, words: cut.soon ? '' : CUT_WORDS[cut.kind] };
+  },
   /** The whole predicted flight of the throw being pulled (2.5 s, two bounces; the arc shows its start): points, m, or [] as aimPath. */
   aimFlight: (): number[] => aimFlight(),
   /** The least of a throw's flight the aiming arc shows now, s (1.2 in the warm-up before the first basket, then 0.6; 1.5 times that in the tall box). */

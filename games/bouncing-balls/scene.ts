@@ -56,23 +56,32 @@ export const BOX = Object.freeze({ min: [0, 0] as const, max: [16, 10] as const 
 
 /**
  * The inclined walls, m: [ax, ay, bx, by]. Each has at least one free end point balls can hit. Short
- * and kept to the sides and the top, so they leave open lanes from the lower box to the hoops
- * (hoop.ts HOOP_SPOTS): a long ramp across the middle blocked every throw at some hoops.
+ * and kept to the top corners and the top, so they leave open lanes from the lower box to the hoops
+ * (hoop.ts HOOP_SPOTS): a long ramp across the middle blocked every throw at some hoops. The ramps
+ * from the side walls are 8.8 m or more over the floor, above every hoop's backboard, where the heap
+ * cannot get under them: ramps low over the heap made pockets a ball rolled under and could not be
+ * thrown from (its throw hit the ramp).
  */
 export const SEGMENTS: readonly (readonly [number, number, number, number])[] = Object.freeze([
-  [0, 4.3, 3.8, 3.3],
-  [16, 3.9, 11.6, 2.8],
+  [0, 9.3, 1.6, 8.8],
+  [16, 9.3, 14.4, 8.8],
   [6.6, 8.4, 8.6, 8.8],
 ]);
 
 /** The tall layout's box, m: as much room as BOX, turned upright. */
 export const BOX_TALL = Object.freeze({ min: [0, 0] as const, max: [10, 16] as const });
 
-/** The tall layout's inclined walls, m: ramps from each side wall in turn, and a floating bar; short, as SEGMENTS are. */
+/**
+ * The tall layout's inclined walls, m: a ramp from each side wall and a floating bar, all short and
+ * high in the box (10.8 m or more over the floor, above every hoop of HOOP_SPOTS_TALL): the narrow
+ * court has no room beside a ramp, so one at the hoops' height stood across the way from the heap to
+ * the hoop, and one low over the heap made a pocket balls rolled under and could not be thrown from.
+ * Up there they are for trick shots off them.
+ */
 export const SEGMENTS_TALL: readonly (readonly [number, number, number, number])[] = Object.freeze([
-  [0, 11.4, 3.6, 10.5],
-  [10, 6.8, 6.4, 5.9],
-  [1.4, 3.0, 3.4, 3.4],
+  [0, 11.6, 3.2, 10.8],
+  [10, 13.6, 7.4, 12.8],
+  [3.6, 14.4, 5.4, 14.8],
 ]);
 
 /** A box's inner corners, m. */

@@ -478,7 +478,7 @@ describe('the slingshot and its aiming arc', () => {
     // The real ball follows the arc through its bounce off the ceiling (within 0.15 m: the bounce comes a part of a step sooner).
     followsPath(x0, y0, vx, vy, path, 0.15);
     // The ceiling's bounce is its own: the next touch (a wall, here the right one) still ends the arc.
-    const side = throwPath(12, 5, 6, 12, { ...o, seconds: 3, ceilingBounces: 1 });
+    const side = throwPath(9, 5, 6, 12, { ...o, seconds: 3, ceilingBounces: 1 });
     expect(side.at(-2)! + PLAYER_RADIUS).toBeCloseTo(BOX.max[0], 9);
     expect(() => throwPath(0, 0, 0, 0, { ...o, ceilingBounces: 0.5 })).toThrow(/ceilingBounces/);
   });
