@@ -1292,3 +1292,60 @@ describe('black hole, a stranger on a phone (issue 34)', () => {
     await p.close();
   }, 120_000);
 });
+
+describe('black hole, two fingers on the pad (issue 34)', () => {
+  type Two = { bh: { thrust: string }; paused: boolean };
+  /** The arrows lit on the pad now. */
+  const lit = (): string[] => [...document.querySelectorAll<HTMLElement>('.bh-pad button.on')].map((b) => b.dataset.dir!).sort();
+  for (const side of ['right', 'left'] as const)
+    it(`finger 1 on ↑, finger 2 on ${side === 'right' ? '→' : '←'}: lifting finger 2 leaves ↑ held and lit, lifting finger 1 leaves ${side}`, async () => {
+      const p = await h.openGame('black-hole', { viewport: { width: 390, height: 844 }, touch: true, query: { level: 1 } });
+      const mid = async (d: string) => {
+        const b = (await p.page.getByRole('button', { name: `thrust ${d}`, exact: true }).boundingBox())!;
+        return { x: b.x + b.width / 2, y: b.y + b.height / 2 };
+      };
+      const f1 = { ...(await mid('up')), id: 1 },
+        f2 = { ...(await mid(side)), id: 2 };
+      // What the browser says each lift was, read from its own touchend events (independent of the game).
+      await p.page.evaluate(() => {
+        const ends: { changed: number[]; still: number[] }[] = [];
+        (window as unknown as { ends: typeof ends }).ends = ends;
+        window.addEventListener('touchend', (e) =>
+          ends.push({ changed: [...e.changedTouches].map((t) => t.identifier), still: [...e.touches].map((t) => t.identifier) }),
+        );
+      });
+      const ends = () => p.page.evaluate(() => (window as unknown as { ends: { changed: number[]; still: number[] }[] }).ends);
+      const cdp = await p.page.context().newCDPSession(p.page);
+      await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: [f1] });
+      await p.waitFor(() => (window.game as unknown as Two).bh.thrust === 'up', null);
+      // Paused, so the ship stays on the field while the fingers come and go (the pad works paused).
+      await p.page.evaluate(() => {
+        (window.game as unknown as Two).paused = true;
+      });
+      await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: [f1, f2] });
+      await p.waitFor((s) => (window.game as unknown as Two).bh.thrust === `up-${s}`, side);
+      await p.page.waitForTimeout(200);
+      // Lifting finger 2 only (CDP's touchEnd lifts the points it lists; finger 1 stays down).
+      await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [f2] });
+      await p.waitFor(() => (window as unknown as { ends: unknown[] }).ends.length === 1 || null, null);
+      expect(await ends()).toEqual([{ changed: [2], still: [1] }]);
+      await p.waitFor(() => (window.game as unknown as Two).bh.thrust === 'up', null, 3000).catch(() => {});
+      expect(await p.page.evaluate(() => (window.game as unknown as Two).bh.thrust)).toBe('up');
+      expect(await p.page.evaluate(lit)).toEqual(['up']);
+      // Finger 2 back on the side arrow, then finger 1 lifted: the side arrow alone is held and lit.
+      await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: [f1, f2] });
+      await p.waitFor((s) => (window.game as unknown as Two).bh.thrust === `up-${s}`, side);
+      await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [f1] });
+      await p.waitFor(() => (window as unknown as { ends: unknown[] }).ends.length === 2 || null, null);
+      expect((await ends())[1]).toEqual({ changed: [1], still: [2] });
+      await p.waitFor((s) => (window.game as unknown as Two).bh.thrust === s, side, 3000).catch(() => {});
+      expect(await p.page.evaluate(() => (window.game as unknown as Two).bh.thrust)).toBe(side);
+      expect(await p.page.evaluate(lit)).toEqual([side]);
+      await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
+      await p.waitFor(() => (window.game as unknown as Two).bh.thrust === 'none', null);
+      expect(await p.page.evaluate(lit)).toEqual([]);
+      expect(p.errors).toEqual([]);
+      await cdp.detach();
+      await p.close();
+    }, 120_000);
+});
