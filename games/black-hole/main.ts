@@ -714,6 +714,9 @@ body .bp-touch-hint { top: 6px; bottom: auto; }
   .bp-touchbar.bh-pad button[data-dir='up'] { grid-area: up; }
   .bp-touchbar.bh-pad button[data-dir='down'] { grid-area: down; }
   .bp-touchbar.bh-pad button[data-dir='right'] { grid-area: right; }
+  /* A held side arrow fills from the middle outwards as its push builds up (\`--bh-fill\`, set each frame). */
+  .bp-touchbar.bh-pad button.on[data-dir='right'] { background: linear-gradient(to right, #ffd166 var(--bh-fill, 0%), #c77d12 var(--bh-fill, 0%)); }
+  .bp-touchbar.bh-pad button.on[data-dir='left'] { background: linear-gradient(to left, #ffd166 var(--bh-fill, 0%), #c77d12 var(--bh-fill, 0%)); }
   /* Path and Replay (F, V) in a column at the pad's right, the pad centred in the rest of the row. */
   .bp-touchbar.bh-pad { flex: 1 1 0; padding-right: 0; }
   .bp-touchbar.bh-extras { flex: 0 0 auto; display: grid; grid-template-rows: 54px 54px; gap: 6px; padding: 2px 8px 4px 0; }
@@ -970,6 +973,21 @@ function updateStatus(force = false): void {
   // the thrust it plays.
   const lit = (replay.player ? bh.thrust : heldThrust(held.filter((d) => !tapEnds.has(d)))).split('-');
   for (const [i, dir] of DIRS.entries()) pad.setActive(i, lit.includes(dir));
+  // A lit side arrow fills from its inner edge as its push builds up: on a narrow field with a top
+  // sideways speed, the share of it the ship flies at along the arrow; else the engine's sideways
+  // share of full thrust. Full: nothing more to gain by holding.
+  const side = Math.sign(bh.thrustVec[0]);
+  const vx = bh.world.components.Velocity.x[slotOf(bh.ship)]!;
+  const built =
+    bh.params.sideSpeed < Infinity
+      ? (side === 0 ? 0 : side * vx) / bh.params.sideSpeed
+      : Math.abs(bh.thrustVec[0]) / (bh.params.thrust * bh.params.sideScale || 1);
+  for (const [i, dir] of DIRS.entries()) {
+    if (dir !== 'left' && dir !== 'right') continue;
+    const on = lit.includes(dir) && side === (dir === 'right' ? 1 : -1);
+    const fill = on ? Math.round(100 * Math.max(0, Math.min(1, built))) : 0;
+    pad.buttons[i]!.style.setProperty('--bh-fill', `${fill}%`);
+  }
 }
 
 // ---- Drawing --------------------------------------------------------------------------------------
