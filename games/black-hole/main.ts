@@ -127,6 +127,8 @@ let restarted = false;
 let happening: ShipHappening = 'level';
 /** `happening` when a replay began: put back when the replay is left (it stops where it was). */
 let happeningBeforeReplay: ShipHappening = 'level';
+/** The holes drawn (`shownHoles`) when the replay began: put back when it is left. */
+let shownHolesBeforeReplay: number[] = [];
 /**
  * The ready moment after a fall or an exit, ms of the wall clock (about the swallow's length): the new
  * ship waits at the start, whatever is pressed, so a press made in the fall's flurry does not fly it
@@ -343,7 +345,7 @@ const game = await startPixiGame({
       touch: 'the Path button',
       card: false,
     },
-    { keys: 'V', action: 'replay the run from the start (a key or a tap leaves it)', touch: 'the Replay button', card: false },
+    { keys: 'V', action: 'replay this level from its start (a key or a tap leaves it)', touch: 'the Replay button', card: false },
   ],
   keys: [
     { key: 'Enter', label: 'next level / restart', action: () => advance() },
@@ -364,6 +366,7 @@ const game = await startPixiGame({
           return;
         }
         happeningBeforeReplay = happening;
+        shownHolesBeforeReplay = shownHoles.slice();
         replay.play();
         predictor = createPredictor(bh);
         updateStatus(true);
@@ -528,6 +531,8 @@ function advance(): void {
     game.shell.reset();
   } else if (run?.waiting) {
     replay.input('beginLevel');
+    // V replays this level from its start, not the run from level 1.
+    replay.restart();
     updateStatus(true);
     // The new level's holes are drawn in the next frame, paused or not (the status already counts them).
     game.drawNext();
@@ -596,6 +601,9 @@ window.addEventListener('keydown', (e) => {
 function leaveReplay(): void {
   replay.stop();
   happening = happeningBeforeReplay;
+  // The dimmed holes of a cleared level are the ones shown before the replay, not the replay's last.
+  shownHoles.length = 0;
+  shownHoles.push(...shownHolesBeforeReplay);
   predictor = createPredictor(bh);
   keysDown.clear();
   padPointers.clear();

@@ -1349,3 +1349,62 @@ describe('black hole, two fingers on the pad (issue 34)', () => {
       await p.close();
     }, 120_000);
 });
+
+describe('black hole, the replay of a level (issue 34)', () => {
+  it('V after clearing level 2 replays level 2 (not the run from level 1); leaving it shows level 2’s dimmed holes and the Level 3 button again', async () => {
+    type Rp = {
+      paused: boolean;
+      step(): void;
+      advance(): void;
+      ghostExtents(): number[][];
+      bh: { ship: number; lineY: number; holes: number[]; world: { components: Record<string, { x: Float64Array; y: Float64Array }> } };
+      level: { waiting: boolean; parked: boolean; spec: { level: number } };
+      replay: { player: unknown };
+    };
+    const p = await h.openGame('black-hole', { viewport: { width: 1280, height: 800 }, query: { level: 1 } });
+    /** Flies ↑ for 20 steps (recorded input), then puts the ship over the line: the next steps clear the level. */
+    const clear = () =>
+      p.page.evaluate(() => {
+        const w = window.game as unknown as Rp;
+        w.paused = true;
+        const levelHoles = w.bh.holes.length;
+        window.dispatchEvent(new KeyboardEvent('keydown', { key: 'ArrowUp' }));
+        for (let i = 0; i < 20; i++) w.step();
+        window.dispatchEvent(new KeyboardEvent('keyup', { key: 'ArrowUp' }));
+        w.bh.world.components.Position!.y[w.bh.ship % 2 ** 25] = w.bh.lineY + 0.3;
+        for (let i = 0; i < 40 && !w.level.waiting; i++) w.step();
+        return { waiting: w.level.waiting, next: w.level.spec.level, levelHoles };
+      });
+    expect(await clear()).toMatchObject({ waiting: true, next: 2, levelHoles: 1 });
+    await p.page.evaluate(() => (window.game as unknown as Rp).advance());
+    const two = await clear();
+    expect(two).toMatchObject({ waiting: true, next: 3 });
+    expect(two.levelHoles).toBeGreaterThan(5);
+    await p.frames(2);
+    const ghosts = await p.page.evaluate(() => (window.game as unknown as Rp).ghostExtents());
+    expect(ghosts.length).toBe(two.levelHoles);
+    await p.page.getByRole('button', { name: 'Level 3 ▶' }).waitFor({ state: 'visible' });
+    await p.page.keyboard.press('v');
+    // The replay starts at level 2's start: level 2's wall of holes, not level 1's one hole.
+    const first = await p.waitFor(() => {
+      const w = window.game as unknown as Rp;
+      return w.replay.player ? { level: w.level.spec.level, holes: w.bh.holes.length, waiting: w.level.waiting } : null;
+    }, null);
+    expect(first).toEqual({ level: 2, holes: two.levelHoles, waiting: false });
+    await p.page.evaluate(() => {
+      (window.game as unknown as Rp).paused = false;
+    });
+    await p.frames(10);
+    await p.page.keyboard.press('a');
+    await p.waitFor(() => (window.game as unknown as Rp).replay.player === null || null, null);
+    await p.frames(3);
+    // Back where the run was: level 3 next, its button shown, level 2's holes dimmed where they were.
+    expect(
+      await p.page.evaluate(() => [(window.game as unknown as Rp).level.waiting, (window.game as unknown as Rp).level.spec.level]),
+    ).toEqual([true, 3]);
+    expect(await p.page.evaluate(() => (window.game as unknown as Rp).ghostExtents())).toEqual(ghosts);
+    await p.page.getByRole('button', { name: 'Level 3 ▶' }).waitFor({ state: 'visible' });
+    expect(p.errors).toEqual([]);
+    await p.close();
+  }, 120_000);
+});
