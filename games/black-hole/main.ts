@@ -338,7 +338,7 @@ const game = await startPixiGame({
     isTouchDevice()
       ? { keys: '← ↑ → ↓', action: 'thumb between two: both', touch: 'hold ↑ to fly, tap ← →' }
       : { keys: '← ↑ → ↓', action: 'thrust: a tap nudges, a hold builds up (two at once: diagonal)', touch: 'hold, slide ← ↑ → ↓' },
-    { keys: 'Enter', action: 'next level / continue from this level', touch: 'tap the Level ▶ or Continue ↺ button', card: false },
+    { keys: 'Enter', action: 'next level / continue from this level', touch: 'Level ▶ / Continue ↺', card: false },
     {
       keys: 'F',
       action: 'predicted path on / off (red: falls in or lost, blue: reaches the line, grey: undecided)',
@@ -1856,8 +1856,8 @@ app.stage.addChild(pauseLine);
 let pauseFit = '';
 
 /**
- * Shows `pauseLine` when `show`: its size fits the band above the finish line (at most 28 px, at
- * least 14, two thirds of the band's height) and the field's width; centred, or off a ship waiting in the band.
+ * Shows `pauseLine` when `show`: its size fits the band above the finish line (at most 24 px, its
+ * drawn height, outline included, 4 px less than the band's, down to 10 px) and the field's width; centred, or off a ship waiting in the band.
  */
 function drawPauseLine(show: boolean): void {
   pauseLine.visible = show;
@@ -1871,10 +1871,12 @@ function drawPauseLine(show: boolean): void {
   const fit = `${room}:${line - top}:${text}`;
   if (pauseFit !== fit) {
     pauseFit = fit;
-    let size = Math.max(14, Math.min(28, Math.floor((2 / 3) * (line - top))));
+    let size = Math.max(12, Math.min(24, Math.floor(0.6 * (line - top))));
     pauseLine.style.fontSize = size;
     if (pauseLine.width > room) size = Math.max(12, Math.floor((size * room) / pauseLine.width));
     pauseLine.style.fontSize = size;
+    // The words (and their outline) stay inside the band, clear of the finish line and the path under it.
+    while (size > 10 && pauseLine.height > line - top - 4) pauseLine.style.fontSize = --size;
   }
   // Between levels the ship waits past the line, in the band: the words then stand beside it, on the
   // roomier side, where they fit there, else just under the line (no play goes on there meanwhile).
@@ -1946,7 +1948,8 @@ function freeBand(end: number): [number, number] {
  * Puts the next-level / continue button (over the field, by the page's style) in the tallest band
  * across the field between the finish line and the start pad that no hole's drawing (disc and glow,
  * `holeExtents`) reaches, centred in it, so it covers no hole (after a game over the holes stay). Where
- * no band fits it, it stays where the style puts it. Checked every frame while the button shows.
+ * no band fits it, it stays where the style puts it. Between levels (no live hole) it sits just above
+ * the start pad instead, the same place on every level. Checked every frame while the button shows.
  */
 function placeActionButton(): void {
   const el = document.querySelector<HTMLElement>('.bp-touchbar.bp-action');
@@ -1957,10 +1960,16 @@ function placeActionButton(): void {
   const off = canvas.top - stage.top;
   // Down to the ship (on its way up), or, where it waits at the line after a clear, to the start pad.
   const above = lastShip[1]! >= bh.lineY - 1;
-  const [bestTop, best] = freeBand(
-    (above ? cam.toScreenY(0.9) : Math.min(cam.toScreenY(0.9), cam.toScreenY(lastShip[1]!))) - shipPx - ACTION_GAP,
-  );
+  const end = (above ? cam.toScreenY(0.9) : Math.min(cam.toScreenY(0.9), cam.toScreenY(lastShip[1]!))) - shipPx - ACTION_GAP;
   const h = el.offsetHeight;
+  // Between levels (no live hole) always in one place, just above the start pad, whatever the cleared
+  // level's dimmed holes: the button does not jump about from one level's end to the next.
+  if (bh.holes.length === 0 && run?.waiting && !bh.over) {
+    const want = `${Math.round(off + end - h)}px`;
+    if (el.style.top !== want) el.style.top = want;
+    return;
+  }
+  const [bestTop, best] = freeBand(end);
   const want = best >= h ? `${Math.round(off + bestTop + (best - h) / 2)}px` : '';
   if (el.style.top !== want) el.style.top = want;
 }
