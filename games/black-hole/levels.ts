@@ -512,6 +512,8 @@ export function heldFlight(game: BlackHoleGame, run: LevelRun, thrust: Thrust, p
       }
     return { end: 'timeout', steps: k, x, y };
   }
+  // A side arrow's press kicks the ship sideways at once (./rules.ts `stepBlackHole`, SIDE_TAP_KICK).
+  if (d[0] !== 0 && game.params.sideKick > 0) vx = Math.sign(d[0]) * Math.min(game.params.sideKick, sideSpeed);
   while (k < steps) {
     for (let i = 0; i < n; i++) hx[i] = driftedX(hx[i]!, i, game.holeRadius[i]!, vxHoles, width, dt);
     // The forces stage: the holes' pull, then the engine.

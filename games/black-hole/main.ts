@@ -127,6 +127,8 @@ let restarted = false;
 let happening: ShipHappening = 'level';
 /** `happening` when a replay began: put back when the replay is left (it stops where it was). */
 let happeningBeforeReplay: ShipHappening = 'level';
+/** The holes drawn (`shownHoles`) when the replay began: put back when it is left. */
+let shownHolesBeforeReplay: number[] = [];
 /**
  * The ready moment after a fall or an exit, ms of the wall clock (about the swallow's length): the new
  * ship waits at the start, whatever is pressed, so a press made in the fall's flurry does not fly it
@@ -336,14 +338,14 @@ const game = await startPixiGame({
     isTouchDevice()
       ? { keys: '← ↑ → ↓', action: 'thumb between two: both', touch: 'hold ↑ to fly, tap ← →' }
       : { keys: '← ↑ → ↓', action: 'thrust: a tap nudges, a hold builds up (two at once: diagonal)', touch: 'hold, slide ← ↑ → ↓' },
-    { keys: 'Enter', action: 'next level / continue from this level', touch: 'tap the Level ▶ or Continue ↺ button', card: false },
+    { keys: 'Enter', action: 'next level / continue from this level', touch: 'Level ▶ / Continue ↺', card: false },
     {
       keys: 'F',
       action: 'predicted path on / off (red: falls in or lost, blue: reaches the line, grey: undecided)',
       touch: 'the Path button',
       card: false,
     },
-    { keys: 'V', action: 'replay the run from the start (a key or a tap leaves it)', touch: 'the Replay button', card: false },
+    { keys: 'V', action: 'replay this level from its start (a key or a tap leaves it)', touch: 'the Replay button', card: false },
   ],
   keys: [
     { key: 'Enter', label: 'next level / restart', action: () => advance() },
@@ -364,6 +366,7 @@ const game = await startPixiGame({
           return;
         }
         happeningBeforeReplay = happening;
+        shownHolesBeforeReplay = shownHoles.slice();
         replay.play();
         predictor = createPredictor(bh);
         updateStatus(true);
@@ -528,6 +531,8 @@ function advance(): void {
     game.shell.reset();
   } else if (run?.waiting) {
     replay.input('beginLevel');
+    // V replays this level from its start, not the run from level 1.
+    replay.restart();
     updateStatus(true);
     // The new level's holes are drawn in the next frame, paused or not (the status already counts them).
     game.drawNext();
@@ -596,6 +601,9 @@ window.addEventListener('keydown', (e) => {
 function leaveReplay(): void {
   replay.stop();
   happening = happeningBeforeReplay;
+  // The dimmed holes of a cleared level are the ones shown before the replay, not the replay's last.
+  shownHoles.length = 0;
+  shownHoles.push(...shownHolesBeforeReplay);
   predictor = createPredictor(bh);
   keysDown.clear();
   padPointers.clear();
@@ -714,6 +722,9 @@ body .bp-touch-hint { top: 6px; bottom: auto; }
   .bp-touchbar.bh-pad button[data-dir='up'] { grid-area: up; }
   .bp-touchbar.bh-pad button[data-dir='down'] { grid-area: down; }
   .bp-touchbar.bh-pad button[data-dir='right'] { grid-area: right; }
+  /* A held side arrow fills from the middle outwards as its push builds up (\`--bh-fill\`, set each frame). */
+  .bp-touchbar.bh-pad button.on[data-dir='right'] { background: linear-gradient(to right, #ffd166 var(--bh-fill, 0%), #c77d12 var(--bh-fill, 0%)); }
+  .bp-touchbar.bh-pad button.on[data-dir='left'] { background: linear-gradient(to left, #ffd166 var(--bh-fill, 0%), #c77d12 var(--bh-fill, 0%)); }
   /* Path and Replay (F, V) in a column at the pad's right, the pad centred in the rest of the row. */
   .bp-touchbar.bh-pad { flex: 1 1 0; padding-right: 0; }
   .bp-touchbar.bh-extras { flex: 0 0 auto; display: grid; grid-template-rows: 54px 54px; gap: 6px; padding: 2px 8px 4px 0; }
@@ -970,6 +981,21 @@ function updateStatus(force = false): void {
   // the thrust it plays.
   const lit = (replay.player ? bh.thrust : heldThrust(held.filter((d) => !tapEnds.has(d)))).split('-');
   for (const [i, dir] of DIRS.entries()) pad.setActive(i, lit.includes(dir));
+  // A lit side arrow fills from its inner edge as its push builds up: on a narrow field with a top
+  // sideways speed, the share of it the ship flies at along the arrow; else the engine's sideways
+  // share of full thrust. Full: nothing more to gain by holding.
+  const side = Math.sign(bh.thrustVec[0]);
+  const vx = bh.world.components.Velocity.x[slotOf(bh.ship)]!;
+  const built =
+    bh.params.sideSpeed < Infinity
+      ? (side === 0 ? 0 : side * vx) / bh.params.sideSpeed
+      : Math.abs(bh.thrustVec[0]) / (bh.params.thrust * bh.params.sideScale || 1);
+  for (const [i, dir] of DIRS.entries()) {
+    if (dir !== 'left' && dir !== 'right') continue;
+    const on = lit.includes(dir) && side === (dir === 'right' ? 1 : -1);
+    const fill = on ? Math.round(100 * Math.max(0, Math.min(1, built))) : 0;
+    pad.buttons[i]!.style.setProperty('--bh-fill', `${fill}%`);
+  }
 }
 
 // ---- Drawing --------------------------------------------------------------------------------------
@@ -1830,8 +1856,8 @@ app.stage.addChild(pauseLine);
 let pauseFit = '';
 
 /**
- * Shows `pauseLine` when `show`: its size fits the band above the finish line (at most 28 px, at
- * least 14, two thirds of the band's height) and the field's width; centred, or off a ship waiting in the band.
+ * Shows `pauseLine` when `show`: its size fits the band above the finish line (at most 24 px, its
+ * drawn height, outline included, 4 px less than the band's, down to 10 px) and the field's width; centred, or off a ship waiting in the band.
  */
 function drawPauseLine(show: boolean): void {
   pauseLine.visible = show;
@@ -1845,10 +1871,12 @@ function drawPauseLine(show: boolean): void {
   const fit = `${room}:${line - top}:${text}`;
   if (pauseFit !== fit) {
     pauseFit = fit;
-    let size = Math.max(14, Math.min(28, Math.floor((2 / 3) * (line - top))));
+    let size = Math.max(12, Math.min(24, Math.floor(0.6 * (line - top))));
     pauseLine.style.fontSize = size;
     if (pauseLine.width > room) size = Math.max(12, Math.floor((size * room) / pauseLine.width));
     pauseLine.style.fontSize = size;
+    // The words (and their outline) stay inside the band, clear of the finish line and the path under it.
+    while (size > 10 && pauseLine.height > line - top - 4) pauseLine.style.fontSize = --size;
   }
   // Between levels the ship waits past the line, in the band: the words then stand beside it, on the
   // roomier side, where they fit there, else just under the line (no play goes on there meanwhile).
@@ -1920,7 +1948,8 @@ function freeBand(end: number): [number, number] {
  * Puts the next-level / continue button (over the field, by the page's style) in the tallest band
  * across the field between the finish line and the start pad that no hole's drawing (disc and glow,
  * `holeExtents`) reaches, centred in it, so it covers no hole (after a game over the holes stay). Where
- * no band fits it, it stays where the style puts it. Checked every frame while the button shows.
+ * no band fits it, it stays where the style puts it. Between levels (no live hole) it sits just above
+ * the start pad instead, the same place on every level. Checked every frame while the button shows.
  */
 function placeActionButton(): void {
   const el = document.querySelector<HTMLElement>('.bp-touchbar.bp-action');
@@ -1931,10 +1960,16 @@ function placeActionButton(): void {
   const off = canvas.top - stage.top;
   // Down to the ship (on its way up), or, where it waits at the line after a clear, to the start pad.
   const above = lastShip[1]! >= bh.lineY - 1;
-  const [bestTop, best] = freeBand(
-    (above ? cam.toScreenY(0.9) : Math.min(cam.toScreenY(0.9), cam.toScreenY(lastShip[1]!))) - shipPx - ACTION_GAP,
-  );
+  const end = (above ? cam.toScreenY(0.9) : Math.min(cam.toScreenY(0.9), cam.toScreenY(lastShip[1]!))) - shipPx - ACTION_GAP;
   const h = el.offsetHeight;
+  // Between levels (no live hole) always in one place, just above the start pad, whatever the cleared
+  // level's dimmed holes: the button does not jump about from one level's end to the next.
+  if (bh.holes.length === 0 && run?.waiting && !bh.over) {
+    const want = `${Math.round(off + end - h)}px`;
+    if (el.style.top !== want) el.style.top = want;
+    return;
+  }
+  const [bestTop, best] = freeBand(end);
   const want = best >= h ? `${Math.round(off + bestTop + (best - h) / 2)}px` : '';
   if (el.style.top !== want) el.style.top = want;
 }

@@ -123,8 +123,14 @@ export function isIdle(game: BlackHoleGame, run: LevelRun | null): boolean {
 
 /** A game's recorder and player: `input` records (ignored while a replay plays), `step` steps live or plays back. */
 export interface BlackHoleReplay {
-  /** The recording since the game began. */
+  /** The recording since the game began or the last `restart` (a level's start). */
   readonly recorder: InputRecorder;
+  /**
+   * Starts a new recording from the state now (the one before is dropped), so V replays from here:
+   * called when a level begins, V replays the level being played (or just cleared), not the run from
+   * its first level. Ignored while a replay plays.
+   */
+  restart(): void;
   /** The replay being played, or null. */
   readonly player: ReplayPlayer | null;
   /** Gives an input (see replayOptions' handlers); ignored while a replay plays. */
@@ -147,7 +153,7 @@ export interface BlackHoleReplay {
 /** Starts recording `game` (and its level run) now. */
 export function createBlackHoleReplay(game: BlackHoleGame, run: LevelRun | null, onStep?: (event: GameStepEvent) => void): BlackHoleReplay {
   const options = replayOptions(game, run, onStep);
-  const recorder = createInputRecorder(game.world, options);
+  let recorder = createInputRecorder(game.world, options);
   let player: ReplayPlayer | null = null;
   /** The played recording's input steps, in order, and the index of the next not yet given. */
   let inputSteps: number[] = [],
@@ -165,7 +171,12 @@ export function createBlackHoleReplay(game: BlackHoleGame, run: LevelRun | null,
     present = null;
   };
   return {
-    recorder,
+    get recorder() {
+      return recorder;
+    },
+    restart() {
+      if (!player) recorder = createInputRecorder(game.world, options);
+    },
     get player() {
       return player;
     },

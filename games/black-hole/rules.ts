@@ -137,6 +137,15 @@ export const SOFT_WALL = Object.freeze({ width: 3, push: 14, damp: 3 });
  */
 export const NARROW_SIDE_SPEED = 3;
 
+/**
+ * The sideways kick a side arrow gives the ship the moment it is pressed on a field narrower than
+ * `FIELD` (a phone's), m/s: a tap there is a short press, whose thrust alone (built up at the narrow
+ * field's gentle `NARROW_SIDE_RAMP`) barely changed the course; with the kick a tap is a visible
+ * nudge of about 1 m/s, and a hold builds on from it to `NARROW_SIDE_SPEED`. The kick never takes the
+ * sideways speed along the arrow past the top speed (`BlackHoleOptions.sideSpeed`).
+ */
+export const SIDE_TAP_KICK = 0.7;
+
 /** The band of sideways speed, m/s, below the top one (`BlackHoleOptions.sideSpeed`) over which the engine's sideways push fades to 0. */
 export const SIDE_SPEED_FADE = 0.75;
 
@@ -270,6 +279,11 @@ export interface BlackHoleOptions {
    */
   sideSpeed?: number;
   /**
+   * The sideways speed, m/s, in [0, 3], a side arrow adds at once when its press begins (see
+   * SIDE_TAP_KICK and `stepBlackHole`). Default SIDE_TAP_KICK on a field narrower than `FIELD`, else 0.
+   */
+  sideKick?: number;
+  /**
    * Whether the ship waits parked on the start pad after each reset (the start of the game, a fall,
    * an exit, a crossing): held at rest there, the holes' pull ignored, until an arrow with a part
    * other than ↓ thrusts; the downward part of an arrow held meanwhile is dropped (`padThrust`), so ↓
@@ -324,6 +338,11 @@ export interface BlackHoleGame {
    * than ↓ thrusts); always false without `params.park`.
    */
   parked: boolean;
+  /**
+   * The sign of the sideways part of the thrust at the last step (-1 left, 0 none, 1 right): a step
+   * whose side differs from it, not 0, is a new side press, which kicks (`params.sideKick`).
+   */
+  side: number;
   /** Bumped whenever the holes change (layout, G, c), so copies (the predictor) know to resync. */
   version: number;
   /** Generator of the layouts. */
@@ -345,7 +364,21 @@ function check(cond: boolean, message: string): void {
  * @throws TypeError on an unknown option; RangeError naming the option and value when out of range.
  */
 export function resolveBlackHoleOptions(options: BlackHoleOptions = {}): BlackHoleParams {
-  const known = ['seed', 'holes', 'gScale', 'c', 'thrust', 'lives', 'sideRamp', 'sideScale', 'softWall', 'sideSpeed', 'park', 'field'];
+  const known = [
+    'seed',
+    'holes',
+    'gScale',
+    'c',
+    'thrust',
+    'lives',
+    'sideRamp',
+    'sideScale',
+    'softWall',
+    'sideSpeed',
+    'sideKick',
+    'park',
+    'field',
+  ];
   for (const k of Object.keys(options)) {
     if (!known.includes(k)) throw new TypeError(`black-hole: unknown option ${JSON.stringify(k)}; known options are ${known.join(', ')}`);
   }
@@ -362,6 +395,7 @@ export function resolveBlackHoleOptions(options: BlackHoleOptions = {}): BlackHo
     sideScale: options.sideScale ?? (narrow ? (1 + fieldWidth / FIELD.width) / 2 : 1),
     softWall: options.softWall ?? (narrow ? SOFT_WALL.width : 0),
     sideSpeed: options.sideSpeed ?? (narrow ? NARROW_SIDE_SPEED : Infinity),
+    sideKick: options.sideKick ?? (narrow ? SIDE_TAP_KICK : 0),
     park: options.park ?? false,
     field: { width: options.field?.width ?? FIELD.width, height: options.field?.height ?? FIELD.height },
   };
@@ -388,6 +422,7 @@ export function resolveBlackHoleOptions(options: BlackHoleOptions = {}): BlackHo
     `sideScale must be in [0.3, 1], got ${String(p.sideScale)}`,
   );
   check(typeof p.softWall === 'number' && p.softWall >= 0 && p.softWall <= 5, `softWall must be in [0, 5] m, got ${String(p.softWall)}`);
+  check(typeof p.sideKick === 'number' && p.sideKick >= 0 && p.sideKick <= 3, `sideKick must be in [0, 3] m/s, got ${String(p.sideKick)}`);
   check(typeof p.park === 'boolean', `park must be a boolean, got ${String(p.park)}`);
   check(typeof p.sideSpeed === 'number' && p.sideSpeed >= 1, `sideSpeed must be in [1, Infinity] m/s, got ${String(p.sideSpeed)}`);
   return p;
@@ -556,6 +591,7 @@ export function createBlackHoleGame(options: BlackHoleOptions = {}): BlackHoleGa
     crossings: 0,
     resets: 0,
     parked: p.park,
+    side: 0,
     version: 0,
     rng: new Rng(p.seed),
     field: p.field,
@@ -705,6 +741,7 @@ export function resetShip(game: BlackHoleGame): void {
   game.thrustVec[0] = game.thrustVec[1] = 0;
   game.resets++;
   game.parked = game.params.park;
+  game.side = 0;
 }
 
 /**
@@ -747,6 +784,17 @@ export function stepBlackHole(game: BlackHoleGame): BlackHoleEvent {
     if (t !== game.thrust) setThrust(game, t);
     if (t !== 'none') game.parked = false;
   }
+  // A new side press (the thrust's side changed to left or right) kicks the ship that way at once,
+  // up to the top sideways speed.
+  const side = Math.sign(THRUST_DIRECTION[game.thrust][0]);
+  if (side !== 0 && side !== game.side && !game.parked && !game.over && game.params.sideKick > 0) {
+    const V = world.components.Velocity,
+      s = slotOf(game.ship);
+    const along = side * V.x[s]!;
+    const kicked = Math.min(along + game.params.sideKick, game.params.sideSpeed);
+    if (kicked > along) V.x[s] = side * kicked;
+  }
+  game.side = side;
   step(world);
   swallowParticles(game);
   const ship = game.ship;

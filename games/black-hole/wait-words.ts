@@ -29,7 +29,8 @@ export interface WaitContext {
 export function waitWords(happening: ShipHappening, ctx: WaitContext): string {
   if (!(Number.isInteger(ctx.lives) && ctx.lives >= 0 && ctx.lives <= 99))
     throw new RangeError(`waitWords: ctx.lives must be an integer in [0, 99], got ${String(ctx.lives)}`);
-  const go = ctx.touch ? 'Tap an arrow to fly on' : 'Press an arrow to fly on';
+  // ↓ alone on the start pad does nothing (./rules.ts `padThrust`): the words name the arrows that launch.
+  const go = ctx.touch ? 'Tap ↑, ← or → to fly on' : 'Press ↑, ← or → to fly on';
   switch (happening) {
     case 'over':
       return 'Swallowed!\nGame over';
@@ -65,7 +66,7 @@ export function pausedWords(words: string, pauseText: string): string {
   if (words === '' || pauseText === '') return words;
   const pause = pauseText.split('\n').join(': ');
   const lines = words.split('\n');
-  if (/ an arrow to fly on$/.test(lines[lines.length - 1]!)) lines.pop();
+  if (/ to fly on$/.test(lines[lines.length - 1]!)) lines.pop();
   return [...lines, pause].join('\n');
 }
 

@@ -99,7 +99,7 @@ describe('black hole', () => {
     }, null);
     expect(death.count).toBe(1);
     // The words stay while the new ship waits parked for the player's thrust, and say so.
-    expect(death.text).toMatch(/^Swallowed!\nPractice: no life lost\n(Press|Tap) an arrow to fly on$/);
+    expect(death.text).toMatch(/^Swallowed!\nPractice: no life lost\n(Press|Tap) ↑, ← or → to fly on$/);
     // While the words of the fall show, the path's label is not drawn under them.
     const shown = await g.waitFor(() => {
       const w = window.game as unknown as BlackHolePage;
@@ -796,7 +796,7 @@ describe.each([
     // The legend names the on-screen controls, not "the big button".
     const legend = await p.page.locator('.bp-legend').textContent();
     expect(legend).not.toContain('big button');
-    if (touch) expect(legend).toContain('Level ▶ or Continue ↺ button');
+    if (touch) expect(legend).toContain('Level ▶ / Continue ↺');
     // A tap of ↑ (a finger's tap, or a key pressed and let go at once) thrusts for exactly 15 steps
     // (TAP_STEPS) of the game: the run's recording (V replays it) holds the thrust 'up' and, 15 steps
     // later, 'none' (a finger's tap thrust for no step at all; a key's for as many steps as the frames
@@ -1289,6 +1289,130 @@ describe('black hole, a stranger on a phone (issue 34)', () => {
     expect(seen.message).not.toMatch(/Lost/);
     expect(p.errors).toEqual([]);
     await cdp.detach();
+    await p.close();
+  }, 120_000);
+});
+
+describe('black hole, two fingers on the pad (issue 34)', () => {
+  type Two = { bh: { thrust: string }; paused: boolean };
+  /** The arrows lit on the pad now. */
+  const lit = (): string[] => [...document.querySelectorAll<HTMLElement>('.bh-pad button.on')].map((b) => b.dataset.dir!).sort();
+  for (const side of ['right', 'left'] as const)
+    it(`finger 1 on ↑, finger 2 on ${side === 'right' ? '→' : '←'}: lifting finger 2 leaves ↑ held and lit, lifting finger 1 leaves ${side}`, async () => {
+      const p = await h.openGame('black-hole', { viewport: { width: 390, height: 844 }, touch: true, query: { level: 1 } });
+      const mid = async (d: string) => {
+        const b = (await p.page.getByRole('button', { name: `thrust ${d}`, exact: true }).boundingBox())!;
+        return { x: b.x + b.width / 2, y: b.y + b.height / 2 };
+      };
+      const f1 = { ...(await mid('up')), id: 1 },
+        f2 = { ...(await mid(side)), id: 2 };
+      // What the browser says each lift was, read from its own touchend events (independent of the game).
+      await p.page.evaluate(() => {
+        const ends: { changed: number[]; still: number[] }[] = [];
+        (window as unknown as { ends: typeof ends }).ends = ends;
+        window.addEventListener('touchend', (e) =>
+          ends.push({ changed: [...e.changedTouches].map((t) => t.identifier), still: [...e.touches].map((t) => t.identifier) }),
+        );
+      });
+      const ends = () => p.page.evaluate(() => (window as unknown as { ends: { changed: number[]; still: number[] }[] }).ends);
+      const cdp = await p.page.context().newCDPSession(p.page);
+      await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: [f1] });
+      await p.waitFor(() => (window.game as unknown as Two).bh.thrust === 'up', null);
+      // Paused, so the ship stays on the field while the fingers come and go (the pad works paused).
+      await p.page.evaluate(() => {
+        (window.game as unknown as Two).paused = true;
+      });
+      await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: [f1, f2] });
+      await p.waitFor((s) => (window.game as unknown as Two).bh.thrust === `up-${s}`, side);
+      await p.page.waitForTimeout(200);
+      // Lifting finger 2 only (CDP's touchEnd lifts the points it lists; finger 1 stays down).
+      await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [f2] });
+      await p.waitFor(() => (window as unknown as { ends: unknown[] }).ends.length === 1 || null, null);
+      expect(await ends()).toEqual([{ changed: [2], still: [1] }]);
+      await p.waitFor(() => (window.game as unknown as Two).bh.thrust === 'up', null, 3000).catch(() => {});
+      expect(await p.page.evaluate(() => (window.game as unknown as Two).bh.thrust)).toBe('up');
+      expect(await p.page.evaluate(lit)).toEqual(['up']);
+      // Finger 2 back on the side arrow, then finger 1 lifted: the side arrow alone is held and lit.
+      await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: [f1, f2] });
+      await p.waitFor((s) => (window.game as unknown as Two).bh.thrust === `up-${s}`, side);
+      await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [f1] });
+      await p.waitFor(() => (window as unknown as { ends: unknown[] }).ends.length === 2 || null, null);
+      expect((await ends())[1]).toEqual({ changed: [1], still: [2] });
+      await p.waitFor((s) => (window.game as unknown as Two).bh.thrust === s, side, 3000).catch(() => {});
+      expect(await p.page.evaluate(() => (window.game as unknown as Two).bh.thrust)).toBe(side);
+      expect(await p.page.evaluate(lit)).toEqual([side]);
+      await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
+      await p.waitFor(() => (window.game as unknown as Two).bh.thrust === 'none', null);
+      expect(await p.page.evaluate(lit)).toEqual([]);
+      expect(p.errors).toEqual([]);
+      await cdp.detach();
+      await p.close();
+    }, 120_000);
+});
+
+describe('black hole, the replay of a level (issue 34)', () => {
+  it('V after clearing level 2 replays level 2 (not the run from level 1); leaving it shows level 2’s dimmed holes and the Level 3 button again, where the Level 2 button stood', async () => {
+    type Rp = {
+      paused: boolean;
+      step(): void;
+      advance(): void;
+      ghostExtents(): number[][];
+      bh: { ship: number; lineY: number; holes: number[]; world: { components: Record<string, { x: Float64Array; y: Float64Array }> } };
+      level: { waiting: boolean; parked: boolean; spec: { level: number } };
+      replay: { player: unknown };
+    };
+    const p = await h.openGame('black-hole', { viewport: { width: 1280, height: 800 }, query: { level: 1 } });
+    /** Flies ↑ for 20 steps (recorded input), then puts the ship over the line: the next steps clear the level. */
+    const clear = () =>
+      p.page.evaluate(() => {
+        const w = window.game as unknown as Rp;
+        w.paused = true;
+        const levelHoles = w.bh.holes.length;
+        window.dispatchEvent(new KeyboardEvent('keydown', { key: 'ArrowUp' }));
+        for (let i = 0; i < 20; i++) w.step();
+        window.dispatchEvent(new KeyboardEvent('keyup', { key: 'ArrowUp' }));
+        w.bh.world.components.Position!.y[w.bh.ship % 2 ** 25] = w.bh.lineY + 0.3;
+        for (let i = 0; i < 40 && !w.level.waiting; i++) w.step();
+        return { waiting: w.level.waiting, next: w.level.spec.level, levelHoles };
+      });
+    expect(await clear()).toMatchObject({ waiting: true, next: 2, levelHoles: 1 });
+    // The next-level button stands in one place at every level's end (it moved with the dimmed holes).
+    const button = async (name: string) => {
+      const b = p.page.getByRole('button', { name });
+      await b.waitFor({ state: 'visible' });
+      await p.frames(3);
+      return (await b.boundingBox())!;
+    };
+    const after1 = await button('Level 2 ▶');
+    await p.page.evaluate(() => (window.game as unknown as Rp).advance());
+    const two = await clear();
+    expect(two).toMatchObject({ waiting: true, next: 3 });
+    expect(two.levelHoles).toBeGreaterThan(5);
+    await p.frames(2);
+    const ghosts = await p.page.evaluate(() => (window.game as unknown as Rp).ghostExtents());
+    expect(ghosts.length).toBe(two.levelHoles);
+    const after2 = await button('Level 3 ▶');
+    expect(Math.abs(after2.y - after1.y)).toBeLessThan(1);
+    expect(Math.abs(after2.x - after1.x)).toBeLessThan(1);
+    await p.page.keyboard.press('v');
+    // The replay starts at level 2's start: level 2's wall of holes, not level 1's one hole.
+    const first = await p.waitFor(() => {
+      const w = window.game as unknown as Rp;
+      return w.replay.player ? { level: w.level.spec.level, holes: w.bh.holes.length, waiting: w.level.waiting } : null;
+    }, null);
+    expect(first).toEqual({ level: 2, holes: two.levelHoles, waiting: false });
+    // Left while it plays (paused, the game stays where it is: the clears were made by moving the
+    // ship, not by recorded inputs, so the replay played to its end would not clear level 2).
+    await p.page.keyboard.press('a');
+    await p.waitFor(() => (window.game as unknown as Rp).replay.player === null || null, null);
+    await p.frames(3);
+    // Back where the run was: level 3 next, its button shown, level 2's holes dimmed where they were.
+    expect(
+      await p.page.evaluate(() => [(window.game as unknown as Rp).level.waiting, (window.game as unknown as Rp).level.spec.level]),
+    ).toEqual([true, 3]);
+    expect(await p.page.evaluate(() => (window.game as unknown as Rp).ghostExtents())).toEqual(ghosts);
+    expect(Math.abs((await button('Level 3 ▶')).y - after1.y)).toBeLessThan(1);
+    expect(p.errors).toEqual([]);
     await p.close();
   }, 120_000);
 });

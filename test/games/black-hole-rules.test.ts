@@ -30,6 +30,7 @@ import {
   resolveBlackHoleOptions,
   restart,
   SHIP_RADIUS,
+  SIDE_TAP_KICK,
   SOFT_WALL,
   START,
   schwarzschildMass,
@@ -377,12 +378,13 @@ describe('thrust, exhaust, prediction', () => {
     expect(() => createBlackHoleGame({ sideRamp: 0.1 })).toThrow(/sideRamp must be in \[0.4, 2\] s, got 0.1/);
   });
 
-  test('a narrow field (a phone’s) builds its sideways thrust over NARROW_SIDE_RAMP s: a 0.5 s hold of → is a small nudge', () => {
+  test('a narrow field (a phone’s) builds its sideways thrust over NARROW_SIDE_RAMP s, after the press’s SIDE_TAP_KICK', () => {
     // A 0.5 s (30-step) hold of → from rest, then let go until the engine has died away. On a field
     // narrower than FIELD the x part grows at 6 / NARROW_SIDE_RAMP m/s^3 (under the engine's own
     // rates), so at the let-go it is 6 x 0.5 / 0.9 = 3.33 m/s^2 and the speed gained 6 / 0.9 x 0.5^2 / 2
     // = 0.83 m/s, and dying away at 6 / THRUST_RAMP.down m/s^3 it adds 3.33^2 / (2 x 60) = 0.09 m/s;
     // on FIELD the same hold gains rampGain(6, 0.5) = 1.68 m/s and 0.3 m/s more dying away from 6.
+    // The narrow field's press also kicks the ship SIDE_TAP_KICK sideways at once; the wide one's does not.
     const hold = (field: { width: number; height: number }, dir: 'right' | 'up', sideRamp?: number) => {
       const h = createBlackHoleGame({ seed: 6, holes: 1, thrust: 6, field, ...(sideRamp ? { sideRamp } : {}) });
       const V = h.world.components.Velocity;
@@ -397,14 +399,54 @@ describe('thrust, exhaust, prediction', () => {
     const [ramp, narrow] = hold(phone, 'right');
     expect(ramp).toBe(NARROW_SIDE_RAMP);
     const a = (6 * 0.5) / NARROW_SIDE_RAMP;
-    expect(Math.abs(narrow! - (a * 0.5) / 2 - a ** 2 / (2 * (6 / THRUST_RAMP.down)))).toBeLessThan(0.05);
+    expect(Math.abs(narrow! - SIDE_TAP_KICK - (a * 0.5) / 2 - a ** 2 / (2 * (6 / THRUST_RAMP.down)))).toBeLessThan(0.05);
     const [wideRamp, wide] = hold(FIELD, 'right');
     expect(wideRamp).toBe(THRUST_RAMP.up);
     expect(Math.abs(wide! - rampGain(6, 0.5) - (6 * THRUST_RAMP.down) / 2)).toBeLessThan(0.1);
-    expect(narrow!).toBeLessThan(0.5 * wide!);
+    expect(narrow! - SIDE_TAP_KICK).toBeLessThan(0.5 * wide!);
     // Up is not sideways: on the narrow field the same with its default and with the wide field's
     // engine given (sideRamp given wins over the field's default).
     expect(hold(phone, 'up', THRUST_RAMP.up)).toEqual([THRUST_RAMP.up, hold(phone, 'up')[1]]);
+  });
+
+  test('a narrow field’s side press is proportional: a tap nudges 0.8-1 m/s, longer holds build up to NARROW_SIDE_SPEED; the wide field has no kick', () => {
+    // Mid-field, out of the holes' reach, a press of → held n steps (a finger's tap is at least the
+    // page's 15, ./press-timing.ts TAP_STEPS), then let go for 0.5 s: the sideways speed gained. It is
+    // the kick (SIDE_TAP_KICK, at once) plus the ramped thrust's gain, never above the top speed.
+    const gain = (field: { width: number; height: number }, n: number) => {
+      const h = createBlackHoleGame({ seed: 6, holes: 1, thrust: 6, field });
+      for (const hole of h.holes) setPosition(h.world, hole, [1000, 1000]);
+      setPosition(h.world, h.ship, [field.width / 2, 10]);
+      const V = h.world.components.Velocity;
+      setThrust(h, 'right');
+      for (let i = 0; i < n; i++) stepBlackHole(h);
+      setThrust(h, 'none');
+      for (let i = 0; i < 30; i++) stepBlackHole(h);
+      return V.x[slotOf(h.ship)]!;
+    };
+    const phone = { width: 20, height: 30 };
+    const [tap, third, hold, long] = [15, 18, 36, 60].map((n) => gain(phone, n));
+    // The 15-step ramp alone (the wide field's engine less its kick) gives 0.25 m/s; the kick brings a tap to 0.8-1 m/s.
+    expect(tap).toBeGreaterThanOrEqual(0.8);
+    expect(tap).toBeLessThanOrEqual(1);
+    expect(tap! - SIDE_TAP_KICK).toBeLessThan(0.35);
+    // Each longer hold gains more, by at least 0.1 m/s, up to the top speed (within its fade band).
+    expect(third! - tap!).toBeGreaterThan(0.05);
+    expect(hold! - third!).toBeGreaterThan(0.5);
+    expect(long! - hold!).toBeGreaterThan(0.5);
+    expect(long!).toBeLessThanOrEqual(NARROW_SIDE_SPEED + 0.05);
+    // The kick never passes the top speed: already flying right at it, a new press of → adds nothing at once.
+    const h = createBlackHoleGame({ seed: 6, holes: 1, field: phone });
+    for (const hole of h.holes) setPosition(h.world, hole, [1000, 1000]);
+    setPosition(h.world, h.ship, [10, 10]);
+    setVelocity(h.world, h.ship, [NARROW_SIDE_SPEED, 0]);
+    setThrust(h, 'right');
+    stepBlackHole(h);
+    expect(h.world.components.Velocity.x[slotOf(h.ship)]!).toBeLessThanOrEqual(NARROW_SIDE_SPEED + 1e-5);
+    // The wide field: no kick, a 15-step tap gains the ramp's few tenths.
+    expect(gain(FIELD, 15)).toBeLessThan(0.5);
+    expect(createBlackHoleGame({ field: FIELD }).params.sideKick).toBe(0);
+    expect(() => createBlackHoleGame({ sideKick: 4 })).toThrow(/sideKick must be in \[0, 3\] m\/s, got 4/);
   });
 
   test("a narrow field's soft side walls turn a coasting ship back within the bound its energy sets; a held arrow still leaves; the wide field has none", () => {

@@ -24,8 +24,8 @@ describe('black hole wait words', () => {
     let e = '';
     for (let k = 0; k < 600 && e !== 'fell'; k++) last = nextHappening(last, (e = stepLevel(g, run)));
     expect(e).toBe('fell');
-    expect(words()).toBe('Swallowed!\nPractice: no life lost\nPress an arrow to fly on');
-    expect(words(true)).toBe('Swallowed!\nPractice: no life lost\nTap an arrow to fly on');
+    expect(words()).toBe('Swallowed!\nPractice: no life lost\nPress ↑, ← or → to fly on');
+    expect(words(true)).toBe('Swallowed!\nPractice: no life lost\nTap ↑, ← or → to fly on');
     // The ship set just under the line, climbing: the level is cleared; the next begins. No fall words.
     setThrust(g, 'none');
     run.parked = false;
@@ -44,18 +44,18 @@ describe('black hole wait words', () => {
     setVelocity(g.world, g.ship, [-2, 0]);
     last = nextHappening(last, (e = stepLevel(g, run)));
     expect(e).toBe('lost');
-    expect(words()).toBe('Lost in space!\nBack to the start, no life lost\nPress an arrow to fly on');
+    expect(words()).toBe('Lost in space!\nBack to the start, no life lost\nPress ↑, ← or → to fly on');
     // A fall on level 2 costs a life, and says how many are left.
     run.parked = false;
     setThrust(g, 'up');
     for (let k = 0; k < 1200 && e !== 'fell'; k++) last = nextHappening(last, (e = stepLevel(g, run)));
     expect(e).toBe('fell');
     expect(g.lives).toBe(2);
-    expect(words()).toBe('Swallowed!\n2 lives left\nPress an arrow to fly on');
+    expect(words()).toBe('Swallowed!\n2 lives left\nPress ↑, ← or → to fly on');
   });
 
   test('paused, the last line says how to resume (one message, not two stacked)', () => {
-    expect(pausedWords('Swallowed!\n1 life left\nTap an arrow to fly on', 'Paused\n▶ to resume')).toBe(
+    expect(pausedWords('Swallowed!\n1 life left\nTap ↑, ← or → to fly on', 'Paused\n▶ to resume')).toBe(
       'Swallowed!\n1 life left\nPaused: ▶ to resume',
     );
     expect(pausedWords('Swallowed!\nGame over', 'Paused\nP to resume')).toBe('Swallowed!\nGame over\nPaused: P to resume');
