@@ -366,7 +366,11 @@ describe('levels', () => {
             expect(i, `seed ${seed} ${t}`).toBe(n - 1);
             break;
           }
-          expect([P.x[slotOf(g.ship)], P.y[slotOf(g.ship)]], `seed ${seed} ${t} step ${i}`).toEqual([out[2 * i], out[2 * i + 1]]);
+          // Within 1e-9 m: the copy sums the holes' pulls in its own order, so the two paths may part by
+          // a rounding (1e-15 m seen); a copy whose holes stood still parts by millimetres in a second.
+          const dx = Math.abs(P.x[slotOf(g.ship)]! - out[2 * i]!),
+            dy = Math.abs(P.y[slotOf(g.ship)]! - out[2 * i + 1]!);
+          expect(Math.max(dx, dy), `seed ${seed} ${t} step ${i}`).toBeLessThan(1e-9);
           compared++;
         }
         const x = out[2 * n - 2]!,
