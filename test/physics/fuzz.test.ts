@@ -264,7 +264,7 @@ describe('fuzz: random programs of API calls and steps (fast-check)', () => {
     expect(stats.refused).toBeGreaterThan(500);
     expect(stats.calls - stats.refused).toBeGreaterThan(500);
     expect(stats.steps).toBeGreaterThan(500);
-  });
+  }, 180_000);
 
   test('createPhysicsWorld with any options returns a world or throws a documented error naming it', () => {
     const anyOptions = options({
