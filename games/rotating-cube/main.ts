@@ -719,11 +719,12 @@ const pop = document.createElement('div');
 pop.dataset.hud = 'pad-pop';
 pop.setAttribute('aria-live', 'polite');
 // Over the face net and the rules card (z-index 5), and on a phone below them (they fill the stage's
-// top there); a long line (the round's end) wraps inside the stage.
+// top there); a long line wraps inside the stage and the screen (on a phone the stage may be
+// wider than the screen), and its pop-in swells it only a little so the swell stays on screen too.
 pop.style.cssText =
   `position: absolute; left: 50%; top: ${pageLayout().touch() ? '48%' : '22%'}; transform: translate(-50%, -50%); pointer-events: none; opacity: 0;` +
   'font: 700 clamp(18px, 5.5vw, 28px) system-ui, sans-serif; color: #ffe27a; text-shadow: 0 2px 6px #000, 0 0 2px #000; text-align: center;' +
-  'z-index: 5; width: max-content; max-width: calc(100% - 24px); transition: opacity 0.25s, transform 0.9s ease-out;' +
+  'z-index: 5; width: max-content; max-width: min(calc(100% - 24px), calc(100vw - 24px)); box-sizing: border-box; overflow-wrap: break-word; transition: opacity 0.25s, transform 0.9s ease-out;' +
   // On a dark plate: over the room's pale back wall the yellow alone read faint (contrast under 2:1).
   'background: rgba(10, 15, 30, 0.88); padding: 4px 14px; border-radius: 10px';
 {
@@ -741,7 +742,7 @@ function showPop(text: string, ms = 1100, color = '#ffe27a'): void {
   pop.style.color = color;
   pop.style.transition = 'none';
   pop.style.opacity = '1';
-  pop.style.transform = 'translate(-50%, -50%) scale(1.15)';
+  pop.style.transform = 'translate(-50%, -50%) scale(1.04)';
   void pop.offsetWidth;
   pop.style.transition = 'opacity 0.4s, transform 0.9s ease-out';
   pop.style.transform = 'translate(-50%, -90%) scale(1)';
