@@ -1199,12 +1199,18 @@ function lanternBoxes(all: boolean): [number, number, number, number][] {
   }
   return out;
 }
+/** Font size of the pause's words, CSS px: small, as they sit in a band at the sky's top. */
+const PAUSE_FONT = 26;
+/** Font size of the pause's words on a touch screen, CSS px. */
+const PAUSE_FONT_TOUCH = 20;
+/** Gap between the pause's words and the sky's top edge, CSS px. */
+const PAUSE_BAND_GAP = 12;
 /**
  * Over the sky while the player has paused: the sky dimmed, "Paused" and how to go on (P, or the ▶
  * button on a touch screen). A tap or click on the paused sky leaves it paused and launches nothing;
  * it is answered by the words pulsing (PAUSE_PULSE_MS) and the toolbar's ▶ button lighting up.
  */
-const pause = createPauseOverlay();
+const pause = createPauseOverlay({ fontSize: touch ? PAUSE_FONT_TOUCH : PAUSE_FONT });
 app.stage.addChild(pause.container);
 /** How long the pause's words pulse after a press on the paused sky, ms. */
 const PAUSE_PULSE_MS = 450;
@@ -1220,6 +1226,11 @@ const pauseButton = document.querySelector<HTMLButtonElement>('button[aria-label
 function drawPause(): void {
   const cam = renderer.camera;
   pause.draw(shell.paused && playerPaused, cam.width, cam.height, touch);
+  // The words in a band at the sky's top, not in its middle: a player pauses to study the drifting
+  // lanterns and their ghosts, which fill the sky below (two lines of about 1.25 font sizes each;
+  // the sky's foot holds the tap hint on a phone).
+  const fontSize = touch ? PAUSE_FONT_TOUCH : PAUSE_FONT;
+  pause.words.position.set(cam.width / 2, PAUSE_BAND_GAP + 1.25 * fontSize);
   // The pulse: the words grow and shrink back over PAUSE_PULSE_MS (half a sine), the ▶ button outlined meanwhile.
   const t = (performance.now() - pausePressedAt) / PAUSE_PULSE_MS;
   const pulsing = pause.visible && t >= 0 && t < 1;

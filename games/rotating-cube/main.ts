@@ -719,11 +719,12 @@ const pop = document.createElement('div');
 pop.dataset.hud = 'pad-pop';
 pop.setAttribute('aria-live', 'polite');
 // Over the face net and the rules card (z-index 5), and on a phone below them (they fill the stage's
-// top there); a long line (the round's end) wraps inside the stage.
+// top there); a long line wraps inside the stage and the screen (on a phone the stage may be
+// wider than the screen), and its pop-in swells it only a little so the swell stays on screen too.
 pop.style.cssText =
   `position: absolute; left: 50%; top: ${pageLayout().touch() ? '48%' : '22%'}; transform: translate(-50%, -50%); pointer-events: none; opacity: 0;` +
   'font: 700 clamp(18px, 5.5vw, 28px) system-ui, sans-serif; color: #ffe27a; text-shadow: 0 2px 6px #000, 0 0 2px #000; text-align: center;' +
-  'z-index: 5; width: max-content; max-width: calc(100% - 24px); transition: opacity 0.25s, transform 0.9s ease-out;' +
+  'z-index: 5; width: max-content; max-width: min(calc(100% - 24px), calc(100vw - 24px)); box-sizing: border-box; overflow-wrap: break-word; transition: opacity 0.25s, transform 0.9s ease-out;' +
   // On a dark plate: over the room's pale back wall the yellow alone read faint (contrast under 2:1).
   'background: rgba(10, 15, 30, 0.88); padding: 4px 14px; border-radius: 10px';
 {
@@ -741,7 +742,7 @@ function showPop(text: string, ms = 1100, color = '#ffe27a'): void {
   pop.style.color = color;
   pop.style.transition = 'none';
   pop.style.opacity = '1';
-  pop.style.transform = 'translate(-50%, -50%) scale(1.15)';
+  pop.style.transform = 'translate(-50%, -50%) scale(1.04)';
   void pop.offsetWidth;
   pop.style.transition = 'opacity 0.4s, transform 0.9s ease-out';
   pop.style.transform = 'translate(-50%, -90%) scale(1)';
@@ -765,7 +766,13 @@ function sayBlocked(): void {
   blockedSaid = why;
   const want = FACE_NAMES[layout.faces[pads.pad] ?? -1];
   if (why === 'face' && want) showPop(`✗ This pad needs ${want} on top`, 1800, '#ffb4a8');
-  else if (why === 'slide') showPop(`✗ Slid on: roll onto it to count`, 1800, '#ffb4a8');
+  else if (why === 'slide') showPop(slidOnWords(), 2200, '#ffb4a8');
+}
+
+/** What the pop says when a slide rests the cube on a pad that takes only a roll on. */
+function slidOnWords(): string {
+  const roll = pageLayout().touch() ? '▲◀▼▶' : 'W A S D';
+  return `✗ Slides don't take this pad: roll onto it (${roll})`;
 }
 
 /** Celebrates the pads reached (chime, burst ring, pop) and the free-spin targets reached (chime, pop) since the last frame. */
@@ -1390,6 +1397,20 @@ function pushCube(p: Push): void {
   pads.start(shell.world.time);
   // A slide keeps the top face: the next pad that wants a face must be rolled onto after it.
   pads.slid();
+  // A slide aimed at the lit pad with the face it wants on top: say at once that only a roll takes it.
+  const spot = layout.pads[pads.pad],
+    want = layout.faces[pads.pad] ?? -1;
+  if (
+    !pads.done &&
+    spot &&
+    want >= 0 &&
+    topFace(shell.world, e) === want &&
+    Math.abs(p.x - spot[0]) < 0.5 &&
+    Math.abs(p.z - spot[1]) < 0.5
+  ) {
+    showPop(slidOnWords(), 2200, '#ffb4a8');
+    blockedSaid = 'slide';
+  }
   applyImpulse(shell.world, e, [m * (p.dx * p.speed - c.Velocity.x[e]!), 0, m * (p.dz * p.speed - c.Velocity.z[e]!)]);
   lastPush = { ...p };
   tappedCell[0] = hoverCell[0];
@@ -1585,10 +1606,12 @@ function routeHint(): string {
   return `Stuck? A shortest way from here: ${words.join(' ')}`;
 }
 
+/** The fewest moves left with the cube slid onto the lit pad, the wanted face on top: a roll off and the roll back on. */
+const SLID_ON_MOVES = 2;
 /**
  * Room mode: while the cube rests flat and still (scene.ts `cubeStill`), counts the moves left on the
- * lit pad from there (scene.ts `padMovePar`) into `toGo`; a new pad lit forgets the last count (a
- * trend across two pads would mean nothing).
+ * lit pad from there (scene.ts `padMovePar`, or SLID_ON_MOVES when slid on) into `toGo`; a new pad lit
+ * forgets the last count (a trend across two pads would mean nothing).
  */
 function readToGo(): void {
   if (pads.done) return;
@@ -1598,7 +1621,9 @@ function readToGo(): void {
   }
   const e = handles.body;
   if (!cubeStill(shell.world, e) || shell.world.components.Position.y[e]! > 0.55) return;
-  toGo.update(padMovePar(shell.world, e, layout, pads.pad));
+  // Slid onto a pad that wants a face, with that face on top: the grid route sees it as there (0),
+  // but only a roll on counts, and the fewest moves are a roll off and the same roll back.
+  toGo.update(pads.blocked === 'slide' ? SLID_ON_MOVES : padMovePar(shell.world, e, layout, pads.pad));
 }
 
 /** The lit pad the status row last showed (-1 before any). */
@@ -1874,8 +1899,8 @@ function showRules(): void {
   );
   const three = `${stars(3)}: par + ${PAR_SLACK[0]} moves or fewer.`;
   rulesText.textContent = touch
-    ? `Land on the pads in turn. From pad 2, ROLL on with the chip's colour on top (a slide keeps the top face); from pad 3 slides stop at the tiles. Every slide, roll and turn is a move; "moves to go" counts the fewest left. The clock runs only while the cube is still. ${three}`
-    : `Land on the pads in turn. From pad 2, ROLL on (W A S D) with the chip's colour on top: a slide keeps the top face. From pad 3 slides stop at the tiles round the pad, so the route across them decides the face: the net at the left shows what each roll brings up, and "moves to go" counts the fewest left. Every slide, roll and quarter turn (Q E) is a move. The clock runs only while the cube is still. ${three}`;
+    ? `Land on the pads in turn. From pad 2, ROLL on with the chip's colour on top (a slide keeps the top face); from pad 3 slides stop at the tiles. Every slide, roll and turn is a move; "best: N more moves" counts the fewest left. The clock runs only while the cube is still. ${three}`
+    : `Land on the pads in turn. From pad 2, ROLL on (W A S D) with the chip's colour on top: a slide keeps the top face. From pad 3 slides stop at the tiles round the pad, so the route across them decides the face: the net at the left shows what each roll brings up, and "best: N more moves" counts the fewest left. Every slide, roll and quarter turn (Q E) is a move. The clock runs only while the cube is still. ${three}`;
   hideRules();
   markChips();
 }

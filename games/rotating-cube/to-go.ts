@@ -36,12 +36,13 @@ export class ToGoMeter {
     return true;
   }
   /**
-   * The indicator in words (no arrows: on a phone ▲ and ▼ are the roll buttons): "3 moves to go ·
-   * closer", "1 move to go", or '' with no count; `short` (a phone's narrow status row): "3 to go, closer".
+   * The indicator in words (no arrows: on a phone ▲ and ▼ are the roll buttons), worded as the best
+   * case, not a budget: "best: 3 more moves · closer", "best: 1 more move", or '' with no count;
+   * `short` (a phone's narrow status row): "best 3 more, closer".
    */
   text(short = false): string {
     if (this.toGo < 0) return '';
-    const moves = short ? `${this.toGo} to go` : `${this.toGo} move${this.toGo === 1 ? '' : 's'} to go`;
+    const moves = short ? `best ${this.toGo} more` : `best: ${this.toGo} more move${this.toGo === 1 ? '' : 's'}`;
     return this.trend === '' ? moves : `${moves}${short ? ',' : ' ·'} ${this.trend}`;
   }
 }

@@ -959,6 +959,59 @@ describe('3D rigid-body games in headless Chromium', () => {
       expect(await g.page.evaluate(() => (window.game as unknown as Game).challenge().pad)).toBe(1);
       expect(g.errors).toEqual([]);
     });
+
+    it('rotating-cube (room): slid back onto pad 2 with the wanted face up, the pop says at once to roll on and the count reads 2, a roll off and back on, which takes the pad', async () => {
+      const g = cube();
+      await waitCubeAtRest(g);
+      type Game = {
+        challenge(): { pad: number; pads: number[][]; halves: number[]; faces: number[]; face: number };
+        padState(): { blocked: string };
+        pop(): { text: string; count: number };
+        faceNet(): Record<string, string>;
+      };
+      const names = ['red', 'yellow', 'green', 'purple', 'blue', 'white'];
+      const { pads, halves, faces } = await g.page.evaluate(() => (window.game as unknown as Game).challenge());
+      const [x0, z0] = pads[0]!;
+      await placeCube(g, x0! - Math.sign(x0!) * (halves[0]! - 0.1), z0!, 2);
+      await g.waitFor(() => (window.game as unknown as Game).challenge().pad === 1, null, 60_000);
+      await waitCubeAtRest(g);
+      const blockedIs = (want: string) =>
+        g.waitFor((w) => ((window.game as unknown as Game).padState().blocked === w ? true : null), want, 60_000);
+      // Slid onto pad 2 with another face up than it wants: blocked for the face (the repro's start).
+      const [x1, z1] = pads[1]!;
+      await g.page.mouse.click(...(Object.values(await stillPageOf(g, x1!, 0, z1!)) as [number, number]));
+      await blockedIs('face');
+      await waitCubeAtRest(g);
+      // A real roll off the pad that brings the wanted face up (the face net names it).
+      const want = names[faces[1]!]!;
+      const net = await g.page.evaluate(() => (window.game as unknown as Game).faceNet());
+      const key = (['w', 'a', 's', 'd'] as const).find((k) => net[k] === want)!;
+      expect(key, `a roll key brings ${want} up: ${JSON.stringify(net)}`).toBeDefined();
+      await g.page.keyboard.press(key);
+      await g.waitFor((w) => ((window.game as unknown as Game).challenge().face === w ? true : null), faces[1]!, 60_000);
+      await waitCubeAtRest(g);
+      // Slid back on, the wanted face up: the pop says at the click that only a roll takes the pad,
+      // the pad stays lit, and the count is 2 (a roll off and back on), not 0.
+      const pops = await g.page.evaluate(() => (window.game as unknown as Game).pop().count);
+      await g.page.mouse.click(...(Object.values(await stillPageOf(g, x1!, 0, z1!)) as [number, number]));
+      const said = await g.waitFor((n) => {
+        const p = (window.game as unknown as Game).pop();
+        return p.count > n ? p.text : null;
+      }, pops);
+      expect(said).toMatch(/roll onto it/);
+      await blockedIs('slide');
+      await waitCubeAtRest(g);
+      expect(await g.page.evaluate(() => (window.game as unknown as Game).challenge().pad)).toBe(1);
+      await g.waitFor(() => (document.body.textContent?.includes('best: 2 more moves') ? true : null), null, 10_000);
+      // The two moves the count promised: the same roll off, and the opposite roll back on, take the pad.
+      const back = { w: 's', s: 'w', a: 'd', d: 'a' }[key];
+      await g.page.keyboard.press(key);
+      await g.waitFor((w) => ((window.game as unknown as Game).challenge().face !== w ? true : null), faces[1]!, 60_000);
+      await waitCubeAtRest(g);
+      await g.page.keyboard.press(back);
+      await g.waitFor(() => ((window.game as unknown as Game).challenge().pad === 2 ? true : null), null, 60_000);
+      expect(g.errors).toEqual([]);
+    });
   });
 
   it('rotating-cube (room), 1280 x 800: a click on the page position of a floor cell (one behind the cube, one beside it, the pad) rests the cube on that cell; a click on its own cell says why it stays', async () => {

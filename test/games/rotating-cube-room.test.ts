@@ -643,17 +643,17 @@ describe('rotating-cube round ends and the moves-to-go indicator', () => {
     expect(count(-1, FACE_UP[0]!)).toBe(3);
     const meter = new ToGoMeter();
     expect(meter.text()).toBe('');
-    expect([meter.update(3), meter.trend, meter.text()]).toEqual([true, '', '3 moves to go']);
-    expect([meter.update(1), meter.trend, meter.text()]).toEqual([true, 'closer', '1 move to go · closer']);
+    expect([meter.update(3), meter.trend, meter.text()]).toEqual([true, '', 'best: 3 more moves']);
+    expect([meter.update(1), meter.trend, meter.text()]).toEqual([true, 'closer', 'best: 1 more move · closer']);
     expect([meter.update(1), meter.trend]).toEqual([false, 'closer']);
     expect([meter.update(2), meter.trend, meter.text(), meter.text(true)]).toEqual([
       true,
       'farther',
-      '2 moves to go · farther',
-      '2 to go, farther',
+      'best: 2 more moves · farther',
+      'best 2 more, farther',
     ]);
     meter.reset();
-    expect([meter.update(0), meter.trend, meter.text()]).toEqual([true, '', '0 moves to go']);
+    expect([meter.update(0), meter.trend, meter.text()]).toEqual([true, '', 'best: 0 more moves']);
     expect(() => meter.update(1.5)).toThrow(/ToGoMeter.update: movesLeft .* got 1.5/);
   });
 
