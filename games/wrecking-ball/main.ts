@@ -2352,6 +2352,8 @@ const HINT_SHOWN = 3;
 /** World time until which the open-ground hint shows. */
 let hintUntil = -1;
 const tapWord = touch ? 'Tap' : 'Click';
+/** Seconds of a level's world time the full intro shows on a phone before it shrinks to one line (see hintText). */
+const INTRO_FULL = 6;
 /** The pull being aimed in words: its power and the ball's speed at the piece it gives (./scene swingSpeed). */
 function pullWords(): string {
   return `${powerWords(aiming.power)}, ${swingSpeed(aiming.power).toFixed(1)} m/s`;
@@ -2389,8 +2391,11 @@ function hintText(): string {
   if (shell.world.time < hintUntil) return `That moves the hook. Drag back from a block and let go to swing the ball at it`;
   // With how three stars are earned: the clear target in par swings, which no single structure
   // holds (level 1, layout 1: 16 down, its structures 5, 10 and 12 pieces), so each swing has to topple one of the big ones.
-  if (c.released === 0 && c.moves.length === 0 && aimed === 0)
+  if (c.released === 0 && c.moves.length === 0 && aimed === 0) {
+    // On a phone the full intro covers the view's top quarter: after INTRO_FULL s it shrinks to one line.
+    if (PORTRAIT && shell.world.time > INTRO_FULL) return 'Drag back from a block and let go';
     return `Drag back from a block and let go: the ball swings into it along the arrow\n★★★: ${clearTarget(handles.pieces, handles.level)} down in ${swingPar(handles.level)} swings: strike the biggest structures low`;
+  }
   return '';
 }
 
