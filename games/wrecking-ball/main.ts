@@ -679,11 +679,32 @@ function applyView(view: FittedView): void {
   cam.lookAt(target);
   if (app.controls) {
     app.controls.target.copy(target);
+    zoomRange(cam.position.distanceTo(target));
     app.controls.update();
   }
   framedSize = [app.canvas.clientWidth, app.canvas.clientHeight];
   home = { position: cam.position.clone(), target, direction: view.position.clone().sub(view.lookAt).normalize() };
   settleCamera();
+}
+/** Nearest and farthest zoom, as shares of the framing's distance from its orbit target (see zoomRange). */
+const ZOOM_IN = 0.6,
+  ZOOM_OUT = 2;
+/**
+ * A pinch's gain: the camera's distance changes by the fingers' distance ratio to this power (0.5:
+ * fingers spread to twice as far apart bring the camera about 1.4 times nearer).
+ */
+const PINCH_GAIN = 0.5;
+/**
+ * Keeps the player's zoom to ZOOM_IN..ZOOM_OUT times `distance` (m, the framing's distance from its
+ * orbit target), so a pinch or the wheel cannot fill the screen with the ball or shrink the site to
+ * a patch; a touch screen's pinch follows the fingers' distance ratio gently (PINCH_GAIN).
+ */
+function zoomRange(distance: number): void {
+  const c = app.controls;
+  if (c === null) return;
+  c.minDistance = ZOOM_IN * distance;
+  c.maxDistance = Math.max(ZOOM_OUT * distance, c.minDistance * 1.01);
+  if (touch) c.zoomSpeed = PINCH_GAIN;
 }
 /** The orbit target of camera placement `view`: where its line of sight passes nearest the mast, no lower than 1 m. */
 function orbitTarget(view: FittedView): Vector3 {
@@ -995,8 +1016,8 @@ function drawChain(hook: ArrayLike<number>): void {
 
 // The camera holds still while the ball swings inside the view, so a target a player is about to press
 // stays where they saw it (a camera always easing toward the ball moved the targets under the player's
-// finger). Once any of the ball has left the site's framing (the view frameSite chose, which fills the
-// screen), the framing widens to take the ball in as well, seen from the framing's own side (fitPoints:
+// finger). Once any of the ball would leave the screen (past the site's framing, the view frameSite chose,
+// and off the screen's edge), the framing widens to take the ball in as well, seen from the framing's own side (fitPoints:
 // every structure stays on the screen, and a jib turned toward the camera or away does not swing the ball
 // out of view); it widens again while the ball keeps leaving it, and keeps the widened framing for the
 // level (it only grows): going back to the site's framing after a swing moved every target on the
@@ -1052,8 +1073,11 @@ function settleCamera(): void {
     cameraGoal.target.copy(home.target);
   }
 }
-/** Whether point `p` (m) is inside the framing seen from `position` looking at `target` (its FRAME_ bounds and a hair). */
-function inFraming(p: ArrayLike<number>, position: Vector3, target: Vector3): boolean {
+/**
+ * Whether point `p` (m) is inside the framing seen from `position` looking at `target`: its FRAME_
+ * bounds and a hair, or with `screen` the whole screen (normalised device coordinates within ±1).
+ */
+function inFraming(p: ArrayLike<number>, position: Vector3, target: Vector3, screen = false): boolean {
   fitCamera.fov = app.camera.fov;
   fitCamera.aspect = app.camera.aspect;
   fitCamera.updateProjectionMatrix();
@@ -1061,6 +1085,7 @@ function inFraming(p: ArrayLike<number>, position: Vector3, target: Vector3): bo
   fitCamera.lookAt(target);
   fitCamera.updateMatrixWorld();
   followNdc.set(p[0]!, p[1]!, p[2]!).project(fitCamera);
+  if (screen) return Math.abs(followNdc.x) < 1 && Math.abs(followNdc.y) < 1 && followNdc.z < 1;
   return Math.abs(followNdc.x) < FRAME_X + 0.02 && followNdc.y > FRAME_BOTTOM - 0.02 && followNdc.y < FRAME_TOP + 0.02 && followNdc.z < 1;
 }
 const ballCorner = [0, 0, 0];
@@ -1069,12 +1094,12 @@ const ballCorner = [0, 0, 0];
  * `position` looking at `target`, so a ball swinging past a phone's narrow framing moves the camera
  * before any of it leaves the screen (tested at its centre, it could be half off first).
  */
-function ballInFraming(b: ArrayLike<number>, position: Vector3, target: Vector3): boolean {
+function ballInFraming(b: ArrayLike<number>, position: Vector3, target: Vector3, screen = false): boolean {
   for (let c = 0; c < 8; c++) {
     ballCorner[0] = b[0]! + (c & 1 ? BALL_RADIUS : -BALL_RADIUS);
     ballCorner[1] = b[1]! + (c & 2 ? BALL_RADIUS : -BALL_RADIUS);
     ballCorner[2] = b[2]! + (c & 4 ? BALL_RADIUS : -BALL_RADIUS);
-    if (!inFraming(ballCorner, position, target)) return false;
+    if (!inFraming(ballCorner, position, target, screen)) return false;
   }
   return true;
 }
@@ -1113,6 +1138,9 @@ function widenFor(ball: ArrayLike<number>, now: number): void {
   const fit = fitPoints(pts, home.direction);
   cameraGoal.position.copy(fit.position);
   cameraGoal.target.copy(orbitTarget(fit));
+  // The widened framing is inside the zoom range the player's pinch keeps to.
+  const far = cameraGoal.position.distanceTo(cameraGoal.target);
+  if (app.controls !== null && far > app.controls.maxDistance) app.controls.maxDistance = far * 1.05;
 }
 /** Eases the camera and its orbit target toward the framing of the site and the ball, or after the ball (see FOLLOW_EDGE). */
 function followAction(): void {
@@ -1129,7 +1157,9 @@ function followAction(): void {
   }
   const c = handles.controls;
   if (home !== null) {
-    let inside = ballInFraming(followBall, home.position, home.target);
+    // The view moves only for a ball that would leave the screen: one past the framing's margin but
+    // still wholly on the screen leaves every target where the player saw it.
+    let inside = ballInFraming(followBall, app.camera.position, controls.target, true);
     // Come to rest outside the framing (past a structure at its edge): framed again, from the same
     // side, with the ball where it lies (the camera eases there).
     if (
@@ -1145,7 +1175,7 @@ function followAction(): void {
     if (widen.on) {
       // The widened framing stays for the level (it only grows), so the targets hold still on the
       // screen between swings.
-      if (!inside && now - widen.at > WIDEN_EVERY && !ballInFraming(followBall, cameraGoal.position, cameraGoal.target))
+      if (!inside && now - widen.at > WIDEN_EVERY && !ballInFraming(followBall, cameraGoal.position, cameraGoal.target, true))
         widenFor(followBall, now);
     } else if (!inside) {
       widen.on = true;
@@ -2322,6 +2352,8 @@ const HINT_SHOWN = 3;
 /** World time until which the open-ground hint shows. */
 let hintUntil = -1;
 const tapWord = touch ? 'Tap' : 'Click';
+/** Seconds of a level's world time the full intro shows on a phone before it shrinks to one line (see hintText). */
+const INTRO_FULL = 6;
 /** The pull being aimed in words: its power and the ball's speed at the piece it gives (./scene swingSpeed). */
 function pullWords(): string {
   return `${powerWords(aiming.power)}, ${swingSpeed(aiming.power).toFixed(1)} m/s`;
@@ -2359,8 +2391,11 @@ function hintText(): string {
   if (shell.world.time < hintUntil) return `That moves the hook. Drag back from a block and let go to swing the ball at it`;
   // With how three stars are earned: the clear target in par swings, which no single structure
   // holds (level 1, layout 1: 16 down, its structures 5, 10 and 12 pieces), so each swing has to topple one of the big ones.
-  if (c.released === 0 && c.moves.length === 0 && aimed === 0)
+  if (c.released === 0 && c.moves.length === 0 && aimed === 0) {
+    // On a phone the full intro covers the view's top quarter: after INTRO_FULL s it shrinks to one line.
+    if (PORTRAIT && shell.world.time > INTRO_FULL) return 'Drag back from a block and let go';
     return `Drag back from a block and let go: the ball swings into it along the arrow\n★★★: ${clearTarget(handles.pieces, handles.level)} down in ${swingPar(handles.level)} swings: strike the biggest structures low`;
+  }
   return '';
 }
 
@@ -2657,3 +2692,26 @@ shell.expose({
     setQuality(q);
   },
 });
+
+// ---- Back to the site's framing ------------------------------------------------------------------
+
+/**
+ * A small "⌂ view" button over the scene's top right corner: puts the camera back on the site's
+ * framing (the level framed afresh from its side) after the player turned, panned or zoomed it.
+ */
+const viewButton = document.createElement('button');
+viewButton.type = 'button';
+viewButton.dataset.hud = 'reset-view';
+viewButton.textContent = '⌂ view';
+viewButton.title = 'Back to the default view';
+viewButton.style.cssText =
+  'position: absolute; right: 8px; bottom: 8px; z-index: 5; padding: 4px 10px; font: 600 13px system-ui, sans-serif; color: #fff; background: rgba(20, 16, 10, 0.6); border: 1px solid rgba(255, 255, 255, 0.35); border-radius: 6px; cursor: pointer; touch-action: manipulation';
+viewButton.addEventListener('click', (event) => {
+  event.stopPropagation();
+  frameAgain();
+});
+{
+  const host = app.canvas.parentElement ?? document.body;
+  if (getComputedStyle(host).position === 'static') host.style.position = 'relative';
+  host.append(viewButton);
+}

@@ -1,0 +1,137 @@
+/**
+ * Wrecking ball, 1280 x 800, level 1: the camera holds still between swings. A swing at the log
+ * stack, then at the brick wall: the spot where each structure stood is drawn within a few px of
+ * where it was drawn before the first swing once each swing has settled (games/wrecking-ball/main.ts,
+ * followAction: the view moves only when the ball would leave the screen or the player moves it).
+ */
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { Harness, START_TIMEOUT_MS } from './harness';
+
+interface WB {
+  world: { components: { Position: { x: Float64Array; y: Float64Array; z: Float64Array } } };
+  handles(): { pieces: { body: number; kind: string; x0: number; z0: number }[]; controls: { moves: unknown[]; goal: unknown } };
+  pressAt(x: number, y: number): string;
+  releaseAt(x: number, y: number): string;
+  swings(): { used: number };
+  app: { camera: { position: { clone(): { set(x: number, y: number, z: number): { project(c: unknown): { x: number; y: number } } } } } };
+}
+
+describe('wrecking ball: the camera holds still between swings', () => {
+  let h: Harness;
+  beforeAll(async () => {
+    h = await Harness.start();
+  }, START_TIMEOUT_MS);
+  afterAll(async () => {
+    await h?.close();
+  });
+
+  it('1280 x 800, level 1: after a swing at the log stack and one at the brick wall, each structure is drawn where it was (within 4 px)', async () => {
+    const g = await h.openGame('wrecking-ball', {
+      viewport: { width: 1280, height: 800 },
+      query: { level: 1, shadows: 0 },
+      readyTimeoutMs: 60_000,
+    });
+    await g.page.waitForTimeout(1500);
+    /** The page px of each structure's first piece's starting spot (a fixed point of the world: only the camera moves it). */
+    const spots = () =>
+      g.page.evaluate(() => {
+        const game = window.game as unknown as WB;
+        const canvas = document.querySelector('canvas')!.getBoundingClientRect();
+        const out: Record<string, number[]> = {};
+        for (const p of game.handles().pieces) {
+          if (out[p.kind]) continue;
+          const s = game.app.camera.position.clone().set(p.x0, 0.5, p.z0).project(game.app.camera);
+          out[p.kind] = [canvas.left + ((s.x + 1) / 2) * canvas.width, canvas.top + ((1 - s.y) / 2) * canvas.height];
+        }
+        return out;
+      });
+    /** A drag back from the middle of the lowest piece of `kind`: a swing at it. */
+    const swingAt = (kind: string) =>
+      g.page.evaluate((kind) => {
+        const game = window.game as unknown as WB;
+        const P = game.world.components.Position;
+        const piece = game
+          .handles()
+          .pieces.filter((p) => p.kind === kind)
+          .reduce((a, b) => (P.y[b.body]! < P.y[a.body]! ? b : a)).body;
+        const s = game.app.camera.position.clone().set(P.x[piece]!, P.y[piece]!, P.z[piece]!).project(game.app.camera);
+        game.pressAt(s.x, s.y);
+        return game.releaseAt(s.x, s.y - 0.2);
+      }, kind);
+    const settled = async (used: number) => {
+      await g.waitFor((n) => (window.game as unknown as WB).swings().used >= n, used, 30_000);
+      await g.waitFor(() => (window.game as unknown as WB).handles().controls.moves.length === 0, null, 60_000);
+      await g.page.waitForTimeout(6000);
+    };
+    const before = await spots();
+    expect(Object.keys(before)).toEqual(expect.arrayContaining(['planks', 'wall']));
+    expect(await swingAt('planks')).toBe('swing');
+    await settled(1);
+    const mid = await spots();
+    expect(await swingAt('wall')).toBe('swing');
+    await settled(2);
+    const after = await spots();
+    console.log(JSON.stringify({ before, mid, after }));
+    for (const kind of Object.keys(before))
+      for (const s of [mid, after]) expect(Math.hypot(s[kind]![0]! - before[kind]![0]!, s[kind]![1]! - before[kind]![1]!)).toBeLessThan(4);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+  it('390 x 844, touch: a spread of two fingers 100 -> 220 px or a pinch 270 -> 30 px keeps the camera within 0.6x..2x its framing distance; "⌂ view" brings it back', async () => {
+    const g = await h.openGame('wrecking-ball', {
+      viewport: { width: 390, height: 844 },
+      touch: true,
+      query: { level: 1, shadows: 0 },
+      readyTimeoutMs: 60_000,
+    });
+    await g.page.waitForTimeout(1000);
+    const distance = () =>
+      g.page.evaluate(() => {
+        const game = window.game as unknown as {
+          app: { camera: { position: { distanceTo(v: unknown): number } }; controls: { target: unknown } };
+        };
+        return game.app.camera.position.distanceTo(game.app.controls.target);
+      });
+    /** Two fingers about (195, 420), from `from` px apart to `to` px apart along a diagonal, over 10 moves. */
+    const pinch = async (from: number, to: number) => {
+      const cdp = await g.page.context().newCDPSession(g.page);
+      const at = (k: number) => {
+        const half = (from + ((to - from) * k) / 10) / 2 / Math.SQRT2;
+        return [
+          { x: 195 - half, y: 420 - half, id: 1 },
+          { x: 195 + half, y: 420 + half, id: 2 },
+        ];
+      };
+      await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: at(0) });
+      for (let k = 1; k <= 10; k++) {
+        await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: at(k) });
+        await g.page.waitForTimeout(16);
+      }
+      await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
+      await cdp.detach();
+      await g.page.waitForTimeout(300);
+    };
+    const d0 = await distance();
+    await pinch(100, 220);
+    const nearer = await distance();
+    // Spread 2.2 times: the camera comes nearer by 2.2^0.5 (about 1.48 times), not 2.2 times.
+    expect(d0 / nearer).toBeGreaterThan(1.2);
+    expect(d0 / nearer).toBeLessThan(1.7);
+    await pinch(270, 30);
+    await pinch(270, 30);
+    const far = await distance();
+    expect(far / d0).toBeLessThanOrEqual(2.01);
+    expect(far / d0).toBeGreaterThan(1.5);
+    for (let i = 0; i < 3; i++) await pinch(60, 300);
+    const near = await distance();
+    expect(near / d0).toBeGreaterThanOrEqual(0.599);
+    await g.page.locator('[data-hud="reset-view"]').click();
+    await g.page.waitForTimeout(300);
+    expect(Math.abs((await distance()) / d0 - 1)).toBeLessThan(0.02);
+    // More than 6 s into the level with no swing: the phone's intro has shrunk to one line.
+    expect(await g.page.evaluate(() => (window.game as unknown as { world: { time: number } }).world.time)).toBeGreaterThan(6.5);
+    expect(await g.page.locator('[data-hud="tap-hint"]').textContent()).toBe('Drag back from a block and let go');
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+});
