@@ -278,6 +278,11 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean)
  * solveManifolds' loop over the first `n` rows of R (see storeRows), with the packed body state and
  * extras sb and ex, the rotations at the step's start `base`, the softness table T, 1 / h_s `invH`
  * (1/s), the bias's lower bound `minBias` (m/s) and `biasOn` (1: soft rows take their bias).
+ * The bias and scales against an infinite-mass partner (solver/rigid-partner.ts) are read at an index,
+ * not in a branch, so the load has type feedback from the first manifold whichever kind that is (a
+ * branch first taken after V8 compiled this loop threw its code away). Each normal row takes its own
+ * regime (solver/contact-point.ts): bias, mass and impulse scales. Friction runs point 1 then point 2:
+ * v_t = (v_B - v_A) . t + w_B (r_B x t) - w_A (r_A x t), t = (-n_y, n_x).
  */
 function solveRows(
   R: Float64Array,
@@ -314,9 +319,6 @@ function solveRows(
       tb = ib === 0 ? 0 : ex[ib * BX_STRIDE + BX_ROT_Z]! - base[ib]!;
     const nx = R[r + MR_NX]!,
       ny = R[r + MR_NY]!;
-    // 1 against an infinite-mass partner (solver/rigid-partner.ts), else 0: the bias and scales are read
-    // at an index, not in a branch, so the load has type feedback from the first manifold whichever
-    // kind that is (a branch first taken after V8 compiled this loop threw its code away).
     const rigid = rigidPartner(mA, mB);
     const biasRate = T[SN_BIAS + rigid * (SN_RIGID_BIAS - SN_BIAS)]!,
       scales = SN_SCALES + SN_RIGID * rigid;
@@ -334,7 +336,6 @@ function solveRows(
     const dn = (dbx - dax) * nx + (dby - day) * ny;
     const s1 = R[o1 + CP_SEPARATION]! + dn + tb * n1b - ta * n1a;
     const s2 = R[o2 + CP_SEPARATION]! + dn + tb * n2b - ta * n2a;
-    // Each normal row's regime (solver/contact-point.ts): its bias and its mass and impulse scales.
     const soft1 = softRow(s1, biasOn),
       soft2 = softRow(s2, biasOn);
     const b1 = normalBias(s1, invH, biasRate, minBias, soft1),
@@ -404,7 +405,6 @@ function solveRows(
     const bound = R[r + MR_FRICTION_BOUND]!;
     let f1 = 0,
       f2 = 0;
-    // Friction, point 1 then point 2: v_t = (v_B - v_A) . t + w_B (r_B x t) - w_A (r_A x t), t = (-n_y, n_x).
     for (let p = 0; p < (two ? 2 : 1); p++) {
       const o = o1 + p * MP_STRIDE;
       const la = p === 0 ? t1a : t2a,
@@ -431,11 +431,14 @@ function solveRows(
       wb += iB * dl;
     }
     storeVelocities2D(sb, a, b, vax, vay, wa, vbx, vby, wb);
-    if (total > 0 || l1 !== 0 || f1 !== 0 || (two && (l2 !== 0 || f2 !== 0)) || R[r + MR_ROLLING_IMPULSE] !== 0) {
-      sb[a + BS2_PUSHED] = 1;
-      sb[b + BS2_PUSHED] = 1;
-    }
+    if (total > 0 || l1 !== 0 || f1 !== 0 || (two && (l2 !== 0 || f2 !== 0)) || R[r + MR_ROLLING_IMPULSE] !== 0) markPushed(sb, a, b);
   }
+}
+
+/** Marks the bodies at packed offsets a and b of sb as pushed (see the module comment). */
+function markPushed(sb: Float64Array, a: number, b: number): void {
+  sb[a + BS2_PUSHED] = 1;
+  sb[b + BS2_PUSHED] = 1;
 }
 
 /**
