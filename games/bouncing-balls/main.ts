@@ -1728,8 +1728,9 @@ const CUT_REACH = 0.05;
 
 /**
  * What ends aiming arc `path` (points, m, as aimPath) of throw `t` short, and where: 'ball' (another
- * ball in its way), 'ramp' (one of the layout's inclined walls), 'rim' (the hoop's front rim or
- * backboard) or 'net' (the hoop's net, from below or the side); null when it runs its length or ends
+ * ball in its way), 'ramp' (one of the layout's inclined walls), 'board' (the hoop's backboard, its
+ * face or top: a shot that often banks in, so not a block), 'rim' (the hoop's front rim) or 'net'
+ * (the hoop's net, from below or the side); null when it runs its length or ends
  * at the box. `soon`: a ball in the way within BLOCKED_SOON_M of the throw's start (a throw into its
  * neighbour in the heap; releasing it throws nothing: release).
  */
@@ -1737,7 +1738,7 @@ function arcCut(
   t: { x: number; y: number; radius: number },
   path: readonly number[],
   thrown: number,
-): { kind: 'ball' | 'ramp' | 'rim' | 'net'; x: number; y: number; soon: boolean } | null {
+): { kind: CutKind; x: number; y: number; soon: boolean } | null {
   const n = path.length / 2;
   if (n < 2) return null;
   const ex = path[2 * n - 2]!,
@@ -1749,16 +1750,30 @@ function arcCut(
     if (distanceToSegment(ex, ey, ax, ay, bx, by) < t.radius + SEGMENT_RADIUS + CUT_REACH)
       return { kind: 'ramp', x: ex, y: ey, soon: false };
   const spot = hoopSpots(TALL)[round.spot]!;
-  for (const [ax, ay, bx, by] of hoopSegments(spot))
-    if (distanceToSegment(ex, ey, ax, ay, bx, by) < t.radius + HOOP_RADIUS + CUT_REACH) return { kind: 'rim', x: ex, y: ey, soon: false };
+  // hoopSegments: the backboard first, then the front rim.
+  for (const [i, [ax, ay, bx, by]] of hoopSegments(spot).entries())
+    if (distanceToSegment(ex, ey, ax, ay, bx, by) < t.radius + HOOP_RADIUS + CUT_REACH)
+      return { kind: i === 0 ? 'board' : 'rim', x: ex, y: ey, soon: false };
   // The net hangs NET.depth under the rim, between the rim's ends.
   if (Math.abs(ex - spot.x) < HOOP_HALF_WIDTH + t.radius + CUT_REACH && ey < spot.y && ey > spot.y - NET.depth - t.radius - CUT_REACH)
     return { kind: 'net', x: ex, y: ey, soon: false };
   return null;
 }
 
+/** What ends an aiming arc short (arcCut). */
+type CutKind = 'ball' | 'ramp' | 'board' | 'rim' | 'net';
+
 /** What the small label by an aiming arc's cut says, by what cut it (arcCut). */
-const CUT_WORDS = { ball: 'hits a ball', ramp: 'hits the ramp', rim: 'hits the hoop', net: 'hits the net' } as const;
+const CUT_WORDS = {
+  ball: 'hits a ball',
+  ramp: 'hits the ramp',
+  board: 'off the board',
+  rim: 'hits the hoop',
+  net: 'hits the net',
+} as const;
+
+/** The cut label's colour: red for a block, pale blue for the backboard (a bank shot, often in). */
+const CUT_FILL = { block: 0xffb3b3, board: 0xbfe3ff } as const;
 
 /** The small label by the ✕ where the aiming arc is cut (arcCut). */
 const cutLabel = new Text({
@@ -1998,20 +2013,30 @@ function drawPointer(): void {
     const sx = cam.toScreenX(cut.x),
       sy = cam.toScreenY(cut.y),
       k = 7;
-    overlay
-      .moveTo(sx - k, sy - k)
-      .lineTo(sx + k, sy + k)
-      .moveTo(sx + k, sy - k)
-      .lineTo(sx - k, sy + k)
-      .stroke({ width: 6, color: 0x0b0f16, alpha: 0.6 })
-      .moveTo(sx - k, sy - k)
-      .lineTo(sx + k, sy + k)
-      .moveTo(sx + k, sy - k)
-      .lineTo(sx - k, sy + k)
-      .stroke({ width: 4, color: 0xff4d4d, alpha: 0.95 });
+    // Off the backboard: a pale ring, no cross (a bank shot may go in).
+    if (cut.kind === 'board')
+      overlay
+        .circle(sx, sy, k)
+        .stroke({ width: 5, color: 0x0b0f16, alpha: 0.6 })
+        .circle(sx, sy, k)
+        .stroke({ width: 3, color: CUT_FILL.board, alpha: 0.95 });
+    else
+      overlay
+        .moveTo(sx - k, sy - k)
+        .lineTo(sx + k, sy + k)
+        .moveTo(sx + k, sy - k)
+        .lineTo(sx - k, sy + k)
+        .stroke({ width: 6, color: 0x0b0f16, alpha: 0.6 })
+        .moveTo(sx - k, sy - k)
+        .lineTo(sx + k, sy + k)
+        .moveTo(sx + k, sy - k)
+        .lineTo(sx - k, sy + k)
+        .stroke({ width: 4, color: 0xff4d4d, alpha: 0.95 });
     // Beside the cross, unless the main label says it (a ball in the way at once).
     if (!soon) {
       if (cutLabel.text !== CUT_WORDS[cut.kind]) cutLabel.text = CUT_WORDS[cut.kind];
+      const fill = cut.kind === 'board' ? CUT_FILL.board : CUT_FILL.block;
+      if (cutLabel.style.fill !== fill) cutLabel.style.fill = fill;
       placeInside(cutLabel, sx, sy - k - 4);
       cutLabel.visible = true;
     }
@@ -2776,7 +2801,7 @@ shell.expose({
    */
   aimPath: (): number[] => aimPath(),
   /**
-   * Where and why the aiming arc being pulled is cut short (a ball, a ramp, the hoop or its net; m),
+   * Where and why the aiming arc being pulled is cut short (a ball, a ramp, the backboard, the rim or the net; m),
    * with the words shown beside its cross ('' when the gauge's label says it): null when not pulling
    * or when the arc runs its length.
    */

@@ -1752,6 +1752,50 @@ describe('bouncing balls: cancelling, full-power pulls and the end of a round mi
     await g.close();
   });
 
+  it('desktop 1280 x 800, mouse: an arc that ends on the backboard is not labelled as a block ("off the board")', async () => {
+    const g = await h.openGame('bouncing-balls', { viewport: { width: 1280, height: 800 }, query: { count: 8 } });
+    type CutGame = AimGame & {
+      spawn(x: number, y: number): number;
+      aimCut(): { kind: string; x: number; y: number; words: string } | null;
+    };
+    await g.page.evaluate(() => {
+      const game = window.game as unknown as CutGame;
+      game.paused = true;
+      for (const id of game.ballIds()) game.remove(id);
+      game.spawn(8, 4);
+    });
+    const at = await g.page.evaluate(() => (window.game as unknown as CutGame).positions());
+    const from = await g.worldToPage(at[0]!, at[1]!);
+    const m = g.page.mouse;
+    await m.move(from.x, from.y);
+    await m.down();
+    // Pulled down and left at a range of angles and lengths: thrown up and right, at the first hoop's
+    // backboard (HOOP_SPOTS[0], board on its right).
+    let cut: { kind: string; x: number; y: number; words: string } | null = null;
+    search: for (const len of [120, 150, 180, 100, 210])
+      for (const deg of [10, 20, 30, 40, 50, 60]) {
+        const a = (deg * Math.PI) / 180;
+        await m.move(from.x - len * Math.cos(a), from.y + len * Math.sin(a), { steps: 2 });
+        await g.frames(2);
+        cut = await g.page.evaluate(() => (window.game as unknown as CutGame).aimCut());
+        if (cut?.kind === 'board') break search;
+      }
+    expect(cut?.kind).toBe('board');
+    // Independent of the page's test: the cut is where the ball (0.4 m at most) touches the backboard
+    // (hoop.ts hoopSegments: the board first), not the front rim.
+    const [ax, ay, , by] = hoopSegments(HOOP_SPOTS[0]!)[0]!;
+    expect(Math.abs(cut!.x - ax)).toBeLessThan(0.4 * 1.4 + HOOP_RADIUS + 0.05);
+    expect(cut!.y).toBeGreaterThan(ay - 0.4 * 1.4 - HOOP_RADIUS - 0.05);
+    expect(cut!.y).toBeLessThan(by + 0.4 * 1.4 + HOOP_RADIUS + 0.05);
+    // Said neutrally: no "hits", not the hoop.
+    expect(cut!.words).toBe('off the board');
+    expect(cut!.words).not.toMatch(/hits|hoop|✗/);
+    await m.move(from.x, from.y, { steps: 4 });
+    await m.up();
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
   /** The biggest ball of the (settled) heap that no ball touches from above: its id, centre and radius, m. */
   const biggestFree = (g: GamePage) =>
     g.page.evaluate(() => {
