@@ -2516,15 +2516,33 @@ const setAction = createActionButton('Play again ▶', () => shell.reset(), { at
 // row is one line, whatever its text (a long one is cut with an ellipsis; the phone's texts are short
 // enough not to be): a hint that wrapped to two lines mid-drag moved the box down under the finger.
 const bumpStyle = document.createElement('style');
-bumpStyle.textContent = `@keyframes bb-bump { 0% { transform: scale(1); color: inherit; } 20% { transform: scale(1.3); color: #ffd166; }
+bumpStyle.textContent = `@keyframes bb-bump { 0% { transform: scale(1); color: inherit; } 20% { transform: scale(var(--bb-bump-scale, 1.3)); color: #ffd166; }
   70% { color: #ffd166; } 100% { transform: scale(1); color: inherit; } }
 [data-hud="hoop"] [data-hud="numbers"].bb-bump { animation: bb-bump 0.9s ease-out; }
 [data-hud="hoop"] > div { white-space: nowrap; overflow: hidden; text-overflow: ellipsis; }
 [data-hud="hoop"] [data-hud="numbers"].bb-hurry { color: #ff6b6b; }`;
 document.head.append(bumpStyle);
-/** Bumps the status row's numbers line (a basket scored). */
+/** How much the numbers line grows at most when it bumps (bumpScore). */
+const BUMP_SCALE = 1.3;
+
+/**
+ * Bumps the status row's numbers line (a basket scored), grown by at most BUMP_SCALE and no more
+ * than keeps its text inside the line's box (on a phone the text nearly fills the width).
+ */
 function bumpScore(): void {
   const el = status.numbers;
+  const box = el.getBoundingClientRect();
+  const range = document.createRange();
+  range.selectNodeContents(el);
+  const text = range.getBoundingClientRect();
+  // The grow is about the box's centre: each text edge moves out by the scale times its distance from it.
+  const cx = box.left + box.width / 2;
+  let scale = BUMP_SCALE;
+  if (text.width > 0) {
+    if (text.left < cx) scale = Math.min(scale, (cx - box.left - 2) / (cx - text.left));
+    if (text.right > cx) scale = Math.min(scale, (box.right - 2 - cx) / (text.right - cx));
+  }
+  el.style.setProperty('--bb-bump-scale', Math.max(1, scale).toFixed(3));
   el.classList.remove('bb-bump');
   // Reading the layout restarts the animation when the class comes back.
   void el.offsetWidth;
@@ -2810,6 +2828,8 @@ shell.expose({
     const cut = path.length > 0 ? arcCut(currentThrow(), path, pressBall) : null;
     return cut && { kind: cut.kind, x: cut.x, y: cut.y, words: cut.soon ? '' : CUT_WORDS[cut.kind] };
   },
+  /** Bumps the status row's numbers line as a basket does (grows it, kept inside the row's width). */
+  bumpScore: (): void => bumpScore(),
   /** The whole predicted flight of the throw being pulled (2.5 s, two bounces; the arc shows its start): points, m, or [] as aimPath. */
   aimFlight: (): number[] => aimFlight(),
   /** The least of a throw's flight the aiming arc shows now, s (1.2 in the warm-up before the first basket, then 0.6; 1.5 times that in the tall box). */

@@ -1752,6 +1752,31 @@ describe('bouncing balls: cancelling, full-power pulls and the end of a round mi
     await g.close();
   });
 
+  it('phone 390 x 844: the score line, bumped at its largest, stays inside the screen', async () => {
+    const g = await h.openGame('bouncing-balls', { viewport: { width: 390, height: 844 }, touch: true, query: { count: 8 } });
+    const edges = await g.page.evaluate(() => {
+      const el = document.querySelector<HTMLElement>('[data-hud="hoop"] [data-hud="numbers"]')!;
+      // The longest line of the issue 34 play, as the row shows it mid-round.
+      el.textContent = 'Points 88 · ×2 · Time 60 s · Best 27';
+      (window.game as unknown as { bumpScore(): void }).bumpScore();
+      // Held at the animation's peak (20 % of 0.9 s).
+      const anim = el.getAnimations()[0]!;
+      anim.pause();
+      anim.currentTime = 180;
+      const range = document.createRange();
+      range.selectNodeContents(el);
+      const r = range.getBoundingClientRect();
+      return { left: r.left, right: r.right, width: window.innerWidth, transform: getComputedStyle(el).transform };
+    });
+    // It did grow (a matrix with a scale over 1), and its text lies inside the 390 px screen.
+    const scale = Number(/matrix\(([\d.]+)/.exec(edges.transform)?.[1]);
+    expect(scale).toBeGreaterThan(1.01);
+    expect(edges.left).toBeGreaterThanOrEqual(0);
+    expect(edges.right).toBeLessThanOrEqual(edges.width);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
   it('desktop 1280 x 800, mouse: an arc that ends on the backboard is not labelled as a block ("off the board")', async () => {
     const g = await h.openGame('bouncing-balls', { viewport: { width: 1280, height: 800 }, query: { count: 8 } });
     type CutGame = AimGame & {
