@@ -2549,6 +2549,11 @@ function bumpScore(): void {
   el.classList.add('bb-bump');
 }
 
+/** How long each of the taking-turns hints shows, ms (updateStatus): long enough to read. */
+const TEACH_MS = 6000;
+/** Which taking-turns hint shows (0-3) and since when (performance.now(), ms). */
+const teachTurn = { turn: 0, at: performance.now() };
+
 /** Writes the status row (goal, baskets, time, best, a hint) when it changed, and shows Play again when time is up. */
 function updateStatus(): void {
   const secs = Math.ceil(round.timeLeft);
@@ -2569,8 +2574,15 @@ function updateStatus(): void {
               : `${plural(round.perHoop - round.atHoop, 'basket', 'baskets')} here, then the hoop moves`;
   const numbers = `Points ${round.points} · ×${streakMultiplier(round.streak)} · Time ${secs} s · Best ${best}`;
   // The last throw's rule break (ruleHint) stays until the next throw; otherwise, while playing, the
-  // hint takes turns (5 s each) between the heap's balls, the streak and the bonus shots.
-  const turn = Math.floor(shell.world.time / 5) % 4;
+  // hint takes turns (TEACH_MS each, held while a press is down so it can be read while aiming)
+  // between the heap's balls, the streak and the bonus shots.
+  const now = performance.now();
+  if (pointerId !== -1) teachTurn.at = Math.max(teachTurn.at, now - TEACH_MS);
+  else if (now - teachTurn.at >= TEACH_MS) {
+    teachTurn.turn = (teachTurn.turn + 1) % 4;
+    teachTurn.at = now;
+  }
+  const turn = teachTurn.turn;
   const teach =
     turn === 3
       ? `Each basket +${TIME_PER_BASKET} s · the hoop moves after ${round.perHoop}`
@@ -2828,6 +2840,8 @@ shell.expose({
     const cut = path.length > 0 ? arcCut(currentThrow(), path, pressBall) : null;
     return cut && { kind: cut.kind, x: cut.x, y: cut.y, words: cut.soon ? '' : CUT_WORDS[cut.kind] };
   },
+  /** Which of the status row's taking-turns hints shows (0-3): each TEACH_MS (6 s), held while a press is down. */
+  hintTurn: (): number => teachTurn.turn,
   /** Bumps the status row's numbers line as a basket does (grows it, kept inside the row's width). */
   bumpScore: (): void => bumpScore(),
   /** The whole predicted flight of the throw being pulled (2.5 s, two bounces; the arc shows its start): points, m, or [] as aimPath. */

@@ -1752,6 +1752,33 @@ describe('bouncing balls: cancelling, full-power pulls and the end of a round mi
     await g.close();
   });
 
+  it('phone 390 x 844: the taking-turns hint holds while a ball is aimed and moves on after (6 s each)', async () => {
+    const g = await h.openGame('bouncing-balls', { viewport: { width: 390, height: 844 }, touch: true, query: { count: 8 } });
+    const turn = () => g.page.evaluate(() => (window.game as unknown as { hintTurn(): number }).hintTurn());
+    // Just after a change, to time the 6 s from it.
+    const t0 = await turn();
+    await g.waitFor((t) => (window.game as unknown as { hintTurn(): number }).hintTurn() !== t, t0, 10_000);
+    const shown = await turn();
+    const start = Date.now();
+    await g.page.evaluate(() => {
+      (window.game as unknown as { paused: boolean }).paused = true;
+    });
+    const at = await g.page.evaluate(() => (window.game as unknown as AimGame).positions());
+    const from = await g.worldToPage(at[0]!, at[1]!);
+    const m = g.page.mouse;
+    await m.move(from.x, from.y);
+    await m.down();
+    await m.move(from.x - 20, from.y + 60, { steps: 4 });
+    // Aimed for 8 s (past 6 s): the hint stays.
+    await new Promise((r) => setTimeout(r, 8000 - (Date.now() - start)));
+    expect(await turn()).toBe(shown);
+    await m.up();
+    // Let go: it moves on within 6 s.
+    await g.waitFor((t) => (window.game as unknown as { hintTurn(): number }).hintTurn() !== t, shown, 7000);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
   it('phone 390 x 844: the score line, bumped at its largest, stays inside the screen', async () => {
     const g = await h.openGame('bouncing-balls', { viewport: { width: 390, height: 844 }, touch: true, query: { count: 8 } });
     const edges = await g.page.evaluate(() => {
