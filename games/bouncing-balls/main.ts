@@ -2037,7 +2037,9 @@ function drawPointer(): void {
       if (cutLabel.text !== CUT_WORDS[cut.kind]) cutLabel.text = CUT_WORDS[cut.kind];
       const fill = cut.kind === 'board' ? CUT_FILL.board : CUT_FILL.block;
       if (cutLabel.style.fill !== fill) cutLabel.style.fill = fill;
-      placeInside(cutLabel, sx, sy - k - 4);
+      // Off the board, the label sits on the court's side of the mark, clear of the board drawn over it.
+      const away = cut.kind === 'board' ? -hoopSpots(TALL)[round.spot]!.side * (cutLabel.width / 2) : 0;
+      placeInside(cutLabel, sx + away, sy - k - 4);
       cutLabel.visible = true;
     }
   }
