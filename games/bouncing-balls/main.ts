@@ -1728,8 +1728,9 @@ const CUT_REACH = 0.05;
 
 /**
  * What ends aiming arc `path` (points, m, as aimPath) of throw `t` short, and where: 'ball' (another
- * ball in its way), 'ramp' (one of the layout's inclined walls), 'rim' (the hoop's front rim or
- * backboard) or 'net' (the hoop's net, from below or the side); null when it runs its length or ends
+ * ball in its way), 'ramp' (one of the layout's inclined walls), 'board' (the hoop's backboard, its
+ * face or top: a shot that often banks in, so not a block), 'rim' (the hoop's front rim) or 'net'
+ * (the hoop's net, from below or the side); null when it runs its length or ends
  * at the box. `soon`: a ball in the way within BLOCKED_SOON_M of the throw's start (a throw into its
  * neighbour in the heap; releasing it throws nothing: release).
  */
@@ -1737,7 +1738,7 @@ function arcCut(
   t: { x: number; y: number; radius: number },
   path: readonly number[],
   thrown: number,
-): { kind: 'ball' | 'ramp' | 'rim' | 'net'; x: number; y: number; soon: boolean } | null {
+): { kind: CutKind; x: number; y: number; soon: boolean } | null {
   const n = path.length / 2;
   if (n < 2) return null;
   const ex = path[2 * n - 2]!,
@@ -1749,16 +1750,30 @@ function arcCut(
     if (distanceToSegment(ex, ey, ax, ay, bx, by) < t.radius + SEGMENT_RADIUS + CUT_REACH)
       return { kind: 'ramp', x: ex, y: ey, soon: false };
   const spot = hoopSpots(TALL)[round.spot]!;
-  for (const [ax, ay, bx, by] of hoopSegments(spot))
-    if (distanceToSegment(ex, ey, ax, ay, bx, by) < t.radius + HOOP_RADIUS + CUT_REACH) return { kind: 'rim', x: ex, y: ey, soon: false };
+  // hoopSegments: the backboard first, then the front rim.
+  for (const [i, [ax, ay, bx, by]] of hoopSegments(spot).entries())
+    if (distanceToSegment(ex, ey, ax, ay, bx, by) < t.radius + HOOP_RADIUS + CUT_REACH)
+      return { kind: i === 0 ? 'board' : 'rim', x: ex, y: ey, soon: false };
   // The net hangs NET.depth under the rim, between the rim's ends.
   if (Math.abs(ex - spot.x) < HOOP_HALF_WIDTH + t.radius + CUT_REACH && ey < spot.y && ey > spot.y - NET.depth - t.radius - CUT_REACH)
     return { kind: 'net', x: ex, y: ey, soon: false };
   return null;
 }
 
+/** What ends an aiming arc short (arcCut). */
+type CutKind = 'ball' | 'ramp' | 'board' | 'rim' | 'net';
+
 /** What the small label by an aiming arc's cut says, by what cut it (arcCut). */
-const CUT_WORDS = { ball: 'hits a ball', ramp: 'hits the ramp', rim: 'hits the hoop', net: 'hits the net' } as const;
+const CUT_WORDS = {
+  ball: 'hits a ball',
+  ramp: 'hits the ramp',
+  board: 'off the board',
+  rim: 'hits the hoop',
+  net: 'hits the net',
+} as const;
+
+/** The cut label's colour: red for a block, pale blue for the backboard (a bank shot, often in). */
+const CUT_FILL = { block: 0xffb3b3, board: 0xbfe3ff } as const;
 
 /** The small label by the ✕ where the aiming arc is cut (arcCut). */
 const cutLabel = new Text({
@@ -1998,21 +2013,33 @@ function drawPointer(): void {
     const sx = cam.toScreenX(cut.x),
       sy = cam.toScreenY(cut.y),
       k = 7;
-    overlay
-      .moveTo(sx - k, sy - k)
-      .lineTo(sx + k, sy + k)
-      .moveTo(sx + k, sy - k)
-      .lineTo(sx - k, sy + k)
-      .stroke({ width: 6, color: 0x0b0f16, alpha: 0.6 })
-      .moveTo(sx - k, sy - k)
-      .lineTo(sx + k, sy + k)
-      .moveTo(sx + k, sy - k)
-      .lineTo(sx - k, sy + k)
-      .stroke({ width: 4, color: 0xff4d4d, alpha: 0.95 });
+    // Off the backboard: a pale ring, no cross (a bank shot may go in).
+    if (cut.kind === 'board')
+      overlay
+        .circle(sx, sy, k)
+        .stroke({ width: 5, color: 0x0b0f16, alpha: 0.6 })
+        .circle(sx, sy, k)
+        .stroke({ width: 3, color: CUT_FILL.board, alpha: 0.95 });
+    else
+      overlay
+        .moveTo(sx - k, sy - k)
+        .lineTo(sx + k, sy + k)
+        .moveTo(sx + k, sy - k)
+        .lineTo(sx - k, sy + k)
+        .stroke({ width: 6, color: 0x0b0f16, alpha: 0.6 })
+        .moveTo(sx - k, sy - k)
+        .lineTo(sx + k, sy + k)
+        .moveTo(sx + k, sy - k)
+        .lineTo(sx - k, sy + k)
+        .stroke({ width: 4, color: 0xff4d4d, alpha: 0.95 });
     // Beside the cross, unless the main label says it (a ball in the way at once).
     if (!soon) {
       if (cutLabel.text !== CUT_WORDS[cut.kind]) cutLabel.text = CUT_WORDS[cut.kind];
-      placeInside(cutLabel, sx, sy - k - 4);
+      const fill = cut.kind === 'board' ? CUT_FILL.board : CUT_FILL.block;
+      if (cutLabel.style.fill !== fill) cutLabel.style.fill = fill;
+      // Off the board, the label sits on the court's side of the mark, clear of the board drawn over it.
+      const away = cut.kind === 'board' ? -hoopSpots(TALL)[round.spot]!.side * (cutLabel.width / 2) : 0;
+      placeInside(cutLabel, sx + away, sy - k - 4);
       cutLabel.visible = true;
     }
   }
@@ -2491,20 +2518,43 @@ const setAction = createActionButton('Play again ▶', () => shell.reset(), { at
 // row is one line, whatever its text (a long one is cut with an ellipsis; the phone's texts are short
 // enough not to be): a hint that wrapped to two lines mid-drag moved the box down under the finger.
 const bumpStyle = document.createElement('style');
-bumpStyle.textContent = `@keyframes bb-bump { 0% { transform: scale(1); color: inherit; } 20% { transform: scale(1.3); color: #ffd166; }
+bumpStyle.textContent = `@keyframes bb-bump { 0% { transform: scale(1); color: inherit; } 20% { transform: scale(var(--bb-bump-scale, 1.3)); color: #ffd166; }
   70% { color: #ffd166; } 100% { transform: scale(1); color: inherit; } }
 [data-hud="hoop"] [data-hud="numbers"].bb-bump { animation: bb-bump 0.9s ease-out; }
 [data-hud="hoop"] > div { white-space: nowrap; overflow: hidden; text-overflow: ellipsis; }
 [data-hud="hoop"] [data-hud="numbers"].bb-hurry { color: #ff6b6b; }`;
 document.head.append(bumpStyle);
-/** Bumps the status row's numbers line (a basket scored). */
+/** How much the numbers line grows at most when it bumps (bumpScore). */
+const BUMP_SCALE = 1.3;
+
+/**
+ * Bumps the status row's numbers line (a basket scored), grown by at most BUMP_SCALE and no more
+ * than keeps its text inside the line's box (on a phone the text nearly fills the width).
+ */
 function bumpScore(): void {
   const el = status.numbers;
+  const box = el.getBoundingClientRect();
+  const range = document.createRange();
+  range.selectNodeContents(el);
+  const text = range.getBoundingClientRect();
+  // The grow is about the box's centre: each text edge moves out by the scale times its distance from it.
+  const cx = box.left + box.width / 2;
+  let scale = BUMP_SCALE;
+  if (text.width > 0) {
+    if (text.left < cx) scale = Math.min(scale, (cx - box.left - 2) / (cx - text.left));
+    if (text.right > cx) scale = Math.min(scale, (box.right - 2 - cx) / (text.right - cx));
+  }
+  el.style.setProperty('--bb-bump-scale', Math.max(1, scale).toFixed(3));
   el.classList.remove('bb-bump');
   // Reading the layout restarts the animation when the class comes back.
   void el.offsetWidth;
   el.classList.add('bb-bump');
 }
+
+/** How long each of the taking-turns hints shows, ms (updateStatus): long enough to read. */
+const TEACH_MS = 6000;
+/** Which taking-turns hint shows (0-3) and since when (performance.now(), ms). */
+const teachTurn = { turn: 0, at: performance.now() };
 
 /** Writes the status row (goal, baskets, time, best, a hint) when it changed, and shows Play again when time is up. */
 function updateStatus(): void {
@@ -2526,8 +2576,15 @@ function updateStatus(): void {
               : `${plural(round.perHoop - round.atHoop, 'basket', 'baskets')} here, then the hoop moves`;
   const numbers = `Points ${round.points} · ×${streakMultiplier(round.streak)} · Time ${secs} s · Best ${best}`;
   // The last throw's rule break (ruleHint) stays until the next throw; otherwise, while playing, the
-  // hint takes turns (5 s each) between the heap's balls, the streak and the bonus shots.
-  const turn = Math.floor(shell.world.time / 5) % 4;
+  // hint takes turns (TEACH_MS each, held while a press is down so it can be read while aiming)
+  // between the heap's balls, the streak and the bonus shots.
+  const now = performance.now();
+  if (pointerId !== -1) teachTurn.at = Math.max(teachTurn.at, now - TEACH_MS);
+  else if (now - teachTurn.at >= TEACH_MS) {
+    teachTurn.turn = (teachTurn.turn + 1) % 4;
+    teachTurn.at = now;
+  }
+  const turn = teachTurn.turn;
   const teach =
     turn === 3
       ? `Each basket +${TIME_PER_BASKET} s · the hoop moves after ${round.perHoop}`
@@ -2776,7 +2833,7 @@ shell.expose({
    */
   aimPath: (): number[] => aimPath(),
   /**
-   * Where and why the aiming arc being pulled is cut short (a ball, a ramp, the hoop or its net; m),
+   * Where and why the aiming arc being pulled is cut short (a ball, a ramp, the backboard, the rim or the net; m),
    * with the words shown beside its cross ('' when the gauge's label says it): null when not pulling
    * or when the arc runs its length.
    */
@@ -2785,6 +2842,10 @@ shell.expose({
     const cut = path.length > 0 ? arcCut(currentThrow(), path, pressBall) : null;
     return cut && { kind: cut.kind, x: cut.x, y: cut.y, words: cut.soon ? '' : CUT_WORDS[cut.kind] };
   },
+  /** Which of the status row's taking-turns hints shows (0-3): each TEACH_MS (6 s), held while a press is down. */
+  hintTurn: (): number => teachTurn.turn,
+  /** Bumps the status row's numbers line as a basket does (grows it, kept inside the row's width). */
+  bumpScore: (): void => bumpScore(),
   /** The whole predicted flight of the throw being pulled (2.5 s, two bounces; the arc shows its start): points, m, or [] as aimPath. */
   aimFlight: (): number[] => aimFlight(),
   /** The least of a throw's flight the aiming arc shows now, s (1.2 in the warm-up before the first basket, then 0.6; 1.5 times that in the tall box). */
