@@ -2696,12 +2696,14 @@ shell.expose({
 // ---- Back to the site's framing ------------------------------------------------------------------
 
 /**
- * A small "⌂ view" button over the scene's top right corner: puts the camera back on the site's
+ * A small "⌂ view" button over the scene's bottom right corner: puts the camera back on the site's
  * framing (the level framed afresh from its side) after the player turned, panned or zoomed it.
  */
 const viewButton = document.createElement('button');
 viewButton.type = 'button';
 viewButton.dataset.hud = 'reset-view';
+// Drawn over the scene's corner on purpose (the page contract's scene-overlay mark).
+viewButton.dataset.sceneOverlay = '';
 viewButton.textContent = '⌂ view';
 viewButton.title = 'Back to the default view';
 viewButton.style.cssText =
