@@ -470,23 +470,28 @@ const boxGeometry = new BoxGeometry(1, 1, 1);
   boxGeometry.setAttribute('color', new Float32BufferAttribute(colors, 3));
 }
 /**
+ * A `size` px square texture (sRGB) filled with `fill` and framed at its border by a `stroke` line
+ * `lineWidth` px wide (half of it inside the square): the cube's rim and the floor's tiles.
+ */
+function framedSquare(size: number, fill: string, stroke: string, lineWidth: number): CanvasTexture {
+  const c = document.createElement('canvas');
+  c.width = c.height = size;
+  const g = c.getContext('2d')!;
+  g.fillStyle = fill;
+  g.fillRect(0, 0, size, size);
+  g.strokeStyle = stroke;
+  g.lineWidth = lineWidth;
+  g.strokeRect(0, 0, size, size);
+  const texture = new CanvasTexture(c);
+  texture.colorSpace = SRGBColorSpace;
+  return texture;
+}
+/**
  * The faces' rim: white with a darker band at each face's border (multiplying its vertex colour), so the
  * cube's twelve edges show as lines and its faces read as one box, not slabs stacked (edges drawn at a
  * low pixel ratio step by a pixel where they run nearly straight up the screen).
  */
-const edgeTexture = (() => {
-  const c = document.createElement('canvas');
-  c.width = c.height = 64;
-  const g = c.getContext('2d')!;
-  g.fillStyle = '#ffffff';
-  g.fillRect(0, 0, 64, 64);
-  g.strokeStyle = '#6e6e6e';
-  g.lineWidth = 6;
-  g.strokeRect(0, 0, 64, 64);
-  const texture = new CanvasTexture(c);
-  texture.colorSpace = SRGBColorSpace;
-  return texture;
-})();
+const edgeTexture = framedSquare(64, '#ffffff', '#6e6e6e', 6);
 const boxMaterial = new MeshStandardMaterial({ vertexColors: true, map: edgeTexture, roughness: 0.55, metalness: 0.05 });
 const dress = (): void => {
   renderer.setShape(handles.body, { geometry: boxGeometry, material: boxMaterial, scale: 'inertia' });
@@ -537,16 +542,7 @@ function padTexture(filled: boolean): CanvasTexture {
  * room's floor and shifted so its cells are the puzzle's (centred on the lit pad; `placeTiles`).
  */
 const floorTiles = (() => {
-  const c = document.createElement('canvas');
-  c.width = c.height = 128;
-  const g = c.getContext('2d')!;
-  g.fillStyle = 'rgba(255, 255, 255, 0.035)';
-  g.fillRect(0, 0, 128, 128);
-  g.strokeStyle = 'rgba(210, 225, 255, 0.30)';
-  g.lineWidth = 3;
-  g.strokeRect(0, 0, 128, 128);
-  const t = new CanvasTexture(c);
-  t.colorSpace = SRGBColorSpace;
+  const t = framedSquare(128, 'rgba(255, 255, 255, 0.035)', 'rgba(210, 225, 255, 0.30)', 3);
   t.anisotropy = 8;
   t.wrapS = t.wrapT = RepeatWrapping;
   t.repeat.set(2 * ROOM_HALF, 2 * ROOM_HALF);
