@@ -281,11 +281,19 @@ async function diveOnPhone(g: GamePage): Promise<void> {
     seen.touchAt = undefined;
     addEventListener('pointerdown', () => (seen.touchAt ??= w.world.time), { capture: true, once: true });
   });
-  await cdp.send('Input.dispatchTouchEvent', {
-    type: 'touchStart',
-    touchPoints: [{ x: stick.x + stick.width / 2, y: stick.y + stick.height - 14, id: 1 }],
-  });
-  const t0 = await g.waitFor(() => (window as unknown as { touchAt?: number }).touchAt ?? null, null);
+  // A touch the page has not seen within 3 s is lifted and put down again (on a loaded CI machine
+  // one touch in a run once never reached the page); the dive is timed from the one it saw.
+  let seen: number | null = null;
+  for (let attempt = 0; attempt < 3 && seen === null; attempt++) {
+    if (attempt > 0) await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
+    await cdp.send('Input.dispatchTouchEvent', {
+      type: 'touchStart',
+      touchPoints: [{ x: stick.x + stick.width / 2, y: stick.y + stick.height - 14, id: 1 }],
+    });
+    seen = await g.waitFor(() => (window as unknown as { touchAt?: number }).touchAt ?? null, null, 3000).catch(() => null);
+  }
+  if (seen === null) throw new Error('diveOnPhone: the page never saw the touch on the stick');
+  const t0 = seen;
   // Held until 3.5 s of game time have passed, the frames run at once.
   await g.runUntil((start) => (window.game as unknown as SubOnPhone).world.time > start + 3.5, t0, { seconds: FRAME_S });
   await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
@@ -911,7 +919,9 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     // The arrow starts by the hull and points at the mine (within 10 degrees).
     const [ax, ay] = warn.ahead.tail as [number, number],
       [bx, by] = warn.ahead.tip as [number, number];
-    expect(Math.hypot(ax - hx, ay - hy)).toBeLessThan(8 * warn.cam.zoom + 10);
+    // (The view's shake moves every drawn point by up to √2 times its amplitude; the camera's centre
+    // read here does not include it.)
+    expect(Math.hypot(ax - hx, ay - hy)).toBeLessThan(8 * warn.cam.zoom + 10 + Math.SQRT2 * warn.cam.shake);
     const turn = Math.atan2(by - ay, bx - ax) - Math.atan2(my - hy, mx - hx);
     expect(Math.abs(Math.atan2(Math.sin(turn), Math.cos(turn)))).toBeLessThan((10 * Math.PI) / 180);
     // The hull put at rest with its deck 0.5 m under the first mine.
