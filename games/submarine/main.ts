@@ -446,10 +446,10 @@ function heldInput(now: number, drive: -1 | 0 | 1): HelmInput {
       ? keyHeaveShare(heaveKeySince, now, speedAhead())
       : Math.min(stickShare(stickInput.y, false), keyHeaveShare(now, now, speedAhead())),
     drive: stickShare(stickInput.x, held.has('a') || held.has('d') || held.has('arrowleft') || held.has('arrowright')),
-    // The stick touched but not pushed sideways (up or down only, or a thumb resting at its centre)
-    // keeps the screw as it is (pushing it straight up to rise does not stop the screw); the
-    // thumb lifted, the screw winds down as with a key let go; pushed sideways, it drives the screw.
-    keepThrottle: stickInput.held && stickDirection(stickInput.x, stickInput.y) === 0,
+    // The stick pushed up or down only keeps the screw as it is (pushing it straight up to rise does
+    // not stop the screw); a thumb lifted or resting at the centre lets the screw wind down as a key
+    // let go does (a thumb eased back from a push ahead is a let-go); pushed sideways, it drives the screw.
+    keepThrottle: stickInput.held && stickDirection(stickInput.x, stickInput.y) === 0 && stickDirection(stickInput.y, stickInput.x) !== 0,
   };
 }
 
