@@ -801,7 +801,8 @@ const compact = pageLayout().compact();
 const gauge = document.createElement('div');
 gauge.className = 'sub-gauges';
 gauge.dataset.hud = 'gauges';
-gauge.style.cssText = `font: ${compact ? 12 : 13}px/1.35 system-ui, sans-serif; color: #e8f4ff; padding: 4px 10px;`;
+// On a phone 6 px at the sides (not 10): the status line with the level keeps to one line of 390 px.
+gauge.style.cssText = `font: ${compact ? 12 : 13}px/1.35 system-ui, sans-serif; color: #e8f4ff; padding: 4px ${compact ? 6 : 10}px;`;
 const goal = document.createElement('div');
 goal.dataset.hud = 'goal';
 goal.style.cssText = 'font-weight: 700; color: #ffe066;';
@@ -811,8 +812,7 @@ const readoutText = document.createElement('span');
 /** The hull gauge: a bar a third each, lit red and pulsing at a hit, so the cost of a hit is seen. */
 const hullGauge = document.createElement('span');
 hullGauge.dataset.hud = 'hull';
-hullGauge.style.cssText =
-  'display: inline-block; padding: 0 5px; border-radius: 5px; font-weight: 700; white-space: nowrap; transform-origin: left center;';
+hullGauge.style.cssText = `display: inline-block; padding: 0 ${compact ? 3 : 5}px; border-radius: 5px; font-weight: 700; white-space: nowrap; transform-origin: left center;`;
 readout.append(readoutText, hullGauge);
 const instruments = document.createElement('div');
 instruments.dataset.hud = 'instruments';
@@ -2709,7 +2709,8 @@ function draw(): void {
   const missedNames = missed.flatMap((m, i) => (m ? [beaconName(i)] : []));
   const missedText = missedNames.length > 0 && !compact ? ` (${missedNames.join(', ')} skipped)` : '';
   goal.textContent =
-    end || `L${params.level} · ◯ ${state.collected}/${taken.length}${missedText} · ${clock(state.time)}/${clock(state.par)}`;
+    end ||
+    `L${params.level}${compact ? '' : ' ·'} ◯ ${state.collected}/${taken.length}${missedText} · ${clock(state.time)}/${clock(state.par)}`;
   // The clock turns red once par has passed.
   goal.style.color = !state.over && state.time > state.par ? '#ff9e8a' : '#ffe066';
   readoutText.textContent = compact
