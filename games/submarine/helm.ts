@@ -30,7 +30,7 @@
  *   speed stops within about a hull's length instead of coasting on for a hundred metres on the
  *   water's drag alone (a telegraph that stays at full ahead reads as a stuck key; a screw that
  *   backs on its own brakes the boat as if it had hit something). Astern held is the harder brake:
- *   the same brake and the screw backing; once the boat is stopped the brake lets the screw back it
+ *   `HELM.asternBrake` times the coasting brake from its first step, and the screw backing; once the boat is stopped the brake lets the screw back it
  *   (to recover a beacon overshot: the boat always faces ahead), and let go it stops the backing.
  */
 

@@ -10,7 +10,9 @@
  * to how much of it is under water and bobs in the waves. Collect every beacon before three hits
  * (a scrape on the seabed, or a moored mine laid beside the way between two beacons: ./mines.ts)
  * break the hull, inside the course's par time if you can (the clock starts at the first control held): a won run earns a star for the beacons,
- * one for par and one for an unhurt hull (the best time of each course is kept). A mine on the
+ * one for par and one for an unhurt hull (the best time of each course is kept). Three levels
+ * (./levels.ts, ?level=): each later course has more beacons and more mines nearer the way; the
+ * status line starts with the level ("L2") and a won run offers the next one. A mine on the
  * boat's course within MINE_WARN_TIME s (at least MINE_LOOK_AHEAD m) is told by the hull: a red
  * arrow from it to the mine, a tag over the sail ("rise over") or under the keel ("dive under") and a low two-note call.
  * Keys: S / W or down / up arrows dive / rise, A / D or left / right arrows astern / ahead, Q / E

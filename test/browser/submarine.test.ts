@@ -229,6 +229,28 @@ async function stickOnPhone(g: GamePage): Promise<void> {
   );
   expect(throttle).toBe(1);
   expect(mode).toMatch(/rising|surfaced/);
+  // Pushed ahead, then eased back to the centre and held there 0.5 s of game time: the screw winds
+  // down as with the thumb lifted (a stranger's screw stayed at full with the thumb resting on the
+  // stick, and the boat ran past the beacons).
+  await touchPath(
+    g.page,
+    [
+      [cx, cy],
+      [cx + 50, cy],
+      [cx, cy],
+    ],
+    0,
+    async () => {
+      await pointerSeen(g, cx, cy);
+      await g.page.evaluate(() => {
+        (window.game as unknown as Sub).state.throttle = 1;
+      });
+      const t0 = await time();
+      await g.runUntil((start) => (window.game as unknown as Sub).world.time > start + 0.5, t0, { seconds: FRAME_S });
+      throttle = await read('throttle');
+    },
+  );
+  expect(throttle).toBe(0);
   await g.page.evaluate(() => {
     const w = window.game as unknown as Sub;
     w.state.throttle = 0;
