@@ -10,7 +10,9 @@
  * to how much of it is under water and bobs in the waves. Collect every beacon before three hits
  * (a scrape on the seabed, or a moored mine laid beside the way between two beacons: ./mines.ts)
  * break the hull, inside the course's par time if you can (the clock starts at the first control held): a won run earns a star for the beacons,
- * one for par and one for an unhurt hull (the best time of each course is kept). A mine on the
+ * one for par and one for an unhurt hull (the best time of each course is kept). Three levels
+ * (./levels.ts, ?level=): each later course has more beacons and more mines nearer the way; the
+ * status line starts with the level ("L2") and a won run offers the next one. A mine on the
  * boat's course within MINE_WARN_TIME s (at least MINE_LOOK_AHEAD m) is told by the hull: a red
  * arrow from it to the mine, a tag over the sail ("rise over") or under the keel ("dive under") and a low two-note call.
  * Keys: S / W or down / up arrows dive / rise, A / D or left / right arrows astern / ahead, Q / E
@@ -53,6 +55,7 @@ import {
 } from './beacons';
 import { drawBoat, HEADLIGHT, inHeadlight } from './boat-drawing';
 import { coastDistance, createHelmState, HELM, type HelmInput, keyHeaveShare, NO_INPUT, steer } from './helm';
+import { LEVELS, levelCourse, MAX_BEACONS } from './levels';
 import {
   hullDistance,
   layMines,
@@ -74,7 +77,9 @@ import { type Glow, layTrail, touchesGlow } from './trail';
 
 const params = {
   seed: seedParam(),
-  beacons: numberParam('beacons', { default: 6, min: 1, max: 20, integer: true }),
+  beacons: numberParam('beacons', { default: 6, min: 1, max: MAX_BEACONS, integer: true }),
+  /** The level (./levels.ts): 1 is the page's course; each later one more beacons and mines, narrower passages. */
+  level: numberParam('level', { default: 1, min: 1, max: LEVELS.length, integer: true }),
   waveHeight: numberParam('waves', { default: 1, min: 0, max: 3 }),
   pixelsPerMeter: numberParam('zoom', { default: 8, min: 2, max: 20 }),
   reset: () => shell.reset(),
@@ -313,11 +318,15 @@ const HIT_SHAKE_LIFE = 0.6;
 /** The shake's amplitude at the moment of a hit, px. */
 const SHAKE_PX = 12;
 
+/** The course being run: the level's seed, beacon count and mines' layout (./levels.ts levelCourse). */
+let course = levelCourse(params.level, params.seed, params.beacons);
 function createWorld(): PhysicsWorld {
   const world = createPhysicsWorld(submarine.worldOptions());
-  handles = submarine.build(world, { seed: params.seed, count: params.beacons });
+  // The level's course (./levels.ts): its seed, beacon count and mines.
+  course = levelCourse(params.level, params.seed, params.beacons);
+  handles = submarine.build(world, { seed: course.seed, count: course.beacons });
   // The game's course: short legs, each open from the beacon before (./beacons.ts layCourse).
-  layCourse(handles.beacons, handles.seabed, params.seed);
+  layCourse(handles.beacons, handles.seabed, course.seed);
   Object.assign(state, createHelmState(), {
     collected: 0,
     hits: 0,
@@ -334,10 +343,10 @@ function createWorld(): PhysicsWorld {
     streak: 0,
     score: 0,
   });
-  taken = new Array(params.beacons).fill(false);
-  missed = new Array(params.beacons).fill(false);
+  taken = new Array(course.beacons).fill(false);
+  missed = new Array(course.beacons).fill(false);
   missWarned = -1;
-  mines = layMines(handles.beacons, handles.seabed, params.seed);
+  mines = layMines(handles.beacons, handles.seabed, course.seed, course.mines);
   mineLive = mines.map(() => true);
   wayMine = -1;
   ahead = null;
@@ -446,10 +455,10 @@ function heldInput(now: number, drive: -1 | 0 | 1): HelmInput {
       ? keyHeaveShare(heaveKeySince, now, speedAhead())
       : Math.min(stickShare(stickInput.y, false), keyHeaveShare(now, now, speedAhead())),
     drive: stickShare(stickInput.x, held.has('a') || held.has('d') || held.has('arrowleft') || held.has('arrowright')),
-    // The stick touched but not pushed sideways (up or down only, or a thumb resting at its centre)
-    // keeps the screw as it is (pushing it straight up to rise does not stop the screw); the
-    // thumb lifted, the screw winds down as with a key let go; pushed sideways, it drives the screw.
-    keepThrottle: stickInput.held && stickDirection(stickInput.x, stickInput.y) === 0,
+    // The stick pushed up or down only keeps the screw as it is (pushing it straight up to rise does
+    // not stop the screw); a thumb lifted or resting at the centre lets the screw wind down as a key
+    // let go does (a thumb eased back from a push ahead is a let-go); pushed sideways, it drives the screw.
+    keepThrottle: stickInput.held && stickDirection(stickInput.x, stickInput.y) === 0 && stickDirection(stickInput.y, stickInput.x) !== 0,
   };
 }
 
@@ -794,7 +803,8 @@ const compact = pageLayout().compact();
 const gauge = document.createElement('div');
 gauge.className = 'sub-gauges';
 gauge.dataset.hud = 'gauges';
-gauge.style.cssText = `font: ${compact ? 12 : 13}px/1.35 system-ui, sans-serif; color: #e8f4ff; padding: 4px 10px;`;
+// On a phone 6 px at the sides (not 10): the status line with the level keeps to one line of 390 px.
+gauge.style.cssText = `font: ${compact ? 12 : 13}px/1.35 system-ui, sans-serif; color: #e8f4ff; padding: 4px ${compact ? 6 : 10}px;`;
 const goal = document.createElement('div');
 goal.dataset.hud = 'goal';
 goal.style.cssText = 'font-weight: 700; color: #ffe066;';
@@ -804,8 +814,7 @@ const readoutText = document.createElement('span');
 /** The hull gauge: a bar a third each, lit red and pulsing at a hit, so the cost of a hit is seen. */
 const hullGauge = document.createElement('span');
 hullGauge.dataset.hud = 'hull';
-hullGauge.style.cssText =
-  'display: inline-block; padding: 0 5px; border-radius: 5px; font-weight: 700; white-space: nowrap; transform-origin: left center;';
+hullGauge.style.cssText = `display: inline-block; padding: 0 ${compact ? 3 : 5}px; border-radius: 5px; font-weight: 700; white-space: nowrap; transform-origin: left center;`;
 readout.append(readoutText, hullGauge);
 const instruments = document.createElement('div');
 instruments.dataset.hud = 'instruments';
@@ -865,16 +874,34 @@ function showGlowHint(t: number, inView: boolean): void {
   const display = on ? 'block' : 'none';
   if (glowNote.style.display !== display) glowNote.style.display = display;
 }
-const showAgain = createActionButton('Play again ▶', () => shell.reset());
+/**
+ * The end card's button: "Next level" after a won run below the last level (the R key or the reset
+ * button plays the level again), else "Play again" / "Try again" (the same level).
+ */
+const showAgain = createActionButton('Play again ▶', () => {
+  if (state.over === 'won' && params.level < LEVELS.length) {
+    params.level++;
+    panel.refresh();
+    // The address keeps the level, so a reload plays it again.
+    const url = new URL(location.href);
+    url.searchParams.set('level', String(params.level));
+    history.replaceState(history.state, '', url);
+  }
+  shell.reset();
+});
 /** Best time of each course (seed and beacon count) that was won, s, in localStorage. */
 const BEST_KEY = 'bitphysics.submarine.best';
 function bestTime(): number | null {
   try {
     const all = JSON.parse(localStorage.getItem(BEST_KEY) ?? '{}') as Record<string, number>;
-    return all[`${params.seed}/${params.beacons}`] ?? null;
+    return all[bestKey()] ?? null;
   } catch {
     return null;
   }
+}
+/** The course's key in the best times: the seed and beacon count, and the level from level 2 on. */
+function bestKey(): string {
+  return params.level === 1 ? `${params.seed}/${params.beacons}` : `${params.seed}/${params.beacons}/L${params.level}`;
 }
 /** Whether the last win set a new best (shown on the end card). */
 let newBest = false;
@@ -885,7 +912,7 @@ function recordWin(time: number): void {
   if (!newBest) return;
   try {
     const all = JSON.parse(localStorage.getItem(BEST_KEY) ?? '{}') as Record<string, number>;
-    all[`${params.seed}/${params.beacons}`] = time;
+    all[bestKey()] = time;
     localStorage.setItem(BEST_KEY, JSON.stringify(all));
   } catch {
     /* storage refused: no best kept */
@@ -908,6 +935,11 @@ function showEnd(): void {
   const best = bestTime();
   endCard.style.display = 'block';
   endCard.replaceChildren();
+  const levelLine = document.createElement('div');
+  levelLine.dataset.hud = 'level';
+  levelLine.style.cssText = 'font-size: 13px; color: #b8c8d8; letter-spacing: 1px;';
+  levelLine.textContent = `LEVEL ${params.level} OF ${LEVELS.length}`;
+  endCard.append(levelLine);
   const title = document.createElement('div');
   title.style.cssText = `font: 800 24px system-ui, sans-serif; color: ${won ? '#ffe066' : '#ff8a7a'};`;
   const all = state.collected === taken.length;
@@ -951,7 +983,8 @@ function showEnd(): void {
         ? `Best: ${clock(best)}`
         : 'Mines and the seabed each cost a third of the hull.';
   endCard.append(line, scoreLine(), bestLine);
-  showAgain(true, won ? 'Play again ▶' : 'Try again ↺');
+  const next = won && params.level < LEVELS.length;
+  showAgain(true, next ? `Next level ${params.level + 1} ▶` : won ? 'Play again ▶' : 'Try again ↺');
 }
 /** The end card's line of the score and the glows caught ("Score 1,240 · 42 of 58 glows"). */
 function scoreLine(): HTMLElement {
@@ -977,8 +1010,8 @@ let gaugeFlash = 0;
 /** Writes the hull gauge: a bar for each third left, hollow for each lost, and n/3; red once two are lost. */
 function showHull(): void {
   const left = Math.max(0, 3 - state.hits);
-  // On a phone the bars alone (the line has to fit 390 px).
-  hullGauge.textContent = `hull ${'▮'.repeat(left)}${'▯'.repeat(3 - left)}${compact ? '' : ` ${left}/3`}`;
+  // The bars alone (the status line is kept short; a bar is a third).
+  hullGauge.textContent = `hull ${'▮'.repeat(left)}${'▯'.repeat(3 - left)}`;
   hullGauge.style.color = left <= 1 ? '#ff8a7a' : '';
 }
 /** The hit's signs as last drawn (tests): the label's pill box (x, y, width, height, px) and the view's red tint (alpha). */
@@ -1198,7 +1231,9 @@ function drawHits(t: number, k: number, sx: (x: number) => number, sy: (y: numbe
   const m = hitMarks[hitMarks.length - 1];
   const age = m ? shownAge(m, t) : Number.POSITIVE_INFINITY,
     u = age / HIT_LIFE;
-  hitLabel.visible = m !== undefined && u < 1;
+  // Once the run is over the end card's title says what the last hit did ("Hull breached!"): the
+  // label is not drawn over or beside it (the flash and the rings still are).
+  hitLabel.visible = m !== undefined && u < 1 && !state.over;
   hitShown.tint = 0;
   if (!m || u >= 1) return;
   const x = sx(m.x),
@@ -1655,6 +1690,16 @@ const shownLabels: { name: string; box: number[] }[] = [];
  * nothing is drawn on anything else (the banner over the mine's tag, the ladder's figures through
  * the hint and the hull).
  */
+/**
+ * The end card's box over the scene while it shows (x, y, width, height, px, in the scene's
+ * coordinates), null while it is hidden: the words over the scene keep off it.
+ */
+function endCardBox(): number[] | null {
+  if (endCard.style.display === 'none') return null;
+  const stage = app.canvas.getBoundingClientRect(),
+    b = endCard.getBoundingClientRect();
+  return b.height > 0 ? [b.left - stage.left, b.top - stage.top, b.width, b.height] : null;
+}
 function declutter(H: number, hull: readonly number[]): void {
   const taken: number[][] = [];
   shownLabels.length = 0;
@@ -1662,6 +1707,9 @@ function declutter(H: number, hull: readonly number[]): void {
     taken.push(box);
     shownLabels.push({ name, box: [...box] });
   };
+  // The end card first: the scene's minor figures under it (the gauge's tags, the ladder's) are left out.
+  const card = endCardBox();
+  if (card) take('end card', card);
   const clear = (box: readonly number[]) => !taken.some((b) => overlaps(box, b, 2));
   if (mineTag.visible && mineWarning.text) take(mineWarning.kind === 'seabed' ? 'seabed warning' : 'mine warning', mineWarning.box);
   if (pointer.visible && pointer.text) {
@@ -2263,8 +2311,10 @@ function draw(): void {
   // The pointer: an arrow at the screen's edge leading to the target beacon (./beacons.ts: held until
   // it is collected) while it is off screen, with its distance and depth.
   placeMineTag(k, sx(hxw), sy(hyw), W, H);
-  pointer.visible = aim.index >= 0;
-  if (aim.index >= 0) {
+  // Once the run is over the end card says where it ended: no target is led to (its label would run
+  // under the card).
+  pointer.visible = aim.index >= 0 && !state.over;
+  if (pointer.visible) {
     const wx = handles.beacons[2 * aim.index]!,
       wy = handles.beacons[2 * aim.index + 1]!;
     const best = Math.hypot(wx - hxw, wy - hyw);
@@ -2607,8 +2657,7 @@ function draw(): void {
     g.circle(sx(b.x), sy(b.y), Math.max(1.5, b.r * k)).stroke({ color: 0xe8f6ff, alpha: 0.7 * life, width: 1.2 });
   }
   // Gauges.
-  const depth = -c.Position.y[e]!,
-    speed = Math.hypot(c.Velocity.x[e]!, c.Velocity.y[e]!);
+  const depth = -c.Position.y[e]!;
   const floor = seabedHeight(handles.seabed, cx);
   engine.set(state.over ? 0 : Math.abs(state.throttle));
   targetName = aim.index >= 0 ? beaconName(aim.index) : '';
@@ -2654,26 +2703,21 @@ function draw(): void {
   // The depth, and the depth ordered while the boat is a metre or more from it ("depth 30 → 34 m").
   const ordered = Number.isFinite(state.holdY) && Math.abs(state.holdY + depth) >= 1 ? ` → ${(-state.holdY).toFixed(0)}` : '';
   const streak = state.streak > 1 ? ` ×${Math.min(GLOW_STREAK_MAX, state.streak)}` : '';
-  // The rate the depth changes, while it does by half a metre a second or more ("↓6 m/s"): a dive
-  // answered shows at once, before the depth has gone far.
-  const sink = -c.Velocity.y[e]!;
-  const rate = Math.abs(sink) >= 0.5 ? ` ${sink > 0 ? '↓' : '↑'}${Math.abs(sink).toFixed(0)} m/s` : '';
-  // One line: the beacons, the clock against par, the depth (and the depth ordered), the score and
-  // the hull. On a phone it keeps to 390 px: no speed, depth rate or missed count (the depth gauge
-  // and the banners tell those; the glows' points labels the streak), "stopped by the seabed"
-  // shortened, in 12 px type; the instruments (tanks, pitch,
-  // climb, helm) go in the desktop's info column.
-  const missedCount = missed.filter(Boolean).length;
-  const missedText =
-    missedCount > 0 && !compact ? ` (${missed.flatMap((m, i) => (m ? [beaconName(i)] : [])).join(', ')} skipped: back for it)` : '';
+  // One short line: the level ("L2"), the beacons (◯, as in the controls list), the clock against par (red once past it), the depth
+  // (and the depth ordered), the speed ahead or astern, the score and the hull. The depth's rate,
+  // the tanks, pitch and helm go in the desktop's info column (the depth gauge shows the order);
+  // on a phone it keeps to 390 px: no speed, no skipped names, "stopped by the seabed" shortened,
+  // in 12 px type.
+  const missedNames = missed.flatMap((m, i) => (m ? [beaconName(i)] : []));
+  const missedText = missedNames.length > 0 && !compact ? ` (${missedNames.join(', ')} skipped)` : '';
   goal.textContent =
     end ||
-    `${compact ? '◯' : 'Beacons'} ${state.collected}/${taken.length}${missedText} · ${clock(state.time)}${compact ? '/' : ' / par '}${clock(state.par)}`;
+    `L${params.level}${compact ? '' : ' ·'} ◯ ${state.collected}/${taken.length}${missedText} · ${clock(state.time)}/${clock(state.par)}`;
   // The clock turns red once par has passed.
   goal.style.color = !state.over && state.time > state.par ? '#ff9e8a' : '#ffe066';
   readoutText.textContent = compact
     ? `${Math.max(0, depth).toFixed(0)}${ordered} m${stopped ? ' · seabed' : ''} · ${state.score} pts · `
-    : `depth ${Math.max(0, depth).toFixed(0)}${ordered} m${rate}${stopped} · ${speed.toFixed(1)} m/s · score ${state.score}${streak} · `;
+    : `${Math.max(0, depth).toFixed(0)}${ordered} m${stopped} · ${speedWords(c.Velocity.x[e]!)} · ${state.score} pts${streak} · `;
   showHull();
   seabedLine.textContent = `seabed ${(-floor).toFixed(0)} m`;
   physicsText.textContent = [
@@ -2685,10 +2729,21 @@ function draw(): void {
   ].join('\n');
 }
 
+/**
+ * The boat's speed along x for the status line, signed by its words: "ahead 6 m/s", "astern 2 m/s"
+ * (a tenth of a m/s under 1 m/s), "stopped" under 0.2 m/s. `vx`: m/s, positive ahead.
+ */
+function speedWords(vx: number): string {
+  const v = Math.abs(vx);
+  if (v < 0.2) return 'stopped';
+  return `${vx > 0 ? 'ahead' : 'astern'} ${v < 1 ? v.toFixed(1) : v.toFixed(0)} m/s`;
+}
+
 const panel = createPanel(
   params,
   [
-    { type: 'slider', key: 'beacons', min: 1, max: 20, step: 1, onChange: () => shell.reset() },
+    { type: 'slider', key: 'level', min: 1, max: LEVELS.length, step: 1, onChange: () => shell.reset() },
+    { type: 'slider', key: 'beacons', min: 1, max: MAX_BEACONS, step: 1, onChange: () => shell.reset() },
     { type: 'slider', key: 'waveHeight', label: 'wave height (m)', min: 0, max: 3, step: 0.1 },
     { type: 'slider', key: 'pixelsPerMeter', label: 'zoom (px/m)', min: 2, max: 20, step: 0.5 },
     { type: 'slider', key: 'seed', min: 0, max: 1000, step: 1, onChange: () => shell.reset() },

@@ -112,6 +112,42 @@ export function courseOrder(beacons: ArrayLike<number>): number[] {
  */
 export const MINE_PATH_CLEARANCE = MINE_RADIUS + SUBMARINE.height / 2 + 6;
 
+/** How `layMines` lays a course's mines (./levels.ts gives each level one). */
+export interface MineLayout {
+  /** The least distance of a mine's centre from the straight way between two beacons, m, at least `MINE_WAY_CLEARANCE`. */
+  clearance: number;
+  /** Each mine lies up to this much further from the way than `clearance` (drawn evenly), m, >= 0. */
+  room: number;
+  /** No mine lies less than this past the leg's first beacon along x, m, > 0. */
+  lead: number;
+  /** No two mines lie nearer than this along x, m, > 0. */
+  gap: number;
+  /** The places tried on each leg, each a range of shares of the way from one beacon to the next, in (0, 1). */
+  places: readonly (readonly [number, number])[];
+}
+
+/**
+ * The first level's mines: two places a leg (35 to 50 % and 75 to 90 % of the way), `MINE_PATH_CLEARANCE`
+ * to 6 m more from the way, `MINE_LEAD` past the beacon before and `MINE_GAP` apart.
+ */
+export const MINE_LAYOUT: Readonly<MineLayout> = Object.freeze({
+  clearance: MINE_PATH_CLEARANCE,
+  room: 6,
+  lead: MINE_LEAD,
+  gap: MINE_GAP,
+  places: Object.freeze([Object.freeze([0.35, 0.5] as const), Object.freeze([0.75, 0.9] as const)]),
+});
+
+/** Throws a RangeError naming layMines and the field of `layout` out of its range. */
+function checkLayout(layout: MineLayout): void {
+  const bad = (name: string, v: unknown) => new RangeError(`layMines: layout.${name} is out of range, got ${JSON.stringify(v)}`);
+  if (!(Number.isFinite(layout.clearance) && layout.clearance >= MINE_WAY_CLEARANCE)) throw bad('clearance', layout.clearance);
+  if (!(Number.isFinite(layout.room) && layout.room >= 0)) throw bad('room', layout.room);
+  if (!(Number.isFinite(layout.lead) && layout.lead > 0)) throw bad('lead', layout.lead);
+  if (!(Number.isFinite(layout.gap) && layout.gap > 0)) throw bad('gap', layout.gap);
+  for (const p of layout.places) if (!(p[0] > 0 && p[0] <= p[1] && p[1] < 1)) throw bad('places', p);
+}
+
 /** Distance from (x, y) to the segment (x0, y0)-(x1, y1), m. */
 function segmentDistance(x: number, y: number, x0: number, y0: number, x1: number, y1: number): number {
   const dx = x1 - x0,
@@ -129,14 +165,23 @@ function segmentDistance(x: number, y: number, x0: number, y0: number, x1: numbe
  * seabed, nearer than `MINE_PATH_CLEARANCE` to any leg of the course, within `MINE_BEACON_CLEARANCE`
  * of a beacon, less than `MINE_LEAD` past the leg's first beacon along x, or within `MINE_GAP` of
  * another mine along x is left out (a short leg has one mine or none).
- * Seeded: the same course has the same mines.
+ * Seeded: the same course has the same mines. A harder level (./levels.ts) lays them by `layout`:
+ * more places on each leg, nearer the way, closer to each other and to the beacon before.
  * @param beacons (x, y) pairs, m, as the scene lays them.
  * @param seabed the scene's seabed.
  * @param seed any finite number (the course's seed).
- * @throws RangeError when `seed` is not finite.
+ * @param layout how the mines are laid (default `MINE_LAYOUT`, the first level's).
+ * @throws RangeError when `seed` is not finite, or a `layout` field is out of its range.
  */
-export function layMines(beacons: ArrayLike<number>, seabed: SubmarineHandles['seabed'], seed: number): Mine[] {
+export function layMines(
+  beacons: ArrayLike<number>,
+  seabed: SubmarineHandles['seabed'],
+  seed: number,
+  layout: MineLayout = MINE_LAYOUT,
+): Mine[] {
   if (!Number.isFinite(seed)) throw new RangeError(`layMines: seed must be finite, got ${seed}`);
+  checkLayout(layout);
+  const { clearance: pathClearance, room, lead, gap, places } = layout;
   const rng = new Rng(seed * 7919 + 17);
   const order = courseOrder(beacons);
   const mines: Mine[] = [];
@@ -145,7 +190,7 @@ export function layMines(beacons: ArrayLike<number>, seabed: SubmarineHandles['s
     for (let leg = 1; leg < order.length; leg++) {
       const a = 2 * order[leg - 1]!,
         b = 2 * order[leg]!;
-      if (segmentDistance(x, y, beacons[a]!, beacons[a + 1]!, beacons[b]!, beacons[b + 1]!) < MINE_PATH_CLEARANCE) return false;
+      if (segmentDistance(x, y, beacons[a]!, beacons[a + 1]!, beacons[b]!, beacons[b + 1]!) < pathClearance) return false;
     }
     return true;
   };
@@ -156,19 +201,17 @@ export function layMines(beacons: ArrayLike<number>, seabed: SubmarineHandles['s
       ay = beacons[2 * a + 1]!,
       bx = beacons[2 * b]!,
       by = beacons[2 * b + 1]!;
-    for (const [f, off] of [
-      [rng.range(0.35, 0.5), rng.range(0, 6)],
-      [rng.range(0.75, 0.9), rng.range(0, 6)],
-    ] as const) {
+    // Each place's share of the leg and offset drawn in turn (the first level's draws kept in their order).
+    for (const [f, off] of places.map(([lo, hi]) => [rng.range(lo, hi), rng.range(0, room)] as const)) {
       const x = ax + f * (bx - ax);
-      if (x - ax < MINE_LEAD || mines.some((m) => Math.abs(m.x - x) < MINE_GAP)) continue;
+      if (x - ax < lead || mines.some((m) => Math.abs(m.x - x) < gap)) continue;
       const anchor = seabedHeight(seabed, x);
       const line = ay + f * (by - ay);
       // Across the way, the vertical offset that puts the centre MINE_PATH_CLEARANCE + off from the line.
       const slope = (by - ay) / (bx - ax);
       // Where the water under the way is too shallow for the offset drawn, as near the way as is clear.
       for (const o of [off, 0]) {
-        const y = line - (MINE_PATH_CLEARANCE + 0.5 + o) * Math.sqrt(1 + slope * slope);
+        const y = line - (pathClearance + 0.5 + o) * Math.sqrt(1 + slope * slope);
         if (y > -MINE_TOP || y - anchor < MINE_BED_CLEARANCE || !clear(x, y)) continue;
         mines.push({ x, y, anchor });
         break;
