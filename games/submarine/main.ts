@@ -821,15 +821,14 @@ instruments.dataset.hud = 'instruments';
 // #c8d6e4 on the columns' dark backing: a contrast of about 12:1 (at least 4.5:1 for small text).
 instruments.style.cssText = 'white-space: pre-line; color: #c8d6e4; margin: 6px 0;';
 // The seabed's depth is for the pilot; the helm's workings (climb, pitch, screw, tanks, helm mode)
-// are folded under "physics details", closed until opened, so the column reads as a game's.
+// go in the HUD's "physics details" fold (closed until opened, under the body and step counts), so
+// the column reads as a game's.
 const seabedLine = document.createElement('div');
-const physicsDetails = document.createElement('details');
-physicsDetails.dataset.hud = 'physics-details';
-const physicsSummary = Object.assign(document.createElement('summary'), { textContent: 'physics details' });
-physicsSummary.style.cursor = 'pointer';
 const physicsText = document.createElement('div');
-physicsDetails.append(physicsSummary, physicsText);
-instruments.append(seabedLine, physicsDetails);
+physicsText.dataset.hud = 'helm-details';
+physicsText.style.whiteSpace = 'pre-line';
+shell.hud.details.append(physicsText);
+instruments.append(seabedLine);
 // The status row is one short line, the goal then the numbers a player needs (three lines, the
 // third small and grey, were too dense); on a desktop the instruments (seabed, climb, pitch, screw,
 // tanks, helm) go in the info column, a line each, and on a phone they are left out.
