@@ -1247,7 +1247,13 @@ let assistMemo = { key: '', length: 0, on: false };
 function scoresClean(t: { x: number; y: number; vx: number; vy: number; radius: number; mass: number }, thrown: number): boolean {
   const spot = hoopSpots(TALL)[hoopAt]!;
   if (!mayScore(spot, t.y)) return false;
-  const path = arcOf(t, thrown, FLIGHT_SECONDS, 0, 0, shell.world.dt);
+  // Followed until its drag-free flight is 1 m under the rim on the way down, and 0.3 s more (drag
+  // only lowers and shortens it); one that never reaches the rim's height drag-free never scores.
+  const g = handles.params.gravity,
+    rise = t.vy * t.vy + 2 * g * (t.y - spot.y);
+  if (g > 0 && rise < 0) return false;
+  const seconds = g > 0 ? Math.min(FLIGHT_SECONDS, (t.vy + Math.sqrt(rise + 2 * g)) / g + 0.3) : FLIGHT_SECONDS;
+  const path = arcOf(t, thrown, seconds, 0, 0, shell.world.dt);
   const o = hoopOpening(spot);
   // The last point is the first touch when the flight ended early: a crossing into it does not count.
   for (let i = 1; i < path.length / 2 - 1; i++)
@@ -1920,7 +1926,7 @@ function markThrowable(): void {
     y = cam.toScreenY(P.y[s]!),
     r = cam.toScreenLength(shell.world.components.Ball.radius[s]!);
   const pulse = 0.5 + 0.5 * Math.sin((2 * Math.PI * now) / 1000);
-  overlay.circle(x, y, r + 5 + 4 * pulse).stroke({ width: 3, color: 0xffd166, alpha: 0.55 + 0.4 * pulse });
+  overlay.circle(x, y, r + 5 + 4 * pulse).stroke({ width: 3, color: 0xffffff, alpha: 0.5 + 0.45 * pulse });
   if (round.shots === 0 && round.phase === 'ready') {
     placeInside(markLabel, x, y - r - 12 - 4 * pulse);
     markLabel.visible = true;
