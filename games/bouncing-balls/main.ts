@@ -691,6 +691,9 @@ function playHoop(world: PhysicsWorld): void {
     const wasSpot = round.spot;
     const style: ShotStyle = b.trick ? 'trick' : b.touched ? 'plain' : 'swish';
     if (b.scores && crossing === -1 && roundBasket(round, spots.length, b.kind, hoopRandom, style)) {
+      // A basket in the hoop still standing where the round's last spot was (waiting for this ball):
+      // it is no basket of the next hoop's, which starts its count from none.
+      if (hoopAt !== wasSpot && !round.lastMoved) round.atHoop = 0;
       lastBasket = {
         x: opening.minX + 0.5 * (opening.maxX - opening.minX),
         y: opening.y,

@@ -1032,6 +1032,53 @@ describe('bouncing balls: the hoop game', () => {
       expect(g.errors).toEqual([]);
     });
 
+    it('desktop 1280 x 800: a ball in flight at the third basket scores in the hoop that waited for it, and the next hoop starts its count from none', async () => {
+      const g = page();
+      const r = await g.page.evaluate(() => {
+        const game = window.game as unknown as HoopGame & {
+          paused: boolean;
+          reset(): void;
+          step(): void;
+          remove(id: number): void;
+          ballIds(): number[];
+          world: { time: number };
+        };
+        game.reset();
+        game.paused = true;
+        for (const id of game.ballIds()) game.remove(id);
+        const first = game.hoop();
+        const x = 0.5 * (first.minX + first.maxX),
+          T = 1.3;
+        const basket = () => game.shoot(8, 4, (x - 8) / T, (first.y - 4 + 0.5 * 9.81 * T * T) / T);
+        for (let k = 0; k < 2; k++) {
+          const before = game.round().score;
+          basket();
+          while (game.round().score === before) game.step();
+          for (let i = 0; i < 30; i++) game.step();
+        }
+        // The third basket's throw, and the same throw again 0.4 s later (apart from the first all the way).
+        basket();
+        for (let i = 0; i < 24; i++) game.step();
+        basket();
+        while (game.round().score < 3) game.step();
+        const at3 = game.hoop();
+        const t3 = game.world.time;
+        while (game.round().score < 4 && game.world.time < t3 + 2) game.step();
+        return { first, at3, score: game.round().score, atHoop: game.round().atHoop, after: game.hoop(), gap: game.world.time - t3 };
+      });
+      // The fourth ball went in the first hoop 0.4 s after the third (24 steps of 1/60 s, within a step).
+      expect(r.at3).toEqual(r.first);
+      expect(r.score).toBe(4);
+      expect(Math.abs(r.gap - 0.4)).toBeLessThan(0.02);
+      // Then the hoop moved, none of its three baskets made yet.
+      expect(r.after).not.toEqual(r.first);
+      expect(r.atHoop).toBe(0);
+      await g.page.evaluate(() => {
+        (window.game as unknown as { paused: boolean }).paused = false;
+      });
+      expect(g.errors).toEqual([]);
+    });
+
     it('desktop: a ball that sits on the backboard and rolls into the net scores; the bracket is drawn under the balls', async () => {
       const g = page();
       const r = await g.page.evaluate(() => {
