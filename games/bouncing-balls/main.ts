@@ -2724,12 +2724,14 @@ function updateStatus(): void {
       : lastCall.ball !== 0
         ? 'Last throw…'
         : cheering
-          ? `${praiseFor(lastBasket)} +${lastBasket.points} · ${lastBasket.score === 1 ? 'the clock runs' : `+${TIME_PER_BASKET} s`}${lastBasket.moved ? ' · the hoop moved' : ''}`
+          ? `${praiseFor(lastBasket)} +${lastBasket.points} · ${lastBasket.score === 1 ? 'the clock runs' : `+${TIME_PER_BASKET} s`}${lastBasket.moved ? (hoopAt !== round.spot ? ' · the hoop moves next' : ' · the hoop moved') : ''}`
           : round.phase === 'ready'
             ? `Score once to start the ${round.seconds} s clock`
             : round.streak > 0
               ? `${round.streak} in a row: the next basket scores ×${streakMultiplier(round.streak)}`
-              : `${plural(round.perHoop - round.atHoop, 'basket', 'baskets')} here, then the hoop moves`;
+              : hoopAt !== round.spot
+                ? 'The hoop moves once your ball is down'
+                : `${plural(round.perHoop - round.atHoop, 'basket', 'baskets')} here, then the hoop moves`;
   const numbers = `Points ${round.points} · ×${streakMultiplier(round.streak)} · Time ${secs} s · Best ${best}`;
   // The last throw's rule break (ruleHint) stays until the next throw; otherwise, while playing, the
   // hint takes turns (TEACH_MS each, held while a press is down so it can be read while aiming)
